@@ -1,0 +1,71 @@
+"""The ``impactlab`` command line. Each command lives in its own module with a ``register(app)``.
+
+User errors (ValueError, FileNotFoundError, ...) exit with status 2 and one line naming the bad
+input, never a traceback. Set ``IMPACTLAB_DEBUG=1`` to see the traceback.
+"""
+
+from __future__ import annotations
+
+import importlib
+import os
+import sys
+
+import typer
+
+from impactlab.cli._common import UserError
+
+app = typer.Typer(
+    name="impactlab",
+    help="Elastic-plastic oblique impacts with friction: simulate, invert, analyze, sweep, "
+    "reproduce the paper.",
+    no_args_is_help=True,
+    add_completion=False,
+    pretty_exceptions_enable=False,
+)
+
+# Command modules: each defines ``register(app)``. A missing module is skipped (the package can
+# grow command by command).
+_COMMAND_MODULES = (
+    "laws",
+    "materials",
+    "simulate",
+    "invert",
+    "analyze",
+    "sweep",
+    "reproduce",
+)
+
+for _name in _COMMAND_MODULES:
+    try:
+        _mod = importlib.import_module(f"impactlab.cli.{_name}")
+    except ModuleNotFoundError as _exc:
+        if _exc.name != f"impactlab.cli.{_name}":
+            raise
+        continue
+    _mod.register(app)
+
+
+def main() -> None:
+    """Entry point: run the app and turn user errors into a one-line message with exit code 2."""
+    try:
+        app(standalone_mode=False)
+    except SystemExit:
+        raise
+    except (UserError, ValueError, FileNotFoundError, IsADirectoryError, PermissionError) as exc:
+        if os.environ.get("IMPACTLAB_DEBUG"):
+            raise
+        print(f"error: {exc}", file=sys.stderr)
+        sys.exit(2)
+    except KeyboardInterrupt:
+        print("interrupted", file=sys.stderr)
+        sys.exit(130)
+    except Exception as exc:  # click usage errors and the like
+        import click
+
+        if isinstance(exc, click.exceptions.ClickException):
+            exc.show()
+            sys.exit(exc.exit_code)
+        if isinstance(exc, click.exceptions.Abort):
+            print("aborted", file=sys.stderr)
+            sys.exit(1)
+        raise

@@ -1,0 +1,77 @@
+"""Shared helpers for the command modules: unit-aware options, TOML inputs, JSON/table output."""
+
+from __future__ import annotations
+
+import json
+import math
+import tomllib
+from collections.abc import Mapping
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from rich.console import Console
+from rich.table import Table
+
+from impactlab.units import to_si
+
+
+class UserError(ValueError):
+    """An error in the user's input: reported as one line, exit status 2."""
+
+
+console = Console()
+
+
+def quantity(value: str | float | None, unit: str, name: str) -> float | None:
+    """Parse a CLI quantity ("8.8 mm"; a bare number is in ``unit``) to SI; None passes through."""
+    if value is None:
+        return None
+    return to_si(value, unit, name=name)
+
+
+def load_toml(path: Path | None) -> dict[str, Any]:
+    """Read a TOML input file (empty dict for None); clear error if missing or malformed."""
+    if path is None:
+        return {}
+    if not path.is_file():
+        raise UserError(f"input file {str(path)!r} does not exist")
+    try:
+        with path.open("rb") as fh:
+            return tomllib.load(fh)
+    except tomllib.TOMLDecodeError as exc:
+        raise UserError(f"input file {str(path)!r} is not valid TOML: {exc}") from None
+
+
+def _jsonable(x: Any) -> Any:
+    if isinstance(x, Mapping):
+        return {str(k): _jsonable(v) for k, v in x.items()}
+    if isinstance(x, list | tuple):
+        return [_jsonable(v) for v in x]
+    if isinstance(x, np.ndarray):
+        return _jsonable(x.tolist())
+    if isinstance(x, np.generic):
+        return _jsonable(x.item())
+    if isinstance(x, float) and not math.isfinite(x):
+        return None
+    return x
+
+
+def emit(data: Mapping[str, Any], *, as_json: bool, title: str = "", units: Mapping[str, str]
+         | None = None) -> None:
+    """Print ``data`` as JSON (``--json``) or as a readable two-column table."""
+    if as_json:
+        print(json.dumps(_jsonable(data), indent=2))
+        return
+    units = units or {}
+    table = Table(title=title or None, show_header=True, header_style="bold")
+    table.add_column("quantity")
+    table.add_column("value", justify="right")
+    table.add_column("unit")
+    for key, value in data.items():
+        if isinstance(value, float):
+            text = f"{value:.6g}"
+        else:
+            text = str(value)
+        table.add_row(key, text, units.get(key, ""))
+    console.print(table)

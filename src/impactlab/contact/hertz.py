@@ -1,0 +1,30 @@
+"""Hertz elastic contact of a sphere on a flat.
+
+F = 4/3 E* sqrt(R) delta^1.5; no yield, no residual depth.
+Reference: H. Hertz, J. reine angew. Math. 92 (1882) 156-171, doi:10.1515/crll.1882.92.156;
+K. L. Johnson, Contact Mechanics (1985), Sec. 4.2, doi:10.1017/CBO9781139171731.
+Validity: small strains, delta << R (enforced: delta <= R).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from impactlab.contact import kernels as k
+from impactlab.contact.base import ContactLaw
+from impactlab.materials import ContactPair
+
+
+class Hertz(ContactLaw):
+    name = "hertz"
+    law_id = k.HERTZ
+    title = "Hertz (elastic)"
+    reference = "Hertz, J. reine angew. Math. 92 (1882) 156; Johnson, Contact Mechanics (1985)"
+    doi = "10.1515/crll.1882.92.156"
+    validity = "elastic, frictionless, delta <= R (small-strain theory: delta << R)"
+
+    def _fill(self, p: np.ndarray, pair: ContactPair, values: dict[str, float]) -> None:
+        p[k.P_DY] = math.inf
+        p[k.P_FY] = math.inf

@@ -1,0 +1,23 @@
+"""The explicit registry of contact laws: name -> law. No name ever stands in for another law."""
+
+from __future__ import annotations
+
+from impactlab.contact.base import ContactLaw
+from impactlab.contact.hertz import Hertz
+
+_LAWS: dict[str, ContactLaw] = {law.name: law for law in (Hertz(),)}
+
+
+def law_names() -> tuple[str, ...]:
+    """Names of the registered laws, in registration order."""
+    return tuple(_LAWS)
+
+
+def get_law(name: str) -> ContactLaw:
+    """The law registered under ``name``; ValueError listing the known names otherwise."""
+    try:
+        return _LAWS[name]
+    except (KeyError, TypeError):
+        raise ValueError(
+            f"unknown contact law {name!r}; known laws: {', '.join(_LAWS)}"
+        ) from None

@@ -1,0 +1,184 @@
+"""Materials, contact pairs and the paper's presets (SI units throughout).
+
+Every quantity is SI except the Brinell hardness, which is kept in its customary unit kgf/mm^2
+(the "HB" number) and converted by :func:`brinell_to_pa` where a law needs a pressure.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from impactlab._validation import check_finite, check_positive, check_range
+
+#: Standard gravity [m/s^2], used to convert kgf to N.
+G0 = 9.80665
+
+
+def brinell_to_pa(hb: float) -> float:
+    """Brinell hardness number (kgf/mm^2) to pressure in Pa: ``HB * g0 * 1e6``."""
+    return hb * G0 * 1.0e6
+
+
+@dataclass(frozen=True)
+class Material:
+    """An isotropic elastic-plastic material.
+
+    Parameters
+    ----------
+    name : label.
+    E : Young's modulus [Pa].
+    nu : Poisson's ratio, in (-1, 0.5).
+    yield_strength : uniaxial yield strength S_y [Pa].
+    brinell_hardness : Brinell hardness number HB [kgf/mm^2] (used by Brake's law).
+    meyer_index : Meyer's strain-hardening index n (Brake's law), typically 2 to 2.5; must be > 2.
+    density : mass density [kg/m^3].
+    """
+
+    name: str
+    E: float
+    nu: float
+    yield_strength: float
+    brinell_hardness: float = math.nan
+    meyer_index: float = 2.2
+    density: float = 7850.0
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.name, str) or not self.name:
+            raise ValueError(f"name must be a non-empty string, got {self.name!r}")
+        object.__setattr__(self, "E", check_positive("E", self.E, "Pa"))
+        object.__setattr__(
+            self, "nu", check_range("nu", self.nu, -1.0, 0.5, low_inclusive=False,
+                                    high_inclusive=False)
+        )
+        object.__setattr__(
+            self, "yield_strength", check_positive("yield_strength", self.yield_strength, "Pa")
+        )
+        hb = self.brinell_hardness
+        if not (isinstance(hb, float) and math.isnan(hb)):
+            hb = check_positive("brinell_hardness", hb, "kgf/mm^2")
+        object.__setattr__(self, "brinell_hardness", hb)
+        n = check_finite("meyer_index", self.meyer_index)
+        if not 2.0 < n <= 3.0:
+            raise ValueError(f"meyer_index must lie in (2, 3], got {n!r}")
+        object.__setattr__(self, "meyer_index", n)
+        object.__setattr__(self, "density", check_positive("density", self.density, "kg/m^3"))
+        if self.yield_strength >= self.E:
+            raise ValueError(
+                f"yield_strength ({self.yield_strength!r} Pa) must be smaller than E "
+                f"({self.E!r} Pa); check the units"
+            )
+
+    @property
+    def has_hardness(self) -> bool:
+        """True when a Brinell hardness is set."""
+        return not math.isnan(self.brinell_hardness)
+
+    @property
+    def plane_strain_compliance(self) -> float:
+        """(1 - nu^2) / E [1/Pa]."""
+        return (1.0 - self.nu**2) / self.E
+
+    @property
+    def shear_modulus(self) -> float:
+        """G = E / (2 (1 + nu)) [Pa]."""
+        return self.E / (2.0 * (1.0 + self.nu))
+
+
+def reduced_modulus(a: Material, b: Material | None = None) -> float:
+    """Reduced (effective) modulus E* = [(1 - nu_a^2)/E_a + (1 - nu_b^2)/E_b]^-1 [Pa].
+
+    With ``b=None`` the second body is rigid: E* = E_a / (1 - nu_a^2).
+    """
+    c = a.plane_strain_compliance + (b.plane_strain_compliance if b is not None else 0.0)
+    return 1.0 / c
+
+
+def reduced_shear_modulus(a: Material, b: Material | None = None) -> float:
+    """Effective shear modulus G* = [(2 - nu_a)/G_a + (2 - nu_b)/G_b]^-1 [Pa] (Mindlin)."""
+    c = (2.0 - a.nu) / a.shear_modulus
+    if b is not None:
+        c += (2.0 - b.nu) / b.shear_modulus
+    return 1.0 / c
+
+
+@dataclass(frozen=True)
+class ContactPair:
+    """The two materials in contact: the impacting body's and the flat's.
+
+    The quantities each contact law takes from the pair (documented per law in ``docs/laws``):
+
+    - ``E_star``: reduced modulus, all laws.
+    - ``yield_strength``: the smaller S_y of the two (the material that yields first; for the
+      paper's pair this is the flat's, 305 MPa), used by Ghaednia, Jackson-Green,
+      Kogut-Komvopoulos and Brake. Thornton takes its limiting pressure p_y as a parameter.
+    - ``nu``: Poisson's ratio of the material that yields first (Jackson-Green's C(nu), Brake's
+      yield function).
+    - Brinell hardness of both bodies: Brake combines them (Eq. 25, see its law page).
+    """
+
+    body: Material
+    flat: Material
+
+    @property
+    def E_star(self) -> float:
+        """Reduced modulus E* [Pa]."""
+        return reduced_modulus(self.body, self.flat)
+
+    @property
+    def G_star(self) -> float:
+        """Effective shear modulus G* [Pa]."""
+        return reduced_shear_modulus(self.body, self.flat)
+
+    @property
+    def weaker(self) -> Material:
+        """The material with the smaller yield strength (the flat if equal)."""
+        return self.body if self.body.yield_strength < self.flat.yield_strength else self.flat
+
+    @property
+    def yield_strength(self) -> float:
+        """Yield strength of the material that yields first [Pa]."""
+        return self.weaker.yield_strength
+
+    @property
+    def nu(self) -> float:
+        """Poisson's ratio of the material that yields first."""
+        return self.weaker.nu
+
+
+#: The paper's rod: AISI 201 stainless steel (Table 1). Unit corrections of the printed table:
+#: S_y = 760 MPa (printed "760 GPa"), Brinell hardness 327 kgf/mm^2 (printed "kgf/m^2").
+#: The Meyer index is not given in the paper; 2.2 is a typical value for work-hardened steel.
+AISI_201 = Material(
+    name="AISI 201 stainless steel (paper's rod)",
+    E=200e9,
+    nu=0.3,
+    yield_strength=760e6,
+    brinell_hardness=327.0,
+    meyer_index=2.2,
+    density=7800.0,
+)
+
+#: The paper's flat: AISI 1010 low-carbon steel (Table 1). Unit correction: Brinell hardness
+#: 105 kgf/mm^2 (printed "kgf/m^2"). Meyer index not given in the paper (2.2 assumed).
+AISI_1010 = Material(
+    name="AISI 1010 low-carbon steel (paper's flat)",
+    E=200e9,
+    nu=0.3,
+    yield_strength=305e6,
+    brinell_hardness=105.0,
+    meyer_index=2.2,
+    density=7870.0,
+)
+
+PRESETS: dict[str, Material] = {"aisi-201": AISI_201, "aisi-1010": AISI_1010}
+
+
+def get_material(name: str) -> Material:
+    """A preset by name; ValueError listing the known names otherwise."""
+    try:
+        return PRESETS[name]
+    except KeyError:
+        raise ValueError(
+            f"unknown material {name!r}; known presets: {', '.join(sorted(PRESETS))}"
+        ) from None

@@ -1,0 +1,97 @@
+#!/usr/bin/env python3
+"""Set-up and task runner for impactlab: needs only python3 (with venv and pip).
+
+    python3 tasks.py reproduce [ARGS...]   # create .venv if needed, then reproduce the paper
+    python3 tasks.py test [PYTEST ARGS...] # create .venv if needed, then ruff, mypy and pytest
+    python3 tasks.py bench                 # run the benchmarks
+    python3 tasks.py lock                  # regenerate requirements.lock (developers only)
+
+The virtual environment is built from the pinned ``requirements.lock`` and re-built whenever the
+lock file or ``pyproject.toml`` changes.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import os
+import subprocess
+import sys
+import venv
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent
+VENV = ROOT / ".venv"
+BIN = VENV / ("Scripts" if os.name == "nt" else "bin")
+PY = BIN / "python"
+STAMP = VENV / ".impactlab-stamp"
+LOCK = ROOT / "requirements.lock"
+
+
+def _fingerprint() -> str:
+    h = hashlib.sha256()
+    for name in ("requirements.lock", "pyproject.toml"):
+        h.update((ROOT / name).read_bytes())
+    return h.hexdigest()
+
+
+def _run(*cmd: str | Path, env: dict[str, str] | None = None) -> int:
+    print("+", " ".join(str(c) for c in cmd), flush=True)
+    return subprocess.call([str(c) for c in cmd], cwd=ROOT, env=env)
+
+
+def ensure_env() -> None:
+    """Create or refresh .venv from requirements.lock and install impactlab in editable mode."""
+    fp = _fingerprint()
+    if STAMP.exists() and STAMP.read_text() == fp and PY.exists():
+        return
+    if not PY.exists():
+        print(f"creating virtual environment in {VENV}", flush=True)
+        venv.EnvBuilder(with_pip=True, clear=True).create(VENV)
+    pip = [PY, "-m", "pip", "install", "--disable-pip-version-check", "-q"]
+    for cmd in ([*pip, "-r", LOCK], [*pip, "--no-deps", "-e", "."]):
+        if _run(*cmd) != 0:
+            sys.exit("impactlab set-up failed while installing dependencies (see above)")
+    STAMP.write_text(fp)
+
+
+def _env() -> dict[str, str]:
+    env = dict(os.environ)
+    env.setdefault("NUMBA_CACHE_DIR", str(ROOT / ".numba_cache"))
+    env.setdefault("MPLBACKEND", "Agg")
+    return env
+
+
+def main(argv: list[str]) -> int:
+    if not argv or argv[0] in {"-h", "--help", "help"}:
+        print(__doc__)
+        return 0
+    task, rest = argv[0], argv[1:]
+    if task == "lock":
+        _run(sys.executable, "-m", "pip", "install", "-q", "uv")
+        return _run(
+            sys.executable, "-m", "uv", "pip", "compile", "pyproject.toml",
+            "--extra", "profilometry", "--extra", "netcdf", "--extra", "dev",
+            "--python-version", "3.11", "-o", "requirements.lock",
+        )
+    ensure_env()
+    env = _env()
+    if task == "reproduce":
+        return _run(PY, "-m", "impactlab", "reproduce", *rest, env=env)
+    if task == "test":
+        for cmd in (
+            (PY, "-m", "ruff", "check", "src", "tests", "benchmarks", "tasks.py"),
+            (PY, "-m", "mypy"),
+        ):
+            if _run(*cmd, env=env) != 0:
+                return 1
+        return _run(PY, "-m", "pytest", "-n", "2", "--dist", "loadfile", *rest, env=env)
+    if task == "bench":
+        return _run(PY, "benchmarks/run_all.py", *rest, env=env)
+    if task == "docs":
+        return _run(PY, "-m", "mkdocs", "build", "--strict", *rest, env=env)
+    print(f"unknown task {task!r}; known: reproduce, test, bench, docs, lock", file=sys.stderr)
+    return 2
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
