@@ -4,24 +4,36 @@ from __future__ import annotations
 
 import math
 from abc import ABC, abstractmethod
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any, ClassVar
 
 import numpy as np
 
-from impactlab._validation import check_nonnegative, check_positive
+from impactlab._validation import check_finite, check_nonnegative, check_positive
 from impactlab.contact import kernels as k
 from impactlab.materials import ContactPair
 
 
 @dataclass(frozen=True)
 class Parameter:
-    """A law parameter with its default, unit and meaning (shown by ``impactlab laws``)."""
+    """A law parameter with its default, unit and meaning (shown by ``impactlab laws``).
+
+    A ``default`` of NaN means "taken from the contact pair"; ``default_note`` says how.
+    """
 
     name: str
     default: float
     unit: str
     description: str
+    default_note: str = ""
+
+    @property
+    def default_text(self) -> str:
+        """The default as shown to people (the note when it comes from the pair)."""
+        if math.isnan(self.default):
+            return self.default_note or "from the pair"
+        return f"{self.default:g}"
 
 
 @dataclass(frozen=True)
@@ -40,27 +52,37 @@ class UnloadingBranch:
         d = np.clip(np.asarray(delta, dtype=float) - self.delta_r, 0.0, None)
         return 4.0 / 3.0 * self.E_star * math.sqrt(self.R_r) * d**1.5
 
+    def contact_radius(self, delta: Any) -> np.ndarray:
+        """Contact radius [m] on the unloading branch: sqrt(R_r (delta - delta_r)), 0 below."""
+        d = np.clip(np.asarray(delta, dtype=float) - self.delta_r, 0.0, None)
+        return np.sqrt(self.R_r * d)
+
     def energy_returned(self) -> float:
         """Elastic energy recovered on unloading from delta_m to delta_r [J]."""
         d = self.delta_m - self.delta_r
         return 8.0 / 15.0 * self.E_star * math.sqrt(self.R_r) * d**2.5
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class ContactModel:
     """A contact law with all its parameters fixed: what the impact engine consumes.
 
-    ``law_id`` and ``params`` are the compiled representation (see ``contact.kernels``).
+    ``law_id`` and ``params`` are the compiled representation (see ``contact.kernels``);
+    ``details`` holds derived numbers for people (critical values, calibrated range, ...).
     """
 
     name: str
     law_id: int
     params: np.ndarray = field(repr=False)
+    details: Mapping[str, float] = field(default_factory=dict, repr=False)
 
     def __post_init__(self) -> None:
         p = np.array(self.params, dtype=np.float64)
+        if p.shape != (k.NPARAM,):
+            raise ValueError(f"params must have shape ({k.NPARAM},), got {p.shape}")
         p.setflags(write=False)
         object.__setattr__(self, "params", p)
+        object.__setattr__(self, "details", dict(self.details))
 
     @property
     def E_star(self) -> float:
@@ -74,17 +96,43 @@ class ContactModel:
 
     @property
     def yield_onset(self) -> tuple[float, float]:
-        """(delta_y [m], F_y [N]) where the law leaves the Hertz curve (inf, inf for Hertz)."""
+        """(delta_y [m], F_y [N]): the law's own first-yield criterion (inf, inf for Hertz).
+
+        The loading curve may leave the elastic curve elsewhere: see ``switch_interference``.
+        """
         return float(self.params[k.P_DY]), float(self.params[k.P_FY])
 
     @property
+    def switch_interference(self) -> float:
+        """Interference [m] where the loading curve leaves the elastic curve (inf for Hertz)."""
+        return float(self.params[k.P_DSW])
+
+    @property
     def max_interference(self) -> float:
-        """Largest interference for which the law is valid [m]."""
+        """Largest interference for which the law is valid [m] (a hard limit)."""
         return float(self.params[k.P_DLIM])
 
+    @property
+    def calibrated_max_interference(self) -> float:
+        """Upper end of the range the law was fitted or validated on [m] (advisory, inf if none).
+
+        Beyond it the law is extrapolated; callers may warn, but it is not an error.
+        """
+        return float(self.details.get("calibrated_max_interference", math.inf))
+
+    def in_calibrated_range(self, delta: Any) -> bool:
+        """True when every interference in ``delta`` lies within the calibrated range."""
+        return bool(np.all(np.asarray(delta, dtype=float) <= self.calibrated_max_interference))
+
     def check_interference(self, delta: Any) -> np.ndarray:
-        """Array of ``delta``; ValueError if any value is negative, NaN or past the validity limit."""
-        d = np.asarray(delta, dtype=np.float64)
+        """Array of ``delta``; ValueError if any value is negative, NaN or past the validity
+        limit."""
+        try:
+            d = np.asarray(delta, dtype=np.float64)
+        except (TypeError, ValueError):
+            raise ValueError(
+                f"delta must be a number or an array of numbers [m], got {delta!r}"
+            ) from None
         if not np.all(np.isfinite(d)):
             raise ValueError("delta must be finite")
         if np.any(d < 0.0):
@@ -101,20 +149,24 @@ class ContactModel:
         d = self.check_interference(delta)
         return k.loading_force_array(self.law_id, self.params, np.atleast_1d(d)).reshape(d.shape)
 
+    def contact_radius(self, delta: Any) -> np.ndarray:
+        """Contact radius [m] on the loading curve at interferences ``delta`` [m]."""
+        d = self.check_interference(delta)
+        flat = np.atleast_1d(d)
+        return k.loading_contact_radius_array(self.law_id, self.params, flat).reshape(d.shape)
+
     def unload(self, delta_m: float) -> UnloadingBranch:
         """The unloading branch after loading to ``delta_m`` [m]."""
         dm = float(self.check_interference(check_nonnegative("delta_m", delta_m, "m")))
-        F_m = float(k.loading_force(self.law_id, self.params, dm))
-        d_r = float(k.residual_depth(self.law_id, self.params, dm, F_m))
-        R_r = float(k.unloading_radius(self.E_star, dm, F_m, d_r)) if dm > 0 else self.radius
-        return UnloadingBranch(dm, F_m, d_r, R_r, self.E_star)
+        F_m, d_r, R_r = k.turning_point(self.law_id, self.params, dm)
+        return UnloadingBranch(dm, float(F_m), float(d_r), float(R_r), self.E_star)
 
 
 class ContactLaw(ABC):
     """A registered normal contact law for a sphere (radius R) on a flat.
 
-    Subclasses declare their name, compiled id, literature reference and validity, and turn a
-    contact pair plus parameters into a ``ContactModel``.
+    Subclasses declare their name, compiled id, literature reference, validity and calibrated
+    range, and turn a contact pair plus parameters into a ``ContactModel``.
     """
 
     name: ClassVar[str]
@@ -123,10 +175,16 @@ class ContactLaw(ABC):
     reference: ClassVar[str]
     doi: ClassVar[str]
     validity: ClassVar[str]
+    calibrated_range: ClassVar[str] = "not stated"
     parameters: ClassVar[tuple[Parameter, ...]] = ()
 
     def build(self, pair: ContactPair, radius: float, **params: float) -> ContactModel:
-        """Validate ``params`` (unknown names are an error) and build the model for ``pair``."""
+        """Validate ``params`` (unknown names are an error) and build the model for ``pair``.
+
+        ``radius`` [m] is the radius of the sphere (rod tip) against the flat.
+        """
+        if not isinstance(pair, ContactPair):
+            raise ValueError(f"pair must be a ContactPair, got {type(pair).__name__}")
         R = check_positive("radius", radius, "m")
         known = {q.name: q for q in self.parameters}
         unknown = sorted(set(params) - set(known))
@@ -135,16 +193,72 @@ class ContactLaw(ABC):
                 f"unknown parameter(s) {unknown} for contact law {self.name!r}; "
                 f"known: {sorted(known) or 'none'}"
             )
-        values = {q.name: float(params.get(q.name, q.default)) for q in self.parameters}
+        values = {
+            q.name: check_finite(q.name, params[q.name]) if q.name in params else float(q.default)
+            for q in self.parameters
+        }
         p = np.full(k.NPARAM, np.nan)
         p[k.P_ESTAR] = pair.E_star
         p[k.P_R] = R
         p[k.P_SY] = pair.yield_strength
         p[k.P_NU] = pair.nu
         p[k.P_DLIM] = R
-        self._fill(p, pair, values)
-        return ContactModel(self.name, self.law_id, p)
+        details = self._fill(p, pair, values) or {}
+        self._check_loading_curve(p, pair, published=values.get("published_switch", 0.0) == 1.0)
+        return ContactModel(self.name, self.law_id, p, details)
+
+    def _check_loading_curve(self, p: np.ndarray, pair: ContactPair, *, published: bool) -> None:
+        """ValueError unless the loading curve is finite and non-decreasing up to the hard limit
+        (checked on a fine grid; a published force jump at the switch point is allowed)."""
+        dlim = float(p[k.P_DLIM])
+        grids = [np.geomspace(dlim * 1e-9, dlim, 4000)]
+        for ref in (float(p[k.P_DSW]), float(p[k.P_DY])):
+            if math.isfinite(ref) and 0.0 < ref < dlim:
+                grids.append(np.linspace(0.2 * ref, min(5.0 * ref, dlim), 2001))
+        grid = np.unique(np.concatenate(grids))
+        f = k.loading_force_array(self.law_id, p, grid)
+        bad = ~np.isfinite(f) | (f < 0.0)
+        drop = np.diff(f) < -1e-12 * np.abs(f[1:])
+        if published:
+            dsw = float(p[k.P_DSW])
+            drop &= ~((grid[:-1] < dsw) & (grid[1:] >= dsw))
+        if bad.any() or drop.any():
+            where = float(grid[int(np.argmax(bad))]) if bad.any() else float(
+                grid[int(np.argmax(drop))]
+            )
+            raise ValueError(
+                f"the {self.name!r} law gives a {'non-finite' if bad.any() else 'decreasing'} "
+                f"loading curve near delta = {where:.4g} m for this pair (E* = {pair.E_star:.4g}"
+                f" Pa, S_y = {pair.yield_strength:.4g} Pa, nu = {pair.nu!r}, R = "
+                f"{float(p[k.P_R])!r} m): the pair lies outside the law's range"
+            )
 
     @abstractmethod
-    def _fill(self, p: np.ndarray, pair: ContactPair, values: dict[str, float]) -> None:
-        """Fill the law-specific slots of ``p`` (and P_DY, P_FY, P_DLIM); validate ``values``."""
+    def _fill(
+        self, p: np.ndarray, pair: ContactPair, values: dict[str, float]
+    ) -> dict[str, float] | None:
+        """Fill the law-specific slots of ``p`` (and P_DY, P_FY, P_DSW, P_DLIM); validate
+        ``values`` (NaN means "default from the pair"). Return derived numbers for ``details``
+        (at least ``calibrated_max_interference`` where the law has one)."""
+
+    def describe(self) -> dict[str, Any]:
+        """The law's metadata as plain data (used by ``impactlab laws``)."""
+        return {
+            "name": self.name,
+            "law_id": self.law_id,
+            "title": self.title,
+            "reference": self.reference,
+            "doi": self.doi,
+            "validity": self.validity,
+            "calibrated_range": self.calibrated_range,
+            "parameters": [
+                {
+                    "name": q.name,
+                    "default": None if math.isnan(q.default) else q.default,
+                    "default_text": q.default_text,
+                    "unit": q.unit,
+                    "description": q.description,
+                }
+                for q in self.parameters
+            ],
+        }

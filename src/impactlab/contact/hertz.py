@@ -1,9 +1,10 @@
 """Hertz elastic contact of a sphere on a flat.
 
-F = 4/3 E* sqrt(R) delta^1.5; no yield, no residual depth.
+F = 4/3 E* sqrt(R) delta^1.5, contact radius a = sqrt(R delta); no yield, no residual depth.
 Reference: H. Hertz, J. reine angew. Math. 92 (1882) 156-171, doi:10.1515/crll.1882.92.156;
 K. L. Johnson, Contact Mechanics (1985), Sec. 4.2, doi:10.1017/CBO9781139171731.
-Validity: small strains, delta << R (enforced: delta <= R).
+Validity: small strains, delta << R (enforced: delta <= R). Physically valid only below first
+yield, delta_c of Jackson-Green (exposed as the calibrated range).
 """
 
 from __future__ import annotations
@@ -13,6 +14,7 @@ import math
 import numpy as np
 
 from impactlab.contact import kernels as k
+from impactlab.contact._common import jg_critical
 from impactlab.contact.base import ContactLaw
 from impactlab.materials import ContactPair
 
@@ -24,7 +26,14 @@ class Hertz(ContactLaw):
     reference = "Hertz, J. reine angew. Math. 92 (1882) 156; Johnson, Contact Mechanics (1985)"
     doi = "10.1515/crll.1882.92.156"
     validity = "elastic, frictionless, delta <= R (small-strain theory: delta << R)"
+    calibrated_range = "exact within linear elasticity: up to first yield, delta_c (Green 2005)"
 
-    def _fill(self, p: np.ndarray, pair: ContactPair, values: dict[str, float]) -> None:
+    def _fill(
+        self, p: np.ndarray, pair: ContactPair, values: dict[str, float]
+    ) -> dict[str, float]:
         p[k.P_DY] = math.inf
         p[k.P_FY] = math.inf
+        p[k.P_DSW] = math.inf
+        dc, fc = jg_critical(float(p[k.P_ESTAR]), float(p[k.P_R]), float(p[k.P_SY]),
+                             float(p[k.P_NU]))
+        return {"delta_c": dc, "F_c": fc, "calibrated_max_interference": dc}

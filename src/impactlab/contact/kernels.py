@@ -4,17 +4,46 @@ Contract (shared by all laws; SI units):
 
 - A law is identified by an integer id (``HERTZ`` ... ``THORNTON``) and a float64 parameter
   vector ``p`` of length ``NPARAM``. Slots ``0..6`` are common to all laws (see ``P_*``); slots
-  ``7..15`` are law-specific and documented in each law's module.
+  ``7..15`` are law-specific and documented below. Slot 7 (``P_DSW``) has the same meaning for
+  every law.
 - ``loading_force(law, p, delta)`` is the force on the virgin loading curve [N] for an
   interference ``delta`` [m] (0 for ``delta <= 0``).
 - ``residual_depth(law, p, delta_m, F_m)`` is the residual depth delta_r [m] after unloading
   from the maximum (delta_m, F_m); ``0 <= delta_r < delta_m``.
 - Unloading (and reloading below delta_m) is, for every law, Hertzian with a flattened radius
   R_r chosen for continuity at (delta_m, F_m): ``F = 4/3 E* sqrt(R_r) (delta - delta_r)^1.5``.
-- ``p[P_DLIM]`` is the largest interference for which the law is valid (``inf`` when the law
-  has no limit); the engine stops with a clear error beyond it.
+- ``contact_radius(law, p, delta, delta_m, delta_r, R_r)`` is the contact radius a [m]: the
+  law's own radius on the loading curve where it defines one (Jackson-Green family), else the
+  Hertz radius sqrt(R delta); on unloading sqrt(R_r (delta - delta_r)); 0 out of contact.
+- ``p[P_DLIM]`` is the largest interference for which the law is valid (``R`` or less); the
+  engine stops with a clear error beyond it.
 
-Everything here is a pure function: no state is kept between calls.
+Law-specific slots (filled by the law modules; do not write them by hand, use ``build``):
+
+======================  ====  ==========================================================
+law                     slot  meaning
+======================  ====  ==========================================================
+all                     7     P_DSW: interference where the loading curve leaves the
+                                elastic curve [m] (``inf`` for Hertz)
+Ghaednia/Jackson-Green  8     P_JG_DC: critical interference delta_c (Eq. 15) [m]
+                        9     P_JG_FC: critical force F_c (Eq. 17) [N]
+                        10    P_JG_C: C(nu) = 1.295 exp(0.736 nu)
+                        11    P_JG_B: B = 0.14 exp(23 S_y / E*)
+                        12    P_JG_K1: coefficient of the first exponential
+                        13    P_JG_K2: coefficient of the second exponential
+                        14    P_JG_M: exponent of delta* in the second term
+                        15    P_JG_HARD: hardness model (0: Ghaednia cosine, 1: JG 2005)
+Kogut-Komvopoulos       8     P_KK_EPS: E* / S_y
+                        9     P_KK_RES: delta_r / delta_m = 1 - E_Rdelta (Eq. 22)
+Brake                   8     P_BR_DP: delta_p (Eq. 26) [m]
+                        9     P_BR_P0: P0 (Eq. 25) [Pa]
+                        10    P_BR_N: Meyer index n
+                        11    P_BR_AP: a_p = sqrt(2 R delta_p) [m]
+Thornton                8     P_TH_PY: limiting contact pressure p_y [Pa]
+======================  ====  ==========================================================
+
+Everything here is a pure function: no state is kept between calls, nothing is allocated
+(except by the ``*_array`` helpers).
 """
 
 from __future__ import annotations
@@ -37,10 +66,41 @@ P_ESTAR = 0  # reduced modulus E* [Pa]
 P_R = 1  # radius of the sphere / rod tip [m]
 P_SY = 2  # yield strength used by the law [Pa]
 P_NU = 3  # Poisson's ratio used by the law
-P_DY = 4  # interference at yield onset delta_y [m] (inf for Hertz)
+P_DY = 4  # yield onset delta_y by the law's own criterion [m] (inf for Hertz)
 P_FY = 5  # force at yield onset F_y [N] (inf for Hertz)
 P_DLIM = 6  # largest valid interference [m]
 P_LAW0 = 7  # first law-specific slot
+
+P_DSW = 7  # all laws: where the loading curve leaves the elastic curve [m]
+
+P_JG_DC = 8
+P_JG_FC = 9
+P_JG_C = 10
+P_JG_B = 11
+P_JG_K1 = 12
+P_JG_K2 = 13
+P_JG_M = 14
+P_JG_HARD = 15
+JG_HARDNESS_GHAEDNIA = 0.0
+JG_HARDNESS_JG2005 = 1.0
+
+P_KK_EPS = 8
+P_KK_RES = 9
+
+P_BR_DP = 8
+P_BR_P0 = 9
+P_BR_N = 10
+P_BR_AP = 11
+
+P_TH_PY = 8
+
+#: The dimensionless interference delta/delta_c where the Jackson-Green contact-area fit starts.
+JG_AREA_SWITCH = 1.9
+
+
+# --------------------------------------------------------------------------------------------
+# Hertz and the common unloading branch
+# --------------------------------------------------------------------------------------------
 
 
 @njit(cache=True, inline="always")
@@ -49,25 +109,6 @@ def hertz_force(E_star: float, R: float, delta: float) -> float:
     if delta <= 0.0:
         return 0.0
     return 4.0 / 3.0 * E_star * math.sqrt(R) * delta * math.sqrt(delta)
-
-
-@njit(cache=True)
-def loading_force(law: int, p: np.ndarray, delta: float) -> float:
-    """Force on the loading curve of ``law`` at interference ``delta`` [N]."""
-    if delta <= 0.0:
-        return 0.0
-    if law == HERTZ:
-        return hertz_force(p[P_ESTAR], p[P_R], delta)
-    # Other laws are dispatched here (filled in by their modules' kernels).
-    return math.nan
-
-
-@njit(cache=True)
-def residual_depth(law: int, p: np.ndarray, delta_m: float, F_m: float) -> float:
-    """Residual depth delta_r after unloading from (delta_m, F_m) [m]."""
-    if law == HERTZ or delta_m <= 0.0:
-        return 0.0
-    return math.nan
 
 
 @njit(cache=True, inline="always")
@@ -89,6 +130,206 @@ def unloading_force(E_star: float, R_r: float, delta_r: float, delta: float) -> 
     return 4.0 / 3.0 * E_star * math.sqrt(R_r) * d * math.sqrt(d)
 
 
+@njit(cache=True, inline="always")
+def _sech(y: float) -> float:
+    """sech(y) for y >= 0 without overflow."""
+    e = math.exp(-y)
+    return 2.0 * e / (1.0 + e * e)
+
+
+# --------------------------------------------------------------------------------------------
+# Ghaednia et al. (2016) and Jackson-Green (2005): one family, different constants
+# --------------------------------------------------------------------------------------------
+
+
+@njit(cache=True, inline="always")
+def jg_contact_radius(p: np.ndarray, delta: float) -> float:
+    """Jackson-Green contact radius r = sqrt(R delta (delta / (1.9 delta_c))^B) [m]
+    (JG 2005; paper Eq. 17 with its misprint corrected: delta, not delta_y, under the root)."""
+    dc = p[P_JG_DC]
+    return math.sqrt(p[P_R] * delta * (delta / (JG_AREA_SWITCH * dc)) ** p[P_JG_B])
+
+
+@njit(cache=True)
+def jg_ep_force(p: np.ndarray, delta: float) -> float:
+    """Elastic-plastic force of the Jackson-Green family [N] (paper Eq. 16 / JG 2005 Eq. 17),
+    evaluated at any delta > 0 (no switch logic)."""
+    if delta <= 0.0:
+        return 0.0
+    R = p[P_R]
+    ds = delta / p[P_JG_DC]
+    rr = jg_contact_radius(p, delta) / R
+    if p[P_JG_HARD] == JG_HARDNESS_GHAEDNIA:
+        h = 2.84 - 0.92 * (1.0 - math.cos(math.pi * rr))
+    else:
+        h = 2.84 * (1.0 - math.exp(-0.82 * rr ** (-0.7)))
+    t1 = math.exp(-p[P_JG_K1] * ds ** (5.0 / 12.0)) * ds * math.sqrt(ds)
+    t2 = 4.0 * h / p[P_JG_C] * (1.0 - math.exp(-p[P_JG_K2] * ds ** (5.0 / 9.0))) * ds ** p[P_JG_M]
+    return p[P_JG_FC] * (t1 + t2)
+
+
+@njit(cache=True, inline="always")
+def _jg_loading(p: np.ndarray, delta: float) -> float:
+    if delta < p[P_DSW]:
+        return hertz_force(p[P_ESTAR], p[P_R], delta)
+    return jg_ep_force(p, delta)
+
+
+@njit(cache=True, inline="always")
+def _jg_residual(p: np.ndarray, delta_m: float) -> float:
+    """Paper Eq. 19: delta_r/delta_m = 0.8 [1 - ((delta_m/delta_c + 5.5)/6.5)^-2]."""
+    dc = p[P_JG_DC]
+    if delta_m <= dc:
+        return 0.0
+    q = (delta_m / dc + 5.5) / 6.5
+    return delta_m * 0.8 * (1.0 - 1.0 / (q * q))
+
+
+# --------------------------------------------------------------------------------------------
+# Kogut-Komvopoulos (2004)
+# --------------------------------------------------------------------------------------------
+
+
+@njit(cache=True, inline="always")
+def kk_elastic_force(p: np.ndarray, delta: float) -> float:
+    """Elastic branch, paper Eq. 20 with the prefactor 2 sqrt(2)/(3 pi) (not 4 sqrt(2)/(3 pi)):
+    F = a' S_y (2 sqrt2 / (3 pi)) (E* delta / (S_y r')) = (2 sqrt2 / 3) E* delta r' [N],
+    which is Hertz times sqrt(1 - delta/(2R))."""
+    if delta <= 0.0:
+        return 0.0
+    R = p[P_R]
+    rp = math.sqrt(delta * (2.0 * R - delta))
+    return 2.0 * math.sqrt(2.0) / 3.0 * p[P_ESTAR] * delta * rp
+
+
+@njit(cache=True)
+def kk_ep_force(p: np.ndarray, delta: float) -> float:
+    """Elastic-plastic branch, paper Eq. 21 [N], evaluated at any 0 < delta < R (no switch)."""
+    if delta <= 0.0:
+        return 0.0
+    R = p[P_R]
+    rp2 = delta * (2.0 * R - delta)
+    t = delta / math.sqrt(rp2)
+    le = math.log(p[P_KK_EPS])
+    lt = math.log(t)
+    num = 0.839 + 0.656 * le + 0.651 * lt
+    den = 2.192 - 0.394 * le - 0.419 * lt
+    if den <= 0.0:
+        return math.inf
+    return math.pi * rp2 * p[P_SY] * num / den
+
+
+@njit(cache=True, inline="always")
+def _kk_loading(p: np.ndarray, delta: float) -> float:
+    if delta < p[P_DSW]:
+        return kk_elastic_force(p, delta)
+    return kk_ep_force(p, delta)
+
+
+# --------------------------------------------------------------------------------------------
+# Brake (2015)
+# --------------------------------------------------------------------------------------------
+
+
+@njit(cache=True)
+def brake_eq24_force(p: np.ndarray, delta: float) -> float:
+    """Brake's transition, paper Eq. 24 as printed (with sqrt(R) and a = sqrt(2 R delta)) [N],
+    for delta > delta_y; no clamp."""
+    R = p[P_R]
+    dy = p[P_DY]
+    dp = p[P_BR_DP]
+    n = p[P_BR_N]
+    ne = n - 2.0
+    x = (delta - dy) / (dp - dy)
+    fh = hertz_force(p[P_ESTAR], R, delta)
+    ap = p[P_BR_AP]
+    a = math.sqrt(2.0 * R * delta)
+    fp = p[P_BR_P0] * math.pi * ap * ap * (a / ap) ** n
+    return _sech((1.0 + ne) * x) * fh + (1.0 - _sech((1.0 - ne) * x)) * fp
+
+
+@njit(cache=True, inline="always")
+def _brake_loading(p: np.ndarray, delta: float) -> float:
+    fh = hertz_force(p[P_ESTAR], p[P_R], delta)
+    if delta <= p[P_DY]:
+        return fh
+    f = brake_eq24_force(p, delta)
+    return f if f < fh else fh
+
+
+# --------------------------------------------------------------------------------------------
+# Thornton (1997)
+# --------------------------------------------------------------------------------------------
+
+
+@njit(cache=True, inline="always")
+def _thornton_loading(p: np.ndarray, delta: float) -> float:
+    dy = p[P_DY]
+    if delta <= dy:
+        return hertz_force(p[P_ESTAR], p[P_R], delta)
+    return p[P_FY] + math.pi * p[P_TH_PY] * p[P_R] * (delta - dy)
+
+
+# --------------------------------------------------------------------------------------------
+# Dispatch
+# --------------------------------------------------------------------------------------------
+
+
+@njit(cache=True)
+def loading_force(law: int, p: np.ndarray, delta: float) -> float:
+    """Force on the loading curve of ``law`` at interference ``delta`` [N]."""
+    if delta <= 0.0:
+        return 0.0
+    if law == HERTZ:
+        return hertz_force(p[P_ESTAR], p[P_R], delta)
+    if law == GHAEDNIA or law == JACKSON_GREEN:
+        return _jg_loading(p, delta)
+    if law == KOGUT_KOMVOPOULOS:
+        return _kk_loading(p, delta)
+    if law == BRAKE:
+        return _brake_loading(p, delta)
+    if law == THORNTON:
+        return _thornton_loading(p, delta)
+    return math.nan
+
+
+@njit(cache=True)
+def residual_depth(law: int, p: np.ndarray, delta_m: float, F_m: float) -> float:
+    """Residual depth delta_r after unloading from (delta_m, F_m) [m]; 0 <= delta_r < delta_m."""
+    if law == HERTZ or delta_m <= 0.0 or F_m <= 0.0:
+        return 0.0
+    if law == GHAEDNIA or law == JACKSON_GREEN:
+        return _jg_residual(p, delta_m)
+    if law == KOGUT_KOMVOPOULOS:
+        if delta_m <= p[P_DY]:
+            return 0.0
+        return delta_m * p[P_KK_RES]
+    if law == BRAKE:
+        # delta_r = delta_m [1 - F_m / ((4/3) E* sqrt(R) delta_m^1.5)] (Brake 2015; paper Eq. 27
+        # corrected); F_m never exceeds the Hertz force (the loading curve is clamped to it).
+        fh = hertz_force(p[P_ESTAR], p[P_R], delta_m)
+        d = delta_m * (1.0 - F_m / fh)
+        return d if d > 0.0 else 0.0
+    if law == THORNTON:
+        # Thornton: unloading keeps the contact radius a_m = sqrt(R delta_m):
+        # R_p = 4 E* a_m^3 / (3 F_m), delta_r = delta_m - a_m^2 / R_p.
+        if delta_m <= p[P_DY]:
+            return 0.0
+        d = delta_m - 3.0 * F_m / (4.0 * p[P_ESTAR] * math.sqrt(p[P_R] * delta_m))
+        return d if d > 0.0 else 0.0
+    return math.nan
+
+
+@njit(cache=True)
+def turning_point(law: int, p: np.ndarray, delta_m: float) -> tuple[float, float, float]:
+    """(F_m [N], delta_r [m], R_r [m]) of the unloading branch that starts at ``delta_m``."""
+    F_m = loading_force(law, p, delta_m)
+    if delta_m <= 0.0:
+        return 0.0, 0.0, p[P_R]
+    d_r = residual_depth(law, p, delta_m, F_m)
+    return F_m, d_r, unloading_radius(p[P_ESTAR], delta_m, F_m, d_r)
+
+
 @njit(cache=True)
 def contact_force(
     law: int,
@@ -106,10 +347,53 @@ def contact_force(
 
 
 @njit(cache=True)
+def loading_contact_radius(law: int, p: np.ndarray, delta: float) -> float:
+    """Contact radius on the loading curve [m]: Jackson-Green area fit for the JG family beyond
+    delta = 1.9 delta_c, Hertz sqrt(R delta) otherwise (and for the other laws)."""
+    if delta <= 0.0:
+        return 0.0
+    if (law == GHAEDNIA or law == JACKSON_GREEN) and delta > JG_AREA_SWITCH * p[P_JG_DC]:
+        return jg_contact_radius(p, delta)
+    return math.sqrt(p[P_R] * delta)
+
+
+@njit(cache=True)
+def contact_radius(
+    law: int,
+    p: np.ndarray,
+    delta: float,
+    delta_m: float,
+    delta_r: float,
+    R_r: float,
+) -> float:
+    """Contact radius a [m] at ``delta`` given the history (same arguments as contact_force):
+    loading curve at or beyond delta_m, sqrt(R_r (delta - delta_r)) on unloading, 0 out of
+    contact."""
+    if delta <= 0.0:
+        return 0.0
+    if delta >= delta_m:
+        return loading_contact_radius(law, p, delta)
+    d = delta - delta_r
+    if d <= 0.0:
+        return 0.0
+    return math.sqrt(R_r * d)
+
+
+@njit(cache=True)
 def loading_force_array(law: int, p: np.ndarray, delta: np.ndarray) -> np.ndarray:
     """Vectorised ``loading_force`` over an array of interferences."""
     out = np.empty(delta.size)
     flat = delta.ravel()
     for i in range(flat.size):
         out[i] = loading_force(law, p, flat[i])
+    return out.reshape(delta.shape)
+
+
+@njit(cache=True)
+def loading_contact_radius_array(law: int, p: np.ndarray, delta: np.ndarray) -> np.ndarray:
+    """Vectorised ``loading_contact_radius`` over an array of interferences."""
+    out = np.empty(delta.size)
+    flat = delta.ravel()
+    for i in range(flat.size):
+        out[i] = loading_contact_radius(law, p, flat[i])
     return out.reshape(delta.shape)

@@ -3,9 +3,17 @@
 from __future__ import annotations
 
 from impactlab.contact.base import ContactLaw
+from impactlab.contact.brake import Brake
+from impactlab.contact.ghaednia import Ghaednia
 from impactlab.contact.hertz import Hertz
+from impactlab.contact.jackson_green import JacksonGreen
+from impactlab.contact.kogut_komvopoulos import KogutKomvopoulos
+from impactlab.contact.thornton import Thornton
 
-_LAWS: dict[str, ContactLaw] = {law.name: law for law in (Hertz(),)}
+_LAWS: dict[str, ContactLaw] = {
+    law.name: law
+    for law in (Hertz(), Ghaednia(), JacksonGreen(), KogutKomvopoulos(), Brake(), Thornton())
+}
 
 
 def law_names() -> tuple[str, ...]:

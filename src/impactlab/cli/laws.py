@@ -1,0 +1,137 @@
+"""``impactlab laws``: the registered contact laws, their sources, validity and parameters.
+
+Examples::
+
+    impactlab laws                      # table of all laws
+    impactlab laws --json               # the same, machine-readable
+    impactlab laws brake                # one law, with its numbers for the paper's pair
+    impactlab laws ghaednia --radius "5 mm" --body aisi-1010 --flat aisi-1010 --json
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+from typing import Any
+
+import typer
+from rich.table import Table
+
+from impactlab.cli._common import console, emit, quantity
+from impactlab.contact import get_law, law_names
+from impactlab.contact.base import ContactLaw
+from impactlab.materials import ContactPair, get_material
+
+
+def _param_text(law: ContactLaw) -> str:
+    if not law.parameters:
+        return "none"
+    return "\n".join(
+        f"{q.name} = {q.default_text}" + (f" [{q.unit}]" if q.unit not in ("", "-") else "")
+        for q in law.parameters
+    )
+
+
+def _numbers(law: ContactLaw, pair: ContactPair, radius: float) -> dict[str, Any]:
+    """The law's characteristic numbers for ``pair`` and ``radius`` (SI)."""
+    model = law.build(pair, radius)
+    dy, fy = model.yield_onset
+    out: dict[str, Any] = {
+        "E_star": model.E_star,
+        "radius": model.radius,
+        "delta_y": dy,
+        "F_y": fy,
+        "switch_interference": model.switch_interference,
+        "max_interference": model.max_interference,
+        "calibrated_max_interference": model.calibrated_max_interference,
+    }
+    for key, value in model.details.items():
+        out.setdefault(key, value)
+    return out
+
+
+_UNITS = {
+    "E_star": "Pa",
+    "radius": "m",
+    "delta_y": "m",
+    "F_y": "N",
+    "switch_interference": "m",
+    "switch_force": "N",
+    "max_interference": "m",
+    "calibrated_max_interference": "m",
+    "delta_c": "m",
+    "F_c": "N",
+    "delta_p": "m",
+    "a_p": "m",
+    "P0": "Pa",
+    "p_y": "Pa",
+    "hardness_HB": "kgf/mm^2",
+    "full_contact_interference": "m",
+    "pole_interference": "m",
+    "delta_c_jackson_green": "m",
+}
+
+
+def register(app: typer.Typer) -> None:
+    @app.command("laws")
+    def laws(
+        name: str | None = typer.Argument(None, help="Show one law in detail (e.g. 'brake')."),
+        radius: str = typer.Option(
+            "8.8 mm", "--radius", help="Tip radius for the example numbers of one law."
+        ),
+        body: str = typer.Option("aisi-201", "--body", help="Material preset of the body."),
+        flat: str = typer.Option("aisi-1010", "--flat", help="Material preset of the flat."),
+        as_json: bool = typer.Option(False, "--json", help="Machine-readable output."),
+    ) -> None:
+        """List the contact laws (title, reference/DOI, validity, parameters) or show one.
+
+        Example: impactlab laws jackson-green --radius "8.8 mm" --json
+        """
+        try:
+            _laws(name, radius, body, flat, as_json)
+        except ValueError as exc:  # one line, no traceback, whichever entry point runs us
+            print(f"error: {exc}", file=sys.stderr)
+            raise typer.Exit(2) from None
+
+
+def _laws(name: str | None, radius: str, body: str, flat: str, as_json: bool) -> None:
+    if name is None:
+        data = {n: get_law(n).describe() for n in law_names()}
+        if as_json:
+            emit(data, as_json=True)
+            return
+        table = Table(title="Contact laws", show_header=True, header_style="bold",
+                      show_lines=True)
+        for col in ("name", "title", "reference / DOI", "validity", "parameters (default)"):
+            table.add_column(col, overflow="fold")
+        for n in law_names():
+            law = get_law(n)
+            table.add_row(n, law.title, f"{law.reference}\ndoi:{law.doi}", law.validity,
+                          _param_text(law))
+        console.print(table)
+        console.print("Details of one law: impactlab laws NAME (see docs/laws/).")
+        return
+    law = get_law(name)
+    R = quantity(radius, "m", "radius")
+    assert R is not None
+    pair = ContactPair(get_material(body), get_material(flat))
+    info = law.describe()
+    info["example"] = {"body": body, "flat": flat, **_numbers(law, pair, R)}
+    if as_json:
+        emit(info, as_json=True)
+        return
+    head = {k: v for k, v in info.items() if k not in ("parameters", "example", "law_id")}
+    emit(head, as_json=False, title=f"contact law {name!r}")
+    ptable = Table(title="parameters", show_header=True, header_style="bold")
+    for col in ("name", "default", "unit", "meaning"):
+        ptable.add_column(col, overflow="fold")
+    for q in law.parameters:
+        ptable.add_row(q.name, q.default_text, q.unit, q.description)
+    if law.parameters:
+        console.print(ptable)
+    example = {
+        k: (v if not (isinstance(v, float) and math.isinf(v)) else "inf")
+        for k, v in info["example"].items()
+    }
+    emit(example, as_json=False, title=f"numbers for {body} on {flat}, R = {R:g} m",
+         units=_UNITS)

@@ -1,0 +1,71 @@
+"""Helpers shared by several laws (Python side, run once per ``build``)."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+
+import numpy as np
+from scipy.optimize import brentq
+
+#: Ratio of the calibrated maximum interference to the critical interference used for the
+#: FEM-fitted laws (provisional, see docs/laws/index.md): Kogut & Etsion (2002) and the
+#: Jackson-Green family report FEM results up to delta/delta_c of about 110.
+FEM_RANGE_RATIO = 110.0
+
+
+def jg_C(nu: float) -> float:
+    """Green's critical-pressure factor C(nu) = 1.295 exp(0.736 nu) (Green 2005; paper Eq. 15).
+
+    It is the Hertz peak pressure at first yield divided by S_y (von Mises).
+    """
+    return 1.295 * math.exp(0.736 * nu)
+
+
+def jg_critical(E_star: float, R: float, S_y: float, nu: float) -> tuple[float, float]:
+    """(delta_c [m], F_c [N]) of paper Eqs. 15 and 17 (Jackson & Green 2005).
+
+    delta_c = (pi C S_y / (2 E*))^2 R, F_c = 4/3 (R/E*)^2 (pi C S_y / 2)^3 (= Hertz at delta_c).
+    """
+    C = jg_C(nu)
+    dc = (math.pi * C * S_y / (2.0 * E_star)) ** 2 * R
+    fc = 4.0 / 3.0 * (R / E_star) ** 2 * (math.pi * C * S_y / 2.0) ** 3
+    return dc, fc
+
+
+def nearest_crossing(
+    f_a: Callable[[float], float],
+    f_b: Callable[[float], float],
+    target: float,
+    lo: float,
+    hi: float,
+    n: int = 3000,
+) -> float | None:
+    """The downward crossing of f_a through f_b in [lo, hi] nearest to ``target`` (in log
+    distance), or None.
+
+    A downward crossing is a root of g = f_a - f_b where g goes from > 0 to < 0 with growing x
+    (f_a falls below f_b). Sign changes are searched on a logarithmic grid of ``n`` points and
+    refined with brentq.
+    """
+    d = np.geomspace(lo, hi, n)
+    g = np.array([f_a(float(x)) - f_b(float(x)) for x in d])
+    change = np.flatnonzero((g[:-1] > 0.0) & (g[1:] <= 0.0))
+    if change.size == 0:
+        return None
+    candidates: list[tuple[float, float, float]] = []  # (distance, a, b)
+    for i in change:
+        mid = math.sqrt(d[i] * d[i + 1])
+        candidates.append((abs(math.log(mid / target)), float(d[i]), float(d[i + 1])))
+    _, a, b = min(candidates)
+    if f_a(b) - f_b(b) == 0.0:
+        return b
+    root = brentq(lambda x: f_a(x) - f_b(x), a, b, xtol=1e-15 * a, rtol=1e-14, maxiter=200)
+    return float(root)
+
+
+def check_switch(value: float, name: str = "published_switch") -> bool:
+    """Validate a 0/1 switch parameter; True for 1."""
+    if value not in (0.0, 1.0):
+        raise ValueError(f"{name} must be 0 (continuous default) or 1 (published), got {value!r}")
+    return value == 1.0

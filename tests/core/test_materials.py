@@ -1,0 +1,83 @@
+"""Materials, pairs and presets: validation and hand-calculated values."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from impactlab.materials import (
+    AISI_201,
+    AISI_1010,
+    ContactPair,
+    Material,
+    brinell_to_pa,
+    get_material,
+    reduced_modulus,
+)
+
+
+def test_paper_pair_reduced_modulus_by_hand() -> None:
+    # Two steels, E = 200 GPa, nu = 0.3: E* = E / (2 (1 - nu^2)) = 200e9 / 1.82
+    pair = ContactPair(AISI_201, AISI_1010)
+    assert pair.E_star == pytest.approx(200e9 / 1.82, rel=1e-12)
+    assert pair.yield_strength == 305e6  # the flat yields first
+    assert pair.weaker is AISI_1010
+
+
+def test_presets_carry_the_unit_corrections() -> None:
+    assert AISI_201.yield_strength == 760e6  # printed "760 GPa" in Table 1
+    assert AISI_201.brinell_hardness == 327.0  # kgf/mm^2, printed kgf/m^2
+    assert AISI_1010.brinell_hardness == 105.0
+    assert brinell_to_pa(105.0) == pytest.approx(105 * 9.80665e6)
+
+
+def test_rigid_partner() -> None:
+    assert reduced_modulus(AISI_1010) == pytest.approx(200e9 / 0.91)
+
+
+@pytest.mark.parametrize(
+    ("field", "value"),
+    [
+        ("E", -1.0),
+        ("E", math.nan),
+        ("nu", 0.5),
+        ("nu", -1.0),
+        ("yield_strength", 0.0),
+        ("yield_strength", math.inf),
+        ("brinell_hardness", -3.0),
+        ("meyer_index", 2.0),
+        ("density", -7800.0),
+        ("name", ""),
+    ],
+)
+def test_invalid_material_names_the_parameter(field: str, value: object) -> None:
+    kwargs: dict[str, object] = dict(name="x", E=200e9, nu=0.3, yield_strength=300e6)
+    kwargs[field] = value
+    with pytest.raises(ValueError, match=field):
+        Material(**kwargs)  # type: ignore[arg-type]
+
+
+def test_yield_above_modulus_is_a_unit_error() -> None:
+    with pytest.raises(ValueError, match="yield_strength"):
+        Material(name="x", E=200e9, nu=0.3, yield_strength=760e9)
+
+
+def test_unknown_preset_lists_known() -> None:
+    with pytest.raises(ValueError, match="aisi-1010"):
+        get_material("steel")
+
+
+@given(
+    E1=st.floats(1e9, 1e12), E2=st.floats(1e9, 1e12), n1=st.floats(-0.9, 0.49),
+    n2=st.floats(-0.9, 0.49),
+)
+def test_reduced_modulus_symmetric_and_below_each(E1: float, E2: float, n1: float,
+                                                  n2: float) -> None:
+    a = Material(name="a", E=E1, nu=n1, yield_strength=1e6)
+    b = Material(name="b", E=E2, nu=n2, yield_strength=1e6)
+    es = reduced_modulus(a, b)
+    assert es == pytest.approx(reduced_modulus(b, a), rel=1e-12)
+    assert es < min(reduced_modulus(a), reduced_modulus(b))
