@@ -70,7 +70,7 @@ def main(argv: list[str]) -> int:
         _run(sys.executable, "-m", "pip", "install", "-q", "uv")
         return _run(
             sys.executable, "-m", "uv", "pip", "compile", "pyproject.toml",
-            "--extra", "profilometry", "--extra", "netcdf", "--extra", "dev",
+            "--extra", "profilometry", "--extra", "netcdf", "--extra", "dev", "--extra", "docs",
             "--python-version", "3.11", "-o", "requirements.lock",
         )
     ensure_env()

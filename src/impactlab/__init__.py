@@ -1,6 +1,19 @@
-"""impactlab: elastic-plastic oblique impacts with friction."""
+"""impactlab: elastic-plastic oblique impacts with friction.
 
+The most used names are importable from the top level::
+
+    import impactlab as il
+    r = il.simulate(il.Rod.paper(), il.AISI_1010, law="ghaednia", friction="coulomb", mu=0.2,
+                    angle=math.radians(20), velocity=(0.0, -1.41))
+
+Subpackages: ``contact`` (laws), ``dynamics`` (engine), ``analytic`` (the paper's inversion),
+``experiment`` (raw files), ``sweep`` (studies), ``paper`` (data and reproduction).
+"""
+
+from impactlab.analytic import InversionResult, Measured, invert
+from impactlab.bodies import PAPER_ROD, Rod, Sphere
 from impactlab.contact import get_law, law_names
+from impactlab.dynamics import BatchResult, ImpactResult, simulate, simulate_batch
 from impactlab.materials import AISI_201, AISI_1010, ContactPair, Material, get_material
 
 __version__ = "0.1.0"
@@ -8,10 +21,20 @@ __version__ = "0.1.0"
 __all__ = [
     "AISI_1010",
     "AISI_201",
+    "PAPER_ROD",
+    "BatchResult",
     "ContactPair",
+    "ImpactResult",
+    "InversionResult",
     "Material",
+    "Measured",
+    "Rod",
+    "Sphere",
     "__version__",
     "get_law",
     "get_material",
+    "invert",
     "law_names",
+    "simulate",
+    "simulate_batch",
 ]

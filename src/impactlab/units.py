@@ -31,7 +31,7 @@ def to_si(value: Any, unit: str, *, name: str = "value") -> float:
             q = ureg.Quantity(text)
         except Exception as exc:  # pint raises several unrelated types
             raise ValueError(f"{name}: cannot parse {text!r} as a quantity ({exc})") from None
-        if q.dimensionless and not target.dimensionless:
+        if q.unitless:
             q = float(q.magnitude) * target  # a bare number means "in the stated unit"
     try:
         si = q.to(target).to_base_units()
@@ -39,7 +39,7 @@ def to_si(value: Any, unit: str, *, name: str = "value") -> float:
         raise ValueError(
             f"{name}: {value!r} has the wrong dimension; expected a quantity convertible to {unit}"
         ) from None
-    x = float(si.magnitude) if si.units != ureg.radian else float(si.magnitude)
+    x = float(si.magnitude)
     if not math.isfinite(x):
         raise ValueError(f"{name} must be finite, got {value!r}")
     return x

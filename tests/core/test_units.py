@@ -19,6 +19,7 @@ from impactlab.units import angle_to_rad, to_si
         ("200 GPa", "Pa", 200e9),
         ("0.25 ms", "s", 2.5e-4),
         (3.0, "mm", 3e-3),
+        ("20", "degree", 0.3490658503988659),
         ("3", "mm", 3e-3),
     ],
 )

@@ -48,7 +48,7 @@ for _name in _COMMAND_MODULES:
 def main() -> None:
     """Entry point: run the app and turn user errors into a one-line message with exit code 2."""
     try:
-        app(standalone_mode=False)
+        rc = app(standalone_mode=False)  # typer.Exit(n) comes back as a return value here
     except SystemExit:
         raise
     except (UserError, ValueError, FileNotFoundError, IsADirectoryError, PermissionError) as exc:
@@ -59,13 +59,15 @@ def main() -> None:
     except KeyboardInterrupt:
         print("interrupted", file=sys.stderr)
         sys.exit(130)
-    except Exception as exc:  # click usage errors and the like
-        import click
-
-        if isinstance(exc, click.exceptions.ClickException):
-            exc.show()
-            sys.exit(exc.exit_code)
-        if isinstance(exc, click.exceptions.Abort):
+    except Exception as exc:  # usage errors of typer's (vendored) click, and the like
+        show = getattr(exc, "show", None)
+        code = getattr(exc, "exit_code", None)
+        if callable(show) and isinstance(code, int):
+            show()
+            sys.exit(code)
+        if type(exc).__name__ == "Abort":
             print("aborted", file=sys.stderr)
             sys.exit(1)
         raise
+    if isinstance(rc, int) and rc != 0:
+        sys.exit(rc)

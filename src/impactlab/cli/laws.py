@@ -102,7 +102,8 @@ def _laws(name: str | None, radius: str, body: str, flat: str, as_json: bool) ->
             return
         table = Table(title="Contact laws", show_header=True, header_style="bold",
                       show_lines=True)
-        for col in ("name", "title", "reference / DOI", "validity", "parameters (default)"):
+        table.add_column("name", no_wrap=True)
+        for col in ("title", "reference / DOI", "validity", "parameters (default)"):
             table.add_column(col, overflow="fold")
         for n in law_names():
             law = get_law(n)

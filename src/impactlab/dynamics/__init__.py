@@ -1,0 +1,37 @@
+"""The impact engine: a compiled planar rigid-body impact of a rod or sphere on a flat.
+
+    from impactlab.bodies import Rod
+    from impactlab.dynamics import simulate
+    r = simulate(Rod.paper(), law="ghaednia", friction="coulomb", mu=0.2,
+                 angle=math.radians(20), velocity=(0.0, -1.41))
+
+See docs/engine/index.md for the equations, conventions and models.
+"""
+
+from impactlab.dynamics.batch import (
+    FRICTION_IDS,
+    OUTPUT_FIELDS,
+    REGIME_NAMES,
+    STATUS_MESSAGES,
+    run_arrays,
+)
+from impactlab.dynamics.engine import DEFAULT_RTOL, HISTORY_FIELDS
+from impactlab.dynamics.results import BatchResult, DentMap, History, ImpactResult
+from impactlab.dynamics.simulate import contact_model, simulate, simulate_batch
+
+__all__ = [
+    "DEFAULT_RTOL",
+    "FRICTION_IDS",
+    "HISTORY_FIELDS",
+    "OUTPUT_FIELDS",
+    "REGIME_NAMES",
+    "STATUS_MESSAGES",
+    "BatchResult",
+    "DentMap",
+    "History",
+    "ImpactResult",
+    "contact_model",
+    "run_arrays",
+    "simulate",
+    "simulate_batch",
+]

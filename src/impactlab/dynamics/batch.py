@@ -1,0 +1,103 @@
+"""Low-level batch interface of the impact engine (arrays in, arrays out; all cores).
+
+``run_arrays`` is what sweeps call: every case may carry its own law parameters and body
+parameters. Invalid cases are flagged in ``status`` (see ``STATUS_MESSAGES``) with NaN outputs;
+they never stop the batch.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from impactlab.bodies import NB
+from impactlab.contact.kernels import N_LAWS, NPARAM
+from impactlab.dynamics import engine as _e
+from impactlab.dynamics.engine import OUTPUT_FIELDS, REGIME_NAMES, STATUS_MESSAGES
+from impactlab.friction import FRICTION_IDS
+
+__all__ = ["FRICTION_IDS", "OUTPUT_FIELDS", "REGIME_NAMES", "STATUS_MESSAGES", "run_arrays"]
+
+
+def _rows(name: str, a: Any, width: int, n: int) -> np.ndarray:
+    arr = np.asarray(a, dtype=np.float64)
+    if arr.ndim == 1:
+        arr = arr[None, :]
+    if arr.ndim != 2 or arr.shape[1] != width or arr.shape[0] not in (1, n):
+        raise ValueError(
+            f"{name} must have shape ({width},), (1, {width}) or ({n}, {width}); got "
+            f"{np.shape(a)}"
+        )
+    return np.require(arr, np.float64, ["C", "W"])
+
+
+def _run(law_id: int, friction_id: int, law_params: Any, body_params: Any, initial: Any,
+         mu: Any, *, gravity: bool | float, constant_angle: bool, rtol: float | None,
+         diagnostics: bool) -> tuple[np.ndarray, np.ndarray]:
+    from impactlab.dynamics.simulate import _check_rtol, gravity_value
+
+    try:
+        lid = int(law_id)
+    except (TypeError, ValueError):
+        raise ValueError(f"law_id must be an integer, got {law_id!r}") from None
+    if not 0 <= lid < N_LAWS:
+        raise ValueError(f"law_id must lie in [0, {N_LAWS - 1}], got {law_id!r}")
+    try:
+        fid = int(friction_id)
+    except (TypeError, ValueError):
+        raise ValueError(f"friction_id must be an integer, got {friction_id!r}") from None
+    if fid not in FRICTION_IDS.values():
+        raise ValueError(f"friction_id must be one of {FRICTION_IDS}, got {friction_id!r}")
+    init = np.asarray(initial, dtype=np.float64)
+    if init.ndim == 1 and init.shape[0] == 4:
+        init = init[None, :]
+    if init.ndim != 2 or init.shape[1] != 4:
+        raise ValueError(f"initial must have shape (N, 4) = [angle, vx, vy, spin], got "
+                         f"{np.shape(initial)}")
+    init = np.require(init, np.float64, ["C", "W"])
+    n = init.shape[0]
+    mu_a = np.asarray(mu, dtype=np.float64)
+    if mu_a.ndim == 0:
+        mu_a = np.full(n, float(mu_a))
+    if mu_a.shape != (n,):
+        raise ValueError(f"mu must be a scalar or have shape ({n},), got {mu_a.shape}")
+    mu_a = np.require(mu_a, np.float64, ["C", "W"])
+    lp = _rows("law_params", law_params, NPARAM, n)
+    bp = _rows("body_params", body_params, NB, n)
+    g = gravity_value(gravity)
+    r = _check_rtol(rtol)
+    out = np.empty((n, _e.N_OUT))
+    status = np.empty(n, dtype=np.int32)
+    if n:
+        _e.impact_batch(lid, lp, fid, bp, init, mu_a, g, bool(constant_angle), r,
+                        bool(diagnostics), out, status)
+    return out, status
+
+
+def run_arrays(
+    law_id: int,
+    friction_id: int,
+    law_params: Any,
+    body_params: Any,
+    initial: Any,
+    mu: Any,
+    *,
+    gravity: bool | float = True,
+    constant_angle: bool = False,
+    rtol: float | None = None,
+) -> tuple[np.ndarray, np.ndarray]:
+    """Run N impacts in parallel.
+
+    law_id : contact-law id (``contact.kernels``); friction_id : ``FRICTION_IDS[name]``.
+    law_params : (N, NPARAM) or (NPARAM,) (``ContactModel.params``).
+    body_params : (N, NB) or (NB,) (``Rod/Sphere.to_params(flat)``, which includes G*).
+    initial : (N, 4) = [angle [rad], vx, vy [m/s], spin [rad/s]]; mu : (N,) or scalar.
+    gravity : True (9.80665), False or a value [m/s^2]; constant_angle : freeze the lever arms;
+    rtol : relative tolerance (None: the engine default).
+
+    Returns ``(out, status)``: out (N, len(OUTPUT_FIELDS)) float64, status (N,) int32
+    (0 = ok; ``STATUS_MESSAGES``). The ``regime`` column holds codes (``REGIME_NAMES``).
+    """
+    return _run(law_id, friction_id, law_params, body_params, initial, mu, gravity=gravity,
+                constant_angle=constant_angle, rtol=rtol, diagnostics=False)

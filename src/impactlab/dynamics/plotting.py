@@ -1,0 +1,119 @@
+"""Figures of one impact: force-time, force-penetration (loading and unloading branches) and the
+contact-point path with the predicted dent. Matplotlib only; nothing here changes a result.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from impactlab.dynamics.results import History, ImpactResult
+
+
+def _history(result: ImpactResult) -> History:
+    if result.history is None:
+        raise ValueError("plots need the history: run simulate(..., history=True)")
+    return result.history
+
+
+def _axes(ax: Any) -> tuple[Any, Any]:
+    if ax is not None:
+        return ax.figure, ax
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(6.0, 4.0), layout="constrained")
+    return fig, ax
+
+
+def _title(result: ImpactResult) -> str:
+    return f"{result.law}, {result.friction} (mu = {result.mu:g}), {result.regime}"
+
+
+def plot_force_time(result: ImpactResult, ax: Any = None) -> Any:
+    """Normal and tangential contact force [N] against time [ms]."""
+    h = _history(result)
+    fig, ax = _axes(ax)
+    t = h.t * 1e3
+    ax.plot(t, h.normal_force, label="normal force $F_n$")
+    ax.plot(t, h.tangential_force, label="tangential force $F_t$")
+    ax.axvline(result.t_max * 1e3, color="0.6", lw=0.8, ls=":", label="max penetration")
+    ax.set_xlabel("time [ms]")
+    ax.set_ylabel("force [N]")
+    ax.set_title(_title(result))
+    ax.legend()
+    return fig
+
+
+def plot_force_penetration(result: ImpactResult, ax: Any = None) -> Any:
+    """Normal force [N] against penetration [um], loading and unloading branches marked."""
+    h = _history(result)
+    fig, ax = _axes(ax)
+    d = h.penetration * 1e6
+    load = h.phase == 0.0
+    ax.plot(d[load], h.normal_force[load], "-", label="loading curve")
+    ax.plot(d[~load], h.normal_force[~load], "-", label="unloading / reloading (Hertzian)")
+    ax.axvline(result.delta_p * 1e6, color="0.6", lw=0.8, ls=":",
+               label=f"residual depth {result.delta_p * 1e6:.3g} um")
+    ax.set_xlabel("penetration $\\delta$ [um]")
+    ax.set_ylabel("normal force $F_n$ [N]")
+    ax.set_title(_title(result))
+    ax.legend()
+    return fig
+
+
+def plot_contact_path(result: ImpactResult, ax: Any = None, *, dent: bool = True) -> Any:
+    """Contact point path on the flat: position along x [um] against penetration [um], with the
+    centre-line profile of the predicted dent."""
+    h = _history(result)
+    fig, ax = _axes(ax)
+    ax.plot(h.contact_x * 1e6, -h.penetration * 1e6, "-", label="tip bottom (contact point)")
+    stick = h.stick > 0.5
+    if np.any(stick):
+        ax.plot(h.contact_x[stick] * 1e6, -h.penetration[stick] * 1e6, ".", ms=3,
+                label="stick / no gross slip")
+    if dent:
+        dm = result.dent(ny=41)
+        x, z = dm.profile()
+        ax.plot(x * 1e6, z * 1e6, "k-", lw=1.0, label="predicted dent (y = 0)")
+    ax.axhline(0.0, color="0.5", lw=0.6)
+    ax.set_xlabel("x along the flat [um]")
+    ax.set_ylabel("height [um]")
+    ax.set_title(f"sliding length {result.sliding_length * 1e6:.3g} um, "
+                 f"contact travel {result.contact_travel * 1e6:.3g} um")
+    ax.legend(fontsize="small")
+    return fig
+
+
+def plot_dent(result: ImpactResult, ax: Any = None) -> Any:
+    """The predicted dent as a filled contour map [um]."""
+    dm = result.dent()
+    fig, ax = _axes(ax)
+    cs = ax.contourf(dm.x * 1e3, dm.y * 1e3, dm.height * 1e6, levels=20, cmap="viridis")
+    fig.colorbar(cs, ax=ax, label="height [um]")
+    ax.set_aspect("equal")
+    ax.set_xlabel("x [mm]")
+    ax.set_ylabel("y [mm]")
+    ax.set_title(f"dent: depth {dm.max_depth * 1e6:.3g} um, length {dm.length * 1e3:.3g} mm")
+    return fig
+
+
+def save_figures(result: ImpactResult, out_dir: str | Path, *, stem: str = "impact",
+                 formats: tuple[str, ...] = ("png", "pdf")) -> list[Path]:
+    """Save the force-time, force-penetration, contact-path and dent figures; returns paths."""
+    import matplotlib.pyplot as plt
+
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    paths = []
+    for name, fn in (("force_time", plot_force_time),
+                     ("force_penetration", plot_force_penetration),
+                     ("contact_path", plot_contact_path), ("dent", plot_dent)):
+        fig = fn(result)
+        for ext in formats:
+            p = out / f"{stem}_{name}.{ext}"
+            fig.savefig(p, dpi=150)
+            paths.append(p)
+        plt.close(fig)
+    return paths

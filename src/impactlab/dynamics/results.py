@@ -1,0 +1,319 @@
+"""Result objects of the impact engine: immutable, SI units, computed once.
+
+Nothing here changes a simulation: results are frozen dataclasses holding read-only arrays, and
+derived products (the dent map, data frames) are computed from them on request.
+"""
+
+from __future__ import annotations
+
+import html
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from impactlab.dynamics.engine import HISTORY_FIELDS, OUTPUT_FIELDS, STATUS_MESSAGES
+
+#: Units of the ImpactResult scalar fields.
+UNITS: dict[str, str] = {
+    "e": "-",
+    "e_energy": "-",
+    "velocity_out": "m/s",
+    "spin_out": "rad/s",
+    "delta_max": "m",
+    "delta_p": "m",
+    "sliding_length": "m",
+    "contact_travel": "m",
+    "duration": "s",
+    "mean_force": "N",
+    "max_force": "N",
+    "normal_impulse": "N s",
+    "tangential_impulse": "N s",
+    "energy_dissipated": "J",
+    "stick_time": "s",
+    "vn_in": "m/s",
+    "vt_in": "m/s",
+    "vn_out": "m/s",
+    "vt_out": "m/s",
+    "angle_out": "rad",
+    "t_max": "s",
+    "angle": "rad",
+    "velocity_in": "m/s",
+    "spin_in": "rad/s",
+    "mu": "-",
+}
+
+HISTORY_UNITS: dict[str, str] = {
+    "t": "s",
+    "penetration": "m",
+    "normal_force": "N",
+    "tangential_force": "N",
+    "contact_x": "m",
+    "slip_velocity": "m/s",
+    "x": "m",
+    "y": "m",
+    "phi": "rad",
+    "vx": "m/s",
+    "vy": "m/s",
+    "omega": "rad/s",
+    "normal_velocity": "m/s",
+    "phase": "-",
+    "stick": "-",
+    "energy": "J",
+}
+
+
+def _readonly(a: np.ndarray) -> np.ndarray:
+    a = np.array(a, dtype=np.float64, copy=True)
+    a.setflags(write=False)
+    return a
+
+
+@dataclass(frozen=True, eq=False)
+class History:
+    """Time history of one impact (rows: accepted steps, dense-output points and events).
+
+    Columns (SI): see ``HISTORY_FIELDS``; each is also an attribute (``history.t``, ...).
+    ``phase`` is 0 on the loading curve and 1 on the unloading/reloading curve; ``stick`` is 1
+    while the contact point sticks (Coulomb) or has no gross slip (Mindlin).
+    """
+
+    data: np.ndarray = field(repr=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "data", _readonly(self.data))
+
+    def __len__(self) -> int:
+        return int(self.data.shape[0])
+
+    def __getattr__(self, name: str) -> np.ndarray:
+        try:
+            j = HISTORY_FIELDS.index(name)
+        except ValueError:
+            raise AttributeError(name) from None
+        return self.data[:, j]
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        return self.__getattr__(name)
+
+    @property
+    def fields(self) -> tuple[str, ...]:
+        """Column names."""
+        return HISTORY_FIELDS
+
+    def to_dataframe(self) -> Any:
+        """A pandas DataFrame (one column per field, SI units)."""
+        import pandas as pd
+
+        return pd.DataFrame(np.array(self.data), columns=list(HISTORY_FIELDS))
+
+    def __repr__(self) -> str:
+        return f"History({len(self)} rows: {', '.join(HISTORY_FIELDS)})"
+
+
+@dataclass(frozen=True, eq=False)
+class DentMap:
+    """Predicted permanent dent on the flat as a height map (see docs/engine/index.md).
+
+    x, y : grid coordinates on the flat [m]; x along the impact plane from the first contact
+        point (positive towards the centre-of-mass side), y across it.
+    height : (len(y), len(x)) surface height after the impact [m] (<= 0 inside the dent).
+    max_depth : deepest point [m] (equals ``delta_p`` for a single loading).
+    length : extent of the dent along x [m]; width : extent across (along y) [m].
+    """
+
+    x: np.ndarray = field(repr=False)
+    y: np.ndarray = field(repr=False)
+    height: np.ndarray = field(repr=False)
+    max_depth: float
+    length: float
+    width: float
+
+    def __post_init__(self) -> None:
+        for name in ("x", "y", "height"):
+            object.__setattr__(self, name, _readonly(getattr(self, name)))
+
+    def profile(self) -> tuple[np.ndarray, np.ndarray]:
+        """(x, height) along the centre line y = 0."""
+        j = int(np.argmin(np.abs(self.y)))
+        return self.x, self.height[j]
+
+    def __repr__(self) -> str:
+        return (f"DentMap(max_depth={self.max_depth:.4g} m, length={self.length:.4g} m, "
+                f"width={self.width:.4g} m, grid={self.height.shape[1]}x{self.height.shape[0]})")
+
+
+_SUMMARY = (
+    ("e", "normal COR e", "-", 1.0),
+    ("e_energy", "energetic COR e*", "-", 1.0),
+    ("delta_max", "max penetration", "um", 1e6),
+    ("delta_p", "permanent depth delta_p", "um", 1e6),
+    ("sliding_length", "sliding length L_s", "um", 1e6),
+    ("contact_travel", "contact travel", "um", 1e6),
+    ("duration", "duration T", "ms", 1e3),
+    ("max_force", "max force", "N", 1.0),
+    ("mean_force", "mean force", "N", 1.0),
+    ("normal_impulse", "normal impulse", "N s", 1.0),
+    ("tangential_impulse", "tangential impulse", "N s", 1.0),
+    ("energy_dissipated", "energy dissipated", "J", 1.0),
+    ("stick_time", "stick time", "ms", 1e3),
+    ("spin_out", "spin out", "rad/s", 1.0),
+)
+
+
+@dataclass(frozen=True, eq=False)
+class ImpactResult:
+    """The outcome of one impact (SI units). Computed once; immutable.
+
+    Sign conventions: x points from the tip towards the centre-of-mass side, y up, spin
+    counter-clockwise positive. ``sliding_length`` is the integral of the slip velocity of the
+    body point at the contact (negative when the tip slides towards -x, as in the paper's
+    tables); ``contact_travel`` is the displacement of the contact point along the flat.
+    """
+
+    e: float
+    e_energy: float
+    velocity_out: tuple[float, float]
+    spin_out: float
+    delta_max: float
+    delta_p: float
+    sliding_length: float
+    contact_travel: float
+    duration: float
+    mean_force: float
+    max_force: float
+    normal_impulse: float
+    tangential_impulse: float
+    energy_dissipated: float
+    stick_time: float
+    regime: str
+    law: str
+    friction: str
+    mu: float
+    angle: float
+    velocity_in: tuple[float, float]
+    spin_in: float
+    vn_in: float
+    vt_in: float
+    vn_out: float
+    vt_out: float
+    angle_out: float
+    t_max: float
+    n_steps: int
+    history: History | None = field(default=None, repr=False)
+    _law_id: int = field(default=-1, repr=False)
+    _law_params: np.ndarray | None = field(default=None, repr=False)
+
+    def to_dict(self, *, include_history: bool = False) -> dict[str, Any]:
+        """Scalar fields as a plain dict (history as lists of columns if asked)."""
+        d: dict[str, Any] = {}
+        for name in self.__dataclass_fields__:
+            if name.startswith("_") or name == "history":
+                continue
+            v = getattr(self, name)
+            d[name] = list(v) if isinstance(v, tuple) else v
+        if include_history and self.history is not None:
+            d["history"] = {k: self.history[k].tolist() for k in HISTORY_FIELDS}
+        return d
+
+    def _rows(self) -> list[tuple[str, str, str]]:
+        rows = [("law", self.law, ""), ("friction", f"{self.friction} (mu = {self.mu:g})", ""),
+                ("regime", self.regime, "")]
+        for key, label, unit, f in _SUMMARY:
+            v = getattr(self, key) * f
+            rows.append((label, f"{v:.5g}", unit))
+        vx, vy = self.velocity_out
+        rows.append(("velocity out (vx, vy)", f"({vx:.5g}, {vy:.5g})", "m/s"))
+        return rows
+
+    def __str__(self) -> str:
+        rows = self._rows()
+        w = max(len(r[0]) for r in rows)
+        lines = ["ImpactResult"] + [f"  {a:<{w}}  {b} {c}".rstrip() for a, b, c in rows]
+        return "\n".join(lines)
+
+    def _repr_html_(self) -> str:
+        body = "".join(
+            f"<tr><td>{html.escape(a)}</td><td style='text-align:right'>{html.escape(b)}</td>"
+            f"<td>{html.escape(c)}</td></tr>" for a, b, c in self._rows()
+        )
+        return ("<table><thead><tr><th>ImpactResult</th><th>value</th><th>unit</th></tr>"
+                f"</thead><tbody>{body}</tbody></table>")
+
+    def dent(self, *, nx: int = 241, ny: int = 121, margin: float = 0.15) -> DentMap:
+        """The predicted permanent dent as a height map (model: docs/engine/index.md, "Dent").
+
+        nx, ny : grid points along and across the impact plane; margin : relative padding.
+        """
+        from impactlab.dynamics.dent import dent_map
+
+        if self.history is None or self._law_params is None:
+            raise ValueError("dent() needs the history: run simulate(..., history=True)")
+        return dent_map(self._law_id, self._law_params, self.history, nx=nx, ny=ny,
+                        margin=margin)
+
+
+@dataclass(frozen=True, eq=False)
+class BatchResult:
+    """Results of ``simulate_batch``: ``out`` (N, len(OUTPUT_FIELDS)) and ``status`` (N,).
+
+    Fields are available by name (``batch["e"]`` or ``batch.e``); cases with a non-zero status
+    hold NaN results (see ``messages``).
+    """
+
+    out: np.ndarray = field(repr=False)
+    status: np.ndarray = field(repr=False)
+    inputs: dict[str, np.ndarray] = field(repr=False)
+    law: str
+    friction: str
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "out", _readonly(self.out))
+        st = np.array(self.status, dtype=np.int32, copy=True)
+        st.setflags(write=False)
+        object.__setattr__(self, "status", st)
+        object.__setattr__(self, "inputs", {k: _readonly(v) for k, v in self.inputs.items()})
+
+    def __len__(self) -> int:
+        return int(self.status.shape[0])
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        try:
+            return self.out[:, OUTPUT_FIELDS.index(name)]
+        except ValueError:
+            if name in self.inputs:
+                return self.inputs[name]
+            raise KeyError(f"unknown field {name!r}; known: {', '.join(OUTPUT_FIELDS)}") from None
+
+    def __getattr__(self, name: str) -> np.ndarray:
+        if name.startswith("_") or name in ("out", "status", "inputs", "law", "friction"):
+            raise AttributeError(name)
+        try:
+            return self[name]
+        except KeyError:
+            raise AttributeError(name) from None
+
+    @property
+    def ok(self) -> np.ndarray:
+        """Boolean mask of the successful cases."""
+        return self.status == 0
+
+    @property
+    def messages(self) -> list[str]:
+        """The status message of each case."""
+        return [STATUS_MESSAGES.get(int(s), f"status {int(s)}") for s in self.status]
+
+    def to_dataframe(self) -> Any:
+        """A pandas DataFrame: inputs, outputs and status per case."""
+        import pandas as pd
+
+        df = pd.DataFrame({k: np.array(v) for k, v in self.inputs.items()})
+        for j, name in enumerate(OUTPUT_FIELDS):
+            df[name] = np.array(self.out[:, j])
+        df["status"] = np.array(self.status)
+        return df
+
+    def __repr__(self) -> str:
+        n_ok = int(np.count_nonzero(self.ok))
+        return (f"BatchResult({len(self)} cases, {n_ok} ok, law={self.law!r}, "
+                f"friction={self.friction!r})")

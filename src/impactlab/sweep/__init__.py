@@ -1,0 +1,84 @@
+"""Sweeps: grids and Monte Carlo samples of many impacts into a resumable Zarr store.
+
+Quick start::
+
+    import numpy as np
+    from impactlab.sweep import Study, run_sweep
+
+    study = Study(name="regime-map",
+                  grid={"angle": np.radians(np.linspace(5, 85, 81)),
+                        "mu": np.linspace(0.0, 0.6, 61)},
+                  fixed={"vy": -1.41})
+    ds = run_sweep(study, "regime-map.zarr").dataset
+
+See docs/sweep.md for the study-file format, resume semantics and Dask usage.
+"""
+
+from impactlab.sweep.distributions import Distribution, LogNormal, Normal, Uniform
+from impactlab.sweep.engine import (
+    ENGINE,
+    EngineEvaluator,
+    Evaluator,
+    Statics,
+    engine_available,
+    numba_cache_stats,
+)
+from impactlab.sweep.inputs import INPUTS, OUTPUT_ALIASES, OUTPUTS, InputSpec
+from impactlab.sweep.plots import plot_output_map, plot_regime_map, plot_sweep
+from impactlab.sweep.runner import (
+    SweepInterrupted,
+    SweepResult,
+    SweepStats,
+    compute_chunk,
+    run_sweep,
+)
+from impactlab.sweep.store import StudyMismatchError, SweepStore, export_netcdf, open_sweep
+from impactlab.sweep.study import (
+    Axis,
+    EngineOptions,
+    Layout,
+    Sample,
+    Study,
+    UncertaintySpec,
+    load_study,
+)
+from impactlab.sweep.uncertainty import UncertaintyReport, format_report, uncertainty_report
+
+__all__ = [
+    "ENGINE",
+    "INPUTS",
+    "OUTPUTS",
+    "OUTPUT_ALIASES",
+    "Axis",
+    "Distribution",
+    "EngineEvaluator",
+    "EngineOptions",
+    "Evaluator",
+    "InputSpec",
+    "Layout",
+    "LogNormal",
+    "Normal",
+    "Sample",
+    "Statics",
+    "Study",
+    "StudyMismatchError",
+    "SweepInterrupted",
+    "SweepResult",
+    "SweepStats",
+    "SweepStore",
+    "UncertaintyReport",
+    "UncertaintySpec",
+    "Uniform",
+    "compute_chunk",
+    "engine_available",
+    "export_netcdf",
+    "format_report",
+    "load_study",
+    "numba_cache_stats",
+    "open_sweep",
+    "plot_output_map",
+    "plot_regime_map",
+    "plot_sweep",
+    "run_sweep",
+    "uncertainty_report",
+]

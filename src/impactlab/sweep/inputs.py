@@ -1,0 +1,185 @@
+"""The catalogue of sweepable inputs and known outputs: names, SI units, kinds and defaults.
+
+Every input of a study is one of these names. A numeric input is stored in SI units (the column
+``unit``); in a study file a bare number is read in ``file_unit`` (degrees for the angle, SI for
+everything else) and a string such as ``"8.8 mm"`` or ``"20 deg"`` is converted. A numeric input
+whose default is ``None`` and that the study does not set means "take the value from the preset"
+(the material preset, the paper's rod); it travels as NaN inside the sweep.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Literal
+
+Kind = Literal["float", "category"]
+
+
+@dataclass(frozen=True)
+class InputSpec:
+    """One sweepable input.
+
+    name : the input's name in study files, the Python API and the result Dataset.
+    unit : SI unit of the stored value ("1" for dimensionless, "" for categories).
+    kind : "float" (numeric, may vary case by case) or "category" (one value per engine call).
+    default : value when the study does not set it; ``None``: from the preset (numeric) or
+        required (``required=True``).
+    required : the study must set it (in [fixed], [grid] or [sample]).
+    file_unit : unit of a bare number in a study file.
+    description : one line for docs and error messages.
+    """
+
+    name: str
+    unit: str
+    kind: Kind
+    default: float | str | None
+    description: str
+    required: bool = False
+    file_unit: str | None = None
+
+    @property
+    def parse_unit(self) -> str:
+        """Unit in which a bare number of a study file is read."""
+        return self.file_unit or self.unit
+
+
+def _f(name: str, unit: str, description: str, default: float | None = None, *,
+       required: bool = False, file_unit: str | None = None) -> InputSpec:
+    return InputSpec(name, unit, "float", default, description, required, file_unit)
+
+
+def _c(name: str, default: str, description: str) -> InputSpec:
+    return InputSpec(name, "", "category", default, description)
+
+
+_MATERIAL_FIELDS = (
+    ("E", "Pa", "Young's modulus"),
+    ("nu", "1", "Poisson's ratio"),
+    ("yield_strength", "Pa", "yield strength S_y"),
+    ("brinell_hardness", "kgf/mm^2", "Brinell hardness number HB (Brake's law)"),
+    ("meyer_index", "1", "Meyer strain-hardening index n (Brake's law)"),
+    ("density", "kg/m^3", "mass density"),
+)
+
+#: Names of the per-case material overrides, by side ("body", "flat"): input name -> field.
+#: (The flat is massive: its density plays no part, so there is no ``flat_density``.)
+MATERIAL_OVERRIDES: dict[str, dict[str, str]] = {
+    side: {f"{side}_{field}": field for field, _, _ in _MATERIAL_FIELDS
+           if not (side == "flat" and field == "density")}
+    for side in ("body", "flat")
+}
+
+_SPECS: tuple[InputSpec, ...] = (
+    # kinematics (paper Sec. 2: theta, v_i; omega_i = 0, no tangential velocity)
+    _f("angle", "rad", "angle of the rod axis to the flat at first contact (theta)", required=True,
+       file_unit="degree"),
+    _f("vx", "m/s", "initial horizontal velocity of the centre of mass (+x towards C)", 0.0),
+    _f("vy", "m/s", "initial vertical velocity of the centre of mass (< 0: towards the flat)",
+       required=True),
+    _f("spin", "rad/s", "initial angular velocity (counter-clockwise positive)", 0.0),
+    _f("mu", "1", "coefficient of friction", required=True),
+    # body geometry (None: the paper's rod, impactlab.bodies.PAPER_ROD)
+    _c("body", "rod", "impacting body: 'rod' (hemispherical tip) or 'sphere'"),
+    _f("length", "m", "rod length L (rod)"),
+    _f("tip_radius", "m", "rod tip radius R (rod)"),
+    _f("radius", "m", "sphere radius (sphere)"),
+    _f("mass", "kg", "body mass m (sphere: from the density if not set)"),
+    _f("inertia", "kg*m^2", "moment of inertia about the centre of mass I_C (rod: m L^2/12 "
+       "if not set)"),
+    # materials: presets and per-property overrides
+    _c("body_material", "aisi-201", "material preset of the impacting body"),
+    _c("flat_material", "aisi-1010", "material preset of the flat"),
+    *(
+        _f(f"{side}_{field}", unit, f"{desc} of the {side} (overrides the preset)")
+        for side in ("body", "flat")
+        for field, unit, desc in _MATERIAL_FIELDS
+        if f"{side}_{field}" in MATERIAL_OVERRIDES[side]
+    ),
+    # model choices
+    _c("law", "ghaednia", "normal contact law (impactlab laws)"),
+    _c("friction", "coulomb", "tangential (friction) model"),
+)
+
+INPUTS: dict[str, InputSpec] = {s.name: s for s in _SPECS}
+
+#: Inputs that enter the contact model (law parameters): changing one rebuilds the ContactModel.
+LAW_INPUTS: tuple[str, ...] = (
+    "law", "body_material", "flat_material", "tip_radius", "radius", "body",
+    *MATERIAL_OVERRIDES["body"], *MATERIAL_OVERRIDES["flat"],
+)
+#: Inputs that enter the body parameters.
+BODY_INPUTS: tuple[str, ...] = (
+    "body", "length", "tip_radius", "radius", "mass", "inertia", "body_material", "body_density",
+)
+#: Per-case kinematic inputs (the engine's ``initial`` and ``mu`` arrays).
+KINEMATIC_INPUTS: tuple[str, ...] = ("angle", "vx", "vy", "spin", "mu")
+
+#: Category inputs: constant within a chunk (the engine is called with one value each).
+CATEGORY_INPUTS: tuple[str, ...] = tuple(s.name for s in _SPECS if s.kind == "category")
+
+
+def get_input(name: str) -> InputSpec:
+    """The input called ``name``; ValueError listing the known names otherwise."""
+    try:
+        return INPUTS[name]
+    except (KeyError, TypeError):
+        raise ValueError(
+            f"unknown input {name!r}; known inputs: {', '.join(INPUTS)}"
+        ) from None
+
+
+@dataclass(frozen=True)
+class OutputSpec:
+    """A known engine output: unit and meaning (attributes of the result variables)."""
+
+    name: str
+    unit: str
+    description: str
+
+
+_OUTPUTS = (
+    OutputSpec("e", "1", "kinematic coefficient of restitution of the contact point"),
+    OutputSpec("e_energy", "1", "energetic coefficient of restitution"),
+    OutputSpec("vx_out", "m/s", "horizontal velocity of the centre of mass after the impact"),
+    OutputSpec("vy_out", "m/s", "vertical velocity of the centre of mass after the impact"),
+    OutputSpec("spin_out", "rad/s", "angular velocity after the impact"),
+    OutputSpec("delta_max", "m", "largest interference"),
+    OutputSpec("delta_p", "m", "permanent (residual) normal deformation"),
+    OutputSpec("sliding_length", "m", "sliding length L_s of the contact point"),
+    OutputSpec("duration", "s", "impact duration T"),
+    OutputSpec("mean_force", "N", "average normal contact force F over the impact"),
+    OutputSpec("max_force", "N", "largest normal contact force"),
+    OutputSpec("normal_impulse", "N*s", "normal impulse"),
+    OutputSpec("tangential_impulse", "N*s", "tangential impulse"),
+    OutputSpec("energy_dissipated", "J", "energy dissipated in the impact"),
+    OutputSpec("stick_time", "s", "time the contact point sticks"),
+    OutputSpec("regime", "1", "friction regime code (see the attribute 'regimes')"),
+    OutputSpec("contact_travel", "m", "displacement of the contact point along the flat"),
+    OutputSpec("vn_in", "m/s", "normal velocity of the contact point at first touch"),
+    OutputSpec("vt_in", "m/s", "slip velocity of the contact point at first touch"),
+    OutputSpec("vn_out", "m/s", "normal velocity of the contact point at separation"),
+    OutputSpec("vt_out", "m/s", "slip velocity of the contact point at separation"),
+    OutputSpec("angle_out", "rad", "rod angle at separation"),
+    OutputSpec("t_max", "s", "time of the largest interference"),
+    OutputSpec("n_steps", "1", "integration steps, accepted and rejected (diagnostics)"),
+    OutputSpec("energy_rise", "1", "largest rise of the total energy over the initial kinetic "
+               "energy (diagnostics)"),
+    OutputSpec("friction_excess", "1", "largest (|F_t| - mu F_n) / max_force (diagnostics)"),
+)
+#: Integer-valued outputs and their stored dtype (fill value -1).
+INTEGER_OUTPUTS: dict[str, str] = {"regime": "int8", "n_steps": "int32"}
+OUTPUTS: dict[str, OutputSpec] = {o.name: o for o in _OUTPUTS}
+
+#: The paper's symbols accepted as output names.
+OUTPUT_ALIASES: dict[str, str] = {
+    "L_s": "sliding_length",
+    "Ls": "sliding_length",
+    "T": "duration",
+    "F": "mean_force",
+    "delta_r": "delta_p",
+}
+
+
+def output_spec(name: str) -> OutputSpec:
+    """Unit and description of an output (unit "unknown" for a field not catalogued here)."""
+    return OUTPUTS.get(name, OutputSpec(name, "unknown", name))

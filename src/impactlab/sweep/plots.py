@@ -1,0 +1,249 @@
+"""Plots of a sweep: regime maps with the analytic mu_c boundary, and output maps.
+
+- ``plot_regime_map``: the friction regime (engine codes, e.g. slip / stick / reversal) over the
+  angle and mu, with the rigid-body boundary mu_c(theta) = a b / (k^2 + b^2)
+  (``impactlab.analytic.critical_friction``; physics notes Sec. 1) drawn on top.
+- ``plot_output_map``: one output over two swept inputs (e.g. angle and vy), or a line over one.
+- ``plot_sweep``: every plot the sweep's dimensions allow, written to a folder.
+
+Angles are shown in degrees; lengths in um, durations in ms (values stay SI in the Dataset).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping, Sequence
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from impactlab.sweep.inputs import OUTPUT_ALIASES, output_spec
+from impactlab.sweep.study import SAMPLE_DIM
+
+#: display scale and unit per SI unit
+_DISPLAY = {"m": (1e6, "um"), "s": (1e3, "ms"), "rad": (180.0 / math.pi, "deg")}
+_VELOCITY_DIMS = ("vy", "vx", "spin")
+
+
+def _display(name: str, units: str) -> tuple[float, str]:
+    if name in ("angle",):
+        return 180.0 / math.pi, "deg"
+    return _DISPLAY.get(units, (1.0, units))
+
+
+def _label(ds: Any, name: str) -> tuple[float, str]:
+    units = str(ds[name].attrs.get("units", "")) if name in ds.variables else ""
+    scale, unit = _display(name, units)
+    return scale, f"{name} [{unit}]" if unit and unit != "1" else name
+
+
+def _select(ds: Any, keep: Sequence[str], sel: Mapping[str, Any] | None) -> Any:
+    """Reduce ``ds`` to the dimensions ``keep``: ``sel`` picks values (nearest) of the others;
+    dimensions not in ``sel`` take their first index."""
+    sel = dict(sel or {})
+    for d in list(ds.dims):
+        if d in keep:
+            continue
+        if d in sel:
+            v = sel.pop(d)
+            ds = ds.sel({d: v}) if isinstance(v, str) else ds.sel({d: v}, method="nearest")
+        else:
+            ds = ds.isel({d: 0})
+    if sel:
+        raise ValueError(f"sel names {sorted(sel)}, which are not dimensions to select on")
+    return ds
+
+
+def _pyplot() -> Any:
+    import matplotlib
+
+    if matplotlib.get_backend().lower() not in ("agg", "pdf", "svg", "cairo"):
+        try:
+            import matplotlib.pyplot as plt  # noqa: F401
+        except Exception:  # pragma: no cover
+            matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def _rod_for(ds: Any) -> Any | None:
+    """The rod of a sweep (fixed geometry) for mu_c, or None (a sphere, or varying geometry)."""
+    body = str(ds["body"].values) if "body" in ds.variables else "rod"
+    if body != "rod":
+        return None
+    from impactlab.analytic import RodProperties
+    from impactlab.bodies import PAPER_ROD
+
+    vals: dict[str, float | None] = {"length": PAPER_ROD.L, "tip_radius": PAPER_ROD.tip_radius,
+                                     "mass": PAPER_ROD.mass, "inertia": None}
+    for name in vals:
+        if name in ds.variables:
+            v = ds[name]
+            if v.ndim:
+                return None
+            vals[name] = float(v.values)
+    return RodProperties(mass=float(vals["mass"] or 0.0), length=float(vals["length"] or 0.0),
+                         tip_radius=float(vals["tip_radius"] or 0.0), inertia=vals["inertia"])
+
+
+def critical_friction_curve(ds: Any, angles: np.ndarray) -> np.ndarray | None:
+    """mu_c at ``angles`` [rad] for the sweep's rod (None if not a rod with fixed geometry)."""
+    rod = _rod_for(ds)
+    if rod is None:
+        return None
+    from impactlab.analytic import critical_friction
+
+    return np.asarray(critical_friction(angles, rod), dtype=np.float64)
+
+
+def plot_regime_map(ds: Any, *, x: str = "angle", y: str = "mu",
+                    sel: Mapping[str, Any] | None = None, ax: Any = None,
+                    show_mu_c: bool = True) -> Any:
+    """Friction regime over ``x`` (angle) and ``y`` (mu), with mu_c(theta) drawn on it."""
+    if "regime" not in ds.data_vars:
+        raise ValueError("the sweep did not keep the output 'regime'")
+    for d in (x, y):
+        if d not in ds.dims:
+            raise ValueError(f"a regime map needs {d!r} as a grid dimension; dims: {list(ds.dims)}")
+    plt = _pyplot()
+    from matplotlib.colors import BoundaryNorm, ListedColormap
+
+    sub = _select(ds[["regime", "status"]], (x, y), sel)
+    reg = np.asarray(sub["regime"].transpose(y, x).values, dtype=float)
+    reg[np.asarray(sub["status"].transpose(y, x).values) != 0] = np.nan
+    names = {int(k): v for k, v in ds["regime"].attrs.get("regimes", {}).items()}
+    codes = sorted(names) or sorted({int(v) for v in reg[np.isfinite(reg)].ravel()})
+    if ax is None:
+        _, ax = plt.subplots(figsize=(6.4, 4.8))
+    xs, xl = _label(ds, x)
+    ys, yl = _label(ds, y)
+    xv = np.asarray(sub[x].values, dtype=float) * xs
+    yv = np.asarray(sub[y].values, dtype=float) * ys
+    palette = ["#4c72b0", "#dd8452", "#55a868", "#c44e52", "#8172b3", "#937860"]
+    if codes:
+        lo, hi = min(codes), max(codes)
+        cmap = ListedColormap([palette[(c - lo) % len(palette)] for c in range(lo, hi + 1)])
+        norm = BoundaryNorm(np.arange(lo - 0.5, hi + 1.5), cmap.N)
+        ax.pcolormesh(xv, yv, reg, cmap=cmap, norm=norm, shading="nearest")
+        from matplotlib.patches import Patch
+
+        handles = [Patch(color=palette[(c - lo) % len(palette)], label=names.get(c, str(c)))
+                   for c in codes]
+    else:
+        handles = []
+    if show_mu_c and x == "angle":
+        th = np.linspace(float(np.min(sub[x])), float(np.max(sub[x])), 200)
+        mu_c = critical_friction_curve(sub, th)
+        if mu_c is not None:
+            (line,) = ax.plot(th * xs, mu_c * ys, "k-", lw=2,
+                              label=r"$\mu_c = ab/(k^2+b^2)$ (rigid body)")
+            handles.append(line)
+    ax.set_xlim(xv.min(), xv.max())
+    ax.set_ylim(yv.min(), yv.max())
+    ax.set_xlabel(xl)
+    ax.set_ylabel(yl)
+    ax.set_title("friction regime")
+    if handles:
+        ax.legend(handles=handles, loc="best", fontsize="small")
+    return ax
+
+
+def plot_output_map(ds: Any, output: str, *, x: str = "angle", y: str | None = None,
+                    sel: Mapping[str, Any] | None = None, ax: Any = None) -> Any:
+    """``output`` over ``x`` and ``y`` (colour map) or over ``x`` alone (line); invalid cases
+    (status != 0) are blank."""
+    out = OUTPUT_ALIASES.get(output, output)
+    if out not in ds.data_vars:
+        raise ValueError(f"the sweep has no output {output!r}")
+    keep = (x,) if y is None else (x, y)
+    for d in keep:
+        if d not in ds.dims:
+            raise ValueError(f"{d!r} is not a grid dimension; dims: {list(ds.dims)}")
+    plt = _pyplot()
+    sub = _select(ds[[out, "status"]], keep, sel)
+    vals = np.asarray(sub[out].values, dtype=float)
+    vals = np.where(np.asarray(sub["status"].values) == 0, vals, np.nan)
+    unit = output_spec(out).unit
+    vs, vunit = _display(out, unit)
+    vlabel = f"{out} [{vunit}]" if vunit and vunit != "1" else out
+    xs, xl = _label(ds, x)
+    if ax is None:
+        _, ax = plt.subplots(figsize=(6.4, 4.8))
+    xv = np.asarray(sub[x].values, dtype=float) * xs
+    if y is None:
+        ax.plot(xv, vals * vs, "o-", ms=3)
+        ax.set_ylabel(vlabel)
+    else:
+        ys, yl = _label(ds, y)
+        yv = np.asarray(sub[y].values, dtype=float) * ys
+        grid = np.asarray(sub[out].transpose(y, x).values, dtype=float)
+        st = np.asarray(sub["status"].transpose(y, x).values)
+        grid = np.where(st == 0, grid, np.nan) * vs
+        mesh = ax.pcolormesh(xv, yv, grid, shading="nearest")
+        ax.figure.colorbar(mesh, ax=ax, label=vlabel)
+        ax.set_ylabel(yl)
+    ax.set_xlabel(xl)
+    ax.set_title(out)
+    return ax
+
+
+def plot_histograms(ds: Any, outputs: Sequence[str]) -> Any:
+    """Histograms of Monte Carlo outputs (valid cases)."""
+    plt = _pyplot()
+    outs = [OUTPUT_ALIASES.get(o, o) for o in outputs if OUTPUT_ALIASES.get(o, o) in ds]
+    n = max(1, len(outs))
+    fig, axes = plt.subplots(1, n, figsize=(3.2 * n, 3.0), squeeze=False)
+    st = np.asarray(ds["status"].values).ravel()
+    for ax, o in zip(axes[0], outs, strict=False):
+        v = np.asarray(ds[o].values, dtype=float).ravel()
+        v = v[(st == 0) & np.isfinite(v)]
+        s, unit = _display(o, output_spec(o).unit)
+        ax.hist(v * s, bins=50)
+        ax.set_xlabel(f"{o} [{unit}]" if unit and unit != "1" else o)
+    fig.tight_layout()
+    return fig
+
+
+def plot_sweep(ds: Any, outdir: str | Path, *,
+               outputs: Sequence[str] = ("e", "delta_p", "sliding_length", "duration"),
+               sel: Mapping[str, Any] | None = None) -> list[Path]:
+    """Write every plot the sweep's dimensions allow into ``outdir`` (PNG); returns the files.
+
+    angle x mu with 'regime' -> regime map (with mu_c); angle x a velocity -> output maps;
+    angle alone -> output lines; a 'sample' dimension -> histograms.
+    """
+    plt = _pyplot()
+    out = Path(outdir)
+    out.mkdir(parents=True, exist_ok=True)
+    files: list[Path] = []
+    dims = list(ds.dims)
+    present = [o for o in (OUTPUT_ALIASES.get(o, o) for o in outputs) if o in ds.data_vars]
+
+    def save(fig: Any, name: str) -> None:
+        p = out / name
+        fig.savefig(p, dpi=120, bbox_inches="tight")
+        plt.close(fig)
+        files.append(p)
+
+    if "angle" in dims and "mu" in dims and "regime" in ds.data_vars:
+        fig, ax = plt.subplots(figsize=(6.4, 4.8))
+        plot_regime_map(ds, sel=sel, ax=ax)
+        save(fig, "regime_map.png")
+    vel = next((d for d in _VELOCITY_DIMS if d in dims), None)
+    if "angle" in dims and vel is not None:
+        for o in present:
+            fig, ax = plt.subplots(figsize=(6.4, 4.8))
+            plot_output_map(ds, o, x="angle", y=vel, sel=sel, ax=ax)
+            save(fig, f"{o}_angle_{vel}.png")
+    elif "angle" in dims:
+        other = "mu" if "mu" in dims else None
+        for o in present:
+            fig, ax = plt.subplots(figsize=(6.4, 4.8))
+            plot_output_map(ds, o, x="angle", y=other, sel=sel, ax=ax)
+            save(fig, f"{o}_angle{'_' + other if other else ''}.png")
+    if SAMPLE_DIM in dims and present:
+        sub = _select(ds, (SAMPLE_DIM,), sel)
+        save(plot_histograms(sub, present), "histograms.png")
+    return files

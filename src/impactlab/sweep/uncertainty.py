@@ -1,0 +1,196 @@
+"""Uncertainty of a Monte Carlo sweep: the spread of the outputs and the inputs that drive it.
+
+For each output (valid cases only, ``status == 0``): mean, standard deviation and percentiles.
+For each (output, sampled input) pair two sensitivity measures:
+
+- ``rank_corr2``: the squared Spearman rank correlation rho_s^2 (Saltelli et al., Global
+  Sensitivity Analysis: The Primer, Wiley 2008, Sec. 1.2.5, doi:10.1002/9780470725184). It captures
+  any monotone dependence; the inputs are ranked by it.
+- ``src2``: the squared standardised regression coefficient SRC_j^2 = (b_j s_j / s_y)^2 of the
+  linear least-squares fit y ~ b_0 + sum_j b_j x_j (same reference, Sec. 1.2.3). For independent
+  inputs and a linear model the SRC_j^2 add up to the fit's R^2 (reported as ``r2``); a small R^2
+  means the output is non-linear in the inputs and rank_corr2 is the better guide.
+
+The sampled inputs of a study are drawn independently, which both measures assume.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+import pandas as pd
+from scipy import stats
+
+from impactlab.sweep.inputs import OUTPUT_ALIASES, output_spec
+from impactlab.sweep.study import SAMPLE_DIM
+
+DEFAULT_OUTPUTS = ("e", "delta_p", "sliding_length", "duration", "mean_force")
+
+
+@dataclass(frozen=True)
+class UncertaintyReport:
+    """Spread of the outputs and sensitivity to the inputs of one Monte Carlo sample.
+
+    summary : one row per output: n (valid cases), mean, std, percentiles ("p2.5", ...), unit.
+    sensitivity : one row per (output, input): rank_corr2, src2, and per output r2 of the
+        linear fit; sorted by output, then by decreasing rank_corr2.
+    n_cases, n_invalid : sample size and cases excluded (status != 0).
+    """
+
+    summary: pd.DataFrame
+    sensitivity: pd.DataFrame
+    n_cases: int
+    n_invalid: int
+
+    def ranking(self, output: str) -> list[str]:
+        """Inputs ordered by decreasing influence (rank_corr2) on ``output``."""
+        out = OUTPUT_ALIASES.get(output, output)
+        sub = self.sensitivity[self.sensitivity["output"] == out]
+        if sub.empty:
+            raise ValueError(f"no sensitivity for output {output!r}")
+        return list(sub.sort_values("rank_corr2", ascending=False)["input"])
+
+    def dominant(self, output: str) -> str:
+        """The input with the largest rank_corr2 for ``output``."""
+        return self.ranking(output)[0]
+
+    def to_dict(self) -> dict[str, Any]:
+        return {
+            "n_cases": self.n_cases,
+            "n_invalid": self.n_invalid,
+            "summary": self.summary.reset_index().to_dict(orient="records"),
+            "sensitivity": self.sensitivity.to_dict(orient="records"),
+        }
+
+
+def _sampled_inputs(ds: Any) -> list[str]:
+    names = []
+    for name, var in ds.variables.items():
+        if var.dims == (SAMPLE_DIM,) and "distribution" in var.attrs:
+            names.append(str(name))
+    return names
+
+
+def uncertainty_report(
+    ds: Any,
+    outputs: Sequence[str] | None = None,
+    inputs: Sequence[str] | None = None,
+    percentiles: Sequence[float] = (2.5, 50.0, 97.5),
+) -> UncertaintyReport:
+    """Summarise a Monte Carlo sweep (Dataset with the single dimension ``sample``).
+
+    ds : the sweep's Dataset (``run_sweep(...).dataset`` or ``open_sweep(path)``); select one
+        grid point first for a grid+sample study (``ds.isel(law=0)``).
+    outputs : outputs to summarise (default: e, delta_p, sliding_length, duration, mean_force,
+        those present); the paper's symbols L_s, T, F are accepted.
+    inputs : sampled inputs to rank (default: all sampled inputs with a spread).
+    percentiles : in [0, 100].
+    """
+    extra = [d for d in ds.dims if d != SAMPLE_DIM]
+    if SAMPLE_DIM not in ds.dims:
+        raise ValueError("the uncertainty report needs a Monte Carlo sweep (a 'sample' dimension)")
+    if any(ds.sizes[d] > 1 for d in extra):
+        raise ValueError(
+            f"the Dataset has grid dimensions {extra} besides 'sample'; select one grid point "
+            f"first, e.g. ds.isel({extra[0]}=0)"
+        )
+    ds = ds.squeeze([d for d in extra], drop=False) if extra else ds
+    for p in percentiles:
+        if not 0.0 <= float(p) <= 100.0:
+            raise ValueError(f"percentiles must lie in [0, 100], got {p!r}")
+    if outputs is None:
+        outs = [o for o in DEFAULT_OUTPUTS if o in ds.data_vars]
+    else:
+        outs = [OUTPUT_ALIASES.get(o, o) for o in outputs]
+        missing = [o for o in outs if o not in ds.data_vars]
+        if missing:
+            raise ValueError(
+                f"output(s) {missing} not in the sweep; it has: "
+                f"{', '.join(str(v) for v in ds.data_vars if v != 'status')}"
+            )
+    if not outs:
+        raise ValueError("no outputs to summarise")
+    sampled = _sampled_inputs(ds)
+    if inputs is None:
+        ins = sampled
+    else:
+        ins = list(inputs)
+        bad = [i for i in ins if i not in sampled]
+        if bad:
+            raise ValueError(f"input(s) {bad} are not sampled; sampled inputs: {sampled}")
+    status = np.asarray(ds["status"].values).ravel()
+    valid = status == 0
+    X = np.column_stack([np.asarray(ds[i].values, dtype=np.float64).ravel() for i in ins]) \
+        if ins else np.empty((status.size, 0))
+    rows = []
+    sens = []
+    for o in outs:
+        y = np.asarray(ds[o].values, dtype=np.float64).ravel()
+        ok = valid & np.isfinite(y)
+        yv = y[ok]
+        row: dict[str, Any] = {"output": o, "unit": output_spec(o).unit, "n": int(ok.sum())}
+        if yv.size:
+            row["mean"] = float(np.mean(yv))
+            row["std"] = float(np.std(yv, ddof=1)) if yv.size > 1 else 0.0
+            for p, v in zip(percentiles, np.percentile(yv, list(percentiles)), strict=True):
+                row[f"p{float(p):g}"] = float(v)
+        rows.append(row)
+        sens.extend(_sensitivity(o, yv, X[ok], ins))
+    summary = pd.DataFrame(rows).set_index("output")
+    sensitivity = pd.DataFrame(sens, columns=["output", "input", "rank_corr2", "src2", "r2"])
+    if not sensitivity.empty:
+        order = {o: i for i, o in enumerate(outs)}
+        sensitivity = sensitivity.assign(_o=sensitivity["output"].map(order)).sort_values(
+            ["_o", "rank_corr2"], ascending=[True, False]).drop(columns="_o")
+        sensitivity = sensitivity.reset_index(drop=True)
+    return UncertaintyReport(summary, sensitivity, int(status.size), int((~valid).sum()))
+
+
+def _sensitivity(output: str, y: np.ndarray, X: np.ndarray, names: Sequence[str]
+                 ) -> list[dict[str, Any]]:
+    if y.size < 3 or X.shape[1] == 0:
+        return []
+    sx = X.std(axis=0, ddof=1)
+    keep = sx > 1e-12 * np.maximum(np.abs(X.mean(axis=0)), 1e-300)
+    sy = y.std(ddof=1)
+    out = []
+    if not sy > 1e-12 * max(abs(float(y.mean())), 1e-300):  # constant output
+        return [{"output": output, "input": n, "rank_corr2": 0.0, "src2": 0.0, "r2": 0.0}
+                for n, k in zip(names, keep, strict=True) if k]
+    Xk = X[:, keep]
+    kept = [n for n, k in zip(names, keep, strict=True) if k]
+    # standardised regression (linear, raw values)
+    Z = (Xk - Xk.mean(axis=0)) / sx[keep]
+    zy = (y - y.mean()) / sy
+    coef, *_ = np.linalg.lstsq(Z, zy, rcond=None)
+    resid = zy - Z @ coef
+    r2 = float(1.0 - resid @ resid / (zy @ zy))
+    ry = stats.rankdata(y)
+    ry = (ry - ry.mean()) / ry.std()
+    for j, name in enumerate(kept):
+        rx = stats.rankdata(Xk[:, j])
+        rx = (rx - rx.mean()) / rx.std()
+        rho = float(np.mean(rx * ry))
+        out.append({"output": output, "input": name, "rank_corr2": float(rho**2),
+                    "src2": float(coef[j] ** 2), "r2": r2})
+    return out
+
+
+def format_report(rep: UncertaintyReport, title: str = "") -> str:
+    """Plain-text tables of a report (what ``impactlab sweep uncertainty`` prints)."""
+    lines = []
+    if title:
+        lines.append(title)
+    lines.append(f"cases: {rep.n_cases}, excluded (status != 0): {rep.n_invalid}")
+    lines.append("")
+    lines.append(rep.summary.to_string(float_format=lambda v: f"{v:.4g}"))
+    lines.append("")
+    lines.append("sensitivity (rank_corr2: squared Spearman correlation; src2: squared "
+                 "standardised regression coefficient; r2: linear fit):")
+    for o, sub in rep.sensitivity.groupby("output", sort=False):
+        ranked = ", ".join(f"{r.input} {r.rank_corr2:.3f}" for r in sub.itertuples())
+        lines.append(f"  {o}: {ranked}  (r2 = {sub['r2'].iloc[0]:.3f})")
+    return "\n".join(lines)

@@ -1,0 +1,139 @@
+"""The verification cases of docs/verification (impactlab.verification) with fewer cases, and
+the same tolerances, asserted here: the published tables come from tested code."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pytest
+
+from impactlab import verification as V
+
+ROOT = Path(__file__).resolve().parents[2]
+PAGE = ROOT / "docs" / "verification" / "index.md"
+
+pytestmark = pytest.mark.usefixtures("warm_engine")
+
+
+def test_tolerances_are_the_published_ones() -> None:
+    # changing a tolerance must be a visible decision: the page states these numbers
+    assert V.TOLERANCES == {
+        "hertz": 1e-6, "thornton": 2e-6, "rigid": 1e-6, "critical_friction": 1e-6,
+        "reference": 1e-4, "paper_duration": 0.05, "invariants": 1e-6,
+        "energy_history": 1e-5,
+    }
+
+
+def test_hertz_closed_forms() -> None:
+    t = V.verify_hertz(V.HERTZ_CASES[:2])
+    assert t.passed, t.to_markdown()
+    assert t.worst <= 1e-6
+    for r in t.records:
+        assert r["err_T"] <= 1e-6 and r["err_F"] <= 1e-6 and r["err_delta"] <= 1e-6
+        assert r["err_e"] <= 1e-6 and r["err_e_energy"] <= 1e-6
+
+
+def test_hertz_closed_form_numbers() -> None:
+    # T = 2.9432 delta_m / v (Johnson 1985, Sec. 11.4)
+    dm, fm, T = V.hertz_closed_form(1.0, 1e11, 0.01, 1.0)
+    assert T * 1.0 / dm == pytest.approx(2.9432, rel=1e-4)
+    assert fm == pytest.approx(4 / 3 * 1e11 * 0.1 * dm**1.5, rel=1e-12)
+    # energy: the work of the Hertz force up to delta_m equals the kinetic energy
+    assert 0.4 * fm * dm == pytest.approx(0.5 * 1.0 * 1.0**2, rel=1e-12)
+
+
+def test_hertz_converges_with_rtol() -> None:
+    conv = V.hertz_convergence((1e-5, 1e-9))
+    assert conv["T"][1] < conv["T"][0] and conv["delta"][1] < 1e-8
+
+
+def test_thornton_closed_form() -> None:
+    t = V.verify_thornton(7)
+    assert t.passed, t.to_markdown()
+    assert t.worst <= 2e-6
+    ratios = [r["ratio"] for r in t.records]
+    assert min(ratios) == 0.5 and max(ratios) == pytest.approx(1000.0)
+    assert t.records[0]["e_engine"] == pytest.approx(1.0, abs=1e-6)  # elastic below V_y
+
+
+def test_rigid_limits_slip_and_stick() -> None:
+    t = V.verify_rigid_limits((0.5, 1.5))
+    assert t.passed, t.to_markdown()
+    assert [r["regime"] for r in t.records] == ["slip", "stick"]
+    assert t.worst <= 1e-6
+
+
+def test_rigid_impulse_is_consistent_at_mu_c() -> None:
+    from impactlab.analytic import critical_friction
+    from impactlab.bodies import PAPER_ROD
+
+    th = math.radians(20.0)
+    mu_c = float(critical_friction(th, PAPER_ROD))
+    below = V.rigid_impulse(PAPER_ROD, th, -1.0, mu_c * (1 - 1e-12))
+    above = V.rigid_impulse(PAPER_ROD, th, -1.0, mu_c)
+    # at mu_c the slip solution has v_t = 0 and joins the stick solution continuously
+    assert below["regime"] == "slip" and above["regime"] == "stick"
+    assert below["P"] == pytest.approx(above["P"], rel=1e-9)
+    assert abs(below["vt"]) < 1e-9
+
+
+def test_critical_friction_boundary() -> None:
+    t = V.verify_critical_friction((10, 45, 80), iterations=24)
+    assert t.passed, t.to_markdown()
+    assert t.worst <= 1e-6
+
+
+def test_engine_vs_reference() -> None:
+    t = V.verify_reference(V.reference_cases(["hertz", "ghaednia", "thornton"],
+                                             ["impulse_ratio", "mindlin"]))
+    failed = [r for r in t.records if str(r["status"]).startswith("reference failed")]
+    assert not failed, failed
+    assert t.passed, t.to_markdown()
+    assert t.worst <= 1e-4
+
+
+def test_paper_durations() -> None:
+    t = V.verify_paper_durations(500)
+    assert t.passed, t.to_markdown()
+    by_angle = {r["angle"]: r for r in t.records}
+    assert by_angle[20.0]["T"] == pytest.approx(4.106, abs=0.002)  # ms, docs/analytic.md
+    assert by_angle[45.0]["T"] == pytest.approx(1.382, abs=0.002)
+    assert by_angle[70.0]["err_T"] is None  # the paper prints no T at 70 deg
+
+
+def test_invariants() -> None:
+    t = V.verify_invariants(3, laws=["ghaednia", "hertz"], frictions=["coulomb", "mindlin"])
+    assert t.passed, t.to_markdown()
+    assert all(r["n"] == 3 for r in t.records)
+
+
+def test_markdown_marks_a_failure() -> None:
+    t = V.verify_paper_durations(200)
+    bad = V.VerificationTable(t.key, t.title, t.text, t.columns, t.records, t.metric, 1.0, 0.05,
+                              False)
+    assert "**FAIL**" in bad.to_markdown() and "**pass**" in t.to_markdown()
+    assert "| 20 |" in t.to_markdown()
+
+
+def test_main_writes_page_and_figures(tmp_path: Path) -> None:
+    tables = V.main(tmp_path / "ver", fast=True, log=None)
+    page = (tmp_path / "ver" / "index.md").read_text()
+    for t in tables:
+        assert f"## {t.title}" in page
+        assert f"(#{V._anchor(t.title)})" in page
+    for name in ("thornton_restitution.png", "critical_friction.png", "hertz_convergence.png"):
+        assert (tmp_path / "ver" / name).stat().st_size > 1000
+    assert sorted(p.name for p in (tmp_path / "ver").iterdir()) == [
+        "critical_friction.png", "hertz_convergence.png", "index.md",
+        "thornton_restitution.png"]
+
+
+def test_published_page_is_generated() -> None:
+    page = PAGE.read_text()
+    assert "Generated by `python -m impactlab.verification docs/verification`" in page
+    for name in ("thornton_restitution.png", "critical_friction.png", "hertz_convergence.png"):
+        assert f"]({name})" in page and (PAGE.parent / name).exists()
+    for key, tol in V.TOLERANCES.items():
+        if key != "invariants":  # stated inside the invariants text
+            assert f"| {tol:.3g} |" in page, key

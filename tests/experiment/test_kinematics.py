@@ -1,0 +1,179 @@
+"""Impact kinematics from marker tracks: accuracy against a known truth, and the clear errors."""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+import pytest
+
+from impactlab.experiment import (
+    ImpactNotFoundError,
+    MarkerError,
+    MarkerGeometry,
+    MarkerTracks,
+    RigidityError,
+    TooFewFramesError,
+    measure_impact,
+    read_c3d,
+)
+from impactlab.experiment import synthetic as S
+
+from .conftest import CASES
+
+
+def _checks(k: Any, tr: S.ImpactTruth) -> dict[str, tuple[float, float, float]]:
+    """name -> (measured, sigma, truth)."""
+    pairs = {
+        "v_cx_in": (k.v_c_in[0], tr.v_in[0]), "v_cy_in": (k.v_c_in[1], tr.v_in[1]),
+        "v_cx_out": (k.v_c_out[0], tr.v_out[0]), "v_cy_out": (k.v_c_out[1], tr.v_out[1]),
+        "omega_in": (k.omega_in, tr.omega_in), "omega_out": (k.omega_out, tr.omega_out),
+        "v_tip_y_in": (k.v_tip_in[1], tr.v_tip_in[1]),
+        "v_tip_y_out": (k.v_tip_out[1], tr.v_tip_out[1]),
+        "theta": (k.theta_in, tr.angle), "e": (k.e, tr.e), "mu": (k.mu, tr.mu),
+    }
+    return {n: (m.value, m.sigma, t) for n, (m, t) in pairs.items()}
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_recovers_the_truth_from_c3d(drops: dict, rod: Any, case: int) -> None:
+    """Acceptance: velocities within 3 sigma of the truth, e and mu within 0.02 (0.15 mm noise,
+    500 fps, occlusions, real C3D file in mm)."""
+    d = drops[case]
+    tracks = read_c3d(d.c3d)
+    k = measure_impact(tracks, rod, geometry=d.geometry)
+    # a contact of finite duration T: the fits are evaluated at one instant inside it, the truth
+    # at its start (before) and end (after); they differ by up to g T (a few mm/s)
+    allow = {n: 9.81 * d.truth.duration for n in ("v_cy_in", "v_cy_out", "v_tip_y_in",
+                                                   "v_tip_y_out")}
+    allow["e"] = 9.81 * d.truth.duration / abs(d.truth.v_tip_in[1])
+    for name, (m, s, t) in _checks(k, d.truth).items():
+        assert abs(m - t) <= 3.0 * s + allow.get(name, 0.0), f"{name}: {m} vs {t}, sigma {s}"
+    assert abs(k.e.value - d.truth.e) < 0.02
+    assert abs(k.mu.value - d.truth.mu) < 0.02
+    t_mid = d.info["t_impact"] + 0.5 * d.truth.duration
+    assert abs(k.t_impact.value - t_mid) < 3.0 * k.t_impact.sigma + 1e-4
+    assert k.geometry_source == "given"
+    assert not k.warnings
+    # the out-of-plane velocity is zero within its uncertainty
+    assert abs(k.v_c_z_in.value) < 4.0 * k.v_c_z_in.sigma + 1e-3
+
+
+def test_exact_without_noise(rod: Any) -> None:
+    tr = S.rigid_impulse_impact(rod, math.radians(45), (0.0, -2.18), e=0.49, mu=0.13)
+    tracks, info = S.marker_tracks(rod, tr, noise=0.0, occlusion=0.0, seed=4)
+    k = measure_impact(tracks, rod, geometry=MarkerGeometry(S.DEFAULT_MARKERS, info["labels"]))
+    for name, (m, _, t) in _checks(k, tr).items():
+        assert m == pytest.approx(t, abs=1e-7), name
+    assert k.t_impact.value == pytest.approx(info["t_impact"], abs=1e-9)
+
+
+def test_y_up_camera_frame(rod: Any) -> None:
+    tr = S.rigid_impulse_impact(rod, math.radians(45), (0.0, -2.18), e=0.49, mu=0.13)
+    tracks, info = S.marker_tracks(rod, tr, up="+y", seed=5)
+    geo = MarkerGeometry(S.DEFAULT_MARKERS, info["labels"])
+    k = measure_impact(tracks, rod, geometry=geo, up="+y")
+    assert abs(k.e.value - tr.e) < 0.02
+    with pytest.raises(MarkerError, match="up"):
+        measure_impact(tracks, rod, geometry=geo, up="+z")
+
+
+@pytest.mark.parametrize("case", [45, 70])
+def test_estimated_geometry(rod: Any, case: int) -> None:
+    """Without the marker geometry: axis = the cluster's principal direction (markers laid out
+    along the rod), centre of mass = the ballistic body point; its uncertainty is propagated."""
+    ang, vi, e, mu, *_ = CASES[case]
+    tr = S.rigid_impulse_impact(rod, math.radians(ang), (0.0, vi), e=e, mu=mu)
+    tracks, _ = S.marker_tracks(rod, tr, markers=S.ALIGNED_MARKERS, seed=case)
+    k = measure_impact(tracks, rod)
+    assert k.geometry_source.startswith("estimated")
+    for name, (m, s, t) in _checks(k, tr).items():
+        assert abs(m - t) <= 4.0 * s + 1e-9, f"{ang} deg {name}: {m} vs {t} +- {s}"
+    assert abs(k.e.value - tr.e) < 0.02 and abs(k.mu.value - tr.mu) < 0.02
+
+
+def test_estimated_geometry_needs_rotation(rod: Any) -> None:
+    """A rod that does not turn after the impact cannot show where its centre of mass is."""
+    th = math.radians(45)
+    tr = S.ImpactTruth(th, (0.0, -2.0), 0.0, (0.0, 1.0), 0.0, (0.0, -2.0), (0.0, 1.0), 0.5,
+                       0.0, "sliding")
+    tracks, _ = S.marker_tracks(rod, tr, markers=S.ALIGNED_MARKERS, seed=3)
+    with pytest.raises(MarkerError, match="centre of mass"):
+        measure_impact(tracks, rod)
+
+
+def test_hold_release_and_second_bounce_are_trimmed(rod: Any) -> None:
+    tr = S.rigid_impulse_impact(rod, math.radians(20), (0.0, -1.41), e=0.5, mu=0.2)
+    tracks, info = S.marker_tracks(rod, tr, release=True, before=0.25, after=0.2,
+                                   second_impact=True, seed=6)
+    geo = MarkerGeometry(S.DEFAULT_MARKERS, info["labels"])
+    k = measure_impact(tracks, rod, geometry=geo, max_fit_frames=150)
+    t_first = tracks.time[k.pre.frames[0]]
+    t_last = tracks.time[k.post.frames[-1]]
+    assert t_first >= info["t_release"] - 0.01  # the held rod is not in the fit
+    assert t_last < info["t_second_contact"]  # nor the second bounce
+    assert k.pre.trimmed > 0
+    for name, (m, s, t) in _checks(k, tr).items():
+        assert abs(m - t) <= 3.5 * s, f"{name}: {m} vs {t} +- {s}"
+
+
+def test_too_few_frames_after_the_impact(rod: Any) -> None:
+    tr = S.rigid_impulse_impact(rod, math.radians(45), (0.0, -2.18), e=0.49, mu=0.13)
+    tracks, info = S.marker_tracks(rod, tr, after=0.012, seed=7)
+    with pytest.raises(TooFewFramesError, match="after the impact"):
+        measure_impact(tracks, rod, geometry=MarkerGeometry(S.DEFAULT_MARKERS, info["labels"]))
+
+
+def test_no_impact(rod: Any) -> None:
+    tr = S.rigid_impulse_impact(rod, math.radians(45), (0.0, -2.18), e=0.49, mu=0.13)
+    tracks, info = S.marker_tracks(rod, tr, before=0.15, after=0.0, seed=8)
+    cut = tracks.time < info["t_impact"] - 0.004
+    t2 = MarkerTracks(tracks.time[cut], tracks.positions[cut], tracks.labels, "flight.c3d")
+    with pytest.raises(ImpactNotFoundError, match="no impact"):
+        measure_impact(t2, rod, geometry=MarkerGeometry(S.DEFAULT_MARKERS, info["labels"]))
+
+
+def test_loose_marker(rod: Any) -> None:
+    tr = S.rigid_impulse_impact(rod, math.radians(45), (0.0, -2.18), e=0.49, mu=0.13)
+    tracks, info = S.marker_tracks(rod, tr, seed=9)
+    pos = np.array(tracks.positions)
+    late = tracks.time > info["t_impact"]
+    pos[late, 1, 2] += 0.004  # marker M2 shifts by 4 mm at the impact
+    loose = MarkerTracks(tracks.time, pos, tracks.labels, "loose.c3d")
+    with pytest.raises(RigidityError, match="M2"):
+        measure_impact(loose, rod, geometry=MarkerGeometry(S.DEFAULT_MARKERS, info["labels"]))
+
+
+def test_geometry_that_does_not_match(rod: Any) -> None:
+    tr = S.rigid_impulse_impact(rod, math.radians(45), (0.0, -2.18), e=0.49, mu=0.13)
+    tracks, info = S.marker_tracks(rod, tr, seed=10)
+    wrong = MarkerGeometry(S.DEFAULT_MARKERS * 1.2, info["labels"])
+    with pytest.raises(MarkerError, match="does not match"):
+        measure_impact(tracks, rod, geometry=wrong)
+    renamed = MarkerGeometry(S.DEFAULT_MARKERS, ("A", "B", "C"))
+    with pytest.raises(MarkerError, match=r"names markers \['A', 'B', 'C'\]"):
+        measure_impact(tracks, rod, geometry=renamed)
+
+
+def test_engine_truth(rod: Any) -> None:
+    """With the impact engine (finite contact duration, its history through the contact), when it
+    is installed."""
+    try:
+        truth = S.engine_impact(rod, S_flat(), math.radians(45), (0.0, -2.18), mu=0.13)
+    except ImportError as exc:
+        pytest.skip(f"impact engine not available: {exc}")
+    assert truth.duration > 0 and truth.contact is not None
+    tracks, info = S.marker_tracks(rod, truth, seed=11)
+    k = measure_impact(tracks, rod, geometry=MarkerGeometry(S.DEFAULT_MARKERS, info["labels"]))
+    assert abs(k.e.value - truth.e) < 0.02
+    assert abs(k.mu.value - truth.mu) < 0.02
+    # the crossing of the tip heights lies inside the contact
+    assert info["t_impact"] - 3 * k.t_impact.sigma <= k.t_impact.value
+    assert k.t_impact.value <= info["t_impact"] + truth.duration + 3 * k.t_impact.sigma
+
+
+def S_flat() -> Any:  # noqa: N802
+    from impactlab.materials import AISI_1010
+
+    return AISI_1010

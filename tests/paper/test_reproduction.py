@@ -1,0 +1,125 @@
+"""The reproduction: output-folder safety (always), the analytic part (always), and the full run
+end to end (only where the impact engine exists)."""
+
+from __future__ import annotations
+
+import re
+import sys
+
+import pandas as pd
+import pytest
+
+from impactlab.paper import reproduction as R
+
+
+def _engine_available() -> bool:
+    try:
+        from impactlab.dynamics import simulate  # noqa: F401
+    except ImportError:
+        return False
+    return True
+
+
+needs_engine = pytest.mark.skipif(
+    not _engine_available(),
+    reason="impactlab.dynamics.simulate is not available yet: the end-to-end reproduction needs "
+    "the impact engine",
+)
+
+
+def test_refuses_foreign_non_empty_folder(tmp_path):
+    (tmp_path / "thesis.tex").write_text("precious")
+    with pytest.raises(ValueError, match="not empty"):
+        R.reproduce(tmp_path, simulate=False)
+    assert [p.name for p in tmp_path.iterdir()] == ["thesis.tex"]
+    assert (tmp_path / "thesis.tex").read_text() == "precious"
+
+
+def test_refuses_a_file(tmp_path):
+    f = tmp_path / "x"
+    f.write_text("")
+    with pytest.raises(ValueError, match="not a folder"):
+        R.prepare_output(f)
+
+
+def test_cli_refusal_is_one_line(tmp_path, monkeypatch, capsys):
+    from impactlab.cli import main
+
+    (tmp_path / "keep.txt").write_text("x")
+    monkeypatch.setattr(sys, "argv", ["impactlab", "reproduce", "--out", str(tmp_path)])
+    with pytest.raises(SystemExit) as exc:
+        main()
+    assert exc.value.code == 2
+    err = capsys.readouterr().err
+    assert "refusing" in err and err.count("\n") == 1
+
+
+@pytest.fixture(scope="module")
+def analytic_run(tmp_path_factory):
+    out = tmp_path_factory.mktemp("repro_analytic") / "new" / "folder"
+    return R.reproduce(out, simulate=False)
+
+
+def test_analytic_part(analytic_run):
+    res = analytic_run
+    exp = res.experimental.set_index("angle [deg]")
+    assert abs(exp.loc[20, "T rel. diff"]) <= 0.05
+    assert abs(exp.loc[45, "T rel. diff"]) <= 0.05
+    assert res.report_md.is_file() and res.report_html.is_file()
+    assert (res.out_dir / R.MARKER).is_file()
+    # published rows are not self-consistent: F T is ~2.4 times the allowed impulse
+    cons = res.consistency
+    tab = cons[cons["source"].isin(["Table 2", "Table 3"])]
+    assert (tab["ratio"] > 2.2).all() and (tab["ratio"] < 2.5).all()
+    assert tab[tab["angle [deg]"] == 45]["exceeds bound"].all()
+    # inertia sensitivity: 1/12 row equals the experimental rows
+    row = res.inertia[res.inertia["I_C/(m L^2)"].astype(str) == str(1 / 12)].iloc[0]
+    assert row["T 20 deg [ms]"] == pytest.approx(exp.loc[20, "T [ms]"])
+
+
+def test_report_numbers_match_library(analytic_run):
+    from impactlab.analytic import invert
+    from impactlab.paper.data import EXPERIMENTS
+
+    text = analytic_run.report_md.read_text()
+    html = analytic_run.report_html.read_text()
+    for ang in (20, 45, 70):
+        x = EXPERIMENTS[ang]
+        T = invert(angle=x.angle, v_i=x.v_i, e=x.e, mu=x.mu, delta_p=x.delta_p, L_s=x.L_s,
+                   n_samples=100).T
+        assert f"{T * 1e3:.4g}" in text and f"{T * 1e3:.4g}" in html
+    assert re.search(r"20 deg: T = 4\.106 ms vs published 4\.30 ms .*PASS", text)
+    assert "<img src=\"fig5_alpha.png\"" in html
+
+
+def test_rerun_into_previous_reproduction_keeps_other_files(analytic_run):
+    out = analytic_run.out_dir
+    (out / "my_notes.txt").write_text("mine")
+    res = R.reproduce(out, simulate=False)
+    assert (out / "my_notes.txt").read_text() == "mine"
+    assert res.report_md.is_file()
+
+
+@needs_engine
+def test_end_to_end(tmp_path_factory):
+    out = tmp_path_factory.mktemp("repro_full")
+    res = R.reproduce(out)
+    assert not res.extras.get("engine_error")
+    # every simulation ran: 3 angles x 3 laws x 2 friction models
+    assert len(res.simulations) == 18
+    for name in ("fig4_dent", "fig5_alpha", "forces_20", "forces_45", "forces_70",
+                 "report_md", "report_html", "table2", "table3", "table4"):
+        assert res.files[name].is_file(), name
+    # every not-reproduced number carries a reason
+    bad = res.comparison[res.comparison["reproduced"] == False]  # noqa: E712
+    assert (bad["reason"].str.len() > 20).all()
+    # the report's simulated numbers are the library's
+    text = res.report_md.read_text()
+    sims = res.simulations
+    g20 = sims[(sims["angle [deg]"] == 20) & (sims["law"] == "ghaednia")
+               & (sims["friction"] == "impulse_ratio")].iloc[0]
+    assert f"{g20['e']:.4g}" in text and f"{g20['delta_p [um]']:.4g}" in text
+    # only our files in the folder
+    allowed = {p.name for p in res.files.values()} | {R.MARKER}
+    assert {p.name for p in out.iterdir()} <= allowed
+    assert isinstance(res.tables["table2"], pd.DataFrame)

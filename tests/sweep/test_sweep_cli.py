@@ -1,0 +1,106 @@
+"""``impactlab sweep``: one-line errors for bad study files; end to end with the real engine."""
+
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+
+import pytest
+
+from impactlab.cli import main
+from impactlab.sweep import engine_available
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
+needs_engine = pytest.mark.skipif(not engine_available(),
+                                  reason="impactlab.dynamics.batch not available")
+
+
+def _cli(monkeypatch, capsys, *args: str) -> tuple[int, str, str]:
+    monkeypatch.setattr(sys, "argv", ["impactlab", *args])
+    try:
+        main()
+        code = 0
+    except SystemExit as exc:
+        code = int(exc.code or 0)
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        ("[grid]\nangel = [10, 20]\n[fixed]\nvy = -1\nmu = 0.1\n",
+         "unknown input 'angel'; known inputs: angle, vx, vy"),
+        ("[fixed]\nvy = -1\nangle = 20\n[sample]\nsize = 10\nmu = { dist = 'beta' }\n",
+         "unknown distribution 'beta'"),
+        ("[fixed]\nvy = -1\nangle = 20\n[sample]\nsize = 10\n"
+         "mu = { dist = 'normal', mean = 0.2 }\n", "needs 'std'"),
+        ("[grid\n", "not valid TOML"),
+        ("[fixed]\nvy = -1\nmu = 0.1\nlaw = 'hooke'\n[grid]\nangle = [10]\n",
+         "unknown contact law 'hooke'"),
+        ("[fixed]\nvy = -1\nmu = 0.1\n[grid]\nangle = [10]\n[outputs]\nkeep = ['e', 'zz']\n",
+         "unknown output(s) ['zz']"),
+    ],
+)
+def test_bad_study_files_give_one_line(tmp_path, monkeypatch, capsys, text, message) -> None:
+    if ("hooke" in text or "'zz'" in text) and not engine_available():
+        pytest.skip("checked against the engine's tables")
+    f = tmp_path / "bad.toml"
+    f.write_text(text)
+    code, _, err = _cli(monkeypatch, capsys, "sweep", str(f), "--out", str(tmp_path / "o"))
+    assert code == 2
+    assert err.startswith("error: ") and err.count("\n") == 1, err
+    assert message in err
+
+
+def test_missing_study_file(tmp_path, monkeypatch, capsys) -> None:
+    code, _, err = _cli(monkeypatch, capsys, "sweep", str(tmp_path / "nope.toml"))
+    assert code == 2 and "does not exist" in err
+
+
+@needs_engine
+def test_run_resume_export_plot_info(tmp_path, monkeypatch, capsys) -> None:
+    study = tmp_path / "small.toml"
+    study.write_text(
+        "[study]\nname = 'small'\nchunk_size = 30\n"
+        "[fixed]\nvy = '-1.41 m/s'\n"
+        "[grid]\nangle = { start = 10, stop = 80, num = 8 }\nmu = [0.0, 0.1, 0.2, 0.4, 0.6]\n"
+        "[outputs]\nkeep = ['e', 'delta_p', 'sliding_length', 'duration', 'regime']\n")
+    store = tmp_path / "small.zarr"
+    code, out, err = _cli(monkeypatch, capsys, "sweep", str(study), "--out", str(store),
+                          "--json", "--netcdf", str(tmp_path / "small.nc"),
+                          "--plot", str(tmp_path / "plots"))
+    assert code == 0, err
+    summary = json.loads(out)
+    assert summary["cases"] == 40 and summary["chunks_computed"] == summary["chunks"]
+    assert (tmp_path / "small.nc").is_file()
+    assert (tmp_path / "plots" / "regime_map.png").is_file()
+    code, out, err = _cli(monkeypatch, capsys, "sweep", "run", str(study), "--out", str(store),
+                          "--json")
+    assert code == 0 and json.loads(out)["chunks_computed"] == 0  # nothing recomputed
+    code, out, err = _cli(monkeypatch, capsys, "sweep", "info", str(store), "--json")
+    assert code == 0 and json.loads(out)["chunks_done"].startswith(str(summary["chunks"]))
+    changed = tmp_path / "changed.toml"
+    changed.write_text(study.read_text().replace("-1.41 m/s", "-2 m/s"))
+    code, _, err = _cli(monkeypatch, capsys, "sweep", str(changed), "--out", str(store))
+    assert code == 2 and "--restart" in err
+
+
+@needs_engine
+def test_uncertainty_command(tmp_path, monkeypatch, capsys) -> None:
+    study = tmp_path / "mc.toml"
+    study.write_text(
+        "[study]\nname = 'mc'\nchunk_size = 100\n"
+        "[fixed]\nangle = 45\n"
+        "[sample]\nsize = 300\nseed = 4\n"
+        "vy = { dist = 'normal', mean = '-2.18 m/s', std = '0.05 m/s' }\n"
+        "mu = { dist = 'uniform', low = 0.05, high = 0.3 }\n"
+        "[uncertainty]\noutputs = ['e', 'delta_p', 'L_s', 'T', 'F']\n")
+    code, out, err = _cli(monkeypatch, capsys, "sweep", "uncertainty", str(study), "--out",
+                          str(tmp_path / "mc.zarr"), "--json")
+    assert code == 0, err
+    rep = next(iter(json.loads(out).values()))
+    outs = {r["output"] for r in rep["summary"]}
+    assert outs == {"e", "delta_p", "sliding_length", "duration", "mean_force"}
+    assert {r["input"] for r in rep["sensitivity"]} == {"vy", "mu"}

@@ -1,0 +1,202 @@
+"""Resumption: an interrupted sweep run again completes only the missing chunks and its store is
+byte-for-byte the store of an uninterrupted run."""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+from conftest import store_files
+from sweep_fakes import VY_LIMIT, CrashingEvaluator, FakeEvaluator
+
+from impactlab.sweep import (
+    Normal,
+    Sample,
+    Study,
+    StudyMismatchError,
+    SweepStore,
+    Uniform,
+    open_sweep,
+    run_sweep,
+)
+
+HERE = Path(__file__).resolve().parent
+
+
+def grid_study(**kw) -> Study:
+    base = dict(name="grid", chunk_size=12,
+                grid={"angle": np.radians(np.linspace(5, 85, 9)), "mu": np.linspace(0, 0.6, 7),
+                      "law": ["ghaednia", "hertz"]},
+                fixed={"vy": -1.41})
+    base.update(kw)
+    return Study(**base)
+
+
+def sample_study(size: int = 2000, chunk: int = 100) -> Study:
+    return Study(name="mc", chunk_size=chunk, fixed={"angle": 0.35},
+                 sample=Sample(size=size, seed=11, inputs={
+                     "vy": Normal(-1.41, 0.05), "mu": Uniform(0.1, 0.3)}))
+
+
+def test_grid_results_match_the_closed_form(tmp_path, fake) -> None:
+    res = run_sweep(grid_study(), tmp_path / "a.zarr", evaluator=fake, quiet=True)
+    assert res.complete and res.stats.chunks_computed == res.stats.n_chunks
+    ds = res.dataset
+    assert ds["e"].dims == ("angle", "mu", "law")
+    th = ds["angle"].values[:, None]
+    mu = ds["mu"].values[None, :]
+    np.testing.assert_allclose(ds["e"].sel(law="hertz").values,
+                               0.5 + 0.1 * np.sin(th) - 0.2 * mu + 0.01, rtol=1e-15)
+    assert ds["angle"].attrs["units"] == "rad" and ds["duration"].attrs["units"] == "s"
+    assert str(ds["vy"].values) == "-1.41" and ds["vy"].attrs["units"] == "m/s"
+    assert str(ds["friction"].values) == "coulomb"  # defaults are recorded too
+    assert set(np.unique(ds["regime"].values)) <= {0, 1}
+    assert ds["regime"].dtype == np.int8 and ds["status"].dtype == np.int32
+
+
+def test_crash_mid_sweep_then_resume_gives_identical_store(tmp_path) -> None:
+    ref = run_sweep(grid_study(), tmp_path / "ref.zarr", evaluator=FakeEvaluator(), quiet=True)
+    store = tmp_path / "b.zarr"
+    with pytest.raises(RuntimeError, match="simulated crash"):
+        run_sweep(grid_study(), store, evaluator=CrashingEvaluator(after=4), quiet=True)
+    assert SweepStore(store).done_chunks() == {0, 1, 2, 3}
+    ds = open_sweep(store)
+    assert (ds["status"].values == -1).any()  # missing chunks read as "not computed"
+    again = run_sweep(grid_study(), store, evaluator=FakeEvaluator(), quiet=True)
+    assert again.stats.chunks_before == 4
+    assert again.stats.chunks_computed == ref.stats.n_chunks - 4
+    assert store_files(store) == store_files(ref.path)
+    # a finished store is left alone
+    third = run_sweep(grid_study(), store, evaluator=CrashingEvaluator(after=0), quiet=True)
+    assert third.stats.chunks_computed == 0
+
+
+_KILL_SCRIPT = textwrap.dedent("""
+    import sys
+    sys.path.insert(0, {here!r})
+    from sweep_fakes import FakeEvaluator
+    from test_sweep_resume import sample_study
+    from impactlab.sweep import run_sweep
+    run_sweep(sample_study(), {store!r}, evaluator=FakeEvaluator(delay=2e-4))
+""")
+
+
+@pytest.mark.parametrize("sig", [signal.SIGKILL, signal.SIGINT])
+def test_killed_process_then_resume_gives_identical_store(tmp_path, sig) -> None:
+    ref = run_sweep(sample_study(), tmp_path / "ref.zarr", evaluator=FakeEvaluator(), quiet=True)
+    store = tmp_path / "killed.zarr"
+    script = _KILL_SCRIPT.format(here=str(HERE), store=str(store))
+    proc = subprocess.Popen([sys.executable, "-c", script], stderr=subprocess.PIPE)
+    try:
+        deadline = time.monotonic() + 60
+        while len(SweepStore(store).done_chunks()) < 3:
+            assert proc.poll() is None, proc.stderr.read().decode() if proc.stderr else ""
+            assert time.monotonic() < deadline
+            time.sleep(0.01)
+        os.kill(proc.pid, sig)
+        proc.wait(timeout=30)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+    assert proc.returncode != 0
+    if sig == signal.SIGINT:
+        assert b"run the same command again" in (proc.stderr.read() if proc.stderr else b"")
+    done = SweepStore(store).done_chunks()
+    assert 3 <= len(done) < ref.stats.n_chunks
+    again = run_sweep(sample_study(), store, evaluator=FakeEvaluator(), quiet=True)
+    assert again.stats.chunks_before == len(done)
+    assert again.stats.chunks_computed == ref.stats.n_chunks - len(done)
+    assert store_files(store) == store_files(ref.path)
+    ds = again.dataset
+    assert ds["vy"].dims == ("sample",) and ds["vy"].attrs["units"] == "m/s"
+    assert not np.isnan(ds["vy"].values).any()
+
+
+def test_changed_study_is_refused_or_restarted_explicitly(tmp_path, fake) -> None:
+    store = tmp_path / "s.zarr"
+    run_sweep(grid_study(), store, evaluator=fake, quiet=True)
+    changed = grid_study(fixed={"vy": -2.0})
+    with pytest.raises(StudyMismatchError, match="--restart"):
+        run_sweep(changed, store, evaluator=fake, quiet=True)
+    assert not (store / ".sweep" / "lock").exists()
+    fresh = run_sweep(changed, store, evaluator=fake, quiet=True, restart=True)
+    ref = run_sweep(changed, tmp_path / "ref.zarr", evaluator=fake, quiet=True)
+    assert fresh.stats.chunks_computed == fresh.stats.n_chunks
+    assert store_files(store) == store_files(ref.path)
+    # a non-store directory is never overwritten
+    other = tmp_path / "other"
+    other.mkdir()
+    (other / "notes.txt").write_text("keep me")
+    with pytest.raises(ValueError, match="not a sweep store"):
+        run_sweep(changed, other, evaluator=fake, quiet=True, restart=True)
+    assert (other / "notes.txt").read_text() == "keep me"
+
+
+def test_process_pool_equals_in_process_run(tmp_path, fake) -> None:
+    a = run_sweep(sample_study(size=600, chunk=100), tmp_path / "a.zarr", evaluator=fake,
+                  quiet=True)
+    b = run_sweep(sample_study(size=600, chunk=100), tmp_path / "b.zarr", evaluator=fake,
+                  quiet=True, backend="processes", workers=2)
+    assert b.stats.chunks_computed == a.stats.n_chunks
+    assert store_files(a.path) == store_files(b.path)
+
+
+def test_invalid_cases_are_recorded_not_raised(tmp_path, fake) -> None:
+    st = grid_study(grid={"angle": np.radians([20.0, 45.0]), "vy": [-1.0, -6.0, -7.0]},
+                    fixed={"mu": 0.2})
+    ds = run_sweep(st, tmp_path / "inv.zarr", evaluator=fake, quiet=True).dataset
+    status = ds["status"].values
+    bad = ds["vy"].values[None, :] < VY_LIMIT
+    np.testing.assert_array_equal(status, np.where(bad, 1, 0) * np.ones((2, 1), dtype=int))
+    assert np.isnan(ds["e"].values[status != 0]).all()
+    assert np.isfinite(ds["e"].values[status == 0]).all()
+    msgs = ds.attrs["status_messages"]
+    assert msgs["1"] == "fake: vy outside the validity range"
+    assert "not computed" in msgs["-1"] and ds["status"].attrs["messages"] == msgs
+
+
+def test_progress_bar_and_quiet(tmp_path, fake, capsys) -> None:
+    run_sweep(grid_study(), tmp_path / "p.zarr", evaluator=fake, progress=True)
+    err = capsys.readouterr().err
+    assert "126/126" in err and "impacts" in err and "ETA" in err
+    run_sweep(grid_study(), tmp_path / "q.zarr", evaluator=fake, quiet=True)
+    run_sweep(grid_study(), tmp_path / "r.zarr", evaluator=fake)  # stderr is not a terminal
+    assert capsys.readouterr().err == ""
+
+
+def test_one_writer_per_store(tmp_path, fake) -> None:
+    store = tmp_path / "l.zarr"
+    with pytest.raises(RuntimeError):
+        run_sweep(grid_study(), store, evaluator=CrashingEvaluator(after=2), quiet=True)
+    assert not (store / ".sweep" / "lock").exists()  # released on the way out
+    # a live writer (here: this test's parent process id) blocks a second one
+    (store / ".sweep" / "lock").write_text(f"{os.uname().nodename} {os.getppid()}")
+    with pytest.raises(ValueError, match="is being written by process"):
+        run_sweep(grid_study(), store, evaluator=fake, quiet=True)
+    # a lock left by a dead process is taken over
+    (store / ".sweep" / "lock").write_text(f"{os.uname().nodename} 999999999")
+    res = run_sweep(grid_study(), store, evaluator=fake, quiet=True)
+    assert res.complete and not (store / ".sweep" / "lock").exists()
+
+
+def test_netcdf_export_round_trip(tmp_path, fake) -> None:
+    import xarray as xr
+
+    from impactlab.sweep import export_netcdf
+
+    ds = run_sweep(grid_study(), tmp_path / "n.zarr", evaluator=fake, quiet=True).dataset
+    export_netcdf(ds, tmp_path / "n.nc")
+    back = xr.open_dataset(tmp_path / "n.nc")
+    np.testing.assert_array_equal(back["e"].values, ds["e"].values)
+    assert list(back["law"].values) == ["ghaednia", "hertz"]
+    assert back["angle"].attrs["units"] == "rad"
+    assert "not computed" in back.attrs["status_messages"]
+    back.close()

@@ -1,0 +1,59 @@
+"""The uncertainty report: spread of the outputs, and the ranking finds the dominant input."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from impactlab.sweep import Normal, Sample, Study, Uniform, run_sweep, uncertainty_report
+from impactlab.sweep.uncertainty import format_report
+
+
+def _mc(tmp_path, fake, grid=None):
+    # fake engine: e = 0.5 + 0.1 sin(angle) - 0.2 mu; delta_p = 1e-5 |vy| 200e9/flat_E;
+    # F = 1000 |vy|. mu (std 0.058) dominates e, flat_E (10 %) dominates delta_p over vy (2 %).
+    st = Study(name="mc", chunk_size=1000, grid=grid or {},
+               sample=Sample(size=4000, seed=5, inputs={
+                   "angle": Normal(0.35, 0.01), "vy": Normal(-1.41, 0.03),
+                   "mu": Uniform(0.1, 0.3), "flat_E": Normal(200e9, 20e9, low=100e9)}))
+    return run_sweep(st, tmp_path / "mc.zarr", evaluator=fake, quiet=True).dataset
+
+
+def test_ranking_finds_the_dominant_input(tmp_path, fake) -> None:
+    ds = _mc(tmp_path, fake)
+    rep = uncertainty_report(ds, outputs=["e", "delta_p", "F", "T"])
+    assert rep.dominant("e") == "mu"
+    assert rep.dominant("delta_p") == "flat_E"
+    assert rep.ranking("delta_p")[1] == "vy"
+    assert rep.dominant("mean_force") == "vy"
+    sens = rep.sensitivity.set_index(["output", "input"])
+    # F depends on vy alone and linearly: rho^2 = SRC^2 = R^2 = 1
+    assert sens.loc[("mean_force", "vy"), "rank_corr2"] == pytest.approx(1.0)
+    assert sens.loc[("mean_force", "vy"), "src2"] == pytest.approx(1.0)
+    assert sens.loc[("mean_force", "mu"), "rank_corr2"] < 0.01
+    # e is linear in mu and nearly so in angle: SRC^2 add up to R^2 ~ 1
+    e = rep.sensitivity[rep.sensitivity.output == "e"]
+    assert e["r2"].iloc[0] == pytest.approx(1.0, abs=1e-6)
+    assert e["src2"].sum() == pytest.approx(1.0, abs=0.02)
+    # a constant output (T) has no sensitivity
+    assert (rep.sensitivity[rep.sensitivity.output == "duration"]["rank_corr2"] == 0).all()
+    s = rep.summary
+    assert s.loc["mean_force", "mean"] == pytest.approx(1410.0, rel=2e-3)
+    assert s.loc["mean_force", "std"] == pytest.approx(30.0, rel=0.05)
+    assert s.loc["mean_force", "p2.5"] == pytest.approx(1410 - 1.96 * 30, rel=3e-3)
+    assert s.loc["e", "n"] == 4000 and rep.n_invalid == 0
+    text = format_report(rep)
+    assert "mean_force: vy 1.000" in text
+
+
+def test_report_needs_a_sample_and_one_grid_point(tmp_path, fake) -> None:
+    ds = _mc(tmp_path, fake, grid={"law": ["ghaednia", "hertz"]})
+    with pytest.raises(ValueError, match="select one grid point"):
+        uncertainty_report(ds)
+    rep = uncertainty_report(ds.isel(law=1), outputs=["e"])
+    assert rep.dominant("e") == "mu"
+    with pytest.raises(ValueError, match="not in the sweep"):
+        uncertainty_report(ds.isel(law=0), outputs=["bogus"])
+    with pytest.raises(ValueError, match="needs a Monte Carlo"):
+        uncertainty_report(ds.isel(sample=0))
+    assert np.isfinite(rep.summary.loc["e", "std"])
