@@ -483,6 +483,17 @@ class InversionResult:
     sensitivity_T: Mapping[str, float] = field(repr=False)
     sensitivity_F: Mapping[str, float] = field(repr=False)
 
+    def _repr_html_(self) -> str:
+        from impactlab._display import html_table
+
+        units = {"T": "s", "F": "N", "K_x": "1/kg", "K_y": "1/kg"}
+        rows = [
+            (k, f"{v:.6g}", units.get(k.split("_")[-1] if k.startswith("sigma") else k, ""))
+            for k, v in self.to_dict().items()
+            if isinstance(v, int | float) and not isinstance(v, bool)
+        ]
+        return html_table("InversionResult", rows)
+
     def to_dict(self) -> dict[str, Any]:
         """Plain, JSON-ready dictionary (SI units; see the class docstring)."""
         out: dict[str, Any] = {}

@@ -6,7 +6,6 @@ derived products (the dent map, data frames) are computed from them on request.
 
 from __future__ import annotations
 
-import html
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -233,12 +232,9 @@ class ImpactResult:
         return "\n".join(lines)
 
     def _repr_html_(self) -> str:
-        body = "".join(
-            f"<tr><td>{html.escape(a)}</td><td style='text-align:right'>{html.escape(b)}</td>"
-            f"<td>{html.escape(c)}</td></tr>" for a, b, c in self._rows()
-        )
-        return ("<table><thead><tr><th>ImpactResult</th><th>value</th><th>unit</th></tr>"
-                f"</thead><tbody>{body}</tbody></table>")
+        from impactlab._display import html_table
+
+        return html_table("ImpactResult", self._rows())
 
     def dent(self, *, nx: int = 241, ny: int = 121, margin: float = 0.15) -> DentMap:
         """The predicted permanent dent as a height map (model: docs/engine/index.md, "Dent").

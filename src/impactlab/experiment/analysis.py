@@ -130,6 +130,13 @@ class ExperimentResult:
         if self.errors:
             raise ExperimentError("; ".join(f"{k}: {v}" for k, v in self.errors.items()))
 
+    def _repr_html_(self) -> str:
+        from impactlab._display import html_table
+
+        rows = [(k, f"{v.value:.6g} +/- {v.sigma:.2g}", v.unit) for k, v in self.summary().items()]
+        rows += [(f"error ({k})", v, "") for k, v in self.errors.items()]
+        return html_table("ExperimentResult", rows)
+
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready (SI units; ``summary`` holds value/sigma/unit per quantity)."""
         d: dict[str, Any] = {
