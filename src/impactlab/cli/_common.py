@@ -3,16 +3,15 @@
 from __future__ import annotations
 
 import json
-import math
 import tomllib
 from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
-import numpy as np
 from rich.console import Console
 from rich.table import Table
 
+from impactlab._json import jsonable
 from impactlab.units import to_si
 
 
@@ -43,25 +42,14 @@ def load_toml(path: Path | None) -> dict[str, Any]:
         raise UserError(f"input file {str(path)!r} is not valid TOML: {exc}") from None
 
 
-def _jsonable(x: Any) -> Any:
-    if isinstance(x, Mapping):
-        return {str(k): _jsonable(v) for k, v in x.items()}
-    if isinstance(x, list | tuple):
-        return [_jsonable(v) for v in x]
-    if isinstance(x, np.ndarray):
-        return _jsonable(x.tolist())
-    if isinstance(x, np.generic):
-        return _jsonable(x.item())
-    if isinstance(x, float) and not math.isfinite(x):
-        return None
-    return x
+
 
 
 def emit(data: Mapping[str, Any], *, as_json: bool, title: str = "", units: Mapping[str, str]
          | None = None) -> None:
     """Print ``data`` as JSON (``--json``) or as a readable two-column table."""
     if as_json:
-        print(json.dumps(_jsonable(data), indent=2))
+        print(json.dumps(jsonable(data), indent=2))
         return
     units = units or {}
     table = Table(title=title or None, show_header=True, header_style="bold")

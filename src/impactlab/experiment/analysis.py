@@ -15,11 +15,11 @@ Stages (each one's failure is recorded and the others go on, so partial results 
 from __future__ import annotations
 
 import json
-import math
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from impactlab._json import jsonable
 from impactlab.experiment.errors import ExperimentError
 from impactlab.experiment.kinematics import ImpactKinematics, measure_impact
 from impactlab.experiment.markers import read_markers
@@ -57,20 +57,7 @@ def rod_properties(rod: Any) -> Any:
                          inertia=getattr(rod, "inertia", None))
 
 
-def _jsonable(x: Any) -> Any:
-    import numpy as np
 
-    if isinstance(x, dict):
-        return {str(k): _jsonable(v) for k, v in x.items()}
-    if isinstance(x, list | tuple):
-        return [_jsonable(v) for v in x]
-    if isinstance(x, np.ndarray):
-        return _jsonable(x.tolist())
-    if isinstance(x, np.generic):
-        return _jsonable(x.item())
-    if isinstance(x, float) and not math.isfinite(x):
-        return None
-    return x
 
 
 @dataclass
@@ -156,7 +143,7 @@ class ExperimentResult:
             d["inversion"] = self.inversion.to_dict()
         if self.model is not None:
             d["model"] = self.model
-        return _jsonable(d)
+        return jsonable(d)
 
     def save(self, out_dir: str | Path) -> Path:
         """Write ``results.json`` into ``out_dir`` (created); returns its path."""
