@@ -40,16 +40,21 @@ def nearest_crossing(
     lo: float,
     hi: float,
     n: int = 3000,
+    g_array: Callable[[np.ndarray], np.ndarray] | None = None,
 ) -> float | None:
     """The downward crossing of f_a through f_b in [lo, hi] nearest to ``target`` (in log
     distance), or None.
 
     A downward crossing is a root of g = f_a - f_b where g goes from > 0 to < 0 with growing x
     (f_a falls below f_b). Sign changes are searched on a logarithmic grid of ``n`` points and
-    refined with brentq.
+    refined with brentq. ``g_array``, when given, evaluates f_a - f_b on the whole grid at once
+    (same values, much faster than point-by-point calls).
     """
     d = np.geomspace(lo, hi, n)
-    g = np.array([f_a(float(x)) - f_b(float(x)) for x in d])
+    if g_array is not None:
+        g = np.asarray(g_array(d), dtype=np.float64)
+    else:
+        g = np.array([f_a(float(x)) - f_b(float(x)) for x in d])
     change = np.flatnonzero((g[:-1] > 0.0) & (g[1:] <= 0.0))
     if change.size == 0:
         return None

@@ -61,7 +61,10 @@ def fill_jackson_family(
     if published:
         d_sw = d_pub
     else:
-        found = nearest_crossing(ep, hertz, d_pub, 1e-4 * dc, dlim)
+        found = nearest_crossing(
+            ep, hertz, d_pub, 1e-4 * dc, dlim,
+            g_array=lambda d: k.elastic_plastic_gap_array(k.GAP_JACKSON_FAMILY, p, d),
+        )
         if found is None:
             raise ValueError(
                 f"the {law_name!r} elastic-plastic formula never crosses the Hertz curve for this "

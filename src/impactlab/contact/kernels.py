@@ -397,3 +397,25 @@ def loading_contact_radius_array(law: int, p: np.ndarray, delta: np.ndarray) -> 
     for i in range(flat.size):
         out[i] = loading_contact_radius(law, p, flat[i])
     return out.reshape(delta.shape)
+
+
+GAP_JACKSON_FAMILY = 0
+GAP_KOGUT_KOMVOPOULOS = 1
+
+
+@njit(cache=True)
+def elastic_plastic_gap_array(kind: int, p: np.ndarray, delta: np.ndarray) -> np.ndarray:
+    """F_ep(delta) - F_elastic(delta) [N] on a 1-D array, for locating the continuous switch of
+    the Jackson-Green family (``GAP_JACKSON_FAMILY``) or Kogut-Komvopoulos
+    (``GAP_KOGUT_KOMVOPOULOS``) when a model is built (one compiled loop instead of thousands of
+    Python calls)."""
+    out = np.empty(delta.size)
+    for i in range(delta.size):
+        x = delta[i]
+        if kind == GAP_JACKSON_FAMILY:
+            out[i] = jg_ep_force(p, x) - hertz_force(p[P_ESTAR], p[P_R], x)
+        elif kind == GAP_KOGUT_KOMVOPOULOS:
+            out[i] = kk_ep_force(p, x) - kk_elastic_force(p, x)
+        else:
+            out[i] = math.nan
+    return out

@@ -103,7 +103,10 @@ class KogutKomvopoulos(ContactLaw):
         if published:
             d_sw = dy
         else:
-            found = nearest_crossing(ep, el, dy, 1e-4 * dy, d_end)
+            found = nearest_crossing(
+                ep, el, dy, 1e-4 * dy, d_end,
+                g_array=lambda d: k.elastic_plastic_gap_array(k.GAP_KOGUT_KOMVOPOULOS, p, d),
+            )
             if found is None:
                 raise ValueError(
                     f"Kogut-Komvopoulos Eq. 21 never falls below the elastic curve for E*/S_y = "

@@ -174,22 +174,50 @@ def simulate(
     rtol: float | None = None,
     history: bool = True,
 ) -> ImpactResult:
-    """Simulate one impact from first touch (delta = 0) to separation.
+    """Simulate one impact from first touch (delta = 0) to separation (SI units).
 
-    Parameters (SI units)
+    Parameters
     ----------
-    body : Rod or Sphere. flat : the flat's material.
-    law : contact-law name (``impactlab.law_names()``) or a ContactModel.
-    friction : "impulse_ratio", "coulomb" or "mindlin". mu : friction coefficient (>= 0).
-    angle : rod axis to the flat [rad], in (0, pi/2]; tip lowest, centre of mass at +x of the
-        tip (ignored for a sphere).
-    velocity : (vx, vy) of the centre of mass at first touch [m/s].
-    spin : angular velocity [rad/s], counter-clockwise positive.
-    law_params : law parameters (see ``impactlab laws``).
-    gravity : True (9.80665 m/s^2), False, or a value [m/s^2].
-    constant_angle : freeze the lever arms at the initial angle (the paper's assumption).
-    rtol : relative tolerance (default ``engine.DEFAULT_RTOL``).
-    history : keep the time history (needed for ``dent()`` and the plots).
+    body : Rod or Sphere
+        The impacting rigid body.
+    flat : Material
+        The flat's material (default AISI 1010, the paper's flat).
+    law : str or ContactModel
+        Contact-law name (``impactlab.law_names()``) or a built ContactModel.
+    friction : str
+        ``"impulse_ratio"`` (paper Eq. 7), ``"coulomb"`` or ``"mindlin"``.
+    mu : float
+        Friction coefficient, >= 0.
+    angle : float
+        Rod axis to the flat [rad], in (0, pi/2]; tip lowest, centre of mass at +x of the tip
+        (ignored for a sphere).
+    velocity : tuple of float
+        (vx, vy) of the centre of mass at first touch [m/s]; the contact point must approach.
+    spin : float
+        Angular velocity [rad/s], counter-clockwise positive.
+    law_params : mapping, optional
+        Law parameters (see ``impactlab laws``).
+    gravity : bool or float
+        True (9.80665 m/s^2), False, or a value [m/s^2].
+    constant_angle : bool
+        Freeze the lever arms at the initial angle (the paper's assumption).
+    rtol : float, optional
+        Relative tolerance (default ``engine.DEFAULT_RTOL``).
+    history : bool
+        Keep the time history (needed for ``dent()`` and the plots).
+
+    Returns
+    -------
+    ImpactResult
+        Immutable result: e, delta_p, sliding_length, duration, mean_force, histories, dent().
+
+    Examples
+    --------
+    >>> import math, impactlab as il
+    >>> r = il.simulate(il.Rod.paper(), law="ghaednia", friction="coulomb", mu=0.2,
+    ...                 angle=math.radians(20), velocity=(0.0, -1.41))
+    >>> round(r.e, 2)
+    0.42
     """
     body = _check_body(body)
     flat = _check_flat(flat)
