@@ -90,7 +90,7 @@ def register(app: typer.Typer) -> None:
         flat: str | None = typer.Option(None, "--flat", help="Flat material preset (e.g. "
                                         "aisi-1010): also run the impact engine with the "
                                         "measured initial state, for comparison."),
-        geometry: str | None = typer.Option(None, "--geometry", help="TOML file with a [markers]"
+        geometry: str | None = typer.Option(None, "--geometry", help="TOML file with a 'markers'"
                                             " table: the markers in the rod's body frame (origin "
                                             "at the centre of mass, x towards the tip); default: "
                                             "estimated."),

@@ -68,7 +68,7 @@ def register(app: typer.Typer) -> None:
         constant_angle: bool = typer.Option(False, "--constant-angle",
                                             help="Freeze the lever arms (paper's assumption)."),
         config: Path = typer.Option(None, "--config", help="TOML file with these keys "
-                                    "(optionally under [simulate]); options override it."),
+                                    "(optionally under a 'simulate' table); options override it."),
         as_json: bool = typer.Option(False, "--json", help="Machine-readable output."),
         plot: bool = typer.Option(False, "--plot", help="Save force-time, force-penetration, "
                                   "contact-path and dent figures (PNG and PDF)."),
