@@ -33,6 +33,7 @@ from typing import Any
 import numpy as np
 
 from impactlab.experiment.errors import FileFormatError
+from impactlab.experiment.textfiles import split_commented
 
 __all__ = [
     "MarkerTracks",
@@ -317,19 +318,7 @@ def read_csv_markers(
         text = p.read_text(encoding="utf-8-sig")
     except UnicodeDecodeError:
         raise FileFormatError(p, "not a text (CSV) file: it is not UTF-8 text") from None
-    meta: dict[str, str] = {}
-    rows: list[tuple[int, str]] = []
-    for ln, line in enumerate(text.splitlines(), start=1):
-        s = line.strip()
-        if not s:
-            continue
-        if s.startswith("#"):
-            body = s.lstrip("#").strip()
-            if ":" in body:
-                k, v = body.split(":", 1)
-                meta[k.strip().lower()] = v.strip()
-            continue
-        rows.append((ln, line))
+    meta, rows = split_commented(text)
     if not rows:
         raise FileFormatError(p, "no header and no data rows")
     header_ln, header = rows[0]

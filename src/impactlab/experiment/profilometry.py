@@ -38,6 +38,7 @@ from impactlab.experiment.errors import (
     ScanError,
 )
 from impactlab.experiment.markers import length_factor
+from impactlab.experiment.textfiles import split_commented
 from impactlab.experiment.uncertainty import Estimate, propagate
 
 __all__ = [
@@ -132,16 +133,10 @@ def _read_plain(p: Path, pixel_size: Any, height_unit: str | None) -> HeightMap:
         except UnicodeDecodeError:
             raise FileFormatError(p, "not a text (CSV) height map: it is not UTF-8 text") from None
         rows: list[list[float]] = []
-        for ln, line in enumerate(text.splitlines(), start=1):
+        header, lines = split_commented(text)
+        meta.update(header)
+        for ln, line in lines:
             s = line.strip()
-            if not s:
-                continue
-            if s.startswith("#"):
-                body = s.lstrip("#").strip()
-                if ":" in body:
-                    k, v = body.split(":", 1)
-                    meta[k.strip().lower()] = v.strip()
-                continue
             delim = "," if "," in s else (";" if ";" in s else None)
             cells = s.split(delim) if delim else s.split()
             vals = []

@@ -1,0 +1,25 @@
+"""Plain-text data files with ``# key: value`` header lines (marker CSVs, CSV height maps)."""
+
+from __future__ import annotations
+
+
+def split_commented(text: str) -> tuple[dict[str, str], list[tuple[int, str]]]:
+    """Split ``text`` into its ``# key: value`` metadata (keys lower-cased) and its data lines.
+
+    Blank lines and other ``#`` comments are skipped; data lines keep their 1-based line numbers
+    (for error messages) and their original text.
+    """
+    meta: dict[str, str] = {}
+    rows: list[tuple[int, str]] = []
+    for ln, line in enumerate(text.splitlines(), start=1):
+        s = line.strip()
+        if not s:
+            continue
+        if s.startswith("#"):
+            body = s.lstrip("#").strip()
+            if ":" in body:
+                key, value = body.split(":", 1)
+                meta[key.strip().lower()] = value.strip()
+            continue
+        rows.append((ln, line))
+    return meta, rows
