@@ -1,0 +1,189 @@
+#!/usr/bin/env python3
+"""Digest of impactlab's numerical outputs, to prove a refactoring changes no result bit.
+
+    python tools/fingerprint.py OUT.json          # write the digests
+    python tools/fingerprint.py OUT.json --compare BEFORE.json
+
+It digests (SHA-256 of the raw float64 bytes, so any changed bit shows):
+
+- ``impactlab reproduce``: every CSV/JSON table it writes (figures and the HTML report are
+  rendered text and images; their numbers come from those tables);
+- three seeded sweep stores (a grid, a Monte Carlo sample, and the laws study), every variable;
+- ``simulate`` on a seeded random sample over every law x friction model x body, with histories
+  and dents;
+- the analytic inversion of the paper's three cases.
+
+Run it on the commit before and after the change; ``--compare`` lists every digest that differs.
+Uses the public CLI and a small set of public functions whose names are looked up at run time,
+so it runs unchanged across a restructuring.
+"""
+
+from __future__ import annotations
+
+import argparse
+import hashlib
+import json
+import math
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+
+def _digest(a: object) -> str:
+    arr = np.ascontiguousarray(np.asarray(a))
+    if arr.dtype.kind in "fc":
+        arr = arr.astype(np.float64 if arr.dtype.kind == "f" else np.complex128)
+    h = hashlib.sha256(str(arr.dtype).encode() + str(arr.shape).encode())
+    if arr.dtype.kind == "O" or arr.dtype.kind in "US":
+        h.update(repr(arr.tolist()).encode())
+    else:
+        h.update(arr.tobytes())
+    return h.hexdigest()[:20]
+
+
+def _cli(*args: str) -> None:
+    exe = Path(sys.executable).with_name("impactlab")
+    subprocess.run([str(exe), *args], check=True, stdout=subprocess.DEVNULL)
+
+
+def reproduce_digests(tmp: Path) -> dict[str, str]:
+    out = tmp / "reproduction"
+    _cli("reproduce", "--out", str(out))
+    d: dict[str, str] = {}
+    for f in sorted(out.rglob("*")):
+        if f.suffix in {".csv", ".json"} and not f.name.startswith(".impactlab"):
+            text = f.read_text()
+            d[f"reproduce/{f.relative_to(out)}"] = hashlib.sha256(text.encode()).hexdigest()[:20]
+    return d
+
+
+STUDIES = {
+    "grid": """
+[study]
+name = "fp-grid"
+chunk_size = 500
+[fixed]
+law = "ghaednia"
+friction = "coulomb"
+[grid]
+angle = { start = "5 deg", stop = "85 deg", num = 20 }
+vy = { start = -4.0, stop = -0.5, num = 10 }
+mu = [0.0, 0.1, 0.3, 0.6]
+""",
+    "sample": """
+[study]
+name = "fp-sample"
+chunk_size = 256
+[fixed]
+law = "brake"
+friction = "mindlin"
+angle = "30 deg"
+[sample]
+size = 1000
+seed = 7
+vy = { dist = "uniform", low = -3.0, high = -0.5 }
+mu = { dist = "uniform", low = 0.0, high = 0.5 }
+flat_yield_strength = { dist = "uniform", low = "250 MPa", high = "360 MPa" }
+""",
+}
+
+
+def sweep_digests(tmp: Path) -> dict[str, str]:
+    import xarray as xr
+
+    repo = Path(__file__).resolve().parents[1]
+    studies = dict(STUDIES)
+    studies["laws"] = (repo / "examples" / "study-laws.toml").read_text()
+    d: dict[str, str] = {}
+    for key, text in studies.items():
+        toml = tmp / f"{key}.toml"
+        toml.write_text(text)
+        store = tmp / f"{key}.zarr"
+        _cli("sweep", "run", str(toml), "--out", str(store))
+        ds = xr.open_zarr(store)
+        for name in sorted({*ds.data_vars, *ds.coords}):
+            d[f"sweep/{key}/{name}"] = _digest(ds[name].values)
+    return d
+
+
+def simulate_digests() -> dict[str, str]:
+    import impactlab as il
+
+    rng = np.random.default_rng(20261123)
+    d: dict[str, str] = {}
+    laws = list(il.law_names()) if hasattr(il, "law_names") else [
+        "hertz", "ghaednia", "jackson-green", "kogut-komvopoulos", "brake", "thornton"]
+    frictions = ["impulse_ratio", "coulomb", "mindlin"]
+    bodies = {"rod": il.Rod.paper(), "sphere": il.Sphere(radius=0.01)}
+    for law in laws:
+        for fr in frictions:
+            for bname, body in bodies.items():
+                for k in range(4):
+                    ang = float(rng.uniform(math.radians(5), math.radians(85)))
+                    vy = float(rng.uniform(-4.0, -0.3))
+                    vx = float(rng.uniform(-0.5, 0.5))
+                    mu = float(rng.uniform(0.0, 0.6))
+                    kw = {"angle": ang} if bname == "rod" else {}
+                    try:
+                        r = il.simulate(body, law=law, friction=fr, mu=mu,
+                                        velocity=(vx, vy), history=True, **kw)
+                    except Exception as exc:  # noqa: BLE001 - the message is part of the digest
+                        d[f"simulate/{law}/{fr}/{bname}/{k}"] = "error:" + str(exc)[:80]
+                        continue
+                    vals = [getattr(r, f) for f in ("e", "delta_max", "delta_p", "duration")]
+                    h = r.history.to_dataframe()
+                    key = f"simulate/{law}/{fr}/{bname}/{k}"
+                    d[key] = _digest(np.array(vals, dtype=float))
+                    d[key + "/history"] = _digest(h.to_numpy(dtype=float))
+                    if k == 0 and bname == "rod":
+                        dent = r.dent()
+                        arrs = [np.asarray(v, dtype=float) for v in vars(dent).values()
+                                if isinstance(v, np.ndarray)]
+                        d[key + "/dent"] = _digest(np.concatenate([a.ravel() for a in arrs]))
+    return d
+
+
+def invert_digests() -> dict[str, str]:
+    import impactlab as il
+
+    d: dict[str, str] = {}
+    for case in ("paper-20", "paper-45", "paper-70"):
+        exe = Path(sys.executable).with_name("impactlab")
+        out = subprocess.run([str(exe), "invert", "--case", case, "--json"], check=True,
+                             capture_output=True, text=True).stdout
+        d[f"invert/{case}"] = hashlib.sha256(out.encode()).hexdigest()[:20]
+    res = il.invert(angle=math.radians(20), v_i=-1.41, e=0.50, mu=0.20,
+                    delta_p=22e-6, L_s=-1400e-6)
+    d["invert/api"] = _digest(np.array([res.T, res.F], dtype=float))
+    return d
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser()
+    ap.add_argument("out")
+    ap.add_argument("--compare")
+    args = ap.parse_args()
+    with tempfile.TemporaryDirectory() as t:
+        tmp = Path(t)
+        d = {}
+        d.update(simulate_digests())
+        d.update(invert_digests())
+        d.update(sweep_digests(tmp))
+        d.update(reproduce_digests(tmp))
+    Path(args.out).write_text(json.dumps(d, indent=1, sort_keys=True) + "\n")
+    print(f"{len(d)} digests -> {args.out}")
+    if args.compare:
+        before = json.loads(Path(args.compare).read_text())
+        diff = sorted(k for k in before.keys() | d.keys() if before.get(k) != d.get(k))
+        for k in diff:
+            print(f"DIFFERS {k}: {before.get(k)} -> {d.get(k)}")
+        print(f"{len(before)} before, {len(d)} after, {len(diff)} differ")
+        return 1 if diff else 0
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
