@@ -2,12 +2,15 @@
 """Set-up and task runner for impactlab: needs only python3 (with venv and pip).
 
     python3 tasks.py reproduce [ARGS...]   # create .venv if needed, then reproduce the paper
-    python3 tasks.py test [PYTEST ARGS...] # create .venv if needed, then ruff, mypy and pytest
+    python3 tasks.py test [PYTEST ARGS...] # create .venv if needed, then ruff, mypy, pytest
+    python3 tasks.py lint                  # ruff check, ruff format --check, mypy, lint-imports
     python3 tasks.py bench                 # run the benchmarks
     python3 tasks.py lock                  # regenerate requirements.lock (developers only)
 
 The virtual environment is built from the pinned ``requirements.lock`` and re-built whenever the
-lock file or ``pyproject.toml`` changes.
+lock file or ``pyproject.toml`` changes (their SHA-256 is kept in ``.venv/.impactlab-stamp``).
+The import layers (``[tool.importlinter]`` in pyproject.toml) are checked by
+``tests/core/test_layers.py``, so ``test`` runs them too.
 """
 
 from __future__ import annotations
@@ -47,11 +50,22 @@ def ensure_env() -> None:
     if not PY.exists():
         print(f"creating virtual environment in {VENV}", flush=True)
         venv.EnvBuilder(with_pip=True, clear=True).create(VENV)
-    pip = [PY, "-m", "pip", "install", "--disable-pip-version-check", "-q"]
+    pip: list[str | Path] = [PY, "-m", "pip", "install", "--disable-pip-version-check", "-q"]
     for cmd in ([*pip, "-r", LOCK], [*pip, "--no-deps", "-e", "."]):
         if _run(*cmd) != 0:
             sys.exit("impactlab set-up failed while installing dependencies (see above)")
     STAMP.write_text(fp)
+
+
+_CHECKED = ("src", "tests", "benchmarks", "examples", "tools", "tasks.py")
+_RUFF: list[str | Path] = [PY, "-m", "ruff", "check", *_CHECKED]
+_RUFF_FORMAT: list[str | Path] = [PY, "-m", "ruff", "format", "--check", *_CHECKED]
+_MYPY: list[str | Path] = [PY, "-m", "mypy"]
+_LOCK: list[str | Path] = [
+    *("-m", "uv", "pip", "compile", "pyproject.toml"),
+    *("--extra", "profilometry", "--extra", "netcdf", "--extra", "dev", "--extra", "docs"),
+    *("--python-version", "3.11", "-o", "requirements.lock"),
+]
 
 
 def _env() -> dict[str, str]:
@@ -68,28 +82,25 @@ def main(argv: list[str]) -> int:
     task, rest = argv[0], argv[1:]
     if task == "lock":
         _run(sys.executable, "-m", "pip", "install", "-q", "uv")
-        return _run(
-            sys.executable, "-m", "uv", "pip", "compile", "pyproject.toml",
-            "--extra", "profilometry", "--extra", "netcdf", "--extra", "dev", "--extra", "docs",
-            "--python-version", "3.11", "-o", "requirements.lock",
-        )
+        return _run(sys.executable, *_LOCK)
     ensure_env()
     env = _env()
     if task == "reproduce":
         return _run(PY, "-m", "impactlab", "reproduce", *rest, env=env)
     if task == "test":
-        for cmd in (
-            (PY, "-m", "ruff", "check", "src", "tests", "benchmarks", "tasks.py"),
-            (PY, "-m", "mypy"),
-        ):
+        for cmd in (_RUFF, _RUFF_FORMAT, _MYPY):
             if _run(*cmd, env=env) != 0:
                 return 1
         return _run(PY, "-m", "pytest", "-n", "2", "--dist", "loadfile", *rest, env=env)
+    if task == "lint":
+        cmds = (_RUFF, _RUFF_FORMAT, _MYPY, [BIN / "lint-imports", "--no-cache"])
+        return max(_run(*cmd, env=env) for cmd in cmds)
     if task == "bench":
         return _run(PY, "benchmarks/run_all.py", *rest, env=env)
     if task == "docs":
         return _run(PY, "-m", "mkdocs", "build", "--strict", *rest, env=env)
-    print(f"unknown task {task!r}; known: reproduce, test, bench, docs, lock", file=sys.stderr)
+    known = "reproduce, test, lint, bench, docs, lock"
+    print(f"unknown task {task!r}; known: {known}", file=sys.stderr)
     return 2
 
 

@@ -32,8 +32,8 @@ import numpy as np
 
 from impactlab.bodies import PAPER_ROD
 from impactlab.dynamics import DEFAULT_RTOL, FRICTION_IDS, OUTPUT_FIELDS, run_arrays, simulate
+from impactlab.dynamics.models import contact_model, kernel_params
 from impactlab.dynamics.reference import simulate_reference
-from impactlab.dynamics.simulate import contact_model, kernel_params
 from impactlab.materials import AISI_1010
 
 ROOT = Path(__file__).resolve().parent

@@ -38,10 +38,13 @@ def _study(n_angle: int, n_vy: int, n_mu: int, name: str, chunk: int):  # type: 
     from impactlab.sweep import Study
 
     return Study(
-        name=name, chunk_size=chunk,
-        grid={"angle": np.radians(np.linspace(5.0, 85.0, n_angle)),
-              "vy": np.linspace(-4.0, -0.5, n_vy),
-              "mu": np.linspace(0.0, 0.6, n_mu)},
+        name=name,
+        chunk_size=chunk,
+        grid={
+            "angle": np.radians(np.linspace(5.0, 85.0, n_angle)),
+            "vy": np.linspace(-4.0, -0.5, n_vy),
+            "mu": np.linspace(0.0, 0.6, n_mu),
+        },
         fixed={"law": "ghaednia", "friction": "coulomb"},
     )
 
@@ -55,8 +58,13 @@ def _machine() -> dict[str, object]:
                 break
     except OSError:
         pass
-    return {"cpu": cpu, "cores": len(os.sched_getaffinity(0)), "python": platform.python_version(),
-            "platform": platform.platform(), "load_average_start": os.getloadavg()}
+    return {
+        "cpu": cpu,
+        "cores": len(os.sched_getaffinity(0)),
+        "python": platform.python_version(),
+        "platform": platform.platform(),
+        "load_average_start": os.getloadavg(),
+    }
 
 
 def _kernel_time(study, threads: int) -> tuple[float, int]:  # type: ignore[no-untyped-def]
@@ -75,9 +83,15 @@ def _kernel_time(study, threads: int) -> tuple[float, int]:  # type: ignore[no-u
         init = np.column_stack([num["angle"], num["vx"], num["vy"], num["spin"]])
         mu = np.ascontiguousarray(num["mu"])
         t0 = time.perf_counter()
-        batch.run_arrays(get_law(cat["law"]).law_id, batch.FRICTION_IDS[cat["friction"]], lp, bp,
-                         init, mu,
-                         **study.engine.kwargs())
+        batch.run_arrays(
+            get_law(cat["law"]).law_id,
+            batch.FRICTION_IDS[cat["friction"]],
+            lp,
+            bp,
+            init,
+            mu,
+            **study.engine.kwargs(),
+        )
         total += time.perf_counter() - t0
         n += len(mu)
     return total, n
@@ -134,28 +148,44 @@ def main(argv: list[str] | None = None) -> int:
         write_s.append(st.write_s)
         runs["one"].append(_sweep(subset, workdir, "one", quiet=True, workers=1)[0])
         runs["prog"].append(_sweep(subset, workdir, "prog", progress=True)[0])
-        runs["proc"].append(_sweep(subset, workdir, "proc", quiet=True, backend="processes",
-                                   workers=cores)[0])
-        print(f"repeat {rep + 1}: " + ", ".join(f"{k} {v[-1]:.2f} s" for k, v in runs.items()),
-              flush=True)
+        runs["proc"].append(
+            _sweep(subset, workdir, "proc", quiet=True, backend="processes", workers=cores)[0]
+        )
+        print(
+            f"repeat {rep + 1}: " + ", ".join(f"{k} {v[-1]:.2f} s" for k, v in runs.items()),
+            flush=True,
+        )
     best = {k: min(v) for k, v in runs.items()}
     kern = best["kernel"]
     overhead = best["prog"] / kern - 1.0
     ratio = best["one"] / best["all"]
-    print(f"kernel only ({n_sub} impacts, {cores} threads): {kern:.2f} s, "
-          f"{n_sub / kern:,.0f} impacts/s")
-    print(f"sweep ({n_sub} impacts) threads x{cores}: {best['all']:.2f} s; x1: {best['one']:.2f} s;"
-          f" throughput ratio {ratio:.2f}")
-    print(f"sweep with progress bar: {best['prog']:.2f} s -> overhead vs kernel "
-          f"{100 * overhead:.1f} %")
+    print(
+        f"kernel only ({n_sub} impacts, {cores} threads): {kern:.2f} s, "
+        f"{n_sub / kern:,.0f} impacts/s"
+    )
+    print(
+        f"sweep ({n_sub} impacts) threads x{cores}: {best['all']:.2f} s; x1: {best['one']:.2f} s;"
+        f" throughput ratio {ratio:.2f}"
+    )
+    print(
+        f"sweep with progress bar: {best['prog']:.2f} s -> overhead vs kernel "
+        f"{100 * overhead:.1f} %"
+    )
     print(f"local process pool x{cores}: {best['proc']:.2f} s")
     results["subset"] = {
-        "impacts": n_sub, "chunk_size": chunk, "repeats": args.repeat, "runs_s": runs,
-        "kernel_s": kern, "kernel_impacts_per_s": n_sub / kern,
-        "sweep_threads_all_cores_s": best["all"], "sweep_threads_1_core_s": best["one"],
+        "impacts": n_sub,
+        "chunk_size": chunk,
+        "repeats": args.repeat,
+        "runs_s": runs,
+        "kernel_s": kern,
+        "kernel_impacts_per_s": n_sub / kern,
+        "sweep_threads_all_cores_s": best["all"],
+        "sweep_threads_1_core_s": best["one"],
         "throughput_ratio_all_vs_1": ratio,
-        "sweep_with_progress_s": best["prog"], "overhead_vs_kernel": overhead,
-        "write_s": min(write_s), "sweep_processes_s": best["proc"],
+        "sweep_with_progress_s": best["prog"],
+        "overhead_vs_kernel": overhead,
+        "write_s": min(write_s),
+        "sweep_processes_s": best["proc"],
         "processes_vs_threads_time": best["proc"] / best["all"],
     }
     if not args.quick:
@@ -166,13 +196,20 @@ def main(argv: list[str] | None = None) -> int:
         # (the subset figure above is dominated by a fixed ~0.2 s per-sweep cost).
         kernel_rate = results["subset"]["kernel_impacts_per_s"]  # type: ignore[index]
         overhead_full = w_full * kernel_rate / n - 1.0
-        print(f"full sweep: {w_full:.1f} s end to end ({n / w_full:,.0f} impacts/s), "
-              f"writes {st_full.write_s:.1f} s, overhead vs kernel rate "
-              f"{100 * overhead_full:.1f} %")
-        results["full"] = {"impacts": n, "wall_s": w_full, "impacts_per_s": n / w_full,
-                           "write_s": st_full.write_s, "eval_s": st_full.eval_s,
-                           "overhead_vs_kernel_rate": overhead_full,
-                           "under_3_minutes": w_full < 180.0}
+        print(
+            f"full sweep: {w_full:.1f} s end to end ({n / w_full:,.0f} impacts/s), "
+            f"writes {st_full.write_s:.1f} s, overhead vs kernel rate "
+            f"{100 * overhead_full:.1f} %"
+        )
+        results["full"] = {
+            "impacts": n,
+            "wall_s": w_full,
+            "impacts_per_s": n / w_full,
+            "write_s": st_full.write_s,
+            "eval_s": st_full.eval_s,
+            "overhead_vs_kernel_rate": overhead_full,
+            "under_3_minutes": w_full < 180.0,
+        }
     machine["load_average_end"] = os.getloadavg()
     if args.workdir is None:
         shutil.rmtree(workdir, ignore_errors=True)

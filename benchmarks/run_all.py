@@ -17,8 +17,12 @@ HERE = Path(__file__).resolve().parent
 def main(argv: list[str]) -> int:
     full = "--full" in argv
     runs = [
-        [sys.executable, str(HERE / "bench_engine.py"), "--markdown",
-         str(HERE.parent / "docs" / "engine" / "benchmarks.md")],
+        [
+            sys.executable,
+            str(HERE / "bench_engine.py"),
+            "--markdown",
+            str(HERE.parent / "docs" / "engine" / "benchmarks.md"),
+        ],
         [sys.executable, str(HERE / "bench_sweep.py"), *([] if full else ["--quick"])],
     ]
     rc = 0

@@ -2,7 +2,7 @@
 
 What it shows:
 
-* making realistic raw files with a known truth (``impactlab.experiment.synthetic``): a 20 deg
+* making realistic raw files with a known truth (``impactlab.testing``): a 20 deg
   drop of the paper's rod with e = 0.5 and mu = 0.2 filmed at 500 fps with three markers (C3D,
   millimetres, noise and occlusions), and a profilometer scan of a 22 um deep, 1400 um long
   dent (X3P, tilted and noisy, with dropouts);
@@ -27,9 +27,9 @@ import sys
 import tempfile
 from pathlib import Path
 
+from impactlab import testing as S
 from impactlab.bodies import PAPER_ROD
 from impactlab.experiment import MarkerGeometry, analyze
-from impactlab.experiment import synthetic as S
 
 
 def output_dir() -> Path:
@@ -51,11 +51,15 @@ def main() -> None:
     scan = S.write_scan(z, dx, dy, out / "dent.x3p")  # ISO 5436-2 X3P
     # where the markers sit on the rod (body frame: origin C, first axis towards the tip), as
     # the command line reads it with --geometry
-    rows = "\n".join(f"{label} = [{x * 1e3:.1f}, {y * 1e3:.1f}, {w * 1e3:.1f}]"
-                     for label, (x, y, w) in zip(info["labels"], S.DEFAULT_MARKERS, strict=True))
+    rows = "\n".join(
+        f"{label} = [{x * 1e3:.1f}, {y * 1e3:.1f}, {w * 1e3:.1f}]"
+        for label, (x, y, w) in zip(info["labels"], S.DEFAULT_MARKERS, strict=True)
+    )
     (out / "markers.toml").write_text(f'[markers]\nunits = "mm"\n{rows}\n')
-    print(f"wrote {c3d.name} ({tracks.n_frames} frames at {tracks.rate:g} Hz), {scan.name} "
-          f"({z.shape[1]} x {z.shape[0]} pixels of {dx * 1e6:g} um), markers.toml")
+    print(
+        f"wrote {c3d.name} ({tracks.n_frames} frames at {tracks.rate:g} Hz), {scan.name} "
+        f"({z.shape[1]} x {z.shape[0]} pixels of {dx * 1e6:g} um), markers.toml"
+    )
 
     # 2. the analysis
     geometry = MarkerGeometry(S.DEFAULT_MARKERS, info["labels"])
@@ -64,9 +68,15 @@ def main() -> None:
         raise SystemExit(f"analysis failed: {res.errors}")
 
     # 3. measured vs true
-    true = {"e": truth.e, "mu": truth.mu, "angle": truth.angle, "v_i": truth.v_tip_in[1],
-            "dv_cy": truth.v_out[1] - truth.v_in[1], "delta_p": scan_truth.groove.depth,
-            "L_s": scan_truth.groove.sliding_length}
+    true = {
+        "e": truth.e,
+        "mu": truth.mu,
+        "angle": truth.angle,
+        "v_i": truth.v_tip_in[1],
+        "dv_cy": truth.v_out[1] - truth.v_in[1],
+        "delta_p": scan_truth.groove.depth,
+        "L_s": scan_truth.groove.sliding_length,
+    }
     print(f"\n{'quantity':10s} {'measured':>26s} {'truth':>12s}")
     for name, est in res.summary().items():
         t = f"{true[name]:.5g}" if name in true else ""
@@ -74,8 +84,10 @@ def main() -> None:
     print()
     print(res.inversion)
     T, F = res.summary()["T"], res.summary()["F"]
-    print(f"\nT = {T.value * 1e3:.3f} ms ± {T.sigma * 1e3:.3f}, F = {F.value:.2f} N ± "
-          f"{F.sigma:.2f} (paper's Table 2 for its 20 deg drop: 4.30 ms, 79 N)")
+    print(
+        f"\nT = {T.value * 1e3:.3f} ms ± {T.sigma * 1e3:.3f}, F = {F.value:.2f} N ± "
+        f"{F.sigma:.2f} (paper's Table 2 for its 20 deg drop: 4.30 ms, 79 N)"
+    )
     print("results:", ", ".join(sorted(p.name for p in (out / "results").iterdir())))
 
 

@@ -38,7 +38,7 @@ SIGMA = {
     "e": 0.02,
     "mu": 0.01,
     "delta_p": 1e-6,  # m
-    "L_s": 50e-6,  # m
+    "sliding_length": 50e-6,  # m
 }
 
 
@@ -54,8 +54,10 @@ def main() -> None:
     out = output_dir()
     published = {row.angle_deg: row for row in TABLE_ROWS if row.model == "experiment"}
 
-    print(f"{'angle':>5s} {'mu/mu_c':>8s} {'T [ms]':>16s} {'published':>9s} "
-          f"{'F [N]':>14s} {'published':>9s}")
+    print(
+        f"{'angle':>5s} {'mu/mu_c':>8s} {'T [ms]':>16s} {'published':>9s} "
+        f"{'F [N]':>14s} {'published':>9s}"
+    )
     saved = {}
     for angle_deg, x in sorted(EXPERIMENTS.items()):
         res = invert(
@@ -63,8 +65,9 @@ def main() -> None:
             v_i=(x.v_i, SIGMA["v_i"]),
             e=(x.e, SIGMA["e"]),
             mu=(x.mu, SIGMA["mu"]),
-            delta_p=(x.delta_p, SIGMA["delta_p"]),
-            L_s=(x.L_s, SIGMA["L_s"]),
+            # the paper prints the dent's depth and length negative; the library takes magnitudes
+            delta_p=(abs(x.delta_p), SIGMA["delta_p"]),
+            sliding_length=(abs(x.L_s), SIGMA["sliding_length"]),
             seed=0,
         )
         saved[x.key] = res.to_dict()
@@ -72,21 +75,31 @@ def main() -> None:
         t_pub = f"{row.T * 1e3:.2f}" if row is not None and row.T is not None else "-"
         f_pub = f"{row.F:.0f}" if row is not None and row.F is not None else "-"
         mu_ratio = x.mu / float(critical_friction(x.angle))
-        print(f"{angle_deg:5.0f} {mu_ratio:8.3f} {res.T * 1e3:8.3f} ± {res.sigma_T_mc * 1e3:5.3f} "
-              f"{t_pub:>9s} {res.F:7.1f} ± {res.sigma_F_mc:4.1f} {f_pub:>9s}")
+        print(
+            f"{angle_deg:5.0f} {mu_ratio:8.3f} {res.T * 1e3:8.3f} ± {res.sigma_T_mc * 1e3:5.3f} "
+            f"{t_pub:>9s} {res.F:7.1f} ± {res.sigma_F_mc:4.1f} {f_pub:>9s}"
+        )
 
     # the 20 deg experiment in full, then two variants of the method
     x = EXPERIMENTS[20]
-    inputs = {"angle": x.angle, "v_i": x.v_i, "e": x.e, "mu": x.mu, "delta_p": x.delta_p,
-              "L_s": x.L_s}
+    inputs = {
+        "angle": x.angle,
+        "v_i": x.v_i,
+        "e": x.e,
+        "mu": x.mu,
+        "delta_p": abs(x.delta_p),
+        "sliding_length": abs(x.L_s),
+    }
     res = invert(**inputs)
     print()
     print(res)
     with_gravity = invert(**inputs, gravity=True)
     travel = invert(**inputs, measure="travel")
-    print(f"\n20 deg: T = {res.T * 1e3:.3f} ms (paper's method), "
-          f"{with_gravity.T * 1e3:.3f} ms (gravity during the contact), "
-          f"{travel.T * 1e3:.3f} ms (L_s as the contact patch's travel)")
+    print(
+        f"\n20 deg: T = {res.T * 1e3:.3f} ms (paper's method), "
+        f"{with_gravity.T * 1e3:.3f} ms (gravity during the contact), "
+        f"{travel.T * 1e3:.3f} ms (L_s as the contact patch's travel)"
+    )
 
     path = out / "inversion.json"
     path.write_text(json.dumps(saved, indent=2, default=str))

@@ -49,8 +49,9 @@ def main() -> None:
     for angle in (20, 45, 70):
         r = exp.loc[angle]
         pub = r["T published [ms]"]
-        versus = (f"published {pub:.2f} ms ({r['T rel. diff']:+.1%})" if pub == pub
-                  else "not published")
+        versus = (
+            f"published {pub:.2f} ms ({r['T rel. diff']:+.1%})" if pub == pub else "not published"
+        )
         print(f"  {angle} deg: T = {r['T [ms]']:.3f} ms, {versus}; F = {r['F [N]']:.1f} N")
 
     t2 = res.tables["table2"]
@@ -60,8 +61,7 @@ def main() -> None:
     print(t2[cols].to_string(index=False))
 
     n_rows = len(res.simulations) if res.simulations is not None else 0
-    print(f"\nsimulations: {n_rows}"
-          + ("" if simulate else " (skipped: --no-simulate)"))
+    print(f"\nsimulations: {n_rows}" + ("" if simulate else " (skipped: --no-simulate)"))
     print(f"files: {', '.join(sorted(p.name for p in res.files.values()))}")
     print(f"report: {res.report_html} ({res.elapsed_s:.1f} s)")
 

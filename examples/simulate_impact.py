@@ -28,11 +28,11 @@ from pathlib import Path
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.pyplot as plt
 
-from impactlab.bodies import Rod  # noqa: E402
-from impactlab.dynamics import simulate  # noqa: E402
-from impactlab.materials import AISI_1010  # noqa: E402
+from impactlab.bodies import Rod
+from impactlab.dynamics import simulate
+from impactlab.materials import AISI_1010
 
 LAWS = ("ghaednia", "brake")
 FRICTIONS = ("impulse_ratio", "coulomb", "mindlin")
@@ -52,19 +52,23 @@ def main() -> None:
     angle = math.radians(20.0)  # the library takes radians
     velocity = (0.0, -1.41)  # (vx, vy) of the centre of mass at first touch [m/s]
 
-    print(f"{'law':10s} {'friction':14s} {'regime':8s} {'e':>6s} {'delta_p':>9s} {'L_s':>9s} "
-          f"{'T':>8s} {'F':>8s}")
-    print(f"{'':10s} {'':14s} {'':8s} {'':>6s} {'[um]':>9s} {'[um]':>9s} {'[ms]':>8s} "
-          f"{'[N]':>8s}")
+    print(
+        f"{'law':10s} {'friction':14s} {'regime':8s} {'e':>6s} {'delta_p':>9s} {'L_s':>9s} "
+        f"{'T':>8s} {'F':>8s}"
+    )
+    print(f"{'':10s} {'':14s} {'':8s} {'':>6s} {'[um]':>9s} {'[um]':>9s} {'[ms]':>8s} {'[N]':>8s}")
     results = {}
     for law in LAWS:
         for friction in FRICTIONS:
-            r = simulate(rod, AISI_1010, law=law, friction=friction, mu=0.2, angle=angle,
-                         velocity=velocity)
+            r = simulate(
+                rod, AISI_1010, law=law, friction=friction, mu=0.2, angle=angle, velocity=velocity
+            )
             results[law, friction] = r
-            print(f"{law:10s} {friction:14s} {r.regime:8s} {r.e:6.3f} {r.delta_p * 1e6:9.2f} "
-                  f"{r.sliding_length * 1e6:9.2f} {r.duration * 1e3:8.4f} "
-                  f"{r.mean_force:8.1f}")
+            print(
+                f"{law:10s} {friction:14s} {r.regime:8s} {r.e:6.3f} {r.delta_p * 1e6:9.2f} "
+                f"{r.sliding_length * 1e6:9.2f} {r.duration * 1e3:8.4f} "
+                f"{r.mean_force:8.1f}"
+            )
 
     # one result in full: every field, with units
     best = results["ghaednia", "coulomb"]
@@ -73,8 +77,10 @@ def main() -> None:
 
     # the predicted permanent dent (height map) of that impact
     dent = best.dent()
-    print(f"\ndent: depth {dent.max_depth * 1e6:.2f} um, length {dent.length * 1e6:.1f} um, "
-          f"width {dent.width * 1e6:.1f} um")
+    print(
+        f"\ndent: depth {dent.max_depth * 1e6:.2f} um, length {dent.length * 1e6:.1f} um, "
+        f"width {dent.width * 1e6:.1f} um"
+    )
 
     # force-time plot of the Coulomb runs
     fig, ax = plt.subplots(figsize=(6.4, 4.0), constrained_layout=True)
@@ -82,8 +88,9 @@ def main() -> None:
         h = results[law, "coulomb"].history
         assert h is not None  # history=True is the default
         ax.plot(h.t * 1e3, h.normal_force, color=f"C{i}", label=f"{law}: normal force")
-        ax.plot(h.t * 1e3, h.tangential_force, "--", color=f"C{i}",
-                label=f"{law}: tangential force")
+        ax.plot(
+            h.t * 1e3, h.tangential_force, "--", color=f"C{i}", label=f"{law}: tangential force"
+        )
     ax.set_xlabel("time [ms]")
     ax.set_ylabel("force [N]")
     ax.set_title("Paper's rod, 20 deg, 1.41 m/s, Coulomb friction mu = 0.2")
@@ -91,8 +98,10 @@ def main() -> None:
     path = out / "force_time.png"
     fig.savefig(path, dpi=110)
     plt.close(fig)
-    print(f"\nghaednia/coulomb: e = {best.e:.4f}, delta_p = {best.delta_p * 1e6:.2f} um, "
-          f"T = {best.duration * 1e3:.4f} ms, F = {best.mean_force:.1f} N")
+    print(
+        f"\nghaednia/coulomb: e = {best.e:.4f}, delta_p = {best.delta_p * 1e6:.2f} um, "
+        f"T = {best.duration * 1e3:.4f} ms, F = {best.mean_force:.1f} N"
+    )
     print(f"saved {path}")
 
 

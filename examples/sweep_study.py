@@ -29,12 +29,12 @@ from pathlib import Path
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+import matplotlib.pyplot as plt
+import numpy as np
 
-from impactlab.analytic import critical_friction  # noqa: E402
-from impactlab.bodies import PAPER_ROD  # noqa: E402
-from impactlab.sweep import Study, export_netcdf, plot_regime_map, run_sweep  # noqa: E402
+from impactlab.analytic import critical_friction
+from impactlab.bodies import PAPER_ROD
+from impactlab.sweep import Study, export_netcdf, plot_regime_map, run_sweep
 
 
 def output_dir() -> Path:
@@ -49,8 +49,10 @@ def main() -> None:
     out = output_dir()
     study = Study(
         name="regime-map",
-        grid={"angle": np.radians(np.linspace(5.0, 85.0, 33)),  # SI in Python: radians
-              "mu": np.linspace(0.0, 0.8, 33)},
+        grid={
+            "angle": np.radians(np.linspace(5.0, 85.0, 33)),  # SI in Python: radians
+            "mu": np.linspace(0.0, 0.8, 33),
+        },
         fixed={"vy": -1.41, "law": "ghaednia", "friction": "coulomb"},
         outputs=["e", "delta_p", "sliding_length", "duration", "regime"],
         chunk_size=256,
@@ -59,14 +61,18 @@ def main() -> None:
     result = run_sweep(study, store, quiet=True)
     ds = result.dataset
     s = result.stats
-    print(f"sweep: {s.cases_computed} cases in {s.chunks_computed} chunks, "
-          f"{s.wall_s:.2f} s ({s.backend}, {s.workers} workers) -> {store.name}")
+    print(
+        f"sweep: {s.cases_computed} cases in {s.chunks_computed} chunks, "
+        f"{s.wall_s:.2f} s ({s.backend}, {s.workers} workers) -> {store.name}"
+    )
     print(f"dimensions: {dict(ds.sizes)}; outputs: {', '.join(ds.attrs['outputs'])}")
 
     # a second run finds every chunk done and computes nothing
     again = run_sweep(study, store, quiet=True)
-    print(f"resume: {again.stats.chunks_before} chunks already done, "
-          f"{again.stats.chunks_computed} computed")
+    print(
+        f"resume: {again.stats.chunks_before} chunks already done, "
+        f"{again.stats.chunks_computed} computed"
+    )
 
     # the regime boundary of the sweep against the rigid-body mu_c(theta)
     names = {int(k): v for k, v in ds["regime"].attrs["regimes"].items()}
@@ -79,8 +85,9 @@ def main() -> None:
             continue
         sticking = np.flatnonzero(regime[i] == stick)
         first = f"{mu[sticking[0]]:.3f}" if sticking.size else "-"
-        print(f"{np.degrees(th):11.1f} {first:>15s} "
-              f"{float(critical_friction(th, PAPER_ROD)):11.3f}")
+        print(
+            f"{np.degrees(th):11.1f} {first:>15s} {float(critical_friction(th, PAPER_ROD)):11.3f}"
+        )
 
     e20 = float(ds["e"].sel(angle=np.radians(20.0), mu=0.2, method="nearest"))
     print(f"\ne at 20 deg, mu = 0.2: {e20:.4f}")

@@ -114,8 +114,11 @@ def simulate_digests() -> dict[str, str]:
 
     rng = np.random.default_rng(20261123)
     d: dict[str, str] = {}
-    laws = list(il.law_names()) if hasattr(il, "law_names") else [
-        "hertz", "ghaednia", "jackson-green", "kogut-komvopoulos", "brake", "thornton"]
+    laws = (
+        list(il.law_names())
+        if hasattr(il, "law_names")
+        else ["hertz", "ghaednia", "jackson-green", "kogut-komvopoulos", "brake", "thornton"]
+    )
     frictions = ["impulse_ratio", "coulomb", "mindlin"]
     bodies = {"rod": il.Rod.paper(), "sphere": il.Sphere(radius=0.01)}
     for law in laws:
@@ -128,9 +131,10 @@ def simulate_digests() -> dict[str, str]:
                     mu = float(rng.uniform(0.0, 0.6))
                     kw = {"angle": ang} if bname == "rod" else {}
                     try:
-                        r = il.simulate(body, law=law, friction=fr, mu=mu,
-                                        velocity=(vx, vy), history=True, **kw)
-                    except Exception as exc:  # noqa: BLE001 - the message is part of the digest
+                        r = il.simulate(
+                            body, law=law, friction=fr, mu=mu, velocity=(vx, vy), history=True, **kw
+                        )
+                    except Exception as exc:  # the message is part of the digest
                         d[f"simulate/{law}/{fr}/{bname}/{k}"] = "error:" + str(exc)[:80]
                         continue
                     vals = [getattr(r, f) for f in ("e", "delta_max", "delta_p", "duration")]
@@ -140,8 +144,11 @@ def simulate_digests() -> dict[str, str]:
                     d[key + "/history"] = _digest(h.to_numpy(dtype=float))
                     if k == 0 and bname == "rod":
                         dent = r.dent()
-                        arrs = [np.asarray(v, dtype=float) for v in vars(dent).values()
-                                if isinstance(v, np.ndarray)]
+                        arrs = [
+                            np.asarray(v, dtype=float)
+                            for v in vars(dent).values()
+                            if isinstance(v, np.ndarray)
+                        ]
                         d[key + "/dent"] = _digest(np.concatenate([a.ravel() for a in arrs]))
     return d
 
@@ -152,11 +159,16 @@ def invert_digests() -> dict[str, str]:
     d: dict[str, str] = {}
     for case in ("paper-20", "paper-45", "paper-70"):
         exe = Path(sys.executable).with_name("impactlab")
-        out = subprocess.run([str(exe), "invert", "--case", case, "--json"], check=True,
-                             capture_output=True, text=True).stdout
+        out = subprocess.run(
+            [str(exe), "invert", "--case", case, "--json"],
+            check=True,
+            capture_output=True,
+            text=True,
+        ).stdout
         d[f"invert/{case}"] = hashlib.sha256(out.encode()).hexdigest()[:20]
-    res = il.invert(angle=math.radians(20), v_i=-1.41, e=0.50, mu=0.20,
-                    delta_p=22e-6, L_s=-1400e-6)
+    res = il.invert(
+        angle=math.radians(20), v_i=-1.41, e=0.50, mu=0.20, delta_p=22e-6, sliding_length=1400e-6
+    )
     d["invert/api"] = _digest(np.array([res.T, res.F], dtype=float))
     return d
 

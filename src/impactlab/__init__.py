@@ -10,17 +10,16 @@ Subpackages: ``contact`` (laws), ``dynamics`` (engine), ``analytic`` (the paper'
 ``experiment`` (raw files), ``sweep`` (studies), ``paper`` (data and reproduction).
 """
 
+from impactlab._version import __version__
 from impactlab.analytic import InversionResult, Measured, invert
 from impactlab.bodies import PAPER_ROD, Rod, Sphere
 from impactlab.contact import get_law, law_names
 from impactlab.dynamics import BatchResult, ImpactResult, simulate, simulate_batch
 from impactlab.materials import AISI_201, AISI_1010, ContactPair, Material, get_material
 
-__version__ = "0.1.0"
-
 __all__ = [
-    "AISI_1010",
     "AISI_201",
+    "AISI_1010",
     "PAPER_ROD",
     "BatchResult",
     "ContactPair",

@@ -13,5 +13,7 @@ def html_table(title: str, rows: Iterable[tuple[str, str, str]]) -> str:
         f"<td>{html.escape(c)}</td></tr>"
         for a, b, c in rows
     )
-    return (f"<table><thead><tr><th>{html.escape(title)}</th><th>value</th><th>unit</th></tr>"
-            f"</thead><tbody>{body}</tbody></table>")
+    return (
+        f"<table><thead><tr><th>{html.escape(title)}</th><th>value</th><th>unit</th></tr>"
+        f"</thead><tbody>{body}</tbody></table>"
+    )

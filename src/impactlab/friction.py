@@ -1,7 +1,8 @@
 """Tangential (friction) models of the impact engine: names, compiled ids and references.
 
 The equations are in ``docs/engine/index.md``; the compiled implementation is in
-``impactlab.dynamics.engine``. A name never stands in for another model.
+``impactlab.dynamics.core``. A name never stands in for another model. The registry is keyed by
+:class:`FrictionKind` members; plain strings (``"coulomb"``) work wherever a kind is asked for.
 
 - ``impulse_ratio``: the paper's Eq. 7 (doi:10.1007/s00419-015-1108-2): F_t = mu F_n against the
   initial slip direction of the contact point, constant over the impact. When the initial
@@ -22,65 +23,125 @@ The equations are in ``docs/engine/index.md``; the compiled implementation is in
 
 from __future__ import annotations
 
+import enum
 from dataclasses import dataclass
+
+from impactlab.references import PAPER, Reference, cite
+
+DEFAULT_MU = 0.0
+"""The friction coefficient [-] used when none is given (Python API and CLI alike)."""
 
 IMPULSE_RATIO = 0
 COULOMB = 1
 MINDLIN = 2
 
 
+class FrictionKind(enum.StrEnum):
+    """The friction models, each member carrying its compiled id and its sources."""
+
+    IMPULSE_RATIO = ("impulse_ratio", IMPULSE_RATIO, (PAPER,))
+    COULOMB = ("coulomb", COULOMB, ("stronge-2000",))
+    MINDLIN = (
+        "mindlin",
+        MINDLIN,
+        (
+            "mindlin-deresiewicz-1953",
+            "di-renzo-di-maio-2004",
+            "thornton-cummins-cleary-2011",
+            "maw-barber-fawcett-1976",
+        ),
+    )
+
+    friction_id: int
+    reference_keys: tuple[str, ...]
+
+    def __new__(cls, value: str, friction_id: int, keys: tuple[str, ...]) -> FrictionKind:
+        member = str.__new__(cls, value)
+        member._value_ = value
+        member.friction_id = friction_id
+        member.reference_keys = keys
+        return member
+
+    @property
+    def references(self) -> tuple[Reference, ...]:
+        """The sources of this model (``impactlab.references``)."""
+        return cite(*self.reference_keys)
+
+
 @dataclass(frozen=True)
 class FrictionModel:
-    """A registered friction model: name, compiled id, one-line description and reference."""
+    """A registered friction model: name, compiled id, description, reference text and the
+    cited sources (``references``)."""
 
     name: str
     friction_id: int
     description: str
     reference: str
+    kind: FrictionKind
+
+    @property
+    def references(self) -> tuple[Reference, ...]:
+        """The sources of this model (``impactlab.references``)."""
+        return self.kind.references
 
 
-FRICTION_MODELS: dict[str, FrictionModel] = {
-    m.name: m
+def _model(kind: FrictionKind, description: str) -> FrictionModel:
+    text = "; ".join(str(r) for r in kind.references)
+    return FrictionModel(str(kind), kind.friction_id, description, text, kind)
+
+
+FRICTION_MODELS: dict[FrictionKind, FrictionModel] = {
+    m.kind: m
     for m in (
-        FrictionModel(
-            "impulse_ratio", IMPULSE_RATIO,
+        _model(
+            FrictionKind.IMPULSE_RATIO,
             "F_t = mu F_n against the initial slip direction, constant (paper Eq. 7)",
-            "Ghaednia et al., Arch. Appl. Mech. (2015), doi:10.1007/s00419-015-1108-2",
         ),
-        FrictionModel(
-            "coulomb", COULOMB,
+        _model(
+            FrictionKind.COULOMB,
             "exact Coulomb stick/slip of the rigid contact point, transitions as events",
-            "Stronge, Impact Mechanics (2000), doi:10.1017/CBO9780511626432",
         ),
-        FrictionModel(
-            "mindlin", MINDLIN,
+        _model(
+            FrictionKind.MINDLIN,
             "Mindlin-type tangential compliance k_t = 8 G* a, capped by mu F_n",
-            "Mindlin & Deresiewicz (1953); Di Renzo & Di Maio (2004), "
-            "doi:10.1016/j.ces.2003.09.037; Maw, Barber & Fawcett (1976), "
-            "doi:10.1016/0043-1648(76)90063-6",
         ),
     )
 }
 
-#: name -> compiled id
-FRICTION_IDS: dict[str, int] = {name: m.friction_id for name, m in FRICTION_MODELS.items()}
+FRICTION_IDS: dict[str, int] = {str(kind): m.friction_id for kind, m in FRICTION_MODELS.items()}
+"""name -> compiled id"""
 
 
 def friction_names() -> tuple[str, ...]:
     """Names of the friction models."""
-    return tuple(FRICTION_MODELS)
+    return tuple(str(kind) for kind in FRICTION_MODELS)
 
 
-def get_friction(name: str) -> FrictionModel:
+def get_friction(name: str | FrictionKind) -> FrictionModel:
     """The friction model called ``name``; ValueError listing the known names otherwise."""
     try:
-        return FRICTION_MODELS[name]
+        return FRICTION_MODELS[name]  # type: ignore[index]
     except (KeyError, TypeError):
         raise ValueError(
             f"unknown friction model {name!r}; known models: {', '.join(FRICTION_MODELS)}"
         ) from None
 
 
-def friction_id(name: str) -> int:
+def friction_id(name: str | FrictionKind) -> int:
     """Compiled id of the friction model ``name`` (ValueError for unknown names)."""
     return get_friction(name).friction_id
+
+
+__all__ = [
+    "COULOMB",
+    "DEFAULT_MU",
+    "FRICTION_IDS",
+    "FRICTION_MODELS",
+    "IMPULSE_RATIO",
+    "MINDLIN",
+    "FrictionKind",
+    "FrictionModel",
+    "friction_id",
+    "friction_names",
+    "get_friction",
+]

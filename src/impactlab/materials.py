@@ -48,8 +48,9 @@ class Material:
             raise ValueError(f"name must be a non-empty string, got {self.name!r}")
         object.__setattr__(self, "E", check_positive("E", self.E, "Pa"))
         object.__setattr__(
-            self, "nu", check_range("nu", self.nu, -1.0, 0.5, low_inclusive=False,
-                                    high_inclusive=False)
+            self,
+            "nu",
+            check_range("nu", self.nu, -1.0, 0.5, low_inclusive=False, high_inclusive=False),
         )
         object.__setattr__(
             self, "yield_strength", check_positive("yield_strength", self.yield_strength, "Pa")

@@ -10,13 +10,22 @@ import sys
 import pytest
 
 from impactlab import analytic as an
+from impactlab.bodies import Rod
 from impactlab.paper.data import EXPERIMENTS, PAPER_ROD, published_row
 
 
 def paper_inversion(angle_deg, **kw):
     x = EXPERIMENTS[angle_deg]
-    return an.invert(angle=x.angle, v_i=x.v_i, e=x.e, mu=x.mu, delta_p=x.delta_p, L_s=x.L_s,
-                     n_samples=200, **kw)
+    return an.invert(
+        angle=x.angle,
+        v_i=x.v_i,
+        e=x.e,
+        mu=x.mu,
+        delta_p=abs(x.delta_p),
+        sliding_length=abs(x.L_s),
+        n_samples=200,
+        **kw,
+    )
 
 
 @pytest.mark.parametrize("angle_deg", [20, 45])
@@ -40,21 +49,58 @@ def test_rigid_identity_force():
     assert r.force_method == "rigid-body identity" and r.F_momentum is None
 
 
-def test_signs_do_not_matter():
+def test_sign_of_v_i_does_not_matter_and_paper_signs_of_the_dent_are_refused():
+    # delta_p and the sliding length are magnitudes in impactlab (the paper prints them
+    # negative); v_i keeps accepting either sign
     x = EXPERIMENTS[45]
-    a = an.invert(angle=x.angle, v_i=x.v_i, e=x.e, mu=x.mu, delta_p=x.delta_p, L_s=x.L_s,
-                  n_samples=200)
-    b = an.invert(angle=x.angle, v_i=-x.v_i, e=x.e, mu=x.mu, delta_p=-x.delta_p, L_s=-x.L_s,
-                  n_samples=200)
+    a = an.invert(
+        angle=x.angle,
+        v_i=x.v_i,
+        e=x.e,
+        mu=x.mu,
+        delta_p=abs(x.delta_p),
+        sliding_length=abs(x.L_s),
+        n_samples=200,
+    )
+    b = an.invert(
+        angle=x.angle,
+        v_i=-x.v_i,
+        e=x.e,
+        mu=x.mu,
+        delta_p=abs(x.delta_p),
+        sliding_length=abs(x.L_s),
+        n_samples=200,
+    )
     assert a.T == b.T and a.F == b.F
+    for kw in ({"delta_p": -abs(x.delta_p)}, {"sliding_length": -abs(x.L_s)}):
+        args = dict(
+            angle=x.angle,
+            v_i=x.v_i,
+            e=x.e,
+            mu=x.mu,
+            delta_p=abs(x.delta_p),
+            sliding_length=abs(x.L_s),
+            n_samples=200,
+        )
+        args.update(kw)
+        with pytest.raises(ValueError, match="magnitude"):
+            an.invert(**args)
 
 
 def test_uncertainty_linear_case_exact():
     """T is linear in delta_p and L_s: first order is exact and Monte Carlo agrees to its noise."""
     x = EXPERIMENTS[20]
     s_dp, s_ls = 3e-6, 80e-6
-    r = an.invert(angle=x.angle, v_i=x.v_i, e=x.e, mu=x.mu, delta_p=(x.delta_p, s_dp),
-                  L_s=(x.L_s, s_ls), n_samples=40_000, seed=1)
+    r = an.invert(
+        angle=x.angle,
+        v_i=x.v_i,
+        e=x.e,
+        mu=x.mu,
+        delta_p=(abs(x.delta_p), s_dp),
+        sliding_length=(abs(x.L_s), s_ls),
+        n_samples=40_000,
+        seed=1,
+    )
     alpha = abs(an.alpha(x.angle, x.mu))
     hand = math.hypot(s_dp / 1.41, s_ls / (alpha * 1.41))
     assert r.sigma_T_linear == pytest.approx(hand, rel=1e-5)
@@ -68,9 +114,15 @@ def test_first_order_agrees_with_monte_carlo(angle_deg):
     x = EXPERIMENTS[angle_deg]
     rel = 0.01  # 1 % on every input: first order is valid (at 70 deg, 2 % on the angle is not)
     r = an.invert(
-        angle=(x.angle, rel * x.angle), v_i=(x.v_i, rel * abs(x.v_i)), e=(x.e, rel * x.e),
-        mu=(x.mu, rel * x.mu), delta_p=(x.delta_p, rel * abs(x.delta_p)),
-        L_s=(x.L_s, rel * abs(x.L_s)), n_samples=40_000, seed=7)
+        angle=(x.angle, rel * x.angle),
+        v_i=(x.v_i, rel * abs(x.v_i)),
+        e=(x.e, rel * x.e),
+        mu=(x.mu, rel * x.mu),
+        delta_p=(abs(x.delta_p), rel * abs(x.delta_p)),
+        sliding_length=(abs(x.L_s), rel * abs(x.L_s)),
+        n_samples=40_000,
+        seed=7,
+    )
     assert r.mc_rejected == 0.0
     assert r.sigma_T_mc == pytest.approx(r.sigma_T_linear, rel=0.03)
     assert r.sigma_F_mc == pytest.approx(r.sigma_F_linear, rel=0.03)
@@ -79,8 +131,15 @@ def test_first_order_agrees_with_monte_carlo(angle_deg):
 
 def test_large_uncertainty_is_reported_as_rejected_samples():
     x = EXPERIMENTS[70]  # mu = 0.10 with mu_c = 0.257: a wide mu straddles the sticking regime
-    r = an.invert(angle=x.angle, v_i=x.v_i, e=x.e, mu=(x.mu, 0.1), delta_p=x.delta_p,
-                  L_s=x.L_s, n_samples=5000)
+    r = an.invert(
+        angle=x.angle,
+        v_i=x.v_i,
+        e=x.e,
+        mu=(x.mu, 0.1),
+        delta_p=abs(x.delta_p),
+        sliding_length=abs(x.L_s),
+        n_samples=5000,
+    )
     assert r.mc_rejected > 0.05
     assert "discarded" in str(r)
     assert r.T > 0 and r.T_mc > 0
@@ -88,8 +147,15 @@ def test_large_uncertainty_is_reported_as_rejected_samples():
 
 def test_monte_carlo_is_seeded():
     x = EXPERIMENTS[45]
-    kw = dict(angle=x.angle, v_i=x.v_i, e=(x.e, 0.05), mu=(x.mu, 0.02), delta_p=x.delta_p,
-              L_s=x.L_s, n_samples=1000)
+    kw = dict(
+        angle=x.angle,
+        v_i=x.v_i,
+        e=(x.e, 0.05),
+        mu=(x.mu, 0.02),
+        delta_p=abs(x.delta_p),
+        sliding_length=abs(x.L_s),
+        n_samples=1000,
+    )
     assert an.invert(**kw, seed=3).sigma_F_mc == an.invert(**kw, seed=3).sigma_F_mc
     assert an.invert(**kw, seed=3).sigma_F_mc != an.invert(**kw, seed=4).sigma_F_mc
 
@@ -113,7 +179,7 @@ def test_momentum_force_and_inertia_argument():
     assert r.force_method == "momentum"
     assert r.F == pytest.approx(0.4607 * 0.7 / r.T)
     assert r.F_rigid == pytest.approx(1.5 * 1.41 / (r.K_y * r.T))
-    heavy = an.RodProperties(0.4607, 0.3048, 0.0088, inertia=0.4607 * 0.3048**2 / 10)
+    heavy = Rod(length=0.3048, tip_radius=0.0088, mass=0.4607, inertia=0.4607 * 0.3048**2 / 10)
     r2 = paper_inversion(20, rod=heavy)
     assert r2.rod["inertia"] == heavy.inertia and r2.T != r.T
 
@@ -141,9 +207,27 @@ def test_cli_paper_case_json(monkeypatch, capsys):
 
 
 def test_cli_units_and_sigmas(monkeypatch, capsys):
-    code, out, _ = run_cli(monkeypatch, capsys, "--angle", "20 deg", "--vi", "-1.41 m/s",
-                           "--e", "0.5", "--mu", "0.2", "--delta-p", "22 um", "--ls", "1.4 mm",
-                           "--sigma-ls", "50 um", "--json", "--samples", "500")
+    code, out, _ = run_cli(
+        monkeypatch,
+        capsys,
+        "--angle",
+        "20 deg",
+        "--vi",
+        "-1.41 m/s",
+        "--e",
+        "0.5",
+        "--mu",
+        "0.2",
+        "--delta-p",
+        "22 um",
+        "--ls",
+        "1.4 mm",
+        "--sigma-ls",
+        "50 um",
+        "--json",
+        "--samples",
+        "500",
+    )
     assert code == 0
     d = json.loads(out)
     assert d["T"] == pytest.approx(paper_inversion(20).T)
@@ -152,8 +236,9 @@ def test_cli_units_and_sigmas(monkeypatch, capsys):
 
 def test_cli_file(monkeypatch, capsys, tmp_path):
     f = tmp_path / "m.toml"
-    f.write_text('case = "paper-45"\nmu = 0.13\n[sigma]\ne = 0.02\n[rod]\ninertia = '
-                 '"3.567e-3 kg*m^2"\n')
+    f.write_text(
+        'case = "paper-45"\nmu = 0.13\n[sigma]\ne = 0.02\n[rod]\ninertia = "3.567e-3 kg*m^2"\n'
+    )
     code, out, err = run_cli(monkeypatch, capsys, "--file", str(f), "--json", "--samples", "200")
     assert code == 0, err
     d = json.loads(out)
@@ -161,14 +246,17 @@ def test_cli_file(monkeypatch, capsys, tmp_path):
     assert d["T"] == pytest.approx(paper_inversion(45).T, rel=1e-3)
 
 
-@pytest.mark.parametrize("args,needle", [
-    (["--case", "paper-70", "--mu", "0.3"], "sticking regime"),
-    (["--case", "paper-20", "--angle", "20 m"], "--angle"),
-    (["--angle", "20", "--vi", "1", "--e", "0.5", "--mu", "0.2", "--delta-p", "1 um"], "--ls"),
-    (["--case", "paper-99"], "unknown case"),
-    (["--case", "paper-20", "--e", "abc"], "--e"),
-])
+@pytest.mark.parametrize(
+    ("args", "needle"),
+    [
+        (["--case", "paper-70", "--mu", "0.3"], "sticking regime"),
+        (["--case", "paper-20", "--angle", "20 m"], "--angle"),
+        (["--angle", "20", "--vi", "1", "--e", "0.5", "--mu", "0.2", "--delta-p", "1 um"], "--ls"),
+        (["--case", "paper-99"], "unknown case"),
+        (["--case", "paper-20", "--e", "abc"], "--e"),
+    ],
+)
 def test_cli_errors_are_one_line(monkeypatch, capsys, args, needle):
-    code, out, err = run_cli(monkeypatch, capsys, *args)
+    code, _out, err = run_cli(monkeypatch, capsys, *args)
     assert code == 2
     assert needle in err and err.count("\n") == 1 and "Traceback" not in err

@@ -29,7 +29,7 @@ def test_registry_names_exactly() -> None:
 
 @pytest.mark.parametrize("bad", ["Hertz", "jackson_green", "kk", "", None, 3])
 def test_unknown_law_lists_the_known_ones(bad: object) -> None:
-    with pytest.raises(ValueError) as info:
+    with pytest.raises(ValueError, match="unknown contact law") as info:
         get_law(bad)  # type: ignore[arg-type]
     for name in law_names():
         assert name in str(info.value)

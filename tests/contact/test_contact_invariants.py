@@ -27,8 +27,14 @@ def pairs(draw: st.DrawFn) -> tuple[ContactPair, float]:
     E_b = draw(st.floats(70e9, 400e9))
     sy = E_f * draw(st.floats(2e-4, 8e-3))
     hb_factor = draw(st.floats(2.6, 3.4))  # P0 of the softer ~ 2.6-3.4 S_y
-    flat = Material("flat", E_f, nu, sy, brinell_hardness=hb_factor * sy / (G0 * 1e6),
-                    meyer_index=draw(st.floats(2.1, 2.4)))
+    flat = Material(
+        "flat",
+        E_f,
+        nu,
+        sy,
+        brinell_hardness=hb_factor * sy / (G0 * 1e6),
+        meyer_index=draw(st.floats(2.1, 2.4)),
+    )
     body = Material("body", E_b, nu, 2.5 * sy, brinell_hardness=2.5 * hb_factor * sy / (G0 * 1e6))
     radius = draw(st.floats(1e-4, 5e-2))
     return ContactPair(body, flat), radius

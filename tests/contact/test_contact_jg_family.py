@@ -17,9 +17,10 @@ R = 8.8e-3
 
 def _hand_ep(dstar: float, k1: float, k2: float, m: float, h: float, C: float) -> float:
     """F/F_c of the family at delta*, with a given hardness ratio h = H_G/S_y."""
-    return math.exp(-k1 * dstar ** (5 / 12)) * dstar**1.5 + 4.0 * h / C * (
-        1.0 - math.exp(-k2 * dstar ** (5 / 9))
-    ) * dstar**m
+    return (
+        math.exp(-k1 * dstar ** (5 / 12)) * dstar**1.5
+        + 4.0 * h / C * (1.0 - math.exp(-k2 * dstar ** (5 / 9))) * dstar**m
+    )
 
 
 def test_published_jump_of_eq16_is_minus_ten_percent(paper_pair: ContactPair) -> None:

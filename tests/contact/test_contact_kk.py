@@ -40,7 +40,9 @@ def test_eq21_by_hand_and_published_jump(paper_pair: ContactPair) -> None:
         rp = math.sqrt(d * (2 * R - d))
         t = d / rp
         want = (
-            math.pi * rp**2 * 305e6
+            math.pi
+            * rp**2
+            * 305e6
             * (0.839 + math.log(eps**0.656 * t**0.651))
             / (2.192 - math.log(eps**0.394 * t**0.419))
         )

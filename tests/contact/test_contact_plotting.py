@@ -2,22 +2,18 @@
 
 from __future__ import annotations
 
-import matplotlib
+import pytest
+from matplotlib.figure import Figure
 
-matplotlib.use("Agg")
-
-import pytest  # noqa: E402
-from matplotlib.figure import Figure  # noqa: E402
-
-from impactlab.contact import law_names  # noqa: E402
-from impactlab.contact.plotting import plot_laws  # noqa: E402
-from impactlab.materials import ContactPair  # noqa: E402
+from impactlab.contact import law_names
+from impactlab.contact.plotting import plot_laws
+from impactlab.materials import ContactPair
 
 
 def test_plot_has_every_law(paper_pair: ContactPair) -> None:
     fig = plot_laws(paper_pair, 8.8e-3, 200e-6, n_points=40)
     assert isinstance(fig, Figure)
-    left, right = fig.axes
+    left, _right = fig.axes
     labels = [t.get_text() for t in left.get_legend().get_texts()]
     assert labels == list(law_names())
     # loading + 3 unloading branches per law on the left

@@ -9,6 +9,7 @@ import pytest
 
 from impactlab.contact import get_law, law_names
 from impactlab.contact.base import ContactModel
+from impactlab.materials import AISI_201, AISI_1010, ContactPair
 
 E_STAR = 200e9 / (2.0 * (1.0 - 0.3**2))  # both steels E = 200 GPa, nu = 0.3
 S_Y = 305e6  # the flat's yield strength
@@ -116,7 +117,5 @@ def test_default_switch_is_a_crossing(name: str, paper_models: dict[str, Contact
     assert abs(jump) > 4e-3
 
 
-def _pair():  # type: ignore[no-untyped-def]
-    from impactlab.materials import AISI_201, AISI_1010, ContactPair
-
+def _pair() -> ContactPair:
     return ContactPair(AISI_201, AISI_1010)

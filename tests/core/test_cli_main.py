@@ -12,16 +12,37 @@ import pytest
 def _run(*args: str) -> subprocess.CompletedProcess[str]:
     env = dict(os.environ, MPLBACKEND="Agg")
     env.pop("IMPACTLAB_DEBUG", None)
-    return subprocess.run([sys.executable, "-m", "impactlab", *args], capture_output=True,
-                          text=True, env=env, timeout=120)
+    return subprocess.run(
+        [sys.executable, "-m", "impactlab", *args],
+        capture_output=True,
+        text=True,
+        env=env,
+        timeout=120,
+    )
 
 
 @pytest.mark.parametrize(
     ("args", "needle"),
     [
         (("laws", "nope"), "known laws"),
-        (("invert", "--angle", "20 deg", "--vi", "-1.41 m/s", "--e", "0.5", "--mu", "0.2",
-          "--delta-p", "3 kg", "--ls", "1400 um"), "delta"),
+        (
+            (
+                "invert",
+                "--angle",
+                "20 deg",
+                "--vi",
+                "-1.41 m/s",
+                "--e",
+                "0.5",
+                "--mu",
+                "0.2",
+                "--delta-p",
+                "3 kg",
+                "--ls",
+                "1400 um",
+            ),
+            "delta",
+        ),
         (("materials", "--bogus"), "No such option"),
     ],
 )

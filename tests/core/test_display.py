@@ -8,8 +8,9 @@ import impactlab as il
 
 
 def test_inversion_renders_html_table() -> None:
-    res = il.invert(angle=math.radians(20), v_i=-1.41, e=0.5, mu=0.2, delta_p=22e-6,
-                    L_s=-1400e-6)
+    res = il.invert(
+        angle=math.radians(20), v_i=-1.41, e=0.5, mu=0.2, delta_p=22e-6, sliding_length=1400e-6
+    )
     page = res._repr_html_()
     assert page.startswith("<table>") and "InversionResult" in page
     assert f"{res.T:.6g}" in page

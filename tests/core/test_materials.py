@@ -71,11 +71,14 @@ def test_unknown_preset_lists_known() -> None:
 
 
 @given(
-    E1=st.floats(1e9, 1e12), E2=st.floats(1e9, 1e12), n1=st.floats(-0.9, 0.49),
+    E1=st.floats(1e9, 1e12),
+    E2=st.floats(1e9, 1e12),
+    n1=st.floats(-0.9, 0.49),
     n2=st.floats(-0.9, 0.49),
 )
-def test_reduced_modulus_symmetric_and_below_each(E1: float, E2: float, n1: float,
-                                                  n2: float) -> None:
+def test_reduced_modulus_symmetric_and_below_each(
+    E1: float, E2: float, n1: float, n2: float
+) -> None:
     a = Material(name="a", E=E1, nu=n1, yield_strength=1e6)
     b = Material(name="b", E=E2, nu=n2, yield_strength=1e6)
     es = reduced_modulus(a, b)

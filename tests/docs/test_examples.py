@@ -20,33 +20,47 @@ EXAMPLES = ROOT / "examples"
 CASES: dict[str, tuple[tuple[str, ...], tuple[str, ...], tuple[str, ...]]] = {
     "simulate_impact.py": (
         ("impactlab.dynamics",),
-        (r"ghaednia\s+coulomb\s+slip\s+0\.42\d", r"brake\s+mindlin\s+\w+\s+0\.4\d",
-         r"ghaednia/coulomb: e = 0\.42\d\d, delta_p = 6\d\.\d\d um"),
+        (
+            r"ghaednia\s+coulomb\s+slip\s+0\.42\d",
+            r"brake\s+mindlin\s+\w+\s+0\.4\d",
+            r"ghaednia/coulomb: e = 0\.42\d\d, delta_p = 6\d\.\d\d um",
+        ),
         ("force_time.png",),
     ),
     "invert_dent.py": (
         ("impactlab.analytic", "impactlab.paper.data"),
-        (r"\s20\s+0\.263\s+4\.106 ± 0\.\d+\s+4\.30", r"\s45\s+0\.221\s+1\.382 ± 0\.\d+\s+1\.40",
-         r"T = 4\.106 ms \(paper's method\), 4\.049 ms \(gravity"),
+        (
+            r"\s20\s+0\.263\s+4\.106 ± 0\.\d+\s+4\.30",
+            r"\s45\s+0\.221\s+1\.382 ± 0\.\d+\s+1\.40",
+            r"T = 4\.106 ms \(paper's method\), 4\.049 ms \(gravity",
+        ),
         ("inversion.json",),
     ),
     "analyze_experiment.py": (
-        ("impactlab.experiment", "impactlab.experiment.synthetic", "ezc3d",
-         "SurfaceTopography"),
-        (r"e\s+0\.5\d+ ± 0\.0\d+\s+0\.5", r"T = 4\.\d\d\d ms ± 0\.\d+, F = \d\d\.\d\d N",
-         r"results: dent\.png, kinematics\.png, results\.json"),
+        ("impactlab.experiment", "impactlab.testing", "ezc3d", "SurfaceTopography"),
+        (
+            r"e\s+0\.5\d+ ± 0\.0\d+\s+0\.5",
+            r"T = 4\.\d\d\d ms ± 0\.\d+, F = \d\d\.\d\d N",
+            r"results: dent\.png, kinematics\.png, results\.json",
+        ),
         ("drop.c3d", "dent.x3p", "markers.toml", "results/results.json"),
     ),
     "sweep_study.py": (
         ("impactlab.sweep", "zarr"),
-        (r"sweep: 1089 cases in \d+ chunks", r"resume: \d+ chunks already done, 0 computed",
-         r"e at 20 deg, mu = 0\.2: 0\.42\d\d"),
+        (
+            r"sweep: 1089 cases in \d+ chunks",
+            r"resume: \d+ chunks already done, 0 computed",
+            r"e at 20 deg, mu = 0\.2: 0\.42\d\d",
+        ),
         ("regime-map.zarr", "regime_map.png", "regime-map.nc"),
     ),
     "reproduce_paper.py": (
         ("impactlab.paper", "impactlab.paper.reproduction"),
-        (r"20 deg: T = 4\.106 ms, published 4\.30 ms \(-4\.5%\)",
-         r"45 deg: T = 1\.382 ms, published 1\.40 ms", r"simulations: 18\b"),
+        (
+            r"20 deg: T = 4\.106 ms, published 4\.30 ms \(-4\.5%\)",
+            r"45 deg: T = 1\.382 ms, published 1\.40 ms",
+            r"simulations: 18\b",
+        ),
         ("reproduction/report.html", "reproduction/table2.csv", "reproduction/fig5_alpha.png"),
     ),
 }
@@ -87,8 +101,14 @@ def test_example_runs(script: str, tmp_path: Path, request: pytest.FixtureReques
     env["MPLBACKEND"] = "Agg"
     env.pop("IMPACTLAB_EXAMPLE_OUT", None)
     # NUMBA_CACHE_DIR: inherited, so the subprocess loads what warm_engine compiled
-    proc = subprocess.run([sys.executable, str(EXAMPLES / script), str(out)], cwd=cwd, env=env,
-                          capture_output=True, text=True, timeout=300)
+    proc = subprocess.run(
+        [sys.executable, str(EXAMPLES / script), str(out)],
+        cwd=cwd,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
     assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
     for pat in patterns:
         assert re.search(pat, proc.stdout), (pat, proc.stdout)
@@ -99,7 +119,13 @@ def test_example_runs(script: str, tmp_path: Path, request: pytest.FixtureReques
 
 def test_example_output_folder_from_environment(tmp_path: Path) -> None:
     env = dict(os.environ, MPLBACKEND="Agg", IMPACTLAB_EXAMPLE_OUT=str(tmp_path / "env-out"))
-    proc = subprocess.run([sys.executable, str(EXAMPLES / "invert_dent.py")], cwd=tmp_path,
-                          env=env, capture_output=True, text=True, timeout=120)
+    proc = subprocess.run(
+        [sys.executable, str(EXAMPLES / "invert_dent.py")],
+        cwd=tmp_path,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert proc.returncode == 0, proc.stderr
     assert (tmp_path / "env-out" / "inversion.json").exists()

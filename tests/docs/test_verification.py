@@ -9,6 +9,8 @@ from pathlib import Path
 import pytest
 
 from impactlab import verification as V
+from impactlab.analytic import critical_friction
+from impactlab.bodies import PAPER_ROD, rigid_impulse
 
 ROOT = Path(__file__).resolve().parents[2]
 PAGE = ROOT / "docs" / "verification" / "index.md"
@@ -19,8 +21,13 @@ pytestmark = pytest.mark.usefixtures("warm_engine")
 def test_tolerances_are_the_published_ones() -> None:
     # changing a tolerance must be a visible decision: the page states these numbers
     assert V.TOLERANCES == {
-        "hertz": 1e-6, "thornton": 2e-6, "rigid": 1e-6, "critical_friction": 1e-6,
-        "reference": 1e-4, "paper_duration": 0.05, "invariants": 1e-6,
+        "hertz": 1e-6,
+        "thornton": 2e-6,
+        "rigid": 1e-6,
+        "critical_friction": 1e-6,
+        "reference": 1e-4,
+        "paper_duration": 0.05,
+        "invariants": 1e-6,
         "energy_history": 1e-5,
     }
 
@@ -65,17 +72,15 @@ def test_rigid_limits_slip_and_stick() -> None:
 
 
 def test_rigid_impulse_is_consistent_at_mu_c() -> None:
-    from impactlab.analytic import critical_friction
-    from impactlab.bodies import PAPER_ROD
-
+    # the rigid-body solution the rigid-limit table uses (impactlab.bodies.rigid_impulse, e = 1)
     th = math.radians(20.0)
     mu_c = float(critical_friction(th, PAPER_ROD))
-    below = V.rigid_impulse(PAPER_ROD, th, -1.0, mu_c * (1 - 1e-12))
-    above = V.rigid_impulse(PAPER_ROD, th, -1.0, mu_c)
+    below = rigid_impulse(PAPER_ROD, th, (0.0, -1.0), e=1.0, mu=mu_c * (1 - 1e-12))
+    above = rigid_impulse(PAPER_ROD, th, (0.0, -1.0), e=1.0, mu=mu_c)
     # at mu_c the slip solution has v_t = 0 and joins the stick solution continuously
-    assert below["regime"] == "slip" and above["regime"] == "stick"
-    assert below["P"] == pytest.approx(above["P"], rel=1e-9)
-    assert abs(below["vt"]) < 1e-9
+    assert below.regime == "slip" and above.regime == "stick"
+    assert below.normal_impulse == pytest.approx(above.normal_impulse, rel=1e-9)
+    assert abs(below.contact_velocity_out[0]) < 1e-9
 
 
 def test_critical_friction_boundary() -> None:
@@ -85,8 +90,9 @@ def test_critical_friction_boundary() -> None:
 
 
 def test_engine_vs_reference() -> None:
-    t = V.verify_reference(V.reference_cases(["hertz", "ghaednia", "thornton"],
-                                             ["impulse_ratio", "mindlin"]))
+    t = V.verify_reference(
+        V.reference_cases(["hertz", "ghaednia", "thornton"], ["impulse_ratio", "mindlin"])
+    )
     failed = [r for r in t.records if str(r["status"]).startswith("reference failed")]
     assert not failed, failed
     assert t.passed, t.to_markdown()
@@ -110,8 +116,9 @@ def test_invariants() -> None:
 
 def test_markdown_marks_a_failure() -> None:
     t = V.verify_paper_durations(200)
-    bad = V.VerificationTable(t.key, t.title, t.text, t.columns, t.records, t.metric, 1.0, 0.05,
-                              False)
+    bad = V.VerificationTable(
+        t.key, t.title, t.text, t.columns, t.records, t.metric, 1.0, 0.05, False
+    )
     assert "**FAIL**" in bad.to_markdown() and "**pass**" in t.to_markdown()
     assert "| 20 |" in t.to_markdown()
 
@@ -121,12 +128,15 @@ def test_main_writes_page_and_figures(tmp_path: Path) -> None:
     page = (tmp_path / "ver" / "index.md").read_text()
     for t in tables:
         assert f"## {t.title}" in page
-        assert f"(#{V._anchor(t.title)})" in page
+        assert f"(#{V.anchor(t.title)})" in page
     for name in ("thornton_restitution.png", "critical_friction.png", "hertz_convergence.png"):
         assert (tmp_path / "ver" / name).stat().st_size > 1000
     assert sorted(p.name for p in (tmp_path / "ver").iterdir()) == [
-        "critical_friction.png", "hertz_convergence.png", "index.md",
-        "thornton_restitution.png"]
+        "critical_friction.png",
+        "hertz_convergence.png",
+        "index.md",
+        "thornton_restitution.png",
+    ]
 
 
 def test_published_page_is_generated() -> None:

@@ -15,6 +15,12 @@ def _warm_engine() -> None:
     from impactlab.dynamics import simulate, simulate_batch
 
     for fr in ("impulse_ratio", "coulomb", "mindlin"):
-        simulate(PAPER_ROD, law="hertz", friction=fr, mu=0.2, angle=math.radians(20),
-                 velocity=(0.0, -1.0))
+        simulate(
+            PAPER_ROD,
+            law="hertz",
+            friction=fr,
+            mu=0.2,
+            angle=math.radians(20),
+            velocity=(0.0, -1.0),
+        )
     simulate_batch(Sphere(0.01), law="hertz", friction="coulomb", mu=0.1, vy=[-1.0, -2.0])

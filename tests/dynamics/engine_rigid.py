@@ -27,8 +27,9 @@ class RigidResult:
     regime: str
 
 
-def rigid_impact(m: float, inertia: float, a: float, b: float, vt0: float, vn0: float,
-                 mu: float) -> RigidResult:
+def rigid_impact(
+    m: float, inertia: float, a: float, b: float, vt0: float, vn0: float, mu: float
+) -> RigidResult:
     B11 = 1.0 / m + b * b / inertia
     B12 = a * b / inertia
     B22 = 1.0 / m + a * a / inertia

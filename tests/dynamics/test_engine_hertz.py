@@ -29,13 +29,18 @@ def hertz_closed_form(m: float, E_star: float, R: float, v: float) -> tuple[floa
 
 @pytest.mark.parametrize(
     ("radius", "v", "flat"),
-    [(0.01, 1.0, AISI_1010), (0.002, 0.05, AISI_1010), (0.03, 4.0, AISI_1010),
-     (0.005, 0.7, Material("soft", E=5e9, nu=0.4, yield_strength=1e8, density=1200.0))],
+    [
+        (0.01, 1.0, AISI_1010),
+        (0.002, 0.05, AISI_1010),
+        (0.03, 4.0, AISI_1010),
+        (0.005, 0.7, Material("soft", E=5e9, nu=0.4, yield_strength=1e8, density=1200.0)),
+    ],
 )
 def test_hertz_closed_forms(radius: float, v: float, flat: Material) -> None:
     s = Sphere(radius)
-    r = simulate(s, flat, law="hertz", friction="coulomb", mu=0.0, velocity=(0.0, -v),
-                 gravity=False)
+    r = simulate(
+        s, flat, law="hertz", friction="coulomb", mu=0.0, velocity=(0.0, -v), gravity=False
+    )
     E_star = ContactPair(AISI_201, flat).E_star
     dm, Fm, T = hertz_closed_form(s.mass, E_star, radius, v)
     assert r.delta_max == pytest.approx(dm, rel=REL)
@@ -51,7 +56,7 @@ def test_hertz_closed_forms(radius: float, v: float, flat: Material) -> None:
 
 def test_hertz_tighter_tolerance_converges() -> None:
     s = Sphere(0.01)
-    dm, Fm, T = hertz_closed_form(s.mass, ContactPair(AISI_201, AISI_1010).E_star, 0.01, 1.0)
+    dm, _Fm, T = hertz_closed_form(s.mass, ContactPair(AISI_201, AISI_1010).E_star, 0.01, 1.0)
     r = simulate(s, law="hertz", velocity=(0.0, -1.0), gravity=False, rtol=1e-11)
     assert r.duration == pytest.approx(T, rel=1e-9)
     assert r.delta_max == pytest.approx(dm, rel=1e-9)
@@ -63,6 +68,7 @@ def test_gravity_changes_the_impulse_by_m_g_T() -> None:
     r0 = simulate(s, law="hertz", velocity=(0.0, -0.05), gravity=False)
     r1 = simulate(s, law="hertz", velocity=(0.0, -0.05), gravity=True)
     # momentum balance: m (vy_out - vy_in) = P_n - m g T
-    assert r1.normal_impulse == pytest.approx(s.mass * (r1.velocity_out[1] + 0.05)
-                                              + s.mass * 9.80665 * r1.duration, rel=1e-12)
+    assert r1.normal_impulse == pytest.approx(
+        s.mass * (r1.velocity_out[1] + 0.05) + s.mass * 9.80665 * r1.duration, rel=1e-12
+    )
     assert r1.velocity_out[1] < r0.velocity_out[1]

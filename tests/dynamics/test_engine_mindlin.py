@@ -26,15 +26,16 @@ CHI = (1 - NU) / (2 - NU) * 3.5
 
 def _psi2(psi1: np.ndarray, friction: str) -> tuple[np.ndarray, np.ndarray]:
     vt = psi1 / SCALE
-    b = simulate_batch(Sphere(0.01), law="hertz", friction=friction, mu=MU, vx=vt, vy=-1.0,
-                       gravity=False)
+    b = simulate_batch(
+        Sphere(0.01), law="hertz", friction=friction, mu=MU, vx=vt, vy=-1.0, gravity=False
+    )
     assert np.all(b.ok)
     return -SCALE * b.vt_out / b.vn_out, b.regime
 
 
 def test_small_angles_linear_forward_rebound() -> None:
     psi1 = np.array([0.01, 0.02, 0.05])
-    psi2, regime = _psi2(psi1, "mindlin")
+    psi2, _regime = _psi2(psi1, "mindlin")
     ratio = psi2 / psi1
     assert np.all(ratio < 0.0)  # forward rebound of the contact point
     assert np.ptp(ratio) < 1e-3 * abs(ratio.mean())  # linear in psi1: no gross slip yet
@@ -61,8 +62,15 @@ def test_gross_slip_equals_coulomb() -> None:
 
 
 def test_normal_restitution_unaffected_for_a_sphere() -> None:
-    b = simulate_batch(Sphere(0.01), law="hertz", friction="mindlin", mu=MU,
-                       vx=np.array([0.01, 0.5, 3.0]), vy=-1.0, gravity=False)
+    b = simulate_batch(
+        Sphere(0.01),
+        law="hertz",
+        friction="mindlin",
+        mu=MU,
+        vx=np.array([0.01, 0.5, 3.0]),
+        vy=-1.0,
+        gravity=False,
+    )
     np.testing.assert_allclose(b.e, 1.0, atol=1e-6)
     assert np.all(b.energy_dissipated >= -1e-9)
 
@@ -70,8 +78,10 @@ def test_normal_restitution_unaffected_for_a_sphere() -> None:
 @pytest.mark.parametrize("vx", [0.0, 0.3])
 def test_mindlin_tends_to_coulomb_for_a_stiff_tangential_contact(vx: float) -> None:
     """With mu small the cap dominates and Mindlin reduces to Coulomb sliding."""
-    m = simulate_batch(Sphere(0.01), law="hertz", friction="mindlin", mu=0.01, vx=vx + 0.2,
-                       vy=-1.0, gravity=False)
-    c = simulate_batch(Sphere(0.01), law="hertz", friction="coulomb", mu=0.01, vx=vx + 0.2,
-                       vy=-1.0, gravity=False)
+    m = simulate_batch(
+        Sphere(0.01), law="hertz", friction="mindlin", mu=0.01, vx=vx + 0.2, vy=-1.0, gravity=False
+    )
+    c = simulate_batch(
+        Sphere(0.01), law="hertz", friction="coulomb", mu=0.01, vx=vx + 0.2, vy=-1.0, gravity=False
+    )
     np.testing.assert_allclose(m.vt_out, c.vt_out, atol=1e-6)

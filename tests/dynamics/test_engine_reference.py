@@ -31,15 +31,29 @@ SPHERE_CASE = {"velocity": (0.4, -1.0), "spin": -30.0, "mu": 0.25}
 
 def _scaled_errors(r: Any, ref: dict[str, Any], body: Any) -> dict[str, float]:
     vn = abs(r.vn_in)
-    e0 = 0.5 * body.mass * (r.velocity_in[0] ** 2 + r.velocity_in[1] ** 2) \
-        + 0.5 * body.inertia * r.spin_in ** 2
+    e0 = (
+        0.5 * body.mass * (r.velocity_in[0] ** 2 + r.velocity_in[1] ** 2)
+        + 0.5 * body.inertia * r.spin_in**2
+    )
     lever = body.half_length + body.tip_radius
     scales = {
-        "e": 1.0, "e_energy": 1.0, "vx_out": vn, "vy_out": vn, "spin_out": vn / lever,
-        "delta_max": r.delta_max, "delta_p": r.delta_max, "sliding_length": r.delta_max,
-        "contact_travel": r.delta_max, "duration": r.duration, "max_force": r.max_force,
-        "normal_impulse": r.normal_impulse, "tangential_impulse": r.normal_impulse,
-        "energy_dissipated": e0, "stick_time": r.duration, "vn_out": vn, "vt_out": vn,
+        "e": 1.0,
+        "e_energy": 1.0,
+        "vx_out": vn,
+        "vy_out": vn,
+        "spin_out": vn / lever,
+        "delta_max": r.delta_max,
+        "delta_p": r.delta_max,
+        "sliding_length": r.delta_max,
+        "contact_travel": r.delta_max,
+        "duration": r.duration,
+        "max_force": r.max_force,
+        "normal_impulse": r.normal_impulse,
+        "tangential_impulse": r.normal_impulse,
+        "energy_dissipated": e0,
+        "stick_time": r.duration,
+        "vn_out": vn,
+        "vt_out": vn,
     }
     mine = r.to_dict()
     mine["vx_out"], mine["vy_out"] = r.velocity_out

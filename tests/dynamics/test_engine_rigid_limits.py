@@ -34,16 +34,33 @@ def mu_critical(body: Rod | Sphere, th: float) -> float:
     return a * b / (k2 + b * b)
 
 
-def _compare(body: Rod | Sphere, th: float, vx: float, vy: float, w: float, mu: float,
-             *, law: str | ContactModel = "hertz", constant_angle: bool = True,
-             rel: float = 1e-6) -> str:
+def _compare(
+    body: Rod | Sphere,
+    th: float,
+    vx: float,
+    vy: float,
+    w: float,
+    mu: float,
+    *,
+    law: str | ContactModel = "hertz",
+    constant_angle: bool = True,
+    rel: float = 1e-6,
+) -> str:
     a, b = _arms(body, th)
     vt0 = vx + w * b
     vn0 = vy - w * a
     rig = rigid_impact(body.mass, body.inertia, a, b, vt0, vn0, mu)
-    r = simulate(body, law=law, friction="coulomb", mu=mu,
-                 angle=th if isinstance(body, Rod) else None, velocity=(vx, vy), spin=w,
-                 gravity=False, constant_angle=constant_angle)
+    r = simulate(
+        body,
+        law=law,
+        friction="coulomb",
+        mu=mu,
+        angle=th if isinstance(body, Rod) else None,
+        velocity=(vx, vy),
+        spin=w,
+        gravity=False,
+        constant_angle=constant_angle,
+    )
     scale = abs(vn0)
     assert abs(r.vn_out - rig.vn) < rel * scale, (r.vn_out, rig.vn)
     assert abs(r.vt_out - rig.vt) < rel * scale, (r.vt_out, rig.vt)
@@ -79,8 +96,15 @@ def test_rod_negative_slip_then_stick_gives_e_above_one() -> None:
     conserves; energy is still dissipated."""
     mu = 1.5 * mu_critical(PAPER_ROD, TH)
     _compare(PAPER_ROD, TH, -0.4, -1.41, 0.0, mu)
-    r = simulate(PAPER_ROD, law="hertz", mu=mu, angle=TH, velocity=(-0.4, -1.41),
-                 gravity=False, constant_angle=True)
+    r = simulate(
+        PAPER_ROD,
+        law="hertz",
+        mu=mu,
+        angle=TH,
+        velocity=(-0.4, -1.41),
+        gravity=False,
+        constant_angle=True,
+    )
     assert r.e > 1.0
     assert abs(r.e_energy - 1.0) < 1e-6
     assert r.energy_dissipated > 0.0
@@ -91,10 +115,24 @@ def test_critical_friction_coefficient(th_deg: float) -> None:
     """mu_c = a b / (k^2 + b^2) separates slip from stick (rod, v_t0 = 0)."""
     th = math.radians(th_deg)
     mu_c = mu_critical(PAPER_ROD, th)
-    below = simulate(PAPER_ROD, law="hertz", mu=mu_c * (1 - 1e-3), angle=th,
-                     velocity=(0.0, -1.0), gravity=False, constant_angle=True)
-    above = simulate(PAPER_ROD, law="hertz", mu=mu_c * (1 + 1e-3), angle=th,
-                     velocity=(0.0, -1.0), gravity=False, constant_angle=True)
+    below = simulate(
+        PAPER_ROD,
+        law="hertz",
+        mu=mu_c * (1 - 1e-3),
+        angle=th,
+        velocity=(0.0, -1.0),
+        gravity=False,
+        constant_angle=True,
+    )
+    above = simulate(
+        PAPER_ROD,
+        law="hertz",
+        mu=mu_c * (1 + 1e-3),
+        angle=th,
+        velocity=(0.0, -1.0),
+        gravity=False,
+        constant_angle=True,
+    )
     assert below.regime == "slip" and below.stick_time == 0.0
     assert above.regime == "stick"
     assert above.stick_time == pytest.approx(above.duration, rel=1e-9)
@@ -103,9 +141,15 @@ def test_critical_friction_coefficient(th_deg: float) -> None:
     assert below.sliding_length < 0.0
 
 
-@pytest.mark.parametrize(("vx", "w", "mu", "regime"),
-                         [(2.0, 0.0, 0.1, "slip"), (0.3, 0.0, 0.2, "stick"),
-                          (0.5, -100.0, 0.3, "stick"), (0.0, 0.0, 0.3, "stick")])
+@pytest.mark.parametrize(
+    ("vx", "w", "mu", "regime"),
+    [
+        (2.0, 0.0, 0.1, "slip"),
+        (0.3, 0.0, 0.2, "stick"),
+        (0.5, -100.0, 0.3, "stick"),
+        (0.0, 0.0, 0.3, "stick"),
+    ],
+)
 def test_sphere(vx: float, w: float, mu: float, regime: str) -> None:
     s = Sphere(0.01)
     assert _compare(s, 0.5 * math.pi, vx, -1.0, w, mu) == regime
@@ -126,5 +170,6 @@ def _stiff_hertz(scale: float) -> ContactModel:
 @pytest.mark.parametrize(("vx", "mu_factor"), [(0.0, 0.5), (0.0, 1.3), (0.15, 0.4), (0.3, 1.5)])
 def test_stiff_contact_full_rotation_tends_to_rigid(vx: float, mu_factor: float) -> None:
     mu = mu_factor * mu_critical(PAPER_ROD, TH)
-    _compare(PAPER_ROD, TH, vx, -1.41, 0.0, mu, law=_stiff_hertz(1e6), constant_angle=False,
-             rel=1e-4)
+    _compare(
+        PAPER_ROD, TH, vx, -1.41, 0.0, mu, law=_stiff_hertz(1e6), constant_angle=False, rel=1e-4
+    )

@@ -12,10 +12,9 @@ import pytest
 
 from impactlab.bodies import Sphere
 from impactlab.contact import kernels as k
+from impactlab.contact import thornton
 from impactlab.dynamics import contact_model, simulate, simulate_batch
 from impactlab.materials import AISI_1010, ContactPair
-
-thornton = pytest.importorskip("impactlab.contact.thornton")
 
 TOL = 1e-6
 RATIOS = np.geomspace(1.0, 1000.0, 25)
@@ -24,15 +23,19 @@ RATIOS = np.geomspace(1.0, 1000.0, 25)
 def _yield_velocity(s: Sphere) -> float:
     model = contact_model(s, AISI_1010, "thornton")
     py = float(model.params[k.P_TH_PY])
-    return float(thornton.thornton_yield_velocity(ContactPair(s.material, AISI_1010).E_star,
-                                                  s.radius, s.mass, py))
+    return float(
+        thornton.thornton_yield_velocity(
+            ContactPair(s.material, AISI_1010).E_star, s.radius, s.mass, py
+        )
+    )
 
 
 def test_thornton_restitution_closed_form_batch() -> None:
     s = Sphere(0.01)
     vy = _yield_velocity(s)
-    b = simulate_batch(s, law="thornton", friction="coulomb", mu=0.0, vy=-RATIOS * vy,
-                       gravity=False)
+    b = simulate_batch(
+        s, law="thornton", friction="coulomb", mu=0.0, vy=-RATIOS * vy, gravity=False
+    )
     assert np.all(b.ok), b.messages
     expected = np.asarray(thornton.thornton_restitution(RATIOS))
     dev = np.abs(b.e - expected)

@@ -76,8 +76,10 @@ def test_rod_defaults_and_paper_preset() -> None:
         ({"velocity": (0.0, math.nan)}, r"velocity\[1\] \(vy\) must be finite"),
         ({"velocity": 3.0}, "velocity must be a pair"),
         ({"spin": math.inf}, "spin must be finite"),
-        ({"friction": "viscous"}, "unknown friction model 'viscous'; known models: "
-                                  "impulse_ratio, coulomb, mindlin"),
+        (
+            {"friction": "viscous"},
+            "unknown friction model 'viscous'; known models: impulse_ratio, coulomb, mindlin",
+        ),
         ({"law": "nope"}, "unknown contact law 'nope'"),
         ({"rtol": 0.5}, "rtol must lie in"),
         ({"gravity": -9.8}, "gravity must be >= 0"),
@@ -118,8 +120,9 @@ def test_batch_flags_bad_cases_and_never_crashes() -> None:
     angle = np.array([0.3, 0.3, 20.0, math.nan, 0.3, 0.3])
     vy = np.array([-1.0, 1.0, -1.0, -1.0, -1.0, -600.0])
     mu = np.array([0.2, 0.2, 0.2, 0.2, -1.0, 0.2])
-    b = simulate_batch(Sphere(0.002), law="kogut-komvopoulos", friction="coulomb", mu=mu,
-                       angle=angle, vy=vy)
+    b = simulate_batch(
+        Sphere(0.002), law="kogut-komvopoulos", friction="coulomb", mu=mu, angle=angle, vy=vy
+    )
     # a sphere ignores the angle: only its NaN is flagged
     assert list(b.status) == [0, 2, 0, 4, 4, 1]
     assert np.isnan(b.e[1:]).sum() >= 4 and np.isfinite(b.e[0])
@@ -132,14 +135,23 @@ def test_run_arrays_shapes_and_ids() -> None:
     model = contact_model(PAPER_ROD, AISI_1010, "hertz")
     bp = PAPER_ROD.to_params()
     init = np.array([[0.3, 0.0, -1.0, 0.0], [0.5, 0.1, -2.0, 1.0]])
-    out, status = run_arrays(model.law_id, FRICTION_IDS["coulomb"], model.params, bp, init,
-                             np.array([0.1, 0.5]))
+    out, status = run_arrays(
+        model.law_id, FRICTION_IDS["coulomb"], model.params, bp, init, np.array([0.1, 0.5])
+    )
     assert out.shape == (2, len(OUTPUT_FIELDS)) and status.dtype == np.int32
     assert np.all(status == 0)
     # per-case law and body parameters
-    out2, status2 = run_arrays(model.law_id, 1, np.tile(model.params, (2, 1)),
-                               np.tile(bp, (2, 1)), init, np.array([0.1, 0.5]),
-                               gravity=True, constant_angle=False, rtol=None)
+    out2, _status2 = run_arrays(
+        model.law_id,
+        1,
+        np.tile(model.params, (2, 1)),
+        np.tile(bp, (2, 1)),
+        init,
+        np.array([0.1, 0.5]),
+        gravity=True,
+        constant_angle=False,
+        rtol=None,
+    )
     np.testing.assert_array_equal(out, out2)
     with pytest.raises(ValueError, match="law_params must have shape"):
         run_arrays(0, 1, np.zeros(NPARAM - 1), bp, init, 0.1)
@@ -160,6 +172,7 @@ def test_mindlin_needs_g_star() -> None:
     model = contact_model(PAPER_ROD, AISI_1010, "hertz")
     bp = PAPER_ROD.to_params()
     bp[5] = math.nan
-    _, st = run_arrays(0, get_friction("mindlin").friction_id, model.params, bp,
-                       [0.3, 0.0, -1.0, 0.0], 0.2)
+    _, st = run_arrays(
+        0, get_friction("mindlin").friction_id, model.params, bp, [0.3, 0.0, -1.0, 0.0], 0.2
+    )
     assert list(st) == [10]

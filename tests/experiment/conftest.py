@@ -1,7 +1,7 @@
 """Shared synthetic experiments for the experiment-pipeline tests (real C3D and scan files).
 
-The drops come from the impact engine when it is installed (finite contact duration), else from
-the rigid-body impulse model; the dents from the analytic groove of ``synthetic.groove_surface``.
+The drops come from the impact engine (finite contact duration, ``impactlab.testing``); the
+dents from the analytic groove of ``impactlab.testing.groove_surface``.
 """
 
 from __future__ import annotations
@@ -17,9 +17,10 @@ import pytest
 
 os.environ.setdefault("MPLBACKEND", "Agg")
 
-from impactlab.bodies import PAPER_ROD  # noqa: E402
-from impactlab.experiment import MarkerGeometry  # noqa: E402
-from impactlab.experiment import synthetic as S  # noqa: E402
+from impactlab import testing as S
+from impactlab.bodies import PAPER_ROD
+from impactlab.experiment import MarkerGeometry
+from impactlab.materials import AISI_1010
 
 #: The paper's three drops (Sec. 5.1.3): angle [deg], v_i [m/s], e, mu, delta_p [m], L_s [m].
 CASES = {
@@ -52,13 +53,8 @@ class Scan:
 
 def impact_truth(angle_deg: float, v_i: float, e: float, mu: float) -> S.ImpactTruth:
     """The impact engine's result (ghaednia law, Coulomb friction, AISI 1010 flat; finite contact
-    duration) when the engine is installed, else the rigid-body impulse model with the paper's e."""
-    try:
-        from impactlab.materials import AISI_1010
-
-        return S.engine_impact(PAPER_ROD, AISI_1010, math.radians(angle_deg), (0.0, v_i), mu=mu)
-    except ImportError:
-        return S.rigid_impulse_impact(PAPER_ROD, math.radians(angle_deg), (0.0, v_i), e=e, mu=mu)
+    duration; ``e`` is the engine's, not the paper's)."""
+    return S.engine_impact(PAPER_ROD, AISI_1010, math.radians(angle_deg), (0.0, v_i), mu=mu)
 
 
 @pytest.fixture(scope="session")
@@ -89,8 +85,7 @@ def scans(data_dir: Path) -> dict[int, Scan]:
     X3P, Gwyddion and ISO 25178-71 SDF."""
     out: dict[int, Scan] = {}
     for key, (*_, dp, ls) in CASES.items():
-        z, dx, _, truth = S.synthetic_scan(depth=dp, sliding_length=ls, noise=SCAN_NOISE,
-                                           seed=key)
+        z, dx, _, truth = S.synthetic_scan(depth=dp, sliding_length=ls, noise=SCAN_NOISE, seed=key)
         files = {}
         for fmt, ext in (("x3p", "x3p"), ("gwy", "gwy"), ("sdf", "sdf")):
             files[fmt] = S.write_scan(z, dx, dx, data_dir / f"dent_{key}.{ext}", fmt=fmt)

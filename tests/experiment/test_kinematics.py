@@ -8,6 +8,7 @@ from typing import Any
 import numpy as np
 import pytest
 
+from impactlab import testing as S
 from impactlab.experiment import (
     ImpactNotFoundError,
     MarkerError,
@@ -18,7 +19,7 @@ from impactlab.experiment import (
     measure_impact,
     read_c3d,
 )
-from impactlab.experiment import synthetic as S
+from impactlab.materials import AISI_1010
 
 from .conftest import CASES
 
@@ -26,12 +27,17 @@ from .conftest import CASES
 def _checks(k: Any, tr: S.ImpactTruth) -> dict[str, tuple[float, float, float]]:
     """name -> (measured, sigma, truth)."""
     pairs = {
-        "v_cx_in": (k.v_c_in[0], tr.v_in[0]), "v_cy_in": (k.v_c_in[1], tr.v_in[1]),
-        "v_cx_out": (k.v_c_out[0], tr.v_out[0]), "v_cy_out": (k.v_c_out[1], tr.v_out[1]),
-        "omega_in": (k.omega_in, tr.omega_in), "omega_out": (k.omega_out, tr.omega_out),
+        "v_cx_in": (k.v_c_in[0], tr.v_in[0]),
+        "v_cy_in": (k.v_c_in[1], tr.v_in[1]),
+        "v_cx_out": (k.v_c_out[0], tr.v_out[0]),
+        "v_cy_out": (k.v_c_out[1], tr.v_out[1]),
+        "spin_in": (k.spin_in, tr.spin_in),
+        "spin_out": (k.spin_out, tr.spin_out),
         "v_tip_y_in": (k.v_tip_in[1], tr.v_tip_in[1]),
         "v_tip_y_out": (k.v_tip_out[1], tr.v_tip_out[1]),
-        "theta": (k.theta_in, tr.angle), "e": (k.e, tr.e), "mu": (k.mu, tr.mu),
+        "angle": (k.angle_in, tr.angle),
+        "e": (k.e, tr.e),
+        "mu": (k.mu, tr.mu),
     }
     return {n: (m.value, m.sigma, t) for n, (m, t) in pairs.items()}
 
@@ -45,8 +51,9 @@ def test_recovers_the_truth_from_c3d(drops: dict, rod: Any, case: int) -> None:
     k = measure_impact(tracks, rod, geometry=d.geometry)
     # a contact of finite duration T: the fits are evaluated at one instant inside it, the truth
     # at its start (before) and end (after); they differ by up to g T (a few mm/s)
-    allow = {n: 9.81 * d.truth.duration for n in ("v_cy_in", "v_cy_out", "v_tip_y_in",
-                                                   "v_tip_y_out")}
+    allow = {
+        n: 9.81 * d.truth.duration for n in ("v_cy_in", "v_cy_out", "v_tip_y_in", "v_tip_y_out")
+    }
     allow["e"] = 9.81 * d.truth.duration / abs(d.truth.v_tip_in[1])
     for name, (m, s, t) in _checks(k, d.truth).items():
         assert abs(m - t) <= 3.0 * s + allow.get(name, 0.0), f"{name}: {m} vs {t}, sigma {s}"
@@ -96,8 +103,9 @@ def test_estimated_geometry(rod: Any, case: int) -> None:
 def test_estimated_geometry_needs_rotation(rod: Any) -> None:
     """A rod that does not turn after the impact cannot show where its centre of mass is."""
     th = math.radians(45)
-    tr = S.ImpactTruth(th, (0.0, -2.0), 0.0, (0.0, 1.0), 0.0, (0.0, -2.0), (0.0, 1.0), 0.5,
-                       0.0, "sliding")
+    tr = S.ImpactTruth(
+        th, (0.0, -2.0), 0.0, (0.0, 1.0), 0.0, (0.0, -2.0), (0.0, 1.0), 0.5, 0.0, "slip"
+    )
     tracks, _ = S.marker_tracks(rod, tr, markers=S.ALIGNED_MARKERS, seed=3)
     with pytest.raises(MarkerError, match="centre of mass"):
         measure_impact(tracks, rod)
@@ -105,8 +113,9 @@ def test_estimated_geometry_needs_rotation(rod: Any) -> None:
 
 def test_hold_release_and_second_bounce_are_trimmed(rod: Any) -> None:
     tr = S.rigid_impulse_impact(rod, math.radians(20), (0.0, -1.41), e=0.5, mu=0.2)
-    tracks, info = S.marker_tracks(rod, tr, release=True, before=0.25, after=0.2,
-                                   second_impact=True, seed=6)
+    tracks, info = S.marker_tracks(
+        rod, tr, release=True, before=0.25, after=0.2, second_impact=True, seed=6
+    )
     geo = MarkerGeometry(S.DEFAULT_MARKERS, info["labels"])
     k = measure_impact(tracks, rod, geometry=geo, max_fit_frames=150)
     t_first = tracks.time[k.pre.frames[0]]
@@ -157,12 +166,8 @@ def test_geometry_that_does_not_match(rod: Any) -> None:
 
 
 def test_engine_truth(rod: Any) -> None:
-    """With the impact engine (finite contact duration, its history through the contact), when it
-    is installed."""
-    try:
-        truth = S.engine_impact(rod, S_flat(), math.radians(45), (0.0, -2.18), mu=0.13)
-    except ImportError as exc:
-        pytest.skip(f"impact engine not available: {exc}")
+    """With the impact engine (finite contact duration, its history through the contact)."""
+    truth = S.engine_impact(rod, AISI_1010, math.radians(45), (0.0, -2.18), mu=0.13)
     assert truth.duration > 0 and truth.contact is not None
     tracks, info = S.marker_tracks(rod, truth, seed=11)
     k = measure_impact(tracks, rod, geometry=MarkerGeometry(S.DEFAULT_MARKERS, info["labels"]))
@@ -171,9 +176,3 @@ def test_engine_truth(rod: Any) -> None:
     # the crossing of the tip heights lies inside the contact
     assert info["t_impact"] - 3 * k.t_impact.sigma <= k.t_impact.value
     assert k.t_impact.value <= info["t_impact"] + truth.duration + 3 * k.t_impact.sigma
-
-
-def S_flat() -> Any:  # noqa: N802
-    from impactlab.materials import AISI_1010
-
-    return AISI_1010

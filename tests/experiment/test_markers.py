@@ -8,6 +8,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from impactlab import testing as S
 from impactlab.experiment import (
     FileFormatError,
     MarkerTracks,
@@ -16,7 +17,6 @@ from impactlab.experiment import (
     read_markers,
     write_csv_markers,
 )
-from impactlab.experiment import synthetic as S
 from impactlab.experiment.markers import length_factor
 
 
@@ -42,8 +42,9 @@ def test_c3d_round_trip(tmp_path: Path, backend: str, units: str) -> None:
     assert back.meta["backend"] == backend
 
 
-def test_c3d_falls_back_to_pure_python_reader(tmp_path: Path, monkeypatch: pytest.MonkeyPatch
-                                              ) -> None:
+def test_c3d_falls_back_to_pure_python_reader(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
     p = S.write_c3d(_tracks(), tmp_path / "t.c3d")
     monkeypatch.setitem(sys.modules, "ezc3d", None)  # "not installed"
     back = read_c3d(p)
@@ -68,11 +69,14 @@ def test_truncated_c3d_is_refused(tmp_path: Path, backend: str) -> None:
         read_c3d(bad, backend=backend)
 
 
-@pytest.mark.parametrize("content,match", [
-    (b"", "empty file"),
-    (b"this is not a c3d file" * 40, "not a readable C3D file"),
-    (b"\x02P" + b"\x00" * 100, "not a readable C3D file|truncated"),
-])
+@pytest.mark.parametrize(
+    ("content", "match"),
+    [
+        (b"", "empty file"),
+        (b"this is not a c3d file" * 40, "not a readable C3D file"),
+        (b"\x02P" + b"\x00" * 100, "not a readable C3D file|truncated"),
+    ],
+)
 def test_corrupt_c3d(tmp_path: Path, content: bytes, match: str) -> None:
     p = tmp_path / "bad.c3d"
     p.write_bytes(content)
@@ -120,15 +124,18 @@ def test_csv_frame_column_needs_rate(tmp_path: Path) -> None:
     np.testing.assert_allclose(t.time, [0.0, 0.004, 0.008])
 
 
-@pytest.mark.parametrize("text,match", [
-    ("# units: mm\ntime,A_x,A_y,A_z\n0,1,2,3\n0.002,1,2\n", r"line 4: expected 4 fields"),
-    ("# units: mm\ntime,A_x,A_y,A_z\n0,1,2,3\n0.002,1,abc,3\n", r"line 4, column 3: 'abc'"),
-    ("# units: mm\nstamp,A_x,A_y,A_z\n0,1,2,3\n", "first column must be 'time'"),
-    ("# units: mm\ntime,A_x,A_y\n0,1,2\n", "three columns"),
-    ("# units: mm\ntime,A_x,A_z,A_y\n0,1,2,3\n0.1,1,2,3\n", "should be '<label>_y'"),
-    ("# units: parsec/s\ntime,A_x,A_y,A_z\n0,1,2,3\n0.1,1,2,3\n", "not a length unit"),
-    ("# units: mm\ntime,A_x,A_y,A_z\n0,1,2,3\n0,1,2,3\n", "time does not increase"),
-])
+@pytest.mark.parametrize(
+    ("text", "match"),
+    [
+        ("# units: mm\ntime,A_x,A_y,A_z\n0,1,2,3\n0.002,1,2\n", r"line 4: expected 4 fields"),
+        ("# units: mm\ntime,A_x,A_y,A_z\n0,1,2,3\n0.002,1,abc,3\n", r"line 4, column 3: 'abc'"),
+        ("# units: mm\nstamp,A_x,A_y,A_z\n0,1,2,3\n", "first column must be 'time'"),
+        ("# units: mm\ntime,A_x,A_y\n0,1,2\n", "three columns"),
+        ("# units: mm\ntime,A_x,A_z,A_y\n0,1,2,3\n0.1,1,2,3\n", "should be '<label>_y'"),
+        ("# units: parsec/s\ntime,A_x,A_y,A_z\n0,1,2,3\n0.1,1,2,3\n", "not a length unit"),
+        ("# units: mm\ntime,A_x,A_y,A_z\n0,1,2,3\n0,1,2,3\n", "time does not increase"),
+    ],
+)
 def test_csv_errors_name_the_problem(tmp_path: Path, text: str, match: str) -> None:
     p = tmp_path / "bad.csv"
     p.write_text(text)
@@ -140,7 +147,7 @@ def test_csv_errors_name_the_problem(tmp_path: Path, text: str, match: str) -> N
 def test_binary_file_as_csv(tmp_path: Path) -> None:
     p = tmp_path / "bin.csv"
     p.write_bytes(bytes(range(256)) * 4)
-    with pytest.raises(FileFormatError, match="bin.csv"):
+    with pytest.raises(FileFormatError, match=r"bin.csv"):
         read_csv_markers(p)
 
 

@@ -84,8 +84,9 @@ def test_rigidity_check_passes_for_noise_and_catches_a_loose_marker() -> None:
 
 
 def test_marker_geometry() -> None:
-    g = MarkerGeometry.from_mapping({"units": "mm", "M1": [-30, 18, 0], "M2": [-90, 0, 22],
-                                     "M3": [-130, -20, 4]})
+    g = MarkerGeometry.from_mapping(
+        {"units": "mm", "M1": [-30, 18, 0], "M2": [-90, 0, 22], "M3": [-130, -20, 4]}
+    )
     np.testing.assert_allclose(g.markers[0], [-0.03, 0.018, 0.0])
     assert g.labels == ("M1", "M2", "M3")
     with pytest.raises(MarkerError, match="one line"):

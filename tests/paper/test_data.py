@@ -63,8 +63,10 @@ def test_published_rows_as_printed():
     assert (t2["brake"].T, t2["brake"].L_s) == (0.29e-3, -75e-6)
     assert (t3["brake"].delta_p, t3["kogut-komvopoulos"].L_s) == (-150e-6, -638e-6)
     # Table 3's Ghaednia dent repeats Table 2's (kept as printed)
-    assert (t3["ghaednia"].delta_p, t3["ghaednia"].L_s) == (t2["ghaednia"].delta_p,
-                                                           t2["ghaednia"].L_s)
+    assert (t3["ghaednia"].delta_p, t3["ghaednia"].L_s) == (
+        t2["ghaednia"].delta_p,
+        t2["ghaednia"].L_s,
+    )
     assert len(D.TABLE_ROWS) == 8
 
 
@@ -74,8 +76,15 @@ def test_text_versus_table_is_kept():
     assert text["brake"].T == 0.256e-3 and D.published_row(20, "brake").T == 0.29e-3
     assert text["brake"].L_s == -74e-6 and D.published_row(20, "brake").L_s == -75e-6
     keys = {d.key for d in D.DISCREPANCIES}
-    assert {"ghaednia-20-F", "brake-20-T", "brake-20-Ls", "ghaednia-45-repeat",
-            "table-4-missing", "exp-45-T", "alpha-sign"} <= keys
+    assert {
+        "ghaednia-20-F",
+        "brake-20-T",
+        "brake-20-Ls",
+        "ghaednia-45-repeat",
+        "table-4-missing",
+        "exp-45-T",
+        "alpha-sign",
+    } <= keys
     f = next(d for d in D.DISCREPANCIES if d.key == "ghaednia-20-F")
     assert f.values == {"Table 2": 2571.0, "Sec. 5.2 text": 2153.0}
 

@@ -1,5 +1,4 @@
-"""The reproduction: output-folder safety (always), the analytic part (always), and the full run
-end to end (only where the impact engine exists)."""
+"""The reproduction: output-folder safety, the analytic part, and the full run end to end."""
 
 from __future__ import annotations
 
@@ -9,22 +8,10 @@ import sys
 import pandas as pd
 import pytest
 
+from impactlab.analytic import invert
+from impactlab.cli import main
 from impactlab.paper import reproduction as R
-
-
-def _engine_available() -> bool:
-    try:
-        from impactlab.dynamics import simulate  # noqa: F401
-    except ImportError:
-        return False
-    return True
-
-
-needs_engine = pytest.mark.skipif(
-    not _engine_available(),
-    reason="impactlab.dynamics.simulate is not available yet: the end-to-end reproduction needs "
-    "the impact engine",
-)
+from impactlab.paper.data import EXPERIMENTS
 
 
 def test_refuses_foreign_non_empty_folder(tmp_path):
@@ -43,8 +30,6 @@ def test_refuses_a_file(tmp_path):
 
 
 def test_cli_refusal_is_one_line(tmp_path, monkeypatch, capsys):
-    from impactlab.cli import main
-
     (tmp_path / "keep.txt").write_text("x")
     monkeypatch.setattr(sys, "argv", ["impactlab", "reproduce", "--out", str(tmp_path)])
     with pytest.raises(SystemExit) as exc:
@@ -78,18 +63,22 @@ def test_analytic_part(analytic_run):
 
 
 def test_report_numbers_match_library(analytic_run):
-    from impactlab.analytic import invert
-    from impactlab.paper.data import EXPERIMENTS
-
     text = analytic_run.report_md.read_text()
     html = analytic_run.report_html.read_text()
     for ang in (20, 45, 70):
         x = EXPERIMENTS[ang]
-        T = invert(angle=x.angle, v_i=x.v_i, e=x.e, mu=x.mu, delta_p=x.delta_p, L_s=x.L_s,
-                   n_samples=100).T
+        T = invert(
+            angle=x.angle,
+            v_i=x.v_i,
+            e=x.e,
+            mu=x.mu,
+            delta_p=abs(x.delta_p),
+            sliding_length=abs(x.L_s),
+            n_samples=100,
+        ).T
         assert f"{T * 1e3:.4g}" in text and f"{T * 1e3:.4g}" in html
     assert re.search(r"20 deg: T = 4\.106 ms vs published 4\.30 ms .*PASS", text)
-    assert "<img src=\"fig5_alpha.png\"" in html
+    assert '<img src="fig5_alpha.png"' in html
 
 
 def test_rerun_into_previous_reproduction_keeps_other_files(analytic_run):
@@ -100,15 +89,24 @@ def test_rerun_into_previous_reproduction_keeps_other_files(analytic_run):
     assert res.report_md.is_file()
 
 
-@needs_engine
 def test_end_to_end(tmp_path_factory):
     out = tmp_path_factory.mktemp("repro_full")
     res = R.reproduce(out)
     assert not res.extras.get("engine_error")
     # every simulation ran: 3 angles x 3 laws x 2 friction models
     assert len(res.simulations) == 18
-    for name in ("fig4_dent", "fig5_alpha", "forces_20", "forces_45", "forces_70",
-                 "report_md", "report_html", "table2", "table3", "table4"):
+    for name in (
+        "fig4_dent",
+        "fig5_alpha",
+        "forces_20",
+        "forces_45",
+        "forces_70",
+        "report_md",
+        "report_html",
+        "table2",
+        "table3",
+        "table4",
+    ):
         assert res.files[name].is_file(), name
     # every not-reproduced number carries a reason
     bad = res.comparison[res.comparison["reproduced"] == False]  # noqa: E712
@@ -116,8 +114,11 @@ def test_end_to_end(tmp_path_factory):
     # the report's simulated numbers are the library's
     text = res.report_md.read_text()
     sims = res.simulations
-    g20 = sims[(sims["angle [deg]"] == 20) & (sims["law"] == "ghaednia")
-               & (sims["friction"] == "impulse_ratio")].iloc[0]
+    g20 = sims[
+        (sims["angle [deg]"] == 20)
+        & (sims["law"] == "ghaednia")
+        & (sims["friction"] == "impulse_ratio")
+    ].iloc[0]
     assert f"{g20['e']:.4g}" in text and f"{g20['delta_p [um]']:.4g}" in text
     # only our files in the folder
     allowed = {p.name for p in res.files.values()} | {R.MARKER}

@@ -10,8 +10,17 @@ from __future__ import annotations
 import os
 import time
 from collections.abc import Mapping, Sequence
+from pathlib import Path
 
 import numpy as np
+
+
+def store_files(path: Path) -> dict[str, bytes]:
+    """Every file of a store (relative path -> bytes): two stores are identical iff equal."""
+    return {
+        str(p.relative_to(path)): p.read_bytes() for p in sorted(path.rglob("*")) if p.is_file()
+    }
+
 
 FIELDS = ("e", "delta_p", "sliding_length", "duration", "mean_force", "regime")
 VY_LIMIT = -5.0  # cases faster than this are "outside the fake law's validity"

@@ -9,11 +9,8 @@ from pathlib import Path
 import pytest
 
 from impactlab.cli import main
-from impactlab.sweep import engine_available
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
-needs_engine = pytest.mark.skipif(not engine_available(),
-                                  reason="impactlab.dynamics.batch not available")
 
 
 def _cli(monkeypatch, capsys, *args: str) -> tuple[int, str, str]:
@@ -30,22 +27,31 @@ def _cli(monkeypatch, capsys, *args: str) -> tuple[int, str, str]:
 @pytest.mark.parametrize(
     ("text", "message"),
     [
-        ("[grid]\nangel = [10, 20]\n[fixed]\nvy = -1\nmu = 0.1\n",
-         "unknown input 'angel'; known inputs: angle, vx, vy"),
-        ("[fixed]\nvy = -1\nangle = 20\n[sample]\nsize = 10\nmu = { dist = 'beta' }\n",
-         "unknown distribution 'beta'"),
-        ("[fixed]\nvy = -1\nangle = 20\n[sample]\nsize = 10\n"
-         "mu = { dist = 'normal', mean = 0.2 }\n", "needs 'std'"),
+        (
+            "[grid]\nangel = [10, 20]\n[fixed]\nvy = -1\nmu = 0.1\n",
+            "unknown input 'angel'; known inputs: angle, vx, vy",
+        ),
+        (
+            "[fixed]\nvy = -1\nangle = 20\n[sample]\nsize = 10\nmu = { dist = 'beta' }\n",
+            "unknown distribution 'beta'",
+        ),
+        (
+            "[fixed]\nvy = -1\nangle = 20\n[sample]\nsize = 10\n"
+            "mu = { dist = 'normal', mean = 0.2 }\n",
+            "needs 'std'",
+        ),
         ("[grid\n", "not valid TOML"),
-        ("[fixed]\nvy = -1\nmu = 0.1\nlaw = 'hooke'\n[grid]\nangle = [10]\n",
-         "unknown contact law 'hooke'"),
-        ("[fixed]\nvy = -1\nmu = 0.1\n[grid]\nangle = [10]\n[outputs]\nkeep = ['e', 'zz']\n",
-         "unknown output(s) ['zz']"),
+        (
+            "[fixed]\nvy = -1\nmu = 0.1\nlaw = 'hooke'\n[grid]\nangle = [10]\n",
+            "unknown contact law 'hooke'",
+        ),
+        (
+            "[fixed]\nvy = -1\nmu = 0.1\n[grid]\nangle = [10]\n[outputs]\nkeep = ['e', 'zz']\n",
+            "unknown output(s) ['zz']",
+        ),
     ],
 )
 def test_bad_study_files_give_one_line(tmp_path, monkeypatch, capsys, text, message) -> None:
-    if ("hooke" in text or "'zz'" in text) and not engine_available():
-        pytest.skip("checked against the engine's tables")
     f = tmp_path / "bad.toml"
     f.write_text(text)
     code, _, err = _cli(monkeypatch, capsys, "sweep", str(f), "--out", str(tmp_path / "o"))
@@ -59,25 +65,36 @@ def test_missing_study_file(tmp_path, monkeypatch, capsys) -> None:
     assert code == 2 and "does not exist" in err
 
 
-@needs_engine
 def test_run_resume_export_plot_info(tmp_path, monkeypatch, capsys) -> None:
     study = tmp_path / "small.toml"
     study.write_text(
         "[study]\nname = 'small'\nchunk_size = 30\n"
         "[fixed]\nvy = '-1.41 m/s'\n"
         "[grid]\nangle = { start = 10, stop = 80, num = 8 }\nmu = [0.0, 0.1, 0.2, 0.4, 0.6]\n"
-        "[outputs]\nkeep = ['e', 'delta_p', 'sliding_length', 'duration', 'regime']\n")
+        "[outputs]\nkeep = ['e', 'delta_p', 'sliding_length', 'duration', 'regime']\n"
+    )
     store = tmp_path / "small.zarr"
-    code, out, err = _cli(monkeypatch, capsys, "sweep", str(study), "--out", str(store),
-                          "--json", "--netcdf", str(tmp_path / "small.nc"),
-                          "--plot", str(tmp_path / "plots"))
+    code, out, err = _cli(
+        monkeypatch,
+        capsys,
+        "sweep",
+        str(study),
+        "--out",
+        str(store),
+        "--json",
+        "--netcdf",
+        str(tmp_path / "small.nc"),
+        "--plot",
+        str(tmp_path / "plots"),
+    )
     assert code == 0, err
     summary = json.loads(out)
     assert summary["cases"] == 40 and summary["chunks_computed"] == summary["chunks"]
     assert (tmp_path / "small.nc").is_file()
     assert (tmp_path / "plots" / "regime_map.png").is_file()
-    code, out, err = _cli(monkeypatch, capsys, "sweep", "run", str(study), "--out", str(store),
-                          "--json")
+    code, out, err = _cli(
+        monkeypatch, capsys, "sweep", "run", str(study), "--out", str(store), "--json"
+    )
     assert code == 0 and json.loads(out)["chunks_computed"] == 0  # nothing recomputed
     code, out, err = _cli(monkeypatch, capsys, "sweep", "info", str(store), "--json")
     assert code == 0 and json.loads(out)["chunks_done"].startswith(str(summary["chunks"]))
@@ -87,7 +104,6 @@ def test_run_resume_export_plot_info(tmp_path, monkeypatch, capsys) -> None:
     assert code == 2 and "--restart" in err
 
 
-@needs_engine
 def test_uncertainty_command(tmp_path, monkeypatch, capsys) -> None:
     study = tmp_path / "mc.toml"
     study.write_text(
@@ -96,9 +112,18 @@ def test_uncertainty_command(tmp_path, monkeypatch, capsys) -> None:
         "[sample]\nsize = 300\nseed = 4\n"
         "vy = { dist = 'normal', mean = '-2.18 m/s', std = '0.05 m/s' }\n"
         "mu = { dist = 'uniform', low = 0.05, high = 0.3 }\n"
-        "[uncertainty]\noutputs = ['e', 'delta_p', 'L_s', 'T', 'F']\n")
-    code, out, err = _cli(monkeypatch, capsys, "sweep", "uncertainty", str(study), "--out",
-                          str(tmp_path / "mc.zarr"), "--json")
+        "[uncertainty]\noutputs = ['e', 'delta_p', 'L_s', 'T', 'F']\n"
+    )
+    code, out, err = _cli(
+        monkeypatch,
+        capsys,
+        "sweep",
+        "uncertainty",
+        str(study),
+        "--out",
+        str(tmp_path / "mc.zarr"),
+        "--json",
+    )
     assert code == 0, err
     rep = next(iter(json.loads(out).values()))
     outs = {r["output"] for r in rep["summary"]}

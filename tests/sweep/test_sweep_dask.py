@@ -16,14 +16,12 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from conftest import store_files
-from sweep_fakes import FakeEvaluator, SlowEvaluator
+from sweep_fakes import SlowEvaluator, store_files
 
-from impactlab.sweep import Study, SweepStore, engine_available, run_sweep
+from impactlab.sweep import ENGINE, Study, SweepStore, run_sweep
 
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parents[1]
-REAL = engine_available()
 
 
 def _free_port() -> int:
@@ -40,29 +38,51 @@ class Cluster:
         self.address = f"tcp://127.0.0.1:{self.port}"
         self.env = dict(os.environ)
         self.env["PYTHONPATH"] = os.pathsep.join(
-            [str(HERE), *filter(None, [os.environ.get("PYTHONPATH")])])
+            [str(HERE), *filter(None, [os.environ.get("PYTHONPATH")])]
+        )
         self.env.setdefault("NUMBA_CACHE_DIR", str(ROOT / ".numba_cache"))
         self.env["NUMBA_NUM_THREADS"] = "1"
         self.env["DASK_DISTRIBUTED__WORKER__DAEMON"] = "False"
         self.log = tmp
         self.procs: list[subprocess.Popen[bytes]] = []
-        self.scheduler = self._spawn("scheduler", [
-            "distributed.cli.dask_scheduler", "--host", "127.0.0.1", "--port", str(self.port),
-            "--no-dashboard"])
+        self.scheduler = self._spawn(
+            "scheduler",
+            [
+                "distributed.cli.dask_scheduler",
+                "--host",
+                "127.0.0.1",
+                "--port",
+                str(self.port),
+                "--no-dashboard",
+            ],
+        )
         self.workers: list[subprocess.Popen[bytes]] = []
 
     def _spawn(self, name: str, args: list[str]) -> subprocess.Popen[bytes]:
         out = (self.log / f"{name}.log").open("wb")
-        p = subprocess.Popen([sys.executable, "-m", *args], env=self.env, stdout=out,
-                             stderr=subprocess.STDOUT)
+        p = subprocess.Popen(
+            [sys.executable, "-m", *args], env=self.env, stdout=out, stderr=subprocess.STDOUT
+        )
         self.procs.append(p)
         return p
 
     def add_worker(self) -> subprocess.Popen[bytes]:
         name = f"w{len(self.workers)}"
-        p = self._spawn(name, [
-            "distributed.cli.dask_worker", self.address, "--nthreads", "1", "--no-nanny",
-            "--no-dashboard", "--name", name, "--host", "127.0.0.1"])
+        p = self._spawn(
+            name,
+            [
+                "distributed.cli.dask_worker",
+                self.address,
+                "--nthreads",
+                "1",
+                "--no-nanny",
+                "--no-dashboard",
+                "--name",
+                name,
+                "--host",
+                "127.0.0.1",
+            ],
+        )
         self.workers.append(p)
         return p
 
@@ -99,34 +119,36 @@ def cluster(tmp_path_factory):
 
 
 def _study(n_angle: int = 12) -> Study:
-    return Study(name="dask", chunk_size=40,
-                 grid={"angle": np.radians(np.linspace(10, 80, n_angle)),
-                       "mu": np.linspace(0.0, 0.5, 11), "vy": [-1.41, -2.18]},
-                 outputs=["e", "delta_p", "sliding_length", "duration", "regime"])
+    return Study(
+        name="dask",
+        chunk_size=40,
+        grid={
+            "angle": np.radians(np.linspace(10, 80, n_angle)),
+            "mu": np.linspace(0.0, 0.5, 11),
+            "vy": [-1.41, -2.18],
+        },
+        outputs=["e", "delta_p", "sliding_length", "duration", "regime"],
+    )
 
 
 def _evaluator():
-    if REAL:
-        from impactlab.sweep import ENGINE
-
-        return ENGINE
-    return FakeEvaluator()
+    return ENGINE
 
 
 def test_cluster_equals_local_and_loads_cached_kernels(cluster, tmp_path) -> None:
     ev = _evaluator()
     local = run_sweep(_study(), tmp_path / "local.zarr", evaluator=ev, quiet=True)
-    remote = run_sweep(_study(), tmp_path / "dask.zarr", evaluator=ev, quiet=True,
-                       scheduler=cluster.address)
+    remote = run_sweep(
+        _study(), tmp_path / "dask.zarr", evaluator=ev, quiet=True, scheduler=cluster.address
+    )
     assert remote.stats.backend == "dask"
     assert remote.stats.chunks_computed == local.stats.n_chunks > 4
     assert len(remote.stats.cache) == 2  # both workers ran chunks
     assert store_files(remote.path) == store_files(local.path)
-    if REAL:
-        # each worker loaded the engine from NUMBA_CACHE_DIR: cache hits, no compilation
-        for worker, c in remote.stats.cache.items():
-            assert c["misses"] == 0, (worker, c)
-            assert c["hits"] > 0, (worker, c)
+    # each worker loaded the engine from NUMBA_CACHE_DIR: cache hits, no compilation
+    for worker, c in remote.stats.cache.items():
+        assert c["misses"] == 0, (worker, c)
+        assert c["hits"] > 0, (worker, c)
 
 
 def test_killed_worker_mid_sweep_still_gives_identical_store(cluster, tmp_path) -> None:
@@ -139,8 +161,9 @@ def test_killed_worker_mid_sweep_still_gives_identical_store(cluster, tmp_path) 
 
     def work() -> None:
         try:
-            box["res"] = run_sweep(_study(16), store, evaluator=slow, quiet=True,
-                                   scheduler=cluster.address)
+            box["res"] = run_sweep(
+                _study(16), store, evaluator=slow, quiet=True, scheduler=cluster.address
+            )
         except BaseException as exc:  # pragma: no cover - reported below
             box["err"] = exc
 

@@ -22,8 +22,11 @@ from impactlab.sweep.inputs import INPUTS
 
 
 def _cases(n: int, **cols) -> dict[str, np.ndarray]:
-    out = {name: np.full(n, math.nan if s.default is None else float(s.default))
-           for name, s in INPUTS.items() if s.kind == "float"}
+    out = {
+        name: np.full(n, math.nan if s.default is None else float(s.default))
+        for name, s in INPUTS.items()
+        if s.kind == "float"
+    }
     out.update({"angle": np.full(n, 0.35), "vy": np.full(n, -1.41), "mu": np.full(n, 0.2)})
     for k, v in cols.items():
         out[k] = np.asarray(v, dtype=np.float64)
@@ -31,8 +34,13 @@ def _cases(n: int, **cols) -> dict[str, np.ndarray]:
 
 
 def _statics(**cat) -> Statics:
-    base = {"law": "hertz", "friction": "coulomb", "body": "rod", "body_material": "aisi-201",
-            "flat_material": "aisi-1010"}
+    base = {
+        "law": "hertz",
+        "friction": "coulomb",
+        "body": "rod",
+        "body_material": "aisi-201",
+        "flat_material": "aisi-1010",
+    }
     base.update(cat)
     return Statics(base)
 
@@ -48,8 +56,9 @@ def test_one_model_for_constant_inputs() -> None:
 def test_per_case_models_and_rejections() -> None:
     sy = [305e6, 250e6, 305e6, 300e9, 305e6]  # 300 GPa > E: Material rejects it
     tip = [0.0088, 0.0088, 0.005, 0.0088, -1.0]  # negative radius: Rod rejects it
-    lp, bp, status = build_models(_cases(5, flat_yield_strength=sy, tip_radius=tip),
-                                  _statics(law="ghaednia"))
+    lp, bp, status = build_models(
+        _cases(5, flat_yield_strength=sy, tip_radius=tip), _statics(law="ghaednia")
+    )
     assert lp.shape[0] == 5 and bp.shape[0] == 5
     np.testing.assert_array_equal(status, [0, 0, 0, STATUS_BAD_MATERIAL, STATUS_BAD_BODY])
     from dataclasses import replace
@@ -63,12 +72,14 @@ def test_per_case_models_and_rejections() -> None:
 
 
 def test_sphere_and_bad_law_parameters() -> None:
-    lp, bp, status = build_models(_cases(2, radius=[0.01, 0.02]), _statics(body="sphere"))
+    _lp, bp, status = build_models(_cases(2, radius=[0.01, 0.02]), _statics(body="sphere"))
     assert (status == 0).all()
-    np.testing.assert_array_equal(bp[1], Sphere(radius=0.02, material=AISI_201)
-                                  .to_params(AISI_1010))
-    _, _, status = build_models(_cases(2), Statics(_statics().categories,
-                                                   law_params={"bogus": 1.0}))
+    np.testing.assert_array_equal(
+        bp[1], Sphere(radius=0.02, material=AISI_201).to_params(AISI_1010)
+    )
+    _, _, status = build_models(
+        _cases(2), Statics(_statics().categories, law_params={"bogus": 1.0})
+    )
     assert (status == STATUS_BAD_LAW).all()
     _, _, status = build_models(_cases(1), _statics(body="sphere"))  # no radius
     assert status[0] == STATUS_BAD_BODY
@@ -89,11 +100,16 @@ def test_sweep_matches_direct_engine_calls(tmp_path, engine) -> None:
     from impactlab.dynamics.batch import FRICTION_IDS, OUTPUT_FIELDS, run_arrays
     from impactlab.sweep import Study, run_sweep
 
-    st = Study(name="e2e", chunk_size=7,
-               grid={"angle": np.radians([0.0, 20.0, 45.0, 70.0]),
-                     "flat_yield_strength": [250e6, 305e6, 400e9]},
-               fixed={"vy": -1.41, "mu": 0.2, "law": "ghaednia"},
-               outputs=["e", "delta_p", "sliding_length", "duration", "mean_force", "regime"])
+    st = Study(
+        name="e2e",
+        chunk_size=7,
+        grid={
+            "angle": np.radians([0.0, 20.0, 45.0, 70.0]),
+            "flat_yield_strength": [250e6, 305e6, 400e9],
+        },
+        fixed={"vy": -1.41, "mu": 0.2, "law": "ghaednia"},
+        outputs=["e", "delta_p", "sliding_length", "duration", "mean_force", "regime"],
+    )
     ds = run_sweep(st, tmp_path / "e2e.zarr", evaluator=engine, quiet=True).dataset
     status = ds["status"].values
     assert (status[0, :2] == 7).all()  # angle 0: outside (0, pi/2], recorded by the engine
@@ -106,10 +122,14 @@ def test_sweep_matches_direct_engine_calls(tmp_path, engine) -> None:
         for j, sy in enumerate([250e6, 305e6]):
             flat = replace(AISI_1010, yield_strength=sy)
             model = get_law("ghaednia").build(ContactPair(AISI_201, flat), 0.0088)
-            out, stt = run_arrays(model.law_id, FRICTION_IDS["coulomb"], np.array(model.params),
-                                  PAPER_ROD.to_params(flat),
-                                  np.array([[math.radians(th), 0.0, -1.41, 0.0]]),
-                                  np.array([0.2]))
+            out, stt = run_arrays(
+                model.law_id,
+                FRICTION_IDS["coulomb"],
+                np.array(model.params),
+                PAPER_ROD.to_params(flat),
+                np.array([[math.radians(th), 0.0, -1.41, 0.0]]),
+                np.array([0.2]),
+            )
             assert stt[0] == 0
             for name in ("e", "delta_p", "sliding_length", "duration", "mean_force"):
                 assert ds[name].values[i, j] == out[0, OUTPUT_FIELDS.index(name)]

@@ -6,12 +6,12 @@ import matplotlib
 
 matplotlib.use("Agg")
 
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+import matplotlib.pyplot as plt
+import numpy as np
 
-from impactlab.analytic import critical_friction  # noqa: E402
-from impactlab.bodies import PAPER_ROD  # noqa: E402
-from impactlab.sweep import (  # noqa: E402
+from impactlab.analytic import critical_friction
+from impactlab.bodies import PAPER_ROD
+from impactlab.sweep import (
     Normal,
     Sample,
     Study,
@@ -22,8 +22,14 @@ from impactlab.sweep import (  # noqa: E402
 
 
 def test_regime_map_draws_mu_c(tmp_path, fake) -> None:
-    st = Study(name="map", grid={"angle": np.radians(np.linspace(5, 85, 17)),
-                                 "mu": np.linspace(0, 0.6, 13), "vy": [-1.0, -2.0]})
+    st = Study(
+        name="map",
+        grid={
+            "angle": np.radians(np.linspace(5, 85, 17)),
+            "mu": np.linspace(0, 0.6, 13),
+            "vy": [-1.0, -2.0],
+        },
+    )
     ds = run_sweep(st, tmp_path / "m.zarr", evaluator=fake, quiet=True).dataset
     fig, ax = plt.subplots()
     plot_regime_map(ds, ax=ax, sel={"vy": -2.0})
@@ -33,13 +39,20 @@ def test_regime_map_draws_mu_c(tmp_path, fake) -> None:
     plt.close(fig)
     files = {f.name for f in plot_sweep(ds, tmp_path / "plots")}
     assert "regime_map.png" in files
-    assert {"e_angle_vy.png", "delta_p_angle_vy.png", "sliding_length_angle_vy.png",
-            "duration_angle_vy.png"} <= files
+    assert {
+        "e_angle_vy.png",
+        "delta_p_angle_vy.png",
+        "sliding_length_angle_vy.png",
+        "duration_angle_vy.png",
+    } <= files
 
 
 def test_sample_histograms(tmp_path, fake) -> None:
-    st = Study(name="mc", fixed={"angle": 0.35, "mu": 0.2},
-               sample=Sample(size=200, seed=1, inputs={"vy": Normal(-1.4, 0.1)}))
+    st = Study(
+        name="mc",
+        fixed={"angle": 0.35, "mu": 0.2},
+        sample=Sample(size=200, seed=1, inputs={"vy": Normal(-1.4, 0.1)}),
+    )
     ds = run_sweep(st, tmp_path / "h.zarr", evaluator=fake, quiet=True).dataset
     files = plot_sweep(ds, tmp_path / "p")
     assert [f.name for f in files] == ["histograms.png"] and files[0].stat().st_size > 0

@@ -13,8 +13,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from conftest import store_files
-from sweep_fakes import VY_LIMIT, CrashingEvaluator, FakeEvaluator
+from sweep_fakes import VY_LIMIT, CrashingEvaluator, FakeEvaluator, store_files
 
 from impactlab.sweep import (
     Normal,
@@ -31,18 +30,29 @@ HERE = Path(__file__).resolve().parent
 
 
 def grid_study(**kw) -> Study:
-    base = dict(name="grid", chunk_size=12,
-                grid={"angle": np.radians(np.linspace(5, 85, 9)), "mu": np.linspace(0, 0.6, 7),
-                      "law": ["ghaednia", "hertz"]},
-                fixed={"vy": -1.41})
+    base = dict(
+        name="grid",
+        chunk_size=12,
+        grid={
+            "angle": np.radians(np.linspace(5, 85, 9)),
+            "mu": np.linspace(0, 0.6, 7),
+            "law": ["ghaednia", "hertz"],
+        },
+        fixed={"vy": -1.41},
+    )
     base.update(kw)
     return Study(**base)
 
 
 def sample_study(size: int = 2000, chunk: int = 100) -> Study:
-    return Study(name="mc", chunk_size=chunk, fixed={"angle": 0.35},
-                 sample=Sample(size=size, seed=11, inputs={
-                     "vy": Normal(-1.41, 0.05), "mu": Uniform(0.1, 0.3)}))
+    return Study(
+        name="mc",
+        chunk_size=chunk,
+        fixed={"angle": 0.35},
+        sample=Sample(
+            size=size, seed=11, inputs={"vy": Normal(-1.41, 0.05), "mu": Uniform(0.1, 0.3)}
+        ),
+    )
 
 
 def test_grid_results_match_the_closed_form(tmp_path, fake) -> None:
@@ -52,8 +62,9 @@ def test_grid_results_match_the_closed_form(tmp_path, fake) -> None:
     assert ds["e"].dims == ("angle", "mu", "law")
     th = ds["angle"].values[:, None]
     mu = ds["mu"].values[None, :]
-    np.testing.assert_allclose(ds["e"].sel(law="hertz").values,
-                               0.5 + 0.1 * np.sin(th) - 0.2 * mu + 0.01, rtol=1e-15)
+    np.testing.assert_allclose(
+        ds["e"].sel(law="hertz").values, 0.5 + 0.1 * np.sin(th) - 0.2 * mu + 0.01, rtol=1e-15
+    )
     assert ds["angle"].attrs["units"] == "rad" and ds["duration"].attrs["units"] == "s"
     assert str(ds["vy"].values) == "-1.41" and ds["vy"].attrs["units"] == "m/s"
     assert str(ds["friction"].values) == "coulomb"  # defaults are recorded too
@@ -141,17 +152,25 @@ def test_changed_study_is_refused_or_restarted_explicitly(tmp_path, fake) -> Non
 
 
 def test_process_pool_equals_in_process_run(tmp_path, fake) -> None:
-    a = run_sweep(sample_study(size=600, chunk=100), tmp_path / "a.zarr", evaluator=fake,
-                  quiet=True)
-    b = run_sweep(sample_study(size=600, chunk=100), tmp_path / "b.zarr", evaluator=fake,
-                  quiet=True, backend="processes", workers=2)
+    a = run_sweep(
+        sample_study(size=600, chunk=100), tmp_path / "a.zarr", evaluator=fake, quiet=True
+    )
+    b = run_sweep(
+        sample_study(size=600, chunk=100),
+        tmp_path / "b.zarr",
+        evaluator=fake,
+        quiet=True,
+        backend="processes",
+        workers=2,
+    )
     assert b.stats.chunks_computed == a.stats.n_chunks
     assert store_files(a.path) == store_files(b.path)
 
 
 def test_invalid_cases_are_recorded_not_raised(tmp_path, fake) -> None:
-    st = grid_study(grid={"angle": np.radians([20.0, 45.0]), "vy": [-1.0, -6.0, -7.0]},
-                    fixed={"mu": 0.2})
+    st = grid_study(
+        grid={"angle": np.radians([20.0, 45.0]), "vy": [-1.0, -6.0, -7.0]}, fixed={"mu": 0.2}
+    )
     ds = run_sweep(st, tmp_path / "inv.zarr", evaluator=fake, quiet=True).dataset
     status = ds["status"].values
     bad = ds["vy"].values[None, :] < VY_LIMIT

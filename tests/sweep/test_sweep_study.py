@@ -11,16 +11,23 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from impactlab.sweep import INPUTS, LogNormal, Normal, Sample, Study, Uniform, load_study
+from impactlab.sweep.dimensions import chunk_shape
 from impactlab.sweep.distributions import distribution_from_dict, uniforms
-from impactlab.sweep.study import chunk_shape
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
 def _grid_study(**kw):
-    base = dict(name="g", grid={"angle": np.radians([10.0, 20.0, 30.0]),
-                                "mu": [0.0, 0.1, 0.2, 0.3], "law": ["ghaednia", "hertz"]},
-                fixed={"vy": -1.41}, chunk_size=5)
+    base = dict(
+        name="g",
+        grid={
+            "angle": np.radians([10.0, 20.0, 30.0]),
+            "mu": [0.0, 0.1, 0.2, 0.3],
+            "law": ["ghaednia", "hertz"],
+        },
+        fixed={"vy": -1.41},
+        chunk_size=5,
+    )
     base.update(kw)
     return Study(**base)
 
@@ -52,8 +59,11 @@ def test_grid_layout_and_cases_cover_every_point_once() -> None:
     assert len(seen) == lay.n_cases == 24
 
 
-@given(shape=st.lists(st.integers(1, 40), min_size=1, max_size=4),
-       target=st.integers(1, 5000), data=st.data())
+@given(
+    shape=st.lists(st.integers(1, 40), min_size=1, max_size=4),
+    target=st.integers(1, 5000),
+    data=st.data(),
+)
 @settings(max_examples=60, deadline=None)
 def test_chunk_shape_tiles_the_array(shape, target, data) -> None:
     cat = data.draw(st.lists(st.booleans(), min_size=len(shape), max_size=len(shape)))
@@ -66,10 +76,12 @@ def test_chunk_shape_tiles_the_array(shape, target, data) -> None:
 
 def test_sample_draws_do_not_depend_on_chunking() -> None:
     dists = {"angle": Normal(math.radians(45), math.radians(1)), "mu": Uniform(0.1, 0.3)}
-    a = Study(name="a", sample=Sample(size=1000, seed=7, inputs=dists), fixed={"vy": -2.0},
-              chunk_size=64)
-    b = Study(name="b", sample=Sample(size=1000, seed=7, inputs=dists), fixed={"vy": -2.0},
-              chunk_size=333)
+    a = Study(
+        name="a", sample=Sample(size=1000, seed=7, inputs=dists), fixed={"vy": -2.0}, chunk_size=64
+    )
+    b = Study(
+        name="b", sample=Sample(size=1000, seed=7, inputs=dists), fixed={"vy": -2.0}, chunk_size=333
+    )
 
     def gather(s):
         parts = [s.chunk_cases(k)[0] for k in range(s.layout.n_chunks)]
@@ -126,16 +138,23 @@ def test_bad_distributions(spec, message) -> None:
 
 
 def test_study_table_units_and_round_trip() -> None:
-    s = Study.from_dict({
-        "study": {"name": "x", "chunk_size": 100},
-        "fixed": {"vy": "-1410 mm/s", "flat_yield_strength": "305 MPa", "law": "hertz"},
-        "grid": {"angle": {"start": 10, "stop": 30, "num": 3},
-                 "mu": {"start": 0.0, "stop": 0.2, "step": 0.1},
-                 "flat_E": {"values": [190, 210], "unit": "GPa"}},
-        "sample": {"size": 10, "seed": 3,
-                   "vx": {"dist": "normal", "mean": "0 m/s", "std": "20 mm/s"}},
-        "outputs": {"keep": ["e", "L_s", "T"]},
-    })
+    s = Study.from_dict(
+        {
+            "study": {"name": "x", "chunk_size": 100},
+            "fixed": {"vy": "-1410 mm/s", "flat_yield_strength": "305 MPa", "law": "hertz"},
+            "grid": {
+                "angle": {"start": 10, "stop": 30, "num": 3},
+                "mu": {"start": 0.0, "stop": 0.2, "step": 0.1},
+                "flat_E": {"values": [190, 210], "unit": "GPa"},
+            },
+            "sample": {
+                "size": 10,
+                "seed": 3,
+                "vx": {"dist": "normal", "mean": "0 m/s", "std": "20 mm/s"},
+            },
+            "outputs": {"keep": ["e", "L_s", "T"]},
+        }
+    )
     assert s.fixed["vy"] == pytest.approx(-1.41)
     assert s.fixed["flat_yield_strength"] == pytest.approx(305e6)
     np.testing.assert_allclose(s.axes[0].values, np.radians([10, 20, 30]))  # bare: degrees
@@ -148,36 +167,56 @@ def test_study_table_units_and_round_trip() -> None:
     assert again.to_json() == s.to_json()
     assert again.hash() == s.hash()
     # the hash follows what changes the results, not the description
-    assert Study.from_dict({**s.to_dict(), "fixed": {**s.to_dict()["fixed"], "vy": -1.0}}
-                           ).hash() != s.hash()
+    assert (
+        Study.from_dict({**s.to_dict(), "fixed": {**s.to_dict()["fixed"], "vy": -1.0}}).hash()
+        != s.hash()
+    )
 
 
 @pytest.mark.parametrize(
     ("table", "message"),
     [
-        ({"grid": {"angel": [1, 2]}, "fixed": {"vy": -1, "mu": 0.1}},
-         "unknown input 'angel'; known inputs: angle, vx"),
+        (
+            {"grid": {"angel": [1, 2]}, "fixed": {"vy": -1, "mu": 0.1}},
+            "unknown input 'angel'; known inputs: angle, vx",
+        ),
         ({"fixed": {"vy": -1, "mu": 0.1, "angle": 20}}, "needs a \\[grid\\] or a \\[sample\\]"),
         ({"grid": {"angle": [10]}, "fixed": {"vy": -1}}, r"\['mu'\] have no value"),
-        ({"grid": {"angle": [10], "mu": [0.1]}, "fixed": {"vy": -1, "mu": 0.2}},
-         "'mu' is set twice"),
-        ({"grid": {"angle": [10], "mu": [0.1]}, "fixed": {"vy": "fast"}},
-         "cannot parse 'fast'"),
-        ({"grid": {"angle": [10], "mu": [0.1]}, "fixed": {"vy": "2 kg"}},
-         "not convertible to m/s"),
-        ({"grid": {"angle": {"start": 1, "stop": 2}, "mu": [0.1]}, "fixed": {"vy": -1}},
-         "exactly one of 'num' and 'step'"),
+        (
+            {"grid": {"angle": [10], "mu": [0.1]}, "fixed": {"vy": -1, "mu": 0.2}},
+            "'mu' is set twice",
+        ),
+        ({"grid": {"angle": [10], "mu": [0.1]}, "fixed": {"vy": "fast"}}, "cannot parse 'fast'"),
+        ({"grid": {"angle": [10], "mu": [0.1]}, "fixed": {"vy": "2 kg"}}, "not convertible to m/s"),
+        (
+            {"grid": {"angle": {"start": 1, "stop": 2}, "mu": [0.1]}, "fixed": {"vy": -1}},
+            "exactly one of 'num' and 'step'",
+        ),
         ({"grid": {"angle": [10, 10], "mu": [0.1]}, "fixed": {"vy": -1}}, "repeated values"),
-        ({"grid": {"angle": [10], "mu": [0.1]}, "fixed": {"vy": -1}, "plots": {}},
-         "unknown table"),
-        ({"sample": {"size": 10, "law": {"dist": "uniform"}}, "fixed": {"vy": -1},
-          "grid": {"angle": [1], "mu": [0.1]}}, "category"),
-        ({"sample": {"seed": 1, "mu": {"dist": "uniform", "low": 0, "high": 1}},
-          "fixed": {"vy": -1, "angle": 10}}, "needs 'size'"),
-        ({"grid": {"angle": [10], "mu": [0.1]}, "fixed": {"vy": -1}, "engine": {"tol": 1}},
-         "unknown key"),
-        ({"grid": {"angle": [10], "mu": [0.1]}, "fixed": {"vy": -1},
-          "study": {"chunk_size": 0}}, "chunk_size must be"),
+        ({"grid": {"angle": [10], "mu": [0.1]}, "fixed": {"vy": -1}, "plots": {}}, "unknown table"),
+        (
+            {
+                "sample": {"size": 10, "law": {"dist": "uniform"}},
+                "fixed": {"vy": -1},
+                "grid": {"angle": [1], "mu": [0.1]},
+            },
+            "category",
+        ),
+        (
+            {
+                "sample": {"seed": 1, "mu": {"dist": "uniform", "low": 0, "high": 1}},
+                "fixed": {"vy": -1, "angle": 10},
+            },
+            "needs 'size'",
+        ),
+        (
+            {"grid": {"angle": [10], "mu": [0.1]}, "fixed": {"vy": -1}, "engine": {"tol": 1}},
+            "unknown key",
+        ),
+        (
+            {"grid": {"angle": [10], "mu": [0.1]}, "fixed": {"vy": -1}, "study": {"chunk_size": 0}},
+            "chunk_size must be",
+        ),
     ],
 )
 def test_study_file_errors_name_the_problem(table, message) -> None:

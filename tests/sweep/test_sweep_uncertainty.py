@@ -5,17 +5,39 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from impactlab.sweep import Normal, Sample, Study, Uniform, run_sweep, uncertainty_report
+from impactlab.sweep import (
+    Normal,
+    Sample,
+    Study,
+    UncertaintySpec,
+    Uniform,
+    run_sweep,
+    status_counts,
+    store_info,
+    uncertainty_report,
+    uncertainty_reports,
+)
 from impactlab.sweep.uncertainty import format_report
 
 
 def _mc(tmp_path, fake, grid=None):
     # fake engine: e = 0.5 + 0.1 sin(angle) - 0.2 mu; delta_p = 1e-5 |vy| 200e9/flat_E;
     # F = 1000 |vy|. mu (std 0.058) dominates e, flat_E (10 %) dominates delta_p over vy (2 %).
-    st = Study(name="mc", chunk_size=1000, grid=grid or {},
-               sample=Sample(size=4000, seed=5, inputs={
-                   "angle": Normal(0.35, 0.01), "vy": Normal(-1.41, 0.03),
-                   "mu": Uniform(0.1, 0.3), "flat_E": Normal(200e9, 20e9, low=100e9)}))
+    st = Study(
+        name="mc",
+        chunk_size=1000,
+        grid=grid or {},
+        sample=Sample(
+            size=4000,
+            seed=5,
+            inputs={
+                "angle": Normal(0.35, 0.01),
+                "vy": Normal(-1.41, 0.03),
+                "mu": Uniform(0.1, 0.3),
+                "flat_E": Normal(200e9, 20e9, low=100e9),
+            },
+        ),
+    )
     return run_sweep(st, tmp_path / "mc.zarr", evaluator=fake, quiet=True).dataset
 
 
@@ -57,3 +79,33 @@ def test_report_needs_a_sample_and_one_grid_point(tmp_path, fake) -> None:
     with pytest.raises(ValueError, match="needs a Monte Carlo"):
         uncertainty_report(ds.isel(sample=0))
     assert np.isfinite(rep.summary.loc["e", "std"])
+
+
+def test_one_report_per_grid_point_with_the_study_defaults(tmp_path, fake) -> None:
+    st = Study(
+        name="mcg",
+        chunk_size=1000,
+        grid={"law": ["ghaednia", "hertz"]},
+        sample=Sample(
+            size=500, seed=3, inputs={"vy": Normal(-1.41, 0.03), "mu": Uniform(0.1, 0.3)}
+        ),
+        fixed={"angle": 0.35},
+        uncertainty=UncertaintySpec(outputs=("e", "F"), percentiles=(5.0, 95.0)),
+    )
+    ds = run_sweep(st, tmp_path / "mcg.zarr", evaluator=fake, quiet=True).dataset
+    reports = uncertainty_reports(ds)
+    assert list(reports) == ["law = ghaednia", "law = hertz"]
+    for law, rep in reports.items():
+        one = uncertainty_report(
+            ds.sel(law=law.split(" = ")[1]), ["e", "mean_force"], percentiles=(5.0, 95.0)
+        )
+        assert list(rep.summary.index) == ["e", "mean_force"]
+        assert {"p5", "p95"} <= set(rep.summary.columns)
+        assert rep.summary.equals(one.summary)
+    assert list(uncertainty_reports(ds, outputs=["delta_p"])["law = hertz"].summary.index) == [
+        "delta_p"
+    ]
+    assert status_counts(ds) == {"0: ok": 1000}
+    info = store_info(tmp_path / "mcg.zarr")
+    assert info["chunks_done"] == f"{st.layout.n_chunks} of {st.layout.n_chunks}"
+    assert info["dims"] == {"law": 2, "sample": 500} and info["status"] == {"0: ok": 1000}

@@ -6,12 +6,12 @@ input, never a traceback. Set ``IMPACTLAB_DEBUG=1`` to see the traceback.
 
 from __future__ import annotations
 
-import importlib
 import os
 import sys
 
 import typer
 
+from impactlab.cli import analyze, invert, laws, materials, reproduce, simulate, sweep
 from impactlab.cli._common import UserError
 
 app = typer.Typer(
@@ -23,26 +23,9 @@ app = typer.Typer(
     pretty_exceptions_enable=False,
 )
 
-# Command modules: each defines ``register(app)``. A missing module is skipped (the package can
-# grow command by command).
-_COMMAND_MODULES = (
-    "laws",
-    "materials",
-    "simulate",
-    "invert",
-    "analyze",
-    "sweep",
-    "reproduce",
-)
-
-for _name in _COMMAND_MODULES:
-    try:
-        _mod = importlib.import_module(f"impactlab.cli.{_name}")
-    except ModuleNotFoundError as _exc:
-        if _exc.name != f"impactlab.cli.{_name}":
-            raise
-        continue
-    _mod.register(app)
+# Each command module defines ``register(app)``; registered in this order (the help's order).
+for _module in (laws, materials, simulate, invert, analyze, sweep, reproduce):
+    _module.register(app)
 
 
 def main() -> None:

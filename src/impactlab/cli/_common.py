@@ -12,6 +12,7 @@ from rich.console import Console
 from rich.table import Table
 
 from impactlab._json import jsonable
+from impactlab.schema import FIELDS
 from impactlab.units import to_si
 
 
@@ -42,11 +43,28 @@ def load_toml(path: Path | None) -> dict[str, Any]:
         raise UserError(f"input file {str(path)!r} is not valid TOML: {exc}") from None
 
 
+def field_units(data: Mapping[str, Any]) -> dict[str, str]:
+    """Display units of the result fields among ``data``'s keys, from :mod:`impactlab.schema`
+    ("-" for a dimensionless number, nothing for names and counts)."""
+    units: dict[str, str] = {}
+    for key, value in data.items():
+        f = FIELDS.get(key)
+        if f is None:
+            continue
+        if f.unit != "1":
+            units[key] = f.unit
+        elif isinstance(value, float):
+            units[key] = "-"
+    return units
 
 
-
-def emit(data: Mapping[str, Any], *, as_json: bool, title: str = "", units: Mapping[str, str]
-         | None = None) -> None:
+def emit(
+    data: Mapping[str, Any],
+    *,
+    as_json: bool,
+    title: str = "",
+    units: Mapping[str, str] | None = None,
+) -> None:
     """Print ``data`` as JSON (``--json``) or as a readable two-column table."""
     if as_json:
         print(json.dumps(jsonable(data), indent=2))
@@ -57,9 +75,6 @@ def emit(data: Mapping[str, Any], *, as_json: bool, title: str = "", units: Mapp
     table.add_column("value", justify="right")
     table.add_column("unit")
     for key, value in data.items():
-        if isinstance(value, float):
-            text = f"{value:.6g}"
-        else:
-            text = str(value)
+        text = f"{value:.6g}" if isinstance(value, float) else str(value)
         table.add_row(key, text, units.get(key, ""))
     console.print(table)

@@ -72,26 +72,29 @@ _UNITS = {
 }
 
 
-def register(app: typer.Typer) -> None:
-    @app.command("laws")
-    def laws(
-        name: str | None = typer.Argument(None, help="Show one law in detail (e.g. 'brake')."),
-        radius: str = typer.Option(
-            "8.8 mm", "--radius", help="Tip radius for the example numbers of one law."
-        ),
-        body: str = typer.Option("aisi-201", "--body", help="Material preset of the body."),
-        flat: str = typer.Option("aisi-1010", "--flat", help="Material preset of the flat."),
-        as_json: bool = typer.Option(False, "--json", help="Machine-readable output."),
-    ) -> None:
-        """List the contact laws (title, reference/DOI, validity, parameters) or show one.
+def laws(
+    name: str | None = typer.Argument(None, help="Show one law in detail (e.g. 'brake')."),
+    radius: str = typer.Option(
+        "8.8 mm", "--radius", help="Tip radius for the example numbers of one law."
+    ),
+    body: str = typer.Option("aisi-201", "--body", help="Material preset of the body."),
+    flat: str = typer.Option("aisi-1010", "--flat", help="Material preset of the flat."),
+    as_json: bool = typer.Option(False, "--json", help="Machine-readable output."),
+) -> None:
+    """List the contact laws (title, reference/DOI, validity, parameters) or show one.
 
-        Example: impactlab laws jackson-green --radius "8.8 mm" --json
-        """
-        try:
-            _laws(name, radius, body, flat, as_json)
-        except ValueError as exc:  # one line, no traceback, whichever entry point runs us
-            print(f"error: {exc}", file=sys.stderr)
-            raise typer.Exit(2) from None
+    Example: impactlab laws jackson-green --radius "8.8 mm" --json
+    """
+    try:
+        _laws(name, radius, body, flat, as_json)
+    except ValueError as exc:  # one line, no traceback, whichever entry point runs us
+        print(f"error: {exc}", file=sys.stderr)
+        raise typer.Exit(2) from None
+
+
+def register(app: typer.Typer) -> None:
+    """Add ``impactlab laws`` to ``app``."""
+    app.command("laws")(laws)
 
 
 def _laws(name: str | None, radius: str, body: str, flat: str, as_json: bool) -> None:
@@ -100,15 +103,15 @@ def _laws(name: str | None, radius: str, body: str, flat: str, as_json: bool) ->
         if as_json:
             emit(data, as_json=True)
             return
-        table = Table(title="Contact laws", show_header=True, header_style="bold",
-                      show_lines=True)
+        table = Table(title="Contact laws", show_header=True, header_style="bold", show_lines=True)
         table.add_column("name", no_wrap=True)
         for col in ("title", "reference / DOI", "validity", "parameters (default)"):
             table.add_column(col, overflow="fold")
         for n in law_names():
             law = get_law(n)
-            table.add_row(n, law.title, f"{law.reference}\ndoi:{law.doi}", law.validity,
-                          _param_text(law))
+            table.add_row(
+                n, law.title, f"{law.reference}\ndoi:{law.doi}", law.validity, _param_text(law)
+            )
         console.print(table)
         console.print("Details of one law: impactlab laws NAME (see docs/laws/).")
         return
@@ -134,5 +137,4 @@ def _laws(name: str | None, radius: str, body: str, flat: str, as_json: bool) ->
         k: (v if not (isinstance(v, float) and math.isinf(v)) else "inf")
         for k, v in info["example"].items()
     }
-    emit(example, as_json=False, title=f"numbers for {body} on {flat}, R = {R:g} m",
-         units=_UNITS)
+    emit(example, as_json=False, title=f"numbers for {body} on {flat}, R = {R:g} m", units=_UNITS)

@@ -10,22 +10,34 @@ from impactlab.cli._common import console, emit
 from impactlab.materials import PRESETS
 
 
-def register(app: typer.Typer) -> None:
-    @app.command("materials")
-    def materials(
-        as_json: bool = typer.Option(False, "--json", help="Machine-readable output."),
-    ) -> None:
-        """List the material presets (SI units; Brinell hardness in kgf/mm^2).
+def materials(
+    as_json: bool = typer.Option(False, "--json", help="Machine-readable output."),
+) -> None:
+    """List the material presets (SI units; Brinell hardness in kgf/mm^2).
 
-        Example: impactlab materials --json
-        """
-        data = {key: asdict(m) for key, m in PRESETS.items()}
-        if as_json:
-            emit(data, as_json=True)
-            return
-        for key, m in data.items():
-            emit({k: v for k, v in m.items()}, as_json=False, title=key,
-                 units={"E": "Pa", "yield_strength": "Pa", "brinell_hardness": "kgf/mm^2",
-                        "density": "kg/m^3"})
-        console.print("Presets follow the paper's Table 1 with its unit corrections "
-                      "(see docs/physics/table1.md).")
+    Example: impactlab materials --json
+    """
+    data = {key: asdict(m) for key, m in PRESETS.items()}
+    if as_json:
+        emit(data, as_json=True)
+        return
+    for key, m in data.items():
+        emit(
+            {k: v for k, v in m.items()},
+            as_json=False,
+            title=key,
+            units={
+                "E": "Pa",
+                "yield_strength": "Pa",
+                "brinell_hardness": "kgf/mm^2",
+                "density": "kg/m^3",
+            },
+        )
+    console.print(
+        "Presets follow the paper's Table 1 with its unit corrections (see docs/physics/table1.md)."
+    )
+
+
+def register(app: typer.Typer) -> None:
+    """Add ``impactlab materials`` to ``app``."""
+    app.command("materials")(materials)

@@ -6,36 +6,47 @@ from pathlib import Path
 
 import typer
 
-from impactlab.cli._common import console
+from impactlab.paper.quantities import TOL_EXPERIMENT_T
+from impactlab.paper.reproduction import reproduce
+
+
+def reproduce_cmd(
+    out: str = typer.Option(
+        "reproduction",
+        "--out",
+        help="Folder to write into (created; "
+        "a non-empty folder must come from a previous reproduction).",
+    ),
+    no_simulate: bool = typer.Option(
+        False, "--no-simulate", help="Skip the simulations (analytic part only)."
+    ),
+) -> None:
+    """Reproduce the paper (doi:10.1007/s00419-015-1108-2): Tables 2-4 side by side with
+    impactlab's numbers, Figs. 4 and 5, force plots, and report.md / report.html.
+
+    Example: impactlab reproduce --out reproduction
+    """
+    res = reproduce(Path(out), simulate=not no_simulate)
+    exp = res.experimental.set_index("angle [deg]")
+    for ang in (20, 45):
+        r = exp.loc[ang]
+        ok = abs(r["T rel. diff"]) <= TOL_EXPERIMENT_T
+        typer.echo(
+            f"{ang} deg: T = {r['T [ms]']:.3f} ms (published "
+            f"{r['T published [ms]']:.2f} ms, {r['T rel. diff']:+.1%}) "
+            f"{'ok' if ok else 'OFF'}"
+        )
+    bad = res.comparison[res.comparison["reproduced"] == False]  # noqa: E712
+    n_bad = len(bad.drop_duplicates(["source", "angle [deg]", "model", "quantity"]))
+    typer.echo(
+        f"{n_bad} published numbers not reproduced (within the tolerances), each "
+        "explained in the report"
+    )
+    if no_simulate:
+        typer.echo("simulations skipped (--no-simulate): analytic part only")
+    typer.echo(f"report: {res.report_md} and {res.report_html} ({res.elapsed_s:.1f} s)")
 
 
 def register(app: typer.Typer) -> None:
-    @app.command("reproduce")
-    def reproduce_cmd(
-        out: str = typer.Option("reproduction", "--out", help="Folder to write into (created; "
-                                "a non-empty folder must come from a previous reproduction)."),
-        no_simulate: bool = typer.Option(False, "--no-simulate", help="Skip the simulations "
-                                         "(analytic part only)."),
-    ) -> None:
-        """Reproduce the paper (doi:10.1007/s00419-015-1108-2): Tables 2-4 side by side with
-        impactlab's numbers, Figs. 4 and 5, force plots, and report.md / report.html.
-
-        Example: impactlab reproduce --out reproduction
-        """
-        from impactlab.paper.reproduction import TOL_EXPERIMENT_T, reproduce
-
-        res = reproduce(Path(out), simulate=not no_simulate)
-        exp = res.experimental.set_index("angle [deg]")
-        for ang in (20, 45):
-            r = exp.loc[ang]
-            ok = abs(r["T rel. diff"]) <= TOL_EXPERIMENT_T
-            typer.echo(f"{ang} deg: T = {r['T [ms]']:.3f} ms (published "
-                          f"{r['T published [ms]']:.2f} ms, {r['T rel. diff']:+.1%}) "
-                          f"{'ok' if ok else 'OFF'}")
-        bad = res.comparison[res.comparison["reproduced"] == False]  # noqa: E712
-        n_bad = len(bad.drop_duplicates(["source", "angle [deg]", "model", "quantity"]))
-        typer.echo(f"{n_bad} published numbers not reproduced (within the tolerances), each "
-                      "explained in the report")
-        if res.extras.get("engine_error"):
-            console.print(f"[yellow]simulations skipped: {res.extras['engine_error']}[/yellow]")
-        typer.echo(f"report: {res.report_md} and {res.report_html} ({res.elapsed_s:.1f} s)")
+    """Add ``impactlab reproduce`` to ``app``."""
+    app.command("reproduce")(reproduce_cmd)

@@ -2,24 +2,28 @@
 
 Usage::
 
-    from impactlab.contact import get_law
+    from impactlab.contact import Law, get_law
     from impactlab.materials import AISI_201, AISI_1010, ContactPair
 
-    model = get_law("ghaednia").build(ContactPair(AISI_201, AISI_1010), radius=8.8e-3)
+    model = get_law(Law.GHAEDNIA).build(ContactPair(AISI_201, AISI_1010), radius=8.8e-3)
     model.force(50e-6)            # loading force [N] at 50 um
     model.unload(50e-6).delta_r   # residual depth [m]
 
-The compiled kernels for the engine live in ``impactlab.contact.kernels``.
+Laws are keyed by :class:`Law` (``Law.GHAEDNIA == "ghaednia"``; plain names work too); each law
+and each built model carries its sources in ``.references``. The compiled kernels for the engine
+live in ``impactlab.contact.kernels``.
 """
 
 from impactlab.contact.base import ContactLaw, ContactModel, Parameter, UnloadingBranch
 from impactlab.contact.energy import ReboundResult, loading_work, quasi_static_rebound
+from impactlab.contact.names import Law
 from impactlab.contact.registry import get_law, law_names
 from impactlab.contact.thornton import thornton_restitution, thornton_yield_velocity
 
 __all__ = [
     "ContactLaw",
     "ContactModel",
+    "Law",
     "Parameter",
     "ReboundResult",
     "UnloadingBranch",

@@ -10,6 +10,7 @@ import math
 
 import numpy as np
 
+from impactlab.contact import kernel_arrays as ka
 from impactlab.contact import kernels as k
 from impactlab.contact._common import FEM_RANGE_RATIO, jg_C, jg_critical, nearest_crossing
 from impactlab.materials import ContactPair
@@ -62,8 +63,12 @@ def fill_jackson_family(
         d_sw = d_pub
     else:
         found = nearest_crossing(
-            ep, hertz, d_pub, 1e-4 * dc, dlim,
-            g_array=lambda d: k.elastic_plastic_gap_array(k.GAP_JACKSON_FAMILY, p, d),
+            ep,
+            hertz,
+            d_pub,
+            1e-4 * dc,
+            dlim,
+            g_array=lambda d: ka.elastic_plastic_gap_array(ka.GAP_JACKSON_FAMILY, p, d),
         )
         if found is None:
             raise ValueError(

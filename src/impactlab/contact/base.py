@@ -11,8 +11,11 @@ from typing import Any, ClassVar
 import numpy as np
 
 from impactlab._validation import check_finite, check_nonnegative, check_positive
+from impactlab.contact import kernel_arrays as ka
 from impactlab.contact import kernels as k
+from impactlab.contact.names import Law
 from impactlab.materials import ContactPair
+from impactlab.references import Reference
 
 
 @dataclass(frozen=True)
@@ -68,13 +71,15 @@ class ContactModel:
     """A contact law with all its parameters fixed: what the impact engine consumes.
 
     ``law_id`` and ``params`` are the compiled representation (see ``contact.kernels``);
-    ``details`` holds derived numbers for people (critical values, calibrated range, ...).
+    ``details`` holds derived numbers for people (critical values, calibrated range, ...);
+    ``references`` are the law's sources (``impactlab.references``).
     """
 
     name: str
     law_id: int
     params: np.ndarray = field(repr=False)
     details: Mapping[str, float] = field(default_factory=dict, repr=False)
+    references: tuple[Reference, ...] = field(default=(), repr=False)
 
     def __post_init__(self) -> None:
         p = np.array(self.params, dtype=np.float64)
@@ -83,6 +88,10 @@ class ContactModel:
         p.setflags(write=False)
         object.__setattr__(self, "params", p)
         object.__setattr__(self, "details", dict(self.details))
+        refs = tuple(self.references)
+        if not refs:  # a model named after a registered law carries that law's sources
+            refs = next((law.references for law in Law if law == self.name), ())
+        object.__setattr__(self, "references", refs)
 
     @property
     def E_star(self) -> float:
@@ -147,13 +156,13 @@ class ContactModel:
     def force(self, delta: Any) -> np.ndarray:
         """Loading force [N] at interferences ``delta`` [m]."""
         d = self.check_interference(delta)
-        return k.loading_force_array(self.law_id, self.params, np.atleast_1d(d)).reshape(d.shape)
+        return ka.loading_force_array(self.law_id, self.params, np.atleast_1d(d)).reshape(d.shape)
 
     def contact_radius(self, delta: Any) -> np.ndarray:
         """Contact radius [m] on the loading curve at interferences ``delta`` [m]."""
         d = self.check_interference(delta)
         flat = np.atleast_1d(d)
-        return k.loading_contact_radius_array(self.law_id, self.params, flat).reshape(d.shape)
+        return ka.loading_contact_radius_array(self.law_id, self.params, flat).reshape(d.shape)
 
     def unload(self, delta_m: float) -> UnloadingBranch:
         """The unloading branch after loading to ``delta_m`` [m]."""
@@ -165,18 +174,31 @@ class ContactModel:
 class ContactLaw(ABC):
     """A registered normal contact law for a sphere (radius R) on a flat.
 
-    Subclasses declare their name, compiled id, literature reference, validity and calibrated
-    range, and turn a contact pair plus parameters into a ``ContactModel``.
+    Subclasses declare their :class:`Law` member (``law``), title, literature reference,
+    validity and calibrated range, and turn a contact pair plus parameters into a
+    ``ContactModel``. ``name``, ``law_id``, ``references`` and ``doi`` (of the defining paper)
+    follow from ``law``.
     """
 
+    law: ClassVar[Law]
     name: ClassVar[str]
     law_id: ClassVar[int]
+    references: ClassVar[tuple[Reference, ...]]
+    doi: ClassVar[str]
     title: ClassVar[str]
     reference: ClassVar[str]
-    doi: ClassVar[str]
     validity: ClassVar[str]
     calibrated_range: ClassVar[str] = "not stated"
     parameters: ClassVar[tuple[Parameter, ...]] = ()
+
+    def __init_subclass__(cls, **kwargs: Any) -> None:
+        super().__init_subclass__(**kwargs)
+        law = cls.__dict__.get("law")
+        if law is not None:
+            cls.name = law.value
+            cls.law_id = law.law_id
+            cls.references = law.references
+            cls.doi = cls.references[0].doi
 
     def build(self, pair: ContactPair, radius: float, **params: float) -> ContactModel:
         """Validate ``params`` (unknown names are an error) and build the model for ``pair``.
@@ -205,26 +227,29 @@ class ContactLaw(ABC):
         p[k.P_DLIM] = R
         details = self._fill(p, pair, values) or {}
         self._check_loading_curve(p, pair, published=values.get("published_switch", 0.0) == 1.0)
-        return ContactModel(self.name, self.law_id, p, details)
+        return ContactModel(self.name, self.law_id, p, details, self.references)
 
     def _check_loading_curve(self, p: np.ndarray, pair: ContactPair, *, published: bool) -> None:
         """ValueError unless the loading curve is finite and non-decreasing up to the hard limit
         (checked on a fine grid; a published force jump at the switch point is allowed)."""
         dlim = float(p[k.P_DLIM])
+        refs = (float(p[k.P_DSW]), float(p[k.P_DY]))
         grids = [np.geomspace(dlim * 1e-9, dlim, 4000)]
-        for ref in (float(p[k.P_DSW]), float(p[k.P_DY])):
-            if math.isfinite(ref) and 0.0 < ref < dlim:
-                grids.append(np.linspace(0.2 * ref, min(5.0 * ref, dlim), 2001))
+        grids += [
+            np.linspace(0.2 * ref, min(5.0 * ref, dlim), 2001)
+            for ref in refs
+            if math.isfinite(ref) and 0.0 < ref < dlim
+        ]
         grid = np.unique(np.concatenate(grids))
-        f = k.loading_force_array(self.law_id, p, grid)
+        f = ka.loading_force_array(self.law_id, p, grid)
         bad = ~np.isfinite(f) | (f < 0.0)
         drop = np.diff(f) < -1e-12 * np.abs(f[1:])
         if published:
             dsw = float(p[k.P_DSW])
             drop &= ~((grid[:-1] < dsw) & (grid[1:] >= dsw))
         if bad.any() or drop.any():
-            where = float(grid[int(np.argmax(bad))]) if bad.any() else float(
-                grid[int(np.argmax(drop))]
+            where = (
+                float(grid[int(np.argmax(bad))]) if bad.any() else float(grid[int(np.argmax(drop))])
             )
             raise ValueError(
                 f"the {self.name!r} law gives a {'non-finite' if bad.any() else 'decreasing'} "
@@ -249,6 +274,10 @@ class ContactLaw(ABC):
             "title": self.title,
             "reference": self.reference,
             "doi": self.doi,
+            "references": [
+                {"key": r.key, "citation": r.citation, "doi": r.doi, "url": r.url}
+                for r in self.references
+            ],
             "validity": self.validity,
             "calibrated_range": self.calibrated_range,
             "parameters": [

@@ -34,8 +34,10 @@ import numpy as np
 from scipy.optimize import minimize_scalar
 
 from impactlab._validation import check_positive
+from impactlab.contact import kernel_arrays as ka
 from impactlab.contact import kernels as k
 from impactlab.contact.base import ContactLaw, Parameter
+from impactlab.contact.names import Law
 from impactlab.materials import G0, ContactPair
 
 
@@ -68,18 +70,21 @@ def brake_eq26_residual(delta: float, E_star: float, radius: float, P0: float, n
     """Printed Eq. 26 written as g(delta) = sqrt(2 delta R) - [3 P0/(4 E*) 2^(n/2) pi
     R^((n-1)/2) delta^((n-3)/2)]^(1/(n-2)); its root is delta_p (used by the tests)."""
     rhs = (
-        3.0 * P0 / (4.0 * E_star) * 2.0 ** (n / 2.0) * math.pi * radius ** ((n - 1.0) / 2.0)
+        3.0
+        * P0
+        / (4.0 * E_star)
+        * 2.0 ** (n / 2.0)
+        * math.pi
+        * radius ** ((n - 1.0) / 2.0)
         * delta ** ((n - 3.0) / 2.0)
     ) ** (1.0 / (n - 2.0))
     return math.sqrt(2.0 * delta * radius) - rhs
 
 
 class Brake(ContactLaw):
-    name = "brake"
-    law_id = k.BRAKE
+    law = Law.BRAKE
     title = "Brake 2015 elastic-plastic with strain hardening, the paper's Sec. 3.4"
     reference = "Brake, Int. J. Solids Struct. 62 (2015) 104-123; paper Eqs. 23-27"
-    doi = "10.1016/j.ijsolstr.2015.02.019"
     validity = (
         "elastic-plastic, strain hardening through Meyer's law, frictionless normal contact; "
         "Eq. 24 must be monotone (checked at build); hard limit delta = R/2 (a = sqrt(2 R delta)"
@@ -104,9 +109,7 @@ class Brake(ContactLaw):
         ),
     )
 
-    def _fill(
-        self, p: np.ndarray, pair: ContactPair, values: dict[str, float]
-    ) -> dict[str, float]:
+    def _fill(self, p: np.ndarray, pair: ContactPair, values: dict[str, float]) -> dict[str, float]:
         E = float(p[k.P_ESTAR])
         R = float(p[k.P_R])
         Sy = float(p[k.P_SY])
@@ -152,7 +155,7 @@ class Brake(ContactLaw):
             ]
         )
         grid = grid[grid <= 0.5 * R]
-        f = k.loading_force_array(k.BRAKE, p, grid)
+        f = ka.loading_force_array(k.BRAKE, p, grid)
         if np.any(np.diff(f) < -1e-12 * f[1:]):
             i = int(np.argmax(np.diff(f) < -1e-12 * f[1:]))
             raise ValueError(

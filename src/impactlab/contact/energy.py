@@ -9,6 +9,7 @@ what Thornton's closed form assumes; it is a reference for the impact engine's t
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass
 
@@ -55,7 +56,7 @@ def loading_work(model: ContactModel, delta_m: float) -> float:
     law, p = model.law_id, model.params
     edges = [0.0, *_breakpoints(model, dm), dm]
     total = 0.0
-    for a, b in zip(edges[:-1], edges[1:], strict=True):
+    for a, b in itertools.pairwise(edges):
         val, _ = quad(
             lambda x: k.loading_force(law, p, x), a, b, epsabs=0.0, epsrel=1e-11, limit=200
         )

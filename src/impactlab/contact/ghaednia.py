@@ -29,18 +29,17 @@ from impactlab.contact import kernels as k
 from impactlab.contact._common import check_switch
 from impactlab.contact._jackson_family import fill_jackson_family
 from impactlab.contact.base import ContactLaw, Parameter
+from impactlab.contact.names import Law
 from impactlab.materials import ContactPair
 
 
 class Ghaednia(ContactLaw):
-    name = "ghaednia"
-    law_id = k.GHAEDNIA
+    law = Law.GHAEDNIA
     title = "Ghaednia et al. (modified Jackson-Green), the paper's Sec. 3.2"
     reference = (
         "Ghaednia, Pope, Jackson, Marghitu, Tribology International 93 (2016) 78-90; "
         "paper Eqs. 15-19"
     )
-    doi = "10.1016/j.triboint.2015.09.005"
     validity = (
         "elastic-perfectly plastic sphere on a flat, frictionless, quasi-static; hard limit: the "
         "fitted contact radius reaches R (delta^(1+B) = R (1.9 delta_c)^B) or delta = R"
@@ -59,9 +58,7 @@ class Ghaednia(ContactLaw):
         ),
     )
 
-    def _fill(
-        self, p: np.ndarray, pair: ContactPair, values: dict[str, float]
-    ) -> dict[str, float]:
+    def _fill(self, p: np.ndarray, pair: ContactPair, values: dict[str, float]) -> dict[str, float]:
         published = check_switch(values["published_switch"])
         return fill_jackson_family(
             p,
@@ -73,6 +70,3 @@ class Ghaednia(ContactLaw):
             published=published,
             law_name=self.name,
         )
-
-
-

@@ -16,24 +16,22 @@ import numpy as np
 from impactlab.contact import kernels as k
 from impactlab.contact._common import jg_critical
 from impactlab.contact.base import ContactLaw
+from impactlab.contact.names import Law
 from impactlab.materials import ContactPair
 
 
 class Hertz(ContactLaw):
-    name = "hertz"
-    law_id = k.HERTZ
+    law = Law.HERTZ
     title = "Hertz (elastic)"
     reference = "Hertz, J. reine angew. Math. 92 (1882) 156; Johnson, Contact Mechanics (1985)"
-    doi = "10.1515/crll.1882.92.156"
     validity = "elastic, frictionless, delta <= R (small-strain theory: delta << R)"
     calibrated_range = "exact within linear elasticity: up to first yield, delta_c (Green 2005)"
 
-    def _fill(
-        self, p: np.ndarray, pair: ContactPair, values: dict[str, float]
-    ) -> dict[str, float]:
+    def _fill(self, p: np.ndarray, pair: ContactPair, values: dict[str, float]) -> dict[str, float]:
         p[k.P_DY] = math.inf
         p[k.P_FY] = math.inf
         p[k.P_DSW] = math.inf
-        dc, fc = jg_critical(float(p[k.P_ESTAR]), float(p[k.P_R]), float(p[k.P_SY]),
-                             float(p[k.P_NU]))
+        dc, fc = jg_critical(
+            float(p[k.P_ESTAR]), float(p[k.P_R]), float(p[k.P_SY]), float(p[k.P_NU])
+        )
         return {"delta_c": dc, "F_c": fc, "calibrated_max_interference": dc}

@@ -30,15 +30,14 @@ from impactlab.contact import kernels as k
 from impactlab.contact._common import check_switch
 from impactlab.contact._jackson_family import fill_jackson_family
 from impactlab.contact.base import ContactLaw, Parameter
+from impactlab.contact.names import Law
 from impactlab.materials import ContactPair
 
 
 class JacksonGreen(ContactLaw):
-    name = "jackson-green"
-    law_id = k.JACKSON_GREEN
+    law = Law.JACKSON_GREEN
     title = "Jackson-Green 2005 (original constants)"
     reference = "Jackson, Green, J. Tribol. 127 (2005) 343-354"
-    doi = "10.1115/1.1866166"
     validity = (
         "elastic-perfectly plastic hemisphere on a rigid flat, frictionless, quasi-static; hard "
         "limit: the fitted contact radius reaches R or delta = R"
@@ -64,9 +63,7 @@ class JacksonGreen(ContactLaw):
         ),
     )
 
-    def _fill(
-        self, p: np.ndarray, pair: ContactPair, values: dict[str, float]
-    ) -> dict[str, float]:
+    def _fill(self, p: np.ndarray, pair: ContactPair, values: dict[str, float]) -> dict[str, float]:
         published = check_switch(values["published_switch"])
         k1 = check_range("elastic_decay", values["elastic_decay"], 0.0, 1.0)
         return fill_jackson_family(

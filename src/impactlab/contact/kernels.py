@@ -42,8 +42,9 @@ Brake                   8     P_BR_DP: delta_p (Eq. 26) [m]
 Thornton                8     P_TH_PY: limiting contact pressure p_y [Pa]
 ======================  ====  ==========================================================
 
-Everything here is a pure function: no state is kept between calls, nothing is allocated
-(except by the ``*_array`` helpers).
+Everything here is a pure function: no state is kept between calls, nothing is allocated.
+Vectorised loops over these kernels (for building and plotting models) are in
+``impactlab.contact.kernel_arrays``.
 """
 
 from __future__ import annotations
@@ -377,45 +378,3 @@ def contact_radius(
     if d <= 0.0:
         return 0.0
     return math.sqrt(R_r * d)
-
-
-@njit(cache=True)
-def loading_force_array(law: int, p: np.ndarray, delta: np.ndarray) -> np.ndarray:
-    """Vectorised ``loading_force`` over an array of interferences."""
-    out = np.empty(delta.size)
-    flat = delta.ravel()
-    for i in range(flat.size):
-        out[i] = loading_force(law, p, flat[i])
-    return out.reshape(delta.shape)
-
-
-@njit(cache=True)
-def loading_contact_radius_array(law: int, p: np.ndarray, delta: np.ndarray) -> np.ndarray:
-    """Vectorised ``loading_contact_radius`` over an array of interferences."""
-    out = np.empty(delta.size)
-    flat = delta.ravel()
-    for i in range(flat.size):
-        out[i] = loading_contact_radius(law, p, flat[i])
-    return out.reshape(delta.shape)
-
-
-GAP_JACKSON_FAMILY = 0
-GAP_KOGUT_KOMVOPOULOS = 1
-
-
-@njit(cache=True)
-def elastic_plastic_gap_array(kind: int, p: np.ndarray, delta: np.ndarray) -> np.ndarray:
-    """F_ep(delta) - F_elastic(delta) [N] on a 1-D array, for locating the continuous switch of
-    the Jackson-Green family (``GAP_JACKSON_FAMILY``) or Kogut-Komvopoulos
-    (``GAP_KOGUT_KOMVOPOULOS``) when a model is built (one compiled loop instead of thousands of
-    Python calls)."""
-    out = np.empty(delta.size)
-    for i in range(delta.size):
-        x = delta[i]
-        if kind == GAP_JACKSON_FAMILY:
-            out[i] = jg_ep_force(p, x) - hertz_force(p[P_ESTAR], p[P_R], x)
-        elif kind == GAP_KOGUT_KOMVOPOULOS:
-            out[i] = kk_ep_force(p, x) - kk_elastic_force(p, x)
-        else:
-            out[i] = math.nan
-    return out

@@ -32,9 +32,11 @@ import math
 import numpy as np
 from scipy.optimize import minimize_scalar
 
+from impactlab.contact import kernel_arrays as ka
 from impactlab.contact import kernels as k
 from impactlab.contact._common import FEM_RANGE_RATIO, check_switch, nearest_crossing
 from impactlab.contact.base import ContactLaw, Parameter
+from impactlab.contact.names import Law
 from impactlab.materials import ContactPair
 
 
@@ -44,11 +46,9 @@ def _delta_at_ratio(t: float, R: float) -> float:
 
 
 class KogutKomvopoulos(ContactLaw):
-    name = "kogut-komvopoulos"
-    law_id = k.KOGUT_KOMVOPOULOS
+    law = Law.KOGUT_KOMVOPOULOS
     title = "Kogut-Komvopoulos indentation model, the paper's Sec. 3.3"
     reference = "Kogut, Komvopoulos, J. Mater. Res. 19 (2004) 3641-3653; paper Eqs. 20-22"
-    doi = "10.1557/JMR.2004.0468"
     validity = (
         "rigid sphere indenting an elastic-perfectly plastic half-space, frictionless; hard "
         "limit: minimum of F/F_elastic of Eq. 21 (before the pole of its denominator) or R"
@@ -67,9 +67,7 @@ class KogutKomvopoulos(ContactLaw):
         ),
     )
 
-    def _fill(
-        self, p: np.ndarray, pair: ContactPair, values: dict[str, float]
-    ) -> dict[str, float]:
+    def _fill(self, p: np.ndarray, pair: ContactPair, values: dict[str, float]) -> dict[str, float]:
         published = check_switch(values["published_switch"])
         E = float(p[k.P_ESTAR])
         R = float(p[k.P_R])
@@ -104,8 +102,12 @@ class KogutKomvopoulos(ContactLaw):
             d_sw = dy
         else:
             found = nearest_crossing(
-                ep, el, dy, 1e-4 * dy, d_end,
-                g_array=lambda d: k.elastic_plastic_gap_array(k.GAP_KOGUT_KOMVOPOULOS, p, d),
+                ep,
+                el,
+                dy,
+                1e-4 * dy,
+                d_end,
+                g_array=lambda d: ka.elastic_plastic_gap_array(ka.GAP_KOGUT_KOMVOPOULOS, p, d),
             )
             if found is None:
                 raise ValueError(

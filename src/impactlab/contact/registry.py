@@ -1,4 +1,7 @@
-"""The explicit registry of contact laws: name -> law. No name ever stands in for another law."""
+"""The explicit registry of contact laws, keyed by :class:`Law` (plain names work too).
+
+No name ever stands in for another law.
+"""
 
 from __future__ import annotations
 
@@ -8,24 +11,24 @@ from impactlab.contact.ghaednia import Ghaednia
 from impactlab.contact.hertz import Hertz
 from impactlab.contact.jackson_green import JacksonGreen
 from impactlab.contact.kogut_komvopoulos import KogutKomvopoulos
+from impactlab.contact.names import Law
 from impactlab.contact.thornton import Thornton
 
-_LAWS: dict[str, ContactLaw] = {
-    law.name: law
+_LAWS: dict[Law, ContactLaw] = {
+    law.law: law
     for law in (Hertz(), Ghaednia(), JacksonGreen(), KogutKomvopoulos(), Brake(), Thornton())
 }
 
 
 def law_names() -> tuple[str, ...]:
     """Names of the registered laws, in registration order."""
-    return tuple(_LAWS)
+    return tuple(str(law) for law in _LAWS)
 
 
-def get_law(name: str) -> ContactLaw:
-    """The law registered under ``name``; ValueError listing the known names otherwise."""
+def get_law(name: str | Law) -> ContactLaw:
+    """The law registered under ``name`` (a :class:`Law` or its string value); ValueError
+    listing the known names otherwise."""
     try:
-        return _LAWS[name]
+        return _LAWS[name]  # type: ignore[index]
     except (KeyError, TypeError):
-        raise ValueError(
-            f"unknown contact law {name!r}; known laws: {', '.join(_LAWS)}"
-        ) from None
+        raise ValueError(f"unknown contact law {name!r}; known laws: {', '.join(_LAWS)}") from None

@@ -30,6 +30,7 @@ from impactlab._validation import check_array_finite, check_positive
 from impactlab.contact import kernels as k
 from impactlab.contact._common import jg_C, jg_critical
 from impactlab.contact.base import ContactLaw, Parameter
+from impactlab.contact.names import Law
 from impactlab.materials import ContactPair
 
 
@@ -84,11 +85,9 @@ def thornton_restitution(v_ratio: Any) -> Any:
 
 
 class Thornton(ContactLaw):
-    name = "thornton"
-    law_id = k.THORNTON
+    law = Law.THORNTON
     title = "Thornton 1997 elastic-perfectly plastic"
     reference = "Thornton, J. Appl. Mech. 64 (1997) 383-386"
-    doi = "10.1115/1.2787319"
     validity = (
         "elastic-perfectly plastic sphere, Hertzian pressure truncated at p_y, a^2 = R delta "
         "kept after yield (small deformations); hard limit delta = R"
@@ -104,9 +103,7 @@ class Thornton(ContactLaw):
         ),
     )
 
-    def _fill(
-        self, p: np.ndarray, pair: ContactPair, values: dict[str, float]
-    ) -> dict[str, float]:
+    def _fill(self, p: np.ndarray, pair: ContactPair, values: dict[str, float]) -> dict[str, float]:
         E = float(p[k.P_ESTAR])
         R = float(p[k.P_R])
         Sy = float(p[k.P_SY])

@@ -15,9 +15,10 @@ from impactlab.dynamics.batch import (
     STATUS_MESSAGES,
     run_arrays,
 )
-from impactlab.dynamics.engine import DEFAULT_RTOL, HISTORY_FIELDS
+from impactlab.dynamics.core.layout import DEFAULT_RTOL, HISTORY_FIELDS
+from impactlab.dynamics.models import contact_model
 from impactlab.dynamics.results import BatchResult, DentMap, History, ImpactResult
-from impactlab.dynamics.simulate import contact_model, simulate, simulate_batch
+from impactlab.dynamics.simulate import simulate, simulate_batch
 
 __all__ = [
     "DEFAULT_RTOL",

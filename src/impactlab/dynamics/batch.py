@@ -13,8 +13,10 @@ import numpy as np
 
 from impactlab.bodies import NB
 from impactlab.contact.kernels import N_LAWS, NPARAM
-from impactlab.dynamics import engine as _e
-from impactlab.dynamics.engine import OUTPUT_FIELDS, REGIME_NAMES, STATUS_MESSAGES
+from impactlab.dynamics.checks import check_rtol, gravity_value
+from impactlab.dynamics.core.batch import impact_batch
+from impactlab.dynamics.core.layout import N_OUT, OUTPUT_FIELDS
+from impactlab.dynamics.core.status import REGIME_NAMES, STATUS_MESSAGES
 from impactlab.friction import FRICTION_IDS
 
 __all__ = ["FRICTION_IDS", "OUTPUT_FIELDS", "REGIME_NAMES", "STATUS_MESSAGES", "run_arrays"]
@@ -26,17 +28,24 @@ def _rows(name: str, a: Any, width: int, n: int) -> np.ndarray:
         arr = arr[None, :]
     if arr.ndim != 2 or arr.shape[1] != width or arr.shape[0] not in (1, n):
         raise ValueError(
-            f"{name} must have shape ({width},), (1, {width}) or ({n}, {width}); got "
-            f"{np.shape(a)}"
+            f"{name} must have shape ({width},), (1, {width}) or ({n}, {width}); got {np.shape(a)}"
         )
     return np.require(arr, np.float64, ["C", "W"])
 
 
-def _run(law_id: int, friction_id: int, law_params: Any, body_params: Any, initial: Any,
-         mu: Any, *, gravity: bool | float, constant_angle: bool, rtol: float | None,
-         diagnostics: bool) -> tuple[np.ndarray, np.ndarray]:
-    from impactlab.dynamics.simulate import _check_rtol, gravity_value
-
+def _run(
+    law_id: int,
+    friction_id: int,
+    law_params: Any,
+    body_params: Any,
+    initial: Any,
+    mu: Any,
+    *,
+    gravity: bool | float,
+    constant_angle: bool,
+    rtol: float | None,
+    diagnostics: bool,
+) -> tuple[np.ndarray, np.ndarray]:
     try:
         lid = int(law_id)
     except (TypeError, ValueError):
@@ -53,8 +62,9 @@ def _run(law_id: int, friction_id: int, law_params: Any, body_params: Any, initi
     if init.ndim == 1 and init.shape[0] == 4:
         init = init[None, :]
     if init.ndim != 2 or init.shape[1] != 4:
-        raise ValueError(f"initial must have shape (N, 4) = [angle, vx, vy, spin], got "
-                         f"{np.shape(initial)}")
+        raise ValueError(
+            f"initial must have shape (N, 4) = [angle, vx, vy, spin], got {np.shape(initial)}"
+        )
     init = np.require(init, np.float64, ["C", "W"])
     n = init.shape[0]
     mu_a = np.asarray(mu, dtype=np.float64)
@@ -66,12 +76,13 @@ def _run(law_id: int, friction_id: int, law_params: Any, body_params: Any, initi
     lp = _rows("law_params", law_params, NPARAM, n)
     bp = _rows("body_params", body_params, NB, n)
     g = gravity_value(gravity)
-    r = _check_rtol(rtol)
-    out = np.empty((n, _e.N_OUT))
+    r = check_rtol(rtol)
+    out = np.empty((n, N_OUT))
     status = np.empty(n, dtype=np.int32)
     if n:
-        _e.impact_batch(lid, lp, fid, bp, init, mu_a, g, bool(constant_angle), r,
-                        bool(diagnostics), out, status)
+        impact_batch(
+            lid, lp, fid, bp, init, mu_a, g, bool(constant_angle), r, bool(diagnostics), out, status
+        )
     return out, status
 
 
@@ -99,5 +110,15 @@ def run_arrays(
     Returns ``(out, status)``: out (N, len(OUTPUT_FIELDS)) float64, status (N,) int32
     (0 = ok; ``STATUS_MESSAGES``). The ``regime`` column holds codes (``REGIME_NAMES``).
     """
-    return _run(law_id, friction_id, law_params, body_params, initial, mu, gravity=gravity,
-                constant_angle=constant_angle, rtol=rtol, diagnostics=False)
+    return _run(
+        law_id,
+        friction_id,
+        law_params,
+        body_params,
+        initial,
+        mu,
+        gravity=gravity,
+        constant_angle=constant_angle,
+        rtol=rtol,
+        diagnostics=False,
+    )

@@ -18,16 +18,30 @@ and the groove the moving tip ploughs through its own earlier imprint are neglec
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 
 from impactlab.contact.kernels import P_R
-from impactlab.dynamics.engine import residual_caps
-from impactlab.dynamics.results import DentMap, History
+from impactlab.dynamics.core.batch import residual_caps
 
 
-def residual_cap_geometry(law_id: int, law_params: np.ndarray, delta: np.ndarray,
-                          ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+class DentSurface(NamedTuple):
+    """Grid and height of a dent (fields of ``DentMap``), SI units."""
+
+    x: np.ndarray
+    y: np.ndarray
+    height: np.ndarray
+    max_depth: float
+    length: float
+    width: float
+
+
+def residual_cap_geometry(
+    law_id: int,
+    law_params: np.ndarray,
+    delta: np.ndarray,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """(delta_r, R_d, a_d) [m] of the residual caps after loading to each ``delta`` [m]."""
     d = np.ascontiguousarray(np.asarray(delta, dtype=np.float64))
     dr, rr = residual_caps(int(law_id), np.array(law_params, dtype=np.float64), d)
@@ -39,25 +53,35 @@ def residual_cap_geometry(law_id: int, law_params: np.ndarray, delta: np.ndarray
     return dr, rd, ad
 
 
-def dent_map(law_id: int, law_params: np.ndarray, history: History, *, nx: int = 241,
-             ny: int = 121, margin: float = 0.15) -> DentMap:
-    """The dent height map from an impact history (see the module docstring)."""
+def dent_map(
+    law_id: int,
+    law_params: np.ndarray,
+    penetration: np.ndarray,
+    contact_x: np.ndarray,
+    *,
+    nx: int = 241,
+    ny: int = 121,
+    margin: float = 0.15,
+) -> DentSurface:
+    """The dent height map from an impact's history columns ``penetration`` [m] and
+    ``contact_x`` [m] (see the module docstring); ``DentMap`` (``impactlab.dynamics.results``)
+    wraps it."""
     if nx < 3 or ny < 3:
         raise ValueError(f"nx and ny must be >= 3, got nx={nx!r}, ny={ny!r}")
     if not (math.isfinite(margin) and margin >= 0.0):
         raise ValueError(f"margin must be finite and >= 0, got {margin!r}")
-    delta = np.asarray(history.penetration)
-    xc = np.asarray(history.contact_x)
+    delta = np.asarray(penetration)
+    xc = np.asarray(contact_x)
     dr, rd, ad = residual_cap_geometry(law_id, law_params, delta)
     keep = (dr > 0.0) & (ad > 0.0)
     if not np.any(keep):
         # no permanent deformation (elastic law): a flat map around the contact path
-        span = max(float(np.ptp(xc)), float(np.sqrt(law_params[P_R] * max(delta.max(), 0.0))),
-                   1e-9)
+        span = max(float(np.ptp(xc)), float(np.sqrt(law_params[P_R] * max(delta.max(), 0.0))), 1e-9)
         x = np.linspace(xc.min() - span, xc.max() + span, nx)
         y = np.linspace(-span, span, ny)
-        return DentMap(x=x, y=y, height=np.zeros((ny, nx)), max_depth=0.0, length=0.0,
-                       width=0.0)
+        return DentSurface(
+            x=x, y=y, height=np.zeros((ny, nx)), max_depth=0.0, length=0.0, width=0.0
+        )
     dr, rd, ad, xk = dr[keep], rd[keep], ad[keep], xc[keep]
     x_lo = float(np.min(xk - ad))
     x_hi = float(np.max(xk + ad))
@@ -76,5 +100,6 @@ def dent_map(law_id: int, law_params: np.ndarray, history: History, *, nx: int =
         cap = -dr[i] + (dx * dx + y2) / (2.0 * rd[i])
         np.minimum(height[:, lo:hi], cap, out=height[:, lo:hi])
     np.minimum(height, 0.0, out=height)
-    return DentMap(x=x, y=y, height=height, max_depth=float(dr.max()),
-                   length=x_hi - x_lo, width=2.0 * a_max)
+    return DentSurface(
+        x=x, y=y, height=height, max_depth=float(dr.max()), length=x_hi - x_lo, width=2.0 * a_max
+    )

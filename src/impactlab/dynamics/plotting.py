@@ -1,5 +1,6 @@
 """Figures of one impact: force-time, force-penetration (loading and unloading branches) and the
-contact-point path with the predicted dent. Matplotlib only; nothing here changes a result.
+contact-point path with the predicted dent. Matplotlib only (through ``impactlab._mpl``, the
+package's backend policy); nothing here changes a result.
 """
 
 from __future__ import annotations
@@ -9,6 +10,7 @@ from typing import Any
 
 import numpy as np
 
+from impactlab._mpl import pyplot
 from impactlab.dynamics.results import History, ImpactResult
 
 
@@ -21,9 +23,7 @@ def _history(result: ImpactResult) -> History:
 def _axes(ax: Any) -> tuple[Any, Any]:
     if ax is not None:
         return ax.figure, ax
-    import matplotlib.pyplot as plt
-
-    fig, ax = plt.subplots(figsize=(6.0, 4.0), layout="constrained")
+    fig, ax = pyplot().subplots(figsize=(6.0, 4.0), layout="constrained")
     return fig, ax
 
 
@@ -54,8 +54,13 @@ def plot_force_penetration(result: ImpactResult, ax: Any = None) -> Any:
     load = h.phase == 0.0
     ax.plot(d[load], h.normal_force[load], "-", label="loading curve")
     ax.plot(d[~load], h.normal_force[~load], "-", label="unloading / reloading (Hertzian)")
-    ax.axvline(result.delta_p * 1e6, color="0.6", lw=0.8, ls=":",
-               label=f"residual depth {result.delta_p * 1e6:.3g} um")
+    ax.axvline(
+        result.delta_p * 1e6,
+        color="0.6",
+        lw=0.8,
+        ls=":",
+        label=f"residual depth {result.delta_p * 1e6:.3g} um",
+    )
     ax.set_xlabel("penetration $\\delta$ [um]")
     ax.set_ylabel("normal force $F_n$ [N]")
     ax.set_title(_title(result))
@@ -71,8 +76,13 @@ def plot_contact_path(result: ImpactResult, ax: Any = None, *, dent: bool = True
     ax.plot(h.contact_x * 1e6, -h.penetration * 1e6, "-", label="tip bottom (contact point)")
     stick = h.stick > 0.5
     if np.any(stick):
-        ax.plot(h.contact_x[stick] * 1e6, -h.penetration[stick] * 1e6, ".", ms=3,
-                label="stick / no gross slip")
+        ax.plot(
+            h.contact_x[stick] * 1e6,
+            -h.penetration[stick] * 1e6,
+            ".",
+            ms=3,
+            label="stick / no gross slip",
+        )
     if dent:
         dm = result.dent(ny=41)
         x, z = dm.profile()
@@ -80,8 +90,10 @@ def plot_contact_path(result: ImpactResult, ax: Any = None, *, dent: bool = True
     ax.axhline(0.0, color="0.5", lw=0.6)
     ax.set_xlabel("x along the flat [um]")
     ax.set_ylabel("height [um]")
-    ax.set_title(f"sliding length {result.sliding_length * 1e6:.3g} um, "
-                 f"contact travel {result.contact_travel * 1e6:.3g} um")
+    ax.set_title(
+        f"sliding length {result.sliding_length * 1e6:.3g} um, "
+        f"contact travel {result.contact_travel * 1e6:.3g} um"
+    )
     ax.legend(fontsize="small")
     return fig
 
@@ -99,17 +111,24 @@ def plot_dent(result: ImpactResult, ax: Any = None) -> Any:
     return fig
 
 
-def save_figures(result: ImpactResult, out_dir: str | Path, *, stem: str = "impact",
-                 formats: tuple[str, ...] = ("png", "pdf")) -> list[Path]:
+def save_figures(
+    result: ImpactResult,
+    out_dir: str | Path,
+    *,
+    stem: str = "impact",
+    formats: tuple[str, ...] = ("png", "pdf"),
+) -> list[Path]:
     """Save the force-time, force-penetration, contact-path and dent figures; returns paths."""
-    import matplotlib.pyplot as plt
-
+    plt = pyplot()
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     paths = []
-    for name, fn in (("force_time", plot_force_time),
-                     ("force_penetration", plot_force_penetration),
-                     ("contact_path", plot_contact_path), ("dent", plot_dent)):
+    for name, fn in (
+        ("force_time", plot_force_time),
+        ("force_penetration", plot_force_penetration),
+        ("contact_path", plot_contact_path),
+        ("dent", plot_dent),
+    ):
         fig = fn(result)
         for ext in formats:
             p = out / f"{stem}_{name}.{ext}"

@@ -11,61 +11,56 @@ from typing import Any
 
 import numpy as np
 
-from impactlab.dynamics.engine import HISTORY_FIELDS, OUTPUT_FIELDS, STATUS_MESSAGES
+from impactlab import schema
+from impactlab._display import html_table
+from impactlab.dynamics.core.layout import HISTORY_FIELDS, OUTPUT_FIELDS
+from impactlab.dynamics.core.status import STATUS_MESSAGES
+from impactlab.dynamics.dent import dent_map
+from impactlab.references import Reference
+from impactlab.references import dois as doi_list
 
-#: Units of the ImpactResult scalar fields.
+
+def readonly_copy(a: Any) -> np.ndarray:
+    """A float64 copy of ``a`` that cannot be written to."""
+    out = np.array(a, dtype=np.float64, copy=True)
+    out.setflags(write=False)
+    return out
+
+
+#: Units of the ImpactResult scalar fields (from ``impactlab.schema``).
 UNITS: dict[str, str] = {
-    "e": "-",
-    "e_energy": "-",
-    "velocity_out": "m/s",
-    "spin_out": "rad/s",
-    "delta_max": "m",
-    "delta_p": "m",
-    "sliding_length": "m",
-    "contact_travel": "m",
-    "duration": "s",
-    "mean_force": "N",
-    "max_force": "N",
-    "normal_impulse": "N s",
-    "tangential_impulse": "N s",
-    "energy_dissipated": "J",
-    "stick_time": "s",
-    "vn_in": "m/s",
-    "vt_in": "m/s",
-    "vn_out": "m/s",
-    "vt_out": "m/s",
-    "angle_out": "rad",
-    "t_max": "s",
-    "angle": "rad",
-    "velocity_in": "m/s",
-    "spin_in": "rad/s",
-    "mu": "-",
+    name: schema.unit(name)
+    for name in (
+        "e",
+        "e_energy",
+        "velocity_out",
+        "spin_out",
+        "delta_max",
+        "delta_p",
+        "sliding_length",
+        "contact_travel",
+        "duration",
+        "mean_force",
+        "max_force",
+        "normal_impulse",
+        "tangential_impulse",
+        "energy_dissipated",
+        "stick_time",
+        "vn_in",
+        "vt_in",
+        "vn_out",
+        "vt_out",
+        "angle_out",
+        "t_max",
+        "angle",
+        "velocity_in",
+        "spin_in",
+        "mu",
+    )
 }
 
-HISTORY_UNITS: dict[str, str] = {
-    "t": "s",
-    "penetration": "m",
-    "normal_force": "N",
-    "tangential_force": "N",
-    "contact_x": "m",
-    "slip_velocity": "m/s",
-    "x": "m",
-    "y": "m",
-    "phi": "rad",
-    "vx": "m/s",
-    "vy": "m/s",
-    "omega": "rad/s",
-    "normal_velocity": "m/s",
-    "phase": "-",
-    "stick": "-",
-    "energy": "J",
-}
-
-
-def _readonly(a: np.ndarray) -> np.ndarray:
-    a = np.array(a, dtype=np.float64, copy=True)
-    a.setflags(write=False)
-    return a
+#: Units of the history columns (from ``impactlab.schema``).
+HISTORY_UNITS: dict[str, str] = {f.name: f.unit for f in schema.HISTORY_FIELDS}
 
 
 @dataclass(frozen=True, eq=False)
@@ -80,7 +75,7 @@ class History:
     data: np.ndarray = field(repr=False)
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "data", _readonly(self.data))
+        object.__setattr__(self, "data", readonly_copy(self.data))
 
     def __len__(self) -> int:
         return int(self.data.shape[0])
@@ -102,7 +97,7 @@ class History:
 
     def to_dataframe(self) -> Any:
         """A pandas DataFrame (one column per field, SI units)."""
-        import pandas as pd
+        import pandas as pd  # heavy, needed only here
 
         return pd.DataFrame(np.array(self.data), columns=list(HISTORY_FIELDS))
 
@@ -130,7 +125,7 @@ class DentMap:
 
     def __post_init__(self) -> None:
         for name in ("x", "y", "height"):
-            object.__setattr__(self, name, _readonly(getattr(self, name)))
+            object.__setattr__(self, name, readonly_copy(getattr(self, name)))
 
     def profile(self) -> tuple[np.ndarray, np.ndarray]:
         """(x, height) along the centre line y = 0."""
@@ -138,8 +133,10 @@ class DentMap:
         return self.x, self.height[j]
 
     def __repr__(self) -> str:
-        return (f"DentMap(max_depth={self.max_depth:.4g} m, length={self.length:.4g} m, "
-                f"width={self.width:.4g} m, grid={self.height.shape[1]}x{self.height.shape[0]})")
+        return (
+            f"DentMap(max_depth={self.max_depth:.4g} m, length={self.length:.4g} m, "
+            f"width={self.width:.4g} m, grid={self.height.shape[1]}x{self.height.shape[0]})"
+        )
 
 
 _SUMMARY = (
@@ -163,6 +160,9 @@ _SUMMARY = (
 @dataclass(frozen=True, eq=False)
 class ImpactResult:
     """The outcome of one impact (SI units). Computed once; immutable.
+
+    Units and meanings of the fields: ``impactlab.schema`` (``UNITS``). ``references`` are the
+    sources the computation used; ``dois()`` their DOIs.
 
     Sign conventions: x points from the tip towards the centre-of-mass side, y up, spin
     counter-clockwise positive. ``sliding_length`` is the integral of the slip velocity of the
@@ -200,6 +200,7 @@ class ImpactResult:
     t_max: float
     n_steps: int
     history: History | None = field(default=None, repr=False)
+    references: tuple[Reference, ...] = field(default=(), repr=False)
     _law_id: int = field(default=-1, repr=False)
     _law_params: np.ndarray | None = field(default=None, repr=False)
 
@@ -207,7 +208,7 @@ class ImpactResult:
         """Scalar fields as a plain dict (history as lists of columns if asked)."""
         d: dict[str, Any] = {}
         for name in self.__dataclass_fields__:
-            if name.startswith("_") or name == "history":
+            if name.startswith("_") or name in ("history", "references"):
                 continue
             v = getattr(self, name)
             d[name] = list(v) if isinstance(v, tuple) else v
@@ -215,9 +216,17 @@ class ImpactResult:
             d["history"] = {k: self.history[k].tolist() for k in HISTORY_FIELDS}
         return d
 
+    def dois(self) -> tuple[str, ...]:
+        """DOIs of the sources this result used (contact law, friction model if mu > 0, the
+        integrator), in order, without repeats."""
+        return doi_list(self.references)
+
     def _rows(self) -> list[tuple[str, str, str]]:
-        rows = [("law", self.law, ""), ("friction", f"{self.friction} (mu = {self.mu:g})", ""),
-                ("regime", self.regime, "")]
+        rows = [
+            ("law", self.law, ""),
+            ("friction", f"{self.friction} (mu = {self.mu:g})", ""),
+            ("regime", self.regime, ""),
+        ]
         for key, label, unit, f in _SUMMARY:
             v = getattr(self, key) * f
             rows.append((label, f"{v:.5g}", unit))
@@ -232,8 +241,6 @@ class ImpactResult:
         return "\n".join(lines)
 
     def _repr_html_(self) -> str:
-        from impactlab._display import html_table
-
         return html_table("ImpactResult", self._rows())
 
     def dent(self, *, nx: int = 241, ny: int = 121, margin: float = 0.15) -> DentMap:
@@ -241,12 +248,13 @@ class ImpactResult:
 
         nx, ny : grid points along and across the impact plane; margin : relative padding.
         """
-        from impactlab.dynamics.dent import dent_map
-
         if self.history is None or self._law_params is None:
             raise ValueError("dent() needs the history: run simulate(..., history=True)")
-        return dent_map(self._law_id, self._law_params, self.history, nx=nx, ny=ny,
-                        margin=margin)
+        h = self.history
+        surface = dent_map(
+            self._law_id, self._law_params, h.penetration, h.contact_x, nx=nx, ny=ny, margin=margin
+        )
+        return DentMap(*surface)
 
 
 @dataclass(frozen=True, eq=False)
@@ -254,7 +262,8 @@ class BatchResult:
     """Results of ``simulate_batch``: ``out`` (N, len(OUTPUT_FIELDS)) and ``status`` (N,).
 
     Fields are available by name (``batch["e"]`` or ``batch.e``); cases with a non-zero status
-    hold NaN results (see ``messages``).
+    hold NaN results (see ``messages``). ``references`` are the sources the batch used (contact
+    law, friction model if any mu > 0, the integrator); ``dois()`` their DOIs.
     """
 
     out: np.ndarray = field(repr=False)
@@ -262,13 +271,14 @@ class BatchResult:
     inputs: dict[str, np.ndarray] = field(repr=False)
     law: str
     friction: str
+    references: tuple[Reference, ...] = field(default=(), repr=False)
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "out", _readonly(self.out))
+        object.__setattr__(self, "out", readonly_copy(self.out))
         st = np.array(self.status, dtype=np.int32, copy=True)
         st.setflags(write=False)
         object.__setattr__(self, "status", st)
-        object.__setattr__(self, "inputs", {k: _readonly(v) for k, v in self.inputs.items()})
+        object.__setattr__(self, "inputs", {k: readonly_copy(v) for k, v in self.inputs.items()})
 
     def __len__(self) -> int:
         return int(self.status.shape[0])
@@ -282,12 +292,23 @@ class BatchResult:
             raise KeyError(f"unknown field {name!r}; known: {', '.join(OUTPUT_FIELDS)}") from None
 
     def __getattr__(self, name: str) -> np.ndarray:
-        if name.startswith("_") or name in ("out", "status", "inputs", "law", "friction"):
+        if name.startswith("_") or name in (
+            "out",
+            "status",
+            "inputs",
+            "law",
+            "friction",
+            "references",
+        ):
             raise AttributeError(name)
         try:
             return self[name]
         except KeyError:
             raise AttributeError(name) from None
+
+    def dois(self) -> tuple[str, ...]:
+        """DOIs of ``references``, in order, without repeats."""
+        return doi_list(self.references)
 
     @property
     def ok(self) -> np.ndarray:
@@ -301,7 +322,7 @@ class BatchResult:
 
     def to_dataframe(self) -> Any:
         """A pandas DataFrame: inputs, outputs and status per case."""
-        import pandas as pd
+        import pandas as pd  # heavy, needed only here
 
         df = pd.DataFrame({k: np.array(v) for k, v in self.inputs.items()})
         for j, name in enumerate(OUTPUT_FIELDS):
@@ -311,5 +332,7 @@ class BatchResult:
 
     def __repr__(self) -> str:
         n_ok = int(np.count_nonzero(self.ok))
-        return (f"BatchResult({len(self)} cases, {n_ok} ok, law={self.law!r}, "
-                f"friction={self.friction!r})")
+        return (
+            f"BatchResult({len(self)} cases, {n_ok} ok, law={self.law!r}, "
+            f"friction={self.friction!r})"
+        )

@@ -3,7 +3,7 @@
 The pipeline of the paper's Secs. 4-5 (doi:10.1007/s00419-015-1108-2): three markers on the rod
 tracked at 500 fps give the rod's velocities before and after the impact (e, mu by Eq. 28, the
 impact angle, v_i); an optical profilometer scan of the dent gives delta_p (maximum depth) and
-L_s (maximum length minus the width at the deepest point); the analytic inversion
+the sliding length L_s (maximum length minus the width at the deepest point); the analytic inversion
 (``impactlab.analytic.invert``) turns them into the impact duration T and the mean force F.
 
 Public API::
@@ -14,7 +14,8 @@ Public API::
     read_scan(path, pixel_size=..., height_unit=...) -> HeightMap
     measure_dent(height_map) -> DentMetrics
     plot_dent, plot_kinematics (impactlab.experiment.plots)
-    synthetic test data: impactlab.experiment.synthetic
+
+Synthetic drops and dents with a known truth (for tests and examples): ``impactlab.testing``.
 
 See docs/experiment.md for file formats, fits, uncertainties and a worked example.
 """

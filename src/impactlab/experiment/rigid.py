@@ -51,8 +51,9 @@ def kabsch(reference: np.ndarray, points: np.ndarray) -> tuple[np.ndarray, np.nd
     return R, t, float(np.sqrt(np.mean(np.sum(res * res, axis=1))))
 
 
-def _kabsch_batch(reference: np.ndarray, points: np.ndarray) -> tuple[np.ndarray, np.ndarray,
-                                                                      np.ndarray]:
+def _kabsch_batch(
+    reference: np.ndarray, points: np.ndarray
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Vectorised Kabsch for (n, k, 3) point sets against one (k, 3) reference."""
     ca = reference.mean(axis=0)
     cb = points.mean(axis=1)  # (n, 3)
@@ -80,8 +81,10 @@ def _check_not_collinear(reference: np.ndarray, what: str) -> None:
     c = reference - reference.mean(axis=0)
     s = np.linalg.svd(c, compute_uv=False)
     if s[0] == 0.0 or s[1] < 1e-3 * s[0]:
-        raise MarkerError(f"{what}: the markers lie (almost) on one line, so the rod's rotation "
-                          "about that line is undefined; three non-collinear markers are needed")
+        raise MarkerError(
+            f"{what}: the markers lie (almost) on one line, so the rod's rotation "
+            "about that line is undefined; three non-collinear markers are needed"
+        )
 
 
 @dataclass(frozen=True)
@@ -142,15 +145,18 @@ def fit_poses(tracks: MarkerTracks, reference: np.ndarray) -> Poses:
     return Poses(tracks.time, R, t, rms, ok, ref)
 
 
-def reference_cluster(tracks: MarkerTracks, *, iterations: int = 3, max_frames: int = 400
-                      ) -> np.ndarray:
+def reference_cluster(
+    tracks: MarkerTracks, *, iterations: int = 3, max_frames: int = 400
+) -> np.ndarray:
     """The marker cluster's shape (m, 3) [m], centred on its centroid, as the Procrustes mean of
     the frames in which every marker is seen (generalised Procrustes analysis, a few passes)."""
     full = np.flatnonzero(np.all(tracks.valid, axis=1))
     if full.size == 0:
-        raise MarkerError(f"{tracks.source or 'marker tracks'}: no frame shows all "
-                          f"{tracks.n_markers} markers, so the marker cluster cannot be "
-                          "measured; give the marker geometry")
+        raise MarkerError(
+            f"{tracks.source or 'marker tracks'}: no frame shows all "
+            f"{tracks.n_markers} markers, so the marker cluster cannot be "
+            "measured; give the marker geometry"
+        )
     if full.size > max_frames:
         full = full[np.linspace(0, full.size - 1, max_frames).astype(int)]
     pts = tracks.positions[full]
@@ -179,13 +185,15 @@ class RigidityReport:
             "tolerance_m": self.tolerance,
             "worst_pair": list(self.worst) if self.worst else None,
             "worst_drift_m": self.worst_drift,
-            "pairs": {f"{a}-{b}": {"median_m": m, "drift_m": d}
-                      for (a, b), (m, d) in self.pairs.items()},
+            "pairs": {
+                f"{a}-{b}": {"median_m": m, "drift_m": d} for (a, b), (m, d) in self.pairs.items()
+            },
         }
 
 
-def check_rigidity(tracks: MarkerTracks, *, tolerance: float = 1.0e-3, window: int = 15,
-                   raise_error: bool = True) -> RigidityReport:
+def check_rigidity(
+    tracks: MarkerTracks, *, tolerance: float = 1.0e-3, window: int = 15, raise_error: bool = True
+) -> RigidityReport:
     """Check that the markers move as one rigid body.
 
     For every marker pair the distance is followed over the frames where both are seen; its running
@@ -224,7 +232,8 @@ def check_rigidity(tracks: MarkerTracks, *, tolerance: float = 1.0e-3, window: i
         raise RigidityError(
             f"{tracks.source or 'marker tracks'}: markers {worst[0]} and {worst[1]} are not "
             f"rigidly attached: their distance drifts by {worst_drift * 1e3:.2f} mm over the "
-            f"record (tolerance {tolerance * 1e3:.2f} mm)")
+            f"record (tolerance {tolerance * 1e3:.2f} mm)"
+        )
     return report
 
 

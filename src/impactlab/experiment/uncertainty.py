@@ -52,9 +52,7 @@ class Estimate:
         return format(self, "")
 
 
-def jacobian(
-    f: Callable[[np.ndarray], np.ndarray], x: np.ndarray, steps: np.ndarray
-) -> np.ndarray:
+def jacobian(f: Callable[[np.ndarray], np.ndarray], x: np.ndarray, steps: np.ndarray) -> np.ndarray:
     """Central-difference Jacobian of the vector function ``f`` at ``x`` (steps per input)."""
     x = np.asarray(x, dtype=np.float64)
     y0 = np.asarray(f(x), dtype=np.float64)

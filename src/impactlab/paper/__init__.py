@@ -1,13 +1,11 @@
 """The seed paper (doi:10.1007/s00419-015-1108-2): its data and the one-command reproduction.
 
 ``impactlab.paper.data`` holds Table 1, the experiments, the published rows and the recorded
-inconsistencies; :func:`reproduce` regenerates the comparison tables, figures and the report
-(it imports the impact engine lazily, so the data are usable without it).
+inconsistencies (in the paper's signs: dent depth and sliding length negative);
+:func:`reproduce` regenerates the comparison tables, figures and the report.
 """
 
 from __future__ import annotations
-
-from typing import TYPE_CHECKING, Any
 
 from impactlab.paper.data import (
     CASES,
@@ -24,11 +22,7 @@ from impactlab.paper.data import (
     PublishedRow,
     get_case,
 )
-
-if TYPE_CHECKING:
-    from pathlib import Path
-
-    from impactlab.paper.reproduction import ReproductionResult
+from impactlab.paper.reproduction import ReproductionResult, reproduce
 
 __all__ = [
     "CASES",
@@ -47,19 +41,3 @@ __all__ = [
     "get_case",
     "reproduce",
 ]
-
-
-def reproduce(out_dir: str | Path = "reproduction", **kwargs: Any) -> ReproductionResult:
-    """Regenerate the paper's tables, figures and the report into ``out_dir``; see
-    :func:`impactlab.paper.reproduction.reproduce`."""
-    from impactlab.paper.reproduction import reproduce as _reproduce
-
-    return _reproduce(out_dir, **kwargs)
-
-
-def __getattr__(name: str) -> Any:
-    if name == "ReproductionResult":
-        from impactlab.paper.reproduction import ReproductionResult
-
-        return ReproductionResult
-    raise AttributeError(f"module 'impactlab.paper' has no attribute {name!r}")

@@ -17,7 +17,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
 
-from impactlab.analytic import RodProperties
+from impactlab.bodies import PAPER_ROD as PAPER_ROD  # Table 1's rod, I_C = m L^2 / 12
 from impactlab.materials import AISI_201, AISI_1010, Material
 
 DOI = "10.1007/s00419-015-1108-2"
@@ -51,35 +51,60 @@ class Table1Entry:
 
 
 TABLE1: tuple[Table1Entry, ...] = (
-    Table1Entry("rod", "R", "0.0088 (m)", 0.0088, "m",
-                "radius of curvature of the tip, not the rod's radius (see m)"),
+    Table1Entry(
+        "rod",
+        "R",
+        "0.0088 (m)",
+        0.0088,
+        "m",
+        "radius of curvature of the tip, not the rod's radius (see m)",
+    ),
     Table1Entry("rod", "L", "0.3048 (m)", 0.3048, "m"),
-    Table1Entry("rod", "m", "0.4607 (kg)", 0.4607, "kg",
-                "a solid 17.6 mm rod of 0.3048 m would weigh 0.578 kg; 0.4607 kg fits a 5/8 in "
-                "(15.9 mm) rod with rounded ends (0.462 kg), so R is the tip's curvature radius"),
+    Table1Entry(
+        "rod",
+        "m",
+        "0.4607 (kg)",
+        0.4607,
+        "kg",
+        "a solid 17.6 mm rod of 0.3048 m would weigh 0.578 kg; 0.4607 kg fits a 5/8 in "
+        "(15.9 mm) rod with rounded ends (0.462 kg), so R is the tip's curvature radius",
+    ),
     Table1Entry("rod", "rho", "7800 (kg/m^3)", 7800.0, "kg/m^3"),
     Table1Entry("rod", "E_r", "200 (GPa)", 200e9, "Pa"),
-    Table1Entry("rod", "S_yr", "760 (GPa)", 760e6, "Pa",
-                "760 MPa: a 760 GPa yield strength would exceed E (units typo)"),
-    Table1Entry("rod", "H_r", "327 (kgf/m^2)", 327.0, "kgf/mm^2",
-                "Brinell number HB 327 in kgf/mm^2 (printed kgf/m^2, off by 1e6)"),
+    Table1Entry(
+        "rod",
+        "S_yr",
+        "760 (GPa)",
+        760e6,
+        "Pa",
+        "760 MPa: a 760 GPa yield strength would exceed E (units typo)",
+    ),
+    Table1Entry(
+        "rod",
+        "H_r",
+        "327 (kgf/m^2)",
+        327.0,
+        "kgf/mm^2",
+        "Brinell number HB 327 in kgf/mm^2 (printed kgf/m^2, off by 1e6)",
+    ),
     Table1Entry("rod", "nu_r", "0.3", 0.3, "-"),
     Table1Entry("flat", "rho", "7870 (kg/m^3)", 7870.0, "kg/m^3"),
     Table1Entry("flat", "E_f", "200 (GPa)", 200e9, "Pa"),
-    Table1Entry("flat", "S_yf", "305 (MPa)", 305e6, "Pa",
-                "printed with a stray superscript 5"),
-    Table1Entry("flat", "H_f", "105 (kgf/m^2)", 105.0, "kgf/mm^2",
-                "Brinell number HB 105 in kgf/mm^2 (printed kgf/m^2)"),
+    Table1Entry("flat", "S_yf", "305 (MPa)", 305e6, "Pa", "printed with a stray superscript 5"),
+    Table1Entry(
+        "flat",
+        "H_f",
+        "105 (kgf/m^2)",
+        105.0,
+        "kgf/mm^2",
+        "Brinell number HB 105 in kgf/mm^2 (printed kgf/m^2)",
+    ),
     Table1Entry("flat", "nu_f", "0.3", 0.3, "-"),
 )
 
 #: The rod's material (AISI 201) and the flat's (AISI 1010), Table 1 with corrections.
 ROD_MATERIAL: Material = AISI_201
 FLAT_MATERIAL: Material = AISI_1010
-
-#: The paper's rod for the closed forms: m, L, R of Table 1; I_C is not in the paper, the
-#: slender-rod m L^2 / 12 is assumed (its influence on T is in the reproduction report).
-PAPER_ROD = RodProperties(mass=0.4607, length=0.3048, tip_radius=0.0088, inertia=None)
 
 
 # --------------------------------------------------------------------------------------------
@@ -113,11 +138,13 @@ class Experiment:
         return self.v_rebound / abs(self.v_i)
 
 
-EXPERIMENTS: Mapping[int, Experiment] = MappingProxyType({
-    20: Experiment("paper-20", 20.0, -1.41, 0.71, 0.50, 0.20, -22e-6, -1400e-6, "Fig. 6"),
-    45: Experiment("paper-45", 45.0, -2.18, 1.08, 0.49, 0.13, -26e-6, -1650e-6, "Fig. 7"),
-    70: Experiment("paper-70", 70.0, -3.45, 0.19, 0.05, 0.10, -105e-6, -200e-6, "Fig. 8"),
-})
+EXPERIMENTS: Mapping[int, Experiment] = MappingProxyType(
+    {
+        20: Experiment("paper-20", 20.0, -1.41, 0.71, 0.50, 0.20, -22e-6, -1400e-6, "Fig. 6"),
+        45: Experiment("paper-45", 45.0, -2.18, 1.08, 0.49, 0.13, -26e-6, -1650e-6, "Fig. 7"),
+        70: Experiment("paper-70", 70.0, -3.45, 0.19, 0.05, 0.10, -105e-6, -200e-6, "Fig. 8"),
+    }
+)
 
 #: Case names for the command line: ``paper-20``, ``paper-45``, ``paper-70``.
 CASES: Mapping[str, Experiment] = MappingProxyType({x.key: x for x in EXPERIMENTS.values()})
@@ -153,16 +180,43 @@ class PublishedRow:
 
 TABLE_ROWS: tuple[PublishedRow, ...] = (
     # Table 2, 20 deg
-    PublishedRow("Table 2", 20, "experiment", -22e-6, -1400e-6, 0.50, 4.30e-3, 79.0,
-                 "T and F from Eqs. 12 and 29 applied to the measurements"),
+    PublishedRow(
+        "Table 2",
+        20,
+        "experiment",
+        -22e-6,
+        -1400e-6,
+        0.50,
+        4.30e-3,
+        79.0,
+        "T and F from Eqs. 12 and 29 applied to the measurements",
+    ),
     PublishedRow("Table 2", 20, "ghaednia", -67e-6, -74e-6, 0.42, 0.25e-3, 2571.0),
     PublishedRow("Table 2", 20, "brake", -77e-6, -75e-6, 0.46, 0.29e-3, 2153.0),
     PublishedRow("Table 2", 20, "kogut-komvopoulos", -64e-6, -64e-6, 0.43, 0.25e-3, 2568.0),
     # Table 3, 45 deg
-    PublishedRow("Table 3", 45, "experiment", -26e-6, -1650e-6, 0.49, 1.40e-3, 595.0,
-                 "T printed 'l.40' (letter l), read as 1.40 ms"),
-    PublishedRow("Table 3", 45, "ghaednia", -67e-6, -74e-6, 0.41, 0.30e-3, 5041.0,
-                 "delta_p and L_s repeat Table 2's Ghaednia row"),
+    PublishedRow(
+        "Table 3",
+        45,
+        "experiment",
+        -26e-6,
+        -1650e-6,
+        0.49,
+        1.40e-3,
+        595.0,
+        "T printed 'l.40' (letter l), read as 1.40 ms",
+    ),
+    PublishedRow(
+        "Table 3",
+        45,
+        "ghaednia",
+        -67e-6,
+        -74e-6,
+        0.41,
+        0.30e-3,
+        5041.0,
+        "delta_p and L_s repeat Table 2's Ghaednia row",
+    ),
     PublishedRow("Table 3", 45, "brake", -150e-6, -370e-6, 0.41, 0.36e-3, 4178.0),
     PublishedRow("Table 3", 45, "kogut-komvopoulos", -120e-6, -638e-6, 0.43, 0.30e-3, 4805.0),
 )
@@ -171,8 +225,17 @@ TABLE_ROWS: tuple[PublishedRow, ...] = (
 TEXT_ROWS: tuple[PublishedRow, ...] = (
     PublishedRow("Sec. 5.2 text", 20, "ghaednia", -67e-6, -74e-6, 0.42, 0.256e-3, 2153.0),
     PublishedRow("Sec. 5.2 text", 20, "brake", -77e-6, -74e-6, 0.46, 0.256e-3, 2153.0),
-    PublishedRow("Sec. 5.2 text", 20, "kogut-komvopoulos", -64e-6, -64e-6, 0.43, 0.25e-3, 2568.0,
-                 "e printed with a hat"),
+    PublishedRow(
+        "Sec. 5.2 text",
+        20,
+        "kogut-komvopoulos",
+        -64e-6,
+        -64e-6,
+        0.43,
+        0.25e-3,
+        2568.0,
+        "e printed with a hat",
+    ),
 )
 
 
@@ -188,45 +251,94 @@ class Discrepancy:
 
 
 DISCREPANCIES: tuple[Discrepancy, ...] = (
-    Discrepancy("ghaednia-20-F", "Table 2 vs Sec. 5.2", "F [N] (Ghaednia, 20 deg)",
-                MappingProxyType({"Table 2": 2571.0, "Sec. 5.2 text": 2153.0}),
-                "the text's value equals Brake's Table 2 force; kept both"),
-    Discrepancy("ghaednia-20-T", "Table 2 vs Sec. 5.2", "T [ms] (Ghaednia, 20 deg)",
-                MappingProxyType({"Table 2": 0.25, "Sec. 5.2 text": 0.256}),
-                "0.256 rounds to 0.26, not 0.25"),
-    Discrepancy("brake-20-T", "Table 2 vs Sec. 5.2", "T [ms] (Brake, 20 deg)",
-                MappingProxyType({"Table 2": 0.29, "Sec. 5.2 text": 0.256}),
-                "the text repeats the Ghaednia duration for Brake"),
-    Discrepancy("brake-20-Ls", "Table 2 vs Sec. 5.2", "L_s [um] (Brake, 20 deg)",
-                MappingProxyType({"Table 2": -75.0, "Sec. 5.2 text": -74.0})),
-    Discrepancy("ghaednia-45-repeat", "Table 3", "delta_p, L_s [um] (Ghaednia, 45 deg)",
-                MappingProxyType({"Table 3": "-67, -74", "Table 2 (20 deg)": "-67, -74"}),
-                "Table 3's Ghaednia row repeats Table 2's dent; every other 45 deg row differs "
-                "from its 20 deg row, so this is most likely a copy error"),
-    Discrepancy("exp-45-T", "Table 3", "T [ms] (experiment, 45 deg)",
-                MappingProxyType({"Table 3": "l.40"}), "letter l for digit 1: 1.40 ms"),
-    Discrepancy("table-4-missing", "Table 4", "70 deg comparison",
-                MappingProxyType({"Table 4": "caption only"}),
-                "Table 4 has no rows; the 70 deg measurements are only in Sec. 5.1.3 and the "
-                "text of Sec. 5.2 describes results that are not printed"),
-    Discrepancy("exp-signs", "Sec. 5.1.3 vs Tables 2-3", "delta_p, L_s signs",
-                MappingProxyType({"Sec. 5.1.3": "+22, +1400 um", "Table 2": "-22, -1400 um"}),
-                "the text gives magnitudes, the tables signed values (tip below the surface, "
-                "sliding towards -x)"),
-    Discrepancy("exp-20-vi-direction", "Sec. 5.1.3", "v_i direction (20 deg)",
-                MappingProxyType({"printed": "-1.41 i m/s", "elsewhere": "-1.41 j m/s"}),
-                "unit vector typo: the drop is vertical (j)"),
-    Discrepancy("exp-70-e", "Sec. 5.1.3", "e (70 deg)",
-                MappingProxyType({"printed e": 0.05, "v_Of / |v_i|": 0.19 / 3.45}),
-                "0.19/3.45 = 0.055; consistent with the printed 0.05 only within the rounding of "
-                "v_Of (0.185 to 0.195 m/s gives 0.054 to 0.057)"),
-    Discrepancy("table-headers", "Tables 2-3", "column headers",
-                MappingProxyType({"printed": "delta_n; Table 2 has no header over e"}),
-                "delta_n is the permanent depth delta_p of the text"),
-    Discrepancy("alpha-sign", "Sec. 5.3 vs Eq. 13 and Tables", "sign of alpha",
-                MappingProxyType({"Sec. 5.3": "alpha positive", "Eq. 13 (corrected)": "negative"}),
-                "with the tables' negative L_s, Eq. 12 needs L_s = +alpha (delta_p - v_i T) and a "
-                "negative alpha; see docs/paper/errata.md"),
+    Discrepancy(
+        "ghaednia-20-F",
+        "Table 2 vs Sec. 5.2",
+        "F [N] (Ghaednia, 20 deg)",
+        MappingProxyType({"Table 2": 2571.0, "Sec. 5.2 text": 2153.0}),
+        "the text's value equals Brake's Table 2 force; kept both",
+    ),
+    Discrepancy(
+        "ghaednia-20-T",
+        "Table 2 vs Sec. 5.2",
+        "T [ms] (Ghaednia, 20 deg)",
+        MappingProxyType({"Table 2": 0.25, "Sec. 5.2 text": 0.256}),
+        "0.256 rounds to 0.26, not 0.25",
+    ),
+    Discrepancy(
+        "brake-20-T",
+        "Table 2 vs Sec. 5.2",
+        "T [ms] (Brake, 20 deg)",
+        MappingProxyType({"Table 2": 0.29, "Sec. 5.2 text": 0.256}),
+        "the text repeats the Ghaednia duration for Brake",
+    ),
+    Discrepancy(
+        "brake-20-Ls",
+        "Table 2 vs Sec. 5.2",
+        "L_s [um] (Brake, 20 deg)",
+        MappingProxyType({"Table 2": -75.0, "Sec. 5.2 text": -74.0}),
+    ),
+    Discrepancy(
+        "ghaednia-45-repeat",
+        "Table 3",
+        "delta_p, L_s [um] (Ghaednia, 45 deg)",
+        MappingProxyType({"Table 3": "-67, -74", "Table 2 (20 deg)": "-67, -74"}),
+        "Table 3's Ghaednia row repeats Table 2's dent; every other 45 deg row differs "
+        "from its 20 deg row, so this is most likely a copy error",
+    ),
+    Discrepancy(
+        "exp-45-T",
+        "Table 3",
+        "T [ms] (experiment, 45 deg)",
+        MappingProxyType({"Table 3": "l.40"}),
+        "letter l for digit 1: 1.40 ms",
+    ),
+    Discrepancy(
+        "table-4-missing",
+        "Table 4",
+        "70 deg comparison",
+        MappingProxyType({"Table 4": "caption only"}),
+        "Table 4 has no rows; the 70 deg measurements are only in Sec. 5.1.3 and the "
+        "text of Sec. 5.2 describes results that are not printed",
+    ),
+    Discrepancy(
+        "exp-signs",
+        "Sec. 5.1.3 vs Tables 2-3",
+        "delta_p, L_s signs",
+        MappingProxyType({"Sec. 5.1.3": "+22, +1400 um", "Table 2": "-22, -1400 um"}),
+        "the text gives magnitudes, the tables signed values (tip below the surface, "
+        "sliding towards -x)",
+    ),
+    Discrepancy(
+        "exp-20-vi-direction",
+        "Sec. 5.1.3",
+        "v_i direction (20 deg)",
+        MappingProxyType({"printed": "-1.41 i m/s", "elsewhere": "-1.41 j m/s"}),
+        "unit vector typo: the drop is vertical (j)",
+    ),
+    Discrepancy(
+        "exp-70-e",
+        "Sec. 5.1.3",
+        "e (70 deg)",
+        MappingProxyType({"printed e": 0.05, "v_Of / |v_i|": 0.19 / 3.45}),
+        "0.19/3.45 = 0.055; consistent with the printed 0.05 only within the rounding of "
+        "v_Of (0.185 to 0.195 m/s gives 0.054 to 0.057)",
+    ),
+    Discrepancy(
+        "table-headers",
+        "Tables 2-3",
+        "column headers",
+        MappingProxyType({"printed": "delta_n; Table 2 has no header over e"}),
+        "delta_n is the permanent depth delta_p of the text",
+    ),
+    Discrepancy(
+        "alpha-sign",
+        "Sec. 5.3 vs Eq. 13 and Tables",
+        "sign of alpha",
+        MappingProxyType({"Sec. 5.3": "alpha positive", "Eq. 13 (corrected)": "negative"}),
+        "with the tables' negative L_s, Eq. 12 needs L_s = +alpha (delta_p - v_i T) and a "
+        "negative alpha; see docs/paper/errata.md",
+    ),
 )
 
 

@@ -117,31 +117,39 @@ def _html_inline(text: str) -> str:
 
 
 def to_html(blocks: Sequence[Block], title: str) -> str:
-    out = ["<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',
-           f"<title>{html.escape(title)}</title><style>{_CSS}</style></head><body>",
-           f"<h1>{html.escape(title)}</h1>"]
+    out = [
+        "<!DOCTYPE html>",
+        '<html lang="en"><head><meta charset="utf-8">',
+        f"<title>{html.escape(title)}</title><style>{_CSS}</style></head><body>",
+        f"<h1>{html.escape(title)}</h1>",
+    ]
     for b in blocks:
         if isinstance(b, Heading):
             out.append(f"<h{b.level}>{_html_inline(b.text)}</h{b.level}>")
         elif isinstance(b, Para):
             out.append(f"<p>{_html_inline(b.text)}</p>")
         elif isinstance(b, Bullets):
-            out.append("<ul>" + "".join(f"<li>{_html_inline(i)}</li>" for i in b.items)
-                       + "</ul>")
+            out.append("<ul>" + "".join(f"<li>{_html_inline(i)}</li>" for i in b.items) + "</ul>")
         elif isinstance(b, Code):
             out.append(f"<pre>{html.escape(b.text)}</pre>")
         elif isinstance(b, Figure):
-            out.append(f'<figure><img src="{html.escape(b.path)}" alt="{html.escape(b.caption)}">'
-                       f"<figcaption>{_html_inline(b.caption)}</figcaption></figure>")
+            out.append(
+                f'<figure><img src="{html.escape(b.path)}" alt="{html.escape(b.caption)}">'
+                f"<figcaption>{_html_inline(b.caption)}</figcaption></figure>"
+            )
         elif isinstance(b, Table):
             rows = ["<table>"]
             if b.caption:
                 rows.append(f"<caption>{_html_inline(b.caption)}</caption>")
-            rows.append("<tr>" + "".join(f"<th>{html.escape(str(c))}</th>" for c in b.df.columns)
-                        + "</tr>")
+            rows.append(
+                "<tr>" + "".join(f"<th>{html.escape(str(c))}</th>" for c in b.df.columns) + "</tr>"
+            )
             for _, row in b.df.iterrows():
-                rows.append("<tr>" + "".join(f"<td>{html.escape(fmt(v, b.digits))}</td>"
-                                             for v in row) + "</tr>")
+                rows.append(
+                    "<tr>"
+                    + "".join(f"<td>{html.escape(fmt(v, b.digits))}</td>" for v in row)
+                    + "</tr>"
+                )
             rows.append("</table>")
             out.append("\n".join(rows))
     out.append("</body></html>")

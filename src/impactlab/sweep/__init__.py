@@ -14,6 +14,8 @@ Quick start::
 See docs/sweep.md for the study-file format, resume semantics and Dask usage.
 """
 
+from impactlab.sweep.chunks import compute_chunk
+from impactlab.sweep.dimensions import Axis, Layout, Sample
 from impactlab.sweep.distributions import Distribution, LogNormal, Normal, Uniform
 from impactlab.sweep.engine import (
     ENGINE,
@@ -24,25 +26,18 @@ from impactlab.sweep.engine import (
     numba_cache_stats,
 )
 from impactlab.sweep.inputs import INPUTS, OUTPUT_ALIASES, OUTPUTS, InputSpec
+from impactlab.sweep.options import EngineOptions, UncertaintySpec
 from impactlab.sweep.plots import plot_output_map, plot_regime_map, plot_sweep
-from impactlab.sweep.runner import (
-    SweepInterrupted,
-    SweepResult,
-    SweepStats,
-    compute_chunk,
-    run_sweep,
-)
+from impactlab.sweep.runner import SweepInterrupted, SweepResult, SweepStats, run_sweep
 from impactlab.sweep.store import StudyMismatchError, SweepStore, export_netcdf, open_sweep
-from impactlab.sweep.study import (
-    Axis,
-    EngineOptions,
-    Layout,
-    Sample,
-    Study,
-    UncertaintySpec,
-    load_study,
+from impactlab.sweep.study import Study, load_study
+from impactlab.sweep.summary import status_counts, store_info
+from impactlab.sweep.uncertainty import (
+    UncertaintyReport,
+    format_report,
+    uncertainty_report,
+    uncertainty_reports,
 )
-from impactlab.sweep.uncertainty import UncertaintyReport, format_report, uncertainty_report
 
 __all__ = [
     "ENGINE",
@@ -80,5 +75,8 @@ __all__ = [
     "plot_regime_map",
     "plot_sweep",
     "run_sweep",
+    "status_counts",
+    "store_info",
     "uncertainty_report",
+    "uncertainty_reports",
 ]

@@ -163,8 +163,12 @@ class Normal(Distribution):
 
     def to_dict(self) -> dict[str, Any]:
         assert self.low is not None and self.high is not None
-        return {"dist": self.kind, "mean": self.mean, "std": self.std,
-                **_bound_dict(self.low, self.high)}
+        return {
+            "dist": self.kind,
+            "mean": self.mean,
+            "std": self.std,
+            **_bound_dict(self.low, self.high),
+        }
 
 
 @dataclass(frozen=True)
@@ -193,8 +197,9 @@ class LogNormal(Distribution):
         self._log_normal()
 
     @classmethod
-    def from_mean_std(cls, mean: float, std: float, low: float | None = None,
-                      high: float | None = None) -> LogNormal:
+    def from_mean_std(
+        cls, mean: float, std: float, low: float | None = None, high: float | None = None
+    ) -> LogNormal:
         m = check_positive("mean", mean)
         s = check_positive("std", std)
         r = 1.0 + (s / m) ** 2
@@ -211,8 +216,12 @@ class LogNormal(Distribution):
 
     def to_dict(self) -> dict[str, Any]:
         assert self.low is not None and self.high is not None
-        return {"dist": self.kind, "median": self.median, "sigma": self.sigma,
-                **_bound_dict(self.low if self.low > 0 else -math.inf, self.high)}
+        return {
+            "dist": self.kind,
+            "median": self.median,
+            "sigma": self.sigma,
+            **_bound_dict(self.low if self.low > 0 else -math.inf, self.high),
+        }
 
 
 DISTRIBUTIONS: dict[str, str] = {
@@ -279,8 +288,9 @@ def distribution_from_dict(d: dict[str, Any], convert: Any, name: str) -> Distri
                 raise ValueError("give either median and sigma, or mean and std, not both")
             if "sigma" not in params:
                 raise ValueError("the lognormal distribution needs 'sigma' with 'median'")
-            return LogNormal(need("median"), check_finite("sigma", params["sigma"]),
-                             opt("low"), opt("high"))
+            return LogNormal(
+                need("median"), check_finite("sigma", params["sigma"]), opt("low"), opt("high")
+            )
         return LogNormal.from_mean_std(need("mean"), need("std"), opt("low"), opt("high"))
     except ValueError as exc:
         msg = str(exc)

@@ -4,7 +4,8 @@
 the choices that are constant over the chunk (``Statics``: law, friction, body kind, material
 presets, law parameters, engine options) to the kept output arrays and a status array. It builds
 the contact models and body vectors once per distinct combination of the numeric inputs that
-enter them (cached per process), rejects what the Python constructors reject with a status code
+enter them (cached per process) with the same builder as ``simulate``
+(``impactlab.dynamics.models``), rejects what the Python constructors reject with a status code
 instead of an exception, and calls ``impactlab.dynamics.batch.run_arrays`` once for the chunk.
 
 Any object with the ``Evaluator`` interface can stand in for the engine (tests use a cheap fake).
@@ -16,12 +17,25 @@ import dataclasses
 import math
 import os
 import sys
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any, Protocol, runtime_checkable
 
 import numpy as np
+from numba.core.dispatcher import Dispatcher
 
+from impactlab.bodies import NB, PAPER_ROD, Rod, Sphere
+from impactlab.contact import get_law, law_names
+from impactlab.contact.kernels import NPARAM
+from impactlab.dynamics.batch import (
+    FRICTION_IDS,
+    OUTPUT_FIELDS,
+    REGIME_NAMES,
+    STATUS_MESSAGES,
+    run_arrays,
+)
+from impactlab.dynamics.models import body_params, build_contact_model
+from impactlab.materials import PRESETS, Material, get_material
 from impactlab.sweep.inputs import (
     BODY_INPUTS,
     CATEGORY_INPUTS,
@@ -41,9 +55,9 @@ STATUS_BAD_INPUT = 104
 SWEEP_STATUS_MESSAGES: dict[int, str] = {
     STATUS_NOT_RUN: "not computed (chunk missing: the sweep was interrupted)",
     STATUS_BAD_MATERIAL: "material rejected (impactlab.materials.Material: e.g. nu outside "
-                         "(-1, 0.5), S_y >= E, non-positive value)",
+    "(-1, 0.5), S_y >= E, non-positive value)",
     STATUS_BAD_BODY: "body rejected (impactlab.bodies: non-positive length, radius, mass or "
-                     "inertia, or both mass and density given)",
+    "inertia, or both mass and density given)",
     STATUS_BAD_LAW: "contact law rejected its parameters (outside the law's validity)",
     STATUS_BAD_INPUT: "non-finite kinematic input (angle, vx, vy, spin or mu)",
 }
@@ -84,27 +98,15 @@ class Evaluator(Protocol):
 
     def validate(self, categories: Mapping[str, Sequence[str]]) -> None: ...
 
-    def __call__(self, cases: Mapping[str, np.ndarray], statics: Statics,
-                 outputs: Sequence[str]) -> tuple[dict[str, np.ndarray], np.ndarray]: ...
+    def __call__(
+        self, cases: Mapping[str, np.ndarray], statics: Statics, outputs: Sequence[str]
+    ) -> tuple[dict[str, np.ndarray], np.ndarray]: ...
 
 
 def engine_available() -> bool:
-    """True when ``impactlab.dynamics.batch`` imports."""
-    try:
-        import impactlab.dynamics.batch  # noqa: F401
-    except ImportError:
-        return False
+    """True: the compiled engine is a required part of the package (an install without it
+    fails at import)."""
     return True
-
-
-def _batch() -> Any:
-    try:
-        import impactlab.dynamics.batch as batch
-    except ImportError as exc:
-        raise RuntimeError(
-            f"the impact engine impactlab.dynamics.batch is not available ({exc})"
-        ) from exc
-    return batch
 
 
 # -- model construction (cached per process) ----------------------------------------------------
@@ -114,9 +116,7 @@ _law_cache: dict[tuple[Any, ...], np.ndarray | int] = {}
 _body_cache: dict[tuple[Any, ...], np.ndarray | int] = {}
 
 
-def _material(preset: str, overrides: Mapping[str, float]) -> Any:
-    from impactlab.materials import get_material
-
+def _material(preset: str, overrides: Mapping[str, float]) -> Material:
     base = get_material(preset)
     changes: dict[str, Any] = {k: v for k, v in overrides.items() if not math.isnan(v)}
     if not changes:
@@ -128,9 +128,7 @@ def _side(side: str, row: Mapping[str, float]) -> dict[str, float]:
     return {field: row[name] for name, field in MATERIAL_OVERRIDES[side].items()}
 
 
-def _body(cat: Mapping[str, str], row: Mapping[str, float], body_mat: Any) -> Any:
-    from impactlab.bodies import PAPER_ROD, Rod, Sphere
-
+def _body(cat: Mapping[str, str], row: Mapping[str, float], body_mat: Material) -> Rod | Sphere:
     def given(name: str) -> float | None:
         v = row[name]
         return None if math.isnan(v) else float(v)
@@ -158,7 +156,7 @@ def _body(cat: Mapping[str, str], row: Mapping[str, float], body_mat: Any) -> An
 def _unique_rows(cols: Sequence[np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
     """Distinct rows of the columns (bitwise, NaN == NaN) and the inverse index."""
     n = cols[0].shape[0]
-    if all(c[0] == c[-1] and (c == c[0]).all() or np.isnan(c).all() for c in cols):
+    if all((c[0] == c[-1] and (c == c[0]).all()) or np.isnan(c).all() for c in cols):
         return np.stack([c[:1] for c in cols], axis=1), np.zeros(n, dtype=np.intp)
     stacked = np.ascontiguousarray(np.stack(cols, axis=1))
     view = stacked.view(np.dtype((np.void, stacked.dtype.itemsize * stacked.shape[1]))).ravel()
@@ -179,11 +177,6 @@ def build_models(
     ContactModels and bodies are built once per distinct combination of the inputs that enter
     them and cached for the life of the process.
     """
-    from impactlab.bodies import NB
-    from impactlab.contact import get_law
-    from impactlab.contact.kernels import NPARAM
-    from impactlab.materials import ContactPair
-
     cat = statics.categories
     n = len(cases["angle"])
     status = np.zeros(n, dtype=np.int32)
@@ -196,11 +189,17 @@ def build_models(
     row_status = np.zeros(rows.shape[0], dtype=np.int32)
     for r in range(rows.shape[0]):
         row = dict(zip(names, rows[r].tolist(), strict=True))
-        key = (cat["law"], cat["body"], cat["body_material"], cat["flat_material"], lp,
-               rows[r].tobytes())
+        key = (
+            cat["law"],
+            cat["body"],
+            cat["body_material"],
+            cat["flat_material"],
+            lp,
+            rows[r].tobytes(),
+        )
         cached_l, cached_b = _law_cache.get(key), _body_cache.get(key)
         if cached_l is None or cached_b is None:
-            cached_l, cached_b = _build_one(cat, row, statics.law_params, get_law, ContactPair)
+            cached_l, cached_b = _build_one(cat, row, statics.law_params)
             if len(_law_cache) > _CACHE_MAX:
                 _law_cache.clear()
                 _body_cache.clear()
@@ -219,9 +218,11 @@ def build_models(
     return law_out[inverse], body_out[inverse], status
 
 
-def _build_one(cat: Mapping[str, str], row: Mapping[str, float], law_params: Mapping[str, float],
-               get_law: Callable[[str], Any], pair_cls: Any) -> tuple[Any, Any]:
-    """(law params, body params) for one combination, or (code, code) when rejected."""
+def _build_one(
+    cat: Mapping[str, str], row: Mapping[str, float], law_params: Mapping[str, float]
+) -> tuple[Any, Any]:
+    """(law params, body params) for one combination, or (code, code) when rejected. The
+    contact model comes from ``impactlab.dynamics.models``, as in ``simulate``."""
     try:
         body_mat = _material(cat["body_material"], _side("body", row))
         flat_mat = _material(cat["flat_material"], _side("flat", row))
@@ -229,15 +230,14 @@ def _build_one(cat: Mapping[str, str], row: Mapping[str, float], law_params: Map
         return STATUS_BAD_MATERIAL, STATUS_BAD_MATERIAL
     try:
         body = _body(cat, row, body_mat)
-        body_params = body.to_params(flat_mat)
+        bp = body_params(body, flat_mat)
     except ValueError:
         return STATUS_BAD_BODY, STATUS_BAD_BODY
     try:
-        model = get_law(cat["law"]).build(pair_cls(body_mat, flat_mat), body.radius,
-                                          **law_params)
+        model = build_contact_model(cat["law"], body_mat, flat_mat, body.tip_radius, law_params)
     except ValueError:
         return STATUS_BAD_LAW, STATUS_BAD_LAW
-    return np.asarray(model.params, dtype=np.float64), np.asarray(body_params, dtype=np.float64)
+    return np.asarray(model.params, dtype=np.float64), np.array(bp, dtype=np.float64)
 
 
 # -- numba cache statistics ----------------------------------------------------------------------
@@ -247,10 +247,6 @@ def numba_cache_stats() -> dict[str, int]:
     """Cache hits and misses (compilations) of the compiled functions loaded from impactlab's
     modules in this process: {"hits": ..., "misses": ..., "dispatchers": ...}. A worker that
     loads the kernels from the on-disk cache shows hits > 0 and misses == 0."""
-    try:
-        from numba.core.dispatcher import Dispatcher
-    except ImportError:  # pragma: no cover
-        return {"hits": 0, "misses": 0, "dispatchers": 0}
     hits = misses = count = 0
     seen: set[int] = set()
     for name, mod in list(sys.modules.items()):
@@ -276,38 +272,27 @@ class EngineEvaluator:
     identity = "impactlab.dynamics.batch"
 
     def output_fields(self) -> tuple[str, ...]:
-        return tuple(_batch().OUTPUT_FIELDS)
+        return tuple(OUTPUT_FIELDS)
 
     def status_messages(self) -> dict[int, str]:
-        msgs = _batch().STATUS_MESSAGES
-        items = msgs.items() if isinstance(msgs, Mapping) else enumerate(msgs)
-        return {int(k): str(v) for k, v in items}
+        return {int(k): str(v) for k, v in STATUS_MESSAGES.items()}
 
     def regimes(self) -> dict[int, str]:
-        b = _batch()
-        for attr in ("REGIME_NAMES", "REGIMES"):
-            r = getattr(b, attr, None)
-            if r is not None:
-                items = r.items() if isinstance(r, Mapping) else enumerate(r)
-                return {int(k): str(v) for k, v in items}
-        return {}
+        return {int(k): str(v) for k, v in REGIME_NAMES.items()}
 
     def integer_outputs(self) -> tuple[str, ...]:
         return tuple(f for f in self.output_fields() if f in INTEGER_OUTPUTS)
 
     def validate(self, categories: Mapping[str, Sequence[str]]) -> None:
-        _validate_categories(categories, tuple(_batch().FRICTION_IDS))
+        _validate_categories(categories, tuple(FRICTION_IDS))
 
-    def __call__(self, cases: Mapping[str, np.ndarray], statics: Statics,
-                 outputs: Sequence[str]) -> tuple[dict[str, np.ndarray], np.ndarray]:
+    def __call__(
+        self, cases: Mapping[str, np.ndarray], statics: Statics, outputs: Sequence[str]
+    ) -> tuple[dict[str, np.ndarray], np.ndarray]:
         return evaluate(cases, statics, outputs)
 
 
-def _validate_categories(categories: Mapping[str, Sequence[str]],
-                         frictions: Sequence[str]) -> None:
-    from impactlab.contact import get_law, law_names
-    from impactlab.materials import PRESETS
-
+def _validate_categories(categories: Mapping[str, Sequence[str]], frictions: Sequence[str]) -> None:
     for law in categories.get("law", ()):
         try:
             get_law(law)
@@ -329,8 +314,9 @@ def _validate_categories(categories: Mapping[str, Sequence[str]],
             raise ValueError(f"unknown body {b!r}; known: rod, sphere")
 
 
-def evaluate(cases: Mapping[str, np.ndarray], statics: Statics,
-             outputs: Sequence[str]) -> tuple[dict[str, np.ndarray], np.ndarray]:
+def evaluate(
+    cases: Mapping[str, np.ndarray], statics: Statics, outputs: Sequence[str]
+) -> tuple[dict[str, np.ndarray], np.ndarray]:
     """Run one chunk through the compiled engine.
 
     cases : input name -> 1-D float64 array (all of ``inputs.INPUTS``' numeric names; NaN =
@@ -341,8 +327,7 @@ def evaluate(cases: Mapping[str, np.ndarray], statics: Statics,
     Returns ({output: (N,) array}, status (N,) int32). Cases rejected before the engine get the
     ``SWEEP_STATUS_MESSAGES`` codes and NaN outputs.
     """
-    batch = _batch()
-    fields = tuple(batch.OUTPUT_FIELDS)
+    fields = tuple(OUTPUT_FIELDS)
     cols = [fields.index(o) for o in outputs]
     n = len(cases["angle"])
     law_params, body_params, status = build_models(cases, statics)
@@ -364,9 +349,9 @@ def evaluate(cases: Mapping[str, np.ndarray], statics: Statics,
         return np.ascontiguousarray(a[ok])
 
     law_id = _law_id(statics.categories["law"])
-    out, st = batch.run_arrays(
+    out, st = run_arrays(
         law_id,
-        batch.FRICTION_IDS[statics.categories["friction"]],
+        FRICTION_IDS[statics.categories["friction"]],
         sel(law_params),
         sel(body_params),
         initial if all_ok else np.ascontiguousarray(initial[ok]),
@@ -386,8 +371,6 @@ def evaluate(cases: Mapping[str, np.ndarray], statics: Statics,
 
 
 def _law_id(name: str) -> int:
-    from impactlab.contact import get_law
-
     return int(get_law(name).law_id)
 
 

@@ -1,4 +1,5 @@
-"""The catalogue of sweepable inputs and known outputs: names, SI units, kinds and defaults.
+"""The catalogue of sweepable inputs: names, SI units, kinds and defaults; the outputs' units and
+meanings come from :mod:`impactlab.schema`.
 
 Every input of a study is one of these names. A numeric input is stored in SI units (the column
 ``unit``); in a study file a bare number is read in ``file_unit`` (degrees for the angle, SI for
@@ -11,6 +12,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from typing import Literal
+
+from impactlab.schema import FIELDS, OUTPUT_FIELDS, Field
 
 Kind = Literal["float", "category"]
 
@@ -43,8 +46,15 @@ class InputSpec:
         return self.file_unit or self.unit
 
 
-def _f(name: str, unit: str, description: str, default: float | None = None, *,
-       required: bool = False, file_unit: str | None = None) -> InputSpec:
+def _f(
+    name: str,
+    unit: str,
+    description: str,
+    default: float | None = None,
+    *,
+    required: bool = False,
+    file_unit: str | None = None,
+) -> InputSpec:
     return InputSpec(name, unit, "float", default, description, required, file_unit)
 
 
@@ -64,18 +74,30 @@ _MATERIAL_FIELDS = (
 #: Names of the per-case material overrides, by side ("body", "flat"): input name -> field.
 #: (The flat is massive: its density plays no part, so there is no ``flat_density``.)
 MATERIAL_OVERRIDES: dict[str, dict[str, str]] = {
-    side: {f"{side}_{field}": field for field, _, _ in _MATERIAL_FIELDS
-           if not (side == "flat" and field == "density")}
+    side: {
+        f"{side}_{field}": field
+        for field, _, _ in _MATERIAL_FIELDS
+        if not (side == "flat" and field == "density")
+    }
     for side in ("body", "flat")
 }
 
 _SPECS: tuple[InputSpec, ...] = (
     # kinematics (paper Sec. 2: theta, v_i; omega_i = 0, no tangential velocity)
-    _f("angle", "rad", "angle of the rod axis to the flat at first contact (theta)", required=True,
-       file_unit="degree"),
+    _f(
+        "angle",
+        "rad",
+        "angle of the rod axis to the flat at first contact (theta)",
+        required=True,
+        file_unit="degree",
+    ),
     _f("vx", "m/s", "initial horizontal velocity of the centre of mass (+x towards C)", 0.0),
-    _f("vy", "m/s", "initial vertical velocity of the centre of mass (< 0: towards the flat)",
-       required=True),
+    _f(
+        "vy",
+        "m/s",
+        "initial vertical velocity of the centre of mass (< 0: towards the flat)",
+        required=True,
+    ),
     _f("spin", "rad/s", "initial angular velocity (counter-clockwise positive)", 0.0),
     _f("mu", "1", "coefficient of friction", required=True),
     # body geometry (None: the paper's rod, impactlab.bodies.PAPER_ROD)
@@ -84,8 +106,11 @@ _SPECS: tuple[InputSpec, ...] = (
     _f("tip_radius", "m", "rod tip radius R (rod)"),
     _f("radius", "m", "sphere radius (sphere)"),
     _f("mass", "kg", "body mass m (sphere: from the density if not set)"),
-    _f("inertia", "kg*m^2", "moment of inertia about the centre of mass I_C (rod: m L^2/12 "
-       "if not set)"),
+    _f(
+        "inertia",
+        "kg*m^2",
+        "moment of inertia about the centre of mass I_C (rod: m L^2/12 if not set)",
+    ),
     # materials: presets and per-property overrides
     _c("body_material", "aisi-201", "material preset of the impacting body"),
     _c("flat_material", "aisi-1010", "material preset of the flat"),
@@ -104,12 +129,25 @@ INPUTS: dict[str, InputSpec] = {s.name: s for s in _SPECS}
 
 #: Inputs that enter the contact model (law parameters): changing one rebuilds the ContactModel.
 LAW_INPUTS: tuple[str, ...] = (
-    "law", "body_material", "flat_material", "tip_radius", "radius", "body",
-    *MATERIAL_OVERRIDES["body"], *MATERIAL_OVERRIDES["flat"],
+    "law",
+    "body_material",
+    "flat_material",
+    "tip_radius",
+    "radius",
+    "body",
+    *MATERIAL_OVERRIDES["body"],
+    *MATERIAL_OVERRIDES["flat"],
 )
 #: Inputs that enter the body parameters.
 BODY_INPUTS: tuple[str, ...] = (
-    "body", "length", "tip_radius", "radius", "mass", "inertia", "body_material", "body_density",
+    "body",
+    "length",
+    "tip_radius",
+    "radius",
+    "mass",
+    "inertia",
+    "body_material",
+    "body_density",
 )
 #: Per-case kinematic inputs (the engine's ``initial`` and ``mu`` arrays).
 KINEMATIC_INPUTS: tuple[str, ...] = ("angle", "vx", "vy", "spin", "mu")
@@ -123,52 +161,13 @@ def get_input(name: str) -> InputSpec:
     try:
         return INPUTS[name]
     except (KeyError, TypeError):
-        raise ValueError(
-            f"unknown input {name!r}; known inputs: {', '.join(INPUTS)}"
-        ) from None
+        raise ValueError(f"unknown input {name!r}; known inputs: {', '.join(INPUTS)}") from None
 
 
-@dataclass(frozen=True)
-class OutputSpec:
-    """A known engine output: unit and meaning (attributes of the result variables)."""
-
-    name: str
-    unit: str
-    description: str
-
-
-_OUTPUTS = (
-    OutputSpec("e", "1", "kinematic coefficient of restitution of the contact point"),
-    OutputSpec("e_energy", "1", "energetic coefficient of restitution"),
-    OutputSpec("vx_out", "m/s", "horizontal velocity of the centre of mass after the impact"),
-    OutputSpec("vy_out", "m/s", "vertical velocity of the centre of mass after the impact"),
-    OutputSpec("spin_out", "rad/s", "angular velocity after the impact"),
-    OutputSpec("delta_max", "m", "largest interference"),
-    OutputSpec("delta_p", "m", "permanent (residual) normal deformation"),
-    OutputSpec("sliding_length", "m", "sliding length L_s of the contact point"),
-    OutputSpec("duration", "s", "impact duration T"),
-    OutputSpec("mean_force", "N", "average normal contact force F over the impact"),
-    OutputSpec("max_force", "N", "largest normal contact force"),
-    OutputSpec("normal_impulse", "N*s", "normal impulse"),
-    OutputSpec("tangential_impulse", "N*s", "tangential impulse"),
-    OutputSpec("energy_dissipated", "J", "energy dissipated in the impact"),
-    OutputSpec("stick_time", "s", "time the contact point sticks"),
-    OutputSpec("regime", "1", "friction regime code (see the attribute 'regimes')"),
-    OutputSpec("contact_travel", "m", "displacement of the contact point along the flat"),
-    OutputSpec("vn_in", "m/s", "normal velocity of the contact point at first touch"),
-    OutputSpec("vt_in", "m/s", "slip velocity of the contact point at first touch"),
-    OutputSpec("vn_out", "m/s", "normal velocity of the contact point at separation"),
-    OutputSpec("vt_out", "m/s", "slip velocity of the contact point at separation"),
-    OutputSpec("angle_out", "rad", "rod angle at separation"),
-    OutputSpec("t_max", "s", "time of the largest interference"),
-    OutputSpec("n_steps", "1", "integration steps, accepted and rejected (diagnostics)"),
-    OutputSpec("energy_rise", "1", "largest rise of the total energy over the initial kinetic "
-               "energy (diagnostics)"),
-    OutputSpec("friction_excess", "1", "largest (|F_t| - mu F_n) / max_force (diagnostics)"),
-)
+#: The engine's outputs by name: unit and meaning (``impactlab.schema``, the one table).
+OUTPUTS: dict[str, Field] = {f.name: f for f in OUTPUT_FIELDS}
 #: Integer-valued outputs and their stored dtype (fill value -1).
 INTEGER_OUTPUTS: dict[str, str] = {"regime": "int8", "n_steps": "int32"}
-OUTPUTS: dict[str, OutputSpec] = {o.name: o for o in _OUTPUTS}
 
 #: The paper's symbols accepted as output names.
 OUTPUT_ALIASES: dict[str, str] = {
@@ -180,6 +179,6 @@ OUTPUT_ALIASES: dict[str, str] = {
 }
 
 
-def output_spec(name: str) -> OutputSpec:
-    """Unit and description of an output (unit "unknown" for a field not catalogued here)."""
-    return OUTPUTS.get(name, OutputSpec(name, "unknown", name))
+def output_spec(name: str) -> Field:
+    """Unit and description of an output (unit "unknown" for a field not in the schema)."""
+    return FIELDS.get(name, Field(name, "unknown", name))

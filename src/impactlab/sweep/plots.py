@@ -18,8 +18,11 @@ from typing import Any
 
 import numpy as np
 
+from impactlab._mpl import pyplot
+from impactlab.analytic import critical_friction
+from impactlab.bodies import PAPER_ROD, Rod
+from impactlab.sweep.dimensions import SAMPLE_DIM
 from impactlab.sweep.inputs import OUTPUT_ALIASES, output_spec
-from impactlab.sweep.study import SAMPLE_DIM
 
 #: display scale and unit per SI unit
 _DISPLAY = {"m": (1e6, "um"), "s": (1e3, "ms"), "rad": (180.0 / math.pi, "deg")}
@@ -55,37 +58,29 @@ def _select(ds: Any, keep: Sequence[str], sel: Mapping[str, Any] | None) -> Any:
     return ds
 
 
-def _pyplot() -> Any:
-    import matplotlib
-
-    if matplotlib.get_backend().lower() not in ("agg", "pdf", "svg", "cairo"):
-        try:
-            import matplotlib.pyplot as plt  # noqa: F401
-        except Exception:  # pragma: no cover
-            matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    return plt
-
-
-def _rod_for(ds: Any) -> Any | None:
+def _rod_for(ds: Any) -> Rod | None:
     """The rod of a sweep (fixed geometry) for mu_c, or None (a sphere, or varying geometry)."""
     body = str(ds["body"].values) if "body" in ds.variables else "rod"
     if body != "rod":
         return None
-    from impactlab.analytic import RodProperties
-    from impactlab.bodies import PAPER_ROD
-
-    vals: dict[str, float | None] = {"length": PAPER_ROD.L, "tip_radius": PAPER_ROD.tip_radius,
-                                     "mass": PAPER_ROD.mass, "inertia": None}
+    vals: dict[str, float | None] = {
+        "length": PAPER_ROD.length,
+        "tip_radius": PAPER_ROD.tip_radius,
+        "mass": PAPER_ROD.mass,
+        "inertia": None,
+    }
     for name in vals:
         if name in ds.variables:
             v = ds[name]
             if v.ndim:
                 return None
             vals[name] = float(v.values)
-    return RodProperties(mass=float(vals["mass"] or 0.0), length=float(vals["length"] or 0.0),
-                         tip_radius=float(vals["tip_radius"] or 0.0), inertia=vals["inertia"])
+    return Rod(
+        length=float(vals["length"] or 0.0),
+        tip_radius=float(vals["tip_radius"] or 0.0),
+        mass=float(vals["mass"] or 0.0),
+        inertia=vals["inertia"],
+    )
 
 
 def critical_friction_curve(ds: Any, angles: np.ndarray) -> np.ndarray | None:
@@ -93,22 +88,28 @@ def critical_friction_curve(ds: Any, angles: np.ndarray) -> np.ndarray | None:
     rod = _rod_for(ds)
     if rod is None:
         return None
-    from impactlab.analytic import critical_friction
-
     return np.asarray(critical_friction(angles, rod), dtype=np.float64)
 
 
-def plot_regime_map(ds: Any, *, x: str = "angle", y: str = "mu",
-                    sel: Mapping[str, Any] | None = None, ax: Any = None,
-                    show_mu_c: bool = True) -> Any:
+def plot_regime_map(
+    ds: Any,
+    *,
+    x: str = "angle",
+    y: str = "mu",
+    sel: Mapping[str, Any] | None = None,
+    ax: Any = None,
+    show_mu_c: bool = True,
+) -> Any:
     """Friction regime over ``x`` (angle) and ``y`` (mu), with mu_c(theta) drawn on it."""
     if "regime" not in ds.data_vars:
         raise ValueError("the sweep did not keep the output 'regime'")
     for d in (x, y):
         if d not in ds.dims:
             raise ValueError(f"a regime map needs {d!r} as a grid dimension; dims: {list(ds.dims)}")
-    plt = _pyplot()
+    plt = pyplot()
+    # matplotlib modules load after pyplot() has settled the backend (see impactlab._mpl)
     from matplotlib.colors import BoundaryNorm, ListedColormap
+    from matplotlib.patches import Patch
 
     sub = _select(ds[["regime", "status"]], (x, y), sel)
     reg = np.asarray(sub["regime"].transpose(y, x).values, dtype=float)
@@ -127,18 +128,18 @@ def plot_regime_map(ds: Any, *, x: str = "angle", y: str = "mu",
         cmap = ListedColormap([palette[(c - lo) % len(palette)] for c in range(lo, hi + 1)])
         norm = BoundaryNorm(np.arange(lo - 0.5, hi + 1.5), cmap.N)
         ax.pcolormesh(xv, yv, reg, cmap=cmap, norm=norm, shading="nearest")
-        from matplotlib.patches import Patch
-
-        handles = [Patch(color=palette[(c - lo) % len(palette)], label=names.get(c, str(c)))
-                   for c in codes]
+        handles = [
+            Patch(color=palette[(c - lo) % len(palette)], label=names.get(c, str(c))) for c in codes
+        ]
     else:
         handles = []
     if show_mu_c and x == "angle":
         th = np.linspace(float(np.min(sub[x])), float(np.max(sub[x])), 200)
         mu_c = critical_friction_curve(sub, th)
         if mu_c is not None:
-            (line,) = ax.plot(th * xs, mu_c * ys, "k-", lw=2,
-                              label=r"$\mu_c = ab/(k^2+b^2)$ (rigid body)")
+            (line,) = ax.plot(
+                th * xs, mu_c * ys, "k-", lw=2, label=r"$\mu_c = ab/(k^2+b^2)$ (rigid body)"
+            )
             handles.append(line)
     ax.set_xlim(xv.min(), xv.max())
     ax.set_ylim(yv.min(), yv.max())
@@ -150,8 +151,15 @@ def plot_regime_map(ds: Any, *, x: str = "angle", y: str = "mu",
     return ax
 
 
-def plot_output_map(ds: Any, output: str, *, x: str = "angle", y: str | None = None,
-                    sel: Mapping[str, Any] | None = None, ax: Any = None) -> Any:
+def plot_output_map(
+    ds: Any,
+    output: str,
+    *,
+    x: str = "angle",
+    y: str | None = None,
+    sel: Mapping[str, Any] | None = None,
+    ax: Any = None,
+) -> Any:
     """``output`` over ``x`` and ``y`` (colour map) or over ``x`` alone (line); invalid cases
     (status != 0) are blank."""
     out = OUTPUT_ALIASES.get(output, output)
@@ -161,7 +169,7 @@ def plot_output_map(ds: Any, output: str, *, x: str = "angle", y: str | None = N
     for d in keep:
         if d not in ds.dims:
             raise ValueError(f"{d!r} is not a grid dimension; dims: {list(ds.dims)}")
-    plt = _pyplot()
+    plt = pyplot()
     sub = _select(ds[[out, "status"]], keep, sel)
     vals = np.asarray(sub[out].values, dtype=float)
     vals = np.where(np.asarray(sub["status"].values) == 0, vals, np.nan)
@@ -191,7 +199,7 @@ def plot_output_map(ds: Any, output: str, *, x: str = "angle", y: str | None = N
 
 def plot_histograms(ds: Any, outputs: Sequence[str]) -> Any:
     """Histograms of Monte Carlo outputs (valid cases)."""
-    plt = _pyplot()
+    plt = pyplot()
     outs = [OUTPUT_ALIASES.get(o, o) for o in outputs if OUTPUT_ALIASES.get(o, o) in ds]
     n = max(1, len(outs))
     fig, axes = plt.subplots(1, n, figsize=(3.2 * n, 3.0), squeeze=False)
@@ -206,15 +214,19 @@ def plot_histograms(ds: Any, outputs: Sequence[str]) -> Any:
     return fig
 
 
-def plot_sweep(ds: Any, outdir: str | Path, *,
-               outputs: Sequence[str] = ("e", "delta_p", "sliding_length", "duration"),
-               sel: Mapping[str, Any] | None = None) -> list[Path]:
+def plot_sweep(
+    ds: Any,
+    outdir: str | Path,
+    *,
+    outputs: Sequence[str] = ("e", "delta_p", "sliding_length", "duration"),
+    sel: Mapping[str, Any] | None = None,
+) -> list[Path]:
     """Write every plot the sweep's dimensions allow into ``outdir`` (PNG); returns the files.
 
     angle x mu with 'regime' -> regime map (with mu_c); angle x a velocity -> output maps;
     angle alone -> output lines; a 'sample' dimension -> histograms.
     """
-    plt = _pyplot()
+    plt = pyplot()
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
     files: list[Path] = []

@@ -16,108 +16,37 @@ Backends (``backend=``):
 Whatever the backend, chunk ``k`` always holds the same cases and gives the same numbers, and
 finished chunks are never recomputed: an interrupted sweep (Ctrl-C, kill -9, an exception, a lost
 worker) run again completes the missing chunks only, and the store equals an uninterrupted run's.
+One chunk's computation is in :mod:`~impactlab.sweep.chunks`, the backends in
+:mod:`~impactlab.sweep.backends`.
 """
 
 from __future__ import annotations
 
-import os
-import socket
 import sys
 import time
-from collections.abc import Callable, Iterable, Iterator, Sequence
-from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-import numpy as np
-
-from impactlab.sweep.engine import (
-    ENGINE,
-    Evaluator,
-    Statics,
-    default_threads,
-    numba_cache_stats,
+from rich.console import Console
+from rich.progress import (
+    BarColumn,
+    MofNCompleteColumn,
+    Progress,
+    TextColumn,
+    TimeElapsedColumn,
+    TimeRemainingColumn,
 )
+
+from impactlab._version import __version__
+from impactlab.sweep.backends import BACKENDS, run_dask, run_processes, run_threads
+from impactlab.sweep.chunks import ChunkResult
+from impactlab.sweep.engine import ENGINE, Evaluator, default_threads
 from impactlab.sweep.inputs import CATEGORY_INPUTS, OUTPUT_ALIASES
 from impactlab.sweep.store import StoreMeta, SweepStore, open_sweep
 from impactlab.sweep.study import Study, load_study
-
-BACKENDS = ("threads", "processes", "dask")
-
-
-@dataclass
-class ChunkResult:
-    """What one chunk computation sends back to the writer."""
-
-    index: int
-    outputs: dict[str, np.ndarray]
-    status: np.ndarray
-    n_cases: int
-    eval_s: float
-    total_s: float
-    cache: dict[str, int]
-    worker: str
-
-
-def _set_numba_threads(n: int | None) -> None:
-    if n is None:
-        return
-    try:
-        import numba
-
-        numba.set_num_threads(max(1, min(int(n), numba.config.NUMBA_NUM_THREADS)))  # type: ignore[attr-defined]
-    except (ImportError, ValueError):  # pragma: no cover
-        pass
-
-
-def _dask_worker_threads() -> int | None:
-    """Inside a Dask worker: numba threads per task = cores / worker threads (None outside)."""
-    try:
-        from distributed import get_worker
-
-        w = get_worker()
-    except (ImportError, ValueError):
-        return None
-    import numba
-
-    cores = int(numba.config.NUMBA_NUM_THREADS)  # type: ignore[attr-defined]
-    return max(1, cores // max(1, int(w.state.nthreads)))
-
-
-def compute_chunk(study: Study, index: int, evaluator: Evaluator, outputs: Sequence[str],
-                  numba_threads: int | None = None) -> ChunkResult:
-    """Compute chunk ``index`` of ``study`` (pure: the result depends on the study and ``index``
-    only). Runs wherever it is sent: this process, a pool process or a Dask worker."""
-    t0 = time.perf_counter()
-    _set_numba_threads(numba_threads if numba_threads is not None else _dask_worker_threads())
-    before = numba_cache_stats()
-    numeric, categories, bshape = study.chunk_cases(index)
-    statics = Statics(categories, study.law_params, study.engine.kwargs())
-    t1 = time.perf_counter()
-    outs, status = evaluator(numeric, statics, outputs)
-    t2 = time.perf_counter()
-    after = numba_cache_stats()
-    n = int(np.prod(bshape, dtype=np.int64))
-    status = np.asarray(status, dtype=np.int32)
-    if status.shape != (n,):
-        raise RuntimeError(f"evaluator returned status of shape {status.shape}, expected ({n},)")
-    for o in outputs:
-        if np.shape(outs[o]) != (n,):
-            raise RuntimeError(f"evaluator returned {o!r} of shape {np.shape(outs[o])}")
-    return ChunkResult(
-        index=index,
-        outputs={o: np.asarray(outs[o]) for o in outputs},
-        status=status,
-        n_cases=n,
-        eval_s=t2 - t1,
-        total_s=time.perf_counter() - t0,
-        cache={"hits": after["hits"] - before["hits"],
-               "misses": after["misses"] - before["misses"],
-               "dispatchers": after["dispatchers"]},
-        worker=f"{socket.gethostname()}:{os.getpid()}",
-    )
 
 
 @dataclass
@@ -198,10 +127,8 @@ def category_values(study: Study) -> dict[str, list[str]]:
 def store_meta(study: Study, evaluator: Evaluator) -> StoreMeta:
     """The store metadata for ``study`` run by ``evaluator`` (hash includes the engine and the
     impactlab version)."""
-    import impactlab
-
     outputs = resolve_outputs(study, evaluator)
-    ident = f"{evaluator.identity}|impactlab {impactlab.__version__}"
+    ident = f"{evaluator.identity}|impactlab {__version__}"
     return StoreMeta(
         study_hash=study.hash(ident),
         outputs=outputs,
@@ -213,23 +140,14 @@ def store_meta(study: Study, evaluator: Evaluator) -> StoreMeta:
 
 
 @contextmanager
-def _progress(total: int, done: int, label: str, mode: bool | None
-              ) -> Iterator[Callable[[int], None]]:
+def _progress(
+    total: int, done: int, label: str, mode: bool | None
+) -> Iterator[Callable[[int], None]]:
     """A rich progress bar on stderr (count, rate, elapsed, ETA). ``mode``: None = when stderr is
     a terminal, True = always, False = never."""
     if mode is False:
         yield lambda n: None
         return
-    from rich.console import Console
-    from rich.progress import (
-        BarColumn,
-        MofNCompleteColumn,
-        Progress,
-        TextColumn,
-        TimeElapsedColumn,
-        TimeRemainingColumn,
-    )
-
     console = Console(stderr=True, force_terminal=True if mode else None)
     if not console.is_terminal:
         yield lambda n: None
@@ -302,8 +220,9 @@ def run_sweep(
     if backend == "dask" and scheduler is None and client is None:
         raise ValueError("backend 'dask' needs scheduler='tcp://host:port' or a client")
     ncores = default_threads()
-    if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int)
-                                or workers < 1):
+    if workers is not None and (
+        isinstance(workers, bool) or not isinstance(workers, int) or workers < 1
+    ):
         raise ValueError(f"workers must be an integer >= 1, got {workers!r}")
     nworkers = workers or ncores
     ev.validate(category_values(st))
@@ -315,20 +234,48 @@ def run_sweep(
             sstore.acquire()  # refuses while another live process writes this store
         done = sstore.prepare(st, meta, restart=restart)
         sstore.acquire()
-        return _run_store(st, ev, meta, sstore, done, backend, nworkers, scheduler, client,
-                          quiet, progress, max_in_flight)
+        return _run_store(
+            st,
+            ev,
+            meta,
+            sstore,
+            done,
+            backend,
+            nworkers,
+            scheduler,
+            client,
+            quiet,
+            progress,
+            max_in_flight,
+        )
     finally:
         sstore.release()
 
 
-def _run_store(st: Study, ev: Evaluator, meta: StoreMeta, sstore: SweepStore, done: set[int],
-               backend: str, nworkers: int, scheduler: str | None, client: Any, quiet: bool,
-               progress: bool | None, max_in_flight: int | None) -> SweepResult:
+def _run_store(
+    st: Study,
+    ev: Evaluator,
+    meta: StoreMeta,
+    sstore: SweepStore,
+    done: set[int],
+    backend: str,
+    nworkers: int,
+    scheduler: str | None,
+    client: Any,
+    quiet: bool,
+    progress: bool | None,
+    max_in_flight: int | None,
+) -> SweepResult:
     path = sstore.path
     lay = st.layout
     pending = [k for k in range(lay.n_chunks) if k not in done]
-    stats = SweepStats(n_chunks=lay.n_chunks, n_cases=lay.n_cases, chunks_before=len(done),
-                       backend=backend, workers=nworkers)
+    stats = SweepStats(
+        n_chunks=lay.n_chunks,
+        n_cases=lay.n_cases,
+        chunks_before=len(done),
+        backend=backend,
+        workers=nworkers,
+    )
     if done:
         _note(f"resuming {path}: {len(done)} of {lay.n_chunks} chunks already stored", quiet)
     if not pending:
@@ -336,7 +283,8 @@ def _run_store(st: Study, ev: Evaluator, meta: StoreMeta, sstore: SweepStore, do
     done_cases = sum(lay.block_size(k) for k in done)
     show: bool | None = False if quiet and progress is None else progress
     arrays = sstore.open_arrays(
-        [*meta.outputs, "status", *(st.sample.inputs if st.sample is not None else ())])
+        [*meta.outputs, "status", *(st.sample.inputs if st.sample is not None else ())]
+    )
     t0 = time.perf_counter()
 
     def sink(res: ChunkResult, advance: Callable[[int], None]) -> None:
@@ -357,101 +305,21 @@ def _run_store(st: Study, ev: Evaluator, meta: StoreMeta, sstore: SweepStore, do
     try:
         with _progress(lay.n_cases, done_cases, st.name, show) as advance:
             if backend == "threads":
-                _run_threads(st, pending, ev, meta.outputs, nworkers, sink, advance)
+                run_threads(st, pending, ev, meta.outputs, nworkers, sink, advance)
             elif backend == "processes":
-                _run_processes(st, pending, ev, meta.outputs, nworkers, sink, advance,
-                               max_in_flight)
+                run_processes(st, pending, ev, meta.outputs, nworkers, sink, advance, max_in_flight)
             else:
-                stats.workers = _run_dask(st, pending, ev, meta.outputs, scheduler, client,
-                                          sink, advance, max_in_flight)
+                stats.workers = run_dask(
+                    st, pending, ev, meta.outputs, scheduler, client, sink, advance, max_in_flight
+                )
     except KeyboardInterrupt:
         stats.wall_s = time.perf_counter() - t0
         n_done = len(sstore.done_chunks())
-        _note(f"interrupted: {n_done} of {lay.n_chunks} chunks stored in {path}; run the same "
-              f"command again to continue", quiet)
+        _note(
+            f"interrupted: {n_done} of {lay.n_chunks} chunks stored in {path}; run the same "
+            f"command again to continue",
+            quiet,
+        )
         raise SweepInterrupted() from None
     stats.wall_s = time.perf_counter() - t0
     return SweepResult(path, st, stats)
-
-
-def _run_threads(st: Study, pending: Iterable[int], ev: Evaluator, outputs: Sequence[str],
-                 threads: int, sink: Callable[[ChunkResult, Any], None], advance: Any) -> None:
-    """Chunks in sequence; chunk k is written by a writer thread while chunk k+1 computes (the
-    compiled engine releases the GIL in its parallel region, so the two overlap)."""
-    from concurrent.futures import ThreadPoolExecutor
-
-    with ThreadPoolExecutor(1, thread_name_prefix="sweep-writer") as writer:
-        last: Future[None] | None = None
-        try:
-            for k in pending:
-                res = compute_chunk(st, k, ev, outputs, numba_threads=threads)
-                if last is not None:
-                    last.result()  # at most one chunk waits in memory; errors surface here
-                last = writer.submit(sink, res, advance)
-        finally:
-            if last is not None:
-                last.result()  # never leave a write half done behind an interrupt
-
-
-def _pool_init(threads: int) -> None:
-    # numba.set_num_threads only: changing NUMBA_NUM_THREADS after numba has been imported
-    # (impactlab imports it) makes numba refuse to launch its threads
-    _set_numba_threads(threads)
-
-
-def _run_processes(st: Study, pending: Sequence[int], ev: Evaluator, outputs: Sequence[str],
-                   workers: int, sink: Callable[[ChunkResult, Any], None], advance: Any,
-                   max_in_flight: int | None) -> None:
-    import multiprocessing as mp
-
-    limit = max_in_flight or 2 * workers
-    todo = list(pending)
-    ex = ProcessPoolExecutor(max_workers=workers, mp_context=mp.get_context("spawn"),
-                             initializer=_pool_init, initargs=(1,))
-    running: set[Future[ChunkResult]] = set()
-    try:
-        while todo or running:
-            while todo and len(running) < limit:
-                running.add(ex.submit(compute_chunk, st, todo.pop(0), ev, outputs, 1))
-            finished, running = wait(running, return_when=FIRST_COMPLETED)
-            for fut in finished:
-                sink(fut.result(), advance)
-    except BaseException:
-        ex.shutdown(wait=False, cancel_futures=True)
-        raise
-    ex.shutdown(wait=True)
-
-
-def _run_dask(st: Study, pending: Sequence[int], ev: Evaluator, outputs: Sequence[str],
-              scheduler: str | None, client: Any, sink: Callable[[ChunkResult, Any], None],
-              advance: Any, max_in_flight: int | None) -> int:
-    from distributed import Client, as_completed
-
-    own = client is None
-    cl = Client(scheduler, set_as_default=False) if own else client
-    try:
-        nthreads = sum(cl.nthreads().values()) or 1
-        limit = max_in_flight or max(4, 3 * nthreads)
-        todo = list(pending)
-
-        def submit(k: int) -> Any:
-            return cl.submit(compute_chunk, st, k, ev, tuple(outputs), pure=False,
-                             key=f"impactlab-sweep-chunk-{k}-{os.getpid()}-{time.time_ns()}")
-
-        first = [submit(todo.pop(0)) for _ in range(min(limit, len(todo)))]
-        ac = as_completed(first, loop=cl.loop)
-        try:
-            for fut in ac:
-                res = fut.result()
-                fut.release()
-                sink(res, advance)
-                if todo:
-                    ac.add(submit(todo.pop(0)))
-        except BaseException:
-            for f in list(ac.futures):
-                f.cancel()
-            raise
-        return len(cl.nthreads())
-    finally:
-        if own:
-            cl.close()

@@ -30,10 +30,13 @@ from typing import Any
 import numpy as np
 import xarray as xr
 import zarr
+from zarr.codecs import BloscCodec
 
+from impactlab.sweep.dimensions import SAMPLE_DIM
 from impactlab.sweep.engine import SWEEP_STATUS_MESSAGES
 from impactlab.sweep.inputs import INPUTS, INTEGER_OUTPUTS, get_input, output_spec
-from impactlab.sweep.study import SAMPLE_DIM, STUDY_FORMAT, Study
+from impactlab.sweep.options import STUDY_FORMAT
+from impactlab.sweep.study import Study
 
 _META = ".sweep"
 
@@ -55,8 +58,6 @@ def _compressors() -> Any:
     """Blosc-LZ4 with byte shuffle: 2-3x faster to write than Zarr's default zstd at a similar
     ratio on smooth sweep data (measured: 1.5 vs 3.3 ms per 60k-value chunk), which keeps the
     writes a small fraction of the kernel time."""
-    from zarr.codecs import BloscCodec
-
     return [BloscCodec(cname="lz4", clevel=5, shuffle="shuffle")]
 
 
@@ -82,6 +83,119 @@ def _attrs_units(name: str) -> dict[str, Any]:
     if spec.unit:
         d["units"] = spec.unit
     return d
+
+
+def _create_axes(g: Any, study: Study) -> None:
+    """One coordinate array per grid axis."""
+    for axis in study.axes:
+        arr = axis.array()
+        if axis.is_category:
+            z = g.create_array(
+                axis.name,
+                shape=arr.shape,
+                chunks=arr.shape,
+                dtype=str,
+                fill_value="",
+                dimension_names=(axis.name,),
+                attributes=_attrs_units(axis.name),
+            )
+            z[:] = np.array(arr, dtype=str)
+        else:
+            z = g.create_array(
+                axis.name,
+                shape=arr.shape,
+                chunks=arr.shape,
+                dtype="float64",
+                fill_value=np.nan,
+                dimension_names=(axis.name,),
+                attributes=_attrs_units(axis.name),
+            )
+            z[:] = arr
+
+
+def _create_sampled(g: Any, study: Study) -> list[str]:
+    """The sampled inputs along ``sample`` (filled by the chunk writes); returns their names."""
+    if study.sample is None:
+        return []
+    c = study.layout.chunks[-1]
+    for name in study.sample.inputs:
+        g.create_array(
+            name,
+            shape=(study.sample.size,),
+            chunks=(c,),
+            dtype="float64",
+            fill_value=np.nan,
+            dimension_names=(SAMPLE_DIM,),
+            compressors=_compressors(),
+            attributes={
+                **_attrs_units(name),
+                "distribution": json.dumps(study.sample.inputs[name].to_dict()),
+            },
+        )
+    return list(study.sample.inputs)
+
+
+def _create_constants(g: Any, study: Study) -> list[str]:
+    """The fixed (and defaulted) inputs as scalar arrays; returns their names."""
+    varying = set(study.varying())
+    constants = {n: study.value_of(n) for n in INPUTS if n not in varying}
+    names = []
+    for name, value in sorted((n, v) for n, v in constants.items() if v is not None):
+        if isinstance(value, str):
+            z = g.create_array(
+                name,
+                shape=(),
+                dtype=str,
+                fill_value="",
+                dimension_names=(),
+                attributes=_attrs_units(name),
+            )
+        else:
+            z = g.create_array(
+                name,
+                shape=(),
+                dtype="float64",
+                fill_value=np.nan,
+                dimension_names=(),
+                attributes=_attrs_units(name),
+            )
+        z[...] = value
+        names.append(name)
+    return names
+
+
+def _create_output(
+    g: Any,
+    name: str,
+    meta: StoreMeta,
+    shape: tuple[int, ...],
+    chunks: tuple[int, ...],
+    dims: tuple[str, ...],
+) -> None:
+    """The array of one kept output, chunked like the work; unit and meaning from the schema."""
+    spec = output_spec(name)
+    attrs: dict[str, Any] = {"units": spec.unit, "long_name": spec.description}
+    fill: float
+    if name in meta.integer_outputs:
+        dtype, fill = INTEGER_OUTPUTS.get(name, "int32"), -1
+        if name == "regime" and meta.regimes:
+            attrs["regimes"] = {str(k): v for k, v in meta.regimes.items()}
+            attrs["flag_values"] = sorted(meta.regimes)
+            attrs["flag_meanings"] = " ".join(
+                meta.regimes[k].replace(" ", "_") for k in sorted(meta.regimes)
+            )
+    else:
+        dtype, fill = "float64", np.nan
+    g.create_array(
+        name,
+        shape=shape,
+        chunks=chunks,
+        dtype=dtype,
+        fill_value=fill,
+        dimension_names=dims,
+        attributes=attrs,
+        compressors=_compressors(),
+    )
 
 
 class SweepStore:
@@ -143,90 +257,57 @@ class SweepStore:
 
     def create(self, study: Study, meta: StoreMeta) -> None:
         """Create the store for ``study`` (the path must not hold a store)."""
-        if self.path.exists():
-            if any(self.path.iterdir()):
-                raise ValueError(
-                    f"{str(self.path)!r} exists and is not an empty directory; choose another "
-                    f"--out or remove it"
-                )
+        if self.path.exists() and any(self.path.iterdir()):
+            raise ValueError(
+                f"{str(self.path)!r} exists and is not an empty directory; choose another "
+                f"--out or remove it"
+            )
         lay = study.layout
         g = zarr.open_group(str(self.path), mode="w", zarr_format=3)
-        coords: list[str] = []
-        for axis in study.axes:
-            arr = axis.array()
-            if axis.is_category:
-                z = g.create_array(axis.name, shape=arr.shape, chunks=arr.shape, dtype=str,
-                                   fill_value="", dimension_names=(axis.name,),
-                                   attributes=_attrs_units(axis.name))
-                z[:] = np.array(arr, dtype=str)
-            else:
-                z = g.create_array(axis.name, shape=arr.shape, chunks=arr.shape,
-                                   dtype="float64", fill_value=np.nan,
-                                   dimension_names=(axis.name,),
-                                   attributes=_attrs_units(axis.name))
-                z[:] = arr
-        if study.sample is not None:
-            c = lay.chunks[-1]
-            for name in study.sample.inputs:
-                g.create_array(name, shape=(study.sample.size,), chunks=(c,), dtype="float64",
-                               fill_value=np.nan, dimension_names=(SAMPLE_DIM,),
-                               compressors=_compressors(),
-                               attributes={**_attrs_units(name),
-                                           "distribution": json.dumps(
-                                               study.sample.inputs[name].to_dict())})
-                coords.append(name)
-        varying = set(study.varying())
-        constants = {n: study.value_of(n) for n in INPUTS if n not in varying}
-        for name, value in sorted((n, v) for n, v in constants.items() if v is not None):
-            if isinstance(value, str):
-                z = g.create_array(name, shape=(), dtype=str, fill_value="",
-                                   dimension_names=(), attributes=_attrs_units(name))
-            else:
-                z = g.create_array(name, shape=(), dtype="float64", fill_value=np.nan,
-                                   dimension_names=(), attributes=_attrs_units(name))
-            z[...] = value
-            coords.append(name)
+        _create_axes(g, study)
+        coords = [*_create_sampled(g, study), *_create_constants(g, study)]
         for name in meta.outputs:
-            spec = output_spec(name)
-            attrs: dict[str, Any] = {"units": spec.unit, "long_name": spec.description}
-            fill: float
-            if name in meta.integer_outputs:
-                dtype, fill = INTEGER_OUTPUTS.get(name, "int32"), -1
-                if name == "regime" and meta.regimes:
-                    attrs["regimes"] = {str(k): v for k, v in meta.regimes.items()}
-                    attrs["flag_values"] = sorted(meta.regimes)
-                    attrs["flag_meanings"] = " ".join(
-                        meta.regimes[k].replace(" ", "_") for k in sorted(meta.regimes))
-            else:
-                dtype, fill = "float64", np.nan
-            g.create_array(name, shape=lay.shape, chunks=lay.chunks, dtype=dtype,
-                           fill_value=fill, dimension_names=lay.dims, attributes=attrs,
-                           compressors=_compressors())
-        messages = {**{int(k): v for k, v in meta.status_messages.items()},
-                    **SWEEP_STATUS_MESSAGES}
-        g.create_array("status", shape=lay.shape, chunks=lay.chunks, dtype="int32",
-                       fill_value=-1, dimension_names=lay.dims, compressors=_compressors(),
-                       attributes={"long_name": "case status (0: ok; see 'messages')",
-                                   "units": "1",
-                                   "messages": {str(k): v for k, v in sorted(messages.items())}})
-        g.attrs.update({
-            "title": study.name,
-            "description": study.description,
-            "sweep_format": STUDY_FORMAT,
-            "study_hash": meta.study_hash,
-            "study": study.to_json(),
-            "mode": study.mode,
-            "n_cases": lay.n_cases,
-            "n_chunks": lay.n_chunks,
-            "chunk_shape": list(lay.chunks),
-            "engine": meta.engine,
-            "outputs": list(meta.outputs),
-            "status_messages": {str(k): v for k, v in sorted(messages.items())},
-            "coordinates": " ".join(coords),
-        })
+            _create_output(g, name, meta, lay.shape, lay.chunks, lay.dims)
+        messages = {**{int(k): v for k, v in meta.status_messages.items()}, **SWEEP_STATUS_MESSAGES}
+        g.create_array(
+            "status",
+            shape=lay.shape,
+            chunks=lay.chunks,
+            dtype="int32",
+            fill_value=-1,
+            dimension_names=lay.dims,
+            compressors=_compressors(),
+            attributes={
+                "long_name": "case status (0: ok; see 'messages')",
+                "units": "1",
+                "messages": {str(k): v for k, v in sorted(messages.items())},
+            },
+        )
+        g.attrs.update(
+            {
+                "title": study.name,
+                "description": study.description,
+                "sweep_format": STUDY_FORMAT,
+                "study_hash": meta.study_hash,
+                "study": study.to_json(),
+                "mode": study.mode,
+                "n_cases": lay.n_cases,
+                "n_chunks": lay.n_chunks,
+                "chunk_shape": list(lay.chunks),
+                "engine": meta.engine,
+                "outputs": list(meta.outputs),
+                "status_messages": {str(k): v for k, v in sorted(messages.items())},
+                "coordinates": " ".join(coords),
+            }
+        )
         # the bookkeeping lives in a (data-less) sub-group so that Zarr readers accept it
-        g.create_group(_META, attributes={"description": "impactlab sweep bookkeeping: "
-                                          "study.json and per-chunk completion markers"})
+        g.create_group(
+            _META,
+            attributes={
+                "description": "impactlab sweep bookkeeping: "
+                "study.json and per-chunk completion markers"
+            },
+        )
         self._done_dir.mkdir(parents=True, exist_ok=True)
         tmp = self._meta / ".study.json.tmp"
         tmp.write_text(json.dumps(study.to_dict(), indent=1, sort_keys=True) + "\n")
@@ -240,8 +321,11 @@ class SweepStore:
         try:
             fmt = self.attrs().get("sweep_format")
         except Exception:  # unreadable root metadata of a half-written store
-            return not any(p.name.isdigit() for p in self._done_dir.glob("*")) \
-                if self._done_dir.is_dir() else True
+            return (
+                not any(p.name.isdigit() for p in self._done_dir.glob("*"))
+                if self._done_dir.is_dir()
+                else True
+            )
         return fmt == STUDY_FORMAT and not self.done_chunks()
 
     # -- one writer at a time --------------------------------------------------------------------
@@ -324,8 +408,14 @@ class SweepStore:
         g = zarr.open_group(str(self.path), mode="r+")
         return {n: g[n] for n in names}
 
-    def write_chunk(self, arrays: Mapping[str, Any], study: Study, index: int,
-                    outputs: Mapping[str, np.ndarray], status: np.ndarray) -> None:
+    def write_chunk(
+        self,
+        arrays: Mapping[str, Any],
+        study: Study,
+        index: int,
+        outputs: Mapping[str, np.ndarray],
+        status: np.ndarray,
+    ) -> None:
         """Write chunk ``index``'s outputs and status (1-D, C order over the block), the sampled
         inputs it is the first to cover, then its completion marker."""
         lay = study.layout

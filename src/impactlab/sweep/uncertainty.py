@@ -16,6 +16,7 @@ The sampled inputs of a study are drawn independently, which both measures assum
 
 from __future__ import annotations
 
+import json
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -24,10 +25,14 @@ import numpy as np
 import pandas as pd
 from scipy import stats
 
+from impactlab.sweep.dimensions import SAMPLE_DIM
 from impactlab.sweep.inputs import OUTPUT_ALIASES, output_spec
-from impactlab.sweep.study import SAMPLE_DIM
-
-DEFAULT_OUTPUTS = ("e", "delta_p", "sliding_length", "duration", "mean_force")
+from impactlab.sweep.options import (
+    DEFAULT_PERCENTILES,
+    DEFAULT_UNCERTAINTY_OUTPUTS,
+    UncertaintySpec,
+)
+from impactlab.sweep.study import Study
 
 
 @dataclass(frozen=True)
@@ -78,7 +83,7 @@ def uncertainty_report(
     ds: Any,
     outputs: Sequence[str] | None = None,
     inputs: Sequence[str] | None = None,
-    percentiles: Sequence[float] = (2.5, 50.0, 97.5),
+    percentiles: Sequence[float] = DEFAULT_PERCENTILES,
 ) -> UncertaintyReport:
     """Summarise a Monte Carlo sweep (Dataset with the single dimension ``sample``).
 
@@ -102,7 +107,7 @@ def uncertainty_report(
         if not 0.0 <= float(p) <= 100.0:
             raise ValueError(f"percentiles must lie in [0, 100], got {p!r}")
     if outputs is None:
-        outs = [o for o in DEFAULT_OUTPUTS if o in ds.data_vars]
+        outs = [o for o in DEFAULT_UNCERTAINTY_OUTPUTS if o in ds.data_vars]
     else:
         outs = [OUTPUT_ALIASES.get(o, o) for o in outputs]
         missing = [o for o in outs if o not in ds.data_vars]
@@ -123,8 +128,11 @@ def uncertainty_report(
             raise ValueError(f"input(s) {bad} are not sampled; sampled inputs: {sampled}")
     status = np.asarray(ds["status"].values).ravel()
     valid = status == 0
-    X = np.column_stack([np.asarray(ds[i].values, dtype=np.float64).ravel() for i in ins]) \
-        if ins else np.empty((status.size, 0))
+    X = (
+        np.column_stack([np.asarray(ds[i].values, dtype=np.float64).ravel() for i in ins])
+        if ins
+        else np.empty((status.size, 0))
+    )
     rows = []
     sens = []
     for o in outs:
@@ -143,14 +151,18 @@ def uncertainty_report(
     sensitivity = pd.DataFrame(sens, columns=["output", "input", "rank_corr2", "src2", "r2"])
     if not sensitivity.empty:
         order = {o: i for i, o in enumerate(outs)}
-        sensitivity = sensitivity.assign(_o=sensitivity["output"].map(order)).sort_values(
-            ["_o", "rank_corr2"], ascending=[True, False]).drop(columns="_o")
+        sensitivity = (
+            sensitivity.assign(_o=sensitivity["output"].map(order))
+            .sort_values(["_o", "rank_corr2"], ascending=[True, False])
+            .drop(columns="_o")
+        )
         sensitivity = sensitivity.reset_index(drop=True)
     return UncertaintyReport(summary, sensitivity, int(status.size), int((~valid).sum()))
 
 
-def _sensitivity(output: str, y: np.ndarray, X: np.ndarray, names: Sequence[str]
-                 ) -> list[dict[str, Any]]:
+def _sensitivity(
+    output: str, y: np.ndarray, X: np.ndarray, names: Sequence[str]
+) -> list[dict[str, Any]]:
     if y.size < 3 or X.shape[1] == 0:
         return []
     sx = X.std(axis=0, ddof=1)
@@ -158,8 +170,11 @@ def _sensitivity(output: str, y: np.ndarray, X: np.ndarray, names: Sequence[str]
     sy = y.std(ddof=1)
     out = []
     if not sy > 1e-12 * max(abs(float(y.mean())), 1e-300):  # constant output
-        return [{"output": output, "input": n, "rank_corr2": 0.0, "src2": 0.0, "r2": 0.0}
-                for n, k in zip(names, keep, strict=True) if k]
+        return [
+            {"output": output, "input": n, "rank_corr2": 0.0, "src2": 0.0, "r2": 0.0}
+            for n, k in zip(names, keep, strict=True)
+            if k
+        ]
     Xk = X[:, keep]
     kept = [n for n, k in zip(names, keep, strict=True) if k]
     # standardised regression (linear, raw values)
@@ -174,9 +189,54 @@ def _sensitivity(output: str, y: np.ndarray, X: np.ndarray, names: Sequence[str]
         rx = stats.rankdata(Xk[:, j])
         rx = (rx - rx.mean()) / rx.std()
         rho = float(np.mean(rx * ry))
-        out.append({"output": output, "input": name, "rank_corr2": float(rho**2),
-                    "src2": float(coef[j] ** 2), "r2": r2})
+        out.append(
+            {
+                "output": output,
+                "input": name,
+                "rank_corr2": float(rho**2),
+                "src2": float(coef[j] ** 2),
+                "r2": r2,
+            }
+        )
     return out
+
+
+def study_uncertainty_spec(ds: Any) -> UncertaintySpec | None:
+    """The ``[uncertainty]`` table of the study that wrote the sweep's Dataset (None: none, or
+    no readable study in the attributes)."""
+    try:
+        return Study.from_dict(json.loads(ds.attrs["study"])).uncertainty
+    except (KeyError, ValueError):
+        return None
+
+
+def uncertainty_reports(
+    ds: Any,
+    outputs: Sequence[str] | None = None,
+    percentiles: Sequence[float] | None = None,
+) -> dict[str, UncertaintyReport]:
+    """One :func:`uncertainty_report` per grid point of a (grid+)sample sweep, keyed by a title
+    naming the point ("law = brake, ..."; the study's title for a pure sample). ``outputs`` and
+    ``percentiles`` default to the study's ``[uncertainty]`` table, else the defaults."""
+    spec = study_uncertainty_spec(ds)
+    outs = list(outputs) if outputs else (list(spec.outputs) if spec else None)
+    pcts = (
+        list(percentiles)
+        if percentiles
+        else list(spec.percentiles)
+        if spec
+        else list(DEFAULT_PERCENTILES)
+    )
+    grid_dims = [d for d in ds.dims if d != SAMPLE_DIM]
+    points: list[dict[str, int]] = [{}]
+    for d in grid_dims:
+        points = [{**p, d: i} for p in points for i in range(ds.sizes[d])]
+    reports = {}
+    for p in points:
+        sub = ds.isel(p) if p else ds
+        title = ", ".join(f"{d} = {sub[d].values!s}" for d in p) or str(ds.attrs.get("title"))
+        reports[title] = uncertainty_report(sub, outs, None, pcts)
+    return reports
 
 
 def format_report(rep: UncertaintyReport, title: str = "") -> str:
@@ -188,8 +248,10 @@ def format_report(rep: UncertaintyReport, title: str = "") -> str:
     lines.append("")
     lines.append(rep.summary.to_string(float_format=lambda v: f"{v:.4g}"))
     lines.append("")
-    lines.append("sensitivity (rank_corr2: squared Spearman correlation; src2: squared "
-                 "standardised regression coefficient; r2: linear fit):")
+    lines.append(
+        "sensitivity (rank_corr2: squared Spearman correlation; src2: squared "
+        "standardised regression coefficient; r2: linear fit):"
+    )
     for o, sub in rep.sensitivity.groupby("output", sort=False):
         ranked = ", ".join(f"{r.input} {r.rank_corr2:.3f}" for r in sub.itertuples())
         lines.append(f"  {o}: {ranked}  (r2 = {sub['r2'].iloc[0]:.3f})")

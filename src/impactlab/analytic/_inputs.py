@@ -1,0 +1,96 @@
+"""Input handling shared by the closed forms and the inversion: float arrays with named errors,
+the rod's values, and the magnitudes the library takes where the paper prints negative values."""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from impactlab.bodies import PAPER_ROD, Rod
+
+HALF_PI = 0.5 * math.pi
+_MEASURES = ("slip", "travel")
+
+
+def arr(
+    name: str,
+    value: Any,
+    *,
+    low: float | None = None,
+    high: float | None = None,
+    low_open: bool = False,
+    high_open: bool = False,
+) -> Any:
+    """``value`` as a float64 array (0-d for scalars); ValueError naming ``name`` if it is not a
+    finite real or lies outside [low, high] (open ends where asked)."""
+    try:
+        x = np.asarray(value, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be a real number or array, got {value!r}") from None
+    bad = ~np.isfinite(x)
+    if bad.any():
+        first = x.ravel()[np.flatnonzero(bad.ravel())[0]]
+        raise ValueError(f"{name} must be finite, got {first!r}")
+    if low is not None:
+        out = x <= low if low_open else x < low
+        if out.any():
+            op = ">" if low_open else ">="
+            raise ValueError(f"{name} must be {op} {low:g}, got {x.ravel()[np.argmax(out)]!r}")
+    if high is not None:
+        out = x >= high if high_open else x > high
+        if out.any():
+            op = "<" if high_open else "<="
+            raise ValueError(f"{name} must be {op} {high:g}, got {x.ravel()[np.argmax(out)]!r}")
+    return x
+
+
+def magnitude(name: str, value: Any, what: str) -> Any:
+    """A non-negative length [m] as a float64 array; a negative value raises ValueError that names
+    ``name`` and the convention (the paper's tables print these negative)."""
+    x = arr(name, value)
+    if (x < 0).any():
+        raise ValueError(
+            f"{name} must be >= 0 ({what}, a magnitude in m), got {x.ravel()[np.argmax(x < 0)]!r}: "
+            "the paper's tables print it negative, impactlab takes the magnitude"
+        )
+    return x
+
+
+def out(x: Any) -> Any:
+    """Return a Python float for 0-d results, the array otherwise."""
+    x = np.asarray(x)
+    return float(x) if x.ndim == 0 else x
+
+
+def angle(value: Any) -> Any:
+    """The angle [rad] as a float64 array, checked to lie in [0, pi/2]."""
+    return arr("angle", value, low=0.0, high=HALF_PI)
+
+
+def travel(measure: str) -> bool:
+    """True for ``measure="travel"`` (the contact patch), False for ``"slip"`` (the point O)."""
+    if measure not in _MEASURES:
+        raise ValueError(f"measure must be 'slip' or 'travel', got {measure!r}")
+    return measure == "travel"
+
+
+def rod_values(rod: Rod | None) -> tuple[Any, Any, Any, Any]:
+    """(mass, length, tip_radius, inertia) of ``rod`` (default the paper's rod) as float arrays,
+    validated; ValueError naming the attribute (``rod.mass`` ...) when one is missing or bad."""
+    if rod is None:
+        rod = PAPER_ROD
+    try:
+        raw = (rod.mass, rod.length, rod.tip_radius, getattr(rod, "inertia", None))
+    except AttributeError as exc:
+        raise ValueError(
+            f"rod must be an impactlab.bodies.Rod (mass, length, tip_radius, inertia) ({exc})"
+        ) from None
+    m = arr("rod.mass", raw[0], low=0.0, low_open=True)
+    L = arr("rod.length", raw[1], low=0.0, low_open=True)
+    R = arr("rod.tip_radius", raw[2], low=0.0, low_open=True)
+    inertia = (
+        m * L * L / 12.0 if raw[3] is None else arr("rod.inertia", raw[3], low=0.0, low_open=True)
+    )
+    return m, L, R, inertia

@@ -1,0 +1,250 @@
+"""The paper's closed forms for a rigid rod with a spherical tip, corrected (vectorised).
+
+Source: H. Ghaednia, D. B. Marghitu, R. L. Jackson, Archive of Applied Mechanics 86 (2016)
+121-134, doi:10.1007/s00419-015-1108-2, Eqs. 1-13, 28, 29 (the printed Eqs. 6, 10-13 contain
+errors; derivation in ``docs/analytic.md``). The impulse relations are those of
+:mod:`impactlab.bodies.impulse` (:func:`~impactlab.bodies.impulse_response`,
+:func:`~impactlab.bodies.critical_ratio`) with the rod at rest tangentially and no spin.
+
+Signs: ``angle`` [rad] in [0, pi/2]; ``v_i`` [m/s] the tip's vertical velocity before impact
+(negative, y up); ``delta_p`` [m] the permanent dent depth and a measured sliding length [m] are
+magnitudes >= 0 (the paper prints both negative). The sliding length returned by
+:func:`sliding_length` is the slip along +x, negative in gross sliding, as the engine's.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from impactlab._validation import check_nonnegative
+from impactlab.analytic._inputs import angle as _angle
+from impactlab.analytic._inputs import arr, magnitude, out, rod_values
+from impactlab.analytic._inputs import travel as _travel
+from impactlab.bodies import Rod, critical_ratio, impulse_response, lever_arms
+
+#: Standard gravity [m/s^2].
+G0 = 9.80665
+
+#: The paper's DOI.
+DOI = "10.1007/s00419-015-1108-2"
+
+__all__ = [
+    "DOI",
+    "G0",
+    "alpha",
+    "critical_friction",
+    "friction_from_velocities",
+    "impact_duration",
+    "impulse_coefficients",
+    "lever_arms",
+    "mean_force_momentum",
+    "mean_force_rigid",
+    "sliding_length",
+]
+
+
+def coefficients(
+    th: Any, mu: Any, m: Any, L: Any, R: Any, inertia: Any, travel: bool = False
+) -> tuple[Any, ...]:
+    """Unvalidated core: a, b, k^2, K_x, K_y, alpha, mu_c (arrays). With ``travel`` K_x and alpha
+    refer to the tip sphere's centre (the contact patch) instead of the material point O."""
+    a, b = lever_arms(0.5 * L, R, th)
+    k2 = inertia / m
+    kx_num, ky_num = impulse_response(a, b, k2, mu)
+    if travel:  # lever arm of the sphere centre S: b - R
+        bs = b - R
+        kx_num = mu * (k2 + b * bs) - a * bs
+    K_x = kx_num / (m * k2)
+    K_y = ky_num / (m * k2)
+    alpha_ = kx_num / ky_num
+    mu_c = critical_ratio(a, b, k2)
+    return a, b, k2, K_x, K_y, alpha_, mu_c
+
+
+def impulse_coefficients(
+    angle: Any, mu: Any, rod: Rod | None = None, *, measure: str = "slip"
+) -> tuple[Any, Any]:
+    """Tip-velocity coefficients (K_x, K_y) [1/kg] in gross sliding: v_Ox = K_x P,
+    v_Oy = v_i + K_y P, with P the normal impulse and P_x = mu P (paper Eqs. 8-9, corrected).
+
+        K_x = [mu (k^2 + b^2) - a b] / (m k^2)
+        K_y = [k^2 + a^2 - mu a b] / (m k^2)
+
+    ``measure="travel"`` gives K_x for the tip sphere's centre, which the contact patch (and so the
+    dent) follows: K_x = [mu (k^2 + b (b - R)) - a (b - R)] / (m k^2) (not in the paper; see
+    docs/analytic.md). The default ``"slip"`` is the material point O, as the paper.
+
+    ``angle`` [rad] in [0, pi/2], ``mu`` >= 0; ``rod`` defaults to the paper's rod. K_x < 0 means
+    the tip slides towards -x (gross sliding, mu < mu_c); K_y > 0 throughout the sliding regime.
+    """
+    th = _angle(angle)
+    mu_ = arr("mu", mu, low=0.0)
+    m, L, R, inertia = rod_values(rod)
+    _, _, _, K_x, K_y, _, _ = coefficients(th, mu_, m, L, R, inertia, _travel(measure))
+    return out(K_x), out(K_y)
+
+
+def alpha(angle: Any, mu: Any, rod: Rod | None = None, *, measure: str = "slip") -> Any:
+    """alpha = K_x / K_y = [mu (k^2 + b^2) - a b] / [k^2 + a^2 - mu a b] (paper Eq. 13, corrected).
+
+    Dimensionless. Negative in gross sliding (mu < mu_c), zero at mu = mu_c, positive beyond (where
+    the tip sticks and Eq. 12 does not apply). ``angle`` [rad], ``mu`` >= 0; broadcasts.
+    ``measure="travel"``: the ratio for the contact patch's travel (see
+    :func:`impulse_coefficients`); it changes sign below mu_c, where rolling outweighs slip.
+    """
+    th = _angle(angle)
+    mu_ = arr("mu", mu, low=0.0)
+    m, L, R, inertia = rod_values(rod)
+    return out(coefficients(th, mu_, m, L, R, inertia, _travel(measure))[5])
+
+
+def critical_friction(angle: Any, rod: Rod | None = None) -> Any:
+    """mu_c = a b / (k^2 + b^2): the tip slides throughout the impact for mu < mu_c and sticks from
+    the start for mu >= mu_c (rod at rest tangentially, constant angle). Dimensionless; broadcasts.
+    """
+    th = _angle(angle)
+    m, L, R, inertia = rod_values(rod)
+    return out(coefficients(th, 0.0, m, L, R, inertia)[6])
+
+
+def sliding_length(
+    delta_p: Any,
+    v_i: Any,
+    duration: Any,
+    angle: Any,
+    mu: Any,
+    rod: Rod | None = None,
+    *,
+    measure: str = "slip",
+) -> Any:
+    """Sliding length L_s = -alpha (delta_p + v_i T) [m] along +x (paper Eq. 12, sign fixed).
+
+    ``delta_p`` >= 0 [m] is the dent depth (the paper's delta_p <= 0 is the final tip height, so
+    its form reads L_s = alpha (delta_p - v_i T)), ``v_i`` < 0 [m/s], ``duration`` T > 0 [s]. The
+    result is the slip along +x, negative in gross sliding (the tip slides towards -x), as the
+    engine's ``sliding_length``. ValueError in the sticking regime (mu >= mu_c), where L_s = 0.
+    ``measure="travel"`` gives the contact patch's travel instead of the slip (gravity neglected).
+    """
+    dp = magnitude("delta_p", delta_p, "the permanent dent depth")
+    vi = arr("v_i", v_i, high=0.0, high_open=True)
+    T = arr("duration", duration, low=0.0, low_open=True)
+    th = _angle(angle)
+    mu_ = arr("mu", mu, low=0.0)
+    m, L, R, inertia = rod_values(rod)
+    *_, al, mu_c = coefficients(th, mu_, m, L, R, inertia, _travel(measure))
+    check_sliding(mu_, mu_c, th)
+    return out(al * (-dp - vi * T))
+
+
+def impact_duration(
+    delta_p: Any,
+    sliding_length: Any,
+    v_i: Any,
+    alpha_: Any,
+    *,
+    gravity: bool = False,
+    g: float = G0,
+) -> Any:
+    """Impact duration T [s] from the measured dent: Eq. 12 solved for T.
+
+        T = (L_s / |alpha| + delta_p) / |v_i|                   (gravity neglected, the paper)
+        (g/2) T^2 + |v_i| T = L_s / |alpha| + delta_p           (gravity=True)
+
+    ``delta_p`` >= 0 [m] the dent depth and ``sliding_length`` > 0 [m] the length of the scar
+    (magnitudes; negative values raise ValueError); ``v_i`` the drop velocity [m/s] (sign
+    ignored, != 0). ``alpha_`` must be negative (gross sliding); ``alpha_ >= 0`` means the tip
+    sticks and raises ValueError.
+    """
+    dp = magnitude("delta_p", delta_p, "the permanent dent depth")
+    ls = magnitude("sliding_length (L_s)", sliding_length, "the length of the sliding scar")
+    vi = np.abs(arr("v_i", v_i))
+    al = arr("alpha", alpha_)
+    if (vi == 0).any():
+        raise ValueError("v_i must be non-zero (the drop speed), got 0.0")
+    if (ls == 0).any():
+        raise ValueError(
+            "sliding_length (L_s) must be non-zero: in gross sliding any normal "
+            "impulse makes the tip slide, so a zero sliding length cannot be inverted"
+        )
+    if (al >= 0).any():
+        raise ValueError(
+            f"alpha must be < 0 (gross sliding), got {al.ravel()[np.argmax(al.ravel() >= 0)]!r}: "
+            "alpha >= 0 means mu >= mu_c, the tip sticks and Eq. 12 cannot give the duration"
+        )
+    g_ = check_nonnegative("g", g, "m/s^2")
+    return out(duration_from_dent(dp, ls, vi, np.abs(al), gravity, g_))
+
+
+def duration_from_dent(dp: Any, ls: Any, vi: Any, abs_alpha: Any, gravity: bool, g: float) -> Any:
+    """Unvalidated Eq. 12 solved for T [s] from magnitudes (stable root with gravity)."""
+    c = ls / abs_alpha + dp
+    if not gravity or g == 0.0:
+        return c / vi
+    # stable root of (g/2) T^2 + vi T - c = 0
+    return 2.0 * c / (vi + np.sqrt(vi * vi + 2.0 * g * c))
+
+
+def friction_from_velocities(dv_cx: Any, dv_cy: Any, *, duration: Any = None, g: float = G0) -> Any:
+    """Friction coefficient from the centre-of-mass velocity changes (paper Eq. 28) [-].
+
+    mu = |dv_Cx| / |dv_Cy|. With ``duration`` T [s] the gravity impulse is removed from the
+    vertical change: mu = |dv_Cx| / (dv_Cy + g T) (``dv_cy`` upward positive, as measured).
+    """
+    dx = arr("dv_cx", dv_cx)
+    dy = arr("dv_cy", dv_cy)
+    if duration is not None:
+        T = arr("duration", duration, low=0.0)
+        dy = dy + check_nonnegative("g", g, "m/s^2") * T
+    if (dy == 0).any():
+        raise ValueError("dv_cy must be non-zero (no normal impulse means no friction estimate)")
+    return out(np.abs(dx) / np.abs(dy))
+
+
+def mean_force_momentum(
+    duration: Any, mass: Any, dv_cy: Any, *, gravity: bool = False, g: float = G0
+) -> Any:
+    """Mean normal contact force [N] from the centre-of-mass momentum change (paper Eq. 29).
+
+    F T = m dv_Cy (the paper), or F T = m dv_Cy + m g T with ``gravity=True`` (the measured change
+    of the centre-of-mass velocity includes the gravity impulse, which the contact must overcome).
+    """
+    T = arr("duration", duration, low=0.0, low_open=True)
+    m = arr("mass", mass, low=0.0, low_open=True)
+    dv = arr("dv_cy", dv_cy)
+    g_ = check_nonnegative("g", g, "m/s^2")
+    return out(m * dv / T + (m * g_ if gravity else 0.0))
+
+
+def mean_force_rigid(
+    duration: Any, e: Any, v_i: Any, K_y: Any, *, gravity: bool = False, g: float = G0
+) -> Any:
+    """Mean normal contact force [N] from the rigid-body identity (no centre-of-mass data needed).
+
+    The tip's normal velocity goes from v_i to -e v_i: (1 + e)|v_i| = K_y P (- g T with gravity,
+    which acts on C only and does not turn the rod), so F = (1 + e)|v_i| / (K_y T), or
+    F = [(1 + e)|v_i| + g T] / (K_y T) with ``gravity=True``. ``e`` in [0, 1], ``K_y`` > 0 [1/kg].
+    """
+    T = arr("duration", duration, low=0.0, low_open=True)
+    e_ = arr("e", e, low=0.0, high=1.0)
+    vi = np.abs(arr("v_i", v_i))
+    Ky = arr("K_y", K_y, low=0.0, low_open=True)
+    g_ = check_nonnegative("g", g, "m/s^2")
+    return out(((1.0 + e_) * vi + (g_ * T if gravity else 0.0)) / (Ky * T))
+
+
+def check_sliding(mu: Any, mu_c: Any, th: Any) -> None:
+    """ValueError (naming mu, mu_c and the angle) where mu >= mu_c: the tip sticks."""
+    stick = np.asarray(mu >= mu_c)
+    if stick.any():
+        i = int(np.argmax(stick.ravel()))
+        mu_v = float(np.broadcast_to(mu, stick.shape).ravel()[i])
+        mc = float(np.broadcast_to(mu_c, stick.shape).ravel()[i])
+        ang = math.degrees(float(np.broadcast_to(th, stick.shape).ravel()[i]))
+        raise ValueError(
+            f"sticking regime: mu = {mu_v:.4g} >= mu_c = {mc:.4g} at angle = {ang:.4g} deg, so "
+            "alpha >= 0 and the tip does not slide; the inversion of Eq. 12 needs gross sliding "
+            "(mu < mu_c), it gives no duration here"
+        )

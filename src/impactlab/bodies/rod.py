@@ -1,0 +1,96 @@
+"""A rigid rod with a hemispherical tip (SI units throughout).
+
+The tip sphere's centre lies L/2 from the centre of mass along the rod axis (the paper's Eq. 1,
+doi:10.1007/s00419-015-1108-2); :func:`impactlab.bodies.lever_arms` gives the lever arms at an
+angle. ``Rod.to_params`` gives the float64 vector (layout ``impactlab.bodies.layout``) that the
+compiled engine reads; it carries the effective shear modulus G* of the contact pair (Mindlin
+friction).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from impactlab._validation import check_positive
+from impactlab.bodies._checks import check_material
+from impactlab.bodies.layout import BP_GSTAR, BP_INERTIA, KIND_ROD
+from impactlab.materials import AISI_201, AISI_1010, Material, reduced_shear_modulus
+
+__all__ = ["PAPER_ROD", "Rod"]
+
+
+@dataclass(frozen=True)
+class Rod:
+    """A rigid rod of length ``length`` (the paper's L) [m] with a hemispherical tip of radius
+    ``tip_radius`` [m].
+
+    Parameters
+    ----------
+    length : rod length L [m]; the tip sphere's centre is L/2 from the centre of mass (paper
+        Eq. 1). ``rod.L`` is the same value.
+    tip_radius : radius R of the hemispherical tip [m].
+    mass : mass m [kg].
+    material : the rod's material (elastic constants for the contact pair).
+    inertia : moment of inertia about the centre of mass I_C [kg m^2]; default m L^2 / 12
+        (the paper does not give I_C; m L^2/12 reproduces its impact durations best).
+    """
+
+    length: float
+    tip_radius: float
+    mass: float
+    material: Material = AISI_201
+    inertia: float | None = None
+    _params: np.ndarray = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        L = check_positive("length", self.length, "m")
+        R = check_positive("tip_radius", self.tip_radius, "m")
+        m = check_positive("mass", self.mass, "kg")
+        check_material("material", self.material)
+        inertia = (
+            m * L * L / 12.0
+            if self.inertia is None
+            else check_positive("inertia", self.inertia, "kg m^2")
+        )
+        object.__setattr__(self, "length", L)
+        object.__setattr__(self, "tip_radius", R)
+        object.__setattr__(self, "mass", m)
+        object.__setattr__(self, "inertia", inertia)
+        p = np.array([KIND_ROD, 0.5 * L, R, m, inertia, math.nan], dtype=np.float64)
+        p.setflags(write=False)
+        object.__setattr__(self, "_params", p)
+
+    @classmethod
+    def paper(cls, *, inertia: float | None = None) -> Rod:
+        """The paper's rod (Table 1): R = 8.8 mm, L = 0.3048 m, m = 0.4607 kg, AISI 201."""
+        return cls(
+            length=0.3048, tip_radius=0.0088, mass=0.4607, material=AISI_201, inertia=inertia
+        )
+
+    @property
+    def L(self) -> float:
+        """Rod length L [m] (the paper's symbol; same as ``length``)."""
+        return self.length
+
+    @property
+    def half_length(self) -> float:
+        """Distance from the centre of mass to the tip sphere's centre, L/2 [m]."""
+        return 0.5 * self.L
+
+    @property
+    def inertia_ratio(self) -> float:
+        """I_C / (m L^2), dimensionless (1/12 for a slender rod)."""
+        return float(self._params[BP_INERTIA]) / (self.mass * self.length**2)
+
+    def to_params(self, flat: Material = AISI_1010) -> np.ndarray:
+        """The float64 parameter vector (layout ``BP_*``) for contact with ``flat``."""
+        p = self._params.copy()
+        p[BP_GSTAR] = reduced_shear_modulus(self.material, check_material("flat", flat))
+        return p
+
+
+#: The paper's rod (Table 1 of doi:10.1007/s00419-015-1108-2), I_C = m L^2 / 12.
+PAPER_ROD = Rod.paper()

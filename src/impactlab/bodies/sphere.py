@@ -1,0 +1,73 @@
+"""A rigid sphere (SI units); the contact point's lever arm is its radius."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from impactlab._validation import check_positive
+from impactlab.bodies._checks import check_material
+from impactlab.bodies.layout import BP_GSTAR, BP_INERTIA, KIND_SPHERE
+from impactlab.materials import AISI_201, AISI_1010, Material, reduced_shear_modulus
+
+__all__ = ["Sphere"]
+
+
+@dataclass(frozen=True)
+class Sphere:
+    """A rigid sphere of radius ``radius`` [m]; I = 2/5 m R^2.
+
+    Give either ``mass`` [kg] or ``density`` [kg/m^3]; with neither, the material's density is
+    used (m = 4/3 pi R^3 rho).
+    """
+
+    radius: float
+    mass: float | None = None
+    material: Material = AISI_201
+    density: float | None = None
+    _params: np.ndarray = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        R = check_positive("radius", self.radius, "m")
+        check_material("material", self.material)
+        if self.mass is not None and self.density is not None:
+            raise ValueError("give either mass or density for a Sphere, not both")
+        if self.mass is not None:
+            m = check_positive("mass", self.mass, "kg")
+            rho = m / (4.0 / 3.0 * math.pi * R**3)
+        else:
+            rho = (
+                self.material.density
+                if self.density is None
+                else check_positive("density", self.density, "kg/m^3")
+            )
+            m = 4.0 / 3.0 * math.pi * R**3 * rho
+        object.__setattr__(self, "radius", R)
+        object.__setattr__(self, "mass", m)
+        object.__setattr__(self, "density", rho)
+        p = np.array([KIND_SPHERE, 0.0, R, m, 0.4 * m * R * R, math.nan], dtype=np.float64)
+        p.setflags(write=False)
+        object.__setattr__(self, "_params", p)
+
+    @property
+    def inertia(self) -> float:
+        """Moment of inertia about the centre, 2/5 m R^2 [kg m^2]."""
+        return float(self._params[BP_INERTIA])
+
+    @property
+    def tip_radius(self) -> float:
+        """Contact radius (the sphere's radius) [m]."""
+        return self.radius
+
+    @property
+    def half_length(self) -> float:
+        """0: the contact sphere's centre is the centre of mass."""
+        return 0.0
+
+    def to_params(self, flat: Material = AISI_1010) -> np.ndarray:
+        """The float64 parameter vector (layout ``BP_*``) for contact with ``flat``."""
+        p = self._params.copy()
+        p[BP_GSTAR] = reduced_shear_modulus(self.material, check_material("flat", flat))
+        return p

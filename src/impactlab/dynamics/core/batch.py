@@ -1,0 +1,56 @@
+"""Many impacts in parallel (numba prange) and the residual caps of virgin loadings (dent map)."""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit, prange
+
+from impactlab.contact.kernels import P_ESTAR, loading_force, residual_depth, unloading_radius
+from impactlab.dynamics.core.driver import impact
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def impact_batch(law, lp, fric, bpa, init, mu, g, const_angle, rtol, diag, out, status):
+    """Run ``init.shape[0]`` impacts in parallel (numba prange). ``lp``: (1 or N, NPARAM);
+    ``bpa``: (1 or N, NB); ``init``: (N, 4) [angle, vx, vy, spin]; ``mu``: (N,)."""
+    n = init.shape[0]
+    shared_p = lp.shape[0] == 1
+    shared_b = bpa.shape[0] == 1
+    for i in prange(n):
+        pi = lp[0] if shared_p else lp[i]
+        bi = bpa[0] if shared_b else bpa[i]
+        st, _h, _n = impact(
+            law,
+            pi,
+            fric,
+            bi,
+            init[i, 0],
+            init[i, 1],
+            init[i, 2],
+            init[i, 3],
+            mu[i],
+            g,
+            const_angle,
+            rtol,
+            False,
+            diag,
+            out[i],
+        )
+        status[i] = st
+
+
+@njit(cache=True, error_model="numpy")
+def residual_caps(law, p, delta):
+    """(delta_r, R_r) of the unloading branch from virgin loading to each ``delta`` [m]."""
+    n = delta.shape[0]
+    dr = np.zeros(n)
+    rr = np.full(n, np.inf)
+    for i in range(n):
+        dm = delta[i]
+        if dm <= 0.0:
+            continue
+        Fm = loading_force(law, p, dm)
+        dri = residual_depth(law, p, dm, Fm)
+        dr[i] = dri
+        rr[i] = unloading_radius(p[P_ESTAR], dm, Fm, dri)
+    return dr, rr

@@ -1,0 +1,357 @@
+"""The impact driver: one impact from first touch to separation.
+
+``impact`` initialises (``setup``), runs the step loop (``_integrate``: Dormand-Prince steps,
+event location, history, mode transitions) and writes the results at separation
+(``_separation``). Running extremes and the normal work of compression and restitution are kept
+in the accumulator array ``acc`` (``A_*``).
+
+``_integrate`` (the step loop, about 75 lines) is the longest function of the core: it carries
+the state between steps (step size, event tuple, mode, history buffer) and its early exits.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from impactlab.bodies.layout import BP_KIND, KIND_ROD
+from impactlab.dynamics.core.friction import frictional, sticking
+from impactlab.dynamics.core.history import record as record_row
+from impactlab.dynamics.core.history import record_substeps
+from impactlab.dynamics.core.integrator import dp_step, first_event, integrate_to
+from impactlab.dynamics.core.layout import (
+    C_A0,
+    C_B0,
+    C_G,
+    C_I,
+    C_M,
+    C_MU,
+    EV_LIMIT,
+    EV_SEP,
+    EV_SWITCH,
+    EV_VN,
+    FR_IMPULSE,
+    FR_MINDLIN,
+    FR_NONE,
+    M_COMP,
+    M_DR,
+    M_SIR,
+    MAX_EVENTS,
+    MAX_STEPS,
+    NH,
+    NS,
+    O_ANG,
+    O_CT,
+    O_DMAX,
+    O_DP,
+    O_E,
+    O_ED,
+    O_EE,
+    O_ERISE,
+    O_FEX,
+    O_FMAX,
+    O_FMEAN,
+    O_NST,
+    O_PN,
+    O_PT,
+    O_REG,
+    O_SL,
+    O_SPIN,
+    O_STICK,
+    O_T,
+    O_TMAX,
+    O_VNIN,
+    O_VNOUT,
+    O_VTIN,
+    O_VTOUT,
+    O_VX,
+    O_VY,
+    S_PHI,
+    S_Q,
+    S_SPIN,
+    S_VX,
+    S_VY,
+    S_WORK,
+    S_Y,
+)
+from impactlab.dynamics.core.normal import geometry
+from impactlab.dynamics.core.rhs import energy, evaluate, rhs_events
+from impactlab.dynamics.core.setup import check_inputs, constants, error_scales, initial_mode
+from impactlab.dynamics.core.status import (
+    REGIME_FRICTIONLESS,
+    REGIME_REVERSAL,
+    REGIME_SLIP,
+    REGIME_STICK,
+    ST_LAW_LIMIT,
+    ST_NAN,
+    ST_NO_SEPARATION,
+    ST_NOT_APPROACHING,
+    ST_OK,
+    ST_STEP_UNDERFLOW,
+    ST_TOO_MANY_EVENTS,
+)
+from impactlab.dynamics.core.transitions import restart, switch_mode, without_switch
+from impactlab.dynamics.core.tuples import state_tuple
+
+# --- accumulators over the accepted steps ------------------------------------------------------
+A_EMIN = 0  # lowest total energy so far [J]
+A_ERISE = 1  # largest rise of the total energy above that minimum [J]
+A_FEX = 2  # largest |F_t| - mu F_n [N]
+A_FMAX = 3  # largest normal force [N]
+A_DMAX = 4  # largest interference [m]
+A_TMAX = 5  # time of the largest interference [s]
+A_VSPOS = 6  # largest slip velocity [m/s]
+A_VSNEG = 7  # smallest slip velocity [m/s]
+A_STICK = 8  # time in stick [s]
+A_WMARK = 9  # normal work at the last v_n = 0 event [J]
+A_WCOMP = 10  # normal work of compression [J]
+A_WREST = 11  # normal work of restitution [J]
+NA = 12
+
+_GO_ON = -1  # internal status: the impact goes on
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _track(acc, law, p, fric, c, md, y, evq, t0, t1, diag):
+    """Update ``acc`` over the accepted step [t0, t1] ending at state ``y`` (a tuple, mode
+    ``md`` before any switch, quantities ``evq``); False where the forces are not finite."""
+    if sticking(fric, md):
+        acc[A_STICK] += t1 - t0
+    delta, _a, _b, Fn, Ft, _vn, vs, kt = evq
+    if not (math.isfinite(Fn) and math.isfinite(Ft)):
+        return False
+    if Fn > acc[A_FMAX]:
+        acc[A_FMAX] = Fn
+    if delta > acc[A_DMAX]:
+        acc[A_DMAX] = delta
+        acc[A_TMAX] = t1
+    if vs > acc[A_VSPOS]:
+        acc[A_VSPOS] = vs
+    if vs < acc[A_VSNEG]:
+        acc[A_VSNEG] = vs
+    if diag:
+        en = energy(law, p, fric, c, md, y, Fn, Ft, delta, kt)
+        if en - acc[A_EMIN] > acc[A_ERISE]:
+            acc[A_ERISE] = en - acc[A_EMIN]
+        if en < acc[A_EMIN]:
+            acc[A_EMIN] = en
+        if frictional(fric):
+            ex = abs(Ft) - c[C_MU] * Fn
+            if ex > acc[A_FEX]:
+                acc[A_FEX] = ex
+    return True
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _shrink(err, h, hmin):
+    """(smaller step, _GO_ON or the failure status) after a rejected step with error ``err``."""
+    if not math.isfinite(err):
+        # a non-finite force inside the step (law failure or outside its domain)
+        h *= 0.25
+        return h, (ST_NAN if h < hmin else _GO_ON)
+    h *= max(0.2, 0.9 * err**-0.2)
+    return h, (ST_STEP_UNDERFLOW if h < hmin else _GO_ON)
+
+
+@njit(cache=True, error_model="numpy")
+def _on_event(ev, law, p, fric, c, md, y, evq, acc):
+    """Stop at the event ``ev`` (separation: ST_OK, law limit, failure) or switch: normal-work
+    bookkeeping and mode transition. Returns (status or _GO_ON, constants, mode)."""
+    if ev == EV_SEP:
+        acc[A_WREST] += y[S_WORK] - acc[A_WMARK]
+        return ST_OK, c, md
+    if ev == EV_LIMIT:
+        return ST_LAW_LIMIT, c, md
+    if ev == EV_SWITCH:
+        c = without_switch(c)
+    if ev == EV_VN:
+        if md[M_COMP] != 0.0:
+            acc[A_WCOMP] += y[S_WORK] - acc[A_WMARK]
+        else:
+            acc[A_WREST] += y[S_WORK] - acc[A_WMARK]
+        acc[A_WMARK] = y[S_WORK]
+    st, md = switch_mode(ev, law, p, fric, c, md, y, evq)
+    return (_GO_ON if st == ST_OK else st), c, md
+
+
+@njit(cache=True, error_model="numpy")
+def _integrate(law, p, fric, c, md, y, sc, tstar, dstar, fscale, rtol, record, diag, hist, acc):
+    """The step loop from first touch (state ``y``, mode ``md``) to separation, a failure or
+    MAX_STEPS. Returns (status, t, steps, mode, history, rows)."""
+    hmax = tstar
+    hmin = 1e-14 * tstar
+    ynew, yt, yev = np.empty(NS), np.empty(NS), np.empty(NS)
+    K = np.empty((7, NS))
+    Q = np.empty((NS, 4))
+    t = 0.0
+    h = 0.02 * tstar * rtol**0.2
+    r, gold, evq = rhs_events(law, p, fric, c, md, state_tuple(y))
+    for i in range(NS):
+        K[0, i] = r[i]
+    nh = 0
+    if record:
+        hist, nh = record_row(hist, nh, t, law, p, fric, c, md, state_tuple(y))
+    nsteps = 0
+    nevents = 0
+    status = ST_NO_SEPARATION
+    while nsteps < MAX_STEPS:
+        nsteps += 1
+        if h > hmax:
+            h = hmax
+        err, gnew, evq = dp_step(law, p, fric, c, md, y, K, h, rtol, sc, ynew)
+        if not (err <= 1.0):  # rejected
+            h, st = _shrink(err, h, hmin)
+            if st != _GO_ON:
+                status = st
+                break
+            continue
+        # ---- accepted: the earliest event in this step, the history inside it
+        ev, theta = first_event(gold, gnew, law, p, fric, c, md, y, K, h, Q, yt, record)
+        if ev >= 0:
+            tend = t + theta * h
+        else:
+            theta = 1.0
+            for i in range(NS):
+                yev[i] = ynew[i]
+            tend = t + h
+        if record:
+            hist, nh = record_substeps(hist, nh, t, h, theta, law, p, fric, c, md, y, K, Q, yt)
+        if ev >= 0:
+            nsteps += integrate_to(law, p, fric, c, md, y, K[0], theta * h, rtol, sc, yev) - 1
+            evq = evaluate(law, p, fric, c, md, state_tuple(yev))
+        if not _track(acc, law, p, fric, c, md, state_tuple(yev), evq, t, tend, diag):
+            status = ST_NAN
+            break
+        t = tend
+        for i in range(NS):
+            y[i] = yev[i]
+        h *= 10.0 if err == 0.0 else min(10.0, 0.9 * err**-0.2)
+        if ev < 0:
+            for i in range(NS):
+                K[0, i] = K[6, i]
+            gold = gnew
+            if record:
+                hist, nh = record_row(hist, nh, t, law, p, fric, c, md, state_tuple(y))
+            continue
+        # ---- the event at (t, y): stop, or switch the mode and restart
+        nevents += 1
+        if nevents > MAX_EVENTS:
+            status = ST_TOO_MANY_EVENTS
+            break
+        if record:
+            hist, nh = record_row(hist, nh, t, law, p, fric, c, md, state_tuple(y))
+        st, c, md = _on_event(ev, law, p, fric, c, md, y, evq, acc)
+        if st != _GO_ON:
+            status = st
+            break
+        if fric == FR_MINDLIN:
+            sc[S_Q] = fscale if md[M_COMP] != 0.0 else dstar
+        md, gold = restart(law, p, fric, c, md, y, K)
+    return status, t, nsteps, md, hist, nh
+
+
+@njit(cache=True, error_model="numpy")
+def _regime(fric, md, acc, t, vn0):
+    """Friction regime code of the finished impact (``status.REGIME_*``)."""
+    vs_pos = acc[A_VSPOS]
+    vs_neg = acc[A_VSNEG]
+    sir = md[M_SIR]
+    vtol = 1e-6 * abs(vn0)
+    if fric == FR_NONE:
+        return REGIME_FRICTIONLESS
+    if vs_pos > vtol and vs_neg < -vtol:
+        return REGIME_REVERSAL
+    if fric == FR_IMPULSE and ((sir > 0.0 and vs_pos > vtol) or (sir < 0.0 and vs_neg < -vtol)):
+        # the contact point slid along the constant friction force (friction doing work on the
+        # body): the paper's Eq. 7 is outside its validity (mu beyond mu_c)
+        return REGIME_REVERSAL
+    if acc[A_STICK] > 1e-9 * t:
+        return REGIME_STICK
+    return REGIME_SLIP
+
+
+@njit(cache=True, error_model="numpy")
+def _separation(out, fric, c, md, y, acc, t, vx0, vy0, vn0, th0, rod, e0, diag):
+    """Write the results at separation (state ``y`` at time ``t``) into ``out``."""
+    _delta, a, b, xs, slide = geometry(c, state_tuple(y))
+    m = c[C_M]
+    inertia = c[C_I]
+    g = c[C_G]
+    vx = y[S_VX]
+    vy = y[S_VY]
+    w = y[S_SPIN]
+    vn = vy - w * a
+    vt = vx + w * b
+    w_comp = acc[A_WCOMP]
+    out[O_E] = -vn / vn0
+    out[O_EE] = math.sqrt(max(0.0, -acc[A_WREST] / w_comp)) if w_comp < 0.0 else math.nan
+    out[O_VX] = vx
+    out[O_VY] = vy
+    out[O_SPIN] = w
+    out[O_DP] = md[M_DR]
+    out[O_SL] = slide
+    out[O_CT] = xs
+    pn = m * (vy - vy0) + m * g * t
+    out[O_PN] = pn
+    out[O_FMEAN] = pn / t
+    out[O_PT] = m * (vx - vx0)
+    e_end = 0.5 * m * (vx * vx + vy * vy) + 0.5 * inertia * w * w + m * g * y[S_Y]
+    out[O_ED] = e0 - e_end
+    out[O_STICK] = acc[A_STICK]
+    out[O_REG] = _regime(fric, md, acc, t, vn0)
+    out[O_VNOUT] = vn
+    out[O_VTOUT] = vt
+    out[O_ANG] = th0 + y[S_PHI] if rod else math.nan
+    if diag:
+        fmax = acc[A_FMAX]
+        out[O_ERISE] = acc[A_ERISE] / e0
+        out[O_FEX] = acc[A_FEX] / fmax if fmax > 0.0 else 0.0
+
+
+@njit(cache=True, error_model="numpy")
+def impact(law, p, fric, bp, th0, vx0, vy0, w0, mu, g, const_angle, rtol, record, diag, out):
+    """Simulate one impact; fills ``out`` (OUTPUT_FIELDS) and returns (status, history, n).
+
+    law: contact-law id; p: law parameters (NPARAM); fric: friction id; bp: body vector (NB);
+    th0 [rad], vx0, vy0 [m/s], w0 [rad/s]: initial state at first touch; mu: friction
+    coefficient; g: gravity [m/s^2] (0: off); const_angle: freeze the lever arms at th0;
+    rtol: relative tolerance; record: keep the history; diag: compute the energy diagnostics.
+    """
+    for i in range(out.shape[0]):
+        out[i] = math.nan
+    hist = np.empty((256 if record else 0, NH))
+    status = check_inputs(law, p, fric, bp, th0, vx0, vy0, w0, mu, g, rtol)
+    if status != ST_OK:
+        return status, hist[:0], 0
+    if mu == 0.0:
+        fric = FR_NONE
+    c = constants(p, bp, th0, mu, g, const_angle)
+    vn0 = vy0 - w0 * c[C_A0]
+    vt0 = vx0 + w0 * c[C_B0]
+    out[O_VNIN] = vn0
+    out[O_VTIN] = vt0
+    if not (vn0 < 0.0):
+        return ST_NOT_APPROACHING, hist[:0], 0
+    md = initial_mode(fric, p, c, w0, vn0, vt0)
+    sc, tstar, dstar, fscale = error_scales(fric, p, c, vn0)
+    y = np.zeros(NS)
+    y[S_VX] = vx0
+    y[S_VY] = vy0
+    y[S_SPIN] = w0
+    e0 = 0.5 * c[C_M] * (vx0 * vx0 + vy0 * vy0) + 0.5 * c[C_I] * w0 * w0
+    acc = np.zeros(NA)
+    acc[A_EMIN] = e0
+    status, t, nsteps, md, hist, nh = _integrate(
+        law, p, fric, c, md, y, sc, tstar, dstar, fscale, rtol, record, diag, hist, acc
+    )
+    out[O_NST] = nsteps
+    out[O_DMAX] = acc[A_DMAX]
+    out[O_FMAX] = acc[A_FMAX]
+    out[O_TMAX] = acc[A_TMAX]
+    out[O_T] = t
+    if status != ST_OK:
+        return status, hist[:nh], nh
+    _separation(out, fric, c, md, y, acc, t, vx0, vy0, vn0, th0, bp[BP_KIND] == KIND_ROD, e0, diag)
+    return ST_OK, hist[:nh], nh

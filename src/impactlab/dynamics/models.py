@@ -1,0 +1,140 @@
+"""Contact models and body vectors for the compiled engine, built once per distinct input.
+
+``build_contact_model`` is the one place where the engine's users (``simulate``,
+``simulate_batch``, the sweep) build a ContactModel; it is cached by value (laws, materials and
+parameters are immutable and hashable). ``kernel_params`` and ``body_params`` give the
+float64 vectors the compiled core reads, cached per model object and per (body, flat) value.
+``references_used`` lists the sources a result records.
+"""
+
+from __future__ import annotations
+
+import functools
+import weakref
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+
+from impactlab.bodies import Rod, Sphere
+from impactlab.contact import ContactModel, get_law
+from impactlab.friction import FrictionModel
+from impactlab.materials import ContactPair, Material
+from impactlab.references import Reference, cite
+
+#: The integrator's sources: Dormand & Prince (1980), Shampine's dense output (1986).
+INTEGRATOR_REFERENCES: tuple[Reference, ...] = cite("dormand-prince-1980", "shampine-1986")
+
+_PARAMS: weakref.WeakKeyDictionary[ContactModel, np.ndarray] = weakref.WeakKeyDictionary()
+
+
+@functools.lru_cache(maxsize=1024)
+def _build(
+    law: str,
+    body_material: Material,
+    flat: Material,
+    radius: float,
+    law_params: tuple[tuple[str, float], ...],
+) -> ContactModel:
+    return get_law(law).build(ContactPair(body_material, flat), radius, **dict(law_params))
+
+
+def build_contact_model(
+    law: str,
+    body_material: Material,
+    flat: Material,
+    radius: float,
+    law_params: Mapping[str, float] | None = None,
+) -> ContactModel:
+    """The ContactModel of the registered law ``law`` for a sphere (rod tip) of ``radius`` [m]
+    made of ``body_material`` on ``flat``, with the law's ``law_params`` (cached by value).
+
+    ValueError for an unknown law, unknown or invalid parameters, or non-numeric values.
+    """
+    params = dict(law_params or {})
+    key = tuple(sorted(params.items()))
+    try:
+        hash(key)
+    except TypeError:  # unhashable parameter values
+        raise ValueError(f"law_params values must be numbers, got {params!r}") from None
+    return _build(str(law), body_material, flat, radius, key)
+
+
+def contact_model(
+    body: Rod | Sphere,
+    flat: Material,
+    law: str | ContactModel,
+    law_params: Mapping[str, float] | None = None,
+) -> ContactModel:
+    """The (cached) ContactModel of ``law`` for ``body`` on ``flat``.
+
+    ``law`` is a registered law name or a ready ContactModel (then ``law_params`` must be
+    empty and its radius must equal the body's tip radius).
+    """
+    R = body.tip_radius
+    if isinstance(law, ContactModel):
+        if law_params:
+            raise ValueError("law_params cannot be combined with a ready ContactModel")
+        if abs(law.radius - R) > 1e-12 * R:
+            raise ValueError(
+                f"law: the ContactModel's radius ({law.radius!r} m) differs from the body's tip "
+                f"radius ({R!r} m); build the model with radius={R!r}"
+            )
+        return law
+    if not isinstance(law, str):
+        raise ValueError(f"law must be a law name or a ContactModel, got {type(law).__name__}")
+    return build_contact_model(law, body.material, flat, R, law_params)
+
+
+def kernel_params(model: ContactModel) -> np.ndarray:
+    """A writable C-contiguous copy of ``model.params`` for the compiled engine (one numba
+    specialisation for every caller: read-only arrays would compile a second one). Cached per
+    model object, for as long as the model lives."""
+    p = _PARAMS.get(model)
+    if p is None:
+        p = np.require(np.array(model.params, dtype=np.float64), np.float64, ["C", "W"])
+        _PARAMS[model] = p
+    return p
+
+
+def references_used(
+    model: ContactModel, friction: FrictionModel, frictional: bool
+) -> tuple[Reference, ...]:
+    """The sources a computation with ``model`` used: the contact law, the friction model
+    (only when ``frictional``, i.e. some mu > 0) and the integrator, without repeats."""
+    refs = [*model.references]
+    if frictional:
+        refs += friction.references
+    refs += INTEGRATOR_REFERENCES
+    return tuple(dict.fromkeys(refs))
+
+
+def _hashable(*values: Any) -> bool:
+    try:
+        hash(values)
+    except TypeError:
+        return False
+    return True
+
+
+@functools.lru_cache(maxsize=256)
+def _cached_body_params(body: Rod | Sphere, flat: Material) -> np.ndarray:
+    return np.require(body.to_params(flat), np.float64, ["C", "W"])
+
+
+def body_params(body: Rod | Sphere, flat: Material) -> np.ndarray:
+    """The body vector (``impactlab.bodies.layout``) of ``body`` on ``flat`` for the compiled
+    engine (writable, C-contiguous; cached by value)."""
+    if _hashable(body, flat):
+        return _cached_body_params(body, flat)
+    return np.require(body.to_params(flat), np.float64, ["C", "W"])
+
+
+__all__ = [
+    "INTEGRATOR_REFERENCES",
+    "body_params",
+    "build_contact_model",
+    "contact_model",
+    "kernel_params",
+    "references_used",
+]

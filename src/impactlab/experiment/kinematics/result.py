@@ -1,0 +1,138 @@
+"""The measured impact: :class:`ImpactKinematics` (estimates with uncertainties, diagnostics)."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from impactlab.experiment.kinematics.fits import SegmentFit, segment_data
+from impactlab.experiment.kinematics.frame import G0
+from impactlab.experiment.rigid import Poses, RigidityReport
+from impactlab.experiment.uncertainty import Estimate
+
+__all__ = ["ImpactKinematics"]
+
+
+@dataclass(frozen=True)
+class ImpactKinematics:
+    """The measured impact (SI units; frame and signs in the package docstring).
+
+    Estimates (value, sigma): ``t_impact`` [s], ``angle_in``/``angle_out`` (rod angle to the
+    flat at the impact instant, from the fits before/after) [rad], ``v_c_in``/``v_c_out`` ((x, y)
+    of the centre of mass [m/s]), ``spin_in``/``spin_out`` (counter-clockwise) [rad/s],
+    ``v_tip_in``/``v_tip_out`` ((x, y) of the contact point [m/s]), ``e`` (= -v_tip,y,out /
+    v_tip,y,in), ``mu`` (= |dv_Cx / dv_Cy|, paper Eq. 28), ``dv_cx``, ``dv_cy`` [m/s],
+    ``v_c_z_in``/``v_c_z_out`` (out-of-plane, should be ~0) [m/s]. ``correlation``: correlation
+    matrix of the derived quantities (names in ``derived_names``). Diagnostics: ``pre``/``post``
+    fits, ``rigidity``, ``fitted_gravity`` [m/s^2], ``tilt_out_of_plane`` [rad], ``warnings``.
+    """
+
+    t_impact: Estimate
+    angle_in: Estimate
+    angle_out: Estimate
+    v_c_in: tuple[Estimate, Estimate]
+    v_c_out: tuple[Estimate, Estimate]
+    spin_in: Estimate
+    spin_out: Estimate
+    v_tip_in: tuple[Estimate, Estimate]
+    v_tip_out: tuple[Estimate, Estimate]
+    e: Estimate
+    mu: Estimate
+    dv_cx: Estimate
+    dv_cy: Estimate
+    v_c_z_in: Estimate
+    v_c_z_out: Estimate
+    derived_names: tuple[str, ...]
+    derived_values: np.ndarray = field(repr=False)
+    derived_cov: np.ndarray = field(repr=False)
+    pre: SegmentFit = field(repr=False)
+    post: SegmentFit = field(repr=False)
+    impact_frame: int = -1
+    t_ref: float = 0.0
+    gravity: float = G0
+    half_length: float = 0.0
+    tip_radius: float = 0.0
+    frame_axes: np.ndarray = field(default_factory=lambda: np.eye(3), repr=False)
+    origin: np.ndarray = field(default_factory=lambda: np.zeros(3), repr=False)
+    com_body: np.ndarray = field(default_factory=lambda: np.zeros(3), repr=False)
+    axis_body: np.ndarray = field(default_factory=lambda: np.array([1.0, 0, 0]), repr=False)
+    geometry_source: str = "given"
+    rigidity: RigidityReport | None = field(default=None, repr=False)
+    fitted_gravity: float | None = None
+    tilt_out_of_plane: float = 0.0
+    poses: Poses | None = field(default=None, repr=False)
+    warnings: tuple[str, ...] = ()
+
+    @property
+    def v_i(self) -> Estimate:
+        """Normal (vertical) tip velocity before the impact [m/s] (negative: downwards)."""
+        return self.v_tip_in[1]
+
+    @property
+    def correlation(self) -> np.ndarray:
+        s = np.sqrt(np.clip(np.diag(self.derived_cov), 0, None))
+        with np.errstate(invalid="ignore", divide="ignore"):
+            c = self.derived_cov / np.outer(s, s)
+        return np.nan_to_num(c)
+
+    def series(self) -> tuple[np.ndarray, np.ndarray]:
+        """All frames with a pose: (time [s], (n, 4) X, Y, Z of C [m] and the rod angle [rad])
+        in the impact frame (NaN where no pose)."""
+        if self.poses is None:
+            return np.zeros(0), np.zeros((0, 4))
+        fr = np.flatnonzero(self.poses.ok)
+        data = segment_data(
+            self.poses, fr, self.com_body, self.axis_body, self.frame_axes, self.origin
+        )
+        return self.poses.time[fr], data
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready summary (SI units; angles also in degrees)."""
+
+        def est(x: Estimate) -> dict[str, Any]:
+            return x.to_dict()
+
+        d: dict[str, Any] = {
+            "t_impact": est(self.t_impact),
+            "angle_in": est(self.angle_in),
+            "angle_in_deg": est(self.angle_in.scaled(180.0 / math.pi, "deg")),
+            "angle_out": est(self.angle_out),
+            "v_c_in": [est(v) for v in self.v_c_in],
+            "v_c_out": [est(v) for v in self.v_c_out],
+            "spin_in": est(self.spin_in),
+            "spin_out": est(self.spin_out),
+            "v_tip_in": [est(v) for v in self.v_tip_in],
+            "v_tip_out": [est(v) for v in self.v_tip_out],
+            "v_i": est(self.v_i),
+            "e": est(self.e),
+            "mu": est(self.mu),
+            "dv_cx": est(self.dv_cx),
+            "dv_cy": est(self.dv_cy),
+            "v_c_z_in": est(self.v_c_z_in),
+            "v_c_z_out": est(self.v_c_z_out),
+            "impact_frame": self.impact_frame,
+            "frames_before": self.pre.n,
+            "frames_after": self.post.n,
+            "fit_rms_before": {
+                "X_m": self.pre.rms[0],
+                "Y_m": self.pre.rms[1],
+                "Z_m": self.pre.rms[2],
+                "angle_rad": self.pre.rms[3],
+            },
+            "fit_rms_after": {
+                "X_m": self.post.rms[0],
+                "Y_m": self.post.rms[1],
+                "Z_m": self.post.rms[2],
+                "angle_rad": self.post.rms[3],
+            },
+            "geometry": self.geometry_source,
+            "fitted_gravity": self.fitted_gravity,
+            "tilt_out_of_plane_deg": math.degrees(self.tilt_out_of_plane),
+            "warnings": list(self.warnings),
+        }
+        if self.rigidity is not None:
+            d["rigidity"] = self.rigidity.to_dict()
+        return d

@@ -1,0 +1,192 @@
+"""C3D marker files (https://www.c3d.org): 3D points in metres, occlusions masked.
+
+The file is read with ``ezc3d``; when ezc3d is missing or fails on the file, the pure-Python
+``c3d`` package is tried. Point units come from the ``POINT:UNITS`` parameter (e.g. "mm") unless
+``units=`` overrides them; samples with a negative residual (the C3D convention for an invalid
+point) or non-finite coordinates are masked (NaN), never used. A file whose data section is
+shorter than its header announces (a truncated file) is refused: both readers would otherwise
+silently return the frames that happen to be there.
+"""
+
+from __future__ import annotations
+
+import math
+import struct
+import warnings
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from impactlab.experiment.errors import FileFormatError
+from impactlab.experiment.markers.tracks import MarkerTracks, length_factor
+
+__all__ = ["read_c3d"]
+
+
+def _c3d_header_check(path: Path, n_points: int, n_frames_read: int, scale: float) -> None:
+    """Refuse a C3D file whose data section is shorter than its header announces.
+
+    Reads the 512-byte header directly (C3D spec: word 1 byte 2 = 0x50; words 2, 4, 5, 9, 10 =
+    points, first frame, last frame, data-start block, analog samples per frame); the byte order
+    comes from the processor type in the parameter section (84 Intel, 85 DEC: little endian;
+    86 MIPS: big).
+    """
+    raw = path.read_bytes()
+    if len(raw) < 512 or raw[1] != 0x50:
+        raise FileFormatError(path, "not a C3D file (bad header: no 0x50 signature)")
+    pblock = raw[0]
+    off = (pblock - 1) * 512
+    if pblock < 2 or len(raw) < off + 4:
+        raise FileFormatError(path, "truncated C3D file: the parameter section is missing")
+    proc = raw[off + 3]
+    end = ">" if proc == 86 else "<"
+    words = struct.unpack(end + "12H", raw[:24])
+    first, last = words[3], words[4]
+    data_start = words[8]
+    analog_per_frame = words[9]
+    header_frames = last - first + 1 if last >= first else 0
+    bytes_per = 4 if scale < 0 else 2
+    frame_bytes = n_points * 4 * bytes_per + analog_per_frame * bytes_per
+    # Files with more than 65535 frames store the count in a parameter (not in the header); the
+    # size check then compares against what the reader found.
+    frames = max(header_frames, n_frames_read)
+    expected = (data_start - 1) * 512 + frames * frame_bytes
+    if len(raw) < expected:
+        have = max(0, (len(raw) - (data_start - 1) * 512) // max(frame_bytes, 1))
+        raise FileFormatError(
+            path,
+            f"truncated C3D file: the header announces {frames} frames "
+            f"({expected} bytes) but the file has {len(raw)} bytes (about {have} complete frames)",
+        )
+
+
+def _read_ezc3d(path: Path) -> dict[str, Any]:
+    import ezc3d  # the backends are imported on use: read_c3d falls back when one is missing
+
+    c = ezc3d.c3d(str(path), extract_forceplat_data=False)
+    params = c["parameters"]["POINT"]
+    pts = np.asarray(c["data"]["points"], dtype=np.float64)  # (4, m, n)
+    if pts.ndim != 3 or pts.shape[0] < 3:
+        raise ValueError(f"unexpected point array shape {pts.shape}")
+    xyz = np.transpose(pts[:3], (2, 1, 0)).copy()  # (n, m, 3)
+    res = c["data"]["meta_points"].get("residuals") if "meta_points" in c["data"] else None
+    if res is not None and np.size(res):
+        r = np.asarray(res, dtype=np.float64)[0].T  # (n, m)
+        xyz[~(np.isfinite(r) & (r >= 0.0))] = np.nan
+    labels = list(params["LABELS"]["value"]) if "LABELS" in params else []
+    units = None
+    if "UNITS" in params and params["UNITS"]["value"]:
+        units = str(params["UNITS"]["value"][0]).strip() or None
+    scale = float(params["SCALE"]["value"][0]) if "SCALE" in params else -1.0
+    rate = float(c["header"]["points"]["frame_rate"])
+    return {
+        "xyz": xyz,
+        "labels": labels,
+        "units": units,
+        "rate": rate,
+        "scale": scale,
+        "backend": "ezc3d",
+    }
+
+
+def _read_pyc3d(path: Path) -> dict[str, Any]:
+    import c3d  # the backends are imported on use: read_c3d falls back when one is missing
+
+    with path.open("rb") as fh, warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        r = c3d.Reader(fh)
+        frames = []
+        for _i, points, _analog in r.read_frames(copy=True):
+            p = np.asarray(points, dtype=np.float64)
+            xyz = p[:, :3].copy()
+            if p.shape[1] > 3:
+                resid = p[:, 3]
+                xyz[~(np.isfinite(resid) & (resid >= 0.0))] = np.nan
+            frames.append(xyz)
+        labels = [str(s).strip() for s in r.point_labels]
+        try:
+            units = r.get("POINT:UNITS").string_value.strip() or None
+        except (AttributeError, KeyError):
+            units = None
+        scale = float(r.point_scale)
+        rate = float(r.point_rate)
+    xyz_all = np.stack(frames, axis=0) if frames else np.zeros((0, len(labels), 3))
+    return {
+        "xyz": xyz_all,
+        "labels": labels,
+        "units": units,
+        "rate": rate,
+        "scale": scale,
+        "backend": "c3d",
+    }
+
+
+def read_c3d(path: str | Path, *, units: str | None = None, backend: str = "auto") -> MarkerTracks:
+    """Read the 3D points of a C3D file.
+
+    Parameters
+    ----------
+    path : the .c3d file.
+    units : length unit of the stored coordinates; overrides ``POINT:UNITS`` (needed only when the
+        file lacks it).
+    backend : "auto" (ezc3d, then the pure-Python ``c3d`` package), "ezc3d" or "c3d".
+
+    Returns :class:`MarkerTracks` in metres, time from 0 at the first frame. Raises
+    :class:`FileFormatError` naming the file for a missing, corrupt, truncated or empty file.
+    """
+    p = Path(path)
+    if not p.is_file():
+        raise FileFormatError(p, "file does not exist" if not p.exists() else "not a file")
+    if backend not in ("auto", "ezc3d", "c3d"):
+        raise ValueError(f"backend must be 'auto', 'ezc3d' or 'c3d', got {backend!r}")
+    if p.stat().st_size == 0:
+        raise FileFormatError(p, "empty file")
+    problems: list[str] = []
+    data: dict[str, Any] | None = None
+    order = ["ezc3d", "c3d"] if backend == "auto" else [backend]
+    for name in order:
+        try:
+            data = _read_ezc3d(p) if name == "ezc3d" else _read_pyc3d(p)
+            break
+        except ImportError as exc:
+            problems.append(f"{name} is not installed ({exc})")
+        except Exception as exc:  # both libraries raise assorted types on bad files
+            problems.append(f"{name}: {type(exc).__name__}: {str(exc).strip()[:200]}")
+    if data is None:
+        raise FileFormatError(p, "not a readable C3D file (" + "; ".join(problems) + ")")
+    xyz = data["xyz"]
+    if xyz.shape[0] == 0 or xyz.shape[1] == 0:
+        raise FileFormatError(
+            p, f"the C3D file holds no 3D point data ({xyz.shape[0]} frames, {xyz.shape[1]} points)"
+        )
+    _c3d_header_check(p, xyz.shape[1], xyz.shape[0], data["scale"])
+    rate = data["rate"]
+    if not (math.isfinite(rate) and rate > 0):
+        raise FileFormatError(p, f"invalid point rate {rate!r} Hz in the C3D header")
+    unit = units if units is not None else data["units"]
+    if unit is None:
+        raise FileFormatError(
+            p, "the C3D file has no POINT:UNITS parameter; pass units= (e.g. units='mm')"
+        )
+    try:
+        fac = length_factor(unit, name="POINT:UNITS" if units is None else "units")
+    except ValueError as exc:
+        raise FileFormatError(p, str(exc)) from None
+    labels = list(data["labels"])[: xyz.shape[1]]
+    labels += [f"P{i + 1}" for i in range(len(labels), xyz.shape[1])]
+    labels = [s.strip() or f"P{i + 1}" for i, s in enumerate(labels)]
+    t = np.arange(xyz.shape[0], dtype=np.float64) / rate
+    return MarkerTracks(
+        t,
+        xyz * fac,
+        tuple(labels),
+        str(p),
+        {
+            "format": "c3d",
+            "backend": data["backend"],
+            "units": unit,
+            "rate": rate,
+            "fallback_notes": problems,
+        },
+    )

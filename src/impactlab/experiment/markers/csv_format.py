@@ -1,0 +1,195 @@
+"""Marker tracks as CSV text (the layout documented in docs/experiment.md)::
+
+    # units: mm                 <- length unit of the coordinates (or pass units=)
+    # rate: 500                 <- optional; needed only with a 'frame' column
+    time,M1_x,M1_y,M1_z,M2_x,M2_y,M2_z,M3_x,M3_y,M3_z
+    0.000,12.31,45.60,301.2,...
+    0.002,,,,...                <- empty cells (or NaN) mark an occluded marker
+
+The first column is ``time`` [s] (or ``frame``, a frame number, with a rate); then three columns
+per marker named ``<label>_x``, ``<label>_y``, ``<label>_z`` (separators ``_ . :`` or a space,
+any case). Commas, semicolons or tabs separate the fields.
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+import re
+from pathlib import Path
+
+import numpy as np
+
+from impactlab.experiment.errors import FileFormatError
+from impactlab.experiment.markers.tracks import MarkerTracks, length_factor
+from impactlab.experiment.textfiles import split_commented
+
+__all__ = ["read_csv_markers", "write_csv_markers"]
+
+_COORD = re.compile(r"^(?P<label>.+?)[\s_.:]+(?P<axis>[xyzXYZ])$")
+
+
+def _header(p: Path, header_ln: int, header: str) -> tuple[str, list[str], list[str]]:
+    """(delimiter, column names, marker labels) from the header line."""
+    delim = max([",", ";", "\t"], key=header.count)
+    if header.count(delim) == 0:
+        raise FileFormatError(
+            p,
+            f"line {header_ln}: the header has a single column; expected "
+            "'time,<label>_x,<label>_y,<label>_z,...' separated by commas",
+        )
+    names = [c.strip() for c in next(csv.reader([header], delimiter=delim))]
+    first = names[0].lower()
+    if first not in ("time", "t", "time_s", "time [s]", "frame"):
+        raise FileFormatError(
+            p,
+            f"line {header_ln}: the first column must be 'time' (seconds) "
+            f"or 'frame', got {names[0]!r}",
+        )
+    coord_cols = names[1:]
+    if len(coord_cols) == 0 or len(coord_cols) % 3:
+        raise FileFormatError(
+            p,
+            f"line {header_ln}: expected three columns (x, y, z) per marker "
+            f"after the time column, got {len(coord_cols)} columns",
+        )
+    labels: list[str] = []
+    for i in range(0, len(coord_cols), 3):
+        trip = []
+        for j, axis in enumerate("xyz"):
+            m = _COORD.match(coord_cols[i + j])
+            if m is None or m.group("axis").lower() != axis:
+                raise FileFormatError(
+                    p,
+                    f"line {header_ln}: column {i + j + 2} ({coord_cols[i + j]!r}) should be "
+                    f"'<label>_{axis}'",
+                )
+            trip.append(m.group("label"))
+        if len(set(trip)) != 1:
+            raise FileFormatError(
+                p, f"line {header_ln}: columns {coord_cols[i : i + 3]} do not name one marker"
+            )
+        labels.append(trip[0])
+    return delim, names, labels
+
+
+def _data(p: Path, rows: list[tuple[int, str]], delim: str, ncol: int) -> np.ndarray:
+    """(rows, ncol) values of the data lines; NaN for empty cells."""
+    data = np.full((len(rows), ncol), np.nan)
+    for r, (ln, line) in enumerate(rows):
+        cells = next(csv.reader([line], delimiter=delim))
+        if len(cells) != ncol:
+            raise FileFormatError(
+                p,
+                f"line {ln}: expected {ncol} fields, found {len(cells)} "
+                "(truncated or malformed row)",
+            )
+        for c, cell in enumerate(cells):
+            cs = cell.strip()
+            if cs == "" or cs.lower() in ("nan", "na", "null"):
+                if c == 0:
+                    raise FileFormatError(p, f"line {ln}: the time/frame value is missing")
+                continue
+            try:
+                data[r, c] = float(cs)
+            except ValueError:
+                raise FileFormatError(
+                    p, f"line {ln}, column {c + 1}: {cs!r} is not a number"
+                ) from None
+    return data
+
+
+def _unit(p: Path, units: str | None, meta: dict[str, str]) -> tuple[str, float]:
+    """(the coordinates' length unit, metres per unit) from ``units=`` and ``# units:``."""
+    file_units = meta.get("units") or meta.get("unit")
+    if (
+        units is not None
+        and file_units is not None
+        and not math.isclose(length_factor(units), length_factor(file_units))
+    ):
+        raise FileFormatError(
+            p, f"units={units!r} disagrees with the file's '# units: {file_units}'"
+        )
+    unit = units if units is not None else file_units
+    if unit is None:
+        raise FileFormatError(
+            p,
+            "no length unit: add a '# units: mm' line to the file or pass "
+            "units= (e.g. --marker-units mm)",
+        )
+    try:
+        return unit, length_factor(unit, name="units")
+    except ValueError as exc:
+        raise FileFormatError(p, str(exc)) from None
+
+
+def _time(
+    p: Path, tcol: np.ndarray, is_frame: bool, rate: float | None, meta: dict[str, str]
+) -> np.ndarray:
+    """Frame times [s] from the first column (times, or frame numbers with a rate)."""
+    if is_frame:
+        fr = rate
+        if fr is None and "rate" in meta:
+            try:
+                fr = float(meta["rate"].split()[0])
+            except ValueError:
+                raise FileFormatError(p, f"'# rate: {meta['rate']}' is not a number") from None
+        if fr is None or not (math.isfinite(fr) and fr > 0):
+            raise FileFormatError(
+                p, "a 'frame' column needs the frame rate: add '# rate: 500' or pass rate="
+            )
+        tcol = (tcol - tcol[0]) / fr
+    if np.any(np.diff(tcol) <= 0):
+        row = int(np.flatnonzero(np.diff(tcol) <= 0)[0])
+        raise FileFormatError(p, f"time does not increase at data row {row + 2}")
+    return tcol
+
+
+def read_csv_markers(
+    path: str | Path, *, units: str | None = None, rate: float | None = None
+) -> MarkerTracks:
+    """Read marker tracks from a CSV file (layout in the module docstring and docs/experiment.md).
+
+    ``units`` (length unit of the coordinates) is needed unless the file has a ``# units:`` line;
+    if both are given they must agree. ``rate`` [Hz] is needed only for a ``frame`` column without
+    a ``# rate:`` line. Raises :class:`FileFormatError` naming the file and line for bad content.
+    """
+    p = Path(path)
+    if not p.is_file():
+        raise FileFormatError(p, "file does not exist" if not p.exists() else "not a file")
+    try:
+        text = p.read_text(encoding="utf-8-sig")
+    except UnicodeDecodeError:
+        raise FileFormatError(p, "not a text (CSV) file: it is not UTF-8 text") from None
+    meta, rows = split_commented(text)
+    if not rows:
+        raise FileFormatError(p, "no header and no data rows")
+    header_ln, header = rows[0]
+    delim, names, labels = _header(p, header_ln, header)
+    data = _data(p, rows[1:], delim, len(names))
+    if data.shape[0] < 2:
+        raise FileFormatError(p, f"only {data.shape[0]} data rows; need at least 2 frames")
+    unit, fac = _unit(p, units, meta)
+    tcol = _time(p, data[:, 0], names[0].lower() == "frame", rate, meta)
+    xyz = data[:, 1:].reshape(data.shape[0], len(labels), 3) * fac
+    return MarkerTracks(tcol, xyz, tuple(labels), str(p), {"format": "csv", "units": unit})
+
+
+def write_csv_markers(tracks: MarkerTracks, path: str | Path, *, units: str = "mm") -> Path:
+    """Write ``tracks`` in the documented CSV layout (occluded samples as empty cells)."""
+    fac = length_factor(units)
+    p = Path(path)
+    with p.open("w", newline="", encoding="utf-8") as fh:
+        fh.write(f"# impactlab marker tracks\n# units: {units}\n")
+        w = csv.writer(fh)
+        w.writerow(["time"] + [f"{lab}_{a}" for lab in tracks.labels for a in "xyz"])
+        pos = tracks.positions / fac
+        for k in range(tracks.n_frames):
+            row = [f"{tracks.time[k]:.6f}"]
+            for j in range(tracks.n_markers):
+                if np.all(np.isfinite(pos[k, j])):
+                    row += [f"{v:.5f}" for v in pos[k, j]]
+                else:
+                    row += ["", "", ""]
+            w.writerow(row)
+    return p

@@ -1,0 +1,28 @@
+"""One reader for marker files: the format from the extension (or the C3D signature)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from impactlab.experiment.errors import FileFormatError
+from impactlab.experiment.markers.c3d import read_c3d
+from impactlab.experiment.markers.csv_format import read_csv_markers
+from impactlab.experiment.markers.tracks import MarkerTracks
+
+__all__ = ["read_markers"]
+
+
+def read_markers(
+    path: str | Path, *, units: str | None = None, rate: float | None = None
+) -> MarkerTracks:
+    """Read marker tracks, choosing the reader by extension (.c3d, else CSV/text)."""
+    p = Path(path)
+    if p.suffix.lower() == ".c3d":
+        return read_c3d(p, units=units)
+    if p.suffix.lower() in (".csv", ".txt", ".tsv"):
+        return read_csv_markers(p, units=units, rate=rate)
+    if p.is_file():
+        head = p.read_bytes()[:512]
+        if len(head) >= 2 and head[1] == 0x50:
+            return read_c3d(p, units=units)
+    raise FileFormatError(p, f"unknown marker file type {p.suffix!r}; expected .c3d or .csv")

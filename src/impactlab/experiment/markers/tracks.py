@@ -1,0 +1,117 @@
+"""Marker tracks (positions in metres, occlusions masked) and the length units of marker files."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from impactlab.units import registry
+
+__all__ = ["MarkerTracks", "length_factor"]
+
+
+def length_factor(unit: str, *, name: str = "units") -> float:
+    """Metres per ``unit`` (e.g. "mm" -> 1e-3). ValueError naming ``name`` for a unit that is not
+    a length."""
+    text = str(unit).strip().replace("µ", "u").replace("μ", "u")
+    if not text:
+        raise ValueError(f"{name} is empty; expected a length unit such as 'mm' or 'm'")
+    ureg = registry()
+    try:
+        u = ureg.Unit(text)
+    except Exception:  # pint's parser raises assorted types (TokenError, AssertionError, ...)
+        raise ValueError(
+            f"{name}: {unit!r} is not a known unit; expected a length unit such as 'mm' or 'm'"
+        ) from None
+    if u.dimensionality != ureg.Unit("m").dimensionality:
+        raise ValueError(f"{name}: {unit!r} is not a length unit; expected e.g. 'mm' or 'm'")
+    return float((1.0 * u).to("m").magnitude)
+
+
+@dataclass(frozen=True)
+class MarkerTracks:
+    """Marker positions over time (SI).
+
+    Attributes
+    ----------
+    time : (n,) frame times [s], strictly increasing.
+    positions : (n, m, 3) marker positions [m] in the camera (lab) frame; NaN where a marker is
+        occluded or invalid.
+    labels : the m marker labels.
+    source : where the data came from (a file path), for messages.
+    """
+
+    time: np.ndarray
+    positions: np.ndarray
+    labels: tuple[str, ...]
+    source: str = ""
+    meta: dict[str, Any] = field(default_factory=dict, compare=False, repr=False)
+
+    def __post_init__(self) -> None:
+        t = np.array(self.time, dtype=np.float64).reshape(-1)
+        p = np.array(self.positions, dtype=np.float64)
+        where = f" ({self.source})" if self.source else ""
+        if p.ndim != 3 or p.shape[2] != 3:
+            raise ValueError(
+                f"positions must have shape (frames, markers, 3), got {p.shape}{where}"
+            )
+        if p.shape[0] != t.size:
+            raise ValueError(
+                f"time has {t.size} entries but positions has {p.shape[0]} frames{where}"
+            )
+        if t.size < 2:
+            raise ValueError(f"marker tracks need at least 2 frames, got {t.size}{where}")
+        if not np.all(np.isfinite(t)):
+            raise ValueError(f"time must be finite{where}")
+        if np.any(np.diff(t) <= 0):
+            k = int(np.flatnonzero(np.diff(t) <= 0)[0])
+            raise ValueError(
+                f"time must increase strictly; frame {k + 1} ({t[k + 1]!r} s) does "
+                f"not follow frame {k} ({t[k]!r} s){where}"
+            )
+        labels = tuple(str(s) for s in self.labels)
+        if len(labels) != p.shape[1]:
+            raise ValueError(f"{len(labels)} labels for {p.shape[1]} markers{where}")
+        if len(set(labels)) != len(labels):
+            raise ValueError(f"marker labels must be unique, got {labels}{where}")
+        p = p.copy()
+        bad = ~np.all(np.isfinite(p), axis=2)
+        p[bad] = np.nan
+        t.setflags(write=False)
+        p.setflags(write=False)
+        object.__setattr__(self, "time", t)
+        object.__setattr__(self, "positions", p)
+        object.__setattr__(self, "labels", labels)
+
+    @property
+    def n_frames(self) -> int:
+        return int(self.time.size)
+
+    @property
+    def n_markers(self) -> int:
+        return int(self.positions.shape[1])
+
+    @property
+    def valid(self) -> np.ndarray:
+        """(n, m) True where the marker was seen."""
+        return np.all(np.isfinite(self.positions), axis=2)
+
+    @property
+    def rate(self) -> float:
+        """Frame rate [Hz] (median of 1/dt)."""
+        return float(1.0 / np.median(np.diff(self.time)))
+
+    def select(self, labels: list[str] | tuple[str, ...]) -> MarkerTracks:
+        """The tracks of the named markers only (in that order)."""
+        missing = [s for s in labels if s not in self.labels]
+        if missing:
+            raise ValueError(
+                f"markers {missing} not in {self.source or 'the tracks'}; "
+                f"available: {list(self.labels)}"
+            )
+        idx = [self.labels.index(s) for s in labels]
+        return MarkerTracks(
+            self.time, self.positions[:, idx, :], tuple(labels), self.source, dict(self.meta)
+        )

@@ -1,0 +1,77 @@
+"""Levelling a scan: a plane fitted robustly to the surface around the dent, then subtracted."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy import ndimage
+
+from impactlab.experiment.profilometry.heightmap import HeightMap
+
+__all__ = ["Levelled", "level_plane"]
+
+
+@dataclass(frozen=True)
+class Levelled:
+    """A levelled height map: ``z`` (ny, nx) [m] (NaN = no data) after subtracting the plane
+    ``plane`` = (a, b, c) [m, -, -] (z_plane = a + b x + c y), the ``inliers`` used for the plane,
+    the robust noise ``sigma`` [m] of the inliers, ``iterations``."""
+
+    z: np.ndarray
+    plane: tuple[float, float, float]
+    inliers: np.ndarray
+    sigma: float
+    iterations: int
+
+
+def level_plane(
+    hm: HeightMap,
+    *,
+    k: float = 3.0,
+    border: float = 0.12,
+    max_iter: int = 30,
+    exclude_dilation: int = 3,
+) -> Levelled:
+    """Fit and subtract a plane, robustly, so the dent and its pile-up do not bias it.
+
+    Start from the pixels of a border frame (``border`` x the size on each side, outside the dent
+    in a centred scan); then iterate: least-squares plane on the inliers, robust sigma of their
+    residuals (1.4826 x median absolute deviation), new inliers = pixels within ``k`` sigma,
+    with the outliers' neighbourhood (``exclude_dilation`` pixels) excluded too; stop when the
+    inlier set no longer changes."""
+    z = hm.z
+    valid = np.isfinite(z)
+    X, Y = hm.coords()
+    ny, nx = z.shape
+    bx = max(2, int(border * nx))
+    by = max(2, int(border * ny))
+    frame = np.zeros_like(valid)
+    frame[:by, :] = frame[-by:, :] = True
+    frame[:, :bx] = frame[:, -bx:] = True
+    inl = valid & frame
+    if inl.sum() < 20:
+        inl = valid.copy()
+    coef = np.zeros(3)
+    sigma = 0.0
+    it = 0
+    for it in range(1, max_iter + 1):  # noqa: B007
+        A = np.column_stack([np.ones(inl.sum()), X[inl], Y[inl]])
+        coef, *_ = np.linalg.lstsq(A, z[inl], rcond=None)
+        res = z - (coef[0] + coef[1] * X + coef[2] * Y)
+        r_in = res[inl]
+        sigma = float(1.4826 * np.median(np.abs(r_in - np.median(r_in))))
+        if sigma == 0.0:
+            sigma = float(np.std(r_in)) or 1e-15
+        out = valid & (np.abs(np.nan_to_num(res)) > k * sigma)
+        if exclude_dilation > 0:
+            out = ndimage.binary_dilation(out, iterations=exclude_dilation)
+        new = valid & ~out
+        if new.sum() < 20:
+            break
+        if np.array_equal(new, inl):
+            break
+        inl = new
+    zl = z - (coef[0] + coef[1] * X + coef[2] * Y)
+    zl.setflags(write=False)
+    return Levelled(zl, (float(coef[0]), float(coef[1]), float(coef[2])), inl, sigma, it)

@@ -1,0 +1,82 @@
+"""The dent metrics measured on a scan (:class:`DentMetrics`, SI units)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from impactlab.experiment.profilometry.heightmap import HeightMap
+from impactlab.experiment.uncertainty import Estimate
+
+__all__ = ["DentMetrics"]
+
+
+@dataclass(frozen=True)
+class DentMetrics:
+    """The dent measured on a scan (SI; definitions in the package docstring).
+
+    ``delta_p`` (maximum depth below the levelled surface, a positive magnitude),
+    ``sliding_length`` (L_s = length - width, a magnitude: >= 0 up to its uncertainty, not
+    clipped), ``length``, ``width``: :class:`Estimate` [m]. ``deepest`` (x, y) [m] in the scan;
+    ``axis`` unit vector of the sliding axis (scan x, y) oriented along the sliding direction;
+    ``sliding_angle`` [deg] of that direction from the scan's +x axis; ``direction_ambiguous``;
+    ``end_sharpness`` (80 %-to-20 % fall distance [m] at the start and at the end);
+    ``deepest_fraction`` (position of the deepest point from the start, 0..1); ``pileup`` [m]
+    and ``pileup_at`` (x, y); ``outline`` (k, 2) [m]; ``edge_threshold``, ``noise`` [m];
+    ``plane``; ``dropout_fraction`` (whole scan) and ``filled_in_dent`` (fraction of the dent
+    area interpolated); ``profile`` (s [m] along the axis from the deepest point, height [m])
+    and ``cross_profile`` (the same across it).
+    """
+
+    delta_p: Estimate
+    sliding_length: Estimate
+    length: Estimate
+    width: Estimate
+    deepest: tuple[float, float]
+    axis: tuple[float, float]
+    sliding_angle: float
+    direction_ambiguous: bool
+    end_sharpness: tuple[float, float]
+    deepest_fraction: float
+    pileup: float
+    pileup_at: tuple[float, float]
+    outline: np.ndarray = field(repr=False)
+    edge_threshold: float = 0.0
+    noise: float = 0.0
+    plane: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    dropout_fraction: float = 0.0
+    filled_in_dent: float = 0.0
+    profile: tuple[np.ndarray, np.ndarray] = field(default=(np.zeros(0), np.zeros(0)), repr=False)
+    cross_profile: tuple[np.ndarray, np.ndarray] = field(
+        default=(np.zeros(0), np.zeros(0)), repr=False
+    )
+    levelled: HeightMap | None = field(default=None, repr=False)
+    source: str = ""
+    warnings: tuple[str, ...] = ()
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready summary (SI)."""
+        return {
+            "delta_p": self.delta_p.to_dict(),
+            "sliding_length": self.sliding_length.to_dict(),
+            "length": self.length.to_dict(),
+            "width": self.width.to_dict(),
+            "deepest_xy_m": list(self.deepest),
+            "sliding_axis": list(self.axis),
+            "sliding_angle_deg": self.sliding_angle,
+            "direction_ambiguous": self.direction_ambiguous,
+            "end_fall_distance_m": {"start": self.end_sharpness[0], "end": self.end_sharpness[1]},
+            "deepest_fraction": self.deepest_fraction,
+            "pileup_height_m": self.pileup,
+            "pileup_xy_m": list(self.pileup_at),
+            "edge_threshold_m": self.edge_threshold,
+            "noise_m": self.noise,
+            "plane": list(self.plane),
+            "dropout_fraction": self.dropout_fraction,
+            "filled_in_dent": self.filled_in_dent,
+            "outline_points": int(self.outline.shape[0]),
+            "source": self.source,
+            "warnings": list(self.warnings),
+        }

@@ -1,0 +1,145 @@
+"""The analytic part of the reproduction (no simulation): the experimental rows by the paper's
+inversion (Eqs. 12 and 29), their sensitivity to the rod's unknown inertia, and the
+self-consistency of the published simulated rows.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from typing import Any
+
+import pandas as pd
+from scipy.optimize import brentq
+
+import impactlab.analytic as an
+from impactlab.bodies import Rod
+from impactlab.paper import data as D
+from impactlab.paper.quantities import rel_diff, scaled
+
+#: I_C / (m L^2) values for the inertia sensitivity.
+INERTIA_RATIOS: tuple[float, ...] = (0.05, 1 / 15, 1 / 12, 0.1, 0.12, 0.15)
+
+
+def invert_case(x: D.Experiment, **kw: Any) -> an.InversionResult:
+    """The paper's inversion of one experiment (``kw``: options of ``analytic.invert``); the
+    paper's negative dent depth and sliding length enter as the magnitudes the library takes."""
+    return an.invert(
+        angle=x.angle,
+        v_i=x.v_i,
+        e=x.e,
+        mu=x.mu,
+        delta_p=abs(x.delta_p),
+        sliding_length=abs(x.L_s),
+        n_samples=kw.pop("n_samples", 200),
+        **kw,
+    )
+
+
+def rod_with_inertia_ratio(q: float) -> Rod:
+    """The paper's rod with I_C = q m L^2."""
+    m, L = D.PAPER_ROD.mass, D.PAPER_ROD.length
+    return Rod(length=L, tip_radius=D.PAPER_ROD.tip_radius, mass=m, inertia=q * m * L * L)
+
+
+def experimental_rows(rod: Any = None) -> pd.DataFrame:
+    """The experimental-analytic rows: T and F from the measurements (paper method: Eq. 12 with
+    slip, gravity neglected, rigid-body identity for F), next to the published values, plus the
+    variants with gravity and with L_s read as the contact patch's travel."""
+    rows = []
+    for ang, x in D.EXPERIMENTS.items():
+        pub = D.published_row(ang, "experiment")
+        r = invert_case(x, rod=rod)
+        rg = invert_case(x, rod=rod, gravity=True)
+        rt = invert_case(x, rod=rod, measure="travel")
+        T_pub = pub.T if pub else None
+        F_pub = pub.F if pub else None
+        rows.append(
+            {
+                "angle [deg]": ang,
+                "mu": x.mu,
+                "mu_c": r.mu_c,
+                "alpha": r.alpha,
+                "K_y [1/kg]": r.K_y,
+                "T published [ms]": scaled(T_pub, 1e3),
+                "T [ms]": r.T * 1e3,
+                "T rel. diff": rel_diff(r.T, T_pub),
+                "T with gravity [ms]": rg.T * 1e3,
+                "T (L_s as travel) [ms]": rt.T * 1e3,
+                "F published [N]": F_pub,
+                "F [N]": r.F,
+                "F rel. diff": rel_diff(r.F, F_pub),
+                "F with gravity [N]": rg.F,
+                "dv_Cy implied by published F T [m/s]": (
+                    F_pub * T_pub / D.PAPER_ROD.mass if pub and F_pub and T_pub else None
+                ),
+                "dv_Cy rigid body [m/s]": r.F * r.T / D.PAPER_ROD.mass,
+            }
+        )
+    return pd.DataFrame(rows)
+
+
+def inertia_sensitivity(ratios: Iterable[float] = INERTIA_RATIOS) -> pd.DataFrame:
+    """T of the experimental rows for several I_C / (m L^2) (paper method), and the ratio at which
+    each published T would be met exactly (a diagnostic, not used anywhere)."""
+    rows = []
+    for q in ratios:
+        rod = rod_with_inertia_ratio(q)
+        row: dict[str, Any] = {"I_C/(m L^2)": q}
+        for ang, x in D.EXPERIMENTS.items():
+            row[f"T {ang} deg [ms]"] = invert_case(x, rod=rod).T * 1e3
+        rows.append(row)
+    match: dict[str, Any] = {"I_C/(m L^2)": "matching published T"}
+    for ang, x in D.EXPERIMENTS.items():
+        pub = D.published_row(ang, "experiment")
+        if pub is None or pub.T is None:
+            match[f"T {ang} deg [ms]"] = None
+            continue
+
+        def f(q: float, x: D.Experiment = x, T: float = pub.T) -> float:
+            return invert_case(x, rod=rod_with_inertia_ratio(q)).T - T
+
+        try:
+            match[f"T {ang} deg [ms]"] = brentq(f, 0.02, 0.2, xtol=1e-7)
+        except ValueError:
+            match[f"T {ang} deg [ms]"] = None
+    rows.append(match)
+    return pd.DataFrame(rows)
+
+
+def published_consistency() -> pd.DataFrame:
+    """Self-consistency of every published simulated row (Tables 2, 3 and the Sec. 5.2 text).
+
+    For a rigid rod in gross sliding the normal impulse is P = (1 + e)|v_i| / K_y (gravity
+    neglected) and P <= (1 + e) m |v_i| whenever mu b <= a; the published F T should equal P. Eq. 12
+    must also tie the row's own L_s to its delta_p and T.
+    """
+    rows = []
+    for r in (*D.TABLE_ROWS, *D.TEXT_ROWS):
+        if r.model == "experiment":
+            continue
+        x = D.EXPERIMENTS[int(r.angle_deg)]
+        al = an.alpha(x.angle, x.mu)
+        _, K_y = an.impulse_coefficients(x.angle, x.mu)
+        assert r.e is not None and r.T is not None and r.F is not None
+        assert r.delta_p is not None and r.L_s is not None
+        P = (1 + r.e) * abs(x.v_i) / K_y
+        bound = (1 + r.e) * D.PAPER_ROD.mass * abs(x.v_i)
+        ls12 = al * (r.delta_p - x.v_i * r.T)
+        rows.append(
+            {
+                "source": r.table,
+                "angle [deg]": r.angle_deg,
+                "model": r.model,
+                "F T [N s]": r.F * r.T,
+                "(1+e)|v_i|/K_y [N s]": P,
+                "ratio": r.F * r.T / P,
+                "(1+e) m |v_i| [N s]": bound,
+                "exceeds bound": bool(r.F * r.T > bound),
+                "implied m_eff [kg]": r.F * r.T / ((1 + r.e) * abs(x.v_i)),
+                "rod m_eff = 1/K_y [kg]": 1 / K_y,
+                "L_s published [um]": r.L_s * 1e6,
+                "L_s from Eq. 12 [um]": ls12 * 1e6,
+                "Eq. 12 rel. diff": r.L_s / ls12 - 1.0,
+            }
+        )
+    return pd.DataFrame(rows)

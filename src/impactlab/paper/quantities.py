@@ -1,0 +1,54 @@
+"""What the reproduction compares: the quantities, their display scales, the tolerances, and the
+simulated results in the paper's sign convention (dent depth negative, as its tables print it).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+#: Tolerances of the comparison (relative): simulated e and delta_p, the experimental T.
+TOL_SIMULATED = 0.15
+TOL_EXPERIMENT_T = 0.05
+
+#: The compared quantities: (attribute of ``PublishedRow``, column label, display scale).
+QUANTS: tuple[tuple[str, str, float], ...] = (
+    ("delta_p", "delta_p [um]", 1e6),
+    ("L_s", "L_s [um]", 1e6),
+    ("e", "e", 1.0),
+    ("T", "T [ms]", 1e3),
+    ("F", "F [N]", 1.0),
+)
+
+#: Simulations keyed by (angle [deg], law, friction), values ``ImpactResult``.
+Simulations = Mapping[tuple[int, str, str], Any]
+
+
+def scaled(x: float | None, scale: float) -> float | None:
+    """``x * scale`` (None stays None)."""
+    return None if x is None else x * scale
+
+
+def rel_diff(ours: float | None, pub: float | None) -> float | None:
+    """Relative difference ours / pub - 1 (for the negative depths and lengths: the difference in
+    magnitude, negative when impactlab's is smaller)."""
+    if ours is None or pub is None or pub == 0:
+        return None
+    return ours / pub - 1.0
+
+
+def paper_depth(res: Any) -> float:
+    """The simulated dent depth in the paper's sign convention (negative; the engine reports the
+    residual depth of the unloading branch as a magnitude) [m]."""
+    return -abs(float(res.delta_p))
+
+
+def sim_value(res: Any, q: str) -> float:
+    """The simulated value of quantity ``q`` (a ``QUANTS`` key) in SI, paper signs."""
+    return {
+        "delta_p": paper_depth(res),
+        "L_s": res.sliding_length,
+        "e": res.e,
+        "T": res.duration,
+        "F": res.mean_force,
+    }[q]

@@ -1,0 +1,176 @@
+"""The literature impactlab cites: one registry of references with their DOIs.
+
+Models carry the references they implement (``ContactLaw.references``,
+``FrictionModel.references``, the engine's integrator), and results record the references a
+computation used. ``confirmed`` is True only where the DOI was checked against the publisher's
+record in this project (see docs/laws/index.md, "References and their status"); the other DOIs
+are carried over from the sources' own citations and are not verified here. A reference whose
+DOI is unknown has ``doi == ""`` and ``url == ""``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from types import MappingProxyType
+
+
+@dataclass(frozen=True)
+class Reference:
+    """A cited source: registry ``key``, ``citation`` text, ``doi`` and ``url``
+    (https://doi.org/<doi>, filled in from the DOI)."""
+
+    key: str
+    citation: str
+    doi: str = ""
+    url: str = field(default="")
+    confirmed: bool = False
+
+    def __post_init__(self) -> None:
+        if self.doi and not self.url:
+            object.__setattr__(self, "url", f"https://doi.org/{self.doi}")
+
+    def __str__(self) -> str:
+        return f"{self.citation}, doi:{self.doi}" if self.doi else self.citation
+
+
+PAPER = "ghaednia-2016-impact"
+"""Key of the seed paper (Ghaednia, Marghitu & Jackson 2016, Arch. Appl. Mech.)."""
+
+_ALL: tuple[Reference, ...] = (
+    Reference(
+        PAPER,
+        "H. Ghaednia, D. B. Marghitu, R. L. Jackson, Permanent deformation during the oblique "
+        "impact with friction, Archive of Applied Mechanics 86 (2016) 121-134",
+        "10.1007/s00419-015-1108-2",
+    ),
+    Reference(
+        "hertz-1882",
+        "H. Hertz, Ueber die Beruehrung fester elastischer Koerper, J. reine angew. Math. 92 "
+        "(1882) 156-171",
+        "10.1515/crll.1882.92.156",
+    ),
+    Reference(
+        "johnson-1985",
+        "K. L. Johnson, Contact Mechanics, Cambridge University Press (1985)",
+        "10.1017/CBO9781139171731",
+    ),
+    Reference(
+        "ghaednia-2016-contact",
+        "H. Ghaednia, S. A. Pope, R. L. Jackson, D. B. Marghitu, A comprehensive study of the "
+        "elasto-plastic contact of a sphere and a flat, Tribology International 93 (2016) 78-90",
+        "10.1016/j.triboint.2015.09.005",
+    ),
+    Reference(
+        "jackson-green-2005",
+        "R. L. Jackson, I. Green, A finite element study of elasto-plastic hemispherical contact "
+        "against a rigid flat, J. Tribol. 127 (2005) 343-354",
+        "10.1115/1.1866166",
+        confirmed=True,
+    ),
+    Reference(
+        "green-2005",
+        "I. Green, Proc. IMechE C 219 (2005) (critical values, C(nu))",
+    ),
+    Reference(
+        "kogut-etsion-2002",
+        "L. Kogut, I. Etsion, J. Appl. Mech. 69 (2002) 657",
+        "10.1115/1.1490373",
+        confirmed=True,
+    ),
+    Reference(
+        "kogut-komvopoulos-2004",
+        "L. Kogut, K. Komvopoulos, Analysis of the spherical indentation cycle for elastic-"
+        "perfectly plastic solids, J. Mater. Res. 19 (2004) 3641-3653",
+        "10.1557/JMR.2004.0468",
+    ),
+    Reference(
+        "brake-2015",
+        "M. R. W. Brake, An analytical elastic plastic contact model with strain hardening and "
+        "frictional effects for normal and oblique impacts, Int. J. Solids Struct. 62 (2015) "
+        "104-123",
+        "10.1016/j.ijsolstr.2015.02.019",
+    ),
+    Reference(
+        "brake-2012",
+        "M. R. W. Brake, Int. J. Solids Struct. 49 (2012) 3129-3141 (elastic-perfectly plastic "
+        "contact model)",
+    ),
+    Reference(
+        "thornton-1997",
+        "C. Thornton, Coefficient of restitution for collinear collisions of elastic-perfectly "
+        "plastic spheres, J. Appl. Mech. 64 (1997) 383-386",
+        "10.1115/1.2787319",
+    ),
+    Reference(
+        "stronge-2000",
+        "W. J. Stronge, Impact Mechanics, Cambridge University Press (2000)",
+        "10.1017/CBO9780511626432",
+    ),
+    Reference(
+        "mindlin-deresiewicz-1953",
+        "R. D. Mindlin, H. Deresiewicz, J. Appl. Mech. 20 (1953) 327",
+    ),
+    Reference(
+        "di-renzo-di-maio-2004",
+        "A. Di Renzo, F. P. Di Maio, Chem. Eng. Sci. 59 (2004) 525 (comparison of contact-force "
+        "models for DEM)",
+        "10.1016/j.ces.2003.09.037",
+    ),
+    Reference(
+        "thornton-cummins-cleary-2011",
+        "C. Thornton, S. J. Cummins, P. W. Cleary, Powder Technol. 210 (2011) 189",
+    ),
+    Reference(
+        "maw-barber-fawcett-1976",
+        "N. Maw, J. R. Barber, J. N. Fawcett, The oblique impact of elastic spheres, Wear 38 "
+        "(1976) 101-114",
+        "10.1016/0043-1648(76)90063-6",
+    ),
+    Reference(
+        "dormand-prince-1980",
+        "J. R. Dormand, P. J. Prince, A family of embedded Runge-Kutta formulae, J. Comput. "
+        "Appl. Math. 6 (1980) 19-26",
+        "10.1016/0771-050X(80)90013-3",
+    ),
+    Reference(
+        "shampine-1986",
+        "L. F. Shampine, Some practical Runge-Kutta formulas, Math. Comp. 46 (1986) 135-150",
+        "10.1090/S0025-5718-1986-0815836-3",
+    ),
+    Reference(
+        "kabsch-1976",
+        "W. Kabsch, A solution for the best rotation to relate two sets of vectors, Acta Cryst. "
+        "A32 (1976) 922-923",
+        "10.1107/S0567739476001873",
+    ),
+    Reference(
+        "saltelli-2008",
+        "A. Saltelli et al., Global Sensitivity Analysis: The Primer, Wiley (2008)",
+        "10.1002/9780470725184",
+    ),
+    Reference(
+        "steele-lea-flood-2014",
+        "G. L. Steele, D. Lea, C. H. Flood, Fast splittable pseudorandom number generators, "
+        "OOPSLA 2014",
+        "10.1145/2660193.2660195",
+    ),
+)
+
+REFERENCES: MappingProxyType[str, Reference] = MappingProxyType({r.key: r for r in _ALL})
+"""key -> Reference: every source the package cites (read-only)."""
+
+
+def cite(*keys: str) -> tuple[Reference, ...]:
+    """The references registered under ``keys``, in order; ValueError for an unknown key."""
+    unknown = [key for key in keys if key not in REFERENCES]
+    if unknown:
+        raise ValueError(f"unknown reference key(s) {unknown}; known: {', '.join(REFERENCES)}")
+    return tuple(REFERENCES[key] for key in keys)
+
+
+def dois(references: tuple[Reference, ...]) -> tuple[str, ...]:
+    """The DOIs of ``references`` (those that have one), in order, without repeats."""
+    return tuple(dict.fromkeys(r.doi for r in references if r.doi))
+
+
+__all__ = ["PAPER", "REFERENCES", "Reference", "cite", "dois"]

@@ -1,0 +1,66 @@
+"""Study-wide options: the study format, the default chunk size, the engine options and what the
+uncertainty report summarises."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+from impactlab.sweep.inputs import OUTPUT_ALIASES
+
+#: Version of the study/store format; part of the study hash.
+STUDY_FORMAT = "impactlab-sweep/1"
+#: Default number of cases per chunk.
+DEFAULT_CHUNK_SIZE = 65536
+#: What the uncertainty report summarises by default: outputs, and percentiles in [0, 100].
+DEFAULT_UNCERTAINTY_OUTPUTS = ("e", "delta_p", "sliding_length", "duration", "mean_force")
+DEFAULT_PERCENTILES = (2.5, 50.0, 97.5)
+
+
+@dataclass(frozen=True)
+class EngineOptions:
+    """Options passed to the impact engine unchanged (None: the engine's default)."""
+
+    gravity: bool | float | None = None
+    constant_angle: bool | None = None
+    rtol: float | None = None
+
+    def __post_init__(self) -> None:
+        if self.rtol is not None:
+            r = float(self.rtol)
+            if not (0.0 < r < 1.0):
+                raise ValueError(f"engine rtol must lie in (0, 1), got {self.rtol!r}")
+        if self.gravity is not None and not isinstance(self.gravity, bool):
+            g = float(self.gravity)
+            if not (math.isfinite(g) and g >= 0.0):
+                raise ValueError(f"engine gravity must be true/false or >= 0 m/s^2, got {g!r}")
+        if self.constant_angle is not None and not isinstance(self.constant_angle, bool):
+            raise ValueError(
+                f"engine constant_angle must be true or false, got {self.constant_angle!r}"
+            )
+
+    def kwargs(self) -> dict[str, Any]:
+        return {k: v for k, v in self.to_dict().items() if v is not None}
+
+    def to_dict(self) -> dict[str, Any]:
+        return {"gravity": self.gravity, "constant_angle": self.constant_angle, "rtol": self.rtol}
+
+
+@dataclass(frozen=True)
+class UncertaintySpec:
+    """What the uncertainty report summarises (see ``impactlab.sweep.uncertainty``)."""
+
+    outputs: tuple[str, ...] = DEFAULT_UNCERTAINTY_OUTPUTS
+    percentiles: tuple[float, ...] = DEFAULT_PERCENTILES
+
+    def __post_init__(self) -> None:
+        outs = tuple(OUTPUT_ALIASES.get(o, o) for o in self.outputs)
+        if not outs:
+            raise ValueError("uncertainty outputs must not be empty")
+        object.__setattr__(self, "outputs", outs)
+        ps = tuple(float(p) for p in self.percentiles)
+        for p in ps:
+            if not 0.0 <= p <= 100.0:
+                raise ValueError(f"uncertainty percentiles must lie in [0, 100], got {p!r}")
+        object.__setattr__(self, "percentiles", ps)

@@ -1,0 +1,290 @@
+"""Study files (TOML, docs/sweep.md) and their canonical tables: parsing and validation into the
+arguments of :class:`impactlab.sweep.study.Study`.
+
+In a study file a bare number is in the input's file unit (SI, degrees for the angle) unless
+the table gives ``unit``; a string such as ``"8.8 mm"`` is converted. With ``units = "si"`` in
+``[study]`` (the canonical form ``Study.to_dict`` writes) bare numbers are SI.
+"""
+
+from __future__ import annotations
+
+import math
+import tomllib
+from collections.abc import Callable, Mapping
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pint
+
+from impactlab.sweep.dimensions import Axis, Sample, Value
+from impactlab.sweep.distributions import (
+    Distribution,
+    distribution_from_canonical,
+    distribution_from_dict,
+)
+from impactlab.sweep.inputs import INPUTS, get_input
+from impactlab.sweep.options import (
+    DEFAULT_CHUNK_SIZE,
+    STUDY_FORMAT,
+    EngineOptions,
+    UncertaintySpec,
+)
+from impactlab.units import registry as units_registry
+
+_TABLES = (
+    "study",
+    "fixed",
+    "grid",
+    "sample",
+    "outputs",
+    "engine",
+    "law_params",
+    "uncertainty",
+    "format",
+    "grid_order",
+)
+
+Converter = Callable[..., float]
+
+
+def read_study_file(path: str | Path) -> tuple[dict[str, Any], str]:
+    """The table of a study file (TOML) and its source name; the study's name defaults to the
+    file's stem."""
+    p = Path(path)
+    if p.is_dir():
+        raise ValueError(f"{str(p)!r} is a directory (a sweep store?); give the study file (TOML)")
+    if not p.is_file():
+        raise ValueError(f"study file {str(p)!r} does not exist")
+    try:
+        with p.open("rb") as fh:
+            data = tomllib.load(fh)
+    except tomllib.TOMLDecodeError as exc:
+        raise ValueError(f"study file {str(p)!r} is not valid TOML: {exc}") from None
+    data = dict(data)
+    study_tab = dict(data.get("study", {})) if isinstance(data.get("study"), dict) else {}
+    study_tab.setdefault("name", p.stem)
+    data["study"] = study_tab
+    return data, str(p)
+
+
+def study_arguments(data: Mapping[str, Any], source: str) -> dict[str, Any]:
+    """The keyword arguments of ``Study`` from a study-file table (or ``Study.to_dict()``)."""
+    unknown = sorted(set(data) - set(_TABLES))
+    if unknown:
+        raise ValueError(
+            f"{source}: unknown table(s) {unknown}; known: "
+            f"{', '.join(t for t in _TABLES if t not in ('format', 'grid_order'))}"
+        )
+    if "format" in data and data["format"] != STUDY_FORMAT:
+        raise ValueError(f"{source}: unsupported study format {data['format']!r}")
+
+    def table(key: str) -> dict[str, Any]:
+        t = data.get(key, {})
+        if not isinstance(t, dict):
+            raise ValueError(f"{source}: [{key}] must be a table, got {t!r}")
+        return dict(t)
+
+    st = table("study")
+    allowed_study = {"name", "description", "chunk_size", "units"}
+    bad = sorted(set(st) - allowed_study)
+    if bad:
+        raise ValueError(f"[study] unknown key(s) {bad}; allowed: {sorted(allowed_study)}")
+    si = st.get("units", "file") == "si"
+    grid_tab = table("grid")
+    return {
+        "name": str(st.get("name", "study")),
+        "description": str(st.get("description", "")),
+        "chunk_size": st.get("chunk_size", DEFAULT_CHUNK_SIZE),
+        "fixed": _fixed(table("fixed"), si),
+        "grid": _grid(grid_tab, data.get("grid_order", list(grid_tab)), si),
+        "sample": _sample(data["sample"], si) if "sample" in data else None,
+        "outputs": _outputs(table("outputs")) if "outputs" in data else None,
+        "engine": _engine(table("engine")),
+        "uncertainty": _uncertainty(table("uncertainty")) if "uncertainty" in data else None,
+        "law_params": table("law_params"),
+    }
+
+
+def _quantity(value: Any, unit: str, bare_unit: str, label: str) -> float:
+    """``value`` (a number in ``bare_unit`` or a quantity string) as a float in ``unit``."""
+    ureg = units_registry()
+    if isinstance(value, bool) or not isinstance(value, int | float | str):
+        raise ValueError(f"{label}: expected a number or a quantity string, got {value!r}")
+    q: Any
+    try:
+        if isinstance(value, str):
+            q = ureg.Quantity(value.strip())
+            if q.unitless:
+                q = float(q.magnitude) * ureg.Unit(bare_unit)
+        else:
+            q = float(value) * ureg.Unit(bare_unit)
+        x = float(q.to(unit).magnitude)
+    except pint.DimensionalityError:
+        raise ValueError(f"{label}: {value!r} is not convertible to {unit}") from None
+    except Exception as exc:  # pint's parser raises several unrelated types for unparsable text
+        raise ValueError(f"{label}: cannot parse {value!r} as a quantity ({exc})") from None
+    if not math.isfinite(x):
+        raise ValueError(f"{label} must be finite, got {value!r}")
+    return x
+
+
+def _converter(name: str, si: bool, unit: str | None, where: str) -> Converter:
+    """Converter of input ``name``'s numbers: bare numbers are in ``unit`` if given, else in the
+    input's file unit (SI, degrees for the angle); with ``si`` bare numbers are SI."""
+    spec = get_input(name)
+    storage = "dimensionless" if spec.unit == "1" else spec.unit
+    bare = unit or ("dimensionless" if spec.unit == "1" else spec.parse_unit)
+    if si and unit is None:
+        bare = storage
+
+    def convert(value: Any, key: str = "") -> float:
+        label = f"{where} {name}" + (f".{key}" if key else "")
+        return _quantity(value, storage, bare, label)
+
+    return convert
+
+
+def _value(name: str, value: Any, si: bool, where: str, unit: str | None = None) -> Value:
+    spec = get_input(name)
+    if spec.kind == "category":
+        if not isinstance(value, str):
+            raise ValueError(f"{where} {name}: expected a name (string), got {value!r}")
+        return value
+    return _converter(name, si, unit, where)(value)
+
+
+def _known(name: str, where: str) -> None:
+    if name not in INPUTS:
+        raise ValueError(f"{where} unknown input {name!r}; known inputs: {', '.join(INPUTS)}")
+
+
+def _fixed(tab: Mapping[str, Any], si: bool) -> dict[str, Value]:
+    fixed: dict[str, Value] = {}
+    for name, value in tab.items():
+        _known(name, "[fixed]")
+        fixed[name] = _value(name, value, si, "[fixed]")
+    return fixed
+
+
+def _grid(tab: Mapping[str, Any], order: Any, si: bool) -> tuple[Axis, ...]:
+    axes = []
+    for name in order:
+        _known(name, "[grid]")
+        axes.append(_axis(name, tab[name], si))
+    return tuple(axes)
+
+
+def _axis(name: str, spec: Any, si: bool) -> Axis:
+    where = "[grid]"
+    if isinstance(spec, list):
+        return Axis(name, tuple(_value(name, v, si, where) for v in spec))
+    if not isinstance(spec, dict):
+        raise ValueError(
+            f"[grid] {name}: expected a list of values or a table with start/stop/num, got {spec!r}"
+        )
+    allowed = {"values", "start", "stop", "num", "step", "spacing", "unit"}
+    unknown = sorted(set(spec) - allowed)
+    if unknown:
+        raise ValueError(f"[grid] {name}: unknown key(s) {unknown}; allowed: {sorted(allowed)}")
+    unit = spec.get("unit")
+    if "values" in spec:
+        extra = sorted(set(spec) - {"values", "unit"})
+        if extra:
+            raise ValueError(f"[grid] {name}: 'values' cannot be combined with {extra}")
+        if not isinstance(spec["values"], list):
+            raise ValueError(f"[grid] {name}: 'values' must be a list")
+        return Axis(name, tuple(_value(name, v, si, where, unit) for v in spec["values"]))
+    if get_input(name).kind == "category":
+        raise ValueError(f"[grid] {name}: a category axis takes a list of names")
+    for key in ("start", "stop"):
+        if key not in spec:
+            raise ValueError(f"[grid] {name}: missing {key!r} (or give 'values')")
+    conv = _converter(name, si, unit, where)
+    start, stop = conv(spec["start"], "start"), conv(spec["stop"], "stop")
+    spacing = spec.get("spacing", "linear")
+    if spacing not in ("linear", "log"):
+        raise ValueError(f"[grid] {name}: spacing must be 'linear' or 'log', got {spacing!r}")
+    if ("num" in spec) == ("step" in spec):
+        raise ValueError(f"[grid] {name}: give exactly one of 'num' and 'step'")
+    vals = _range(name, spec, start, stop, conv, spacing)
+    return Axis(name, tuple(float(v) for v in vals))
+
+
+def _range(
+    name: str, spec: Mapping[str, Any], start: float, stop: float, conv: Converter, spacing: str
+) -> np.ndarray:
+    """The values of a start/stop/num (or step) grid axis (start, stop in SI)."""
+    if "num" in spec:
+        num = spec["num"]
+        if isinstance(num, bool) or not isinstance(num, int) or num < 1:
+            raise ValueError(f"[grid] {name}: num must be an integer >= 1, got {num!r}")
+        if spacing == "log":
+            if start <= 0 or stop <= 0 or (start < 0) != (stop < 0):
+                raise ValueError(f"[grid] {name}: log spacing needs start and stop > 0")
+            return np.geomspace(start, stop, num)
+        return np.linspace(start, stop, num)
+    if spacing == "log":
+        raise ValueError(f"[grid] {name}: log spacing takes 'num', not 'step'")
+    step = conv(spec["step"], "step")
+    if step == 0 or (stop - start) / step < 0:
+        raise ValueError(
+            f"[grid] {name}: step {step!r} does not lead from start {start!r} to stop {stop!r}"
+        )
+    count = math.floor((stop - start) / step + 1e-9) + 1
+    if count > 100_000_000:
+        raise ValueError(f"[grid] {name}: {count} values is too many")
+    return start + step * np.arange(count)
+
+
+def _sample(tab: Any, si: bool) -> Sample:
+    if not isinstance(tab, dict):
+        raise ValueError("[sample] must be a table")
+    if "size" not in tab:
+        raise ValueError("[sample] needs 'size' (number of Monte Carlo cases)")
+    size, seed = tab["size"], tab.get("seed", 0)
+    inputs: dict[str, Distribution] = {}
+    for name, spec in tab.items():
+        if name in ("size", "seed"):
+            continue
+        if name not in INPUTS:
+            raise ValueError(
+                f"[sample] unknown input {name!r}; known inputs: {', '.join(INPUTS)} "
+                f"(and the keys size, seed)"
+            )
+        if not isinstance(spec, dict):
+            raise ValueError(
+                f'[sample] {name}: expected a table such as {{ dist = "normal", mean = ..., '
+                f"std = ... }}, got {spec!r}"
+            )
+        if get_input(name).kind == "category":
+            raise ValueError(f"[sample] input {name!r} is a category; put it on the [grid] instead")
+        conv = _converter(name, si, spec.get("unit"), "[sample]")
+        inputs[name] = (
+            distribution_from_canonical(spec) if si else distribution_from_dict(spec, conv, name)
+        )
+    return Sample(size=size, seed=seed, inputs=inputs)
+
+
+def _outputs(tab: Mapping[str, Any]) -> tuple[str, ...]:
+    bad = sorted(set(tab) - {"keep"})
+    if bad or "keep" not in tab or not isinstance(tab["keep"], list):
+        raise ValueError('[outputs] takes one key: keep = ["e", "delta_p", ...]')
+    return tuple(str(o) for o in tab["keep"])
+
+
+def _engine(tab: Mapping[str, Any]) -> EngineOptions:
+    bad = sorted(set(tab) - {"gravity", "constant_angle", "rtol"})
+    if bad:
+        raise ValueError(f"[engine] unknown key(s) {bad}; allowed: gravity, constant_angle, rtol")
+    return EngineOptions(**tab)
+
+
+def _uncertainty(tab: Mapping[str, Any]) -> UncertaintySpec:
+    bad = sorted(set(tab) - {"outputs", "percentiles"})
+    if bad:
+        raise ValueError(f"[uncertainty] unknown key(s) {bad}; allowed: outputs, percentiles")
+    for k, v in tab.items():
+        if not isinstance(v, list):
+            raise ValueError(f"[uncertainty] {k} must be a list, got {v!r}")
+    return UncertaintySpec(**{k: tuple(v) for k, v in tab.items()})

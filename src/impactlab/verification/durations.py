@@ -1,0 +1,83 @@
+"""The paper's durations: the corrected analytic inversion (``impactlab.analytic.invert``) against
+the published 4.30 ms and 1.40 ms (doi:10.1007/s00419-015-1108-2, Tables 2-3)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from impactlab.analytic import invert
+from impactlab.paper.data import EXPERIMENTS, TABLE_ROWS
+from impactlab.verification.table import TOLERANCES, Column, VerificationTable, worst_of
+
+__all__ = ["verify_paper_durations"]
+
+
+def verify_paper_durations(n_samples: int = 2000) -> VerificationTable:
+    """The paper's three experiments through ``impactlab.analytic.invert`` (corrected Eq. 12,
+    I_C = m L^2/12, gravity neglected as in the paper): T against the published 4.30 and
+    1.40 ms; F (rigid-body identity) shown against the published 79 and 595 N."""
+    published = {(row.angle_deg, row.model): row for row in TABLE_ROWS}
+    records: list[dict[str, Any]] = []
+    for ang, x in sorted(EXPERIMENTS.items()):
+        # the paper prints the dent's depth and length negative; impactlab takes magnitudes
+        res = invert(
+            angle=x.angle,
+            v_i=x.v_i,
+            e=x.e,
+            mu=x.mu,
+            delta_p=abs(x.delta_p),
+            sliding_length=abs(x.L_s),
+            n_samples=n_samples,
+        )
+        row = published.get((ang, "experiment"))
+        T_pub = row.T if row is not None else None
+        F_pub = row.F if row is not None else None
+        records.append(
+            {
+                "angle": float(ang),
+                "alpha": res.alpha,
+                "mu_c": res.mu_c,
+                "T_pub": None if T_pub is None else T_pub * 1e3,
+                "T": res.T * 1e3,
+                "err_T": None if T_pub is None else res.T / T_pub - 1.0,
+                "F_pub": F_pub,
+                "F": res.F,
+                "err_F": None if F_pub is None else res.F / F_pub - 1.0,
+            }
+        )
+    checked = [abs(r["err_T"]) for r in records if r["err_T"] is not None]
+    worst = worst_of(checked)
+    tol = TOLERANCES["paper_duration"]
+    cols = (
+        Column("angle", "angle [deg]", ".3g"),
+        Column("mu_c", "mu_c", ".4f"),
+        Column("alpha", "alpha", ".4f"),
+        Column("T_pub", "T published [ms]", ".3g"),
+        Column("T", "T impactlab [ms]", ".4g"),
+        Column("err_T", "rel. diff. T", "+.1%"),
+        Column("F_pub", "F published [N]", ".4g"),
+        Column("F", "F impactlab [N]", ".4g"),
+        Column("err_F", "rel. diff. F (not checked)", "+.1%"),
+    )
+    text = """
+The paper's measured inputs (Sec. 5.1.3: angle, v_i, e, mu, delta_p, L_s) through
+`impactlab.analytic.invert`: Eq. 12 with the corrected alpha (Eq. 13 with its sign and the
+(L cos theta)^2 term fixed, see the [errata](../paper/errata.md)), the slender-rod
+I_C = m L^2/12 (the paper does not give I_C), gravity neglected as in the paper. The checked
+quantity is T against the published 4.30 ms (Table 2) and 1.40 ms (Table 3); the paper prints no
+T at 70 deg. F uses the rigid-body identity F T = (1 + e) abs(v_i) / K_y because the
+centre-of-mass velocities of the paper's Eq. 29 are not printed; its difference from the
+published F is explained in [the analytic method](../analytic.md) (Sec. 6) and is not a
+tolerance check.
+"""
+    return VerificationTable(
+        "paper_duration",
+        "Analytic inversion vs the paper's T",
+        text,
+        cols,
+        tuple(records),
+        "abs(T / T_published - 1)",
+        worst,
+        tol,
+        worst <= tol,
+    )
