@@ -24,6 +24,7 @@ def main(argv: list[str]) -> int:
             str(HERE.parent / "docs" / "engine" / "benchmarks.md"),
         ],
         [sys.executable, str(HERE / "bench_sweep.py"), *([] if full else ["--quick"])],
+        [sys.executable, str(HERE / "bench_flexible.py")],
     ]
     rc = 0
     for cmd in runs:

@@ -76,8 +76,9 @@ def main() -> None:
         f_pub = f"{row.F:.0f}" if row is not None and row.F is not None else "-"
         mu_ratio = x.mu / float(critical_friction(x.angle))
         print(
-            f"{angle_deg:5.0f} {mu_ratio:8.3f} {res.T * 1e3:8.3f} ± {res.sigma_T_mc * 1e3:5.3f} "
-            f"{t_pub:>9s} {res.F:7.1f} ± {res.sigma_F_mc:4.1f} {f_pub:>9s}"
+            f"{angle_deg:5.0f} {mu_ratio:8.3f} {res.duration * 1e3:8.3f} "
+            f"± {res.sigma_T_mc * 1e3:5.3f} {t_pub:>9s} "
+            f"{res.mean_force:7.1f} ± {res.sigma_F_mc:4.1f} {f_pub:>9s}"
         )
 
     # the 20 deg experiment in full, then two variants of the method
@@ -96,9 +97,9 @@ def main() -> None:
     with_gravity = invert(**inputs, gravity=True)
     travel = invert(**inputs, measure="travel")
     print(
-        f"\n20 deg: T = {res.T * 1e3:.3f} ms (paper's method), "
-        f"{with_gravity.T * 1e3:.3f} ms (gravity during the contact), "
-        f"{travel.T * 1e3:.3f} ms (L_s as the contact patch's travel)"
+        f"\n20 deg: T = {res.duration * 1e3:.3f} ms (paper's method), "
+        f"{with_gravity.duration * 1e3:.3f} ms (gravity during the contact), "
+        f"{travel.duration * 1e3:.3f} ms (L_s as the contact patch's travel)"
     )
 
     path = out / "inversion.json"

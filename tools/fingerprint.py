@@ -169,7 +169,7 @@ def invert_digests() -> dict[str, str]:
     res = il.invert(
         angle=math.radians(20), v_i=-1.41, e=0.50, mu=0.20, delta_p=22e-6, sliding_length=1400e-6
     )
-    d["invert/api"] = _digest(np.array([res.T, res.F], dtype=float))
+    d["invert/api"] = _digest(np.array([res.duration, res.mean_force], dtype=float))
     return d
 
 

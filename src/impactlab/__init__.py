@@ -10,6 +10,7 @@ Subpackages: ``contact`` (laws), ``dynamics`` (engine), ``analytic`` (the paper'
 ``experiment`` (raw files), ``sweep`` (studies), ``paper`` (data and reproduction).
 """
 
+from impactlab._validation import ImplausibleInputWarning
 from impactlab._version import __version__
 from impactlab.analytic import InversionResult, Measured, invert
 from impactlab.bodies import PAPER_ROD, Rod, Sphere
@@ -24,6 +25,7 @@ __all__ = [
     "BatchResult",
     "ContactPair",
     "ImpactResult",
+    "ImplausibleInputWarning",
     "InversionResult",
     "Material",
     "Measured",

@@ -1,31 +1,100 @@
-"""Input checks shared by the public constructors: clear errors that name the parameter."""
+"""Input checks shared by the public API: one rule for numbers, clear errors that name the
+parameter, and :class:`ImplausibleInputWarning` for inputs that are possible but implausible.
+
+The one input rule of the Python API (:func:`check_finite` and everything built on it):
+
+- a dimensionless parameter (mu, e, rtol, ...; no ``unit``) is a real number: a Python or numpy
+  int or float, a 0-d numeric array or a dimensionless pint Quantity. A bool, a string
+  (``"0.2"``), None or anything else is refused with a ``ValueError`` naming the parameter;
+- a dimensional parameter (called with its ``unit``, e.g. ``check_positive("length", v, "m")``)
+  is a number in that unit (SI), a string with units (``"8.8 mm"``) or a pint Quantity of any
+  registry, converted by ``impactlab.units.magnitude`` (dimension checked); a bare number string
+  is refused (it names no unit);
+- flags are bools (:func:`check_flag`), seeds None or integers >= 0 (:func:`check_seed`).
+"""
 
 from __future__ import annotations
 
 import math
+import sys
+import warnings
 from typing import Any
 
 import numpy as np
 
-
-def _describe(value: Any) -> str:
-    return repr(value)
+from impactlab.units import magnitude
 
 
-def check_finite(name: str, value: Any) -> float:
-    """Return ``value`` as float; raise ValueError naming ``name`` unless it is a finite real."""
+class ImplausibleInputWarning(UserWarning):
+    """An input that is possible but implausible (most likely a unit mistake): a tip radius
+    over half a metre, a rod longer than 10 m, an impact faster than 100 m/s, ... The
+    computation goes on; each public function states its bounds in its docstring."""
+
+
+def _caller_level() -> int:
+    """The ``stacklevel`` of the first frame outside impactlab, counted from the caller of this
+    function (so that a warning points at the user's line, however deep it was raised)."""
+    frame = sys._getframe(2)
+    level = 2
+    while frame.f_back is not None and str(frame.f_globals.get("__name__", "")).startswith(
+        "impactlab"
+    ):
+        frame = frame.f_back
+        level += 1
+    return level
+
+
+def warn_implausible(message: str) -> None:
+    """Issue an :class:`ImplausibleInputWarning` with ``message``, attributed to the first line
+    outside impactlab (the user's call of the public function)."""
+    warnings.warn(message, ImplausibleInputWarning, stacklevel=_caller_level())
+
+
+#: What an array of a non-numeric dtype kind holds (for the error message).
+_KINDS = {"b": "bools", "U": "strings", "S": "bytes", "O": "objects", "c": "complex numbers"}
+
+
+def _not_a_number(name: str, value: Any) -> ValueError | None:
+    """The error for what the number rule refuses outright (None when ``value`` may be one):
+    None, bools, strings, bytes and arrays that do not hold real numbers."""
+    if value is None:
+        return ValueError(f"{name} must be a real number, got None")
+    if isinstance(value, bool | np.bool_):
+        return ValueError(f"{name} must be a real number, got the bool {value!r}")
+    if isinstance(value, str | bytes):
+        try:
+            hint = f": write {name}={float(value)!r}, not {value!r}"
+        except ValueError:
+            hint = ""
+        return ValueError(f"{name} must be a real number, got the string {value!r}{hint}")
+    if isinstance(value, np.ndarray) and value.dtype.kind not in "iuf":
+        what = _KINDS.get(value.dtype.kind, f"dtype {value.dtype}")
+        return ValueError(f"{name} must hold real numbers, got an array of {what}: {value!r}")
+    return None
+
+
+def check_finite(name: str, value: Any, unit: str = "") -> float:
+    """The rule (module docstring): ``value`` as a float if it is a finite real number --
+    with a ``unit``, also a string with units or a pint Quantity, converted to ``unit`` -- and
+    ValueError naming ``name`` otherwise. Bools and strings are never coerced to numbers
+    (``"0.2"`` and ``True`` are refused)."""
+    if unit:
+        value = magnitude(name, value, unit)
+    err = _not_a_number(name, value)
+    if err is not None:
+        raise err
     try:
         x = float(value)
     except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a real number, got {_describe(value)}") from None
+        raise ValueError(f"{name} must be a real number, got {value!r}") from None
     if not math.isfinite(x):
         raise ValueError(f"{name} must be finite, got {x!r}")
     return x
 
 
 def check_positive(name: str, value: Any, unit: str = "") -> float:
-    """Finite and > 0."""
-    x = check_finite(name, value)
+    """Finite and > 0 (in ``unit``: :func:`check_finite`)."""
+    x = check_finite(name, value, unit)
     if x <= 0.0:
         u = f" {unit}" if unit else ""
         raise ValueError(f"{name} must be > 0{u}, got {x!r}")
@@ -33,8 +102,8 @@ def check_positive(name: str, value: Any, unit: str = "") -> float:
 
 
 def check_nonnegative(name: str, value: Any, unit: str = "") -> float:
-    """Finite and >= 0."""
-    x = check_finite(name, value)
+    """Finite and >= 0 (in ``unit``: :func:`check_finite`)."""
+    x = check_finite(name, value, unit)
     if x < 0.0:
         u = f" {unit}" if unit else ""
         raise ValueError(f"{name} must be >= 0{u}, got {x!r}")
@@ -49,9 +118,10 @@ def check_range(
     *,
     low_inclusive: bool = True,
     high_inclusive: bool = True,
+    unit: str = "",
 ) -> float:
-    """Finite and inside the stated interval."""
-    x = check_finite(name, value)
+    """Finite and inside the stated interval (in ``unit``: :func:`check_finite`)."""
+    x = check_finite(name, value, unit)
     lo_ok = x >= low if low_inclusive else x > low
     hi_ok = x <= high if high_inclusive else x < high
     if not (lo_ok and hi_ok):
@@ -61,9 +131,50 @@ def check_range(
     return x
 
 
-def check_array_finite(name: str, values: Any) -> np.ndarray:
-    """Return a float64 array; raise ValueError naming ``name`` if any entry is NaN or infinite."""
-    arr = np.asarray(values, dtype=np.float64)
+def check_flag(name: str, value: Any) -> bool:
+    """``value`` if it is a bool (Python or numpy); ValueError naming ``name`` otherwise (a
+    string such as ``"no"`` is not silently true)."""
+    if not isinstance(value, bool | np.bool_):
+        raise ValueError(f"{name} must be True or False, got {value!r}")
+    return bool(value)
+
+
+def check_seed(name: str, value: Any) -> int | None:
+    """A random seed: None or an integer >= 0 (not a bool); ValueError naming ``name``."""
+    if value is None:
+        return None
+    if isinstance(value, bool | np.bool_) or not isinstance(value, int | np.integer):
+        raise ValueError(f"{name} must be None or an integer >= 0, got {value!r}")
+    if value < 0:
+        raise ValueError(f"{name} must be None or an integer >= 0, got {value!r}")
+    return int(value)
+
+
+def check_array(name: str, values: Any, unit: str = "") -> np.ndarray:
+    """The rule applied to an array: a float64 array of ``values`` (NaN allowed; with a
+    ``unit``, a pint Quantity array or a string with units is converted); ValueError naming
+    ``name`` for None, bools, strings or anything that is not numeric."""
+    if unit:
+        values = magnitude(name, values, unit)
+    err = _not_a_number(name, values)
+    if err is not None:
+        raise err
+    try:
+        arr = np.asarray(values)
+    except (TypeError, ValueError):
+        raise ValueError(
+            f"{name} must be a number or an array of numbers, got {values!r}"
+        ) from None
+    err = _not_a_number(name, arr)
+    if err is not None:
+        raise err
+    return arr.astype(np.float64)
+
+
+def check_array_finite(name: str, values: Any, unit: str = "") -> np.ndarray:
+    """Return a float64 array; raise ValueError naming ``name`` if any entry is NaN or infinite
+    (or is not a number: :func:`check_array`)."""
+    arr = check_array(name, values, unit)
     bad = ~np.isfinite(arr)
     if bad.any():
         idx = int(np.flatnonzero(bad.ravel())[0])

@@ -12,6 +12,10 @@ The equations are in ``docs/engine/index.md``; the compiled implementation is in
   stick (v_slip = 0) while the force the constraint needs, computed from the rigid-body equations,
   satisfies |F_t*| <= mu F_n. Transitions are located as events (no regularisation).
   Reference: W. J. Stronge, Impact Mechanics (2000), Ch. 5, doi:10.1017/CBO9780511626432.
+  It is also the energy-consistent completion of the paper's Eq. 7: Eq. 7 is the slip branch of
+  Coulomb's law, so ``coulomb`` equals ``impulse_ratio`` exactly while the contact point slips;
+  where the slip stops, the friction impulse stops growing (stick, or slip the other way) and no
+  energy is created, whereas ``impulse_ratio`` keeps pushing and can (flagged ENERGY_GAIN).
 - ``mindlin``: tangential compliance of Mindlin type with stiffness k_t = 8 G* a following the
   contact radius a, an elastic tangential state, capped by Coulomb mu F_n (gross slip on the cap).
   Incremental (no-slip) loading dF_t = -k_t dxi; on unloading the force is scaled with k_t

@@ -13,6 +13,8 @@ from impactlab._validation import check_finite, check_positive, check_range
 
 #: Standard gravity [m/s^2], used to convert kgf to N.
 G0 = 9.80665
+#: The unit of a Brinell hardness number.
+_HB = "kgf/mm^2"
 
 
 def brinell_to_pa(hb: float) -> float:
@@ -33,6 +35,11 @@ class Material:
     brinell_hardness : Brinell hardness number HB [kgf/mm^2] (used by Brake's law).
     meyer_index : Meyer's strain-hardening index n (Brake's law), typically 2 to 2.5; must be > 2.
     density : mass density [kg/m^3].
+
+    E, yield_strength, density and brinell_hardness are numbers in the units above, strings
+    with units (``"200 GPa"``) or pint Quantities of any registry; nu and meyer_index are plain
+    numbers. ValueError unless E, yield_strength, density and brinell_hardness (when given) are
+    finite and > 0, nu lies in (-1, 0.5), meyer_index in (2, 3] and yield_strength < E.
     """
 
     name: str
@@ -46,24 +53,22 @@ class Material:
     def __post_init__(self) -> None:
         if not isinstance(self.name, str) or not self.name:
             raise ValueError(f"name must be a non-empty string, got {self.name!r}")
-        object.__setattr__(self, "E", check_positive("E", self.E, "Pa"))
+        for name, unit in (("E", "Pa"), ("yield_strength", "Pa"), ("density", "kg/m^3")):
+            value = check_positive(name, getattr(self, name), unit)
+            object.__setattr__(self, name, value)
         object.__setattr__(
             self,
             "nu",
             check_range("nu", self.nu, -1.0, 0.5, low_inclusive=False, high_inclusive=False),
         )
-        object.__setattr__(
-            self, "yield_strength", check_positive("yield_strength", self.yield_strength, "Pa")
-        )
         hb = self.brinell_hardness
         if not (isinstance(hb, float) and math.isnan(hb)):
-            hb = check_positive("brinell_hardness", hb, "kgf/mm^2")
+            hb = check_positive("brinell_hardness", hb, _HB)
         object.__setattr__(self, "brinell_hardness", hb)
         n = check_finite("meyer_index", self.meyer_index)
         if not 2.0 < n <= 3.0:
             raise ValueError(f"meyer_index must lie in (2, 3], got {n!r}")
         object.__setattr__(self, "meyer_index", n)
-        object.__setattr__(self, "density", check_positive("density", self.density, "kg/m^3"))
         if self.yield_strength >= self.E:
             raise ValueError(
                 f"yield_strength ({self.yield_strength!r} Pa) must be smaller than E "
@@ -147,30 +152,19 @@ class ContactPair:
         return self.weaker.nu
 
 
+def _steel(name: str, yield_strength: float, brinell_hardness: float, density: float) -> Material:
+    """A steel of the paper's Table 1: E = 200 GPa, nu = 0.3; the Meyer index is not given in
+    the paper, 2.2 is a typical value for work-hardened steel."""
+    return Material(name, 200e9, 0.3, yield_strength, brinell_hardness, 2.2, density)
+
+
 #: The paper's rod: AISI 201 stainless steel (Table 1). Unit corrections of the printed table:
 #: S_y = 760 MPa (printed "760 GPa"), Brinell hardness 327 kgf/mm^2 (printed "kgf/m^2").
-#: The Meyer index is not given in the paper; 2.2 is a typical value for work-hardened steel.
-AISI_201 = Material(
-    name="AISI 201 stainless steel (paper's rod)",
-    E=200e9,
-    nu=0.3,
-    yield_strength=760e6,
-    brinell_hardness=327.0,
-    meyer_index=2.2,
-    density=7800.0,
-)
+AISI_201 = _steel("AISI 201 stainless steel (paper's rod)", 760e6, 327.0, 7800.0)
 
 #: The paper's flat: AISI 1010 low-carbon steel (Table 1). Unit correction: Brinell hardness
-#: 105 kgf/mm^2 (printed "kgf/m^2"). Meyer index not given in the paper (2.2 assumed).
-AISI_1010 = Material(
-    name="AISI 1010 low-carbon steel (paper's flat)",
-    E=200e9,
-    nu=0.3,
-    yield_strength=305e6,
-    brinell_hardness=105.0,
-    meyer_index=2.2,
-    density=7870.0,
-)
+#: 105 kgf/mm^2 (printed "kgf/m^2").
+AISI_1010 = _steel("AISI 1010 low-carbon steel (paper's flat)", 305e6, 105.0, 7870.0)
 
 PRESETS: dict[str, Material] = {"aisi-201": AISI_201, "aisi-1010": AISI_1010}
 

@@ -90,6 +90,12 @@ OUTPUT_FIELDS: tuple[Field, ...] = (
         "1",
         "largest (|F_t| - mu F_n) / max_force (diagnostics, coulomb/mindlin)",
     ),
+    Field(
+        "flags",
+        "1",
+        "result flags (impactlab.flags.ResultFlag bitmask): 1 energy gain, 2 gravity-dominated, "
+        "4 law extrapolated; 0 none",
+    ),
 )
 
 #: Columns of an impact's time history, in order.
@@ -110,7 +116,7 @@ HISTORY_FIELDS: tuple[Field, ...] = (
     Field("phi", "rad", "rotation since first touch (counter-clockwise)", r"\varphi"),
     Field("vx", "m/s", "centre of mass x velocity", "v_x"),
     Field("vy", "m/s", "centre of mass y velocity", "v_y"),
-    Field("omega", "rad/s", "angular velocity (spin, counter-clockwise positive)", r"\omega"),
+    Field("spin", "rad/s", "angular velocity (counter-clockwise positive)", r"\omega"),
     Field("normal_velocity", "m/s", "normal velocity v_n of the contact point", "v_n"),
     Field("phase", "1", "0 loading curve, 1 unloading/reloading curve"),
     Field("stick", "1", "1 stick (Coulomb) / no gross slip (Mindlin), 0 slip"),

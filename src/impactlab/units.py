@@ -1,4 +1,20 @@
-"""Quantities with units at the edge (command line, study files): parsed once, SI inside."""
+"""Quantities with units: parsed once, SI inside.
+
+Two rules, one parser:
+
+- :func:`magnitude` is the Python API's rule for a dimensional input (a length, a speed, an
+  angle, a pressure): a string **with** units (``"8.8 mm"``, ``"20 deg"``, ``"1.41 m/s"``) or a
+  pint Quantity from **any** registry becomes its magnitude in the unit asked for (dimension
+  checked); a bare number is taken as already in that unit (SI: m, m/s, rad, Pa, ...) and is
+  checked as a number by ``impactlab._validation``; a bare number *string* (``"0.0088"``) is
+  refused, since it names no unit.
+- :func:`to_si` is the edge's rule (command line, study files): there a bare number, written or
+  not, means "in the stated unit".
+
+The Python API applies :func:`magnitude` through ``impactlab._validation`` (``check_positive(
+"length", value, "m")`` and its siblings), which adds the rule for numbers (never a bool or a
+string) and the range checks.
+"""
 
 from __future__ import annotations
 
@@ -6,6 +22,7 @@ import math
 from functools import lru_cache
 from typing import Any
 
+import numpy as np
 import pint
 
 
@@ -15,31 +32,78 @@ def registry() -> pint.UnitRegistry:
     return pint.UnitRegistry()
 
 
+def is_quantity(value: Any) -> bool:
+    """True for a pint Quantity of any registry (duck-typed: magnitude, units, dimensionality)."""
+    return all(hasattr(value, a) for a in ("magnitude", "units", "dimensionality"))
+
+
+def _parse(name: str, text: str, unit: str) -> Any:
+    """``text`` as a Quantity of impactlab's registry; ValueError naming ``name``."""
+    text = text.strip()
+    if not text:
+        raise ValueError(f"{name} is empty; expected a quantity in {unit}, e.g. '1.0 {unit}'")
+    try:
+        return registry().Quantity(text)
+    except Exception as exc:  # pint's parser raises several unrelated types
+        raise ValueError(f"{name}: cannot parse {text!r} as a quantity ({exc})") from None
+
+
+def _convert(name: str, q: Any, unit: str, shown: Any) -> Any:
+    """``q`` expressed in ``unit``; ValueError naming ``name`` on a wrong dimension."""
+    try:
+        return q.to(unit)
+    except pint.DimensionalityError:
+        raise ValueError(
+            f"{name}: {shown!r} has the wrong dimension; expected a quantity convertible to {unit}"
+        ) from None
+
+
+def _foreign(name: str, q: Any) -> Any:
+    """A Quantity of any registry as one of impactlab's (via its magnitude and unit string)."""
+    try:
+        return registry().Quantity(q.magnitude, str(q.units))
+    except Exception as exc:  # an unknown unit name: pint raises several types
+        raise ValueError(f"{name}: cannot read the unit of {q!r} ({exc})") from None
+
+
+def magnitude(name: str, value: Any, unit: str) -> Any:
+    """The magnitude of ``value`` in ``unit`` under the Python API's rule (module docstring).
+
+    - ``str``: parsed; it must carry units of ``unit``'s dimension (``"8.8 mm"`` -> 0.0088 for
+      ``unit="m"``); a bare number string is refused with a hint;
+    - a pint Quantity of any registry (scalar or array): converted (dimension checked);
+    - anything else is returned unchanged (a number is taken as already in ``unit``).
+
+    ValueError naming ``name`` for unparsable text, a missing unit or a wrong dimension.
+    Examples: ``magnitude("angle", "20 deg", "rad") == math.radians(20)``,
+    ``magnitude("mass", 0.46, "kg") == 0.46``.
+    """
+    if isinstance(value, str):
+        q = _parse(name, value, unit)
+        if q.unitless:
+            raise ValueError(
+                f"{name}: the string {value!r} has no unit; pass a number in {unit} or a string "
+                f"with units, e.g. '{value.strip()} {unit}'"
+            )
+        return float(_convert(name, q, unit, value).magnitude)
+    if is_quantity(value):
+        m = _convert(name, _foreign(name, value), unit, value).magnitude
+        return float(m) if np.ndim(m) == 0 else np.asarray(m, dtype=np.float64)
+    return value
+
+
 def to_si(value: Any, unit: str, *, name: str = "value") -> float:
     """Convert ``value`` (a number already in ``unit``, or a string such as ``"8.8 mm"``) to the SI
     magnitude of ``unit``'s dimension. ValueError naming ``name`` for unparsable input or wrong
     dimensions. Example: ``to_si("8.8 mm", "m") == 0.0088``."""
-    ureg = registry()
-    target = ureg.Unit(unit)
+    target = registry().Unit(unit)
     if isinstance(value, int | float):
         q = float(value) * target
     else:
-        text = str(value).strip()
-        if not text:
-            raise ValueError(f"{name} is empty; expected a quantity in {unit}, e.g. '1.0 {unit}'")
-        try:
-            q = ureg.Quantity(text)
-        except Exception as exc:  # pint raises several unrelated types
-            raise ValueError(f"{name}: cannot parse {text!r} as a quantity ({exc})") from None
+        q = _parse(name, str(value), unit)
         if q.unitless:
             q = float(q.magnitude) * target  # a bare number means "in the stated unit"
-    try:
-        si = q.to(target).to_base_units()
-    except pint.DimensionalityError:
-        raise ValueError(
-            f"{name}: {value!r} has the wrong dimension; expected a quantity convertible to {unit}"
-        ) from None
-    x = float(si.magnitude)
+    x = float(_convert(name, q, unit, value).to_base_units().magnitude)
     if not math.isfinite(x):
         raise ValueError(f"{name} must be finite, got {value!r}")
     return x
@@ -48,3 +112,6 @@ def to_si(value: Any, unit: str, *, name: str = "value") -> float:
 def angle_to_rad(value: Any, *, name: str = "angle") -> float:
     """An angle (bare numbers are degrees) in radians."""
     return to_si(value, "degree", name=name)
+
+
+__all__ = ["angle_to_rad", "is_quantity", "magnitude", "registry", "to_si"]

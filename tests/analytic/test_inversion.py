@@ -7,8 +7,11 @@ import json
 import math
 import sys
 
+import numpy as np
+import pint
 import pytest
 
+import impactlab as il
 from impactlab import analytic as an
 from impactlab.bodies import Rod
 from impactlab.paper.data import EXPERIMENTS, PAPER_ROD, published_row
@@ -32,20 +35,24 @@ def paper_inversion(angle_deg, **kw):
 def test_paper_durations_within_5_percent(angle_deg):
     row = published_row(angle_deg, "experiment")
     r = paper_inversion(angle_deg)
-    assert r.T == pytest.approx(row.T, rel=0.05)
+    assert r.duration == pytest.approx(row.T, rel=0.05)
 
 
 def test_paper_durations_hand_values():
     # |T| = (|L_s| / |alpha| + |delta_p|) / |v_i| with alpha computed by hand in test_closed_forms
-    assert paper_inversion(20).T == pytest.approx((1400e-6 / 0.242744 + 22e-6) / 1.41, rel=1e-5)
-    assert paper_inversion(45).T == pytest.approx((1650e-6 / 0.552338 + 26e-6) / 2.18, rel=1e-5)
-    assert paper_inversion(20).T == pytest.approx(4.106e-3, rel=1e-3)
-    assert paper_inversion(45).T == pytest.approx(1.382e-3, rel=1e-3)
+    assert paper_inversion(20).duration == pytest.approx(
+        (1400e-6 / 0.242744 + 22e-6) / 1.41, rel=1e-5
+    )
+    assert paper_inversion(45).duration == pytest.approx(
+        (1650e-6 / 0.552338 + 26e-6) / 2.18, rel=1e-5
+    )
+    assert paper_inversion(20).duration == pytest.approx(4.106e-3, rel=1e-3)
+    assert paper_inversion(45).duration == pytest.approx(1.382e-3, rel=1e-3)
 
 
 def test_rigid_identity_force():
     r = paper_inversion(20)
-    assert r.F * r.T == pytest.approx(1.5 * 1.41 / r.K_y, rel=1e-12)
+    assert r.mean_force * r.duration == pytest.approx(1.5 * 1.41 / r.K_y, rel=1e-12)
     assert r.force_method == "rigid-body identity" and r.F_momentum is None
 
 
@@ -71,7 +78,7 @@ def test_sign_of_v_i_does_not_matter_and_paper_signs_of_the_dent_are_refused():
         sliding_length=abs(x.L_s),
         n_samples=200,
     )
-    assert a.T == b.T and a.F == b.F
+    assert a.duration == b.duration and a.mean_force == b.mean_force
     for kw in ({"delta_p": -abs(x.delta_p)}, {"sliding_length": -abs(x.L_s)}):
         args = dict(
             angle=x.angle,
@@ -106,7 +113,7 @@ def test_uncertainty_linear_case_exact():
     assert r.sigma_T_linear == pytest.approx(hand, rel=1e-5)
     assert r.sensitivity_T["delta_p"] == pytest.approx(1 / 1.41, rel=1e-6)
     assert r.sigma_T_mc == pytest.approx(hand, rel=0.02)  # MC noise ~ 1/sqrt(2 n) = 0.35 %
-    assert r.T_mc == pytest.approx(r.T, rel=2e-3)
+    assert r.T_mc == pytest.approx(r.duration, rel=2e-3)
 
 
 @pytest.mark.parametrize("angle_deg", [20, 45, 70])
@@ -126,7 +133,7 @@ def test_first_order_agrees_with_monte_carlo(angle_deg):
     assert r.mc_rejected == 0.0
     assert r.sigma_T_mc == pytest.approx(r.sigma_T_linear, rel=0.03)
     assert r.sigma_F_mc == pytest.approx(r.sigma_F_linear, rel=0.03)
-    assert r.T_interval_mc[0] < r.T < r.T_interval_mc[1]
+    assert r.T_interval_mc[0] < r.duration < r.T_interval_mc[1]
 
 
 def test_large_uncertainty_is_reported_as_rejected_samples():
@@ -142,7 +149,7 @@ def test_large_uncertainty_is_reported_as_rejected_samples():
     )
     assert r.mc_rejected > 0.05
     assert "discarded" in str(r)
-    assert r.T > 0 and r.T_mc > 0
+    assert r.duration > 0 and r.T_mc > 0
 
 
 def test_monte_carlo_is_seeded():
@@ -163,12 +170,12 @@ def test_monte_carlo_is_seeded():
 def test_result_object():
     r = paper_inversion(20)
     with pytest.raises(dataclasses.FrozenInstanceError):
-        r.T = 1.0  # type: ignore[misc]
+        r.duration = 1.0  # type: ignore[misc]
     with pytest.raises(TypeError):
         r.inputs["mu"] = (0.0, 0.0)  # type: ignore[index]
     d = r.to_dict()
     json.dumps(d)
-    assert d["T"] == r.T and d["inputs"]["L_s"] == [1400e-6, 0.0]
+    assert d["duration"] == r.duration and d["inputs"]["sliding_length"] == [1400e-6, 0.0]
     assert d["rod"]["inertia"] == pytest.approx(PAPER_ROD.mass * PAPER_ROD.length**2 / 12)
     text = str(r)
     assert "T = 4.106 ms" in text and "alpha = -0.2427" in text
@@ -177,11 +184,11 @@ def test_result_object():
 def test_momentum_force_and_inertia_argument():
     r = paper_inversion(20, dv_cy=0.7)
     assert r.force_method == "momentum"
-    assert r.F == pytest.approx(0.4607 * 0.7 / r.T)
-    assert r.F_rigid == pytest.approx(1.5 * 1.41 / (r.K_y * r.T))
+    assert r.mean_force == pytest.approx(0.4607 * 0.7 / r.duration)
+    assert r.F_rigid == pytest.approx(1.5 * 1.41 / (r.K_y * r.duration))
     heavy = Rod(length=0.3048, tip_radius=0.0088, mass=0.4607, inertia=0.4607 * 0.3048**2 / 10)
     r2 = paper_inversion(20, rod=heavy)
-    assert r2.rod["inertia"] == heavy.inertia and r2.T != r.T
+    assert r2.rod["inertia"] == heavy.inertia and r2.duration != r.duration
 
 
 # --- command line --------------------------------------------------------------------------
@@ -203,7 +210,7 @@ def run_cli(monkeypatch, capsys, *args):
 def test_cli_paper_case_json(monkeypatch, capsys):
     code, out, _ = run_cli(monkeypatch, capsys, "--case", "paper-20", "--json", "--samples", "200")
     assert code == 0
-    assert json.loads(out)["T"] == pytest.approx(paper_inversion(20).T)
+    assert json.loads(out)["duration"] == pytest.approx(paper_inversion(20).duration)
 
 
 def test_cli_units_and_sigmas(monkeypatch, capsys):
@@ -230,7 +237,7 @@ def test_cli_units_and_sigmas(monkeypatch, capsys):
     )
     assert code == 0
     d = json.loads(out)
-    assert d["T"] == pytest.approx(paper_inversion(20).T)
+    assert d["duration"] == pytest.approx(paper_inversion(20).duration)
     assert d["sigma_T_linear"] == pytest.approx(50e-6 / (0.242744 * 1.41), rel=1e-4)
 
 
@@ -243,7 +250,7 @@ def test_cli_file(monkeypatch, capsys, tmp_path):
     assert code == 0, err
     d = json.loads(out)
     assert d["inputs"]["e"] == [0.49, 0.02]
-    assert d["T"] == pytest.approx(paper_inversion(45).T, rel=1e-3)
+    assert d["duration"] == pytest.approx(paper_inversion(45).duration, rel=1e-3)
 
 
 @pytest.mark.parametrize(
@@ -260,3 +267,53 @@ def test_cli_errors_are_one_line(monkeypatch, capsys, args, needle):
     code, _out, err = run_cli(monkeypatch, capsys, *args)
     assert code == 2
     assert needle in err and err.count("\n") == 1 and "Traceback" not in err
+
+
+# -- issue 14 items 3 and 11: plausible units, one input rule -----------------------------------
+
+BASE = dict(angle=math.radians(20), v_i=-1.41, e=0.5, mu=0.2, delta_p=22e-6, sliding_length=1.4e-3)
+
+
+@pytest.mark.parametrize(
+    ("override", "match"),
+    [
+        ({"seed": "abc"}, "seed must be None or an integer >= 0, got 'abc'"),
+        ({"seed": True}, "seed must be None or an integer >= 0, got True"),
+        ({"seed": -1}, "seed must be None or an integer >= 0"),
+        ({"gravity": "yes"}, "gravity must be True or False, got 'yes'"),
+        ({"mu": "0.2"}, "mu must be a real number, got the string '0.2': write mu=0.2"),
+        ({"e": True}, "e must be a real number, got the bool True"),
+        ({"v_i": "-1.41"}, "v_i: the string '-1.41' has no unit"),
+        ({"delta_p": 22.0}, r"delta_p = 22.0 m is deeper than the rod's tip radius \(0.0088 m\)"),
+        ({"sliding_length": 1.0}, r"sliding_length = 1.0 m is longer than the rod \(0.3048 m\)"),
+    ],
+)
+def test_invert_refuses_bad_and_impossible_inputs(override, match):
+    with pytest.raises(ValueError, match=match):
+        an.invert(**{**BASE, **override}, n_samples=100)
+
+
+def test_invert_warns_on_implausible_inputs():
+    with pytest.warns(il.ImplausibleInputWarning, match="deeper than 0.1 of the tip radius"):
+        an.invert(**{**BASE, "delta_p": 2e-3}, n_samples=100)
+    with pytest.warns(il.ImplausibleInputWarning, match="v_i = 141.0 m/s exceeds 100 m/s"):
+        an.invert(**{**BASE, "v_i": -141.0}, n_samples=100)
+    with pytest.warns(il.ImplausibleInputWarning, match=r"duration T = .* s exceeds 0.1 s"):
+        an.invert(**{**BASE, "v_i": -0.01}, n_samples=100)
+
+
+def test_invert_takes_units_and_quantities_of_any_registry():
+    other = pint.UnitRegistry()
+    ref = an.invert(**BASE, n_samples=100)
+    r = an.invert(
+        angle="20 deg",
+        v_i=-1.41 * other("m/s"),
+        e=0.5,
+        mu=0.2,
+        delta_p="22 um",
+        sliding_length=("1.4 mm", 0.0 * other.um),
+        n_samples=100,
+    )
+    assert r.duration == pytest.approx(ref.duration, rel=1e-12)
+    assert r.inputs["sliding_length"] == pytest.approx((1.4e-3, 0.0))
+    assert r.seed == 0 and isinstance(an.invert(**BASE, seed=np.int64(3)).seed, int)

@@ -152,3 +152,16 @@ def test_paper_cases_are_computable_with_every_law(paper_models: dict[str, Conta
             res = quasi_static_rebound(model, 0.4607, v)
             assert 0.0 < res.restitution <= 1.0 + 1e-12
             assert res.delta_m < model.max_interference
+
+
+def test_law_parameters_take_their_units_and_refuse_text(paper_pair: ContactPair) -> None:
+    brake = get_law("brake")
+    ref = brake.build(paper_pair, 8.8e-3, hardness=105.0)
+    same = brake.build(paper_pair, "8.8 mm", hardness="105 kgf/mm^2")
+    np.testing.assert_array_equal(ref.params, same.params)
+    with pytest.raises(ValueError, match="hardness: the string '105' has no unit"):
+        brake.build(paper_pair, 8.8e-3, hardness="105")
+    with pytest.raises(ValueError, match="published_switch must be a real number, got the string"):
+        get_law("ghaednia").build(paper_pair, 8.8e-3, published_switch="1")
+    with pytest.raises(ValueError, match="law_params must be a mapping"):
+        brake.parameter_values("abc")

@@ -13,4 +13,4 @@ def test_inversion_renders_html_table() -> None:
     )
     page = res._repr_html_()
     assert page.startswith("<table>") and "InversionResult" in page
-    assert f"{res.T:.6g}" in page
+    assert f"{res.duration:.6g}" in page

@@ -84,3 +84,16 @@ def test_reduced_modulus_symmetric_and_below_each(
     es = reduced_modulus(a, b)
     assert es == pytest.approx(reduced_modulus(b, a), rel=1e-12)
     assert es < min(reduced_modulus(a), reduced_modulus(b))
+
+
+def test_moduli_take_units_and_numbers_refuse_text() -> None:
+    m = Material(
+        "x", E="200 GPa", nu=0.3, yield_strength="305 MPa", brinell_hardness="105 kgf/mm^2"
+    )
+    assert (m.E, m.yield_strength, m.brinell_hardness) == pytest.approx((200e9, 305e6, 105.0))
+    with pytest.raises(ValueError, match=r"nu must be a real number, got the string '0.3'"):
+        Material("x", E=200e9, nu="0.3", yield_strength=305e6)  # type: ignore[arg-type]
+    with pytest.raises(ValueError, match="E: the string '200e9' has no unit"):
+        Material("x", E="200e9", nu=0.3, yield_strength=305e6)  # type: ignore[arg-type]
+    with pytest.raises(ValueError, match="meyer_index must be a real number, got the bool True"):
+        Material("x", E=200e9, nu=0.3, yield_strength=305e6, meyer_index=True)

@@ -1,12 +1,23 @@
-"""Quantities with units at the edge."""
+"""Quantities with units at the edge, and the Python API's input rule."""
 
 from __future__ import annotations
 
 import math
 
+import numpy as np
+import pint
 import pytest
 
-from impactlab.units import angle_to_rad, to_si
+from impactlab._validation import (
+    ImplausibleInputWarning,
+    check_array,
+    check_finite,
+    check_flag,
+    check_positive,
+    check_seed,
+    warn_implausible,
+)
+from impactlab.units import angle_to_rad, is_quantity, magnitude, to_si
 
 
 @pytest.mark.parametrize(
@@ -36,3 +47,78 @@ def test_angles_default_to_degrees() -> None:
 def test_bad_quantities_name_the_input(bad: str) -> None:
     with pytest.raises(ValueError, match="radius"):
         to_si(bad, "m", name="radius")
+
+
+# -- the Python API's input rule (impactlab.units.magnitude + impactlab._validation) -------------
+
+
+def test_magnitude_converts_strings_and_quantities_of_any_registry() -> None:
+    other = pint.UnitRegistry()  # not impactlab's registry
+    assert magnitude("v", -1.41 * other("m/s"), "m/s") == pytest.approx(-1.41)
+    assert magnitude("angle", "20 deg", "rad") == pytest.approx(math.radians(20))
+    assert magnitude("R", "8.8 mm", "m") == pytest.approx(8.8e-3)
+    np.testing.assert_allclose(magnitude("x", [1.0, 2.0] * other.mm, "m"), [1e-3, 2e-3])
+    assert magnitude("m", 0.46, "kg") == 0.46  # a number is already in the unit
+    assert is_quantity(other("1 m")) and not is_quantity(1.0)
+
+
+@pytest.mark.parametrize(
+    ("value", "match"),
+    [
+        ("-1.41", r"vy: the string '-1.41' has no unit.*'-1.41 m/s'"),
+        ("3 kg", "vy: '3 kg' has the wrong dimension"),
+        ("fast", "vy: cannot parse 'fast'"),
+        (5 * pint.UnitRegistry().kg, "vy: .* has the wrong dimension"),
+    ],
+)
+def test_magnitude_refuses_what_is_not_a_quantity_of_the_unit(value: object, match: str) -> None:
+    with pytest.raises(ValueError, match=match):
+        magnitude("vy", value, "m/s")
+
+
+@pytest.mark.parametrize(
+    ("value", "match"),
+    [
+        ("0.2", r"mu must be a real number, got the string '0.2': write mu=0.2"),
+        ("abc", "mu must be a real number, got the string 'abc'"),
+        (True, "mu must be a real number, got the bool True"),
+        (np.bool_(False), "mu must be a real number, got the bool"),
+        (None, "mu must be a real number, got None"),
+        ([0.2], "mu must be a real number"),
+        (math.nan, "mu must be finite"),
+    ],
+)
+def test_dimensionless_numbers_refuse_strings_and_bools(value: object, match: str) -> None:
+    with pytest.raises(ValueError, match=match):
+        check_finite("mu", value)
+
+
+def test_the_number_rule_accepts_real_numbers() -> None:
+    assert check_finite("mu", 1) == 1.0
+    assert check_finite("mu", np.float32(0.5)) == 0.5
+    assert check_finite("mu", np.array(0.25)) == 0.25
+    assert check_finite("mu", 0.2 * pint.UnitRegistry().dimensionless) == pytest.approx(0.2)
+    assert check_positive("length", "30.48 cm", "m") == pytest.approx(0.3048)
+    assert check_positive("length", 0.3048, "m") == 0.3048
+
+
+def test_arrays_flags_and_seeds() -> None:
+    with pytest.raises(ValueError, match="vy must hold real numbers, got an array of strings"):
+        check_array("vy", [-1.0, "2"])
+    with pytest.raises(ValueError, match="vy must be a real number, got None"):
+        check_array("vy", None)
+    np.testing.assert_array_equal(check_array("vy", [-1, np.nan]), [-1.0, np.nan])
+    np.testing.assert_allclose(check_array("vy", "-1410 mm/s", "m/s"), -1.41)
+    assert check_flag("history", np.True_) is True
+    with pytest.raises(ValueError, match="history must be True or False, got 'no'"):
+        check_flag("history", "no")
+    assert check_seed("seed", None) is None and check_seed("seed", np.int64(3)) == 3
+    for bad in ("abc", True, -1, 1.5):
+        with pytest.raises(ValueError, match="seed must be None or an integer >= 0"):
+            check_seed("seed", bad)
+
+
+def test_implausible_warnings_point_at_the_callers_line() -> None:
+    with pytest.warns(ImplausibleInputWarning, match="too big") as rec:
+        warn_implausible("too big")
+    assert rec[0].filename == __file__

@@ -10,12 +10,14 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
-from impactlab.bodies import PAPER_ROD
+from impactlab.bodies import PAPER_ROD, Rod
 from impactlab.cli import app, main
 from impactlab.dynamics import simulate
+from impactlab.flags import ResultFlag, messages
 from impactlab.friction import DEFAULT_MU
 
 runner = CliRunner()
+ROD = ["simulate", "rod", "--angle", "20 deg"]
 
 
 def test_json_matches_the_api() -> None:
@@ -38,18 +40,19 @@ def test_json_matches_the_api() -> None:
 
 
 def test_default_mu_is_the_api_default_and_is_printed() -> None:
-    res = runner.invoke(app, ["simulate", "rod", "--vy", "-1.41 m/s", "--json"])
+    args = ["simulate", "rod", "--angle", "20 deg", "--vy", "-1.41 m/s"]
+    res = runner.invoke(app, [*args, "--json"])
     assert res.exit_code == 0, res.output
     data = json.loads(res.output)
     r = simulate(PAPER_ROD, angle=math.radians(20), velocity=(0.0, -1.41))
     assert data["mu"] == DEFAULT_MU == r.mu
     assert data["e"] == r.e
-    text = runner.invoke(app, ["simulate", "rod", "--vy", "-1.41 m/s"]).output
+    text = runner.invoke(app, args).output
     assert "mu" in text
 
 
-def test_bare_angle_is_degrees_and_units_parse() -> None:
-    a = runner.invoke(app, ["simulate", "rod", "--angle", "20", "--vy", "-1410 mm/s", "--json"])
+def test_angle_units_parse() -> None:
+    a = runner.invoke(app, ["simulate", "rod", "--angle", "20 deg", "--vy", "-1410 mm/s", "--json"])
     b = runner.invoke(
         app, ["simulate", "rod", "--angle", "0.3490658503988659 rad", "--vy", "-1.41", "--json"]
     )
@@ -78,24 +81,103 @@ def test_config_file_and_plots(tmp_path: Path) -> None:
 @pytest.mark.parametrize(
     ("args", "match"),
     [
-        (["simulate", "rod", "--angle", "20", "--vy", "1.0"], "does not approach"),
-        (["simulate", "rod", "--vy", "-1", "--friction", "foo"], "unknown friction model"),
-        (["simulate", "rod", "--vy", "-1", "--mu", "-0.5"], "mu must be >= 0"),
+        ([*ROD, "--vy", "1.0"], "does not approach"),
+        ([*ROD, "--vy", "-1", "--friction", "foo"], "unknown friction model"),
+        ([*ROD, "--vy", "-1", "--mu", "-0.5"], "mu must be >= 0"),
         (["simulate", "cube", "--vy", "-1"], "body must be 'rod' or 'sphere'"),
-        (["simulate", "rod"], "--vy is required"),
-        (["simulate", "rod", "--vy", "-1 kg"], "wrong dimension"),
+        (ROD, "--vy is required"),
+        ([*ROD, "--vy", "-1 kg"], "wrong dimension"),
+        # a given value is used, never replaced by the paper's (issue 14, item 7)
+        ([*ROD, "--vy", "-1", "--mass", "0 kg"], "--mass must be > 0, got '0 kg'"),
+        ([*ROD, "--vy", "-1", "--radius", "0"], "--radius must be > 0"),
+        ([*ROD, "--vy", "-1", "--length", "0 m"], "--length must be > 0"),
+        ([*ROD, "--vy", "-1", "--inertia", "-1 kg*m^2"], "--inertia must be > 0"),
+        (["simulate", "sphere", "--vy", "-1", "--mass", "0 kg"], "--mass must be > 0"),
+        # a rod needs its angle, with a unit (issue 14 item 7, issue 15)
+        (["simulate", "rod", "--vy", "-1"], "a rod needs its angle to the flat: give --angle"),
+        (["simulate", "rod", "--angle", "0.35", "--vy", "-1"], "--angle 0.35 has no unit"),
+        (["simulate", "rod", "--angle", "20", "--vy", "-1"], "'20 deg' or '0.35 rad'"),
+        # options that do not apply are refused
+        (["simulate", "sphere", "--angle", "30 deg", "--vy", "-1"], "a sphere has no angle"),
+        (["simulate", "sphere", "--length", "1 m", "--vy", "-1"], "--length: a sphere has no"),
+        (["simulate", "sphere", "--constant-angle", "--vy", "-1"], "--constant-angle: a sphere"),
+        ([*ROD, "--vy", "-1", "--out", "figs"], "--out applies only with --plot"),
     ],
 )
 def test_user_errors_are_one_line(
     args: list[str], match: str, capsys: pytest.CaptureFixture[str]
 ) -> None:
+    code, _, err = _main(args, capsys)
+    assert code == 2
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and match in lines[0], lines
+
+
+def _main(args: list[str], capsys: pytest.CaptureFixture[str]) -> tuple[int, str, str]:
+    """(exit status, stdout, stderr) of the installed entry point's ``main`` on ``args``."""
     old = sys.argv
     sys.argv = ["impactlab", *args]
+    code = 0
     try:
-        with pytest.raises(SystemExit) as exc:
-            main()
+        main()
+    except SystemExit as exc:
+        code = int(exc.code or 0)
     finally:
         sys.argv = old
-    assert exc.value.code == 2
-    err = capsys.readouterr().err.strip().splitlines()
-    assert len(err) == 1 and match in err[0], err
+    out = capsys.readouterr()
+    return code, out.out, out.err
+
+
+def test_config_values_are_used_and_named(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """A zero in the config file is an error naming the key and the file, not the paper's value."""
+    cfg = tmp_path / "case.toml"
+    cfg.write_text('angle = "20 deg"\nvy = "-1 m/s"\nmass = "0 kg"\n')
+    code, _, err = _main(["simulate", "--config", str(cfg)], capsys)
+    assert code == 2 and "mass (in " in err and "case.toml) must be > 0" in err
+    cfg.write_text('vy = "-1 m/s"\nangle = 20\n')
+    code, _, err = _main(["simulate", "--config", str(cfg)], capsys)
+    assert code == 2 and "angle (in " in err and "has no unit" in err
+
+
+def test_given_sizes_are_used() -> None:
+    res = runner.invoke(app, [*ROD, "--vy", "-1.41 m/s", "--mass", "0.3 kg", "--json"])
+    assert res.exit_code == 0, res.output
+    light = simulate(
+        Rod(length=PAPER_ROD.length, tip_radius=PAPER_ROD.tip_radius, mass=0.3),
+        angle=math.radians(20),
+        velocity=(0.0, -1.41),
+    )
+    assert json.loads(res.stdout)["e"] == light.e
+
+
+def test_sphere_prints_no_angle() -> None:
+    res = runner.invoke(app, ["simulate", "sphere", "--vy", "-1 m/s"], env={"COLUMNS": "200"})
+    assert res.exit_code == 0, res.output
+    assert "angle" not in res.stdout and "nan" not in res.stdout
+
+
+def test_out_naming_a_file_is_one_line(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """--out naming an existing file (or a path below one): one line naming it (issue 14, 8)."""
+    f = tmp_path / "taken.txt"
+    f.write_text("x")
+    for out in (f, f / "figs"):
+        code, _, err = _main([*ROD, "--vy", "-1", "--plot", "--out", str(out)], capsys)
+        assert code == 2 and str(out) in err and "Traceback" not in err
+        assert len(err.strip().splitlines()) == 1
+
+
+def test_flags_are_printed_and_in_the_json(capsys: pytest.CaptureFixture[str]) -> None:
+    """A gravity-dominated impact: each warning on one line of stderr; the JSON carries the flags
+    and the warnings (issue 14, items 1-2)."""
+    code, out, err = _main([*ROD, "--vy", "-1e-9 m/s", "--mu", "0.2", "--json"], capsys)
+    assert code == 0
+    data = json.loads(out)
+    assert data["flags"] == int(ResultFlag.GRAVITY_DOMINATED)
+    assert data["warnings"] == list(messages(ResultFlag.GRAVITY_DOMINATED))
+    assert err.splitlines() == [f"warning: {w}" for w in data["warnings"]]
+    code, out, err = _main([*ROD, "--vy", "-1e-9 m/s", "--mu", "0.2"], capsys)
+    assert code == 0 and "gravity_dominated" in out and err.startswith("warning: gravity")
+    code, out, err = _main([*ROD, "--vy", "-1.41 m/s", "--json"], capsys)
+    assert json.loads(out)["flags"] == 0 and json.loads(out)["warnings"] == [] and err == ""

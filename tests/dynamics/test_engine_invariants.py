@@ -20,7 +20,7 @@ from hypothesis import strategies as st
 from impactlab.bodies import PAPER_ROD, Rod, Sphere
 from impactlab.contact import law_names
 from impactlab.dynamics import OUTPUT_FIELDS, contact_model, simulate
-from impactlab.dynamics.batch import _run
+from impactlab.dynamics.batch import run_arrays
 from impactlab.friction import FRICTION_IDS
 from impactlab.materials import AISI_1010
 
@@ -54,7 +54,7 @@ def test_invariants_batch(law: str, friction: str, rod: bool) -> None:
     rng = np.random.default_rng(zlib.crc32(f"{law}/{friction}/{rod}".encode()))
     init, mu = _random_cases(rng, N_CASES, rod)
     model = contact_model(body, AISI_1010, law)
-    out, status = _run(
+    out, status = run_arrays(
         model.law_id,
         FRICTION_IDS[friction],
         model.params,

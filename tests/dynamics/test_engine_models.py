@@ -109,7 +109,7 @@ def test_core_layout_follows_the_schema() -> None:
     assert layout.N_OUT == len(OUTPUT_FIELDS)
     assert OUTPUT_FIELDS[layout.O_SPIN] == "spin_out"
     assert OUTPUT_FIELDS[layout.O_FEX] == "friction_excess"
-    assert HISTORY_FIELDS[layout.H_SPIN] == "omega" and layout.NH == len(HISTORY_FIELDS)
+    assert HISTORY_FIELDS[layout.H_SPIN] == "spin" and layout.NH == len(HISTORY_FIELDS)
     assert layout.S_SPIN != layout.S_WORK
     for name in (
         *OUTPUT_FIELDS,

@@ -5,8 +5,10 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import pint
 import pytest
 
+from impactlab import ImplausibleInputWarning
 from impactlab.bodies import NB, PAPER_ROD, Rod, Sphere
 from impactlab.contact.kernels import NPARAM
 from impactlab.dynamics import (
@@ -18,6 +20,7 @@ from impactlab.dynamics import (
     simulate,
     simulate_batch,
 )
+from impactlab.flags import ResultFlag
 from impactlab.friction import get_friction
 from impactlab.materials import AISI_1010
 
@@ -98,6 +101,7 @@ def test_spin_can_make_the_rod_recede() -> None:
         simulate(PAPER_ROD, angle=0.3, velocity=(0.0, -0.5), spin=-10.0)
 
 
+@pytest.mark.filterwarnings("ignore::impactlab.ImplausibleInputWarning")  # 400 m/s on purpose
 def test_law_validity_exceeded_is_a_clear_error() -> None:
     with pytest.raises(ValueError, match="validity limit of the 'kogut-komvopoulos' law"):
         simulate(Sphere(0.002), law="kogut-komvopoulos", velocity=(0.0, -400.0))
@@ -116,6 +120,7 @@ def test_bad_body_and_flat() -> None:
         simulate(PAPER_ROD, "steel", **OK)  # type: ignore[arg-type]
 
 
+@pytest.mark.filterwarnings("ignore::impactlab.ImplausibleInputWarning")  # 600 m/s on purpose
 def test_batch_flags_bad_cases_and_never_crashes() -> None:
     angle = np.array([0.3, 0.3, 20.0, math.nan, 0.3, 0.3])
     vy = np.array([-1.0, 1.0, -1.0, -1.0, -1.0, -600.0])
@@ -176,3 +181,99 @@ def test_mindlin_needs_g_star() -> None:
         0, get_friction("mindlin").friction_id, model.params, bp, [0.3, 0.0, -1.0, 0.0], 0.2
     )
     assert list(st) == [10]
+
+
+# -- issue 14 item 11: one input rule, no leaked internal errors, no lenient coercions -----------
+
+
+@pytest.mark.parametrize(
+    ("override", "match"),
+    [
+        ({"law_params": "abc"}, "law_params must be a mapping of parameter names to values"),
+        ({"mu": "0.2"}, r"mu must be a real number, got the string '0.2': write mu=0.2"),
+        ({"mu": True}, "mu must be a real number, got the bool True"),
+        ({"velocity": (0, "-1.41")}, r"velocity\[1\] \(vy\): the string '-1.41' has no unit"),
+        ({"angle": "20"}, "angle: the string '20' has no unit"),
+        ({"angle": "20 m"}, "angle: '20 m' has the wrong dimension"),
+        ({"spin": "1 m/s"}, "spin: '1 m/s' has the wrong dimension"),
+        ({"rtol": "1e-8"}, "rtol must be a real number, got the string"),
+        ({"gravity": "9.81"}, "gravity: the string '9.81' has no unit"),
+        ({"history": "no"}, "history must be True or False, got 'no'"),
+        ({"constant_angle": 1}, "constant_angle must be True or False, got 1"),
+        ({"law_params": {"published_switch": True}}, "published_switch must be a real number"),
+    ],
+)
+def test_simulate_refuses_strings_bools_and_unitless_text(override: dict, match: str) -> None:
+    with pytest.raises(ValueError, match=match):
+        simulate(PAPER_ROD, **{**OK, **override})
+
+
+def test_quantities_with_units_and_of_any_registry_give_identical_results() -> None:
+    other = pint.UnitRegistry()  # not impactlab's registry
+    ref = simulate(PAPER_ROD, **OK)
+    same = [
+        simulate(PAPER_ROD, mu=0.2, angle="20 deg", velocity=(0.0, "-1.41 m/s")),
+        simulate(PAPER_ROD, mu=0.2, angle=20 * other.deg, velocity=(0, -1.41 * other("m/s"))),
+        simulate(PAPER_ROD, mu=0.2, angle=OK["angle"], velocity=(0.0, -1.41) * other("m/s")),
+        simulate(PAPER_ROD, **OK, gravity="9.80665 m/s^2", spin="0 rad/s"),
+    ]
+    for r in same:
+        assert (r.e, r.delta_p, r.duration) == pytest.approx((ref.e, ref.delta_p, ref.duration))
+    exact = simulate(PAPER_ROD, mu=0.2, angle=OK["angle"], velocity=(0.0, "-1.41 m/s"))
+    assert exact.e == ref.e and exact.delta_p == ref.delta_p
+
+
+def test_simulate_batch_refuses_bad_arrays_with_the_parameter_named() -> None:
+    with pytest.raises(ValueError, match="mu must be a real number, got the string 'abc'"):
+        simulate_batch(PAPER_ROD, mu="abc", angle=0.3, vy=-1.0)
+    with pytest.raises(ValueError, match="vy is required"):
+        simulate_batch(PAPER_ROD, angle=0.3, vy=None)
+    with pytest.raises(ValueError, match="vy must hold real numbers, got an array of strings"):
+        simulate_batch(PAPER_ROD, angle=0.3, vy=[-1.0, "-2"])
+    with pytest.raises(ValueError, match="mu must hold real numbers, got an array of bools"):
+        simulate_batch(PAPER_ROD, angle=0.3, vy=-1.0, mu=[True, False])
+    with pytest.raises(ValueError, match="constant_angle must be True or False"):
+        simulate_batch(PAPER_ROD, angle=0.3, vy=-1.0, constant_angle="yes")
+    other = pint.UnitRegistry()
+    a = simulate_batch(PAPER_ROD, angle=[0.3, 0.5], vy=-1.41, mu=0.2)
+    b = simulate_batch(PAPER_ROD, angle=[0.3, 0.5] * other.rad, vy="-1.41 m/s", mu=0.2)
+    np.testing.assert_array_equal(a.out, b.out)
+
+
+# -- issue 14 item 3: implausible units ---------------------------------------------------------
+
+
+def test_a_tip_wider_than_the_rod_is_refused_and_odd_sizes_warn() -> None:
+    with pytest.raises(ValueError, match=r"tip_radius = 8.8 m exceeds half the rod's length"):
+        Rod(length=0.3048, tip_radius=8.8, mass=0.4607)
+    with pytest.warns(ImplausibleInputWarning) as rec:
+        Rod(length=20.0, tip_radius=0.6, mass=0.4607)
+    assert [str(w.message).split(" lies")[0] for w in rec] == [
+        "length = 20.0 m",
+        "tip_radius = 0.6 m",
+    ]
+    assert rec[0].filename == __file__  # the warning points at the user's line
+    with pytest.warns(ImplausibleInputWarning, match="mass = 4607.0 kg"):
+        Rod(length=0.3048, tip_radius=0.0088, mass=4607.0)
+    with pytest.warns(ImplausibleInputWarning, match="radius = 0.6 m"):
+        Sphere(0.6, mass=1.0)
+    assert Rod(length="30.48 cm", tip_radius="8.8 mm", mass="460.7 g") == PAPER_ROD
+
+
+def test_a_fast_impact_warns() -> None:
+    with pytest.warns(ImplausibleInputWarning, match=r"impact speed \(141 m/s\) exceeds 100 m/s"):
+        simulate(Sphere(0.01), law="hertz", velocity=(0.0, -141.0))
+    with pytest.warns(
+        ImplausibleInputWarning, match=r"speed of the batch \(141 m/s\) exceeds 100 m/s"
+    ):
+        simulate_batch(Sphere(0.01), law="hertz", vy=[-1.0, -141.0])
+
+
+# -- issue 14 item 2: a gravity-dominated impact is flagged, not refused -------------------------
+
+
+def test_gravity_dominated_impact_is_flagged_not_refused() -> None:
+    r = simulate(PAPER_ROD, mu=0.2, angle=math.radians(20), velocity=(0.0, -1e-9))
+    assert ResultFlag.GRAVITY_DOMINATED in r.flags and not r.ok
+    assert any("gravity-dominated" in w for w in r.warnings)
+    assert simulate(PAPER_ROD, **OK).ok

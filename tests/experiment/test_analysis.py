@@ -4,18 +4,33 @@ from __future__ import annotations
 
 import json
 import math
+import re
 import subprocess
 import sys
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 import pytest
 from typer.testing import CliRunner
 
 import impactlab.analytic as analytic
 from impactlab.analytic import invert
+from impactlab.bodies import PAPER_ROD
 from impactlab.cli import app
-from impactlab.experiment import ExperimentError, analyze, rod_properties
+from impactlab.experiment import (
+    ExperimentError,
+    MarkerGeometry,
+    analyze,
+    check_rigidity,
+    fit_poses,
+    level_plane,
+    measure_dent,
+    measure_impact,
+    read_markers,
+    read_scan,
+    rod_properties,
+)
 
 GEOMETRY_TOML = """
 [markers]
@@ -52,8 +67,8 @@ def test_analyze_end_to_end(tmp_path: Path, drops: dict, scans: dict, rod: Any, 
         rod=rod_properties(rod),
         n_samples=2000,
     )
-    assert abs(s["T"].value - ref.T) < 3.0 * s["T"].sigma + 0.02 * ref.T
-    assert abs(s["F"].value - ref.F) < 3.0 * s["F"].sigma + 0.02 * ref.F
+    assert abs(s["T"].value - ref.duration) < 3.0 * s["T"].sigma + 0.02 * ref.duration
+    assert abs(s["F"].value - ref.mean_force) < 3.0 * s["F"].sigma + 0.02 * ref.mean_force
     saved = json.loads((tmp_path / "out" / "results.json").read_text())
     assert saved["summary"]["T"]["value"] == pytest.approx(s["T"].value)
     assert saved["errors"] == {}
@@ -173,3 +188,140 @@ def test_engine_comparison(drops: dict, scans: dict, rod: Any) -> None:
         assert math.isfinite(res.model[key])
     if d.truth.source == "engine":  # the same engine, the measured inputs: the same e
         assert res.model["e"] == pytest.approx(d.truth.e, abs=0.02)
+
+
+# ---------------------------------------------------------------------------------------------
+# plausibility of the dent (issue 14, item 3), bad arguments (item 11), --out (item 8)
+# ---------------------------------------------------------------------------------------------
+
+
+@pytest.fixture(scope="module")
+def plain_scan(tmp_path_factory: pytest.TempPathFactory, scans: dict) -> tuple[Path, float, Any]:
+    """The 20 deg dent as a plain .npy height map in metres (and its pixel size, truth)."""
+    sc = scans[20]
+    p = tmp_path_factory.mktemp("plain") / "dent_m.npy"
+    np.save(p, sc.z)
+    return p, sc.dx, sc.truth
+
+
+@pytest.mark.parametrize(
+    ("options", "needles"),
+    [
+        # a scan stored in metres read as um: 2.2e-11 m
+        ({"height_unit": "um"}, ("below 1 nm", "height unit (read as 'um')")),
+        # a pixel of 8 mm: the dent 1.2 m wide and 2.6 m long
+        (
+            {"pixel_size": "8 mm"},
+            ("wider than the tip's diameter 2R = 17.6 mm", "longer than the rod", "pixel size"),
+        ),
+        # a pixel of 80 nm: the dent 12 um wide but 22 um deep
+        ({"pixel_size": "80 nm"}, ("reaches 2.191 nm at that width", "pixel size (80 nm")),
+    ],
+)
+def test_impossible_dents_are_refused(
+    plain_scan: tuple[Path, float, Any], options: dict[str, Any], needles: tuple[str, ...]
+) -> None:
+    path, dx, _ = plain_scan
+    res = analyze(None, path, **{"pixel_size": dx, "height_unit": "m", **options})
+    assert set(res.errors) == {"scan"} and res.dent is None
+    assert "impossible dent for this rod" in res.errors["scan"]
+    for needle in needles:
+        assert needle in res.errors["scan"]
+
+
+def test_implausible_dents_are_warned(plain_scan: tuple[Path, float, Any]) -> None:
+    """A scan in metres read as mm: a dent of 22 nm, measured but with warnings naming the unit."""
+    path, dx, truth = plain_scan
+    res = analyze(None, path, pixel_size=dx, height_unit="mm")
+    assert res.ok and res.dent is not None
+    assert res.dent.delta_p.value == pytest.approx(truth.groove.depth * 1e-3, rel=0.02)
+    text = " ".join(res.warnings)
+    assert "shallower than 0.1 um" in text and "height unit (read as 'mm')" in text
+    assert "997 times shallower than a tip of radius R = 8.8 mm" in text
+    good = analyze(None, path, pixel_size=dx, height_unit="m")
+    assert good.ok and not good.warnings
+
+
+def test_sign_flipped_scan_is_refused_then_read_over(
+    tmp_path: Path, plain_scan: tuple[Path, float, Any]
+) -> None:
+    """Depths stored as heights once gave delta_p -93 % with only a warning."""
+    path, dx, truth = plain_scan
+    flipped = tmp_path / "flipped.npy"
+    np.save(flipped, -np.load(path))
+    res = analyze(None, flipped, pixel_size=dx, height_unit="m")
+    assert set(res.errors) == {"scan"} and res.dent is None
+    assert "bump 22 um high, not a dent" in res.errors["scan"]
+    assert "sign-flipped" in res.errors["scan"] and "--flip-heights" in res.errors["scan"]
+    over = analyze(None, flipped, pixel_size=dx, height_unit="m", flip_heights=True)
+    assert over.ok and over.dent is not None
+    assert over.dent.delta_p.value == pytest.approx(truth.groove.depth, rel=0.02)
+
+
+PLAIN_8MM = ("--pixel-size", "8 mm", "--height-unit", "m")
+
+
+def test_cli_refuses_impossible_dent(plain_scan: tuple[Path, float, Any]) -> None:
+    path, _, _ = plain_scan
+    proc = subprocess.run(
+        [sys.executable, "-m", "impactlab", "analyze", "none.c3d", str(path), *PLAIN_8MM],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert proc.returncode == 2 and "Traceback" not in proc.stderr
+    err = proc.stderr.strip().splitlines()
+    assert len(err) == 1 and "scan: " in err[0] and "wider than the tip's diameter" in err[0]
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "error", "needle"),
+    [
+        ({"markers_path": 123, "scan_path": None}, TypeError, "markers_path must be a path"),
+        ({"markers_path": None, "scan_path": 1.5}, TypeError, "scan_path must be a path"),
+        ({"out_dir": 7}, TypeError, "out_dir must be a path"),
+        ({"geometry": "M1"}, TypeError, "geometry must be a MarkerGeometry"),
+        ({"n_samples": "many"}, ValueError, "n_samples must be an integer >= 100"),
+        ({"strict": "yes"}, TypeError, "strict must be True or False"),
+        ({"flip_heights": 1}, TypeError, "flip_heights must be True or False"),
+        ({"law": 5}, TypeError, "law must be a contact law's name"),
+        ({"height_unit": 6}, TypeError, "height_unit must be a unit name"),
+        ({"pixel_size": []}, ValueError, "pixel_size"),
+        ({"up": "sideways"}, ValueError, "up must be one of"),
+        ({"kinematics_options": 3}, TypeError, "kinematics_options must be a mapping"),
+        ({"dent_options": {"smoth": 2}}, ValueError, "dent_options: unknown option(s) ['smoth']"),
+    ],
+)
+def test_bad_arguments_name_the_parameter(
+    kwargs: dict[str, Any], error: type[Exception], needle: str
+) -> None:
+    """``analyze(123, None)`` once leaked pathlib's TypeError (issue 14, item 11)."""
+    args = {"markers_path": None, "scan_path": None, **kwargs}
+    with pytest.raises(error) as exc:
+        analyze(**args)
+    assert needle in str(exc.value)
+
+
+def test_entry_points_name_a_wrong_argument() -> None:
+    cases = [
+        (lambda: read_markers(123), "path must be a path"),
+        (lambda: read_scan(None), "path must be a path"),
+        (lambda: measure_dent(np.zeros((9, 9))), "hm must be a HeightMap"),
+        (lambda: level_plane(1), "hm must be a HeightMap"),
+        (lambda: measure_impact(None, rod_properties(PAPER_ROD)), "tracks must be a MarkerTracks"),
+        (lambda: check_rigidity(1), "tracks must be a MarkerTracks"),
+        (lambda: fit_poses(1, np.zeros((3, 3))), "tracks must be a MarkerTracks"),
+        (lambda: MarkerGeometry.from_mapping(1), "data must be a Mapping"),
+    ]
+    for call, needle in cases:
+        with pytest.raises(TypeError, match=re.escape(needle)):
+            call()
+
+
+def test_out_dir_naming_a_file_is_refused_at_once(tmp_path: Path, scans: dict) -> None:
+    taken = tmp_path / "taken"
+    taken.write_text("x")
+    for out in (taken, taken / "below"):
+        with pytest.raises(ValueError, match=re.escape(f"out_dir {str(out)!r}")):
+            analyze(None, scans[20].files["x3p"], out_dir=out)
+    assert taken.read_text() == "x"

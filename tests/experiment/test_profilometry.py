@@ -21,6 +21,7 @@ from impactlab.experiment import (
     HeightMap,
     MarkerTracks,
     MissingDependencyError,
+    ScanError,
     level_plane,
     measure_dent,
     read_scan,
@@ -215,3 +216,30 @@ def test_engine_dent_map() -> None:
     assert d.delta_p.value == pytest.approx(dm.max_depth, rel=0.02)
     assert d.length.value == pytest.approx(dm.length, rel=0.05)
     assert d.width.value == pytest.approx(dm.width, rel=0.05)
+
+
+def test_a_dent_near_the_noise_floor_is_warned() -> None:
+    """A dent only a few times deeper than the scan's noise is measured with a warning."""
+    z, dx, dy, _ = S.synthetic_scan(
+        depth=0.6e-6, sliding_length=300e-6, noise=0.15e-6, pileup=0.0, seed=3
+    )
+    d = measure_dent(HeightMap(z, dx, dy, "shallow.x3p"))
+    assert any("times the scan's noise" in w and "barely resolved" in w for w in d.warnings)
+    deep = measure_dent(HeightMap(*S.synthetic_scan(seed=3)[:3], "deep.x3p"))
+    assert not any("noise" in w for w in deep.warnings)
+
+
+def test_a_bump_is_not_a_dent(small: Any) -> None:
+    """A sign-flipped scan (depths stored as heights) is refused, naming the way out; turned
+    over, it measures as before; a dust grain higher than the dent does not trigger it."""
+    z, dx, dy, truth = small
+    hm = HeightMap(-z, dx, dy, "flipped.x3p")
+    with pytest.raises(ScanError, match=r"flipped\.x3p: .*bump .* not a dent.*sign-flipped"):
+        measure_dent(hm)
+    d = measure_dent(hm.flipped())
+    assert d.delta_p.value == pytest.approx(truth.groove.depth, rel=0.02)
+    dusty = z.copy()
+    dusty[20:24, 20:24] += 60e-6  # a grain three times higher than the dent is deep
+    assert measure_dent(HeightMap(dusty, dx, dy)).delta_p.value == pytest.approx(
+        truth.groove.depth, rel=0.02
+    )

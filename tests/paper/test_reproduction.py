@@ -75,7 +75,7 @@ def test_report_numbers_match_library(analytic_run):
             delta_p=abs(x.delta_p),
             sliding_length=abs(x.L_s),
             n_samples=100,
-        ).T
+        ).duration
         assert f"{T * 1e3:.4g}" in text and f"{T * 1e3:.4g}" in html
     assert re.search(r"20 deg: T = 4\.106 ms vs published 4\.30 ms .*PASS", text)
     assert '<img src="fig5_alpha.png"' in html

@@ -8,6 +8,7 @@ from typing import Any
 
 import numpy as np
 
+from impactlab._validation import check_array_finite
 from impactlab.bodies import PAPER_ROD, Rod
 
 HALF_PI = 0.5 * math.pi
@@ -18,21 +19,17 @@ def arr(
     name: str,
     value: Any,
     *,
+    unit: str = "",
     low: float | None = None,
     high: float | None = None,
     low_open: bool = False,
     high_open: bool = False,
 ) -> Any:
-    """``value`` as a float64 array (0-d for scalars); ValueError naming ``name`` if it is not a
-    finite real or lies outside [low, high] (open ends where asked)."""
-    try:
-        x = np.asarray(value, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a real number or array, got {value!r}") from None
-    bad = ~np.isfinite(x)
-    if bad.any():
-        first = x.ravel()[np.flatnonzero(bad.ravel())[0]]
-        raise ValueError(f"{name} must be finite, got {first!r}")
+    """``value`` as a float64 array (0-d for scalars) under the input rule of
+    ``impactlab._validation`` (with a ``unit``: numbers in that unit, strings with units, pint
+    Quantities); ValueError naming ``name`` if it is not finite or lies outside [low, high]
+    (open ends where asked)."""
+    x = check_array_finite(name, value, unit)
     if low is not None:
         out = x <= low if low_open else x < low
         if out.any():
@@ -49,7 +46,7 @@ def arr(
 def magnitude(name: str, value: Any, what: str) -> Any:
     """A non-negative length [m] as a float64 array; a negative value raises ValueError that names
     ``name`` and the convention (the paper's tables print these negative)."""
-    x = arr(name, value)
+    x = arr(name, value, unit="m")
     if (x < 0).any():
         raise ValueError(
             f"{name} must be >= 0 ({what}, a magnitude in m), got {x.ravel()[np.argmax(x < 0)]!r}: "
@@ -66,7 +63,7 @@ def out(x: Any) -> Any:
 
 def angle(value: Any) -> Any:
     """The angle [rad] as a float64 array, checked to lie in [0, pi/2]."""
-    return arr("angle", value, low=0.0, high=HALF_PI)
+    return arr("angle", value, unit="rad", low=0.0, high=HALF_PI)
 
 
 def travel(measure: str) -> bool:
@@ -87,10 +84,12 @@ def rod_values(rod: Rod | None) -> tuple[Any, Any, Any, Any]:
         raise ValueError(
             f"rod must be an impactlab.bodies.Rod (mass, length, tip_radius, inertia) ({exc})"
         ) from None
-    m = arr("rod.mass", raw[0], low=0.0, low_open=True)
-    L = arr("rod.length", raw[1], low=0.0, low_open=True)
-    R = arr("rod.tip_radius", raw[2], low=0.0, low_open=True)
+    m = arr("rod.mass", raw[0], unit="kg", low=0.0, low_open=True)
+    L = arr("rod.length", raw[1], unit="m", low=0.0, low_open=True)
+    R = arr("rod.tip_radius", raw[2], unit="m", low=0.0, low_open=True)
     inertia = (
-        m * L * L / 12.0 if raw[3] is None else arr("rod.inertia", raw[3], low=0.0, low_open=True)
+        m * L * L / 12.0
+        if raw[3] is None
+        else arr("rod.inertia", raw[3], unit="kg m^2", low=0.0, low_open=True)
     )
     return m, L, R, inertia

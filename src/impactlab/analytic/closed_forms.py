@@ -129,8 +129,8 @@ def sliding_length(
     ``measure="travel"`` gives the contact patch's travel instead of the slip (gravity neglected).
     """
     dp = magnitude("delta_p", delta_p, "the permanent dent depth")
-    vi = arr("v_i", v_i, high=0.0, high_open=True)
-    T = arr("duration", duration, low=0.0, low_open=True)
+    vi = arr("v_i", v_i, unit="m/s", high=0.0, high_open=True)
+    T = arr("duration", duration, unit="s", low=0.0, low_open=True)
     th = _angle(angle)
     mu_ = arr("mu", mu, low=0.0)
     m, L, R, inertia = rod_values(rod)
@@ -160,7 +160,7 @@ def impact_duration(
     """
     dp = magnitude("delta_p", delta_p, "the permanent dent depth")
     ls = magnitude("sliding_length (L_s)", sliding_length, "the length of the sliding scar")
-    vi = np.abs(arr("v_i", v_i))
+    vi = np.abs(arr("v_i", v_i, unit="m/s"))
     al = arr("alpha", alpha_)
     if (vi == 0).any():
         raise ValueError("v_i must be non-zero (the drop speed), got 0.0")
@@ -193,10 +193,10 @@ def friction_from_velocities(dv_cx: Any, dv_cy: Any, *, duration: Any = None, g:
     mu = |dv_Cx| / |dv_Cy|. With ``duration`` T [s] the gravity impulse is removed from the
     vertical change: mu = |dv_Cx| / (dv_Cy + g T) (``dv_cy`` upward positive, as measured).
     """
-    dx = arr("dv_cx", dv_cx)
-    dy = arr("dv_cy", dv_cy)
+    dx = arr("dv_cx", dv_cx, unit="m/s")
+    dy = arr("dv_cy", dv_cy, unit="m/s")
     if duration is not None:
-        T = arr("duration", duration, low=0.0)
+        T = arr("duration", duration, unit="s", low=0.0)
         dy = dy + check_nonnegative("g", g, "m/s^2") * T
     if (dy == 0).any():
         raise ValueError("dv_cy must be non-zero (no normal impulse means no friction estimate)")
@@ -211,9 +211,9 @@ def mean_force_momentum(
     F T = m dv_Cy (the paper), or F T = m dv_Cy + m g T with ``gravity=True`` (the measured change
     of the centre-of-mass velocity includes the gravity impulse, which the contact must overcome).
     """
-    T = arr("duration", duration, low=0.0, low_open=True)
-    m = arr("mass", mass, low=0.0, low_open=True)
-    dv = arr("dv_cy", dv_cy)
+    T = arr("duration", duration, unit="s", low=0.0, low_open=True)
+    m = arr("mass", mass, unit="kg", low=0.0, low_open=True)
+    dv = arr("dv_cy", dv_cy, unit="m/s")
     g_ = check_nonnegative("g", g, "m/s^2")
     return out(m * dv / T + (m * g_ if gravity else 0.0))
 
@@ -227,10 +227,10 @@ def mean_force_rigid(
     which acts on C only and does not turn the rod), so F = (1 + e)|v_i| / (K_y T), or
     F = [(1 + e)|v_i| + g T] / (K_y T) with ``gravity=True``. ``e`` in [0, 1], ``K_y`` > 0 [1/kg].
     """
-    T = arr("duration", duration, low=0.0, low_open=True)
+    T = arr("duration", duration, unit="s", low=0.0, low_open=True)
     e_ = arr("e", e, low=0.0, high=1.0)
-    vi = np.abs(arr("v_i", v_i))
-    Ky = arr("K_y", K_y, low=0.0, low_open=True)
+    vi = np.abs(arr("v_i", v_i, unit="m/s"))
+    Ky = arr("K_y", K_y, unit="1/kg", low=0.0, low_open=True)
     g_ = check_nonnegative("g", g, "m/s^2")
     return out(((1.0 + e_) * vi + (g_ * T if gravity else 0.0)) / (Ky * T))
 

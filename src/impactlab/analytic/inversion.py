@@ -4,6 +4,7 @@ for F; first-order propagation (numerical Jacobian) and Monte Carlo."""
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Mapping
 from types import MappingProxyType
@@ -11,18 +12,26 @@ from typing import Any
 
 import numpy as np
 
-from impactlab._validation import check_nonnegative
+from impactlab._validation import (
+    check_flag,
+    check_nonnegative,
+    check_seed,
+    warn_implausible,
+)
 from impactlab.analytic._inputs import HALF_PI, rod_values
 from impactlab.analytic._inputs import travel as _travel
+from impactlab.analytic._measurements import (
+    PLAUSIBLE_DURATION,
+    check_plausible,
+    measurements,
+)
 from impactlab.analytic.closed_forms import G0, check_sliding, coefficients, duration_from_dent
-from impactlab.analytic.result import InversionResult, Measured, measured
+from impactlab.analytic.result import InversionResult, Measured
 from impactlab.bodies import Rod
 
 __all__ = ["invert"]
 
 Value = float | Measured | tuple[float, float]
-
-_CONVENTION = "the paper's tables print it negative, impactlab takes the magnitude"
 
 
 def _core(
@@ -38,7 +47,7 @@ def _core(
     """(T, F, valid) for arrays of inputs (magnitudes; ``dv_cy`` may be absent)."""
     th, mu = x["angle"], x["mu"]
     *_, K_y, al, mu_c = coefficients(th, mu, m, L, R, inertia, travel)
-    vi, dp, ls = x["v_i"], x["delta_p"], x["L_s"]
+    vi, dp, ls = x["v_i"], x["delta_p"], x["sliding_length"]
     valid = (th >= 0) & (th <= HALF_PI) & (mu >= 0) & (mu < mu_c) & (vi > 0) & (dp >= 0) & (ls > 0)
     if travel:  # the patch's travel must keep its (negative) direction
         valid = valid & (al < 0)
@@ -53,69 +62,6 @@ def _core(
             F = ((1.0 + e) * vi + (g * T if gravity else 0.0)) / (K_y * T)
     valid = valid & np.isfinite(T) & np.isfinite(F) & (T > 0)
     return T, F, valid
-
-
-def _measurements(
-    angle: Value,
-    v_i: Value,
-    mu: Value,
-    delta_p: Value,
-    sliding_length: Value,
-    e: Value | None,
-    dv_cy: Value | None,
-) -> dict[str, Measured]:
-    """The checked inputs keyed by the paper's symbols (``v_i`` as its magnitude)."""
-    meas: dict[str, Measured] = {
-        "angle": measured("angle", angle),
-        "v_i": measured("v_i", v_i),
-        "mu": measured("mu", mu),
-        "delta_p": measured("delta_p", delta_p),
-        "L_s": measured("sliding_length (L_s)", sliding_length),
-    }
-    if e is not None:
-        meas["e"] = measured("e", e)
-    if dv_cy is not None:
-        meas["dv_cy"] = measured("dv_cy", dv_cy)
-    if e is None and dv_cy is None:
-        raise ValueError(
-            "e or dv_cy is required: F needs the restitution coefficient (rigid-body "
-            "identity) or the centre-of-mass velocity change (Eq. 29)"
-        )
-    if meas["delta_p"].value < 0.0:
-        raise ValueError(
-            f"delta_p must be >= 0 (the permanent dent depth, a magnitude in m), got "
-            f"{meas['delta_p'].value!r}: {_CONVENTION}"
-        )
-    if meas["L_s"].value < 0.0:
-        raise ValueError(
-            f"sliding_length (L_s) must be > 0 (the length of the sliding scar, a "
-            f"magnitude in m), got {meas['L_s'].value!r}: {_CONVENTION}"
-        )
-    for k in ("v_i", "delta_p", "L_s"):  # the drop speed; -0.0 -> 0.0
-        meas[k] = Measured(abs(meas[k].value), meas[k].sigma)
-    th = meas["angle"].value
-    if not 0.0 < th < HALF_PI:
-        raise ValueError(
-            f"angle must lie in (0, pi/2) rad, got {th!r} rad "
-            f"({math.degrees(th):.4g} deg); pass radians"
-        )
-    if meas["v_i"].value == 0.0:
-        raise ValueError("v_i must be non-zero (the drop speed), got 0.0")
-    if meas["mu"].value < 0.0:
-        raise ValueError(f"mu must be >= 0, got {meas['mu'].value!r}")
-    if meas["L_s"].value == 0.0:
-        raise ValueError(
-            "sliding_length (L_s) must be non-zero: in gross sliding any normal "
-            "impulse makes the tip slide, so a zero sliding length cannot be inverted"
-        )
-    if "e" in meas and not 0.0 <= meas["e"].value <= 1.0:
-        raise ValueError(f"e must lie in [0, 1], got {meas['e'].value!r}")
-    if "dv_cy" in meas and meas["dv_cy"].value <= 0.0:
-        raise ValueError(
-            f"dv_cy must be > 0 (upward change of the centre-of-mass velocity), got "
-            f"{meas['dv_cy'].value!r}"
-        )
-    return meas
 
 
 def _sensitivities(
@@ -195,6 +141,50 @@ def _nominal_coefficients(
     return K_x, K_y, al, mu_c
 
 
+def _options(n_samples: Any, seed: Any, gravity: Any, g: Any, measure: str) -> dict[str, Any]:
+    """The inversion's options checked: n_samples (an int >= 100), seed (None or an int >= 0),
+    gravity (a bool), g [m/s^2] and measure ("slip" or "travel")."""
+    if (
+        isinstance(n_samples, bool)
+        or not isinstance(n_samples, int | np.integer)
+        or n_samples < 100
+    ):
+        raise ValueError(f"n_samples must be an integer >= 100, got {n_samples!r}")
+    return {
+        "n_samples": int(n_samples),
+        "seed": check_seed("seed", seed),
+        "gravity": check_flag("gravity", gravity),
+        "g": check_nonnegative("g", g, "m/s^2"),
+        "travel": _travel(measure),
+    }
+
+
+def _forces(
+    meas: Mapping[str, Measured], m: float, K_y: float, T0: float, gravity: bool, g: float
+) -> tuple[float | None, float | None]:
+    """(F_rigid, F_momentum) at the nominal duration ``T0``: the rigid-body identity (with e)
+    and Eq. 29 (with dv_cy), each None without its input."""
+    F_rig = F_mom = None
+    if "e" in meas:  # the rigid-body identity
+        F_rig = float(
+            ((1.0 + meas["e"].value) * meas["v_i"].value + (g * T0 if gravity else 0.0))
+            / (K_y * T0)
+        )
+    if "dv_cy" in meas:  # Eq. 29
+        F_mom = float(m * meas["dv_cy"].value / T0 + (m * g if gravity else 0.0))
+    return F_rig, F_mom
+
+
+def _linear_sigmas(
+    meas: Mapping[str, Measured], sens_T: Mapping[str, float], sens_F: Mapping[str, float]
+) -> tuple[float, float]:
+    """First-order standard deviations of T and F from the sensitivities."""
+    names = [k for k in meas if meas[k].sigma > 0]
+    sT = math.sqrt(sum((sens_T[k] * meas[k].sigma) ** 2 for k in names))
+    sF = math.sqrt(sum((sens_F[k] * meas[k].sigma) ** 2 for k in names))
+    return sT, sF
+
+
 def invert(
     *,
     angle: Value,
@@ -214,7 +204,9 @@ def invert(
     """Impact duration T and mean normal force F from a measured oblique impact (paper Sec. 5.2).
 
     Each measured input is a number (exact) or a ``(value, sigma)`` pair / :class:`Measured`
-    (sigma = standard deviation, same unit; inputs are treated as independent). SI units:
+    (sigma = standard deviation, same unit; inputs are treated as independent). A number is SI;
+    a dimensional value may also be a string with units (``"22 um"``, ``"20 deg"``) or a pint
+    Quantity of any registry; mu and e are plain numbers.
 
     angle : rod-to-flat angle [rad], in (0, pi/2).
     v_i : vertical tip velocity before the impact [m/s]; sign ignored (the paper writes -1.41).
@@ -227,66 +219,78 @@ def invert(
     dv_cy : measured change of the centre-of-mass vertical velocity over the impact [m/s], upward
         positive; when given, F comes from Eq. 29 (F T = m dv_Cy) and the rigid-body identity is
         reported alongside as ``F_rigid``.
-    rod : an ``impactlab.bodies.Rod``; default the paper's rod with I_C = m L^2 / 12
-        (``impactlab.bodies.PAPER_ROD``).
+    rod : an ``impactlab.bodies.Rod``; default the paper's rod (``impactlab.bodies.PAPER_ROD``).
     gravity : include gravity during the contact (adds g T^2 / 2 to Eq. 12 and the gravity impulse
         to Eq. 29); False reproduces the paper's equations.
     measure : what ``sliding_length`` measures: ``"slip"`` (default, the paper: displacement of
         the rod's material point at the contact) or ``"travel"`` (displacement of the contact
-        patch, i.e. of the tip sphere's centre, which is what a dent's length records; see
-        docs/analytic.md).
-    n_samples, seed : Monte Carlo sample count (>= 100) and seed (reproducible by default).
+        patch, which a dent's length records; see docs/analytic.md).
+    n_samples, seed : Monte Carlo sample count (an int >= 100) and seed (None or an int >= 0).
 
-    Returns an :class:`InversionResult` with T, F, their first-order and Monte Carlo uncertainties,
-    alpha, K_x, K_y, mu_c and the inputs used. Raises ValueError naming the offending parameter for
-    invalid inputs and for the sticking regime (mu >= mu_c), where the dent does not fix T.
+    Bounds: ValueError for a nominal delta_p deeper than the rod's tip radius or a sliding
+    length longer than the rod (impossible: most likely a unit mistake), and for the sticking
+    regime (mu >= mu_c), where the dent does not fix T; ImplausibleInputWarning for a dent
+    deeper than a tenth of the tip radius, |v_i| or dv_cy above 100 m/s, or a nominal duration
+    above 0.1 s.
+
+    Returns an :class:`InversionResult` with ``duration`` and ``mean_force``, their first-order
+    and Monte Carlo uncertainties, alpha, K_x, K_y, mu_c and the inputs used.
 
     Example: ``invert(angle=math.radians(20), v_i=-1.41, e=0.5, mu=0.2, delta_p=22e-6,
-    sliding_length=1400e-6).T`` is about 4.11e-3 s.
+    sliding_length=1400e-6).duration`` is about 4.11e-3 s.
     """
-    meas = _measurements(angle, v_i, mu, delta_p, sliding_length, e, dv_cy)
-    if (
-        isinstance(n_samples, bool)
-        or not isinstance(n_samples, int | np.integer)
-        or n_samples < 100
-    ):
-        raise ValueError(f"n_samples must be an integer >= 100, got {n_samples!r}")
-    g_ = check_nonnegative("g", g, "m/s^2")
-    travel = _travel(measure)
+    inputs = {"angle": angle, "v_i": v_i, "mu": mu, "delta_p": delta_p}
+    meas = measurements({**inputs, "sliding_length": sliding_length, "e": e, "dv_cy": dv_cy})
+    opt = _options(n_samples, seed, gravity, g, measure)
     m, L, R, inertia = _scalar_rod(rod)
-    K_x, K_y, al, mu_c = _nominal_coefficients(meas, m, L, R, inertia, travel)
+    check_plausible(meas, L, R)
+    coef = _nominal_coefficients(meas, m, L, R, inertia, opt["travel"])
+    rod_ = {"mass": m, "length": L, "tip_radius": R, "inertia": inertia}
+    return _result(meas, opt, rod_, coef, measure)
 
-    def core(x: Mapping[str, Any]) -> tuple[Any, Any, Any]:
-        return _core(x, m, L, R, inertia, gravity, g_, travel)
 
+def _result(
+    meas: Mapping[str, Measured],
+    opt: Mapping[str, Any],
+    rod: Mapping[str, float],
+    coef: tuple[float, float, float, float],
+    measure: str,
+) -> InversionResult:
+    """The inversion at the nominal inputs, its sensitivities and its Monte Carlo."""
+    m, L, R, inertia = (rod[k] for k in ("mass", "length", "tip_radius", "inertia"))
+    core = functools.partial(
+        _core,
+        m=m,
+        L=L,
+        R=R,
+        inertia=inertia,
+        gravity=opt["gravity"],
+        g=opt["g"],
+        travel=opt["travel"],
+    )
     nominal = {k: np.float64(v.value) for k, v in meas.items()}
     T0_a, F0_a, ok = core(nominal)
     if not bool(ok):  # pragma: no cover - guarded by the checks above
         raise ValueError("the inputs give no valid inversion")
-    T0, F0 = float(T0_a), float(F0_a)
-    names = [k for k in meas if meas[k].sigma > 0]
-    sens_T, sens_F = _sensitivities(meas, nominal, core)
-    sT_lin = math.sqrt(sum((sens_T[k] * meas[k].sigma) ** 2 for k in names))
-    sF_lin = math.sqrt(sum((sens_F[k] * meas[k].sigma) ** 2 for k in names))
-    mc = _monte_carlo(meas, int(n_samples), seed, core, bool(names))
-
-    F_rig = None
-    if "e" in meas:  # the rigid-body identity
-        F_rig = float(
-            ((1.0 + meas["e"].value) * meas["v_i"].value + (g_ * T0 if gravity else 0.0))
-            / (K_y * T0)
+    T0 = float(T0_a)
+    if T0 > PLAUSIBLE_DURATION:
+        warn_implausible(
+            f"the inverted duration T = {T0:.4g} s exceeds {PLAUSIBLE_DURATION:g} s, far longer "
+            "than a rigid-body impact; check the units of the inputs (SI)"
         )
-    F_mom = None
-    if "dv_cy" in meas:  # Eq. 29
-        F_mom = float(m * meas["dv_cy"].value / T0 + (m * g_ if gravity else 0.0))
+    sens_T, sens_F = _sensitivities(meas, nominal, core)
+    sT_lin, sF_lin = _linear_sigmas(meas, sens_T, sens_F)
+    varied = any(v.sigma > 0 for v in meas.values())
+    K_x, K_y, al, mu_c = coef
+    F_rig, F_mom = _forces(meas, m, K_y, T0, opt["gravity"], opt["g"])
     return InversionResult(
-        T=T0,
-        F=F0,
+        duration=T0,
+        mean_force=float(F0_a),
         sigma_T_linear=sT_lin,
         sigma_F_linear=sF_lin,
-        **mc,
-        n_samples=int(n_samples),
-        seed=seed,
+        **_monte_carlo(meas, opt["n_samples"], opt["seed"], core, varied),
+        n_samples=opt["n_samples"],
+        seed=opt["seed"],
         alpha=al,
         K_x=K_x,
         K_y=K_y,
@@ -294,10 +298,10 @@ def invert(
         force_method="momentum" if "dv_cy" in meas else "rigid-body identity",
         F_momentum=F_mom,
         F_rigid=F_rig,
-        gravity=bool(gravity),
+        gravity=opt["gravity"],
         measure=measure,
         inputs=MappingProxyType({k: (v.value, v.sigma) for k, v in meas.items()}),
-        rod=MappingProxyType({"mass": m, "length": L, "tip_radius": R, "inertia": inertia}),
+        rod=MappingProxyType(dict(rod)),
         sensitivity_T=MappingProxyType(sens_T),
         sensitivity_F=MappingProxyType(sens_F),
     )

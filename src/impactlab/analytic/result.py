@@ -12,6 +12,17 @@ from impactlab._validation import check_finite, check_nonnegative
 
 __all__ = ["InversionResult", "Measured", "measured"]
 
+#: Units of the scalar fields of :class:`InversionResult` (for the HTML table).
+_UNITS = {
+    k: unit
+    for unit, keys in (
+        ("s", ("duration", "sigma_T_linear", "T_mc", "sigma_T_mc")),
+        ("N", ("mean_force", "sigma_F_linear", "F_mc", "sigma_F_mc", "F_momentum", "F_rigid")),
+        ("1/kg", ("K_x", "K_y")),
+    )
+    for k in keys
+}
+
 
 @dataclass(frozen=True)
 class Measured:
@@ -25,9 +36,10 @@ class Measured:
         object.__setattr__(self, "sigma", check_nonnegative("sigma", self.sigma))
 
 
-def measured(name: str, x: Any) -> Measured:
+def measured(name: str, x: Any, unit: str = "") -> Measured:
     """``x`` (a number, a ``(value, sigma)`` pair or a :class:`Measured`) as :class:`Measured`;
-    ValueError naming ``name``."""
+    with a ``unit``, value and sigma may also be strings with units or pint Quantities
+    (``impactlab._validation``). ValueError naming ``name``."""
     if isinstance(x, Measured):
         return x
     if isinstance(x, tuple | list):
@@ -36,17 +48,15 @@ def measured(name: str, x: Any) -> Measured:
         v, s = x
     else:
         v, s = x, 0.0
-    try:
-        return Measured(v, s)
-    except ValueError as exc:
-        raise ValueError(f"{name}: {exc}") from None
+    return Measured(check_finite(name, v, unit), check_nonnegative(f"the sigma of {name}", s, unit))
 
 
 @dataclass(frozen=True)
 class InversionResult:
     """Impact duration and mean normal force inverted from a measured oblique impact (immutable).
 
-    Attributes (SI): ``T`` [s], ``F`` [N] (nominal values); ``sigma_T_linear``, ``sigma_F_linear``
+    Attributes (SI): ``duration`` T [s], ``mean_force`` F [N] (nominal values);
+    ``sigma_T_linear``, ``sigma_F_linear``
     (first-order propagation, numerical Jacobian); ``T_mc``, ``F_mc`` (Monte Carlo means),
     ``sigma_T_mc``, ``sigma_F_mc`` (Monte Carlo standard deviations), ``T_interval_mc``,
     ``F_interval_mc`` (2.5 and 97.5 percentiles), ``mc_rejected`` (fraction of samples that fell in
@@ -54,13 +64,13 @@ class InversionResult:
     ``K_x``, ``K_y`` [1/kg], ``mu_c``; ``force_method`` ("momentum" for Eq. 29 with dv_cy, else
     "rigid-body identity"); ``F_momentum``, ``F_rigid`` (each None when its input is missing);
     ``gravity``; ``measure`` ("slip" or "travel", what the sliding length measures); ``inputs``
-    (name -> (value, sigma) in SI, magnitudes as used; the sliding length under the paper's
-    symbol ``"L_s"``); ``rod`` (mass, length, tip_radius, inertia); ``sensitivity_T``,
-    ``sensitivity_F`` (partial derivatives with respect to each input, SI).
+    (name -> (value, sigma) in SI, magnitudes as used: ``angle``, ``v_i``, ``mu``, ``delta_p``,
+    ``sliding_length``, ``e``, ``dv_cy``); ``rod`` (mass, length, tip_radius, inertia);
+    ``sensitivity_T``, ``sensitivity_F`` (partial derivatives with respect to each input, SI).
     """
 
-    T: float
-    F: float
+    duration: float
+    mean_force: float
     sigma_T_linear: float
     sigma_F_linear: float
     T_mc: float
@@ -87,9 +97,8 @@ class InversionResult:
     sensitivity_F: Mapping[str, float] = field(repr=False)
 
     def _repr_html_(self) -> str:
-        units = {"T": "s", "F": "N", "K_x": "1/kg", "K_y": "1/kg"}
         rows = [
-            (k, f"{v:.6g}", units.get(k.split("_")[-1] if k.startswith("sigma") else k, ""))
+            (k, f"{v:.6g}", _UNITS.get(k, ""))
             for k, v in self.to_dict().items()
             if isinstance(v, int | float) and not isinstance(v, bool)
         ]
@@ -128,12 +137,13 @@ class InversionResult:
             f"mu = {pm('mu', 1.0, '')}"
             + (f", e = {pm('e', 1.0, '')}" if "e" in ins else "")
             + (f", dv_Cy = {pm('dv_cy', 1.0, 'm/s')}" if "dv_cy" in ins else ""),
-            f"  delta_p = {pm('delta_p', 1e6, 'um')}, L_s = {pm('L_s', 1e6, 'um')}",
+            f"  delta_p = {pm('delta_p', 1e6, 'um')}, "
+            f"sliding_length = {pm('sliding_length', 1e6, 'um')}",
             f"  alpha = {self.alpha:.4g}, mu_c = {self.mu_c:.4g}, K_x = {self.K_x:.4g} 1/kg, "
             f"K_y = {self.K_y:.4g} 1/kg",
-            f"  T = {self.T * 1e3:.4g} ms  ± {self.sigma_T_linear * 1e3:.2g} (first order)"
+            f"  T = {self.duration * 1e3:.4g} ms  ± {self.sigma_T_linear * 1e3:.2g} (first order)"
             f"  ± {self.sigma_T_mc * 1e3:.2g} (Monte Carlo, mean {self.T_mc * 1e3:.4g})",
-            f"  F = {self.F:.4g} N  ± {self.sigma_F_linear:.2g} (first order)"
+            f"  F = {self.mean_force:.4g} N  ± {self.sigma_F_linear:.2g} (first order)"
             f"  ± {self.sigma_F_mc:.2g} (Monte Carlo, mean {self.F_mc:.4g})  [{self.force_method}]",
         ]
         if self.mc_rejected > 0:

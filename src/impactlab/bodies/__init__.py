@@ -12,6 +12,8 @@ rigid-body impulse at the contact point (SI units throughout).
 
 from __future__ import annotations
 
+from impactlab.bodies import layout
+from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.bodies.geometry import lever_arms
 from impactlab.bodies.impulse import (
     RigidImpulse,
@@ -19,40 +21,28 @@ from impactlab.bodies.impulse import (
     impulse_response,
     rigid_impulse,
 )
-from impactlab.bodies.layout import (
-    BP_GSTAR,
-    BP_HALF_LENGTH,
-    BP_INERTIA,
-    BP_KIND,
-    BP_MASS,
-    BP_RADIUS,
-    KIND_ROD,
-    KIND_SPHERE,
-    NB,
-)
+from impactlab.bodies.layout import *  # noqa: F403 - the layout's names, re-exported as they are
+from impactlab.bodies.modal import ModalBasis, modal_basis
 from impactlab.bodies.rod import PAPER_ROD, Rod
+from impactlab.bodies.rod_section import RodSection
 from impactlab.bodies.sphere import Sphere
 
 #: Either body type.
 Body = Rod | Sphere
 
 __all__ = [
-    "BP_GSTAR",
-    "BP_HALF_LENGTH",
-    "BP_INERTIA",
-    "BP_KIND",
-    "BP_MASS",
-    "BP_RADIUS",
-    "KIND_ROD",
-    "KIND_SPHERE",
-    "NB",
+    *layout.__all__,
     "PAPER_ROD",
     "Body",
+    "FlexibleRod",
+    "ModalBasis",
     "RigidImpulse",
     "Rod",
+    "RodSection",
     "Sphere",
     "critical_ratio",
     "impulse_response",
     "lever_arms",
+    "modal_basis",
     "rigid_impulse",
 ]

@@ -1,12 +1,38 @@
-"""Checks shared by the body constructors."""
+"""Checks shared by the body constructors: materials, quantities and the plausibility bounds.
+
+Bounds (SI). Refused, because impossible: a length, tip radius, radius, mass, inertia or
+density that is not a finite number > 0, and a rod whose tip radius exceeds half its length.
+Warned with :class:`~impactlab._validation.ImplausibleInputWarning`, because most likely a unit
+mistake: a length outside :data:`PLAUSIBLE_LENGTH`, a tip radius or sphere radius outside
+:data:`PLAUSIBLE_RADIUS`, a mass outside :data:`PLAUSIBLE_MASS`.
+"""
 
 from __future__ import annotations
 
+from impactlab._validation import warn_implausible
 from impactlab.materials import Material
+
+#: Plausible rod length [m]: 1 mm to 10 m.
+PLAUSIBLE_LENGTH = (1e-3, 10.0)
+#: Plausible tip (sphere) radius [m]: 1 um to 0.5 m.
+PLAUSIBLE_RADIUS = (1e-6, 0.5)
+#: Plausible mass [kg]: 1 mg to 1 t.
+PLAUSIBLE_MASS = (1e-6, 1e3)
 
 
 def check_material(name: str, value: object) -> Material:
     """``value`` if it is a :class:`~impactlab.materials.Material`; ValueError naming ``name``."""
     if not isinstance(value, Material):
         raise ValueError(f"{name} must be an impactlab Material, got {type(value).__name__}")
+    return value
+
+
+def plausible(name: str, value: float, bounds: tuple[float, float], unit: str) -> float:
+    """``value``; an ImplausibleInputWarning when it lies outside ``bounds``."""
+    lo, hi = bounds
+    if not lo <= value <= hi:
+        warn_implausible(
+            f"{name} = {value!r} {unit} lies outside the plausible range [{lo:g}, {hi:g}] {unit}"
+            f"; check the units (impactlab takes SI: a bare number is in {unit})"
+        )
     return value

@@ -94,15 +94,16 @@ def rigid_impulse(
     ``angle`` [rad] in [0, pi/2] between the rod axis and the flat (no effect for a sphere),
     ``velocity`` (vx, vy) [m/s] of the centre of mass, ``spin`` [rad/s] counter-clockwise; ``e``
     in [0, 1] is Newton's restitution of the contact point's normal velocity, ``mu`` >= 0 the
-    Coulomb coefficient. The contact point slips against its tangential velocity until it stops;
-    from rest it sticks if mu >= mu_c, else it slips the way the normal impulse drives it. The
-    normal impulse grows until v_n = -e v_n0. ValueError if the contact point does not approach
-    the flat or the slip jams (Painleve's paradox).
+    Coulomb coefficient (the quantities may also be strings with units or pint Quantities, as
+    everywhere in the Python API). The contact point slips against its tangential velocity
+    until it stops; from rest it sticks if mu >= mu_c, else it slips the way the normal impulse
+    drives it. The normal impulse grows until v_n = -e v_n0. ValueError if the contact point does
+    not approach the flat or the slip jams (Painleve's paradox).
     """
-    th = check_range("angle", angle, 0.0, 0.5 * math.pi)
-    vx = check_finite("velocity[0]", velocity[0])
-    vy = check_finite("velocity[1]", velocity[1])
-    w = check_finite("spin", spin)
+    th = check_range("angle", angle, 0.0, 0.5 * math.pi, unit="rad")
+    vx = check_finite("velocity[0]", velocity[0], "m/s")
+    vy = check_finite("velocity[1]", velocity[1], "m/s")
+    w = check_finite("spin", spin, "rad/s")
     e_ = check_range("e", e, 0.0, 1.0)
     mu_ = check_nonnegative("mu", mu)
     # the constructors always set the mass (Sphere: from the density) and the inertia (Rod:

@@ -15,7 +15,13 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from impactlab._validation import check_positive
-from impactlab.bodies._checks import check_material
+from impactlab.bodies._checks import (
+    PLAUSIBLE_LENGTH,
+    PLAUSIBLE_MASS,
+    PLAUSIBLE_RADIUS,
+    check_material,
+    plausible,
+)
 from impactlab.bodies.layout import BP_GSTAR, BP_INERTIA, KIND_ROD
 from impactlab.materials import AISI_201, AISI_1010, Material, reduced_shear_modulus
 
@@ -36,6 +42,14 @@ class Rod:
     material : the rod's material (elastic constants for the contact pair).
     inertia : moment of inertia about the centre of mass I_C [kg m^2]; default m L^2 / 12
         (the paper does not give I_C; m L^2/12 reproduces its impact durations best).
+
+    Each quantity is a number in the SI unit above, a string with units (``"8.8 mm"``) or a
+    pint Quantity of any registry; the fields hold SI floats.
+
+    Bounds: ValueError unless every quantity is finite and > 0 and ``tip_radius <= length / 2``
+    (a wider tip is not a rod); ImplausibleInputWarning (most likely a unit mistake) for a
+    length outside [1 mm, 10 m], a tip radius outside [1 um, 0.5 m] or a mass outside
+    [1 mg, 1000 kg].
     """
 
     length: float
@@ -46,9 +60,15 @@ class Rod:
     _params: np.ndarray = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
-        L = check_positive("length", self.length, "m")
+        L = plausible("length", check_positive("length", self.length, "m"), PLAUSIBLE_LENGTH, "m")
         R = check_positive("tip_radius", self.tip_radius, "m")
-        m = check_positive("mass", self.mass, "kg")
+        if R > 0.5 * L:
+            raise ValueError(
+                f"tip_radius = {R!r} m exceeds half the rod's length ({0.5 * L!r} m): the "
+                "hemispherical tip would be wider than the rod is long; check the units (SI: m)"
+            )
+        plausible("tip_radius", R, PLAUSIBLE_RADIUS, "m")
+        m = plausible("mass", check_positive("mass", self.mass, "kg"), PLAUSIBLE_MASS, "kg")
         check_material("material", self.material)
         inertia = (
             m * L * L / 12.0

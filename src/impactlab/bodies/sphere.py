@@ -8,7 +8,12 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from impactlab._validation import check_positive
-from impactlab.bodies._checks import check_material
+from impactlab.bodies._checks import (
+    PLAUSIBLE_MASS,
+    PLAUSIBLE_RADIUS,
+    check_material,
+    plausible,
+)
 from impactlab.bodies.layout import BP_GSTAR, BP_INERTIA, KIND_SPHERE
 from impactlab.materials import AISI_201, AISI_1010, Material, reduced_shear_modulus
 
@@ -20,7 +25,12 @@ class Sphere:
     """A rigid sphere of radius ``radius`` [m]; I = 2/5 m R^2.
 
     Give either ``mass`` [kg] or ``density`` [kg/m^3]; with neither, the material's density is
-    used (m = 4/3 pi R^3 rho).
+    used (m = 4/3 pi R^3 rho). Each quantity is a number in that SI unit, a string with units
+    (``"5 mm"``) or a pint Quantity of any registry.
+
+    Bounds: ValueError unless the radius, mass and density are finite and > 0;
+    ImplausibleInputWarning for a radius outside [1 um, 0.5 m] or a mass outside
+    [1 mg, 1000 kg].
     """
 
     radius: float
@@ -30,7 +40,7 @@ class Sphere:
     _params: np.ndarray = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
-        R = check_positive("radius", self.radius, "m")
+        R = plausible("radius", check_positive("radius", self.radius, "m"), PLAUSIBLE_RADIUS, "m")
         check_material("material", self.material)
         if self.mass is not None and self.density is not None:
             raise ValueError("give either mass or density for a Sphere, not both")
@@ -44,6 +54,7 @@ class Sphere:
                 else check_positive("density", self.density, "kg/m^3")
             )
             m = 4.0 / 3.0 * math.pi * R**3 * rho
+        plausible("mass", m, PLAUSIBLE_MASS, "kg")
         object.__setattr__(self, "radius", R)
         object.__setattr__(self, "mass", m)
         object.__setattr__(self, "density", rho)

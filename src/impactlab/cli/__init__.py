@@ -21,6 +21,7 @@ app = typer.Typer(
     no_args_is_help=True,
     add_completion=False,
     pretty_exceptions_enable=False,
+    rich_markup_mode=None,  # help texts are plain: "[rod]" is a TOML table, not markup
 )
 
 # Each command module defines ``register(app)``; registered in this order (the help's order).
@@ -34,7 +35,15 @@ def main() -> None:
         rc = app(standalone_mode=False)  # typer.Exit(n) comes back as a return value here
     except SystemExit:
         raise
-    except (UserError, ValueError, FileNotFoundError, IsADirectoryError, PermissionError) as exc:
+    except (
+        UserError,
+        ValueError,
+        FileNotFoundError,
+        FileExistsError,
+        IsADirectoryError,
+        NotADirectoryError,
+        PermissionError,
+    ) as exc:
         if os.environ.get("IMPACTLAB_DEBUG"):
             raise
         print(f"error: {exc}", file=sys.stderr)

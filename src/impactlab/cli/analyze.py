@@ -9,28 +9,40 @@ from typing import Any
 import typer
 
 from impactlab.bodies import PAPER_ROD, Rod
-from impactlab.cli._common import UserError, console, emit, load_toml, quantity
+from impactlab.cli._common import UserError, console, emit, load_toml, parse_rod_table, show
 from impactlab.experiment import ExperimentResult, MarkerGeometry, analyze
+from impactlab.experiment.checks import output_folder
 
-_ROD_FIELDS: dict[str, str] = {"mass": "kg", "length": "m", "tip_radius": "m", "inertia": "kg*m^2"}
-
-# display: key -> (scale, unit, label)
-_DISPLAY: dict[str, tuple[float, str, str]] = {
-    "e": (1.0, "", "e (tip, normal)"),
-    "mu": (1.0, "", "mu (Eq. 28)"),
-    "angle": (180.0 / math.pi, "deg", "angle at impact"),
-    "v_i": (1.0, "m/s", "v_i (tip, vertical)"),
-    "v_c_in_x": (1.0, "m/s", "v_Cx before"),
-    "v_c_in_y": (1.0, "m/s", "v_Cy before"),
-    "v_c_out_x": (1.0, "m/s", "v_Cx after"),
-    "v_c_out_y": (1.0, "m/s", "v_Cy after"),
-    "spin_out": (1.0, "rad/s", "spin after"),
-    "dv_cy": (1.0, "m/s", "dv_Cy"),
-    "delta_p": (1e6, "um", "delta_p (max depth)"),
-    "L_s": (1e6, "um", "L_s (length - width)"),
-    "pileup": (1e6, "um", "pile-up height"),
-    "T": (1e3, "ms", "T (Eq. 12)"),
-    "F": (1.0, "N", "F (Eq. 29)"),
+#: The labels of the summary's quantities, by display unit (SI value x scale).
+_LABELS: dict[tuple[float, str], dict[str, str]] = {
+    (1.0, ""): {"e": "e (tip, normal)", "mu": "mu (Eq. 28)"},
+    (180.0 / math.pi, "deg"): {"angle": "angle at impact"},
+    (1.0, "m/s"): {
+        "v_i": "v_i (tip, vertical)",
+        "v_c_in_x": "v_Cx before",
+        "v_c_in_y": "v_Cy before",
+        "v_c_out_x": "v_Cx after",
+        "v_c_out_y": "v_Cy after",
+        "dv_cy": "dv_Cy",
+    },
+    (1.0, "rad/s"): {"spin_out": "spin after"},
+    (1e6, "um"): {
+        "delta_p": "delta_p (max depth)",
+        "L_s": "L_s (length - width)",
+        "pileup": "pile-up height",
+    },
+    (1e3, "ms"): {"T": "T (Eq. 12)"},
+    (1.0, "N"): {"F": "F (Eq. 29)"},
+}
+#: display: key -> (scale, unit, label)
+_DISPLAY = {k: (sc, u, lab) for (sc, u), labels in _LABELS.items() for k, lab in labels.items()}
+#: the engine comparison's fields: name -> (scale, unit)
+_MODEL = {
+    "e": (1.0, ""),
+    "delta_p": (1e6, "um"),
+    "sliding_length": (1e6, "um"),
+    "duration": (1e3, "ms"),
+    "spin_out": (1.0, "rad/s"),
 }
 
 
@@ -46,15 +58,7 @@ def _rod_from(spec: str | None) -> tuple[Rod, dict[str, Any]]:
             f"--rod {spec!r}: the file needs a [rod] table (mass, length, tip_radius, "
             "inertia), or use --rod paper"
         )
-    vals: dict[str, float] = {}
-    for k, v in table.items():
-        if k not in _ROD_FIELDS:
-            raise UserError(
-                f"unknown key {k!r} in [rod] of {spec}; allowed: {', '.join(_ROD_FIELDS)}"
-            )
-        q = quantity(v, _ROD_FIELDS[k], f"rod.{k}")
-        assert q is not None
-        vals[k] = q
+    vals = parse_rod_table(table, "rod.")
     missing = [k for k in ("mass", "length", "tip_radius") if k not in vals]
     if missing:
         raise UserError(f"[rod] of {spec} misses {', '.join(missing)}")
@@ -85,31 +89,25 @@ def _geometry_from(spec: str | None, rod_data: dict[str, Any]) -> MarkerGeometry
 def analyze_cmd(
     markers: Path = typer.Argument(..., help="Marker tracks: C3D (.c3d) or CSV (.csv)."),
     scan: Path = typer.Argument(
-        ...,
-        help="Profilometer scan of the dent (X3P, SUR, PLU, "
-        "DATX, VK, OPD, GWY, SDF, NetCDF, ... or plain .npy/.csv).",
+        ..., help="Dent scan (X3P, SUR, PLU, DATX, VK, OPD, GWY, SDF, NetCDF, ..., .npy/.csv)."
     ),
     rod: str | None = typer.Option(
         None,
         "--rod",
-        help="'paper' (default) or a TOML file "
-        "with a [rod] table (mass, length, tip_radius, inertia) "
-        "and optionally [markers].",
+        help="'paper' (default) or a TOML file with a [rod] table (mass, length, tip_radius, "
+        "inertia) and optionally [markers].",
     ),
     flat: str | None = typer.Option(
         None,
         "--flat",
-        help="Flat material preset (e.g. "
-        "aisi-1010): also run the impact engine with the "
+        help="Flat material preset (e.g. aisi-1010): also run the impact engine with the "
         "measured initial state, for comparison.",
     ),
     geometry: str | None = typer.Option(
         None,
         "--geometry",
-        help="TOML file with a 'markers'"
-        " table: the markers in the rod's body frame (origin "
-        "at the centre of mass, x towards the tip); default: "
-        "estimated.",
+        help="TOML file with a 'markers' table: the markers in the rod's body frame (origin at "
+        "the centre of mass, x towards the tip); default: estimated.",
     ),
     up: str = typer.Option(
         "+z", "--up", help="The lab's upward axis in the marker data (+z, +y, ...)."
@@ -122,6 +120,9 @@ def analyze_cmd(
     ),
     height_unit: str | None = typer.Option(
         None, "--height-unit", help="Height unit of a plain height map ('um')."
+    ),
+    flip_heights: bool = typer.Option(
+        False, "--flip-heights", help="The scan stores depths as heights: turn it over."
     ),
     out: Path | None = typer.Option(
         None, "--out", help="Directory for results.json and the figures (dent.png, kinematics.png)."
@@ -143,6 +144,7 @@ def analyze_cmd(
     """
     rod_obj, rod_data = _rod_from(rod)
     geo = _geometry_from(geometry, rod_data)
+    folder = output_folder(out, "--out") if out is not None else None
     res = analyze(
         markers,
         scan,
@@ -153,18 +155,16 @@ def analyze_cmd(
         marker_units=marker_units,
         pixel_size=pixel_size,
         height_unit=height_unit,
-        out_dir=out,
+        flip_heights=flip_heights,
+        out_dir=folder,
         gravity=gravity,
     )
-    if as_json:
-        emit(res.to_dict(), as_json=True)
-    else:
-        _print_summary(res, f"impactlab analyze: {markers.name} + {scan.name}")
+    show(res, as_json=as_json, table=_print_summary)
     if res.errors:
         raise UserError("; ".join(f"{k}: {v}" for k, v in res.errors.items()))
 
 
-def _print_summary(res: ExperimentResult, title: str) -> None:
+def _print_summary(res: ExperimentResult) -> None:
     """The measured quantities in display units, then warnings and the files written."""
     summ = res.summary()
     data: dict[str, Any] = {}
@@ -184,18 +184,13 @@ def _print_summary(res: ExperimentResult, title: str) -> None:
         )
         units["sliding direction"] = "deg (scan x)"
     if res.model is not None:
-        shown = {
-            "e": (1.0, ""),
-            "delta_p": (1e6, "um"),
-            "sliding_length": (1e6, "um"),
-            "duration": (1e3, "ms"),
-            "spin_out": (1.0, "rad/s"),
-        }
         for k, v in res.model.items():
-            if isinstance(v, float) and k in shown:
-                scale, unit = shown[k]
+            if isinstance(v, float) and k in _MODEL:
+                scale, unit = _MODEL[k]
                 data[f"model {k} ({res.model['law']})"] = f"{v * scale:.5g}"
                 units[f"model {k} ({res.model['law']})"] = unit
+    names = (Path(p).name if p else "-" for p in (res.markers_path, res.scan_path))
+    title = "impactlab analyze: " + " + ".join(names)
     emit(data, as_json=False, title=title, units=units)
     for w in res.warnings:
         console.print(f"warning: {w}")

@@ -1,4 +1,8 @@
-"""``impactlab invert``: impact duration and mean force from a measured dent (paper Eqs. 12, 29)."""
+"""``impactlab invert``: impact duration and mean force from a measured dent (paper Eqs. 12, 29).
+
+Inputs merge as case < file < command line. Dimensional values carry their unit ("22 um"); an
+angle without a unit is refused (20 could be degrees or radians).
+"""
 
 from __future__ import annotations
 
@@ -10,77 +14,108 @@ import typer
 
 from impactlab.analytic import InversionResult, invert
 from impactlab.bodies import PAPER_ROD, Rod
-from impactlab.cli._common import UserError, emit, load_toml, quantity
+from impactlab.cli._common import (
+    UserError,
+    angle_quantity,
+    emit,
+    load_toml,
+    parse_rod_table,
+    quantity,
+    rod_option,
+    show,
+)
 from impactlab.paper.data import get_case
 
-# input name -> (SI unit used for parsing, accepted TOML keys)
-_FIELDS: dict[str, tuple[str, tuple[str, ...]]] = {
-    "angle": ("degree", ("angle",)),
-    "v_i": ("m/s", ("vi", "v_i")),
-    "e": ("", ("e",)),
-    "mu": ("", ("mu",)),
-    "delta_p": ("m", ("delta_p", "delta-p")),
-    "L_s": ("m", ("ls", "L_s", "l_s")),
-    "dv_cy": ("m/s", ("dv_cy", "dv-cy")),
+# input name -> (SI unit used for parsing, accepted TOML keys, command-line option)
+_FIELDS: dict[str, tuple[str, tuple[str, ...], str]] = {
+    "angle": ("degree", ("angle",), "--angle"),
+    "v_i": ("m/s", ("vi", "v_i"), "--vi"),
+    "e": ("", ("e",), "--e"),
+    "mu": ("", ("mu",), "--mu"),
+    "delta_p": ("m", ("delta_p", "delta-p"), "--delta-p"),
+    "L_s": ("m", ("ls", "L_s", "l_s"), "--ls"),
+    "dv_cy": ("m/s", ("dv_cy", "dv-cy"), "--dv-cy"),
 }
-_ROD_FIELDS: dict[str, str] = {"mass": "kg", "length": "m", "tip_radius": "m", "inertia": "kg*m^2"}
+_ALIAS = {k: name for name, (_, keys, _) in _FIELDS.items() for k in keys}
 #: input name -> keyword of impactlab.analytic.invert, where they differ
 _ARGUMENTS = {"L_s": "sliding_length"}
+#: the other keys of a measurement file
+_EXTRA = ("case", "gravity", "samples", "seed")
+#: the inputs that T needs (F needs e or dv_cy besides)
+_REQUIRED = ("angle", "v_i", "mu", "delta_p", "L_s")
 
 
 def _parse(value: Any, unit: str, name: str) -> float:
-    if unit == "":
-        if isinstance(value, str):
-            try:
-                return float(value)
-            except ValueError:
-                raise UserError(f"{name} must be a number, got {value!r}") from None
-        if isinstance(value, bool) or not isinstance(value, int | float):
-            raise UserError(f"{name} must be a number, got {value!r}")
-        return float(value)
     if unit == "degree":
-        return quantity(value, "degree", name)  # type: ignore[return-value]
-    return quantity(value, unit, name)  # type: ignore[return-value]
+        return angle_quantity(value, name)
+    if unit:
+        return quantity(value, unit, name)  # type: ignore[return-value]
+    if isinstance(value, str):
+        try:
+            return float(value)
+        except ValueError:
+            raise UserError(f"{name} must be a number, got {value!r}") from None
+    if isinstance(value, bool) or not isinstance(value, int | float):
+        raise UserError(f"{name} must be a number, got {value!r}")
+    return float(value)
+
+
+def _measured(
+    table: dict[str, Any], where: str, prefix: str = "", more: tuple[str, ...] = ()
+) -> dict[str, float]:
+    """The measured values (or their sigmas) of a TOML table, by input name."""
+    out: dict[str, float] = {}
+    for key, val in table.items():
+        if key not in _ALIAS:
+            allowed = ", ".join(sorted([*_ALIAS, *more]))
+            raise UserError(f"unknown key {key!r} in {where}; allowed: {allowed}")
+        out[_ALIAS[key]] = _parse(val, _FIELDS[_ALIAS[key]][0], prefix + key)
+    return out
 
 
 def _from_file(
     data: dict[str, Any],
 ) -> tuple[dict[str, float], dict[str, float], dict[str, float], dict[str, Any]]:
-    values: dict[str, float] = {}
-    sigmas: dict[str, float] = {}
-    rod: dict[str, float] = {}
-    extra: dict[str, Any] = {}
-    alias = {k: name for name, (_, keys) in _FIELDS.items() for k in keys}
-    for key, val in data.items():
-        if key == "sigma":
-            if not isinstance(val, dict):
-                raise UserError("[sigma] must be a table of uncertainties")
-            for sk, sv in val.items():
-                if sk not in alias:
-                    raise UserError(
-                        f"unknown key {sk!r} in [sigma]; allowed: {', '.join(sorted(alias))}"
-                    )
-                name = alias[sk]
-                sigmas[name] = _parse(sv, _FIELDS[name][0], f"sigma.{sk}")
-        elif key == "rod":
-            if not isinstance(val, dict):
-                raise UserError("[rod] must be a table (mass, length, tip_radius, inertia)")
-            for rk, rv in val.items():
-                if rk not in _ROD_FIELDS:
-                    raise UserError(
-                        f"unknown key {rk!r} in [rod]; allowed: {', '.join(_ROD_FIELDS)}"
-                    )
-                rod[rk] = _parse(rv, _ROD_FIELDS[rk], f"rod.{rk}")
-        elif key in ("case", "gravity", "samples", "seed"):
-            extra[key] = val
-        elif key in alias:
-            values[alias[key]] = _parse(val, _FIELDS[alias[key]][0], key)
-        else:
-            raise UserError(
-                f"unknown key {key!r} in the measurement file; allowed: "
-                f"{', '.join(sorted([*alias, 'sigma', 'rod', 'case', 'gravity']))}"
-            )
-    return values, sigmas, rod, extra
+    """(values, sigmas, rod, extra: case, gravity, samples, seed) of a measurement file."""
+    tables = {k: v for k, v in data.items() if k in ("sigma", "rod")}
+    extra = {k: v for k, v in data.items() if k in _EXTRA}
+    values = {k: v for k, v in data.items() if k not in tables and k not in extra}
+    for name, table in tables.items():
+        if not isinstance(table, dict):
+            raise UserError(f"[{name}] must be a table")
+    sigmas = _measured(tables.get("sigma", {}), "[sigma]", "sigma.")
+    rod = parse_rod_table(tables.get("rod", {}), "rod.")
+    file_values = _measured(values, "the measurement file", more=("sigma", "rod", *_EXTRA))
+    return file_values, sigmas, rod, extra
+
+
+def _rod(r: dict[str, float]) -> Rod:
+    """The paper's rod with the given properties replaced (without an explicit inertia the
+    slender-rod m L^2 / 12 of the new mass and length)."""
+    if not r:
+        return PAPER_ROD
+    return Rod(
+        mass=r.get("mass", PAPER_ROD.mass),
+        length=r.get("length", PAPER_ROD.length),
+        tip_radius=r.get("tip_radius", PAPER_ROD.tip_radius),
+        inertia=r.get("inertia"),
+    )
+
+
+def _check_complete(have: set[str], sigmas: set[str]) -> None:
+    """Every input T and F need is there (checked before any value is parsed)."""
+    missing = [n for n in _REQUIRED if n not in have]
+    if missing:
+        raise UserError(
+            "missing input(s): "
+            + ", ".join(_FIELDS[m][2] for m in missing)
+            + " (or use --case paper-20|paper-45|paper-70 or --file)"
+        )
+    if "e" not in have and "dv_cy" not in have:
+        raise UserError("missing input: --e (or --dv-cy) is needed for the mean force")
+    alone = sorted(sigmas - have)
+    if alone:
+        raise UserError(f"an uncertainty is given for {', '.join(alone)} but not its value")
 
 
 def run_invert(
@@ -96,112 +131,79 @@ def run_invert(
 ) -> InversionResult:
     """Merge case < file < command line and call :func:`impactlab.analytic.invert` (the paper
     case's negative dent depth and sliding length enter as magnitudes)."""
-    v: dict[str, float] = {}
-    s: dict[str, float] = {}
-    r: dict[str, float] = {}
-    fv, fs, fr, extra = _from_file(load_toml(file))
+    v, s, r, extra = _from_file(load_toml(file))
     case = case or extra.get("case")
     if case is not None:
         x = get_case(str(case))
-        v.update(angle=x.angle, v_i=x.v_i, e=x.e, mu=x.mu, delta_p=abs(x.delta_p), L_s=abs(x.L_s))
-    v.update(fv)
-    s.update(fs)
-    r.update(fr)
-    for name, val in (values or {}).items():
-        if val is not None:
-            v[name] = _parse(val, _FIELDS[name][0], "--" + name.replace("_", "-").lower())
-    for name, val in (sigmas or {}).items():
-        if val is not None:
-            s[name] = _parse(val, _FIELDS[name][0], "--sigma-" + name.replace("_", "-").lower())
-    for name, val in (rod or {}).items():
-        if val is not None:
-            r[name] = _parse(val, _ROD_FIELDS[name], "--" + name.replace("_", "-"))
-    missing = [n for n in ("angle", "v_i", "mu", "delta_p", "L_s") if n not in v]
-    if missing:
-        opts = {
-            "angle": "--angle",
-            "v_i": "--vi",
-            "mu": "--mu",
-            "delta_p": "--delta-p",
-            "L_s": "--ls",
-        }
-        raise UserError(
-            "missing input(s): "
-            + ", ".join(opts[m] for m in missing)
-            + " (or use --case paper-20|paper-45|paper-70 or --file)"
-        )
-    if "e" not in v and "dv_cy" not in v:
-        raise UserError("missing input: --e (or --dv-cy) is needed for the mean force")
-    for n in s:
-        if n not in v:
-            raise UserError(f"an uncertainty is given for {n} but not its value")
-    rod_obj = PAPER_ROD
-    if r:
-        # without an explicit inertia the slender-rod m L^2 / 12 of the (new) mass and length
-        rod_obj = Rod(
-            mass=r.get("mass", PAPER_ROD.mass),
-            length=r.get("length", PAPER_ROD.length),
-            tip_radius=r.get("tip_radius", PAPER_ROD.tip_radius),
-            inertia=r.get("inertia"),
-        )
-    grav = gravity if gravity is not None else bool(extra.get("gravity", False))
-    n_mc = samples if samples is not None else int(extra.get("samples", 20_000))
-    seed_mc = seed if seed is not None else int(extra.get("seed", 0))
+        paper = {"angle": x.angle, "v_i": x.v_i, "e": x.e, "mu": x.mu}
+        v = {**paper, "delta_p": abs(x.delta_p), "L_s": abs(x.L_s), **v}
+    cli_v = {k: val for k, val in (values or {}).items() if val is not None}
+    cli_s = {k: val for k, val in (sigmas or {}).items() if val is not None}
+    _check_complete(set(v) | set(cli_v), set(s) | set(cli_s))
+    v.update({k: _parse(val, _FIELDS[k][0], _FIELDS[k][2]) for k, val in cli_v.items()})
+    s.update(
+        {k: _parse(val, _FIELDS[k][0], "--sigma-" + _FIELDS[k][2][2:]) for k, val in cli_s.items()}
+    )
+    r.update(parse_rod_table({k: val for k, val in (rod or {}).items() if val is not None}, "--"))
     kwargs: dict[str, Any] = {_ARGUMENTS.get(k, k): (val, s.get(k, 0.0)) for k, val in v.items()}
-    return invert(**kwargs, rod=rod_obj, gravity=grav, n_samples=n_mc, seed=seed_mc)
+    return invert(
+        **kwargs,
+        rod=_rod(r),
+        gravity=gravity if gravity is not None else bool(extra.get("gravity", False)),
+        n_samples=samples if samples is not None else int(extra.get("samples", 20_000)),
+        seed=seed if seed is not None else int(extra.get("seed", 0)),
+    )
+
+
+#: Help of the measured inputs' options.
+_HELP = {
+    "angle": "Rod-to-flat angle with its unit: '20 deg' or '0.35 rad'.",
+    "v_i": "Drop velocity of the tip ('-1.41 m/s'; the sign is ignored).",
+    "e": "Coefficient of restitution (tip, normal).",
+    "mu": "Friction coefficient (paper Eq. 28).",
+    "delta_p": "Permanent dent depth, a magnitude ('22 um'; the paper prints -22 um).",
+    "L_s": "Sliding length L_s, a magnitude ('1400 um'; the paper prints -1400 um).",
+    "dv_cy": "Change of the centre-of-mass vertical velocity ('0.62 m/s'): F from Eq. 29.",
+}
+
+
+def _measured_option(name: str, *, sigma: bool = False) -> Any:
+    """The option of a measured input (``--vi``), or of its standard deviation (``--sigma-vi``)."""
+    flag = _FIELDS[name][2]
+    if sigma:
+        return typer.Option(None, "--sigma-" + flag[2:], help=f"Std. dev. of {flag}.")
+    return typer.Option(None, flag, help=_HELP[name])
 
 
 def invert_cmd(
-    angle: str | None = typer.Option(
-        None, "--angle", help="Rod-to-flat angle ('20 deg'; bare numbers are degrees)."
-    ),
-    vi: str | None = typer.Option(
-        None, "--vi", help="Drop velocity of the tip ('-1.41 m/s'; the sign is ignored)."
-    ),
-    e: str | None = typer.Option(None, "--e", help="Coefficient of restitution (tip, normal)."),
-    mu: str | None = typer.Option(None, "--mu", help="Friction coefficient (paper Eq. 28)."),
-    delta_p: str | None = typer.Option(
-        None,
-        "--delta-p",
-        help="Permanent dent depth, a magnitude ('22 um'; the paper prints -22 um).",
-    ),
-    ls: str | None = typer.Option(
-        None, "--ls", help="Sliding length L_s, a magnitude ('1400 um'; the paper prints -1400 um)."
-    ),
-    dv_cy: str | None = typer.Option(
-        None,
-        "--dv-cy",
-        help="Measured change of the centre-of-mass vertical velocity ('0.62 m/s'): F from Eq. 29.",
-    ),
-    sigma_angle: str | None = typer.Option(None, "--sigma-angle", help="Std. dev. of angle."),
-    sigma_vi: str | None = typer.Option(None, "--sigma-vi", help="Std. dev. of v_i."),
-    sigma_e: str | None = typer.Option(None, "--sigma-e", help="Std. dev. of e."),
-    sigma_mu: str | None = typer.Option(None, "--sigma-mu", help="Std. dev. of mu."),
-    sigma_delta_p: str | None = typer.Option(None, "--sigma-delta-p", help="Std. dev. of delta_p."),
-    sigma_ls: str | None = typer.Option(None, "--sigma-ls", help="Std. dev. of L_s."),
-    sigma_dv_cy: str | None = typer.Option(None, "--sigma-dv-cy", help="Std. dev. of dv_cy."),
-    mass: str | None = typer.Option(None, "--mass", help="Rod mass (default 0.4607 kg)."),
-    length: str | None = typer.Option(None, "--length", help="Rod length (default 0.3048 m)."),
-    tip_radius: str | None = typer.Option(
-        None, "--tip-radius", help="Tip radius (default 8.8 mm)."
-    ),
-    inertia: str | None = typer.Option(
-        None,
-        "--inertia",
-        help="I_C about the centre of mass (default m L^2/12), e.g. '3.6e-3 kg*m^2'.",
-    ),
+    angle: str | None = _measured_option("angle"),
+    vi: str | None = _measured_option("v_i"),
+    e: str | None = _measured_option("e"),
+    mu: str | None = _measured_option("mu"),
+    delta_p: str | None = _measured_option("delta_p"),
+    ls: str | None = _measured_option("L_s"),
+    dv_cy: str | None = _measured_option("dv_cy"),
+    sigma_angle: str | None = _measured_option("angle", sigma=True),
+    sigma_vi: str | None = _measured_option("v_i", sigma=True),
+    sigma_e: str | None = _measured_option("e", sigma=True),
+    sigma_mu: str | None = _measured_option("mu", sigma=True),
+    sigma_delta_p: str | None = _measured_option("delta_p", sigma=True),
+    sigma_ls: str | None = _measured_option("L_s", sigma=True),
+    sigma_dv_cy: str | None = _measured_option("dv_cy", sigma=True),
+    mass: str | None = rod_option("mass"),
+    length: str | None = rod_option("length"),
+    tip_radius: str | None = rod_option("tip_radius"),
+    inertia: str | None = rod_option("inertia"),
     case: str | None = typer.Option(
         None, "--case", help="Start from the paper's measurements: paper-20, paper-45 or paper-70."
     ),
-    file: str | None = typer.Option(
-        None,
-        "--file",
-        help="TOML file with the measurements (keys as the options; [sigma] and [rod] tables).",
+    file: Path | None = typer.Option(
+        None, "--file", help="TOML file of measurements (keys as the options; [sigma], [rod])."
     ),
     gravity: bool | None = typer.Option(
         None,
         "--gravity/--no-gravity",
-        help="Include gravity during the contact (default: no, as the paper).",
+        help="Gravity during the contact (default: no, as in the paper).",
     ),
     samples: int | None = typer.Option(
         None, "--samples", help="Monte Carlo samples (default 20000)."
@@ -217,44 +219,27 @@ def invert_cmd(
     Example: impactlab invert --angle "20 deg" --vi "-1.41 m/s" --e 0.5 --mu 0.2
     --delta-p "22 um" --ls "1400 um" --sigma-ls "50 um"
     """
+    inputs = (angle, vi, e, mu, delta_p, ls, dv_cy)
+    sigmas = (sigma_angle, sigma_vi, sigma_e, sigma_mu, sigma_delta_p, sigma_ls, sigma_dv_cy)
     res = run_invert(
         case=case,
-        file=Path(file) if file is not None else None,
-        values={
-            "angle": angle,
-            "v_i": vi,
-            "e": e,
-            "mu": mu,
-            "delta_p": delta_p,
-            "L_s": ls,
-            "dv_cy": dv_cy,
-        },
-        sigmas={
-            "angle": sigma_angle,
-            "v_i": sigma_vi,
-            "e": sigma_e,
-            "mu": sigma_mu,
-            "delta_p": sigma_delta_p,
-            "L_s": sigma_ls,
-            "dv_cy": sigma_dv_cy,
-        },
+        file=file,
+        values=dict(zip(_FIELDS, inputs, strict=True)),
+        sigmas=dict(zip(_FIELDS, sigmas, strict=True)),
         rod={"mass": mass, "length": length, "tip_radius": tip_radius, "inertia": inertia},
         gravity=gravity,
         samples=samples,
         seed=seed,
     )
-    if as_json:
-        emit(res.to_dict(), as_json=True)
-    else:
-        _print_result(res)
+    show(res, as_json=as_json, table=_print_result)
 
 
 def _print_result(res: InversionResult) -> None:
     data = {
-        "T": res.T * 1e3,
+        "T": res.duration * 1e3,
         "sigma T (first order)": res.sigma_T_linear * 1e3,
         "sigma T (Monte Carlo)": res.sigma_T_mc * 1e3,
-        "F": res.F,
+        "F": res.mean_force,
         "sigma F (first order)": res.sigma_F_linear,
         "sigma F (Monte Carlo)": res.sigma_F_mc,
         "force from": res.force_method,

@@ -2,11 +2,10 @@
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import typer
 
-from impactlab.paper.quantities import TOL_EXPERIMENT_T
+from impactlab.experiment.checks import output_folder
+from impactlab.paper.quantities import duration_checks
 from impactlab.paper.reproduction import reproduce
 
 
@@ -26,15 +25,11 @@ def reproduce_cmd(
 
     Example: impactlab reproduce --out reproduction
     """
-    res = reproduce(Path(out), simulate=not no_simulate)
-    exp = res.experimental.set_index("angle [deg]")
-    for ang in (20, 45):
-        r = exp.loc[ang]
-        ok = abs(r["T rel. diff"]) <= TOL_EXPERIMENT_T
+    res = reproduce(output_folder(out, "--out"), simulate=not no_simulate)
+    for c in duration_checks(res.experimental):
         typer.echo(
-            f"{ang} deg: T = {r['T [ms]']:.3f} ms (published "
-            f"{r['T published [ms]']:.2f} ms, {r['T rel. diff']:+.1%}) "
-            f"{'ok' if ok else 'OFF'}"
+            f"{c.angle_deg} deg: T = {c.T_ms:.3f} ms (published {c.published_ms:.2f} ms, "
+            f"{c.rel_diff:+.1%}) {'ok' if c.ok else 'OFF'}"
         )
     bad = res.comparison[res.comparison["reproduced"] == False]  # noqa: E712
     n_bad = len(bad.drop_duplicates(["source", "angle [deg]", "model", "quantity"]))

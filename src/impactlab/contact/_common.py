@@ -8,10 +8,19 @@ from collections.abc import Callable
 import numpy as np
 from scipy.optimize import brentq
 
+from impactlab.contact import kernel_arrays as ka
+from impactlab.contact import kernels as k
+
 #: Ratio of the calibrated maximum interference to the critical interference used for the
 #: FEM-fitted laws (provisional, see docs/laws/index.md): Kogut & Etsion (2002) and the
 #: Jackson-Green family report FEM results up to delta/delta_c of about 110.
 FEM_RANGE_RATIO = 110.0
+
+
+def pair_constants(p: np.ndarray) -> tuple[float, float, float, float]:
+    """(E* [Pa], R [m], S_y [Pa], nu) from a law's parameter vector ``p`` (``kernels.P_*``),
+    filled by ``ContactLaw.build`` from the contact pair and the radius."""
+    return float(p[k.P_ESTAR]), float(p[k.P_R]), float(p[k.P_SY]), float(p[k.P_NU])
 
 
 def jg_C(nu: float) -> float:
@@ -67,6 +76,45 @@ def nearest_crossing(
         return b
     root = brentq(lambda x: f_a(x) - f_b(x), a, b, xtol=1e-15 * a, rtol=1e-14, maxiter=200)
     return float(root)
+
+
+def curves(gap: int, p: np.ndarray) -> tuple[Callable[[float], float], Callable[[float], float]]:
+    """(plastic, elastic): the elastic-plastic loading force and the elastic force it takes over
+    from [N] at an interference [m], of the Jackson-Green family (``kernel_arrays
+    .GAP_JACKSON_FAMILY``: Hertz) or Kogut-Komvopoulos (``GAP_KOGUT_KOMVOPOULOS``)."""
+    if gap == ka.GAP_JACKSON_FAMILY:
+        E, R = p[k.P_ESTAR], p[k.P_R]
+        return (lambda x: float(k.jg_ep_force(p, x))), (lambda x: float(k.hertz_force(E, R, x)))
+    return (lambda x: float(k.kk_ep_force(p, x))), (lambda x: float(k.kk_elastic_force(p, x)))
+
+
+def switch_point(
+    p: np.ndarray,
+    gap: int,
+    published_at: float,
+    search: tuple[float, float],
+    published: bool,
+    failure: str,
+) -> tuple[float, float]:
+    """(switch interference, relative force jump at the published switch) of the law ``gap``
+    (:func:`curves`): the published switch point ``published_at`` when ``published``, else the
+    downward crossing of the elastic-plastic curve through the elastic one nearest to it within
+    ``search`` = (lo, hi) (located on a grid, refined with brentq). ValueError with the message
+    ``failure`` when there is none."""
+    plastic, elastic = curves(gap, p)
+    jump = plastic(published_at) / elastic(published_at) - 1.0
+    if published:
+        return published_at, jump
+    found = nearest_crossing(
+        plastic,
+        elastic,
+        published_at,
+        *search,
+        g_array=lambda d: ka.elastic_plastic_gap_array(gap, p, d),
+    )
+    if found is None:
+        raise ValueError(failure)
+    return found, jump
 
 
 def check_switch(value: float, name: str = "published_switch") -> bool:

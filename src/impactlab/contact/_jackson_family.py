@@ -12,7 +12,13 @@ import numpy as np
 
 from impactlab.contact import kernel_arrays as ka
 from impactlab.contact import kernels as k
-from impactlab.contact._common import FEM_RANGE_RATIO, jg_C, jg_critical, nearest_crossing
+from impactlab.contact._common import (
+    FEM_RANGE_RATIO,
+    jg_C,
+    jg_critical,
+    pair_constants,
+    switch_point,
+)
 from impactlab.materials import ContactPair
 
 
@@ -28,10 +34,7 @@ def fill_jackson_family(
     law_name: str,
 ) -> dict[str, float]:
     """Fill slots 4..15 of ``p`` for a Jackson-Green-family law; return its details."""
-    E = float(p[k.P_ESTAR])
-    R = float(p[k.P_R])
-    Sy = float(p[k.P_SY])
-    nu = float(p[k.P_NU])
+    E, R, Sy, nu = pair_constants(p)
     C = jg_C(nu)
     dc, fc = jg_critical(E, R, Sy, nu)
     B = 0.14 * math.exp(23.0 * Sy / E)
@@ -51,32 +54,12 @@ def fill_jackson_family(
     dlim = min(R, d_full)
     p[k.P_DLIM] = dlim
     d_pub = k.JG_AREA_SWITCH * dc
-
-    def hertz(x: float) -> float:
-        return float(k.hertz_force(E, R, x))
-
-    def ep(x: float) -> float:
-        return float(k.jg_ep_force(p, x))
-
-    jump = ep(d_pub) / hertz(d_pub) - 1.0
-    if published:
-        d_sw = d_pub
-    else:
-        found = nearest_crossing(
-            ep,
-            hertz,
-            d_pub,
-            1e-4 * dc,
-            dlim,
-            g_array=lambda d: ka.elastic_plastic_gap_array(ka.GAP_JACKSON_FAMILY, p, d),
-        )
-        if found is None:
-            raise ValueError(
-                f"the {law_name!r} elastic-plastic formula never crosses the Hertz curve for this "
-                f"pair (nu={nu!r}, S_y/E*={Sy / E!r}), so no continuous switch exists; "
-                "use published_switch=1"
-            )
-        d_sw = found
+    failure = (
+        f"the {law_name!r} elastic-plastic formula never crosses the Hertz curve for this pair "
+        f"(nu={nu!r}, S_y/E*={Sy / E!r}), so no continuous switch exists; use published_switch=1"
+    )
+    search = (1e-4 * dc, dlim)
+    d_sw, jump = switch_point(p, ka.GAP_JACKSON_FAMILY, d_pub, search, published, failure)
     p[k.P_DSW] = d_sw
     return {
         "C": C,

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import numbers
 from abc import ABC, abstractmethod
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -10,12 +11,22 @@ from typing import Any, ClassVar
 
 import numpy as np
 
-from impactlab._validation import check_finite, check_nonnegative, check_positive
+from impactlab._validation import check_array, check_finite, check_nonnegative, check_positive
 from impactlab.contact import kernel_arrays as ka
 from impactlab.contact import kernels as k
 from impactlab.contact.names import Law
 from impactlab.materials import ContactPair
 from impactlab.references import Reference
+from impactlab.units import is_quantity
+
+
+def _scalar_like(value: Any) -> bool:
+    """True for what may hold one law parameter: a number, a string or a scalar quantity."""
+    if is_quantity(value):
+        return np.ndim(value.magnitude) == 0
+    return isinstance(value, numbers.Real | str | np.generic) or (
+        isinstance(value, np.ndarray) and value.ndim == 0
+    )
 
 
 @dataclass(frozen=True)
@@ -134,14 +145,9 @@ class ContactModel:
         return bool(np.all(np.asarray(delta, dtype=float) <= self.calibrated_max_interference))
 
     def check_interference(self, delta: Any) -> np.ndarray:
-        """Array of ``delta``; ValueError if any value is negative, NaN or past the validity
-        limit."""
-        try:
-            d = np.asarray(delta, dtype=np.float64)
-        except (TypeError, ValueError):
-            raise ValueError(
-                f"delta must be a number or an array of numbers [m], got {delta!r}"
-            ) from None
+        """Array of ``delta`` [m] (numbers in m, a string with units or a pint Quantity);
+        ValueError if any value is not a number, negative, NaN or past the validity limit."""
+        d = check_array("delta", delta, "m")
         if not np.all(np.isfinite(d)):
             raise ValueError("delta must be finite")
         if np.any(d < 0.0):
@@ -208,17 +214,8 @@ class ContactLaw(ABC):
         if not isinstance(pair, ContactPair):
             raise ValueError(f"pair must be a ContactPair, got {type(pair).__name__}")
         R = check_positive("radius", radius, "m")
-        known = {q.name: q for q in self.parameters}
-        unknown = sorted(set(params) - set(known))
-        if unknown:
-            raise ValueError(
-                f"unknown parameter(s) {unknown} for contact law {self.name!r}; "
-                f"known: {sorted(known) or 'none'}"
-            )
-        values = {
-            q.name: check_finite(q.name, params[q.name]) if q.name in params else float(q.default)
-            for q in self.parameters
-        }
+        given = self.parameter_values(params)
+        values = {q.name: given.get(q.name, float(q.default)) for q in self.parameters}
         p = np.full(k.NPARAM, np.nan)
         p[k.P_ESTAR] = pair.E_star
         p[k.P_R] = R
@@ -228,6 +225,34 @@ class ContactLaw(ABC):
         details = self._fill(p, pair, values) or {}
         self._check_loading_curve(p, pair, published=values.get("published_switch", 0.0) == 1.0)
         return ContactModel(self.name, self.law_id, p, details, self.references)
+
+    def parameter_values(self, params: Any) -> dict[str, float]:
+        """The given law parameters ``params`` (a mapping of names to values) as floats in the
+        parameters' units: a value is a number in its unit, or, for a parameter with a unit, a
+        string with units or a pint Quantity. ValueError for a non-mapping, an unknown name or
+        a bad value (naming it)."""
+        if not isinstance(params, Mapping):
+            raise ValueError(
+                f"law_params must be a mapping of parameter names to values, got {params!r}"
+            )
+        odd = {k: v for k, v in params.items() if not _scalar_like(v)}
+        if odd:
+            raise ValueError(
+                f"law_params values must be numbers (or, for a parameter with a unit, strings "
+                f"with units or pint Quantities), got {odd!r}"
+            )
+        known = {q.name: q for q in self.parameters}
+        unknown = sorted(set(params) - set(known))
+        if unknown:
+            raise ValueError(
+                f"unknown parameter(s) {unknown} for contact law {self.name!r}; "
+                f"known: {sorted(known) or 'none'}"
+            )
+        values = {}
+        for name, v in params.items():
+            unit = known[name].unit
+            values[name] = check_finite(name, v, "" if unit == "-" else unit)
+        return values
 
     def _check_loading_curve(self, p: np.ndarray, pair: ContactPair, *, published: bool) -> None:
         """ValueError unless the loading curve is finite and non-decreasing up to the hard limit

@@ -36,6 +36,7 @@ from scipy.optimize import minimize_scalar
 from impactlab._validation import check_positive
 from impactlab.contact import kernel_arrays as ka
 from impactlab.contact import kernels as k
+from impactlab.contact._common import pair_constants
 from impactlab.contact.base import ContactLaw, Parameter
 from impactlab.contact.names import Law
 from impactlab.materials import G0, ContactPair
@@ -110,10 +111,7 @@ class Brake(ContactLaw):
     )
 
     def _fill(self, p: np.ndarray, pair: ContactPair, values: dict[str, float]) -> dict[str, float]:
-        E = float(p[k.P_ESTAR])
-        R = float(p[k.P_R])
-        Sy = float(p[k.P_SY])
-        nu = float(p[k.P_NU])
+        E, R, Sy, nu = pair_constants(p)
         hb = values["hardness"]
         if math.isnan(hb):
             if not (pair.body.has_hardness and pair.flat.has_hardness):

@@ -14,7 +14,7 @@ import math
 import numpy as np
 
 from impactlab.contact import kernels as k
-from impactlab.contact._common import jg_critical
+from impactlab.contact._common import jg_critical, pair_constants
 from impactlab.contact.base import ContactLaw
 from impactlab.contact.names import Law
 from impactlab.materials import ContactPair
@@ -31,7 +31,5 @@ class Hertz(ContactLaw):
         p[k.P_DY] = math.inf
         p[k.P_FY] = math.inf
         p[k.P_DSW] = math.inf
-        dc, fc = jg_critical(
-            float(p[k.P_ESTAR]), float(p[k.P_R]), float(p[k.P_SY]), float(p[k.P_NU])
-        )
+        dc, fc = jg_critical(*pair_constants(p))
         return {"delta_c": dc, "F_c": fc, "calibrated_max_interference": dc}

@@ -13,25 +13,34 @@ from numba import njit
 
 from impactlab.contact import kernels as k
 
+_FORCE = 0
+_RADIUS = 1
+
+
+@njit(cache=True)
+def _loading_array(quantity: int, law: int, p: np.ndarray, delta: np.ndarray) -> np.ndarray:
+    """``loading_force`` (``_FORCE``) or ``loading_contact_radius`` (``_RADIUS``) over an array
+    of interferences, in the array's shape."""
+    out = np.empty(delta.size)
+    flat = delta.ravel()
+    for i in range(flat.size):
+        if quantity == _FORCE:
+            out[i] = k.loading_force(law, p, flat[i])
+        else:
+            out[i] = k.loading_contact_radius(law, p, flat[i])
+    return out.reshape(delta.shape)
+
 
 @njit(cache=True)
 def loading_force_array(law: int, p: np.ndarray, delta: np.ndarray) -> np.ndarray:
     """Vectorised ``loading_force`` over an array of interferences."""
-    out = np.empty(delta.size)
-    flat = delta.ravel()
-    for i in range(flat.size):
-        out[i] = k.loading_force(law, p, flat[i])
-    return out.reshape(delta.shape)
+    return _loading_array(_FORCE, law, p, delta)
 
 
 @njit(cache=True)
 def loading_contact_radius_array(law: int, p: np.ndarray, delta: np.ndarray) -> np.ndarray:
     """Vectorised ``loading_contact_radius`` over an array of interferences."""
-    out = np.empty(delta.size)
-    flat = delta.ravel()
-    for i in range(flat.size):
-        out[i] = k.loading_contact_radius(law, p, flat[i])
-    return out.reshape(delta.shape)
+    return _loading_array(_RADIUS, law, p, delta)
 
 
 GAP_JACKSON_FAMILY = 0

@@ -34,7 +34,13 @@ from scipy.optimize import minimize_scalar
 
 from impactlab.contact import kernel_arrays as ka
 from impactlab.contact import kernels as k
-from impactlab.contact._common import FEM_RANGE_RATIO, check_switch, nearest_crossing
+from impactlab.contact._common import (
+    FEM_RANGE_RATIO,
+    check_switch,
+    curves,
+    pair_constants,
+    switch_point,
+)
 from impactlab.contact.base import ContactLaw, Parameter
 from impactlab.contact.names import Law
 from impactlab.materials import ContactPair
@@ -69,9 +75,7 @@ class KogutKomvopoulos(ContactLaw):
 
     def _fill(self, p: np.ndarray, pair: ContactPair, values: dict[str, float]) -> dict[str, float]:
         published = check_switch(values["published_switch"])
-        E = float(p[k.P_ESTAR])
-        R = float(p[k.P_R])
-        Sy = float(p[k.P_SY])
+        E, R, Sy, _ = pair_constants(p)
         eps = E / Sy
         ts = 1.78 / eps
         if ts >= 1.0:
@@ -91,30 +95,13 @@ class KogutKomvopoulos(ContactLaw):
         d_pole = _delta_at_ratio(t0, R) if t0 < 1.0 else R
         d_end = min(R, d_pole) * (1.0 - 1e-9)
 
-        def el(x: float) -> float:
-            return float(k.kk_elastic_force(p, x))
-
-        def ep(x: float) -> float:
-            return float(k.kk_ep_force(p, x))
-
-        jump = ep(dy) / el(dy) - 1.0
-        if published:
-            d_sw = dy
-        else:
-            found = nearest_crossing(
-                ep,
-                el,
-                dy,
-                1e-4 * dy,
-                d_end,
-                g_array=lambda d: ka.elastic_plastic_gap_array(ka.GAP_KOGUT_KOMVOPOULOS, p, d),
-            )
-            if found is None:
-                raise ValueError(
-                    f"Kogut-Komvopoulos Eq. 21 never falls below the elastic curve for E*/S_y = "
-                    f"{eps!r}; use published_switch=1"
-                )
-            d_sw = found
+        ep, el = curves(ka.GAP_KOGUT_KOMVOPOULOS, p)
+        failure = (
+            f"Kogut-Komvopoulos Eq. 21 never falls below the elastic curve for E*/S_y = {eps!r}; "
+            "use published_switch=1"
+        )
+        search = (1e-4 * dy, d_end)
+        d_sw, jump = switch_point(p, ka.GAP_KOGUT_KOMVOPOULOS, dy, search, published, failure)
         p[k.P_DSW] = d_sw
         # Hard limit: the minimum of F_ep / F_el beyond the switch.
         grid = np.geomspace(max(d_sw, dy), d_end, 2000)

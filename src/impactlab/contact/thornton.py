@@ -28,7 +28,7 @@ import numpy as np
 
 from impactlab._validation import check_array_finite, check_positive
 from impactlab.contact import kernels as k
-from impactlab.contact._common import jg_C, jg_critical
+from impactlab.contact._common import jg_C, jg_critical, pair_constants
 from impactlab.contact.base import ContactLaw, Parameter
 from impactlab.contact.names import Law
 from impactlab.materials import ContactPair
@@ -104,12 +104,10 @@ class Thornton(ContactLaw):
     )
 
     def _fill(self, p: np.ndarray, pair: ContactPair, values: dict[str, float]) -> dict[str, float]:
-        E = float(p[k.P_ESTAR])
-        R = float(p[k.P_R])
-        Sy = float(p[k.P_SY])
+        E, R, Sy, nu = pair_constants(p)
         ratio = values["limit_pressure_ratio"]
         if math.isnan(ratio):
-            ratio = jg_C(float(p[k.P_NU]))
+            ratio = jg_C(nu)
         ratio = check_positive("limit_pressure_ratio", ratio)
         py = ratio * Sy
         dy = R * (math.pi * py / (2.0 * E)) ** 2
@@ -127,5 +125,5 @@ class Thornton(ContactLaw):
             "limit_pressure_ratio": ratio,
             "delta_y": dy,
             "F_y": float(p[k.P_FY]),
-            "delta_c_jackson_green": jg_critical(E, R, Sy, float(p[k.P_NU]))[0],
+            "delta_c_jackson_green": jg_critical(E, R, Sy, nu)[0],
         }

@@ -16,6 +16,8 @@ from impactlab.dynamics.batch import (
     run_arrays,
 )
 from impactlab.dynamics.core.layout import DEFAULT_RTOL, HISTORY_FIELDS
+from impactlab.dynamics.drop import simulate_drop
+from impactlab.dynamics.drop_result import ContactRecord, DropResult
 from impactlab.dynamics.models import contact_model
 from impactlab.dynamics.results import BatchResult, DentMap, History, ImpactResult
 from impactlab.dynamics.simulate import simulate, simulate_batch
@@ -28,11 +30,14 @@ __all__ = [
     "REGIME_NAMES",
     "STATUS_MESSAGES",
     "BatchResult",
+    "ContactRecord",
     "DentMap",
+    "DropResult",
     "History",
     "ImpactResult",
     "contact_model",
     "run_arrays",
     "simulate",
     "simulate_batch",
+    "simulate_drop",
 ]

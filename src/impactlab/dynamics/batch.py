@@ -11,6 +11,7 @@ from typing import Any
 
 import numpy as np
 
+from impactlab._validation import check_array
 from impactlab.bodies import NB
 from impactlab.contact.kernels import N_LAWS, NPARAM
 from impactlab.dynamics.checks import check_rtol, gravity_value
@@ -33,7 +34,7 @@ def _rows(name: str, a: Any, width: int, n: int) -> np.ndarray:
     return np.require(arr, np.float64, ["C", "W"])
 
 
-def _run(
+def run_arrays(
     law_id: int,
     friction_id: int,
     law_params: Any,
@@ -41,11 +42,24 @@ def _run(
     initial: Any,
     mu: Any,
     *,
-    gravity: bool | float,
-    constant_angle: bool,
-    rtol: float | None,
-    diagnostics: bool,
+    gravity: bool | float = True,
+    constant_angle: bool = False,
+    rtol: float | None = None,
+    diagnostics: bool = False,
 ) -> tuple[np.ndarray, np.ndarray]:
+    """Run N impacts in parallel.
+
+    law_id : contact-law id (``contact.kernels``); friction_id : ``FRICTION_IDS[name]``.
+    law_params : (N, NPARAM) or (NPARAM,) (``ContactModel.params``).
+    body_params : (N, NB) or (NB,) (``Rod/Sphere.to_params(flat)``, which includes G*).
+    initial : (N, 4) = [angle [rad], vx, vy [m/s], spin [rad/s]]; mu : (N,) or scalar.
+    gravity : True (9.80665), False or a value [m/s^2]; constant_angle : freeze the lever arms;
+    rtol : relative tolerance (None: the engine default); diagnostics : also compute the
+    diagnostic outputs (energy_rise, friction_excess; NaN otherwise).
+
+    Returns ``(out, status)``: out (N, len(OUTPUT_FIELDS)) float64, status (N,) int32
+    (0 = ok; ``STATUS_MESSAGES``). The ``regime`` column holds codes (``REGIME_NAMES``).
+    """
     try:
         lid = int(law_id)
     except (TypeError, ValueError):
@@ -58,7 +72,7 @@ def _run(
         raise ValueError(f"friction_id must be an integer, got {friction_id!r}") from None
     if fid not in FRICTION_IDS.values():
         raise ValueError(f"friction_id must be one of {FRICTION_IDS}, got {friction_id!r}")
-    init = np.asarray(initial, dtype=np.float64)
+    init = check_array("initial", initial)
     if init.ndim == 1 and init.shape[0] == 4:
         init = init[None, :]
     if init.ndim != 2 or init.shape[1] != 4:
@@ -67,7 +81,7 @@ def _run(
         )
     init = np.require(init, np.float64, ["C", "W"])
     n = init.shape[0]
-    mu_a = np.asarray(mu, dtype=np.float64)
+    mu_a = check_array("mu", mu)
     if mu_a.ndim == 0:
         mu_a = np.full(n, float(mu_a))
     if mu_a.shape != (n,):
@@ -84,41 +98,3 @@ def _run(
             lid, lp, fid, bp, init, mu_a, g, bool(constant_angle), r, bool(diagnostics), out, status
         )
     return out, status
-
-
-def run_arrays(
-    law_id: int,
-    friction_id: int,
-    law_params: Any,
-    body_params: Any,
-    initial: Any,
-    mu: Any,
-    *,
-    gravity: bool | float = True,
-    constant_angle: bool = False,
-    rtol: float | None = None,
-) -> tuple[np.ndarray, np.ndarray]:
-    """Run N impacts in parallel.
-
-    law_id : contact-law id (``contact.kernels``); friction_id : ``FRICTION_IDS[name]``.
-    law_params : (N, NPARAM) or (NPARAM,) (``ContactModel.params``).
-    body_params : (N, NB) or (NB,) (``Rod/Sphere.to_params(flat)``, which includes G*).
-    initial : (N, 4) = [angle [rad], vx, vy [m/s], spin [rad/s]]; mu : (N,) or scalar.
-    gravity : True (9.80665), False or a value [m/s^2]; constant_angle : freeze the lever arms;
-    rtol : relative tolerance (None: the engine default).
-
-    Returns ``(out, status)``: out (N, len(OUTPUT_FIELDS)) float64, status (N,) int32
-    (0 = ok; ``STATUS_MESSAGES``). The ``regime`` column holds codes (``REGIME_NAMES``).
-    """
-    return _run(
-        law_id,
-        friction_id,
-        law_params,
-        body_params,
-        initial,
-        mu,
-        gravity=gravity,
-        constant_angle=constant_angle,
-        rtol=rtol,
-        diagnostics=False,
-    )

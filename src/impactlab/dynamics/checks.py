@@ -1,31 +1,53 @@
 """Validation of the engine's Python inputs (one place for simulate, simulate_batch, run_arrays
-and the reference implementation): gravity, tolerance, angle, velocity, body and flat."""
+and the reference implementation): gravity, tolerance, angle, velocity, body and flat, and
+:func:`check_impact`, all the inputs of one impact at once.
+
+Quantities follow ``impactlab.units.magnitude`` (a number in SI, a string with units such as
+``"20 deg"`` or ``"1.41 m/s"``, or a pint Quantity of any registry); dimensionless inputs (mu,
+rtol) follow the number rule of ``impactlab._validation`` (no strings, no bools).
+"""
 
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
+from dataclasses import dataclass
 from typing import Any
 
-from impactlab._validation import check_finite, check_nonnegative
-from impactlab.bodies import Rod, Sphere
+import numpy as np
+
+from impactlab._validation import (
+    check_finite,
+    check_flag,
+    check_nonnegative,
+    warn_implausible,
+)
+from impactlab.bodies import Rod, Sphere, lever_arms
+from impactlab.contact import ContactModel
 from impactlab.dynamics.core.layout import DEFAULT_RTOL
+from impactlab.dynamics.models import contact_model
+from impactlab.friction import FrictionModel, get_friction
 from impactlab.materials import G0, Material
+from impactlab.units import magnitude
 
 #: Range of the relative tolerance accepted by the Python API.
 RTOL_RANGE = (1e-13, 1e-3)
+#: Speeds above this [m/s] (of the centre of mass or of the contact point) draw an
+#: ImplausibleInputWarning: most likely a unit mistake (mm/s taken as m/s).
+PLAUSIBLE_SPEED = 100.0
 
 
-def gravity_value(gravity: bool | float | None) -> float:
-    """True -> standard gravity 9.80665 m/s^2, False (or None) -> 0, a number -> that value
-    (>= 0) [m/s^2]."""
-    if gravity is True:
-        return G0
-    if gravity is False or gravity is None:
+def gravity_value(gravity: Any) -> float:
+    """True -> standard gravity 9.80665 m/s^2, False (or None) -> 0, a value (>= 0; a number in
+    m/s^2, a string with units or a pint Quantity) -> that value [m/s^2]."""
+    if gravity is None:
         return 0.0
+    if isinstance(gravity, bool | np.bool_):
+        return G0 if gravity else 0.0
     return check_nonnegative("gravity", gravity, "m/s^2")
 
 
-def check_rtol(rtol: float | None) -> float:
+def check_rtol(rtol: Any) -> float:
     """The relative tolerance (None: ``DEFAULT_RTOL``), in [1e-13, 1e-3]."""
     if rtol is None:
         return DEFAULT_RTOL
@@ -36,22 +58,23 @@ def check_rtol(rtol: float | None) -> float:
 
 
 def check_angle(angle: Any, body: Rod | Sphere) -> float:
-    """Validate the rod angle (radians, in (0, pi/2]); ignored (pi/2) for a sphere."""
+    """Validate the rod angle (in (0, pi/2]; a bare number is radians, ``"20 deg"`` works);
+    ignored (pi/2) for a sphere."""
     if isinstance(body, Sphere):
         if angle is not None:
-            check_finite("angle", angle)
+            check_finite("angle", angle, "rad")
         return 0.5 * math.pi
     if angle is None:
         raise ValueError(
             "angle is required for a Rod: the rod axis to the flat, in radians, in (0, pi/2]"
         )
-    th = check_finite("angle", angle)
+    th = check_finite("angle", angle, "rad")
     if th > 0.5 * math.pi + 1e-12:
         hint = ""
         if th <= 90.0 + 1e-9:
             hint = (
                 f"; {th!r} looks like degrees: pass math.radians({th!r}) = "
-                f"{math.radians(th):.6g} rad"
+                f"{math.radians(th):.6g} rad or the string '{th:g} deg'"
             )
         raise ValueError(f"angle must be in radians in (0, pi/2], got {th!r}{hint}")
     if th <= 0.0:
@@ -60,12 +83,17 @@ def check_angle(angle: Any, body: Rod | Sphere) -> float:
 
 
 def check_velocity(velocity: Any) -> tuple[float, float]:
-    """(vx, vy) [m/s] from a pair of finite numbers."""
+    """(vx, vy) [m/s] from a pair of finite numbers, strings with units or pint Quantities (or
+    one pint Quantity holding the pair)."""
+    velocity = magnitude("velocity", velocity, "m/s")
     try:
         vx, vy = velocity
     except (TypeError, ValueError):
         raise ValueError(f"velocity must be a pair (vx, vy) in m/s, got {velocity!r}") from None
-    return check_finite("velocity[0] (vx)", vx), check_finite("velocity[1] (vy)", vy)
+    return tuple(  # type: ignore[return-value]
+        check_finite(name, v, "m/s")
+        for name, v in (("velocity[0] (vx)", vx), ("velocity[1] (vy)", vy))
+    )
 
 
 def check_body(body: Any) -> Rod | Sphere:
@@ -82,12 +110,94 @@ def check_flat(flat: Any) -> Material:
     return flat
 
 
+def warn_fast(what: str, speed: float) -> None:
+    """An ImplausibleInputWarning when ``speed`` [m/s] exceeds :data:`PLAUSIBLE_SPEED`."""
+    if speed > PLAUSIBLE_SPEED:
+        warn_implausible(
+            f"{what} ({speed:.6g} m/s) exceeds {PLAUSIBLE_SPEED:g} m/s, far beyond the rigid-"
+            "body impacts impactlab models; check the units (SI: m/s, rad/s)"
+        )
+
+
+@dataclass(frozen=True)
+class ImpactInputs:
+    """The checked inputs of one impact (SI): the body, the flat, the contact model, the
+    friction model, mu, angle [rad], velocity (vx, vy) [m/s], spin [rad/s], gravity [m/s^2],
+    rtol, constant_angle and the contact point's initial normal velocity ``vn`` (< 0)."""
+
+    body: Rod | Sphere
+    flat: Material
+    model: ContactModel
+    friction: FrictionModel
+    mu: float
+    angle: float
+    velocity: tuple[float, float]
+    spin: float
+    gravity: float
+    rtol: float
+    constant_angle: bool
+    vn: float
+
+
+def _approach(body: Rod | Sphere, th: float, vx: float, vy: float, w: float) -> float:
+    """The contact point's normal velocity (ValueError unless < 0); warns on a fast impact."""
+    a, b = lever_arms(body.half_length, body.tip_radius, th)
+    vn = vy - w * a
+    if not vn < 0.0:
+        raise ValueError(
+            f"velocity: the contact point does not approach the flat (its normal velocity "
+            f"vy - spin * (L/2) cos(angle) = {vn!r} m/s must be < 0)"
+        )
+    warn_fast("the impact speed", max(math.hypot(vx, vy), math.hypot(vx + w * b, vn)))
+    return vn
+
+
+def check_impact(
+    body: Any,
+    flat: Any,
+    *,
+    law: str | ContactModel,
+    friction: str,
+    mu: Any,
+    angle: Any,
+    velocity: Any,
+    spin: Any,
+    law_params: Mapping[str, Any] | None,
+    gravity: Any,
+    constant_angle: Any,
+    rtol: Any,
+) -> ImpactInputs:
+    """All the inputs of one impact (``simulate``'s arguments) checked and in SI."""
+    body = check_body(body)
+    th = check_angle(angle, body)
+    vx, vy = check_velocity(velocity)
+    w = check_finite("spin", spin, "rad/s")
+    return ImpactInputs(
+        body=body,
+        flat=check_flat(flat),
+        model=contact_model(body, check_flat(flat), law, law_params),
+        friction=get_friction(friction),
+        mu=check_nonnegative("mu", mu),
+        angle=th,
+        velocity=(vx, vy),
+        spin=w,
+        gravity=gravity_value(gravity),
+        rtol=check_rtol(rtol),
+        constant_angle=check_flag("constant_angle", constant_angle),
+        vn=_approach(body, th, vx, vy, w),
+    )
+
+
 __all__ = [
+    "PLAUSIBLE_SPEED",
     "RTOL_RANGE",
+    "ImpactInputs",
     "check_angle",
     "check_body",
     "check_flat",
+    "check_impact",
     "check_rtol",
     "check_velocity",
     "gravity_value",
+    "warn_fast",
 ]

@@ -49,15 +49,12 @@ def build_contact_model(
     """The ContactModel of the registered law ``law`` for a sphere (rod tip) of ``radius`` [m]
     made of ``body_material`` on ``flat``, with the law's ``law_params`` (cached by value).
 
-    ValueError for an unknown law, unknown or invalid parameters, or non-numeric values.
+    ``law_params`` maps parameter names to numbers in their units (or, for a parameter with a
+    unit, strings with units or pint Quantities: ``ContactLaw.parameter_values``). ValueError
+    for an unknown law, a ``law_params`` that is not a mapping, unknown names or bad values.
     """
-    params = dict(law_params or {})
-    key = tuple(sorted(params.items()))
-    try:
-        hash(key)
-    except TypeError:  # unhashable parameter values
-        raise ValueError(f"law_params values must be numbers, got {params!r}") from None
-    return _build(str(law), body_material, flat, radius, key)
+    params = get_law(law).parameter_values({} if law_params is None else law_params)
+    return _build(str(law), body_material, flat, radius, tuple(sorted(params.items())))
 
 
 def contact_model(

@@ -11,8 +11,8 @@ engine, not for production.
 
 from __future__ import annotations
 
+import inspect
 import math
-from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
@@ -20,36 +20,22 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from impactlab.bodies import Rod, Sphere
-from impactlab.contact.base import ContactModel
-from impactlab.dynamics.checks import (
-    check_angle,
-    check_body,
-    check_flat,
-    check_rtol,
-    check_velocity,
-    gravity_value,
-)
-from impactlab.dynamics.core.layout import DEFAULT_RTOL
+from impactlab.dynamics.checks import check_impact
 from impactlab.dynamics.core.status import REGIME_NAMES
-from impactlab.dynamics.models import body_params, contact_model
+from impactlab.dynamics.models import body_params
 from impactlab.dynamics.reference_problem import ReferenceProblem
-from impactlab.friction import get_friction
+from impactlab.dynamics.simulate import simulate
 from impactlab.materials import AISI_1010, Material
 
 
-@dataclass
 class _Stats:
     """Running extremes, stick time and normal work over the integration (SI)."""
 
-    fmax: float = 0.0
-    dmax: float = 0.0
-    tmax: float = 0.0
-    vs_pos: float = 0.0
-    vs_neg: float = 0.0
-    stick_time: float = 0.0
-    w_mark: float = 0.0
-    w_comp: float = 0.0
-    w_rest: float = 0.0
+    def __init__(self) -> None:
+        self.fmax = self.dmax = self.tmax = 0.0  # largest force, interference and its time
+        self.vs_pos = self.vs_neg = 0.0  # extreme slip velocities
+        self.stick_time = 0.0
+        self.w_mark = self.w_comp = self.w_rest = 0.0  # normal work: mark, compression, rest.
 
     def track(self, f: dict[str, float], t: float) -> None:
         self.fmax = max(self.fmax, f["Fn"])
@@ -228,52 +214,51 @@ def _result(
     }
 
 
+def _simulate_defaults() -> dict[str, Any]:
+    """``simulate``'s keyword defaults (the reference takes the same arguments)."""
+    skip = ("body", "flat", "history")
+    return {
+        n: p.default
+        for n, p in inspect.signature(simulate).parameters.items()
+        if p.default is not p.empty and n not in skip
+    }
+
+
 def simulate_reference(
     body: Rod | Sphere,
     flat: Material = AISI_1010,
     *,
-    law: str | ContactModel = "ghaednia",
-    friction: str = "coulomb",
-    mu: float = 0.0,
-    angle: float | None = None,
-    velocity: tuple[float, float],
-    spin: float = 0.0,
-    law_params: Mapping[str, float] | None = None,
-    gravity: bool | float = True,
-    constant_angle: bool = False,
-    rtol: float | None = None,
     method: str = "RK45",
     max_segments: int = 10_000,
+    **impact: Any,
 ) -> dict[str, Any]:
-    """The impact integrated with ``scipy.integrate.solve_ivp`` (same arguments as
-    ``simulate``). Returns a dict with the engine's output names (``OUTPUT_FIELDS`` except the
-    diagnostics), ``regime`` as a name, plus ``n_segments`` and ``nfev``.
+    """The impact integrated with ``scipy.integrate.solve_ivp``; ``impact`` holds ``simulate``'s
+    keyword arguments (law, friction, mu, angle, velocity, ...; same defaults, same checks).
+    Returns a dict with the engine's output names (``OUTPUT_FIELDS`` except the diagnostics),
+    ``regime`` as a name, plus ``n_segments`` and ``nfev``.
 
     Error control: ``rtol`` and the per-component ``atol = rtol * scale`` of the engine (scale:
     Hertz estimate of the penetration, the impact speed, and their rotational counterparts).
     """
-    body = check_body(body)
-    flat = check_flat(flat)
-    fr = get_friction(friction).name
-    mu_v = float(mu)
-    if not (math.isfinite(mu_v) and mu_v >= 0.0):
-        raise ValueError(f"mu must be finite and >= 0, got {mu!r}")
-    th0 = check_angle(angle, body)
-    vx0, vy0 = check_velocity(velocity)
-    w0 = float(spin)
-    g = gravity_value(gravity)
-    r = check_rtol(rtol if rtol is not None else DEFAULT_RTOL)
-    model = contact_model(body, flat, law, law_params)
-    P = ReferenceProblem(model, fr, body, body_params(body, flat), th0, mu_v, g, constant_angle)
+    x = check_impact(body, flat, **{**_simulate_defaults(), **impact})
+    P = ReferenceProblem(
+        x.model,
+        x.friction.name,
+        x.body,
+        body_params(x.body, x.flat),
+        x.angle,
+        x.mu,
+        x.gravity,
+        x.constant_angle,
+    )
+    (vx0, vy0), w0 = x.velocity, x.spin
     vn0 = vy0 - w0 * P.a0
     vt0 = vx0 + w0 * P.b0
-    if not vn0 < 0.0:
-        raise ValueError(f"velocity: the contact point does not approach the flat (v_n = {vn0!r})")
     P.init_friction(vn0, vt0, w0)
     st = _Stats()
     y0 = np.array([0.0, 0.0, 0.0, vx0, vy0, w0, 0.0, 0.0])
-    t, y, nseg, nfev = _integrate(P, y0, r, _scales(P, vn0), st, method, max_segments)
-    out = _result(P, y, t, st, (th0, vx0, vy0, w0, vn0, vt0), isinstance(body, Rod))
+    t, y, nseg, nfev = _integrate(P, y0, x.rtol, _scales(P, vn0), st, method, max_segments)
+    out = _result(P, y, t, st, (x.angle, vx0, vy0, w0, vn0, vt0), isinstance(x.body, Rod))
     out["n_segments"] = nseg
     out["nfev"] = nfev
     return out

@@ -16,6 +16,7 @@ from impactlab._display import html_table
 from impactlab.dynamics.core.layout import HISTORY_FIELDS, OUTPUT_FIELDS
 from impactlab.dynamics.core.status import STATUS_MESSAGES
 from impactlab.dynamics.dent import dent_map
+from impactlab.flags import ResultFlag, messages
 from impactlab.references import Reference
 from impactlab.references import dois as doi_list
 
@@ -199,19 +200,38 @@ class ImpactResult:
     angle_out: float
     t_max: float
     n_steps: int
+    flags: ResultFlag = ResultFlag.NONE
     history: History | None = field(default=None, repr=False)
     references: tuple[Reference, ...] = field(default=(), repr=False)
     _law_id: int = field(default=-1, repr=False)
     _law_params: np.ndarray | None = field(default=None, repr=False)
 
+    def __post_init__(self) -> None:
+        # the engine writes the bitmask as a float (like every output column)
+        object.__setattr__(self, "flags", ResultFlag(int(self.flags)))
+
+    @property
+    def warnings(self) -> tuple[str, ...]:
+        """One explanatory sentence per flag (``impactlab.flags.messages``); ``()`` if none."""
+        return messages(self.flags)
+
+    @property
+    def ok(self) -> bool:
+        """True when nothing is flagged (a result exists only for a successful integration):
+        the impact measures can be read as they are."""
+        return self.flags == ResultFlag.NONE
+
     def to_dict(self, *, include_history: bool = False) -> dict[str, Any]:
-        """Scalar fields as a plain dict (history as lists of columns if asked)."""
+        """Scalar fields as a plain dict (``flags`` as an int, ``warnings`` as a list; history
+        as lists of columns if asked)."""
         d: dict[str, Any] = {}
         for name in self.__dataclass_fields__:
             if name.startswith("_") or name in ("history", "references"):
                 continue
             v = getattr(self, name)
             d[name] = list(v) if isinstance(v, tuple) else v
+        d["flags"] = int(self.flags)
+        d["warnings"] = list(self.warnings)
         if include_history and self.history is not None:
             d["history"] = {k: self.history[k].tolist() for k in HISTORY_FIELDS}
         return d
@@ -232,6 +252,7 @@ class ImpactResult:
             rows.append((label, f"{v:.5g}", unit))
         vx, vy = self.velocity_out
         rows.append(("velocity out (vx, vy)", f"({vx:.5g}, {vy:.5g})", "m/s"))
+        rows.extend(("warning", text, "") for text in self.warnings)
         return rows
 
     def __str__(self) -> str:
@@ -316,6 +337,18 @@ class BatchResult:
         return self.status == 0
 
     @property
+    def flags(self) -> np.ndarray:
+        """The ``ResultFlag`` bitmask of each case (int64; 0 for failed cases, whose status
+        says why)."""
+        f = self.out[:, OUTPUT_FIELDS.index("flags")]
+        return np.where(np.isfinite(f), f, 0.0).astype(np.int64)
+
+    @property
+    def flagged(self) -> np.ndarray:
+        """Boolean mask of the successful cases that carry a flag (``impactlab.flags``)."""
+        return self.flags != 0
+
+    @property
     def messages(self) -> list[str]:
         """The status message of each case."""
         return [STATUS_MESSAGES.get(int(s), f"status {int(s)}") for s in self.status]
@@ -332,7 +365,8 @@ class BatchResult:
 
     def __repr__(self) -> str:
         n_ok = int(np.count_nonzero(self.ok))
+        n_flagged = int(np.count_nonzero(self.flagged))
         return (
-            f"BatchResult({len(self)} cases, {n_ok} ok, law={self.law!r}, "
+            f"BatchResult({len(self)} cases, {n_ok} ok, {n_flagged} flagged, law={self.law!r}, "
             f"friction={self.friction!r})"
         )

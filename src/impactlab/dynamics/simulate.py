@@ -14,36 +14,35 @@ from typing import Any
 
 import numpy as np
 
-from impactlab._validation import check_finite, check_nonnegative
+from impactlab._validation import check_array, check_flag
 from impactlab.bodies import Rod, Sphere
 from impactlab.contact import ContactModel
 from impactlab.dynamics.batch import run_arrays
 from impactlab.dynamics.checks import (
-    check_angle,
+    ImpactInputs,
     check_body,
     check_flat,
-    check_rtol,
-    check_velocity,
-    gravity_value,
+    check_impact,
+    warn_fast,
 )
 from impactlab.dynamics.core import layout as L
 from impactlab.dynamics.core import status as S
 from impactlab.dynamics.core.driver import impact
 from impactlab.dynamics.models import body_params, contact_model, kernel_params, references_used
 from impactlab.dynamics.results import BatchResult, History, ImpactResult
-from impactlab.friction import FrictionModel, get_friction
+from impactlab.friction import DEFAULT_MU, get_friction
 from impactlab.materials import AISI_1010, Material
 
 
-def _status_error(status: int, out: np.ndarray, model: ContactModel, law_name: str) -> ValueError:
+def _status_error(status: int, model: ContactModel) -> ValueError:
     if status == S.ST_LAW_LIMIT:
         return ValueError(
             f"the interference exceeded {model.max_interference:.6g} m, the validity limit of "
-            f"the {law_name!r} law: lower the impact velocity or choose another law"
+            f"the {model.name!r} law: lower the impact velocity or choose another law"
         )
     if status == S.ST_NAN:
         return ValueError(
-            f"the {law_name!r} contact law returned a non-finite force or unloading branch "
+            f"the {model.name!r} contact law returned a non-finite force or unloading branch "
             f"(law not available, or evaluated outside its domain)"
         )
     return ValueError(S.STATUS_MESSAGES.get(status, f"engine status {status}"))
@@ -55,53 +54,56 @@ def simulate(
     *,
     law: str | ContactModel = "ghaednia",
     friction: str = "coulomb",
-    mu: float = 0.0,
-    angle: float | None = None,
-    velocity: tuple[float, float],
-    spin: float = 0.0,
-    law_params: Mapping[str, float] | None = None,
-    gravity: bool | float = True,
+    mu: float = DEFAULT_MU,
+    angle: Any = None,
+    velocity: Any,
+    spin: Any = 0.0,
+    law_params: Mapping[str, Any] | None = None,
+    gravity: Any = True,
     constant_angle: bool = False,
     rtol: float | None = None,
     history: bool = True,
 ) -> ImpactResult:
     """Simulate one impact from first touch (delta = 0) to separation (SI units).
 
+    A quantity (angle, velocity, spin, gravity, a law parameter with a unit) is a number in SI
+    (a bare angle is radians), a string with units (``"20 deg"``, ``"1.41 m/s"``) or a pint
+    Quantity of any registry; ``mu`` and ``rtol`` are plain numbers (no strings, no bools).
+
     Parameters
     ----------
-    body : Rod or Sphere
-        The impacting rigid body.
-    flat : Material
-        The flat's material (default AISI 1010, the paper's flat).
-    law : str or ContactModel
-        Contact-law name (``impactlab.law_names()``) or a built ContactModel.
-    friction : str
-        ``"impulse_ratio"`` (paper Eq. 7), ``"coulomb"`` or ``"mindlin"``.
+    body, flat : Rod or Sphere, Material
+        The impacting rigid body; the flat's material (default AISI 1010, the paper's flat).
+    law, friction : str
+        Contact-law name (``impactlab.law_names()``) or a built ContactModel; friction model
+        (``impactlab.friction.friction_names()``).
     mu : float
-        Friction coefficient, >= 0.
-    angle : float
-        Rod axis to the flat [rad], in (0, pi/2]; tip lowest, centre of mass at +x of the tip
-        (ignored for a sphere).
-    velocity : tuple of float
-        (vx, vy) of the centre of mass at first touch [m/s]; the contact point must approach.
-    spin : float
-        Angular velocity [rad/s], counter-clockwise positive.
+        Friction coefficient, >= 0 (default ``impactlab.friction.DEFAULT_MU``).
+    angle : float or str
+        Rod axis to the flat, in (0, pi/2] rad; tip lowest, centre of mass at +x of the tip
+        (ignored for a sphere). A bare number above pi/2 is refused with a degrees hint.
+    velocity, spin : pair, float
+        (vx, vy) of the centre of mass at first touch [m/s] (the contact point must approach);
+        angular velocity [rad/s], counter-clockwise positive.
     law_params : mapping, optional
         Law parameters (see ``impactlab laws``).
-    gravity : bool or float
+    gravity : bool, float or str
         True (9.80665 m/s^2), False, or a value [m/s^2].
-    constant_angle : bool
-        Freeze the lever arms at the initial angle (the paper's assumption).
+    constant_angle, history : bool
+        Freeze the lever arms at the initial angle (the paper's assumption); keep the time
+        history (needed for ``dent()`` and the plots).
     rtol : float, optional
-        Relative tolerance (default ``DEFAULT_RTOL`` = 3e-8).
-    history : bool
-        Keep the time history (needed for ``dent()`` and the plots).
+        Relative tolerance in [1e-13, 1e-3] (default ``DEFAULT_RTOL`` = 3e-8).
 
     Returns
     -------
     ImpactResult
-        Immutable result: e, delta_p, sliding_length, duration, mean_force, histories, dent(),
-        references and dois().
+        e, delta_p, sliding_length, duration, mean_force, histories, dent(), dois() and
+        ``flags``/``warnings``: an impact that gained energy or that gravity dominates (m g T
+        above a tenth of the normal impulse) is flagged, never refused nor plain success.
+
+    ValueError names the parameter for a bad input; ``ImplausibleInputWarning`` (likely a unit
+    mistake) for a speed of the centre of mass or contact point above 100 m/s.
 
     Examples
     --------
@@ -111,53 +113,63 @@ def simulate(
     >>> round(r.e, 2)
     0.42
     """
-    body = check_body(body)
-    flat = check_flat(flat)
-    fric = get_friction(friction)
-    mu_v = check_nonnegative("mu", mu)
-    th = check_angle(angle, body)
-    vx, vy = check_velocity(velocity)
-    w = check_finite("spin", spin)
-    g = gravity_value(gravity)
-    r = check_rtol(rtol)
-    model = contact_model(body, flat, law, law_params)
-    bp = body_params(body, flat)
-    a0 = body.half_length * math.cos(th)
-    vn = vy - w * a0
-    if not vn < 0.0:
-        raise ValueError(
-            f"velocity: the contact point does not approach the flat (its normal velocity "
-            f"vy - spin * (L/2) cos(angle) = {vn!r} m/s must be < 0)"
-        )
+    x = check_impact(
+        body,
+        flat,
+        law=law,
+        friction=friction,
+        mu=mu,
+        angle=angle,
+        velocity=velocity,
+        spin=spin,
+        law_params=law_params,
+        gravity=gravity,
+        constant_angle=constant_angle,
+        rtol=rtol,
+    )
+    return _run_one(x, check_flag("history", history))
+
+
+def _run_one(x: ImpactInputs, history: bool) -> ImpactResult:
+    """Run the compiled impact for the checked inputs ``x``; ValueError on an engine status."""
     out = np.empty(L.N_OUT)
+    vx, vy = x.velocity
     status, hist, nh = impact(
-        model.law_id,
-        kernel_params(model),
-        fric.friction_id,
-        bp,
-        th,
+        x.model.law_id,
+        kernel_params(x.model),
+        x.friction.friction_id,
+        body_params(x.body, x.flat),
+        x.angle,
         vx,
         vy,
-        w,
-        mu_v,
-        g,
-        bool(constant_angle),
-        r,
-        bool(history),
+        x.spin,
+        x.mu,
+        x.gravity,
+        x.constant_angle,
+        x.rtol,
+        history,
         False,
         out,
     )
     if status != S.ST_OK:
-        raise _status_error(int(status), out, model, model.name)
-    return _impact_result(
-        out.tolist(),
-        History(hist[:nh]) if history else None,
-        model,
-        fric,
-        mu_v,
-        th if isinstance(body, Rod) else math.nan,
-        (vx, vy),
-        w,
+        raise _status_error(int(status), x.model)
+    o = out.tolist()
+    scalars: dict[str, Any] = {name: o[L.O[name]] for name in _SCALAR_OUTPUTS}
+    return ImpactResult(
+        **scalars,
+        velocity_out=(o[L.O_VX], o[L.O_VY]),
+        regime=S.REGIME_NAMES[int(o[L.O_REG])],
+        n_steps=int(o[L.O_NST]),
+        law=x.model.name,
+        friction=x.friction.name,
+        mu=x.mu,
+        angle=x.angle if isinstance(x.body, Rod) else math.nan,
+        velocity_in=x.velocity,
+        spin_in=x.spin,
+        history=History(hist[:nh]) if history else None,
+        references=references_used(x.model, x.friction, x.mu > 0.0),
+        _law_id=x.model.law_id,
+        _law_params=x.model.params,
     )
 
 
@@ -168,65 +180,61 @@ _SCALAR_OUTPUTS = tuple(
     if n in ImpactResult.__dataclass_fields__ and n not in ("regime", "n_steps")
 )
 
-
-def _impact_result(
-    o: list[float],
-    history: History | None,
-    model: ContactModel,
-    fric: FrictionModel,
-    mu: float,
-    angle: float,
-    velocity_in: tuple[float, float],
-    spin_in: float,
-) -> ImpactResult:
-    """The ImpactResult from the engine's output row ``o`` and the inputs."""
-    return ImpactResult(
-        **{name: o[L.O[name]] for name in _SCALAR_OUTPUTS},
-        velocity_out=(o[L.O_VX], o[L.O_VY]),
-        regime=S.REGIME_NAMES[int(o[L.O_REG])],
-        n_steps=int(o[L.O_NST]),
-        law=model.name,
-        friction=fric.name,
-        mu=mu,
-        angle=angle,
-        velocity_in=velocity_in,
-        spin_in=spin_in,
-        history=history,
-        references=references_used(model, fric, mu > 0.0),
-        _law_id=model.law_id,
-        _law_params=model.params,
-    )
+#: simulate_batch's array inputs and their units ("1": a plain number).
+_BATCH_UNITS = {"mu": "1", "angle": "rad", "vx": "m/s", "vy": "m/s", "spin": "rad/s"}
 
 
-def _as_1d(name: str, value: Any) -> np.ndarray:
-    a = np.asarray(value, dtype=np.float64)
+def _batch_column(name: str, value: Any) -> np.ndarray:
+    """One input of simulate_batch as a 1-D float array (NaN allowed: flagged per case)."""
+    if value is None:
+        raise ValueError(f"{name} is required: a number or a 1-D array [{_BATCH_UNITS[name]}]")
+    unit = _BATCH_UNITS[name]
+    a = np.atleast_1d(check_array(name, value, "" if unit == "1" else unit))
     if a.ndim > 1:
         raise ValueError(f"{name} must be a scalar or a 1-D array, got shape {a.shape}")
     return a
+
+
+def _batch_inputs(inputs: dict[str, Any]) -> dict[str, np.ndarray]:
+    """The batch's inputs broadcast against each other (C-contiguous float64 arrays)."""
+    arrays = {n: _batch_column(n, v) for n, v in inputs.items()}
+    try:
+        b = np.broadcast_arrays(*arrays.values())
+    except ValueError:
+        shapes = ", ".join(f"{n}: {a.shape}" for n, a in arrays.items())
+        raise ValueError(f"mu, angle, vx, vy and spin do not broadcast ({shapes})") from None
+    cols = {n: np.ascontiguousarray(x, dtype=np.float64) for n, x in zip(arrays, b, strict=True)}
+    with np.errstate(invalid="ignore"):
+        fastest = np.nanmax(np.hypot(cols["vx"], cols["vy"]), initial=0.0)
+    warn_fast("the largest impact speed of the batch", float(fastest))
+    return cols
 
 
 def simulate_batch(
     body: Rod | Sphere,
     flat: Material = AISI_1010,
     *,
+    vy: Any,
+    vx: Any = 0.0,
+    angle: Any = None,
+    mu: Any = DEFAULT_MU,
+    spin: Any = 0.0,
     law: str | ContactModel = "ghaednia",
     friction: str = "coulomb",
-    mu: Any = 0.0,
-    angle: Any = None,
-    vx: Any = 0.0,
-    vy: Any,
-    spin: Any = 0.0,
-    law_params: Mapping[str, float] | None = None,
-    gravity: bool | float = True,
+    law_params: Mapping[str, Any] | None = None,
+    gravity: Any = True,
     constant_angle: bool = False,
     rtol: float | None = None,
 ) -> BatchResult:
     """Many impacts of one body, law and friction model, in parallel on all cores.
 
     ``mu``, ``angle`` [rad], ``vx``, ``vy`` [m/s] and ``spin`` [rad/s] are scalars or 1-D arrays,
-    broadcast against each other. Invalid cases (NaN input, an angle outside (0, pi/2], a
-    receding contact point, the law's validity exceeded, ...) are flagged in
-    ``BatchResult.status`` and never stop the batch.
+    broadcast against each other; the dimensional ones may also be pint Quantities (any
+    registry) or strings with units, as in ``simulate``. ``vy`` is required. Invalid cases (NaN
+    input, an angle outside (0, pi/2], a receding contact point, the law's validity exceeded,
+    ...) are flagged in ``BatchResult.status`` and never stop the batch; a computed case that
+    gained energy or that gravity dominates is flagged in ``BatchResult.flags``. A speed above
+    100 m/s draws an ``ImplausibleInputWarning``.
     """
     body = check_body(body)
     flat = check_flat(flat)
@@ -236,39 +244,25 @@ def simulate_batch(
         if isinstance(body, Rod):
             raise ValueError("angle is required for a Rod (radians, in (0, pi/2])")
         angle = 0.5 * math.pi
-    arrays = [
-        _as_1d(n, v)
-        for n, v in (("mu", mu), ("angle", angle), ("vx", vx), ("vy", vy), ("spin", spin))
-    ]
-    try:
-        b = np.broadcast_arrays(*[np.atleast_1d(a) for a in arrays])
-    except ValueError:
-        shapes = ", ".join(
-            f"{n}: {a.shape}"
-            for n, a in zip(("mu", "angle", "vx", "vy", "spin"), arrays, strict=True)
-        )
-        raise ValueError(f"mu, angle, vx, vy and spin do not broadcast ({shapes})") from None
-    mu_a, th_a, vx_a, vy_a, w_a = (np.ascontiguousarray(x, dtype=np.float64) for x in b)
-    init = np.ascontiguousarray(np.stack([th_a, vx_a, vy_a, w_a], axis=1))
+    x = _batch_inputs({"mu": mu, "angle": angle, "vx": vx, "vy": vy, "spin": spin})
     out, status = run_arrays(
         model.law_id,
         fric.friction_id,
         model.params,
         body_params(body, flat),
-        init,
-        mu_a,
+        np.ascontiguousarray(np.stack([x["angle"], x["vx"], x["vy"], x["spin"]], axis=1)),
+        x["mu"],
         gravity=gravity,
-        constant_angle=constant_angle,
+        constant_angle=check_flag("constant_angle", constant_angle),
         rtol=rtol,
     )
-    inputs = {"mu": mu_a, "angle": th_a, "vx": vx_a, "vy": vy_a, "spin": w_a}
     return BatchResult(
         out=out,
         status=status,
-        inputs=inputs,
+        inputs=x,
         law=model.name,
         friction=fric.name,
-        references=references_used(model, fric, bool(np.any(mu_a > 0.0))),
+        references=references_used(model, fric, bool(np.any(x["mu"] > 0.0))),
     )
 
 

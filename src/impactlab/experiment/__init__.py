@@ -13,6 +13,7 @@ Public API::
     measure_impact(tracks, rod, geometry=..., up=...) -> ImpactKinematics
     read_scan(path, pixel_size=..., height_unit=...) -> HeightMap
     measure_dent(height_map) -> DentMetrics
+    check_dent(dent, tip_radius=..., rod_length=...) -> warnings (ScanError if impossible)
     plot_dent, plot_kinematics (impactlab.experiment.plots)
 
 Synthetic drops and dents with a known truth (for tests and examples): ``impactlab.testing``.
@@ -45,6 +46,7 @@ from impactlab.experiment.profilometry import (
     DentMetrics,
     HeightMap,
     Levelled,
+    check_dent,
     level_plane,
     measure_dent,
     read_scan,
@@ -83,6 +85,7 @@ __all__ = [
     "SegmentFit",
     "TooFewFramesError",
     "analyze",
+    "check_dent",
     "check_rigidity",
     "default_rod",
     "fit_poses",

@@ -1,10 +1,11 @@
 """One call from the raw files to e, mu, delta_p, L_s, T and F: :func:`analyze`.
 
 Stages (a stage that fails on its data is recorded and the others go on, so partial results are
-never lost; an invalid argument or a broken installation raises at once):
+never lost; an invalid argument raises a TypeError or ValueError naming it at once):
 
 1. ``markers``: read the marker file, measure the impact (:func:`measure_impact`);
-2. ``scan``: read the scan, measure the dent (:func:`measure_dent`);
+2. ``scan``: read the scan, measure the dent (:func:`measure_dent`) and check that the rod can
+   make it (:func:`~impactlab.experiment.profilometry.plausibility.check_dent`);
 3. ``inversion``: T and F from both (``impactlab.analytic.invert``: paper Eq. 12 with the
    measured e, mu, v_i, angle, delta_p, L_s; F from Eq. 29 with the measured centre-of-mass
    velocity change);
@@ -15,24 +16,23 @@ never lost; an invalid argument or a broken installation raises at once):
 
 from __future__ import annotations
 
-import json
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 from impactlab import analytic
-from impactlab._display import html_table
-from impactlab._json import jsonable
 from impactlab._mpl import pyplot
 from impactlab.bodies import PAPER_ROD, Rod
 from impactlab.dynamics import simulate
-from impactlab.experiment.errors import ExperimentError
-from impactlab.experiment.kinematics import ImpactKinematics, measure_impact
+from impactlab.experiment.checks import check_instance, check_options, check_path, output_folder
+from impactlab.experiment.kinematics import ImpactKinematics, measure_impact, parse_up
 from impactlab.experiment.markers import read_markers
 from impactlab.experiment.plots import plot_dent, plot_kinematics
 from impactlab.experiment.profilometry import DentMetrics, measure_dent, read_scan
+from impactlab.experiment.profilometry.heightmap import pixel_pair
+from impactlab.experiment.profilometry.plausibility import check_dent
+from impactlab.experiment.result import ExperimentResult
 from impactlab.experiment.rigid import MarkerGeometry
-from impactlab.experiment.uncertainty import Estimate
 from impactlab.materials import Material, get_material
 
 __all__ = ["ExperimentResult", "analyze", "default_rod", "rod_properties"]
@@ -73,101 +73,6 @@ def rod_properties(rod: Any) -> Rod:
         raise ValueError(f"rod must have mass and tip_radius: {exc}") from None
 
 
-@dataclass
-class ExperimentResult:
-    """Everything :func:`analyze` measured (SI units).
-
-    ``kinematics`` (:class:`ImpactKinematics` or None), ``dent`` (:class:`DentMetrics` or None),
-    ``inversion`` (``impactlab.analytic.InversionResult`` or None), ``model`` (engine comparison
-    or None), ``errors`` (stage -> message, for each stage that failed on its data),
-    ``warnings``, ``figures`` (name -> path), ``files`` (what was saved), ``rod`` (the rod's
-    properties used).
-    """
-
-    markers_path: str | None
-    scan_path: str | None
-    kinematics: ImpactKinematics | None = None
-    dent: DentMetrics | None = None
-    inversion: Any = None
-    model: dict[str, Any] | None = None
-    errors: dict[str, str] = field(default_factory=dict)
-    warnings: list[str] = field(default_factory=list)
-    figures: dict[str, str] = field(default_factory=dict)
-    files: dict[str, str] = field(default_factory=dict)
-    rod: dict[str, float] = field(default_factory=dict)
-
-    @property
-    def ok(self) -> bool:
-        """True when every stage succeeded."""
-        return not self.errors
-
-    def summary(self) -> dict[str, Estimate]:
-        """The headline results as estimates (SI), keyed by the paper's symbols (the table the
-        command line prints): e, mu, angle, v_i, v_c_in_x/y, v_c_out_x/y, spin_out, dv_cy,
-        delta_p, L_s (the sliding length), pileup, T, F (those available)."""
-        out: dict[str, Estimate] = {}
-        k = self.kinematics
-        if k is not None:
-            out["e"] = k.e
-            out["mu"] = k.mu
-            out["angle"] = k.angle_in
-            out["v_i"] = k.v_i
-            out["v_c_in_x"], out["v_c_in_y"] = k.v_c_in
-            out["v_c_out_x"], out["v_c_out_y"] = k.v_c_out
-            out["spin_out"] = k.spin_out
-            out["dv_cy"] = k.dv_cy
-        d = self.dent
-        if d is not None:
-            out["delta_p"] = d.delta_p
-            out["L_s"] = d.sliding_length
-            out["pileup"] = Estimate(d.pileup, 0.0, "m")
-        inv = self.inversion
-        if inv is not None:
-            out["T"] = Estimate(inv.T, inv.sigma_T_mc, "s")
-            out["F"] = Estimate(inv.F, inv.sigma_F_mc, "N")
-        return out
-
-    def raise_for_errors(self) -> None:
-        """Raise :class:`ExperimentError` with all stage errors (no-op when there are none)."""
-        if self.errors:
-            raise ExperimentError("; ".join(f"{k}: {v}" for k, v in self.errors.items()))
-
-    def _repr_html_(self) -> str:
-        rows = [(k, f"{v.value:.6g} +/- {v.sigma:.2g}", v.unit) for k, v in self.summary().items()]
-        rows += [(f"error ({k})", v, "") for k, v in self.errors.items()]
-        return html_table("ExperimentResult", rows)
-
-    def to_dict(self) -> dict[str, Any]:
-        """JSON-ready (SI units; ``summary`` holds value/sigma/unit per quantity)."""
-        d: dict[str, Any] = {
-            "markers": self.markers_path,
-            "scan": self.scan_path,
-            "summary": {k: v.to_dict() for k, v in self.summary().items()},
-            "errors": dict(self.errors),
-            "warnings": list(self.warnings),
-            "rod": dict(self.rod),
-            "figures": dict(self.figures),
-        }
-        if self.kinematics is not None:
-            d["kinematics"] = self.kinematics.to_dict()
-        if self.dent is not None:
-            d["dent"] = self.dent.to_dict()
-        if self.inversion is not None:
-            d["inversion"] = self.inversion.to_dict()
-        if self.model is not None:
-            d["model"] = self.model
-        return jsonable(d)
-
-    def save(self, out_dir: str | Path) -> Path:
-        """Write ``results.json`` into ``out_dir`` (created); returns its path."""
-        out = Path(out_dir)
-        out.mkdir(parents=True, exist_ok=True)
-        p = out / "results.json"
-        self.files["results"] = str(p)
-        p.write_text(json.dumps(self.to_dict(), indent=2), encoding="utf-8")
-        return p
-
-
 def _message(exc: BaseException) -> str:
     return str(exc)
 
@@ -179,7 +84,7 @@ def _flat_material(flat: Any) -> Material:
         raise ValueError(f"flat: {exc}") from None
 
 
-def _markers_stage(res: ExperimentResult, path: str | Path, rod: Rod, opts: dict[str, Any]) -> None:
+def _markers_stage(res: ExperimentResult, path: Path, rod: Rod, opts: dict[str, Any]) -> None:
     try:
         tracks = read_markers(path, units=opts.pop("marker_units"))
         res.kinematics = measure_impact(tracks, rod, **opts)
@@ -189,21 +94,21 @@ def _markers_stage(res: ExperimentResult, path: str | Path, rod: Rod, opts: dict
     res.warnings += [f"markers: {w}" for w in res.kinematics.warnings]
 
 
-def _scan_stage(
-    res: ExperimentResult,
-    path: str | Path,
-    pixel_size: Any,
-    height_unit: str | None,
-    opts: dict[str, Any],
-) -> None:
+def _scan_stage(res: ExperimentResult, path: Path, rod: Rod, opts: dict[str, Any]) -> None:
+    """Read the scan (the other way up with ``flip_heights``), measure the dent and check that the
+    rod can make it (:func:`check_dent`: an impossible dent is this stage's error)."""
     try:
-        hm = read_scan(path, pixel_size=pixel_size, height_unit=height_unit)
-        res.dent = measure_dent(hm, **opts)
+        hm = read_scan(path, pixel_size=opts.pop("pixel_size"), height_unit=opts.pop("height_unit"))
+        if opts.pop("flip_heights"):
+            hm = hm.flipped()
+        dent = measure_dent(hm, **opts)
+        plausible = check_dent(dent, tip_radius=rod.tip_radius, rod_length=rod.length, scan=hm)
     except _DATA_ERRORS as exc:
         res.errors["scan"] = _message(exc)
         return
-    res.warnings += [f"scan: {w}" for w in res.dent.warnings]
-    if res.dent.direction_ambiguous:
+    res.dent = dent
+    res.warnings += [f"scan: {w}" for w in (*dent.warnings, *plausible)]
+    if dent.direction_ambiguous:
         res.warnings.append(
             "scan: the sliding direction is ambiguous (both ends of the dent equally sharp)"
         )
@@ -235,10 +140,18 @@ def _inversion_stage(
         res.errors["inversion"] = _message(exc)
 
 
+def _model_stage(res: ExperimentResult, rod: Rod, flat: Material, law: str) -> None:
+    if res.kinematics is None:
+        return
+    try:
+        res.model = _engine_comparison(rod, flat, res.kinematics, law)
+    except ValueError as exc:
+        res.errors["model"] = _message(exc)
+
+
 def _figures_stage(res: ExperimentResult, out: Path) -> None:
     plt = pyplot()
     try:
-        out.mkdir(parents=True, exist_ok=True)
         if res.kinematics is not None:
             p = out / "kinematics.png"
             plt.close(plot_kinematics(res.kinematics, p))
@@ -249,6 +162,69 @@ def _figures_stage(res: ExperimentResult, out: Path) -> None:
             res.figures["dent"] = str(p)
     except OSError as exc:
         res.errors["figures"] = _message(exc)
+
+
+def _check_scalars(n_samples: Any, law: Any, **switches: Any) -> None:
+    if isinstance(n_samples, bool) or not isinstance(n_samples, int) or n_samples < 100:
+        raise ValueError(f"n_samples must be an integer >= 100, got {n_samples!r}")
+    if not isinstance(law, str):
+        raise TypeError(f"law must be a contact law's name such as 'ghaednia', got {law!r}")
+    for name, value in switches.items():
+        if not isinstance(value, bool):
+            raise TypeError(f"{name} must be True or False, got {type(value).__name__} {value!r}")
+
+
+@dataclass(frozen=True)
+class _Run:
+    """The checked arguments of :func:`analyze`."""
+
+    markers: Path | None
+    scan: Path | None
+    rod: Rod
+    flat: Material | None
+    out: Path | None
+    kinematics: dict[str, Any]
+    dent: dict[str, Any]
+    names: tuple[str | None, str | None]
+
+    def result(self) -> ExperimentResult:
+        """An empty result for these files and this rod."""
+        rod = {k: float(getattr(self.rod, k)) for k in ("mass", "length", "tip_radius", "inertia")}
+        return ExperimentResult(*self.names, rod=rod)
+
+
+def _checked(
+    markers_path: Any,
+    scan_path: Any,
+    rod: Any,
+    flat: Any,
+    out_dir: Any,
+    kinematics: dict[str, Any],
+    dent: dict[str, Any],
+) -> _Run:
+    """Every argument checked before any work: one TypeError/ValueError naming the parameter."""
+    geometry = kinematics["geometry"]
+    if geometry is not None:
+        check_instance(geometry, MarkerGeometry, "geometry", "e.g. MarkerGeometry.from_mapping()")
+    if dent["pixel_size"] is not None:
+        pixel_pair(dent["pixel_size"])  # ValueError naming pixel_size
+    names = {"marker_units": kinematics["marker_units"], "height_unit": dent["height_unit"]}
+    for name, opt in names.items():
+        if opt is not None and not isinstance(opt, str):
+            raise TypeError(f"{name} must be a unit name such as 'mm' or None, got {opt!r}")
+    return _Run(
+        None if markers_path is None else check_path(markers_path, "markers_path"),
+        None if scan_path is None else check_path(scan_path, "scan_path"),
+        rod_properties(default_rod() if rod is None else rod),
+        None if flat is None else _flat_material(flat),
+        None if out_dir is None else output_folder(out_dir, "out_dir"),
+        kinematics,
+        dent,
+        (
+            None if markers_path is None else str(markers_path),
+            None if scan_path is None else str(scan_path),
+        ),
+    )
 
 
 def analyze(
@@ -262,6 +238,7 @@ def analyze(
     marker_units: str | None = None,
     pixel_size: Any = None,
     height_unit: str | None = None,
+    flip_heights: bool = False,
     out_dir: str | Path | None = None,
     figures: bool = True,
     gravity: bool = False,
@@ -277,64 +254,53 @@ def analyze(
     ----------
     markers_path : C3D or CSV marker file (None skips the stage).
     scan_path : profilometer scan (None skips the stage).
-    rod : an ``impactlab.bodies.Rod`` (or rod-like, see :func:`rod_properties`); default the
-        paper's rod.
-    flat : optional flat material (``impactlab.materials.Material`` or preset name) to run the
-        impact engine with the measured initial state for comparison.
+    rod : an ``impactlab.bodies.Rod`` (or rod-like: :func:`rod_properties`); default the paper's.
+    flat : a flat material (``Material`` or preset name): also run the impact engine with the
+        measured initial state, for comparison.
     geometry : the markers on the rod (:class:`MarkerGeometry`); None estimates it.
     up : the lab's upward axis ("+z" default). marker_units : override/supply the marker units.
     pixel_size, height_unit : for plain .npy/.csv height maps.
-    out_dir : save results.json and the figures (dent.png, kinematics.png) there.
+    flip_heights : the scan stores depths as positive heights: read it the other way up (a
+        sign-flipped scan is refused otherwise, see :func:`measure_dent`).
+    out_dir : save results.json and the figures (dent.png, kinematics.png) there (a folder,
+        created; an existing file there is refused).
     gravity : passed to ``invert`` (gravity during the contact in Eq. 12; the measured velocity
         change already excludes the gravity impulse, see docs/experiment.md).
-    n_samples : Monte Carlo samples of the inversion. strict : raise :class:`ExperimentError`
-        after saving if a stage failed (default: record it in ``result.errors``).
+    n_samples : Monte Carlo samples of the inversion (>= 100). strict : raise
+        :class:`ExperimentError` after saving if a stage failed (default: ``result.errors``).
     kinematics_options, dent_options : extra keywords for :func:`measure_impact` and
         :func:`measure_dent`. law : contact law of the engine comparison.
 
-    A stage that fails on its data (a bad file, a failed fit, an inversion outside its range) is
-    recorded in ``result.errors``; an invalid ``rod`` or ``flat`` raises ValueError at once.
+    A stage that fails on its data (a bad file, a failed fit, an inversion outside its range, a
+    dent the rod cannot make: :func:`check_dent`) is recorded in ``result.errors``; an invalid
+    argument raises TypeError or ValueError naming it at once.
     """
-    props = rod_properties(default_rod() if rod is None else rod)
-    mat = _flat_material(flat) if flat is not None else None
-    res = ExperimentResult(
-        str(markers_path) if markers_path is not None else None,
-        str(scan_path) if scan_path is not None else None,
+    switches = {"flip_heights": flip_heights, "figures": figures, "gravity": gravity}
+    _check_scalars(n_samples, law, strict=strict, **switches)
+    run = _checked(
+        markers_path,
+        scan_path,
+        rod,
+        flat,
+        out_dir,
+        {"marker_units": marker_units, "geometry": geometry, "up": parse_up(up)}
+        | check_options(kinematics_options, measure_impact, "kinematics_options"),
+        {"pixel_size": pixel_size, "height_unit": height_unit, "flip_heights": flip_heights}
+        | check_options(dent_options, measure_dent, "dent_options"),
     )
-    assert props.inertia is not None  # a Rod sets its default inertia
-    res.rod = {
-        "mass": props.mass,
-        "length": props.length,
-        "tip_radius": props.tip_radius,
-        "inertia": float(props.inertia),
-    }
-    if markers_path is not None:
-        _markers_stage(
-            res,
-            markers_path,
-            props,
-            {
-                "marker_units": marker_units,
-                "geometry": geometry,
-                "up": up,
-                **(kinematics_options or {}),
-            },
-        )
-    if scan_path is not None:
-        _scan_stage(res, scan_path, pixel_size, height_unit, dict(dent_options or {}))
-    k, d = res.kinematics, res.dent
-    if k is not None and d is not None:
-        _inversion_stage(res, k, d, props, gravity, n_samples)
-    if mat is not None and k is not None:
-        try:
-            res.model = _engine_comparison(props, mat, k, law)
-        except ValueError as exc:
-            res.errors["model"] = _message(exc)
-    if out_dir is not None:
-        out = Path(out_dir)
+    res = run.result()
+    if run.markers is not None:
+        _markers_stage(res, run.markers, run.rod, run.kinematics)
+    if run.scan is not None:
+        _scan_stage(res, run.scan, run.rod, run.dent)
+    if res.kinematics is not None and res.dent is not None:
+        _inversion_stage(res, res.kinematics, res.dent, run.rod, gravity, n_samples)
+    if run.flat is not None:
+        _model_stage(res, run.rod, run.flat, law)
+    if run.out is not None:
         if figures:
-            _figures_stage(res, out)
-        res.save(out)
+            _figures_stage(res, run.out)
+        res.save(run.out)
     if strict:
         res.raise_for_errors()
     return res

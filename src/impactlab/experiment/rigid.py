@@ -15,6 +15,7 @@ from typing import Any
 
 import numpy as np
 
+from impactlab.experiment.checks import check_instance
 from impactlab.experiment.errors import MarkerError, RigidityError
 from impactlab.experiment.markers import MarkerTracks, length_factor
 
@@ -118,6 +119,7 @@ class Poses:
 
 def fit_poses(tracks: MarkerTracks, reference: np.ndarray) -> Poses:
     """Fit the pose of ``reference`` (m, 3) [m] to every frame of ``tracks`` (Kabsch)."""
+    check_instance(tracks, MarkerTracks, "tracks", "read them with read_markers()")
     ref = np.asarray(reference, dtype=np.float64)
     if ref.shape != (tracks.n_markers, 3):
         raise ValueError(f"reference must have shape ({tracks.n_markers}, 3), got {ref.shape}")
@@ -203,6 +205,7 @@ def check_rigidity(
     gives a drift of roughly 6 * 1.25 s * sqrt(2 / window), about 0.5 mm for s = 0.2 mm.
     Raises :class:`RigidityError` naming the pair and the drift unless ``raise_error`` is False.
     """
+    check_instance(tracks, MarkerTracks, "tracks", "read them with read_markers()")
     if tolerance <= 0:
         raise ValueError(f"tolerance must be > 0 m, got {tolerance!r}")
     window = max(3, int(window))
@@ -269,6 +272,7 @@ class MarkerGeometry:
     def from_mapping(cls, data: Mapping[str, Any], *, units: str | None = None) -> MarkerGeometry:
         """From ``{"units": "mm", "M1": [x, y, z], ...}`` (the ``[markers]`` table of a TOML
         file); ``units`` overrides the table's (default m)."""
+        check_instance(data, Mapping, "data", '{"units": "mm", "M1": [x, y, z], ...}')
         d = dict(data)
         unit = units or d.pop("units", None) or "m"
         d.pop("units", None)

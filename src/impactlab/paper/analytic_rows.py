@@ -61,18 +61,18 @@ def experimental_rows(rod: Any = None) -> pd.DataFrame:
                 "alpha": r.alpha,
                 "K_y [1/kg]": r.K_y,
                 "T published [ms]": scaled(T_pub, 1e3),
-                "T [ms]": r.T * 1e3,
-                "T rel. diff": rel_diff(r.T, T_pub),
-                "T with gravity [ms]": rg.T * 1e3,
-                "T (L_s as travel) [ms]": rt.T * 1e3,
+                "T [ms]": r.duration * 1e3,
+                "T rel. diff": rel_diff(r.duration, T_pub),
+                "T with gravity [ms]": rg.duration * 1e3,
+                "T (L_s as travel) [ms]": rt.duration * 1e3,
                 "F published [N]": F_pub,
-                "F [N]": r.F,
-                "F rel. diff": rel_diff(r.F, F_pub),
-                "F with gravity [N]": rg.F,
+                "F [N]": r.mean_force,
+                "F rel. diff": rel_diff(r.mean_force, F_pub),
+                "F with gravity [N]": rg.mean_force,
                 "dv_Cy implied by published F T [m/s]": (
                     F_pub * T_pub / D.PAPER_ROD.mass if pub and F_pub and T_pub else None
                 ),
-                "dv_Cy rigid body [m/s]": r.F * r.T / D.PAPER_ROD.mass,
+                "dv_Cy rigid body [m/s]": r.mean_force * r.duration / D.PAPER_ROD.mass,
             }
         )
     return pd.DataFrame(rows)
@@ -86,7 +86,7 @@ def inertia_sensitivity(ratios: Iterable[float] = INERTIA_RATIOS) -> pd.DataFram
         rod = rod_with_inertia_ratio(q)
         row: dict[str, Any] = {"I_C/(m L^2)": q}
         for ang, x in D.EXPERIMENTS.items():
-            row[f"T {ang} deg [ms]"] = invert_case(x, rod=rod).T * 1e3
+            row[f"T {ang} deg [ms]"] = invert_case(x, rod=rod).duration * 1e3
         rows.append(row)
     match: dict[str, Any] = {"I_C/(m L^2)": "matching published T"}
     for ang, x in D.EXPERIMENTS.items():
@@ -96,7 +96,7 @@ def inertia_sensitivity(ratios: Iterable[float] = INERTIA_RATIOS) -> pd.DataFram
             continue
 
         def f(q: float, x: D.Experiment = x, T: float = pub.T) -> float:
-            return invert_case(x, rod=rod_with_inertia_ratio(q)).T - T
+            return invert_case(x, rod=rod_with_inertia_ratio(q)).duration - T
 
         try:
             match[f"T {ang} deg [ms]"] = brentq(f, 0.02, 0.2, xtol=1e-7)

@@ -19,7 +19,7 @@ from impactlab.paper.quantities import (
     rel_diff,
     sim_value,
 )
-from impactlab.paper.reasons import Reasons
+from impactlab.paper.reasons import Reasons, RowKey
 from impactlab.paper.simulations import FRICTIONS
 
 _TABLES = {20: "Table 2", 45: "Table 3", 70: "Table 4 (ours)"}
@@ -46,7 +46,7 @@ def comparison_table(
 
 def _experiment_rows(ang: int, experimental: pd.DataFrame, ctx: Reasons) -> list[dict[str, Any]]:
     """The experimental row of one angle: measured inputs, T and F by the inversion."""
-    table = _TABLES[ang]
+    key = RowKey(_TABLES[ang], ang, "experiment", "-")
     x = D.EXPERIMENTS[ang]
     exp = experimental.set_index("angle [deg]").loc[ang]
     pub = D.published_row(ang, "experiment")
@@ -62,73 +62,30 @@ def _experiment_rows(ang: int, experimental: pd.DataFrame, ctx: Reasons) -> list
         p = getattr(pub, q) if pub is not None else None
         measured = q in ("delta_p", "L_s", "e")
         tol = TOL_EXPERIMENT_T if q == "T" else (0.15 if q == "F" else 0.0)
-        rows.append(
-            _row(
-                table,
-                ang,
-                "experiment",
-                "-",
-                label,
-                p,
-                ours[q],
-                scale,
-                tol,
-                "measured input" if measured else None,
-                ctx,
-                q,
-            )
-        )
+        note = "measured input" if measured else None
+        rows.append(_row(key, q, label, scale, (p, ours[q]), tol, note, ctx))
     return rows
 
 
 def _simulated_rows(ang: int, law: str, fr: str, res: Any, ctx: Reasons) -> list[dict[str, Any]]:
     """The rows of one simulation against every published row of its angle and law (the
-    Sec. 5.2 text only where it differs from the table)."""
+    Sec. 5.2 text only where it differs from the table; no published value: impactlab's own)."""
     table = _TABLES[ang]
     pubs = [r for r in (*D.TABLE_ROWS, *D.TEXT_ROWS) if r.angle_deg == ang and r.model == law]
+    sources: list[tuple[str, D.PublishedRow | None]] = [(table, None)] if not pubs else []
+    for published in pubs:
+        src = table if published.table != _TEXT else _TEXT
+        if src != _TEXT or _text_differs(published):
+            sources.append((src, published))
     rows = []
-    if not pubs:
+    for src, pr in sources:
         for q, label, scale in QUANTS:
-            rows.append(
-                _row(
-                    table,
-                    ang,
-                    law,
-                    fr,
-                    label,
-                    None,
-                    None if res is None else sim_value(res, q),
-                    scale,
-                    TOL_SIMULATED,
-                    None,
-                    ctx,
-                    q,
-                )
-            )
-        return rows
-    for pr in pubs:
-        src = table if pr.table != _TEXT else _TEXT
-        if src == _TEXT and not _text_differs(pr):
-            continue
-        for q, label, scale in QUANTS:
-            if src == _TEXT and getattr(pr, q) == getattr(D.published_row(ang, law), q):
+            pub = None if pr is None else getattr(pr, q)
+            if src == _TEXT and pub == getattr(D.published_row(ang, law), q):
                 continue
-            rows.append(
-                _row(
-                    src,
-                    ang,
-                    law,
-                    fr,
-                    label,
-                    getattr(pr, q),
-                    None if res is None else sim_value(res, q),
-                    scale,
-                    TOL_SIMULATED,
-                    None,
-                    ctx,
-                    q,
-                )
-            )
+            ours = None if res is None else sim_value(res, q)
+            key = RowKey(src, ang, law, fr)
+            rows.append(_row(key, q, label, scale, (pub, ours), TOL_SIMULATED, None, ctx))
     return rows
 
 
@@ -138,19 +95,18 @@ def _text_differs(pr: D.PublishedRow) -> bool:
 
 
 def _row(
-    source: str,
-    ang: int,
-    model: str,
-    fr: str,
+    key: RowKey,
+    q: str,
     label: str,
-    pub: float | None,
-    ours: float | None,
     scale: float,
+    values: tuple[float | None, float | None],
     tol: float,
     fixed_note: str | None,
     ctx: Reasons,
-    q: str,
 ) -> dict[str, Any]:
+    """One row: quantity ``q`` (``label``, display ``scale``) of the row ``key``, its
+    (published, impactlab) ``values`` [SI], the tolerance and the reason."""
+    pub, ours = values
     p = None if pub is None else round(pub * scale, 9)  # printed values: no float noise
     o = None if ours is None else ours * scale
     rd = rel_diff(o, p)
@@ -162,14 +118,14 @@ def _row(
         reason = "no published value (impactlab's own number)" if p is None else "not simulated"
     else:
         ok = abs(rd) <= tol
-        reason = "" if ok else ctx.reason(source, ang, model, fr, q, p, o)
-        if ok and model == "experiment" and q == "F":  # context even when within tolerance
-            reason = ctx.reason(source, ang, model, fr, q, p, o)
+        # the experiment's F: context even when within tolerance
+        explain = not ok or (key.model == "experiment" and q == "F")
+        reason = ctx.reason(key, q) if explain else ""
     return {
-        "source": source,
-        "angle [deg]": ang,
-        "model": model,
-        "friction": fr,
+        "source": key.source,
+        "angle [deg]": key.angle,
+        "model": key.model,
+        "friction": key.friction,
         "quantity": label,
         "published": p,
         "impactlab": o,

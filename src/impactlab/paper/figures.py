@@ -66,7 +66,7 @@ def figure_inertia(path: Path, table: pd.DataFrame) -> Path:
     q = np.linspace(0.04, 0.16, 61)
     for ang, x in D.EXPERIMENTS.items():
         pub = D.published_row(ang, "experiment")
-        T = [invert_case(x, rod=rod_with_inertia_ratio(v)).T for v in q]
+        T = [invert_case(x, rod=rod_with_inertia_ratio(v)).duration for v in q]
         ref = pub.T if pub and pub.T else T[np.argmin(abs(q - 1 / 12))]
         ax.plot(
             q,

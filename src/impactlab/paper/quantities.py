@@ -5,6 +5,7 @@ simulated results in the paper's sign convention (dent depth negative, as its ta
 from __future__ import annotations
 
 from collections.abc import Mapping
+from dataclasses import dataclass
 from typing import Any
 
 #: Tolerances of the comparison (relative): simulated e and delta_p, the experimental T.
@@ -22,6 +23,36 @@ QUANTS: tuple[tuple[str, str, float], ...] = (
 
 #: Simulations keyed by (angle [deg], law, friction), values ``ImpactResult``.
 Simulations = Mapping[tuple[int, str, str], Any]
+
+
+@dataclass(frozen=True)
+class DurationCheck:
+    """The acceptance test of one experiment: the inverted T [ms] against the published one."""
+
+    angle_deg: int
+    T_ms: float
+    published_ms: float
+    rel_diff: float
+
+    @property
+    def ok(self) -> bool:
+        """Within ``TOL_EXPERIMENT_T``."""
+        return abs(self.rel_diff) <= TOL_EXPERIMENT_T
+
+
+def duration_checks(experimental: Any) -> list[DurationCheck]:
+    """The acceptance tests (20 and 45 deg) from the experimental rows (a DataFrame with the
+    columns of ``impactlab.paper.analytic_rows.experimental_rows``)."""
+    rows = experimental.set_index("angle [deg]")
+    return [
+        DurationCheck(
+            ang,
+            rows.loc[ang]["T [ms]"],
+            rows.loc[ang]["T published [ms]"],
+            rows.loc[ang]["T rel. diff"],
+        )
+        for ang in (20, 45)
+    ]
 
 
 def scaled(x: float | None, scale: float) -> float | None:

@@ -5,7 +5,7 @@ simulations). Every reason is derived from numbers, never written for a particul
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, NamedTuple
 
 import pandas as pd
 
@@ -17,6 +17,15 @@ from impactlab.paper.quantities import (
     rel_diff,
     sim_value,
 )
+
+
+class RowKey(NamedTuple):
+    """A row of the comparison: its source (table or text), angle [deg], model and friction."""
+
+    source: str
+    angle: int
+    model: str
+    friction: str
 
 
 class Reasons:
@@ -57,17 +66,9 @@ class Reasons:
                 vals.append(pv / sim_value(res, q))
         return (min(vals), max(vals)) if vals else None
 
-    def reason(
-        self,
-        source: str,
-        ang: int,
-        model: str,
-        fr: str,
-        q: str,
-        pub: float | None,
-        ours: float | None,
-    ) -> str:
-        """Why quantity ``q`` of the row (``source``, ``ang``, ``model``, ``fr``) differs."""
+    def reason(self, key: RowKey, q: str) -> str:
+        """Why quantity ``q`` of the row ``key`` differs from the published value."""
+        source, ang, model, fr = key
         if model == "experiment":
             return self._reason_experiment(ang, q)
         c = self._cons(source, ang, model)
@@ -77,7 +78,7 @@ class Reasons:
             parts.append(_copy_error(res))
         tab = D.published_row(ang, model)
         if q in ("T", "F") and c is not None and res is not None and tab is not None:
-            parts += self._reason_impulse(source, ang, model, fr, q, c, res, tab)
+            parts += self._reason_impulse(key, q, c, res, tab)
         if c is not None and q == "L_s":
             parts.append(_reason_eq12(c))
         if q in ("delta_p", "e") and res is not None and not parts:
@@ -87,17 +88,10 @@ class Reasons:
         return "; ".join(p for p in parts if p)
 
     def _reason_impulse(
-        self,
-        source: str,
-        ang: int,
-        model: str,
-        fr: str,
-        q: str,
-        c: pd.Series,
-        res: Any,
-        tab: D.PublishedRow,
+        self, key: RowKey, q: str, c: pd.Series, res: Any, tab: D.PublishedRow
     ) -> list[str]:
         """T and F of a simulated row: the published row's impulse is not self-consistent."""
+        source, ang, model, fr = key
         row = self._pub_row(source, ang, model)
         same = _agreement(res, tab)
         rng = self._ratio_range("T" if q == "T" else "F", fr)

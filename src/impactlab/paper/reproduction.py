@@ -27,6 +27,7 @@ from typing import Any
 import pandas as pd
 
 from impactlab._version import __version__
+from impactlab.experiment.checks import check_path, output_folder
 from impactlab.paper import data as D
 from impactlab.paper.analytic_rows import (
     experimental_rows,
@@ -71,9 +72,7 @@ def prepare_output(out_dir: str | os.PathLike[str]) -> Path:
     file). Refuses (ValueError) a non-empty folder without the marker and a path that is a file.
     Nothing outside ``out_dir`` is touched; inside it only the reproduction's own files are
     (re)written."""
-    out = Path(out_dir).expanduser()
-    if out.exists() and not out.is_dir():
-        raise ValueError(f"out_dir {str(out)!r} exists and is not a folder")
+    out = check_path(out_dir, "out_dir").expanduser()
     if out.is_dir():
         entries = list(out.iterdir())
         if entries and not (out / MARKER).is_file():
@@ -81,8 +80,7 @@ def prepare_output(out_dir: str | os.PathLike[str]) -> Path:
                 f"out_dir {str(out)!r} is not empty and was not written by 'impactlab "
                 f"reproduce' (no {MARKER}); refusing to write there: choose a new or empty folder"
             )
-    else:
-        out.mkdir(parents=True)
+    out = output_folder(out, "out_dir")  # refuses a file, or a file among its parents
     (out / MARKER).write_text(json.dumps({"tool": "impactlab reproduce", "status": "running"}))
     return out
 
@@ -121,8 +119,8 @@ def reproduce(
     )
     figs = _write_figures(out, inertia, sims, written)
 
-    elapsed = time.perf_counter() - t0
-    blocks = build_report(
+    md, html_path = _write_report(
+        out,
         ReportData(
             experimental=experimental,
             comparison=comparison,
@@ -132,26 +130,10 @@ def reproduce(
             eq12=eq12,
             figures=figs,
             tables=tables,
-            elapsed=elapsed,
+            elapsed=time.perf_counter() - t0,
             version=__version__,
-        )
-    )
-    md = out / "report.md"
-    md.write_text(to_markdown(blocks, TITLE), encoding="utf-8")
-    html_path = out / "report.html"
-    html_path.write_text(to_html(blocks, TITLE), encoding="utf-8")
-    written["report_md"], written["report_html"] = md, html_path
-    (out / MARKER).write_text(
-        json.dumps(
-            {
-                "tool": "impactlab reproduce",
-                "status": "complete",
-                "version": __version__,
-                "files": sorted(p.name for p in written.values()),
-                "elapsed_s": elapsed,
-            },
-            indent=2,
-        )
+        ),
+        written,
     )
     return ReproductionResult(
         out_dir=out,
@@ -168,6 +150,29 @@ def reproduce(
         elapsed_s=time.perf_counter() - t0,
         extras=MappingProxyType({"simulated": sims is not None}),
     )
+
+
+def _write_report(out: Path, data: ReportData, written: dict[str, Path]) -> tuple[Path, Path]:
+    """report.md and report.html (recorded in ``written``), then the completed marker file."""
+    blocks = build_report(data)
+    md = out / "report.md"
+    md.write_text(to_markdown(blocks, TITLE), encoding="utf-8")
+    html_path = out / "report.html"
+    html_path.write_text(to_html(blocks, TITLE), encoding="utf-8")
+    written["report_md"], written["report_html"] = md, html_path
+    (out / MARKER).write_text(
+        json.dumps(
+            {
+                "tool": "impactlab reproduce",
+                "status": "complete",
+                "version": __version__,
+                "files": sorted(p.name for p in written.values()),
+                "elapsed_s": data.elapsed,
+            },
+            indent=2,
+        )
+    )
+    return md, html_path
 
 
 def _write_tables(out: Path, tables: Mapping[str, pd.DataFrame | None]) -> dict[str, Path]:

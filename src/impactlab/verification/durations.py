@@ -5,9 +5,9 @@ from __future__ import annotations
 
 from typing import Any
 
-from impactlab.analytic import invert
+from impactlab.paper.analytic_rows import invert_case
 from impactlab.paper.data import EXPERIMENTS, TABLE_ROWS
-from impactlab.verification.table import TOLERANCES, Column, VerificationTable, worst_of
+from impactlab.verification.table import TOLERANCES, VerificationTable, columns, worst_of
 
 __all__ = ["verify_paper_durations"]
 
@@ -20,15 +20,7 @@ def verify_paper_durations(n_samples: int = 2000) -> VerificationTable:
     records: list[dict[str, Any]] = []
     for ang, x in sorted(EXPERIMENTS.items()):
         # the paper prints the dent's depth and length negative; impactlab takes magnitudes
-        res = invert(
-            angle=x.angle,
-            v_i=x.v_i,
-            e=x.e,
-            mu=x.mu,
-            delta_p=abs(x.delta_p),
-            sliding_length=abs(x.L_s),
-            n_samples=n_samples,
-        )
+        res = invert_case(x, n_samples=n_samples)
         row = published.get((ang, "experiment"))
         T_pub = row.T if row is not None else None
         F_pub = row.F if row is not None else None
@@ -38,26 +30,28 @@ def verify_paper_durations(n_samples: int = 2000) -> VerificationTable:
                 "alpha": res.alpha,
                 "mu_c": res.mu_c,
                 "T_pub": None if T_pub is None else T_pub * 1e3,
-                "T": res.T * 1e3,
-                "err_T": None if T_pub is None else res.T / T_pub - 1.0,
+                "T": res.duration * 1e3,
+                "err_T": None if T_pub is None else res.duration / T_pub - 1.0,
                 "F_pub": F_pub,
-                "F": res.F,
-                "err_F": None if F_pub is None else res.F / F_pub - 1.0,
+                "F": res.mean_force,
+                "err_F": None if F_pub is None else res.mean_force / F_pub - 1.0,
             }
         )
     checked = [abs(r["err_T"]) for r in records if r["err_T"] is not None]
     worst = worst_of(checked)
     tol = TOLERANCES["paper_duration"]
-    cols = (
-        Column("angle", "angle [deg]", ".3g"),
-        Column("mu_c", "mu_c", ".4f"),
-        Column("alpha", "alpha", ".4f"),
-        Column("T_pub", "T published [ms]", ".3g"),
-        Column("T", "T impactlab [ms]", ".4g"),
-        Column("err_T", "rel. diff. T", "+.1%"),
-        Column("F_pub", "F published [N]", ".4g"),
-        Column("F", "F impactlab [N]", ".4g"),
-        Column("err_F", "rel. diff. F (not checked)", "+.1%"),
+    cols = columns(
+        """
+        angle | angle [deg]                | .3g
+        mu_c  | mu_c                       | .4f
+        alpha | alpha                      | .4f
+        T_pub | T published [ms]           | .3g
+        T     | T impactlab [ms]           | .4g
+        err_T | rel. diff. T               | +.1%
+        F_pub | F published [N]            | .4g
+        F     | F impactlab [N]            | .4g
+        err_F | rel. diff. F (not checked) | +.1%
+        """
     )
     text = """
 The paper's measured inputs (Sec. 5.1.3: angle, v_i, e, mu, delta_p, L_s) through

@@ -13,7 +13,7 @@ from scipy.special import beta
 from impactlab.bodies import Sphere
 from impactlab.dynamics import simulate
 from impactlab.materials import AISI_1010, ContactPair, Material
-from impactlab.verification.table import TOLERANCES, Column, VerificationTable, worst_of
+from impactlab.verification.table import TOLERANCES, VerificationTable, columns, worst_of
 
 __all__ = ["HERTZ_CASES", "body_mass", "hertz_closed_form", "hertz_convergence", "verify_hertz"]
 
@@ -91,17 +91,19 @@ def verify_hertz(
     keys = ("err_T", "err_F", "err_delta", "err_e", "err_e_energy")
     worst = worst_of([r[k] for r in records for k in keys])
     tol = TOLERANCES["hertz"]
-    cols = (
-        Column("radius", "R [m]", ".3g"),
-        Column("v", "v [m/s]", ".3g"),
-        Column("flat", "flat"),
-        Column("T", "T closed form [s]", ".5g"),
-        Column("err_T", "rel. error T", ".1e"),
-        Column("F", "F_max closed form [N]", ".5g"),
-        Column("err_F", "rel. error F_max", ".1e"),
-        Column("err_delta", "rel. error delta_max", ".1e"),
-        Column("err_e", "abs(e - 1)", ".1e"),
-        Column("err_e_energy", "abs(e* - 1)", ".1e"),
+    cols = columns(
+        """
+        radius       | R [m]                 | .3g
+        v            | v [m/s]               | .3g
+        flat         | flat
+        T            | T closed form [s]     | .5g
+        err_T        | rel. error T          | .1e
+        F            | F_max closed form [N] | .5g
+        err_F        | rel. error F_max      | .1e
+        err_delta    | rel. error delta_max  | .1e
+        err_e        | abs(e - 1)            | .1e
+        err_e_energy | abs(e* - 1)           | .1e
+        """
     )
     text = """
 A rigid steel sphere (AISI 201, radius R, I = 2/5 m R^2) hits a flat normally at speed v with

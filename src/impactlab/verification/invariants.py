@@ -13,23 +13,25 @@ from impactlab.bodies import PAPER_ROD
 from impactlab.contact import law_names
 from impactlab.dynamics import simulate
 from impactlab.friction import friction_names
-from impactlab.verification.table import TOLERANCES, Column, VerificationTable, worst_of
+from impactlab.verification.table import TOLERANCES, VerificationTable, columns, worst_of
 
 __all__ = ["verify_invariants"]
 
-_COLUMNS = (
-    Column("law", "law"),
-    Column("friction", "friction"),
-    Column("n", "cases checked"),
-    Column("excluded", "reversal (excluded)"),
-    Column("rise", "max energy rise / E0", ".1e"),
-    Column("rise_excluded", "energy rise / E0 of the excluded", ".1e"),
-    Column("neg_diss", "max (-dissipated) / E0", ".1e"),
-    Column("e_min", "min(e, e*)", ".4f"),
-    Column("e_max", "max e", ".4f"),
-    Column("ee_max", "max e*", ".4f"),
-    Column("dp_bad", "delta_p outside [0, delta_max]"),
-    Column("ok", "pass"),
+_COLUMNS = columns(
+    """
+    law           | law
+    friction      | friction
+    n             | cases checked
+    excluded      | reversal (excluded)
+    rise          | max energy rise / E0             | .1e
+    rise_excluded | energy rise / E0 of the excluded | .1e
+    neg_diss      | max (-dissipated) / E0           | .1e
+    e_min         | min(e, e*)                       | .4f
+    e_max         | max e                            | .4f
+    ee_max        | max e*                           | .4f
+    dp_bad        | delta_p outside [0, delta_max]
+    ok            | pass
+    """
 )
 
 

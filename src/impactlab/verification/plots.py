@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -20,6 +21,19 @@ from impactlab.verification.table import VerificationTable
 __all__ = ["plot_critical_friction", "plot_hertz_convergence", "plot_thornton"]
 
 
+def _engine_points(plot: Any, x: Any, y: Any, marker: str, label: str) -> None:
+    """The engine's results as red markers (``plot``: an Axes plotting method)."""
+    plot(x, y, marker, color="#c44e52", ms=5, label=label)
+
+
+def _save(plt: Any, fig: Any, path: str | Path) -> Path:
+    """Write ``fig`` to ``path`` (110 dpi), close it, return the path."""
+    p = Path(path)
+    fig.savefig(p, dpi=110)
+    plt.close(fig)
+    return p
+
+
 def plot_thornton(table: VerificationTable, path: str | Path) -> Path:
     """e(V/V_y): Thornton's closed form (line) and the engine (dots)."""
     plt = pyplot()
@@ -32,23 +46,13 @@ def plot_thornton(table: VerificationTable, path: str | Path) -> Path:
         lw=1.5,
         label="Thornton (1997), closed form",
     )
-    ax.semilogx(
-        table.extra["ratios"],
-        table.extra["e"],
-        "o",
-        color="#c44e52",
-        ms=5,
-        label="impactlab engine",
-    )
+    _engine_points(ax.semilogx, table.extra["ratios"], table.extra["e"], "o", "impactlab engine")
     ax.set_xlabel("V / V_y")
     ax.set_ylabel("coefficient of restitution e")
     ax.set_ylim(0.0, 1.05)
     ax.grid(True, which="both", alpha=0.3)
     ax.legend()
-    p = Path(path)
-    fig.savefig(p, dpi=110)
-    plt.close(fig)
-    return p
+    return _save(plt, fig, path)
 
 
 def plot_critical_friction(
@@ -91,23 +95,19 @@ def plot_critical_friction(
         lw=1.5,
         label="mu_c = a b / (k^2 + b^2)",
     )
-    ax.plot(
+    _engine_points(
+        ax.plot,
         np.degrees(table.extra["angles"]),
         table.extra["engine"],
         "D",
-        color="#c44e52",
-        ms=5,
-        label="engine boundary (bisection)",
+        "engine boundary (bisection)",
     )
     ax.set_xlabel("angle of the rod to the flat [deg]")
     ax.set_ylabel("friction coefficient mu")
     ax.set_xlim(0, 90)
     ax.set_ylim(0, 0.9)
     ax.legend(loc="upper right", fontsize=8)
-    p = Path(path)
-    fig.savefig(p, dpi=110)
-    plt.close(fig)
-    return p
+    return _save(plt, fig, path)
 
 
 def plot_hertz_convergence(data: Mapping[str, np.ndarray], path: str | Path) -> Path:
@@ -127,7 +127,4 @@ def plot_hertz_convergence(data: Mapping[str, np.ndarray], path: str | Path) -> 
     ax.invert_xaxis()
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
-    p = Path(path)
-    fig.savefig(p, dpi=110)
-    plt.close(fig)
-    return p
+    return _save(plt, fig, path)

@@ -12,7 +12,7 @@ from impactlab.contact import law_names
 from impactlab.dynamics import simulate
 from impactlab.dynamics.reference import simulate_reference
 from impactlab.friction import friction_names
-from impactlab.verification.table import TOLERANCES, Column, VerificationTable, worst_of
+from impactlab.verification.table import TOLERANCES, VerificationTable, columns, worst_of
 
 __all__ = ["reference_cases", "verify_reference"]
 
@@ -73,81 +73,21 @@ def reference_cases(
     return cases
 
 
-def verify_reference(cases: Sequence[Mapping[str, Any]] | None = None) -> VerificationTable:
-    """The compiled engine (``simulate``) against ``impactlab.dynamics.reference``
-    (``solve_ivp`` with event location, written independently): e, delta_p, L_s, T, F_max and
-    the regime. Errors relative to each quantity's scale: 1 for e, delta_max for delta_p,
-    max(abs(L_s), delta_max) for L_s, the reference value for T and F_max."""
-    cases = reference_cases() if cases is None else cases
-    records: list[dict[str, Any]] = []
-    for c in cases:
-        body = PAPER_ROD if c["body"] == "rod" else Sphere(0.01)
-        kw = {
-            "law": c["law"],
-            "friction": c["friction"],
-            "mu": c["mu"],
-            "angle": math.radians(c["angle"]) if c["body"] == "rod" else None,
-            "velocity": (c["vx"], c["vy"]),
-        }
-        rec: dict[str, Any] = {
-            "case": f"{c['body']} {c['angle']:g} deg, v = "
-            f"({c['vx']:g}, {c['vy']:g}) m/s, mu = {c['mu']:g}",
-            "law": c["law"],
-            "friction": c["friction"],
-        }
-        r = simulate(body, history=False, **kw)
-        try:
-            ref = simulate_reference(body, **kw)
-        except (RuntimeError, ValueError) as exc:
-            rec.update(
-                {
-                    "regime": r.regime,
-                    "regime_ref": "-",
-                    "worst": math.nan,
-                    "status": f"reference failed: {exc}",
-                }
-            )
-            records.append(rec)
-            continue
-        scale = {
-            "e": 1.0,
-            "delta_p": ref["delta_max"],
-            "sliding_length": max(abs(ref["sliding_length"]), ref["delta_max"]),
-            "duration": abs(ref["duration"]),
-            "max_force": abs(ref["max_force"]),
-        }
-        for q in _REF_QUANTITIES:
-            rec[f"err_{q}"] = abs(getattr(r, q) - ref[q]) / scale[q]
-        rec["regime"] = r.regime
-        rec["regime_ref"] = ref["regime"]
-        rec["worst"] = max(rec[f"err_{q}"] for q in _REF_QUANTITIES)
-        same = r.regime == ref["regime"]
-        rec["status"] = (
-            "ok"
-            if same and rec["worst"] <= TOLERANCES["reference"]
-            else "**exceeds**"
-            if same
-            else "**regime differs**"
-        )
-        records.append(rec)
-    compared = [r for r in records if not str(r["status"]).startswith("reference failed")]
-    worst = worst_of([r["worst"] for r in compared])
-    tol = TOLERANCES["reference"]
-    passed = (
-        len(compared) == len(records)
-        and worst <= tol
-        and all(r["regime"] == r["regime_ref"] for r in compared)
-    )
-    cols = (
-        Column("case", "case"),
-        Column("law", "law"),
-        Column("friction", "friction"),
-        Column("regime", "regime"),
-        Column("regime_ref", "regime (ref.)"),
-        *(Column(f"err_{q}", f"error {q}", ".1e") for q in _REF_QUANTITIES),
-        Column("status", "status"),
-    )
-    text = """
+_COLUMNS = (
+    *columns(
+        """
+        case       | case
+        law        | law
+        friction   | friction
+        regime     | regime
+        regime_ref | regime (ref.)
+        """
+    ),
+    *columns("\n".join(f"err_{q} | error {q} | .1e" for q in _REF_QUANTITIES)),
+    *columns("status | status"),
+)
+
+_TEXT = """
 The compiled engine (`impactlab.dynamics.simulate`, default tolerance) against
 `impactlab.dynamics.reference.simulate_reference`: the same physics written independently in
 plain Python and integrated with `scipy.integrate.solve_ivp` (RK45), with every phase change
@@ -157,11 +97,69 @@ event and the integration restarted. Only the contact-law kernels are shared. Th
 quantity's scale: 1 for e, delta_max for delta_p, max(abs(L_s), delta_max) for L_s, the reference
 value for T and F_max.
 """
+
+
+def _compare(c: Mapping[str, Any]) -> dict[str, Any]:
+    """One case (a record of :func:`reference_cases`): the engine against the reference, with
+    the scaled errors, the regimes and a status."""
+    body = PAPER_ROD if c["body"] == "rod" else Sphere(0.01)
+    kw = {
+        "law": c["law"],
+        "friction": c["friction"],
+        "mu": c["mu"],
+        "angle": math.radians(c["angle"]) if c["body"] == "rod" else None,
+        "velocity": (c["vx"], c["vy"]),
+    }
+    rec: dict[str, Any] = {
+        "case": f"{c['body']} {c['angle']:g} deg, v = "
+        f"({c['vx']:g}, {c['vy']:g}) m/s, mu = {c['mu']:g}",
+        "law": c["law"],
+        "friction": c["friction"],
+    }
+    r = simulate(body, history=False, **kw)
+    try:
+        ref = simulate_reference(body, **kw)
+    except (RuntimeError, ValueError) as exc:
+        failed = {"regime_ref": "-", "worst": math.nan, "status": f"reference failed: {exc}"}
+        return {**rec, "regime": r.regime, **failed}
+    scale = {
+        "e": 1.0,
+        "delta_p": ref["delta_max"],
+        "sliding_length": max(abs(ref["sliding_length"]), ref["delta_max"]),
+        "duration": abs(ref["duration"]),
+        "max_force": abs(ref["max_force"]),
+    }
+    for q in _REF_QUANTITIES:
+        rec[f"err_{q}"] = abs(getattr(r, q) - ref[q]) / scale[q]
+    rec["regime"] = r.regime
+    rec["regime_ref"] = ref["regime"]
+    rec["worst"] = max(rec[f"err_{q}"] for q in _REF_QUANTITIES)
+    if r.regime != ref["regime"]:
+        rec["status"] = "**regime differs**"
+    else:
+        rec["status"] = "ok" if rec["worst"] <= TOLERANCES["reference"] else "**exceeds**"
+    return rec
+
+
+def verify_reference(cases: Sequence[Mapping[str, Any]] | None = None) -> VerificationTable:
+    """The compiled engine (``simulate``) against ``impactlab.dynamics.reference``
+    (``solve_ivp`` with event location, written independently): e, delta_p, L_s, T, F_max and
+    the regime. Errors relative to each quantity's scale: 1 for e, delta_max for delta_p,
+    max(abs(L_s), delta_max) for L_s, the reference value for T and F_max."""
+    records = [_compare(c) for c in (reference_cases() if cases is None else cases)]
+    compared = [r for r in records if not str(r["status"]).startswith("reference failed")]
+    worst = worst_of([r["worst"] for r in compared])
+    tol = TOLERANCES["reference"]
+    passed = (
+        len(compared) == len(records)
+        and worst <= tol
+        and all(r["regime"] == r["regime_ref"] for r in compared)
+    )
     return VerificationTable(
         "reference",
         "Engine vs the solve_ivp reference",
-        text,
-        cols,
+        _TEXT,
+        _COLUMNS,
         tuple(records),
         "largest scaled error of e, delta_p, L_s, T, F_max "
         "per case; regimes equal; every reference run succeeds",

@@ -14,7 +14,7 @@ import numpy as np
 from impactlab.analytic import critical_friction
 from impactlab.bodies import PAPER_ROD, rigid_impulse
 from impactlab.dynamics import REGIME_NAMES, simulate, simulate_batch
-from impactlab.verification.table import TOLERANCES, Column, VerificationTable, worst_of
+from impactlab.verification.table import TOLERANCES, VerificationTable, columns, worst_of
 
 __all__ = ["engine_boundary", "regime_codes", "verify_critical_friction", "verify_rigid_limits"]
 
@@ -63,18 +63,20 @@ def verify_rigid_limits(
         records.append(rec)
     worst = worst_of([r[k] for r in records for k in ("err_P", "err_Pt", "err_vt", "err_e")])
     tol = TOLERANCES["rigid"]
-    cols = (
-        Column("factor", "mu/mu_c", ".3g"),
-        Column("mu", "mu", ".4f"),
-        Column("regime_rigid", "rigid regime"),
-        Column("regime", "engine regime"),
-        Column("match", "same"),
-        Column("P", "P rigid [N s]", ".5g"),
-        Column("err_P", "rel. error P", ".1e"),
-        Column("err_Pt", "rel. error P_t", ".1e"),
-        Column("vt", "v_t,out rigid [m/s]", ".4f"),
-        Column("err_vt", "abs(dv_t)/abs(v_n0)", ".1e"),
-        Column("err_e", "abs(e - 1)", ".1e"),
+    cols = columns(
+        """
+        factor       | mu/mu_c             | .3g
+        mu           | mu                  | .4f
+        regime_rigid | rigid regime
+        regime       | engine regime
+        match        | same
+        P            | P rigid [N s]       | .5g
+        err_P        | rel. error P        | .1e
+        err_Pt       | rel. error P_t      | .1e
+        vt           | v_t,out rigid [m/s] | .4f
+        err_vt       | abs(dv_t)/abs(v_n0) | .1e
+        err_e        | abs(e - 1)          | .1e
+        """
     )
     R_mm = PAPER_ROD.tip_radius * 1e3
     text = f"""
@@ -153,11 +155,13 @@ def verify_critical_friction(
     ]
     worst = worst_of([r["err"] for r in records])
     tol = max(TOLERANCES["critical_friction"], 4.0 * resolution / float(np.min(mu_c)))
-    cols = (
-        Column("angle", "angle [deg]", ".4g"),
-        Column("mu_c", "mu_c analytic", ".8f"),
-        Column("engine", "engine boundary", ".8f"),
-        Column("err", "rel. difference", ".1e"),
+    cols = columns(
+        """
+        angle  | angle [deg]     | .4g
+        mu_c   | mu_c analytic   | .8f
+        engine | engine boundary | .8f
+        err    | rel. difference | .1e
+        """
     )
     text = f"""
 The slip/stick boundary of the paper's rod (no spin, no tangential velocity, constant angle, no

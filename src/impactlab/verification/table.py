@@ -9,7 +9,7 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["TOLERANCES", "Column", "VerificationTable", "worst_of"]
+__all__ = ["TOLERANCES", "Column", "VerificationTable", "columns", "worst_of"]
 
 #: Tolerances of the checks (relative unless stated; see each function).
 TOLERANCES: Mapping[str, float] = {
@@ -31,6 +31,16 @@ class Column:
     key: str
     label: str
     fmt: str = ""
+
+
+def columns(spec: str) -> tuple[Column, ...]:
+    """The columns of a table from a text table, one column a line: ``key | label | format``
+    (the format may be left out)."""
+    out = []
+    for line in spec.strip().splitlines():
+        key, label, *fmt = (part.strip() for part in line.split(" | "))
+        out.append(Column(key, label, *fmt))
+    return tuple(out)
 
 
 def _cell(value: Any, fmt: str) -> str:

@@ -13,7 +13,7 @@ from impactlab.contact import thornton_restitution, thornton_yield_velocity
 from impactlab.dynamics import contact_model, simulate_batch
 from impactlab.materials import AISI_1010, ContactPair
 from impactlab.verification.hertz import body_mass
-from impactlab.verification.table import TOLERANCES, Column, VerificationTable, worst_of
+from impactlab.verification.table import TOLERANCES, VerificationTable, columns, worst_of
 
 __all__ = ["verify_thornton"]
 
@@ -54,13 +54,15 @@ def verify_thornton(n: int = 13, *, radius: float = 0.01) -> VerificationTable:
     if not all(r["ok"] for r in records):
         worst = math.inf
     tol = TOLERANCES["thornton"]
-    cols = (
-        Column("ratio", "V/V_y", ".4g"),
-        Column("V", "V [m/s]", ".4g"),
-        Column("e_closed", "e Thornton", ".6f"),
-        Column("e_engine", "e engine", ".6f"),
-        Column("err", "abs. error e", ".1e"),
-        Column("err_energy", "abs. error e*", ".1e"),
+    cols = columns(
+        """
+        ratio      | V/V_y         | .4g
+        V          | V [m/s]       | .4g
+        e_closed   | e Thornton    | .6f
+        e_engine   | e engine      | .6f
+        err        | abs. error e  | .1e
+        err_energy | abs. error e* | .1e
+        """
     )
     text = f"""
 A steel sphere (AISI 201, R = {radius * 1e3:g} mm) hits AISI 1010 normally with the `thornton`

@@ -1,11 +1,11 @@
 """The compiled impact engine: planar rigid body (rod or sphere) on a flat, one contact.
 
 Everything here runs in numba ``nopython`` mode: the equations of motion, the normal contact
-history (loading / unloading / reloading), the three friction models and all phase switches,
+history (loading / unloading / reloading), the friction models and all phase switches,
 integrated by an embedded Dormand-Prince 5(4) pair with its 4th-order dense output and event
 location on the dense output. The equations, conventions and event logic are documented in
 ``docs/engine/index.md``. The core imports only numpy, numba, math, ``impactlab.schema``,
-``impactlab.contact.kernels`` and ``impactlab.bodies.layout``.
+``impactlab.flags``, ``impactlab.contact.kernels`` and ``impactlab.bodies.layout``.
 
 Modules, lowest first:
 
@@ -17,6 +17,7 @@ Modules, lowest first:
 - ``rhs``: right-hand side, event functions, total energy.
 - ``integrator``: Dormand-Prince tableau, the step, dense output, event location.
 - ``history``: recording of the time history.
+- ``quality``: the result flags at separation (energy gain, gravity dominance).
 - ``setup``: input checks, constants, initial mode, error scales.
 - ``transitions``: mode transitions at events and the restart after a switch.
 - ``driver``: ``impact`` (one impact: initialisation, step loop, results at separation).

@@ -51,6 +51,7 @@ from impactlab.dynamics.core.layout import (
     O_EE,
     O_ERISE,
     O_FEX,
+    O_FLAGS,
     O_FMAX,
     O_FMEAN,
     O_NST,
@@ -77,6 +78,7 @@ from impactlab.dynamics.core.layout import (
     S_Y,
 )
 from impactlab.dynamics.core.normal import geometry
+from impactlab.dynamics.core.quality import result_flags
 from impactlab.dynamics.core.rhs import energy, evaluate, rhs_events
 from impactlab.dynamics.core.setup import check_inputs, constants, error_scales, initial_mode
 from impactlab.dynamics.core.status import (
@@ -177,6 +179,25 @@ def _on_event(ev, law, p, fric, c, md, y, evq, acc):
 
 
 @njit(cache=True, error_model="numpy")
+def _handle_event(ev, law, p, fric, c, md, y, evq, acc, K, gold, sc, fscale, dstar):
+    """Stop at the event ``ev`` or switch and restart the integration at ``y`` (derivative
+    into ``K[0]``, error scale of the Mindlin state). Returns (status or _GO_ON, constants,
+    mode, event tuple). A switch located at the separation itself (a stick that breaks as F_n
+    vanishes, with both events within round-off) can leave the restart state just past it
+    (delta < delta_r while receding, where no crossing would ever be seen): that is the
+    separation, at this instant."""
+    st, c, md = _on_event(ev, law, p, fric, c, md, y, evq, acc)
+    if st != _GO_ON:
+        return st, c, md, gold
+    if fric == FR_MINDLIN:
+        sc[S_Q] = fscale if md[M_COMP] != 0.0 else dstar
+    md, gold = restart(law, p, fric, c, md, y, K)
+    if gold[EV_SEP] > 0.0:
+        st, c, md = _on_event(EV_SEP, law, p, fric, c, md, y, evq, acc)
+    return st, c, md, gold
+
+
+@njit(cache=True, error_model="numpy")
 def _integrate(law, p, fric, c, md, y, sc, tstar, dstar, fscale, rtol, record, diag, hist, acc):
     """The step loop from first touch (state ``y``, mode ``md``) to separation, a failure or
     MAX_STEPS. Returns (status, t, steps, mode, history, rows)."""
@@ -242,13 +263,12 @@ def _integrate(law, p, fric, c, md, y, sc, tstar, dstar, fscale, rtol, record, d
             break
         if record:
             hist, nh = record_row(hist, nh, t, law, p, fric, c, md, state_tuple(y))
-        st, c, md = _on_event(ev, law, p, fric, c, md, y, evq, acc)
+        st, c, md, gold = _handle_event(
+            ev, law, p, fric, c, md, y, evq, acc, K, gold, sc, fscale, dstar
+        )
         if st != _GO_ON:
             status = st
             break
-        if fric == FR_MINDLIN:
-            sc[S_Q] = fscale if md[M_COMP] != 0.0 else dstar
-        md, gold = restart(law, p, fric, c, md, y, K)
     return status, t, nsteps, md, hist, nh
 
 
@@ -273,8 +293,9 @@ def _regime(fric, md, acc, t, vn0):
 
 
 @njit(cache=True, error_model="numpy")
-def _separation(out, fric, c, md, y, acc, t, vx0, vy0, vn0, th0, rod, e0, diag):
-    """Write the results at separation (state ``y`` at time ``t``) into ``out``."""
+def _separation(out, fric, c, md, y, acc, t, vx0, vy0, vn0, th0, rod, e0, rtol, diag):
+    """Write the results at separation (state ``y`` at time ``t``) into ``out``, the result
+    flags included."""
     _delta, a, b, xs, slide = geometry(c, state_tuple(y))
     m = c[C_M]
     inertia = c[C_I]
@@ -297,8 +318,10 @@ def _separation(out, fric, c, md, y, acc, t, vx0, vy0, vn0, th0, rod, e0, diag):
     out[O_PN] = pn
     out[O_FMEAN] = pn / t
     out[O_PT] = m * (vx - vx0)
-    e_end = 0.5 * m * (vx * vx + vy * vy) + 0.5 * inertia * w * w + m * g * y[S_Y]
-    out[O_ED] = e0 - e_end
+    e_kin = 0.5 * m * (vx * vx + vy * vy) + 0.5 * inertia * w * w
+    e_pot = m * g * y[S_Y]
+    out[O_ED] = e0 - (e_kin + e_pot)
+    out[O_FLAGS] = result_flags(e0, e_kin, e_pot, rtol, m * g * t, pn)
     out[O_STICK] = acc[A_STICK]
     out[O_REG] = _regime(fric, md, acc, t, vn0)
     out[O_VNOUT] = vn
@@ -353,5 +376,6 @@ def impact(law, p, fric, bp, th0, vx0, vy0, w0, mu, g, const_angle, rtol, record
     out[O_T] = t
     if status != ST_OK:
         return status, hist[:nh], nh
-    _separation(out, fric, c, md, y, acc, t, vx0, vy0, vn0, th0, bp[BP_KIND] == KIND_ROD, e0, diag)
+    rod = bp[BP_KIND] == KIND_ROD
+    _separation(out, fric, c, md, y, acc, t, vx0, vy0, vn0, th0, rod, e0, rtol, diag)
     return ST_OK, hist[:nh], nh

@@ -10,6 +10,13 @@ from __future__ import annotations
 
 from impactlab import schema
 
+
+def _columns(fields: tuple[schema.Field, ...]) -> tuple[tuple[str, ...], int, dict[str, int]]:
+    """(names, count, name -> column index) of a table of ``impactlab.schema`` fields."""
+    names = tuple(f.name for f in fields)
+    return names, len(names), {name: i for i, name in enumerate(names)}
+
+
 # --- friction ids (the public ones are in impactlab.friction) -----------------------------------
 FR_NONE = -1  # internal: mu == 0
 FR_IMPULSE = 0
@@ -66,9 +73,7 @@ EV_SWITCH = 5  # the loading curve leaves the elastic curve (p[P_DSW]): restart 
 NEV = 6
 
 # --- outputs (columns of ``out``, in the order of impactlab.schema.OUTPUT_FIELDS) ----------------
-OUTPUT_FIELDS: tuple[str, ...] = tuple(f.name for f in schema.OUTPUT_FIELDS)
-N_OUT = len(OUTPUT_FIELDS)
-O: dict[str, int] = {name: i for i, name in enumerate(OUTPUT_FIELDS)}
+OUTPUT_FIELDS, N_OUT, O = _columns(schema.OUTPUT_FIELDS)
 O_E = O["e"]
 O_EE = O["e_energy"]
 O_VX = O["vx_out"]
@@ -95,11 +100,10 @@ O_TMAX = O["t_max"]
 O_NST = O["n_steps"]
 O_ERISE = O["energy_rise"]
 O_FEX = O["friction_excess"]
+O_FLAGS = O["flags"]
 
 # --- history columns (impactlab.schema.HISTORY_FIELDS) --------------------------------------------
-HISTORY_FIELDS: tuple[str, ...] = tuple(f.name for f in schema.HISTORY_FIELDS)
-NH = len(HISTORY_FIELDS)
-H: dict[str, int] = {name: i for i, name in enumerate(HISTORY_FIELDS)}
+HISTORY_FIELDS, NH, H = _columns(schema.HISTORY_FIELDS)
 H_T = H["t"]
 H_DELTA = H["penetration"]
 H_FN = H["normal_force"]
@@ -111,7 +115,7 @@ H_Y = H["y"]
 H_PHI = H["phi"]
 H_VX = H["vx"]
 H_VY = H["vy"]
-H_SPIN = H["omega"]
+H_SPIN = H["spin"]
 H_VN = H["normal_velocity"]
 H_PHASE = H["phase"]
 H_STICK = H["stick"]

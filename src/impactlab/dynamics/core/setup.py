@@ -27,6 +27,7 @@ from impactlab.dynamics.core.layout import (
     C_I,
     C_M,
     C_R,
+    FR_IMPULSE,
     FR_MINDLIN,
     NS,
     S_PHI,
@@ -83,7 +84,7 @@ def check_inputs(law, p, fric, bp, th0, vx0, vy0, w0, mu, g, rtol):
         return ST_BAD_INPUT
     if not (rtol > 1e-14 and rtol < 1e-2):
         return ST_BAD_INPUT
-    if fric < 0 or fric > 2:
+    if fric < FR_IMPULSE or fric > FR_MINDLIN:
         return ST_BAD_FRICTION
     if fric == FR_MINDLIN and mu > 0.0 and not (bp[BP_GSTAR] > 0.0 and math.isfinite(bp[BP_GSTAR])):
         return ST_BAD_FRICTION

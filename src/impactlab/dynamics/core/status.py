@@ -30,13 +30,6 @@ STATUS_MESSAGES: dict[int, str] = {
     ST_BAD_FRICTION: "unknown friction id, or the Mindlin model without G* in the body vector",
 }
 
-REGIME_FRICTIONLESS = 0
-REGIME_SLIP = 1
-REGIME_STICK = 2
-REGIME_REVERSAL = 3
-REGIME_NAMES: dict[int, str] = {
-    REGIME_FRICTIONLESS: "frictionless",
-    REGIME_SLIP: "slip",
-    REGIME_STICK: "stick",
-    REGIME_REVERSAL: "reversal",
-}
+#: Friction regime codes (the ``regime`` output) and their names, in code order.
+REGIME_NAMES: dict[int, str] = dict(enumerate(("frictionless", "slip", "stick", "reversal")))
+REGIME_FRICTIONLESS, REGIME_SLIP, REGIME_STICK, REGIME_REVERSAL = REGIME_NAMES

@@ -3,10 +3,10 @@
 Pipeline (details and the uncertainty model in docs/experiment.md):
 
 1. rigidity check of the marker cluster, then its pose per frame (Kabsch,
-   :mod:`impactlab.experiment.rigid`);
+   :mod:`impactlab.experiment.rigid`; ``.cluster``);
 2. the centre of mass C and the rod axis from the marker geometry (given, or estimated: the axis
    from the cluster's principal direction, C as the body point that flies ballistically;
-   ``.com``);
+   ``.com``, ``.body`` with the gravity check and the impact frame);
 3. impact detection: the largest jump of the velocity and rate of turn of the cluster, from
    straight-line fits to ``window`` frames on either side of each frame (gravity removed;
    ``.detect``);

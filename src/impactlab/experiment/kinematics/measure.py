@@ -13,7 +13,15 @@ from typing import Any
 
 import numpy as np
 
+from impactlab.experiment.checks import check_instance
 from impactlab.experiment.errors import MarkerError, TooFewFramesError
+from impactlab.experiment.kinematics.body import (
+    RodBody,
+    estimated_body,
+    fitted_gravity,
+    impact_frame,
+)
+from impactlab.experiment.kinematics.cluster import marker_poses
 from impactlab.experiment.kinematics.com import estimate_com
 from impactlab.experiment.kinematics.derive import DERIVED, derive
 from impactlab.experiment.kinematics.detect import detect_impact, free_flight
@@ -21,16 +29,20 @@ from impactlab.experiment.kinematics.fits import SegmentFit, fit_segment, segmen
 from impactlab.experiment.kinematics.frame import G0, parse_up, rod_dimensions
 from impactlab.experiment.kinematics.result import ImpactKinematics
 from impactlab.experiment.markers import MarkerTracks
-from impactlab.experiment.rigid import (
-    MarkerGeometry,
-    Poses,
-    check_rigidity,
-    fit_poses,
-    reference_cluster,
-)
+from impactlab.experiment.rigid import MarkerGeometry, Poses
 from impactlab.experiment.uncertainty import Estimate, propagate
 
 __all__ = ["measure_impact"]
+
+#: Fields of :class:`ImpactKinematics` that are one derived quantity of the same name.
+_SCALARS = ("t_impact", "angle_in", "angle_out", "spin_in", "spin_out", "e", "mu", "dv_cx", "dv_cy")
+#: Fields that are an (x, y) pair of derived quantities.
+_PAIRS = {
+    "v_c_in": ("v_cx_in", "v_cy_in"),
+    "v_c_out": ("v_cx_out", "v_cy_out"),
+    "v_tip_in": ("v_tip_x_in", "v_tip_y_in"),
+    "v_tip_out": ("v_tip_x_out", "v_tip_y_out"),
+}
 
 #: Units of the derived quantities (order ``DERIVED``).
 _UNITS = (
@@ -90,160 +102,6 @@ def _check_derived(y: np.ndarray, src: str) -> None:
         )
 
 
-def _cluster(
-    tracks: MarkerTracks, geometry: MarkerGeometry | None, src: str
-) -> tuple[MarkerTracks, np.ndarray]:
-    """(the tracks of the geometry's markers, the reference cluster in the body frame)."""
-    if geometry is None:
-        return tracks, reference_cluster(tracks)
-    if geometry.labels is not None:
-        missing = [lab for lab in geometry.labels if lab not in tracks.labels]
-        if missing:
-            raise MarkerError(
-                f"{src}: the marker geometry names markers {missing} that the "
-                f"file does not have (it has {list(tracks.labels)})"
-            )
-        tracks = tracks.select(list(geometry.labels))
-    elif geometry.markers.shape[0] != tracks.n_markers:
-        raise MarkerError(
-            f"{src}: the marker geometry has {geometry.markers.shape[0]} "
-            f"markers {list(geometry.labels or [])} but the file has "
-            f"{tracks.n_markers} {list(tracks.labels)}"
-        )
-    return tracks, np.asarray(geometry.markers, dtype=np.float64)
-
-
-def _check_geometry(
-    tracks: MarkerTracks, reference: np.ndarray, tolerance: float, src: str
-) -> None:
-    """The given geometry must match the measured cluster shape."""
-    meas = reference_cluster(tracks)
-    d_meas = np.linalg.norm(meas[:, None] - meas[None], axis=2)
-    d_geo = np.linalg.norm(reference[:, None] - reference[None], axis=2)
-    mis = float(np.max(np.abs(d_meas - d_geo)))
-    if mis > max(2.0 * tolerance, 2e-3):
-        raise MarkerError(
-            f"{src}: the given marker geometry does not match the markers: "
-            f"inter-marker distances differ by up to {mis * 1e3:.2f} mm "
-            "(wrong labels, order or units?)"
-        )
-
-
-def _gravity(
-    poses: Poses,
-    fr: np.ndarray,
-    t_ref: float,
-    upv: np.ndarray,
-    g: float,
-    src: str,
-    warnings: list[str],
-) -> float | None:
-    """Free quadratic fit of the cluster origin before the impact (C when the geometry is given;
-    the rod hardly turns before the impact in a drop test): the fitted gravity [m/s^2] (None
-    when too uncertain); MarkerError when it points away from -up."""
-    if fr.size < 8:
-        return None
-    tau = poses.time[fr] - t_ref
-    c_lab = poses.translation[fr]
-    A = np.column_stack([np.ones_like(tau), tau, 0.5 * tau * tau])
-    coef, _res, *_ = np.linalg.lstsq(A, c_lab, rcond=None)
-    E = c_lab - A @ coef
-    s2 = np.sum(E * E, axis=0) / max(fr.size - 3, 1)
-    var_a = np.linalg.inv(A.T @ A)[2, 2] * s2
-    a = coef[2]
-    sig_a = float(np.sqrt(np.sum(var_a)))
-    if not sig_a < 0.2 * g:
-        return None
-    fitted_g = float(np.linalg.norm(a))
-    cosang = float(-(a @ upv) / max(np.linalg.norm(a), 1e-30))
-    if not (0.5 * g < fitted_g < 2.0 * g):
-        warnings.append(
-            f"the free fall before the impact accelerates at {fitted_g:.3g} "
-            f"m/s^2, not g = {g:.4g}: check the length units"
-        )
-    elif cosang < math.cos(math.radians(25.0)):
-        dirn = ", ".join(f"{v:+.2f}" for v in (-a / np.linalg.norm(a)))
-        raise MarkerError(
-            f"{src}: gravity in the data points down along ({dirn}) in camera "
-            f"coordinates, {math.degrees(math.acos(max(-1, min(1, cosang)))):.0f} deg "
-            f"away from -up; pass the right up= (e.g. up='+y')"
-        )
-    return fitted_g
-
-
-@dataclass(frozen=True)
-class _Body:
-    """Centre of mass ``com`` and axis ``axis`` (towards the tip) in the reference cluster's
-    frame; ``com_cov`` (3, 3) [m^2] when estimated (None when given); ``source``."""
-
-    com: np.ndarray
-    axis: np.ndarray
-    com_cov: np.ndarray | None
-    source: str
-
-
-def _estimated_body(
-    poses: Poses,
-    reference: np.ndarray,
-    pre_fr: np.ndarray,
-    post_fr: np.ndarray,
-    t_ref: float,
-    upv: np.ndarray,
-    g: float,
-    max_com_sigma: float,
-    src: str,
-) -> _Body:
-    """The axis from the cluster's principal direction, C as the ballistic body point."""
-    _, _, vt = np.linalg.svd(reference - reference.mean(axis=0))
-    axis_body = vt[0]
-    k_last = pre_fr[-1]
-    if (poses.rotation[k_last] @ axis_body) @ upv > 0:
-        axis_body = -axis_body  # e1 points to the lower end (the tip) at impact
-    com_body, com_cov = estimate_com(poses, [pre_fr, post_fr], t_ref, upv, g)
-    sig_axis = (
-        float(np.sqrt(max(axis_body @ com_cov @ axis_body, 0.0)))
-        if np.all(np.isfinite(com_cov))
-        else math.inf
-    )
-    if not sig_axis < max_com_sigma:
-        raise MarkerError(
-            f"{src}: cannot locate the rod's centre of mass from the flight precisely enough "
-            f"(+-{sig_axis * 1e3:.2g} mm along the axis, limit {max_com_sigma * 1e3:.2g} mm: "
-            "too little rotation or too few frames after the impact); give the marker "
-            "geometry (the markers' positions relative to the rod axis)"
-        )
-    return _Body(
-        com_body,
-        axis_body,
-        com_cov,
-        f"estimated (centre of mass +- {sig_axis * 1e3:.2g} mm along the axis)",
-    )
-
-
-def _impact_frame(
-    poses: Poses, k_last: int, body: _Body, upv: np.ndarray, src: str
-) -> tuple[np.ndarray, np.ndarray]:
-    """(axes (3, 3): rows x, y = up, z of the impact frame; origin: C at the last frame before
-    the impact [m]); x is the horizontal direction from the tip towards C."""
-    Rk = poses.rotation[k_last]
-    e1_lab = Rk @ body.axis
-    if e1_lab @ upv >= 0:
-        raise MarkerError(
-            f"{src}: the rod's tip (+e1 end of the marker geometry) is not below "
-            "its centre of mass before the impact; check the geometry's axis "
-            "direction (e1 points from the centre of mass to the tip) and up="
-        )
-    u = -e1_lab
-    uh = u - (u @ upv) * upv
-    if np.linalg.norm(uh) < 1e-3:
-        raise MarkerError(
-            f"{src}: the rod is vertical at the impact; the impact plane (x axis) is undefined"
-        )
-    xh = uh / np.linalg.norm(uh)
-    zh = np.cross(xh, upv)
-    return np.vstack([xh, upv, zh]), Rk @ body.com + poses.translation[k_last]
-
-
 @dataclass(frozen=True)
 class _Frame:
     """What the fits need: the poses, the impact frame (``axes``, ``origin``), ``t_ref`` [s],
@@ -262,16 +120,16 @@ def _fits(
     fm: _Frame,
     pre_fr: np.ndarray,
     post_fr: np.ndarray,
-    body: _Body,
+    body: RodBody,
     upv: np.ndarray,
     min_fit_frames: int,
     src: str,
     warnings: list[str],
-) -> tuple[SegmentFit, SegmentFit, _Body]:
+) -> tuple[SegmentFit, SegmentFit, RodBody]:
     """The ballistic fits before and after the impact, trimmed at their far ends; an estimated
     centre of mass is re-estimated on the trimmed segments."""
 
-    def fit(fr: np.ndarray, far_end: str, b: _Body) -> SegmentFit:
+    def fit(fr: np.ndarray, far_end: str, b: RodBody) -> SegmentFit:
         return trimmed_fit(
             fm.poses, fr, far_end, fm.t_ref, b.com, b.axis, fm.axes, fm.origin, fm.g, min_fit_frames
         )
@@ -290,13 +148,13 @@ def _fits(
             )
     if body.com_cov is not None and (pre.trimmed or post.trimmed):
         com, com_cov = estimate_com(fm.poses, [pre.frames, post.frames], fm.t_ref, upv, fm.g)
-        body = _Body(com, body.axis, com_cov, body.source)
+        body = RodBody(com, body.axis, com_cov, body.source)
         pre, post = fit(pre.frames, "start", body), fit(post.frames, "end", body)
     return pre, post, body
 
 
 def _propagated(
-    fm: _Frame, pre: SegmentFit, post: SegmentFit, body: _Body
+    fm: _Frame, pre: SegmentFit, post: SegmentFit, body: RodBody
 ) -> tuple[np.ndarray, np.ndarray, list[str]]:
     """The derived quantities (order ``DERIVED``), their covariance (the fits' and, for an
     estimated centre of mass, its own, by refitting with C moved) and the crossing notes."""
@@ -363,29 +221,6 @@ def _plausibility(
     return tilt
 
 
-def _poses(
-    tracks: MarkerTracks,
-    geometry: MarkerGeometry | None,
-    rigidity_tolerance: float,
-    rigidity_window: int,
-    min_fit_frames: int,
-    src: str,
-) -> tuple[Any, ...]:
-    """(reference cluster, rigidity report, poses, frames with a pose)."""
-    tracks, reference = _cluster(tracks, geometry, src)
-    rigidity = check_rigidity(tracks, tolerance=rigidity_tolerance, window=rigidity_window)
-    if geometry is not None:
-        _check_geometry(tracks, reference, rigidity_tolerance, src)
-    poses = fit_poses(tracks, reference)
-    ok = np.flatnonzero(poses.ok)
-    if ok.size < 2 * min_fit_frames + 1:
-        raise TooFewFramesError(
-            f"{src}: only {ok.size} frames with a usable pose (3 or more "
-            f"markers seen); need at least {2 * min_fit_frames + 1}"
-        )
-    return reference, rigidity, poses, ok
-
-
 def measure_impact(
     tracks: MarkerTracks,
     rod: Any,
@@ -421,23 +256,24 @@ def measure_impact(
     Raises :class:`MarkerError` subclasses naming the problem (loose markers, no impact, too few
     free-flight frames, geometry that does not fit).
     """
+    check_instance(tracks, MarkerTracks, "tracks", "read them with read_markers()")
     src = tracks.source or "marker tracks"
     half, R_tip = rod_dimensions(rod)
     upv = parse_up(up)
     warnings: list[str] = []
     _check_options(tracks, guard, window, min_fit_frames, max_fit_frames, src)
-    reference, rigidity, poses, ok = _poses(
+    reference, rigidity, poses, ok = marker_poses(
         tracks, geometry, rigidity_tolerance, rigidity_window, min_fit_frames, src
     )
     imp = detect_impact(poses, ok, reference, upv, g, window, src)
     t_ref = imp.t_ref
     pre_fr, post_fr = free_flight(poses, ok, imp, guard, max_fit_frames, min_fit_frames, src)
-    fitted_g = _gravity(poses, pre_fr, t_ref, upv, g, src, warnings)
+    fitted_g = fitted_gravity(poses, pre_fr, t_ref, upv, g, src, warnings)
     if geometry is not None:
-        body = _Body(np.zeros(3), np.array([1.0, 0.0, 0.0]), None, "given")
+        body = RodBody(np.zeros(3), np.array([1.0, 0.0, 0.0]), None, "given")
     else:
-        body = _estimated_body(poses, reference, pre_fr, post_fr, t_ref, upv, g, max_com_sigma, src)
-    axes, origin = _impact_frame(poses, int(pre_fr[-1]), body, upv, src)
+        body = estimated_body(poses, reference, pre_fr, post_fr, t_ref, upv, g, max_com_sigma, src)
+    axes, origin = impact_frame(poses, int(pre_fr[-1]), body, upv, src)
     fm = _Frame(poses, axes, origin, t_ref, g, half, R_tip)
     pre, post, body = _fits(fm, pre_fr, post_fr, body, upv, min_fit_frames, src, warnings)
     y, cov_y, notes = _propagated(fm, pre, post, body)
@@ -446,40 +282,37 @@ def measure_impact(
     sig = np.sqrt(np.clip(np.diag(cov_y), 0.0, None))
     E_ = {n: Estimate(v, s, u_) for n, v, s, u_ in zip(DERIVED, y, sig, _UNITS, strict=True)}
     tilt = _plausibility(E_, poses, pre, body.axis, axes[2], warnings)
+    estimates: dict[str, Any] = {name: E_[name] for name in _SCALARS}
+    estimates.update({name: (E_[a], E_[b]) for name, (a, b) in _PAIRS.items()})
     return ImpactKinematics(
-        t_impact=E_["t_impact"],
-        angle_in=E_["angle_in"],
-        angle_out=E_["angle_out"],
-        v_c_in=(E_["v_cx_in"], E_["v_cy_in"]),
-        v_c_out=(E_["v_cx_out"], E_["v_cy_out"]),
-        spin_in=E_["spin_in"],
-        spin_out=E_["spin_out"],
-        v_tip_in=(E_["v_tip_x_in"], E_["v_tip_y_in"]),
-        v_tip_out=(E_["v_tip_x_out"], E_["v_tip_y_out"]),
-        e=E_["e"],
-        mu=E_["mu"],
-        dv_cx=E_["dv_cx"],
-        dv_cy=E_["dv_cy"],
+        **estimates,
         v_c_z_in=E_["v_cz_in"],
         v_c_z_out=E_["v_cz_out"],
+        **_geometry(fm, body),
+        impact_frame=imp.k_star,
+        pre=pre,
+        post=post,
         derived_names=DERIVED,
         derived_values=y,
         derived_cov=cov_y,
-        pre=pre,
-        post=post,
-        impact_frame=imp.k_star,
-        t_ref=t_ref,
-        gravity=g,
-        half_length=half,
-        tip_radius=R_tip,
-        frame_axes=axes,
-        origin=origin,
-        com_body=body.com,
-        axis_body=body.axis,
-        geometry_source=body.source,
         rigidity=rigidity,
         fitted_gravity=fitted_g,
         tilt_out_of_plane=tilt,
         poses=poses,
         warnings=tuple(warnings),
     )
+
+
+def _geometry(fm: _Frame, body: RodBody) -> dict[str, Any]:
+    """The fields of :class:`ImpactKinematics` that place the rod and the impact frame."""
+    return {
+        "t_ref": fm.t_ref,
+        "gravity": fm.g,
+        "half_length": fm.half,
+        "tip_radius": fm.R_tip,
+        "frame_axes": fm.axes,
+        "origin": fm.origin,
+        "com_body": body.com,
+        "axis_body": body.axis,
+        "geometry_source": body.source,
+    }

@@ -20,30 +20,35 @@ __all__ = ["ImpactKinematics"]
 class ImpactKinematics:
     """The measured impact (SI units; frame and signs in the package docstring).
 
-    Estimates (value, sigma): ``t_impact`` [s], ``angle_in``/``angle_out`` (rod angle to the
-    flat at the impact instant, from the fits before/after) [rad], ``v_c_in``/``v_c_out`` ((x, y)
-    of the centre of mass [m/s]), ``spin_in``/``spin_out`` (counter-clockwise) [rad/s],
-    ``v_tip_in``/``v_tip_out`` ((x, y) of the contact point [m/s]), ``e`` (= -v_tip,y,out /
-    v_tip,y,in), ``mu`` (= |dv_Cx / dv_Cy|, paper Eq. 28), ``dv_cx``, ``dv_cy`` [m/s],
-    ``v_c_z_in``/``v_c_z_out`` (out-of-plane, should be ~0) [m/s]. ``correlation``: correlation
-    matrix of the derived quantities (names in ``derived_names``). Diagnostics: ``pre``/``post``
-    fits, ``rigidity``, ``fitted_gravity`` [m/s^2], ``tilt_out_of_plane`` [rad], ``warnings``.
+    ``correlation``: correlation matrix of the derived quantities (names in
+    ``derived_names``). Diagnostics: ``pre``/``post`` fits, ``rigidity``, ``fitted_gravity``
+    [m/s^2], ``tilt_out_of_plane`` [rad], ``warnings``.
     """
 
     t_impact: Estimate
+    """The impact instant [s]: where the tip heights of the two fits cross."""
     angle_in: Estimate
+    """Rod angle to the flat at the impact instant, from the fit before [rad]."""
     angle_out: Estimate
+    """The same from the fit after [rad]."""
     v_c_in: tuple[Estimate, Estimate]
+    """(x, y) velocity of the centre of mass before [m/s]; ``v_c_out`` after."""
     v_c_out: tuple[Estimate, Estimate]
     spin_in: Estimate
+    """Spin (counter-clockwise) before [rad/s]; ``spin_out`` after."""
     spin_out: Estimate
     v_tip_in: tuple[Estimate, Estimate]
+    """(x, y) velocity of the contact point before [m/s]; ``v_tip_out`` after."""
     v_tip_out: tuple[Estimate, Estimate]
     e: Estimate
+    """-v_tip,y,out / v_tip,y,in."""
     mu: Estimate
+    """|dv_Cx / dv_Cy| (paper Eq. 28)."""
     dv_cx: Estimate
+    """Change of the centre-of-mass velocity [m/s], x; ``dv_cy`` y."""
     dv_cy: Estimate
     v_c_z_in: Estimate
+    """Out-of-plane centre-of-mass velocity before [m/s] (should be ~0); ``v_c_z_out`` after."""
     v_c_z_out: Estimate
     derived_names: tuple[str, ...]
     derived_values: np.ndarray = field(repr=False)

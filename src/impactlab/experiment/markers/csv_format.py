@@ -20,6 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
+from impactlab.experiment.checks import check_instance, check_path
 from impactlab.experiment.errors import FileFormatError
 from impactlab.experiment.markers.tracks import MarkerTracks, length_factor
 from impactlab.experiment.textfiles import split_commented
@@ -177,8 +178,9 @@ def read_csv_markers(
 
 def write_csv_markers(tracks: MarkerTracks, path: str | Path, *, units: str = "mm") -> Path:
     """Write ``tracks`` in the documented CSV layout (occluded samples as empty cells)."""
+    check_instance(tracks, MarkerTracks, "tracks")
     fac = length_factor(units)
-    p = Path(path)
+    p = check_path(path, "path")
     with p.open("w", newline="", encoding="utf-8") as fh:
         fh.write(f"# impactlab marker tracks\n# units: {units}\n")
         w = csv.writer(fh)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from impactlab.experiment.checks import check_path
 from impactlab.experiment.errors import FileFormatError
 from impactlab.experiment.markers.c3d import read_c3d
 from impactlab.experiment.markers.csv_format import read_csv_markers
@@ -16,7 +17,7 @@ def read_markers(
     path: str | Path, *, units: str | None = None, rate: float | None = None
 ) -> MarkerTracks:
     """Read marker tracks, choosing the reader by extension (.c3d, else CSV/text)."""
-    p = Path(path)
+    p = check_path(path, "path")
     if p.suffix.lower() == ".c3d":
         return read_c3d(p, units=units)
     if p.suffix.lower() in (".csv", ".txt", ".tsv"):

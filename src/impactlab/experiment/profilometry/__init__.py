@@ -24,19 +24,22 @@ uncertainty); the paper prints them negative (y up). The sliding direction is ``
 Modules: ``heightmap`` (:class:`HeightMap`), ``reading`` (:func:`read_scan`; ``plain`` for
 .npy/.csv maps, ``instrument`` for SurfaceTopography's formats), ``levelling``
 (:func:`level_plane`), ``dent`` (:func:`measure_dent`; ``outline``, ``bottom`` its geometry),
-``metrics`` (:class:`DentMetrics`).
+``metrics`` (:class:`DentMetrics`), ``surface`` (levelled surface, detection, the sign check),
+``plausibility`` (:func:`check_dent`: can the rod make this dent?).
 """
 
 from impactlab.experiment.profilometry.dent import measure_dent
 from impactlab.experiment.profilometry.heightmap import HeightMap
 from impactlab.experiment.profilometry.levelling import Levelled, level_plane
 from impactlab.experiment.profilometry.metrics import DentMetrics
+from impactlab.experiment.profilometry.plausibility import check_dent
 from impactlab.experiment.profilometry.reading import read_scan
 
 __all__ = [
     "DentMetrics",
     "HeightMap",
     "Levelled",
+    "check_dent",
     "level_plane",
     "measure_dent",
     "read_scan",

@@ -15,95 +15,22 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import ndimage
 
-from impactlab.experiment.errors import DentCutOffError, DentNotFoundError, ScanError
+from impactlab.experiment.checks import check_instance
+from impactlab.experiment.errors import ScanError
 from impactlab.experiment.profilometry.bottom import bottom
 from impactlab.experiment.profilometry.heightmap import HeightMap
-from impactlab.experiment.profilometry.levelling import Levelled, level_plane
 from impactlab.experiment.profilometry.metrics import DentMetrics
-from impactlab.experiment.profilometry.outline import (
-    chord,
-    edges_touched,
-    fall_distance,
-    feret,
-    fill_nan,
-    outline,
-    sample,
+from impactlab.experiment.profilometry.outline import chord, fall_distance, feret, outline, sample
+from impactlab.experiment.profilometry.surface import (
+    Surface,
+    dent_region,
+    filled_fraction,
+    find_dent,
+    surface,
 )
 from impactlab.experiment.uncertainty import Estimate
 
 __all__ = ["DentMetrics", "measure_dent"]
-
-
-@dataclass(frozen=True)
-class _Surface:
-    """The levelled scan: ``zl`` (NaN = no data), ``valid``, ``zs`` (filled and smoothed),
-    ``was_nan`` (filled pixels), ``sig_s`` (noise of ``zs`` [m]), ``lev``, pixel sizes, ``src``."""
-
-    zl: np.ndarray
-    valid: np.ndarray
-    zs: np.ndarray
-    was_nan: np.ndarray
-    sig_s: float
-    lev: Levelled
-    dx: float
-    dy: float
-    src: str
-
-
-def _surface(hm: HeightMap, smooth: float) -> _Surface:
-    lev = level_plane(hm)
-    zl = np.asarray(lev.z)
-    valid = np.isfinite(zl)
-    zf, was_nan = fill_nan(zl)
-    zs = ndimage.gaussian_filter(zf, smooth, mode="nearest") if smooth > 0 else zf
-    # noise of the smoothed map on the plane's inliers
-    r = zs[lev.inliers]
-    sig_s = float(1.4826 * np.median(np.abs(r - np.median(r)))) if r.size else lev.sigma
-    sig_s = max(sig_s, 1e-15)
-    return _Surface(zl, valid, zs, was_nan, sig_s, lev, hm.dx, hm.dy, hm.source or "scan")
-
-
-def _find(sf: _Surface, detect_sigma: float, min_pixels: int) -> tuple[int, int]:
-    """(i, j) of the deepest pixel of the deepest depression below the detection threshold."""
-    zs, sig_s, src = sf.zs, sf.sig_s, sf.src
-    cand = zs < -detect_sigma * sig_s
-    lab, nlab = ndimage.label(cand, structure=np.ones((3, 3)))
-    deepest_val = float(np.min(zs))
-    if nlab == 0:
-        raise DentNotFoundError(
-            f"{src}: no dent found: the deepest point is {-deepest_val * 1e6:.3g} um below the "
-            f"levelled surface, less than the detection threshold {detect_sigma:g} x noise = "
-            f"{detect_sigma * sig_s * 1e6:.3g} um"
-        )
-    sizes = ndimage.sum(np.ones_like(zs), lab, index=np.arange(1, nlab + 1))
-    depths = ndimage.minimum(zs, lab, index=np.arange(1, nlab + 1))
-    good = [i for i in range(nlab) if sizes[i] >= min_pixels]
-    if not good:
-        raise DentNotFoundError(
-            f"{src}: no dent found: the depressions below the detection threshold "
-            f"({detect_sigma * sig_s * 1e6:.3g} um) cover at most {int(max(sizes))} pixels "
-            f"(need {min_pixels}); dust or noise, not a dent"
-        )
-    best = min(good, key=lambda i: depths[i])
-    comp = lab == best + 1
-    idx = int(np.argmin(np.where(comp, zs, np.inf)))
-    i0, j0 = np.unravel_index(idx, zs.shape)
-    return int(i0), int(j0)
-
-
-def _region(sf: _Surface, ij: tuple[int, int], thr: float) -> np.ndarray:
-    """The deformed area: the connected region around ``ij`` deeper than ``thr`` (holes
-    filled); DentCutOffError when it reaches the scan's edge."""
-    lab2, _ = ndimage.label(sf.zs < -thr, structure=np.ones((3, 3)))
-    region = ndimage.binary_fill_holes(lab2 == lab2[ij])
-    edges = edges_touched(region)
-    if edges:
-        raise DentCutOffError(
-            f"{sf.src}: the dent is cut off by the scan's {' and '.join(edges)} edge: its outline "
-            f"(depth {thr * 1e6:.3g} um) reaches the edge, so its length cannot be measured; "
-            "scan a larger area around the dent"
-        )
-    return np.asarray(region)
 
 
 @dataclass(frozen=True)
@@ -120,21 +47,8 @@ class _Extent:
     extrapolated: bool
 
 
-def _filled(sf: _Surface, region: np.ndarray, max_filled: float, warnings: list[str]) -> float:
-    """Fraction of the deformed area filled over dropouts; ScanError above ``max_filled``."""
-    filled = float(sf.was_nan[region].mean())
-    if filled > max_filled:
-        raise ScanError(
-            f"{sf.src}: {filled:.0%} of the dent area has no data (dropouts); at "
-            f"most {max_filled:.0%} can be interpolated"
-        )
-    if filled > 0.05:
-        warnings.append(f"{filled:.0%} of the dent area was interpolated over dropouts")
-    return filled
-
-
 def _deepest(
-    sf: _Surface,
+    sf: Surface,
     polygon: np.ndarray,
     ij: tuple[int, int],
     depth_rough: float,
@@ -152,7 +66,7 @@ def _deepest(
     return float(sf.zs[i0, j0]), sf.lev.sigma, float(j0 * dx), float(i0 * dy)
 
 
-def _extent(sf: _Surface, thr: float, depth: float, deepest: np.ndarray) -> _Extent:
+def _extent(sf: Surface, thr: float, depth: float, deepest: np.ndarray) -> _Extent:
     def metrics_at(level: float) -> tuple[float, float, np.ndarray] | None:
         ol = outline(sf.zs, sf.dx, sf.dy, -level, (float(deepest[0]), float(deepest[1])))
         if ol is None:
@@ -178,7 +92,7 @@ def _extent(sf: _Surface, thr: float, depth: float, deepest: np.ndarray) -> _Ext
 
 
 def _profiles(
-    sf: _Surface, deepest: np.ndarray, axis: np.ndarray, length: float, width: float
+    sf: Surface, deepest: np.ndarray, axis: np.ndarray, length: float, width: float
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """(s, heights) along the axis and (s, heights) across it, through the deepest point [m]."""
     zs, dx, dy = sf.zs, sf.dx, sf.dy
@@ -275,7 +189,7 @@ def _sigmas(
 
 
 def _pileup(
-    sf: _Surface, region: np.ndarray, width: float, pileup_band: float
+    sf: Surface, region: np.ndarray, width: float, pileup_band: float
 ) -> tuple[float, tuple[float, float]]:
     """Height [m] and (x, y) [m] of the highest point in a band around the deformed area."""
     dx, dy, zs = sf.dx, sf.dy, sf.zs
@@ -318,23 +232,53 @@ def measure_dent(
     Raises :class:`DentNotFoundError` (no dent), :class:`DentCutOffError` (the dent reaches the
     scan's edge) or :class:`ScanError`.
     """
-    sf = _surface(hm, smooth)
-    src, zs, dx, dy, lev = sf.src, sf.zs, sf.dx, sf.dy, sf.lev
-    i0, j0 = _find(sf, detect_sigma, min_pixels)
-    depth_rough = -float(zs[i0, j0])
-    thr = max(edge_sigma * sf.sig_s, edge_fraction * depth_rough)
-    region = _region(sf, (i0, j0), thr)
+    check_instance(hm, HeightMap, "hm", "read one with read_scan()")
+    sf = surface(hm, smooth)
     warnings: list[str] = []
-    filled = _filled(sf, region, max_filled, warnings)
-    polygon = outline(zs, dx, dy, -thr, (float(j0 * dx), float(i0 * dy)))
+    i0, j0 = find_dent(sf, detect_sigma, min_pixels)
+    depth_rough = -float(sf.zs[i0, j0])
+    thr = max(edge_sigma * sf.sig_s, edge_fraction * depth_rough)
+    region = dent_region(sf, (i0, j0), thr)
+    filled = filled_fraction(sf, region, max_filled, warnings)
+    polygon = outline(sf.zs, sf.dx, sf.dy, -thr, (float(j0 * sf.dx), float(i0 * sf.dy)))
     if polygon is None:
         raise ScanError(
-            f"{src}: no closed outline around the deepest point at {-thr * 1e6:.3g} "
+            f"{sf.src}: no closed outline around the deepest point at {-thr * 1e6:.3g} "
             "um; the dent is too irregular to measure"
         )
     zmin, zsig, xm, ym = _deepest(sf, polygon, (i0, j0), depth_rough, quad_radius, warnings)
-    depth = -zmin
-    deepest = np.array([xm, ym])
+    # fit noise, plus an allowance of a quarter of the noise sigma for the levelling plane and the
+    # paraboloid's model error (validated on the synthetic grooves of the tests)
+    delta_p = Estimate(-zmin, math.sqrt(zsig**2 + (0.25 * sf.lev.sigma) ** 2), "m")
+    if delta_p.value < 5.0 * sf.lev.sigma:
+        warnings.append(
+            f"delta_p = {delta_p.value * 1e6:.3g} um is only {delta_p.value / sf.lev.sigma:.2g} "
+            f"times the scan's noise ({sf.lev.sigma * 1e6:.2g} um): the dent is barely resolved"
+        )
+    return _metrics(
+        hm, sf, delta_p, np.array([xm, ym]), polygon, thr, region, filled, pileup_band, warnings
+    )
+
+
+def _xy(v: np.ndarray | tuple[float, float]) -> tuple[float, float]:
+    return float(v[0]), float(v[1])
+
+
+def _metrics(
+    hm: HeightMap,
+    sf: Surface,
+    delta_p: Estimate,
+    deepest: np.ndarray,
+    polygon: np.ndarray,
+    thr: float,
+    region: np.ndarray,
+    filled: float,
+    pileup_band: float,
+    warnings: list[str],
+) -> DentMetrics:
+    """The dent's extent, sliding axis, profiles, uncertainties and pile-up around its deepest
+    point ``deepest`` (x, y) [m] and its outline ``polygon`` at the threshold ``thr`` [m]."""
+    depth = delta_p.value
     ext = _extent(sf, thr, depth, deepest)
     length, width = ext.length, ext.width
     s, prof, sc, cprof = _profiles(sf, deepest, ext.axis, length, width)
@@ -342,7 +286,6 @@ def measure_dent(
     # extent along the axis from the outline, for the deepest point's position
     proj = (polygon - deepest) @ axis
     s_start, s_end = float(proj.min()), float(proj.max())
-    frac = -s_start / (s_end - s_start) if s_end > s_start else 0.5
     noise = _outline_noise(sf.sig_s, s, prof, (s_start, s_end), sc, cprof, width)
     sig_len, sig_wid, sig_ls = _sigmas(ext, thr, depth, noise)
     if not ext.extrapolated:
@@ -350,32 +293,29 @@ def measure_dent(
             "the dent is too shallow to extrapolate its outline to the zero "
             "threshold; length and width are taken at the threshold"
         )
-    # fit noise, plus an allowance of a quarter of the noise sigma for the levelling plane and the
-    # paraboloid's model error (validated on the synthetic grooves of the tests)
-    sig_depth = math.sqrt(zsig**2 + (0.25 * lev.sigma) ** 2)
     pileup, pile_at = _pileup(sf, region, width, pileup_band)
     return DentMetrics(
-        delta_p=Estimate(depth, sig_depth, "m"),
+        delta_p=delta_p,
         sliding_length=Estimate(length - width, sig_ls, "m"),
         length=Estimate(length, sig_len, "m"),
         width=Estimate(width, sig_wid, "m"),
-        deepest=(float(deepest[0]), float(deepest[1])),
-        axis=(float(axis[0]), float(axis[1])),
+        deepest=_xy(deepest),
+        axis=_xy(axis),
         sliding_angle=math.degrees(math.atan2(axis[1], axis[0])),
         direction_ambiguous=bool(ambiguous),
         end_sharpness=(float(d_minus), float(d_plus)),
-        deepest_fraction=float(frac),
+        deepest_fraction=float(-s_start / (s_end - s_start) if s_end > s_start else 0.5),
         pileup=pileup,
         pileup_at=pile_at,
         outline=polygon,
         edge_threshold=thr,
-        noise=lev.sigma,
-        plane=lev.plane,
+        noise=sf.lev.sigma,
+        plane=sf.lev.plane,
         dropout_fraction=float(1.0 - sf.valid.mean()),
         filled_in_dent=filled,
         profile=(s, prof),
         cross_profile=(sc, cprof),
-        levelled=HeightMap(sf.zl, dx, dy, hm.source, {"levelled": True}),
+        levelled=HeightMap(sf.zl, sf.dx, sf.dy, hm.source, {"levelled": True}),
         source=hm.source,
         warnings=tuple(warnings),
     )

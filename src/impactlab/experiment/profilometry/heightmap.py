@@ -50,6 +50,11 @@ class HeightMap:
     def valid(self) -> np.ndarray:
         return np.isfinite(self.z)
 
+    def flipped(self) -> HeightMap:
+        """The same scan the other way up (heights negated): for a file that stores depths as
+        positive heights (``meta["flipped"]`` is then True)."""
+        return HeightMap(-self.z, self.dx, self.dy, self.source, {**self.meta, "flipped": True})
+
     def coords(self) -> tuple[np.ndarray, np.ndarray]:
         """Pixel-centre coordinate grids (X, Y) [m]."""
         ny, nx = self.shape

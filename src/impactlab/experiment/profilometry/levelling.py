@@ -7,9 +7,10 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import ndimage
 
+from impactlab.experiment.checks import check_instance
 from impactlab.experiment.profilometry.heightmap import HeightMap
 
-__all__ = ["Levelled", "level_plane"]
+__all__ = ["BORDER", "K_SIGMA", "Levelled", "level_plane"]
 
 
 @dataclass(frozen=True)
@@ -25,11 +26,17 @@ class Levelled:
     iterations: int
 
 
+#: Outlier threshold [noise sigmas] of the levelling plane's inliers.
+K_SIGMA = 3.0
+#: Width of the border frame the first plane is fitted to, as a fraction of the scan's size.
+BORDER = 0.12
+
+
 def level_plane(
     hm: HeightMap,
     *,
-    k: float = 3.0,
-    border: float = 0.12,
+    k: float = K_SIGMA,
+    border: float = BORDER,
     max_iter: int = 30,
     exclude_dilation: int = 3,
 ) -> Levelled:
@@ -40,6 +47,7 @@ def level_plane(
     residuals (1.4826 x median absolute deviation), new inliers = pixels within ``k`` sigma,
     with the outliers' neighbourhood (``exclude_dilation`` pixels) excluded too; stop when the
     inlier set no longer changes."""
+    check_instance(hm, HeightMap, "hm", "read one with read_scan()")
     z = hm.z
     valid = np.isfinite(z)
     X, Y = hm.coords()

@@ -15,32 +15,33 @@ __all__ = ["DentMetrics"]
 
 @dataclass(frozen=True)
 class DentMetrics:
-    """The dent measured on a scan (SI; definitions in the package docstring).
-
-    ``delta_p`` (maximum depth below the levelled surface, a positive magnitude),
-    ``sliding_length`` (L_s = length - width, a magnitude: >= 0 up to its uncertainty, not
-    clipped), ``length``, ``width``: :class:`Estimate` [m]. ``deepest`` (x, y) [m] in the scan;
-    ``axis`` unit vector of the sliding axis (scan x, y) oriented along the sliding direction;
-    ``sliding_angle`` [deg] of that direction from the scan's +x axis; ``direction_ambiguous``;
-    ``end_sharpness`` (80 %-to-20 % fall distance [m] at the start and at the end);
-    ``deepest_fraction`` (position of the deepest point from the start, 0..1); ``pileup`` [m]
-    and ``pileup_at`` (x, y); ``outline`` (k, 2) [m]; ``edge_threshold``, ``noise`` [m];
-    ``plane``; ``dropout_fraction`` (whole scan) and ``filled_in_dent`` (fraction of the dent
-    area interpolated); ``profile`` (s [m] along the axis from the deepest point, height [m])
-    and ``cross_profile`` (the same across it).
-    """
+    """The dent measured on a scan (SI; definitions in the package docstring). ``outline``
+    (k, 2) [m]; ``edge_threshold``, ``noise`` [m]; ``plane``; ``dropout_fraction`` (whole scan)
+    and ``filled_in_dent`` (fraction of the dent area interpolated); ``profile`` (s [m] along
+    the axis from the deepest point, height [m]) and ``cross_profile`` (the same across it)."""
 
     delta_p: Estimate
+    """Maximum depth below the levelled surface [m], a positive magnitude."""
     sliding_length: Estimate
+    """L_s = length - width [m], a magnitude: >= 0 up to its uncertainty, not clipped."""
     length: Estimate
+    """Largest Feret diameter of the deformed area [m], along the sliding axis."""
     width: Estimate
+    """Width at the deepest point [m], perpendicular to the sliding axis."""
     deepest: tuple[float, float]
+    """(x, y) of the deepest point in the scan [m]."""
     axis: tuple[float, float]
+    """Unit vector of the sliding axis (scan x, y), oriented along the sliding direction."""
     sliding_angle: float
+    """Angle [deg] of the sliding direction from the scan's +x axis."""
     direction_ambiguous: bool
+    """Both ends of the dent equally sharp (within 10 %): the direction is a guess."""
     end_sharpness: tuple[float, float]
+    """80 %-to-20 % fall distance [m] at the start and at the end."""
     deepest_fraction: float
+    """Position of the deepest point from the start, 0..1."""
     pileup: float
+    """Height of the pile-up [m]; ``pileup_at`` its (x, y)."""
     pileup_at: tuple[float, float]
     outline: np.ndarray = field(repr=False)
     edge_threshold: float = 0.0

@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
+from impactlab.experiment.checks import check_path
 from impactlab.experiment.errors import FileFormatError, MissingDependencyError
 from impactlab.experiment.profilometry.heightmap import HeightMap
 from impactlab.experiment.profilometry.instrument import read_instrument
@@ -33,7 +34,7 @@ def read_scan(
     Raises :class:`FileFormatError` naming the file for a missing, corrupt, truncated or
     unrecognised file, :class:`MissingDependencyError` when SurfaceTopography is needed but absent.
     """
-    p = Path(path)
+    p = check_path(path, "path")
     if not p.is_file():
         raise FileFormatError(p, "file does not exist" if not p.exists() else "not a file")
     if p.stat().st_size == 0:

@@ -1,0 +1,125 @@
+"""The measured inputs of the inversion (``impactlab.analytic.invert``): each one as
+:class:`~impactlab.analytic.result.Measured` in SI, its range checked, and the plausibility of
+the whole against the rod (ValueError for the impossible, ImplausibleInputWarning for the
+implausible)."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from typing import Any
+
+from impactlab._validation import warn_implausible
+from impactlab.analytic._inputs import HALF_PI
+from impactlab.analytic.result import Measured, measured
+
+__all__ = [
+    "PLAUSIBLE_DENT_RATIO",
+    "PLAUSIBLE_DURATION",
+    "PLAUSIBLE_SPEED",
+    "check_plausible",
+    "measurements",
+]
+
+_CONVENTION = "the paper's tables print it negative, impactlab takes the magnitude"
+
+#: Units of the measured inputs ("": a plain number).
+_UNITS = {
+    "angle": "rad",
+    "v_i": "m/s",
+    "mu": "",
+    "delta_p": "m",
+    "sliding_length": "m",
+    "e": "",
+    "dv_cy": "m/s",
+}
+#: The inputs that are magnitudes although the paper prints them negative.
+_MAGNITUDES = {"delta_p": "the permanent dent depth", "sliding_length": "the length of the scar"}
+
+
+def _label(name: str) -> str:
+    """The name of an input in error messages (the sliding length with the paper's symbol)."""
+    return "sliding_length (L_s)" if name == "sliding_length" else name
+
+
+#: A nominal v_i or dv_cy above this [m/s] draws an ImplausibleInputWarning.
+PLAUSIBLE_SPEED = 100.0
+#: A dent deeper than this fraction of the tip radius draws an ImplausibleInputWarning.
+PLAUSIBLE_DENT_RATIO = 0.1
+#: A nominal impact duration above this [s] draws an ImplausibleInputWarning.
+PLAUSIBLE_DURATION = 0.1
+
+
+def measurements(values: Mapping[str, Any]) -> dict[str, Measured]:
+    """The given inputs (None: not measured) as :class:`Measured` in SI, keyed by name, with
+    ``v_i``, ``delta_p`` and ``sliding_length`` as magnitudes; ValueError naming a bad one."""
+    meas = {k: measured(_label(k), v, _UNITS[k]) for k, v in values.items() if v is not None}
+    if "e" not in meas and "dv_cy" not in meas:
+        raise ValueError(
+            "e or dv_cy is required: F needs the restitution coefficient (rigid-body "
+            "identity) or the centre-of-mass velocity change (Eq. 29)"
+        )
+    for k, what in _MAGNITUDES.items():
+        if meas[k].value < 0.0:
+            raise ValueError(
+                f"{_label(k)} must be >= 0 ({what}, a magnitude in m), got {meas[k].value!r}: "
+                f"{_CONVENTION}"
+            )
+    for k in ("v_i", "delta_p", "sliding_length"):  # the drop speed; -0.0 -> 0.0
+        meas[k] = Measured(abs(meas[k].value), meas[k].sigma)
+    _check_ranges(meas)
+    return meas
+
+
+def _check_ranges(meas: Mapping[str, Measured]) -> None:
+    """ValueError for a nominal value outside its range (module docstring of ``invert``)."""
+    th = meas["angle"].value
+    if not 0.0 < th < HALF_PI:
+        raise ValueError(
+            f"angle must lie in (0, pi/2) rad, got {th!r} rad "
+            f"({math.degrees(th):.4g} deg); pass radians or a string such as '20 deg'"
+        )
+    if meas["v_i"].value == 0.0:
+        raise ValueError("v_i must be non-zero (the drop speed), got 0.0")
+    if meas["mu"].value < 0.0:
+        raise ValueError(f"mu must be >= 0, got {meas['mu'].value!r}")
+    if meas["sliding_length"].value == 0.0:
+        raise ValueError(
+            "sliding_length (L_s) must be non-zero: in gross sliding any normal "
+            "impulse makes the tip slide, so a zero sliding length cannot be inverted"
+        )
+    if "e" in meas and not 0.0 <= meas["e"].value <= 1.0:
+        raise ValueError(f"e must lie in [0, 1], got {meas['e'].value!r}")
+    if "dv_cy" in meas and meas["dv_cy"].value <= 0.0:
+        raise ValueError(
+            f"dv_cy must be > 0 (upward change of the centre-of-mass velocity), got "
+            f"{meas['dv_cy'].value!r}"
+        )
+
+
+def check_plausible(meas: Mapping[str, Measured], length: float, tip_radius: float) -> None:
+    """ValueError for what is impossible for this rod (a dent deeper than the tip radius, a
+    sliding length longer than the rod); ImplausibleInputWarning for a dent deeper than
+    ``PLAUSIBLE_DENT_RATIO`` R or a speed above ``PLAUSIBLE_SPEED``."""
+    dp, ls = meas["delta_p"].value, meas["sliding_length"].value
+    if dp > tip_radius:
+        raise ValueError(
+            f"delta_p = {dp!r} m is deeper than the rod's tip radius ({tip_radius!r} m): a dent "
+            "cannot be deeper than the sphere that made it; check the units (SI: m)"
+        )
+    if ls > length:
+        raise ValueError(
+            f"sliding_length = {ls!r} m is longer than the rod ({length!r} m); check the units "
+            "(SI: m)"
+        )
+    if dp > PLAUSIBLE_DENT_RATIO * tip_radius:
+        warn_implausible(
+            f"delta_p = {dp!r} m is deeper than {PLAUSIBLE_DENT_RATIO:g} of the tip radius "
+            f"({tip_radius!r} m), far beyond the contact laws' range; check the units (SI: m)"
+        )
+    for k in ("v_i", "dv_cy"):
+        if k in meas and abs(meas[k].value) > PLAUSIBLE_SPEED:
+            warn_implausible(
+                f"{k} = {meas[k].value!r} m/s exceeds {PLAUSIBLE_SPEED:g} m/s; check the units "
+                "(SI: m/s)"
+            )

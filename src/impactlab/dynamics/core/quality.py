@@ -1,0 +1,43 @@
+"""The result flags of a finished impact (``impactlab.flags``): energy gain and gravity
+dominance, from the energy balance and the impulses at separation (docs/engine/index.md,
+"Result flags")."""
+
+from __future__ import annotations
+
+from numba import njit
+
+from impactlab.flags import (
+    ENERGY_GAIN_RTOL_FACTOR,
+    ENERGY_ROUNDOFF,
+    FLAG_ENERGY_GAIN,
+    FLAG_GRAVITY_DOMINATED,
+    GRAVITY_IMPULSE_RATIO,
+)
+
+
+@njit(cache=True, error_model="numpy")
+def energy_gained(e0, e_kin, e_pot, rtol):
+    """True when the total energy at separation, kinetic ``e_kin`` + gravity potential
+    ``e_pot`` [J], exceeds the initial kinetic energy ``e0`` [J] by more than the integration
+    tolerance: (ENERGY_GAIN_RTOL_FACTOR rtol + ENERGY_ROUNDOFF) times the energy scale of the
+    balance, e0 + e_kin + |e_pot|."""
+    scale = e0 + e_kin + abs(e_pot)
+    return e_kin + e_pot - e0 > (ENERGY_GAIN_RTOL_FACTOR * rtol + ENERGY_ROUNDOFF) * scale
+
+
+@njit(cache=True, error_model="numpy")
+def gravity_dominated(gravity_impulse, normal_impulse):
+    """True when gravity's impulse m g T [N s] exceeds GRAVITY_IMPULSE_RATIO of the contact's
+    normal impulse P_n [N s] (never without gravity)."""
+    return gravity_impulse > 0.0 and gravity_impulse > GRAVITY_IMPULSE_RATIO * normal_impulse
+
+
+@njit(cache=True, error_model="numpy")
+def result_flags(e0, e_kin, e_pot, rtol, gravity_impulse, normal_impulse):
+    """The ``flags`` output (a ``ResultFlag`` bitmask, as a float) of an impact that separated."""
+    flags = 0
+    if energy_gained(e0, e_kin, e_pot, rtol):
+        flags |= FLAG_ENERGY_GAIN
+    if gravity_dominated(gravity_impulse, normal_impulse):
+        flags |= FLAG_GRAVITY_DOMINATED
+    return float(flags)

@@ -1,0 +1,307 @@
+"""``simulate_drop``: the drop of a flexible rod (or, as its rigid limit, a rigid rod) on a flat,
+the whole contact sequence from the first touch of the tip until the rod leaves the flat for good
+(SI units; the model: docs/flexible.md).
+
+The Python layer validates the input, builds the contact model with the package's one builder
+(``impactlab.dynamics.models``), the modal basis of the body (``impactlab.bodies``) and, for a
+rate-dependent flat, iterates the self-consistent rate factor (``impactlab.contact.rate``); the
+drop itself runs in the compiled integrator ``impactlab.dynamics.flexcore``.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import Any, cast
+
+import numpy as np
+
+from impactlab._validation import check_finite, check_nonnegative, check_positive
+from impactlab.bodies import Rod
+from impactlab.bodies.flexible_rod import FlexibleRod
+from impactlab.bodies.modal import MODAL_REFERENCES
+from impactlab.contact import ContactModel
+from impactlab.contact.kernels import loading_contact_radius
+from impactlab.contact.rate import RateFactor, get_rate_law, rate_materials, self_consistent_factor
+from impactlab.dynamics.checks import (
+    check_angle,
+    check_flat,
+    check_rtol,
+    check_velocity,
+    gravity_value,
+)
+from impactlab.dynamics.drop_result import ContactRecord, DentRecord, DropHistory, DropResult
+from impactlab.dynamics.flexcore import drop
+from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.flexcore.model import constants, model_tuple
+from impactlab.dynamics.models import (
+    build_contact_model,
+    contact_model,
+    kernel_params,
+    references_used,
+)
+from impactlab.friction import DEFAULT_MU, FrictionKind, get_friction
+from impactlab.materials import AISI_1010, Material
+from impactlab.references import Reference
+
+__all__ = ["DEFAULT_T_MAX", "STOP_MODES", "simulate_drop"]
+
+#: Longest simulated time after the first touch [s] (a sequence still going is an error).
+DEFAULT_T_MAX = 0.5
+#: ``stop`` values: the tip's sequence (the other end's landing is a new impact), or the whole
+#: flight through the other end's impacts until the rod flies off.
+STOP_MODES = ("sequence", "flight")
+
+
+@dataclass(frozen=True, eq=False)
+class _BodyModel:
+    """What the integrator needs of a body: geometry, inertia, material and the modal data."""
+
+    rigid: Rod
+    inertia: float
+    omega: np.ndarray
+    zeta: np.ndarray
+    U: np.ndarray
+    W: np.ndarray
+    Psi: np.ndarray
+    geometric: tuple[np.ndarray, np.ndarray, np.ndarray] | None
+    description: str
+    references: tuple[Reference, ...]
+
+
+@functools.lru_cache(maxsize=64)
+def _body_model(body: FlexibleRod | Rod) -> _BodyModel:
+    if isinstance(body, Rod):
+        empty = np.zeros((2, 0))
+        desc = f"rigid Rod (L = {body.length:g} m, I_C = {body.inertia:.5g} kg m^2)"
+        inertia = cast(float, body.inertia)  # a float after Rod.__post_init__
+        return _BodyModel(
+            body, inertia, np.zeros(0), np.zeros(0), empty, empty, empty, None, desc, ()
+        )
+    b = body.basis()
+    desc = (
+        f"FlexibleRod ({body.theory}, {body.n_axial} axial"
+        f"{' + 2 residual' if body.axial_residual else ''}, {body.n_bending} bending modes"
+        f"{', geometric stiffness' if body.geometric else ''}, zeta = {body.damping:g})"
+    )
+    return _BodyModel(
+        body.rigid(),
+        b.inertia,
+        b.omega,
+        np.full(b.n_modes, body.damping),
+        b.U,
+        b.W,
+        b.Psi,
+        body.geometric_tensor() if body.geometric else None,
+        desc,
+        MODAL_REFERENCES if b.n_modes else (),
+    )
+
+
+def _check_body(body: Any) -> FlexibleRod | Rod:
+    if not isinstance(body, FlexibleRod | Rod):
+        raise ValueError(f"body must be an impactlab FlexibleRod or Rod, got {type(body).__name__}")
+    return body
+
+
+def _check_friction(friction: str, mu: float) -> tuple[Any, float]:
+    fric = get_friction(friction)
+    if fric.kind != FrictionKind.COULOMB:
+        raise ValueError(
+            f"friction: the drop integrator implements the 'coulomb' model only, got "
+            f"{friction!r} (with mu = 0 the model does not matter)"
+        )
+    return fric, check_nonnegative("mu", mu)
+
+
+def _check_stop(stop: Any, t_max: Any) -> tuple[float, int]:
+    """(t_max [s], the compiled stop mode)."""
+    if stop not in STOP_MODES:
+        raise ValueError(f"stop must be one of {STOP_MODES}, got {stop!r}")
+    return check_positive("t_max", t_max, "s"), STOP_MODES.index(stop)
+
+
+def _status_error(status: int, model: ContactModel) -> ValueError:
+    """The ValueError of a failed drop (``layout.ST_*``)."""
+    text = F.STATUS_MESSAGES.get(status, f"status {status}")
+    hints = {
+        F.ST_LAW_LIMIT: f" ({model.max_interference:.6g} m for the {model.name!r} law): lower "
+        "the impact velocity or choose another law",
+        F.ST_TMAX: ": raise t_max",
+    }
+    return ValueError(f"drop: {text}{hints.get(status, '')}")
+
+
+@dataclass(frozen=True)
+class _Run:
+    status: int
+    out: np.ndarray
+    contacts: np.ndarray
+    dents: np.ndarray
+    history: np.ndarray | None
+
+
+def _run(
+    bm: _BodyModel,
+    model: ContactModel,
+    state: tuple[float, float, float, float],
+    mu: float,
+    g: float,
+    options: tuple[float, float, int, bool],
+) -> _Run:
+    """One compiled drop. state = (angle, vx, vy, spin); options = (rtol, t_max, stop, history)."""
+    angle, vx, vy, w = state
+    rtol, t_max, stop, history = options
+    rod = bm.rigid
+    p = kernel_params(model)
+    c = constants(rod.half_length, rod.tip_radius, rod.mass, bm.inertia, g, angle, mu, p)
+    mdl = model_tuple(model.law_id, p, c, bm.omega, bm.zeta, bm.U, bm.W, bm.Psi, bm.geometric)
+    out = np.empty(F.N_OUT)
+    contacts = np.zeros((F.MAX_CONTACTS, F.NCR))
+    dents = np.zeros((F.MAX_DENTS, F.NDT))
+    yfinal = np.zeros(6 + 2 * bm.omega.size + F.NQUAD)
+    st, ncon, nd, hist, _nh = drop(
+        mdl, vx, vy, w, rtol, t_max, stop, history, out, contacts, dents, yfinal
+    )
+    return _Run(int(st), out, contacts[:ncon].copy(), dents[:nd].copy(), hist if history else None)
+
+
+def _first_contact_radius(run: _Run, model: ContactModel) -> float:
+    """a_m: the contact radius at the largest interference of the first contact [m]."""
+    if run.status != F.ST_OK:
+        raise _status_error(run.status, model)
+    dm = float(run.contacts[0, F.CR_DMAX])
+    return float(loading_contact_radius(model.law_id, kernel_params(model), dm))
+
+
+def _rate_model(
+    rate: Any,
+    law: str | ContactModel,
+    body: Rod,
+    flat: Material,
+    law_params: Mapping[str, float] | None,
+    run: Any,
+    vn0: float,
+) -> tuple[ContactModel, RateFactor | None]:
+    """The contact model, with the flat's yield strength raised by the self-consistent rate
+    factor when ``rate`` names a rate law (``impactlab.contact.rate``)."""
+    if rate is None:
+        return contact_model(body, flat, law, law_params), None
+    rate_law = get_rate_law(rate)
+    if not isinstance(law, str):
+        raise ValueError("rate needs the law as a name (the flat's yield strength is rebuilt)")
+
+    def build(k: float) -> ContactModel:
+        body_k, flat_k = rate_materials(body.material, flat, k)
+        return build_contact_model(law, body_k, flat_k, body.tip_radius, law_params)
+
+    def contact_radius(k: float) -> float:
+        model = build(k)
+        return _first_contact_radius(run(model), model)
+
+    factor = self_consistent_factor(contact_radius, rate_law, vn0)
+    return build(factor.k), factor
+
+
+def _result(
+    r: _Run,
+    bm: _BodyModel,
+    model: ContactModel,
+    inputs: dict[str, Any],
+    rate: tuple[str | None, RateFactor | None],
+    references: tuple[Reference, ...],
+) -> DropResult:
+    o: dict[str, Any] = {name: float(v) for name, v in zip(F.OUTPUT_FIELDS, r.out, strict=True)}
+    m = bm.rigid.mass
+    vx, vy = inputs["velocity_in"]
+    e0 = 0.5 * m * (vx * vx + vy * vy) + 0.5 * bm.inertia * inputs["spin_in"] ** 2
+    skip = {"vx_out", "vy_out", "n_contacts", "next_end", "n_steps", "n_jumps", "n_dents"}
+    skip |= {"t_final"}
+    return DropResult(
+        contacts=tuple(ContactRecord.from_row(row) for row in r.contacts),
+        dents=tuple(DentRecord.from_row(row) for row in r.dents),
+        n_contacts=int(o["n_contacts"]),
+        velocity_out=(o["vx_out"], o["vy_out"]),
+        initial_energy=e0,
+        next_end=int(o["next_end"]),
+        n_steps=int(o["n_steps"]),
+        body=bm.description,
+        n_modes=int(bm.omega.size),
+        law=model.name,
+        rate=rate[0],
+        rate_factor=rate[1].k if rate[1] is not None else 1.0,
+        strain_rate=rate[1].strain_rate if rate[1] is not None else math.nan,
+        history=DropHistory(r.history) if r.history is not None else None,
+        references=references,
+        **inputs,
+        **{k: v for k, v in o.items() if k not in skip},
+    )
+
+
+def simulate_drop(
+    body: FlexibleRod | Rod,
+    flat: Material = AISI_1010,
+    *,
+    law: str | ContactModel = "ghaednia",
+    friction: str = "coulomb",
+    mu: float = DEFAULT_MU,
+    angle: float,
+    velocity: tuple[float, float],
+    spin: float = 0.0,
+    gravity: bool | float = True,
+    rate: str | None = None,
+    rtol: float | None = None,
+    history: bool = False,
+    law_params: Mapping[str, float] | None = None,
+    stop: str = "sequence",
+    t_max: float = DEFAULT_T_MAX,
+) -> DropResult:
+    """Simulate the drop of ``body`` on ``flat`` from the first touch of its tip (end 0, at
+    delta = 0, undeformed, modes at rest) until it leaves the flat for good (SI units).
+
+    body: a FlexibleRod, or a rigid Rod (the rigid limit: no modes); flat: the flat's material;
+    law: a registered law name (or a ContactModel; no ``rate`` then); friction: ``"coulomb"``
+    (the only model of the drop integrator); mu >= 0; angle [rad] in (0, pi/2]; velocity
+    (vx, vy) of the centre of mass at first touch [m/s]; spin [rad/s]; gravity: True, False or
+    a value [m/s^2]; rate: None, ``"cowper-symonds"`` or ``"johnson-cook"`` (the flat's yield
+    strength raised by the self-consistent rate factor, ``impactlab.contact.rate``); rtol:
+    relative tolerance (default 1e-7); history: keep the time history; law_params: the law's
+    parameters; stop: ``"sequence"`` (stop when the tip is clear until the other end could
+    land: that is a new impact, ``next_end`` / ``next_time``) or ``"flight"`` (go on through
+    the other end's impacts); t_max [s]: the longest simulated time.
+
+    Returns a DropResult: every contact, the dents, the totals, the energy balance, the
+    history if asked, the references. ValueError for invalid input or a failed integration.
+    """
+    body = _check_body(body)
+    bm = _body_model(body)
+    flat = check_flat(flat)
+    fric, mu_v = _check_friction(friction, mu)
+    th = check_angle(angle, bm.rigid)
+    vx, vy = check_velocity(velocity)
+    w = check_finite("spin", spin)
+    g = gravity_value(gravity)
+    options = (check_rtol(rtol if rtol is not None else F.DEFAULT_RTOL), *_check_stop(stop, t_max))
+    vn0 = vy - w * bm.rigid.half_length * math.cos(th)
+    if not vn0 < 0.0:
+        raise ValueError(
+            f"velocity: the tip does not approach the flat (its normal velocity "
+            f"vy - spin * (L/2) cos(angle) = {vn0!r} m/s must be < 0)"
+        )
+
+    def run(model: ContactModel, record: bool = False) -> _Run:
+        return _run(bm, model, (th, vx, vy, w), mu_v, g, (*options, record))
+
+    model, factor = _rate_model(rate, law, bm.rigid, flat, law_params, run, vn0)
+    r = run(model, bool(history))
+    if r.status != F.ST_OK:
+        raise _status_error(r.status, model)
+    refs = references_used(model, fric, mu_v > 0.0) + bm.references
+    if factor is not None:
+        refs += get_rate_law(rate).references
+    inputs = {"friction": fric.name, "mu": mu_v, "angle": th, "velocity_in": (vx, vy)}
+    inputs |= {"spin_in": w, "gravity": g}
+    name = get_rate_law(rate).name if rate is not None else None
+    return _result(r, bm, model, inputs, (name, factor), tuple(dict.fromkeys(refs)))

@@ -1,0 +1,308 @@
+"""Result objects of the flexible drop (``simulate_drop``): immutable, SI units.
+
+``DropResult`` lists every contact of the sequence (``ContactRecord``) and the dents they left
+(``DentRecord``), the totals a user compares with an experiment, the terms of the energy
+balance and, if asked, the history (``DropHistory``). Field units: ``UNITS`` (from the
+integrator's output table ``impactlab.dynamics.flexcore.layout.DROP_FIELDS``).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, fields
+from typing import Any, TypeVar
+
+import numpy as np
+
+from impactlab._display import html_table
+from impactlab._json import jsonable
+from impactlab.dynamics.flexcore import layout as F
+from impactlab.references import Reference
+from impactlab.references import dois as doi_list
+
+__all__ = ["UNITS", "ContactRecord", "DentRecord", "DropHistory", "DropResult"]
+
+_R = TypeVar("_R")
+
+#: Units of the DropResult fields (SI; "1" dimensionless).
+UNITS: dict[str, str] = {f.name: f.unit for f in F.DROP_FIELDS} | {
+    "velocity_out": "m/s",
+    "initial_energy": "J",
+    "angle": "rad",
+    "velocity_in": "m/s",
+    "spin_in": "rad/s",
+    "gravity": "m/s^2",
+    "mu": "1",
+    "rate_factor": "1",
+    "strain_rate": "1/s",
+}
+
+
+@dataclass(frozen=True)
+class ContactRecord:
+    """One contact of the sequence (SI units): the ``end`` that touched (0 the tip, 1 the other
+    end), its ``start`` (from the first touch) and ``duration`` [s], the largest interference
+    ``delta_max`` [m] and force ``max_force`` [N], the normal and tangential impulses [N s], the
+    signed slip integral ``slip`` = int v_t dt and ``slip_path`` = int |v_t| dt [m], the contact
+    point at touch and at separation [m], its ``dent`` (index into ``DropResult.dents``),
+    ``reload`` (True if it started on an existing dent), the dent's ``delta_r`` after it [m], the
+    works of the normal force and of friction [J] and the time spent sticking [s]."""
+
+    end: int
+    start: float
+    duration: float
+    delta_max: float
+    max_force: float
+    normal_impulse: float
+    tangential_impulse: float
+    slip: float
+    slip_path: float
+    x_start: float
+    x_end: float
+    dent: int
+    reload: bool
+    delta_r: float
+    work_normal: float
+    work_friction: float
+    stick_time: float
+
+    @classmethod
+    def from_row(cls, row: np.ndarray) -> ContactRecord:
+        """From one row of the integrator's contact table (``layout.CR_*``)."""
+        return _from_row(cls, row, _CONTACT_COLUMNS)
+
+
+@dataclass(frozen=True)
+class DentRecord:
+    """A dent on the flat (SI units): the ``end`` that made it, the x-range of the contact-point
+    path over it [m], its largest contact radius [m], delta_m, the permanent depth delta_p
+    (= delta_r of its unloading curve) [m], the unloading radius R_r [m], the force F_m at
+    delta_m [N] and the number of contacts on it."""
+
+    end: int
+    x_min: float
+    x_max: float
+    contact_radius: float
+    delta_max: float
+    delta_p: float
+    unloading_radius: float
+    max_force: float
+    n_contacts: int
+
+    @classmethod
+    def from_row(cls, row: np.ndarray) -> DentRecord:
+        """From one row of the integrator's dent table (``layout.DT_*``)."""
+        return _from_row(cls, row, _DENT_COLUMNS)
+
+
+#: Column of each ContactRecord field in the contact table, in field order.
+_CONTACT_COLUMNS = (
+    F.CR_END, F.CR_T0, F.CR_DUR, F.CR_DMAX, F.CR_FMAX, F.CR_PN, F.CR_PT, F.CR_SLIP, F.CR_ASLIP,
+    F.CR_X0, F.CR_X1, F.CR_DENT, F.CR_RELOAD, F.CR_DR, F.CR_WN, F.CR_WT, F.CR_STICK,
+)  # fmt: skip
+#: Column of each DentRecord field in the dent table, in field order.
+_DENT_COLUMNS = (
+    F.DT_END, F.DT_XLO, F.DT_XHI, F.DT_AM, F.DT_DM, F.DT_DR, F.DT_RR, F.DT_FM, F.DT_NC,
+)  # fmt: skip
+
+
+def _from_row(cls: type[_R], row: np.ndarray, columns: tuple[int, ...]) -> _R:
+    """An instance of the record class ``cls`` from a table row: each field from its column,
+    converted to the field's type (float, int or bool)."""
+    kinds = {"int": int, "bool": bool, "float": float}
+    values = {
+        f.name: kinds[str(f.type)](float(row[j]))
+        for f, j in zip(fields(cls), columns, strict=True)  # type: ignore[arg-type]
+    }
+    return cls(**values)
+
+
+@dataclass(frozen=True, eq=False)
+class DropHistory:
+    """The time history of a drop: columns ``impactlab.dynamics.flexcore.layout.HISTORY_FIELDS``
+    (``history["fn0"]``); the properties name the ones a figure needs."""
+
+    data: np.ndarray = field(repr=False)
+
+    def __post_init__(self) -> None:
+        a = np.array(self.data, dtype=np.float64, copy=True)
+        a.setflags(write=False)
+        object.__setattr__(self, "data", a)
+
+    def __len__(self) -> int:
+        return int(self.data.shape[0])
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        if name not in F.HISTORY_FIELDS:
+            raise KeyError(f"unknown history column {name!r}; known: {F.HISTORY_FIELDS}")
+        return self.data[:, F.HISTORY_FIELDS.index(name)]
+
+    @property
+    def t(self) -> np.ndarray:
+        """Time from the first touch [s]."""
+        return self["t"]
+
+    @property
+    def normal_force(self) -> np.ndarray:
+        """Normal contact force on the tip (end 0) [N]."""
+        return self["fn0"]
+
+    @property
+    def tangential_force(self) -> np.ndarray:
+        """Tangential contact force on the tip [N] (+x)."""
+        return self["ft0"]
+
+    @property
+    def tip_x(self) -> np.ndarray:
+        """x of the tip's lowest point (below the centre of its sphere) [m]."""
+        return self["x0"]
+
+    @property
+    def tip_height(self) -> np.ndarray:
+        """Height of the tip's lowest point above the undeformed flat [m] (-delta)."""
+        return -self["delta0"]
+
+    def __repr__(self) -> str:
+        return f"DropHistory({len(self)} rows: {', '.join(F.HISTORY_FIELDS)})"
+
+
+def _contact_text(c: ContactRecord) -> str:
+    return (
+        f"t0 {c.start * 1e3:.4g} ms, {c.duration * 1e3:.3g} ms, delta_max "
+        f"{c.delta_max * 1e6:.4g} um, P_n {c.normal_impulse:.4g} N s"
+    )
+
+
+#: The totals of the summary: field -> (label, unit, scale to the unit).
+_SUMMARY: dict[str, tuple[str, str, float]] = {
+    "n_contacts": ("contacts", "", 1.0),
+    "e": ("e (rigid body, gravity removed)", "", 1.0),
+    "delta_p": ("delta_p (deepest dent)", "um", 1e6),
+    "scar_length": ("scar length", "um", 1e6),
+    "sliding_length": ("sliding length (tip)", "um", 1e6),
+    "duration": ("duration (first touch to last separation)", "ms", 1e3),
+    "max_force": ("largest normal force", "N", 1.0),
+    "spin_out": ("spin after the last contact", "rad/s", 1.0),
+    "vibration_energy": ("energy left in vibration", "J", 1.0),
+    "energy_error": ("energy balance error (relative)", "", 1.0),
+}
+
+
+@dataclass(frozen=True, eq=False)
+class DropResult:
+    """The outcome of one drop (SI units; units of the fields in ``UNITS``). Immutable.
+
+    Totals: ``e`` is the tip's rigid-body normal velocity after the last contact over the one
+    before the first, with the gravity impulse of the sequence removed (as a ballistic fit of
+    marker data would remove it; ``e_raw`` keeps it); velocities and spin are those of the
+    floating frame after the last contact; ``duration`` runs from the first touch to the last
+    separation; ``delta_p`` is the deepest dent's permanent depth; ``scar_length`` the x-extent
+    of the tip's contact-point path over all its contacts. Energy balance (``energy_balance``):
+    rigid kinetic + vibration + potential - initial = work_normal + work_friction +
+    work_damping, to ``energy_error`` of the initial energy.
+    """
+
+    contacts: tuple[ContactRecord, ...]
+    dents: tuple[DentRecord, ...]
+    n_contacts: int
+    e: float
+    e_raw: float
+    velocity_out: tuple[float, float]
+    spin_out: float
+    angle_out: float
+    duration: float
+    delta_p: float
+    delta_max: float
+    scar_length: float
+    sliding_length: float
+    slip_path: float
+    max_force: float
+    normal_impulse: float
+    tangential_impulse: float
+    stick_time: float
+    mu_apparent: float
+    initial_energy: float
+    rigid_kinetic_energy: float
+    vibration_energy: float
+    potential_energy: float
+    work_normal: float
+    work_friction: float
+    work_damping: float
+    energy_error: float
+    next_end: int
+    next_time: float
+    n_steps: int
+    body: str
+    n_modes: int
+    law: str
+    friction: str
+    mu: float
+    gravity: float
+    angle: float
+    velocity_in: tuple[float, float]
+    spin_in: float
+    rate: str | None = None
+    rate_factor: float = 1.0
+    strain_rate: float = math.nan
+    history: DropHistory | None = field(default=None, repr=False)
+    references: tuple[Reference, ...] = field(default=(), repr=False)
+
+    @property
+    def energy_balance(self) -> dict[str, float]:
+        """The terms of the energy balance after the last contact [J] and its ``residual``
+        (rigid kinetic + vibration + potential - initial - works)."""
+        terms = {
+            "initial": self.initial_energy,
+            "rigid_kinetic": self.rigid_kinetic_energy,
+            "vibration": self.vibration_energy,
+            "potential": self.potential_energy,
+            "work_normal": self.work_normal,
+            "work_friction": self.work_friction,
+            "work_damping": self.work_damping,
+        }
+        lhs = self.rigid_kinetic_energy + self.vibration_energy + self.potential_energy
+        works = self.work_normal + self.work_friction + self.work_damping
+        terms["residual"] = lhs - self.initial_energy - works
+        return terms
+
+    def dois(self) -> tuple[str, ...]:
+        """DOIs of the sources this result used, in order, without repeats."""
+        return doi_list(self.references)
+
+    def to_dict(self, *, include_history: bool = False) -> dict[str, Any]:
+        """JSON-ready values: scalars, ``contacts`` and ``dents`` as lists of dicts, the energy
+        balance, the references' citations; the history as lists of columns if asked."""
+        d: dict[str, Any] = {}
+        for f in fields(self):
+            if f.name in ("history", "references", "contacts", "dents"):
+                continue
+            d[f.name] = getattr(self, f.name)
+        d["contacts"] = [c.__dict__ for c in self.contacts]
+        d["dents"] = [x.__dict__ for x in self.dents]
+        d["energy_balance"] = self.energy_balance
+        d["references"] = [str(r) for r in self.references]
+        if include_history and self.history is not None:
+            d["history"] = {k: self.history[k].tolist() for k in F.HISTORY_FIELDS}
+        return jsonable(d)
+
+    def _rows(self) -> list[tuple[str, str, str]]:
+        """(label, value, unit) rows of the summary: set-up, totals, one row per contact."""
+        setup = [("body", self.body), ("law", self.law)]
+        setup.append(("friction", f"{self.friction} (mu = {self.mu:g})"))
+        if self.rate is not None:
+            setup.append(("rate", f"{self.rate} (k = {self.rate_factor:.4g})"))
+        totals = [(lab, f"{getattr(self, k) * f:.5g}", u) for k, (lab, u, f) in _SUMMARY.items()]
+        per_contact = [
+            (f"contact {i + 1} (end {c.end})", _contact_text(c), "")
+            for i, c in enumerate(self.contacts)
+        ]
+        return [(a, b, "") for a, b in setup] + totals + per_contact
+
+    def __str__(self) -> str:
+        rows = self._rows()
+        width = max(len(label) for label, _v, _u in rows)
+        body = (f"  {label.ljust(width)}  {value} {unit}".rstrip() for label, value, unit in rows)
+        return "DropResult\n" + "\n".join(body)
+
+    def _repr_html_(self) -> str:
+        return html_table("DropResult", self._rows())

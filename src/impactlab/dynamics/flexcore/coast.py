@@ -1,0 +1,78 @@
+"""The event loop out of contact: the end-of-sequence test, closed-form free-flight jumps and
+the touch thresholds of the ends moving over the flat (compiled)."""
+
+from __future__ import annotations
+
+from numba import njit
+
+from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.flexcore.contacts import (
+    set_threshold,
+)
+from impactlab.dynamics.flexcore.flight import flight, jump_length, left_for_good
+from impactlab.dynamics.flexcore.history import record
+from impactlab.dynamics.flexcore.rhs import evaluate
+
+
+@njit(cache=True)
+def refresh_thresholds(mdl, md, y, K, gold, sv, dents, ek, Jn, Jt):
+    """Out of contact the end moves over the flat: update its touch threshold (dent)."""
+    for k in range(F.NE):
+        if md[k, F.MD_IN] == 0.0:
+            old = md[k, F.MD_DENT]
+            set_threshold(md, dents, int(sv[F.SV_ND]), k, ek[k, F.EK_X], ek[k, F.EK_DELTA])
+            if md[k, F.MD_DENT] != old:
+                evaluate(mdl, md, y, K[0], gold, ek, Jn, Jt)
+
+
+@njit(cache=True)
+def jump(mdl, md, y, t, h, K, gold, sv, dents, record_on, hist, nh, yev, yt, der, ev, ek, Jn, Jt):
+    """Free flight without contact: advance in closed form when no end can touch within two
+    steps. Returns (jumped, t, hist, nh)."""
+    Tg = mdl[10]
+    if Tg.shape[0] > 0:
+        return False, t, hist, nh  # the closed-form flight is linear: integrate instead
+    jump = jump_length(mdl, y, ek)
+    if not jump > 2.0 * h:
+        return False, t, hist, nh
+    jump = min(jump, max(sv[F.SV_CHECK_DT], 2.0 * h))
+    flight(mdl, y, jump, yev)
+    if record_on:
+        for jj in range(1, 4):
+            flight(mdl, y, jump * jj / 4.0, yt)
+            evaluate(mdl, md, yt, der, ev, ek, Jn, Jt)
+            hist, nh = record(hist, nh, t + jump * jj / 4.0, mdl, yt, ek, sv[F.SV_E0])
+    for i in range(y.shape[0]):
+        y[i] = yev[i]
+    t += jump
+    sv[F.SV_NJUMPS] += 1
+    evaluate(mdl, md, y, K[0], gold, ek, Jn, Jt)
+    for k in range(F.NE):
+        set_threshold(md, dents, int(sv[F.SV_ND]), k, ek[k, F.EK_X], ek[k, F.EK_DELTA])
+    evaluate(mdl, md, y, K[0], gold, ek, Jn, Jt)
+    if record_on:
+        hist, nh = record(hist, nh, t, mdl, y, ek, sv[F.SV_E0])
+    return True, t, hist, nh
+
+
+@njit(cache=True)
+def out_of_contact(mdl, md, y, t, h, K, gold, sv, dents, stop_mode, record_on, hist, nh, yev, yt,
+                   der, ev, ek, Jn, Jt):  # fmt: skip
+    """No end in contact: the end-of-sequence test (every ``F.SV_CHECK_DT``), then a free-flight
+    jump if one is possible. Returns (code, t, hist, nh): 0 integrate a step, 1 jumped,
+    2 the sequence is over."""
+    if t - sv[F.SV_T_CHECK] >= sv[F.SV_CHECK_DT]:
+        sv[F.SV_T_CHECK] = t
+        done, nx, tn = left_for_good(
+            mdl, y, int(sv[F.SV_LAST_END]), stop_mode, F.HORIZON_CAP, sv[F.SV_EPS_CLEAR]
+        )
+        if done:
+            sv[F.SV_FINISHED] = 1.0
+            sv[F.SV_NEXT_END] = nx
+            sv[F.SV_NEXT_TIME] = tn
+            sv[F.SV_STATUS] = F.ST_OK
+            return 2, t, hist, nh
+    jumped, t, hist, nh = jump(
+        mdl, md, y, t, h, K, gold, sv, dents, record_on, hist, nh, yev, yt, der, ev, ek, Jn, Jt
+    )
+    return (1 if jumped else 0), t, hist, nh

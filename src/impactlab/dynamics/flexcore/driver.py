@@ -1,0 +1,93 @@
+"""``drop``: the event loop of the flexible drop, from the first touch of the tip (end 0) until
+the rod leaves the flat for good (compiled; docs/flexible.md).
+
+The loop alternates closed-form free-flight jumps (``flight``) and error-controlled
+Dormand-Prince steps (``stepper``); an accepted step that crosses an event is cut at the
+event, whose action (``contacts``) changes the mode table; simultaneous events at one instant
+are resolved in a bounded loop. The work of each branch is in the helpers it calls.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.flexcore.coast import out_of_contact, refresh_thresholds
+from impactlab.dynamics.flexcore.events import handle_events
+from impactlab.dynamics.flexcore.history import record
+from impactlab.dynamics.flexcore.results import fill_outputs
+from impactlab.dynamics.flexcore.rhs import evaluate
+from impactlab.dynamics.flexcore.setup import first_touch, scales, workspace
+from impactlab.dynamics.flexcore.stepper import dp_step
+from impactlab.dynamics.flexcore.steps import accept, reject
+
+
+@njit(cache=True)
+def drop(mdl, vx0, vy0, w0, rtol, t_max, stop_mode, record_on, out, contacts, dents, yfinal):
+    """Simulate the drop from the first touch of end 0 until the rod leaves the flat for good.
+
+    ``mdl``: the model tuple (package docstring); vx0, vy0 [m/s], w0 [rad/s]: rigid-body
+    velocities at first touch (end 0 at delta = 0, undeformed, modes at rest); rtol: relative
+    tolerance; t_max [s]; stop_mode: 0 the sequence of the tip, 1 through the other end's
+    impacts ("flight"); record_on: keep a history. Fills ``out`` (layout.N_OUT), ``contacts``
+    (MAX_CONTACTS, NCR), ``dents`` (MAX_DENTS, NDT) and ``yfinal`` (the state where the end
+    criterion was met). Returns (status, n_contacts, n_dents, history, n_history).
+    """
+    n = 6 + 2 * mdl[3].shape[0] + F.NQUAD
+    sv, md, y, sc, Jn, Jt, ek, ev, gold, gnew, K, Q, st, ynew, yt, yev, der, snap = workspace(n)
+    cur_con = np.full(F.NE, -1)
+    hist = np.empty((1024 if record_on else 1, F.NH))
+    nh = 0
+    first_touch(mdl, md, y, vx0, vy0, w0, sv, contacts, dents, cur_con, der, ev, ek, Jn, Jt)
+    scales(mdl, vx0, vy0, w0, sc, sv)
+    t = 0.0
+    h = 0.02 * sv[F.SV_TSTAR] * rtol**0.2
+    evaluate(mdl, md, y, K[0], gold, ek, Jn, Jt)
+    if record_on:
+        hist, nh = record(hist, nh, t, mdl, y, ek, sv[F.SV_E0])
+    y_end = y.copy()  # the state right after the last separation
+    while sv[F.SV_NSTEPS] < F.MAX_STEPS:
+        if t > t_max:
+            sv[F.SV_STATUS] = F.ST_TMAX
+            break
+        if md[0, F.MD_IN] == 0.0 and md[1, F.MD_IN] == 0.0:
+            code, t, hist, nh = out_of_contact(mdl, md, y, t, h, K, gold, sv, dents, stop_mode,
+                                               record_on, hist, nh, yev, yt, der, ev, ek, Jn,
+                                               Jt)  # fmt: skip
+            if code == 2:
+                break
+            if code == 1:
+                continue
+        sv[F.SV_NSTEPS] += 1
+        h = min(h, sv[F.SV_HMAX])
+        err = dp_step(mdl, md, y, K, h, rtol, sc, st, ynew, gnew, ek, Jn, Jt)
+        if not err <= 1.0:
+            h = reject(h, err, sv)
+            if h == 0.0:
+                break
+            continue
+        ok, jev, t, hist, nh = accept(mdl, md, y, t, h, rtol, sc, K, Q, gold, gnew, ynew, yev, sv,
+                                      contacts, dents, cur_con, record_on, hist, nh, yt, der, ev,
+                                      ek, Jn, Jt)  # fmt: skip
+        if not ok:
+            break
+        y[:] = yev
+        h *= 10.0 if err == 0.0 else min(10.0, 0.9 * err**-0.2)
+        if jev < 0:
+            K[0, :] = K[6, :]
+            gold[:] = gnew
+            refresh_thresholds(mdl, md, y, K, gold, sv, dents, ek, Jn, Jt)
+        else:
+            sv[F.SV_NEVENTS] += 1
+            if sv[F.SV_NEVENTS] > F.MAX_EVENTS:
+                sv[F.SV_STATUS] = F.ST_TOO_MANY_EVENTS
+                break
+            if not handle_events(jev, mdl, md, y, t, K, gold, sv, contacts, dents, cur_con, snap,
+                                 y_end, der, ev, ek, Jn, Jt):  # fmt: skip
+                break
+        if record_on:
+            hist, nh = record(hist, nh, t, mdl, y, ek, sv[F.SV_E0])
+    yfinal[: min(n, yfinal.shape[0])] = y[: min(n, yfinal.shape[0])]
+    fill_outputs(mdl, sv, t, y_end, vx0, vy0, out, contacts, dents)
+    return int(sv[F.SV_STATUS]), int(sv[F.SV_NCON]), int(sv[F.SV_ND]), hist[:nh], nh

@@ -1,0 +1,61 @@
+"""Apply the events of the flexible drop at one instant, including the simultaneous ones
+(compiled)."""
+
+from __future__ import annotations
+
+import math
+
+from numba import njit
+
+from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.flexcore.contacts import (
+    on_friction,
+    on_separation,
+    on_touch,
+    on_turn,
+    pending,
+)
+from impactlab.dynamics.flexcore.rhs import evaluate
+
+#: The order in which simultaneous events are handled at a restart.
+_PENDING_ORDER = (F.EV_SEP, F.EV_TOUCH, F.EV_VN, F.EV_RELOAD, F.EV_SWITCH, F.EV_LIMIT, F.EV_FRIC)
+
+
+@njit(cache=True)
+def handle_events(
+    jev, mdl, md, y, t, K, gold, sv, contacts, dents, cur_con, snap, y_end, der, ev, ek, Jn, Jt
+):
+    """Apply event ``jev`` at (t, y) and every event already past its switch at the same
+    instant (at most 8). False (with ``sv[F.SV_STATUS]`` set) on a failure."""
+    for _it in range(8):
+        k = jev // F.NEVK
+        kind = jev % F.NEVK
+        st = F.ST_OK
+        if kind == F.EV_LIMIT:
+            st = F.ST_LAW_LIMIT
+        elif kind == F.EV_TOUCH:
+            st = on_touch(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, ek, Jn, Jt)
+        elif kind == F.EV_VN:
+            st = on_turn(mdl, md, k, ek[k, F.EK_DELTA], dents)
+        elif kind == F.EV_RELOAD:
+            md[k, F.MD_PH] = 0.0
+        elif kind == F.EV_SWITCH:
+            md[k, F.MD_DSW] = math.inf
+        elif kind == F.EV_SEP:
+            on_separation(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, y_end, ek)
+        elif kind == F.EV_FRIC:
+            on_friction(mdl, md, y, k, der, ev, ek, Jn, Jt)
+        if st != F.ST_OK:
+            sv[F.SV_STATUS] = st
+            return False
+        evaluate(mdl, md, y, K[0], gold, ek, Jn, Jt)
+        jev = -1
+        for kk in range(F.NE):
+            for kind2 in _PENDING_ORDER:
+                if jev < 0 and pending(
+                    gold, ek, md, kk, kind2, sv[F.SV_TOL_V], sv[F.SV_TOL_D], sv[F.SV_TOL_F]
+                ):
+                    jev = kk * F.NEVK + kind2
+        if jev < 0:
+            break
+    return True

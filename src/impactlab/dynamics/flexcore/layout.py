@@ -1,0 +1,249 @@
+"""Layouts of the flexible-rod integrator: the constants vector, the per-end mode table, the
+events, the dents, the contact records, the run state, the output vector and the history.
+
+Imports only ``impactlab.schema`` (L0): the compiled modules of this package read the indices.
+
+State vector (length 6 + 2 M + NQUAD, M elastic modes):
+``[dX, dY, phi, q_1..q_M, vx, vy, spin, q'_1..q'_M, W_n, W_t, W_d, (P_n, P_t, S, |S|) x NE]``;
+dX, dY: displacement of the centre of mass C from its position at first touch [m] (the origin
+of x is the first contact point), phi: rotation since first touch [rad], q: modal coordinates
+[kg^1/2 m], W_n, W_t, W_d: work of the normal forces, of friction and of the modal damping [J];
+per end: normal and tangential impulse [N s], signed and absolute slip integrals [m].
+"""
+
+from __future__ import annotations
+
+from impactlab.schema import Field
+
+NE = 2  #: number of ends (0: the tip that touches first, 1: the other end)
+NQUAD = 3 + 4 * NE  #: quadratures at the end of the state vector
+
+# ---- constants vector (``C_*``) ---------------------------------------------------------------
+C_D = 0  #: L/2 [m]
+C_R = 1  #: radius of the end spheres [m]
+C_M = 2  #: mass [kg]
+C_I = 3  #: I_C [kg m^2]
+C_G = 4  #: gravity [m/s^2]
+C_TH0 = 5  #: angle at first touch [rad]
+C_MU = 6  #: Coulomb friction coefficient [1]
+C_DLIM = 7  #: the law's validity limit [m]
+C_DSW = 8  #: the law's elastic -> plastic switch interference [m] (inf: none)
+C_S0 = 9  #: sin(angle)
+C_C0 = 10  #: cos(angle)
+NC = 11
+
+# ---- per-end mode table (``MD_*``) ------------------------------------------------------------
+MD_IN = 0  #: 1 in contact
+MD_PH = 1  #: 0 loading curve, 1 unloading / reloading curve
+MD_DM = 2  #: delta_m of the branch [m]
+MD_DR = 3  #: delta_r [m] (out of contact: the touch threshold, the dent's delta_r under the end)
+MD_RR = 4  #: R_r of the unloading curve [m]
+MD_FM = 5  #: friction: 0 stick, +-1 slip direction (sign of v_t)
+MD_COMP = 6  #: 1 while delta increases
+MD_DSW = 7  #: pending elastic -> plastic switch interference [m] (inf when passed)
+MD_DENT = 8  #: index of the dent under the end (-1: virgin flat)
+NMD = 9
+
+# ---- per-end event functions (``EV_*``; event j of end k is k * NEVK + EV_*) -------------------
+EV_TOUCH = 0
+EV_VN = 1  #: turning point of delta (compression <-> restitution)
+EV_RELOAD = 2  #: reloading past the earlier delta_m: back on the loading curve
+EV_SEP = 3
+EV_LIMIT = 4  #: the law's validity limit
+EV_FRIC = 5  #: slip -> stick (v_t = 0) or stick -> slip (|F_t| = mu F_n)
+EV_SWITCH = 6  #: elastic -> plastic switch of the loading curve
+NEVK = 7
+NEV = NE * NEVK
+
+# ---- per-end evaluated quantities (``EK_*``, a (NE, NEK) array) -------------------------------
+EK_DELTA = 0  #: interference [m]
+EK_X = 1  #: x of the contact point (below the sphere centre) [m]
+EK_VN = 2  #: normal velocity of the contact point [m/s]
+EK_VT = 3  #: slip velocity v_t [m/s]
+EK_FN = 4  #: normal force [N]
+EK_FT = 5  #: tangential force [N]
+EK_JDOT = 6  #: dJ_t/dt z' (the velocity-dependent tangential acceleration) [m/s^2]
+NEK = 8
+
+# ---- dents on the flat (``DT_*``) -------------------------------------------------------------
+DT_END = 0  #: the end that made it
+DT_XLO = 1  #: extent of the contact-point path [m]
+DT_XHI = 2
+DT_AM = 3  #: largest contact radius [m]
+DT_DM = 4  #: delta_m [m]
+DT_DR = 5  #: delta_r [m]
+DT_RR = 6  #: R_r [m]
+DT_FM = 7  #: F_m [N]
+DT_NC = 8  #: number of contacts on it
+NDT = 9
+MAX_DENTS = 256
+
+# ---- contact records (``CR_*``) ---------------------------------------------------------------
+CR_END = 0
+CR_T0 = 1  #: start [s] (from the first touch)
+CR_DUR = 2  #: duration [s]
+CR_DMAX = 3  #: largest interference [m]
+CR_FMAX = 4  #: largest normal force [N]
+CR_PN = 5  #: normal impulse [N s]
+CR_PT = 6  #: tangential impulse [N s]
+CR_SLIP = 7  #: int v_t dt (signed) [m]
+CR_ASLIP = 8  #: int |v_t| dt [m]
+CR_X0 = 9  #: contact point at touch [m]
+CR_X1 = 10  #: contact point at separation [m]
+CR_DENT = 11  #: index of its dent
+CR_RELOAD = 12  #: 1 if it started on an existing dent
+CR_DR = 13  #: the dent's delta_r after the contact [m]
+CR_WN = 14  #: work of the normal force [J]
+CR_WT = 15  #: work of friction [J]
+CR_STICK = 16  #: time spent sticking [s]
+NCR = 17
+MAX_CONTACTS = 4096
+
+# ---- run state (``SV_*``, a float vector shared by the driver's helpers) ----------------------
+SV_NSTEPS = 0
+SV_NJUMPS = 1
+SV_NEVENTS = 2
+SV_STATUS = 3
+SV_EERR = 4  #: largest |T + V - E0 - W| [J]
+SV_FMAX = 5
+SV_DMAX = 6
+SV_STICK = 7
+SV_LAST_END = 8  #: the end of the last touch or separation
+SV_T_LAST_SEP = 9
+SV_T_CHECK = 10  #: time of the last end-of-sequence test
+SV_FINISHED = 11
+SV_NEXT_END = 12
+SV_NEXT_TIME = 13
+SV_ND = 14  #: number of dents
+SV_NCON = 15  #: number of contacts
+SV_TOL_V = 16  #: tolerances of simultaneous events: velocity [m/s]
+SV_TOL_D = 17  #: interference [m]
+SV_TOL_F = 18  #: force [N]
+SV_HMAX = 19
+SV_HMIN = 20
+SV_CHECK_DT = 21  #: interval of the end-of-sequence test in free flight [s]
+SV_EPS_CLEAR = 22  #: clearance margin of the end-of-sequence test [m]
+SV_E0 = 23  #: initial energy [J]
+SV_VN0 = 24  #: normal velocity of the tip at first touch [m/s]
+SV_TSTAR = 25  #: Hertzian time scale [s]
+NSV = 26
+
+# ---- status ------------------------------------------------------------------------------------
+ST_OK = 0
+ST_LAW_LIMIT = 1
+ST_TMAX = 2
+ST_STEP_UNDERFLOW = 3
+ST_NAN = 4
+ST_TOO_MANY_EVENTS = 5
+ST_TOO_MANY_CONTACTS = 6
+ST_MAX_STEPS = 7
+STATUS_MESSAGES = {
+    ST_OK: "ok",
+    ST_LAW_LIMIT: "interference beyond the contact law's validity",
+    ST_TMAX: "t_max reached before the rod left the flat for good",
+    ST_STEP_UNDERFLOW: "step-size underflow",
+    ST_NAN: "non-finite force",
+    ST_TOO_MANY_EVENTS: "too many events (chattering)",
+    ST_TOO_MANY_CONTACTS: "too many contacts or dents",
+    ST_MAX_STEPS: "step limit reached",
+}
+
+DEFAULT_RTOL = 1e-7  #: default relative tolerance of the flexible drop
+MAX_STEPS = 2_000_000
+MAX_EVENTS = 200_000
+HORIZON_CAP = 0.5  #: longest look-ahead of the end-of-sequence test [s]
+
+#: The integrator's outputs, in the order of its ``out`` vector. "After the last contact" means
+#: the state at the last separation; velocities are those of the floating frame (rigid body).
+DROP_FIELDS: tuple[Field, ...] = (
+    Field("e", "1", "-v_n,out / v_n,in of the tip's rigid-body normal velocity, gravity removed"),
+    Field("e_raw", "1", "the same with the gravity impulse of the sequence kept"),
+    Field("vx_out", "m/s", "x velocity of the centre of mass after the last contact"),
+    Field("vy_out", "m/s", "y velocity of the centre of mass after the last contact"),
+    Field("spin_out", "rad/s", "angular velocity after the last contact"),
+    Field("duration", "s", "first touch to last separation"),
+    Field("n_contacts", "1", "number of contacts"),
+    Field("delta_p", "m", "permanent depth of the deepest dent"),
+    Field("scar_length", "m", "x-extent of the tip's contact-point path over all its contacts"),
+    Field("sliding_length", "m", "sum over the tip's contacts of int v_t dt (signed)"),
+    Field("slip_path", "m", "sum over the tip's contacts of int |v_t| dt"),
+    Field("delta_max", "m", "largest interference"),
+    Field("max_force", "N", "largest normal force"),
+    Field("normal_impulse", "N s", "total normal impulse"),
+    Field("tangential_impulse", "N s", "total tangential impulse"),
+    Field("mu_apparent", "1", "|dvx / (dvy + g T)|: the paper's Eq. 28 on the frame velocities"),
+    Field("vibration_energy", "J", "elastic (modal) energy after the last contact"),
+    Field("rigid_kinetic_energy", "J", "rigid-body kinetic energy after the last contact"),
+    Field("work_normal", "J", "work of the normal forces (negative: dissipated)"),
+    Field("work_friction", "J", "work of friction (negative: dissipated)"),
+    Field("work_damping", "J", "work of the modal damping (negative: dissipated)"),
+    Field("energy_error", "1", "largest |T + V - E0 - W| / E0 over the run"),
+    Field("next_end", "1", "the end that can land next (-1: none within the horizon)"),
+    Field("next_time", "s", "lower bound of that landing, from the last separation"),
+    Field("n_steps", "1", "Dormand-Prince steps"),
+    Field("n_jumps", "1", "closed-form free-flight jumps"),
+    Field("n_dents", "1", "number of dents"),
+    Field("stick_time", "s", "total time spent sticking"),
+    Field("angle_out", "rad", "rod angle at the last separation"),
+    Field("t_final", "s", "time at which the end-of-sequence test was passed"),
+    Field("potential_energy", "J", "gravity potential after the last contact (0 at first touch)"),
+)
+OUTPUT_FIELDS = tuple(f.name for f in DROP_FIELDS)
+N_OUT = len(OUTPUT_FIELDS)
+O = {name: i for i, name in enumerate(OUTPUT_FIELDS)}
+(
+    O_E,
+    O_E_RAW,
+    O_VX_OUT,
+    O_VY_OUT,
+    O_SPIN_OUT,
+    O_DURATION,
+    O_N_CONTACTS,
+    O_DELTA_P,
+    O_SCAR_LENGTH,
+    O_SLIDING_LENGTH,
+    O_SLIP_PATH,
+    O_DELTA_MAX,
+    O_MAX_FORCE,
+    O_NORMAL_IMPULSE,
+    O_TANGENTIAL_IMPULSE,
+    O_MU_APPARENT,
+    O_VIBRATION_ENERGY,
+    O_RIGID_KINETIC_ENERGY,
+    O_WORK_NORMAL,
+    O_WORK_FRICTION,
+    O_WORK_DAMPING,
+    O_ENERGY_ERROR,
+    O_NEXT_END,
+    O_NEXT_TIME,
+    O_N_STEPS,
+    O_N_JUMPS,
+    O_N_DENTS,
+    O_STICK_TIME,
+    O_ANGLE_OUT,
+    O_T_FINAL,
+    O_POTENTIAL_ENERGY,
+) = range(N_OUT)
+
+#: History columns: per end, interference [m], normal and tangential force [N], x and y of the
+#: lowest point of the sphere [m]; the centre of mass (x, y) [m], the rotation phi [rad], the
+#: tip's slip velocity [m/s] and the relative energy error [1].
+HISTORY_FIELDS = (
+    "t",
+    "delta0",
+    "fn0",
+    "ft0",
+    "x0",
+    "y0",
+    "delta1",
+    "fn1",
+    "ft1",
+    "x1",
+    "y1",
+    "xc",
+    "yc",
+    "phi",
+    "vt0",
+    "energy_err",
+)
+NH = len(HISTORY_FIELDS)

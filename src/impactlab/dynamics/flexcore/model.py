@@ -1,0 +1,89 @@
+"""The float64 inputs of ``driver.drop`` from the model's parameters (Python, pure): the
+constants vector (``layout.C_*``) and the model tuple (package docstring)."""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from impactlab.contact.kernels import P_DLIM, P_DSW
+from impactlab.dynamics.flexcore import layout as F
+
+
+def constants(
+    half_length: float,
+    tip_radius: float,
+    mass: float,
+    inertia: float,
+    gravity: float,
+    angle: float,
+    mu: float,
+    p: np.ndarray,
+) -> np.ndarray:
+    """The constants vector (``layout.C_*``; SI units) for the law parameters ``p``."""
+    dsw = float(p[P_DSW])
+    values = {
+        F.C_D: half_length,
+        F.C_R: tip_radius,
+        F.C_M: mass,
+        F.C_I: inertia,
+        F.C_G: gravity,
+        F.C_TH0: angle,
+        F.C_MU: mu,
+        F.C_DLIM: float(p[P_DLIM]),
+        F.C_DSW: dsw if (math.isfinite(dsw) and dsw > 0.0) else math.inf,
+        F.C_S0: math.sin(angle),
+        F.C_C0: math.cos(angle),
+    }
+    c = np.zeros(F.NC)
+    for i, v in values.items():
+        c[i] = v
+    return c
+
+
+def _array(a: Any, dtype: type = np.float64) -> np.ndarray:
+    """A writable C-contiguous copy (one numba specialisation for every caller)."""
+    return np.array(a, dtype=dtype, order="C", copy=True)
+
+
+def model_tuple(
+    law_id: int,
+    p: np.ndarray,
+    c: np.ndarray,
+    omega: np.ndarray,
+    zeta: np.ndarray,
+    U: np.ndarray,
+    W: np.ndarray,
+    Psi: np.ndarray,  # noqa: N803 (the modal section rotation, as in ModalBasis)
+    geometric: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None,
+) -> tuple[Any, ...]:
+    """``(law, p, c, om, om2, dmp, zeta, Ue, We, Pe, Tg, ia, ib)`` for ``driver.drop``:
+    omega (M,) [rad/s], zeta (M,) damping ratios, U, W, Psi (2, M) modal end values;
+    ``geometric``: (T, ia, ib) of ``impactlab.bodies.geometric.geometric_tensor`` or None."""
+    om = _array(omega)
+    z = _array(zeta)
+    if geometric is None:
+        Tg = np.zeros((0, 0, 0))
+        ia = np.zeros(0, dtype=np.int64)
+        ib = np.zeros(0, dtype=np.int64)
+    else:
+        Tg = _array(geometric[0])
+        ia = _array(geometric[1], np.int64)
+        ib = _array(geometric[2], np.int64)
+    return (
+        int(law_id),
+        _array(p),
+        _array(c),
+        om,
+        om * om,
+        2.0 * z * om,
+        z,
+        _array(U).reshape(2, om.size),
+        _array(W).reshape(2, om.size),
+        _array(Psi).reshape(2, om.size),
+        Tg,
+        ia,
+        ib,
+    )

@@ -1,0 +1,215 @@
+"""Right-hand side and event functions of the flexible drop (compiled).
+
+Equations of motion (mass-normalised modes, floating frame; docs/flexible.md):
+m X'' = sum F_t,   m Y'' = sum F_n - m g,   I_C phi'' = sum (J_n,phi F_n + J_t,phi F_t),
+q_j'' = -omega_j^2 q_j - 2 zeta_j omega_j q_j' - dV_g/dq_j + sum (J_n,j F_n + J_t,j F_t),
+with F_n from the contact law, F_t = -sign(v_t) mu F_n in slip and, in stick, the force that
+keeps v_t = 0 (from the tangential mobility J_t M^-1 J_t^T; a 2x2 system when both ends
+stick). Quadratures: the works of the normal forces, of friction and of the damping, and per
+end the impulses and slip integrals. An event fires when its function goes from <= 0 to > 0.
+"""
+
+from __future__ import annotations
+
+from numba import njit
+
+from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.flexcore.kinematics import end_kinematics, mobility, normal_force
+
+
+@njit(cache=True, inline="always")
+def _end_forces(law, p, c, Ue, We, Pe, md, y, ek, Jn, Jt):
+    """Kinematics of both ends and the contact forces without stick forces into ``ek``."""
+    mu = c[F.C_MU]
+    for k in range(F.NE):
+        delta, xS, vn, vt, jdot = end_kinematics(c, Ue, We, Pe, y, k, Jn, Jt)
+        ek[k, F.EK_DELTA] = delta
+        ek[k, F.EK_X] = xS
+        ek[k, F.EK_VN] = vn
+        ek[k, F.EK_VT] = vt
+        ek[k, F.EK_FN] = normal_force(law, p, md, k, delta)
+        ek[k, F.EK_JDOT] = jdot
+        fm = md[k, F.MD_FM]
+        if md[k, F.MD_IN] != 0.0 and mu > 0.0 and fm != 0.0:
+            ek[k, F.EK_FT] = -fm * mu * ek[k, F.EK_FN]
+        else:
+            ek[k, F.EK_FT] = 0.0
+
+
+@njit(cache=True, inline="always")
+def _geometric_forces(Tg, ia, ib, y, der, iv):
+    """Subtract the geometric-stiffness forces dV_g/dq from the modal accelerations."""
+    nbg = Tg.shape[1]
+    for a in range(Tg.shape[0]):
+        qa = y[3 + ia[a]]
+        for b in range(nbg):
+            sb = 0.0
+            for cc in range(nbg):
+                sb += Tg[a, b, cc] * y[3 + ib[cc]]
+            der[iv + 3 + ib[b]] -= qa * sb
+            der[iv + 3 + ia[a]] -= 0.5 * y[3 + ib[b]] * sb
+
+
+@njit(cache=True, inline="always")
+def _accelerations(c, om2, dmp, Tg, ia, ib, md, y, der, ek, Jn, Jt):
+    """Velocities and accelerations without the stick forces."""
+    M = om2.shape[0]
+    iv = 3 + M
+    m = c[F.C_M]
+    for i in range(3):
+        der[i] = y[iv + i]
+    for j in range(M):
+        der[3 + j] = y[iv + 3 + j]
+    ax = 0.0
+    ay = -c[F.C_G] * m
+    aw = 0.0
+    for j in range(M):
+        der[iv + 3 + j] = -om2[j] * y[3 + j] - dmp[j] * y[iv + 3 + j]
+    if Tg.shape[0] > 0:
+        _geometric_forces(Tg, ia, ib, y, der, iv)
+    for k in range(F.NE):
+        if md[k, F.MD_IN] == 0.0:
+            continue
+        Fn = ek[k, F.EK_FN]
+        Ft = ek[k, F.EK_FT]
+        ax += Ft
+        ay += Fn
+        aw += Jn[k, 2] * Fn + Jt[k, 2] * Ft
+        for j in range(M):
+            der[iv + 3 + j] += Jn[k, 3 + j] * Fn + Jt[k, 3 + j] * Ft
+    der[iv] = ax / m
+    der[iv + 1] = ay / m
+    der[iv + 2] = aw / c[F.C_I]
+
+
+@njit(cache=True, inline="always")
+def _tangential_acceleration(ek, Jt, der, iv, M, k):
+    """J_t z'' + jdot of end k (without its stick force)."""
+    a = ek[k, F.EK_JDOT] + Jt[k, 0] * der[iv] + Jt[k, 1] * der[iv + 1] + Jt[k, 2] * der[iv + 2]
+    for j in range(M):
+        a += Jt[k, 3 + j] * der[iv + 3 + j]
+    return a
+
+
+@njit(cache=True, inline="always")
+def _stick_forces(c, M, md, der, ek, Jt):
+    """Add the stick forces of the sticking ends (a 1x1 or 2x2 system) to ``der`` and
+    ``ek``."""
+    iv = 3 + M
+    m = c[F.C_M]
+    ns = 0
+    sk0 = -1
+    sk1 = -1
+    for k in range(F.NE):
+        if md[k, F.MD_IN] != 0.0 and md[k, F.MD_FM] == 0.0:
+            if ns == 0:
+                sk0 = k
+            else:
+                sk1 = k
+            ns += 1
+    if ns == 0:
+        return
+    a0 = _tangential_acceleration(ek, Jt, der, iv, M, sk0)
+    A00 = mobility(c, M, Jt, Jt, sk0, sk0)
+    if ns == 1:
+        f0 = -a0 / A00
+        f1 = 0.0
+    else:
+        a1 = _tangential_acceleration(ek, Jt, der, iv, M, sk1)
+        A11 = mobility(c, M, Jt, Jt, sk1, sk1)
+        A01 = mobility(c, M, Jt, Jt, sk0, sk1)
+        det = A00 * A11 - A01 * A01
+        f0 = (-a0 * A11 + a1 * A01) / det
+        f1 = (-a1 * A00 + a0 * A01) / det
+    for t in range(ns):
+        k = sk0 if t == 0 else sk1
+        f = f0 if t == 0 else f1
+        ek[k, F.EK_FT] = f
+        der[iv] += f / m
+        der[iv + 2] += Jt[k, 2] * f / c[F.C_I]
+        for j in range(M):
+            der[iv + 3 + j] += Jt[k, 3 + j] * f
+
+
+@njit(cache=True, inline="always")
+def _quadratures(c, dmp, md, y, der, ek):
+    """Derivatives of the works and of the per-end impulses and slip integrals."""
+    M = dmp.shape[0]
+    iv = 3 + M
+    iq = 6 + 2 * M
+    mu = c[F.C_MU]
+    wn = 0.0
+    wt = 0.0
+    for k in range(F.NE):
+        b = iq + 3 + 4 * k
+        if md[k, F.MD_IN] != 0.0:
+            wn += ek[k, F.EK_FN] * ek[k, F.EK_VN]
+            wt += ek[k, F.EK_FT] * ek[k, F.EK_VT]
+            der[b] = ek[k, F.EK_FN]
+            der[b + 1] = ek[k, F.EK_FT]
+            der[b + 2] = ek[k, F.EK_VT]
+            if mu > 0.0:
+                der[b + 3] = md[k, F.MD_FM] * ek[k, F.EK_VT]
+            else:
+                der[b + 3] = abs(ek[k, F.EK_VT])
+        else:
+            der[b] = 0.0
+            der[b + 1] = 0.0
+            der[b + 2] = 0.0
+            der[b + 3] = 0.0
+    wd = 0.0
+    for j in range(M):
+        wd -= dmp[j] * y[iv + 3 + j] * y[iv + 3 + j]
+    der[iq] = wn
+    der[iq + 1] = wt
+    der[iq + 2] = wd
+
+
+@njit(cache=True, inline="always")
+def _events(c, md, ev, ek):
+    """The event functions of both ends (-1 where an event cannot fire in the mode)."""
+    mu = c[F.C_MU]
+    for k in range(F.NE):
+        e0 = k * F.NEVK
+        for i in range(F.NEVK):
+            ev[e0 + i] = -1.0
+        delta = ek[k, F.EK_DELTA]
+        if md[k, F.MD_IN] == 0.0:
+            ev[e0 + F.EV_TOUCH] = delta - md[k, F.MD_DR]  # out of contact F.MD_DR is the threshold
+            continue
+        comp = md[k, F.MD_COMP] != 0.0
+        vn = ek[k, F.EK_VN]
+        ev[e0 + F.EV_VN] = vn if comp else -vn
+        if md[k, F.MD_PH] == 0.0:
+            ev[e0 + F.EV_LIMIT] = delta - c[F.C_DLIM]
+            ev[e0 + F.EV_SWITCH] = delta - md[k, F.MD_DSW]
+        elif comp:
+            ev[e0 + F.EV_RELOAD] = delta - md[k, F.MD_DM]
+        else:
+            ev[e0 + F.EV_SEP] = md[k, F.MD_DR] - delta
+        if mu > 0.0:
+            fm = md[k, F.MD_FM]
+            if fm != 0.0:
+                ev[e0 + F.EV_FRIC] = -fm * ek[k, F.EK_VT]
+            else:
+                ev[e0 + F.EV_FRIC] = abs(ek[k, F.EK_FT]) - mu * ek[k, F.EK_FN]
+
+
+@njit(cache=True)
+def rates(law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, y, der, ev, ek, Jn, Jt):
+    """Derivative ``der`` and event values ``ev`` at state y in the mode table md; ``ek``
+    (F.NE, NEK) receives per end the evaluated quantities (``layout.EK_*``), Jn and Jt the
+    Jacobian rows. The model's arrays one by one (the hot path: see ``evaluate``)."""
+    _end_forces(law, p, c, Ue, We, Pe, md, y, ek, Jn, Jt)
+    _accelerations(c, om2, dmp, Tg, ia, ib, md, y, der, ek, Jn, Jt)
+    if c[F.C_MU] > 0.0:
+        _stick_forces(c, om2.shape[0], md, der, ek, Jt)
+    _quadratures(c, dmp, md, y, der, ek)
+    _events(c, md, ev, ek)
+
+
+@njit(cache=True)
+def evaluate(mdl, md, y, der, ev, ek, Jn, Jt):
+    """``rates`` with the model tuple ``mdl`` (package docstring)."""
+    law, p, c, _om, om2, dmp, _zeta, Ue, We, Pe, Tg, ia, ib = mdl
+    rates(law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, y, der, ev, ek, Jn, Jt)

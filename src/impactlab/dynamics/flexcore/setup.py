@@ -1,0 +1,111 @@
+"""Start of the flexible drop: the state and mode table at the first touch of the tip, the
+error scales and the tolerances of the run (compiled)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from impactlab.contact.kernels import P_ESTAR
+from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.flexcore.contacts import (
+    initial_slip,
+    new_dent,
+)
+from impactlab.dynamics.flexcore.rhs import evaluate
+
+
+@njit(cache=True)
+def scales(mdl, vx0, vy0, w0, sc, sv):
+    """Error scales of the state components (as the rigid engine: Hertzian depth, time and
+    velocity scales) and the tolerances of the run."""
+    p, c, om, Ue, We, Pe = mdl[1], mdl[2], mdl[3], mdl[7], mdl[8], mdl[9]
+    M = om.shape[0]
+    iv = 3 + M
+    iq = 6 + 2 * M
+    m = c[F.C_M]
+    R = c[F.C_R]
+    d = c[F.C_D]
+    a0 = d * math.cos(c[F.C_TH0])
+    vn0 = vy0 - w0 * a0
+    meff = 1.0 / (1.0 / m + a0 * a0 / c[F.C_I])
+    dstar = (15.0 * meff * vn0 * vn0 / (16.0 * p[P_ESTAR] * math.sqrt(R))) ** 0.4
+    tstar = dstar / abs(vn0)
+    vstar = abs(vn0)
+    sc[0] = dstar
+    sc[1] = dstar
+    sc[2] = dstar / (d + R)
+    sc[iv] = vstar
+    sc[iv + 1] = vstar
+    sc[iv + 2] = vstar / (d + R)
+    for j in range(M):
+        phimax = 1e-300
+        for k in range(F.NE):
+            phimax = max(phimax, abs(Ue[k, j]), abs(We[k, j]), R * abs(Pe[k, j]))
+        sc[3 + j] = dstar / phimax
+        sc[iv + 3 + j] = vstar / phimax
+    e0 = 0.5 * m * (vx0 * vx0 + vy0 * vy0) + 0.5 * c[F.C_I] * w0 * w0
+    for i in range(F.NQUAD):
+        sc[iq + i] = e0
+    for k in range(F.NE):
+        b = iq + 3 + 4 * k
+        sc[b] = meff * vstar
+        sc[b + 1] = meff * vstar
+        sc[b + 2] = dstar
+        sc[b + 3] = dstar
+    sv[F.SV_TOL_V] = 1e-9 * vstar
+    sv[F.SV_TOL_D] = 1e-12 * dstar
+    sv[F.SV_TOL_F] = 1e-9 * meff * vstar / tstar
+    sv[F.SV_HMAX] = tstar if M == 0 else min(tstar, 2.0 / om[M - 1] * 4.0)
+    sv[F.SV_HMIN] = 1e-14 * tstar
+    sv[F.SV_TSTAR] = tstar
+    sv[F.SV_E0] = e0
+    sv[F.SV_VN0] = vn0
+    sv[F.SV_CHECK_DT] = 2.0 * math.pi / om[0] * 0.1 if M > 0 else 10.0 * tstar
+    sv[F.SV_EPS_CLEAR] = 1e-3 * dstar
+
+
+@njit(cache=True)
+def first_touch(mdl, md, y, vx0, vy0, w0, sv, contacts, dents, cur_con, der, ev, ek, Jn, Jt):
+    """The state and the mode table at the first touch of end 0 (on virgin flat)."""
+    c = mdl[2]
+    M = mdl[3].shape[0]
+    iv = 3 + M
+    for k in range(F.NE):
+        md[k, F.MD_RR] = c[F.C_R]
+        md[k, F.MD_DSW] = c[F.C_DSW]
+        md[k, F.MD_DENT] = -1.0
+    y[iv] = vx0
+    y[iv + 1] = vy0
+    y[iv + 2] = w0
+    new_dent(dents, 0, 0, 0.0, c[F.C_R])
+    sv[F.SV_ND] = 1
+    md[0, F.MD_IN] = 1.0
+    md[0, F.MD_PH] = 0.0
+    md[0, F.MD_COMP] = 1.0
+    md[0, F.MD_DENT] = 0.0
+    evaluate(mdl, md, y, der, ev, ek, Jn, Jt)
+    initial_slip(c, M, md, 0, ek[0, F.EK_VT], Jn, Jt)
+    for f in (F.CR_END, F.CR_T0, F.CR_X0, F.CR_DENT, F.CR_RELOAD, F.CR_DMAX, F.CR_FMAX, F.CR_STICK):
+        contacts[0, f] = 0.0
+    cur_con[0] = 0
+    sv[F.SV_NCON] = 1
+
+
+@njit(cache=True)
+def workspace(n):
+    """The run state ``sv`` (layout.SV_*, with the initial status and horizon), the mode table,
+    the state, the error scales and the work arrays of a state of length n:
+    (sv, md, y, sc, Jn, Jt, ek, ev, gold, gnew, K, Q, st, ynew, yt, yev, der, snap)."""
+    m3 = n - F.NQUAD - 3  # 3 + M: the generalised coordinates
+    sv = np.zeros(F.NSV)
+    sv[F.SV_STATUS] = F.ST_MAX_STEPS
+    sv[F.SV_T_CHECK] = -1.0
+    sv[F.SV_NEXT_END] = -1.0
+    sv[F.SV_NEXT_TIME] = math.inf
+    return (sv, np.zeros((F.NE, F.NMD)), np.zeros(n), np.empty(n), np.zeros((F.NE, m3)),
+            np.zeros((F.NE, m3)), np.zeros((F.NE, F.NEK)), np.empty(F.NEV), np.empty(F.NEV),
+            np.empty(F.NEV), np.empty((7, n)), np.empty((n, 4)), np.empty(n), np.empty(n),
+            np.empty(n), np.empty(n), np.empty(n), np.zeros((F.NE, 6)))  # fmt: skip

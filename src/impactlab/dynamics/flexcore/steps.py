@@ -1,0 +1,114 @@
+"""Accepted and rejected Dormand-Prince steps of the event loop: the first event a step crosses,
+the state at it, the recorded dense points, the statistics and the energy error (compiled)."""
+
+from __future__ import annotations
+
+import math
+
+from numba import njit
+
+from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.flexcore.history import record
+from impactlab.dynamics.flexcore.kinematics import mechanical_energy
+from impactlab.dynamics.flexcore.rhs import evaluate
+from impactlab.dynamics.flexcore.stepper import dense, dense_coeffs, integrate_to, locate
+
+
+@njit(cache=True)
+def first_event(mdl, md, y, h, K, Q, gold, gnew, record_on, yt, der, ev, ek, Jn, Jt):
+    """(jev, theta, fired): the earliest event crossed in the step (-1: none) and where."""
+    n = y.shape[0]
+    fired = False
+    for j in range(F.NEV):
+        if gold[j] <= 0.0 and gnew[j] > 0.0:
+            fired = True
+    if fired or record_on:
+        dense_coeffs(K, Q, n)
+    jev = -1
+    theta = 2.0
+    if fired:
+        for j in range(F.NEV):
+            if gold[j] <= 0.0 and gnew[j] > 0.0:
+                thj = locate(j, gold[j], gnew[j], mdl, md, y, h, Q, yt, der, ev, ek, Jn, Jt)
+                if thj < theta:
+                    theta = thj
+                    jev = j
+    return jev, theta, fired
+
+
+@njit(cache=True)
+def step_stats(mdl, md, t, tend, sv, contacts, dents, cur_con, ek):
+    """Per-contact and run maxima, stick time and dent extents after a step to ``tend``;
+    False on a non-finite force."""
+    mu = mdl[2][F.C_MU]
+    ok = True
+    for k in range(F.NE):
+        if md[k, F.MD_IN] != 0.0:
+            ci = cur_con[k]
+            if mu > 0.0 and md[k, F.MD_FM] == 0.0:
+                contacts[ci, F.CR_STICK] += tend - t
+                sv[F.SV_STICK] += tend - t
+            contacts[ci, F.CR_DMAX] = max(contacts[ci, F.CR_DMAX], ek[k, F.EK_DELTA])
+            contacts[ci, F.CR_FMAX] = max(contacts[ci, F.CR_FMAX], ek[k, F.EK_FN])
+            di = int(md[k, F.MD_DENT])
+            dents[di, F.DT_XLO] = min(dents[di, F.DT_XLO], ek[k, F.EK_X])
+            dents[di, F.DT_XHI] = max(dents[di, F.DT_XHI], ek[k, F.EK_X])
+            sv[F.SV_FMAX] = max(sv[F.SV_FMAX], ek[k, F.EK_FN])
+            sv[F.SV_DMAX] = max(sv[F.SV_DMAX], ek[k, F.EK_DELTA])
+        if not (math.isfinite(ek[k, F.EK_FN]) and math.isfinite(ek[k, F.EK_FT])):
+            ok = False
+    return ok
+
+
+@njit(cache=True)
+def record_inside(mdl, md, y, t, h, theta, Q, sv, hist, nh, yt, der, ev, ek, Jn, Jt):
+    """Record the dense points at 1/4, 1/2, 3/4 of the step that lie before ``theta``."""
+    for jj in range(1, 4):
+        thj = jj / 4.0
+        if thj >= theta:
+            break
+        dense(y, h, thj, Q, yt, y.shape[0])
+        evaluate(mdl, md, yt, der, ev, ek, Jn, Jt)
+        hist, nh = record(hist, nh, t + thj * h, mdl, yt, ek, sv[F.SV_E0])
+    return hist, nh
+
+
+@njit(cache=True)
+def reject(h, err, sv):
+    """The step size after a rejected step (error norm ``err``); 0 with ``sv[F.SV_STATUS]`` set
+    when it underflows."""
+    h *= 0.25 if not math.isfinite(err) else max(0.2, 0.9 * err**-0.2)
+    if h < sv[F.SV_HMIN]:
+        sv[F.SV_STATUS] = F.ST_NAN if not math.isfinite(err) else F.ST_STEP_UNDERFLOW
+        return 0.0
+    return h
+
+
+@njit(cache=True)
+def accept(mdl, md, y, t, h, rtol, sc, K, Q, gold, gnew, ynew, yev, sv, contacts, dents, cur_con,
+           record_on, hist, nh, yt, der, ev, ek, Jn, Jt):  # fmt: skip
+    """An accepted step from (t, y): cut at the first event it crosses (the state there into
+    ``yev``), record, update the statistics and the energy error. Returns
+    (ok, jev, tend, hist, nh); ok False on a non-finite force."""
+    jev, theta, fired = first_event(
+        mdl, md, y, h, K, Q, gold, gnew, record_on, yt, der, ev, ek, Jn, Jt
+    )
+    if jev >= 0:
+        tend = t + theta * h
+        steps = integrate_to(mdl, md, y, K[0], theta * h, rtol, sc, yev, ev, ek, Jn, Jt)
+        sv[F.SV_NSTEPS] += steps - 1
+    else:
+        tend = t + h
+        theta = 1.0
+        yev[:] = ynew
+    if record_on:
+        hist, nh = record_inside(mdl, md, y, t, h, theta, Q, sv, hist, nh, yt, der, ev, ek, Jn, Jt)
+    if fired or record_on:
+        evaluate(mdl, md, yev, der, ev, ek, Jn, Jt)
+    if not step_stats(mdl, md, t, tend, sv, contacts, dents, cur_con, ek):
+        sv[F.SV_STATUS] = F.ST_NAN
+        return False, jev, tend, hist, nh
+    iq = 6 + 2 * mdl[3].shape[0]
+    en = abs(mechanical_energy(mdl, yev) - sv[F.SV_E0] - yev[iq] - yev[iq + 1] - yev[iq + 2])
+    sv[F.SV_EERR] = max(sv[F.SV_EERR], en)
+    return True, jev, tend, hist, nh

@@ -1,0 +1,76 @@
+"""The marker cluster of the rod and its pose in every frame (the first steps of
+:func:`~impactlab.experiment.kinematics.measure_impact`)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from impactlab.experiment.errors import MarkerError, TooFewFramesError
+from impactlab.experiment.markers import MarkerTracks
+from impactlab.experiment.rigid import MarkerGeometry, check_rigidity, fit_poses, reference_cluster
+
+__all__ = ["marker_poses"]
+
+
+def _cluster(
+    tracks: MarkerTracks, geometry: MarkerGeometry | None, src: str
+) -> tuple[MarkerTracks, np.ndarray]:
+    """(the tracks of the geometry's markers, the reference cluster in the body frame)."""
+    if geometry is None:
+        return tracks, reference_cluster(tracks)
+    if geometry.labels is not None:
+        missing = [lab for lab in geometry.labels if lab not in tracks.labels]
+        if missing:
+            raise MarkerError(
+                f"{src}: the marker geometry names markers {missing} that the "
+                f"file does not have (it has {list(tracks.labels)})"
+            )
+        tracks = tracks.select(list(geometry.labels))
+    elif geometry.markers.shape[0] != tracks.n_markers:
+        raise MarkerError(
+            f"{src}: the marker geometry has {geometry.markers.shape[0]} "
+            f"markers {list(geometry.labels or [])} but the file has "
+            f"{tracks.n_markers} {list(tracks.labels)}"
+        )
+    return tracks, np.asarray(geometry.markers, dtype=np.float64)
+
+
+def _check_geometry(
+    tracks: MarkerTracks, reference: np.ndarray, tolerance: float, src: str
+) -> None:
+    """The given geometry must match the measured cluster shape."""
+    meas = reference_cluster(tracks)
+    d_meas = np.linalg.norm(meas[:, None] - meas[None], axis=2)
+    d_geo = np.linalg.norm(reference[:, None] - reference[None], axis=2)
+    mis = float(np.max(np.abs(d_meas - d_geo)))
+    if mis > max(2.0 * tolerance, 2e-3):
+        raise MarkerError(
+            f"{src}: the given marker geometry does not match the markers: "
+            f"inter-marker distances differ by up to {mis * 1e3:.2f} mm "
+            "(wrong labels, order or units?)"
+        )
+
+
+def marker_poses(
+    tracks: MarkerTracks,
+    geometry: MarkerGeometry | None,
+    rigidity_tolerance: float,
+    rigidity_window: int,
+    min_fit_frames: int,
+    src: str,
+) -> tuple[Any, ...]:
+    """(reference cluster, rigidity report, poses, frames with a pose)."""
+    tracks, reference = _cluster(tracks, geometry, src)
+    rigidity = check_rigidity(tracks, tolerance=rigidity_tolerance, window=rigidity_window)
+    if geometry is not None:
+        _check_geometry(tracks, reference, rigidity_tolerance, src)
+    poses = fit_poses(tracks, reference)
+    ok = np.flatnonzero(poses.ok)
+    if ok.size < 2 * min_fit_frames + 1:
+        raise TooFewFramesError(
+            f"{src}: only {ok.size} frames with a usable pose (3 or more "
+            f"markers seen); need at least {2 * min_fit_frames + 1}"
+        )
+    return reference, rigidity, poses, ok

@@ -1,0 +1,115 @@
+"""Is the measured dent one that the rod can make? Refuse the impossible, warn on the implausible.
+
+A wrong height unit, a wrong pixel size or a sign-flipped scan give numbers that look like
+measurements. These checks compare the dent with the rod that made it (tip radius R, length L):
+
+impossible (:class:`ScanError`, each message naming the likely cause):
+
+* delta_p below 1 nm (no profilometer resolves it: the height unit) or deeper than R;
+* a dent wider than the tip's diameter 2R or longer than the rod (the pixel size);
+* a dent more than 10 times deeper than a sphere of radius R reaches at the dent's width
+  (a residual dent is never deeper than the tip's cap: the pixel size or the height unit);
+
+implausible (warnings): delta_p below 0.1 um; a dent 100 times shallower than the tip's cap at
+its width (the height unit or the pixel size). The sign of the heights is checked by
+:func:`impactlab.experiment.measure_dent` itself (a bump instead of a dent).
+"""
+
+from __future__ import annotations
+
+import math
+
+from impactlab.experiment.errors import ScanError
+from impactlab.experiment.profilometry.heightmap import HeightMap
+from impactlab.experiment.profilometry.metrics import DentMetrics
+
+__all__ = ["check_dent"]
+
+#: Shallowest dent [m] a profilometer resolves; below it the height unit is wrong.
+MIN_DEPTH = 1e-9
+#: Shallowest plausible dent [m] of a drop test; below it a warning names the height unit.
+PLAUSIBLE_DEPTH = 0.1e-6
+
+
+def _length(x: float) -> str:
+    """A length [m] in the unit that reads best (m, mm, um or nm)."""
+    for unit, scale in (("m", 1.0), ("mm", 1e-3), ("um", 1e-6)):
+        if abs(x) >= scale:
+            return f"{x / scale:.4g} {unit}"
+    return f"{x * 1e9:.4g} nm"
+
+
+def _units(scan: HeightMap | None) -> tuple[str, str]:
+    """(how the heights were read, the pixel size) for the messages."""
+    if scan is None:
+        return "the height unit", "the pixel size"
+    meta = scan.meta or {}
+    unit = meta.get("height_unit") or meta.get("unit")
+    heights = f"the height unit (read as {unit!r})" if unit else "the height unit"
+    return heights, f"the pixel size ({_length(scan.dx)} x {_length(scan.dy)})"
+
+
+def _cap_depth(width: float, R: float) -> float:
+    """Depth [m] of a sphere of radius ``R`` at the chord ``width`` (inf for width >= 2R)."""
+    half = 0.5 * width
+    return R - math.sqrt(R * R - half * half) if half < R else math.inf
+
+
+def check_dent(
+    dent: DentMetrics,
+    *,
+    tip_radius: float,
+    rod_length: float,
+    scan: HeightMap | None = None,
+) -> tuple[str, ...]:
+    """Check ``dent`` against the rod that made it (tip radius, length [m]); ``scan`` (the height
+    map as read) names its height unit and pixel size in the messages.
+
+    Raises :class:`ScanError` for a dent the rod cannot make; returns the warnings for an
+    implausible one (empty when it looks right)."""
+    R, rod_l = float(tip_radius), float(rod_length)
+    depth, width, length = dent.delta_p.value, dent.width.value, dent.length.value
+    heights, pixels = _units(scan)
+    src = dent.source or "scan"
+    wrong: list[str] = []
+    if depth < MIN_DEPTH:
+        wrong.append(
+            f"delta_p = {depth:.3g} m is below 1 nm, finer than any profilometer resolves: check "
+            f"{heights} (heights stored in metres and read as um are 1e6 times too small)"
+        )
+    elif depth > R:
+        wrong.append(
+            f"delta_p = {_length(depth)} is deeper than the rod's tip radius R = {_length(R)}: "
+            f"check {heights}"
+        )
+    if width > 2.0 * R:
+        wrong.append(
+            f"the dent is {_length(width)} wide, wider than the tip's diameter "
+            f"2R = {_length(2 * R)}: check {pixels}"
+        )
+    if length > rod_l:
+        wrong.append(
+            f"the dent is {_length(length)} long, longer than the rod (L = {_length(rod_l)}): "
+            f"check {pixels}"
+        )
+    cap = _cap_depth(width, R)
+    if not wrong and depth > 10.0 * cap:
+        wrong.append(
+            f"delta_p = {_length(depth)} but the dent is only {_length(width)} wide: a tip of "
+            f"radius R = {_length(R)} reaches {_length(cap)} at that width, a residual dent "
+            f"never more: check {pixels} (too small?) or {heights}"
+        )
+    if wrong:
+        raise ScanError(f"{src}: impossible dent for this rod: " + "; ".join(wrong))
+    warnings: list[str] = []
+    if depth < PLAUSIBLE_DEPTH:
+        warnings.append(
+            f"delta_p = {_length(depth)} is shallower than 0.1 um, implausible for a dent of a "
+            f"drop: check {heights}"
+        )
+    if depth < 0.01 * cap:
+        warnings.append(
+            f"delta_p = {_length(depth)} is {cap / depth:.3g} times shallower than a tip of radius "
+            f"R = {_length(R)} at the dent's width {_length(width)}: check {heights} and {pixels}"
+        )
+    return tuple(warnings)

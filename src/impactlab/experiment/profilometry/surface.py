@@ -1,0 +1,141 @@
+"""The levelled surface of a scan and the dent on it: where it is, its area, its dropouts.
+
+:func:`find_dent` also checks the sign of the heights: a scan whose largest feature is a bump,
+much higher than the deepest depression is deep, is a scan with depths stored as positive
+heights (sign-flipped), refused with the option that reads it the other way up.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy import ndimage
+
+from impactlab.experiment.errors import DentCutOffError, DentNotFoundError, ScanError
+from impactlab.experiment.profilometry.heightmap import HeightMap
+from impactlab.experiment.profilometry.levelling import Levelled, level_plane
+from impactlab.experiment.profilometry.outline import edges_touched, fill_nan
+
+__all__ = ["Surface", "dent_region", "filled_fraction", "find_dent", "surface"]
+
+
+@dataclass(frozen=True)
+class Surface:
+    """The levelled scan: ``zl`` (NaN = no data), ``valid``, ``zs`` (filled and smoothed),
+    ``was_nan`` (filled pixels), ``sig_s`` (noise of ``zs`` [m]), ``lev``, pixel sizes, ``src``."""
+
+    zl: np.ndarray
+    valid: np.ndarray
+    zs: np.ndarray
+    was_nan: np.ndarray
+    sig_s: float
+    lev: Levelled
+    dx: float
+    dy: float
+    src: str
+
+
+def surface(hm: HeightMap, smooth: float) -> Surface:
+    """The levelled scan, filled over dropouts and smoothed by ``smooth`` pixels."""
+    lev = level_plane(hm)
+    zl = np.asarray(lev.z)
+    valid = np.isfinite(zl)
+    zf, was_nan = fill_nan(zl)
+    zs = ndimage.gaussian_filter(zf, smooth, mode="nearest") if smooth > 0 else zf
+    # noise of the smoothed map on the plane's inliers
+    r = zs[lev.inliers]
+    sig_s = float(1.4826 * np.median(np.abs(r - np.median(r)))) if r.size else lev.sigma
+    sig_s = max(sig_s, 1e-15)
+    return Surface(zl, valid, zs, was_nan, sig_s, lev, hm.dx, hm.dy, hm.source or "scan")
+
+
+def _components(mask: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(labels, label indices, sizes [pixels]) of the 8-connected components of ``mask``."""
+    lab, n = ndimage.label(mask, structure=np.ones((3, 3)))
+    index = np.arange(1, n + 1)
+    return lab, index, np.asarray(ndimage.sum(np.ones(mask.shape), lab, index=index))
+
+
+def _check_sign(
+    sf: Surface, depth: float, volume: float, detect_sigma: float, min_pixels: int
+) -> None:
+    """ScanError when the largest bump above the detection threshold is more than twice as high
+    as the dent (``depth`` [m]) is deep and holds at least half its ``volume`` [m^3] (a dust
+    grain is high but small; a pile-up is wide but low): a sign-flipped scan."""
+    lab, index, sizes = _components(sf.zs > detect_sigma * sf.sig_s)
+    good = sizes >= min_pixels
+    if not good.any():
+        return
+    volumes = np.asarray(ndimage.sum(sf.zs, lab, index=index)) * sf.dx * sf.dy
+    k = int(np.argmax(np.where(good, volumes, -np.inf)))
+    height = float(ndimage.maximum(sf.zs, lab, index=index[k]))
+    if height > 2.0 * depth and volumes[k] > 0.5 * volume:
+        raise ScanError(
+            f"{sf.src}: the scan's largest feature is a bump {height * 1e6:.3g} um high, not a "
+            f"dent (its deepest depression is {depth * 1e6:.3g} um deep): the heights look "
+            "sign-flipped (depths stored as positive heights); if so, read the scan the other "
+            "way up: analyze(..., flip_heights=True) (impactlab analyze --flip-heights) or "
+            "measure_dent(height_map.flipped())"
+        )
+
+
+def find_dent(sf: Surface, detect_sigma: float, min_pixels: int) -> tuple[int, int]:
+    """(i, j) of the deepest pixel of the deepest depression below the detection threshold;
+    DentNotFoundError when there is none, ScanError when the scan looks sign-flipped."""
+    zs, sig_s, src = sf.zs, sf.sig_s, sf.src
+    lab, index, sizes = _components(zs < -detect_sigma * sig_s)
+    deepest_val = float(np.min(zs))
+    good = [i for i in range(index.size) if sizes[i] >= min_pixels]
+    if not good:
+        _check_sign(sf, -deepest_val, 0.0, detect_sigma, min_pixels)
+    if index.size == 0:
+        raise DentNotFoundError(
+            f"{src}: no dent found: the deepest point is {-deepest_val * 1e6:.3g} um below the "
+            f"levelled surface, less than the detection threshold {detect_sigma:g} x noise = "
+            f"{detect_sigma * sig_s * 1e6:.3g} um"
+        )
+    if not good:
+        raise DentNotFoundError(
+            f"{src}: no dent found: the depressions below the detection threshold "
+            f"({detect_sigma * sig_s * 1e6:.3g} um) cover at most {int(max(sizes))} pixels "
+            f"(need {min_pixels}); dust or noise, not a dent"
+        )
+    depths = ndimage.minimum(zs, lab, index=index)
+    best = min(good, key=lambda i: depths[i])
+    comp = lab == best + 1
+    volume = -float(np.sum(zs[comp])) * sf.dx * sf.dy
+    _check_sign(sf, -float(depths[best]), volume, detect_sigma, min_pixels)
+    idx = int(np.argmin(np.where(comp, zs, np.inf)))
+    i0, j0 = np.unravel_index(idx, zs.shape)
+    return int(i0), int(j0)
+
+
+def dent_region(sf: Surface, ij: tuple[int, int], thr: float) -> np.ndarray:
+    """The deformed area: the connected region around ``ij`` deeper than ``thr`` (holes
+    filled); DentCutOffError when it reaches the scan's edge."""
+    lab2, _ = ndimage.label(sf.zs < -thr, structure=np.ones((3, 3)))
+    region = ndimage.binary_fill_holes(lab2 == lab2[ij])
+    edges = edges_touched(region)
+    if edges:
+        raise DentCutOffError(
+            f"{sf.src}: the dent is cut off by the scan's {' and '.join(edges)} edge: its outline "
+            f"(depth {thr * 1e6:.3g} um) reaches the edge, so its length cannot be measured; "
+            "scan a larger area around the dent"
+        )
+    return np.asarray(region)
+
+
+def filled_fraction(
+    sf: Surface, region: np.ndarray, max_filled: float, warnings: list[str]
+) -> float:
+    """Fraction of the deformed area filled over dropouts; ScanError above ``max_filled``."""
+    filled = float(sf.was_nan[region].mean())
+    if filled > max_filled:
+        raise ScanError(
+            f"{sf.src}: {filled:.0%} of the dent area has no data (dropouts); at "
+            f"most {max_filled:.0%} can be interpolated"
+        )
+    if filled > 0.05:
+        warnings.append(f"{filled:.0%} of the dent area was interpolated over dropouts")
+    return filled

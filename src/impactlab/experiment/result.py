@@ -1,0 +1,112 @@
+"""What :func:`impactlab.experiment.analyze` measured: :class:`ExperimentResult` (SI units)."""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from impactlab._display import html_table
+from impactlab._json import jsonable
+from impactlab.experiment.errors import ExperimentError
+from impactlab.experiment.kinematics import ImpactKinematics
+from impactlab.experiment.profilometry import DentMetrics
+from impactlab.experiment.uncertainty import Estimate
+
+__all__ = ["ExperimentResult"]
+
+
+@dataclass
+class ExperimentResult:
+    """Everything :func:`analyze` measured (SI units).
+
+    ``kinematics`` (:class:`ImpactKinematics` or None), ``dent`` (:class:`DentMetrics` or None),
+    ``inversion`` (``impactlab.analytic.InversionResult`` or None), ``model`` (engine comparison
+    or None), ``errors`` (stage -> message, for each stage that failed on its data),
+    ``warnings``, ``figures`` (name -> path), ``files`` (what was saved), ``rod`` (the rod's
+    properties used).
+    """
+
+    markers_path: str | None
+    scan_path: str | None
+    kinematics: ImpactKinematics | None = None
+    dent: DentMetrics | None = None
+    inversion: Any = None
+    model: dict[str, Any] | None = None
+    errors: dict[str, str] = field(default_factory=dict)
+    warnings: list[str] = field(default_factory=list)
+    figures: dict[str, str] = field(default_factory=dict)
+    files: dict[str, str] = field(default_factory=dict)
+    rod: dict[str, float] = field(default_factory=dict)
+
+    @property
+    def ok(self) -> bool:
+        """True when every stage succeeded."""
+        return not self.errors
+
+    def summary(self) -> dict[str, Estimate]:
+        """The headline results as estimates (SI), keyed by the paper's symbols (the table the
+        command line prints): e, mu, angle, v_i, v_c_in_x/y, v_c_out_x/y, spin_out, dv_cy,
+        delta_p, L_s (the sliding length), pileup, T, F (those available)."""
+        out: dict[str, Estimate] = {}
+        k = self.kinematics
+        if k is not None:
+            out["e"] = k.e
+            out["mu"] = k.mu
+            out["angle"] = k.angle_in
+            out["v_i"] = k.v_i
+            out["v_c_in_x"], out["v_c_in_y"] = k.v_c_in
+            out["v_c_out_x"], out["v_c_out_y"] = k.v_c_out
+            out["spin_out"] = k.spin_out
+            out["dv_cy"] = k.dv_cy
+        d = self.dent
+        if d is not None:
+            out["delta_p"] = d.delta_p
+            out["L_s"] = d.sliding_length
+            out["pileup"] = Estimate(d.pileup, 0.0, "m")
+        inv = self.inversion
+        if inv is not None:
+            out["T"] = Estimate(inv.duration, inv.sigma_T_mc, "s")
+            out["F"] = Estimate(inv.mean_force, inv.sigma_F_mc, "N")
+        return out
+
+    def raise_for_errors(self) -> None:
+        """Raise :class:`ExperimentError` with all stage errors (no-op when there are none)."""
+        if self.errors:
+            raise ExperimentError("; ".join(f"{k}: {v}" for k, v in self.errors.items()))
+
+    def _repr_html_(self) -> str:
+        rows = [(k, f"{v.value:.6g} +/- {v.sigma:.2g}", v.unit) for k, v in self.summary().items()]
+        rows += [(f"error ({k})", v, "") for k, v in self.errors.items()]
+        return html_table("ExperimentResult", rows)
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready (SI units; ``summary`` holds value/sigma/unit per quantity)."""
+        d: dict[str, Any] = {
+            "markers": self.markers_path,
+            "scan": self.scan_path,
+            "summary": {k: v.to_dict() for k, v in self.summary().items()},
+            "errors": dict(self.errors),
+            "warnings": list(self.warnings),
+            "rod": dict(self.rod),
+            "figures": dict(self.figures),
+        }
+        if self.kinematics is not None:
+            d["kinematics"] = self.kinematics.to_dict()
+        if self.dent is not None:
+            d["dent"] = self.dent.to_dict()
+        if self.inversion is not None:
+            d["inversion"] = self.inversion.to_dict()
+        if self.model is not None:
+            d["model"] = self.model
+        return jsonable(d)
+
+    def save(self, out_dir: str | Path) -> Path:
+        """Write ``results.json`` into ``out_dir`` (created); returns its path."""
+        out = Path(out_dir)
+        out.mkdir(parents=True, exist_ok=True)
+        p = out / "results.json"
+        self.files["results"] = str(p)
+        p.write_text(json.dumps(self.to_dict(), indent=2), encoding="utf-8")
+        return p

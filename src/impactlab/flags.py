@@ -1,0 +1,90 @@
+"""Result flags: what makes a computed impact untrustworthy although the integration succeeded.
+
+A status code (``impactlab.dynamics.core.status``) says whether the engine could compute an
+impact at all; a flag says that a computed impact must not be read as plain success. The
+compiled core writes the flags as the output field ``flags`` (an integer bitmask stored as a
+float, like ``regime``); ``ImpactResult.flags``, ``BatchResult.flags`` and sweep stores carry
+it, ``messages(flags)`` explains it. The criteria are derived in ``docs/engine/index.md``
+("Result flags"); their constants live here so that the core and the docs read one value.
+
+This module imports nothing from impactlab (layer L0): the compiled core reads its integers.
+"""
+
+from __future__ import annotations
+
+import enum
+
+__all__ = [
+    "ENERGY_GAIN_RTOL_FACTOR",
+    "ENERGY_ROUNDOFF",
+    "FLAG_ENERGY_GAIN",
+    "FLAG_GRAVITY_DOMINATED",
+    "FLAG_LAW_EXTRAPOLATED",
+    "GRAVITY_IMPULSE_RATIO",
+    "ResultFlag",
+    "messages",
+]
+
+FLAG_ENERGY_GAIN = 1  #: bit of ``ResultFlag.ENERGY_GAIN`` (read by the compiled core)
+FLAG_GRAVITY_DOMINATED = 2  #: bit of ``ResultFlag.GRAVITY_DOMINATED``
+FLAG_LAW_EXTRAPOLATED = 4  #: bit of ``ResultFlag.LAW_EXTRAPOLATED`` (reserved, issue 12)
+
+#: Energy gain tolerance, in units of ``rtol`` times the energy scale of the balance (E_0 + the
+#: kinetic and |potential| energy at separation). The integrator keeps each step's error below
+#: rtol; over the 15-430 steps of an impact the energy balance of the models that cannot create
+#: energy (Coulomb, Mindlin; every law, rod and sphere) closed within 6.8 rtol of that scale
+#: (160,000 impacts, rtol 1e-13 ... 1e-3, gravity not dominating); 100 leaves a factor of 15.
+ENERGY_GAIN_RTOL_FACTOR = 100.0
+#: Round-off floor of the energy balance, relative to the same scale: 2e5 steps (the step
+#: limit) x 2.2e-16 = 4.4e-11, rounded up.
+ENERGY_ROUNDOFF = 1e-10
+#: Gravity dominates when its impulse m g T exceeds this fraction of the contact's normal
+#: impulse P_n: gravity then accounts for up to that fraction of the change of the contact
+#: point's normal velocity; at the threshold it changes e by about 1 % (at most 1.3 %).
+GRAVITY_IMPULSE_RATIO = 0.1
+
+
+class ResultFlag(enum.IntFlag):
+    """Bits of the ``flags`` output of an impact (0: nothing to report)."""
+
+    NONE = 0
+    #: the total energy (kinetic + gravity potential) at separation exceeds the initial kinetic
+    #: energy beyond the integration tolerance: the friction model created energy
+    ENERGY_GAIN = FLAG_ENERGY_GAIN
+    #: gravity's impulse m g T is not small against the contact's normal impulse P_n: the body
+    #: rests, rocks or tips over rather than bounces, and e and the other impact measures are
+    #: not meaningful
+    GRAVITY_DOMINATED = FLAG_GRAVITY_DOMINATED
+    #: the impact left the contact law's fitted range (reserved for issue 12)
+    LAW_EXTRAPOLATED = FLAG_LAW_EXTRAPOLATED
+
+
+_MESSAGES: dict[ResultFlag, str] = {
+    ResultFlag.ENERGY_GAIN: (
+        "energy gain: the total energy at separation exceeds the initial kinetic energy "
+        "beyond the integration tolerance, so the friction model created energy (the paper's "
+        "impulse_ratio does so once the slip stops; coulomb is its energy-consistent completion)"
+    ),
+    ResultFlag.GRAVITY_DOMINATED: (
+        "gravity-dominated: gravity's impulse m g T exceeds "
+        f"{GRAVITY_IMPULSE_RATIO:g} of the contact's normal impulse, so the body rests, rocks "
+        "or tips over rather than bounces and e and the other impact measures are not "
+        "meaningful (raise the impact velocity, or pass gravity=False)"
+    ),
+    ResultFlag.LAW_EXTRAPOLATED: (
+        "law extrapolated: the impact left the contact law's fitted range"
+    ),
+}
+
+
+def messages(flags: int) -> tuple[str, ...]:
+    """One explanatory sentence per flag set in ``flags`` (an int or a ``ResultFlag``), in bit
+    order; ``()`` for none. Unknown bits raise ``ValueError``."""
+    try:
+        value = int(flags)
+    except (TypeError, ValueError):
+        raise TypeError(f"flags must be an integer bitmask, got {flags!r}") from None
+    known = int(ResultFlag.ENERGY_GAIN | ResultFlag.GRAVITY_DOMINATED | ResultFlag.LAW_EXTRAPOLATED)
+    if value < 0 or value & ~known:
+        raise ValueError(f"flags {value!r} holds bits outside the known flags (mask {known})")
+    return tuple(text for flag, text in _MESSAGES.items() if value & flag)
