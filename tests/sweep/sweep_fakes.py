@@ -1,18 +1,25 @@
-"""A cheap stand-in for the compiled engine, with the sweep's Evaluator interface.
+"""A cheap stand-in for the compiled engine, with the sweep's Evaluator interface, and wrappers
+that make distributed runs deterministic.
 
 The outputs are closed forms of the inputs, so tests can check values exactly. It can fail on a
-chosen chunk (an exception inside the evaluator, to simulate a crash mid-sweep), sleep per case
-(to make a sweep slow enough to kill), and flags cases as invalid like a law's validity limit.
+chosen chunk (an exception inside the evaluator, to simulate a crash mid-sweep), record which
+process ran it, and flags cases as invalid like a law's validity limit. ``GatedEvaluator`` and
+``BarrierEvaluator`` hold chunks back until a condition a test controls holds (a file exists),
+so no test depends on how fast a process happens to run.
 """
 
 from __future__ import annotations
 
 import os
+import sys
 import time
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 
 import numpy as np
+
+from impactlab.cli import main
+from impactlab.sweep import Normal, Sample, Study, Uniform
 
 
 def store_files(path: Path) -> dict[str, bytes]:
@@ -22,6 +29,18 @@ def store_files(path: Path) -> dict[str, bytes]:
     }
 
 
+def run_cli(monkeypatch, capsys, *args: str) -> tuple[int, str, str]:
+    """``impactlab ARGS`` in this process: (exit status, stdout, stderr)."""
+    monkeypatch.setattr(sys, "argv", ["impactlab", *args])
+    try:
+        main()
+        code = 0
+    except SystemExit as exc:
+        code = int(exc.code or 0)
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
 FIELDS = ("e", "delta_p", "sliding_length", "duration", "mean_force", "regime")
 VY_LIMIT = -5.0  # cases faster than this are "outside the fake law's validity"
 
@@ -29,10 +48,11 @@ VY_LIMIT = -5.0  # cases faster than this are "outside the fake law's validity"
 class FakeEvaluator:
     identity = "fake-evaluator/1"
 
-    def __init__(self, fail_when: str | None = None, delay: float = 0.0) -> None:
+    def __init__(self, fail_when: str | None = None, pid_dir: str | None = None) -> None:
         # fail_when: a file path; when the file exists the evaluator raises (crash simulation)
+        # pid_dir: a folder; every call leaves a file named after the process id there
         self.fail_when = fail_when
-        self.delay = delay
+        self.pid_dir = pid_dir
 
     def output_fields(self) -> tuple[str, ...]:
         return FIELDS
@@ -54,9 +74,8 @@ class FakeEvaluator:
     def __call__(self, cases, statics, outputs):
         if self.fail_when is not None and os.path.exists(self.fail_when):
             raise RuntimeError("simulated crash")
-        n = len(cases["angle"])
-        if self.delay:
-            time.sleep(self.delay * n)
+        if self.pid_dir is not None:
+            Path(self.pid_dir, str(os.getpid())).touch()
         th, vy, mu = cases["angle"], cases["vy"], cases["mu"]
         law = {"ghaednia": 0.0, "hertz": 1.0, "brake": 2.0}[statics.categories["law"]]
         E = np.where(np.isnan(cases["flat_E"]), 200e9, cases["flat_E"])
@@ -92,13 +111,21 @@ class CrashingEvaluator(FakeEvaluator):
         return super().__call__(cases, statics, outputs)
 
 
-class SlowEvaluator:
-    """Wraps an evaluator (same identity, same numbers) and sleeps per chunk: a sweep slow
-    enough to kill a worker in the middle of it."""
+def wait_for(condition, what: str, timeout: float = 300.0) -> None:
+    """Poll ``condition()`` until it holds; AssertionError naming ``what`` after ``timeout`` s
+    (a bound against a hang, far above any expected wait)."""
+    deadline = time.monotonic() + timeout
+    while not condition():
+        if time.monotonic() > deadline:
+            raise AssertionError(f"timed out after {timeout} s waiting for {what}")
+        time.sleep(0.01)
 
-    def __init__(self, inner, delay: float) -> None:
+
+class _Wrapper:
+    """Wraps an evaluator: same identity, same numbers."""
+
+    def __init__(self, inner) -> None:
         self.inner = inner
-        self.delay = delay
         self.identity = inner.identity
 
     def output_fields(self):
@@ -116,6 +143,71 @@ class SlowEvaluator:
     def validate(self, categories):
         return self.inner.validate(categories)
 
+
+class GatedEvaluator(_Wrapper):
+    """The victim process (``victim_pid``) computes one chunk, then blocks until it is killed;
+    every other process waits until the file ``gate/release`` exists. So the first chunk stored
+    is the victim's, and the sweep is still running when the victim dies."""
+
+    def __init__(self, inner, gate: str, victim_pid: int) -> None:
+        super().__init__(inner)
+        self.gate = gate
+        self.victim_pid = victim_pid
+
     def __call__(self, cases, statics, outputs):
-        time.sleep(self.delay)
+        gate = Path(self.gate)
+        if os.getpid() == self.victim_pid:
+            done = gate / "victim-computed"
+            if done.exists():
+                wait_for(lambda: False, "the test to kill this worker", timeout=600)
+            done.touch()
+        else:
+            wait_for((gate / "release").exists, "the test to release the other workers")
         return self.inner(cases, statics, outputs)
+
+
+class BarrierEvaluator(_Wrapper):
+    """Each process's first chunk waits until ``n`` processes have started one: every worker of
+    an ``n``-worker cluster computes at least one chunk, whatever the scheduling."""
+
+    def __init__(self, inner, gate: str, n: int) -> None:
+        super().__init__(inner)
+        self.gate = gate
+        self.n = n
+
+    def __call__(self, cases, statics, outputs):
+        gate = Path(self.gate)
+        (gate / f"started-{os.getpid()}").touch()
+        wait_for(lambda: len(list(gate.glob("started-*"))) >= self.n, f"{self.n} workers")
+        return self.inner(cases, statics, outputs)
+
+
+class FlaggingEvaluator(FakeEvaluator):
+    """FakeEvaluator (same identity and numbers) that also has the engine's ``flags`` output:
+    energy gain (1) where mu > 0.4, gravity-dominated (2) where vy > -0.5."""
+
+    def output_fields(self) -> tuple[str, ...]:
+        return (*FIELDS, "flags")
+
+    def integer_outputs(self) -> tuple[str, ...]:
+        return ("regime", "flags")
+
+    def __call__(self, cases, statics, outputs):
+        res, status = super().__call__(cases, statics, [o for o in outputs if o != "flags"])
+        if "flags" in outputs:
+            flags = np.where(cases["mu"] > 0.4, 1, 0) | np.where(cases["vy"] > -0.5, 2, 0)
+            res["flags"] = np.where(status == 0, flags, np.nan)
+        return res, status
+
+
+def kill_study(seed: int = 5) -> Study:
+    """A grid + sample study of 18 chunks (category, grid and sample dimensions; the sampled
+    inputs are written by the chunks at the start of the grid)."""
+    return Study(
+        name="kill",
+        chunk_size=100,
+        grid={"law": ["ghaednia", "hertz"], "angle": [0.2, 0.5, 0.9]},
+        sample=Sample(
+            size=300, seed=seed, inputs={"vy": Normal(-1.41, 0.05), "mu": Uniform(0.1, 0.3)}
+        ),
+    )

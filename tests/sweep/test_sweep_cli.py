@@ -3,25 +3,12 @@
 from __future__ import annotations
 
 import json
-import sys
 from pathlib import Path
 
 import pytest
-
-from impactlab.cli import main
+from sweep_fakes import run_cli
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
-
-
-def _cli(monkeypatch, capsys, *args: str) -> tuple[int, str, str]:
-    monkeypatch.setattr(sys, "argv", ["impactlab", *args])
-    try:
-        main()
-        code = 0
-    except SystemExit as exc:
-        code = int(exc.code or 0)
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 @pytest.mark.parametrize(
@@ -54,14 +41,14 @@ def _cli(monkeypatch, capsys, *args: str) -> tuple[int, str, str]:
 def test_bad_study_files_give_one_line(tmp_path, monkeypatch, capsys, text, message) -> None:
     f = tmp_path / "bad.toml"
     f.write_text(text)
-    code, _, err = _cli(monkeypatch, capsys, "sweep", str(f), "--out", str(tmp_path / "o"))
+    code, _, err = run_cli(monkeypatch, capsys, "sweep", str(f), "--out", str(tmp_path / "o"))
     assert code == 2
     assert err.startswith("error: ") and err.count("\n") == 1, err
     assert message in err
 
 
 def test_missing_study_file(tmp_path, monkeypatch, capsys) -> None:
-    code, _, err = _cli(monkeypatch, capsys, "sweep", str(tmp_path / "nope.toml"))
+    code, _, err = run_cli(monkeypatch, capsys, "sweep", str(tmp_path / "nope.toml"))
     assert code == 2 and "does not exist" in err
 
 
@@ -74,7 +61,7 @@ def test_run_resume_export_plot_info(tmp_path, monkeypatch, capsys) -> None:
         "[outputs]\nkeep = ['e', 'delta_p', 'sliding_length', 'duration', 'regime']\n"
     )
     store = tmp_path / "small.zarr"
-    code, out, err = _cli(
+    code, out, err = run_cli(
         monkeypatch,
         capsys,
         "sweep",
@@ -92,15 +79,15 @@ def test_run_resume_export_plot_info(tmp_path, monkeypatch, capsys) -> None:
     assert summary["cases"] == 40 and summary["chunks_computed"] == summary["chunks"]
     assert (tmp_path / "small.nc").is_file()
     assert (tmp_path / "plots" / "regime_map.png").is_file()
-    code, out, err = _cli(
+    code, out, err = run_cli(
         monkeypatch, capsys, "sweep", "run", str(study), "--out", str(store), "--json"
     )
     assert code == 0 and json.loads(out)["chunks_computed"] == 0  # nothing recomputed
-    code, out, err = _cli(monkeypatch, capsys, "sweep", "info", str(store), "--json")
+    code, out, err = run_cli(monkeypatch, capsys, "sweep", "info", str(store), "--json")
     assert code == 0 and json.loads(out)["chunks_done"].startswith(str(summary["chunks"]))
     changed = tmp_path / "changed.toml"
     changed.write_text(study.read_text().replace("-1.41 m/s", "-2 m/s"))
-    code, _, err = _cli(monkeypatch, capsys, "sweep", str(changed), "--out", str(store))
+    code, _, err = run_cli(monkeypatch, capsys, "sweep", str(changed), "--out", str(store))
     assert code == 2 and "--restart" in err
 
 
@@ -114,7 +101,7 @@ def test_uncertainty_command(tmp_path, monkeypatch, capsys) -> None:
         "mu = { dist = 'uniform', low = 0.05, high = 0.3 }\n"
         "[uncertainty]\noutputs = ['e', 'delta_p', 'L_s', 'T', 'F']\n"
     )
-    code, out, err = _cli(
+    code, out, err = run_cli(
         monkeypatch,
         capsys,
         "sweep",

@@ -1,6 +1,8 @@
 """A real Dask cluster (scheduler and workers as separate processes on 127.0.0.1) gives the
 same store as a local run, also when a worker is killed mid-sweep; workers load the compiled
-kernels from the shared on-disk numba cache."""
+kernels from the shared on-disk numba cache; a cluster that loses its last worker stops the
+sweep with an error. Gated evaluators (``sweep_fakes``) decide which worker computes what, so
+no test depends on how fast a process runs."""
 
 from __future__ import annotations
 
@@ -11,12 +13,11 @@ import socket
 import subprocess
 import sys
 import threading
-import time
 from pathlib import Path
 
 import numpy as np
 import pytest
-from sweep_fakes import SlowEvaluator, store_files
+from sweep_fakes import BarrierEvaluator, GatedEvaluator, store_files, wait_for
 
 from impactlab.sweep import ENGINE, Study, SweepStore, run_sweep
 
@@ -138,8 +139,9 @@ def _evaluator():
 def test_cluster_equals_local_and_loads_cached_kernels(cluster, tmp_path) -> None:
     ev = _evaluator()
     local = run_sweep(_study(), tmp_path / "local.zarr", evaluator=ev, quiet=True)
+    both = BarrierEvaluator(ev, str(tmp_path), n=2)  # each worker computes a chunk
     remote = run_sweep(
-        _study(), tmp_path / "dask.zarr", evaluator=ev, quiet=True, scheduler=cluster.address
+        _study(), tmp_path / "dask.zarr", evaluator=both, quiet=True, scheduler=cluster.address
     )
     assert remote.stats.backend == "dask"
     assert remote.stats.chunks_computed == local.stats.n_chunks > 4
@@ -151,38 +153,73 @@ def test_cluster_equals_local_and_loads_cached_kernels(cluster, tmp_path) -> Non
         assert c["hits"] > 0, (worker, c)
 
 
+class _Sweep(threading.Thread):
+    """``run_sweep`` in a thread; its result or exception in ``.result`` / ``.error``."""
+
+    def __init__(self, *args, **kwargs) -> None:
+        super().__init__(daemon=True)
+        self.args, self.kwargs = args, kwargs
+        self.result = None
+        self.error: BaseException | None = None
+
+    def run(self) -> None:
+        try:
+            self.result = run_sweep(*self.args, **self.kwargs)
+        except BaseException as exc:  # reported by the test
+            self.error = exc
+
+
+def _kill(proc: subprocess.Popen[bytes]) -> None:
+    os.kill(proc.pid, signal.SIGKILL)
+    proc.wait(timeout=60)
+
+
 def test_killed_worker_mid_sweep_still_gives_identical_store(cluster, tmp_path) -> None:
-    slow = SlowEvaluator(_evaluator(), delay=0.25)
     ref = run_sweep(_study(16), tmp_path / "ref.zarr", evaluator=_evaluator(), quiet=True)
     victim = cluster.add_worker()
     cluster.wait_for_workers(3)
     store = tmp_path / "killed.zarr"
-    box: dict[str, object] = {}
-
-    def work() -> None:
-        try:
-            box["res"] = run_sweep(
-                _study(16), store, evaluator=slow, quiet=True, scheduler=cluster.address
-            )
-        except BaseException as exc:  # pragma: no cover - reported below
-            box["err"] = exc
-
-    t = threading.Thread(target=work)
+    gated = GatedEvaluator(_evaluator(), str(tmp_path), victim.pid)
+    t = _Sweep(_study(16), store, evaluator=gated, quiet=True, scheduler=cluster.address)
     t.start()
-    deadline = time.monotonic() + 120
-    while len(SweepStore(store).done_chunks()) < 5 and time.monotonic() < deadline:
-        assert t.is_alive(), box
-        time.sleep(0.02)
-    os.kill(victim.pid, signal.SIGKILL)
-    victim.wait(timeout=10)
-    t.join(timeout=180)
+    # the other workers are held back: the first chunk stored is the victim's
+    wait_for(lambda: SweepStore(store).done_chunks() or not t.is_alive(), "the victim's chunk")
+    assert t.is_alive(), t.error
+    _kill(victim)  # while it holds its next chunk
+    (tmp_path / "release").touch()
+    t.join(timeout=300)
     assert not t.is_alive()
-    assert "err" not in box, box.get("err")
-    res = box["res"]
+    assert t.error is None, t.error
+    res = t.result
     assert res.complete  # type: ignore[attr-defined]
-    # the victim had finished chunks before it died; the survivors did the rest
+    # the victim had finished a chunk before it died; the survivors did the rest
     workers = res.stats.cache  # type: ignore[attr-defined]
     assert any(w.endswith(f":{victim.pid}") for w in workers), workers
     assert sum(c["tasks"] for c in workers.values()) == ref.stats.n_chunks
     assert len(SweepStore(store).done_chunks()) == ref.stats.n_chunks
     assert store_files(store) == store_files(ref.path)
+
+
+def test_losing_the_last_worker_stops_the_sweep_with_an_error(tmp_path) -> None:
+    lone = Cluster(tmp_path)
+    try:
+        victim = lone.add_worker()
+        lone.wait_for_workers(1)
+        store = tmp_path / "lost.zarr"
+        gated = GatedEvaluator(_evaluator(), str(tmp_path), victim.pid)
+        t = _Sweep(
+            _study(), store, evaluator=gated, quiet=True, scheduler=lone.address, worker_timeout=2
+        )
+        t.start()
+        wait_for(lambda: SweepStore(store).done_chunks() or not t.is_alive(), "the first chunk")
+        assert t.is_alive(), t.error
+        _kill(victim)
+        t.join(timeout=300)
+        assert not t.is_alive()
+    finally:
+        lone.close()
+    assert isinstance(t.error, RuntimeError), t.error
+    assert "no Dask worker left on the cluster for 2 s" in str(t.error)
+    assert "run the same command again" in str(t.error)
+    assert len(SweepStore(store).done_chunks()) == 1  # the victim's chunk stays stored
+    assert not (store / ".sweep" / "lock").exists()

@@ -87,7 +87,7 @@ def test_sphere_and_bad_law_parameters() -> None:
 
 @pytest.mark.parametrize("law", ["hertz", "ghaednia"])
 def test_models_are_cached(law) -> None:
-    from impactlab.sweep import engine as eng
+    from impactlab.sweep import models as eng
 
     sy = np.linspace(200e6, 300e6, 7)
     build_models(_cases(7, flat_yield_strength=sy), _statics(law=law))

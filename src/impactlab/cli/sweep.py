@@ -2,7 +2,7 @@
 
 impactlab sweep STUDY.toml [--out store.zarr] [--scheduler tcp://host:port] [--workers N]
                 [--backend threads|processes|dask] [--restart] [--quiet]
-                [--netcdf out.nc] [--plot DIR]
+                [--netcdf out.nc] [--plot DIR] [--max-cases N] [--worker-timeout S]
 impactlab sweep uncertainty STUDY.toml|STORE [--json] [...]
 impactlab sweep info STORE
 impactlab sweep plot STORE --out DIR
@@ -13,6 +13,8 @@ from __future__ import annotations
 
 import json
 import sys
+import warnings
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Annotated, Any
 
@@ -23,7 +25,9 @@ from impactlab.cli._common import UserError, emit
 from impactlab.sweep import (
     Study,
     SweepResult,
+    SweepSizeWarning,
     export_netcdf,
+    flag_counts,
     format_report,
     open_sweep,
     plot_sweep,
@@ -32,6 +36,8 @@ from impactlab.sweep import (
     store_info,
     uncertainty_reports,
 )
+from impactlab.sweep.backends import DEFAULT_WORKER_TIMEOUT
+from impactlab.sweep.summary import format_flag_counts
 
 
 class _DefaultRun(TyperGroup):
@@ -44,29 +50,38 @@ class _DefaultRun(TyperGroup):
         return super().parse_args(ctx, args)
 
 
-def _run(
-    study_path: Path,
-    out: Path | None,
-    scheduler: str | None,
-    workers: int | None,
-    backend: str | None,
-    quiet: bool,
-    restart: bool,
-) -> SweepResult:
-    study = Study.from_toml(study_path)
+@dataclass(frozen=True)
+class _Where:
+    """Where and how a study runs (the options shared by ``run`` and ``uncertainty``)."""
+
+    out: Path | None
+    scheduler: str | None
+    workers: int | None
+    max_cases: int | None
+    worker_timeout: float = DEFAULT_WORKER_TIMEOUT
+    backend: str | None = None
+
+
+def _run(study_path: Path, where: _Where, quiet: bool, restart: bool) -> SweepResult:
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", SweepSizeWarning)
+        study = Study.from_toml(study_path, max_cases=where.max_cases)
+    for w in caught:
+        print(f"warning: {w.message}", file=sys.stderr)
     try:
         return run_sweep(
             study,
-            out,
-            scheduler=scheduler,
-            workers=workers,
-            backend=backend,
+            where.out,
+            scheduler=where.scheduler,
+            workers=where.workers,
+            backend=where.backend,
             quiet=quiet,
             restart=restart,
+            worker_timeout=where.worker_timeout,
         )
     except (OSError, TimeoutError) as exc:
-        if scheduler is not None:
-            raise UserError(f"cannot use the Dask scheduler {scheduler!r}: {exc}") from None
+        if where.scheduler is not None:
+            raise UserError(f"cannot use the Dask scheduler {where.scheduler!r}: {exc}") from None
         raise
 
 
@@ -96,6 +111,8 @@ def _run_summary(
         "backend": s.backend,
         "status": status_counts(ds),
     }
+    if "flags" in ds.data_vars:
+        summary["flagged"] = format_flag_counts(flag_counts(ds["flags"].values, ds["flags"].attrs))
     if netcdf is not None:
         summary["netcdf"] = str(netcdf)
     if files:
@@ -114,6 +131,14 @@ _Scheduler = Annotated[
 ]
 _Workers = Annotated[
     int | None, typer.Option("--workers", "-w", min=1, help="Local cores to use (default: all).")
+]
+_MaxCases = Annotated[
+    int | None,
+    typer.Option(
+        "--max-cases",
+        min=1,
+        help="Largest number of cases accepted (default: the study's max_cases, 100 million).",
+    ),
 ]
 _Quiet = Annotated[bool, typer.Option("--quiet", "-q", help="No progress bar, no summary.")]
 _Json = Annotated[bool, typer.Option("--json", help="Machine-readable output.")]
@@ -140,6 +165,15 @@ def run_cmd(
     restart: Annotated[
         bool, typer.Option("--restart", help="Discard a store of a different study, start fresh.")
     ] = False,
+    max_cases: _MaxCases = None,
+    worker_timeout: Annotated[
+        float,
+        typer.Option(
+            "--worker-timeout",
+            min=0.001,
+            help="Dask: seconds without any worker before the sweep stops with an error.",
+        ),
+    ] = DEFAULT_WORKER_TIMEOUT,
     quiet: _Quiet = False,
     netcdf: Annotated[Path | None, typer.Option("--netcdf", help="Also export to NetCDF.")] = None,
     plot: Annotated[
@@ -151,7 +185,8 @@ def run_cmd(
 
     Example: impactlab sweep examples/study-regime-map.toml --out map.zarr --plot plots/
     """
-    res = _run(study, out, scheduler, workers, backend, quiet, restart)
+    where = _Where(out, scheduler, workers, max_cases, worker_timeout, backend)
+    res = _run(study, where, quiet, restart)
     ds = res.dataset
     if netcdf is not None:
         export_netcdf(ds, netcdf)
@@ -171,15 +206,16 @@ def run_cmd(
 @sweep_app.command("uncertainty")
 def uncertainty_cmd(
     source: Annotated[Path, typer.Argument(help="A Monte Carlo study file, or its Zarr store.")],
-    out: _Out = None,
-    scheduler: _Scheduler = None,
-    workers: _Workers = None,
     outputs: Annotated[
         list[str] | None, typer.Option("--output", help="Output to report (repeatable).")
     ] = None,
     percentiles: Annotated[
         list[float] | None, typer.Option("--percentile", help="Percentile (repeatable).")
     ] = None,
+    out: _Out = None,
+    scheduler: _Scheduler = None,
+    workers: _Workers = None,
+    max_cases: _MaxCases = None,
     quiet: _Quiet = False,
     as_json: _Json = False,
 ) -> None:
@@ -190,7 +226,8 @@ def uncertainty_cmd(
     if source.is_dir():
         ds = open_sweep(source)
     else:
-        ds = _run(source, out, scheduler, workers, None, quiet or as_json, False).dataset
+        where = _Where(out, scheduler, workers, max_cases)
+        ds = _run(source, where, quiet or as_json, False).dataset
     _print_uncertainty(ds, outputs, percentiles, as_json)
 
 

@@ -21,17 +21,19 @@ from impactlab.sweep.engine import (
     ENGINE,
     EngineEvaluator,
     Evaluator,
-    Statics,
     engine_available,
     numba_cache_stats,
 )
 from impactlab.sweep.inputs import INPUTS, OUTPUT_ALIASES, OUTPUTS, InputSpec
+from impactlab.sweep.integrity import DamagedStoreError
+from impactlab.sweep.limits import DEFAULT_MAX_CASES, SweepSizeWarning
+from impactlab.sweep.models import Statics
 from impactlab.sweep.options import EngineOptions, UncertaintySpec
 from impactlab.sweep.plots import plot_output_map, plot_regime_map, plot_sweep
 from impactlab.sweep.runner import SweepInterrupted, SweepResult, SweepStats, run_sweep
 from impactlab.sweep.store import StudyMismatchError, SweepStore, export_netcdf, open_sweep
 from impactlab.sweep.study import Study, load_study
-from impactlab.sweep.summary import status_counts, store_info
+from impactlab.sweep.summary import flag_counts, status_counts, store_info
 from impactlab.sweep.uncertainty import (
     UncertaintyReport,
     format_report,
@@ -40,11 +42,13 @@ from impactlab.sweep.uncertainty import (
 )
 
 __all__ = [
+    "DEFAULT_MAX_CASES",
     "ENGINE",
     "INPUTS",
     "OUTPUTS",
     "OUTPUT_ALIASES",
     "Axis",
+    "DamagedStoreError",
     "Distribution",
     "EngineEvaluator",
     "EngineOptions",
@@ -59,6 +63,7 @@ __all__ = [
     "StudyMismatchError",
     "SweepInterrupted",
     "SweepResult",
+    "SweepSizeWarning",
     "SweepStats",
     "SweepStore",
     "UncertaintyReport",
@@ -67,6 +72,7 @@ __all__ = [
     "compute_chunk",
     "engine_available",
     "export_netcdf",
+    "flag_counts",
     "format_report",
     "load_study",
     "numba_cache_stats",

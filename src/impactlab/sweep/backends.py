@@ -1,12 +1,23 @@
 """The execution backends of a sweep: the chunks in this process (threads), in a local process
-pool, or on a Dask cluster. Each hands every finished chunk to ``sink`` (the store writer)."""
+pool, or on a Dask cluster. Each hands every finished chunk to ``job.sink`` (the store writer).
+
+Pool processes die with their parent (Linux: ``PR_SET_PDEATHSIG``; elsewhere a thread watches
+the parent process id), so a killed sweep leaves no orphans computing on. A Dask sweep whose
+cluster has no worker left for ``worker_timeout`` seconds stops with an error instead of
+waiting for ever.
+"""
 
 from __future__ import annotations
 
+import ctypes
 import multiprocessing as mp
 import os
+import queue
+import signal
+import sys
+import threading
 import time
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Sequence
 from concurrent.futures import (
     FIRST_COMPLETED,
     Future,
@@ -14,6 +25,7 @@ from concurrent.futures import (
     ThreadPoolExecutor,
     wait,
 )
+from dataclasses import dataclass
 from typing import Any
 
 from impactlab.sweep.chunks import ChunkResult, compute_chunk, set_numba_threads
@@ -22,116 +34,168 @@ from impactlab.sweep.study import Study
 
 #: The backends, in the order of ``run_sweep``'s documentation.
 BACKENDS = ("threads", "processes", "dask")
+#: Default seconds a Dask sweep waits while its cluster has no worker before it gives up.
+DEFAULT_WORKER_TIMEOUT = 60.0
+_PR_SET_PDEATHSIG = 1  # <linux/prctl.h>
 
 
-def run_threads(
-    st: Study,
-    pending: Iterable[int],
-    ev: Evaluator,
-    outputs: Sequence[str],
-    threads: int,
-    sink: Callable[[ChunkResult, Any], None],
-    advance: Any,
-) -> None:
+@dataclass
+class Job:
+    """The chunks to compute and where their results go."""
+
+    study: Study
+    pending: Sequence[int]
+    evaluator: Evaluator
+    outputs: Sequence[str]
+    sink: Callable[[ChunkResult, Any], None]
+    advance: Any
+
+    def deliver(self, res: ChunkResult) -> None:
+        self.sink(res, self.advance)
+
+
+def run_threads(job: Job, threads: int) -> None:
     """Chunks in sequence; chunk k is written by a writer thread while chunk k+1 computes (the
     compiled engine releases the GIL in its parallel region, so the two overlap)."""
     with ThreadPoolExecutor(1, thread_name_prefix="sweep-writer") as writer:
         last: Future[None] | None = None
         try:
-            for k in pending:
-                res = compute_chunk(st, k, ev, outputs, numba_threads=threads)
+            for k in job.pending:
+                res = compute_chunk(job.study, k, job.evaluator, job.outputs, numba_threads=threads)
                 if last is not None:
                     last.result()  # at most one chunk waits in memory; errors surface here
-                last = writer.submit(sink, res, advance)
+                last = writer.submit(job.deliver, res)
         finally:
             if last is not None:
                 last.result()  # never leave a write half done behind an interrupt
 
 
-def _pool_init(threads: int) -> None:
+def _watch_parent(parent: int) -> None:
+    while True:
+        time.sleep(1.0)
+        if os.getppid() != parent:
+            os._exit(1)
+
+
+def die_with_parent(parent: int) -> None:
+    """Make this (pool) process exit when its parent ``parent`` dies: the kernel's parent-death
+    signal on Linux, a watching thread elsewhere."""
+    if sys.platform.startswith("linux"):
+        libc = ctypes.CDLL(None, use_errno=True)
+        armed = libc.prctl(_PR_SET_PDEATHSIG, int(signal.SIGKILL), 0, 0, 0) == 0
+    else:
+        armed = False
+    if os.getppid() != parent:  # the parent died before the signal was armed
+        os._exit(1)
+    if not armed:
+        threading.Thread(target=_watch_parent, args=(parent,), daemon=True).start()
+
+
+def _pool_init(threads: int, parent: int) -> None:
+    die_with_parent(parent)
     # numba.set_num_threads only: changing NUMBA_NUM_THREADS after numba has been imported
     # (impactlab imports it) makes numba refuse to launch its threads
     set_numba_threads(threads)
 
 
-def run_processes(
-    st: Study,
-    pending: Sequence[int],
-    ev: Evaluator,
-    outputs: Sequence[str],
-    workers: int,
-    sink: Callable[[ChunkResult, Any], None],
-    advance: Any,
-    max_in_flight: int | None,
-) -> None:
+def run_processes(job: Job, workers: int, max_in_flight: int | None) -> None:
     limit = max_in_flight or 2 * workers
-    todo = list(pending)
+    todo = list(job.pending)
     ex = ProcessPoolExecutor(
         max_workers=workers,
         mp_context=mp.get_context("spawn"),
         initializer=_pool_init,
-        initargs=(1,),
+        initargs=(1, os.getpid()),
     )
     running: set[Future[ChunkResult]] = set()
     try:
         while todo or running:
             while todo and len(running) < limit:
-                running.add(ex.submit(compute_chunk, st, todo.pop(0), ev, outputs, 1))
+                k = todo.pop(0)
+                running.add(ex.submit(compute_chunk, job.study, k, job.evaluator, job.outputs, 1))
             finished, running = wait(running, return_when=FIRST_COMPLETED)
             for fut in finished:
-                sink(fut.result(), advance)
+                job.deliver(fut.result())
     except BaseException:
         ex.shutdown(wait=False, cancel_futures=True)
         raise
     ex.shutdown(wait=True)
 
 
+class _WorkerWatch:
+    """Fails the sweep once the cluster has had no worker for ``timeout`` seconds."""
+
+    def __init__(self, client: Any, timeout: float) -> None:
+        self.client = client
+        self.timeout = timeout
+        self.since: float | None = None
+
+    def check(self) -> None:
+        if self.client.nthreads():
+            self.since = None
+            return
+        now = time.monotonic()
+        self.since = now if self.since is None else self.since
+        if now - self.since >= self.timeout:
+            raise RuntimeError(
+                f"no Dask worker left on the cluster for {self.timeout:g} s (worker_timeout); "
+                f"the finished chunks are stored: start workers and run the same command again "
+                f"to continue"
+            )
+
+
 def run_dask(
-    st: Study,
-    pending: Sequence[int],
-    ev: Evaluator,
-    outputs: Sequence[str],
+    job: Job,
     scheduler: str | None,
     client: Any,
-    sink: Callable[[ChunkResult, Any], None],
-    advance: Any,
     max_in_flight: int | None,
+    worker_timeout: float = DEFAULT_WORKER_TIMEOUT,
 ) -> int:
+    """Chunks as tasks on a Dask cluster; returns the number of workers at the end."""
     # distributed is heavy to import (about 1 s): only Dask runs pay for it
-    from distributed import Client, as_completed
+    from distributed import Client
 
     own = client is None
     cl = Client(scheduler, set_as_default=False) if own else client
+    finished: queue.Queue[Any] = queue.Queue()
+    running: set[Any] = set()
+    todo = list(job.pending)
+
+    def submit(k: int) -> None:
+        fut = cl.submit(
+            compute_chunk,
+            job.study,
+            k,
+            job.evaluator,
+            tuple(job.outputs),
+            pure=False,
+            key=f"impactlab-sweep-chunk-{k}-{os.getpid()}-{time.time_ns()}",
+        )
+        running.add(fut)
+        fut.add_done_callback(finished.put)
+
     try:
-        nthreads = sum(cl.nthreads().values()) or 1
-        limit = max_in_flight or max(4, 3 * nthreads)
-        todo = list(pending)
-
-        def submit(k: int) -> Any:
-            return cl.submit(
-                compute_chunk,
-                st,
-                k,
-                ev,
-                tuple(outputs),
-                pure=False,
-                key=f"impactlab-sweep-chunk-{k}-{os.getpid()}-{time.time_ns()}",
-            )
-
-        first = [submit(todo.pop(0)) for _ in range(min(limit, len(todo)))]
-        ac = as_completed(first, loop=cl.loop)
-        try:
-            for fut in ac:
-                res = fut.result()
-                fut.release()
-                sink(res, advance)
-                if todo:
-                    ac.add(submit(todo.pop(0)))
-        except BaseException:
-            for f in list(ac.futures):
-                f.cancel()
-            raise
+        limit = max_in_flight or max(4, 3 * (sum(cl.nthreads().values()) or 1))
+        watch = _WorkerWatch(cl, worker_timeout)
+        while todo and len(running) < limit:
+            submit(todo.pop(0))
+        while running:
+            try:
+                fut = finished.get(timeout=min(1.0, worker_timeout))
+            except queue.Empty:
+                watch.check()
+                continue
+            running.discard(fut)
+            res = fut.result()
+            fut.release()
+            job.deliver(res)
+            if todo:
+                submit(todo.pop(0))
         return len(cl.nthreads())
+    except BaseException:
+        for f in list(running):
+            f.cancel()
+        raise
     finally:
         if own:
             cl.close()

@@ -91,6 +91,27 @@ def _bound_dict(lo: float, hi: float) -> dict[str, float]:
     return d
 
 
+def _settle(dist: Distribution, **fields: Any) -> None:
+    """Set the checked fields of a frozen distribution."""
+    for name, value in fields.items():
+        object.__setattr__(dist, name, value)
+
+
+def _truncate(dist: Any, floor: float = -math.inf) -> tuple[float, float]:
+    """Check and set the truncation bounds ``low``, ``high`` of ``dist`` (``low`` at least
+    ``floor``); returns them."""
+    lo, hi = _bounds(dist.low, dist.high)
+    _settle(dist, low=max(lo, floor), high=hi)
+    return max(lo, floor), hi
+
+
+def _truncated_dict(dist: Any, floor: float = -math.inf, **params: float) -> dict[str, Any]:
+    """Canonical description of a truncated distribution: ``dist``, ``params``, then the bounds
+    that truncate (a ``low`` at ``floor`` does not)."""
+    lo = dist.low if dist.low > floor else -math.inf
+    return {"dist": dist.kind, **params, **_bound_dict(lo, dist.high)}
+
+
 @dataclass(frozen=True)
 class Uniform(Distribution):
     """Uniform on [low, high]."""
@@ -104,8 +125,7 @@ class Uniform(Distribution):
         hi = check_finite("high", self.high)
         if not lo < hi:
             raise ValueError(f"uniform distribution needs low < high, got low={lo!r}, high={hi!r}")
-        object.__setattr__(self, "low", lo)
-        object.__setattr__(self, "high", hi)
+        _settle(self, low=lo, high=hi)
 
     def ppf(self, u: np.ndarray) -> np.ndarray:
         return self.low + np.asarray(u) * (self.high - self.low)
@@ -137,11 +157,8 @@ class Normal(Distribution):
     kind: ClassVar[str] = "normal"
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "mean", check_finite("mean", self.mean))
-        object.__setattr__(self, "std", check_positive("std", self.std))
-        lo, hi = _bounds(self.low, self.high)
-        object.__setattr__(self, "low", lo)
-        object.__setattr__(self, "high", hi)
+        _settle(self, mean=check_finite("mean", self.mean), std=check_positive("std", self.std))
+        lo, hi = _truncate(self)
         a, b = self._std_bounds()
         mass = _norm_cdf(b) - _norm_cdf(a) if a <= 0 else _norm_cdf(-a) - _norm_cdf(-b)
         if not mass > 1e-12:
@@ -162,13 +179,7 @@ class Normal(Distribution):
         return np.clip(x, self.low, self.high)
 
     def to_dict(self) -> dict[str, Any]:
-        assert self.low is not None and self.high is not None
-        return {
-            "dist": self.kind,
-            "mean": self.mean,
-            "std": self.std,
-            **_bound_dict(self.low, self.high),
-        }
+        return _truncated_dict(self, mean=self.mean, std=self.std)
 
 
 @dataclass(frozen=True)
@@ -186,13 +197,9 @@ class LogNormal(Distribution):
     kind: ClassVar[str] = "lognormal"
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "median", check_positive("median", self.median))
-        object.__setattr__(self, "sigma", check_positive("sigma", self.sigma))
-        lo, hi = _bounds(self.low, self.high)
-        if lo < 0.0:
-            lo = 0.0
-        object.__setattr__(self, "low", lo)
-        object.__setattr__(self, "high", hi)
+        median, sigma = check_positive("median", self.median), check_positive("sigma", self.sigma)
+        _settle(self, median=median, sigma=sigma)
+        _truncate(self, floor=0.0)
         # the truncation check lives in the underlying normal
         self._log_normal()
 
@@ -215,13 +222,7 @@ class LogNormal(Distribution):
         return np.exp(self._log_normal().ppf(u))
 
     def to_dict(self) -> dict[str, Any]:
-        assert self.low is not None and self.high is not None
-        return {
-            "dist": self.kind,
-            "median": self.median,
-            "sigma": self.sigma,
-            **_bound_dict(self.low if self.low > 0 else -math.inf, self.high),
-        }
+        return _truncated_dict(self, 0.0, median=self.median, sigma=self.sigma)
 
 
 DISTRIBUTIONS: dict[str, str] = {

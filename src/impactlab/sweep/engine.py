@@ -5,28 +5,23 @@ the choices that are constant over the chunk (``Statics``: law, friction, body k
 presets, law parameters, engine options) to the kept output arrays and a status array. It builds
 the contact models and body vectors once per distinct combination of the numeric inputs that
 enter them (cached per process) with the same builder as ``simulate``
-(``impactlab.dynamics.models``), rejects what the Python constructors reject with a status code
-instead of an exception, and calls ``impactlab.dynamics.batch.run_arrays`` once for the chunk.
+(``impactlab.dynamics.models``; :mod:`impactlab.sweep.models`), rejects what the Python
+constructors reject with a status code instead of an exception, and calls
+``impactlab.dynamics.batch.run_arrays`` once for the chunk.
 
 Any object with the ``Evaluator`` interface can stand in for the engine (tests use a cheap fake).
 """
 
 from __future__ import annotations
 
-import dataclasses
-import math
-import os
 import sys
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field
-from typing import Any, Protocol, runtime_checkable
+from typing import Protocol, runtime_checkable
 
 import numpy as np
 from numba.core.dispatcher import Dispatcher
 
-from impactlab.bodies import NB, PAPER_ROD, Rod, Sphere
 from impactlab.contact import get_law, law_names
-from impactlab.contact.kernels import NPARAM
 from impactlab.dynamics.batch import (
     FRICTION_IDS,
     OUTPUT_FIELDS,
@@ -34,46 +29,17 @@ from impactlab.dynamics.batch import (
     STATUS_MESSAGES,
     run_arrays,
 )
-from impactlab.dynamics.models import body_params, build_contact_model
-from impactlab.materials import PRESETS, Material, get_material
-from impactlab.sweep.inputs import (
-    BODY_INPUTS,
-    CATEGORY_INPUTS,
-    INTEGER_OUTPUTS,
-    KINEMATIC_INPUTS,
-    LAW_INPUTS,
-    MATERIAL_OVERRIDES,
+from impactlab.materials import PRESETS
+from impactlab.sweep.inputs import INTEGER_OUTPUTS, KINEMATIC_INPUTS
+from impactlab.sweep.models import Statics, build_models
+from impactlab.sweep.status import (
+    STATUS_BAD_BODY,
+    STATUS_BAD_INPUT,
+    STATUS_BAD_LAW,
+    STATUS_BAD_MATERIAL,
+    STATUS_NOT_RUN,
+    SWEEP_STATUS_MESSAGES,
 )
-
-#: Status codes the sweep itself assigns (cases the engine never sees). Engine codes are small
-#: non-negative integers; these are kept apart.
-STATUS_NOT_RUN = -1
-STATUS_BAD_MATERIAL = 101
-STATUS_BAD_BODY = 102
-STATUS_BAD_LAW = 103
-STATUS_BAD_INPUT = 104
-SWEEP_STATUS_MESSAGES: dict[int, str] = {
-    STATUS_NOT_RUN: "not computed (chunk missing: the sweep was interrupted)",
-    STATUS_BAD_MATERIAL: "material rejected (impactlab.materials.Material: e.g. nu outside "
-    "(-1, 0.5), S_y >= E, non-positive value)",
-    STATUS_BAD_BODY: "body rejected (impactlab.bodies: non-positive length, radius, mass or "
-    "inertia, or both mass and density given)",
-    STATUS_BAD_LAW: "contact law rejected its parameters (outside the law's validity)",
-    STATUS_BAD_INPUT: "non-finite kinematic input (angle, vx, vy, spin or mu)",
-}
-
-
-@dataclass(frozen=True)
-class Statics:
-    """What is constant over one engine call: the category inputs, the law parameters and the
-    engine options."""
-
-    categories: Mapping[str, str]
-    law_params: Mapping[str, float] = field(default_factory=dict)
-    engine: Mapping[str, Any] = field(default_factory=dict)
-
-    def __getitem__(self, name: str) -> str:
-        return self.categories[name]
 
 
 @runtime_checkable
@@ -107,137 +73,6 @@ def engine_available() -> bool:
     """True: the compiled engine is a required part of the package (an install without it
     fails at import)."""
     return True
-
-
-# -- model construction (cached per process) ----------------------------------------------------
-
-_CACHE_MAX = 200_000
-_law_cache: dict[tuple[Any, ...], np.ndarray | int] = {}
-_body_cache: dict[tuple[Any, ...], np.ndarray | int] = {}
-
-
-def _material(preset: str, overrides: Mapping[str, float]) -> Material:
-    base = get_material(preset)
-    changes: dict[str, Any] = {k: v for k, v in overrides.items() if not math.isnan(v)}
-    if not changes:
-        return base
-    return dataclasses.replace(base, **changes)
-
-
-def _side(side: str, row: Mapping[str, float]) -> dict[str, float]:
-    return {field: row[name] for name, field in MATERIAL_OVERRIDES[side].items()}
-
-
-def _body(cat: Mapping[str, str], row: Mapping[str, float], body_mat: Material) -> Rod | Sphere:
-    def given(name: str) -> float | None:
-        v = row[name]
-        return None if math.isnan(v) else float(v)
-
-    kind = cat["body"]
-    if kind == "rod":
-        length, tip, mass = given("length"), given("tip_radius"), given("mass")
-        return Rod(
-            length=PAPER_ROD.length if length is None else length,
-            tip_radius=PAPER_ROD.tip_radius if tip is None else tip,
-            mass=PAPER_ROD.mass if mass is None else mass,
-            material=body_mat,
-            inertia=given("inertia"),
-        )
-    if kind == "sphere":
-        radius = given("radius")
-        if radius is None:
-            raise ValueError("a sphere needs the input 'radius'")
-        if given("inertia") is not None or given("length") is not None:
-            raise ValueError("a sphere takes radius and mass (or density), not length/inertia")
-        return Sphere(radius=radius, mass=given("mass"), material=body_mat)
-    raise ValueError(f"unknown body {kind!r}; known: rod, sphere")
-
-
-def _unique_rows(cols: Sequence[np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
-    """Distinct rows of the columns (bitwise, NaN == NaN) and the inverse index."""
-    n = cols[0].shape[0]
-    if all((c[0] == c[-1] and (c == c[0]).all()) or np.isnan(c).all() for c in cols):
-        return np.stack([c[:1] for c in cols], axis=1), np.zeros(n, dtype=np.intp)
-    stacked = np.ascontiguousarray(np.stack(cols, axis=1))
-    view = stacked.view(np.dtype((np.void, stacked.dtype.itemsize * stacked.shape[1]))).ravel()
-    _, first, inverse = np.unique(view, return_index=True, return_inverse=True)
-    return stacked[first], inverse.ravel()
-
-
-_LAW_NUMERIC = tuple(n for n in LAW_INPUTS if n not in CATEGORY_INPUTS)
-_BODY_NUMERIC = tuple(n for n in BODY_INPUTS if n not in CATEGORY_INPUTS)
-
-
-def build_models(
-    cases: Mapping[str, np.ndarray], statics: Statics
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Per-case law parameters, body parameters and status (0 or a sweep rejection code).
-
-    Returns (law_params (N, NPARAM) or (NPARAM,), body_params (N, NB) or (NB,), status (N,)).
-    ContactModels and bodies are built once per distinct combination of the inputs that enter
-    them and cached for the life of the process.
-    """
-    cat = statics.categories
-    n = len(cases["angle"])
-    status = np.zeros(n, dtype=np.int32)
-    names = sorted(set(_LAW_NUMERIC) | set(_BODY_NUMERIC))
-    cols = [np.asarray(cases[k], dtype=np.float64) for k in names]
-    rows, inverse = _unique_rows(cols)
-    lp = tuple(sorted(statics.law_params.items()))
-    law_out = np.empty((rows.shape[0], NPARAM))
-    body_out = np.empty((rows.shape[0], NB))
-    row_status = np.zeros(rows.shape[0], dtype=np.int32)
-    for r in range(rows.shape[0]):
-        row = dict(zip(names, rows[r].tolist(), strict=True))
-        key = (
-            cat["law"],
-            cat["body"],
-            cat["body_material"],
-            cat["flat_material"],
-            lp,
-            rows[r].tobytes(),
-        )
-        cached_l, cached_b = _law_cache.get(key), _body_cache.get(key)
-        if cached_l is None or cached_b is None:
-            cached_l, cached_b = _build_one(cat, row, statics.law_params)
-            if len(_law_cache) > _CACHE_MAX:
-                _law_cache.clear()
-                _body_cache.clear()
-            _law_cache[key], _body_cache[key] = cached_l, cached_b
-        if isinstance(cached_l, int):
-            row_status[r] = cached_l
-            law_out[r] = np.nan
-            body_out[r] = np.nan
-        else:
-            assert not isinstance(cached_b, int)
-            law_out[r] = cached_l
-            body_out[r] = cached_b
-    status[:] = row_status[inverse]
-    if rows.shape[0] == 1:
-        return law_out[0], body_out[0], status
-    return law_out[inverse], body_out[inverse], status
-
-
-def _build_one(
-    cat: Mapping[str, str], row: Mapping[str, float], law_params: Mapping[str, float]
-) -> tuple[Any, Any]:
-    """(law params, body params) for one combination, or (code, code) when rejected. The
-    contact model comes from ``impactlab.dynamics.models``, as in ``simulate``."""
-    try:
-        body_mat = _material(cat["body_material"], _side("body", row))
-        flat_mat = _material(cat["flat_material"], _side("flat", row))
-    except ValueError:
-        return STATUS_BAD_MATERIAL, STATUS_BAD_MATERIAL
-    try:
-        body = _body(cat, row, body_mat)
-        bp = body_params(body, flat_mat)
-    except ValueError:
-        return STATUS_BAD_BODY, STATUS_BAD_BODY
-    try:
-        model = build_contact_model(cat["law"], body_mat, flat_mat, body.tip_radius, law_params)
-    except ValueError:
-        return STATUS_BAD_LAW, STATUS_BAD_LAW
-    return np.asarray(model.params, dtype=np.float64), np.array(bp, dtype=np.float64)
 
 
 # -- numba cache statistics ----------------------------------------------------------------------
@@ -393,11 +228,3 @@ __all__ = [
 ]
 
 ENGINE = EngineEvaluator()
-
-
-def default_threads() -> int:
-    """Cores usable by this process."""
-    try:
-        return len(os.sched_getaffinity(0))
-    except AttributeError:  # pragma: no cover
-        return os.cpu_count() or 1

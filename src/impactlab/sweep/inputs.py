@@ -46,16 +46,15 @@ class InputSpec:
         return self.file_unit or self.unit
 
 
-def _f(
-    name: str,
-    unit: str,
-    description: str,
-    default: float | None = None,
-    *,
-    required: bool = False,
-    file_unit: str | None = None,
-) -> InputSpec:
-    return InputSpec(name, unit, "float", default, description, required, file_unit)
+#: The inputs every study must set (in [fixed], [grid] or [sample]).
+REQUIRED_INPUTS: tuple[str, ...] = ("angle", "vy", "mu")
+#: Inputs whose bare numbers in a study file are not in their SI unit.
+_FILE_UNITS = {"angle": "degree"}
+
+
+def _f(name: str, unit: str, description: str, default: float | None = None) -> InputSpec:
+    required = name in REQUIRED_INPUTS
+    return InputSpec(name, unit, "float", default, description, required, _FILE_UNITS.get(name))
 
 
 def _c(name: str, default: str, description: str) -> InputSpec:
@@ -82,35 +81,22 @@ MATERIAL_OVERRIDES: dict[str, dict[str, str]] = {
     for side in ("body", "flat")
 }
 
+_INERTIA = "moment of inertia about the centre of mass I_C (rod: m L^2/12 if not set)"
+
 _SPECS: tuple[InputSpec, ...] = (
     # kinematics (paper Sec. 2: theta, v_i; omega_i = 0, no tangential velocity)
-    _f(
-        "angle",
-        "rad",
-        "angle of the rod axis to the flat at first contact (theta)",
-        required=True,
-        file_unit="degree",
-    ),
+    _f("angle", "rad", "angle of the rod axis to the flat at first contact (theta)"),
     _f("vx", "m/s", "initial horizontal velocity of the centre of mass (+x towards C)", 0.0),
-    _f(
-        "vy",
-        "m/s",
-        "initial vertical velocity of the centre of mass (< 0: towards the flat)",
-        required=True,
-    ),
+    _f("vy", "m/s", "initial vertical velocity of the centre of mass (< 0: towards the flat)"),
     _f("spin", "rad/s", "initial angular velocity (counter-clockwise positive)", 0.0),
-    _f("mu", "1", "coefficient of friction", required=True),
+    _f("mu", "1", "coefficient of friction"),
     # body geometry (None: the paper's rod, impactlab.bodies.PAPER_ROD)
     _c("body", "rod", "impacting body: 'rod' (hemispherical tip) or 'sphere'"),
     _f("length", "m", "rod length L (rod)"),
     _f("tip_radius", "m", "rod tip radius R (rod)"),
     _f("radius", "m", "sphere radius (sphere)"),
     _f("mass", "kg", "body mass m (sphere: from the density if not set)"),
-    _f(
-        "inertia",
-        "kg*m^2",
-        "moment of inertia about the centre of mass I_C (rod: m L^2/12 if not set)",
-    ),
+    _f("inertia", "kg*m^2", _INERTIA),
     # materials: presets and per-property overrides
     _c("body_material", "aisi-201", "material preset of the impacting body"),
     _c("flat_material", "aisi-1010", "material preset of the flat"),
@@ -167,7 +153,10 @@ def get_input(name: str) -> InputSpec:
 #: The engine's outputs by name: unit and meaning (``impactlab.schema``, the one table).
 OUTPUTS: dict[str, Field] = {f.name: f for f in OUTPUT_FIELDS}
 #: Integer-valued outputs and their stored dtype (fill value -1).
-INTEGER_OUTPUTS: dict[str, str] = {"regime": "int8", "n_steps": "int32"}
+INTEGER_OUTPUTS: dict[str, str] = {"regime": "int8", "n_steps": "int32", "flags": "int16"}
+#: Outputs stored whatever ``[outputs] keep`` says (when the engine has them): the result flags
+#: (``impactlab.flags.ResultFlag``) that mark results not to be trusted as plain success.
+ALWAYS_STORED: tuple[str, ...] = ("flags",)
 
 #: The paper's symbols accepted as output names.
 OUTPUT_ALIASES: dict[str, str] = {

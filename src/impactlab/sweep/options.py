@@ -18,6 +18,10 @@ DEFAULT_UNCERTAINTY_OUTPUTS = ("e", "delta_p", "sliding_length", "duration", "me
 DEFAULT_PERCENTILES = (2.5, 50.0, 97.5)
 
 
+def _number(value: Any) -> bool:
+    return isinstance(value, int | float) and not isinstance(value, bool)
+
+
 @dataclass(frozen=True)
 class EngineOptions:
     """Options passed to the impact engine unchanged (None: the engine's default)."""
@@ -27,14 +31,14 @@ class EngineOptions:
     rtol: float | None = None
 
     def __post_init__(self) -> None:
-        if self.rtol is not None:
-            r = float(self.rtol)
-            if not (0.0 < r < 1.0):
-                raise ValueError(f"engine rtol must lie in (0, 1), got {self.rtol!r}")
+        if self.rtol is not None and not (_number(self.rtol) and 0.0 < float(self.rtol) < 1.0):
+            raise ValueError(f"engine rtol must be a number in (0, 1), got {self.rtol!r}")
         if self.gravity is not None and not isinstance(self.gravity, bool):
-            g = float(self.gravity)
-            if not (math.isfinite(g) and g >= 0.0):
-                raise ValueError(f"engine gravity must be true/false or >= 0 m/s^2, got {g!r}")
+            g = self.gravity
+            if not (_number(g) and math.isfinite(float(g)) and float(g) >= 0.0):
+                raise ValueError(
+                    f"engine gravity must be true/false or a number >= 0 (m/s^2), got {g!r}"
+                )
         if self.constant_angle is not None and not isinstance(self.constant_angle, bool):
             raise ValueError(
                 f"engine constant_angle must be true or false, got {self.constant_angle!r}"

@@ -16,12 +16,15 @@ Backends (``backend=``):
 Whatever the backend, chunk ``k`` always holds the same cases and gives the same numbers, and
 finished chunks are never recomputed: an interrupted sweep (Ctrl-C, kill -9, an exception, a lost
 worker) run again completes the missing chunks only, and the store equals an uninterrupted run's.
+A resume first checks the finished chunks against their checksums and computes the damaged ones
+again. The engine's ``flags`` output is always stored when the engine has it.
 One chunk's computation is in :mod:`~impactlab.sweep.chunks`, the backends in
 :mod:`~impactlab.sweep.backends`.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import sys
 import time
 from collections.abc import Callable, Iterator
@@ -41,10 +44,19 @@ from rich.progress import (
 )
 
 from impactlab._version import __version__
-from impactlab.sweep.backends import BACKENDS, run_dask, run_processes, run_threads
+from impactlab.sweep.backends import (
+    BACKENDS,
+    DEFAULT_WORKER_TIMEOUT,
+    Job,
+    run_dask,
+    run_processes,
+    run_threads,
+)
 from impactlab.sweep.chunks import ChunkResult
-from impactlab.sweep.engine import ENGINE, Evaluator, default_threads
-from impactlab.sweep.inputs import CATEGORY_INPUTS, OUTPUT_ALIASES
+from impactlab.sweep.engine import ENGINE, Evaluator
+from impactlab.sweep.inputs import ALWAYS_STORED, CATEGORY_INPUTS, OUTPUT_ALIASES
+from impactlab.sweep.integrity import describe
+from impactlab.sweep.limits import usable_cores
 from impactlab.sweep.store import StoreMeta, SweepStore, open_sweep
 from impactlab.sweep.study import Study, load_study
 
@@ -53,17 +65,24 @@ from impactlab.sweep.study import Study, load_study
 class SweepStats:
     """Numbers of one ``run_sweep`` call."""
 
+    #: chunks and cases of the study
     n_chunks: int = 0
     n_cases: int = 0
+    #: chunks already stored (intact) when this run started
     chunks_before: int = 0
+    #: chunks and cases this run computed
     chunks_computed: int = 0
     cases_computed: int = 0
+    #: wall time of the run; time inside the evaluator; per-chunk compute time; writes [s]
     wall_s: float = 0.0
     eval_s: float = 0.0
     compute_s: float = 0.0
     write_s: float = 0.0
+    #: the backend and its number of workers
     backend: str = ""
     workers: int = 0
+    #: chunks found damaged (files no longer matching their checksums) and computed again
+    chunks_repaired: int = 0
     #: per worker: numba cache hits/misses seen by its tasks
     cache: dict[str, dict[str, int]] = field(default_factory=dict)
     #: per worker: wall time of its first task [s]
@@ -109,7 +128,7 @@ def resolve_outputs(study: Study, evaluator: Evaluator) -> tuple[str, ...]:
             f"unknown output(s) {unknown}; the engine provides: {', '.join(fields)} "
             f"(aliases: {', '.join(f'{k}={v}' for k, v in OUTPUT_ALIASES.items())})"
         )
-    return outs
+    return outs + tuple(o for o in ALWAYS_STORED if o in fields and o not in outs)
 
 
 def category_values(study: Study) -> dict[str, list[str]]:
@@ -182,6 +201,48 @@ def _note(msg: str, quiet: bool) -> None:
         print(msg, file=sys.stderr, flush=True)
 
 
+@dataclass(frozen=True)
+class _Backend:
+    """Where the chunks run (checked arguments of ``run_sweep``)."""
+
+    name: str
+    workers: int
+    scheduler: str | None = None
+    client: Any = None
+    max_in_flight: int | None = None
+    worker_timeout: float = DEFAULT_WORKER_TIMEOUT
+
+
+def _backend(
+    backend: str | None,
+    workers: int | None,
+    scheduler: str | None,
+    client: Any,
+    max_in_flight: int | None,
+    worker_timeout: float,
+) -> _Backend:
+    if scheduler is not None or client is not None:
+        if backend not in (None, "dask"):
+            raise ValueError(f"a scheduler/client implies backend 'dask', got {backend!r}")
+        backend = "dask"
+    backend = backend or "threads"
+    if backend not in BACKENDS:
+        raise ValueError(f"unknown backend {backend!r}; known: {', '.join(BACKENDS)}")
+    if backend == "dask" and scheduler is None and client is None:
+        raise ValueError("backend 'dask' needs scheduler='tcp://host:port' or a client")
+    if workers is not None and (
+        isinstance(workers, bool) or not isinstance(workers, int) or workers < 1
+    ):
+        raise ValueError(f"workers must be an integer >= 1, got {workers!r}")
+    if isinstance(worker_timeout, bool) or not (
+        isinstance(worker_timeout, int | float) and worker_timeout > 0
+    ):
+        raise ValueError(f"worker_timeout must be a number of seconds > 0, got {worker_timeout!r}")
+    return _Backend(
+        backend, workers or usable_cores(), scheduler, client, max_in_flight, worker_timeout
+    )
+
+
 def run_sweep(
     study: Study | str | Path | dict[str, Any],
     store: str | Path | None = None,
@@ -195,61 +256,62 @@ def run_sweep(
     restart: bool = False,
     evaluator: Evaluator | None = None,
     max_in_flight: int | None = None,
+    max_cases: int | None = None,
+    worker_timeout: float = DEFAULT_WORKER_TIMEOUT,
 ) -> SweepResult:
     """Run (or resume) a sweep into a Zarr store.
 
     study : a ``Study``, a study-file path or a parsed study table.
     store : path of the Zarr store (default ``<study name>.zarr``). An existing store of the same
-        study is resumed; one of a different study is refused unless ``restart=True``.
+        study is resumed (damaged chunks are computed again); one of a different study is refused
+        unless ``restart=True``.
     backend : "threads" (default), "processes" or "dask" (implied by ``scheduler``/``client``).
     workers : local cores (threads: numba threads; processes: pool size); default all cores.
     scheduler : Dask scheduler address ("tcp://host:port"); ``client``: a ``distributed.Client``.
     quiet : no progress bar and no notes; ``progress``: True/False forces the bar on/off
         (default: shown when stderr is a terminal and not quiet).
     evaluator : stand-in for the engine (tests); default ``engine.ENGINE``.
+    max_cases : refuse a study of more cases than this (default: the study's ``max_cases``).
+    worker_timeout : Dask: seconds without any worker on the cluster before the sweep stops with
+        an error (the finished chunks stay stored).
     """
-    st = load_study(study)
+    st = load_study(study, max_cases=max_cases)
     ev: Evaluator = evaluator if evaluator is not None else ENGINE
-    if scheduler is not None or client is not None:
-        if backend not in (None, "dask"):
-            raise ValueError(f"a scheduler/client implies backend 'dask', got {backend!r}")
-        backend = "dask"
-    backend = backend or "threads"
-    if backend not in BACKENDS:
-        raise ValueError(f"unknown backend {backend!r}; known: {', '.join(BACKENDS)}")
-    if backend == "dask" and scheduler is None and client is None:
-        raise ValueError("backend 'dask' needs scheduler='tcp://host:port' or a client")
-    ncores = default_threads()
-    if workers is not None and (
-        isinstance(workers, bool) or not isinstance(workers, int) or workers < 1
-    ):
-        raise ValueError(f"workers must be an integer >= 1, got {workers!r}")
-    nworkers = workers or ncores
+    be = _backend(backend, workers, scheduler, client, max_in_flight, worker_timeout)
     ev.validate(category_values(st))
     meta = store_meta(st, ev)
     path = Path(store) if store is not None else Path(f"{st.name}.zarr")
     sstore = SweepStore(path)
     try:
-        if sstore.exists():
-            sstore.acquire()  # refuses while another live process writes this store
         done = sstore.prepare(st, meta, restart=restart)
-        sstore.acquire()
+        damaged = sstore.verify(done)
+        if damaged:
+            _note(f"{path}: damaged, computing again: {describe(damaged)}", quiet)
+            sstore.discard(damaged)
+        stats = SweepStats(
+            n_chunks=st.layout.n_chunks,
+            n_cases=st.layout.n_cases,
+            chunks_before=len(done) - len(damaged),
+            backend=be.name,
+            workers=be.workers,
+            chunks_repaired=len(damaged),
+        )
+        intact = done - set(damaged)
         return _run_store(
-            st,
-            ev,
-            meta,
-            sstore,
-            done,
-            backend,
-            nworkers,
-            scheduler,
-            client,
-            quiet,
-            progress,
-            max_in_flight,
+            st, ev, _stored_meta(sstore, meta), sstore, intact, be, stats, quiet, progress
         )
     finally:
         sstore.release()
+
+
+def _stored_meta(sstore: SweepStore, meta: StoreMeta) -> StoreMeta:
+    """``meta`` with the outputs the store holds (a store made before an output was always
+    stored goes on without it)."""
+    stored = tuple(sstore.attrs().get("outputs", meta.outputs))
+    if stored == meta.outputs:
+        return meta
+    ints = tuple(o for o in meta.integer_outputs if o in stored)
+    return dataclasses.replace(meta, outputs=stored, integer_outputs=ints)
 
 
 def _run_store(
@@ -258,24 +320,14 @@ def _run_store(
     meta: StoreMeta,
     sstore: SweepStore,
     done: set[int],
-    backend: str,
-    nworkers: int,
-    scheduler: str | None,
-    client: Any,
+    be: _Backend,
+    stats: SweepStats,
     quiet: bool,
     progress: bool | None,
-    max_in_flight: int | None,
 ) -> SweepResult:
     path = sstore.path
     lay = st.layout
     pending = [k for k in range(lay.n_chunks) if k not in done]
-    stats = SweepStats(
-        n_chunks=lay.n_chunks,
-        n_cases=lay.n_cases,
-        chunks_before=len(done),
-        backend=backend,
-        workers=nworkers,
-    )
     if done:
         _note(f"resuming {path}: {len(done)} of {lay.n_chunks} chunks already stored", quiet)
     if not pending:
@@ -304,13 +356,14 @@ def _run_store(
 
     try:
         with _progress(lay.n_cases, done_cases, st.name, show) as advance:
-            if backend == "threads":
-                run_threads(st, pending, ev, meta.outputs, nworkers, sink, advance)
-            elif backend == "processes":
-                run_processes(st, pending, ev, meta.outputs, nworkers, sink, advance, max_in_flight)
+            job = Job(st, pending, ev, meta.outputs, sink, advance)
+            if be.name == "threads":
+                run_threads(job, be.workers)
+            elif be.name == "processes":
+                run_processes(job, be.workers, be.max_in_flight)
             else:
                 stats.workers = run_dask(
-                    st, pending, ev, meta.outputs, scheduler, client, sink, advance, max_in_flight
+                    job, be.scheduler, be.client, be.max_in_flight, be.worker_timeout
                 )
     except KeyboardInterrupt:
         stats.wall_s = time.perf_counter() - t0

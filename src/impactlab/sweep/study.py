@@ -14,9 +14,11 @@ Study files are read by :mod:`impactlab.sweep.studyfile`.
 
 from __future__ import annotations
 
+import dataclasses
 import hashlib
 import json
 import math
+import re
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
@@ -25,6 +27,7 @@ from typing import Any
 
 import numpy as np
 
+from impactlab.contact import get_law, law_names
 from impactlab.sweep.dimensions import (
     Axis,
     Layout,
@@ -35,6 +38,7 @@ from impactlab.sweep.dimensions import (
     layout,
 )
 from impactlab.sweep.inputs import INPUTS, OUTPUT_ALIASES, get_input
+from impactlab.sweep.limits import DEFAULT_MAX_CASES, check_max_cases, too_many, warn_chunking
 from impactlab.sweep.options import (
     DEFAULT_CHUNK_SIZE,
     STUDY_FORMAT,
@@ -90,13 +94,39 @@ def _check_outputs(outputs: Sequence[str]) -> tuple[str, ...]:
     return outs
 
 
-def _check_law_params(law_params: Mapping[str, Any]) -> dict[str, float]:
+def _check_law_params(
+    law_params: Mapping[str, Any], laws: Sequence[Value | None]
+) -> dict[str, float]:
+    """Numbers, each a parameter of every (registered) law of the study."""
     lp = {}
     for k, v in dict(law_params).items():
         if isinstance(v, bool) or not isinstance(v, int | float):
             raise ValueError(f"law parameter {k!r} must be a number, got {v!r}")
         lp[str(k)] = float(v)
+    for law in laws:
+        if law not in law_names():
+            continue  # an unknown law is reported by the engine's check, with the known laws
+        known = sorted(p.name for p in get_law(str(law)).parameters)
+        unknown = sorted(set(lp) - set(known))
+        if unknown:
+            raise ValueError(
+                f"[law_params] {', '.join(map(repr, unknown))} is not a parameter of contact law "
+                f"{law!r}; its parameters: {', '.join(known) or 'none'} (see `impactlab laws`)"
+            )
     return lp
+
+
+#: A study name: letters, digits, '-', '_' and '.', not starting with '.' (it names files).
+_NAME = re.compile(r"[A-Za-z0-9_][A-Za-z0-9._-]{0,199}")
+
+
+def _check_name(name: Any) -> str:
+    if not isinstance(name, str) or not _NAME.fullmatch(name):
+        raise ValueError(
+            f"study name must be letters, digits, '-', '_' and '.' (not starting with '.'; no "
+            f"spaces or path separators; at most 200 characters), got {name!r}"
+        )
+    return name
 
 
 @dataclass(frozen=True)
@@ -118,6 +148,8 @@ class Study:
     law_params : parameters of the contact law (``impactlab laws``), fixed for the study.
     chunk_size : target number of cases per chunk (the unit of work, storage and resumption).
     uncertainty : what ``impactlab sweep`` reports at the end of a Monte Carlo study.
+    max_cases : the largest number of cases accepted (a bigger study is refused with an estimate
+        of its time and disk); not part of the study hash.
     """
 
     name: str = "study"
@@ -130,10 +162,11 @@ class Study:
     chunk_size: int = DEFAULT_CHUNK_SIZE
     description: str = ""
     uncertainty: UncertaintySpec | None = None
+    max_cases: int = DEFAULT_MAX_CASES
 
     def __post_init__(self) -> None:
-        if not isinstance(self.name, str) or not self.name.strip():
-            raise ValueError(f"study name must be a non-empty string, got {self.name!r}")
+        _check_name(self.name)
+        object.__setattr__(self, "max_cases", check_max_cases(self.max_cases))
         axes = _axes(self.grid)
         object.__setattr__(self, "grid", axes)
         fixed = {k: check_value(k, v) for k, v in dict(self.fixed).items()}
@@ -145,7 +178,8 @@ class Study:
             object.__setattr__(self, "outputs", _check_outputs(self.outputs))
         if not isinstance(self.engine, EngineOptions):
             raise ValueError(f"engine must be EngineOptions, got {self.engine!r}")
-        object.__setattr__(self, "law_params", _check_law_params(self.law_params))
+        laws = next((a.values for a in axes if a.name == "law"), (self.value_of("law"),))
+        object.__setattr__(self, "law_params", _check_law_params(self.law_params, laws))
         if (
             isinstance(self.chunk_size, bool)
             or not isinstance(self.chunk_size, int)
@@ -154,6 +188,10 @@ class Study:
             raise ValueError(f"chunk_size must be an integer >= 1, got {self.chunk_size!r}")
         if self.uncertainty is not None and self.sample is None:
             raise ValueError("an [uncertainty] report needs a [sample]")
+        lay = self.layout
+        if lay.n_cases > self.max_cases:
+            raise too_many(f"study {self.name!r}", lay.n_cases, self.max_cases, self.outputs)
+        warn_chunking(self.name, self.chunk_size, lay.n_cases, lay.n_chunks)
 
     # -- structure -----------------------------------------------------------------------------
 
@@ -220,6 +258,7 @@ class Study:
                 "description": self.description,
                 "chunk_size": self.chunk_size,
                 "units": "si",
+                **({"max_cases": self.max_cases} if self.max_cases != DEFAULT_MAX_CASES else {}),
             },
             "fixed": dict(self.fixed),
             "grid": {a.name: list(a.values) for a in self.axes},
@@ -249,29 +288,38 @@ class Study:
     def hash(self, extra: str = "") -> str:
         """SHA-256 (hex, 16 digits) of the canonical study (plus ``extra``: the engine identity).
 
-        The description is not part of the hash (changing it does not change any result).
+        Neither the description nor ``max_cases`` is part of the hash (they change no result).
         """
         d = self.to_dict()
         d["study"].pop("description", None)
+        d["study"].pop("max_cases", None)
         text = json.dumps(d, sort_keys=True, separators=(",", ":")) + extra
         return hashlib.sha256(text.encode()).hexdigest()[:16]
 
     @classmethod
-    def from_dict(cls, data: Mapping[str, Any], *, source: str = "study") -> Study:
-        """Build a study from a study-file table (see docs/sweep.md) or ``to_dict()`` output."""
-        return cls(**study_arguments(data, source))
+    def from_dict(
+        cls, data: Mapping[str, Any], *, source: str = "study", max_cases: int | None = None
+    ) -> Study:
+        """Build a study from a study-file table (see docs/sweep.md) or ``to_dict()`` output;
+        ``max_cases`` overrides the table's."""
+        return cls(**study_arguments(data, source, max_cases))
 
     @classmethod
-    def from_toml(cls, path: str | Path) -> Study:
-        """Read a study file (TOML)."""
+    def from_toml(cls, path: str | Path, *, max_cases: int | None = None) -> Study:
+        """Read a study file (TOML); ``max_cases`` overrides the file's."""
         data, source = read_study_file(path)
-        return cls(**study_arguments(data, source))
+        return cls(**study_arguments(data, source, max_cases))
 
 
-def load_study(source: str | Path | Mapping[str, Any] | Study) -> Study:
-    """A ``Study`` from a study file path, a parsed table, or a ``Study`` (returned as is)."""
+def load_study(
+    source: str | Path | Mapping[str, Any] | Study, *, max_cases: int | None = None
+) -> Study:
+    """A ``Study`` from a study file path, a parsed table, or a ``Study`` (returned as is);
+    ``max_cases`` (when given) replaces the study's limit on its number of cases."""
     if isinstance(source, Study):
-        return source
+        if max_cases is None or max_cases == source.max_cases:
+            return source
+        return dataclasses.replace(source, max_cases=max_cases)
     if isinstance(source, Mapping):
-        return Study.from_dict(source)
-    return Study.from_toml(source)
+        return Study.from_dict(source, max_cases=max_cases)
+    return Study.from_toml(source, max_cases=max_cases)

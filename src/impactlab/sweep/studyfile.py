@@ -9,6 +9,7 @@ the table gives ``unit``; a string such as ``"8.8 mm"`` is converted. With ``uni
 from __future__ import annotations
 
 import math
+import re
 import tomllib
 from collections.abc import Callable, Mapping
 from pathlib import Path
@@ -24,6 +25,7 @@ from impactlab.sweep.distributions import (
     distribution_from_dict,
 )
 from impactlab.sweep.inputs import INPUTS, get_input
+from impactlab.sweep.limits import DEFAULT_MAX_CASES, check_max_cases, too_many
 from impactlab.sweep.options import (
     DEFAULT_CHUNK_SIZE,
     STUDY_FORMAT,
@@ -63,13 +65,16 @@ def read_study_file(path: str | Path) -> tuple[dict[str, Any], str]:
         raise ValueError(f"study file {str(p)!r} is not valid TOML: {exc}") from None
     data = dict(data)
     study_tab = dict(data.get("study", {})) if isinstance(data.get("study"), dict) else {}
-    study_tab.setdefault("name", p.stem)
+    study_tab.setdefault("name", re.sub(r"[^A-Za-z0-9._-]", "_", p.stem).lstrip(".") or "study")
     data["study"] = study_tab
     return data, str(p)
 
 
-def study_arguments(data: Mapping[str, Any], source: str) -> dict[str, Any]:
-    """The keyword arguments of ``Study`` from a study-file table (or ``Study.to_dict()``)."""
+def study_arguments(
+    data: Mapping[str, Any], source: str, max_cases: int | None = None
+) -> dict[str, Any]:
+    """The keyword arguments of ``Study`` from a study-file table (or ``Study.to_dict()``);
+    ``max_cases`` (when given) replaces the table's ``[study] max_cases``."""
     unknown = sorted(set(data) - set(_TABLES))
     if unknown:
         raise ValueError(
@@ -86,23 +91,28 @@ def study_arguments(data: Mapping[str, Any], source: str) -> dict[str, Any]:
         return dict(t)
 
     st = table("study")
-    allowed_study = {"name", "description", "chunk_size", "units"}
+    allowed_study = {"name", "description", "chunk_size", "units", "max_cases"}
     bad = sorted(set(st) - allowed_study)
     if bad:
         raise ValueError(f"[study] unknown key(s) {bad}; allowed: {sorted(allowed_study)}")
     si = st.get("units", "file") == "si"
+    limit = check_max_cases(
+        st.get("max_cases", DEFAULT_MAX_CASES) if max_cases is None else max_cases
+    )
     grid_tab = table("grid")
+    outputs = _outputs(table("outputs")) if "outputs" in data else None
     return {
         "name": str(st.get("name", "study")),
         "description": str(st.get("description", "")),
         "chunk_size": st.get("chunk_size", DEFAULT_CHUNK_SIZE),
         "fixed": _fixed(table("fixed"), si),
-        "grid": _grid(grid_tab, data.get("grid_order", list(grid_tab)), si),
+        "grid": _grid(grid_tab, data.get("grid_order", list(grid_tab)), si, (limit, outputs)),
         "sample": _sample(data["sample"], si) if "sample" in data else None,
-        "outputs": _outputs(table("outputs")) if "outputs" in data else None,
+        "outputs": outputs,
         "engine": _engine(table("engine")),
         "uncertainty": _uncertainty(table("uncertainty")) if "uncertainty" in data else None,
         "law_params": table("law_params"),
+        "max_cases": limit,
     }
 
 
@@ -167,15 +177,19 @@ def _fixed(tab: Mapping[str, Any], si: bool) -> dict[str, Value]:
     return fixed
 
 
-def _grid(tab: Mapping[str, Any], order: Any, si: bool) -> tuple[Axis, ...]:
+#: (max_cases, kept outputs): what an axis's size is checked against before its values exist.
+Limit = tuple[int, tuple[str, ...] | None]
+
+
+def _grid(tab: Mapping[str, Any], order: Any, si: bool, limit: Limit) -> tuple[Axis, ...]:
     axes = []
     for name in order:
         _known(name, "[grid]")
-        axes.append(_axis(name, tab[name], si))
+        axes.append(_axis(name, tab[name], si, limit))
     return tuple(axes)
 
 
-def _axis(name: str, spec: Any, si: bool) -> Axis:
+def _axis(name: str, spec: Any, si: bool, limit: Limit) -> Axis:
     where = "[grid]"
     if isinstance(spec, list):
         return Axis(name, tuple(_value(name, v, si, where) for v in spec))
@@ -207,18 +221,27 @@ def _axis(name: str, spec: Any, si: bool) -> Axis:
         raise ValueError(f"[grid] {name}: spacing must be 'linear' or 'log', got {spacing!r}")
     if ("num" in spec) == ("step" in spec):
         raise ValueError(f"[grid] {name}: give exactly one of 'num' and 'step'")
-    vals = _range(name, spec, start, stop, conv, spacing)
+    vals = _range(name, spec, start, stop, conv, spacing, limit)
     return Axis(name, tuple(float(v) for v in vals))
 
 
 def _range(
-    name: str, spec: Mapping[str, Any], start: float, stop: float, conv: Converter, spacing: str
+    name: str,
+    spec: Mapping[str, Any],
+    start: float,
+    stop: float,
+    conv: Converter,
+    spacing: str,
+    limit: Limit,
 ) -> np.ndarray:
-    """The values of a start/stop/num (or step) grid axis (start, stop in SI)."""
+    """The values of a start/stop/num (or step) grid axis (start, stop in SI); an axis of more
+    values than ``max_cases`` is refused before its values are made."""
     if "num" in spec:
         num = spec["num"]
         if isinstance(num, bool) or not isinstance(num, int) or num < 1:
             raise ValueError(f"[grid] {name}: num must be an integer >= 1, got {num!r}")
+        if num > limit[0]:
+            raise too_many(f"[grid] {name} (num = {num})", num, *limit)
         if spacing == "log":
             if start <= 0 or stop <= 0 or (start < 0) != (stop < 0):
                 raise ValueError(f"[grid] {name}: log spacing needs start and stop > 0")
@@ -232,8 +255,8 @@ def _range(
             f"[grid] {name}: step {step!r} does not lead from start {start!r} to stop {stop!r}"
         )
     count = math.floor((stop - start) / step + 1e-9) + 1
-    if count > 100_000_000:
-        raise ValueError(f"[grid] {name}: {count} values is too many")
+    if count > limit[0]:
+        raise too_many(f"[grid] {name} (start/stop/step)", count, *limit)
     return start + step * np.arange(count)
 
 

@@ -1,38 +1,96 @@
-"""Summaries of a sweep store: case status counts and its progress and contents (what
-``impactlab sweep info`` and ``impactlab sweep run`` print)."""
+"""Summaries of a sweep store: case status counts, flagged results, and its progress and contents
+(what ``impactlab sweep info`` and ``impactlab sweep run`` print). Damaged chunks (files that no
+longer match their checksums) are reported, and left out of the counts."""
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
 import numpy as np
+import zarr
 
+from impactlab.sweep.dimensions import Layout
+from impactlab.sweep.integrity import describe
 from impactlab.sweep.store import SweepStore, open_sweep
 
 
-def status_counts(ds: Any) -> dict[str, int]:
-    """Number of cases per status, keyed "<code>: <message>" (code 0: ok)."""
-    msgs = ds.attrs.get("status_messages", {})
-    codes, counts = np.unique(np.asarray(ds["status"].values), return_counts=True)
+def _counts(values: np.ndarray, msgs: Mapping[str, str]) -> dict[str, int]:
+    codes, counts = np.unique(values, return_counts=True)
     return {
         f"{int(c)}: {msgs.get(str(int(c)), '?')}": int(n)
         for c, n in zip(codes, counts, strict=True)
     }
 
 
+def status_counts(ds: Any) -> dict[str, int]:
+    """Number of cases per status, keyed "<code>: <message>" (code 0: ok)."""
+    return _counts(np.asarray(ds["status"].values), ds.attrs.get("status_messages", {}))
+
+
+def _flag_bits(attrs: Mapping[str, Any]) -> list[tuple[int, str]]:
+    """(mask, name) of each flag of a ``flags`` variable (CF ``flag_masks``/``flag_meanings``)."""
+    masks = [int(m) for m in attrs.get("flag_masks", [])]
+    names = str(attrs.get("flag_meanings", "")).split()
+    return [(m, n.replace("_", " ")) for m, n in zip(masks, names, strict=False)]
+
+
+def flag_counts(flags: np.ndarray, attrs: Mapping[str, Any]) -> dict[str, int]:
+    """Number of cases carrying each result flag (``impactlab.flags.ResultFlag``), by name;
+    "flagged": cases with any flag. Cases without a result (-1) are not counted."""
+    f = np.asarray(flags).ravel()
+    f = f[f > 0]
+    out = {"flagged": int(f.size)}
+    for mask, name in _flag_bits(attrs):
+        out[name] = int(np.count_nonzero(f & mask))
+    return out
+
+
+def format_flag_counts(counts: Mapping[str, int]) -> str:
+    """``"12 of the cases: energy gain: 10, gravity dominated: 2"`` (``"none"`` when 0)."""
+    if not counts.get("flagged"):
+        return "none"
+    parts = ", ".join(f"{k}: {v:,}" for k, v in counts.items() if k != "flagged" and v)
+    return f"{counts['flagged']:,} case(s) ({parts})"
+
+
+def _intact_values(path: Path, name: str, damaged: set[int]) -> np.ndarray:
+    """The values of array ``name``, chunk by chunk, leaving out the damaged chunks (reading
+    them could fail)."""
+    z = zarr.open_array(str(path / name), mode="r")
+    if not damaged:
+        return np.asarray(z[...]).ravel()
+    lay = Layout(tuple(f"dim_{i}" for i in range(z.ndim)), tuple(z.shape), tuple(z.chunks))
+    parts = [np.asarray(z[lay.block(k)]).ravel() for k in range(lay.n_chunks) if k not in damaged]
+    return np.concatenate(parts) if parts else np.empty(0, dtype=z.dtype)
+
+
 def store_info(path: str | Path) -> dict[str, Any]:
     """Progress and contents of the store at ``path``: title, study hash, mode, dimensions,
-    cases, chunks done, outputs and status counts."""
-    ds = open_sweep(path)
-    done = len(SweepStore(path).done_chunks())
-    return {
+    cases, chunks done (intact), damaged chunks, outputs, status counts and flagged results."""
+    p = Path(path)
+    ds = open_sweep(p, verify=False)
+    store = SweepStore(p)
+    damaged = store.verify()
+    done = len(store.done_chunks()) - len(damaged)
+    info: dict[str, Any] = {
         "title": ds.attrs.get("title"),
         "study_hash": ds.attrs.get("study_hash"),
         "mode": ds.attrs.get("mode"),
         "dims": {str(k): int(v) for k, v in ds.sizes.items()},
         "cases": ds.attrs.get("n_cases"),
         "chunks_done": f"{done} of {ds.attrs.get('n_chunks')}",
-        "outputs": list(ds.attrs.get("outputs", [])),
-        "status": status_counts(ds),
     }
+    if damaged:
+        info["damaged"] = (
+            f"{len(damaged)} chunk(s), not counted below: {describe(damaged)}; run the sweep "
+            f"again into this store to recompute them"
+        )
+    info["outputs"] = list(ds.attrs.get("outputs", []))
+    msgs = ds.attrs.get("status_messages", {})
+    info["status"] = _counts(_intact_values(p, "status", set(damaged)), msgs)
+    if "flags" in ds.data_vars:
+        flags = _intact_values(p, "flags", set(damaged))
+        info["flagged"] = format_flag_counts(flag_counts(flags, ds["flags"].attrs))
+    return info

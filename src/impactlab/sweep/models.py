@@ -1,0 +1,163 @@
+"""The contact models and body vectors of a chunk's cases, built once per distinct combination
+of the numeric inputs that enter them (cached per process) with the same builder as
+``simulate`` (``impactlab.dynamics.models``). What the Python constructors reject becomes a
+status code (``impactlab.sweep.status``), never an exception."""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from impactlab.bodies import NB, PAPER_ROD, Rod, Sphere
+from impactlab.contact.kernels import NPARAM
+from impactlab.dynamics.models import body_params, build_contact_model
+from impactlab.materials import Material, get_material
+from impactlab.sweep.inputs import BODY_INPUTS, CATEGORY_INPUTS, LAW_INPUTS, MATERIAL_OVERRIDES
+from impactlab.sweep.status import STATUS_BAD_BODY, STATUS_BAD_LAW, STATUS_BAD_MATERIAL
+
+
+@dataclass(frozen=True)
+class Statics:
+    """What is constant over one engine call: the category inputs, the law parameters and the
+    engine options."""
+
+    categories: Mapping[str, str]
+    law_params: Mapping[str, float] = field(default_factory=dict)
+    engine: Mapping[str, Any] = field(default_factory=dict)
+
+    def __getitem__(self, name: str) -> str:
+        return self.categories[name]
+
+
+_CACHE_MAX = 200_000
+_law_cache: dict[tuple[Any, ...], np.ndarray | int] = {}
+_body_cache: dict[tuple[Any, ...], np.ndarray | int] = {}
+
+
+def _material(preset: str, overrides: Mapping[str, float]) -> Material:
+    base = get_material(preset)
+    changes: dict[str, Any] = {k: v for k, v in overrides.items() if not math.isnan(v)}
+    if not changes:
+        return base
+    return dataclasses.replace(base, **changes)
+
+
+def _side(side: str, row: Mapping[str, float]) -> dict[str, float]:
+    return {field: row[name] for name, field in MATERIAL_OVERRIDES[side].items()}
+
+
+def _body(cat: Mapping[str, str], row: Mapping[str, float], body_mat: Material) -> Rod | Sphere:
+    def given(name: str) -> float | None:
+        v = row[name]
+        return None if math.isnan(v) else float(v)
+
+    kind = cat["body"]
+    if kind == "rod":
+        length, tip, mass = given("length"), given("tip_radius"), given("mass")
+        return Rod(
+            length=PAPER_ROD.length if length is None else length,
+            tip_radius=PAPER_ROD.tip_radius if tip is None else tip,
+            mass=PAPER_ROD.mass if mass is None else mass,
+            material=body_mat,
+            inertia=given("inertia"),
+        )
+    if kind == "sphere":
+        radius = given("radius")
+        if radius is None:
+            raise ValueError("a sphere needs the input 'radius'")
+        if given("inertia") is not None or given("length") is not None:
+            raise ValueError("a sphere takes radius and mass (or density), not length/inertia")
+        return Sphere(radius=radius, mass=given("mass"), material=body_mat)
+    raise ValueError(f"unknown body {kind!r}; known: rod, sphere")
+
+
+def _unique_rows(cols: Sequence[np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
+    """Distinct rows of the columns (bitwise, NaN == NaN) and the inverse index."""
+    n = cols[0].shape[0]
+    if all((c[0] == c[-1] and (c == c[0]).all()) or np.isnan(c).all() for c in cols):
+        return np.stack([c[:1] for c in cols], axis=1), np.zeros(n, dtype=np.intp)
+    stacked = np.ascontiguousarray(np.stack(cols, axis=1))
+    view = stacked.view(np.dtype((np.void, stacked.dtype.itemsize * stacked.shape[1]))).ravel()
+    _, first, inverse = np.unique(view, return_index=True, return_inverse=True)
+    return stacked[first], inverse.ravel()
+
+
+_LAW_NUMERIC = tuple(n for n in LAW_INPUTS if n not in CATEGORY_INPUTS)
+_BODY_NUMERIC = tuple(n for n in BODY_INPUTS if n not in CATEGORY_INPUTS)
+
+
+def build_models(
+    cases: Mapping[str, np.ndarray], statics: Statics
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Per-case law parameters, body parameters and status (0 or a sweep rejection code).
+
+    Returns (law_params (N, NPARAM) or (NPARAM,), body_params (N, NB) or (NB,), status (N,)).
+    ContactModels and bodies are built once per distinct combination of the inputs that enter
+    them and cached for the life of the process.
+    """
+    cat = statics.categories
+    n = len(cases["angle"])
+    status = np.zeros(n, dtype=np.int32)
+    names = sorted(set(_LAW_NUMERIC) | set(_BODY_NUMERIC))
+    cols = [np.asarray(cases[k], dtype=np.float64) for k in names]
+    rows, inverse = _unique_rows(cols)
+    lp = tuple(sorted(statics.law_params.items()))
+    law_out = np.empty((rows.shape[0], NPARAM))
+    body_out = np.empty((rows.shape[0], NB))
+    row_status = np.zeros(rows.shape[0], dtype=np.int32)
+    for r in range(rows.shape[0]):
+        row = dict(zip(names, rows[r].tolist(), strict=True))
+        key = (
+            cat["law"],
+            cat["body"],
+            cat["body_material"],
+            cat["flat_material"],
+            lp,
+            rows[r].tobytes(),
+        )
+        cached_l, cached_b = _law_cache.get(key), _body_cache.get(key)
+        if cached_l is None or cached_b is None:
+            cached_l, cached_b = _build_one(cat, row, statics.law_params)
+            if len(_law_cache) > _CACHE_MAX:
+                _law_cache.clear()
+                _body_cache.clear()
+            _law_cache[key], _body_cache[key] = cached_l, cached_b
+        if isinstance(cached_l, int):
+            row_status[r] = cached_l
+            law_out[r] = np.nan
+            body_out[r] = np.nan
+        else:
+            assert not isinstance(cached_b, int)
+            law_out[r] = cached_l
+            body_out[r] = cached_b
+    status[:] = row_status[inverse]
+    if rows.shape[0] == 1:
+        return law_out[0], body_out[0], status
+    return law_out[inverse], body_out[inverse], status
+
+
+def _build_one(
+    cat: Mapping[str, str], row: Mapping[str, float], law_params: Mapping[str, float]
+) -> tuple[Any, Any]:
+    """(law params, body params) for one combination, or (code, code) when rejected. The
+    contact model comes from ``impactlab.dynamics.models``, as in ``simulate``."""
+    try:
+        body_mat = _material(cat["body_material"], _side("body", row))
+        flat_mat = _material(cat["flat_material"], _side("flat", row))
+    except ValueError:
+        return STATUS_BAD_MATERIAL, STATUS_BAD_MATERIAL
+    try:
+        body = _body(cat, row, body_mat)
+        bp = body_params(body, flat_mat)
+    except ValueError:
+        return STATUS_BAD_BODY, STATUS_BAD_BODY
+    try:
+        model = build_contact_model(cat["law"], body_mat, flat_mat, body.tip_radius, law_params)
+    except ValueError:
+        return STATUS_BAD_LAW, STATUS_BAD_LAW
+    return np.asarray(model.params, dtype=np.float64), np.array(bp, dtype=np.float64)

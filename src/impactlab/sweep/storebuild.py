@@ -1,0 +1,214 @@
+"""Building a new sweep store: its arrays, attributes and bookkeeping, written into an empty
+directory (``SweepStore.create`` builds it in a temporary sibling and renames it into place, so
+a store either exists complete or not at all).
+
+Layout (a Zarr v3 group that ``xarray.open_zarr`` reads):
+
+- one coordinate array per grid axis (SI values, ``units`` attribute);
+- the sampled inputs as variables along ``sample`` (written with the chunks that cover them);
+- fixed inputs as scalar coordinates;
+- one array per kept output and ``status`` (int32; -1 = not computed), chunked exactly like the
+  work: each work chunk is one Zarr chunk of every array, so no two chunks ever share a file;
+- ``.sweep/study.json`` (the canonical study) and ``.sweep/done/`` (completion markers).
+"""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Mapping
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import zarr
+from zarr.codecs import BloscCodec
+
+from impactlab.flags import ResultFlag, messages
+from impactlab.sweep.dimensions import SAMPLE_DIM
+from impactlab.sweep.hooks import checkpoint
+from impactlab.sweep.inputs import INPUTS, INTEGER_OUTPUTS, get_input, output_spec
+from impactlab.sweep.options import STUDY_FORMAT
+from impactlab.sweep.status import SWEEP_STATUS_MESSAGES
+from impactlab.sweep.study import Study
+
+#: The bookkeeping sub-group of a store.
+META = ".sweep"
+
+
+@dataclass(frozen=True)
+class StoreMeta:
+    """What the store records besides the data (root attributes)."""
+
+    study_hash: str
+    outputs: tuple[str, ...]
+    integer_outputs: tuple[str, ...]
+    status_messages: Mapping[int, str]
+    regimes: Mapping[int, str]
+    engine: str
+
+
+def compressors() -> Any:
+    """Blosc-LZ4 with byte shuffle: 2-3x faster to write than Zarr's default zstd at a similar
+    ratio on smooth sweep data (measured: 1.5 vs 3.3 ms per 60k-value chunk), which keeps the
+    writes a small fraction of the kernel time."""
+    return [BloscCodec(cname="lz4", clevel=5, shuffle="shuffle")]
+
+
+def _attrs_units(name: str) -> dict[str, Any]:
+    spec = get_input(name)
+    d: dict[str, Any] = {"long_name": spec.description}
+    if spec.unit:
+        d["units"] = spec.unit
+    return d
+
+
+def _new_array(g: Any, name: str, value: Any, dims: tuple[str, ...]) -> None:
+    """An unchunked coordinate array holding ``value`` (names or SI floats)."""
+    text = np.asarray(value).dtype.kind in "OUT"
+    shape = np.shape(value)
+    z = g.create_array(
+        name,
+        shape=shape,
+        **({"chunks": shape} if shape else {}),
+        dtype=str if text else "float64",
+        fill_value="" if text else np.nan,
+        dimension_names=dims,
+        attributes=_attrs_units(name),
+    )
+    z[...] = np.array(value, dtype=str) if text else value
+
+
+def _create_axes(g: Any, study: Study) -> None:
+    """One coordinate array per grid axis."""
+    for axis in study.axes:
+        _new_array(g, axis.name, axis.array(), (axis.name,))
+
+
+def _create_sampled(g: Any, study: Study) -> list[str]:
+    """The sampled inputs along ``sample`` (filled by the chunk writes); returns their names."""
+    if study.sample is None:
+        return []
+    c = study.layout.chunks[-1]
+    for name in study.sample.inputs:
+        g.create_array(
+            name,
+            shape=(study.sample.size,),
+            chunks=(c,),
+            dtype="float64",
+            fill_value=np.nan,
+            dimension_names=(SAMPLE_DIM,),
+            compressors=compressors(),
+            attributes={
+                **_attrs_units(name),
+                "distribution": json.dumps(study.sample.inputs[name].to_dict()),
+            },
+        )
+    return list(study.sample.inputs)
+
+
+def _create_constants(g: Any, study: Study) -> list[str]:
+    """The fixed (and defaulted) inputs as scalar arrays; returns their names."""
+    varying = set(study.varying())
+    constants = {n: study.value_of(n) for n in INPUTS if n not in varying}
+    names = []
+    for name, value in sorted((n, v) for n, v in constants.items() if v is not None):
+        _new_array(g, name, value, ())
+        names.append(name)
+    return names
+
+
+def _create_output(g: Any, name: str, meta: StoreMeta, study: Study) -> None:
+    """The array of one kept output, chunked like the work; unit and meaning from the schema."""
+    spec = output_spec(name)
+    attrs: dict[str, Any] = {"units": spec.unit, "long_name": spec.description}
+    fill: float
+    if name in meta.integer_outputs:
+        dtype, fill = INTEGER_OUTPUTS.get(name, "int32"), -1
+        if name == "regime" and meta.regimes:
+            attrs["regimes"] = {str(k): v for k, v in meta.regimes.items()}
+            attrs["flag_values"] = sorted(meta.regimes)
+            attrs["flag_meanings"] = " ".join(
+                meta.regimes[k].replace(" ", "_") for k in sorted(meta.regimes)
+            )
+        if name == "flags":
+            attrs.update(flag_attrs())
+    else:
+        dtype, fill = "float64", np.nan
+    _chunked(g, name, study, dtype, fill, attrs)
+
+
+def flag_attrs() -> dict[str, Any]:
+    """CF flag attributes of the ``flags`` output: each bit, its name and its explanation."""
+    bits = [f for f in ResultFlag if f.value]
+    texts = {int(f): messages(f)[0] for f in bits}
+    return {
+        "flag_masks": [int(f) for f in bits],
+        "flag_meanings": " ".join(texts[int(f)].split(":")[0].replace(" ", "_") for f in bits),
+        "flag_messages": {str(k): v for k, v in texts.items()},
+    }
+
+
+def _chunked(g: Any, name: str, study: Study, dtype: str, fill: float, attrs: Any) -> None:
+    lay = study.layout
+    g.create_array(
+        name,
+        shape=lay.shape,
+        chunks=lay.chunks,
+        dtype=dtype,
+        fill_value=fill,
+        dimension_names=lay.dims,
+        attributes=attrs,
+        compressors=compressors(),
+    )
+
+
+def _root_attrs(
+    study: Study, meta: StoreMeta, messages: Mapping[int, str], coords: list[str]
+) -> Any:
+    lay = study.layout
+    return {
+        "title": study.name,
+        "description": study.description,
+        "sweep_format": STUDY_FORMAT,
+        "study_hash": meta.study_hash,
+        "study": study.to_json(),
+        "mode": study.mode,
+        "n_cases": lay.n_cases,
+        "n_chunks": lay.n_chunks,
+        "chunk_shape": list(lay.chunks),
+        "engine": meta.engine,
+        "outputs": list(meta.outputs),
+        "status_messages": {str(k): v for k, v in sorted(messages.items())},
+        "coordinates": " ".join(coords),
+    }
+
+
+def build_store(path: Path, study: Study, meta: StoreMeta) -> None:
+    """Write the arrays, attributes and bookkeeping of ``study``'s store into the empty
+    directory ``path``."""
+    g = zarr.open_group(str(path), mode="w", zarr_format=3)
+    _create_axes(g, study)
+    coords = [*_create_sampled(g, study), *_create_constants(g, study)]
+    for name in meta.outputs:
+        _create_output(g, name, meta, study)
+    messages = {**{int(k): v for k, v in meta.status_messages.items()}, **SWEEP_STATUS_MESSAGES}
+    status_attrs = {
+        "long_name": "case status (0: ok; see 'messages')",
+        "units": "1",
+        "messages": {str(k): v for k, v in sorted(messages.items())},
+    }
+    _chunked(g, "status", study, "int32", -1, status_attrs)
+    checkpoint("create:arrays")
+    g.attrs.update(_root_attrs(study, meta, messages, coords))
+    # the bookkeeping lives in a (data-less) sub-group so that Zarr readers accept it
+    g.create_group(
+        META,
+        attributes={
+            "description": "impactlab sweep bookkeeping: "
+            "study.json and per-chunk completion markers"
+        },
+    )
+    (path / META / "done").mkdir(parents=True, exist_ok=True)
+    text = json.dumps(study.to_dict(), indent=1, sort_keys=True) + "\n"
+    (path / META / "study.json").write_text(text)
