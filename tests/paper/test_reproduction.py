@@ -79,6 +79,9 @@ def test_report_numbers_match_library(analytic_run):
         assert f"{T * 1e3:.4g}" in text and f"{T * 1e3:.4g}" in html
     assert re.search(r"20 deg: T = 4\.106 ms vs published 4\.30 ms .*PASS", text)
     assert '<img src="fig5_alpha.png"' in html
+    # --no-simulate skips "Can physics explain the experiment?"
+    assert "Can physics explain" not in text
+    assert "physics_comparison" not in analytic_run.files
 
 
 def test_rerun_into_previous_reproduction_keeps_other_files(analytic_run):
@@ -106,8 +109,11 @@ def test_end_to_end(tmp_path_factory):
         "table2",
         "table3",
         "table4",
+        "physics_comparison",
+        "physics_drop_20",
     ):
         assert res.files[name].is_file(), name
+    assert "Can physics explain the experiment?" in res.report_md.read_text()
     # every not-reproduced number carries a reason
     bad = res.comparison[res.comparison["reproduced"] == False]  # noqa: E712
     assert (bad["reason"].str.len() > 20).all()

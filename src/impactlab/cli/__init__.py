@@ -11,7 +11,7 @@ import sys
 
 import typer
 
-from impactlab.cli import analyze, invert, laws, materials, reproduce, simulate, sweep
+from impactlab.cli import analyze, drop, invert, laws, materials, reproduce, simulate, sweep
 from impactlab.cli._common import UserError
 
 app = typer.Typer(
@@ -25,7 +25,7 @@ app = typer.Typer(
 )
 
 # Each command module defines ``register(app)``; registered in this order (the help's order).
-for _module in (laws, materials, simulate, invert, analyze, sweep, reproduce):
+for _module in (laws, materials, simulate, drop, invert, analyze, sweep, reproduce):
     _module.register(app)
 
 

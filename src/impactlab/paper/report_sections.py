@@ -14,6 +14,7 @@ from typing import Any
 import pandas as pd
 
 from impactlab.paper import data as D
+from impactlab.paper.physics_report import physics_section
 from impactlab.paper.quantities import TOL_EXPERIMENT_T, TOL_SIMULATED, duration_checks
 from impactlab.paper.report import Block, Bullets, Code, Figure, Heading, Para, Table, fmt
 from impactlab.paper.simulations import FRICTIONS
@@ -37,6 +38,7 @@ class ReportData:
     tables: Mapping[int, pd.DataFrame]
     elapsed: float
     version: str
+    physics: pd.DataFrame | None = None
 
 
 def fmt_pct(x: Any) -> str:
@@ -57,6 +59,7 @@ def build_report(d: ReportData) -> list[Block]:
         *_inertia(d),
         *_figures(d),
         *_discrepancies(),
+        *physics_section(d.physics, d.figures, 11),
         *_run(d),
     ]
 
@@ -356,7 +359,7 @@ def _discrepancies() -> list[Block]:
 
 def _run(d: ReportData) -> list[Block]:
     return [
-        Heading("11. Run"),
+        Heading(f"{11 if d.physics is None else 12}. Run"),
         Code(
             f"impactlab {d.version}, Python {platform.python_version()}, "
             f"{platform.platform()}\nelapsed: {d.elapsed:.1f} s"

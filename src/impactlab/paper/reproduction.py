@@ -36,6 +36,8 @@ from impactlab.paper.analytic_rows import (
 )
 from impactlab.paper.comparison import comparison_table, side_by_side
 from impactlab.paper.figures import figure_alpha, figure_dent, figure_forces, figure_inertia
+from impactlab.paper.physics import physics_table, run_physics
+from impactlab.paper.physics_figures import figure_drop
 from impactlab.paper.quantities import Simulations
 from impactlab.paper.report import to_html, to_markdown
 from impactlab.paper.report_sections import TITLE, ReportData, build_report
@@ -104,6 +106,8 @@ def reproduce(
     tables = {ang: side_by_side(comparison, ang) for ang in D.ANGLES_DEG}
     simtab = simulation_table(sims) if sims else None
     eq12 = eq12_check(sims) if sims else None
+    physics = run_physics() if simulate else None
+    phystab = physics_table(physics, experimental) if physics else None
 
     written = _write_tables(
         out,
@@ -115,9 +119,14 @@ def reproduce(
             "inertia_sensitivity": inertia,
             "simulations": simtab,
             "eq12_check": eq12,
+            "physics_comparison": phystab,
         },
     )
     figs = _write_figures(out, inertia, sims, written)
+    if physics:
+        p = figure_drop(out / "physics_drop_20deg.png", physics[("flexible rod", 20)])
+        written["physics_drop_20"] = p
+        figs["physics_drop_20"] = p.name
 
     md, html_path = _write_report(
         out,
@@ -132,6 +141,7 @@ def reproduce(
             tables=tables,
             elapsed=time.perf_counter() - t0,
             version=__version__,
+            physics=phystab,
         ),
         written,
     )
@@ -148,7 +158,7 @@ def reproduce(
         report_md=md,
         report_html=html_path,
         elapsed_s=time.perf_counter() - t0,
-        extras=MappingProxyType({"simulated": sims is not None}),
+        extras=MappingProxyType({"simulated": sims is not None, "physics": phystab}),
     )
 
 

@@ -1,0 +1,113 @@
+"""``impactlab drop``: the flexible (or rigid) drop from the command line, its output and its
+one-line errors."""
+
+from __future__ import annotations
+
+import json
+import math
+import sys
+
+import pytest
+
+from impactlab.bodies import PAPER_ROD, FlexibleRod
+from impactlab.cli import main
+from impactlab.dynamics.drop import simulate_drop
+
+PAPER_20 = ("--angle", "20 deg", "--vy", "-1.41 m/s", "--mu", "0.2")
+
+
+def _cli(monkeypatch, capsys, *args: str) -> tuple[int, str, str]:
+    monkeypatch.setattr(sys, "argv", ["impactlab", "drop", *args])
+    try:
+        main()
+        code = 0
+    except SystemExit as exc:
+        code = int(exc.code or 0)
+    out = capsys.readouterr()
+    return code, out.out, out.err
+
+
+def test_flexible_json_equals_the_library(monkeypatch, capsys):
+    code, out, err = _cli(monkeypatch, capsys, *PAPER_20, "--json")
+    assert code == 0, err
+    data = json.loads(out)
+    ref = simulate_drop(FlexibleRod.paper(), mu=0.2, angle=math.radians(20), velocity=(0.0, -1.41))
+    assert data["e"] == ref.e
+    assert data["delta_p"] == ref.delta_p
+    assert data["n_contacts"] == ref.n_contacts > 1
+    assert len(data["contacts"]) == ref.n_contacts
+    assert data["units"]["delta_p"] == "m"
+    assert data["rate"] is None
+
+
+def test_table_lists_every_contact_and_the_totals(monkeypatch, capsys):
+    code, out, _err = _cli(monkeypatch, capsys, *PAPER_20)
+    assert code == 0
+    lines = out.splitlines()
+    i = lines.index("contacts")
+    assert lines[i + 1].split()[:3] == ["#", "end", "t0"]
+    ref = simulate_drop(FlexibleRod.paper(), mu=0.2, angle=math.radians(20), velocity=(0.0, -1.41))
+    for k in range(1, ref.n_contacts + 1):
+        assert lines[i + 1 + k].split()[0] == str(k)
+    for name in ("scar_length", "delta_p", "duration", "vibration_energy", "e"):
+        assert name in out
+    assert f"{ref.delta_p * 1e6:.6g}" in out
+
+
+def test_rigid_and_options(monkeypatch, capsys):
+    code, out, err = _cli(monkeypatch, capsys, *PAPER_20, "--rigid", "--json")
+    assert code == 0, err
+    data = json.loads(out)
+    ref = simulate_drop(PAPER_ROD, mu=0.2, angle=math.radians(20), velocity=(0.0, -1.41))
+    assert data["n_contacts"] == 1 and data["n_modes"] == 0
+    assert data["e"] == ref.e
+    code, out, err = _cli(
+        monkeypatch,
+        capsys,
+        *PAPER_20,
+        "--modes-axial",
+        "4",
+        "--modes-bending",
+        "6",
+        "--damping",
+        "0.01",
+        "--rate",
+        "johnson-cook",
+        "--vx",
+        "0.1 m/s",
+        "--json",
+    )
+    assert code == 0, err
+    data = json.loads(out)
+    assert data["n_modes"] == 4 + 2 + 6
+    assert "zeta = 0.01" in data["body"]
+    assert data["rate"] == "johnson-cook" and data["rate_factor"] > 1.0
+    assert data["velocity_in"] == [0.1, -1.41]
+
+
+@pytest.mark.parametrize(
+    ("args", "needle"),
+    [
+        (("--vy", "-1.41 m/s"), "--angle is required"),
+        (("--angle", "20 deg"), "--vy is required"),
+        (("--angle", "20", "--vy", "-1.41"), "has no unit"),
+        ((*PAPER_20, "--rate", "fast"), "--rate must be one of"),
+        ((*PAPER_20, "--rigid", "--damping", "0.1"), "a rigid rod has no modes"),
+        ((*PAPER_20, "--damping", "1.5"), "damping"),
+        ((*PAPER_20, "--modes-bending", "-1"), "--modes-bending must be an integer >= 0"),
+        ((*PAPER_20, "--law", "nope"), "nope"),
+        (("--angle", "20 deg", "--vy", "1.41 m/s"), "does not approach"),
+        (("--angle", "20 deg", "--vy", "-1.41 kg"), "--vy"),
+    ],
+)
+def test_errors_are_one_line(monkeypatch, capsys, args, needle):
+    code, _out, err = _cli(monkeypatch, capsys, *args)
+    assert code == 2
+    assert needle in err
+    assert err.startswith("error: ") and len(err.strip().splitlines()) == 1
+
+
+def test_help_has_examples(monkeypatch, capsys):
+    code, out, _err = _cli(monkeypatch, capsys, "--help")
+    assert code == 0
+    assert 'impactlab drop --angle "20 deg"' in out and "--rigid" in out

@@ -1,0 +1,118 @@
+""" "Can physics explain the experiment?": the comparison table, its inputs (nothing tuned), the
+report section and the figure."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from impactlab.bodies import PAPER_ROD, FlexibleRod
+from impactlab.dynamics import ImpactResult
+from impactlab.dynamics.drop_result import DropResult
+from impactlab.paper import data as D
+from impactlab.paper.analytic_rows import experimental_rows
+from impactlab.paper.physics import (
+    CONFIGURATIONS,
+    MEASURED,
+    physics_inputs,
+    physics_table,
+    run_physics,
+)
+from impactlab.paper.physics_figures import figure_drop
+from impactlab.paper.physics_report import physics_section
+from impactlab.paper.report import Figure, Heading, Table
+
+NUMERIC = ("e", "delta_p [um]", "L_s [um]", "T [ms]")
+
+
+@pytest.fixture(scope="module")
+def runs():
+    return run_physics()
+
+
+@pytest.fixture(scope="module")
+def table(runs):
+    return physics_table(runs, experimental_rows())
+
+
+def test_table_has_the_angles_and_configurations(table):
+    names = [MEASURED, *(c.name for c in CONFIGURATIONS)]
+    assert set(table["angle [deg]"]) == set(D.ANGLES_DEG)
+    assert set(table["configuration"]) == set(names)
+    assert len(table) == len(D.ANGLES_DEG) * len(names)
+    assert not table.duplicated(["configuration", "angle [deg]"]).any()
+    for col in NUMERIC:
+        assert np.isfinite(table[col].astype(float)).all(), col
+        assert (table[col].astype(float) > 0).all(), col
+
+
+def test_measured_rows_are_the_papers(table):
+    exp = experimental_rows().set_index("angle [deg]")
+    for ang, x in D.EXPERIMENTS.items():
+        row = table[(table["configuration"] == MEASURED) & (table["angle [deg]"] == ang)].iloc[0]
+        assert row["e"] == x.e
+        assert row["delta_p [um]"] == pytest.approx(abs(x.delta_p) * 1e6, rel=1e-12)
+        assert row["L_s [um]"] == pytest.approx(abs(x.L_s) * 1e6, rel=1e-12)
+        assert row["T [ms]"] == exp.loc[ang, "T [ms]"]
+
+
+def test_flexible_rows_have_several_contacts(table):
+    flex = table[table["configuration"].str.startswith("flexible")]
+    assert len(flex) == 6
+    assert (flex["contacts"] > 1).all()
+    rigid = table[table["configuration"] == "rigid rod"]
+    assert (rigid["contacts"] == 1).all()
+    rated = table[table["configuration"] == "flexible rod + rate-dependent flat"]
+    assert (rated["rate factor"] > 1.0).all()
+
+
+def test_nothing_tuned_the_inputs_are_the_papers(runs):
+    for ang, x in D.EXPERIMENTS.items():
+        args = physics_inputs(ang)
+        assert args["flat"] is D.FLAT_MATERIAL
+        assert args["mu"] == x.mu and args["angle"] == x.angle
+        assert args["velocity"] == (0.0, x.v_i)
+        assert args["law"] == "ghaednia" and args["friction"] == "coulomb"
+        for cfg in CONFIGURATIONS:
+            res = runs[(cfg.name, ang)]
+            assert res.mu == x.mu
+            assert res.angle == x.angle
+            assert tuple(res.velocity_in) == (0.0, x.v_i)
+            if cfg.flexible:
+                assert res.gravity == pytest.approx(9.81, rel=1e-3)
+                assert isinstance(res, DropResult)
+                assert res.body.startswith("FlexibleRod") and "zeta = 0" in res.body
+                assert res.rate == (None if cfg.rate is None else "cowper-symonds")
+            else:
+                assert isinstance(res, ImpactResult)
+    assert FlexibleRod.paper().rigid().mass == PAPER_ROD.mass
+    assert FlexibleRod.paper().damping == 0.0
+
+
+def test_table_values_are_the_results(runs, table):
+    for cfg in CONFIGURATIONS:
+        for ang in D.ANGLES_DEG:
+            res = runs[(cfg.name, ang)]
+            row = table[(table["configuration"] == cfg.name) & (table["angle [deg]"] == ang)]
+            row = row.iloc[0]
+            assert row["e"] == res.e
+            assert row["delta_p [um]"] == pytest.approx(abs(res.delta_p) * 1e6, rel=1e-12)
+            assert row["T [ms]"] == pytest.approx(res.duration * 1e3, rel=1e-12)
+            assert math.isfinite(row["F_max [N]"])
+
+
+def test_section_and_figure(runs, table, tmp_path):
+    p = figure_drop(tmp_path / "drop.png", runs[("flexible rod", 20)])
+    assert p.is_file() and p.stat().st_size > 1000
+    blocks = physics_section(table, {"physics_drop_20": p.name}, 11)
+    assert isinstance(blocks[0], Heading) and "Can physics explain" in blocks[0].text
+    assert any(isinstance(b, Table) for b in blocks)
+    assert any(isinstance(b, Figure) for b in blocks)
+    assert physics_section(None, {}, 11) == []
+
+
+def test_figure_needs_history(runs, tmp_path):
+    with pytest.raises(ValueError, match="history"):
+        figure_drop(tmp_path / "x.png", runs[("flexible rod", 45)])
