@@ -25,7 +25,11 @@ from impactlab.sweep.locking import pid_alive
 HERE = Path(__file__).resolve().parent
 
 _SCRIPT = textwrap.dedent("""
+    import signal
     import sys
+    # a process started from a non-interactive background job inherits SIGINT ignored (and
+    # Python then installs no KeyboardInterrupt handler): restore the interactive default
+    signal.signal(signal.SIGINT, signal.default_int_handler)
     sys.path.insert(0, {here!r})
     from sweep_fakes import FakeEvaluator, kill_study
     from impactlab.sweep import run_sweep
