@@ -1,11 +1,8 @@
 #!/usr/bin/env python3
 """Set-up and task runner for impactlab: needs only python3 (with venv and pip).
 
-    python3 tasks.py reproduce [ARGS...]   # create .venv if needed, then reproduce the paper
-    python3 tasks.py test [PYTEST ARGS...] # create .venv if needed, then ruff, mypy, pytest
-    python3 tasks.py lint                  # ruff check, ruff format --check, mypy, lint-imports
-    python3 tasks.py bench                 # run the benchmarks
-    python3 tasks.py lock                  # regenerate requirements.lock (developers only)
+    python3 tasks.py TASK [ARGS...]       # e.g. python3 tasks.py test -k sweep
+    python3 tasks.py help                 # every task, one line each (also -h, --help)
 
 The virtual environment is built from the pinned ``requirements.lock`` and re-built whenever the
 lock file or ``pyproject.toml`` changes (their SHA-256 is kept in ``.venv/.impactlab-stamp``).
@@ -57,7 +54,7 @@ def ensure_env() -> None:
     STAMP.write_text(fp)
 
 
-_CHECKED = ("src", "tests", "benchmarks", "examples", "tools", "tasks.py")
+_CHECKED = ("src", "tests", "benchmarks", "examples", "notebooks", "tools", "tasks.py")
 _RUFF: list[str | Path] = [PY, "-m", "ruff", "check", *_CHECKED]
 _RUFF_FORMAT: list[str | Path] = [PY, "-m", "ruff", "format", "--check", *_CHECKED]
 _MYPY: list[str | Path] = [PY, "-m", "mypy"]
@@ -75,11 +72,34 @@ def _env() -> dict[str, str]:
     return env
 
 
+#: every task and what it does, one line each (``python3 tasks.py help`` prints this table)
+TASKS: dict[str, str] = {
+    "reproduce": "create .venv if needed, then reproduce the paper into ./reproduction/ [ARGS]",
+    "test": "create .venv if needed, then ruff, mypy and pytest [PYTEST ARGS]",
+    "lint": "ruff check, ruff format --check, mypy, lint-imports",
+    "bench": "run the benchmarks (benchmarks/run_all.py) [ARGS]",
+    "docs": "build the documentation site (mkdocs build --strict) [ARGS]",
+    "lock": "regenerate requirements.lock with uv (developers only)",
+    "help": "this list (also -h, --help, or no task)",
+}
+
+
+def usage() -> str:
+    """The help text: how to call, then every task with its one-line description."""
+    w = max(map(len, TASKS))
+    lines = ["usage: python3 tasks.py TASK [ARGS...]", "", "tasks:"]
+    lines += [f"  {name:<{w}}  {text}" for name, text in TASKS.items()]
+    return "\n".join(lines)
+
+
 def main(argv: list[str]) -> int:
     if not argv or argv[0] in {"-h", "--help", "help"}:
-        print(__doc__)
+        print(usage())
         return 0
     task, rest = argv[0], argv[1:]
+    if task not in TASKS:
+        print(f"unknown task {task!r}\n\n{usage()}", file=sys.stderr)
+        return 2
     if task == "lock":
         _run(sys.executable, "-m", "pip", "install", "-q", "uv")
         return _run(sys.executable, *_LOCK)
@@ -97,11 +117,7 @@ def main(argv: list[str]) -> int:
         return max(_run(*cmd, env=env) for cmd in cmds)
     if task == "bench":
         return _run(PY, "benchmarks/run_all.py", *rest, env=env)
-    if task == "docs":
-        return _run(PY, "-m", "mkdocs", "build", "--strict", *rest, env=env)
-    known = "reproduce, test, lint, bench, docs, lock"
-    print(f"unknown task {task!r}; known: {known}", file=sys.stderr)
-    return 2
+    return _run(PY, "-m", "mkdocs", "build", "--strict", *rest, env=env)
 
 
 if __name__ == "__main__":

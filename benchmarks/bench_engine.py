@@ -37,6 +37,8 @@ from impactlab.dynamics.reference import simulate_reference
 from impactlab.materials import AISI_1010
 
 ROOT = Path(__file__).resolve().parent
+#: The docs page keeps everything from this line on (the hand-written profile and notes).
+KEEP = "<!-- written by hand below: kept by bench_engine.py -->"
 CASE = {
     "law": "ghaednia",
     "friction": "coulomb",
@@ -166,7 +168,7 @@ def markdown(result: dict, printed: str) -> str:
             f"{one['impacts_per_cpu_s']:,.0f} impacts per CPU-second "
             f"({one['us_per_impact_cpu']:.1f} us/impact); "
             f"{one['impacts_per_wall_s']:,.0f} per wall-second",
-            ">= 50,000",
+            ">= 150,000",
         ),
         (
             f"compiled, {allc['threads']} cores (prange)",
@@ -179,12 +181,12 @@ def markdown(result: dict, printed: str) -> str:
             f"({1e3 * base['s_per_impact_cpu']:.2f} ms, {base['nfev']} f-evals)",
             "",
         ),
-        ("speed-up per core", f"{result['speedup_vs_solve_ivp_per_core']:.0f} x", ">= 100 x"),
+        ("speed-up per core", f"{result['speedup_vs_solve_ivp_per_core']:.0f} x", ">= 300 x"),
         (
             "`simulate()` from Python (median)",
             f"{calls['simulate_us_history_false']:.1f} us without history, "
             f"{calls['simulate_us_history_true']:.1f} us with history",
-            "< 100 us",
+            "<= 20 us",
         ),
         (
             "new process, first call (disk cache)",
@@ -275,13 +277,13 @@ def main() -> None:
         "agreement_max_rel": acc,
         "single_call": calls,
         "new_process": proc,
-        "targets": {"impacts_per_s_per_core": 50000, "speedup": 100, "simulate_us": 100},
+        "targets": {"impacts_per_s_per_core": 150000, "speedup": 300, "simulate_us": 20},
         "wall_s": time.time() - t0,
     }
     result["targets_met"] = {
-        "impacts_per_s_per_core": one["impacts_per_cpu_s"] >= 50000,
-        "speedup": result["speedup_vs_solve_ivp_per_core"] >= 100,
-        "simulate_us": calls["simulate_us_history_false"] < 100,
+        "impacts_per_s_per_core": one["impacts_per_cpu_s"] >= 150000,
+        "speedup": result["speedup_vs_solve_ivp_per_core"] >= 300,
+        "simulate_us": calls["simulate_us_history_false"] <= 20,
     }
     args.out.parent.mkdir(parents=True, exist_ok=True)
     args.out.write_text(json.dumps(result, indent=2) + "\n")
@@ -325,7 +327,9 @@ def main() -> None:
     say(f"written {args.out}")
     if args.markdown is not None:
         args.markdown.parent.mkdir(parents=True, exist_ok=True)
-        args.markdown.write_text(markdown(result, "\n".join(lines[:-1])))
+        old = args.markdown.read_text() if args.markdown.is_file() else ""
+        kept = old[old.index(KEEP) :] if KEEP in old else ""
+        args.markdown.write_text(markdown(result, "\n".join(lines[:-1])) + kept)
         print(f"written {args.markdown}")
 
 

@@ -13,7 +13,9 @@ It digests (SHA-256 of the raw float64 bytes, so any changed bit shows):
   and dents;
 - the analytic inversion of the paper's three cases.
 
-Run it on the commit before and after the change; ``--compare`` lists every digest that differs.
+Run it on the commit before and after the change; ``--compare`` lists every digest that differs
+and, where both runs saved the numbers (``OUT.npz`` next to ``OUT.json``), the largest relative
+change of each (the simulate sample, the sweeps, the dents and the inversion).
 Uses the public CLI and a small set of public functions whose names are looked up at run time,
 so it runs unchanged across a restructuring.
 """
@@ -31,9 +33,14 @@ from pathlib import Path
 
 import numpy as np
 
+#: The numbers behind the digests (key -> float array), saved next to OUT for ``--compare``.
+VALUES: dict[str, np.ndarray] = {}
 
-def _digest(a: object) -> str:
+
+def _digest(a: object, key: str = "") -> str:
     arr = np.ascontiguousarray(np.asarray(a))
+    if key and arr.dtype.kind in "fiu":
+        VALUES[key] = arr.astype(np.float64)
     if arr.dtype.kind in "fc":
         arr = arr.astype(np.float64 if arr.dtype.kind == "f" else np.complex128)
     h = hashlib.sha256(str(arr.dtype).encode() + str(arr.shape).encode())
@@ -105,7 +112,7 @@ def sweep_digests(tmp: Path) -> dict[str, str]:
         _cli("sweep", "run", str(toml), "--out", str(store))
         ds = xr.open_zarr(store)
         for name in sorted({*ds.data_vars, *ds.coords}):
-            d[f"sweep/{key}/{name}"] = _digest(ds[name].values)
+            d[f"sweep/{key}/{name}"] = _digest(ds[name].values, f"sweep/{key}/{name}")
     return d
 
 
@@ -138,10 +145,12 @@ def simulate_digests() -> dict[str, str]:
                         d[f"simulate/{law}/{fr}/{bname}/{k}"] = "error:" + str(exc)[:80]
                         continue
                     vals = [getattr(r, f) for f in ("e", "delta_max", "delta_p", "duration")]
-                    h = r.history.to_dataframe()
+                    # the raw columns (the DataFrame may hold categorical phase/stick columns)
+                    h = getattr(r.history, "data", None)
+                    h = r.history.to_dataframe().to_numpy(dtype=float) if h is None else h
                     key = f"simulate/{law}/{fr}/{bname}/{k}"
-                    d[key] = _digest(np.array(vals, dtype=float))
-                    d[key + "/history"] = _digest(h.to_numpy(dtype=float))
+                    d[key] = _digest(np.array(vals, dtype=float), key)
+                    d[key + "/history"] = _digest(np.asarray(h, dtype=float))
                     if k == 0 and bname == "rod":
                         dent = r.dent()
                         arrs = [
@@ -149,7 +158,8 @@ def simulate_digests() -> dict[str, str]:
                             for v in vars(dent).values()
                             if isinstance(v, np.ndarray)
                         ]
-                        d[key + "/dent"] = _digest(np.concatenate([a.ravel() for a in arrs]))
+                        dent_all = np.concatenate([a.ravel() for a in arrs])
+                        d[key + "/dent"] = _digest(dent_all, key + "/dent")
     return d
 
 
@@ -169,8 +179,31 @@ def invert_digests() -> dict[str, str]:
     res = il.invert(
         angle=math.radians(20), v_i=-1.41, e=0.50, mu=0.20, delta_p=22e-6, sliding_length=1400e-6
     )
-    d["invert/api"] = _digest(np.array([res.duration, res.mean_force], dtype=float))
+    d["invert/api"] = _digest(np.array([res.duration, res.mean_force], dtype=float), "invert/api")
     return d
+
+
+def _values_path(out: str) -> Path:
+    return Path(out).with_suffix(".npz")
+
+
+def _relative_changes(before_json: str, keys: list[str]) -> dict[str, float]:
+    """Largest |after - before| / max(|before|, 1e-300) over the finite values of each of
+    ``keys`` whose values both runs saved with the same shape (NaN in the same places)."""
+    path = _values_path(before_json)
+    if not path.is_file():
+        return {}
+    old = np.load(path)
+    out = {}
+    for k in keys:
+        if k not in old or k not in VALUES or old[k].shape != VALUES[k].shape:
+            continue
+        a, b = VALUES[k], old[k]
+        ok = np.isfinite(a) & np.isfinite(b)
+        if not ok.any():
+            continue
+        out[k] = float(np.max(np.abs(a[ok] - b[ok]) / np.maximum(np.abs(b[ok]), 1e-300)))
+    return out
 
 
 def main() -> int:
@@ -186,13 +219,19 @@ def main() -> int:
         d.update(sweep_digests(tmp))
         d.update(reproduce_digests(tmp))
     Path(args.out).write_text(json.dumps(d, indent=1, sort_keys=True) + "\n")
-    print(f"{len(d)} digests -> {args.out}")
+    np.savez_compressed(_values_path(args.out), **VALUES)
+    print(f"{len(d)} digests -> {args.out} (values: {_values_path(args.out)})")
     if args.compare:
         before = json.loads(Path(args.compare).read_text())
         diff = sorted(k for k in before.keys() | d.keys() if before.get(k) != d.get(k))
+        rel = _relative_changes(args.compare, diff)
         for k in diff:
-            print(f"DIFFERS {k}: {before.get(k)} -> {d.get(k)}")
+            r = f" (largest relative change {rel[k]:.2e})" if k in rel else ""
+            print(f"DIFFERS {k}: {before.get(k)} -> {d.get(k)}{r}")
         print(f"{len(before)} before, {len(d)} after, {len(diff)} differ")
+        if rel:
+            k = max(rel, key=rel.__getitem__)
+            print(f"largest relative change of a number: {rel[k]:.2e} ({k})")
         return 1 if diff else 0
     return 0
 

@@ -7,6 +7,6 @@ from importlib.metadata import PackageNotFoundError, version
 try:
     __version__: str = version("impactlab")
 except PackageNotFoundError:  # pragma: no cover - running from a source tree without metadata
-    __version__ = "0.1.0"
+    __version__ = "0.2.0"
 
 __all__ = ["__version__"]

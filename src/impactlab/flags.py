@@ -15,6 +15,7 @@ from __future__ import annotations
 import enum
 
 __all__ = [
+    "ADVISORY_FLAGS",
     "ENERGY_GAIN_RTOL_FACTOR",
     "ENERGY_ROUNDOFF",
     "FLAG_ENERGY_GAIN",
@@ -27,7 +28,11 @@ __all__ = [
 
 FLAG_ENERGY_GAIN = 1  #: bit of ``ResultFlag.ENERGY_GAIN`` (read by the compiled core)
 FLAG_GRAVITY_DOMINATED = 2  #: bit of ``ResultFlag.GRAVITY_DOMINATED``
-FLAG_LAW_EXTRAPOLATED = 4  #: bit of ``ResultFlag.LAW_EXTRAPOLATED`` (reserved, issue 12)
+FLAG_LAW_EXTRAPOLATED = 4  #: bit of ``ResultFlag.LAW_EXTRAPOLATED`` (issue 12)
+#: Flags that caution rather than invalidate: the impact measures stay readable (``ok`` stays
+#: True). LAW_EXTRAPOLATED: the law is used beyond its fitted range, its outputs stay finite and
+#: energy-consistent but are not validated there.
+ADVISORY_FLAGS = FLAG_LAW_EXTRAPOLATED
 
 #: Energy gain tolerance, in units of ``rtol`` times the energy scale of the balance (E_0 + the
 #: kinetic and |potential| energy at separation). The integrator keeps each step's error below
@@ -55,7 +60,8 @@ class ResultFlag(enum.IntFlag):
     #: rests, rocks or tips over rather than bounces, and e and the other impact measures are
     #: not meaningful
     GRAVITY_DOMINATED = FLAG_GRAVITY_DOMINATED
-    #: the impact left the contact law's fitted range (reserved for issue 12)
+    #: the largest interference exceeded the upper end of the contact law's fitted range
+    #: (``impactlab.contact.ranges``): the law is extrapolated (advisory: ``ADVISORY_FLAGS``)
     LAW_EXTRAPOLATED = FLAG_LAW_EXTRAPOLATED
 
 
@@ -72,14 +78,29 @@ _MESSAGES: dict[ResultFlag, str] = {
         "meaningful (raise the impact velocity, or pass gravity=False)"
     ),
     ResultFlag.LAW_EXTRAPOLATED: (
-        "law extrapolated: the impact left the contact law's fitted range"
+        "law extrapolated: the largest interference exceeded the upper end of the contact "
+        "law's fitted range{how_far}, so the law is used beyond the data it was fitted to; the "
+        "outputs stay finite and energy-consistent but are not validated there "
+        "(impactlab.contact.ranges)"
     ),
 }
 
 
-def messages(flags: int) -> tuple[str, ...]:
+def _how_far(extrapolation: tuple[float, float] | None) -> str:
+    """`` (max delta/delta_c = 312, range up to 110)`` or ``""`` when unknown."""
+    if extrapolation is None:
+        return ""
+    ratio, limit = extrapolation
+    if not (ratio == ratio and limit == limit and limit < float("inf")):  # NaN or no range
+        return ""
+    return f" (max delta/delta_c = {ratio:.4g}, fitted up to {limit:g})"
+
+
+def messages(flags: int, *, extrapolation: tuple[float, float] | None = None) -> tuple[str, ...]:
     """One explanatory sentence per flag set in ``flags`` (an int or a ``ResultFlag``), in bit
-    order; ``()`` for none. Unknown bits raise ``ValueError``."""
+    order; ``()`` for none. Unknown bits raise ``ValueError``. ``extrapolation`` = (max
+    delta/delta_c, the law's fitted upper end), when known, says how far LAW_EXTRAPOLATED went
+    (``impactlab.contact.ranges.extrapolation``)."""
     try:
         value = int(flags)
     except (TypeError, ValueError):
@@ -87,4 +108,5 @@ def messages(flags: int) -> tuple[str, ...]:
     known = int(ResultFlag.ENERGY_GAIN | ResultFlag.GRAVITY_DOMINATED | ResultFlag.LAW_EXTRAPOLATED)
     if value < 0 or value & ~known:
         raise ValueError(f"flags {value!r} holds bits outside the known flags (mask {known})")
-    return tuple(text for flag, text in _MESSAGES.items() if value & flag)
+    how_far = _how_far(extrapolation)
+    return tuple(text.format(how_far=how_far) for flag, text in _MESSAGES.items() if value & flag)

@@ -23,6 +23,14 @@ The equations are in ``docs/engine/index.md``; the compiled implementation is in
   (2004) doi:10.1016/j.ces.2003.09.037 and Thornton, Cummins & Cleary (2011, Powder Technol.
   210, 189); theory: Mindlin & Deresiewicz, J. Appl. Mech. 20 (1953) 327; oblique impact
   behaviour: Maw, Barber & Fawcett, Wear 38 (1976) 101, doi:10.1016/0043-1648(76)90063-6.
+- ``partial_slip``: Mindlin-Deresiewicz partial slip with arbitrary normal and tangential load
+  history (R. D. Mindlin, J. Appl. Mech. 16 (1949) 259, doi:10.1115/1.4009973; R. D. Mindlin,
+  H. Deresiewicz, J. Appl. Mech. 20 (1953) 327, doi:10.1115/1.4010702), solved in its exact
+  one-dimensional form by the method of dimensionality reduction (V. L. Popov, M. Hess, Facta
+  Universitatis Mech. Eng. 12 (2014) 1) and discretised into ``PARTIAL_SLIP_CELLS`` cells with
+  stick/slip events: microslip spreading in from the contact edge, Masing unloading, births of
+  unstressed annuli, the tangential stiffness 8 G* a of the actual (plastic) contact radius.
+  Compiled in ``impactlab.dynamics.slipcore``; ``simulate`` only (not the batch engine).
 """
 
 from __future__ import annotations
@@ -38,6 +46,10 @@ DEFAULT_MU = 0.0
 IMPULSE_RATIO = 0
 COULOMB = 1
 MINDLIN = 2
+PARTIAL_SLIP = 3
+PARTIAL_SLIP_CELLS = 16
+"""Default number of cells of the ``partial_slip`` model over the largest contact radius (max
+|e_t - exact| ~ 1e-3 on the Kharaz and Thornton sweeps; the error falls like N^-2)."""
 
 
 class FrictionKind(enum.StrEnum):
@@ -52,6 +64,16 @@ class FrictionKind(enum.StrEnum):
             "mindlin-deresiewicz-1953",
             "di-renzo-di-maio-2004",
             "thornton-cummins-cleary-2011",
+            "maw-barber-fawcett-1976",
+        ),
+    )
+    PARTIAL_SLIP = (
+        "partial_slip",
+        PARTIAL_SLIP,
+        (
+            "mindlin-1949",
+            "mindlin-deresiewicz-1953",
+            "popov-hess-2014",
             "maw-barber-fawcett-1976",
         ),
     )
@@ -109,11 +131,38 @@ FRICTION_MODELS: dict[FrictionKind, FrictionModel] = {
             FrictionKind.MINDLIN,
             "Mindlin-type tangential compliance k_t = 8 G* a, capped by mu F_n",
         ),
+        _model(
+            FrictionKind.PARTIAL_SLIP,
+            "Mindlin-Deresiewicz partial slip with load history (microslip, exact MDR form in "
+            f"{PARTIAL_SLIP_CELLS} cells); simulate() only",
+        ),
     )
 }
 
-FRICTION_IDS: dict[str, int] = {str(kind): m.friction_id for kind, m in FRICTION_MODELS.items()}
-"""name -> compiled id"""
+FRICTION_IDS: dict[str, int] = {
+    str(kind): m.friction_id for kind, m in FRICTION_MODELS.items() if kind != "partial_slip"
+}
+"""name -> compiled id of the rigid-body core's models, the ones the batch engine
+(``run_arrays``, ``simulate_batch``, sweeps) runs. ``partial_slip`` (id ``PARTIAL_SLIP``) runs
+in ``simulate`` only (``impactlab.dynamics.slipcore``)."""
+
+
+def batch_friction_id(name: str | FrictionKind) -> int:
+    """Compiled id of the batch-engine friction model ``name``; ValueError naming the batch
+    models for ``partial_slip`` and for unknown names."""
+    fid = get_friction(name).friction_id
+    if fid not in FRICTION_IDS.values():
+        raise ValueError(batch_friction_error(name))
+    return fid
+
+
+def batch_friction_error(name: object) -> str:
+    """The message for a friction model the batch engine does not run."""
+    return (
+        f"friction model {name!r} is not available in the batch engine (run_arrays, "
+        f"simulate_batch, sweeps): use impactlab.simulate() for it; batch models: "
+        f"{', '.join(FRICTION_IDS)}"
+    )
 
 
 def friction_names() -> tuple[str, ...]:
@@ -132,7 +181,8 @@ def get_friction(name: str | FrictionKind) -> FrictionModel:
 
 
 def friction_id(name: str | FrictionKind) -> int:
-    """Compiled id of the friction model ``name`` (ValueError for unknown names)."""
+    """Compiled id of the friction model ``name`` (ValueError for unknown names; ``PARTIAL_SLIP``
+    for ``partial_slip``, which the batch engine does not run)."""
     return get_friction(name).friction_id
 
 
@@ -143,8 +193,12 @@ __all__ = [
     "FRICTION_MODELS",
     "IMPULSE_RATIO",
     "MINDLIN",
+    "PARTIAL_SLIP",
+    "PARTIAL_SLIP_CELLS",
     "FrictionKind",
     "FrictionModel",
+    "batch_friction_error",
+    "batch_friction_id",
     "friction_id",
     "friction_names",
     "get_friction",

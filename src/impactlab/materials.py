@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from impactlab._html import dataclass_html
 from impactlab._validation import check_finite, check_positive, check_range
 
 #: Standard gravity [m/s^2], used to convert kgf to N.
@@ -90,6 +91,9 @@ class Material:
         """G = E / (2 (1 + nu)) [Pa]."""
         return self.E / (2.0 * (1.0 + self.nu))
 
+    def _repr_html_(self) -> str:
+        return dataclass_html(self)
+
 
 def reduced_modulus(a: Material, b: Material | None = None) -> float:
     """Reduced (effective) modulus E* = [(1 - nu_a^2)/E_a + (1 - nu_b^2)/E_b]^-1 [Pa].
@@ -150,6 +154,14 @@ class ContactPair:
     def nu(self) -> float:
         """Poisson's ratio of the material that yields first."""
         return self.weaker.nu
+
+    def _repr_html_(self) -> str:
+        extra = {
+            "E_star": self.E_star,
+            "G_star": self.G_star,
+            "yield_strength": self.yield_strength,
+        }
+        return dataclass_html(self, extra)
 
 
 def _steel(name: str, yield_strength: float, brinell_hardness: float, density: float) -> Material:

@@ -3,29 +3,41 @@
 Models carry the references they implement (``ContactLaw.references``,
 ``FrictionModel.references``, the engine's integrator), and results record the references a
 computation used. ``confirmed`` is True only where the DOI was checked against the publisher's
-record in this project (see docs/laws/index.md, "References and their status"); the other DOIs
-are carried over from the sources' own citations and are not verified here. A reference whose
-DOI is unknown has ``doi == ""`` and ``url == ""``.
+record or in a copy of the publication in this project; ``note`` says what was checked (see
+docs/laws/index.md, "References and their status"). The other DOIs are carried over from the
+sources' own citations and are not verified here. Every DOI must match ``DOI_PATTERN``; a
+reference whose DOI is unknown has ``doi == ""`` and ``url == ""``.
 """
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from types import MappingProxyType
+
+#: A well-formed DOI: "10.", a registrant code of 4-9 digits (dot-separated parts allowed), "/",
+#: a suffix without spaces (Crossref's recommended pattern, widened to upper case).
+DOI_PATTERN = re.compile(r"^10\.\d{4,9}(\.\d+)*/\S+$")
 
 
 @dataclass(frozen=True)
 class Reference:
     """A cited source: registry ``key``, ``citation`` text, ``doi`` and ``url``
-    (https://doi.org/<doi>, filled in from the DOI)."""
+    (https://doi.org/<doi>, filled in from the DOI); ``confirmed``: the DOI was read in a copy
+    of the publication or at its DOI address; ``note``: what was checked, and where."""
 
     key: str
     citation: str
     doi: str = ""
     url: str = field(default="")
     confirmed: bool = False
+    note: str = ""
 
     def __post_init__(self) -> None:
+        if self.doi and not DOI_PATTERN.match(self.doi):
+            raise ValueError(f"reference {self.key!r}: malformed DOI {self.doi!r}")
+        if self.confirmed and not self.doi:
+            raise ValueError(f"reference {self.key!r}: confirmed without a DOI")
         if self.doi and not self.url:
             object.__setattr__(self, "url", f"https://doi.org/{self.doi}")
 
@@ -42,23 +54,29 @@ _ALL: tuple[Reference, ...] = (
         "H. Ghaednia, D. B. Marghitu, R. L. Jackson, Permanent deformation during the oblique "
         "impact with friction, Archive of Applied Mechanics 86 (2016) 121-134",
         "10.1007/s00419-015-1108-2",
+        confirmed=True,
+        note="DOI confirmed: the article's text read at its DOI address (a Springer mirror)",
     ),
     Reference(
         "hertz-1882",
         "H. Hertz, Ueber die Beruehrung fester elastischer Koerper, J. reine angew. Math. 92 "
         "(1882) 156-171",
         "10.1515/crll.1882.92.156",
+        note="citation confirmed by two citing works' reference lists; DOI not checked",
     ),
     Reference(
         "johnson-1985",
         "K. L. Johnson, Contact Mechanics, Cambridge University Press (1985)",
         "10.1017/CBO9781139171731",
+        note="DOI not checked",
     ),
     Reference(
         "ghaednia-2016-contact",
         "H. Ghaednia, S. A. Pope, R. L. Jackson, D. B. Marghitu, A comprehensive study of the "
         "elasto-plastic contact of a sphere and a flat, Tribology International 93 (2016) 78-90",
         "10.1016/j.triboint.2015.09.005",
+        note="citation confirmed (Willert 2020's reference list: Tribol. Int. 93(A) 78-90); "
+        "DOI not confirmed",
     ),
     Reference(
         "jackson-green-2005",
@@ -66,22 +84,27 @@ _ALL: tuple[Reference, ...] = (
         "against a rigid flat, J. Tribol. 127 (2005) 343-354",
         "10.1115/1.1866166",
         confirmed=True,
+        note="DOI printed on the article's first page (a copy read)",
     ),
     Reference(
         "green-2005",
         "I. Green, Proc. IMechE C 219 (2005) (critical values, C(nu))",
+        note="not checked; no DOI recorded",
     ),
     Reference(
         "kogut-etsion-2002",
-        "L. Kogut, I. Etsion, J. Appl. Mech. 69 (2002) 657",
+        "L. Kogut, I. Etsion, Elastic-plastic contact analysis of a sphere and a rigid flat, J. "
+        "Appl. Mech. 69 (2002) 657-662",
         "10.1115/1.1490373",
         confirmed=True,
+        note="DOI printed on the article's first page (a copy read)",
     ),
     Reference(
         "kogut-komvopoulos-2004",
         "L. Kogut, K. Komvopoulos, Analysis of the spherical indentation cycle for elastic-"
         "perfectly plastic solids, J. Mater. Res. 19 (2004) 3641-3653",
         "10.1557/JMR.2004.0468",
+        note="not found in the sources searched: citation and DOI not confirmed",
     ),
     Reference(
         "brake-2015",
@@ -89,17 +112,21 @@ _ALL: tuple[Reference, ...] = (
         "frictional effects for normal and oblique impacts, Int. J. Solids Struct. 62 (2015) "
         "104-123",
         "10.1016/j.ijsolstr.2015.02.019",
+        note="title and journal confirmed (OSTI record 1146110); DOI not confirmed",
     ),
     Reference(
         "brake-2012",
-        "M. R. W. Brake, Int. J. Solids Struct. 49 (2012) 3129-3141 (elastic-perfectly plastic "
-        "contact model)",
+        "M. R. W. Brake, An analytical elastic-perfectly plastic contact model, Int. J. Solids "
+        "Struct. 49 (2012) 3129-3141",
+        note="citation confirmed (Willert 2020's reference list); DOI not found",
     ),
     Reference(
         "thornton-1997",
         "C. Thornton, Coefficient of restitution for collinear collisions of elastic-perfectly "
         "plastic spheres, J. Appl. Mech. 64 (1997) 383-386",
         "10.1115/1.2787319",
+        note="citation confirmed (J. Appl. Mech. 64(2) 383-386, two citing works); DOI not "
+        "confirmed",
     ),
     Reference(
         "stronge-2000",
@@ -108,7 +135,26 @@ _ALL: tuple[Reference, ...] = (
     ),
     Reference(
         "mindlin-deresiewicz-1953",
-        "R. D. Mindlin, H. Deresiewicz, J. Appl. Mech. 20 (1953) 327",
+        "R. D. Mindlin, H. Deresiewicz, Elastic spheres in contact under varying oblique forces, "
+        "J. Appl. Mech. 20 (1953) 327-344",
+        "10.1115/1.4010702",
+        note="citation and DOI as given in several independent public DEM codes (e.g. "
+        "https://doi.org/10.1115/1.4010702 with title, volume and pages); DOI address not read",
+    ),
+    Reference(
+        "mindlin-1949",
+        "R. D. Mindlin, Compliance of elastic bodies in contact, J. Appl. Mech. 16 (1949) 259-268",
+        "10.1115/1.4009973",
+        note="citation and DOI as given in several independent public DEM codes and a literature "
+        "record (volume 16(3), pages 259-268); DOI address not read",
+    ),
+    Reference(
+        "popov-hess-2014",
+        "V. L. Popov, M. Hess, Method of dimensionality reduction in contact mechanics and "
+        "friction: a users handbook. I. Axially-symmetric contacts, Facta Universitatis Ser. "
+        "Mech. Eng. 12 (2014) 1-14",
+        note="title, journal, volume and pages read in the article's text (open access); no DOI "
+        "printed there",
     ),
     Reference(
         "di-renzo-di-maio-2004",
@@ -173,4 +219,4 @@ def dois(references: tuple[Reference, ...]) -> tuple[str, ...]:
     return tuple(dict.fromkeys(r.doi for r in references if r.doi))
 
 
-__all__ = ["PAPER", "REFERENCES", "Reference", "cite", "dois"]
+__all__ = ["DOI_PATTERN", "PAPER", "REFERENCES", "Reference", "cite", "dois"]

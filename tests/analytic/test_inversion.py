@@ -210,7 +210,7 @@ def run_cli(monkeypatch, capsys, *args):
 def test_cli_paper_case_json(monkeypatch, capsys):
     code, out, _ = run_cli(monkeypatch, capsys, "--case", "paper-20", "--json", "--samples", "200")
     assert code == 0
-    assert json.loads(out)["duration"] == pytest.approx(paper_inversion(20).duration)
+    assert json.loads(out)["duration"]["value"] == pytest.approx(paper_inversion(20).duration)
 
 
 def test_cli_units_and_sigmas(monkeypatch, capsys):
@@ -237,8 +237,8 @@ def test_cli_units_and_sigmas(monkeypatch, capsys):
     )
     assert code == 0
     d = json.loads(out)
-    assert d["duration"] == pytest.approx(paper_inversion(20).duration)
-    assert d["sigma_T_linear"] == pytest.approx(50e-6 / (0.242744 * 1.41), rel=1e-4)
+    assert d["duration"]["value"] == pytest.approx(paper_inversion(20).duration)
+    assert d["duration"]["sigma"] == pytest.approx(50e-6 / (0.242744 * 1.41), rel=1e-4)
 
 
 def test_cli_file(monkeypatch, capsys, tmp_path):
@@ -249,8 +249,8 @@ def test_cli_file(monkeypatch, capsys, tmp_path):
     code, out, err = run_cli(monkeypatch, capsys, "--file", str(f), "--json", "--samples", "200")
     assert code == 0, err
     d = json.loads(out)
-    assert d["inputs"]["e"] == [0.49, 0.02]
-    assert d["duration"] == pytest.approx(paper_inversion(45).duration, rel=1e-3)
+    assert d["inputs"]["e"] == {"value": 0.49, "unit": "1", "sigma": 0.02}
+    assert d["duration"]["value"] == pytest.approx(paper_inversion(45).duration, rel=1e-3)
 
 
 @pytest.mark.parametrize(

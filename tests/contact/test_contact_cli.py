@@ -45,8 +45,8 @@ def test_one_law_with_numbers(app: typer.Typer) -> None:
     res = CliRunner().invoke(app, ["laws", "thornton", "--radius", "8.8 mm", "--json"])
     assert res.exit_code == 0, res.output
     data = json.loads(res.stdout)
-    assert data["example"]["radius"] == pytest.approx(8.8e-3)
-    assert data["example"]["delta_y"] == pytest.approx(0.4362e-6, rel=1e-3)
+    assert data["example"]["radius"] == {"value": pytest.approx(8.8e-3), "unit": "m"}
+    assert data["example"]["delta_y"]["value"] == pytest.approx(0.4362e-6, rel=1e-3)
     res = CliRunner().invoke(app, ["laws", "ghaednia"], env={"COLUMNS": "200"})
     assert res.exit_code == 0 and "published_switch" in res.stdout
 

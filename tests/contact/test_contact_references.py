@@ -8,6 +8,7 @@ from impactlab.contact import Law, get_law, law_names
 from impactlab.friction import (
     DEFAULT_MU,
     FRICTION_IDS,
+    PARTIAL_SLIP,
     FrictionKind,
     friction_names,
     get_friction,
@@ -52,7 +53,7 @@ def test_friction_kinds() -> None:
     for kind in FrictionKind:
         model = get_friction(kind)
         assert model is get_friction(str(kind))
-        assert model.friction_id == FRICTION_IDS[kind] == kind.friction_id
+        assert model.friction_id == FRICTION_IDS.get(kind, PARTIAL_SLIP) == kind.friction_id
         assert model.references == kind.references and model.references
     assert get_friction("coulomb").references[0].doi == "10.1017/CBO9780511626432"
     with pytest.raises(ValueError, match="known models: impulse_ratio"):

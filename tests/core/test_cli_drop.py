@@ -9,6 +9,8 @@ import sys
 
 import pytest
 
+from impactlab._display import format_number
+from impactlab._json import shape_problems
 from impactlab.bodies import PAPER_ROD, FlexibleRod
 from impactlab.cli import main
 from impactlab.dynamics.drop import simulate_drop
@@ -31,12 +33,13 @@ def test_flexible_json_equals_the_library(monkeypatch, capsys):
     code, out, err = _cli(monkeypatch, capsys, *PAPER_20, "--json")
     assert code == 0, err
     data = json.loads(out)
+    assert shape_problems(data) == []  # docs/json-schema.md
     ref = simulate_drop(FlexibleRod.paper(), mu=0.2, angle=math.radians(20), velocity=(0.0, -1.41))
-    assert data["e"] == ref.e
-    assert data["delta_p"] == ref.delta_p
+    assert data["e"] == {"value": ref.e, "unit": "1"}
+    assert data["delta_p"] == {"value": ref.delta_p, "unit": "m"}
     assert data["n_contacts"] == ref.n_contacts > 1
     assert len(data["contacts"]) == ref.n_contacts
-    assert data["units"]["delta_p"] == "m"
+    assert data["contacts"][0]["duration"]["unit"] == "s"
     assert data["rate"] is None
 
 
@@ -45,13 +48,13 @@ def test_table_lists_every_contact_and_the_totals(monkeypatch, capsys):
     assert code == 0
     lines = out.splitlines()
     i = lines.index("contacts")
-    assert lines[i + 1].split()[:3] == ["#", "end", "t0"]
+    assert lines[i + 1].split()[:3] == ["#", "end", "start"]
     ref = simulate_drop(FlexibleRod.paper(), mu=0.2, angle=math.radians(20), velocity=(0.0, -1.41))
     for k in range(1, ref.n_contacts + 1):
         assert lines[i + 1 + k].split()[0] == str(k)
     for name in ("scar_length", "delta_p", "duration", "vibration_energy", "e"):
         assert name in out
-    assert f"{ref.delta_p * 1e6:.6g}" in out
+    assert f"{format_number(ref.delta_p * 1e6)} │ um" in out
 
 
 def test_rigid_and_options(monkeypatch, capsys):
@@ -60,7 +63,7 @@ def test_rigid_and_options(monkeypatch, capsys):
     data = json.loads(out)
     ref = simulate_drop(PAPER_ROD, mu=0.2, angle=math.radians(20), velocity=(0.0, -1.41))
     assert data["n_contacts"] == 1 and data["n_modes"] == 0
-    assert data["e"] == ref.e
+    assert data["e"]["value"] == ref.e
     code, out, err = _cli(
         monkeypatch,
         capsys,
@@ -81,8 +84,8 @@ def test_rigid_and_options(monkeypatch, capsys):
     data = json.loads(out)
     assert data["n_modes"] == 4 + 2 + 6
     assert "zeta = 0.01" in data["body"]
-    assert data["rate"] == "johnson-cook" and data["rate_factor"] > 1.0
-    assert data["velocity_in"] == [0.1, -1.41]
+    assert data["rate"] == "johnson-cook" and data["rate_factor"]["value"] > 1.0
+    assert data["velocity_in"] == {"value": [0.1, -1.41], "unit": "m/s"}
 
 
 @pytest.mark.parametrize(

@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 
 import impactlab as il
+from impactlab._display import format_number
 
 
 def test_inversion_renders_html_table() -> None:
@@ -13,4 +14,5 @@ def test_inversion_renders_html_table() -> None:
     )
     page = res._repr_html_()
     assert page.startswith("<table>") and "InversionResult" in page
-    assert f"{res.duration:.6g}" in page
+    cell = f"<td style='text-align:right'>{format_number(res.duration * 1e3)}</td>"
+    assert f"<td>duration</td>{cell}<td>ms</td>" in page  # the display units of print()

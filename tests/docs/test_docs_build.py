@@ -1,64 +1,33 @@
 """The documentation site builds with ``mkdocs build --strict`` (broken links, missing nav
-targets, bad snippets and mkdocstrings errors all fail it), and the API pages are generated."""
+targets, bad snippets and mkdocstrings errors all fail it), the API pages are generated, and
+the site works offline and from disk: one ``page.html`` per page, math typeset as MathML, no
+script, stylesheet or font from another host, DOIs as links, 404.html with relative links."""
 
 from __future__ import annotations
 
-import importlib.util
-import os
 import re
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parents[2]
-
-pytestmark = pytest.mark.skipif(
-    importlib.util.find_spec("mkdocs") is None
-    or importlib.util.find_spec("mkdocstrings_handlers") is None,
-    reason="mkdocs or mkdocstrings[python] is not installed",
-)
-
-
-@pytest.fixture(scope="module")
-def site(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    out = tmp_path_factory.mktemp("site")
-    env = dict(os.environ, NO_MKDOCS_2_WARNING="1")
-    proc = subprocess.run(
-        [
-            sys.executable,
-            "-m",
-            "mkdocs",
-            "build",
-            "--strict",
-            "-f",
-            str(ROOT / "mkdocs.yml"),
-            "-d",
-            str(out),
-        ],
-        cwd=ROOT,
-        env=env,
-        capture_output=True,
-        text=True,
-        timeout=300,
-    )
-    assert proc.returncode == 0, proc.stdout[-4000:] + proc.stderr[-4000:]
-    return out
+# the built site: the session fixture ``site`` of conftest.py (skips without the docs extra)
 
 
 def test_site_builds(site: Path) -> None:
     assert (site / "index.html").exists()
     for page in (
-        "tutorials/simulate",
-        "tutorials/invert",
-        "tutorials/analyze",
-        "tutorials/sweep",
-        "tutorials/reproduce",
-        "verification",
-        "changelog",
+        "tutorials/simulate.html",
+        "tutorials/invert.html",
+        "tutorials/analyze.html",
+        "tutorials/sweep.html",
+        "tutorials/reproduce.html",
+        "verification/index.html",
+        "engine/benchmarks.html",
+        "changelog.html",
     ):
-        assert (site / page / "index.html").exists(), page
+        assert (site / page).exists(), page
+    # use_directory_urls: false, so that the site opens from disk without a web server
+    assert not (site / "tutorials" / "simulate" / "index.html").exists()
 
 
 @pytest.mark.parametrize(
@@ -99,12 +68,82 @@ def test_site_builds(site: Path) -> None:
     ],
 )
 def test_api_pages_document_the_objects(site: Path, page: str, objects: tuple[str, ...]) -> None:
-    html = (site / page / "index.html").read_text(encoding="utf-8")
+    html = (site / f"{page}.html").read_text(encoding="utf-8")
     ids = set(re.findall(r'id="([^"]+)"', html))
     missing = [o for o in objects if o not in ids]
     assert not missing, missing
 
 
 def test_changelog_is_included(site: Path) -> None:
-    html = (site / "changelog" / "index.html").read_text(encoding="utf-8")
+    html = (site / "changelog.html").read_text(encoding="utf-8")
     assert "Unreleased" in html and "--8&lt;--" not in html
+
+
+def _pages(site: Path) -> list[Path]:
+    return sorted(p for p in site.rglob("*.html") if "search" not in p.parts)
+
+
+def test_no_file_from_another_host(site: Path) -> None:
+    """No script, stylesheet, font or image is loaded from the network (MathJax from a CDN and
+    Google fonts were): the site reads the same offline."""
+    remote = re.compile(r'<(?:script|link|img)\b[^>]*\b(?:src|href)="(?:https?:)?//', re.I)
+    offenders = [str(p.relative_to(site)) for p in _pages(site) if remote.search(p.read_text())]
+    assert not offenders, offenders
+    css = "".join(p.read_text() for p in site.rglob("*.css"))
+    assert "fonts.googleapis" not in css and "@import url(http" not in css
+
+
+def test_math_is_typeset_at_build_time(site: Path) -> None:
+    html = (site / "engine" / "index.html").read_text(encoding="utf-8")
+    assert html.count("<math") >= 100  # the engine page has over 100 formulas
+    assert 'display="block"' in html
+    for page in _pages(site):
+        text = page.read_text(encoding="utf-8")
+        for m in re.finditer(r'class="arithmatex">(.{0,40})', text):
+            assert m.group(1).startswith("<math"), (page.name, m.group(1))
+
+
+def test_symbol_stars_are_not_emphasis(site: Path) -> None:
+    """``E*^4`` in a page and in a docstring (mkdocstrings) stays a formula."""
+    for page in ("laws/thornton.html", "verification/index.html", "api/contact.html"):
+        html = (site / page).read_text(encoding="utf-8")
+        assert "E*^4" in html, page
+        assert not re.search(r"E<em>|\*\^4 m\)\)</em>", html), page
+
+
+def test_dois_are_links(site: Path) -> None:
+    html = (site / "laws" / "index.html").read_text(encoding="utf-8")
+    assert '<a class="doi" href="https://doi.org/10.1115/1.1866166">' in html
+    unlinked = []
+    for page in _pages(site):
+        text = re.sub(
+            r"<a\b.*?</a>|<(code|pre|script|math)\b.*?</\1>", "", page.read_text(), flags=re.S
+        )
+        text = re.sub(r"<[^>]+>", "", text)
+        unlinked += [f"{page.name}: {m}" for m in re.findall(r"\b10\.\d{4,9}/\S+", text)]
+    assert not unlinked, unlinked[:10]
+
+
+def test_404_links_resolve_from_disk(site: Path) -> None:
+    html = (site / "404.html").read_text(encoding="utf-8")
+    links = re.findall(r'(?:href|src)="([^"#?]+)', html)
+    local = [u for u in links if not re.match(r"[a-z]+:", u)]
+    assert local and not [u for u in local if u.startswith("/")]
+    missing = [u for u in local if not (site / u).exists()]
+    assert not missing, missing
+    assert 'href="engine/benchmarks.html"' in html  # the benchmarks page is in the nav
+
+
+def test_every_link_resolves_from_disk(site: Path) -> None:
+    """Every relative link and asset of every page names a file of the site (opened from disk
+    there is no web server to turn a folder into its index.html)."""
+    broken = []
+    for page in _pages(site):
+        for url in re.findall(r'(?:href|src)="([^"]+)"', page.read_text(encoding="utf-8")):
+            path = url.split("#")[0].split("?")[0]
+            if not path or re.match(r"[a-z][a-z0-9+.-]*:|//", path):
+                continue  # an anchor on the page, or another scheme (https:, data:, mailto:)
+            # from disk, a path from the root starts at the file system's root
+            if path.startswith("/") or not (page.parent / path).is_file():
+                broken.append(f"{page.relative_to(site)} -> {url}")
+    assert not broken, broken[:10]

@@ -135,6 +135,9 @@ def test_main_writes_page_and_figures(tmp_path: Path) -> None:
         "critical_friction.png",
         "hertz_convergence.png",
         "index.md",
+        "partial_slip_kharaz.png",
+        "partial_slip_mbf.png",
+        "partial_slip_thornton.png",
         "thornton_restitution.png",
     ]
 

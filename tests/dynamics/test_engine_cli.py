@@ -25,7 +25,7 @@ def test_json_matches_the_api() -> None:
         app, ["simulate", "rod", "--angle", "20 deg", "--vy", "-1.41 m/s", "--mu", "0.2", "--json"]
     )
     assert res.exit_code == 0, res.output
-    data = json.loads(res.output)
+    data = json.loads(res.stdout)
     r = simulate(
         PAPER_ROD,
         law="ghaednia",
@@ -34,8 +34,8 @@ def test_json_matches_the_api() -> None:
         angle=math.radians(20),
         velocity=(0.0, -1.41),
     )
-    assert data["e"] == pytest.approx(r.e, rel=1e-12)
-    assert data["delta_p"] == pytest.approx(r.delta_p, rel=1e-12)
+    assert data["e"]["value"] == pytest.approx(r.e, rel=1e-12)
+    assert data["delta_p"] == {"value": pytest.approx(r.delta_p, rel=1e-12), "unit": "m"}
     assert data["regime"] == "slip"
 
 
@@ -43,10 +43,10 @@ def test_default_mu_is_the_api_default_and_is_printed() -> None:
     args = ["simulate", "rod", "--angle", "20 deg", "--vy", "-1.41 m/s"]
     res = runner.invoke(app, [*args, "--json"])
     assert res.exit_code == 0, res.output
-    data = json.loads(res.output)
+    data = json.loads(res.stdout)
     r = simulate(PAPER_ROD, angle=math.radians(20), velocity=(0.0, -1.41))
-    assert data["mu"] == DEFAULT_MU == r.mu
-    assert data["e"] == r.e
+    assert data["mu"]["value"] == DEFAULT_MU == r.mu
+    assert data["e"]["value"] == r.e
     text = runner.invoke(app, args).output
     assert "mu" in text
 
@@ -57,7 +57,8 @@ def test_angle_units_parse() -> None:
         app, ["simulate", "rod", "--angle", "0.3490658503988659 rad", "--vy", "-1.41", "--json"]
     )
     assert a.exit_code == 0 and b.exit_code == 0, (a.output, b.output)
-    assert json.loads(a.output)["e"] == pytest.approx(json.loads(b.output)["e"], rel=1e-9)
+    e_a, e_b = (json.loads(x.stdout)["e"]["value"] for x in (a, b))
+    assert e_a == pytest.approx(e_b, rel=1e-9)
 
 
 def test_config_file_and_plots(tmp_path: Path) -> None:
@@ -149,7 +150,7 @@ def test_given_sizes_are_used() -> None:
         angle=math.radians(20),
         velocity=(0.0, -1.41),
     )
-    assert json.loads(res.stdout)["e"] == light.e
+    assert json.loads(res.stdout)["e"]["value"] == light.e
 
 
 def test_sphere_prints_no_angle() -> None:
@@ -180,4 +181,7 @@ def test_flags_are_printed_and_in_the_json(capsys: pytest.CaptureFixture[str]) -
     code, out, err = _main([*ROD, "--vy", "-1e-9 m/s", "--mu", "0.2"], capsys)
     assert code == 0 and "gravity_dominated" in out and err.startswith("warning: gravity")
     code, out, err = _main([*ROD, "--vy", "-1.41 m/s", "--json"], capsys)
-    assert json.loads(out)["flags"] == 0 and json.loads(out)["warnings"] == [] and err == ""
+    data = json.loads(out)  # the paper's case: only the law's range was left (issue 12)
+    assert data["flags"] == int(ResultFlag.LAW_EXTRAPOLATED) and len(data["warnings"]) == 1
+    assert err.splitlines() == [f"warning: {data['warnings'][0]}"]
+    assert err.startswith("warning: law extrapolated: ") and "max delta/delta_c = " in err

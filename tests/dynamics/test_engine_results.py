@@ -89,7 +89,7 @@ def test_reporting_does_not_change_the_result(paper: ImpactResult) -> None:
 
 def test_summary_html_dict(paper: ImpactResult) -> None:
     text = str(paper)
-    for label in ("normal COR e", "permanent depth", "sliding length", "duration", "ghaednia"):
+    for label in ("e_energy", "delta_p", "sliding_length", "duration", "ghaednia"):  # field names
         assert label in text
     assert "<table>" in paper._repr_html_()
     d = paper.to_dict()

@@ -283,7 +283,7 @@ def test_bad_input() -> None:
     ok = {"angle": 0.3, "velocity": (0.0, -1.0)}
     cases = [
         ({"body": Sphere(0.01)}, "body"),
-        ({"friction": "mindlin"}, "coulomb"),
+        ({"friction": "nonsense"}, "friction"),
         ({"mu": -0.1}, "mu"),
         ({"angle": 30.0}, "angle"),
         ({"velocity": (0.0, 1.0)}, "approach"),

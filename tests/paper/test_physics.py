@@ -15,6 +15,7 @@ from impactlab.paper import data as D
 from impactlab.paper.analytic_rows import experimental_rows
 from impactlab.paper.physics import (
     CONFIGURATIONS,
+    FIT_PREFIX,
     MEASURED,
     physics_inputs,
     physics_table,
@@ -37,8 +38,13 @@ def table(runs):
     return physics_table(runs, experimental_rows())
 
 
+def _fit_name(table) -> str:
+    (name,) = {c for c in table["configuration"] if c.startswith(FIT_PREFIX)}
+    return name
+
+
 def test_table_has_the_angles_and_configurations(table):
-    names = [MEASURED, *(c.name for c in CONFIGURATIONS)]
+    names = [MEASURED, *(c.name for c in CONFIGURATIONS), _fit_name(table)]
     assert set(table["angle [deg]"]) == set(D.ANGLES_DEG)
     assert set(table["configuration"]) == set(names)
     assert len(table) == len(D.ANGLES_DEG) * len(names)
@@ -59,7 +65,7 @@ def test_measured_rows_are_the_papers(table):
 
 
 def test_flexible_rows_have_several_contacts(table):
-    flex = table[table["configuration"].str.startswith("flexible")]
+    flex = table[table["configuration"].isin([c.name for c in CONFIGURATIONS[1:]])]
     assert len(flex) == 6
     assert (flex["contacts"] > 1).all()
     rigid = table[table["configuration"] == "rigid rod"]
@@ -116,3 +122,28 @@ def test_section_and_figure(runs, table, tmp_path):
 def test_figure_needs_history(runs, tmp_path):
     with pytest.raises(ValueError, match="history"):
         figure_drop(tmp_path / "x.png", runs[("flexible rod", 45)])
+
+
+def test_fitted_damping_row(runs, table):
+    """The fitted row: labelled fit, zeta and RMS in its name, the RMS that of the table's own
+    residuals against the measured rows, no better at the scan's other values; the un-fitted
+    rows are those of a run without the fit."""
+    name = _fit_name(table)
+    zeta = float(name.split("zeta = ")[1].split(",")[0])
+    rms = float(name.split("RMS ")[1].rstrip(")"))
+    assert "(fit" in name and 0.0 < zeta <= 0.6
+    fit = table[table["configuration"] == name].sort_values("angle [deg]")
+    meas = table[table["configuration"] == MEASURED].sort_values("angle [deg]")
+    res = np.concatenate(
+        [
+            fit["e"].to_numpy() - meas["e"].to_numpy(),
+            fit["delta_p [um]"].to_numpy() / meas["delta_p [um]"].to_numpy() - 1.0,
+        ]
+    )
+    assert float(np.sqrt(np.mean(res**2))) == pytest.approx(rms, rel=0.05)
+    for ang in D.ANGLES_DEG:
+        body_zeta = float(runs[(name, ang)].body.split("zeta = ")[1].rstrip(")"))
+        assert body_zeta == pytest.approx(zeta, rel=5e-3)
+    plain = run_physics(angles=(45,), fit=False)
+    assert plain[("flexible rod", 45)].e == runs[("flexible rod", 45)].e
+    assert not any(k[0].startswith(FIT_PREFIX) for k in plain)

@@ -78,7 +78,7 @@ def test_report_numbers_match_library(analytic_run):
         ).duration
         assert f"{T * 1e3:.4g}" in text and f"{T * 1e3:.4g}" in html
     assert re.search(r"20 deg: T = 4\.106 ms vs published 4\.30 ms .*PASS", text)
-    assert '<img src="fig5_alpha.png"' in html
+    assert '<img src="data:image/png;base64,' in html  # self-contained (figures embedded)
     # --no-simulate skips "Can physics explain the experiment?"
     assert "Can physics explain" not in text
     assert "physics_comparison" not in analytic_run.files

@@ -8,6 +8,8 @@ from pathlib import Path
 import pytest
 from sweep_fakes import run_cli
 
+from impactlab._json import shape_problems
+
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
@@ -76,6 +78,8 @@ def test_run_resume_export_plot_info(tmp_path, monkeypatch, capsys) -> None:
     )
     assert code == 0, err
     summary = json.loads(out)
+    assert shape_problems(summary) == []  # docs/json-schema.md
+    assert summary["wall_time"]["unit"] == "s" and isinstance(summary["status"], dict)
     assert summary["cases"] == 40 and summary["chunks_computed"] == summary["chunks"]
     assert (tmp_path / "small.nc").is_file()
     assert (tmp_path / "plots" / "regime_map.png").is_file()
@@ -84,7 +88,10 @@ def test_run_resume_export_plot_info(tmp_path, monkeypatch, capsys) -> None:
     )
     assert code == 0 and json.loads(out)["chunks_computed"] == 0  # nothing recomputed
     code, out, err = run_cli(monkeypatch, capsys, "sweep", "info", str(store), "--json")
+    assert shape_problems(json.loads(out)) == []
     assert code == 0 and json.loads(out)["chunks_done"].startswith(str(summary["chunks"]))
+    code, out, err = run_cli(monkeypatch, capsys, "sweep", "info", str(store))
+    assert code == 0 and "0: ok = 40" in out and "{'" not in out  # no raw Python reprs
     changed = tmp_path / "changed.toml"
     changed.write_text(study.read_text().replace("-1.41 m/s", "-2 m/s"))
     code, _, err = run_cli(monkeypatch, capsys, "sweep", str(changed), "--out", str(store))
@@ -112,6 +119,7 @@ def test_uncertainty_command(tmp_path, monkeypatch, capsys) -> None:
         "--json",
     )
     assert code == 0, err
+    assert shape_problems(json.loads(out)) == []  # docs/json-schema.md
     rep = next(iter(json.loads(out).values()))
     outs = {r["output"] for r in rep["summary"]}
     assert outs == {"e", "delta_p", "sliding_length", "duration", "mean_force"}

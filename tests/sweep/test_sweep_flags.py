@@ -53,11 +53,12 @@ def test_run_summary_counts_flags(tmp_path, monkeypatch, capsys) -> None:
     )
     main()
     summary = json.loads(capsys.readouterr().out)
-    assert summary["flagged"] == "1 case(s) (energy gain: 1)"
+    # hertz at 1.41 m/s is far beyond first yield: both cases extrapolate the law (issue 12)
+    assert summary["flagged"] == "2 case(s) (energy gain: 1, law extrapolated: 2)"
     ds = open_sweep(tmp_path / "ir.zarr").load()
     gained = int(ds["flags"].sel(friction="impulse_ratio"))
     assert gained & ResultFlag.ENERGY_GAIN and float(ds["e"].sel(friction="impulse_ratio")) > 1.0
-    assert int(ds["flags"].sel(friction="coulomb")) == 0
+    assert int(ds["flags"].sel(friction="coulomb")) == ResultFlag.LAW_EXTRAPOLATED
 
 
 def test_store_made_without_flags_is_resumed_without_them(tmp_path) -> None:

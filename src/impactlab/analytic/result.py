@@ -2,12 +2,11 @@
 
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
-from impactlab._display import html_table
+from impactlab._display import field_row, format_number, html_table
 from impactlab._validation import check_finite, check_nonnegative
 
 __all__ = ["InversionResult", "Measured", "measured"]
@@ -21,6 +20,16 @@ _UNITS = {
         ("1/kg", ("K_x", "K_y")),
     )
     for k in keys
+}
+#: SI units of the inputs (``InversionResult.inputs``).
+_INPUT_UNITS = {
+    "angle": "rad",
+    "v_i": "m/s",
+    "mu": "1",
+    "e": "1",
+    "delta_p": "m",
+    "sliding_length": "m",
+    "dv_cy": "m/s",
 }
 
 
@@ -98,7 +107,7 @@ class InversionResult:
 
     def _repr_html_(self) -> str:
         rows = [
-            (k, f"{v:.6g}", _UNITS.get(k, ""))
+            field_row(k, v, _UNITS.get(k, "1"))
             for k, v in self.to_dict().items()
             if isinstance(v, int | float) and not isinstance(v, bool)
         ]
@@ -118,35 +127,47 @@ class InversionResult:
 
     def __str__(self) -> str:
         ins = self.inputs
+        uncertain = any(s > 0 for _v, s in ins.values())
 
-        def pm(name: str, scale: float, unit: str, digits: int = 4) -> str:
+        def pm(name: str, label: str = "") -> str:
             v, s = ins[name]
-            txt = f"{v * scale:.{digits}g}"
-            return txt + (f" ± {s * scale:.2g}" if s > 0 else "") + (f" {unit}" if unit else "")
+            _n, text, unit = field_row(name, float(v), _INPUT_UNITS[name], s)
+            return f"{label or name} = {text}" + (f" {unit}" if unit != "-" else "")
+
+        def out(label: str, value: float, sigma: float, mc: float, sigma_mc: float) -> str:
+            unit = "ms" if label == "T" else "N"
+            k = 1e3 if label == "T" else 1.0
+            text = f"  {label} = {format_number(value * k)} {unit}"
+            if uncertain:
+                text += (
+                    f"  ± {format_number(sigma * k, 2)} (first order)  ± "
+                    f"{format_number(sigma_mc * k, 2)} (Monte Carlo, mean {format_number(mc * k)})"
+                )
+            return text
 
         r = self.rod
+        ratio = r["inertia"] / (r["mass"] * r["length"] ** 2)
         lines = [
             "Inversion of the dent (paper Eqs. 12 and 29, corrected; "
             + ("gravity included" if self.gravity else "gravity neglected as in the paper")
             + ("; L_s is the contact patch's travel" if self.measure == "travel" else "")
             + ")",
-            f"  rod: m = {r['mass']:.4g} kg, L = {r['length']:.4g} m, R = "
-            f"{r['tip_radius'] * 1e3:.4g} mm, I_C = {r['inertia']:.4g} kg m^2 "
-            f"(I_C/(m L^2) = {r['inertia'] / (r['mass'] * r['length'] ** 2):.4g})",
-            f"  angle = {pm('angle', 180.0 / math.pi, 'deg')}, v_i = {pm('v_i', 1.0, 'm/s')}, "
-            f"mu = {pm('mu', 1.0, '')}"
-            + (f", e = {pm('e', 1.0, '')}" if "e" in ins else "")
-            + (f", dv_Cy = {pm('dv_cy', 1.0, 'm/s')}" if "dv_cy" in ins else ""),
-            f"  delta_p = {pm('delta_p', 1e6, 'um')}, "
-            f"sliding_length = {pm('sliding_length', 1e6, 'um')}",
-            f"  alpha = {self.alpha:.4g}, mu_c = {self.mu_c:.4g}, K_x = {self.K_x:.4g} 1/kg, "
-            f"K_y = {self.K_y:.4g} 1/kg",
-            f"  T = {self.duration * 1e3:.4g} ms  ± {self.sigma_T_linear * 1e3:.2g} (first order)"
-            f"  ± {self.sigma_T_mc * 1e3:.2g} (Monte Carlo, mean {self.T_mc * 1e3:.4g})",
-            f"  F = {self.mean_force:.4g} N  ± {self.sigma_F_linear:.2g} (first order)"
-            f"  ± {self.sigma_F_mc:.2g} (Monte Carlo, mean {self.F_mc:.4g})  [{self.force_method}]",
+            f"  rod: m = {format_number(r['mass'])} kg, L = {format_number(r['length'] * 1e3)} mm,"
+            f" R = {format_number(r['tip_radius'] * 1e3)} mm, I_C = {format_number(r['inertia'])}"
+            f" kg m^2 (I_C/(m L^2) = {format_number(ratio)})",
+            "  "
+            + ", ".join(
+                [pm("angle"), pm("v_i", "|v_i|"), pm("mu")]
+                + [pm(k) for k in ("e", "dv_cy") if k in ins]
+            ),
+            f"  {pm('delta_p', '|delta_p|')}, {pm('sliding_length', '|L_s|')}",
+            f"  alpha = {format_number(self.alpha)}, mu_c = {format_number(self.mu_c)}, "
+            f"K_x = {format_number(self.K_x)} 1/kg, K_y = {format_number(self.K_y)} 1/kg",
+            out("T", self.duration, self.sigma_T_linear, self.T_mc, self.sigma_T_mc),
+            out("F", self.mean_force, self.sigma_F_linear, self.F_mc, self.sigma_F_mc)
+            + f"  [{self.force_method}]",
         ]
-        if self.mc_rejected > 0:
+        if uncertain and self.mc_rejected > 0:
             lines.append(
                 f"  note: {self.mc_rejected:.2%} of the Monte Carlo samples fell in the "
                 "sticking regime or out of range and were discarded"

@@ -21,6 +21,7 @@ from typing import cast
 
 import numpy as np
 
+from impactlab._html import dataclass_html
 from impactlab._validation import check_positive, check_range
 from impactlab.bodies._checks import check_material
 from impactlab.bodies.geometric import geometric_tensor
@@ -171,6 +172,9 @@ class FlexibleRod:
     def frequencies_hz(self) -> np.ndarray:
         """Natural frequencies of the elastic modes [Hz] (axial, bending, residual)."""
         return self.basis().frequencies_hz
+
+    def _repr_html_(self) -> str:
+        return dataclass_html(self, {"inertia": self.inertia})
 
     def rigid(self) -> Rod:
         """The rigid rod with the same length, tip radius, mass, material and I_C."""

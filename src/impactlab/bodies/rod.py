@@ -14,6 +14,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from impactlab._html import dataclass_html
 from impactlab._validation import check_positive
 from impactlab.bodies._checks import (
     PLAUSIBLE_LENGTH,
@@ -110,6 +111,9 @@ class Rod:
         p = self._params.copy()
         p[BP_GSTAR] = reduced_shear_modulus(self.material, check_material("flat", flat))
         return p
+
+    def _repr_html_(self) -> str:
+        return dataclass_html(self)
 
 
 #: The paper's rod (Table 1 of doi:10.1007/s00419-015-1108-2), I_C = m L^2 / 12.

@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from impactlab._html import dataclass_html
 from impactlab._validation import check_positive
 from impactlab.bodies._checks import (
     PLAUSIBLE_MASS,
@@ -82,3 +83,6 @@ class Sphere:
         p = self._params.copy()
         p[BP_GSTAR] = reduced_shear_modulus(self.material, check_material("flat", flat))
         return p
+
+    def _repr_html_(self) -> str:
+        return dataclass_html(self, {"inertia": self.inertia})

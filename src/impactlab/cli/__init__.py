@@ -11,6 +11,7 @@ import sys
 
 import typer
 
+from impactlab._version import __version__
 from impactlab.cli import analyze, drop, invert, laws, materials, reproduce, simulate, sweep
 from impactlab.cli._common import UserError
 
@@ -23,6 +24,27 @@ app = typer.Typer(
     pretty_exceptions_enable=False,
     rich_markup_mode=None,  # help texts are plain: "[rod]" is a TOML table, not markup
 )
+
+
+def _print_version(value: bool) -> None:
+    if value:
+        typer.echo(f"impactlab {__version__}")
+        raise typer.Exit()
+
+
+@app.callback()
+def _root(
+    version: bool = typer.Option(
+        False,
+        "--version",
+        callback=_print_version,
+        is_eager=True,
+        help="Print the version of impactlab and exit.",
+    ),
+) -> None:
+    """Elastic-plastic oblique impacts with friction: simulate, invert, analyze, sweep,
+    reproduce the paper."""
+
 
 # Each command module defines ``register(app)``; registered in this order (the help's order).
 for _module in (laws, materials, simulate, drop, invert, analyze, sweep, reproduce):

@@ -4,15 +4,17 @@ from __future__ import annotations
 
 import json
 import tomllib
-from collections.abc import Callable, Mapping
+from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
 import typer
 from rich.console import Console
 from rich.table import Table
+from rich.text import Text
 
-from impactlab._json import jsonable
+from impactlab._display import field_rows
+from impactlab._json import to_json
 from impactlab.schema import FIELDS
 from impactlab.units import angle_to_rad, to_si
 
@@ -50,15 +52,27 @@ def angle_quantity(value: Any, name: str) -> float:
     raise UserError(f"{name} {text} has no unit: give a unit, e.g. '20 deg' or '0.35 rad'")
 
 
+#: Help of the initial state's options, shared by ``simulate`` and ``drop``.
+KINEMATIC_HELP = {
+    "angle": 'Rod angle to the flat with its unit, "20 deg" or "0.35 rad" (required for a rod; '
+    "a bare number is refused).",
+    "vy": 'Vertical velocity of the centre of mass, e.g. "-1.41 m/s" (required; a bare number '
+    "is in m/s).",
+    "vx": "Horizontal velocity, e.g. '0.1 m/s' (bare number: m/s; default 0 m/s).",
+    "spin": 'Angular velocity, e.g. "5 rad/s" (bare number: rad/s; counter-clockwise positive; '
+    "default 0 rad/s).",
+}
+
+
 #: The rod's properties in a [rod] table or as options, with their SI units.
 ROD_FIELDS: dict[str, str] = {"mass": "kg", "length": "m", "tip_radius": "m", "inertia": "kg*m^2"}
 
 
 #: The rod options' help (the defaults are the paper's rod).
 _ROD_HELP = {
-    "mass": "Rod mass (default 0.4607 kg).",
-    "length": "Rod length (default 0.3048 m).",
-    "tip_radius": "Tip radius (default 8.8 mm).",
+    "mass": "Rod mass, e.g. '0.46 kg' (bare number: kg; default 0.4607 kg).",
+    "length": "Rod length, e.g. '304.8 mm' (bare number: m; default 0.3048 m).",
+    "tip_radius": "Tip radius, e.g. '8.8 mm' (bare number: m; default 8.8 mm).",
     "inertia": "I_C about the centre of mass, e.g. '3.6e-3 kg*m^2' (default m L^2/12).",
 }
 
@@ -93,19 +107,88 @@ def load_toml(path: Path | None) -> dict[str, Any]:
         raise UserError(f"input file {str(path)!r} is not valid TOML: {exc}") from None
 
 
-def field_units(data: Mapping[str, Any]) -> dict[str, str]:
-    """Display units of the result fields among ``data``'s keys, from :mod:`impactlab.schema`
-    ("-" for a dimensionless number, nothing for names and counts)."""
-    units: dict[str, str] = {}
-    for key, value in data.items():
-        f = FIELDS.get(key)
-        if f is None:
-            continue
-        if f.unit != "1":
-            units[key] = f.unit
-        elif isinstance(value, float):
-            units[key] = "-"
-    return units
+#: SI units of the fields the commands print that are not in ``impactlab.schema``.
+EXTRA_UNITS: dict[str, str] = {
+    # inversion (impactlab invert, analyze)
+    "T": "s",
+    "F": "N",
+    "T_mc": "s",
+    "F_mc": "N",
+    "T_interval_mc": "s",
+    "F_interval_mc": "N",
+    "F_momentum": "N",
+    "F_rigid": "N",
+    "K_x": "1/kg",
+    "K_y": "1/kg",
+    "alpha": "1",
+    "mu_c": "1",
+    "mc_rejected": "1",
+    "v_i": "m/s",
+    "dv_cy": "m/s",
+    "L_s": "m",
+    "pileup": "m",
+    "v_c_in_x": "m/s",
+    "v_c_in_y": "m/s",
+    "v_c_out_x": "m/s",
+    "v_c_out_y": "m/s",
+    # bodies and materials
+    "mass": "kg",
+    "length": "m",
+    "radius": "m",
+    "tip_radius": "m",
+    "inertia": "kg*m^2",
+    "E": "Pa",
+    "nu": "1",
+    "yield_strength": "Pa",
+    "brinell_hardness": "kgf/mm^2",
+    "meyer_index": "1",
+    "density": "kg/m^3",
+    # drop (impactlab drop / simulate rod --flexible)
+    "e_raw": "1",
+    "scar_length": "m",
+    "slip": "m",
+    "slip_path": "m",
+    "start": "s",
+    "x_start": "m",
+    "x_end": "m",
+    "x_min": "m",
+    "x_max": "m",
+    "contact_radius": "m",
+    "unloading_radius": "m",
+    "delta_r": "m",
+    "work_normal": "J",
+    "work_friction": "J",
+    "work_damping": "J",
+    "initial_energy": "J",
+    "rigid_kinetic_energy": "J",
+    "vibration_energy": "J",
+    "potential_energy": "J",
+    "energy_error": "1",
+    "mu_apparent": "1",
+    "next_time": "s",
+    "gravity": "m/s^2",
+    "rate_factor": "1",
+    "strain_rate": "1/s",
+    # sweep
+    "wall_time": "s",
+    "first_task": "s",
+    "throughput": "1/s",
+}
+
+#: SI unit of every field a command prints, by name: ``impactlab.schema`` and the above.
+SI_UNITS: dict[str, str] = {name: f.unit for name, f in FIELDS.items()} | EXTRA_UNITS
+
+
+def print_rows(rows: list[tuple[str, str, str]], title: str = "") -> None:
+    """A (quantity, value, unit) table on stdout (cells are text, never rich markup)."""
+    table = Table(title=Text(title) if title else None, show_header=True, header_style="bold")
+    table.add_column("quantity")
+    table.add_column("value", justify="right")
+    table.add_column("unit")
+    for name, text, unit in rows:
+        value = Text(text, justify="right" if unit else "left")  # numbers right, texts left
+        table.add_row(Text(name), value, Text(unit))
+    console.print(table)
 
 
 def emit(
@@ -114,25 +197,13 @@ def emit(
     as_json: bool,
     title: str = "",
     units: Mapping[str, str] | None = None,
+    sigmas: Mapping[str, Any] | None = None,
 ) -> None:
-    """Print ``data`` as JSON (``--json``) or as a readable two-column table."""
+    """Print ``data`` (SI values) as JSON (``--json``: quantities as ``{"value", "unit",
+    "sigma"}``, docs/json-schema.md) or as a table in display units (``impactlab._display``).
+    ``units``: SI units of fields that are not in :data:`SI_UNITS` (or differ there)."""
+    si = {**SI_UNITS, **(units or {})}
     if as_json:
-        print(json.dumps(jsonable(data), indent=2))
+        print(json.dumps(to_json(data, si, sigmas), indent=2))
         return
-    units = units or {}
-    table = Table(title=title or None, show_header=True, header_style="bold")
-    table.add_column("quantity")
-    table.add_column("value", justify="right")
-    table.add_column("unit")
-    for key, value in data.items():
-        text = f"{value:.6g}" if isinstance(value, float) else str(value)
-        table.add_row(key, text, units.get(key, ""))
-    console.print(table)
-
-
-def show(result: Any, *, as_json: bool, table: Callable[[Any], None]) -> None:
-    """Print ``result`` as JSON (its ``to_dict()``) with ``--json``, else with ``table``."""
-    if as_json:
-        emit(result.to_dict(), as_json=True)
-    else:
-        table(result)
+    print_rows(field_rows(data, si, sigmas), title)

@@ -2,48 +2,32 @@
 
 from __future__ import annotations
 
+import json
 import math
 from pathlib import Path
 from typing import Any
 
 import typer
+from rich.text import Text
 
+from impactlab._display import field_row
+from impactlab._json import quantity as quantity_json
+from impactlab._json import to_json
 from impactlab.bodies import PAPER_ROD, Rod
-from impactlab.cli._common import UserError, console, emit, load_toml, parse_rod_table, show
+from impactlab.cli._common import (
+    SI_UNITS,
+    UserError,
+    console,
+    load_toml,
+    parse_rod_table,
+    print_rows,
+)
+from impactlab.cli.invert import inversion_json
 from impactlab.experiment import ExperimentResult, MarkerGeometry, analyze
 from impactlab.experiment.checks import output_folder
 
-#: The labels of the summary's quantities, by display unit (SI value x scale).
-_LABELS: dict[tuple[float, str], dict[str, str]] = {
-    (1.0, ""): {"e": "e (tip, normal)", "mu": "mu (Eq. 28)"},
-    (180.0 / math.pi, "deg"): {"angle": "angle at impact"},
-    (1.0, "m/s"): {
-        "v_i": "v_i (tip, vertical)",
-        "v_c_in_x": "v_Cx before",
-        "v_c_in_y": "v_Cy before",
-        "v_c_out_x": "v_Cx after",
-        "v_c_out_y": "v_Cy after",
-        "dv_cy": "dv_Cy",
-    },
-    (1.0, "rad/s"): {"spin_out": "spin after"},
-    (1e6, "um"): {
-        "delta_p": "delta_p (max depth)",
-        "L_s": "L_s (length - width)",
-        "pileup": "pile-up height",
-    },
-    (1e3, "ms"): {"T": "T (Eq. 12)"},
-    (1.0, "N"): {"F": "F (Eq. 29)"},
-}
-#: display: key -> (scale, unit, label)
-_DISPLAY = {k: (sc, u, lab) for (sc, u), labels in _LABELS.items() for k, lab in labels.items()}
-#: the engine comparison's fields: name -> (scale, unit)
-_MODEL = {
-    "e": (1.0, ""),
-    "delta_p": (1e6, "um"),
-    "sliding_length": (1e6, "um"),
-    "duration": (1e3, "ms"),
-    "spin_out": (1.0, "rad/s"),
-}
+#: The engine comparison's fields (``res.model``) that the summary shows, as ``model <field>``.
+_MODEL = ("e", "delta_p", "sliding_length", "duration", "spin_out")
 
 
 def _rod_from(spec: str | None) -> tuple[Rod, dict[str, Any]]:
@@ -159,43 +143,97 @@ def analyze_cmd(
         out_dir=folder,
         gravity=gravity,
     )
-    show(res, as_json=as_json, table=_print_summary)
+    if as_json:
+        print(json.dumps(analysis_json(res), indent=2))
+    else:
+        _print_summary(res)
     if res.errors:
         raise UserError("; ".join(f"{k}: {v}" for k, v in res.errors.items()))
 
 
 def _print_summary(res: ExperimentResult) -> None:
-    """The measured quantities in display units, then warnings and the files written."""
-    summ = res.summary()
-    data: dict[str, Any] = {}
-    units: dict[str, str] = {}
-    for key, est in summ.items():
-        scale, unit, label = _DISPLAY.get(key, (1.0, est.unit, key))
-        s = f"{est.value * scale:.5g}"
-        if est.sigma > 0:
-            s += f" ± {est.sigma * scale:.2g}"
-        data[label] = s
-        units[label] = unit
+    """The measured quantities in display units (``impactlab._display``), then warnings and
+    the files written."""
+    rows = [field_row(k, est.value, est.unit or "1", est.sigma) for k, est in res.summary().items()]
     if res.kinematics is not None:
-        data["geometry"] = res.kinematics.geometry_source
+        rows.append(("geometry", res.kinematics.geometry_source, ""))
     if res.dent is not None:
-        data["sliding direction"] = f"{res.dent.sliding_angle:.1f}" + (
-            " (ambiguous)" if res.dent.direction_ambiguous else ""
+        name, text, unit = field_row(
+            "sliding_direction", math.radians(res.dent.sliding_angle), "rad"
         )
-        units["sliding direction"] = "deg (scan x)"
+        ambiguous = " (ambiguous)" if res.dent.direction_ambiguous else ""
+        rows.append((name, text + ambiguous, unit + " (scan x)"))
     if res.model is not None:
-        for k, v in res.model.items():
-            if isinstance(v, float) and k in _MODEL:
-                scale, unit = _MODEL[k]
-                data[f"model {k} ({res.model['law']})"] = f"{v * scale:.5g}"
-                units[f"model {k} ({res.model['law']})"] = unit
+        law = res.model.get("law", "")
+        for k in _MODEL:
+            v = res.model.get(k)
+            if isinstance(v, float):
+                _n, text, unit = field_row(k, v, SI_UNITS.get(k, "1"))
+                rows.append((f"model {k} ({law})", text, unit))
     names = (Path(p).name if p else "-" for p in (res.markers_path, res.scan_path))
-    title = "impactlab analyze: " + " + ".join(names)
-    emit(data, as_json=False, title=title, units=units)
+    print_rows(rows, "impactlab analyze: " + " + ".join(names))
     for w in res.warnings:
-        console.print(f"warning: {w}")
+        console.print(Text(f"warning: {w}"))
     for name, path in {**res.figures, **res.files}.items():
-        console.print(f"saved {name}: {path}")
+        console.print(Text(f"saved {name}: {path}"))
+
+
+#: SI units of the fields of the analysis' details (``kinematics``, ``dent``) by name; a key
+#: ending in ``_m`` is in m, ``_deg`` in deg (docs/json-schema.md).
+_DETAIL_UNITS = {
+    **SI_UNITS,
+    "deepest_fraction": "1",
+    "dropout_fraction": "1",
+    "sliding_axis": "1",
+    "slope_x": "1",
+    "slope_y": "1",
+    "start": "m",
+    "end": "m",
+    "fitted_gravity": "m/s^2",
+    "filled_in_dent": "1",
+}
+
+
+def _details(node: Any) -> Any:
+    """The analysis' details in the JSON shape: an estimate ``{"value", "sigma", "unit"}`` as a
+    quantity (sigma only when > 0, unit "1" when dimensionless), a float under a known key or
+    a ``_m``/``_deg`` key as a quantity; the rest as it is."""
+    if isinstance(node, dict):
+        if "plane" in node:  # z = c0 + c1 x + c2 y of the scan's levelling
+            c0, c1, c2 = node["plane"]
+            node = {**node, "plane": {"offset_m": c0, "slope_x": c1, "slope_y": c2}}
+        if set(node) == {"value", "sigma", "unit"}:
+            return quantity_json(node["value"], node["unit"] or "1", node["sigma"])
+        units = {k: u for k in node if (u := _suffix_unit(str(k))) is not None}
+        return to_json({k: _details(v) for k, v in node.items()}, units)
+    if isinstance(node, list):
+        return [_details(v) for v in node]
+    return node
+
+
+def _suffix_unit(key: str) -> str | None:
+    if key in _DETAIL_UNITS:
+        return _DETAIL_UNITS[key]
+    for suffix, unit in (("_m", "m"), ("_deg", "deg"), ("_rad", "rad"), ("_s", "s")):
+        if key.endswith(suffix):
+            return unit
+    return None
+
+
+def analysis_json(res: ExperimentResult) -> dict[str, Any]:
+    """The analysis as JSON (docs/json-schema.md): ``summary`` of quantities with their sigma,
+    the inversion as ``impactlab invert --json`` writes it, the details (kinematics, dent,
+    engine comparison) with the unit of every quantity."""
+    data = res.to_dict()
+    data["summary"] = {
+        k: quantity_json(est.value, est.unit or "1", est.sigma) for k, est in res.summary().items()
+    }
+    if res.inversion is not None:
+        data["inversion"] = inversion_json(res.inversion)
+    for key in ("rod", "model", "kinematics", "dent"):
+        if data.get(key) is not None:
+            data[key] = _details(data[key])
+    return data
 
 
 def register(app: typer.Typer) -> None:

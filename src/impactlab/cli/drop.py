@@ -7,51 +7,64 @@ Options that do not apply (mode counts or damping with ``--rigid``) are refused.
 
 from __future__ import annotations
 
+import sys
+from collections.abc import Mapping
 from typing import Any
 
 import typer
 
+from impactlab._display import display_unit, field_row, flag_names
 from impactlab.bodies import PAPER_ROD, FlexibleRod, Rod
 from impactlab.bodies.flexible_rod import DEFAULT_N_AXIAL, DEFAULT_N_BENDING
-from impactlab.cli._common import UserError, angle_quantity, emit, quantity
+from impactlab.cli._common import (
+    KINEMATIC_HELP,
+    SI_UNITS,
+    UserError,
+    angle_quantity,
+    emit,
+    quantity,
+)
 from impactlab.contact.rate import RATE_LAWS
 from impactlab.dynamics.drop import simulate_drop
 from impactlab.dynamics.drop_result import UNITS, DropResult
 from impactlab.friction import DEFAULT_MU
+from impactlab.materials import Material
 
 #: ``--rate`` values ("none": a rate-independent flat).
 RATE_CHOICES = ("none", *RATE_LAWS)
 
-#: The totals printed after the contact table: field -> (display unit, scale from SI).
-_TOTALS: dict[str, tuple[str, float]] = {
-    "n_contacts": ("", 1.0),
-    "e": ("-", 1.0),
-    "e_raw": ("-", 1.0),
-    "delta_p": ("um", 1e6),
-    "scar_length": ("um", 1e6),
-    "sliding_length": ("um", 1e6),
-    "duration": ("ms", 1e3),
-    "max_force": ("N", 1.0),
-    "normal_impulse": ("N*s", 1.0),
-    "tangential_impulse": ("N*s", 1.0),
-    "spin_out": ("rad/s", 1.0),
-    "mu_apparent": ("-", 1.0),
-    "vibration_energy": ("J", 1.0),
-    "energy_error": ("-", 1.0),
-    "rate_factor": ("-", 1.0),
-}
+#: The totals printed after the contact table (SI units: ``SI_UNITS``).
+TOTALS = (
+    "n_contacts",
+    "e",
+    "e_raw",
+    "delta_p",
+    "delta_max",
+    "scar_length",
+    "sliding_length",
+    "duration",
+    "mean_force",
+    "max_force",
+    "normal_impulse",
+    "tangential_impulse",
+    "spin_out",
+    "mu_apparent",
+    "vibration_energy",
+    "energy_error",
+    "rate_factor",
+)
 
-#: Columns of the contact table: (title, ContactRecord field, scale from SI).
-_COLUMNS: tuple[tuple[str, str, float], ...] = (
-    ("end", "end", 1.0),
-    ("t0 [ms]", "start", 1e3),
-    ("T [ms]", "duration", 1e3),
-    ("dmax [um]", "delta_max", 1e6),
-    ("Fmax [N]", "max_force", 1.0),
-    ("Pn [N*s]", "normal_impulse", 1.0),
-    ("Pt [N*s]", "tangential_impulse", 1.0),
-    ("slip [um]", "slip", 1e6),
-    ("reload", "reload", 1.0),
+#: Columns of the contact table: ContactRecord fields (display units: ``impactlab._display``).
+_COLUMNS = (
+    "end",
+    "start",
+    "duration",
+    "delta_max",
+    "max_force",
+    "normal_impulse",
+    "tangential_impulse",
+    "slip",
+    "reload",
 )
 
 
@@ -61,6 +74,28 @@ def _count(value: int | None, name: str, default: int) -> int:
     if value < 0:
         raise UserError(f"{name} must be an integer >= 0, got {value}")
     return value
+
+
+def flexible_rod(
+    values: Mapping[str, Any], sizes: Mapping[str, float], material: Material, label: Any = None
+) -> FlexibleRod:
+    """A FlexibleRod of the given ``sizes`` (length, tip_radius, mass) and ``material`` with
+    the mode counts and damping of ``values`` (``modes_axial``, ``modes_bending``,
+    ``damping``; None: the defaults). ``label(key)`` spells an option in errors."""
+    name = label or (lambda key: "--" + key.replace("_", "-"))
+    n_axial = _count(values.get("modes_axial"), name("modes_axial"), DEFAULT_N_AXIAL)
+    n_bending = _count(values.get("modes_bending"), name("modes_bending"), DEFAULT_N_BENDING)
+    damping = values.get("damping")
+    return FlexibleRod(
+        length=sizes["length"],
+        tip_radius=sizes["tip_radius"],
+        mass=sizes["mass"],
+        material=material,
+        n_axial=n_axial,
+        n_bending=n_bending,
+        axial_residual=n_axial >= 1,
+        damping=0.0 if damping is None else float(damping),
+    )
 
 
 def _body(
@@ -80,57 +115,70 @@ def _body(
         if given:
             raise UserError(f"{', '.join(given)}: a rigid rod has no modes; leave out --rigid")
         return PAPER_ROD
-    n_axial = _count(modes_axial, "--modes-axial", DEFAULT_N_AXIAL)
-    n_bending = _count(modes_bending, "--modes-bending", DEFAULT_N_BENDING)
-    return FlexibleRod.paper(
-        n_axial=n_axial,
-        n_bending=n_bending,
-        axial_residual=n_axial >= 1,
-        damping=0.0 if damping is None else damping,
-    )
+    paper = {"length": PAPER_ROD.length, "tip_radius": PAPER_ROD.tip_radius, "mass": PAPER_ROD.mass}
+    modes = {"modes_axial": modes_axial, "modes_bending": modes_bending, "damping": damping}
+    return flexible_rod(modes, paper, PAPER_ROD.material)
 
 
-def _rate(rate: str) -> str | None:
-    name = rate.strip().lower()
-    if name not in RATE_CHOICES:
-        raise UserError(f"--rate must be one of {', '.join(RATE_CHOICES)}, got {rate!r}")
-    return None if name == "none" else name
+def rate_name(rate: str, name: str = "--rate") -> str | None:
+    """The rate law of ``--rate`` (None for "none"); UserError listing the choices."""
+    key = rate.strip().lower()
+    if key not in RATE_CHOICES:
+        raise UserError(f"{name} must be one of {', '.join(RATE_CHOICES)}, got {rate!r}")
+    return None if key == "none" else key
+
+
+def _contact_rows(result: DropResult) -> tuple[list[str], list[list[str]]]:
+    """The contact table's header (field [display unit]) and rows, in display units."""
+    header = ["#"]
+    for key in _COLUMNS:
+        unit = display_unit(key, SI_UNITS.get(key, "")).unit
+        header.append(key if unit == "-" else f"{key} [{unit}]")
+    rows = []
+    for i, c in enumerate(result.contacts, 1):
+        cells = [str(i)]
+        for key in _COLUMNS:
+            v = getattr(c, key)
+            cells.append(field_row(key, v, SI_UNITS.get(key))[1])
+        rows.append(cells)
+    return header, rows
 
 
 def _contact_table(result: DropResult) -> str:
     """Every contact, one line each, in display units (plain text, fixed width)."""
-    rows = [["#", *(title for title, _f, _s in _COLUMNS)]]
-    for i, c in enumerate(result.contacts, 1):
-        cells = [str(i)]
-        for _t, name, scale in _COLUMNS:
-            v = getattr(c, name)
-            cells.append(f"{v * scale:.4g}" if isinstance(v, float) else str(v))
-        rows.append(cells)
-    widths = [max(len(r[j]) for r in rows) for j in range(len(rows[0]))]
-    lines = ["  ".join(cell.rjust(w) for cell, w in zip(r, widths, strict=True)) for r in rows]
+    header, rows = _contact_rows(result)
+    table = [header, *rows]
+    widths = [max(len(r[j]) for r in table) for j in range(len(header))]
+    lines = ["  ".join(cell.rjust(w) for cell, w in zip(r, widths, strict=True)) for r in table]
     return "contacts\n" + "\n".join(lines)
 
 
-def _totals(result: DropResult) -> tuple[dict[str, Any], dict[str, str]]:
-    """The totals in display units, and their units."""
+def drop_summary(result: DropResult) -> dict[str, Any]:
+    """The set-up and the totals of a drop (SI values; ``impactlab._display`` shows them)."""
     data: dict[str, Any] = {"body": result.body, "law": result.law}
-    data["friction"] = f"{result.friction} (mu = {result.mu:g})"
+    data["friction"] = result.friction
+    data["mu"] = result.mu
     data["rate"] = result.rate or "none"
-    units: dict[str, str] = {}
-    for key, (unit, scale) in _TOTALS.items():
-        v = getattr(result, key)
-        data[key] = v * scale if isinstance(v, float) else v
-        units[key] = unit
-    return data, units
+    data.update({key: getattr(result, key) for key in TOTALS})
+    data["flags"] = flag_names(result.flags)
+    return data
+
+
+def report_drop(result: DropResult, *, as_json: bool) -> None:
+    """Print a drop: JSON (SI, docs/json-schema.md), or the contact table and the totals."""
+    if as_json:
+        balance = {key: "J" for key in result.energy_balance}  # its terms, by name
+        emit(result.to_dict(), as_json=True, units={**UNITS, **balance})
+        return
+    print(_contact_table(result))
+    emit(drop_summary(result), as_json=False, title="drop", units=UNITS)
 
 
 def drop_cmd(
-    angle: str = typer.Option(
-        None, "--angle", help='Rod angle to the flat with its unit, "20 deg" or "0.35 rad".'
-    ),
-    vy: str = typer.Option(None, "--vy", help='Vertical velocity, e.g. "-1.41 m/s" (required).'),
-    vx: str = typer.Option(None, "--vx", help="Horizontal velocity (default 0)."),
-    spin: str = typer.Option(None, "--spin", help='Angular velocity, e.g. "5 rad/s" (default 0).'),
+    angle: str = typer.Option(None, "--angle", help=KINEMATIC_HELP["angle"]),
+    vy: str = typer.Option(None, "--vy", help=KINEMATIC_HELP["vy"]),
+    vx: str = typer.Option(None, "--vx", help=KINEMATIC_HELP["vx"]),
+    spin: str = typer.Option(None, "--spin", help=KINEMATIC_HELP["spin"]),
     mu: float = typer.Option(
         DEFAULT_MU, "--mu", help="Coulomb friction coefficient (the only friction model here)."
     ),
@@ -176,14 +224,11 @@ def drop_cmd(
         velocity=(quantity(vx, "m/s", "--vx") or 0.0, quantity(vy, "m/s", "--vy") or 0.0),
         spin=quantity(spin, "rad/s", "--spin") or 0.0,
         gravity=not no_gravity,
-        rate=_rate(rate),
+        rate=rate_name(rate),
     )
-    if as_json:
-        emit({**result.to_dict(), "units": UNITS}, as_json=True)
-        return
-    print(_contact_table(result))
-    data, units = _totals(result)
-    emit(data, as_json=False, title="drop", units=units)
+    for text in result.warnings:
+        print(f"warning: {text}", file=sys.stderr)
+    report_drop(result, as_json=as_json)
 
 
 def register(app: typer.Typer) -> None:

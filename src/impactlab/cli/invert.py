@@ -6,23 +6,27 @@ angle without a unit is refused (20 could be degrees or radians).
 
 from __future__ import annotations
 
-import math
+import json
+from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
 import typer
 
+from impactlab._display import field_row, field_rows
+from impactlab._json import quantity as quantity_json
+from impactlab._json import to_json
 from impactlab.analytic import InversionResult, invert
 from impactlab.bodies import PAPER_ROD, Rod
 from impactlab.cli._common import (
+    SI_UNITS,
     UserError,
     angle_quantity,
-    emit,
     load_toml,
     parse_rod_table,
+    print_rows,
     quantity,
     rod_option,
-    show,
 )
 from impactlab.paper.data import get_case
 
@@ -128,9 +132,10 @@ def run_invert(
     gravity: bool | None = None,
     samples: int | None = None,
     seed: int | None = None,
-) -> InversionResult:
+) -> tuple[InversionResult, dict[str, tuple[float, float]]]:
     """Merge case < file < command line and call :func:`impactlab.analytic.invert` (the paper
-    case's negative dent depth and sliding length enter as magnitudes)."""
+    case's negative dent depth and sliding length enter as magnitudes). Returns the result and
+    the inputs as given (SI, signs kept: the echo), as ``(value, sigma)`` by keyword."""
     v, s, r, extra = _from_file(load_toml(file))
     case = case or extra.get("case")
     if case is not None:
@@ -146,24 +151,30 @@ def run_invert(
     )
     r.update(parse_rod_table({k: val for k, val in (rod or {}).items() if val is not None}, "--"))
     kwargs: dict[str, Any] = {_ARGUMENTS.get(k, k): (val, s.get(k, 0.0)) for k, val in v.items()}
-    return invert(
+    result = invert(
         **kwargs,
         rod=_rod(r),
         gravity=gravity if gravity is not None else bool(extra.get("gravity", False)),
         n_samples=samples if samples is not None else int(extra.get("samples", 20_000)),
         seed=seed if seed is not None else int(extra.get("seed", 0)),
     )
+    return result, kwargs
 
 
 #: Help of the measured inputs' options.
 _HELP = {
-    "angle": "Rod-to-flat angle with its unit: '20 deg' or '0.35 rad'.",
-    "v_i": "Drop velocity of the tip ('-1.41 m/s'; the sign is ignored).",
-    "e": "Coefficient of restitution (tip, normal).",
-    "mu": "Friction coefficient (paper Eq. 28).",
-    "delta_p": "Permanent dent depth, a magnitude ('22 um'; the paper prints -22 um).",
-    "L_s": "Sliding length L_s, a magnitude ('1400 um'; the paper prints -1400 um).",
-    "dv_cy": "Change of the centre-of-mass vertical velocity ('0.62 m/s'): F from Eq. 29.",
+    "angle": "Rod-to-flat angle with its unit: '20 deg' or '0.35 rad' (a bare number is "
+    "refused; required unless --case or --file gives it).",
+    "v_i": "Drop velocity of the tip ('-1.41 m/s'; bare number: m/s; the sign is ignored; "
+    "required unless --case or --file gives it).",
+    "e": "Coefficient of restitution (tip, normal); required for F unless --dv-cy is given.",
+    "mu": "Friction coefficient (paper Eq. 28); required unless --case or --file gives it.",
+    "delta_p": "Permanent dent depth, a magnitude ('22 um'; bare number: m; the paper prints "
+    "-22 um; required unless --case or --file gives it).",
+    "L_s": "Sliding length L_s, a magnitude ('1400 um'; bare number: m; the paper prints "
+    "-1400 um; required unless --case or --file gives it).",
+    "dv_cy": "Change of the centre-of-mass vertical velocity ('0.62 m/s'; bare number: m/s; "
+    "optional): F from Eq. 29.",
 }
 
 
@@ -171,7 +182,9 @@ def _measured_option(name: str, *, sigma: bool = False) -> Any:
     """The option of a measured input (``--vi``), or of its standard deviation (``--sigma-vi``)."""
     flag = _FIELDS[name][2]
     if sigma:
-        return typer.Option(None, "--sigma-" + flag[2:], help=f"Std. dev. of {flag}.")
+        return typer.Option(
+            None, "--sigma-" + flag[2:], help=f"Std. dev. of {flag}, same unit (default 0)."
+        )
     return typer.Option(None, flag, help=_HELP[name])
 
 
@@ -221,7 +234,7 @@ def invert_cmd(
     """
     inputs = (angle, vi, e, mu, delta_p, ls, dv_cy)
     sigmas = (sigma_angle, sigma_vi, sigma_e, sigma_mu, sigma_delta_p, sigma_ls, sigma_dv_cy)
-    res = run_invert(
+    res, given = run_invert(
         case=case,
         file=file,
         values=dict(zip(_FIELDS, inputs, strict=True)),
@@ -231,38 +244,74 @@ def invert_cmd(
         samples=samples,
         seed=seed,
     )
-    show(res, as_json=as_json, table=_print_result)
+    if as_json:
+        print(json.dumps(inversion_json(res, given), indent=2))
+    else:
+        _print_result(res, given)
 
 
-def _print_result(res: InversionResult) -> None:
-    data = {
-        "T": res.duration * 1e3,
-        "sigma T (first order)": res.sigma_T_linear * 1e3,
-        "sigma T (Monte Carlo)": res.sigma_T_mc * 1e3,
-        "F": res.mean_force,
-        "sigma F (first order)": res.sigma_F_linear,
-        "sigma F (Monte Carlo)": res.sigma_F_mc,
-        "force from": res.force_method,
-        "alpha": res.alpha,
-        "mu_c": res.mu_c,
-        "K_x": res.K_x,
-        "K_y": res.K_y,
-        "angle": math.degrees(res.inputs["angle"][0]),
-        "gravity": "included" if res.gravity else "neglected (paper)",
+#: SI units of the inversion's inputs, by keyword of ``impactlab.analytic.invert``.
+INPUT_UNITS = {
+    "angle": "rad",
+    "v_i": "m/s",
+    "e": "1",
+    "mu": "1",
+    "delta_p": "m",
+    "sliding_length": "m",
+    "dv_cy": "m/s",
+}
+#: The sigma of each output: output -> its field in InversionResult.
+_SIGMAS = {
+    "duration": "sigma_T_linear",
+    "mean_force": "sigma_F_linear",
+    "T_mc": "sigma_T_mc",
+    "F_mc": "sigma_F_mc",
+}
+
+
+def _per(unit: str, by: str) -> str:
+    return unit if by == "1" else f"{unit}/({by})"
+
+
+def inversion_json(
+    res: InversionResult, given: Mapping[str, tuple[float, float]] | None = None
+) -> dict[str, Any]:
+    """The inversion as JSON (docs/json-schema.md): outputs with their sigma (first order for
+    ``duration``/``mean_force``, Monte Carlo for ``T_mc``/``F_mc``), the inputs as given (signs
+    kept; ``res.inputs`` without ``given``), the rod and the sensitivities, each with its unit."""
+    data = {k: v for k, v in res.to_dict().items() if k not in _SIGMAS.values()}
+    inputs = given or res.inputs
+    sigmas = {k: getattr(res, name) for k, name in _SIGMAS.items()}
+    data["inputs"] = {k: quantity_json(float(v), INPUT_UNITS[k], s) for k, (v, s) in inputs.items()}
+    for out, unit in (("T", "s"), ("F", "N")):
+        sens = data.pop(f"sensitivity_{out}")
+        data[f"sensitivity_{out}"] = {
+            k: quantity_json(float(d), _per(unit, INPUT_UNITS[k])) for k, d in sens.items()
+        }
+    return to_json(data, SI_UNITS, sigmas)  # type: ignore[no-any-return]
+
+
+def _print_result(res: InversionResult, given: Mapping[str, tuple[float, float]]) -> None:
+    """The inputs as given, then T and F (± first order; Monte Carlo rows only when an input
+    has an uncertainty), in display units."""
+    uncertain = any(s > 0 for _v, s in given.values())
+    rows = [field_row(k, float(v), INPUT_UNITS[k], s) for k, (v, s) in given.items()]
+    outputs: dict[str, Any] = {
+        "duration": res.duration,
+        "mean_force": res.mean_force,
+        "force_method": res.force_method,
     }
-    units = {
-        "T": "ms",
-        "sigma T (first order)": "ms",
-        "sigma T (Monte Carlo)": "ms",
-        "F": "N",
-        "sigma F (first order)": "N",
-        "sigma F (Monte Carlo)": "N",
-        "K_x": "1/kg",
-        "K_y": "1/kg",
-        "angle": "deg",
-    }
-    emit(data, as_json=False, title="impactlab invert (paper Eqs. 12, 29)", units=units)
-    if res.mc_rejected > 0:
+    if uncertain:
+        outputs.update({"T_mc": res.T_mc, "F_mc": res.F_mc, "n_samples": res.n_samples})
+    outputs.update({"alpha": res.alpha, "mu_c": res.mu_c, "K_x": res.K_x, "K_y": res.K_y})
+    outputs["gravity"] = "included" if res.gravity else "neglected (paper)"
+    sigmas = {k: getattr(res, name) for k, name in _SIGMAS.items()} if uncertain else {}
+    rows += field_rows(outputs, SI_UNITS, sigmas)
+    title = "impactlab invert (paper Eqs. 12, 29)"
+    if uncertain:
+        title += ": ± first order; T_mc, F_mc: Monte Carlo mean ± sigma"
+    print_rows(rows, title)
+    if uncertain and res.mc_rejected > 0:
         typer.echo(
             f"note: {res.mc_rejected:.2%} of the Monte Carlo samples fell in the "
             "sticking regime or out of range and were discarded"

@@ -10,13 +10,14 @@ Examples::
 
 from __future__ import annotations
 
-import math
 import sys
 from typing import Any
 
 import typer
 from rich.table import Table
 
+from impactlab._display import field_row
+from impactlab._json import quantity as quantity_json
 from impactlab.cli._common import console, emit, quantity
 from impactlab.contact import get_law, law_names
 from impactlab.contact.base import ContactLaw
@@ -69,16 +70,42 @@ _UNITS = {
     "full_contact_interference": "m",
     "pole_interference": "m",
     "delta_c_jackson_green": "m",
+    # dimensionless numbers of the laws' details
+    **dict.fromkeys(
+        (
+            "C",
+            "B",
+            "switch_ratio",
+            "published_jump",
+            "eps",
+            "t_yield",
+            "residual_ratio",
+            "F_nu",
+            "z_over_a_at_yield",
+            "meyer_index",
+            "max_eq24_over_hertz",
+            "limit_pressure_ratio",
+            "delta_ratio_max",
+            "e_over_sy",
+        ),
+        "1",
+    ),
 }
 
 
 def laws(
     name: str | None = typer.Argument(None, help="Show one law in detail (e.g. 'brake')."),
     radius: str = typer.Option(
-        "8.8 mm", "--radius", help="Tip radius for the example numbers of one law."
+        "8.8 mm",
+        "--radius",
+        help="Tip radius for the example numbers of one law, e.g. '5 mm' (bare number: m).",
     ),
-    body: str = typer.Option("aisi-201", "--body", help="Material preset of the body."),
-    flat: str = typer.Option("aisi-1010", "--flat", help="Material preset of the flat."),
+    body: str = typer.Option(
+        "aisi-201", "--body", help="Material preset of the body (see 'impactlab materials')."
+    ),
+    flat: str = typer.Option(
+        "aisi-1010", "--flat", help="Material preset of the flat (see 'impactlab materials')."
+    ),
     as_json: bool = typer.Option(False, "--json", help="Machine-readable output."),
 ) -> None:
     """List the contact laws (title, reference/DOI, validity, parameters) or show one.
@@ -97,11 +124,29 @@ def register(app: typer.Typer) -> None:
     app.command("laws")(laws)
 
 
+def _described(law: ContactLaw) -> dict[str, Any]:
+    """``law.describe()`` with each parameter's default as a quantity of its unit (JSON)."""
+    info = law.describe()
+    params = []
+    for p in info.get("parameters", []):
+        unit = p.get("unit") if p.get("unit") not in (None, "", "-") else "1"
+        if isinstance(p.get("default"), float):
+            p = {**p, "default": quantity_json(p["default"], unit)}
+        params.append(p)
+    return {**info, "parameters": params}
+
+
+def _citation(ref: Any) -> str:
+    if isinstance(ref, dict) and "citation" in ref:
+        return str(ref["citation"]) + (f" (doi:{ref['doi']})" if ref.get("doi") else "")
+    return str(ref)
+
+
 def _laws(name: str | None, radius: str, body: str, flat: str, as_json: bool) -> None:
     if name is None:
-        data = {n: get_law(n).describe() for n in law_names()}
+        data = {n: _described(get_law(n)) for n in law_names()}
         if as_json:
-            emit(data, as_json=True)
+            emit(data, as_json=True, units=_UNITS)
             return
         table = Table(title="Contact laws", show_header=True, header_style="bold", show_lines=True)
         table.add_column("name", no_wrap=True)
@@ -119,12 +164,14 @@ def _laws(name: str | None, radius: str, body: str, flat: str, as_json: bool) ->
     R = quantity(radius, "m", "radius")
     assert R is not None
     pair = ContactPair(get_material(body), get_material(flat))
-    info = law.describe()
+    info = _described(law)
     info["example"] = {"body": body, "flat": flat, **_numbers(law, pair, R)}
     if as_json:
-        emit(info, as_json=True)
+        emit(info, as_json=True, units=_UNITS)
         return
     head = {k: v for k, v in info.items() if k not in ("parameters", "example", "law_id")}
+    if isinstance(head.get("references"), list):  # the citations, not their records
+        head["references"] = [_citation(r) for r in head["references"]]
     emit(head, as_json=False, title=f"contact law {name!r}")
     ptable = Table(title="parameters", show_header=True, header_style="bold")
     for col in ("name", "default", "unit", "meaning"):
@@ -133,8 +180,6 @@ def _laws(name: str | None, radius: str, body: str, flat: str, as_json: bool) ->
         ptable.add_row(q.name, q.default_text, q.unit, q.description)
     if law.parameters:
         console.print(ptable)
-    example = {
-        k: (v if not (isinstance(v, float) and math.isinf(v)) else "inf")
-        for k, v in info["example"].items()
-    }
-    emit(example, as_json=False, title=f"numbers for {body} on {flat}, R = {R:g} m", units=_UNITS)
+    _n, r_text, r_unit = field_row("radius", R, "m")
+    title = f"numbers for {body} on {flat}, R = {r_text} {r_unit}"
+    emit(info["example"], as_json=False, title=title, units=_UNITS)

@@ -13,7 +13,8 @@ from impactlab.materials import PRESETS
 def materials(
     as_json: bool = typer.Option(False, "--json", help="Machine-readable output."),
 ) -> None:
-    """List the material presets (SI units; Brinell hardness in kgf/mm^2).
+    """List the material presets (E in GPa, yield strength in MPa, Brinell hardness in
+    kgf/mm^2; --json: SI).
 
     Example: impactlab materials --json
     """
@@ -22,17 +23,7 @@ def materials(
         emit(data, as_json=True)
         return
     for key, m in data.items():
-        emit(
-            {k: v for k, v in m.items()},
-            as_json=False,
-            title=key,
-            units={
-                "E": "Pa",
-                "yield_strength": "Pa",
-                "brinell_hardness": "kgf/mm^2",
-                "density": "kg/m^3",
-            },
-        )
+        emit(m, as_json=False, title=key)
     console.print(
         "Presets follow the paper's Table 1 with its unit corrections (see docs/physics/table1.md)."
     )

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import typer
 
+from impactlab._display import format_number
 from impactlab.experiment.checks import output_folder
 from impactlab.paper.quantities import duration_checks
 from impactlab.paper.reproduction import reproduce
@@ -28,7 +29,8 @@ def reproduce_cmd(
     res = reproduce(output_folder(out, "--out"), simulate=not no_simulate)
     for c in duration_checks(res.experimental):
         typer.echo(
-            f"{c.angle_deg} deg: T = {c.T_ms:.3f} ms (published {c.published_ms:.2f} ms, "
+            f"{c.angle_deg} deg: T = {format_number(c.T_ms)} ms (published "
+            f"{format_number(c.published_ms)} ms, "
             f"{c.rel_diff:+.1%}) {'ok' if c.ok else 'OFF'}"
         )
     bad = res.comparison[res.comparison["reproduced"] == False]  # noqa: E712
@@ -39,7 +41,7 @@ def reproduce_cmd(
     )
     if no_simulate:
         typer.echo("simulations skipped (--no-simulate): analytic part only")
-    typer.echo(f"report: {res.report_md} and {res.report_html} ({res.elapsed_s:.1f} s)")
+    typer.echo(f"report: {res.report_md} and {res.report_html} ({format_number(res.elapsed_s)} s)")
 
 
 def register(app: typer.Typer) -> None:

@@ -1,8 +1,11 @@
-"""``impactlab simulate``: one impact of a rod or sphere on a flat.
+"""``impactlab simulate``: one impact of a rod or sphere on a flat, or (``--flexible``) the
+drop of the flexible rod through ``impactlab.simulate(FlexibleRod(...))``.
 
 Every given value is used and checked (a zero mass is an error, never the paper's mass); a rod
-needs its angle, with a unit; options that do not apply to the body are refused. The result's
-warnings (``impactlab.flags``) go to stderr, one line each, and into ``--json``.
+needs its angle, with a unit; options that do not apply to the body are refused; ``--material``
+and ``--flat`` choose the material presets. The summary prints through ``impactlab._display``
+(the fields and display units of ``print(result)``), ``--json`` in SI (docs/json-schema.md). The
+result's warnings (``impactlab.flags``) go to stderr, one line each, and into ``--json``.
 """
 
 from __future__ import annotations
@@ -14,23 +17,29 @@ from pathlib import Path
 from typing import Any
 
 import typer
+from rich.text import Text
 
-from impactlab.bodies import PAPER_ROD, Rod, Sphere
+from impactlab._json import to_json
+from impactlab.bodies import PAPER_ROD, FlexibleRod, Rod, Sphere
+from impactlab.bodies.flexible_rod import DEFAULT_N_AXIAL, DEFAULT_N_BENDING
 from impactlab.cli._common import (
+    KINEMATIC_HELP,
+    SI_UNITS,
     UserError,
     angle_quantity,
     console,
     emit,
-    field_units,
     load_toml,
     positive,
     quantity,
 )
+from impactlab.cli.drop import RATE_CHOICES, flexible_rod, rate_name, report_drop
 from impactlab.dynamics import ImpactResult, simulate
+from impactlab.dynamics.drop_result import DropResult
 from impactlab.dynamics.plotting import save_figures
 from impactlab.experiment.checks import output_folder
-from impactlab.flags import ResultFlag
 from impactlab.friction import DEFAULT_MU
+from impactlab.materials import AISI_201, AISI_1010, Material, get_material
 
 _KEYS = (
     "body",
@@ -49,11 +58,26 @@ _KEYS = (
     "constant_angle",
     "rtol",
     "law_params",
+    "material",
+    "flat",
+    "flexible",
+    "modes_axial",
+    "modes_bending",
+    "damping",
+    "rate",
 )
 #: Options of a rod that a sphere does not have.
 _ROD_ONLY = ("angle", "length", "inertia", "constant_angle")
+#: Options of the flexible rod (``--flexible``) only.
+_FLEX_ONLY = ("modes_axial", "modes_bending", "damping", "rate")
+#: Options the flexible rod's drop does not have.
+_NOT_FLEX = ("inertia", "constant_angle", "law_params", "rtol")
 #: Command-line spelling of the keys whose option is not ``--<key>``.
-_FLAGS = {"gravity": "--no-gravity", "constant_angle": "--constant-angle"}
+_FLAGS = {
+    "gravity": "--no-gravity",
+    "constant_angle": "--constant-angle",
+    "flexible": "--flexible",
+}
 _MISSING_ANGLE = (
     'a rod needs its angle to the flat: give --angle with a unit, e.g. --angle "20 deg" or '
     '--angle "0.35 rad" (or angle = "20 deg" in the --config file)'
@@ -96,100 +120,156 @@ def _merge(config: dict[str, Any], cli: dict[str, Any], config_path: Path | None
     return _Options({**section, **given}, frozenset(given), str(config_path))
 
 
-def _body(opt: _Options) -> tuple[Rod | Sphere, float | None]:
+def _refuse(opt: _Options, keys: tuple[str, ...], why: str) -> None:
+    """A UserError naming the given options among ``keys`` (they do not apply: ``why``)."""
+    extra = [opt.label(k) for k in keys if opt.given(k)]
+    if extra:
+        them = "it" if len(extra) == 1 else "them"
+        raise UserError(f"{', '.join(extra)}: {why}; leave {them} out")
+
+
+def _material(opt: _Options, key: str, default: Material) -> Material:
+    value = opt.values.get(key)
+    if value is None:
+        return default
+    try:
+        return get_material(str(value).strip().lower())
+    except ValueError as exc:
+        raise UserError(f"{opt.label(key)}: {exc}") from None
+
+
+def _body(opt: _Options) -> tuple[Rod | Sphere | FlexibleRod, float | None]:
     """The body and the rod's angle [rad] (None for a sphere); defaults: the paper's rod."""
     kind = str(opt.values.get("body", "rod")).lower()
     if kind not in ("rod", "sphere"):
         raise UserError(f"body must be 'rod' or 'sphere', got {kind!r}")
+    material = _material(opt, "material", AISI_201)
+    flexible = opt.given("flexible")
+    if not flexible:
+        _refuse(
+            opt,
+            _FLEX_ONLY,
+            "only the flexible rod has modes or a rate-dependent flat (add --flexible)",
+        )
     if kind == "sphere":
-        extra = [opt.label(k) for k in _ROD_ONLY if opt.given(k)]
-        if extra:
-            raise UserError(
-                f"{', '.join(extra)}: a sphere has no angle, length or inertia; leave "
-                f"{'it' if len(extra) == 1 else 'them'} out (or simulate a rod)"
-            )
+        _refuse(
+            opt,
+            (*_ROD_ONLY, "flexible"),
+            "a sphere has no angle, length, inertia or modes (simulate a rod)",
+        )
         sphere = Sphere(
-            radius=opt.size_or("radius", "m", PAPER_ROD.tip_radius), mass=opt.size("mass", "kg")
+            radius=opt.size_or("radius", "m", PAPER_ROD.tip_radius),
+            mass=opt.size("mass", "kg"),
+            material=material,
         )
         return sphere, None
     if not opt.given("angle"):
         raise UserError(_MISSING_ANGLE)
-    rod = Rod(
-        length=opt.size_or("length", "m", PAPER_ROD.length),
-        tip_radius=opt.size_or("radius", "m", PAPER_ROD.tip_radius),
-        mass=opt.size_or("mass", "kg", PAPER_ROD.mass),
-        inertia=opt.size("inertia", "kg*m^2"),
-    )
-    return rod, angle_quantity(opt.values["angle"], opt.label("angle"))
+    angle = angle_quantity(opt.values["angle"], opt.label("angle"))
+    sizes = {
+        "length": opt.size_or("length", "m", PAPER_ROD.length),
+        "tip_radius": opt.size_or("radius", "m", PAPER_ROD.tip_radius),
+        "mass": opt.size_or("mass", "kg", PAPER_ROD.mass),
+    }
+    if flexible:
+        _refuse(
+            opt,
+            _NOT_FLEX,
+            "the flexible rod's inertia follows from its modes, and its lever arms move",
+        )
+        return flexible_rod(opt.values, sizes, material, opt.label), angle
+    return Rod(**sizes, material=material, inertia=opt.size("inertia", "kg*m^2")), angle
 
 
-def run_simulate(opt: _Options) -> ImpactResult:
-    """One impact from the merged options (SI after parsing)."""
+def run_simulate(opt: _Options) -> ImpactResult | DropResult:
+    """One impact (or, with ``--flexible``, the drop of the flexible rod) from the merged
+    options (SI after parsing)."""
     body, rod_angle = _body(opt)
     cfg = opt.values
     if cfg.get("vy") is None:
         raise UserError('--vy is required, e.g. --vy "-1.41 m/s"')
-    vyv = quantity(cfg.get("vy"), "m/s", opt.label("vy"))
-    vxv = quantity(cfg.get("vx", 0.0), "m/s", opt.label("vx"))
-    w = quantity(cfg.get("spin", 0.0), "rad/s", opt.label("spin"))
+    common: dict[str, Any] = {
+        "flat": _material(opt, "flat", AISI_1010),
+        "law": str(cfg.get("law", "ghaednia")),
+        "friction": str(cfg.get("friction", "coulomb")),
+        "mu": _mu(cfg.get("mu", DEFAULT_MU), opt.label("mu")),
+        "velocity": (
+            quantity(cfg.get("vx", 0.0), "m/s", opt.label("vx")) or 0.0,
+            quantity(cfg.get("vy"), "m/s", opt.label("vy")) or 0.0,
+        ),
+        "spin": quantity(cfg.get("spin", 0.0), "rad/s", opt.label("spin")) or 0.0,
+        "law_params": cfg.get("law_params"),
+        "gravity": bool(cfg.get("gravity", True)),
+        "rtol": cfg.get("rtol"),
+    }
+    if isinstance(body, FlexibleRod):  # the drop: a DropResult (contract C1)
+        rate = rate_name(str(cfg.get("rate", "none")), opt.label("rate"))
+        return simulate(body, angle=rod_angle, rate=rate, history=False, **common)
     return simulate(
         body,
-        law=str(cfg.get("law", "ghaednia")),
-        friction=str(cfg.get("friction", "coulomb")),
-        mu=float(cfg.get("mu", DEFAULT_MU)),
         angle=rod_angle,
-        velocity=(vxv or 0.0, vyv or 0.0),
-        spin=w or 0.0,
-        law_params=cfg.get("law_params"),
-        gravity=bool(cfg.get("gravity", True)),
         constant_angle=bool(cfg.get("constant_angle", False)),
-        rtol=cfg.get("rtol"),
+        **common,
     )
 
 
-def _flag_names(flags: int) -> str:
-    names = [str(f.name).lower() for f in ResultFlag if f.value and flags & f.value]
-    return ", ".join(names) or "none"
+def _mu(value: Any, name: str) -> float:
+    """The friction coefficient: a plain number (``impactlab.friction.DEFAULT_MU`` if not
+    given); the library checks its range."""
+    try:
+        if isinstance(value, bool):
+            raise TypeError(value)
+        return float(value)
+    except (TypeError, ValueError):
+        raise UserError(f"{name} must be a number, got {value!r}") from None
 
 
-def _report(result: ImpactResult, *, out: Path | None, as_json: bool, sphere: bool) -> None:
-    hidden = {"velocity_in", "velocity_out", *(("angle", "angle_out") if sphere else ())}
-    data = {k: v for k, v in result.to_dict().items() if k not in hidden}
-    data["vx_out"], data["vy_out"] = result.velocity_out
+def _report(
+    result: ImpactResult | DropResult, *, out: Path | None, as_json: bool, sphere: bool
+) -> None:
     for text in result.warnings:
         print(f"warning: {text}", file=sys.stderr)
+    if isinstance(result, DropResult):
+        report_drop(result, as_json=as_json)
+        return
+    hidden = ("angle", "angle_out") if sphere else ()
+    data = {k: v for k, v in result.to_dict().items() if k not in hidden}
     files: list[str] = []
     if out is not None:
         files = [str(p) for p in save_figures(result, out)]
-        (out / "impact_result.json").write_text(json.dumps(data, indent=2, default=str))
-        files.append(str(out / "impact_result.json"))
+        saved = out / "impact_result.json"
+        saved.write_text(json.dumps(to_json(data, SI_UNITS), indent=2))
+        files.append(str(saved))
     if as_json:
         emit({**data, "files": files}, as_json=True)
         return
-    table = {k: v for k, v in data.items() if k != "warnings"}
-    table["flags"] = _flag_names(int(data.get("flags", 0)))
-    emit(table, as_json=False, title="impact", units=field_units(table))
+    emit(result.summary(), as_json=False, title="impact")
     for f in files:
-        console.print(f"saved {f}")
+        console.print(Text(f"saved {f}"))
 
 
 #: Help of the options that are keys of the config file.
 _HELP = {
-    "angle": 'Rod angle to the flat with its unit, "20 deg" or "0.35 rad" (a rod needs it).',
-    "vy": 'Vertical velocity, e.g. "-1.41 m/s" (required).',
-    "vx": "Horizontal velocity (default 0).",
-    "spin": 'Angular velocity, e.g. "5 rad/s" (counter-clockwise positive; default 0).',
-    "law": "Contact law (default ghaednia).",
-    "friction": "impulse_ratio, coulomb (default) or mindlin.",
-    "inertia": 'Rod I_C, e.g. "0.0036 kg*m^2" (default m L^2/12).',
-    "radius": "Tip / sphere radius (default the paper's 8.8 mm).",
-    "length": "Rod length (default 0.3048 m).",
-    "mass": "Mass (rod default 0.4607 kg; sphere default from the density).",
+    **KINEMATIC_HELP,
+    "law": "Contact law, see 'impactlab laws' (default ghaednia).",
+    "friction": "Friction model: impulse_ratio, coulomb (default), mindlin or partial_slip.",
+    "inertia": 'Rod I_C, e.g. "0.0036 kg*m^2" (bare number: kg*m^2; default m L^2/12; rigid rod '
+    "only).",
+    "radius": "Tip / sphere radius, e.g. '8.8 mm' (bare number: m; default 8.8 mm, the paper's).",
+    "length": "Rod length, e.g. '304.8 mm' (bare number: m; default 0.3048 m).",
+    "mass": "Mass, e.g. '0.46 kg' (bare number: kg; rod default 0.4607 kg; sphere default from "
+    "the density).",
+    "material": "Material preset of the body, see 'impactlab materials' (default aisi-201).",
+    "flat": "Material preset of the flat, see 'impactlab materials' (default aisi-1010).",
+    "modes_axial": f"Flexible rod: axial modes (default {DEFAULT_N_AXIAL}, + 2 residual).",
+    "modes_bending": f"Flexible rod: bending modes (default {DEFAULT_N_BENDING}).",
+    "damping": "Flexible rod: modal damping ratio zeta of every mode, in [0, 1) (default 0).",
+    "rate": f"Flexible rod: rate-dependent flat, {', '.join(RATE_CHOICES)} (default none).",
 }
 
 
 def _option(key: str) -> Any:
-    return typer.Option(None, "--" + key, help=_HELP[key])
+    return typer.Option(None, "--" + key.replace("_", "-"), help=_HELP[key])
 
 
 def simulate_cmd(
@@ -199,7 +279,9 @@ def simulate_cmd(
     vx: str = _option("vx"),
     spin: str = _option("spin"),
     mu: float = typer.Option(
-        None, "--mu", help=f"Friction coefficient (default {DEFAULT_MU:g}, as in the Python API)."
+        None,
+        "--mu",
+        help=f"Friction coefficient (default {DEFAULT_MU:g}, as impactlab.simulate).",
     ),
     law: str = _option("law"),
     friction: str = _option("friction"),
@@ -207,15 +289,24 @@ def simulate_cmd(
     radius: str = _option("radius"),
     length: str = _option("length"),
     mass: str = _option("mass"),
+    material: str = _option("material"),
+    flat: str = _option("flat"),
     no_gravity: bool = typer.Option(False, "--no-gravity", help="Switch gravity off."),
     constant_angle: bool = typer.Option(
         False, "--constant-angle", help="Freeze the lever arms (paper's assumption; rod only)."
     ),
+    flexible: bool = typer.Option(
+        False, "--flexible", help="The flexible rod: its whole drop, every contact (rod only)."
+    ),
+    modes_axial: int = _option("modes_axial"),
+    modes_bending: int = _option("modes_bending"),
+    damping: float = _option("damping"),
+    rate: str = _option("rate"),
     config: Path = typer.Option(
         None, "--config", help="TOML file of these keys (or a 'simulate' table); options win."
     ),
     as_json: bool = typer.Option(
-        False, "--json", help="Machine-readable output (with the result's flags and warnings)."
+        False, "--json", help="Machine-readable output, SI (docs/json-schema.md)."
     ),
     plot: bool = typer.Option(
         False, "--plot", help="Save force-time, force-penetration, contact-path and dent figures."
@@ -224,17 +315,27 @@ def simulate_cmd(
         None, "--out", help="Folder for --plot and the JSON result (default: the current one)."
     ),
 ) -> None:
-    """Simulate one impact and print the result summary (SI units); warnings go to stderr.
+    """Simulate one impact and print its summary (display units: um, ms, deg; --json: SI);
+    warnings go to stderr.
 
-    Example: impactlab simulate rod --angle "20 deg" --vy "-1.41 m/s" --mu 0.2 --plot
+    Examples:
+
+      impactlab simulate rod --angle "20 deg" --vy "-1.41 m/s" --mu 0.2 --plot
+
+      impactlab simulate sphere --radius "5 mm" --vy "-1 m/s" --material aisi-1010
+
+      impactlab simulate rod --flexible --angle "20 deg" --vy "-1.41 m/s" --mu 0.2
     """
     # the options named like the config file's keys, as given (None: not given)
     cli = {k: v for k, v in locals().items() if k in _KEYS}
     cli["gravity"] = False if no_gravity else None
     cli["constant_angle"] = True if constant_angle else None
+    cli["flexible"] = True if flexible else None
     if out is not None and not plot:
         raise UserError("--out applies only with --plot (where to save the figures)")
     opt = _merge(load_toml(config), cli, config)
+    if plot and opt.given("flexible"):
+        raise UserError("--plot: the flexible rod's drop has no figures here; leave it out")
     folder = output_folder(Path(".") if out is None else out, "--out") if plot else None
     sphere = str(opt.values.get("body", "rod")).lower() == "sphere"
     _report(run_simulate(opt), out=folder, as_json=as_json, sphere=sphere)

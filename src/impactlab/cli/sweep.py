@@ -21,14 +21,16 @@ from typing import Annotated, Any
 import typer
 from typer.core import TyperGroup
 
-from impactlab.cli._common import UserError, emit
+from impactlab._display import field_row, format_number
+from impactlab._json import quantity as quantity_json
+from impactlab._json import to_json
+from impactlab.cli._common import UserError, emit, print_rows
 from impactlab.sweep import (
     Study,
     SweepResult,
     SweepSizeWarning,
     export_netcdf,
     flag_counts,
-    format_report,
     open_sweep,
     plot_sweep,
     run_sweep,
@@ -37,6 +39,7 @@ from impactlab.sweep import (
     uncertainty_reports,
 )
 from impactlab.sweep.backends import DEFAULT_WORKER_TIMEOUT
+from impactlab.sweep.display import steady_throughput, warm_up_s
 from impactlab.sweep.summary import format_flag_counts
 
 
@@ -90,10 +93,51 @@ def _print_uncertainty(
 ) -> None:
     reports = uncertainty_reports(ds, outputs, percentiles)
     if as_json:
-        print(json.dumps({k: r.to_dict() for k, r in reports.items()}, indent=2, default=float))
+        print(json.dumps({k: _uncertainty_json(r.to_dict()) for k, r in reports.items()}, indent=2))
         return
     for title, rep in reports.items():
-        print(format_report(rep, title=f"uncertainty: {title}"))
+        _print_report(rep.to_dict(), f"uncertainty: {title}")
+
+
+def _print_report(report: dict[str, Any], title: str) -> None:
+    """One uncertainty report in display units: per output its mean ± standard deviation and
+    its percentiles, then the inputs ranked by their influence (squared rank correlation)."""
+    rows = []
+    for rec in report["summary"]:
+        out, unit = str(rec.get("output")), str(rec.get("unit") or "1")
+        rows.append(field_row(out, rec.get("mean"), unit, rec.get("std")))
+        for key, value in rec.items():
+            if key.startswith("p") and isinstance(value, float):
+                _n, text, shown = field_row(out, value, unit)
+                rows.append((f"{out} {key}", text, shown))
+    n = f"{report['n_cases']} cases, {report['n_invalid']} excluded (status != 0)"
+    print_rows(rows, f"{title}: {n}; mean ± standard deviation, percentiles")
+    ranked: dict[str, list[str]] = {}
+    for r in report["sensitivity"]:
+        ranked.setdefault(str(r["output"]), []).append(
+            f"{r['input']} {format_number(r['rank_corr2'], 3)}"
+        )
+    if ranked:
+        print("sensitivity (squared Spearman rank correlation of each input with the output):")
+        for out, items in ranked.items():
+            print(f"  {out}: {', '.join(items)}")
+
+
+def _uncertainty_json(report: dict[str, Any]) -> dict[str, Any]:
+    """A report's JSON (docs/json-schema.md): per output, ``mean`` with the sample's standard
+    deviation as its sigma and each percentile as a quantity; the sensitivities (dimensionless)
+    as quantities of unit "1"."""
+    summary = []
+    for rec in report["summary"]:
+        unit = str(rec.get("unit") or "1")
+        row: dict[str, Any] = {"output": rec.get("output"), "n": rec.get("n")}
+        row["mean"] = quantity_json(rec.get("mean"), unit, rec.get("std"))
+        for key, value in rec.items():
+            if key not in ("output", "n", "mean", "std", "unit"):
+                row[key] = quantity_json(value, unit)
+        summary.append(row)
+    units = {"rank_corr2": "1", "src2": "1", "r2": "1"}
+    return {**to_json(report, units), "summary": summary}
 
 
 def _run_summary(
@@ -107,7 +151,8 @@ def _run_summary(
         "chunks_resumed": s.chunks_before,
         "chunks_computed": s.chunks_computed,
         "wall_time": s.wall_s,
-        "throughput": s.throughput,
+        "throughput": steady_throughput(s),  # after each worker's first task (the compile)
+        "first_task": warm_up_s(s),
         "backend": s.backend,
         "status": status_counts(ds),
     }
@@ -199,7 +244,6 @@ def run_cmd(
         _run_summary(res, ds, netcdf, files),
         as_json=as_json,
         title=f"sweep {res.study.name}",
-        units={"wall_time": "s", "throughput": "impacts/s"},
     )
 
 

@@ -11,11 +11,6 @@ from scipy.optimize import brentq
 from impactlab.contact import kernel_arrays as ka
 from impactlab.contact import kernels as k
 
-#: Ratio of the calibrated maximum interference to the critical interference used for the
-#: FEM-fitted laws (provisional, see docs/laws/index.md): Kogut & Etsion (2002) and the
-#: Jackson-Green family report FEM results up to delta/delta_c of about 110.
-FEM_RANGE_RATIO = 110.0
-
 
 def pair_constants(p: np.ndarray) -> tuple[float, float, float, float]:
     """(E* [Pa], R [m], S_y [Pa], nu) from a law's parameter vector ``p`` (``kernels.P_*``),

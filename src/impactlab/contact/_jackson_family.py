@@ -12,13 +12,9 @@ import numpy as np
 
 from impactlab.contact import kernel_arrays as ka
 from impactlab.contact import kernels as k
-from impactlab.contact._common import (
-    FEM_RANGE_RATIO,
-    jg_C,
-    jg_critical,
-    pair_constants,
-    switch_point,
-)
+from impactlab.contact._common import jg_C, jg_critical, pair_constants, switch_point
+from impactlab.contact.names import Law
+from impactlab.contact.ranges import calibrated_max
 from impactlab.materials import ContactPair
 
 
@@ -31,9 +27,11 @@ def fill_jackson_family(
     m: float,
     hardness_model: float,
     published: bool,
-    law_name: str,
+    law: Law,
 ) -> dict[str, float]:
-    """Fill slots 4..15 of ``p`` for a Jackson-Green-family law; return its details."""
+    """Fill slots 4..15 of ``p`` for the Jackson-Green-family law ``law``; return its details
+    (the calibrated range from ``contact.ranges``)."""
+    law_name = str(law)
     E, R, Sy, nu = pair_constants(p)
     C = jg_C(nu)
     dc, fc = jg_critical(E, R, Sy, nu)
@@ -71,5 +69,5 @@ def fill_jackson_family(
         "switch_force": float(k.loading_force(k.GHAEDNIA, p, d_sw)),
         "published_jump": jump,
         "full_contact_interference": d_full,
-        "calibrated_max_interference": min(FEM_RANGE_RATIO * dc, dlim),
+        "calibrated_max_interference": calibrated_max(law, dc, dlim),
     }

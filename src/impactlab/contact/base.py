@@ -11,10 +11,12 @@ from typing import Any, ClassVar
 
 import numpy as np
 
+from impactlab._html import law_html, law_repr
 from impactlab._validation import check_array, check_finite, check_nonnegative, check_positive
 from impactlab.contact import kernel_arrays as ka
 from impactlab.contact import kernels as k
 from impactlab.contact.names import Law
+from impactlab.contact.ranges import LawRange, critical_interference, law_extrapolated, law_range
 from impactlab.materials import ContactPair
 from impactlab.references import Reference
 from impactlab.units import is_quantity
@@ -140,6 +142,22 @@ class ContactModel:
         """
         return float(self.details.get("calibrated_max_interference", math.inf))
 
+    @property
+    def critical_interference(self) -> float:
+        """Reference interference of the law's fitted range [m] (its first-yield interference;
+        for Hertz the Jackson-Green delta_c of the pair): ``contact.ranges``."""
+        return float(critical_interference(self.law_id, self.params))
+
+    @property
+    def fitted_range(self) -> LawRange:
+        """The law's fitted range, its source and confirmation status (``contact.ranges``)."""
+        return law_range(self.name)
+
+    def extrapolated(self, delta_max: Any) -> Any:
+        """True where an impact reaching ``delta_max`` [m] leaves the fitted range (a bool, or a
+        bool array for an array): ``contact.ranges.law_extrapolated``."""
+        return law_extrapolated(self, delta_max)
+
     def in_calibrated_range(self, delta: Any) -> bool:
         """True when every interference in ``delta`` lies within the calibrated range."""
         return bool(np.all(np.asarray(delta, dtype=float) <= self.calibrated_max_interference))
@@ -194,7 +212,6 @@ class ContactLaw(ABC):
     title: ClassVar[str]
     reference: ClassVar[str]
     validity: ClassVar[str]
-    calibrated_range: ClassVar[str] = "not stated"
     parameters: ClassVar[tuple[Parameter, ...]] = ()
 
     def __init_subclass__(cls, **kwargs: Any) -> None:
@@ -291,6 +308,17 @@ class ContactLaw(ABC):
         ``values`` (NaN means "default from the pair"). Return derived numbers for ``details``
         (at least ``calibrated_max_interference`` where the law has one)."""
 
+    @property
+    def calibrated_range(self) -> str:
+        """The fitted range in one line (``contact.ranges.LawRange.text``)."""
+        return law_range(self.law).text
+
+    def __repr__(self) -> str:
+        return law_repr(self.describe())
+
+    def _repr_html_(self) -> str:
+        return law_html(self.describe())
+
     def describe(self) -> dict[str, Any]:
         """The law's metadata as plain data (used by ``impactlab laws``)."""
         return {
@@ -305,6 +333,7 @@ class ContactLaw(ABC):
             ],
             "validity": self.validity,
             "calibrated_range": self.calibrated_range,
+            "fitted_range": law_range(self.law).describe(),
             "parameters": [
                 {
                     "name": q.name,

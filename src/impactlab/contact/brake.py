@@ -91,7 +91,6 @@ class Brake(ContactLaw):
         "Eq. 24 must be monotone (checked at build); hard limit delta = R/2 (a = sqrt(2 R delta)"
         " reaches R)"
     )
-    calibrated_range = "none stated (analytical transition, validated against impact experiments)"
     parameters = (
         Parameter(
             "hardness",

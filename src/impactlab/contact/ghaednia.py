@@ -44,10 +44,6 @@ class Ghaednia(ContactLaw):
         "elastic-perfectly plastic sphere on a flat, frictionless, quasi-static; hard limit: the "
         "fitted contact radius reaches R (delta^(1+B) = R (1.9 delta_c)^B) or delta = R"
     )
-    calibrated_range = (
-        "provisional: delta <= 110 delta_c (FEM range of the Jackson-Green family; not checked "
-        "against the original paper)"
-    )
     parameters = (
         Parameter(
             "published_switch",
@@ -68,5 +64,5 @@ class Ghaednia(ContactLaw):
             m=1.1,
             hardness_model=k.JG_HARDNESS_GHAEDNIA,
             published=published,
-            law_name=self.name,
+            law=self.law,
         )

@@ -17,6 +17,7 @@ from impactlab.contact import kernels as k
 from impactlab.contact._common import jg_critical, pair_constants
 from impactlab.contact.base import ContactLaw
 from impactlab.contact.names import Law
+from impactlab.contact.ranges import calibrated_max
 from impactlab.materials import ContactPair
 
 
@@ -25,11 +26,15 @@ class Hertz(ContactLaw):
     title = "Hertz (elastic)"
     reference = "Hertz, J. reine angew. Math. 92 (1882) 156; Johnson, Contact Mechanics (1985)"
     validity = "elastic, frictionless, delta <= R (small-strain theory: delta << R)"
-    calibrated_range = "exact within linear elasticity: up to first yield, delta_c (Green 2005)"
 
     def _fill(self, p: np.ndarray, pair: ContactPair, values: dict[str, float]) -> dict[str, float]:
         p[k.P_DY] = math.inf
         p[k.P_FY] = math.inf
         p[k.P_DSW] = math.inf
-        dc, fc = jg_critical(*pair_constants(p))
-        return {"delta_c": dc, "F_c": fc, "calibrated_max_interference": dc}
+        E, R, Sy, nu = pair_constants(p)
+        dc, fc = jg_critical(E, R, Sy, nu)
+        return {
+            "delta_c": dc,
+            "F_c": fc,
+            "calibrated_max_interference": calibrated_max(self.law, dc, R),
+        }

@@ -42,10 +42,6 @@ class JacksonGreen(ContactLaw):
         "elastic-perfectly plastic hemisphere on a rigid flat, frictionless, quasi-static; hard "
         "limit: the fitted contact radius reaches R or delta = R"
     )
-    calibrated_range = (
-        "provisional: delta <= 110 delta_c (FEM range as commonly quoted; not checked against "
-        "the original paper)"
-    )
     parameters = (
         Parameter(
             "published_switch",
@@ -74,5 +70,5 @@ class JacksonGreen(ContactLaw):
             m=1.0,
             hardness_model=k.JG_HARDNESS_JG2005,
             published=published,
-            law_name=self.name,
+            law=self.law,
         )

@@ -35,7 +35,6 @@ from scipy.optimize import minimize_scalar
 from impactlab.contact import kernel_arrays as ka
 from impactlab.contact import kernels as k
 from impactlab.contact._common import (
-    FEM_RANGE_RATIO,
     check_switch,
     curves,
     pair_constants,
@@ -43,6 +42,7 @@ from impactlab.contact._common import (
 )
 from impactlab.contact.base import ContactLaw, Parameter
 from impactlab.contact.names import Law
+from impactlab.contact.ranges import calibrated_max
 from impactlab.materials import ContactPair
 
 
@@ -58,10 +58,6 @@ class KogutKomvopoulos(ContactLaw):
     validity = (
         "rigid sphere indenting an elastic-perfectly plastic half-space, frictionless; hard "
         "limit: minimum of F/F_elastic of Eq. 21 (before the pole of its denominator) or R"
-    )
-    calibrated_range = (
-        "provisional: delta <= 110 delta_y (FEM range of that period's sphere-flat studies; not "
-        "checked against the original paper)"
     )
     parameters = (
         Parameter(
@@ -129,5 +125,5 @@ class KogutKomvopoulos(ContactLaw):
             "published_jump": jump,
             "residual_ratio": res,
             "pole_interference": d_pole,
-            "calibrated_max_interference": min(FEM_RANGE_RATIO * dy, dlim),
+            "calibrated_max_interference": calibrated_max(self.law, dy, dlim),
         }

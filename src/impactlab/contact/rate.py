@@ -75,20 +75,26 @@ RATE_REFERENCES: dict[str, Reference] = {
         "G. R. Cowper, P. S. Symonds, Strain-hardening and strain-rate effects in the impact "
         "loading of cantilever beams, Tech. Rep. No. 28, Division of Applied Mathematics, "
         "Brown University (1957)",
+        note="title, authors, report number (No. 28, contract Nonr-562(10)) and date (September "
+        "1957) confirmed against a scan of the report (DTIC AD144762); a report: no DOI",
     ),
     "jones-1989": Reference(
         "jones-1989",
         "N. Jones, Structural Impact, Cambridge University Press (1989) (Cowper-Symonds "
         "constants for mild steel)",
+        note="book; table and equation numbers not confirmed, none cited",
     ),
     "johnson-cook-1983": Reference(
         "johnson-cook-1983",
         "G. R. Johnson, W. H. Cook, A constitutive model and data for metals subjected to large "
         "strains, high strain rates and high temperatures, Proc. 7th Int. Symp. on Ballistics, "
         "The Hague (1983) 541-547",
+        note="proceedings paper, no DOI; pages as commonly cited, not confirmed here",
     ),
     "tabor-1951": Reference(
-        "tabor-1951", "D. Tabor, The Hardness of Metals, Clarendon Press, Oxford (1951)"
+        "tabor-1951",
+        "D. Tabor, The Hardness of Metals, Clarendon Press, Oxford (1951)",
+        note="book, no DOI; chapter not confirmed",
     ),
 }
 

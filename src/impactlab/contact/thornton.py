@@ -92,7 +92,6 @@ class Thornton(ContactLaw):
         "elastic-perfectly plastic sphere, Hertzian pressure truncated at p_y, a^2 = R delta "
         "kept after yield (small deformations); hard limit delta = R"
     )
-    calibrated_range = "analytical model, no fitted range (validated against FEM by later work)"
     parameters = (
         Parameter(
             "limit_pressure_ratio",

@@ -14,11 +14,12 @@ import numpy as np
 from impactlab._validation import check_array
 from impactlab.bodies import NB
 from impactlab.contact.kernels import N_LAWS, NPARAM
+from impactlab.contact.ranges import extrapolation_flags
 from impactlab.dynamics.checks import check_rtol, gravity_value
 from impactlab.dynamics.core.batch import impact_batch
 from impactlab.dynamics.core.layout import N_OUT, OUTPUT_FIELDS
 from impactlab.dynamics.core.status import REGIME_NAMES, STATUS_MESSAGES
-from impactlab.friction import FRICTION_IDS
+from impactlab.friction import FRICTION_IDS, PARTIAL_SLIP, batch_friction_error
 
 __all__ = ["FRICTION_IDS", "OUTPUT_FIELDS", "REGIME_NAMES", "STATUS_MESSAGES", "run_arrays"]
 
@@ -58,7 +59,9 @@ def run_arrays(
     diagnostic outputs (energy_rise, friction_excess; NaN otherwise).
 
     Returns ``(out, status)``: out (N, len(OUTPUT_FIELDS)) float64, status (N,) int32
-    (0 = ok; ``STATUS_MESSAGES``). The ``regime`` column holds codes (``REGIME_NAMES``).
+    (0 = ok; ``STATUS_MESSAGES``). The ``regime`` column holds codes (``REGIME_NAMES``); the
+    ``flags`` column the ``ResultFlag`` bits, LAW_EXTRAPOLATED added here from each case's
+    delta_max / delta_c and the law's fitted range (``impactlab.contact.ranges``).
     """
     try:
         lid = int(law_id)
@@ -70,6 +73,8 @@ def run_arrays(
         fid = int(friction_id)
     except (TypeError, ValueError):
         raise ValueError(f"friction_id must be an integer, got {friction_id!r}") from None
+    if fid == PARTIAL_SLIP:
+        raise ValueError(batch_friction_error("partial_slip"))
     if fid not in FRICTION_IDS.values():
         raise ValueError(f"friction_id must be one of {FRICTION_IDS}, got {friction_id!r}")
     init = check_array("initial", initial)
@@ -97,4 +102,18 @@ def run_arrays(
         impact_batch(
             lid, lp, fid, bp, init, mu_a, g, bool(constant_angle), r, bool(diagnostics), out, status
         )
+        _mark_extrapolated(lid, lp, out)
     return out, status
+
+
+_DMAX, _FLAGS = OUTPUT_FIELDS.index("delta_max"), OUTPUT_FIELDS.index("flags")
+
+
+def _mark_extrapolated(law_id: int, law_params: np.ndarray, out: np.ndarray) -> None:
+    """Add ``LAW_EXTRAPOLATED`` to the ``flags`` column where a case's delta_max / delta_c
+    exceeds the law's fitted range (``contact.ranges``; vectorised, failed cases untouched)."""
+    done = np.isfinite(out[:, _FLAGS])
+    extra = extrapolation_flags(law_id, law_params, np.where(done, out[:, _DMAX], np.nan))
+    out[done, _FLAGS] = (
+        out[done, _FLAGS].astype(np.int64) | np.broadcast_to(extra, done.shape)[done]
+    )

@@ -152,6 +152,51 @@ def _approach(body: Rod | Sphere, th: float, vx: float, vy: float, w: float) -> 
     return vn
 
 
+#: Plain Python numbers of the fast path of ``check_impact`` (bool is not one of them).
+_PLAIN = (float, int)
+
+
+def _plain(value: Any) -> bool:
+    """True for a finite plain Python float or int (never a bool, string or Quantity)."""
+    return type(value) in _PLAIN and math.isfinite(value)
+
+
+def _plain_inputs(
+    body: Any,
+    flat: Any,
+    angle: Any,
+    velocity: Any,
+    spin: Any,
+    mu: Any,
+    gravity: Any,
+    rtol: Any,
+    constant_angle: Any,
+) -> tuple[float, float, float, float, float, float, float] | None:
+    """(angle, vx, vy, spin, mu, gravity, rtol) when every input is a plain, valid value (a
+    Rod with a finite angle in (0, pi/2], a tuple of two numbers, ...); None sends the inputs
+    through the full checks (units, messages). The same values as the full checks."""
+    if not (
+        type(body) is Rod
+        and isinstance(flat, Material)
+        and type(velocity) is tuple
+        and len(velocity) == 2
+        and _plain(angle)
+        and 0.0 < angle <= 0.5 * math.pi + 1e-12
+        and _plain(velocity[0])
+        and _plain(velocity[1])
+        and _plain(spin)
+        and _plain(mu)
+        and mu >= 0.0
+        and type(constant_angle) is bool
+        and (gravity is True or gravity is False)
+        and (rtol is None or (_plain(rtol) and RTOL_RANGE[0] <= rtol <= RTOL_RANGE[1]))
+    ):
+        return None
+    g = G0 if gravity else 0.0
+    r = DEFAULT_RTOL if rtol is None else float(rtol)
+    return float(angle), float(velocity[0]), float(velocity[1]), float(spin), float(mu), g, r
+
+
 def check_impact(
     body: Any,
     flat: Any,
@@ -168,6 +213,23 @@ def check_impact(
     rtol: Any,
 ) -> ImpactInputs:
     """All the inputs of one impact (``simulate``'s arguments) checked and in SI."""
+    fast = _plain_inputs(body, flat, angle, velocity, spin, mu, gravity, rtol, constant_angle)
+    if fast is not None:
+        th, vx, vy, w, m, g, r = fast
+        return ImpactInputs(
+            body=body,
+            flat=flat,
+            model=contact_model(body, flat, law, law_params),
+            friction=get_friction(friction),
+            mu=m,
+            angle=th,
+            velocity=(vx, vy),
+            spin=w,
+            gravity=g,
+            rtol=r,
+            constant_angle=constant_angle,
+            vn=_approach(body, th, vx, vy, w),
+        )
     body = check_body(body)
     th = check_angle(angle, body)
     vx, vy = check_velocity(velocity)

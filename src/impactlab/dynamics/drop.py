@@ -21,9 +21,11 @@ import numpy as np
 from impactlab._validation import check_finite, check_nonnegative, check_positive
 from impactlab.bodies import Rod
 from impactlab.bodies.flexible_rod import FlexibleRod
+from impactlab.bodies.layout import BP_GSTAR
 from impactlab.bodies.modal import MODAL_REFERENCES
 from impactlab.contact import ContactModel
 from impactlab.contact.kernels import loading_contact_radius
+from impactlab.contact.ranges import extrapolation, law_extrapolated
 from impactlab.contact.rate import RateFactor, get_rate_law, rate_materials, self_consistent_factor
 from impactlab.dynamics.checks import (
     check_angle,
@@ -32,21 +34,24 @@ from impactlab.dynamics.checks import (
     check_velocity,
     gravity_value,
 )
+from impactlab.dynamics.core.quality import energy_gained, gravity_dominated
 from impactlab.dynamics.drop_result import ContactRecord, DentRecord, DropHistory, DropResult
 from impactlab.dynamics.flexcore import drop
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.model import constants, model_tuple
 from impactlab.dynamics.models import (
+    body_params,
     build_contact_model,
     contact_model,
     kernel_params,
     references_used,
 )
-from impactlab.friction import DEFAULT_MU, FrictionKind, get_friction
+from impactlab.flags import ResultFlag
+from impactlab.friction import DEFAULT_MU, FrictionKind, FrictionModel, get_friction
 from impactlab.materials import AISI_1010, Material
 from impactlab.references import Reference
 
-__all__ = ["DEFAULT_T_MAX", "STOP_MODES", "simulate_drop"]
+__all__ = ["DEFAULT_T_MAX", "DROP_FRICTION", "STOP_MODES", "DropError", "simulate_drop"]
 
 #: Longest simulated time after the first touch [s] (a sequence still going is an error).
 DEFAULT_T_MAX = 0.5
@@ -106,13 +111,15 @@ def _check_body(body: Any) -> FlexibleRod | Rod:
     return body
 
 
-def _check_friction(friction: str, mu: float) -> tuple[Any, float]:
+#: The friction models of the drop integrator (``impactlab.dynamics.flexcore.friction``).
+DROP_FRICTION = (FrictionKind.IMPULSE_RATIO, FrictionKind.COULOMB, FrictionKind.MINDLIN)
+
+
+def _check_friction(friction: str, mu: float) -> tuple[FrictionModel, float]:
     fric = get_friction(friction)
-    if fric.kind != FrictionKind.COULOMB:
-        raise ValueError(
-            f"friction: the drop integrator implements the 'coulomb' model only, got "
-            f"{friction!r} (with mu = 0 the model does not matter)"
-        )
+    if fric.kind not in DROP_FRICTION:
+        names = ", ".join(repr(str(k)) for k in DROP_FRICTION)
+        raise ValueError(f"friction: the drop integrator implements {names}, got {friction!r}")
     return fric, check_nonnegative("mu", mu)
 
 
@@ -123,7 +130,15 @@ def _check_stop(stop: Any, t_max: Any) -> tuple[float, int]:
     return check_positive("t_max", t_max, "s"), STOP_MODES.index(stop)
 
 
-def _status_error(status: int, model: ContactModel) -> ValueError:
+class DropError(ValueError):
+    """A drop whose integration failed; ``status`` is its code (``flexcore.layout.ST_*``)."""
+
+    def __init__(self, message: str, status: int) -> None:
+        super().__init__(message)
+        self.status = status
+
+
+def _status_error(status: int, model: ContactModel) -> DropError:
     """The ValueError of a failed drop (``layout.ST_*``)."""
     text = F.STATUS_MESSAGES.get(status, f"status {status}")
     hints = {
@@ -131,7 +146,7 @@ def _status_error(status: int, model: ContactModel) -> ValueError:
         "the impact velocity or choose another law",
         F.ST_TMAX: ": raise t_max",
     }
-    return ValueError(f"drop: {text}{hints.get(status, '')}")
+    return DropError(f"drop: {text}{hints.get(status, '')}", status)
 
 
 @dataclass(frozen=True)
@@ -147,16 +162,20 @@ def _run(
     bm: _BodyModel,
     model: ContactModel,
     state: tuple[float, float, float, float],
-    mu: float,
+    friction: tuple[int, float, float],
     g: float,
     options: tuple[float, float, int, bool],
 ) -> _Run:
-    """One compiled drop. state = (angle, vx, vy, spin); options = (rtol, t_max, stop, history)."""
+    """One compiled drop. state = (angle, vx, vy, spin); friction = (id, mu, G* [Pa]);
+    options = (rtol, t_max, stop, history)."""
     angle, vx, vy, w = state
+    fid, mu, gstar = friction
     rtol, t_max, stop, history = options
     rod = bm.rigid
     p = kernel_params(model)
-    c = constants(rod.half_length, rod.tip_radius, rod.mass, bm.inertia, g, angle, mu, p)
+    c = constants(
+        rod.half_length, rod.tip_radius, rod.mass, bm.inertia, g, angle, mu, p, fid, gstar
+    )
     mdl = model_tuple(model.law_id, p, c, bm.omega, bm.zeta, bm.U, bm.W, bm.Psi, bm.geometric)
     out = np.empty(F.N_OUT)
     contacts = np.zeros((F.MAX_CONTACTS, F.NCR))
@@ -205,6 +224,25 @@ def _rate_model(
     return build(factor.k), factor
 
 
+def _flags(
+    o: dict[str, Any], e0: float, m: float, g: float, rtol: float, model: ContactModel
+) -> ResultFlag:
+    """The result flags of a finished sequence (docs/flexible.md, "Flags"): the rigid engine's
+    criteria (``impactlab.dynamics.core.quality``) on the state after the last contact, the
+    vibration energy counted with the kinetic energy, and on the sequence's duration and total
+    normal impulse; the law's fitted range (``contact.ranges.law_extrapolated``, contract C2)
+    on the largest interference of the sequence."""
+    e_end = o["rigid_kinetic_energy"] + o["vibration_energy"]
+    flags = ResultFlag.NONE
+    if law_extrapolated(model, o["delta_max"]):
+        flags |= ResultFlag.LAW_EXTRAPOLATED
+    if energy_gained(e0, e_end, o["potential_energy"], rtol):
+        flags |= ResultFlag.ENERGY_GAIN
+    if gravity_dominated(m * g * o["duration"], o["normal_impulse"]):
+        flags |= ResultFlag.GRAVITY_DOMINATED
+    return flags
+
+
 def _result(
     r: _Run,
     bm: _BodyModel,
@@ -217,6 +255,8 @@ def _result(
     m = bm.rigid.mass
     vx, vy = inputs["velocity_in"]
     e0 = 0.5 * m * (vx * vx + vy * vy) + 0.5 * bm.inertia * inputs["spin_in"] ** 2
+    rtol = inputs.pop("rtol")
+    ratio, ratio_max = extrapolation(model.law_id, model.params, o["delta_max"])
     skip = {"vx_out", "vy_out", "n_contacts", "next_end", "n_steps", "n_jumps", "n_dents"}
     skip |= {"t_final"}
     return DropResult(
@@ -234,6 +274,9 @@ def _result(
         rate_factor=rate[1].k if rate[1] is not None else 1.0,
         strain_rate=rate[1].strain_rate if rate[1] is not None else math.nan,
         history=DropHistory(r.history) if r.history is not None else None,
+        flags=_flags(o, e0, m, inputs["gravity"], rtol, model),
+        max_delta_ratio=ratio,
+        delta_ratio_max=ratio_max,
         references=references,
         **inputs,
         **{k: v for k, v in o.items() if k not in skip},
@@ -261,16 +304,16 @@ def simulate_drop(
     """Simulate the drop of ``body`` on ``flat`` from the first touch of its tip (end 0, at
     delta = 0, undeformed, modes at rest) until it leaves the flat for good (SI units).
 
-    body: a FlexibleRod, or a rigid Rod (the rigid limit: no modes); flat: the flat's material;
-    law: a registered law name (or a ContactModel; no ``rate`` then); friction: ``"coulomb"``
-    (the only model of the drop integrator); mu >= 0; angle [rad] in (0, pi/2]; velocity
-    (vx, vy) of the centre of mass at first touch [m/s]; spin [rad/s]; gravity: True, False or
-    a value [m/s^2]; rate: None, ``"cowper-symonds"`` or ``"johnson-cook"`` (the flat's yield
-    strength raised by the self-consistent rate factor, ``impactlab.contact.rate``); rtol:
-    relative tolerance (default 1e-7); history: keep the time history; law_params: the law's
-    parameters; stop: ``"sequence"`` (stop when the tip is clear until the other end could
-    land: that is a new impact, ``next_end`` / ``next_time``) or ``"flight"`` (go on through
-    the other end's impacts); t_max [s]: the longest simulated time.
+    body: a FlexibleRod, or a rigid Rod (the rigid limit: no modes); flat: the flat's material; law:
+    a registered law name (or a ContactModel; no ``rate`` then); friction: ``"coulomb"``,
+    ``"impulse_ratio"`` or ``"mindlin"`` (set at every touch, as in the rigid engine); mu >= 0;
+    angle [rad] in (0, pi/2]; velocity (vx, vy) of the centre of mass at first touch [m/s]; spin
+    [rad/s]; gravity: True, False or a value [m/s^2]; rate: None, ``"cowper-symonds"`` or
+    ``"johnson-cook"`` (the flat's yield strength raised by the self-consistent rate factor,
+    ``impactlab.contact.rate``); rtol: relative tolerance (default 1e-7); history: keep the time
+    history; law_params: the law's parameters; stop: ``"sequence"`` (stop when the tip is clear
+    until the other end could land: that is a new impact, ``next_end`` / ``next_time``) or
+    ``"flight"`` (go on through the other end's impacts); t_max [s]: the longest simulated time.
 
     Returns a DropResult: every contact, the dents, the totals, the energy balance, the
     history if asked, the references. ValueError for invalid input or a failed integration.
@@ -281,7 +324,7 @@ def simulate_drop(
     fric, mu_v = _check_friction(friction, mu)
     th = check_angle(angle, bm.rigid)
     vx, vy = check_velocity(velocity)
-    w = check_finite("spin", spin)
+    w = check_finite("spin", spin, "rad/s")
     g = gravity_value(gravity)
     options = (check_rtol(rtol if rtol is not None else F.DEFAULT_RTOL), *_check_stop(stop, t_max))
     vn0 = vy - w * bm.rigid.half_length * math.cos(th)
@@ -291,8 +334,11 @@ def simulate_drop(
             f"vy - spin * (L/2) cos(angle) = {vn0!r} m/s must be < 0)"
         )
 
+    gstar = float(body_params(bm.rigid, flat)[BP_GSTAR])
+    friction_in = (fric.friction_id, mu_v, gstar)
+
     def run(model: ContactModel, record: bool = False) -> _Run:
-        return _run(bm, model, (th, vx, vy, w), mu_v, g, (*options, record))
+        return _run(bm, model, (th, vx, vy, w), friction_in, g, (*options, record))
 
     model, factor = _rate_model(rate, law, bm.rigid, flat, law_params, run, vn0)
     r = run(model, bool(history))
@@ -302,6 +348,6 @@ def simulate_drop(
     if factor is not None:
         refs += get_rate_law(rate).references
     inputs = {"friction": fric.name, "mu": mu_v, "angle": th, "velocity_in": (vx, vy)}
-    inputs |= {"spin_in": w, "gravity": g}
+    inputs |= {"spin_in": w, "gravity": g, "rtol": options[0]}
     name = get_rate_law(rate).name if rate is not None else None
     return _result(r, bm, model, inputs, (name, factor), tuple(dict.fromkeys(refs)))

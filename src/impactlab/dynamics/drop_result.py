@@ -17,6 +17,7 @@ import numpy as np
 from impactlab._display import html_table
 from impactlab._json import jsonable
 from impactlab.dynamics.flexcore import layout as F
+from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
 from impactlab.references import Reference
 from impactlab.references import dois as doi_list
 
@@ -35,6 +36,10 @@ UNITS: dict[str, str] = {f.name: f.unit for f in F.DROP_FIELDS} | {
     "mu": "1",
     "rate_factor": "1",
     "strain_rate": "1/s",
+    "mean_force": "N",
+    "flags": "1",
+    "max_delta_ratio": "1",
+    "delta_ratio_max": "1",
 }
 
 
@@ -182,6 +187,7 @@ _SUMMARY: dict[str, tuple[str, str, float]] = {
     "sliding_length": ("sliding length (tip)", "um", 1e6),
     "duration": ("duration (first touch to last separation)", "ms", 1e3),
     "max_force": ("largest normal force", "N", 1.0),
+    "mean_force": ("mean force (P_n / duration)", "N", 1.0),
     "spin_out": ("spin after the last contact", "rad/s", 1.0),
     "vibration_energy": ("energy left in vibration", "J", 1.0),
     "energy_error": ("energy balance error (relative)", "", 1.0),
@@ -192,14 +198,34 @@ _SUMMARY: dict[str, tuple[str, str, float]] = {
 class DropResult:
     """The outcome of one drop (SI units; units of the fields in ``UNITS``). Immutable.
 
-    Totals: ``e`` is the tip's rigid-body normal velocity after the last contact over the one
-    before the first, with the gravity impulse of the sequence removed (as a ballistic fit of
-    marker data would remove it; ``e_raw`` keeps it); velocities and spin are those of the
-    floating frame after the last contact; ``duration`` runs from the first touch to the last
-    separation; ``delta_p`` is the deepest dent's permanent depth; ``scar_length`` the x-extent
-    of the tip's contact-point path over all its contacts. Energy balance (``energy_balance``):
-    rigid kinetic + vibration + potential - initial = work_normal + work_friction +
-    work_damping, to ``energy_error`` of the initial energy.
+    It carries the summary attributes of ``ImpactResult`` (``impactlab.simulate`` returns it
+    for a FlexibleRod), each read for the whole sequence of contacts:
+
+    - ``e``: the tip's rigid-body normal velocity after the last contact over the one before
+      the first, with the gravity impulse of the sequence removed (as a ballistic fit of
+      marker data would remove it; ``e_raw`` keeps it);
+    - ``delta_p``: the final dent depth (the deepest dent's permanent depth);
+    - ``sliding_length``: the tip's total slip, the sum over its contacts of int v_t dt
+      (signed, as ImpactResult's); ``scar_length``: the x-extent of the mark the tip left
+      over all its contacts; ``slip_path``: the sum of int |v_t| dt;
+    - ``duration``: first touch to last separation (flights between contacts included);
+    - ``mean_force``: total normal impulse / duration (the paper's F_mean = P_n / T read over
+      the sequence);
+    - ``delta_max``, ``max_force``: the largest interference and normal force of any contact;
+    - ``flags`` / ``warnings`` / ``ok``: as ImpactResult's (``impactlab.flags``): ENERGY_GAIN
+      when the energy after the last contact (rigid kinetic + vibration + potential) exceeds
+      the initial one beyond the tolerance of the rigid engine's criterion
+      (``impactlab.flags.ENERGY_GAIN_RTOL_FACTOR`` rtol + ``ENERGY_ROUNDOFF``, relative to
+      E0 + the final kinetic, vibration and |potential| energy), GRAVITY_DOMINATED when
+      m g duration exceeds ``GRAVITY_IMPULSE_RATIO`` of the total normal impulse,
+      LAW_EXTRAPOLATED when the largest interference of the sequence left the law's fitted
+      range (``impactlab.contact.ranges``; ``max_delta_ratio`` = delta_max / delta_ref and the
+      law's ``delta_ratio_max``);
+    - ``references`` / ``dois()``: the sources used.
+
+    Velocities and spin are those of the floating frame after the last contact. Energy balance
+    (``energy_balance``): rigid kinetic + vibration + potential - initial = work_normal +
+    work_friction + work_damping, to ``energy_error`` of the initial energy.
     """
 
     contacts: tuple[ContactRecord, ...]
@@ -244,8 +270,35 @@ class DropResult:
     rate: str | None = None
     rate_factor: float = 1.0
     strain_rate: float = math.nan
+    flags: ResultFlag = ResultFlag.NONE
+    max_delta_ratio: float = math.nan
+    delta_ratio_max: float = math.inf
     history: DropHistory | None = field(default=None, repr=False)
     references: tuple[Reference, ...] = field(default=(), repr=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "flags", ResultFlag(int(self.flags)))
+
+    @property
+    def mean_force(self) -> float:
+        """Total normal impulse over the duration, first touch to last separation [N]."""
+        return self.normal_impulse / self.duration
+
+    @property
+    def extrapolated(self) -> bool:
+        """True when a contact of the drop left the law's fitted range."""
+        return ResultFlag.LAW_EXTRAPOLATED in self.flags
+
+    @property
+    def warnings(self) -> tuple[str, ...]:
+        """One explanatory sentence per flag (``impactlab.flags.messages``); ``()`` if none."""
+        return messages(self.flags, extrapolation=(self.max_delta_ratio, self.delta_ratio_max))
+
+    @property
+    def ok(self) -> bool:
+        """True unless a flag says the totals are not meaningful (as ImpactResult's:
+        LAW_EXTRAPOLATED, an advisory flag, leaves it True)."""
+        return int(self.flags) & ~ADVISORY_FLAGS == 0
 
     @property
     def energy_balance(self) -> dict[str, float]:
@@ -279,6 +332,9 @@ class DropResult:
             d[f.name] = getattr(self, f.name)
         d["contacts"] = [c.__dict__ for c in self.contacts]
         d["dents"] = [x.__dict__ for x in self.dents]
+        d["flags"] = int(self.flags)
+        d["warnings"] = list(self.warnings)
+        d["mean_force"] = self.mean_force
         d["energy_balance"] = self.energy_balance
         d["references"] = [str(r) for r in self.references]
         if include_history and self.history is not None:
@@ -296,7 +352,8 @@ class DropResult:
             (f"contact {i + 1} (end {c.end})", _contact_text(c), "")
             for i, c in enumerate(self.contacts)
         ]
-        return [(a, b, "") for a, b in setup] + totals + per_contact
+        warn = [("warning", text, "") for text in self.warnings]
+        return [(a, b, "") for a, b in setup] + totals + per_contact + warn
 
     def __str__(self) -> str:
         rows = self._rows()

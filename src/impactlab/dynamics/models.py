@@ -80,7 +80,22 @@ def contact_model(
         return law
     if not isinstance(law, str):
         raise ValueError(f"law must be a law name or a ContactModel, got {type(law).__name__}")
+    if law_params is None:  # the common case: one dict lookup (bodies and flats are immutable)
+        key = (law, id(body), id(flat))
+        hit = _LAST_MODELS.get(key)
+        if hit is not None and hit[0] is body and hit[1] is flat:
+            return hit[2]
+        model = build_contact_model(law, body.material, flat, R)
+        if len(_LAST_MODELS) >= 64:
+            _LAST_MODELS.clear()
+        _LAST_MODELS[key] = (body, flat, model)
+        return model
     return build_contact_model(law, body.material, flat, R, law_params)
+
+
+#: (law, id(body), id(flat)) -> (body, flat, model) of ``contact_model`` without law_params:
+#: the objects are kept, so an id is never reused while its entry lives.
+_LAST_MODELS: dict[tuple[str, int, int], tuple[Any, Any, ContactModel]] = {}
 
 
 def kernel_params(model: ContactModel) -> np.ndarray:
@@ -98,12 +113,25 @@ def references_used(
     model: ContactModel, friction: FrictionModel, frictional: bool
 ) -> tuple[Reference, ...]:
     """The sources a computation with ``model`` used: the contact law, the friction model
-    (only when ``frictional``, i.e. some mu > 0) and the integrator, without repeats."""
+    (only when ``frictional``, i.e. some mu > 0) and the integrator, without repeats (cached
+    per model object, friction model and ``frictional``)."""
+    key = (id(model), friction.name, bool(frictional))
+    hit = _REFERENCES.get(key)
+    if hit is not None and hit[0] is model:
+        return hit[1]
     refs = [*model.references]
     if frictional:
         refs += friction.references
     refs += INTEGRATOR_REFERENCES
-    return tuple(dict.fromkeys(refs))
+    out = tuple(dict.fromkeys(refs))
+    if len(_REFERENCES) >= 256:
+        _REFERENCES.clear()
+    _REFERENCES[key] = (model, out)
+    return out
+
+
+#: (id(model), friction name, frictional) -> (model, references) of ``references_used``.
+_REFERENCES: dict[tuple[int, str, bool], tuple[ContactModel, tuple[Reference, ...]]] = {}
 
 
 def _hashable(*values: Any) -> bool:
@@ -114,6 +142,10 @@ def _hashable(*values: Any) -> bool:
     return True
 
 
+#: [body, flat, vector] of the last ``body_params`` call (the objects are immutable).
+_LAST_BODY: list[Any] = []
+
+
 @functools.lru_cache(maxsize=256)
 def _cached_body_params(body: Rod | Sphere, flat: Material) -> np.ndarray:
     return np.require(body.to_params(flat), np.float64, ["C", "W"])
@@ -121,9 +153,14 @@ def _cached_body_params(body: Rod | Sphere, flat: Material) -> np.ndarray:
 
 def body_params(body: Rod | Sphere, flat: Material) -> np.ndarray:
     """The body vector (``impactlab.bodies.layout``) of ``body`` on ``flat`` for the compiled
-    engine (writable, C-contiguous; cached by value)."""
+    engine (writable, C-contiguous; cached by value, and by identity for the last pair)."""
+    last = _LAST_BODY
+    if last and last[0] is body and last[1] is flat:
+        return last[2]  # type: ignore[no-any-return]
     if _hashable(body, flat):
-        return _cached_body_params(body, flat)
+        bp = _cached_body_params(body, flat)
+        _LAST_BODY[:] = [body, flat, bp]
+        return bp
     return np.require(body.to_params(flat), np.float64, ["C", "W"])
 
 

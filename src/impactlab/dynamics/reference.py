@@ -25,6 +25,7 @@ from impactlab.dynamics.core.status import REGIME_NAMES
 from impactlab.dynamics.models import body_params
 from impactlab.dynamics.reference_problem import ReferenceProblem
 from impactlab.dynamics.simulate import simulate
+from impactlab.friction import FRICTION_IDS
 from impactlab.materials import AISI_1010, Material
 
 
@@ -241,6 +242,8 @@ def simulate_reference(
     Hertz estimate of the penetration, the impact speed, and their rotational counterparts).
     """
     x = check_impact(body, flat, **{**_simulate_defaults(), **impact})
+    if x.friction.name not in FRICTION_IDS:  # its reference: verification.partial_slip
+        raise ValueError(f"simulate_reference: no solve_ivp reference for {x.friction.name!r}")
     P = ReferenceProblem(
         x.model,
         x.friction.name,

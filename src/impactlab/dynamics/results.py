@@ -12,11 +12,13 @@ from typing import Any
 import numpy as np
 
 from impactlab import schema
-from impactlab._display import html_table
+from impactlab._display import field_rows, flag_names, html_table, text_table
+from impactlab.contact.ranges import extrapolation, extrapolation_flags
 from impactlab.dynamics.core.layout import HISTORY_FIELDS, OUTPUT_FIELDS
 from impactlab.dynamics.core.status import STATUS_MESSAGES
 from impactlab.dynamics.dent import dent_map
-from impactlab.flags import ResultFlag, messages
+from impactlab.dynamics.export import batch_dataset, batch_html, history_dataframe
+from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
 from impactlab.references import Reference
 from impactlab.references import dois as doi_list
 
@@ -96,11 +98,14 @@ class History:
         """Column names."""
         return HISTORY_FIELDS
 
-    def to_dataframe(self) -> Any:
-        """A pandas DataFrame (one column per field, SI units)."""
-        import pandas as pd  # heavy, needed only here
+    @property
+    def units(self) -> dict[str, str]:
+        """SI unit of each column (``"1"``: dimensionless)."""
+        return dict(HISTORY_UNITS)
 
-        return pd.DataFrame(np.array(self.data), columns=list(HISTORY_FIELDS))
+    def to_dataframe(self) -> Any:
+        """A pandas DataFrame: SI, units in ``.attrs``, categorical phase/stick (``export``)."""
+        return history_dataframe(self.data)
 
     def __repr__(self) -> str:
         return f"History({len(self)} rows: {', '.join(HISTORY_FIELDS)})"
@@ -140,22 +145,15 @@ class DentMap:
         )
 
 
-_SUMMARY = (
-    ("e", "normal COR e", "-", 1.0),
-    ("e_energy", "energetic COR e*", "-", 1.0),
-    ("delta_max", "max penetration", "um", 1e6),
-    ("delta_p", "permanent depth delta_p", "um", 1e6),
-    ("sliding_length", "sliding length L_s", "um", 1e6),
-    ("contact_travel", "contact travel", "um", 1e6),
-    ("duration", "duration T", "ms", 1e3),
-    ("max_force", "max force", "N", 1.0),
-    ("mean_force", "mean force", "N", 1.0),
-    ("normal_impulse", "normal impulse", "N s", 1.0),
-    ("tangential_impulse", "tangential impulse", "N s", 1.0),
-    ("energy_dissipated", "energy dissipated", "J", 1.0),
-    ("stick_time", "stick time", "ms", 1e3),
-    ("spin_out", "spin out", "rad/s", 1.0),
-)
+#: The fields of an impact's summary, in order: ``print(result)``, ``_repr_html_`` and
+#: ``impactlab simulate`` show these (display units: ``impactlab._display``).
+SUMMARY_FIELDS: tuple[str, ...] = (
+    "law", "friction", "mu", "angle", "velocity_in", "spin_in", "regime", "e", "e_energy",
+    "velocity_out", "spin_out", "angle_out", "delta_max", "delta_p", "sliding_length",
+    "contact_travel", "duration", "t_max", "stick_time", "max_force", "mean_force",
+    "normal_impulse", "tangential_impulse", "energy_dissipated", "vn_in", "vt_in", "vn_out",
+    "vt_out", "n_steps",
+)  # fmt: skip
 
 
 @dataclass(frozen=True, eq=False)
@@ -207,19 +205,28 @@ class ImpactResult:
     _law_params: np.ndarray | None = field(default=None, repr=False)
 
     def __post_init__(self) -> None:
-        # the engine writes the bitmask as a float (like every output column)
-        object.__setattr__(self, "flags", ResultFlag(int(self.flags)))
+        # the engine writes the bitmask as a float; LAW_EXTRAPOLATED from contact.ranges (C2)
+        extra = extrapolation_flags(self._law_id, self._law_params, self.delta_max)
+        object.__setattr__(self, "flags", ResultFlag(int(self.flags) | extra))
+
+    max_delta_ratio = property(
+        lambda self: extrapolation(self._law_id, self._law_params, self.delta_max)[0],
+        doc="delta_max / delta_c of the impact's law and pair (NaN if unknown; contact.ranges).",
+    )
+    extrapolated = property(lambda self: ResultFlag.LAW_EXTRAPOLATED in self.flags,
+                            doc="True when the impact left the law's fitted range.")  # fmt: skip
 
     @property
     def warnings(self) -> tuple[str, ...]:
         """One explanatory sentence per flag (``impactlab.flags.messages``); ``()`` if none."""
-        return messages(self.flags)
+        how_far = extrapolation(self._law_id, self._law_params, self.delta_max)
+        return messages(self.flags, extrapolation=how_far)
 
     @property
     def ok(self) -> bool:
-        """True when nothing is flagged (a result exists only for a successful integration):
-        the impact measures can be read as they are."""
-        return self.flags == ResultFlag.NONE
+        """True unless a flag says the impact measures are not meaningful (a result exists only
+        for a successful integration); ``ADVISORY_FLAGS`` (LAW_EXTRAPOLATED) leave it True."""
+        return (int(self.flags) & ~ADVISORY_FLAGS) == 0
 
     def to_dict(self, *, include_history: bool = False) -> dict[str, Any]:
         """Scalar fields as a plain dict (``flags`` as an int, ``warnings`` as a list; history
@@ -241,25 +248,23 @@ class ImpactResult:
         integrator), in order, without repeats."""
         return doi_list(self.references)
 
+    def summary(self) -> dict[str, Any]:
+        """The summary's fields (``SUMMARY_FIELDS``, SI; no angles for a sphere) and the
+        names of the flags."""
+        data = {k: getattr(self, k) for k in SUMMARY_FIELDS}
+        for k in ("angle", "angle_out"):
+            if not np.isfinite(data[k]):
+                del data[k]  # a sphere
+        data["flags"] = flag_names(self.flags)
+        return data
+
     def _rows(self) -> list[tuple[str, str, str]]:
-        rows = [
-            ("law", self.law, ""),
-            ("friction", f"{self.friction} (mu = {self.mu:g})", ""),
-            ("regime", self.regime, ""),
-        ]
-        for key, label, unit, f in _SUMMARY:
-            v = getattr(self, key) * f
-            rows.append((label, f"{v:.5g}", unit))
-        vx, vy = self.velocity_out
-        rows.append(("velocity out (vx, vy)", f"({vx:.5g}, {vy:.5g})", "m/s"))
+        rows = field_rows(self.summary(), UNITS)
         rows.extend(("warning", text, "") for text in self.warnings)
         return rows
 
     def __str__(self) -> str:
-        rows = self._rows()
-        w = max(len(r[0]) for r in rows)
-        lines = ["ImpactResult"] + [f"  {a:<{w}}  {b} {c}".rstrip() for a, b, c in rows]
-        return "\n".join(lines)
+        return text_table("ImpactResult", self._rows())
 
     def _repr_html_(self) -> str:
         return html_table("ImpactResult", self._rows())
@@ -362,6 +367,13 @@ class BatchResult:
             df[name] = np.array(self.out[:, j])
         df["status"] = np.array(self.status)
         return df
+
+    def to_xarray(self) -> Any:
+        """An ``xarray.Dataset`` over ``case`` (units in attributes; ``dynamics.export``)."""
+        return batch_dataset(self)
+
+    def _repr_html_(self) -> str:
+        return batch_html(self)
 
     def __repr__(self) -> str:
         n_ok = int(np.count_nonzero(self.ok))

@@ -10,12 +10,13 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from typing import Any
+from typing import Any, overload
 
 import numpy as np
 
 from impactlab._validation import check_array, check_flag
 from impactlab.bodies import Rod, Sphere
+from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.contact import ContactModel
 from impactlab.dynamics.batch import run_arrays
 from impactlab.dynamics.checks import (
@@ -28,9 +29,12 @@ from impactlab.dynamics.checks import (
 from impactlab.dynamics.core import layout as L
 from impactlab.dynamics.core import status as S
 from impactlab.dynamics.core.driver import impact
+from impactlab.dynamics.drop_result import DropResult
+from impactlab.dynamics.flex_simulate import FLEXIBLE_BATCH_ERROR, simulate_flexible
 from impactlab.dynamics.models import body_params, contact_model, kernel_params, references_used
+from impactlab.dynamics.partial_slip import simulate_partial_slip
 from impactlab.dynamics.results import BatchResult, History, ImpactResult
-from impactlab.friction import DEFAULT_MU, get_friction
+from impactlab.friction import DEFAULT_MU, FrictionKind, get_friction
 from impactlab.materials import AISI_1010, Material
 
 
@@ -48,8 +52,16 @@ def _status_error(status: int, model: ContactModel) -> ValueError:
     return ValueError(S.STATUS_MESSAGES.get(status, f"engine status {status}"))
 
 
+@overload
 def simulate(
-    body: Rod | Sphere,
+    body: FlexibleRod, flat: Material = ..., *, velocity: Any, **kwargs: Any
+) -> DropResult: ...
+@overload
+def simulate(
+    body: Rod | Sphere, flat: Material = ..., *, velocity: Any, **kwargs: Any
+) -> ImpactResult: ...
+def simulate(
+    body: Rod | Sphere | FlexibleRod,
     flat: Material = AISI_1010,
     *,
     law: str | ContactModel = "ghaednia",
@@ -63,8 +75,11 @@ def simulate(
     constant_angle: bool = False,
     rtol: float | None = None,
     history: bool = True,
-) -> ImpactResult:
-    """Simulate one impact from first touch (delta = 0) to separation (SI units).
+    **drop_options: Any,
+) -> ImpactResult | DropResult:
+    """Simulate one impact from first touch (delta = 0) to separation (SI units); for a
+    FlexibleRod the whole drop, a ``DropResult`` (``impactlab.dynamics.drop``; its options
+    ``rate``, ``stop``, ``t_max`` pass through).
 
     A quantity (angle, velocity, spin, gravity, a law parameter with a unit) is a number in SI
     (a bare angle is radians), a string with units (``"20 deg"``, ``"1.41 m/s"``) or a pint
@@ -113,6 +128,11 @@ def simulate(
     >>> round(r.e, 2)
     0.42
     """
+    if isinstance(body, FlexibleRod) or drop_options:  # the flexible drop (contract C1)
+        args = {"law": law, "friction": friction, "mu": mu, "angle": angle, "velocity": velocity}
+        args |= {"spin": spin, "law_params": law_params, "gravity": gravity, "rtol": rtol}
+        return simulate_flexible(body, flat, constant_angle=constant_angle, history=history,
+                                 **args, **drop_options)  # fmt: skip
     x = check_impact(
         body,
         flat,
@@ -127,6 +147,8 @@ def simulate(
         constant_angle=constant_angle,
         rtol=rtol,
     )
+    if x.friction.kind is FrictionKind.PARTIAL_SLIP:  # issue 12: the partial-slip engine
+        return simulate_partial_slip(x, check_flag("history", history))
     return _run_one(x, check_flag("history", history))
 
 
@@ -154,7 +176,7 @@ def _run_one(x: ImpactInputs, history: bool) -> ImpactResult:
     if status != S.ST_OK:
         raise _status_error(int(status), x.model)
     o = out.tolist()
-    scalars: dict[str, Any] = {name: o[L.O[name]] for name in _SCALAR_OUTPUTS}
+    scalars: dict[str, Any] = {name: o[j] for name, j in _SCALAR_COLUMNS}
     return ImpactResult(
         **scalars,
         velocity_out=(o[L.O_VX], o[L.O_VY]),
@@ -179,6 +201,9 @@ _SCALAR_OUTPUTS = tuple(
     for n in L.OUTPUT_FIELDS
     if n in ImpactResult.__dataclass_fields__ and n not in ("regime", "n_steps")
 )
+
+#: (name, column of ``out``) of the scalar outputs.
+_SCALAR_COLUMNS = tuple((n, L.O[n]) for n in _SCALAR_OUTPUTS)
 
 #: simulate_batch's array inputs and their units ("1": a plain number).
 _BATCH_UNITS = {"mu": "1", "angle": "rad", "vx": "m/s", "vy": "m/s", "spin": "rad/s"}
@@ -236,6 +261,8 @@ def simulate_batch(
     gained energy or that gravity dominates is flagged in ``BatchResult.flags``. A speed above
     100 m/s draws an ``ImplausibleInputWarning``.
     """
+    if isinstance(body, FlexibleRod):
+        raise ValueError(FLEXIBLE_BATCH_ERROR)
     body = check_body(body)
     flat = check_flat(flat)
     fric = get_friction(friction)

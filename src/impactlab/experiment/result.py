@@ -7,7 +7,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from impactlab._display import html_table
+from impactlab._display import field_row, html_table
 from impactlab._json import jsonable
 from impactlab.experiment.errors import ExperimentError
 from impactlab.experiment.kinematics import ImpactKinematics
@@ -77,7 +77,7 @@ class ExperimentResult:
             raise ExperimentError("; ".join(f"{k}: {v}" for k, v in self.errors.items()))
 
     def _repr_html_(self) -> str:
-        rows = [(k, f"{v.value:.6g} +/- {v.sigma:.2g}", v.unit) for k, v in self.summary().items()]
+        rows = [field_row(k, v.value, v.unit or "1", v.sigma) for k, v in self.summary().items()]
         rows += [(f"error ({k})", v, "") for k, v in self.errors.items()]
         return html_table("ExperimentResult", rows)
 

@@ -4,7 +4,6 @@ document model of :mod:`impactlab.paper.report` (rendered to Markdown and HTML t
 
 from __future__ import annotations
 
-import math
 import platform
 from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass
@@ -16,7 +15,8 @@ import pandas as pd
 from impactlab.paper import data as D
 from impactlab.paper.physics_report import physics_section
 from impactlab.paper.quantities import TOL_EXPERIMENT_T, TOL_SIMULATED, duration_checks
-from impactlab.paper.report import Block, Bullets, Code, Figure, Heading, Para, Table, fmt
+from impactlab.paper.report import Block, Bullets, Code, Figure, Heading, Para, Table, fmt_pct
+from impactlab.paper.report_reasons import not_reproduced
 from impactlab.paper.simulations import FRICTIONS
 
 TITLE = "impactlab: reproduction of Ghaednia, Marghitu & Jackson (2016)"
@@ -41,11 +41,6 @@ class ReportData:
     physics: pd.DataFrame | None = None
 
 
-def fmt_pct(x: Any) -> str:
-    """A relative difference as a signed percentage (a dash for None/NaN)."""
-    return "-" if x is None or (isinstance(x, float) and math.isnan(x)) else f"{x:+.1%}"
-
-
 def build_report(d: ReportData) -> list[Block]:
     """Every section of the report, in order."""
     return [
@@ -53,7 +48,7 @@ def build_report(d: ReportData) -> list[Block]:
         *_inputs(),
         *_experimental(d),
         *_simulated(d),
-        *_not_reproduced(d),
+        *not_reproduced(d.comparison),
         *_consistency(d),
         *_eq12(d),
         *_inertia(d),
@@ -220,49 +215,6 @@ def _sim_vs_experiment(simtab: pd.DataFrame, exp: pd.DataFrame) -> list[Block]:
         )
         out.append(Bullets(tuple(f"{t}: {'yes' if ok else 'no'}" for t, ok in checks)))
     return out
-
-
-def _not_reproduced(d: ReportData) -> list[Block]:
-    comp = d.comparison
-    B: list[Block] = [Heading("5. Every published number not reproduced, and why")]
-    bad = comp[comp["reproduced"] == False]  # noqa: E712
-    if bad.empty:
-        B.append(Para("None."))
-    else:
-        B.append(
-            Para(
-                "Tolerances: 15 % for the simulated rows (required for e and delta_p; "
-                "applied to L_s, T and F as well), 5 % for the experimental T, 15 % for "
-                "the experimental F. Identical numbers of the two friction models are "
-                "listed once."
-            )
-        )
-        items = []
-        keys = ["source", "angle [deg]", "model", "quantity", "published", "impactlab", "reason"]
-        for _, g in bad.groupby(keys, sort=False, dropna=False):
-            r = g.iloc[0]
-            frs = ", ".join(f for f in g["friction"] if f != "-")
-            items.append(
-                f"{r['source']}, {r['angle [deg]']} deg, {r['model']}"
-                + (f" ({frs})" if frs else "")
-                + f", {r['quantity']}: published {fmt(r['published'])}, impactlab "
-                f"{fmt(r['impactlab'])} ({fmt_pct(r['rel. diff'])}). Why: {r['reason']}"
-            )
-        B.append(Bullets(tuple(items)))
-    ok_f = comp[
-        (comp["model"] == "experiment")
-        & (comp["quantity"] == "F [N]")
-        & comp["reproduced"].eq(True)
-    ]
-    for _, r in ok_f.iterrows():
-        B.append(
-            Para(
-                f"Within tolerance but worth a note: {r['angle [deg]']} deg experimental F, "
-                f"published {fmt(r['published'])} N, impactlab {fmt(r['impactlab'])} N "
-                f"({fmt_pct(r['rel. diff'])}): {r['reason']}."
-            )
-        )
-    return B
 
 
 def _consistency(d: ReportData) -> list[Block]:

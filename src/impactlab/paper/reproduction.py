@@ -168,7 +168,8 @@ def _write_report(out: Path, data: ReportData, written: dict[str, Path]) -> tupl
     md = out / "report.md"
     md.write_text(to_markdown(blocks, TITLE), encoding="utf-8")
     html_path = out / "report.html"
-    html_path.write_text(to_html(blocks, TITLE), encoding="utf-8")
+    # one self-contained page: the figures (already written into ``out``) embedded
+    html_path.write_text(to_html(blocks, TITLE, base=out), encoding="utf-8")
     written["report_md"], written["report_html"] = md, html_path
     (out / MARKER).write_text(
         json.dumps(

@@ -29,7 +29,9 @@ from impactlab.dynamics.batch import (
     STATUS_MESSAGES,
     run_arrays,
 )
+from impactlab.friction import batch_friction_error
 from impactlab.materials import PRESETS
+from impactlab.sweep.flexible import FLEXIBLE_BODY, evaluate_flexible, validate_flexible
 from impactlab.sweep.inputs import INTEGER_OUTPUTS, KINEMATIC_INPUTS
 from impactlab.sweep.models import Statics, build_models
 from impactlab.sweep.status import (
@@ -119,11 +121,16 @@ class EngineEvaluator:
         return tuple(f for f in self.output_fields() if f in INTEGER_OUTPUTS)
 
     def validate(self, categories: Mapping[str, Sequence[str]]) -> None:
+        validate_flexible(categories)
+        if "partial_slip" in categories.get("friction", ()):
+            raise ValueError(batch_friction_error("partial_slip"))
         _validate_categories(categories, tuple(FRICTION_IDS))
 
     def __call__(
         self, cases: Mapping[str, np.ndarray], statics: Statics, outputs: Sequence[str]
     ) -> tuple[dict[str, np.ndarray], np.ndarray]:
+        if statics.categories.get("body") == FLEXIBLE_BODY:  # one drop per case
+            return evaluate_flexible(cases, statics, outputs)
         return evaluate(cases, statics, outputs)
 
 
@@ -145,8 +152,8 @@ def _validate_categories(categories: Mapping[str, Sequence[str]], frictions: Seq
                     f"unknown {key} preset {m!r}; known presets: {', '.join(sorted(PRESETS))}"
                 )
     for b in categories.get("body", ()):
-        if b not in ("rod", "sphere"):
-            raise ValueError(f"unknown body {b!r}; known: rod, sphere")
+        if b not in ("rod", "sphere", FLEXIBLE_BODY):
+            raise ValueError(f"unknown body {b!r}; known: rod, sphere, {FLEXIBLE_BODY}")
 
 
 def evaluate(

@@ -91,12 +91,16 @@ _SPECS: tuple[InputSpec, ...] = (
     _f("spin", "rad/s", "initial angular velocity (counter-clockwise positive)", 0.0),
     _f("mu", "1", "coefficient of friction"),
     # body geometry (None: the paper's rod, impactlab.bodies.PAPER_ROD)
-    _c("body", "rod", "impacting body: 'rod' (hemispherical tip) or 'sphere'"),
+    _c("body", "rod", "impacting body: 'rod' (hemispherical tip), 'sphere' or 'flexible_rod'"),
     _f("length", "m", "rod length L (rod)"),
     _f("tip_radius", "m", "rod tip radius R (rod)"),
     _f("radius", "m", "sphere radius (sphere)"),
     _f("mass", "kg", "body mass m (sphere: from the density if not set)"),
     _f("inertia", "kg*m^2", _INERTIA),
+    # flexible rod (body = "flexible_rod"; None: FlexibleRod's defaults; impactlab.sweep.flexible)
+    _f("n_axial", "1", "axial free-free modes of a flexible rod (integer; + 2 residual modes)"),
+    _f("n_bending", "1", "bending free-free modes of a flexible rod (integer)"),
+    _f("damping", "1", "modal damping ratio zeta of a flexible rod, in [0, 1)"),
     # materials: presets and per-property overrides
     _c("body_material", "aisi-201", "material preset of the impacting body"),
     _c("flat_material", "aisi-1010", "material preset of the flat"),

@@ -51,6 +51,11 @@ def _side(side: str, row: Mapping[str, float]) -> dict[str, float]:
     return {field: row[name] for name, field in MATERIAL_OVERRIDES[side].items()}
 
 
+def material_for(side: str, preset: str, row: Mapping[str, float]) -> Material:
+    """The material of ``side`` ("body" or "flat"): the preset with the row's overrides."""
+    return _material(preset, _side(side, row))
+
+
 def _body(cat: Mapping[str, str], row: Mapping[str, float], body_mat: Material) -> Rod | Sphere:
     def given(name: str) -> float | None:
         v = row[name]

@@ -6,6 +6,11 @@
 - ``plot_output_map``: one output over two swept inputs (e.g. angle and vy), or a line over one.
 - ``plot_sweep``: every plot the sweep's dimensions allow, written to a folder.
 
+A map shows two dimensions; every other dimension is sliced, and the title says where
+(``law = brake, vy = -1.41 m/s``). Without ``ax`` a study with a third dimension is drawn as
+facets, one panel per value of that dimension (at most ``MAX_FACETS``, evenly spaced); further
+dimensions take the value in ``sel``, else their first, and are named in the titles.
+
 Angles are shown in degrees; lengths in um, durations in ms (values stay SI in the Dataset).
 """
 
@@ -18,6 +23,7 @@ from typing import Any
 
 import numpy as np
 
+from impactlab._display import format_number
 from impactlab._mpl import pyplot
 from impactlab.analytic import critical_friction
 from impactlab.bodies import PAPER_ROD, Rod
@@ -41,9 +47,13 @@ def _label(ds: Any, name: str) -> tuple[float, str]:
     return scale, f"{name} [{unit}]" if unit and unit != "1" else name
 
 
+#: The most panels a faceted map draws (a longer dimension shows evenly spaced values).
+MAX_FACETS = 16
+
+
 def _select(ds: Any, keep: Sequence[str], sel: Mapping[str, Any] | None) -> Any:
     """Reduce ``ds`` to the dimensions ``keep``: ``sel`` picks values (nearest) of the others;
-    dimensions not in ``sel`` take their first index."""
+    dimensions not in ``sel`` take their first index. The slice is named by ``_where``."""
     sel = dict(sel or {})
     for d in list(ds.dims):
         if d in keep:
@@ -56,6 +66,63 @@ def _select(ds: Any, keep: Sequence[str], sel: Mapping[str, Any] | None) -> Any:
     if sel:
         raise ValueError(f"sel names {sorted(sel)}, which are not dimensions to select on")
     return ds
+
+
+def _where(full: Any, sub: Any) -> str:
+    """Where ``sub`` slices ``full``: ``"law = brake, vy = -1.41 m/s"`` ("" for no slice)."""
+    parts = []
+    for d in full.dims:
+        if d in sub.dims or full.sizes[d] < 2:
+            continue
+        v = sub[d].values if d in sub.coords else None
+        if v is None or np.ndim(v):
+            continue
+        if isinstance(v.item(), str):
+            parts.append(f"{d} = {v.item()}")
+            continue
+        scale, unit = _display(d, str(full[d].attrs.get("units", "")))
+        unit = "" if unit in ("1", "-") else unit
+        parts.append(f"{d} = {format_number(float(v) * scale)} {unit}".rstrip())
+    return ", ".join(parts)
+
+
+def _title(ax: Any, what: str, full: Any, sub: Any) -> None:
+    where = _where(full, sub)
+    ax.set_title(f"{what}\n{where}" if where else what, fontsize="medium")
+
+
+def _facet_dim(ds: Any, keep: Sequence[str], sel: Mapping[str, Any] | None) -> str | None:
+    """The first dimension beside ``keep`` with more than one value that ``sel`` leaves free."""
+    return next(
+        (d for d in ds.dims if d not in keep and d not in (sel or {}) and ds.sizes[d] > 1),
+        None,
+    )
+
+
+def _facets(ds: Any, keep: Sequence[str], sel: Mapping[str, Any] | None, draw: Any, ax: Any) -> Any:
+    """``draw(sel, ax)`` once (given ``ax``, or no free third dimension), else once per value of
+    the free dimension on a grid of panels; returns the axes (an array for facets)."""
+    plt = pyplot()
+    dim = _facet_dim(ds, keep, sel)
+    if ax is not None or dim is None:
+        if ax is None:
+            _, ax = plt.subplots(figsize=(6.4, 4.8))
+        draw(dict(sel or {}), ax)
+        return ax
+    n = int(ds.sizes[dim])
+    picks = np.unique(np.linspace(0, n - 1, min(n, MAX_FACETS)).round().astype(int))
+    cols = min(len(picks), 4)
+    rows = -(-len(picks) // cols)
+    fig, axes = plt.subplots(
+        rows, cols, figsize=(4.2 * cols, 3.4 * rows), squeeze=False, constrained_layout=True
+    )
+    for i, a in zip(picks, axes.flat, strict=False):
+        draw({**dict(sel or {}), dim: ds[dim].values[i]}, a)
+    for a in axes.flat[len(picks) :]:
+        a.set_visible(False)
+    if len(picks) < n:
+        fig.suptitle(f"{len(picks)} of the {n} values of {dim}", fontsize="small")
+    return axes
 
 
 def _rod_for(ds: Any) -> Rod | None:
@@ -100,13 +167,23 @@ def plot_regime_map(
     ax: Any = None,
     show_mu_c: bool = True,
 ) -> Any:
-    """Friction regime over ``x`` (angle) and ``y`` (mu), with mu_c(theta) drawn on it."""
+    """Friction regime over ``x`` (angle) and ``y`` (mu), with mu_c(theta) drawn on it.
+
+    Other dimensions: ``sel`` picks their values; without ``ax``, a free third dimension is
+    drawn as facets (one panel per value). Titles name the slice. Returns the Axes (an array of
+    Axes for facets)."""
     if "regime" not in ds.data_vars:
         raise ValueError("the sweep did not keep the output 'regime'")
     for d in (x, y):
         if d not in ds.dims:
             raise ValueError(f"a regime map needs {d!r} as a grid dimension; dims: {list(ds.dims)}")
-    plt = pyplot()
+    return _facets(ds, (x, y), sel, lambda s, a: _regime_panel(ds, x, y, s, a, show_mu_c), ax)
+
+
+def _regime_panel(
+    ds: Any, x: str, y: str, sel: Mapping[str, Any], ax: Any, show_mu_c: bool
+) -> None:
+    pyplot()
     # matplotlib modules load after pyplot() has settled the backend (see impactlab._mpl)
     from matplotlib.colors import BoundaryNorm, ListedColormap
     from matplotlib.patches import Patch
@@ -116,8 +193,6 @@ def plot_regime_map(
     reg[np.asarray(sub["status"].transpose(y, x).values) != 0] = np.nan
     names = {int(k): v for k, v in ds["regime"].attrs.get("regimes", {}).items()}
     codes = sorted(names) or sorted({int(v) for v in reg[np.isfinite(reg)].ravel()})
-    if ax is None:
-        _, ax = plt.subplots(figsize=(6.4, 4.8))
     xs, xl = _label(ds, x)
     ys, yl = _label(ds, y)
     xv = np.asarray(sub[x].values, dtype=float) * xs
@@ -145,10 +220,9 @@ def plot_regime_map(
     ax.set_ylim(yv.min(), yv.max())
     ax.set_xlabel(xl)
     ax.set_ylabel(yl)
-    ax.set_title("friction regime")
+    _title(ax, "friction regime", ds, sub)
     if handles:
         ax.legend(handles=handles, loc="best", fontsize="small")
-    return ax
 
 
 def plot_output_map(
@@ -161,7 +235,8 @@ def plot_output_map(
     ax: Any = None,
 ) -> Any:
     """``output`` over ``x`` and ``y`` (colour map) or over ``x`` alone (line); invalid cases
-    (status != 0) are blank."""
+    (status != 0) are blank. Other dimensions as in ``plot_regime_map`` (facets without
+    ``ax``, the slice in the titles); returns the Axes (an array of Axes for facets)."""
     out = OUTPUT_ALIASES.get(output, output)
     if out not in ds.data_vars:
         raise ValueError(f"the sweep has no output {output!r}")
@@ -169,7 +244,13 @@ def plot_output_map(
     for d in keep:
         if d not in ds.dims:
             raise ValueError(f"{d!r} is not a grid dimension; dims: {list(ds.dims)}")
-    plt = pyplot()
+    return _facets(ds, keep, sel, lambda s, a: _output_panel(ds, out, x, y, s, a), ax)
+
+
+def _output_panel(
+    ds: Any, out: str, x: str, y: str | None, sel: Mapping[str, Any], ax: Any
+) -> None:
+    keep = (x,) if y is None else (x, y)
     sub = _select(ds[[out, "status"]], keep, sel)
     vals = np.asarray(sub[out].values, dtype=float)
     vals = np.where(np.asarray(sub["status"].values) == 0, vals, np.nan)
@@ -177,8 +258,6 @@ def plot_output_map(
     vs, vunit = _display(out, unit)
     vlabel = f"{out} [{vunit}]" if vunit and vunit != "1" else out
     xs, xl = _label(ds, x)
-    if ax is None:
-        _, ax = plt.subplots(figsize=(6.4, 4.8))
     xv = np.asarray(sub[x].values, dtype=float) * xs
     if y is None:
         ax.plot(xv, vals * vs, "o-", ms=3)
@@ -193,8 +272,7 @@ def plot_output_map(
         ax.figure.colorbar(mesh, ax=ax, label=vlabel)
         ax.set_ylabel(yl)
     ax.set_xlabel(xl)
-    ax.set_title(out)
-    return ax
+    _title(ax, out, ds, sub)
 
 
 def plot_histograms(ds: Any, outputs: Sequence[str]) -> Any:
@@ -224,7 +302,8 @@ def plot_sweep(
     """Write every plot the sweep's dimensions allow into ``outdir`` (PNG); returns the files.
 
     angle x mu with 'regime' -> regime map (with mu_c); angle x a velocity -> output maps;
-    angle alone -> output lines; a 'sample' dimension -> histograms.
+    angle alone -> output lines; a 'sample' dimension -> histograms. A further dimension is
+    drawn as facets; maps of a grid+sample study show the sample in ``sel`` (default: the first).
     """
     plt = pyplot()
     out = Path(outdir)
@@ -232,30 +311,27 @@ def plot_sweep(
     files: list[Path] = []
     dims = list(ds.dims)
     present = [o for o in (OUTPUT_ALIASES.get(o, o) for o in outputs) if o in ds.data_vars]
+    msel = {SAMPLE_DIM: 0, **dict(sel or {})} if SAMPLE_DIM in dims else sel
 
-    def save(fig: Any, name: str) -> None:
+    def save(axes: Any, name: str) -> None:
+        fig = np.ravel(axes)[0].figure
         p = out / name
         fig.savefig(p, dpi=120, bbox_inches="tight")
         plt.close(fig)
         files.append(p)
 
     if "angle" in dims and "mu" in dims and "regime" in ds.data_vars:
-        fig, ax = plt.subplots(figsize=(6.4, 4.8))
-        plot_regime_map(ds, sel=sel, ax=ax)
-        save(fig, "regime_map.png")
+        save(plot_regime_map(ds, sel=msel), "regime_map.png")
     vel = next((d for d in _VELOCITY_DIMS if d in dims), None)
     if "angle" in dims and vel is not None:
         for o in present:
-            fig, ax = plt.subplots(figsize=(6.4, 4.8))
-            plot_output_map(ds, o, x="angle", y=vel, sel=sel, ax=ax)
-            save(fig, f"{o}_angle_{vel}.png")
+            save(plot_output_map(ds, o, x="angle", y=vel, sel=msel), f"{o}_angle_{vel}.png")
     elif "angle" in dims:
         other = "mu" if "mu" in dims else None
         for o in present:
-            fig, ax = plt.subplots(figsize=(6.4, 4.8))
-            plot_output_map(ds, o, x="angle", y=other, sel=sel, ax=ax)
-            save(fig, f"{o}_angle{'_' + other if other else ''}.png")
+            name = f"{o}_angle{'_' + other if other else ''}.png"
+            save(plot_output_map(ds, o, x="angle", y=other, sel=msel), name)
     if SAMPLE_DIM in dims and present:
         sub = _select(ds, (SAMPLE_DIM,), sel)
-        save(plot_histograms(sub, present), "histograms.png")
+        save(plot_histograms(sub, present).axes, "histograms.png")
     return files

@@ -53,6 +53,7 @@ from impactlab.sweep.backends import (
     run_threads,
 )
 from impactlab.sweep.chunks import ChunkResult
+from impactlab.sweep.display import sweep_result_html
 from impactlab.sweep.engine import ENGINE, Evaluator
 from impactlab.sweep.inputs import ALWAYS_STORED, CATEGORY_INPUTS, OUTPUT_ALIASES
 from impactlab.sweep.integrity import describe
@@ -87,6 +88,8 @@ class SweepStats:
     cache: dict[str, dict[str, int]] = field(default_factory=dict)
     #: per worker: wall time of its first task [s]
     first_task_s: dict[str, float] = field(default_factory=dict)
+    #: per worker: cases of its first task (``sweep.display.steady_throughput`` leaves them out)
+    first_task_cases: dict[str, int] = field(default_factory=dict)
 
     @property
     def throughput(self) -> float:
@@ -106,6 +109,9 @@ class SweepResult:
     def dataset(self) -> Any:
         """The results as a lazy xarray Dataset."""
         return open_sweep(self.path)
+
+    def _repr_html_(self) -> str:
+        return sweep_result_html(self)
 
     @property
     def complete(self) -> bool:
@@ -352,6 +358,7 @@ def _run_store(
         c["misses"] += res.cache["misses"]
         c["tasks"] += 1
         stats.first_task_s.setdefault(res.worker, res.total_s)
+        stats.first_task_cases.setdefault(res.worker, res.n_cases)
         advance(res.n_cases)
 
     try:

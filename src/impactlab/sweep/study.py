@@ -37,6 +37,7 @@ from impactlab.sweep.dimensions import (
     check_value,
     layout,
 )
+from impactlab.sweep.display import study_html, study_repr
 from impactlab.sweep.inputs import INPUTS, OUTPUT_ALIASES, get_input
 from impactlab.sweep.limits import DEFAULT_MAX_CASES, check_max_cases, too_many, warn_chunking
 from impactlab.sweep.options import (
@@ -192,6 +193,12 @@ class Study:
         if lay.n_cases > self.max_cases:
             raise too_many(f"study {self.name!r}", lay.n_cases, self.max_cases, self.outputs)
         warn_chunking(self.name, self.chunk_size, lay.n_cases, lay.n_chunks)
+
+    def __repr__(self) -> str:
+        return study_repr(self)
+
+    def _repr_html_(self) -> str:
+        return study_html(self)
 
     # -- structure -----------------------------------------------------------------------------
 

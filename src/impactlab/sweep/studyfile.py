@@ -24,6 +24,7 @@ from impactlab.sweep.distributions import (
     distribution_from_canonical,
     distribution_from_dict,
 )
+from impactlab.sweep.flexible import check_flexible_study
 from impactlab.sweep.inputs import INPUTS, get_input
 from impactlab.sweep.limits import DEFAULT_MAX_CASES, check_max_cases, too_many
 from impactlab.sweep.options import (
@@ -101,7 +102,7 @@ def study_arguments(
     )
     grid_tab = table("grid")
     outputs = _outputs(table("outputs")) if "outputs" in data else None
-    return {
+    args = {
         "name": str(st.get("name", "study")),
         "description": str(st.get("description", "")),
         "chunk_size": st.get("chunk_size", DEFAULT_CHUNK_SIZE),
@@ -114,6 +115,8 @@ def study_arguments(
         "law_params": table("law_params"),
         "max_cases": limit,
     }
+    check_flexible_study(args)  # body = "flexible_rod" (impactlab.sweep.flexible)
+    return args
 
 
 def _quantity(value: Any, unit: str, bare_unit: str, label: str) -> float:

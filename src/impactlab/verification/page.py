@@ -17,6 +17,7 @@ from impactlab.dynamics import DEFAULT_RTOL
 from impactlab.verification.durations import verify_paper_durations
 from impactlab.verification.hertz import HERTZ_CASES, hertz_convergence, verify_hertz
 from impactlab.verification.invariants import verify_invariants
+from impactlab.verification.partial_slip_page import plot_partial_slip, verify_partial_slip
 from impactlab.verification.plots import (
     plot_critical_friction,
     plot_hertz_convergence,
@@ -41,6 +42,7 @@ def run_all(*, fast: bool = False) -> list[VerificationTable]:
             verify_reference(reference_cases(["hertz", "ghaednia"], ["coulomb", "mindlin"])),
             verify_paper_durations(500),
             verify_invariants(3, laws=["ghaednia", "brake"]),
+            verify_partial_slip(fast=True),
         ]
     return [
         verify_hertz(),
@@ -50,6 +52,7 @@ def run_all(*, fast: bool = False) -> list[VerificationTable]:
         verify_reference(),
         verify_paper_durations(),
         verify_invariants(20),
+        verify_partial_slip(),
     ]
 
 
@@ -129,6 +132,8 @@ def main(
                 plot_thornton(t, out / t.figure)
             elif t.key == "critical_friction" and t.figure:
                 plot_critical_friction(t, out / t.figure, grid=(12, 10) if fast else (44, 37))
+            elif t.key == "partial_slip":
+                plot_partial_slip(out, fast=fast)
         conv = hertz_convergence(
             (1e-5, 1e-7, 1e-9) if fast else (1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10)
         )

@@ -11,7 +11,7 @@ from impactlab.bodies import PAPER_ROD, Sphere
 from impactlab.contact import law_names
 from impactlab.dynamics import simulate
 from impactlab.dynamics.reference import simulate_reference
-from impactlab.friction import friction_names
+from impactlab.friction import FRICTION_IDS
 from impactlab.verification.table import TOLERANCES, VerificationTable, columns, worst_of
 
 __all__ = ["reference_cases", "verify_reference"]
@@ -26,7 +26,7 @@ def reference_cases(
     law and friction model, plus the 45 and 70 deg drops (Ghaednia, Coulomb) and an oblique
     sphere (Mindlin)."""
     laws = list(law_names() if laws is None else laws)
-    frictions = list(friction_names() if frictions is None else frictions)
+    frictions = list(FRICTION_IDS if frictions is None else frictions)
     cases: list[dict[str, Any]] = [
         {
             "body": "rod",
@@ -40,7 +40,7 @@ def reference_cases(
         for law in laws
         for fr in frictions
     ]
-    if laws == list(law_names()) and frictions == list(friction_names()):
+    if laws == list(law_names()) and frictions == list(FRICTION_IDS):
         cases += [
             {
                 "body": "rod",

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numba import njit, prange
 
@@ -16,7 +18,11 @@ def impact_batch(law, lp, fric, bpa, init, mu, g, const_angle, rtol, diag, out, 
     n = init.shape[0]
     shared_p = lp.shape[0] == 1
     shared_b = bpa.shape[0] == 1
-    for i in prange(n):
+    stride = _stride(n)
+    for k in prange(n):
+        # numba hands each thread a contiguous range of k: visiting the cases with a stride
+        # coprime to n spreads the costly ones (a grid is ordered) evenly over the threads
+        i = (k * stride) % n
         pi = lp[0] if shared_p else lp[i]
         bi = bpa[0] if shared_b else bpa[i]
         st, _h, _n = impact(
@@ -37,6 +43,18 @@ def impact_batch(law, lp, fric, bpa, init, mu, g, const_angle, rtol, diag, out, 
             out[i],
         )
         status[i] = st
+
+
+@njit(cache=True, error_model="numpy")
+def _stride(n):
+    """A stride coprime to ``n`` near n / golden ratio (1 for n < 3): k -> k stride mod n is a
+    permutation that scatters neighbouring cases."""
+    if n < 3:
+        return 1
+    s = int(0.6180339887498949 * n) | 1
+    while math.gcd(s, n) != 1:
+        s += 2
+    return s
 
 
 @njit(cache=True, error_model="numpy")

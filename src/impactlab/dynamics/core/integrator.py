@@ -90,12 +90,38 @@ DENSE_P = np.array(
 
 @njit(cache=True, inline="always", error_model="numpy")
 def _stage_point(y, K, h, stage, out):
-    """The point ``y + h sum_j a_{stage,j} K[j]`` where stage ``stage`` is evaluated."""
+    """The point ``y + h sum_j a_{stage,j} K[j]`` where stage ``stage`` is evaluated (the
+    sums written out with the nonzero coefficients, in the order of the tableau, one loop over
+    the components per stage: the compiler unrolls and vectorises them)."""
+    if stage == 1:
+        for i in range(NS):
+            out[i] = y[i] + h * (A21 * K[0, i])
+    elif stage == 2:
+        for i in range(NS):
+            out[i] = y[i] + h * (A31 * K[0, i] + A32 * K[1, i])
+    elif stage == 3:
+        for i in range(NS):
+            out[i] = y[i] + h * (A41 * K[0, i] + A42 * K[1, i] + A43 * K[2, i])
+    elif stage == 4:
+        for i in range(NS):
+            out[i] = y[i] + h * (A51 * K[0, i] + A52 * K[1, i] + A53 * K[2, i] + A54 * K[3, i])
+    elif stage == 5:
+        for i in range(NS):
+            acc = A61 * K[0, i] + A62 * K[1, i] + A63 * K[2, i] + A64 * K[3, i]
+            out[i] = y[i] + h * (acc + A65 * K[4, i])
+    else:
+        for i in range(NS):
+            acc = B1 * K[0, i] + B3 * K[2, i] + B4 * K[3, i] + B5 * K[4, i]
+            out[i] = y[i] + h * (acc + B6 * K[5, i])
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _stage(law, p, fric, c, md, y, K, h, stage, work):
+    """Stage ``stage`` (1..5): its point into ``work``, its derivative into ``K[stage]``."""
+    _stage_point(y, K, h, stage, work)
+    r = rhs(law, p, fric, c, md, state_tuple(work))
     for i in range(NS):
-        acc = 0.0
-        for j in range(stage):
-            acc += DP_A[stage, j] * K[j, i]
-        out[i] = y[i] + h * acc
+        K[stage, i] = r[i]
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -106,20 +132,20 @@ def dp_step(law, p, fric, c, md, y, K, h, rtol, sc, ynew):
     FSAL) and returns (scaled RMS error norm, event tuple at ``ynew``, evaluated quantities at
     ``ynew``). Error scale of component i: ``rtol (sc[i] + max(|y_i|, |ynew_i|))``.
     """
-    for stage in range(1, 6):
-        _stage_point(y, K, h, stage, ynew)
-        r = rhs(law, p, fric, c, md, state_tuple(ynew))
-        for i in range(NS):
-            K[stage, i] = r[i]
+    # the stages one by one (a constant stage number each: no branch on it is left)
+    _stage(law, p, fric, c, md, y, K, h, 1, ynew)
+    _stage(law, p, fric, c, md, y, K, h, 2, ynew)
+    _stage(law, p, fric, c, md, y, K, h, 3, ynew)
+    _stage(law, p, fric, c, md, y, K, h, 4, ynew)
+    _stage(law, p, fric, c, md, y, K, h, 5, ynew)
     _stage_point(y, K, h, 6, ynew)
     r, gnew, evq = rhs_events(law, p, fric, c, md, state_tuple(ynew))
     for i in range(NS):
         K[6, i] = r[i]
     err = 0.0
     for i in range(NS):
-        ei = 0.0
-        for j in range(7):
-            ei += DP_E[j] * K[j, i]
+        ei = E1 * K[0, i] + E3 * K[2, i] + E4 * K[3, i] + E5 * K[4, i] + E6 * K[5, i]
+        ei += E7 * K[6, i]
         scale = rtol * (sc[i] + max(abs(y[i]), abs(ynew[i])))
         q = h * ei / scale
         err += q * q
@@ -175,7 +201,9 @@ def locate(ev, g0, g1, law, p, fric, c, md, y0, K, h, Q, yt):
             if side == -1:
                 fb *= 0.5
             side = -1
-        if b - a <= 1e-14 or abs(th - prev) <= 1e-14:
+        # converged: the bracket is closed, or the iterates stalled on the g > 0 side (a
+        # stall on the g <= 0 side, e.g. at an exact zero, bisects on towards b)
+        if b - a <= 1e-14 or (b == th and abs(th - prev) <= 1e-14):
             break
         prev = th
     return b

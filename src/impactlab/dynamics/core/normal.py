@@ -42,15 +42,33 @@ def geometry(c, y):
         xs = y[S_X] + d * c[C_S0] * phi
         slide = y[S_X] + b * phi
     else:
-        th = c[C_TH0] + phi
-        s = math.sin(th)
-        co = math.cos(th)
-        a = d * co
-        b = d * s + c[C_R]
-        delta = d * (s - c[C_S0]) - y[S_Y]
-        xs = y[S_X] - d * (co - c[C_C0])
+        ds, dc = rotation_increments(c[C_S0], c[C_C0], c[C_TH0], phi)
+        a = d * (c[C_C0] + dc)
+        b = d * (c[C_S0] + ds) + c[C_R]
+        delta = d * ds - y[S_Y]
+        xs = y[S_X] - d * dc
         slide = xs + c[C_R] * phi
     return delta, a, b, xs, slide
+
+
+#: |phi| [rad] up to which ``rotation_increments`` uses its series (truncation below 1e-20).
+SERIES_PHI = 0.05
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def rotation_increments(s0, c0, th0, phi):
+    """(sin(th0 + phi) - s0, cos(th0 + phi) - c0) with s0 = sin th0, c0 = cos th0.
+
+    A rod turns by milliradians during an impact: for |phi| < SERIES_PHI from the addition
+    theorem with Taylor series of sin(phi) and cos(phi) - 1 (truncation error below 1e-20,
+    no cancellation in the differences, no sin/cos call); beyond it from sin and cos."""
+    if abs(phi) < SERIES_PHI:
+        p2 = phi * phi
+        sp = phi * (1.0 - p2 / 6.0 * (1.0 - p2 / 20.0 * (1.0 - p2 / 42.0 * (1.0 - p2 / 72.0))))
+        cm = -0.5 * p2 * (1.0 - p2 / 12.0 * (1.0 - p2 / 30.0 * (1.0 - p2 / 56.0)))
+        return s0 * cm + c0 * sp, c0 * cm - s0 * sp
+    th = th0 + phi
+    return math.sin(th) - s0, math.cos(th) - c0
 
 
 @njit(cache=True, inline="always", error_model="numpy")

@@ -3,18 +3,19 @@ the drop of a flexible rod on a flat, from the first touch of its tip through ev
 and re-contact until the rod leaves the flat for good.
 
 It imports only numpy, numba, math, ``impactlab.contact.kernels``, ``impactlab.schema``, the
-Dormand-Prince tableau of ``impactlab.dynamics.core.integrator`` and the core's disk-cache
-guard ``impactlab.dynamics.core._cache``. The model and the
+Dormand-Prince tableau of ``impactlab.dynamics.core.integrator``, the rigid core's friction
+kernels and layout constants (``core.friction``, ``core.normal``, ``core.layout``) and the
+core's disk-cache guard ``impactlab.dynamics.core._cache``. The model and the
 algorithm are documented in ``docs/flexible.md``; the Python API is
 ``impactlab.dynamics.drop.simulate_drop``.
 
-Modules: ``layout`` (vector layouts, outputs), ``kinematics`` (end kinematics, forces,
-energies), ``rhs`` (right-hand side and event functions), ``stepper`` (Dormand-Prince steps,
-dense output, event location), ``flight`` (closed-form free flight and the end-of-sequence
-test), ``contacts`` (the event actions: touch, turning point, separation, stick/slip, dents),
-``history`` (recorded rows), ``setup`` (first touch, scales, work arrays), ``steps``,
-``coast`` and ``events`` (the branches of the loop), ``results`` (the output vector),
-``model`` (the inputs from Python) and ``driver`` (``drop``: the event loop).
+Modules: ``layout`` (vector layouts, outputs), ``kinematics`` (end kinematics, forces, energies),
+``rhs`` (right-hand side and event functions), ``stepper`` (Dormand-Prince steps, dense output,
+event location), ``flight`` (closed-form free flight and the end-of-sequence test), ``contacts``
+(the event actions: touch, turning point, separation, stick/slip, dents), ``friction`` (the friction
+models), ``history`` (recorded rows), ``setup`` (first touch, scales, work arrays), ``steps``,
+``coast`` and ``events`` (the branches of the loop), ``results`` (the output vector), ``model`` (the
+inputs from Python) and ``driver`` (``drop``: the event loop).
 
 Every compiled function takes the model as one tuple
 ``mdl = (law, p, c, om, om2, dmp, zeta, Ue, We, Pe, Tg, ia, ib)``:

@@ -8,10 +8,10 @@ reloads along that dent's unloading curve until delta_m is passed, then follows 
 curve; elsewhere the flat is virgin. Out of contact the touch threshold of an end is the
 delta_r of the dent under it (0 over virgin flat).
 
-Coulomb friction (event-based, the package's ``coulomb`` model extended to the flexible
-body): in slip F_t = -sign(v_t) mu F_n; when v_t reaches 0 the stick force is computed and
-the contact sticks while |F_t| <= mu F_n, else it slips against that force; at F_n = 0 the
-ratio as F_n -> 0+ decides, as in the rigid engine.
+Friction (``friction``: impulse_ratio, coulomb, mindlin as in the rigid engine): the mode is
+set at every touch; Coulomb: in slip F_t = -sign(v_t) mu F_n; when v_t reaches 0 the stick
+force is computed and the contact sticks while |F_t| <= mu F_n, else it slips against that
+force; at F_n = 0 the ratio as F_n -> 0+ decides, as in the rigid engine.
 """
 
 from __future__ import annotations
@@ -27,8 +27,14 @@ from impactlab.contact.kernels import (
     residual_depth,
     unloading_radius,
 )
+from impactlab.dynamics.core.layout import FR_COULOMB, FR_MINDLIN
 from impactlab.dynamics.flexcore import layout as F
-from impactlab.dynamics.flexcore.kinematics import stick_ratio
+from impactlab.dynamics.flexcore.friction import (
+    coulomb_decide,
+    initial_mode,
+    mindlin_switch,
+    radius_factor,
+)
 from impactlab.dynamics.flexcore.rhs import evaluate
 
 
@@ -63,24 +69,11 @@ def set_threshold(md, dents, nd, k, x, delta):
 
 
 @njit(cache=True)
-def coulomb_decide(c, M, Jn, Jt, k, Fn, Ft_stick, mu):
-    """Friction mode of end k at v_t = 0: 0 (stick) if |F_stick| <= mu F_n, else the slip
-    direction opposite to the needed force; at F_n = 0 the ratio as F_n -> 0+ decides."""
-    if Fn > 0.0:
-        if abs(Ft_stick) <= mu * Fn:
-            return 0.0
-        return -1.0 if Ft_stick > 0.0 else 1.0
-    r = stick_ratio(c, M, Jn, Jt, k)
-    if abs(r) <= mu:
-        return 0.0
-    return -1.0 if r > 0.0 else 1.0
-
-
-@njit(cache=True)
-def pending(g, ek, md, k, kind, tol_v, tol_d, tol_f):
+def pending(g, ek, md, k, kind, fric, tol_v, tol_d, tol_f):
     """Whether event ``kind`` of end k is already past its switch at a restart (several events
     at one instant). The interference events also need the rate that takes them there (touch
-    and reload: delta increasing; separation: decreasing)."""
+    and reload: delta increasing; separation: decreasing). Friction: Coulomb with the
+    velocity or force tolerance, Mindlin as the rigid core's restart (any positive value)."""
     v = g[k * F.NEVK + kind]
     vn = ek[k, F.EK_VN]
     if kind == F.EV_TOUCH:
@@ -92,6 +85,8 @@ def pending(g, ek, md, k, kind, tol_v, tol_d, tol_f):
     if kind == F.EV_VN:
         return v > tol_v
     if kind == F.EV_FRIC:
+        if fric != FR_COULOMB:
+            return v > 0.0
         if md[k, F.MD_FM] != 0.0:
             return v > tol_v
         return v > tol_f
@@ -113,24 +108,17 @@ def new_dent(dents, di, k, x, R):
 
 
 @njit(cache=True)
-def initial_slip(c, M, md, k, vt, Jn, Jt):
-    """The friction mode of end k at touch: the sign of v_t, or the F_n -> 0+ decision."""
-    mu = c[F.C_MU]
-    if mu > 0.0:
-        if vt != 0.0:
-            md[k, F.MD_FM] = 1.0 if vt > 0.0 else -1.0
-        else:
-            md[k, F.MD_FM] = coulomb_decide(c, M, Jn, Jt, k, 0.0, 0.0, mu)
-
-
-@njit(cache=True)
-def _reload_mode(c, md, dents, k, di):
+def _reload_mode(mdl, md, dents, k, di):
     """Mode table of end k touching dent di: its unloading curve (loading if it has none)."""
+    c = mdl[2]
     md[k, F.MD_PH] = 1.0
     md[k, F.MD_DM] = dents[di, F.DT_DM]
     md[k, F.MD_DR] = dents[di, F.DT_DR]
     md[k, F.MD_RR] = dents[di, F.DT_RR]
     md[k, F.MD_DSW] = c[F.C_DSW] if dents[di, F.DT_DM] < c[F.C_DSW] else math.inf
+    md[k, F.MD_AF] = radius_factor(
+        mdl[0], mdl[1], c, dents[di, F.DT_DM], dents[di, F.DT_DR], dents[di, F.DT_RR]
+    )
     dents[di, F.DT_NC] += 1.0
     if dents[di, F.DT_DM] <= 0.0:
         md[k, F.MD_PH] = 0.0
@@ -155,7 +143,7 @@ def on_touch(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, ek, Jn, Jt):
     contacts[ci, F.CR_FMAX] = 0.0
     contacts[ci, F.CR_STICK] = 0.0
     if di >= 0:
-        _reload_mode(c, md, dents, k, di)
+        _reload_mode(mdl, md, dents, k, di)
         contacts[ci, F.CR_RELOAD] = 1.0
     else:
         if sv[F.SV_ND] >= F.MAX_DENTS:
@@ -168,12 +156,13 @@ def on_touch(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, ek, Jn, Jt):
         md[k, F.MD_DR] = 0.0
         md[k, F.MD_RR] = c[F.C_R]
         md[k, F.MD_DSW] = c[F.C_DSW]
+        md[k, F.MD_AF] = 1.0
         contacts[ci, F.CR_RELOAD] = 0.0
     contacts[ci, F.CR_DENT] = di
     md[k, F.MD_DENT] = di
     md[k, F.MD_IN] = 1.0
     md[k, F.MD_COMP] = 1.0
-    initial_slip(c, M, md, k, ek[k, F.EK_VT], Jn, Jt)
+    initial_mode(mdl[1], c, M, md, k, ek[k, F.EK_VT], ek[k, F.EK_VN], Jn, Jt)
     b = iq + 3 + 4 * k
     for i in range(4):
         snap[k, i] = y[b + i]
@@ -199,6 +188,7 @@ def on_turn(mdl, md, k, delta, dents):
         md[k, F.MD_DM] = delta
         md[k, F.MD_DR] = dri
         md[k, F.MD_RR] = unloading_radius(p[P_ESTAR], delta, Fm, dri)
+        md[k, F.MD_AF] = radius_factor(law, p, mdl[2], delta, dri, md[k, F.MD_RR])
         md[k, F.MD_PH] = 1.0
         di = int(md[k, F.MD_DENT])
         dents[di, F.DT_DM] = delta
@@ -243,10 +233,13 @@ def on_separation(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, y_end, e
 
 @njit(cache=True)
 def on_friction(mdl, md, y, k, der, ev, ek, Jn, Jt):
-    """Stick/slip switch of end k: from slip at v_t = 0, stick or reverse (decided with the
-    stick force); from stick, slip against the needed force."""
+    """Stick/slip switch of end k. Coulomb: from slip at v_t = 0, stick or reverse (decided
+    with the stick force); from stick, slip against the needed force. Mindlin: the rigid
+    core's switch (``friction.mindlin_switch``)."""
     c, M = mdl[2], mdl[3].shape[0]
-    if md[k, F.MD_FM] != 0.0:
+    if c[F.C_FRIC] == FR_MINDLIN:
+        mindlin_switch(c, md, k, y, y.shape[0] - F.NQUAD + F.Q_TAN, ek)
+    elif md[k, F.MD_FM] != 0.0:
         md[k, F.MD_FM] = 0.0
         evaluate(mdl, md, y, der, ev, ek, Jn, Jt)
         md[k, F.MD_FM] = coulomb_decide(c, M, Jn, Jt, k, ek[k, F.EK_FN], ek[k, F.EK_FT], c[F.C_MU])

@@ -83,8 +83,8 @@ def drop(mdl, vx0, vy0, w0, rtol, t_max, stop_mode, record_on, out, contacts, de
             if sv[F.SV_NEVENTS] > F.MAX_EVENTS:
                 sv[F.SV_STATUS] = F.ST_TOO_MANY_EVENTS
                 break
-            if not handle_events(jev, mdl, md, y, t, K, gold, sv, contacts, dents, cur_con, snap,
-                                 y_end, der, ev, ek, Jn, Jt):  # fmt: skip
+            if not handle_events(jev, mdl, md, y, t, K, gold, sv, sc, contacts, dents, cur_con,
+                                 snap, y_end, der, ev, ek, Jn, Jt):  # fmt: skip
                 break
         if record_on:
             hist, nh = record(hist, nh, t, mdl, y, ek, sv[F.SV_E0])

@@ -15,6 +15,7 @@ from impactlab.dynamics.flexcore.contacts import (
     on_turn,
     pending,
 )
+from impactlab.dynamics.flexcore.friction import mindlin_after
 from impactlab.dynamics.flexcore.rhs import evaluate
 
 #: The order in which simultaneous events are handled at a restart.
@@ -23,10 +24,12 @@ _PENDING_ORDER = (F.EV_SEP, F.EV_TOUCH, F.EV_VN, F.EV_RELOAD, F.EV_SWITCH, F.EV_
 
 @njit(cache=True)
 def handle_events(
-    jev, mdl, md, y, t, K, gold, sv, contacts, dents, cur_con, snap, y_end, der, ev, ek, Jn, Jt
+    jev, mdl, md, y, t, K, gold, sv, sc, contacts, dents, cur_con, snap, y_end, der, ev, ek, Jn, Jt
 ):
     """Apply event ``jev`` at (t, y) and every event already past its switch at the same
-    instant (at most 8). False (with ``sv[F.SV_STATUS]`` set) on a failure."""
+    instant (at most 8); ``sc``: the error scales (the Mindlin state's changes with its
+    meaning). False (with ``sv[F.SV_STATUS]`` set) on a failure."""
+    fric = mdl[2][F.C_FRIC]
     for _it in range(8):
         k = jev // F.NEVK
         kind = jev % F.NEVK
@@ -48,12 +51,13 @@ def handle_events(
         if st != F.ST_OK:
             sv[F.SV_STATUS] = st
             return False
+        mindlin_after(mdl, md, k, kind, y, ek, sc, sv)
         evaluate(mdl, md, y, K[0], gold, ek, Jn, Jt)
         jev = -1
         for kk in range(F.NE):
             for kind2 in _PENDING_ORDER:
                 if jev < 0 and pending(
-                    gold, ek, md, kk, kind2, sv[F.SV_TOL_V], sv[F.SV_TOL_D], sv[F.SV_TOL_F]
+                    gold, ek, md, kk, kind2, fric, sv[F.SV_TOL_V], sv[F.SV_TOL_D], sv[F.SV_TOL_F]
                 ):
                     jev = kk * F.NEVK + kind2
         if jev < 0:

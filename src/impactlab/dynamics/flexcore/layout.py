@@ -4,11 +4,14 @@ events, the dents, the contact records, the run state, the output vector and the
 Imports only ``impactlab.schema`` (L0): the compiled modules of this package read the indices.
 
 State vector (length 6 + 2 M + NQUAD, M elastic modes):
-``[dX, dY, phi, q_1..q_M, vx, vy, spin, q'_1..q'_M, W_n, W_t, W_d, (P_n, P_t, S, |S|) x NE]``;
+``[dX, dY, phi, q_1..q_M, vx, vy, spin, q'_1..q'_M, W_n, W_t, W_d, (P_n, P_t, S, |S|) x NE,
+Q_t x NE]``;
 dX, dY: displacement of the centre of mass C from its position at first touch [m] (the origin
 of x is the first contact point), phi: rotation since first touch [rad], q: modal coordinates
 [kg^1/2 m], W_n, W_t, W_d: work of the normal forces, of friction and of the modal damping [J];
-per end: normal and tangential impulse [N s], signed and absolute slip integrals [m].
+per end: normal and tangential impulse [N s], signed and absolute slip integrals [m]; per end
+the Mindlin tangential state Q_t (as the rigid core's ``S_Q``: the force [N] while the contact
+grows, the elastic displacement [m] while it shrinks; 0 for the other friction models).
 """
 
 from __future__ import annotations
@@ -16,7 +19,8 @@ from __future__ import annotations
 from impactlab.schema import Field
 
 NE = 2  #: number of ends (0: the tip that touches first, 1: the other end)
-NQUAD = 3 + 4 * NE  #: quadratures at the end of the state vector
+Q_TAN = 3 + 4 * NE  #: offset of the Mindlin states Q_t in the block after the modal velocities
+NQUAD = Q_TAN + NE  #: quadratures and tangential states at the end of the state vector
 
 # ---- constants vector (``C_*``) ---------------------------------------------------------------
 C_D = 0  #: L/2 [m]
@@ -25,12 +29,14 @@ C_M = 2  #: mass [kg]
 C_I = 3  #: I_C [kg m^2]
 C_G = 4  #: gravity [m/s^2]
 C_TH0 = 5  #: angle at first touch [rad]
-C_MU = 6  #: Coulomb friction coefficient [1]
+C_MU = 6  #: friction coefficient [1]
 C_DLIM = 7  #: the law's validity limit [m]
 C_DSW = 8  #: the law's elastic -> plastic switch interference [m] (inf: none)
 C_S0 = 9  #: sin(angle)
 C_C0 = 10  #: cos(angle)
-NC = 11
+C_FRIC = 11  #: friction model id (``impactlab.friction``: 0 impulse_ratio, 1 coulomb, 2 mindlin)
+C_GS = 12  #: G* of the pair [Pa] (Mindlin tangential stiffness k_t = 8 G* a)
+NC = 13
 
 # ---- per-end mode table (``MD_*``) ------------------------------------------------------------
 MD_IN = 0  #: 1 in contact
@@ -38,11 +44,13 @@ MD_PH = 1  #: 0 loading curve, 1 unloading / reloading curve
 MD_DM = 2  #: delta_m of the branch [m]
 MD_DR = 3  #: delta_r [m] (out of contact: the touch threshold, the dent's delta_r under the end)
 MD_RR = 4  #: R_r of the unloading curve [m]
-MD_FM = 5  #: friction: 0 stick, +-1 slip direction (sign of v_t)
+MD_FM = 5  #: friction: 0 stick (Mindlin: no gross slip), +-1 slip direction (sign of v_t)
 MD_COMP = 6  #: 1 while delta increases
 MD_DSW = 7  #: pending elastic -> plastic switch interference [m] (inf when passed)
 MD_DENT = 8  #: index of the dent under the end (-1: virgin flat)
-NMD = 9
+MD_SIR = 9  #: impulse_ratio: F_t = MD_SIR mu F_n over the contact (sign fixed at touch)
+MD_AF = 10  #: Mindlin: unloading contact-radius factor (k_t continuous at the turning point)
+NMD = 11
 
 # ---- per-end event functions (``EV_*``; event j of end k is k * NEVK + EV_*) -------------------
 EV_TOUCH = 0
@@ -63,6 +71,7 @@ EK_VT = 3  #: slip velocity v_t [m/s]
 EK_FN = 4  #: normal force [N]
 EK_FT = 5  #: tangential force [N]
 EK_JDOT = 6  #: dJ_t/dt z' (the velocity-dependent tangential acceleration) [m/s^2]
+EK_KT = 7  #: Mindlin tangential stiffness k_t [N/m] (0 for the other models)
 NEK = 8
 
 # ---- dents on the flat (``DT_*``) -------------------------------------------------------------
@@ -126,7 +135,9 @@ SV_EPS_CLEAR = 22  #: clearance margin of the end-of-sequence test [m]
 SV_E0 = 23  #: initial energy [J]
 SV_VN0 = 24  #: normal velocity of the tip at first touch [m/s]
 SV_TSTAR = 25  #: Hertzian time scale [s]
-NSV = 26
+SV_FSCALE = 26  #: tangential force scale [N] (error scale of Q_t as a force)
+SV_DSTAR = 27  #: Hertzian interference scale [m] (error scale of Q_t as a displacement)
+NSV = 28
 
 # ---- status ------------------------------------------------------------------------------------
 ST_OK = 0

@@ -21,8 +21,11 @@ def constants(
     angle: float,
     mu: float,
     p: np.ndarray,
+    friction_id: int = 1,
+    gstar: float = math.nan,
 ) -> np.ndarray:
-    """The constants vector (``layout.C_*``; SI units) for the law parameters ``p``."""
+    """The constants vector (``layout.C_*``; SI units) for the law parameters ``p``, the
+    friction model's id (``impactlab.friction``; default coulomb) and G* [Pa] (Mindlin)."""
     dsw = float(p[P_DSW])
     values = {
         F.C_D: half_length,
@@ -36,6 +39,8 @@ def constants(
         F.C_DSW: dsw if (math.isfinite(dsw) and dsw > 0.0) else math.inf,
         F.C_S0: math.sin(angle),
         F.C_C0: math.cos(angle),
+        F.C_FRIC: float(friction_id),
+        F.C_GS: gstar,
     }
     c = np.zeros(F.NC)
     for i, v in values.items():

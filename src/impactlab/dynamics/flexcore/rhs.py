@@ -3,17 +3,21 @@
 Equations of motion (mass-normalised modes, floating frame; docs/flexible.md):
 m X'' = sum F_t,   m Y'' = sum F_n - m g,   I_C phi'' = sum (J_n,phi F_n + J_t,phi F_t),
 q_j'' = -omega_j^2 q_j - 2 zeta_j omega_j q_j' - dV_g/dq_j + sum (J_n,j F_n + J_t,j F_t),
-with F_n from the contact law, F_t = -sign(v_t) mu F_n in slip and, in stick, the force that
-keeps v_t = 0 (from the tangential mobility J_t M^-1 J_t^T; a 2x2 system when both ends
-stick). Quadratures: the works of the normal forces, of friction and of the damping, and per
-end the impulses and slip integrals. An event fires when its function goes from <= 0 to > 0.
+with F_n from the contact law and F_t from the friction model (``friction``): Coulomb
+F_t = -sign(v_t) mu F_n in slip and, in stick, the force that keeps v_t = 0 (from the tangential
+mobility J_t M^-1 J_t^T; a 2x2 system when both ends stick); impulse_ratio s mu F_n; Mindlin
+from the end's tangential state Q_t (its rate is a state derivative). Quadratures: the works of
+the normal forces, of friction and of the damping, and per end the impulses and slip integrals.
+An event fires when its function goes from <= 0 to > 0.
 """
 
 from __future__ import annotations
 
 from numba import njit
 
+from impactlab.dynamics.core.layout import FR_COULOMB
 from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.flexcore.friction import friction_event, state_rate, tangential
 from impactlab.dynamics.flexcore.kinematics import end_kinematics, mobility, normal_force
 
 
@@ -21,6 +25,7 @@ from impactlab.dynamics.flexcore.kinematics import end_kinematics, mobility, nor
 def _end_forces(law, p, c, Ue, We, Pe, md, y, ek, Jn, Jt):
     """Kinematics of both ends and the contact forces without stick forces into ``ek``."""
     mu = c[F.C_MU]
+    iqt = 6 + 2 * Ue.shape[1] + F.Q_TAN
     for k in range(F.NE):
         delta, xS, vn, vt, jdot = end_kinematics(c, Ue, We, Pe, y, k, Jn, Jt)
         ek[k, F.EK_DELTA] = delta
@@ -29,11 +34,12 @@ def _end_forces(law, p, c, Ue, We, Pe, md, y, ek, Jn, Jt):
         ek[k, F.EK_VT] = vt
         ek[k, F.EK_FN] = normal_force(law, p, md, k, delta)
         ek[k, F.EK_JDOT] = jdot
-        fm = md[k, F.MD_FM]
-        if md[k, F.MD_IN] != 0.0 and mu > 0.0 and fm != 0.0:
-            ek[k, F.EK_FT] = -fm * mu * ek[k, F.EK_FN]
-        else:
-            ek[k, F.EK_FT] = 0.0
+        ek[k, F.EK_FT] = 0.0
+        ek[k, F.EK_KT] = 0.0
+        if md[k, F.MD_IN] != 0.0 and mu > 0.0:
+            ft, kt = tangential(law, p, c, md, k, y[iqt + k], delta, ek[k, F.EK_FN])
+            ek[k, F.EK_FT] = ft
+            ek[k, F.EK_KT] = kt
 
 
 @njit(cache=True, inline="always")
@@ -148,15 +154,17 @@ def _quadratures(c, dmp, md, y, der, ek):
             der[b] = ek[k, F.EK_FN]
             der[b + 1] = ek[k, F.EK_FT]
             der[b + 2] = ek[k, F.EK_VT]
-            if mu > 0.0:
+            if mu > 0.0 and c[F.C_FRIC] == FR_COULOMB:
                 der[b + 3] = md[k, F.MD_FM] * ek[k, F.EK_VT]
             else:
                 der[b + 3] = abs(ek[k, F.EK_VT])
+            der[iq + F.Q_TAN + k] = state_rate(c, md, k, ek[k, F.EK_KT], ek[k, F.EK_VT])
         else:
             der[b] = 0.0
             der[b + 1] = 0.0
             der[b + 2] = 0.0
             der[b + 3] = 0.0
+            der[iq + F.Q_TAN + k] = 0.0
     wd = 0.0
     for j in range(M):
         wd -= dmp[j] * y[iv + 3 + j] * y[iv + 3 + j]
@@ -166,9 +174,10 @@ def _quadratures(c, dmp, md, y, der, ek):
 
 
 @njit(cache=True, inline="always")
-def _events(c, md, ev, ek):
+def _events(law, p, c, md, y, ev, ek):
     """The event functions of both ends (-1 where an event cannot fire in the mode)."""
     mu = c[F.C_MU]
+    iqt = y.shape[0] - F.NQUAD + F.Q_TAN
     for k in range(F.NE):
         e0 = k * F.NEVK
         for i in range(F.NEVK):
@@ -188,11 +197,7 @@ def _events(c, md, ev, ek):
         else:
             ev[e0 + F.EV_SEP] = md[k, F.MD_DR] - delta
         if mu > 0.0:
-            fm = md[k, F.MD_FM]
-            if fm != 0.0:
-                ev[e0 + F.EV_FRIC] = -fm * ek[k, F.EK_VT]
-            else:
-                ev[e0 + F.EV_FRIC] = abs(ek[k, F.EK_FT]) - mu * ek[k, F.EK_FN]
+            ev[e0 + F.EV_FRIC] = friction_event(law, p, c, md, k, y[iqt + k], ek)
 
 
 @njit(cache=True)
@@ -202,10 +207,10 @@ def rates(law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, y, der, ev, ek, Jn, J
     Jacobian rows. The model's arrays one by one (the hot path: see ``evaluate``)."""
     _end_forces(law, p, c, Ue, We, Pe, md, y, ek, Jn, Jt)
     _accelerations(c, om2, dmp, Tg, ia, ib, md, y, der, ek, Jn, Jt)
-    if c[F.C_MU] > 0.0:
+    if c[F.C_MU] > 0.0 and c[F.C_FRIC] == FR_COULOMB:
         _stick_forces(c, om2.shape[0], md, der, ek, Jt)
     _quadratures(c, dmp, md, y, der, ek)
-    _events(c, md, ev, ek)
+    _events(law, p, c, md, y, ev, ek)
 
 
 @njit(cache=True)

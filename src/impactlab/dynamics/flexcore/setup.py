@@ -10,10 +10,8 @@ from numba import njit
 
 from impactlab.contact.kernels import P_ESTAR
 from impactlab.dynamics.flexcore import layout as F
-from impactlab.dynamics.flexcore.contacts import (
-    initial_slip,
-    new_dent,
-)
+from impactlab.dynamics.flexcore.contacts import new_dent
+from impactlab.dynamics.flexcore.friction import initial_mode
 from impactlab.dynamics.flexcore.rhs import evaluate
 
 
@@ -55,6 +53,11 @@ def scales(mdl, vx0, vy0, w0, sc, sv):
         sc[b + 1] = meff * vstar
         sc[b + 2] = dstar
         sc[b + 3] = dstar
+    fscale = meff * vstar / tstar
+    for k in range(F.NE):
+        sc[iq + F.Q_TAN + k] = fscale  # the Mindlin state starts as a force
+    sv[F.SV_FSCALE] = fscale
+    sv[F.SV_DSTAR] = dstar
     sv[F.SV_TOL_V] = 1e-9 * vstar
     sv[F.SV_TOL_D] = 1e-12 * dstar
     sv[F.SV_TOL_F] = 1e-9 * meff * vstar / tstar
@@ -77,6 +80,7 @@ def first_touch(mdl, md, y, vx0, vy0, w0, sv, contacts, dents, cur_con, der, ev,
         md[k, F.MD_RR] = c[F.C_R]
         md[k, F.MD_DSW] = c[F.C_DSW]
         md[k, F.MD_DENT] = -1.0
+        md[k, F.MD_AF] = 1.0
     y[iv] = vx0
     y[iv + 1] = vy0
     y[iv + 2] = w0
@@ -87,7 +91,7 @@ def first_touch(mdl, md, y, vx0, vy0, w0, sv, contacts, dents, cur_con, der, ev,
     md[0, F.MD_COMP] = 1.0
     md[0, F.MD_DENT] = 0.0
     evaluate(mdl, md, y, der, ev, ek, Jn, Jt)
-    initial_slip(c, M, md, 0, ek[0, F.EK_VT], Jn, Jt)
+    initial_mode(mdl[1], c, M, md, 0, ek[0, F.EK_VT], ek[0, F.EK_VN], Jn, Jt)
     for f in (F.CR_END, F.CR_T0, F.CR_X0, F.CR_DENT, F.CR_RELOAD, F.CR_DMAX, F.CR_FMAX, F.CR_STICK):
         contacts[0, f] = 0.0
     cur_con[0] = 0

@@ -7,6 +7,7 @@ import math
 
 from numba import njit
 
+from impactlab.dynamics.core.layout import FR_IMPULSE
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.history import record
 from impactlab.dynamics.flexcore.kinematics import mechanical_energy
@@ -41,11 +42,12 @@ def step_stats(mdl, md, t, tend, sv, contacts, dents, cur_con, ek):
     """Per-contact and run maxima, stick time and dent extents after a step to ``tend``;
     False on a non-finite force."""
     mu = mdl[2][F.C_MU]
+    sticks = mu > 0.0 and mdl[2][F.C_FRIC] != FR_IMPULSE  # the models with a stick state
     ok = True
     for k in range(F.NE):
         if md[k, F.MD_IN] != 0.0:
             ci = cur_con[k]
-            if mu > 0.0 and md[k, F.MD_FM] == 0.0:
+            if sticks and md[k, F.MD_FM] == 0.0:
                 contacts[ci, F.CR_STICK] += tend - t
                 sv[F.SV_STICK] += tend - t
             contacts[ci, F.CR_DMAX] = max(contacts[ci, F.CR_DMAX], ek[k, F.EK_DELTA])

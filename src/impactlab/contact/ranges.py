@@ -1,0 +1,260 @@
+"""The range over which each contact law was fitted or validated: one table, sources, status.
+
+A law fitted to finite-element (FEM) results holds over the interferences and materials of those
+results; beyond them it is extrapolated. Each :class:`LawRange` states
+
+- ``delta_ratio_max``: the upper end of the range as a ratio ``delta / delta_ref`` (``inf``: the
+  source states no fitted range);
+- ``delta_ref``: the reference interference of that ratio. For every law it is the law's own
+  critical (first-yield) interference, ``p[P_DY]`` (:func:`critical_interference`): Jackson-Green's
+  ``delta_c = (pi C S_y / (2 E*))^2 R`` for ``ghaednia`` and ``jackson-green`` (paper Eq. 15),
+  Kogut-Komvopoulos' ``delta_y`` (``delta/r' = 1.78 S_y/E*``), Brake's ``delta_y`` (Eq. 23),
+  Thornton's ``delta_y`` (``p_0 = p_y``); for ``hertz``, which has no yield, the Jackson-Green
+  ``delta_c`` of the pair (first yield);
+- ``e_over_sy``: the range of E/S_y the source covers (``None``: not found in the sources read);
+- ``status``: ``"confirmed"`` (read in the source), ``"provisional"`` (a labelled stand-in, the
+  source's own range was not found), ``"theory"`` (a limit of the theory itself: Hertz holds up
+  to first yield) or ``"analytical"`` (a closed-form law with no fitted range: never
+  extrapolated);
+- ``source`` (what the number rests on) and ``reference_keys`` (``impactlab.references``).
+
+The engine compares the largest interference of an impact with ``delta_ratio_max`` (strictly
+greater: extrapolated) and sets ``impactlab.flags.ResultFlag.LAW_EXTRAPOLATED``; see
+:func:`extrapolation_flags` (vectorised, used by ``run_arrays``) and :func:`law_extrapolated`.
+What was searched and not found is listed in docs/laws/index.md ("Fitted ranges").
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+from types import MappingProxyType
+from typing import Any, Protocol
+
+import numpy as np
+
+from impactlab.contact import kernels as k
+from impactlab.contact.names import Law
+from impactlab.flags import FLAG_LAW_EXTRAPOLATED
+from impactlab.references import cite
+
+
+class _Model(Protocol):
+    """What :func:`law_extrapolated` reads of a ``contact.base.ContactModel``."""
+
+    @property
+    def law_id(self) -> int: ...
+
+    @property
+    def params(self) -> np.ndarray: ...
+
+
+__all__ = [
+    "RANGES",
+    "STATUSES",
+    "LawRange",
+    "calibrated_max",
+    "critical_interference",
+    "delta_ratio",
+    "extrapolation",
+    "extrapolation_flags",
+    "law_extrapolated",
+    "law_range",
+]
+
+#: The meaning of each ``LawRange.status``.
+STATUSES: Mapping[str, str] = MappingProxyType(
+    {
+        "confirmed": "read in the source",
+        "provisional": "stand-in value: the source's own range was not found",
+        "theory": "limit of the theory itself",
+        "analytical": "closed-form law, no fitted range",
+    }
+)
+
+#: The stand-in used where a FEM-fitted law's own range was not found: Kogut & Etsion (2002)
+#: fit their FEM results for 1 <= delta/delta_c <= 110 (as quoted in this project since wave 1;
+#: the number was not re-read in the source here; an independent implementation of their model,
+#: TaoYang1999/SCHC-framework asperity_f_cal.m, uses the same breakpoints 1, 6 and 110 delta_c).
+PROVISIONAL_FEM_RATIO = 110.0
+
+_PROVISIONAL_SOURCE = (
+    "provisional stand-in: 110 x the law's critical interference, the FEM range of Kogut & "
+    "Etsion (2002, 1 <= delta/delta_c <= 110, as quoted, not re-read); the {who} range was not "
+    "found in the sources searched (publisher pages and full texts were not available)"
+)
+
+
+@dataclass(frozen=True)
+class LawRange:
+    """The fitted (validated) range of one contact law (see the module docstring)."""
+
+    law: Law
+    delta_ratio_max: float
+    delta_ref: str
+    status: str
+    source: str
+    reference_keys: tuple[str, ...]
+    e_over_sy: tuple[float, float] | None = None
+
+    def __post_init__(self) -> None:
+        if self.status not in STATUSES:
+            raise ValueError(f"status must be one of {sorted(STATUSES)}, got {self.status!r}")
+        if not self.delta_ratio_max > 0.0:
+            raise ValueError(f"delta_ratio_max must be > 0, got {self.delta_ratio_max!r}")
+        cite(*self.reference_keys)  # every key is registered
+
+    @property
+    def confirmed(self) -> bool:
+        """True only when the number was read in the source."""
+        return self.status == "confirmed"
+
+    @property
+    def text(self) -> str:
+        """One line for people: ``delta <= 110 delta_c (provisional)``."""
+        if math.isinf(self.delta_ratio_max):
+            return f"no fitted range ({self.status}): never flagged as extrapolated"
+        ref = self.delta_ref.split(" ")[0]
+        return f"delta <= {self.delta_ratio_max:g} {ref} ({self.status})"
+
+    def describe(self) -> dict[str, Any]:
+        """Plain data (``impactlab laws``): JSON-ready, ``None`` for an unbounded ratio."""
+        finite = math.isfinite(self.delta_ratio_max)
+        return {
+            "delta_ratio_max": self.delta_ratio_max if finite else None,
+            "delta_ref": self.delta_ref,
+            "e_over_sy": list(self.e_over_sy) if self.e_over_sy else None,
+            "status": self.status,
+            "status_meaning": STATUSES[self.status],
+            "confirmed": self.confirmed,
+            "source": self.source,
+            "references": [r.doi or r.citation for r in cite(*self.reference_keys)],
+            "text": self.text,
+        }
+
+
+_JG_DC = "delta_c (Jackson-Green, paper Eq. 15: (pi C S_y / (2 E*))^2 R)"
+
+_ALL = (
+    LawRange(
+        Law.HERTZ,
+        1.0,
+        "delta_c (Jackson-Green first yield of the pair; Hertz itself has no yield)",
+        "theory",
+        "linear elasticity holds up to first yield; beyond delta_c the pair deforms plastically "
+        "and Hertz over-predicts the force (Johnson 1985; C(nu) of Green 2005)",
+        ("johnson-1985", "green-2005"),
+    ),
+    LawRange(
+        Law.GHAEDNIA,
+        PROVISIONAL_FEM_RATIO,
+        _JG_DC,
+        "provisional",
+        _PROVISIONAL_SOURCE.format(who="Ghaednia et al. (2016)"),
+        ("ghaednia-2016-contact", "kogut-etsion-2002"),
+    ),
+    LawRange(
+        Law.JACKSON_GREEN,
+        PROVISIONAL_FEM_RATIO,
+        _JG_DC,
+        "provisional",
+        _PROVISIONAL_SOURCE.format(who="Jackson & Green (2005) FEM")
+        + "; the abstract (read) says only 'a wide range of interferences and materials'",
+        ("jackson-green-2005", "kogut-etsion-2002"),
+    ),
+    LawRange(
+        Law.KOGUT_KOMVOPOULOS,
+        PROVISIONAL_FEM_RATIO,
+        "delta_y (Kogut-Komvopoulos yield, delta/r' = 1.78 S_y/E*)",
+        "provisional",
+        _PROVISIONAL_SOURCE.format(who="Kogut & Komvopoulos (2004)"),
+        ("kogut-komvopoulos-2004", "kogut-etsion-2002"),
+    ),
+    LawRange(
+        Law.BRAKE,
+        math.inf,
+        "delta_y (Brake, paper Eq. 23)",
+        "analytical",
+        "analytical transition model, no fitted range; Brake (2015) validates it against impact "
+        "experiments from the literature (abstract, OSTI 1146110, read)",
+        ("brake-2015",),
+    ),
+    LawRange(
+        Law.THORNTON,
+        math.inf,
+        "delta_y (Thornton: Hertz peak pressure = p_y)",
+        "analytical",
+        "analytical elastic-perfectly plastic model (limiting pressure p_y), no fitted range",
+        ("thornton-1997",),
+    ),
+)
+
+#: Law -> its range (read-only); every registered law has one.
+RANGES: Mapping[Law, LawRange] = MappingProxyType({r.law: r for r in _ALL})
+_BY_NAME = {str(r.law): r for r in _ALL}
+_RATIO_BY_ID = np.full(k.N_LAWS, np.inf)
+for _r in _ALL:
+    _RATIO_BY_ID[_r.law.law_id] = _r.delta_ratio_max
+
+
+def law_range(law: str | Law) -> LawRange:
+    """The range of the law named ``law``; ValueError listing the known names otherwise."""
+    try:
+        return _BY_NAME[str(law)]
+    except KeyError:
+        raise ValueError(
+            f"unknown contact law {law!r}; known laws: {', '.join(map(str, RANGES))}"
+        ) from None
+
+
+def calibrated_max(law: Law, delta_ref: float, hard_limit: float) -> float:
+    """Upper end of ``law``'s fitted range [m] for a pair whose reference interference is
+    ``delta_ref`` [m], capped at the law's hard limit (``inf`` for a law without one)."""
+    ratio = RANGES[law].delta_ratio_max
+    return math.inf if math.isinf(ratio) else min(ratio * delta_ref, hard_limit)
+
+
+def critical_interference(law_id: int, params: Any) -> Any:
+    """The reference interference ``delta_ref`` [m] of law ``law_id`` for parameter vectors
+    ``params`` (``(NPARAM,)``: a float; ``(N, NPARAM)``: an array): ``p[P_DY]``, for Hertz the
+    Jackson-Green ``delta_c`` of the pair (from ``P_ESTAR``, ``P_R``, ``P_SY``, ``P_NU``)."""
+    p = np.asarray(params, dtype=np.float64)
+    if int(law_id) == k.HERTZ:
+        c = 1.295 * np.exp(0.736 * p[..., k.P_NU])
+        ref = (np.pi * c * p[..., k.P_SY] / (2.0 * p[..., k.P_ESTAR])) ** 2 * p[..., k.P_R]
+    else:
+        ref = p[..., k.P_DY]
+    return float(ref) if np.ndim(ref) == 0 else ref
+
+
+def delta_ratio(law_id: int, params: Any, delta_max: Any) -> Any:
+    """``delta_max / delta_ref`` (float or array; NaN where either is unknown)."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        r = np.asarray(delta_max, dtype=np.float64) / critical_interference(law_id, params)
+    return float(r) if np.ndim(r) == 0 else r
+
+
+def extrapolation(law_id: int, params: Any, delta_max: float) -> tuple[float, float]:
+    """(max delta/delta_ref, the law's ``delta_ratio_max``) of one impact; (NaN, inf) when the
+    law is unknown (``law_id < 0`` or ``params`` None)."""
+    if params is None or not 0 <= int(law_id) < k.N_LAWS:
+        return math.nan, math.inf
+    return float(delta_ratio(law_id, params, delta_max)), float(_RATIO_BY_ID[int(law_id)])
+
+
+def extrapolation_flags(law_id: int, params: Any, delta_max: Any) -> Any:
+    """``FLAG_LAW_EXTRAPOLATED`` where ``delta_max / delta_ref`` exceeds the law's range, else 0
+    (int or int64 array; 0 for NaN, for an unknown law and for laws without a fitted range)."""
+    if params is None or not 0 <= int(law_id) < k.N_LAWS:
+        return 0
+    ratio = np.asarray(delta_ratio(law_id, params, delta_max))
+    out = np.where(ratio > _RATIO_BY_ID[int(law_id)], FLAG_LAW_EXTRAPOLATED, 0).astype(np.int64)
+    return int(out) if out.ndim == 0 else out
+
+
+def law_extrapolated(model: _Model, delta_max: Any) -> Any:
+    """True where an impact that reached ``delta_max`` [m] (a float or an array) left the fitted
+    range of ``model``'s law, a ``ContactModel`` (contract C2; bool or bool array)."""
+    out = np.asarray(extrapolation_flags(model.law_id, model.params, delta_max)) != 0
+    return bool(out) if out.ndim == 0 else out

@@ -1,0 +1,158 @@
+"""Results as data-science objects: a history as a pandas DataFrame with units and categorical
+columns, a batch as an xarray Dataset, and the batch's notebook (HTML) summary.
+
+Units and descriptions come from ``impactlab.schema``; coded columns keep their codes and say
+what they mean in CF-style attributes (``flag_values`` / ``flag_masks`` and ``flag_meanings``,
+as in a sweep store). ``ImpactResult``/``BatchResult``/``History``
+call these functions from one-line methods (``History.to_dataframe``, ``BatchResult.to_xarray``,
+``BatchResult._repr_html_``).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from impactlab import schema
+from impactlab._display import display_unit, format_number
+from impactlab._html import grid_html
+from impactlab.dynamics.core.layout import HISTORY_FIELDS, OUTPUT_FIELDS
+from impactlab.dynamics.core.status import REGIME_NAMES, STATUS_MESSAGES
+from impactlab.flags import ResultFlag, messages
+from impactlab.references import Reference
+
+__all__ = [
+    "HISTORY_CATEGORIES",
+    "batch_dataset",
+    "batch_html",
+    "history_dataframe",
+    "history_units",
+]
+
+#: The coded history columns and the names of their codes (0, 1): categorical in a DataFrame.
+HISTORY_CATEGORIES: dict[str, tuple[str, str]] = {
+    "phase": ("loading", "unloading"),
+    "stick": ("slip", "stick"),
+}
+
+#: Outputs of a batch stored as integer codes (with their meanings in the attributes).
+_CODED = ("regime", "flags", "n_steps")
+
+#: Outputs a batch's notebook summary shows (min, median, max over the successful cases).
+_SUMMARY = ("e", "delta_p", "sliding_length", "duration", "mean_force", "max_force")
+
+
+def history_units() -> dict[str, str]:
+    """SI unit of every history column (``"1"`` for dimensionless), from the schema."""
+    return {name: schema.unit(name) for name in HISTORY_FIELDS}
+
+
+def history_dataframe(data: np.ndarray) -> Any:
+    """The history array (rows x ``HISTORY_FIELDS``) as a pandas DataFrame: SI values, units in
+    ``df.attrs["units"]`` (column -> unit), ``phase`` and ``stick`` as categoricals
+    (``HISTORY_CATEGORIES``)."""
+    import pandas as pd  # heavy, needed only here
+
+    df = pd.DataFrame(np.array(data), columns=list(HISTORY_FIELDS))
+    for name, labels in HISTORY_CATEGORIES.items():
+        codes = np.asarray(df[name].to_numpy(), dtype=np.int64)
+        df[name] = pd.Categorical.from_codes(codes, categories=list(labels))
+    df.attrs["units"] = history_units()
+    return df
+
+
+def _regime_attrs() -> dict[str, Any]:
+    return {
+        "flag_values": sorted(REGIME_NAMES),
+        "flag_meanings": " ".join(REGIME_NAMES[k] for k in sorted(REGIME_NAMES)),
+    }
+
+
+def _flag_attrs() -> dict[str, Any]:
+    bits = [f for f in ResultFlag if f.value]
+    return {
+        "flag_masks": [int(f) for f in bits],
+        "flag_meanings": " ".join(str(f.name).lower() for f in bits),
+        "flag_messages": [messages(f)[0] for f in bits],
+    }
+
+
+def _status_attrs() -> dict[str, Any]:
+    codes = sorted(STATUS_MESSAGES)
+    return {
+        "long_name": "engine status of the case (0: ok; other codes: no result, NaN outputs)",
+        "flag_values": codes,
+        "flag_meanings": " ".join(f"status_{c}" for c in codes),
+        "status_messages": [STATUS_MESSAGES[c] for c in codes],
+    }
+
+
+def _output_var(name: str, values: np.ndarray, ok: np.ndarray) -> tuple[Any, ...]:
+    attrs: dict[str, Any] = {"units": schema.unit(name), "long_name": schema.description(name)}
+    if name not in _CODED:
+        return ("case", np.array(values, dtype=np.float64), attrs)
+    codes = np.where(ok & np.isfinite(values), values, -1).astype(np.int64)
+    if name == "regime":
+        attrs.update(_regime_attrs())
+    elif name == "flags":
+        attrs.update(_flag_attrs())
+    attrs["comment"] = "-1: the case failed (see status)"
+    return ("case", codes, attrs)
+
+
+def batch_dataset(batch: Any) -> Any:
+    """A ``BatchResult`` as an ``xarray.Dataset`` over the dimension ``case``: every input and
+    output (SI, ``units`` and ``long_name`` attributes), ``status``, and ``regime``/``flags`` as
+    integer codes whose meanings are in their attributes (-1 where the case failed). Every attribute
+    is a number, a string or a list of them: ``ds.to_netcdf(path)`` writes it as it is."""
+    import xarray as xr  # heavy, needed only here
+
+    status, out = np.asarray(batch.status), np.asarray(batch.out)
+    ok = status == 0
+    n = int(status.shape[0])
+    variables: dict[str, Any] = {}
+    for name, v in batch.inputs.items():
+        column = np.broadcast_to(np.asarray(v, dtype=np.float64), (n,))
+        variables[name] = (
+            "case",
+            np.array(column),
+            {"units": schema.unit(name), "long_name": f"input: {schema.description(name)}"},
+        )
+    for j, name in enumerate(OUTPUT_FIELDS):
+        variables[name] = _output_var(name, out[:, j], ok)
+    variables["status"] = ("case", status.astype(np.int32), _status_attrs())
+    refs: tuple[Reference, ...] = tuple(batch.references)
+    attrs = {
+        "law": batch.law,
+        "friction": batch.friction,
+        "references": [r.key for r in refs],
+        "dois": [r.doi for r in refs if r.doi],
+        "source": "impactlab.simulate_batch",
+    }
+    return xr.Dataset(variables, coords={"case": np.arange(n)}, attrs=attrs)
+
+
+def _stats_row(name: str, values: np.ndarray) -> tuple[str, str, str, str, str]:
+    d = display_unit(name, schema.unit(name))
+    v = values[np.isfinite(values)] * d.scale
+    if v.size == 0:
+        return name, "-", "-", "-", ""
+    lo, mid, hi = (format_number(float(x)) for x in (v.min(), np.median(v), v.max()))
+    return name, lo, mid, hi, "" if d.unit == "-" else d.unit
+
+
+def batch_html(batch: Any) -> str:
+    """The notebook summary of a ``BatchResult``: counts, then min / median / max of the main
+    outputs over the successful cases (display units)."""
+    ok = np.asarray(batch.status) == 0
+    n, n_ok = int(ok.shape[0]), int(np.count_nonzero(ok))
+    n_flagged = int(np.count_nonzero(np.asarray(batch.flags) != 0))
+    out = np.asarray(batch.out)
+    rows = [_stats_row(o, out[ok, OUTPUT_FIELDS.index(o)]) for o in _SUMMARY]
+    caption = (
+        f"{n} cases: {n_ok} ok, {n - n_ok} failed, {n_flagged} flagged; law {batch.law}, "
+        f"friction {batch.friction}"
+    )
+    header = ("output", "min", "median", "max", "unit")
+    return grid_html("BatchResult", header, rows, caption)

@@ -1,0 +1,60 @@
+"""``impactlab.simulate`` with a FlexibleRod (contract C1): the flexible drop
+(``impactlab.dynamics.drop.simulate_drop``) called with ``simulate``'s arguments, and the error
+of ``simulate_batch`` with a FlexibleRod."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from impactlab._validation import check_flag
+from impactlab.bodies.flexible_rod import FlexibleRod
+from impactlab.dynamics.drop import simulate_drop
+from impactlab.dynamics.drop_result import DropResult
+from impactlab.materials import Material
+
+__all__ = ["DROP_OPTIONS", "FLEXIBLE_BATCH_ERROR", "simulate_flexible"]
+
+
+#: Options of ``impactlab.simulate`` that only the flexible drop takes (contract C1).
+DROP_OPTIONS = ("rate", "stop", "t_max")
+#: simulate's arguments that ``simulate_drop`` takes under the same name.
+_SIMULATE_ARGS: tuple[str, ...] = ("law", "friction", "mu", "angle", "velocity", "spin")
+_SIMULATE_ARGS += ("law_params", "gravity", "rtol")
+
+
+def simulate_flexible(
+    body: Any,
+    flat: Material,
+    *,
+    constant_angle: Any = False,
+    history: Any = True,
+    **kwargs: Any,
+) -> DropResult:
+    """``impactlab.simulate`` for a FlexibleRod: the flexible drop (``simulate_drop``) with
+    simulate's arguments (law, friction, mu, angle, velocity, spin, law_params, gravity, rtol,
+    history) and the drop's options ``rate``, ``stop``, ``t_max``. ``constant_angle`` must be
+    False (the drop follows the rod's rotation). TypeError for a drop option with another body
+    or an unknown keyword."""
+    extra = sorted(set(kwargs) - set(DROP_OPTIONS) - set(_SIMULATE_ARGS))
+    if extra or not isinstance(body, FlexibleRod):
+        given = extra or sorted(set(kwargs) & set(DROP_OPTIONS))
+        raise TypeError(
+            f"simulate() got unexpected keyword argument(s) {', '.join(given)}: a FlexibleRod "
+            f"also takes {', '.join(DROP_OPTIONS)} (got body {type(body).__name__})"
+        )
+    if check_flag("constant_angle", constant_angle):
+        raise ValueError(
+            "constant_angle=True freezes the rigid engine's lever arms; the flexible drop "
+            "follows the rod's rotation: pass constant_angle=False with a FlexibleRod"
+        )
+    if kwargs.get("angle") is None:
+        raise ValueError("angle is required for a FlexibleRod (radians, in (0, pi/2])")
+    return simulate_drop(body, flat, history=check_flag("history", history), **kwargs)
+
+
+#: The error of ``simulate_batch`` with a FlexibleRod.
+FLEXIBLE_BATCH_ERROR = (
+    "simulate_batch runs the rigid engine; a FlexibleRod's drop is one contact sequence per "
+    "call: use impactlab.simulate(FlexibleRod(...), ...) per case, or a study file with "
+    'body = "flexible_rod" (impactlab.sweep) for many cases'
+)

@@ -1,0 +1,38 @@
+"""The compiled partial-slip engine: a rigid body (rod or sphere) on a flat with
+Mindlin-Deresiewicz partial-slip friction, one contact.
+
+Same layer as ``impactlab.dynamics.core``, whose layout, normal-contact kernels, input checks,
+transitions and integrator tableau it reuses. The tangential contact is the exact
+Mindlin-Deresiewicz model in its method-of-dimensionality-reduction form, discretised into cells
+(``model``); every cell switch is an event located on the dense output. The derivation, validity
+and verification are in docs/verification/index.md ("Partial slip").
+
+Modules, lowest first: ``layout`` (cell modes, parameter and event indices, defaults),
+``model`` (cells, right-hand side, event functions), ``stepper`` (Dormand-Prince on arrays),
+``switches`` (births, releases, stick/slip, settle), ``outputs`` (bookkeeping, history,
+results), ``driver`` (``impact_slip``).
+"""
+
+from __future__ import annotations
+
+import hashlib
+from pathlib import Path
+
+from impactlab.dynamics.core import _cache
+from impactlab.dynamics.slipcore.driver import impact_slip
+from impactlab.dynamics.slipcore.layout import N_CELLS
+
+
+def _fingerprint() -> str:
+    """The core's dependency fingerprint plus this package's sources (the functions here inline
+    the core's)."""
+    h = hashlib.sha256(_cache.fingerprint().encode())
+    for f in sorted(Path(__file__).parent.glob("*.py")):
+        h.update(f.name.encode())
+        h.update(f.read_bytes())
+    return h.hexdigest()
+
+
+_cache.refresh(_cache.dispatchers(("impactlab.dynamics.slipcore.",)), "slipcore", _fingerprint())
+
+__all__ = ["N_CELLS", "impact_slip"]

@@ -1,0 +1,273 @@
+"""The partial-slip impact driver: one impact from first touch to separation.
+
+``impact_slip`` initialises (the core's input checks, constants and error scales; the cell
+vector), runs the step loop (``_integrate``: Dormand-Prince steps, event location, history, the
+switches of the normal contact and of the cells) and writes the results at separation.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from impactlab.bodies.layout import BP_KIND, KIND_ROD
+from impactlab.contact.kernels import P_ESTAR
+from impactlab.dynamics.core.layout import (
+    C_A0,
+    C_B0,
+    C_GS,
+    C_I,
+    C_M,
+    C_MU,
+    C_R,
+    EV_LIMIT,
+    EV_SEP,
+    EV_SWITCH,
+    EV_VN,
+    FR_COULOMB,
+    FR_MINDLIN,
+    M_COMP,
+    MAX_EVENTS,
+    MAX_STEPS,
+    NH,
+    NS,
+    O_DMAX,
+    O_FMAX,
+    O_NST,
+    O_T,
+    O_TMAX,
+    O_VNIN,
+    O_VTIN,
+    S_SPIN,
+    S_VX,
+    S_VY,
+    S_WORK,
+)
+from impactlab.dynamics.core.setup import check_inputs, constants, error_scales
+from impactlab.dynamics.core.status import (
+    ST_BAD_INPUT,
+    ST_LAW_LIMIT,
+    ST_NAN,
+    ST_NO_SEPARATION,
+    ST_NOT_APPROACHING,
+    ST_OK,
+    ST_STEP_UNDERFLOW,
+    ST_TOO_MANY_EVENTS,
+)
+from impactlab.dynamics.core.transitions import without_switch
+from impactlab.dynamics.slipcore.layout import (
+    CP_DX,
+    CP_FSC,
+    CP_FTOL,
+    CP_G1,
+    CP_VTOL,
+    EXTRA,
+    G_CELL,
+    NCP,
+)
+from impactlab.dynamics.slipcore.model import boundary_horizon, evaluate, events
+from impactlab.dynamics.slipcore.outputs import (
+    A_DMAX,
+    A_EMIN,
+    A_FMAX,
+    A_JUMP,
+    A_TMAX,
+    A_WCOMP,
+    A_WMARK,
+    A_WREST,
+    NA,
+    record,
+    separation,
+    track,
+)
+from impactlab.dynamics.slipcore.stepper import (
+    dense,
+    dense_coeffs,
+    first_event,
+    integrate_to,
+    rhs,
+    step,
+)
+from impactlab.dynamics.slipcore.switches import apply_cell_event, birth, normal_switch, settle
+
+_GO_ON = -1
+STEP_PAST = 1.05  # a step ends this far past the predicted next cell boundary
+
+
+@njit(cache=True, error_model="numpy")
+def _normal_event(k, law, p, c, md, y, ev, acc):
+    """(status or _GO_ON, constants, mode) after the normal event ``k``, with the bookkeeping of
+    the normal work of compression and restitution."""
+    if k == EV_SEP:
+        acc[A_WREST] += y[S_WORK] - acc[A_WMARK]
+        return ST_OK, c, md
+    if k == EV_LIMIT:
+        return ST_LAW_LIMIT, c, md
+    if k == EV_SWITCH:
+        return _GO_ON, without_switch(c), md
+    if k == EV_VN:
+        if md[M_COMP] != 0.0:
+            acc[A_WCOMP] += y[S_WORK] - acc[A_WMARK]
+        else:
+            acc[A_WREST] += y[S_WORK] - acc[A_WMARK]
+        acc[A_WMARK] = y[S_WORK]
+    st, md = normal_switch(k, law, p, md, ev[0])
+    return (_GO_ON if st == ST_OK else st), c, md
+
+
+@njit(cache=True, error_model="numpy")
+def _switch(k, law, p, c, md, y, cm, sg, cp, W, acc, K, gold):
+    """Stop at the event ``k`` or switch and restart at ``y`` (derivative into ``K[0]``, event
+    functions into ``gold``). Returns (status or _GO_ON, constants, mode)."""
+    ev = evaluate(law, p, c, md, y, cm, sg, cp, W)
+    ft_before = ev[4]
+    if k <= EV_SWITCH:
+        st, c, md = _normal_event(k, law, p, c, md, y, ev, acc)
+        if st != _GO_ON:
+            return st, c, md
+    else:
+        apply_cell_event(k, y, cm, sg, cp, c[C_MU], p[P_ESTAR], W, ev)
+    if not settle(law, p, c, md, y, cm, sg, cp, W, c[C_MU]):
+        return ST_TOO_MANY_EVENTS, c, md
+    ev = rhs(law, p, c, md, y, cm, sg, cp, W, K[0])
+    acc[A_JUMP] = max(acc[A_JUMP], abs(ev[4] - ft_before))
+    events(c, md, cm, sg, cp, W, ev, gold)
+    if gold[EV_SEP] > 0.0:  # a switch located at the separation itself: that is the end
+        return _normal_event(EV_SEP, law, p, c, md, y, ev, acc)
+    return _GO_ON, c, md
+
+
+@njit(cache=True, error_model="numpy")
+def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, acc):
+    """The step loop from first touch to separation, a failure or MAX_STEPS.
+    Returns (status, t, steps, mode, history, rows)."""
+    n = y.shape[0]
+    ng = G_CELL + cm.shape[0]
+    ynew, yt, yev = np.zeros(n), np.zeros(n), np.zeros(n)
+    K, Q, W = np.zeros((7, n)), np.zeros((n, 4)), np.zeros((3, cm.shape[0]))
+    gold, gnew, gt = np.empty(ng), np.empty(ng), np.empty(ng)
+    t, h, hmin = 0.0, 0.02 * tstar * rtol**0.2, 1e-14 * tstar
+    ev = rhs(law, p, c, md, y, cm, sg, cp, W, K[0])
+    events(c, md, cm, sg, cp, W, ev, gold)
+    nh = 0
+    if rec:
+        hist, nh = record(hist, nh, t, law, p, c, md, y, cm, sg, cp, W)
+    nsteps, nevents, status = 0, 0, ST_NO_SEPARATION
+    while nsteps < MAX_STEPS:
+        nsteps += 1
+        # end the step just past the next cell boundary: its kink then lies at the step's end
+        hz = boundary_horizon(cm, cp, ev[7], ev[8])
+        h = min(h, tstar, STEP_PAST * hz + hmin) if hz > 0.0 else min(h, tstar)
+        err, ev = step(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew)
+        if not (err <= 1.0):
+            h *= max(0.2, 0.9 * err**-0.2) if math.isfinite(err) else 0.25
+            if h < hmin:
+                status = ST_NAN if not math.isfinite(err) else ST_STEP_UNDERFLOW
+                break
+            continue
+        events(c, md, cm, sg, cp, W, ev, gnew)
+        k, theta = first_event(gold, gnew, law, p, c, md, y, K, Q, h, cm, sg, cp, W, gt, yt)
+        if rec:
+            dense_coeffs(K, Q)
+            for j in range(1, 4):
+                if j / 4.0 < theta:
+                    dense(y, Q, h, j / 4.0, yt)
+                    hist, nh = record(hist, nh, t + j * h / 4.0, law, p, c, md, yt, cm, sg, cp, W)
+        if k >= 0:
+            nsteps += integrate_to(law, p, c, md, y, cm, sg, cp, W, K[0], theta * h, rtol, sc, yev)
+            tend = t + theta * h
+        else:
+            yev[:] = ynew
+            tend = t + h
+        if k >= 0 or rec:  # else W and ev still hold the step's last stage, at ynew
+            ev = evaluate(law, p, c, md, yev, cm, sg, cp, W)
+        if not track(acc, law, p, c, md, yev, cm, cp, W, ev, t, tend, diag):
+            status = ST_NAN
+            break
+        t = tend
+        y[:] = yev
+        h *= 10.0 if err == 0.0 else min(10.0, 0.9 * err**-0.2)
+        if rec:
+            hist, nh = record(hist, nh, t, law, p, c, md, y, cm, sg, cp, W)
+        if k < 0:
+            K[0, :] = K[6]
+            gold[:] = gnew
+            continue
+        nevents += 1
+        if nevents > MAX_EVENTS:
+            status = ST_TOO_MANY_EVENTS
+            break
+        st, c, md = _switch(k, law, p, c, md, y, cm, sg, cp, W, acc, K, gold)
+        if st != _GO_ON:
+            status = st
+            break
+    return status, t, nsteps, md, hist, nh
+
+
+@njit(cache=True, error_model="numpy")
+def _setup(p, c, vn0, n_cells, a_est):
+    """(cell parameters, error scales of the state, t*) of an impact with ``n_cells`` cells over
+    the estimated largest contact radius ``a_est`` [m]."""
+    sc0, tstar, _dstar, fscale = error_scales(FR_COULOMB, p, c, vn0)
+    m = EXTRA * n_cells
+    sc = np.empty(NS + m)
+    sc[:NS] = sc0
+    sc[NS:] = fscale / n_cells
+    cp = np.empty(NCP)
+    cp[CP_G1] = 4.0 * c[C_GS]
+    cp[CP_DX] = a_est / n_cells
+    cp[CP_VTOL] = 1e-9 * abs(vn0)
+    cp[CP_FTOL] = 1e-13 * fscale
+    cp[CP_FSC] = fscale / n_cells
+    return cp, sc, tstar
+
+
+@njit(cache=True, error_model="numpy")
+def impact_slip(
+    law, p, bp, th0, vx0, vy0, w0, mu, g, const_angle, rtol, record_, diag, n_cells, a_est, out
+):
+    """Simulate one impact with partial-slip friction (``mu`` > 0, ``n_cells`` >= 1 cells over
+    ``a_est`` [m], the estimated largest contact radius); the other arguments and the outputs
+    are those of ``impactlab.dynamics.core.impact``. Returns (status, history, rows, the
+    largest change of F_t across a switch over mu F_max)."""
+    for i in range(out.shape[0]):
+        out[i] = math.nan
+    hist = np.empty((256 if record_ else 0, NH))
+    status = check_inputs(law, p, FR_MINDLIN, bp, th0, vx0, vy0, w0, mu, g, rtol)
+    if status == ST_OK and not (mu > 0.0 and n_cells >= 1 and a_est > 0.0):
+        status = ST_BAD_INPUT
+    if status != ST_OK:
+        return status, hist[:0], 0, 0.0
+    c = constants(p, bp, th0, mu, g, const_angle)
+    vn0 = vy0 - w0 * c[C_A0]
+    out[O_VNIN] = vn0
+    out[O_VTIN] = vx0 + w0 * c[C_B0]
+    if not (vn0 < 0.0):
+        return ST_NOT_APPROACHING, hist[:0], 0, 0.0
+    md = (0.0, 0.0, 0.0, c[C_R], 0.0, 1.0, 0.0, 1.0)  # loading, compressing, radius factor 1
+    cp, sc, tstar = _setup(p, c, vn0, n_cells, a_est)
+    y = np.zeros(sc.shape[0])
+    y[S_VX], y[S_VY], y[S_SPIN] = vx0, vy0, w0
+    cm = np.zeros(EXTRA * n_cells, dtype=np.int64)
+    sg = np.zeros(EXTRA * n_cells)
+    # the first cell is born at first touch (a = 0)
+    birth(0, y, cm, sg, cp, mu, p[P_ESTAR], 0.0, vn0, out[O_VTIN], 0.0, 0.0)
+    e0 = 0.5 * c[C_M] * (vx0 * vx0 + vy0 * vy0) + 0.5 * c[C_I] * w0 * w0
+    acc = np.zeros(NA)
+    acc[A_EMIN] = e0
+    status, t, nsteps, md, hist, nh = _integrate(
+        law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, record_, diag, hist, acc
+    )
+    out[O_NST] = nsteps
+    out[O_DMAX] = acc[A_DMAX]
+    out[O_FMAX] = acc[A_FMAX]
+    out[O_TMAX] = acc[A_TMAX]
+    out[O_T] = t
+    jump = acc[A_JUMP] / (mu * acc[A_FMAX]) if acc[A_FMAX] > 0.0 else 0.0
+    if status != ST_OK:
+        return status, hist[:nh], nh, jump
+    rod = bp[BP_KIND] == KIND_ROD
+    separation(out, c, md, y, acc, t, vx0, vy0, vn0, th0, rod, e0, rtol, diag)
+    return ST_OK, hist[:nh], nh, jump

@@ -1,0 +1,223 @@
+"""The partial-slip contact: the MDR cells (limits, lengths, stick rates), the right-hand side
+and the event functions on the state array ``y`` (rigid-body state, then the cell forces).
+
+Mindlin-Deresiewicz partial slip with arbitrary normal and tangential history (Mindlin 1949,
+doi:10.1115/1.4009973; Mindlin & Deresiewicz 1953, doi:10.1115/1.4010702) in its exact
+one-dimensional representation by the method of dimensionality reduction (Popov & Hess,
+doi:10.1007/978-3-642-53876-6): a line of independent elastic-perfectly-plastic tangential
+elements of stiffness G_1 = 4 G* per unit length on |x| < a(t), each limited by mu times the
+Hertzian line load q(x) = (3 F_n / 4a)(1 - x^2/a^2). The line is cut into cells of width dx
+(mirrored to -x): cell i = [i dx, (i + 1) dx] carries the force f_i of both halves; F_t = -sum f_i.
+
+- length in contact l_i = clamp(a - i dx, 0, dx); full-stick stiffness sum 2 G_1 l_i = 8 G* a;
+- limit L_i = mu F_n g_i(a), g_i = (3/2a)(r - l) - (r^3 - l^3)/(2a^3), l = i dx,
+  r = min((i + 1) dx, a): sum L_i = mu F_n exactly, L_i -> 0 as the edge crosses i dx;
+- STICK: df_i/dt = 2 G_1 l_i v_slip, plus f_i l_i'/l_i for a receding edge cell; SLIP:
+  f_i = s_i L_i; OUT: f_i = 0.
+
+docs/verification/index.md ("Partial slip") has the derivation, validity and limits.
+"""
+
+from __future__ import annotations
+
+import math
+
+from numba import njit
+
+from impactlab.dynamics.core.layout import (
+    C_DLIM,
+    C_DSW,
+    C_G,
+    C_I,
+    C_M,
+    C_MU,
+    EV_LIMIT,
+    EV_RELOAD,
+    EV_SEP,
+    EV_SWITCH,
+    EV_VN,
+    M_COMP,
+    M_DM,
+    M_DR,
+    M_PHASE,
+    S_PHI,
+    S_Q,
+    S_SPIN,
+    S_VX,
+    S_VY,
+    S_WORK,
+    S_X,
+    S_Y,
+)
+from impactlab.dynamics.core.normal import (
+    dforce_ddelta,
+    dradius_ddelta,
+    geometry,
+    normal_force,
+    radius,
+)
+from impactlab.dynamics.slipcore.layout import (
+    CP_DX,
+    CP_FTOL,
+    CP_G1,
+    CP_VTOL,
+    G_BIRTH,
+    G_CELL,
+    G_REL,
+    OUT,
+    SLIP,
+    SLIP_HYST,
+    STICK,
+    Y_CELL,
+)
+
+
+@njit(cache=True, error_model="numpy")
+def n_in(cm):
+    """Number of cells in contact (cells are born inwards-out and released outside-in)."""
+    n = 0
+    while n < cm.shape[0] and cm[n] != OUT:
+        n += 1
+    return n
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def cell_length(i, a, dx):
+    """Length of cell ``i`` inside the contact radius ``a``."""
+    ln = a - i * dx
+    return 0.0 if ln < 0.0 else (dx if ln > dx else ln)
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def stick_rate(i, f, a, ad, vs, cp):
+    """df_i/dt of cell ``i`` (force ``f``) in STICK: new material enters unstressed, material
+    leaving a receding edge cell takes its share of the force."""
+    ln = cell_length(i, a, cp[CP_DX])
+    r = 2.0 * cp[CP_G1] * ln * vs
+    if ad < 0.0 and 0.0 < ln < cp[CP_DX]:
+        r += f * ad / ln
+    return r
+
+
+@njit(cache=True, error_model="numpy")
+def evaluate(law, p, c, md, y, cm, sg, cp, W):
+    """Contact quantities at state ``y``: fills W[0] = limits L_i, W[1] = dL_i/dt and W[2] = the
+    cell forces f_i (OUT: 0, SLIP: s_i L_i) and returns
+    (delta, a, b, F_n, F_t, v_n, v_slip, radius, d radius/dt, n in contact)."""
+    delta, a, b, _xs, _sl = geometry(c, y)
+    w = y[S_SPIN]
+    vn = y[S_VY] - w * a
+    vs = y[S_VX] + w * b
+    Fn = normal_force(law, p, md, delta)
+    ar = radius(law, p, md, delta)
+    ddel = -vn
+    Fd = dforce_ddelta(law, p, md, delta, Fn) * ddel
+    ad = dradius_ddelta(law, p, md, delta) * ddel
+    nin = n_in(cm)
+    dx = cp[CP_DX]
+    mu = c[C_MU]
+    Ft = 0.0
+    for i in range(nin):
+        lo = i * dx
+        L = 0.0
+        Ld = 0.0
+        if lo < ar and Fn > 0.0:
+            edge = lo + dx > ar
+            r = ar if edge else lo + dx
+            r3 = r * r * r - lo * lo * lo
+            a2 = ar * ar
+            g = max(0.0, 1.5 / ar * (r - lo) - 0.5 * r3 / (a2 * ar))  # >= 0 despite round-off
+            if edge:
+                dg = 1.5 * lo / a2 - 1.5 * lo * lo * lo / (a2 * a2)
+            else:
+                dg = -1.5 * (r - lo) / a2 + 1.5 * r3 / (a2 * a2)
+            L = mu * Fn * g
+            Ld = mu * (Fd * g + Fn * dg * ad)
+        W[0, i] = L
+        W[1, i] = Ld
+        f = sg[i] * L if cm[i] == SLIP else y[Y_CELL + i]
+        W[2, i] = f
+        Ft -= f
+    return delta, a, b, Fn, Ft, vn, vs, ar, ad, nin
+
+
+@njit(cache=True, error_model="numpy")
+def derivative(c, y, cm, sg, cp, W, ev, dy):
+    """The time derivative of ``y`` into ``dy`` from the quantities ``ev`` of ``evaluate``."""
+    _delta, a, b, Fn, Ft, vn, vs, ar, ad, nin = ev
+    m = c[C_M]
+    dy[S_X] = y[S_VX]
+    dy[S_Y] = y[S_VY]
+    dy[S_PHI] = y[S_SPIN]
+    dy[S_VX] = Ft / m
+    dy[S_VY] = Fn / m - c[C_G]
+    dy[S_SPIN] = (b * Ft - a * Fn) / c[C_I]
+    dy[S_WORK] = Fn * vn
+    dy[S_Q] = 0.0
+    for i in range(nin):
+        if cm[i] == STICK:
+            dy[Y_CELL + i] = stick_rate(i, W[2, i], ar, ad, vs, cp)
+        else:
+            dy[Y_CELL + i] = sg[i] * W[1, i]
+
+
+@njit(cache=True, error_model="numpy")
+def cell_event(i, cm, sg, cp, W, ar, ad, vs):
+    """Event function of cell ``i``: STICK -> SLIP when |f| passes its limit (relative
+    hysteresis SLIP_HYST), SLIP -> STICK when the limit outruns the stick trial."""
+    if cm[i] == STICK:
+        return abs(W[2, i]) - W[0, i] * (1.0 + SLIP_HYST) - cp[CP_FTOL]
+    if cm[i] == SLIP and ar > i * cp[CP_DX]:
+        ln = cell_length(i, ar, cp[CP_DX])
+        trial = stick_rate(i, W[2, i], ar, ad, vs, cp)
+        return W[1, i] - sg[i] * trial - 2.0 * cp[CP_G1] * ln * cp[CP_VTOL]
+    return -1.0
+
+
+@njit(cache=True, error_model="numpy")
+def events(c, md, cm, sg, cp, W, ev, g):
+    """All event functions into ``g`` (fire when g goes from <= 0 to > 0): the core's normal
+    events (EV_*), the birth and release of the outermost cell, and one per cell."""
+    delta, _a, _b, _Fn, _Ft, vn, vs, ar, ad, nin = ev
+    for k in range(g.shape[0]):
+        g[k] = -1.0
+    comp = md[M_COMP] != 0.0
+    g[EV_VN] = vn if comp else -vn
+    if md[M_PHASE] == 0.0:
+        g[EV_LIMIT] = delta - c[C_DLIM]
+        g[EV_SWITCH] = delta - c[C_DSW]
+    elif comp:
+        g[EV_RELOAD] = delta - md[M_DM]
+    else:
+        g[EV_SEP] = md[M_DR] - delta
+    dx = cp[CP_DX]
+    if nin < cm.shape[0]:
+        g[G_BIRTH] = ar - nin * dx
+    if nin > 1:
+        g[G_REL] = (nin - 1) * dx - ar
+    for i in range(nin):
+        g[G_CELL + i] = cell_event(i, cm, sg, cp, W, ar, ad, vs)
+
+
+@njit(cache=True, error_model="numpy")
+def boundary_horizon(cm, cp, ar, ad):
+    """Time until the contact radius ``ar`` (rate ``ad``) reaches the next cell boundary, where
+    a cell is born or released and the cell lengths have a kink (inf when none lies ahead)."""
+    nin = n_in(cm)
+    dx = cp[CP_DX]
+    if ad > 0.0 and nin < cm.shape[0]:
+        return (nin * dx - ar) / ad
+    if ad < 0.0 and nin > 1:
+        return ((nin - 1) * dx - ar) / ad
+    return math.inf
+
+
+@njit(cache=True, error_model="numpy")
+def stored_energy(cm, cp, W, ar):
+    """Elastic energy stored in the cells, sum f_i^2 / (4 G_1 l_i) [J]."""
+    e = 0.0
+    for i in range(n_in(cm)):
+        ln = cell_length(i, ar, cp[CP_DX])
+        if ln > 0.0:
+            e += W[2, i] * W[2, i] / (4.0 * cp[CP_G1] * ln)
+    return e

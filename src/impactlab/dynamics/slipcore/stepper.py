@@ -1,0 +1,168 @@
+"""Dormand-Prince 5(4) on the partial-slip state array: one step, the dense output, event
+location and the error-controlled integration over an exact interval.
+
+The tableau and Shampine's dense-output coefficients are the core's
+(``impactlab.dynamics.core.integrator``; Dormand & Prince 1980, doi:10.1016/0771-050X(80)90013-3;
+Shampine 1986, doi:10.1090/S0025-5718-1986-0815836-3); the state here is an array whose length
+depends on the number of cells, so the step functions are written for arrays.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from impactlab.dynamics.core.integrator import DENSE_P, DP_A, DP_E
+from impactlab.dynamics.slipcore.layout import G_CELL, Y_CELL
+from impactlab.dynamics.slipcore.model import cell_event, derivative, evaluate, events, n_in
+
+
+@njit(cache=True, error_model="numpy")
+def rhs(law, p, c, md, y, cm, sg, cp, W, dy):
+    """Derivative of ``y`` into ``dy``; returns the evaluated quantities."""
+    ev = evaluate(law, p, c, md, y, cm, sg, cp, W)
+    derivative(c, y, cm, sg, cp, W, ev, dy)
+    return ev
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _stage_point(y, K, h, stage, out, nact):
+    """The point ``y + h sum_j a_{stage,j} K[j]`` where stage ``stage`` is evaluated (the
+    first ``nact`` components: the cells out of contact stay at 0)."""
+    for i in range(nact):
+        acc = 0.0
+        for j in range(stage):
+            acc += DP_A[stage, j] * K[j, i]
+        out[i] = y[i] + h * acc
+
+
+@njit(cache=True, error_model="numpy")
+def step(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew):
+    """One step of size ``h`` from ``y`` (``K[0]``: the derivative at ``y``); fills ``K[1:7]``
+    and ``ynew`` (FSAL). Returns (RMS error norm over the rigid state and the cells in contact,
+    quantities at ``ynew``). Error scale of component i: rtol (sc[i] + max(|y_i|, |ynew_i|))."""
+    nact = Y_CELL + n_in(cm)
+    for stage in range(1, 6):
+        _stage_point(y, K, h, stage, ynew, nact)
+        rhs(law, p, c, md, ynew, cm, sg, cp, W, K[stage])
+    _stage_point(y, K, h, 6, ynew, nact)
+    ev = rhs(law, p, c, md, ynew, cm, sg, cp, W, K[6])
+    err = 0.0
+    for i in range(nact):
+        ei = 0.0
+        for j in range(7):
+            ei += DP_E[j] * K[j, i]
+        q = h * ei / (rtol * (sc[i] + max(abs(y[i]), abs(ynew[i]))))
+        err += q * q
+    return math.sqrt(err / nact), ev
+
+
+@njit(cache=True, error_model="numpy")
+def dense(y0, Q, h, theta, out):
+    """Dense output at t0 + theta h from the coefficients ``Q`` (``dense_coeffs``)."""
+    t2 = theta * theta
+    t3 = t2 * theta
+    t4 = t3 * theta
+    for i in range(y0.shape[0]):  # cells out of contact: K = 0
+        out[i] = y0[i] + h * (Q[i, 0] * theta + Q[i, 1] * t2 + Q[i, 2] * t3 + Q[i, 3] * t4)
+
+
+@njit(cache=True, error_model="numpy")
+def dense_coeffs(K, Q):
+    """Q = K^T DENSE_P for the last step."""
+    for i in range(K.shape[1]):
+        for j in range(4):
+            s = 0.0
+            for st in range(7):
+                s += K[st, i] * DENSE_P[st, j]
+            Q[i, j] = s
+
+
+@njit(cache=True, error_model="numpy")
+def event_at(k, law, p, c, md, y, cm, sg, cp, W, g):
+    """Event function ``k`` at state ``y`` (a cell's alone; else all of them, into ``g``)."""
+    ev = evaluate(law, p, c, md, y, cm, sg, cp, W)
+    if k >= G_CELL:
+        return cell_event(k - G_CELL, cm, sg, cp, W, ev[7], ev[8], ev[6])
+    events(c, md, cm, sg, cp, W, ev, g)
+    return g[k]
+
+
+@njit(cache=True, error_model="numpy")
+def locate(k, g0, g1, law, p, c, md, y0, Q, h, cm, sg, cp, W, g, yt):
+    """theta in (0, 1] where event ``k`` fires: Illinois regula falsi on the dense output;
+    returns the bracket end where g > 0."""
+    a, fa, b, fb = 0.0, g0, 1.0, g1
+    side = 0
+    for _ in range(60):
+        th = (a * fb - b * fa) / (fb - fa)
+        if not (a < th < b):
+            th = 0.5 * (a + b)
+        dense(y0, Q, h, th, yt)
+        f = event_at(k, law, p, c, md, yt, cm, sg, cp, W, g)
+        if f > 0.0:
+            b, fb = th, f
+            if side == 1:
+                fa *= 0.5
+            side = 1
+        else:
+            a, fa = th, f
+            if side == -1:
+                fb *= 0.5
+            side = -1
+        if b - a <= 1e-13:
+            break
+    return b
+
+
+@njit(cache=True, error_model="numpy")
+def first_event(gold, gnew, law, p, c, md, y0, K, Q, h, cm, sg, cp, W, g, yt):
+    """(event, theta) of the earliest event inside the accepted step (-1, 2.0: none). Events
+    within 1e-10 of the earliest count as simultaneous: the lowest index wins (normal events,
+    then birth and release, then the cells)."""
+    best = -1
+    theta = 2.0
+    fired = False
+    for k in range(gold.shape[0]):
+        if gold[k] <= 0.0 and gnew[k] > 0.0:
+            if not fired:
+                dense_coeffs(K, Q)
+                fired = True
+            th = locate(k, gold[k], gnew[k], law, p, c, md, y0, Q, h, cm, sg, cp, W, g, yt)
+            if th < theta - 1e-10:
+                theta = th
+                best = k
+    return best, theta
+
+
+@njit(cache=True, error_model="numpy")
+def integrate_to(law, p, c, md, y, cm, sg, cp, W, k0, H, rtol, sc, out):
+    """Integrate from ``y`` over exactly ``H`` with error control into ``out`` (the state at an
+    event is recomputed this way, not taken from the dense output). Returns the steps taken."""
+    n = y.shape[0]
+    Ks = np.empty((7, n))
+    cur = y.copy()
+    kc = k0.copy()
+    done = 0.0
+    hh = H
+    steps = 0
+    while steps < 200:
+        steps += 1
+        rem = H - done
+        last = hh >= rem * (1.0 - 1e-12)
+        if last:
+            hh = rem
+        Ks[0, :] = kc
+        err, _ev = step(law, p, c, md, cur, cm, sg, cp, W, Ks, hh, rtol, sc, out)
+        if not (err <= 1.0) and hh > 1e-6 * H:
+            hh *= max(0.2, 0.9 * err**-0.2) if math.isfinite(err) else 0.25
+            continue
+        if last:
+            break
+        done += hh
+        cur[:] = out
+        kc[:] = Ks[6]
+        hh *= min(5.0, 0.9 * err**-0.2) if err > 0.0 else 5.0
+    return steps

@@ -1,0 +1,141 @@
+"""Mode changes of the partial-slip engine at events: birth and release of cells, stick/slip
+switches of a cell, the normal-contact transitions (the core's), and the settle pass that
+applies every switch already due at a restart.
+
+Rules (docs/verification/index.md, "Partial slip"): a cell is born unstressed when the contact
+radius reaches it, in SLIP (towards v_slip) when the stick trial outruns its growing limit, else
+in STICK; it is released at zero force; a cell slips when |f| reaches its limit (f is clamped to
+it) and sticks again when the limit outruns the stick trial. F_t is continuous at every switch.
+"""
+
+from __future__ import annotations
+
+from numba import njit
+
+from impactlab.contact.kernels import P_ESTAR
+from impactlab.dynamics.core.layout import EV_RELOAD, EV_VN, FR_MINDLIN, M_COMP, M_PHASE
+from impactlab.dynamics.core.status import ST_OK
+from impactlab.dynamics.core.transitions import unloading_branch
+from impactlab.dynamics.core.tuples import mode_with
+from impactlab.dynamics.slipcore.layout import (
+    CP_DX,
+    CP_FTOL,
+    CP_G1,
+    CP_VTOL,
+    G_BIRTH,
+    G_CELL,
+    G_REL,
+    OUT,
+    SLIP,
+    SLIP_HYST,
+    STICK,
+    Y_CELL,
+)
+from impactlab.dynamics.slipcore.model import cell_length, evaluate, stick_rate
+
+
+@njit(cache=True, error_model="numpy")
+def birth(i, y, cm, sg, cp, mu, estar, Fn, vn, vs, ar, ad):
+    """Cell ``i`` enters the contact unstressed. Near its inner end the limit grows like
+    1.5 mu F_n l^2/a^2 and the stick trial like G_1 |v_slip| l^2/a': it is born slipping iff
+    G_1 |v_slip| a^2 > 1.5 mu F_n a' (at first touch, a = 0: G_1 |v_slip| > mu E* |v_n|)."""
+    y[Y_CELL + i] = 0.0
+    g1 = cp[CP_G1]
+    if ar <= 0.0:
+        slip = g1 * abs(vs) > mu * estar * abs(vn)
+    else:
+        slip = g1 * abs(vs) * ar * ar > 1.5 * mu * Fn * ad
+    if vs != 0.0 and slip:
+        cm[i] = SLIP
+        sg[i] = 1.0 if vs > 0.0 else -1.0
+    else:
+        cm[i] = STICK
+        sg[i] = 0.0
+
+
+@njit(cache=True, error_model="numpy")
+def to_slip(i, y, cm, sg, W):
+    """Cell ``i`` starts to slip in the direction of its force, clamped to its limit."""
+    cm[i] = SLIP
+    sg[i] = 1.0 if y[Y_CELL + i] > 0.0 else -1.0
+    y[Y_CELL + i] = sg[i] * W[0, i]
+
+
+@njit(cache=True, error_model="numpy")
+def to_stick(i, y, cm, sg, W):
+    """Cell ``i`` sticks with the force it had on its limit."""
+    y[Y_CELL + i] = sg[i] * W[0, i]
+    cm[i] = STICK
+
+
+@njit(cache=True, error_model="numpy")
+def apply_cell_event(k, y, cm, sg, cp, mu, estar, W, ev):
+    """The switch of the cell event ``k`` (birth, release or a cell's stick/slip)."""
+    _delta, _a, _b, Fn, _Ft, vn, vs, ar, ad, nin = ev
+    if k == G_BIRTH:
+        birth(nin, y, cm, sg, cp, mu, estar, Fn, vn, vs, ar, ad)
+    elif k == G_REL:
+        cm[nin - 1] = OUT
+        y[Y_CELL + nin - 1] = 0.0
+    else:
+        i = k - G_CELL
+        if cm[i] == STICK:
+            to_slip(i, y, cm, sg, W)
+        elif cm[i] == SLIP:
+            to_stick(i, y, cm, sg, W)
+
+
+@njit(cache=True, error_model="numpy")
+def _due(law, p, c, md, y, cm, sg, cp, W, mu, estar):
+    """Apply the first switch already due at ``y``; False when none is."""
+    ev = evaluate(law, p, c, md, y, cm, sg, cp, W)
+    _delta, _a, _b, Fn, _Ft, vn, vs, ar, ad, nin = ev
+    dx = cp[CP_DX]
+    if nin < cm.shape[0] and ad > 0.0 and ar > nin * dx + 1e-9 * dx:
+        birth(nin, y, cm, sg, cp, mu, estar, Fn, vn, vs, ar, ad)
+        return True
+    if nin > 1 and ad < 0.0 and ar < (nin - 1) * dx - 1e-9 * dx:
+        cm[nin - 1] = OUT
+        y[Y_CELL + nin - 1] = 0.0
+        return True
+    changed = False
+    for i in range(nin):
+        if cm[i] == STICK:
+            if abs(W[2, i]) > W[0, i] * (1.0 + SLIP_HYST) + cp[CP_FTOL]:
+                to_slip(i, y, cm, sg, W)
+                changed = True
+        elif cm[i] == SLIP and ar > i * dx:
+            ln = cell_length(i, ar, dx)
+            trial = stick_rate(i, W[2, i], ar, ad, vs, cp)
+            if W[1, i] - sg[i] * trial > 2.0 * cp[CP_G1] * ln * cp[CP_VTOL]:
+                to_stick(i, y, cm, sg, W)
+                changed = True
+    return changed
+
+
+@njit(cache=True, error_model="numpy")
+def settle(law, p, c, md, y, cm, sg, cp, W, mu):
+    """Apply every switch that is already due at a restart (several cells can change mode
+    within one step; only the first event is located). Returns False if it does not settle."""
+    estar = p[P_ESTAR]
+    for _ in range(4 * cm.shape[0] + 8):
+        if not _due(law, p, c, md, y, cm, sg, cp, W, mu, estar):
+            return True
+    return False
+
+
+@njit(cache=True, error_model="numpy")
+def normal_switch(k, law, p, md, delta):
+    """(status, mode) after the normal event ``k`` (EV_VN or EV_RELOAD): the core's rules,
+    with the contact-radius factor that keeps a(t) continuous at the turning point."""
+    if k == EV_VN:
+        if md[M_COMP] != 0.0:
+            if md[M_PHASE] == 0.0:
+                status, md = unloading_branch(law, p, FR_MINDLIN, md, delta)
+                if status != ST_OK:
+                    return status, md
+            return ST_OK, mode_with(md, M_COMP, 0.0)
+        return ST_OK, mode_with(md, M_COMP, 1.0)
+    if k == EV_RELOAD:
+        return ST_OK, mode_with(md, M_PHASE, 0.0)
+    return ST_OK, md

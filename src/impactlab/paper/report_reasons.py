@@ -1,0 +1,94 @@
+"""Section 5 of the reproduction report: every published number impactlab does not reproduce,
+as one table, with each explanation (from :mod:`impactlab.paper.reasons`) written once."""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+import pandas as pd
+
+from impactlab.paper.report import Block, Bullets, Heading, Para, Table, fmt, fmt_pct
+
+__all__ = ["not_reproduced"]
+
+_NUMBER = re.compile(r"[-+]?\d+(?:\.\d+)?(?:e[-+]?\d+)?")
+
+
+def _letter(i: int) -> str:
+    """A, B, ..., Z, AA, AB, ... for the explanations of Section 5."""
+    return _letter(i // 26 - 1) + chr(65 + i % 26) if i >= 26 else chr(65 + i)
+
+
+def _explained(bad: pd.DataFrame) -> tuple[pd.DataFrame, list[str]]:
+    """One row per published number not reproduced (identical numbers of the two friction
+    models once), with the letter of its explanation; and the explanations, each once: reasons
+    that differ only in their numbers share one (shown with the numbers of its first row)."""
+    rows: list[dict[str, Any]] = []
+    kinds: dict[str, tuple[str, list[str]]] = {}  # reason without numbers -> letter, row labels
+    texts: dict[str, str] = {}
+    keys = ["source", "angle [deg]", "model", "quantity", "published", "impactlab", "reason"]
+    for _, g in bad.groupby(keys, sort=False, dropna=False):
+        r = g.iloc[0]
+        frs = ", ".join(f for f in g["friction"] if f != "-") or "-"
+        kind = _NUMBER.sub("#", str(r["reason"]))
+        if kind not in kinds:
+            kinds[kind] = (_letter(len(kinds)), [])
+            texts[kind] = str(r["reason"])
+        letter, labels = kinds[kind]
+        labels.append(f"{r['source']}, {r['angle [deg]']} deg, {r['model']}, {r['quantity']}")
+        rows.append(
+            {
+                "source": r["source"],
+                "angle [deg]": r["angle [deg]"],
+                "model": r["model"],
+                "friction": frs,
+                "quantity": r["quantity"],
+                "published": r["published"],
+                "impactlab": r["impactlab"],
+                "rel. diff": fmt_pct(r["rel. diff"]),
+                "why": letter,
+            }
+        )
+    notes = [
+        f"{letter} ({len(labels)} row{'s' if len(labels) > 1 else ''}; the numbers of "
+        f"{labels[0]}): {texts[kind]}."
+        for kind, (letter, labels) in kinds.items()
+    ]
+    return pd.DataFrame(rows), notes
+
+
+def not_reproduced(comp: pd.DataFrame) -> list[Block]:
+    """Section 5: the table of the published numbers not reproduced, each explanation once,
+    and the experimental forces within tolerance that still need a note."""
+    B: list[Block] = [Heading("5. Every published number not reproduced, and why")]
+    bad = comp[comp["reproduced"] == False]  # noqa: E712
+    if bad.empty:
+        B.append(Para("None."))
+    else:
+        table, notes = _explained(bad)
+        B += [
+            Para(
+                "Tolerances: 15 % for the simulated rows (required for e and delta_p; "
+                "applied to L_s, T and F as well), 5 % for the experimental T, 15 % for "
+                "the experimental F. Identical numbers of the two friction models are "
+                "listed once. The column 'why' names the explanation below the table; "
+                "each row's own numbers are in the column 'reason' of comparison.csv."
+            ),
+            Table(table, "Published numbers not reproduced", digits=4),
+            Bullets(tuple(notes)),
+        ]
+    ok_f = comp[
+        (comp["model"] == "experiment")
+        & (comp["quantity"] == "F [N]")
+        & comp["reproduced"].eq(True)
+    ]
+    for _, r in ok_f.iterrows():
+        B.append(
+            Para(
+                f"Within tolerance but worth a note: {r['angle [deg]']} deg experimental F, "
+                f"published {fmt(r['published'])} N, impactlab {fmt(r['impactlab'])} N "
+                f"({fmt_pct(r['rel. diff'])}): {r['reason']}."
+            )
+        )
+    return B

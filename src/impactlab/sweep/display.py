@@ -1,0 +1,105 @@
+"""How a study and a finished sweep show themselves: a one-line ``repr`` and a notebook table
+that summarise each dimension as name, size, range and unit (never every value), and the
+sweep's throughput without the one-time compile.
+
+The first task of each worker includes loading (or compiling) the engine's compiled functions
+once; ``steady_throughput`` leaves those tasks out, so it measures the engine, not numba.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Any
+
+from impactlab._display import format_number, format_value
+from impactlab._html import axis_row, grid_html, value_range
+from impactlab.sweep.dimensions import SAMPLE_DIM
+from impactlab.sweep.inputs import get_input
+
+__all__ = [
+    "dimension_rows",
+    "steady_throughput",
+    "study_html",
+    "study_repr",
+    "sweep_result_html",
+    "warm_up_s",
+]
+
+
+def dimension_rows(study: Any) -> list[tuple[str, str, str, str]]:
+    """``(name, size, range, unit)`` of each dimension: grid axes, then each sampled input (its
+    distribution as the range)."""
+    rows = [axis_row(a.name, a.values, get_input(a.name).unit) for a in study.axes]
+    if study.sample is not None:
+        for name, dist in study.sample.inputs.items():
+            spec = dist.to_dict()
+            text = ", ".join(f"{k} {format_value(v)}" for k, v in spec.items())
+            unit = get_input(name).unit.replace("1", "")
+            rows.append((f"{SAMPLE_DIM}: {name}", str(study.sample.size), text, unit))
+    return rows
+
+
+def _fixed_text(study: Any) -> list[str]:
+    out = []
+    for name, v in study.fixed.items():
+        text, unit = value_range(name, [v], get_input(name).unit)
+        out.append(f"{name} = {text}{' ' + unit if unit else ''}")
+    return out
+
+
+def study_repr(study: Any) -> str:
+    """``Study('map', grid, 1089 cases in 5 chunks; angle[33] 5 .. 85 deg, ...; fixed: ...)``."""
+    dims = "; ".join(f"{n}[{s}] {r} {u}".rstrip() for n, s, r, u in dimension_rows(study))
+    fixed = ", ".join(_fixed_text(study))
+    lay = study.layout
+    return (
+        f"Study({study.name!r}, {study.mode}, {lay.n_cases} cases in {lay.n_chunks} chunks; "
+        f"{dims}{'; fixed: ' + fixed if fixed else ''})"
+    )
+
+
+def study_html(study: Any) -> str:
+    """A study as a notebook table: one row per dimension, then the fixed inputs and outputs."""
+    lay = study.layout
+    outputs = ", ".join(study.outputs) if study.outputs is not None else "all"
+    caption = (
+        f"{study.mode}: {lay.n_cases} cases in {lay.n_chunks} chunks; fixed: "
+        f"{', '.join(_fixed_text(study)) or 'none'}; outputs: {outputs}"
+    )
+    header = ("dimension", "size", "range", "unit")
+    return grid_html(f"Study {study.name!r}", header, dimension_rows(study), caption)
+
+
+def warm_up_s(stats: Any) -> float:
+    """The longest first task of a worker [s]: it includes loading (or compiling) the engine."""
+    return max(stats.first_task_s.values(), default=0.0)
+
+
+def steady_throughput(stats: Any) -> float | None:
+    """Cases per second of wall time after each worker's first task (which loads or compiles the
+    engine once); None when every computed chunk was a first task."""
+    first_cases = sum(stats.first_task_cases.values())
+    cases = stats.cases_computed - first_cases
+    wall = stats.wall_s - warm_up_s(stats)
+    if cases <= 0 or wall <= 0.0:
+        return None
+    return float(cases / wall)
+
+
+def _rows(result: Any) -> Sequence[tuple[str, str]]:
+    s = result.stats
+    steady = steady_throughput(s)
+    return (
+        ("store", str(result.path)),
+        ("chunks", f"{s.chunks_computed} computed, {s.chunks_before} already stored"),
+        ("cases computed", str(s.cases_computed)),
+        ("wall time", f"{format_number(s.wall_s)} s ({s.backend}, {s.workers} workers)"),
+        ("first task (compile/load)", f"{format_number(warm_up_s(s))} s"),
+        ("throughput", "-" if steady is None else f"{format_number(steady)} impacts/s"),
+    )
+
+
+def sweep_result_html(result: Any) -> str:
+    """A finished sweep as a notebook table: its run numbers, then its study."""
+    run = grid_html("SweepResult", ("", ""), _rows(result))
+    return run + study_html(result.study)

@@ -1,0 +1,1 @@
+"""Published measurements used by the verification pages (each module states its source)."""

@@ -1,0 +1,195 @@
+"""Verification of the ``partial_slip`` friction model (issue 12): cases, reference values and
+the sphere runs behind the tests (tests/dynamics/test_partial_slip*.py) and the verification
+page (``partial_slip_page``).
+
+Reference values ("exact M-D") are the exact Mindlin-Deresiewicz solution of the same impact,
+computed by the fixed-step method-of-dimensionality-reduction reference of the prototype
+(research/partial_slip/mdr.py: 600 elements, 20 000 velocity-Verlet steps, converged to ~1e-5
+in e_t; research/partial_slip/results/*.json, RESULTS.md). They are an independent solution of
+the continuous model, not of the discretised one; rounded to 5 digits here.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from impactlab.bodies import Sphere
+from impactlab.dynamics import simulate
+from impactlab.materials import AISI_201, AISI_1010, ContactPair, Material
+from impactlab.verification.data.kharaz2001 import KGS_ET, KGS_OMEGA
+
+__all__ = [
+    "ALUMINA",
+    "GLASS",
+    "KGS_EXACT",
+    "KGS_SPEED",
+    "MBF_EXACT",
+    "THORNTON_EXACT",
+    "SphereCase",
+    "kharaz_case",
+    "kharaz_rms",
+    "kharaz_run",
+    "mbf_case",
+    "psi_velocity",
+    "rigid_coulomb",
+    "thornton_case",
+]
+
+# Kharaz, Gorham & Salman, Powder Technol. 120 (2001) 281, doi:10.1016/S0032-5910(01)00283-2:
+# 5 mm alumina spheres on a thick soda-lime glass anvil, 3.9 m/s, mu = 0.092. Elastic constants
+# as tabulated for this experiment by Di Renzo & Di Maio (2004, doi:10.1016/j.ces.2003.09.037)
+# and reused by the MFIX DEM05 case and Lethe; the yield strengths are placeholders (the Hertz
+# law does not use them).
+ALUMINA = Material("alumina (Kharaz 2001)", E=380e9, nu=0.23, yield_strength=5e9, density=4000.0)
+GLASS = Material(
+    "soda-lime glass (Kharaz 2001)", E=70e9, nu=0.25, yield_strength=3e9, density=2500.0
+)
+KGS_SPEED = 3.9
+KGS_MU = 0.092
+#: MBF's solid sphere: steel on steel, nu = 0.3 (chi = 1.441), mu = 0.3, |v_n| = 1 m/s.
+STEEL_NU30 = Material("steel nu=0.30", E=200e9, nu=0.30, yield_strength=1e9, density=7800.0)
+
+#: Kharaz case, exact M-D: theta [deg], e_t = v_x,out / v_x,in, rebound spin [rad/s].
+KGS_EXACT = np.array(
+    [
+        [1.0, 0.78473, -14.65],
+        [2.0, 0.77407, -30.75],
+        [4.0, 0.74965, -68.11],
+        [6.0, 0.72151, -113.53],
+        [10.0, 0.63643, -246.22],
+        [15.0, 0.59041, -413.44],
+        [20.0, 0.59221, -543.94],
+        [30.0, 0.68130, -621.46],
+        [40.0, 0.78072, -549.71],
+        [60.0, 0.89377, -358.80],
+    ]
+)
+#: MBF solid sphere, exact M-D: psi1, psi2 (MBF's sign: < 0 = contact point rebounds backwards),
+#: e_t, normalised spin -omega R / (mu |v_n|).
+MBF_EXACT = np.array(
+    [
+        [0.05, 0.01094, 0.77678, 0.03388],
+        [0.65455, 0.03179, 0.72816, 0.54014],
+        [1.375, -0.32121, 0.64754, 1.47120],
+        [2.25, -1.01238, 0.58573, 2.82961],
+        [3.125, -1.41585, 0.58484, 3.93850],
+        [4.0, -1.43651, 0.61168, 4.71534],
+        [4.875, -0.88971, 0.66214, 5.0],
+        [5.75, -0.01471, 0.71355, 5.0],
+        [7.5, 1.73529, 0.78039, 5.0],
+        [9.5, 3.73529, 0.82663, 5.0],
+    ]
+)
+#: Thornton's representation, AISI 201 sphere (R = 5 mm) on AISI 1010, mu = 0.3, exact M-D:
+#: (law, |v_n| [m/s]) -> rows Psi, e_t, Omega = 2 omega R / (mu (1 + e) |v_n|) (magnitude).
+THORNTON_EXACT = {
+    ("hertz", 1.0): np.array(
+        [
+            [0.1, 0.77439, 0.0564],
+            [1.24, 0.69506, 0.9453],
+            [2.6667, 0.58722, 2.75186],
+            [4.6667, 0.60530, 4.60484],
+            [6.6667, 0.7, 5.0],
+            [14.0, 0.85714, 5.0],
+        ]
+    ),
+    ("thornton", 0.5): np.array(
+        [
+            [0.1, 0.53065, 0.11734],
+            [1.24, 0.79758, 0.62749],
+            [2.6667, 0.76649, 1.55675],
+            [4.6667, 0.66225, 3.9404],
+            [6.6667, 0.7, 5.0],
+            [14.0, 0.85714, 5.0],
+        ]
+    ),
+}
+
+
+@dataclass(frozen=True)
+class SphereCase:
+    """A sphere impact family: body, flat, law, mu and the normal speed |v_n| [m/s]."""
+
+    body: Sphere
+    flat: Material
+    law: str
+    mu: float
+    vn: float
+
+    @property
+    def eta(self) -> float:
+        """4 G*/E*: full-stick tangential over normal tangent stiffness."""
+        pair = ContactPair(self.body.material, self.flat)
+        return 4.0 * pair.G_star / pair.E_star
+
+    @property
+    def chi(self) -> float:
+        """Maw-Barber-Fawcett's chi = (eta/2)(1 + m R^2 / I)."""
+        b = self.body
+        return 0.5 * self.eta * (1.0 + self.mass * b.radius**2 / b.inertia)
+
+    @property
+    def mass(self) -> float:
+        """The sphere's mass [kg]."""
+        return float(self.body.inertia / (0.4 * self.body.radius**2))
+
+    def run(
+        self, vt: float, friction: str = "partial_slip", vn: float | None = None
+    ) -> dict[str, float]:
+        """One impact (no gravity) with tangential velocity ``vt`` and normal speed ``vn``
+        (default the case's) [m/s]: e, e_t, spin [rad/s] and the slip velocity out [m/s]."""
+        vn = self.vn if vn is None else vn
+        r = simulate(
+            self.body, self.flat, law=self.law, friction=friction, mu=self.mu,
+            velocity=(vt, -vn), gravity=False, history=False,
+        )  # fmt: skip
+        vx = r.velocity_out[0]
+        vslip = vx + r.spin_out * self.body.radius
+        return {"e": r.e, "et": vx / vt, "spin": r.spin_out, "vslip": vslip}
+
+
+def kharaz_case() -> SphereCase:
+    """Kharaz-Gorham-Salman: 5 mm alumina sphere on glass, 3.9 m/s, mu = 0.092 (Hertz)."""
+    return SphereCase(Sphere(radius=2.5e-3, material=ALUMINA), GLASS, "hertz", KGS_MU, KGS_SPEED)
+
+
+def kharaz_run(theta_deg: float, friction: str = "partial_slip") -> dict[str, float]:
+    """The Kharaz impact at incidence ``theta_deg`` from the normal."""
+    th = math.radians(theta_deg)
+    return kharaz_case().run(KGS_SPEED * math.sin(th), friction, KGS_SPEED * math.cos(th))
+
+
+def mbf_case(mu: float = 0.3, vn: float = 1.0) -> SphereCase:
+    """Maw-Barber-Fawcett's solid sphere: steel (nu = 0.3) on steel, R = 5 mm, Hertz."""
+    return SphereCase(Sphere(radius=5e-3, material=STEEL_NU30), STEEL_NU30, "hertz", mu, vn)
+
+
+def thornton_case(law: str, vn: float, mu: float = 0.3) -> SphereCase:
+    """Thornton's representation: AISI 201 sphere (R = 5 mm) on AISI 1010."""
+    return SphereCase(Sphere(radius=5e-3, material=AISI_201), AISI_1010, law, mu, vn)
+
+
+def rigid_coulomb(case: SphereCase, vt: float, e: float) -> dict[str, float]:
+    """Rigid-body Coulomb (Stronge, doi:10.1017/CBO9780511626432) for a sphere without initial
+    spin: slides throughout, or slides then rolls. e_t and spin [rad/s]."""
+    b, m = case.body, case.mass
+    k = 1.0 + m * b.radius**2 / b.inertia
+    pn = m * (1.0 + e) * case.vn
+    pt = -case.mu * pn if vt - k * case.mu * pn / m >= 0.0 else -m * vt / k
+    vx = vt + pt / m
+    return {"et": vx / vt, "spin": b.radius * pt / b.inertia}
+
+
+def psi_velocity(case: SphereCase, psi: float, e: float) -> float:
+    """v_t for Thornton's Psi = 2 tan(theta) / (mu (1 + e))."""
+    return psi * case.mu * (1.0 + e) * case.vn / 2.0
+
+
+def kharaz_rms(friction: str = "partial_slip") -> tuple[float, float]:
+    """RMS deviation of e_t and of |spin| [rad/s] from the Kharaz data (all digitised points)."""
+    det = [kharaz_run(t, friction)["et"] - v for t, v in KGS_ET]
+    dw = [abs(kharaz_run(t, friction)["spin"]) - v for t, v in KGS_OMEGA]
+    return float(np.sqrt(np.mean(np.square(det)))), float(np.sqrt(np.mean(np.square(dw))))
