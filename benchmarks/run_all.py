@@ -23,6 +23,7 @@ def main(argv: list[str]) -> int:
             "--markdown",
             str(HERE.parent / "docs" / "engine" / "benchmarks.md"),
         ],
+        [sys.executable, str(HERE / "profile_engine.py")],
         [sys.executable, str(HERE / "bench_sweep.py"), *([] if full else ["--quick"])],
         [sys.executable, str(HERE / "bench_flexible.py")],
     ]

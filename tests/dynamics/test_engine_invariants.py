@@ -14,7 +14,7 @@ import zlib
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from impactlab.bodies import PAPER_ROD, Rod, Sphere
@@ -27,6 +27,9 @@ from impactlab.materials import AISI_1010
 O = {n: i for i, n in enumerate(OUTPUT_FIELDS)}
 LAWS = law_names()
 ENERGY_TOL = 5e-6  # relative to the initial kinetic energy (integration error, default rtol)
+#: history rows are dense-output samples inside steps: they are held to the engine's accuracy
+#: contract (1e-5 relative, tests/dynamics/test_accuracy.py), not to the step-end tolerance
+HISTORY_ENERGY_TOL = 1e-5
 FRICTION_TOL = 1e-4  # (|F_t| - mu F_n) / max F_n: integration error at events near separation
 N_CASES = 250  # per (law, friction, body): 6 x 3 x 2 x 250 = 9000 impacts
 
@@ -113,6 +116,9 @@ def test_impulse_ratio_creates_energy_after_reversal() -> None:
 
 
 @settings(max_examples=25, deadline=None)
+# found by hypothesis: a stick that breaks just before separation; the sampled energy dips by
+# 5.8e-6 E0 inside the last step at the default rtol (2e-8 at rtol 1e-9: integration error)
+@example(law="hertz", friction="coulomb", th=1.140625, vx=-0.05859375, vy=-1.75, mu=0.5)
 @given(
     law=st.sampled_from(LAWS),
     friction=st.sampled_from(list(FRICTION_IDS)),
@@ -134,7 +140,7 @@ def test_invariants_history(
     e0 = h.energy[0]
     if friction != "impulse_ratio" or r.regime != "reversal":
         running_min = np.minimum.accumulate(h.energy)
-        assert np.all(h.energy - running_min <= ENERGY_TOL * e0)
+        assert np.all(h.energy - running_min <= HISTORY_ENERGY_TOL * e0)
     if friction != "impulse_ratio":
         excess = np.abs(h.tangential_force) - mu * h.normal_force
         assert np.all(excess <= FRICTION_TOL * r.max_force)
