@@ -88,9 +88,23 @@ def test_rigid_and_options(monkeypatch, capsys):
     assert data["velocity_in"] == {"value": [0.1, -1.41], "unit": "m/s"}
 
 
+def test_friction_model_is_chosen(monkeypatch, capsys):
+    code, out, err = _cli(
+        monkeypatch, capsys, *PAPER_20, "--rigid", "--friction", "mindlin", "--json"
+    )
+    assert code == 0, err
+    data = json.loads(out)
+    ref = simulate_drop(
+        PAPER_ROD, friction="mindlin", mu=0.2, angle=math.radians(20), velocity=(0.0, -1.41)
+    )
+    assert data["friction"] == "mindlin"
+    assert data["e"]["value"] == ref.e
+
+
 @pytest.mark.parametrize(
     ("args", "needle"),
     [
+        ((*PAPER_20, "--friction", "glue"), "glue"),
         (("--vy", "-1.41 m/s"), "--angle is required"),
         (("--angle", "20 deg"), "--vy is required"),
         (("--angle", "20", "--vy", "-1.41"), "has no unit"),

@@ -78,7 +78,7 @@ def test_models_differ_on_the_flexible_rod() -> None:
 def test_unsupported_model_is_refused() -> None:
     """A friction model the drop integrator lacks: a ValueError naming the supported ones."""
     rod = FlexibleRod.paper(n_axial=1, n_bending=1)
-    others = [str(k) for k in FrictionKind if str(k) not in MODELS]
+    others = [str(k) for k in FrictionKind if str(k) not in [*MODELS, "partial_slip"]]
     for name in [*others, "nonsense"]:
         with pytest.raises(ValueError, match="friction"):
             simulate_drop(rod, friction=name, angle=0.3, velocity=(0.0, -1.0))

@@ -179,8 +179,11 @@ def drop_cmd(
     vy: str = typer.Option(None, "--vy", help=KINEMATIC_HELP["vy"]),
     vx: str = typer.Option(None, "--vx", help=KINEMATIC_HELP["vx"]),
     spin: str = typer.Option(None, "--spin", help=KINEMATIC_HELP["spin"]),
-    mu: float = typer.Option(
-        DEFAULT_MU, "--mu", help="Coulomb friction coefficient (the only friction model here)."
+    mu: float = typer.Option(DEFAULT_MU, "--mu", help="Friction coefficient, >= 0 (default 0)."),
+    friction: str = typer.Option(
+        "coulomb",
+        "--friction",
+        help="Friction model: impulse_ratio, coulomb (default), mindlin or partial_slip.",
     ),
     law: str = typer.Option("ghaednia", "--law", help="Contact law (default ghaednia)."),
     rate: str = typer.Option(
@@ -209,6 +212,8 @@ def drop_cmd(
       impactlab drop --angle "45 deg" --vy "-2.18 m/s" --mu 0.13 --rate cowper-symonds
 
       impactlab drop --angle "70 deg" --vy "-3.45 m/s" --mu 0.1 --rigid --json
+
+      impactlab drop --angle "20 deg" --vy "-1.41 m/s" --mu 0.2 --friction partial_slip
     """
     if angle is None:
         raise UserError('--angle is required, with a unit, e.g. --angle "20 deg"')
@@ -218,7 +223,7 @@ def drop_cmd(
     result = simulate_drop(
         body,
         law=law,
-        friction="coulomb",
+        friction=friction,
         mu=mu,
         angle=angle_quantity(angle, "--angle"),
         velocity=(quantity(vx, "m/s", "--vx") or 0.0, quantity(vy, "m/s", "--vy") or 0.0),

@@ -38,7 +38,7 @@ from impactlab.dynamics.core.quality import energy_gained, gravity_dominated
 from impactlab.dynamics.drop_result import ContactRecord, DentRecord, DropHistory, DropResult
 from impactlab.dynamics.flexcore import drop
 from impactlab.dynamics.flexcore import layout as F
-from impactlab.dynamics.flexcore.model import constants, model_tuple
+from impactlab.dynamics.flexcore.model import constants, model_tuple, state_length
 from impactlab.dynamics.models import (
     body_params,
     build_contact_model,
@@ -47,7 +47,16 @@ from impactlab.dynamics.models import (
     references_used,
 )
 from impactlab.flags import ResultFlag
-from impactlab.friction import DEFAULT_MU, FrictionKind, FrictionModel, get_friction
+from impactlab.friction import (
+    COULOMB,
+    DEFAULT_MU,
+    MINDLIN,
+    PARTIAL_SLIP,
+    PARTIAL_SLIP_CELLS,
+    FrictionKind,
+    FrictionModel,
+    get_friction,
+)
 from impactlab.materials import AISI_1010, Material
 from impactlab.references import Reference
 
@@ -112,7 +121,8 @@ def _check_body(body: Any) -> FlexibleRod | Rod:
 
 
 #: The friction models of the drop integrator (``impactlab.dynamics.flexcore.friction``).
-DROP_FRICTION = (FrictionKind.IMPULSE_RATIO, FrictionKind.COULOMB, FrictionKind.MINDLIN)
+DROP_FRICTION: tuple[FrictionKind, ...] = (FrictionKind.IMPULSE_RATIO, FrictionKind.COULOMB)
+DROP_FRICTION += (FrictionKind.MINDLIN, FrictionKind.PARTIAL_SLIP)
 
 
 def _check_friction(friction: str, mu: float) -> tuple[FrictionModel, float]:
@@ -162,29 +172,44 @@ def _run(
     bm: _BodyModel,
     model: ContactModel,
     state: tuple[float, float, float, float],
-    friction: tuple[int, float, float],
+    friction: tuple[int, float, float, tuple[float, float]],
     g: float,
     options: tuple[float, float, int, bool],
 ) -> _Run:
-    """One compiled drop. state = (angle, vx, vy, spin); friction = (id, mu, G* [Pa]);
-    options = (rtol, t_max, stop, history)."""
+    """One compiled drop. state = (angle, vx, vy, spin); friction = (id, mu, G* [Pa], the cell
+    widths of the ends [m] (partial slip)); options = (rtol, t_max, stop, history)."""
     angle, vx, vy, w = state
-    fid, mu, gstar = friction
+    fid, mu, gstar, widths = friction
     rtol, t_max, stop, history = options
     rod = bm.rigid
     p = kernel_params(model)
     c = constants(
-        rod.half_length, rod.tip_radius, rod.mass, bm.inertia, g, angle, mu, p, fid, gstar
+        rod.half_length, rod.tip_radius, rod.mass, bm.inertia, g, angle, mu, p, fid, gstar, widths
     )
     mdl = model_tuple(model.law_id, p, c, bm.omega, bm.zeta, bm.U, bm.W, bm.Psi, bm.geometric)
     out = np.empty(F.N_OUT)
     contacts = np.zeros((F.MAX_CONTACTS, F.NCR))
     dents = np.zeros((F.MAX_DENTS, F.NDT))
-    yfinal = np.zeros(6 + 2 * bm.omega.size + F.NQUAD)
+    yfinal = np.zeros(state_length(bm.omega.size, fid))
     st, ncon, nd, hist, _nh = drop(
         mdl, vx, vy, w, rtol, t_max, stop, history, out, contacts, dents, yfinal
     )
     return _Run(int(st), out, contacts[:ncon].copy(), dents[:nd].copy(), hist if history else None)
+
+
+def _cell_widths(run: _Run, model: ContactModel) -> tuple[float, float]:
+    """Partial slip: the cell width of each end [m], PARTIAL_SLIP_CELLS cells over the largest
+    loading contact radius of its contacts in the pre-pass ``run`` (an end without contacts
+    there: the tip's), as the rigid engine's estimate (``dynamics.partial_slip``)."""
+    if run.status != F.ST_OK:
+        raise _status_error(run.status, model)
+    p = kernel_params(model)
+    a = [0.0] * F.NE
+    for row in run.contacts:
+        k = int(row[F.CR_END])
+        a[k] = max(a[k], float(loading_contact_radius(model.law_id, p, float(row[F.CR_DMAX]))))
+    a1 = a[1] if a[1] > 0.0 else a[0]
+    return a[0] * 1.0001 / PARTIAL_SLIP_CELLS, a1 * 1.0001 / PARTIAL_SLIP_CELLS
 
 
 def _first_contact_radius(run: _Run, model: ContactModel) -> float:
@@ -306,7 +331,8 @@ def simulate_drop(
 
     body: a FlexibleRod, or a rigid Rod (the rigid limit: no modes); flat: the flat's material; law:
     a registered law name (or a ContactModel; no ``rate`` then); friction: ``"coulomb"``,
-    ``"impulse_ratio"`` or ``"mindlin"`` (set at every touch, as in the rigid engine); mu >= 0;
+    ``"impulse_ratio"``, ``"mindlin"`` or ``"partial_slip"`` (set at every touch, as in the
+    rigid engine; partial slip: cells over the contact radius of a Mindlin pre-pass); mu >= 0;
     angle [rad] in (0, pi/2]; velocity (vx, vy) of the centre of mass at first touch [m/s]; spin
     [rad/s]; gravity: True, False or a value [m/s^2]; rate: None, ``"cowper-symonds"`` or
     ``"johnson-cook"`` (the flat's yield strength raised by the self-consistent rate factor,
@@ -335,10 +361,15 @@ def simulate_drop(
         )
 
     gstar = float(body_params(bm.rigid, flat)[BP_GSTAR])
-    friction_in = (fric.friction_id, mu_v, gstar)
+    fid = COULOMB if (fric.friction_id == PARTIAL_SLIP and mu_v == 0.0) else fric.friction_id
 
     def run(model: ContactModel, record: bool = False) -> _Run:
-        return _run(bm, model, (th, vx, vy, w), friction_in, g, (*options, record))
+        widths = (math.nan, math.nan)
+        if fid == PARTIAL_SLIP:  # the cells span the contact radius of a Mindlin pre-pass
+            pre = _run(bm, model, (th, vx, vy, w), (MINDLIN, mu_v, gstar, widths), g,
+                       (*options, False))  # fmt: skip
+            widths = _cell_widths(pre, model)
+        return _run(bm, model, (th, vx, vy, w), (fid, mu_v, gstar, widths), g, (*options, record))
 
     model, factor = _rate_model(rate, law, bm.rigid, flat, law_params, run, vn0)
     r = run(model, bool(history))

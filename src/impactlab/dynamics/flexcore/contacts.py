@@ -29,6 +29,8 @@ from impactlab.contact.kernels import (
 )
 from impactlab.dynamics.core.layout import FR_COULOMB, FR_MINDLIN
 from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.flexcore.cells import reset
+from impactlab.dynamics.flexcore.cellswitch import cell_offset, touch_cells
 from impactlab.dynamics.flexcore.friction import (
     coulomb_decide,
     initial_mode,
@@ -163,6 +165,8 @@ def on_touch(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, ek, Jn, Jt):
     md[k, F.MD_IN] = 1.0
     md[k, F.MD_COMP] = 1.0
     initial_mode(mdl[1], c, M, md, k, ek[k, F.EK_VT], ek[k, F.EK_VN], Jn, Jt)
+    if c[F.C_FRIC] == F.FR_PARTIAL:
+        touch_cells(mdl, md, k, y, ek)
     b = iq + 3 + 4 * k
     for i in range(4):
         snap[k, i] = y[b + i]
@@ -223,6 +227,8 @@ def on_separation(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, y_end, e
     md[k, F.MD_IN] = 0.0
     md[k, F.MD_FM] = 0.0
     md[k, F.MD_COMP] = 0.0
+    if mdl[2][F.C_FRIC] == F.FR_PARTIAL:
+        reset(md, k, y, cell_offset(mdl, k))
     sv[F.SV_LAST_END] = k
     sv[F.SV_T_LAST_SEP] = t
     for i in range(y.shape[0]):
@@ -238,7 +244,7 @@ def on_friction(mdl, md, y, k, der, ev, ek, Jn, Jt):
     core's switch (``friction.mindlin_switch``)."""
     c, M = mdl[2], mdl[3].shape[0]
     if c[F.C_FRIC] == FR_MINDLIN:
-        mindlin_switch(c, md, k, y, y.shape[0] - F.NQUAD + F.Q_TAN, ek)
+        mindlin_switch(c, md, k, y, 6 + 2 * M + F.Q_TAN, ek)
     elif md[k, F.MD_FM] != 0.0:
         md[k, F.MD_FM] = 0.0
         evaluate(mdl, md, y, der, ev, ek, Jn, Jt)

@@ -13,6 +13,7 @@ import numpy as np
 from numba import njit
 
 from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.flexcore.cells import step_cap
 from impactlab.dynamics.flexcore.coast import out_of_contact, refresh_thresholds
 from impactlab.dynamics.flexcore.events import handle_events
 from impactlab.dynamics.flexcore.history import record
@@ -34,13 +35,18 @@ def drop(mdl, vx0, vy0, w0, rtol, t_max, stop_mode, record_on, out, contacts, de
     (MAX_CONTACTS, NCR), ``dents`` (MAX_DENTS, NDT) and ``yfinal`` (the state where the end
     criterion was met). Returns (status, n_contacts, n_dents, history, n_history).
     """
-    n = 6 + 2 * mdl[3].shape[0] + F.NQUAD
-    sv, md, y, sc, Jn, Jt, ek, ev, gold, gnew, K, Q, st, ynew, yt, yev, der, snap = workspace(n)
+    M = mdl[3].shape[0]
+    partial = mdl[2][F.C_FRIC] == F.FR_PARTIAL
+    n = 6 + 2 * M + F.NQUAD + (F.NE * F.NCS if partial else 0)
+    nev = F.NEV + (F.NE * F.NEVC if partial else 0)
+    sv, md, y, sc, Jn, Jt, ek, ev, gold, gnew, K, Q, st, ynew, yt, yev, der, snap = workspace(
+        n, M, nev
+    )
     cur_con = np.full(F.NE, -1)
     hist = np.empty((1024 if record_on else 1, F.NH))
     nh = 0
+    scales(mdl, vx0, vy0, w0, sc, sv)  # first: the cell parameters of partial slip
     first_touch(mdl, md, y, vx0, vy0, w0, sv, contacts, dents, cur_con, der, ev, ek, Jn, Jt)
-    scales(mdl, vx0, vy0, w0, sc, sv)
     t = 0.0
     h = 0.02 * sv[F.SV_TSTAR] * rtol**0.2
     evaluate(mdl, md, y, K[0], gold, ek, Jn, Jt)
@@ -61,6 +67,7 @@ def drop(mdl, vx0, vy0, w0, rtol, t_max, stop_mode, record_on, out, contacts, de
                 continue
         sv[F.SV_NSTEPS] += 1
         h = min(h, sv[F.SV_HMAX])
+        h = step_cap(h, mdl[2], md, ek, sv[F.SV_HMIN])  # partial slip: a cell boundary
         err = dp_step(mdl, md, y, K, h, rtol, sc, st, ynew, gnew, ek, Jn, Jt)
         if not err <= 1.0:
             h = reject(h, err, sv)

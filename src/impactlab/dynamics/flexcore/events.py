@@ -8,6 +8,7 @@ import math
 from numba import njit
 
 from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.flexcore.cellswitch import apply_cell_event, settle
 from impactlab.dynamics.flexcore.contacts import (
     on_friction,
     on_separation,
@@ -23,35 +24,51 @@ _PENDING_ORDER = (F.EV_SEP, F.EV_TOUCH, F.EV_VN, F.EV_RELOAD, F.EV_SWITCH, F.EV_
 
 
 @njit(cache=True)
+def _apply(jev, mdl, md, y, t, sv, contacts, dents, cur_con, snap, y_end, der, ev, ek, Jn, Jt):
+    """The action of event ``jev`` (an end's, or a partial-slip cell's: ``jev`` >= NEV);
+    returns (status, end, kind: -1 for a cell event)."""
+    k = jev // F.NEVK
+    kind = jev % F.NEVK
+    st = F.ST_OK
+    if jev >= F.NEV:  # a partial-slip cell: birth, release or stick/slip
+        apply_cell_event(jev, mdl, md, y, ek)
+        return st, 0, -1
+    if kind == F.EV_LIMIT:
+        st = F.ST_LAW_LIMIT
+    elif kind == F.EV_TOUCH:
+        st = on_touch(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, ek, Jn, Jt)
+    elif kind == F.EV_VN:
+        st = on_turn(mdl, md, k, ek[k, F.EK_DELTA], dents)
+    elif kind == F.EV_RELOAD:
+        md[k, F.MD_PH] = 0.0
+    elif kind == F.EV_SWITCH:
+        md[k, F.MD_DSW] = math.inf
+    elif kind == F.EV_SEP:
+        on_separation(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, y_end, ek)
+    elif kind == F.EV_FRIC:
+        on_friction(mdl, md, y, k, der, ev, ek, Jn, Jt)
+    return st, k, kind
+
+
+@njit(cache=True)
 def handle_events(
     jev, mdl, md, y, t, K, gold, sv, sc, contacts, dents, cur_con, snap, y_end, der, ev, ek, Jn, Jt
 ):
     """Apply event ``jev`` at (t, y) and every event already past its switch at the same
-    instant (at most 8); ``sc``: the error scales (the Mindlin state's changes with its
+    instant (at most 8), after each (partial slip) every cell switch due
+    (``cellswitch.settle``); ``sc``: the error scales (the Mindlin state's changes with its
     meaning). False (with ``sv[F.SV_STATUS]`` set) on a failure."""
     fric = mdl[2][F.C_FRIC]
     for _it in range(8):
-        k = jev // F.NEVK
-        kind = jev % F.NEVK
-        st = F.ST_OK
-        if kind == F.EV_LIMIT:
-            st = F.ST_LAW_LIMIT
-        elif kind == F.EV_TOUCH:
-            st = on_touch(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, ek, Jn, Jt)
-        elif kind == F.EV_VN:
-            st = on_turn(mdl, md, k, ek[k, F.EK_DELTA], dents)
-        elif kind == F.EV_RELOAD:
-            md[k, F.MD_PH] = 0.0
-        elif kind == F.EV_SWITCH:
-            md[k, F.MD_DSW] = math.inf
-        elif kind == F.EV_SEP:
-            on_separation(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, y_end, ek)
-        elif kind == F.EV_FRIC:
-            on_friction(mdl, md, y, k, der, ev, ek, Jn, Jt)
+        st, k, kind = _apply(jev, mdl, md, y, t, sv, contacts, dents, cur_con, snap, y_end, der,
+                             ev, ek, Jn, Jt)  # fmt: skip
         if st != F.ST_OK:
             sv[F.SV_STATUS] = st
             return False
         mindlin_after(mdl, md, k, kind, y, ek, sc, sv)
+        if fric == F.FR_PARTIAL and not settle(mdl, md, y, K[0], gold, ek, Jn, Jt):
+            sv[F.SV_STATUS] = F.ST_TOO_MANY_EVENTS
+            return False
         evaluate(mdl, md, y, K[0], gold, ek, Jn, Jt)
         jev = -1
         for kk in range(F.NE):

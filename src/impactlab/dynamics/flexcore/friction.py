@@ -13,7 +13,10 @@ end and per contact.
   the event and the switch are the rigid core's kernels (``mindlin_trial_rate``,
   ``friction_switch``), fed with the end's mode in the rigid layout (``rigid_mode``).
 
-A re-contact is a new impact for the friction state: the mode (and Q_t = 0) is set at touch.
+- ``partial_slip``: Mindlin-Deresiewicz cells per end (``cells``, ``cellswitch``).
+
+A re-contact is a new impact for the friction state: the mode (and Q_t = 0, the cells reset)
+is set at touch.
 """
 
 from __future__ import annotations
@@ -141,15 +144,20 @@ def initial_mode(p, c, M, md, k, vt, vn, Jn, Jt):
         else:
             r = stick_ratio(c, M, Jn, Jt, k)
             md[k, F.MD_SIR] = 1.0 if r > 0.0 else (-1.0 if r < 0.0 else 0.0)
-    elif vt != 0.0 and 4.0 * c[F.C_GS] * md[k, F.MD_AF] * abs(vt) > mu * p[P_ESTAR] * abs(vn):
+    elif (
+        fric == FR_MINDLIN
+        and vt != 0.0
+        and 4.0 * c[F.C_GS] * md[k, F.MD_AF] * abs(vt) > mu * p[P_ESTAR] * abs(vn)
+    ):
         md[k, F.MD_FM] = 1.0 if vt > 0.0 else -1.0
 
 
 @njit(cache=True)
 def radius_factor(law, p, c, dm, dr, rr):
-    """Mindlin: a_loading(delta_m) / a_unloading(delta_m), the factor that makes k_t continuous
-    at the turning point (as the rigid core's ``unloading_branch``; 1 for the other models)."""
-    if c[F.C_FRIC] != FR_MINDLIN or not dm > 0.0:
+    """Mindlin and partial slip: a_loading(delta_m) / a_unloading(delta_m), the factor that
+    makes the contact radius continuous at the turning point (as the rigid core's
+    ``unloading_branch``; 1 for the other models)."""
+    if (c[F.C_FRIC] != FR_MINDLIN and c[F.C_FRIC] != F.FR_PARTIAL) or not dm > 0.0:
         return 1.0
     a_unl = _contact_radius(law, p, dm, math.inf, dr, rr)
     a_load = _contact_radius(law, p, dm, dm, 0.0, p[P_R])

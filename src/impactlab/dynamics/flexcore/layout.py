@@ -11,7 +11,8 @@ of x is the first contact point), phi: rotation since first touch [rad], q: moda
 [kg^1/2 m], W_n, W_t, W_d: work of the normal forces, of friction and of the modal damping [J];
 per end: normal and tangential impulse [N s], signed and absolute slip integrals [m]; per end
 the Mindlin tangential state Q_t (as the rigid core's ``S_Q``: the force [N] while the contact
-grows, the elastic displacement [m] while it shrinks; 0 for the other friction models).
+grows, the elastic displacement [m] while it shrinks; 0 for the other friction models). With
+``partial_slip`` NCS cell forces [N] per end follow (``cells``; state length ``state_length``).
 """
 
 from __future__ import annotations
@@ -21,6 +22,7 @@ from impactlab.schema import Field
 NE = 2  #: number of ends (0: the tip that touches first, 1: the other end)
 Q_TAN = 3 + 4 * NE  #: offset of the Mindlin states Q_t in the block after the modal velocities
 NQUAD = Q_TAN + NE  #: quadratures and tangential states at the end of the state vector
+FR_PARTIAL = 3  #: ``impactlab.friction`` id of ``partial_slip`` (Mindlin-Deresiewicz cells)
 
 # ---- constants vector (``C_*``) ---------------------------------------------------------------
 C_D = 0  #: L/2 [m]
@@ -36,7 +38,9 @@ C_S0 = 9  #: sin(angle)
 C_C0 = 10  #: cos(angle)
 C_FRIC = 11  #: friction model id (``impactlab.friction``: 0 impulse_ratio, 1 coulomb, 2 mindlin)
 C_GS = 12  #: G* of the pair [Pa] (Mindlin tangential stiffness k_t = 8 G* a)
-NC = 13
+C_CP = 13  #: partial slip: the cell parameters of end k at C_CP + k NCP (``cells.CP_*``)
+NCP = 4
+NC = C_CP + NE * NCP
 
 # ---- per-end mode table (``MD_*``) ------------------------------------------------------------
 MD_IN = 0  #: 1 in contact
@@ -50,7 +54,10 @@ MD_DSW = 7  #: pending elastic -> plastic switch interference [m] (inf when pass
 MD_DENT = 8  #: index of the dent under the end (-1: virgin flat)
 MD_SIR = 9  #: impulse_ratio: F_t = MD_SIR mu F_n over the contact (sign fixed at touch)
 MD_AF = 10  #: Mindlin: unloading contact-radius factor (k_t continuous at the turning point)
-NMD = 11
+NCS = 64  #: partial slip: cell slots per end (4 x the 16 cells over the estimated largest radius)
+MD_CM = 11  #: partial slip: cell modes (``cells.OUT``, ``STICK``, ``SLIP``), NCS columns
+MD_SG = MD_CM + NCS  #: partial slip: slip directions of the cells, NCS columns
+NMD = MD_SG + NCS
 
 # ---- per-end event functions (``EV_*``; event j of end k is k * NEVK + EV_*) -------------------
 EV_TOUCH = 0
@@ -62,6 +69,12 @@ EV_FRIC = 5  #: slip -> stick (v_t = 0) or stick -> slip (|F_t| = mu F_n)
 EV_SWITCH = 6  #: elastic -> plastic switch of the loading curve
 NEVK = 7
 NEV = NE * NEVK
+#: Partial slip: per end NEVC cell events after the NEV above (end k's at NEV + k NEVC):
+#: birth of the next cell, release of the outermost, then one stick/slip switch per cell.
+G_BIRTH = 0
+G_REL = 1
+G_CELL = 2
+NEVC = G_CELL + NCS
 
 # ---- per-end evaluated quantities (``EK_*``, a (NE, NEK) array) -------------------------------
 EK_DELTA = 0  #: interference [m]
@@ -72,7 +85,12 @@ EK_FN = 4  #: normal force [N]
 EK_FT = 5  #: tangential force [N]
 EK_JDOT = 6  #: dJ_t/dt z' (the velocity-dependent tangential acceleration) [m/s^2]
 EK_KT = 7  #: Mindlin tangential stiffness k_t [N/m] (0 for the other models)
-NEK = 8
+EK_A = 8  #: partial slip: contact radius a [m]
+EK_AD = 9  #: partial slip: da/dt [m/s]
+EK_L = 10  #: partial slip: the cells' limits L_i [N] (NCS columns)
+EK_LD = EK_L + NCS  #: their rates dL_i/dt [N/s]
+EK_F = EK_LD + NCS  #: the cells' forces f_i [N]
+NEK = EK_F + NCS
 
 # ---- dents on the flat (``DT_*``) -------------------------------------------------------------
 DT_END = 0  #: the end that made it

@@ -10,6 +10,7 @@ import numpy as np
 
 from impactlab.contact.kernels import P_DLIM, P_DSW
 from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.flexcore.cells import CP_DX
 
 
 def constants(
@@ -23,9 +24,12 @@ def constants(
     p: np.ndarray,
     friction_id: int = 1,
     gstar: float = math.nan,
+    cell_width: tuple[float, float] = (math.nan, math.nan),
 ) -> np.ndarray:
     """The constants vector (``layout.C_*``; SI units) for the law parameters ``p``, the
-    friction model's id (``impactlab.friction``; default coulomb) and G* [Pa] (Mindlin)."""
+    friction model's id (``impactlab.friction``; default coulomb), G* [Pa] (Mindlin, partial
+    slip) and the cell width of each end [m] (partial slip; the other cell parameters are set
+    by the integrator)."""
     dsw = float(p[P_DSW])
     values = {
         F.C_D: half_length,
@@ -42,10 +46,19 @@ def constants(
         F.C_FRIC: float(friction_id),
         F.C_GS: gstar,
     }
+    for k in range(F.NE):
+        values[F.C_CP + k * F.NCP + CP_DX] = cell_width[k]
     c = np.zeros(F.NC)
     for i, v in values.items():
         c[i] = v
     return c
+
+
+def state_length(n_modes: int, friction_id: int) -> int:
+    """Length of the integrator's state with ``n_modes`` modes (partial slip: plus the cells of
+    both ends)."""
+    cells = F.NE * F.NCS if friction_id == F.FR_PARTIAL else 0
+    return 6 + 2 * n_modes + F.NQUAD + cells
 
 
 def _array(a: Any, dtype: type = np.float64) -> np.ndarray:

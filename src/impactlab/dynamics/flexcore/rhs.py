@@ -6,7 +6,9 @@ q_j'' = -omega_j^2 q_j - 2 zeta_j omega_j q_j' - dV_g/dq_j + sum (J_n,j F_n + J_
 with F_n from the contact law and F_t from the friction model (``friction``): Coulomb
 F_t = -sign(v_t) mu F_n in slip and, in stick, the force that keeps v_t = 0 (from the tangential
 mobility J_t M^-1 J_t^T; a 2x2 system when both ends stick); impulse_ratio s mu F_n; Mindlin
-from the end's tangential state Q_t (its rate is a state derivative). Quadratures: the works of
+from the end's tangential state Q_t (its rate is a state derivative); partial slip from the
+end's cells (``cells``: their forces are state components after the quadratures, their
+switches events after the ends'). Quadratures: the works of
 the normal forces, of friction and of the damping, and per end the impulses and slip integrals.
 An event fires when its function goes from <= 0 to > 0.
 """
@@ -17,6 +19,7 @@ from numba import njit
 
 from impactlab.dynamics.core.layout import FR_COULOMB
 from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.flexcore.cells import cell_events, cell_forces, cell_rates
 from impactlab.dynamics.flexcore.friction import friction_event, state_rate, tangential
 from impactlab.dynamics.flexcore.kinematics import end_kinematics, mobility, normal_force
 
@@ -26,6 +29,7 @@ def _end_forces(law, p, c, Ue, We, Pe, md, y, ek, Jn, Jt):
     """Kinematics of both ends and the contact forces without stick forces into ``ek``."""
     mu = c[F.C_MU]
     iqt = 6 + 2 * Ue.shape[1] + F.Q_TAN
+    partial = c[F.C_FRIC] == F.FR_PARTIAL
     for k in range(F.NE):
         delta, xS, vn, vt, jdot = end_kinematics(c, Ue, We, Pe, y, k, Jn, Jt)
         ek[k, F.EK_DELTA] = delta
@@ -36,7 +40,11 @@ def _end_forces(law, p, c, Ue, We, Pe, md, y, ek, Jn, Jt):
         ek[k, F.EK_JDOT] = jdot
         ek[k, F.EK_FT] = 0.0
         ek[k, F.EK_KT] = 0.0
-        if md[k, F.MD_IN] != 0.0 and mu > 0.0:
+        if md[k, F.MD_IN] != 0.0 and mu > 0.0 and partial:
+            ek[k, F.EK_FT] = cell_forces(
+                law, p, c, md, k, y, iqt - F.Q_TAN + F.NQUAD + k * F.NCS, ek
+            )
+        elif md[k, F.MD_IN] != 0.0 and mu > 0.0:
             ft, kt = tangential(law, p, c, md, k, y[iqt + k], delta, ek[k, F.EK_FN])
             ek[k, F.EK_FT] = ft
             ek[k, F.EK_KT] = kt
@@ -174,10 +182,10 @@ def _quadratures(c, dmp, md, y, der, ek):
 
 
 @njit(cache=True, inline="always")
-def _events(law, p, c, md, y, ev, ek):
+def _events(law, p, c, md, y, ev, ek, M):
     """The event functions of both ends (-1 where an event cannot fire in the mode)."""
     mu = c[F.C_MU]
-    iqt = y.shape[0] - F.NQUAD + F.Q_TAN
+    iqt = 6 + 2 * M + F.Q_TAN
     for k in range(F.NE):
         e0 = k * F.NEVK
         for i in range(F.NEVK):
@@ -210,7 +218,12 @@ def rates(law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, y, der, ev, ek, Jn, J
     if c[F.C_MU] > 0.0 and c[F.C_FRIC] == FR_COULOMB:
         _stick_forces(c, om2.shape[0], md, der, ek, Jt)
     _quadratures(c, dmp, md, y, der, ek)
-    _events(law, p, c, md, y, ev, ek)
+    _events(law, p, c, md, y, ev, ek, om2.shape[0])
+    if c[F.C_FRIC] == F.FR_PARTIAL:
+        o = 6 + 2 * om2.shape[0] + F.NQUAD
+        for k in range(F.NE):
+            cell_rates(c, md, k, o + k * F.NCS, ek, der)
+            cell_events(c, md, k, ek, ev)
 
 
 @njit(cache=True)

@@ -10,9 +10,24 @@ from numba import njit
 
 from impactlab.contact.kernels import P_ESTAR
 from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.flexcore.cells import CP_FTOL, CP_G1, CP_VTOL, N_CELLS
+from impactlab.dynamics.flexcore.cellswitch import touch_cells
 from impactlab.dynamics.flexcore.contacts import new_dent
 from impactlab.dynamics.flexcore.friction import initial_mode
 from impactlab.dynamics.flexcore.rhs import evaluate
+
+
+@njit(cache=True)
+def cell_scales(c, vn0, fscale, sc, o):
+    """Partial slip: the cells' error scales (state from ``o``) and their parameters (as the
+    slipcore's: G_1 = 4 G*, the slip-rate and force hystereses; the width is set in Python)."""
+    for i in range(o, sc.shape[0]):
+        sc[i] = fscale / N_CELLS
+    for k in range(F.NE):
+        b = F.C_CP + k * F.NCP
+        c[b + CP_G1] = 4.0 * c[F.C_GS]
+        c[b + CP_VTOL] = 1e-9 * abs(vn0)
+        c[b + CP_FTOL] = 1e-13 * fscale
 
 
 @njit(cache=True)
@@ -57,6 +72,8 @@ def scales(mdl, vx0, vy0, w0, sc, sv):
     for k in range(F.NE):
         sc[iq + F.Q_TAN + k] = fscale  # the Mindlin state starts as a force
     sv[F.SV_FSCALE] = fscale
+    if c[F.C_FRIC] == F.FR_PARTIAL:
+        cell_scales(c, vn0, fscale, sc, iq + F.NQUAD)
     sv[F.SV_DSTAR] = dstar
     sv[F.SV_TOL_V] = 1e-9 * vstar
     sv[F.SV_TOL_D] = 1e-12 * dstar
@@ -92,6 +109,8 @@ def first_touch(mdl, md, y, vx0, vy0, w0, sv, contacts, dents, cur_con, der, ev,
     md[0, F.MD_DENT] = 0.0
     evaluate(mdl, md, y, der, ev, ek, Jn, Jt)
     initial_mode(mdl[1], c, M, md, 0, ek[0, F.EK_VT], ek[0, F.EK_VN], Jn, Jt)
+    if c[F.C_FRIC] == F.FR_PARTIAL:
+        touch_cells(mdl, md, 0, y, ek)
     for f in (F.CR_END, F.CR_T0, F.CR_X0, F.CR_DENT, F.CR_RELOAD, F.CR_DMAX, F.CR_FMAX, F.CR_STICK):
         contacts[0, f] = 0.0
     cur_con[0] = 0
@@ -99,17 +118,17 @@ def first_touch(mdl, md, y, vx0, vy0, w0, sv, contacts, dents, cur_con, der, ev,
 
 
 @njit(cache=True)
-def workspace(n):
+def workspace(n, M, nev):
     """The run state ``sv`` (layout.SV_*, with the initial status and horizon), the mode table,
-    the state, the error scales and the work arrays of a state of length n:
-    (sv, md, y, sc, Jn, Jt, ek, ev, gold, gnew, K, Q, st, ynew, yt, yev, der, snap)."""
-    m3 = n - F.NQUAD - 3  # 3 + M: the generalised coordinates
+    the state, the error scales and the work arrays of a state of length n (M modes, nev
+    events): (sv, md, y, sc, Jn, Jt, ek, ev, gold, gnew, K, Q, st, ynew, yt, yev, der, snap)."""
+    m3 = 3 + M  # the generalised coordinates
     sv = np.zeros(F.NSV)
     sv[F.SV_STATUS] = F.ST_MAX_STEPS
     sv[F.SV_T_CHECK] = -1.0
     sv[F.SV_NEXT_END] = -1.0
     sv[F.SV_NEXT_TIME] = math.inf
     return (sv, np.zeros((F.NE, F.NMD)), np.zeros(n), np.empty(n), np.zeros((F.NE, m3)),
-            np.zeros((F.NE, m3)), np.zeros((F.NE, F.NEK)), np.empty(F.NEV), np.empty(F.NEV),
-            np.empty(F.NEV), np.empty((7, n)), np.empty((n, 4)), np.empty(n), np.empty(n),
+            np.zeros((F.NE, m3)), np.zeros((F.NE, F.NEK)), np.empty(nev), np.empty(nev),
+            np.empty(nev), np.empty((7, n)), np.empty((n, 4)), np.empty(n), np.empty(n),
             np.empty(n), np.empty(n), np.empty(n), np.zeros((F.NE, 6)))  # fmt: skip

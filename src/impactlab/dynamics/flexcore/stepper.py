@@ -17,6 +17,7 @@ import numpy as np
 from numba import njit
 
 from impactlab.dynamics.core.integrator import DENSE_P, DP_A, DP_E
+from impactlab.dynamics.flexcore.cells import n_active
 from impactlab.dynamics.flexcore.rhs import rates
 
 
@@ -43,7 +44,8 @@ def dense(y0, h, theta, Q, out, n):
 def dp_step(mdl, md, y, K, h, rtol, sc, st, ynew, ev, ek, Jn, Jt):
     """One Dormand-Prince step of size h from y (K[0] = f(y)): fills K[1..6], ``ynew`` (5th
     order) and ``ev``/``ek`` at ynew; returns the scaled RMS error norm (error scale of
-    component i: rtol (sc[i] + max(|y_i|, |ynew_i|)))."""
+    component i: rtol (sc[i] + max(|y_i|, |ynew_i|)); partial-slip cells out of contact do
+    not count)."""
     n = y.shape[0]
     law, p, c, _om, om2, dmp, _zeta, Ue, We, Pe, Tg, ia, ib = mdl
     for stage in range(1, 7):
@@ -61,7 +63,7 @@ def dp_step(mdl, md, y, K, h, rtol, sc, st, ynew, ev, ek, Jn, Jt):
         ynew[i] = st[i]
         q = h * e / (rtol * (sc[i] + max(abs(y[i]), abs(st[i]))))
         err += q * q
-    return math.sqrt(err / n)
+    return math.sqrt(err / n_active(md, n, om2.shape[0]))
 
 
 @njit(cache=True)

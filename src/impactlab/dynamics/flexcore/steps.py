@@ -9,6 +9,7 @@ from numba import njit
 
 from impactlab.dynamics.core.layout import FR_IMPULSE
 from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.flexcore.cells import any_stuck
 from impactlab.dynamics.flexcore.history import record
 from impactlab.dynamics.flexcore.kinematics import mechanical_energy
 from impactlab.dynamics.flexcore.rhs import evaluate
@@ -20,7 +21,7 @@ def first_event(mdl, md, y, h, K, Q, gold, gnew, record_on, yt, der, ev, ek, Jn,
     """(jev, theta, fired): the earliest event crossed in the step (-1: none) and where."""
     n = y.shape[0]
     fired = False
-    for j in range(F.NEV):
+    for j in range(gold.shape[0]):
         if gold[j] <= 0.0 and gnew[j] > 0.0:
             fired = True
     if fired or record_on:
@@ -28,7 +29,7 @@ def first_event(mdl, md, y, h, K, Q, gold, gnew, record_on, yt, der, ev, ek, Jn,
     jev = -1
     theta = 2.0
     if fired:
-        for j in range(F.NEV):
+        for j in range(gold.shape[0]):
             if gold[j] <= 0.0 and gnew[j] > 0.0:
                 thj = locate(j, gold[j], gnew[j], mdl, md, y, h, Q, yt, der, ev, ek, Jn, Jt)
                 if thj < theta:
@@ -43,11 +44,12 @@ def step_stats(mdl, md, t, tend, sv, contacts, dents, cur_con, ek):
     False on a non-finite force."""
     mu = mdl[2][F.C_MU]
     sticks = mu > 0.0 and mdl[2][F.C_FRIC] != FR_IMPULSE  # the models with a stick state
+    partial = mdl[2][F.C_FRIC] == F.FR_PARTIAL  # partial slip: a cell sticks
     ok = True
     for k in range(F.NE):
         if md[k, F.MD_IN] != 0.0:
             ci = cur_con[k]
-            if sticks and md[k, F.MD_FM] == 0.0:
+            if sticks and (md[k, F.MD_FM] == 0.0 if not partial else any_stuck(md, k)):
                 contacts[ci, F.CR_STICK] += tend - t
                 sv[F.SV_STICK] += tend - t
             contacts[ci, F.CR_DMAX] = max(contacts[ci, F.CR_DMAX], ek[k, F.EK_DELTA])

@@ -1,0 +1,128 @@
+"""Mode changes of the partial-slip cells at the ends of the flexible rod (compiled): the cell
+events (birth, release, stick/slip), the settle pass that applies every switch already due at a
+restart, and the cells at a touch. The rules are the slipcore's (``slipcore.switches``;
+docs/verification/index.md, "Partial slip"): a cell is born unstressed when the contact radius
+reaches it, slipping when the stick trial outruns its growing limit; it is released at zero
+force; it slips when |f| reaches its limit and sticks again when the limit outruns the trial.
+"""
+
+from __future__ import annotations
+
+from numba import njit
+
+from impactlab.contact.kernels import P_ESTAR
+from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.flexcore.cells import (
+    CP_DX,
+    CP_FTOL,
+    CP_G1,
+    CP_VTOL,
+    OUT,
+    SLIP,
+    SLIP_HYST,
+    STICK,
+    birth,
+    cell_length,
+    n_in,
+    reset,
+    stick_rate,
+    to_slip,
+    to_stick,
+    views,
+)
+from impactlab.dynamics.flexcore.rhs import evaluate
+
+
+@njit(cache=True, inline="always")
+def cell_offset(mdl, k):
+    """Index of end k's first cell force in the state."""
+    return 6 + 2 * mdl[3].shape[0] + F.NQUAD + k * F.NCS
+
+
+@njit(cache=True)
+def _due(mdl, md, k, y, ek):
+    """Apply end k's first birth or release already due, else every due stick/slip switch;
+    False when none is."""
+    c = mdl[2]
+    o = cell_offset(mdl, k)
+    cm, sg, cp, L, Ld, f = views(c, md, ek, k)
+    nin = n_in(cm)
+    dx = cp[CP_DX]
+    ar = ek[k, F.EK_A]
+    ad = ek[k, F.EK_AD]
+    vs = ek[k, F.EK_VT]
+    if nin < F.NCS and ad > 0.0 and ar > nin * dx + 1e-9 * dx:
+        fn, vn = ek[k, F.EK_FN], ek[k, F.EK_VN]
+        birth(nin, y, o, cm, sg, cp, c[F.C_MU], mdl[1][P_ESTAR], fn, vn, vs, ar, ad)
+        return True
+    if nin > 1 and ad < 0.0 and ar < (nin - 1) * dx - 1e-9 * dx:
+        cm[nin - 1] = OUT
+        y[o + nin - 1] = 0.0
+        return True
+    changed = False
+    for i in range(nin):
+        if cm[i] == STICK:
+            if abs(f[i]) > L[i] * (1.0 + SLIP_HYST) + cp[CP_FTOL]:
+                to_slip(i, y, o, cm, sg, L)
+                changed = True
+        elif cm[i] == SLIP and ar > i * dx:
+            ln = cell_length(i, ar, dx)
+            trial = stick_rate(i, f[i], ar, ad, vs, cp)
+            if Ld[i] - sg[i] * trial > 2.0 * cp[CP_G1] * ln * cp[CP_VTOL]:
+                to_stick(i, y, o, cm, sg, L)
+                changed = True
+    return changed
+
+
+@njit(cache=True)
+def settle(mdl, md, y, der, ev, ek, Jn, Jt):
+    """Apply every cell switch already due at y (several cells can change within one step;
+    only the first event is located). False if it does not settle."""
+    for _ in range(4 * F.NCS + 8):
+        evaluate(mdl, md, y, der, ev, ek, Jn, Jt)
+        changed = False
+        for k in range(F.NE):
+            if not changed and md[k, F.MD_IN] != 0.0:
+                changed = _due(mdl, md, k, y, ek)
+        if not changed:
+            return True
+    return False
+
+
+@njit(cache=True)
+def apply_cell_event(jev, mdl, md, y, ek):
+    """The switch of the cell event ``jev`` (>= NEV: birth, release or a cell's stick/slip)."""
+    c = mdl[2]
+    k = (jev - F.NEV) // F.NEVC
+    kind = (jev - F.NEV) % F.NEVC
+    o = cell_offset(mdl, k)
+    cm, sg, cp, L, _Ld, _f = views(c, md, ek, k)
+    nin = n_in(cm)
+    if kind == F.G_BIRTH:
+        if nin < F.NCS:
+            fn, vn, vs = ek[k, F.EK_FN], ek[k, F.EK_VN], ek[k, F.EK_VT]
+            ar, ad = ek[k, F.EK_A], ek[k, F.EK_AD]
+            birth(nin, y, o, cm, sg, cp, c[F.C_MU], mdl[1][P_ESTAR], fn, vn, vs, ar, ad)
+    elif kind == F.G_REL:
+        if nin > 1:
+            cm[nin - 1] = OUT
+            y[o + nin - 1] = 0.0
+    else:
+        i = kind - F.G_CELL
+        if cm[i] == STICK:
+            to_slip(i, y, o, cm, sg, L)
+        elif cm[i] == SLIP:
+            to_stick(i, y, o, cm, sg, L)
+
+
+@njit(cache=True)
+def touch_cells(mdl, md, k, y, ek):
+    """End k touches: its cells reset, the first born at a = 0 (``ek``: before the touch)."""
+    c = mdl[2]
+    o = cell_offset(mdl, k)
+    reset(md, k, y, o)
+    if not c[F.C_MU] > 0.0:
+        return
+    cm, sg, cp, _L, _Ld, _f = views(c, md, ek, k)
+    vn, vs = ek[k, F.EK_VN], ek[k, F.EK_VT]
+    birth(0, y, o, cm, sg, cp, c[F.C_MU], mdl[1][P_ESTAR], 0.0, vn, vs, 0.0, 0.0)
