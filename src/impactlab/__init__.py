@@ -13,9 +13,16 @@ Subpackages: ``contact`` (laws), ``dynamics`` (engine), ``analytic`` (the paper'
 from impactlab._validation import ImplausibleInputWarning
 from impactlab._version import __version__
 from impactlab.analytic import InversionResult, Measured, invert
-from impactlab.bodies import PAPER_ROD, Rod, Sphere
+from impactlab.bodies import PAPER_ROD, FlexibleRod, Rod, Sphere
 from impactlab.contact import get_law, law_names
-from impactlab.dynamics import BatchResult, ImpactResult, simulate, simulate_batch
+from impactlab.dynamics import (
+    BatchResult,
+    DropResult,
+    ImpactResult,
+    simulate,
+    simulate_batch,
+    simulate_drop,
+)
 from impactlab.materials import AISI_201, AISI_1010, ContactPair, Material, get_material
 
 __all__ = [
@@ -24,6 +31,8 @@ __all__ = [
     "PAPER_ROD",
     "BatchResult",
     "ContactPair",
+    "DropResult",
+    "FlexibleRod",
     "ImpactResult",
     "ImplausibleInputWarning",
     "InversionResult",
@@ -38,4 +47,5 @@ __all__ = [
     "law_names",
     "simulate",
     "simulate_batch",
+    "simulate_drop",
 ]

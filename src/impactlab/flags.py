@@ -30,8 +30,8 @@ FLAG_ENERGY_GAIN = 1  #: bit of ``ResultFlag.ENERGY_GAIN`` (read by the compiled
 FLAG_GRAVITY_DOMINATED = 2  #: bit of ``ResultFlag.GRAVITY_DOMINATED``
 FLAG_LAW_EXTRAPOLATED = 4  #: bit of ``ResultFlag.LAW_EXTRAPOLATED`` (issue 12)
 #: Flags that caution rather than invalidate: the impact measures stay readable (``ok`` stays
-#: True). LAW_EXTRAPOLATED: the law is used beyond its fitted range, its outputs stay finite and
-#: energy-consistent but are not validated there.
+#: True). LAW_EXTRAPOLATED: the law is used beyond its (fitted, provisional or theoretical)
+#: range; its outputs stay finite but are not validated there.
 ADVISORY_FLAGS = FLAG_LAW_EXTRAPOLATED
 
 #: Energy gain tolerance, in units of ``rtol`` times the energy scale of the balance (E_0 + the
@@ -78,29 +78,59 @@ _MESSAGES: dict[ResultFlag, str] = {
         "meaningful (raise the impact velocity, or pass gravity=False)"
     ),
     ResultFlag.LAW_EXTRAPOLATED: (
-        "law extrapolated: the largest interference exceeded the upper end of the contact "
-        "law's fitted range{how_far}, so the law is used beyond the data it was fitted to; the "
-        "outputs stay finite and energy-consistent but are not validated there "
-        "(impactlab.contact.ranges)"
+        "law extrapolated: the largest interference exceeded {what}{how_far}, so {so}; the "
+        "outputs are not validated there (see the docs' Contact laws > Fitted ranges)"
     ),
 }
 
+#: The LAW_EXTRAPOLATED sentence per range status (``impactlab.contact.ranges.STATUSES``):
+#: (what was exceeded, what the limit is called, the consequence).
+_EXTRAPOLATION_TEXT = {
+    "confirmed": (
+        "the upper end of the contact law's fitted range",
+        "fitted up to",
+        "the law is used beyond the data it was fitted to",
+    ),
+    "provisional": (
+        "the provisional upper end of the contact law's range",
+        "provisional limit",
+        "the law is probably used beyond the data it was fitted to (the limit is a stand-in: "
+        "the law's own fitted range was not found)",
+    ),
+    "theory": (
+        "the limit of the contact law's theory (first yield)",
+        "limit",
+        "the law is used where its theory no longer holds",
+    ),
+}
+_UNKNOWN_STATUS = (
+    "the upper end of the contact law's range",
+    "limit",
+    "the law is used beyond its validated range",
+)
 
-def _how_far(extrapolation: tuple[float, float] | None) -> str:
-    """`` (max delta/delta_c = 312, range up to 110)`` or ``""`` when unknown."""
+
+def _how_far(extrapolation: tuple[float, float] | None, limit_name: str) -> str:
+    """`` (max delta/delta_c = 312, fitted up to 110)`` or ``""`` when unknown."""
     if extrapolation is None:
         return ""
     ratio, limit = extrapolation
     if not (ratio == ratio and limit == limit and limit < float("inf")):  # NaN or no range
         return ""
-    return f" (max delta/delta_c = {ratio:.4g}, fitted up to {limit:g})"
+    return f" (max delta/delta_c = {ratio:.4g}, {limit_name} {limit:g})"
 
 
-def messages(flags: int, *, extrapolation: tuple[float, float] | None = None) -> tuple[str, ...]:
+def messages(
+    flags: int,
+    *,
+    extrapolation: tuple[float, float] | None = None,
+    status: str | None = None,
+) -> tuple[str, ...]:
     """One explanatory sentence per flag set in ``flags`` (an int or a ``ResultFlag``), in bit
     order; ``()`` for none. Unknown bits raise ``ValueError``. ``extrapolation`` = (max
-    delta/delta_c, the law's fitted upper end), when known, says how far LAW_EXTRAPOLATED went
-    (``impactlab.contact.ranges.extrapolation``)."""
+    delta/delta_c, the law's upper end), when known, says how far LAW_EXTRAPOLATED went
+    (``impactlab.contact.ranges.extrapolation``); ``status``, the range's
+    ``LawRange.status`` ("confirmed", "provisional", "theory"), words that sentence."""
     try:
         value = int(flags)
     except (TypeError, ValueError):
@@ -108,5 +138,10 @@ def messages(flags: int, *, extrapolation: tuple[float, float] | None = None) ->
     known = int(ResultFlag.ENERGY_GAIN | ResultFlag.GRAVITY_DOMINATED | ResultFlag.LAW_EXTRAPOLATED)
     if value < 0 or value & ~known:
         raise ValueError(f"flags {value!r} holds bits outside the known flags (mask {known})")
-    how_far = _how_far(extrapolation)
-    return tuple(text.format(how_far=how_far) for flag, text in _MESSAGES.items() if value & flag)
+    what, limit_name, so = _EXTRAPOLATION_TEXT.get(status or "", _UNKNOWN_STATUS)
+    how_far = _how_far(extrapolation, limit_name)
+    return tuple(
+        text.format(how_far=how_far, what=what, so=so)
+        for flag, text in _MESSAGES.items()
+        if value & flag
+    )

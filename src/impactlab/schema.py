@@ -135,6 +135,12 @@ RESULT_FIELDS: tuple[Field, ...] = (
     ),
     Field("angle", "rad", "angle between rod axis and flat at first touch, (0, pi/2]", r"\theta"),
     Field("mu", "1", "friction coefficient", r"\mu"),
+    Field(
+        "max_delta_ratio",
+        "1",
+        "delta_max over the law's reference (first-yield) interference, delta_max / delta_c",
+        r"\delta_{max}/\delta_c",
+    ),
 )
 
 #: Every field by name: engine outputs, history columns and derived result fields.

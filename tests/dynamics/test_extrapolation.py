@@ -44,7 +44,8 @@ def test_paper_impact_is_flagged_with_how_far_it_went() -> None:
     assert r.ok  # advisory: the measures stay readable
     (text,) = r.warnings
     assert text.startswith("law extrapolated:")
-    assert f"max delta/delta_c = {ratio:.4g}, fitted up to 110" in text
+    assert f"max delta/delta_c = {ratio:.4g}, provisional limit 110" in text
+    assert "fitted up to" not in text and "energy-consistent" not in text
     assert "warning" in str(r) and "law extrapolated" in str(r)
     d = r.to_dict()
     assert d["flags"] == FLAG_LAW_EXTRAPOLATED and d["warnings"] == [text]
@@ -116,6 +117,43 @@ def test_flag_message_and_advisory_mask() -> None:
     (generic,) = messages(FLAG_LAW_EXTRAPOLATED)
     assert generic.startswith("law extrapolated: the largest interference exceeded")
     assert "max delta" not in generic  # how far is unknown without the numbers
-    (far,) = messages(FLAG_LAW_EXTRAPOLATED, extrapolation=(312.4, 110.0))
+    (far,) = messages(FLAG_LAW_EXTRAPOLATED, extrapolation=(312.4, 110.0), status="confirmed")
     assert "(max delta/delta_c = 312.4, fitted up to 110)" in far
     assert messages(4, extrapolation=(math.nan, math.inf)) == (generic,)
+
+
+@pytest.mark.parametrize("status", [None, "confirmed", "provisional", "theory"])
+def test_extrapolation_message_depends_on_the_range_status(status: str | None) -> None:
+    """QA: the sentence never claims energy consistency, points to the docs and words the limit
+    after the range's status (provisional: a stand-in; theory: first yield, not fitted)."""
+    (text,) = messages(FLAG_LAW_EXTRAPOLATED, extrapolation=(5.0, 1.0), status=status)
+    assert "energy-consistent" not in text and "impactlab.contact.ranges" not in text
+    assert "see the docs' Contact laws > Fitted ranges" in text
+    if status == "provisional":
+        assert "provisional limit 1)" in text and "stand-in" in text
+        assert "fitted up to" not in text
+    elif status == "theory":
+        assert "first yield" in text and "fitted" not in text
+    elif status == "confirmed":
+        assert "fitted up to 1)" in text
+
+
+def test_hertz_warning_names_first_yield_not_a_fit() -> None:
+    r = simulate(PAPER_ROD, velocity=FAST, **{**PAPER, "law": "hertz"})
+    assert r.extrapolated
+    (text,) = [w for w in r.warnings if w.startswith("law extrapolated")]
+    assert "first yield" in text and "fitted" not in text
+
+
+def test_rigid_outputs_carry_max_delta_ratio() -> None:
+    """QA: to_dict and the batch's Dataset report max_delta_ratio (and to_dict extrapolated)."""
+    r = simulate(PAPER_ROD, velocity=FAST, **PAPER)
+    d = r.to_dict()
+    assert d["max_delta_ratio"] == r.max_delta_ratio and d["extrapolated"] is True
+    assert "max_delta_ratio" in r.summary()
+    b = simulate_batch(PAPER_ROD, vy=[-1.41, -0.3], **PAPER)
+    ds = b.to_xarray()
+    assert ds["max_delta_ratio"].attrs["units"] == "1"
+    np.testing.assert_allclose(
+        ds["max_delta_ratio"].values, [r.max_delta_ratio, b.max_delta_ratio[1]], rtol=1e-12
+    )

@@ -131,7 +131,7 @@ def test_paper_drop_flags() -> None:
     model = contact_model(Rod.paper(), AISI_1010, "ghaednia")
     assert r.ok and not r.flags & (ResultFlag.ENERGY_GAIN | ResultFlag.GRAVITY_DOMINATED)
     assert r.extrapolated == law_extrapolated(model, r.delta_max)
-    assert r.extrapolated == (r.max_delta_ratio > r.delta_ratio_max)
+    assert r.extrapolated == (r.max_delta_ratio > r.fitted_delta_ratio_max)
     ref = critical_interference(model.law_id, model.params)
     assert r.max_delta_ratio == pytest.approx(r.delta_max / ref, rel=1e-12)
     assert len(r.warnings) == int(r.extrapolated)

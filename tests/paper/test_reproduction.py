@@ -130,3 +130,12 @@ def test_end_to_end(tmp_path_factory):
     allowed = {p.name for p in res.files.values()} | {R.MARKER}
     assert {p.name for p in out.iterdir()} <= allowed
     assert isinstance(res.tables["table2"], pd.DataFrame)
+    # the LAW_EXTRAPOLATED flag: in the CSVs, marked in the report, explained once
+    csv = pd.read_csv(res.files["table2"], keep_default_na=False)
+    g = csv[csv["model"] == "ghaednia"]
+    assert (g["flags"] == "LAW_EXTRAPOLATED").all()
+    assert (g["max_delta_ratio"].astype(float) > 110).all()
+    assert "flags" in pd.read_csv(res.files["simulations"]).columns
+    assert "| Table 2 | ghaednia \u2020 |" in text
+    assert "\u2020 LAW_EXTRAPOLATED: 12 of 18 simulated impacts" in text
+    assert "gravity impulse of the contact (sequence) removed" in text

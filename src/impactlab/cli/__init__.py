@@ -8,6 +8,10 @@ from __future__ import annotations
 
 import os
 import sys
+import warnings
+from collections.abc import Iterator
+from contextlib import contextmanager
+from typing import Any, TextIO
 
 import typer
 
@@ -51,10 +55,47 @@ for _module in (laws, materials, simulate, drop, invert, analyze, sweep, reprodu
     _module.register(app)
 
 
-def main() -> None:
-    """Entry point: run the app and turn user errors into a one-line message with exit code 2."""
+def _own(category: type[Warning]) -> bool:
+    """True for a warning category defined by impactlab (ImplausibleInputWarning, ...)."""
+    return category.__module__.split(".")[0] == "impactlab"
+
+
+@contextmanager
+def _one_line_warnings() -> Iterator[None]:
+    """Show impactlab's own warnings as one line ``warning: <message>`` on stderr (no file,
+    line number or source line); other warnings as Python shows them."""
+    previous = warnings.showwarning
+
+    def show(
+        message: Warning | str,
+        category: type[Warning],
+        filename: str,
+        lineno: int,
+        file: TextIO | None = None,
+        line: str | None = None,
+    ) -> None:
+        if _own(category):
+            print(f"warning: {message}", file=sys.stderr if file is None else file)
+        else:
+            previous(message, category, filename, lineno, file, line)
+
+    warnings.showwarning = show
     try:
-        rc = app(standalone_mode=False)  # typer.Exit(n) comes back as a return value here
+        yield
+    finally:
+        warnings.showwarning = previous
+
+
+def _run() -> Any:
+    with _one_line_warnings():
+        return app(standalone_mode=False)  # typer.Exit(n) comes back as a return value here
+
+
+def main() -> None:
+    """Entry point: run the app and turn user errors into a one-line message with exit code 2;
+    impactlab's own warnings print as one line ``warning: <message>``."""
+    try:
+        rc = _run()
     except SystemExit:
         raise
     except (

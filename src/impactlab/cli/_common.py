@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import math
 import tomllib
 from collections.abc import Mapping
 from pathlib import Path
@@ -42,13 +43,16 @@ def positive(value: str | float | None, unit: str, name: str) -> float | None:
 
 
 def angle_quantity(value: Any, name: str) -> float:
-    """An angle with its unit ("20 deg", "0.35 rad") in radians. A bare number is refused: 0.35
-    could be degrees or radians."""
+    """An angle with its unit ("20 deg", "0.35 rad") in radians, in (0, 90] deg (answered in
+    degrees otherwise). A bare number is refused: 0.35 could be degrees or radians."""
     text = str(value).strip()
     try:
         float(text)
     except ValueError:
-        return angle_to_rad(text, name=name)
+        th = angle_to_rad(text, name=name)
+        if not 0.0 < th <= 0.5 * math.pi + 1e-12:
+            raise UserError(f"{name} must be in (0, 90] deg, got {text}") from None
+        return th
     raise UserError(f"{name} {text} has no unit: give a unit, e.g. '20 deg' or '0.35 rad'")
 
 

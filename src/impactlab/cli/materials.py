@@ -25,7 +25,8 @@ def materials(
     for key, m in data.items():
         emit(m, as_json=False, title=key)
     console.print(
-        "Presets follow the paper's Table 1 with its unit corrections (see docs/physics/table1.md)."
+        "Presets follow the paper's Table 1 with its unit corrections "
+        "(see docs/paper/errata.md, section Table 1)."
     )
 
 

@@ -6,7 +6,7 @@ import typer
 
 from impactlab._display import format_number
 from impactlab.experiment.checks import output_folder
-from impactlab.paper.quantities import duration_checks
+from impactlab.paper.quantities import duration_checks, extrapolation_line
 from impactlab.paper.reproduction import reproduce
 
 
@@ -36,9 +36,11 @@ def reproduce_cmd(
     bad = res.comparison[res.comparison["reproduced"] == False]  # noqa: E712
     n_bad = len(bad.drop_duplicates(["source", "angle [deg]", "model", "quantity"]))
     typer.echo(
-        f"{n_bad} published numbers not reproduced (within the tolerances), each "
-        "explained in the report"
+        f"{n_bad} published numbers not reproduced within the stated tolerances "
+        "(explained in Section 5 of the report)"
     )
+    if not no_simulate:
+        typer.echo(extrapolation_line(res.simulations))
     if no_simulate:
         typer.echo("simulations skipped (--no-simulate): analytic part only")
     typer.echo(f"report: {res.report_md} and {res.report_html} ({format_number(res.elapsed_s)} s)")

@@ -61,6 +61,7 @@ __all__ = [
     "extrapolation_flags",
     "law_extrapolated",
     "law_range",
+    "range_status",
 ]
 
 #: The meaning of each ``LawRange.status``.
@@ -196,6 +197,7 @@ _BY_NAME = {str(r.law): r for r in _ALL}
 _RATIO_BY_ID = np.full(k.N_LAWS, np.inf)
 for _r in _ALL:
     _RATIO_BY_ID[_r.law.law_id] = _r.delta_ratio_max
+_STATUS_BY_ID = {r.law.law_id: r.status for r in _ALL}
 
 
 def law_range(law: str | Law) -> LawRange:
@@ -241,6 +243,13 @@ def extrapolation(law_id: int, params: Any, delta_max: float) -> tuple[float, fl
     if params is None or not 0 <= int(law_id) < k.N_LAWS:
         return math.nan, math.inf
     return float(delta_ratio(law_id, params, delta_max)), float(_RATIO_BY_ID[int(law_id)])
+
+
+def range_status(law_id: int) -> str | None:
+    """The ``LawRange.status`` of law ``law_id`` (None for an unknown law)."""
+    if not 0 <= int(law_id) < k.N_LAWS:
+        return None
+    return _STATUS_BY_ID.get(int(law_id))
 
 
 def extrapolation_flags(law_id: int, params: Any, delta_max: Any) -> Any:

@@ -28,7 +28,7 @@ from impactlab.dynamics.core.layout import DEFAULT_RTOL
 from impactlab.dynamics.models import contact_model
 from impactlab.friction import FrictionModel, get_friction
 from impactlab.materials import G0, Material
-from impactlab.units import magnitude
+from impactlab.units import is_quantity, magnitude
 
 #: Range of the relative tolerance accepted by the Python API.
 RTOL_RANGE = (1e-13, 1e-3)
@@ -53,7 +53,7 @@ def check_rtol(rtol: Any) -> float:
         return DEFAULT_RTOL
     r = check_finite("rtol", rtol)
     if not RTOL_RANGE[0] <= r <= RTOL_RANGE[1]:
-        raise ValueError(f"rtol must lie in [1e-13, 1e-3], got {r!r}")
+        raise ValueError(f"rtol must lie in [1e-13, 1e-3], got {float(r)!r}")
     return r
 
 
@@ -69,17 +69,25 @@ def check_angle(angle: Any, body: Rod | Sphere) -> float:
             "angle is required for a Rod: the rod axis to the flat, in radians, in (0, pi/2]"
         )
     th = check_finite("angle", angle, "rad")
-    if th > 0.5 * math.pi + 1e-12:
-        hint = ""
-        if th <= 90.0 + 1e-9:
-            hint = (
-                f"; {th!r} looks like degrees: pass math.radians({th!r}) = "
-                f"{math.radians(th):.6g} rad or the string '{th:g} deg'"
-            )
-        raise ValueError(f"angle must be in radians in (0, pi/2], got {th!r}{hint}")
-    if th <= 0.0:
-        raise ValueError(f"angle must be in radians in (0, pi/2], got {th!r}")
-    return th
+    if 0.0 < th <= 0.5 * math.pi + 1e-12:
+        return th
+    if isinstance(angle, str) or is_quantity(angle):  # the user gave a unit: answer in degrees
+        raise ValueError(f"angle must be in (0, 90] deg, got {_as_given(angle)}")
+    hint = ""
+    if 0.5 * math.pi < th <= 90.0 + 1e-9:
+        hint = (
+            f"; {th!r} looks like degrees: pass math.radians({th!r}) = "
+            f"{math.radians(th):.6g} rad or the string '{th:g} deg'"
+        )
+    raise ValueError(f"angle must be in radians in (0, pi/2], got {th!r}{hint}")
+
+
+def _as_given(angle: Any) -> str:
+    """An angle with a unit as the user wrote it: the string, or a Quantity's magnitude and
+    unit (``95 deg``)."""
+    if isinstance(angle, str):
+        return angle.strip()
+    return f"{float(angle.magnitude)!r} {angle.units:~}".replace(".0 ", " ", 1)
 
 
 def check_velocity(velocity: Any) -> tuple[float, float]:
@@ -146,7 +154,7 @@ def _approach(body: Rod | Sphere, th: float, vx: float, vy: float, w: float) -> 
     if not vn < 0.0:
         raise ValueError(
             f"velocity: the contact point does not approach the flat (its normal velocity "
-            f"vy - spin * (L/2) cos(angle) = {vn!r} m/s must be < 0)"
+            f"vy - spin * (L/2) cos(angle) = {float(vn)!r} m/s must be < 0)"
         )
     warn_fast("the impact speed", max(math.hypot(vx, vy), math.hypot(vx + w * b, vn)))
     return vn

@@ -301,7 +301,7 @@ def _result(
         history=DropHistory(r.history) if r.history is not None else None,
         flags=_flags(o, e0, m, inputs["gravity"], rtol, model),
         max_delta_ratio=ratio,
-        delta_ratio_max=ratio_max,
+        fitted_delta_ratio_max=ratio_max,
         references=references,
         **inputs,
         **{k: v for k, v in o.items() if k not in skip},
@@ -357,7 +357,7 @@ def simulate_drop(
     if not vn0 < 0.0:
         raise ValueError(
             f"velocity: the tip does not approach the flat (its normal velocity "
-            f"vy - spin * (L/2) cos(angle) = {vn0!r} m/s must be < 0)"
+            f"vy - spin * (L/2) cos(angle) = {float(vn0)!r} m/s must be < 0)"
         )
 
     gstar = float(body_params(bm.rigid, flat)[BP_GSTAR])

@@ -16,6 +16,7 @@ import numpy as np
 
 from impactlab._display import html_table
 from impactlab._json import jsonable
+from impactlab.contact.ranges import law_range
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
 from impactlab.references import Reference
@@ -39,7 +40,7 @@ UNITS: dict[str, str] = {f.name: f.unit for f in F.DROP_FIELDS} | {
     "mean_force": "N",
     "flags": "1",
     "max_delta_ratio": "1",
-    "delta_ratio_max": "1",
+    "fitted_delta_ratio_max": "1",
 }
 
 
@@ -220,7 +221,7 @@ class DropResult:
       m g duration exceeds ``GRAVITY_IMPULSE_RATIO`` of the total normal impulse,
       LAW_EXTRAPOLATED when the largest interference of the sequence left the law's fitted
       range (``impactlab.contact.ranges``; ``max_delta_ratio`` = delta_max / delta_ref and the
-      law's ``delta_ratio_max``);
+      upper end of the law's range, ``fitted_delta_ratio_max``);
     - ``references`` / ``dois()``: the sources used.
 
     Velocities and spin are those of the floating frame after the last contact. Energy balance
@@ -272,7 +273,7 @@ class DropResult:
     strain_rate: float = math.nan
     flags: ResultFlag = ResultFlag.NONE
     max_delta_ratio: float = math.nan
-    delta_ratio_max: float = math.inf
+    fitted_delta_ratio_max: float = math.inf
     history: DropHistory | None = field(default=None, repr=False)
     references: tuple[Reference, ...] = field(default=(), repr=False)
 
@@ -292,7 +293,12 @@ class DropResult:
     @property
     def warnings(self) -> tuple[str, ...]:
         """One explanatory sentence per flag (``impactlab.flags.messages``); ``()`` if none."""
-        return messages(self.flags, extrapolation=(self.max_delta_ratio, self.delta_ratio_max))
+        how_far = (self.max_delta_ratio, self.fitted_delta_ratio_max)
+        try:
+            status: str | None = law_range(self.law).status
+        except ValueError:  # a custom law
+            status = None
+        return messages(self.flags, extrapolation=how_far, status=status)
 
     @property
     def ok(self) -> bool:

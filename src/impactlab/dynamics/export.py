@@ -103,9 +103,10 @@ def _output_var(name: str, values: np.ndarray, ok: np.ndarray) -> tuple[Any, ...
 
 def batch_dataset(batch: Any) -> Any:
     """A ``BatchResult`` as an ``xarray.Dataset`` over the dimension ``case``: every input and
-    output (SI, ``units`` and ``long_name`` attributes), ``status``, and ``regime``/``flags`` as
-    integer codes whose meanings are in their attributes (-1 where the case failed). Every attribute
-    is a number, a string or a list of them: ``ds.to_netcdf(path)`` writes it as it is."""
+    output (SI, ``units`` and ``long_name`` attributes), ``max_delta_ratio``, ``status``, and
+    ``regime``/``flags`` as integer codes whose meanings are in their attributes (-1 where the
+    case failed). Every attribute is a number, a string or a list of them:
+    ``ds.to_netcdf(path)`` writes it as it is."""
     import xarray as xr  # heavy, needed only here
 
     status, out = np.asarray(batch.status), np.asarray(batch.out)
@@ -121,6 +122,12 @@ def batch_dataset(batch: Any) -> Any:
         )
     for j, name in enumerate(OUTPUT_FIELDS):
         variables[name] = _output_var(name, out[:, j], ok)
+    if batch.max_delta_ratio is not None:
+        variables["max_delta_ratio"] = (
+            "case",
+            np.array(batch.max_delta_ratio, dtype=np.float64),
+            {"units": "1", "long_name": schema.description("max_delta_ratio")},
+        )
     variables["status"] = ("case", status.astype(np.int32), _status_attrs())
     refs: tuple[Reference, ...] = tuple(batch.references)
     attrs = {

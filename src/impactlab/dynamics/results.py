@@ -13,7 +13,7 @@ import numpy as np
 
 from impactlab import schema
 from impactlab._display import field_rows, flag_names, html_table, text_table
-from impactlab.contact.ranges import extrapolation, extrapolation_flags
+from impactlab.contact.ranges import extrapolation, extrapolation_flags, range_status
 from impactlab.dynamics.core.layout import HISTORY_FIELDS, OUTPUT_FIELDS
 from impactlab.dynamics.core.status import STATUS_MESSAGES
 from impactlab.dynamics.dent import dent_map
@@ -59,6 +59,7 @@ UNITS: dict[str, str] = {
         "velocity_in",
         "spin_in",
         "mu",
+        "max_delta_ratio",
     )
 }
 
@@ -152,7 +153,7 @@ SUMMARY_FIELDS: tuple[str, ...] = (
     "velocity_out", "spin_out", "angle_out", "delta_max", "delta_p", "sliding_length",
     "contact_travel", "duration", "t_max", "stick_time", "max_force", "mean_force",
     "normal_impulse", "tangential_impulse", "energy_dissipated", "vn_in", "vt_in", "vn_out",
-    "vt_out", "n_steps",
+    "vt_out", "n_steps", "max_delta_ratio",
 )  # fmt: skip
 
 
@@ -220,7 +221,8 @@ class ImpactResult:
     def warnings(self) -> tuple[str, ...]:
         """One explanatory sentence per flag (``impactlab.flags.messages``); ``()`` if none."""
         how_far = extrapolation(self._law_id, self._law_params, self.delta_max)
-        return messages(self.flags, extrapolation=how_far)
+        status = range_status(self._law_id)
+        return messages(self.flags, extrapolation=how_far, status=status)
 
     @property
     def ok(self) -> bool:
@@ -229,14 +231,16 @@ class ImpactResult:
         return (int(self.flags) & ~ADVISORY_FLAGS) == 0
 
     def to_dict(self, *, include_history: bool = False) -> dict[str, Any]:
-        """Scalar fields as a plain dict (``flags`` as an int, ``warnings`` as a list; history
-        as lists of columns if asked)."""
+        """Scalar fields as a plain dict (with ``max_delta_ratio`` and ``extrapolated``;
+        ``flags`` as an int, ``warnings`` as a list; history as lists of columns if asked)."""
         d: dict[str, Any] = {}
         for name in self.__dataclass_fields__:
             if name.startswith("_") or name in ("history", "references"):
                 continue
             v = getattr(self, name)
             d[name] = list(v) if isinstance(v, tuple) else v
+        d["max_delta_ratio"] = self.max_delta_ratio
+        d["extrapolated"] = self.extrapolated
         d["flags"] = int(self.flags)
         d["warnings"] = list(self.warnings)
         if include_history and self.history is not None:
@@ -298,6 +302,8 @@ class BatchResult:
     law: str
     friction: str
     references: tuple[Reference, ...] = field(default=(), repr=False)
+    #: delta_max / delta_c of each case (NaN where it failed; None: not computed)
+    max_delta_ratio: np.ndarray | None = field(default=None, repr=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "out", readonly_copy(self.out))

@@ -18,6 +18,7 @@ from impactlab._validation import check_array, check_flag
 from impactlab.bodies import Rod, Sphere
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.contact import ContactModel
+from impactlab.contact.ranges import delta_ratio
 from impactlab.dynamics.batch import run_arrays
 from impactlab.dynamics.checks import (
     ImpactInputs,
@@ -290,6 +291,9 @@ def simulate_batch(
         law=model.name,
         friction=fric.name,
         references=references_used(model, fric, bool(np.any(x["mu"] > 0.0))),
+        max_delta_ratio=np.asarray(
+            delta_ratio(model.law_id, model.params, out[:, L.OUTPUT_FIELDS.index("delta_max")])
+        ),
     )
 
 

@@ -16,6 +16,7 @@ from impactlab.paper.quantities import (
     TOL_EXPERIMENT_T,
     TOL_SIMULATED,
     Simulations,
+    flag_columns,
     rel_diff,
     sim_value,
 )
@@ -24,6 +25,8 @@ from impactlab.paper.simulations import FRICTIONS
 
 _TABLES = {20: "Table 2", 45: "Table 3", 70: "Table 4 (ours)"}
 _TEXT = "Sec. 5.2 text"
+#: The flag columns of a row without a simulation (the experiment, or not simulated).
+_NO_FLAGS: dict[str, Any] = {"flags": "", "max_delta_ratio": None}
 
 
 def comparison_table(
@@ -63,7 +66,7 @@ def _experiment_rows(ang: int, experimental: pd.DataFrame, ctx: Reasons) -> list
         measured = q in ("delta_p", "L_s", "e")
         tol = TOL_EXPERIMENT_T if q == "T" else (0.15 if q == "F" else 0.0)
         note = "measured input" if measured else None
-        rows.append(_row(key, q, label, scale, (p, ours[q]), tol, note, ctx))
+        rows.append(_row(key, q, label, scale, (p, ours[q]), tol, note, ctx) | _NO_FLAGS)
     return rows
 
 
@@ -85,7 +88,8 @@ def _simulated_rows(ang: int, law: str, fr: str, res: Any, ctx: Reasons) -> list
                 continue
             ours = None if res is None else sim_value(res, q)
             key = RowKey(src, ang, law, fr)
-            rows.append(_row(key, q, label, scale, (pub, ours), TOL_SIMULATED, None, ctx))
+            row = _row(key, q, label, scale, (pub, ours), TOL_SIMULATED, None, ctx)
+            rows.append(row | (flag_columns(res) if res is not None else _NO_FLAGS))
     return rows
 
 
@@ -137,12 +141,15 @@ def _row(
 
 
 def side_by_side(comparison: pd.DataFrame, angle: int) -> pd.DataFrame:
-    """Wide table for one angle: per model/friction the published value, impactlab's and the
-    relative difference for each quantity."""
+    """Wide table for one angle: per model/friction the simulation's flags, then the published
+    value, impactlab's and the relative difference for each quantity."""
     sub = comparison[comparison["angle [deg]"] == angle]
     out = []
     for (src, model, fr), g in sub.groupby(["source", "model", "friction"], sort=False):
         row: dict[str, Any] = {"source": src, "model": model, "friction": fr}
+        for col in ("flags", "max_delta_ratio"):
+            if col in g:
+                row[col] = g[col].iloc[0]
         for _, label, _ in QUANTS:
             h = g[g["quantity"] == label]
             if h.empty:

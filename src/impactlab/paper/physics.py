@@ -20,10 +20,13 @@ from scipy.optimize import minimize_scalar
 from impactlab.bodies import PAPER_ROD, FlexibleRod
 from impactlab.dynamics import simulate
 from impactlab.dynamics.drop import simulate_drop
+from impactlab.materials import G0
 from impactlab.paper import data as D
+from impactlab.paper.quantities import flag_columns
 
 __all__ = [
     "CONFIGURATIONS",
+    "E_DEFINITION",
     "FIT_DESCRIPTION",
     "FIT_PREFIX",
     "LAW",
@@ -33,6 +36,7 @@ __all__ = [
     "fit_damping",
     "physics_inputs",
     "physics_table",
+    "rigid_e_gravity_removed",
     "run_physics",
 ]
 
@@ -211,7 +215,25 @@ def _measured_row(angle_deg: int, T_ms: float) -> dict[str, Any]:
         "F_max [N]": None,
         "rate factor": None,
         "vibration energy [J]": None,
+        "flags": "",
+        "max_delta_ratio": None,
     }
+
+
+#: What the table's ``e`` column is, for every simulated row (the report states it).
+E_DEFINITION = (
+    "e is -v_n,out/v_n,in of the tip's rigid-body normal velocity with the gravity impulse of "
+    "the contact (sequence) removed, for every simulated row (DropResult.e; for the rigid rod "
+    "ImpactResult.e + g T/|v_i|, since ImpactResult.e keeps that impulse), as a ballistic fit "
+    "of the measured rebound removes it"
+)
+
+
+def rigid_e_gravity_removed(res: Any) -> float:
+    """The rigid engine's e (ImpactResult, gravity on: the gravity impulse m g T of the contact
+    kept) with that impulse removed, as ``DropResult.e`` removes it: -(v_n,out + g T)/v_n,in.
+    Gravity exerts no moment about the centre of mass, so it changes only v_y."""
+    return float((res.vn_out + G0 * res.duration) / abs(res.vn_in))
 
 
 def _simulated_row(cfg: PhysicsConfig, angle_deg: int, res: Any) -> dict[str, Any]:
@@ -221,7 +243,7 @@ def _simulated_row(cfg: PhysicsConfig, angle_deg: int, res: Any) -> dict[str, An
     return {
         "configuration": cfg.name,
         "angle [deg]": angle_deg,
-        "e": res.e,
+        "e": res.e if flexible else rigid_e_gravity_removed(res),
         "delta_p [um]": abs(res.delta_p) * 1e6,
         "L_s [um]": abs(res.scar_length if flexible else res.sliding_length) * 1e6,
         "T [ms]": res.duration * 1e3,
@@ -229,6 +251,7 @@ def _simulated_row(cfg: PhysicsConfig, angle_deg: int, res: Any) -> dict[str, An
         "F_max [N]": res.max_force,
         "rate factor": res.rate_factor if flexible else 1.0,
         "vibration energy [J]": res.vibration_energy if flexible else 0.0,
+        **flag_columns(res),
     }
 
 

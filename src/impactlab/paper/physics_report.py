@@ -10,6 +10,7 @@ import pandas as pd
 
 from impactlab.paper.physics import (
     CONFIGURATIONS,
+    E_DEFINITION,
     FIT_DESCRIPTION,
     FIT_PREFIX,
     FRICTION,
@@ -97,8 +98,8 @@ def physics_section(
             "'fit'). Measured T is the one "
             "inferred from the dent (Eq. 12, Section 3). L_s is the tip's sliding length for "
             "the rigid rod and the scar length (x-extent of the tip's contact path over all "
-            "contacts) for the flexible rod; T is first touch to last separation. The model "
-            "and its verification: docs/flexible.md."
+            "contacts) for the flexible rod; T is first touch to last separation; "
+            f"{E_DEFINITION}. The model and its verification: docs/flexible.md."
         ),
         Bullets(configs),
         Table(_shown(table), "Measured vs rigid, flexible and flexible + rate-dependent", digits=4),

@@ -83,3 +83,36 @@ def sim_value(res: Any, q: str) -> float:
         "T": res.duration,
         "F": res.mean_force,
     }[q]
+
+
+#: The mark of a simulated row whose impact left its law's fitted range (LAW_EXTRAPOLATED).
+EXTRAPOLATED_MARK = "\u2020"
+
+
+def flag_names(res: Any) -> str:
+    """The flags of a result as names joined by ``|`` (``""``: none), e.g. ``LAW_EXTRAPOLATED``."""
+    return "|".join(f.name for f in type(res.flags) if f.value and f in res.flags and f.name)
+
+
+def flag_columns(res: Any) -> dict[str, Any]:
+    """The ``flags`` (names) and ``max_delta_ratio`` (delta_max / delta_c of the law) of a
+    simulated result, as the reproduction's tables carry them."""
+    return {"flags": flag_names(res), "max_delta_ratio": float(res.max_delta_ratio)}
+
+
+def count_extrapolated(simulations: Any) -> tuple[int, int]:
+    """(flagged LAW_EXTRAPOLATED, all) simulated impacts of a simulation table (a DataFrame with
+    a ``flags`` column, as ``impactlab.paper.simulations.simulation_table`` makes it)."""
+    if simulations is None or len(simulations) == 0:
+        return 0, 0
+    flagged = simulations["flags"].fillna("").str.contains("LAW_EXTRAPOLATED")
+    return int(flagged.sum()), len(simulations)
+
+
+def extrapolation_line(simulations: Any) -> str:
+    """The one line the reproduce command prints about the flagged simulated impacts."""
+    n, m = count_extrapolated(simulations)
+    return (
+        f"{n} of {m} simulated impacts lie beyond their law's fitted range (provisional); "
+        "see report"
+    )

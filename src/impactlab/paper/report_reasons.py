@@ -8,6 +8,7 @@ from typing import Any
 
 import pandas as pd
 
+from impactlab.paper.quantities import EXTRAPOLATED_MARK
 from impactlab.paper.report import Block, Bullets, Heading, Para, Table, fmt, fmt_pct
 
 __all__ = ["not_reproduced"]
@@ -18,6 +19,12 @@ _NUMBER = re.compile(r"[-+]?\d+(?:\.\d+)?(?:e[-+]?\d+)?")
 def _letter(i: int) -> str:
     """A, B, ..., Z, AA, AB, ... for the explanations of Section 5."""
     return _letter(i // 26 - 1) + chr(65 + i % 26) if i >= 26 else chr(65 + i)
+
+
+def _model(r: pd.Series) -> str:
+    """The row's model, with ``EXTRAPOLATED_MARK`` when its simulation is LAW_EXTRAPOLATED."""
+    flagged = "LAW_EXTRAPOLATED" in str(r.get("flags", ""))
+    return f"{r['model']} {EXTRAPOLATED_MARK}" if flagged else str(r["model"])
 
 
 def _explained(bad: pd.DataFrame) -> tuple[pd.DataFrame, list[str]]:
@@ -41,7 +48,7 @@ def _explained(bad: pd.DataFrame) -> tuple[pd.DataFrame, list[str]]:
             {
                 "source": r["source"],
                 "angle [deg]": r["angle [deg]"],
-                "model": r["model"],
+                "model": _model(r),
                 "friction": frs,
                 "quantity": r["quantity"],
                 "published": r["published"],

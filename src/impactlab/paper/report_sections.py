@@ -12,9 +12,16 @@ from typing import Any
 
 import pandas as pd
 
+from impactlab.contact.ranges import RANGES
 from impactlab.paper import data as D
 from impactlab.paper.physics_report import physics_section
-from impactlab.paper.quantities import TOL_EXPERIMENT_T, TOL_SIMULATED, duration_checks
+from impactlab.paper.quantities import (
+    EXTRAPOLATED_MARK,
+    TOL_EXPERIMENT_T,
+    TOL_SIMULATED,
+    count_extrapolated,
+    duration_checks,
+)
 from impactlab.paper.report import Block, Bullets, Code, Figure, Heading, Para, Table, fmt_pct
 from impactlab.paper.report_reasons import not_reproduced
 from impactlab.paper.simulations import FRICTIONS
@@ -148,8 +155,9 @@ def _simulated(d: ReportData) -> list[Block]:
         (45, "Table 3"),
         (70, "Table 4 (ours; the paper's is missing)"),
     ):
-        B.append(Table(d.tables[ang], f"{name}: {ang} deg", digits=4))
+        B.append(Table(_marked(d.tables[ang], "model"), f"{name}: {ang} deg", digits=4))
     if d.simulations is not None:
+        B.append(Para(_extrapolation_note(d.simulations)))
         B.append(
             Para(
                 "Both friction models give the same numbers here: the tip starts without "
@@ -157,9 +165,51 @@ def _simulated(d: ReportData) -> list[Block]:
                 "slides throughout and reduces to the paper's impulse ratio P_x = mu P."
             )
         )
-        B.append(Table(d.simulations, "All simulations (impactlab ImpactResult scalars)", digits=4))
+        B.append(
+            Table(
+                _marked(d.simulations, "law"),
+                "All simulations (impactlab ImpactResult scalars)",
+                digits=4,
+            )
+        )
         B += _sim_vs_experiment(d.simulations, d.experimental)
     return B
+
+
+def _marked(table: pd.DataFrame, column: str) -> pd.DataFrame:
+    """``table`` with ``EXTRAPOLATED_MARK`` after ``column`` on the rows flagged
+    LAW_EXTRAPOLATED (the ``flags`` column); unchanged without that column."""
+    if "flags" not in table:
+        return table
+    shown = table.copy()
+    flagged = shown["flags"].fillna("").str.contains("LAW_EXTRAPOLATED")
+    shown[column] = [
+        f"{v} {EXTRAPOLATED_MARK}" if f else v for v, f in zip(shown[column], flagged, strict=True)
+    ]
+    return shown
+
+
+def _extrapolation_note(simulations: pd.DataFrame) -> str:
+    """The paragraph on the LAW_EXTRAPOLATED flag of the simulated rows."""
+    n, m = count_extrapolated(simulations)
+    flagged = simulations[simulations["flags"].fillna("").str.contains("LAW_EXTRAPOLATED")]
+    laws = sorted(set(flagged["law"]))
+    ranges = "; ".join(
+        f"{law}: up to {RANGES[law].delta_ratio_max:g} delta_c ({RANGES[law].status}), "
+        f"max delta/delta_c here {flagged[flagged['law'] == law]['max_delta_ratio'].max():.3g}"
+        for law in laws
+        if law in RANGES
+    )
+    return (
+        f"{EXTRAPOLATED_MARK} LAW_EXTRAPOLATED: {n} of {m} simulated impacts push the "
+        "interference beyond the upper end of their contact law's fitted range "
+        "(impactlab.contact.ranges; `flags` and `max_delta_ratio` = delta_max/delta_c in the "
+        "CSV tables), so the law is used beyond the data it was fitted to. "
+        + (f"{ranges}. " if ranges else "")
+        + "The upper ends marked provisional are labelled stand-ins (the sources' own ranges "
+        'were not found; docs/laws/index.md, "Fitted ranges"); the flag is advisory and '
+        "changes no number."
+    )
 
 
 def _sim_vs_experiment(simtab: pd.DataFrame, exp: pd.DataFrame) -> list[Block]:

@@ -14,7 +14,7 @@ import impactlab.analytic as an
 from impactlab.bodies import PAPER_ROD
 from impactlab.dynamics import simulate
 from impactlab.paper import data as D
-from impactlab.paper.quantities import Simulations, paper_depth, rel_diff
+from impactlab.paper.quantities import Simulations, flag_columns, paper_depth, rel_diff
 
 #: Friction models the simulations are run with (paper Eq. 7, and Coulomb stick/slip).
 FRICTIONS: tuple[str, ...] = ("impulse_ratio", "coulomb")
@@ -48,7 +48,8 @@ def run_simulations(
 
 
 def simulation_table(sims: Simulations) -> pd.DataFrame:
-    """One row per simulation with the result's scalars (display units) and checks."""
+    """One row per simulation with the result's scalars (display units), checks and flags
+    (``flags``: names, e.g. LAW_EXTRAPOLATED; ``max_delta_ratio``: delta_max / delta_c)."""
     rows = []
     for (ang, law, fr), res in sims.items():
         x = D.EXPERIMENTS[ang]
@@ -75,6 +76,7 @@ def simulation_table(sims: Simulations) -> pd.DataFrame:
                 "F T / impulse": res.mean_force * res.duration / res.normal_impulse,
                 "(1+e)|v_i|/K_y / impulse": P_rigid / res.normal_impulse,
                 "regime": str(res.regime),
+                **flag_columns(res),
             }
         )
     return pd.DataFrame(rows)
