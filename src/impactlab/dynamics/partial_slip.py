@@ -20,19 +20,13 @@ from impactlab.dynamics.checks import ImpactInputs
 from impactlab.dynamics.core import layout as L
 from impactlab.dynamics.core import status as S
 from impactlab.dynamics.core.driver import impact
-from impactlab.dynamics.models import body_params, kernel_params, references_used
-from impactlab.dynamics.results import History, ImpactResult
+from impactlab.dynamics.models import body_params, kernel_params
+from impactlab.dynamics.outcome import impact_result, status_error
+from impactlab.dynamics.results import ImpactResult
 from impactlab.dynamics.slipcore import impact_slip
 from impactlab.friction import COULOMB, MINDLIN, PARTIAL_SLIP_CELLS
 
 __all__ = ["run_partial_slip"]
-
-#: Engine outputs that are ImpactResult fields of the same name and type (float).
-_SCALARS = tuple(
-    n
-    for n in L.OUTPUT_FIELDS
-    if n in ImpactResult.__dataclass_fields__ and n not in ("regime", "n_steps")
-)
 
 
 def _core(x: ImpactInputs, fric: int, mu: float, history: bool, out: np.ndarray) -> Any:
@@ -81,27 +75,5 @@ def simulate_partial_slip(
     """The ``ImpactResult`` of one partial-slip impact; ValueError on an engine failure."""
     status, out, hist = run_partial_slip(x, history, n_cells)
     if status != S.ST_OK:
-        msg = S.STATUS_MESSAGES.get(status, f"engine status {status}")
-        if status == S.ST_LAW_LIMIT:
-            msg = (
-                f"the interference exceeded {x.model.max_interference:.6g} m, the validity limit "
-                f"of the {x.model.name!r} law: lower the impact velocity or choose another law"
-            )
-        raise ValueError(f"partial_slip impact: {msg}")
-    o = out.tolist()
-    return ImpactResult(
-        **{name: o[L.O[name]] for name in _SCALARS},
-        velocity_out=(o[L.O_VX], o[L.O_VY]),
-        regime=S.REGIME_NAMES[int(o[L.O_REG])],
-        n_steps=int(o[L.O_NST]),
-        law=x.model.name,
-        friction=x.friction.name,
-        mu=x.mu,
-        angle=x.angle if isinstance(x.body, Rod) else math.nan,
-        velocity_in=x.velocity,
-        spin_in=x.spin,
-        history=History(hist) if hist is not None else None,
-        references=references_used(x.model, x.friction, x.mu > 0.0),
-        _law_id=x.model.law_id,
-        _law_params=x.model.params,
-    )
+        raise status_error(status, x.model, prefix="partial_slip impact: ")
+    return impact_result(x, out, hist)

@@ -33,24 +33,11 @@ from impactlab.dynamics.core.driver import impact
 from impactlab.dynamics.drop_result import DropResult
 from impactlab.dynamics.flex_simulate import FLEXIBLE_BATCH_ERROR, simulate_flexible
 from impactlab.dynamics.models import body_params, contact_model, kernel_params, references_used
+from impactlab.dynamics.outcome import impact_result, status_error
 from impactlab.dynamics.partial_slip import simulate_partial_slip
-from impactlab.dynamics.results import BatchResult, History, ImpactResult
+from impactlab.dynamics.results import BatchResult, ImpactResult
 from impactlab.friction import DEFAULT_MU, FrictionKind, get_friction
 from impactlab.materials import AISI_1010, Material
-
-
-def _status_error(status: int, model: ContactModel) -> ValueError:
-    if status == S.ST_LAW_LIMIT:
-        return ValueError(
-            f"the interference exceeded {model.max_interference:.6g} m, the validity limit of "
-            f"the {model.name!r} law: lower the impact velocity or choose another law"
-        )
-    if status == S.ST_NAN:
-        return ValueError(
-            f"the {model.name!r} contact law returned a non-finite force or unloading branch "
-            f"(law not available, or evaluated outside its domain)"
-        )
-    return ValueError(S.STATUS_MESSAGES.get(status, f"engine status {status}"))
 
 
 @overload
@@ -175,36 +162,9 @@ def _run_one(x: ImpactInputs, history: bool) -> ImpactResult:
         out,
     )
     if status != S.ST_OK:
-        raise _status_error(int(status), x.model)
-    o = out.tolist()
-    scalars: dict[str, Any] = {name: o[j] for name, j in _SCALAR_COLUMNS}
-    return ImpactResult(
-        **scalars,
-        velocity_out=(o[L.O_VX], o[L.O_VY]),
-        regime=S.REGIME_NAMES[int(o[L.O_REG])],
-        n_steps=int(o[L.O_NST]),
-        law=x.model.name,
-        friction=x.friction.name,
-        mu=x.mu,
-        angle=x.angle if isinstance(x.body, Rod) else math.nan,
-        velocity_in=x.velocity,
-        spin_in=x.spin,
-        history=History(hist[:nh]) if history else None,
-        references=references_used(x.model, x.friction, x.mu > 0.0),
-        _law_id=x.model.law_id,
-        _law_params=x.model.params,
-    )
+        raise status_error(int(status), x.model)
+    return impact_result(x, out, hist[:nh] if history else None)
 
-
-#: Engine outputs that are ImpactResult fields of the same name and type (float).
-_SCALAR_OUTPUTS = tuple(
-    n
-    for n in L.OUTPUT_FIELDS
-    if n in ImpactResult.__dataclass_fields__ and n not in ("regime", "n_steps")
-)
-
-#: (name, column of ``out``) of the scalar outputs.
-_SCALAR_COLUMNS = tuple((n, L.O[n]) for n in _SCALAR_OUTPUTS)
 
 #: simulate_batch's array inputs and their units ("1": a plain number).
 _BATCH_UNITS = {"mu": "1", "angle": "rad", "vx": "m/s", "vy": "m/s", "spin": "rad/s"}
