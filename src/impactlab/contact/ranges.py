@@ -11,7 +11,8 @@ results; beyond them it is extrapolated. Each :class:`LawRange` states
   Kogut-Komvopoulos' ``delta_y`` (``delta/r' = 1.78 S_y/E*``), Brake's ``delta_y`` (Eq. 23),
   Thornton's ``delta_y`` (``p_0 = p_y``); for ``hertz``, which has no yield, the Jackson-Green
   ``delta_c`` of the pair (first yield);
-- ``e_over_sy``: the range of E/S_y the source covers (``None``: not found in the sources read);
+- ``e_over_sy``: the range of E/S_y the source covers (``None``: not found in the sources read;
+  informative, not checked by the engine: ``source`` says whether it was read first-hand);
 - ``status``: ``"confirmed"`` (read in the source), ``"provisional"`` (a labelled stand-in, the
   source's own range was not found), ``"theory"`` (a limit of the theory itself: Hertz holds up
   to first yield) or ``"analytical"`` (a closed-form law with no fitted range: never
@@ -82,8 +83,10 @@ PROVISIONAL_FEM_RATIO = 110.0
 
 _PROVISIONAL_SOURCE = (
     "provisional stand-in: 110 x the law's critical interference, the FEM range of Kogut & "
-    "Etsion (2002, 1 <= delta/delta_c <= 110, as quoted, not re-read); the {who} range was not "
-    "found in the sources searched (publisher pages and full texts were not available)"
+    "Etsion (2002, 1 <= delta/delta_c <= 110; not read in the paper here, corroborated "
+    "second-hand by a public digest of the paper and an independent implementation; their "
+    "omega_c equals the Jackson-Green delta_c within 0.1 % at nu = 0.3); the {who} range was "
+    "not found in the sources searched (publisher pages and full texts were not available)"
 )
 
 
@@ -161,15 +164,20 @@ _ALL = (
         _JG_DC,
         "provisional",
         _PROVISIONAL_SOURCE.format(who="Jackson & Green (2005) FEM")
-        + "; the abstract (read) says only 'a wide range of interferences and materials'",
+        + "; the abstract (read) says only 'a wide range of interferences and materials'; "
+        "second-hand (a public digest of the paper): FEM over delta/delta_c = 0 to 110+, hardness "
+        "fit for a/R <= 0.412, E = 200 GPa, nu = 0.32 and five S_y (E/S_y = 124-952)",
         ("jackson-green-2005", "kogut-etsion-2002"),
+        e_over_sy=(124.0, 952.0),
     ),
     LawRange(
         Law.KOGUT_KOMVOPOULOS,
         PROVISIONAL_FEM_RATIO,
         "delta_y (Kogut-Komvopoulos yield, delta/r' = 1.78 S_y/E*)",
         "provisional",
-        _PROVISIONAL_SOURCE.format(who="Kogut & Komvopoulos (2004)"),
+        _PROVISIONAL_SOURCE.format(who="Kogut & Komvopoulos (2004)")
+        + "; their law fits the indentation of a half-space by a rigid sphere, so Kogut & "
+        "Etsion's flattening range is not its own",
         ("kogut-komvopoulos-2004", "kogut-etsion-2002"),
     ),
     LawRange(

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -24,9 +24,9 @@ from impactlab._validation import (
 )
 from impactlab.bodies import Rod, Sphere, lever_arms
 from impactlab.contact import ContactModel
-from impactlab.dynamics.core.layout import DEFAULT_RTOL
+from impactlab.dynamics.core.layout import DEFAULT_RTOL, PARTIAL_SLIP_RTOL
 from impactlab.dynamics.models import contact_model
-from impactlab.friction import FrictionModel, get_friction
+from impactlab.friction import FrictionKind, FrictionModel, get_friction
 from impactlab.materials import G0, Material
 from impactlab.units import is_quantity, magnitude
 
@@ -220,7 +220,31 @@ def check_impact(
     constant_angle: Any,
     rtol: Any,
 ) -> ImpactInputs:
-    """All the inputs of one impact (``simulate``'s arguments) checked and in SI."""
+    """All the inputs of one impact (``simulate``'s arguments) checked and in SI. The default
+    tolerance is ``DEFAULT_RTOL``, ``PARTIAL_SLIP_RTOL`` for the partial-slip engine."""
+    x = _check_impact(
+        body, flat, law, friction, mu, angle, velocity, spin, law_params, gravity,
+        constant_angle, rtol,
+    )  # fmt: skip
+    if rtol is None and x.friction.kind is FrictionKind.PARTIAL_SLIP:
+        return replace(x, rtol=PARTIAL_SLIP_RTOL)
+    return x
+
+
+def _check_impact(
+    body: Any,
+    flat: Any,
+    law: str | ContactModel,
+    friction: str,
+    mu: Any,
+    angle: Any,
+    velocity: Any,
+    spin: Any,
+    law_params: Mapping[str, Any] | None,
+    gravity: Any,
+    constant_angle: Any,
+    rtol: Any,
+) -> ImpactInputs:
     fast = _plain_inputs(body, flat, angle, velocity, spin, mu, gravity, rtol, constant_angle)
     if fast is not None:
         th, vx, vy, w, m, g, r = fast

@@ -17,17 +17,36 @@ import numpy as np
 from numba import njit
 
 from impactlab.bodies.layout import BP_KIND, KIND_ROD
-from impactlab.dynamics.core.friction import frictional, sticking
+from impactlab.dynamics.core.accumulate import (
+    A_DMAX,
+    A_EEL,
+    A_EMIN,
+    A_ERISE,
+    A_FEX,
+    A_FMAX,
+    A_STICK,
+    A_TMAX,
+    A_VSNEG,
+    A_VSPOS,
+    A_WCOMP,
+    A_WMARK,
+    A_WREST,
+    NA,
+    stored,
+    track,
+)
+from impactlab.dynamics.core.approach import W_NAN, W_REACHED, w_integrate
 from impactlab.dynamics.core.history import record as record_row
 from impactlab.dynamics.core.history import record_substeps
 from impactlab.dynamics.core.integrator import dp_step, first_event, integrate_to
 from impactlab.dynamics.core.layout import (
     C_A0,
     C_B0,
+    C_DLIM,
+    C_DSW,
     C_G,
     C_I,
     C_M,
-    C_MU,
     EV_LIMIT,
     EV_SEP,
     EV_SWITCH,
@@ -37,6 +56,7 @@ from impactlab.dynamics.core.layout import (
     FR_NONE,
     M_COMP,
     M_DR,
+    M_PHASE,
     M_SIR,
     MAX_EVENTS,
     MAX_STEPS,
@@ -79,7 +99,7 @@ from impactlab.dynamics.core.layout import (
 )
 from impactlab.dynamics.core.normal import geometry
 from impactlab.dynamics.core.quality import result_flags
-from impactlab.dynamics.core.rhs import energy, evaluate, rhs_events
+from impactlab.dynamics.core.rhs import evaluate, rhs_events
 from impactlab.dynamics.core.setup import check_inputs, constants, error_scales, initial_mode
 from impactlab.dynamics.core.status import (
     REGIME_FRICTIONLESS,
@@ -97,53 +117,14 @@ from impactlab.dynamics.core.status import (
 from impactlab.dynamics.core.transitions import restart, switch_mode, without_switch
 from impactlab.dynamics.core.tuples import state_tuple
 
-# --- accumulators over the accepted steps ------------------------------------------------------
-A_EMIN = 0  # lowest total energy so far [J]
-A_ERISE = 1  # largest rise of the total energy above that minimum [J]
-A_FEX = 2  # largest |F_t| - mu F_n [N]
-A_FMAX = 3  # largest normal force [N]
-A_DMAX = 4  # largest interference [m]
-A_TMAX = 5  # time of the largest interference [s]
-A_VSPOS = 6  # largest slip velocity [m/s]
-A_VSNEG = 7  # smallest slip velocity [m/s]
-A_STICK = 8  # time in stick [s]
-A_WMARK = 9  # normal work at the last v_n = 0 event [J]
-A_WCOMP = 10  # normal work of compression [J]
-A_WREST = 11  # normal work of restitution [J]
-NA = 12
-
 _GO_ON = -1  # internal status: the impact goes on
-
-
-@njit(cache=True, inline="always", error_model="numpy")
-def _track(acc, law, p, fric, c, md, y, evq, t0, t1, diag):
-    """Update ``acc`` over the accepted step [t0, t1] ending at state ``y`` (a tuple, mode
-    ``md`` before any switch, quantities ``evq``); False where the forces are not finite."""
-    if sticking(fric, md):
-        acc[A_STICK] += t1 - t0
-    delta, _a, _b, Fn, Ft, _vn, vs, kt = evq
-    if not (math.isfinite(Fn) and math.isfinite(Ft)):
-        return False
-    if Fn > acc[A_FMAX]:
-        acc[A_FMAX] = Fn
-    if delta > acc[A_DMAX]:
-        acc[A_DMAX] = delta
-        acc[A_TMAX] = t1
-    if vs > acc[A_VSPOS]:
-        acc[A_VSPOS] = vs
-    if vs < acc[A_VSNEG]:
-        acc[A_VSNEG] = vs
-    if diag:
-        en = energy(law, p, fric, c, md, y, Fn, Ft, delta, kt)
-        if en - acc[A_EMIN] > acc[A_ERISE]:
-            acc[A_ERISE] = en - acc[A_EMIN]
-        if en < acc[A_EMIN]:
-            acc[A_EMIN] = en
-        if frictional(fric):
-            ex = abs(Ft) - c[C_MU] * Fn
-            if ex > acc[A_FEX]:
-                acc[A_FEX] = ex
-    return True
+#: The final approach in w starts when separation is predicted within this many steps.
+APPROACH_STEPS = 2.0
+#: The opening in w ends at this fraction of the Hertz interference scale d* (``error_scales``).
+OPENING = 0.1
+#: First steps of the approach and of the opening, as fractions of their span in w.
+APPROACH_FIRST = 0.5
+OPENING_FIRST = 0.5
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -162,19 +143,22 @@ def _on_event(ev, law, p, fric, c, md, y, evq, acc):
     """Stop at the event ``ev`` (separation: ST_OK, law limit, failure) or switch: normal-work
     bookkeeping and mode transition. Returns (status or _GO_ON, constants, mode)."""
     if ev == EV_SEP:
-        acc[A_WREST] += y[S_WORK] - acc[A_WMARK]
+        acc[A_WREST] += acc[A_EEL]  # all of it released: F_n = 0 at delta_r
         return ST_OK, c, md
     if ev == EV_LIMIT:
         return ST_LAW_LIMIT, c, md
     if ev == EV_SWITCH:
         c = without_switch(c)
+    compressing = md[M_COMP] != 0.0
     if ev == EV_VN:
-        if md[M_COMP] != 0.0:
+        if compressing:
             acc[A_WCOMP] += y[S_WORK] - acc[A_WMARK]
         else:
-            acc[A_WREST] += y[S_WORK] - acc[A_WMARK]
+            acc[A_WREST] += acc[A_EEL] - stored(evq, md)
         acc[A_WMARK] = y[S_WORK]
     st, md = switch_mode(ev, law, p, fric, c, md, y, evq)
+    if ev == EV_VN and compressing:
+        acc[A_EEL] = stored(evq, md)
     return (_GO_ON if st == ST_OK else st), c, md
 
 
@@ -214,8 +198,13 @@ def _integrate(law, p, fric, c, md, y, sc, tstar, dstar, fscale, rtol, record, d
     nh = 0
     if record:
         hist, nh = record_row(hist, nh, t, law, p, fric, c, md, state_tuple(y))
-    nsteps = 0
-    nevents = 0
+    status, t, nsteps, nevents, c, md, gold, hist, nh = _opening(
+        law, p, fric, c, md, y, K, gold, rtol, sc, tstar, dstar, fscale, acc, diag, record, hist, nh
+    )
+    if status != _GO_ON:
+        return status, t, nsteps, md, hist, nh
+    h = max(h, t)
+    may_approach = True
     status = ST_NO_SEPARATION
     while nsteps < MAX_STEPS:
         nsteps += 1
@@ -230,6 +219,17 @@ def _integrate(law, p, fric, c, md, y, sc, tstar, dstar, fscale, rtol, record, d
             continue
         # ---- accepted: the earliest event in this step, the history inside it
         ev, theta = first_event(gold, gnew, law, p, fric, c, md, y, K, h, Q, yt, record)
+        if ev == EV_SEP and may_approach:
+            # the step crossed separation: its last part in w from the step's start instead
+            st, t, n_a, hist, nh, gold = _approach_end(
+                law, p, fric, c, md, y, K, t, rtol, sc, tstar, acc, diag, record, hist, nh
+            )
+            nsteps += n_a
+            may_approach = False
+            if st != _GO_ON:
+                status = st
+                break
+            continue
         if ev >= 0:
             tend = t + theta * h
         else:
@@ -242,7 +242,7 @@ def _integrate(law, p, fric, c, md, y, sc, tstar, dstar, fscale, rtol, record, d
         if ev >= 0:
             nsteps += integrate_to(law, p, fric, c, md, y, K[0], theta * h, rtol, sc, yev) - 1
             evq = evaluate(law, p, fric, c, md, state_tuple(yev))
-        if not _track(acc, law, p, fric, c, md, state_tuple(yev), evq, t, tend, diag):
+        if not track(acc, law, p, fric, c, md, state_tuple(yev), evq, t, tend, diag):
             status = ST_NAN
             break
         t = tend
@@ -255,6 +255,15 @@ def _integrate(law, p, fric, c, md, y, sc, tstar, dstar, fscale, rtol, record, d
             gold = gnew
             if record:
                 hist, nh = record_row(hist, nh, t, law, p, fric, c, md, state_tuple(y))
+            if may_approach and _near_separation(md, evq, h):
+                st, t, n_a, hist, nh, gold = _approach_end(
+                    law, p, fric, c, md, y, K, t, rtol, sc, tstar, acc, diag, record, hist, nh
+                )
+                nsteps += n_a
+                may_approach = False
+                if st != _GO_ON:
+                    status = st
+                    break
             continue
         # ---- the event at (t, y): stop, or switch the mode and restart
         nevents += 1
@@ -269,7 +278,121 @@ def _integrate(law, p, fric, c, md, y, sc, tstar, dstar, fscale, rtol, record, d
         if st != _GO_ON:
             status = st
             break
+        may_approach = True
     return status, t, nsteps, md, hist, nh
+
+
+@njit(cache=True, error_model="numpy")
+def _opening(
+    law, p, fric, c, md, y, K, gold, rtol, sc, tstar, dstar, fscale, acc, diag, record, hist, nh
+):
+    """The start of the contact in w (``w_integrate``) from first touch to OPENING d*, through
+    the switch to the elastic-plastic curve where it lies before. Returns (ST_NAN, a stop
+    status, or _GO_ON with the derivative at ``y`` in ``K[0]``, t, steps, events, constants,
+    mode, event tuple, hist, nh)."""
+    target = min(OPENING * dstar, 0.5 * c[C_DLIM])
+    t = 0.0
+    n = 0
+    nev = 0
+    wa = 0.0
+    st = W_REACHED
+    if c[C_DSW] < target:
+        wsw = math.sqrt(c[C_DSW])
+        st, t, k, hist, nh, evq = w_integrate(
+            law, p, fric, c, md, y, t, 0.0, wsw, 1.0, rtol, sc, tstar, acc, diag, record, hist, nh
+        )
+        n += k
+        if st == W_REACHED:  # the switch at its known interference (the event EV_SWITCH)
+            if record:
+                hist, nh = record_row(hist, nh, t, law, p, fric, c, md, state_tuple(y))
+            nev += 1
+            status, c, md, gold = _handle_event(
+                EV_SWITCH, law, p, fric, c, md, y, evq, acc, K, gold, sc, fscale, dstar
+            )
+            if status != _GO_ON:
+                return status, t, n, nev, c, md, gold, hist, nh
+            wa = wsw
+    if st == W_REACHED:
+        wb = math.sqrt(target)
+        st, t, k, hist, nh, _q = w_integrate(
+            law,
+            p,
+            fric,
+            c,
+            md,
+            y,
+            t,
+            wa,
+            wb,
+            OPENING_FIRST,
+            rtol,
+            sc,
+            tstar,
+            acc,
+            diag,
+            record,
+            hist,
+            nh,
+        )
+        n += k
+    if st == W_NAN:
+        return ST_NAN, t, n, nev, c, md, gold, hist, nh
+    r, gold, _q = rhs_events(law, p, fric, c, md, state_tuple(y))
+    for i in range(NS):
+        K[0, i] = r[i]
+    if record and st == W_REACHED and n > 0:
+        hist, nh = record_row(hist, nh, t, law, p, fric, c, md, state_tuple(y))
+    return _GO_ON, t, n, nev, c, md, gold, hist, nh
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _near_separation(md, evq, h):
+    """True when the contact recedes on the unloading branch and separation is predicted (at
+    the present normal velocity) within APPROACH_STEPS steps of size ``h``."""
+    if md[M_PHASE] == 0.0 or md[M_COMP] != 0.0:
+        return False
+    vn = evq[5]
+    return vn > 0.0 and evq[0] - md[M_DR] < APPROACH_STEPS * h * vn
+
+
+@njit(cache=True, error_model="numpy")
+def _approach_end(law, p, fric, c, md, y, K, t, rtol, sc, tstar, acc, diag, record, hist, nh):
+    """The final approach to separation in w (``approach``) from ``y`` at ``t``. Returns
+    (ST_OK at separation, ST_NAN, or _GO_ON where the time integration takes over again from
+    the last accepted state (derivative into ``K[0]``), t, steps, hist, nh, event tuple)."""
+    delta, _a, _b, _xs, _sl = geometry(c, state_tuple(y))
+    wa = math.sqrt(max(delta - md[M_DR], 0.0))
+    st, t, n, hist, nh, _q = w_integrate(
+        law,
+        p,
+        fric,
+        c,
+        md,
+        y,
+        t,
+        wa,
+        0.0,
+        APPROACH_FIRST,
+        rtol,
+        sc,
+        tstar,
+        acc,
+        diag,
+        record,
+        hist,
+        nh,
+    )
+    r, gold, evq = rhs_events(law, p, fric, c, md, state_tuple(y))
+    if st == W_REACHED:
+        if record:
+            hist, nh = record_row(hist, nh, t, law, p, fric, c, md, state_tuple(y))
+        status, c, md = _on_event(EV_SEP, law, p, fric, c, md, y, evq, acc)
+        return status, t, n, hist, nh, gold
+    if st == W_NAN:
+        return ST_NAN, t, n, hist, nh, gold
+    for i in range(NS):
+        K[0, i] = r[i]
+    return _GO_ON, t, n, hist, nh, gold
 
 
 @njit(cache=True, error_model="numpy")

@@ -154,18 +154,19 @@ def dp_step(law, p, fric, c, md, y, K, h, rtol, sc, ynew):
 
 @njit(cache=True, error_model="numpy")
 def dense(y0, K, h, theta, Q, out):
-    """Dense output at t0 + theta h (Q = K^T P, computed by ``dense_coeffs``)."""
+    """Dense output at t0 + theta h (Q = K^T P, computed by ``dense_coeffs``; any state
+    length)."""
     t2 = theta * theta
     t3 = t2 * theta
     t4 = t3 * theta
-    for i in range(NS):
+    for i in range(out.shape[0]):
         out[i] = y0[i] + h * (Q[i, 0] * theta + Q[i, 1] * t2 + Q[i, 2] * t3 + Q[i, 3] * t4)
 
 
 @njit(cache=True, error_model="numpy")
 def dense_coeffs(K, Q):
-    """The dense-output coefficients Q = K^T DENSE_P of the last step."""
-    for i in range(NS):
+    """The dense-output coefficients Q = K^T DENSE_P of the last step (any state length)."""
+    for i in range(Q.shape[0]):
         for j in range(4):
             s = 0.0
             for st in range(7):

@@ -1,0 +1,249 @@
+"""The two ends of the contact integrated in w = sqrt(delta - delta_0) instead of time.
+
+At both ends of the contact the normal force varies like (delta - delta_0)^1.5: at first touch
+(delta_0 = 0, the Hertzian start of every loading curve) and at separation (delta_0 = delta_r,
+the Hertzian unloading branch). Its second time derivative is unbounded there: the time steps
+must be small, and the Dormand-Prince error estimate is not reliable for a step that ends close
+to separation (such a step carried most of the error of the rebound velocity e at loose
+tolerances). With w = sqrt(delta - delta_0) as independent variable the force is smooth in w
+(4/3 E* sqrt(R) w^3 on a Hertzian curve), and d delta/dt = -v_n (exactly, see
+``normal.geometry``) gives dt/dw = 2 w / |v_n|, smooth while |v_n| stays away from 0.
+
+``w_integrate`` integrates the state and the time t from w_a to w_b: the *opening* (from first
+touch to a fixed fraction of the Hertz interference scale, with the switch to the
+elastic-plastic curve at its known interference in between) and the *final approach* (from
+separation predicted within a few steps to w = 0, which *is* the separation: no event location).
+The same Dormand-Prince 5(4) pair and error norm as the time integration (``integrator``), with
+the time as a ninth component (error scale ``rtol (t* + |t|)``). If any other event fires
+inside (the normal velocity turns, stick/slip, the law's limit), the driver goes back to the time
+integration from the last accepted state (``W_FALLBACK``).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from impactlab.contact.kernels import P_ESTAR
+from impactlab.dynamics.core.accumulate import track
+from impactlab.dynamics.core.friction import tangential_force
+from impactlab.dynamics.core.history import record as record_row
+from impactlab.dynamics.core.integrator import (
+    A21,
+    A31,
+    A32,
+    A41,
+    A42,
+    A43,
+    A51,
+    A52,
+    A53,
+    A54,
+    A61,
+    A62,
+    A63,
+    A64,
+    A65,
+    B1,
+    B3,
+    B4,
+    B5,
+    B6,
+    E1,
+    E3,
+    E4,
+    E5,
+    E6,
+    E7,
+    dense,
+    dense_coeffs,
+)
+from impactlab.dynamics.core.layout import (
+    EV_SEP,
+    EV_SWITCH,
+    HISTORY_SUBSTEPS,
+    M_DR,
+    M_RR,
+    NEV,
+    NS,
+    S_Q,
+    S_SPIN,
+    S_VX,
+    S_VY,
+)
+from impactlab.dynamics.core.normal import geometry, normal_force
+from impactlab.dynamics.core.rhs import derivative, events_from
+from impactlab.dynamics.core.tuples import state_tuple
+
+#: Components of the approach state: the state ``y`` and the time.
+NY = NS + 1
+Y_T = NS
+#: Outcomes of ``w_integrate``: ``wb`` reached, back to the time integration, non-finite force.
+W_REACHED = 0
+W_FALLBACK = 1
+W_NAN = 2
+#: Steps the approach may take before it gives up (back to the time integration).
+MAX_APPROACH_STEPS = 60
+#: Dormand-Prince nodes c_s of stages 1..5 (the right-hand side depends on w here).
+_C = (0.0, 0.2, 0.3, 0.8, 8.0 / 9.0, 1.0, 1.0)
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _rhs_w(law, p, fric, c, md, Y, w, sgn):
+    """(dY/du as a tuple of NY, evaluated quantities) at w; u grows, w = w_a + sgn u.
+
+    sgn = -1: the restitution, delta = delta_r + w^2 on the Hertzian unloading branch
+    (F = 4/3 E* sqrt(R_r) w^3), dt/du = 2 w / v_n; sgn = +1: the opening, delta = w^2 on the
+    loading curve, dt/du = 2 w / (-v_n)."""
+    y = state_tuple(Y)
+    _delta, a, b, _xs, _sl = geometry(c, y)
+    w = max(w, 0.0)
+    if sgn < 0.0:
+        delta = md[M_DR] + w * w
+        Fn = 4.0 / 3.0 * p[P_ESTAR] * math.sqrt(md[M_RR]) * (w * w * w)
+    else:
+        delta = w * w
+        Fn = normal_force(law, p, md, delta)
+    spin = y[S_SPIN]
+    vn = y[S_VY] - spin * a
+    vs = y[S_VX] + spin * b
+    Ft, kt = tangential_force(law, p, fric, c, md, delta, Fn, spin, a, b, y[S_Q])
+    evq = (delta, a, b, Fn, Ft, vn, vs, kt)
+    d = derivative(fric, c, md, y, evq)
+    rate = -sgn * vn
+    s = 2.0 * w / rate if rate > 0.0 else math.nan  # dt/du
+    return (d[0] * s, d[1] * s, d[2] * s, d[3] * s, d[4] * s, d[5] * s, d[6] * s, d[7] * s, s), evq
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _events(law, p, fric, c, md, evq, q):
+    """Event tuple from the evaluated quantities ``evq`` (``rhs.events_from``)."""
+    delta, _a, _b, Fn, Ft, vn, vs, kt = evq
+    return events_from(law, p, fric, c, md, delta, Fn, Ft, vn, vs, kt, q)
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _point(Y, K, h, stage, out):
+    """The stage point ``Y + h sum_j a_{stage,j} K[j]`` (stage 6: the 5th-order result)."""
+    for i in range(NY):
+        if stage == 1:
+            acc = A21 * K[0, i]
+        elif stage == 2:
+            acc = A31 * K[0, i] + A32 * K[1, i]
+        elif stage == 3:
+            acc = A41 * K[0, i] + A42 * K[1, i] + A43 * K[2, i]
+        elif stage == 4:
+            acc = A51 * K[0, i] + A52 * K[1, i] + A53 * K[2, i] + A54 * K[3, i]
+        elif stage == 5:
+            acc = A61 * K[0, i] + A62 * K[1, i] + A63 * K[2, i] + A64 * K[3, i] + A65 * K[4, i]
+        else:
+            acc = B1 * K[0, i] + B3 * K[2, i] + B4 * K[3, i] + B5 * K[4, i] + B6 * K[5, i]
+        out[i] = Y[i] + h * acc
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _put(K, stage, r):
+    for i in range(NY):
+        K[stage, i] = r[i]
+
+
+@njit(cache=True, error_model="numpy")
+def _step(law, p, fric, c, md, Y, K, w, sgn, h, rtol, sc, tscale, Yn):
+    """One Dormand-Prince step from w to w + sgn h (``K[0]``: dY/du at Y); the result into
+    ``Yn``; returns (error norm, quantities at ``Yn``)."""
+    for stage in range(1, 6):
+        _point(Y, K, h, stage, Yn)
+        r, _q = _rhs_w(law, p, fric, c, md, Yn, w + sgn * _C[stage] * h, sgn)
+        _put(K, stage, r)
+    _point(Y, K, h, 6, Yn)
+    r, evq = _rhs_w(law, p, fric, c, md, Yn, w + sgn * h, sgn)
+    _put(K, 6, r)
+    err = 0.0
+    for i in range(NY):
+        ei = E1 * K[0, i] + E3 * K[2, i] + E4 * K[3, i] + E5 * K[4, i] + E6 * K[5, i]
+        ei += E7 * K[6, i]
+        s = tscale if i == Y_T else sc[i]
+        q = h * ei / (rtol * (s + max(abs(Y[i]), abs(Yn[i]))))
+        err += q * q
+    return math.sqrt(err / NY), evq
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _fallback(gold, gnew, sgn):
+    """True where an event fires in the step (the opening ignores the elastic-curve switch,
+    which it reaches exactly: ``w_b``)."""
+    for j in range(NEV):
+        if j == EV_SWITCH or j == EV_SEP:
+            continue
+        if gold[j] <= 0.0 < gnew[j]:
+            return True
+    return False
+
+
+@njit(cache=True, error_model="numpy")
+def w_integrate(
+    law, p, fric, c, md, y, t, wa, wb, first, rtol, sc, tscale, acc, diag, record, hist, nh
+):
+    """Integrate from state ``y`` at time ``t`` in w from ``wa`` to ``wb``: the restitution to
+    separation (``wb < wa``, normally ``wb = 0``) or the opening (``wb > wa``).
+
+    Returns (outcome ``APPROACH_*``, time, steps, hist, nh, quantities at the end). ``y`` is
+    updated in place: the state at ``wb``, or the last accepted state where the integration
+    gave up (fallback: an event fired; the time integration takes over)."""
+    sgn = 1.0 if wb > wa else -1.0
+    span = abs(wb - wa)
+    Y = np.empty(NY)
+    Yn = np.empty(NY)
+    Yt = np.empty(NY)
+    K = np.empty((7, NY))
+    Q = np.empty((NY, 4))
+    for i in range(NS):
+        Y[i] = y[i]
+    Y[Y_T] = t
+    w = wa
+    r, evq = _rhs_w(law, p, fric, c, md, Y, w, sgn)
+    _put(K, 0, r)
+    if not (span > 0.0 and math.isfinite(r[Y_T])):
+        return W_FALLBACK, t, 0, hist, nh, evq
+    gold = _events(law, p, fric, c, md, evq, y[S_Q])
+    done = 0.0
+    h = first * span
+    n = 0
+    while n < MAX_APPROACH_STEPS:
+        n += 1
+        last = h >= (span - done) * (1.0 - 1e-12)
+        if last:
+            h = span - done
+        err, evq_new = _step(law, p, fric, c, md, Y, K, w, sgn, h, rtol, sc, tscale, Yn)
+        if not (err <= 1.0):
+            if h < 1e-6 * span or (not math.isfinite(err) and h < 1e-3 * span):
+                break
+            h *= max(0.2, 0.9 * err**-0.2) if math.isfinite(err) else 0.25
+            continue
+        gnew = _events(law, p, fric, c, md, evq_new, Yn[S_Q])
+        if _fallback(gold, gnew, sgn):
+            break
+        if record:
+            dense_coeffs(K, Q)
+            for j in range(1, HISTORY_SUBSTEPS):
+                dense(Y, K, h, j / HISTORY_SUBSTEPS, Q, Yt)
+                hist, nh = record_row(hist, nh, Yt[Y_T], law, p, fric, c, md, state_tuple(Yt))
+        if not track(acc, law, p, fric, c, md, state_tuple(Yn), evq_new, Y[Y_T], Yn[Y_T], diag):
+            return W_NAN, Y[Y_T], n, hist, nh, evq_new
+        evq = evq_new
+        for i in range(NY):
+            Y[i] = Yn[i]
+            K[0, i] = K[6, i]
+        for i in range(NS):
+            y[i] = Y[i]
+        gold = gnew
+        if last:
+            return W_REACHED, Y[Y_T], n, hist, nh, evq
+        done += h
+        w = wa + sgn * done
+        if record:
+            hist, nh = record_row(hist, nh, Y[Y_T], law, p, fric, c, md, state_tuple(Y))
+        h *= min(5.0, 0.9 * err**-0.2) if err > 0.0 else 5.0
+    return W_FALLBACK, Y[Y_T], n, hist, nh, evq
