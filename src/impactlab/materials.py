@@ -9,13 +9,25 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from impactlab._html import dataclass_html
+from impactlab._html import dataclass_html, dataclass_rows
 from impactlab._validation import check_finite, check_positive, check_range
 
 #: Standard gravity [m/s^2], used to convert kgf to N.
 G0 = 9.80665
 #: The unit of a Brinell hardness number.
 _HB = "kgf/mm^2"
+
+
+def summary_line(title: str, rows: list[tuple[str, str, str]]) -> str:
+    """``"title: name = value unit, ..."``: the ``(name, text, unit)`` rows of
+    ``impactlab._html.dataclass_rows`` (display units) on one line, unset values (``-``)
+    left out and a body's ``material`` (a name) last. The ``__str__`` of materials and bodies."""
+    items = [
+        f"{name} = {text} {unit}".rstrip() if unit not in ("", "-") else f"{name} = {text}"
+        for name, text, unit in sorted(rows, key=lambda r: r[0] == "material")
+        if text != "-"
+    ]
+    return f"{title}: {', '.join(items)}"
 
 
 def brinell_to_pa(hb: float) -> float:
@@ -94,6 +106,12 @@ class Material:
     def _repr_html_(self) -> str:
         return dataclass_html(self)
 
+    def __str__(self) -> str:
+        """One line in display units: ``Material NAME: E = 200 GPa, nu = 0.3, ...``
+        (``repr`` stays the dataclass's, in SI)."""
+        rows = [r for r in dataclass_rows(self) if r[0] != "name"]
+        return summary_line(f"Material {self.name}", rows)
+
 
 def reduced_modulus(a: Material, b: Material | None = None) -> float:
     """Reduced (effective) modulus E* = [(1 - nu_a^2)/E_a + (1 - nu_b^2)/E_b]^-1 [Pa].
@@ -155,13 +173,16 @@ class ContactPair:
         """Poisson's ratio of the material that yields first."""
         return self.weaker.nu
 
+    def _derived(self) -> dict[str, float]:
+        return {"E_star": self.E_star, "G_star": self.G_star, "yield_strength": self.yield_strength}
+
     def _repr_html_(self) -> str:
-        extra = {
-            "E_star": self.E_star,
-            "G_star": self.G_star,
-            "yield_strength": self.yield_strength,
-        }
-        return dataclass_html(self, extra)
+        return dataclass_html(self, self._derived())
+
+    def __str__(self) -> str:
+        """One line in display units: the two materials by name, E*, G* and the yield strength
+        of the material that yields first."""
+        return summary_line("ContactPair", dataclass_rows(self, self._derived()))
 
 
 def _steel(name: str, yield_strength: float, brinell_hardness: float, density: float) -> Material:

@@ -21,14 +21,14 @@ from typing import cast
 
 import numpy as np
 
-from impactlab._html import dataclass_html
+from impactlab._html import dataclass_html, dataclass_rows
 from impactlab._validation import check_positive, check_range
 from impactlab.bodies._checks import check_material
 from impactlab.bodies.geometric import geometric_tensor
 from impactlab.bodies.modal import ModalBasis, modal_basis
 from impactlab.bodies.rod import Rod
 from impactlab.bodies.rod_section import TIMOSHENKO, RodSection, check_theory
-from impactlab.materials import AISI_201, Material
+from impactlab.materials import AISI_201, Material, summary_line
 
 __all__ = ["DEFAULT_N_AXIAL", "DEFAULT_N_BENDING", "FlexibleRod"]
 
@@ -175,6 +175,10 @@ class FlexibleRod:
 
     def _repr_html_(self) -> str:
         return dataclass_html(self, {"inertia": self.inertia})
+
+    def __str__(self) -> str:
+        """One line in display units (``repr`` stays the dataclass's, in SI)."""
+        return summary_line(type(self).__name__, dataclass_rows(self, {"inertia": self.inertia}))
 
     def rigid(self) -> Rod:
         """The rigid rod with the same length, tip radius, mass, material and I_C."""

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from impactlab._html import dataclass_html
+from impactlab._html import dataclass_html, dataclass_rows
 from impactlab._validation import check_positive
 from impactlab.bodies._checks import (
     PLAUSIBLE_LENGTH,
@@ -24,7 +24,7 @@ from impactlab.bodies._checks import (
     plausible,
 )
 from impactlab.bodies.layout import BP_GSTAR, BP_INERTIA, KIND_ROD
-from impactlab.materials import AISI_201, AISI_1010, Material, reduced_shear_modulus
+from impactlab.materials import AISI_201, AISI_1010, Material, reduced_shear_modulus, summary_line
 
 __all__ = ["PAPER_ROD", "Rod"]
 
@@ -114,6 +114,10 @@ class Rod:
 
     def _repr_html_(self) -> str:
         return dataclass_html(self)
+
+    def __str__(self) -> str:
+        """One line in display units (``repr`` stays the dataclass's, in SI)."""
+        return summary_line(type(self).__name__, dataclass_rows(self))
 
 
 #: The paper's rod (Table 1 of doi:10.1007/s00419-015-1108-2), I_C = m L^2 / 12.

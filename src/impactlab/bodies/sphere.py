@@ -7,7 +7,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from impactlab._html import dataclass_html
+from impactlab._html import dataclass_html, dataclass_rows
 from impactlab._validation import check_positive
 from impactlab.bodies._checks import (
     PLAUSIBLE_MASS,
@@ -16,7 +16,7 @@ from impactlab.bodies._checks import (
     plausible,
 )
 from impactlab.bodies.layout import BP_GSTAR, BP_INERTIA, KIND_SPHERE
-from impactlab.materials import AISI_201, AISI_1010, Material, reduced_shear_modulus
+from impactlab.materials import AISI_201, AISI_1010, Material, reduced_shear_modulus, summary_line
 
 __all__ = ["Sphere"]
 
@@ -86,3 +86,7 @@ class Sphere:
 
     def _repr_html_(self) -> str:
         return dataclass_html(self, {"inertia": self.inertia})
+
+    def __str__(self) -> str:
+        """One line in display units (``repr`` stays the dataclass's, in SI)."""
+        return summary_line(type(self).__name__, dataclass_rows(self, {"inertia": self.inertia}))

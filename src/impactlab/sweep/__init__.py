@@ -29,9 +29,15 @@ from impactlab.sweep.integrity import DamagedStoreError
 from impactlab.sweep.limits import DEFAULT_MAX_CASES, SweepSizeWarning
 from impactlab.sweep.models import Statics
 from impactlab.sweep.options import EngineOptions, UncertaintySpec
-from impactlab.sweep.plots import plot_output_map, plot_regime_map, plot_sweep
+from impactlab.sweep.plots import SliceWarning, plot_output_map, plot_regime_map, plot_sweep
 from impactlab.sweep.runner import SweepInterrupted, SweepResult, SweepStats, run_sweep
-from impactlab.sweep.store import StudyMismatchError, SweepStore, export_netcdf, open_sweep
+from impactlab.sweep.store import (
+    CorruptStoreError,
+    StudyMismatchError,
+    SweepStore,
+    export_netcdf,
+    open_sweep,
+)
 from impactlab.sweep.study import Study, load_study
 from impactlab.sweep.summary import flag_counts, status_counts, store_info
 from impactlab.sweep.uncertainty import (
@@ -48,6 +54,7 @@ __all__ = [
     "OUTPUTS",
     "OUTPUT_ALIASES",
     "Axis",
+    "CorruptStoreError",
     "DamagedStoreError",
     "Distribution",
     "EngineEvaluator",
@@ -58,6 +65,7 @@ __all__ = [
     "LogNormal",
     "Normal",
     "Sample",
+    "SliceWarning",
     "Statics",
     "Study",
     "StudyMismatchError",

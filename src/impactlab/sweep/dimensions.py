@@ -4,19 +4,29 @@ chunk layout over them.
 A study has named dimensions: one per grid axis (in the order given), then ``sample`` when a
 Monte Carlo sample is drawn. The cases are cut into chunks: regular blocks of the N-d case array
 (:class:`Layout`), of about ``chunk_size`` cases, one value of every category input per block.
+
+Invalid inputs are refused when a study is made, naming the dimension, the offending values
+and what is allowed (the rules of a single impact: ``impactlab.materials.Material``,
+``impactlab.bodies``, ``impactlab.dynamics.checks``): a value outside :data:`ALLOWED` on a grid
+axis or in ``fixed`` (:func:`check_value`, :class:`Axis`), and, for the study as a whole, an
+angle outside (0, 90] deg for a rod and a centre-of-mass velocity vy >= 0 that no spin can turn
+into an approach (:func:`check_kinematics`). What only a combination of inputs makes invalid
+(S_y >= E, a tip wider than half the rod, ...) and sampled values are checked case by case and
+stored as a status code, like cases that fail physically (no separation, ...).
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Collection, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
+from impactlab._display import display_unit, format_number
 from impactlab.sweep.distributions import Distribution
-from impactlab.sweep.inputs import get_input
+from impactlab.sweep.inputs import MATERIAL_OVERRIDES, get_input
 
 #: Name of the Monte Carlo dimension (reserved: no input has this name).
 SAMPLE_DIM = "sample"
@@ -30,8 +40,121 @@ def is_category(name: str) -> bool:
     return get_input(name).kind == "category"
 
 
-def check_value(name: str, value: Any) -> Value:
-    """A fixed or axis value for input ``name`` (SI float or a category string)."""
+#: An allowed interval: (low, high, low inclusive, high inclusive, integers only).
+Interval = tuple[float, float, bool, bool, bool]
+_POSITIVE: Interval = (0.0, math.inf, False, True, False)
+_COUNT: Interval = (0.0, math.inf, True, True, True)
+
+#: The values a numeric input may take on its own (SI), as the single impact requires them;
+#: inputs not named here take any finite number.
+ALLOWED: dict[str, Interval] = {
+    "mu": (0.0, math.inf, True, True, False),
+    **{n: _POSITIVE for n in ("length", "tip_radius", "radius", "mass", "inertia")},
+    "n_axial": _COUNT,
+    "n_bending": _COUNT,
+    "damping": (0.0, 1.0, True, False, False),
+    **{
+        name: {
+            "nu": (-1.0, 0.5, False, False, False),
+            "meyer_index": (2.0, 3.0, False, True, False),
+        }.get(field, _POSITIVE)
+        for side in MATERIAL_OVERRIDES.values()
+        for name, field in side.items()
+    },
+}
+#: The angle of a rod (rigid or flexible) to the flat [rad]: (0, pi/2] (+1e-12 for 90 deg
+#: converted from degrees, as ``impactlab.dynamics.checks``).
+ANGLE: Interval = (0.0, 0.5 * math.pi + 1e-12, False, True, False)
+#: Bodies that have an angle to the flat (a sphere's is ignored).
+_ANGLED_BODIES = ("rod", "flexible_rod")
+
+
+def _inside(x: float, rule: Interval) -> bool:
+    lo, hi, lo_in, hi_in, integer = rule
+    return (
+        (x >= lo if lo_in else x > lo)
+        and (x <= hi if hi_in else x < hi)
+        and (not integer or x == math.floor(x))
+    )
+
+
+def _shown(name: str, values: Sequence[float]) -> tuple[list[str], str]:
+    """``values`` of input ``name`` as text in its display unit, and the unit ("" for none)."""
+    spec = get_input(name)
+    field = next((s[name] for s in MATERIAL_OVERRIDES.values() if name in s), name)
+    d = display_unit(field, spec.unit)
+    return [format_number(v * d.scale) for v in values], "" if d.unit == "-" else d.unit
+
+
+def _rule_text(name: str, rule: Interval) -> str:
+    """``"mu must be >= 0"``, ``"angle must lie in (0, 90] deg"`` (bounds in display units)."""
+    lo, hi, lo_in, hi_in, integer = rule
+    (lo_t, hi_t), unit = _shown(name, [lo, hi])
+    u = f" {unit}" if unit else ""
+    if integer:
+        return f"{name} must be an integer >= {lo_t}"
+    if math.isinf(hi):
+        return f"{name} must be {'>=' if lo_in else '>'} {lo_t}{u}"
+    return f"{name} must lie in {'[' if lo_in else '('}{lo_t}, {hi_t}{']' if hi_in else ')'}{u}"
+
+
+def _refuse(
+    where: str, name: str, values: Sequence[float], bad: Sequence[float], rule: str
+) -> None:
+    """ValueError ``"<where>: <rule>, got <bad values> (k of n values)"`` when ``bad`` is not
+    empty (values in display units, at most four named)."""
+    if not bad:
+        return
+    texts, unit = _shown(name, list(bad[:4]))
+    got = ", ".join(texts) + (", ..." if len(bad) > 4 else "")
+    got += f" {unit}" if unit else ""
+    count = f" ({len(bad)} of {len(values)} values)" if len(values) > 1 else ""
+    raise ValueError(f"{where}: {rule}, got {got}{count}")
+
+
+def check_allowed(name: str, values: Sequence[float], where: str) -> None:
+    """ValueError naming ``where``, the input, the offending values and the allowed interval
+    unless every value of input ``name`` (SI) lies in :data:`ALLOWED`."""
+    rule = ALLOWED.get(name)
+    if rule is not None:
+        _refuse(
+            where, name, values, [v for v in values if not _inside(v, rule)], _rule_text(name, rule)
+        )
+
+
+def check_kinematics(
+    fixed: Mapping[str, Value], axes: Sequence[Axis], sampled: Collection[str] = ()
+) -> None:
+    """The study-level input rules: the angle of a rod in (0, 90] deg (unless every body is a
+    sphere), and vy < 0 when the spin is zero and not varied (the contact point must approach
+    the flat, as ``impactlab.simulate`` requires). ``sampled``: the inputs of the study's
+    sample (their values are checked case by case). ValueError naming the dimension and the
+    offending values."""
+    grid = {a.name: a.values for a in axes}
+
+    def values(name: str) -> tuple[Any, ...]:
+        if name in grid:
+            return grid[name]
+        return (fixed[name],) if name in fixed else (get_input(name).default,)
+
+    def where(name: str) -> str:
+        return f"grid dimension {name!r}" if name in grid else f"input {name!r}"
+
+    bodies = {str(b) for b in values("body")}
+    angles = [float(v) for v in values("angle") if isinstance(v, float)]
+    if bodies & set(_ANGLED_BODIES):
+        rule = _rule_text("angle", ANGLE) + (" for a rod" if "sphere" in bodies else "")
+        _refuse(where("angle"), "angle", angles, [a for a in angles if not _inside(a, ANGLE)], rule)
+    spin_zero = "spin" not in (*grid, *sampled) and float(fixed.get("spin", 0.0)) == 0.0
+    if spin_zero and "vy" in (*grid, *fixed):
+        vy = [float(v) for v in values("vy")]
+        rule = "the contact point must approach the flat (vy < 0 m/s with spin = 0)"
+        _refuse(where("vy"), "vy", vy, [v for v in vy if not v < 0.0], rule)
+
+
+def _number(name: str, value: Any) -> Value:
+    """``value`` as a fixed or axis value of input ``name`` (SI float or a category string),
+    without the :data:`ALLOWED` interval."""
     spec = get_input(name)
     if spec.kind == "category":
         if not isinstance(value, str) or not value:
@@ -42,6 +165,15 @@ def check_value(name: str, value: Any) -> Value:
     x = float(value)
     if not math.isfinite(x):
         raise ValueError(f"input {name!r} must be finite, got {x!r}")
+    return x
+
+
+def check_value(name: str, value: Any) -> Value:
+    """A fixed value for input ``name`` (SI float or a category string), inside
+    :data:`ALLOWED`."""
+    x = _number(name, value)
+    if isinstance(x, float):
+        check_allowed(name, [x], f"input {name!r}")
     return x
 
 
@@ -57,12 +189,14 @@ class Axis:
         if self.name == SAMPLE_DIM:
             raise ValueError(f"{SAMPLE_DIM!r} is reserved")
         vals = (
-            tuple(check_value(self.name, v) for v in np.asarray(self.values).tolist())
+            tuple(_number(self.name, v) for v in np.asarray(self.values).tolist())
             if not isinstance(self.values, str)
-            else (check_value(self.name, self.values),)
+            else (_number(self.name, self.values),)
         )
         if not vals:
             raise ValueError(f"grid axis {self.name!r} has no values")
+        numbers = [v for v in vals if isinstance(v, float)]
+        check_allowed(self.name, numbers, f"grid dimension {self.name!r}")
         if len(set(vals)) != len(vals):
             raise ValueError(f"grid axis {self.name!r} has repeated values")
         object.__setattr__(self, "values", vals)

@@ -1,6 +1,7 @@
 """How a study and a finished sweep show themselves: a one-line ``repr`` and a notebook table
 that summarise each dimension as name, size, range and unit (never every value), and the
-sweep's throughput without the one-time compile.
+sweep's throughput without the one-time compile; the units of the plots' axes and the words for
+the slice of a study a figure shows.
 
 The first task of each worker includes loading (or compiling) the engine's compiled functions
 once; ``steady_throughput`` leaves those tasks out, so it measures the engine, not numba.
@@ -8,20 +9,26 @@ once; ``steady_throughput`` leaves those tasks out, so it measures the engine, n
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from typing import Any
 
-from impactlab._display import format_number, format_value
+import numpy as np
+
+from impactlab._display import display_unit, format_number, format_value
 from impactlab._html import axis_row, grid_html, value_range
 from impactlab.sweep.dimensions import SAMPLE_DIM
-from impactlab.sweep.inputs import get_input
+from impactlab.sweep.inputs import MATERIAL_OVERRIDES, get_input
 
 __all__ = [
     "dimension_rows",
+    "plot_unit",
+    "slice_note",
     "steady_throughput",
     "study_html",
     "study_repr",
     "sweep_result_html",
+    "value_text",
     "warm_up_s",
 ]
 
@@ -103,3 +110,40 @@ def sweep_result_html(result: Any) -> str:
     """A finished sweep as a notebook table: its run numbers, then its study."""
     run = grid_html("SweepResult", ("", ""), _rows(result))
     return run + study_html(result.study)
+
+
+# -- plots: units and the slice a figure shows -----------------------------------------------
+
+
+def plot_unit(name: str, units: str) -> tuple[float, str]:
+    """(scale, unit) of a variable in the display layer's units (``impactlab._display``; a
+    material override such as ``flat_E`` as its field ``E``); "1" for dimensionless."""
+    if name == "angle":
+        return 180.0 / math.pi, "deg"
+    field = next((side[name] for side in MATERIAL_OVERRIDES.values() if name in side), name)
+    d = display_unit(field, units)
+    return d.scale, "1" if d.unit == "-" else d.unit
+
+
+def value_text(ds: Any, dim: str, value: Any) -> str:
+    """``"vy = -1.41 m/s"``: a value of dimension ``dim`` in its display unit."""
+    if isinstance(value, str):
+        return f"{dim} = {value}"
+    scale, unit = plot_unit(dim, str(ds[dim].attrs.get("units", "")))
+    unit = "" if unit in ("1", "-") else unit
+    return f"{dim} = {format_number(float(value) * scale)} {unit}".rstrip()
+
+
+def slice_note(ds: Any, hidden: Sequence[str]) -> str:
+    """What a plot leaves out of the dimensions ``hidden`` (each at its first value), and how
+    to choose another slice: ``"shows only law = brake (first of 3 values); ..."``."""
+    shown = ", ".join(
+        f"{value_text(ds, d, ds[d].values[0])} (first of {ds.sizes[d]} values)" for d in hidden
+    )
+    d, last = hidden[0], ds[hidden[0]].values[-1]
+    example = last.item() if isinstance(last, np.generic) else last
+    return (
+        f"more dimensions than a figure shows: the plots show only {shown}; choose "
+        f"another slice with sel (SI values), e.g. impactlab.sweep.plot_sweep(ds, outdir, "
+        f"sel={{{d!r}: {example!r}}})"
+    )

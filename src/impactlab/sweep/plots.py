@@ -8,47 +8,49 @@
 
 A map shows two dimensions; every other dimension is sliced, and the title says where
 (``law = brake, vy = -1.41 m/s``). Without ``ax`` a study with a third dimension is drawn as
-facets, one panel per value of that dimension (at most ``MAX_FACETS``, evenly spaced); further
-dimensions take the value in ``sel``, else their first, and are named in the titles.
+facets, one panel per value of that dimension (at most ``MAX_FACETS``, evenly spaced), and one
+with a fourth as rows x columns of panels (at most ``MAX_FACETS_SIDE`` values each way).
+Further dimensions take the value in ``sel``, else their first: the figure's title and a
+:class:`SliceWarning` (one line) name the values shown and how to choose others (``sel``).
 
-Angles are shown in degrees; lengths in um, durations in ms (values stay SI in the Dataset).
+Values are shown in the display layer's units (``impactlab._display``: angles in deg, dent-scale
+lengths in um, other lengths in mm, durations in ms); they stay SI in the Dataset.
 """
 
 from __future__ import annotations
 
-import math
+import warnings
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from impactlab._display import format_number
 from impactlab._mpl import pyplot
 from impactlab.analytic import critical_friction
 from impactlab.bodies import PAPER_ROD, Rod
 from impactlab.sweep.dimensions import SAMPLE_DIM
+from impactlab.sweep.display import plot_unit, slice_note, value_text
 from impactlab.sweep.inputs import OUTPUT_ALIASES, output_spec
 
-#: display scale and unit per SI unit
-_DISPLAY = {"m": (1e6, "um"), "s": (1e3, "ms"), "rad": (180.0 / math.pi, "deg")}
 _VELOCITY_DIMS = ("vy", "vx", "spin")
-
-
-def _display(name: str, units: str) -> tuple[float, str]:
-    if name in ("angle",):
-        return 180.0 / math.pi, "deg"
-    return _DISPLAY.get(units, (1.0, units))
 
 
 def _label(ds: Any, name: str) -> tuple[float, str]:
     units = str(ds[name].attrs.get("units", "")) if name in ds.variables else ""
-    scale, unit = _display(name, units)
+    scale, unit = plot_unit(name, units)
     return scale, f"{name} [{unit}]" if unit and unit != "1" else name
 
 
 #: The most panels a faceted map draws (a longer dimension shows evenly spaced values).
 MAX_FACETS = 16
+#: The most values per dimension of a map faceted on two dimensions (rows x columns).
+MAX_FACETS_SIDE = 4
+
+
+class SliceWarning(UserWarning):
+    """A plot shows one slice of dimensions it cannot draw (a fifth dimension and beyond): the
+    message names the values shown and how to choose others (``sel``)."""
 
 
 def _select(ds: Any, keep: Sequence[str], sel: Mapping[str, Any] | None) -> Any:
@@ -75,14 +77,8 @@ def _where(full: Any, sub: Any) -> str:
         if d in sub.dims or full.sizes[d] < 2:
             continue
         v = sub[d].values if d in sub.coords else None
-        if v is None or np.ndim(v):
-            continue
-        if isinstance(v.item(), str):
-            parts.append(f"{d} = {v.item()}")
-            continue
-        scale, unit = _display(d, str(full[d].attrs.get("units", "")))
-        unit = "" if unit in ("1", "-") else unit
-        parts.append(f"{d} = {format_number(float(v) * scale)} {unit}".rstrip())
+        if v is not None and not np.ndim(v):
+            parts.append(value_text(full, d, v.item()))
     return ", ".join(parts)
 
 
@@ -91,37 +87,66 @@ def _title(ax: Any, what: str, full: Any, sub: Any) -> None:
     ax.set_title(f"{what}\n{where}" if where else what, fontsize="medium")
 
 
-def _facet_dim(ds: Any, keep: Sequence[str], sel: Mapping[str, Any] | None) -> str | None:
-    """The first dimension beside ``keep`` with more than one value that ``sel`` leaves free."""
-    return next(
-        (d for d in ds.dims if d not in keep and d not in (sel or {}) and ds.sizes[d] > 1),
-        None,
-    )
+def _free_dims(ds: Any, keep: Sequence[str], sel: Mapping[str, Any] | None) -> list[str]:
+    """The dimensions beside ``keep`` with more than one value that ``sel`` leaves free."""
+    return [d for d in ds.dims if d not in keep and d not in (sel or {}) and ds.sizes[d] > 1]
+
+
+def _picks(n: int, most: int) -> np.ndarray:
+    """Up to ``most`` evenly spaced indices of ``n`` values (first and last included)."""
+    return np.unique(np.linspace(0, n - 1, min(n, most)).round().astype(int))
 
 
 def _facets(ds: Any, keep: Sequence[str], sel: Mapping[str, Any] | None, draw: Any, ax: Any) -> Any:
     """``draw(sel, ax)`` once (given ``ax``, or no free third dimension), else once per value of
-    the free dimension on a grid of panels; returns the axes (an array for facets)."""
+    the free dimension on a grid of panels, or per pair of values of two free dimensions on
+    rows x columns; returns the axes (an array for facets). Free dimensions beyond two take
+    their first value, named in the figure's title and in a :class:`SliceWarning`."""
     plt = pyplot()
-    dim = _facet_dim(ds, keep, sel)
-    if ax is not None or dim is None:
+    free = _free_dims(ds, keep, sel)
+    if ax is not None or not free:
         if ax is None:
             _, ax = plt.subplots(figsize=(6.4, 4.8))
         draw(dict(sel or {}), ax)
         return ax
+    dim, row_dim, hidden = free[0], (free[1] if len(free) > 1 else None), free[2:]
+    base = {**dict(sel or {}), **{d: ds[d].values[0] for d in hidden}}
     n = int(ds.sizes[dim])
-    picks = np.unique(np.linspace(0, n - 1, min(n, MAX_FACETS)).round().astype(int))
-    cols = min(len(picks), 4)
-    rows = -(-len(picks) // cols)
+    if row_dim is None:
+        picks = _picks(n, MAX_FACETS)
+        cols = min(len(picks), 4)
+        rows = -(-len(picks) // cols)
+        cells = [(a, {dim: ds[dim].values[i]}) for a, i in enumerate(picks)]
+        row_picks = picks[:0]
+    else:
+        picks, row_picks = _picks(n, MAX_FACETS_SIDE), _picks(ds.sizes[row_dim], MAX_FACETS_SIDE)
+        cols, rows = len(picks), len(row_picks)
+        cells = [
+            (r * cols + c, {dim: ds[dim].values[i], row_dim: ds[row_dim].values[j]})
+            for r, j in enumerate(row_picks)
+            for c, i in enumerate(picks)
+        ]
     fig, axes = plt.subplots(
         rows, cols, figsize=(4.2 * cols, 3.4 * rows), squeeze=False, constrained_layout=True
     )
-    for i, a in zip(picks, axes.flat, strict=False):
-        draw({**dict(sel or {}), dim: ds[dim].values[i]}, a)
-    for a in axes.flat[len(picks) :]:
+    for k, pick in cells:
+        draw({**base, **pick}, axes.flat[k])
+    for a in axes.flat[len(cells) :]:
         a.set_visible(False)
-    if len(picks) < n:
-        fig.suptitle(f"{len(picks)} of the {n} values of {dim}", fontsize="small")
+    lines = [f"columns: {dim}, rows: {row_dim}" if row_dim else f"panels: {dim}"]
+    lines += [
+        f"{len(p)} of the {ds.sizes[d]} values of {d}"
+        for d, p in ((dim, picks), (row_dim, row_picks))
+        if d is not None and len(p) < ds.sizes[d]
+    ]
+    if hidden:
+        note = slice_note(ds, hidden)
+        lines.append(
+            f"fixed: {', '.join(value_text(ds, d, ds[d].values[0]) for d in hidden)} "
+            f"(choose with sel={{{hidden[0]!r}: ...}})"
+        )
+        warnings.warn(note, SliceWarning, stacklevel=3)
+    fig.suptitle("; ".join(lines), fontsize="small")
     return axes
 
 
@@ -255,7 +280,7 @@ def _output_panel(
     vals = np.asarray(sub[out].values, dtype=float)
     vals = np.where(np.asarray(sub["status"].values) == 0, vals, np.nan)
     unit = output_spec(out).unit
-    vs, vunit = _display(out, unit)
+    vs, vunit = plot_unit(out, unit)
     vlabel = f"{out} [{vunit}]" if vunit and vunit != "1" else out
     xs, xl = _label(ds, x)
     xv = np.asarray(sub[x].values, dtype=float) * xs
@@ -285,7 +310,7 @@ def plot_histograms(ds: Any, outputs: Sequence[str]) -> Any:
     for ax, o in zip(axes[0], outs, strict=False):
         v = np.asarray(ds[o].values, dtype=float).ravel()
         v = v[(st == 0) & np.isfinite(v)]
-        s, unit = _display(o, output_spec(o).unit)
+        s, unit = plot_unit(o, output_spec(o).unit)
         ax.hist(v * s, bins=50)
         ax.set_xlabel(f"{o} [{unit}]" if unit and unit != "1" else o)
     fig.tight_layout()
@@ -302,11 +327,27 @@ def plot_sweep(
     """Write every plot the sweep's dimensions allow into ``outdir`` (PNG); returns the files.
 
     angle x mu with 'regime' -> regime map (with mu_c); angle x a velocity -> output maps;
-    angle alone -> output lines; a 'sample' dimension -> histograms. A further dimension is
-    drawn as facets; maps of a grid+sample study show the sample in ``sel`` (default: the first).
+    angle alone -> output lines; a 'sample' dimension -> histograms. Two further dimensions
+    are drawn as facets; maps of a grid+sample study show the sample in ``sel`` (default: the
+    first). Dimensions beyond those take the value in ``sel``, else their first: one
+    :class:`SliceWarning` per distinct slice says which.
     """
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", SliceWarning)
+        files = _plot_all(ds, Path(outdir), outputs, sel)
+    for note in dict.fromkeys(str(w.message) for w in caught if w.category is SliceWarning):
+        warnings.warn(note, SliceWarning, stacklevel=2)
+    for w in caught:
+        if w.category is not SliceWarning:
+            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+    return files
+
+
+def _plot_all(
+    ds: Any, out: Path, outputs: Sequence[str], sel: Mapping[str, Any] | None
+) -> list[Path]:
+    """The plots of :func:`plot_sweep`."""
     plt = pyplot()
-    out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
     files: list[Path] = []
     dims = list(ds.dims)

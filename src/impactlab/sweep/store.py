@@ -43,10 +43,12 @@ from impactlab.sweep.storebuild import META, StoreMeta, build_store
 from impactlab.sweep.study import Study
 
 __all__ = [
+    "CorruptStoreError",
     "DamagedStoreError",
     "StoreMeta",
     "StudyMismatchError",
     "SweepStore",
+    "check_metadata",
     "export_netcdf",
     "open_sweep",
 ]
@@ -54,6 +56,48 @@ __all__ = [
 
 class StudyMismatchError(ValueError):
     """The store was written by a different study."""
+
+
+class CorruptStoreError(ValueError):
+    """A store's Zarr metadata (a ``zarr.json``) cannot be read: junk, cut short, not JSON or
+    not Zarr's. The message names the store, the file and what is wrong with it."""
+
+
+def _node_problem(f: Path) -> str | None:
+    """What is wrong with the Zarr metadata file ``f``, or None when Zarr reads it."""
+    try:
+        meta = json.loads(f.read_bytes().decode("utf-8"))
+    except OSError as exc:
+        return f"cannot be read ({exc.strerror or exc})"
+    except UnicodeDecodeError:
+        return "is not text (binary junk)"
+    except json.JSONDecodeError as exc:
+        return f"is not valid JSON ({exc.msg} at line {exc.lineno}, column {exc.colno})"
+    if not isinstance(meta, dict):
+        return f"is not a JSON object (it holds a {type(meta).__name__})"
+    if meta.get("zarr_format") != 3 or meta.get("node_type") not in ("group", "array"):
+        return "is not Zarr v3 metadata (zarr_format 3, node_type 'group' or 'array')"
+    try:  # one node at a time: a failure names its file, and no read is left pending
+        opener = zarr.open_array if meta["node_type"] == "array" else zarr.open_group
+        opener(str(f.parent), mode="r")
+    except Exception as exc:  # zarr raises many unrelated types for malformed metadata
+        return f"is not valid Zarr metadata ({type(exc).__name__}: {exc})"
+    return None
+
+
+def check_metadata(path: str | Path) -> None:
+    """CorruptStoreError unless the root and every sub-folder (an array, ``.sweep``) of the
+    store at ``path`` have a ``zarr.json`` that reads as Zarr v3 metadata (the chunks' data is
+    checked by ``SweepStore.verify``)."""
+    root = Path(path)
+    for node in [root, *sorted(d for d in root.iterdir() if d.is_dir())]:
+        f = node / "zarr.json"
+        why = _node_problem(f) if f.exists() else "is missing"
+        if why is not None:
+            raise CorruptStoreError(
+                f"sweep store {str(root)!r} is damaged: {f.relative_to(root).as_posix()} {why}; "
+                f"run the study into it again with --restart to start it fresh"
+            )
 
 
 class SweepStore:
@@ -112,6 +156,7 @@ class SweepStore:
             (self._done_dir / str(k)).unlink(missing_ok=True)
 
     def attrs(self) -> dict[str, Any]:
+        check_metadata(self.path)
         return dict(zarr.open_group(str(self.path), mode="r").attrs)
 
     def study_hash(self) -> str | None:
@@ -228,7 +273,13 @@ class SweepStore:
             self.remove()  # cut short while being created: nothing to keep
         if self.exists():
             self.acquire()
-            old = self.study_hash()
+            try:
+                old = self.study_hash()
+            except CorruptStoreError:
+                if not restart:
+                    self.release()
+                    raise
+                old = None  # damaged metadata: nothing to keep
             if old == meta.study_hash and not restart:
                 self.clean_partial()
                 return self.done_chunks()
@@ -308,11 +359,17 @@ def open_sweep(path: str | Path, *, verify: bool = True) -> xr.Dataset:
     p = Path(path)
     if not (p / "zarr.json").is_file():
         raise ValueError(f"{str(p)!r} is not a sweep store (no zarr.json)")
+    check_metadata(p)
     if verify:
         damaged = SweepStore(p).verify()
         if damaged:
             raise damaged_error(p, damaged)
-    ds = xr.open_zarr(str(p), consolidated=False)
+    try:
+        ds = xr.open_zarr(str(p), consolidated=False)
+    except Exception as exc:  # what check_metadata cannot see; named, not a deep traceback
+        raise CorruptStoreError(
+            f"cannot open sweep store {str(p)!r}: {type(exc).__name__}: {exc}"
+        ) from exc
     order = [*ds.attrs.get("outputs", []), "status"]
     names = [v for v in order if v in ds.data_vars] + [v for v in ds.data_vars if v not in order]
     return ds[names]

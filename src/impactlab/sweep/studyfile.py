@@ -18,7 +18,7 @@ from typing import Any
 import numpy as np
 import pint
 
-from impactlab.sweep.dimensions import Axis, Sample, Value
+from impactlab.sweep.dimensions import Axis, Sample, Value, check_kinematics
 from impactlab.sweep.distributions import (
     Distribution,
     distribution_from_canonical,
@@ -60,9 +60,17 @@ def read_study_file(path: str | Path) -> tuple[dict[str, Any], str]:
     if not p.is_file():
         raise ValueError(f"study file {str(p)!r} does not exist")
     try:
-        with p.open("rb") as fh:
-            data = tomllib.load(fh)
-    except tomllib.TOMLDecodeError as exc:
+        text = p.read_bytes().decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise ValueError(
+            f"study file {str(p)!r} is not a text file (TOML is UTF-8 text; byte "
+            f"{exc.start} is 0x{exc.object[exc.start]:02x}): give the study file (TOML)"
+        ) from None
+    except OSError as exc:
+        raise ValueError(f"cannot read study file {str(p)!r}: {exc.strerror or exc}") from None
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:  # its text ends with "(at line L, column C)"
         raise ValueError(f"study file {str(p)!r} is not valid TOML: {exc}") from None
     data = dict(data)
     study_tab = dict(data.get("study", {})) if isinstance(data.get("study"), dict) else {}
@@ -116,6 +124,8 @@ def study_arguments(
         "max_cases": limit,
     }
     check_flexible_study(args)  # body = "flexible_rod" (impactlab.sweep.flexible)
+    sample = args["sample"]
+    check_kinematics(args["fixed"], args["grid"], () if sample is None else tuple(sample.inputs))
     return args
 
 

@@ -1,0 +1,61 @@
+"""``print(body)`` and ``print(material)``: one readable line in display units (wave 4), while
+``repr`` stays the dataclass's exact SI repr (equality, hashing, pickling unchanged)."""
+
+from __future__ import annotations
+
+import pickle
+
+import pytest
+
+from impactlab.bodies import FlexibleRod, Rod, Sphere
+from impactlab.materials import AISI_201, AISI_1010, ContactPair, Material
+
+
+def test_rod_str_in_display_units() -> None:
+    text = str(Rod.paper())
+    assert text == (
+        "Rod: length = 304.8 mm, tip_radius = 8.8 mm, mass = 0.4607 kg, "
+        "inertia = 0.0035667 kg m^2, material = AISI 201 stainless steel (paper's rod)"
+    )
+
+
+def test_sphere_str_shows_derived_inertia() -> None:
+    text = str(Sphere(0.005, mass=0.004))
+    assert text.startswith("Sphere: radius = 5 mm, mass = 0.004 kg, density = ")
+    assert "inertia = 4e-8 kg m^2" in text and text.endswith("material = " + AISI_201.name)
+
+
+def test_flexible_rod_str_leaves_out_unset_fields() -> None:
+    text = str(FlexibleRod.paper())
+    assert text.startswith("FlexibleRod: length = 304.8 mm, tip_radius = 8.8 mm")
+    assert "n_bending = 12" in text and "diameter" not in text and "\n" not in text
+
+
+def test_material_and_pair_str() -> None:
+    assert str(AISI_1010) == (
+        "Material AISI 1010 low-carbon steel (paper's flat): E = 200 GPa, nu = 0.3, "
+        "yield_strength = 305 MPa, brinell_hardness = 105 kgf/mm^2, meyer_index = 2.2, "
+        "density = 7870 kg/m^3"
+    )
+    bare = Material("x", 70e9, 0.33, 2.5e8)  # no Brinell hardness: left out, not "nan"
+    assert "brinell" not in str(bare) and "nan" not in str(bare)
+    text = str(ContactPair(AISI_201, AISI_1010))
+    assert text.startswith("ContactPair: body = AISI 201") and "E_star = 109.89 GPa" in text
+    assert text.endswith("yield_strength = 305 MPa")
+
+
+_NAMES = {"Rod": Rod, "Material": Material, "ContactPair": ContactPair, "FlexibleRod": FlexibleRod}
+
+
+@pytest.mark.parametrize(
+    "obj",
+    [Rod.paper(), Sphere(0.01), AISI_201, ContactPair(AISI_201, AISI_1010), FlexibleRod.paper()],
+)
+def test_repr_stays_exact(obj: object) -> None:
+    text = repr(obj)
+    assert text.startswith(f"{type(obj).__name__}(") and text != str(obj)
+    assert pickle.loads(pickle.dumps(obj)) == obj
+    assert hash(pickle.loads(pickle.dumps(obj))) == hash(obj)
+    if not isinstance(obj, Sphere):  # a Sphere's repr holds mass and density (derived)
+        again = eval(text, dict(_NAMES))  # the repr rebuilds it
+        assert again == obj and hash(again) == hash(obj)
