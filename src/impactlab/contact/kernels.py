@@ -54,6 +54,9 @@ import math
 import numpy as np
 from numba import njit
 
+from impactlab.contact.table import HEADER as TABLE_HEADER  # noqa: F401  (re-exported for the core)
+from impactlab.contact.table import TABLE_MAGIC, table_force  # noqa: F401
+
 HERTZ = 0
 GHAEDNIA = 1
 JACKSON_GREEN = 2
@@ -288,9 +291,14 @@ def _thornton_loading(p: np.ndarray, delta: float) -> float:
 
 @njit(cache=True)
 def loading_force(law: int, p: np.ndarray, delta: float) -> float:
-    """Force on the loading curve of ``law`` at interference ``delta`` [N]."""
+    """Force on the loading curve of ``law`` at interference ``delta`` [N] (from the table
+    appended to ``p`` where there is one and it covers ``delta``: ``contact.table``)."""
     if delta <= 0.0:
         return 0.0
+    if delta >= p[P_DSW]:
+        f = table_force(p, NPARAM, delta)
+        if f >= 0.0:
+            return f
     if law == HERTZ:
         return hertz_force(p[P_ESTAR], p[P_R], delta)
     if law == GHAEDNIA or law == JACKSON_GREEN:

@@ -15,6 +15,7 @@ from impactlab._validation import check_array
 from impactlab.bodies import NB
 from impactlab.contact.kernels import N_LAWS, NPARAM
 from impactlab.contact.ranges import extrapolation_flags
+from impactlab.contact.tabulate import has_table, with_table
 from impactlab.dynamics.checks import check_rtol, gravity_value
 from impactlab.dynamics.core.batch import impact_batch
 from impactlab.dynamics.core.layout import N_OUT, OUTPUT_FIELDS
@@ -47,16 +48,21 @@ def run_arrays(
     constant_angle: bool = False,
     rtol: float | None = None,
     diagnostics: bool = False,
+    tabulate: bool = True,
 ) -> tuple[np.ndarray, np.ndarray]:
     """Run N impacts in parallel.
 
     law_id : contact-law id (``contact.kernels``); friction_id : ``FRICTION_IDS[name]``.
-    law_params : (N, NPARAM) or (NPARAM,) (``ContactModel.params``).
+    law_params : (N, NPARAM) or (NPARAM,) (``ContactModel.params``), or one law's
+    ``kernel_params(model)`` (with its loading-curve table; shared parameters get one anyway).
     body_params : (N, NB) or (NB,) (``Rod/Sphere.to_params(flat)``, which includes G*).
     initial : (N, 4) = [angle [rad], vx, vy [m/s], spin [rad/s]]; mu : (N,) or scalar.
     gravity : True (9.80665), False or a value [m/s^2]; constant_angle : freeze the lever arms;
     rtol : relative tolerance (None: the engine default); diagnostics : also compute the
-    diagnostic outputs (energy_rise, friction_excess; NaN otherwise).
+    diagnostic outputs (energy_rise, friction_excess; NaN otherwise); tabulate : evaluate the
+    law's loading curve from its table (``contact.table``, within 1e-13 of the closed form)
+    where one parameter vector is shared by every case; per-case parameters (N, NPARAM) always
+    use the closed forms, as ``tabulate=False`` does for shared ones.
 
     Returns ``(out, status)``: out (N, len(OUTPUT_FIELDS)) float64, status (N,) int32
     (0 = ok; ``STATUS_MESSAGES``). The ``regime`` column holds codes (``REGIME_NAMES``); the
@@ -92,7 +98,14 @@ def run_arrays(
     if mu_a.shape != (n,):
         raise ValueError(f"mu must be a scalar or have shape ({n},), got {mu_a.shape}")
     mu_a = np.require(mu_a, np.float64, ["C", "W"])
-    lp = _rows("law_params", law_params, NPARAM, n)
+    if has_table(law_params):  # kernel_params(model): the parameters with their table
+        lp = np.require(law_params, np.float64, ["C", "W"])[None, :]
+        if not tabulate:
+            lp = np.ascontiguousarray(lp[:, :NPARAM])
+    else:
+        lp = _rows("law_params", law_params, NPARAM, n)
+        if lp.shape[0] == 1 and tabulate:  # one law for all: its loading curve as a table
+            lp = shared_table(lid, lp[0])[None, :]
     bp = _rows("body_params", body_params, NB, n)
     g = gravity_value(gravity)
     r = check_rtol(rtol)
@@ -107,6 +120,20 @@ def run_arrays(
 
 
 _DMAX, _FLAGS = OUTPUT_FIELDS.index("delta_max"), OUTPUT_FIELDS.index("flags")
+#: (law id, parameter bytes) -> the parameters with their table (the last few, for repeated
+#: batches of one law: a sweep's chunks, a benchmark's repeats).
+_TABLES: dict[tuple[int, bytes], np.ndarray] = {}
+
+
+def shared_table(law_id: int, p: np.ndarray) -> np.ndarray:
+    """``p`` with its loading-curve table (``contact.tabulate.with_table``), cached."""
+    key = (law_id, np.ascontiguousarray(p, dtype=np.float64).tobytes())
+    hit = _TABLES.get(key)
+    if hit is None:
+        if len(_TABLES) >= 32:
+            _TABLES.clear()
+        hit = _TABLES[key] = with_table(law_id, p)
+    return hit
 
 
 def _mark_extrapolated(law_id: int, law_params: np.ndarray, out: np.ndarray) -> None:

@@ -4,7 +4,8 @@
 ``simulate_batch``, the sweep) build a ContactModel; it is cached by value (laws, materials and
 parameters are immutable and hashable). ``kernel_params`` and ``body_params`` give the
 float64 vectors the compiled core reads, cached per model object and per (body, flat) value.
-``references_used`` lists the sources a result records.
+``references_used`` lists the sources a result records; ``engine_setup`` gathers all of these
+for ``simulate``'s fast path, once per (body, flat, law name, friction name).
 """
 
 from __future__ import annotations
@@ -18,7 +19,8 @@ import numpy as np
 
 from impactlab.bodies import Rod, Sphere
 from impactlab.contact import ContactModel, get_law
-from impactlab.friction import FrictionModel
+from impactlab.contact.tabulate import with_table
+from impactlab.friction import FrictionKind, FrictionModel, get_friction
 from impactlab.materials import ContactPair, Material
 from impactlab.references import Reference, cite
 
@@ -100,11 +102,12 @@ _LAST_MODELS: dict[tuple[str, int, int], tuple[Any, Any, ContactModel]] = {}
 
 def kernel_params(model: ContactModel) -> np.ndarray:
     """A writable C-contiguous copy of ``model.params`` for the compiled engine (one numba
-    specialisation for every caller: read-only arrays would compile a second one). Cached per
+    specialisation for every caller: read-only arrays would compile a second one), with the
+    table of the law's loading curve appended (``contact.tabulate.with_table``). Cached per
     model object, for as long as the model lives."""
     p = _PARAMS.get(model)
     if p is None:
-        p = np.require(np.array(model.params, dtype=np.float64), np.float64, ["C", "W"])
+        p = with_table(model.law_id, np.asarray(model.params, dtype=np.float64))
         _PARAMS[model] = p
     return p
 
@@ -164,11 +167,57 @@ def body_params(body: Rod | Sphere, flat: Material) -> np.ndarray:
     return np.require(body.to_params(flat), np.float64, ["C", "W"])
 
 
+#: What ``simulate``'s fast path needs of one (body, flat, law name, friction name), built once:
+#: (body, flat, model, friction model, kernel_params, body_params, references with mu = 0,
+#: references with mu > 0); None for a combination the fast path leaves to the full checks.
+EngineSetup = tuple[
+    Any, Any, ContactModel, FrictionModel, np.ndarray, np.ndarray, tuple[Reference, ...],
+    tuple[Reference, ...],
+]  # fmt: skip
+
+#: (id(body), id(flat), law, friction) -> (body, flat, setup) of ``engine_setup`` (the entry
+#: holds the body and the flat, so an id is never reused while its entry lives).
+_SETUPS: dict[tuple[int, int, str, str], tuple[Any, Any, EngineSetup | None]] = {}
+
+
+def engine_setup(body: Rod | Sphere, flat: Material, law: str, friction: str) -> EngineSetup | None:
+    """The cached setup of an impact of ``body`` (a Rod or a Sphere) on ``flat`` with the
+    registered law and friction model named ``law`` and ``friction`` (see ``EngineSetup``).
+
+    None for partial-slip friction (another engine), a ``flat`` that is not a Material and
+    when building the setup fails (an unknown name, ...): the caller then takes the full path,
+    whose checks raise the error.
+    Bodies, flats, models and friction models are immutable, so a setup never goes stale.
+    """
+    hit = _SETUPS.get((id(body), id(flat), law, friction))
+    if hit is not None and hit[0] is body and hit[1] is flat:
+        return hit[2]
+    if not isinstance(flat, Material):
+        return None
+    try:
+        model = contact_model(body, flat, law)
+        fric = get_friction(friction)
+    except Exception:  # not cached: the full path raises it again
+        return None
+    setup: EngineSetup | None = None
+    if fric.kind is not FrictionKind.PARTIAL_SLIP:
+        setup = (
+            body, flat, model, fric, kernel_params(model), body_params(body, flat),
+            references_used(model, fric, False), references_used(model, fric, True),
+        )  # fmt: skip
+    if len(_SETUPS) >= 64:
+        _SETUPS.clear()
+    _SETUPS[(id(body), id(flat), law, friction)] = (body, flat, setup)
+    return setup
+
+
 __all__ = [
     "INTEGRATOR_REFERENCES",
+    "EngineSetup",
     "body_params",
     "build_contact_model",
     "contact_model",
+    "engine_setup",
     "kernel_params",
     "references_used",
 ]

@@ -1,31 +1,76 @@
 """From a compiled impact's output row to an ``ImpactResult``, and the ValueError of a failed
-impact: one place for ``simulate`` (the rigid core) and the partial-slip path (slipcore), which
-write the same output row (``impactlab.schema.OUTPUT_FIELDS``) and status codes."""
+impact: one place for ``simulate`` (the rigid core, its fast path included) and the partial-slip
+path (slipcore), which write the same output row (``impactlab.schema.OUTPUT_FIELDS``) and status
+codes.
+
+The result is assembled without the dataclass ``__init__`` (``results.assemble_result``): the
+flags are completed here exactly as ``ImpactResult.__post_init__`` completes them, with the
+law's reference interference and range looked up once per contact model.
+"""
 
 from __future__ import annotations
 
 import math
-from typing import Any
+from operator import itemgetter
 
 import numpy as np
 
 from impactlab.bodies import Rod
 from impactlab.contact import ContactModel
+from impactlab.contact.ranges import critical_interference, extrapolation, extrapolation_flags
 from impactlab.dynamics.checks import ImpactInputs
 from impactlab.dynamics.core import layout as L
 from impactlab.dynamics.core import status as S
 from impactlab.dynamics.models import references_used
-from impactlab.dynamics.results import History, ImpactResult
+from impactlab.dynamics.results import History, ImpactResult, assemble_result
+from impactlab.flags import FLAG_LAW_EXTRAPOLATED, ResultFlag
+from impactlab.friction import FrictionModel
+from impactlab.references import Reference
 
-__all__ = ["impact_result", "status_error"]
+__all__ = ["engine_result", "impact_result", "status_error"]
 
-#: Engine outputs that are ImpactResult fields of the same name and type (float), with their
-#: column in the output row.
-_SCALAR_COLUMNS = tuple(
-    (n, L.O[n])
-    for n in L.OUTPUT_FIELDS
-    if n in ImpactResult.__dataclass_fields__ and n not in ("regime", "n_steps")
-)
+#: The output-row columns ``engine_result`` reads, in the order it unpacks them.
+_ROW = itemgetter(
+    L.O_E, L.O_EE, L.O_VX, L.O_VY, L.O_SPIN, L.O_DMAX, L.O_DP, L.O_SL, L.O_CT, L.O_T, L.O_FMEAN,
+    L.O_FMAX, L.O_PN, L.O_PT, L.O_ED, L.O_STICK, L.O_REG, L.O_VNIN, L.O_VTIN, L.O_VNOUT,
+    L.O_VTOUT, L.O_ANG, L.O_TMAX, L.O_NST, L.O_FLAGS,
+)  # fmt: skip
+
+#: id(model) -> (model, delta_ref, delta_ratio_max) of ``_law_flag``, or (model, None, None)
+#: where ``contact.ranges.extrapolation_flags`` itself decides (unknown law, delta_ref = 0).
+_RANGES: dict[int, tuple[ContactModel, float | None, float | None]] = {}
+#: int -> ResultFlag (the flag values an impact can take).
+_FLAGS: dict[int, ResultFlag] = {}
+
+
+def _law_flag(model: ContactModel, delta_max: float) -> int:
+    """``contact.ranges.extrapolation_flags(model.law_id, model.params, delta_max)`` for a float
+    ``delta_max``, with delta_ref and the range's ratio looked up once per model (the same
+    float64 division and comparison)."""
+    hit = _RANGES.get(id(model))
+    if hit is None or hit[0] is not model:
+        ref = ratio_max = None
+        law_id, params = model.law_id, model.params
+        at_zero, limit = extrapolation(law_id, params, 0.0)  # NaN: unknown law or delta_ref 0
+        if not math.isnan(at_zero):
+            r = critical_interference(law_id, params)
+            if type(r) is float and r != 0.0:
+                ref, ratio_max = r, limit
+        if len(_RANGES) >= 256:
+            _RANGES.clear()
+        hit = _RANGES[id(model)] = (model, ref, ratio_max)
+    _, ref, ratio_max = hit
+    if ref is None or ratio_max is None:
+        return int(extrapolation_flags(model.law_id, model.params, delta_max))
+    return FLAG_LAW_EXTRAPOLATED if delta_max / ref > ratio_max else 0
+
+
+def _result_flags(value: int) -> ResultFlag:
+    """``ResultFlag(value)``, one object per value."""
+    flag = _FLAGS.get(value)
+    if flag is None:
+        flag = _FLAGS[value] = ResultFlag(value)
+    return flag
 
 
 def status_error(status: int, model: ContactModel, prefix: str = "") -> ValueError:
@@ -45,24 +90,75 @@ def status_error(status: int, model: ContactModel, prefix: str = "") -> ValueErr
     return ValueError(prefix + text)
 
 
+def engine_result(
+    out: np.ndarray,
+    history: np.ndarray | None,
+    model: ContactModel,
+    friction: FrictionModel,
+    references: tuple[Reference, ...],
+    mu: float,
+    angle: float,
+    velocity: tuple[float, float],
+    spin: float,
+) -> ImpactResult:
+    """The ``ImpactResult`` of the output row ``out`` and the history rows (None: no history
+    kept) of an impact with ``model`` and ``friction`` (``references``: the sources used), from
+    the checked inputs mu, angle [rad] (NaN for a sphere), velocity [m/s] and spin [rad/s]."""
+    (e, e_energy, vx, vy, spin_out, delta_max, delta_p, sliding_length, contact_travel,
+     duration, mean_force, max_force, normal_impulse, tangential_impulse, energy_dissipated,
+     stick_time, regime, vn_in, vt_in, vn_out, vt_out, angle_out, t_max, n_steps,
+     flags) = _ROW(out.tolist())  # fmt: skip
+    return assemble_result(
+        {  # every ImpactResult field, in field order
+            "e": e,
+            "e_energy": e_energy,
+            "velocity_out": (vx, vy),
+            "spin_out": spin_out,
+            "delta_max": delta_max,
+            "delta_p": delta_p,
+            "sliding_length": sliding_length,
+            "contact_travel": contact_travel,
+            "duration": duration,
+            "mean_force": mean_force,
+            "max_force": max_force,
+            "normal_impulse": normal_impulse,
+            "tangential_impulse": tangential_impulse,
+            "energy_dissipated": energy_dissipated,
+            "stick_time": stick_time,
+            "regime": S.REGIME_NAMES[int(regime)],
+            "law": model.name,
+            "friction": friction.name,
+            "mu": mu,
+            "angle": angle,
+            "velocity_in": velocity,
+            "spin_in": spin,
+            "vn_in": vn_in,
+            "vt_in": vt_in,
+            "vn_out": vn_out,
+            "vt_out": vt_out,
+            "angle_out": angle_out,
+            "t_max": t_max,
+            "n_steps": int(n_steps),
+            "flags": _result_flags(int(flags) | _law_flag(model, delta_max)),
+            "history": None if history is None else History(history),
+            "references": references,
+            "_law_id": model.law_id,
+            "_law_params": model.params,
+        }
+    )
+
+
 def impact_result(x: ImpactInputs, out: np.ndarray, history: np.ndarray | None) -> ImpactResult:
     """The ``ImpactResult`` of the checked inputs ``x`` from the output row ``out`` and the
     history rows (None: no history kept)."""
-    o = out.tolist()
-    scalars: dict[str, Any] = {name: o[j] for name, j in _SCALAR_COLUMNS}
-    return ImpactResult(
-        **scalars,
-        velocity_out=(o[L.O_VX], o[L.O_VY]),
-        regime=S.REGIME_NAMES[int(o[L.O_REG])],
-        n_steps=int(o[L.O_NST]),
-        law=x.model.name,
-        friction=x.friction.name,
-        mu=x.mu,
-        angle=x.angle if isinstance(x.body, Rod) else math.nan,
-        velocity_in=x.velocity,
-        spin_in=x.spin,
-        history=History(history) if history is not None else None,
-        references=references_used(x.model, x.friction, x.mu > 0.0),
-        _law_id=x.model.law_id,
-        _law_params=x.model.params,
+    return engine_result(
+        out,
+        history,
+        x.model,
+        x.friction,
+        references_used(x.model, x.friction, x.mu > 0.0),
+        x.mu,
+        x.angle if isinstance(x.body, Rod) else math.nan,
+        x.velocity,
+        x.spin,
     )

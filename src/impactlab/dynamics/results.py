@@ -287,6 +287,15 @@ class ImpactResult:
         return DentMap(*surface)
 
 
+def assemble_result(values: dict[str, Any]) -> ImpactResult:
+    """``ImpactResult(**values)`` without the generated ``__init__`` (``dynamics.outcome``):
+    ``values`` holds every field in field order, ``flags`` the ``ResultFlag`` that
+    ``__post_init__`` would make (the engine's bits and LAW_EXTRAPOLATED)."""
+    result = object.__new__(ImpactResult)
+    result.__dict__.update(values)
+    return result
+
+
 @dataclass(frozen=True, eq=False)
 class BatchResult:
     """Results of ``simulate_batch``: ``out`` (N, len(OUTPUT_FIELDS)) and ``status`` (N,).

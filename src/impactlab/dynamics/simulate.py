@@ -3,7 +3,10 @@
 The Python layer only validates the input (``impactlab.dynamics.checks``), looks up the cached
 compiled representations of the contact law and the body (``impactlab.dynamics.models``) and
 wraps the engine's output; the impact itself runs in the compiled core
-(``impactlab.dynamics.core``).
+(``impactlab.dynamics.core``). Plain inputs (numbers in SI, bools, registered law and friction
+names) take a fast path, ``_fast``: checked inline, with a setup cached per (body, flat, law,
+friction) (``models.engine_setup``); anything else, and anything the checks would refuse or warn
+about, goes through the full checks (``checks.check_impact``), with the same results.
 """
 
 from __future__ import annotations
@@ -15,12 +18,14 @@ from typing import Any, overload
 import numpy as np
 
 from impactlab._validation import check_array, check_flag
-from impactlab.bodies import Rod, Sphere
+from impactlab.bodies import Rod, Sphere, lever_arms
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.contact import ContactModel
 from impactlab.contact.ranges import delta_ratio
 from impactlab.dynamics.batch import run_arrays
 from impactlab.dynamics.checks import (
+    PLAUSIBLE_SPEED,
+    RTOL_RANGE,
     ImpactInputs,
     check_body,
     check_flat,
@@ -32,12 +37,18 @@ from impactlab.dynamics.core import status as S
 from impactlab.dynamics.core.driver import impact
 from impactlab.dynamics.drop_result import DropResult
 from impactlab.dynamics.flex_simulate import FLEXIBLE_BATCH_ERROR, simulate_flexible
-from impactlab.dynamics.models import body_params, contact_model, kernel_params, references_used
-from impactlab.dynamics.outcome import impact_result, status_error
+from impactlab.dynamics.models import (
+    body_params,
+    contact_model,
+    engine_setup,
+    kernel_params,
+    references_used,
+)
+from impactlab.dynamics.outcome import engine_result, impact_result, status_error
 from impactlab.dynamics.partial_slip import simulate_partial_slip
 from impactlab.dynamics.results import BatchResult, ImpactResult
 from impactlab.friction import DEFAULT_MU, FrictionKind, get_friction
-from impactlab.materials import AISI_1010, Material
+from impactlab.materials import AISI_1010, G0, Material
 
 
 @overload
@@ -96,7 +107,8 @@ def simulate(
         Freeze the lever arms at the initial angle (the paper's assumption); keep the time
         history (needed for ``dent()`` and the plots).
     rtol : float, optional
-        Relative tolerance in [1e-13, 1e-3] (default ``DEFAULT_RTOL`` = 3e-8).
+        Relative tolerance in [1e-13, 1e-3] (default ``DEFAULT_RTOL`` = 2e-7; 3e-8 for
+        ``friction="partial_slip"``).
 
     Returns
     -------
@@ -121,6 +133,10 @@ def simulate(
         args |= {"spin": spin, "law_params": law_params, "gravity": gravity, "rtol": rtol}
         return simulate_flexible(body, flat, constant_angle=constant_angle, history=history,
                                  **args, **drop_options)  # fmt: skip
+    r = _fast(body, flat, law, friction, mu, angle, velocity, spin, law_params, gravity,
+              constant_angle, rtol, history)  # fmt: skip
+    if r is not None:
+        return r
     x = check_impact(
         body,
         flat,
@@ -138,6 +154,110 @@ def simulate(
     if x.friction.kind is FrictionKind.PARTIAL_SLIP:  # issue 12: the partial-slip engine
         return simulate_partial_slip(x, check_flag("history", history))
     return _run_one(x, check_flag("history", history))
+
+
+#: Types of the plain numbers ``_fast`` takes (not bool, str, Quantity or 0-d arrays).
+_PLAIN = frozenset((float, int, np.float64))
+#: Largest plain number ``_fast`` takes (a larger int is left to the full checks).
+_BIG = 1e300
+#: The largest rod angle the checks accept [rad] (``checks.check_angle``).
+_MAX_ANGLE = 0.5 * math.pi + 1e-12
+
+
+def _fast(
+    body: Any,
+    flat: Any,
+    law: Any,
+    friction: Any,
+    mu: Any,
+    angle: Any,
+    velocity: Any,
+    spin: Any,
+    law_params: Any,
+    gravity: Any,
+    constant_angle: Any,
+    rtol: Any,
+    history: Any,
+) -> ImpactResult | None:
+    """``simulate`` of plain, valid inputs that draw no warning: a Rod or a Sphere, registered
+    law and friction names (not partial slip), no law_params, finite Python or numpy floats and
+    ints in SI, bools; the same result as the full path (``check_impact`` and ``_run_one``),
+    from setups cached per (body, flat, law, friction) (``models.engine_setup``).
+
+    None sends the call through the full path, which raises any error or warning: this one
+    raises only the engine status's error, as ``_run_one`` does.
+    """
+    kind = type(body)
+    if not (
+        (kind is Rod or kind is Sphere)
+        and type(law) is str
+        and type(friction) is str
+        and law_params is None
+        and (type(velocity) is tuple or type(velocity) is list)
+        and len(velocity) == 2
+        and type(constant_angle) is bool
+        and type(history) is bool
+    ):
+        return None
+    vx, vy = velocity
+    if not (
+        type(vx) in _PLAIN
+        and type(vy) in _PLAIN
+        and type(spin) in _PLAIN
+        and type(mu) in _PLAIN
+        and -PLAUSIBLE_SPEED <= vx <= PLAUSIBLE_SPEED
+        and -PLAUSIBLE_SPEED <= vy <= PLAUSIBLE_SPEED
+        and -_BIG < spin < _BIG
+        and 0.0 <= mu < _BIG
+    ):
+        return None
+    if kind is Rod:
+        if not (type(angle) in _PLAIN and 0.0 < angle <= _MAX_ANGLE):
+            return None
+        th = th_out = float(angle)
+    elif angle is None or (type(angle) in _PLAIN and -_BIG < angle < _BIG):
+        th, th_out = 0.5 * math.pi, math.nan
+    else:
+        return None
+    if gravity is True or gravity is False:
+        g = G0 if gravity else 0.0
+    elif type(gravity) in _PLAIN and 0.0 <= gravity < _BIG:
+        g = float(gravity)
+    else:
+        return None
+    if rtol is None:
+        tol = L.DEFAULT_RTOL
+    elif type(rtol) in _PLAIN and RTOL_RANGE[0] <= rtol <= RTOL_RANGE[1]:
+        tol = float(rtol)
+    else:
+        return None
+    vx, vy, w = float(vx), float(vy), float(spin)
+    if w == 0.0:  # the contact point's normal velocity is vy (checks._approach)
+        if not (vy < 0.0 and math.hypot(vx, vy) <= PLAUSIBLE_SPEED):
+            return None
+    else:
+        a, b = lever_arms(body.half_length, body.tip_radius, th)
+        vn = vy - w * a
+        if not (
+            vn < 0.0 and max(math.hypot(vx, vy), math.hypot(vx + w * b, vn)) <= PLAUSIBLE_SPEED
+        ):
+            return None
+    setup = engine_setup(body, flat, law, friction)
+    if setup is None:
+        return None
+    _, _, model, fric, kp, bp, refs, refs_mu = setup
+    m = float(mu)
+    out = np.empty(L.N_OUT)
+    status, hist, nh = impact(
+        model.law_id, kp, fric.friction_id, bp, th, vx, vy, w, m, g, constant_angle, tol, history,
+        False, out,
+    )  # fmt: skip
+    if status != S.ST_OK:
+        raise status_error(int(status), model)
+    hist = hist[:nh] if history else None
+    return engine_result(
+        out, hist, model, fric, refs_mu if m > 0.0 else refs, m, th_out, (vx, vy), w
+    )
 
 
 def _run_one(x: ImpactInputs, history: bool) -> ImpactResult:

@@ -61,8 +61,10 @@ from impactlab.dynamics.core.integrator import (
     dense_coeffs,
 )
 from impactlab.dynamics.core.layout import (
+    EV_FRIC,
     EV_SEP,
     EV_SWITCH,
+    FR_COULOMB,
     HISTORY_SUBSTEPS,
     M_DR,
     M_RR,
@@ -80,12 +82,16 @@ from impactlab.dynamics.core.tuples import state_tuple
 #: Components of the approach state: the state ``y`` and the time.
 NY = NS + 1
 Y_T = NS
-#: Outcomes of ``w_integrate``: ``wb`` reached, back to the time integration, non-finite force.
+#: Outcomes of ``w_integrate``: ``wb`` reached, back to the time integration, non-finite force,
+#: a stick/slip switch reached (the final approach: the driver switches and goes on in w).
 W_REACHED = 0
 W_FALLBACK = 1
 W_NAN = 2
+W_EVENT = 3
 #: Steps the approach may take before it gives up (back to the time integration).
 MAX_APPROACH_STEPS = 60
+#: Where the last step of the final approach reads its events (fraction of the step).
+END_THETA = 0.999
 #: Dormand-Prince nodes c_s of stages 1..5 (the right-hand side depends on w here).
 _C = (0.0, 0.2, 0.3, 0.8, 8.0 / 9.0, 1.0, 1.0)
 
@@ -171,15 +177,94 @@ def _step(law, p, fric, c, md, Y, K, w, sgn, h, rtol, sc, tscale, Yn):
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def _fallback(gold, gnew, sgn):
-    """True where an event fires in the step (the opening ignores the elastic-curve switch,
-    which it reaches exactly: ``w_b``)."""
+def _fired(gold, gnew):
+    """The first event (index) that fires in the step, -1 for none (the switch to the
+    elastic-plastic curve, which the opening reaches exactly at ``w_b``, and the separation,
+    which is ``w = 0``, are not events here)."""
     for j in range(NEV):
         if j == EV_SWITCH or j == EV_SEP:
             continue
         if gold[j] <= 0.0 < gnew[j]:
-            return True
-    return False
+            return j
+    return -1
+
+
+@njit(cache=True, error_model="numpy")
+def w_state(law, p, fric, c, md, y, w):
+    """(quantities, event tuple) at state ``y`` (length NS) with the interference delta_r + w^2
+    of the final approach."""
+    _r, evq = _rhs_w(law, p, fric, c, md, y, w, -1.0)
+    return evq, _events(law, p, fric, c, md, evq, y[S_Q])
+
+
+@njit(cache=True, error_model="numpy")
+def _g_friction(law, p, fric, c, md, Y, w, sgn):
+    """The stick/slip event function at (Y, w)."""
+    _r, evq = _rhs_w(law, p, fric, c, md, Y, w, sgn)
+    return _events(law, p, fric, c, md, evq, Y[S_Q])[EV_FRIC]
+
+
+@njit(cache=True, error_model="numpy")
+def _locate(law, p, fric, c, md, Y, K, w, sgn, h, Q, Yt, g0, b, g1):
+    """theta in (0, b] of the step where the stick/slip event fires (g(b) = g1 > 0): Illinois
+    method on the dense output (as ``integrator.locate``); returns the bracket end where
+    g > 0."""
+    a, fa, fb = 0.0, g0, g1
+    side = 0
+    for _ in range(100):
+        th = (a * fb - b * fa) / (fb - fa)
+        if not (a < th < b):
+            th = 0.5 * (a + b)
+        dense(Y, K, h, th, Q, Yt)
+        f = _g_friction(law, p, fric, c, md, Yt, w + sgn * th * h, sgn)
+        if f > 0.0:
+            b, fb = th, f
+            if side == 1:
+                fa *= 0.5
+            side = 1
+        else:
+            a, fa = th, f
+            if side == -1:
+                fb *= 0.5
+            side = -1
+        if b - a <= 1e-14:
+            break
+    return b
+
+
+@njit(cache=True, error_model="numpy")
+def _to(law, p, fric, c, md, Y, k0, w, sgn, H, rtol, sc, tscale, out):
+    """Integrate from (Y, w) over exactly H in u with error control into ``out`` (the state at
+    an event is recomputed, as ``integrator.integrate_to``); returns (steps, quantities)."""
+    Ks = np.empty((7, NY))
+    cur = Y.copy()
+    kc = k0.copy()
+    done = 0.0
+    hh = H
+    n = 0
+    _r, evq = _rhs_w(law, p, fric, c, md, Y, w, sgn)
+    while n < MAX_APPROACH_STEPS:
+        n += 1
+        rem = H - done
+        last = hh >= rem * (1.0 - 1e-12)
+        if last:
+            hh = rem
+        for i in range(NY):
+            Ks[0, i] = kc[i]
+        err, evq = _step(
+            law, p, fric, c, md, cur, Ks, w + sgn * done, sgn, hh, rtol, sc, tscale, out
+        )
+        if not (err <= 1.0) and hh > 1e-6 * H:
+            hh *= max(0.2, 0.9 * err**-0.2) if math.isfinite(err) else 0.25
+            continue
+        if last:
+            break
+        done += hh
+        for i in range(NY):
+            cur[i] = out[i]
+            kc[i] = Ks[6, i]
+        hh *= min(5.0, 0.9 * err**-0.2) if err > 0.0 else 5.0
+    return n, evq
 
 
 @njit(cache=True, error_model="numpy")
@@ -187,11 +272,13 @@ def w_integrate(
     law, p, fric, c, md, y, t, wa, wb, first, rtol, sc, tscale, acc, diag, record, hist, nh
 ):
     """Integrate from state ``y`` at time ``t`` in w from ``wa`` to ``wb``: the restitution to
-    separation (``wb < wa``, normally ``wb = 0``) or the opening (``wb > wa``).
+    separation (``wb < wa``, normally ``wb = 0``) or the opening (``wb > wa``); ``first``: the
+    first step as a fraction of the span.
 
-    Returns (outcome ``APPROACH_*``, time, steps, hist, nh, quantities at the end). ``y`` is
-    updated in place: the state at ``wb``, or the last accepted state where the integration
-    gave up (fallback: an event fired; the time integration takes over)."""
+    Returns (outcome ``W_*``, time, steps, hist, nh, quantities at the end, w at the end).
+    ``y`` is updated in place: the state at ``wb``, at a Coulomb stick/slip switch of the final
+    approach (located and recomputed: ``W_EVENT``), or the last accepted state where the
+    integration gave up (fallback: another event fired; the time integration takes over)."""
     sgn = 1.0 if wb > wa else -1.0
     span = abs(wb - wa)
     Y = np.empty(NY)
@@ -206,7 +293,7 @@ def w_integrate(
     r, evq = _rhs_w(law, p, fric, c, md, Y, w, sgn)
     _put(K, 0, r)
     if not (span > 0.0 and math.isfinite(r[Y_T])):
-        return W_FALLBACK, t, 0, hist, nh, evq
+        return W_FALLBACK, t, 0, hist, nh, evq, w
     gold = _events(law, p, fric, c, md, evq, y[S_Q])
     done = 0.0
     h = first * span
@@ -223,15 +310,42 @@ def w_integrate(
             h *= max(0.2, 0.9 * err**-0.2) if math.isfinite(err) else 0.25
             continue
         gnew = _events(law, p, fric, c, md, evq_new, Yn[S_Q])
-        if _fallback(gold, gnew, sgn):
-            break
-        if record:
+        b = 1.0
+        if last and sgn < 0.0:
+            # at w = 0 every force vanishes and so does the stick/slip function (0/0 as a
+            # ratio): the step's events are read just before, where the forces are ~1e-9 of
+            # the step's but their ratio is well defined
+            b = END_THETA
             dense_coeffs(K, Q)
+            dense(Y, K, h, b, Q, Yt)
+            _r, evq_b = _rhs_w(law, p, fric, c, md, Yt, w + sgn * b * h, sgn)
+            gnew = _events(law, p, fric, c, md, evq_b, Yt[S_Q])
+        ev = _fired(gold, gnew)
+        if ev >= 0 and (ev != EV_FRIC or sgn > 0.0 or fric != FR_COULOMB):
+            break  # back to the time integration
+        theta = 1.0
+        if ev >= 0 or record:
+            dense_coeffs(K, Q)
+        if ev >= 0:
+            theta = _locate(
+                law, p, fric, c, md, Y, K, w, sgn, h, Q, Yt, gold[ev], b, gnew[ev]
+            )  # fmt: skip
+        if record:
             for j in range(1, HISTORY_SUBSTEPS):
+                if j / HISTORY_SUBSTEPS >= theta:
+                    break
                 dense(Y, K, h, j / HISTORY_SUBSTEPS, Q, Yt)
                 hist, nh = record_row(hist, nh, Yt[Y_T], law, p, fric, c, md, state_tuple(Yt))
+        if ev >= 0:  # the stick/slip switch: its state recomputed, then the driver switches
+            k, evq_new = _to(law, p, fric, c, md, Y, K[0], w, sgn, theta * h, rtol, sc, tscale, Yn)
+            n += k
+            if not track(acc, law, p, fric, c, md, state_tuple(Yn), evq_new, Y[Y_T], Yn[Y_T], diag):
+                return W_NAN, Yn[Y_T], n, hist, nh, evq_new, w
+            for i in range(NS):
+                y[i] = Yn[i]
+            return W_EVENT, Yn[Y_T], n, hist, nh, evq_new, w + sgn * theta * h
         if not track(acc, law, p, fric, c, md, state_tuple(Yn), evq_new, Y[Y_T], Yn[Y_T], diag):
-            return W_NAN, Y[Y_T], n, hist, nh, evq_new
+            return W_NAN, Y[Y_T], n, hist, nh, evq_new, w
         evq = evq_new
         for i in range(NY):
             Y[i] = Yn[i]
@@ -240,10 +354,10 @@ def w_integrate(
             y[i] = Y[i]
         gold = gnew
         if last:
-            return W_REACHED, Y[Y_T], n, hist, nh, evq
+            return W_REACHED, Y[Y_T], n, hist, nh, evq, wb
         done += h
         w = wa + sgn * done
         if record:
             hist, nh = record_row(hist, nh, Y[Y_T], law, p, fric, c, md, state_tuple(Y))
         h *= min(5.0, 0.9 * err**-0.2) if err > 0.0 else 5.0
-    return W_FALLBACK, Y[Y_T], n, hist, nh, evq
+    return W_FALLBACK, Y[Y_T], n, hist, nh, evq, w

@@ -19,7 +19,6 @@ from numba import njit
 from impactlab.bodies.layout import BP_KIND, KIND_ROD
 from impactlab.dynamics.core.accumulate import (
     A_DMAX,
-    A_EEL,
     A_EMIN,
     A_ERISE,
     A_FEX,
@@ -29,34 +28,25 @@ from impactlab.dynamics.core.accumulate import (
     A_VSNEG,
     A_VSPOS,
     A_WCOMP,
-    A_WMARK,
     A_WREST,
     NA,
-    stored,
     track,
 )
-from impactlab.dynamics.core.approach import W_NAN, W_REACHED, w_integrate
+from impactlab.dynamics.core.ends import approach_end, near_separation, opening
+from impactlab.dynamics.core.events import GO_ON, handle_event
 from impactlab.dynamics.core.history import record as record_row
 from impactlab.dynamics.core.history import record_substeps
 from impactlab.dynamics.core.integrator import dp_step, first_event, integrate_to
 from impactlab.dynamics.core.layout import (
     C_A0,
     C_B0,
-    C_DLIM,
-    C_DSW,
     C_G,
     C_I,
     C_M,
-    EV_LIMIT,
     EV_SEP,
-    EV_SWITCH,
-    EV_VN,
     FR_IMPULSE,
-    FR_MINDLIN,
     FR_NONE,
-    M_COMP,
     M_DR,
-    M_PHASE,
     M_SIR,
     MAX_EVENTS,
     MAX_STEPS,
@@ -90,11 +80,9 @@ from impactlab.dynamics.core.layout import (
     O_VX,
     O_VY,
     S_PHI,
-    S_Q,
     S_SPIN,
     S_VX,
     S_VY,
-    S_WORK,
     S_Y,
 )
 from impactlab.dynamics.core.normal import geometry
@@ -106,7 +94,6 @@ from impactlab.dynamics.core.status import (
     REGIME_REVERSAL,
     REGIME_SLIP,
     REGIME_STICK,
-    ST_LAW_LIMIT,
     ST_NAN,
     ST_NO_SEPARATION,
     ST_NOT_APPROACHING,
@@ -114,71 +101,18 @@ from impactlab.dynamics.core.status import (
     ST_STEP_UNDERFLOW,
     ST_TOO_MANY_EVENTS,
 )
-from impactlab.dynamics.core.transitions import restart, switch_mode, without_switch
 from impactlab.dynamics.core.tuples import state_tuple
-
-_GO_ON = -1  # internal status: the impact goes on
-#: The final approach in w starts when separation is predicted within this many steps.
-APPROACH_STEPS = 2.0
-#: The opening in w ends at this fraction of the Hertz interference scale d* (``error_scales``).
-OPENING = 0.1
-#: First steps of the approach and of the opening, as fractions of their span in w.
-APPROACH_FIRST = 0.5
-OPENING_FIRST = 0.5
 
 
 @njit(cache=True, inline="always", error_model="numpy")
 def _shrink(err, h, hmin):
-    """(smaller step, _GO_ON or the failure status) after a rejected step with error ``err``."""
+    """(smaller step, GO_ON or the failure status) after a rejected step with error ``err``."""
     if not math.isfinite(err):
         # a non-finite force inside the step (law failure or outside its domain)
         h *= 0.25
-        return h, (ST_NAN if h < hmin else _GO_ON)
+        return h, (ST_NAN if h < hmin else GO_ON)
     h *= max(0.2, 0.9 * err**-0.2)
-    return h, (ST_STEP_UNDERFLOW if h < hmin else _GO_ON)
-
-
-@njit(cache=True, error_model="numpy")
-def _on_event(ev, law, p, fric, c, md, y, evq, acc):
-    """Stop at the event ``ev`` (separation: ST_OK, law limit, failure) or switch: normal-work
-    bookkeeping and mode transition. Returns (status or _GO_ON, constants, mode)."""
-    if ev == EV_SEP:
-        acc[A_WREST] += acc[A_EEL]  # all of it released: F_n = 0 at delta_r
-        return ST_OK, c, md
-    if ev == EV_LIMIT:
-        return ST_LAW_LIMIT, c, md
-    if ev == EV_SWITCH:
-        c = without_switch(c)
-    compressing = md[M_COMP] != 0.0
-    if ev == EV_VN:
-        if compressing:
-            acc[A_WCOMP] += y[S_WORK] - acc[A_WMARK]
-        else:
-            acc[A_WREST] += acc[A_EEL] - stored(evq, md)
-        acc[A_WMARK] = y[S_WORK]
-    st, md = switch_mode(ev, law, p, fric, c, md, y, evq)
-    if ev == EV_VN and compressing:
-        acc[A_EEL] = stored(evq, md)
-    return (_GO_ON if st == ST_OK else st), c, md
-
-
-@njit(cache=True, error_model="numpy")
-def _handle_event(ev, law, p, fric, c, md, y, evq, acc, K, gold, sc, fscale, dstar):
-    """Stop at the event ``ev`` or switch and restart the integration at ``y`` (derivative
-    into ``K[0]``, error scale of the Mindlin state). Returns (status or _GO_ON, constants,
-    mode, event tuple). A switch located at the separation itself (a stick that breaks as F_n
-    vanishes, with both events within round-off) can leave the restart state just past it
-    (delta < delta_r while receding, where no crossing would ever be seen): that is the
-    separation, at this instant."""
-    st, c, md = _on_event(ev, law, p, fric, c, md, y, evq, acc)
-    if st != _GO_ON:
-        return st, c, md, gold
-    if fric == FR_MINDLIN:
-        sc[S_Q] = fscale if md[M_COMP] != 0.0 else dstar
-    md, gold = restart(law, p, fric, c, md, y, K)
-    if gold[EV_SEP] > 0.0:
-        st, c, md = _on_event(EV_SEP, law, p, fric, c, md, y, evq, acc)
-    return st, c, md, gold
+    return h, (ST_STEP_UNDERFLOW if h < hmin else GO_ON)
 
 
 @njit(cache=True, error_model="numpy")
@@ -198,10 +132,10 @@ def _integrate(law, p, fric, c, md, y, sc, tstar, dstar, fscale, rtol, record, d
     nh = 0
     if record:
         hist, nh = record_row(hist, nh, t, law, p, fric, c, md, state_tuple(y))
-    status, t, nsteps, nevents, c, md, gold, hist, nh = _opening(
+    status, t, nsteps, nevents, c, md, gold, hist, nh = opening(
         law, p, fric, c, md, y, K, gold, rtol, sc, tstar, dstar, fscale, acc, diag, record, hist, nh
     )
-    if status != _GO_ON:
+    if status != GO_ON:
         return status, t, nsteps, md, hist, nh
     h = max(h, t)
     may_approach = True
@@ -213,7 +147,7 @@ def _integrate(law, p, fric, c, md, y, sc, tstar, dstar, fscale, rtol, record, d
         err, gnew, evq = dp_step(law, p, fric, c, md, y, K, h, rtol, sc, ynew)
         if not (err <= 1.0):  # rejected
             h, st = _shrink(err, h, hmin)
-            if st != _GO_ON:
+            if st != GO_ON:
                 status = st
                 break
             continue
@@ -221,12 +155,14 @@ def _integrate(law, p, fric, c, md, y, sc, tstar, dstar, fscale, rtol, record, d
         ev, theta = first_event(gold, gnew, law, p, fric, c, md, y, K, h, Q, yt, record)
         if ev == EV_SEP and may_approach:
             # the step crossed separation: its last part in w from the step's start instead
-            st, t, n_a, hist, nh, gold = _approach_end(
-                law, p, fric, c, md, y, K, t, rtol, sc, tstar, acc, diag, record, hist, nh
-            )
+            st, t, n_a, n_e, c, md, hist, nh, gold = approach_end(
+                law, p, fric, c, md, y, K, t, rtol, sc, tstar, dstar, fscale, acc, diag, record,
+                hist, nh,
+            )  # fmt: skip
             nsteps += n_a
+            nevents += n_e
             may_approach = False
-            if st != _GO_ON:
+            if st != GO_ON:
                 status = st
                 break
             continue
@@ -255,13 +191,15 @@ def _integrate(law, p, fric, c, md, y, sc, tstar, dstar, fscale, rtol, record, d
             gold = gnew
             if record:
                 hist, nh = record_row(hist, nh, t, law, p, fric, c, md, state_tuple(y))
-            if may_approach and _near_separation(md, evq, h):
-                st, t, n_a, hist, nh, gold = _approach_end(
-                    law, p, fric, c, md, y, K, t, rtol, sc, tstar, acc, diag, record, hist, nh
-                )
+            if may_approach and near_separation(md, evq, h):
+                st, t, n_a, n_e, c, md, hist, nh, gold = approach_end(
+                    law, p, fric, c, md, y, K, t, rtol, sc, tstar, dstar, fscale, acc, diag,
+                    record, hist, nh,
+                )  # fmt: skip
                 nsteps += n_a
+                nevents += n_e
                 may_approach = False
-                if st != _GO_ON:
+                if st != GO_ON:
                     status = st
                     break
             continue
@@ -272,127 +210,14 @@ def _integrate(law, p, fric, c, md, y, sc, tstar, dstar, fscale, rtol, record, d
             break
         if record:
             hist, nh = record_row(hist, nh, t, law, p, fric, c, md, state_tuple(y))
-        st, c, md, gold = _handle_event(
+        st, c, md, gold = handle_event(
             ev, law, p, fric, c, md, y, evq, acc, K, gold, sc, fscale, dstar
         )
-        if st != _GO_ON:
+        if st != GO_ON:
             status = st
             break
         may_approach = True
     return status, t, nsteps, md, hist, nh
-
-
-@njit(cache=True, error_model="numpy")
-def _opening(
-    law, p, fric, c, md, y, K, gold, rtol, sc, tstar, dstar, fscale, acc, diag, record, hist, nh
-):
-    """The start of the contact in w (``w_integrate``) from first touch to OPENING d*, through
-    the switch to the elastic-plastic curve where it lies before. Returns (ST_NAN, a stop
-    status, or _GO_ON with the derivative at ``y`` in ``K[0]``, t, steps, events, constants,
-    mode, event tuple, hist, nh)."""
-    target = min(OPENING * dstar, 0.5 * c[C_DLIM])
-    t = 0.0
-    n = 0
-    nev = 0
-    wa = 0.0
-    st = W_REACHED
-    if c[C_DSW] < target:
-        wsw = math.sqrt(c[C_DSW])
-        st, t, k, hist, nh, evq = w_integrate(
-            law, p, fric, c, md, y, t, 0.0, wsw, 1.0, rtol, sc, tstar, acc, diag, record, hist, nh
-        )
-        n += k
-        if st == W_REACHED:  # the switch at its known interference (the event EV_SWITCH)
-            if record:
-                hist, nh = record_row(hist, nh, t, law, p, fric, c, md, state_tuple(y))
-            nev += 1
-            status, c, md, gold = _handle_event(
-                EV_SWITCH, law, p, fric, c, md, y, evq, acc, K, gold, sc, fscale, dstar
-            )
-            if status != _GO_ON:
-                return status, t, n, nev, c, md, gold, hist, nh
-            wa = wsw
-    if st == W_REACHED:
-        wb = math.sqrt(target)
-        st, t, k, hist, nh, _q = w_integrate(
-            law,
-            p,
-            fric,
-            c,
-            md,
-            y,
-            t,
-            wa,
-            wb,
-            OPENING_FIRST,
-            rtol,
-            sc,
-            tstar,
-            acc,
-            diag,
-            record,
-            hist,
-            nh,
-        )
-        n += k
-    if st == W_NAN:
-        return ST_NAN, t, n, nev, c, md, gold, hist, nh
-    r, gold, _q = rhs_events(law, p, fric, c, md, state_tuple(y))
-    for i in range(NS):
-        K[0, i] = r[i]
-    if record and st == W_REACHED and n > 0:
-        hist, nh = record_row(hist, nh, t, law, p, fric, c, md, state_tuple(y))
-    return _GO_ON, t, n, nev, c, md, gold, hist, nh
-
-
-@njit(cache=True, inline="always", error_model="numpy")
-def _near_separation(md, evq, h):
-    """True when the contact recedes on the unloading branch and separation is predicted (at
-    the present normal velocity) within APPROACH_STEPS steps of size ``h``."""
-    if md[M_PHASE] == 0.0 or md[M_COMP] != 0.0:
-        return False
-    vn = evq[5]
-    return vn > 0.0 and evq[0] - md[M_DR] < APPROACH_STEPS * h * vn
-
-
-@njit(cache=True, error_model="numpy")
-def _approach_end(law, p, fric, c, md, y, K, t, rtol, sc, tstar, acc, diag, record, hist, nh):
-    """The final approach to separation in w (``approach``) from ``y`` at ``t``. Returns
-    (ST_OK at separation, ST_NAN, or _GO_ON where the time integration takes over again from
-    the last accepted state (derivative into ``K[0]``), t, steps, hist, nh, event tuple)."""
-    delta, _a, _b, _xs, _sl = geometry(c, state_tuple(y))
-    wa = math.sqrt(max(delta - md[M_DR], 0.0))
-    st, t, n, hist, nh, _q = w_integrate(
-        law,
-        p,
-        fric,
-        c,
-        md,
-        y,
-        t,
-        wa,
-        0.0,
-        APPROACH_FIRST,
-        rtol,
-        sc,
-        tstar,
-        acc,
-        diag,
-        record,
-        hist,
-        nh,
-    )
-    r, gold, evq = rhs_events(law, p, fric, c, md, state_tuple(y))
-    if st == W_REACHED:
-        if record:
-            hist, nh = record_row(hist, nh, t, law, p, fric, c, md, state_tuple(y))
-        status, c, md = _on_event(EV_SEP, law, p, fric, c, md, y, evq, acc)
-        return status, t, n, hist, nh, gold
-    if st == W_NAN:
-        return ST_NAN, t, n, hist, nh, gold
-    for i in range(NS):
-        K[0, i] = r[i]
-    return _GO_ON, t, n, hist, nh, gold
 
 
 @njit(cache=True, error_model="numpy")

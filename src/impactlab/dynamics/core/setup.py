@@ -19,7 +19,15 @@ from impactlab.bodies.layout import (
     KIND_SPHERE,
     NB,
 )
-from impactlab.contact.kernels import NPARAM, P_DLIM, P_DSW, P_ESTAR, P_R
+from impactlab.contact.kernels import (
+    NPARAM,
+    P_DLIM,
+    P_DSW,
+    P_ESTAR,
+    P_R,
+    TABLE_HEADER,
+    TABLE_MAGIC,
+)
 from impactlab.dynamics.core.friction import initial_friction_mode
 from impactlab.dynamics.core.layout import (
     C_A0,
@@ -66,7 +74,9 @@ def check_inputs(law, p, fric, bp, th0, vx0, vy0, w0, mu, g, rtol):
         and bp[BP_HALF_LENGTH] >= 0.0
     ):
         return ST_BAD_INPUT
-    if p.shape[0] != NPARAM:
+    if p.shape[0] != NPARAM and not (
+        p.shape[0] > NPARAM + TABLE_HEADER and p[NPARAM] == TABLE_MAGIC
+    ):
         return ST_BAD_INPUT
     if not (
         p[P_ESTAR] > 0.0 and math.isfinite(p[P_ESTAR]) and p[P_R] > 0.0 and math.isfinite(p[P_R])

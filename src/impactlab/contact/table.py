@@ -1,0 +1,64 @@
+"""A law's elastic-plastic loading curve as a table of polynomials, evaluated without any
+transcendental function (the engine's inner loop evaluates the curve ~120 times per impact, one
+stage after the other: the latency of the closed forms' log/exp/cos chain, ~70 ns for
+Ghaednia's, was the largest single cost of an impact).
+
+Layout: the table is appended to the law's parameter vector ``p`` (``p[NPARAM:]``, built by
+``contact.tabulate.with_table``): ``p[NPARAM] = TABLE_MAGIC``, ``p[NPARAM + 1] = 1/delta_lo``,
+``p[NPARAM + 2] = u_max`` (a power of two), then one row of ``DEG + 1`` monomial coefficients
+per sub-interval. With u = delta/delta_lo in [1, u_max), ``math.frexp`` gives the octave k
+(u in [2^k, 2^(k+1))) and the mantissa, which SUB equal sub-intervals split; t in [-1, 1] is
+the position inside one. A row
+whose first coefficient is NaN (its check failed, e.g. a law's own switch inside it), or a
+delta outside [delta_lo, delta_lo u_max), is evaluated by the closed form: ``table_force``
+returns -1 for "not tabulated".
+
+The rows interpolate the closed form at Chebyshev points (degree 7 over an eighth of an
+octave); ``with_table`` checks every row against the closed form between the
+nodes and keeps it only where the relative difference is below ``TABLE_RTOL`` (1e-13).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+#: Polynomial degree of a row and sub-intervals per octave.
+DEG = 7
+SUB = 8
+#: Largest relative difference from the closed form a row may have (checked when built).
+TABLE_RTOL = 1e-13
+#: Entries of the table's header (TABLE_MAGIC, 1/delta_lo, u_max); the marker tells a table
+#: from anything else appended to a parameter vector.
+HEADER = 3
+TABLE_MAGIC = 7.0e-77
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def table_force(p: np.ndarray, nparam: int, delta: float) -> float:
+    """The tabulated loading force [N] at ``delta`` [m], or -1.0 where the table does not cover
+    it (no table, outside its range, or a row left to the closed form)."""
+    if p.shape[0] <= nparam or p[nparam] != TABLE_MAGIC:
+        return -1.0
+    u = delta * p[nparam + 1]
+    if not (u >= 1.0 and u < p[nparam + 2]):
+        return -1.0
+    m, e = math.frexp(u)
+    x = (2.0 * m - 1.0) * SUB
+    j = int(x)
+    t = 2.0 * (x - j) - 1.0
+    row = nparam + HEADER + ((e - 1) * SUB + j) * (DEG + 1)
+    acc = p[row + DEG]
+    if not (acc == acc and p[row] == p[row]):
+        return -1.0
+    for i in range(DEG - 1, -1, -1):
+        acc = acc * t + p[row + i]
+    return acc
+
+
+@njit(cache=True, error_model="numpy")
+def node_interference(delta_lo: float, k: int, j: int, t: float) -> float:
+    """The interference [m] at position t in [-1, 1] of sub-interval j of octave k."""
+    return delta_lo * 2.0**k * (1.0 + (j + 0.5 * (t + 1.0)) / SUB)

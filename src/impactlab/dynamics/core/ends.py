@@ -1,0 +1,159 @@
+"""The two ends of the contact in w (``approach.w_integrate``) as the driver runs them: the
+opening from first touch (``opening``) and the final approach to separation through the
+stick/slip switches it meets (``approach_end``, started where ``near_separation``)."""
+
+from __future__ import annotations
+
+import math
+
+from numba import njit
+
+from impactlab.dynamics.core.approach import W_EVENT, W_NAN, W_REACHED, w_integrate, w_state
+from impactlab.dynamics.core.events import GO_ON, NO_EVENTS, handle_event, on_event
+from impactlab.dynamics.core.history import record as record_row
+from impactlab.dynamics.core.layout import (
+    C_DLIM,
+    C_DSW,
+    EV_FRIC,
+    EV_SEP,
+    EV_SWITCH,
+    M_COMP,
+    M_DR,
+    M_PHASE,
+    NS,
+)
+from impactlab.dynamics.core.normal import geometry
+from impactlab.dynamics.core.rhs import rhs_events
+from impactlab.dynamics.core.status import ST_NAN
+from impactlab.dynamics.core.tuples import state_tuple
+
+#: The final approach in w starts when separation is predicted within this many steps.
+APPROACH_STEPS = 2.0
+#: Stick/slip switches the final approach takes before it hands them to the time integration.
+MAX_W_EVENTS = 8
+#: The opening in w ends at this fraction of the Hertz interference scale d* (``error_scales``).
+OPENING = 0.1
+#: First steps of the approach and of the opening, as fractions of their span in w.
+APPROACH_FIRST = 0.5
+OPENING_FIRST = 0.5
+
+
+@njit(cache=True, error_model="numpy")
+def opening(
+    law, p, fric, c, md, y, K, gold, rtol, sc, tstar, dstar, fscale, acc, diag, record, hist, nh
+):
+    """The start of the contact in w (``w_integrate``) from first touch to OPENING d*, through
+    the switch to the elastic-plastic curve where it lies before. Returns (ST_NAN, a stop
+    status, or GO_ON with the derivative at ``y`` in ``K[0]``, t, steps, events, constants,
+    mode, event tuple, hist, nh)."""
+    target = min(OPENING * dstar, 0.5 * c[C_DLIM])
+    t = 0.0
+    n = 0
+    nev = 0
+    wa = 0.0
+    st = W_REACHED
+    if c[C_DSW] < target:
+        wsw = math.sqrt(c[C_DSW])
+        st, t, k, hist, nh, evq, _w = w_integrate(
+            law, p, fric, c, md, y, t, 0.0, wsw, 1.0, rtol, sc, tstar, acc, diag, record, hist, nh
+        )
+        n += k
+        if st == W_REACHED:  # the switch at its known interference (the event EV_SWITCH)
+            if record:
+                hist, nh = record_row(hist, nh, t, law, p, fric, c, md, state_tuple(y))
+            nev += 1
+            status, c, md, gold = handle_event(
+                EV_SWITCH, law, p, fric, c, md, y, evq, acc, K, gold, sc, fscale, dstar
+            )
+            if status != GO_ON:
+                return status, t, n, nev, c, md, gold, hist, nh
+            wa = wsw
+    if st == W_REACHED:
+        wb = math.sqrt(target)
+        st, t, k, hist, nh, _q, _w = w_integrate(
+            law,
+            p,
+            fric,
+            c,
+            md,
+            y,
+            t,
+            wa,
+            wb,
+            OPENING_FIRST,
+            rtol,
+            sc,
+            tstar,
+            acc,
+            diag,
+            record,
+            hist,
+            nh,
+        )
+        n += k
+    if st == W_NAN:
+        return ST_NAN, t, n, nev, c, md, gold, hist, nh
+    r, gold, _q = rhs_events(law, p, fric, c, md, state_tuple(y))
+    for i in range(NS):
+        K[0, i] = r[i]
+    if record and st == W_REACHED and n > 0:
+        hist, nh = record_row(hist, nh, t, law, p, fric, c, md, state_tuple(y))
+    return GO_ON, t, n, nev, c, md, gold, hist, nh
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def near_separation(md, evq, h):
+    """True when the contact recedes on the unloading branch and separation is predicted (at
+    the present normal velocity) within APPROACH_STEPS steps of size ``h``."""
+    if md[M_PHASE] == 0.0 or md[M_COMP] != 0.0:
+        return False
+    vn = evq[5]
+    return vn > 0.0 and evq[0] - md[M_DR] < APPROACH_STEPS * h * vn
+
+
+@njit(cache=True, error_model="numpy")
+def approach_end(
+    law, p, fric, c, md, y, K, t, rtol, sc, tstar, dstar, fscale, acc, diag, record, hist, nh
+):
+    """The final approach to separation in w (``w_integrate``) from ``y`` at ``t``, through the
+    stick/slip switches it meets. Returns (ST_OK at separation, ST_NAN or another stop status,
+    or GO_ON where the time integration takes over again from the last accepted state
+    (derivative into ``K[0]``), t, steps, events, constants, mode, hist, nh, event tuple)."""
+    delta, _a, _b, _xs, _sl = geometry(c, state_tuple(y))
+    wa = math.sqrt(max(delta - md[M_DR], 0.0))
+    n = 0
+    nev = 0
+    while True:
+        st, t, k, hist, nh, evq, wa = w_integrate(
+            law, p, fric, c, md, y, t, wa, 0.0, APPROACH_FIRST, rtol, sc, tstar, acc, diag,
+            record, hist, nh,
+        )  # fmt: skip
+        n += k
+        if st != W_EVENT:
+            break
+        nev += 1
+        if nev > MAX_W_EVENTS:  # switches without progress: the time integration decides
+            status, c, md, gold = handle_event(
+                EV_FRIC, law, p, fric, c, md, y, evq, acc, K, NO_EVENTS, sc, fscale, dstar
+            )
+            return status, t, n, nev, c, md, hist, nh, gold
+        if record:
+            hist, nh = record_row(hist, nh, t, law, p, fric, c, md, state_tuple(y))
+        for _ in range(3):  # switch; a state found outside its new domain switches at once
+            status, c, md = on_event(EV_FRIC, law, p, fric, c, md, y, evq, acc)
+            if status != GO_ON:
+                return status, t, n, nev, c, md, hist, nh, NO_EVENTS
+            evq, g = w_state(law, p, fric, c, md, y, wa)
+            if not g[EV_FRIC] > 0.0:
+                break
+    r, gold, evq = rhs_events(law, p, fric, c, md, state_tuple(y))
+    if st == W_REACHED:
+        if record:
+            hist, nh = record_row(hist, nh, t, law, p, fric, c, md, state_tuple(y))
+        status, c, md = on_event(EV_SEP, law, p, fric, c, md, y, evq, acc)
+        return status, t, n, nev + 1, c, md, hist, nh, gold
+    if st == W_NAN:
+        return ST_NAN, t, n, nev, c, md, hist, nh, gold
+    for i in range(NS):
+        K[0, i] = r[i]
+    return GO_ON, t, n, nev, c, md, hist, nh, gold
