@@ -37,7 +37,7 @@ VY = -1.41
 def _counts() -> dict[str, int]:
     """Instrumented run of the benchmark case in plain Python (NUMBA_DISABLE_JIT=1)."""
     from impactlab.bodies import PAPER_ROD
-    from impactlab.dynamics.core import driver, integrator, normal, rhs, transitions
+    from impactlab.dynamics.core import approach, driver, ends, integrator, normal, rhs, transitions
     from impactlab.dynamics.core.layout import N_OUT, O_NST
     from impactlab.dynamics.models import body_params, contact_model, kernel_params
     from impactlab.friction import FRICTION_IDS
@@ -61,7 +61,10 @@ def _counts() -> dict[str, int]:
     wrap(driver, "evaluate", "rhs_evaluations")
     wrap(integrator, "event_value", "event_function_evaluations")
     wrap(driver, "integrate_to", "events_recomputed")
-    wrap(driver, "_handle_event", "events")
+    wrap(driver, "handle_event", "events")
+    wrap(ends, "handle_event", "events")
+    wrap(approach, "_rhs_w", "rhs_evaluations_in_w")
+    wrap(approach, "_step", "steps_in_w")
     dp = integrator.dp_step
 
     def step(*a):  # type: ignore[no-untyped-def]
