@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -205,6 +205,15 @@ def _plain_inputs(
     return float(angle), float(velocity[0]), float(velocity[1]), float(spin), float(mu), g, r
 
 
+def _is_partial_slip(friction: Any) -> bool:
+    """True for the name of the partial-slip model (an unknown name: False, the checks below
+    raise its error in their order)."""
+    try:
+        return get_friction(friction).kind is FrictionKind.PARTIAL_SLIP
+    except (TypeError, ValueError, KeyError):
+        return False
+
+
 def check_impact(
     body: Any,
     flat: Any,
@@ -222,29 +231,8 @@ def check_impact(
 ) -> ImpactInputs:
     """All the inputs of one impact (``simulate``'s arguments) checked and in SI. The default
     tolerance is ``DEFAULT_RTOL``, ``PARTIAL_SLIP_RTOL`` for the partial-slip engine."""
-    x = _check_impact(
-        body, flat, law, friction, mu, angle, velocity, spin, law_params, gravity,
-        constant_angle, rtol,
-    )  # fmt: skip
-    if rtol is None and x.friction.kind is FrictionKind.PARTIAL_SLIP:
-        return replace(x, rtol=PARTIAL_SLIP_RTOL)
-    return x
-
-
-def _check_impact(
-    body: Any,
-    flat: Any,
-    law: str | ContactModel,
-    friction: str,
-    mu: Any,
-    angle: Any,
-    velocity: Any,
-    spin: Any,
-    law_params: Mapping[str, Any] | None,
-    gravity: Any,
-    constant_angle: Any,
-    rtol: Any,
-) -> ImpactInputs:
+    if rtol is None and _is_partial_slip(friction):
+        rtol = PARTIAL_SLIP_RTOL
     fast = _plain_inputs(body, flat, angle, velocity, spin, mu, gravity, rtol, constant_angle)
     if fast is not None:
         th, vx, vy, w, m, g, r = fast
