@@ -50,12 +50,15 @@ def table_force(p: np.ndarray, nparam: int, delta: float) -> float:
     j = int(x)
     t = 2.0 * (x - j) - 1.0
     row = nparam + HEADER + ((e - 1) * SUB + j) * (DEG + 1)
-    acc = p[row + DEG]
-    if not (acc == acc and p[row] == p[row]):
+    if not (p[row + DEG] == p[row + DEG] and p[row] == p[row]):
         return -1.0
-    for i in range(DEG - 1, -1, -1):
-        acc = acc * t + p[row + i]
-    return acc
+    # Estrin's scheme (pairs, then t^2, then t^4): a shorter dependency chain than Horner's
+    t2 = t * t
+    q0 = p[row] + p[row + 1] * t
+    q1 = p[row + 2] + p[row + 3] * t
+    q2 = p[row + 4] + p[row + 5] * t
+    q3 = p[row + 6] + p[row + 7] * t
+    return (q0 + q1 * t2) + (q2 + q3 * t2) * (t2 * t2)
 
 
 @njit(cache=True, error_model="numpy")

@@ -340,14 +340,14 @@ def _run_store(
         return SweepResult(path, st, stats)
     done_cases = sum(lay.block_size(k) for k in done)
     show: bool | None = False if quiet and progress is None else progress
-    arrays = sstore.open_arrays(
+    writer = sstore.writer(
         [*meta.outputs, "status", *(st.sample.inputs if st.sample is not None else ())]
     )
     t0 = time.perf_counter()
 
     def sink(res: ChunkResult, advance: Callable[[int], None]) -> None:
         tw = time.perf_counter()
-        sstore.write_chunk(arrays, st, res.index, res.outputs, res.status)
+        sstore.write_chunk(writer, st, res.index, res.outputs, res.status)
         stats.write_s += time.perf_counter() - tw
         stats.chunks_computed += 1
         stats.cases_computed += res.n_cases
@@ -381,5 +381,7 @@ def _run_store(
             quiet,
         )
         raise SweepInterrupted() from None
+    finally:
+        writer.close()
     stats.wall_s = time.perf_counter() - t0
     return SweepResult(path, st, stats)

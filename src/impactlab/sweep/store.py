@@ -31,18 +31,21 @@ import zarr
 from impactlab.sweep.hooks import checkpoint
 from impactlab.sweep.inputs import INPUTS, OUTPUTS
 from impactlab.sweep.integrity import (
+    CorruptStoreError,
     DamagedStoreError,
     check_marker,
+    check_metadata,
     chunk_key,
     damaged_error,
     marker_text,
 )
 from impactlab.sweep.locking import acquire_lock, release_lock, stale, write_lock
 from impactlab.sweep.options import STUDY_FORMAT
-from impactlab.sweep.storebuild import META, StoreMeta, build_store
+from impactlab.sweep.storebuild import META, ChunkWriter, StoreMeta, build_store
 from impactlab.sweep.study import Study
 
 __all__ = [
+    "ChunkWriter",
     "CorruptStoreError",
     "DamagedStoreError",
     "StoreMeta",
@@ -56,48 +59,6 @@ __all__ = [
 
 class StudyMismatchError(ValueError):
     """The store was written by a different study."""
-
-
-class CorruptStoreError(ValueError):
-    """A store's Zarr metadata (a ``zarr.json``) cannot be read: junk, cut short, not JSON or
-    not Zarr's. The message names the store, the file and what is wrong with it."""
-
-
-def _node_problem(f: Path) -> str | None:
-    """What is wrong with the Zarr metadata file ``f``, or None when Zarr reads it."""
-    try:
-        meta = json.loads(f.read_bytes().decode("utf-8"))
-    except OSError as exc:
-        return f"cannot be read ({exc.strerror or exc})"
-    except UnicodeDecodeError:
-        return "is not text (binary junk)"
-    except json.JSONDecodeError as exc:
-        return f"is not valid JSON ({exc.msg} at line {exc.lineno}, column {exc.colno})"
-    if not isinstance(meta, dict):
-        return f"is not a JSON object (it holds a {type(meta).__name__})"
-    if meta.get("zarr_format") != 3 or meta.get("node_type") not in ("group", "array"):
-        return "is not Zarr v3 metadata (zarr_format 3, node_type 'group' or 'array')"
-    try:  # one node at a time: a failure names its file, and no read is left pending
-        opener = zarr.open_array if meta["node_type"] == "array" else zarr.open_group
-        opener(str(f.parent), mode="r")
-    except Exception as exc:  # zarr raises many unrelated types for malformed metadata
-        return f"is not valid Zarr metadata ({type(exc).__name__}: {exc})"
-    return None
-
-
-def check_metadata(path: str | Path) -> None:
-    """CorruptStoreError unless the root and every sub-folder (an array, ``.sweep``) of the
-    store at ``path`` have a ``zarr.json`` that reads as Zarr v3 metadata (the chunks' data is
-    checked by ``SweepStore.verify``)."""
-    root = Path(path)
-    for node in [root, *sorted(d for d in root.iterdir() if d.is_dir())]:
-        f = node / "zarr.json"
-        why = _node_problem(f) if f.exists() else "is missing"
-        if why is not None:
-            raise CorruptStoreError(
-                f"sweep store {str(root)!r} is damaged: {f.relative_to(root).as_posix()} {why}; "
-                f"run the study into it again with --restart to start it fresh"
-            )
 
 
 class SweepStore:
@@ -308,13 +269,13 @@ class SweepStore:
 
     # -- writes ----------------------------------------------------------------------------------
 
-    def open_arrays(self, names: Sequence[str]) -> dict[str, Any]:
-        g = zarr.open_group(str(self.path), mode="r+")
-        return {n: g[n] for n in names}
+    def writer(self, names: Sequence[str]) -> ChunkWriter:
+        """The arrays ``names`` opened for ``write_chunk`` (close the writer when done)."""
+        return ChunkWriter(self.path, names)
 
     def write_chunk(
         self,
-        arrays: Mapping[str, Any],
+        writer: ChunkWriter,
         study: Study,
         index: int,
         outputs: Mapping[str, np.ndarray],
@@ -326,21 +287,23 @@ class SweepStore:
         block = lay.block(index)
         bshape = tuple(s.stop - s.start for s in block)
         coords = tuple(s.start // c for s, c in zip(block, lay.chunks, strict=True))
-        keys = [chunk_key(name, coords) for name in [*outputs, "status"]]
+        items: list[tuple[str, Any, np.ndarray]] = []
         for name, values in outputs.items():
-            z = arrays[name]
+            z = writer.arrays[name]
             v = np.asarray(values).reshape(bshape)
             if np.dtype(z.dtype).kind == "i" and v.dtype.kind == "f":
                 v = np.where(np.isfinite(v), v, z.fill_value)  # NaN -> the "none" code
-            z[block] = v.astype(z.dtype, copy=False)
-        arrays["status"][block] = np.asarray(status, dtype=np.int32).reshape(bshape)
+            items.append((name, block, v.astype(z.dtype, copy=False)))
+        items.append(("status", block, np.asarray(status, dtype=np.int32).reshape(bshape)))
+        keys = [chunk_key(name, coords) for name, _, _ in items]
         if study.sample is not None and all(s.start == 0 for s in block[:-1]):
             sl = block[-1]
             for name in study.sample.inputs:
-                arrays[name][sl] = study.sample.draw(name, sl.start, sl.stop)
+                items.append((name, sl, study.sample.draw(name, sl.start, sl.stop)))
                 keys.append(chunk_key(name, coords[-1:]))
+        digests = writer.write(items)
         checkpoint(f"chunk:{index}:data")
-        self.mark_done(index, marker_text(index, self.path, keys))
+        self.mark_done(index, marker_text(index, self.path, keys, digests))
         checkpoint(f"chunk:{index}:done")
 
     # -- reading ---------------------------------------------------------------------------------

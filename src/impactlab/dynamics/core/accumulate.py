@@ -8,6 +8,7 @@ import math
 
 from numba import njit
 
+from impactlab.dynamics.core._jit import njit_no_refcount
 from impactlab.dynamics.core.friction import frictional, sticking
 from impactlab.dynamics.core.layout import C_MU, M_DR
 from impactlab.dynamics.core.rhs import energy
@@ -28,7 +29,7 @@ A_EEL = 12  # stored elastic energy at the start of the current restitution [J]
 NA = 13
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit_no_refcount
 def track(acc, law, p, fric, c, md, y, evq, t0, t1, diag):
     """Update ``acc`` over the accepted step [t0, t1] ending at state ``y`` (a tuple, mode
     ``md`` before any switch, quantities ``evq``); False where the forces are not finite."""

@@ -27,6 +27,7 @@ import numpy as np
 from numba import njit
 
 from impactlab.contact.kernels import P_ESTAR
+from impactlab.dynamics.core._jit import njit_no_refcount
 from impactlab.dynamics.core.accumulate import track
 from impactlab.dynamics.core.friction import tangential_force
 from impactlab.dynamics.core.history import record as record_row
@@ -155,7 +156,7 @@ def _put(K, stage, r):
         K[stage, i] = r[i]
 
 
-@njit(cache=True, error_model="numpy")
+@njit_no_refcount
 def _step(law, p, fric, c, md, Y, K, w, sgn, h, rtol, sc, tscale, Yn):
     """One Dormand-Prince step from w to w + sgn h (``K[0]``: dY/du at Y); the result into
     ``Yn``; returns (error norm, quantities at ``Yn``)."""

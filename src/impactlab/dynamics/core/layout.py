@@ -50,7 +50,9 @@ C_A0 = 11  # a at th0
 C_B0 = 12  # b at th0
 C_DLIM = 13  # law validity limit [m]
 C_DSW = 14  # interference where the loading curve leaves the elastic curve [m] (inf: none)
-NC = 15
+C_IM = 15  # 1/m [1/kg] (a multiplication in the right-hand side instead of a division)
+C_II = 16  # 1/I [1/(kg m^2)]
+NC = 17
 
 # --- mode vector md (a tuple, rebuilt at every switch) --------------------------------------------
 M_PHASE = 0  # 0 loading curve, 1 unloading/reloading curve

@@ -7,7 +7,15 @@ import math
 
 from numba import njit
 
-from impactlab.contact.kernels import P_ESTAR, P_R, loading_force, unloading_force
+from impactlab.contact.kernels import (
+    NPARAM,
+    P_DSW,
+    P_ESTAR,
+    P_R,
+    loading_force,
+    table_force,
+    unloading_force,
+)
 from impactlab.contact.kernels import contact_radius as _contact_radius
 from impactlab.dynamics.core.layout import (
     C_A0,
@@ -51,6 +59,8 @@ def geometry(c, y):
     return delta, a, b, xs, slide
 
 
+#: Reciprocals of the Taylor series' factors (a multiplication instead of a division).
+_I6, _I12, _I20, _I30, _I42, _I56, _I72 = (1.0 / k for k in (6, 12, 20, 30, 42, 56, 72))
 #: |phi| [rad] up to which ``rotation_increments`` uses its series (truncation below 1e-20).
 SERIES_PHI = 0.05
 
@@ -64,8 +74,8 @@ def rotation_increments(s0, c0, th0, phi):
     no cancellation in the differences, no sin/cos call); beyond it from sin and cos."""
     if abs(phi) < SERIES_PHI:
         p2 = phi * phi
-        sp = phi * (1.0 - p2 / 6.0 * (1.0 - p2 / 20.0 * (1.0 - p2 / 42.0 * (1.0 - p2 / 72.0))))
-        cm = -0.5 * p2 * (1.0 - p2 / 12.0 * (1.0 - p2 / 30.0 * (1.0 - p2 / 56.0)))
+        sp = phi * (1.0 - p2 * _I6 * (1.0 - p2 * _I20 * (1.0 - p2 * _I42 * (1.0 - p2 * _I72))))
+        cm = -0.5 * p2 * (1.0 - p2 * _I12 * (1.0 - p2 * _I30 * (1.0 - p2 * _I56)))
         return s0 * cm + c0 * sp, c0 * cm - s0 * sp
     th = th0 + phi
     return math.sin(th) - s0, math.cos(th) - c0
@@ -73,8 +83,16 @@ def rotation_increments(s0, c0, th0, phi):
 
 @njit(cache=True, inline="always", error_model="numpy")
 def normal_force(law, p, md, delta):
-    """Normal force [N] at interference ``delta`` [m] on the current branch."""
+    """Normal force [N] at interference ``delta`` [m] on the current branch.
+
+    The tabulated loading curve is evaluated here, inline (``loading_force`` does the same
+    first): a call of ``loading_force`` with the parameter array costs two atomic reference
+    count updates, which serialise the pipeline (~15 % of an impact when every stage made one)."""
     if md[M_PHASE] == 0.0:
+        if delta >= p[P_DSW]:
+            f = table_force(p, NPARAM, delta)
+            if f >= 0.0:
+                return f
         return loading_force(law, p, delta)
     return unloading_force(p[P_ESTAR], md[M_RR], md[M_DR], delta)
 

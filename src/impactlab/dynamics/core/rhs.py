@@ -20,6 +20,8 @@ from impactlab.dynamics.core.layout import (
     C_DSW,
     C_G,
     C_I,
+    C_II,
+    C_IM,
     C_M,
     EV_FRIC,
     EV_LIMIT,
@@ -57,15 +59,15 @@ def evaluate(law, p, fric, c, md, y):
 def derivative(fric, c, md, y, ev):
     """Time derivative of the state ``y`` from the evaluated quantities ``ev``, as a tuple."""
     _delta, a, b, Fn, Ft, vn, vs, kt = ev
-    m = c[C_M]
+    inv_m = c[C_IM]
     dq = tangential_state_rate(fric, md, kt, vs)
     return (
         y[S_VX],
         y[S_VY],
         y[S_SPIN],
-        Ft / m,
-        Fn / m - c[C_G],
-        (b * Ft - a * Fn) / c[C_I],
+        Ft * inv_m,
+        Fn * inv_m - c[C_G],
+        (b * Ft - a * Fn) * c[C_II],
         Fn * vn,
         dq,
     )

@@ -134,6 +134,8 @@ def constants(p, bp, th0, mu, g, const_angle):
         b0,
         p[P_DLIM],
         dsw,
+        1.0 / m,
+        1.0 / inertia,
     )
 
 

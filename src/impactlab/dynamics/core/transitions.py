@@ -65,6 +65,8 @@ def without_switch(c):
         c[12],
         c[13],
         math.inf,
+        c[15],
+        c[16],
     )
 
 
