@@ -60,6 +60,7 @@ from impactlab.dynamics.core.integrator import (
     E7,
     dense,
     dense_coeffs,
+    growth,
 )
 from impactlab.dynamics.core.layout import (
     EV_FRIC,
@@ -156,14 +157,25 @@ def _put(K, stage, r):
         K[stage, i] = r[i]
 
 
+@njit(cache=True, inline="always", error_model="numpy")
+def _w_stage(law, p, fric, c, md, Y, K, w, sgn, h, stage, Yn):
+    """Stage ``stage`` (1..5) of ``_step``: its point into ``Yn``, its derivative into
+    ``K[stage]``."""
+    _point(Y, K, h, stage, Yn)
+    r, _q = _rhs_w(law, p, fric, c, md, Yn, w + sgn * _C[stage] * h, sgn)
+    _put(K, stage, r)
+
+
 @njit_no_refcount
 def _step(law, p, fric, c, md, Y, K, w, sgn, h, rtol, sc, tscale, Yn):
     """One Dormand-Prince step from w to w + sgn h (``K[0]``: dY/du at Y); the result into
     ``Yn``; returns (error norm, quantities at ``Yn``)."""
-    for stage in range(1, 6):
-        _point(Y, K, h, stage, Yn)
-        r, _q = _rhs_w(law, p, fric, c, md, Yn, w + sgn * _C[stage] * h, sgn)
-        _put(K, stage, r)
+    # the stages written out (a constant stage number each: ``_point``'s branches fold away)
+    _w_stage(law, p, fric, c, md, Y, K, w, sgn, h, 1, Yn)
+    _w_stage(law, p, fric, c, md, Y, K, w, sgn, h, 2, Yn)
+    _w_stage(law, p, fric, c, md, Y, K, w, sgn, h, 3, Yn)
+    _w_stage(law, p, fric, c, md, Y, K, w, sgn, h, 4, Yn)
+    _w_stage(law, p, fric, c, md, Y, K, w, sgn, h, 5, Yn)
     _point(Y, K, h, 6, Yn)
     r, evq = _rhs_w(law, p, fric, c, md, Yn, w + sgn * h, sgn)
     _put(K, 6, r)
@@ -237,9 +249,13 @@ def _locate(law, p, fric, c, md, Y, K, w, sgn, h, Q, Yt, g0, b, g1):
 def _to(law, p, fric, c, md, Y, k0, w, sgn, H, rtol, sc, tscale, out):
     """Integrate from (Y, w) over exactly H in u with error control into ``out`` (the state at
     an event is recomputed, as ``integrator.integrate_to``); returns (steps, quantities)."""
-    Ks = np.empty((7, NY))
-    cur = Y.copy()
-    kc = k0.copy()
+    buf = np.empty(9 * NY)  # one allocation: Ks (7 rows), cur, kc
+    Ks = buf[: 7 * NY].reshape((7, NY))
+    cur = buf[7 * NY : 8 * NY]
+    kc = buf[8 * NY :]
+    for i in range(NY):
+        cur[i] = Y[i]
+        kc[i] = k0[i]
     done = 0.0
     hh = H
     n = 0
@@ -256,7 +272,7 @@ def _to(law, p, fric, c, md, Y, k0, w, sgn, H, rtol, sc, tscale, out):
             law, p, fric, c, md, cur, Ks, w + sgn * done, sgn, hh, rtol, sc, tscale, out
         )
         if not (err <= 1.0) and hh > 1e-6 * H:
-            hh *= max(0.2, 0.9 * err**-0.2) if math.isfinite(err) else 0.25
+            hh *= max(0.2, growth(err)) if math.isfinite(err) else 0.25
             continue
         if last:
             break
@@ -264,7 +280,7 @@ def _to(law, p, fric, c, md, Y, k0, w, sgn, H, rtol, sc, tscale, out):
         for i in range(NY):
             cur[i] = out[i]
             kc[i] = Ks[6, i]
-        hh *= min(5.0, 0.9 * err**-0.2) if err > 0.0 else 5.0
+        hh *= min(5.0, growth(err)) if err > 0.0 else 5.0
     return n, evq
 
 
@@ -282,11 +298,13 @@ def w_integrate(
     integration gave up (fallback: another event fired; the time integration takes over)."""
     sgn = 1.0 if wb > wa else -1.0
     span = abs(wb - wa)
-    Y = np.empty(NY)
-    Yn = np.empty(NY)
-    Yt = np.empty(NY)
-    K = np.empty((7, NY))
-    Q = np.empty((NY, 4))
+    # one allocation for the work arrays (views of it): Y, Yn, Yt, K (7 rows), Q (4 columns)
+    buf = np.empty(14 * NY)
+    Y = buf[:NY]
+    Yn = buf[NY : 2 * NY]
+    Yt = buf[2 * NY : 3 * NY]
+    K = buf[3 * NY : 10 * NY].reshape((7, NY))
+    Q = buf[10 * NY :].reshape((NY, 4))
     for i in range(NS):
         Y[i] = y[i]
     Y[Y_T] = t
@@ -308,7 +326,7 @@ def w_integrate(
         if not (err <= 1.0):
             if h < 1e-6 * span or (not math.isfinite(err) and h < 1e-3 * span):
                 break
-            h *= max(0.2, 0.9 * err**-0.2) if math.isfinite(err) else 0.25
+            h *= max(0.2, growth(err)) if math.isfinite(err) else 0.25
             continue
         gnew = _events(law, p, fric, c, md, evq_new, Yn[S_Q])
         b = 1.0
@@ -360,5 +378,5 @@ def w_integrate(
         w = wa + sgn * done
         if record:
             hist, nh = record_row(hist, nh, Y[Y_T], law, p, fric, c, md, state_tuple(Y))
-        h *= min(5.0, 0.9 * err**-0.2) if err > 0.0 else 5.0
+        h *= min(5.0, growth(err)) if err > 0.0 else 5.0
     return W_FALLBACK, Y[Y_T], n, hist, nh, evq, w

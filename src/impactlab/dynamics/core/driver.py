@@ -36,7 +36,7 @@ from impactlab.dynamics.core.ends import approach_end, near_separation, opening
 from impactlab.dynamics.core.events import GO_ON, handle_event
 from impactlab.dynamics.core.history import record as record_row
 from impactlab.dynamics.core.history import record_substeps
-from impactlab.dynamics.core.integrator import dp_step, first_event, integrate_to
+from impactlab.dynamics.core.integrator import dp_step, first_event, growth, integrate_to
 from impactlab.dynamics.core.layout import (
     C_A0,
     C_B0,
@@ -111,7 +111,7 @@ def _shrink(err, h, hmin):
         # a non-finite force inside the step (law failure or outside its domain)
         h *= 0.25
         return h, (ST_NAN if h < hmin else GO_ON)
-    h *= max(0.2, 0.9 * err**-0.2)
+    h *= max(0.2, growth(err))
     return h, (ST_STEP_UNDERFLOW if h < hmin else GO_ON)
 
 
@@ -121,9 +121,13 @@ def _integrate(law, p, fric, c, md, y, sc, tstar, dstar, fscale, rtol, record, d
     MAX_STEPS. Returns (status, t, steps, mode, history, rows)."""
     hmax = tstar
     hmin = 1e-14 * tstar
-    ynew, yt, yev = np.empty(NS), np.empty(NS), np.empty(NS)
-    K = np.empty((7, NS))
-    Q = np.empty((NS, 4))
+    # one allocation for the work arrays (views of it): ynew, yt, yev, K (7 rows), Q (4 columns)
+    buf = np.empty(14 * NS)
+    ynew = buf[:NS]
+    yt = buf[NS : 2 * NS]
+    yev = buf[2 * NS : 3 * NS]
+    K = buf[3 * NS : 10 * NS].reshape((7, NS))
+    Q = buf[10 * NS :].reshape((NS, 4))
     t = 0.0
     h = 0.02 * tstar * rtol**0.2
     r, gold, evq = rhs_events(law, p, fric, c, md, state_tuple(y))
@@ -184,7 +188,7 @@ def _integrate(law, p, fric, c, md, y, sc, tstar, dstar, fscale, rtol, record, d
         t = tend
         for i in range(NS):
             y[i] = yev[i]
-        h *= 10.0 if err == 0.0 else min(10.0, 0.9 * err**-0.2)
+        h *= 10.0 if err == 0.0 else min(10.0, growth(err))
         if ev < 0:
             for i in range(NS):
                 K[0, i] = K[6, i]
