@@ -23,7 +23,6 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
 from numba import njit
 
 from impactlab.contact.kernels import P_ESTAR
@@ -61,6 +60,8 @@ from impactlab.dynamics.core.integrator import (
     dense,
     dense_coeffs,
     growth,
+    recompute_arrays,
+    step_arrays,
 )
 from impactlab.dynamics.core.layout import (
     EV_FRIC,
@@ -249,13 +250,7 @@ def _locate(law, p, fric, c, md, Y, K, w, sgn, h, Q, Yt, g0, b, g1):
 def _to(law, p, fric, c, md, Y, k0, w, sgn, H, rtol, sc, tscale, out):
     """Integrate from (Y, w) over exactly H in u with error control into ``out`` (the state at
     an event is recomputed, as ``integrator.integrate_to``); returns (steps, quantities)."""
-    buf = np.empty(9 * NY)  # one allocation: Ks (7 rows), cur, kc
-    Ks = buf[: 7 * NY].reshape((7, NY))
-    cur = buf[7 * NY : 8 * NY]
-    kc = buf[8 * NY :]
-    for i in range(NY):
-        cur[i] = Y[i]
-        kc[i] = k0[i]
+    Ks, cur, kc = recompute_arrays(Y, k0)
     done = 0.0
     hh = H
     n = 0
@@ -298,13 +293,7 @@ def w_integrate(
     integration gave up (fallback: another event fired; the time integration takes over)."""
     sgn = 1.0 if wb > wa else -1.0
     span = abs(wb - wa)
-    # one allocation for the work arrays (views of it): Y, Yn, Yt, K (7 rows), Q (4 columns)
-    buf = np.empty(14 * NY)
-    Y = buf[:NY]
-    Yn = buf[NY : 2 * NY]
-    Yt = buf[2 * NY : 3 * NY]
-    K = buf[3 * NY : 10 * NY].reshape((7, NY))
-    Q = buf[10 * NY :].reshape((NY, 4))
+    Y, Yn, Yt, K, Q = step_arrays(NY)
     for i in range(NS):
         Y[i] = y[i]
     Y[Y_T] = t

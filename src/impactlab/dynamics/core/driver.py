@@ -36,7 +36,13 @@ from impactlab.dynamics.core.ends import approach_end, near_separation, opening
 from impactlab.dynamics.core.events import GO_ON, handle_event
 from impactlab.dynamics.core.history import record as record_row
 from impactlab.dynamics.core.history import record_substeps
-from impactlab.dynamics.core.integrator import dp_step, first_event, growth, integrate_to
+from impactlab.dynamics.core.integrator import (
+    dp_step,
+    first_event,
+    growth,
+    integrate_to,
+    step_arrays,
+)
 from impactlab.dynamics.core.layout import (
     C_A0,
     C_B0,
@@ -121,13 +127,7 @@ def _integrate(law, p, fric, c, md, y, sc, tstar, dstar, fscale, rtol, record, d
     MAX_STEPS. Returns (status, t, steps, mode, history, rows)."""
     hmax = tstar
     hmin = 1e-14 * tstar
-    # one allocation for the work arrays (views of it): ynew, yt, yev, K (7 rows), Q (4 columns)
-    buf = np.empty(14 * NS)
-    ynew = buf[:NS]
-    yt = buf[NS : 2 * NS]
-    yev = buf[2 * NS : 3 * NS]
-    K = buf[3 * NS : 10 * NS].reshape((7, NS))
-    Q = buf[10 * NS :].reshape((NS, 4))
+    ynew, yt, yev, K, Q = step_arrays(NS)
     t = 0.0
     h = 0.02 * tstar * rtol**0.2
     r, gold, evq = rhs_events(law, p, fric, c, md, state_tuple(y))

@@ -265,19 +265,37 @@ def first_event(gold, gnew, law, p, fric, c, md, y, K, h, Q, yt, record):
     return ev, theta
 
 
+@njit(cache=True, inline="always", error_model="numpy")
+def step_arrays(n):
+    """The work arrays of a step loop over a state of length ``n``, views of one allocation:
+    (new state, trial state, event state, stages K (7 x n), dense-output coefficients Q
+    (n x 4))."""
+    buf = np.empty(14 * n)
+    K = buf[3 * n : 10 * n].reshape((7, n))
+    return buf[:n], buf[n : 2 * n], buf[2 * n : 3 * n], K, buf[10 * n :].reshape((n, 4))
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def recompute_arrays(y, k0):
+    """The work arrays of a recomputation from ``y`` with derivative ``k0`` (any length n),
+    views of one allocation: (stages K (7 x n), current state = y, current derivative = k0)."""
+    n = y.shape[0]
+    buf = np.empty(9 * n)
+    cur = buf[7 * n : 8 * n]
+    kc = buf[8 * n :]
+    for i in range(n):
+        cur[i] = y[i]
+        kc[i] = k0[i]
+    return buf[: 7 * n].reshape((7, n)), cur, kc
+
+
 @njit(cache=True, error_model="numpy")
 def integrate_to(law, p, fric, c, md, y, k0, H, rtol, sc, out):
     """Integrate from ``y`` over exactly ``H`` with error control (the state at an event is
     recomputed this way, not taken from the 4th-order dense output; near a separation the force
     vanishes like (delta - delta_r)^1.5 and the step size adapts to it). Returns the number of
     steps taken."""
-    buf = np.empty(9 * NS)  # one allocation: Ks (7 rows), cur, kc
-    Ks = buf[: 7 * NS].reshape((7, NS))
-    cur = buf[7 * NS : 8 * NS]
-    kc = buf[8 * NS :]
-    for i in range(NS):
-        cur[i] = y[i]
-        kc[i] = k0[i]
+    Ks, cur, kc = recompute_arrays(y, k0)
     done = 0.0
     hh = H
     n = 0
