@@ -122,16 +122,7 @@ def test_sweep_matches_direct_engine_calls(tmp_path, engine) -> None:
         for j, sy in enumerate([250e6, 305e6]):
             flat = replace(AISI_1010, yield_strength=sy)
             model = get_law("ghaednia").build(ContactPair(AISI_201, flat), 0.0088)
-            out, stt = run_arrays(
-                model.law_id,
-                FRICTION_IDS["coulomb"],
-                np.array(model.params),
-                PAPER_ROD.to_params(flat),
-                np.array([[math.radians(th), 0.0, -1.41, 0.0]]),
-                np.array([0.2]),
-                tabulate=False,  # per-case parameters in the sweep: the closed forms
-            )
-            tab, _st = run_arrays(
+            args = (
                 model.law_id,
                 FRICTION_IDS["coulomb"],
                 np.array(model.params),
@@ -139,6 +130,9 @@ def test_sweep_matches_direct_engine_calls(tmp_path, engine) -> None:
                 np.array([[math.radians(th), 0.0, -1.41, 0.0]]),
                 np.array([0.2]),
             )
+            # per-case parameters in the sweep: the closed forms
+            out, stt = run_arrays(*args, tabulate=False)
+            tab, _st = run_arrays(*args)
             assert stt[0] == 0
             for name in ("e", "delta_p", "sliding_length", "duration", "mean_force"):
                 assert ds[name].values[i, j] == out[0, OUTPUT_FIELDS.index(name)]
