@@ -33,8 +33,11 @@ APPROACH_STEPS = 2.0
 MAX_W_EVENTS = 8
 #: The opening in w ends at this fraction of the Hertz interference scale d* (``error_scales``).
 OPENING = 0.1
-#: First steps of the approach and of the opening, as fractions of their span in w.
-APPROACH_FIRST = 0.5
+#: First steps of the approach and of the opening, as fractions of their span in w. At 0.5 the
+#: approach's first step was rejected in 71 % of 120 random impacts; 0.35 saves 0.47 steps per
+#: impact with the same errors (the opening's 0.5 is kept: one step over its whole span cost
+#: accuracy, the error estimate being unreliable there).
+APPROACH_FIRST = 0.35
 OPENING_FIRST = 0.5
 
 
