@@ -8,10 +8,12 @@ import math
 from numba import njit
 
 from impactlab.contact.kernels import (
+    KOGUT_KOMVOPOULOS,
     NPARAM,
     P_DSW,
     P_ESTAR,
     P_R,
+    hertz_force,
     loading_force,
     table_force,
     unloading_force,
@@ -86,13 +88,18 @@ def normal_force(law, p, md, delta):
     """Normal force [N] at interference ``delta`` [m] on the current branch.
 
     The tabulated loading curve is evaluated here, inline (``loading_force`` does the same
-    first): a call of ``loading_force`` with the parameter array costs two atomic reference
-    count updates, which serialise the pipeline (~15 % of an impact when every stage made one)."""
+    first), and so is the Hertz curve below the switch: a call of ``loading_force`` with the
+    parameter array costs two atomic reference count updates, which serialise the pipeline
+    (~15 % of an impact when every stage made one)."""
     if md[M_PHASE] == 0.0:
         if delta >= p[P_DSW]:
             f = table_force(p, NPARAM, delta)
             if f >= 0.0:
                 return f
+        elif law != KOGUT_KOMVOPOULOS:
+            # the elastic curve below the switch is Hertz's for every law but KK's (its own
+            # elastic fit), inline as in ``loading_force``: the same numbers without its call
+            return hertz_force(p[P_ESTAR], p[P_R], delta)
         return loading_force(law, p, delta)
     return unloading_force(p[P_ESTAR], md[M_RR], md[M_DR], delta)
 
