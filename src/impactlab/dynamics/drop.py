@@ -34,6 +34,7 @@ from impactlab.dynamics.checks import (
     check_velocity,
     gravity_value,
 )
+from impactlab.dynamics.core.layout import MU_NEGLIGIBLE
 from impactlab.dynamics.core.quality import energy_gained, gravity_dominated
 from impactlab.dynamics.drop_result import ContactRecord, DentRecord, DropHistory, DropResult
 from impactlab.dynamics.flexcore import drop
@@ -361,21 +362,22 @@ def simulate_drop(
         )
 
     gstar = float(body_params(bm.rigid, flat)[BP_GSTAR])
-    fid = COULOMB if (fric.friction_id == PARTIAL_SLIP and mu_v == 0.0) else fric.friction_id
+    mu_run = 0.0 if mu_v < MU_NEGLIGIBLE else mu_v  # frictionless, as in the rigid engine
+    fid = COULOMB if (fric.friction_id == PARTIAL_SLIP and mu_run == 0.0) else fric.friction_id
 
     def run(model: ContactModel, record: bool = False) -> _Run:
         widths = (math.nan, math.nan)
         if fid == PARTIAL_SLIP:  # the cells span the contact radius of a Mindlin pre-pass
-            pre = _run(bm, model, (th, vx, vy, w), (MINDLIN, mu_v, gstar, widths), g,
+            pre = _run(bm, model, (th, vx, vy, w), (MINDLIN, mu_run, gstar, widths), g,
                        (*options, False))  # fmt: skip
             widths = _cell_widths(pre, model)
-        return _run(bm, model, (th, vx, vy, w), (fid, mu_v, gstar, widths), g, (*options, record))
+        return _run(bm, model, (th, vx, vy, w), (fid, mu_run, gstar, widths), g, (*options, record))
 
     model, factor = _rate_model(rate, law, bm.rigid, flat, law_params, run, vn0)
     r = run(model, bool(history))
     if r.status != F.ST_OK:
         raise _status_error(r.status, model)
-    refs = references_used(model, fric, mu_v > 0.0) + bm.references
+    refs = references_used(model, fric, mu_run > 0.0) + bm.references
     if factor is not None:
         refs += get_rate_law(rate).references
     inputs = {"friction": fric.name, "mu": mu_v, "angle": th, "velocity_in": (vx, vy)}

@@ -55,7 +55,7 @@ def run_partial_slip(
 ) -> tuple[int, np.ndarray, np.ndarray | None]:
     """(status, outputs, history rows or None) of one partial-slip impact (checked inputs)."""
     out = np.empty(L.N_OUT)
-    if x.mu == 0.0:
+    if x.mu < L.MU_NEGLIGIBLE:  # frictionless, as in the core (``layout.MU_NEGLIGIBLE``)
         status, hist, nh = _core(x, COULOMB, 0.0, history, out)
         return int(status), out, (hist[:nh] if history else None)
     status, a_est = largest_radius(x)

@@ -14,6 +14,7 @@ import numpy as np
 from impactlab.bodies import BP_GSTAR, BP_INERTIA, BP_MASS, Rod, Sphere
 from impactlab.contact import kernels as k
 from impactlab.contact.base import ContactModel
+from impactlab.dynamics.core.layout import MU_NEGLIGIBLE
 
 _contact_radius: Callable[..., float] = k.contact_radius
 
@@ -41,7 +42,7 @@ class ReferenceProblem:
         self.dlim = float(self.p[k.P_DLIM])
         dsw = float(self.p[k.P_DSW])
         self.dsw = dsw if dsw > 0.0 else math.inf
-        self.fric = "none" if mu == 0.0 else friction
+        self.fric = "none" if mu < MU_NEGLIGIBLE else friction
         self.d = body.half_length
         self.R = body.tip_radius
         self.m = float(bp[BP_MASS])

@@ -59,6 +59,7 @@ from impactlab.dynamics.core.layout import (
     M_SIR,
     MAX_EVENTS,
     MAX_STEPS,
+    MU_NEGLIGIBLE,
     NH,
     NS,
     O_ANG,
@@ -323,7 +324,7 @@ def impact(law, p, fric, bp, th0, vx0, vy0, w0, mu, g, const_angle, rtol, record
     status = check_inputs(law, p, fric, bp, th0, vx0, vy0, w0, mu, g, rtol)
     if status != ST_OK:
         return status, hist[:0], 0
-    if mu == 0.0:
+    if mu < MU_NEGLIGIBLE:
         fric = FR_NONE
     c = constants(p, bp, th0, mu, g, const_angle)
     vn0 = vy0 - w0 * c[C_A0]

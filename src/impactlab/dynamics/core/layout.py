@@ -18,7 +18,13 @@ def _columns(fields: tuple[schema.Field, ...]) -> tuple[tuple[str, ...], int, di
 
 
 # --- friction ids (the public ones are in impactlab.friction) -----------------------------------
-FR_NONE = -1  # internal: mu == 0
+FR_NONE = -1  # internal: mu below MU_NEGLIGIBLE
+#: Friction coefficients below this run frictionless (FR_NONE, regime "frictionless"): the
+#: friction force is below 1e-9 of the normal force, so no output moves by more than ~1e-9
+#: relative (below any tolerance of the integration), while the stick/slip switches of so
+#: small a force (Mindlin, partial slip, a contact point starting at rest) are decided by
+#: round-off and chattered until MAX_EVENTS (found by hypothesis: mu = 1e-14).
+MU_NEGLIGIBLE = 1e-9
 FR_IMPULSE = 0
 FR_COULOMB = 1
 FR_MINDLIN = 2
