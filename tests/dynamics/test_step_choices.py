@@ -39,15 +39,15 @@ def test_unloading_factor_is_bounded_below() -> None:
 
 
 def test_sample_step_count() -> None:
-    """The 60 seeded random impacts of the accuracy contract take at most 23.5 steps on
-    average (24.0 before these step choices; the errors are held by ``test_accuracy``)."""
+    """The 60 seeded random impacts of the accuracy contract take 22.5 steps on average (23.8
+    before these step choices; the errors are held by ``test_accuracy``): at most 23."""
     steps = []
     for body, kw in SAMPLE:
         try:
             steps.append(simulate(body, **kw, history=False).n_steps)
         except ValueError:
             continue
-    assert np.mean(steps) <= 23.5, np.mean(steps)
+    assert np.mean(steps) <= 23.0, np.mean(steps)
 
 
 def test_benchmark_steps_hold_without_history_and_with() -> None:
