@@ -30,6 +30,7 @@ def test_source_files_cover_every_module_of_the_real_package() -> None:
         expected = set((pkg / d).rglob("*.py"))
         assert expected and expected <= files, d
     assert pkg / "schema.py" in files
+    assert pkg / "_floatbits.py" in files  # inlined into the table and the controller
     assert Path(driver.__file__).resolve() in files
     assert Path(kernels.__file__).resolve() in files
     assert not any("sweep" in f.parts or "cli" in f.parts for f in files)

@@ -6,9 +6,9 @@ Ghaednia's, was the largest single cost of an impact).
 Layout: the table is appended to the law's parameter vector ``p`` (``p[NPARAM:]``, built by
 ``contact.tabulate.with_table``): ``p[NPARAM] = TABLE_MAGIC``, ``p[NPARAM + 1] = 1/delta_lo``,
 ``p[NPARAM + 2] = u_max`` (a power of two), then one row of ``DEG + 1`` monomial coefficients
-per sub-interval. With u = delta/delta_lo in [1, u_max), ``math.frexp`` gives the octave k
-(u in [2^k, 2^(k+1))) and the mantissa, which SUB equal sub-intervals split; t in [-1, 1] is
-the position inside one. A row
+per sub-interval. With u = delta/delta_lo in [1, u_max), the float's own exponent and
+significand (``impactlab._floatbits``) give the octave k (u in [2^k, 2^(k+1))) and the position
+inside it, which SUB equal sub-intervals split; t in [-1, 1] is the position inside one. A row
 whose first coefficient is NaN (its check failed, e.g. a law's own switch inside it), or a
 delta outside [delta_lo, delta_lo u_max), is evaluated by the closed form: ``table_force``
 returns -1 for "not tabulated".
@@ -20,10 +20,10 @@ nodes and keeps it only where the relative difference is below ``TABLE_RTOL`` (1
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 from numba import njit
+
+from impactlab._floatbits import significand_exponent
 
 #: Polynomial degree of a row and sub-intervals per octave.
 DEG = 7
@@ -45,11 +45,11 @@ def table_force(p: np.ndarray, nparam: int, delta: float) -> float:
     u = delta * p[nparam + 1]
     if not (u >= 1.0 and u < p[nparam + 2]):
         return -1.0
-    m, e = math.frexp(u)
-    x = (2.0 * m - 1.0) * SUB
+    s, k = significand_exponent(u)  # u = s 2^k, s in [1, 2)
+    x = (s - 1.0) * SUB
     j = int(x)
     t = 2.0 * (x - j) - 1.0
-    row = nparam + HEADER + ((e - 1) * SUB + j) * (DEG + 1)
+    row = nparam + HEADER + (k * SUB + j) * (DEG + 1)
     if not (p[row + DEG] == p[row + DEG] and p[row] == p[row]):
         return -1.0
     # Estrin's scheme (pairs, then t^2, then t^4): a shorter dependency chain than Horner's

@@ -4,8 +4,8 @@ numba invalidates a cached function only when *its own* source file changes, but
 inlines functions of other files (its own modules, the contact-law kernels) and freezes the
 constants it imports (state and output layout, ``impactlab.schema``, the body-vector layout)
 into its machine code. We fingerprint every ``.py`` file below ``dynamics/core``, ``contact``
-and ``bodies`` (a glob: a new file is covered without a list to maintain), plus ``schema.py``
-and ``flags.py``, and flush the caches of the compiled functions when the fingerprint changes.
+and ``bodies`` (a glob: a new file is covered without a list to maintain), plus ``schema.py``,
+``flags.py`` and ``_floatbits.py``, and flush the caches of the compiled functions when the fingerprint changes.
 """
 
 from __future__ import annotations
@@ -24,7 +24,7 @@ PACKAGE = Path(__file__).resolve().parents[2]
 #: Folders (relative to the package) whose every ``.py`` file enters the fingerprint.
 SOURCE_DIRS = ("dynamics/core", "contact", "bodies")
 #: Single modules that enter the fingerprint.
-SOURCE_FILES = ("schema.py", "flags.py")
+SOURCE_FILES = ("schema.py", "flags.py", "_floatbits.py")
 #: Modules whose compiled functions are flushed together (by name prefix).
 MODULE_PREFIXES = ("impactlab.dynamics.core.", "impactlab.contact.")
 

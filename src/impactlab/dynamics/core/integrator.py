@@ -19,6 +19,7 @@ import math
 import numpy as np
 from numba import njit
 
+from impactlab._floatbits import significand_exponent
 from impactlab.dynamics.core._jit import njit_no_refcount
 from impactlab.dynamics.core.layout import NEV, NS
 from impactlab.dynamics.core.rhs import event_value, rhs, rhs_events
@@ -101,24 +102,25 @@ _G0, _G1, _G2, _G3 = (
     0.015114128135519066,
     -0.0037309280809643985,
 )
-#: 2^(-e/5) for the binary exponents e = -64 ... 64.
+#: 2^(-(e + 1)/5) for the binary exponents e = -65 ... 63 of err = s 2^e, s in [1, 2).
 _POW2_FIFTH = np.array([2.0 ** (-0.2 * e) for e in range(-64, 65)])
 
 
 @njit(cache=True, inline="always", error_model="numpy")
 def growth(err):
     """The step-size factor 0.9 err^-0.2 of the controller (err > 0, finite), within 2e-4 and
-    without ``pow``: err = m 2^e with m in [0.5, 1), m^-0.2 from a cubic, 2^(-e/5) from a table.
-    The factor is needed before the next step can start: ``pow`` (~25 ns) sat in the dependency
-    chain of every step. Beyond the table (err < 2^-65 or > 2^64) it returns 1e30 or 0, which
-    the callers' bounds clip."""
-    m, e = math.frexp(err)
-    if e < -64:
+    without ``pow`` or ``frexp``: err = s 2^e with s in [1, 2) read from the float's bits,
+    (s/2)^-0.2 from a cubic, 2^(-(e+1)/5) from a table. The factor is needed before the next
+    step can start: ``pow`` (~25 ns) sat in the dependency chain of every step. Beyond the table
+    (err < 2^-65 or >= 2^64, subnormals included) it returns 1e30 or 0, which the callers'
+    bounds clip."""
+    s, e = significand_exponent(err)
+    if e < -65:
         return 1e30
-    if e > 64:
+    if e > 63:
         return 0.0
-    t = 4.0 * m - 3.0
-    return 0.9 * (_G0 + t * (_G1 + t * (_G2 + t * _G3))) * _POW2_FIFTH[e + 64]
+    t = 2.0 * s - 3.0
+    return 0.9 * (_G0 + t * (_G1 + t * (_G2 + t * _G3))) * _POW2_FIFTH[e + 65]
 
 
 @njit(cache=True, inline="always", error_model="numpy")
