@@ -17,6 +17,7 @@ from impactlab.dynamics.core.layout import (
     EV_FRIC,
     EV_SEP,
     EV_SWITCH,
+    FR_MINDLIN,
     M_COMP,
     M_DR,
     M_PHASE,
@@ -25,6 +26,7 @@ from impactlab.dynamics.core.layout import (
 from impactlab.dynamics.core.normal import geometry
 from impactlab.dynamics.core.rhs import rhs_events
 from impactlab.dynamics.core.status import ST_NAN
+from impactlab.dynamics.core.transitions import without_switch
 from impactlab.dynamics.core.tuples import state_tuple
 
 #: The final approach in w starts when separation is predicted within this many steps.
@@ -39,6 +41,14 @@ OPENING = 0.1
 #: accuracy, the error estimate being unreliable there).
 APPROACH_FIRST = 0.35
 OPENING_FIRST = 0.5
+#: The opening runs through the switch to the elastic-plastic curve without stopping at it
+#: where the switch lies below this fraction of the opening's end (in delta; not with Mindlin
+#: friction). Every law's force is continuous there; stopping at the switch cost a w-step and
+#: a restart, ~1 us or 18 % of the benchmark impact, for no accuracy: the largest errors of
+#: three random samples (400, 1000, 1000 impacts) were unchanged. Mindlin's tangential
+#: stiffness follows the contact radius, whose law changes at the switch: there the stop is
+#: kept (without it the sample's largest error, a sliding length, doubled).
+THROUGH_SWITCH = 0.1
 
 
 @njit(cache=True, error_model="numpy")
@@ -46,7 +56,8 @@ def opening(
     law, p, fric, c, md, y, K, gold, rtol, sc, tstar, dstar, fscale, acc, diag, record, hist, nh
 ):
     """The start of the contact in w (``w_integrate``) from first touch to OPENING d*, through
-    the switch to the elastic-plastic curve where it lies before. Returns (ST_NAN, a stop
+    the switch to the elastic-plastic curve where it lies before (stopping at it unless it lies
+    below THROUGH_SWITCH of the way). Returns (ST_NAN, a stop
     status, or GO_ON with the derivative at ``y`` in ``K[0]``, t, steps, events, constants,
     mode, event tuple, hist, nh)."""
     target = min(OPENING * dstar, 0.5 * c[C_DLIM])
@@ -55,7 +66,7 @@ def opening(
     nev = 0
     wa = 0.0
     st = W_REACHED
-    if c[C_DSW] < target:
+    if c[C_DSW] < target and (fric == FR_MINDLIN or c[C_DSW] >= THROUGH_SWITCH * target):
         wsw = math.sqrt(c[C_DSW])
         st, t, k, hist, nh, evq, _w = w_integrate(
             law, p, fric, c, md, y, t, 0.0, wsw, 1.0, rtol, sc, tstar, acc, diag, record, hist, nh
@@ -96,6 +107,8 @@ def opening(
         n += k
     if st == W_NAN:
         return ST_NAN, t, n, nev, c, md, gold, hist, nh
+    if st == W_REACHED and c[C_DSW] < target:  # through the switch (THROUGH_SWITCH)
+        c = without_switch(c)
     r, gold, _q = rhs_events(law, p, fric, c, md, state_tuple(y))
     for i in range(NS):
         K[0, i] = r[i]
