@@ -8,8 +8,10 @@ from the IEEE 754 fields: a bit cast and two integer operations, inline.
 
 from __future__ import annotations
 
+import struct
+
 from llvmlite import ir
-from numba import njit, types
+from numba import config, njit, types
 from numba.extending import intrinsic
 
 #: The significand's bits of a float64 and the bits of the exponent of 1.0.
@@ -41,6 +43,15 @@ def _float_of(typingctx, i):  # type: ignore[no-untyped-def]
     return types.float64(types.int64), codegen
 
 
+def _significand_exponent_py(x: float) -> tuple[float, int]:
+    """``significand_exponent`` in plain Python (``NUMBA_DISABLE_JIT=1``: intrinsics cannot
+    run there), from the same bits."""
+    (bits,) = struct.unpack("<q", struct.pack("<d", x))
+    e = ((bits >> 52) & 0x7FF) - 1023
+    (s,) = struct.unpack("<d", struct.pack("<q", (bits & _FRACTION) | _ONE))
+    return s, e
+
+
 @njit(cache=True, inline="always", error_model="numpy")
 def significand_exponent(x):  # type: ignore[no-untyped-def]
     """(s, e) with x = s 2^e and s in [1, 2), for a positive normal float64 ``x`` (frexp's
@@ -49,3 +60,7 @@ def significand_exponent(x):  # type: ignore[no-untyped-def]
     bits: int = _bits_of(x)  # type: ignore[call-arg]
     e = ((bits >> 52) & 0x7FF) - 1023
     return _float_of((bits & _FRACTION) | _ONE), e  # type: ignore[call-arg]
+
+
+if config.DISABLE_JIT:  # type: ignore[attr-defined]  # plain Python: no intrinsics
+    significand_exponent = _significand_exponent_py  # type: ignore[assignment]

@@ -5,7 +5,8 @@ inlines functions of other files (its own modules, the contact-law kernels) and 
 constants it imports (state and output layout, ``impactlab.schema``, the body-vector layout)
 into its machine code. We fingerprint every ``.py`` file below ``dynamics/core``, ``contact``
 and ``bodies`` (a glob: a new file is covered without a list to maintain), plus ``schema.py``,
-``flags.py`` and ``_floatbits.py``, and flush the caches of the compiled functions when the fingerprint changes.
+``flags.py`` and ``_floatbits.py``, and flush the caches of the compiled functions when the
+fingerprint changes.
 """
 
 from __future__ import annotations
