@@ -42,7 +42,7 @@ def test_deleted_chunk_data_is_reported_refused_and_recomputed(stores, tmp_path)
     _chunk_file(store, 3, "e").unlink()  # data gone, completion marker kept
     info = store_info(store)
     assert info["chunks_done"] == "7 of 8"
-    assert "chunk 3 (e/c/3/0: missing)" in info["damaged"]
+    assert "chunk 3 (e/c.3.0: missing)" in info["damaged"]
     assert sum(info["status"].values()) == 70  # the damaged chunk's 10 cases are left out
     with pytest.raises(DamagedStoreError, match=r"1 damaged chunk\(s\): chunk 3 .*run the sweep"):
         open_sweep(store)
@@ -56,7 +56,7 @@ def test_truncated_chunk_file_is_refused_in_one_line(stores, monkeypatch, capsys
     f = _chunk_file(store, 5, "status")
     f.write_bytes(f.read_bytes()[:7])
     info = store_info(store)  # no blosc traceback: the damaged chunk is not read
-    assert "chunk 5 (status/c/5/0: changed (size or checksum))" in info["damaged"]
+    assert "chunk 5 (status/c.5.0: changed (size or checksum))" in info["damaged"]
     for args in (
         ["export", str(store), str(store.parent / "x.nc")],
         ["plot", str(store), "-o", str(store.parent / "p")],
@@ -80,9 +80,8 @@ def test_a_chunk_of_fill_values_only_has_no_file_and_is_intact(tmp_path) -> None
         name="void", chunk_size=4, grid={"vy": [-6.0, -7.0]}, fixed={"mu": 0.1, "angle": 0.3}
     )
     store = run_sweep(st, tmp_path / "v.zarr", evaluator=FakeEvaluator(), quiet=True).path
-    assert not (store / "e" / "c").exists()
+    assert not (store / "e" / "c.0").exists()
     assert "damaged" not in store_info(store)
     assert int(open_sweep(store)["status"].sum()) == 2
-    (store / "e" / "c").mkdir()
-    (store / "e" / "c" / "0").write_bytes(b"junk")
-    assert "e/c/0: changed (unexpected file)" in store_info(store)["damaged"]
+    (store / "e" / "c.0").write_bytes(b"junk")
+    assert "e/c.0: changed (unexpected file)" in store_info(store)["damaged"]

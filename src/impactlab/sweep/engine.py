@@ -80,23 +80,46 @@ def engine_available() -> bool:
 # -- numba cache statistics ----------------------------------------------------------------------
 
 
+#: (the impactlab modules loaded, their compiled functions) of the last scan
+_SCANNED: tuple[tuple[int, ...], list[Dispatcher]] = ((), [])
+
+
+def _dispatchers() -> list[Dispatcher]:
+    """The compiled functions of impactlab's loaded modules (scanned again only when the set of
+    loaded modules changed: a scan costs about 4 ms, and a sweep asks twice per chunk)."""
+    global _SCANNED
+    mods = [m for n, m in list(sys.modules.items()) if n.startswith("impactlab.") and m]
+    key = tuple(id(m) for m in mods)
+    if key != _SCANNED[0]:
+        found: dict[int, Dispatcher] = {}
+        for mod in mods:
+            for obj in list(vars(mod).values()):
+                if isinstance(obj, Dispatcher):
+                    found.setdefault(id(obj), obj)
+        _SCANNED = (key, list(found.values()))
+    return _SCANNED[1]
+
+
+#: (compiled signatures of the dispatchers, their stats) of the last count
+_COUNTED: tuple[tuple[int, int], dict[str, int]] = ((-1, -1), {})
+
+
 def numba_cache_stats() -> dict[str, int]:
     """Cache hits and misses (compilations) of the compiled functions loaded from impactlab's
     modules in this process: {"hits": ..., "misses": ..., "dispatchers": ...}. A worker that
-    loads the kernels from the on-disk cache shows hits > 0 and misses == 0."""
-    hits = misses = count = 0
-    seen: set[int] = set()
-    for name, mod in list(sys.modules.items()):
-        if not name.startswith("impactlab.") or mod is None:
-            continue
-        for obj in list(vars(mod).values()):
-            if isinstance(obj, Dispatcher) and id(obj) not in seen:
-                seen.add(id(obj))
-                st = obj.stats
-                count += 1
-                hits += sum(st.cache_hits.values())
-                misses += sum(st.cache_misses.values())
-    return {"hits": hits, "misses": misses, "dispatchers": count}
+    loads the kernels from the on-disk cache shows hits > 0 and misses == 0. (Counted again only
+    when a signature was added since: a hit or a miss adds one.)"""
+    global _COUNTED
+    dispatchers = _dispatchers()
+    signatures = (len(dispatchers), sum(len(d.overloads) for d in dispatchers))
+    if signatures != _COUNTED[0]:
+        hits = misses = 0
+        for obj in dispatchers:
+            st = obj.stats
+            hits += sum(st.cache_hits.values())
+            misses += sum(st.cache_misses.values())
+        _COUNTED = (signatures, {"hits": hits, "misses": misses, "dispatchers": len(dispatchers)})
+    return dict(_COUNTED[1])
 
 
 # -- the engine --------------------------------------------------------------------------------

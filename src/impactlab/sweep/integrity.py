@@ -9,7 +9,7 @@ longer match (deleted, truncated, changed) is *damaged*: ``info`` reports it, ``
 checksums (the text ``"<k>"``) are trusted as they are.
 
 The writer records the digests as it writes the files
-(:class:`~impactlab.sweep.storebuild.RecordingStore`), so a marker costs no second read of the
+(:class:`~impactlab.sweep.chunkfiles.ChunkWriter`), so a marker costs no second read of the
 chunk's files. The store's Zarr metadata (its ``zarr.json`` files) is checked by
 :func:`check_metadata`.
 """
@@ -35,11 +35,6 @@ class DamagedStoreError(ValueError):
 class CorruptStoreError(ValueError):
     """A store's Zarr metadata (a ``zarr.json``) cannot be read: junk, cut short, not JSON or
     not Zarr's. The message names the store, the file and what is wrong with it."""
-
-
-def chunk_key(name: str, coords: Iterable[int]) -> str:
-    """The file of array ``name`` at chunk coordinates ``coords`` (Zarr v3 default encoding)."""
-    return "/".join([name, "c", *(str(int(c)) for c in coords)])
 
 
 def digest(data: Any) -> str:
@@ -71,7 +66,7 @@ def marker_text(
 
 
 def check_marker(root: Path, text: str) -> str | None:
-    """Why the chunk recorded by marker ``text`` is damaged (e.g. ``"e/c/3/0: missing"``), or
+    """Why the chunk recorded by marker ``text`` is damaged (e.g. ``"e/c.3.0: missing"``), or
     None when all its files match (or the marker predates the checksums)."""
     try:
         record = json.loads(text)
@@ -93,7 +88,7 @@ def check_marker(root: Path, text: str) -> str | None:
 
 
 def describe(damaged: Mapping[int, str]) -> str:
-    """One line naming the damaged chunks: ``"chunk 3 (e/c/3/0: missing), chunk 7 (...)"``."""
+    """One line naming the damaged chunks: ``"chunk 3 (e/c.3.0: missing), chunk 7 (...)"``."""
     items = [f"chunk {k} ({why})" for k, why in sorted(damaged.items())]
     more = len(items) - _NAMED
     return ", ".join(items[:_NAMED]) + (f" and {more} more" if more > 0 else "")

@@ -28,6 +28,7 @@ import numpy as np
 import xarray as xr
 import zarr
 
+from impactlab.sweep.chunkfiles import ChunkWriter
 from impactlab.sweep.hooks import checkpoint
 from impactlab.sweep.inputs import INPUTS, OUTPUTS
 from impactlab.sweep.integrity import (
@@ -35,13 +36,12 @@ from impactlab.sweep.integrity import (
     DamagedStoreError,
     check_marker,
     check_metadata,
-    chunk_key,
     damaged_error,
     marker_text,
 )
 from impactlab.sweep.locking import acquire_lock, release_lock, stale, write_lock
 from impactlab.sweep.options import STUDY_FORMAT
-from impactlab.sweep.storebuild import META, ChunkWriter, StoreMeta, build_store
+from impactlab.sweep.storebuild import META, StoreMeta, build_store
 from impactlab.sweep.study import Study
 
 __all__ = [
@@ -102,7 +102,7 @@ class SweepStore:
 
     def verify(self, indices: Iterable[int] | None = None) -> dict[int, str]:
         """The damaged chunks among ``indices`` (default: every chunk marked done), each with
-        what is wrong with it (e.g. ``"e/c/3/0: missing"``)."""
+        what is wrong with it (e.g. ``"e/c.3.0: missing"``)."""
         damaged = {}
         for k in sorted(self.done_chunks() if indices is None else indices):
             try:
@@ -295,24 +295,21 @@ class SweepStore:
         lay = study.layout
         block = lay.block(index)
         bshape = tuple(s.stop - s.start for s in block)
-        coords = tuple(s.start // c for s, c in zip(block, lay.chunks, strict=True))
         items: list[tuple[str, Any, np.ndarray]] = []
         for name, values in outputs.items():
-            z = writer.arrays[name]
+            a = writer.arrays[name]
             v = np.asarray(values).reshape(bshape)
-            if np.dtype(z.dtype).kind == "i" and v.dtype.kind == "f":
-                v = np.where(np.isfinite(v), v, z.fill_value)  # NaN -> the "none" code
-            items.append((name, block, v.astype(z.dtype, copy=False)))
+            if a.dtype.kind == "i" and v.dtype.kind == "f":
+                v = np.where(np.isfinite(v), v, a.fill)  # NaN -> the "none" code
+            items.append((name, block, v))
         items.append(("status", block, np.asarray(status, dtype=np.int32).reshape(bshape)))
-        keys = [chunk_key(name, coords) for name, _, _ in items]
         if study.sample is not None and all(s.start == 0 for s in block[:-1]):
             sl = block[-1]
-            for name in study.sample.inputs:
-                items.append((name, sl, study.sample.draw(name, sl.start, sl.stop)))
-                keys.append(chunk_key(name, coords[-1:]))
+            draw = study.sample.draw
+            items.extend((n, sl, draw(n, sl.start, sl.stop)) for n in study.sample.inputs)
         digests = writer.write(items)
         checkpoint(f"chunk:{index}:data")
-        self.mark_done(index, marker_text(index, self.path, keys, digests))
+        self.mark_done(index, marker_text(index, self.path, list(digests), digests))
         checkpoint(f"chunk:{index}:done")
 
     # -- reading ---------------------------------------------------------------------------------

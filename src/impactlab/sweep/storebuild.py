@@ -1,7 +1,7 @@
 """Building a new sweep store: its arrays, attributes and bookkeeping, written into an empty
 directory (``SweepStore.create`` builds it in a temporary sibling and renames it into place, so
-a store either exists complete or not at all); and the writer of its chunks
-(:class:`ChunkWriter`).
+a store either exists complete or not at all). Its chunks are written by
+:mod:`~impactlab.sweep.chunkfiles`.
 
 Layout (a Zarr v3 group that ``xarray.open_zarr`` reads):
 
@@ -15,35 +15,26 @@ Layout (a Zarr v3 group that ``xarray.open_zarr`` reads):
 
 from __future__ import annotations
 
-import asyncio
 import json
-import os
-from collections.abc import Callable, Mapping, Sequence
-from concurrent.futures import Future, ThreadPoolExecutor
-from contextlib import suppress
+from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, TypeVar
+from typing import Any
 
 import numpy as np
 import zarr
 from zarr.codecs import BloscCodec
-from zarr.core.sync import sync
-from zarr.storage import LocalStore
 
 from impactlab.flags import ResultFlag, messages
 from impactlab.sweep.dimensions import SAMPLE_DIM
 from impactlab.sweep.hooks import checkpoint
 from impactlab.sweep.inputs import INPUTS, INTEGER_OUTPUTS, get_input, output_spec
-from impactlab.sweep.integrity import digest
 from impactlab.sweep.options import STUDY_FORMAT
 from impactlab.sweep.status import SWEEP_STATUS_MESSAGES
 from impactlab.sweep.study import Study
 
 #: The bookkeeping sub-group of a store.
 META = ".sweep"
-
-_T = TypeVar("_T")
 
 
 @dataclass(frozen=True)
@@ -56,6 +47,13 @@ class StoreMeta:
     status_messages: Mapping[int, str]
     regimes: Mapping[int, str]
     engine: str
+
+
+#: Chunk files named ``<array>/c.<i>.<j>...`` (Zarr v3's default chunk-key encoding with the
+#: "." separator): every chunk file of an array in its one folder. The "/" separator makes a
+#: folder per chunk row and dimension, and creating folders is what made the writes costly when
+#: every core computes (docs/sweep.md, "Benchmark"). Stores made before keep their "/".
+CHUNK_KEYS: dict[str, Any] = {"chunk_key_encoding": {"name": "default", "separator": "."}}
 
 
 def compressors() -> Any:
@@ -85,6 +83,7 @@ def _new_array(g: Any, name: str, value: Any, dims: tuple[str, ...]) -> None:
         fill_value="" if text else np.nan,
         dimension_names=dims,
         attributes=_attrs_units(name),
+        **CHUNK_KEYS,
     )
     z[...] = np.array(value, dtype=str) if text else value
 
@@ -109,6 +108,7 @@ def _create_sampled(g: Any, study: Study) -> list[str]:
             fill_value=np.nan,
             dimension_names=(SAMPLE_DIM,),
             compressors=compressors(),
+            **CHUNK_KEYS,
             attributes={
                 **_attrs_units(name),
                 "distribution": json.dumps(study.sample.inputs[name].to_dict()),
@@ -170,6 +170,7 @@ def _chunked(g: Any, name: str, study: Study, dtype: str, fill: float, attrs: An
         dimension_names=lay.dims,
         attributes=attrs,
         compressors=compressors(),
+        **CHUNK_KEYS,
     )
 
 
@@ -222,126 +223,3 @@ def build_store(path: Path, study: Study, meta: StoreMeta) -> None:
     (path / META / "done").mkdir(parents=True, exist_ok=True)
     text = json.dumps(study.to_dict(), indent=1, sort_keys=True) + "\n"
     (path / META / "study.json").write_text(text)
-
-
-# -- the writer of the chunks -------------------------------------------------------------------
-
-
-class RecordingStore(LocalStore):
-    """The writer's view of a store: a ``LocalStore`` that records the digest of every file it
-    writes (``None`` for a file it removes: Zarr removes the file of a chunk left all fill value)
-    in ``digests``, so the completion marker is made from the bytes just written.
-
-    A file is written where ``set`` is awaited, not handed to a thread as ``LocalStore`` does:
-    the sweep's writer is a thread of its own, and a second hop per file only adds CPU. Files
-    are atomic as with ``LocalStore``: a ``*.partial`` name first, then a rename (a writer
-    killed midway leaves the ``*.partial`` file, removed on resume).
-    """
-
-    def __init__(self, root: Path | str, *, read_only: bool = False) -> None:
-        super().__init__(root, read_only=read_only)
-        self.digests: dict[str, str | None] = {}
-
-    async def set(self, key: str, value: Any) -> None:
-        if not self._is_open:
-            await self._open()
-        self._check_writable()
-        data = value.as_buffer_like()
-        path = os.path.join(self.root, key)
-        os.makedirs(os.path.dirname(path), exist_ok=True)
-        tmp = f"{path}.{os.getpid()}.partial"
-        try:
-            with open(tmp, "wb") as f:
-                f.write(data)
-            os.replace(tmp, path)
-        except BaseException:
-            with suppress(OSError):
-                os.unlink(tmp)
-            raise
-        self.digests[key] = digest(data)
-
-    async def delete(self, key: str) -> None:
-        path = os.path.join(self.root, key)
-        if os.path.isdir(path):  # not a chunk's file: as LocalStore does it
-            await super().delete(key)
-            return
-        self._check_writable()
-        with suppress(FileNotFoundError):
-            os.unlink(path)
-        self.digests[key] = None
-
-    def take(self) -> dict[str, str | None]:
-        """The digests recorded since the last ``take`` (and forget them)."""
-        out, self.digests = self.digests, {}
-        return out
-
-
-class _InlineExecutor(ThreadPoolExecutor):
-    """Runs each call at once in the submitting thread (no thread is ever started): what Zarr
-    hands to ``asyncio.to_thread`` (the Blosc encoding) runs in the writer's own thread."""
-
-    def submit(self, fn: Callable[..., _T], /, *args: Any, **kwargs: Any) -> Future[_T]:
-        fut: Future[_T] = Future()
-        try:
-            fut.set_result(fn(*args, **kwargs))
-        except Exception as exc:
-            fut.set_exception(exc)
-        return fut
-
-
-async def _set_all(items: Sequence[tuple[Any, Any, np.ndarray]]) -> None:
-    """``array[selection] = values`` for all ``items`` together (Zarr's async API); the first
-    error is raised once every write has ended."""
-    ends = await asyncio.gather(
-        *(z.async_array.setitem(sel, v) for z, sel, v in items), return_exceptions=True
-    )
-    for end in ends:
-        if isinstance(end, BaseException):
-            raise end
-
-
-class ChunkWriter:
-    """Arrays of a store opened for ``SweepStore.write_chunk``; close it when done.
-
-    All the arrays of a chunk are written in one batch through Zarr's async API, on an event
-    loop of the writer's own run in the calling thread, with Zarr's blocking steps run inline
-    (``_InlineExecutor``) and the files written by ``RecordingStore``, which keeps their digests
-    for the completion marker: all of a chunk's writing is done by the one calling thread, with
-    no thread hop per array or file (about 40 % less CPU than one ``z[block] = v`` per array:
-    docs/sweep.md, "Benchmark"). Where an event loop already runs in the calling thread (a
-    notebook's), Zarr's own loop thread does the batch.
-    """
-
-    def __init__(self, path: Path, names: Sequence[str]) -> None:
-        self.store = RecordingStore(path)
-        group = zarr.open_group(store=self.store, mode="r+")
-        self.arrays: dict[str, Any] = {n: group[n] for n in names}
-        self._loop: asyncio.AbstractEventLoop | None = None
-
-    def write(self, items: Sequence[tuple[str, Any, np.ndarray]]) -> dict[str, str | None]:
-        """Write ``(name, selection, values)`` items; returns the digests of the files written
-        (None: Zarr removed the file, the chunk being all fill value)."""
-        self.store.take()
-        batch = _set_all([(self.arrays[n], sel, v) for n, sel, v in items])
-        try:
-            asyncio.get_running_loop()
-        except RuntimeError:  # the usual case: no event loop runs in this thread
-            if self._loop is None:
-                self._loop = asyncio.new_event_loop()
-                self._loop.set_default_executor(_InlineExecutor(max_workers=1))
-            self._loop.run_until_complete(batch)
-        else:
-            sync(batch)
-        return self.store.take()
-
-    def close(self) -> None:
-        """Close the event loop (writes cut short by an interrupt are cancelled)."""
-        loop, self._loop = self._loop, None
-        if loop is None:
-            return
-        pending = asyncio.all_tasks(loop)
-        for task in pending:
-            task.cancel()
-        if pending:
-            loop.run_until_complete(asyncio.gather(*pending, return_exceptions=True))
-        loop.close()
