@@ -57,6 +57,8 @@ from impactlab.dynamics.core.integrator import (
     E5,
     E6,
     E7,
+    G_ROUNDOFF,
+    THETA_TOL,
     dense,
     dense_coeffs,
     growth,
@@ -224,6 +226,7 @@ def _locate(law, p, fric, c, md, Y, K, w, sgn, h, Q, Yt, g0, b, g1):
     method on the dense output (as ``integrator.locate``); returns the bracket end where
     g > 0."""
     a, fa, fb = 0.0, g0, g1
+    tiny = G_ROUNDOFF * max(-g0, g1)
     side = 0
     for _ in range(100):
         th = (a * fb - b * fa) / (fb - fa)
@@ -231,6 +234,16 @@ def _locate(law, p, fric, c, md, Y, K, w, sgn, h, Q, Yt, g0, b, g1):
             th = 0.5 * (a + b)
         dense(Y, K, h, th, Q, Yt)
         f = _g_friction(law, p, fric, c, md, Yt, w + sgn * th * h, sgn)
+        if abs(f) <= tiny:  # zero to round-off: as integrator.locate
+            if f > 0.0:
+                return th
+            probe = th + max(THETA_TOL, 2.0 * (-f) * (b - th) / (fb - f))
+            if probe < b:
+                dense(Y, K, h, probe, Q, Yt)
+                fp = _g_friction(law, p, fric, c, md, Yt, w + sgn * probe * h, sgn)
+                if fp > 0.0:
+                    return probe
+                th, f = probe, fp
         if f > 0.0:
             b, fb = th, f
             if side == 1:
@@ -241,7 +254,7 @@ def _locate(law, p, fric, c, md, Y, K, w, sgn, h, Q, Yt, g0, b, g1):
             if side == -1:
                 fb *= 0.5
             side = -1
-        if b - a <= 1e-14:
+        if b - a <= THETA_TOL:
             break
     return b
 

@@ -209,14 +209,28 @@ def dense_coeffs(K, Q):
             Q[i, j] = s
 
 
+#: |g| at or below this fraction of the bracket's initial |g| is zero to round-off (the event
+#: functions are sums of terms of their own scale, evaluated to ~1e-15 of it).
+G_ROUNDOFF = 1e-13
+#: Closed bracket width in theta (a fraction of the step).
+THETA_TOL = 1e-14
+
+
 @njit_no_refcount
 def locate(ev, g0, g1, law, p, fric, c, md, y0, K, h, Q, yt):
     """theta in (0, 1] where event ``ev`` fires (g goes from <= 0 to > 0): Illinois method on
-    the dense output. Returns the bracket end where g > 0."""
+    the dense output. Returns the bracket end where g > 0.
+
+    An iterate where g is zero to round-off (``G_ROUNDOFF`` of the initial bracket's scale)
+    ends the search: on the g > 0 side it is returned; on the g <= 0 side a probe just past it
+    (twice the distance to the secant root, at least ``THETA_TOL``) closes the bracket. The
+    Illinois iterates would otherwise creep on from that side, and an exact zero made them
+    bisect towards the far end (up to 42 evaluations; docs/engine/benchmarks.md, "Session 8")."""
     a = 0.0
     fa = g0
     b = 1.0
     fb = g1
+    tiny = G_ROUNDOFF * max(-g0, g1)
     side = 0
     prev = 2.0
     for _ in range(100):
@@ -225,6 +239,18 @@ def locate(ev, g0, g1, law, p, fric, c, md, y0, K, h, Q, yt):
             th = 0.5 * (a + b)
         dense(y0, K, h, th, Q, yt)
         f = event_value(ev, law, p, fric, c, md, state_tuple(yt))
+        if abs(f) <= tiny:
+            if f > 0.0:  # past the root by round-off
+                return th
+            # short of it by round-off: probe just past the root (secant slope to b)
+            probe = th + max(THETA_TOL, 2.0 * (-f) * (b - th) / (fb - f))
+            if probe < b:
+                dense(y0, K, h, probe, Q, yt)
+                fp = event_value(ev, law, p, fric, c, md, state_tuple(yt))
+                if fp > 0.0:
+                    return probe
+                th = probe
+                f = fp
         if f > 0.0:
             b = th
             fb = f
@@ -237,9 +263,8 @@ def locate(ev, g0, g1, law, p, fric, c, md, y0, K, h, Q, yt):
             if side == -1:
                 fb *= 0.5
             side = -1
-        # converged: the bracket is closed, or the iterates stalled on the g > 0 side (a
-        # stall on the g <= 0 side, e.g. at an exact zero, bisects on towards b)
-        if b - a <= 1e-14 or (b == th and abs(th - prev) <= 1e-14):
+        # converged: the bracket is closed, or the iterates stalled on the g > 0 side
+        if b - a <= THETA_TOL or (b == th and abs(th - prev) <= THETA_TOL):
             break
         prev = th
     return b
