@@ -58,12 +58,14 @@ from impactlab.dynamics.core.integrator import (
     E6,
     E7,
     G_ROUNDOFF,
+    RECOMPUTE_LEN,
+    STEP_LEN,
     THETA_TOL,
     dense,
     dense_coeffs,
     growth,
-    recompute_arrays,
-    step_arrays,
+    recompute_views,
+    step_views,
 )
 from impactlab.dynamics.core.layout import (
     EV_FRIC,
@@ -86,6 +88,8 @@ from impactlab.dynamics.core.tuples import state_tuple
 
 #: Components of the approach state: the state ``y`` and the time.
 NY = NS + 1
+#: Scratch of a w-integration (``w_integrate``): its step loop and a recomputation.
+W_WORK_LEN = (STEP_LEN + RECOMPUTE_LEN) * NY
 Y_T = NS
 #: Outcomes of ``w_integrate``: ``wb`` reached, back to the time integration, non-finite force,
 #: a stick/slip switch reached (the final approach: the driver switches and goes on in w).
@@ -260,10 +264,10 @@ def _locate(law, p, fric, c, md, Y, K, w, sgn, h, Q, Yt, g0, b, g1):
 
 
 @njit(cache=True, error_model="numpy")
-def _to(law, p, fric, c, md, Y, k0, w, sgn, H, rtol, sc, tscale, out):
+def _to(law, p, fric, c, md, Y, k0, w, sgn, H, rtol, sc, tscale, out, work):
     """Integrate from (Y, w) over exactly H in u with error control into ``out`` (the state at
     an event is recomputed, as ``integrator.integrate_to``); returns (steps, quantities)."""
-    Ks, cur, kc = recompute_arrays(Y, k0)
+    Ks, cur, kc = recompute_views(work, Y, k0)
     done = 0.0
     hh = H
     n = 0
@@ -294,11 +298,11 @@ def _to(law, p, fric, c, md, Y, k0, w, sgn, H, rtol, sc, tscale, out):
 
 @njit(cache=True, error_model="numpy")
 def w_integrate(
-    law, p, fric, c, md, y, t, wa, wb, first, rtol, sc, tscale, acc, diag, record, hist, nh
+    law, p, fric, c, md, y, t, wa, wb, first, rtol, sc, tscale, acc, diag, record, hist, nh, work
 ):
     """Integrate from state ``y`` at time ``t`` in w from ``wa`` to ``wb``: the restitution to
     separation (``wb < wa``, normally ``wb = 0``) or the opening (``wb > wa``); ``first``: the
-    first step as a fraction of the span.
+    first step as a fraction of the span; ``work``: W_WORK_LEN values of scratch.
 
     Returns (outcome ``W_*``, time, steps, hist, nh, quantities at the end, w at the end).
     ``y`` is updated in place: the state at ``wb``, at a Coulomb stick/slip switch of the final
@@ -306,7 +310,7 @@ def w_integrate(
     integration gave up (fallback: another event fired; the time integration takes over)."""
     sgn = 1.0 if wb > wa else -1.0
     span = abs(wb - wa)
-    Y, Yn, Yt, K, Q = step_arrays(NY)
+    Y, Yn, Yt, K, Q = step_views(work, NY)
     for i in range(NS):
         Y[i] = y[i]
     Y[Y_T] = t
@@ -358,7 +362,10 @@ def w_integrate(
                 dense(Y, K, h, j / HISTORY_SUBSTEPS, Q, Yt)
                 hist, nh = record_row(hist, nh, Yt[Y_T], law, p, fric, c, md, state_tuple(Yt))
         if ev >= 0:  # the stick/slip switch: its state recomputed, then the driver switches
-            k, evq_new = _to(law, p, fric, c, md, Y, K[0], w, sgn, theta * h, rtol, sc, tscale, Yn)
+            k, evq_new = _to(
+                law, p, fric, c, md, Y, K[0], w, sgn, theta * h, rtol, sc, tscale, Yn,
+                work[STEP_LEN * NY :],
+            )  # fmt: skip
             n += k
             if not track(acc, law, p, fric, c, md, state_tuple(Yn), evq_new, Y[Y_T], Yn[Y_T], diag):
                 return W_NAN, Yn[Y_T], n, hist, nh, evq_new, w

@@ -32,16 +32,19 @@ from impactlab.dynamics.core.accumulate import (
     NA,
     track,
 )
+from impactlab.dynamics.core.approach import W_WORK_LEN
 from impactlab.dynamics.core.ends import approach_end, near_separation, opening
 from impactlab.dynamics.core.events import GO_ON, handle_event
 from impactlab.dynamics.core.history import record as record_row
 from impactlab.dynamics.core.history import record_substeps
 from impactlab.dynamics.core.integrator import (
+    RECOMPUTE_LEN,
+    STEP_LEN,
     dp_step,
     first_event,
     growth,
     integrate_to,
-    step_arrays,
+    step_views,
 )
 from impactlab.dynamics.core.layout import (
     C_A0,
@@ -113,6 +116,11 @@ from impactlab.dynamics.core.status import (
 )
 from impactlab.dynamics.core.tuples import state_tuple
 
+#: Scratch of the step loop (``_integrate``): its arrays, a recomputation, a w-integration.
+INTEGRATE_WORK_LEN = (STEP_LEN + RECOMPUTE_LEN) * NS + W_WORK_LEN
+#: Scratch of an impact: state, accumulators, error scales and the step loop's.
+IMPACT_WORK_LEN = 2 * NS + NA + INTEGRATE_WORK_LEN
+
 
 @njit(cache=True, inline="always", error_model="numpy")
 def _shrink(err, h, hmin):
@@ -143,12 +151,17 @@ def _unloading_factor(md):
 
 
 @njit(cache=True, error_model="numpy")
-def _integrate(law, p, fric, c, md, y, sc, tstar, dstar, fscale, rtol, record, diag, hist, acc):
+def _integrate(
+    law, p, fric, c, md, y, sc, tstar, dstar, fscale, rtol, record, diag, hist, acc, work
+):
     """The step loop from first touch (state ``y``, mode ``md``) to separation, a failure or
-    MAX_STEPS. Returns (status, t, steps, mode, history, rows)."""
+    MAX_STEPS; ``work``: scratch (INTEGRATE_WORK_LEN). Returns (status, t, steps, mode,
+    history, rows)."""
     hmax = tstar
     hmin = 1e-14 * tstar
-    ynew, yt, yev, K, Q = step_arrays(NS)
+    ynew, yt, yev, K, Q = step_views(work, NS)
+    rwork = work[STEP_LEN * NS : (STEP_LEN + RECOMPUTE_LEN) * NS]
+    wwork = work[(STEP_LEN + RECOMPUTE_LEN) * NS :]
     t = 0.0
     h = 0.02 * tstar * rtol**0.2
     r, gold, evq = rhs_events(law, p, fric, c, md, state_tuple(y))
@@ -158,8 +171,9 @@ def _integrate(law, p, fric, c, md, y, sc, tstar, dstar, fscale, rtol, record, d
     if record:
         hist, nh = record_row(hist, nh, t, law, p, fric, c, md, state_tuple(y))
     status, t, nsteps, nevents, c, md, gold, hist, nh = opening(
-        law, p, fric, c, md, y, K, gold, rtol, sc, tstar, dstar, fscale, acc, diag, record, hist, nh
-    )
+        law, p, fric, c, md, y, K, gold, rtol, sc, tstar, dstar, fscale, acc, diag, record,
+        hist, nh, wwork,
+    )  # fmt: skip
     if status != GO_ON:
         return status, t, nsteps, md, hist, nh
     h = max(h, t)
@@ -182,7 +196,7 @@ def _integrate(law, p, fric, c, md, y, sc, tstar, dstar, fscale, rtol, record, d
             # the step crossed separation: its last part in w from the step's start instead
             st, t, n_a, n_e, c, md, hist, nh, gold = approach_end(
                 law, p, fric, c, md, y, K, t, rtol, sc, tstar, dstar, fscale, acc, diag, record,
-                hist, nh,
+                hist, nh, wwork,
             )  # fmt: skip
             nsteps += n_a
             nevents += n_e
@@ -201,7 +215,8 @@ def _integrate(law, p, fric, c, md, y, sc, tstar, dstar, fscale, rtol, record, d
         if record:
             hist, nh = record_substeps(hist, nh, t, h, theta, law, p, fric, c, md, y, K, Q, yt)
         if ev >= 0:
-            nsteps += integrate_to(law, p, fric, c, md, y, K[0], theta * h, rtol, sc, yev) - 1
+            nsteps += integrate_to(law, p, fric, c, md, y, K[0], theta * h, rtol, sc, yev, rwork)
+            nsteps -= 1
             evq = evaluate(law, p, fric, c, md, state_tuple(yev))
         if not track(acc, law, p, fric, c, md, state_tuple(yev), evq, t, tend, diag):
             status = ST_NAN
@@ -219,7 +234,7 @@ def _integrate(law, p, fric, c, md, y, sc, tstar, dstar, fscale, rtol, record, d
             if may_approach and near_separation(md, evq, h):
                 st, t, n_a, n_e, c, md, hist, nh, gold = approach_end(
                     law, p, fric, c, md, y, K, t, rtol, sc, tstar, dstar, fscale, acc, diag,
-                    record, hist, nh,
+                    record, hist, nh, wwork,
                 )  # fmt: skip
                 nsteps += n_a
                 nevents += n_e
@@ -320,7 +335,13 @@ def impact(law, p, fric, bp, th0, vx0, vy0, w0, mu, g, const_angle, rtol, record
     """
     for i in range(out.shape[0]):
         out[i] = math.nan
-    hist = np.empty((256 if record else 0, NH))
+    # all of the impact's scratch in one allocation: state, accumulators, error scales, the
+    # step loops' arrays (docs/engine/benchmarks.md, "Session 8"); no history row unless kept
+    work = np.empty(IMPACT_WORK_LEN)
+    y = work[:NS]
+    acc = work[NS : NS + NA]
+    sc = work[NS + NA : 2 * NS + NA]
+    hist = np.empty((256, NH)) if record else work[:0].reshape((0, NH))
     status = check_inputs(law, p, fric, bp, th0, vx0, vy0, w0, mu, g, rtol)
     if status != ST_OK:
         return status, hist[:0], 0
@@ -334,17 +355,20 @@ def impact(law, p, fric, bp, th0, vx0, vy0, w0, mu, g, const_angle, rtol, record
     if not (vn0 < 0.0):
         return ST_NOT_APPROACHING, hist[:0], 0
     md = initial_mode(fric, p, c, w0, vn0, vt0)
-    sc, tstar, dstar, fscale = error_scales(fric, p, c, vn0)
-    y = np.zeros(NS)
+    tstar, dstar, fscale = error_scales(fric, p, c, vn0, sc)
+    for i in range(NS):
+        y[i] = 0.0
     y[S_VX] = vx0
     y[S_VY] = vy0
     y[S_SPIN] = w0
     e0 = 0.5 * c[C_M] * (vx0 * vx0 + vy0 * vy0) + 0.5 * c[C_I] * w0 * w0
-    acc = np.zeros(NA)
+    for i in range(NA):
+        acc[i] = 0.0
     acc[A_EMIN] = e0
     status, t, nsteps, md, hist, nh = _integrate(
-        law, p, fric, c, md, y, sc, tstar, dstar, fscale, rtol, record, diag, hist, acc
-    )
+        law, p, fric, c, md, y, sc, tstar, dstar, fscale, rtol, record, diag, hist, acc,
+        work[2 * NS + NA :],
+    )  # fmt: skip
     out[O_NST] = nsteps
     out[O_DMAX] = acc[A_DMAX]
     out[O_FMAX] = acc[A_FMAX]

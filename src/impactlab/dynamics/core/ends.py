@@ -53,13 +53,14 @@ THROUGH_SWITCH = 0.1
 
 @njit(cache=True, error_model="numpy")
 def opening(
-    law, p, fric, c, md, y, K, gold, rtol, sc, tstar, dstar, fscale, acc, diag, record, hist, nh
-):
+    law, p, fric, c, md, y, K, gold, rtol, sc, tstar, dstar, fscale, acc, diag, record, hist, nh,
+    work,
+):  # fmt: skip
     """The start of the contact in w (``w_integrate``) from first touch to OPENING d*, through
     the switch to the elastic-plastic curve where it lies before (stopping at it unless it lies
     below THROUGH_SWITCH of the way). Returns (ST_NAN, a stop
     status, or GO_ON with the derivative at ``y`` in ``K[0]``, t, steps, events, constants,
-    mode, event tuple, hist, nh)."""
+    mode, event tuple, hist, nh). ``work``: the w-integration's scratch (W_WORK_LEN)."""
     target = min(OPENING * dstar, 0.5 * c[C_DLIM])
     t = 0.0
     n = 0
@@ -69,8 +70,9 @@ def opening(
     if c[C_DSW] < target and (fric == FR_MINDLIN or c[C_DSW] >= THROUGH_SWITCH * target):
         wsw = math.sqrt(c[C_DSW])
         st, t, k, hist, nh, evq, _w = w_integrate(
-            law, p, fric, c, md, y, t, 0.0, wsw, 1.0, rtol, sc, tstar, acc, diag, record, hist, nh
-        )
+            law, p, fric, c, md, y, t, 0.0, wsw, 1.0, rtol, sc, tstar, acc, diag, record, hist, nh,
+            work,
+        )  # fmt: skip
         n += k
         if st == W_REACHED:  # the switch at its known interference (the event EV_SWITCH)
             if record:
@@ -103,6 +105,7 @@ def opening(
             record,
             hist,
             nh,
+            work,
         )
         n += k
     if st == W_NAN:
@@ -129,12 +132,14 @@ def near_separation(md, evq, h):
 
 @njit(cache=True, error_model="numpy")
 def approach_end(
-    law, p, fric, c, md, y, K, t, rtol, sc, tstar, dstar, fscale, acc, diag, record, hist, nh
-):
+    law, p, fric, c, md, y, K, t, rtol, sc, tstar, dstar, fscale, acc, diag, record, hist, nh,
+    work,
+):  # fmt: skip
     """The final approach to separation in w (``w_integrate``) from ``y`` at ``t``, through the
     stick/slip switches it meets. Returns (ST_OK at separation, ST_NAN or another stop status,
     or GO_ON where the time integration takes over again from the last accepted state
-    (derivative into ``K[0]``), t, steps, events, constants, mode, hist, nh, event tuple)."""
+    (derivative into ``K[0]``), t, steps, events, constants, mode, hist, nh, event tuple).
+    ``work``: the w-integration's scratch (W_WORK_LEN)."""
     delta, _a, _b, _xs, _sl = geometry(c, state_tuple(y))
     wa = math.sqrt(max(delta - md[M_DR], 0.0))
     n = 0
@@ -142,7 +147,7 @@ def approach_end(
     while True:
         st, t, k, hist, nh, evq, wa = w_integrate(
             law, p, fric, c, md, y, t, wa, 0.0, APPROACH_FIRST, rtol, sc, tstar, acc, diag,
-            record, hist, nh,
+            record, hist, nh, work,
         )  # fmt: skip
         n += k
         if st != W_EVENT:

@@ -209,6 +209,10 @@ def dense_coeffs(K, Q):
             Q[i, j] = s
 
 
+#: Scratch lengths, per state component, of a step loop (``step_views``) and of a
+#: recomputation (``recompute_views``): an impact's scratch is one allocation (driver.impact).
+STEP_LEN = 14
+RECOMPUTE_LEN = 9
 #: |g| at or below this fraction of the bracket's initial |g| is zero to round-off (the event
 #: functions are sums of terms of their own scale, evaluated to ~1e-15 of it).
 G_ROUNDOFF = 1e-13
@@ -293,23 +297,22 @@ def first_event(gold, gnew, law, p, fric, c, md, y, K, h, Q, yt, record):
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def step_arrays(n):
-    """The work arrays of a step loop over a state of length ``n``, views of one allocation:
-    (new state, trial state, event state, stages K (7 x n), dense-output coefficients Q
-    (n x 4))."""
-    buf = np.empty(14 * n)
+def step_views(buf, n):
+    """The work arrays of a step loop over a state of length ``n``, views of ``buf`` (at least
+    STEP_LEN n long): (new state, trial state, event state, stages K (7 x n), dense-output
+    coefficients Q (n x 4))."""
     K = buf[3 * n : 10 * n].reshape((7, n))
-    return buf[:n], buf[n : 2 * n], buf[2 * n : 3 * n], K, buf[10 * n :].reshape((n, 4))
+    return buf[:n], buf[n : 2 * n], buf[2 * n : 3 * n], K, buf[10 * n : 14 * n].reshape((n, 4))
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def recompute_arrays(y, k0):
+def recompute_views(buf, y, k0):
     """The work arrays of a recomputation from ``y`` with derivative ``k0`` (any length n),
-    views of one allocation: (stages K (7 x n), current state = y, current derivative = k0)."""
+    views of ``buf`` (at least RECOMPUTE_LEN n long): (stages K (7 x n), current state = y,
+    current derivative = k0)."""
     n = y.shape[0]
-    buf = np.empty(9 * n)
     cur = buf[7 * n : 8 * n]
-    kc = buf[8 * n :]
+    kc = buf[8 * n : 9 * n]
     for i in range(n):
         cur[i] = y[i]
         kc[i] = k0[i]
@@ -317,12 +320,12 @@ def recompute_arrays(y, k0):
 
 
 @njit(cache=True, error_model="numpy")
-def integrate_to(law, p, fric, c, md, y, k0, H, rtol, sc, out):
+def integrate_to(law, p, fric, c, md, y, k0, H, rtol, sc, out, work):
     """Integrate from ``y`` over exactly ``H`` with error control (the state at an event is
     recomputed this way, not taken from the 4th-order dense output; near a separation the force
-    vanishes like (delta - delta_r)^1.5 and the step size adapts to it). Returns the number of
-    steps taken."""
-    Ks, cur, kc = recompute_arrays(y, k0)
+    vanishes like (delta - delta_r)^1.5 and the step size adapts to it); ``work``: RECOMPUTE_LEN
+    NS values of scratch. Returns the number of steps taken."""
+    Ks, cur, kc = recompute_views(work, y, k0)
     done = 0.0
     hh = H
     n = 0

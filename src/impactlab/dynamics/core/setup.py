@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
 from numba import njit
 
 from impactlab.bodies.layout import (
@@ -37,7 +36,6 @@ from impactlab.dynamics.core.layout import (
     C_R,
     FR_IMPULSE,
     FR_MINDLIN,
-    NS,
     S_PHI,
     S_Q,
     S_SPIN,
@@ -149,9 +147,10 @@ def initial_mode(fric, p, c, w0, vn0, vt0):
 
 
 @njit(cache=True, error_model="numpy")
-def error_scales(fric, p, c, vn0):
-    """(sc, tstar, dstar, fscale): absolute scales ``sc`` of the state (error control), the
-    Hertz time and interference scales t* [s], delta* [m] and the tangential force scale [N]."""
+def error_scales(fric, p, c, vn0, sc):
+    """(tstar, dstar, fscale): the Hertz time and interference scales t* [s], delta* [m] and
+    the tangential force scale [N]; the absolute scales of the state (error control) into
+    ``sc`` (length NS)."""
     d = c[C_D]
     R = c[C_R]
     m = c[C_M]
@@ -163,7 +162,6 @@ def error_scales(fric, p, c, vn0):
     dstar = (15.0 * meff * vn0 * vn0 / (16.0 * p[P_ESTAR] * math.sqrt(R))) ** 0.4
     tstar = dstar / abs(vn0)
     fscale = meff * vstar / tstar
-    sc = np.empty(NS)
     sc[S_X] = dstar
     sc[S_Y] = dstar
     sc[S_PHI] = dstar / lever
@@ -172,4 +170,4 @@ def error_scales(fric, p, c, vn0):
     sc[S_SPIN] = vstar / lever
     sc[S_WORK] = meff * vn0 * vn0  # normal work scale
     sc[S_Q] = fscale if fric == FR_MINDLIN else 1e300
-    return sc, tstar, dstar, fscale
+    return tstar, dstar, fscale

@@ -210,10 +210,9 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
 def _setup(p, c, vn0, n_cells, a_est):
     """(cell parameters, error scales of the state, t*) of an impact with ``n_cells`` cells over
     the estimated largest contact radius ``a_est`` [m]."""
-    sc0, tstar, _dstar, fscale = error_scales(FR_COULOMB, p, c, vn0)
     m = EXTRA * n_cells
     sc = np.empty(NS + m)
-    sc[:NS] = sc0
+    tstar, _dstar, fscale = error_scales(FR_COULOMB, p, c, vn0, sc[:NS])
     sc[NS:] = fscale / n_cells
     cp = np.empty(NCP)
     cp[CP_G1] = 4.0 * c[C_GS]
