@@ -10,6 +10,9 @@ from numba import njit, prange
 from impactlab.contact.kernels import P_ESTAR, loading_force, residual_depth, unloading_radius
 from impactlab.dynamics.core.driver import impact
 
+#: Cases a thread runs one after another (a block of neighbouring rows of ``out``).
+BLOCK = 16
+
 
 @njit(cache=True, parallel=True, error_model="numpy")
 def impact_batch(law, lp, fric, bpa, init, mu, g, const_angle, rtol, diag, out, status):
@@ -18,37 +21,42 @@ def impact_batch(law, lp, fric, bpa, init, mu, g, const_angle, rtol, diag, out, 
     n = init.shape[0]
     shared_p = lp.shape[0] == 1
     shared_b = bpa.shape[0] == 1
-    stride = _stride(n)
-    for k in prange(n):
-        # numba hands each thread a contiguous range of k: visiting the cases with a stride
-        # coprime to n spreads the costly ones (a grid is ordered) evenly over the threads
-        i = (k * stride) % n
-        pi = lp[0] if shared_p else lp[i]
-        bi = bpa[0] if shared_b else bpa[i]
-        st, _h, _n = impact(
-            law,
-            pi,
-            fric,
-            bi,
-            init[i, 0],
-            init[i, 1],
-            init[i, 2],
-            init[i, 3],
-            mu[i],
-            g,
-            const_angle,
-            rtol,
-            False,
-            diag,
-            out[i],
-        )
-        status[i] = st
+    nb = (n + BLOCK - 1) // BLOCK
+    stride = _stride(nb)
+    for kb in prange(nb):
+        # numba hands each thread a contiguous range of kb: visiting the blocks of BLOCK cases
+        # with a stride coprime to their number spreads the costly ones (a grid is ordered)
+        # evenly over the threads; inside a block the cases are neighbours, so the rows of
+        # ``out`` are written in order (one case at a time at a stride cost 5 % in cache
+        # misses: docs/engine/benchmarks.md, "Session 8")
+        b = (kb * stride) % nb
+        for i in range(b * BLOCK, min(b * BLOCK + BLOCK, n)):
+            pi = lp[0] if shared_p else lp[i]
+            bi = bpa[0] if shared_b else bpa[i]
+            st, _h, _n = impact(
+                law,
+                pi,
+                fric,
+                bi,
+                init[i, 0],
+                init[i, 1],
+                init[i, 2],
+                init[i, 3],
+                mu[i],
+                g,
+                const_angle,
+                rtol,
+                False,
+                diag,
+                out[i],
+            )
+            status[i] = st
 
 
 @njit(cache=True, error_model="numpy")
 def _stride(n):
     """A stride coprime to ``n`` near n / golden ratio (1 for n < 3): k -> k stride mod n is a
-    permutation that scatters neighbouring cases."""
+    permutation that scatters neighbouring blocks of cases."""
     if n < 3:
         return 1
     s = int(0.6180339887498949 * n) | 1
