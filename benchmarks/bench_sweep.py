@@ -111,7 +111,7 @@ def _sweep(study, workdir: Path, tag: str, **kw):  # type: ignore[no-untyped-def
     return wall, res.stats
 
 
-def _scaling(workdir: Path, cores: int, repeats: int = 2) -> dict[str, object]:
+def _scaling(workdir: Path, cores: int, repeats: int = 3) -> dict[str, object]:
     """All cores against one on a 1 000 000-impact study (16 chunks), interleaved: the ratio
     at a size where the fixed costs of a sweep (store creation, the last chunk's write, ~0.2 s)
     no longer weigh; on the 200 000-impact subset they are ~15 % of the all-cores run."""

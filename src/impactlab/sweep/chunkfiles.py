@@ -82,11 +82,18 @@ class ArrayChunks:
         full[tuple(slice(0, n) for n in v.shape)] = v
         return full
 
+    def _maybe_empty(self, chunk: np.ndarray) -> bool:
+        """False when the chunk's first value already differs from the fill value (the usual
+        case: Zarr's full comparison is then skipped)."""
+        first = chunk.flat[0]
+        fill = self.fill
+        return bool(first == fill or (first != first and fill != fill))
+
     def encode(self, chunk: np.ndarray) -> Any:
         """The bytes of ``chunk`` as Zarr writes them, or None for a chunk Zarr does not write
         (all fill value)."""
         buf: Any = self._nd.from_ndarray_like(cast(Any, chunk))
-        if self.skip_empty and buf.all_equal(self.fill):
+        if self.skip_empty and self._maybe_empty(chunk) and buf.all_equal(self.fill):
             return None
         for codec, spec in self.stages:
             buf = codec._encode_sync(buf, spec)

@@ -203,10 +203,9 @@ def evaluate(
     kin_bad = ~np.isfinite(initial).all(axis=1) | ~np.isfinite(mu)
     status[kin_bad & (status == 0)] = STATUS_BAD_INPUT
     ok = status == 0
-    res = {o: np.full(n, np.nan) for o in outputs}
-    if not ok.any():
-        return res, status
     all_ok = bool(ok.all())
+    if not all_ok and not ok.any():
+        return {o: np.full(n, np.nan) for o in outputs}, status
 
     def sel(a: np.ndarray) -> np.ndarray:
         if all_ok or a.ndim == 1:
@@ -226,12 +225,12 @@ def evaluate(
     st = np.asarray(st, dtype=np.int32)
     if all_ok:
         status[:] = st
-        for o, c in zip(outputs, cols, strict=True):
-            res[o] = np.ascontiguousarray(out[:, c])
-    else:
-        status[ok] = st
-        for o, c in zip(outputs, cols, strict=True):
-            res[o][ok] = out[:, c]
+        pairs = zip(outputs, cols, strict=True)
+        return {o: np.ascontiguousarray(out[:, c]) for o, c in pairs}, status
+    status[ok] = st
+    res = {o: np.full(n, np.nan) for o in outputs}
+    for o, c in zip(outputs, cols, strict=True):
+        res[o][ok] = out[:, c]
     return res, status
 
 
