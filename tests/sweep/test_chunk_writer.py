@@ -235,6 +235,9 @@ def test_a_failed_write_raises_and_the_writer_goes_on(tmp_path) -> None:
     try:
         with pytest.raises(ValueError, match=r"array 'e': values of shape \(5,\) for a chunk"):
             writer.write([("e", block, np.zeros(5)), ("mean_force", block, np.zeros(6))])
+        shifted = (block[0], slice(1, 3), block[2])  # chunks of 3 along the second axis
+        with pytest.raises(ValueError, match=r"array 'e': block .* not start on a chunk bound"):
+            writer.write([("e", shifted, np.zeros((1, 2, 2)))])
         store.write_chunk(writer, study, 1, res.outputs, res.status)
     finally:
         writer.close()

@@ -61,8 +61,13 @@ class ArrayChunks:
         self.direct = all(isinstance(c, SupportsSyncCodec) for c, _ in self.stages)
 
     def coords(self, selection: Any) -> tuple[int, ...]:
-        """The chunk coordinates of a chunk-aligned ``selection``."""
+        """The chunk coordinates of a chunk-aligned ``selection`` (ValueError otherwise)."""
         sel = selection if isinstance(selection, tuple) else (selection,)
+        if any(s.start % c for s, c in zip(sel, self.chunks, strict=True)):
+            raise ValueError(
+                f"array {self.array.basename!r}: block {sel} does not start on a chunk "
+                f"boundary (chunks {self.chunks})"
+            )
         return tuple(s.start // c for s, c in zip(sel, self.chunks, strict=True))
 
     def chunk(self, selection: Any, values: np.ndarray) -> np.ndarray:
