@@ -64,6 +64,7 @@ from impactlab.dynamics.core.integrator import (
     dense,
     dense_coeffs,
     growth,
+    past_root,
     recompute_views,
     step_views,
 )
@@ -241,7 +242,7 @@ def _locate(law, p, fric, c, md, Y, K, w, sgn, h, Q, Yt, g0, b, g1):
         if abs(f) <= tiny:  # zero to round-off: as integrator.locate
             if f > 0.0:
                 return th
-            probe = th + max(THETA_TOL, 2.0 * (-f) * (b - th) / (fb - f))
+            probe = past_root(th, f, b, fb)
             if probe < b:
                 dense(Y, K, h, probe, Q, Yt)
                 fp = _g_friction(law, p, fric, c, md, Yt, w + sgn * probe * h, sgn)

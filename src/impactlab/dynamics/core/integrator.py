@@ -220,6 +220,13 @@ G_ROUNDOFF = 1e-13
 THETA_TOL = 1e-14
 
 
+@njit(cache=True, inline="always", error_model="numpy")
+def past_root(th, f, b, fb):
+    """Where to probe just past a root at ``th`` (g(th) = f <= 0, zero to round-off; bracket
+    end ``b`` with g = fb > 0): twice the distance to the secant root, at least THETA_TOL."""
+    return th + max(THETA_TOL, 2.0 * (-f) * (b - th) / (fb - f))
+
+
 @njit_no_refcount
 def locate(ev, g0, g1, law, p, fric, c, md, y0, K, h, Q, yt):
     """theta in (0, 1] where event ``ev`` fires (g goes from <= 0 to > 0): Illinois method on
@@ -247,7 +254,7 @@ def locate(ev, g0, g1, law, p, fric, c, md, y0, K, h, Q, yt):
             if f > 0.0:  # past the root by round-off
                 return th
             # short of it by round-off: probe just past the root (secant slope to b)
-            probe = th + max(THETA_TOL, 2.0 * (-f) * (b - th) / (fb - f))
+            probe = past_root(th, f, b, fb)
             if probe < b:
                 dense(y0, K, h, probe, Q, yt)
                 fp = event_value(ev, law, p, fric, c, md, state_tuple(yt))
