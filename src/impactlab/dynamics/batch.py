@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from typing import Any
 
+import numba
 import numpy as np
 
 from impactlab._validation import check_array
@@ -113,7 +114,19 @@ def run_arrays(
     status = np.empty(n, dtype=np.int32)
     if n:
         impact_batch(
-            lid, lp, fid, bp, init, mu_a, g, bool(constant_angle), r, bool(diagnostics), out, status
+            numba.get_num_threads(),
+            lid,
+            lp,
+            fid,
+            bp,
+            init,
+            mu_a,
+            g,
+            bool(constant_angle),
+            r,
+            bool(diagnostics),
+            out,
+            status,
         )
         _mark_extrapolated(lid, lp, out)
     return out, status

@@ -21,7 +21,8 @@ Modules, lowest first:
 - ``setup``: input checks, constants, initial mode, error scales.
 - ``transitions``: mode transitions at events and the restart after a switch.
 - ``driver``: ``impact`` (one impact: initialisation, step loop, results at separation).
-- ``batch``: ``impact_batch`` (parallel) and ``residual_caps``.
+- ``atomic``: ``fetch_add``, the atomic counter of the batch's work queue.
+- ``batch``: ``impact_batch`` (parallel, dynamically scheduled blocks) and ``residual_caps``.
 - ``_cache``: flushes numba's disk cache when any source the core depends on changes.
 """
 

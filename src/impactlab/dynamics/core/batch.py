@@ -8,49 +8,58 @@ import numpy as np
 from numba import njit, prange
 
 from impactlab.contact.kernels import P_ESTAR, loading_force, residual_depth, unloading_radius
+from impactlab.dynamics.core.atomic import fetch_add
 from impactlab.dynamics.core.driver import impact
 
-#: Cases a thread runs one after another (a block of neighbouring rows of ``out``).
+#: Cases a thread takes at once from the work queue (a block of neighbouring rows of ``out``).
 BLOCK = 16
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def impact_batch(law, lp, fric, bpa, init, mu, g, const_angle, rtol, diag, out, status):
-    """Run ``init.shape[0]`` impacts in parallel (numba prange). ``lp``: (1 or N, NPARAM);
-    ``bpa``: (1 or N, NB); ``init``: (N, 4) [angle, vx, vy, spin]; ``mu``: (N,)."""
+def impact_batch(threads, law, lp, fric, bpa, init, mu, g, const_angle, rtol, diag, out, status):
+    """Run ``init.shape[0]`` impacts in parallel on ``threads`` loops (numba prange; pass
+    ``numba.get_num_threads()``). ``lp``: (1 or N, NPARAM); ``bpa``: (1 or N, NB); ``init``:
+    (N, 4) [angle, vx, vy, spin]; ``mu``: (N,)."""
     n = init.shape[0]
     shared_p = lp.shape[0] == 1
     shared_b = bpa.shape[0] == 1
     nb = (n + BLOCK - 1) // BLOCK
     stride = _stride(nb)
-    for kb in prange(nb):
-        # numba hands each thread a contiguous range of kb: visiting the blocks of BLOCK cases
-        # with a stride coprime to their number spreads the costly ones (a grid is ordered)
-        # evenly over the threads; inside a block the cases are neighbours, so the rows of
-        # ``out`` are written in order (one case at a time at a stride cost 5 % in cache
-        # misses: docs/engine/benchmarks.md, "Session 8")
-        b = (kb * stride) % nb
-        for i in range(b * BLOCK, min(b * BLOCK + BLOCK, n)):
-            pi = lp[0] if shared_p else lp[i]
-            bi = bpa[0] if shared_b else bpa[i]
-            st, _h, _n = impact(
-                law,
-                pi,
-                fric,
-                bi,
-                init[i, 0],
-                init[i, 1],
-                init[i, 2],
-                init[i, 3],
-                mu[i],
-                g,
-                const_angle,
-                rtol,
-                False,
-                diag,
-                out[i],
-            )
-            status[i] = st
+    next_block = np.zeros(1, np.int64)
+    for _t in prange(max(1, threads)):
+        # one loop per thread, each taking the next block of BLOCK cases from the shared counter
+        # when it is free (dynamic scheduling, ``atomic``): a core that also runs other work
+        # (the sweep's writer) does fewer blocks instead of delaying the whole batch
+        while True:
+            kb = fetch_add(next_block, 1)
+            if kb >= nb:
+                break
+            # the blocks in a scattered order (a stride coprime to their number): a grid is
+            # ordered, and its costly corners would otherwise come last; inside a block the
+            # cases are neighbours, so the rows of ``out`` are written in order (one case at a
+            # time at a stride cost 5 % in cache misses: docs/engine/benchmarks.md, "Session 8")
+            b = (kb * stride) % nb
+            for i in range(b * BLOCK, min(b * BLOCK + BLOCK, n)):
+                pi = lp[0] if shared_p else lp[i]
+                bi = bpa[0] if shared_b else bpa[i]
+                st, _h, _n = impact(
+                    law,
+                    pi,
+                    fric,
+                    bi,
+                    init[i, 0],
+                    init[i, 1],
+                    init[i, 2],
+                    init[i, 3],
+                    mu[i],
+                    g,
+                    const_angle,
+                    rtol,
+                    False,
+                    diag,
+                    out[i],
+                )
+                status[i] = st
 
 
 @njit(cache=True, error_model="numpy")
