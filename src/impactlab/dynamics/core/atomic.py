@@ -10,14 +10,15 @@ scheduling); the counter is incremented with one atomic instruction (LLVM ``atom
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
+import numpy as np
 from numba import types
 from numba.extending import intrinsic
 
 
-@intrinsic
-def fetch_add(typingctx: Any, counter: Any, increment: Any) -> Any:
+def _fetch_add(typingctx: Any, counter: Any, increment: Any) -> Any:
     """``counter[0] += increment`` as one atomic operation; returns the value before it.
 
     ``counter``: a C-contiguous int64 array (element 0 is the counter); ``increment``: int64.
@@ -39,3 +40,7 @@ def fetch_add(typingctx: Any, counter: Any, increment: Any) -> Any:
         return builder.atomic_rmw("add", arr.data, args[1], "monotonic")
 
     return sig, codegen
+
+
+#: ``fetch_add(counter, increment) -> int``, callable from compiled code only (see ``_fetch_add``).
+fetch_add: Callable[[np.ndarray, int], int] = intrinsic(_fetch_add)  # type: ignore[assignment]
