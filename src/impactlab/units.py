@@ -20,15 +20,20 @@ from __future__ import annotations
 
 import math
 from functools import lru_cache
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
-import pint
+
+if TYPE_CHECKING:
+    import pint
 
 
 @lru_cache(maxsize=1)
 def registry() -> pint.UnitRegistry:
-    """The shared pint registry (kgf, HB-style units included by pint's defaults)."""
+    """The shared pint registry (kgf, HB-style units included by pint's defaults). pint is
+    imported here, on first use: ``import impactlab`` does not pay its 0.2-0.3 s."""
+    import pint
+
     return pint.UnitRegistry()
 
 
@@ -50,6 +55,8 @@ def _parse(name: str, text: str, unit: str) -> Any:
 
 def _convert(name: str, q: Any, unit: str, shown: Any) -> Any:
     """``q`` expressed in ``unit``; ValueError naming ``name`` on a wrong dimension."""
+    import pint  # loaded already: ``q`` is a Quantity of the registry
+
     try:
         return q.to(unit)
     except pint.DimensionalityError:

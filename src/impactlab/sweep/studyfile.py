@@ -16,7 +16,6 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
-import pint
 
 from impactlab.sweep.dimensions import Axis, Sample, Value, check_kinematics
 from impactlab.sweep.distributions import (
@@ -132,6 +131,8 @@ def study_arguments(
 def _quantity(value: Any, unit: str, bare_unit: str, label: str) -> float:
     """``value`` (a number in ``bare_unit`` or a quantity string) as a float in ``unit``."""
     ureg = units_registry()
+    import pint  # loaded by the registry (``impactlab.units`` imports pint on first use)
+
     if isinstance(value, bool) or not isinstance(value, int | float | str):
         raise ValueError(f"{label}: expected a number or a quantity string, got {value!r}")
     q: Any
