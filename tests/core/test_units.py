@@ -3,8 +3,6 @@
 from __future__ import annotations
 
 import math
-import subprocess
-import sys
 
 import numpy as np
 import pint
@@ -124,17 +122,3 @@ def test_implausible_warnings_point_at_the_callers_line() -> None:
     with pytest.warns(ImplausibleInputWarning, match="too big") as rec:
         warn_implausible("too big")
     assert rec[0].filename == __file__
-
-
-def test_pint_is_imported_on_first_use_only() -> None:
-    """``import impactlab`` (and the command line's modules) do not import pint (0.2-0.3 s);
-    the first quantity string does, and is converted as before."""
-    code = (
-        "import sys, impactlab, impactlab.cli\n"
-        "assert 'pint' not in sys.modules, 'pint imported by import impactlab'\n"
-        "from impactlab.units import to_si\n"
-        "assert abs(to_si('8.8 mm', 'm') - 0.0088) < 1e-15\n"
-        "assert 'pint' in sys.modules\n"
-    )
-    res = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
-    assert res.returncode == 0, res.stderr

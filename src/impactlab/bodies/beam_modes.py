@@ -22,7 +22,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy.optimize import brentq
 
 from impactlab.bodies.rod_section import RodSection
 
@@ -68,6 +67,8 @@ def _cos_minus_sech(x: float) -> float:
 def eb_beta_l(n: int) -> np.ndarray:
     """Roots beta_k L (k = 1..n) of cos(x) cosh(x) = 1, solved as cos x - 1/cosh x = 0 (well
     conditioned) by Brent's method next to (2k + 1) pi / 2."""
+    from scipy.optimize import brentq  # on first use: ``import impactlab`` stays light
+
     out = np.empty(n)
     for k in range(1, n + 1):
         x0 = (2 * k + 1) * math.pi / 2.0

@@ -22,7 +22,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy.linalg import eigh
 
 from impactlab.bodies.rod_section import RodSection
 
@@ -43,6 +42,8 @@ def _tail_matrices(sec: RodSection, n_axial: int) -> tuple[np.ndarray, np.ndarra
     u2 = 2.0 / sec.mass
     G = u2 / s**2 * np.array([[t2e + t2o, t2e - t2o], [t2e - t2o, t2e + t2o]])
     H = u2 / s**4 * np.array([[t4e + t4o, t4e - t4o], [t4e - t4o, t4e + t4o]])
+    from scipy.linalg import eigh  # on first use: ``import impactlab`` stays light
+
     lam, X = eigh(G, H)
     return G, lam, X
 

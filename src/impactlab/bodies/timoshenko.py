@@ -19,7 +19,6 @@ import math
 from collections.abc import Callable
 
 import numpy as np
-from scipy.optimize import brentq
 
 from impactlab.bodies.beam_modes import eb_frequencies
 from impactlab.bodies.rod_section import RodSection, gauss
@@ -123,6 +122,8 @@ def timoshenko_frequencies(sec: RodSection, n: int) -> np.ndarray:
     """First n free-free Timoshenko bending frequencies [rad/s]: roots of the boundary
     determinant, bracketed on a grid finer than the mode spacing and refined by Brent's
     method (sign changes through a pole or across the cut-off are rejected)."""
+    from scipy.optimize import brentq  # on first use: ``import impactlab`` stays light
+
     om_eb = eb_frequencies(sec, n + 2)
     cut = timoshenko_cutoff(sec)
     roots: list[float] = []

@@ -6,7 +6,6 @@ import math
 from collections.abc import Callable
 
 import numpy as np
-from scipy.optimize import brentq
 
 from impactlab.contact import kernel_arrays as ka
 from impactlab.contact import kernels as k
@@ -54,6 +53,8 @@ def nearest_crossing(
     refined with brentq. ``g_array``, when given, evaluates f_a - f_b on the whole grid at once
     (same values, much faster than point-by-point calls).
     """
+    from scipy.optimize import brentq  # on first use: ``import impactlab`` stays light
+
     d = np.geomspace(lo, hi, n)
     if g_array is not None:
         g = np.asarray(g_array(d), dtype=np.float64)

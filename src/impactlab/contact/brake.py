@@ -31,7 +31,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy.optimize import minimize_scalar
 
 from impactlab._validation import check_positive
 from impactlab.contact import kernel_arrays as ka
@@ -50,6 +49,7 @@ def brake_yield_function(nu: float) -> tuple[float, float]:
     """
     if not -1.0 < nu < 0.5:
         raise ValueError(f"nu must lie in (-1, 0.5), got {nu!r}")
+    from scipy.optimize import minimize_scalar  # on first use: ``import impactlab`` stays light
 
     def neg_g(s: float) -> float:
         return -(-(1.0 + nu) * (1.0 - s * math.atan(1.0 / s)) + 1.5 / (1.0 + s * s))

@@ -13,9 +13,6 @@ import itertools
 import math
 from dataclasses import dataclass
 
-from scipy.integrate import quad
-from scipy.optimize import brentq
-
 from impactlab._validation import check_nonnegative, check_positive
 from impactlab.contact import kernels as k
 from impactlab.contact.base import ContactModel
@@ -50,6 +47,8 @@ def _breakpoints(model: ContactModel, upper: float) -> list[float]:
 
 def loading_work(model: ContactModel, delta_m: float) -> float:
     """Work of the loading curve from 0 to ``delta_m`` [J] (numerical quadrature)."""
+    from scipy.integrate import quad  # on first use: ``import impactlab`` stays light
+
     dm = float(model.check_interference(check_nonnegative("delta_m", delta_m, "m")))
     if dm == 0.0:
         return 0.0
@@ -69,6 +68,8 @@ def quasi_static_rebound(model: ContactModel, mass: float, speed: float) -> Rebo
 
     ValueError if the maximum interference would exceed the law's validity limit.
     """
+    from scipy.optimize import brentq  # on first use: ``import impactlab`` stays light
+
     m = check_positive("mass", mass, "kg")
     v = check_positive("speed", speed, "m/s")
     w_in = 0.5 * m * v * v

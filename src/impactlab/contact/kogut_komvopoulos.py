@@ -30,7 +30,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy.optimize import minimize_scalar
 
 from impactlab.contact import kernel_arrays as ka
 from impactlab.contact import kernels as k
@@ -104,6 +103,8 @@ class KogutKomvopoulos(ContactLaw):
         ratio = np.array([ep(float(x)) / el(float(x)) for x in grid])
         i = int(np.argmin(ratio))
         if 0 < i < grid.size - 1:
+            from scipy.optimize import minimize_scalar  # on first use: light ``import impactlab``
+
             opt = minimize_scalar(
                 lambda lx: ep(math.exp(lx)) / el(math.exp(lx)),
                 bounds=(math.log(grid[i - 1]), math.log(grid[i + 1])),
