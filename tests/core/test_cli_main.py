@@ -88,3 +88,36 @@ def test_bare_angle_is_refused_with_a_hint() -> None:
         res = _run(*cmd, "--angle", "0.35")
         assert res.returncode == 2 and "Traceback" not in res.stderr
         assert "--angle 0.35 has no unit: give a unit, e.g. '20 deg' or '0.35 rad'" in res.stderr
+
+
+def test_cli_starts_without_the_heavy_packages() -> None:
+    """The command line imports the sweep, experiment and paper packages (Zarr, xarray, pandas,
+    scipy.stats, matplotlib, pint: about 1.3 s) only in the commands that use them."""
+    heavy = (
+        "impactlab.sweep",
+        "impactlab.experiment",
+        "impactlab.paper",
+        "zarr",
+        "xarray",
+        "pandas",
+        "matplotlib",
+        "scipy.stats",
+        "pint",
+    )
+    code = (
+        "import sys, impactlab.cli\n"
+        f"loaded = [m for m in {heavy!r} if m in sys.modules]\n"
+        "assert not loaded, f'imported by impactlab.cli: {loaded}'\n"
+    )
+    res = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
+    assert res.returncode == 0, res.stderr
+
+
+def test_worker_timeout_help_states_the_sweeps_default() -> None:
+    from impactlab.cli.sweep import WORKER_TIMEOUT_HELP_DEFAULT
+    from impactlab.sweep.backends import DEFAULT_WORKER_TIMEOUT
+
+    assert WORKER_TIMEOUT_HELP_DEFAULT == DEFAULT_WORKER_TIMEOUT
+    res = _run("sweep", "run", "--help")
+    assert res.returncode == 0, res.stderr
+    assert f"(default: {WORKER_TIMEOUT_HELP_DEFAULT})" in " ".join(res.stdout.split())

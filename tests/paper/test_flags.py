@@ -103,10 +103,11 @@ def _fake_result(tmp_path, simulations):
 def test_cli_prints_flag_count_and_wording(tmp_path, monkeypatch, capsys, simulate):
     """The command's stdout (the reproduction replaced by a stand-in)."""
     import impactlab.cli.reproduce as cli_reproduce
+    import impactlab.paper.reproduction as reproduction  # the command imports it when it runs
 
     simtab = pd.DataFrame({"law": ["ghaednia", "brake"], "flags": ["LAW_EXTRAPOLATED", ""]})
     fake = _fake_result(tmp_path, simtab if simulate else pd.DataFrame())
-    monkeypatch.setattr(cli_reproduce, "reproduce", lambda out, simulate: fake)
+    monkeypatch.setattr(reproduction, "reproduce", lambda out, simulate: fake)
     cli_reproduce.reproduce_cmd(out=str(tmp_path / "o"), no_simulate=not simulate)
     out = capsys.readouterr().out
     assert (

@@ -5,7 +5,7 @@ from __future__ import annotations
 import json
 import math
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import typer
 from rich.text import Text
@@ -23,8 +23,9 @@ from impactlab.cli._common import (
     print_rows,
 )
 from impactlab.cli.invert import inversion_json
-from impactlab.experiment import ExperimentResult, MarkerGeometry, analyze
-from impactlab.experiment.checks import output_folder
+
+if TYPE_CHECKING:
+    from impactlab.experiment import ExperimentResult, MarkerGeometry
 
 #: The engine comparison's fields (``res.model``) that the summary shows, as ``model <field>``.
 _MODEL = ("e", "delta_p", "sliding_length", "duration", "spin_out")
@@ -56,6 +57,8 @@ def _rod_from(spec: str | None) -> tuple[Rod, dict[str, Any]]:
 
 
 def _geometry_from(spec: str | None, rod_data: dict[str, Any]) -> MarkerGeometry | None:
+    from impactlab.experiment import MarkerGeometry  # lazy: a fast CLI start
+
     data = load_toml(Path(spec)) if spec is not None else rod_data
     table = data.get("markers")
     if table is None:
@@ -126,6 +129,9 @@ def analyze_cmd(
 
     Example: impactlab analyze drop.c3d dent.x3p --geometry markers.toml --out results/
     """
+    from impactlab.experiment import analyze  # lazy: a fast CLI start
+    from impactlab.experiment.checks import output_folder
+
     rod_obj, rod_data = _rod_from(rod)
     geo = _geometry_from(geometry, rod_data)
     folder = output_folder(out, "--out") if out is not None else None

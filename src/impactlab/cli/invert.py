@@ -28,7 +28,6 @@ from impactlab.cli._common import (
     quantity,
     rod_option,
 )
-from impactlab.paper.data import get_case
 
 # input name -> (SI unit used for parsing, accepted TOML keys, command-line option)
 _FIELDS: dict[str, tuple[str, tuple[str, ...], str]] = {
@@ -139,6 +138,8 @@ def run_invert(
     v, s, r, extra = _from_file(load_toml(file))
     case = case or extra.get("case")
     if case is not None:
+        from impactlab.paper.data import get_case  # lazy: a fast CLI start
+
         x = get_case(str(case))
         paper = {"angle": x.angle, "v_i": x.v_i, "e": x.e, "mu": x.mu}
         v = {**paper, "delta_p": abs(x.delta_p), "L_s": abs(x.L_s), **v}

@@ -5,9 +5,6 @@ from __future__ import annotations
 import typer
 
 from impactlab._display import format_number
-from impactlab.experiment.checks import output_folder
-from impactlab.paper.quantities import duration_checks, extrapolation_line
-from impactlab.paper.reproduction import reproduce
 
 
 def reproduce_cmd(
@@ -26,6 +23,10 @@ def reproduce_cmd(
 
     Example: impactlab reproduce --out reproduction
     """
+    from impactlab.experiment.checks import output_folder  # lazy: a fast CLI start
+    from impactlab.paper.quantities import duration_checks, extrapolation_line
+    from impactlab.paper.reproduction import reproduce
+
     res = reproduce(output_folder(out, "--out"), simulate=not no_simulate)
     for c in duration_checks(res.experimental):
         typer.echo(

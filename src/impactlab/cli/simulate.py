@@ -36,8 +36,6 @@ from impactlab.cli._common import (
 from impactlab.cli.drop import RATE_CHOICES, flexible_rod, rate_name, report_drop
 from impactlab.dynamics import ImpactResult, simulate
 from impactlab.dynamics.drop_result import DropResult
-from impactlab.dynamics.plotting import save_figures
-from impactlab.experiment.checks import output_folder
 from impactlab.friction import DEFAULT_MU
 from impactlab.materials import AISI_201, AISI_1010, Material, get_material
 
@@ -236,6 +234,8 @@ def _report(
     data = {k: v for k, v in result.to_dict().items() if k not in hidden}
     files: list[str] = []
     if out is not None:
+        from impactlab.dynamics.plotting import save_figures  # lazy: a fast CLI start
+
         files = [str(p) for p in save_figures(result, out)]
         saved = out / "impact_result.json"
         saved.write_text(json.dumps(to_json(data, SI_UNITS), indent=2))
@@ -336,6 +336,8 @@ def simulate_cmd(
     opt = _merge(load_toml(config), cli, config)
     if plot and opt.given("flexible"):
         raise UserError("--plot: the flexible rod's drop has no figures here; leave it out")
+    from impactlab.experiment.checks import output_folder  # lazy: a fast CLI start
+
     folder = output_folder(Path(".") if out is None else out, "--out") if plot else None
     sphere = str(opt.values.get("body", "rod")).lower() == "sphere"
     _report(run_simulate(opt), out=folder, as_json=as_json, sphere=sphere)

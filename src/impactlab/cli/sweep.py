@@ -16,7 +16,7 @@ import sys
 import warnings
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Annotated, Any
+from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 from typer.core import TyperGroup
@@ -25,22 +25,16 @@ from impactlab._display import field_row, format_number
 from impactlab._json import quantity as quantity_json
 from impactlab._json import to_json
 from impactlab.cli._common import UserError, emit, print_rows
-from impactlab.sweep import (
-    Study,
-    SweepResult,
-    SweepSizeWarning,
-    export_netcdf,
-    flag_counts,
-    open_sweep,
-    plot_sweep,
-    run_sweep,
-    status_counts,
-    store_info,
-    uncertainty_reports,
-)
-from impactlab.sweep.backends import DEFAULT_WORKER_TIMEOUT
-from impactlab.sweep.display import steady_throughput, warm_up_s
-from impactlab.sweep.summary import format_flag_counts
+
+if TYPE_CHECKING:
+    from impactlab.sweep import SweepResult
+
+# impactlab.sweep (Zarr, xarray, pandas, scipy.stats: about 1 s) is imported inside the commands
+# that use it, so that ``impactlab --help`` and the other commands start without it.
+
+#: ``--worker-timeout``'s default as its help states it; equal to
+#: ``impactlab.sweep.backends.DEFAULT_WORKER_TIMEOUT`` (tests/core/test_cli_main.py).
+WORKER_TIMEOUT_HELP_DEFAULT = 60
 
 
 class _DefaultRun(TyperGroup):
@@ -61,11 +55,16 @@ class _Where:
     scheduler: str | None
     workers: int | None
     max_cases: int | None
-    worker_timeout: float = DEFAULT_WORKER_TIMEOUT
+    worker_timeout: float | None = None  # None: run_sweep's default
     backend: str | None = None
 
 
 def _run(study_path: Path, where: _Where, quiet: bool, restart: bool) -> SweepResult:
+    from impactlab.sweep import Study, SweepSizeWarning, run_sweep
+    from impactlab.sweep.backends import DEFAULT_WORKER_TIMEOUT
+
+    timeout = where.worker_timeout
+
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", SweepSizeWarning)
         study = Study.from_toml(study_path, max_cases=where.max_cases)
@@ -80,7 +79,7 @@ def _run(study_path: Path, where: _Where, quiet: bool, restart: bool) -> SweepRe
             backend=where.backend,
             quiet=quiet,
             restart=restart,
-            worker_timeout=where.worker_timeout,
+            worker_timeout=DEFAULT_WORKER_TIMEOUT if timeout is None else timeout,
         )
     except (OSError, TimeoutError) as exc:
         if where.scheduler is not None:
@@ -91,6 +90,8 @@ def _run(study_path: Path, where: _Where, quiet: bool, restart: bool) -> SweepRe
 def _print_uncertainty(
     ds: Any, outputs: list[str] | None, percentiles: list[float] | None, as_json: bool
 ) -> None:
+    from impactlab.sweep import uncertainty_reports
+
     reports = uncertainty_reports(ds, outputs, percentiles)
     if as_json:
         print(json.dumps({k: _uncertainty_json(r.to_dict()) for k, r in reports.items()}, indent=2))
@@ -143,6 +144,10 @@ def _uncertainty_json(report: dict[str, Any]) -> dict[str, Any]:
 def _run_summary(
     res: SweepResult, ds: Any, netcdf: Path | None, files: list[str]
 ) -> dict[str, Any]:
+    from impactlab.sweep import flag_counts, status_counts
+    from impactlab.sweep.display import steady_throughput, warm_up_s
+    from impactlab.sweep.summary import format_flag_counts
+
     s = res.stats
     summary: dict[str, Any] = {
         "store": str(res.path),
@@ -212,13 +217,14 @@ def run_cmd(
     ] = False,
     max_cases: _MaxCases = None,
     worker_timeout: Annotated[
-        float,
+        float | None,
         typer.Option(
             "--worker-timeout",
             min=0.001,
-            help="Dask: seconds without any worker before the sweep stops with an error.",
+            help="Dask: seconds without any worker before the sweep stops with an error "
+            f"(default: {WORKER_TIMEOUT_HELP_DEFAULT}).",
         ),
-    ] = DEFAULT_WORKER_TIMEOUT,
+    ] = None,
     quiet: _Quiet = False,
     netcdf: Annotated[Path | None, typer.Option("--netcdf", help="Also export to NetCDF.")] = None,
     plot: Annotated[
@@ -230,6 +236,8 @@ def run_cmd(
 
     Example: impactlab sweep examples/study-regime-map.toml --out map.zarr --plot plots/
     """
+    from impactlab.sweep import export_netcdf, plot_sweep
+
     where = _Where(out, scheduler, workers, max_cases, worker_timeout, backend)
     res = _run(study, where, quiet, restart)
     ds = res.dataset
@@ -267,6 +275,8 @@ def uncertainty_cmd(
 
     Example: impactlab sweep uncertainty examples/study-uncertainty.toml
     """
+    from impactlab.sweep import open_sweep
+
     if source.is_dir():
         ds = open_sweep(source)
     else:
@@ -281,6 +291,8 @@ def info_cmd(
     as_json: _Json = False,
 ) -> None:
     """Progress and contents of a store (chunks done, status counts)."""
+    from impactlab.sweep import store_info
+
     emit(store_info(store), as_json=as_json, title=str(store))
 
 
@@ -290,6 +302,8 @@ def plot_cmd(
     out: Annotated[Path, typer.Option("--out", "-o", help="Folder for the PNG files.")],
 ) -> None:
     """Regime map (with mu_c), maps of e, delta_p, L_s, T over angle and velocity."""
+    from impactlab.sweep import open_sweep, plot_sweep
+
     files = plot_sweep(open_sweep(store), out)
     if not files:
         raise UserError(
@@ -306,6 +320,8 @@ def export_cmd(
     target: Annotated[Path, typer.Argument(help="NetCDF file to write.")],
 ) -> None:
     """Export a store to NetCDF-4."""
+    from impactlab.sweep import export_netcdf, open_sweep
+
     export_netcdf(open_sweep(store), target)
     print(target, file=sys.stdout)
 
