@@ -34,6 +34,7 @@ from impactlab.sweep.dimensions import (
     Sample,
     Value,
     block_values,
+    check_kinematics,
     check_value,
     layout,
 )
@@ -175,6 +176,7 @@ class Study:
         if self.sample is not None and not isinstance(self.sample, Sample):
             raise ValueError(f"sample must be a Sample, got {self.sample!r}")
         _check_sources(axes, fixed, self.sample)
+        check_kinematics(fixed, axes, () if self.sample is None else tuple(self.sample.inputs))
         if self.outputs is not None:
             object.__setattr__(self, "outputs", _check_outputs(self.outputs))
         if not isinstance(self.engine, EngineOptions):
