@@ -1,0 +1,36 @@
+"""Finite-element reference for sphere-on-flat indentation (CalculiX, axisymmetric).
+
+Usage::
+
+    from impactlab.fe import indent
+    from impactlab.materials import AISI_201, AISI_1010
+
+    res = indent(AISI_1010, AISI_201, radius=8.8e-3, delta_max=[5e-6, 50e-6])
+    res[0].loading_force, res[0].residual_depth
+
+Needs ``ccx`` (Debian package ``calculix-ccx``) and the ``gmsh`` Python package (the ``fe``
+extra); both are looked up only when a run starts, so ``import impactlab.fe`` works without
+them. Method and verification: docs/fe.md.
+"""
+
+from impactlab.fe.cache import SCHEMA_VERSION, default_cache_dir
+from impactlab.fe.ccx import INSTALL_HINT, find_ccx
+from impactlab.fe.problem import MESH_GROWTH, SPHERE_KINDS, check_hardening, critical_interference
+from impactlab.fe.result import SECTOR_FACTOR, IndentationResult
+from impactlab.fe.run import NotConvergedWarning, indent, indent_one
+
+__all__ = [
+    "INSTALL_HINT",
+    "MESH_GROWTH",
+    "SCHEMA_VERSION",
+    "SECTOR_FACTOR",
+    "SPHERE_KINDS",
+    "IndentationResult",
+    "NotConvergedWarning",
+    "check_hardening",
+    "critical_interference",
+    "default_cache_dir",
+    "find_ccx",
+    "indent",
+    "indent_one",
+]

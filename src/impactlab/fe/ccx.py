@@ -1,0 +1,178 @@
+"""Running CalculiX (``ccx``) and reading its text output (``.dat`` and ``.sta`` files).
+
+ccx is found on PATH (or by the ``IMPACTLAB_CCX`` environment variable); it runs in a
+temporary folder with ``OMP_NUM_THREADS=1`` (one process per unloading maximum runs in
+parallel instead). Nothing here computes mechanics: it writes, runs and reads.
+"""
+
+from __future__ import annotations
+
+import functools
+import os
+import re
+import shutil
+import subprocess
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+#: The one-line message when ccx is missing.
+INSTALL_HINT = (
+    "CalculiX (ccx) was not found on PATH: install it with `apt-get install calculix-ccx` "
+    "(Debian/Ubuntu) or set IMPACTLAB_CCX to the ccx executable"
+)
+
+_FLOAT = r"[-+]?\d*\.?\d+(?:[eE][-+]?\d+)?"
+_HEADER = re.compile(r"^\s*(.+?) for set (\S+) and time\s+(" + _FLOAT + r")\s*$")
+_CONTACT = re.compile(r"^\s*contact stress .* and time\s+(" + _FLOAT + r")\s*$")
+
+
+def find_ccx() -> str:
+    """Path of the ccx executable; RuntimeError with how to install it when there is none."""
+    exe = os.environ.get("IMPACTLAB_CCX") or shutil.which("ccx")
+    if not exe or not (Path(exe).is_file() or shutil.which(exe)):
+        raise RuntimeError(INSTALL_HINT)
+    return exe
+
+
+@functools.lru_cache(maxsize=4)
+def ccx_version(exe: str) -> str:
+    """The version line ccx prints (``2.20``), part of every cache key."""
+    out = subprocess.run([exe, "-v"], capture_output=True, text=True, timeout=60, check=False)
+    m = re.search(r"Version\s+(\S+)", out.stdout + out.stderr)
+    return m.group(1) if m else "unknown"
+
+
+@dataclass
+class DatFile:
+    """The printed results of one run: for each (quantity, set) the times and rows.
+
+    ``totals[(what, set)]`` is a list of (time, vector); ``nodal[(what, set)]`` a list of
+    (time, node ids (1-based), values (n, 3)); ``contact_times`` the times that printed contact
+    stresses. Times are total times (step 2 runs from 1 to 2)."""
+
+    totals: dict[tuple[str, str], list[tuple[float, np.ndarray]]] = field(default_factory=dict)
+    nodal: dict[tuple[str, str], list[tuple[float, np.ndarray, np.ndarray]]] = field(
+        default_factory=dict
+    )
+
+
+def parse_dat(text: str) -> DatFile:
+    """Parse the ``*NODE PRINT`` blocks of a ``.dat`` file (the contact-stress blocks are
+    skipped: the contact radius is read from the surface displacements)."""
+    out = DatFile()
+    lines = text.splitlines()
+    i, n = 0, len(lines)
+    while i < n:
+        m = _HEADER.match(lines[i])
+        if m is None:
+            i += 1
+            continue
+        what, nset, t = m.group(1).strip(), m.group(2), float(m.group(3))
+        i += 1
+        rows: list[list[float]] = []
+        while i < n and not lines[i].strip():
+            i += 1
+        while i < n and lines[i].strip() and not _HEADER.match(lines[i]):
+            if _CONTACT.match(lines[i]):
+                break
+            rows.append([float(v) for v in lines[i].split()])
+            i += 1
+        arr = np.asarray(rows, dtype=np.float64)
+        if what.startswith("total"):
+            out.totals.setdefault((what.split()[1], nset), []).append((t, arr[0]))
+        else:
+            ids = arr[:, 0].astype(np.int64)
+            out.nodal.setdefault((what.split()[0], nset), []).append((t, ids, arr[:, 1:]))
+    return out
+
+
+@dataclass(frozen=True)
+class StaRow:
+    """One line of the ``.sta`` file: an attempt at an increment; ``converged`` False for the
+    attempts ccx marks ``U`` (not converged: the increment was cut back and tried again)."""
+
+    step: int
+    increment: int
+    attempt: int
+    converged: bool
+    iterations: int
+    total_time: float
+
+
+def parse_sta(text: str) -> list[StaRow]:
+    """Every attempt listed in a ``.sta`` file."""
+    rows = []
+    for line in text.splitlines():
+        parts = line.split()
+        if len(parts) == 7 and parts[0].isdigit() and parts[1].isdigit():
+            att = parts[2]
+            rows.append(
+                StaRow(
+                    int(parts[0]),
+                    int(parts[1]),
+                    int(att.rstrip("U")),
+                    not att.endswith("U"),
+                    int(parts[3]),
+                    float(parts[4]),
+                )
+            )
+    return rows
+
+
+@dataclass(frozen=True)
+class RunOutput:
+    """What one ccx run left: its ``.dat`` text, ``.sta`` text, return code, the tail of its
+    terminal output (the error message when it stopped) and its wall time [s]."""
+
+    dat: str
+    sta: str
+    returncode: int
+    log_tail: str
+    seconds: float
+
+
+def run_ccx(deck: str, workdir: Path, exe: str, timeout: float | None = None) -> RunOutput:
+    """Write ``deck`` as ``job.inp`` in ``workdir`` and run ``ccx -i job`` there (one thread)."""
+    workdir.mkdir(parents=True, exist_ok=True)
+    (workdir / "job.inp").write_text(deck)
+    env = dict(os.environ)
+    env["OMP_NUM_THREADS"] = "1"
+    env["CCX_NPROC_EQUATION_SOLVER"] = "1"
+    t0 = time.perf_counter()
+    try:
+        proc = subprocess.run(
+            [exe, "-i", "job"],
+            cwd=workdir,
+            env=env,
+            capture_output=True,
+            text=True,
+            timeout=timeout,
+            check=False,
+        )
+        rc, log = proc.returncode, proc.stdout + proc.stderr
+    except subprocess.TimeoutExpired as exc:
+        partial = exc.stdout.decode(errors="replace") if isinstance(exc.stdout, bytes) else ""
+        rc, log = -9, f"ccx stopped after the time limit of {timeout} s\n{partial}"
+    seconds = time.perf_counter() - t0
+    dat = workdir / "job.dat"
+    sta = workdir / "job.sta"
+    return RunOutput(
+        dat=dat.read_text() if dat.exists() else "",
+        sta=sta.read_text() if sta.exists() else "",
+        returncode=rc,
+        log_tail=_error_lines(log),
+        seconds=seconds,
+    )
+
+
+def _error_lines(log: str) -> str:
+    """The ``*ERROR`` messages of a ccx log (the last ones), or its last lines."""
+    lines = [ln.strip() for ln in log.splitlines() if ln.strip()]
+    errors = [i for i, ln in enumerate(lines) if ln.startswith("*ERROR")]
+    if errors:
+        i = errors[-1]
+        return " ".join(lines[i : i + 3])
+    return " ".join(lines[-3:])

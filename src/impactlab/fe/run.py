@@ -1,0 +1,204 @@
+"""``indent``: run the indentation problem for any number of maxima, in parallel, cached."""
+
+from __future__ import annotations
+
+import math
+import os
+import tempfile
+import warnings
+from collections.abc import Callable, Sequence
+from concurrent.futures import ThreadPoolExecutor, as_completed
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from impactlab.fe import cache
+from impactlab.fe.ccx import RunOutput, ccx_version, find_ccx, parse_dat, parse_sta, run_ccx
+from impactlab.fe.deck import DeckSpec, write_deck
+from impactlab.fe.mesh import Mesh, build_mesh
+from impactlab.fe.problem import Problem, check_maxima, make_problem
+from impactlab.fe.result import (
+    IndentationResult,
+    contact_radius_from_gap,
+    delta_at,
+    gap_tolerance,
+    reactions,
+    sta_summary,
+    surface_gap,
+    zero_crossing,
+)
+from impactlab.materials import Material
+
+
+class NotConvergedWarning(RuntimeWarning):
+    """An indentation run that ccx could not finish: its result is marked ``converged=False``
+    and holds the curve up to the last converged point."""
+
+
+def assemble(problem: Problem, mesh: Mesh, deck: DeckSpec, out: RunOutput) -> IndentationResult:
+    """The result of one run from ccx's printed output."""
+    dat = parse_dat(out.dat)
+    sta = parse_sta(out.sta)
+    t, f_sphere, f_flat = reactions(dat)
+    dmax = problem.delta_max
+    delta = delta_at(deck.loading, deck.unloading, t, dmax)
+    peak = float(np.max(np.abs(f_sphere))) if t.size else 0.0
+    balance = float(np.max(np.abs(f_sphere - f_flat)) / peak) if peak > 0.0 else math.nan
+    load = t <= 1.0 + 1e-12
+    unload = ~load
+    sph_xy = None if deck.sphere is None else mesh.nodes
+    radii = []
+    for ti, di in zip(t[load], delta[load], strict=True):
+        r, _, gap = surface_gap(dat, float(ti), mesh.nodes, sph_xy, problem.radius, float(di))
+        radii.append(contact_radius_from_gap(r, gap - gap_tolerance(mesh, r)))
+    finished = out.returncode == 0 and t.size > 0 and math.isclose(t[-1], 2.0, rel_tol=1e-9)
+    dent_r = dent_z = np.empty(0)
+    if t.size:
+        r, z, _ = surface_gap(dat, float(t[-1]), mesh.nodes, sph_xy, problem.radius, 0.0)
+        dent_r, dent_z = r, z
+    ud = (
+        np.concatenate([[dmax], delta[unload]])
+        if load.any() and t[load][-1] == 1.0
+        else delta[unload]
+    )
+    uf = (
+        np.concatenate([[f_sphere[load][-1]], f_sphere[unload]])
+        if ud.size > delta[unload].size
+        else f_sphere[unload]
+    )
+    delta_r = zero_crossing(ud, uf) if ud.size else math.nan
+    if not finished and not (ud.size and np.any(uf <= 0.0)):
+        delta_r = math.nan
+    incs, cuts, its = sta_summary(sta)
+    return IndentationResult(
+        delta_max=dmax,
+        loading_delta=np.asarray(delta[load]),
+        loading_force=np.asarray(f_sphere[load]),
+        contact_radius=np.asarray(radii, dtype=np.float64),
+        unloading_delta=np.asarray(ud),
+        unloading_force=np.asarray(uf),
+        residual_depth=delta_r,
+        dent_r=np.asarray(dent_r),
+        dent_z=np.asarray(dent_z) if finished else np.empty(0),
+        delta_c=problem.delta_c,
+        converged=bool(finished),
+        last_converged_delta=float(delta[-1]) if t.size else 0.0,
+        message="" if finished else out.log_tail,
+        increments=incs,
+        cutbacks=cuts,
+        iterations=its,
+        run_time=out.seconds,
+        n_elements=mesh.n_elements,
+        force_balance=balance,
+        inputs=problem.key_data(),
+    )
+
+
+def _solve(problem: Problem, mesh: Mesh, exe: str, keep: Path | None) -> IndentationResult:
+    deck = problem.deck_spec(problem.mesh_spec())
+    text = write_deck(mesh, deck)
+    if keep is not None:
+        out = run_ccx(text, keep, exe)
+        return assemble(problem, mesh, deck, out)
+    with tempfile.TemporaryDirectory(prefix="impactlab-fe-") as tmp:
+        out = run_ccx(text, Path(tmp), exe)
+    return assemble(problem, mesh, deck, out)
+
+
+def indent(
+    flat: Material,
+    sphere_material: Material | None = None,
+    *,
+    radius: Any,
+    delta_max: Any,
+    sphere: str = "elastic-plastic",
+    flat_hardening: Any = None,
+    sphere_hardening: Any = None,
+    mu: Any = 0.0,
+    mesh_level: int = 1,
+    workers: int | None = None,
+    cache_dir: str | Path | None = None,
+    use_cache: bool = True,
+    keep_files: str | Path | None = None,
+    progress: Callable[[int, IndentationResult], None] | None = None,
+) -> list[IndentationResult]:
+    """Quasi-static indentation of a flat by a sphere, loaded to each ``delta_max`` and
+    unloaded to zero force, by CalculiX (one ``ccx`` process per maximum, in parallel).
+
+    flat, sphere_material: the materials (``sphere_material`` defaults to the flat's; unused
+    for a rigid sphere except in delta_c). radius: R [m]. delta_max: one interference [m] or a
+    sequence (numbers in m, strings with units or pint quantities). sphere: "rigid",
+    "elastic" or "elastic-plastic". flat_hardening, sphere_hardening: rows of (true stress
+    [Pa], true plastic strain), the first at strain 0 (default: elastic-perfectly plastic at
+    S_y); ``flat_hardening="elastic"`` keeps the flat elastic. mu: Coulomb friction
+    coefficient of the contact (0: frictionless). mesh_level: 1-4, each doubling the number
+    of elements. workers: parallel ccx processes (default ``os.cpu_count()``). cache_dir: where results are cached (``impactlab.fe.cache``);
+    use_cache: False to always run. keep_files: a folder to keep the ccx files in (one
+    sub-folder per maximum). progress: called as ``progress(index, result)`` as each run ends.
+
+    Returns one :class:`IndentationResult` per maximum, in the order given. A run that ccx
+    cannot finish comes back with ``converged=False`` (curve up to the last converged point)
+    and a :class:`NotConvergedWarning`. RuntimeError when ccx is not installed (with how to
+    install it), ImportError when gmsh is missing, ValueError for bad input.
+    """
+    sphere_material = flat if sphere_material is None else sphere_material
+    problems = [
+        make_problem(
+            flat,
+            sphere_material,
+            radius=radius,
+            delta_max=d,
+            sphere=sphere,
+            flat_hardening=flat_hardening,
+            sphere_hardening=sphere_hardening,
+            mu=mu,
+            mesh_level=mesh_level,
+        )
+        for d in check_maxima(delta_max)
+    ]
+    if workers is not None and (isinstance(workers, bool) or int(workers) < 1):
+        raise ValueError(f"workers must be a positive integer, got {workers!r}")
+    exe = find_ccx()
+    version = ccx_version(exe)
+    directory = Path(cache_dir) if cache_dir is not None else cache.default_cache_dir()
+    keys = [cache.cache_key(p.key_data(), version) for p in problems]
+    results: list[IndentationResult | None] = [
+        cache.load(directory, k) if use_cache else None for k in keys
+    ]
+    for i, res in enumerate(results):
+        if res is not None and progress is not None:
+            progress(i, res)
+    todo = [i for i, r in enumerate(results) if r is None]
+    meshes = {i: build_mesh(problems[i].mesh_spec()) for i in todo}  # gmsh: one thread
+    n = max(1, min(len(todo), int(workers) if workers else (os.cpu_count() or 1)))
+    keep = Path(keep_files) if keep_files is not None else None
+
+    def job(i: int) -> tuple[int, IndentationResult]:
+        sub = keep / f"run{i}" if keep is not None else None
+        return i, _solve(problems[i], meshes[i], exe, sub)
+
+    if todo:
+        with ThreadPoolExecutor(max_workers=n) as pool:
+            for future in as_completed([pool.submit(job, i) for i in todo]):
+                i, res = future.result()
+                results[i] = res
+                if res.converged and use_cache:
+                    cache.store(directory, keys[i], res)
+                if progress is not None:
+                    progress(i, res)
+    final = [r for r in results if r is not None]
+    for r in final:
+        if not r.converged:
+            warnings.warn(r.status(), NotConvergedWarning, stacklevel=2)
+    return final
+
+
+def indent_one(
+    flat: Material, sphere_material: Material | None = None, **kwargs: Any
+) -> IndentationResult:
+    """:func:`indent` for one ``delta_max`` (a number or quantity, not a sequence)."""
+    d = kwargs.get("delta_max")
+    if isinstance(d, Sequence) and not isinstance(d, str):
+        raise ValueError("indent_one takes one delta_max; use indent for several")
+    return indent(flat, sphere_material, **kwargs)[0]

@@ -1,0 +1,138 @@
+"""impactlab.fe without running ccx: input checks, the missing-ccx message, parsing, cache."""
+
+from __future__ import annotations
+
+import sys
+
+import numpy as np
+import pytest
+
+import impactlab.fe as fe
+from impactlab.fe import cache
+from impactlab.fe.ccx import INSTALL_HINT, find_ccx, parse_dat, parse_sta
+from impactlab.fe.problem import make_problem
+from impactlab.fe.result import contact_radius_from_gap, zero_crossing
+from impactlab.materials import AISI_201, AISI_1010
+
+R = 8.8e-3
+
+
+def test_import_needs_neither_ccx_nor_gmsh(monkeypatch):
+    """The package imports without gmsh (it is imported inside build_mesh)."""
+    monkeypatch.setitem(sys.modules, "gmsh", None)
+    from impactlab.fe.mesh import MeshSpec, build_mesh
+
+    with pytest.raises(ImportError, match="pip install 'impactlab\\[fe\\]'"):
+        build_mesh(MeshSpec(R, 1e-6, 0.1, 1e-2, 1e-3, R))
+
+
+def test_missing_ccx_message(monkeypatch, tmp_path):
+    monkeypatch.setenv("PATH", str(tmp_path))
+    monkeypatch.delenv("IMPACTLAB_CCX", raising=False)
+    with pytest.raises(RuntimeError) as info:
+        find_ccx()
+    msg = str(info.value)
+    assert "apt-get install calculix-ccx" in msg
+    assert "\n" not in msg
+    with pytest.raises(RuntimeError, match="apt-get install calculix-ccx"):
+        fe.indent(AISI_1010, AISI_201, radius=R, delta_max=1e-6, cache_dir=tmp_path)
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "pattern"),
+    [
+        ({"delta_max": 9e-3}, r"delta_max \(0\.009 m\) must be smaller than the sphere radius"),
+        ({"delta_max": 5e-3}, r"delta_max .* too large for radius .* allowed delta_max <"),
+        ({"delta_max": -1e-6}, "delta_max"),
+        ({"delta_max": 1e-6, "sphere": "glass"}, "sphere must be one of rigid, elastic"),
+        ({"delta_max": 1e-6, "mesh_level": 9}, r"mesh_level must be one of \[1, 2, 3, 4\]"),
+        ({"delta_max": 1e-6, "mu": -0.1}, "mu"),
+        (
+            {"delta_max": 1e-6, "flat_hardening": [[305e6, 0.0], [400e6, 0.1], [380e6, 0.2]]},
+            "flat_hardening must be monotonic",
+        ),
+        (
+            {"delta_max": 1e-6, "flat_hardening": [[305e6, 0.0], [400e6, 0.1], [420e6, 0.05]]},
+            "flat_hardening must be monotonic",
+        ),
+        ({"delta_max": 1e-6, "sphere_hardening": [[305e6, 0.01]]}, "must start at plastic"),
+        ({"delta_max": 1e-6, "flat_hardening": [1, 2, 3]}, "flat_hardening must be rows"),
+    ],
+)
+def test_bad_input_one_line(kwargs, pattern):
+    with pytest.raises(ValueError, match=pattern) as info:
+        make_problem(AISI_1010, AISI_201, radius=R, **kwargs)
+    assert "\n" not in str(info.value)
+
+
+def test_delta_max_with_units_and_delta_c():
+    p = make_problem(AISI_1010, AISI_201, radius="8.8 mm", delta_max="20 um")
+    assert p.delta_max == pytest.approx(20e-6)
+    assert p.radius == pytest.approx(R)
+    from impactlab.contact import get_law
+    from impactlab.materials import ContactPair
+
+    law = get_law("ghaednia").build(ContactPair(AISI_201, AISI_1010), radius=R)
+    assert p.delta_c == pytest.approx(law.critical_interference, rel=1e-12)
+
+
+def test_hardening_table_accepted():
+    table = fe.check_hardening("t", [[305e6, 0.0], [400e6, 0.1], [450e6, 0.3]])
+    assert table == ((305e6, 0.0), (400e6, 0.1), (450e6, 0.3))
+
+
+def test_cache_dir_default_and_env(monkeypatch, tmp_path):
+    monkeypatch.delenv("IMPACTLAB_FE_CACHE", raising=False)
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "xdg"))
+    assert cache.default_cache_dir() == tmp_path / "xdg" / "impactlab" / "fe"
+    monkeypatch.setenv("IMPACTLAB_FE_CACHE", str(tmp_path / "here"))
+    assert cache.default_cache_dir() == tmp_path / "here"
+
+
+def test_cache_key_covers_every_input():
+    a = make_problem(AISI_1010, AISI_201, radius=R, delta_max=1e-6).key_data()
+    b = make_problem(AISI_1010, AISI_201, radius=R, delta_max=1e-6, mu=0.1).key_data()
+    assert cache.cache_key(a, "2.20") == cache.cache_key(dict(a), "2.20")
+    assert cache.cache_key(a, "2.20") != cache.cache_key(b, "2.20")
+    assert cache.cache_key(a, "2.20") != cache.cache_key(a, "2.21")
+
+
+def test_parse_sta_counts_cutbacks():
+    text = (
+        "SUMMARY OF JOB INFORMATION\n"
+        "  STEP      INC     ATT  ITRS     TOT TIME     STEP TIME      INC TIME\n"
+        "     1          1     1     8  0.250000E-01  0.250000E-01  0.250000E-01\n"
+        "     1          2     1U   60  0.250000E-01  0.250000E-01  0.250000E-01\n"
+        "     1          2     2     5  0.375000E-01  0.375000E-01  0.125000E-01\n"
+    )
+    rows = parse_sta(text)
+    assert [r.converged for r in rows] == [True, False, True]
+    assert rows[2].attempt == 2
+    assert rows[2].total_time == pytest.approx(0.0375)
+
+
+def test_parse_dat_totals_and_nodes():
+    text = (
+        "\n total force (fx,fy,fz) for set NTOP and time  0.2500000E-01\n\n"
+        "        2.847133E-08 -6.197790E-05 -7.978350E-25\n\n"
+        " displacements (vx,vy,vz) for set NFSURF and time  0.2500000E-01\n\n"
+        "         1  0.000000E+00 -4.976786E-06  0.000000E+00\n"
+        "         5 -8.622471E-08 -5.374086E-06  0.000000E+00\n"
+    )
+    dat = parse_dat(text)
+    t, vec = dat.totals[("force", "NTOP")][0]
+    assert t == pytest.approx(0.025)
+    assert vec[1] == pytest.approx(-6.19779e-5)
+    _, ids, u = dat.nodal[("displacements", "NFSURF")][0]
+    assert ids.tolist() == [1, 5]
+    assert u[1, 1] == pytest.approx(-5.374086e-6)
+
+
+def test_zero_crossing_and_contact_radius():
+    d = np.array([10.0, 9.0, 8.0, 7.0])
+    f = np.array([4.0, 2.0, -0.0, 0.0])
+    assert zero_crossing(d, f) == pytest.approx(8.0)
+    assert np.isnan(zero_crossing(d, np.array([4.0, 3.0, 2.0, 1.0])))
+    r = np.array([0.0, 1.0, 2.0, 3.0])
+    assert contact_radius_from_gap(r, np.array([-1.0, -1.0, 1.0, 2.0])) == pytest.approx(1.5)
+    assert INSTALL_HINT.startswith("CalculiX (ccx) was not found")
