@@ -86,6 +86,8 @@ _DROP_STATUS = {
     F.ST_NAN: S.ST_NAN,
     F.ST_TOO_MANY_EVENTS: S.ST_TOO_MANY_EVENTS,
     F.ST_TOO_MANY_CONTACTS: S.ST_TOO_MANY_EVENTS,
+    # the integration failed at the study's tolerance (the engine's nearest meaning)
+    F.ST_MISSED_CONTACT: S.ST_STEP_UNDERFLOW,
 }
 
 

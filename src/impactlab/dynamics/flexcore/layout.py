@@ -155,7 +155,13 @@ SV_VN0 = 24  #: normal velocity of the tip at first touch [m/s]
 SV_TSTAR = 25  #: Hertzian time scale [s]
 SV_FSCALE = 26  #: tangential force scale [N] (error scale of Q_t as a force)
 SV_DSTAR = 27  #: Hertzian interference scale [m] (error scale of Q_t as a displacement)
-NSV = 28
+#: Contact invariant: out of contact an end may lie below its touch threshold (the dent's
+#: surface, or the flat) by at most this much [m]: MISS_TOL_FACTOR max(1e-6, rtol) delta*.
+SV_TOL_MISS = 28
+NSV = 29
+#: The tolerance of the contact invariant in units of max(1e-6, rtol) times the Hertzian
+#: interference scale delta* (``SV_TOL_MISS``).
+MISS_TOL_FACTOR = 1.0
 
 # ---- status ------------------------------------------------------------------------------------
 ST_OK = 0
@@ -166,6 +172,7 @@ ST_NAN = 4
 ST_TOO_MANY_EVENTS = 5
 ST_TOO_MANY_CONTACTS = 6
 ST_MAX_STEPS = 7
+ST_MISSED_CONTACT = 8
 STATUS_MESSAGES = {
     ST_OK: "ok",
     ST_LAW_LIMIT: "interference beyond the contact law's validity",
@@ -175,6 +182,8 @@ STATUS_MESSAGES = {
     ST_TOO_MANY_EVENTS: "too many events (chattering)",
     ST_TOO_MANY_CONTACTS: "too many contacts or dents",
     ST_MAX_STEPS: "step limit reached",
+    ST_MISSED_CONTACT: "missed contact: an end lay below its dent's surface (or the flat) with "
+    "zero force, beyond the contact invariant's tolerance max(1e-6, rtol) delta*",
 }
 
 DEFAULT_RTOL = 1e-7  #: default relative tolerance of the flexible drop

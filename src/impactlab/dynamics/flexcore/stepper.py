@@ -5,8 +5,9 @@ The tableau is the rigid engine's (``impactlab.dynamics.core.integrator``: Dorma
 J. Comput. Appl. Math. 6 (1980) 19, doi:10.1016/0771-050X(80)90013-3; dense output: Shampine,
 Math. Comp. 46 (1986) 135, doi:10.1090/S0025-5718-1986-0815836-3); the state length varies
 with the number of modes, so the steps here loop over it. An event fires when its function
-goes from <= 0 to > 0; it is located on the dense output (Illinois regula falsi) and the state
-at the event is recomputed by an error-controlled integration to the located time.
+goes from <= 0 to > 0; it is located on the dense output (Illinois regula falsi, with the rigid
+core's round-off probe past a root: ``core.integrator.past_root``) and the state at the event is
+recomputed by an error-controlled integration to the located time.
 """
 
 from __future__ import annotations
@@ -16,7 +17,14 @@ import math
 import numpy as np
 from numba import njit
 
-from impactlab.dynamics.core.integrator import DENSE_P, DP_A, DP_E
+from impactlab.dynamics.core.integrator import (
+    DENSE_P,
+    DP_A,
+    DP_E,
+    G_ROUNDOFF,
+    THETA_TOL,
+    past_root,
+)
 from impactlab.dynamics.flexcore.cells import n_active
 from impactlab.dynamics.flexcore.rhs import rates
 
@@ -105,19 +113,36 @@ def illinois(a, fa, b, fb, side, th, f):
 
 
 @njit(cache=True)
-def locate(jev, g0, g1, mdl, md, y0, h, Q, yt, der, ev, ek, Jn, Jt):
-    """theta in (0, 1] where event ``jev`` fires between y0 and y0 + h (Illinois regula falsi
-    on the dense output; g0 <= 0 < g1 are its values at the ends)."""
+def locate(jev, g0, g1, mdl, md, y0, h, Q, yt, der, ev, ek, Jn, Jt, shift=0.0):
+    """theta in (0, 1] where event ``jev`` fires between y0 and y0 + h: the root of
+    g - ``shift`` (g the event function; ``shift`` > 0 locates the level a missed touch
+    reached, ``steps.first_event``) by Illinois regula falsi on the dense output; g0 <= 0 < g1
+    are the values of g - shift at the ends. As the rigid core's ``integrator.locate``: an
+    iterate where g - shift is zero to round-off ends the search, on the far side at once, on
+    the near side after a probe just past the root (``past_root``)."""
     law, p, c, _om, om2, dmp, _zeta, Ue, We, Pe, Tg, ia, ib = mdl
     a, fa, b, fb, side, prev = 0.0, g0, 1.0, g1, 0, 2.0
+    tiny = G_ROUNDOFF * max(-g0, g1)
     for _ in range(100):
         th = (a * fb - b * fa) / (fb - fa)
         if not (a < th < b):
             th = 0.5 * (a + b)
         dense(y0, h, th, Q, yt, y0.shape[0])
         rates(law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, yt, der, ev, ek, Jn, Jt)
-        a, fa, b, fb, side = illinois(a, fa, b, fb, side, th, ev[jev])
-        if b - a <= 1e-14 or abs(th - prev) <= 1e-14:
+        f = ev[jev] - shift
+        if abs(f) <= tiny:
+            if f > 0.0:  # past the root by round-off
+                return th
+            probe = past_root(th, f, b, fb)  # short of it: probe just past the root
+            if probe < b:
+                dense(y0, h, probe, Q, yt, y0.shape[0])
+                rates(law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, yt, der, ev, ek, Jn, Jt)
+                fp = ev[jev] - shift
+                if fp > 0.0:
+                    return probe
+                th, f = probe, fp
+        a, fa, b, fb, side = illinois(a, fa, b, fb, side, th, f)
+        if b - a <= THETA_TOL or abs(th - prev) <= THETA_TOL:
             break
         prev = th
     return b

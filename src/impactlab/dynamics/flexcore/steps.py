@@ -16,13 +16,28 @@ from impactlab.dynamics.flexcore.rhs import evaluate
 from impactlab.dynamics.flexcore.stepper import dense, dense_coeffs, integrate_to, locate
 
 
+@njit(cache=True, inline="always")
+def _missed_touch(md, sv, gold, gnew, k):
+    """The touch of end k (out of contact) that started the step on the wrong side of zero
+    (0 < g <= the invariant's tolerance, e.g. after a grazing event recomputed a hair inside
+    its dent) and ends it beyond the tolerance: located where g reaches the tolerance."""
+    j = k * F.NEVK + F.EV_TOUCH
+    tol = sv[F.SV_TOL_MISS]
+    return md[k, F.MD_IN] == 0.0 and 0.0 < gold[j] <= tol < gnew[j]
+
+
 @njit(cache=True)
-def first_event(mdl, md, y, h, K, Q, gold, gnew, record_on, yt, der, ev, ek, Jn, Jt):
-    """(jev, theta, fired): the earliest event crossed in the step (-1: none) and where."""
+def first_event(mdl, md, y, h, K, Q, gold, gnew, sv, record_on, yt, der, ev, ek, Jn, Jt):
+    """(jev, theta, fired): the earliest event crossed in the step (-1: none) and where; a
+    touch that began the step within the invariant's tolerance past zero fires where it
+    reaches the tolerance (``_missed_touch``)."""
     n = y.shape[0]
     fired = False
     for j in range(gold.shape[0]):
         if gold[j] <= 0.0 and gnew[j] > 0.0:
+            fired = True
+    for k in range(F.NE):
+        if _missed_touch(md, sv, gold, gnew, k):
             fired = True
     if fired or record_on:
         dense_coeffs(K, Q, n)
@@ -35,7 +50,30 @@ def first_event(mdl, md, y, h, K, Q, gold, gnew, record_on, yt, der, ev, ek, Jn,
                 if thj < theta:
                     theta = thj
                     jev = j
+        for k in range(F.NE):
+            if _missed_touch(md, sv, gold, gnew, k):
+                j = k * F.NEVK + F.EV_TOUCH
+                tol = sv[F.SV_TOL_MISS]
+                thj = locate(j, gold[j] - tol, gnew[j] - tol, mdl, md, y, h, Q, yt, der, ev, ek,
+                             Jn, Jt, tol)  # fmt: skip
+                if thj < theta:
+                    theta = thj
+                    jev = j
     return jev, theta, fired
+
+
+@njit(cache=True)
+def missed_contact(md, sv, ek, jev):
+    """The contact invariant after a step ending at event ``jev``: True when an end out of
+    contact (other than one touching at ``jev``) lies below its touch threshold (its dent's
+    surface, or the flat) by more than ``SV_TOL_MISS``: a touch the event search missed,
+    which the drop refuses (``ST_MISSED_CONTACT``)."""
+    for k in range(F.NE):
+        if jev == k * F.NEVK + F.EV_TOUCH:
+            continue
+        if md[k, F.MD_IN] == 0.0 and ek[k, F.EK_DELTA] - md[k, F.MD_DR] > sv[F.SV_TOL_MISS]:
+            return True
+    return False
 
 
 @njit(cache=True)
@@ -93,9 +131,10 @@ def accept(mdl, md, y, t, h, rtol, sc, K, Q, gold, gnew, ynew, yev, sv, contacts
            record_on, hist, nh, yt, der, ev, ek, Jn, Jt):  # fmt: skip
     """An accepted step from (t, y): cut at the first event it crosses (the state there into
     ``yev``), record, update the statistics and the energy error. Returns
-    (ok, jev, tend, hist, nh); ok False on a non-finite force."""
+    (ok, jev, tend, hist, nh); ok False on a non-finite force or a missed contact (the
+    contact invariant, ``missed_contact``)."""
     jev, theta, fired = first_event(
-        mdl, md, y, h, K, Q, gold, gnew, record_on, yt, der, ev, ek, Jn, Jt
+        mdl, md, y, h, K, Q, gold, gnew, sv, record_on, yt, der, ev, ek, Jn, Jt
     )
     if jev >= 0:
         tend = t + theta * h
@@ -111,6 +150,9 @@ def accept(mdl, md, y, t, h, rtol, sc, K, Q, gold, gnew, ynew, yev, sv, contacts
         evaluate(mdl, md, yev, der, ev, ek, Jn, Jt)
     if not step_stats(mdl, md, t, tend, sv, contacts, dents, cur_con, ek):
         sv[F.SV_STATUS] = F.ST_NAN
+        return False, jev, tend, hist, nh
+    if missed_contact(md, sv, ek, jev):
+        sv[F.SV_STATUS] = F.ST_MISSED_CONTACT
         return False, jev, tend, hist, nh
     iq = 6 + 2 * mdl[3].shape[0]
     en = abs(mechanical_energy(mdl, yev) - sv[F.SV_E0] - yev[iq] - yev[iq + 1] - yev[iq + 2])
