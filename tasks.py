@@ -61,6 +61,7 @@ _MYPY: list[str | Path] = [PY, "-m", "mypy"]
 _LOCK: list[str | Path] = [
     *("-m", "uv", "pip", "compile", "pyproject.toml"),
     *("--extra", "profilometry", "--extra", "netcdf", "--extra", "dev", "--extra", "docs"),
+    *("--extra", "fe"),
     *("--python-version", "3.11", "-o", "requirements.lock"),
 ]
 

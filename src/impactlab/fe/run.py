@@ -133,7 +133,8 @@ def indent(
     [Pa], true plastic strain), the first at strain 0 (default: elastic-perfectly plastic at
     S_y); ``flat_hardening="elastic"`` keeps the flat elastic. mu: Coulomb friction
     coefficient of the contact (0: frictionless). mesh_level: 1-4, each doubling the number
-    of elements. workers: parallel ccx processes (default ``os.cpu_count()``). cache_dir: where results are cached (``impactlab.fe.cache``);
+    of elements. workers: parallel ccx processes (default ``os.cpu_count()``).
+    cache_dir: where results are cached (``impactlab.fe.cache``);
     use_cache: False to always run. keep_files: a folder to keep the ccx files in (one
     sub-folder per maximum). progress: called as ``progress(index, result)`` as each run ends.
 

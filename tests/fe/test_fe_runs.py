@@ -1,0 +1,148 @@
+"""impactlab.fe against CalculiX: Hertz, force balance, cache, repeatability, plasticity.
+
+Skipped (with the reason) when ccx or gmsh is missing; impactlab's own modules are imported
+unconditionally, so a broken import fails. The smoke part takes about a minute on two cores;
+the long checks (finer meshes, 1000 delta_c) are marked slow.
+"""
+
+from __future__ import annotations
+
+import shutil
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from impactlab.fe import indent
+from impactlab.fe.ccx import RunOutput
+from impactlab.fe.mesh import build_mesh
+from impactlab.fe.problem import make_problem
+from impactlab.fe.run import assemble
+from impactlab.materials import AISI_201, AISI_1010
+
+pytest.importorskip("gmsh", reason="impactlab.fe needs the gmsh package (the fe extra)")
+if shutil.which("ccx") is None:
+    pytest.skip(
+        "CalculiX ccx is not installed (apt-get install calculix-ccx)", allow_module_level=True
+    )
+
+R = 8.8e-3
+ELASTIC = {"radius": R, "sphere": "rigid", "flat_hardening": "elastic"}
+
+
+def hertz(res, problem):
+    """Hertz force [N] at the loading points of ``res``."""
+    return 4.0 / 3.0 * problem.E_star * np.sqrt(R) * res.loading_delta**1.5
+
+
+@pytest.fixture(scope="module")
+def elastic(tmp_path_factory):
+    """A rigid sphere on an elastic flat to delta_c (mesh level 1), its files kept."""
+    base = tmp_path_factory.mktemp("fe")
+    problem = make_problem(AISI_1010, AISI_1010, delta_max=1e-6, **ELASTIC)
+    dc = problem.delta_c
+    res = indent(
+        AISI_1010, delta_max=dc, cache_dir=base / "cache", keep_files=base / "files", **ELASTIC
+    )[0]
+    return res, make_problem(AISI_1010, AISI_1010, delta_max=dc, **ELASTIC), base
+
+
+def test_hertz_level_1(elastic):
+    """Level 1 is the coarse mesh: Hertz within 1.5 % from 0.1 delta_c to delta_c (level 3
+    reaches 0.5 %: the slow test below)."""
+    res, problem, _ = elastic
+    assert res.converged, res.status()
+    keep = res.loading_delta >= 0.1 * res.delta_c
+    err = res.loading_force[keep] / hertz(res, problem)[keep] - 1.0
+    assert np.max(np.abs(err)) < 0.015
+    a_hertz = np.sqrt(R * res.loading_delta[keep])
+    assert np.allclose(res.contact_radius[keep], a_hertz, rtol=0.08)
+
+
+def test_force_balance_and_elastic_unloading(elastic):
+    res, _, _ = elastic
+    assert res.force_balance < 1e-6  # the sphere's reaction equals the flat's
+    assert res.residual_depth < 0.01 * res.delta_max  # elastic: no dent
+    assert np.max(np.abs(res.dent_z)) < 0.01 * res.delta_max
+    assert res.increments > 20
+    assert res.run_time > 0.0
+
+
+def test_cache_hit_is_instant_and_equal(elastic):
+    res, _, base = elastic
+    t0 = time.perf_counter()
+    again = indent(AISI_1010, delta_max=res.delta_max, cache_dir=base / "cache", **ELASTIC)[0]
+    assert time.perf_counter() - t0 < 2.0
+    np.testing.assert_array_equal(again.loading_force, res.loading_force)
+    assert again.residual_depth == res.residual_depth
+
+
+def test_repeatable_in_parallel(elastic):
+    """Two maxima in one call (two ccx processes): the delta_c run repeats bit for bit."""
+    res, _, _ = elastic
+    runs = indent(
+        AISI_1010,
+        delta_max=[0.5 * res.delta_max, res.delta_max],
+        use_cache=False,
+        workers=2,
+        **ELASTIC,
+    )
+    np.testing.assert_array_equal(runs[1].loading_force, res.loading_force)
+    assert runs[0].delta_max == pytest.approx(0.5 * res.delta_max)
+
+
+def test_truncated_run_is_marked_not_converged(elastic):
+    """A run that stops early is marked, with its last converged point, never truncated
+    silently."""
+    _, problem, base = elastic
+    files = Path(base / "files" / "run0")
+    dat = (files / "job.dat").read_text()
+    cut = dat[: dat.index("and time  0.1000000E+01")]
+    cut = cut[: cut.rindex("\n total force")]
+    mesh = build_mesh(problem.mesh_spec())
+    deck = problem.deck_spec(problem.mesh_spec())
+    out = RunOutput(cut, (files / "job.sta").read_text(), 201, "*ERROR: too many cutbacks", 1.0)
+    bad = assemble(problem, mesh, deck, out)
+    assert not bad.converged
+    assert bad.last_converged_delta < problem.delta_max
+    assert np.isnan(bad.residual_depth)
+    assert "NOT CONVERGED" in bad.status() and "too many cutbacks" in bad.status()
+
+
+def test_paper_pair_plastic_smoke(tmp_path):
+    """The paper's pair (both elastic-plastic) to 10 delta_c: a dent, a stiffer-than-Hertz
+    flattening, and a contact radius beyond Hertz's."""
+    probe = make_problem(AISI_1010, AISI_201, radius=R, delta_max=1e-6)
+    res = indent(AISI_1010, AISI_201, radius=R, delta_max=10 * probe.delta_c, cache_dir=tmp_path)[0]
+    assert res.converged, res.status()
+    assert 0.02 < res.residual_ratio < 0.6
+    f_hertz = 4.0 / 3.0 * probe.E_star * np.sqrt(R) * res.delta_max**1.5
+    assert res.max_force < f_hertz
+    assert res.contact_radius[-1] > np.sqrt(R * res.delta_max)
+    assert res.force_balance < 1e-6
+
+
+@pytest.mark.slow
+def test_hertz_level_3_within_half_percent(tmp_path):
+    problem = make_problem(AISI_1010, AISI_1010, delta_max=1e-6, **ELASTIC)
+    res = indent(AISI_1010, delta_max=problem.delta_c, mesh_level=3, cache_dir=tmp_path, **ELASTIC)[
+        0
+    ]
+    keep = res.loading_delta >= 0.1 * res.delta_c
+    err = res.loading_force[keep] / hertz(res, problem)[keep] - 1.0
+    assert np.max(np.abs(err)) < 0.005
+
+
+@pytest.mark.slow
+def test_mesh_convergence_at_1000_delta_c(tmp_path):
+    """Mesh levels 1 and 2 at 1000 delta_c (the paper's pair): force and delta_r within 2 %."""
+    probe = make_problem(AISI_1010, AISI_201, radius=R, delta_max=1e-6)
+    d = 1000 * probe.delta_c
+    a, b = (
+        indent(AISI_1010, AISI_201, radius=R, delta_max=d, mesh_level=lvl, cache_dir=tmp_path)[0]
+        for lvl in (1, 2)
+    )
+    assert a.converged and b.converged
+    assert abs(a.max_force / b.max_force - 1.0) < 0.02
+    assert abs(a.residual_depth / b.residual_depth - 1.0) < 0.02
