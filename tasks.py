@@ -81,6 +81,7 @@ TASKS: dict[str, str] = {
     "bench": "run the benchmarks (benchmarks/run_all.py) [ARGS]",
     "docs": "build the documentation site (mkdocs build --strict) [ARGS]",
     "lock": "regenerate requirements.lock with uv (developers only)",
+    "fe-reference": "run the CalculiX reference curves into src/impactlab/fe/data/ [CASES]",
     "help": "this list (also -h, --help, or no task)",
 }
 
@@ -116,6 +117,8 @@ def main(argv: list[str]) -> int:
     if task == "lint":
         cmds = (_RUFF, _RUFF_FORMAT, _MYPY, [BIN / "lint-imports", "--no-cache"])
         return max(_run(*cmd, env=env) for cmd in cmds)
+    if task == "fe-reference":
+        return _run(PY, "-m", "impactlab.fe.reference", *rest, env=env)
     if task == "bench":
         return _run(PY, "benchmarks/run_all.py", *rest, env=env)
     return _run(PY, "-m", "mkdocs", "build", "--strict", *rest, env=env)

@@ -136,3 +136,33 @@ def test_zero_crossing_and_contact_radius():
     r = np.array([0.0, 1.0, 2.0, 3.0])
     assert contact_radius_from_gap(r, np.array([-1.0, -1.0, 1.0, 2.0])) == pytest.approx(1.5)
     assert INSTALL_HINT.startswith("CalculiX (ccx) was not found")
+
+
+def _cli(*args, env=None):
+    import os
+    import subprocess
+
+    full = {**os.environ, **(env or {})}
+    return subprocess.run(
+        [sys.executable, "-m", "impactlab", "fe", "indent", *args],
+        capture_output=True,
+        text=True,
+        env=full,
+        check=False,
+    )
+
+
+def test_cli_errors_are_one_line(tmp_path):
+    res = _cli("--max", "9 mm")
+    assert res.returncode == 2, res.stderr
+    assert "delta_max" in res.stderr and "sphere radius" in res.stderr
+    assert len(res.stderr.strip().splitlines()) == 1
+    table = tmp_path / "h.csv"
+    table.write_text("stress,strain\n305e6,0\n300e6,0.1\n")
+    res = _cli("--max", "1 um", "--hardening", str(table))
+    assert res.returncode == 2
+    assert "flat_hardening must be monotonic" in res.stderr
+    res = _cli("--max", "1 um", env={"PATH": str(tmp_path), "IMPACTLAB_CCX": ""})
+    assert res.returncode == 2
+    assert "apt-get install calculix-ccx" in res.stderr
+    assert "Traceback" not in res.stderr

@@ -1,0 +1,228 @@
+"""``impactlab fe indent``: the finite-element indentation reference (CalculiX).
+
+Examples::
+
+    impactlab fe indent --max "10 um" --max "100 um"              # the paper's pair, R = 8.8 mm
+    impactlab fe indent --max "5 um" --flat-E "69 GPa" --flat-nu 0.33 --flat-sy "276 MPa"
+    impactlab fe indent --max "20 um" --sphere rigid --hardening flat.csv --json
+    impactlab fe indent --max "50 um" --mesh 2 --plot --out fe-out/
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+import sys
+from pathlib import Path
+from typing import Any
+
+import typer
+
+from impactlab.cli._common import UserError, console, emit, positive, quantity
+from impactlab.materials import Material, get_material
+
+fe_app = typer.Typer(
+    name="fe",
+    help="Finite-element reference (CalculiX): sphere-on-flat indentation.",
+    no_args_is_help=True,
+    rich_markup_mode=None,
+)
+
+
+def _material(name: str, E: str | None, nu: float | None, sy: str | None, label: str) -> Material:
+    """A preset by name, with any of E, nu, S_y overridden by values."""
+    base = get_material(name)
+    e = quantity(E, "Pa", f"--{label}-E")
+    s = quantity(sy, "Pa", f"--{label}-sy")
+    if e is None and nu is None and s is None:
+        return base
+    return Material(
+        f"{label} (custom)",
+        e if e is not None else base.E,
+        nu if nu is not None else base.nu,
+        s if s is not None else base.yield_strength,
+    )
+
+
+def read_hardening(path: Path) -> list[tuple[float, float]]:
+    """A hardening CSV: two columns, true stress [Pa] and true plastic strain, one row each
+    (a header line is skipped)."""
+    if not path.is_file():
+        raise FileNotFoundError(f"--hardening file not found: {path}")
+    rows: list[tuple[float, float]] = []
+    with path.open(newline="") as fh:
+        for i, row in enumerate(csv.reader(fh)):
+            if not row or not "".join(row).strip():
+                continue
+            try:
+                rows.append((float(row[0]), float(row[1])))
+            except (ValueError, IndexError):
+                if i == 0:
+                    continue  # header
+                raise UserError(
+                    f"--hardening {path}: line {i + 1} must be 'stress_Pa, plastic_strain', "
+                    f"got {','.join(row)!r}"
+                ) from None
+    return rows
+
+
+_UNITS = {
+    "delta_max": "m",
+    "delta_c": "m",
+    "max_force": "N",
+    "residual_depth": "m",
+    "contact_radius_at_max": "m",
+    "pile_up": "m",
+    "last_converged_delta": "m",
+    "run_time": "s",
+    "loading_delta": "m",
+    "loading_force": "N",
+    "unloading_delta": "m",
+    "unloading_force": "N",
+    "contact_radius": "m",
+    "dent_r": "m",
+    "dent_z": "m",
+}
+
+
+def _summary(res: Any) -> dict[str, Any]:
+    return {
+        "delta_max": res.delta_max,
+        "delta_c": res.delta_c,
+        "delta_max_over_delta_c": res.delta_max / res.delta_c,
+        "max_force": res.max_force,
+        "residual_depth": res.residual_depth,
+        "residual_ratio": res.residual_ratio,
+        "contact_radius_at_max": float(res.contact_radius[-1]) if res.contact_radius.size else 0.0,
+        "pile_up": res.pile_up,
+        "converged": res.converged,
+        "status": res.status(),
+        "last_converged_delta": res.last_converged_delta,
+        "increments": res.increments,
+        "cutbacks": res.cutbacks,
+        "elements": res.n_elements,
+        "force_balance": res.force_balance,
+        "run_time": res.run_time,
+    }
+
+
+def _plot(results: list[Any], out: Path | None) -> Path:
+    from impactlab._mpl import pyplot
+
+    plt = pyplot()
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4))
+    for r in results:
+        lab = f"{r.delta_max / r.delta_c:.3g} delta_c"
+        ax1.plot(r.loading_delta * 1e6, r.loading_force, label=lab)
+        ax1.plot(r.unloading_delta * 1e6, r.unloading_force, "--", color=ax1.lines[-1].get_color())
+        ax2.plot(r.dent_r * 1e3, r.dent_z * 1e6, label=lab)
+    ax1.set(xlabel="interference [um]", ylabel="force [N]", title="loading and unloading")
+    ax2.set(xlabel="r [mm]", ylabel="surface height [um]", title="residual dent")
+    ax2.set_xlim(0, max(3.0 * float(r.contact_radius[-1]) * 1e3 for r in results))
+    ax1.legend()
+    fig.tight_layout()
+    folder = out or Path(".")
+    folder.mkdir(parents=True, exist_ok=True)
+    path = folder / "fe_indent.png"
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return path
+
+
+@fe_app.command("indent")
+def indent_cmd(
+    maxima: list[str] = typer.Option(
+        ..., "--max", help="Largest interference, with units ('20 um'); repeat for several."
+    ),
+    radius: str = typer.Option("8.8 mm", "--radius", help="Sphere radius."),
+    sphere: str = typer.Option("elastic-plastic", help="rigid, elastic or elastic-plastic."),
+    body: str = typer.Option("aisi-201", help="The sphere's material preset."),
+    flat: str = typer.Option("aisi-1010", help="The flat's material preset."),
+    flat_E: str | None = typer.Option(None, "--flat-E", help="Flat's Young's modulus."),
+    flat_nu: float | None = typer.Option(None, "--flat-nu", help="Flat's Poisson's ratio."),
+    flat_sy: str | None = typer.Option(None, "--flat-sy", help="Flat's yield strength."),
+    body_E: str | None = typer.Option(None, "--body-E", help="Sphere's Young's modulus."),
+    body_nu: float | None = typer.Option(None, "--body-nu", help="Sphere's Poisson's ratio."),
+    body_sy: str | None = typer.Option(None, "--body-sy", help="Sphere's yield strength."),
+    hardening: Path | None = typer.Option(
+        None, help="CSV of the flat's true stress [Pa], true plastic strain (first strain 0)."
+    ),
+    mu: float = typer.Option(0.0, help="Friction coefficient of the contact."),
+    mesh: int = typer.Option(1, "--mesh", help="Mesh level 1-4 (each doubles the elements)."),
+    workers: int | None = typer.Option(None, help="Parallel ccx processes (default: CPUs)."),
+    no_cache: bool = typer.Option(False, "--no-cache", help="Run even if cached."),
+    plot: bool = typer.Option(False, "--plot", help="Write a figure (fe_indent.png)."),
+    out: Path | None = typer.Option(None, "--out", help="Folder for the figure."),
+    as_json: bool = typer.Option(False, "--json", help="Machine-readable output (with curves)."),
+) -> None:
+    """Indent a flat with a sphere to each --max and unload (CalculiX, axisymmetric)."""
+    from impactlab.fe import find_ccx, indent
+
+    R = positive(radius, "m", "--radius")
+    deltas = [positive(m, "m", "--max") for m in maxima]
+    fm = _material(flat, flat_E, flat_nu, flat_sy, "flat")
+    bm = _material(body, body_E, body_nu, body_sy, "body")
+    table = read_hardening(hardening) if hardening is not None else None
+    try:
+        find_ccx()
+    except RuntimeError as exc:  # not installed: one line saying how to install it
+        raise UserError(str(exc)) from None
+    done: list[int] = []
+    show = sys.stdout.isatty() and not as_json
+
+    def progress(i: int, res: Any) -> None:
+        done.append(i)
+        if show:
+            console.print(
+                f"[{len(done)}/{len(deltas)}] delta_max = {res.delta_max * 1e6:.4g} um: "
+                f"{res.status()} ({res.run_time:.1f} s)",
+                markup=False,
+            )
+
+    kwargs: dict[str, Any] = {
+        "radius": R,
+        "delta_max": deltas,
+        "sphere": sphere,
+        "flat_hardening": table,
+        "mu": mu,
+        "mesh_level": mesh,
+        "workers": workers,
+        "use_cache": not no_cache,
+        "progress": progress,
+    }
+    if show:
+        with console.status(f"running {len(deltas)} CalculiX indentation(s) ..."):
+            results = indent(fm, bm, **kwargs)
+    else:
+        results = indent(fm, bm, **kwargs)
+    if as_json:
+        from impactlab._json import to_json
+
+        payload = []
+        for r in results:
+            item = _summary(r)
+            for name in (
+                "loading_delta",
+                "loading_force",
+                "contact_radius",
+                "unloading_delta",
+                "unloading_force",
+                "dent_r",
+                "dent_z",
+            ):
+                item[name] = getattr(r, name).tolist()
+            payload.append(item)
+        print(json.dumps(to_json({"runs": payload}, _UNITS), indent=2))
+    else:
+        for r in results:
+            data = _summary(r)
+            emit(data, as_json=False, title=f"FE indentation to {r.delta_max:.4g} m", units=_UNITS)
+    if plot:
+        path = _plot(results, out)
+        if not as_json:
+            console.print(f"figure: {path}", markup=False)
+
+
+def register(app: typer.Typer) -> None:
+    """Add ``impactlab fe ...`` to the command line."""
+    app.add_typer(fe_app, name="fe")
