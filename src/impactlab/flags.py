@@ -21,6 +21,7 @@ __all__ = [
     "FLAG_ENERGY_GAIN",
     "FLAG_GRAVITY_DOMINATED",
     "FLAG_LAW_EXTRAPOLATED",
+    "FLAG_OTHER_END",
     "GRAVITY_IMPULSE_RATIO",
     "ResultFlag",
     "messages",
@@ -29,6 +30,7 @@ __all__ = [
 FLAG_ENERGY_GAIN = 1  #: bit of ``ResultFlag.ENERGY_GAIN`` (read by the compiled core)
 FLAG_GRAVITY_DOMINATED = 2  #: bit of ``ResultFlag.GRAVITY_DOMINATED``
 FLAG_LAW_EXTRAPOLATED = 4  #: bit of ``ResultFlag.LAW_EXTRAPOLATED`` (issue 12)
+FLAG_OTHER_END = 8  #: bit of ``ResultFlag.OTHER_END`` (the flexible drop only)
 #: Flags that caution rather than invalidate: the impact measures stay readable (``ok`` stays
 #: True). LAW_EXTRAPOLATED: the law is used beyond its (fitted, provisional or theoretical)
 #: range; its outputs stay finite but are not validated there.
@@ -63,6 +65,11 @@ class ResultFlag(enum.IntFlag):
     #: the largest interference exceeded the upper end of the contact law's fitted range
     #: (``impactlab.contact.ranges``): the law is extrapolated (advisory: ``ADVISORY_FLAGS``)
     LAW_EXTRAPOLATED = FLAG_LAW_EXTRAPOLATED
+    #: a drop (``simulate_drop``) whose sequence is not one bounce of the tip: the other end
+    #: touched the flat within it (``stop="flight"``), or the tip still approaches the flat
+    #: after its last contact (e < 0: the other end lands first); e, the duration and the mean
+    #: force then mix or cut the impacts
+    OTHER_END = FLAG_OTHER_END
 
 
 _MESSAGES: dict[ResultFlag, str] = {
@@ -76,6 +83,12 @@ _MESSAGES: dict[ResultFlag, str] = {
         f"{GRAVITY_IMPULSE_RATIO:g} of the contact's normal impulse, so the body rests, rocks "
         "or tips over rather than bounces and e and the other impact measures are not "
         "meaningful (raise the impact velocity, or pass gravity=False)"
+    ),
+    ResultFlag.OTHER_END: (
+        "other end: the other end of the rod touched the flat within the sequence "
+        "(stop='flight'), or the tip still approaches the flat after its last contact (e < 0: "
+        "the other end lands before the tip leaves), so e, the duration and the mean force do "
+        "not describe one bounce of the tip; read the contacts one by one"
     ),
     ResultFlag.LAW_EXTRAPOLATED: (
         "law extrapolated: the largest interference exceeded {what}{how_far}, so {so}; the "
@@ -135,13 +148,15 @@ def messages(
         value = int(flags)
     except (TypeError, ValueError):
         raise TypeError(f"flags must be an integer bitmask, got {flags!r}") from None
-    known = int(ResultFlag.ENERGY_GAIN | ResultFlag.GRAVITY_DOMINATED | ResultFlag.LAW_EXTRAPOLATED)
+    known = 0
+    for flag in ResultFlag:
+        known |= int(flag)
     if value < 0 or value & ~known:
         raise ValueError(f"flags {value!r} holds bits outside the known flags (mask {known})")
     what, limit_name, so = _EXTRAPOLATION_TEXT.get(status or "", _UNKNOWN_STATUS)
     how_far = _how_far(extrapolation, limit_name)
     return tuple(
         text.format(how_far=how_far, what=what, so=so)
-        for flag, text in _MESSAGES.items()
+        for flag, text in sorted(_MESSAGES.items())
         if value & flag
     )

@@ -47,7 +47,7 @@ from impactlab.dynamics.models import (
     kernel_params,
     references_used,
 )
-from impactlab.flags import ResultFlag
+from impactlab.flags import ENERGY_GAIN_RTOL_FACTOR, ENERGY_ROUNDOFF, ResultFlag
 from impactlab.friction import (
     COULOMB,
     DEFAULT_MU,
@@ -250,23 +250,61 @@ def _rate_model(
     return build(factor.k), factor
 
 
+def _tip_sequence(contacts: np.ndarray, o: dict[str, Any]) -> tuple[float, float]:
+    """(duration [s], normal impulse [N s]) of the tip's sequence: its contacts before the
+    other end's first touch (all of them when the other end never touched)."""
+    ends = contacts[:, F.CR_END]
+    if not np.any(ends == 1.0):
+        return o["duration"], o["normal_impulse"]
+    t1 = float(contacts[ends == 1.0, F.CR_T0].min())
+    tip = contacts[(ends == 0.0) & (contacts[:, F.CR_T0] < t1)]
+    return float((tip[:, F.CR_T0] + tip[:, F.CR_DUR]).max()), float(tip[:, F.CR_PN].sum())
+
+
 def _flags(
-    o: dict[str, Any], e0: float, m: float, g: float, rtol: float, model: ContactModel
+    o: dict[str, Any],
+    e0: float,
+    m: float,
+    g: float,
+    rtol: float,
+    model: ContactModel,
+    contacts: np.ndarray,
 ) -> ResultFlag:
     """The result flags of a finished sequence (docs/flexible.md, "Flags"): the rigid engine's
     criteria (``impactlab.dynamics.core.quality``) on the state after the last contact, the
-    vibration energy counted with the kinetic energy, and on the sequence's duration and total
-    normal impulse; the law's fitted range (``contact.ranges.law_extrapolated``, contract C2)
-    on the largest interference of the sequence."""
+    vibration energy counted with the kinetic energy, and on the duration and the normal
+    impulse of the tip's sequence (its contacts before the other end's first touch); the
+    law's fitted range (``contact.ranges.law_extrapolated``, contract C2) on the largest
+    interference of the sequence; OTHER_END when the other end touched the flat or the tip
+    still approaches it after the last contact (e < 0)."""
     e_end = o["rigid_kinetic_energy"] + o["vibration_energy"]
     flags = ResultFlag.NONE
     if law_extrapolated(model, o["delta_max"]):
         flags |= ResultFlag.LAW_EXTRAPOLATED
     if energy_gained(e0, e_end, o["potential_energy"], rtol):
         flags |= ResultFlag.ENERGY_GAIN
-    if gravity_dominated(m * g * o["duration"], o["normal_impulse"]):
+    duration, impulse = _tip_sequence(contacts, o)
+    if gravity_dominated(m * g * duration, impulse):
         flags |= ResultFlag.GRAVITY_DOMINATED
+    if np.any(contacts[:, F.CR_END] == 1.0) or not o["e"] >= 0.0:
+        flags |= ResultFlag.OTHER_END
     return flags
+
+
+def _check_energy_balance(o: dict[str, Any], rtol: float) -> None:
+    """DropError when the energy balance closed worse than the tolerance promises: the
+    largest |T + V - E0 - W| / E0 of the run above ``ENERGY_GAIN_RTOL_FACTOR`` rtol +
+    ``ENERGY_ROUNDOFF`` (the margin of the ENERGY_GAIN criterion): the results, energy gain or
+    not, are not integrated to the tolerance."""
+    bound = ENERGY_GAIN_RTOL_FACTOR * rtol + ENERGY_ROUNDOFF
+    if not o["energy_error"] <= bound:
+        raise DropError(
+            f"drop: {F.STATUS_MESSAGES[F.ST_INACCURATE]}: the energy balance closed to "
+            f"{o['energy_error']:.3g} of the initial energy, beyond the "
+            f"{ENERGY_GAIN_RTOL_FACTOR:g} rtol + {ENERGY_ROUNDOFF:g} = {bound:.3g} that rtol = "
+            f"{rtol:g} promises: lower rtol",
+            F.ST_INACCURATE,
+        )
 
 
 def _result(
@@ -282,6 +320,7 @@ def _result(
     vx, vy = inputs["velocity_in"]
     e0 = 0.5 * m * (vx * vx + vy * vy) + 0.5 * bm.inertia * inputs["spin_in"] ** 2
     rtol = inputs.pop("rtol")
+    _check_energy_balance(o, rtol)
     ratio, ratio_max = extrapolation(model.law_id, model.params, o["delta_max"])
     skip = {"vx_out", "vy_out", "n_contacts", "next_end", "n_steps", "n_jumps", "n_dents"}
     skip |= {"t_final"}
@@ -300,7 +339,7 @@ def _result(
         rate_factor=rate[1].k if rate[1] is not None else 1.0,
         strain_rate=rate[1].strain_rate if rate[1] is not None else math.nan,
         history=DropHistory(r.history) if r.history is not None else None,
-        flags=_flags(o, e0, m, inputs["gravity"], rtol, model),
+        flags=_flags(o, e0, m, inputs["gravity"], rtol, model, r.contacts),
         max_delta_ratio=ratio,
         fitted_delta_ratio_max=ratio_max,
         references=references,

@@ -88,6 +88,7 @@ _DROP_STATUS = {
     F.ST_TOO_MANY_CONTACTS: S.ST_TOO_MANY_EVENTS,
     # the integration failed at the study's tolerance (the engine's nearest meaning)
     F.ST_MISSED_CONTACT: S.ST_STEP_UNDERFLOW,
+    F.ST_INACCURATE: S.ST_STEP_UNDERFLOW,
 }
 
 

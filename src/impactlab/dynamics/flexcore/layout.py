@@ -173,6 +173,7 @@ ST_TOO_MANY_EVENTS = 5
 ST_TOO_MANY_CONTACTS = 6
 ST_MAX_STEPS = 7
 ST_MISSED_CONTACT = 8
+ST_INACCURATE = 9  #: set by ``simulate_drop``: the energy balance beyond the tolerance's promise
 STATUS_MESSAGES = {
     ST_OK: "ok",
     ST_LAW_LIMIT: "interference beyond the contact law's validity",
@@ -184,6 +185,7 @@ STATUS_MESSAGES = {
     ST_MAX_STEPS: "step limit reached",
     ST_MISSED_CONTACT: "missed contact: an end lay below its dent's surface (or the flat) with "
     "zero force, beyond the contact invariant's tolerance max(1e-6, rtol) delta*",
+    ST_INACCURATE: "integration not accurate to the tolerance",
 }
 
 DEFAULT_RTOL = 1e-7  #: default relative tolerance of the flexible drop
