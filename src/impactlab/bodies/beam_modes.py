@@ -61,7 +61,10 @@ def axial_slope(sec: RodSection, k: int, s: np.ndarray) -> np.ndarray:
 
 
 def _cos_minus_sech(x: float) -> float:
-    return math.cos(x) - 1.0 / math.cosh(x)
+    """cos x - 1 / cosh x (beyond x = 700, where cosh overflows, sech x = 2 e^-x)."""
+    if x < 700.0:
+        return math.cos(x) - 1.0 / math.cosh(x)
+    return math.cos(x) - 2.0 * math.exp(-x)
 
 
 def eb_beta_l(n: int) -> np.ndarray:

@@ -35,6 +35,10 @@ __all__ = [
     "rigid_modes",
 ]
 
+#: Most modes of either family (``impactlab.bodies.flexible_rod.MAX_MODES``: beyond it the
+#: wavelengths fall below the diameter and the residual modes' eigenproblem degenerates).
+_MAX_MODES = 128
+
 KIND_AXIAL = 0  #: ``ModalBasis.kind`` of an axial mode
 KIND_BENDING = 1  #: of a bending mode
 KIND_AXIAL_RESIDUAL = 2  #: of an axial residual pseudo-mode
@@ -138,6 +142,8 @@ def modal_basis(
     for name, n in (("n_axial", n_axial), ("n_bending", n_bending)):
         if not isinstance(n, int | np.integer) or isinstance(n, bool) or n < 0:
             raise ValueError(f"{name} must be an integer >= 0, got {n!r}")
+        if n > _MAX_MODES:
+            raise ValueError(f"{name} must be at most {_MAX_MODES}, got {int(n)}")
     if axial_residual and n_axial < 1:
         raise ValueError("axial_residual needs n_axial >= 1")
     M = n_axial + n_bending + (2 if axial_residual else 0)

@@ -61,10 +61,21 @@ from impactlab.friction import (
 from impactlab.materials import AISI_1010, Material
 from impactlab.references import Reference
 
-__all__ = ["DEFAULT_T_MAX", "DROP_FRICTION", "STOP_MODES", "DropError", "simulate_drop"]
+__all__ = [
+    "DEFAULT_T_MAX",
+    "DROP_FRICTION",
+    "MIN_APPROACH_SPEED",
+    "STOP_MODES",
+    "DropError",
+    "simulate_drop",
+]
 
 #: Longest simulated time after the first touch [s] (a sequence still going is an error).
 DEFAULT_T_MAX = 0.5
+#: Smallest normal approach speed of the tip the drop integrates [m/s]: the Hertzian depth and
+#: time scales of the integrator (delta* ~ v^0.8) underflow below about 1e-100 m/s; far above
+#: that, every drop below about 1 cm/s is gravity-dominated (flagged).
+MIN_APPROACH_SPEED = 1e-9
 #: ``stop`` values: the tip's sequence (the other end's landing is a new impact), or the whole
 #: flight through the other end's impacts until the rod flies off.
 STOP_MODES = ("sequence", "flight")
@@ -149,13 +160,25 @@ class DropError(ValueError):
         self.status = status
 
 
-def _status_error(status: int, model: ContactModel) -> DropError:
-    """The ValueError of a failed drop (``layout.ST_*``)."""
+def _status_error(status: int, model: ContactModel, run: _Run | None = None) -> DropError:
+    """The ValueError of a failed drop (``layout.ST_*``; ``run``: its counters, when known)."""
     text = F.STATUS_MESSAGES.get(status, f"status {status}")
+    where = ""
+    if run is not None:
+        steps, t = int(run.out[F.O_N_STEPS]), float(run.out[F.O_T_FINAL])
+        where = f" after {steps} steps, {t * 1e3:.4g} ms after the first touch"
     hints = {
-        F.ST_LAW_LIMIT: f" ({model.max_interference:.6g} m for the {model.name!r} law): lower "
-        "the impact velocity or choose another law",
-        F.ST_TMAX: ": raise t_max",
+        F.ST_LAW_LIMIT: f" ({model.max_interference:.6g} m for the {model.name!r} law){where}: "
+        "the contact force could not stop the rod within the law's range (too fast an "
+        "impact, a jammed friction contact or too strong gravity); lower the impact velocity, "
+        "mu or gravity, or choose another law",
+        F.ST_TMAX: f"{where}: raise t_max",
+        F.ST_MAX_STEPS: f"{where} (the limit: {F.MAX_STEPS}; with partial slip "
+        f"{F.PARTIAL_STEP_FACTOR} times the steps of its Mindlin pre-pass, at least "
+        f"{F.PARTIAL_MIN_STEPS}): a long, creeping contact (resting, rocking or rolling); try "
+        "friction='mindlin'",
+        F.ST_MISSED_CONTACT: f"{where}: lower rtol",
+        F.ST_STEP_UNDERFLOW: f"{where}: the integrator could not meet rtol",
     }
     return DropError(f"drop: {text}{hints.get(status, '')}", status)
 
@@ -176,17 +199,20 @@ def _run(
     friction: tuple[int, float, float, tuple[float, float]],
     g: float,
     options: tuple[float, float, int, bool],
+    max_steps: int = F.MAX_STEPS,
 ) -> _Run:
     """One compiled drop. state = (angle, vx, vy, spin); friction = (id, mu, G* [Pa], the cell
-    widths of the ends [m] (partial slip)); options = (rtol, t_max, stop, history)."""
+    widths of the ends [m] (partial slip)); options = (rtol, t_max, stop, history); the step
+    limit."""
     angle, vx, vy, w = state
     fid, mu, gstar, widths = friction
     rtol, t_max, stop, history = options
     rod = bm.rigid
     p = kernel_params(model)
     c = constants(
-        rod.half_length, rod.tip_radius, rod.mass, bm.inertia, g, angle, mu, p, fid, gstar, widths
-    )
+        rod.half_length, rod.tip_radius, rod.mass, bm.inertia, g, angle, mu, p, fid, gstar, widths,
+        max_steps,
+    )  # fmt: skip
     mdl = model_tuple(model.law_id, p, c, bm.omega, bm.zeta, bm.U, bm.W, bm.Psi, bm.geometric)
     out = np.empty(F.N_OUT)
     contacts = np.zeros((F.MAX_CONTACTS, F.NCR))
@@ -203,7 +229,7 @@ def _cell_widths(run: _Run, model: ContactModel) -> tuple[float, float]:
     loading contact radius of its contacts in the pre-pass ``run`` (an end without contacts
     there: the tip's), as the rigid engine's estimate (``dynamics.partial_slip``)."""
     if run.status != F.ST_OK:
-        raise _status_error(run.status, model)
+        raise _status_error(run.status, model, run)
     p = kernel_params(model)
     a = [0.0] * F.NE
     for row in run.contacts:
@@ -216,7 +242,7 @@ def _cell_widths(run: _Run, model: ContactModel) -> tuple[float, float]:
 def _first_contact_radius(run: _Run, model: ContactModel) -> float:
     """a_m: the contact radius at the largest interference of the first contact [m]."""
     if run.status != F.ST_OK:
-        raise _status_error(run.status, model)
+        raise _status_error(run.status, model, run)
     dm = float(run.contacts[0, F.CR_DMAX])
     return float(loading_contact_radius(model.law_id, kernel_params(model), dm))
 
@@ -291,18 +317,20 @@ def _flags(
     return flags
 
 
-def _check_energy_balance(o: dict[str, Any], rtol: float) -> None:
+def _check_energy_balance(o: dict[str, Any], e0: float, rtol: float) -> None:
     """DropError when the energy balance closed worse than the tolerance promises: the
-    largest |T + V - E0 - W| / E0 of the run above ``ENERGY_GAIN_RTOL_FACTOR`` rtol +
-    ``ENERGY_ROUNDOFF`` (the margin of the ENERGY_GAIN criterion): the results, energy gain or
-    not, are not integrated to the tolerance."""
+    largest |T + V - E0 - W| of the run above ``ENERGY_GAIN_RTOL_FACTOR`` rtol +
+    ``ENERGY_ROUNDOFF`` times the energy scale of the ENERGY_GAIN criterion (E0 + the final
+    rigid kinetic, vibration and |potential| energy): the results, energy gain or not, are
+    not integrated to the tolerance."""
     bound = ENERGY_GAIN_RTOL_FACTOR * rtol + ENERGY_ROUNDOFF
-    if not o["energy_error"] <= bound:
+    scale = e0 + o["rigid_kinetic_energy"] + o["vibration_energy"] + abs(o["potential_energy"])
+    error = o["energy_error"] * e0 / scale
+    if not error <= bound:
         raise DropError(
             f"drop: {F.STATUS_MESSAGES[F.ST_INACCURATE]}: the energy balance closed to "
-            f"{o['energy_error']:.3g} of the initial energy, beyond the "
-            f"{ENERGY_GAIN_RTOL_FACTOR:g} rtol + {ENERGY_ROUNDOFF:g} = {bound:.3g} that rtol = "
-            f"{rtol:g} promises: lower rtol",
+            f"{error:.3g} of its energy scale, beyond the {ENERGY_GAIN_RTOL_FACTOR:g} rtol + "
+            f"{ENERGY_ROUNDOFF:g} = {bound:.3g} that rtol = {rtol:g} promises: lower rtol",
             F.ST_INACCURATE,
         )
 
@@ -320,7 +348,7 @@ def _result(
     vx, vy = inputs["velocity_in"]
     e0 = 0.5 * m * (vx * vx + vy * vy) + 0.5 * bm.inertia * inputs["spin_in"] ** 2
     rtol = inputs.pop("rtol")
-    _check_energy_balance(o, rtol)
+    _check_energy_balance(o, e0, rtol)
     ratio, ratio_max = extrapolation(model.law_id, model.params, o["delta_max"])
     skip = {"vx_out", "vy_out", "n_contacts", "next_end", "n_steps", "n_jumps", "n_dents"}
     skip |= {"t_final"}
@@ -399,6 +427,12 @@ def simulate_drop(
             f"velocity: the tip does not approach the flat (its normal velocity "
             f"vy - spin * (L/2) cos(angle) = {float(vn0)!r} m/s must be < 0)"
         )
+    if -vn0 < MIN_APPROACH_SPEED:
+        raise ValueError(
+            f"velocity: the tip's normal approach speed |vy - spin * (L/2) cos(angle)| = "
+            f"{-float(vn0):.3g} m/s is below {MIN_APPROACH_SPEED:g} m/s, the smallest the drop "
+            f"integrates (its Hertzian depth and time scales underflow); give a larger |vy|"
+        )
 
     gstar = float(body_params(bm.rigid, flat)[BP_GSTAR])
     mu_run = 0.0 if mu_v < MU_NEGLIGIBLE else mu_v  # frictionless, as in the rigid engine
@@ -406,16 +440,20 @@ def simulate_drop(
 
     def run(model: ContactModel, record: bool = False) -> _Run:
         widths = (math.nan, math.nan)
+        max_steps = F.MAX_STEPS
         if fid == PARTIAL_SLIP:  # the cells span the contact radius of a Mindlin pre-pass
             pre = _run(bm, model, (th, vx, vy, w), (MINDLIN, mu_run, gstar, widths), g,
                        (*options, False))  # fmt: skip
             widths = _cell_widths(pre, model)
-        return _run(bm, model, (th, vx, vy, w), (fid, mu_run, gstar, widths), g, (*options, record))
+            pre_steps = int(pre.out[F.O_N_STEPS])
+            max_steps = max(F.PARTIAL_MIN_STEPS, F.PARTIAL_STEP_FACTOR * pre_steps)
+        return _run(bm, model, (th, vx, vy, w), (fid, mu_run, gstar, widths), g,
+                    (*options, record), max_steps)  # fmt: skip
 
     model, factor = _rate_model(rate, law, bm.rigid, flat, law_params, run, vn0)
     r = run(model, bool(history))
     if r.status != F.ST_OK:
-        raise _status_error(r.status, model)
+        raise _status_error(r.status, model, r)
     refs = references_used(model, fric, mu_run > 0.0) + bm.references
     if factor is not None:
         refs += get_rate_law(rate).references

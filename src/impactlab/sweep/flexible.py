@@ -13,8 +13,12 @@ Outputs: the store keeps the engine's output fields; a flexible case fills those
 drop defines (``DROP_OUTPUTS``, each read for the whole sequence as ``DropResult`` documents:
 e, delta_p = final dent depth, sliding_length = the tip's total slip, duration = first touch to
 last separation, mean_force = P_n / duration, ...) and leaves the others NaN (-1 for integer
-outputs). Status: the sweep's rejection codes (``impactlab.sweep.status``) before the drop, and
-a failed drop mapped onto the engine's code of the same meaning (``_DROP_STATUS``).
+outputs). Status: the sweep's rejection codes (``impactlab.sweep.status``) before the drop (a
+body whose modes cannot be built: BAD_BODY; an input the drop refuses, e.g. an approach speed
+below ``MIN_APPROACH_SPEED``: BAD_INPUT), and a failed drop mapped onto the engine's code of
+the same meaning (``_DROP_STATUS``; a missed contact or an energy balance beyond the
+tolerance: the engine's "could not meet the tolerance"). Every case gets a status: one bad case
+never stops a chunk, so the valid cases are stored.
 """
 
 from __future__ import annotations
@@ -30,7 +34,7 @@ from impactlab.bodies import PAPER_ROD
 from impactlab.bodies.flexible_rod import DEFAULT_N_AXIAL, DEFAULT_N_BENDING, FlexibleRod
 from impactlab.contact import ContactModel
 from impactlab.dynamics.core import status as S
-from impactlab.dynamics.drop import DROP_FRICTION, DropError, simulate_drop
+from impactlab.dynamics.drop import DROP_FRICTION, MIN_APPROACH_SPEED, DropError, simulate_drop
 from impactlab.dynamics.drop_result import DropResult
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.models import build_contact_model
@@ -138,7 +142,8 @@ def _models(
         return STATUS_BAD_MATERIAL, None
     try:
         body = flexible_body(r, body_mat)
-    except ValueError:
+        body.basis()  # the modes: a body whose basis fails is a bad body, not a crash
+    except (ValueError, ArithmeticError, np.linalg.LinAlgError):
         return STATUS_BAD_BODY, None
     try:
         model = build_contact_model(c["law"], body_mat, flat_mat, body.tip_radius, dict(lp))
@@ -153,8 +158,11 @@ def _kinematics_status(body: FlexibleRod, k: Mapping[str, float]) -> int:
         return STATUS_BAD_INPUT
     if not 0.0 < k["angle"] <= 0.5 * math.pi:
         return S.ST_BAD_ANGLE
-    if not k["vy"] - k["spin"] * body.half_length * math.cos(k["angle"]) < 0.0:
+    vn = k["vy"] - k["spin"] * body.half_length * math.cos(k["angle"])
+    if not vn < 0.0:
         return S.ST_NOT_APPROACHING
+    if -vn < MIN_APPROACH_SPEED:
+        return STATUS_BAD_INPUT
     return 0
 
 
@@ -181,6 +189,10 @@ def _drop(
         )
     except DropError as exc:
         return _DROP_STATUS.get(exc.status, S.ST_NO_SEPARATION), None
+    except ValueError:  # an input the drop refuses (its one-line message names it)
+        return STATUS_BAD_INPUT, None
+    except (ArithmeticError, np.linalg.LinAlgError):  # never expected: a status, not a crash
+        return S.ST_NAN, None
     return 0, r
 
 

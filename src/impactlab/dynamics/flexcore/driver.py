@@ -54,7 +54,7 @@ def drop(mdl, vx0, vy0, w0, rtol, t_max, stop_mode, record_on, out, contacts, de
     if record_on:
         hist, nh = record(hist, nh, t, mdl, y, ek, sv[F.SV_E0])
     y_end = y.copy()  # the state right after the last separation
-    while sv[F.SV_NSTEPS] < F.MAX_STEPS:
+    while sv[F.SV_NSTEPS] < mdl[2][F.C_MAX_STEPS]:
         if t > t_max:
             sv[F.SV_STATUS] = F.ST_TMAX
             break

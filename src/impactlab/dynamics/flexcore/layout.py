@@ -40,7 +40,8 @@ C_FRIC = 11  #: friction model id (``impactlab.friction``: 0 impulse_ratio, 1 co
 C_GS = 12  #: G* of the pair [Pa] (Mindlin tangential stiffness k_t = 8 G* a)
 C_CP = 13  #: partial slip: the cell parameters of end k at C_CP + k NCP (``cells.CP_*``)
 NCP = 4
-NC = C_CP + NE * NCP
+C_MAX_STEPS = C_CP + NE * NCP  #: the step limit of the run (``MAX_STEPS``, or less: partial slip)
+NC = C_MAX_STEPS + 1
 
 # ---- per-end mode table (``MD_*``) ------------------------------------------------------------
 MD_IN = 0  #: 1 in contact
@@ -190,6 +191,11 @@ STATUS_MESSAGES = {
 
 DEFAULT_RTOL = 1e-7  #: default relative tolerance of the flexible drop
 MAX_STEPS = 2_000_000
+#: Partial slip: the step limit is PARTIAL_STEP_FACTOR times the steps of the drop's Mindlin
+#: pre-pass, at least PARTIAL_MIN_STEPS (a drop whose cells need more than that is a long,
+#: creeping contact: it fails in seconds, not after the 2e6 steps of MAX_STEPS, ~50 s).
+PARTIAL_STEP_FACTOR = 100
+PARTIAL_MIN_STEPS = 50_000
 MAX_EVENTS = 200_000
 HORIZON_CAP = 0.5  #: longest look-ahead of the end-of-sequence test [s]
 

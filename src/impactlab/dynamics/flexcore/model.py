@@ -25,11 +25,12 @@ def constants(
     friction_id: int = 1,
     gstar: float = math.nan,
     cell_width: tuple[float, float] = (math.nan, math.nan),
+    max_steps: int = F.MAX_STEPS,
 ) -> np.ndarray:
     """The constants vector (``layout.C_*``; SI units) for the law parameters ``p``, the
     friction model's id (``impactlab.friction``; default coulomb), G* [Pa] (Mindlin, partial
-    slip) and the cell width of each end [m] (partial slip; the other cell parameters are set
-    by the integrator)."""
+    slip), the cell width of each end [m] (partial slip; the other cell parameters are set
+    by the integrator) and the step limit of the run."""
     dsw = float(p[P_DSW])
     values = {
         F.C_D: half_length,
@@ -45,6 +46,7 @@ def constants(
         F.C_C0: math.cos(angle),
         F.C_FRIC: float(friction_id),
         F.C_GS: gstar,
+        F.C_MAX_STEPS: float(min(max_steps, F.MAX_STEPS)),
     }
     for k in range(F.NE):
         values[F.C_CP + k * F.NCP + CP_DX] = cell_width[k]

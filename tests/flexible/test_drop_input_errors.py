@@ -1,0 +1,63 @@
+"""Inputs the flexible drop cannot take are refused with one-line ValueErrors that name the
+parameter, its value and what is allowed (no ZeroDivisionError, OverflowError or LinAlgError),
+and a creeping partial-slip drop fails in seconds."""
+
+from __future__ import annotations
+
+import math
+import subprocess
+import sys
+import time
+
+import pytest
+
+import impactlab as il
+from impactlab.bodies import beam_modes
+from impactlab.bodies.flexible_rod import MAX_MODES, FlexibleRod
+from impactlab.dynamics.drop import MIN_APPROACH_SPEED, DropError, simulate_drop
+from impactlab.dynamics.flexcore import layout as F
+
+
+@pytest.mark.parametrize("vy", [-1e-300, -1e-200, -1e-12])
+def test_vanishing_approach_speed_is_refused(vy: float) -> None:
+    with pytest.raises(ValueError, match=r"approach speed .* is below 1e-09 m/s") as exc:
+        simulate_drop(FlexibleRod.paper(), angle=math.radians(20), velocity=(0.0, vy))
+    assert not isinstance(exc.value, DropError) and "\n" not in str(exc.value)
+    assert MIN_APPROACH_SPEED == 1e-9
+
+
+def test_cli_vanishing_speed_is_one_line() -> None:
+    p = subprocess.run(
+        [sys.executable, "-m", "impactlab", "drop", "--angle", "20 deg", "--vy", "-1e-300 m/s"],
+        capture_output=True, text=True, timeout=600,
+    )  # fmt: skip
+    assert p.returncode == 2, p.stderr
+    assert "Traceback" not in p.stderr and "approach speed" in p.stderr
+
+
+@pytest.mark.parametrize(
+    ("field", "value"), [("n_bending", 224), ("n_bending", 300), ("n_axial", 100000)]
+)
+def test_mode_counts_are_bounded(field: str, value: int) -> None:
+    with pytest.raises(ValueError, match=rf"{field} must be an integer in \[0, 128\], got {value}"):
+        FlexibleRod.paper(**{field: value})
+    assert MAX_MODES == 128
+
+
+def test_largest_mode_counts_build() -> None:
+    rod = FlexibleRod.paper(n_axial=MAX_MODES, n_bending=MAX_MODES)
+    assert rod.basis().n_modes == 2 * MAX_MODES + 2
+    assert math.isfinite(float(beam_modes.eb_beta_l(230)[-1]))  # no cosh overflow
+
+
+def test_creeping_partial_slip_fails_fast() -> None:
+    """46 s and 2e6 steps before; now the step limit follows the Mindlin pre-pass."""
+    rod = FlexibleRod.paper(n_axial=2, n_bending=0, damping=0.03185021386008342)
+    t0 = time.perf_counter()
+    with pytest.raises(DropError, match=r"step limit reached after \d+ steps.*mindlin") as exc:
+        il.simulate(rod, law="brake", friction="partial_slip", mu=0.5172584083120987,
+                    angle="62.05981562187482 deg",
+                    velocity=(0.9423713445466566, -0.4817121757074115),
+                    spin=3.412682469935538)  # fmt: skip
+    assert exc.value.status == F.ST_MAX_STEPS
+    assert time.perf_counter() - t0 < 20.0
