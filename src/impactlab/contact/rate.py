@@ -55,12 +55,15 @@ from impactlab.references import Reference
 
 __all__ = [
     "COWPER_SYMONDS_MILD_STEEL",
+    "LOW_CARBON_STEEL",
+    "FittedFor",
     "JOHNSON_COOK_1006_STEEL",
     "RATE_LAWS",
     "RATE_REFERENCES",
     "RateFactor",
     "RateLaw",
     "cowper_symonds",
+    "check_rate_flat",
     "get_rate_law",
     "johnson_cook",
     "rate_materials",
@@ -116,14 +119,88 @@ def johnson_cook(rate: float, C: float = 0.022, rate0: float = 1.0) -> float:
 
 
 @dataclass(frozen=True)
+class FittedFor:
+    """The materials a rate law's constants were fitted for: a ``name`` and the ranges of
+    Young's modulus [Pa], density [kg/m^3] and quasi-static yield strength [Pa] that identify
+    them (a flat outside any range is another material)."""
+
+    name: str
+    E: tuple[float, float]
+    density: tuple[float, float]
+    yield_strength: tuple[float, float]
+
+    def mismatch(self, flat: Material) -> str | None:
+        """None when ``flat`` lies in every range, else the first property outside, as text."""
+        checks = (
+            ("E", flat.E, self.E, 1e-9, "GPa"),
+            ("density", flat.density, self.density, 1.0, "kg/m^3"),
+            ("yield strength", flat.yield_strength, self.yield_strength, 1e-6, "MPa"),
+        )
+        for what, value, (lo, hi), scale, unit in checks:
+            if not lo <= value <= hi:
+                return (
+                    f"{what} = {value * scale:.4g} {unit} outside {lo * scale:.4g} to "
+                    f"{hi * scale:.4g} {unit}"
+                )
+        return None
+
+
+#: Low-carbon (mild) steel, the material of both built-in rate laws' constants: E, density and
+#: S_y of plain carbon steels with up to about 0.25 % C (AISI 1006 to 1025, the paper's AISI 1010
+#: flat: 200 GPa, 7870 kg/m^3, 305 MPa).
+LOW_CARBON_STEEL = FittedFor("low-carbon (mild) steel", (190e9, 215e9), (7750.0, 7950.0),
+                             (150e6, 450e6))  # fmt: skip
+
+#: The forms of rate law and the parameters each takes (with their allowed ranges).
+_FORMS = {"cowper-symonds": ("D", "q"), "johnson-cook": ("C", "rate0")}
+
+
+@dataclass(frozen=True)
 class RateLaw:
-    """A strain-rate law for the flat's yield strength: ``name``, its ``parameters`` (SI) and
-    the keys of its sources; ``factor(rate)`` is the multiplier k >= 1 at a strain rate [1/s]."""
+    """A strain-rate law for the flat's yield strength: ``name`` (its form:
+    ``"cowper-symonds"`` with D > 0 [1/s] and q > 0, or ``"johnson-cook"`` with C >= 0 and
+    rate0 > 0 [1/s]), its ``parameters`` (SI), the keys of its sources (``RATE_REFERENCES``),
+    a description and the materials its constants were ``fitted_for`` (None: the user's own
+    constants, for the flat they give them for). ``factor(rate)`` is the multiplier k >= 1 at
+    a strain rate [1/s]. ``RateLaw.custom`` builds a validated law from one's own constants."""
 
     name: str
     parameters: tuple[tuple[str, float], ...]
     reference_keys: tuple[str, ...]
     description: str
+    fitted_for: FittedFor | None = None
+
+    def __post_init__(self) -> None:
+        if self.name not in _FORMS:
+            raise ValueError(
+                f"RateLaw name must be one of {tuple(_FORMS)} (the law's form), got {self.name!r}"
+            )
+        p = dict(self.parameters)
+        need = _FORMS[self.name]
+        if set(p) != set(need):
+            raise ValueError(f"a {self.name!r} RateLaw takes the parameters {need}, got {tuple(p)}")
+        if self.name == "cowper-symonds":
+            check_positive("D", p["D"], "1/s")
+            check_positive("q", p["q"])
+        else:
+            check_nonnegative("C", p["C"])
+            check_positive("rate0", p["rate0"], "1/s")
+        unknown = [k for k in self.reference_keys if k not in RATE_REFERENCES]
+        if unknown:
+            raise ValueError(
+                f"reference key {unknown[0]!r} unknown; known: {tuple(RATE_REFERENCES)}"
+            )
+
+    @classmethod
+    def custom(cls, name: str, description: str = "", **parameters: float) -> RateLaw:
+        """A rate law of form ``name`` with one's own constants (validated), e.g.
+        ``RateLaw.custom("cowper-symonds", D=6500.0, q=4.0)`` (aluminium alloys as quoted by
+        Jones, Structural Impact); no material check: the constants are the flat's."""
+        values = tuple(sorted((k, float(v)) for k, v in parameters.items()))
+        text = description or f"{name}, user constants " + ", ".join(
+            f"{k} = {v:g}" for k, v in values
+        )
+        return cls(name, values, (), text, None)
 
     def factor(self, rate: float) -> float:
         """The yield-strength multiplier k [1] at the strain rate ``rate`` [1/s]."""
@@ -144,6 +221,7 @@ COWPER_SYMONDS_MILD_STEEL = RateLaw(
     (("D", 40.4), ("q", 5.0)),
     ("cowper-symonds-1957", "jones-1989"),
     "Cowper-Symonds, mild steel: 1 + (eps_dot / 40.4 1/s)^(1/5)",
+    LOW_CARBON_STEEL,
 )
 #: Johnson-Cook rate term, 1006 steel: C = 0.022, eps_dot_0 = 1 1/s (a lower estimate).
 JOHNSON_COOK_1006_STEEL = RateLaw(
@@ -151,6 +229,7 @@ JOHNSON_COOK_1006_STEEL = RateLaw(
     (("C", 0.022), ("rate0", 1.0)),
     ("johnson-cook-1983",),
     "Johnson-Cook rate term, 1006 steel: 1 + 0.022 ln(eps_dot / 1 1/s)",
+    LOW_CARBON_STEEL,
 )
 #: The rate laws by name.
 RATE_LAWS: dict[str, RateLaw] = {
@@ -169,6 +248,20 @@ def get_rate_law(name: object) -> RateLaw:
     return law
 
 
+def check_rate_flat(law: RateLaw, flat: Material) -> None:
+    """ValueError when ``flat`` is not the material the rate law's constants were fitted for
+    (``RateLaw.fitted_for``; a law with the user's own constants is not checked)."""
+    if law.fitted_for is None:
+        return
+    why = law.fitted_for.mismatch(flat)
+    if why is not None:
+        raise ValueError(
+            f"rate {law.name!r}: its constants are fitted for {law.fitted_for.name}, but the "
+            f"flat {flat.name!r} has {why}; give the flat's own constants, e.g. "
+            f"rate=RateLaw.custom({law.name!r}, ...)"
+        )
+
+
 def tabor_strain_rate(v: float, a: float, factor: float = 0.2) -> float:
     """Characteristic contact strain rate ``factor`` |v| / a [1/s] for an approach speed v
     [m/s] and a contact radius a [m] (``factor`` = 0.2: Tabor; 1 gives the cruder v / a)."""
@@ -182,13 +275,24 @@ def rate_materials(body: Material, flat: Material, k: float) -> tuple[Material, 
     impactlab's contact pair takes the smaller yield strength of the two bodies; a rate-raised
     flat can exceed the rod's static yield strength, but the rod is rate-sensitive too, so its
     static value is no cap: the body's yield strength is raised to 1.5 times the flat's where
-    needed (only the flat yields, as the measured dents say)."""
+    needed (only the flat yields, as the measured dents say). The Brinell hardness (Brake's
+    law) scales with the yield strength of the same material: hardness is a flow stress at
+    Tabor's representative strain (H ~ 2.8 sigma_r; D. Tabor, The Hardness of Metals, 1951), so
+    a rate factor on the flow stress is one on the hardness."""
     k = check_positive("k", k)
     flat_k = dataclasses.replace(
-        flat, name=f"{flat.name} x{k:.4g} (rate)", yield_strength=k * flat.yield_strength
+        flat,
+        name=f"{flat.name} x{k:.4g} (rate)",
+        yield_strength=k * flat.yield_strength,
+        brinell_hardness=k * flat.brinell_hardness,
     )
     if body.yield_strength <= flat_k.yield_strength:
-        body = dataclasses.replace(body, yield_strength=1.5 * flat_k.yield_strength)
+        f = 1.5 * flat_k.yield_strength / body.yield_strength
+        body = dataclasses.replace(
+            body,
+            yield_strength=f * body.yield_strength,
+            brinell_hardness=f * body.brinell_hardness,
+        )
     return body, flat_k
 
 

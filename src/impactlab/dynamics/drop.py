@@ -26,7 +26,13 @@ from impactlab.bodies.modal import MODAL_REFERENCES
 from impactlab.contact import ContactModel
 from impactlab.contact.kernels import loading_contact_radius
 from impactlab.contact.ranges import extrapolation, law_extrapolated
-from impactlab.contact.rate import RateFactor, get_rate_law, rate_materials, self_consistent_factor
+from impactlab.contact.rate import (
+    RateFactor,
+    check_rate_flat,
+    get_rate_law,
+    rate_materials,
+    self_consistent_factor,
+)
 from impactlab.dynamics.checks import (
     check_angle,
     check_flat,
@@ -76,6 +82,8 @@ DEFAULT_T_MAX = 0.5
 #: time scales of the integrator (delta* ~ v^0.8) underflow below about 1e-100 m/s; far above
 #: that, every drop below about 1 cm/s is gravity-dominated (flagged).
 MIN_APPROACH_SPEED = 1e-9
+#: Contact laws without plasticity: a rate-dependent flat is refused with them.
+ELASTIC_LAWS = frozenset({"hertz"})
 #: ``stop`` values: the tip's sequence (the other end's landing is a new impact), or the whole
 #: flight through the other end's impacts until the rod flies off.
 STOP_MODES = ("sequence", "flight")
@@ -263,10 +271,22 @@ def _rate_model(
     rate_law = get_rate_law(rate)
     if not isinstance(law, str):
         raise ValueError("rate needs the law as a name (the flat's yield strength is rebuilt)")
+    if law.strip().lower() in ELASTIC_LAWS:
+        raise ValueError(
+            f"rate {rate_law.name!r}: the {law!r} law is elastic (no yield strength for the rate "
+            "to raise); pass rate=None, or an elastic-plastic law"
+        )
+    check_rate_flat(rate_law, flat)
 
     def build(k: float) -> ContactModel:
         body_k, flat_k = rate_materials(body.material, flat, k)
-        return build_contact_model(law, body_k, flat_k, body.tip_radius, law_params)
+        try:
+            return build_contact_model(law, body_k, flat_k, body.tip_radius, law_params)
+        except ValueError as exc:
+            raise ValueError(
+                f"rate {rate_law.name!r}: with the flat's yield strength and hardness raised by "
+                f"the rate factor k = {k:.4g}, the {law!r} law rejects the pair: {exc}"
+            ) from None
 
     def contact_radius(k: float) -> float:
         model = build(k)
@@ -301,8 +321,9 @@ def _flags(
     vibration energy counted with the kinetic energy, and on the duration and the normal
     impulse of the tip's sequence (its contacts before the other end's first touch); the
     law's fitted range (``contact.ranges.law_extrapolated``, contract C2) on the largest
-    interference of the sequence; OTHER_END when the other end touched the flat or the tip
-    still approaches it after the last contact (e < 0)."""
+    interference of the sequence; OTHER_END, unless gravity dominates (the rod rests or rocks:
+    that flag says it), when the other end touched the flat or the tip still approaches it
+    after the last contact (e < 0)."""
     e_end = o["rigid_kinetic_energy"] + o["vibration_energy"]
     flags = ResultFlag.NONE
     if law_extrapolated(model, o["delta_max"]):
@@ -311,8 +332,8 @@ def _flags(
         flags |= ResultFlag.ENERGY_GAIN
     duration, impulse = _tip_sequence(contacts, o)
     if gravity_dominated(m * g * duration, impulse):
-        flags |= ResultFlag.GRAVITY_DOMINATED
-    if np.any(contacts[:, F.CR_END] == 1.0) or not o["e"] >= 0.0:
+        flags |= ResultFlag.GRAVITY_DOMINATED  # resting, rocking: the other end's flag aside
+    elif np.any(contacts[:, F.CR_END] == 1.0) or not o["e"] >= 0.0:
         flags |= ResultFlag.OTHER_END
     return flags
 
