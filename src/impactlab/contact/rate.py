@@ -55,15 +55,15 @@ from impactlab.references import Reference
 
 __all__ = [
     "COWPER_SYMONDS_MILD_STEEL",
-    "LOW_CARBON_STEEL",
-    "FittedFor",
     "JOHNSON_COOK_1006_STEEL",
+    "LOW_CARBON_STEEL",
     "RATE_LAWS",
     "RATE_REFERENCES",
+    "FittedFor",
     "RateFactor",
     "RateLaw",
-    "cowper_symonds",
     "check_rate_flat",
+    "cowper_symonds",
     "get_rate_law",
     "johnson_cook",
     "rate_materials",
