@@ -23,7 +23,13 @@ import numpy as np
 
 from impactlab._html import dataclass_html, dataclass_rows
 from impactlab._validation import check_positive, check_range
-from impactlab.bodies._checks import check_material
+from impactlab.bodies._checks import (
+    PLAUSIBLE_LENGTH,
+    PLAUSIBLE_MASS,
+    PLAUSIBLE_RADIUS,
+    check_material,
+    plausible,
+)
 from impactlab.bodies.geometric import geometric_tensor
 from impactlab.bodies.modal import ModalBasis, modal_basis
 from impactlab.bodies.rod import Rod
@@ -56,6 +62,37 @@ def _count(name: str, value: object) -> int:
     return int(value)
 
 
+#: Largest relative difference between the density that mass, diameter and length imply
+#: (m / (pi d^2 / 4 L)) and the material's density when both mass and diameter are given.
+DENSITY_TOLERANCE = 0.02
+#: Smallest slenderness L/d of a flexible rod: the beam modes describe a rod, not a block.
+MIN_SLENDERNESS = 2.0
+
+
+def _check_geometry(L: float, m: float, d: float | None, material: Material) -> None:
+    """ValueError when the mass, the diameter (if given), the length and the material's density
+    disagree by more than DENSITY_TOLERANCE, or when the rod is thicker than L / MIN_SLENDERNESS
+    (the diameter from the mass if not given)."""
+    rho = material.density
+    if d is not None:
+        implied = m / (math.pi * d * d / 4.0 * L)
+        if not abs(implied / rho - 1.0) <= DENSITY_TOLERANCE:
+            raise ValueError(
+                f"mass ({m!r} kg), diameter ({d!r} m) and length ({L!r} m) imply a density of "
+                f"{implied:.4g} kg/m^3, but the material {material.name!r} has {rho:.4g} kg/m^3 "
+                f"(allowed: within {DENSITY_TOLERANCE:.0%}); give the mass or the diameter, not "
+                "both, or the material they belong to"
+            )
+    else:
+        d = math.sqrt(4.0 * m / (math.pi * rho * L))
+    if not L / d >= MIN_SLENDERNESS:
+        raise ValueError(
+            f"the rod (length {L!r} m, mass {m!r} kg, {material.name!r} at {rho:.4g} kg/m^3) has "
+            f"a diameter of {d:.4g} m, L/d = {L / d:.3g} < {MIN_SLENDERNESS:g}: not a rod (check "
+            "the mass and the length and their units)"
+        )
+
+
 @functools.lru_cache(maxsize=64)
 def _basis(
     sec: RodSection, n_axial: int, n_bending: int, theory: str, axial_residual: bool
@@ -84,7 +121,10 @@ class FlexibleRod:
     tip_radius : radius R of the hemispherical ends [m].
     mass : mass m [kg]; None: from the diameter, the length and the material's density.
     diameter : diameter d [m]; None: from the mass, the length and the material's density.
-        At least one of ``mass`` and ``diameter`` is required.
+        At least one of ``mass`` and ``diameter`` is required; given both, the density they
+        imply must match the material's within ``DENSITY_TOLERANCE`` (2 %), and L/d must be
+        at least ``MIN_SLENDERNESS`` (2). Lengths, tip radii and masses outside the bounds of
+        ``impactlab.bodies._checks`` give an ImplausibleInputWarning, as for ``Rod``.
     material : the rod's material (E, nu, density; the contact pair's elastic constants).
     n_axial, n_bending : numbers of axial and bending free-free modes (integers in
         [0, ``MAX_MODES``] = [0, 128]).
@@ -109,10 +149,13 @@ class FlexibleRod:
     geometric: bool = False
 
     def __post_init__(self) -> None:
-        L = check_positive("length", self.length, "m")
+        L = plausible("length", check_positive("length", self.length, "m"), PLAUSIBLE_LENGTH, "m")
         R = check_positive("tip_radius", self.tip_radius, "m")
         if R > 0.5 * L:
-            raise ValueError(f"tip_radius ({R!r} m) must not exceed half the length ({L!r} m)")
+            raise ValueError(
+                f"tip_radius ({R!r} m) must not exceed half the length (L/2 = {0.5 * L!r} m)"
+            )
+        plausible("tip_radius", R, PLAUSIBLE_RADIUS, "m")
         check_material("material", self.material)
         rho = self.material.density
         if self.mass is None and self.diameter is None:
@@ -122,6 +165,8 @@ class FlexibleRod:
             m = rho * math.pi * cast(float, d) ** 2 / 4.0 * L
         else:
             m = check_positive("mass", self.mass, "kg")
+        plausible("mass", m, PLAUSIBLE_MASS, "kg")
+        _check_geometry(L, m, d, self.material)
         for name, value in (("length", L), ("tip_radius", R), ("mass", m), ("diameter", d)):
             object.__setattr__(self, name, value)
         object.__setattr__(self, "n_axial", _count("n_axial", self.n_axial))

@@ -66,6 +66,7 @@ from impactlab.friction import (
 )
 from impactlab.materials import AISI_1010, Material
 from impactlab.references import Reference
+from impactlab.units import is_quantity
 
 __all__ = [
     "DEFAULT_T_MAX",
@@ -151,6 +152,22 @@ def _check_friction(friction: str, mu: float) -> tuple[FrictionModel, float]:
         names = ", ".join(repr(str(k)) for k in DROP_FRICTION)
         raise ValueError(f"friction: the drop integrator implements {names}, got {friction!r}")
     return fric, check_nonnegative("mu", mu)
+
+
+def _check_spin_unit(spin: Any) -> Any:
+    """``spin``; ValueError for a frequency in hertz, which pint converts to rad/s 1:1 (cycles
+    or radians per second is ambiguous: ``"-5 Hz"`` would be -5 rad/s, not -31.4)."""
+    unit = ""
+    if isinstance(spin, str):
+        unit = spin
+    elif is_quantity(spin):
+        unit = str(spin.units)
+    if "hz" in unit.lower() or "hertz" in unit.lower():
+        raise ValueError(
+            f"spin: {spin!r} is a frequency in hertz, ambiguous as an angular velocity (cycles "
+            "or radians per second); give rad/s, or turns as 'turn/s' or 'rpm'"
+        )
+    return spin
 
 
 def _check_stop(stop: Any, t_max: Any) -> tuple[float, int]:
@@ -437,9 +454,14 @@ def simulate_drop(
     bm = _body_model(body)
     flat = check_flat(flat)
     fric, mu_v = _check_friction(friction, mu)
+    if angle is None:
+        raise ValueError(
+            f"angle is required for the drop of a {type(body).__name__}: the rod axis to the "
+            "flat at the first touch, in radians (or with a unit), in (0, pi/2]"
+        )
     th = check_angle(angle, bm.rigid)
     vx, vy = check_velocity(velocity)
-    w = check_finite("spin", spin, "rad/s")
+    w = check_finite("spin", _check_spin_unit(spin), "rad/s")
     g = gravity_value(gravity)
     options = (check_rtol(rtol if rtol is not None else F.DEFAULT_RTOL), *_check_stop(stop, t_max))
     vn0 = vy - w * bm.rigid.half_length * math.cos(th)
