@@ -88,11 +88,15 @@ def _run(study_path: Path, where: _Where, quiet: bool, restart: bool) -> SweepRe
 
 
 def _print_uncertainty(
-    ds: Any, outputs: list[str] | None, percentiles: list[float] | None, as_json: bool
+    ds: Any,
+    outputs: list[str] | None,
+    percentiles: list[float] | None,
+    as_json: bool,
+    include_flagged: bool = False,
 ) -> None:
     from impactlab.sweep import uncertainty_reports
 
-    reports = uncertainty_reports(ds, outputs, percentiles)
+    reports = uncertainty_reports(ds, outputs, percentiles, include_flagged)
     if as_json:
         print(json.dumps({k: _uncertainty_json(r.to_dict()) for k, r in reports.items()}, indent=2))
         return
@@ -112,6 +116,10 @@ def _print_report(report: dict[str, Any], title: str) -> None:
                 _n, text, shown = field_row(out, value, unit)
                 rows.append((f"{out} {key}", text, shown))
     n = f"{report['n_cases']} cases, {report['n_invalid']} excluded (status != 0)"
+    flagged = int(report.get("n_flagged", 0))
+    n += f", {flagged} flagged (energy gain, gravity-dominated, other end) " + (
+        "included" if report.get("flagged_included") else "excluded"
+    )
     print_rows(rows, f"{title}: {n}; mean ± standard deviation, percentiles")
     ranked: dict[str, list[str]] = {}
     for r in report["sensitivity"]:
@@ -270,6 +278,14 @@ def uncertainty_cmd(
     max_cases: _MaxCases = None,
     quiet: _Quiet = False,
     as_json: _Json = False,
+    include_flagged: Annotated[
+        bool,
+        typer.Option(
+            "--include-flagged",
+            help="Keep the cases flagged as not plain success (energy gain, gravity-dominated, "
+            "other end); by default they are excluded and counted.",
+        ),
+    ] = False,
 ) -> None:
     """Spread of e, delta_p, L_s, T, F over a Monte Carlo sample and the inputs that drive it.
 
@@ -282,7 +298,7 @@ def uncertainty_cmd(
     else:
         where = _Where(out, scheduler, workers, max_cases)
         ds = _run(source, where, quiet or as_json, False).dataset
-    _print_uncertainty(ds, outputs, percentiles, as_json)
+    _print_uncertainty(ds, outputs, percentiles, as_json, include_flagged)
 
 
 @sweep_app.command("info")

@@ -29,6 +29,7 @@ import numpy as np
 from impactlab._mpl import pyplot
 from impactlab.analytic import critical_friction
 from impactlab.bodies import PAPER_ROD, Rod
+from impactlab.flags import ADVISORY_FLAGS
 from impactlab.sweep.dimensions import SAMPLE_DIM
 from impactlab.sweep.display import plot_unit, slice_note, value_text
 from impactlab.sweep.inputs import OUTPUT_ALIASES, output_spec
@@ -260,8 +261,10 @@ def plot_output_map(
     ax: Any = None,
 ) -> Any:
     """``output`` over ``x`` and ``y`` (colour map) or over ``x`` alone (line); invalid cases
-    (status != 0) are blank. Other dimensions as in ``plot_regime_map`` (facets without
-    ``ax``, the slice in the titles); returns the Axes (an array of Axes for facets)."""
+    (status != 0) are blank, and so are flagged ones (not plain success: energy gain,
+    gravity-dominated, the other end), marked x and counted in the title. Other dimensions as
+    in ``plot_regime_map`` (facets without ``ax``, the slice in the titles); returns the Axes
+    (an array of Axes for facets)."""
     out = OUTPUT_ALIASES.get(output, output)
     if out not in ds.data_vars:
         raise ValueError(f"the sweep has no output {output!r}")
@@ -272,13 +275,36 @@ def plot_output_map(
     return _facets(ds, keep, sel, lambda s, a: _output_panel(ds, out, x, y, s, a), ax)
 
 
+def _flagged(sub: Any) -> np.ndarray:
+    """True where a computed case carries a flag that says it is not plain success (energy
+    gain, gravity-dominated, the other end; the advisory LAW_EXTRAPOLATED aside)."""
+    st = np.asarray(sub["status"].values)
+    if "flags" not in sub.data_vars:
+        return np.zeros(st.shape, dtype=bool)
+    f = np.asarray(sub["flags"].values)
+    f = np.where(f < 0, 0, f).astype(np.int64)
+    return (st == 0) & ((f & ~ADVISORY_FLAGS) != 0)
+
+
+def _flag_note(n: int) -> str:
+    """The title's note on the flagged cases left blank ("" for none)."""
+    return f" ({n} flagged case{'s' if n != 1 else ''} blank, marked x)" if n else ""
+
+
+def _variables(ds: Any, out: str) -> list[str]:
+    return [out, "status"] + (["flags"] if "flags" in ds.data_vars else [])
+
+
 def _output_panel(
     ds: Any, out: str, x: str, y: str | None, sel: Mapping[str, Any], ax: Any
 ) -> None:
     keep = (x,) if y is None else (x, y)
-    sub = _select(ds[[out, "status"]], keep, sel)
+    sub = _select(ds[_variables(ds, out)], keep, sel)
+    if y is not None:
+        sub = sub.transpose(y, x)
+    bad = _flagged(sub)
     vals = np.asarray(sub[out].values, dtype=float)
-    vals = np.where(np.asarray(sub["status"].values) == 0, vals, np.nan)
+    vals = np.where((np.asarray(sub["status"].values) == 0) & ~bad, vals, np.nan)
     unit = output_spec(out).unit
     vs, vunit = plot_unit(out, unit)
     vlabel = f"{out} [{vunit}]" if vunit and vunit != "1" else out
@@ -286,33 +312,41 @@ def _output_panel(
     xv = np.asarray(sub[x].values, dtype=float) * xs
     if y is None:
         ax.plot(xv, vals * vs, "o-", ms=3)
+        if bad.any():
+            raw = np.asarray(sub[out].values, dtype=float)[bad] * vs
+            ax.plot(xv[bad], np.where(np.isfinite(raw), raw, np.nanmin(vals * vs)), "rx", ms=5)
         ax.set_ylabel(vlabel)
     else:
         ys, yl = _label(ds, y)
         yv = np.asarray(sub[y].values, dtype=float) * ys
-        grid = np.asarray(sub[out].transpose(y, x).values, dtype=float)
-        st = np.asarray(sub["status"].transpose(y, x).values)
-        grid = np.where(st == 0, grid, np.nan) * vs
-        mesh = ax.pcolormesh(xv, yv, grid, shading="nearest")
+        mesh = ax.pcolormesh(xv, yv, vals * vs, shading="nearest")
         ax.figure.colorbar(mesh, ax=ax, label=vlabel)
+        if bad.any():
+            iy, ix = np.nonzero(bad)
+            ax.plot(xv[ix], yv[iy], "kx", ms=5)
         ax.set_ylabel(yl)
     ax.set_xlabel(xl)
-    _title(ax, out, ds, sub)
+    _title(ax, out + _flag_note(int(bad.sum())), ds, sub)
 
 
 def plot_histograms(ds: Any, outputs: Sequence[str]) -> Any:
-    """Histograms of Monte Carlo outputs (valid cases)."""
+    """Histograms of Monte Carlo outputs (valid cases; the flagged ones excluded, counted in
+    each panel's title)."""
     plt = pyplot()
     outs = [OUTPUT_ALIASES.get(o, o) for o in outputs if OUTPUT_ALIASES.get(o, o) in ds]
     n = max(1, len(outs))
     fig, axes = plt.subplots(1, n, figsize=(3.2 * n, 3.0), squeeze=False)
     st = np.asarray(ds["status"].values).ravel()
+    bad = _flagged(ds).ravel()
     for ax, o in zip(axes[0], outs, strict=False):
         v = np.asarray(ds[o].values, dtype=float).ravel()
-        v = v[(st == 0) & np.isfinite(v)]
+        v = v[(st == 0) & ~bad & np.isfinite(v)]
         s, unit = plot_unit(o, output_spec(o).unit)
         ax.hist(v * s, bins=50)
         ax.set_xlabel(f"{o} [{unit}]" if unit and unit != "1" else o)
+        if bad.any():
+            ax.set_title(f"{int(bad.sum())} flagged case{'s' if bad.sum() != 1 else ''} excluded",
+                         fontsize="small")  # fmt: skip
     fig.tight_layout()
     return fig
 

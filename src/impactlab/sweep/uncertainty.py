@@ -1,6 +1,9 @@
 """Uncertainty of a Monte Carlo sweep: the spread of the outputs and the inputs that drive it.
 
-For each output (valid cases only, ``status == 0``): mean, standard deviation and percentiles.
+For each output (valid cases only: ``status == 0`` and no result flag that says the case is not
+plain success, ``impactlab.flags``: energy gain, gravity-dominated, the other end; the advisory
+LAW_EXTRAPOLATED keeps a case): mean, standard deviation and percentiles. Flagged cases are
+counted (``n_flagged``) and left out unless ``include_flagged=True``.
 For each (output, sampled input) pair two sensitivity measures:
 
 - ``rank_corr2``: the squared Spearman rank correlation rho_s^2 (Saltelli et al., Global
@@ -25,6 +28,7 @@ import numpy as np
 import pandas as pd
 from scipy import stats
 
+from impactlab.flags import ADVISORY_FLAGS
 from impactlab.sweep.dimensions import SAMPLE_DIM
 from impactlab.sweep.inputs import OUTPUT_ALIASES, output_spec
 from impactlab.sweep.options import (
@@ -43,12 +47,17 @@ class UncertaintyReport:
     sensitivity : one row per (output, input): rank_corr2, src2, and per output r2 of the
         linear fit; sorted by output, then by decreasing rank_corr2.
     n_cases, n_invalid : sample size and cases excluded (status != 0).
+    n_flagged : computed cases carrying a flag that says they are not plain success (energy
+        gain, gravity-dominated, the other end; ``impactlab.flags``), excluded unless the
+        report was asked to include them (``flagged_included``).
     """
 
     summary: pd.DataFrame
     sensitivity: pd.DataFrame
     n_cases: int
     n_invalid: int
+    n_flagged: int = 0
+    flagged_included: bool = False
 
     def ranking(self, output: str) -> list[str]:
         """Inputs ordered by decreasing influence (rank_corr2) on ``output``."""
@@ -66,6 +75,8 @@ class UncertaintyReport:
         return {
             "n_cases": self.n_cases,
             "n_invalid": self.n_invalid,
+            "n_flagged": self.n_flagged,
+            "flagged_included": self.flagged_included,
             "summary": self.summary.reset_index().to_dict(orient="records"),
             "sensitivity": self.sensitivity.to_dict(orient="records"),
         }
@@ -84,6 +95,7 @@ def uncertainty_report(
     outputs: Sequence[str] | None = None,
     inputs: Sequence[str] | None = None,
     percentiles: Sequence[float] = DEFAULT_PERCENTILES,
+    include_flagged: bool = False,
 ) -> UncertaintyReport:
     """Summarise a Monte Carlo sweep (Dataset with the single dimension ``sample``).
 
@@ -93,6 +105,8 @@ def uncertainty_report(
         those present); the paper's symbols L_s, T, F are accepted.
     inputs : sampled inputs to rank (default: all sampled inputs with a spread).
     percentiles : in [0, 100].
+    include_flagged : keep the cases whose ``flags`` say they are not plain success (default:
+        excluded and counted in ``n_flagged``).
     """
     extra = [d for d in ds.dims if d != SAMPLE_DIM]
     if SAMPLE_DIM not in ds.dims:
@@ -128,6 +142,9 @@ def uncertainty_report(
             raise ValueError(f"input(s) {bad} are not sampled; sampled inputs: {sampled}")
     status = np.asarray(ds["status"].values).ravel()
     valid = status == 0
+    flagged = valid & _not_ok(ds, status.size)
+    if not include_flagged:
+        valid = valid & ~flagged
     X = (
         np.column_stack([np.asarray(ds[i].values, dtype=np.float64).ravel() for i in ins])
         if ins
@@ -157,7 +174,20 @@ def uncertainty_report(
             .drop(columns="_o")
         )
         sensitivity = sensitivity.reset_index(drop=True)
-    return UncertaintyReport(summary, sensitivity, int(status.size), int((~valid).sum()))
+    n_invalid = int((status != 0).sum())
+    return UncertaintyReport(
+        summary, sensitivity, int(status.size), n_invalid, int(flagged.sum()), include_flagged
+    )
+
+
+def _not_ok(ds: Any, n: int) -> np.ndarray:
+    """(n,) True where the case's ``flags`` hold a bit that is not advisory (the result is not
+    plain success: ``ImpactResult.ok`` / ``DropResult.ok`` False); all False without flags."""
+    if "flags" not in ds.data_vars:
+        return np.zeros(n, dtype=bool)
+    f = np.asarray(ds["flags"].values).ravel()
+    f = np.where(f < 0, 0, f).astype(np.int64)  # the fill value of uncomputed cases
+    return (f & ~ADVISORY_FLAGS) != 0
 
 
 def _sensitivity(
@@ -214,6 +244,7 @@ def uncertainty_reports(
     ds: Any,
     outputs: Sequence[str] | None = None,
     percentiles: Sequence[float] | None = None,
+    include_flagged: bool = False,
 ) -> dict[str, UncertaintyReport]:
     """One :func:`uncertainty_report` per grid point of a (grid+)sample sweep, keyed by a title
     naming the point ("law = brake, ..."; the study's title for a pure sample). ``outputs`` and
@@ -235,7 +266,7 @@ def uncertainty_reports(
     for p in points:
         sub = ds.isel(p) if p else ds
         title = ", ".join(f"{d} = {sub[d].values!s}" for d in p) or str(ds.attrs.get("title"))
-        reports[title] = uncertainty_report(sub, outs, None, pcts)
+        reports[title] = uncertainty_report(sub, outs, None, pcts, include_flagged)
     return reports
 
 
@@ -244,7 +275,11 @@ def format_report(rep: UncertaintyReport, title: str = "") -> str:
     lines = []
     if title:
         lines.append(title)
-    lines.append(f"cases: {rep.n_cases}, excluded (status != 0): {rep.n_invalid}")
+    flagged = (
+        f"flagged (not plain success: energy gain, gravity-dominated, other end): "
+        f"{rep.n_flagged}, {'included' if rep.flagged_included else 'excluded'}"
+    )
+    lines.append(f"cases: {rep.n_cases}, excluded (status != 0): {rep.n_invalid}; {flagged}")
     lines.append("")
     lines.append(rep.summary.to_string(float_format=lambda v: f"{v:.4g}"))
     lines.append("")
