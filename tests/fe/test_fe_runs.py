@@ -117,6 +117,12 @@ def test_paper_pair_plastic_smoke(tmp_path):
     res = indent(AISI_1010, AISI_201, radius=R, delta_max=10 * probe.delta_c, cache_dir=tmp_path)[0]
     assert res.converged, res.status()
     assert 0.02 < res.residual_ratio < 0.6
+    # delta_r (the final gap) lies between the last unloading point that still carries force
+    # and the first one that does not
+    carries = res.unloading_force > 1e-6 * res.max_force
+    k = int(np.argmin(carries))
+    lo, hi = res.unloading_delta[k], res.unloading_delta[k - 1]
+    assert lo - 1e-3 * res.delta_max <= res.residual_depth <= hi + 1e-3 * res.delta_max
     f_hertz = 4.0 / 3.0 * probe.E_star * np.sqrt(R) * res.delta_max**1.5
     assert res.max_force < f_hertz
     assert res.contact_radius[-1] > np.sqrt(R * res.delta_max)

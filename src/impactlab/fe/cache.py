@@ -21,7 +21,7 @@ import numpy as np
 from impactlab.fe.result import IndentationResult
 
 #: Bumped whenever the model (mesh, deck, post-processing) or the stored format changes.
-SCHEMA_VERSION = 1
+SCHEMA_VERSION = 2
 
 _ARRAYS = (
     "loading_delta",

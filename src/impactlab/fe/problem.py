@@ -92,11 +92,15 @@ class Problem:
     @property
     def pair(self) -> ContactPair:
         """The contact pair (the sphere's material first). A rigid sphere is a material
-        10^9 times stiffer than the flat with the sphere's yield strength, so that E* is the
-        flat's E / (1 - nu^2) to 1e-9."""
+        10^9 times stiffer than the flat, so that E* is the flat's E / (1 - nu^2) to 1e-9, and
+        never the one that yields: its yield strength is the larger of the sphere material's
+        and the flat's (its Brinell hardness and Meyer index are the sphere material's)."""
         if self.sphere == "rigid":
             m = self.sphere_material
-            rigid = Material("rigid", self.flat.E * 1e9, self.flat.nu, m.yield_strength)
+            sy = max(m.yield_strength, self.flat.yield_strength)
+            rigid = Material(
+                "rigid", self.flat.E * 1e9, self.flat.nu, sy, m.brinell_hardness, m.meyer_index
+            )
             return ContactPair(rigid, self.flat)
         return ContactPair(self.sphere_material, self.flat)
 

@@ -1,54 +1,172 @@
 """The shipped FE reference curves: which cases, how they are run and how they are stored.
 
 ``python3 tasks.py fe-reference`` calls :func:`write_references`, which runs every case of
-:data:`CASES` (sphere radius 8.8 mm, elastic-perfectly plastic, frictionless, the maxima of
-:data:`MAXIMA_OVER_DELTA_C` times delta_c) and writes one versioned JSON file per case into
-``impactlab/fe/data/`` (``<case>.v<SCHEMA_VERSION>.json``).
+:data:`CASES` (sphere radius 8.8 mm, elastic-perfectly plastic, frictionless, mesh level 1,
+the maxima of :data:`MAXIMA_OVER_DELTA_C` times delta_c) and writes one versioned JSON file
+per case into ``impactlab/fe/data/`` (``<case>.v<DATA_VERSION>.json``, read by
+:mod:`impactlab.fe.curves`). Runs already in the FE cache are read from it.
 """
 
 from __future__ import annotations
 
 import json
+import math
 import time
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 from impactlab._json import jsonable
-from impactlab.fe.cache import SCHEMA_VERSION
+from impactlab._version import __version__
+from impactlab.fe.cache import gmsh_version
+from impactlab.fe.ccx import ccx_version, find_ccx
+from impactlab.fe.curves import DATA_DIR, DATA_VERSION, FORMAT, data_path, material_record
 from impactlab.fe.problem import make_problem
 from impactlab.fe.result import IndentationResult
 from impactlab.fe.run import indent
 from impactlab.materials import AISI_201, AISI_1010, Material
 
-DATA_DIR = Path(__file__).resolve().parent / "data"
 RADIUS = 8.8e-3
 
-#: 6061-T6-like aluminium (E 68.9 GPa, nu 0.33, S_y 276 MPa; ASM Aerospace Specification Metals
-#: data sheet values) and a hard bearing steel (E 210 GPa, nu 0.3, S_y 1.5 GPa).
-AL_6061_T6 = Material("6061-T6-like aluminium", 68.9e9, 0.33, 276e6, density=2700.0)
-HARD_STEEL = Material("hard steel (S_y 1.5 GPa)", 210e9, 0.3, 1.5e9, density=7850.0)
+#: 6061-T6 aluminium (typical values of the Aluminum Association / ASM data sheet: E 68.9 GPa,
+#: nu 0.33, S_y 276 MPa, Brinell 95).
+AL_6061_T6 = Material("6061-T6 aluminium", 68.9e9, 0.33, 276e6, 95.0, density=2700.0)
+#: A hard steel: AISI 4340 oil-quenched and tempered at 427 C (800 F): S_y 1379 MPa (200 ksi),
+#: Brinell 415 (vendor data sheet, 1 in round); E 205 GPa and nu 0.29 (ASM typical for 4340).
+AISI_4340_QT = Material("AISI 4340 Q&T 427 C (hard steel)", 205e9, 0.29, 1379e6, 415.0)
 
-#: name -> (flat, sphere material, sphere kind)
+#: name -> (flat, sphere material, sphere kind). The flat is the body that yields in every case:
+#: the paper's pair (AISI 201 sphere, S_y 760 MPa, on AISI 1010, 305 MPa; both elastic-plastic),
+#: the paper's sphere steel on 6061-T6 aluminium (elastic-plastic sphere), and a sphere of the
+#: hard steel kept elastic (a hardened ball) on the hard steel: an AISI 201 sphere would yield
+#: before a 1.4 GPa flat.
 CASES: dict[str, tuple[Material, Material, str]] = {
     "paper-aisi201-on-aisi1010": (AISI_1010, AISI_201, "elastic-plastic"),
-    "rigid-on-al6061t6": (AL_6061_T6, AISI_201, "rigid"),
-    "rigid-on-hard-steel": (HARD_STEEL, AISI_201, "rigid"),
+    "aisi201-on-al6061t6": (AL_6061_T6, AISI_201, "elastic-plastic"),
+    "elastic-sphere-on-aisi4340": (AISI_4340_QT, AISI_4340_QT, "elastic"),
 }
 
-MAXIMA_OVER_DELTA_C: tuple[float, ...] = (1.0, 3.0, 10.0, 30.0, 100.0, 300.0, 1000.0)
+#: One line per case for people (stored in its data file).
+DESCRIPTIONS: dict[str, str] = {
+    "paper-aisi201-on-aisi1010": "the paper's pair: AISI 201 sphere (elastic-plastic) on AISI 1010",
+    "aisi201-on-al6061t6": "AISI 201 sphere (elastic-plastic) on 6061-T6 aluminium",
+    "elastic-sphere-on-aisi4340": "hard steel: an elastic AISI 4340 Q&T sphere on AISI 4340 Q&T",
+}
+
+#: The maxima, in multiples of the case's delta_c (about two per decade, 0.3 to 1000).
+MAXIMA_OVER_DELTA_C: tuple[float, ...] = (0.3, 1.0, 3.0, 10.0, 30.0, 100.0, 300.0, 1000.0)
+
+#: Cases whose maxima stop earlier: the hard steel's delta_c is 8.5 um, about R / 1000, so
+#: 1000 delta_c would reach the sphere's radius; 100 delta_c (0.85 mm, delta / R = 0.1) is its
+#: largest maximum.
+CASE_LAST_MAXIMUM: dict[str, float] = {"elastic-sphere-on-aisi4340": 100.0}
+
+
+def case_delta_c(name: str) -> float:
+    """The critical interference delta_c [m] of a case (its FE problem's)."""
+    flat, body, kind = CASES[name]
+    return make_problem(flat, body, radius=RADIUS, delta_max=1e-9, sphere=kind).delta_c
+
+
+def case_ratios(name: str) -> list[float]:
+    """The maxima of a case in multiples of its delta_c."""
+    last = CASE_LAST_MAXIMUM.get(name, math.inf)
+    return [k for k in MAXIMA_OVER_DELTA_C if k <= last]
 
 
 def case_maxima(name: str) -> list[float]:
     """The interferences [m] of a case (multiples of its delta_c)."""
-    flat, body, kind = CASES[name]
-    dc = make_problem(flat, body, radius=RADIUS, delta_max=1e-9, sphere=kind).delta_c
-    return [k * dc for k in MAXIMA_OVER_DELTA_C]
+    dc = case_delta_c(name)
+    return [k * dc for k in case_ratios(name)]
+
+
+#: Curves are stored with at most this many points (evenly picked, the ends kept) and floats
+#: with SIGNIFICANT_DIGITS digits, which keeps each data file to some tens of kB.
+MAX_POINTS = 300
+SIGNIFICANT_DIGITS = 7
+
+
+def _thin(n: int, limit: int = MAX_POINTS) -> np.ndarray:
+    """Indices of at most ``limit`` of ``n`` points, evenly spread, first and last kept."""
+    if n <= limit:
+        return np.arange(n)
+    return np.unique(np.round(np.linspace(0, n - 1, limit)).astype(int))
+
+
+def _num(x: float) -> float | None:
+    x = float(x)
+    return None if not math.isfinite(x) else float(f"{x:.{SIGNIFICANT_DIGITS}g}")
+
+
+def _nums(a: np.ndarray, keep: np.ndarray) -> list[float | None]:
+    return [_num(v) for v in np.asarray(a, dtype=np.float64)[keep]]
 
 
 def to_record(res: IndentationResult) -> dict[str, Any]:
-    """A result as JSON-ready values (SI units; the keys are the result's field names)."""
-    return jsonable(res.arrays())
+    """One run as JSON-ready values (SI units): the curves (thinned to MAX_POINTS), delta_r,
+    the convergence record and every input (``IndentationResult.inputs``)."""
+    kl = _thin(res.loading_delta.size)
+    ku = _thin(res.unloading_delta.size)
+    kd = _thin(res.dent_r.size)
+    return {
+        "delta_max": res.delta_max,
+        "delta_max_over_delta_c": _num(res.delta_max / res.delta_c),
+        "residual_depth": _num(res.residual_depth),
+        "residual_ratio": _num(res.residual_ratio),
+        "max_force": _num(res.max_force),
+        "pile_up": _num(res.pile_up),
+        "converged": res.converged,
+        "last_converged_delta": res.last_converged_delta,
+        "message": res.message,
+        "increments": res.increments,
+        "cutbacks": res.cutbacks,
+        "iterations": res.iterations,
+        "run_time": round(res.run_time, 1),
+        "n_elements": res.n_elements,
+        "force_balance": _num(res.force_balance),
+        "loading": {
+            "delta": _nums(res.loading_delta, kl),
+            "force": _nums(res.loading_force, kl),
+            "contact_radius": _nums(res.contact_radius, kl),
+        },
+        "unloading": {
+            "delta": _nums(res.unloading_delta, ku),
+            "force": _nums(res.unloading_force, ku),
+        },
+        "dent": {"r": _nums(res.dent_r, kd), "z": _nums(res.dent_z, kd)},
+        "inputs": jsonable(res.inputs),
+    }
+
+
+def case_record(
+    name: str, runs: list[IndentationResult], mesh_level: int, ccx: str, gmsh: str
+) -> dict[str, Any]:
+    """The content of a case's data file (read back by ``impactlab.fe.curves``)."""
+    flat, body, kind = CASES[name]
+    runs = sorted(runs, key=lambda r: r.delta_max)
+    return {
+        "format": FORMAT,
+        "version": DATA_VERSION,
+        "case": name,
+        "description": DESCRIPTIONS.get(name, ""),
+        "units": "SI (m, N, s, Pa)",
+        "ccx_version": ccx,
+        "gmsh_version": gmsh,
+        "impactlab_version": __version__,
+        "delta_c": runs[0].delta_c,
+        "inputs": {
+            "radius": RADIUS,
+            "flat": material_record(flat),
+            "sphere_material": material_record(body),
+            "sphere": kind,
+            "mu": 0.0,
+            "mesh_level": mesh_level,
+            "maxima_over_delta_c": case_ratios(name),
+        },
+        "runs": [to_record(r) for r in runs],
+    }
 
 
 def _reporter(name: str, log: Callable[[str], None]) -> Callable[[int, IndentationResult], None]:
@@ -66,8 +184,10 @@ def write_references(
     directory: Path = DATA_DIR,
     log: Callable[[str], None] = print,
 ) -> list[Path]:
-    """Run the cases (all by default) and write their data files; returns the paths."""
+    """Run the cases (all by default; ``workers`` ccx processes at once, default 1) and write
+    their data files; returns the paths."""
     paths = []
+    version = ccx_version(find_ccx())
     for name in names or list(CASES):
         flat, body, kind = CASES[name]
         t0 = time.perf_counter()
@@ -78,22 +198,13 @@ def write_references(
             delta_max=case_maxima(name),
             sphere=kind,
             mesh_level=mesh_level,
-            workers=workers,
+            workers=1 if workers is None else workers,
             progress=_reporter(name, log),
         )
-        record = {
-            "case": name,
-            "schema_version": SCHEMA_VERSION,
-            "units": "SI (m, N, s)",
-            "radius": RADIUS,
-            "flat": [flat.name, flat.E, flat.nu, flat.yield_strength],
-            "sphere": [body.name, body.E, body.nu, body.yield_strength, kind],
-            "mesh_level": mesh_level,
-            "runs": [to_record(r) for r in runs],
-        }
+        record = case_record(name, runs, mesh_level, version, gmsh_version())
         directory.mkdir(parents=True, exist_ok=True)
-        path = directory / f"{name}.v{SCHEMA_VERSION}.json"
-        path.write_text(json.dumps(record, indent=1) + "\n")
+        path = data_path(name, directory)
+        path.write_text(json.dumps(record, separators=(",", ":")) + "\n")
         log(f"{name}: {len(runs)} runs in {time.perf_counter() - t0:.0f} s -> {path}")
         paths.append(path)
     return paths
@@ -106,7 +217,9 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description="Run the FE reference cases, write data files.")
     parser.add_argument("cases", nargs="*", choices=[*CASES, []], help="default: all")
     parser.add_argument("--mesh", type=int, default=1, help="mesh level (default 1)")
-    parser.add_argument("--workers", type=int, default=None, help="parallel ccx processes")
+    parser.add_argument(
+        "--workers", type=int, default=None, help="parallel ccx processes (default 1)"
+    )
     args = parser.parse_args(argv)
     write_references(args.cases or None, mesh_level=args.mesh, workers=args.workers)
     return 0

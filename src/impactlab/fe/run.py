@@ -26,7 +26,6 @@ from impactlab.fe.result import (
     reactions,
     sta_summary,
     surface_gap,
-    zero_crossing,
 )
 from impactlab.materials import Material
 
@@ -53,9 +52,9 @@ def assemble(problem: Problem, mesh: Mesh, deck: DeckSpec, out: RunOutput) -> In
         r, _, gap = surface_gap(dat, float(ti), mesh.nodes, sph_xy, problem.radius, float(di))
         radii.append(contact_radius_from_gap(r, gap - gap_tolerance(mesh, r)))
     finished = out.returncode == 0 and t.size > 0 and math.isclose(t[-1], 2.0, rel_tol=1e-9)
-    dent_r = dent_z = np.empty(0)
+    dent_r = dent_z = final_gap = np.empty(0)
     if t.size:
-        r, z, _ = surface_gap(dat, float(t[-1]), mesh.nodes, sph_xy, problem.radius, 0.0)
+        r, z, final_gap = surface_gap(dat, float(t[-1]), mesh.nodes, sph_xy, problem.radius, 0.0)
         dent_r, dent_z = r, z
     ud = (
         np.concatenate([[dmax], delta[unload]])
@@ -67,9 +66,10 @@ def assemble(problem: Problem, mesh: Mesh, deck: DeckSpec, out: RunOutput) -> In
         if ud.size > delta[unload].size
         else f_sphere[unload]
     )
-    delta_r = zero_crossing(ud, uf) if ud.size else math.nan
-    if not finished and not (ud.size and np.any(uf <= 0.0)):
-        delta_r = math.nan
+    # delta_r: the interference at which the withdrawn sphere touches the dent again, the
+    # smallest gap between the two surfaces once both steps are done (exact to the mesh; the
+    # force's zero crossing on the unloading increments only brackets it)
+    delta_r = max(float(np.min(final_gap)), 0.0) if finished and final_gap.size else math.nan
     incs, cuts, its = sta_summary(sta)
     return IndentationResult(
         delta_max=dmax,

@@ -1,0 +1,214 @@
+"""The shipped FE reference curves: the versioned data files in ``impactlab/fe/data/``.
+
+Each file ``<case>.v<DATA_VERSION>.json`` holds one material pair (sphere of radius R on a
+flat), loaded to several maxima and unloaded, computed by :mod:`impactlab.fe` (CalculiX):
+every input, the ccx and gmsh versions, and per maximum the loading curve F(delta), the
+contact radius, the unloading curve, delta_r and the run's convergence record. They are
+written by ``python3 tasks.py fe-reference`` (:mod:`impactlab.fe.reference`) and read here
+without ccx or gmsh.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from impactlab.fe.problem import make_problem
+from impactlab.materials import ContactPair, Material
+
+DATA_DIR = Path(__file__).resolve().parent / "data"
+#: Version of the data files' layout (their names end in ``.v<DATA_VERSION>.json``).
+DATA_VERSION = 1
+#: The ``format`` field of every data file.
+FORMAT = "impactlab.fe reference curves"
+
+
+@dataclass(frozen=True)
+class ReferenceRun:
+    """One maximum of a reference case (SI: m, N, s); see :class:`impactlab.fe.IndentationResult`
+    for the meaning of each field. ``residual_depth`` is nan when the run did not converge."""
+
+    delta_max: float
+    loading_delta: np.ndarray
+    loading_force: np.ndarray
+    contact_radius: np.ndarray
+    unloading_delta: np.ndarray
+    unloading_force: np.ndarray
+    residual_depth: float
+    max_force: float
+    pile_up: float
+    converged: bool
+    last_converged_delta: float
+    message: str
+    increments: int
+    cutbacks: int
+    iterations: int
+    run_time: float
+    n_elements: int
+    force_balance: float
+
+    @property
+    def residual_ratio(self) -> float:
+        """delta_r / delta_max (nan when the run did not converge)."""
+        return self.residual_depth / self.delta_max
+
+
+@dataclass(frozen=True)
+class ReferenceCase:
+    """One material pair of the shipped reference: its inputs and its runs (by delta_max)."""
+
+    name: str
+    description: str
+    flat: Material
+    sphere_material: Material
+    sphere: str
+    radius: float
+    mu: float
+    mesh_level: int
+    delta_c: float
+    ccx_version: str
+    gmsh_version: str
+    runs: tuple[ReferenceRun, ...]
+
+    @property
+    def pair(self) -> ContactPair:
+        """The contact pair the FE problem stands for (a rigid sphere as an infinitely stiff
+        body that never yields): what the contact laws are built with."""
+        return make_problem(
+            self.flat,
+            self.sphere_material,
+            radius=self.radius,
+            delta_max=self.radius * 1e-6,
+            sphere=self.sphere,
+        ).pair
+
+    @property
+    def e_star_over_sy(self) -> float:
+        """E* / S_y of the pair (S_y of the material that yields first)."""
+        p = self.pair
+        return p.E_star / p.yield_strength
+
+    def loading_curve(self) -> tuple[np.ndarray, np.ndarray]:
+        """(delta [m], F [N]) of the loading curve that reaches farthest (every loading curve
+        follows the same path; the largest maximum's covers the others')."""
+        run = max(self.runs, key=lambda r: r.loading_delta[-1] if r.loading_delta.size else 0.0)
+        return run.loading_delta, run.loading_force
+
+
+def _material(d: dict[str, Any]) -> Material:
+    hb = d.get("brinell_hardness")
+    return Material(
+        d["name"],
+        float(d["E"]),
+        float(d["nu"]),
+        float(d["yield_strength"]),
+        math.nan if hb is None else float(hb),
+        float(d.get("meyer_index", 2.2)),
+        float(d.get("density", 7850.0)),
+    )
+
+
+def material_record(m: Material) -> dict[str, Any]:
+    """A material as JSON-ready values (the inverse of reading it from a data file)."""
+    hb = m.brinell_hardness
+    return {
+        "name": m.name,
+        "E": m.E,
+        "nu": m.nu,
+        "yield_strength": m.yield_strength,
+        "brinell_hardness": None if math.isnan(hb) else hb,
+        "meyer_index": m.meyer_index,
+        "density": m.density,
+    }
+
+
+def _array(v: Any) -> np.ndarray:
+    a = np.asarray(v if v is not None else [], dtype=np.float64)
+    a.setflags(write=False)
+    return a
+
+
+def _float(v: Any) -> float:
+    return math.nan if v is None else float(v)
+
+
+def _run(d: dict[str, Any]) -> ReferenceRun:
+    load, unload = d["loading"], d["unloading"]
+    return ReferenceRun(
+        delta_max=float(d["delta_max"]),
+        loading_delta=_array(load["delta"]),
+        loading_force=_array(load["force"]),
+        contact_radius=_array(load["contact_radius"]),
+        unloading_delta=_array(unload["delta"]),
+        unloading_force=_array(unload["force"]),
+        residual_depth=_float(d["residual_depth"]),
+        max_force=_float(d["max_force"]),
+        pile_up=_float(d["pile_up"]),
+        converged=bool(d["converged"]),
+        last_converged_delta=float(d["last_converged_delta"]),
+        message=str(d["message"]),
+        increments=int(d["increments"]),
+        cutbacks=int(d["cutbacks"]),
+        iterations=int(d["iterations"]),
+        run_time=float(d["run_time"]),
+        n_elements=int(d["n_elements"]),
+        force_balance=_float(d["force_balance"]),
+    )
+
+
+def case_from_record(record: dict[str, Any]) -> ReferenceCase:
+    """A case from the content of a data file; ValueError for another format or version."""
+    if record.get("format") != FORMAT or record.get("version") != DATA_VERSION:
+        raise ValueError(
+            f"not an impactlab.fe reference file of version {DATA_VERSION}: format "
+            f"{record.get('format')!r}, version {record.get('version')!r}"
+        )
+    inp = record["inputs"]
+    runs = tuple(sorted((_run(r) for r in record["runs"]), key=lambda r: r.delta_max))
+    return ReferenceCase(
+        name=str(record["case"]),
+        description=str(record.get("description", "")),
+        flat=_material(inp["flat"]),
+        sphere_material=_material(inp["sphere_material"]),
+        sphere=str(inp["sphere"]),
+        radius=float(inp["radius"]),
+        mu=float(inp["mu"]),
+        mesh_level=int(inp["mesh_level"]),
+        delta_c=float(record["delta_c"]),
+        ccx_version=str(record["ccx_version"]),
+        gmsh_version=str(record["gmsh_version"]),
+        runs=runs,
+    )
+
+
+def data_path(name: str, directory: Path = DATA_DIR) -> Path:
+    """The data file of case ``name``."""
+    return Path(directory) / f"{name}.v{DATA_VERSION}.json"
+
+
+def case_names(directory: Path = DATA_DIR) -> tuple[str, ...]:
+    """Names of the cases shipped in ``directory`` (sorted)."""
+    suffix = f".v{DATA_VERSION}.json"
+    return tuple(
+        sorted(p.name[: -len(suffix)] for p in Path(directory).glob(f"*{suffix}") if p.is_file())
+    )
+
+
+def load_case(name: str, directory: Path = DATA_DIR) -> ReferenceCase:
+    """The shipped case ``name``; ValueError listing the known cases otherwise."""
+    path = data_path(name, directory)
+    if not path.is_file():
+        known = ", ".join(case_names(directory)) or "none"
+        raise ValueError(f"no FE reference case {name!r}; shipped cases: {known}")
+    return case_from_record(json.loads(path.read_text()))
+
+
+def load_cases(directory: Path = DATA_DIR) -> list[ReferenceCase]:
+    """Every shipped case, the softest pair (largest E*/S_y) first."""
+    cases = [load_case(n, directory) for n in case_names(directory)]
+    return sorted(cases, key=lambda c: -c.e_star_over_sy)
