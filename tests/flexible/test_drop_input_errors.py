@@ -61,3 +61,15 @@ def test_creeping_partial_slip_fails_fast() -> None:
                     spin=3.412682469935538)  # fmt: skip
     assert exc.value.status == F.ST_MAX_STEPS
     assert time.perf_counter() - t0 < 20.0
+
+
+@pytest.mark.parametrize("stop", ["sequence", "flight"])
+def test_both_ends_sticking_flat_is_no_division_by_zero(stop: str) -> None:
+    """A rigid-limit rod landing almost flat (0.0095 deg): both ends stick with redundant
+    tangential constraints (a singular 2x2 mobility); ZeroDivisionError before."""
+    rod = FlexibleRod.paper(n_axial=0, n_bending=0, axial_residual=False)
+    r = simulate_drop(rod, friction="coulomb", mu=0.2, angle=math.radians(0.0095),
+                      velocity=(0.0, -1.0), stop=stop)  # fmt: skip
+    assert any(c.end == 1 for c in r.contacts)
+    assert math.isfinite(r.e) and 0.0 <= r.delta_p <= r.delta_max
+    assert r.energy_error < 1e-4

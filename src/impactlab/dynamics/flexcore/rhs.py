@@ -108,7 +108,8 @@ def _tangential_acceleration(ek, Jt, der, iv, M, k):
 @njit(cache=True, inline="always")
 def _stick_forces(c, M, md, der, ek, Jt):
     """Add the stick forces of the sticking ends (a 1x1 or 2x2 system) to ``der`` and
-    ``ek``."""
+    ``ek``. Two sticking ends whose tangential constraints are redundant (singular 2x2
+    mobility: a rigid rod lying flat) share the least-norm forces."""
     iv = 3 + M
     m = c[F.C_M]
     ns = 0
@@ -133,8 +134,13 @@ def _stick_forces(c, M, md, der, ek, Jt):
         A11 = mobility(c, M, Jt, Jt, sk1, sk1)
         A01 = mobility(c, M, Jt, Jt, sk0, sk1)
         det = A00 * A11 - A01 * A01
-        f0 = (-a0 * A11 + a1 * A01) / det
-        f1 = (-a1 * A00 + a0 * A01) / det
+        if det > 1e-12 * A00 * A11:
+            f0 = (-a0 * A11 + a1 * A01) / det
+            f1 = (-a1 * A00 + a0 * A01) / det
+        else:  # redundant constraints (a rigid rod flat on the flat): the least-norm forces
+            tr2 = (A00 + A11) * (A00 + A11)  # A rank 1: its pseudo-inverse is A / tr(A)^2
+            f0 = -(A00 * a0 + A01 * a1) / tr2
+            f1 = -(A01 * a0 + A11 * a1) / tr2
     for t in range(ns):
         k = sk0 if t == 0 else sk1
         f = f0 if t == 0 else f1
