@@ -247,8 +247,8 @@ def main() -> None:
 
     t0 = time.time()
     # the engine on one core and the solve_ivp baseline interleaved, round after round, the best
-    # of each kept: the shared machine's speed changes from one second to the next (session 5
-    # saw the same binary at 8.8 and 12.3 us within a minute), and a ratio of two numbers taken
+    # of each kept: the shared machine's speed changes from one second to the next (the same
+    # binary has measured 8.8 and 12.3 us within a minute), and a ratio of two numbers taken
     # at different speeds would measure the machine, not the engine
     one: dict[str, float] = {}
     base: dict[str, float] = {}

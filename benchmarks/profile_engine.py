@@ -57,7 +57,7 @@ def _counts() -> dict[str, int]:
 
     for mod in (normal, transitions):
         wrap(mod, "loading_force", "law_evaluations")
-    wrap(normal, "table_force", "law_evaluations")  # the tabulated curve, read inline (session 5)
+    wrap(normal, "table_force", "law_evaluations")  # the tabulated curve, read inline in the stages
     wrap(rhs, "evaluate", "rhs_evaluations")
     wrap(driver, "evaluate", "rhs_evaluations")
     wrap(integrator, "event_value", "event_function_evaluations")

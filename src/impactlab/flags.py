@@ -29,7 +29,7 @@ __all__ = [
 
 FLAG_ENERGY_GAIN = 1  #: bit of ``ResultFlag.ENERGY_GAIN`` (read by the compiled core)
 FLAG_GRAVITY_DOMINATED = 2  #: bit of ``ResultFlag.GRAVITY_DOMINATED``
-FLAG_LAW_EXTRAPOLATED = 4  #: bit of ``ResultFlag.LAW_EXTRAPOLATED`` (issue 12)
+FLAG_LAW_EXTRAPOLATED = 4  #: bit of ``ResultFlag.LAW_EXTRAPOLATED`` (the law's fitted range)
 FLAG_OTHER_END = 8  #: bit of ``ResultFlag.OTHER_END`` (the flexible drop only)
 #: Flags that caution rather than invalidate: the impact measures stay readable (``ok`` stays
 #: True). LAW_EXTRAPOLATED: the law is used beyond its (fitted, provisional or theoretical)

@@ -269,7 +269,7 @@ def test_cli_errors_are_one_line(monkeypatch, capsys, args, needle):
     assert needle in err and err.count("\n") == 1 and "Traceback" not in err
 
 
-# -- issue 14 items 3 and 11: plausible units, one input rule -----------------------------------
+# -- plausible units, one input rule --------------------------------------------------------------
 
 BASE = dict(angle=math.radians(20), v_i=-1.41, e=0.5, mu=0.2, delta_p=22e-6, sliding_length=1.4e-3)
 

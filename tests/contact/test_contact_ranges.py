@@ -1,4 +1,4 @@
-"""The laws' fitted ranges (impactlab.contact.ranges, issue 12 part 2) and the reference
+"""The laws' fitted ranges (impactlab.contact.ranges) and the reference
 registry: every law has a range with a source and a status, every DOI is well-formed."""
 
 from __future__ import annotations

@@ -70,8 +70,7 @@ def test_help_lists_every_command() -> None:
     ],
 )
 def test_out_naming_a_file_is_one_line(tmp_path: Path, command: tuple[str, ...]) -> None:
-    """--out naming an existing file, or a folder below one: one line naming it, no traceback
-    (issue 14, item 8)."""
+    """--out naming an existing file, or a folder below one: one line naming it, no traceback."""
     taken = tmp_path / "taken"
     taken.write_text("a file")
     for out in (taken, taken / "below"):
@@ -83,7 +82,7 @@ def test_out_naming_a_file_is_one_line(tmp_path: Path, command: tuple[str, ...])
 
 
 def test_bare_angle_is_refused_with_a_hint() -> None:
-    """``--angle 0.35`` once ran at 0.35 degrees without a word (issue 15)."""
+    """``--angle 0.35`` once ran at 0.35 degrees without a word."""
     for cmd in (("simulate", "rod", "--vy", "-1 m/s"), ("invert", "--case", "paper-20")):
         res = _run(*cmd, "--angle", "0.35")
         assert res.returncode == 2 and "Traceback" not in res.stderr

@@ -1,4 +1,4 @@
-"""One output layer (issue 15): every command and ``print(result)`` show the same fields in the
+"""One output layer: every command and ``print(result)`` show the same fields in the
 same display units, with one number format; ``--json`` has the documented shape everywhere;
 ``--version``; CLI defaults equal the Python API's; help texts name units and defaults."""
 
@@ -253,8 +253,8 @@ FLEX = [*ROD20, "--flexible", "--modes-axial", "1", "--modes-bending", "2"]
 
 
 def test_simulate_flexible_rod_is_the_drop() -> None:
-    """``simulate rod --flexible`` runs ``impactlab.simulate(FlexibleRod(...))`` (contract C1)
-    and prints through the same output layer (issue 11 in the CLI)."""
+    """``simulate rod --flexible`` runs ``impactlab.simulate(FlexibleRod(...))``
+    (a DropResult) and prints through the same output layer."""
     data = _json(FLEX)
     body = FlexibleRod.paper(n_axial=1, n_bending=2)
     ref = il.simulate(body, angle="20 deg", velocity=(0.0, -1.41), mu=0.2, history=False)

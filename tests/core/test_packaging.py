@@ -1,4 +1,4 @@
-"""Release basics (issue 15): the wheel builds and installs, with its package data and licence;
+"""Release basics: the wheel builds and installs, with its package data and licence;
 LICENSE and CITATION.cff agree with pyproject; ``tasks.py`` help lists every task.
 
 The wheel is built offline from a copy of the sources (``--no-build-isolation``: the build

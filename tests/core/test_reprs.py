@@ -1,4 +1,4 @@
-"""Notebook reprs: bodies, materials, contact laws and studies show readable summaries (issue 15),
+"""Notebook reprs: bodies, materials, contact laws and studies show readable summaries,
 not ``<... object at 0x...>`` or every axis value."""
 
 from __future__ import annotations

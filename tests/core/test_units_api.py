@@ -1,5 +1,5 @@
 """The Python API takes pint quantities of any registry and unit strings wherever it takes a
-dimensional float (issue 15): the same numbers as SI floats."""
+dimensional float: the same numbers as SI floats."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""The accuracy contract of the engine's default tolerance (issue 13): every output within 1e-5
+"""The accuracy contract of the engine's default tolerance: every output within 1e-5
 relative of a tight-tolerance reference (rtol = 1e-11).
 
 References: the engine itself at rtol = 1e-11 over a seeded random sample of laws, friction
@@ -128,7 +128,7 @@ def test_sample_cases_against_solve_ivp(k: int) -> None:
     assert max(relative_errors(simulate(body, **kw, history=False), ref).values()) < CONTRACT
 
 
-# --- the ends of the contact in w = sqrt(delta - delta_0) (session 4) -----------------------------
+# --- the ends of the contact in w = sqrt(delta - delta_0) -----------------------------------------
 #: The case of a 400-case sample (seed 7) whose rebound velocity had the largest error before
 #: the final approach to separation was integrated in w: 7.3e-6 at rtol = 1e-7, nearly all of
 #: it from the one time step that ended just before the separation.

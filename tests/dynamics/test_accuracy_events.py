@@ -1,11 +1,11 @@
 """Event location of the compiled core (``integrator.locate``, Illinois method on the dense
 output) returns the crossing, not the end of the step.
 
-Before issue 13's fix the iteration stopped as soon as two iterates were within 1e-14 of each
-other, even when both lay on the g <= 0 side (a regula-falsi approach from one side, here a
-slightly convex event function): it then returned the far end of the bracket, theta = 1, and
-the separation was taken at the end of the step (seen as a contact duration 2 % too long on a
-sphere of the accuracy sample).
+The regression this guards: the iteration once stopped as soon as two iterates were within
+1e-14 of each other, even when both lay on the g <= 0 side (a regula-falsi approach from one
+side, here a slightly convex event function): it then returned the far end of the bracket,
+theta = 1, and the separation was taken at the end of the step (seen as a contact duration 2 %
+too long on a sphere of the accuracy sample).
 """
 
 from __future__ import annotations

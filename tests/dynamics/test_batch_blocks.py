@@ -1,5 +1,5 @@
 """The batch runs blocks of neighbouring cases (``core.batch.BLOCK``) in a scattered block
-order (issue 13, session 8), taken by its threads from an atomic counter (session 9): every
+order, taken by its threads from an atomic counter: every
 case exactly once, each with the numbers it has alone, for batch sizes around and below the
 block size and for any number of threads."""
 

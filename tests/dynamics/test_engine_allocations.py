@@ -1,4 +1,4 @@
-"""An impact's scratch is one allocation (issue 13, session 8): the state, the accumulators, the
+"""An impact's scratch is one allocation: the state, the accumulators, the
 error scales and every step loop's arrays are views of one buffer (``driver.impact``), so a
 batch of N impacts allocates N buffers, counted by numba's runtime statistics."""
 
@@ -43,5 +43,5 @@ def test_one_allocation_per_impact(friction) -> None:
     allocations = after.alloc - before.alloc
     assert after.free - before.free == allocations  # nothing kept
     # one buffer per impact, plus a few per batch (the parallel loop's set-up); 8 per impact
-    # before session 8
+    # when the step loops allocated their own arrays
     assert n <= allocations <= n + 32

@@ -88,13 +88,13 @@ def test_config_file_and_plots(tmp_path: Path) -> None:
         (["simulate", "cube", "--vy", "-1"], "body must be 'rod' or 'sphere'"),
         (ROD, "--vy is required"),
         ([*ROD, "--vy", "-1 kg"], "wrong dimension"),
-        # a given value is used, never replaced by the paper's (issue 14, item 7)
+        # a given value is used, never replaced by the paper's
         ([*ROD, "--vy", "-1", "--mass", "0 kg"], "--mass must be > 0, got '0 kg'"),
         ([*ROD, "--vy", "-1", "--radius", "0"], "--radius must be > 0"),
         ([*ROD, "--vy", "-1", "--length", "0 m"], "--length must be > 0"),
         ([*ROD, "--vy", "-1", "--inertia", "-1 kg*m^2"], "--inertia must be > 0"),
         (["simulate", "sphere", "--vy", "-1", "--mass", "0 kg"], "--mass must be > 0"),
-        # a rod needs its angle, with a unit (issue 14 item 7, issue 15)
+        # a rod needs its angle, with a unit
         (["simulate", "rod", "--vy", "-1"], "a rod needs its angle to the flat: give --angle"),
         (["simulate", "rod", "--angle", "0.35", "--vy", "-1"], "--angle 0.35 has no unit"),
         (["simulate", "rod", "--angle", "20", "--vy", "-1"], "'20 deg' or '0.35 rad'"),
@@ -160,7 +160,7 @@ def test_sphere_prints_no_angle() -> None:
 
 
 def test_out_naming_a_file_is_one_line(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
-    """--out naming an existing file (or a path below one): one line naming it (issue 14, 8)."""
+    """--out naming an existing file (or a path below one): one line naming it."""
     f = tmp_path / "taken.txt"
     f.write_text("x")
     for out in (f, f / "figs"):
@@ -171,7 +171,7 @@ def test_out_naming_a_file_is_one_line(tmp_path: Path, capsys: pytest.CaptureFix
 
 def test_flags_are_printed_and_in_the_json(capsys: pytest.CaptureFixture[str]) -> None:
     """A gravity-dominated impact: each warning on one line of stderr; the JSON carries the flags
-    and the warnings (issue 14, items 1-2)."""
+    and the warnings."""
     code, out, err = _main([*ROD, "--vy", "-1e-9 m/s", "--mu", "0.2", "--json"], capsys)
     assert code == 0
     data = json.loads(out)
@@ -181,7 +181,7 @@ def test_flags_are_printed_and_in_the_json(capsys: pytest.CaptureFixture[str]) -
     code, out, err = _main([*ROD, "--vy", "-1e-9 m/s", "--mu", "0.2"], capsys)
     assert code == 0 and "gravity_dominated" in out and err.startswith("warning: gravity")
     code, out, err = _main([*ROD, "--vy", "-1.41 m/s", "--json"], capsys)
-    data = json.loads(out)  # the paper's case: only the law's range was left (issue 12)
+    data = json.loads(out)  # the paper's case: only the law's range was left
     assert data["flags"] == int(ResultFlag.LAW_EXTRAPOLATED) and len(data["warnings"]) == 1
     assert err.splitlines() == [f"warning: {data['warnings'][0]}"]
     assert err.startswith("warning: law extrapolated: ") and "max delta/delta_c = " in err

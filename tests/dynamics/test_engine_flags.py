@@ -1,9 +1,9 @@
 """Result flags (impactlab.flags): an impact that gains energy or that gravity dominates never
 comes back as plain success; the energy-consistent variant of the paper's friction model.
 
-The reproducers are those of issue 14. Criteria (docs/engine/index.md, "Result flags"):
-ENERGY_GAIN when the total energy at separation exceeds E_0 by more than
-(100 rtol + 1e-10) (E_0 + E_kin + |E_pot|); GRAVITY_DOMINATED when m g T > 0.1 P_n.
+The reproducers are cases that once came back as plain success. Criteria
+(docs/engine/index.md, "Result flags"): ENERGY_GAIN when the total energy at separation exceeds
+E_0 by more than (100 rtol + 1e-10) (E_0 + E_kin + |E_pot|); GRAVITY_DOMINATED when m g T > 0.1 P_n.
 """
 
 from __future__ import annotations
@@ -26,7 +26,7 @@ from impactlab.friction import FRICTION_IDS, friction_names
 from impactlab.materials import AISI_1010
 
 O = {n: i for i, n in enumerate(OUTPUT_FIELDS)}
-#: issue 14, item 1: 19.35 J -> 1720 J
+#: an oblique Hertz impact with spin and mu near 1, no gravity: 19.35 J -> 1720 J
 GAIN_CASE = {
     "law": "hertz",
     "mu": 0.9962,
@@ -35,9 +35,9 @@ GAIN_CASE = {
     "spin": -5.9105,
     "gravity": False,
 }
-#: issue 14, item 1: 1.70 x the energy (v_slip,0 = 0, mu beyond the stick limit)
+#: a vertical rod: 1.70 x the energy (v_slip,0 = 0, mu beyond the stick limit)
 VERTICAL = {"law": "hertz", "mu": 0.2, "angle": math.pi / 2, "velocity": (0.0, -1.41)}
-#: issue 14, item 2: e = 37,971
+#: a creeping impact that gravity dominates: e = 37,971
 CREEP = {"mu": 0.2, "angle": math.radians(20), "velocity": (0.0, -1e-9)}
 PAPER_CASE = {"law": "ghaednia", "mu": 0.2, "angle": math.radians(20), "velocity": (0.0, -1.41)}
 
@@ -69,7 +69,7 @@ def test_messages_one_sentence_per_flag() -> None:
 
 
 def test_paper_case_is_plain_success() -> None:
-    """Nothing but the advisory LAW_EXTRAPOLATED (issue 12: the paper's impacts lie beyond the
+    """Nothing but the advisory LAW_EXTRAPOLATED (the paper's impacts lie beyond the
     Ghaednia law's fitted range; tests/dynamics/test_extrapolation.py)."""
     r = simulate(PAPER_ROD, friction="coulomb", **PAPER_CASE)
     assert r.flags == F.ResultFlag.LAW_EXTRAPOLATED and r.ok and len(r.warnings) == 1
@@ -136,7 +136,7 @@ def test_energy_tolerance_follows_rtol(rtol: float) -> None:
 @pytest.mark.parametrize("friction", friction_names())
 @pytest.mark.parametrize("law", law_names())
 def test_creeping_impact_is_gravity_dominated(law: str, friction: str) -> None:
-    """issue 14, item 2: v = 1e-9 m/s with gravity gives e ~ 4e4 for every pair: flagged."""
+    """v = 1e-9 m/s with gravity gives e ~ 4e4 for every pair: flagged."""
     r = simulate(PAPER_ROD, law=law, friction=friction, **CREEP)
     assert r.e > 1e3  # the number itself is not meaningful ...
     assert r.flags & F.ResultFlag.GRAVITY_DOMINATED and not r.ok  # ... and says so
@@ -174,7 +174,7 @@ def test_batch_flags_and_flagged() -> None:
         vy=[-1.41, -1.41, -1e-9, -1.41],
     )
     assert b.flags.dtype == np.int64
-    x = F.FLAG_LAW_EXTRAPOLATED  # hertz at 1.41 m/s: far beyond first yield (issue 12)
+    x = F.FLAG_LAW_EXTRAPOLATED  # hertz at 1.41 m/s: far beyond first yield
     np.testing.assert_array_equal(b.flags, [x, F.FLAG_ENERGY_GAIN | x, F.FLAG_GRAVITY_DOMINATED, 0])
     np.testing.assert_array_equal(b.flagged, [True, True, True, False])
     np.testing.assert_array_equal(b.ok, [True, True, True, False])  # status only

@@ -183,7 +183,7 @@ def test_mindlin_needs_g_star() -> None:
     assert list(st) == [10]
 
 
-# -- issue 14 item 11: one input rule, no leaked internal errors, no lenient coercions -----------
+# -- one input rule, no leaked internal errors, no lenient coercions ------------------------------
 
 
 @pytest.mark.parametrize(
@@ -240,7 +240,7 @@ def test_simulate_batch_refuses_bad_arrays_with_the_parameter_named() -> None:
     np.testing.assert_array_equal(a.out, b.out)
 
 
-# -- issue 14 item 3: implausible units ---------------------------------------------------------
+# -- implausible units ----------------------------------------------------------------------------
 
 
 def test_a_tip_wider_than_the_rod_is_refused_and_odd_sizes_warn() -> None:
@@ -269,7 +269,7 @@ def test_a_fast_impact_warns() -> None:
         simulate_batch(Sphere(0.01), law="hertz", vy=[-1.0, -141.0])
 
 
-# -- issue 14 item 2: a gravity-dominated impact is flagged, not refused -------------------------
+# -- a gravity-dominated impact is flagged, not refused -------------------------------------------
 
 
 def test_gravity_dominated_impact_is_flagged_not_refused() -> None:

@@ -1,4 +1,4 @@
-"""Event location on the dense output (``integrator.locate``, issue 13, session 8): the bracket
+"""Event location on the dense output (``integrator.locate``): the bracket
 end where g > 0, the root to round-off, and few evaluations. The search runs as plain Python
 (``locate.py_func``) on a dense output made by hand, with the event function replaced by a
 counting stand-in, so every evaluation is seen."""

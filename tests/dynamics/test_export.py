@@ -1,4 +1,4 @@
-"""Results as data-science objects (issue 15): ``BatchResult.to_xarray()``, a batch's notebook
+"""Results as data-science objects: ``BatchResult.to_xarray()``, a batch's notebook
 summary, and a history DataFrame with units and categorical phase/stick columns."""
 
 from __future__ import annotations

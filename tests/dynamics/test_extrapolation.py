@@ -1,7 +1,7 @@
-"""A result says whether its impact stayed inside the contact law's fitted range (issue 12 part
-2, contract C2): ``ImpactResult.max_delta_ratio``, ``.extrapolated``, the flag
-``LAW_EXTRAPOLATED`` with its sentence (how far it went), on single results, batches
-(``run_arrays``' ``flags`` column) and sweep stores. Outputs beyond the range stay finite and
+"""A result says whether its impact stayed inside the contact law's fitted range:
+``ImpactResult.max_delta_ratio``, ``.extrapolated``, the flag ``LAW_EXTRAPOLATED`` with its
+sentence (how far it went), on single results, batches (``run_arrays``' ``flags`` column) and
+sweep stores. Outputs beyond the range stay finite and
 energy-consistent: the flag is advisory (``ok`` stays True)."""
 
 from __future__ import annotations

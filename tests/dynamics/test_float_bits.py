@@ -1,4 +1,4 @@
-"""The core's float arithmetic without library calls (issue 13): the exponent and significand
+"""The core's float arithmetic without library calls: the exponent and significand
 from the bits (``impactlab._floatbits``), read by the loading-curve table and the step-size
 controller, and the rotation terms of the lever arms (``normal.rotation_terms``)."""
 

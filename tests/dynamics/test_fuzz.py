@@ -1,4 +1,4 @@
-"""Fuzz: thousands of random valid impacts per contact law x friction model x body (issue 14).
+"""Fuzz: thousands of random valid impacts per contact law x friction model x body.
 
 Inputs span four decades of impact speed (1e-3 to 10 m/s, so that gravity dominates some
 impacts), any angle, slip and spin, mu in [0, 1.2], gravity on and off, full rotation and frozen

@@ -1,4 +1,4 @@
-"""The ``partial_slip`` friction model (issue 12) against its references: the exact
+"""The ``partial_slip`` friction model against its references: the exact
 Mindlin-Deresiewicz solution on Maw-Barber-Fawcett's and Thornton's representations, and the
 Kharaz-Gorham-Salman measurements.
 
@@ -95,7 +95,7 @@ def test_kharaz_data_rms() -> None:
 
 
 def test_small_angles_rise_above_rigid_value() -> None:
-    """Issue 12: e_t rises above 5/7 near normal incidence and dips below it at 10-20 deg."""
+    """e_t rises above 5/7 near normal incidence and dips below it at 10-20 deg."""
     assert kharaz_run(2.0)["et"] > 5.0 / 7.0 + 0.05
     assert kharaz_run(15.0)["et"] < 5.0 / 7.0 - 0.1
 

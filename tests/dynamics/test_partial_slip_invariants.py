@@ -1,4 +1,4 @@
-"""Invariants of the ``partial_slip`` friction model (issue 12): no energy gain, the Coulomb
+"""Invariants of the ``partial_slip`` friction model: no energy gain, the Coulomb
 bound, continuity of F_t at every switch, the rigid (Coulomb) limit as G* grows, convergence
 in the cell count, the rods, the result object and the batch engine's refusal."""
 

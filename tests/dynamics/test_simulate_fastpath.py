@@ -1,4 +1,4 @@
-"""``simulate``'s fast path (issue 13): plain inputs skip the full checks and the dataclass
+"""``simulate``'s fast path: plain inputs skip the full checks and the dataclass
 ``__init__``, and give exactly what the full path gives.
 
 The full path is forced by switching the fast path off (``_fast`` returning None) or by passing

@@ -1,4 +1,4 @@
-"""The step-size choices that avoid rejected steps (issue 13): the step carried onto the
+"""The step-size choices that avoid rejected steps: the step carried onto the
 unloading branch at the turning point, the first step of the final approach in w, and the
 opening through an early switch to the elastic-plastic curve (``ends.THROUGH_SWITCH``)."""
 

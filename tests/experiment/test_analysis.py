@@ -192,7 +192,7 @@ def test_engine_comparison(drops: dict, scans: dict, rod: Any) -> None:
 
 
 # ---------------------------------------------------------------------------------------------
-# plausibility of the dent (issue 14, item 3), bad arguments (item 11), --out (item 8)
+# plausibility of the dent, bad arguments, --out
 # ---------------------------------------------------------------------------------------------
 
 
@@ -296,7 +296,7 @@ def test_cli_refuses_impossible_dent(plain_scan: tuple[Path, float, Any]) -> Non
 def test_bad_arguments_name_the_parameter(
     kwargs: dict[str, Any], error: type[Exception], needle: str
 ) -> None:
-    """``analyze(123, None)`` once leaked pathlib's TypeError (issue 14, item 11)."""
+    """``analyze(123, None)`` once leaked pathlib's TypeError."""
     args = {"markers_path": None, "scan_path": None, **kwargs}
     with pytest.raises(error) as exc:
         analyze(**args)

@@ -1,5 +1,5 @@
 """``impactlab analyze``: its JSON has the documented shape and its table the display units
-of every other command (issue 15)."""
+of every other command."""
 
 from __future__ import annotations
 

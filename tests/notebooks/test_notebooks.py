@@ -1,4 +1,4 @@
-"""The notebook gallery (issue 15): each notebook of ``notebooks/`` (jupytext percent format,
+"""The notebook gallery: each notebook of ``notebooks/`` (jupytext percent format,
 kept as text) runs as a script in a fresh subprocess, in a temporary folder, with
 ``MPLBACKEND=Agg``, prints its key numbers and writes its outputs; each has a documentation page
 ``docs/notebooks/NAME.md`` that shows its current code (``notebook_pages.py`` writes them)."""

@@ -3,7 +3,7 @@ array's own Zarr codecs through Zarr's synchronous codec protocol and written as
 digest recorded as written. The store it writes is byte for byte the store that Zarr's own
 ``z[block] = v`` writes, markers included, for grids, samples, edge chunks and integer arrays;
 empty chunks leave no file and a ``null`` marker entry; stores made with the "/" chunk-key
-separator (before session 8) are resumed in their own layout; resume after an interrupted chunk
+separator are resumed in their own layout; resume after an interrupted chunk
 gives the store of an uninterrupted run."""
 
 from __future__ import annotations
@@ -135,7 +135,7 @@ def test_a_store_with_the_slash_separator_is_written_and_resumed_in_its_layout(
     tmp_path, monkeypatch
 ) -> None:
     study = _grid()
-    with monkeypatch.context() as m:  # the layout of stores made before session 8
+    with monkeypatch.context() as m:  # the layout of stores made with the "/" separator
         m.setattr(storebuild, "CHUNK_KEYS", {})
         path = run_sweep(study, tmp_path / "s.zarr", evaluator=FakeEvaluator(), quiet=True).path
         ref = _zarr_store(study, tmp_path / "ref.zarr")

@@ -1,4 +1,4 @@
-"""How a sweep shows itself (issue 15): maps of a 3-D study are faceted and name the slice they
+"""How a sweep shows itself: maps of a 3-D study are faceted and name the slice they
 show, and the throughput leaves out each worker's first task (the one-time compile or load)."""
 
 from __future__ import annotations

@@ -53,7 +53,7 @@ def test_run_summary_counts_flags(tmp_path, monkeypatch, capsys) -> None:
     )
     main()
     summary = json.loads(capsys.readouterr().out)
-    # hertz at 1.41 m/s is far beyond first yield: both cases extrapolate the law (issue 12)
+    # hertz at 1.41 m/s is far beyond first yield: both cases extrapolate the law
     assert summary["flagged"] == "2 case(s) (energy gain: 1, law extrapolated: 2)"
     ds = open_sweep(tmp_path / "ir.zarr").load()
     gained = int(ds["flags"].sel(friction="impulse_ratio"))

@@ -176,7 +176,7 @@ def test_netcdf_export_round_trip(tmp_path, fake) -> None:
 
 def test_store_cut_short_by_an_older_impactlab_is_recovered(tmp_path, fake) -> None:
     # an older impactlab built the store in place: a kill during its creation left sweep
-    # metadata without the study record, which could then never be resumed (issue 14, item 5)
+    # metadata without the study record, which could then never be resumed
     ref = run_sweep(grid_study(), tmp_path / "ref.zarr", evaluator=fake, quiet=True)
     half = tmp_path / "half.zarr"
     (half / ".sweep" / "done").mkdir(parents=True)

@@ -200,7 +200,7 @@ def run_simulate(opt: _Options) -> ImpactResult | DropResult:
         "gravity": bool(cfg.get("gravity", True)),
         "rtol": cfg.get("rtol"),
     }
-    if isinstance(body, FlexibleRod):  # the drop: a DropResult (contract C1)
+    if isinstance(body, FlexibleRod):  # the drop: a DropResult
         rate = rate_name(str(cfg.get("rate", "none")), opt.label("rate"))
         return simulate(body, angle=rod_angle, rate=rate, history=False, **common)
     return simulate(

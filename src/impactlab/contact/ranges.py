@@ -76,8 +76,8 @@ STATUSES: Mapping[str, str] = MappingProxyType(
 )
 
 #: The stand-in used where a FEM-fitted law's own range was not found: Kogut & Etsion (2002)
-#: fit their FEM results for 1 <= delta/delta_c <= 110 (as quoted in this project since wave 1;
-#: the number was not re-read in the source here; an independent implementation of their model,
+#: fit their FEM results for 1 <= delta/delta_c <= 110 (as quoted in the literature on their
+#: model; the number was not re-read in the source; an independent implementation of their model,
 #: TaoYang1999/SCHC-framework asperity_f_cal.m, uses the same breakpoints 1, 6 and 110 delta_c).
 PROVISIONAL_FEM_RATIO = 110.0
 
@@ -272,6 +272,6 @@ def extrapolation_flags(law_id: int, params: Any, delta_max: Any) -> Any:
 
 def law_extrapolated(model: _Model, delta_max: Any) -> Any:
     """True where an impact that reached ``delta_max`` [m] (a float or an array) left the fitted
-    range of ``model``'s law, a ``ContactModel`` (contract C2; bool or bool array)."""
+    range of ``model``'s law, a ``ContactModel`` (bool or bool array)."""
     out = np.asarray(extrapolation_flags(model.law_id, model.params, delta_max)) != 0
     return bool(out) if out.ndim == 0 else out

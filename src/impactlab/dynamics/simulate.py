@@ -128,7 +128,7 @@ def simulate(
     >>> round(r.e, 2)
     0.42
     """
-    if isinstance(body, FlexibleRod) or drop_options:  # the flexible drop (contract C1)
+    if isinstance(body, FlexibleRod) or drop_options:  # the flexible drop: a DropResult
         args = {"law": law, "friction": friction, "mu": mu, "angle": angle, "velocity": velocity}
         args |= {"spin": spin, "law_params": law_params, "gravity": gravity, "rtol": rtol}
         return simulate_flexible(body, flat, constant_angle=constant_angle, history=history,
@@ -151,7 +151,7 @@ def simulate(
         constant_angle=constant_angle,
         rtol=rtol,
     )
-    if x.friction.kind is FrictionKind.PARTIAL_SLIP:  # issue 12: the partial-slip engine
+    if x.friction.kind is FrictionKind.PARTIAL_SLIP:  # the partial-slip engine (slipcore)
         return simulate_partial_slip(x, check_flag("history", history))
     return _run_one(x, check_flag("history", history))
 

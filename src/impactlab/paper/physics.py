@@ -1,4 +1,4 @@
-""" "Can physics explain the experiment?" (issue 11): the paper's three drops with the rigid rod,
+""" "Can physics explain the experiment?": the paper's three drops with the rigid rod,
 the flexible rod and the flexible rod on a rate-dependent flat, side by side with the
 measurements. Nothing is tuned: the paper's rod, drop velocities and measured mu (as the Coulomb
 coefficient), the Ghaednia law with impactlab's defaults, the AISI 1010 flat, gravity on, no

@@ -1,4 +1,4 @@
-"""The verification page's section on the ``partial_slip`` friction model (issue 12): the table
+"""The verification page's section on the ``partial_slip`` friction model: the table
 against the exact Mindlin-Deresiewicz solution and the Kharaz-Gorham-Salman data, and its three
 figures (Maw-Barber-Fawcett, Thornton's representation, Kharaz), with the existing models side
 by side."""

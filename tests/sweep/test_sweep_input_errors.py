@@ -1,4 +1,4 @@
-"""Wave 4: study files that cannot be read, damaged stores and invalid grid values give one
+"""Study files that cannot be read, damaged stores and invalid grid values give one
 clear error naming the file, the store or the dimension, its offending values and what is
 allowed; valid inputs that fail physically are still stored with their status."""
 

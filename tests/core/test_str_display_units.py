@@ -1,4 +1,4 @@
-"""``print(body)`` and ``print(material)``: one readable line in display units (wave 4), while
+"""``print(body)`` and ``print(material)``: one readable line in display units, while
 ``repr`` stays the dataclass's exact SI repr (equality, hashing, pickling unchanged)."""
 
 from __future__ import annotations

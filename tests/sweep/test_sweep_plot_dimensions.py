@@ -1,4 +1,4 @@
-"""Wave 4: plots of a study with more dimensions than a map shows. A 4-D study is drawn as
+"""Plots of a study with more dimensions than a map shows. A 4-D study is drawn as
 rows x columns of panels (every dimension shown); a fifth dimension is sliced, and the figure's
 title and one SliceWarning say which value is shown and how to choose another (``sel``)."""
 
