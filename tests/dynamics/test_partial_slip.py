@@ -2,10 +2,12 @@
 Mindlin-Deresiewicz solution on Maw-Barber-Fawcett's and Thornton's representations, and the
 Kharaz-Gorham-Salman measurements.
 
-Reference values and their provenance: ``impactlab.verification.partial_slip`` (exact M-D by the
-prototype's fixed-step MDR reference, research/partial_slip). Tolerances: the discretisation
-error of 16 cells (max |e_t - exact| 2e-3 in the prototype, 2nd order in the cell count) plus a
-margin; the Kharaz RMS tolerances are the prototype's figures (0.012, 20.5 rad/s) plus ~20 %.
+Reference values and their provenance: ``impactlab.verification.partial_slip`` (exact M-D by an
+independent fixed-step method-of-dimensionality-reduction solution, 600 elements; its program is
+in the git history, ``research/partial_slip/`` last in commit 98a4405). Tolerances: the
+discretisation error of 16 cells (max |e_t - exact| 2e-3 measured against that solution, 2nd
+order in the cell count) plus a margin; the Kharaz RMS tolerances are the figures of the same
+study (0.012, 20.5 rad/s) plus ~20 %.
 """
 
 from __future__ import annotations

@@ -65,3 +65,16 @@ def test_energy_balance_beyond_the_tolerance_is_refused() -> None:
 def test_other_end_message_is_in_bit_order() -> None:
     texts = messages(ResultFlag.OTHER_END | ResultFlag.ENERGY_GAIN)
     assert texts[0].startswith("energy gain") and texts[1].startswith("other end")
+
+
+def test_docs_state_law_extrapolated_on_drops() -> None:
+    """docs/flexible.md said LAW_EXTRAPOLATED is never set on drops; a fast drop sets it."""
+    from pathlib import Path
+
+    text = (Path(__file__).resolve().parents[2] / "docs" / "flexible.md").read_text()
+    assert "LAW_EXTRAPOLATED is not set on drops" not in text
+    assert "not yet set on\ndrops" not in text and "is not yet set" not in text
+    assert "LAW_EXTRAPOLATED is set on drops" in text
+    fast = il.simulate(il.FlexibleRod.paper(n_axial=1, n_bending=2), angle="20 deg",
+                       velocity=(0, -3.0), mu=0.2)  # fmt: skip
+    assert ResultFlag.LAW_EXTRAPOLATED in fast.flags and fast.ok

@@ -202,9 +202,10 @@ class DropResult:
     It carries the summary attributes of ``ImpactResult`` (``impactlab.simulate`` returns it
     for a FlexibleRod), each read for the whole sequence of contacts:
 
-    - ``e``: the tip's rigid-body normal velocity after the last contact over the one before
-      the first, with the gravity impulse of the sequence removed (as a ballistic fit of
-      marker data would remove it; ``e_raw`` keeps it);
+    - ``e``: minus the tip's rigid-body normal velocity after the last contact over the one
+      before the first, with the gravity impulse of the sequence removed (as a ballistic fit
+      of marker data would remove it; ``e_raw`` keeps it); one bounce of the tip only when
+      the sequence holds the tip's contacts alone and e >= 0 (else OTHER_END, below);
     - ``delta_p``: the final dent depth (the deepest dent's permanent depth);
     - ``sliding_length``: the tip's total slip, the sum over its contacts of int v_t dt
       (signed, as ImpactResult's); ``scar_length``: the x-extent of the mark the tip left
@@ -219,6 +220,10 @@ class DropResult:
       (``impactlab.flags.ENERGY_GAIN_RTOL_FACTOR`` rtol + ``ENERGY_ROUNDOFF``, relative to
       E0 + the final kinetic, vibration and |potential| energy), GRAVITY_DOMINATED when
       m g duration exceeds ``GRAVITY_IMPULSE_RATIO`` of the total normal impulse,
+      OTHER_END when the other end touched the flat within the sequence (``stop="flight"``)
+      or e < 0 (the tip still approaches the flat after its last contact), unless gravity
+      dominates; GRAVITY_DOMINATED is judged on the tip's sequence (its contacts before the
+      other end's first touch);
       LAW_EXTRAPOLATED when the largest interference of the sequence left the law's fitted
       range (``impactlab.contact.ranges``; ``max_delta_ratio`` = delta_max / delta_ref and the
       upper end of the law's range, ``fitted_delta_ratio_max``);

@@ -1,12 +1,13 @@
-"""Verification of the ``partial_slip`` friction model (issue 12): cases, reference values and
+"""Verification of the ``partial_slip`` friction model: cases, reference values and
 the sphere runs behind the tests (tests/dynamics/test_partial_slip*.py) and the verification
 page (``partial_slip_page``).
 
 Reference values ("exact M-D") are the exact Mindlin-Deresiewicz solution of the same impact,
-computed by the fixed-step method-of-dimensionality-reduction reference of the prototype
-(research/partial_slip/mdr.py: 600 elements, 20 000 velocity-Verlet steps, converged to ~1e-5
-in e_t; research/partial_slip/results/*.json, RESULTS.md). They are an independent solution of
-the continuous model, not of the discretised one; rounded to 5 digits here.
+computed by an independent fixed-step method-of-dimensionality-reduction (MDR) solution: 600
+elements, 20 000 velocity-Verlet steps, converged to ~1e-5 in e_t. They are a solution of the
+continuous model, not of the discretised one; rounded to 5 digits here. The MDR program and its
+results (``research/partial_slip/``: ``mdr.py``, ``results/*.json``, ``RESULTS.md``) are in the
+git history, last in commit 98a4405.
 """
 
 from __future__ import annotations

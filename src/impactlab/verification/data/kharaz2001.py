@@ -26,7 +26,7 @@ KGS_REBOUND_CONTACT:
 
 No scatter bands are available from these sources (Kharaz et al. report means of repeated
 impacts); the comparisons (``impactlab.verification.partial_slip``) are against the digitised
-means only. Moved here from research/partial_slip/kharaz_data.py (issue 12).
+means only.
 
 Columns: incidence angle theta from the normal [deg], then the measured quantity.
 """
