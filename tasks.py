@@ -68,7 +68,6 @@ _LOCK: list[str | Path] = [
 
 def _env() -> dict[str, str]:
     env = dict(os.environ)
-    env.setdefault("NUMBA_CACHE_DIR", str(ROOT / ".numba_cache"))
     env.setdefault("MPLBACKEND", "Agg")
     return env
 
@@ -77,6 +76,7 @@ def _env() -> dict[str, str]:
 TASKS: dict[str, str] = {
     "reproduce": "create .venv if needed, then reproduce the paper into ./reproduction/ [ARGS]",
     "test": "create .venv if needed, then ruff, mypy and pytest [PYTEST ARGS]",
+    "warm": "compile the engine into its cache ahead of the first run (impactlab warm) [ARGS]",
     "lint": "ruff check, ruff format --check, mypy, lint-imports",
     "bench": "run the benchmarks (benchmarks/run_all.py) [ARGS]",
     "docs": "build the documentation site (mkdocs build --strict) [ARGS]",
@@ -109,10 +109,16 @@ def main(argv: list[str]) -> int:
     env = _env()
     if task == "reproduce":
         return _run(PY, "-m", "impactlab", "reproduce", *rest, env=env)
+    if task == "warm":
+        return _run(PY, "-m", "impactlab", "warm", *rest, env=env)
     if task == "test":
         for cmd in (_RUFF, _RUFF_FORMAT, _MYPY):
             if _run(*cmd, env=env) != 0:
                 return 1
+        # compiled once here, then loaded from the cache by both test workers (each would
+        # otherwise compile the same engine at the same time)
+        if _run(PY, "-m", "impactlab", "warm", env=env) != 0:
+            return 1
         return _run(PY, "-m", "pytest", "-n", "2", "--dist", "loadfile", *rest, env=env)
     if task == "lint":
         cmds = (_RUFF, _RUFF_FORMAT, _MYPY, [BIN / "lint-imports", "--no-cache"])

@@ -5,7 +5,7 @@ law and Coulomb friction, gravity on, at the engine's default tolerance. The bas
 ``impactlab.dynamics.reference.simulate_reference`` (solve_ivp, RK45 = the same Dormand-Prince
 pair, the same rtol and per-component atol, events for every phase switch).
 
-    NUMBA_CACHE_DIR=.numba_cache .venv/bin/python benchmarks/bench_engine.py [--quick]
+    .venv/bin/python benchmarks/bench_engine.py [--quick]
 
 Writes benchmarks/results/engine.json and prints a summary. Per-core throughput is measured
 with numba limited to one thread, as impacts per CPU-second of the process (robust against

@@ -8,7 +8,7 @@ Timoshenko finite elements, Ne = 80, scipy ``solve_ivp`` DOP853 with events, rto
 in the same run: the figure is the ratio FE / flexible, robust against other load on a shared
 machine. The issue's target: one flexible drop in 10 ms or less on one core.
 
-    NUMBA_CACHE_DIR=.numba_cache .venv/bin/python benchmarks/bench_flexible.py [--quick]
+    .venv/bin/python benchmarks/bench_flexible.py [--quick]
 
 Writes benchmarks/results/flexible.json and prints a summary.
 """

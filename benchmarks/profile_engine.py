@@ -1,6 +1,6 @@
 """Where the compiled engine spends its time on the benchmark case (docs/engine/benchmarks.md).
 
-    NUMBA_CACHE_DIR=.numba_cache .venv/bin/python benchmarks/profile_engine.py [--counts-only]
+    .venv/bin/python benchmarks/profile_engine.py [--counts-only]
 
 Two measurements, combined:
 

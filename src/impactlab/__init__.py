@@ -10,6 +10,8 @@ Subpackages: ``contact`` (laws), ``dynamics`` (engine), ``analytic`` (the paper'
 ``experiment`` (raw files), ``sweep`` (studies), ``paper`` (data and reproduction).
 """
 
+# first: numba's cache folder and the compile notice, before any compiled function is defined
+from impactlab import _runtime  # noqa: F401
 from impactlab._validation import ImplausibleInputWarning
 from impactlab._version import __version__
 from impactlab.analytic import InversionResult, Measured, invert

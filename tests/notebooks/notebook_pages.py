@@ -5,7 +5,7 @@ cell printed when it ran, and the figures it saved).
 Regenerate the pages after changing a notebook (it runs each notebook, cell by cell, in a
 temporary folder)::
 
-    NUMBA_CACHE_DIR=.numba_cache MPLBACKEND=Agg .venv/bin/python tests/notebooks/notebook_pages.py
+    MPLBACKEND=Agg .venv/bin/python tests/notebooks/notebook_pages.py
 
 ``tests/notebooks/test_notebooks.py`` runs every notebook as a script and checks that each page
 still shows its notebook's code.

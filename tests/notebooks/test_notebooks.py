@@ -60,7 +60,6 @@ def test_the_gallery_is_complete() -> None:
 def test_notebook_runs(name: str, tmp_path: Path) -> None:
     patterns, files = CASES[name]
     env = dict(os.environ, MPLBACKEND="Agg")
-    env.setdefault("NUMBA_CACHE_DIR", str(ROOT / ".numba_cache"))
     res = subprocess.run(
         [sys.executable, str(NOTEBOOKS / f"{name}.py")],
         cwd=tmp_path,

@@ -41,7 +41,6 @@ class Cluster:
         self.env["PYTHONPATH"] = os.pathsep.join(
             [str(HERE), *filter(None, [os.environ.get("PYTHONPATH")])]
         )
-        self.env.setdefault("NUMBA_CACHE_DIR", str(ROOT / ".numba_cache"))
         self.env["NUMBA_NUM_THREADS"] = "1"
         self.env["DASK_DISTRIBUTED__WORKER__DAEMON"] = "False"
         self.log = tmp

@@ -16,7 +16,18 @@ from typing import Any, TextIO
 import typer
 
 from impactlab._version import __version__
-from impactlab.cli import analyze, drop, fe, invert, laws, materials, reproduce, simulate, sweep
+from impactlab.cli import (
+    analyze,
+    drop,
+    fe,
+    invert,
+    laws,
+    materials,
+    reproduce,
+    simulate,
+    sweep,
+    warm,
+)
 from impactlab.cli._common import UserError
 
 app = typer.Typer(
@@ -51,7 +62,7 @@ def _root(
 
 
 # Each command module defines ``register(app)``; registered in this order (the help's order).
-for _module in (laws, materials, simulate, drop, invert, analyze, sweep, reproduce, fe):
+for _module in (laws, materials, simulate, drop, invert, analyze, sweep, reproduce, fe, warm):
     _module.register(app)
 
 

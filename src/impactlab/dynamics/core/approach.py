@@ -133,6 +133,12 @@ def _rhs_w(law, p, fric, c, md, Y, w, sgn):
     return (d[0] * s, d[1] * s, d[2] * s, d[3] * s, d[4] * s, d[5] * s, d[6] * s, d[7] * s, s), evq
 
 
+@njit_no_refcount
+def _rhs_w_cold(law, p, fric, c, md, Y, w, sgn):
+    """``_rhs_w`` compiled once, for the callers off the steps (see ``rhs.rhs_events_cold``)."""
+    return _rhs_w(law, p, fric, c, md, Y, w, sgn)
+
+
 @njit(cache=True, inline="always", error_model="numpy")
 def _events(law, p, fric, c, md, evq, q):
     """Event tuple from the evaluated quantities ``evq`` (``rhs.events_from``)."""
@@ -165,28 +171,16 @@ def _put(K, stage, r):
         K[stage, i] = r[i]
 
 
-@njit(cache=True, inline="always", error_model="numpy")
-def _w_stage(law, p, fric, c, md, Y, K, w, sgn, h, stage, Yn):
-    """Stage ``stage`` (1..5) of ``_step``: its point into ``Yn``, its derivative into
-    ``K[stage]``."""
-    _point(Y, K, h, stage, Yn)
-    r, _q = _rhs_w(law, p, fric, c, md, Yn, w + sgn * _C[stage] * h, sgn)
-    _put(K, stage, r)
-
-
 @njit_no_refcount
 def _step(law, p, fric, c, md, Y, K, w, sgn, h, rtol, sc, tscale, Yn):
     """One Dormand-Prince step from w to w + sgn h (``K[0]``: dY/du at Y); the result into
     ``Yn``; returns (error norm, quantities at ``Yn``)."""
-    # the stages written out (a constant stage number each: ``_point``'s branches fold away)
-    _w_stage(law, p, fric, c, md, Y, K, w, sgn, h, 1, Yn)
-    _w_stage(law, p, fric, c, md, Y, K, w, sgn, h, 2, Yn)
-    _w_stage(law, p, fric, c, md, Y, K, w, sgn, h, 3, Yn)
-    _w_stage(law, p, fric, c, md, Y, K, w, sgn, h, 4, Yn)
-    _w_stage(law, p, fric, c, md, Y, K, w, sgn, h, 5, Yn)
-    _point(Y, K, h, 6, Yn)
-    r, evq = _rhs_w(law, p, fric, c, md, Yn, w + sgn * h, sgn)
-    _put(K, 6, r)
+    # the stages in a loop, so that the force evaluation is compiled once; stage 6 is the new
+    # point (its node is 1: w + sgn h)
+    for stage in range(1, 7):
+        _point(Y, K, h, stage, Yn)
+        r, evq = _rhs_w(law, p, fric, c, md, Yn, w + sgn * _C[stage] * h, sgn)
+        _put(K, stage, r)
     err = 0.0
     for i in range(NY):
         ei = E1 * K[0, i] + E3 * K[2, i] + E4 * K[3, i] + E5 * K[4, i] + E6 * K[5, i]
@@ -214,14 +208,14 @@ def _fired(gold, gnew):
 def w_state(law, p, fric, c, md, y, w):
     """(quantities, event tuple) at state ``y`` (length NS) with the interference delta_r + w^2
     of the final approach."""
-    _r, evq = _rhs_w(law, p, fric, c, md, y, w, -1.0)
+    _r, evq = _rhs_w_cold(law, p, fric, c, md, y, w, -1.0)
     return evq, _events(law, p, fric, c, md, evq, y[S_Q])
 
 
 @njit(cache=True, error_model="numpy")
 def _g_friction(law, p, fric, c, md, Y, w, sgn):
     """The stick/slip event function at (Y, w)."""
-    _r, evq = _rhs_w(law, p, fric, c, md, Y, w, sgn)
+    _r, evq = _rhs_w_cold(law, p, fric, c, md, Y, w, sgn)
     return _events(law, p, fric, c, md, evq, Y[S_Q])[EV_FRIC]
 
 
@@ -272,7 +266,7 @@ def _to(law, p, fric, c, md, Y, k0, w, sgn, H, rtol, sc, tscale, out, work):
     done = 0.0
     hh = H
     n = 0
-    _r, evq = _rhs_w(law, p, fric, c, md, Y, w, sgn)
+    _r, evq = _rhs_w_cold(law, p, fric, c, md, Y, w, sgn)
     while n < MAX_APPROACH_STEPS:
         n += 1
         rem = H - done
@@ -316,7 +310,7 @@ def w_integrate(
         Y[i] = y[i]
     Y[Y_T] = t
     w = wa
-    r, evq = _rhs_w(law, p, fric, c, md, Y, w, sgn)
+    r, evq = _rhs_w_cold(law, p, fric, c, md, Y, w, sgn)
     _put(K, 0, r)
     if not (span > 0.0 and math.isfinite(r[Y_T])):
         return W_FALLBACK, t, 0, hist, nh, evq, w
@@ -344,7 +338,7 @@ def w_integrate(
             b = END_THETA
             dense_coeffs(K, Q)
             dense(Y, K, h, b, Q, Yt)
-            _r, evq_b = _rhs_w(law, p, fric, c, md, Yt, w + sgn * b * h, sgn)
+            _r, evq_b = _rhs_w_cold(law, p, fric, c, md, Yt, w + sgn * b * h, sgn)
             gnew = _events(law, p, fric, c, md, evq_b, Yt[S_Q])
         ev = _fired(gold, gnew)
         if ev >= 0 and (ev != EV_FRIC or sgn > 0.0 or fric != FR_COULOMB):

@@ -55,7 +55,7 @@ def impact_batch(threads, law, lp, fric, bpa, init, mu, g, const_angle, rtol, di
                     g,
                     const_angle,
                     rtol,
-                    False,
+                    False,  # a literal: the history code is folded away (a second compile)
                     diag,
                     out[i],
                 )

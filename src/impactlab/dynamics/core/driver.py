@@ -100,7 +100,7 @@ from impactlab.dynamics.core.layout import (
 )
 from impactlab.dynamics.core.normal import geometry
 from impactlab.dynamics.core.quality import result_flags
-from impactlab.dynamics.core.rhs import evaluate, rhs_events
+from impactlab.dynamics.core.rhs import evaluate_cold, rhs_events_cold
 from impactlab.dynamics.core.setup import check_inputs, constants, error_scales, initial_mode
 from impactlab.dynamics.core.status import (
     REGIME_FRICTIONLESS,
@@ -164,10 +164,10 @@ def _integrate(
     wwork = work[(STEP_LEN + RECOMPUTE_LEN) * NS :]
     t = 0.0
     h = 0.02 * tstar * rtol**0.2
-    r, gold, evq = rhs_events(law, p, fric, c, md, state_tuple(y))
+    r, gold, evq = rhs_events_cold(law, p, fric, c, md, state_tuple(y))
     for i in range(NS):
         K[0, i] = r[i]
-    nh = 0
+    nh = np.int64(0)  # not a literal: record() is compiled once, for any row count
     if record:
         hist, nh = record_row(hist, nh, t, law, p, fric, c, md, state_tuple(y))
     status, t, nsteps, nevents, c, md, gold, hist, nh = opening(
@@ -217,7 +217,7 @@ def _integrate(
         if ev >= 0:
             nsteps += integrate_to(law, p, fric, c, md, y, K[0], theta * h, rtol, sc, yev, rwork)
             nsteps -= 1
-            evq = evaluate(law, p, fric, c, md, state_tuple(yev))
+            evq = evaluate_cold(law, p, fric, c, md, state_tuple(yev))
         if not track(acc, law, p, fric, c, md, state_tuple(yev), evq, t, tend, diag):
             status = ST_NAN
             break

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 from numba import njit
 
 from impactlab.dynamics.core.approach import W_EVENT, W_NAN, W_REACHED, w_integrate, w_state
@@ -24,7 +25,7 @@ from impactlab.dynamics.core.layout import (
     NS,
 )
 from impactlab.dynamics.core.normal import geometry
-from impactlab.dynamics.core.rhs import rhs_events
+from impactlab.dynamics.core.rhs import rhs_events_cold
 from impactlab.dynamics.core.status import ST_NAN
 from impactlab.dynamics.core.transitions import without_switch
 from impactlab.dynamics.core.tuples import state_tuple
@@ -79,7 +80,7 @@ def opening(
                 hist, nh = record_row(hist, nh, t, law, p, fric, c, md, state_tuple(y))
             nev += 1
             status, c, md, gold = handle_event(
-                EV_SWITCH, law, p, fric, c, md, y, evq, acc, K, gold, sc, fscale, dstar
+                np.int64(EV_SWITCH), law, p, fric, c, md, y, evq, acc, K, gold, sc, fscale, dstar
             )
             if status != GO_ON:
                 return status, t, n, nev, c, md, gold, hist, nh
@@ -112,7 +113,7 @@ def opening(
         return ST_NAN, t, n, nev, c, md, gold, hist, nh
     if st == W_REACHED and c[C_DSW] < target:  # through the switch (THROUGH_SWITCH)
         c = without_switch(c)
-    r, gold, _q = rhs_events(law, p, fric, c, md, state_tuple(y))
+    r, gold, _q = rhs_events_cold(law, p, fric, c, md, state_tuple(y))
     for i in range(NS):
         K[0, i] = r[i]
     if record and st == W_REACHED and n > 0:
@@ -155,23 +156,23 @@ def approach_end(
         nev += 1
         if nev > MAX_W_EVENTS:  # switches without progress: the time integration decides
             status, c, md, gold = handle_event(
-                EV_FRIC, law, p, fric, c, md, y, evq, acc, K, NO_EVENTS, sc, fscale, dstar
+                np.int64(EV_FRIC), law, p, fric, c, md, y, evq, acc, K, NO_EVENTS, sc, fscale, dstar
             )
             return status, t, n, nev, c, md, hist, nh, gold
         if record:
             hist, nh = record_row(hist, nh, t, law, p, fric, c, md, state_tuple(y))
         for _ in range(3):  # switch; a state found outside its new domain switches at once
-            status, c, md = on_event(EV_FRIC, law, p, fric, c, md, y, evq, acc)
+            status, c, md = on_event(np.int64(EV_FRIC), law, p, fric, c, md, y, evq, acc)
             if status != GO_ON:
                 return status, t, n, nev, c, md, hist, nh, NO_EVENTS
             evq, g = w_state(law, p, fric, c, md, y, wa)
             if not g[EV_FRIC] > 0.0:
                 break
-    r, gold, evq = rhs_events(law, p, fric, c, md, state_tuple(y))
+    r, gold, evq = rhs_events_cold(law, p, fric, c, md, state_tuple(y))
     if st == W_REACHED:
         if record:
             hist, nh = record_row(hist, nh, t, law, p, fric, c, md, state_tuple(y))
-        status, c, md = on_event(EV_SEP, law, p, fric, c, md, y, evq, acc)
+        status, c, md = on_event(np.int64(EV_SEP), law, p, fric, c, md, y, evq, acc)
         return status, t, n, nev + 1, c, md, hist, nh, gold
     if st == W_NAN:
         return ST_NAN, t, n, nev, c, md, hist, nh, gold

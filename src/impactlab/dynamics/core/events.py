@@ -4,6 +4,7 @@ the w-integrated ends of the contact (``ends``)."""
 
 from __future__ import annotations
 
+import numpy as np
 from numba import njit
 
 from impactlab.dynamics.core.accumulate import A_EEL, A_WCOMP, A_WMARK, A_WREST, stored
@@ -63,5 +64,5 @@ def handle_event(ev, law, p, fric, c, md, y, evq, acc, K, gold, sc, fscale, dsta
         sc[S_Q] = fscale if md[M_COMP] != 0.0 else dstar
     md, gold = restart(law, p, fric, c, md, y, K)
     if gold[EV_SEP] > 0.0:
-        st, c, md = on_event(EV_SEP, law, p, fric, c, md, y, evq, acc)
+        st, c, md = on_event(np.int64(EV_SEP), law, p, fric, c, md, y, evq, acc)
     return st, c, md, gold

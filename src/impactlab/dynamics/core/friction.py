@@ -11,6 +11,7 @@ from __future__ import annotations
 from numba import njit
 
 from impactlab.contact.kernels import P_ESTAR
+from impactlab.dynamics.core._jit import njit_no_refcount
 from impactlab.dynamics.core.layout import (
     C_A0,
     C_B0,
@@ -80,10 +81,11 @@ def friction_switch(
     return mode, q
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit_no_refcount
 def mindlin_trial_rate(law, p, md, delta, fn, ft, vn, v_slip, kt, gstar):
     """(dF_t/dt of the elastic trial, dF_n/dt) for the Mindlin slip -> stick test; gstar: G*
-    [Pa]."""
+    [Pa]. Called, not inlined: only a slipping Mindlin contact needs it, and its four
+    difference quotients would be compiled into every copy of the event functions."""
     ddelta = -vn
     dFn = dforce_ddelta(law, p, md, delta, fn) * ddelta
     if md[M_COMP] != 0.0:

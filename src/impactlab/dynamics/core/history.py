@@ -40,7 +40,7 @@ from impactlab.dynamics.core.layout import (
     S_Y,
 )
 from impactlab.dynamics.core.normal import geometry
-from impactlab.dynamics.core.rhs import energy, evaluate
+from impactlab.dynamics.core.rhs import energy, evaluate_cold
 from impactlab.dynamics.core.tuples import state_tuple
 
 
@@ -52,7 +52,7 @@ def record(hist, n, t, law, p, fric, c, md, y):
         new = np.empty((2 * hist.shape[0] + 16, NH))
         new[:n] = hist[:n]
         hist = new
-    delta, _a, _b, Fn, Ft, vn, vs, kt = evaluate(law, p, fric, c, md, y)
+    delta, _a, _b, Fn, Ft, vn, vs, kt = evaluate_cold(law, p, fric, c, md, y)
     _d, _a, _b, xs, _sl = geometry(c, y)
     row = hist[n]
     row[H_T] = t

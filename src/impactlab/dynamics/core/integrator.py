@@ -21,8 +21,8 @@ from numba import njit
 
 from impactlab._floatbits import significand_exponent
 from impactlab.dynamics.core._jit import njit_no_refcount
-from impactlab.dynamics.core.layout import NEV, NS
-from impactlab.dynamics.core.rhs import event_value, rhs, rhs_events
+from impactlab.dynamics.core.layout import NEV, NS, S_Q
+from impactlab.dynamics.core.rhs import derivative, evaluate, event_value, events_from
 from impactlab.dynamics.core.tuples import state_tuple
 
 # --- Dormand-Prince 5(4) tableau (Dormand & Prince 1980) and Shampine's dense output -------------
@@ -150,15 +150,6 @@ def _stage_point(y, K, h, stage, out):
             out[i] = y[i] + h * (acc + B6 * K[5, i])
 
 
-@njit(cache=True, inline="always", error_model="numpy")
-def _stage(law, p, fric, c, md, y, K, h, stage, work):
-    """Stage ``stage`` (1..5): its point into ``work``, its derivative into ``K[stage]``."""
-    _stage_point(y, K, h, stage, work)
-    r = rhs(law, p, fric, c, md, state_tuple(work))
-    for i in range(NS):
-        K[stage, i] = r[i]
-
-
 @njit_no_refcount
 def dp_step(law, p, fric, c, md, y, K, h, rtol, sc, ynew):
     """One Dormand-Prince step of size ``h`` from ``y``; ``K[0]`` holds the derivative at ``y``.
@@ -167,16 +158,18 @@ def dp_step(law, p, fric, c, md, y, K, h, rtol, sc, ynew):
     FSAL) and returns (scaled RMS error norm, event tuple at ``ynew``, evaluated quantities at
     ``ynew``). Error scale of component i: ``rtol (sc[i] + max(|y_i|, |ynew_i|))``.
     """
-    # the stages one by one (a constant stage number each: no branch on it is left)
-    _stage(law, p, fric, c, md, y, K, h, 1, ynew)
-    _stage(law, p, fric, c, md, y, K, h, 2, ynew)
-    _stage(law, p, fric, c, md, y, K, h, 3, ynew)
-    _stage(law, p, fric, c, md, y, K, h, 4, ynew)
-    _stage(law, p, fric, c, md, y, K, h, 5, ynew)
-    _stage_point(y, K, h, 6, ynew)
-    r, gnew, evq = rhs_events(law, p, fric, c, md, state_tuple(ynew))
-    for i in range(NS):
-        K[6, i] = r[i]
+    # the stages in a loop, so that the force evaluation is compiled once (written out per
+    # stage, it made this function the costliest of the engine to compile); stage 6 is the
+    # new point, whose evaluated quantities also give the events
+    for stage in range(1, 7):
+        _stage_point(y, K, h, stage, ynew)
+        ys = state_tuple(ynew)
+        evq = evaluate(law, p, fric, c, md, ys)
+        r = derivative(fric, c, md, ys, evq)
+        for i in range(NS):
+            K[stage, i] = r[i]
+    delta, _a, _b, Fn, Ft, vn, vs, kt = evq
+    gnew = events_from(law, p, fric, c, md, delta, Fn, Ft, vn, vs, kt, ynew[S_Q])
     err = 0.0
     for i in range(NS):
         ei = E1 * K[0, i] + E3 * K[2, i] + E4 * K[3, i] + E5 * K[4, i] + E6 * K[5, i]

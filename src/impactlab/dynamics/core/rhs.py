@@ -10,6 +10,7 @@ from __future__ import annotations
 from numba import njit
 
 from impactlab.contact.kernels import residual_depth
+from impactlab.dynamics.core._jit import njit_no_refcount
 from impactlab.dynamics.core.friction import (
     friction_event,
     tangential_force,
@@ -100,13 +101,6 @@ def events_from(law, p, fric, c, md, delta, Fn, Ft, vn, vs, kt, q):
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def events(law, p, fric, c, md, y):
-    """Event functions at state ``y`` (see ``events_from``)."""
-    delta, _a, _b, Fn, Ft, vn, vs, kt = evaluate(law, p, fric, c, md, y)
-    return events_from(law, p, fric, c, md, delta, Fn, Ft, vn, vs, kt, y[S_Q])
-
-
-@njit(cache=True, inline="always", error_model="numpy")
 def rhs_events(law, p, fric, c, md, y):
     """(derivative tuple, event tuple, evaluated quantities) at ``y`` with one force evaluation."""
     ev = evaluate(law, p, fric, c, md, y)
@@ -115,12 +109,27 @@ def rhs_events(law, p, fric, c, md, y):
     return der, events_from(law, p, fric, c, md, delta, Fn, Ft, vn, vs, kt, y[S_Q]), ev
 
 
+@njit_no_refcount
+def rhs_events_cold(law, p, fric, c, md, y):
+    """``rhs_events`` compiled once as a function of its own, for the callers off the step loop
+    (first touch, restarts, the ends of the contact): each inlined copy of the force
+    evaluation costs seconds of compilation; only the Dormand-Prince stages inline it."""
+    return rhs_events(law, p, fric, c, md, y)
+
+
+@njit_no_refcount
+def evaluate_cold(law, p, fric, c, md, y):
+    """``evaluate`` compiled once, for the callers off the step loop (see ``rhs_events_cold``)."""
+    return evaluate(law, p, fric, c, md, y)
+
+
 @njit(cache=True, error_model="numpy")
 def event_value(ev, law, p, fric, c, md, y):
     """Event function ``ev`` alone (as in ``events_from``): the kinematic events need no
     force evaluation."""
     if ev == EV_FRIC:
-        return events(law, p, fric, c, md, y)[EV_FRIC]
+        delta, _a, _b, Fn, Ft, vn, vs, kt = evaluate_cold(law, p, fric, c, md, y)
+        return friction_event(law, p, fric, c, md, delta, Fn, Ft, vn, vs, kt, y[S_Q])
     delta, a, _b, _xs, _sl = geometry(c, y)
     comp = md[M_COMP] != 0.0
     if ev == EV_VN:

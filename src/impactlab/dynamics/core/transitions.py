@@ -40,7 +40,7 @@ from impactlab.dynamics.core.layout import (
     NS,
     S_Q,
 )
-from impactlab.dynamics.core.rhs import rhs_events
+from impactlab.dynamics.core.rhs import rhs_events_cold
 from impactlab.dynamics.core.status import ST_NAN, ST_OK
 from impactlab.dynamics.core.tuples import mode_with, state_tuple
 
@@ -124,13 +124,13 @@ def restart(law, p, fric, c, md, y, K):
     (mode, event tuple). A restart can find the friction state already outside its domain (e.g.
     the friction cap drops with a jump of the loading curve): switch at once, at the same
     instant."""
-    r, gold, evq = rhs_events(law, p, fric, c, md, state_tuple(y))
+    r, gold, evq = rhs_events_cold(law, p, fric, c, md, state_tuple(y))
     for _ in range(3):
         if not (frictional(fric) and gold[EV_FRIC] > 0.0):
             break
         fm, y[S_Q] = switch_friction(fric, c, md, y, evq)
         md = mode_with(md, M_FM, fm)
-        r, gold, evq = rhs_events(law, p, fric, c, md, state_tuple(y))
+        r, gold, evq = rhs_events_cold(law, p, fric, c, md, state_tuple(y))
     for i in range(NS):
         K[0, i] = r[i]
     return md, gold

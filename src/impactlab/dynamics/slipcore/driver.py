@@ -135,7 +135,7 @@ def _switch(k, law, p, c, md, y, cm, sg, cp, W, acc, K, gold):
     acc[A_JUMP] = max(acc[A_JUMP], abs(ev[4] - ft_before))
     events(c, md, cm, sg, cp, W, ev, gold)
     if gold[EV_SEP] > 0.0:  # a switch located at the separation itself: that is the end
-        return _normal_event(EV_SEP, law, p, c, md, y, ev, acc)
+        return _normal_event(np.int64(EV_SEP), law, p, c, md, y, ev, acc)
     return _GO_ON, c, md
 
 
@@ -151,7 +151,7 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
     t, h, hmin = 0.0, 0.02 * tstar * rtol**0.2, 1e-14 * tstar
     ev = rhs(law, p, c, md, y, cm, sg, cp, W, K[0])
     events(c, md, cm, sg, cp, W, ev, gold)
-    nh = 0
+    nh = np.int64(0)  # not a literal: record() is compiled once, for any row count
     if rec:
         hist, nh = record(hist, nh, t, law, p, c, md, y, cm, sg, cp, W)
     nsteps, nevents, status = 0, 0, ST_NO_SEPARATION
@@ -252,7 +252,7 @@ def impact_slip(
     cm = np.zeros(EXTRA * n_cells, dtype=np.int64)
     sg = np.zeros(EXTRA * n_cells)
     # the first cell is born at first touch (a = 0)
-    birth(0, y, cm, sg, cp, mu, p[P_ESTAR], 0.0, vn0, out[O_VTIN], 0.0, 0.0)
+    birth(np.int64(0), y, cm, sg, cp, mu, p[P_ESTAR], 0.0, vn0, out[O_VTIN], 0.0, 0.0)
     e0 = 0.5 * c[C_M] * (vx0 * vx0 + vy0 * vy0) + 0.5 * c[C_I] * w0 * w0
     acc = np.zeros(NA)
     acc[A_EMIN] = e0

@@ -1,0 +1,153 @@
+"""Say so on stderr while impactlab compiles its engine (a first run, or after an update).
+
+numba compiles a function on its first call unless its disk cache holds it; it emits the event
+``numba:compile`` around every such compilation (never for a function loaded from the cache).
+``install`` registers a listener for it: when an impactlab function starts compiling and the
+compilation is still running after ``DELAY_S``, one line goes to stderr (what is compiled, why,
+about how long, where it is cached), and on a terminal a counter of the seconds and functions
+compiled so far follows on the same line until the compilation ends. Compilations within
+``DELAY_S`` (small helpers) print nothing. ``IMPACTLAB_QUIET_COMPILE=1`` silences it.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+import threading
+import time
+from typing import Any, TextIO
+
+#: Seconds a compilation runs before it is announced (short ones stay silent).
+DELAY_S = 1.0
+#: The compiled parts, by the module of the function being compiled: (name, about how long in
+#: CPU seconds on a 2-core machine, as measured by benchmarks/bench_compile.py).
+PARTS: tuple[tuple[str, str, int], ...] = (
+    ("impactlab.dynamics.slipcore", "the partial-slip impact engine", 20),
+    ("impactlab.dynamics.flexcore", "the flexible-rod drop engine", 30),
+    ("impactlab.dynamics.core.batch", "the parallel batch engine", 20),
+    ("impactlab.dynamics.core", "the impact engine", 30),
+    ("impactlab.contact", "the contact-law kernels", 5),
+)
+
+
+def describe(module: str) -> tuple[str, int]:
+    """(what is compiled, about how many seconds) for a function of ``module``."""
+    for prefix, name, seconds in PARTS:
+        if module.startswith(prefix):
+            return name, seconds
+    return "impactlab's compiled code", 10
+
+
+class _Notice:
+    """The state of one announced compilation (a timer thread prints and refreshes the line)."""
+
+    def __init__(self, module: str, stream: TextIO, cache_dir: str) -> None:
+        self.module = module
+        self.stream = stream
+        self.cache_dir = cache_dir
+        self.count = 0
+        self.started = time.monotonic()
+        self.shown = False
+        self.done = threading.Event()
+        self.thread = threading.Thread(target=self._run, name="impactlab-compile", daemon=True)
+        self.thread.start()
+
+    def _run(self) -> None:
+        if self.done.wait(DELAY_S):
+            return
+        what, seconds = describe(self.module)
+        self.shown = True
+        tty = _isatty(self.stream)
+        line = (
+            f"impactlab: compiling {what} (first run after installing or updating impactlab; "
+            f"about {seconds} s, once: cached in {self.cache_dir})"
+        )
+        _write(self.stream, line + ("" if tty else "\n"))
+        if not tty:
+            return
+        while not self.done.wait(0.5):
+            elapsed = time.monotonic() - self.started
+            _write(self.stream, f"\r{line} ... {elapsed:.0f} s, {self.count} functions")
+
+    def finish(self) -> None:
+        self.done.set()
+        self.thread.join()
+        if self.shown and _isatty(self.stream):
+            elapsed = time.monotonic() - self.started
+            _write(self.stream, f" ... done in {elapsed:.0f} s\n")
+
+
+def _isatty(stream: TextIO) -> bool:
+    try:
+        return stream.isatty()
+    except (AttributeError, ValueError):
+        return False
+
+
+def _write(stream: TextIO, text: str) -> None:
+    try:
+        stream.write(text)
+        stream.flush()
+    except (OSError, ValueError):  # a closed or broken stream: the notice is not worth a crash
+        pass
+
+
+class _Listener:
+    """Counts nested compilations; the outermost impactlab one owns the notice."""
+
+    def __init__(self) -> None:
+        self.depth = 0
+        self.notice: _Notice | None = None
+        self.lock = threading.Lock()
+
+    def on_start(self, event: Any) -> None:
+        with self.lock:
+            self.depth += 1
+            if self.notice is not None:
+                self.notice.count += 1
+                return
+            if self.depth != 1 or os.environ.get("IMPACTLAB_QUIET_COMPILE", "") not in ("", "0"):
+                return
+            module = _module_of(event)
+            if module.startswith("impactlab."):
+                cache = os.environ.get("NUMBA_CACHE_DIR", "numba's default folder")
+                self.notice = _Notice(module, sys.stderr, cache)
+
+    def on_end(self, event: Any) -> None:
+        with self.lock:
+            self.depth = max(self.depth - 1, 0)
+            if self.depth == 0 and self.notice is not None:
+                notice, self.notice = self.notice, None
+            else:
+                return
+        notice.finish()
+
+
+def _module_of(event: Any) -> str:
+    try:
+        return str(event.data["dispatcher"].py_func.__module__)
+    except (AttributeError, KeyError, TypeError):
+        return ""
+
+
+_INSTALLED: list[Any] = []
+
+
+def install() -> None:
+    """Register the listener with numba (once per process)."""
+    if _INSTALLED:
+        return
+    from numba.core import event
+
+    listener = _Listener()
+
+    class _NumbaListener(event.Listener):  # type: ignore[misc]
+        def on_start(self, ev: Any) -> None:
+            listener.on_start(ev)
+
+        def on_end(self, ev: Any) -> None:
+            listener.on_end(ev)
+
+    handle = _NumbaListener()
+    event.register("numba:compile", handle)
+    _INSTALLED.append(handle)

@@ -1,0 +1,113 @@
+"""Compile (or load from the disk cache) every compiled part of impactlab ahead of its first use.
+
+``warm()`` runs one small case through each part: the rigid impact with each friction model,
+the parallel batch, the partial-slip impact and the flexible-rod drop. The first run after
+installing or updating impactlab compiles them (announced on stderr, see
+``impactlab._compile_notice``); later runs load them from the cache in a second or two.
+``impactlab warm`` and ``python3 tasks.py warm`` call it.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from impactlab._compiled_cache import compiled_cache_dir
+
+
+@dataclass(frozen=True)
+class WarmPart:
+    """One compiled part: its name and the CPU and wall seconds its first call took here."""
+
+    name: str
+    cpu_s: float
+    wall_s: float
+
+
+def _rigid() -> None:
+    from impactlab.bodies import PAPER_ROD
+    from impactlab.dynamics.simulate import simulate
+
+    for fr in ("impulse_ratio", "coulomb", "mindlin"):
+        for history in (False, True):
+            simulate(
+                PAPER_ROD,
+                law="ghaednia",
+                friction=fr,
+                mu=0.2,
+                angle=math.radians(20),
+                velocity=(0.0, -1.41),
+                history=history,
+            )
+
+
+def _batch() -> None:
+    from impactlab.bodies import PAPER_ROD
+    from impactlab.dynamics.simulate import simulate_batch
+
+    simulate_batch(
+        PAPER_ROD,
+        law="ghaednia",
+        friction="coulomb",
+        mu=0.2,
+        angle=math.radians(20),
+        vy=[-1.0, -1.41],
+    )
+
+
+def _partial_slip() -> None:
+    from impactlab.bodies import PAPER_ROD
+    from impactlab.dynamics.simulate import simulate
+
+    for history in (False, True):
+        simulate(
+            PAPER_ROD,
+            law="ghaednia",
+            friction="partial_slip",
+            mu=0.2,
+            angle=math.radians(20),
+            velocity=(0.0, -1.41),
+            history=history,
+        )
+
+
+def _flexible() -> None:
+    from impactlab.bodies import FlexibleRod
+    from impactlab.dynamics.simulate import simulate
+
+    simulate(
+        FlexibleRod.paper(),
+        law="ghaednia",
+        friction="coulomb",
+        mu=0.2,
+        angle=math.radians(20),
+        velocity=(0.0, -1.41),
+    )
+
+
+#: The parts in the order ``warm`` compiles them.
+PARTS: dict[str, Callable[[], None]] = {
+    "rigid impact": _rigid,
+    "batch": _batch,
+    "partial slip": _partial_slip,
+    "flexible rod": _flexible,
+}
+
+
+def warm(parts: tuple[str, ...] | None = None) -> list[WarmPart]:
+    """Compile or load ``parts`` (names of ``PARTS``; default all); returns their timings."""
+    names = tuple(PARTS) if parts is None else parts
+    unknown = [n for n in names if n not in PARTS]
+    if unknown:
+        raise ValueError(f"unknown engine part {unknown[0]!r}; choose from {', '.join(PARTS)}")
+    done = []
+    for name in names:
+        c0, w0 = time.process_time(), time.perf_counter()
+        PARTS[name]()
+        done.append(WarmPart(name, time.process_time() - c0, time.perf_counter() - w0))
+    return done
+
+
+__all__ = ["PARTS", "WarmPart", "compiled_cache_dir", "warm"]

@@ -1,0 +1,165 @@
+"""Where the compiled engine is cached, the notice while it compiles, and ``impactlab warm``."""
+
+from __future__ import annotations
+
+import io
+import json
+import os
+import subprocess
+import sys
+import time
+from pathlib import Path
+from types import SimpleNamespace
+
+import pytest
+
+from impactlab import _compile_notice
+from impactlab._compiled_cache import compiled_cache_dir, default_cache_root
+
+
+def _env_without(monkeypatch: pytest.MonkeyPatch, *names: str) -> None:
+    for name in names:
+        monkeypatch.delenv(name, raising=False)
+
+
+def test_numba_cache_dir_wins(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    monkeypatch.setenv("NUMBA_CACHE_DIR", str(tmp_path / "n"))
+    monkeypatch.setenv("IMPACTLAB_CACHE_DIR", str(tmp_path / "i"))
+    assert compiled_cache_dir() == tmp_path / "n"
+
+
+def test_impactlab_cache_dir_next(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    _env_without(monkeypatch, "NUMBA_CACHE_DIR")
+    monkeypatch.setenv("IMPACTLAB_CACHE_DIR", str(tmp_path / "i"))
+    assert compiled_cache_dir() == tmp_path / "i" / "numba"
+    assert default_cache_root() == tmp_path / "i"
+
+
+def test_xdg_then_home(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    _env_without(monkeypatch, "NUMBA_CACHE_DIR", "IMPACTLAB_CACHE_DIR")
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "xdg"))
+    assert compiled_cache_dir() == tmp_path / "xdg" / "impactlab" / "numba"
+    monkeypatch.delenv("XDG_CACHE_HOME")
+    monkeypatch.setenv("HOME", str(tmp_path / "home"))
+    assert compiled_cache_dir() == tmp_path / "home" / ".cache" / "impactlab" / "numba"
+
+
+def test_every_entry_point_shares_one_folder(tmp_path: Path) -> None:
+    """A fresh interpreter without NUMBA_CACHE_DIR: import impactlab points numba (its live
+    configuration, the environment its children inherit, and the engine's cache) at the
+    default folder."""
+    env = {
+        k: v for k, v in os.environ.items() if k not in ("NUMBA_CACHE_DIR", "IMPACTLAB_CACHE_DIR")
+    }
+    env["XDG_CACHE_HOME"] = str(tmp_path)
+    code = (
+        "import os, numba, impactlab\n"
+        "from impactlab.dynamics.core.driver import impact\n"
+        "print(numba.config.CACHE_DIR)\n"
+        "print(os.environ['NUMBA_CACHE_DIR'])\n"
+        "print(impact._cache.cache_path)\n"
+    )
+    out = subprocess.run(
+        [sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True
+    ).stdout.split("\n")
+    want = str(tmp_path / "impactlab" / "numba")
+    assert out[0] == want
+    assert out[1] == want
+    assert out[2].startswith(want)
+
+
+def _event(module: str) -> SimpleNamespace:
+    return SimpleNamespace(
+        data={"dispatcher": SimpleNamespace(py_func=SimpleNamespace(__module__=module))}
+    )
+
+
+class _Stream(io.StringIO):
+    def isatty(self) -> bool:
+        return False
+
+
+def _stderr(monkeypatch: pytest.MonkeyPatch) -> _Stream:
+    """A non-terminal stderr for this test (set in the test's body: pytest's own capture
+    replaces sys.stderr between a fixture's setup and the test's call)."""
+    s = _Stream()
+    monkeypatch.setattr(sys, "stderr", s)
+    monkeypatch.delenv("IMPACTLAB_QUIET_COMPILE", raising=False)
+    return s
+
+
+def _wait_for(predicate, limit_s: float = 60.0) -> bool:  # type: ignore[no-untyped-def]
+    end = time.monotonic() + limit_s
+    while time.monotonic() < end:
+        if predicate():
+            return True
+        time.sleep(0.01)
+    return False
+
+
+def test_a_long_compile_is_announced_once(monkeypatch: pytest.MonkeyPatch) -> None:
+    stream = _stderr(monkeypatch)
+    monkeypatch.setattr(_compile_notice, "DELAY_S", 0.0)
+    listener = _compile_notice._Listener()
+    listener.on_start(_event("impactlab.dynamics.core.driver"))
+    listener.on_start(_event("impactlab.dynamics.core.rhs"))  # nested: counted, not announced
+    assert _wait_for(lambda: stream.getvalue().endswith("\n"))
+    listener.on_end(None)
+    listener.on_end(None)
+    lines = stream.getvalue().splitlines()
+    assert len(lines) == 1
+    assert lines[0].startswith("impactlab: compiling the impact engine (first run")
+    assert "about 30 s" in lines[0]
+    assert "cached in" in lines[0]
+
+
+def test_short_or_foreign_compiles_stay_silent(monkeypatch: pytest.MonkeyPatch) -> None:
+    stream = _stderr(monkeypatch)
+    monkeypatch.setattr(_compile_notice, "DELAY_S", 3600.0)
+    listener = _compile_notice._Listener()
+    listener.on_start(_event("impactlab.contact.kernels"))  # ends long before the delay
+    listener.on_end(None)
+    monkeypatch.setattr(_compile_notice, "DELAY_S", 0.0)
+    listener.on_start(_event("mypackage.kernels"))  # not impactlab's
+    listener.on_end(None)
+    monkeypatch.setenv("IMPACTLAB_QUIET_COMPILE", "1")
+    listener.on_start(_event("impactlab.dynamics.core.driver"))
+    listener.on_end(None)
+    assert stream.getvalue() == ""
+    assert listener.depth == 0
+
+
+@pytest.mark.parametrize(
+    ("module", "what"),
+    [
+        ("impactlab.dynamics.slipcore.driver", "partial-slip"),
+        ("impactlab.dynamics.flexcore.driver", "flexible-rod"),
+        ("impactlab.dynamics.core.batch", "batch"),
+        ("impactlab.dynamics.core.driver", "impact engine"),
+        ("impactlab.contact.kernels", "contact-law"),
+    ],
+)
+def test_each_part_is_named(module: str, what: str) -> None:
+    name, seconds = _compile_notice.describe(module)
+    assert what in name
+    assert seconds > 0
+
+
+def test_warm_command_reports_the_cache() -> None:
+    from typer.testing import CliRunner
+
+    from impactlab.cli import app
+
+    res = CliRunner().invoke(app, ["warm", "--part", "rigid impact", "--json"])
+    assert res.exit_code == 0, res.output
+    data = json.loads(res.stdout)
+    assert data["cache_dir"] == str(compiled_cache_dir())
+    assert [p["name"] for p in data["parts"]] == ["rigid impact"]
+    assert data["parts"][0]["cpu_time"]["unit"] == "s"
+
+
+def test_warm_refuses_an_unknown_part() -> None:
+    from impactlab.dynamics.warm import warm
+
+    with pytest.raises(ValueError, match="unknown engine part 'rigid'; choose from rigid impact"):
+        warm(("rigid",))
