@@ -144,11 +144,6 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--repeat", type=int, default=3, help="repeats of the subset measurements")
     args = ap.parse_args(argv)
 
-    from impactlab.sweep import engine_available
-
-    if not engine_available():
-        print("impactlab.dynamics.batch is not available: nothing to benchmark", file=sys.stderr)
-        return 1
     cores = len(os.sched_getaffinity(0))
     machine = _machine()
     workdir = args.workdir or Path(tempfile.mkdtemp(prefix="bench-sweep-"))

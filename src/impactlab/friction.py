@@ -147,15 +147,6 @@ FRICTION_IDS: dict[str, int] = {
 in ``simulate`` only (``impactlab.dynamics.slipcore``)."""
 
 
-def batch_friction_id(name: str | FrictionKind) -> int:
-    """Compiled id of the batch-engine friction model ``name``; ValueError naming the batch
-    models for ``partial_slip`` and for unknown names."""
-    fid = get_friction(name).friction_id
-    if fid not in FRICTION_IDS.values():
-        raise ValueError(batch_friction_error(name))
-    return fid
-
-
 def batch_friction_error(name: object) -> str:
     """The message for a friction model the batch engine does not run."""
     return (
@@ -180,12 +171,6 @@ def get_friction(name: str | FrictionKind) -> FrictionModel:
         ) from None
 
 
-def friction_id(name: str | FrictionKind) -> int:
-    """Compiled id of the friction model ``name`` (ValueError for unknown names; ``PARTIAL_SLIP``
-    for ``partial_slip``, which the batch engine does not run)."""
-    return get_friction(name).friction_id
-
-
 __all__ = [
     "COULOMB",
     "DEFAULT_MU",
@@ -198,8 +183,6 @@ __all__ = [
     "FrictionKind",
     "FrictionModel",
     "batch_friction_error",
-    "batch_friction_id",
-    "friction_id",
     "friction_names",
     "get_friction",
 ]

@@ -59,9 +59,3 @@ def table_force(p: np.ndarray, nparam: int, delta: float) -> float:
     q2 = p[row + 4] + p[row + 5] * t
     q3 = p[row + 6] + p[row + 7] * t
     return (q0 + q1 * t2) + (q2 + q3 * t2) * (t2 * t2)
-
-
-@njit(cache=True, error_model="numpy")
-def node_interference(delta_lo: float, k: int, j: int, t: float) -> float:
-    """The interference [m] at position t in [-1, 1] of sub-interval j of octave k."""
-    return delta_lo * 2.0**k * (1.0 + (j + 0.5 * (t + 1.0)) / SUB)

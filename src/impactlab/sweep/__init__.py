@@ -21,7 +21,6 @@ from impactlab.sweep.engine import (
     ENGINE,
     EngineEvaluator,
     Evaluator,
-    engine_available,
     numba_cache_stats,
 )
 from impactlab.sweep.inputs import INPUTS, OUTPUT_ALIASES, OUTPUTS, InputSpec
@@ -78,7 +77,6 @@ __all__ = [
     "UncertaintySpec",
     "Uniform",
     "compute_chunk",
-    "engine_available",
     "export_netcdf",
     "flag_counts",
     "format_report",

@@ -71,12 +71,6 @@ class Evaluator(Protocol):
     ) -> tuple[dict[str, np.ndarray], np.ndarray]: ...
 
 
-def engine_available() -> bool:
-    """True: the compiled engine is a required part of the package (an install without it
-    fails at import)."""
-    return True
-
-
 # -- numba cache statistics ----------------------------------------------------------------------
 
 
@@ -251,7 +245,6 @@ __all__ = [
     "Evaluator",
     "Statics",
     "build_models",
-    "engine_available",
     "evaluate",
     "numba_cache_stats",
 ]
