@@ -1,0 +1,104 @@
+"""The product speaks of the product: no development history (numbered sessions, waves, issues,
+contracts) in the code, the tests or the user documentation. That history belongs to
+CHANGELOG.md, git and the developer pages (``docs/dev/``, outside the site's navigation); a
+comment or a page states the fact or the reason instead, and cites a page by its subject."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+
+#: the folders and files read: the package, the tests, the user docs, the examples and notebooks
+SCANNED = ("src", "tests", "docs", "examples", "notebooks", "README.md")
+#: left out: the developer pages and the changelog page (it includes CHANGELOG.md)
+EXCLUDED = ("docs/dev/", "docs/changelog.md")
+SUFFIXES = {".py", ".md", ".toml", ".yml", ".yaml", ".txt", ".cfg", ".ini", ".rst"}
+
+# built from pieces, so that this file does not match its own pattern
+_SESSION, _WAVE, _ISSUE, _CONTRACT = "sess" + "ion", "wa" + "ve", "iss" + "ue", "con" + "tract"
+HISTORY = re.compile(
+    rf"\b({_SESSION}|{_WAVE}) ?[0-9]+|\b{_ISSUE} #?[0-9]+\b|{_WAVE}4|{_CONTRACT} C[12]",
+    re.IGNORECASE,
+)
+
+#: files other work is still changing at the time of writing; words in them make the test an
+#: expected failure, words anywhere else fail it. Empty this list as they are cleaned.
+PENDING = frozenset(
+    {
+        "docs/flexible.md",
+        "src/impactlab/dynamics/core/batch.py",
+        "src/impactlab/dynamics/core/driver.py",
+        "src/impactlab/dynamics/core/integrator.py",
+        "src/impactlab/dynamics/drop.py",
+        "src/impactlab/dynamics/flex_simulate.py",
+        "tests/flexible/test_drop_friction.py",
+        "tests/flexible/test_simulate_flexible.py",
+    }
+)
+
+
+def _files() -> list[Path]:
+    out: list[Path] = []
+    for name in SCANNED:
+        top = ROOT / name
+        paths = [top] if top.is_file() else sorted(top.rglob("*"))
+        for p in paths:
+            rel = p.relative_to(ROOT).as_posix()
+            if (
+                p.is_file()
+                and p.suffix in SUFFIXES
+                and "__pycache__" not in p.parts
+                and not rel.startswith(EXCLUDED)
+                and p.resolve() != Path(__file__).resolve()
+            ):
+                out.append(p)
+    return out
+
+
+def _hits() -> list[tuple[str, int, str]]:
+    hits = []
+    for p in _files():
+        text = p.read_text(encoding="utf-8", errors="replace")
+        for no, line in enumerate(text.splitlines(), 1):
+            m = HISTORY.search(line)
+            if m:
+                hits.append((p.relative_to(ROOT).as_posix(), no, m.group(0)))
+    return hits
+
+
+def test_pattern_finds_history_words() -> None:
+    for text in (
+        f"{_SESSION.title()} 8",
+        f"({_ISSUE} 12)",
+        f"{_ISSUE} #14",
+        f"{_WAVE} 4",
+        f"test_{_WAVE}4_str",
+        f"{_CONTRACT} C2",
+    ):
+        assert HISTORY.search(text), text
+    for text in ("the session's store", "an issue of the journal", "wave speed c0 = 5 km/s"):
+        assert not HISTORY.search(text), text
+
+
+def test_scan_covers_the_product() -> None:
+    files = {p.relative_to(ROOT).as_posix() for p in _files()}
+    assert "src/impactlab/__init__.py" in files
+    assert "docs/engine/benchmarks.md" in files
+    assert "README.md" in files
+    assert not any(f.startswith(EXCLUDED) for f in files)
+    assert "tests/core/test_product_words.py" not in files
+
+
+def test_no_history_words_in_code_tests_or_user_docs() -> None:
+    hits = _hits()
+    listed = "\n".join(f"{f}:{no}: {word!r}" for f, no, word in hits)
+    if hits and all(f in PENDING for f, _, _ in hits):
+        pytest.xfail(f"history words left in files being changed elsewhere:\n{listed}")
+    assert not hits, (
+        "development history in the product (state the fact; history goes to CHANGELOG.md or "
+        f"docs/dev/):\n{listed}"
+    )
