@@ -30,9 +30,6 @@ HISTORY = re.compile(
 PENDING = frozenset(
     {
         "docs/flexible.md",
-        "src/impactlab/dynamics/core/batch.py",
-        "src/impactlab/dynamics/core/driver.py",
-        "src/impactlab/dynamics/core/integrator.py",
         "src/impactlab/dynamics/drop.py",
         "src/impactlab/dynamics/flex_simulate.py",
         "tests/flexible/test_drop_friction.py",
