@@ -6,6 +6,8 @@ Examples::
     impactlab laws --json               # the same, machine-readable
     impactlab laws brake                # one law, with its numbers for the paper's pair
     impactlab laws ghaednia --radius "5 mm" --body aisi-1010 --flat aisi-1010 --json
+    impactlab laws --accuracy           # every law against the shipped FE curves
+    impactlab laws jackson-green --accuracy --json
 """
 
 from __future__ import annotations
@@ -107,12 +109,21 @@ def laws(
         "aisi-1010", "--flat", help="Material preset of the flat (see 'impactlab materials')."
     ),
     as_json: bool = typer.Option(False, "--json", help="Machine-readable output."),
+    accuracy: bool = typer.Option(
+        False,
+        "--accuracy",
+        help="Measured accuracy against the shipped FE curves (impactlab.fe): force and "
+        "delta_r/delta_max errors, verified ranges, a recommendation per material pair.",
+    ),
 ) -> None:
     """List the contact laws (title, reference/DOI, validity, parameters) or show one.
 
     Example: impactlab laws jackson-green --radius "8.8 mm" --json
     """
     try:
+        if accuracy:
+            _accuracy(name, as_json)
+            return
         _laws(name, radius, body, flat, as_json)
     except ValueError as exc:  # one line, no traceback, whichever entry point runs us
         print(f"error: {exc}", file=sys.stderr)
@@ -140,6 +151,37 @@ def _citation(ref: Any) -> str:
     if isinstance(ref, dict) and "citation" in ref:
         return str(ref["citation"]) + (f" (doi:{ref['doi']})" if ref.get("doi") else "")
     return str(ref)
+
+
+def _accuracy(name: str | None, as_json: bool) -> None:
+    """``impactlab laws [NAME] --accuracy``: docs/laws/accuracy.md."""
+    from impactlab.fe import accuracy as acc
+
+    only = str(get_law(name).name) if name else None
+    results = acc.accuracy()
+    if as_json:
+        emit(acc.report(results, only), as_json=True, units=acc.UNITS)
+        return
+    if not results:
+        raise ValueError("no FE reference curves are shipped (impactlab/fe/data/)")
+    for res in results:
+        header, rows = acc.table_rows(res, only)
+        c = res.case
+        title = (
+            f"{c.description}: E*/S_y = {c.e_star_over_sy:.0f}, delta_c = {c.delta_c * 1e6:.4g} um"
+            "\nforce error / delta_r/delta_max error, at delta_max/delta_c ="
+        )
+        table = Table(title=title, show_header=True, header_style="bold")
+        for col in header:
+            table.add_column(col, overflow="fold")
+        for row in rows:
+            table.add_row(*row)
+        console.print(table)
+        console.print(f"recommendation: {res.recommendation()}\n")
+    console.print(
+        f"verified range: within {100 * acc.FORCE_TOLERANCE:g} % in force and "
+        f"{acc.RESIDUAL_TOLERANCE:g} in delta_r/delta_max of FE (docs/laws/accuracy.md)."
+    )
 
 
 def _laws(name: str | None, radius: str, body: str, flat: str, as_json: bool) -> None:

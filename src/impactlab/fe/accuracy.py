@@ -1,0 +1,553 @@
+"""Measured accuracy of every contact law against the shipped FE reference curves.
+
+For each registered law (``impactlab.contact.law_names``) and each shipped case
+(``impactlab.fe.curves``), the law is built for the case's contact pair and radius exactly as a
+simulation builds it (``get_law(name).build(pair, radius)``, default parameters) and compared
+with the FE results:
+
+- **loading force**: the relative error ``F_law(delta) / F_FE(delta) - 1`` at every point of the
+  FE loading curve from ``LOWEST_RATIO`` delta_c on (``ContactModel.force``);
+- **permanent depth**: the error of delta_r / delta_max, ``law - FE``, at every FE maximum
+  (``ContactModel.unload(delta_max).delta_r``).
+
+Interferences are given as delta / delta_c, delta_c the pair's Jackson-Green first-yield
+interference (the FE problem's). The **verified range** of a law for a case is the largest
+delta / delta_c up to which both errors stay within :data:`FORCE_TOLERANCE` and
+:data:`RESIDUAL_TOLERANCE`: the last checked point before the first one outside, for the
+force and for delta_r / delta_max separately, the smaller of the two
+(:func:`verified_range`). A law that stays inside up to the end of the data is verified "to the
+end of the data", which is not a statement about larger interferences.
+
+``python -m impactlab.fe.accuracy [--json] [--markdown] [--figures DIR]`` prints the tables or
+writes the figures (docs/laws/accuracy.md).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from impactlab.contact import get_law, law_names
+from impactlab.fe.curves import ReferenceCase, load_cases
+
+#: Largest relative error of the loading force inside the verified range.
+FORCE_TOLERANCE = 0.10
+#: Largest absolute error of delta_r / delta_max inside the verified range.
+RESIDUAL_TOLERANCE = 0.05
+#: The force is compared from this delta / delta_c on (below it the FE curve starts).
+LOWEST_RATIO = 0.1
+#: SI units of the numbers in :func:`report` (for ``impactlab._json.to_json``).
+UNITS: dict[str, str] = {
+    "radius": "m",
+    "delta_c": "m",
+    **dict.fromkeys(
+        (
+            "e_star_over_sy",
+            "verified_delta_ratio",
+            "first_failure_delta_ratio",
+            "law_ref_over_delta_c",
+            "score",
+            "force_verified_delta_ratio",
+            "residual_verified_delta_ratio",
+            "rms_force_error",
+            "rms_residual_ratio_error",
+            "delta_ratio",
+            "force_error",
+            "residual_ratio_fe",
+            "residual_ratio_law",
+            "residual_ratio_error",
+            "force_relative",
+            "residual_ratio_absolute",
+        ),
+        "1",
+    ),
+}
+
+
+@dataclass(frozen=True)
+class VerifiedRange:
+    """Where a law stays within the tolerances of FE (ratios delta / delta_c).
+
+    upper: the largest delta / delta_c verified (0: not even the first checked point);
+    limited_by: ``"force"``, ``"delta_r"`` (the check that failed first, by ratio) or
+    ``"end of data"`` (neither failed); first_failure: delta / delta_c of the first checked
+    point outside the tolerance of the limiting check (nan at the end of the data);
+    force_upper, residual_upper: the range each check alone verifies; force_failure,
+    residual_failure: where each check first fails (nan: it never does).
+    """
+
+    upper: float
+    limited_by: str
+    first_failure: float
+    force_upper: float = math.nan
+    residual_upper: float = math.nan
+    force_failure: float = math.nan
+    residual_failure: float = math.nan
+
+    @property
+    def end_of_data(self) -> bool:
+        """True when the law stayed within the tolerances at every checked point."""
+        return self.limited_by == "end of data"
+
+    @property
+    def text(self) -> str:
+        """``<= 30 delta_c (delta_r fails at 100)``, ``>= 1000 delta_c (end of data)``."""
+        if self.end_of_data:
+            return f">= {self.upper:.3g} delta_c (end of data)"
+        if self.upper <= 0.0:
+            return f"none ({self.limited_by} fails at {self.first_failure:.3g})"
+        return f"<= {self.upper:.3g} delta_c ({self.limited_by} fails at {self.first_failure:.3g})"
+
+
+def _last_pass(ratio: np.ndarray, ok: np.ndarray) -> tuple[float, float]:
+    """(last ratio before the first failure or the last ratio, ratio of the first failure or
+    nan); ``ratio`` sorted increasing."""
+    if ratio.size == 0:
+        return 0.0, math.nan
+    bad = np.flatnonzero(~ok)
+    if bad.size == 0:
+        return float(ratio[-1]), math.nan
+    i = int(bad[0])
+    return (float(ratio[i - 1]) if i > 0 else 0.0), float(ratio[i])
+
+
+def verified_range(
+    force_ratio: Any,
+    force_error: Any,
+    residual_ratio: Any,
+    residual_error: Any,
+    *,
+    force_tolerance: float = FORCE_TOLERANCE,
+    residual_tolerance: float = RESIDUAL_TOLERANCE,
+) -> VerifiedRange:
+    """The verified range from the errors at checked points (each check's ratios in any order).
+
+    force_error: relative errors of the loading force at ``force_ratio`` (delta / delta_c);
+    residual_error: errors of delta_r / delta_max at ``residual_ratio``. A nan error (the law
+    cannot be evaluated there) counts as outside. Each check is verified up to its last point
+    before its first point outside the tolerance; the range is the smaller of the two, limited
+    by the check that gives it (the force on a tie).
+    """
+    out = []
+    for name, r, e, tol in (
+        ("force", force_ratio, force_error, force_tolerance),
+        ("delta_r", residual_ratio, residual_error, residual_tolerance),
+    ):
+        r_a = np.asarray(r, dtype=np.float64).ravel()
+        e_a = np.asarray(e, dtype=np.float64).ravel()
+        if r_a.shape != e_a.shape:
+            raise ValueError(f"{name}: {r_a.size} ratios but {e_a.size} errors")
+        order = np.argsort(r_a, kind="stable")
+        r_a, e_a = r_a[order], e_a[order]
+        ok = np.isfinite(e_a) & (np.abs(e_a) <= tol)
+        out.append((name, *_last_pass(r_a, ok)))
+    (nf, uf, ff), (nr, ur, fr) = out
+    name, u, f = (nf, uf, ff) if uf < ur or (uf == ur and not math.isnan(ff)) else (nr, ur, fr)
+    return VerifiedRange(u, "end of data" if math.isnan(f) else name, f, uf, ur, ff, fr)
+
+
+@dataclass(frozen=True)
+class LawAccuracy:
+    """One law against one FE case (ratios are delta / delta_c of the case).
+
+    force_ratio, force_fe, force_error: the FE loading points checked (delta / delta_c and
+    F [N]) and the law's relative force error there (nan beyond the law's validity limit);
+    maxima_ratio: delta_max / delta_c of the converged FE runs; residual_fe, residual_law:
+    delta_r / delta_max of FE and of the law there; verified: the verified range;
+    law_ref_over_delta_c: the law's own reference interference (its critical interference,
+    ``ContactModel.critical_interference``, what ``contact.ranges`` divides by) over the
+    case's delta_c; message: why the law could not be built for the pair ("" if it could).
+    """
+
+    law: str
+    case: str
+    e_star_over_sy: float
+    force_ratio: np.ndarray
+    force_fe: np.ndarray
+    force_error: np.ndarray
+    maxima_ratio: np.ndarray
+    residual_fe: np.ndarray
+    residual_law: np.ndarray
+    verified: VerifiedRange
+    law_ref_over_delta_c: float
+    message: str = ""
+
+    @property
+    def residual_error(self) -> np.ndarray:
+        """delta_r / delta_max of the law less FE's, at ``maxima_ratio``."""
+        return np.asarray(self.residual_law - self.residual_fe)
+
+    def force_error_at(self, ratio: float) -> float:
+        """Relative force error at delta / delta_c = ``ratio`` (interpolated in log delta;
+        nan outside the checked points)."""
+        r, e = self.force_ratio, self.force_error
+        # the stored curves carry 7 significant digits: the maxima match to 1e-6
+        if r.size == 0 or not r[0] * (1 - 1e-6) <= ratio <= r[-1] * (1 + 1e-6):
+            return math.nan
+        return float(np.interp(math.log(ratio), np.log(r), e))
+
+    def residual_error_at(self, ratio: float) -> float:
+        """delta_r / delta_max error at the FE maximum ``ratio`` (nan if there is none)."""
+        hit = np.flatnonzero(np.isclose(self.maxima_ratio, ratio, rtol=1e-6))
+        return float(self.residual_error[hit[0]]) if hit.size else math.nan
+
+    def rms_force_error(self) -> float:
+        """RMS of the relative force error over the checked points (inf if any is nan)."""
+        e = self.force_error
+        return float(np.sqrt(np.mean(e**2))) if e.size and np.all(np.isfinite(e)) else math.inf
+
+    def rms_residual_error(self) -> float:
+        """RMS of the delta_r / delta_max error over the maxima (inf if any is nan)."""
+        e = self.residual_error
+        return float(np.sqrt(np.mean(e**2))) if e.size and np.all(np.isfinite(e)) else math.inf
+
+    def score(self) -> float:
+        """Closeness to FE over all checked points: the mean of the RMS force error over
+        FORCE_TOLERANCE and the RMS delta_r / delta_max error over RESIDUAL_TOLERANCE (inf
+        if the law could not be evaluated everywhere)."""
+        return 0.5 * (
+            self.rms_force_error() / FORCE_TOLERANCE
+            + self.rms_residual_error() / RESIDUAL_TOLERANCE
+        )
+
+    def describe(self) -> dict[str, Any]:
+        """Plain data (``impactlab laws --accuracy --json``; SI, units in :data:`UNITS`)."""
+        v = self.verified
+        m = self.maxima_ratio
+        return {
+            "law": self.law,
+            "case": self.case,
+            "e_star_over_sy": self.e_star_over_sy,
+            "verified_delta_ratio": v.upper,
+            "verified_to_end_of_data": v.end_of_data,
+            "limited_by": v.limited_by,
+            "first_failure_delta_ratio": v.first_failure,
+            "verified": v.text,
+            "force_verified_delta_ratio": v.force_upper,
+            "residual_verified_delta_ratio": v.residual_upper,
+            "rms_force_error": self.rms_force_error(),
+            "rms_residual_ratio_error": self.rms_residual_error(),
+            "law_ref_over_delta_c": self.law_ref_over_delta_c,
+            "score": self.score(),
+            "maxima": {
+                "delta_ratio": [float(r) for r in m],
+                "force_error": [self.force_error_at(float(r)) for r in m],
+                "residual_ratio_fe": [float(x) for x in self.residual_fe],
+                "residual_ratio_law": [float(x) for x in self.residual_law],
+                "residual_ratio_error": [float(x) for x in self.residual_error],
+            },
+            "message": self.message,
+        }
+
+
+def _law_values(model: Any, delta: np.ndarray) -> np.ndarray:
+    """The law's loading force at ``delta`` [m], nan beyond its validity limit."""
+    inside = delta <= model.max_interference
+    out = np.full(delta.shape, np.nan)
+    if inside.any():
+        out[inside] = model.force(delta[inside])
+    return out
+
+
+def law_accuracy(law: str, case: ReferenceCase) -> LawAccuracy:
+    """The accuracy of ``law`` (default parameters) against the FE ``case``."""
+    dc = case.delta_c
+    d, f = case.loading_curve()
+    keep = (d >= LOWEST_RATIO * dc) & (f > 0.0)
+    d, f = np.asarray(d[keep]), np.asarray(f[keep])
+    runs = [r for r in case.runs if r.converged and math.isfinite(r.residual_depth)]
+    maxima = np.array([r.delta_max for r in runs])
+    fe_res = np.array([r.residual_ratio for r in runs])
+    try:
+        model = get_law(law).build(case.pair, case.radius)
+    except ValueError as exc:
+        nan_f, nan_r = np.full(d.shape, np.nan), np.full(maxima.shape, np.nan)
+        v = verified_range(d / dc, nan_f, maxima / dc, nan_r)
+        return LawAccuracy(
+            law,
+            case.name,
+            case.e_star_over_sy,
+            d / dc,
+            f,
+            nan_f,
+            maxima / dc,
+            fe_res,
+            nan_r,
+            v,
+            math.nan,
+            str(exc),
+        )
+    force_err = _law_values(model, d) / f - 1.0
+    law_res = np.array(
+        [model.unload(m).delta_r / m if m <= model.max_interference else math.nan for m in maxima]
+    )
+    v = verified_range(d / dc, force_err, maxima / dc, law_res - fe_res)
+    return LawAccuracy(
+        law=law,
+        case=case.name,
+        e_star_over_sy=case.e_star_over_sy,
+        force_ratio=d / dc,
+        force_fe=f,
+        force_error=force_err,
+        maxima_ratio=maxima / dc,
+        residual_fe=fe_res,
+        residual_law=law_res,
+        verified=v,
+        law_ref_over_delta_c=model.critical_interference / dc,
+    )
+
+
+@dataclass(frozen=True)
+class CaseAccuracy:
+    """Every law against one FE case, and the recommendation for that pair."""
+
+    case: ReferenceCase
+    laws: tuple[LawAccuracy, ...]
+
+    def closest(self) -> LawAccuracy:
+        """The law closest to FE over the whole checked span (smallest ``score``)."""
+        return min(self.laws, key=lambda a: a.score())
+
+    def closest_in_force(self) -> LawAccuracy:
+        """The law with the smallest RMS force error."""
+        return min(self.laws, key=lambda a: a.rms_force_error())
+
+    def closest_in_residual(self) -> LawAccuracy:
+        """The law with the smallest RMS delta_r / delta_max error."""
+        return min(self.laws, key=lambda a: a.rms_residual_error())
+
+    def longest_verified(self) -> LawAccuracy:
+        """The law with the largest verified range (the closer one on a tie)."""
+        return max(self.laws, key=lambda a: (a.verified.upper, -a.score()))
+
+    def recommendation(self) -> str:
+        """One line: which law is closest to FE for this pair (overall, in force alone, in
+        delta_r / delta_max alone), how close, and how far the best one is verified."""
+        c = self.case
+        best, bf, br = self.closest(), self.closest_in_force(), self.closest_in_residual()
+        top = float(np.max(best.force_ratio))
+        ef = float(np.max(np.abs(best.force_error)))
+        er = float(np.max(np.abs(best.residual_error)))
+        most = max(a.verified.upper for a in self.laws)
+        who = ", ".join(a.law for a in self.laws if a.verified.upper == most)
+        return (
+            f"{c.description} (E*/S_y = {c.e_star_over_sy:.0f}): closest to FE over "
+            f"{LOWEST_RATIO:g}-{top:.4g} delta_c: {best.law} (force within {100 * ef:.0f} %, "
+            f"delta_r/delta_max within {er:.2f}); in force alone {bf.law} (RMS "
+            f"{100 * bf.rms_force_error():.0f} %), in delta_r/delta_max alone {br.law} (RMS "
+            f"{br.rms_residual_error():.2f}); largest verified range {most:.3g} delta_c "
+            f"({who})"
+        )
+
+    def describe(self, only: str | None = None) -> dict[str, Any]:
+        """Plain data (``only``: the one law to list; the recommendation weighs them all)."""
+        c = self.case
+        return {
+            "case": c.name,
+            "description": c.description,
+            "flat": c.flat.name,
+            "sphere": f"{c.sphere_material.name} ({c.sphere})",
+            "radius": c.radius,
+            "delta_c": c.delta_c,
+            "e_star_over_sy": c.e_star_over_sy,
+            "closest": self.closest().law,
+            "recommendation": self.recommendation(),
+            "laws": {a.law: a.describe() for a in self.laws if only in (None, a.law)},
+        }
+
+
+def accuracy(
+    laws: Sequence[str] | None = None, cases: Sequence[ReferenceCase] | None = None
+) -> list[CaseAccuracy]:
+    """Every law (default: all registered) against every case (default: all shipped)."""
+    names = list(laws) if laws is not None else list(law_names())
+    chosen = list(cases) if cases is not None else load_cases()
+    return [CaseAccuracy(c, tuple(law_accuracy(n, c) for n in names)) for c in chosen]
+
+
+def tolerances() -> dict[str, float]:
+    """The tolerances of the verified range (plain data)."""
+    return {"force_relative": FORCE_TOLERANCE, "residual_ratio_absolute": RESIDUAL_TOLERANCE}
+
+
+def report(results: Sequence[CaseAccuracy], only: str | None = None) -> dict[str, Any]:
+    """Everything as plain data (``only``: list one law)."""
+    return {
+        "tolerances": tolerances(),
+        "definitions": {
+            "delta_ratio": "delta / delta_c, delta_c the pair's Jackson-Green first-yield "
+            "interference",
+            "force_error": "F_law / F_FE - 1 on loading",
+            "residual_ratio_error": "delta_r/delta_max of the law less FE's, at the FE maxima",
+        },
+        "cases": [r.describe(only) for r in results],
+    }
+
+
+def _pct(x: float) -> str:
+    return "n/a" if not math.isfinite(x) else f"{100 * x:+.0f} %"
+
+
+def _abs(x: float) -> str:
+    return "n/a" if not math.isfinite(x) else f"{x:+.3f}"
+
+
+def table_rows(result: CaseAccuracy, only: str | None = None) -> tuple[list[str], list[list[str]]]:
+    """(header, rows) of one case: per law (``only``: that one) the force error and the
+    delta_r / delta_max error at the FE maxima, and the verified range (text for tables);
+    the last row: FE's delta_r / delta_max."""
+    ratios = [float(r) for r in result.laws[0].maxima_ratio] if result.laws else []
+    header = ["law", *(f"{r:g}" for r in ratios), "verified range"]
+    rows = []
+    for a in (a for a in result.laws if only in (None, a.law)):
+        cells = [f"{_pct(a.force_error_at(r))} / {_abs(a.residual_error_at(r))}" for r in ratios]
+        rows.append([a.law, *cells, a.verified.text])
+    fe = ["FE: delta_r/delta_max", *(f"{x:.3f}" for x in result.laws[0].residual_fe)]
+    rows.append([*fe, ""] if result.laws else fe)
+    return header, rows
+
+
+def _range_cell(v: VerifiedRange) -> str:
+    def one(u: float, failure: float) -> str:
+        return f">= {u:.3g}" if math.isnan(failure) else f"{u:.3g}"
+
+    return (
+        f"{one(v.upper, v.first_failure)} (F: {one(v.force_upper, v.force_failure)}, "
+        f"dr: {one(v.residual_upper, v.residual_failure)})"
+    )
+
+
+def markdown(results: Sequence[CaseAccuracy]) -> str:
+    """The tables of the docs page (one per case), the verified ranges and recommendations."""
+    out = []
+    for res in results:
+        c = res.case
+        out.append(
+            f"### {c.description}\n\nE*/S_y = {c.e_star_over_sy:.0f}, delta_c = "
+            f"{c.delta_c * 1e6:.4g} um, R = {c.radius * 1e3:g} mm. Each cell: force error / "
+            f"error of delta_r/delta_max, at delta_max/delta_c:\n"
+        )
+        header, rows = table_rows(res)
+        out.append("| " + " | ".join(header) + " |")
+        out.append("|" + " --- |" * len(header))
+        out.extend("| " + " | ".join(r) + " |" for r in rows)
+        out.append(f"\n**Recommendation.** {res.recommendation()}\n")
+    laws = [a.law for a in results[0].laws] if results else []
+    out.append(
+        "### Verified ranges (delta/delta_c)\n\nEach cell: the verified range (both checks), "
+        "then the range the force check alone and the delta_r/delta_max check alone verify "
+        "(>=: to the end of the data).\n"
+    )
+    out.append(
+        "| law | " + " | ".join(f"E*/S_y = {r.case.e_star_over_sy:.0f}" for r in results) + " |"
+    )
+    out.append("|" + " --- |" * (len(results) + 1))
+    for i, name in enumerate(laws):
+        cells = [_range_cell(r.laws[i].verified) for r in results]
+        out.append(f"| {name} | " + " | ".join(cells) + " |")
+    return "\n".join(out) + "\n"
+
+
+def plot_errors(results: Sequence[CaseAccuracy]) -> Any:
+    """Figure: per case (rows) the force error and the delta_r / delta_max error of every law
+    against delta / delta_c, with the tolerance bands."""
+    from impactlab._mpl import pyplot
+
+    plt = pyplot()
+    n = len(results)
+    fig, axes = plt.subplots(n, 2, figsize=(10, 3.0 * n), squeeze=False, sharex=True)
+    for (ax_f, ax_r), res in zip(axes, results, strict=True):
+        for a in res.laws:
+            (line,) = ax_f.plot(a.force_ratio, 100 * a.force_error, lw=1.3, label=a.law)
+            ax_r.plot(a.maxima_ratio, a.residual_error, "o-", ms=3, lw=1.3, color=line.get_color())
+        ax_f.axhspan(-100 * FORCE_TOLERANCE, 100 * FORCE_TOLERANCE, color="0.9", zorder=0)
+        ax_r.axhspan(-RESIDUAL_TOLERANCE, RESIDUAL_TOLERANCE, color="0.9", zorder=0)
+        ax_f.set_ylim(-100, 200)
+        ax_r.set_ylim(-0.6, 0.6)
+        title = f"{res.case.description} (E*/S_y = {res.case.e_star_over_sy:.0f})"
+        ax_f.set_title(title, fontsize=8, loc="left")
+        ax_f.set_ylabel("force error F_law/F_FE - 1 [%]", fontsize=8)
+        ax_r.set_ylabel("delta_r/delta_max: law - FE", fontsize=8)
+        for ax in (ax_f, ax_r):
+            ax.set_xscale("log")
+            ax.axhline(0.0, color="k", lw=0.6)
+            ax.grid(True, which="both", lw=0.3)
+            ax.tick_params(labelsize=8)
+    for ax in axes[-1]:
+        ax.set_xlabel("delta / delta_c", fontsize=8)
+    axes[0][0].legend(fontsize=7, ncol=2)
+    fig.tight_layout()
+    return fig
+
+
+def plot_curves(results: Sequence[CaseAccuracy]) -> Any:
+    """Figure: per case the FE loading curve and delta_r / delta_max against every law's."""
+    from impactlab._mpl import pyplot
+
+    plt = pyplot()
+    n = len(results)
+    fig, axes = plt.subplots(n, 2, figsize=(10, 3.0 * n), squeeze=False)
+    for (ax_f, ax_r), res in zip(axes, results, strict=True):
+        c = res.case
+        first = res.laws[0]
+        ax_f.plot(first.force_ratio, first.force_fe, "k", lw=2.5, alpha=0.5, label="FE")
+        for a in res.laws:
+            ax_f.plot(a.force_ratio, (1.0 + a.force_error) * a.force_fe, lw=1.1, label=a.law)
+        ax_r.plot(
+            res.laws[0].maxima_ratio, res.laws[0].residual_fe, "ks", ms=6, alpha=0.5, label="FE"
+        )
+        for a in res.laws:
+            ax_r.plot(a.maxima_ratio, a.residual_law, "o-", ms=3, lw=1.1, label=a.law)
+        ax_f.set_xscale("log")
+        ax_f.set_yscale("log")
+        ax_r.set_xscale("log")
+        ax_f.set_title(f"{c.description} (E*/S_y = {c.e_star_over_sy:.0f})", fontsize=8, loc="left")
+        ax_f.set_ylabel("loading force F [N]", fontsize=8)
+        ax_r.set_ylabel("delta_r / delta_max", fontsize=8)
+        for ax in (ax_f, ax_r):
+            ax.grid(True, which="both", lw=0.3)
+            ax.tick_params(labelsize=8)
+            ax.set_xlabel("delta / delta_c", fontsize=8)
+    axes[0][1].legend(fontsize=7, ncol=2)
+    fig.tight_layout()
+    return fig
+
+
+def main(argv: list[str] | None = None) -> int:
+    """``python -m impactlab.fe.accuracy [--json] [--markdown] [--figures DIR]``."""
+    import argparse
+    import json
+
+    from impactlab._json import to_json
+
+    parser = argparse.ArgumentParser(description="Accuracy of every contact law against FE.")
+    parser.add_argument("--json", action="store_true", help="machine-readable output")
+    parser.add_argument("--markdown", action="store_true", help="the docs page's tables")
+    parser.add_argument("--figures", type=Path, default=None, help="write the PNGs there")
+    args = parser.parse_args(argv)
+    results = accuracy()
+    if args.figures is not None:
+        args.figures.mkdir(parents=True, exist_ok=True)
+        for name, fig in (
+            ("accuracy_errors.png", plot_errors(results)),
+            ("accuracy_curves.png", plot_curves(results)),
+        ):
+            fig.savefig(args.figures / name, dpi=100)
+            print(args.figures / name)
+    if args.json:
+        print(json.dumps(to_json(report(results), UNITS), indent=1))
+    elif args.markdown:
+        print(markdown(results))
+    elif args.figures is None:
+        for res in results:
+            print(res.recommendation())
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
