@@ -50,9 +50,9 @@ CASES: dict[str, tuple[Material, Material, str]] = {
 
 #: One line per case for people (stored in its data file).
 DESCRIPTIONS: dict[str, str] = {
-    "paper-aisi201-on-aisi1010": "the paper's pair: AISI 201 sphere (elastic-plastic) on AISI 1010",
-    "aisi201-on-al6061t6": "AISI 201 sphere (elastic-plastic) on 6061-T6 aluminium",
-    "elastic-sphere-on-aisi4340": "hard steel: an elastic AISI 4340 Q&T sphere on AISI 4340 Q&T",
+    "paper-aisi201-on-aisi1010": "The paper's pair: AISI 201 sphere (elastic-plastic) on AISI 1010",
+    "aisi201-on-al6061t6": "Aluminium: AISI 201 sphere (elastic-plastic) on 6061-T6",
+    "elastic-sphere-on-aisi4340": "Hard steel: an elastic AISI 4340 Q&T sphere on AISI 4340 Q&T",
 }
 
 #: The maxima, in multiples of the case's delta_c (about two per decade, 0.3 to 1000).
