@@ -8,6 +8,7 @@ force; it slips when |f| reaches its limit and sticks again when the limit outru
 
 from __future__ import annotations
 
+import numpy as np
 from numba import njit
 
 from impactlab.contact.kernels import P_ESTAR
@@ -125,4 +126,4 @@ def touch_cells(mdl, md, k, y, ek):
         return
     cm, sg, cp, _L, _Ld, _f = views(c, md, ek, k)
     vn, vs = ek[k, F.EK_VN], ek[k, F.EK_VT]
-    birth(0, y, o, cm, sg, cp, c[F.C_MU], mdl[1][P_ESTAR], 0.0, vn, vs, 0.0, 0.0)
+    birth(np.int64(0), y, o, cm, sg, cp, c[F.C_MU], mdl[1][P_ESTAR], 0.0, vn, vs, 0.0, 0.0)

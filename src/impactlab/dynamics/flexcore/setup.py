@@ -101,16 +101,19 @@ def first_touch(mdl, md, y, vx0, vy0, w0, sv, contacts, dents, cur_con, der, ev,
     y[iv] = vx0
     y[iv + 1] = vy0
     y[iv + 2] = w0
-    new_dent(dents, 0, 0, 0.0, c[F.C_R])
+    # the tip (end 0) as a run-time integer, not a literal: numba would compile a separate copy
+    # of every function it is passed to
+    tip = np.int64(0)
+    new_dent(dents, tip, tip, 0.0, c[F.C_R])
     sv[F.SV_ND] = 1
     md[0, F.MD_IN] = 1.0
     md[0, F.MD_PH] = 0.0
     md[0, F.MD_COMP] = 1.0
     md[0, F.MD_DENT] = 0.0
     evaluate(mdl, md, y, der, ev, ek, Jn, Jt)
-    initial_mode(mdl[1], c, M, md, 0, ek[0, F.EK_VT], ek[0, F.EK_VN], Jn, Jt)
+    initial_mode(mdl[1], c, M, md, tip, ek[0, F.EK_VT], ek[0, F.EK_VN], Jn, Jt)
     if c[F.C_FRIC] == F.FR_PARTIAL:
-        touch_cells(mdl, md, 0, y, ek)
+        touch_cells(mdl, md, tip, y, ek)
     for f in (F.CR_END, F.CR_T0, F.CR_X0, F.CR_DENT, F.CR_RELOAD, F.CR_DMAX, F.CR_FMAX, F.CR_STICK):
         contacts[0, f] = 0.0
     cur_con[0] = 0
