@@ -55,8 +55,11 @@ DESCRIPTIONS: dict[str, str] = {
     "elastic-sphere-on-aisi4340": "Hard steel: an elastic AISI 4340 Q&T sphere on AISI 4340 Q&T",
 }
 
-#: The maxima, in multiples of the case's delta_c (about two per decade, 0.3 to 1000).
-MAXIMA_OVER_DELTA_C: tuple[float, ...] = (0.3, 1.0, 3.0, 10.0, 30.0, 100.0, 300.0, 1000.0)
+#: The maxima, in multiples of the case's delta_c: about two per decade from 0.3 to 1000, and
+#: 1.5 and 2 where the permanent depth starts (where most laws leave 0.05 of FE in it).
+MAXIMA_OVER_DELTA_C: tuple[float, ...] = (
+    0.3, 1.0, 1.5, 2.0, 3.0, 10.0, 30.0, 100.0, 300.0, 1000.0
+)  # fmt: skip
 
 #: Cases whose maxima differ. The hard steel's delta_c is 8.5 um, about R / 1000, so 1000
 #: delta_c would reach the sphere's radius: it stops at 100 delta_c (0.85 mm, delta / R = 0.1).
@@ -65,8 +68,8 @@ MAXIMA_OVER_DELTA_C: tuple[float, ...] = (0.3, 1.0, 3.0, 10.0, 30.0, 100.0, 300.
 #: 548 s), and 700 delta_c stopped at 618 delta_c (too many cut-backs, 242 s); its largest
 #: maximum is 500 delta_c.
 CASE_MAXIMA: dict[str, tuple[float, ...]] = {
-    "aisi201-on-al6061t6": (0.3, 1.0, 3.0, 10.0, 30.0, 100.0, 300.0, 500.0),
-    "elastic-sphere-on-aisi4340": (0.3, 1.0, 3.0, 10.0, 30.0, 100.0),
+    "aisi201-on-al6061t6": (0.3, 1.0, 1.5, 2.0, 3.0, 10.0, 30.0, 100.0, 300.0, 500.0),
+    "elastic-sphere-on-aisi4340": (0.3, 1.0, 1.5, 2.0, 3.0, 10.0, 30.0, 100.0),
 }
 
 
