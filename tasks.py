@@ -54,7 +54,16 @@ def ensure_env() -> None:
     STAMP.write_text(fp)
 
 
-_CHECKED = ("src", "tests", "benchmarks", "examples", "notebooks", "tools", "tasks.py", "conftest.py")
+_CHECKED = (
+    "src",
+    "tests",
+    "benchmarks",
+    "examples",
+    "notebooks",
+    "tools",
+    "tasks.py",
+    "conftest.py",
+)
 _RUFF: list[str | Path] = [PY, "-m", "ruff", "check", *_CHECKED]
 _RUFF_FORMAT: list[str | Path] = [PY, "-m", "ruff", "format", "--check", *_CHECKED]
 _MYPY: list[str | Path] = [PY, "-m", "mypy"]
