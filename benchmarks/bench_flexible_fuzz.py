@@ -165,7 +165,8 @@ def dump(
         "flags": dict(flags),
         "slowest_s": slowest[0],
         "slowest_case": slowest[1],
-        "anomalies": found[:200],
+        "anomalies": [a for a in found if not a["what"].startswith("(failed")][:200],
+        "failures": [a for a in found if a["what"].startswith("(failed")][:60],
         "cpu": os.cpu_count(),
         "python": sys.version.split()[0],
     }
@@ -205,7 +206,10 @@ def main() -> None:
             r = run_case(case, history)
         except DropError as exc:
             counts["drop_error"] += 1
-            statuses[F.STATUS_MESSAGES.get(exc.status, str(exc.status))] += 1
+            key = F.STATUS_MESSAGES.get(exc.status, str(exc.status))
+            statuses[key] += 1
+            if statuses[key] <= 3:  # a few inputs that reproduce each failure
+                found.append({"case": case, "what": f"(failed, not an anomaly) {exc}"})
             if exc.status == F.ST_MISSED_CONTACT:
                 counts["missed_contact_refused"] += 1
             continue
@@ -235,8 +239,8 @@ def main() -> None:
     summary = dump(args, n, time.perf_counter() - t0, counts, statuses, flags, slowest, found)
     print(json.dumps({k: v for k, v in summary.items() if k != "anomalies"}, indent=1,
                      default=str))  # fmt: skip
-    for a in found[:20]:
-        print("ANOMALY", a["what"], a["case"])
+    for a in found[:40]:
+        print("ANOMALY" if not a["what"].startswith("(failed") else "FAILED", a["what"], a["case"])
 
 
 if __name__ == "__main__":
