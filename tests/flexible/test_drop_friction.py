@@ -91,7 +91,7 @@ def test_rigid_mode_layout() -> None:
     assert order == tuple(range(8)) and L.NM == 8
 
 
-#: impulse_ratio creating energy (tests/dynamics/test_engine_flags.py, issue 14): an oblique
+#: impulse_ratio creating energy (tests/dynamics/test_engine_flags.py): an oblique
 #: case with spin and the vertical rod (v_slip,0 = 0, mu beyond the stick limit).
 GAIN_CASES = [
     {"law": "hertz", "mu": 0.9962, "angle": 1.19009, "velocity": (0.72986, -9.12126)}
@@ -125,7 +125,7 @@ def test_gravity_dominated_flag() -> None:
 
 def test_paper_drop_flags() -> None:
     """The paper's drop with the flexible rod: no energy gain, gravity not dominating; the law's
-    fitted range (contract C2, ``contact.ranges.law_extrapolated``) on the sequence's largest
+    fitted range (``contact.ranges.law_extrapolated``) on the sequence's largest
     interference, advisory (``ok`` stays True), with its explanation."""
     r = simulate_drop(FlexibleRod.paper(), mu=0.2, angle=math.radians(20), velocity=(0, -1.41))
     model = contact_model(Rod.paper(), AISI_1010, "ghaednia")

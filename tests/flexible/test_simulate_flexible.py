@@ -1,4 +1,4 @@
-"""``impactlab.simulate`` with a FlexibleRod (contract C1): the flexible drop, a DropResult with
+"""``impactlab.simulate`` with a FlexibleRod: the flexible drop, a DropResult with
 the summary attributes of ImpactResult; the drop's options pass through; simulate_batch refuses
 a FlexibleRod clearly."""
 
@@ -17,7 +17,7 @@ from impactlab.flags import ResultFlag
 
 BODY = FlexibleRod.paper(n_axial=2, n_bending=4, axial_residual=False)
 KW = {"law": "ghaednia", "friction": "coulomb", "mu": 0.2, "velocity": (0.0, -1.41)}
-#: ImpactResult's summary attributes (contract C1).
+#: ImpactResult's summary attributes.
 SUMMARY = ("e", "delta_p", "sliding_length", "duration", "mean_force", "delta_max")
 SUMMARY += ("max_force", "flags", "warnings", "ok", "references")
 

@@ -1,4 +1,4 @@
-"""``impactlab.simulate`` with a FlexibleRod (contract C1): the flexible drop
+"""``impactlab.simulate`` with a FlexibleRod: the flexible drop
 (``impactlab.dynamics.drop.simulate_drop``) called with ``simulate``'s arguments, and the error
 of ``simulate_batch`` with a FlexibleRod."""
 
@@ -15,7 +15,7 @@ from impactlab.materials import Material
 __all__ = ["DROP_OPTIONS", "FLEXIBLE_BATCH_ERROR", "simulate_flexible"]
 
 
-#: Options of ``impactlab.simulate`` that only the flexible drop takes (contract C1).
+#: Options of ``impactlab.simulate`` that only the flexible drop takes.
 DROP_OPTIONS = ("rate", "stop", "t_max")
 #: simulate's arguments that ``simulate_drop`` takes under the same name.
 _SIMULATE_ARGS: tuple[str, ...] = ("law", "friction", "mu", "angle", "velocity", "spin")
