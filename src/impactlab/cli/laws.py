@@ -172,8 +172,8 @@ def _accuracy(name: str | None, as_json: bool) -> None:
             "\nforce error / delta_r/delta_max error, at delta_max/delta_c ="
         )
         table = Table(title=title, show_header=True, header_style="bold")
-        for col in header:
-            table.add_column(col, overflow="fold")
+        for i, col in enumerate(header):  # the law's name never folds; the numbers may
+            table.add_column(col, overflow="fold", no_wrap=i == 0)
         for row in rows:
             table.add_row(*row)
         console.print(table)
