@@ -2,25 +2,13 @@
 
 from __future__ import annotations
 
-import math
-
 import pytest
-
-from impactlab.bodies import PAPER_ROD, Sphere
 
 
 @pytest.fixture(scope="session", autouse=True)
 def _warm_engine() -> None:
-    """Compile (or load from the disk cache) the engine once, before any timed test."""
-    from impactlab.dynamics import simulate, simulate_batch
+    """Compile (or load from the disk cache) the engine once (the one warm-up:
+    ``impactlab.dynamics.warm``, which ``python3 tasks.py test`` runs before the suite)."""
+    from impactlab.dynamics.warm import warm
 
-    for fr in ("impulse_ratio", "coulomb", "mindlin"):
-        simulate(
-            PAPER_ROD,
-            law="hertz",
-            friction=fr,
-            mu=0.2,
-            angle=math.radians(20),
-            velocity=(0.0, -1.0),
-        )
-    simulate_batch(Sphere(0.01), law="hertz", friction="coulomb", mu=0.1, vy=[-1.0, -2.0])
+    warm(("rigid impact", "batch"))

@@ -32,7 +32,7 @@ def _rigid() -> None:
 
     for fr in ("impulse_ratio", "coulomb", "mindlin"):
         for history in (False, True):
-            simulate(
+            r = simulate(
                 PAPER_ROD,
                 law="ghaednia",
                 friction=fr,
@@ -41,6 +41,7 @@ def _rigid() -> None:
                 velocity=(0.0, -1.41),
                 history=history,
             )
+    r.dent(nx=21, ny=11)  # the dent map's kernels
 
 
 def _batch() -> None:
