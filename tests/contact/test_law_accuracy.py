@@ -19,6 +19,7 @@ from impactlab._json import shape_problems
 from impactlab.cli import laws as laws_cli
 from impactlab.contact import get_law, law_names
 from impactlab.fe import accuracy as acc
+from impactlab.fe.accuracy_views import markdown
 from impactlab.fe.curves import DATA_VERSION, FORMAT, case_from_record, case_names, load_cases
 from impactlab.fe.reference import CASES, case_ratios
 from impactlab.materials import AISI_201, AISI_1010, ContactPair
@@ -251,7 +252,7 @@ def test_docs_page_tables_are_the_computed_ones(results) -> None:
 
     page = Path(__file__).resolve().parents[2] / "docs" / "laws" / "accuracy.md"
     text = page.read_text()
-    for line in acc.markdown(results).splitlines():
+    for line in markdown(results).splitlines():
         if line.startswith(("|", "**Recommendation")):
             assert line in text, f"docs/laws/accuracy.md is out of date: {line}"
 

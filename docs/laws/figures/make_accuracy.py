@@ -6,7 +6,8 @@ Run from the repository root: .venv/bin/python docs/laws/figures/make_accuracy.p
 
 from pathlib import Path
 
-from impactlab.fe.accuracy import accuracy, markdown, plot_curves, plot_errors
+from impactlab.fe.accuracy import accuracy
+from impactlab.fe.accuracy_views import markdown, plot_curves, plot_errors
 
 results = accuracy()
 here = Path(__file__).parent

@@ -156,6 +156,7 @@ def _citation(ref: Any) -> str:
 def _accuracy(name: str | None, as_json: bool) -> None:
     """``impactlab laws [NAME] --accuracy``: docs/laws/accuracy.md."""
     from impactlab.fe import accuracy as acc
+    from impactlab.fe.accuracy_views import table_rows
 
     only = str(get_law(name).name) if name else None
     results = acc.accuracy()
@@ -165,7 +166,7 @@ def _accuracy(name: str | None, as_json: bool) -> None:
     if not results:
         raise ValueError("no FE reference curves are shipped (impactlab/fe/data/)")
     for res in results:
-        header, rows = acc.table_rows(res, only)
+        header, rows = table_rows(res, only)
         c = res.case
         title = (
             f"{c.description}: E*/S_y = {c.e_star_over_sy:.0f}, delta_c = {c.delta_c * 1e6:.4g} um"
