@@ -18,14 +18,14 @@ from typing import Any, cast
 
 import numpy as np
 
-from impactlab._validation import check_finite, check_nonnegative, check_positive
+from impactlab._validation import check_finite
 from impactlab.bodies import Rod
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.bodies.layout import BP_GSTAR
 from impactlab.bodies.modal import MODAL_REFERENCES
 from impactlab.contact import ContactModel
 from impactlab.contact.kernels import loading_contact_radius
-from impactlab.contact.ranges import extrapolation, law_extrapolated
+from impactlab.contact.ranges import extrapolation
 from impactlab.contact.rate import (
     RateFactor,
     check_rate_flat,
@@ -41,7 +41,18 @@ from impactlab.dynamics.checks import (
     gravity_value,
 )
 from impactlab.dynamics.core.layout import MU_NEGLIGIBLE
-from impactlab.dynamics.core.quality import energy_gained, gravity_dominated
+from impactlab.dynamics.drop_checks import (
+    DROP_FRICTION,
+    STOP_MODES,
+    DropError,
+    check_body,
+    check_energy_balance,
+    check_friction,
+    check_spin_unit,
+    check_stop,
+    drop_flags,
+    status_error,
+)
 from impactlab.dynamics.drop_result import ContactRecord, DentRecord, DropHistory, DropResult
 from impactlab.dynamics.flexcore import drop
 from impactlab.dynamics.flexcore import layout as F
@@ -53,20 +64,15 @@ from impactlab.dynamics.models import (
     kernel_params,
     references_used,
 )
-from impactlab.flags import ENERGY_GAIN_RTOL_FACTOR, ENERGY_ROUNDOFF, ResultFlag
 from impactlab.friction import (
     COULOMB,
     DEFAULT_MU,
     MINDLIN,
     PARTIAL_SLIP,
     PARTIAL_SLIP_CELLS,
-    FrictionKind,
-    FrictionModel,
-    get_friction,
 )
 from impactlab.materials import AISI_1010, Material
 from impactlab.references import Reference
-from impactlab.units import is_quantity
 
 __all__ = [
     "DEFAULT_T_MAX",
@@ -85,9 +91,6 @@ DEFAULT_T_MAX = 0.5
 MIN_APPROACH_SPEED = 1e-9
 #: Contact laws without plasticity: a rate-dependent flat is refused with them.
 ELASTIC_LAWS = frozenset({"hertz"})
-#: ``stop`` values: the tip's sequence (the other end's landing is a new impact), or the whole
-#: flight through the other end's impacts until the rod flies off.
-STOP_MODES = ("sequence", "flight")
 
 
 @dataclass(frozen=True, eq=False)
@@ -133,79 +136,6 @@ def _body_model(body: FlexibleRod | Rod) -> _BodyModel:
         desc,
         MODAL_REFERENCES if b.n_modes else (),
     )
-
-
-def _check_body(body: Any) -> FlexibleRod | Rod:
-    if not isinstance(body, FlexibleRod | Rod):
-        raise ValueError(f"body must be an impactlab FlexibleRod or Rod, got {type(body).__name__}")
-    return body
-
-
-#: The friction models of the drop integrator (``impactlab.dynamics.flexcore.friction``).
-DROP_FRICTION: tuple[FrictionKind, ...] = (FrictionKind.IMPULSE_RATIO, FrictionKind.COULOMB)
-DROP_FRICTION += (FrictionKind.MINDLIN, FrictionKind.PARTIAL_SLIP)
-
-
-def _check_friction(friction: str, mu: float) -> tuple[FrictionModel, float]:
-    fric = get_friction(friction)
-    if fric.kind not in DROP_FRICTION:
-        names = ", ".join(repr(str(k)) for k in DROP_FRICTION)
-        raise ValueError(f"friction: the drop integrator implements {names}, got {friction!r}")
-    return fric, check_nonnegative("mu", mu)
-
-
-def _check_spin_unit(spin: Any) -> Any:
-    """``spin``; ValueError for a frequency in hertz, which pint converts to rad/s 1:1 (cycles
-    or radians per second is ambiguous: ``"-5 Hz"`` would be -5 rad/s, not -31.4)."""
-    unit = ""
-    if isinstance(spin, str):
-        unit = spin
-    elif is_quantity(spin):
-        unit = str(spin.units)
-    if "hz" in unit.lower() or "hertz" in unit.lower():
-        raise ValueError(
-            f"spin: {spin!r} is a frequency in hertz, ambiguous as an angular velocity (cycles "
-            "or radians per second); give rad/s, or turns as 'turn/s' or 'rpm'"
-        )
-    return spin
-
-
-def _check_stop(stop: Any, t_max: Any) -> tuple[float, int]:
-    """(t_max [s], the compiled stop mode)."""
-    if stop not in STOP_MODES:
-        raise ValueError(f"stop must be one of {STOP_MODES}, got {stop!r}")
-    return check_positive("t_max", t_max, "s"), STOP_MODES.index(stop)
-
-
-class DropError(ValueError):
-    """A drop whose integration failed; ``status`` is its code (``flexcore.layout.ST_*``)."""
-
-    def __init__(self, message: str, status: int) -> None:
-        super().__init__(message)
-        self.status = status
-
-
-def _status_error(status: int, model: ContactModel, run: _Run | None = None) -> DropError:
-    """The ValueError of a failed drop (``layout.ST_*``; ``run``: its counters, when known)."""
-    text = F.STATUS_MESSAGES.get(status, f"status {status}")
-    where = ""
-    if run is not None:
-        steps, t = int(run.out[F.O_N_STEPS]), float(run.out[F.O_T_FINAL])
-        where = f" after {steps} steps, {t * 1e3:.4g} ms after the first touch"
-    hints = {
-        F.ST_LAW_LIMIT: f" ({model.max_interference:.6g} m for the {model.name!r} law){where}: "
-        "the contact force could not stop the rod within the law's range (too fast an "
-        "impact, a jammed friction contact or too strong gravity); lower the impact velocity, "
-        "mu or gravity, or choose another law",
-        F.ST_TMAX: f"{where}: raise t_max",
-        F.ST_MAX_STEPS: f"{where} (the limit: {F.MAX_STEPS}; with partial slip "
-        f"{F.PARTIAL_STEP_FACTOR} times the steps of its Mindlin pre-pass, at least "
-        f"{F.PARTIAL_MIN_STEPS}): a long, creeping contact (resting, rocking or rolling); try "
-        "friction='mindlin'",
-        F.ST_MISSED_CONTACT: f"{where}: lower rtol",
-        F.ST_STEP_UNDERFLOW: f"{where}: the integrator could not meet rtol",
-    }
-    return DropError(f"drop: {text}{hints.get(status, '')}", status)
 
 
 @dataclass(frozen=True)
@@ -254,7 +184,7 @@ def _cell_widths(run: _Run, model: ContactModel) -> tuple[float, float]:
     loading contact radius of its contacts in the pre-pass ``run`` (an end without contacts
     there: the tip's), as the rigid engine's estimate (``dynamics.partial_slip``)."""
     if run.status != F.ST_OK:
-        raise _status_error(run.status, model, run)
+        raise status_error(run.status, model, run.out)
     p = kernel_params(model)
     a = [0.0] * F.NE
     for row in run.contacts:
@@ -267,7 +197,7 @@ def _cell_widths(run: _Run, model: ContactModel) -> tuple[float, float]:
 def _first_contact_radius(run: _Run, model: ContactModel) -> float:
     """a_m: the contact radius at the largest interference of the first contact [m]."""
     if run.status != F.ST_OK:
-        raise _status_error(run.status, model, run)
+        raise status_error(run.status, model, run.out)
     dm = float(run.contacts[0, F.CR_DMAX])
     return float(loading_contact_radius(model.law_id, kernel_params(model), dm))
 
@@ -313,66 +243,6 @@ def _rate_model(
     return build(factor.k), factor
 
 
-def _tip_sequence(contacts: np.ndarray, o: dict[str, Any]) -> tuple[float, float]:
-    """(duration [s], normal impulse [N s]) of the tip's sequence: its contacts before the
-    other end's first touch (all of them when the other end never touched)."""
-    ends = contacts[:, F.CR_END]
-    if not np.any(ends == 1.0):
-        return o["duration"], o["normal_impulse"]
-    t1 = float(contacts[ends == 1.0, F.CR_T0].min())
-    tip = contacts[(ends == 0.0) & (contacts[:, F.CR_T0] < t1)]
-    return float((tip[:, F.CR_T0] + tip[:, F.CR_DUR]).max()), float(tip[:, F.CR_PN].sum())
-
-
-def _flags(
-    o: dict[str, Any],
-    e0: float,
-    m: float,
-    g: float,
-    rtol: float,
-    model: ContactModel,
-    contacts: np.ndarray,
-) -> ResultFlag:
-    """The result flags of a finished sequence (docs/flexible.md, "Flags"): the rigid engine's
-    criteria (``impactlab.dynamics.core.quality``) on the state after the last contact, the
-    vibration energy counted with the kinetic energy, and on the duration and the normal
-    impulse of the tip's sequence (its contacts before the other end's first touch); the
-    law's fitted range (``contact.ranges.law_extrapolated``) on the largest
-    interference of the sequence; OTHER_END, unless gravity dominates (the rod rests or rocks:
-    that flag says it), when the other end touched the flat or the tip still approaches it
-    after the last contact (e < 0)."""
-    e_end = o["rigid_kinetic_energy"] + o["vibration_energy"]
-    flags = ResultFlag.NONE
-    if law_extrapolated(model, o["delta_max"]):
-        flags |= ResultFlag.LAW_EXTRAPOLATED
-    if energy_gained(e0, e_end, o["potential_energy"], rtol):
-        flags |= ResultFlag.ENERGY_GAIN
-    duration, impulse = _tip_sequence(contacts, o)
-    if gravity_dominated(m * g * duration, impulse):
-        flags |= ResultFlag.GRAVITY_DOMINATED  # resting, rocking: the other end's flag aside
-    elif np.any(contacts[:, F.CR_END] == 1.0) or not o["e"] >= 0.0:
-        flags |= ResultFlag.OTHER_END
-    return flags
-
-
-def _check_energy_balance(o: dict[str, Any], e0: float, rtol: float) -> None:
-    """DropError when the energy balance closed worse than the tolerance promises: the
-    largest |T + V - E0 - W| of the run above ``ENERGY_GAIN_RTOL_FACTOR`` rtol +
-    ``ENERGY_ROUNDOFF`` times the energy scale of the ENERGY_GAIN criterion (E0 + the final
-    rigid kinetic, vibration and |potential| energy): the results, energy gain or not, are
-    not integrated to the tolerance."""
-    bound = ENERGY_GAIN_RTOL_FACTOR * rtol + ENERGY_ROUNDOFF
-    scale = e0 + o["rigid_kinetic_energy"] + o["vibration_energy"] + abs(o["potential_energy"])
-    error = o["energy_error"] * e0 / scale
-    if not error <= bound:
-        raise DropError(
-            f"drop: {F.STATUS_MESSAGES[F.ST_INACCURATE]}: the energy balance closed to "
-            f"{error:.3g} of its energy scale, beyond the {ENERGY_GAIN_RTOL_FACTOR:g} rtol + "
-            f"{ENERGY_ROUNDOFF:g} = {bound:.3g} that rtol = {rtol:g} promises: lower rtol",
-            F.ST_INACCURATE,
-        )
-
-
 def _result(
     r: _Run,
     bm: _BodyModel,
@@ -386,7 +256,7 @@ def _result(
     vx, vy = inputs["velocity_in"]
     e0 = 0.5 * m * (vx * vx + vy * vy) + 0.5 * bm.inertia * inputs["spin_in"] ** 2
     rtol = inputs.pop("rtol")
-    _check_energy_balance(o, e0, rtol)
+    check_energy_balance(o, e0, rtol)
     ratio, ratio_max = extrapolation(model.law_id, model.params, o["delta_max"])
     skip = {"vx_out", "vy_out", "n_contacts", "next_end", "n_steps", "n_jumps", "n_dents"}
     skip |= {"t_final"}
@@ -405,7 +275,7 @@ def _result(
         rate_factor=rate[1].k if rate[1] is not None else 1.0,
         strain_rate=rate[1].strain_rate if rate[1] is not None else math.nan,
         history=DropHistory(r.history) if r.history is not None else None,
-        flags=_flags(o, e0, m, inputs["gravity"], rtol, model, r.contacts),
+        flags=drop_flags(o, e0, m, inputs["gravity"], rtol, model, r.contacts),
         max_delta_ratio=ratio,
         fitted_delta_ratio_max=ratio_max,
         references=references,
@@ -450,10 +320,10 @@ def simulate_drop(
     Returns a DropResult: every contact, the dents, the totals, the energy balance, the
     history if asked, the references. ValueError for invalid input or a failed integration.
     """
-    body = _check_body(body)
+    body = check_body(body)
     bm = _body_model(body)
     flat = check_flat(flat)
-    fric, mu_v = _check_friction(friction, mu)
+    fric, mu_v = check_friction(friction, mu)
     if angle is None:
         raise ValueError(
             f"angle is required for the drop of a {type(body).__name__}: the rod axis to the "
@@ -461,9 +331,9 @@ def simulate_drop(
         )
     th = check_angle(angle, bm.rigid)
     vx, vy = check_velocity(velocity)
-    w = check_finite("spin", _check_spin_unit(spin), "rad/s")
+    w = check_finite("spin", check_spin_unit(spin), "rad/s")
     g = gravity_value(gravity)
-    options = (check_rtol(rtol if rtol is not None else F.DEFAULT_RTOL), *_check_stop(stop, t_max))
+    options = (check_rtol(rtol if rtol is not None else F.DEFAULT_RTOL), *check_stop(stop, t_max))
     vn0 = vy - w * bm.rigid.half_length * math.cos(th)
     if not vn0 < 0.0:
         raise ValueError(
@@ -496,7 +366,7 @@ def simulate_drop(
     model, factor = _rate_model(rate, law, bm.rigid, flat, law_params, run, vn0)
     r = run(model, bool(history))
     if r.status != F.ST_OK:
-        raise _status_error(r.status, model, r)
+        raise status_error(r.status, model, r.out)
     refs = references_used(model, fric, mu_run > 0.0) + bm.references
     if factor is not None:
         refs += get_rate_law(rate).references

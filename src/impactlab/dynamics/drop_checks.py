@@ -1,0 +1,157 @@
+"""The checks of a flexible-rod drop: its inputs (body, friction, spin unit, stop), its failure
+as a ``DropError`` with the status and a hint, the energy balance against the tolerance, and
+the result flags (docs/flexible.md, "Flags")."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from impactlab._validation import check_nonnegative, check_positive
+from impactlab.bodies import Rod
+from impactlab.bodies.flexible_rod import FlexibleRod
+from impactlab.contact import ContactModel
+from impactlab.contact.ranges import law_extrapolated
+from impactlab.dynamics.core.quality import energy_gained, gravity_dominated
+from impactlab.dynamics.flexcore import layout as F
+from impactlab.flags import ENERGY_GAIN_RTOL_FACTOR, ENERGY_ROUNDOFF, ResultFlag
+from impactlab.friction import FrictionKind, FrictionModel, get_friction
+from impactlab.units import is_quantity
+
+#: ``stop`` values: the tip's sequence (the other end's landing is a new impact), or the whole
+#: flight through the other end's impacts until the rod flies off.
+STOP_MODES = ("sequence", "flight")
+
+
+def check_body(body: Any) -> FlexibleRod | Rod:
+    if not isinstance(body, FlexibleRod | Rod):
+        raise ValueError(f"body must be an impactlab FlexibleRod or Rod, got {type(body).__name__}")
+    return body
+
+
+#: The friction models of the drop integrator (``impactlab.dynamics.flexcore.friction``).
+DROP_FRICTION: tuple[FrictionKind, ...] = (FrictionKind.IMPULSE_RATIO, FrictionKind.COULOMB)
+DROP_FRICTION += (FrictionKind.MINDLIN, FrictionKind.PARTIAL_SLIP)
+
+
+def check_friction(friction: str, mu: float) -> tuple[FrictionModel, float]:
+    fric = get_friction(friction)
+    if fric.kind not in DROP_FRICTION:
+        names = ", ".join(repr(str(k)) for k in DROP_FRICTION)
+        raise ValueError(f"friction: the drop integrator implements {names}, got {friction!r}")
+    return fric, check_nonnegative("mu", mu)
+
+
+def check_spin_unit(spin: Any) -> Any:
+    """``spin``; ValueError for a frequency in hertz, which pint converts to rad/s 1:1 (cycles
+    or radians per second is ambiguous: ``"-5 Hz"`` would be -5 rad/s, not -31.4)."""
+    unit = ""
+    if isinstance(spin, str):
+        unit = spin
+    elif is_quantity(spin):
+        unit = str(spin.units)
+    if "hz" in unit.lower() or "hertz" in unit.lower():
+        raise ValueError(
+            f"spin: {spin!r} is a frequency in hertz, ambiguous as an angular velocity (cycles "
+            "or radians per second); give rad/s, or turns as 'turn/s' or 'rpm'"
+        )
+    return spin
+
+
+def check_stop(stop: Any, t_max: Any) -> tuple[float, int]:
+    """(t_max [s], the compiled stop mode)."""
+    if stop not in STOP_MODES:
+        raise ValueError(f"stop must be one of {STOP_MODES}, got {stop!r}")
+    return check_positive("t_max", t_max, "s"), STOP_MODES.index(stop)
+
+
+class DropError(ValueError):
+    """A drop whose integration failed; ``status`` is its code (``flexcore.layout.ST_*``)."""
+
+    def __init__(self, message: str, status: int) -> None:
+        super().__init__(message)
+        self.status = status
+
+
+def status_error(status: int, model: ContactModel, out: np.ndarray | None = None) -> DropError:
+    """The ValueError of a failed drop (``layout.ST_*``; ``out``: its output row, when known)."""
+    text = F.STATUS_MESSAGES.get(status, f"status {status}")
+    where = ""
+    if out is not None:
+        steps, t = int(out[F.O_N_STEPS]), float(out[F.O_T_FINAL])
+        where = f" after {steps} steps, {t * 1e3:.4g} ms after the first touch"
+    hints = {
+        F.ST_LAW_LIMIT: f" ({model.max_interference:.6g} m for the {model.name!r} law){where}: "
+        "the contact force could not stop the rod within the law's range (too fast an "
+        "impact, a jammed friction contact or too strong gravity); lower the impact velocity, "
+        "mu or gravity, or choose another law",
+        F.ST_TMAX: f"{where}: raise t_max",
+        F.ST_MAX_STEPS: f"{where} (the limit: {F.MAX_STEPS}; with partial slip "
+        f"{F.PARTIAL_STEP_FACTOR} times the steps of its Mindlin pre-pass, at least "
+        f"{F.PARTIAL_MIN_STEPS}): a long, creeping contact (resting, rocking or rolling); try "
+        "friction='mindlin'",
+        F.ST_MISSED_CONTACT: f"{where}: lower rtol",
+        F.ST_STEP_UNDERFLOW: f"{where}: the integrator could not meet rtol",
+    }
+    return DropError(f"drop: {text}{hints.get(status, '')}", status)
+
+
+def tip_sequence(contacts: np.ndarray, o: dict[str, Any]) -> tuple[float, float]:
+    """(duration [s], normal impulse [N s]) of the tip's sequence: its contacts before the
+    other end's first touch (all of them when the other end never touched)."""
+    ends = contacts[:, F.CR_END]
+    if not np.any(ends == 1.0):
+        return o["duration"], o["normal_impulse"]
+    t1 = float(contacts[ends == 1.0, F.CR_T0].min())
+    tip = contacts[(ends == 0.0) & (contacts[:, F.CR_T0] < t1)]
+    return float((tip[:, F.CR_T0] + tip[:, F.CR_DUR]).max()), float(tip[:, F.CR_PN].sum())
+
+
+def drop_flags(
+    o: dict[str, Any],
+    e0: float,
+    m: float,
+    g: float,
+    rtol: float,
+    model: ContactModel,
+    contacts: np.ndarray,
+) -> ResultFlag:
+    """The result flags of a finished sequence (docs/flexible.md, "Flags"): the rigid engine's
+    criteria (``impactlab.dynamics.core.quality``) on the state after the last contact, the
+    vibration energy counted with the kinetic energy, and on the duration and the normal
+    impulse of the tip's sequence (its contacts before the other end's first touch); the
+    law's fitted range (``contact.ranges.law_extrapolated``) on the largest
+    interference of the sequence; OTHER_END, unless gravity dominates (the rod rests or rocks:
+    that flag says it), when the other end touched the flat or the tip still approaches it
+    after the last contact (e < 0)."""
+    e_end = o["rigid_kinetic_energy"] + o["vibration_energy"]
+    flags = ResultFlag.NONE
+    if law_extrapolated(model, o["delta_max"]):
+        flags |= ResultFlag.LAW_EXTRAPOLATED
+    if energy_gained(e0, e_end, o["potential_energy"], rtol):
+        flags |= ResultFlag.ENERGY_GAIN
+    duration, impulse = tip_sequence(contacts, o)
+    if gravity_dominated(m * g * duration, impulse):
+        flags |= ResultFlag.GRAVITY_DOMINATED  # resting, rocking: the other end's flag aside
+    elif np.any(contacts[:, F.CR_END] == 1.0) or not o["e"] >= 0.0:
+        flags |= ResultFlag.OTHER_END
+    return flags
+
+
+def check_energy_balance(o: dict[str, Any], e0: float, rtol: float) -> None:
+    """DropError when the energy balance closed worse than the tolerance promises: the
+    largest |T + V - E0 - W| of the run above ``ENERGY_GAIN_RTOL_FACTOR`` rtol +
+    ``ENERGY_ROUNDOFF`` times the energy scale of the ENERGY_GAIN criterion (E0 + the final
+    rigid kinetic, vibration and |potential| energy): the results, energy gain or not, are
+    not integrated to the tolerance."""
+    bound = ENERGY_GAIN_RTOL_FACTOR * rtol + ENERGY_ROUNDOFF
+    scale = e0 + o["rigid_kinetic_energy"] + o["vibration_energy"] + abs(o["potential_energy"])
+    error = o["energy_error"] * e0 / scale
+    if not error <= bound:
+        raise DropError(
+            f"drop: {F.STATUS_MESSAGES[F.ST_INACCURATE]}: the energy balance closed to "
+            f"{error:.3g} of its energy scale, beyond the {ENERGY_GAIN_RTOL_FACTOR:g} rtol + "
+            f"{ENERGY_ROUNDOFF:g} = {bound:.3g} that rtol = {rtol:g} promises: lower rtol",
+            F.ST_INACCURATE,
+        )
