@@ -94,7 +94,7 @@ OUTPUT_FIELDS: tuple[Field, ...] = (
         "flags",
         "1",
         "result flags (impactlab.flags.ResultFlag bitmask): 1 energy gain, 2 gravity-dominated, "
-        "4 law extrapolated; 0 none",
+        "4 law extrapolated, 8 other end (flexible drops: e < 0 or the other end touched); 0 none",
     ),
 )
 
