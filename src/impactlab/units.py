@@ -54,9 +54,16 @@ def _parse(name: str, text: str, unit: str) -> Any:
 
 
 def _convert(name: str, q: Any, unit: str, shown: Any) -> Any:
-    """``q`` expressed in ``unit``; ValueError naming ``name`` on a wrong dimension."""
+    """``q`` expressed in ``unit``; ValueError naming ``name`` on a wrong dimension, and on a
+    frequency in hertz asked for as an angular velocity (pint converts 1 Hz to 1 rad/s, but a
+    spin of 5 Hz usually means 5 turns per second)."""
     import pint  # loaded already: ``q`` is a Quantity of the registry
 
+    if unit == "rad/s" and "hertz" in str(q.units):
+        raise ValueError(
+            f"{name}: {shown!r} is a frequency in hertz, ambiguous as an angular velocity "
+            "(cycles or radians per second); give rad/s, or turns as 'turn/s' or 'rpm'"
+        )
     try:
         return q.to(unit)
     except pint.DimensionalityError:

@@ -59,3 +59,22 @@ def test_batch_and_invert_take_quantities() -> None:
     )
     assert r.duration == pytest.approx(plain.duration, rel=1e-12)
     assert r.inputs["sliding_length"][1] == pytest.approx(50e-6)
+
+
+def test_a_spin_in_hertz_is_refused_everywhere() -> None:
+    """pint converts 1 Hz to 1 rad/s; a spin of 5 Hz usually means 5 turns per second: the
+    rigid engine, the command line's parser and the drop refuse hertz, and take turns."""
+    import math
+
+    import impactlab as il
+    from impactlab.units import magnitude, to_si
+
+    kw = {"angle": "20 deg", "velocity": (0.0, -1.41), "mu": 0.2, "history": False}
+    for spin in ("-5 Hz", "5 kHz"):
+        with pytest.raises(ValueError, match=r"spin: '.*' is a frequency in hertz, ambiguous"):
+            il.simulate(il.Rod.paper(), spin=spin, **kw)
+    with pytest.raises(ValueError, match="is a frequency in hertz"):
+        to_si("3 Hz", "rad/s", name="spin")
+    assert magnitude("spin", "1 turn/s", "rad/s") == pytest.approx(2 * math.pi)
+    assert magnitude("spin", "60 rpm", "rad/s") == pytest.approx(2 * math.pi)
+    assert magnitude("spin", "5 rad/s", "rad/s") == pytest.approx(5.0)

@@ -48,7 +48,6 @@ from impactlab.dynamics.drop_checks import (
     check_body,
     check_energy_balance,
     check_friction,
-    check_spin_unit,
     check_stop,
     drop_flags,
     status_error,
@@ -331,7 +330,7 @@ def simulate_drop(
         )
     th = check_angle(angle, bm.rigid)
     vx, vy = check_velocity(velocity)
-    w = check_finite("spin", check_spin_unit(spin), "rad/s")
+    w = check_finite("spin", spin, "rad/s")
     g = gravity_value(gravity)
     options = (check_rtol(rtol if rtol is not None else F.DEFAULT_RTOL), *check_stop(stop, t_max))
     vn0 = vy - w * bm.rigid.half_length * math.cos(th)

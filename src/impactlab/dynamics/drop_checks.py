@@ -17,7 +17,6 @@ from impactlab.dynamics.core.quality import energy_gained, gravity_dominated
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.flags import ENERGY_GAIN_RTOL_FACTOR, ENERGY_ROUNDOFF, ResultFlag
 from impactlab.friction import FrictionKind, FrictionModel, get_friction
-from impactlab.units import is_quantity
 
 #: ``stop`` values: the tip's sequence (the other end's landing is a new impact), or the whole
 #: flight through the other end's impacts until the rod flies off.
@@ -41,22 +40,6 @@ def check_friction(friction: str, mu: float) -> tuple[FrictionModel, float]:
         names = ", ".join(repr(str(k)) for k in DROP_FRICTION)
         raise ValueError(f"friction: the drop integrator implements {names}, got {friction!r}")
     return fric, check_nonnegative("mu", mu)
-
-
-def check_spin_unit(spin: Any) -> Any:
-    """``spin``; ValueError for a frequency in hertz, which pint converts to rad/s 1:1 (cycles
-    or radians per second is ambiguous: ``"-5 Hz"`` would be -5 rad/s, not -31.4)."""
-    unit = ""
-    if isinstance(spin, str):
-        unit = spin
-    elif is_quantity(spin):
-        unit = str(spin.units)
-    if "hz" in unit.lower() or "hertz" in unit.lower():
-        raise ValueError(
-            f"spin: {spin!r} is a frequency in hertz, ambiguous as an angular velocity (cycles "
-            "or radians per second); give rad/s, or turns as 'turn/s' or 'rpm'"
-        )
-    return spin
 
 
 def check_stop(stop: Any, t_max: Any) -> tuple[float, int]:
