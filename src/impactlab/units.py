@@ -50,6 +50,11 @@ def _parse(name: str, text: str, unit: str) -> Any:
     try:
         return registry().Quantity(text)
     except Exception as exc:  # pint's parser raises several unrelated types
+        if type(exc).__name__ == "OffsetUnitCalculusError":  # "20 degC": a temperature
+            raise ValueError(
+                f"{name}: {text!r} is a temperature (an offset unit such as degC or degF); "
+                f"expected a quantity in {unit}, e.g. '20 deg' for an angle"
+            ) from None
         raise ValueError(f"{name}: cannot parse {text!r} as a quantity ({exc})") from None
 
 

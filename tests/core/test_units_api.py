@@ -78,3 +78,11 @@ def test_a_spin_in_hertz_is_refused_everywhere() -> None:
     assert magnitude("spin", "1 turn/s", "rad/s") == pytest.approx(2 * math.pi)
     assert magnitude("spin", "60 rpm", "rad/s") == pytest.approx(2 * math.pi)
     assert magnitude("spin", "5 rad/s", "rad/s") == pytest.approx(5.0)
+
+
+def test_a_temperature_is_named_as_such() -> None:
+    """'20 degC' is degrees Celsius, not an angle: one line that says so (not pint's text)."""
+    import impactlab as il
+
+    with pytest.raises(ValueError, match=r"angle: '20 degC' is a temperature .* e\.g\. '20 deg'"):
+        il.simulate(il.Rod.paper(), angle="20 degC", velocity=(0.0, -1.41), history=False)
