@@ -197,19 +197,12 @@ def indent_cmd(
         results = indent(fm, bm, **kwargs)
     if as_json:
         from impactlab._json import to_json
+        from impactlab.fe.cache import ARRAYS
 
         payload = []
         for r in results:
             item = _summary(r)
-            for name in (
-                "loading_delta",
-                "loading_force",
-                "contact_radius",
-                "unloading_delta",
-                "unloading_force",
-                "dent_r",
-                "dent_z",
-            ):
+            for name in ARRAYS:
                 item[name] = getattr(r, name).tolist()
             payload.append(item)
         print(json.dumps(to_json({"runs": payload}, _UNITS), indent=2))

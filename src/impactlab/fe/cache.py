@@ -18,12 +18,14 @@ from typing import Any
 
 import numpy as np
 
+from impactlab._compiled_cache import default_cache_root
 from impactlab.fe.result import IndentationResult
 
 #: Bumped whenever the model (mesh, deck, post-processing) or the stored format changes.
 SCHEMA_VERSION = 2
 
-_ARRAYS = (
+#: The array fields of an ``IndentationResult`` (stored as arrays; the rest is the header).
+ARRAYS = (
     "loading_delta",
     "loading_force",
     "contact_radius",
@@ -35,14 +37,13 @@ _ARRAYS = (
 
 
 def default_cache_dir() -> Path:
-    """``$IMPACTLAB_FE_CACHE``, else ``$XDG_CACHE_HOME/impactlab/fe``, else
-    ``~/.cache/impactlab/fe``."""
+    """``$IMPACTLAB_FE_CACHE``, else ``fe`` in impactlab's cache folder
+    (``impactlab._compiled_cache.default_cache_root``: ``$IMPACTLAB_CACHE_DIR``, else
+    ``$XDG_CACHE_HOME/impactlab``, else ``~/.cache/impactlab``)."""
     env = os.environ.get("IMPACTLAB_FE_CACHE")
     if env:
         return Path(env)
-    xdg = os.environ.get("XDG_CACHE_HOME")
-    base = Path(xdg) if xdg else Path.home() / ".cache"
-    return base / "impactlab" / "fe"
+    return default_cache_root() / "fe"
 
 
 def gmsh_version() -> str:
@@ -71,7 +72,7 @@ def load(directory: Path, key: str) -> IndentationResult | None:
     try:
         with np.load(path, allow_pickle=False) as z:
             header = json.loads(str(z["header"]))
-            arrays: dict[str, Any] = {name: np.array(z[name]) for name in _ARRAYS}
+            arrays: dict[str, Any] = {name: np.array(z[name]) for name in ARRAYS}
     except (OSError, ValueError, KeyError):
         return None
     return IndentationResult(**header, **arrays)
@@ -81,12 +82,12 @@ def store(directory: Path, key: str, result: IndentationResult) -> None:
     """Write ``result`` under ``key`` (atomically: a temporary file, then a rename)."""
     directory.mkdir(parents=True, exist_ok=True)
     values = result.arrays()
-    header = {k: v for k, v in values.items() if k not in _ARRAYS}
+    header = {k: v for k, v in values.items() if k not in ARRAYS}
     fd, tmp = tempfile.mkstemp(dir=directory, suffix=".npz.tmp")
     os.close(fd)
     try:
         with open(tmp, "wb") as fh:
-            np.savez(fh, header=np.array(json.dumps(header)), **{k: values[k] for k in _ARRAYS})
+            np.savez(fh, header=np.array(json.dumps(header)), **{k: values[k] for k in ARRAYS})
         os.replace(tmp, directory / f"{key}.npz")
     finally:
         if os.path.exists(tmp):
