@@ -15,9 +15,9 @@ e, delta_p = final dent depth, sliding_length = the tip's total slip, duration =
 last separation, mean_force = P_n / duration, ...) and leaves the others NaN (-1 for integer
 outputs). Status: the sweep's rejection codes (``impactlab.sweep.status``) before the drop (a
 body whose modes cannot be built: BAD_BODY; an input the drop refuses, e.g. an approach speed
-below ``MIN_APPROACH_SPEED``: BAD_INPUT), and a failed drop mapped onto the engine's code of
-the same meaning (``_DROP_STATUS``; a missed contact or an energy balance beyond the
-tolerance: the engine's "could not meet the tolerance"). Every case gets a status: one bad case
+below ``MIN_APPROACH_SPEED``: BAD_INPUT), and a failed drop with its own code from the one
+status table of every engine (``core.status``: e.g. ST_MISSED_CONTACT, ST_INACCURATE, ST_TMAX).
+Every case gets a status: one bad case
 never stops a chunk, so the valid cases are stored.
 """
 
@@ -36,7 +36,6 @@ from impactlab.contact import ContactModel
 from impactlab.dynamics.core import status as S
 from impactlab.dynamics.drop import DROP_FRICTION, MIN_APPROACH_SPEED, DropError, simulate_drop
 from impactlab.dynamics.drop_result import DropResult
-from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.models import build_contact_model
 from impactlab.materials import Material
 from impactlab.sweep.models import Statics, material_for
@@ -79,20 +78,6 @@ DROP_OUTPUTS: dict[str, Callable[[DropResult], float]] = {
     "angle_out": lambda r: r.angle_out,
     "n_steps": lambda r: r.n_steps,
     "flags": lambda r: int(r.flags),
-}
-
-#: A failed drop (``flexcore.layout.ST_*``) as the engine's status of the same meaning.
-_DROP_STATUS = {
-    F.ST_LAW_LIMIT: S.ST_LAW_LIMIT,
-    F.ST_TMAX: S.ST_NO_SEPARATION,
-    F.ST_MAX_STEPS: S.ST_NO_SEPARATION,
-    F.ST_STEP_UNDERFLOW: S.ST_STEP_UNDERFLOW,
-    F.ST_NAN: S.ST_NAN,
-    F.ST_TOO_MANY_EVENTS: S.ST_TOO_MANY_EVENTS,
-    F.ST_TOO_MANY_CONTACTS: S.ST_TOO_MANY_EVENTS,
-    # the integration failed at the study's tolerance (the engine's nearest meaning)
-    F.ST_MISSED_CONTACT: S.ST_STEP_UNDERFLOW,
-    F.ST_INACCURATE: S.ST_STEP_UNDERFLOW,
 }
 
 
@@ -188,7 +173,7 @@ def _drop(
             rtol=engine.get("rtol"),
         )
     except DropError as exc:
-        return _DROP_STATUS.get(exc.status, S.ST_NO_SEPARATION), None
+        return int(exc.status), None  # the one status table of every engine (core.status)
     except ValueError:  # an input the drop refuses (its one-line message names it)
         return STATUS_BAD_INPUT, None
     except (ArithmeticError, np.linalg.LinAlgError):  # never expected: a status, not a crash

@@ -1,5 +1,6 @@
-"""Status codes of one impact (``impact`` returns one; never an exception) and friction
-regime codes (the ``regime`` output)."""
+"""Status codes of every compiled engine (the rigid impact, the partial-slip impact and the
+flexible-rod drop: one table, one meaning per code; an engine returns one, never an exception)
+and friction regime codes (the ``regime`` output)."""
 
 from __future__ import annotations
 
@@ -14,6 +15,13 @@ ST_BAD_ANGLE = 7
 ST_RADIUS_MISMATCH = 8
 ST_TOO_MANY_EVENTS = 9
 ST_BAD_FRICTION = 10
+# the flexible-rod drop's own failures (``dynamics.flexcore``; ``ST_INACCURATE`` is set by
+# ``simulate_drop`` after the run)
+ST_TMAX = 11
+ST_TOO_MANY_CONTACTS = 12
+ST_MAX_STEPS = 13
+ST_MISSED_CONTACT = 14
+ST_INACCURATE = 15
 
 STATUS_MESSAGES: dict[int, str] = {
     ST_OK: "ok",
@@ -28,6 +36,12 @@ STATUS_MESSAGES: dict[int, str] = {
     ST_RADIUS_MISMATCH: "the law's radius P_R differs from the body's tip radius",
     ST_TOO_MANY_EVENTS: "too many phase or stick/slip switches (chattering)",
     ST_BAD_FRICTION: "unknown friction id, or the Mindlin model without G* in the body vector",
+    ST_TMAX: "t_max reached before the rod left the flat for good",
+    ST_TOO_MANY_CONTACTS: "too many contacts or dents",
+    ST_MAX_STEPS: "step limit reached",
+    ST_MISSED_CONTACT: "missed contact: an end lay below its dent's surface (or the flat) with "
+    "zero force, beyond the contact invariant's tolerance max(1e-6, rtol) delta*",
+    ST_INACCURATE: "integration not accurate to the tolerance",
 }
 
 #: Friction regime codes (the ``regime`` output) and their names, in code order.

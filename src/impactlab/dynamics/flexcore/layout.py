@@ -1,7 +1,8 @@
 """Layouts of the flexible-rod integrator: the constants vector, the per-end mode table, the
 events, the dents, the contact records, the run state, the output vector and the history.
 
-Imports only ``impactlab.schema`` (L0): the compiled modules of this package read the indices.
+Imports only ``impactlab.schema`` (L0) and the status table of every engine (``core.status``):
+the compiled modules of this package read the indices.
 
 State vector (length 6 + 2 M + NQUAD, M elastic modes):
 ``[dX, dY, phi, q_1..q_M, vx, vy, spin, q'_1..q'_M, W_n, W_t, W_d, (P_n, P_t, S, |S|) x NE,
@@ -17,6 +18,7 @@ grows, the elastic displacement [m] while it shrinks; 0 for the other friction m
 
 from __future__ import annotations
 
+from impactlab.dynamics.core import status as _status
 from impactlab.schema import Field
 
 NE = 2  #: number of ends (0: the tip that touches first, 1: the other end)
@@ -164,30 +166,18 @@ NSV = 29
 #: interference scale delta* (``SV_TOL_MISS``).
 MISS_TOL_FACTOR = 1.0
 
-# ---- status ------------------------------------------------------------------------------------
-ST_OK = 0
-ST_LAW_LIMIT = 1
-ST_TMAX = 2
-ST_STEP_UNDERFLOW = 3
-ST_NAN = 4
-ST_TOO_MANY_EVENTS = 5
-ST_TOO_MANY_CONTACTS = 6
-ST_MAX_STEPS = 7
-ST_MISSED_CONTACT = 8
-ST_INACCURATE = 9  #: set by ``simulate_drop``: the energy balance beyond the tolerance's promise
-STATUS_MESSAGES = {
-    ST_OK: "ok",
-    ST_LAW_LIMIT: "interference beyond the contact law's validity",
-    ST_TMAX: "t_max reached before the rod left the flat for good",
-    ST_STEP_UNDERFLOW: "step-size underflow",
-    ST_NAN: "non-finite force",
-    ST_TOO_MANY_EVENTS: "too many events (chattering)",
-    ST_TOO_MANY_CONTACTS: "too many contacts or dents",
-    ST_MAX_STEPS: "step limit reached",
-    ST_MISSED_CONTACT: "missed contact: an end lay below its dent's surface (or the flat) with "
-    "zero force, beyond the contact invariant's tolerance max(1e-6, rtol) delta*",
-    ST_INACCURATE: "integration not accurate to the tolerance",
-}
+# ---- status: the one table of every engine (``core.status``), named here for this package ----
+ST_INACCURATE = _status.ST_INACCURATE
+ST_LAW_LIMIT = _status.ST_LAW_LIMIT
+ST_MAX_STEPS = _status.ST_MAX_STEPS
+ST_MISSED_CONTACT = _status.ST_MISSED_CONTACT
+ST_NAN = _status.ST_NAN
+ST_OK = _status.ST_OK
+ST_STEP_UNDERFLOW = _status.ST_STEP_UNDERFLOW
+ST_TMAX = _status.ST_TMAX
+ST_TOO_MANY_CONTACTS = _status.ST_TOO_MANY_CONTACTS
+ST_TOO_MANY_EVENTS = _status.ST_TOO_MANY_EVENTS
+STATUS_MESSAGES = _status.STATUS_MESSAGES
 
 DEFAULT_RTOL = 1e-7  #: default relative tolerance of the flexible drop
 MAX_STEPS = 2_000_000
