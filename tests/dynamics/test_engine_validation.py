@@ -277,3 +277,12 @@ def test_gravity_dominated_impact_is_flagged_not_refused() -> None:
     assert ResultFlag.GRAVITY_DOMINATED in r.flags and not r.ok
     assert any("gravity-dominated" in w for w in r.warnings)
     assert simulate(PAPER_ROD, **OK).ok
+
+
+@pytest.mark.parametrize("gravity", [True, False])
+def test_an_impact_that_never_separates_names_the_approach_speed(gravity: bool) -> None:
+    """A vanishing approach speed ends without separation; the error names the speed and, with
+    gravity, why the body stays on the flat (never the bare engine status)."""
+    with pytest.raises(ValueError, match=r"approached the flat at 1e-200 m/s") as info:
+        simulate(Rod.paper(), AISI_1010, angle=0.35, velocity=(0.0, -1e-200), gravity=gravity)
+    assert ("gravity=False" in str(info.value)) is gravity

@@ -73,8 +73,15 @@ def _result_flags(value: int) -> ResultFlag:
     return flag
 
 
-def status_error(status: int, model: ContactModel, prefix: str = "") -> ValueError:
-    """The ValueError of an impact that ended with engine ``status`` (not ``ST_OK``)."""
+def status_error(
+    status: int,
+    model: ContactModel,
+    prefix: str = "",
+    vn: float | None = None,
+    gravity: float | None = None,
+) -> ValueError:
+    """The ValueError of an impact that ended with engine ``status`` (not ``ST_OK``); ``vn``
+    [m/s] and ``gravity`` [m/s^2], where known, explain an impact that never separates."""
     if status == S.ST_LAW_LIMIT:
         text = (
             f"the interference exceeded {model.max_interference:.6g} m, the validity limit of "
@@ -85,6 +92,18 @@ def status_error(status: int, model: ContactModel, prefix: str = "") -> ValueErr
             f"the {model.name!r} contact law returned a non-finite force or unloading branch "
             f"(law not available, or evaluated outside its domain)"
         )
+    elif status == S.ST_NO_SEPARATION and vn is not None:
+        text = (
+            f"{S.STATUS_MESSAGES[status]}: the contact point approached the flat at "
+            f"{-vn:.3g} m/s and the body never left it"
+        )
+        if gravity:
+            text += (
+                f" (with gravity {gravity:g} m/s^2 such a slow approach ends at rest on the "
+                f"flat): raise the approach speed, or pass gravity=False"
+            )
+        else:
+            text += ": raise the approach speed (or rtol, for a contact this slow)"
     else:
         text = S.STATUS_MESSAGES.get(status, f"engine status {status}")
     return ValueError(prefix + text)

@@ -233,6 +233,7 @@ def _fast(
         return None
     vx, vy, w = float(vx), float(vy), float(spin)
     if w == 0.0:  # the contact point's normal velocity is vy (checks._approach)
+        vn = vy
         if not (vy < 0.0 and math.hypot(vx, vy) <= PLAUSIBLE_SPEED):
             return None
     else:
@@ -253,7 +254,7 @@ def _fast(
         False, out,
     )  # fmt: skip
     if status != S.ST_OK:
-        raise status_error(int(status), model)
+        raise status_error(int(status), model, vn=vn, gravity=g)
     hist = hist[:nh] if history else None
     return engine_result(
         out, hist, model, fric, refs_mu if m > 0.0 else refs, m, th_out, (vx, vy), w
@@ -282,7 +283,7 @@ def _run_one(x: ImpactInputs, history: bool) -> ImpactResult:
         out,
     )
     if status != S.ST_OK:
-        raise status_error(int(status), x.model)
+        raise status_error(int(status), x.model, vn=x.vn, gravity=x.gravity)
     return impact_result(x, out, hist[:nh] if history else None)
 
 

@@ -40,7 +40,7 @@ STEP_PAST = 1.05  #: a step ends this far past the predicted next cell boundary
 N_CELLS = 16  #: cells over the estimated largest contact radius (``friction.PARTIAL_SLIP_CELLS``)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def n_in(cm):
     """Number of cells in contact (born inwards-out, released outside-in)."""
     n = 0
@@ -49,14 +49,14 @@ def n_in(cm):
     return n
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def cell_length(i, a, dx):
     """Length of cell ``i`` inside the contact radius ``a``."""
     ln = a - i * dx
     return 0.0 if ln < 0.0 else (dx if ln > dx else ln)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def stick_rate(i, f, a, ad, vs, cp):
     """df_i/dt of cell ``i`` (force ``f``) in STICK: new material enters unstressed, material
     leaving a receding edge cell takes its share of the force."""
@@ -67,7 +67,7 @@ def stick_rate(i, f, a, ad, vs, cp):
     return r
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def limits(i, dx, mu, Fn, Fd, ar, ad):
     """(L_i, dL_i/dt) of cell ``i``: mu F_n g_i(a) and its rate (F_n' = Fd, a' = ad)."""
     lo = i * dx
@@ -85,7 +85,7 @@ def limits(i, dx, mu, Fn, Fd, ar, ad):
     return mu * Fn * g, mu * (Fd * g + Fn * dg * ad)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def cell_switch(i, cm, sg, cp, L, Ld, f, ar, ad, vs):
     """Event function of cell ``i``: STICK -> SLIP when |f| passes its limit, SLIP -> STICK
     when the limit outruns the stick trial (fires when it goes from <= 0 to > 0)."""
@@ -98,7 +98,7 @@ def cell_switch(i, cm, sg, cp, L, Ld, f, ar, ad, vs):
     return -1.0
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def views(c, md, ek, k):
     """End k's cell modes, signs, parameters, limits, limit rates and forces (array views)."""
     cp = c[F.C_CP + k * F.NCP : F.C_CP + (k + 1) * F.NCP]
@@ -110,7 +110,7 @@ def views(c, md, ek, k):
     return cm, sg, cp, L, Ld, f
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def cell_forces(law, p, c, md, k, y, o, ek):
     """F_t [N] of end k in contact from its cells (forces at y[o:]); fills ``EK_A``, ``EK_AD``
     and the end's limits, rates and forces in ``ek`` (``ek`` holds delta, v_n and F_n)."""
@@ -134,7 +134,7 @@ def cell_forces(law, p, c, md, k, y, o, ek):
     return Ft
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def cell_rates(c, md, k, o, ek, der):
     """The derivatives of end k's cell forces into der[o:o + NCS] (0 out of contact)."""
     cm, sg, cp, _L, Ld, f = views(c, md, ek, k)
@@ -151,7 +151,7 @@ def cell_rates(c, md, k, o, ek, der):
             der[o + i] = sg[i] * Ld[i]
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def cell_events(c, md, k, ek, ev):
     """End k's cell events into ev[NEV + k NEVC:] (-1 where none can fire)."""
     e0 = F.NEV + k * F.NEVC
@@ -172,7 +172,7 @@ def cell_events(c, md, k, ek, ev):
         ev[e0 + F.G_CELL + i] = cell_switch(i, cm, sg, cp, L, Ld, f, ar, ad, ek[k, F.EK_VT])
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def birth(i, y, o, cm, sg, cp, mu, estar, Fn, vn, vs, ar, ad):
     """Cell ``i`` enters the contact unstressed, slipping (towards v_slip) iff
     G_1 |v_slip| a^2 > 1.5 mu F_n a' (at a = 0: G_1 |v_slip| > mu E* |v_n|), else sticking."""
@@ -190,7 +190,7 @@ def birth(i, y, o, cm, sg, cp, mu, estar, Fn, vn, vs, ar, ad):
         sg[i] = 0.0
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def to_slip(i, y, o, cm, sg, L):
     """Cell ``i`` slips in the direction of its force, clamped to its limit."""
     cm[i] = SLIP
@@ -198,14 +198,14 @@ def to_slip(i, y, o, cm, sg, L):
     y[o + i] = sg[i] * L[i]
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def to_stick(i, y, o, cm, sg, L):
     """Cell ``i`` sticks with the force it had on its limit."""
     y[o + i] = sg[i] * L[i]
     cm[i] = STICK
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def reset(md, k, y, o):
     """End k's cells out of contact, unstressed (touch and separation)."""
     for i in range(F.NCS):
@@ -214,7 +214,7 @@ def reset(md, k, y, o):
         y[o + i] = 0.0
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def horizon(c, md, ek):
     """Time until the contact radius of an end in contact reaches its next cell boundary
     (inf when none lies ahead): a step ends just past it (a kink of the cell lengths)."""
@@ -234,7 +234,7 @@ def horizon(c, md, ek):
     return hz
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def step_cap(h, c, md, ek, hmin):
     """Partial slip: the step ``h`` ended just past (x STEP_PAST) the next cell boundary."""
     if c[F.C_FRIC] != F.FR_PARTIAL:
@@ -243,7 +243,7 @@ def step_cap(h, c, md, ek, hmin):
     return min(h, STEP_PAST * hz + hmin) if hz > 0.0 else h
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def n_active(md, n, M):
     """Components of the state in the error norm: all but the cells out of contact."""
     ny0 = 6 + 2 * M + F.NQUAD
@@ -255,7 +255,7 @@ def n_active(md, n, M):
     return na
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def any_stuck(md, k):
     """Whether a cell of end k sticks."""
     found = False

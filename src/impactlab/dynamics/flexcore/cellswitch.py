@@ -34,13 +34,13 @@ from impactlab.dynamics.flexcore.cells import (
 from impactlab.dynamics.flexcore.rhs import evaluate
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def cell_offset(mdl, k):
     """Index of end k's first cell force in the state."""
     return 6 + 2 * mdl[3].shape[0] + F.NQUAD + k * F.NCS
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _due(mdl, md, k, y, ek):
     """Apply end k's first birth or release already due, else every due stick/slip switch;
     False when none is."""
@@ -75,7 +75,7 @@ def _due(mdl, md, k, y, ek):
     return changed
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def settle(mdl, md, y, der, ev, ek, Jn, Jt):
     """Apply every cell switch already due at y (several cells can change within one step;
     only the first event is located). False if it does not settle."""
@@ -90,7 +90,7 @@ def settle(mdl, md, y, der, ev, ek, Jn, Jt):
     return False
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def apply_cell_event(jev, mdl, md, y, ek):
     """The switch of the cell event ``jev`` (>= NEV: birth, release or a cell's stick/slip)."""
     c = mdl[2]
@@ -116,7 +116,7 @@ def apply_cell_event(jev, mdl, md, y, ek):
             to_stick(i, y, o, cm, sg, L)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def touch_cells(mdl, md, k, y, ek):
     """End k touches: its cells reset, the first born at a = 0 (``ek``: before the touch)."""
     c = mdl[2]

@@ -14,7 +14,7 @@ from impactlab.dynamics.flexcore.history import record
 from impactlab.dynamics.flexcore.rhs import evaluate
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def refresh_thresholds(mdl, md, y, K, gold, sv, dents, ek, Jn, Jt):
     """Out of contact the end moves over the flat: update its touch threshold (dent)."""
     for k in range(F.NE):
@@ -25,7 +25,7 @@ def refresh_thresholds(mdl, md, y, K, gold, sv, dents, ek, Jn, Jt):
                 evaluate(mdl, md, y, K[0], gold, ek, Jn, Jt)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def jump(mdl, md, y, t, h, K, gold, sv, dents, record_on, hist, nh, yev, yt, der, ev, ek, Jn, Jt):
     """Free flight without contact: advance in closed form when no end can touch within two
     steps. Returns (jumped, t, hist, nh)."""
@@ -55,7 +55,7 @@ def jump(mdl, md, y, t, h, K, gold, sv, dents, record_on, hist, nh, yev, yt, der
     return True, t, hist, nh
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def out_of_contact(mdl, md, y, t, h, K, gold, sv, dents, stop_mode, record_on, hist, nh, yev, yt,
                    der, ev, ek, Jn, Jt):  # fmt: skip
     """No end in contact: the end-of-sequence test (every ``F.SV_CHECK_DT``), then a free-flight

@@ -24,7 +24,7 @@ from impactlab.dynamics.flexcore.stepper import dp_step
 from impactlab.dynamics.flexcore.steps import accept, reject
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def drop(mdl, vx0, vy0, w0, rtol, t_max, stop_mode, record_on, out, contacts, dents, yfinal):
     """Simulate the drop from the first touch of end 0 until the rod leaves the flat for good.
 

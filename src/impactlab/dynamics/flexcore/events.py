@@ -23,7 +23,7 @@ from impactlab.dynamics.flexcore.rhs import evaluate
 _PENDING_ORDER = (F.EV_SEP, F.EV_TOUCH, F.EV_VN, F.EV_RELOAD, F.EV_SWITCH, F.EV_LIMIT, F.EV_FRIC)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _apply(jev, mdl, md, y, t, sv, contacts, dents, cur_con, snap, y_end, der, ev, ek, Jn, Jt):
     """The action of event ``jev`` (an end's, or a partial-slip cell's: ``jev`` >= NEV);
     returns (status, end, kind: -1 for a cell event)."""
@@ -50,7 +50,7 @@ def _apply(jev, mdl, md, y, t, sv, contacts, dents, cur_con, snap, y_end, der, e
     return st, k, kind
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def handle_events(
     jev, mdl, md, y, t, K, gold, sv, sc, contacts, dents, cur_con, snap, y_end, der, ev, ek, Jn, Jt
 ):

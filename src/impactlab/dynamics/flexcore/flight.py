@@ -24,7 +24,7 @@ from numba import njit
 from impactlab.dynamics.flexcore import layout as F
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def flight(mdl, y, tau, out):
     """The exact force-free motion of y over tau [s] into ``out`` (damping work included)."""
     c, om, zeta = mdl[2], mdl[3], mdl[6]
@@ -63,7 +63,7 @@ def flight(mdl, y, tau, out):
     out[iq + 2] = y[iq + 2] + de
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def bounds(om, Ue, We, M, y, k):
     """(B_k [m], V_k [m/s]): bounds on |elastic displacement| and |elastic velocity| of end
     k's sphere centre for all future free flight."""
@@ -77,7 +77,7 @@ def bounds(om, Ue, We, M, y, k):
     return math.sqrt(b[0] ** 2 + b[1] ** 2), math.sqrt(b[2] ** 2 + b[3] ** 2)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def rigid_clearance(c, y, M, k, tau):
     """Height [m] of end k's lowest point above the original flat in rigid ballistic flight
     from y after tau (undeformed geometry, the elastic part excluded)."""
@@ -90,7 +90,7 @@ def rigid_clearance(c, y, M, k, tau):
     return d * c[F.C_S0] + Y + sk * math.sin(th)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def first_below(c, y, M, k, band, tau_max, eps):
     """First tau in [0, tau_max] where the rigid clearance of end k minus ``band`` may drop to
     <= eps (conservative advancement with the speed bound |v_y - g tau| + |spin| L/2);
@@ -116,7 +116,7 @@ def first_below(c, y, M, k, band, tau_max, eps):
     return tau
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def left_for_good(mdl, y, last_end, stop_mode, cap, eps):
     """The end-of-sequence test (module docstring): (done, next_end, next_time [s])."""
     c, om, Ue, We = mdl[2], mdl[3], mdl[7], mdl[8]
@@ -149,7 +149,7 @@ def left_for_good(mdl, y, last_end, stop_mode, cap, eps):
     return True, nxt, tnx
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def jump_length(mdl, y, ek):
     """A time [s] over which no end can reach the flat: 0.9 of the clearance of each end over
     a bound on its approach speed (0 when an end is at or below the surface)."""

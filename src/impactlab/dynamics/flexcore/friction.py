@@ -34,7 +34,7 @@ from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.kinematics import stick_ratio
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def rigid_mode(md, k):
     """End k's mode as the rigid core's mode tuple (``core.layout.M_*``: phase, delta_m,
     delta_r, R_r, friction mode, compressing, impulse-ratio sign, radius factor)."""
@@ -50,13 +50,13 @@ def rigid_mode(md, k):
     )
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def stiffness(law, p, c, md, k, delta):
     """Mindlin k_t = 8 G* a of end k on its branch [N/m]."""
     return 8.0 * c[F.C_GS] * radius(law, p, rigid_mode(md, k), delta)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def tangential(law, p, c, md, k, q, delta, fn):
     """(F_t [N], k_t [N/m]) of end k in contact (mu > 0) without the Coulomb stick force (added
     by the mobility system); q: the end's Mindlin state."""
@@ -75,7 +75,7 @@ def tangential(law, p, c, md, k, q, delta, fn):
     return (-fm * mu * fn if fm != 0.0 else 0.0), 0.0
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def state_rate(c, md, k, kt, vt):
     """dQ_t/dt of end k (Mindlin without gross slip; 0 otherwise)."""
     if c[F.C_FRIC] == FR_MINDLIN and md[k, F.MD_FM] == 0.0:
@@ -83,7 +83,7 @@ def state_rate(c, md, k, kt, vt):
     return 0.0
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def friction_event(law, p, c, md, k, q, ek):
     """The stick/slip event function of end k in contact (as the rigid core's)."""
     fric = c[F.C_FRIC]
@@ -108,7 +108,7 @@ def friction_event(law, p, c, md, k, q, ek):
     return fm * dft + mu * dfn
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def coulomb_decide(c, M, Jn, Jt, k, Fn, Ft_stick, mu):
     """Friction mode of end k at v_t = 0: 0 (stick) if |F_stick| <= mu F_n, else the slip
     direction opposite to the needed force; at F_n = 0 the ratio as F_n -> 0+ decides."""
@@ -122,7 +122,7 @@ def coulomb_decide(c, M, Jn, Jt, k, Fn, Ft_stick, mu):
     return -1.0 if r > 0.0 else 1.0
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def initial_mode(p, c, M, md, k, vt, vn, Jn, Jt):
     """The friction mode of end k at touch (mu > 0): Coulomb the sign of v_t or the F_n -> 0+
     decision; impulse_ratio the sign of F_t; Mindlin gross slip when the Hertzian start ratio
@@ -152,7 +152,7 @@ def initial_mode(p, c, M, md, k, vt, vn, Jn, Jt):
         md[k, F.MD_FM] = 1.0 if vt > 0.0 else -1.0
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def radius_factor(law, p, c, dm, dr, rr):
     """Mindlin and partial slip: a_loading(delta_m) / a_unloading(delta_m), the factor that
     makes the contact radius continuous at the turning point (as the rigid core's
@@ -164,7 +164,7 @@ def radius_factor(law, p, c, dm, dr, rr):
     return a_load / a_unl if a_unl > 0.0 else 1.0
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def mindlin_switch(c, md, k, y, iqt, ek):
     """The Mindlin stick/slip switch of end k (the rigid core's ``friction_switch``)."""
     fm, q = friction_switch(
@@ -188,7 +188,7 @@ def mindlin_switch(c, md, k, y, iqt, ek):
     y[iqt + k] = q
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def mindlin_after(mdl, md, k, kind, y, ek, sc, sv):
     """Mindlin: the state Q_t of end k and its error scale after the event ``kind`` (applied
     to ``md``; ``ek`` holds the quantities before it). Touch and separation: Q_t = 0; turning

@@ -10,7 +10,7 @@ from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.kinematics import mechanical_energy
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def record(hist, nh, t, mdl, y, ek, e0):
     """Append the row at time t (state y, evaluated quantities ek; e0: initial energy [J]);
     returns (hist, nh), the array grown when full."""

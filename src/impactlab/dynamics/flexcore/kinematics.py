@@ -21,7 +21,7 @@ from impactlab.contact.kernels import P_ESTAR, loading_force, unloading_force
 from impactlab.dynamics.flexcore import layout as F
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def end_kinematics(c, Ue, We, Pe, y, k, Jn, Jt):
     """(delta [m], x_S [m], v_n [m/s], v_t [m/s], jdot [m/s^2]) of end k at state y; fills
     the rows Jn[k], Jt[k] (length 3 + M). c: constants; Ue, We, Pe: modal end values (the
@@ -82,7 +82,7 @@ def end_kinematics(c, Ue, We, Pe, y, k, Jn, Jt):
     return delta, xS, vn, vt, jdot
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def normal_force(law, p, md, k, delta):
     """Normal force [N] of end k at interference delta in its mode (0 out of contact)."""
     if md[k, F.MD_IN] == 0.0:
@@ -92,7 +92,7 @@ def normal_force(law, p, md, k, delta):
     return unloading_force(p[P_ESTAR], md[k, F.MD_RR], md[k, F.MD_DR], delta)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def mobility(c, M, Ja, Jb, ka, kb):
     """J_a M^-1 J_b^T for row ka of Ja and row kb of Jb [1/kg]."""
     r = Ja[ka, 0] * Jb[kb, 0] / c[F.C_M] + Ja[ka, 1] * Jb[kb, 1] / c[F.C_M]
@@ -102,14 +102,14 @@ def mobility(c, M, Ja, Jb, ka, kb):
     return r
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def stick_ratio(c, M, Jn, Jt, k):
     """F_t / F_n that keeps end k sticking as F_n -> 0+ with no other force:
     -(J_t M^-1 J_n^T) / (J_t M^-1 J_t^T)."""
     return -mobility(c, M, Jt, Jn, k, k) / mobility(c, M, Jt, Jt, k, k)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def geometric_energy(Tg, ia, ib, y):
     """The cubic geometric-stiffness potential 1/2 sum T_abc q_a q_b q_c [J]."""
     E = 0.0
@@ -123,7 +123,7 @@ def geometric_energy(Tg, ia, ib, y):
     return E
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def mechanical_energy(mdl, y):
     """T + V [J]: kinetic, modal strain (with the geometric term) and gravity from the
     first-touch pose."""
@@ -140,7 +140,7 @@ def mechanical_energy(mdl, y):
     return E
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def vibration_energy(om2, M, y):
     """Modal (vibration) energy sum 1/2 (q'^2 + omega^2 q^2) [J] (linear part)."""
     iv = 3 + M

@@ -24,7 +24,7 @@ from impactlab.dynamics.flexcore.friction import friction_event, state_rate, tan
 from impactlab.dynamics.flexcore.kinematics import end_kinematics, mobility, normal_force
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def _end_forces(law, p, c, Ue, We, Pe, md, y, ek, Jn, Jt):
     """Kinematics of both ends and the contact forces without stick forces into ``ek``."""
     mu = c[F.C_MU]
@@ -50,7 +50,7 @@ def _end_forces(law, p, c, Ue, We, Pe, md, y, ek, Jn, Jt):
             ek[k, F.EK_KT] = kt
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def _geometric_forces(Tg, ia, ib, y, der, iv):
     """Subtract the geometric-stiffness forces dV_g/dq from the modal accelerations."""
     nbg = Tg.shape[1]
@@ -64,7 +64,7 @@ def _geometric_forces(Tg, ia, ib, y, der, iv):
             der[iv + 3 + ia[a]] -= 0.5 * y[3 + ib[b]] * sb
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def _accelerations(c, om2, dmp, Tg, ia, ib, md, y, der, ek, Jn, Jt):
     """Velocities and accelerations without the stick forces."""
     M = om2.shape[0]
@@ -96,7 +96,7 @@ def _accelerations(c, om2, dmp, Tg, ia, ib, md, y, der, ek, Jn, Jt):
     der[iv + 2] = aw / c[F.C_I]
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def _tangential_acceleration(ek, Jt, der, iv, M, k):
     """J_t z'' + jdot of end k (without its stick force)."""
     a = ek[k, F.EK_JDOT] + Jt[k, 0] * der[iv] + Jt[k, 1] * der[iv + 1] + Jt[k, 2] * der[iv + 2]
@@ -105,7 +105,7 @@ def _tangential_acceleration(ek, Jt, der, iv, M, k):
     return a
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def _stick_forces(c, M, md, der, ek, Jt):
     """Add the stick forces of the sticking ends (a 1x1 or 2x2 system) to ``der`` and
     ``ek``. Two sticking ends whose tangential constraints are redundant (singular 2x2
@@ -151,7 +151,7 @@ def _stick_forces(c, M, md, der, ek, Jt):
             der[iv + 3 + j] += Jt[k, 3 + j] * f
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def _quadratures(c, dmp, md, y, der, ek):
     """Derivatives of the works and of the per-end impulses and slip integrals."""
     M = dmp.shape[0]
@@ -187,7 +187,7 @@ def _quadratures(c, dmp, md, y, der, ek):
     der[iq + 2] = wd
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def _events(law, p, c, md, y, ev, ek, M):
     """The event functions of both ends (-1 where an event cannot fire in the mode)."""
     mu = c[F.C_MU]
@@ -214,7 +214,7 @@ def _events(law, p, c, md, y, ev, ek, M):
             ev[e0 + F.EV_FRIC] = friction_event(law, p, c, md, k, y[iqt + k], ek)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def rates(law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, y, der, ev, ek, Jn, Jt):
     """Derivative ``der`` and event values ``ev`` at state y in the mode table md; ``ek``
     (F.NE, NEK) receives per end the evaluated quantities (``layout.EK_*``), Jn and Jt the
@@ -232,7 +232,7 @@ def rates(law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, y, der, ev, ek, Jn, J
             cell_events(c, md, k, ek, ev)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def evaluate(mdl, md, y, der, ev, ek, Jn, Jt):
     """``rates`` with the model tuple ``mdl`` (package docstring)."""
     law, p, c, _om, om2, dmp, _zeta, Ue, We, Pe, Tg, ia, ib = mdl

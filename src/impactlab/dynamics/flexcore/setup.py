@@ -17,7 +17,7 @@ from impactlab.dynamics.flexcore.friction import initial_mode
 from impactlab.dynamics.flexcore.rhs import evaluate
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def cell_scales(c, vn0, fscale, sc, o):
     """Partial slip: the cells' error scales (state from ``o``) and their parameters (as the
     slipcore's: G_1 = 4 G*, the slip-rate and force hystereses; the width is set in Python)."""
@@ -30,7 +30,7 @@ def cell_scales(c, vn0, fscale, sc, o):
         c[b + CP_FTOL] = 1e-13 * fscale
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def scales(mdl, vx0, vy0, w0, sc, sv):
     """Error scales of the state components (as the rigid engine: Hertzian depth, time and
     velocity scales) and the tolerances of the run."""
@@ -87,7 +87,7 @@ def scales(mdl, vx0, vy0, w0, sc, sv):
     sv[F.SV_EPS_CLEAR] = 1e-3 * dstar
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def first_touch(mdl, md, y, vx0, vy0, w0, sv, contacts, dents, cur_con, der, ev, ek, Jn, Jt):
     """The state and the mode table at the first touch of end 0 (on virgin flat)."""
     c = mdl[2]
@@ -120,7 +120,7 @@ def first_touch(mdl, md, y, vx0, vy0, w0, sv, contacts, dents, cur_con, der, ev,
     sv[F.SV_NCON] = 1
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def workspace(n, M, nev):
     """The run state ``sv`` (layout.SV_*, with the initial status and horizon), the mode table,
     the state, the error scales and the work arrays of a state of length n (M modes, nev

@@ -29,7 +29,7 @@ from impactlab.dynamics.flexcore.cells import n_active
 from impactlab.dynamics.flexcore.rhs import rates
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def dense_coeffs(K, Q, n):
     """Coefficients Q (n, 4) of the dense-output polynomial: Q = K^T DENSE_P (stage by stage,
     so each entry sums its 7 terms in stage order)."""
@@ -40,7 +40,7 @@ def dense_coeffs(K, Q, n):
                 Q[i, j] += K[st, i] * DENSE_P[st, j]
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def dense(y0, h, theta, Q, out, n):
     """The dense output at y0 + theta h into ``out`` (the quartic in theta by Horner)."""
     for i in range(n):
@@ -48,7 +48,7 @@ def dense(y0, h, theta, Q, out, n):
         out[i] = y0[i] + h * theta * poly
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def dp_step(mdl, md, y, K, h, rtol, sc, st, ynew, ev, ek, Jn, Jt):
     """One Dormand-Prince step of size h from y (K[0] = f(y)): fills K[1..6], ``ynew`` (5th
     order) and ``ev``/``ek`` at ynew; returns the scaled RMS error norm (error scale of
@@ -74,7 +74,7 @@ def dp_step(mdl, md, y, K, h, rtol, sc, st, ynew, ev, ek, Jn, Jt):
     return math.sqrt(err / n_active(md, n, om2.shape[0]))
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def integrate_to(mdl, md, y, k0, H, rtol, sc, out, ev, ek, Jn, Jt):
     """Integrate from y over exactly H with error control into ``out`` (the state at an
     event); k0 = f(y). Returns the number of steps."""
@@ -103,7 +103,7 @@ def integrate_to(mdl, md, y, k0, H, rtol, sc, out, ev, ek, Jn, Jt):
     return cnt
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def illinois(a, fa, b, fb, side, th, f):
     """One Illinois update of the bracket [a, b] (fa <= 0 < fb) with the value f at th: the
     new (a, fa, b, fb, side), the stale end's value halved when the same side moves twice."""
@@ -112,7 +112,7 @@ def illinois(a, fa, b, fb, side, th, f):
     return th, f, b, (0.5 * fb if side == -1 else fb), -1
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def locate(jev, g0, g1, mdl, md, y0, h, Q, yt, der, ev, ek, Jn, Jt, shift=0.0):
     """theta in (0, 1] where event ``jev`` fires between y0 and y0 + h: the root of
     g - ``shift`` (g the event function; ``shift`` > 0 locates the level a missed touch

@@ -16,7 +16,7 @@ from impactlab.dynamics.flexcore.rhs import evaluate
 from impactlab.dynamics.flexcore.stepper import dense, dense_coeffs, integrate_to, locate
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def _missed_touch(md, sv, gold, gnew, k):
     """The touch of end k (out of contact) that started the step on the wrong side of zero
     (0 < g <= the invariant's tolerance, e.g. after a grazing event recomputed a hair inside
@@ -26,7 +26,7 @@ def _missed_touch(md, sv, gold, gnew, k):
     return md[k, F.MD_IN] == 0.0 and 0.0 < gold[j] <= tol < gnew[j]
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def first_event(mdl, md, y, h, K, Q, gold, gnew, sv, record_on, yt, der, ev, ek, Jn, Jt):
     """(jev, theta, fired): the earliest event crossed in the step (-1: none) and where; a
     touch that began the step within the invariant's tolerance past zero fires where it
@@ -62,7 +62,7 @@ def first_event(mdl, md, y, h, K, Q, gold, gnew, sv, record_on, yt, der, ev, ek,
     return jev, theta, fired
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def missed_contact(md, sv, ek, jev):
     """The contact invariant after a step ending at event ``jev``: True when an end out of
     contact (other than one touching at ``jev``) lies below its touch threshold (its dent's
@@ -76,7 +76,7 @@ def missed_contact(md, sv, ek, jev):
     return False
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def step_stats(mdl, md, t, tend, sv, contacts, dents, cur_con, ek):
     """Per-contact and run maxima, stick time and dent extents after a step to ``tend``;
     False on a non-finite force."""
@@ -102,7 +102,7 @@ def step_stats(mdl, md, t, tend, sv, contacts, dents, cur_con, ek):
     return ok
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def record_inside(mdl, md, y, t, h, theta, Q, sv, hist, nh, yt, der, ev, ek, Jn, Jt):
     """Record the dense points at 1/4, 1/2, 3/4 of the step that lie before ``theta``."""
     for jj in range(1, 4):
@@ -115,7 +115,7 @@ def record_inside(mdl, md, y, t, h, theta, Q, sv, hist, nh, yt, der, ev, ek, Jn,
     return hist, nh
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def reject(h, err, sv):
     """The step size after a rejected step (error norm ``err``); 0 with ``sv[F.SV_STATUS]`` set
     when it underflows."""
@@ -126,7 +126,7 @@ def reject(h, err, sv):
     return h
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def accept(mdl, md, y, t, h, rtol, sc, K, Q, gold, gnew, ynew, yev, sv, contacts, dents, cur_con,
            record_on, hist, nh, yt, der, ev, ek, Jn, Jt):  # fmt: skip
     """An accepted step from (t, y): cut at the first event it crosses (the state there into
