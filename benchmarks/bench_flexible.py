@@ -31,7 +31,7 @@ from bench_engine import cpu_model  # this folder is on sys.path when run as a s
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.dynamics.drop import simulate_drop
 from impactlab.dynamics.flex_reference import drop_reference
-from impactlab.dynamics.flexcore.layout import DEFAULT_RTOL
+from impactlab.dynamics.flexcore.layout import DROP_DEFAULT_RTOL
 
 ROOT = Path(__file__).resolve().parent
 #: angle [deg] -> (vy [m/s], mu)
@@ -93,7 +93,7 @@ def main() -> None:
             "body": "FlexibleRod.paper() (Timoshenko, 8+2 axial, 12 bending)",
             "law": "ghaednia",
             "friction": "coulomb",
-            "rtol": DEFAULT_RTOL,
+            "rtol": DROP_DEFAULT_RTOL,
             "fe_elements": 80,
         },
         "angles": per_angle,

@@ -94,7 +94,7 @@ def run_case(case: dict[str, Any], history: bool = False) -> Any:
     return simulate_drop(FlexibleRod.paper(**case["body"]), history=history, **kw)
 
 
-def anomalies(r: Any, rtol: float = F.DEFAULT_RTOL) -> list[str]:
+def anomalies(r: Any, rtol: float = F.DROP_DEFAULT_RTOL) -> list[str]:
     """What is wrong with a returned result (``[]``: nothing)."""
     bad = []
     if not r.ok:

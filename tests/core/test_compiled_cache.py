@@ -14,7 +14,16 @@ from types import SimpleNamespace
 import pytest
 
 from impactlab import _compile_notice
-from impactlab._compiled_cache import compiled_cache_dir, default_cache_root
+from impactlab._compiled_cache import (
+    ENGINE_SOURCES,
+    compiled_cache_dir,
+    default_cache_root,
+    engine_source_hash,
+    prune_engine_folders,
+    source_hash,
+)
+
+ENGINE = f"engine-{engine_source_hash()}"
 
 
 def _env_without(monkeypatch: pytest.MonkeyPatch, *names: str) -> None:
@@ -25,23 +34,25 @@ def _env_without(monkeypatch: pytest.MonkeyPatch, *names: str) -> None:
 def test_numba_cache_dir_wins(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
     monkeypatch.setenv("NUMBA_CACHE_DIR", str(tmp_path / "n"))
     monkeypatch.setenv("IMPACTLAB_CACHE_DIR", str(tmp_path / "i"))
-    assert compiled_cache_dir() == tmp_path / "n"
+    assert compiled_cache_dir() == tmp_path / "n" / ENGINE
+    monkeypatch.setenv("NUMBA_CACHE_DIR", str(tmp_path / "n" / ENGINE))  # as children inherit it
+    assert compiled_cache_dir() == tmp_path / "n" / ENGINE
 
 
 def test_impactlab_cache_dir_next(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
     _env_without(monkeypatch, "NUMBA_CACHE_DIR")
     monkeypatch.setenv("IMPACTLAB_CACHE_DIR", str(tmp_path / "i"))
-    assert compiled_cache_dir() == tmp_path / "i" / "numba"
+    assert compiled_cache_dir() == tmp_path / "i" / "numba" / ENGINE
     assert default_cache_root() == tmp_path / "i"
 
 
 def test_xdg_then_home(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
     _env_without(monkeypatch, "NUMBA_CACHE_DIR", "IMPACTLAB_CACHE_DIR")
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "xdg"))
-    assert compiled_cache_dir() == tmp_path / "xdg" / "impactlab" / "numba"
+    assert compiled_cache_dir() == tmp_path / "xdg" / "impactlab" / "numba" / ENGINE
     monkeypatch.delenv("XDG_CACHE_HOME")
     monkeypatch.setenv("HOME", str(tmp_path / "home"))
-    assert compiled_cache_dir() == tmp_path / "home" / ".cache" / "impactlab" / "numba"
+    assert compiled_cache_dir() == tmp_path / "home" / ".cache" / "impactlab" / "numba" / ENGINE
 
 
 def test_every_entry_point_shares_one_folder(tmp_path: Path) -> None:
@@ -62,10 +73,84 @@ def test_every_entry_point_shares_one_folder(tmp_path: Path) -> None:
     out = subprocess.run(
         [sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True
     ).stdout.split("\n")
-    want = str(tmp_path / "impactlab" / "numba")
+    want = str(tmp_path / "impactlab" / "numba" / ENGINE)
     assert out[0] == want
     assert out[1] == want
     assert out[2].startswith(want)
+
+
+def test_a_changed_engine_source_gets_a_new_folder(tmp_path: Path) -> None:
+    """numba checks a cached function only against its own file: a constant changed in another
+    file must change the folder, so nothing stale is linked."""
+    (tmp_path / "core").mkdir()
+    (tmp_path / "core" / "layout.py").write_text("C_MU = 8\n")
+    (tmp_path / "core" / "rhs.py").write_text("def f(): ...\n")
+    (tmp_path / "cli.py").write_text("x = 1\n")
+    sources = ("core",)
+    before = source_hash(tmp_path, sources)
+    (tmp_path / "cli.py").write_text("x = 2\n")  # not engine source
+    assert source_hash(tmp_path, sources) == before
+    (tmp_path / "core" / "layout.py").write_text("C_MU = 6\n")
+    assert source_hash(tmp_path, sources) != before
+
+
+def test_every_compiled_function_and_what_it_reads_is_engine_source() -> None:
+    """ENGINE_SOURCES covers every module with a compiled function and every impactlab module
+    such a module imports (followed to the end)."""
+    import ast
+    import re
+
+    package = Path(__file__).resolve().parents[2] / "src" / "impactlab"
+
+    def covered(f: Path) -> bool:
+        rel = f.relative_to(package).as_posix()
+        return any(rel == s or rel.startswith(s + "/") for s in ENGINE_SOURCES)
+
+    def module_file(name: str) -> Path | None:
+        p = package.parent / Path(*name.split("."))
+        for candidate in (p.with_suffix(".py"), p / "__init__.py"):
+            if candidate.exists():
+                return candidate
+        return None
+
+    def imported(f: Path) -> set[Path]:
+        found: set[Path] = set()
+        for node in ast.walk(ast.parse(f.read_text())):
+            if isinstance(node, ast.ImportFrom) and (node.module or "").startswith("impactlab"):
+                for alias in node.names:
+                    m = module_file(f"{node.module}.{alias.name}") or module_file(str(node.module))
+                    if m is not None:
+                        found.add(m)
+        return found
+
+    compiled = re.compile(r"@njit|njit_no_refcount|= njit\(")
+    todo = [f for f in package.rglob("*.py") if compiled.search(f.read_text())]
+    assert len(todo) > 40
+    seen: set[Path] = set()
+    while todo:
+        f = todo.pop()
+        if f not in seen:
+            seen.add(f)
+            todo.extend(imported(f))
+    missing = sorted(f.relative_to(package).as_posix() for f in seen if not covered(f))
+    assert not missing, f"compiled code reads modules outside ENGINE_SOURCES: {missing}"
+
+
+def test_old_engine_folders_are_pruned(tmp_path: Path) -> None:
+    base = tmp_path / "numba"
+    old = []
+    for i in range(5):
+        p = base / f"engine-{i:016x}"
+        p.mkdir(parents=True)
+        os.utime(p, (1000.0 + i, 1000.0 + i))
+        old.append(p)
+    legacy = base / "contact_0123"
+    legacy.mkdir()
+    current = base / "engine-ffffffffffffffff"
+    removed = prune_engine_folders(current, keep=3, legacy=True)
+    assert sorted(removed) == sorted([*old[:3], legacy])
+    assert sorted(p.name for p in base.iterdir()) == [old[3].name, old[4].name]
+    assert prune_engine_folders(current, keep=3) == []  # nothing more to remove
 
 
 def _event(module: str) -> SimpleNamespace:

@@ -180,14 +180,14 @@ def _raw_drop(
         body.half_length, body.tip_radius, body.mass, b.inertia, G, math.radians(th), mu, p
     )
     mdl = model_tuple(model.law_id, p, c, b.omega, np.zeros(b.n_modes), b.U, b.W, b.Psi)
-    out = np.empty(F.N_OUT)
+    out = np.empty(F.N_DROP_OUT)
     yfinal = np.zeros(6 + 2 * b.n_modes + F.NQUAD)
     st, *_ = drop(
         mdl,
         0.0,
         vy,
         0.0,
-        F.DEFAULT_RTOL,
+        F.DROP_DEFAULT_RTOL,
         0.5,
         0,
         False,

@@ -57,7 +57,7 @@ def _check(r: Any) -> list[str]:
         e_end = r.rigid_kinetic_energy + r.vibration_energy + r.potential_energy
         scale = r.initial_energy + r.rigid_kinetic_energy + r.vibration_energy
         scale += abs(r.potential_energy)
-        tol = (ENERGY_GAIN_RTOL_FACTOR * F.DEFAULT_RTOL + ENERGY_ROUNDOFF) * scale
+        tol = (ENERGY_GAIN_RTOL_FACTOR * F.DROP_DEFAULT_RTOL + ENERGY_ROUNDOFF) * scale
         if e_end - r.initial_energy > tol:
             bad.append(f"energy gain {e_end / r.initial_energy - 1:.3g} E0 without a flag")
     if r.history is not None:  # the tip never deeper than its deepest dent with zero force

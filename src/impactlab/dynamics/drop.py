@@ -153,7 +153,7 @@ def _run(
     friction: tuple[int, float, float, tuple[float, float]],
     g: float,
     options: tuple[float, float, int, bool],
-    max_steps: int = F.MAX_STEPS,
+    max_steps: int = F.DROP_MAX_STEPS,
 ) -> _Run:
     """One compiled drop. state = (angle, vx, vy, spin); friction = (id, mu, G* [Pa], the cell
     widths of the ends [m] (partial slip)); options = (rtol, t_max, stop, history); the step
@@ -168,7 +168,7 @@ def _run(
         max_steps,
     )  # fmt: skip
     mdl = model_tuple(model.law_id, p, c, bm.omega, bm.zeta, bm.U, bm.W, bm.Psi, bm.geometric)
-    out = np.empty(F.N_OUT)
+    out = np.empty(F.N_DROP_OUT)
     contacts = np.zeros((F.MAX_CONTACTS, F.NCR))
     dents = np.zeros((F.MAX_DENTS, F.NDT))
     yfinal = np.zeros(state_length(bm.omega.size, fid))
@@ -250,7 +250,9 @@ def _result(
     rate: tuple[str | None, RateFactor | None],
     references: tuple[Reference, ...],
 ) -> DropResult:
-    o: dict[str, Any] = {name: float(v) for name, v in zip(F.OUTPUT_FIELDS, r.out, strict=True)}
+    o: dict[str, Any] = {
+        name: float(v) for name, v in zip(F.DROP_OUTPUT_FIELDS, r.out, strict=True)
+    }
     m = bm.rigid.mass
     vx, vy = inputs["velocity_in"]
     e0 = 0.5 * m * (vx * vx + vy * vy) + 0.5 * bm.inertia * inputs["spin_in"] ** 2
@@ -332,7 +334,10 @@ def simulate_drop(
     vx, vy = check_velocity(velocity)
     w = check_finite("spin", spin, "rad/s")
     g = gravity_value(gravity)
-    options = (check_rtol(rtol if rtol is not None else F.DEFAULT_RTOL), *check_stop(stop, t_max))
+    options = (
+        check_rtol(rtol if rtol is not None else F.DROP_DEFAULT_RTOL),
+        *check_stop(stop, t_max),
+    )
     vn0 = vy - w * bm.rigid.half_length * math.cos(th)
     if not vn0 < 0.0:
         raise ValueError(
@@ -352,7 +357,7 @@ def simulate_drop(
 
     def run(model: ContactModel, record: bool = False) -> _Run:
         widths = (math.nan, math.nan)
-        max_steps = F.MAX_STEPS
+        max_steps = F.DROP_MAX_STEPS
         if fid == PARTIAL_SLIP:  # the cells span the contact radius of a Mindlin pre-pass
             pre = _run(bm, model, (th, vx, vy, w), (MINDLIN, mu_run, gstar, widths), g,
                        (*options, False))  # fmt: skip

@@ -70,7 +70,7 @@ def status_error(status: int, model: ContactModel, out: np.ndarray | None = None
         "impact, a jammed friction contact or too strong gravity); lower the impact velocity, "
         "mu or gravity, or choose another law",
         F.ST_TMAX: f"{where}: raise t_max",
-        F.ST_MAX_STEPS: f"{where} (the limit: {F.MAX_STEPS}; with partial slip "
+        F.ST_MAX_STEPS: f"{where} (the limit: {F.DROP_MAX_STEPS}; with partial slip "
         f"{F.PARTIAL_STEP_FACTOR} times the steps of its Mindlin pre-pass, at least "
         f"{F.PARTIAL_MIN_STEPS}): a long, creeping contact (resting, rocking or rolling); try "
         "friction='mindlin'",

@@ -125,7 +125,7 @@ def _from_row(cls: type[_R], row: np.ndarray, columns: tuple[int, ...]) -> _R:
 
 @dataclass(frozen=True, eq=False)
 class DropHistory:
-    """The time history of a drop: columns ``impactlab.dynamics.flexcore.layout.HISTORY_FIELDS``
+    """The time history of a drop: columns ``flexcore.layout.DROP_HISTORY_FIELDS``
     (``history["fn0"]``); the properties name the ones a figure needs."""
 
     data: np.ndarray = field(repr=False)
@@ -139,9 +139,9 @@ class DropHistory:
         return int(self.data.shape[0])
 
     def __getitem__(self, name: str) -> np.ndarray:
-        if name not in F.HISTORY_FIELDS:
-            raise KeyError(f"unknown history column {name!r}; known: {F.HISTORY_FIELDS}")
-        return self.data[:, F.HISTORY_FIELDS.index(name)]
+        if name not in F.DROP_HISTORY_FIELDS:
+            raise KeyError(f"unknown history column {name!r}; known: {F.DROP_HISTORY_FIELDS}")
+        return self.data[:, F.DROP_HISTORY_FIELDS.index(name)]
 
     @property
     def t(self) -> np.ndarray:
@@ -169,7 +169,7 @@ class DropHistory:
         return -self["delta0"]
 
     def __repr__(self) -> str:
-        return f"DropHistory({len(self)} rows: {', '.join(F.HISTORY_FIELDS)})"
+        return f"DropHistory({len(self)} rows: {', '.join(F.DROP_HISTORY_FIELDS)})"
 
 
 def _contact_text(c: ContactRecord) -> str:
@@ -349,7 +349,7 @@ class DropResult:
         d["energy_balance"] = self.energy_balance
         d["references"] = [str(r) for r in self.references]
         if include_history and self.history is not None:
-            d["history"] = {k: self.history[k].tolist() for k in F.HISTORY_FIELDS}
+            d["history"] = {k: self.history[k].tolist() for k in F.DROP_HISTORY_FIELDS}
         return jsonable(d)
 
     def _rows(self) -> list[tuple[str, str, str]]:

@@ -23,15 +23,11 @@ Modules, lowest first:
 - ``driver``: ``impact`` (one impact: initialisation, step loop, results at separation).
 - ``atomic``: ``fetch_add``, the atomic counter of the batch's work queue.
 - ``batch``: ``impact_batch`` (parallel, dynamically scheduled blocks) and ``residual_caps``.
-- ``_cache``: flushes numba's disk cache when any source the core depends on changes.
 """
 
 from __future__ import annotations
 
-from impactlab.dynamics.core import _cache
 from impactlab.dynamics.core.batch import impact_batch, residual_caps
 from impactlab.dynamics.core.driver import impact
-
-_cache.refresh(_cache.dispatchers(), "core")
 
 __all__ = ["impact", "impact_batch", "residual_caps"]

@@ -1,8 +1,8 @@
 """Index layout of the compiled core's vectors: state, constants, mode, events, outputs and
 history columns, plus the friction ids and the integration limits.
 
-numba freezes these module constants into the machine code (the cache fingerprint in
-``impactlab.dynamics.core._cache`` covers this file and ``impactlab.schema``). The output and
+numba freezes these module constants into the machine code (the cache folder is keyed by a
+hash of every engine source, ``impactlab._compiled_cache``). The output and
 history names come from ``impactlab.schema``, the one table of result fields.
 """
 

@@ -4,8 +4,8 @@ and re-contact until the rod leaves the flat for good.
 
 It imports only numpy, numba, math, ``impactlab.contact.kernels``, ``impactlab.schema``, the
 Dormand-Prince tableau of ``impactlab.dynamics.core.integrator``, the rigid core's friction
-kernels and layout constants (``core.friction``, ``core.normal``, ``core.layout``) and the
-core's disk-cache guard ``impactlab.dynamics.core._cache``. The model and the
+kernels, layout constants and status codes (``core.friction``, ``core.normal``,
+``core.layout``, ``core.status``). The model and the
 algorithm are documented in ``docs/flexible.md``; the Python API is
 ``impactlab.dynamics.drop.simulate_drop``.
 
@@ -19,7 +19,7 @@ inputs from Python) and ``driver`` (``drop``: the event loop).
 
 Every compiled function takes the model as one tuple
 ``mdl = (law, p, c, om, om2, dmp, zeta, Ue, We, Pe, Tg, ia, ib)``:
-the contact law id and its parameter vector, the constants vector (``layout.C_*``), the modal
+the contact law id and its parameter vector, the constants vector (``layout.FC_*``), the modal
 circular frequencies, their squares, the damping coefficients 2 zeta omega, the damping ratios,
 the modal end values U, W, Psi (NE, M) and the geometric-stiffness tensor with its indices
 (``model.model_tuple`` builds it).
@@ -27,25 +27,6 @@ the modal end values U, W, Psi (NE, M) and the geometric-stiffness tensor with i
 
 from __future__ import annotations
 
-import hashlib
-from pathlib import Path
-
-from impactlab.dynamics.core import _cache
 from impactlab.dynamics.flexcore.driver import drop
-
-
-def _fingerprint() -> str:
-    """The core's dependency fingerprint (contact kernels, the core's modules, bodies, schema)
-    extended by every module of this package."""
-    h = hashlib.sha256(_cache.fingerprint().encode())
-    for f in sorted(Path(__file__).resolve().parent.glob("*.py")):
-        h.update(f.name.encode())
-        h.update(f.read_bytes())
-    return h.hexdigest()
-
-
-# numba invalidates a cached function only when its own file changes, but ``drop`` links the
-# whole package and the contact kernels: flush the package's cache when any of them changes.
-_cache.refresh(_cache.dispatchers(("impactlab.dynamics.flexcore.",)), "flexcore", _fingerprint())
 
 __all__ = ["drop"]

@@ -15,7 +15,7 @@ offset and per end; see docs/flexible.md).
 
 Per end k the cell modes and slip signs are columns of the mode table (``MD_CM``, ``MD_SG``),
 the limits, their rates and the forces columns of ``ek`` (``EK_L``, ``EK_LD``, ``EK_F``), the
-cell parameters (``CP_*``) a slice of the constants vector at ``C_CP + k NCP``.
+cell parameters (``CP_*``) a slice of the constants vector at ``FC_CP + k NFCP``.
 """
 
 from __future__ import annotations
@@ -101,7 +101,7 @@ def cell_switch(i, cm, sg, cp, L, Ld, f, ar, ad, vs):
 @njit(cache=True, inline="always", error_model="numpy")
 def views(c, md, ek, k):
     """End k's cell modes, signs, parameters, limits, limit rates and forces (array views)."""
-    cp = c[F.C_CP + k * F.NCP : F.C_CP + (k + 1) * F.NCP]
+    cp = c[F.FC_CP + k * F.NFCP : F.FC_CP + (k + 1) * F.NFCP]
     cm = md[k, F.MD_CM : F.MD_CM + F.NCS]
     sg = md[k, F.MD_SG : F.MD_SG + F.NCS]
     L = ek[k, F.EK_L : F.EK_L + F.NCS]
@@ -125,7 +125,7 @@ def cell_forces(law, p, c, md, k, y, o, ek):
     ek[k, F.EK_AD] = ad
     cm, sg, cp, L, Ld, f = views(c, md, ek, k)
     dx = cp[CP_DX]
-    mu = c[F.C_MU]
+    mu = c[F.FC_MU]
     Ft = 0.0
     for i in range(n_in(cm)):
         L[i], Ld[i] = limits(i, dx, mu, Fn, Fd, ar, ad)
@@ -154,8 +154,8 @@ def cell_rates(c, md, k, o, ek, der):
 @njit(cache=True, error_model="numpy")
 def cell_events(c, md, k, ek, ev):
     """End k's cell events into ev[NEV + k NEVC:] (-1 where none can fire)."""
-    e0 = F.NEV + k * F.NEVC
-    for i in range(F.NEVC):
+    e0 = F.NFEV + k * F.NFEVC
+    for i in range(F.NFEVC):
         ev[e0 + i] = -1.0
     if md[k, F.MD_IN] == 0.0:
         return
@@ -165,11 +165,11 @@ def cell_events(c, md, k, ek, ev):
     ad = ek[k, F.EK_AD]
     dx = cp[CP_DX]
     if nin < F.NCS:
-        ev[e0 + F.G_BIRTH] = ar - nin * dx
+        ev[e0 + F.FG_BIRTH] = ar - nin * dx
     if nin > 1:
-        ev[e0 + F.G_REL] = (nin - 1) * dx - ar
+        ev[e0 + F.FG_REL] = (nin - 1) * dx - ar
     for i in range(nin):
-        ev[e0 + F.G_CELL + i] = cell_switch(i, cm, sg, cp, L, Ld, f, ar, ad, ek[k, F.EK_VT])
+        ev[e0 + F.FG_CELL + i] = cell_switch(i, cm, sg, cp, L, Ld, f, ar, ad, ek[k, F.EK_VT])
 
 
 @njit(cache=True, error_model="numpy")
@@ -224,7 +224,7 @@ def horizon(c, md, ek):
             continue
         cm = md[k, F.MD_CM : F.MD_CM + F.NCS]
         nin = n_in(cm)
-        dx = c[F.C_CP + k * F.NCP + CP_DX]
+        dx = c[F.FC_CP + k * F.NFCP + CP_DX]
         ar = ek[k, F.EK_A]
         ad = ek[k, F.EK_AD]
         if ad > 0.0 and nin < F.NCS:
@@ -237,7 +237,7 @@ def horizon(c, md, ek):
 @njit(cache=True, error_model="numpy")
 def step_cap(h, c, md, ek, hmin):
     """Partial slip: the step ``h`` ended just past (x STEP_PAST) the next cell boundary."""
-    if c[F.C_FRIC] != F.FR_PARTIAL:
+    if c[F.FC_FRIC] != F.FR_PARTIAL:
         return h
     hz = horizon(c, md, ek)
     return min(h, STEP_PAST * hz + hmin) if hz > 0.0 else h

@@ -54,7 +54,7 @@ def _due(mdl, md, k, y, ek):
     vs = ek[k, F.EK_VT]
     if nin < F.NCS and ad > 0.0 and ar > nin * dx + 1e-9 * dx:
         fn, vn = ek[k, F.EK_FN], ek[k, F.EK_VN]
-        birth(nin, y, o, cm, sg, cp, c[F.C_MU], mdl[1][P_ESTAR], fn, vn, vs, ar, ad)
+        birth(nin, y, o, cm, sg, cp, c[F.FC_MU], mdl[1][P_ESTAR], fn, vn, vs, ar, ad)
         return True
     if nin > 1 and ad < 0.0 and ar < (nin - 1) * dx - 1e-9 * dx:
         cm[nin - 1] = OUT
@@ -94,22 +94,22 @@ def settle(mdl, md, y, der, ev, ek, Jn, Jt):
 def apply_cell_event(jev, mdl, md, y, ek):
     """The switch of the cell event ``jev`` (>= NEV: birth, release or a cell's stick/slip)."""
     c = mdl[2]
-    k = (jev - F.NEV) // F.NEVC
-    kind = (jev - F.NEV) % F.NEVC
+    k = (jev - F.NFEV) // F.NFEVC
+    kind = (jev - F.NFEV) % F.NFEVC
     o = cell_offset(mdl, k)
     cm, sg, cp, L, _Ld, _f = views(c, md, ek, k)
     nin = n_in(cm)
-    if kind == F.G_BIRTH:
+    if kind == F.FG_BIRTH:
         if nin < F.NCS:
             fn, vn, vs = ek[k, F.EK_FN], ek[k, F.EK_VN], ek[k, F.EK_VT]
             ar, ad = ek[k, F.EK_A], ek[k, F.EK_AD]
-            birth(nin, y, o, cm, sg, cp, c[F.C_MU], mdl[1][P_ESTAR], fn, vn, vs, ar, ad)
-    elif kind == F.G_REL:
+            birth(nin, y, o, cm, sg, cp, c[F.FC_MU], mdl[1][P_ESTAR], fn, vn, vs, ar, ad)
+    elif kind == F.FG_REL:
         if nin > 1:
             cm[nin - 1] = OUT
             y[o + nin - 1] = 0.0
     else:
-        i = kind - F.G_CELL
+        i = kind - F.FG_CELL
         if cm[i] == STICK:
             to_slip(i, y, o, cm, sg, L)
         elif cm[i] == SLIP:
@@ -122,8 +122,8 @@ def touch_cells(mdl, md, k, y, ek):
     c = mdl[2]
     o = cell_offset(mdl, k)
     reset(md, k, y, o)
-    if not c[F.C_MU] > 0.0:
+    if not c[F.FC_MU] > 0.0:
         return
     cm, sg, cp, _L, _Ld, _f = views(c, md, ek, k)
     vn, vs = ek[k, F.EK_VN], ek[k, F.EK_VT]
-    birth(np.int64(0), y, o, cm, sg, cp, c[F.C_MU], mdl[1][P_ESTAR], 0.0, vn, vs, 0.0, 0.0)
+    birth(np.int64(0), y, o, cm, sg, cp, c[F.FC_MU], mdl[1][P_ESTAR], 0.0, vn, vs, 0.0, 0.0)

@@ -76,17 +76,17 @@ def pending(g, ek, md, k, kind, fric, tol_v, tol_d, tol_f):
     at one instant). The interference events also need the rate that takes them there (touch
     and reload: delta increasing; separation: decreasing). Friction: Coulomb with the
     velocity or force tolerance, Mindlin as the rigid core's restart (any positive value)."""
-    v = g[k * F.NEVK + kind]
+    v = g[k * F.NFEVK + kind]
     vn = ek[k, F.EK_VN]
-    if kind == F.EV_TOUCH:
+    if kind == F.FEV_TOUCH:
         return v > tol_d and vn < 0.0
-    if kind == F.EV_RELOAD:
+    if kind == F.FEV_RELOAD:
         return v > tol_d and vn < 0.0
-    if kind == F.EV_SEP:
+    if kind == F.FEV_SEP:
         return v > tol_d and vn > 0.0
-    if kind == F.EV_VN:
+    if kind == F.FEV_VN:
         return v > tol_v
-    if kind == F.EV_FRIC:
+    if kind == F.FEV_FRIC:
         if fric != FR_COULOMB:
             return v > 0.0
         if md[k, F.MD_FM] != 0.0:
@@ -117,7 +117,7 @@ def _reload_mode(mdl, md, dents, k, di):
     md[k, F.MD_DM] = dents[di, F.DT_DM]
     md[k, F.MD_DR] = dents[di, F.DT_DR]
     md[k, F.MD_RR] = dents[di, F.DT_RR]
-    md[k, F.MD_DSW] = c[F.C_DSW] if dents[di, F.DT_DM] < c[F.C_DSW] else math.inf
+    md[k, F.MD_DSW] = c[F.FC_DSW] if dents[di, F.DT_DM] < c[F.FC_DSW] else math.inf
     md[k, F.MD_AF] = radius_factor(
         mdl[0], mdl[1], c, dents[di, F.DT_DM], dents[di, F.DT_DR], dents[di, F.DT_RR]
     )
@@ -152,12 +152,12 @@ def on_touch(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, ek, Jn, Jt):
             return F.ST_TOO_MANY_CONTACTS
         di = int(sv[F.SV_ND])
         sv[F.SV_ND] += 1
-        new_dent(dents, di, k, ek[k, F.EK_X], c[F.C_R])
+        new_dent(dents, di, k, ek[k, F.EK_X], c[F.FC_R])
         md[k, F.MD_PH] = 0.0
         md[k, F.MD_DM] = 0.0
         md[k, F.MD_DR] = 0.0
-        md[k, F.MD_RR] = c[F.C_R]
-        md[k, F.MD_DSW] = c[F.C_DSW]
+        md[k, F.MD_RR] = c[F.FC_R]
+        md[k, F.MD_DSW] = c[F.FC_DSW]
         md[k, F.MD_AF] = 1.0
         contacts[ci, F.CR_RELOAD] = 0.0
     contacts[ci, F.CR_DENT] = di
@@ -165,7 +165,7 @@ def on_touch(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, ek, Jn, Jt):
     md[k, F.MD_IN] = 1.0
     md[k, F.MD_COMP] = 1.0
     initial_mode(mdl[1], c, M, md, k, ek[k, F.EK_VT], ek[k, F.EK_VN], Jn, Jt)
-    if c[F.C_FRIC] == F.FR_PARTIAL:
+    if c[F.FC_FRIC] == F.FR_PARTIAL:
         touch_cells(mdl, md, k, y, ek)
     b = iq + 3 + 4 * k
     for i in range(4):
@@ -227,7 +227,7 @@ def on_separation(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, y_end, e
     md[k, F.MD_IN] = 0.0
     md[k, F.MD_FM] = 0.0
     md[k, F.MD_COMP] = 0.0
-    if mdl[2][F.C_FRIC] == F.FR_PARTIAL:
+    if mdl[2][F.FC_FRIC] == F.FR_PARTIAL:
         reset(md, k, y, cell_offset(mdl, k))
     sv[F.SV_LAST_END] = k
     sv[F.SV_T_LAST_SEP] = t
@@ -243,11 +243,11 @@ def on_friction(mdl, md, y, k, der, ev, ek, Jn, Jt):
     with the stick force); from stick, slip against the needed force. Mindlin: the rigid
     core's switch (``friction.mindlin_switch``)."""
     c, M = mdl[2], mdl[3].shape[0]
-    if c[F.C_FRIC] == FR_MINDLIN:
+    if c[F.FC_FRIC] == FR_MINDLIN:
         mindlin_switch(c, md, k, y, 6 + 2 * M + F.Q_TAN, ek)
     elif md[k, F.MD_FM] != 0.0:
         md[k, F.MD_FM] = 0.0
         evaluate(mdl, md, y, der, ev, ek, Jn, Jt)
-        md[k, F.MD_FM] = coulomb_decide(c, M, Jn, Jt, k, ek[k, F.EK_FN], ek[k, F.EK_FT], c[F.C_MU])
+        md[k, F.MD_FM] = coulomb_decide(c, M, Jn, Jt, k, ek[k, F.EK_FN], ek[k, F.EK_FT], c[F.FC_MU])
     else:
         md[k, F.MD_FM] = -1.0 if ek[k, F.EK_FT] > 0.0 else 1.0

@@ -31,19 +31,19 @@ def drop(mdl, vx0, vy0, w0, rtol, t_max, stop_mode, record_on, out, contacts, de
     ``mdl``: the model tuple (package docstring); vx0, vy0 [m/s], w0 [rad/s]: rigid-body
     velocities at first touch (end 0 at delta = 0, undeformed, modes at rest); rtol: relative
     tolerance; t_max [s]; stop_mode: 0 the sequence of the tip, 1 through the other end's
-    impacts ("flight"); record_on: keep a history. Fills ``out`` (layout.N_OUT), ``contacts``
+    impacts ("flight"); record_on: keep a history. Fills ``out`` (layout.N_DROP_OUT), ``contacts``
     (MAX_CONTACTS, NCR), ``dents`` (MAX_DENTS, NDT) and ``yfinal`` (the state where the end
     criterion was met). Returns (status, n_contacts, n_dents, history, n_history).
     """
     M = mdl[3].shape[0]
-    partial = mdl[2][F.C_FRIC] == F.FR_PARTIAL
+    partial = mdl[2][F.FC_FRIC] == F.FR_PARTIAL
     n = 6 + 2 * M + F.NQUAD + (F.NE * F.NCS if partial else 0)
-    nev = F.NEV + (F.NE * F.NEVC if partial else 0)
+    nev = F.NFEV + (F.NE * F.NFEVC if partial else 0)
     sv, md, y, sc, Jn, Jt, ek, ev, gold, gnew, K, Q, st, ynew, yt, yev, der, snap = workspace(
         n, M, nev
     )
     cur_con = np.full(F.NE, -1)
-    hist = np.empty((1024 if record_on else 1, F.NH))
+    hist = np.empty((1024 if record_on else 1, F.N_DROP_HISTORY))
     nh = np.int64(0)  # not a literal: record() is compiled once, for any row count
     scales(mdl, vx0, vy0, w0, sc, sv)  # first: the cell parameters of partial slip
     sv[F.SV_TOL_MISS] = F.MISS_TOL_FACTOR * max(1e-6, rtol) * sv[F.SV_DSTAR]
@@ -54,7 +54,7 @@ def drop(mdl, vx0, vy0, w0, rtol, t_max, stop_mode, record_on, out, contacts, de
     if record_on:
         hist, nh = record(hist, nh, t, mdl, y, ek, sv[F.SV_E0])
     y_end = y.copy()  # the state right after the last separation
-    while sv[F.SV_NSTEPS] < mdl[2][F.C_MAX_STEPS]:
+    while sv[F.SV_NSTEPS] < mdl[2][F.FC_MAX_STEPS]:
         if t > t_max:
             sv[F.SV_STATUS] = F.ST_TMAX
             break
@@ -88,7 +88,7 @@ def drop(mdl, vx0, vy0, w0, rtol, t_max, stop_mode, record_on, out, contacts, de
             refresh_thresholds(mdl, md, y, K, gold, sv, dents, ek, Jn, Jt)
         else:
             sv[F.SV_NEVENTS] += 1
-            if sv[F.SV_NEVENTS] > F.MAX_EVENTS:
+            if sv[F.SV_NEVENTS] > F.DROP_MAX_EVENTS:
                 sv[F.SV_STATUS] = F.ST_TOO_MANY_EVENTS
                 break
             if not handle_events(jev, mdl, md, y, t, K, gold, sv, sc, contacts, dents, cur_con,

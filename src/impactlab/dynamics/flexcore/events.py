@@ -20,32 +20,40 @@ from impactlab.dynamics.flexcore.friction import mindlin_after
 from impactlab.dynamics.flexcore.rhs import evaluate
 
 #: The order in which simultaneous events are handled at a restart.
-_PENDING_ORDER = (F.EV_SEP, F.EV_TOUCH, F.EV_VN, F.EV_RELOAD, F.EV_SWITCH, F.EV_LIMIT, F.EV_FRIC)
+_PENDING_ORDER = (
+    F.FEV_SEP,
+    F.FEV_TOUCH,
+    F.FEV_VN,
+    F.FEV_RELOAD,
+    F.FEV_SWITCH,
+    F.FEV_LIMIT,
+    F.FEV_FRIC,
+)
 
 
 @njit(cache=True, error_model="numpy")
 def _apply(jev, mdl, md, y, t, sv, contacts, dents, cur_con, snap, y_end, der, ev, ek, Jn, Jt):
     """The action of event ``jev`` (an end's, or a partial-slip cell's: ``jev`` >= NEV);
     returns (status, end, kind: -1 for a cell event)."""
-    k = jev // F.NEVK
-    kind = jev % F.NEVK
+    k = jev // F.NFEVK
+    kind = jev % F.NFEVK
     st = F.ST_OK
-    if jev >= F.NEV:  # a partial-slip cell: birth, release or stick/slip
+    if jev >= F.NFEV:  # a partial-slip cell: birth, release or stick/slip
         apply_cell_event(jev, mdl, md, y, ek)
         return st, 0, -1
-    if kind == F.EV_LIMIT:
+    if kind == F.FEV_LIMIT:
         st = F.ST_LAW_LIMIT
-    elif kind == F.EV_TOUCH:
+    elif kind == F.FEV_TOUCH:
         st = on_touch(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, ek, Jn, Jt)
-    elif kind == F.EV_VN:
+    elif kind == F.FEV_VN:
         st = on_turn(mdl, md, k, ek[k, F.EK_DELTA], dents)
-    elif kind == F.EV_RELOAD:
+    elif kind == F.FEV_RELOAD:
         md[k, F.MD_PH] = 0.0
-    elif kind == F.EV_SWITCH:
+    elif kind == F.FEV_SWITCH:
         md[k, F.MD_DSW] = math.inf
-    elif kind == F.EV_SEP:
+    elif kind == F.FEV_SEP:
         on_separation(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, y_end, ek)
-    elif kind == F.EV_FRIC:
+    elif kind == F.FEV_FRIC:
         on_friction(mdl, md, y, k, der, ev, ek, Jn, Jt)
     return st, k, kind
 
@@ -58,7 +66,7 @@ def handle_events(
     instant (at most 8), after each (partial slip) every cell switch due
     (``cellswitch.settle``); ``sc``: the error scales (the Mindlin state's changes with its
     meaning). False (with ``sv[F.SV_STATUS]`` set) on a failure."""
-    fric = mdl[2][F.C_FRIC]
+    fric = mdl[2][F.FC_FRIC]
     for _it in range(8):
         st, k, kind = _apply(jev, mdl, md, y, t, sv, contacts, dents, cur_con, snap, y_end, der,
                              ev, ek, Jn, Jt)  # fmt: skip
@@ -76,7 +84,7 @@ def handle_events(
                 if jev < 0 and pending(
                     gold, ek, md, kk, kind2, fric, sv[F.SV_TOL_V], sv[F.SV_TOL_D], sv[F.SV_TOL_F]
                 ):
-                    jev = kk * F.NEVK + kind2
+                    jev = kk * F.NFEVK + kind2
         if jev < 0:
             break
     return True

@@ -33,7 +33,7 @@ def flight(mdl, y, tau, out):
     iq = 6 + 2 * M
     for i in range(out.shape[0]):
         out[i] = y[i]
-    g = c[F.C_G]
+    g = c[F.FC_G]
     out[0] = y[0] + y[iv] * tau
     out[1] = y[1] + y[iv + 1] * tau - 0.5 * g * tau * tau
     out[2] = y[2] + y[iv + 2] * tau
@@ -82,12 +82,12 @@ def rigid_clearance(c, y, M, k, tau):
     """Height [m] of end k's lowest point above the original flat in rigid ballistic flight
     from y after tau (undeformed geometry, the elastic part excluded)."""
     iv = 3 + M
-    d = c[F.C_D]
-    g = c[F.C_G]
+    d = c[F.FC_D]
+    g = c[F.FC_G]
     Y = y[1] + y[iv + 1] * tau - 0.5 * g * tau * tau
-    th = c[F.C_TH0] + y[2] + y[iv + 2] * tau
+    th = c[F.FC_TH0] + y[2] + y[iv + 2] * tau
     sk = -d if k == 0 else d
-    return d * c[F.C_S0] + Y + sk * math.sin(th)
+    return d * c[F.FC_S0] + Y + sk * math.sin(th)
 
 
 @njit(cache=True, error_model="numpy")
@@ -96,9 +96,9 @@ def first_below(c, y, M, k, band, tau_max, eps):
     <= eps (conservative advancement with the speed bound |v_y - g tau| + |spin| L/2);
     tau_max + 1 if it stays above."""
     iv = 3 + M
-    g = c[F.C_G]
+    g = c[F.FC_G]
     vy = y[iv + 1]
-    w = abs(y[iv + 2]) * c[F.C_D]
+    w = abs(y[iv + 2]) * c[F.FC_D]
     tau = 0.0
     for _ in range(100000):
         h = rigid_clearance(c, y, M, k, tau) - band
@@ -121,7 +121,7 @@ def left_for_good(mdl, y, last_end, stop_mode, cap, eps):
     """The end-of-sequence test (module docstring): (done, next_end, next_time [s])."""
     c, om, Ue, We = mdl[2], mdl[3], mdl[7], mdl[8]
     M = om.shape[0]
-    g = c[F.C_G]
+    g = c[F.FC_G]
     vy = y[3 + M + 1]
     tau_h = min(2.0 * vy / g if (g > 0.0 and vy > 0.0) else math.inf, cap)
     nxt = -1
@@ -162,9 +162,9 @@ def jump_length(mdl, y, ek):
         if clear <= 0.0:
             return 0.0
         B, vel = bounds(om, Ue, We, M, y, k)
-        v0 = abs(y[iv + 1]) + vel + abs(y[iv + 2]) * (c[F.C_D] + B)
+        v0 = abs(y[iv + 1]) + vel + abs(y[iv + 2]) * (c[F.FC_D] + B)
         rhs = 0.9 * clear
-        g = c[F.C_G]
+        g = c[F.FC_G]
         if g > 0.0:
             dt = (-v0 + math.sqrt(v0 * v0 + 4.0 * g * rhs)) / (2.0 * g)
         else:

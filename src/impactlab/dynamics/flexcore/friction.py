@@ -53,16 +53,16 @@ def rigid_mode(md, k):
 @njit(cache=True, inline="always", error_model="numpy")
 def stiffness(law, p, c, md, k, delta):
     """Mindlin k_t = 8 G* a of end k on its branch [N/m]."""
-    return 8.0 * c[F.C_GS] * radius(law, p, rigid_mode(md, k), delta)
+    return 8.0 * c[F.FC_GS] * radius(law, p, rigid_mode(md, k), delta)
 
 
 @njit(cache=True, inline="always", error_model="numpy")
 def tangential(law, p, c, md, k, q, delta, fn):
     """(F_t [N], k_t [N/m]) of end k in contact (mu > 0) without the Coulomb stick force (added
     by the mobility system); q: the end's Mindlin state."""
-    fric = c[F.C_FRIC]
+    fric = c[F.FC_FRIC]
     fm = md[k, F.MD_FM]
-    mu = c[F.C_MU]
+    mu = c[F.FC_MU]
     if fric == FR_IMPULSE:
         return md[k, F.MD_SIR] * mu * fn, 0.0
     if fric == FR_MINDLIN:
@@ -78,7 +78,7 @@ def tangential(law, p, c, md, k, q, delta, fn):
 @njit(cache=True, inline="always", error_model="numpy")
 def state_rate(c, md, k, kt, vt):
     """dQ_t/dt of end k (Mindlin without gross slip; 0 otherwise)."""
-    if c[F.C_FRIC] == FR_MINDLIN and md[k, F.MD_FM] == 0.0:
+    if c[F.FC_FRIC] == FR_MINDLIN and md[k, F.MD_FM] == 0.0:
         return -kt * vt if md[k, F.MD_COMP] != 0.0 else vt
     return 0.0
 
@@ -86,9 +86,9 @@ def state_rate(c, md, k, kt, vt):
 @njit(cache=True, inline="always", error_model="numpy")
 def friction_event(law, p, c, md, k, q, ek):
     """The stick/slip event function of end k in contact (as the rigid core's)."""
-    fric = c[F.C_FRIC]
+    fric = c[F.FC_FRIC]
     fm = md[k, F.MD_FM]
-    mu = c[F.C_MU]
+    mu = c[F.FC_MU]
     fn = ek[k, F.EK_FN]
     ft = ek[k, F.EK_FT]
     vt = ek[k, F.EK_VT]
@@ -103,7 +103,7 @@ def friction_event(law, p, c, md, k, q, ek):
         return abs(q) - (mu * fn / kt if kt > 0.0 else 0.0)
     delta = ek[k, F.EK_DELTA]
     dft, dfn = mindlin_trial_rate(
-        law, p, rigid_mode(md, k), delta, fn, ft, ek[k, F.EK_VN], vt, kt, c[F.C_GS]
+        law, p, rigid_mode(md, k), delta, fn, ft, ek[k, F.EK_VN], vt, kt, c[F.FC_GS]
     )
     return fm * dft + mu * dfn
 
@@ -127,8 +127,8 @@ def initial_mode(p, c, M, md, k, vt, vn, Jn, Jt):
     """The friction mode of end k at touch (mu > 0): Coulomb the sign of v_t or the F_n -> 0+
     decision; impulse_ratio the sign of F_t; Mindlin gross slip when the Hertzian start ratio
     |F_t| / (mu F_n) -> 4 G* a_f |v_t| / (mu E* |v_n|) exceeds 1."""
-    mu = c[F.C_MU]
-    fric = c[F.C_FRIC]
+    mu = c[F.FC_MU]
+    fric = c[F.FC_FRIC]
     md[k, F.MD_FM] = 0.0
     md[k, F.MD_SIR] = 0.0
     if not mu > 0.0:
@@ -147,7 +147,7 @@ def initial_mode(p, c, M, md, k, vt, vn, Jn, Jt):
     elif (
         fric == FR_MINDLIN
         and vt != 0.0
-        and 4.0 * c[F.C_GS] * md[k, F.MD_AF] * abs(vt) > mu * p[P_ESTAR] * abs(vn)
+        and 4.0 * c[F.FC_GS] * md[k, F.MD_AF] * abs(vt) > mu * p[P_ESTAR] * abs(vn)
     ):
         md[k, F.MD_FM] = 1.0 if vt > 0.0 else -1.0
 
@@ -157,7 +157,7 @@ def radius_factor(law, p, c, dm, dr, rr):
     """Mindlin and partial slip: a_loading(delta_m) / a_unloading(delta_m), the factor that
     makes the contact radius continuous at the turning point (as the rigid core's
     ``unloading_branch``; 1 for the other models)."""
-    if (c[F.C_FRIC] != FR_MINDLIN and c[F.C_FRIC] != F.FR_PARTIAL) or not dm > 0.0:
+    if (c[F.FC_FRIC] != FR_MINDLIN and c[F.FC_FRIC] != F.FR_PARTIAL) or not dm > 0.0:
         return 1.0
     a_unl = _contact_radius(law, p, dm, math.inf, dr, rr)
     a_load = _contact_radius(law, p, dm, dm, 0.0, p[P_R])
@@ -179,7 +179,7 @@ def mindlin_switch(c, md, k, y, iqt, ek):
         0.0,
         0.0,
         ek[k, F.EK_KT],
-        c[F.C_MU],
+        c[F.FC_MU],
         1.0,
         1.0,
         0.0,
@@ -196,22 +196,22 @@ def mindlin_after(mdl, md, k, kind, y, ek, sc, sv):
     displacement if it shrinks) or back; reload onto the loading curve: F scaled down if k_t
     drops. The conversions of the rigid core's ``mindlin_state_at_turn`` / ``_at_reload``."""
     law, p, c = mdl[0], mdl[1], mdl[2]
-    if c[F.C_FRIC] != FR_MINDLIN:
+    if c[F.FC_FRIC] != FR_MINDLIN:
         return
     iqt = 6 + 2 * mdl[3].shape[0] + F.Q_TAN
     ft = ek[k, F.EK_FT]
     kt = ek[k, F.EK_KT]
-    elastic = md[k, F.MD_FM] == 0.0 and c[F.C_MU] > 0.0
-    if kind == F.EV_TOUCH or kind == F.EV_SEP:
+    elastic = md[k, F.MD_FM] == 0.0 and c[F.FC_MU] > 0.0
+    if kind == F.FEV_TOUCH or kind == F.FEV_SEP:
         y[iqt + k] = 0.0
-    elif kind == F.EV_VN and elastic:
+    elif kind == F.FEV_VN and elastic:
         if md[k, F.MD_COMP] == 0.0:
             ktn = stiffness(law, p, c, md, k, ek[k, F.EK_DELTA])
             kref = ktn if ktn >= kt else kt
             y[iqt + k] = -ft / kref if kref > 0.0 else 0.0
         else:
             y[iqt + k] = ft
-    elif kind == F.EV_RELOAD and elastic:
+    elif kind == F.FEV_RELOAD and elastic:
         ktn = stiffness(law, p, c, md, k, ek[k, F.EK_DELTA])
         y[iqt + k] = ft if (ktn >= kt or kt <= 0.0) else ft * ktn / kt
     comp = md[k, F.MD_COMP] != 0.0 or md[k, F.MD_IN] == 0.0

@@ -1,5 +1,5 @@
 """The recorded history of the flexible drop: one row per accepted step (and three dense
-points inside it), columns ``layout.HISTORY_FIELDS`` (compiled)."""
+points inside it), columns ``layout.DROP_HISTORY_FIELDS`` (compiled)."""
 
 from __future__ import annotations
 
@@ -17,7 +17,7 @@ def record(hist, nh, t, mdl, y, ek, e0):
     c = mdl[2]
     M = mdl[3].shape[0]
     if nh >= hist.shape[0]:
-        new = np.empty((2 * hist.shape[0] + 64, F.NH))
+        new = np.empty((2 * hist.shape[0] + 64, F.N_DROP_HISTORY))
         new[:nh] = hist[:nh]
         hist = new
     r = hist[nh]
@@ -27,9 +27,9 @@ def record(hist, nh, t, mdl, y, ek, e0):
         r[2 + 5 * k] = ek[k, F.EK_FN]
         r[3 + 5 * k] = ek[k, F.EK_FT]
         r[4 + 5 * k] = ek[k, F.EK_X]
-        r[5 + 5 * k] = c[F.C_R] - ek[k, F.EK_DELTA]
-    r[11] = c[F.C_D] * c[F.C_C0] + y[0]
-    r[12] = c[F.C_D] * c[F.C_S0] + c[F.C_R] + y[1]
+        r[5 + 5 * k] = c[F.FC_R] - ek[k, F.EK_DELTA]
+    r[11] = c[F.FC_D] * c[F.FC_C0] + y[0]
+    r[12] = c[F.FC_D] * c[F.FC_S0] + c[F.FC_R] + y[1]
     r[13] = y[2]
     r[14] = ek[0, F.EK_VT]
     iq = 6 + 2 * M

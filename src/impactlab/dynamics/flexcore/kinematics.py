@@ -28,10 +28,10 @@ def end_kinematics(c, Ue, We, Pe, y, k, Jn, Jt):
     arrays are passed one by one: unpacking the model tuple in this hot function would cost
     reference counting)."""
     M = Ue.shape[1]
-    d = c[F.C_D]
-    R = c[F.C_R]
+    d = c[F.FC_D]
+    R = c[F.FC_R]
     phi = y[2]
-    th = c[F.C_TH0] + phi
+    th = c[F.FC_TH0] + phi
     s = math.sin(th)
     co = math.cos(th)
     iv = 3 + M
@@ -54,7 +54,7 @@ def end_kinematics(c, Ue, We, Pe, y, k, Jn, Jt):
     sk = -d if k == 0 else d
     # exact differences from the initial pose (no cancellation for small phi)
     hs = math.sin(0.5 * phi)
-    mid = c[F.C_TH0] + 0.5 * phi
+    mid = c[F.FC_TH0] + 0.5 * phi
     dsin = 2.0 * math.cos(mid) * hs  # sin th - sin th0
     dcos = -2.0 * math.sin(mid) * hs  # cos th - cos th0
     el_y = u * s + w * co
@@ -63,8 +63,8 @@ def end_kinematics(c, Ue, We, Pe, y, k, Jn, Jt):
         delta = -y[1] + d * dsin - el_y
         xS = y[0] - d * dcos + el_x
     else:
-        delta = -y[1] - d * (s + c[F.C_S0]) - el_y
-        xS = y[0] + d * (c[F.C_C0] + co) + el_x
+        delta = -y[1] - d * (s + c[F.FC_S0]) - el_y
+        xS = y[0] + d * (c[F.FC_C0] + co) + el_x
     lx = (sk + u) * co - w * s
     ly = (sk + u) * s + w * co
     vn = vy + w_ * lx + ud * s + wd * co
@@ -95,8 +95,8 @@ def normal_force(law, p, md, k, delta):
 @njit(cache=True, inline="always", error_model="numpy")
 def mobility(c, M, Ja, Jb, ka, kb):
     """J_a M^-1 J_b^T for row ka of Ja and row kb of Jb [1/kg]."""
-    r = Ja[ka, 0] * Jb[kb, 0] / c[F.C_M] + Ja[ka, 1] * Jb[kb, 1] / c[F.C_M]
-    r += Ja[ka, 2] * Jb[kb, 2] / c[F.C_I]
+    r = Ja[ka, 0] * Jb[kb, 0] / c[F.FC_M] + Ja[ka, 1] * Jb[kb, 1] / c[F.FC_M]
+    r += Ja[ka, 2] * Jb[kb, 2] / c[F.FC_I]
     for j in range(M):
         r += Ja[ka, 3 + j] * Jb[kb, 3 + j]
     return r
@@ -130,11 +130,11 @@ def mechanical_energy(mdl, y):
     _law, _p, c, om, om2, _dmp, _zeta, _Ue, _We, _Pe, Tg, ia, ib = mdl
     M = om.shape[0]
     iv = 3 + M
-    m = c[F.C_M]
-    E = 0.5 * m * (y[iv] ** 2 + y[iv + 1] ** 2) + 0.5 * c[F.C_I] * y[iv + 2] ** 2
+    m = c[F.FC_M]
+    E = 0.5 * m * (y[iv] ** 2 + y[iv + 1] ** 2) + 0.5 * c[F.FC_I] * y[iv + 2] ** 2
     for j in range(M):
         E += 0.5 * (y[iv + 3 + j] ** 2 + om2[j] * y[3 + j] ** 2)
-    E += m * c[F.C_G] * y[1]
+    E += m * c[F.FC_G] * y[1]
     if Tg.shape[0] > 0:
         E += geometric_energy(Tg, ia, ib, y)
     return E

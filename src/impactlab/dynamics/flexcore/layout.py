@@ -26,24 +26,26 @@ Q_TAN = 3 + 4 * NE  #: offset of the Mindlin states Q_t in the block after the m
 NQUAD = Q_TAN + NE  #: quadratures and tangential states at the end of the state vector
 FR_PARTIAL = 3  #: ``impactlab.friction`` id of ``partial_slip`` (Mindlin-Deresiewicz cells)
 
-# ---- constants vector (``C_*``) ---------------------------------------------------------------
-C_D = 0  #: L/2 [m]
-C_R = 1  #: radius of the end spheres [m]
-C_M = 2  #: mass [kg]
-C_I = 3  #: I_C [kg m^2]
-C_G = 4  #: gravity [m/s^2]
-C_TH0 = 5  #: angle at first touch [rad]
-C_MU = 6  #: friction coefficient [1]
-C_DLIM = 7  #: the law's validity limit [m]
-C_DSW = 8  #: the law's elastic -> plastic switch interference [m] (inf: none)
-C_S0 = 9  #: sin(angle)
-C_C0 = 10  #: cos(angle)
-C_FRIC = 11  #: friction model id (``impactlab.friction``: 0 impulse_ratio, 1 coulomb, 2 mindlin)
-C_GS = 12  #: G* of the pair [Pa] (Mindlin tangential stiffness k_t = 8 G* a)
-C_CP = 13  #: partial slip: the cell parameters of end k at C_CP + k NCP (``cells.CP_*``)
-NCP = 4
-C_MAX_STEPS = C_CP + NE * NCP  #: the step limit of the run (``MAX_STEPS``, or less: partial slip)
-NC = C_MAX_STEPS + 1
+# ---- constants vector (``FC_*``) --------------------------------------------------------------
+FC_D = 0  #: L/2 [m]
+FC_R = 1  #: radius of the end spheres [m]
+FC_M = 2  #: mass [kg]
+FC_I = 3  #: I_C [kg m^2]
+FC_G = 4  #: gravity [m/s^2]
+FC_TH0 = 5  #: angle at first touch [rad]
+FC_MU = 6  #: friction coefficient [1]
+FC_DLIM = 7  #: the law's validity limit [m]
+FC_DSW = 8  #: the law's elastic -> plastic switch interference [m] (inf: none)
+FC_S0 = 9  #: sin(angle)
+FC_C0 = 10  #: cos(angle)
+FC_FRIC = 11  #: friction model id (``impactlab.friction``: 0 impulse_ratio, 1 coulomb, 2 mindlin)
+FC_GS = 12  #: G* of the pair [Pa] (Mindlin tangential stiffness k_t = 8 G* a)
+FC_CP = 13  #: partial slip: the cell parameters of end k at FC_CP + k NFCP (``cells.CP_*``)
+NFCP = 4
+FC_MAX_STEPS = (
+    FC_CP + NE * NFCP
+)  #: the step limit of the run (``DROP_MAX_STEPS``, or less: partial slip)
+NFC = FC_MAX_STEPS + 1
 
 # ---- per-end mode table (``MD_*``) ------------------------------------------------------------
 MD_IN = 0  #: 1 in contact
@@ -62,22 +64,22 @@ MD_CM = 11  #: partial slip: cell modes (``cells.OUT``, ``STICK``, ``SLIP``), NC
 MD_SG = MD_CM + NCS  #: partial slip: slip directions of the cells, NCS columns
 NMD = MD_SG + NCS
 
-# ---- per-end event functions (``EV_*``; event j of end k is k * NEVK + EV_*) -------------------
-EV_TOUCH = 0
-EV_VN = 1  #: turning point of delta (compression <-> restitution)
-EV_RELOAD = 2  #: reloading past the earlier delta_m: back on the loading curve
-EV_SEP = 3
-EV_LIMIT = 4  #: the law's validity limit
-EV_FRIC = 5  #: slip -> stick (v_t = 0) or stick -> slip (|F_t| = mu F_n)
-EV_SWITCH = 6  #: elastic -> plastic switch of the loading curve
-NEVK = 7
-NEV = NE * NEVK
-#: Partial slip: per end NEVC cell events after the NEV above (end k's at NEV + k NEVC):
+# ---- per-end event functions (``FEV_*``; event j of end k is k * NFEVK + FEV_*) -----------------
+FEV_TOUCH = 0
+FEV_VN = 1  #: turning point of delta (compression <-> restitution)
+FEV_RELOAD = 2  #: reloading past the earlier delta_m: back on the loading curve
+FEV_SEP = 3
+FEV_LIMIT = 4  #: the law's validity limit
+FEV_FRIC = 5  #: slip -> stick (v_t = 0) or stick -> slip (|F_t| = mu F_n)
+FEV_SWITCH = 6  #: elastic -> plastic switch of the loading curve
+NFEVK = 7
+NFEV = NE * NFEVK
+#: Partial slip: per end NFEVC cell events after the NFEV above (end k's at NFEV + k NFEVC):
 #: birth of the next cell, release of the outermost, then one stick/slip switch per cell.
-G_BIRTH = 0
-G_REL = 1
-G_CELL = 2
-NEVC = G_CELL + NCS
+FG_BIRTH = 0
+FG_REL = 1
+FG_CELL = 2
+NFEVC = FG_CELL + NCS
 
 # ---- per-end evaluated quantities (``EK_*``, a (NE, NEK) array) -------------------------------
 EK_DELTA = 0  #: interference [m]
@@ -179,14 +181,14 @@ ST_TOO_MANY_CONTACTS = _status.ST_TOO_MANY_CONTACTS
 ST_TOO_MANY_EVENTS = _status.ST_TOO_MANY_EVENTS
 STATUS_MESSAGES = _status.STATUS_MESSAGES
 
-DEFAULT_RTOL = 1e-7  #: default relative tolerance of the flexible drop
-MAX_STEPS = 2_000_000
+DROP_DEFAULT_RTOL = 1e-7  #: default relative tolerance of the flexible drop
+DROP_MAX_STEPS = 2_000_000
 #: Partial slip: the step limit is PARTIAL_STEP_FACTOR times the steps of the drop's Mindlin
 #: pre-pass, at least PARTIAL_MIN_STEPS (a drop whose cells need more than that is a long,
-#: creeping contact: it fails in seconds, not after the 2e6 steps of MAX_STEPS, ~50 s).
+#: creeping contact: it fails in seconds, not after the 2e6 steps of DROP_MAX_STEPS, ~50 s).
 PARTIAL_STEP_FACTOR = 100
 PARTIAL_MIN_STEPS = 50_000
-MAX_EVENTS = 200_000
+DROP_MAX_EVENTS = 200_000
 HORIZON_CAP = 0.5  #: longest look-ahead of the end-of-sequence test [s]
 
 #: The integrator's outputs, in the order of its ``out`` vector. "After the last contact" means
@@ -224,9 +226,9 @@ DROP_FIELDS: tuple[Field, ...] = (
     Field("t_final", "s", "time at which the end-of-sequence test was passed"),
     Field("potential_energy", "J", "gravity potential after the last contact (0 at first touch)"),
 )
-OUTPUT_FIELDS = tuple(f.name for f in DROP_FIELDS)
-N_OUT = len(OUTPUT_FIELDS)
-O = {name: i for i, name in enumerate(OUTPUT_FIELDS)}
+DROP_OUTPUT_FIELDS = tuple(f.name for f in DROP_FIELDS)
+N_DROP_OUT = len(DROP_OUTPUT_FIELDS)
+O = {name: i for i, name in enumerate(DROP_OUTPUT_FIELDS)}
 (
     O_E,
     O_E_RAW,
@@ -259,12 +261,12 @@ O = {name: i for i, name in enumerate(OUTPUT_FIELDS)}
     O_ANGLE_OUT,
     O_T_FINAL,
     O_POTENTIAL_ENERGY,
-) = range(N_OUT)
+) = range(N_DROP_OUT)
 
 #: History columns: per end, interference [m], normal and tangential force [N], x and y of the
 #: lowest point of the sphere [m]; the centre of mass (x, y) [m], the rotation phi [rad], the
 #: tip's slip velocity [m/s] and the relative energy error [1].
-HISTORY_FIELDS = (
+DROP_HISTORY_FIELDS = (
     "t",
     "delta0",
     "fn0",
@@ -282,4 +284,4 @@ HISTORY_FIELDS = (
     "vt0",
     "energy_err",
 )
-NH = len(HISTORY_FIELDS)
+N_DROP_HISTORY = len(DROP_HISTORY_FIELDS)

@@ -1,5 +1,5 @@
 """The float64 inputs of ``driver.drop`` from the model's parameters (Python, pure): the
-constants vector (``layout.C_*``) and the model tuple (package docstring)."""
+constants vector (``layout.FC_*``) and the model tuple (package docstring)."""
 
 from __future__ import annotations
 
@@ -25,32 +25,32 @@ def constants(
     friction_id: int = 1,
     gstar: float = math.nan,
     cell_width: tuple[float, float] = (math.nan, math.nan),
-    max_steps: int = F.MAX_STEPS,
+    max_steps: int = F.DROP_MAX_STEPS,
 ) -> np.ndarray:
-    """The constants vector (``layout.C_*``; SI units) for the law parameters ``p``, the
+    """The constants vector (``layout.FC_*``; SI units) for the law parameters ``p``, the
     friction model's id (``impactlab.friction``; default coulomb), G* [Pa] (Mindlin, partial
     slip), the cell width of each end [m] (partial slip; the other cell parameters are set
     by the integrator) and the step limit of the run."""
     dsw = float(p[P_DSW])
     values = {
-        F.C_D: half_length,
-        F.C_R: tip_radius,
-        F.C_M: mass,
-        F.C_I: inertia,
-        F.C_G: gravity,
-        F.C_TH0: angle,
-        F.C_MU: mu,
-        F.C_DLIM: float(p[P_DLIM]),
-        F.C_DSW: dsw if (math.isfinite(dsw) and dsw > 0.0) else math.inf,
-        F.C_S0: math.sin(angle),
-        F.C_C0: math.cos(angle),
-        F.C_FRIC: float(friction_id),
-        F.C_GS: gstar,
-        F.C_MAX_STEPS: float(min(max_steps, F.MAX_STEPS)),
+        F.FC_D: half_length,
+        F.FC_R: tip_radius,
+        F.FC_M: mass,
+        F.FC_I: inertia,
+        F.FC_G: gravity,
+        F.FC_TH0: angle,
+        F.FC_MU: mu,
+        F.FC_DLIM: float(p[P_DLIM]),
+        F.FC_DSW: dsw if (math.isfinite(dsw) and dsw > 0.0) else math.inf,
+        F.FC_S0: math.sin(angle),
+        F.FC_C0: math.cos(angle),
+        F.FC_FRIC: float(friction_id),
+        F.FC_GS: gstar,
+        F.FC_MAX_STEPS: float(min(max_steps, F.DROP_MAX_STEPS)),
     }
     for k in range(F.NE):
-        values[F.C_CP + k * F.NCP + CP_DX] = cell_width[k]
-    c = np.zeros(F.NC)
+        values[F.FC_CP + k * F.NFCP + CP_DX] = cell_width[k]
+    c = np.zeros(F.NFC)
     for i, v in values.items():
         c[i] = v
     return c

@@ -45,8 +45,8 @@ def _energies(mdl, ye, out):
     out[F.O_VIBRATION_ENERGY] = vibration_energy(om2, M, ye)
     if Tg.shape[0] > 0:
         out[F.O_VIBRATION_ENERGY] += geometric_energy(Tg, ia, ib, ye)
-    out[F.O_POTENTIAL_ENERGY] = c[F.C_M] * c[F.C_G] * ye[1]
-    out[F.O_RIGID_KINETIC_ENERGY] = 0.5 * c[F.C_M] * (vx * vx + vy * vy) + 0.5 * c[F.C_I] * w * w
+    out[F.O_POTENTIAL_ENERGY] = c[F.FC_M] * c[F.FC_G] * ye[1]
+    out[F.O_RIGID_KINETIC_ENERGY] = 0.5 * c[F.FC_M] * (vx * vx + vy * vy) + 0.5 * c[F.FC_I] * w * w
     out[F.O_WORK_NORMAL] = ye[iq]
     out[F.O_WORK_FRICTION] = ye[iq + 1]
     out[F.O_WORK_DAMPING] = ye[iq + 2]
@@ -85,8 +85,8 @@ def fill_outputs(mdl, sv, t, ye, vx0, vy0, out, contacts, dents):
     vx = ye[iv]
     vy = ye[iv + 1]
     w = ye[iv + 2]
-    th = c[F.C_TH0] + ye[2]
-    a = c[F.C_D] * math.cos(th)
+    th = c[F.FC_TH0] + ye[2]
+    a = c[F.FC_D] * math.cos(th)
     vn0 = sv[F.SV_VN0]
     out[F.O_DURATION] = T
     out[F.O_VX_OUT] = vx
@@ -94,7 +94,7 @@ def fill_outputs(mdl, sv, t, ye, vx0, vy0, out, contacts, dents):
     out[F.O_SPIN_OUT] = w
     out[F.O_ANGLE_OUT] = th
     out[F.O_E_RAW] = -(vy - w * a) / vn0
-    out[F.O_E] = -(vy + c[F.C_G] * T - w * a) / vn0
+    out[F.O_E] = -(vy + c[F.FC_G] * T - w * a) / vn0
     dp = 0.0
     for i in range(nd):
         dp = max(dp, dents[i, F.DT_DR])
@@ -104,7 +104,7 @@ def fill_outputs(mdl, sv, t, ye, vx0, vy0, out, contacts, dents):
     out[F.O_SLIDING_LENGTH] = slip
     out[F.O_SLIP_PATH] = aslip
     _energies(mdl, ye, out)
-    dvy = vy - vy0 + c[F.C_G] * T
+    dvy = vy - vy0 + c[F.FC_G] * T
     out[F.O_MU_APPARENT] = abs((vx - vx0) / dvy) if dvy != 0.0 else math.nan
     nxt = sv[F.SV_NEXT_END]
     out[F.O_NEXT_END] = nxt

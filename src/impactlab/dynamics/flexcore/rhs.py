@@ -27,9 +27,9 @@ from impactlab.dynamics.flexcore.kinematics import end_kinematics, mobility, nor
 @njit(cache=True, inline="always", error_model="numpy")
 def _end_forces(law, p, c, Ue, We, Pe, md, y, ek, Jn, Jt):
     """Kinematics of both ends and the contact forces without stick forces into ``ek``."""
-    mu = c[F.C_MU]
+    mu = c[F.FC_MU]
     iqt = 6 + 2 * Ue.shape[1] + F.Q_TAN
-    partial = c[F.C_FRIC] == F.FR_PARTIAL
+    partial = c[F.FC_FRIC] == F.FR_PARTIAL
     for k in range(F.NE):
         delta, xS, vn, vt, jdot = end_kinematics(c, Ue, We, Pe, y, k, Jn, Jt)
         ek[k, F.EK_DELTA] = delta
@@ -69,13 +69,13 @@ def _accelerations(c, om2, dmp, Tg, ia, ib, md, y, der, ek, Jn, Jt):
     """Velocities and accelerations without the stick forces."""
     M = om2.shape[0]
     iv = 3 + M
-    m = c[F.C_M]
+    m = c[F.FC_M]
     for i in range(3):
         der[i] = y[iv + i]
     for j in range(M):
         der[3 + j] = y[iv + 3 + j]
     ax = 0.0
-    ay = -c[F.C_G] * m
+    ay = -c[F.FC_G] * m
     aw = 0.0
     for j in range(M):
         der[iv + 3 + j] = -om2[j] * y[3 + j] - dmp[j] * y[iv + 3 + j]
@@ -93,7 +93,7 @@ def _accelerations(c, om2, dmp, Tg, ia, ib, md, y, der, ek, Jn, Jt):
             der[iv + 3 + j] += Jn[k, 3 + j] * Fn + Jt[k, 3 + j] * Ft
     der[iv] = ax / m
     der[iv + 1] = ay / m
-    der[iv + 2] = aw / c[F.C_I]
+    der[iv + 2] = aw / c[F.FC_I]
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -111,7 +111,7 @@ def _stick_forces(c, M, md, der, ek, Jt):
     ``ek``. Two sticking ends whose tangential constraints are redundant (singular 2x2
     mobility: a rigid rod lying flat) share the least-norm forces."""
     iv = 3 + M
-    m = c[F.C_M]
+    m = c[F.FC_M]
     ns = 0
     sk0 = -1
     sk1 = -1
@@ -146,7 +146,7 @@ def _stick_forces(c, M, md, der, ek, Jt):
         f = f0 if t == 0 else f1
         ek[k, F.EK_FT] = f
         der[iv] += f / m
-        der[iv + 2] += Jt[k, 2] * f / c[F.C_I]
+        der[iv + 2] += Jt[k, 2] * f / c[F.FC_I]
         for j in range(M):
             der[iv + 3 + j] += Jt[k, 3 + j] * f
 
@@ -157,7 +157,7 @@ def _quadratures(c, dmp, md, y, der, ek):
     M = dmp.shape[0]
     iv = 3 + M
     iq = 6 + 2 * M
-    mu = c[F.C_MU]
+    mu = c[F.FC_MU]
     wn = 0.0
     wt = 0.0
     for k in range(F.NE):
@@ -168,7 +168,7 @@ def _quadratures(c, dmp, md, y, der, ek):
             der[b] = ek[k, F.EK_FN]
             der[b + 1] = ek[k, F.EK_FT]
             der[b + 2] = ek[k, F.EK_VT]
-            if mu > 0.0 and c[F.C_FRIC] == FR_COULOMB:
+            if mu > 0.0 and c[F.FC_FRIC] == FR_COULOMB:
                 der[b + 3] = md[k, F.MD_FM] * ek[k, F.EK_VT]
             else:
                 der[b + 3] = abs(ek[k, F.EK_VT])
@@ -190,28 +190,28 @@ def _quadratures(c, dmp, md, y, der, ek):
 @njit(cache=True, inline="always", error_model="numpy")
 def _events(law, p, c, md, y, ev, ek, M):
     """The event functions of both ends (-1 where an event cannot fire in the mode)."""
-    mu = c[F.C_MU]
+    mu = c[F.FC_MU]
     iqt = 6 + 2 * M + F.Q_TAN
     for k in range(F.NE):
-        e0 = k * F.NEVK
-        for i in range(F.NEVK):
+        e0 = k * F.NFEVK
+        for i in range(F.NFEVK):
             ev[e0 + i] = -1.0
         delta = ek[k, F.EK_DELTA]
         if md[k, F.MD_IN] == 0.0:
-            ev[e0 + F.EV_TOUCH] = delta - md[k, F.MD_DR]  # out of contact F.MD_DR is the threshold
+            ev[e0 + F.FEV_TOUCH] = delta - md[k, F.MD_DR]  # out of contact F.MD_DR is the threshold
             continue
         comp = md[k, F.MD_COMP] != 0.0
         vn = ek[k, F.EK_VN]
-        ev[e0 + F.EV_VN] = vn if comp else -vn
+        ev[e0 + F.FEV_VN] = vn if comp else -vn
         if md[k, F.MD_PH] == 0.0:
-            ev[e0 + F.EV_LIMIT] = delta - c[F.C_DLIM]
-            ev[e0 + F.EV_SWITCH] = delta - md[k, F.MD_DSW]
+            ev[e0 + F.FEV_LIMIT] = delta - c[F.FC_DLIM]
+            ev[e0 + F.FEV_SWITCH] = delta - md[k, F.MD_DSW]
         elif comp:
-            ev[e0 + F.EV_RELOAD] = delta - md[k, F.MD_DM]
+            ev[e0 + F.FEV_RELOAD] = delta - md[k, F.MD_DM]
         else:
-            ev[e0 + F.EV_SEP] = md[k, F.MD_DR] - delta
+            ev[e0 + F.FEV_SEP] = md[k, F.MD_DR] - delta
         if mu > 0.0:
-            ev[e0 + F.EV_FRIC] = friction_event(law, p, c, md, k, y[iqt + k], ek)
+            ev[e0 + F.FEV_FRIC] = friction_event(law, p, c, md, k, y[iqt + k], ek)
 
 
 @njit(cache=True, error_model="numpy")
@@ -221,11 +221,11 @@ def rates(law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, y, der, ev, ek, Jn, J
     Jacobian rows. The model's arrays one by one (the hot path: see ``evaluate``)."""
     _end_forces(law, p, c, Ue, We, Pe, md, y, ek, Jn, Jt)
     _accelerations(c, om2, dmp, Tg, ia, ib, md, y, der, ek, Jn, Jt)
-    if c[F.C_MU] > 0.0 and c[F.C_FRIC] == FR_COULOMB:
+    if c[F.FC_MU] > 0.0 and c[F.FC_FRIC] == FR_COULOMB:
         _stick_forces(c, om2.shape[0], md, der, ek, Jt)
     _quadratures(c, dmp, md, y, der, ek)
     _events(law, p, c, md, y, ev, ek, om2.shape[0])
-    if c[F.C_FRIC] == F.FR_PARTIAL:
+    if c[F.FC_FRIC] == F.FR_PARTIAL:
         o = 6 + 2 * om2.shape[0] + F.NQUAD
         for k in range(F.NE):
             cell_rates(c, md, k, o + k * F.NCS, ek, der)

@@ -24,8 +24,8 @@ def cell_scales(c, vn0, fscale, sc, o):
     for i in range(o, sc.shape[0]):
         sc[i] = fscale / N_CELLS
     for k in range(F.NE):
-        b = F.C_CP + k * F.NCP
-        c[b + CP_G1] = 4.0 * c[F.C_GS]
+        b = F.FC_CP + k * F.NFCP
+        c[b + CP_G1] = 4.0 * c[F.FC_GS]
         c[b + CP_VTOL] = 1e-9 * abs(vn0)
         c[b + CP_FTOL] = 1e-13 * fscale
 
@@ -38,12 +38,12 @@ def scales(mdl, vx0, vy0, w0, sc, sv):
     M = om.shape[0]
     iv = 3 + M
     iq = 6 + 2 * M
-    m = c[F.C_M]
-    R = c[F.C_R]
-    d = c[F.C_D]
-    a0 = d * math.cos(c[F.C_TH0])
+    m = c[F.FC_M]
+    R = c[F.FC_R]
+    d = c[F.FC_D]
+    a0 = d * math.cos(c[F.FC_TH0])
     vn0 = vy0 - w0 * a0
-    meff = 1.0 / (1.0 / m + a0 * a0 / c[F.C_I])
+    meff = 1.0 / (1.0 / m + a0 * a0 / c[F.FC_I])
     dstar = (15.0 * meff * vn0 * vn0 / (16.0 * p[P_ESTAR] * math.sqrt(R))) ** 0.4
     tstar = dstar / abs(vn0)
     vstar = abs(vn0)
@@ -59,7 +59,7 @@ def scales(mdl, vx0, vy0, w0, sc, sv):
             phimax = max(phimax, abs(Ue[k, j]), abs(We[k, j]), R * abs(Pe[k, j]))
         sc[3 + j] = dstar / phimax
         sc[iv + 3 + j] = vstar / phimax
-    e0 = 0.5 * m * (vx0 * vx0 + vy0 * vy0) + 0.5 * c[F.C_I] * w0 * w0
+    e0 = 0.5 * m * (vx0 * vx0 + vy0 * vy0) + 0.5 * c[F.FC_I] * w0 * w0
     for i in range(F.NQUAD):
         sc[iq + i] = e0
     for k in range(F.NE):
@@ -72,7 +72,7 @@ def scales(mdl, vx0, vy0, w0, sc, sv):
     for k in range(F.NE):
         sc[iq + F.Q_TAN + k] = fscale  # the Mindlin state starts as a force
     sv[F.SV_FSCALE] = fscale
-    if c[F.C_FRIC] == F.FR_PARTIAL:
+    if c[F.FC_FRIC] == F.FR_PARTIAL:
         cell_scales(c, vn0, fscale, sc, iq + F.NQUAD)
     sv[F.SV_DSTAR] = dstar
     sv[F.SV_TOL_V] = 1e-9 * vstar
@@ -94,8 +94,8 @@ def first_touch(mdl, md, y, vx0, vy0, w0, sv, contacts, dents, cur_con, der, ev,
     M = mdl[3].shape[0]
     iv = 3 + M
     for k in range(F.NE):
-        md[k, F.MD_RR] = c[F.C_R]
-        md[k, F.MD_DSW] = c[F.C_DSW]
+        md[k, F.MD_RR] = c[F.FC_R]
+        md[k, F.MD_DSW] = c[F.FC_DSW]
         md[k, F.MD_DENT] = -1.0
         md[k, F.MD_AF] = 1.0
     y[iv] = vx0
@@ -104,7 +104,7 @@ def first_touch(mdl, md, y, vx0, vy0, w0, sv, contacts, dents, cur_con, der, ev,
     # the tip (end 0) as a run-time integer, not a literal: numba would compile a separate copy
     # of every function it is passed to
     tip = np.int64(0)
-    new_dent(dents, tip, tip, 0.0, c[F.C_R])
+    new_dent(dents, tip, tip, 0.0, c[F.FC_R])
     sv[F.SV_ND] = 1
     md[0, F.MD_IN] = 1.0
     md[0, F.MD_PH] = 0.0
@@ -112,7 +112,7 @@ def first_touch(mdl, md, y, vx0, vy0, w0, sv, contacts, dents, cur_con, der, ev,
     md[0, F.MD_DENT] = 0.0
     evaluate(mdl, md, y, der, ev, ek, Jn, Jt)
     initial_mode(mdl[1], c, M, md, tip, ek[0, F.EK_VT], ek[0, F.EK_VN], Jn, Jt)
-    if c[F.C_FRIC] == F.FR_PARTIAL:
+    if c[F.FC_FRIC] == F.FR_PARTIAL:
         touch_cells(mdl, md, tip, y, ek)
     for f in (F.CR_END, F.CR_T0, F.CR_X0, F.CR_DENT, F.CR_RELOAD, F.CR_DMAX, F.CR_FMAX, F.CR_STICK):
         contacts[0, f] = 0.0

@@ -21,7 +21,7 @@ def _missed_touch(md, sv, gold, gnew, k):
     """The touch of end k (out of contact) that started the step on the wrong side of zero
     (0 < g <= the invariant's tolerance, e.g. after a grazing event recomputed a hair inside
     its dent) and ends it beyond the tolerance: located where g reaches the tolerance."""
-    j = k * F.NEVK + F.EV_TOUCH
+    j = k * F.NFEVK + F.FEV_TOUCH
     tol = sv[F.SV_TOL_MISS]
     return md[k, F.MD_IN] == 0.0 and 0.0 < gold[j] <= tol < gnew[j]
 
@@ -52,7 +52,7 @@ def first_event(mdl, md, y, h, K, Q, gold, gnew, sv, record_on, yt, der, ev, ek,
                     jev = j
         for k in range(F.NE):
             if _missed_touch(md, sv, gold, gnew, k):
-                j = k * F.NEVK + F.EV_TOUCH
+                j = k * F.NFEVK + F.FEV_TOUCH
                 tol = sv[F.SV_TOL_MISS]
                 thj = locate(j, gold[j] - tol, gnew[j] - tol, mdl, md, y, h, Q, yt, der, ev, ek,
                              Jn, Jt, tol)  # fmt: skip
@@ -69,7 +69,7 @@ def missed_contact(md, sv, ek, jev):
     surface, or the flat) by more than ``SV_TOL_MISS``: a touch the event search missed,
     which the drop refuses (``ST_MISSED_CONTACT``)."""
     for k in range(F.NE):
-        if jev == k * F.NEVK + F.EV_TOUCH:
+        if jev == k * F.NFEVK + F.FEV_TOUCH:
             continue
         if md[k, F.MD_IN] == 0.0 and ek[k, F.EK_DELTA] - md[k, F.MD_DR] > sv[F.SV_TOL_MISS]:
             return True
@@ -80,9 +80,9 @@ def missed_contact(md, sv, ek, jev):
 def step_stats(mdl, md, t, tend, sv, contacts, dents, cur_con, ek):
     """Per-contact and run maxima, stick time and dent extents after a step to ``tend``;
     False on a non-finite force."""
-    mu = mdl[2][F.C_MU]
-    sticks = mu > 0.0 and mdl[2][F.C_FRIC] != FR_IMPULSE  # the models with a stick state
-    partial = mdl[2][F.C_FRIC] == F.FR_PARTIAL  # partial slip: a cell sticks
+    mu = mdl[2][F.FC_MU]
+    sticks = mu > 0.0 and mdl[2][F.FC_FRIC] != FR_IMPULSE  # the models with a stick state
+    partial = mdl[2][F.FC_FRIC] == F.FR_PARTIAL  # partial slip: a cell sticks
     ok = True
     for k in range(F.NE):
         if md[k, F.MD_IN] != 0.0:

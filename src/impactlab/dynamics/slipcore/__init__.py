@@ -15,24 +15,7 @@ results), ``driver`` (``impact_slip``).
 
 from __future__ import annotations
 
-import hashlib
-from pathlib import Path
-
-from impactlab.dynamics.core import _cache
 from impactlab.dynamics.slipcore.driver import impact_slip
 from impactlab.dynamics.slipcore.layout import N_CELLS
-
-
-def _fingerprint() -> str:
-    """The core's dependency fingerprint plus this package's sources (the functions here inline
-    the core's)."""
-    h = hashlib.sha256(_cache.fingerprint().encode())
-    for f in sorted(Path(__file__).parent.glob("*.py")):
-        h.update(f.name.encode())
-        h.update(f.read_bytes())
-    return h.hexdigest()
-
-
-_cache.refresh(_cache.dispatchers(("impactlab.dynamics.slipcore.",)), "slipcore", _fingerprint())
 
 __all__ = ["N_CELLS", "impact_slip"]
