@@ -112,6 +112,13 @@ class _Options:
 def _merge(config: dict[str, Any], cli: dict[str, Any], config_path: Path | None) -> _Options:
     section = config.get("simulate", config)
     unknown = sorted(set(section) - set(_KEYS))
+    props = [k for k in unknown if k.startswith(("flat_", "material_", "body_"))]
+    if props:
+        raise UserError(
+            f"{props[0]} in the config file: give a material whole, as a table, e.g. "
+            'flat = { E = "69 GPa", nu = 0.33, Sy = "276 MPa", rho = "2700 kg/m^3" }, or a '
+            "library name, flat = \"al-6061-t6\" (see 'impactlab materials')"
+        )
     if unknown:
         raise UserError(f"unknown key(s) {unknown} in the config file; known: {list(_KEYS)}")
     given = {k: v for k, v in cli.items() if v is not None}
@@ -131,9 +138,9 @@ def _material(opt: _Options, key: str, default: Material) -> Material:
     if value is None:
         return default
     try:
-        return get_material(str(value).strip().lower())
+        return get_material(value, opt.label(key))
     except ValueError as exc:
-        raise UserError(f"{opt.label(key)}: {exc}") from None
+        raise UserError(str(exc)) from None
 
 
 def _body(opt: _Options) -> tuple[Rod | Sphere | FlexibleRod, float | None]:
@@ -259,8 +266,12 @@ _HELP = {
     "length": "Rod length, e.g. '304.8 mm' (bare number: m; default 0.3048 m).",
     "mass": "Mass, e.g. '0.46 kg' (bare number: kg; rod default 0.4607 kg; sphere default from "
     "the density).",
-    "material": "Material preset of the body, see 'impactlab materials' (default aisi-201).",
-    "flat": "Material preset of the flat, see 'impactlab materials' (default aisi-1010).",
+    "material": "Body material: a library name (see 'impactlab materials'), properties "
+    "'E=200GPa, nu=0.3, Sy=760MPa, rho=7800kg/m^3' (HB=, n= optional) or a TOML file "
+    "(default aisi-201).",
+    "flat": "Flat material: a library name (see 'impactlab materials'), properties "
+    "'E=69GPa, nu=0.33, Sy=276MPa, rho=2700kg/m^3' (HB=, n= optional) or a TOML file "
+    "(default aisi-1010).",
     "modes_axial": f"Flexible rod: axial modes (default {DEFAULT_N_AXIAL}, + 2 residual).",
     "modes_bending": f"Flexible rod: bending modes (default {DEFAULT_N_BENDING}).",
     "damping": "Flexible rod: modal damping ratio zeta of every mode, in [0, 1) (default 0).",
