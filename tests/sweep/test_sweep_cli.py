@@ -31,11 +31,12 @@ EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
         ),
         ("[grid\n", "not valid TOML"),
         (
-            "[fixed]\nvy = -1\nmu = 0.1\nlaw = 'hooke'\n[grid]\nangle = { values = [10], unit = 'deg' }\n",
+            "[fixed]\nvy = -1\nmu = 0.1\nlaw = 'hooke'\n[grid]\nangle = ['10 deg']\n",
             "unknown contact law 'hooke'",
         ),
         (
-            "[fixed]\nvy = -1\nmu = 0.1\n[grid]\nangle = { values = [10], unit = 'deg' }\n[outputs]\nkeep = ['e', 'zz']\n",
+            "[fixed]\nvy = -1\nmu = 0.1\n[grid]\nangle = ['10 deg']\n"
+            "[outputs]\nkeep = ['e', 'zz']\n",
             "unknown output(s) ['zz']",
         ),
     ],
@@ -59,7 +60,8 @@ def test_run_resume_export_plot_info(tmp_path, monkeypatch, capsys) -> None:
     study.write_text(
         "[study]\nname = 'small'\nchunk_size = 30\n"
         "[fixed]\nvy = '-1.41 m/s'\n"
-        "[grid]\nangle = { start = 10, stop = 80, num = 8, unit = 'deg' }\nmu = [0.0, 0.1, 0.2, 0.4, 0.6]\n"
+        "[grid]\nangle = { start = 10, stop = 80, num = 8, unit = 'deg' }\n"
+        "mu = [0.0, 0.1, 0.2, 0.4, 0.6]\n"
         "[outputs]\nkeep = ['e', 'delta_p', 'sliding_length', 'duration', 'regime']\n"
     )
     store = tmp_path / "small.zarr"

@@ -255,7 +255,7 @@ def test_study_file_errors_name_the_problem(table, message) -> None:
 def test_study_file_reading(tmp_path) -> None:
     p = tmp_path / "s.toml"
     p.write_text(
-        '[fixed]\nvy = "-1.41 m/s"\nmu = 0.2\n[grid]\nangle = { values = [20, 45, 70], unit = "deg" }\n'
+        '[fixed]\nvy = "-1.41 m/s"\nmu = 0.2\n[grid]\nangle = ["20 deg", "45 deg", "70 deg"]\n'
     )
     s = load_study(p)
     assert s.name == "s" and s.layout.shape == (3,)

@@ -45,7 +45,8 @@ def _side(side: str, row: Mapping[str, float]) -> dict[str, float]:
 
 def material_for(side: str, preset: str, row: Mapping[str, float]) -> Material:
     """The material of ``side`` ("body" or "flat"): the library material ``preset``, or
-    (``"custom"``) the one the row's property values define (``impactlab.sweep.material_inputs``)."""
+    (``"custom"``) the one the row's property values define
+    (``impactlab.sweep.material_inputs``)."""
     return material_of(side, preset, _side(side, row))
 
 
