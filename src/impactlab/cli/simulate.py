@@ -24,6 +24,7 @@ from impactlab.bodies import PAPER_ROD, FlexibleRod, Rod, Sphere
 from impactlab.bodies.flexible_rod import DEFAULT_N_AXIAL, DEFAULT_N_BENDING
 from impactlab.cli._common import (
     KINEMATIC_HELP,
+    LENGTH_HELP,
     SI_UNITS,
     UserError,
     angle_quantity,
@@ -32,6 +33,7 @@ from impactlab.cli._common import (
     load_toml,
     positive,
     quantity,
+    velocity_input,
 )
 from impactlab.cli.drop import RATE_CHOICES, flexible_rod, rate_name, report_drop
 from impactlab.dynamics import ImpactResult, simulate
@@ -44,6 +46,8 @@ _KEYS = (
     "angle",
     "vx",
     "vy",
+    "speed",
+    "incidence",
     "spin",
     "mu",
     "law",
@@ -191,17 +195,15 @@ def run_simulate(opt: _Options) -> ImpactResult | DropResult:
     options (SI after parsing)."""
     body, rod_angle = _body(opt)
     cfg = opt.values
-    if cfg.get("vy") is None:
-        raise UserError('--vy is required, e.g. --vy "-1.41 m/s"')
+    velocity = velocity_input(
+        cfg.get("vx"), cfg.get("vy"), cfg.get("speed"), cfg.get("incidence"), opt.label
+    )
     common: dict[str, Any] = {
         "flat": _material(opt, "flat", AISI_1010),
         "law": str(cfg.get("law", "ghaednia")),
         "friction": str(cfg.get("friction", "coulomb")),
         "mu": _mu(cfg.get("mu", DEFAULT_MU), opt.label("mu")),
-        "velocity": (
-            quantity(cfg.get("vx", 0.0), "m/s", opt.label("vx")) or 0.0,
-            quantity(cfg.get("vy"), "m/s", opt.label("vy")) or 0.0,
-        ),
+        "velocity": velocity,
         "spin": quantity(cfg.get("spin", 0.0), "rad/s", opt.label("spin")) or 0.0,
         "law_params": cfg.get("law_params"),
         "gravity": bool(cfg.get("gravity", True)),
@@ -263,7 +265,7 @@ _HELP = {
     "inertia": 'Rod I_C, e.g. "0.0036 kg*m^2" (bare number: kg*m^2; default m L^2/12; rigid rod '
     "only).",
     "radius": "Tip / sphere radius, e.g. '8.8 mm' (bare number: m; default 8.8 mm, the paper's).",
-    "length": "Rod length, e.g. '304.8 mm' (bare number: m; default 0.3048 m).",
+    "length": f"{LENGTH_HELP} Default 0.3048 m.",
     "mass": "Mass, e.g. '0.46 kg' (bare number: kg; rod default 0.4607 kg; sphere default from "
     "the density).",
     "material": "Body material: a library name (see 'impactlab materials'), properties "
@@ -288,6 +290,8 @@ def simulate_cmd(
     angle: str = _option("angle"),
     vy: str = _option("vy"),
     vx: str = _option("vx"),
+    speed: str = _option("speed"),
+    incidence: str = _option("incidence"),
     spin: str = _option("spin"),
     mu: float = typer.Option(
         None,
@@ -334,6 +338,9 @@ def simulate_cmd(
       impactlab simulate rod --angle "20 deg" --vy "-1.41 m/s" --mu 0.2 --plot
 
       impactlab simulate sphere --radius "5 mm" --vy "-1 m/s" --material aisi-1010
+
+      impactlab simulate sphere --radius "3 mm" --speed "2.5 m/s" --incidence "30 deg"
+      --material aisi-52100 --flat al-6061-t6
 
       impactlab simulate rod --flexible --angle "20 deg" --vy "-1.41 m/s" --mu 0.2
     """

@@ -20,6 +20,7 @@ from impactlab._validation import (
     check_finite,
     check_flag,
     check_nonnegative,
+    check_positive,
     warn_implausible,
 )
 from impactlab.bodies import Rod, Sphere, lever_arms
@@ -102,6 +103,43 @@ def check_velocity(velocity: Any) -> tuple[float, float]:
         check_finite(name, v, "m/s")
         for name, v in (("velocity[0] (vx)", vx), ("velocity[1] (vy)", vy))
     )
+
+
+def velocity_from(velocity: Any, speed: Any, incidence: Any) -> Any:
+    """``velocity`` (vx, vy), or the one that ``speed`` [m/s, > 0] and ``incidence`` [rad]
+    give: vx = speed sin(incidence), vy = -speed cos(incidence). The incidence is the angle of
+    the centre of mass's velocity to the flat's normal, in (-pi/2, pi/2): 0 is a normal drop,
+    a positive incidence moves the body towards +x (vx > 0; for a rod, from the tip towards
+    its centre of mass). Quantities as ``impactlab.units.magnitude`` (a bare incidence is
+    radians, ``"30 deg"`` works). ValueError when both or neither are given."""
+    if speed is None and incidence is None:
+        if velocity is None:
+            raise ValueError(
+                "give the velocity of the centre of mass: velocity=(vx, vy) [m/s], or speed= "
+                "[m/s] and incidence= (its angle to the flat's normal, e.g. '30 deg')"
+            )
+        return velocity
+    if velocity is not None:
+        raise ValueError(
+            "give either velocity=(vx, vy) or speed= and incidence=, not both (they say the "
+            "same thing)"
+        )
+    if speed is None or incidence is None:
+        missing = "speed" if speed is None else "incidence"
+        raise ValueError(f"speed and incidence go together: {missing} is missing")
+    v = check_positive("speed", speed, "m/s")
+    th = check_finite("incidence", incidence, "rad")
+    if not abs(th) < 0.5 * math.pi:
+        hint = (
+            ""
+            if isinstance(incidence, str) or is_quantity(incidence)
+            else (f" (a bare incidence is radians; for degrees write '{th:g} deg')")
+        )
+        raise ValueError(
+            f"incidence must lie in (-90, 90) deg from the flat's normal, got "
+            f"{math.degrees(th):.6g} deg{hint}"
+        )
+    return (v * math.sin(th), -v * math.cos(th))
 
 
 def check_body(body: Any) -> Rod | Sphere:
@@ -281,5 +319,6 @@ __all__ = [
     "check_rtol",
     "check_velocity",
     "gravity_value",
+    "velocity_from",
     "warn_fast",
 ]

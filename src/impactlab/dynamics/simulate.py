@@ -30,6 +30,7 @@ from impactlab.dynamics.checks import (
     check_body,
     check_flat,
     check_impact,
+    velocity_from,
     warn_fast,
 )
 from impactlab.dynamics.core import layout as L
@@ -53,11 +54,11 @@ from impactlab.materials import AISI_1010, G0, Material
 
 @overload
 def simulate(
-    body: FlexibleRod, flat: Material = ..., *, velocity: Any, **kwargs: Any
+    body: FlexibleRod, flat: Material = ..., *, velocity: Any = ..., **kwargs: Any
 ) -> DropResult: ...
 @overload
 def simulate(
-    body: Rod | Sphere, flat: Material = ..., *, velocity: Any, **kwargs: Any
+    body: Rod | Sphere, flat: Material = ..., *, velocity: Any = ..., **kwargs: Any
 ) -> ImpactResult: ...
 def simulate(
     body: Rod | Sphere | FlexibleRod,
@@ -67,13 +68,15 @@ def simulate(
     friction: str = "coulomb",
     mu: float = DEFAULT_MU,
     angle: Any = None,
-    velocity: Any,
+    velocity: Any = None,
     spin: Any = 0.0,
     law_params: Mapping[str, Any] | None = None,
     gravity: Any = True,
     constant_angle: bool = False,
     rtol: float | None = None,
     history: bool = True,
+    speed: Any = None,
+    incidence: Any = None,
     **drop_options: Any,
 ) -> ImpactResult | DropResult:
     """Simulate one impact from first touch (delta = 0) to separation (SI units); for a
@@ -99,6 +102,11 @@ def simulate(
     velocity, spin : pair, float
         (vx, vy) of the centre of mass at first touch [m/s] (the contact point must approach);
         angular velocity [rad/s], counter-clockwise positive.
+    speed, incidence : float or str
+        Instead of ``velocity``: the speed of the centre of mass [m/s] and its angle to the
+        flat's normal (a bare number is radians, ``"30 deg"`` works), in (-90, 90) deg;
+        vx = speed sin(incidence) (positive incidence: towards +x), vy = -speed cos(incidence).
+        Give ``velocity`` or both of these, never both (``checks.velocity_from``).
     law_params : mapping, optional
         Law parameters (see ``impactlab laws``).
     gravity : bool, float or str
@@ -128,6 +136,8 @@ def simulate(
     >>> round(r.e, 2)
     0.42
     """
+    if velocity is None or speed is not None or incidence is not None:
+        velocity = velocity_from(velocity, speed, incidence)
     if isinstance(body, FlexibleRod) or drop_options:  # the flexible drop: a DropResult
         args = {"law": law, "friction": friction, "mu": mu, "angle": angle, "velocity": velocity}
         args |= {"spin": spin, "law_params": law_params, "gravity": gravity, "rtol": rtol}
