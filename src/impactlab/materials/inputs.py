@@ -25,7 +25,7 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
-from impactlab.materials.core import Material
+from impactlab.materials.core import Material, brinell_to_pa
 from impactlab.materials.library import ALIASES, PRESETS
 from impactlab.units import to_si
 
@@ -81,7 +81,8 @@ def _number(field: str, unit: str, value: Any, label: str) -> float:
         raise ValueError(f"{label}: expected a quantity in {unit}, got {value!r}")
     if isinstance(value, str):  # "kg/m3": a power written without "^"
         value = re.sub(r"(?<=[A-Za-z])([23])\b", r"^\1", value)
-    return to_si(value, unit, name=label)
+    x = to_si(value, unit, name=label)  # SI: a hardness in Pa
+    return x / brinell_to_pa(1.0) if unit == "kgf/mm^2" else x
 
 
 def from_values(values: Mapping[str, Any], where: str = "material") -> Material:

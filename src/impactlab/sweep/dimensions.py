@@ -49,6 +49,8 @@ _COUNT: Interval = (0.0, math.inf, True, True, True)
 #: inputs not named here take any finite number.
 ALLOWED: dict[str, Interval] = {
     "mu": (0.0, math.inf, True, True, False),
+    "speed": (0.0, math.inf, False, True, False),
+    "incidence": (-0.5 * math.pi, 0.5 * math.pi, False, False, False),
     **{n: _POSITIVE for n in ("length", "tip_radius", "radius", "mass", "inertia")},
     "n_axial": _COUNT,
     "n_bending": _COUNT,

@@ -93,6 +93,13 @@ _SPECS: tuple[InputSpec, ...] = (
     _f("vx", "m/s", "initial horizontal velocity of the centre of mass (+x towards C)", 0.0),
     _f("vy", "m/s", "initial vertical velocity of the centre of mass (< 0: towards the flat)"),
     _f("spin", "rad/s", "initial angular velocity (counter-clockwise positive)", 0.0),
+    _f("speed", "m/s", "speed of the centre of mass (with incidence, instead of vx and vy)"),
+    _f(
+        "incidence",
+        "rad",
+        "angle of the velocity to the flat's normal, in (-90, 90) deg (with speed; "
+        "vx = speed sin(incidence), vy = -speed cos(incidence))",
+    ),
     _f("mu", "1", "coefficient of friction"),
     # body geometry (None: the paper's rod, impactlab.bodies.PAPER_ROD)
     _c("body", "rod", "impacting body: 'rod' (hemispherical tip), 'sphere' or 'flexible_rod'"),

@@ -77,7 +77,20 @@ def _check_sources(axes: Sequence[Axis], fixed: Mapping[str, Value], sample: Sam
         if name in seen:
             raise ValueError(f"input {name!r} is set twice (in {seen[name]} and {where})")
         seen[name] = where
+    by_speed = [n for n in ("speed", "incidence") if n in seen]
+    if by_speed:
+        if len(by_speed) == 1:
+            other = "incidence" if by_speed[0] == "speed" else "speed"
+            raise ValueError(f"speed and incidence go together: {other} has no value")
+        both = [n for n in ("vx", "vy") if n in seen]
+        if both:
+            raise ValueError(
+                f"{', '.join(both)} and speed/incidence both set: they say the same thing; "
+                "give (vx, vy) or speed and incidence"
+            )
+        seen["vy"] = "speed"  # vy = -speed cos(incidence)
     bodies = next((a.values for a in axes if a.name == "body"), (fixed.get("body", "rod"),))
+
     spheres = all(b == "sphere" for b in bodies)  # a sphere has no angle to the flat
     missing = [
         s.name
@@ -265,6 +278,10 @@ class Study:
                 categories[spec.name] = str(v)
             else:
                 numeric[spec.name] = np.full(n, math.nan if v is None else float(v))
+        if not np.isnan(numeric["speed"]).all():  # speed and incidence: (vx, vy)
+            speed, incidence = numeric["speed"], numeric["incidence"]
+            numeric["vx"] = speed * np.sin(incidence)
+            numeric["vy"] = -speed * np.cos(incidence)
         if categories.get("body") == "sphere" and np.isnan(numeric["angle"]).all():
             numeric["angle"] = np.full(n, 0.5 * math.pi)  # a sphere's angle plays no part
         return numeric, categories, bshape
