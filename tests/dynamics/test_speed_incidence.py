@@ -31,10 +31,9 @@ def test_speed_and_incidence_give_the_same_impact_as_vx_vy(speed, incidence, ang
     kw = {"law": "hertz", "mu": mu, "angle": math.radians(angle)}
     try:
         ref = simulate(PAPER_ROD, velocity=vel, **kw)
-    except ValueError as exc:  # the contact point does not approach: refused the same way
+    except ValueError:  # the contact point does not approach: refused the same way
         with pytest.raises(ValueError, match="does not approach"):
             simulate(PAPER_ROD, speed=speed, incidence=f"{incidence!r} deg", **kw)
-        assert "does not approach" in str(exc)
         return
     r = simulate(PAPER_ROD, speed=f"{speed!r} m/s", incidence=f"{incidence!r} deg", **kw)
     assert r.velocity_in == pytest.approx(ref.velocity_in, rel=1e-15, abs=1e-15)
@@ -100,7 +99,7 @@ def test_study_speed_and_incidence() -> None:
                 "grid": {"incidence": ["1 deg"]},
             }
         )
-    with pytest.raises(ValueError, match="incidence.*has no unit"):
+    with pytest.raises(ValueError, match=r"incidence.*has no unit"):
         Study.from_dict(
             {"fixed": {"mu": 0.1, "angle": "3 deg", "speed": 1}, "grid": {"incidence": [10]}}
         )
