@@ -64,7 +64,7 @@ class Rod:
 
     length: float
     tip_radius: float
-    mass: float | None = None  # type: ignore[assignment]  # a float after __post_init__
+    mass: float = None  # type: ignore[assignment]  # None: from the diameter; a float after
     material: Material = AISI_201
     inertia: float | None = None
     diameter: float | None = None

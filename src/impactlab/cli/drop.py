@@ -13,7 +13,7 @@ from __future__ import annotations
 import sys
 import textwrap
 from collections.abc import Mapping
-from typing import Any
+from typing import Any, cast
 
 import typer
 
@@ -135,11 +135,12 @@ def _body(
         given = [f"--{k.replace('_', '-')}" for k, v in modes.items() if v is not None]
         if given:
             raise UserError(f"{', '.join(given)}: a rigid rod has no modes; leave out --rigid")
-        return Rod(length=length, tip_radius=tip, mass=mass, material=material,
+        return Rod(length=length, tip_radius=tip, mass=mass, material=material,  # type: ignore[arg-type]
                    diameter=diameter)  # fmt: skip
     if diameter is not None:
         return _flexible(modes, length, tip, mass, diameter, material)
-    return flexible_rod(modes, {"length": length, "tip_radius": tip, "mass": mass}, material)
+    sizes_in = {"length": length, "tip_radius": tip, "mass": cast(float, mass)}
+    return flexible_rod(modes, sizes_in, material)
 
 
 def _flexible(

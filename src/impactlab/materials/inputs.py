@@ -188,9 +188,10 @@ def get_material(value: Any, where: str = "material") -> Material:
         if not path.is_file():
             raise ValueError(f"{where}: material file {text!r} does not exist")
         return from_file(path, where)
+    prefix = "" if where == "material" else f"{where}: "
     raise ValueError(
-        f"unknown material {text!r}; known: {library_names()} (see 'impactlab materials'), "
-        f"or give its properties: '{EXAMPLE}'"
+        f"{prefix}unknown material {text!r}; known: {library_names()} (see 'impactlab "
+        f"materials'), or give its properties: '{EXAMPLE}'"
     )
 
 

@@ -73,7 +73,7 @@ def custom_material(side: str, values: Mapping[str, float]) -> Material:
         raise ValueError(f"{side} material by values: {', '.join(missing)} not set")
     if side == "flat":
         given.setdefault("density", FLAT_DENSITY)
-    return Material(name=f"{side} material by values", **given)
+    return Material(f"{side} material by values", **given)  # type: ignore[arg-type]
 
 
 def material_of(side: str, name: str, values: Mapping[str, float]) -> Material:

@@ -141,13 +141,14 @@ def _quantity(value: Any, unit: str, bare_unit: str | None, label: str) -> float
             f"{label}: the bare number {value!r} has no unit; an angle needs one, e.g. "
             f"'{str(value).strip()} deg' (or unit = 'deg' in the input's table)"
         )
+    bare = bare_unit or unit  # None: refused above for a bare number
     try:
         if isinstance(value, str):
             q = ureg.Quantity(value.strip())
             if q.unitless:
-                q = float(q.magnitude) * ureg.Unit(bare_unit)
+                q = float(q.magnitude) * ureg.Unit(bare)
         else:
-            q = float(value) * ureg.Unit(bare_unit)
+            q = float(value) * ureg.Unit(bare)
         x = float(q.to(unit).magnitude)
     except pint.DimensionalityError:
         raise ValueError(f"{label}: {value!r} is not convertible to {unit}") from None
