@@ -127,7 +127,7 @@ LENGTH_HELP = (
 #: The rod options' help (the defaults are the paper's rod).
 _ROD_HELP = {
     "mass": "Rod mass, e.g. '0.46 kg' (bare number: kg; default 0.4607 kg).",
-    "length": f"{LENGTH_HELP} Default 0.3048 m.",
+    "length": f"{LENGTH_HELP} (default 0.3048 m).",
     "tip_radius": "Tip radius, e.g. '8.8 mm' (bare number: m; default 8.8 mm).",
     "inertia": "I_C about the centre of mass, e.g. '3.6e-3 kg*m^2' (default m L^2/12).",
 }

@@ -241,7 +241,7 @@ def drop_cmd(
     incidence: str = typer.Option(None, "--incidence", help=KINEMATIC_HELP["incidence"]),
     spin: str = typer.Option(None, "--spin", help=KINEMATIC_HELP["spin"]),
     length: str = typer.Option(
-        None, "--length", help=f"{LENGTH_HELP} Default: the paper's rod, 304.8 mm."
+        None, "--length", help=f"{LENGTH_HELP} (default: the paper's rod, 304.8 mm)."
     ),
     radius: str = typer.Option(
         None, "--radius", help="Tip radius R of the rounded ends, e.g. '8.8 mm' (default 8.8 mm)."

@@ -96,7 +96,7 @@ class _Options:
 
     def label(self, key: str) -> str:
         """How the user wrote ``key``: "--mass" or "mass (in case.toml)"."""
-        if key in self.from_cli:
+        if key in self.from_cli or key not in self.values:  # given here, or not at all
             return _FLAGS.get(key, "--" + key.replace("_", "-"))
         return f"{key} (in {self.config})"
 
@@ -265,7 +265,7 @@ _HELP = {
     "inertia": 'Rod I_C, e.g. "0.0036 kg*m^2" (bare number: kg*m^2; default m L^2/12; rigid rod '
     "only).",
     "radius": "Tip / sphere radius, e.g. '8.8 mm' (bare number: m; default 8.8 mm, the paper's).",
-    "length": f"{LENGTH_HELP} Default 0.3048 m.",
+    "length": f"{LENGTH_HELP} (default 0.3048 m).",
     "mass": "Mass, e.g. '0.46 kg' (bare number: kg; rod default 0.4607 kg; sphere default from "
     "the density).",
     "material": "Body material: a library name (see 'impactlab materials'), properties "
