@@ -111,6 +111,19 @@ def test_study_angle_rule() -> None:
     )
     num, _, _ = sphere.chunk_cases(0)  # a sphere-only study needs no angle
     assert (num["angle"] == 0.5 * math.pi).all()
+    with pytest.raises(ValueError, match="angle: a sphere has no angle"):  # and takes none
+        Study.from_dict(
+            {"fixed": {"body": "sphere", "radius": "3 mm", "vy": -1, "angle": "20 deg"},
+             "grid": {"mu": [0.1, 0.2]}}
+        )  # fmt: skip
+
+
+def test_python_refuses_an_angle_for_a_sphere() -> None:
+    from impactlab import simulate
+    from impactlab.bodies import Sphere
+
+    with pytest.raises(ValueError, match=r"angle \(0.3\): a Sphere has no angle to the flat"):
+        simulate(Sphere(0.003), angle=0.3, velocity=(0.0, -1.0))
 
 
 def test_drop_any_rod_material_and_flat(monkeypatch, capsys) -> None:

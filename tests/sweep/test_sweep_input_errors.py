@@ -149,11 +149,11 @@ def test_python_grid_axis_refuses_invalid_values() -> None:
 
 
 def test_what_only_a_case_can_tell_is_still_stored_with_its_status(tmp_path) -> None:
-    """Valid inputs: a sphere ignores the angle; a spin may turn vy > 0 into an approach;
-    S_y >= E is a combination; the fake law's validity limit fails cases physically."""
-    sphere = (
-        "[fixed]\nbody = 'sphere'\nradius = '5 mm'\nvy = -1\nmu = 0.1\n[grid]\n"
-        "angle = ['0 deg', '20 deg']\n"
+    """Valid inputs: a sphere beside a rod ignores the angle; a spin may turn vy > 0 into an
+    approach; S_y >= E is a combination; the fake law's validity limit fails cases physically."""
+    sphere = (  # a study of spheres and rods: the angle applies to the rods only
+        "[fixed]\nradius = '5 mm'\nangle = '20 deg'\nvy = -1\nmu = 0.1\n"
+        "[grid]\nbody = ['sphere', 'rod']\n"
     )
     spin = "[fixed]\nangle = '20 deg'\nmu = 0.1\nspin = '-40 rad/s'\n[grid]\nvy = [0.5, -1]\n"
     combo = (

@@ -59,11 +59,15 @@ def check_rtol(rtol: Any) -> float:
 
 
 def check_angle(angle: Any, body: Rod | Sphere) -> float:
-    """Validate the rod angle (in (0, pi/2]; a bare number is radians, ``"20 deg"`` works);
-    ignored (pi/2) for a sphere."""
+    """Validate the rod angle (in (0, pi/2]; a bare number is radians, ``"20 deg"`` works). A
+    sphere has none: pi/2 inside, and an angle given for it is refused (as on the command line:
+    an input that does not apply to the body is refused everywhere)."""
     if isinstance(body, Sphere):
         if angle is not None:
-            check_finite("angle", angle, "rad")
+            raise ValueError(
+                f"angle ({angle!r}): a Sphere has no angle to the flat (its contact point lies "
+                "below its centre); leave angle out"
+            )
         return 0.5 * math.pi
     if angle is None:
         raise ValueError(

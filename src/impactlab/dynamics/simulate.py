@@ -97,8 +97,8 @@ def simulate(
     mu : float
         Friction coefficient, >= 0 (default ``impactlab.friction.DEFAULT_MU``).
     angle : float or str
-        Rod axis to the flat, in (0, pi/2] rad; tip lowest, centre of mass at +x of the tip
-        (ignored for a sphere). A bare number above pi/2 is refused with a degrees hint.
+        Rod axis to the flat, in (0, pi/2] rad; tip lowest, centre of mass at +x of the tip.
+        A bare number above pi/2 is refused with a degrees hint; a sphere takes none (refused).
     velocity, spin : pair, float
         (vx, vy) of the centre of mass at first touch [m/s] (the contact point must approach);
         angular velocity [rad/s], counter-clockwise positive.
@@ -225,7 +225,7 @@ def _fast(
         if not (type(angle) in _PLAIN and 0.0 < angle <= _MAX_ANGLE):
             return None
         th = th_out = float(angle)
-    elif angle is None or (type(angle) in _PLAIN and -_BIG < angle < _BIG):
+    elif angle is None:  # a sphere has no angle (an angle given: the full path refuses it)
         th, th_out = 0.5 * math.pi, math.nan
     else:
         return None
