@@ -154,3 +154,10 @@ def test_simulate_refuses_a_material_given_in_parts(monkeypatch, capsys, tmp_pat
     assert code == 2 and "--flat: a material by values needs E, nu, Sy and rho" in err
     code, _, err = _cli(monkeypatch, capsys, "simulate", "sphere", "--vy", "-1", "--flat", "al")
     assert code == 2 and "unknown material 'al'" in err
+
+
+def test_fe_takes_a_material_whole(monkeypatch, capsys) -> None:
+    code, _, err = _cli(monkeypatch, capsys, "fe", "indent", "--max", "5 um", "--flat-E", "69 GPa")
+    assert code == 2 and "--flat-E without --flat-nu, --flat-sy: a material by values" in err
+    code, _, err = _cli(monkeypatch, capsys, "fe", "indent", "--max", "5 um", "--flat", "al")
+    assert code == 2 and "--flat: unknown material 'al'" in err
