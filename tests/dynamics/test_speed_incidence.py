@@ -103,3 +103,18 @@ def test_study_speed_and_incidence() -> None:
         Study.from_dict(
             {"fixed": {"mu": 0.1, "angle": "3 deg", "speed": 1}, "grid": {"incidence": [10]}}
         )
+
+
+def test_batch_speed_and_incidence() -> None:
+    from impactlab import simulate_batch
+
+    inc = [0.0, 0.2, 0.4]
+    by_speed = simulate_batch(PAPER_ROD, law="hertz", angle=0.6, speed=1.5, incidence=inc)
+    vx = [1.5 * math.sin(i) for i in inc]
+    vy = [-1.5 * math.cos(i) for i in inc]
+    ref = simulate_batch(PAPER_ROD, law="hertz", angle=0.6, vx=vx, vy=vy)
+    assert list(by_speed.e) == list(ref.e) and list(by_speed.status) == list(ref.status)
+    with pytest.raises(ValueError, match="not both"):
+        simulate_batch(PAPER_ROD, law="hertz", angle=0.6, vy=-1.0, speed=1.0, incidence=0.1)
+    with pytest.raises(ValueError, match="vy is required"):
+        simulate_batch(PAPER_ROD, law="hertz", angle=0.6)

@@ -146,6 +146,23 @@ def velocity_from(velocity: Any, speed: Any, incidence: Any) -> Any:
     return (v * math.sin(th), -v * math.cos(th))
 
 
+def batch_velocity(vx: Any, vy: Any, speed: Any, incidence: Any) -> tuple[Any, Any]:
+    """(vx, vy) of a batch: as given (vx None: 0), or from speed and incidence (scalars or
+    arrays, element by element). ValueError when both or neither are given."""
+    if speed is None and incidence is None:
+        if vy is None:
+            raise ValueError("vy is required (or speed= and incidence=)")
+        return (0.0 if vx is None else vx), vy
+    if vx is not None or vy is not None:
+        raise ValueError("give either vx/vy or speed= and incidence=, not both")
+    if speed is None or incidence is None:
+        missing = "speed" if speed is None else "incidence"
+        raise ValueError(f"speed and incidence go together: {missing} is missing")
+    v = np.asarray(magnitude("speed", speed, "m/s"), dtype=np.float64)
+    th = np.asarray(magnitude("incidence", incidence, "rad"), dtype=np.float64)
+    return v * np.sin(th), -v * np.cos(th)
+
+
 def check_body(body: Any) -> Rod | Sphere:
     """``body`` if it is a Rod or a Sphere, else ValueError."""
     if not isinstance(body, Rod | Sphere):
@@ -316,6 +333,7 @@ __all__ = [
     "PLAUSIBLE_SPEED",
     "RTOL_RANGE",
     "ImpactInputs",
+    "batch_velocity",
     "check_angle",
     "check_body",
     "check_flat",

@@ -27,6 +27,7 @@ from impactlab.dynamics.checks import (
     PLAUSIBLE_SPEED,
     RTOL_RANGE,
     ImpactInputs,
+    batch_velocity,
     check_body,
     check_flat,
     check_impact,
@@ -330,8 +331,8 @@ def simulate_batch(
     body: Rod | Sphere,
     flat: Material = AISI_1010,
     *,
-    vy: Any,
-    vx: Any = 0.0,
+    vy: Any = None,
+    vx: Any = None,
     angle: Any = None,
     mu: Any = DEFAULT_MU,
     spin: Any = 0.0,
@@ -341,12 +342,16 @@ def simulate_batch(
     gravity: Any = True,
     constant_angle: bool = False,
     rtol: float | None = None,
+    speed: Any = None,
+    incidence: Any = None,
 ) -> BatchResult:
     """Many impacts of one body, law and friction model, in parallel on all cores.
 
     ``mu``, ``angle`` [rad], ``vx``, ``vy`` [m/s] and ``spin`` [rad/s] are scalars or 1-D arrays,
     broadcast against each other; the dimensional ones may also be pint Quantities (any
-    registry) or strings with units, as in ``simulate``. ``vy`` is required. Invalid cases (NaN
+    registry) or strings with units, as in ``simulate``. ``vy`` (``vx`` default 0) or, instead,
+    ``speed`` [m/s] and ``incidence`` [rad] (arrays too; vx = speed sin(incidence),
+    vy = -speed cos(incidence), ``checks.velocity_from``) are required. Invalid cases (NaN
     input, an angle outside (0, pi/2], a receding contact point, the law's validity exceeded,
     ...) are flagged in ``BatchResult.status`` and never stop the batch; a computed case that
     gained energy or that gravity dominates is flagged in ``BatchResult.flags``. A speed above
@@ -362,6 +367,7 @@ def simulate_batch(
         if isinstance(body, Rod):
             raise ValueError("angle is required for a Rod (radians, in (0, pi/2])")
         angle = 0.5 * math.pi
+    vx, vy = batch_velocity(vx, vy, speed, incidence)
     x = _batch_inputs({"mu": mu, "angle": angle, "vx": vx, "vy": vy, "spin": spin})
     out, status = run_arrays(
         model.law_id,
