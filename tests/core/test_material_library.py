@@ -161,3 +161,28 @@ def test_fe_takes_a_material_whole(monkeypatch, capsys) -> None:
     assert code == 2 and "--flat-E without --flat-nu, --flat-sy: a material by values" in err
     code, _, err = _cli(monkeypatch, capsys, "fe", "indent", "--max", "5 um", "--flat", "al")
     assert code == 2 and "--flat: unknown material 'al'" in err
+
+
+def test_simulate_takes_a_material_by_values_and_a_config_table(monkeypatch, capsys, tmp_path):
+    """The researcher's case: a 6 mm AISI 52100 ball on 6061-T6, by name, by values on the
+    command line and as a --config table: the same impact as in Python."""
+    import impactlab as il
+
+    ball = il.Sphere(radius=0.003, material=PRESETS["aisi-52100"])
+    ref = il.simulate(ball, AL_6061_T6, velocity=(0.0, -2.5))
+    base = ("simulate", "sphere", "--radius", "3 mm", "--material", "52100", "--json")
+    code, out, err = _cli(monkeypatch, capsys, *base, "--vy", "-2.5 m/s", "--flat", "6061-t6")
+    assert code == 0, err
+    assert json.loads(out)["e"]["value"] == ref.e
+    values = "E=68.9GPa, nu=0.33, Sy=276MPa, rho=2700kg/m^3, HB=95"
+    code, out, err = _cli(monkeypatch, capsys, *base, "--speed", "2.5 m/s", "--incidence",
+                          "0 deg", "--flat", values)  # fmt: skip
+    assert code == 0, err
+    assert json.loads(out)["e"]["value"] == ref.e  # the same values, another name
+    cfg = tmp_path / "case.toml"
+    cfg.write_text(
+        'vy = "-2.5 m/s"\n[flat]\nE = "68.9 GPa"\nnu = 0.33\nSy = "276 MPa"\nrho = 2700\n'
+    )
+    code, out, err = _cli(monkeypatch, capsys, *base, "--config", str(cfg))
+    assert code == 0, err
+    assert json.loads(out)["e"]["value"] == ref.e
