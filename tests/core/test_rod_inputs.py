@@ -151,3 +151,23 @@ def test_drop_any_rod_material_and_flat(monkeypatch, capsys) -> None:
         "--length", "200 mm", "--radius", "5 mm", "--diameter", "10 mm",
     )  # fmt: skip
     assert code == 0 and "reload: True if the contact began on an existing dent" in out
+
+
+def test_simulate_rod_from_its_diameter(monkeypatch, capsys) -> None:
+    import json
+
+    from impactlab import simulate
+
+    code, out, err = _cli(
+        monkeypatch, capsys, "simulate", "rod", "--angle", "30 deg", "--vy", "-2 m/s",
+        "--length", "200 mm", "--radius", "5 mm", "--diameter", "10 mm",
+        "--material", "brass-c360", "--flat", "al-6061-t6", "--json",
+    )  # fmt: skip
+    assert code == 0, err
+    rod = Rod(length=0.2, tip_radius=0.005, diameter=0.01, material=BRASS_C360)
+    ref = simulate(rod, AL_6061_T6, angle=math.radians(30), velocity=(0.0, -2.0))
+    assert json.loads(out)["e"]["value"] == ref.e
+    code, _, err = _cli(
+        monkeypatch, capsys, "simulate", "sphere", "--vy", "-1 m/s", "--diameter", "1 mm"
+    )
+    assert code == 2 and "--diameter: a sphere has no angle" in err

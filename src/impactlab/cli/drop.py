@@ -92,19 +92,24 @@ def _count(value: int | None, name: str, default: int) -> int:
 
 
 def flexible_rod(
-    values: Mapping[str, Any], sizes: Mapping[str, float], material: Material, label: Any = None
+    values: Mapping[str, Any],
+    sizes: Mapping[str, float | None],
+    material: Material,
+    label: Any = None,
 ) -> FlexibleRod:
-    """A FlexibleRod of the given ``sizes`` (length, tip_radius, mass) and ``material`` with
-    the mode counts and damping of ``values`` (``modes_axial``, ``modes_bending``,
-    ``damping``; None: the defaults). ``label(key)`` spells an option in errors."""
+    """A FlexibleRod of the given ``sizes`` (length, tip_radius, and mass and/or diameter) and
+    ``material`` with the mode counts and damping of ``values`` (``modes_axial``,
+    ``modes_bending``, ``damping``; None: the defaults). ``label(key)`` spells an option in
+    errors."""
     name = label or (lambda key: "--" + key.replace("_", "-"))
     n_axial = _count(values.get("modes_axial"), name("modes_axial"), DEFAULT_N_AXIAL)
     n_bending = _count(values.get("modes_bending"), name("modes_bending"), DEFAULT_N_BENDING)
     damping = values.get("damping")
     return FlexibleRod(
-        length=sizes["length"],
-        tip_radius=sizes["tip_radius"],
-        mass=sizes["mass"],
+        length=cast(float, sizes["length"]),
+        tip_radius=cast(float, sizes["tip_radius"]),
+        mass=sizes.get("mass"),
+        diameter=sizes.get("diameter"),
         material=material,
         n_axial=n_axial,
         n_bending=n_bending,
@@ -137,36 +142,8 @@ def _body(
             raise UserError(f"{', '.join(given)}: a rigid rod has no modes; leave out --rigid")
         return Rod(length=length, tip_radius=tip, mass=mass, material=material,  # type: ignore[arg-type]
                    diameter=diameter)  # fmt: skip
-    if diameter is not None:
-        return _flexible(modes, length, tip, mass, diameter, material)
-    sizes_in = {"length": length, "tip_radius": tip, "mass": cast(float, mass)}
+    sizes_in = {"length": length, "tip_radius": tip, "mass": mass, "diameter": diameter}
     return flexible_rod(modes, sizes_in, material)
-
-
-def _flexible(
-    modes: Mapping[str, Any],
-    length: float,
-    tip: float,
-    mass: float | None,
-    diameter: float,
-    material: Material,
-) -> FlexibleRod:
-    """A FlexibleRod with its diameter (the mass from it if not given)."""
-    name = "--" + "{}"
-    n_axial = _count(modes.get("modes_axial"), name.format("modes-axial"), DEFAULT_N_AXIAL)
-    n_bending = _count(modes.get("modes_bending"), name.format("modes-bending"), DEFAULT_N_BENDING)
-    damping = modes.get("damping")
-    return FlexibleRod(
-        length=length,
-        tip_radius=tip,
-        mass=mass,
-        diameter=diameter,
-        material=material,
-        n_axial=n_axial,
-        n_bending=n_bending,
-        axial_residual=n_axial >= 1,
-        damping=0.0 if damping is None else float(damping),
-    )
 
 
 def _material(value: str | None, default: Material, name: str) -> Material:

@@ -56,6 +56,7 @@ _KEYS = (
     "length",
     "radius",
     "mass",
+    "diameter",
     "gravity",
     "constant_angle",
     "rtol",
@@ -69,7 +70,7 @@ _KEYS = (
     "rate",
 )
 #: Options of a rod that a sphere does not have.
-_ROD_ONLY = ("angle", "length", "inertia", "constant_angle")
+_ROD_ONLY = ("angle", "length", "inertia", "constant_angle", "diameter")
 #: Options of the flexible rod (``--flexible``) only.
 _FLEX_ONLY = ("modes_axial", "modes_bending", "damping", "rate")
 #: Options the flexible rod's drop does not have.
@@ -175,10 +176,12 @@ def _body(opt: _Options) -> tuple[Rod | Sphere | FlexibleRod, float | None]:
     if not opt.given("angle"):
         raise UserError(_MISSING_ANGLE)
     angle = angle_quantity(opt.values["angle"], opt.label("angle"))
-    sizes = {
+    diameter, mass = opt.size("diameter", "m"), opt.size("mass", "kg")
+    sizes: dict[str, float | None] = {
         "length": opt.size_or("length", "m", PAPER_ROD.length),
         "tip_radius": opt.size_or("radius", "m", PAPER_ROD.tip_radius),
-        "mass": opt.size_or("mass", "kg", PAPER_ROD.mass),
+        "mass": PAPER_ROD.mass if mass is None and diameter is None else mass,
+        "diameter": diameter,
     }
     if flexible:
         _refuse(
@@ -187,7 +190,8 @@ def _body(opt: _Options) -> tuple[Rod | Sphere | FlexibleRod, float | None]:
             "the flexible rod's inertia follows from its modes, and its lever arms move",
         )
         return flexible_rod(opt.values, sizes, material, opt.label), angle
-    return Rod(**sizes, material=material, inertia=opt.size("inertia", "kg*m^2")), angle
+    rod = Rod(**sizes, material=material, inertia=opt.size("inertia", "kg*m^2"))  # type: ignore[arg-type]
+    return rod, angle
 
 
 def run_simulate(opt: _Options) -> ImpactResult | DropResult:
@@ -266,8 +270,10 @@ _HELP = {
     "only).",
     "radius": "Tip / sphere radius, e.g. '8.8 mm' (bare number: m; default 8.8 mm, the paper's).",
     "length": f"{LENGTH_HELP} (default 0.3048 m).",
-    "mass": "Mass, e.g. '0.46 kg' (bare number: kg; rod default 0.4607 kg; sphere default from "
-    "the density).",
+    "mass": "Mass, e.g. '0.46 kg' (bare number: kg; rod default 0.4607 kg, or from --diameter; "
+    "sphere default from the density).",
+    "diameter": "Rod diameter d, e.g. '12 mm' (bare number: m; optional): the mass follows from "
+    "d, L and the material's density (with --mass too: checked to 2 %).",
     "material": "Body material: a library name (see 'impactlab materials'), properties "
     "'E=200GPa, nu=0.3, Sy=760MPa, rho=7800kg/m^3' (HB=, n= optional) or a TOML file "
     "(default aisi-201).",
@@ -304,6 +310,7 @@ def simulate_cmd(
     radius: str = _option("radius"),
     length: str = _option("length"),
     mass: str = _option("mass"),
+    diameter: str = _option("diameter"),
     material: str = _option("material"),
     flat: str = _option("flat"),
     no_gravity: bool = typer.Option(False, "--no-gravity", help="Switch gravity off."),
