@@ -186,3 +186,12 @@ def test_simulate_takes_a_material_by_values_and_a_config_table(monkeypatch, cap
     code, out, err = _cli(monkeypatch, capsys, *base, "--config", str(cfg))
     assert code == 0, err
     assert json.loads(out)["e"]["value"] == ref.e
+
+
+def test_a_library_material_changed_in_python_loses_its_label() -> None:
+    from dataclasses import replace
+
+    m = replace(AISI_1010, E=69e9, yield_strength=276e6)
+    assert m.name == "AISI 1010 low-carbon steel (paper's flat), modified (E, yield_strength)"
+    assert m.source == "" and library_key(m) is None
+    assert replace(AISI_1010) == AISI_1010  # unchanged: still the library's

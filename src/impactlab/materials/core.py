@@ -7,6 +7,7 @@ Every quantity is SI except the Brinell hardness, which is kept in its customary
 from __future__ import annotations
 
 import math
+import sys
 from dataclasses import dataclass, field
 
 from impactlab._html import dataclass_html, dataclass_rows
@@ -33,6 +34,14 @@ def summary_line(title: str, rows: list[tuple[str, str, str]]) -> str:
 def brinell_to_pa(hb: float) -> float:
     """Brinell hardness number (kgf/mm^2) to pressure in Pa: ``HB * g0 * 1e6``."""
     return hb * G0 * 1.0e6
+
+
+#: The fields that hold a material's values (what a library entry's source gives).
+_VALUES = ("E", "nu", "yield_strength", "brinell_hardness", "meyer_index", "density")
+
+
+def _differs(a: float, b: float) -> bool:
+    return not (a == b or (math.isnan(a) and math.isnan(b)))
 
 
 @dataclass(frozen=True)
@@ -97,6 +106,23 @@ class Material:
                 f"yield_strength ({self.yield_strength!r} Pa) must be smaller than E "
                 f"({self.E!r} Pa); check the units"
             )
+        self._relabel_if_changed()
+
+    def _relabel_if_changed(self) -> None:
+        """A library entry changed in part (``dataclasses.replace(AISI_1010, E=69e9)``) keeps
+        no library label: its name says what changed and its source is cleared, so that no
+        result names a library material it did not use."""
+        library = sys.modules.get("impactlab.materials.library")
+        presets = getattr(library, "PRESETS", None)  # None while the library is being built
+        if not presets or not self.source:
+            return
+        entry = next((m for m in presets.values() if m.name == self.name), None)
+        if entry is None:
+            return
+        changed = [f for f in _VALUES if _differs(getattr(self, f), getattr(entry, f))]
+        if changed:
+            object.__setattr__(self, "name", f"{self.name}, modified ({', '.join(changed)})")
+            object.__setattr__(self, "source", "")
 
     @property
     def has_hardness(self) -> bool:
