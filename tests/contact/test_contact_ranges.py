@@ -119,7 +119,7 @@ def test_every_doi_in_the_registry_is_well_formed() -> None:
             assert DOI_PATTERN.match(ref.doi), ref
             assert ref.url == f"https://doi.org/{ref.doi}"
         else:  # a handbook or a data sheet: the web address it was read at, or nothing
-            assert ref.url in ("",) or ref.url.startswith(("https://", "http://")), ref
+            assert ref.url == "" or ref.url.startswith(("https://", "http://")), ref
             assert not ref.confirmed
     for law in Law:  # the laws' sources say what was checked
         for ref in law.references:
