@@ -32,6 +32,7 @@ __all__ = [
 #: SI units of the fields of bodies and materials (the dataclasses that have an HTML repr).
 FIELD_UNITS: dict[str, str] = {
     "length": "m",
+    "overall_length": "m",
     "tip_radius": "m",
     "radius": "m",
     "diameter": "m",

@@ -6,7 +6,8 @@ computation used. ``confirmed`` is True only where the DOI was checked against t
 record or in a copy of the publication in this project; ``note`` says what was checked (see
 docs/laws/index.md, "References and their status"). The other DOIs are carried over from the
 sources' own citations and are not verified here. Every DOI must match ``DOI_PATTERN``; a
-reference whose DOI is unknown has ``doi == ""`` and ``url == ""``.
+reference without a DOI (a handbook, a data sheet) has ``doi == ""`` and, where it is on the
+web, the address it was read at in ``url`` (``""`` otherwise).
 """
 
 from __future__ import annotations
@@ -23,7 +24,8 @@ DOI_PATTERN = re.compile(r"^10\.\d{4,9}(\.\d+)*/\S+$")
 @dataclass(frozen=True)
 class Reference:
     """A cited source: registry ``key``, ``citation`` text, ``doi`` and ``url``
-    (https://doi.org/<doi>, filled in from the DOI); ``confirmed``: the DOI was read in a copy
+    (https://doi.org/<doi>, filled in from the DOI; for a source without a DOI, its web address
+    or ""); ``confirmed``: the DOI was read in a copy
     of the publication or at its DOI address; ``note``: what was checked, and where."""
 
     key: str
@@ -38,6 +40,8 @@ class Reference:
             raise ValueError(f"reference {self.key!r}: malformed DOI {self.doi!r}")
         if self.confirmed and not self.doi:
             raise ValueError(f"reference {self.key!r}: confirmed without a DOI")
+        if self.url and not self.url.startswith(("https://", "http://")):
+            raise ValueError(f"reference {self.key!r}: url must be a web address, got {self.url!r}")
         if self.doi and not self.url:
             object.__setattr__(self, "url", f"https://doi.org/{self.doi}")
 
@@ -202,7 +206,86 @@ _ALL: tuple[Reference, ...] = (
     ),
 )
 
-REFERENCES: MappingProxyType[str, Reference] = MappingProxyType({r.key: r for r in _ALL})
+#: Material data: handbooks and data sheets (``impactlab.materials.library``).
+_MATERIAL_DATA: tuple[Reference, ...] = (
+    Reference(
+        "matweb-al6061-t6",
+        "MatWeb, data sheet 'Aluminum 6061-T6; 6061-T651' (values of the Aluminum Association "
+        "and Alcoa)",
+        url="https://hallaweb.jlab.org/tech/Detectors/public_html/manuals/data_sheets-manuals/"
+        "M-N/M/materials/nickel/08-11-04/MatWeb%20-%20Online%20Material%20Data%20Sheet.htm",
+        note="a saved copy of the MatWeb data sheet; the same values (E 68.9 GPa, nu 0.33, "
+        "S_y 276 MPa, HB 95, 2.70 g/cc) are on the data sheets that cite MatWeb",
+    ),
+    Reference(
+        "matweb-aisi-304",
+        "MatWeb, data sheet 'AISI Type 304 Stainless Steel' (annealed)",
+        url="https://www.scribd.com/document/416534641/304-Stainless-Steel-pdf",
+        note="a copy of the MatWeb data sheet",
+    ),
+    Reference(
+        "asm-matweb-ti6al4v",
+        "ASM Aerospace Specification Metals / MatWeb, data sheet 'Titanium Ti-6Al-4V (Grade 5), "
+        "Annealed' (MTP641)",
+        url="http://asm.matweb.com/search/SpecificMaterial.asp?bassnum=MTP641",
+    ),
+    Reference(
+        "aisi-52100-ball",
+        "AISI 52100 chrome steel balls, material specification (through-hardened, HRC 60-67); "
+        "density and elastic constants also on the 52100 data sheet of www.stindia.com",
+        url="https://ja.scribd.com/document/252517093/ASTM-52100-Material-Del-Tornillo-de-Potencia",
+        note="a ball maker's specification sheet; E 29.5e6 psi, S_y 295,000 psi, "
+        "0.283 lb/in^3; Poisson's ratio 0.27-0.30 from "
+        "https://www.stindia.com/article/difference-between/difference-between-52100-e52100-steel.html",
+    ),
+    Reference(
+        "cda-c36000",
+        "Copper Development Association data for C36000 free-cutting brass (ASTM B16), typical "
+        "values for 1 in rod, half-hard temper (H02)",
+        url="https://www.brass-copper-castings.com/casting-alloys-copper-bronze-brass/"
+        "free-machining-brass-c36000.html",
+        note="E 14,000 ksi, S_y 45 ksi, 0.307 lb/in^3; Poisson's ratio 0.31 from the MatWeb "
+        "values at https://www.ezlok.com/technical-info/mechanical-properties/brass",
+    ),
+    Reference(
+        "smithells-2004-copper",
+        "W. F. Gale, T. C. Totemeier (eds.), Smithells Metals Reference Book, 8th ed., "
+        "Elsevier (2004), Table 22.7: oxygen-free high-conductivity copper, strip, annealed (O)",
+        url="http://www.globalspec.com/reference/26187/203279/"
+        "22-2-mechanical-properties-of-copper-and-copper-alloys",
+        note="0.2 % proof stress 48 MPa, HB 42, E 117 GPa; density 8.94 g/cm^3 (C10200, "
+        "https://www.lfa-wire.com/copper-wire-oxygen-free-high-conductivity_c10200.htm); "
+        "Poisson's ratio 0.34 (annealed C10800, makeitfrom.com)",
+    ),
+    Reference(
+        "makeitfrom-wc",
+        "MakeItFrom.com, 'Tungsten Carbide (WC)' (sources: Pierson, Handbook of Refractory "
+        "Carbides and Nitrides, 1996; Martienssen & Warlimont, Springer Handbook of Condensed "
+        "Matter and Materials Data, 2005)",
+        url="https://www.makeitfrom.com/material-properties/Tungsten-Carbide-WC",
+    ),
+    Reference(
+        "nist-srd30-alumina",
+        "NIST Standard Reference Database 30/150, 'Sintered Alumina (Al2O3)', 99.5 % or higher, "
+        "from R. G. Munro, Evaluated material properties for a sintered alpha-alumina, "
+        "J. Am. Ceram. Soc. 80 (1997) 1919-1928",
+        "10.18434/T42G62",
+        note="E 416(30) GPa, density 3.984 g/cm^3, compressive strength 3.0(5) GPa at 20 degC; "
+        "Poisson's ratio 0.22-0.24 (alumina grades, makeitfrom.com)",
+    ),
+    Reference(
+        "makeitfrom-soda-lime",
+        "MakeItFrom.com, 'Annealed Soda-Lime Glass'; density and E of window glass from the "
+        "table of soda-lime glass properties (Wikipedia, 'Soda-lime glass')",
+        url="https://www.makeitfrom.com/material-properties/Annealed-Soda-Lime-Glass",
+        note="nu 0.23, compressive strength 330 MPa; E 72 GPa and 2.52 g/cm^3 (container "
+        "glass) from http://www.liquisearch.com/soda-lime_glass/typical_compositions_and_properties",
+    ),
+)
+
+REFERENCES: MappingProxyType[str, Reference] = MappingProxyType(
+    {r.key: r for r in (*_ALL, *_MATERIAL_DATA)}
+)
 """key -> Reference: every source the package cites (read-only)."""
 
 

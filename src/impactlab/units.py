@@ -9,7 +9,8 @@ Two rules, one parser:
   checked as a number by ``impactlab._validation``; a bare number *string* (``"0.0088"``) is
   refused, since it names no unit.
 - :func:`to_si` is the edge's rule (command line, study files): there a bare number, written or
-  not, means "in the stated unit".
+  not, means "in the stated unit" -- except an angle (:func:`angle_to_rad`), which text must
+  give with its unit (the angle rule, docs/glossary.md).
 
 The Python API applies :func:`magnitude` through ``impactlab._validation`` (``check_positive(
 "length", value, "m")`` and its siblings), which adds the rule for numbers (never a bool or a
@@ -129,7 +130,13 @@ def to_si(value: Any, unit: str, *, name: str = "value") -> float:
 
 
 def angle_to_rad(value: Any, *, name: str = "angle") -> float:
-    """An angle (bare numbers are degrees) in radians."""
+    """An angle written as text with its unit (``"20 deg"``, ``"0.35 rad"``) in radians. A bare
+    number, written or not, is refused: it could be degrees or radians (the angle rule of
+    docs/glossary.md; the Python API's bare numbers are radians, ``magnitude``)."""
+    if isinstance(value, int | float) or _parse(name, str(value), "deg").unitless:
+        raise ValueError(
+            f"{name} {str(value).strip()} has no unit: give a unit, e.g. '20 deg' or '0.35 rad'"
+        )
     return to_si(value, "degree", name=name)
 
 

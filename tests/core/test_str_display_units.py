@@ -15,7 +15,8 @@ def test_rod_str_in_display_units() -> None:
     text = str(Rod.paper())
     assert text == (
         "Rod: length = 304.8 mm, tip_radius = 8.8 mm, mass = 0.4607 kg, "
-        "inertia = 0.0035667 kg m^2, material = AISI 201 stainless steel (paper's rod)"
+        "inertia = 0.0035667 kg m^2, overall_length = 322.4 mm, "
+        "material = AISI 201 stainless steel (paper's rod)"
     )
 
 

@@ -38,9 +38,13 @@ def test_to_si(text: object, unit: str, expected: float) -> None:
     assert to_si(text, unit) == pytest.approx(expected, rel=1e-12)
 
 
-def test_angles_default_to_degrees() -> None:
-    assert angle_to_rad(20) == pytest.approx(math.radians(20))
+def test_text_angles_carry_their_unit() -> None:
+    """The angle rule: text gives its unit; a bare number could be degrees or radians."""
+    assert angle_to_rad("20 deg") == pytest.approx(math.radians(20))
     assert angle_to_rad("0.5 rad") == pytest.approx(0.5)
+    for bare in (20, 0.35, "20", " 0.35 "):
+        with pytest.raises(ValueError, match="has no unit"):
+            angle_to_rad(bare)
 
 
 @pytest.mark.parametrize("bad", ["3 kg", "fast", "", "nan m"])

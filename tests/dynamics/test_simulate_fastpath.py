@@ -49,7 +49,7 @@ CASES: list[tuple[Any, dict[str, Any]]] = [
     (PAPER_ROD, {**PAPER, "law": "brake", "mu": np.float64(0.3), "gravity": 9.81}),
     (PAPER_ROD, {**PAPER, "mu": 0.0, "velocity": (0.3, -0.05)}),  # gravity-dominated
     (SPHERE, {"law": "hertz", "friction": "coulomb", "mu": 0.1, "velocity": (0.2, -0.5)}),
-    (SPHERE, {"law": "kogut-komvopoulos", "mu": 0.2, "angle": 0.3, "velocity": (0.1, -3.0)}),
+    (SPHERE, {"law": "kogut-komvopoulos", "mu": 0.2, "velocity": (0.1, -3.0)}),
     (SPHERE, {"law": "jackson-green", "mu": 0.2, "velocity": (0.1, -1.0), "spin": 50.0}),
 ]
 
@@ -72,6 +72,7 @@ BAD: list[tuple[Any, dict[str, Any]]] = [
     (PAPER_ROD, {**PAPER, "history": 1}),
     (PAPER_ROD, {**PAPER, "flat": "steel"}),
     (SPHERE, {"law": "hertz", "velocity": (0.0, -1.0), "angle": math.nan}),
+    (SPHERE, {"law": "hertz", "velocity": (0.0, -1.0), "angle": 0.3}),  # a sphere has none
 ]
 
 

@@ -21,21 +21,22 @@ EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
             "unknown input 'angel'; known inputs: angle, vx, vy",
         ),
         (
-            "[fixed]\nvy = -1\nangle = 20\n[sample]\nsize = 10\nmu = { dist = 'beta' }\n",
+            "[fixed]\nvy = -1\nangle = '20 deg'\n[sample]\nsize = 10\nmu = { dist = 'beta' }\n",
             "unknown distribution 'beta'",
         ),
         (
-            "[fixed]\nvy = -1\nangle = 20\n[sample]\nsize = 10\n"
+            "[fixed]\nvy = -1\nangle = '20 deg'\n[sample]\nsize = 10\n"
             "mu = { dist = 'normal', mean = 0.2 }\n",
             "needs 'std'",
         ),
         ("[grid\n", "not valid TOML"),
         (
-            "[fixed]\nvy = -1\nmu = 0.1\nlaw = 'hooke'\n[grid]\nangle = [10]\n",
+            "[fixed]\nvy = -1\nmu = 0.1\nlaw = 'hooke'\n[grid]\nangle = ['10 deg']\n",
             "unknown contact law 'hooke'",
         ),
         (
-            "[fixed]\nvy = -1\nmu = 0.1\n[grid]\nangle = [10]\n[outputs]\nkeep = ['e', 'zz']\n",
+            "[fixed]\nvy = -1\nmu = 0.1\n[grid]\nangle = ['10 deg']\n"
+            "[outputs]\nkeep = ['e', 'zz']\n",
             "unknown output(s) ['zz']",
         ),
     ],
@@ -59,7 +60,8 @@ def test_run_resume_export_plot_info(tmp_path, monkeypatch, capsys) -> None:
     study.write_text(
         "[study]\nname = 'small'\nchunk_size = 30\n"
         "[fixed]\nvy = '-1.41 m/s'\n"
-        "[grid]\nangle = { start = 10, stop = 80, num = 8 }\nmu = [0.0, 0.1, 0.2, 0.4, 0.6]\n"
+        "[grid]\nangle = { start = 10, stop = 80, num = 8, unit = 'deg' }\n"
+        "mu = [0.0, 0.1, 0.2, 0.4, 0.6]\n"
         "[outputs]\nkeep = ['e', 'delta_p', 'sliding_length', 'duration', 'regime']\n"
     )
     store = tmp_path / "small.zarr"
@@ -102,7 +104,7 @@ def test_uncertainty_command(tmp_path, monkeypatch, capsys) -> None:
     study = tmp_path / "mc.toml"
     study.write_text(
         "[study]\nname = 'mc'\nchunk_size = 100\n"
-        "[fixed]\nangle = 45\n"
+        "[fixed]\nangle = '45 deg'\n"
         "[sample]\nsize = 300\nseed = 4\n"
         "vy = { dist = 'normal', mean = '-2.18 m/s', std = '0.05 m/s' }\n"
         "mu = { dist = 'uniform', low = 0.05, high = 0.3 }\n"

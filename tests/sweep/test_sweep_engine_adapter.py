@@ -33,6 +33,15 @@ def _cases(n: int, **cols) -> dict[str, np.ndarray]:
     return out
 
 
+#: The paper's flat (AISI 1010) defined whole by its values: a study changes no library material
+#: in part (impactlab.sweep.material_inputs).
+FLAT_1010 = {"flat_E": 200e9, "flat_nu": 0.3, "flat_brinell_hardness": 105.0}
+
+
+def _flat_cases(n: int, **cols) -> dict[str, np.ndarray]:
+    return _cases(n, **{k: np.full(n, v) for k, v in FLAT_1010.items()}, **cols)
+
+
 def _statics(**cat) -> Statics:
     base = {
         "law": "hertz",
@@ -57,7 +66,8 @@ def test_per_case_models_and_rejections() -> None:
     sy = [305e6, 250e6, 305e6, 300e9, 305e6]  # 300 GPa > E: Material rejects it
     tip = [0.0088, 0.0088, 0.005, 0.0088, -1.0]  # negative radius: Rod rejects it
     lp, bp, status = build_models(
-        _cases(5, flat_yield_strength=sy, tip_radius=tip), _statics(law="ghaednia")
+        _flat_cases(5, flat_yield_strength=sy, tip_radius=tip),
+        _statics(law="ghaednia", flat_material="custom"),
     )
     assert lp.shape[0] == 5 and bp.shape[0] == 5
     np.testing.assert_array_equal(status, [0, 0, 0, STATUS_BAD_MATERIAL, STATUS_BAD_BODY])
@@ -85,14 +95,26 @@ def test_sphere_and_bad_law_parameters() -> None:
     assert status[0] == STATUS_BAD_BODY
 
 
+def test_a_library_material_is_never_partly_changed() -> None:
+    """Property values beside a library name: every case refused as a bad material (a study
+    refuses them when it is built); a custom flat lacking nu: refused as well."""
+    _, _, status = build_models(_cases(2, flat_E=[69e9, 70e9]), _statics())
+    assert (status == STATUS_BAD_MATERIAL).all()
+    cols = {"flat_E": [69e9, 70e9], "flat_yield_strength": [276e6, 276e6]}
+    _, _, status = build_models(_cases(2, **cols), _statics(flat_material="custom"))
+    assert (status == STATUS_BAD_MATERIAL).all()
+
+
 @pytest.mark.parametrize("law", ["hertz", "ghaednia"])
 def test_models_are_cached(law) -> None:
     from impactlab.sweep import models as eng
 
     sy = np.linspace(200e6, 300e6, 7)
-    build_models(_cases(7, flat_yield_strength=sy), _statics(law=law))
+    build_models(_flat_cases(7, flat_yield_strength=sy), _statics(law=law, flat_material="custom"))
     n = len(eng._law_cache)
-    build_models(_cases(7, flat_yield_strength=sy[::-1]), _statics(law=law))
+    build_models(
+        _flat_cases(7, flat_yield_strength=sy[::-1]), _statics(law=law, flat_material="custom")
+    )
     assert len(eng._law_cache) == n
 
 
@@ -103,7 +125,7 @@ def test_sweep_matches_direct_engine_calls(tmp_path, engine) -> None:
     spec = {
         "name": "e2e",
         "chunk_size": 7,
-        "fixed": {"vy": -1.41, "mu": 0.2, "law": "ghaednia"},
+        "fixed": {"vy": -1.41, "mu": 0.2, "law": "ghaednia", **FLAT_1010},
         "outputs": ["e", "delta_p", "sliding_length", "duration", "mean_force", "regime"],
     }
     # an angle outside (0, 90] deg is refused when the study is built, as in a study file

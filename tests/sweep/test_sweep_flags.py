@@ -45,7 +45,7 @@ def test_run_summary_counts_flags(tmp_path, monkeypatch, capsys) -> None:
     # the compiled engine: the paper's impulse-ratio friction gains energy at 90 degrees
     f = tmp_path / "ir.toml"
     f.write_text(
-        "[fixed]\nangle = 90\nmu = 0.2\nvy = -1.41\nlaw = 'hertz'\n"
+        "[fixed]\nangle = '90 deg'\nmu = 0.2\nvy = -1.41\nlaw = 'hertz'\n"
         "[grid]\nfriction = ['coulomb', 'impulse_ratio']\n[outputs]\nkeep = ['e']\n"
     )
     monkeypatch.setattr(

@@ -23,7 +23,7 @@ TABLE = {
     "fixed": {"vy": -1.41, "mu": 0.2, "n_axial": 2, "n_bending": 4, "damping": 0.01},
     "grid": {
         "body": ["rod", "flexible_rod"],
-        "angle": [20, 45],
+        "angle": ["20 deg", "45 deg"],
         "friction": ["coulomb", "mindlin"],
     },
     "outputs": {"keep": ["e", "delta_p", "sliding_length", "duration", "mean_force", "regime"]},
@@ -57,7 +57,13 @@ def test_rejected_cases_have_status(tmp_path: Path) -> None:
     input, refused when the study is read."""
     table = {
         "study": {"name": "bad", "chunk_size": 8},
-        "fixed": {"body": "flexible_rod", "mu": 0.1, "angle": 30, "n_bending": 2, "n_axial": 1},
+        "fixed": {
+            "body": "flexible_rod",
+            "mu": 0.1,
+            "angle": "30 deg",
+            "n_bending": 2,
+            "n_axial": 1,
+        },
         "grid": {"vy": [-1.0, 0.5], "inertia": [0.004], "damping": [0.0]},
     }
     table["fixed"]["spin"] = 1.0  # vy = 0.5 m/s then recedes: 0.5 - 1 * (L/2) cos 30 deg > 0
@@ -78,13 +84,13 @@ def test_study_level_checks() -> None:
     """Flexible inputs without a flexible rod, constant_angle with one, and a friction model
     the drop lacks are refused when the study is read or run."""
     with pytest.raises(ValueError, match=r"n_bending.*flexible_rod"):
-        Study.from_dict({"fixed": {"angle": 20, "vy": -1, "mu": 0.1, "n_bending": 3}})
+        Study.from_dict({"fixed": {"angle": "20 deg", "vy": -1, "mu": 0.1, "n_bending": 3}})
     with pytest.raises(ValueError, match="constant_angle"):
         Study.from_dict(
-            {"fixed": {"angle": 20, "vy": -1, "mu": 0.1, "body": "flexible_rod"},
+            {"fixed": {"angle": "20 deg", "vy": -1, "mu": 0.1, "body": "flexible_rod"},
              "engine": {"constant_angle": True}}
         )  # fmt: skip
-    fixed = {"angle": 20, "vy": -1, "mu": 0.1, "body": "flexible_rod"}
+    fixed = {"angle": "20 deg", "vy": -1, "mu": 0.1, "body": "flexible_rod"}
     bad = Study.from_dict({"fixed": fixed, "grid": {"friction": ["coulomb", "nonsense"]}})
     with pytest.raises(ValueError, match=r"friction 'nonsense'.*flexible rod"):
         run_sweep(bad, quiet=True)

@@ -14,7 +14,7 @@ from impactlab.sweep.status import STATUS_BAD_BODY, STATUS_BAD_INPUT
 def test_bad_cases_get_a_status_and_valid_cases_are_stored(tmp_path: Path) -> None:
     table = {
         "study": {"name": "flex-bad", "chunk_size": 8},
-        "fixed": {"body": "flexible_rod", "mu": 0.2, "angle": 20, "n_axial": 1},
+        "fixed": {"body": "flexible_rod", "mu": 0.2, "angle": "20 deg", "n_axial": 1},
         "grid": {"vy": [-1.41, -1e-300], "n_bending": [2, 300]},
     }
     ds = run_sweep(Study.from_dict(table), tmp_path / "f.zarr", quiet=True).dataset.load()

@@ -14,7 +14,7 @@ from sweep_fakes import VY_LIMIT, FakeEvaluator, run_cli
 from impactlab.sweep import Study, load_study, open_sweep, run_sweep
 from impactlab.sweep.store import CorruptStoreError
 
-BASE = "[fixed]\nvy = -1.41\nmu = 0.2\n[grid]\nangle = [20, 45]\n"
+BASE = "[fixed]\nvy = -1.41\nmu = 0.2\n[grid]\nangle = ['20 deg', '45 deg']\n"
 
 
 def _one_line(err: str) -> str:
@@ -99,19 +99,20 @@ def test_run_into_damaged_store_needs_restart(store) -> None:
     ("table", "message"),
     [
         (
-            "[fixed]\nvy = -1\nangle = 20\n[grid]\nmu = [0.1, -0.2, 0.3, -0.05]\n",
+            "[fixed]\nvy = -1\nangle = '20 deg'\n[grid]\nmu = [0.1, -0.2, 0.3, -0.05]\n",
             "grid dimension 'mu': mu must be >= 0, got -0.2, -0.05 (2 of 4 values)",
         ),
         (
-            "[fixed]\nvy = -1\nmu = 0.1\n[grid]\nangle = { start = 0, stop = 90, num = 4 }\n",
+            "[fixed]\nvy = -1\nmu = 0.1\n[grid]\n"
+            "angle = { start = 0, stop = 90, num = 4, unit = 'deg' }\n",
             "grid dimension 'angle': angle must lie in (0, 90] deg, got 0 deg (1 of 4 values)",
         ),
         (
-            "[fixed]\nvy = -1\nmu = 0.1\n[grid]\nangle = [30, 95, 120]\n",
+            "[fixed]\nvy = -1\nmu = 0.1\n[grid]\nangle = ['30 deg', '95 deg', '120 deg']\n",
             "angle must lie in (0, 90] deg, got 95, 120 deg (2 of 3 values)",
         ),
         (
-            "[fixed]\nangle = 20\nmu = 0.1\n[grid]\nvy = ['-1 m/s', '0.5 m/s', '2 m/s']\n",
+            "[fixed]\nangle = '20 deg'\nmu = 0.1\n[grid]\nvy = ['-1 m/s', '0.5 m/s', '2 m/s']\n",
             "grid dimension 'vy': the contact point must approach the flat (vy < 0 m/s with "
             "spin = 0), got 0.5, 2 m/s (2 of 3 values)",
         ),
@@ -124,7 +125,7 @@ def test_run_into_damaged_store_needs_restart(store) -> None:
             "grid dimension 'body_nu': body_nu must lie in (-1, 0.5), got 0.6 (1 of 2 values)",
         ),
         (
-            "[fixed]\nvy = -1\nangle = 20\nmu = -0.1\n[grid]\nvx = [0, 1]\n",
+            "[fixed]\nvy = -1\nangle = '20 deg'\nmu = -0.1\n[grid]\nvx = [0, 1]\n",
             "input 'mu': mu must be >= 0, got -0.1",
         ),
     ],
@@ -148,13 +149,17 @@ def test_python_grid_axis_refuses_invalid_values() -> None:
 
 
 def test_what_only_a_case_can_tell_is_still_stored_with_its_status(tmp_path) -> None:
-    """Valid inputs: a sphere ignores the angle; a spin may turn vy > 0 into an approach;
-    S_y >= E is a combination; the fake law's validity limit fails cases physically."""
-    sphere = (
-        "[fixed]\nbody = 'sphere'\nradius = '5 mm'\nvy = -1\nmu = 0.1\n[grid]\nangle = [0, 20]\n"
+    """Valid inputs: a sphere beside a rod ignores the angle; a spin may turn vy > 0 into an
+    approach; S_y >= E is a combination; the fake law's validity limit fails cases physically."""
+    sphere = (  # a study of spheres and rods: the angle applies to the rods only
+        "[fixed]\nradius = '5 mm'\nangle = '20 deg'\nvy = -1\nmu = 0.1\n"
+        "[grid]\nbody = ['sphere', 'rod']\n"
     )
-    spin = "[fixed]\nangle = 20\nmu = 0.1\nspin = '-40 rad/s'\n[grid]\nvy = [0.5, -1]\n"
-    combo = BASE + "flat_yield_strength = ['300 MPa', '400 GPa']\n"
+    spin = "[fixed]\nangle = '20 deg'\nmu = 0.1\nspin = '-40 rad/s'\n[grid]\nvy = [0.5, -1]\n"
+    combo = (
+        "[fixed]\nvy = -1.41\nmu = 0.2\nflat_E = '200 GPa'\nflat_nu = 0.3\n[grid]\n"
+        "angle = ['20 deg', '45 deg']\nflat_yield_strength = ['300 MPa', '400 GPa']\n"
+    )
     for i, text in enumerate((sphere, spin, combo)):
         f = tmp_path / f"ok{i}.toml"
         f.write_text(text)

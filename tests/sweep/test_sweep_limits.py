@@ -14,7 +14,7 @@ from impactlab.sweep import DEFAULT_MAX_CASES, Sample, Study, SweepSizeWarning, 
 
 
 def _table(**extra) -> dict:
-    base = {"fixed": {"vy": -1.41, "mu": 0.2}, "grid": {"angle": [10, 20]}}
+    base = {"fixed": {"vy": -1.41, "mu": 0.2}, "grid": {"angle": ["10 deg", "20 deg"]}}
     for key, value in extra.items():
         base[key] = {**base.get(key, {}), **value}
     return base
@@ -23,10 +23,13 @@ def _table(**extra) -> dict:
 @pytest.mark.parametrize(
     ("grid", "cases"),
     [
-        ({"angle": {"start": 10, "stop": 80, "num": 10**10}}, "10,000,000,000 cases"),
+        (
+            {"angle": {"start": 10, "stop": 80, "num": 10**10, "unit": "deg"}},
+            "10,000,000,000 cases",
+        ),
         (
             {
-                "angle": {"start": 10, "stop": 80, "num": 100_000},
+                "angle": {"start": 10, "stop": 80, "num": 100_000, "unit": "deg"},
                 "mu": {"start": 0, "stop": 1, "num": 10_000},
                 "vx": {"start": 0, "stop": 1, "num": 10_000},
             },
@@ -46,7 +49,7 @@ def test_huge_grids_are_refused_with_an_estimate(tmp_path, grid, cases) -> None:
 
 def test_huge_sample_is_refused_before_a_store_exists(tmp_path) -> None:
     study = {
-        "fixed": {"vy": -1.41, "angle": 20},
+        "fixed": {"vy": -1.41, "angle": "20 deg"},
         "sample": {"size": 10**12, "mu": {"dist": "uniform", "low": 0, "high": 1}},
     }
     with pytest.raises(
@@ -73,7 +76,7 @@ def test_huge_sample_is_refused_before_a_store_exists(tmp_path) -> None:
 
 def test_cli_max_cases_and_chunk_warnings(tmp_path, monkeypatch, capsys) -> None:
     f = tmp_path / "s.toml"
-    f.write_text("[fixed]\nvy = -1.41\nmu = 0.2\n[grid]\nangle = [10, 20, 30]\n")
+    f.write_text("[fixed]\nvy = -1.41\nmu = 0.2\n[grid]\nangle = ['10 deg', '20 deg', '30 deg']\n")
     code, _, err = run_cli(
         monkeypatch, capsys, "sweep", str(f), "--max-cases", "2", "-o", str(tmp_path / "x.zarr")
     )
@@ -130,7 +133,7 @@ def test_valid_law_params_and_names_pass(tmp_path) -> None:
     s = Study.from_dict(_table(law_params={"published_switch": 1.0}, study={"name": "v1.2_a-b"}))
     assert s.law_params == {"published_switch": 1.0} and s.name == "v1.2_a-b"
     f = tmp_path / "my study (2).toml"
-    f.write_text("[fixed]\nvy = -1.41\nmu = 0.2\n[grid]\nangle = [10]\n")
+    f.write_text("[fixed]\nvy = -1.41\nmu = 0.2\n[grid]\nangle = ['10 deg']\n")
     assert Study.from_toml(f).name == "my_study__2_"  # the file name, made a valid name
 
 
@@ -139,7 +142,7 @@ def test_bad_name_in_a_study_file_writes_nothing(tmp_path, monkeypatch, capsys) 
     (tmp_path / "work").mkdir()
     f = tmp_path / "work" / "s.toml"
     f.write_text(
-        "[study]\nname = '../escaped'\n[fixed]\nvy = -1.41\nmu = 0.2\n[grid]\nangle = [10]\n"
+        "[study]\nname = '../escaped'\n[fixed]\nvy = -1.41\nmu = 0.2\n[grid]\nangle = ['10 deg']\n"
     )
     monkeypatch.chdir(tmp_path / "work")
     code, _, err = run_cli(monkeypatch, capsys, "sweep", "s.toml")

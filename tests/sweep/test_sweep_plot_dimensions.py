@@ -27,7 +27,9 @@ GRID = {
 
 
 def _sweep(tmp_path, **extra):
-    st = Study(name="d", grid={**GRID, **extra})
+    # a flat by values: flat_E with the rest of the flat (no library material is partly changed)
+    fixed = {"flat_nu": 0.3, "flat_yield_strength": 305e6} if "flat_E" in extra else {}
+    st = Study(name="d", grid={**GRID, **extra}, fixed=fixed)
     return run_sweep(st, tmp_path / "d.zarr", evaluator=FakeEvaluator(), quiet=True).dataset
 
 

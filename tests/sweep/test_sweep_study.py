@@ -141,9 +141,14 @@ def test_study_table_units_and_round_trip() -> None:
     s = Study.from_dict(
         {
             "study": {"name": "x", "chunk_size": 100},
-            "fixed": {"vy": "-1410 mm/s", "flat_yield_strength": "305 MPa", "law": "hertz"},
+            "fixed": {
+                "vy": "-1410 mm/s",
+                "flat_yield_strength": "305 MPa",
+                "flat_nu": 0.3,
+                "law": "hertz",
+            },
             "grid": {
-                "angle": {"start": 10, "stop": 30, "num": 3},
+                "angle": {"start": 10, "stop": 30, "num": 3, "unit": "deg"},
                 "mu": {"start": 0.0, "stop": 0.2, "step": 0.1},
                 "flat_E": {"values": [190, 210], "unit": "GPa"},
             },
@@ -157,7 +162,8 @@ def test_study_table_units_and_round_trip() -> None:
     )
     assert s.fixed["vy"] == pytest.approx(-1.41)
     assert s.fixed["flat_yield_strength"] == pytest.approx(305e6)
-    np.testing.assert_allclose(s.axes[0].values, np.radians([10, 20, 30]))  # bare: degrees
+    assert s.fixed["flat_material"] == "custom"  # a material by values, never "aisi-1010"
+    np.testing.assert_allclose(s.axes[0].values, np.radians([10, 20, 30]))  # unit = "deg"
     np.testing.assert_allclose(s.axes[1].values, [0.0, 0.1, 0.2])
     assert s.axes[2].values == (190e9, 210e9)
     assert s.sample is not None and s.sample.inputs["vx"].std == pytest.approx(0.02)
@@ -180,41 +186,63 @@ def test_study_table_units_and_round_trip() -> None:
             {"grid": {"angel": [1, 2]}, "fixed": {"vy": -1, "mu": 0.1}},
             "unknown input 'angel'; known inputs: angle, vx",
         ),
-        ({"fixed": {"vy": -1, "mu": 0.1, "angle": 20}}, "needs a \\[grid\\] or a \\[sample\\]"),
-        ({"grid": {"angle": [10]}, "fixed": {"vy": -1}}, r"\['mu'\] have no value"),
         (
-            {"grid": {"angle": [10], "mu": [0.1]}, "fixed": {"vy": -1, "mu": 0.2}},
+            {"fixed": {"vy": -1, "mu": 0.1, "angle": "20 deg"}},
+            "needs a \\[grid\\] or a \\[sample\\]",
+        ),
+        ({"grid": {"angle": ["10 deg"]}, "fixed": {"vy": -1}}, r"\['mu'\] have no value"),
+        (
+            {"grid": {"angle": ["10 deg"], "mu": [0.1]}, "fixed": {"vy": -1, "mu": 0.2}},
             "'mu' is set twice",
         ),
-        ({"grid": {"angle": [10], "mu": [0.1]}, "fixed": {"vy": "fast"}}, "cannot parse 'fast'"),
-        ({"grid": {"angle": [10], "mu": [0.1]}, "fixed": {"vy": "2 kg"}}, "not convertible to m/s"),
         (
-            {"grid": {"angle": {"start": 1, "stop": 2}, "mu": [0.1]}, "fixed": {"vy": -1}},
+            {"grid": {"angle": ["10 deg"], "mu": [0.1]}, "fixed": {"vy": "fast"}},
+            "cannot parse 'fast'",
+        ),
+        (
+            {"grid": {"angle": ["10 deg"], "mu": [0.1]}, "fixed": {"vy": "2 kg"}},
+            "not convertible to m/s",
+        ),
+        (
+            {
+                "grid": {"angle": {"start": 1, "stop": 2, "unit": "deg"}, "mu": [0.1]},
+                "fixed": {"vy": -1},
+            },
             "exactly one of 'num' and 'step'",
         ),
-        ({"grid": {"angle": [10, 10], "mu": [0.1]}, "fixed": {"vy": -1}}, "repeated values"),
-        ({"grid": {"angle": [10], "mu": [0.1]}, "fixed": {"vy": -1}, "plots": {}}, "unknown table"),
+        (
+            {"grid": {"angle": ["10 deg", "10 deg"], "mu": [0.1]}, "fixed": {"vy": -1}},
+            "repeated values",
+        ),
+        (
+            {"grid": {"angle": ["10 deg"], "mu": [0.1]}, "fixed": {"vy": -1}, "plots": {}},
+            "unknown table",
+        ),
         (
             {
                 "sample": {"size": 10, "law": {"dist": "uniform"}},
                 "fixed": {"vy": -1},
-                "grid": {"angle": [1], "mu": [0.1]},
+                "grid": {"angle": ["1 deg"], "mu": [0.1]},
             },
             "category",
         ),
         (
             {
                 "sample": {"seed": 1, "mu": {"dist": "uniform", "low": 0, "high": 1}},
-                "fixed": {"vy": -1, "angle": 10},
+                "fixed": {"vy": -1, "angle": "10 deg"},
             },
             "needs 'size'",
         ),
         (
-            {"grid": {"angle": [10], "mu": [0.1]}, "fixed": {"vy": -1}, "engine": {"tol": 1}},
+            {"grid": {"angle": ["10 deg"], "mu": [0.1]}, "fixed": {"vy": -1}, "engine": {"tol": 1}},
             "unknown key",
         ),
         (
-            {"grid": {"angle": [10], "mu": [0.1]}, "fixed": {"vy": -1}, "study": {"chunk_size": 0}},
+            {
+                "grid": {"angle": ["10 deg"], "mu": [0.1]},
+                "fixed": {"vy": -1},
+                "study": {"chunk_size": 0},
+            },
             "chunk_size must be",
         ),
     ],
@@ -226,7 +254,9 @@ def test_study_file_errors_name_the_problem(table, message) -> None:
 
 def test_study_file_reading(tmp_path) -> None:
     p = tmp_path / "s.toml"
-    p.write_text('[fixed]\nvy = "-1.41 m/s"\nmu = 0.2\n[grid]\nangle = [20, 45, 70]\n')
+    p.write_text(
+        '[fixed]\nvy = "-1.41 m/s"\nmu = 0.2\n[grid]\nangle = ["20 deg", "45 deg", "70 deg"]\n'
+    )
     s = load_study(p)
     assert s.name == "s" and s.layout.shape == (3,)
     bad = tmp_path / "bad.toml"

@@ -27,6 +27,7 @@ def _mc(tmp_path, fake, grid=None):
         name="mc",
         chunk_size=1000,
         grid=grid or {},
+        fixed={"flat_nu": 0.3, "flat_yield_strength": 305e6},  # the flat whole, E sampled
         sample=Sample(
             size=4000,
             seed=5,

@@ -9,6 +9,8 @@ mistake: a length outside :data:`PLAUSIBLE_LENGTH`, a tip radius or sphere radiu
 
 from __future__ import annotations
 
+import math
+
 from impactlab._validation import warn_implausible
 from impactlab.materials import Material
 
@@ -18,6 +20,33 @@ PLAUSIBLE_LENGTH = (1e-3, 10.0)
 PLAUSIBLE_RADIUS = (1e-6, 0.5)
 #: Plausible mass [kg]: 1 mg to 1 t.
 PLAUSIBLE_MASS = (1e-6, 1e3)
+
+
+#: Largest relative difference between the density that mass, diameter and length imply
+#: (m / (pi d^2 / 4 L)) and the material's density when both mass and diameter are given.
+DENSITY_TOLERANCE = 0.02
+
+
+def rod_mass(L: float, m: float | None, d: float | None, material: Material) -> float:
+    """The mass [kg] of a uniform rod of circular section: ``m`` as given, or (None) from the
+    diameter ``d``, the length ``L`` between the end-sphere centres and the material's density,
+    rho pi d^2 / 4 L. ValueError when neither is given, or when both are and the density they
+    imply differs from the material's by more than :data:`DENSITY_TOLERANCE`."""
+    rho = material.density
+    if m is None and d is None:
+        raise ValueError("give the mass [kg] or the diameter [m] of the rod (or both)")
+    if m is None:
+        return rho * math.pi * d * d / 4.0 * L  # type: ignore[operator]
+    if d is not None:
+        implied = m / (math.pi * d * d / 4.0 * L)
+        if not abs(implied / rho - 1.0) <= DENSITY_TOLERANCE:
+            raise ValueError(
+                f"mass ({m!r} kg), diameter ({d!r} m) and length ({L!r} m) imply a density of "
+                f"{implied:.4g} kg/m^3, but the material {material.name!r} has {rho:.4g} kg/m^3 "
+                f"(allowed: within {DENSITY_TOLERANCE:.0%}); give the mass or the diameter, not "
+                "both, or the material they belong to"
+            )
+    return m
 
 
 def check_material(name: str, value: object) -> Material:

@@ -116,8 +116,9 @@ class FlexibleRod:
 
     Parameters
     ----------
-    length : rod length L [m]; the centres of the end spheres lie on the end sections, L/2
-        from the centre of mass.
+    length : rod length L [m], between the centres of the end spheres (they lie on the end
+        sections, L/2 from the centre of mass); the overall length, tip to tip, is L + 2R
+        (``overall_length``), as for ``Rod``.
     tip_radius : radius R of the hemispherical ends [m].
     mass : mass m [kg]; None: from the diameter, the length and the material's density.
     diameter : diameter d [m]; None: from the mass, the length and the material's density.
@@ -207,6 +208,11 @@ class FlexibleRod:
         )
 
     @property
+    def overall_length(self) -> float:
+        """Tip-to-tip length L + 2R [m] (``length`` is L, between the end-sphere centres)."""
+        return self.length + 2.0 * self.tip_radius
+
+    @property
     def half_length(self) -> float:
         """Distance from the centre of mass to the centre of an end sphere, L/2 [m]."""
         return 0.5 * self.length
@@ -232,11 +238,15 @@ class FlexibleRod:
         return self.basis().frequencies_hz
 
     def _repr_html_(self) -> str:
-        return dataclass_html(self, {"inertia": self.inertia})
+        return dataclass_html(self, self._derived())
+
+    def _derived(self) -> dict[str, float]:
+        return {"inertia": self.inertia, "overall_length": self.overall_length}
 
     def __str__(self) -> str:
-        """One line in display units (``repr`` stays the dataclass's, in SI)."""
-        return summary_line(type(self).__name__, dataclass_rows(self, {"inertia": self.inertia}))
+        """One line in display units, with I_C and the overall length L + 2R (``repr`` stays
+        the dataclass's, in SI)."""
+        return summary_line(type(self).__name__, dataclass_rows(self, self._derived()))
 
     def rigid(self) -> Rod:
         """The rigid rod with the same length, tip radius, mass, material and I_C."""

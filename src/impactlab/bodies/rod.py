@@ -22,6 +22,7 @@ from impactlab.bodies._checks import (
     PLAUSIBLE_RADIUS,
     check_material,
     plausible,
+    rod_mass,
 )
 from impactlab.bodies.layout import BP_GSTAR, BP_INERTIA, KIND_ROD
 from impactlab.materials import AISI_201, AISI_1010, Material, reduced_shear_modulus, summary_line
@@ -34,15 +35,23 @@ class Rod:
     """A rigid rod of length ``length`` (the paper's L) [m] with a hemispherical tip of radius
     ``tip_radius`` [m].
 
+    Length convention: L is the distance between the centres of the end spheres (the centre of
+    mass to a tip sphere's centre is L/2, paper Eq. 1); the rod's overall length, tip to tip,
+    is L + 2R (``overall_length``). The same for ``FlexibleRod``.
+
     Parameters
     ----------
-    length : rod length L [m]; the tip sphere's centre is L/2 from the centre of mass (paper
-        Eq. 1). ``rod.L`` is the same value.
+    length : L, between the end-sphere centres [m] (overall length L + 2R). ``rod.L`` is the
+        same value.
     tip_radius : radius R of the hemispherical tip [m].
-    mass : mass m [kg].
-    material : the rod's material (elastic constants for the contact pair).
+    mass : mass m [kg]; None: from the diameter, L and the material's density,
+        rho pi d^2 / 4 L (a uniform section over L, as ``FlexibleRod``).
+    material : the rod's material (elastic constants for the contact pair; its density).
     inertia : moment of inertia about the centre of mass I_C [kg m^2]; default m L^2 / 12
         (the paper does not give I_C; m L^2/12 reproduces its impact durations best).
+    diameter : the rod's diameter d [m] (optional). Give the mass, the diameter or both; given
+        both, the density they imply must match the material's within 2 %
+        (``impactlab.bodies._checks.DENSITY_TOLERANCE``).
 
     Each quantity is a number in the SI unit above, a string with units (``"8.8 mm"``) or a
     pint Quantity of any registry; the fields hold SI floats.
@@ -55,9 +64,10 @@ class Rod:
 
     length: float
     tip_radius: float
-    mass: float
+    mass: float = None  # type: ignore[assignment]  # None: from the diameter; a float after
     material: Material = AISI_201
     inertia: float | None = None
+    diameter: float | None = None
     _params: np.ndarray = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
@@ -69,8 +79,11 @@ class Rod:
                 "hemispherical tip would be wider than the rod is long; check the units (SI: m)"
             )
         plausible("tip_radius", R, PLAUSIBLE_RADIUS, "m")
-        m = plausible("mass", check_positive("mass", self.mass, "kg"), PLAUSIBLE_MASS, "kg")
         check_material("material", self.material)
+        d = None if self.diameter is None else check_positive("diameter", self.diameter, "m")
+        given = None if self.mass is None else check_positive("mass", self.mass, "kg")
+        m = plausible("mass", rod_mass(L, given, d, self.material), PLAUSIBLE_MASS, "kg")
+        object.__setattr__(self, "diameter", d)
         inertia = (
             m * L * L / 12.0
             if self.inertia is None
@@ -97,6 +110,11 @@ class Rod:
         return self.length
 
     @property
+    def overall_length(self) -> float:
+        """Tip-to-tip length L + 2R [m] (``length`` is L, between the end-sphere centres)."""
+        return self.length + 2.0 * self.tip_radius
+
+    @property
     def half_length(self) -> float:
         """Distance from the centre of mass to the tip sphere's centre, L/2 [m]."""
         return 0.5 * self.L
@@ -113,11 +131,13 @@ class Rod:
         return p
 
     def _repr_html_(self) -> str:
-        return dataclass_html(self)
+        return dataclass_html(self, {"overall_length": self.overall_length})
 
     def __str__(self) -> str:
-        """One line in display units (``repr`` stays the dataclass's, in SI)."""
-        return summary_line(type(self).__name__, dataclass_rows(self))
+        """One line in display units, with the overall length L + 2R (``repr`` stays the
+        dataclass's, in SI)."""
+        rows = dataclass_rows(self, {"overall_length": self.overall_length})
+        return summary_line(type(self).__name__, rows)
 
 
 #: The paper's rod (Table 1 of doi:10.1007/s00419-015-1108-2), I_C = m L^2 / 12.

@@ -42,27 +42,73 @@ def positive(value: str | float | None, unit: str, name: str) -> float | None:
     return x
 
 
-def angle_quantity(value: Any, name: str) -> float:
-    """An angle with its unit ("20 deg", "0.35 rad") in radians, in (0, 90] deg (answered in
-    degrees otherwise). A bare number is refused: 0.35 could be degrees or radians."""
+def any_angle(value: Any, name: str) -> float:
+    """An angle with its unit ("20 deg", "-0.35 rad") in radians, any value. A bare number is
+    refused: 0.35 could be degrees or radians (the angle rule, docs/glossary.md)."""
     text = str(value).strip()
     try:
         float(text)
     except ValueError:
-        th = angle_to_rad(text, name=name)
-        if not 0.0 < th <= 0.5 * math.pi + 1e-12:
-            raise UserError(f"{name} must be in (0, 90] deg, got {text}") from None
-        return th
+        return angle_to_rad(text, name=name)
     raise UserError(f"{name} {text} has no unit: give a unit, e.g. '20 deg' or '0.35 rad'")
+
+
+def angle_quantity(value: Any, name: str) -> float:
+    """An angle with its unit ("20 deg", "0.35 rad") in radians, in (0, 90] deg (answered in
+    degrees otherwise). A bare number is refused: 0.35 could be degrees or radians."""
+    th = any_angle(value, name)
+    if not 0.0 < th <= 0.5 * math.pi + 1e-12:
+        raise UserError(f"{name} must be in (0, 90] deg, got {str(value).strip()}")
+    return th
+
+
+def velocity_input(
+    vx: Any, vy: Any, speed: Any, incidence: Any, label: Any = None
+) -> tuple[float, float]:
+    """(vx, vy) [m/s] from --vx/--vy, or from --speed and --incidence (the incidence to the
+    flat's normal with its unit; positive: vx > 0); UserError when both pairs or neither are
+    given. ``label(key)`` spells an option in errors (default ``--key``)."""
+    name = label or (lambda key: "--" + key)
+    by_components = vx is not None or vy is not None
+    by_speed = speed is not None or incidence is not None
+    if by_components and by_speed:
+        raise UserError(
+            f"{name('vx')}/{name('vy')} and {name('speed')}/{name('incidence')} both given: "
+            "they say the same thing; give one pair"
+        )
+    if by_speed:
+        if speed is None or incidence is None:
+            missing = name("speed") if speed is None else name("incidence")
+            raise UserError(f"{name('speed')} and {name('incidence')} go together: {missing} "
+                            "is missing")  # fmt: skip
+        v = positive(speed, "m/s", name("speed"))
+        th = any_angle(incidence, name("incidence"))
+        if not abs(th) < 0.5 * math.pi:
+            raise UserError(
+                f"{name('incidence')} must lie in (-90, 90) deg from the flat's normal, got "
+                f"{str(incidence).strip()}"
+            )
+        return (v * math.sin(th), -v * math.cos(th))  # type: ignore[operator]
+    if vy is None:
+        raise UserError(
+            f'{name("vy")} is required, e.g. {name("vy")} "-1.41 m/s" (or {name("speed")} '
+            f'"1.5 m/s" {name("incidence")} "30 deg")'
+        )
+    return (quantity(vx, "m/s", name("vx")) or 0.0, quantity(vy, "m/s", name("vy")) or 0.0)
 
 
 #: Help of the initial state's options, shared by ``simulate`` and ``drop``.
 KINEMATIC_HELP = {
     "angle": 'Rod angle to the flat with its unit, "20 deg" or "0.35 rad" (required for a rod; '
     "a bare number is refused).",
-    "vy": 'Vertical velocity of the centre of mass, e.g. "-1.41 m/s" (required; a bare number '
-    "is in m/s).",
+    "vy": 'Vertical velocity of the centre of mass, e.g. "-1.41 m/s" (required unless --speed '
+    "and --incidence; a bare number is in m/s).",
     "vx": "Horizontal velocity, e.g. '0.1 m/s' (bare number: m/s; default 0 m/s).",
+    "speed": "Instead of --vx/--vy: the speed of the centre of mass, e.g. '1.5 m/s' (with "
+    "--incidence).",
+    "incidence": "Instead of --vx/--vy: the velocity's angle to the flat's normal with its unit, "
+    "in (-90, 90) deg, e.g. '30 deg'; vx = speed sin(incidence) (positive: towards +x), "
+    "vy = -speed cos(incidence).",
     "spin": 'Angular velocity, e.g. "5 rad/s" (bare number: rad/s; counter-clockwise positive; '
     "default 0 rad/s).",
 }
@@ -72,10 +118,16 @@ KINEMATIC_HELP = {
 ROD_FIELDS: dict[str, str] = {"mass": "kg", "length": "m", "tip_radius": "m", "inertia": "kg*m^2"}
 
 
+#: The length convention, said in every rod option's help.
+LENGTH_HELP = (
+    "Rod length L between the centres of the end spheres (the overall length is L + 2R), "
+    "e.g. '304.8 mm' (bare number: m)."
+)
+
 #: The rod options' help (the defaults are the paper's rod).
 _ROD_HELP = {
     "mass": "Rod mass, e.g. '0.46 kg' (bare number: kg; default 0.4607 kg).",
-    "length": "Rod length, e.g. '304.8 mm' (bare number: m; default 0.3048 m).",
+    "length": f"{LENGTH_HELP} (default 0.3048 m).",
     "tip_radius": "Tip radius, e.g. '8.8 mm' (bare number: m; default 8.8 mm).",
     "inertia": "I_C about the centre of mass, e.g. '3.6e-3 kg*m^2' (default m L^2/12).",
 }

@@ -87,8 +87,9 @@ def analyze_cmd(
     flat: str | None = typer.Option(
         None,
         "--flat",
-        help="Flat material preset (e.g. aisi-1010): also run the impact engine with the "
-        "measured initial state, for comparison.",
+        help="Flat material (a library name such as aisi-1010, 'E=..., nu=..., Sy=..., rho=...' "
+        "or a TOML file): also run the impact engine with the measured initial state, for "
+        "comparison.",
     ),
     geometry: str | None = typer.Option(
         None,

@@ -1,15 +1,19 @@
 """``impactlab drop``: the drop of a flexible rod (the paper's by default) or, with ``--rigid``,
 of the rigid rod on a flat, through the whole contact sequence (``simulate_drop``).
 
-Quantities carry units as in ``impactlab simulate``; the angle is required, with its unit.
-Options that do not apply (mode counts or damping with ``--rigid``) are refused.
+Any rod (length L between the end-sphere centres, tip radius, mass and/or diameter), any body
+material and any flat (``--material``/``--flat``: a library name, properties or a TOML file).
+Quantities carry units as in ``impactlab simulate``; the angle is required, with its unit; the
+velocity is --vy (and --vx) or --speed and --incidence. Options that do not apply (mode counts
+or damping with ``--rigid``) are refused.
 """
 
 from __future__ import annotations
 
 import sys
+import textwrap
 from collections.abc import Mapping
-from typing import Any
+from typing import Any, cast
 
 import typer
 
@@ -18,17 +22,20 @@ from impactlab.bodies import PAPER_ROD, FlexibleRod, Rod
 from impactlab.bodies.flexible_rod import DEFAULT_N_AXIAL, DEFAULT_N_BENDING
 from impactlab.cli._common import (
     KINEMATIC_HELP,
+    LENGTH_HELP,
     SI_UNITS,
     UserError,
     angle_quantity,
     emit,
+    positive,
     quantity,
+    velocity_input,
 )
 from impactlab.contact.rate import RATE_LAWS
 from impactlab.dynamics.drop import simulate_drop
 from impactlab.dynamics.drop_result import UNITS, DropResult
 from impactlab.friction import DEFAULT_MU
-from impactlab.materials import Material
+from impactlab.materials import AISI_1010, Material, get_material
 
 #: ``--rate`` values ("none": a rate-independent flat).
 RATE_CHOICES = ("none", *RATE_LAWS)
@@ -54,6 +61,14 @@ TOTALS = (
     "rate_factor",
 )
 
+#: What the contact table's columns and the less obvious totals mean (printed under the table).
+LEGEND = (
+    "end: the end that touched (0 the tip, 1 the other end); start: from the first touch; "
+    "slip: int v_t dt over the contact; reload: True if the contact began on an existing dent. "
+    "e_raw: e with the gravity impulse of the sequence kept (e removes it, as a ballistic fit "
+    "of marker data would); mu_apparent: the paper's Eq. 28 on the simulated velocities."
+)
+
 #: Columns of the contact table: ContactRecord fields (display units: ``impactlab._display``).
 _COLUMNS = (
     "end",
@@ -77,19 +92,24 @@ def _count(value: int | None, name: str, default: int) -> int:
 
 
 def flexible_rod(
-    values: Mapping[str, Any], sizes: Mapping[str, float], material: Material, label: Any = None
+    values: Mapping[str, Any],
+    sizes: Mapping[str, float | None],
+    material: Material,
+    label: Any = None,
 ) -> FlexibleRod:
-    """A FlexibleRod of the given ``sizes`` (length, tip_radius, mass) and ``material`` with
-    the mode counts and damping of ``values`` (``modes_axial``, ``modes_bending``,
-    ``damping``; None: the defaults). ``label(key)`` spells an option in errors."""
+    """A FlexibleRod of the given ``sizes`` (length, tip_radius, and mass and/or diameter) and
+    ``material`` with the mode counts and damping of ``values`` (``modes_axial``,
+    ``modes_bending``, ``damping``; None: the defaults). ``label(key)`` spells an option in
+    errors."""
     name = label or (lambda key: "--" + key.replace("_", "-"))
     n_axial = _count(values.get("modes_axial"), name("modes_axial"), DEFAULT_N_AXIAL)
     n_bending = _count(values.get("modes_bending"), name("modes_bending"), DEFAULT_N_BENDING)
     damping = values.get("damping")
     return FlexibleRod(
-        length=sizes["length"],
-        tip_radius=sizes["tip_radius"],
-        mass=sizes["mass"],
+        length=cast(float, sizes["length"]),
+        tip_radius=cast(float, sizes["tip_radius"]),
+        mass=sizes.get("mass"),
+        diameter=sizes.get("diameter"),
         material=material,
         n_axial=n_axial,
         n_bending=n_bending,
@@ -99,25 +119,40 @@ def flexible_rod(
 
 
 def _body(
-    rigid: bool, modes_axial: int | None, modes_bending: int | None, damping: float | None
+    rigid: bool,
+    modes: Mapping[str, Any],
+    sizes: Mapping[str, float | None],
+    material: Material,
 ) -> FlexibleRod | Rod:
-    """The paper's rod, flexible (with the given mode counts and damping) or rigid."""
-    if rigid:
-        given = [
-            name
-            for name, v in (
-                ("--modes-axial", modes_axial),
-                ("--modes-bending", modes_bending),
-                ("--damping", damping),
+    """The rod: the paper's sizes unless given (``sizes``: length, tip_radius, mass, diameter;
+    None: not given), flexible with the given mode counts and damping, or rigid."""
+    length = sizes["length"] if sizes["length"] is not None else PAPER_ROD.length
+    tip = sizes["tip_radius"] if sizes["tip_radius"] is not None else PAPER_ROD.tip_radius
+    mass, diameter = sizes["mass"], sizes["diameter"]
+    if mass is None and diameter is None:  # the paper's rod's mass, or from its diameter
+        if material != PAPER_ROD.material or sizes["length"] is not None:
+            raise UserError(
+                "--mass or --diameter: give one (or both) for a rod other than the paper's "
+                "(its mass follows from the diameter, the length and the material's density)"
             )
-            if v is not None
-        ]
+        mass = PAPER_ROD.mass
+    if rigid:
+        given = [f"--{k.replace('_', '-')}" for k, v in modes.items() if v is not None]
         if given:
             raise UserError(f"{', '.join(given)}: a rigid rod has no modes; leave out --rigid")
-        return PAPER_ROD
-    paper = {"length": PAPER_ROD.length, "tip_radius": PAPER_ROD.tip_radius, "mass": PAPER_ROD.mass}
-    modes = {"modes_axial": modes_axial, "modes_bending": modes_bending, "damping": damping}
-    return flexible_rod(modes, paper, PAPER_ROD.material)
+        return Rod(length=length, tip_radius=tip, mass=mass, material=material,  # type: ignore[arg-type]
+                   diameter=diameter)  # fmt: skip
+    sizes_in = {"length": length, "tip_radius": tip, "mass": mass, "diameter": diameter}
+    return flexible_rod(modes, sizes_in, material)
+
+
+def _material(value: str | None, default: Material, name: str) -> Material:
+    if value is None:
+        return default
+    try:
+        return get_material(value, name)
+    except ValueError as exc:
+        raise UserError(str(exc)) from None
 
 
 def rate_name(rate: str, name: str = "--rate") -> str | None:
@@ -171,6 +206,7 @@ def report_drop(result: DropResult, *, as_json: bool) -> None:
         emit(result.to_dict(), as_json=True, units={**UNITS, **balance})
         return
     print(_contact_table(result))
+    print(textwrap.fill(LEGEND, width=100))
     emit(drop_summary(result), as_json=False, title="drop", units=UNITS)
 
 
@@ -178,7 +214,34 @@ def drop_cmd(
     angle: str = typer.Option(None, "--angle", help=KINEMATIC_HELP["angle"]),
     vy: str = typer.Option(None, "--vy", help=KINEMATIC_HELP["vy"]),
     vx: str = typer.Option(None, "--vx", help=KINEMATIC_HELP["vx"]),
+    speed: str = typer.Option(None, "--speed", help=KINEMATIC_HELP["speed"]),
+    incidence: str = typer.Option(None, "--incidence", help=KINEMATIC_HELP["incidence"]),
     spin: str = typer.Option(None, "--spin", help=KINEMATIC_HELP["spin"]),
+    length: str = typer.Option(
+        None, "--length", help=f"{LENGTH_HELP} (default: the paper's rod, 304.8 mm)."
+    ),
+    radius: str = typer.Option(
+        None, "--radius", help="Tip radius R of the rounded ends, e.g. '8.8 mm' (default 8.8 mm)."
+    ),
+    mass: str = typer.Option(
+        None, "--mass", help="Rod mass, e.g. '0.46 kg' (default: the paper's 0.4607 kg)."
+    ),
+    diameter: str = typer.Option(
+        None,
+        "--diameter",
+        help="Rod diameter d, e.g. '12 mm': the mass follows from d, L and the density "
+        "(with --mass too: checked against the density to 2 %).",
+    ),
+    material: str = typer.Option(
+        None,
+        "--material",
+        help="Rod material (library name, properties, TOML file; default aisi-201).",
+    ),
+    flat: str = typer.Option(
+        None,
+        "--flat",
+        help="Flat material (library name, properties, TOML file; default aisi-1010).",
+    ),
     mu: float = typer.Option(DEFAULT_MU, "--mu", help="Friction coefficient, >= 0 (default 0)."),
     friction: str = typer.Option(
         "coulomb",
@@ -202,10 +265,14 @@ def drop_cmd(
     no_gravity: bool = typer.Option(False, "--no-gravity", help="Switch gravity off."),
     as_json: bool = typer.Option(False, "--json", help="Machine-readable output."),
 ) -> None:
-    """Drop the paper's rod (flexible, or --rigid) on the AISI 1010 flat and follow the whole
-    contact sequence; prints every contact and the totals (display units).
+    """Drop a rod (the paper's by default; flexible, or --rigid) on a flat (AISI 1010 by
+    default) and follow the whole contact sequence; prints every contact, what the columns
+    mean, and the totals (display units).
 
     Examples:
+
+      impactlab drop --angle "30 deg" --vy "-2 m/s" --length "200 mm" --radius "5 mm"
+      --diameter "10 mm" --material brass-c360 --flat al-6061-t6
 
       impactlab drop --angle "20 deg" --vy "-1.41 m/s" --mu 0.2
 
@@ -217,16 +284,23 @@ def drop_cmd(
     """
     if angle is None:
         raise UserError('--angle is required, with a unit, e.g. --angle "20 deg"')
-    if vy is None:
-        raise UserError('--vy is required, e.g. --vy "-1.41 m/s"')
-    body = _body(rigid, modes_axial, modes_bending, damping)
+    velocity = velocity_input(vx, vy, speed, incidence)
+    sizes = {
+        "length": positive(length, "m", "--length"),
+        "tip_radius": positive(radius, "m", "--radius"),
+        "mass": positive(mass, "kg", "--mass"),
+        "diameter": positive(diameter, "m", "--diameter"),
+    }
+    modes = {"modes_axial": modes_axial, "modes_bending": modes_bending, "damping": damping}
+    body = _body(rigid, modes, sizes, _material(material, PAPER_ROD.material, "--material"))
     result = simulate_drop(
         body,
+        _material(flat, AISI_1010, "--flat"),
         law=law,
         friction=friction,
         mu=mu,
         angle=angle_quantity(angle, "--angle"),
-        velocity=(quantity(vx, "m/s", "--vx") or 0.0, quantity(vy, "m/s", "--vy") or 0.0),
+        velocity=velocity,
         spin=quantity(spin, "rad/s", "--spin") or 0.0,
         gravity=not no_gravity,
         rate=rate_name(rate),

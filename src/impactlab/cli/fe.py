@@ -30,17 +30,27 @@ fe_app = typer.Typer(
 
 
 def _material(name: str, E: str | None, nu: float | None, sy: str | None, label: str) -> Material:
-    """A preset by name, with any of E, nu, S_y overridden by values."""
-    base = get_material(name)
-    e = quantity(E, "Pa", f"--{label}-E")
-    s = quantity(sy, "Pa", f"--{label}-sy")
-    if e is None and nu is None and s is None:
-        return base
+    """The library material ``name`` (or a material by values, ``impactlab.materials``), or
+    the one --LABEL-E, --LABEL-nu and --LABEL-sy define whole: all three or none (a library
+    material is never partly changed)."""
+    values = {"E": E, "nu": nu, "sy": sy}
+    given = [k for k, v in values.items() if v is not None]
+    if not given:
+        try:
+            return get_material(name, f"--{label}")
+        except ValueError as exc:
+            raise UserError(str(exc)) from None
+    if len(given) < 3:
+        missing = [f"--{label}-{k}" for k in values if values[k] is None]
+        raise UserError(
+            f"{', '.join(f'--{label}-{k}' for k in given)} without {', '.join(missing)}: a "
+            f"material by values is given whole (a library material is never partly changed)"
+        )
     return Material(
         f"{label} (custom)",
-        e if e is not None else base.E,
-        nu if nu is not None else base.nu,
-        s if s is not None else base.yield_strength,
+        quantity(E, "Pa", f"--{label}-E"),  # type: ignore[arg-type]
+        float(nu),  # type: ignore[arg-type]
+        quantity(sy, "Pa", f"--{label}-sy"),  # type: ignore[arg-type]
     )
 
 

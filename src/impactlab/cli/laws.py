@@ -103,10 +103,10 @@ def laws(
         help="Tip radius for the example numbers of one law, e.g. '5 mm' (bare number: m).",
     ),
     body: str = typer.Option(
-        "aisi-201", "--body", help="Material preset of the body (see 'impactlab materials')."
+        "aisi-201", "--body", help="Body material: library name or properties."
     ),
     flat: str = typer.Option(
-        "aisi-1010", "--flat", help="Material preset of the flat (see 'impactlab materials')."
+        "aisi-1010", "--flat", help="Flat material: library name or properties."
     ),
     as_json: bool = typer.Option(False, "--json", help="Machine-readable output."),
     accuracy: bool = typer.Option(

@@ -1,32 +1,69 @@
-"""``impactlab materials``: the material presets."""
+"""``impactlab materials``: the material library, with each entry's condition and source."""
 
 from __future__ import annotations
 
+import math
 from dataclasses import asdict
 
 import typer
+from rich.table import Table
+from rich.text import Text
 
 from impactlab.cli._common import console, emit
-from impactlab.materials import PRESETS
+from impactlab.materials import BRITTLE, PRESETS
+from impactlab.materials.inputs import EXAMPLE
+from impactlab.references import REFERENCES
+
+
+def _hb(value: float) -> str:
+    return "-" if math.isnan(value) else f"{value:g}"
 
 
 def materials(
-    as_json: bool = typer.Option(False, "--json", help="Machine-readable output."),
+    as_json: bool = typer.Option(False, "--json", help="Machine-readable output (SI)."),
 ) -> None:
-    """List the material presets (E in GPa, yield strength in MPa, Brinell hardness in
-    kgf/mm^2; --json: SI).
+    """List the material library: E [GPa], nu, yield strength S_y [MPa], Brinell hardness HB
+    [kgf/mm^2; '-': not in the source], density [kg/m^3], the condition and the source (--json:
+    SI, with each source's citation and address).
+
+    Any command's --material/--flat takes one of these names, or a material by values
+    ("E=69GPa, nu=0.33, Sy=276MPa, rho=2700kg/m^3"; HB=... and n=... optional), or a TOML
+    file of the same keys.
 
     Example: impactlab materials --json
     """
-    data = {key: asdict(m) for key, m in PRESETS.items()}
     if as_json:
+        data = {}
+        for key, m in PRESETS.items():
+            ref = REFERENCES[m.source]
+            data[key] = {
+                **asdict(m),
+                "brittle": key in BRITTLE,
+                "citation": ref.citation,
+                "url": ref.url,
+            }
         emit(data, as_json=True)
         return
-    for key, m in data.items():
-        emit(m, as_json=False, title=key)
+    table = Table(show_header=True, header_style="bold", title="material library")
+    for col in ("name", "E GPa", "nu", "Sy MPa", "HB", "rho", "condition"):
+        table.add_column(col, justify="left" if col in ("name", "condition") else "right")
+    for key, m in PRESETS.items():
+        table.add_row(
+            Text(key + ("*" if key in BRITTLE else "")),
+            f"{m.E / 1e9:.4g}",
+            f"{m.nu:g}",
+            f"{m.yield_strength / 1e6:.4g}",
+            _hb(m.brinell_hardness),
+            f"{m.density:.0f}",
+            Text(m.condition or "paper, Table 1"),
+        )
+    console.print(table)
     console.print(
-        "Presets follow the paper's Table 1 with its unit corrections "
-        "(see docs/paper/errata.md, section Table 1)."
+        Text(
+            "* brittle: Sy holds the compressive strength (no fracture model). Sources: "
+            "impactlab materials --json, docs/materials.md. Any other material: --flat "
+            f'"{EXAMPLE}".'
+        )
     )
 
 

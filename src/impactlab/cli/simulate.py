@@ -24,6 +24,7 @@ from impactlab.bodies import PAPER_ROD, FlexibleRod, Rod, Sphere
 from impactlab.bodies.flexible_rod import DEFAULT_N_AXIAL, DEFAULT_N_BENDING
 from impactlab.cli._common import (
     KINEMATIC_HELP,
+    LENGTH_HELP,
     SI_UNITS,
     UserError,
     angle_quantity,
@@ -32,6 +33,7 @@ from impactlab.cli._common import (
     load_toml,
     positive,
     quantity,
+    velocity_input,
 )
 from impactlab.cli.drop import RATE_CHOICES, flexible_rod, rate_name, report_drop
 from impactlab.dynamics import ImpactResult, simulate
@@ -44,6 +46,8 @@ _KEYS = (
     "angle",
     "vx",
     "vy",
+    "speed",
+    "incidence",
     "spin",
     "mu",
     "law",
@@ -52,6 +56,7 @@ _KEYS = (
     "length",
     "radius",
     "mass",
+    "diameter",
     "gravity",
     "constant_angle",
     "rtol",
@@ -65,7 +70,7 @@ _KEYS = (
     "rate",
 )
 #: Options of a rod that a sphere does not have.
-_ROD_ONLY = ("angle", "length", "inertia", "constant_angle")
+_ROD_ONLY = ("angle", "length", "inertia", "constant_angle", "diameter")
 #: Options of the flexible rod (``--flexible``) only.
 _FLEX_ONLY = ("modes_axial", "modes_bending", "damping", "rate")
 #: Options the flexible rod's drop does not have.
@@ -92,7 +97,7 @@ class _Options:
 
     def label(self, key: str) -> str:
         """How the user wrote ``key``: "--mass" or "mass (in case.toml)"."""
-        if key in self.from_cli:
+        if key in self.from_cli or key not in self.values:  # given here, or not at all
             return _FLAGS.get(key, "--" + key.replace("_", "-"))
         return f"{key} (in {self.config})"
 
@@ -112,6 +117,13 @@ class _Options:
 def _merge(config: dict[str, Any], cli: dict[str, Any], config_path: Path | None) -> _Options:
     section = config.get("simulate", config)
     unknown = sorted(set(section) - set(_KEYS))
+    props = [k for k in unknown if k.startswith(("flat_", "material_", "body_"))]
+    if props:
+        raise UserError(
+            f"{props[0]} in the config file: give a material whole, as a table, e.g. "
+            'flat = { E = "69 GPa", nu = 0.33, Sy = "276 MPa", rho = "2700 kg/m^3" }, or a '
+            "library name, flat = \"al-6061-t6\" (see 'impactlab materials')"
+        )
     if unknown:
         raise UserError(f"unknown key(s) {unknown} in the config file; known: {list(_KEYS)}")
     given = {k: v for k, v in cli.items() if v is not None}
@@ -131,9 +143,9 @@ def _material(opt: _Options, key: str, default: Material) -> Material:
     if value is None:
         return default
     try:
-        return get_material(str(value).strip().lower())
+        return get_material(value, opt.label(key))
     except ValueError as exc:
-        raise UserError(f"{opt.label(key)}: {exc}") from None
+        raise UserError(str(exc)) from None
 
 
 def _body(opt: _Options) -> tuple[Rod | Sphere | FlexibleRod, float | None]:
@@ -164,10 +176,12 @@ def _body(opt: _Options) -> tuple[Rod | Sphere | FlexibleRod, float | None]:
     if not opt.given("angle"):
         raise UserError(_MISSING_ANGLE)
     angle = angle_quantity(opt.values["angle"], opt.label("angle"))
-    sizes = {
+    diameter, mass = opt.size("diameter", "m"), opt.size("mass", "kg")
+    sizes: dict[str, float | None] = {
         "length": opt.size_or("length", "m", PAPER_ROD.length),
         "tip_radius": opt.size_or("radius", "m", PAPER_ROD.tip_radius),
-        "mass": opt.size_or("mass", "kg", PAPER_ROD.mass),
+        "mass": PAPER_ROD.mass if mass is None and diameter is None else mass,
+        "diameter": diameter,
     }
     if flexible:
         _refuse(
@@ -176,7 +190,8 @@ def _body(opt: _Options) -> tuple[Rod | Sphere | FlexibleRod, float | None]:
             "the flexible rod's inertia follows from its modes, and its lever arms move",
         )
         return flexible_rod(opt.values, sizes, material, opt.label), angle
-    return Rod(**sizes, material=material, inertia=opt.size("inertia", "kg*m^2")), angle
+    rod = Rod(**sizes, material=material, inertia=opt.size("inertia", "kg*m^2"))  # type: ignore[arg-type]
+    return rod, angle
 
 
 def run_simulate(opt: _Options) -> ImpactResult | DropResult:
@@ -184,17 +199,15 @@ def run_simulate(opt: _Options) -> ImpactResult | DropResult:
     options (SI after parsing)."""
     body, rod_angle = _body(opt)
     cfg = opt.values
-    if cfg.get("vy") is None:
-        raise UserError('--vy is required, e.g. --vy "-1.41 m/s"')
+    velocity = velocity_input(
+        cfg.get("vx"), cfg.get("vy"), cfg.get("speed"), cfg.get("incidence"), opt.label
+    )
     common: dict[str, Any] = {
         "flat": _material(opt, "flat", AISI_1010),
         "law": str(cfg.get("law", "ghaednia")),
         "friction": str(cfg.get("friction", "coulomb")),
         "mu": _mu(cfg.get("mu", DEFAULT_MU), opt.label("mu")),
-        "velocity": (
-            quantity(cfg.get("vx", 0.0), "m/s", opt.label("vx")) or 0.0,
-            quantity(cfg.get("vy"), "m/s", opt.label("vy")) or 0.0,
-        ),
+        "velocity": velocity,
         "spin": quantity(cfg.get("spin", 0.0), "rad/s", opt.label("spin")) or 0.0,
         "law_params": cfg.get("law_params"),
         "gravity": bool(cfg.get("gravity", True)),
@@ -256,11 +269,17 @@ _HELP = {
     "inertia": 'Rod I_C, e.g. "0.0036 kg*m^2" (bare number: kg*m^2; default m L^2/12; rigid rod '
     "only).",
     "radius": "Tip / sphere radius, e.g. '8.8 mm' (bare number: m; default 8.8 mm, the paper's).",
-    "length": "Rod length, e.g. '304.8 mm' (bare number: m; default 0.3048 m).",
-    "mass": "Mass, e.g. '0.46 kg' (bare number: kg; rod default 0.4607 kg; sphere default from "
-    "the density).",
-    "material": "Material preset of the body, see 'impactlab materials' (default aisi-201).",
-    "flat": "Material preset of the flat, see 'impactlab materials' (default aisi-1010).",
+    "length": f"{LENGTH_HELP} (default 0.3048 m).",
+    "mass": "Mass, e.g. '0.46 kg' (bare number: kg; rod default 0.4607 kg, or from --diameter; "
+    "sphere default from the density).",
+    "diameter": "Rod diameter d, e.g. '12 mm' (bare number: m; optional): the mass follows from "
+    "d, L and the material's density (with --mass too: checked to 2 %).",
+    "material": "Body material: a library name (see 'impactlab materials'), properties "
+    "'E=200GPa, nu=0.3, Sy=760MPa, rho=7800kg/m^3' (HB=, n= optional) or a TOML file "
+    "(default aisi-201).",
+    "flat": "Flat material: a library name (see 'impactlab materials'), properties "
+    "'E=69GPa, nu=0.33, Sy=276MPa, rho=2700kg/m^3' (HB=, n= optional) or a TOML file "
+    "(default aisi-1010).",
     "modes_axial": f"Flexible rod: axial modes (default {DEFAULT_N_AXIAL}, + 2 residual).",
     "modes_bending": f"Flexible rod: bending modes (default {DEFAULT_N_BENDING}).",
     "damping": "Flexible rod: modal damping ratio zeta of every mode, in [0, 1) (default 0).",
@@ -277,6 +296,8 @@ def simulate_cmd(
     angle: str = _option("angle"),
     vy: str = _option("vy"),
     vx: str = _option("vx"),
+    speed: str = _option("speed"),
+    incidence: str = _option("incidence"),
     spin: str = _option("spin"),
     mu: float = typer.Option(
         None,
@@ -289,6 +310,7 @@ def simulate_cmd(
     radius: str = _option("radius"),
     length: str = _option("length"),
     mass: str = _option("mass"),
+    diameter: str = _option("diameter"),
     material: str = _option("material"),
     flat: str = _option("flat"),
     no_gravity: bool = typer.Option(False, "--no-gravity", help="Switch gravity off."),
@@ -323,6 +345,9 @@ def simulate_cmd(
       impactlab simulate rod --angle "20 deg" --vy "-1.41 m/s" --mu 0.2 --plot
 
       impactlab simulate sphere --radius "5 mm" --vy "-1 m/s" --material aisi-1010
+
+      impactlab simulate sphere --radius "3 mm" --speed "2.5 m/s" --incidence "30 deg"
+      --material aisi-52100 --flat al-6061-t6
 
       impactlab simulate rod --flexible --angle "20 deg" --vy "-1.41 m/s" --mu 0.2
     """

@@ -20,6 +20,7 @@ from impactlab._validation import (
     check_finite,
     check_flag,
     check_nonnegative,
+    check_positive,
     warn_implausible,
 )
 from impactlab.bodies import Rod, Sphere, lever_arms
@@ -58,11 +59,15 @@ def check_rtol(rtol: Any) -> float:
 
 
 def check_angle(angle: Any, body: Rod | Sphere) -> float:
-    """Validate the rod angle (in (0, pi/2]; a bare number is radians, ``"20 deg"`` works);
-    ignored (pi/2) for a sphere."""
+    """Validate the rod angle (in (0, pi/2]; a bare number is radians, ``"20 deg"`` works). A
+    sphere has none: pi/2 inside, and an angle given for it is refused (as on the command line:
+    an input that does not apply to the body is refused everywhere)."""
     if isinstance(body, Sphere):
         if angle is not None:
-            check_finite("angle", angle, "rad")
+            raise ValueError(
+                f"angle ({angle!r}): a Sphere has no angle to the flat (its contact point lies "
+                "below its centre); leave angle out"
+            )
         return 0.5 * math.pi
     if angle is None:
         raise ValueError(
@@ -102,6 +107,60 @@ def check_velocity(velocity: Any) -> tuple[float, float]:
         check_finite(name, v, "m/s")
         for name, v in (("velocity[0] (vx)", vx), ("velocity[1] (vy)", vy))
     )
+
+
+def velocity_from(velocity: Any, speed: Any, incidence: Any) -> Any:
+    """``velocity`` (vx, vy), or the one that ``speed`` [m/s, > 0] and ``incidence`` [rad]
+    give: vx = speed sin(incidence), vy = -speed cos(incidence). The incidence is the angle of
+    the centre of mass's velocity to the flat's normal, in (-pi/2, pi/2): 0 is a normal drop,
+    a positive incidence moves the body towards +x (vx > 0; for a rod, from the tip towards
+    its centre of mass). Quantities as ``impactlab.units.magnitude`` (a bare incidence is
+    radians, ``"30 deg"`` works). ValueError when both or neither are given."""
+    if speed is None and incidence is None:
+        if velocity is None:
+            raise ValueError(
+                "give the velocity of the centre of mass: velocity=(vx, vy) [m/s], or speed= "
+                "[m/s] and incidence= (its angle to the flat's normal, e.g. '30 deg')"
+            )
+        return velocity
+    if velocity is not None:
+        raise ValueError(
+            "give either velocity=(vx, vy) or speed= and incidence=, not both (they say the "
+            "same thing)"
+        )
+    if speed is None or incidence is None:
+        missing = "speed" if speed is None else "incidence"
+        raise ValueError(f"speed and incidence go together: {missing} is missing")
+    v = check_positive("speed", speed, "m/s")
+    th = check_finite("incidence", incidence, "rad")
+    if not abs(th) < 0.5 * math.pi:
+        hint = (
+            ""
+            if isinstance(incidence, str) or is_quantity(incidence)
+            else (f" (a bare incidence is radians; for degrees write '{th:g} deg')")
+        )
+        raise ValueError(
+            f"incidence must lie in (-90, 90) deg from the flat's normal, got "
+            f"{math.degrees(th):.6g} deg{hint}"
+        )
+    return (v * math.sin(th), -v * math.cos(th))
+
+
+def batch_velocity(vx: Any, vy: Any, speed: Any, incidence: Any) -> tuple[Any, Any]:
+    """(vx, vy) of a batch: as given (vx None: 0), or from speed and incidence (scalars or
+    arrays, element by element). ValueError when both or neither are given."""
+    if speed is None and incidence is None:
+        if vy is None:
+            raise ValueError("vy is required (or speed= and incidence=)")
+        return (0.0 if vx is None else vx), vy
+    if vx is not None or vy is not None:
+        raise ValueError("give either vx/vy or speed= and incidence=, not both")
+    if speed is None or incidence is None:
+        missing = "speed" if speed is None else "incidence"
+        raise ValueError(f"speed and incidence go together: {missing} is missing")
+    v = np.asarray(magnitude("speed", speed, "m/s"), dtype=np.float64)
+    th = np.asarray(magnitude("incidence", incidence, "rad"), dtype=np.float64)
+    return v * np.sin(th), -v * np.cos(th)
 
 
 def check_body(body: Any) -> Rod | Sphere:
@@ -274,6 +333,7 @@ __all__ = [
     "PLAUSIBLE_SPEED",
     "RTOL_RANGE",
     "ImpactInputs",
+    "batch_velocity",
     "check_angle",
     "check_body",
     "check_flat",
@@ -281,5 +341,6 @@ __all__ = [
     "check_rtol",
     "check_velocity",
     "gravity_value",
+    "velocity_from",
     "warn_fast",
 ]

@@ -27,9 +27,11 @@ from impactlab.dynamics.checks import (
     PLAUSIBLE_SPEED,
     RTOL_RANGE,
     ImpactInputs,
+    batch_velocity,
     check_body,
     check_flat,
     check_impact,
+    velocity_from,
     warn_fast,
 )
 from impactlab.dynamics.core import layout as L
@@ -53,11 +55,11 @@ from impactlab.materials import AISI_1010, G0, Material
 
 @overload
 def simulate(
-    body: FlexibleRod, flat: Material = ..., *, velocity: Any, **kwargs: Any
+    body: FlexibleRod, flat: Material = ..., *, velocity: Any = ..., **kwargs: Any
 ) -> DropResult: ...
 @overload
 def simulate(
-    body: Rod | Sphere, flat: Material = ..., *, velocity: Any, **kwargs: Any
+    body: Rod | Sphere, flat: Material = ..., *, velocity: Any = ..., **kwargs: Any
 ) -> ImpactResult: ...
 def simulate(
     body: Rod | Sphere | FlexibleRod,
@@ -67,13 +69,15 @@ def simulate(
     friction: str = "coulomb",
     mu: float = DEFAULT_MU,
     angle: Any = None,
-    velocity: Any,
+    velocity: Any = None,
     spin: Any = 0.0,
     law_params: Mapping[str, Any] | None = None,
     gravity: Any = True,
     constant_angle: bool = False,
     rtol: float | None = None,
     history: bool = True,
+    speed: Any = None,
+    incidence: Any = None,
     **drop_options: Any,
 ) -> ImpactResult | DropResult:
     """Simulate one impact from first touch (delta = 0) to separation (SI units); for a
@@ -94,11 +98,16 @@ def simulate(
     mu : float
         Friction coefficient, >= 0 (default ``impactlab.friction.DEFAULT_MU``).
     angle : float or str
-        Rod axis to the flat, in (0, pi/2] rad; tip lowest, centre of mass at +x of the tip
-        (ignored for a sphere). A bare number above pi/2 is refused with a degrees hint.
+        Rod axis to the flat, in (0, pi/2] rad; tip lowest, centre of mass at +x of the tip.
+        A bare number above pi/2 is refused with a degrees hint; a sphere takes none (refused).
     velocity, spin : pair, float
         (vx, vy) of the centre of mass at first touch [m/s] (the contact point must approach);
         angular velocity [rad/s], counter-clockwise positive.
+    speed, incidence : float or str
+        Instead of ``velocity``: the speed of the centre of mass [m/s] and its angle to the
+        flat's normal (a bare number is radians, ``"30 deg"`` works), in (-90, 90) deg;
+        vx = speed sin(incidence) (positive incidence: towards +x), vy = -speed cos(incidence).
+        Give ``velocity`` or both of these, never both (``checks.velocity_from``).
     law_params : mapping, optional
         Law parameters (see ``impactlab laws``).
     gravity : bool, float or str
@@ -128,6 +137,8 @@ def simulate(
     >>> round(r.e, 2)
     0.42
     """
+    if velocity is None or speed is not None or incidence is not None:
+        velocity = velocity_from(velocity, speed, incidence)
     if isinstance(body, FlexibleRod) or drop_options:  # the flexible drop: a DropResult
         args = {"law": law, "friction": friction, "mu": mu, "angle": angle, "velocity": velocity}
         args |= {"spin": spin, "law_params": law_params, "gravity": gravity, "rtol": rtol}
@@ -215,7 +226,7 @@ def _fast(
         if not (type(angle) in _PLAIN and 0.0 < angle <= _MAX_ANGLE):
             return None
         th = th_out = float(angle)
-    elif angle is None or (type(angle) in _PLAIN and -_BIG < angle < _BIG):
+    elif angle is None:  # a sphere has no angle (an angle given: the full path refuses it)
         th, th_out = 0.5 * math.pi, math.nan
     else:
         return None
@@ -321,8 +332,8 @@ def simulate_batch(
     body: Rod | Sphere,
     flat: Material = AISI_1010,
     *,
-    vy: Any,
-    vx: Any = 0.0,
+    vy: Any = None,
+    vx: Any = None,
     angle: Any = None,
     mu: Any = DEFAULT_MU,
     spin: Any = 0.0,
@@ -332,12 +343,16 @@ def simulate_batch(
     gravity: Any = True,
     constant_angle: bool = False,
     rtol: float | None = None,
+    speed: Any = None,
+    incidence: Any = None,
 ) -> BatchResult:
     """Many impacts of one body, law and friction model, in parallel on all cores.
 
     ``mu``, ``angle`` [rad], ``vx``, ``vy`` [m/s] and ``spin`` [rad/s] are scalars or 1-D arrays,
     broadcast against each other; the dimensional ones may also be pint Quantities (any
-    registry) or strings with units, as in ``simulate``. ``vy`` is required. Invalid cases (NaN
+    registry) or strings with units, as in ``simulate``. ``vy`` (``vx`` default 0) or, instead,
+    ``speed`` [m/s] and ``incidence`` [rad] (arrays too; vx = speed sin(incidence),
+    vy = -speed cos(incidence), ``checks.velocity_from``) are required. Invalid cases (NaN
     input, an angle outside (0, pi/2], a receding contact point, the law's validity exceeded,
     ...) are flagged in ``BatchResult.status`` and never stop the batch; a computed case that
     gained energy or that gravity dominates is flagged in ``BatchResult.flags``. A speed above
@@ -353,6 +368,7 @@ def simulate_batch(
         if isinstance(body, Rod):
             raise ValueError("angle is required for a Rod (radians, in (0, pi/2])")
         angle = 0.5 * math.pi
+    vx, vy = batch_velocity(vx, vy, speed, incidence)
     x = _batch_inputs({"mu": mu, "angle": angle, "vx": vx, "vy": vy, "spin": spin})
     out, status = run_arrays(
         model.law_id,

@@ -49,6 +49,8 @@ _COUNT: Interval = (0.0, math.inf, True, True, True)
 #: inputs not named here take any finite number.
 ALLOWED: dict[str, Interval] = {
     "mu": (0.0, math.inf, True, True, False),
+    "speed": (0.0, math.inf, False, True, False),
+    "incidence": (-0.5 * math.pi, 0.5 * math.pi, False, False, False),
     **{n: _POSITIVE for n in ("length", "tip_radius", "radius", "mass", "inertia")},
     "n_axial": _COUNT,
     "n_bending": _COUNT,
@@ -65,6 +67,8 @@ ALLOWED: dict[str, Interval] = {
 #: The angle of a rod (rigid or flexible) to the flat [rad]: (0, pi/2] (+1e-12 for 90 deg
 #: converted from degrees, as ``impactlab.dynamics.checks``).
 ANGLE: Interval = (0.0, 0.5 * math.pi + 1e-12, False, True, False)
+#: Inputs of a rod that a sphere does not have (refused in a study of spheres only).
+_ROD_ONLY = ("angle", "length", "tip_radius", "inertia")
 #: Bodies that have an angle to the flat (a sphere's is ignored).
 _ANGLED_BODIES = ("rod", "flexible_rod")
 
@@ -141,6 +145,13 @@ def check_kinematics(
         return f"grid dimension {name!r}" if name in grid else f"input {name!r}"
 
     bodies = {str(b) for b in values("body")}
+    if bodies == {"sphere"}:  # what does not apply to a sphere is refused, as everywhere
+        given = [n for n in _ROD_ONLY if n in grid or n in fixed or n in sampled]
+        if given:
+            raise ValueError(
+                f"{', '.join(given)}: a sphere has no angle, length, tip radius or inertia "
+                "(radius and mass or density); leave them out, or study a rod"
+            )
     angles = [float(v) for v in values("angle") if isinstance(v, float)]
     if bodies & set(_ANGLED_BODIES):
         rule = _rule_text("angle", ANGLE) + (" for a rod" if "sphere" in bodies else "")

@@ -30,9 +30,9 @@ from impactlab.dynamics.batch import (
     run_arrays,
 )
 from impactlab.friction import batch_friction_error
-from impactlab.materials import PRESETS
 from impactlab.sweep.flexible import FLEXIBLE_BODY, evaluate_flexible, validate_flexible
 from impactlab.sweep.inputs import INTEGER_OUTPUTS, KINEMATIC_INPUTS
+from impactlab.sweep.material_inputs import validate_material_names
 from impactlab.sweep.models import Statics, build_models
 from impactlab.sweep.status import (
     STATUS_BAD_BODY,
@@ -163,11 +163,7 @@ def _validate_categories(categories: Mapping[str, Sequence[str]], frictions: Seq
         if fr not in frictions:
             raise ValueError(f"unknown friction model {fr!r}; known: {', '.join(frictions)}")
     for key in ("body_material", "flat_material"):
-        for m in categories.get(key, ()):
-            if m not in PRESETS:
-                raise ValueError(
-                    f"unknown {key} preset {m!r}; known presets: {', '.join(sorted(PRESETS))}"
-                )
+        validate_material_names(categories.get(key, ()), key)
     for b in categories.get("body", ()):
         if b not in ("rod", "sphere", FLEXIBLE_BODY):
             raise ValueError(f"unknown body {b!r}; known: rod, sphere, {FLEXIBLE_BODY}")

@@ -2,8 +2,8 @@
 meanings come from :mod:`impactlab.schema`.
 
 Every input of a study is one of these names. A numeric input is stored in SI units (the column
-``unit``); in a study file a bare number is read in ``file_unit`` (degrees for the angle, SI for
-everything else) and a string such as ``"8.8 mm"`` or ``"20 deg"`` is converted. A numeric input
+``unit``); in a study file a bare number is read in SI (an angle is refused bare: ``"20 deg"``
+or ``unit = "deg"``) and a string such as ``"8.8 mm"`` or ``"20 deg"`` is converted. A numeric input
 whose default is ``None`` and that the study does not set means "take the value from the preset"
 (the material preset, the paper's rod); it travels as NaN inside the sweep.
 """
@@ -47,9 +47,13 @@ class InputSpec:
 
 
 #: The inputs every study must set (in [fixed], [grid] or [sample]).
-REQUIRED_INPUTS: tuple[str, ...] = ("angle", "vy", "mu")
-#: Inputs whose bare numbers in a study file are not in their SI unit.
-_FILE_UNITS = {"angle": "degree"}
+REQUIRED_INPUTS: tuple[str, ...] = ("angle", "vy", "mu")  # angle: not for a sphere-only study
+#: Inputs whose bare numbers in a study file are not in their SI unit (none: every bare
+#: number is SI, and the angles are refused bare, :data:`UNIT_REQUIRED`).
+_FILE_UNITS: dict[str, str] = {}
+#: Inputs a study file must give with a unit ("20 deg", or ``unit = "deg"`` in the table): a
+#: bare angle could be degrees or radians (the angle rule, docs/glossary.md).
+UNIT_REQUIRED: tuple[str, ...] = ("angle", "incidence")
 
 
 def _f(name: str, unit: str, description: str, default: float | None = None) -> InputSpec:
@@ -89,6 +93,13 @@ _SPECS: tuple[InputSpec, ...] = (
     _f("vx", "m/s", "initial horizontal velocity of the centre of mass (+x towards C)", 0.0),
     _f("vy", "m/s", "initial vertical velocity of the centre of mass (< 0: towards the flat)"),
     _f("spin", "rad/s", "initial angular velocity (counter-clockwise positive)", 0.0),
+    _f("speed", "m/s", "speed of the centre of mass (with incidence, instead of vx and vy)"),
+    _f(
+        "incidence",
+        "rad",
+        "angle of the velocity to the flat's normal, in (-90, 90) deg (with speed; "
+        "vx = speed sin(incidence), vy = -speed cos(incidence))",
+    ),
     _f("mu", "1", "coefficient of friction"),
     # body geometry (None: the paper's rod, impactlab.bodies.PAPER_ROD)
     _c("body", "rod", "impacting body: 'rod' (hemispherical tip), 'sphere' or 'flexible_rod'"),

@@ -5,7 +5,6 @@ status code (``impactlab.sweep.status``), never an exception."""
 
 from __future__ import annotations
 
-import dataclasses
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
@@ -16,8 +15,9 @@ import numpy as np
 from impactlab.bodies import NB, PAPER_ROD, Rod, Sphere
 from impactlab.contact.kernels import NPARAM
 from impactlab.dynamics.models import body_params, build_contact_model
-from impactlab.materials import Material, get_material
+from impactlab.materials import Material
 from impactlab.sweep.inputs import BODY_INPUTS, CATEGORY_INPUTS, LAW_INPUTS, MATERIAL_OVERRIDES
+from impactlab.sweep.material_inputs import material_of
 from impactlab.sweep.status import STATUS_BAD_BODY, STATUS_BAD_LAW, STATUS_BAD_MATERIAL
 
 
@@ -39,21 +39,15 @@ _law_cache: dict[tuple[Any, ...], np.ndarray | int] = {}
 _body_cache: dict[tuple[Any, ...], np.ndarray | int] = {}
 
 
-def _material(preset: str, overrides: Mapping[str, float]) -> Material:
-    base = get_material(preset)
-    changes: dict[str, Any] = {k: v for k, v in overrides.items() if not math.isnan(v)}
-    if not changes:
-        return base
-    return dataclasses.replace(base, **changes)
-
-
 def _side(side: str, row: Mapping[str, float]) -> dict[str, float]:
     return {field: row[name] for name, field in MATERIAL_OVERRIDES[side].items()}
 
 
 def material_for(side: str, preset: str, row: Mapping[str, float]) -> Material:
-    """The material of ``side`` ("body" or "flat"): the preset with the row's overrides."""
-    return _material(preset, _side(side, row))
+    """The material of ``side`` ("body" or "flat"): the library material ``preset``, or
+    (``"custom"``) the one the row's property values define
+    (``impactlab.sweep.material_inputs``)."""
+    return material_of(side, preset, _side(side, row))
 
 
 def _body(cat: Mapping[str, str], row: Mapping[str, float], body_mat: Material) -> Rod | Sphere:
@@ -152,8 +146,8 @@ def _build_one(
     """(law params, body params) for one combination, or (code, code) when rejected. The
     contact model comes from ``impactlab.dynamics.models``, as in ``simulate``."""
     try:
-        body_mat = _material(cat["body_material"], _side("body", row))
-        flat_mat = _material(cat["flat_material"], _side("flat", row))
+        body_mat = material_for("body", cat["body_material"], row)
+        flat_mat = material_for("flat", cat["flat_material"], row)
     except ValueError:
         return STATUS_BAD_MATERIAL, STATUS_BAD_MATERIAL
     try:

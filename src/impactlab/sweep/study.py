@@ -41,6 +41,7 @@ from impactlab.sweep.dimensions import (
 from impactlab.sweep.display import study_html, study_repr
 from impactlab.sweep.inputs import INPUTS, OUTPUT_ALIASES, get_input
 from impactlab.sweep.limits import DEFAULT_MAX_CASES, check_max_cases, too_many, warn_chunking
+from impactlab.sweep.material_inputs import check_material_inputs
 from impactlab.sweep.options import (
     DEFAULT_CHUNK_SIZE,
     STUDY_FORMAT,
@@ -76,7 +77,26 @@ def _check_sources(axes: Sequence[Axis], fixed: Mapping[str, Value], sample: Sam
         if name in seen:
             raise ValueError(f"input {name!r} is set twice (in {seen[name]} and {where})")
         seen[name] = where
-    missing = [s.name for s in INPUTS.values() if s.required and s.name not in seen]
+    by_speed = [n for n in ("speed", "incidence") if n in seen]
+    if by_speed:
+        if len(by_speed) == 1:
+            other = "incidence" if by_speed[0] == "speed" else "speed"
+            raise ValueError(f"speed and incidence go together: {other} has no value")
+        both = [n for n in ("vx", "vy") if n in seen]
+        if both:
+            raise ValueError(
+                f"{', '.join(both)} and speed/incidence both set: they say the same thing; "
+                "give (vx, vy) or speed and incidence"
+            )
+        seen["vy"] = "speed"  # vy = -speed cos(incidence)
+    bodies = next((a.values for a in axes if a.name == "body"), (fixed.get("body", "rod"),))
+
+    spheres = all(b == "sphere" for b in bodies)  # a sphere has no angle to the flat
+    missing = [
+        s.name
+        for s in INPUTS.values()
+        if s.required and s.name not in seen and not (spheres and s.name == "angle")
+    ]
     if missing:
         raise ValueError(
             f"input(s) {missing} have no value: set them in [fixed], [grid] or [sample]"
@@ -176,6 +196,11 @@ class Study:
         if self.sample is not None and not isinstance(self.sample, Sample):
             raise ValueError(f"sample must be a Sample, got {self.sample!r}")
         _check_sources(axes, fixed, self.sample)
+        varied = [a.name for a in axes] + ([] if self.sample is None else list(self.sample.inputs))
+        categories = {a.name: a.values for a in axes if a.is_category}
+        categories.update({k: (v,) for k, v in fixed.items() if isinstance(v, str)})
+        fixed = check_material_inputs(fixed, varied, categories)
+        object.__setattr__(self, "fixed", fixed)
         check_kinematics(fixed, axes, () if self.sample is None else tuple(self.sample.inputs))
         if self.outputs is not None:
             object.__setattr__(self, "outputs", _check_outputs(self.outputs))
@@ -253,6 +278,12 @@ class Study:
                 categories[spec.name] = str(v)
             else:
                 numeric[spec.name] = np.full(n, math.nan if v is None else float(v))
+        if not np.isnan(numeric["speed"]).all():  # speed and incidence: (vx, vy)
+            speed, incidence = numeric["speed"], numeric["incidence"]
+            numeric["vx"] = speed * np.sin(incidence)
+            numeric["vy"] = -speed * np.cos(incidence)
+        if categories.get("body") == "sphere" and np.isnan(numeric["angle"]).all():
+            numeric["angle"] = np.full(n, 0.5 * math.pi)  # a sphere's angle plays no part
         return numeric, categories, bshape
 
     # -- canonical form, hash ------------------------------------------------------------------

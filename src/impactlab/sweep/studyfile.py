@@ -1,9 +1,10 @@
 """Study files (TOML, docs/sweep.md) and their canonical tables: parsing and validation into the
 arguments of :class:`impactlab.sweep.study.Study`.
 
-In a study file a bare number is in the input's file unit (SI, degrees for the angle) unless
-the table gives ``unit``; a string such as ``"8.8 mm"`` is converted. With ``units = "si"`` in
-``[study]`` (the canonical form ``Study.to_dict`` writes) bare numbers are SI.
+In a study file a bare number is in the input's SI unit unless the table gives ``unit``; a
+string such as ``"8.8 mm"`` is converted. An angle is the exception: a bare angle is refused
+(``"20 deg"``, or ``unit = "deg"`` in its table), as on the command line. With ``units = "si"``
+in ``[study]`` (the canonical form ``Study.to_dict`` writes) bare numbers are SI, angles in rad.
 """
 
 from __future__ import annotations
@@ -24,7 +25,7 @@ from impactlab.sweep.distributions import (
     distribution_from_dict,
 )
 from impactlab.sweep.flexible import check_flexible_study
-from impactlab.sweep.inputs import INPUTS, get_input
+from impactlab.sweep.inputs import INPUTS, UNIT_REQUIRED, get_input
 from impactlab.sweep.limits import DEFAULT_MAX_CASES, check_max_cases, too_many
 from impactlab.sweep.options import (
     DEFAULT_CHUNK_SIZE,
@@ -126,21 +127,28 @@ def study_arguments(
     return args  # the kinematic rules: Study.__post_init__ (dimensions.check_kinematics)
 
 
-def _quantity(value: Any, unit: str, bare_unit: str, label: str) -> float:
-    """``value`` (a number in ``bare_unit`` or a quantity string) as a float in ``unit``."""
+def _quantity(value: Any, unit: str, bare_unit: str | None, label: str) -> float:
+    """``value`` (a number in ``bare_unit`` or a quantity string) as a float in ``unit``;
+    ``bare_unit`` None: a bare number is refused (an angle)."""
     ureg = units_registry()
     import pint  # loaded by the registry (``impactlab.units`` imports pint on first use)
 
     if isinstance(value, bool) or not isinstance(value, int | float | str):
         raise ValueError(f"{label}: expected a number or a quantity string, got {value!r}")
     q: Any
+    if bare_unit is None and _bare(value):
+        raise ValueError(
+            f"{label}: the bare number {value!r} has no unit; an angle needs one, e.g. "
+            f"'{str(value).strip()} deg' (or unit = 'deg' in the input's table)"
+        )
+    bare = bare_unit or unit  # None: refused above for a bare number
     try:
         if isinstance(value, str):
             q = ureg.Quantity(value.strip())
             if q.unitless:
-                q = float(q.magnitude) * ureg.Unit(bare_unit)
+                q = float(q.magnitude) * ureg.Unit(bare)
         else:
-            q = float(value) * ureg.Unit(bare_unit)
+            q = float(value) * ureg.Unit(bare)
         x = float(q.to(unit).magnitude)
     except pint.DimensionalityError:
         raise ValueError(f"{label}: {value!r} is not convertible to {unit}") from None
@@ -151,12 +159,25 @@ def _quantity(value: Any, unit: str, bare_unit: str, label: str) -> float:
     return x
 
 
+def _bare(value: Any) -> bool:
+    """True for a number, or a string that is only a number (no unit)."""
+    if isinstance(value, int | float):
+        return True
+    try:
+        float(str(value))
+    except ValueError:
+        return False
+    return True
+
+
 def _converter(name: str, si: bool, unit: str | None, where: str) -> Converter:
     """Converter of input ``name``'s numbers: bare numbers are in ``unit`` if given, else in the
-    input's file unit (SI, degrees for the angle); with ``si`` bare numbers are SI."""
+    input's SI unit (an angle's are refused); with ``si`` bare numbers are SI."""
     spec = get_input(name)
     storage = "dimensionless" if spec.unit == "1" else spec.unit
-    bare = unit or ("dimensionless" if spec.unit == "1" else spec.parse_unit)
+    bare: str | None = unit or ("dimensionless" if spec.unit == "1" else spec.parse_unit)
+    if unit is None and name in UNIT_REQUIRED:
+        bare = None
     if si and unit is None:
         bare = storage
 

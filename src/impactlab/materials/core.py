@@ -1,4 +1,4 @@
-"""Materials, contact pairs and the paper's presets (SI units throughout).
+"""Materials and contact pairs (SI units throughout).
 
 Every quantity is SI except the Brinell hardness, which is kept in its customary unit kgf/mm^2
 (the "HB" number) and converted by :func:`brinell_to_pa` where a law needs a pressure.
@@ -7,7 +7,8 @@ Every quantity is SI except the Brinell hardness, which is kept in its customary
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+import sys
+from dataclasses import dataclass, field
 
 from impactlab._html import dataclass_html, dataclass_rows
 from impactlab._validation import check_finite, check_positive, check_range
@@ -35,6 +36,14 @@ def brinell_to_pa(hb: float) -> float:
     return hb * G0 * 1.0e6
 
 
+#: The fields that hold a material's values (what a library entry's source gives).
+_VALUES = ("E", "nu", "yield_strength", "brinell_hardness", "meyer_index", "density")
+
+
+def _differs(a: float, b: float) -> bool:
+    return not (a == b or (math.isnan(a) and math.isnan(b)))
+
+
 @dataclass(frozen=True)
 class Material:
     """An isotropic elastic-plastic material.
@@ -48,6 +57,10 @@ class Material:
     brinell_hardness : Brinell hardness number HB [kgf/mm^2] (used by Brake's law).
     meyer_index : Meyer's strain-hardening index n (Brake's law), typically 2 to 2.5; must be > 2.
     density : mass density [kg/m^3].
+    condition : temper or condition the values belong to ("T6", "annealed", ...; text).
+    source : key of the reference the values come from (``impactlab.references``; "" for
+        values given by the user).
+    note : what the source gives and how it was read (text).
 
     E, yield_strength, density and brinell_hardness are numbers in the units above, strings
     with units (``"200 GPa"``) or pint Quantities of any registry; nu and meyer_index are plain
@@ -62,10 +75,16 @@ class Material:
     brinell_hardness: float = math.nan
     meyer_index: float = 2.2
     density: float = 7850.0
+    condition: str = ""
+    source: str = ""
+    note: str = field(default="", compare=False, repr=False)
 
     def __post_init__(self) -> None:
         if not isinstance(self.name, str) or not self.name:
             raise ValueError(f"name must be a non-empty string, got {self.name!r}")
+        for text in ("condition", "source", "note"):
+            if not isinstance(getattr(self, text), str):
+                raise ValueError(f"{text} must be a string, got {getattr(self, text)!r}")
         for name, unit in (("E", "Pa"), ("yield_strength", "Pa"), ("density", "kg/m^3")):
             value = check_positive(name, getattr(self, name), unit)
             object.__setattr__(self, name, value)
@@ -87,6 +106,23 @@ class Material:
                 f"yield_strength ({self.yield_strength!r} Pa) must be smaller than E "
                 f"({self.E!r} Pa); check the units"
             )
+        self._relabel_if_changed()
+
+    def _relabel_if_changed(self) -> None:
+        """A library entry changed in part (``dataclasses.replace(AISI_1010, E=69e9)``) keeps
+        no library label: its name says what changed and its source is cleared, so that no
+        result names a library material it did not use."""
+        library = sys.modules.get("impactlab.materials.library")
+        presets = getattr(library, "PRESETS", None)  # None while the library is being built
+        if not presets or not self.source:
+            return
+        entry = next((m for m in presets.values() if m.name == self.name), None)
+        if entry is None:
+            return
+        changed = [f for f in _VALUES if _differs(getattr(self, f), getattr(entry, f))]
+        if changed:
+            object.__setattr__(self, "name", f"{self.name}, modified ({', '.join(changed)})")
+            object.__setattr__(self, "source", "")
 
     @property
     def has_hardness(self) -> bool:
@@ -109,7 +145,7 @@ class Material:
     def __str__(self) -> str:
         """One line in display units: ``Material NAME: E = 200 GPa, nu = 0.3, ...``
         (``repr`` stays the dataclass's, in SI)."""
-        rows = [r for r in dataclass_rows(self) if r[0] != "name"]
+        rows = [r for r in dataclass_rows(self) if r[0] not in ("name", "source") and r[1] != ""]
         return summary_line(f"Material {self.name}", rows)
 
 
@@ -183,30 +219,3 @@ class ContactPair:
         """One line in display units: the two materials by name, E*, G* and the yield strength
         of the material that yields first."""
         return summary_line("ContactPair", dataclass_rows(self, self._derived()))
-
-
-def _steel(name: str, yield_strength: float, brinell_hardness: float, density: float) -> Material:
-    """A steel of the paper's Table 1: E = 200 GPa, nu = 0.3; the Meyer index is not given in
-    the paper, 2.2 is a typical value for work-hardened steel."""
-    return Material(name, 200e9, 0.3, yield_strength, brinell_hardness, 2.2, density)
-
-
-#: The paper's rod: AISI 201 stainless steel (Table 1). Unit corrections of the printed table:
-#: S_y = 760 MPa (printed "760 GPa"), Brinell hardness 327 kgf/mm^2 (printed "kgf/m^2").
-AISI_201 = _steel("AISI 201 stainless steel (paper's rod)", 760e6, 327.0, 7800.0)
-
-#: The paper's flat: AISI 1010 low-carbon steel (Table 1). Unit correction: Brinell hardness
-#: 105 kgf/mm^2 (printed "kgf/m^2").
-AISI_1010 = _steel("AISI 1010 low-carbon steel (paper's flat)", 305e6, 105.0, 7870.0)
-
-PRESETS: dict[str, Material] = {"aisi-201": AISI_201, "aisi-1010": AISI_1010}
-
-
-def get_material(name: str) -> Material:
-    """A preset by name; ValueError listing the known names otherwise."""
-    try:
-        return PRESETS[name]
-    except KeyError:
-        raise ValueError(
-            f"unknown material {name!r}; known presets: {', '.join(sorted(PRESETS))}"
-        ) from None

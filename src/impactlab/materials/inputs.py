@@ -1,0 +1,200 @@
+"""A material from what a user writes: a library name, a definition by values or a TOML file.
+
+One reader for every input (the Python API's :func:`get_material`, every command's
+``--material``/``--flat``, ``--config`` files, study files):
+
+- a name of the library (``"al-6061-t6"``, case and ``_``/``-`` free; aliases such as
+  ``"6061-t6"``; ``impactlab materials`` lists them);
+- a definition by values, ``"E=69GPa, nu=0.33, Sy=276MPa, rho=2700kg/m^3"`` (a mapping with
+  the same keys works too): E, nu, the yield strength and the density are **required**,
+  the Brinell hardness (``HB``), the Meyer index (``n``), ``name`` and ``condition`` optional.
+  Quantities carry units; a bare number is in SI (Pa, kg/m^3; HB in kgf/mm^2);
+- the path of a TOML file holding such a table (top level or under ``[material]``).
+
+A definition by values is complete or refused: it never borrows a library entry's other
+values (an aluminium flat never keeps a steel's hardness), and its name never names a library
+entry unless every value is that entry's.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+import tomllib
+from collections.abc import Mapping
+from pathlib import Path
+from typing import Any
+
+from impactlab.materials.core import Material, brinell_to_pa
+from impactlab.materials.library import ALIASES, PRESETS
+from impactlab.units import to_si
+
+#: Keys of a definition by values -> (Material field, SI unit; "" for text, "1" for numbers).
+KEYS: dict[str, tuple[str, str]] = {
+    "e": ("E", "Pa"),
+    "nu": ("nu", "1"),
+    "sy": ("yield_strength", "Pa"),
+    "s_y": ("yield_strength", "Pa"),
+    "yield_strength": ("yield_strength", "Pa"),
+    "rho": ("density", "kg/m^3"),
+    "density": ("density", "kg/m^3"),
+    "hb": ("brinell_hardness", "kgf/mm^2"),
+    "brinell_hardness": ("brinell_hardness", "kgf/mm^2"),
+    "n": ("meyer_index", "1"),
+    "meyer_index": ("meyer_index", "1"),
+    "name": ("name", ""),
+    "condition": ("condition", ""),
+}
+#: The fields a definition by values must give.
+REQUIRED: tuple[str, ...] = ("E", "nu", "yield_strength", "density")
+_SPELLED = {"E": "E", "nu": "nu", "yield_strength": "Sy", "density": "rho"}
+EXAMPLE = "E=69GPa, nu=0.33, Sy=276MPa, rho=2700kg/m^3"
+
+
+def _key(name: str) -> str:
+    return name.strip().lower().replace("_", "-").replace(" ", "-")
+
+
+def library_names() -> str:
+    """The library's names, comma-separated (for error messages)."""
+    return ", ".join(PRESETS)
+
+
+def from_library(name: str) -> Material | None:
+    """The library entry called ``name`` (or an alias); None if there is none."""
+    key = _key(name)
+    return PRESETS.get(ALIASES.get(key, key))
+
+
+def _number(field: str, unit: str, value: Any, label: str) -> float:
+    if unit == "1":
+        if isinstance(value, bool):
+            raise ValueError(f"{label}: expected a number, got {value!r}")
+        try:
+            x = float(value)
+        except (TypeError, ValueError):
+            raise ValueError(f"{label}: expected a number, got {value!r}") from None
+        if not math.isfinite(x):
+            raise ValueError(f"{label} must be finite, got {value!r}")
+        return x
+    if isinstance(value, bool):
+        raise ValueError(f"{label}: expected a quantity in {unit}, got {value!r}")
+    if isinstance(value, str):  # "kg/m3": a power written without "^"
+        value = re.sub(r"(?<=[A-Za-z])([23])\b", r"^\1", value)
+    x = to_si(value, unit, name=label)  # SI: a hardness in Pa
+    return x / brinell_to_pa(1.0) if unit == "kgf/mm^2" else x
+
+
+def from_values(values: Mapping[str, Any], where: str = "material") -> Material:
+    """A Material from a definition by values (keys: :data:`KEYS`); ValueError naming
+    ``where`` for an unknown key, a missing required value or a bad one."""
+    fields: dict[str, Any] = {}
+    for raw, value in values.items():
+        key = str(raw).strip().lower()
+        if key not in KEYS:
+            raise ValueError(
+                f"{where}: unknown property {str(raw)!r}; allowed: E, nu, Sy (yield_strength), "
+                "rho (density), HB (brinell_hardness), n (meyer_index), name, condition"
+            )
+        field, unit = KEYS[key]
+        if field in fields:
+            raise ValueError(f"{where}: {field} is given twice")
+        label = f"{where} {str(raw).strip()}"
+        fields[field] = str(value).strip() if unit == "" else _number(field, unit, value, label)
+    missing = [_SPELLED[f] for f in REQUIRED if f not in fields]
+    if missing:
+        raise ValueError(
+            f"{where}: a material by values needs E, nu, Sy and rho; missing {', '.join(missing)} "
+            f"(e.g. '{EXAMPLE}'; or a library name: {library_names()})"
+        )
+    name = fields.pop("name", "") or _label(fields)
+    entry = from_library(name)
+    if entry is not None and any(
+        getattr(entry, f) != v for f, v in fields.items() if f != "condition"
+    ):
+        raise ValueError(
+            f"{where}: name {name!r} is a library material with other values; give another name"
+        )
+    try:
+        return Material(name=name, **fields)
+    except ValueError as exc:
+        raise ValueError(f"{where}: {exc}") from None
+
+
+def _label(fields: Mapping[str, Any]) -> str:
+    """``"custom (E 69 GPa, nu 0.33, Sy 276 MPa, rho 2700 kg/m^3)"``."""
+    parts = [
+        f"E {fields['E'] / 1e9:.4g} GPa",
+        f"nu {fields['nu']:.4g}",
+        f"Sy {fields['yield_strength'] / 1e6:.4g} MPa",
+        f"rho {fields['density']:.4g} kg/m^3",
+    ]
+    if "brinell_hardness" in fields:
+        parts.append(f"HB {fields['brinell_hardness']:.4g}")
+    return f"custom ({', '.join(parts)})"
+
+
+def parse_values(text: str, where: str = "material") -> dict[str, str]:
+    """``"E=69GPa, nu=0.33"`` as ``{"E": "69GPa", "nu": "0.33"}`` (``,`` or ``;`` between)."""
+    out: dict[str, str] = {}
+    for item in text.replace(";", ",").split(","):
+        if not item.strip():
+            continue
+        key, eq, value = item.partition("=")
+        if not eq or not key.strip() or not value.strip():
+            raise ValueError(f"{where}: expected key=value pairs such as '{EXAMPLE}', got {item!r}")
+        out[key.strip()] = value.strip()
+    return out
+
+
+def from_file(path: Path, where: str = "material") -> Material:
+    """A material from a TOML file (the table at top level or under ``[material]``)."""
+    try:
+        with path.open("rb") as fh:
+            data = tomllib.load(fh)
+    except OSError as exc:
+        raise ValueError(f"{where}: cannot read {str(path)!r}: {exc.strerror or exc}") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise ValueError(f"{where}: {str(path)!r} is not valid TOML: {exc}") from None
+    table = data.get("material", data)
+    if not isinstance(table, dict):
+        raise ValueError(f"{where}: [material] in {str(path)!r} must be a table")
+    return from_values(table, f"{where} ({path.name})")
+
+
+def get_material(value: Any, where: str = "material") -> Material:
+    """The material ``value`` names or defines (module docstring): a Material as it is, a
+    library name, a definition by values (text or mapping) or a TOML file's path.
+    ValueError naming ``where`` otherwise, listing the library's names."""
+    if isinstance(value, Material):
+        return value
+    if isinstance(value, Mapping):
+        return from_values(value, where)
+    if isinstance(value, Path):
+        return from_file(value, where)
+    if not isinstance(value, str) or not value.strip():
+        raise ValueError(
+            f"{where}: expected a material name, 'key=value' properties or a TOML file, "
+            f"got {value!r}"
+        )
+    text = value.strip()
+    if "=" in text:
+        return from_values(parse_values(text, where), where)
+    entry = from_library(text)
+    if entry is not None:
+        return entry
+    if text.lower().endswith(".toml"):
+        path = Path(text)
+        if not path.is_file():
+            raise ValueError(f"{where}: material file {text!r} does not exist")
+        return from_file(path, where)
+    prefix = "" if where == "material" else f"{where}: "
+    raise ValueError(
+        f"{prefix}unknown material {text!r}; known: {library_names()} (see 'impactlab "
+        f"materials'), or give its properties: '{EXAMPLE}'"
+    )
+
+
+def library_key(material: Material) -> str | None:
+    """The library name of ``material`` when it is a library entry, unchanged; else None."""
+    return next((k for k, m in PRESETS.items() if m == material), None)
