@@ -1,0 +1,212 @@
+"""Candidate models and their predictions for every drop at many parameter values at once.
+
+A candidate model is a contact law x a friction model x a body model (each drop's own rigid
+body, or the flexible rod). ``predict`` evaluates W parameter vectors on D drops as one batch of
+W x D cases through the sweep's engine adapter (``impactlab.sweep.engine.ENGINE``: the compiled
+batch engine on every core for rigid bodies, one flexible drop per case for the flexible rod);
+the partial-slip model, which the batch engine does not run, goes through ``simulate`` one case
+at a time (about 40 times slower per impact; measured in benchmarks/bench_calibrate.py).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from impactlab.bodies import PAPER_ROD, Rod, Sphere
+from impactlab.calibrate.measurements import Measurements
+from impactlab.calibrate.priors import Parameter
+from impactlab.calibrate.quantities import MEASURABLE
+from impactlab.contact import get_law
+from impactlab.dynamics import simulate
+from impactlab.dynamics.core.status import STATUS_MESSAGES
+from impactlab.flags import FLAG_ENERGY_GAIN
+from impactlab.friction import get_friction
+from impactlab.sweep.engine import ENGINE, Evaluator
+from impactlab.sweep.flexible import FLEXIBLE_BODY
+from impactlab.sweep.models import Statics, material_for
+from impactlab.sweep.status import SWEEP_STATUS_MESSAGES
+
+__all__ = ["CandidateModel", "Prediction", "predict"]
+
+#: Status of a case that ran but broke physics (energy gain): a likelihood of zero.
+STATUS_ENERGY_GAIN = 301
+#: Status of a partial-slip case that ``simulate`` refused.
+STATUS_REFUSED = 302
+_OWN_MESSAGES = {
+    STATUS_ENERGY_GAIN: "result flagged ENERGY_GAIN (breaks energy conservation)",
+    STATUS_REFUSED: "simulate refused the case (partial slip)",
+}
+
+
+def status_message(code: int) -> str:
+    """What a case status means (engine, sweep and calibration codes)."""
+    code = int(code)
+    return (
+        _OWN_MESSAGES.get(code)
+        or SWEEP_STATUS_MESSAGES.get(code)
+        or STATUS_MESSAGES.get(code)
+        or f"status {code}"
+    )
+
+
+@dataclass(frozen=True)
+class CandidateModel:
+    """One physical model: ``law`` (a registered contact law), ``friction`` (a friction
+    model), ``body`` (None: each drop's own rigid body; ``"flexible_rod"``: every rod is the
+    flexible rod), ``fixed`` inputs this model sets for every drop (SI, e.g. ``damping``) and
+    the law's ``law_params``. ``name`` defaults to ``law/friction[/flexible_rod]``."""
+
+    law: str = "ghaednia"
+    friction: str = "coulomb"
+    body: str | None = None
+    fixed: Mapping[str, float] = field(default_factory=dict)
+    law_params: Mapping[str, float] = field(default_factory=dict)
+    name: str = ""
+
+    def __post_init__(self) -> None:
+        get_law(self.law)  # ValueError naming the known laws
+        get_friction(self.friction)
+        if self.body not in (None, FLEXIBLE_BODY):
+            raise ValueError(f"model body must be None or {FLEXIBLE_BODY!r}, got {self.body!r}")
+        if self.body == FLEXIBLE_BODY and self.friction == "partial_slip":
+            raise ValueError("the partial-slip model is calibrated on rigid bodies only")
+        if not self.name:
+            parts = [self.law, self.friction] + ([self.body] if self.body else [])
+            object.__setattr__(self, "name", "/".join(parts))
+
+    @property
+    def batched(self) -> bool:
+        """True when the compiled batch engine runs this model (not partial slip)."""
+        return self.friction != "partial_slip"
+
+
+@dataclass(frozen=True)
+class Prediction:
+    """W x D predictions: ``values`` quantity -> (W, D) (NaN where a case failed) and
+    ``status`` (W, D) (0: ok; ``status_message``)."""
+
+    values: Mapping[str, np.ndarray]
+    status: np.ndarray
+
+
+def _engine_outputs(quantities: Sequence[str]) -> list[str]:
+    outs = [o for q in quantities for o in MEASURABLE[q].outputs]
+    return [*dict.fromkeys(outs), "flags"]
+
+
+def _groups(
+    meas: Measurements, model: CandidateModel
+) -> dict[tuple[tuple[str, str], ...], list[int]]:
+    """Drops grouped by their categories (one engine call per group)."""
+    groups: dict[tuple[tuple[str, str], ...], list[int]] = {}
+    for d, cat in enumerate(meas.categories):
+        c = dict(cat)
+        if model.body == FLEXIBLE_BODY:
+            if c["body"] == "sphere":
+                raise ValueError(
+                    f"model {model.name!r}: drop {meas.labels[d]!r} is a sphere; the flexible "
+                    "body model applies to rods"
+                )
+            c["body"] = FLEXIBLE_BODY
+        c.update(law=model.law, friction=model.friction)
+        groups.setdefault(tuple(sorted(c.items())), []).append(d)
+    return groups
+
+
+def predict(
+    model: CandidateModel,
+    meas: Measurements,
+    params: Sequence[Parameter],
+    theta: np.ndarray,
+    *,
+    evaluator: Evaluator = ENGINE,
+    engine: Mapping[str, Any] | None = None,
+) -> Prediction:
+    """Predict every measured quantity of every drop at each row of ``theta`` (W, P), the
+    values of ``params`` (SI). One evaluator call per group of drops sharing their categories."""
+    theta = np.atleast_2d(np.asarray(theta, dtype=np.float64))
+    w, d_all = theta.shape[0], meas.n_drops
+    quantities = meas.quantities
+    outputs = _engine_outputs(quantities)
+    values = {q: np.full((w, d_all), np.nan) for q in quantities}
+    status = np.zeros((w, d_all), dtype=np.int32)
+    for key, idx in _groups(meas, model).items():
+        nd = len(idx)
+        cases = {k: np.tile(v[idx], w) for k, v in meas.inputs.items()}
+        for k, v in model.fixed.items():
+            cases[k] = np.full(w * nd, float(v))
+        for j, p in enumerate(params):
+            cases[p.name] = np.repeat(theta[:, j], nd)
+        statics = Statics(dict(key), dict(model.law_params), dict(engine or {}))
+        if model.batched:
+            res, st = evaluator(cases, statics, outputs)
+        else:
+            res, st = _partial_slip(cases, statics, outputs)
+        st = np.asarray(st, dtype=np.int32).copy()
+        flags = np.nan_to_num(res["flags"], nan=0.0).astype(np.int64)
+        st[(st == 0) & ((flags & FLAG_ENERGY_GAIN) != 0)] = STATUS_ENERGY_GAIN
+        status[:, idx] = st.reshape(w, nd)
+        for q in quantities:
+            if q == "e_t":
+                v = res["vx_out"] / cases["vx"]
+            else:
+                v = res[MEASURABLE[q].outputs[0]]
+            values[q][:, idx] = np.where(st == 0, v, np.nan).reshape(w, nd)
+    return Prediction(values, status)
+
+
+def _body(cat: Mapping[str, str], row: Mapping[str, float]) -> Rod | Sphere:
+    mat = material_for("body", cat["body_material"], row)
+
+    def given(name: str, default: Any = None) -> Any:
+        v = row.get(name, np.nan)
+        return default if np.isnan(v) else float(v)
+
+    if cat["body"] == "sphere":
+        return Sphere(radius=given("radius"), mass=given("mass"), material=mat)
+    return Rod(
+        length=given("length", PAPER_ROD.length),
+        tip_radius=given("tip_radius", PAPER_ROD.tip_radius),
+        mass=given("mass", PAPER_ROD.mass),
+        material=mat,
+        inertia=given("inertia"),
+    )
+
+
+def _partial_slip(
+    cases: Mapping[str, np.ndarray], statics: Statics, outputs: Sequence[str]
+) -> tuple[dict[str, np.ndarray], np.ndarray]:
+    """One ``simulate`` call per case (the batch engine does not run partial slip)."""
+    n = len(cases["angle"])
+    res = {o: np.full(n, np.nan) for o in outputs}
+    status = np.zeros(n, dtype=np.int32)
+    cat = statics.categories
+    engine = dict(statics.engine)
+    for i in range(n):
+        row = {k: float(v[i]) for k, v in cases.items()}
+        try:
+            body = _body(cat, row)
+            flat = material_for("flat", cat["flat_material"], row)
+            r = simulate(
+                body,
+                flat,
+                law=cat["law"],
+                friction="partial_slip",
+                mu=row["mu"],
+                angle=row["angle"] if cat["body"] != "sphere" else None,
+                velocity=(row["vx"], row["vy"]),
+                spin=row["spin"],
+                gravity=engine.get("gravity", True),
+                law_params=dict(statics.law_params) or None,
+                history=False,
+            )
+        except (ValueError, ArithmeticError):
+            status[i] = STATUS_REFUSED
+            continue
+        for o in outputs:
+            res[o][i] = float(getattr(r, o))
+    return res, status
