@@ -208,9 +208,11 @@ def calibrate(
                 f"free parameter {p.name!r} changes no prediction of any model ({', '.join(names)})"
                 " over its prior: no model uses it; remove it"
             )
-        for n in names:
-            if not usage[n][j]:
-                notes.append(f"model {n!r} does not use {p.name}: its posterior is its prior")
+        notes += [
+            f"model {n!r} does not use {p.name}: its posterior is its prior"
+            for n in names
+            if not usage[n][j]
+        ]
     for text in notes:
         warnings.warn(text, CalibrationWarning, stacklevel=2)
     posteriors: dict[str, ModelPosterior] = {}

@@ -239,6 +239,8 @@ def _parse_row(i: int, record: Mapping[str, Any], units: Mapping[str, str]) -> _
                 f"{', '.join(DROP_CATEGORIES)}, the numeric inputs ({', '.join(NUMERIC_INPUTS)}) "
                 f"and measured quantities ({', '.join(MEASURABLE)}) with <name>_sigma"
             )
+    if cats.get("body") == "sphere":
+        inputs.setdefault("angle", math.pi / 2.0)  # a sphere has no axis: the angle is unused
     row = _Row(label, cats, inputs, obs, sig)
     _check_row(where, row)
     return row

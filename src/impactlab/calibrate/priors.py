@@ -17,6 +17,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass
+from functools import cached_property
 from typing import Any
 
 import numpy as np
@@ -107,6 +108,11 @@ class Parameter:
         """The parameter's SI unit."""
         return INPUTS[self.name].unit
 
+    @cached_property
+    def _frozen(self) -> Any:
+        """The scipy.stats distribution (frozen once: freezing costs milliseconds)."""
+        return self._dist()
+
     def _dist(self) -> Any:
         if self.kind == "uniform":
             return stats.uniform(self.low, self.high - self.low)
@@ -121,16 +127,16 @@ class Parameter:
         """The log prior density at ``x`` (-inf outside the support)."""
         x = np.asarray(x, dtype=np.float64)
         with np.errstate(divide="ignore"):
-            out = np.asarray(self._dist().logpdf(x), dtype=np.float64)
+            out = np.asarray(self._frozen.logpdf(x), dtype=np.float64)
         return np.where((x >= self.low) & (x <= self.high), out, -np.inf)
 
     def sample(self, n: int, rng: np.random.Generator) -> np.ndarray:
         """``n`` draws from the prior."""
-        return np.asarray(self._dist().rvs(size=n, random_state=rng), dtype=np.float64)
+        return np.asarray(self._frozen.rvs(size=n, random_state=rng), dtype=np.float64)
 
     def quantile(self, q: Any) -> np.ndarray:
         """The prior's quantiles ``q`` in [0, 1]."""
-        return np.asarray(self._dist().ppf(q), dtype=np.float64)
+        return np.asarray(self._frozen.ppf(q), dtype=np.float64)
 
     def describe(self) -> str:
         """``"uniform(1e+08, 1e+09) Pa"`` and the like."""
