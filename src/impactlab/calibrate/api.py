@@ -119,23 +119,28 @@ def _uses(
     evaluator: Evaluator,
     engine: Mapping[str, Any],
 ) -> list[bool]:
-    """For each parameter: does changing it (prior quartiles, the others at their medians)
-    change any prediction of ``model``? One batch of 2P + 1 parameter vectors."""
+    """For each parameter: does changing it (over the prior's deciles 1, 3, 5, 7, 9, the
+    others at their medians) change any prediction of ``model``? One batch of 5P + 1 vectors.
+    (A parameter whose every value fails counts as used: the prior check names the reason.)"""
     med = np.array([float(p.quantile(0.5)) for p in params])
+    levels = (0.1, 0.3, 0.5, 0.7, 0.9)
     rows = [med]
     for j, p in enumerate(params):
-        for q in (0.25, 0.75):
+        for q in levels:
             t = med.copy()
             t[j] = float(p.quantile(q))
             rows.append(t)
     pred = predict(model, meas, params, np.array(rows), evaluator=evaluator, engine=engine)
     used = []
+    k = len(levels)
     for j in range(len(params)):
-        a, b = 1 + 2 * j, 2 + 2 * j
+        idx = list(range(1 + k * j, 1 + k * (j + 1)))
         same = all(
-            np.array_equal(v[a], v[b], equal_nan=True) for v in pred.values.values()
-        ) and np.array_equal(pred.status[a], pred.status[b])
-        all_failed = bool((pred.status[[a, b]] != 0).all())
+            np.array_equal(v[i], v[idx[0]], equal_nan=True)
+            for v in pred.values.values()
+            for i in idx[1:]
+        ) and all(np.array_equal(pred.status[i], pred.status[idx[0]]) for i in idx[1:])
+        all_failed = bool((pred.status[idx] != 0).all())
         used.append(not same or all_failed)
     return used
 
@@ -188,10 +193,11 @@ def calibrate(
     names = [c.name for c in cands]
     if len(set(names)) != len(names):
         raise ValueError(f"two candidate models have the same name: {names}")
+    least = max(4, 2 * len(params))
+    if walkers is not None and walkers < least:
+        raise ValueError(f"walkers must be >= {least} (4 and 2 x parameters), got {walkers}")
     nw = walkers if walkers is not None else max(16, 4 * len(params))
     nw += nw % 2
-    if nw < 2 * len(params):
-        raise ValueError(f"walkers must be >= 2 x parameters = {2 * len(params)}, got {nw}")
     if steps < 10:
         raise ValueError(f"steps must be >= 10, got {steps}")
     nburn = steps // 2 if burn is None else int(burn)
@@ -226,6 +232,9 @@ def calibrate(
         posteriors[c.name] = summarise(
             post, sampler, steps=steps, burn=nburn, seed=seed, n_ppc=n_ppc
         )
+    misfits = _misfits(posteriors)
+    for text in misfits:
+        warnings.warn(text, CalibrationWarning, stacklevel=2)
     settings = {
         "sampler": "emcee EnsembleSampler (stretch move), vectorised",
         "walkers": nw,
@@ -236,4 +245,26 @@ def calibrate(
         "models": names,
         "likelihood": "independent Gaussian errors with the stated standard uncertainties",
     }
-    return Calibration(posteriors, rank_models(posteriors), meas, settings, notes)
+    return Calibration(posteriors, rank_models(posteriors), meas, settings, notes + misfits)
+
+
+#: A best fit farther than this many standard uncertainties from a measured value is a misfit.
+MISFIT_SIGMAS = 5.0
+
+
+def _misfits(posteriors: Mapping[str, ModelPosterior]) -> list[str]:
+    """One line per measured value that no model's best fit comes within MISFIT_SIGMAS of."""
+    worst: dict[tuple[str, str], tuple[float, str, dict[str, Any]]] = {}
+    for name, p in posteriors.items():
+        for r in p.ppc:
+            key, z = (r["drop"], r["quantity"]), abs(r["z_best"])
+            z = z if math.isfinite(z) else math.inf
+            if key not in worst or z < worst[key][0]:
+                worst[key] = (z, name, r)
+    return [
+        f"no model reproduces {d} {q} = {r['observed']:.4g} +- {r['sigma']:.2g}"
+        f"{'' if r['unit'] == '1' else ' ' + r['unit']}: "
+        f"the closest best fit ({name}: {r['best']:.4g}) is {z:.1f} sigma away"
+        for (d, q), (z, name, r) in worst.items()
+        if z > MISFIT_SIGMAS
+    ]

@@ -266,7 +266,8 @@ def _check_row(where: str, row: _Row) -> None:
         m = MEASURABLE[q]
         if (m.low is not None and x < m.low) or (m.high is not None and x > m.high):
             raise ValueError(
-                f"{where} ({row.label}): {q} = {x:g} {m.unit} lies outside the possible range "
+                f"{where} ({row.label}): {q} = {x:g}{_unit_text(m.unit)} lies outside the "
+                "possible range "
                 f"[{m.low}, {m.high}] ({m.description})"
             )
         if q == "e_t" and row.inputs.get("vx", 0.0) == 0.0:
@@ -275,6 +276,10 @@ def _check_row(where: str, row: _Row) -> None:
         if q not in row.observed:
             raise ValueError(f"{where} ({row.label}): {q}_sigma is given without {q}")
     _check_depths(where, row)
+
+
+def _unit_text(unit: str) -> str:
+    return "" if unit in ("1", "") else f" {unit}"
 
 
 def _check_depths(where: str, row: _Row) -> None:

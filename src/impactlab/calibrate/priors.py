@@ -96,7 +96,9 @@ class Parameter:
             raise ValueError(f"prior of {self.name}: loguniform needs low > 0, got {self.low:g}")
         if (
             self.kind == "normal"
-            and self._dist().cdf(self.high) - self._dist().cdf(self.low) < 1e-12
+            and stats.norm(self.mean, self.sd).cdf(self.high)
+            - stats.norm(self.mean, self.sd).cdf(self.low)
+            < 1e-12
         ):
             raise ValueError(
                 f"prior of {self.name} excludes every value: normal({self.mean:g}, {self.sd:g}) "
@@ -173,6 +175,8 @@ def parse_parameter(name: str, spec: Any) -> Parameter:
             "'loguniform(low, high)' or 'normal(mean, sd)'"
         )
     kind, args = m.group(1), [a.strip() for a in m.group(2).split(",") if a.strip()]
+    if kind not in PRIOR_KINDS:
+        raise ValueError(f"prior of {name}: unknown kind {kind!r}; known: {', '.join(PRIOR_KINDS)}")
     values = [to_si(a, unit, name=name) for a in args]
     if kind in ("uniform", "loguniform") and len(values) == 2:
         return Parameter(name, kind, low=values[0], high=values[1])

@@ -11,7 +11,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
-from impactlab.calibrate._arviz import az
+from impactlab.calibrate._arviz import az, quiet
 from impactlab.calibrate.result import ModelPosterior
 
 __all__ = ["rank_models"]
@@ -38,7 +38,8 @@ def rank_models(posteriors: Mapping[str, ModelPosterior]) -> list[dict[str, Any]
                 "warning": bool(p.loo["n_bad_k"]),
             }
         ]
-    table = az.compare({k: v.idata() for k, v in usable.items()}, ic="loo")
+    with quiet():
+        table = az.compare({k: v.idata() for k, v in usable.items()}, ic="loo")
     rows = []
     for name, r in table.iterrows():
         rows.append(

@@ -3,6 +3,7 @@ posterior predictive checks (ArviZ for R-hat, ESS and PSIS-LOO)."""
 
 from __future__ import annotations
 
+import logging
 import warnings
 from dataclasses import dataclass, field
 from typing import Any
@@ -10,7 +11,7 @@ from typing import Any
 import emcee
 import numpy as np
 
-from impactlab.calibrate._arviz import az
+from impactlab.calibrate._arviz import az, quiet
 from impactlab.calibrate.posterior import LogPosterior
 from impactlab.calibrate.priors import Parameter
 from impactlab.calibrate.quantities import MEASURABLE
@@ -68,7 +69,8 @@ class ModelPosterior:
         """The posterior and pointwise log likelihood as ArviZ InferenceData (walkers as
         chains)."""
         post = {n: self.chains[:, :, j] for j, n in enumerate(self.names)}
-        return az.from_dict(posterior=post, log_likelihood={"drops": self.log_lik})
+        with quiet():
+            return az.from_dict(posterior=post, log_likelihood={"drops": self.log_lik})
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready summary (no draws)."""
@@ -149,6 +151,19 @@ def _ppc(
     return rows
 
 
+def _autocorr_time(chain: np.ndarray) -> np.ndarray:
+    """emcee's integrated autocorrelation time per parameter [steps] (its note that the chain
+    is short is replaced by the calibration's own warning)."""
+    logger = logging.getLogger("emcee.autocorr")
+    level = logger.level
+    logger.setLevel(logging.ERROR)
+    try:
+        with np.errstate(invalid="ignore", divide="ignore"):
+            return np.asarray(emcee.autocorr.integrated_time(chain, quiet=True))
+    finally:
+        logger.setLevel(level)
+
+
 def summarise(
     post: LogPosterior,
     sampler: emcee.EnsembleSampler,
@@ -167,12 +182,11 @@ def summarise(
     chains = np.ascontiguousarray(chain.transpose(1, 0, 2))
     log_lik = np.ascontiguousarray(blobs.transpose(1, 0, 2))
     samples = chain.reshape(-1, chain.shape[2])
-    post_idata = az.from_dict(posterior={n: chains[:, :, j] for j, n in enumerate(names)})
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
+    with quiet():
+        post_idata = az.from_dict(posterior={n: chains[:, :, j] for j, n in enumerate(names)})
         rhat = az.rhat(post_idata)
         ess = az.ess(post_idata, method="bulk")
-        tau = emcee.autocorr.integrated_time(chain, quiet=True)
+    tau = _autocorr_time(chain)
     summary: dict[str, dict[str, float]] = {}
     for j, n in enumerate(names):
         x = samples[:, j]
@@ -189,8 +203,9 @@ def summarise(
         }
     i_best = np.unravel_index(np.argmax(logp), logp.shape)
     best = sampler.get_chain()[i_best]
-    idata = az.from_dict(log_likelihood={"drops": log_lik})
-    idata.add_groups(posterior=post_idata.posterior)
+    with quiet():
+        idata = az.from_dict(log_likelihood={"drops": log_lik})
+        idata.add_groups(posterior=post_idata.posterior)
     loo, notes = _loo(idata)
     for n, s in summary.items():
         if s["rhat"] > 1.05:
