@@ -115,7 +115,7 @@ def test_prior_where_every_case_fails(template):
     """Yield strengths above the flat's modulus: every material is refused, the prior holds
     no possible value: a clear error naming the reason."""
     sy = Parameter("flat_yield_strength", "uniform", 300e9, 400e9)
-    with pytest.raises(ValueError, match="gives a likelihood above zero.*material rejected"):
+    with pytest.raises(ValueError, match=r"gives a likelihood above zero.*material rejected"):
         calibrate(_data(template), [MU, sy], walkers=8, steps=20)
 
 

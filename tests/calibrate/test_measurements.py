@@ -64,8 +64,8 @@ def test_csv_round_trip(tmp_path):
     m = read_measurements(tmp_path / "m.csv")
     back = read_measurements(m.to_csv(tmp_path / "out.csv"))
     _check(back)
-    both = m.extended(Measurements.from_records([{"label": "c", "angle": 70, "vy": -2, "mu": 0.1,
-                                                  "e": 0.05, "e_sigma": 0.01}]))  # fmt: skip
+    more = {"label": "c", "angle": 70, "vy": -2, "mu": 0.1, "e": 0.05, "e_sigma": 0.01}
+    both = m.extended(Measurements.from_records([more]))
     assert both.labels == ("a", "b", "c") and both.n_values == 4
 
 
@@ -114,8 +114,19 @@ def test_file_errors(tmp_path):
 
 def test_aliases_and_sphere_angle():
     m = Measurements.from_records(
-        [{"body": "sphere", "radius": "2.5 mm", "vx": 1.0, "vy": -3.0, "mu": 0.1,
-          "L_s": "5 um", "L_s_sigma": "1 um", "e_t": 0.7, "e_t_sigma": 0.05}]  # fmt: skip
+        [
+            {
+                "body": "sphere",
+                "radius": "2.5 mm",
+                "vx": 1.0,
+                "vy": -3.0,
+                "mu": 0.1,
+                "L_s": "5 um",
+                "L_s_sigma": "1 um",
+                "e_t": 0.7,
+                "e_t_sigma": 0.05,
+            }
+        ]
     )
     assert m.quantities == ("sliding_length", "e_t")
     assert m.inputs["angle"][0] == pytest.approx(math.pi / 2)

@@ -75,7 +75,9 @@ def parse_model(spec: str | CandidateModel | Mapping[str, Any]) -> CandidateMode
     parts = [p.strip() for p in str(spec).split("/")]
     if not 1 <= len(parts) <= 3 or not all(parts):
         raise ValueError(f"model {spec!r}: expected 'law', 'law/friction' or 'law/friction/body'")
-    return CandidateModel(*parts)
+    friction = parts[1] if len(parts) > 1 else "coulomb"
+    body = parts[2] if len(parts) > 2 else None
+    return CandidateModel(parts[0], friction, body)
 
 
 def _params(parameters: Sequence[Parameter] | Mapping[str, Any]) -> tuple[Parameter, ...]:

@@ -171,8 +171,8 @@ def predict(
         st[(st == 0) & ((flags & FLAG_ENERGY_GAIN) != 0)] = STATUS_ENERGY_GAIN
         status[:, idx] = st.reshape(w, nd)
         for q in quantities:
-            v = res["vx_out"] / cases["vx"] if q == "e_t" else res[MEASURABLE[q].outputs[0]]
-            values[q][:, idx] = np.where(st == 0, v, np.nan).reshape(w, nd)
+            got = res["vx_out"] / cases["vx"] if q == "e_t" else res[MEASURABLE[q].outputs[0]]
+            values[q][:, idx] = np.where(st == 0, got, np.nan).reshape(w, nd)
     return Prediction(values, status)
 
 
