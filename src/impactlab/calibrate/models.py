@@ -4,12 +4,13 @@ A candidate model is a contact law x a friction model x a body model (each drop'
 body, or the flexible rod). ``predict`` evaluates W parameter vectors on D drops as one batch of
 W x D cases through the sweep's engine adapter (``impactlab.sweep.engine.ENGINE``: the compiled
 batch engine on every core for rigid bodies, one flexible drop per case for the flexible rod);
-the partial-slip model, which the batch engine does not run, goes through ``simulate`` one case
-at a time (about 40 times slower per impact; measured in benchmarks/bench_calibrate.py).
+the models the batch engine does not run (partial slip; the flexible rod on a rate-dependent
+flat) go through ``simulate`` one case at a time (measured in benchmarks/bench_calibrate.py).
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from dataclasses import dataclass, field
@@ -18,17 +19,19 @@ from typing import Any
 import numba
 import numpy as np
 
-from impactlab.bodies import PAPER_ROD, Rod, Sphere
+from impactlab.bodies import PAPER_ROD, FlexibleRod, Rod, Sphere
 from impactlab.calibrate.measurements import Measurements
 from impactlab.calibrate.priors import Parameter
 from impactlab.calibrate.quantities import MEASURABLE
 from impactlab.contact import get_law
+from impactlab.contact.rate import RATE_LAWS
 from impactlab.dynamics import simulate
 from impactlab.dynamics.core.status import STATUS_MESSAGES
+from impactlab.dynamics.drop_result import DropResult
 from impactlab.flags import FLAG_ENERGY_GAIN
 from impactlab.friction import get_friction
 from impactlab.sweep.engine import ENGINE, Evaluator
-from impactlab.sweep.flexible import FLEXIBLE_BODY
+from impactlab.sweep.flexible import DROP_OUTPUTS, FLEXIBLE_BODY, flexible_body
 from impactlab.sweep.models import Statics, material_for
 from impactlab.sweep.status import SWEEP_STATUS_MESSAGES
 
@@ -40,7 +43,7 @@ STATUS_ENERGY_GAIN = 301
 STATUS_REFUSED = 302
 _OWN_MESSAGES = {
     STATUS_ENERGY_GAIN: "result flagged ENERGY_GAIN (breaks energy conservation)",
-    STATUS_REFUSED: "simulate refused the case (partial slip)",
+    STATUS_REFUSED: "simulate refused the case (or the drop failed)",
 }
 
 
@@ -59,8 +62,10 @@ def status_message(code: int) -> str:
 class CandidateModel:
     """One physical model: ``law`` (a registered contact law), ``friction`` (a friction
     model), ``body`` (None: each drop's own rigid body; ``"flexible_rod"``: every rod is the
-    flexible rod), ``fixed`` inputs this model sets for every drop (SI, e.g. ``damping``) and
-    the law's ``law_params``. ``name`` defaults to ``law/friction[/flexible_rod]``."""
+    flexible rod), ``fixed`` inputs this model sets for every drop (SI, e.g. ``damping``), the
+    law's ``law_params`` and, for the flexible rod, the flat's ``rate`` law (``"cowper-symonds"``
+    or ``"johnson-cook"``, ``impactlab.contact.rate``). ``name`` defaults to
+    ``law/friction[/flexible_rod][/rate]``."""
 
     law: str = "ghaednia"
     friction: str = "coulomb"
@@ -68,6 +73,7 @@ class CandidateModel:
     fixed: Mapping[str, float] = field(default_factory=dict)
     law_params: Mapping[str, float] = field(default_factory=dict)
     name: str = ""
+    rate: str | None = None
 
     def __post_init__(self) -> None:
         get_law(self.law)  # ValueError naming the known laws
@@ -76,14 +82,20 @@ class CandidateModel:
             raise ValueError(f"model body must be None or {FLEXIBLE_BODY!r}, got {self.body!r}")
         if self.body == FLEXIBLE_BODY and self.friction == "partial_slip":
             raise ValueError("the partial-slip model is calibrated on rigid bodies only")
+        if self.rate is not None and self.body != FLEXIBLE_BODY:
+            raise ValueError(f"a rate law ({self.rate!r}) needs body={FLEXIBLE_BODY!r}")
+        if self.rate not in (None, *RATE_LAWS):
+            raise ValueError(f"unknown rate law {self.rate!r}; known: {', '.join(RATE_LAWS)}")
         if not self.name:
             parts = [self.law, self.friction] + ([self.body] if self.body else [])
+            parts += [self.rate] if self.rate else []
             object.__setattr__(self, "name", "/".join(parts))
 
     @property
     def batched(self) -> bool:
-        """True when the compiled batch engine runs this model (not partial slip)."""
-        return self.friction != "partial_slip"
+        """True when the sweep's engine adapter runs this model (not partial slip, not a
+        rate-dependent flat)."""
+        return self.friction != "partial_slip" and self.rate is None
 
 
 @dataclass(frozen=True)
@@ -165,7 +177,7 @@ def predict(
             with _threads_for(w * nd):
                 res, st = evaluator(cases, statics, outputs)
         else:
-            res, st = _partial_slip(cases, statics, outputs)
+            res, st = _one_by_one(cases, statics, outputs, model.rate)
         st = np.asarray(st, dtype=np.int32).copy()
         flags = np.nan_to_num(res["flags"], nan=0.0).astype(np.int64)
         st[(st == 0) & ((flags & FLAG_ENERGY_GAIN) != 0)] = STATUS_ENERGY_GAIN
@@ -176,13 +188,15 @@ def predict(
     return Prediction(values, status)
 
 
-def _body(cat: Mapping[str, str], row: Mapping[str, float]) -> Rod | Sphere:
+def _body(cat: Mapping[str, str], row: Mapping[str, float]) -> Rod | Sphere | FlexibleRod:
     mat = material_for("body", cat["body_material"], row)
 
     def given(name: str, default: Any = None) -> Any:
         v = row.get(name, np.nan)
         return default if np.isnan(v) else float(v)
 
+    if cat["body"] == FLEXIBLE_BODY:
+        return flexible_body(row, mat)
     if cat["body"] == "sphere":
         return Sphere(radius=given("radius"), mass=given("mass"), material=mat)
     return Rod(
@@ -194,15 +208,18 @@ def _body(cat: Mapping[str, str], row: Mapping[str, float]) -> Rod | Sphere:
     )
 
 
-def _partial_slip(
-    cases: Mapping[str, np.ndarray], statics: Statics, outputs: Sequence[str]
+def _one_by_one(
+    cases: Mapping[str, np.ndarray], statics: Statics, outputs: Sequence[str], rate: str | None
 ) -> tuple[dict[str, np.ndarray], np.ndarray]:
-    """One ``simulate`` call per case (the batch engine does not run partial slip)."""
+    """One ``simulate`` call per case, for what the batch engine does not run (partial slip;
+    the flexible rod on a rate-dependent flat). A refused case or a failed drop gets
+    STATUS_REFUSED, never an exception."""
     n = len(cases["angle"])
     res = {o: np.full(n, np.nan) for o in outputs}
     status = np.zeros(n, dtype=np.int32)
     cat = statics.categories
     engine = dict(statics.engine)
+    extra: dict[str, Any] = {"rate": rate} if rate else {}
     for i in range(n):
         row = {k: float(v[i]) for k, v in cases.items()}
         try:
@@ -212,7 +229,7 @@ def _partial_slip(
                 body,
                 flat,
                 law=cat["law"],
-                friction="partial_slip",
+                friction=cat["friction"],
                 mu=row["mu"],
                 angle=row["angle"] if cat["body"] != "sphere" else None,
                 velocity=(row["vx"], row["vy"]),
@@ -220,10 +237,21 @@ def _partial_slip(
                 gravity=engine.get("gravity", True),
                 law_params=dict(statics.law_params) or None,
                 history=False,
+                **extra,
             )
-        except (ValueError, ArithmeticError):
+        except (ValueError, ArithmeticError, np.linalg.LinAlgError):
             status[i] = STATUS_REFUSED
             continue
         for o in outputs:
-            res[o][i] = float(getattr(r, o))
+            res[o][i] = _value_of(r, o)
     return res, status
+
+
+def _value_of(result: Any, output: str) -> float:
+    """An engine output field of an ImpactResult or a DropResult (``DROP_OUTPUTS``)."""
+    if isinstance(result, DropResult):
+        read = DROP_OUTPUTS.get(output)
+        return math.nan if read is None else float(read(result))
+    if output in ("vx_out", "vy_out"):
+        return float(result.velocity_out[0 if output == "vx_out" else 1])
+    return float(getattr(result, output))
