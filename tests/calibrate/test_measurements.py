@@ -85,6 +85,8 @@ def _rec(**kw):
         ({"vy": None}, "the drop needs 'vy'"),
         ({"law": "hertz"}, "'law' is not a property of a drop"),
         ({"colour": "red"}, "unknown column 'colour'"),
+        ({"flat_material": "unobtainium"}, "unknown flat_material 'unobtainium'"),
+        ({"body": "cube"}, "unknown body 'cube'"),
         ({"delta_p": "12 kg", "delta_p_sigma": "1 um"}, "wrong dimension"),
         ({"delta_p": 12, "delta_p_sigma": 1}, "exceeds the tip radius"),
         ({"spin_out_sigma": 1.0}, "spin_out_sigma is given without spin_out"),
@@ -130,3 +132,38 @@ def test_aliases_and_sphere_angle():
     )
     assert m.quantities == ("sliding_length", "e_t")
     assert m.inputs["angle"][0] == pytest.approx(math.pi / 2)
+
+
+def test_an_analysed_experiment_is_appended(tmp_path):
+    """``append_experiment`` turns analyze's result into a drop (a stand-in result with the
+    attributes it reads: kinematics, summary(), rod, errors)."""
+    from types import SimpleNamespace
+
+    from impactlab.calibrate.experiment_rows import append_experiment
+    from impactlab.experiment.uncertainty import Estimate
+
+    kin = SimpleNamespace(
+        angle_in=Estimate(math.radians(20), 0.01, "rad"),
+        v_c_in=(Estimate(0.0, 0.01, "m/s"), Estimate(-1.41, 0.01, "m/s")),
+        spin_in=Estimate(0.0, 0.1, "rad/s"),
+        mu=Estimate(0.2, 0.02, ""),
+    )
+    summary = {
+        "e": Estimate(0.5, 0.02, ""),
+        "delta_p": Estimate(22e-6, 1e-6, "m"),
+        "L_s": Estimate(1.4e-3, 0.1e-3, "m"),
+        "pileup": Estimate(1e-6, 0.0, "m"),
+    }
+    res = SimpleNamespace(kinematics=kin, summary=lambda: summary, rod={"mass": 0.4607},
+                          errors={})  # fmt: skip
+    path = tmp_path / "drops.csv"
+    append_experiment(path, res, "first")
+    m = append_experiment(path, res, "second", body_material="aisi-1010")
+    assert m.labels == ("first", "second")
+    assert m.categories[1]["body_material"] == "aisi-1010"
+    np.testing.assert_allclose(m.observed["sliding_distance"], [1.4e-3, 1.4e-3])
+    np.testing.assert_allclose(m.inputs["mu"], [0.2, 0.2])
+    assert set(m.quantities) == {"e", "delta_p", "sliding_distance"}
+    assert read_measurements(path).n_values == 6
+    with pytest.raises(ValueError, match="has no kinematics"):
+        append_experiment(path, SimpleNamespace(kinematics=None, errors={"markers": "x"}), "bad")

@@ -20,9 +20,16 @@ from impactlab.calibrate.priors import Parameter, parse_parameter
 from impactlab.calibrate.ranking import rank_models
 from impactlab.calibrate.result import ModelPosterior, summarise
 from impactlab.calibrate.sampler import ProgressFn, run_chain
+from impactlab.references import cite
 from impactlab.sweep.engine import ENGINE, Evaluator
 
-__all__ = ["Calibration", "CalibrationWarning", "calibrate", "parse_model"]
+__all__ = ["REFERENCES", "Calibration", "CalibrationWarning", "calibrate", "parse_model"]
+
+#: The methods' sources: the affine-invariant ensemble and emcee, PSIS-LOO, ArviZ and its R-hat.
+REFERENCES = cite(
+    "goodman-weare-2010", "foreman-mackey-2013", "vehtari-2017", "kumar-2019-arviz",
+    "vehtari-2021-rhat",
+)  # fmt: skip
 
 
 class CalibrationWarning(UserWarning):
@@ -246,6 +253,7 @@ def calibrate(
         "parameters": {p.name: p.describe() for p in params},
         "models": names,
         "likelihood": "independent Gaussian errors with the stated standard uncertainties",
+        "references": [str(r) for r in REFERENCES],
     }
     return Calibration(posteriors, rank_models(posteriors), meas, settings, notes + misfits)
 

@@ -24,6 +24,7 @@ from typing import Any
 import numpy as np
 
 from impactlab.bodies import PAPER_ROD
+from impactlab.materials import PRESETS
 from impactlab.calibrate.quantities import (
     DROP_CATEGORIES,
     MEASURABLE,
@@ -206,6 +207,13 @@ def _is_number(text: str) -> bool:
     return True
 
 
+def _category(where: str, name: str, value: str) -> str:
+    known = ("rod", "sphere") if name == "body" else tuple(PRESETS)
+    if value not in known:
+        raise ValueError(f"{where}: unknown {name} {value!r}; known: {', '.join(known)}")
+    return value
+
+
 def _parse_row(i: int, record: Mapping[str, Any], units: Mapping[str, str]) -> _Row:
     where = f"drop {i + 1}"
     label, cats, inputs, obs, sig = f"drop {i + 1}", {}, {}, {}, {}
@@ -224,7 +232,7 @@ def _parse_row(i: int, record: Mapping[str, Any], units: Mapping[str, str]) -> _
                 "friction model are chosen by the candidate models of the calibration"
             )
         if name in DROP_CATEGORIES:
-            cats[name] = str(v).strip()
+            cats[name] = _category(where, name, str(v).strip())
         elif name in NUMERIC_INPUTS:
             inputs[name] = _value(where, name, v, unit or INPUTS[name].parse_unit)
         elif name.endswith("_sigma") and canonical_output(name[: -len("_sigma")]):

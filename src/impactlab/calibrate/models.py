@@ -183,9 +183,18 @@ def predict(
         st[(st == 0) & ((flags & FLAG_ENERGY_GAIN) != 0)] = STATUS_ENERGY_GAIN
         status[:, idx] = st.reshape(w, nd)
         for q in quantities:
-            got = res["vx_out"] / cases["vx"] if q == "e_t" else res[MEASURABLE[q].outputs[0]]
+            got = _derived(q, res, cases)
             values[q][:, idx] = np.where(st == 0, got, np.nan).reshape(w, nd)
     return Prediction(values, status)
+
+
+def _derived(q: str, res: Mapping[str, np.ndarray], cases: Mapping[str, np.ndarray]) -> Any:
+    """Measurable ``q`` from the engine outputs ``res`` of ``cases``."""
+    if q == "e_t":
+        return res["vx_out"] / cases["vx"]
+    if q == "sliding_distance":
+        return np.abs(res["sliding_length"])
+    return res[MEASURABLE[q].outputs[0]]
 
 
 def _body(cat: Mapping[str, str], row: Mapping[str, float]) -> Rod | Sphere | FlexibleRod:

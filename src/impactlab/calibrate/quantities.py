@@ -59,6 +59,13 @@ MEASURABLE: dict[str, Measurable] = {
         _engine("energy_dissipated", 0.0),
         _engine("angle_out"),
         Measurable(
+            "sliding_distance",
+            "m",
+            "|sliding_length|: the length of the slip, a magnitude (a dent's measured L_s)",
+            ("sliding_length",),
+            0.0,
+        ),
+        Measurable(
             "e_t",
             "1",
             "tangential restitution of the centre of mass, v_x,out / v_x,in (needs vx != 0)",
