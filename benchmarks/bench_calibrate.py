@@ -98,8 +98,15 @@ def partial_slip(n: int) -> dict[str, float]:
     from impactlab.calibrate import CandidateModel, Measurements, parse_parameter, predict
 
     recs = [
-        {"label": f"{i}", "body": "sphere", "radius": "2.5 mm", "vx": float(v), "vy": -3.0,
-         "e_t": 0.5, "e_t_sigma": 0.1}  # fmt: skip
+        {
+            "label": f"{i}",
+            "body": "sphere",
+            "radius": "2.5 mm",
+            "vx": float(v),
+            "vy": -3.0,
+            "e_t": 0.5,
+            "e_t_sigma": 0.1,
+        }
         for i, v in enumerate(np.linspace(0.2, 3.0, n))
     ]
     m = Measurements.from_records(recs)
@@ -170,8 +177,11 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--sets", type=int, default=50, help="coverage data sets (default 50)")
     args = ap.parse_args(argv)
     res: dict[str, object] = {
-        "machine": {"cpu": platform.processor(), "cores": os.cpu_count(),
-                    "load_average_start": os.getloadavg()},  # fmt: skip
+        "machine": {
+            "cpu": platform.processor(),
+            "cores": os.cpu_count(),
+            "load_average_start": os.getloadavg(),
+        },
     }
     res["baseline"] = b = baseline(20, 5000)
     print(f"baseline: {b['impacts']} impacts in {b['seconds']:.2f} s")

@@ -24,13 +24,13 @@ from typing import Any
 import numpy as np
 
 from impactlab.bodies import PAPER_ROD
-from impactlab.materials import PRESETS
 from impactlab.calibrate.quantities import (
     DROP_CATEGORIES,
     MEASURABLE,
     NUMERIC_INPUTS,
     canonical_output,
 )
+from impactlab.materials import PRESETS
 from impactlab.sweep.inputs import INPUTS
 from impactlab.units import to_si
 
