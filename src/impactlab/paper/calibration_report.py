@@ -162,6 +162,8 @@ def calibration_section(cal: Calibration, number: int) -> list[Block]:
         for name, p in cal.posteriors.items()
         for k, v in p.failures.items()
     )
+    warned: list[Block] = [Para("Warnings of the calibration:"), Bullets(notes)] if notes else []
+    failed: list[Block] = [Para("Failed cases:"), Bullets(fails)] if fails else []
     return [
         Heading(f"{number}. Which physics explains the experiment? (calibrated)"),
         Para(
@@ -178,6 +180,6 @@ def calibration_section(cal: Calibration, number: int) -> list[Block]:
         ),
         Table(_ranking(cal), "Configurations ranked by PSIS-LOO, with the posterior of zeta"),
         Table(_checks(cal), "Posterior predictive check of every measured value"),
-        *([Para("Warnings of the calibration:"), Bullets(notes)] if notes else []),
-        *([Para("Failed cases:"), Bullets(fails)] if fails else []),
+        *warned,
+        *failed,
     ]
