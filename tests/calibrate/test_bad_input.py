@@ -86,6 +86,16 @@ def _data(template, seed=0):
     )
 
 
+def test_quantity_a_model_does_not_predict(template):
+    from dataclasses import replace
+
+    data = _data(template)
+    dis = {**data.observed, "energy_dissipated": np.full(data.n_drops, 1.0)}
+    sig = {**data.sigma, "energy_dissipated": np.full(data.n_drops, 0.1)}
+    with pytest.raises(ValueError, match="does not predict energy_dissipated"):
+        calibrate(replace(data, observed=dis, sigma=sig), [MU], ["ghaednia/coulomb/flexible_rod"])
+
+
 def test_mu_missing_and_not_free(template):
     from dataclasses import replace
 

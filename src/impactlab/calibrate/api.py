@@ -199,6 +199,13 @@ def calibrate(
     ]
     if not cands:
         raise ValueError("calibrate needs at least one candidate model")
+    for c in cands:
+        missing = c.unsupported(meas.quantities)
+        if missing:
+            raise ValueError(
+                f"model {c.name!r} does not predict {', '.join(missing)}: leave those out or "
+                "choose other models"
+            )
     names = [c.name for c in cands]
     if len(set(names)) != len(names):
         raise ValueError(f"two candidate models have the same name: {names}")

@@ -91,6 +91,13 @@ class CandidateModel:
             parts += [self.rate] if self.rate else []
             object.__setattr__(self, "name", "/".join(parts))
 
+    def unsupported(self, quantities: Sequence[str]) -> list[str]:
+        """The measured ``quantities`` this model does not predict (the flexible drop defines
+        fewer outputs than the rigid engine: ``sweep.flexible.DROP_OUTPUTS``)."""
+        if self.body != FLEXIBLE_BODY:
+            return []
+        return [q for q in quantities if not set(MEASURABLE[q].outputs) <= set(DROP_OUTPUTS)]
+
     @property
     def batched(self) -> bool:
         """True when the sweep's engine adapter runs this model (not partial slip, not a
