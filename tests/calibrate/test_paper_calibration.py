@@ -15,6 +15,7 @@ from impactlab.paper.calibration_report import (
     calibrate_paper,
     calibration_section,
     paper_measurements,
+    write_calibration_report,
 )
 from impactlab.paper.physics import CONFIGURATIONS
 from impactlab.paper.report import Heading, Table, to_markdown
@@ -40,7 +41,7 @@ def test_the_three_drops_and_models():
 
 @LONG
 @pytest.mark.slow
-def test_ranked_configurations_and_section():
+def test_ranked_configurations_and_section(tmp_path):
     cal = calibrate_paper(walkers=4, steps=10, n_ppc=4)
     assert {r["model"] for r in cal.ranking} == {c.name for c in CONFIGURATIONS}
     assert any("'rigid rod' does not use damping" in w for w in cal.warnings)
@@ -48,3 +49,5 @@ def test_ranked_configurations_and_section():
     assert isinstance(blocks[0], Heading) and any(isinstance(b, Table) for b in blocks)
     text = to_markdown(blocks, "t")
     assert "PSIS-LOO" in text and "zeta" in text and "no model reproduces" in text
+    files = write_calibration_report(tmp_path, cal)
+    assert "data:image/png;base64," in files["html"].read_text()

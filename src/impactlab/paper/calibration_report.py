@@ -14,6 +14,7 @@ gravity impulse m g T in it: about 0.003 here, a tenth of the assumed sigma).
 from __future__ import annotations
 
 from collections.abc import Sequence
+from pathlib import Path
 from typing import Any
 
 import pandas as pd
@@ -32,6 +33,7 @@ __all__ = [
     "calibrate_paper",
     "calibration_section",
     "paper_measurements",
+    "write_calibration_report",
 ]
 
 #: Assumed standard uncertainties: e absolute, delta_p and L_s relative.
@@ -183,3 +185,54 @@ def calibration_section(cal: Calibration, number: int) -> list[Block]:
         *warned,
         *failed,
     ]
+
+
+def write_calibration_report(
+    out_dir: str | Path, cal: Calibration | None = None, *, number: int = 12, **settings: Any
+) -> dict[str, Path]:
+    """Write the section as ``calibration.md`` and ``calibration.html`` (self-contained, with
+    the predicted-vs-measured figure ``calibration_ppc.png``) into ``out_dir`` (a reproduction
+    folder, next to its report); ``cal``: a finished calibration, else ``calibrate_paper(**
+    settings)`` is run. Returns name -> path."""
+    from impactlab._mpl import pyplot
+    from impactlab.calibrate.plots import ppc_figure
+    from impactlab.paper.report import Figure, to_html, to_markdown
+
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    cal = cal if cal is not None else calibrate_paper(**settings)
+    fig = ppc_figure(cal.posteriors)
+    png = out / "calibration_ppc.png"
+    fig.savefig(png, dpi=100, bbox_inches="tight")
+    pyplot().close(fig)
+    blocks = [
+        *calibration_section(cal, number),
+        Figure(
+            png.name,
+            "Measured (+- assumed sigma) and each configuration's prediction: "
+            "median, 90 % band of the model, and with the noise (wide)",
+        ),
+    ]
+    title = "Which physics explains the experiment? (calibrated)"
+    files = {"markdown": out / "calibration.md", "html": out / "calibration.html", "figure": png}
+    files["markdown"].write_text(to_markdown(blocks, title))
+    files["html"].write_text(to_html(blocks, title, base=out))
+    return files
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """``python -m impactlab.paper.calibration_report OUT_DIR [STEPS]``: run and write it."""
+    import sys
+
+    args = list(sys.argv[1:] if argv is None else argv)
+    if not 1 <= len(args) <= 2:
+        print(main.__doc__, file=sys.stderr)
+        return 2
+    steps = int(args[1]) if len(args) == 2 else 40
+    for name, path in write_calibration_report(args[0], steps=steps).items():
+        print(f"{name}: {path}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
