@@ -75,3 +75,19 @@ def test_the_model_that_made_the_data_ranks_first(template):
     best, second = cal.ranking
     assert best["model"] == "ghaednia/coulomb"
     assert second["elpd_diff"] > 2 * second["dse"]
+
+
+def test_models_on_dask_equal_the_local_run(template):
+    """Each model's chain as one Dask task (an in-process cluster here): the same chains."""
+    from distributed import Client
+
+    data = synthetic_measurements(template, CandidateModel(), [MU], [0.15],
+                                  np.random.default_rng(3))  # fmt: skip
+    models = ["ghaednia/coulomb", "ghaednia/mindlin"]
+    local = calibrate(data, [MU], models, walkers=8, steps=20, n_ppc=0)
+    with Client(processes=False, n_workers=1, threads_per_worker=2, dashboard_address=None) as c:
+        remote = calibrate(data, [MU], models, walkers=8, steps=20, n_ppc=0, scheduler=c)
+    for name in models:
+        np.testing.assert_array_equal(local.posteriors[name].samples,
+                                      remote.posteriors[name].samples)  # fmt: skip
+    assert [r["model"] for r in local.ranking] == [r["model"] for r in remote.ranking]

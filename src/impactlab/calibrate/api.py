@@ -13,6 +13,7 @@ from typing import Any
 
 import numpy as np
 
+from impactlab.calibrate.cluster import map_on_dask
 from impactlab.calibrate.measurements import Measurements, read_measurements
 from impactlab.calibrate.models import CandidateModel, predict
 from impactlab.calibrate.posterior import LogPosterior
@@ -154,6 +155,35 @@ def _uses(
     return used
 
 
+@dataclass(frozen=True)
+class _Run:
+    """One model's chain and its summary, with the settings shared by every model (a
+    picklable callable: the task of a Dask worker)."""
+
+    meas: Measurements
+    params: tuple[Parameter, ...]
+    evaluator: Evaluator
+    engine: dict[str, Any]
+    walkers: int
+    steps: int
+    burn: int
+    seed: int
+    restart: bool
+    n_ppc: int
+
+    def __call__(
+        self, model: CandidateModel, state: Path | None, progress: ProgressFn | None
+    ) -> ModelPosterior:
+        post = LogPosterior(model, self.meas, self.params, self.evaluator, self.engine)
+        sampler = run_chain(
+            post, walkers=self.walkers, steps=self.steps, seed=self.seed, state=state,
+            restart=self.restart, progress=progress,
+        )  # fmt: skip
+        return summarise(
+            post, sampler, steps=self.steps, burn=self.burn, seed=self.seed, n_ppc=self.n_ppc
+        )
+
+
 def _slug(name: str) -> str:
     return re.sub(r"[^A-Za-z0-9_.-]+", "_", name)
 
@@ -173,6 +203,7 @@ def calibrate(
     evaluator: Evaluator = ENGINE,
     engine: Mapping[str, Any] | None = None,
     n_ppc: int = 200,
+    scheduler: Any = None,
 ) -> Calibration:
     """Calibrate the free ``parameters`` of each candidate model on the measured drops.
 
@@ -184,7 +215,9 @@ def calibrate(
     the same chain); state_dir : a folder keeping each model's chain (emcee HDF5), so that an
     interrupted calibration resumes (``restart`` discards it); progress(model, done, total);
     evaluator, engine : the engine adapter and its options (gravity, rtol; default: the
-    compiled engine, gravity on).
+    compiled engine, gravity on); scheduler : a Dask ``distributed.Client`` or scheduler
+    address: each model's chain runs as one task there (no progress display; ``state_dir``
+    must be a folder the workers share).
 
     ValueError for a parameter no model uses, a prior in which a model cannot produce the
     measurements, and bad input in general; a CalibrationWarning for a parameter some models do
@@ -237,17 +270,17 @@ def calibrate(
         ]
     for text in notes:
         warnings.warn(text, CalibrationWarning, stacklevel=2)
-    posteriors: dict[str, ModelPosterior] = {}
-    for c in cands:
-        post = LogPosterior(c, meas, params, evaluator, eng)
-        state = Path(state_dir) / f"{_slug(c.name)}.h5" if state_dir is not None else None
-        sampler = run_chain(
-            post, walkers=nw, steps=steps, seed=seed, state=state, restart=restart,
-            progress=progress,
-        )  # fmt: skip
-        posteriors[c.name] = summarise(
-            post, sampler, steps=steps, burn=nburn, seed=seed, n_ppc=n_ppc
+    run = _Run(meas, params, evaluator, eng, nw, steps, nburn, seed, restart, n_ppc)
+    states = [
+        Path(state_dir) / f"{_slug(c.name)}.h5" if state_dir is not None else None for c in cands
+    ]
+    if scheduler is None:
+        done = [run(c, s, progress) for c, s in zip(cands, states, strict=True)]
+    else:
+        done = map_on_dask(
+            scheduler, run, [(c, s, None) for c, s in zip(cands, states, strict=True)]
         )
+    posteriors = {c.name: p for c, p in zip(cands, done, strict=True)}
     misfits = _misfits(posteriors)
     for text in misfits:
         warnings.warn(text, CalibrationWarning, stacklevel=2)

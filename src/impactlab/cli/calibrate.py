@@ -3,6 +3,7 @@
 impactlab calibrate DROPS.csv|DROPS.toml --param "mu=uniform(0, 0.6)" [--param ...]
                     [--model ghaednia/coulomb ...] [--config CAL.toml] [--walkers N]
                     [--steps N] [--burn N] [--seed N] [--out DIR] [--restart] [--json] [--quiet]
+                    [--scheduler tcp://host:port]
 
 With ``--out DIR`` the chains are kept in DIR/state (an interrupted run continues where it
 stopped when run again with the same inputs) and results.json and report.html are written there.
@@ -123,6 +124,9 @@ def calibrate_cmd(
         Path | None, typer.Option(help="Folder for the saved chains, results.json, report.html.")
     ] = None,
     restart: Annotated[bool, typer.Option(help="Discard saved chains in --out.")] = False,
+    scheduler: Annotated[
+        str | None, typer.Option(help="Dask scheduler address: one task per model there.")
+    ] = None,
     as_json: Annotated[bool, typer.Option("--json", help="Print the result as JSON.")] = False,
     quiet: Annotated[bool, typer.Option(help="No progress display.")] = False,
 ) -> None:
@@ -146,6 +150,9 @@ def calibrate_cmd(
         kw["models"] = model
     sampler = {"walkers": walkers, "steps": steps, "burn": burn, "seed": seed}
     kw.update({k: v for k, v in sampler.items() if v is not None})
+    if scheduler is not None:
+        kw["scheduler"] = scheduler
+        quiet = True  # the workers cannot report progress here
     if out is not None:
         kw["state_dir"] = out / "state"
         kw["restart"] = restart
