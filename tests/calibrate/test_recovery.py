@@ -6,8 +6,8 @@ and sliding_length with noise of SIGMAS, true mu = 0.15, prior uniform(0, 0.6)),
 calibrated with fixed seeds. If the 90 % intervals are calibrated, the number X of intervals
 holding the true value is Binomial(20, 0.9): P(X <= 13) = 0.24 %, P(X >= 14) = 99.8 %; the test
 accepts 14 <= X <= 20 (X = 18 with these seeds). The seeds are fixed (the result is
-deterministic); the bounds say how unlikely a failure is for a correct sampler. Full size (50 data sets, two parameters, 80-97 %):
-benchmarks/bench_calibrate.py.
+deterministic); the bounds say how unlikely a failure is for a correct sampler. Full size
+(50 data sets, two parameters, 80-97 %): benchmarks/bench_calibrate.py.
 """
 
 from __future__ import annotations
