@@ -70,4 +70,3 @@ def test_errors_are_one_line(template, tmp_path):
         r = runner.invoke(app, args)
         assert isinstance(r.exception, ValueError | FileNotFoundError), (args, r.output)
         assert text in str(r.exception) and "\n" not in str(r.exception)
-
