@@ -7,6 +7,7 @@ import json
 import numpy as np
 from typer.testing import CliRunner
 
+from impactlab._json import shape_problems
 from impactlab.calibrate import CandidateModel, parse_parameter
 from impactlab.calibrate.synthetic import synthetic_measurements
 from impactlab.cli import app
@@ -29,8 +30,9 @@ def test_json_and_files(template, tmp_path):
     r = runner.invoke(app, args)
     assert r.exit_code == 0, r.output
     doc = json.loads(r.stdout)
+    assert shape_problems(doc) == []  # docs/json-schema.md
     post = doc["models"]["ghaednia/coulomb"]
-    assert 0.0 < post["parameters"]["mu"]["median"] < 0.6
+    assert 0.0 < post["parameters"]["mu"]["median"]["value"] < 0.6
     assert doc["ranking"][0]["model"] == "ghaednia/coulomb"
     assert (out / "results.json").is_file() and (out / "report.html").is_file()
     html = (out / "report.html").read_text()

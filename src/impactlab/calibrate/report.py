@@ -11,8 +11,8 @@ from pathlib import Path
 from typing import Any
 
 from impactlab._display import display_unit, format_number
-from impactlab._json import jsonable
 from impactlab.calibrate.api import Calibration
+from impactlab.calibrate.jsonout import calibration_json
 from impactlab.calibrate.plots import corner_figure, ppc_figure
 from impactlab.calibrate.result import ModelPosterior
 
@@ -131,11 +131,12 @@ def html_report(cal: Calibration, title: str = "impactlab calibration") -> str:
 
 
 def save(cal: Calibration, out_dir: str | Path, *, report: bool = True) -> dict[str, Path]:
-    """Write results.json (and report.html) into ``out_dir``; returns name -> path."""
+    """Write results.json (the command line's JSON, docs/json-schema.md) and report.html into
+    ``out_dir``; returns name -> path."""
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     files = {"results": out / "results.json"}
-    files["results"].write_text(json.dumps(jsonable(cal.to_dict()), indent=2))
+    files["results"].write_text(json.dumps(calibration_json(cal), indent=2))
     if report:
         files["report"] = out / "report.html"
         files["report"].write_text(html_report(cal))

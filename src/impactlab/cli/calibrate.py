@@ -164,7 +164,9 @@ def calibrate_cmd(
             bar.stop()
     files = save(cal, out) if out is not None else {}
     if as_json:
-        doc = cal.to_dict()
+        from impactlab.calibrate.jsonout import calibration_json
+
+        doc = calibration_json(cal)
         doc["files"] = {k: str(v) for k, v in files.items()}
         print(json.dumps(jsonable(doc), indent=2))
         return
