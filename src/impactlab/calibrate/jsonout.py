@@ -24,7 +24,7 @@ def _model(post: ModelPosterior) -> dict[str, Any]:
             **{k: quantity(s[k], _ONE) for k in ("rhat", "ess_bulk", "tau")},
             "best": quantity(post.best[p.name], p.unit),
         }
-    loo = {k: quantity(v, _ONE) for k, v in post.loo.items() if k != "n_bad_k"}
+    loo: dict[str, Any] = {k: quantity(v, _ONE) for k, v in post.loo.items() if k != "n_bad_k"}
     if "n_bad_k" in post.loo:
         loo["n_bad_k"] = int(post.loo["n_bad_k"])
     ppc = []
