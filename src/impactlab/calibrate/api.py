@@ -115,7 +115,7 @@ def _check_inputs(meas: Measurements, params: Sequence[Parameter], note: list[st
         )
     for p in params:
         given = np.isfinite(meas.inputs[p.name])
-        if (given.any() and p.name not in ("mu",)) or (p.name == "mu" and given.any()):
+        if given.any():
             note.append(
                 f"{p.name} is a free parameter: the value given for {int(given.sum())} drop(s) "
                 "in the measurements is not used"
