@@ -7,6 +7,8 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from impactlab.calibrate import (
     CalibrationWarning,
@@ -152,3 +154,22 @@ def test_bad_sampler_settings(template):
         calibrate(_data(template), [])
     with pytest.raises(ValueError, match="given twice"):
         calibrate(_data(template), [MU, MU])
+
+
+@settings(max_examples=40)
+@given(
+    low=st.floats(1e6, 1e9),
+    width=st.floats(1.01, 100.0),
+    kind=st.sampled_from(["uniform", "loguniform"]),
+    u=st.floats(0.0, 1.0),
+)
+def test_prior_support_property(low, width, kind, u):
+    """Inside its bounds a prior's density is finite and its draws and quantiles stay there;
+    outside it is zero (log -inf)."""
+    p = Parameter("flat_yield_strength", kind, low, low * width)
+    inside = float(p.quantile(u))
+    assert p.low <= inside <= p.high
+    assert np.isfinite(p.logpdf(np.array([inside])))[0]
+    assert p.logpdf(np.array([p.low * 0.5, p.high * 2.0])).tolist() == [-np.inf, -np.inf]
+    draws = p.sample(16, np.random.default_rng(0))
+    assert ((draws >= p.low) & (draws <= p.high)).all()

@@ -134,11 +134,13 @@ class Parameter:
 
     def sample(self, n: int, rng: np.random.Generator) -> np.ndarray:
         """``n`` draws from the prior."""
-        return np.asarray(self._frozen.rvs(size=n, random_state=rng), dtype=np.float64)
+        x = np.asarray(self._frozen.rvs(size=n, random_state=rng), dtype=np.float64)
+        return np.clip(x, self.low, self.high)
 
     def quantile(self, q: Any) -> np.ndarray:
         """The prior's quantiles ``q`` in [0, 1]."""
-        return np.asarray(self._frozen.ppf(q), dtype=np.float64)
+        x = np.asarray(self._frozen.ppf(q), dtype=np.float64)
+        return np.clip(x, self.low, self.high)  # scipy's ppf may round past a bound
 
     def describe(self) -> str:
         """``"uniform(1e+08, 1e+09) Pa"`` and the like."""
