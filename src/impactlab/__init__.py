@@ -7,7 +7,8 @@ The most used names are importable from the top level::
                     angle=math.radians(20), velocity=(0.0, -1.41))
 
 Subpackages: ``contact`` (laws), ``dynamics`` (engine), ``analytic`` (the paper's inversion),
-``experiment`` (raw files), ``sweep`` (studies), ``paper`` (data and reproduction).
+``experiment`` (raw files), ``sweep`` (studies), ``calibrate`` (parameters and models from
+measured drops), ``paper`` (data and reproduction).
 """
 
 # first: numba's cache folder and the compile notice, before any compiled function is defined

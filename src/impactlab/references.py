@@ -204,6 +204,37 @@ _ALL: tuple[Reference, ...] = (
         "OOPSLA 2014",
         "10.1145/2660193.2660195",
     ),
+    Reference(
+        "goodman-weare-2010",
+        "J. Goodman, J. Weare, Ensemble samplers with affine invariance, Commun. Appl. Math. "
+        "Comput. Sci. 5 (2010) 65-80",
+        "10.2140/camcos.2010.5.65",
+    ),
+    Reference(
+        "foreman-mackey-2013",
+        "D. Foreman-Mackey, D. W. Hogg, D. Lang, J. Goodman, emcee: The MCMC Hammer, Publ. "
+        "Astron. Soc. Pac. 125 (2013) 306-312",
+        "10.1086/670067",
+    ),
+    Reference(
+        "vehtari-2017",
+        "A. Vehtari, A. Gelman, J. Gabry, Practical Bayesian model evaluation using "
+        "leave-one-out cross-validation and WAIC, Stat. Comput. 27 (2017) 1413-1432",
+        "10.1007/s11222-016-9696-4",
+    ),
+    Reference(
+        "kumar-2019-arviz",
+        "R. Kumar, C. Carroll, A. Hartikainen, O. Martin, ArviZ a unified library for "
+        "exploratory analysis of Bayesian models in Python, J. Open Source Softw. 4 (2019) 1143",
+        "10.21105/joss.01143",
+    ),
+    Reference(
+        "vehtari-2021-rhat",
+        "A. Vehtari, A. Gelman, D. Simpson, B. Carpenter, P.-C. Buerkner, Rank-normalization, "
+        "folding, and localization: an improved R-hat for assessing convergence of MCMC, "
+        "Bayesian Anal. 16 (2021) 667-718",
+        "10.1214/20-BA1221",
+    ),
 )
 
 #: Material data: handbooks and data sheets (``impactlab.materials.library``).

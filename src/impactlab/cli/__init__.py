@@ -18,6 +18,7 @@ import typer
 from impactlab._version import __version__
 from impactlab.cli import (
     analyze,
+    calibrate,
     drop,
     fe,
     invert,
@@ -62,7 +63,19 @@ def _root(
 
 
 # Each command module defines ``register(app)``; registered in this order (the help's order).
-for _module in (laws, materials, simulate, drop, invert, analyze, sweep, reproduce, fe, warm):
+for _module in (
+    laws,
+    materials,
+    simulate,
+    drop,
+    invert,
+    analyze,
+    calibrate,
+    sweep,
+    reproduce,
+    fe,
+    warm,
+):
     _module.register(app)
 
 

@@ -1,0 +1,61 @@
+"""Drops from ``impactlab.experiment.analyze``: an ExperimentResult as one row of a
+measurements file, so that analysed experiment files can be appended to it directly."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Any
+
+from impactlab.calibrate.measurements import Measurements, read_measurements
+from impactlab.experiment.result import ExperimentResult
+
+__all__ = ["append_experiment", "experiment_record"]
+
+#: ExperimentResult.summary() key -> measured quantity of the calibration.
+_MEASURED = {"e": "e", "spin_out": "spin_out", "delta_p": "delta_p", "L_s": "sliding_distance"}
+
+
+def experiment_record(result: ExperimentResult, label: str, **drop: Any) -> dict[str, Any]:
+    """One drop (column -> SI value) from an analysed experiment: its angle, incoming velocity
+    (v_c_in) and spin, its measured mu as the drop's mu, and the measured e, spin_out, delta_p
+    and L_s (as ``sliding_distance``, a magnitude) with their standard uncertainties; ``drop``
+    adds or replaces columns (``body_material``, ``flat_material``, ``mass``, ...). ValueError
+    when the experiment has no kinematics."""
+    k = result.kinematics
+    if k is None:
+        raise ValueError(
+            f"experiment {label!r} has no kinematics (stage errors: {result.errors or 'none'}); "
+            "a drop needs its angle and incoming velocity"
+        )
+    rec: dict[str, Any] = {
+        "label": label,
+        "angle": f"{k.angle_in.value} rad",
+        "vx": k.v_c_in[0].value,
+        "vy": k.v_c_in[1].value,
+        "spin": k.spin_in.value,
+        "mu": k.mu.value,
+    }
+    rec.update({name: result.rod[name] for name in ("mass", "length", "tip_radius")
+                if name in result.rod})  # fmt: skip
+    summary = result.summary()
+    for key, quantity in _MEASURED.items():
+        est = summary.get(key)
+        if est is None or not math.isfinite(est.value) or not est.sigma > 0:
+            continue
+        value = abs(est.value) if quantity == "sliding_distance" else est.value
+        rec[quantity], rec[f"{quantity}_sigma"] = value, est.sigma
+    rec.update(drop)
+    return rec
+
+
+def append_experiment(
+    path: str | Path, result: ExperimentResult, label: str, **drop: Any
+) -> Measurements:
+    """Append the drop of ``result`` to the CSV measurements file ``path`` (created if missing;
+    rewritten in SI units with the units in its header); returns the whole set."""
+    p = Path(path)
+    new = Measurements.from_records([experiment_record(result, label, **drop)], source=str(p))
+    both = read_measurements(p).extended(new) if p.exists() else new
+    both.to_csv(p)
+    return both

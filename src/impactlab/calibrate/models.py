@@ -1,0 +1,273 @@
+"""Candidate models and their predictions for every drop at many parameter values at once.
+
+A candidate model is a contact law x a friction model x a body model (each drop's own rigid
+body, or the flexible rod). ``predict`` evaluates W parameter vectors on D drops as one batch of
+W x D cases through the sweep's engine adapter (``impactlab.sweep.engine.ENGINE``: the compiled
+batch engine on every core for rigid bodies, one flexible drop per case for the flexible rod);
+the models the batch engine does not run (partial slip; the flexible rod on a rate-dependent
+flat) go through ``simulate`` one case at a time (measured in benchmarks/bench_calibrate.py).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterator, Mapping, Sequence
+from contextlib import contextmanager
+from dataclasses import dataclass, field
+from typing import Any
+
+import numba
+import numpy as np
+
+from impactlab.bodies import PAPER_ROD, FlexibleRod, Rod, Sphere
+from impactlab.calibrate.measurements import Measurements
+from impactlab.calibrate.priors import Parameter
+from impactlab.calibrate.quantities import MEASURABLE
+from impactlab.contact import get_law
+from impactlab.contact.rate import RATE_LAWS
+from impactlab.dynamics import simulate
+from impactlab.dynamics.core.status import STATUS_MESSAGES
+from impactlab.dynamics.drop_result import DropResult
+from impactlab.flags import FLAG_ENERGY_GAIN
+from impactlab.friction import get_friction
+from impactlab.sweep.engine import ENGINE, Evaluator
+from impactlab.sweep.flexible import DROP_OUTPUTS, FLEXIBLE_BODY, flexible_body
+from impactlab.sweep.models import Statics, material_for
+from impactlab.sweep.status import SWEEP_STATUS_MESSAGES
+
+__all__ = ["CandidateModel", "Prediction", "predict"]
+
+#: Status of a case that ran but broke physics (energy gain): a likelihood of zero.
+STATUS_ENERGY_GAIN = 301
+#: Status of a partial-slip case that ``simulate`` refused.
+STATUS_REFUSED = 302
+_OWN_MESSAGES = {
+    STATUS_ENERGY_GAIN: "result flagged ENERGY_GAIN (breaks energy conservation)",
+    STATUS_REFUSED: "simulate refused the case (or the drop failed)",
+}
+
+
+def status_message(code: int) -> str:
+    """What a case status means (engine, sweep and calibration codes)."""
+    code = int(code)
+    return (
+        _OWN_MESSAGES.get(code)
+        or SWEEP_STATUS_MESSAGES.get(code)
+        or STATUS_MESSAGES.get(code)
+        or f"status {code}"
+    )
+
+
+@dataclass(frozen=True)
+class CandidateModel:
+    """One physical model: ``law`` (a registered contact law), ``friction`` (a friction
+    model), ``body`` (None: each drop's own rigid body; ``"flexible_rod"``: every rod is the
+    flexible rod), ``fixed`` inputs this model sets for every drop (SI, e.g. ``damping``), the
+    law's ``law_params`` and, for the flexible rod, the flat's ``rate`` law (``"cowper-symonds"``
+    or ``"johnson-cook"``, ``impactlab.contact.rate``). ``name`` defaults to
+    ``law/friction[/flexible_rod][/rate]``."""
+
+    law: str = "ghaednia"
+    friction: str = "coulomb"
+    body: str | None = None
+    fixed: Mapping[str, float] = field(default_factory=dict)
+    law_params: Mapping[str, float] = field(default_factory=dict)
+    name: str = ""
+    rate: str | None = None
+
+    def __post_init__(self) -> None:
+        get_law(self.law)  # ValueError naming the known laws
+        get_friction(self.friction)
+        if self.body not in (None, FLEXIBLE_BODY):
+            raise ValueError(f"model body must be None or {FLEXIBLE_BODY!r}, got {self.body!r}")
+        if self.body == FLEXIBLE_BODY and self.friction == "partial_slip":
+            raise ValueError("the partial-slip model is calibrated on rigid bodies only")
+        if self.rate is not None and self.body != FLEXIBLE_BODY:
+            raise ValueError(f"a rate law ({self.rate!r}) needs body={FLEXIBLE_BODY!r}")
+        if self.rate not in (None, *RATE_LAWS):
+            raise ValueError(f"unknown rate law {self.rate!r}; known: {', '.join(RATE_LAWS)}")
+        if not self.name:
+            parts = [self.law, self.friction] + ([self.body] if self.body else [])
+            parts += [self.rate] if self.rate else []
+            object.__setattr__(self, "name", "/".join(parts))
+
+    def unsupported(self, quantities: Sequence[str]) -> list[str]:
+        """The measured ``quantities`` this model does not predict (the flexible drop defines
+        fewer outputs than the rigid engine: ``sweep.flexible.DROP_OUTPUTS``)."""
+        if self.body != FLEXIBLE_BODY:
+            return []
+        return [q for q in quantities if not set(MEASURABLE[q].outputs) <= set(DROP_OUTPUTS)]
+
+    @property
+    def batched(self) -> bool:
+        """True when the sweep's engine adapter runs this model (not partial slip, not a
+        rate-dependent flat)."""
+        return self.friction != "partial_slip" and self.rate is None
+
+
+@dataclass(frozen=True)
+class Prediction:
+    """W x D predictions: ``values`` quantity -> (W, D) (NaN where a case failed) and
+    ``status`` (W, D) (0: ok; ``status_message``)."""
+
+    values: Mapping[str, np.ndarray]
+    status: np.ndarray
+
+
+def _engine_outputs(quantities: Sequence[str]) -> list[str]:
+    outs = [o for q in quantities for o in MEASURABLE[q].outputs]
+    return [*dict.fromkeys(outs), "flags"]
+
+
+def _groups(
+    meas: Measurements, model: CandidateModel
+) -> dict[tuple[tuple[str, str], ...], list[int]]:
+    """Drops grouped by their categories (one engine call per group)."""
+    groups: dict[tuple[tuple[str, str], ...], list[int]] = {}
+    for d, cat in enumerate(meas.categories):
+        c = dict(cat)
+        if model.body == FLEXIBLE_BODY:
+            if c["body"] == "sphere":
+                raise ValueError(
+                    f"model {model.name!r}: drop {meas.labels[d]!r} is a sphere; the flexible "
+                    "body model applies to rods"
+                )
+            c["body"] = FLEXIBLE_BODY
+        c.update(law=model.law, friction=model.friction)
+        groups.setdefault(tuple(sorted(c.items())), []).append(d)
+    return groups
+
+
+#: Below this many cases a batch runs on one thread: the engine's threads meet at the end of
+#: each call, and on a busy machine that wait costs more than a small batch (measured: 18
+#: cases, 2 ms on one thread, 6 ms on two; a whole 12-walker chain 1.4 s against 10 s).
+THREADED_MIN_CASES = 2048
+
+
+@contextmanager
+def _threads_for(n_cases: int) -> Iterator[None]:
+    before = numba.get_num_threads()
+    if n_cases < THREADED_MIN_CASES and before > 1:
+        numba.set_num_threads(1)
+    try:
+        yield
+    finally:
+        numba.set_num_threads(before)
+
+
+def predict(
+    model: CandidateModel,
+    meas: Measurements,
+    params: Sequence[Parameter],
+    theta: np.ndarray,
+    *,
+    evaluator: Evaluator = ENGINE,
+    engine: Mapping[str, Any] | None = None,
+) -> Prediction:
+    """Predict every measured quantity of every drop at each row of ``theta`` (W, P), the
+    values of ``params`` (SI). One evaluator call per group of drops sharing their categories."""
+    theta = np.atleast_2d(np.asarray(theta, dtype=np.float64))
+    w, d_all = theta.shape[0], meas.n_drops
+    quantities = meas.quantities
+    outputs = _engine_outputs(quantities)
+    values = {q: np.full((w, d_all), np.nan) for q in quantities}
+    status = np.zeros((w, d_all), dtype=np.int32)
+    for key, idx in _groups(meas, model).items():
+        nd = len(idx)
+        cases = {k: np.tile(v[idx], w) for k, v in meas.inputs.items()}
+        for k, v in model.fixed.items():
+            cases[k] = np.full(w * nd, float(v))
+        for j, p in enumerate(params):
+            cases[p.name] = np.repeat(theta[:, j], nd)
+        statics = Statics(dict(key), dict(model.law_params), dict(engine or {}))
+        if model.batched:
+            with _threads_for(w * nd):
+                res, st = evaluator(cases, statics, outputs)
+        else:
+            res, st = _one_by_one(cases, statics, outputs, model.rate)
+        st = np.asarray(st, dtype=np.int32).copy()
+        flags = np.nan_to_num(res["flags"], nan=0.0).astype(np.int64)
+        st[(st == 0) & ((flags & FLAG_ENERGY_GAIN) != 0)] = STATUS_ENERGY_GAIN
+        status[:, idx] = st.reshape(w, nd)
+        for q in quantities:
+            got = _derived(q, res, cases)
+            values[q][:, idx] = np.where(st == 0, got, np.nan).reshape(w, nd)
+    return Prediction(values, status)
+
+
+def _derived(q: str, res: Mapping[str, np.ndarray], cases: Mapping[str, np.ndarray]) -> Any:
+    """Measurable ``q`` from the engine outputs ``res`` of ``cases``."""
+    if q == "e_t":
+        return res["vx_out"] / cases["vx"]
+    if q == "sliding_distance":
+        return np.abs(res["sliding_length"])
+    return res[MEASURABLE[q].outputs[0]]
+
+
+def _body(cat: Mapping[str, str], row: Mapping[str, float]) -> Rod | Sphere | FlexibleRod:
+    mat = material_for("body", cat["body_material"], row)
+
+    def given(name: str, default: Any = None) -> Any:
+        v = row.get(name, np.nan)
+        return default if np.isnan(v) else float(v)
+
+    if cat["body"] == FLEXIBLE_BODY:
+        return flexible_body(row, mat)
+    if cat["body"] == "sphere":
+        return Sphere(radius=given("radius"), mass=given("mass"), material=mat)
+    return Rod(
+        length=given("length", PAPER_ROD.length),
+        tip_radius=given("tip_radius", PAPER_ROD.tip_radius),
+        mass=given("mass", PAPER_ROD.mass),
+        material=mat,
+        inertia=given("inertia"),
+    )
+
+
+def _one_by_one(
+    cases: Mapping[str, np.ndarray], statics: Statics, outputs: Sequence[str], rate: str | None
+) -> tuple[dict[str, np.ndarray], np.ndarray]:
+    """One ``simulate`` call per case, for what the batch engine does not run (partial slip;
+    the flexible rod on a rate-dependent flat). A refused case or a failed drop gets
+    STATUS_REFUSED, never an exception."""
+    n = len(cases["angle"])
+    res = {o: np.full(n, np.nan) for o in outputs}
+    status = np.zeros(n, dtype=np.int32)
+    cat = statics.categories
+    engine = dict(statics.engine)
+    extra: dict[str, Any] = {"rate": rate} if rate else {}
+    for i in range(n):
+        row = {k: float(v[i]) for k, v in cases.items()}
+        try:
+            body = _body(cat, row)
+            flat = material_for("flat", cat["flat_material"], row)
+            r = simulate(
+                body,
+                flat,
+                law=cat["law"],
+                friction=cat["friction"],
+                mu=row["mu"],
+                angle=row["angle"] if cat["body"] != "sphere" else None,
+                velocity=(row["vx"], row["vy"]),
+                spin=row["spin"],
+                gravity=engine.get("gravity", True),
+                law_params=dict(statics.law_params) or None,
+                history=False,
+                **extra,
+            )
+        except (ValueError, ArithmeticError, np.linalg.LinAlgError):
+            status[i] = STATUS_REFUSED
+            continue
+        for o in outputs:
+            res[o][i] = _value_of(r, o)
+    return res, status
+
+
+def _value_of(result: Any, output: str) -> float:
+    """An engine output field of an ImpactResult or a DropResult (``DROP_OUTPUTS``)."""
+    if isinstance(result, DropResult):
+        read = DROP_OUTPUTS.get(output)
+        return math.nan if read is None else float(read(result))
+    if output in ("vx_out", "vy_out"):
+        return float(result.velocity_out[0 if output == "vx_out" else 1])
+    return float(getattr(result, output))

@@ -1,0 +1,77 @@
+"""Figures of a calibration: the corner plot of each model's posterior (``corner``) and the
+posterior predictive check, predicted against measured with 90 % bands."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from impactlab._display import display_unit
+from impactlab._mpl import pyplot
+from impactlab.calibrate.result import ModelPosterior
+
+__all__ = ["corner_figure", "ppc_figure"]
+
+
+def corner_figure(post: ModelPosterior) -> Any:
+    """The corner plot of ``post`` in display units, the best fit marked."""
+    import corner
+
+    scales = [display_unit(p.name, p.unit) for p in post.params]
+    x = np.column_stack([post.samples[:, j] * s.scale for j, s in enumerate(scales)])
+    labels = [
+        f"{p.name} [{s.unit}]" if s.unit not in ("", "1") else p.name
+        for p, s in zip(post.params, scales, strict=True)
+    ]
+    best = [post.best[p.name] * s.scale for p, s in zip(post.params, scales, strict=True)]
+    plt = pyplot()  # the one matplotlib backend policy
+    if x.shape[1] == 1:  # corner's marks fail on a single axis: the histogram by hand
+        fig, ax = plt.subplots(figsize=(4, 3))
+        ax.hist(x[:, 0], bins=40, histtype="step", color="k")
+        for q in np.quantile(x[:, 0], [0.05, 0.5, 0.95]):
+            ax.axvline(q, color="k", ls="--", lw=0.8)
+        ax.axvline(best[0], color="#4682b4")
+        ax.set_xlabel(labels[0])
+        ax.set_title(post.model)
+        return fig
+    fig = corner.corner(
+        x, labels=labels, truths=best, quantiles=[0.05, 0.5, 0.95], show_titles=True
+    )
+    fig.suptitle(post.model, y=1.02)
+    return fig
+
+
+def ppc_figure(posteriors: dict[str, ModelPosterior]) -> Any:
+    """Per measured quantity: the measured values (+- sigma) by drop and each model's
+    predicted median with its 90 % band (model only) and the band with the measurement
+    noise."""
+    plt = pyplot()
+    first = next(iter(posteriors.values()))
+    quantities = list(dict.fromkeys(r["quantity"] for r in first.ppc))
+    fig, axes = plt.subplots(len(quantities), 1, figsize=(7, 2.6 * len(quantities)), squeeze=False)
+    n_models = len(posteriors)
+    for ax, q in zip(axes[:, 0], quantities, strict=True):
+        rows = [r for r in first.ppc if r["quantity"] == q]
+        d = display_unit(q, rows[0]["unit"])
+        xs = np.arange(len(rows))
+        y = np.array([r["observed"] for r in rows]) * d.scale
+        s = np.array([r["sigma"] for r in rows]) * d.scale
+        ax.errorbar(xs, y, yerr=s, fmt="ko", label="measured", zorder=5)
+        for i, (name, post) in enumerate(posteriors.items()):
+            mine = [r for r in post.ppc if r["quantity"] == q]
+            off = xs + 0.15 * (i + 1 - (n_models + 1) / 2)
+            med = np.array([r["median"] for r in mine]) * d.scale
+            lo = np.array([r["q05"] for r in mine]) * d.scale
+            hi = np.array([r["q95"] for r in mine]) * d.scale
+            plo = np.array([r["pred_q05"] for r in mine]) * d.scale
+            phi = np.array([r["pred_q95"] for r in mine]) * d.scale
+            (line,) = ax.plot(off, med, "s", label=name)
+            ax.vlines(off, plo, phi, color=line.get_color(), alpha=0.35, lw=6)
+            ax.vlines(off, lo, hi, color=line.get_color(), lw=2)
+        ax.set_xticks(xs, [r["drop"] for r in rows])
+        ax.set_ylabel(f"{q} [{d.unit}]" if d.unit not in ("", "1") else q)
+    axes[0, 0].legend(fontsize=8)
+    axes[0, 0].set_title("measured and predicted (model 90 % band; wide: with the noise)")
+    fig.tight_layout()
+    return fig

@@ -1,0 +1,122 @@
+"""The log posterior of one candidate model, vectorised over walkers.
+
+Likelihood: each measured value is the model's prediction plus independent Gaussian noise of
+its stated standard uncertainty, ``log N(y | f(theta), sigma^2)``; a drop contributes the sum
+over its measured quantities. A case the model cannot run (a law's limit, a refused input, an
+energy gain) has a likelihood of zero (log -inf); it is counted by reason in ``failures``, never
+raised. One call evaluates every walker on every drop in one batch (``models.predict``).
+"""
+
+from __future__ import annotations
+
+import math
+from collections import Counter
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from impactlab.calibrate.measurements import Measurements
+from impactlab.calibrate.models import CandidateModel, Prediction, predict, status_message
+from impactlab.calibrate.priors import Parameter
+from impactlab.sweep.engine import ENGINE, Evaluator
+
+__all__ = ["LogPosterior", "pointwise_loglik"]
+
+_LOG_2PI = math.log(2.0 * math.pi)
+
+
+def pointwise_loglik(pred: Prediction, meas: Measurements) -> np.ndarray:
+    """(W, D) log likelihood of each drop's measured values; -inf where the case failed."""
+    w = pred.status.shape[0]
+    ll = np.zeros((w, meas.n_drops))
+    for q in meas.quantities:
+        y, s = meas.observed[q], meas.sigma[q]
+        have = np.isfinite(y)
+        if not have.any():
+            continue
+        f = pred.values[q][:, have]
+        r = (f - y[have]) / s[have]
+        term = -0.5 * (r * r + _LOG_2PI) - np.log(s[have])
+        ll[:, have] += np.where(np.isfinite(term), term, -np.inf)
+    ll[pred.status != 0] = -np.inf
+    return ll
+
+
+@dataclass
+class LogPosterior:
+    """``log p(theta | data)`` up to a constant, for emcee's vectorised ensemble: called with
+    (W, P) parameter vectors, it returns one (log posterior, pointwise log likelihood (D,))
+    pair per walker. ``failures`` counts the failed cases by reason (status message);
+    ``evaluations`` the model evaluations (cases run)."""
+
+    model: CandidateModel
+    meas: Measurements
+    params: Sequence[Parameter]
+    evaluator: Evaluator = ENGINE
+    engine: Mapping[str, Any] = field(default_factory=dict)
+    failures: Counter[str] = field(default_factory=Counter)
+    evaluations: int = 0
+
+    def log_prior(self, theta: np.ndarray) -> np.ndarray:
+        """(W,) log prior density."""
+        lp = np.zeros(theta.shape[0])
+        for j, p in enumerate(self.params):
+            lp += p.logpdf(theta[:, j])
+        return lp
+
+    def evaluate(self, theta: np.ndarray) -> tuple[np.ndarray, np.ndarray, Prediction | None]:
+        """(log posterior (W,), pointwise log likelihood (W, D), the prediction of the walkers
+        inside the prior's support or None)."""
+        theta = np.atleast_2d(np.asarray(theta, dtype=np.float64))
+        lp = self.log_prior(theta)
+        ll = np.full((theta.shape[0], self.meas.n_drops), -np.inf)
+        inside = np.isfinite(lp)
+        pred = None
+        if inside.any():
+            pred = predict(
+                self.model,
+                self.meas,
+                self.params,
+                theta[inside],
+                evaluator=self.evaluator,
+                engine=self.engine,
+            )
+            self.evaluations += int(pred.status.size)
+            codes, counts = np.unique(pred.status[pred.status != 0], return_counts=True)
+            for c, k in zip(codes.tolist(), counts.tolist(), strict=True):
+                self.failures[status_message(c)] += k
+            ll[inside] = pointwise_loglik(pred, self.meas)
+        total = lp + ll.sum(axis=1)
+        total[~np.isfinite(total)] = -np.inf
+        return total, ll, pred
+
+    def __call__(self, theta: np.ndarray) -> list[tuple[float, np.ndarray]]:
+        total, ll, _ = self.evaluate(theta)
+        return [(float(t), row) for t, row in zip(total, ll, strict=True)]
+
+
+def initial_walkers(post: LogPosterior, n: int, rng: np.random.Generator) -> np.ndarray:
+    """``n`` starting points drawn from the prior where the likelihood is not zero (up to 20
+    rounds of 4n draws, one batch each). ValueError when the prior holds no such point: the
+    model cannot produce the measurements anywhere in the prior (the reasons are named)."""
+    found: list[np.ndarray] = []
+    for _ in range(20):
+        theta = np.column_stack([p.sample(4 * n, rng) for p in post.params])
+        total, _ll, _ = post.evaluate(theta)
+        found += list(theta[np.isfinite(total)])
+        if len(found) >= n:
+            return np.array(found[:n])
+    if len(found) >= max(2 * len(post.params), 2):  # enough to start: repeat with jitter
+        base = np.array(found)
+        pick = base[rng.integers(0, len(base), n)]
+        return pick * (1.0 + 1e-6 * rng.standard_normal(pick.shape))
+    why = ", ".join(f"{k} ({v})" for k, v in post.failures.most_common(3)) or (
+        "every run case is possible but no measured value has a finite likelihood"
+    )
+    raise ValueError(
+        f"model {post.model.name!r}: no parameter value drawn from the prior "
+        f"({'; '.join(p.describe() for p in post.params)}) gives a likelihood above zero "
+        f"for the measurements; failed cases: {why}"
+    )

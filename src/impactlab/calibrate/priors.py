@@ -1,0 +1,191 @@
+"""Free parameters and their priors.
+
+A free parameter is a numeric input of the sweep's catalogue (``flat_yield_strength``, ``mu``,
+``flat_meyer_index``, ``damping``, ``body_E``, ...; not the per-drop kinematics), the same for
+every drop. Its prior is one of
+
+- ``uniform(low, high)``, ``loguniform(low, high)`` (``low > 0``),
+- ``normal(mean, sd)`` or ``normal(mean, sd, low, high)`` (truncated to [low, high] and to the
+  parameter's possible range),
+
+with values in the input's SI unit or as quantity strings (``"uniform(100 MPa, 1 GPa)"``).
+scipy.stats gives the densities and draws.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from functools import cached_property
+from typing import Any
+
+import numpy as np
+from scipy import stats
+
+from impactlab.calibrate.quantities import KINEMATICS, NUMERIC_INPUTS
+from impactlab.sweep.inputs import INPUTS
+from impactlab.units import to_si
+
+__all__ = ["PRIOR_KINDS", "Parameter", "parse_parameter"]
+
+PRIOR_KINDS = ("uniform", "loguniform", "normal")
+
+#: The possible range of each kind of input (open ends are excluded where marked below).
+_POSITIVE = (0.0, math.inf)
+_RANGES: dict[str, tuple[float, float]] = {
+    "mu": (0.0, math.inf),
+    "damping": (0.0, 1.0),
+    "spin": (-math.inf, math.inf),
+    "body_nu": (-1.0, 0.5),
+    "flat_nu": (-1.0, 0.5),
+}
+
+
+def possible_range(name: str) -> tuple[float, float]:
+    """[low, high] of the values ``name`` can take (mu >= 0, 0 <= zeta < 1, -1 < nu < 0.5, the
+    rest > 0)."""
+    return _RANGES.get(name, _POSITIVE)
+
+
+@dataclass(frozen=True)
+class Parameter:
+    """One free parameter: its input ``name``, prior ``kind`` and the prior's numbers (SI):
+    ``low``/``high`` (uniform, loguniform; the truncation of normal) and ``mean``/``sd``
+    (normal)."""
+
+    name: str
+    kind: str = "uniform"
+    low: float = -math.inf
+    high: float = math.inf
+    mean: float = math.nan
+    sd: float = math.nan
+
+    def __post_init__(self) -> None:
+        allowed = tuple(n for n in NUMERIC_INPUTS if n not in KINEMATICS)
+        if self.name not in allowed:
+            raise ValueError(
+                f"unknown free parameter {self.name!r}; a parameter is one of {', '.join(allowed)}"
+            )
+        if self.kind not in PRIOR_KINDS:
+            raise ValueError(
+                f"prior of {self.name}: unknown kind {self.kind!r}; known: {', '.join(PRIOR_KINDS)}"
+            )
+        lo, hi = possible_range(self.name)
+        if self.kind == "normal":
+            if not (math.isfinite(self.mean) and math.isfinite(self.sd) and self.sd > 0):
+                raise ValueError(
+                    f"prior of {self.name}: normal needs a finite mean and sd > 0, "
+                    f"got mean={self.mean!r}, sd={self.sd!r}"
+                )
+            object.__setattr__(self, "low", max(self.low, lo))
+            object.__setattr__(self, "high", min(self.high, hi))
+        elif not (math.isfinite(self.low) and math.isfinite(self.high)):
+            raise ValueError(f"prior of {self.name}: {self.kind} needs finite low and high")
+        if not self.low < self.high:
+            raise ValueError(
+                f"prior of {self.name} excludes every value: [{self.low:g}, {self.high:g}] is "
+                "empty (low must be < high)"
+            )
+        if self.low < lo or self.high > hi or (self.high <= lo) or (self.low >= hi):
+            raise ValueError(
+                f"prior of {self.name}: [{self.low:g}, {self.high:g}] {self.unit} reaches outside "
+                f"the possible values [{lo:g}, {hi:g}]"
+            )
+        if self.kind == "loguniform" and self.low <= 0:
+            raise ValueError(f"prior of {self.name}: loguniform needs low > 0, got {self.low:g}")
+        if (
+            self.kind == "normal"
+            and stats.norm(self.mean, self.sd).cdf(self.high)
+            - stats.norm(self.mean, self.sd).cdf(self.low)
+            < 1e-12
+        ):
+            raise ValueError(
+                f"prior of {self.name} excludes every value: normal({self.mean:g}, {self.sd:g}) "
+                f"has no mass in [{self.low:g}, {self.high:g}]"
+            )
+
+    @property
+    def unit(self) -> str:
+        """The parameter's SI unit."""
+        return INPUTS[self.name].unit
+
+    @cached_property
+    def _frozen(self) -> Any:
+        """The scipy.stats distribution (frozen once: freezing costs milliseconds)."""
+        return self._dist()
+
+    def _dist(self) -> Any:
+        if self.kind == "uniform":
+            return stats.uniform(self.low, self.high - self.low)
+        if self.kind == "loguniform":
+            return stats.loguniform(self.low, self.high)
+        a, b = (self.low - self.mean) / self.sd, (self.high - self.mean) / self.sd
+        if self.low == -math.inf and self.high == math.inf:
+            return stats.norm(self.mean, self.sd)
+        return stats.truncnorm(a, b, loc=self.mean, scale=self.sd)
+
+    def logpdf(self, x: np.ndarray) -> np.ndarray:
+        """The log prior density at ``x`` (-inf outside the support)."""
+        x = np.asarray(x, dtype=np.float64)
+        with np.errstate(divide="ignore"):
+            out = np.asarray(self._frozen.logpdf(x), dtype=np.float64)
+        return np.where((x >= self.low) & (x <= self.high), out, -np.inf)
+
+    def sample(self, n: int, rng: np.random.Generator) -> np.ndarray:
+        """``n`` draws from the prior."""
+        x = np.asarray(self._frozen.rvs(size=n, random_state=rng), dtype=np.float64)
+        return np.clip(x, self.low, self.high)
+
+    def quantile(self, q: Any) -> np.ndarray:
+        """The prior's quantiles ``q`` in [0, 1]."""
+        x = np.asarray(self._frozen.ppf(q), dtype=np.float64)
+        return np.clip(x, self.low, self.high)  # scipy's ppf may round past a bound
+
+    def describe(self) -> str:
+        """``"uniform(1e+08, 1e+09) Pa"`` and the like."""
+        if self.kind == "normal":
+            return (
+                f"normal({self.mean:g}, {self.sd:g}) in [{self.low:g}, {self.high:g}] {self.unit}"
+            )
+        return f"{self.kind}({self.low:g}, {self.high:g}) {self.unit}"
+
+
+_SPEC = re.compile(r"^\s*([a-z]+)\s*\((.*)\)\s*$")
+
+
+def parse_parameter(name: str, spec: Any) -> Parameter:
+    """A Parameter from a prior text, ``"uniform(100 MPa, 1 GPa)"``, or a mapping
+    ``{"prior": "normal", "mean": ..., "sd": ..., "low": ..., "high": ...}``; bare numbers are
+    in the input's SI unit."""
+    unit = INPUTS[name].unit if name in INPUTS else "1"
+    if isinstance(spec, dict):
+        kind = str(spec.get("prior", "uniform"))
+        nums = {
+            k: to_si(v, unit, name=f"{name}.{k}")
+            for k, v in spec.items()
+            if k in ("low", "high", "mean", "sd")
+        }
+        extra = set(spec) - {"prior", "low", "high", "mean", "sd"}
+        if extra:
+            raise ValueError(f"prior of {name}: unknown key(s) {sorted(extra)}")
+        return Parameter(name, kind, **nums)
+    m = _SPEC.match(str(spec))
+    if not m:
+        raise ValueError(
+            f"prior of {name}: cannot read {spec!r}; expected e.g. 'uniform(low, high)', "
+            "'loguniform(low, high)' or 'normal(mean, sd)'"
+        )
+    kind, args = m.group(1), [a.strip() for a in m.group(2).split(",") if a.strip()]
+    if kind not in PRIOR_KINDS:
+        raise ValueError(f"prior of {name}: unknown kind {kind!r}; known: {', '.join(PRIOR_KINDS)}")
+    values = [to_si(a, unit, name=name) for a in args]
+    if kind in ("uniform", "loguniform") and len(values) == 2:
+        return Parameter(name, kind, low=values[0], high=values[1])
+    if kind == "normal" and len(values) in (2, 4):
+        bounds = dict(zip(("low", "high"), values[2:], strict=False))
+        return Parameter(name, kind, mean=values[0], sd=values[1], **bounds)
+    raise ValueError(
+        f"prior of {name}: {spec!r} has the wrong number of values; uniform/loguniform take "
+        "(low, high), normal takes (mean, sd) or (mean, sd, low, high)"
+    )

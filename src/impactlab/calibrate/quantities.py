@@ -1,0 +1,100 @@
+"""What a measurements file may hold: the drop's inputs (the sweep's input catalogue) and the
+measured quantities (the engine's outputs, plus the tangential restitution ``e_t``), with their
+SI units and plausible ranges.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from impactlab.schema import FIELDS
+from impactlab.sweep.inputs import CATEGORY_INPUTS, INPUTS, KINEMATIC_INPUTS
+
+__all__ = [
+    "DROP_CATEGORIES",
+    "MEASURABLE",
+    "NUMERIC_INPUTS",
+    "OUTPUT_ALIASES",
+    "Measurable",
+    "canonical_output",
+]
+
+
+@dataclass(frozen=True)
+class Measurable:
+    """A measurable quantity: ``name``, SI ``unit``, ``description``, the engine ``outputs`` it
+    is computed from and its physically possible range [``low``, ``high``] (None: open)."""
+
+    name: str
+    unit: str
+    description: str
+    outputs: tuple[str, ...]
+    low: float | None = None
+    high: float | None = None
+
+
+def _engine(name: str, low: float | None = None, high: float | None = None) -> Measurable:
+    f = FIELDS[name]
+    return Measurable(name, f.unit, f.description, (name,), low, high)
+
+
+#: Every quantity a measurements file may give, by name.
+MEASURABLE: dict[str, Measurable] = {
+    m.name: m
+    for m in (
+        _engine("e", 0.0, 1.0),
+        _engine("e_energy", 0.0, 1.0),
+        _engine("vx_out"),
+        _engine("vy_out"),
+        _engine("spin_out"),
+        _engine("delta_max", 0.0),
+        _engine("delta_p", 0.0),
+        _engine("sliding_length"),
+        _engine("contact_travel"),
+        _engine("duration", 0.0),
+        _engine("mean_force", 0.0),
+        _engine("max_force", 0.0),
+        _engine("normal_impulse", 0.0),
+        _engine("tangential_impulse"),
+        _engine("energy_dissipated", 0.0),
+        _engine("angle_out"),
+        Measurable(
+            "sliding_distance",
+            "m",
+            "|sliding_length|: the length of the slip, a magnitude (a dent's measured L_s)",
+            ("sliding_length",),
+            0.0,
+        ),
+        Measurable(
+            "e_t",
+            "1",
+            "tangential restitution of the centre of mass, v_x,out / v_x,in (needs vx != 0)",
+            ("vx_out",),
+            -1.0,
+            1.0,
+        ),
+    )
+}
+
+#: The paper's symbols accepted as names of measured quantities.
+OUTPUT_ALIASES: dict[str, str] = {
+    "L_s": "sliding_length",
+    "Ls": "sliding_length",
+    "T": "duration",
+    "F": "mean_force",
+    "delta_r": "delta_p",
+}
+
+#: Category inputs a drop may set (the contact law and the friction model are the candidate
+#: models' choices, never the file's).
+DROP_CATEGORIES: tuple[str, ...] = tuple(c for c in CATEGORY_INPUTS if c not in ("law", "friction"))
+#: Numeric inputs a drop may set (SI; unset: the preset's value or the input's default).
+NUMERIC_INPUTS: tuple[str, ...] = tuple(n for n, s in INPUTS.items() if s.kind == "float")
+#: Inputs that describe the drop's kinematics (never free parameters, except mu).
+KINEMATICS: tuple[str, ...] = tuple(k for k in KINEMATIC_INPUTS if k != "mu")
+
+
+def canonical_output(name: str) -> str | None:
+    """The measurable called ``name`` (aliases resolved), or None when there is none."""
+    name = OUTPUT_ALIASES.get(name, name)
+    return name if name in MEASURABLE else None

@@ -1,0 +1,143 @@
+"""The self-contained HTML report of a calibration (figures embedded as PNG), and ``save``:
+results.json, the figures and report.html in one folder."""
+
+from __future__ import annotations
+
+import base64
+import html
+import io
+import json
+from pathlib import Path
+from typing import Any
+
+from impactlab._display import display_unit, format_number
+from impactlab.calibrate.api import Calibration
+from impactlab.calibrate.jsonout import calibration_json
+from impactlab.calibrate.plots import corner_figure, ppc_figure
+from impactlab.calibrate.result import ModelPosterior
+
+__all__ = ["html_report", "save"]
+
+_STYLE = (
+    "body{font-family:sans-serif;max-width:60em;margin:2em auto;line-height:1.4}"
+    "table{border-collapse:collapse;margin:0.5em 0}td,th{border:1px solid #ccc;"
+    "padding:0.2em 0.6em;text-align:right}th{background:#f3f3f3}td:first-child{text-align:left}"
+    ".warn{color:#a40}"
+)
+
+
+def _png(fig: Any) -> str:
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=90, bbox_inches="tight")
+    from impactlab._mpl import pyplot
+
+    pyplot().close(fig)
+    return base64.b64encode(buf.getvalue()).decode()
+
+
+def _table(header: list[str], rows: list[list[Any]]) -> str:
+    head = "".join(f"<th>{html.escape(h)}</th>" for h in header)
+    body = "".join(
+        "<tr>" + "".join(f"<td>{html.escape(str(c))}</td>" for c in r) + "</tr>" for r in rows
+    )
+    return f"<table><tr>{head}</tr>{body}</table>"
+
+
+def _value(name: str, unit: str, x: float) -> str:
+    d = display_unit(name, unit)
+    return format_number(x * d.scale, 4)
+
+
+def _model_section(post: ModelPosterior) -> str:
+    rows = []
+    for p in post.params:
+        s, d = post.summary[p.name], display_unit(p.name, p.unit)
+        rows.append(
+            [
+                p.name,
+                d.unit,
+                _value(p.name, p.unit, s["median"]),
+                f"[{_value(p.name, p.unit, s['q05'])}, {_value(p.name, p.unit, s['q95'])}]",
+                _value(p.name, p.unit, post.best[p.name]),
+                f"{s['rhat']:.3f}",
+                f"{s['ess_bulk']:.0f}",
+                f"{s['tau']:.1f}",
+                p.describe(),
+            ]
+        )
+    params = _table(
+        [
+            "parameter",
+            "unit",
+            "median",
+            "90 % interval",
+            "best fit",
+            "R-hat",
+            "ESS",
+            "tau",
+            "prior",
+        ],
+        rows,
+    )
+    fails = ", ".join(f"{k}: {v}" for k, v in post.failures.items()) or "none"
+    notes = "".join(f"<li class='warn'>{html.escape(w)}</li>" for w in post.warnings)
+    return (
+        f"<h3>{html.escape(post.model)}</h3>{params}"
+        f"<p>{post.evaluations} model evaluations; acceptance {post.acceptance:.2f}; "
+        f"{post.steps} steps ({post.burn} discarded); failed cases (likelihood zero): "
+        f"{html.escape(fails)}</p>"
+        + (f"<ul>{notes}</ul>" if notes else "")
+        + f"<img alt='corner plot' src='data:image/png;base64,{_png(corner_figure(post))}'>"
+    )
+
+
+def html_report(cal: Calibration, title: str = "impactlab calibration") -> str:
+    """The report as one HTML document (figures embedded)."""
+    m = cal.measurements
+    rank = _table(
+        ["rank", "model", "elpd_loo", "se", "elpd_diff", "dse", "p_loo", "weight", "Pareto k"],
+        [
+            [
+                r["rank"] + 1,
+                r["model"],
+                f"{r['elpd_loo']:.2f}",
+                f"{r['se']:.2f}",
+                f"{r['elpd_diff']:.2f}",
+                f"{r['dse']:.2f}",
+                f"{r['p_loo']:.2f}",
+                f"{r['weight']:.2f}",
+                "> 0.7" if r["warning"] else "ok",
+            ]
+            for r in cal.ranking
+        ],
+    )
+    settings = _table(["setting", "value"], [[k, str(v)] for k, v in cal.settings.items()])
+    notes = "".join(f"<li class='warn'>{html.escape(w)}</li>" for w in cal.warnings)
+    ppc = _png(ppc_figure(cal.posteriors))
+    return (
+        f"<!DOCTYPE html><html><head><meta charset='utf-8'><title>{html.escape(title)}</title>"
+        f"<style>{_STYLE}</style></head><body><h1>{html.escape(title)}</h1>"
+        f"<p>{m.n_drops} drops ({html.escape(str(m.source or 'in memory'))}), {m.n_values} "
+        f"measured values: {html.escape(', '.join(m.quantities))}.</p>"
+        f"<h2>Ranking</h2><p>PSIS-LOO: expected log predictive density of each drop left out "
+        "(higher is better); a difference matters when it exceeds about twice its standard "
+        f"error dse.</p>{rank}"
+        + (f"<ul>{notes}</ul>" if notes else "")
+        + f"<h2>Posterior predictive check</h2><img alt='ppc' src='data:image/png;base64,{ppc}'>"
+        + "<h2>Models</h2>"
+        + "".join(_model_section(p) for p in cal.posteriors.values())
+        + f"<h2>Settings</h2>{settings}</body></html>"
+    )
+
+
+def save(cal: Calibration, out_dir: str | Path, *, report: bool = True) -> dict[str, Path]:
+    """Write results.json (the command line's JSON, docs/json-schema.md) and report.html into
+    ``out_dir``; returns name -> path."""
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    files = {"results": out / "results.json"}
+    files["results"].write_text(json.dumps(calibration_json(cal), indent=2))
+    if report:
+        files["report"] = out / "report.html"
+        files["report"].write_text(html_report(cal))
+    return files

@@ -1,0 +1,240 @@
+"""One model's calibration: posterior, best fit, diagnostics, leave-one-drop-out score and
+posterior predictive checks (ArviZ for R-hat, ESS and PSIS-LOO)."""
+
+from __future__ import annotations
+
+import logging
+import warnings
+from dataclasses import dataclass, field
+from typing import Any
+
+import emcee
+import numpy as np
+
+from impactlab.calibrate._arviz import az, quiet
+from impactlab.calibrate.posterior import LogPosterior
+from impactlab.calibrate.priors import Parameter
+from impactlab.calibrate.quantities import MEASURABLE
+
+__all__ = ["ModelPosterior", "summarise"]
+
+#: Central credible interval reported (and checked by the coverage test): 90 %.
+INTERVAL = (0.05, 0.95)
+
+
+@dataclass
+class ModelPosterior:
+    """The calibration of one candidate model (SI units).
+
+    samples : (N, P) posterior draws after burn-in (walkers x steps, flattened);
+    chains : (walkers, draws, P) the same draws by walker (for the diagnostics);
+    log_lik : (walkers, draws, D) pointwise log likelihood of each drop;
+    summary : parameter -> {mean, sd, median, q05, q95, rhat, ess_bulk, tau};
+    best : parameter -> value at the largest posterior density found;
+    loo : {elpd, se, p_loo, pareto_k_max, n_bad_k} (PSIS-LOO over drops) or {} when it failed;
+    ppc : one dict per measured value: drop, quantity, observed, sigma, best, median, q05, q95
+        (the model's prediction) and pred_q05/q95 (with the measurement noise), z_best;
+    failures : failed cases by reason; evaluations : cases run; acceptance : mean acceptance
+    fraction; warnings : what the diagnostics found (short R-hat, ESS, Pareto k, misfits).
+    """
+
+    model: str
+    params: tuple[Parameter, ...]
+    samples: np.ndarray
+    chains: np.ndarray
+    log_lik: np.ndarray
+    summary: dict[str, dict[str, float]]
+    best: dict[str, float]
+    best_log_prob: float
+    loo: dict[str, float]
+    ppc: list[dict[str, Any]]
+    failures: dict[str, int]
+    evaluations: int
+    acceptance: float
+    steps: int
+    burn: int
+    warnings: list[str] = field(default_factory=list)
+
+    @property
+    def names(self) -> tuple[str, ...]:
+        """The free parameters' names."""
+        return tuple(p.name for p in self.params)
+
+    def interval(self, name: str) -> tuple[float, float]:
+        """The 90 % central credible interval of ``name``."""
+        s = self.summary[name]
+        return s["q05"], s["q95"]
+
+    def idata(self) -> Any:
+        """The posterior and pointwise log likelihood as ArviZ InferenceData (walkers as
+        chains)."""
+        post = {n: self.chains[:, :, j] for j, n in enumerate(self.names)}
+        with quiet():
+            return az.from_dict(posterior=post, log_likelihood={"drops": self.log_lik})
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready summary (no draws)."""
+        return {
+            "model": self.model,
+            "parameters": {
+                p.name: {"prior": p.describe(), "unit": p.unit, **self.summary[p.name]}
+                for p in self.params
+            },
+            "best": {"values": self.best, "log_posterior": self.best_log_prob},
+            "loo": self.loo,
+            "ppc": self.ppc,
+            "failures": self.failures,
+            "evaluations": self.evaluations,
+            "acceptance": self.acceptance,
+            "steps": self.steps,
+            "burn": self.burn,
+            "warnings": self.warnings,
+        }
+
+
+def _loo(idata: Any) -> tuple[dict[str, float], list[str]]:
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            r = az.loo(idata, pointwise=True)
+        except (ValueError, TypeError, IndexError) as exc:
+            return {}, [f"PSIS-LOO failed: {exc}"]
+    k = np.asarray(r.pareto_k)
+    out = {
+        "elpd": float(r.elpd_loo),
+        "se": float(r.se),
+        "p_loo": float(r.p_loo),
+        "pareto_k_max": float(np.max(k)),
+        "n_bad_k": int(np.sum(k > 0.7)),
+    }
+    notes = [f"PSIS-LOO: {out['n_bad_k']} drop(s) with Pareto k > 0.7"] if out["n_bad_k"] else []
+    notes += [str(w.message).splitlines()[0] for w in caught if "Pareto" not in str(w.message)]
+    return out, notes
+
+
+def _ppc(
+    post: LogPosterior, samples: np.ndarray, best: np.ndarray, rng: np.random.Generator, n: int
+) -> list[dict[str, Any]]:
+    """Posterior predictive checks: ``n`` posterior draws (and the best fit) re-run in one
+    batch; per measured value the prediction's median and 90 % band, the band with noise."""
+    pick = samples[rng.choice(len(samples), size=min(n, len(samples)), replace=False)]
+    _, _, pred = post.evaluate(np.vstack([best[None, :], pick]))
+    rows: list[dict[str, Any]] = []
+    if pred is None:
+        return rows
+    meas = post.meas
+    for q in meas.quantities:
+        vals = pred.values[q]
+        for d in np.flatnonzero(np.isfinite(meas.observed[q])):
+            y, s = float(meas.observed[q][d]), float(meas.sigma[q][d])
+            draws = vals[1:, d]
+            ok = draws[np.isfinite(draws)]
+            noisy = ok + s * rng.standard_normal(ok.size)
+            qs = np.quantile(ok, [0.5, *INTERVAL]) if ok.size else [np.nan] * 3
+            qn = np.quantile(noisy, INTERVAL) if ok.size else [np.nan] * 2
+            rows.append(
+                {
+                    "drop": meas.labels[d],
+                    "quantity": q,
+                    "unit": MEASURABLE[q].unit,
+                    "observed": y,
+                    "sigma": s,
+                    "best": float(vals[0, d]),
+                    "median": float(qs[0]),
+                    "q05": float(qs[1]),
+                    "q95": float(qs[2]),
+                    "pred_q05": float(qn[0]),
+                    "pred_q95": float(qn[1]),
+                    "z_best": float((vals[0, d] - y) / s),
+                }
+            )
+    return rows
+
+
+def _autocorr_time(chain: np.ndarray) -> np.ndarray:
+    """emcee's integrated autocorrelation time per parameter [steps] (its note that the chain
+    is short is replaced by the calibration's own warning)."""
+    logger = logging.getLogger("emcee.autocorr")
+    level = logger.level
+    logger.setLevel(logging.ERROR)
+    try:
+        with np.errstate(invalid="ignore", divide="ignore"):
+            return np.asarray(emcee.autocorr.integrated_time(chain, quiet=True))
+    finally:
+        logger.setLevel(level)
+
+
+def summarise(
+    post: LogPosterior,
+    sampler: emcee.EnsembleSampler,
+    *,
+    steps: int,
+    burn: int,
+    seed: int,
+    n_ppc: int = 200,
+) -> ModelPosterior:
+    """The ModelPosterior of a finished chain (draws after ``burn`` steps)."""
+    chain = sampler.get_chain(discard=burn)  # (S, W, P)
+    blobs = np.asarray(sampler.get_blobs(discard=burn), dtype=np.float64)
+    logp = sampler.get_log_prob()
+    blobs = blobs.reshape(chain.shape[0], chain.shape[1], -1)
+    names = [p.name for p in post.params]
+    chains = np.ascontiguousarray(chain.transpose(1, 0, 2))
+    log_lik = np.ascontiguousarray(blobs.transpose(1, 0, 2))
+    samples = chain.reshape(-1, chain.shape[2])
+    with quiet():
+        post_idata = az.from_dict(posterior={n: chains[:, :, j] for j, n in enumerate(names)})
+        rhat = az.rhat(post_idata)
+        ess = az.ess(post_idata, method="bulk")
+    tau = _autocorr_time(chain)
+    summary: dict[str, dict[str, float]] = {}
+    for j, n in enumerate(names):
+        x = samples[:, j]
+        q05, q50, q95 = np.quantile(x, [INTERVAL[0], 0.5, INTERVAL[1]])
+        summary[n] = {
+            "mean": float(x.mean()),
+            "sd": float(x.std(ddof=1)),
+            "median": float(q50),
+            "q05": float(q05),
+            "q95": float(q95),
+            "rhat": float(rhat[n]),
+            "ess_bulk": float(ess[n]),
+            "tau": float(tau[j]),
+        }
+    i_best = np.unravel_index(np.argmax(logp), logp.shape)
+    best = sampler.get_chain()[i_best]
+    with quiet():
+        idata = az.from_dict(log_likelihood={"drops": log_lik})
+        idata.add_groups(posterior=post_idata.posterior)
+    loo, notes = _loo(idata)
+    for n, s in summary.items():
+        if s["rhat"] > 1.05:
+            notes.append(f"{n}: R-hat {s['rhat']:.3f} > 1.05 (run more steps)")
+        if s["tau"] * 50 > steps:
+            notes.append(f"{n}: chain shorter than 50 autocorrelation times ({s['tau']:.0f})")
+    rng = np.random.default_rng(seed + 1)
+    ppc = _ppc(post, samples, best, rng, n_ppc)
+    for r in ppc:
+        if abs(r["z_best"]) > 5:
+            notes.append(
+                f"{r['drop']} {r['quantity']}: best fit {r['best']:.4g} is "
+                f"{r['z_best']:+.1f} sigma from the measured {r['observed']:.4g}"
+            )
+    return ModelPosterior(
+        model=post.model.name,
+        params=tuple(post.params),
+        samples=samples,
+        chains=chains,
+        log_lik=log_lik,
+        summary=summary,
+        best={n: float(best[j]) for j, n in enumerate(names)},
+        best_log_prob=float(logp[i_best]),
+        loo=loo,
+        ppc=ppc,
+        failures=dict(post.failures),
+        evaluations=post.evaluations,
+        acceptance=float(np.mean(sampler.acceptance_fraction)),
+        steps=steps,
+        burn=burn,
+        warnings=notes,
+    )

@@ -1,0 +1,186 @@
+"""``impactlab calibrate``: which model and which parameters explain measured drops.
+
+impactlab calibrate DROPS.csv|DROPS.toml --param "mu=uniform(0, 0.6)" [--param ...]
+                    [--model ghaednia/coulomb ...] [--config CAL.toml] [--walkers N]
+                    [--steps N] [--burn N] [--seed N] [--out DIR] [--restart] [--json] [--quiet]
+                    [--scheduler tcp://host:port]
+
+With ``--out DIR`` the chains are kept in DIR/state (an interrupted run continues where it
+stopped when run again with the same inputs) and results.json and report.html are written there.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Annotated, Any
+
+import typer
+
+from impactlab._display import display_unit, format_number
+from impactlab._json import jsonable
+from impactlab.cli._common import UserError, console
+
+_PARAM_HELP = (
+    'A free parameter and its prior, "name=uniform(low, high)", "name=loguniform(low, high)" or '
+    '"name=normal(mean, sd)"; values with units ("flat_yield_strength=uniform(100 MPa, 1 GPa)"). '
+    "Repeat for several."
+)
+_MODEL_HELP = (
+    'A candidate model "law/friction[/flexible_rod]" (default ghaednia/coulomb). Repeat for '
+    "several; they are ranked by PSIS-LOO."
+)
+
+
+def _parameters(specs: list[str]) -> dict[str, str]:
+    out: dict[str, str] = {}
+    for s in specs:
+        name, sep, prior = s.partition("=")
+        if not sep or not name.strip():
+            raise UserError(f"--param {s!r}: expected name=prior, e.g. 'mu=uniform(0, 0.6)'")
+        out[name.strip()] = prior.strip()
+    return out
+
+
+def _progress(quiet: bool) -> tuple[Any, Any]:
+    """(progress callback, the rich Progress to stop) on stderr, or (None, None)."""
+    if quiet:
+        return None, None
+    from rich.console import Console
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TimeRemainingColumn
+
+    bar = Progress(
+        "[progress.description]{task.description}",
+        BarColumn(),
+        MofNCompleteColumn(),
+        TimeRemainingColumn(),
+        console=Console(stderr=True),
+        transient=True,
+    )
+    tasks: dict[str, Any] = {}
+    bar.start()
+
+    def report(model: str, done: int, total: int) -> None:
+        if model not in tasks:
+            tasks[model] = bar.add_task(model, total=total)
+        bar.update(tasks[model], completed=done)
+
+    return report, bar
+
+
+def _print(cal: Any) -> None:
+    from rich.table import Table
+    from rich.text import Text
+
+    t = Table(title=Text("models ranked by PSIS-LOO (leave one drop out)"), header_style="bold")
+    for col in ("rank", "model", "elpd_loo", "se", "elpd_diff", "dse", "weight"):
+        t.add_column(col, justify="left" if col == "model" else "right")
+    for r in cal.ranking:
+        t.add_row(
+            str(r["rank"] + 1), Text(r["model"]), f"{r['elpd_loo']:.2f}", f"{r['se']:.2f}",
+            f"{r['elpd_diff']:.2f}", f"{r['dse']:.2f}", f"{r['weight']:.2f}",
+        )  # fmt: skip
+    console.print(t)
+    for name, post in cal.posteriors.items():
+        p = Table(title=Text(name), header_style="bold")
+        for col in ("parameter", "median", "90 % interval", "best", "unit", "R-hat", "ESS"):
+            p.add_column(col, justify="left" if col in ("parameter", "unit") else "right")
+        for par in post.params:
+            s, d = post.summary[par.name], display_unit(par.name, par.unit)
+
+            def f(x: float, d: Any = d) -> str:
+                return format_number(x * d.scale, 4)
+
+            p.add_row(
+                Text(par.name), f(s["median"]), f"[{f(s['q05'])}, {f(s['q95'])}]",
+                f(post.best[par.name]), Text(d.unit), f"{s['rhat']:.3f}", f"{s['ess_bulk']:.0f}",
+            )  # fmt: skip
+        console.print(p)
+        fails = sum(post.failures.values())
+        console.print(
+            Text(
+                f"{post.evaluations} evaluations in this run, acceptance {post.acceptance:.2f}, "
+                f"{fails} failed cases (likelihood zero)"
+            )
+        )
+        for w in post.warnings:
+            console.print(Text(f"  note: {w}"))
+
+
+def calibrate_cmd(
+    measurements: Annotated[
+        Path | None, typer.Argument(help="Measurements file (CSV or TOML, docs/calibrate.md).")
+    ] = None,
+    param: Annotated[list[str] | None, typer.Option("--param", "-p", help=_PARAM_HELP)] = None,
+    model: Annotated[list[str] | None, typer.Option("--model", "-m", help=_MODEL_HELP)] = None,
+    config: Annotated[
+        Path | None, typer.Option(help="Calibration file (TOML): measurements, parameters, ...")
+    ] = None,
+    walkers: Annotated[int | None, typer.Option(help="Ensemble size (default 16 or 4 P).")] = None,
+    steps: Annotated[int | None, typer.Option(help="Steps per walker (default 1000).")] = None,
+    burn: Annotated[int | None, typer.Option(help="Steps discarded (default steps/2).")] = None,
+    seed: Annotated[int | None, typer.Option(help="Random seed (default 0).")] = None,
+    out: Annotated[
+        Path | None, typer.Option(help="Folder for the saved chains, results.json, report.html.")
+    ] = None,
+    restart: Annotated[bool, typer.Option(help="Discard saved chains in --out.")] = False,
+    scheduler: Annotated[
+        str | None, typer.Option(help="Dask scheduler address: one task per model there.")
+    ] = None,
+    as_json: Annotated[bool, typer.Option("--json", help="Print the result as JSON.")] = False,
+    quiet: Annotated[bool, typer.Option(help="No progress display.")] = False,
+) -> None:
+    """Calibrate free parameters of candidate models on measured drops (emcee on the compiled
+    batch engine) and rank the models (PSIS-LOO)."""
+    from impactlab.calibrate import calibrate
+    from impactlab.calibrate.config import load_config
+    from impactlab.calibrate.report import save
+
+    kw: dict[str, Any] = load_config(config) if config is not None else {}
+    if measurements is not None:
+        kw["measurements"] = measurements
+    if "measurements" not in kw:
+        raise UserError("no measurements: give the file as argument or in --config")
+    if param:
+        given = [_as_param(k, v) for k, v in _parameters(param).items()]
+        kw["parameters"] = [*kw.get("parameters", []), *given]
+    if not kw.get("parameters"):
+        raise UserError('no free parameter: give --param "name=prior" or [parameters] in --config')
+    if model:
+        kw["models"] = model
+    sampler = {"walkers": walkers, "steps": steps, "burn": burn, "seed": seed}
+    kw.update({k: v for k, v in sampler.items() if v is not None})
+    if scheduler is not None:
+        kw["scheduler"] = scheduler
+        quiet = True  # the workers cannot report progress here
+    if out is not None:
+        kw["state_dir"] = out / "state"
+        kw["restart"] = restart
+    report, bar = _progress(quiet)
+    try:
+        cal = calibrate(progress=report, **kw)
+    finally:
+        if bar is not None:
+            bar.stop()
+    files = save(cal, out) if out is not None else {}
+    if as_json:
+        from impactlab.calibrate.jsonout import calibration_json
+
+        doc = calibration_json(cal)
+        doc["files"] = {k: str(v) for k, v in files.items()}
+        print(json.dumps(jsonable(doc), indent=2))
+        return
+    _print(cal)
+    for k, v in files.items():
+        console.print(f"{k}: {v}")
+
+
+def _as_param(name: str, prior: str) -> Any:
+    from impactlab.calibrate import parse_parameter
+
+    return parse_parameter(name, prior)
+
+
+def register(app: typer.Typer) -> None:
+    """Add ``impactlab calibrate`` to ``app``."""
+    app.command("calibrate")(calibrate_cmd)

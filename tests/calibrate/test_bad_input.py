@@ -1,0 +1,175 @@
+"""Bad calibration input: a clear error or warning, never a silent fit; a model that fails for
+some parameter values is a likelihood of zero with a count, not a crash."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from impactlab.calibrate import (
+    CalibrationWarning,
+    CandidateModel,
+    Parameter,
+    calibrate,
+    parse_model,
+    parse_parameter,
+)
+from impactlab.calibrate.synthetic import synthetic_measurements
+
+MU = parse_parameter("mu", "uniform(0, 0.6)")
+
+
+@pytest.mark.parametrize(
+    ("name", "spec", "match"),
+    [
+        ("mu", "uniform(0.5, 0.2)", "excludes every value"),
+        ("mu", "uniform(-1, 1)", "reaches outside the possible values"),
+        ("mu", "normal(-5, 0.1)", "excludes every value"),
+        ("flat_yield_strength", "loguniform(0, 1 GPa)", "loguniform needs low > 0"),
+        ("flat_yield_strength", "uniform(1 m, 2 m)", "wrong dimension"),
+        ("angle", "uniform(0, 1)", "unknown free parameter 'angle'"),
+        ("colour", "uniform(0, 1)", "unknown free parameter 'colour'"),
+        ("mu", "beta(1, 2)", "cannot read|unknown kind"),
+        ("mu", "uniform(1)", "wrong number of values"),
+    ],
+)
+def test_bad_priors(name, spec, match):
+    with pytest.raises(ValueError, match=match):
+        parse_parameter(name, spec)
+
+
+def test_prior_units_and_density():
+    p = parse_parameter("flat_yield_strength", "uniform(100 MPa, 1 GPa)")
+    assert (p.low, p.high, p.unit) == (1e8, 1e9, "Pa")
+    lp = p.logpdf(np.array([5e7, 5e8, 2e9]))
+    assert lp[0] == -np.inf and lp[2] == -np.inf
+    assert lp[1] == pytest.approx(-math.log(9e8))
+    n = parse_parameter("mu", {"prior": "normal", "mean": 0.2, "sd": 0.1})
+    assert n.low == 0.0  # truncated to mu >= 0
+
+
+def test_bad_models():
+    with pytest.raises(ValueError, match="unknown contact law"):
+        parse_model("hooke/coulomb")
+    with pytest.raises(ValueError, match="friction"):
+        parse_model("hertz/glue")
+    assert parse_model("hertz/mindlin").name == "hertz/mindlin"
+
+
+def test_parameter_no_model_uses(template):
+    with pytest.raises(ValueError, match="'flat_brinell_hardness' changes no prediction"):
+        calibrate(
+            _data(template),
+            [MU, parse_parameter("flat_brinell_hardness", "uniform(100, 200)")],
+            ["ghaednia/coulomb"],
+            steps=20,
+        )
+
+
+def test_parameter_some_models_do_not_use_warns(template):
+    with pytest.warns(CalibrationWarning, match="'hertz/coulomb' does not use flat_yield"):
+        calibrate(
+            _data(template),
+            [MU, parse_parameter("flat_yield_strength", "uniform(250 MPa, 350 MPa)")],
+            ["ghaednia/coulomb", "hertz/coulomb"],
+            walkers=8,
+            steps=12,
+            n_ppc=0,
+        )
+
+
+def _data(template, seed=0):
+    return synthetic_measurements(
+        template, CandidateModel(), [MU], [0.15], np.random.default_rng(seed)
+    )
+
+
+def test_quantity_a_model_does_not_predict(template):
+    from dataclasses import replace
+
+    data = _data(template)
+    dis = {**data.observed, "energy_dissipated": np.full(data.n_drops, 1.0)}
+    sig = {**data.sigma, "energy_dissipated": np.full(data.n_drops, 0.1)}
+    with pytest.raises(ValueError, match="does not predict energy_dissipated"):
+        calibrate(replace(data, observed=dis, sigma=sig), [MU], ["ghaednia/coulomb/flexible_rod"])
+
+
+def test_mu_missing_and_not_free(template):
+    from dataclasses import replace
+
+    inputs = dict(template.inputs)
+    inputs["mu"] = np.full(template.n_drops, np.nan)
+    with pytest.raises(ValueError, match="give no mu"):
+        calibrate(
+            replace(template, inputs=inputs),
+            [parse_parameter("flat_yield_strength", "uniform(250 MPa, 350 MPa)")],
+            steps=20,
+        )
+
+
+def test_measurement_no_model_can_produce_warns(template):
+    data = _data(template)
+    e = data.observed["e"].copy()
+    e[0] = 0.95  # the rod cannot rebound with e = 0.95 from this flat
+    from dataclasses import replace
+
+    with pytest.warns(CalibrationWarning, match=r"no model reproduces 20 deg e = 0.95"):
+        cal = calibrate(replace(data, observed={**data.observed, "e": e}), [MU], walkers=8,
+                        steps=20, n_ppc=0)  # fmt: skip
+    assert any("no model reproduces" in w for w in cal.warnings)
+
+
+def test_prior_where_every_case_fails(template):
+    """Yield strengths above the flat's modulus: every material is refused, the prior holds
+    no possible value: a clear error naming the reason."""
+    sy = Parameter("flat_yield_strength", "uniform", 300e9, 400e9)
+    with pytest.raises(ValueError, match=r"gives a likelihood above zero.*material rejected"):
+        calibrate(_data(template), [MU, sy], walkers=8, steps=20)
+
+
+@pytest.mark.filterwarnings("ignore::impactlab.calibrate.CalibrationWarning")  # a short chain
+def test_failing_cases_count_as_zero_likelihood(template):
+    """Part of the prior is impossible (S_y >= E*): those cases are counted, the fit goes on."""
+    sy = Parameter("flat_yield_strength", "loguniform", 1e8, 1e12)
+    cal = calibrate(_data(template), [MU, sy], walkers=8, steps=16, n_ppc=0)
+    post = cal.best
+    assert sum(post.failures.values()) > 0
+    assert any("material rejected" in k for k in post.failures)
+    assert np.isfinite(post.samples).all() and post.samples[:, 1].max() < 1e12
+
+
+def test_bad_sampler_settings(template):
+    for kw, match in (
+        ({"steps": 5}, "steps must be >= 10"),
+        ({"walkers": 1}, "walkers must be >= 4"),
+        ({"burn": 50, "steps": 20}, r"burn must lie in \[0, steps\)"),
+    ):
+        with pytest.raises(ValueError, match=match):
+            calibrate(_data(template), [MU], **kw)
+    with pytest.raises(ValueError, match="at least one free parameter"):
+        calibrate(_data(template), [])
+    with pytest.raises(ValueError, match="given twice"):
+        calibrate(_data(template), [MU, MU])
+
+
+@settings(max_examples=40)
+@given(
+    low=st.floats(1e6, 1e9),
+    width=st.floats(1.01, 100.0),
+    kind=st.sampled_from(["uniform", "loguniform"]),
+    u=st.floats(0.0, 1.0),
+)
+def test_prior_support_property(low, width, kind, u):
+    """Inside its bounds a prior's density is finite and its draws and quantiles stay there;
+    outside it is zero (log -inf)."""
+    p = Parameter("flat_yield_strength", kind, low, low * width)
+    inside = float(p.quantile(u))
+    assert p.low <= inside <= p.high
+    assert np.isfinite(p.logpdf(np.array([inside])))[0]
+    assert p.logpdf(np.array([p.low * 0.5, p.high * 2.0])).tolist() == [-np.inf, -np.inf]
+    draws = p.sample(16, np.random.default_rng(0))
+    assert ((draws >= p.low) & (draws <= p.high)).all()

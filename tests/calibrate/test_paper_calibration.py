@@ -1,0 +1,53 @@
+"""The paper's three drops as a calibration (``impactlab.paper.calibration_report``): the
+measurements, and (IMPACTLAB_CALIBRATE_LONG=1, a few minutes: flexible drops) the ranked
+configurations with the posterior of zeta and the report's blocks."""
+
+from __future__ import annotations
+
+import math
+import os
+
+import pytest
+
+from impactlab.paper import data as D
+from impactlab.paper.calibration_report import (
+    PAPER_MODELS,
+    calibrate_paper,
+    calibration_section,
+    paper_measurements,
+    write_calibration_report,
+)
+from impactlab.paper.physics import CONFIGURATIONS
+from impactlab.paper.report import Heading, Table, to_markdown
+
+LONG = pytest.mark.skipif(
+    os.environ.get("IMPACTLAB_CALIBRATE_LONG", "") in ("", "0"),
+    reason="flexible drops, about 0.1 s each (minutes): set IMPACTLAB_CALIBRATE_LONG=1",
+)
+
+
+def test_the_three_drops_and_models():
+    m = paper_measurements()
+    assert m.labels == ("20 deg", "45 deg", "70 deg")
+    x = D.EXPERIMENTS[45]
+    assert m.inputs["angle"][1] == pytest.approx(math.radians(45))
+    assert m.inputs["vy"][1] == x.v_i and m.inputs["mu"][1] == x.mu
+    assert m.observed["delta_p"][1] == pytest.approx(abs(x.delta_p))
+    assert m.sigma["delta_p"][1] == pytest.approx(0.1 * abs(x.delta_p))
+    assert m.observed["sliding_distance"][0] == pytest.approx(abs(D.EXPERIMENTS[20].L_s))
+    assert [p.name for p in PAPER_MODELS] == [c.name for c in CONFIGURATIONS]
+    assert PAPER_MODELS[2].rate == "cowper-symonds" and PAPER_MODELS[0].body is None
+
+
+@LONG
+@pytest.mark.slow
+def test_ranked_configurations_and_section(tmp_path):
+    cal = calibrate_paper(walkers=4, steps=10, n_ppc=4)
+    assert {r["model"] for r in cal.ranking} == {c.name for c in CONFIGURATIONS}
+    assert any("'rigid rod' does not use damping" in w for w in cal.warnings)
+    blocks = calibration_section(cal, 12)
+    assert isinstance(blocks[0], Heading) and any(isinstance(b, Table) for b in blocks)
+    text = to_markdown(blocks, "t")
+    assert "PSIS-LOO" in text and "zeta" in text and "no model reproduces" in text
+    files = write_calibration_report(tmp_path, cal)
+    assert "data:image/png;base64," in files["html"].read_text()
