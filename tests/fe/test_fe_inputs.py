@@ -83,6 +83,7 @@ def test_hardening_table_accepted():
 
 def test_cache_dir_default_and_env(monkeypatch, tmp_path):
     monkeypatch.delenv("IMPACTLAB_FE_CACHE", raising=False)
+    monkeypatch.delenv("IMPACTLAB_CACHE_DIR", raising=False)
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "xdg"))
     assert cache.default_cache_dir() == tmp_path / "xdg" / "impactlab" / "fe"
     monkeypatch.setenv("IMPACTLAB_FE_CACHE", str(tmp_path / "here"))
