@@ -14,7 +14,7 @@ def paper_drops(angles=(20, 45, 70), vy=-1.4, sigmas=SIGMAS, **extra) -> Measure
     """A template of drops of the paper's rod (values are placeholders: 0)."""
     recs = []
     for a in angles:
-        r = {"label": f"{a} deg", "angle": a, "vy": vy, **extra}
+        r = {"label": f"{a} deg", "angle": f"{a} deg", "vy": vy, **extra}
         for q, s in sigmas.items():
             r[q], r[f"{q}_sigma"] = (0.5 if q == "e" else 0.0), s
         recs.append(r)

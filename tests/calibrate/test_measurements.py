@@ -32,7 +32,7 @@ delta_p_sigma = 1.5
 
 [[drop]]
 label = "b"
-angle = 45
+angle = "45 deg"
 vy = -1.41
 mu = 0.2
 e = 0.12
@@ -64,13 +64,13 @@ def test_csv_round_trip(tmp_path):
     m = read_measurements(tmp_path / "m.csv")
     back = read_measurements(m.to_csv(tmp_path / "out.csv"))
     _check(back)
-    more = {"label": "c", "angle": 70, "vy": -2, "mu": 0.1, "e": 0.05, "e_sigma": 0.01}
+    more = {"label": "c", "angle": "70 deg", "vy": -2, "mu": 0.1, "e": 0.05, "e_sigma": 0.01}
     both = m.extended(Measurements.from_records([more]))
     assert both.labels == ("a", "b", "c") and both.n_values == 4
 
 
 def _rec(**kw):
-    base = {"label": "x", "angle": 20, "vy": -1.4, "mu": 0.2, "e": 0.3, "e_sigma": 0.02}
+    base = {"label": "x", "angle": "20 deg", "vy": -1.4, "mu": 0.2, "e": 0.3, "e_sigma": 0.02}
     base.update(kw)
     return [{k: v for k, v in base.items() if v is not None}]
 
@@ -109,7 +109,9 @@ def test_file_errors(tmp_path):
     with pytest.raises(ValueError, match="no drops"):
         read_measurements(tmp_path / "e.csv")
     with pytest.raises(ValueError, match="no measured quantity"):
-        Measurements.from_records([{"angle": 20, "vy": -1}])
+        Measurements.from_records([{"angle": "20 deg", "vy": -1}])
+    with pytest.raises(ValueError, match="the bare number 20 has no unit"):
+        Measurements.from_records(_rec(angle=20))
     with pytest.raises(ValueError, match="duplicate drop labels"):
         Measurements.from_records(_rec() + _rec())
 

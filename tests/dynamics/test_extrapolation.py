@@ -102,7 +102,7 @@ def test_tiny_sweep_stores_the_flag(tmp_path: Path) -> None:
     study = Study.from_dict(
         {
             "study": {"name": "range", "chunk_size": 2},
-            "fixed": {"law": "ghaednia", "angle": 20, "mu": 0.2},
+            "fixed": {"law": "ghaednia", "angle": "20 deg", "mu": 0.2},
             "grid": {"vy": [-1.41, -0.3]},
             "outputs": {"keep": ["e", "delta_max"]},
         }

@@ -44,7 +44,13 @@ def test_a_failed_drop_is_stored_with_its_own_code(tmp_path: Path, monkeypatch) 
     monkeypatch.setattr(flexible, "simulate_drop", missed)
     table = {
         "study": {"name": "flex-missed", "chunk_size": 4},
-        "fixed": {"body": "flexible_rod", "mu": 0.2, "angle": 20, "n_axial": 1, "n_bending": 2},
+        "fixed": {
+            "body": "flexible_rod",
+            "mu": 0.2,
+            "angle": "20 deg",
+            "n_axial": 1,
+            "n_bending": 2,
+        },
         "grid": {"vy": [-1.41, -1.2]},
     }
     ds = run_sweep(Study.from_dict(table), tmp_path / "m.zarr", quiet=True).dataset.load()

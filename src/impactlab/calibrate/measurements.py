@@ -8,7 +8,8 @@ A row names the drop (``label``), its body and flat (``body``, ``body_material``
 ``delta_p``, ``sliding_length`` (alias ``L_s``), ``duration``, ...), each with its standard
 uncertainty ``<name>_sigma`` in the same unit. Units: a CSV header may carry one
 (``delta_p [um]``), a TOML file a ``[units]`` table; a value may be a string with units
-(``"12 um"``); a bare number is otherwise SI, except the angle (degrees), as in study files.
+(``"12 um"``); a bare number is otherwise SI, and an angle is refused bare (``"20 deg"``, or
+``angle [deg]`` as the column header), as in study files and on the command line.
 """
 
 from __future__ import annotations
@@ -31,7 +32,7 @@ from impactlab.calibrate.quantities import (
     canonical_output,
 )
 from impactlab.materials import PRESETS
-from impactlab.sweep.inputs import INPUTS
+from impactlab.sweep.inputs import INPUTS, UNIT_REQUIRED
 from impactlab.units import to_si
 
 __all__ = ["Measurements", "read_measurements"]
@@ -199,6 +200,11 @@ def _value(where: str, name: str, v: Any, unit: str) -> float:
     return x
 
 
+def _bare(v: Any) -> bool:
+    """A plain number, or text that is only a number (no unit)."""
+    return isinstance(v, int | float) or (isinstance(v, str) and _is_number(v))
+
+
 def _is_number(text: str) -> bool:
     try:
         float(text)
@@ -234,6 +240,11 @@ def _parse_row(i: int, record: Mapping[str, Any], units: Mapping[str, str]) -> _
         if name in DROP_CATEGORIES:
             cats[name] = _category(where, name, str(v).strip())
         elif name in NUMERIC_INPUTS:
+            if name in UNIT_REQUIRED and not unit and _bare(v):
+                raise ValueError(
+                    f"{where}: {name}: the bare number {v!r} has no unit; an angle needs one, "
+                    f"e.g. '20 deg', or a unit in the column header ('{name} [deg]')"
+                )
             inputs[name] = _value(where, name, v, unit or INPUTS[name].parse_unit)
         elif name.endswith("_sigma") and canonical_output(name[: -len("_sigma")]):
             q = str(canonical_output(name[: -len("_sigma")]))

@@ -30,8 +30,11 @@ from impactlab.dynamics.core.status import STATUS_MESSAGES
 from impactlab.dynamics.drop_result import DropResult
 from impactlab.flags import FLAG_ENERGY_GAIN
 from impactlab.friction import get_friction
+from impactlab.materials import get_material
 from impactlab.sweep.engine import ENGINE, Evaluator
 from impactlab.sweep.flexible import DROP_OUTPUTS, FLEXIBLE_BODY, flexible_body
+from impactlab.sweep.inputs import MATERIAL_OVERRIDES
+from impactlab.sweep.material_inputs import CUSTOM
 from impactlab.sweep.models import Statics, material_for
 from impactlab.sweep.status import SWEEP_STATUS_MESSAGES
 
@@ -179,7 +182,8 @@ def predict(
             cases[k] = np.full(w * nd, float(v))
         for j, p in enumerate(params):
             cases[p.name] = np.repeat(theta[:, j], nd)
-        statics = Statics(dict(key), dict(model.law_params), dict(engine or {}))
+        categories = _whole_materials(dict(key), cases)
+        statics = Statics(categories, dict(model.law_params), dict(engine or {}))
         if model.batched:
             with _threads_for(w * nd):
                 res, st = evaluator(cases, statics, outputs)
@@ -193,6 +197,27 @@ def predict(
             got = _derived(q, res, cases)
             values[q][:, idx] = np.where(st == 0, got, np.nan).reshape(w, nd)
     return Prediction(values, status)
+
+
+def _whole_materials(cat: dict[str, str], cases: dict[str, np.ndarray]) -> dict[str, str]:
+    """A calibrated material property (``flat_yield_strength``, ...) of a library material: the
+    cases get every property of that material as columns, the free one replaced, and the side's
+    material is ``"custom"`` (a library material is never partly changed,
+    ``sweep.material_inputs``). ``cases`` is completed in place; returns the categories."""
+    for side, fields in MATERIAL_OVERRIDES.items():
+        key = f"{side}_material"
+        given = [n for n in fields if n in cases and not np.isnan(cases[n]).all()]
+        if cat.get(key) == CUSTOM or not given:
+            continue
+        base = get_material(cat[key], key)
+        n = len(next(iter(cases.values())))
+        for name, attr in fields.items():
+            value = getattr(base, attr, None)
+            library = np.full(n, np.nan if value is None else float(value))
+            column = cases.get(name)
+            cases[name] = library if column is None else np.where(np.isnan(column), library, column)
+        cat[key] = CUSTOM
+    return cat
 
 
 def _derived(q: str, res: Mapping[str, np.ndarray], cases: Mapping[str, np.ndarray]) -> Any:

@@ -20,7 +20,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from impactlab.bodies import Rod, Sphere
-from impactlab.dynamics.checks import check_impact
+from impactlab.dynamics.checks import check_impact, velocity_from
 from impactlab.dynamics.core.status import REGIME_NAMES
 from impactlab.dynamics.models import body_params
 from impactlab.dynamics.reference_problem import ReferenceProblem
@@ -241,7 +241,11 @@ def simulate_reference(
     Error control: ``rtol`` and the per-component ``atol = rtol * scale`` of the engine (scale:
     Hertz estimate of the penetration, the impact speed, and their rotational counterparts).
     """
-    x = check_impact(body, flat, **{**_simulate_defaults(), **impact})
+    args = {**_simulate_defaults(), **impact}
+    speed, incidence = args.pop("speed", None), args.pop("incidence", None)
+    if args["velocity"] is None or speed is not None or incidence is not None:
+        args["velocity"] = velocity_from(args["velocity"], speed, incidence)
+    x = check_impact(body, flat, **args)
     if x.friction.name not in FRICTION_IDS:  # its reference: verification.partial_slip
         raise ValueError(f"simulate_reference: no solve_ivp reference for {x.friction.name!r}")
     P = ReferenceProblem(

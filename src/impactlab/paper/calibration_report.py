@@ -62,7 +62,7 @@ def paper_measurements(sigmas: dict[str, float] | None = None) -> Measurements:
         records.append(
             {
                 "label": f"{ang} deg",
-                "angle": float(x.angle_deg),
+                "angle": f"{x.angle_deg} deg",
                 "vy": x.v_i,
                 "mu": x.mu,
                 "e": x.e,
