@@ -91,6 +91,7 @@ TASKS: dict[str, str] = {
     "docs": "build the documentation site (mkdocs build --strict) [ARGS]",
     "lock": "regenerate requirements.lock with uv (developers only)",
     "fe-reference": "run the CalculiX reference curves into src/impactlab/fe/data/ [CASES]",
+    "calibrate-paper": "calibrate the paper's three drops into src/impactlab/paper/data/ [STEPS]",
     "help": "this list (also -h, --help, or no task)",
 }
 
@@ -134,6 +135,8 @@ def main(argv: list[str]) -> int:
         return max(_run(*cmd, env=env) for cmd in cmds)
     if task == "fe-reference":
         return _run(PY, "-m", "impactlab.fe.reference", *rest, env=env)
+    if task == "calibrate-paper":
+        return _run(PY, "-m", "impactlab.paper.calibration_report", "--shipped", *rest, env=env)
     if task == "bench":
         return _run(PY, "benchmarks/run_all.py", *rest, env=env)
     return _run(PY, "-m", "mkdocs", "build", "--strict", *rest, env=env)

@@ -13,7 +13,7 @@ gravity impulse m g T in it: about 0.003 here, a tenth of the assumed sigma).
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
@@ -29,12 +29,21 @@ from impactlab.paper.report import Block, Bullets, Heading, Para, Table
 __all__ = [
     "PAPER_MODELS",
     "PAPER_SIGMAS",
+    "SHIPPED",
     "ZETA_PRIOR",
     "calibrate_paper",
     "calibration_section",
+    "calibration_summary",
     "paper_measurements",
+    "shipped_calibration",
     "write_calibration_report",
+    "write_shipped_calibration",
 ]
+
+#: The calibration of the paper's three drops shipped with the package (the reproduction
+#: report reads it: a run takes minutes of flexible drops), written by
+#: ``write_shipped_calibration`` (``python3 tasks.py calibrate-paper``).
+SHIPPED = Path(__file__).resolve().parent / "data" / "calibration.json"
 
 #: Assumed standard uncertainties: e absolute, delta_p and L_s relative.
 PAPER_SIGMAS = {"e": 0.03, "delta_p": 0.10, "sliding_distance": 0.10}
@@ -151,19 +160,53 @@ def _checks(cal: Calibration) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
-def calibration_section(cal: Calibration, number: int) -> list[Block]:
+def calibration_summary(cal: Calibration) -> dict[str, Any]:
+    """What the report shows of ``cal``, as plain JSON values: the sampler settings, the
+    ranking and the posterior predictive check (rows), every warning and every failure."""
+    import json
+
+    from impactlab._version import __version__
+
+    return {
+        "impactlab_version": __version__,
+        "settings": {k: cal.settings[k] for k in ("walkers", "steps", "burn", "seed")},
+        "ranking": json.loads(_ranking(cal).to_json(orient="records")),
+        "checks": json.loads(_checks(cal).to_json(orient="records")),
+        "warnings": list(cal.warnings)
+        + [f"{name}: {w}" for name, p in cal.posteriors.items() for w in p.warnings],
+        "failures": [
+            f"{name}: {k} ({v} cases, likelihood zero)"
+            for name, p in cal.posteriors.items()
+            for k, v in p.failures.items()
+        ],
+    }
+
+
+def write_shipped_calibration(path: str | Path = SHIPPED, **settings: Any) -> Path:
+    """Run ``calibrate_paper(**settings)`` and write its ``calibration_summary`` as JSON."""
+    import json
+
+    out = Path(path)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    out.write_text(json.dumps(calibration_summary(calibrate_paper(**settings)), indent=1) + "\n")
+    return out
+
+
+def shipped_calibration() -> dict[str, Any]:
+    """The shipped ``calibration_summary`` of the paper's three drops (``SHIPPED``)."""
+    import json
+
+    return dict(json.loads(SHIPPED.read_text()))
+
+
+def calibration_section(cal: Calibration | Mapping[str, Any], number: int) -> list[Block]:
     """The report's blocks: what was calibrated, the ranking with each configuration's
     posterior of zeta, the posterior predictive check of every measured value, and every
-    warning (nothing hidden)."""
-    st = cal.settings
-    notes = tuple(cal.warnings) + tuple(
-        f"{name}: {w}" for name, p in cal.posteriors.items() for w in p.warnings
-    )
-    fails = tuple(
-        f"{name}: {k} ({v} cases, likelihood zero)"
-        for name, p in cal.posteriors.items()
-        for k, v in p.failures.items()
-    )
+    warning (nothing hidden); ``cal``: a calibration or its ``calibration_summary``."""
+    summary = cal if isinstance(cal, Mapping) else calibration_summary(cal)
+    st = summary["settings"]
+    notes = tuple(summary["warnings"])
+    fails = tuple(summary["failures"])
     warned: list[Block] = [Para("Warnings of the calibration:"), Bullets(notes)] if notes else []
     failed: list[Block] = [Para("Failed cases:"), Bullets(fails)] if fails else []
     return [
@@ -180,8 +223,13 @@ def calibration_section(cal: Calibration, number: int) -> list[Block]:
             f"steps ({st['burn']} discarded), seed {st['seed']}. With three drops the PSIS-LOO "
             "standard errors are wide."
         ),
-        Table(_ranking(cal), "Configurations ranked by PSIS-LOO, with the posterior of zeta"),
-        Table(_checks(cal), "Posterior predictive check of every measured value"),
+        Table(
+            pd.DataFrame(summary["ranking"]),
+            "Configurations ranked by PSIS-LOO, with the posterior of zeta",
+        ),
+        Table(
+            pd.DataFrame(summary["checks"]), "Posterior predictive check of every measured value"
+        ),
         *warned,
         *failed,
     ]
@@ -221,7 +269,9 @@ def write_calibration_report(
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    """``python -m impactlab.paper.calibration_report OUT_DIR [STEPS]``: run and write it."""
+    """``python -m impactlab.paper.calibration_report OUT_DIR [STEPS]``: run and write the
+    section into OUT_DIR; ``--shipped [STEPS]``: run and write the shipped summary
+    (``SHIPPED``, what the reproduction report shows)."""
     import sys
 
     args = list(sys.argv[1:] if argv is None else argv)
@@ -229,6 +279,9 @@ def main(argv: Sequence[str] | None = None) -> int:
         print(main.__doc__, file=sys.stderr)
         return 2
     steps = int(args[1]) if len(args) == 2 else 40
+    if args[0] == "--shipped":
+        print(f"summary: {write_shipped_calibration(steps=steps)}")
+        return 0
     for name, path in write_calibration_report(args[0], steps=steps).items():
         print(f"{name}: {path}")
     return 0
