@@ -13,11 +13,13 @@ import numpy as np
 
 from impactlab import schema
 from impactlab._display import field_rows, flag_names, html_table, text_table
+from impactlab._version import __version__
 from impactlab.contact.ranges import extrapolation, extrapolation_flags, range_status
 from impactlab.dynamics.core.layout import HISTORY_FIELDS, OUTPUT_FIELDS
 from impactlab.dynamics.core.status import STATUS_MESSAGES
 from impactlab.dynamics.dent import dent_map
 from impactlab.dynamics.export import batch_dataset, batch_html, history_dataframe
+from impactlab.dynamics.provenance import result_record
 from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
 from impactlab.references import Reference
 from impactlab.references import dois as doi_list
@@ -243,9 +245,25 @@ class ImpactResult:
         d["extrapolated"] = self.extrapolated
         d["flags"] = int(self.flags)
         d["warnings"] = list(self.warnings)
+        d["impactlab_version"] = __version__
+        d["input"] = self.input
         if include_history and self.history is not None:
             d["history"] = {k: self.history[k].tolist() for k in HISTORY_FIELDS}
         return d
+
+    def to_pint(self, registry: Any = None) -> dict[str, Any]:
+        """The scalar fields (and ``max_delta_ratio``) as pint Quantities in SI, e.g.
+        ``r.to_pint()["delta_p"].to("um")``; ``registry``: your pint registry (default
+        ``impactlab.units.registry()``)."""
+        return pint_quantities(self, {**UNITS, "max_delta_ratio": "1"}, registry)
+
+    @property
+    def input(self) -> dict[str, Any] | None:
+        """What was simulated, JSON-ready: body, materials, flat, law and its parameters,
+        friction, mu, angle, velocity, spin, gravity, tolerance and the impactlab version
+        (``impactlab.dynamics.provenance``); ``impactlab.rerun(result.to_dict())`` runs it
+        again. None for a result that ``simulate`` did not return."""
+        return result_record(self)
 
     def dois(self) -> tuple[str, ...]:
         """DOIs of the sources this result used (contact law, friction model if mu > 0, the
@@ -285,6 +303,24 @@ class ImpactResult:
             self._law_id, self._law_params, h.penetration, h.contact_x, nx=nx, ny=ny, margin=margin
         )
         return DentMap(*surface)
+
+
+def pint_quantities(result: Any, units: dict[str, str], registry: Any = None) -> dict[str, Any]:
+    """The fields of ``result`` that have a unit in ``units`` as pint Quantities (SI; a pair
+    such as ``velocity_out`` as one Quantity of an array); ``registry``: the caller's pint
+    registry (default ``impactlab.units.registry()``)."""
+    from impactlab.units import registry as shared  # pint loads on first use
+
+    ureg = shared() if registry is None else registry
+    out: dict[str, Any] = {}
+    for name, unit in units.items():
+        value = getattr(result, name, None)
+        if isinstance(value, tuple):
+            value = np.asarray(value, dtype=np.float64)
+        elif not isinstance(value, float | int) or isinstance(value, bool):
+            continue
+        out[name] = ureg.Quantity(value, "dimensionless" if unit == "1" else unit)
+    return out
 
 
 def assemble_result(values: dict[str, Any]) -> ImpactResult:
