@@ -291,8 +291,8 @@ def _compare_with_engine(res: InversionResult, flat: str) -> tuple[dict[str, Any
                      history=False)  # fmt: skip
     except ValueError as exc:
         raise UserError(f"--flat: the simulated impact failed: {exc}") from None
-    model: dict[str, Any] = {"law": law, "flat": material.name, "duration": r.duration,
-                             "mean_force": r.mean_force, "e": r.e, "delta_p": r.delta_p}  # fmt: skip
+    model: dict[str, Any] = {"law": law, "flat": material.name}
+    model |= {"duration": r.duration, "mean_force": r.mean_force, "e": r.e, "delta_p": r.delta_p}
     warnings = check_against_model(
         res.duration, res.mean_force, model_duration=r.duration, model_force=r.mean_force,
         law=law, sigma_duration=res.sigma_T_linear,
