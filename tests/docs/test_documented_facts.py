@@ -31,18 +31,19 @@ def _texts() -> dict[str, str]:
 def test_the_count_of_friction_models_is_the_codes() -> None:
     """ "the N friction models" and "N of the M friction models" name every model."""
     n = len(friction_names())
-    wrong = []
-    for name, text in _texts().items():
-        flat = " ".join(text.split())
-        for m in re.finditer(r"\b(?:the|all|of the) (\w+) friction models\b", flat):
-            if NUMBERS.get(m.group(1).lower(), n) != n:
-                wrong.append(f"{name}: {m.group(0)!r}")
+    rule = re.compile(r"\b(?:the|all|of the) (\w+) friction models\b")
+    wrong = [
+        f"{name}: {m.group(0)!r}"
+        for name, text in _texts().items()
+        for m in rule.finditer(" ".join(text.split()))
+        if NUMBERS.get(m.group(1).lower(), n) != n
+    ]
     assert not wrong, f"{n} friction models ({', '.join(friction_names())}); docs say: {wrong}"
 
 
 def test_the_count_of_laws_is_the_codes() -> None:
     text = " ".join((ROOT / "docs" / "flexible.md").read_text().split())
-    assert f"the {list(NUMBERS)[len(law_names())]} laws" in text
+    assert f"the {WORDS[len(law_names())]} laws" in text
 
 
 def test_glossary_names_every_flag() -> None:
