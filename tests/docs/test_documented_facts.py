@@ -16,12 +16,8 @@ from impactlab.friction import DEFAULT_MU, friction_names
 
 ROOT = Path(__file__).resolve().parents[2]
 USER_DOCS = [ROOT / "README.md", *sorted((ROOT / "docs").rglob("*.md"))]
-NUMBERS = {
-    w: i
-    for i, w in enumerate(
-        ["zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten"]
-    )
-}
+WORDS = ["zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten"]
+NUMBERS = {w: i for i, w in enumerate(WORDS)}
 
 
 def _texts() -> dict[str, str]:
@@ -29,7 +25,7 @@ def _texts() -> dict[str, str]:
 
 
 def test_the_count_of_friction_models_is_the_codes() -> None:
-    """ "the N friction models" and "N of the M friction models" name every model."""
+    """Every "the N friction models" and "N of the M friction models" counts them all."""
     n = len(friction_names())
     rule = re.compile(r"\b(?:the|all|of the) (\w+) friction models\b")
     wrong = [

@@ -6,8 +6,8 @@ Python (``impactlab.dynamics.reference_problem``): the equations of motion, the 
 history and the rigid engine's three point-contact friction models (partial slip has its
 own reference, ``impactlab.verification.partial_slip``), with every phase switch located by
 ``solve_ivp``'s terminal events and the integration restarted in the new mode. Only the
-contact-law kernels (``impactlab.contact.kernels``) are shared. Slow (milliseconds per impact); use it to check the
-engine, not for production.
+contact-law kernels (``impactlab.contact.kernels``) are shared. Slow (milliseconds per impact);
+use it to check the engine, not for production.
 """
 
 from __future__ import annotations
