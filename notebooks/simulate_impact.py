@@ -76,6 +76,19 @@ ax.legend()
 fig.savefig("force_time.png", dpi=100)
 
 # %% [markdown]
+# The figures of one impact come ready-made from `impactlab.dynamics.plotting`:
+# `plot_force_time`, `plot_force_penetration`, `plot_contact_path` and `plot_dent` (each takes
+# `ax=` to draw into your own axes; `save_figures(r, folder)` writes all four). Each returns
+# its Figure, which the notebook shows once.
+
+# %%
+from impactlab.dynamics.plotting import plot_force_penetration
+
+fig = plot_force_penetration(r)
+fig.savefig("force_penetration.png", dpi=100)
+fig
+
+# %% [markdown]
 # ## Many impacts at once
 #
 # `simulate_batch` runs arrays of inputs through the compiled engine; `to_xarray()` gives a
