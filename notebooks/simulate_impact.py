@@ -26,6 +26,7 @@ import numpy as np
 
 import impactlab as il
 from impactlab.contact import get_law
+from impactlab.dynamics.plotting import plot_force_penetration
 
 rod = il.Rod.paper()
 rod  # noqa: B018 (a notebook cell's result: shown as a table in Jupyter)
@@ -82,11 +83,9 @@ fig.savefig("force_time.png", dpi=100)
 # its Figure, which the notebook shows once.
 
 # %%
-from impactlab.dynamics.plotting import plot_force_penetration
-
 fig = plot_force_penetration(r)
 fig.savefig("force_penetration.png", dpi=100)
-fig
+fig  # noqa: B018 (the cell's value: the notebook shows the figure)
 
 # %% [markdown]
 # ## Many impacts at once
