@@ -245,12 +245,6 @@ def run_from(path: Path) -> ImpactResult | DropResult:
         raise UserError(f"--from {str(path)!r}: {exc}") from None
 
 
-def _setup_rows(result: ImpactResult) -> dict[str, Any]:
-    """What was simulated, for the summary: the body (sizes, material) and the flat."""
-    call = getattr(result, "_call", None)
-    return {} if call is None else {"body": str(call[0]), "flat": str(call[1])}
-
-
 def _report(result: ImpactResult | DropResult, *, out: Path | None, as_json: bool) -> None:
     for text in result.warnings:
         print(f"warning: {text}", file=sys.stderr)
@@ -271,7 +265,7 @@ def _report(result: ImpactResult | DropResult, *, out: Path | None, as_json: boo
     if as_json:
         emit({**data, "files": files}, as_json=True)
         return
-    emit({**_setup_rows(result), **result.summary()}, as_json=False, title="impact")
+    emit(result.summary(), as_json=False, title="impact")
     for f in files:
         console.print(Text(f"saved {f}"))
 

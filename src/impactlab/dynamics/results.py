@@ -271,9 +271,12 @@ class ImpactResult:
         return doi_list(self.references)
 
     def summary(self) -> dict[str, Any]:
-        """The summary's fields (``SUMMARY_FIELDS``, SI; no angles for a sphere) and the
-        names of the flags."""
-        data = {k: getattr(self, k) for k in SUMMARY_FIELDS}
+        """What was simulated (``body``, ``flat``: their descriptions, when ``simulate`` made
+        the result), the summary's fields (``SUMMARY_FIELDS``, SI; no angles for a sphere) and
+        the names of the flags."""
+        call = getattr(self, "_call", None)  # what simulate() was given (provenance)
+        data = {} if call is None else {"body": str(call[0]), "flat": call[1].name}
+        data |= {k: getattr(self, k) for k in SUMMARY_FIELDS}
         for k in ("angle", "angle_out"):
             if not np.isfinite(data[k]):
                 del data[k]  # a sphere

@@ -15,6 +15,7 @@ from __future__ import annotations
 import warnings
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
+from functools import partial
 from pathlib import Path
 from typing import Any
 
@@ -94,18 +95,19 @@ def plot_plan(
             x, y = ("angle", "mu") if "angle" in nums and "mu" in nums else (nums[0], nums[1])
             plan.plots.append(("regime_map.png", lambda: plot_regime_map(ds, x=x, y=y, sel=msel)))
         x, y = _map_axes(nums)
-        for o in present:
-            plan.plots.append(
-                (f"{o}_{x}_{y}.png", lambda o=o: plot_output_map(ds, o, x=x, y=y, sel=msel))
-            )
+        plan.plots += [
+            (f"{o}_{x}_{y}.png", partial(plot_output_map, ds, o, x=x, y=y, sel=msel))
+            for o in present
+        ]
     elif len(nums) == 1:
         (x,) = nums
         plan.skipped.append(
             f"regime map and output maps: they need two swept numeric inputs, the study "
             f"sweeps one ({x}); drawn as lines over {x}"
         )
-        for o in present:
-            plan.plots.append((f"{o}_{x}.png", lambda o=o: plot_output_map(ds, o, x=x, sel=msel)))
+        plan.plots += [
+            (f"{o}_{x}.png", partial(plot_output_map, ds, o, x=x, sel=msel)) for o in present
+        ]
     elif not has_sample:
         swept = [d for d in ds.dims if ds.sizes[d] > 1]
         what = f"it sweeps only categories ({', '.join(swept)})" if swept else "nothing is swept"
