@@ -284,6 +284,9 @@ class DropResult:
     fitted_delta_ratio_max: float = math.inf
     history: DropHistory | None = field(default=None, repr=False)
     references: tuple[Reference, ...] = field(default=(), repr=False)
+    #: What ``simulate`` was given (body, flat, law, law_params, gravity, constant_angle, rtol,
+    #: drop options): the source of ``input`` (``dynamics.provenance``).
+    _call: tuple[Any, ...] | None = field(default=None, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "flags", ResultFlag(int(self.flags)))
@@ -353,7 +356,7 @@ class DropResult:
         balance, the references' citations; the history as lists of columns if asked."""
         d: dict[str, Any] = {}
         for f in fields(self):
-            if f.name in ("history", "references", "contacts", "dents"):
+            if f.name in ("history", "references", "contacts", "dents", "_call"):
                 continue
             d[f.name] = getattr(self, f.name)
         d["contacts"] = [c.__dict__ for c in self.contacts]

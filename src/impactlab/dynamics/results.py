@@ -206,6 +206,9 @@ class ImpactResult:
     references: tuple[Reference, ...] = field(default=(), repr=False)
     _law_id: int = field(default=-1, repr=False)
     _law_params: np.ndarray | None = field(default=None, repr=False)
+    #: What ``simulate`` was given, checked (body, flat, law, law_params, gravity [m/s^2],
+    #: constant_angle, rtol, drop options): the source of ``input`` (``dynamics.provenance``).
+    _call: tuple[Any, ...] | None = field(default=None, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         # the engine writes the bitmask as a float; LAW_EXTRAPOLATED from contact.ranges (C2)

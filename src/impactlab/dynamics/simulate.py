@@ -139,8 +139,7 @@ def simulate(
         return drop
     r = _fast(body, flat, law, friction, mu, angle, velocity, spin, law_params, gravity,
               constant_angle, rtol, history)  # fmt: skip
-    if r is not None:  # what was simulated, recorded lazily (ImpactResult.input)
-        r.__dict__["_call"] = (body, flat, law, law_params, gravity, constant_angle, rtol, None)
+    if r is not None:
         return r
     x = check_impact(
         body,
@@ -160,6 +159,7 @@ def simulate(
         r = simulate_partial_slip(x, check_flag("history", history))
     else:
         r = _run_one(x, check_flag("history", history))
+    # what was simulated, checked, for ImpactResult.input (the fast path records the same)
     r.__dict__["_call"] = (x.body, x.flat, law, law_params, x.gravity, x.constant_angle, x.rtol,
                            None)  # fmt: skip
     return r
@@ -264,9 +264,9 @@ def _fast(
     if status != S.ST_OK:
         raise status_error(int(status), model)
     hist = hist[:nh] if history else None
-    return engine_result(
-        out, hist, model, fric, refs_mu if m > 0.0 else refs, m, th_out, (vx, vy), w
-    )
+    r = engine_result(out, hist, model, fric, refs_mu if m > 0.0 else refs, m, th_out, (vx, vy), w)
+    r.__dict__["_call"] = (body, flat, law, None, g, constant_angle, tol, None)  # as the full path
+    return r
 
 
 def _run_one(x: ImpactInputs, history: bool) -> ImpactResult:
