@@ -129,3 +129,11 @@ def test_cli_json_then_from_reruns_the_same_impact(tmp_path, monkeypatch, capsys
     assert code != 0 and "leave out --mu" in err
     code, _, err = _cli(monkeypatch, capsys, "simulate", "--from", str(tmp_path / "no.json"))
     assert code != 0 and "cannot read" in err
+
+
+def test_a_sphere_given_its_density_reruns_with_the_same_mass() -> None:
+    s = il.Sphere(radius=0.004, density=2700.0)
+    r = il.simulate(s, velocity=(0.0, -1.0))
+    again = _round_trip(r)
+    assert again.input["body"]["mass"] == r.input["body"]["mass"]
+    assert (again.e, again.delta_p) == (r.e, r.delta_p)

@@ -118,13 +118,11 @@ def decode(data: Any) -> Any:
 
 
 def _build(cls: type, values: dict[str, Any]) -> Any:
-    """``cls(**values)`` of a record (a body's derived mass is left to its own sizes)."""
+    """``cls(**values)`` of a record (a Sphere takes its mass; the density follows)."""
     if cls is ContactModel:
         values = {k: v for k, v in values.items() if k in ("name", "law_id", "params", "details")}
-    if cls is Sphere and values.get("density") is not None:
-        values.pop("mass", None)  # the mass follows from the density, as it was computed
-    if cls is FlexibleRod and values.get("diameter") is not None:
-        values.pop("mass", None)
+    if cls is Sphere and values.get("mass") is not None:
+        values.pop("density", None)  # one of the two; the mass is what the dynamics use
     known = {f.name for f in dataclasses.fields(cls) if f.init}
     unknown = sorted(set(values) - known)
     if unknown:
