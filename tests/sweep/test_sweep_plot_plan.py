@@ -12,6 +12,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 import pytest
+from sweep_fakes import run_cli
 
 from impactlab.sweep import PlotSkipped, Study, plot_output_map, plot_plan, plot_sweep, run_sweep
 
@@ -74,3 +75,16 @@ def test_regime_as_output_is_categorical(tmp_path, fake) -> None:
     labels = {t.get_text() for t in line_ax.get_yticklabels()}
     assert labels and not any(t.isdigit() for t in labels)  # names, not codes
     plt.close("all")
+
+
+def test_cli_names_what_it_did_not_plot(tmp_path, fake, monkeypatch, capsys) -> None:
+    _run(tmp_path, fake, "line", fixed=_AM, grid={"vy": [-0.5, -1.0, -2.0]})
+    store, out = str(tmp_path / "line.zarr"), str(tmp_path / "p")
+    code, stdout, err = run_cli(monkeypatch, capsys, "sweep", "plot", store, "--out", out)
+    assert code == 0 and "e_vy.png" in stdout
+    assert "not plotted: regime map and output maps: they need two swept numeric inputs" in err
+    _run(tmp_path, fake, "laws", fixed={"vy": -1.0, **_AM}, grid={"law": ["ghaednia", "hertz"]})
+    code, _, err = run_cli(
+        monkeypatch, capsys, "sweep", "plot", str(tmp_path / "laws.zarr"), "--out", out
+    )
+    assert code != 0 and "nothing to plot: maps: they need a swept numeric input" in err
