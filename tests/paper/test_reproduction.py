@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
+import json
 import re
 import sys
 
 import pandas as pd
 import pytest
 
+import impactlab as il
 from impactlab.analytic import invert
 from impactlab.cli import main
 from impactlab.paper import reproduction as R
@@ -131,6 +133,11 @@ def test_end_to_end(tmp_path_factory):
         & (sims["friction"] == "impulse_ratio")
     ].iloc[0]
     assert f"{g20['e']:.4g}" in text and f"{g20[PAPER_DEPTH]:.4g}" in text
+    # every simulation's input, rerun to the same numbers
+    records = json.loads(res.files["simulation_inputs"].read_text())
+    assert len(records) == 18 and "simulation_inputs.json" in text
+    again = il.rerun(records["20 deg, ghaednia, impulse_ratio"])
+    assert f"{again.e:.4g}" == f"{g20['e']:.4g}"
     # the headline names the simulated durations' disagreement with a factor
     exp_T = res.experimental.set_index("angle [deg]")["T [ms]"]
     low = (sims["T [ms]"] / sims["angle [deg]"].map(exp_T)).min()

@@ -46,6 +46,8 @@ class ReportData:
     elapsed: float
     version: str
     physics: pd.DataFrame | None = None
+    #: the file of every simulation's full input (None: not simulated)
+    inputs_file: str | None = None
 
 
 def build_report(d: ReportData) -> list[Block]:
@@ -331,5 +333,17 @@ def _run(d: ReportData) -> list[Block]:
         Code(
             f"impactlab {d.version}, Python {platform.python_version()}, "
             f"{platform.platform()}\nelapsed: {d.elapsed:.1f} s"
+        ),
+        *(
+            [
+                Para(
+                    f"What each simulation simulated (the rod, both materials, the law and its "
+                    f"parameters, friction, mu, angle, velocity, gravity, tolerance, the impactlab "
+                    f"version): `{d.inputs_file}`, one record per row of the tables; "
+                    f'`impactlab.rerun(records["20 deg, ghaednia, coulomb"])` runs one again.'
+                )
+            ]
+            if d.inputs_file
+            else []
         ),
     ]
