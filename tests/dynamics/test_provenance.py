@@ -137,3 +137,10 @@ def test_a_sphere_given_its_density_reruns_with_the_same_mass() -> None:
     again = _round_trip(r)
     assert again.input["body"]["mass"] == r.input["body"]["mass"]
     assert (again.e, again.delta_p) == (r.e, r.delta_p)
+
+
+def test_batch_to_pint() -> None:
+    b = il.simulate_batch(il.Rod.paper(), angle=[0.3, 0.5], vy=-1.0, mu=0.1)
+    q = b.to_pint()
+    assert list(q["delta_p"].to("um").magnitude) == pytest.approx(list(b.delta_p * 1e6))
+    assert str(q["duration"].units) == "second"

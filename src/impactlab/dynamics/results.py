@@ -18,19 +18,25 @@ from impactlab.contact.ranges import extrapolation, extrapolation_flags, range_s
 from impactlab.dynamics.core.layout import HISTORY_FIELDS, OUTPUT_FIELDS
 from impactlab.dynamics.core.status import STATUS_MESSAGES
 from impactlab.dynamics.dent import dent_map
-from impactlab.dynamics.export import batch_dataset, batch_html, history_dataframe
+from impactlab.dynamics.export import batch_dataset, batch_html
+from impactlab.dynamics.history import HISTORY_UNITS, DentMap, History, readonly_copy
 from impactlab.dynamics.provenance import result_record
 from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
 from impactlab.references import Reference
 from impactlab.references import dois as doi_list
 
-
-def readonly_copy(a: Any) -> np.ndarray:
-    """A float64 copy of ``a`` that cannot be written to."""
-    out = np.array(a, dtype=np.float64, copy=True)
-    out.setflags(write=False)
-    return out
-
+__all__ = [
+    "HISTORY_UNITS",
+    "SUMMARY_FIELDS",
+    "UNITS",
+    "BatchResult",
+    "DentMap",
+    "History",
+    "ImpactResult",
+    "assemble_result",
+    "pint_quantities",
+    "readonly_copy",
+]
 
 #: Units of the ImpactResult scalar fields (from ``impactlab.schema``).
 UNITS: dict[str, str] = {
@@ -64,89 +70,6 @@ UNITS: dict[str, str] = {
         "max_delta_ratio",
     )
 }
-
-#: Units of the history columns (from ``impactlab.schema``).
-HISTORY_UNITS: dict[str, str] = {f.name: f.unit for f in schema.HISTORY_FIELDS}
-
-
-@dataclass(frozen=True, eq=False)
-class History:
-    """Time history of one impact (rows: accepted steps, dense-output points and events).
-
-    Columns (SI): see ``HISTORY_FIELDS``; each is also an attribute (``history.t``, ...).
-    ``phase`` is 0 on the loading curve and 1 on the unloading/reloading curve; ``stick`` is 1
-    while the contact point sticks (Coulomb) or has no gross slip (Mindlin).
-    """
-
-    data: np.ndarray = field(repr=False)
-
-    def __post_init__(self) -> None:
-        object.__setattr__(self, "data", readonly_copy(self.data))
-
-    def __len__(self) -> int:
-        return int(self.data.shape[0])
-
-    def __getattr__(self, name: str) -> np.ndarray:
-        try:
-            j = HISTORY_FIELDS.index(name)
-        except ValueError:
-            raise AttributeError(name) from None
-        return self.data[:, j]
-
-    def __getitem__(self, name: str) -> np.ndarray:
-        return self.__getattr__(name)
-
-    @property
-    def fields(self) -> tuple[str, ...]:
-        """Column names."""
-        return HISTORY_FIELDS
-
-    @property
-    def units(self) -> dict[str, str]:
-        """SI unit of each column (``"1"``: dimensionless)."""
-        return dict(HISTORY_UNITS)
-
-    def to_dataframe(self) -> Any:
-        """A pandas DataFrame: SI, units in ``.attrs``, categorical phase/stick (``export``)."""
-        return history_dataframe(self.data)
-
-    def __repr__(self) -> str:
-        return f"History({len(self)} rows: {', '.join(HISTORY_FIELDS)})"
-
-
-@dataclass(frozen=True, eq=False)
-class DentMap:
-    """Predicted permanent dent on the flat as a height map (see docs/engine/index.md).
-
-    x, y : grid coordinates on the flat [m]; x along the impact plane from the first contact
-        point (positive towards the centre-of-mass side), y across it.
-    height : (len(y), len(x)) surface height after the impact [m] (<= 0 inside the dent).
-    max_depth : deepest point [m] (equals ``delta_p`` for a single loading).
-    length : extent of the dent along x [m]; width : extent across (along y) [m].
-    """
-
-    x: np.ndarray = field(repr=False)
-    y: np.ndarray = field(repr=False)
-    height: np.ndarray = field(repr=False)
-    max_depth: float
-    length: float
-    width: float
-
-    def __post_init__(self) -> None:
-        for name in ("x", "y", "height"):
-            object.__setattr__(self, name, readonly_copy(getattr(self, name)))
-
-    def profile(self) -> tuple[np.ndarray, np.ndarray]:
-        """(x, height) along the centre line y = 0."""
-        j = int(np.argmin(np.abs(self.y)))
-        return self.x, self.height[j]
-
-    def __repr__(self) -> str:
-        return (
-            f"DentMap(max_depth={self.max_depth:.4g} m, length={self.length:.4g} m, "
-            f"width={self.width:.4g} m, grid={self.height.shape[1]}x{self.height.shape[0]})"
-        )
-
 
 #: The fields of an impact's summary, in order: ``print(result)``, ``_repr_html_`` and
 #: ``impactlab simulate`` show these (display units: ``impactlab._display``).
@@ -311,6 +234,10 @@ class ImpactResult:
         return DentMap(*surface)
 
 
+def _pint_unit(unit: str) -> str:
+    return "dimensionless" if unit == "1" else unit
+
+
 def pint_quantities(result: Any, units: dict[str, str], registry: Any = None) -> dict[str, Any]:
     """The fields of ``result`` that have a unit in ``units`` as pint Quantities (SI; a pair
     such as ``velocity_out`` as one Quantity of an array); ``registry``: the caller's pint
@@ -325,7 +252,7 @@ def pint_quantities(result: Any, units: dict[str, str], registry: Any = None) ->
             value = np.asarray(value, dtype=np.float64)
         elif not isinstance(value, float | int) or isinstance(value, bool):
             continue
-        out[name] = ureg.Quantity(value, "dimensionless" if unit == "1" else unit)
+        out[name] = ureg.Quantity(value, _pint_unit(unit))
     return out
 
 
@@ -428,6 +355,21 @@ class BatchResult:
     def to_xarray(self) -> Any:
         """An ``xarray.Dataset`` over ``case`` (units in attributes; ``dynamics.export``)."""
         return batch_dataset(self)
+
+    def to_pint(self, registry: Any = None) -> dict[str, Any]:
+        """Each output column with a unit (``impactlab.schema``) as a pint Quantity of an array
+        (SI; NaN where a case failed); ``registry``: your pint registry."""
+        from impactlab.units import registry as shared  # pint loads on first use
+
+        ureg = shared() if registry is None else registry
+        out: dict[str, Any] = {}
+        for j, name in enumerate(OUTPUT_FIELDS):
+            try:
+                unit = schema.unit(name)
+            except KeyError:
+                continue
+            out[name] = ureg.Quantity(np.array(self.out[:, j]), _pint_unit(unit))
+        return out
 
     def _repr_html_(self) -> str:
         return batch_html(self)
