@@ -284,8 +284,7 @@ class DropResult:
     fitted_delta_ratio_max: float = math.inf
     history: DropHistory | None = field(default=None, repr=False)
     references: tuple[Reference, ...] = field(default=(), repr=False)
-    #: What ``simulate`` was given (body, flat, law, law_params, gravity, constant_angle, rtol,
-    #: drop options): the source of ``input`` (``dynamics.provenance``).
+    #: what ``simulate`` was given: the source of ``input`` (``dynamics.provenance``)
     _call: tuple[Any, ...] | None = field(default=None, repr=False, compare=False)
 
     def __post_init__(self) -> None:
@@ -340,15 +339,13 @@ class DropResult:
         return doi_list(self.references)
 
     def to_pint(self, registry: Any = None) -> dict[str, Any]:
-        """The scalar totals (``UNITS``, and ``mean_force``) as pint Quantities in SI;
-        ``registry``: your pint registry (default ``impactlab.units.registry()``)."""
+        """The totals (``UNITS``, ``mean_force``) as pint Quantities in SI (``registry``: yours)."""
         return pint_quantities(self, {**UNITS, "mean_force": "N"}, registry)
 
     @property
     def input(self) -> dict[str, Any] | None:
-        """What was simulated, JSON-ready (as ``ImpactResult.input``; the drop's options
-        ``rate``, ``stop``, ``t_max`` included when given); None for a drop that
-        ``impactlab.simulate`` did not return."""
+        """What was simulated, JSON-ready, as ``ImpactResult.input`` (with the drop's options);
+        None for a drop that ``impactlab.simulate`` did not return."""
         return result_record(self)
 
     def to_dict(self, *, include_history: bool = False) -> dict[str, Any]:
@@ -387,14 +384,11 @@ class DropResult:
         return [(a, b, "") for a, b in setup] + totals + per_contact + warn
 
     def __repr__(self) -> str:
-        """One line: the body, the law and the headline totals (``print`` for the table,
-        ``contacts`` and ``history`` for the rest)."""
-        flags = "" if not self.flags else f", flags={self.flags!r}"
-        return (
-            f"DropResult(body={self.body!r}, law={self.law!r}, friction={self.friction!r}, "
-            f"n_contacts={self.n_contacts}, e={self.e:.6g}, delta_p={self.delta_p:.6g} m, "
-            f"duration={self.duration:.6g} s{flags})"
-        )
+        """One line: the body, the law and the headline totals (``print``: the table)."""
+        flags = f", flags={self.flags!r}" if self.flags else ""
+        return (f"DropResult(body={self.body!r}, law={self.law!r}, friction={self.friction!r}, "
+                f"n_contacts={self.n_contacts}, e={self.e:.6g}, delta_p={self.delta_p:.6g} m, "
+                f"duration={self.duration:.6g} s{flags})")  # fmt: skip
 
     def __str__(self) -> str:
         rows = self._rows()
