@@ -144,3 +144,13 @@ def test_batch_to_pint() -> None:
     q = b.to_pint()
     assert list(q["delta_p"].to("um").magnitude) == pytest.approx(list(b.delta_p * 1e6))
     assert str(q["duration"].units) == "second"
+
+
+def test_a_built_contact_model_is_recorded_and_reruns() -> None:
+    rod = il.Rod.paper()
+    model = il.dynamics.contact_model(rod, AISI_1010, "hertz")  # params hold inf (no yield)
+    r = il.simulate(rod, law=model, angle=0.4, velocity=(0.0, -1.0), mu=0.1)
+    rec = json.loads(json.dumps(r.to_dict()))["input"]
+    assert rec["law"]["type"] == "ContactModel" and rec["law"]["name"] == "hertz"
+    again = il.rerun(rec)
+    assert (again.e, again.delta_max) == (r.e, r.delta_max)

@@ -73,7 +73,7 @@ def encode(value: Any, key: str = "") -> Any:
             if f.init and not f.name.startswith("_"):
                 out[f.name] = encode(getattr(value, f.name), f.name)
         if isinstance(value, ContactModel):  # the compiled parameters define the model
-            out["params"] = {"value": [float(p) for p in value.params], "unit": "1"}
+            out["params"] = encode([float(p) for p in value.params], "params")
             out["details"] = {k: encode(float(v), "") for k, v in value.details.items()}
             out.pop("references", None)
         return out
@@ -88,8 +88,11 @@ def encode(value: Any, key: str = "") -> Any:
     if isinstance(value, np.ndarray):
         value = value.tolist()
     if isinstance(value, list | tuple):
+        unit = UNITS.get(key, _UNKNOWN_UNIT)
         if value and all(isinstance(v, float | int) and not isinstance(v, bool) for v in value):
-            return {"value": [float(v) for v in value], "unit": UNITS.get(key, _UNKNOWN_UNIT)}
+            if all(math.isfinite(v) for v in value):
+                return {"value": [float(v) for v in value], "unit": unit}
+            return [_float(float(v), unit) for v in value]  # inf/NaN kept, one by one
         return [encode(v, key) for v in value]
     if isinstance(value, Mapping):
         return {str(k): encode(v, str(k)) for k, v in value.items()}
