@@ -1,4 +1,4 @@
-"""Simulate the paper's 20 deg drop with two contact laws and the three friction models.
+"""Simulate the paper's 20 deg drop with two contact laws and three of the four friction models.
 
 What it shows:
 

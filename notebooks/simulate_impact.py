@@ -26,6 +26,7 @@ import numpy as np
 
 import impactlab as il
 from impactlab.contact import get_law
+from impactlab.dynamics.plotting import plot_force_penetration
 
 rod = il.Rod.paper()
 rod  # noqa: B018 (a notebook cell's result: shown as a table in Jupyter)
@@ -74,6 +75,17 @@ ax.set_xlabel("time [ms]")
 ax.set_ylabel("normal force [N]")
 ax.legend()
 fig.savefig("force_time.png", dpi=100)
+
+# %% [markdown]
+# The figures of one impact come ready-made from `impactlab.dynamics.plotting`:
+# `plot_force_time`, `plot_force_penetration`, `plot_contact_path` and `plot_dent` (each takes
+# `ax=` to draw into your own axes; `save_figures(r, folder)` writes all four). Each returns
+# its Figure, which the notebook shows once.
+
+# %%
+fig = plot_force_penetration(r)
+fig.savefig("force_penetration.png", dpi=100)
+fig  # noqa: B018 (the cell's value: the notebook shows the figure)
 
 # %% [markdown]
 # ## Many impacts at once

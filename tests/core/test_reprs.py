@@ -80,3 +80,14 @@ def test_study_repr_of_a_sample() -> None:
         sample=Sample(size=500, seed=3, inputs={"mu": Normal(0.2, 0.02)}),
     )
     assert "sample: mu[500] dist normal, mean 0.2, std 0.02" in repr(st)
+
+
+def test_synthetic_truth_repr_is_one_line_without_arrays() -> None:
+    from impactlab.testing.impacts import ImpactTruth
+
+    path = np.zeros((500, 4))
+    truth = ImpactTruth(0.3, (0.0, -1.0), 0.0, (0.1, 0.5), 2.0, (0.0, -1.0), (0.1, 0.5), 0.5,
+                        0.2, "slip", 1e-4, "engine", 6e-5, -2e-5, path)  # fmt: skip
+    text = repr(truth)
+    assert "\n" not in text and "<500 rows>" in text and "0." * 20 not in text
+    assert "regime='slip'" in text and "e=0.5" in text

@@ -39,6 +39,10 @@ def test_site_builds(site: Path) -> None:
                 "impactlab.dynamics.simulate.simulate",
                 "impactlab.dynamics.results.ImpactResult",
                 "impactlab.dynamics.results.DentMap",
+                "impactlab.dynamics.simulate.rerun",
+                "impactlab.dynamics.provenance.input_record",
+                "impactlab.dynamics.plotting.plot_force_time",
+                "impactlab.dynamics.plotting.save_figures",
             ),
         ),
         (

@@ -29,7 +29,7 @@ CASES: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
             r"e = 0\.42\d\d, delta_p = 6\d\.\d\d um",
             r"13 cases; regimes: frictionless slip stick reversal",
         ),
-        ("force_time.png", "batch.nc"),
+        ("force_time.png", "force_penetration.png", "batch.nc"),
     ),
     "invert_dent": (
         (r"T = 4\.106 ms, F = 69\.\d N", r"45 deg: T = 1\.382 ms"),

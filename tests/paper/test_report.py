@@ -88,7 +88,7 @@ def _comparison() -> pd.DataFrame:
             45,
             "ghaednia",
             "impulse_ratio",
-            "delta_p [um]",
+            "delta_p, paper's sign [um]",
             -67.0,
             -111.1,
             0.658,

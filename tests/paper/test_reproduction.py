@@ -2,16 +2,19 @@
 
 from __future__ import annotations
 
+import json
 import re
 import sys
 
 import pandas as pd
 import pytest
 
+import impactlab as il
 from impactlab.analytic import invert
 from impactlab.cli import main
 from impactlab.paper import reproduction as R
 from impactlab.paper.data import EXPERIMENTS
+from impactlab.paper.quantities import PAPER_DEPTH
 
 
 def test_refuses_foreign_non_empty_folder(tmp_path):
@@ -78,6 +81,10 @@ def test_report_numbers_match_library(analytic_run):
         ).duration
         assert f"{T * 1e3:.4g}" in text and f"{T * 1e3:.4g}" in html
     assert re.search(r"20 deg: T = 4\.106 ms vs published 4\.30 ms .*PASS", text)
+    # the headline says what the PASS checks, and what it does not
+    assert "What was checked, and what was not" in text
+    assert "it does not check that T is the duration of the impact" in text
+    assert "paper's sign" in text  # the paper's negative depths only under that label
     assert '<img src="data:image/png;base64,' in html  # self-contained (figures embedded)
     # --no-simulate skips "Can physics explain the experiment?"
     assert "Can physics explain" not in text
@@ -125,7 +132,17 @@ def test_end_to_end(tmp_path_factory):
         & (sims["law"] == "ghaednia")
         & (sims["friction"] == "impulse_ratio")
     ].iloc[0]
-    assert f"{g20['e']:.4g}" in text and f"{g20['delta_p [um]']:.4g}" in text
+    assert f"{g20['e']:.4g}" in text and f"{g20[PAPER_DEPTH]:.4g}" in text
+    # every simulation's input, rerun to the same numbers
+    records = json.loads(res.files["simulation_inputs"].read_text())
+    assert len(records) == 18 and "simulation_inputs.json" in text
+    again = il.rerun(records["20 deg, ghaednia, impulse_ratio"])
+    assert f"{again.e:.4g}" == f"{g20['e']:.4g}"
+    # the headline names the simulated durations' disagreement with a factor
+    exp_T = res.experimental.set_index("angle [deg]")["T [ms]"]
+    low = (sims["T [ms]"] / sims["angle [deg]"].map(exp_T)).min()
+    assert f"every simulated impact lasts {low:.2g}-" in text
+    assert "Against the paper's own simulated T (Tables 2-3), impactlab's are" in text
     # only our files in the folder
     allowed = {p.name for p in res.files.values()} | {R.MARKER}
     assert {p.name for p in out.iterdir()} <= allowed

@@ -223,6 +223,13 @@ def invert_cmd(
         None, "--samples", help="Monte Carlo samples (default 20000)."
     ),
     seed: int | None = typer.Option(None, "--seed", help="Monte Carlo seed (default 0)."),
+    flat: str | None = typer.Option(
+        None,
+        "--flat",
+        help="Flat material preset (e.g. aisi-1010; with --case the paper's flat): also "
+        "simulate the impact (ghaednia law, the measured angle, v_i and mu) and warn when T "
+        "or F is more than 3 times off.",
+    ),
     as_json: bool = typer.Option(False, "--json", help="Machine-readable output (SI)."),
 ) -> None:
     """Impact duration T and mean normal force F from a measured oblique impact of the rod.
@@ -245,10 +252,52 @@ def invert_cmd(
         samples=samples,
         seed=seed,
     )
+    if flat is None and case is not None:
+        flat = "aisi-1010"  # the paper's flat
+    model, warnings = _compare_with_engine(res, flat) if flat is not None else ({}, [])
     if as_json:
-        print(json.dumps(inversion_json(res, given), indent=2))
-    else:
-        _print_result(res, given)
+        data = inversion_json(res, given)
+        if model:
+            data["model"] = to_json(model, SI_UNITS)
+        print(json.dumps({**data, "warnings": warnings}, indent=2))
+        return
+    _print_result(res, given)
+    if model:
+        rows = [(f"model {k} ({model['law']})", *field_row(k, v, SI_UNITS[k])[1:])
+                for k, v in model.items() if isinstance(v, float)]  # fmt: skip
+        print_rows(rows, f"simulated impact on {model['flat']}")
+    for text in warnings:
+        typer.echo(f"warning: {text}", err=True)
+
+
+def _compare_with_engine(res: InversionResult, flat: str) -> tuple[dict[str, Any], list[str]]:
+    """The impact simulated with the measured angle, tip velocity v_i (no spin) and mu on
+    ``flat``, and the warnings of ``experiment.consistency`` on the inferred T and F."""
+    from impactlab.dynamics import simulate  # lazy: a fast CLI start
+    from impactlab.experiment.consistency import check_against_model
+    from impactlab.materials import get_material
+
+    try:
+        material = get_material(flat.strip().lower())
+    except ValueError as exc:
+        raise UserError(f"--flat: {exc}") from None
+    rod = res.rod
+    body = Rod(length=rod["length"], tip_radius=rod["tip_radius"], mass=rod["mass"],
+               inertia=rod.get("inertia"))  # fmt: skip
+    law = "ghaednia"
+    try:
+        r = simulate(body, material, law=law, mu=res.inputs["mu"][0],
+                     angle=res.inputs["angle"][0], velocity=(0.0, -abs(res.inputs["v_i"][0])),
+                     history=False)  # fmt: skip
+    except ValueError as exc:
+        raise UserError(f"--flat: the simulated impact failed: {exc}") from None
+    model: dict[str, Any] = {"law": law, "flat": material.name}
+    model |= {"duration": r.duration, "mean_force": r.mean_force, "e": r.e, "delta_p": r.delta_p}
+    warnings = check_against_model(
+        res.duration, res.mean_force, model_duration=r.duration, model_force=r.mean_force,
+        law=law, sigma_duration=res.sigma_T_linear,
+    )  # fmt: skip
+    return model, warnings
 
 
 #: SI units of the inversion's inputs, by keyword of ``impactlab.analytic.invert``.

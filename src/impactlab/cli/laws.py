@@ -13,10 +13,12 @@ Examples::
 from __future__ import annotations
 
 import sys
+import textwrap
 from typing import Any
 
 import typer
 from rich.table import Table
+from rich.text import Text
 
 from impactlab._display import field_row
 from impactlab._json import quantity as quantity_json
@@ -185,11 +187,41 @@ def _accuracy(name: str | None, as_json: bool) -> None:
     )
 
 
+#: The narrowest terminal [columns] that gets the overview as a table; below it, one block per
+#: law, each field wrapped to the terminal's width (an 80-column terminal reads it unfolded).
+WIDE_TABLE = 120
+
+
+def _law_blocks(width: int) -> None:
+    """The overview as one block per law: its name and title, then the reference with its DOI,
+    the validity and the parameters, each wrapped to ``width`` under a hanging indent."""
+    for n in law_names():
+        law = get_law(n)
+        lines = textwrap.wrap(f"{n}: {law.title}", width)
+        for label, text in (
+            ("reference", f"{law.reference} (doi:{law.doi})"),
+            ("validity", law.validity),
+            ("parameters", _param_text(law).replace("\n", "; ")),
+        ):
+            lines += textwrap.wrap(
+                f"{label}: {text}",
+                width,
+                initial_indent="  ",
+                subsequent_indent="    ",
+                break_on_hyphens=False,
+            )
+        console.print(Text("\n".join(lines) + "\n"))
+    console.print(Text("Details of one law: impactlab laws NAME (see docs/laws/)."))
+
+
 def _laws(name: str | None, radius: str, body: str, flat: str, as_json: bool) -> None:
     if name is None:
         data = {n: _described(get_law(n)) for n in law_names()}
         if as_json:
             emit(data, as_json=True, units=_UNITS)
+            return
+        if console.width < WIDE_TABLE:
+            _law_blocks(console.width)
             return
         table = Table(title="Contact laws", show_header=True, header_style="bold", show_lines=True)
         table.add_column("name", no_wrap=True)

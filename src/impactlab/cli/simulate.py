@@ -11,6 +11,7 @@ result's warnings (``impactlab.flags``) go to stderr, one line each, and into ``
 from __future__ import annotations
 
 import json
+import math
 import sys
 from dataclasses import dataclass
 from pathlib import Path
@@ -235,14 +236,35 @@ def _mu(value: Any, name: str) -> float:
         raise UserError(f"{name} must be a number, got {value!r}") from None
 
 
-def _report(
-    result: ImpactResult | DropResult, *, out: Path | None, as_json: bool, sphere: bool
-) -> None:
+def run_from(path: Path) -> ImpactResult | DropResult:
+    """The impact recorded in ``path`` (``impactlab simulate --json`` output, an
+    ``impact_result.json`` or a result's ``to_dict()``), simulated again."""
+    from impactlab.dynamics import rerun  # lazy: a fast CLI start
+
+    try:
+        record = json.loads(path.read_text())
+    except OSError as exc:
+        raise UserError(f"--from: cannot read {str(path)!r}: {exc.strerror}") from None
+    except json.JSONDecodeError as exc:
+        why = f"{exc.msg}, line {exc.lineno}"
+        raise UserError(f"--from: {str(path)!r} is not JSON ({why})") from None
+    if not isinstance(record, dict):
+        raise UserError(f"--from: {str(path)!r} holds no result (a JSON object is needed)")
+    try:
+        if record.get("input", record).get("body", {}).get("type") == "FlexibleRod":
+            return rerun(record, history=False)
+        return rerun(record)
+    except (ValueError, TypeError) as exc:
+        raise UserError(f"--from {str(path)!r}: {exc}") from None
+
+
+def _report(result: ImpactResult | DropResult, *, out: Path | None, as_json: bool) -> None:
     for text in result.warnings:
         print(f"warning: {text}", file=sys.stderr)
     if isinstance(result, DropResult):
         report_drop(result, as_json=as_json)
         return
+    sphere = not math.isfinite(result.angle)
     hidden = ("angle", "angle_out") if sphere else ()
     data = {k: v for k, v in result.to_dict().items() if k not in hidden}
     files: list[str] = []
@@ -327,6 +349,12 @@ def simulate_cmd(
     config: Path = typer.Option(
         None, "--config", help="TOML file of these keys (or a 'simulate' table); options win."
     ),
+    from_file: Path = typer.Option(
+        None,
+        "--from",
+        help="Simulate again the impact recorded in a result's JSON (--json output or "
+        "impact_result.json: its 'input'); no other input options then.",
+    ),
     as_json: bool = typer.Option(
         False, "--json", help="Machine-readable output, SI (docs/json-schema.md)."
     ),
@@ -358,14 +386,29 @@ def simulate_cmd(
     cli["flexible"] = True if flexible else None
     if out is not None and not plot:
         raise UserError("--out applies only with --plot (where to save the figures)")
+    if from_file is not None:
+        given = [
+            "the body" if k == "body" else _FLAGS.get(k, "--" + k.replace("_", "-"))
+            for k, v in cli.items()
+            if v is not None
+        ]
+        given += ["--config"] if config is not None else []
+        if given:
+            raise UserError(
+                f"--from re-runs the recorded input as it is; leave out {', '.join(given)}"
+            )
+        result = run_from(from_file)
+        if plot and isinstance(result, DropResult):
+            raise UserError("--plot: the flexible rod's drop has no figures here; leave it out")
     opt = _merge(load_toml(config), cli, config)
     if plot and opt.given("flexible"):
         raise UserError("--plot: the flexible rod's drop has no figures here; leave it out")
     from impactlab.experiment.checks import output_folder  # lazy: a fast CLI start
 
     folder = output_folder(Path(".") if out is None else out, "--out") if plot else None
-    sphere = str(opt.values.get("body", "rod")).lower() == "sphere"
-    _report(run_simulate(opt), out=folder, as_json=as_json, sphere=sphere)
+    if from_file is None:
+        result = run_simulate(opt)
+    _report(result, out=folder, as_json=as_json)
 
 
 def register(app: typer.Typer) -> None:

@@ -251,7 +251,7 @@ def run_cmd(
     ds = res.dataset
     if netcdf is not None:
         export_netcdf(ds, netcdf)
-    files = [str(f) for f in plot_sweep(ds, plot)] if plot is not None else []
+    files = [str(f) for f in _plots(plot_sweep, ds, plot)] if plot is not None else []
     if res.study.uncertainty is not None and not quiet:
         _print_uncertainty(ds, None, None, as_json=False)
     if quiet and not as_json:
@@ -317,17 +317,38 @@ def plot_cmd(
     store: _Store,
     out: Annotated[Path, typer.Option("--out", "-o", help="Folder for the PNG files.")],
 ) -> None:
-    """Regime map (with mu_c), maps of e, delta_p, L_s, T over angle and velocity."""
+    """Regime map (with mu_c on angle x mu), maps of e, delta_p, L_s, T over the swept inputs
+    (angle, mu, velocities; sphere studies too), histograms of samples; names what it cannot
+    draw and why."""
     from impactlab.sweep import open_sweep, plot_sweep
 
-    files = plot_sweep(open_sweep(store), out)
+    skipped: list[str] = []
+    files = _plots(plot_sweep, open_sweep(store), out, skipped)
     if not files:
-        raise UserError(
-            "nothing to plot: the sweep needs an 'angle' dimension (with 'mu' for the "
-            "regime map) or a 'sample' dimension"
-        )
+        raise UserError("nothing to plot: " + "; ".join(skipped))
     for f in files:
         print(f)
+
+
+def _plots(plot_sweep: Any, ds: Any, folder: Path, skipped: list[str] | None = None) -> list[Any]:
+    """``plot_sweep(ds, folder)``; each plot it could not draw named on stderr (one line, with
+    the reason) and in ``skipped``; with ``skipped`` given and no plot drawn the caller says
+    why instead."""
+    from impactlab.sweep import PlotSkipped
+
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", PlotSkipped)
+        files = plot_sweep(ds, folder)
+    reasons = [str(w.message) for w in caught if w.category is PlotSkipped]
+    for w in caught:
+        if w.category is not PlotSkipped:
+            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+    if skipped is not None:
+        skipped.extend(r.removeprefix("not plotted: ") for r in reasons)
+    if files or skipped is None:
+        for reason in reasons:
+            print(reason, file=sys.stderr)
+    return list(files)
 
 
 @sweep_app.command("export")

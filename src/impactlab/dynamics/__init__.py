@@ -20,7 +20,7 @@ from impactlab.dynamics.drop import simulate_drop
 from impactlab.dynamics.drop_result import ContactRecord, DropResult
 from impactlab.dynamics.models import contact_model
 from impactlab.dynamics.results import BatchResult, DentMap, History, ImpactResult
-from impactlab.dynamics.simulate import simulate, simulate_batch
+from impactlab.dynamics.simulate import rerun, simulate, simulate_batch
 
 __all__ = [
     "DEFAULT_RTOL",
@@ -36,6 +36,7 @@ __all__ = [
     "History",
     "ImpactResult",
     "contact_model",
+    "rerun",
     "run_arrays",
     "simulate",
     "simulate_batch",

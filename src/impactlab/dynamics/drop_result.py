@@ -16,8 +16,11 @@ import numpy as np
 
 from impactlab._display import html_table
 from impactlab._json import jsonable
+from impactlab._version import __version__
 from impactlab.contact.ranges import law_range
 from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.provenance import result_record
+from impactlab.dynamics.results import pint_quantities
 from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
 from impactlab.references import Reference
 from impactlab.references import dois as doi_list
@@ -281,6 +284,8 @@ class DropResult:
     fitted_delta_ratio_max: float = math.inf
     history: DropHistory | None = field(default=None, repr=False)
     references: tuple[Reference, ...] = field(default=(), repr=False)
+    #: what ``simulate`` was given: the source of ``input`` (``dynamics.provenance``)
+    _call: tuple[Any, ...] | None = field(default=None, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "flags", ResultFlag(int(self.flags)))
@@ -333,12 +338,22 @@ class DropResult:
         """DOIs of the sources this result used, in order, without repeats."""
         return doi_list(self.references)
 
+    def to_pint(self, registry: Any = None) -> dict[str, Any]:
+        """The totals (``UNITS``, ``mean_force``) as pint Quantities in SI (``registry``: yours)."""
+        return pint_quantities(self, {**UNITS, "mean_force": "N"}, registry)
+
+    @property
+    def input(self) -> dict[str, Any] | None:
+        """What was simulated, JSON-ready, as ``ImpactResult.input`` (with the drop's options);
+        None for a drop that ``impactlab.simulate`` did not return."""
+        return result_record(self)
+
     def to_dict(self, *, include_history: bool = False) -> dict[str, Any]:
         """JSON-ready values: scalars, ``contacts`` and ``dents`` as lists of dicts, the energy
         balance, the references' citations; the history as lists of columns if asked."""
         d: dict[str, Any] = {}
         for f in fields(self):
-            if f.name in ("history", "references", "contacts", "dents"):
+            if f.name in ("history", "references", "contacts", "dents", "_call"):
                 continue
             d[f.name] = getattr(self, f.name)
         d["contacts"] = [c.__dict__ for c in self.contacts]
@@ -348,6 +363,8 @@ class DropResult:
         d["mean_force"] = self.mean_force
         d["energy_balance"] = self.energy_balance
         d["references"] = [str(r) for r in self.references]
+        d["impactlab_version"] = __version__
+        d["input"] = self.input
         if include_history and self.history is not None:
             d["history"] = {k: self.history[k].tolist() for k in F.DROP_HISTORY_FIELDS}
         return jsonable(d)
@@ -365,6 +382,13 @@ class DropResult:
         ]
         warn = [("warning", text, "") for text in self.warnings]
         return [(a, b, "") for a, b in setup] + totals + per_contact + warn
+
+    def __repr__(self) -> str:
+        """One line: the body, the law and the headline totals (``print``: the table)."""
+        flags = f", flags={self.flags!r}" if self.flags else ""
+        return (f"DropResult(body={self.body!r}, law={self.law!r}, friction={self.friction!r}, "
+                f"n_contacts={self.n_contacts}, e={self.e:.6g}, delta_p={self.delta_p:.6g} m, "
+                f"duration={self.duration:.6g} s{flags})")  # fmt: skip
 
     def __str__(self) -> str:
         rows = self._rows()

@@ -163,6 +163,7 @@ def engine_result(
             "references": references,
             "_law_id": model.law_id,
             "_law_params": model.params,
+            "_call": None,  # simulate() records its checked arguments here
         }
     )
 

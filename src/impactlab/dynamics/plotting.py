@@ -1,6 +1,11 @@
 """Figures of one impact: force-time, force-penetration (loading and unloading branches) and the
 contact-point path with the predicted dent. Matplotlib only (through ``impactlab._mpl``, the
 package's backend policy); nothing here changes a result.
+
+Each ``plot_*`` draws into ``ax`` when given and returns its Figure. Without ``ax`` it makes a
+new Figure that pyplot does not keep open: a notebook shows it once (as the cell's value), and
+``fig.savefig(...)`` writes it; ``plt.show()`` does not list it (draw into ``ax`` of your own
+``plt.subplots()`` for that). ``save_figures`` writes all four.
 """
 
 from __future__ import annotations
@@ -23,7 +28,9 @@ def _history(result: ImpactResult) -> History:
 def _axes(ax: Any) -> tuple[Any, Any]:
     if ax is not None:
         return ax.figure, ax
-    fig, ax = pyplot().subplots(figsize=(6.0, 4.0), layout="constrained")
+    plt = pyplot()
+    fig, ax = plt.subplots(figsize=(6.0, 4.0), layout="constrained")
+    plt.close(fig)  # not kept by pyplot: a notebook shows the returned figure once
     return fig, ax
 
 

@@ -3,10 +3,11 @@ baseline).
 
 The same physics as the compiled engine (docs/engine/index.md), written independently in plain
 Python (``impactlab.dynamics.reference_problem``): the equations of motion, the normal contact
-history and the three friction models, with every phase switch located by ``solve_ivp``'s
-terminal events and the integration restarted in the new mode. Only the contact-law kernels
-(``impactlab.contact.kernels``) are shared. Slow (milliseconds per impact); use it to check the
-engine, not for production.
+history and the rigid engine's three point-contact friction models (partial slip has its
+own reference, ``impactlab.verification.partial_slip``), with every phase switch located by
+``solve_ivp``'s terminal events and the integration restarted in the new mode. Only the
+contact-law kernels (``impactlab.contact.kernels``) are shared. Slow (milliseconds per impact);
+use it to check the engine, not for production.
 """
 
 from __future__ import annotations

@@ -13,22 +13,30 @@ import numpy as np
 
 from impactlab import schema
 from impactlab._display import field_rows, flag_names, html_table, text_table
+from impactlab._version import __version__
 from impactlab.contact.ranges import extrapolation, extrapolation_flags, range_status
 from impactlab.dynamics.core.layout import HISTORY_FIELDS, OUTPUT_FIELDS
 from impactlab.dynamics.core.status import STATUS_MESSAGES
 from impactlab.dynamics.dent import dent_map
-from impactlab.dynamics.export import batch_dataset, batch_html, history_dataframe
+from impactlab.dynamics.export import batch_dataset, batch_html
+from impactlab.dynamics.history import HISTORY_UNITS, DentMap, History, readonly_copy
+from impactlab.dynamics.provenance import result_record
 from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
 from impactlab.references import Reference
 from impactlab.references import dois as doi_list
 
-
-def readonly_copy(a: Any) -> np.ndarray:
-    """A float64 copy of ``a`` that cannot be written to."""
-    out = np.array(a, dtype=np.float64, copy=True)
-    out.setflags(write=False)
-    return out
-
+__all__ = [
+    "HISTORY_UNITS",
+    "SUMMARY_FIELDS",
+    "UNITS",
+    "BatchResult",
+    "DentMap",
+    "History",
+    "ImpactResult",
+    "assemble_result",
+    "pint_quantities",
+    "readonly_copy",
+]
 
 #: Units of the ImpactResult scalar fields (from ``impactlab.schema``).
 UNITS: dict[str, str] = {
@@ -62,89 +70,6 @@ UNITS: dict[str, str] = {
         "max_delta_ratio",
     )
 }
-
-#: Units of the history columns (from ``impactlab.schema``).
-HISTORY_UNITS: dict[str, str] = {f.name: f.unit for f in schema.HISTORY_FIELDS}
-
-
-@dataclass(frozen=True, eq=False)
-class History:
-    """Time history of one impact (rows: accepted steps, dense-output points and events).
-
-    Columns (SI): see ``HISTORY_FIELDS``; each is also an attribute (``history.t``, ...).
-    ``phase`` is 0 on the loading curve and 1 on the unloading/reloading curve; ``stick`` is 1
-    while the contact point sticks (Coulomb) or has no gross slip (Mindlin).
-    """
-
-    data: np.ndarray = field(repr=False)
-
-    def __post_init__(self) -> None:
-        object.__setattr__(self, "data", readonly_copy(self.data))
-
-    def __len__(self) -> int:
-        return int(self.data.shape[0])
-
-    def __getattr__(self, name: str) -> np.ndarray:
-        try:
-            j = HISTORY_FIELDS.index(name)
-        except ValueError:
-            raise AttributeError(name) from None
-        return self.data[:, j]
-
-    def __getitem__(self, name: str) -> np.ndarray:
-        return self.__getattr__(name)
-
-    @property
-    def fields(self) -> tuple[str, ...]:
-        """Column names."""
-        return HISTORY_FIELDS
-
-    @property
-    def units(self) -> dict[str, str]:
-        """SI unit of each column (``"1"``: dimensionless)."""
-        return dict(HISTORY_UNITS)
-
-    def to_dataframe(self) -> Any:
-        """A pandas DataFrame: SI, units in ``.attrs``, categorical phase/stick (``export``)."""
-        return history_dataframe(self.data)
-
-    def __repr__(self) -> str:
-        return f"History({len(self)} rows: {', '.join(HISTORY_FIELDS)})"
-
-
-@dataclass(frozen=True, eq=False)
-class DentMap:
-    """Predicted permanent dent on the flat as a height map (see docs/engine/index.md).
-
-    x, y : grid coordinates on the flat [m]; x along the impact plane from the first contact
-        point (positive towards the centre-of-mass side), y across it.
-    height : (len(y), len(x)) surface height after the impact [m] (<= 0 inside the dent).
-    max_depth : deepest point [m] (equals ``delta_p`` for a single loading).
-    length : extent of the dent along x [m]; width : extent across (along y) [m].
-    """
-
-    x: np.ndarray = field(repr=False)
-    y: np.ndarray = field(repr=False)
-    height: np.ndarray = field(repr=False)
-    max_depth: float
-    length: float
-    width: float
-
-    def __post_init__(self) -> None:
-        for name in ("x", "y", "height"):
-            object.__setattr__(self, name, readonly_copy(getattr(self, name)))
-
-    def profile(self) -> tuple[np.ndarray, np.ndarray]:
-        """(x, height) along the centre line y = 0."""
-        j = int(np.argmin(np.abs(self.y)))
-        return self.x, self.height[j]
-
-    def __repr__(self) -> str:
-        return (
-            f"DentMap(max_depth={self.max_depth:.4g} m, length={self.length:.4g} m, "
-            f"width={self.width:.4g} m, grid={self.height.shape[1]}x{self.height.shape[0]})"
-        )
-
 
 #: The fields of an impact's summary, in order: ``print(result)``, ``_repr_html_`` and
 #: ``impactlab simulate`` show these (display units: ``impactlab._display``).
@@ -204,6 +129,9 @@ class ImpactResult:
     references: tuple[Reference, ...] = field(default=(), repr=False)
     _law_id: int = field(default=-1, repr=False)
     _law_params: np.ndarray | None = field(default=None, repr=False)
+    #: What ``simulate`` was given, checked (body, flat, law, law_params, gravity [m/s^2],
+    #: constant_angle, rtol, drop options): the source of ``input`` (``dynamics.provenance``).
+    _call: tuple[Any, ...] | None = field(default=None, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         # the engine writes the bitmask as a float; LAW_EXTRAPOLATED from contact.ranges (C2)
@@ -243,9 +171,25 @@ class ImpactResult:
         d["extrapolated"] = self.extrapolated
         d["flags"] = int(self.flags)
         d["warnings"] = list(self.warnings)
+        d["impactlab_version"] = __version__
+        d["input"] = self.input
         if include_history and self.history is not None:
             d["history"] = {k: self.history[k].tolist() for k in HISTORY_FIELDS}
         return d
+
+    def to_pint(self, registry: Any = None) -> dict[str, Any]:
+        """The scalar fields (and ``max_delta_ratio``) as pint Quantities in SI, e.g.
+        ``r.to_pint()["delta_p"].to("um")``; ``registry``: your pint registry (default
+        ``impactlab.units.registry()``)."""
+        return pint_quantities(self, {**UNITS, "max_delta_ratio": "1"}, registry)
+
+    @property
+    def input(self) -> dict[str, Any] | None:
+        """What was simulated, JSON-ready: body, materials, flat, law and its parameters,
+        friction, mu, angle, velocity, spin, gravity, tolerance and the impactlab version
+        (``impactlab.dynamics.provenance``); ``impactlab.rerun(result.to_dict())`` runs it
+        again. None for a result that ``simulate`` did not return."""
+        return result_record(self)
 
     def dois(self) -> tuple[str, ...]:
         """DOIs of the sources this result used (contact law, friction model if mu > 0, the
@@ -253,9 +197,12 @@ class ImpactResult:
         return doi_list(self.references)
 
     def summary(self) -> dict[str, Any]:
-        """The summary's fields (``SUMMARY_FIELDS``, SI; no angles for a sphere) and the
-        names of the flags."""
-        data = {k: getattr(self, k) for k in SUMMARY_FIELDS}
+        """What was simulated (``body``, ``flat``: their descriptions, when ``simulate`` made
+        the result), the summary's fields (``SUMMARY_FIELDS``, SI; no angles for a sphere) and
+        the names of the flags."""
+        call = getattr(self, "_call", None)  # what simulate() was given (provenance)
+        data = {} if call is None else {"body": str(call[0]), "flat": call[1].name}
+        data |= {k: getattr(self, k) for k in SUMMARY_FIELDS}
         for k in ("angle", "angle_out"):
             if not np.isfinite(data[k]):
                 del data[k]  # a sphere
@@ -285,6 +232,28 @@ class ImpactResult:
             self._law_id, self._law_params, h.penetration, h.contact_x, nx=nx, ny=ny, margin=margin
         )
         return DentMap(*surface)
+
+
+def _pint_unit(unit: str) -> str:
+    return "dimensionless" if unit == "1" else unit
+
+
+def pint_quantities(result: Any, units: dict[str, str], registry: Any = None) -> dict[str, Any]:
+    """The fields of ``result`` that have a unit in ``units`` as pint Quantities (SI; a pair
+    such as ``velocity_out`` as one Quantity of an array); ``registry``: the caller's pint
+    registry (default ``impactlab.units.registry()``)."""
+    from impactlab.units import registry as shared  # pint loads on first use
+
+    ureg = shared() if registry is None else registry
+    out: dict[str, Any] = {}
+    for name, unit in units.items():
+        value = getattr(result, name, None)
+        if isinstance(value, tuple):
+            value = np.asarray(value, dtype=np.float64)
+        elif not isinstance(value, float | int) or isinstance(value, bool):
+            continue
+        out[name] = ureg.Quantity(value, _pint_unit(unit))
+    return out
 
 
 def assemble_result(values: dict[str, Any]) -> ImpactResult:
@@ -386,6 +355,21 @@ class BatchResult:
     def to_xarray(self) -> Any:
         """An ``xarray.Dataset`` over ``case`` (units in attributes; ``dynamics.export``)."""
         return batch_dataset(self)
+
+    def to_pint(self, registry: Any = None) -> dict[str, Any]:
+        """Each output column with a unit (``impactlab.schema``) as a pint Quantity of an array
+        (SI; NaN where a case failed); ``registry``: your pint registry."""
+        from impactlab.units import registry as shared  # pint loads on first use
+
+        ureg = shared() if registry is None else registry
+        out: dict[str, Any] = {}
+        for j, name in enumerate(OUTPUT_FIELDS):
+            try:
+                unit = schema.unit(name)
+            except KeyError:
+                continue
+            out[name] = ureg.Quantity(np.array(self.out[:, j]), _pint_unit(unit))
+        return out
 
     def _repr_html_(self) -> str:
         return batch_html(self)

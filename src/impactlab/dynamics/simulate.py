@@ -48,6 +48,7 @@ from impactlab.dynamics.models import (
 )
 from impactlab.dynamics.outcome import engine_result, impact_result, status_error
 from impactlab.dynamics.partial_slip import simulate_partial_slip
+from impactlab.dynamics.provenance import from_record
 from impactlab.dynamics.results import BatchResult, ImpactResult
 from impactlab.friction import DEFAULT_MU, FrictionKind, get_friction
 from impactlab.materials import AISI_1010, G0, Material
@@ -142,8 +143,11 @@ def simulate(
     if isinstance(body, FlexibleRod) or drop_options:  # the flexible drop: a DropResult
         args = {"law": law, "friction": friction, "mu": mu, "angle": angle, "velocity": velocity}
         args |= {"spin": spin, "law_params": law_params, "gravity": gravity, "rtol": rtol}
-        return simulate_flexible(body, flat, constant_angle=constant_angle, history=history,
+        drop = simulate_flexible(body, flat, constant_angle=constant_angle, history=history,
                                  **args, **drop_options)  # fmt: skip
+        object.__setattr__(drop, "_call", (body, flat, law, law_params, gravity, False, rtol,
+                                           drop_options))  # fmt: skip
+        return drop
     r = _fast(body, flat, law, friction, mu, angle, velocity, spin, law_params, gravity,
               constant_angle, rtol, history)  # fmt: skip
     if r is not None:
@@ -163,8 +167,13 @@ def simulate(
         rtol=rtol,
     )
     if x.friction.kind is FrictionKind.PARTIAL_SLIP:  # the partial-slip engine (slipcore)
-        return simulate_partial_slip(x, check_flag("history", history))
-    return _run_one(x, check_flag("history", history))
+        r = simulate_partial_slip(x, check_flag("history", history))
+    else:
+        r = _run_one(x, check_flag("history", history))
+    # what was simulated, checked, for ImpactResult.input (the fast path records the same)
+    r.__dict__["_call"] = (x.body, x.flat, law, law_params, x.gravity, x.constant_angle, x.rtol,
+                           None)  # fmt: skip
+    return r
 
 
 #: Types of the plain numbers ``_fast`` takes (not bool, str, Quantity or 0-d arrays).
@@ -267,9 +276,9 @@ def _fast(
     if status != S.ST_OK:
         raise status_error(int(status), model, vn=vn, gravity=g)
     hist = hist[:nh] if history else None
-    return engine_result(
-        out, hist, model, fric, refs_mu if m > 0.0 else refs, m, th_out, (vx, vy), w
-    )
+    r = engine_result(out, hist, model, fric, refs_mu if m > 0.0 else refs, m, th_out, (vx, vy), w)
+    r.__dict__["_call"] = (body, flat, law, None, g, constant_angle, tol, None)  # as the full path
+    return r
 
 
 def _run_one(x: ImpactInputs, history: bool) -> ImpactResult:
@@ -394,4 +403,12 @@ def simulate_batch(
     )
 
 
-__all__ = ["simulate", "simulate_batch"]
+def rerun(record: Mapping[str, Any], **changes: Any) -> ImpactResult | DropResult:
+    """Run a recorded impact again: ``record`` is a result's ``to_dict()`` (or its ``input``,
+    or the JSON of ``impactlab simulate --json``); ``changes`` override its arguments
+    (``rerun(r.to_dict(), mu=0.3)``). ValueError when the record is not one."""
+    args = {**from_record(record), **changes}
+    return simulate(args.pop("body"), **args)
+
+
+__all__ = ["rerun", "simulate", "simulate_batch"]

@@ -10,12 +10,14 @@ never lost; an invalid argument raises a TypeError or ValueError naming it at on
    measured e, mu, v_i, angle, delta_p, L_s; F from Eq. 29 with the measured centre-of-mass
    velocity change);
 4. ``model`` (optional, with ``flat``): the impact engine run with the measured initial state, for
-   comparison (the paper's Tables 2-3);
+   comparison (the paper's Tables 2-3); then a warning for an inferred T or F far from the
+   simulated impact's, or a T longer than the marker fits allow (``experiment.consistency``);
 5. ``figures`` and ``results.json`` in ``out_dir``.
 """
 
 from __future__ import annotations
 
+import inspect
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -25,6 +27,7 @@ from impactlab._mpl import pyplot
 from impactlab.bodies import PAPER_ROD, Rod
 from impactlab.dynamics import simulate
 from impactlab.experiment.checks import check_instance, check_options, check_path, output_folder
+from impactlab.experiment.consistency import check_against_model, check_single_impact
 from impactlab.experiment.kinematics import ImpactKinematics, measure_impact, parse_up
 from impactlab.experiment.markers import read_markers
 from impactlab.experiment.plots import plot_dent, plot_kinematics
@@ -147,6 +150,33 @@ def _model_stage(res: ExperimentResult, rod: Rod, flat: Material, law: str) -> N
         res.model = _engine_comparison(rod, flat, res.kinematics, law)
     except ValueError as exc:
         res.errors["model"] = _message(exc)
+
+
+#: The marker fits' default guard (frames left out on each side of the impact instant).
+_GUARD = int(inspect.signature(measure_impact).parameters["guard"].default)
+
+
+def _plausibility_stage(res: ExperimentResult, guard: int) -> None:
+    """Warnings when the inferred T or F disagree with the simulated impact (``model``) or T
+    with the single-impact assumption of the marker fits (``experiment.consistency``)."""
+    inv, k = res.inversion, res.kinematics
+    if inv is None:
+        return
+    found: list[str] = []
+    if res.model is not None:
+        found += check_against_model(
+            inv.duration,
+            inv.mean_force,
+            model_duration=res.model.get("duration"),
+            model_force=res.model.get("mean_force"),
+            law=str(res.model.get("law", "")),
+            sigma_duration=inv.sigma_T_mc,
+        )
+    if k is not None and len(k.pre.tau) and len(k.post.tau):
+        gap = float(min(k.post.tau)) - float(max(k.pre.tau))
+        single = check_single_impact(inv.duration, gap, guard)
+        found += [single] if single else []
+    res.warnings += [f"plausibility: {w}" for w in found]
 
 
 def _figures_stage(res: ExperimentResult, out: Path) -> None:
@@ -297,6 +327,7 @@ def analyze(
         _inversion_stage(res, res.kinematics, res.dent, run.rod, gravity, n_samples)
     if run.flat is not None:
         _model_stage(res, run.rod, run.flat, law)
+    _plausibility_stage(res, int(run.kinematics.get("guard", _GUARD)))
     if run.out is not None:
         if figures:
             _figures_stage(res, run.out)
@@ -318,7 +349,7 @@ def _engine_comparison(rod: Rod, flat: Material, k: ImpactKinematics, law: str) 
         spin=k.spin_in.value,
     )
     out: dict[str, Any] = {"law": law, "flat": flat.name}
-    for name in ("e", "delta_p", "sliding_length", "duration"):
+    for name in ("e", "delta_p", "sliding_length", "duration", "mean_force"):
         out[name] = float(getattr(r, name))
     out["velocity_out"] = [float(v) for v in r.velocity_out]
     out["spin_out"] = float(r.spin_out)

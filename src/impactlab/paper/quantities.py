@@ -12,9 +12,20 @@ from typing import Any
 TOL_SIMULATED = 0.15
 TOL_EXPERIMENT_T = 0.05
 
+#: The column of a dent depth in the paper's sign (negative, as its tables print it); impactlab
+#: reports delta_p as a positive depth everywhere else (``impactlab.schema``).
+PAPER_DEPTH = "delta_p, paper's sign [um]"
+#: The note under a table with ``PAPER_DEPTH``.
+PAPER_SIGN_NOTE = (
+    'Signs: the columns marked "paper\'s sign" print the dent depth as the paper does '
+    "(negative); impactlab's delta_p is a positive depth (as in Section 11 and every other "
+    "output). L_s keeps one sign everywhere: negative when the tip slides towards -x, as in the "
+    "paper's tables and impactlab's sliding_length."
+)
+
 #: The compared quantities: (attribute of ``PublishedRow``, column label, display scale).
 QUANTS: tuple[tuple[str, str, float], ...] = (
-    ("delta_p", "delta_p [um]", 1e6),
+    ("delta_p", PAPER_DEPTH, 1e6),
     ("L_s", "L_s [um]", 1e6),
     ("e", "e", 1.0),
     ("T", "T [ms]", 1e3),

@@ -123,6 +123,8 @@ def reproduce(
         },
     )
     figs = _write_figures(out, inertia, sims, written)
+    if sims:
+        written["simulation_inputs"] = _write_inputs(out / "simulation_inputs.json", sims)
     if physics:
         p = figure_drop(out / "physics_drop_20deg.png", physics[("flexible rod", 20)])
         written["physics_drop_20"] = p
@@ -142,6 +144,7 @@ def reproduce(
             elapsed=time.perf_counter() - t0,
             version=__version__,
             physics=phystab,
+            inputs_file="simulation_inputs.json" if sims else None,
         ),
         written,
     )
@@ -184,6 +187,14 @@ def _write_report(out: Path, data: ReportData, written: dict[str, Path]) -> tupl
         )
     )
     return md, html_path
+
+
+def _write_inputs(path: Path, sims: Simulations) -> Path:
+    """What each simulation simulated (``ImpactResult.input``: bodies, materials, law, friction,
+    tolerances, impactlab version), keyed ``"20 deg, ghaednia, coulomb"``."""
+    records = {f"{ang} deg, {law}, {fr}": r.input for (ang, law, fr), r in sims.items()}
+    path.write_text(json.dumps(records, indent=1) + "\n")
+    return path
 
 
 def _write_tables(out: Path, tables: Mapping[str, pd.DataFrame | None]) -> dict[str, Path]:

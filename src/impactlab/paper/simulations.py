@@ -14,7 +14,13 @@ import impactlab.analytic as an
 from impactlab.bodies import PAPER_ROD
 from impactlab.dynamics import simulate
 from impactlab.paper import data as D
-from impactlab.paper.quantities import Simulations, flag_columns, paper_depth, rel_diff
+from impactlab.paper.quantities import (
+    PAPER_DEPTH,
+    Simulations,
+    flag_columns,
+    paper_depth,
+    rel_diff,
+)
 
 #: Friction models the simulations are run with (paper Eq. 7, and Coulomb stick/slip).
 FRICTIONS: tuple[str, ...] = ("impulse_ratio", "coulomb")
@@ -60,7 +66,7 @@ def simulation_table(sims: Simulations) -> pd.DataFrame:
                 "angle [deg]": ang,
                 "law": law,
                 "friction": fr,
-                "delta_p [um]": paper_depth(res) * 1e6,
+                PAPER_DEPTH: paper_depth(res) * 1e6,
                 "delta_max [um]": res.delta_max * 1e6,
                 "L_s [um]": res.sliding_length * 1e6,
                 "contact travel [um]": res.contact_travel * 1e6,

@@ -28,7 +28,8 @@ from impactlab.sweep.integrity import DamagedStoreError
 from impactlab.sweep.limits import DEFAULT_MAX_CASES, SweepSizeWarning
 from impactlab.sweep.models import Statics
 from impactlab.sweep.options import EngineOptions, UncertaintySpec
-from impactlab.sweep.plots import SliceWarning, plot_output_map, plot_regime_map, plot_sweep
+from impactlab.sweep.plots import SliceWarning, plot_output_map, plot_regime_map
+from impactlab.sweep.plotsweep import PlotSkipped, plot_plan, plot_sweep
 from impactlab.sweep.runner import SweepInterrupted, SweepResult, SweepStats, run_sweep
 from impactlab.sweep.store import (
     CorruptStoreError,
@@ -63,6 +64,7 @@ __all__ = [
     "Layout",
     "LogNormal",
     "Normal",
+    "PlotSkipped",
     "Sample",
     "SliceWarning",
     "Statics",
@@ -84,6 +86,7 @@ __all__ = [
     "numba_cache_stats",
     "open_sweep",
     "plot_output_map",
+    "plot_plan",
     "plot_regime_map",
     "plot_sweep",
     "run_sweep",

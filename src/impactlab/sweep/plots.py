@@ -1,27 +1,22 @@
-"""Plots of a sweep: regime maps with the analytic mu_c boundary, and output maps.
+"""Plots of a sweep: regime maps with the analytic mu_c boundary, output maps, histograms.
 
-- ``plot_regime_map``: the friction regime (engine codes, e.g. slip / stick / reversal) over the
-  angle and mu, with the rigid-body boundary mu_c(theta) = a b / (k^2 + b^2)
-  (``impactlab.analytic.critical_friction``; physics notes Sec. 1) drawn on top.
-- ``plot_output_map``: one output over two swept inputs (e.g. angle and vy), or a line over one.
-- ``plot_sweep``: every plot the sweep's dimensions allow, written to a folder.
+- ``plot_regime_map``: the friction regime (engine codes, e.g. slip / stick / reversal) over
+  two swept inputs (by default the angle and mu) on a categorical colour scale with a legend,
+  with the rigid-body boundary mu_c(theta) = a b / (k^2 + b^2)
+  (``impactlab.analytic.critical_friction``; physics notes Sec. 1) drawn on an angle x mu map.
+- ``plot_output_map``: one output over two swept inputs (e.g. angle and vy), or a line over one;
+  a categorical output (``regime``) is drawn as the regime map, never on a continuous scale.
+- ``plot_histograms``: the distributions of a Monte Carlo study's outputs.
 
-A map shows two dimensions; every other dimension is sliced, and the title says where
-(``law = brake, vy = -1.41 m/s``). Without ``ax`` a study with a third dimension is drawn as
-facets, one panel per value of that dimension (at most ``MAX_FACETS``, evenly spaced), and one
-with a fourth as rows x columns of panels (at most ``MAX_FACETS_SIDE`` values each way).
-Further dimensions take the value in ``sel``, else their first: the figure's title and a
-:class:`SliceWarning` (one line) name the values shown and how to choose others (``sel``).
-
-Values are shown in the display layer's units (``impactlab._display``: angles in deg, dent-scale
-lengths in um, other lengths in mm, durations in ms); they stay SI in the Dataset.
+``impactlab.sweep.plotsweep.plot_sweep`` writes every plot a study allows and names the ones it
+cannot draw. The slices and facets of a map: ``impactlab.sweep.plotgrid``. Values are shown in
+the display layer's units (``impactlab._display``: angles in deg, dent-scale lengths in um,
+other lengths in mm, durations in ms); they stay SI in the Dataset.
 """
 
 from __future__ import annotations
 
-import warnings
 from collections.abc import Mapping, Sequence
-from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -30,125 +25,31 @@ from impactlab._mpl import pyplot
 from impactlab.analytic import critical_friction
 from impactlab.bodies import PAPER_ROD, Rod
 from impactlab.flags import ADVISORY_FLAGS
-from impactlab.sweep.dimensions import SAMPLE_DIM
-from impactlab.sweep.display import plot_unit, slice_note, value_text
+from impactlab.sweep.display import plot_unit
 from impactlab.sweep.inputs import OUTPUT_ALIASES, output_spec
+from impactlab.sweep.plotgrid import (
+    MAX_FACETS,
+    MAX_FACETS_SIDE,
+    SliceWarning,
+    facets,
+    label,
+    select,
+    title,
+)
 
-_VELOCITY_DIMS = ("vy", "vx", "spin")
+__all__ = [
+    "CATEGORY_OUTPUTS",
+    "MAX_FACETS",
+    "MAX_FACETS_SIDE",
+    "SliceWarning",
+    "critical_friction_curve",
+    "plot_histograms",
+    "plot_output_map",
+    "plot_regime_map",
+]
 
-
-def _label(ds: Any, name: str) -> tuple[float, str]:
-    units = str(ds[name].attrs.get("units", "")) if name in ds.variables else ""
-    scale, unit = plot_unit(name, units)
-    return scale, f"{name} [{unit}]" if unit and unit != "1" else name
-
-
-#: The most panels a faceted map draws (a longer dimension shows evenly spaced values).
-MAX_FACETS = 16
-#: The most values per dimension of a map faceted on two dimensions (rows x columns).
-MAX_FACETS_SIDE = 4
-
-
-class SliceWarning(UserWarning):
-    """A plot shows one slice of dimensions it cannot draw (a fifth dimension and beyond): the
-    message names the values shown and how to choose others (``sel``)."""
-
-
-def _select(ds: Any, keep: Sequence[str], sel: Mapping[str, Any] | None) -> Any:
-    """Reduce ``ds`` to the dimensions ``keep``: ``sel`` picks values (nearest) of the others;
-    dimensions not in ``sel`` take their first index. The slice is named by ``_where``."""
-    sel = dict(sel or {})
-    for d in list(ds.dims):
-        if d in keep:
-            continue
-        if d in sel:
-            v = sel.pop(d)
-            ds = ds.sel({d: v}) if isinstance(v, str) else ds.sel({d: v}, method="nearest")
-        else:
-            ds = ds.isel({d: 0})
-    if sel:
-        raise ValueError(f"sel names {sorted(sel)}, which are not dimensions to select on")
-    return ds
-
-
-def _where(full: Any, sub: Any) -> str:
-    """Where ``sub`` slices ``full``: ``"law = brake, vy = -1.41 m/s"`` ("" for no slice)."""
-    parts = []
-    for d in full.dims:
-        if d in sub.dims or full.sizes[d] < 2:
-            continue
-        v = sub[d].values if d in sub.coords else None
-        if v is not None and not np.ndim(v):
-            parts.append(value_text(full, d, v.item()))
-    return ", ".join(parts)
-
-
-def _title(ax: Any, what: str, full: Any, sub: Any) -> None:
-    where = _where(full, sub)
-    ax.set_title(f"{what}\n{where}" if where else what, fontsize="medium")
-
-
-def _free_dims(ds: Any, keep: Sequence[str], sel: Mapping[str, Any] | None) -> list[str]:
-    """The dimensions beside ``keep`` with more than one value that ``sel`` leaves free."""
-    return [d for d in ds.dims if d not in keep and d not in (sel or {}) and ds.sizes[d] > 1]
-
-
-def _picks(n: int, most: int) -> np.ndarray:
-    """Up to ``most`` evenly spaced indices of ``n`` values (first and last included)."""
-    return np.unique(np.linspace(0, n - 1, min(n, most)).round().astype(int))
-
-
-def _facets(ds: Any, keep: Sequence[str], sel: Mapping[str, Any] | None, draw: Any, ax: Any) -> Any:
-    """``draw(sel, ax)`` once (given ``ax``, or no free third dimension), else once per value of
-    the free dimension on a grid of panels, or per pair of values of two free dimensions on
-    rows x columns; returns the axes (an array for facets). Free dimensions beyond two take
-    their first value, named in the figure's title and in a :class:`SliceWarning`."""
-    plt = pyplot()
-    free = _free_dims(ds, keep, sel)
-    if ax is not None or not free:
-        if ax is None:
-            _, ax = plt.subplots(figsize=(6.4, 4.8))
-        draw(dict(sel or {}), ax)
-        return ax
-    dim, row_dim, hidden = free[0], (free[1] if len(free) > 1 else None), free[2:]
-    base = {**dict(sel or {}), **{d: ds[d].values[0] for d in hidden}}
-    n = int(ds.sizes[dim])
-    if row_dim is None:
-        picks = _picks(n, MAX_FACETS)
-        cols = min(len(picks), 4)
-        rows = -(-len(picks) // cols)
-        cells = [(a, {dim: ds[dim].values[i]}) for a, i in enumerate(picks)]
-        row_picks = picks[:0]
-    else:
-        picks, row_picks = _picks(n, MAX_FACETS_SIDE), _picks(ds.sizes[row_dim], MAX_FACETS_SIDE)
-        cols, rows = len(picks), len(row_picks)
-        cells = [
-            (r * cols + c, {dim: ds[dim].values[i], row_dim: ds[row_dim].values[j]})
-            for r, j in enumerate(row_picks)
-            for c, i in enumerate(picks)
-        ]
-    fig, axes = plt.subplots(
-        rows, cols, figsize=(4.2 * cols, 3.4 * rows), squeeze=False, constrained_layout=True
-    )
-    for k, pick in cells:
-        draw({**base, **pick}, axes.flat[k])
-    for a in axes.flat[len(cells) :]:
-        a.set_visible(False)
-    lines = [f"columns: {dim}, rows: {row_dim}" if row_dim else f"panels: {dim}"]
-    lines += [
-        f"{len(p)} of the {ds.sizes[d]} values of {d}"
-        for d, p in ((dim, picks), (row_dim, row_picks))
-        if d is not None and len(p) < ds.sizes[d]
-    ]
-    if hidden:
-        note = slice_note(ds, hidden)
-        lines.append(
-            f"fixed: {', '.join(value_text(ds, d, ds[d].values[0]) for d in hidden)} "
-            f"(choose with sel={{{hidden[0]!r}: ...}})"
-        )
-        warnings.warn(note, SliceWarning, stacklevel=3)
-    fig.suptitle("; ".join(lines), fontsize="small")
-    return axes
+#: Outputs whose values are category codes (drawn on a categorical scale, never histogrammed).
+CATEGORY_OUTPUTS = ("regime",)
 
 
 def _rod_for(ds: Any) -> Rod | None:
@@ -193,7 +94,9 @@ def plot_regime_map(
     ax: Any = None,
     show_mu_c: bool = True,
 ) -> Any:
-    """Friction regime over ``x`` (angle) and ``y`` (mu), with mu_c(theta) drawn on it.
+    """Friction regime over ``x`` and ``y`` (default angle and mu; any two grid dimensions) on a
+    categorical colour scale (one colour and legend entry per regime), with mu_c(theta) drawn
+    on an angle x mu map.
 
     Other dimensions: ``sel`` picks their values; without ``ax``, a free third dimension is
     drawn as facets (one panel per value). Titles name the slice. Returns the Axes (an array of
@@ -203,7 +106,7 @@ def plot_regime_map(
     for d in (x, y):
         if d not in ds.dims:
             raise ValueError(f"a regime map needs {d!r} as a grid dimension; dims: {list(ds.dims)}")
-    return _facets(ds, (x, y), sel, lambda s, a: _regime_panel(ds, x, y, s, a, show_mu_c), ax)
+    return facets(ds, (x, y), sel, lambda s, a: _regime_panel(ds, x, y, s, a, show_mu_c), ax)
 
 
 def _regime_panel(
@@ -214,13 +117,13 @@ def _regime_panel(
     from matplotlib.colors import BoundaryNorm, ListedColormap
     from matplotlib.patches import Patch
 
-    sub = _select(ds[["regime", "status"]], (x, y), sel)
+    sub = select(ds[["regime", "status"]], (x, y), sel)
     reg = np.asarray(sub["regime"].transpose(y, x).values, dtype=float)
     reg[np.asarray(sub["status"].transpose(y, x).values) != 0] = np.nan
     names = {int(k): v for k, v in ds["regime"].attrs.get("regimes", {}).items()}
     codes = sorted(names) or sorted({int(v) for v in reg[np.isfinite(reg)].ravel()})
-    xs, xl = _label(ds, x)
-    ys, yl = _label(ds, y)
+    xs, xl = label(ds, x)
+    ys, yl = label(ds, y)
     xv = np.asarray(sub[x].values, dtype=float) * xs
     yv = np.asarray(sub[y].values, dtype=float) * ys
     palette = ["#4c72b0", "#dd8452", "#55a868", "#c44e52", "#8172b3", "#937860"]
@@ -234,7 +137,7 @@ def _regime_panel(
         ]
     else:
         handles = []
-    if show_mu_c and x == "angle":
+    if show_mu_c and x == "angle" and y == "mu":
         th = np.linspace(float(np.min(sub[x])), float(np.max(sub[x])), 200)
         mu_c = critical_friction_curve(sub, th)
         if mu_c is not None:
@@ -246,7 +149,7 @@ def _regime_panel(
     ax.set_ylim(yv.min(), yv.max())
     ax.set_xlabel(xl)
     ax.set_ylabel(yl)
-    _title(ax, "friction regime", ds, sub)
+    title(ax, "friction regime", ds, sub)
     if handles:
         ax.legend(handles=handles, loc="best", fontsize="small")
 
@@ -272,7 +175,25 @@ def plot_output_map(
     for d in keep:
         if d not in ds.dims:
             raise ValueError(f"{d!r} is not a grid dimension; dims: {list(ds.dims)}")
-    return _facets(ds, keep, sel, lambda s, a: _output_panel(ds, out, x, y, s, a), ax)
+    if out in CATEGORY_OUTPUTS:
+        if y is None:
+            return facets(ds, keep, sel, lambda s, a: _category_line(ds, out, x, s, a), ax)
+        return plot_regime_map(ds, x=x, y=y, sel=sel, ax=ax)
+    return facets(ds, keep, sel, lambda s, a: _output_panel(ds, out, x, y, s, a), ax)
+
+
+def _category_line(ds: Any, out: str, x: str, sel: Mapping[str, Any], ax: Any) -> None:
+    """A category output over one dimension: points at the category's row, named on the axis."""
+    sub = select(ds[[out, "status"]], (x,), sel)
+    codes = np.asarray(sub[out].values, dtype=float)
+    codes[np.asarray(sub["status"].values) != 0] = np.nan
+    names = {int(k): v for k, v in ds[out].attrs.get("regimes", {}).items()}
+    shown = sorted(names) or sorted({int(c) for c in codes[np.isfinite(codes)]})
+    xs, xl = label(ds, x)
+    ax.plot(np.asarray(sub[x].values, dtype=float) * xs, codes, "o", ms=4)
+    ax.set_yticks(shown, [names.get(c, str(c)) for c in shown])
+    ax.set_xlabel(xl)
+    title(ax, out, ds, sub)
 
 
 def _flagged(sub: Any) -> np.ndarray:
@@ -299,7 +220,7 @@ def _output_panel(
     ds: Any, out: str, x: str, y: str | None, sel: Mapping[str, Any], ax: Any
 ) -> None:
     keep = (x,) if y is None else (x, y)
-    sub = _select(ds[_variables(ds, out)], keep, sel)
+    sub = select(ds[_variables(ds, out)], keep, sel)
     if y is not None:
         sub = sub.transpose(y, x)
     bad = _flagged(sub)
@@ -308,7 +229,7 @@ def _output_panel(
     unit = output_spec(out).unit
     vs, vunit = plot_unit(out, unit)
     vlabel = f"{out} [{vunit}]" if vunit and vunit != "1" else out
-    xs, xl = _label(ds, x)
+    xs, xl = label(ds, x)
     xv = np.asarray(sub[x].values, dtype=float) * xs
     if y is None:
         ax.plot(xv, vals * vs, "o-", ms=3)
@@ -317,7 +238,7 @@ def _output_panel(
             ax.plot(xv[bad], np.where(np.isfinite(raw), raw, np.nanmin(vals * vs)), "rx", ms=5)
         ax.set_ylabel(vlabel)
     else:
-        ys, yl = _label(ds, y)
+        ys, yl = label(ds, y)
         yv = np.asarray(sub[y].values, dtype=float) * ys
         mesh = ax.pcolormesh(xv, yv, vals * vs, shading="nearest")
         ax.figure.colorbar(mesh, ax=ax, label=vlabel)
@@ -326,7 +247,7 @@ def _output_panel(
             ax.plot(xv[ix], yv[iy], "kx", ms=5)
         ax.set_ylabel(yl)
     ax.set_xlabel(xl)
-    _title(ax, out + _flag_note(int(bad.sum())), ds, sub)
+    title(ax, out + _flag_note(int(bad.sum())), ds, sub)
 
 
 def plot_histograms(ds: Any, outputs: Sequence[str]) -> Any:
@@ -349,64 +270,3 @@ def plot_histograms(ds: Any, outputs: Sequence[str]) -> Any:
                          fontsize="small")  # fmt: skip
     fig.tight_layout()
     return fig
-
-
-def plot_sweep(
-    ds: Any,
-    outdir: str | Path,
-    *,
-    outputs: Sequence[str] = ("e", "delta_p", "sliding_length", "duration"),
-    sel: Mapping[str, Any] | None = None,
-) -> list[Path]:
-    """Write every plot the sweep's dimensions allow into ``outdir`` (PNG); returns the files.
-
-    angle x mu with 'regime' -> regime map (with mu_c); angle x a velocity -> output maps;
-    angle alone -> output lines; a 'sample' dimension -> histograms. Two further dimensions
-    are drawn as facets; maps of a grid+sample study show the sample in ``sel`` (default: the
-    first). Dimensions beyond those take the value in ``sel``, else their first: one
-    :class:`SliceWarning` per distinct slice says which.
-    """
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always", SliceWarning)
-        files = _plot_all(ds, Path(outdir), outputs, sel)
-    for note in dict.fromkeys(str(w.message) for w in caught if w.category is SliceWarning):
-        warnings.warn(note, SliceWarning, stacklevel=2)
-    for w in caught:
-        if w.category is not SliceWarning:
-            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
-    return files
-
-
-def _plot_all(
-    ds: Any, out: Path, outputs: Sequence[str], sel: Mapping[str, Any] | None
-) -> list[Path]:
-    """The plots of :func:`plot_sweep`."""
-    plt = pyplot()
-    out.mkdir(parents=True, exist_ok=True)
-    files: list[Path] = []
-    dims = list(ds.dims)
-    present = [o for o in (OUTPUT_ALIASES.get(o, o) for o in outputs) if o in ds.data_vars]
-    msel = {SAMPLE_DIM: 0, **dict(sel or {})} if SAMPLE_DIM in dims else sel
-
-    def save(axes: Any, name: str) -> None:
-        fig = np.ravel(axes)[0].figure
-        p = out / name
-        fig.savefig(p, dpi=120, bbox_inches="tight")
-        plt.close(fig)
-        files.append(p)
-
-    if "angle" in dims and "mu" in dims and "regime" in ds.data_vars:
-        save(plot_regime_map(ds, sel=msel), "regime_map.png")
-    vel = next((d for d in _VELOCITY_DIMS if d in dims), None)
-    if "angle" in dims and vel is not None:
-        for o in present:
-            save(plot_output_map(ds, o, x="angle", y=vel, sel=msel), f"{o}_angle_{vel}.png")
-    elif "angle" in dims:
-        other = "mu" if "mu" in dims else None
-        for o in present:
-            name = f"{o}_angle{'_' + other if other else ''}.png"
-            save(plot_output_map(ds, o, x="angle", y=other, sel=msel), name)
-    if SAMPLE_DIM in dims and present:
-        sub = _select(ds, (SAMPLE_DIM,), sel)
-        save(plot_histograms(sub, present).axes, "histograms.png")
-    return files

@@ -16,6 +16,7 @@ Layout (a Zarr v3 group that ``xarray.open_zarr`` reads):
 from __future__ import annotations
 
 import json
+import warnings
 from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
@@ -25,6 +26,7 @@ import numpy as np
 import zarr
 from zarr.codecs import BloscCodec
 
+from impactlab._version import __version__
 from impactlab.flags import ResultFlag, messages
 from impactlab.sweep.dimensions import SAMPLE_DIM
 from impactlab.sweep.hooks import checkpoint
@@ -182,6 +184,7 @@ def _root_attrs(
         "title": study.name,
         "description": study.description,
         "sweep_format": STUDY_FORMAT,
+        "impactlab_version": __version__,
         "study_hash": meta.study_hash,
         "study": study.to_json(),
         "mode": study.mode,
@@ -223,3 +226,15 @@ def build_store(path: Path, study: Study, meta: StoreMeta) -> None:
     (path / META / "done").mkdir(parents=True, exist_ok=True)
     text = json.dumps(study.to_dict(), indent=1, sort_keys=True) + "\n"
     (path / META / "study.json").write_text(text)
+    consolidate(path)
+
+
+def consolidate(path: Path) -> None:
+    """Write the store's consolidated metadata, so that ``xarray.open_zarr(path)`` opens it
+    without a warning (the arrays and attributes are final once built; the chunk bookkeeping
+    is plain files). zarr's notes while it walks the store are silenced here: that
+    consolidated metadata is not yet part of the Zarr 3 specification (impactlab reads its
+    stores without it) and that the bookkeeping files are not Zarr nodes."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", UserWarning)
+        zarr.consolidate_metadata(str(path))

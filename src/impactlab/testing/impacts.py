@@ -13,7 +13,7 @@ counter-clockwise positive (the rate of the angle of the vector tip -> C above t
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
@@ -51,7 +51,16 @@ class ImpactTruth:
     source: str = "impulse"
     delta_p: float = math.nan
     sliding_length: float = math.nan
-    contact: np.ndarray | None = None
+    contact: np.ndarray | None = field(default=None, repr=False)
+
+    def __repr__(self) -> str:
+        """One line: the scalars (the contact path as its size only)."""
+        path = "" if self.contact is None else f", contact=<{len(self.contact)} rows>"
+        return (
+            f"ImpactTruth(source={self.source!r}, regime={self.regime!r}, "
+            f"angle={self.angle:.6g} rad, e={self.e:.6g}, mu={self.mu:.6g}, "
+            f"duration={self.duration:.6g} s, delta_p={self.delta_p:.6g} m{path})"
+        )
 
 
 def _pair(v: Any) -> tuple[float, float]:

@@ -1,0 +1,107 @@
+"""The parts of an impact's result that hold arrays: its time ``History`` and the predicted
+``DentMap`` (SI units, read-only arrays, short reprs), and ``readonly_copy``. Re-exported by
+``impactlab.dynamics.results``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from impactlab import schema
+from impactlab.dynamics.core.layout import HISTORY_FIELDS
+from impactlab.dynamics.export import history_dataframe
+
+__all__ = ["HISTORY_UNITS", "DentMap", "History", "readonly_copy"]
+
+
+def readonly_copy(a: Any) -> np.ndarray:
+    """A float64 copy of ``a`` that cannot be written to."""
+    out = np.array(a, dtype=np.float64, copy=True)
+    out.setflags(write=False)
+    return out
+
+
+#: Units of the history columns (from ``impactlab.schema``).
+HISTORY_UNITS: dict[str, str] = {f.name: f.unit for f in schema.HISTORY_FIELDS}
+
+
+@dataclass(frozen=True, eq=False)
+class History:
+    """Time history of one impact (rows: accepted steps, dense-output points and events).
+
+    Columns (SI): see ``HISTORY_FIELDS``; each is also an attribute (``history.t``, ...).
+    ``phase`` is 0 on the loading curve and 1 on the unloading/reloading curve; ``stick`` is 1
+    while the contact point sticks (Coulomb) or has no gross slip (Mindlin).
+    """
+
+    data: np.ndarray = field(repr=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "data", readonly_copy(self.data))
+
+    def __len__(self) -> int:
+        return int(self.data.shape[0])
+
+    def __getattr__(self, name: str) -> np.ndarray:
+        try:
+            j = HISTORY_FIELDS.index(name)
+        except ValueError:
+            raise AttributeError(name) from None
+        return self.data[:, j]
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        return self.__getattr__(name)
+
+    @property
+    def fields(self) -> tuple[str, ...]:
+        """Column names."""
+        return HISTORY_FIELDS
+
+    @property
+    def units(self) -> dict[str, str]:
+        """SI unit of each column (``"1"``: dimensionless)."""
+        return dict(HISTORY_UNITS)
+
+    def to_dataframe(self) -> Any:
+        """A pandas DataFrame: SI, units in ``.attrs``, categorical phase/stick (``export``)."""
+        return history_dataframe(self.data)
+
+    def __repr__(self) -> str:
+        return f"History({len(self)} rows: {', '.join(HISTORY_FIELDS)})"
+
+
+@dataclass(frozen=True, eq=False)
+class DentMap:
+    """Predicted permanent dent on the flat as a height map (see docs/engine/index.md).
+
+    x, y : grid coordinates on the flat [m]; x along the impact plane from the first contact
+        point (positive towards the centre-of-mass side), y across it.
+    height : (len(y), len(x)) surface height after the impact [m] (<= 0 inside the dent).
+    max_depth : deepest point [m] (equals ``delta_p`` for a single loading).
+    length : extent of the dent along x [m]; width : extent across (along y) [m].
+    """
+
+    x: np.ndarray = field(repr=False)
+    y: np.ndarray = field(repr=False)
+    height: np.ndarray = field(repr=False)
+    max_depth: float
+    length: float
+    width: float
+
+    def __post_init__(self) -> None:
+        for name in ("x", "y", "height"):
+            object.__setattr__(self, name, readonly_copy(getattr(self, name)))
+
+    def profile(self) -> tuple[np.ndarray, np.ndarray]:
+        """(x, height) along the centre line y = 0."""
+        j = int(np.argmin(np.abs(self.y)))
+        return self.x, self.height[j]
+
+    def __repr__(self) -> str:
+        return (
+            f"DentMap(max_depth={self.max_depth:.4g} m, length={self.length:.4g} m, "
+            f"width={self.width:.4g} m, grid={self.height.shape[1]}x{self.height.shape[0]})"
+        )

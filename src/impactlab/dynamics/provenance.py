@@ -1,0 +1,243 @@
+"""What was simulated: the full input of a result as JSON-ready data, and back.
+
+``input_record`` writes the arguments of one ``simulate`` call (the body with its material and
+sizes, the flat, the contact law and its parameters, the friction model and mu, angle, velocity,
+spin, gravity, the tolerance) and the impactlab version; ``from_record`` reads such a record back
+into ``simulate``'s arguments, and ``rerun`` runs it again (``impactlab simulate --from``).
+
+Materials, bodies and contact models are written generically from their dataclass fields (the
+fields of ``__init__``), each as ``{"type": <class name>, <field>: <value>, ...}``, so a field added
+to a body or a material is recorded without a change here. Every float is a quantity object
+``{"value": v, "unit": "..."}`` in SI (docs/json-schema.md; the units of body and material fields
+are ``impactlab._html.FIELD_UNITS``); a non-finite float (an unset Brinell hardness) is written
+as ``{"value": null, "unit": ..., "nonfinite": "nan"}``.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+
+from impactlab._html import FIELD_UNITS
+from impactlab._version import __version__
+from impactlab.bodies import Rod, Sphere
+from impactlab.bodies.flexible_rod import FlexibleRod
+from impactlab.contact import ContactModel, get_law
+from impactlab.dynamics.checks import gravity_value
+from impactlab.dynamics.core.layout import DEFAULT_RTOL, PARTIAL_SLIP_RTOL
+from impactlab.dynamics.flexcore.layout import DEFAULT_RTOL as DROP_RTOL
+from impactlab.materials import ContactPair, Material
+
+__all__ = ["RECORD_FORMAT", "decode", "encode", "from_record", "input_record", "result_record"]
+
+#: The format of the record (raised when its layout changes).
+RECORD_FORMAT = 1
+
+#: The classes a record may name, by ``type``.
+_TYPES: dict[str, type] = {
+    cls.__name__: cls for cls in (Material, ContactPair, Rod, Sphere, FlexibleRod, ContactModel)
+}
+
+#: SI units of ``simulate``'s scalar arguments (and of the body and material fields).
+UNITS: dict[str, str] = {
+    **FIELD_UNITS,
+    "angle": "rad",
+    "velocity": "m/s",
+    "spin": "rad/s",
+    "gravity": "m/s^2",
+    "mu": "1",
+    "rtol": "1",
+    "params": "1",
+}
+#: The unit written for a float field whose unit is not known here.
+_UNKNOWN_UNIT = "SI"
+
+
+def _float(value: float, unit: str) -> dict[str, Any]:
+    if math.isfinite(value):
+        return {"value": value, "unit": unit}
+    return {"value": None, "unit": unit, "nonfinite": repr(value)}
+
+
+def encode(value: Any, key: str = "") -> Any:
+    """``value`` as JSON-ready data: a dataclass as ``{"type", fields...}``, a float as a
+    quantity object (unit by ``key``), a pint Quantity or a numpy value as SI numbers, tuples
+    and arrays as lists."""
+    if dataclasses.is_dataclass(value) and not isinstance(value, type):
+        out: dict[str, Any] = {"type": type(value).__name__}
+        for f in dataclasses.fields(value):
+            if f.init and not f.name.startswith("_"):
+                out[f.name] = encode(getattr(value, f.name), f.name)
+        if isinstance(value, ContactModel):  # the compiled parameters define the model
+            out["params"] = encode([float(p) for p in value.params], "params")
+            out["details"] = {k: encode(float(v), "") for k, v in value.details.items()}
+            out.pop("references", None)
+        return out
+    if hasattr(value, "to_base_units") and hasattr(value, "magnitude"):  # pint, any registry
+        return encode(float(value.to_base_units().magnitude), key)
+    if isinstance(value, bool | np.bool_):
+        return bool(value)
+    if isinstance(value, int | np.integer):
+        return int(value)
+    if isinstance(value, float | np.floating):
+        return _float(float(value), UNITS.get(key, _UNKNOWN_UNIT))
+    if isinstance(value, np.ndarray):
+        value = value.tolist()
+    if isinstance(value, list | tuple):
+        unit = UNITS.get(key, _UNKNOWN_UNIT)
+        if value and all(isinstance(v, float | int) and not isinstance(v, bool) for v in value):
+            if all(math.isfinite(v) for v in value):
+                return {"value": [float(v) for v in value], "unit": unit}
+            return [_float(float(v), unit) for v in value]  # inf/NaN kept, one by one
+        return [encode(v, key) for v in value]
+    if isinstance(value, Mapping):
+        return {str(k): encode(v, str(k)) for k, v in value.items()}
+    return value
+
+
+def decode(data: Any) -> Any:
+    """The Python values of :func:`encode`'s data: quantity objects to SI numbers (or lists),
+    ``{"type": ...}`` to the named class. ValueError for an unknown type."""
+    if isinstance(data, Mapping):
+        if "value" in data and "unit" in data:
+            if "nonfinite" in data:
+                return float(data["nonfinite"])
+            v = data["value"]
+            return [float(x) for x in v] if isinstance(v, list) else v
+        if "type" in data:
+            name = data["type"]
+            cls = _TYPES.get(name)
+            if cls is None:
+                raise ValueError(f"unknown type {name!r} in the record; known: {sorted(_TYPES)}")
+            return _build(cls, {k: decode(v) for k, v in data.items() if k != "type"})
+        return {k: decode(v) for k, v in data.items()}
+    if isinstance(data, list):
+        return [decode(v) for v in data]
+    return data
+
+
+def _build(cls: type, values: dict[str, Any]) -> Any:
+    """``cls(**values)`` of a record (a Sphere takes its mass; the density follows)."""
+    if cls is ContactModel:
+        values = {k: v for k, v in values.items() if k in ("name", "law_id", "params", "details")}
+    if cls is Sphere and values.get("mass") is not None:
+        values.pop("density", None)  # one of the two; the mass is what the dynamics use
+    known = {f.name for f in dataclasses.fields(cls) if f.init}
+    unknown = sorted(set(values) - known)
+    if unknown:
+        raise ValueError(
+            f"the record's {cls.__name__} has field(s) {unknown} this impactlab does not know; "
+            f"known: {sorted(known)}"
+        )
+    return cls(**values)
+
+
+def _law_params(law: Any, given: Mapping[str, Any] | None) -> dict[str, Any] | None:
+    """The given law parameters as quantity objects in the parameters' units (strings with
+    units and pint Quantities converted; the law's defaults are those of the version)."""
+    if not given:
+        return None
+    if not isinstance(law, str):
+        return encode(dict(given))
+    spec = get_law(law)
+    units = {q.name: ("1" if q.unit in ("-", "") else q.unit) for q in spec.parameters}
+    return {k: _float(v, units[k]) for k, v in spec.parameter_values(given).items()}
+
+
+def input_record(
+    body: Any,
+    flat: Material,
+    *,
+    law: str | ContactModel,
+    law_params: Mapping[str, Any] | None,
+    friction: str,
+    mu: float,
+    angle: float | None,
+    velocity: tuple[float, float],
+    spin: float,
+    gravity: float,
+    constant_angle: bool,
+    rtol: float,
+    extra: Mapping[str, Any] | None = None,
+) -> dict[str, Any]:
+    """The JSON-ready record of one ``simulate`` call (SI, checked values; ``angle`` None for
+    a sphere; ``extra``: options of the flexible drop such as ``rate``)."""
+    record: dict[str, Any] = {
+        "impactlab_version": __version__,
+        "format": RECORD_FORMAT,
+        "function": "impactlab.simulate",
+        "body": encode(body),
+        "flat": encode(flat),
+        "law": encode(law),
+        "law_params": _law_params(law, law_params),
+        "friction": friction,
+        "mu": encode(float(mu), "mu"),
+        "angle": None if angle is None else encode(float(angle), "angle"),
+        "velocity": encode(tuple(float(v) for v in velocity), "velocity"),
+        "spin": encode(float(spin), "spin"),
+        "gravity": encode(float(gravity), "gravity"),
+        "constant_angle": bool(constant_angle),
+        "rtol": encode(float(rtol), "rtol"),
+    }
+    for k, v in (extra or {}).items():
+        record[k] = encode(v, k)
+    return record
+
+
+#: Keys of a record that are not arguments of ``simulate``.
+_META = ("impactlab_version", "format", "function")
+
+
+def from_record(record: Mapping[str, Any]) -> dict[str, Any]:
+    """``simulate``'s keyword arguments from a record of :func:`input_record` (or from a
+    result's ``to_dict()`` / ``--json`` output, whose ``input`` it reads). ValueError naming
+    what is missing or unknown."""
+    if "input" in record and isinstance(record["input"], Mapping):
+        record = record["input"]
+    missing = [k for k in ("body", "flat", "law", "velocity") if k not in record]
+    if missing:
+        raise ValueError(
+            f"the record lacks {missing}: give the 'input' of a result's to_dict() or of "
+            f"'impactlab simulate --json' (impactlab >= 0.3)"
+        )
+    fmt = record.get("format", RECORD_FORMAT)
+    if fmt != RECORD_FORMAT:
+        raise ValueError(f"record format {fmt!r} is not supported (this impactlab reads 1)")
+    args = {k: decode(v) for k, v in record.items() if k not in _META}
+    args["velocity"] = tuple(args["velocity"])
+    return args
+
+
+def result_record(result: Any) -> dict[str, Any] | None:
+    """The input record of an ``ImpactResult`` or a ``DropResult`` that ``simulate`` returned
+    (None for one assembled otherwise): its recorded call with the checked values the result
+    holds (mu, angle, velocity, spin) and the tolerance actually used."""
+    call = getattr(result, "_call", None)
+    if call is None:
+        return None
+    body, flat, law, law_params, gravity, constant_angle, rtol, drop_options = call
+    if rtol is None:
+        if drop_options is not None:
+            rtol = DROP_RTOL
+        else:
+            rtol = PARTIAL_SLIP_RTOL if result.friction == "partial_slip" else DEFAULT_RTOL
+    angle = result.angle if isinstance(body, Rod | FlexibleRod) else None
+    return input_record(
+        body,
+        flat,
+        law=law,
+        law_params=law_params,
+        friction=result.friction,
+        mu=result.mu,
+        angle=angle,
+        velocity=result.velocity_in,
+        spin=result.spin_in,
+        gravity=gravity_value(gravity),
+        constant_angle=constant_angle,
+        rtol=rtol,
+        extra=drop_options,
+    )

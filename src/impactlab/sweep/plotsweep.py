@@ -1,0 +1,160 @@
+"""Every plot a study allows, written to a folder, and a named reason for each one it cannot
+draw (``plot_sweep``, ``plot_plan``).
+
+The numeric grid dimensions with more than one value choose the maps, in the order angle, mu,
+vy, vx, spin, then the study's others: two or more give a regime map (over angle and mu when
+both are swept, with mu_c; else over the first two) and one map per output over the angle and
+a velocity, the angle and mu, or else the first two; one gives lines; a ``sample`` dimension
+gives histograms. Category dimensions (law, friction, ...) and further numeric ones are drawn as
+facets or sliced (``impactlab.sweep.plotgrid``). Nothing is skipped silently: a plot that cannot
+be drawn is named with its reason in a :class:`PlotSkipped` warning (and ``plot_plan``).
+"""
+
+from __future__ import annotations
+
+import warnings
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field
+from functools import partial
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from impactlab._mpl import pyplot
+from impactlab.sweep.dimensions import SAMPLE_DIM
+from impactlab.sweep.inputs import OUTPUT_ALIASES
+from impactlab.sweep.plotgrid import SliceWarning, select
+from impactlab.sweep.plots import (
+    CATEGORY_OUTPUTS,
+    plot_histograms,
+    plot_output_map,
+    plot_regime_map,
+)
+
+__all__ = ["DEFAULT_PLOT_OUTPUTS", "PlotPlan", "PlotSkipped", "plot_plan", "plot_sweep"]
+
+#: The outputs ``plot_sweep`` maps unless told otherwise.
+DEFAULT_PLOT_OUTPUTS = ("e", "delta_p", "sliding_length", "duration")
+#: The order in which numeric grid dimensions become a map's axes.
+_AXIS_ORDER = ("angle", "mu", "vy", "vx", "spin")
+_VELOCITY_DIMS = ("vy", "vx", "spin")
+
+
+class PlotSkipped(UserWarning):
+    """A plot of a study that ``plot_sweep`` could not draw; the message says which and why."""
+
+
+@dataclass
+class PlotPlan:
+    """The plots of a study: ``(file name, draw)`` pairs and the skipped plots' reasons."""
+
+    plots: list[tuple[str, Callable[[], Any]]] = field(default_factory=list)
+    skipped: list[str] = field(default_factory=list)
+
+
+def _numeric_dims(ds: Any) -> list[str]:
+    """The grid dimensions with a numeric coordinate and more than one value, axis order."""
+    dims = [
+        d
+        for d in ds.dims
+        if d != SAMPLE_DIM
+        and ds.sizes[d] > 1
+        and d in ds.coords
+        and np.issubdtype(ds[d].dtype, np.number)
+    ]
+    return sorted(dims, key=lambda d: _AXIS_ORDER.index(d) if d in _AXIS_ORDER else 99)
+
+
+def _map_axes(dims: list[str]) -> tuple[str, str]:
+    """The two dimensions of the output maps: angle x a velocity, angle x mu, else the first
+    two in axis order."""
+    vel = next((d for d in _VELOCITY_DIMS if d in dims), None)
+    if "angle" in dims and vel is not None:
+        return "angle", vel
+    return dims[0], dims[1]
+
+
+def plot_plan(
+    ds: Any,
+    outputs: Sequence[str] = DEFAULT_PLOT_OUTPUTS,
+    sel: Mapping[str, Any] | None = None,
+) -> PlotPlan:
+    """What :func:`plot_sweep` draws for ``ds`` and what it cannot, with the reasons."""
+    plan = PlotPlan()
+    wanted = [OUTPUT_ALIASES.get(o, o) for o in outputs]
+    present = [o for o in wanted if o in ds.data_vars]
+    plan.skipped += [f"{o}: the study did not keep this output" for o in wanted if o not in present]
+    nums = _numeric_dims(ds)
+    has_sample = SAMPLE_DIM in ds.dims
+    msel = {SAMPLE_DIM: 0, **dict(sel or {})} if has_sample else sel
+    if len(nums) >= 2:
+        if "regime" not in ds.data_vars:
+            plan.skipped.append("regime map: the study did not keep the output 'regime'")
+        else:
+            x, y = ("angle", "mu") if "angle" in nums and "mu" in nums else (nums[0], nums[1])
+            plan.plots.append(("regime_map.png", lambda: plot_regime_map(ds, x=x, y=y, sel=msel)))
+        x, y = _map_axes(nums)
+        plan.plots += [
+            (f"{o}_{x}_{y}.png", partial(plot_output_map, ds, o, x=x, y=y, sel=msel))
+            for o in present
+        ]
+    elif len(nums) == 1:
+        (x,) = nums
+        plan.skipped.append(
+            f"regime map and output maps: they need two swept numeric inputs, the study "
+            f"sweeps one ({x}); drawn as lines over {x}"
+        )
+        plan.plots += [
+            (f"{o}_{x}.png", partial(plot_output_map, ds, o, x=x, sel=msel)) for o in present
+        ]
+    elif not has_sample:
+        swept = [d for d in ds.dims if ds.sizes[d] > 1]
+        what = f"it sweeps only categories ({', '.join(swept)})" if swept else "nothing is swept"
+        plan.skipped.append(f"maps: they need a swept numeric input (angle, mu, vy, ...); {what}")
+    if has_sample:
+        numbers = [o for o in present if o not in CATEGORY_OUTPUTS]
+        plan.skipped += [f"{o}: a category, no histogram" for o in present if o not in numbers]
+        if numbers:
+            sub = select(ds, (SAMPLE_DIM,), sel)
+            plan.plots.append(("histograms.png", lambda: plot_histograms(sub, numbers).axes))
+    return plan
+
+
+def plot_sweep(
+    ds: Any,
+    outdir: str | Path,
+    *,
+    outputs: Sequence[str] = DEFAULT_PLOT_OUTPUTS,
+    sel: Mapping[str, Any] | None = None,
+) -> list[Path]:
+    """Write every plot the sweep's dimensions allow into ``outdir`` (PNG); returns the files.
+
+    The maps and lines follow the swept numeric inputs (module docstring); a 'sample'
+    dimension adds histograms. Two further dimensions are drawn as facets; maps of a
+    grid+sample study show the sample in ``sel`` (default: the first). Dimensions beyond those
+    take the value in ``sel``, else their first: one :class:`SliceWarning` per distinct slice
+    says which. Each plot it cannot draw is named, with the reason, in a :class:`PlotSkipped`
+    warning.
+    """
+    plan = plot_plan(ds, outputs, sel)
+    plt = pyplot()
+    out = Path(outdir)
+    out.mkdir(parents=True, exist_ok=True)
+    files: list[Path] = []
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", SliceWarning)
+        for name, draw in plan.plots:
+            fig = np.ravel(draw())[0].figure
+            path = out / name
+            fig.savefig(path, dpi=120, bbox_inches="tight")
+            plt.close(fig)
+            files.append(path)
+    for note in dict.fromkeys(str(w.message) for w in caught if w.category is SliceWarning):
+        warnings.warn(note, SliceWarning, stacklevel=2)
+    for w in caught:
+        if w.category is not SliceWarning:
+            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+    for reason in plan.skipped:
+        warnings.warn(f"not plotted: {reason}", PlotSkipped, stacklevel=2)
+    return files

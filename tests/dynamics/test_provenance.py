@@ -1,0 +1,156 @@
+"""Every result records what was simulated (bodies, materials, flat, law and its parameters,
+friction, tolerances, the impactlab version) and can be run again from that record, in
+Python (``impactlab.rerun``) and on the command line (``impactlab simulate --from``)."""
+
+from __future__ import annotations
+
+import json
+import math
+import sys
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+import impactlab as il
+from impactlab._json import shape_problems
+from impactlab.cli import main
+from impactlab.dynamics.provenance import decode, encode, from_record
+from impactlab.materials import AISI_1010, Material
+
+ALU = Material("6061-T6 (test values)", 68.9e9, 0.33, 276e6, density=2700.0)
+
+
+def _round_trip(result: il.ImpactResult) -> il.ImpactResult:
+    """The result simulated again from its to_dict() after a trip through JSON text."""
+    return il.rerun(json.loads(json.dumps(result.to_dict())))
+
+
+def test_rod_record_names_everything_and_reruns_bit_for_bit() -> None:
+    r = il.simulate(il.Rod.paper(), angle=math.radians(20), velocity=(0.1, -1.41), mu=0.2)
+    rec = r.to_dict()["input"]
+    assert rec["impactlab_version"] == il.__version__ == r.to_dict()["impactlab_version"]
+    assert rec["body"]["type"] == "Rod" and rec["body"]["mass"] == {"value": 0.4607, "unit": "kg"}
+    assert rec["body"]["material"]["yield_strength"] == {"value": 760e6, "unit": "Pa"}
+    assert rec["flat"]["name"] == AISI_1010.name
+    assert rec["rtol"]["value"] == il.dynamics.DEFAULT_RTOL and rec["gravity"]["value"] == 9.80665
+    assert shape_problems(json.loads(json.dumps(rec))) == []  # floats only as quantities
+    again = _round_trip(r)
+    for name in ("e", "delta_p", "sliding_length", "duration", "velocity_out"):
+        assert getattr(again, name) == getattr(r, name)
+
+
+def test_sphere_on_a_custom_flat_with_law_parameters() -> None:
+    s = il.Sphere(radius=0.003, material=il.AISI_201)
+    r = il.simulate(
+        s, ALU, law="thornton", law_params={"limit_pressure_ratio": 2.0}, gravity="9.81 m/s^2",
+        velocity=(0.0, -1.0), mu=0.0, rtol=1e-9,
+    )  # fmt: skip
+    rec = r.input
+    assert rec is not None and rec["angle"] is None
+    assert rec["flat"]["E"] == {"value": 68.9e9, "unit": "Pa"}
+    assert rec["flat"]["brinell_hardness"]["nonfinite"] == "nan"  # unset, not lost
+    assert rec["law_params"] == {"limit_pressure_ratio": {"value": 2.0, "unit": "1"}}
+    assert rec["gravity"]["value"] == pytest.approx(9.81) and rec["rtol"]["value"] == 1e-9
+    again = _round_trip(r)
+    assert (again.e, again.delta_p, again.duration) == (r.e, r.delta_p, r.duration)
+
+
+def test_rerun_with_changes() -> None:
+    r = il.simulate(il.Rod.paper(), angle=0.5, velocity=(0.0, -1.0), mu=0.1)
+    other = il.rerun(r.to_dict(), mu=0.3)
+    assert other.mu == 0.3 and other.input["mu"]["value"] == 0.3
+    assert other.input["body"] == r.input["body"]
+
+
+def test_a_record_that_is_not_one_is_named() -> None:
+    with pytest.raises(ValueError, match=r"lacks \['body', 'flat', 'law', 'velocity'\]"):
+        from_record({"e": 0.4})
+    with pytest.raises(ValueError, match="unknown type 'Brick'"):
+        decode({"type": "Brick", "size": 1})
+
+
+_positive = st.floats(1e-3, 1e3, allow_nan=False)
+
+
+@settings(deadline=None, max_examples=60, suppress_health_check=[HealthCheck.too_slow])
+@given(
+    E=st.floats(1e9, 1e12),
+    nu=st.floats(-0.9, 0.49),
+    ratio=st.floats(1e-5, 0.5),
+    hb=st.one_of(st.just(math.nan), _positive),
+    n=st.floats(2.01, 3.0),
+    rho=_positive,
+)
+def test_material_encodes_and_decodes_exactly(E, nu, ratio, hb, n, rho) -> None:
+    m = Material("m", E, nu, E * ratio, hb, n, rho)
+    back = decode(json.loads(json.dumps(encode(m))))
+    assert back.name == m.name and back.E == m.E and back.nu == m.nu
+    assert back.yield_strength == m.yield_strength and back.density == m.density
+    assert back.meyer_index == m.meyer_index
+    assert (math.isnan(back.brinell_hardness) and math.isnan(hb)) or back.brinell_hardness == hb
+
+
+def test_to_pint_gives_quantities_in_si() -> None:
+    r = il.simulate(il.Rod.paper(), angle=0.5, velocity=(0.0, -1.0), mu=0.1)
+    q = r.to_pint()
+    assert q["delta_p"].to("um").magnitude == pytest.approx(r.delta_p * 1e6, rel=1e-12)
+    assert q["duration"].to("ms").magnitude == pytest.approx(r.duration * 1e3, rel=1e-12)
+    assert list(q["velocity_out"].to("m/s").magnitude) == list(r.velocity_out)
+    assert q["e"].dimensionless
+
+
+def _cli(monkeypatch, capsys, *args: str) -> tuple[int, str, str]:
+    """``impactlab ARGS`` in this process: (exit status, stdout, stderr)."""
+    monkeypatch.setattr(sys, "argv", ["impactlab", *args])
+    try:
+        main()
+        code = 0
+    except SystemExit as exc:
+        code = int(exc.code or 0)
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def test_cli_json_then_from_reruns_the_same_impact(tmp_path, monkeypatch, capsys) -> None:
+    args = ["simulate", "sphere", "--radius", "3 mm", "--vy", "-2.5 m/s", "--mu", "0.1"]
+    code, out, err = _cli(monkeypatch, capsys, *args, "--json")
+    assert code == 0, err
+    saved = tmp_path / "s.json"
+    saved.write_text(out)
+    data = json.loads(out)
+    assert data["input"]["body"]["type"] == "Sphere" and data["impactlab_version"]
+    code, out, err = _cli(monkeypatch, capsys, "simulate", "--from", str(saved), "--json")
+    assert code == 0, err
+    assert json.loads(out)["e"] == data["e"]
+    code, out, _ = _cli(monkeypatch, capsys, "simulate", "--from", str(saved))
+    assert "Sphere: radius = 3 mm" in out and "AISI 1010" in out  # the body and the flat
+    code, _, err = _cli(monkeypatch, capsys, "simulate", "--from", str(saved), "--mu", "0.3")
+    assert code != 0 and "leave out --mu" in err
+    code, _, err = _cli(monkeypatch, capsys, "simulate", "--from", str(tmp_path / "no.json"))
+    assert code != 0 and "cannot read" in err
+
+
+def test_a_sphere_given_its_density_reruns_with_the_same_mass() -> None:
+    s = il.Sphere(radius=0.004, density=2700.0)
+    r = il.simulate(s, velocity=(0.0, -1.0))
+    again = _round_trip(r)
+    assert again.input["body"]["mass"] == r.input["body"]["mass"]
+    assert (again.e, again.delta_p) == (r.e, r.delta_p)
+
+
+def test_batch_to_pint() -> None:
+    b = il.simulate_batch(il.Rod.paper(), angle=[0.3, 0.5], vy=-1.0, mu=0.1)
+    q = b.to_pint()
+    assert list(q["delta_p"].to("um").magnitude) == pytest.approx(list(b.delta_p * 1e6))
+    assert str(q["duration"].units) == "second"
+
+
+def test_a_built_contact_model_is_recorded_and_reruns() -> None:
+    rod = il.Rod.paper()
+    model = il.dynamics.contact_model(rod, AISI_1010, "hertz")  # params hold inf (no yield)
+    r = il.simulate(rod, law=model, angle=0.4, velocity=(0.0, -1.0), mu=0.1)
+    rec = json.loads(json.dumps(r.to_dict()))["input"]
+    assert rec["law"]["type"] == "ContactModel" and rec["law"]["name"] == "hertz"
+    again = il.rerun(rec)
+    assert (again.e, again.delta_max) == (r.e, r.delta_max)
