@@ -24,7 +24,16 @@ class UserError(ValueError):
     """An error in the user's input: reported as one line, exit status 2."""
 
 
-console = Console()
+class _CurrentConsole:
+    """The command's console, made when it is used: rich's ``Console`` reads ``COLUMNS`` (and
+    the terminal's size) when it is created, so one made at import would keep the width of
+    whatever environment first imported this module."""
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(Console(), name)
+
+
+console = _CurrentConsole()
 
 
 def quantity(value: str | float | None, unit: str, name: str) -> float | None:
