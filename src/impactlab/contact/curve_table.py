@@ -85,6 +85,12 @@ def curve_residual_ratio(p: np.ndarray, nparam: int, delta_m: float) -> float:
     return r if r > 0.0 else 0.0
 
 
+def curve_nodes(p: np.ndarray, nparam: int = 16) -> np.ndarray:
+    """The interferences of the loading table's nodes [m] (where its cubics join)."""
+    x = p[nparam + 1] + np.arange(N_LOAD) / p[nparam + 2]
+    return p[_P_DC] * np.exp(x)
+
+
 def has_curves(p: object, nparam: int) -> bool:
     """True for a 1-D float64 vector with the tabulated law's tables after ``nparam`` slots."""
     return (
@@ -103,6 +109,7 @@ __all__ = [
     "N_LOAD",
     "N_RES",
     "curve_force",
+    "curve_nodes",
     "curve_residual_ratio",
     "has_curves",
 ]

@@ -32,6 +32,8 @@ FORMAT_VERSION = 1
 #: Fewest loading points past the elastic limit, and fewest (delta_max, delta_r) pairs.
 MIN_LOADING_POINTS = 4
 MIN_RESIDUAL_POINTS = 2
+#: Relative gap at the end of the loading curve taken as rounding (``max_delta``).
+END_RTOL = 1e-6
 #: Largest relative difference from Hertz allowed at the first point of measured data.
 HERTZ_TOLERANCE = 0.05
 
@@ -129,8 +131,10 @@ class IndentationCurves:
     @property
     def max_delta(self) -> float:
         """Largest interference covered by both the loading and the unloading data
-        (delta/delta_c): the tabulated law's hard limit."""
-        return float(min(self.delta[-1], self.delta_max[-1]))
+        (delta/delta_c): the tabulated law's hard limit. A loading curve that stops within
+        ``END_RTOL`` of the last delta_max counts as reaching it (an FE run's last increment
+        lands on its maximum only to rounding)."""
+        return float(min(self.delta[-1] * (1.0 + END_RTOL), self.delta_max[-1]))
 
     @classmethod
     def from_arrays(

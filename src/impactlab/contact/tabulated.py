@@ -275,7 +275,6 @@ class Tabulated(ContactLaw):
             "delta_c": dc,
             "F_c": fc,
             "elastic_limit": float(p[k.P_DSW]),
-            "calibrated_max_interference": float(p[k.P_DLIM]),
             "curves_e_star_over_sy": c.e_star_over_sy,
             "curves_nu": c.nu,
             "ratio_offset": E / Sy / c.e_star_over_sy - 1.0,
