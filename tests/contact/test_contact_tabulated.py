@@ -28,7 +28,7 @@ from impactlab.materials import AISI_201, AISI_1010, ContactPair
 
 R = 8.8e-3
 #: The stated bounds (docs/laws/tabulated.md, Tabulated.validity).
-FE_FORCE_BOUND = 0.01
+FE_FORCE_BOUND = 0.025
 LOO_FORCE_BOUND = 0.045
 LOO_FORCE_BOUND_100 = 0.03
 LOO_RESIDUAL_BOUND = 0.015
@@ -63,13 +63,18 @@ def test_shipped_file_matches_the_fe_data() -> None:
 @pytest.mark.parametrize("curves", shipped_curves(), ids=lambda c: c.name)
 def test_fe_round_trip_loading_within_the_stated_bound(curves: IndentationCurves) -> None:
     """Quasi-static loading of the law built for the FE case's own pair reproduces every FE
-    point past delta_c within 1 %; unloading gives the FE delta_r within 0.001 delta_max."""
+    point past delta_c within 2.5 % (only where a point was lowered so that F/F_Hertz never
+    increases: 0.5 %, 2.4 % and 0.9 %); unloading gives the FE delta_r within 0.001 delta_max."""
     case = _case(curves.name)
     model = get_law("tabulated").build(case.pair, case.radius)
     d, f = case.loading_curve()
     inside = (d > case.delta_c) & (d <= model.max_interference)
     rel = model.force(d[inside]) / f[inside] - 1.0
     assert np.max(np.abs(rel)) <= FE_FORCE_BOUND
+    # the law departs from an FE point only where that point was lowered (F/F_Hertz never
+    # increases), by at most that much; elsewhere the interpolant passes through it
+    assert np.max(np.abs(rel)) <= model.details["loading_lowered"] + 2e-3
+    assert model.details["residual_raised"] == 0.0
     below = d <= case.delta_c  # Hertz there: the FE points lie within 1.1 % of it
     assert np.max(np.abs(model.force(d[below]) / f[below] - 1.0)) <= 0.011
     for run in case.runs:
@@ -111,13 +116,16 @@ def test_compiled_lookup_equals_its_python_mirror_and_is_c1_at_the_switch() -> N
     assert np.max(np.abs(table_values(tables, xs) - zs)) < 2e-3
 
 
-def test_monotone_and_residual_in_range_on_a_fine_grid() -> None:
+def test_monotone_and_energy_consistent_on_a_fine_grid() -> None:
+    """0 <= d log F / d log delta <= 1.5 and delta_r/delta_max non-decreasing in [0, 1): the
+    elastic energy recoverable from any point never grows faster than the work spent."""
     for c in shipped_curves():
         t = curve_tables(c)
-        x = np.linspace(0.0, math.log(c.max_delta), 20001)
-        assert np.all(np.diff(table_values(t, x)) >= 0.0)
+        x = np.linspace(0.0, math.log(c.max_delta), 40001)
+        slope = np.diff(table_values(t, x)) / np.diff(x)
+        assert slope.min() >= 0.0 and slope.max() <= 1.5 + 1e-8
         r = table_values(t, x, residual=True)
-        assert np.all((r >= 0.0) & (r < 1.0))
+        assert np.all((r >= 0.0) & (r < 1.0)) and np.all(np.diff(r) >= -1e-15)
 
 
 def test_pair_matching_and_refusal() -> None:

@@ -5,10 +5,12 @@ Construction (``curve_tables``), from dimensionless curves (``contact.indentatio
 x = log(delta / delta_c), z = log(F / F_c):
 
 - loading: Hertz up to the elastic limit; from there the monotone piecewise cubic (PCHIP,
-  Fritsch & Carlson 1980) of z(x) through the Hertz point at the limit and the data past it,
-  its first slope set to Hertz's (1.5: the curve is C1 at the switch), resampled with its
+  Fritsch & Carlson 1980) of -log(F/F_Hertz) = 1.5 x - z through the Hertz point at the
+  limit and the data past it (lowered where needed so that F/F_Hertz never increases), its
+  first slope 0 (z's is Hertz's 1.5: the curve is C1 at the switch), resampled with its
   slopes onto ``N_LOAD`` uniform nodes in x (Fritsch-Carlson-limited, so still monotone):
-  the compiled lookup (``contact.curve_table``) is one log, one exp and a cubic;
+  0 <= dz/dx <= 1.5 between the checked nodes; the compiled lookup (``contact.curve_table``) is one
+  log, one exp and a cubic;
 - unloading: delta_r / delta_max as PCHIP of log(delta_max / delta_c), resampled the same way
   (``N_RES`` nodes), 0 below its first data point; unloading itself is the engine's Hertzian
   branch through (delta_m, F_m) with that delta_r;
@@ -93,25 +95,45 @@ def _resample(x: np.ndarray, y: np.ndarray, n: int, first_slope: float | None) -
     return np.concatenate((yg, _monotone(xg, yg, spline.derivative()(xg)) * (xg[1] - xg[0])))
 
 
-def loading_points(c: IndentationCurves) -> tuple[np.ndarray, np.ndarray]:
-    """(x, z) the loading table interpolates: the Hertz point at the elastic limit, then the
-    data past it. ValueError where the data lies below Hertz's force at the limit."""
+def _raw_loading(c: IndentationCurves) -> tuple[np.ndarray, np.ndarray]:
     keep = c.delta > c.elastic_limit
     x = np.log(np.concatenate(([c.elastic_limit], c.delta[keep])))
     z = np.concatenate(([1.5 * x[0]], np.log(c.force[keep])))
     if z[1] < z[0]:
         raise ValueError(
-            f"force at delta/delta_c = {c.delta[keep][0]!r} ({c.force[keep][0]!r} F_c) is below "
-            f"Hertz's at the elastic limit delta/delta_c = {c.elastic_limit!r}: the loading "
-            f"curve would decrease"
+            f"force at delta/delta_c = {float(c.delta[keep][0])!r} "
+            f"({float(c.force[keep][0])!r} F_c) is below Hertz's at the elastic limit "
+            f"delta/delta_c = {c.elastic_limit!r}: the loading curve would decrease"
         )
     return x, z
 
 
+def loading_points(c: IndentationCurves) -> tuple[np.ndarray, np.ndarray]:
+    """(x, z) the loading table interpolates: the Hertz point at the elastic limit, then the
+    data past it, each point lowered where needed so that F / F_Hertz never increases (the
+    curve never stiffens faster than Hertz's, delta^1.5: that, with a non-decreasing
+    delta_r/delta_max, keeps the elastic energy recoverable at every point below the work
+    spent, so no impact gains energy). ValueError where the data starts below the Hertz
+    force at the limit."""
+    x, z = _raw_loading(c)
+    w = np.maximum.accumulate(1.5 * x - z)  # -log(F / F_Hertz), made non-decreasing
+    return x, 1.5 * x - w
+
+
+def data_adjustments(c: IndentationCurves) -> tuple[float, float]:
+    """(largest relative lowering of a loading force, largest rise of delta_r/delta_max) made
+    by ``loading_points`` and ``residual_points`` to the data ``c``."""
+    x, z = _raw_loading(c)
+    lowered = float(-np.min(np.expm1(loading_points(c)[1] - z)))
+    raised = float(np.max(np.maximum.accumulate(c.residual_ratio) - c.residual_ratio))
+    return max(lowered, 0.0), raised
+
+
 def residual_points(c: IndentationCurves) -> tuple[np.ndarray, np.ndarray]:
     """(x, delta_r/delta_max) the residual table interpolates: from the last of the leading
-    zero ratios (or the elastic limit, with ratio 0), then the data."""
-    dm, r = c.delta_max, c.residual_ratio
+    zero ratios (or the elastic limit, with ratio 0), then the data, each ratio raised to the
+    largest before it (non-decreasing: see ``loading_points``)."""
+    dm, r = c.delta_max, np.maximum.accumulate(c.residual_ratio)
     if r[0] > 0.0:
         if not c.elastic_limit < dm[0]:
             raise ValueError(
@@ -129,7 +151,13 @@ def curve_tables(c: IndentationCurves) -> np.ndarray:
     """The tables appended to a tabulated law's parameters (``contact.curve_table`` layout)."""
     x, z = loading_points(c)
     xr, rr = residual_points(c)
-    load = _resample(x, z, N_LOAD, 1.5)
+    # w = 1.5 x - z = -log(F/F_Hertz) interpolated monotone (non-decreasing, slope 0 at the
+    # switch): dz/dx <= 1.5 everywhere; z is a linear function minus w, so the Hermite form
+    # of z with slopes 1.5 h - dw carries the same curve
+    w = _resample(x, 1.5 * x - z, N_LOAD, 0.0)
+    xg = np.linspace(x[0], x[-1], N_LOAD)
+    h = xg[1] - xg[0]
+    load = np.concatenate((1.5 * xg - w[:N_LOAD], 1.5 * h - w[N_LOAD:]))
     res = _resample(xr, rr, N_RES, None)
     head = [
         CURVE_MAGIC,
@@ -184,7 +212,7 @@ def interpolation_error(c: IndentationCurves) -> tuple[float, float]:
     others."""
     x, z = loading_points(c)
     xr, rr = residual_points(c)
-    ef = _loo(x, z, N_LOAD, 1.5)
+    ef = -_loo(x, 1.5 * x - z, N_LOAD, 0.0)
     er = _loo(xr, rr, N_RES, None)
     worst_f = float(np.max(np.abs(np.expm1(ef)))) if ef.size else 0.0
     worst_r = float(np.max(np.abs(er))) if er.size else 0.0
@@ -270,6 +298,7 @@ class Tabulated(ContactLaw):
         p[k.P_TB_DC], p[k.P_TB_FC] = dc, fc
         p[k.P_TB_RATIO], p[k.P_TB_NU] = c.e_star_over_sy, c.nu
         full = np.concatenate((p, curve_tables(c)))
+        lowered, raised = data_adjustments(c)
         self._check_loading_curve(full, pair, published=False)
         details = {
             "delta_c": dc,
@@ -278,6 +307,8 @@ class Tabulated(ContactLaw):
             "curves_e_star_over_sy": c.e_star_over_sy,
             "curves_nu": c.nu,
             "ratio_offset": E / Sy / c.e_star_over_sy - 1.0,
+            "loading_lowered": lowered,
+            "residual_raised": raised,
         }
         source = f"{c.name}: {c.source}"
         return ContactModel(self.name, self.law_id, full, details, self.references, source)
@@ -305,6 +336,7 @@ __all__ = [
     "Tabulated",
     "cached_curves",
     "curve_tables",
+    "data_adjustments",
     "curves_cache_dir",
     "interpolation_error",
     "select_curves",
