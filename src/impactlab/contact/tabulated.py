@@ -123,7 +123,7 @@ def loading_points(c: IndentationCurves) -> tuple[np.ndarray, np.ndarray]:
 def data_adjustments(c: IndentationCurves) -> tuple[float, float]:
     """(largest relative lowering of a loading force, largest rise of delta_r/delta_max) made
     by ``loading_points`` and ``residual_points`` to the data ``c``."""
-    x, z = _raw_loading(c)
+    _x, z = _raw_loading(c)
     lowered = float(-np.min(np.expm1(loading_points(c)[1] - z)))
     raised = float(np.max(np.maximum.accumulate(c.residual_ratio) - c.residual_ratio))
     return max(lowered, 0.0), raised
@@ -336,8 +336,8 @@ __all__ = [
     "Tabulated",
     "cached_curves",
     "curve_tables",
-    "data_adjustments",
     "curves_cache_dir",
+    "data_adjustments",
     "interpolation_error",
     "select_curves",
     "table_values",
