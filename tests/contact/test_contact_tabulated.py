@@ -8,6 +8,8 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from impactlab.contact import get_law, law_names
 from impactlab.contact import kernels as k
@@ -236,3 +238,42 @@ def test_a_given_law_instance_takes_only_indentation_curves() -> None:
         Tabulated(["x"])  # type: ignore[list-item]
     assert Tabulated(shipped_curves()[0]).candidates() == (shipped_curves()[0],)
     assert N_LOAD >= 100
+
+
+@pytest.mark.parametrize("curves", shipped_curves(), ids=lambda c: c.name)
+def test_hertzian_unloading_energy_against_fe(curves: IndentationCurves) -> None:
+    """Energy returned on unloading, law over FE: 0.98-0.99 below delta_c (the FE mesh's
+    stiffness), 0.91-1.00 past it (docs/laws/tabulated.md)."""
+    case = _case(curves.name)
+    model = get_law("tabulated").build(case.pair, case.radius)
+    for run in case.runs:
+        if not (run.converged and run.delta_max <= model.max_interference):
+            continue
+        d, f = np.asarray(run.unloading_delta), np.asarray(run.unloading_force)
+        order = np.argsort(d)
+        ratio = model.unload(run.delta_max).energy_returned() / np.trapezoid(f[order], d[order])
+        assert 0.91 <= ratio <= 1.005, (run.delta_max / case.delta_c, ratio)
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    steps=st.lists(st.floats(-0.08, 0.03), min_size=6, max_size=40),
+    ratios=st.lists(st.floats(-0.05, 0.2), min_size=2, max_size=12),
+)
+def test_any_data_gives_an_energy_consistent_monotone_law(
+    steps: list[float], ratios: list[float]
+) -> None:
+    """Random scattered data (F/F_Hertz drifting down with noise, delta_r/delta_max up with
+    noise): the tables are monotone, never stiffer than Hertz, and 0 <= ratio < 1."""
+    x = np.log(1.0) + 0.25 * np.arange(1, len(steps) + 1)
+    w = np.cumsum(steps)  # log(F/F_Hertz), with upward scatter
+    r = np.clip(np.cumsum(ratios), 0.0, 0.95)
+    dm = np.exp(np.linspace(0.2, x[-1], len(r)))
+    c = IndentationCurves("random", "hypothesis", 300.0, 0.3, np.exp(x),
+                          np.exp(1.5 * x + w), dm, r)  # fmt: skip
+    t = curve_tables(c)
+    xs = np.linspace(0.0, math.log(c.max_delta), 4001)
+    slope = np.diff(table_values(t, xs)) / np.diff(xs)
+    assert slope.min() >= -1e-9 and slope.max() <= 1.5 + 1e-8
+    rr = table_values(t, xs, residual=True)
+    assert np.all((rr >= 0.0) & (rr < 1.0)) and np.all(np.diff(rr) >= -1e-12)
