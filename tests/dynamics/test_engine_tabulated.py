@@ -137,3 +137,18 @@ def test_fe_builder_says_when_ccx_is_missing(tmp_path, monkeypatch) -> None:
     flat = dataclasses.replace(AISI_1010, yield_strength=200e6)
     with pytest.raises(RuntimeError, match=r"CalculiX \(ccx\) was not found"):
         tabulated_law(ContactPair(AISI_201, flat), 8.8e-3)
+
+
+def test_study_file(tmp_path) -> None:
+    from impactlab.sweep import load_study, run_sweep
+
+    path = tmp_path / "tab.toml"
+    path.write_text(
+        '[study]\nname = "tab"\n\n[fixed]\nvy = "-1.41 m/s"\nmu = 0.2\nlaw = "tabulated"\n\n'
+        '[grid]\nangle = [20, 45]\n\n[outputs]\nkeep = ["e", "delta_p"]\n'
+    )
+    ds = run_sweep(load_study(path), tmp_path / "tab.zarr", quiet=True).dataset
+    assert (ds["status"].values == 0).all()
+    assert float(ds["e"].values[0]) == pytest.approx(
+        simulate(PAPER_ROD, AISI_1010, law="tabulated", **CASE).e, rel=1e-9
+    )
