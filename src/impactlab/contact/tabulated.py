@@ -9,8 +9,8 @@ x = log(delta / delta_c), z = log(F / F_c):
   limit and the data past it (lowered where needed so that F/F_Hertz never increases), its
   first slope 0 (z's is Hertz's 1.5: the curve is C1 at the switch), resampled with its
   slopes onto ``N_LOAD`` uniform nodes in x (Fritsch-Carlson-limited, so still monotone):
-  0 <= dz/dx <= 1.5 between the checked nodes; the compiled lookup (``contact.curve_table``) is one
-  log, one exp and a cubic;
+  dz/dx <= 1.5 everywhere by construction, dz/dx >= 0 checked when a model is built; the
+  compiled lookup (``contact.curve_table``) is one log, one exp and a cubic;
 - unloading: delta_r / delta_max as PCHIP of log(delta_max / delta_c), resampled the same way
   (``N_RES`` nodes), 0 below its first data point; unloading itself is the engine's Hertzian
   branch through (delta_m, F_m) with that delta_r;
