@@ -177,6 +177,13 @@ _ALL: tuple[Reference, ...] = (
         "10.1016/0043-1648(76)90063-6",
     ),
     Reference(
+        "fritsch-carlson-1980",
+        "F. N. Fritsch, R. E. Carlson, Monotone piecewise cubic interpolation, SIAM J. Numer. "
+        "Anal. 17 (1980) 238-246",
+        "10.1137/0717021",
+        note="DOI not checked",
+    ),
+    Reference(
         "dormand-prince-1980",
         "J. R. Dormand, P. J. Prince, A family of embedded Runge-Kutta formulae, J. Comput. "
         "Appl. Math. 6 (1980) 19-26",

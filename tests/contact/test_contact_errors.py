@@ -22,6 +22,7 @@ def test_registry_names_exactly() -> None:
         "kogut-komvopoulos",
         "brake",
         "thornton",
+        "tabulated",
     )
     for name in law_names():
         assert get_law(name).name == name

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -11,11 +12,15 @@ from hypothesis import strategies as st
 
 from impactlab.contact import get_law, law_names
 from impactlab.contact.base import ContactModel
+from impactlab.contact.indentation_data import shipped_curves
 from impactlab.materials import G0, ContactPair, Material
 
 #: Largest relative force step allowed on the grid used for continuity: the log-slope of every
 #: law stays below 2 (Hertz: 1.5), so a grid step h in ln(delta) changes F by < exp(2 h) - 1.
 SLOPE_BOUND = 2.0
+#: The tabulated law follows its FE points, scatter included: the aluminium FE curve's
+#: point-to-point scatter (+-3 % past 100 delta_c) gives local log-slopes of 0.63 to 2.30.
+SLOPE_BOUND_TABULATED = 2.5
 
 
 @st.composite
@@ -40,6 +45,24 @@ def pairs(draw: st.DrawFn) -> tuple[ContactPair, float]:
     return ContactPair(body, flat), radius
 
 
+def _build(name: str, case: tuple[ContactPair, float]) -> ContactModel:
+    """The law ``name`` for a random pair; for the tabulated law, the pair with the flat's S_y
+    and both nu moved onto one of the shipped curves (chosen by the pair), the only pairs
+    it is built for."""
+    pair, R = case
+    if name == "tabulated":
+        curves = shipped_curves()
+        c = curves[int(pair.flat.E) % len(curves)]
+        body = dataclasses.replace(pair.body, nu=c.nu)
+        flat = dataclasses.replace(pair.flat, nu=c.nu)
+        sy = ContactPair(body, flat).E_star / c.e_star_over_sy
+        pair = ContactPair(
+            dataclasses.replace(body, yield_strength=2.5 * sy),
+            dataclasses.replace(flat, yield_strength=sy),
+        )
+    return get_law(name).build(pair, R)
+
+
 def _grid(model: ContactModel, n: int = 6000) -> np.ndarray:
     top = model.max_interference
     return np.geomspace(top * 1e-9, top, n)
@@ -49,8 +72,7 @@ def _grid(model: ContactModel, n: int = 6000) -> np.ndarray:
 @settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(case=pairs(), frac=st.floats(1e-6, 1.0))
 def test_loading_curve_invariants(name: str, case: tuple[ContactPair, float], frac: float) -> None:
-    pair, R = case
-    model = get_law(name).build(pair, R)
+    model = _build(name, case)
     d = _grid(model)
     f = model.force(d)
     assert np.all(np.isfinite(f)) and np.all(f >= 0.0)
@@ -58,7 +80,8 @@ def test_loading_curve_invariants(name: str, case: tuple[ContactPair, float], fr
     # continuity: no step larger than what the log-slope bound allows on this grid
     h = math.log(d[1] / d[0])
     rel = np.diff(f) / np.maximum(f[1:], 1e-300)
-    assert rel.max() < math.expm1(SLOPE_BOUND * h)
+    bound = SLOPE_BOUND_TABULATED if name == "tabulated" else SLOPE_BOUND
+    assert rel.max() < math.expm1(bound * h)
     # and right at the switch point
     dsw = model.switch_interference
     if math.isfinite(dsw):
@@ -74,8 +97,7 @@ def test_loading_curve_invariants(name: str, case: tuple[ContactPair, float], fr
 @settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(case=pairs(), lfrac=st.floats(-9.0, 0.0))
 def test_unloading_invariants(name: str, case: tuple[ContactPair, float], lfrac: float) -> None:
-    pair, R = case
-    model = get_law(name).build(pair, R)
+    model = _build(name, case)
     dm = model.max_interference * 10.0**lfrac
     br = model.unload(dm)
     assert 0.0 <= br.delta_r < br.delta_m

@@ -17,7 +17,7 @@ from typer.testing import CliRunner
 
 from impactlab._json import shape_problems
 from impactlab.cli import laws as laws_cli
-from impactlab.contact import get_law, law_names
+from impactlab.contact import get_law
 from impactlab.fe import accuracy as acc
 from impactlab.fe.accuracy_views import markdown
 from impactlab.fe.curves import DATA_VERSION, FORMAT, case_from_record, case_names, load_cases
@@ -229,12 +229,12 @@ def test_paper_pair_at_1000_delta_c_matches_docs_fe() -> None:
 
 def test_every_law_is_measured_on_every_case(results) -> None:
     for res in results:
-        assert [a.law for a in res.laws] == list(law_names())
+        assert [a.law for a in res.laws] == list(acc.measured_laws())
         for a in res.laws:
             assert a.message == "", a.message
             assert np.all(np.isfinite(a.force_error)) and np.all(np.isfinite(a.residual_error))
             assert a.verified.upper >= 0.3 or a.verified.limited_by != "end of data"
-        assert res.closest().law in law_names()
+        assert res.closest().law in acc.measured_laws()
         line = res.recommendation()
         assert "\n" not in line and res.closest().law in line
 
@@ -275,7 +275,7 @@ def app() -> typer.Typer:
 def test_cli_table(app) -> None:
     res = CliRunner().invoke(app, ["laws", "--accuracy"], env={"COLUMNS": "250"})
     assert res.exit_code == 0, res.output
-    for name in law_names():
+    for name in acc.measured_laws():
         assert name in res.stdout
     assert res.stdout.count("recommendation:") == len(CASES)
     assert "within 10 % in force and 0.05 in delta_r/delta_max" in res.stdout

@@ -61,14 +61,21 @@ def _cases(rng: np.random.Generator, n: int, body: Rod | Sphere) -> tuple[np.nda
     return np.stack([th, vx, vy, w], axis=1), mu
 
 
-def _check_status(status: np.ndarray, vn0: np.ndarray, gravity: bool, fr: str) -> None:
+#: Normal speed [m/s] below which no law's hard limit is reached; the tabulated law stops at
+#: the end of its FE data, 1000 delta_c = 0.44 mm for the paper's pair (3.8 m/s: the rod, spin).
+FAST = {"tabulated": 3.0}
+
+
+def _check_status(
+    status: np.ndarray, vn0: np.ndarray, gravity: bool, fr: str, law: str = ""
+) -> None:
     """Failures are reported, and only where expected: the law's validity range exceeded
     (status 1) by a fast impact or by the paper's model running away; no separation or
     chattering (3, 9) of a creeping impact that gravity holds on the flat."""
     assert np.count_nonzero(status == 0) > 0.9 * len(status)
     assert np.all(np.isin(status, (0, 1, 3, 9))), np.unique(status, return_counts=True)
     if fr != "impulse_ratio":
-        assert np.all(np.abs(vn0[status == 1]) > 5.0)
+        assert np.all(np.abs(vn0[status == 1]) > FAST.get(law, 5.0))
     resting = (status == 3) | (status == 9)
     assert not np.any(resting) or (gravity and np.all(np.abs(vn0[resting]) < CREEP))
 
@@ -125,7 +132,7 @@ def test_fuzz(law: str, friction: str, body: str) -> None:
             gravity=gravity,
             constant_angle=bool(rng.integers(0, 2)),
         )
-        _check_status(status, out[:, O["vn_in"]], gravity, friction)
+        _check_status(status, out[:, O["vn_in"]], gravity, friction, law)
         n_gain += _check(out, status, init[half], b, friction)
     if friction == "impulse_ratio":  # the paper's model gains energy often: the flag fires
         assert n_gain > N_CASES // 20

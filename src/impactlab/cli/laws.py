@@ -161,6 +161,11 @@ def _accuracy(name: str | None, as_json: bool) -> None:
     from impactlab.fe.accuracy_views import table_rows
 
     only = str(get_law(name).name) if name else None
+    if only is not None and only not in acc.measured_laws():
+        raise ValueError(
+            f"law {only!r} is built from the shipped FE curves, not measured against them: "
+            "see docs/laws/tabulated.md for its round trip"
+        )
     results = acc.accuracy()
     if as_json:
         emit(acc.report(results, only), as_json=True, units=acc.UNITS)

@@ -16,21 +16,27 @@ live in ``impactlab.contact.kernels``.
 
 from impactlab.contact.base import ContactLaw, ContactModel, Parameter, UnloadingBranch
 from impactlab.contact.energy import ReboundResult, loading_work, quasi_static_rebound
+from impactlab.contact.indentation_data import IndentationCurves, shipped_curves
 from impactlab.contact.names import Law
 from impactlab.contact.registry import get_law, law_names
+from impactlab.contact.tabulated import Tabulated, tabulated_model
 from impactlab.contact.thornton import thornton_restitution, thornton_yield_velocity
 
 __all__ = [
     "ContactLaw",
     "ContactModel",
+    "IndentationCurves",
     "Law",
     "Parameter",
     "ReboundResult",
+    "Tabulated",
     "UnloadingBranch",
     "get_law",
     "law_names",
     "loading_work",
     "quasi_static_rebound",
+    "shipped_curves",
+    "tabulated_model",
     "thornton_restitution",
     "thornton_yield_velocity",
 ]

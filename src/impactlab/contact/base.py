@@ -15,6 +15,7 @@ from impactlab._html import law_html, law_repr
 from impactlab._validation import check_array, check_finite, check_nonnegative, check_positive
 from impactlab.contact import kernel_arrays as ka
 from impactlab.contact import kernels as k
+from impactlab.contact.curve_table import has_curves
 from impactlab.contact.names import Law
 from impactlab.contact.ranges import LawRange, critical_interference, law_extrapolated, law_range
 from impactlab.materials import ContactPair
@@ -85,7 +86,9 @@ class ContactModel:
 
     ``law_id`` and ``params`` are the compiled representation (see ``contact.kernels``);
     ``details`` holds derived numbers for people (critical values, calibrated range, ...);
-    ``references`` are the law's sources (``impactlab.references``).
+    ``references`` are the law's sources (``impactlab.references``); ``source`` says which
+    data a tabulated law was built from ("" for the closed-form laws). The tabulated law's
+    ``params`` carry its curves after slot NPARAM (``contact.curve_table``).
     """
 
     name: str
@@ -93,10 +96,11 @@ class ContactModel:
     params: np.ndarray = field(repr=False)
     details: Mapping[str, float] = field(default_factory=dict, repr=False)
     references: tuple[Reference, ...] = field(default=(), repr=False)
+    source: str = ""
 
     def __post_init__(self) -> None:
         p = np.array(self.params, dtype=np.float64)
-        if p.shape != (k.NPARAM,):
+        if p.shape != (k.NPARAM,) and not (self.law_id == k.TABULATED and has_curves(p, k.NPARAM)):
             raise ValueError(f"params must have shape ({k.NPARAM},), got {p.shape}")
         p.setflags(write=False)
         object.__setattr__(self, "params", p)

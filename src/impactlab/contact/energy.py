@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from impactlab._validation import check_nonnegative, check_positive
 from impactlab.contact import kernels as k
 from impactlab.contact.base import ContactModel
+from impactlab.contact.curve_table import curve_nodes
 
 
 @dataclass(frozen=True)
@@ -42,6 +43,8 @@ def _breakpoints(model: ContactModel, upper: float) -> list[float]:
     dc = model.details.get("delta_c")
     if dc is not None:
         pts.add(k.JG_AREA_SWITCH * dc)
+    if model.law_id == k.TABULATED:  # the nodes of its table, where the cubics join
+        pts.update(curve_nodes(model.params).tolist())
     return sorted(x for x in pts if 0.0 < x < upper and math.isfinite(x))
 
 

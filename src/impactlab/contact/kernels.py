@@ -40,7 +40,14 @@ Brake                   8     P_BR_DP: delta_p (Eq. 26) [m]
                         10    P_BR_N: Meyer index n
                         11    P_BR_AP: a_p = sqrt(2 R delta_p) [m]
 Thornton                8     P_TH_PY: limiting contact pressure p_y [Pa]
+Tabulated               8     P_TB_DC: delta_c of the pair (Jackson-Green) [m]
+                        9     P_TB_FC: F_c of the pair [N]
+                        10    P_TB_RATIO: E*/S_y of the curves' pair (for people)
+                        11    P_TB_NU: nu of the curves' pair (for people)
 ======================  ====  ==========================================================
+
+The tabulated law's curves follow ``p[NPARAM:]`` (``contact.curve_table``): its parameter
+vectors are ``NPARAM + CURVE_LENGTH`` long (``param_length``).
 
 Everything here is a pure function: no state is kept between calls, nothing is allocated.
 Vectorised loops over these kernels (for building and plotting models) are in
@@ -54,6 +61,12 @@ import math
 import numpy as np
 from numba import njit
 
+from impactlab.contact.curve_table import (  # noqa: F401  (CURVE_MAGIC: for the core)
+    CURVE_LENGTH,
+    CURVE_MAGIC,
+    curve_force,
+    curve_residual_ratio,
+)
 from impactlab.contact.table import HEADER as TABLE_HEADER  # noqa: F401  (re-exported for the core)
 from impactlab.contact.table import TABLE_MAGIC, table_force  # noqa: F401
 
@@ -63,7 +76,8 @@ JACKSON_GREEN = 2
 KOGUT_KOMVOPOULOS = 3
 BRAKE = 4
 THORNTON = 5
-N_LAWS = 6
+TABULATED = 6
+N_LAWS = 7
 
 NPARAM = 16
 P_ESTAR = 0  # reduced modulus E* [Pa]
@@ -97,6 +111,17 @@ P_BR_N = 10
 P_BR_AP = 11
 
 P_TH_PY = 8
+
+P_TB_DC = 8
+P_TB_FC = 9
+P_TB_RATIO = 10
+P_TB_NU = 11
+
+
+def param_length(law_id: int) -> int:
+    """Length of a parameter vector of law ``law_id`` (without the polynomial table)."""
+    return NPARAM + CURVE_LENGTH if law_id == TABULATED else NPARAM
+
 
 #: The dimensionless interference delta/delta_c where the Jackson-Green contact-area fit starts.
 JG_AREA_SWITCH = 1.9
@@ -309,6 +334,10 @@ def loading_force(law: int, p: np.ndarray, delta: float) -> float:
         return _brake_loading(p, delta)
     if law == THORNTON:
         return _thornton_loading(p, delta)
+    if law == TABULATED:
+        if delta < p[P_DSW]:
+            return hertz_force(p[P_ESTAR], p[P_R], delta)
+        return curve_force(p, NPARAM, delta)
     return math.nan
 
 
@@ -336,6 +365,8 @@ def residual_depth(law: int, p: np.ndarray, delta_m: float, F_m: float) -> float
             return 0.0
         d = delta_m - 3.0 * F_m / (4.0 * p[P_ESTAR] * math.sqrt(p[P_R] * delta_m))
         return d if d > 0.0 else 0.0
+    if law == TABULATED:
+        return delta_m * curve_residual_ratio(p, NPARAM, delta_m)
     return math.nan
 
 

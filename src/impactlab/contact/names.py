@@ -26,6 +26,7 @@ class Law(enum.StrEnum):
     )
     BRAKE = ("brake", k.BRAKE, ("brake-2015", PAPER))
     THORNTON = ("thornton", k.THORNTON, ("thornton-1997",))
+    TABULATED = ("tabulated", k.TABULATED, ("fritsch-carlson-1980", "jackson-green-2005"))
 
     law_id: int
     reference_keys: tuple[str, ...]

@@ -72,6 +72,7 @@ STATUSES: Mapping[str, str] = MappingProxyType(
         "provisional": "stand-in value: the source's own range was not found",
         "theory": "limit of the theory itself",
         "analytical": "closed-form law, no fitted range",
+        "tabulated": "interpolated data: the hard limit is the data's end, nothing beyond",
     }
 )
 
@@ -196,6 +197,15 @@ _ALL = (
         "analytical",
         "analytical elastic-perfectly plastic model (limiting pressure p_y), no fitted range",
         ("thornton-1997",),
+    ),
+    LawRange(
+        Law.TABULATED,
+        math.inf,
+        "delta_c (Jackson-Green, paper Eq. 15), the curves' unit of interference",
+        "tabulated",
+        "interpolated indentation data (FE or measured): valid up to the last tabulated "
+        "interference, the law's hard limit (the engine stops beyond it), never extrapolated",
+        ("fritsch-carlson-1980", "jackson-green-2005"),
     ),
 )
 

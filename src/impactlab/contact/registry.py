@@ -12,11 +12,20 @@ from impactlab.contact.hertz import Hertz
 from impactlab.contact.jackson_green import JacksonGreen
 from impactlab.contact.kogut_komvopoulos import KogutKomvopoulos
 from impactlab.contact.names import Law
+from impactlab.contact.tabulated import Tabulated
 from impactlab.contact.thornton import Thornton
 
 _LAWS: dict[Law, ContactLaw] = {
     law.law: law
-    for law in (Hertz(), Ghaednia(), JacksonGreen(), KogutKomvopoulos(), Brake(), Thornton())
+    for law in (
+        Hertz(),
+        Ghaednia(),
+        JacksonGreen(),
+        KogutKomvopoulos(),
+        Brake(),
+        Thornton(),
+        Tabulated(),
+    )
 }
 
 

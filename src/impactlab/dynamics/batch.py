@@ -14,7 +14,7 @@ import numpy as np
 
 from impactlab._validation import check_array
 from impactlab.bodies import NB
-from impactlab.contact.kernels import N_LAWS, NPARAM
+from impactlab.contact.kernels import N_LAWS, NPARAM, param_length
 from impactlab.contact.ranges import extrapolation_flags
 from impactlab.contact.tabulate import has_table, with_table
 from impactlab.dynamics.checks import check_rtol, gravity_value
@@ -104,7 +104,7 @@ def run_arrays(
         if not tabulate:
             lp = np.ascontiguousarray(lp[:, :NPARAM])
     else:
-        lp = _rows("law_params", law_params, NPARAM, n)
+        lp = _rows("law_params", law_params, param_length(lid), n)
         if lp.shape[0] == 1 and tabulate:  # one law for all: its loading curve as a table
             lp = shared_table(lid, lp[0])[None, :]
     bp = _rows("body_params", body_params, NB, n)

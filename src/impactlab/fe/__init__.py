@@ -18,6 +18,7 @@ from impactlab.fe.ccx import INSTALL_HINT, find_ccx
 from impactlab.fe.problem import MESH_GROWTH, SPHERE_KINDS, check_hardening, critical_interference
 from impactlab.fe.result import SECTOR_FACTOR, IndentationResult
 from impactlab.fe.run import NotConvergedWarning, indent, indent_one
+from impactlab.fe.tabulated import tabulated_law
 
 __all__ = [
     "INSTALL_HINT",
@@ -33,4 +34,5 @@ __all__ = [
     "find_ccx",
     "indent",
     "indent_one",
+    "tabulated_law",
 ]

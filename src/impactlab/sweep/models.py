@@ -13,7 +13,8 @@ from typing import Any
 import numpy as np
 
 from impactlab.bodies import NB, PAPER_ROD, Rod, Sphere
-from impactlab.contact.kernels import NPARAM
+from impactlab.contact import get_law
+from impactlab.contact.kernels import param_length
 from impactlab.dynamics.models import body_params, build_contact_model
 from impactlab.materials import Material
 from impactlab.sweep.inputs import BODY_INPUTS, CATEGORY_INPUTS, LAW_INPUTS, MATERIAL_OVERRIDES
@@ -95,7 +96,8 @@ def build_models(
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Per-case law parameters, body parameters and status (0 or a sweep rejection code).
 
-    Returns (law_params (N, NPARAM) or (NPARAM,), body_params (N, NB) or (NB,), status (N,)).
+    Returns (law_params (N, P) or (P,), P = ``kernels.param_length`` of the law; body_params
+    (N, NB) or (NB,); status (N,)).
     ContactModels and bodies are built once per distinct combination of the inputs that enter
     them and cached for the life of the process.
     """
@@ -106,7 +108,7 @@ def build_models(
     cols = [np.asarray(cases[k], dtype=np.float64) for k in names]
     rows, inverse = _unique_rows(cols)
     lp = tuple(sorted(statics.law_params.items()))
-    law_out = np.empty((rows.shape[0], NPARAM))
+    law_out = np.empty((rows.shape[0], param_length(get_law(cat["law"]).law_id)))
     body_out = np.empty((rows.shape[0], NB))
     row_status = np.zeros(rows.shape[0], dtype=np.int32)
     for r in range(rows.shape[0]):

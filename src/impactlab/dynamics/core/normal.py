@@ -13,6 +13,8 @@ from impactlab.contact.kernels import (
     P_DSW,
     P_ESTAR,
     P_R,
+    TABULATED,
+    curve_force,
     hertz_force,
     loading_force,
     table_force,
@@ -106,6 +108,8 @@ def normal_force(law, p, md, delta):
             f = table_force(p, NPARAM, delta)
             if f >= 0.0:
                 return f
+            if law == TABULATED:  # its own tables, inline (as the polynomial table)
+                return curve_force(p, NPARAM, delta)
         elif law != KOGUT_KOMVOPOULOS:
             # the elastic curve below the switch is Hertz's for every law but KK's (its own
             # elastic fit), inline as in ``loading_force``: the same numbers without its call

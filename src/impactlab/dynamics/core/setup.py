@@ -19,6 +19,8 @@ from impactlab.bodies.layout import (
     NB,
 )
 from impactlab.contact.kernels import (
+    CURVE_LENGTH,
+    CURVE_MAGIC,
     NPARAM,
     P_DLIM,
     P_DSW,
@@ -73,7 +75,8 @@ def check_inputs(law, p, fric, bp, th0, vx0, vy0, w0, mu, g, rtol):
     ):
         return ST_BAD_INPUT
     if p.shape[0] != NPARAM and not (
-        p.shape[0] > NPARAM + TABLE_HEADER and p[NPARAM] == TABLE_MAGIC
+        (p.shape[0] > NPARAM + TABLE_HEADER and p[NPARAM] == TABLE_MAGIC)
+        or (p.shape[0] == NPARAM + CURVE_LENGTH and p[NPARAM] == CURVE_MAGIC)
     ):
         return ST_BAD_INPUT
     if not (

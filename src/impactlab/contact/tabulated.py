@@ -1,0 +1,346 @@
+"""The tabulated law (``law="tabulated"``): a loading curve and residual depths interpolated from
+indentation data (finite-element or measured), the engine's common Hertzian unloading branch.
+
+Construction (``curve_tables``), from dimensionless curves (``contact.indentation_data``), with
+x = log(delta / delta_c), z = log(F / F_c):
+
+- loading: Hertz up to the elastic limit; from there the monotone piecewise cubic (PCHIP,
+  Fritsch & Carlson 1980) of -log(F/F_Hertz) = 1.5 x - z through the Hertz point at the
+  limit and the data past it (lowered where needed so that F/F_Hertz never increases), its
+  first slope 0 (z's is Hertz's 1.5: the curve is C1 at the switch), resampled with its
+  slopes onto ``N_LOAD`` uniform nodes in x (Fritsch-Carlson-limited, so still monotone):
+  dz/dx <= 1.5 everywhere by construction, dz/dx >= 0 checked when a model is built; the
+  compiled lookup (``contact.curve_table``) is one log, one exp and a cubic;
+- unloading: delta_r / delta_max as PCHIP of log(delta_max / delta_c), resampled the same way
+  (``N_RES`` nodes), 0 below its first data point; unloading itself is the engine's Hertzian
+  branch through (delta_m, F_m) with that delta_r;
+- hard limit ``p[P_DLIM]``: the last interference covered by both data sets (or R).
+
+Curves of a pair with E*/S_y and nu apply to another pair only when both match within
+``RATIO_TOLERANCE`` and ``NU_TOLERANCE`` (refused otherwise: no interpolation between pairs).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from impactlab._compiled_cache import default_cache_root
+from impactlab._validation import check_positive
+from impactlab.contact import kernels as k
+from impactlab.contact._common import jg_critical
+from impactlab.contact.base import ContactLaw, ContactModel
+from impactlab.contact.curve_table import CURVE_MAGIC, N_LOAD, N_RES
+from impactlab.contact.indentation_data import IndentationCurves, read_curves, shipped_curves
+from impactlab.contact.names import Law
+from impactlab.materials import ContactPair
+
+#: Largest relative difference between the pair's E*/S_y and the curves', and of nu.
+RATIO_TOLERANCE = 0.05
+NU_TOLERANCE = 0.03
+
+
+def curves_cache_dir() -> Path:
+    """Where curves made by FE runs are kept (``tabulated`` in impactlab's cache folder)."""
+    return default_cache_root() / "tabulated"
+
+
+def cached_curves() -> tuple[IndentationCurves, ...]:
+    """Every curve set in ``curves_cache_dir()`` (unreadable files are skipped)."""
+    out: list[IndentationCurves] = []
+    folder = curves_cache_dir()
+    if folder.is_dir():
+        for path in sorted(folder.glob("*.json")):
+            try:
+                out += read_curves(path)
+            except (OSError, ValueError, KeyError):
+                continue
+    return tuple(out)
+
+
+def _monotone(x: np.ndarray, y: np.ndarray, m: np.ndarray) -> np.ndarray:
+    """Slopes ``m`` (dy/dx at the nodes ``x``) limited so that the cubic Hermite interpolant of
+    ``y`` is monotone on every interval (Fritsch & Carlson 1980: the secant's sign, and
+    alpha^2 + beta^2 <= 9 with alpha, beta the end slopes over the secant)."""
+    m = m.copy()
+    secant = np.diff(y) / np.diff(x)
+    for i, s in enumerate(secant):
+        if s == 0.0:
+            m[i] = m[i + 1] = 0.0
+            continue
+        a, b = max(m[i] / s, 0.0), max(m[i + 1] / s, 0.0)
+        q = a * a + b * b
+        if q > 9.0:
+            t = 3.0 / math.sqrt(q)
+            a, b = t * a, t * b
+        m[i], m[i + 1] = a * s, b * s
+    return m
+
+
+def _resample(x: np.ndarray, y: np.ndarray, n: int, first_slope: float | None) -> np.ndarray:
+    """(values, slopes per node step) of the PCHIP of y(x) (its first slope ``first_slope``
+    where given) on ``n`` uniform nodes, limited to stay monotone between them."""
+    from scipy.interpolate import CubicHermiteSpline, PchipInterpolator
+
+    slopes = PchipInterpolator(x, y).derivative()(x)
+    if first_slope is not None:
+        slopes[0] = first_slope
+    spline = CubicHermiteSpline(x, y, _monotone(x, y, slopes))
+    xg = np.linspace(x[0], x[-1], n)
+    yg = spline(xg)
+    return np.concatenate((yg, _monotone(xg, yg, spline.derivative()(xg)) * (xg[1] - xg[0])))
+
+
+def _raw_loading(c: IndentationCurves) -> tuple[np.ndarray, np.ndarray]:
+    keep = c.delta > c.elastic_limit
+    x = np.log(np.concatenate(([c.elastic_limit], c.delta[keep])))
+    z = np.concatenate(([1.5 * x[0]], np.log(c.force[keep])))
+    if z[1] < z[0]:
+        raise ValueError(
+            f"force at delta/delta_c = {float(c.delta[keep][0])!r} "
+            f"({float(c.force[keep][0])!r} F_c) is below Hertz's at the elastic limit "
+            f"delta/delta_c = {c.elastic_limit!r}: the loading curve would decrease"
+        )
+    return x, z
+
+
+def loading_points(c: IndentationCurves) -> tuple[np.ndarray, np.ndarray]:
+    """(x, z) the loading table interpolates: the Hertz point at the elastic limit, then the
+    data past it, each point lowered where needed so that F / F_Hertz never increases (the
+    curve never stiffens faster than Hertz's, delta^1.5: that, with a non-decreasing
+    delta_r/delta_max, keeps the elastic energy recoverable at every point below the work
+    spent, so no impact gains energy). ValueError where the data starts below the Hertz
+    force at the limit."""
+    x, z = _raw_loading(c)
+    w = np.maximum.accumulate(1.5 * x - z)  # -log(F / F_Hertz), made non-decreasing
+    return x, 1.5 * x - w
+
+
+def data_adjustments(c: IndentationCurves) -> tuple[float, float]:
+    """(largest relative lowering of a loading force, largest rise of delta_r/delta_max) made
+    by ``loading_points`` and ``residual_points`` to the data ``c``."""
+    _x, z = _raw_loading(c)
+    lowered = float(-np.min(np.expm1(loading_points(c)[1] - z)))
+    raised = float(np.max(np.maximum.accumulate(c.residual_ratio) - c.residual_ratio))
+    return max(lowered, 0.0), raised
+
+
+def residual_points(c: IndentationCurves) -> tuple[np.ndarray, np.ndarray]:
+    """(x, delta_r/delta_max) the residual table interpolates: from the last of the leading
+    zero ratios (or the elastic limit, with ratio 0), then the data, each ratio raised to the
+    largest before it (non-decreasing: see ``loading_points``)."""
+    dm, r = c.delta_max, np.maximum.accumulate(c.residual_ratio)
+    if r[0] > 0.0:
+        if not c.elastic_limit < dm[0]:
+            raise ValueError(
+                f"delta_r > 0 at delta_max/delta_c = {dm[0]!r}, at or below the elastic limit "
+                f"({c.elastic_limit!r}): the first residual depth must lie past it"
+            )
+        dm, r = np.concatenate(([c.elastic_limit], dm)), np.concatenate(([0.0], r))
+    nz = np.flatnonzero(r > 0.0)
+    i0 = max(int(nz[0]) - 1, 0) if nz.size else dm.size - 2
+    i0 = min(i0, dm.size - 2)
+    return np.log(dm[i0:]), r[i0:]
+
+
+def curve_tables(c: IndentationCurves) -> np.ndarray:
+    """The tables appended to a tabulated law's parameters (``contact.curve_table`` layout)."""
+    x, z = loading_points(c)
+    xr, rr = residual_points(c)
+    # w = 1.5 x - z = -log(F/F_Hertz) interpolated monotone (non-decreasing, slope 0 at the
+    # switch): dz/dx <= 1.5 everywhere; z is a linear function minus w, so the Hermite form
+    # of z with slopes 1.5 h - dw carries the same curve
+    w = _resample(x, 1.5 * x - z, N_LOAD, 0.0)
+    xg = np.linspace(x[0], x[-1], N_LOAD)
+    h = xg[1] - xg[0]
+    load = np.concatenate((1.5 * xg - w[:N_LOAD], 1.5 * h - w[N_LOAD:]))
+    res = _resample(xr, rr, N_RES, None)
+    head = [
+        CURVE_MAGIC,
+        x[0],
+        (N_LOAD - 1) / (x[-1] - x[0]),
+        xr[0],
+        (N_RES - 1) / (xr[-1] - xr[0]),
+    ]
+    return np.concatenate((head, load, res))
+
+
+def _hermite(y: np.ndarray, m: np.ndarray, x0: float, inv_h: float, x: Any) -> np.ndarray:
+    """The uniform-grid cubic Hermite interpolant (values ``y``, slopes ``m`` per node step,
+    first node at ``x0``) at ``x``, linear beyond the ends: ``curve_table``'s arithmetic."""
+    n = y.size
+    u = (np.asarray(x, dtype=float) - x0) * inv_h
+    j = np.clip(np.floor(u).astype(int), 0, n - 2)
+    t = u - j
+    d = y[j + 1] - y[j]
+    cubic = y[j] + t * (m[j] + t * ((3 * d - 2 * m[j] - m[j + 1]) + t * (m[j] + m[j + 1] - 2 * d)))
+    out = np.where(u >= n - 1, y[-1] + m[-1] * (u - n + 1), cubic)
+    return np.where(u <= 0.0, y[0] + m[0] * u, out)
+
+
+def table_values(tables: np.ndarray, x: Any, residual: bool = False) -> np.ndarray:
+    """The tables' interpolant at ``x`` = log(delta/delta_c): z = log(F/F_c), or with
+    ``residual`` delta_r/delta_max (0 below the first node, constant past the last)."""
+    if not residual:
+        y, m = tables[5 : 5 + N_LOAD], tables[5 + N_LOAD : 5 + 2 * N_LOAD]
+        return _hermite(y, m, tables[1], tables[2], x)
+    at = 5 + 2 * N_LOAD
+    y, m = tables[at : at + N_RES], tables[at + N_RES : at + 2 * N_RES]
+    xc = np.minimum(np.asarray(x, dtype=float), tables[3] + (N_RES - 1) / tables[4])
+    r = _hermite(y, m, tables[3], tables[4], xc)
+    return np.where(xc <= tables[3], 0.0, np.maximum(r, 0.0))
+
+
+def _loo(x: np.ndarray, y: np.ndarray, n: int, first_slope: float | None) -> np.ndarray:
+    """Leave-one-out errors: the interpolant without each interior point, minus that point."""
+    out = []
+    for i in range(1, x.size - 1):
+        keep = np.arange(x.size) != i
+        t = _resample(x[keep], y[keep], n, first_slope)
+        got = _hermite(t[:n], t[n:], x[0], (n - 1) / (x[-1] - x[0]), x[i])
+        out.append(float(got) - y[i])
+    return np.asarray(out)
+
+
+def interpolation_error(c: IndentationCurves) -> tuple[float, float]:
+    """Leave-one-out error of the interpolation: (largest relative force error, largest
+    absolute error of delta_r/delta_max) at the interior data points, each predicted from the
+    others."""
+    x, z = loading_points(c)
+    xr, rr = residual_points(c)
+    ef = -_loo(x, 1.5 * x - z, N_LOAD, 0.0)
+    er = _loo(xr, rr, N_RES, None)
+    worst_f = float(np.max(np.abs(np.expm1(ef)))) if ef.size else 0.0
+    worst_r = float(np.max(np.abs(er))) if er.size else 0.0
+    return worst_f, worst_r
+
+
+def select_curves(pair: ContactPair, candidates: Sequence[IndentationCurves]) -> IndentationCurves:
+    """The curves whose E*/S_y and nu match ``pair``'s (the closest in E*/S_y, within
+    ``RATIO_TOLERANCE`` and ``NU_TOLERANCE``); ValueError naming the nearest otherwise."""
+    ratio = pair.E_star / pair.yield_strength
+    if not candidates:
+        raise ValueError("law 'tabulated': no indentation curves to choose from")
+
+    def off(c: IndentationCurves) -> float:
+        return abs(math.log(ratio / c.e_star_over_sy))
+
+    fits = [
+        c
+        for c in candidates
+        if off(c) <= math.log1p(RATIO_TOLERANCE) and abs(c.nu - pair.nu) <= NU_TOLERANCE
+    ]
+    if fits:
+        return min(fits, key=off)
+    near = min(candidates, key=off)
+    raise ValueError(
+        f"law 'tabulated': no indentation curves for E*/S_y = {ratio:.4g}, nu = {pair.nu:g} "
+        f"(within {100 * RATIO_TOLERANCE:g} % and {NU_TOLERANCE:g}); nearest: {near.name!r} "
+        f"(E*/S_y = {near.e_star_over_sy:.4g}, nu = {near.nu:g}); make curves for this pair "
+        f"with impactlab.fe.tabulated_law(pair, radius) (runs CalculiX) or from measured data "
+        f"(IndentationCurves.from_arrays)"
+    )
+
+
+class Tabulated(ContactLaw):
+    """Loading curve and residual depths interpolated from indentation curves: given ones
+    (``curves``), else the shipped FE curves and those made by FE runs (``curves_cache_dir``)
+    that match the pair."""
+
+    law = Law.TABULATED
+    title = "Tabulated from indentation data (FE or measured)"
+    reference = (
+        "interpolated FE or measured curves (PCHIP, Fritsch & Carlson, SIAM J. Numer. Anal. 17 "
+        "(1980) 238-246), normalised by Jackson & Green (2005)"
+    )
+    validity = (
+        "the pair of the curves: E*/S_y within 5 % and nu within 0.03; delta up to the last "
+        "tabulated point (hard limit, never extrapolated); loading through the FE points it was "
+        "built from (moved by at most 2.4 % where F/F_Hertz would rise, 0.5 % for the paper's "
+        "pair; leave-one-out 3 % up to 100 delta_c, 4.5 % beyond), delta_r/delta_max within "
+        "0.001 of the FE maxima (leave-one-out 0.015); unloading Hertzian (energy returned "
+        "0.91-1.00 of the FE's past delta_c)"
+    )
+
+    def __init__(self, curves: IndentationCurves | Sequence[IndentationCurves] | None = None):
+        if isinstance(curves, IndentationCurves):
+            curves = (curves,)
+        self.curves: tuple[IndentationCurves, ...] | None = (
+            None if curves is None else tuple(curves)
+        )
+        for c in self.curves or ():
+            if not isinstance(c, IndentationCurves):
+                raise ValueError(f"curves must be IndentationCurves, got {type(c).__name__}")
+
+    def candidates(self) -> tuple[IndentationCurves, ...]:
+        """The curves this law chooses from."""
+        if self.curves is not None:
+            return self.curves
+        return shipped_curves() + cached_curves()
+
+    def build(self, pair: ContactPair, radius: float, **params: float) -> ContactModel:
+        """The model of ``pair`` with a sphere of ``radius`` [m] (no law parameters)."""
+        if not isinstance(pair, ContactPair):
+            raise ValueError(f"pair must be a ContactPair, got {type(pair).__name__}")
+        R = check_positive("radius", radius, "m")
+        self.parameter_values(params)
+        c = select_curves(pair, self.candidates())
+        E, Sy, nu = pair.E_star, pair.yield_strength, pair.nu
+        dc, fc = jg_critical(E, R, Sy, nu)
+        p = np.full(k.NPARAM, np.nan)
+        p[k.P_ESTAR], p[k.P_R], p[k.P_SY], p[k.P_NU] = E, R, Sy, nu
+        p[k.P_DY], p[k.P_FY] = dc, fc
+        p[k.P_DSW] = dc * c.elastic_limit
+        p[k.P_DLIM] = min(R, dc * c.max_delta)
+        p[k.P_TB_DC], p[k.P_TB_FC] = dc, fc
+        p[k.P_TB_RATIO], p[k.P_TB_NU] = c.e_star_over_sy, c.nu
+        full = np.concatenate((p, curve_tables(c)))
+        lowered, raised = data_adjustments(c)
+        self._check_loading_curve(full, pair, published=False)
+        details = {
+            "delta_c": dc,
+            "F_c": fc,
+            "elastic_limit": float(p[k.P_DSW]),
+            "curves_e_star_over_sy": c.e_star_over_sy,
+            "curves_nu": c.nu,
+            "ratio_offset": E / Sy / c.e_star_over_sy - 1.0,
+            "loading_lowered": lowered,
+            "residual_raised": raised,
+        }
+        source = f"{c.name}: {c.source}"
+        return ContactModel(self.name, self.law_id, full, details, self.references, source)
+
+    def _fill(self, p: np.ndarray, pair: ContactPair, values: dict[str, float]) -> None:
+        raise NotImplementedError("Tabulated.build fills the parameters itself")
+
+    def describe(self) -> dict[str, Any]:
+        out = super().describe()
+        out["curves"] = [
+            {"name": c.name, "source": c.source, "e_star_over_sy": c.e_star_over_sy, "nu": c.nu}
+            for c in self.candidates()
+        ]
+        return out
+
+
+def tabulated_model(curves: IndentationCurves, pair: ContactPair, radius: float) -> ContactModel:
+    """The tabulated law of ``curves`` for ``pair`` and a sphere of ``radius`` [m]."""
+    return Tabulated(curves).build(pair, radius)
+
+
+__all__ = [
+    "NU_TOLERANCE",
+    "RATIO_TOLERANCE",
+    "Tabulated",
+    "cached_curves",
+    "curve_tables",
+    "curves_cache_dir",
+    "data_adjustments",
+    "interpolation_error",
+    "select_curves",
+    "table_values",
+    "tabulated_model",
+]
