@@ -145,7 +145,7 @@ def test_shipped_dynamic_fe_matches_hertz(elastic_table):
 def test_shipped_quasi_static_reference_is_elastic(elastic_table):
     for row in elastic_table["rows"]:
         qs = row["quasi_static"]
-        dm, fm, T = hertz_closed_form(row["mass"], E_STAR, R, row["speed"])
+        dm, _fm, T = hertz_closed_form(row["mass"], E_STAR, R, row["speed"])
         assert qs["restitution"] == pytest.approx(1.0, abs=E_TOL)
         assert qs["max_interference"] == pytest.approx(dm, rel=HERTZ_RTOL)
         assert qs["contact_duration"] == pytest.approx(T, rel=HERTZ_RTOL)

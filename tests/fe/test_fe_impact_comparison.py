@@ -1,0 +1,46 @@
+"""The dynamic FE impact beside the quasi-static FE 1-DOF impact and the laws
+(impactlab.verification.fe_impact), from the shipped table: no CalculiX needed."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from impactlab.verification.fe_impact import add_law, compare_impacts, comparison_markdown
+
+CASE = "elastic-ball-on-aisi1010"
+
+
+@pytest.fixture(scope="module")
+def comparison():
+    return compare_impacts(CASE)
+
+
+def test_columns_and_speeds(comparison):
+    assert list(comparison.columns) == ["dynamic FE", "quasi-static FE 1-DOF", "hertz"]
+    assert comparison.speeds == [0.1, 1.0]
+    for col in comparison.columns.values():
+        assert len(col) == len(comparison.speeds)
+
+
+def test_elastic_impact_agrees_across_models(comparison):
+    """Elastic bodies: every model gives e = 1 to within the dynamic FE's vibration loss
+    (< 1 %), and the same peak interference and duration to within 1.5 %."""
+    hertz = comparison.columns["hertz"]
+    for i in range(len(comparison.speeds)):
+        assert hertz[i]["restitution"] == pytest.approx(1.0, abs=1e-6)
+        for name in ("dynamic FE", "quasi-static FE 1-DOF"):
+            row = comparison.columns[name][i]
+            assert row["restitution"] == pytest.approx(1.0, abs=0.01)
+            assert row["max_interference"] == pytest.approx(hertz[i]["max_interference"], rel=0.015)
+            assert row["contact_duration"] == pytest.approx(hertz[i]["contact_duration"], rel=0.015)
+
+
+def test_a_law_column_is_one_call(comparison):
+    add_law(comparison, "jackson-green")
+    col = comparison.columns["jackson-green"]
+    assert all(math.isfinite(r["restitution"]) for r in col)
+    text = comparison_markdown(comparison)
+    assert text.count("| jackson-green |") == len(comparison.speeds)
+    assert "| dynamic FE |" in text
