@@ -91,6 +91,7 @@ TASKS: dict[str, str] = {
     "docs": "build the documentation site (mkdocs build --strict) [ARGS]",
     "lock": "regenerate requirements.lock with uv (developers only)",
     "fe-reference": "run the CalculiX reference curves into src/impactlab/fe/data/ [CASES]",
+    "fe-impact": "run the dynamic CalculiX impacts into src/impactlab/fe/data/ [CASES]",
     "help": "this list (also -h, --help, or no task)",
 }
 
@@ -134,6 +135,8 @@ def main(argv: list[str]) -> int:
         return max(_run(*cmd, env=env) for cmd in cmds)
     if task == "fe-reference":
         return _run(PY, "-m", "impactlab.fe.reference", *rest, env=env)
+    if task == "fe-impact":
+        return _run(PY, "-m", "impactlab.fe.impact_reference", *rest, env=env)
     if task == "bench":
         return _run(PY, "benchmarks/run_all.py", *rest, env=env)
     return _run(PY, "-m", "mkdocs", "build", "--strict", *rest, env=env)

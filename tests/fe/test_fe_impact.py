@@ -152,7 +152,7 @@ def test_shipped_quasi_static_reference_is_elastic(elastic_table):
 
 
 def test_unknown_table_names_the_shipped_ones():
-    with pytest.raises(ValueError, match="impact-elastic-ball-on-aisi1010"):
+    with pytest.raises(ValueError, match="elastic-ball-on-aisi1010"):
         load_impact_table("no-such-case")
 
 
@@ -183,3 +183,20 @@ def test_dynamic_fe_run_against_hertz(tmp_path):
     assert res.max_force == pytest.approx(fm, rel=HERTZ_RTOL)
     assert res.max_interference == pytest.approx(dm, rel=HERTZ_RTOL)
     assert abs(res.restitution - 1.0) < E_TOL
+
+
+def test_sta_counts_each_increment_once():
+    from impactlab.fe.ccx import parse_sta
+    from impactlab.fe.impact_run import sta_counts
+
+    text = (
+        "SUMMARY OF JOB INFORMATION\n"
+        "  STEP      INC     ATT  ITRS     TOT TIME     STEP TIME      INC TIME\n"
+        "     1          1     1     1  0.1E-05  0.1E-05  0.1E-05\n"
+        "     1          1     1     2  0.1E-05  0.1E-05  0.1E-05\n"
+        "     1          2     1U    1  0.1E-05  0.1E-05  0.1E-05\n"
+        "     1          2     1U    6  0.1E-05  0.1E-05  0.1E-05\n"
+        "     1          2     2     1  0.15E-05  0.15E-05  0.5E-06\n"
+        "     1          2     2     3  0.15E-05  0.15E-05  0.5E-06\n"
+    )
+    assert sta_counts(parse_sta(text)) == (2, 1, 14)

@@ -4,7 +4,7 @@
 of :data:`IMPACT_CASES` at each of its speeds, dynamically (:func:`impactlab.fe.impact_run.
 impact`) and as the 1-DOF impact on the quasi-static FE curves of the same bodies
 (:func:`impactlab.fe.impact_quasistatic.quasi_static_impact`), and writes one small JSON table
-``impactlab/fe/data/impact-<case>.v1.json`` (read by :func:`load_impact_table`), so that docs
+``impactlab/fe/data/impact/<case>.v1.json`` (read by :func:`load_impact_table`), so that docs
 and tests compare without running CalculiX. Runs already in the FE cache are read from it.
 """
 
@@ -29,6 +29,8 @@ from impactlab.materials import AISI_201, AISI_1010, Material
 IMPACT_FORMAT = "impactlab-fe-impact"
 IMPACT_VERSION = 1
 RADIUS = 8.8e-3
+#: The impact tables' folder (apart from the indentation curves, which ``fe.curves`` globs).
+IMPACT_DIR = DATA_DIR / "impact"
 
 
 @dataclass(frozen=True)
@@ -60,9 +62,9 @@ IMPACT_CASES: dict[str, ImpactCase] = {
 }
 
 
-def impact_path(name: str, directory: Path = DATA_DIR) -> Path:
+def impact_path(name: str, directory: Path = IMPACT_DIR) -> Path:
     """The data file of a case."""
-    return directory / f"impact-{name}.v{IMPACT_VERSION}.json"
+    return directory / f"{name}.v{IMPACT_VERSION}.json"
 
 
 def _num(x: float) -> float | None:
@@ -160,23 +162,24 @@ def run_case(name: str, *, workers: int | None = None) -> dict[str, Any]:
 
 
 def write_impact_tables(
-    names: list[str] | None = None, *, workers: int | None = None, directory: Path = DATA_DIR
+    names: list[str] | None = None, *, workers: int | None = None, directory: Path = IMPACT_DIR
 ) -> list[Path]:
     """Run the cases (all by default) and write their data files; returns the paths."""
     paths = []
     for name in names or list(IMPACT_CASES):
         record = run_case(name, workers=workers)
         path = impact_path(name, directory)
+        path.parent.mkdir(parents=True, exist_ok=True)
         path.write_text(json.dumps(record, separators=(",", ":")) + "\n")
         paths.append(path)
     return paths
 
 
-def load_impact_table(name: str, directory: Path = DATA_DIR) -> dict[str, Any]:
+def load_impact_table(name: str, directory: Path = IMPACT_DIR) -> dict[str, Any]:
     """A shipped case's record (ValueError naming the known cases for an unknown one)."""
     path = impact_path(name, directory)
     if not path.is_file():
-        known = sorted(p.name for p in directory.glob("impact-*.json"))
+        known = sorted(p.name for p in directory.glob("*.json"))
         raise ValueError(f"no impact table {name!r}; shipped: {', '.join(known) or 'none'}")
     data: dict[str, Any] = json.loads(path.read_text())
     if data.get("format") != IMPACT_FORMAT or data.get("version") != IMPACT_VERSION:

@@ -20,7 +20,7 @@ from typing import Any
 import numpy as np
 
 from impactlab.fe import cache
-from impactlab.fe.ccx import RunOutput, ccx_version, find_ccx, parse_dat, parse_sta, run_ccx
+from impactlab.fe.ccx import RunOutput, StaRow, ccx_version, find_ccx, parse_dat, parse_sta, run_ccx
 from impactlab.fe.impact_deck import ImpactDeckSpec, write_impact_deck
 from impactlab.fe.impact_problem import ImpactProblem, make_impact_problem
 from impactlab.fe.impact_result import (
@@ -34,7 +34,6 @@ from impactlab.fe.impact_result import (
 )
 from impactlab.fe.mesh import Mesh, build_mesh
 from impactlab.fe.problem import check_maxima
-from impactlab.fe.result import sta_summary
 from impactlab.fe.run import NotConvergedWarning
 from impactlab.materials import Material
 
@@ -115,7 +114,7 @@ def assemble(problem: ImpactProblem, mesh: Mesh, out: RunOutput) -> ImpactResult
     if finished and separated:
         dent_r, dent_z, depth, flattening = _final_surfaces(dat, mesh, t[-1], FINAL_POINTS)
         residual = depth + flattening
-    incs, cuts, its = sta_summary(parse_sta(out.sta))
+    incs, cuts, its = sta_counts(parse_sta(out.sta))
     return ImpactResult(
         time=t,
         force=force,
@@ -144,6 +143,15 @@ def assemble(problem: ImpactProblem, mesh: Mesh, out: RunOutput) -> ImpactResult
         delta_c=problem.delta_c,
         inputs=problem.key_data(),
     )
+
+
+def sta_counts(rows: list[StaRow]) -> tuple[int, int, int]:
+    """(converged increments, cut-backs, iterations) of an uncoupled temperature-displacement
+    run, whose ``.sta`` file lists every attempt twice (the thermal pass, then the mechanical
+    one): increments and attempts are counted once, iterations over both passes."""
+    done = {(r.step, r.increment) for r in rows if r.converged}
+    failed = {(r.step, r.increment, r.attempt) for r in rows if not r.converged}
+    return len(done), len(failed), sum(r.iterations for r in rows)
 
 
 def _solve(problem: ImpactProblem, mesh: Mesh, exe: str, keep: Path | None) -> ImpactResult:

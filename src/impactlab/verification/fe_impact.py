@@ -112,3 +112,32 @@ def comparison_markdown(comp: ImpactComparison) -> str:
                 vals.append("n/a" if not math.isfinite(x) else f"{x:.4g}")
             lines.append(f"| {v:g} | {name} | " + " | ".join(vals) + " |")
     return head + "\n".join(lines) + "\n"
+
+
+def plot_force_histories(case: str) -> Any:
+    """F(t) of the dynamic FE impact and of the 1-DOF impact on the quasi-static FE curves,
+    one panel per speed (t from the first touch) [us, N]; returns the matplotlib figure."""
+    from impactlab._mpl import pyplot
+
+    plt = pyplot()
+    table = load_impact_table(case)
+    rows = table["rows"]
+    fig, axes = plt.subplots(1, len(rows), figsize=(4.2 * len(rows), 3.4), squeeze=False)
+    for ax, row in zip(axes[0], rows, strict=True):
+        for key, label, style in (
+            ("dynamic", "dynamic FE", "-"),
+            ("quasi_static", "quasi-static FE 1-DOF", "--"),
+        ):
+            s = row[key]["force"]
+            t = [x * 1e6 if x is not None else math.nan for x in s["t"]]
+            y = [x if x is not None else math.nan for x in s["y"]]
+            ax.plot(t, y, style, label=label)
+        ax.set_title(f"v = {row['speed']:g} m/s, m = {row['mass'] * 1e3:.3g} g")
+        ax.set_xlabel("time from first touch [us]")
+        ax.set_ylabel("contact force [N]")
+        ax.set_xlim(left=0.0)
+        ax.grid(alpha=0.3)
+    axes[0][0].legend(loc="upper right", fontsize=8)
+    fig.suptitle(table["description"], fontsize=9)
+    fig.tight_layout()
+    return fig
