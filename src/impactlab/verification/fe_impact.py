@@ -29,9 +29,18 @@ QUANTITIES: tuple[tuple[str, str], ...] = (
 )
 _SCALE = {"residual_depth": 1e6, "max_interference": 1e6, "contact_duration": 1e6}
 
-#: The laws compared by default: every law that holds for the case's flat (the elastic case:
-#: Hertz).
-DEFAULT_LAWS: dict[str, tuple[str, ...]] = {"elastic-ball-on-aisi1010": ("hertz",)}
+#: The laws compared by default: Hertz for the elastic case, the elastic-plastic laws for the
+#: elastic-plastic flat.
+DEFAULT_LAWS: dict[str, tuple[str, ...]] = {
+    "elastic-ball-on-aisi1010": ("hertz",),
+    "paper-ball-on-aisi1010": (
+        "jackson-green",
+        "ghaednia",
+        "kogut-komvopoulos",
+        "brake",
+        "thornton",
+    ),
+}
 
 
 @dataclass
@@ -128,6 +137,8 @@ def plot_force_histories(case: str) -> Any:
             ("dynamic", "dynamic FE", "-"),
             ("quasi_static", "quasi-static FE 1-DOF", "--"),
         ):
+            if row[key] is None:
+                continue
             s = row[key]["force"]
             t = [x * 1e6 if x is not None else math.nan for x in s["t"]]
             y = [x if x is not None else math.nan for x in s["y"]]
