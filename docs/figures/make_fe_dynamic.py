@@ -14,9 +14,10 @@ from impactlab.verification.fe_impact import (
 )
 
 here = Path(__file__).parent
-for case in IMPACT_CASES:
-    fig = plot_force_histories(case)
-    path = here / f"fe_dynamic_{case}.png"
-    fig.savefig(path, dpi=90)
-    print(path)
+for case, spec in IMPACT_CASES.items():
+    if spec.dynamic:
+        fig = plot_force_histories(case)
+        path = here / f"fe_dynamic_{case}.png"
+        fig.savefig(path, dpi=90)
+        print(path)
     print(comparison_markdown(compare_impacts(case)))

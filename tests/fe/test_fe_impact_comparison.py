@@ -44,3 +44,20 @@ def test_a_law_column_is_one_call(comparison):
     text = comparison_markdown(comparison)
     assert text.count("| jackson-green |") == len(comparison.speeds)
     assert "| dynamic FE |" in text
+
+
+def test_elastic_plastic_flat_has_the_quasi_static_fe_and_the_laws():
+    """The elastic-plastic flat: no dynamic FE (CalculiX 2.20 cannot run it), the 1-DOF impact
+    on the quasi-static FE curves and the laws. Physics that must hold: energy is lost (e < 1)
+    and more of it at the higher speed, the dent is permanent and deeper relative to the
+    peak at the higher speed, and every law dents the flat too."""
+    comp = compare_impacts("paper-ball-on-aisi1010")
+    assert all(math.isnan(r["restitution"]) for r in comp.columns["dynamic FE"])
+    qs = comp.columns["quasi-static FE 1-DOF"]
+    assert 0.0 < qs[1]["restitution"] < qs[0]["restitution"] < 1.0
+    ratios = [r["residual_depth"] / r["max_interference"] for r in qs]
+    assert 0.0 < ratios[0] < ratios[1] < 1.0
+    for law in ("jackson-green", "ghaednia", "kogut-komvopoulos", "brake", "thornton"):
+        for row in comp.columns[law]:
+            assert 0.0 < row["restitution"] < 1.0
+            assert row["residual_depth"] > 0.0
