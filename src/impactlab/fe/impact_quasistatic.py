@@ -101,12 +101,12 @@ def one_dof_impact(
     unloading points' own zero crossing, which the coarse last increments only bracket)."""
     f_load = _interp(np.concatenate([[0.0], loading_delta]), np.concatenate([[0.0], loading_force]))
     # the unloading curve is measured from its own maximum: delta_m - (curve_maximum - delta)
-    zero = (
+    origin = (
         unloading_zero
         if unloading_zero is not None and math.isfinite(unloading_zero)
         else _zero_of(unloading_delta, unloading_force)
     )
-    f_unload = _interp(unloading_delta, unloading_force, zero)
+    f_unload = _interp(unloading_delta, unloading_force, origin)
     scale = speed / max(float(np.max(loading_delta)), 1e-30)
 
     def load(_t: float, y: np.ndarray) -> list[float]:
