@@ -21,6 +21,7 @@ import numpy as np
 
 from impactlab.fe import cache
 from impactlab.fe.ccx import RunOutput, StaRow, ccx_version, find_ccx, parse_dat, parse_sta, run_ccx
+from impactlab.fe.deck import LENGTH_UNIT
 from impactlab.fe.impact_deck import ImpactDeckSpec, write_impact_deck
 from impactlab.fe.impact_problem import ImpactProblem, make_impact_problem
 from impactlab.fe.impact_result import (
@@ -55,9 +56,7 @@ def deck_spec(problem: ImpactProblem, mesh: Mesh) -> ImpactDeckSpec:
     )
 
 
-def _final_surfaces(
-    dat: Any, mesh: Mesh, t_end: float, n: int
-) -> tuple[np.ndarray, np.ndarray, float, float]:
+def _final_surfaces(dat: Any, mesh: Mesh, n: int) -> tuple[np.ndarray, np.ndarray, float, float]:
     """(dent r, dent z of the last point [m], mean dent depth at the axis [m], mean upward
     displacement of the sphere's apex relative to its centre of mass [m]) over the last n
     printed points."""
@@ -70,15 +69,15 @@ def _final_surfaces(
     depth, flattening = [], []
     for _, ids, u in flat_rows:
         on_axis = np.abs(x[ids - 1]) < tol
-        depth.append(-float(u[on_axis, 1][0]) * 1e-3)
+        depth.append(-float(u[on_axis, 1][0]) * LENGTH_UNIT)
     for _, ids, u in sph_rows:
         w = weights[ids - 1]
         cm = float(np.sum(w * u[:, 1]) / np.sum(w))
         k = int(np.flatnonzero(ids - 1 == apex)[0])
-        flattening.append((float(u[k, 1]) - cm) * 1e-3)
+        flattening.append((float(u[k, 1]) - cm) * LENGTH_UNIT)
     _, ids, u = flat_rows[-1]
-    r = x[ids - 1] + u[:, 0] * 1e-3
-    z = y[ids - 1] + u[:, 1] * 1e-3
+    r = x[ids - 1] + u[:, 0] * LENGTH_UNIT
+    z = y[ids - 1] + u[:, 1] * LENGTH_UNIT
     order = np.argsort(r)
     return r[order], z[order], float(np.mean(depth)), float(np.mean(flattening))
 
@@ -112,7 +111,7 @@ def assemble(problem: ImpactProblem, mesh: Mesh, out: RunOutput) -> ImpactResult
     dent_r = dent_z = np.empty(0)
     residual = math.nan
     if finished and separated:
-        dent_r, dent_z, depth, flattening = _final_surfaces(dat, mesh, t[-1], FINAL_POINTS)
+        dent_r, dent_z, depth, flattening = _final_surfaces(dat, mesh, FINAL_POINTS)
         residual = depth + flattening
     incs, cuts, its = sta_counts(parse_sta(out.sta))
     return ImpactResult(
