@@ -5,7 +5,7 @@ The bodies, materials and banded penalty contact are the indentation deck's
 and starts with the velocity -v (``*INITIAL CONDITIONS, TYPE=VELOCITY``; ccx passes it to
 the expanded sector's nodes only when the node set also carries a surface, hence ``SVEL``).
 
-Procedure. The time integration is CalculiX's implicit Hilber-Hughes-Taylor scheme with
+Procedure. The time integration is CalculiX's implicit (Newton-iterated) integration with
 inertia (``*DENSITY``), run as an ``*UNCOUPLED TEMPERATURE-DISPLACEMENT`` step at constant
 temperature (no thermal expansion; the thermal field plays no part). ``*DYNAMIC`` itself did
 not get past the first contact increment: its energy-based impact rules (ccx's

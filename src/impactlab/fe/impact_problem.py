@@ -6,7 +6,7 @@ axisymmetric bodies, self-similar mesh, materials and banded penalty contact) wi
 the sphere is free (no prescribed node) and starts with velocity -v a small gap above the flat.
 The hemisphere's density is set so that its mass is m: the full ball's mass by default, or the
 effective mass a rod puts behind its tip (the whole rod's mass for a rod striking along its
-axis). Time integration: CalculiX's implicit Hilber-Hughes-Taylor scheme (see
+axis). Time integration: CalculiX's implicit integration with inertia (see
 ``impactlab.fe.impact_deck`` for why through the uncoupled temperature-displacement procedure).
 """
 
