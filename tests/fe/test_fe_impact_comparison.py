@@ -61,3 +61,17 @@ def test_elastic_plastic_flat_has_the_quasi_static_fe_and_the_laws():
         for row in comp.columns[law]:
             assert 0.0 < row["restitution"] < 1.0
             assert row["residual_depth"] > 0.0
+
+
+def test_rod_mass_case_is_deep_in_the_plastic_range():
+    """The tip carrying the rod's mass at 1.41 m/s: hundreds of delta_c, most of the peak
+    interference left as a dent, and the Jackson-Green law (built on the same kind of FE
+    model) within 5 % of the quasi-static FE impact in e and delta_p."""
+    comp = compare_impacts("rod-mass-on-aisi1010")
+    assert comp.mass == pytest.approx(0.4607)
+    (qs,) = comp.columns["quasi-static FE 1-DOF"]
+    assert qs["max_interference"] > 100 * 0.436e-6
+    assert 0.5 < qs["residual_depth"] / qs["max_interference"] < 1.0
+    (jg,) = comp.columns["jackson-green"]
+    assert jg["restitution"] == pytest.approx(qs["restitution"], rel=0.05)
+    assert jg["residual_depth"] == pytest.approx(qs["residual_depth"], rel=0.05)

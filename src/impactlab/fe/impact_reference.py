@@ -48,6 +48,7 @@ class ImpactCase:
     mesh_level: int = 1
     time_level: int = 1
     dynamic: bool = True  # False: CalculiX cannot run it (docs/fe-dynamic.md); 1-DOF only
+    mass: float | None = None  # the sphere's mass [kg]; None: a full ball's
 
 
 #: The elastic case: the paper's steels, both kept elastic (a ball of AISI 201, R = 8.8 mm,
@@ -70,6 +71,18 @@ IMPACT_CASES: dict[str, ImpactCase] = {
         None,
         (0.1, 1.0),
         dynamic=False,
+    ),
+    "rod-mass-on-aisi1010": ImpactCase(
+        "The paper's rod tip (R = 8.8 mm, AISI 201, elastic-plastic) carrying the whole rod's "
+        "mass (0.4607 kg: a rod striking along its axis) on AISI 1010 (elastic-perfectly "
+        "plastic) at the paper's slowest drop speed: quasi-static FE 1-DOF only",
+        AISI_1010,
+        AISI_201,
+        "elastic-plastic",
+        None,
+        (1.41,),
+        dynamic=False,
+        mass=0.4607,
     ),
 }
 
@@ -141,6 +154,7 @@ def run_case(name: str, *, workers: int | None = None) -> dict[str, Any]:
         c.sphere_material,
         radius=RADIUS,
         speed=list(c.speeds),
+        mass=c.mass,
         sphere=c.sphere,
         flat_hardening=c.flat_hardening,
         mesh_level=c.mesh_level,
@@ -193,7 +207,7 @@ def _quasi_static_only(name: str, c: ImpactCase) -> dict[str, Any]:
     delta_c = math.nan
     for v in c.speeds:
         p = make_impact_problem(
-            c.flat, c.sphere_material, radius=RADIUS, speed=v, sphere=c.sphere,
+            c.flat, c.sphere_material, radius=RADIUS, speed=v, mass=c.mass, sphere=c.sphere,
             flat_hardening=c.flat_hardening, mesh_level=c.mesh_level,
         )  # fmt: skip
         delta_c = p.delta_c

@@ -29,17 +29,20 @@ QUANTITIES: tuple[tuple[str, str], ...] = (
 )
 _SCALE = {"residual_depth": 1e6, "max_interference": 1e6, "contact_duration": 1e6}
 
+#: The elastic-plastic laws.
+PLASTIC_LAWS: tuple[str, ...] = (
+    "jackson-green",
+    "ghaednia",
+    "kogut-komvopoulos",
+    "brake",
+    "thornton",
+)
 #: The laws compared by default: Hertz for the elastic case, the elastic-plastic laws for the
 #: elastic-plastic flat.
 DEFAULT_LAWS: dict[str, tuple[str, ...]] = {
     "elastic-ball-on-aisi1010": ("hertz",),
-    "paper-ball-on-aisi1010": (
-        "jackson-green",
-        "ghaednia",
-        "kogut-komvopoulos",
-        "brake",
-        "thornton",
-    ),
+    "paper-ball-on-aisi1010": PLASTIC_LAWS,
+    "rod-mass-on-aisi1010": PLASTIC_LAWS,
 }
 
 
