@@ -92,6 +92,7 @@ TASKS: dict[str, str] = {
     "lock": "regenerate requirements.lock with uv (developers only)",
     "fe-reference": "run the CalculiX reference curves into src/impactlab/fe/data/ [CASES]",
     "calibrate-paper": "calibrate the paper's three drops into src/impactlab/paper/data/ [STEPS]",
+    "fe-impact": "run the dynamic CalculiX impacts into src/impactlab/fe/data/ [CASES]",
     "help": "this list (also -h, --help, or no task)",
 }
 
@@ -137,6 +138,8 @@ def main(argv: list[str]) -> int:
         return _run(PY, "-m", "impactlab.fe.reference", *rest, env=env)
     if task == "calibrate-paper":
         return _run(PY, "-m", "impactlab.paper.calibration_report", "--shipped", *rest, env=env)
+    if task == "fe-impact":
+        return _run(PY, "-m", "impactlab.fe.impact_reference", *rest, env=env)
     if task == "bench":
         return _run(PY, "benchmarks/run_all.py", *rest, env=env)
     return _run(PY, "-m", "mkdocs", "build", "--strict", *rest, env=env)

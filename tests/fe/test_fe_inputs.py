@@ -167,3 +167,27 @@ def test_cli_errors_are_one_line(tmp_path):
     assert res.returncode == 2
     assert "apt-get install calculix-ccx" in res.stderr
     assert "Traceback" not in res.stderr
+
+
+def test_mesh_resolution_is_checked_against_the_requested_interference():
+    """Every level-1 mesh puts about 17 or more elements across sqrt(R delta_max); a mesh with 8 or
+    fewer is refused with a one-line error naming delta_max."""
+    import dataclasses
+    import math
+
+    from impactlab.fe.problem import (
+        MIN_CONTACT_ELEMENTS,
+        check_resolution,
+        contact_elements,
+        make_problem,
+    )
+    from impactlab.materials import AISI_201, AISI_1010
+
+    for dmax in (1e-8, 1e-7, 1e-6, 1e-5, 1e-4, 4e-4):
+        p = make_problem(AISI_1010, AISI_201, radius=8.8e-3, delta_max=dmax)
+        assert contact_elements(p.mesh_spec(), dmax) >= 16.9  # ln(1 + sqrt(20)) / 0.1
+    spec = p.mesh_spec()
+    coarse = dataclasses.replace(spec, h0=math.sqrt(spec.radius * 4e-4))
+    assert contact_elements(coarse, 4e-4) < MIN_CONTACT_ELEMENTS
+    with pytest.raises(ValueError, match=r"too coarse for delta_max = 0.0004 m"):
+        check_resolution(coarse, 4e-4)

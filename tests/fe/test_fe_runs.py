@@ -118,6 +118,21 @@ def test_truncated_run_is_marked_not_converged(elastic):
     assert "NOT CONVERGED" in bad.status() and "too many cutbacks" in bad.status()
 
 
+def test_friction_stiffens_the_elastic_loading_slightly(elastic, tmp_path):
+    """Coulomb friction (mu = 0.5) against the frictionless run of the same rigid sphere on
+    the elastic flat (same mesh and increments): friction restrains the flat's surface from
+    moving inwards under the sphere, so the force at a given interference is a little higher,
+    by a few per cent for nu = 0.3 (Spence's finite-friction Hertz problem); never lower."""
+    res0, problem, _ = elastic
+    res = indent(AISI_1010, delta_max=problem.delta_max, mu=0.5, cache_dir=tmp_path, **ELASTIC)[0]
+    assert res.converged, res.status()
+    np.testing.assert_allclose(res.loading_delta, res0.loading_delta, rtol=1e-12)
+    ratio = res.loading_force[1:] / res0.loading_force[1:]
+    assert np.all(ratio > 0.999)
+    assert 1.0 < ratio[-1] < 1.08
+    assert np.all(np.diff(res.loading_force) > 0.0)
+
+
 def test_paper_pair_plastic_smoke(tmp_path):
     """The paper's pair (both elastic-plastic) to 10 delta_c: a dent, a stiffer-than-Hertz
     flattening, and a contact radius beyond Hertz's."""

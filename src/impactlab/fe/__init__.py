@@ -10,11 +10,13 @@ Usage::
 
 Needs ``ccx`` (Debian package ``calculix-ccx``) and the ``gmsh`` Python package (the ``fe``
 extra); both are looked up only when a run starts, so ``import impactlab.fe`` works without
-them. Method and verification: docs/fe.md.
+them. Method and verification: docs/fe.md; the dynamic impact (``impact``): docs/fe-dynamic.md.
 """
 
 from impactlab.fe.cache import SCHEMA_VERSION, default_cache_dir
 from impactlab.fe.ccx import INSTALL_HINT, find_ccx
+from impactlab.fe.impact_result import ImpactResult
+from impactlab.fe.impact_run import impact
 from impactlab.fe.problem import MESH_GROWTH, SPHERE_KINDS, check_hardening, critical_interference
 from impactlab.fe.result import SECTOR_FACTOR, IndentationResult
 from impactlab.fe.run import NotConvergedWarning, indent, indent_one
@@ -26,12 +28,14 @@ __all__ = [
     "SCHEMA_VERSION",
     "SECTOR_FACTOR",
     "SPHERE_KINDS",
+    "ImpactResult",
     "IndentationResult",
     "NotConvergedWarning",
     "check_hardening",
     "critical_interference",
     "default_cache_dir",
     "find_ccx",
+    "impact",
     "indent",
     "indent_one",
     "tabulated_law",

@@ -40,6 +40,13 @@ INCREMENTS_PER_DECADE = 10
 UNLOADING_INCREMENTS = 30
 #: The loading curve starts at LOW_FRACTION delta_c (or delta_max / 20 if smaller).
 LOW_FRACTION = 0.05
+#: The fewest elements of the flat's surface across the contact radius sqrt(R delta_max) that
+#: ``indent`` accepts. The graded mesh puts ln(1 + g a / h0) / g elements across a radius a:
+#: ln(1 + sqrt(20)) / 0.1 = 17 or more at level 1 for every delta_max (h0 = g sqrt(R
+#: delta_low), delta_low <= delta_max / 20), where the Hertz check is within 1.04 % and the
+#: 1000 delta_c run within 1.4 % of level 2 (docs/fe.md); 8 is half that resolution, below
+#: which the loading curve's error is no longer known.
+MIN_CONTACT_ELEMENTS = 8
 
 
 def check_hardening(name: str, table: Any) -> tuple[tuple[float, float], ...]:
@@ -212,6 +219,25 @@ def estimated_contact_radius(radius: float, delta: float) -> float:
     return 1.2 * math.sqrt(max(2.0 * radius * delta - delta * delta, 0.0))
 
 
+def contact_elements(spec: MeshSpec, delta: float) -> float:
+    """Elements of the flat's surface across the contact radius sqrt(R delta) [m] of a mesh
+    whose element size grows as h0 + g d: ln(1 + g a / h0) / g."""
+    a = math.sqrt(spec.radius * delta)
+    return math.log1p(spec.growth * a / spec.h0) / spec.growth
+
+
+def check_resolution(spec: MeshSpec, delta: float) -> None:
+    """ValueError when the mesh resolves the contact radius at ``delta`` [m] by fewer than
+    MIN_CONTACT_ELEMENTS elements."""
+    n = contact_elements(spec, delta)
+    if n < MIN_CONTACT_ELEMENTS:
+        raise ValueError(
+            f"the mesh is too coarse for delta_max = {delta!r} m: {n:.1f} elements across the "
+            f"contact radius sqrt(R delta_max) = {math.sqrt(spec.radius * delta):.4g} m, at "
+            f"least {MIN_CONTACT_ELEMENTS} needed; use a finer mesh_level"
+        )
+
+
 def perfectly_plastic(m: Material) -> tuple[tuple[float, float], ...]:
     """The elastic-perfectly plastic table of a material: ((S_y, 0),)."""
     return ((m.yield_strength, 0.0),)
@@ -261,7 +287,9 @@ def make_problem(
         if sphere_hardening is None
         else check_hardening("sphere_hardening", sphere_hardening)
     )
-    return Problem(flat, sphere_material, sphere, R, d, fh, sh, mu_v, int(mesh_level))
+    problem = Problem(flat, sphere_material, sphere, R, d, fh, sh, mu_v, int(mesh_level))
+    check_resolution(problem.mesh_spec(), d)
+    return problem
 
 
 def _largest_delta(R: float) -> float:

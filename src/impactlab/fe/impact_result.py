@@ -1,0 +1,153 @@
+"""The result of one impact run and how it is read from ccx's printed output.
+
+Sign conventions (SI): the contact force F >= 0 pushes the bodies apart; the interference
+delta is the approach of the sphere's centre of mass past the position where it first touches
+the undeformed flat (the indentation model's delta: the flat is fixed at its bottom); the
+velocity is the sphere's centre-of-mass velocity, positive towards the flat.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, fields
+from typing import Any
+
+import numpy as np
+
+from impactlab.fe.ccx import DatFile
+from impactlab.fe.deck import FORCE_UNIT, LENGTH_UNIT
+from impactlab.fe.mesh import Mesh
+from impactlab.fe.result import SECTOR_FACTOR
+
+_FLOAT = r"[-+]?\d*\.?\d+(?:[eE][-+]?\d+)?"
+_CF = re.compile(
+    r"statistics for slave set \S+, master set \S+ and time\s+(" + _FLOAT + r")\s*\n"
+    r"\s*\n[^\n]*\n\s*\n\s*(" + _FLOAT + r")\s+(" + _FLOAT + r")"
+)
+
+#: The contact counts as closed while F > CONTACT_THRESHOLD * F_max.
+CONTACT_THRESHOLD = 1.0e-3
+
+#: The array fields (stored as arrays in the cache; the rest is the header).
+IMPACT_ARRAYS = ("time", "force", "interference", "velocity", "dent_r", "dent_z")
+
+
+@dataclass(frozen=True)
+class ImpactResult:
+    """One impact (SI units: m, N, s, kg).
+
+    time [s] (0 at the start, the sphere a gap above the flat); force: the contact force F(t)
+    [N]; interference: delta(t) [m]; velocity: the sphere's centre-of-mass velocity [m/s],
+    positive towards the flat; speed, mass: v_in [m/s], m [kg]; rebound_speed: v_out [m/s] (away
+    from the flat, the mean after separation); restitution: e = v_out / v_in; max_force,
+    max_interference: peaks of F and delta; contact_duration [s] and contact_start [s];
+    residual_depth: delta_p [m], the flat's permanent dent depth at the axis plus the sphere's
+    permanent flattening, both from the final deformed surfaces (means over the last
+    increments); dent_r, dent_z: the flat's final surface (z > 0: pile-up) [m];
+    momentum_balance: |m (v_in + v_out) - integral F dt| / (m v_in), the consistency of the
+    force history with the velocities; separated: the sphere left the flat before the end;
+    converged: ccx finished the run; message, increments, cutbacks, iterations, run_time,
+    n_elements as for an indentation; delta_c [m]; inputs: every input (the cache key's data).
+    """
+
+    time: np.ndarray
+    force: np.ndarray
+    interference: np.ndarray
+    velocity: np.ndarray
+    speed: float
+    mass: float
+    rebound_speed: float
+    restitution: float
+    max_force: float
+    max_interference: float
+    contact_start: float
+    contact_duration: float
+    residual_depth: float
+    dent_r: np.ndarray
+    dent_z: np.ndarray
+    momentum_balance: float
+    separated: bool
+    converged: bool
+    message: str
+    increments: int
+    cutbacks: int
+    iterations: int
+    run_time: float
+    n_elements: int
+    delta_c: float
+    inputs: dict[str, Any]
+
+    def status(self) -> str:
+        """``converged``, or what went wrong."""
+        if not self.converged:
+            return f"NOT CONVERGED: ccx stopped at t = {self.time[-1]:.4g} s; {self.message}"
+        if not self.separated:
+            return "NOT SEPARATED: the sphere was still in contact at the end of the run"
+        return "converged"
+
+    def arrays(self) -> dict[str, Any]:
+        """Every field as a plain value (arrays stay numpy arrays), for storage."""
+        return {f.name: getattr(self, f.name) for f in fields(self)}
+
+
+def contact_forces(text: str) -> tuple[np.ndarray, np.ndarray]:
+    """(times, axial contact force on the flat's surface [N], full circle) summed over the
+    contact bands, from the ``*CONTACT PRINT ... CF`` blocks of a ``.dat`` file."""
+    sums: dict[float, float] = {}
+    for m in _CF.finditer(text):
+        key = float(m.group(1))
+        sums[key] = sums.get(key, 0.0) + float(m.group(3))
+    times = sorted(sums)
+    fy = np.array([sums[k] for k in times], dtype=np.float64)
+    return np.array(times, dtype=np.float64), -fy * SECTOR_FACTOR * FORCE_UNIT
+
+
+def node_masses(mesh: Mesh, elements: np.ndarray, density: float) -> np.ndarray:
+    """Lumped node masses [kg] of the axisymmetric elements (each element's mass
+    rho 2 pi r_c A shared equally by its four nodes), indexed by node id (0-based)."""
+    quads = mesh.elements[elements]
+    x, y = mesh.nodes[quads, 0], mesh.nodes[quads, 1]
+    area = 0.5 * np.abs(np.sum(x * np.roll(y, -1, axis=1) - np.roll(x, -1, axis=1) * y, axis=1))
+    mass = density * 2.0 * math.pi * x.mean(axis=1) * area
+    out = np.zeros(len(mesh.nodes))
+    np.add.at(out, quads.ravel(), np.repeat(0.25 * mass, 4))
+    return out
+
+
+def centre_of_mass(dat: DatFile, what: str, weights: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(times, the weighted mean axial value [m or m/s]) of the sphere's nodes for ``what``
+    ("displacements" or "velocities")."""
+    rows = dat.nodal.get((what, "NSPH"), [])
+    t = np.array([r[0] for r in rows], dtype=np.float64)
+    vals = []
+    for _, ids, v in rows:
+        w = weights[ids - 1]
+        vals.append(float(np.sum(w * v[:, 1]) / np.sum(w)) * LENGTH_UNIT)
+    return t, np.asarray(vals, dtype=np.float64)
+
+
+def contact_window(t: np.ndarray, force: np.ndarray) -> tuple[float, float, bool]:
+    """(start, end, separated) of the contact: where F first rises above and last falls
+    below CONTACT_THRESHOLD F_max (interpolated); separated False when F is still above at
+    the last point."""
+    if not force.size or float(np.max(force)) <= 0.0:
+        return math.nan, math.nan, False
+    on = force > CONTACT_THRESHOLD * float(np.max(force))
+    i0 = int(np.argmax(on))
+    i1 = len(on) - 1 - int(np.argmax(on[::-1]))
+    level = CONTACT_THRESHOLD * float(np.max(force))
+
+    def cross(a: int, b: int) -> float:
+        fa, fb = force[a] - level, force[b] - level
+        return float(t[a] + (t[b] - t[a]) * fa / (fa - fb)) if fa != fb else float(t[b])
+
+    start = cross(i0 - 1, i0) if i0 > 0 else float(t[0])
+    separated = i1 < len(on) - 1
+    end = cross(i1, i1 + 1) if separated else float(t[-1])
+    return start, end, separated
+
+
+def trapezoid(y: np.ndarray, x: np.ndarray) -> float:
+    """The trapezoidal integral of y over x."""
+    return float(np.sum(0.5 * (y[1:] + y[:-1]) * np.diff(x))) if x.size > 1 else 0.0

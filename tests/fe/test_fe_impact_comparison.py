@@ -1,0 +1,77 @@
+"""The dynamic FE impact beside the quasi-static FE 1-DOF impact and the laws
+(impactlab.verification.fe_impact), from the shipped table: no CalculiX needed."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from impactlab.verification.fe_impact import add_law, compare_impacts, comparison_markdown
+
+CASE = "elastic-ball-on-aisi1010"
+
+
+@pytest.fixture(scope="module")
+def comparison():
+    return compare_impacts(CASE)
+
+
+def test_columns_and_speeds(comparison):
+    assert list(comparison.columns) == ["dynamic FE", "quasi-static FE 1-DOF", "hertz"]
+    assert comparison.speeds == [0.1, 1.0]
+    for col in comparison.columns.values():
+        assert len(col) == len(comparison.speeds)
+
+
+def test_elastic_impact_agrees_across_models(comparison):
+    """Elastic bodies: every model gives e = 1 to within the dynamic FE's vibration loss
+    (< 1 %), and the same peak interference and duration to within 1.5 %."""
+    hertz = comparison.columns["hertz"]
+    for i in range(len(comparison.speeds)):
+        assert hertz[i]["restitution"] == pytest.approx(1.0, abs=1e-6)
+        for name in ("dynamic FE", "quasi-static FE 1-DOF"):
+            row = comparison.columns[name][i]
+            assert row["restitution"] == pytest.approx(1.0, abs=0.01)
+            assert row["max_interference"] == pytest.approx(hertz[i]["max_interference"], rel=0.015)
+            assert row["contact_duration"] == pytest.approx(hertz[i]["contact_duration"], rel=0.015)
+
+
+def test_a_law_column_is_one_call(comparison):
+    add_law(comparison, "jackson-green")
+    col = comparison.columns["jackson-green"]
+    assert all(math.isfinite(r["restitution"]) for r in col)
+    text = comparison_markdown(comparison)
+    assert text.count("| jackson-green |") == len(comparison.speeds)
+    assert "| dynamic FE |" in text
+
+
+def test_elastic_plastic_flat_has_the_quasi_static_fe_and_the_laws():
+    """The elastic-plastic flat: no dynamic FE (CalculiX 2.20 cannot run it), the 1-DOF impact
+    on the quasi-static FE curves and the laws. Physics that must hold: energy is lost (e < 1)
+    and more of it at the higher speed, the dent is permanent and deeper relative to the
+    peak at the higher speed, and every law dents the flat too."""
+    comp = compare_impacts("paper-ball-on-aisi1010")
+    assert all(math.isnan(r["restitution"]) for r in comp.columns["dynamic FE"])
+    qs = comp.columns["quasi-static FE 1-DOF"]
+    assert 0.0 < qs[1]["restitution"] < qs[0]["restitution"] < 1.0
+    ratios = [r["residual_depth"] / r["max_interference"] for r in qs]
+    assert 0.0 < ratios[0] < ratios[1] < 1.0
+    for law in ("jackson-green", "ghaednia", "kogut-komvopoulos", "brake", "thornton"):
+        for row in comp.columns[law]:
+            assert 0.0 < row["restitution"] < 1.0
+            assert row["residual_depth"] > 0.0
+
+
+def test_rod_mass_case_is_deep_in_the_plastic_range():
+    """The tip carrying the rod's mass at 1.41 m/s: hundreds of delta_c, most of the peak
+    interference left as a dent, and the Jackson-Green law (built on the same kind of FE
+    model) within 5 % of the quasi-static FE impact in e and delta_p."""
+    comp = compare_impacts("rod-mass-on-aisi1010")
+    assert comp.mass == pytest.approx(0.4607)
+    (qs,) = comp.columns["quasi-static FE 1-DOF"]
+    assert qs["max_interference"] > 100 * 0.436e-6
+    assert 0.5 < qs["residual_depth"] / qs["max_interference"] < 1.0
+    (jg,) = comp.columns["jackson-green"]
+    assert jg["restitution"] == pytest.approx(qs["restitution"], rel=0.05)
+    assert jg["residual_depth"] == pytest.approx(qs["residual_depth"], rel=0.05)
