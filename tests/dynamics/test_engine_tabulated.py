@@ -66,7 +66,13 @@ def test_sweep_with_per_case_pairs(tmp_path) -> None:
     st = Study(
         name="tab",
         grid={"angle": np.radians([20.0, 60.0]), "flat_yield_strength": [300e6, 310e6, 500e6]},
-        fixed={"vy": -1.41, "mu": 0.2, "law": "tabulated"},
+        fixed={
+            "vy": -1.41,
+            "mu": 0.2,
+            "law": "tabulated",
+            "flat_E": AISI_1010.E,  # a flat by values is given whole
+            "flat_nu": AISI_1010.nu,
+        },
         outputs=["e", "delta_p"],
     )
     ds = run_sweep(st, tmp_path / "tab.zarr", quiet=True).dataset
@@ -145,7 +151,7 @@ def test_study_file(tmp_path) -> None:
     path = tmp_path / "tab.toml"
     path.write_text(
         '[study]\nname = "tab"\n\n[fixed]\nvy = "-1.41 m/s"\nmu = 0.2\nlaw = "tabulated"\n\n'
-        '[grid]\nangle = [20, 45]\n\n[outputs]\nkeep = ["e", "delta_p"]\n'
+        '[grid]\nangle = ["20 deg", "45 deg"]\n\n[outputs]\nkeep = ["e", "delta_p"]\n'
     )
     ds = run_sweep(load_study(path), tmp_path / "tab.zarr", quiet=True).dataset
     assert (ds["status"].values == 0).all()

@@ -91,6 +91,8 @@ _UNITS = {
             "limit_pressure_ratio",
             "delta_ratio_max",
             "e_over_sy",
+            "e_star_over_sy",
+            "nu",
         ),
         "1",
     ),
