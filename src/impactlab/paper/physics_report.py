@@ -11,8 +11,6 @@ import pandas as pd
 from impactlab.paper.physics import (
     CONFIGURATIONS,
     E_DEFINITION,
-    FIT_DESCRIPTION,
-    FIT_PREFIX,
     FRICTION,
     LAW,
     MEASURED,
@@ -94,8 +92,8 @@ def physics_section(
             "Nothing tuned: every configuration uses the paper's rod, flat (AISI 1010), drop "
             f"velocity and measured mu (as the local coefficient of the {FRICTION!r} model), the "
             f"{LAW!r} law with "
-            "impactlab's defaults, gravity on and no structural damping (except the row marked "
-            "'fit'). Measured T is the one "
+            "impactlab's defaults, gravity on and no structural damping (the next section "
+            "calibrates the damping). Measured T is the one "
             "inferred from the dent (Eq. 12, Section 3). L_s is the tip's sliding length for "
             "the rigid rod and the scar length (x-extent of the tip's contact path over all "
             "contacts) for the flexible rod; T is first touch to last separation; "
@@ -103,11 +101,6 @@ def physics_section(
         ),
         Bullets(configs),
         Table(_shown(table), "Measured vs rigid, flexible and flexible + rate-dependent", digits=4),
-        *(
-            [Para(FIT_DESCRIPTION)]
-            if table["configuration"].str.startswith(FIT_PREFIX).any()
-            else []
-        ),
         *_findings(table),
         Para(
             "Rod flexibility and rate sensitivity are real and large effects: they close the "

@@ -14,6 +14,7 @@ import pandas as pd
 
 from impactlab.contact.ranges import RANGES
 from impactlab.paper import data as D
+from impactlab.paper.calibration_report import calibration_section, shipped_calibration
 from impactlab.paper.physics_report import physics_section
 from impactlab.paper.quantities import (
     EXTRAPOLATED_MARK,
@@ -64,6 +65,7 @@ def build_report(d: ReportData) -> list[Block]:
         *_figures(d),
         *_discrepancies(),
         *physics_section(d.physics, d.figures, 11),
+        *([] if d.physics is None else calibration_section(shipped_calibration(), 12)),
         *_run(d),
     ]
 
@@ -329,7 +331,7 @@ def _discrepancies() -> list[Block]:
 
 def _run(d: ReportData) -> list[Block]:
     return [
-        Heading(f"{11 if d.physics is None else 12}. Run"),
+        Heading(f"{11 if d.physics is None else 13}. Run"),
         Code(
             f"impactlab {d.version}, Python {platform.python_version()}, "
             f"{platform.platform()}\nelapsed: {d.elapsed:.1f} s"
