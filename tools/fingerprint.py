@@ -88,6 +88,10 @@ chunk_size = 256
 law = "brake"
 friction = "mindlin"
 angle = "30 deg"
+flat_E = "200 GPa"
+flat_nu = 0.3
+flat_brinell_hardness = 105
+flat_meyer_index = 2.2
 [sample]
 size = 1000
 seed = 7
