@@ -49,8 +49,11 @@ def test_angle_vy_study_has_a_regime_map_without_mu_c(tmp_path, fake) -> None:
 
 def test_single_input_lines_and_named_skips(tmp_path, fake) -> None:
     ds = _run(tmp_path, fake, "line", fixed=_AM, grid={"vy": [-0.5, -1.0, -2.0]}).dataset
-    with pytest.warns(PlotSkipped, match="need two swept numeric inputs"):
+    with pytest.warns(PlotSkipped) as caught:
         files = {f.name for f in plot_sweep(ds, tmp_path / "p", outputs=("e", "nope"))}
+    said = [str(w.message) for w in caught]
+    assert any("need two swept numeric inputs" in s for s in said), said
+    assert any("nope: the study did not keep this output" in s for s in said), said
     assert files == {"e_vy.png"}
     assert any("nope: the study did not keep" in s for s in plot_plan(ds, ("nope",)).skipped)
 

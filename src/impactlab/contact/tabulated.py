@@ -86,7 +86,12 @@ def _resample(x: np.ndarray, y: np.ndarray, n: int, first_slope: float | None) -
     where given) on ``n`` uniform nodes, limited to stay monotone between them."""
     from scipy.interpolate import CubicHermiteSpline, PchipInterpolator
 
-    slopes = PchipInterpolator(x, y).derivative()(x)
+    # a nearly flat segment overflows PCHIP's harmonic mean of the secants to inf, whose
+    # reciprocal is the zero slope wanted there: not a failure, so not a warning
+    with np.errstate(over="ignore", divide="ignore"):
+        slopes = PchipInterpolator(x, y).derivative()(x)
+    if not np.isfinite(slopes).all():
+        raise ValueError("the tabulated curve's slopes are not finite (points too close?)")
     if first_slope is not None:
         slopes[0] = first_slope
     spline = CubicHermiteSpline(x, y, _monotone(x, y, slopes))
