@@ -10,33 +10,26 @@ result's warnings (``impactlab.flags``) go to stderr, one line each, and into ``
 
 from __future__ import annotations
 
-import json
-import math
-import sys
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 import typer
-from rich.text import Text
 
-from impactlab._json import to_json
 from impactlab.bodies import PAPER_ROD, FlexibleRod, Rod, Sphere
 from impactlab.bodies.flexible_rod import DEFAULT_N_AXIAL, DEFAULT_N_BENDING
 from impactlab.cli._common import (
     KINEMATIC_HELP,
     LENGTH_HELP,
-    SI_UNITS,
     UserError,
     angle_quantity,
-    console,
-    emit,
     load_toml,
     positive,
     quantity,
     velocity_input,
 )
-from impactlab.cli.drop import RATE_CHOICES, flexible_rod, rate_name, report_drop
+from impactlab.cli.drop import RATE_CHOICES, flexible_rod, rate_name
+from impactlab.cli.simulate_output import report_result, run_from
 from impactlab.dynamics import ImpactResult, simulate
 from impactlab.dynamics.drop_result import DropResult
 from impactlab.friction import DEFAULT_MU
@@ -236,53 +229,6 @@ def _mu(value: Any, name: str) -> float:
         raise UserError(f"{name} must be a number, got {value!r}") from None
 
 
-def run_from(path: Path) -> ImpactResult | DropResult:
-    """The impact recorded in ``path`` (``impactlab simulate --json`` output, an
-    ``impact_result.json`` or a result's ``to_dict()``), simulated again."""
-    from impactlab.dynamics import rerun  # lazy: a fast CLI start
-
-    try:
-        record = json.loads(path.read_text())
-    except OSError as exc:
-        raise UserError(f"--from: cannot read {str(path)!r}: {exc.strerror}") from None
-    except json.JSONDecodeError as exc:
-        why = f"{exc.msg}, line {exc.lineno}"
-        raise UserError(f"--from: {str(path)!r} is not JSON ({why})") from None
-    if not isinstance(record, dict):
-        raise UserError(f"--from: {str(path)!r} holds no result (a JSON object is needed)")
-    try:
-        if record.get("input", record).get("body", {}).get("type") == "FlexibleRod":
-            return rerun(record, history=False)
-        return rerun(record)
-    except (ValueError, TypeError) as exc:
-        raise UserError(f"--from {str(path)!r}: {exc}") from None
-
-
-def _report(result: ImpactResult | DropResult, *, out: Path | None, as_json: bool) -> None:
-    for text in result.warnings:
-        print(f"warning: {text}", file=sys.stderr)
-    if isinstance(result, DropResult):
-        report_drop(result, as_json=as_json)
-        return
-    sphere = not math.isfinite(result.angle)
-    hidden = ("angle", "angle_out") if sphere else ()
-    data = {k: v for k, v in result.to_dict().items() if k not in hidden}
-    files: list[str] = []
-    if out is not None:
-        from impactlab.dynamics.plotting import save_figures  # lazy: a fast CLI start
-
-        files = [str(p) for p in save_figures(result, out)]
-        saved = out / "impact_result.json"
-        saved.write_text(json.dumps(to_json(data, SI_UNITS), indent=2))
-        files.append(str(saved))
-    if as_json:
-        emit({**data, "files": files}, as_json=True)
-        return
-    emit(result.summary(), as_json=False, title="impact")
-    for f in files:
-        console.print(Text(f"saved {f}"))
-
-
 #: Help of the options that are keys of the config file.
 _HELP = {
     **KINEMATIC_HELP,
@@ -408,7 +354,7 @@ def simulate_cmd(
     folder = output_folder(Path(".") if out is None else out, "--out") if plot else None
     if from_file is None:
         result = run_simulate(opt)
-    _report(result, out=folder, as_json=as_json)
+    report_result(result, out=folder, as_json=as_json)
 
 
 def register(app: typer.Typer) -> None:

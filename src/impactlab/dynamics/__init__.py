@@ -20,7 +20,8 @@ from impactlab.dynamics.drop import simulate_drop
 from impactlab.dynamics.drop_result import ContactRecord, DropResult
 from impactlab.dynamics.models import contact_model
 from impactlab.dynamics.results import BatchResult, DentMap, History, ImpactResult
-from impactlab.dynamics.simulate import rerun, simulate, simulate_batch
+from impactlab.dynamics.simulate import rerun, simulate
+from impactlab.dynamics.simulate_many import simulate_batch
 
 __all__ = [
     "DEFAULT_RTOL",

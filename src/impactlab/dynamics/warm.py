@@ -46,7 +46,7 @@ def _rigid() -> None:
 
 def _batch() -> None:
     from impactlab.bodies import PAPER_ROD
-    from impactlab.dynamics.simulate import simulate_batch
+    from impactlab.dynamics.simulate_many import simulate_batch
 
     simulate_batch(
         PAPER_ROD,

@@ -1,0 +1,122 @@
+"""``simulate_batch``: many impacts of one body, law and friction model, in one compiled call
+on every core (``impactlab.dynamics.batch``); the inputs checked as ``simulate`` checks them."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+
+from impactlab._validation import check_array, check_flag
+from impactlab.bodies import Rod, Sphere
+from impactlab.bodies.flexible_rod import FlexibleRod
+from impactlab.contact import ContactModel
+from impactlab.contact.ranges import delta_ratio
+from impactlab.dynamics.batch import run_arrays
+from impactlab.dynamics.checks import batch_velocity, check_body, check_flat, warn_fast
+from impactlab.dynamics.core import layout as L
+from impactlab.dynamics.flex_simulate import FLEXIBLE_BATCH_ERROR
+from impactlab.dynamics.models import body_params, contact_model, references_used
+from impactlab.dynamics.results import BatchResult
+from impactlab.friction import DEFAULT_MU, get_friction
+from impactlab.materials import AISI_1010, Material
+
+#: simulate_batch's array inputs and their units ("1": a plain number).
+_BATCH_UNITS = {"mu": "1", "angle": "rad", "vx": "m/s", "vy": "m/s", "spin": "rad/s"}
+
+
+def _batch_column(name: str, value: Any) -> np.ndarray:
+    """One input of simulate_batch as a 1-D float array (NaN allowed: flagged per case)."""
+    if value is None:
+        raise ValueError(f"{name} is required: a number or a 1-D array [{_BATCH_UNITS[name]}]")
+    unit = _BATCH_UNITS[name]
+    a = np.atleast_1d(check_array(name, value, "" if unit == "1" else unit))
+    if a.ndim > 1:
+        raise ValueError(f"{name} must be a scalar or a 1-D array, got shape {a.shape}")
+    return a
+
+
+def _batch_inputs(inputs: dict[str, Any]) -> dict[str, np.ndarray]:
+    """The batch's inputs broadcast against each other (C-contiguous float64 arrays)."""
+    arrays = {n: _batch_column(n, v) for n, v in inputs.items()}
+    try:
+        b = np.broadcast_arrays(*arrays.values())
+    except ValueError:
+        shapes = ", ".join(f"{n}: {a.shape}" for n, a in arrays.items())
+        raise ValueError(f"mu, angle, vx, vy and spin do not broadcast ({shapes})") from None
+    cols = {n: np.ascontiguousarray(x, dtype=np.float64) for n, x in zip(arrays, b, strict=True)}
+    with np.errstate(invalid="ignore"):
+        fastest = np.nanmax(np.hypot(cols["vx"], cols["vy"]), initial=0.0)
+    warn_fast("the largest impact speed of the batch", float(fastest))
+    return cols
+
+
+def simulate_batch(
+    body: Rod | Sphere,
+    flat: Material = AISI_1010,
+    *,
+    vy: Any = None,
+    vx: Any = None,
+    angle: Any = None,
+    mu: Any = DEFAULT_MU,
+    spin: Any = 0.0,
+    law: str | ContactModel = "ghaednia",
+    friction: str = "coulomb",
+    law_params: Mapping[str, Any] | None = None,
+    gravity: Any = True,
+    constant_angle: bool = False,
+    rtol: float | None = None,
+    speed: Any = None,
+    incidence: Any = None,
+) -> BatchResult:
+    """Many impacts of one body, law and friction model, in parallel on all cores.
+
+    ``mu``, ``angle`` [rad], ``vx``, ``vy`` [m/s] and ``spin`` [rad/s] are scalars or 1-D arrays,
+    broadcast against each other; the dimensional ones may also be pint Quantities (any
+    registry) or strings with units, as in ``simulate``. ``vy`` (``vx`` default 0) or, instead,
+    ``speed`` [m/s] and ``incidence`` [rad] (arrays too; vx = speed sin(incidence),
+    vy = -speed cos(incidence), ``checks.velocity_from``) are required. Invalid cases (NaN
+    input, an angle outside (0, pi/2], a receding contact point, the law's validity exceeded,
+    ...) are flagged in ``BatchResult.status`` and never stop the batch; a computed case that
+    gained energy or that gravity dominates is flagged in ``BatchResult.flags``. A speed above
+    100 m/s draws an ``ImplausibleInputWarning``.
+    """
+    if isinstance(body, FlexibleRod):
+        raise ValueError(FLEXIBLE_BATCH_ERROR)
+    body = check_body(body)
+    flat = check_flat(flat)
+    fric = get_friction(friction)
+    model = contact_model(body, flat, law, law_params)
+    if angle is None:
+        if isinstance(body, Rod):
+            raise ValueError("angle is required for a Rod (radians, in (0, pi/2])")
+        angle = 0.5 * math.pi
+    vx, vy = batch_velocity(vx, vy, speed, incidence)
+    x = _batch_inputs({"mu": mu, "angle": angle, "vx": vx, "vy": vy, "spin": spin})
+    out, status = run_arrays(
+        model.law_id,
+        fric.friction_id,
+        model.params,
+        body_params(body, flat),
+        np.ascontiguousarray(np.stack([x["angle"], x["vx"], x["vy"], x["spin"]], axis=1)),
+        x["mu"],
+        gravity=gravity,
+        constant_angle=check_flag("constant_angle", constant_angle),
+        rtol=rtol,
+    )
+    return BatchResult(
+        out=out,
+        status=status,
+        inputs=x,
+        law=model.name,
+        friction=fric.name,
+        references=references_used(model, fric, bool(np.any(x["mu"] > 0.0))),
+        max_delta_ratio=np.asarray(
+            delta_ratio(model.law_id, model.params, out[:, L.OUTPUT_FIELDS.index("delta_max")])
+        ),
+    )
+
+
+__all__ = ["simulate_batch"]
