@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 from numba import njit
 
+from impactlab.contact import history_kernels as hk
 from impactlab.contact import kernels as k
 from impactlab.contact import law_names
 from impactlab.contact.base import ContactModel
@@ -24,7 +25,7 @@ def _engine_like(law: int, p: np.ndarray, deltas: np.ndarray) -> np.ndarray:
         d = deltas[i]
         if d > dm:
             dm = d
-            Fm, dr, Rr = k.turning_point(law, p, dm)
+            Fm, dr, Rr = hk.turning_point(law, p, dm)
             dr2 = k.residual_depth(law, p, dm, k.loading_force(law, p, dm))
             if dr2 != dr:
                 out[i, 3] = -1.0
@@ -32,8 +33,8 @@ def _engine_like(law: int, p: np.ndarray, deltas: np.ndarray) -> np.ndarray:
                 out[i, 3] = k.unloading_radius(p[k.P_ESTAR], dm, Fm, dr)
         else:
             out[i, 3] = Rr
-        out[i, 0] = k.contact_force(law, p, d, dm, dr, Rr)
-        out[i, 1] = k.contact_radius(law, p, d, dm, dr, Rr)
+        out[i, 0] = hk.contact_force(law, p, d, dm, dr, Rr)
+        out[i, 1] = hk.contact_radius(law, p, d, dm, dr, Rr)
         out[i, 2] = k.hertz_force(p[k.P_ESTAR], p[k.P_R], d)
     return out
 
@@ -58,15 +59,15 @@ def test_kernels_are_callable_from_njit(name: str, paper_models: dict[str, Conta
 def test_contact_radius(name: str, paper_models: dict[str, ContactModel]) -> None:
     model = paper_models[name]
     p, law, R = model.params, model.law_id, model.radius
-    assert k.contact_radius(law, p, 0.0, 0.0, 0.0, R) == 0.0
-    assert k.contact_radius(law, p, -1e-6, 0.0, 0.0, R) == 0.0
+    assert hk.contact_radius(law, p, 0.0, 0.0, 0.0, R) == 0.0
+    assert hk.contact_radius(law, p, -1e-6, 0.0, 0.0, R) == 0.0
     d = 1e-7  # below 1.9 delta_c for every law: the Hertz radius
-    assert k.contact_radius(law, p, d, 0.0, 0.0, R) == pytest.approx(math.sqrt(R * d), rel=1e-14)
+    assert hk.contact_radius(law, p, d, 0.0, 0.0, R) == pytest.approx(math.sqrt(R * d), rel=1e-14)
     br = model.unload(1e-4)
     for x in (0.5 * br.delta_r, br.delta_r):
-        assert k.contact_radius(law, p, x, br.delta_m, br.delta_r, br.R_r) == 0.0
+        assert hk.contact_radius(law, p, x, br.delta_m, br.delta_r, br.R_r) == 0.0
     x = 0.5 * (br.delta_r + br.delta_m)
-    a = k.contact_radius(law, p, x, br.delta_m, br.delta_r, br.R_r)
+    a = hk.contact_radius(law, p, x, br.delta_m, br.delta_r, br.R_r)
     assert a == pytest.approx(math.sqrt(br.R_r * (x - br.delta_r)), rel=1e-14)
     if name not in ("ghaednia", "jackson-green"):
         assert float(model.contact_radius(1e-4)) == pytest.approx(math.sqrt(R * 1e-4), rel=1e-14)

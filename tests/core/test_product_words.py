@@ -1,6 +1,6 @@
 """The product speaks of the product: no development history (numbered sessions, waves, issues,
 contracts) in the code, the tests or the user documentation. That history belongs to
-CHANGELOG.md, git and the developer pages (``docs/dev/``, outside the site's navigation); a
+CHANGELOG.md (with its performance history) and git; a
 comment or a page states the fact or the reason instead, and cites a page by its subject."""
 
 from __future__ import annotations
@@ -13,7 +13,7 @@ ROOT = Path(__file__).resolve().parents[2]
 #: the folders and files read: the package, the tests, the user docs, the examples and notebooks
 SCANNED = ("src", "tests", "docs", "examples", "notebooks", "README.md")
 #: left out: the developer pages and the changelog page (it includes CHANGELOG.md)
-EXCLUDED = ("docs/dev/", "docs/changelog.md")
+EXCLUDED = ("docs/changelog.md",)
 SUFFIXES = {".py", ".md", ".toml", ".yml", ".yaml", ".txt", ".cfg", ".ini", ".rst"}
 
 # built from pieces, so that this file does not match its own pattern
@@ -80,6 +80,6 @@ def test_no_history_words_in_code_tests_or_user_docs() -> None:
     hits = _hits()
     listed = "\n".join(f"{f}:{no}: {word!r}" for f, no, word in hits)
     assert not hits, (
-        "development history in the product (state the fact; history goes to CHANGELOG.md or "
-        f"docs/dev/):\n{listed}"
+        "development history in the product (state the fact; history goes to CHANGELOG.md):\n"
+        f"{listed}"
     )

@@ -13,6 +13,7 @@ import numpy as np
 
 from impactlab._html import law_html, law_repr
 from impactlab._validation import check_array, check_finite, check_nonnegative, check_positive
+from impactlab.contact import history_kernels as hk
 from impactlab.contact import kernel_arrays as ka
 from impactlab.contact import kernels as k
 from impactlab.contact.curve_table import has_curves
@@ -195,7 +196,7 @@ class ContactModel:
     def unload(self, delta_m: float) -> UnloadingBranch:
         """The unloading branch after loading to ``delta_m`` [m]."""
         dm = float(self.check_interference(check_nonnegative("delta_m", delta_m, "m")))
-        F_m, d_r, R_r = k.turning_point(self.law_id, self.params, dm)
+        F_m, d_r, R_r = hk.turning_point(self.law_id, self.params, dm)
         return UnloadingBranch(dm, float(F_m), float(d_r), float(R_r), self.E_star)
 
 

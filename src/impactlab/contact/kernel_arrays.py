@@ -11,6 +11,7 @@ import math
 import numpy as np
 from numba import njit
 
+from impactlab.contact import history_kernels as hk
 from impactlab.contact import kernels as k
 
 _FORCE = 0
@@ -27,7 +28,7 @@ def _loading_array(quantity: int, law: int, p: np.ndarray, delta: np.ndarray) ->
         if quantity == _FORCE:
             out[i] = k.loading_force(law, p, flat[i])
         else:
-            out[i] = k.loading_contact_radius(law, p, flat[i])
+            out[i] = hk.loading_contact_radius(law, p, flat[i])
     return out.reshape(delta.shape)
 
 

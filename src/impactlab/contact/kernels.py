@@ -12,9 +12,9 @@ Contract (shared by all laws; SI units):
   from the maximum (delta_m, F_m); ``0 <= delta_r < delta_m``.
 - Unloading (and reloading below delta_m) is, for every law, Hertzian with a flattened radius
   R_r chosen for continuity at (delta_m, F_m): ``F = 4/3 E* sqrt(R_r) (delta - delta_r)^1.5``.
-- ``contact_radius(law, p, delta, delta_m, delta_r, R_r)`` is the contact radius a [m]: the
-  law's own radius on the loading curve where it defines one (Jackson-Green family), else the
-  Hertz radius sqrt(R delta); on unloading sqrt(R_r (delta - delta_r)); 0 out of contact.
+- The force and contact radius of a contact with its history (``turning_point``,
+  ``contact_force``, ``loading_contact_radius``, ``contact_radius``) are in
+  ``impactlab.contact.history_kernels``.
 - ``p[P_DLIM]`` is the largest interference for which the law is valid (``R`` or less); the
   engine stops with a clear error beyond it.
 
@@ -368,62 +368,3 @@ def residual_depth(law: int, p: np.ndarray, delta_m: float, F_m: float) -> float
     if law == TABULATED:
         return delta_m * curve_residual_ratio(p, NPARAM, delta_m)
     return math.nan
-
-
-@njit(cache=True)
-def turning_point(law: int, p: np.ndarray, delta_m: float) -> tuple[float, float, float]:
-    """(F_m [N], delta_r [m], R_r [m]) of the unloading branch that starts at ``delta_m``."""
-    F_m = loading_force(law, p, delta_m)
-    if delta_m <= 0.0:
-        return 0.0, 0.0, p[P_R]
-    d_r = residual_depth(law, p, delta_m, F_m)
-    return F_m, d_r, unloading_radius(p[P_ESTAR], delta_m, F_m, d_r)
-
-
-@njit(cache=True)
-def contact_force(
-    law: int,
-    p: np.ndarray,
-    delta: float,
-    delta_m: float,
-    delta_r: float,
-    R_r: float,
-) -> float:
-    """Force at ``delta`` given the history (delta_m: largest interference so far, and the
-    unloading branch (delta_r, R_r) that belongs to it). On or beyond delta_m: loading curve."""
-    if delta >= delta_m:
-        return loading_force(law, p, delta)
-    return unloading_force(p[P_ESTAR], R_r, delta_r, delta)
-
-
-@njit(cache=True)
-def loading_contact_radius(law: int, p: np.ndarray, delta: float) -> float:
-    """Contact radius on the loading curve [m]: Jackson-Green area fit for the JG family beyond
-    delta = 1.9 delta_c, Hertz sqrt(R delta) otherwise (and for the other laws)."""
-    if delta <= 0.0:
-        return 0.0
-    if (law == GHAEDNIA or law == JACKSON_GREEN) and delta > JG_AREA_SWITCH * p[P_JG_DC]:
-        return jg_contact_radius(p, delta)
-    return math.sqrt(p[P_R] * delta)
-
-
-@njit(cache=True)
-def contact_radius(
-    law: int,
-    p: np.ndarray,
-    delta: float,
-    delta_m: float,
-    delta_r: float,
-    R_r: float,
-) -> float:
-    """Contact radius a [m] at ``delta`` given the history (same arguments as contact_force):
-    loading curve at or beyond delta_m, sqrt(R_r (delta - delta_r)) on unloading, 0 out of
-    contact."""
-    if delta <= 0.0:
-        return 0.0
-    if delta >= delta_m:
-        return loading_contact_radius(law, p, delta)
-    d = delta - delta_r
-    if d <= 0.0:
-        return 0.0
-    return math.sqrt(R_r * d)

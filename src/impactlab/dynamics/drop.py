@@ -24,7 +24,7 @@ from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.bodies.layout import BP_GSTAR
 from impactlab.bodies.modal import MODAL_REFERENCES
 from impactlab.contact import ContactModel
-from impactlab.contact.kernels import loading_contact_radius
+from impactlab.contact.history_kernels import loading_contact_radius
 from impactlab.contact.ranges import extrapolation
 from impactlab.contact.rate import (
     RateFactor,

@@ -11,11 +11,11 @@ from typing import Any
 
 import numpy as np
 
+from impactlab.contact.history_kernels import loading_contact_radius
 from impactlab.contact.kernels import (
     P_DLIM,
     P_DSW,
     P_ESTAR,
-    loading_contact_radius,
     loading_force,
     residual_depth,
     unloading_force,

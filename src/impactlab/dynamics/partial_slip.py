@@ -15,7 +15,7 @@ from typing import Any
 import numpy as np
 
 from impactlab.bodies import Rod
-from impactlab.contact.kernels import loading_contact_radius
+from impactlab.contact.history_kernels import loading_contact_radius
 from impactlab.dynamics.checks import ImpactInputs
 from impactlab.dynamics.core import layout as L
 from impactlab.dynamics.core import status as S

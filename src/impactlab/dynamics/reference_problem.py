@@ -12,11 +12,12 @@ from collections.abc import Callable
 import numpy as np
 
 from impactlab.bodies import BP_GSTAR, BP_INERTIA, BP_MASS, Rod, Sphere
+from impactlab.contact import history_kernels as hk
 from impactlab.contact import kernels as k
 from impactlab.contact.base import ContactModel
 from impactlab.dynamics.core.layout import MU_NEGLIGIBLE
 
-_contact_radius: Callable[..., float] = k.contact_radius
+_contact_radius: Callable[..., float] = hk.contact_radius
 
 
 class ReferenceProblem:

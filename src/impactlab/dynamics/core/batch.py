@@ -37,7 +37,7 @@ def impact_batch(threads, law, lp, fric, bpa, init, mu, g, const_angle, rtol, di
             # the blocks in a scattered order (a stride coprime to their number): a grid is
             # ordered, and its costly corners would otherwise come last; inside a block the
             # cases are neighbours, so the rows of ``out`` are written in order (one case at a
-            # time at a stride cost 5 % in cache misses: docs/dev/performance-history.md)
+            # time at a stride cost 5 % in cache misses: CHANGELOG.md, "Performance history")
             b = (kb * stride) % nb
             for i in range(b * BLOCK, min(b * BLOCK + BLOCK, n)):
                 pi = lp[0] if shared_p else lp[i]

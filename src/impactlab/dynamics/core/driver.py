@@ -336,7 +336,7 @@ def impact(law, p, fric, bp, th0, vx0, vy0, w0, mu, g, const_angle, rtol, record
     for i in range(out.shape[0]):
         out[i] = math.nan
     # all of the impact's scratch in one allocation: state, accumulators, error scales, the
-    # step loops' arrays (docs/dev/performance-history.md); no history row unless kept
+    # step loops' arrays (CHANGELOG.md, "Performance history"); no history row unless kept
     work = np.empty(IMPACT_WORK_LEN)
     y = work[:NS]
     acc = work[NS : NS + NA]

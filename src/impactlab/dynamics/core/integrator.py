@@ -229,7 +229,7 @@ def locate(ev, g0, g1, law, p, fric, c, md, y0, K, h, Q, yt):
     ends the search: on the g > 0 side it is returned; on the g <= 0 side a probe just past it
     (twice the distance to the secant root, at least ``THETA_TOL``) closes the bracket. The
     Illinois iterates would otherwise creep on from that side, and an exact zero made them
-    bisect towards the far end (up to 42 evaluations; docs/dev/performance-history.md)."""
+    bisect towards the far end (up to 42 evaluations; CHANGELOG.md, "Performance history")."""
     a = 0.0
     fa = g0
     b = 1.0

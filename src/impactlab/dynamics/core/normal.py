@@ -7,6 +7,7 @@ import math
 
 from numba import njit
 
+from impactlab.contact.history_kernels import contact_radius as _contact_radius
 from impactlab.contact.kernels import (
     KOGUT_KOMVOPOULOS,
     NPARAM,
@@ -20,7 +21,6 @@ from impactlab.contact.kernels import (
     table_force,
     unloading_force,
 )
-from impactlab.contact.kernels import contact_radius as _contact_radius
 from impactlab.dynamics.core.layout import (
     C_A0,
     C_B0,

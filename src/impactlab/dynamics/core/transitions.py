@@ -13,6 +13,7 @@ import math
 
 from numba import njit
 
+from impactlab.contact.history_kernels import contact_radius as _contact_radius
 from impactlab.contact.kernels import (
     P_ESTAR,
     P_R,
@@ -20,7 +21,6 @@ from impactlab.contact.kernels import (
     residual_depth,
     unloading_radius,
 )
-from impactlab.contact.kernels import contact_radius as _contact_radius
 from impactlab.dynamics.core.friction import (
     frictional,
     mindlin_state_at_reload,

@@ -20,9 +20,9 @@ import math
 
 from numba import njit
 
+from impactlab.contact.history_kernels import loading_contact_radius
 from impactlab.contact.kernels import (
     P_ESTAR,
-    loading_contact_radius,
     loading_force,
     residual_depth,
     unloading_radius,

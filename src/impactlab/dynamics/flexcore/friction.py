@@ -25,8 +25,8 @@ import math
 
 from numba import njit
 
+from impactlab.contact.history_kernels import contact_radius as _contact_radius
 from impactlab.contact.kernels import P_ESTAR, P_R
-from impactlab.contact.kernels import contact_radius as _contact_radius
 from impactlab.dynamics.core.friction import friction_switch, mindlin_trial_rate
 from impactlab.dynamics.core.layout import FR_COULOMB, FR_IMPULSE, FR_MINDLIN
 from impactlab.dynamics.core.normal import radius
