@@ -43,6 +43,15 @@ def is_quantity(value: Any) -> bool:
     return all(hasattr(value, a) for a in ("magnitude", "units", "dimensionality"))
 
 
+def has_unit(value: Any) -> bool:
+    """True for a value that states its unit: a string (text must carry one) or a pint Quantity
+    with a unit. A dimensionless Quantity (``Q_(0.35, "")``) is a number, as a bare float: an
+    angle given so is radians (the angle rule, docs/glossary.md), and an echo of it says so."""
+    if isinstance(value, str):
+        return True
+    return is_quantity(value) and not getattr(value, "unitless", False)
+
+
 def _parse(name: str, text: str, unit: str) -> Any:
     """``text`` as a Quantity of impactlab's registry; ValueError naming ``name``."""
     text = text.strip()
@@ -140,4 +149,4 @@ def angle_to_rad(value: Any, *, name: str = "angle") -> float:
     return to_si(value, "degree", name=name)
 
 
-__all__ = ["angle_to_rad", "is_quantity", "magnitude", "registry", "to_si"]
+__all__ = ["angle_to_rad", "has_unit", "is_quantity", "magnitude", "registry", "to_si"]

@@ -29,7 +29,7 @@ from impactlab.dynamics.core.layout import DEFAULT_RTOL, PARTIAL_SLIP_RTOL
 from impactlab.dynamics.models import contact_model
 from impactlab.friction import FrictionKind, FrictionModel, get_friction
 from impactlab.materials import G0, Material
-from impactlab.units import is_quantity, magnitude
+from impactlab.units import has_unit, magnitude
 
 #: Range of the relative tolerance accepted by the Python API.
 RTOL_RANGE = (1e-13, 1e-3)
@@ -76,7 +76,7 @@ def check_angle(angle: Any, body: Rod | Sphere) -> float:
     th = check_finite("angle", angle, "rad")
     if 0.0 < th <= 0.5 * math.pi + 1e-12:
         return th
-    if isinstance(angle, str) or is_quantity(angle):  # the user gave a unit: answer in degrees
+    if has_unit(angle):  # the user gave a unit: answer in degrees
         raise ValueError(f"angle must be in (0, 90] deg, got {_as_given(angle)}")
     hint = ""
     if 0.5 * math.pi < th <= 90.0 + 1e-9:
@@ -84,7 +84,7 @@ def check_angle(angle: Any, body: Rod | Sphere) -> float:
             f"; {th!r} looks like degrees: pass math.radians({th!r}) = "
             f"{math.radians(th):.6g} rad or the string '{th:g} deg'"
         )
-    raise ValueError(f"angle must be in radians in (0, pi/2], got {th!r}{hint}")
+    raise ValueError(f"angle must be in radians in (0, pi/2], got {th!r} rad{hint}")
 
 
 def _as_given(angle: Any) -> str:
@@ -136,8 +136,8 @@ def velocity_from(velocity: Any, speed: Any, incidence: Any) -> Any:
     if not abs(th) < 0.5 * math.pi:
         hint = (
             ""
-            if isinstance(incidence, str) or is_quantity(incidence)
-            else (f" (a bare incidence is radians; for degrees write '{th:g} deg')")
+            if has_unit(incidence)
+            else f" (a bare incidence is radians; for degrees write '{th:g} deg')"
         )
         raise ValueError(
             f"incidence must lie in (-90, 90) deg from the flat's normal, got "

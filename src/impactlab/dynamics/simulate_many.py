@@ -3,7 +3,6 @@ on every core (``impactlab.dynamics.batch``); the inputs checked as ``simulate``
 
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping
 from typing import Any
 
@@ -15,7 +14,13 @@ from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.contact import ContactModel
 from impactlab.contact.ranges import delta_ratio
 from impactlab.dynamics.batch import run_arrays
-from impactlab.dynamics.checks import batch_velocity, check_body, check_flat, warn_fast
+from impactlab.dynamics.checks import (
+    batch_velocity,
+    check_angle,
+    check_body,
+    check_flat,
+    warn_fast,
+)
 from impactlab.dynamics.core import layout as L
 from impactlab.dynamics.flex_simulate import FLEXIBLE_BATCH_ERROR
 from impactlab.dynamics.models import body_params, contact_model, references_used
@@ -89,10 +94,10 @@ def simulate_batch(
     flat = check_flat(flat)
     fric = get_friction(friction)
     model = contact_model(body, flat, law, law_params)
-    if angle is None:
-        if isinstance(body, Rod):
-            raise ValueError("angle is required for a Rod (radians, in (0, pi/2])")
-        angle = 0.5 * math.pi
+    if isinstance(body, Sphere):
+        angle = check_angle(angle, body)  # pi/2; an angle given for a sphere is refused
+    elif angle is None:
+        raise ValueError("angle is required for a Rod (radians, in (0, pi/2])")
     vx, vy = batch_velocity(vx, vy, speed, incidence)
     x = _batch_inputs({"mu": mu, "angle": angle, "vx": vx, "vy": vy, "spin": spin})
     out, status = run_arrays(
