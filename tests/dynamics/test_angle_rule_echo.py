@@ -23,7 +23,7 @@ OTHER = pint.UnitRegistry()  # a user's registry
     "value", [Q_(95.0, ""), Q_(2.0, "dimensionless"), OTHER.Quantity(95.0, "")], ids=str
 )
 def test_a_dimensionless_angle_is_echoed_in_radians(value) -> None:
-    with pytest.raises(ValueError) as err:
+    with pytest.raises(ValueError, match="angle must be in radians") as err:
         check_angle(value, PAPER_ROD)
     text = str(err.value)
     assert "deg, got" not in text  # it was: "angle must be in (0, 90] deg, got 95 "
@@ -48,7 +48,7 @@ def test_a_dimensionless_incidence_gets_the_radians_hint() -> None:
     with pytest.raises(ValueError, match="a bare incidence is radians") as err:
         velocity_from(None, 1.0, Q_(2.0, ""))
     assert f"{math.degrees(2.0):.6g} deg" in str(err.value)
-    with pytest.raises(ValueError) as err:
+    with pytest.raises(ValueError, match="incidence must lie in") as err:
         velocity_from(None, 1.0, Q_(100.0, "deg"))
     assert "bare incidence" not in str(err.value)
 
@@ -61,12 +61,11 @@ def test_has_unit() -> None:
 @pytest.mark.parametrize("angle", [0.3, [0.3, 0.4], "20 deg", np.array([0.2])], ids=str)
 def test_batch_refuses_an_angle_for_a_sphere_as_simulate_does(angle) -> None:
     ball = Sphere(0.005)
-    with pytest.raises(ValueError) as one:
+    with pytest.raises(ValueError, match="a Sphere has no angle") as one:
         il.simulate(ball, angle=angle, velocity=(0.0, -1.0))
-    with pytest.raises(ValueError) as many:
+    with pytest.raises(ValueError, match="a Sphere has no angle") as many:
         il.simulate_batch(ball, angle=angle, vy=-1.0)
     assert str(many.value) == str(one.value)
-    assert "a Sphere has no angle" in str(many.value)
 
 
 def test_batch_of_spheres_without_an_angle_runs() -> None:

@@ -125,8 +125,8 @@ def test_cli_json_then_from_reruns_the_same_impact(tmp_path, monkeypatch, capsys
     assert json.loads(out)["e"] == data["e"]
     code, out, _ = _cli(monkeypatch, capsys, "simulate", "--from", str(saved))
     assert "Sphere: radius = 3 mm" in out and "AISI 1010" in out  # the body and the flat
-    code, _, err = _cli(monkeypatch, capsys, "simulate", "--from", str(saved), "--mu", "0.3")
-    assert code != 0 and "leave out --mu" in err
+    code, _, err = _cli(monkeypatch, capsys, "simulate", "--from", str(saved), "--radius", "1 mm")
+    assert code != 0 and "--radius: --from simulates the recorded body" in err
     code, _, err = _cli(monkeypatch, capsys, "simulate", "--from", str(tmp_path / "no.json"))
     assert code != 0 and "cannot read" in err
 

@@ -29,7 +29,8 @@ from impactlab.cli._common import (
     velocity_input,
 )
 from impactlab.cli.drop import RATE_CHOICES, flexible_rod, rate_name
-from impactlab.cli.simulate_output import report_result, run_from
+from impactlab.cli.simulate_from import FROM_RULE, run_from
+from impactlab.cli.simulate_output import report_result
 from impactlab.dynamics import ImpactResult, simulate
 from impactlab.dynamics.drop_result import DropResult
 from impactlab.friction import DEFAULT_MU
@@ -298,8 +299,7 @@ def simulate_cmd(
     from_file: Path = typer.Option(
         None,
         "--from",
-        help="Simulate again the impact recorded in a result's JSON (--json output or "
-        "impact_result.json: its 'input'); no other input options then.",
+        help=FROM_RULE,
     ),
     as_json: bool = typer.Option(
         False, "--json", help="Machine-readable output, SI (docs/json-schema.md)."
@@ -333,17 +333,12 @@ def simulate_cmd(
     if out is not None and not plot:
         raise UserError("--out applies only with --plot (where to save the figures)")
     if from_file is not None:
-        given = [
-            "the body" if k == "body" else _FLAGS.get(k, "--" + k.replace("_", "-"))
-            for k, v in cli.items()
-            if v is not None
-        ]
-        given += ["--config"] if config is not None else []
-        if given:
+        if config is not None:
             raise UserError(
-                f"--from re-runs the recorded input as it is; leave out {', '.join(given)}"
+                "--config and --from: --from takes the recorded input, with options on top; "
+                "leave out --config"
             )
-        result = run_from(from_file)
+        result = run_from(from_file, cli)
         if plot and isinstance(result, DropResult):
             raise UserError("--plot: the flexible rod's drop has no figures here; leave it out")
     opt = _merge(load_toml(config), cli, config)

@@ -1,4 +1,4 @@
-"""What ``impactlab simulate`` prints and saves, and ``--from``: a recorded impact run again."""
+"""What ``impactlab simulate`` prints and saves (``--from``: ``impactlab.cli.simulate_from``)."""
 
 from __future__ import annotations
 
@@ -10,32 +10,10 @@ from pathlib import Path
 from rich.text import Text
 
 from impactlab._json import to_json
-from impactlab.cli._common import SI_UNITS, UserError, console, emit
+from impactlab.cli._common import SI_UNITS, console, emit
 from impactlab.cli.drop import report_drop
 from impactlab.dynamics import ImpactResult
 from impactlab.dynamics.drop_result import DropResult
-
-
-def run_from(path: Path) -> ImpactResult | DropResult:
-    """The impact recorded in ``path`` (``impactlab simulate --json`` output, an
-    ``impact_result.json`` or a result's ``to_dict()``), simulated again."""
-    from impactlab.dynamics import rerun  # lazy: a fast CLI start
-
-    try:
-        record = json.loads(path.read_text())
-    except OSError as exc:
-        raise UserError(f"--from: cannot read {str(path)!r}: {exc.strerror}") from None
-    except json.JSONDecodeError as exc:
-        why = f"{exc.msg}, line {exc.lineno}"
-        raise UserError(f"--from: {str(path)!r} is not JSON ({why})") from None
-    if not isinstance(record, dict):
-        raise UserError(f"--from: {str(path)!r} holds no result (a JSON object is needed)")
-    try:
-        if record.get("input", record).get("body", {}).get("type") == "FlexibleRod":
-            return rerun(record, history=False)
-        return rerun(record)
-    except (ValueError, TypeError) as exc:
-        raise UserError(f"--from {str(path)!r}: {exc}") from None
 
 
 def report_result(result: ImpactResult | DropResult, *, out: Path | None, as_json: bool) -> None:
@@ -65,4 +43,4 @@ def report_result(result: ImpactResult | DropResult, *, out: Path | None, as_jso
         console.print(Text(f"saved {f}"))
 
 
-__all__ = ["report_result", "run_from"]
+__all__ = ["report_result"]

@@ -39,6 +39,7 @@ from impactlab.dynamics.checks import (
     check_rtol,
     check_velocity,
     gravity_value,
+    velocity_from,
 )
 from impactlab.dynamics.core.layout import MU_NEGLIGIBLE
 from impactlab.dynamics.drop_checks import (
@@ -63,6 +64,7 @@ from impactlab.dynamics.models import (
     kernel_params,
     references_used,
 )
+from impactlab.dynamics.provenance import SIMULATE_DROP
 from impactlab.friction import (
     COULOMB,
     DEFAULT_MU,
@@ -292,35 +294,43 @@ def simulate_drop(
     law: str | ContactModel = "ghaednia",
     friction: str = "coulomb",
     mu: float = DEFAULT_MU,
-    angle: float,
-    velocity: tuple[float, float],
-    spin: float = 0.0,
-    gravity: bool | float = True,
+    angle: Any,
+    velocity: Any = None,
+    spin: Any = 0.0,
+    gravity: Any = True,
     rate: str | None = None,
     rtol: float | None = None,
     history: bool = False,
     law_params: Mapping[str, float] | None = None,
     stop: str = "sequence",
-    t_max: float = DEFAULT_T_MAX,
+    t_max: Any = DEFAULT_T_MAX,
+    speed: Any = None,
+    incidence: Any = None,
 ) -> DropResult:
     """Simulate the drop of ``body`` on ``flat`` from the first touch of its tip (end 0, at
     delta = 0, undeformed, modes at rest) until it leaves the flat for good (SI units).
 
-    body: a FlexibleRod, or a rigid Rod (the rigid limit: no modes); flat: the flat's material; law:
-    a registered law name (or a ContactModel; no ``rate`` then); friction: ``"coulomb"``,
+    body: a FlexibleRod, or a rigid Rod (the rigid limit: no modes); flat: the flat's material;
+    law: a registered law name (or a ContactModel; no ``rate`` then); friction: ``"coulomb"``,
     ``"impulse_ratio"``, ``"mindlin"`` or ``"partial_slip"`` (set at every touch, as in the
     rigid engine; partial slip: cells over the contact radius of a Mindlin pre-pass); mu >= 0;
-    angle [rad] in (0, pi/2]; velocity (vx, vy) of the centre of mass at first touch [m/s]; spin
-    [rad/s]; gravity: True, False or a value [m/s^2]; rate: None, ``"cowper-symonds"`` or
-    ``"johnson-cook"`` (the flat's yield strength raised by the self-consistent rate factor,
-    ``impactlab.contact.rate``); rtol: relative tolerance (default 1e-7); history: keep the time
-    history; law_params: the law's parameters; stop: ``"sequence"`` (stop when the tip is clear
-    until the other end could land: that is a new impact, ``next_end`` / ``next_time``) or
-    ``"flight"`` (go on through the other end's impacts); t_max [s]: the longest simulated time.
+    angle [rad] in (0, pi/2]; velocity (vx, vy) of the centre of mass at first touch [m/s], or
+    instead ``speed`` [m/s] and ``incidence`` [rad], its angle to the flat's normal (vx = speed
+    sin(incidence), vy = -speed cos(incidence); the rule and errors of ``impactlab.simulate``,
+    ``checks.velocity_from``); spin [rad/s]; gravity: True, False or a value [m/s^2]; rate:
+    None, ``"cowper-symonds"`` or ``"johnson-cook"`` (the flat's yield strength raised by the
+    self-consistent rate factor, ``impactlab.contact.rate``); rtol: relative tolerance (default
+    1e-7); history: keep the time history; law_params: the law's parameters; stop:
+    ``"sequence"`` (stop when the tip is clear until the other end could land: that is a new
+    impact, ``next_end`` / ``next_time``) or ``"flight"`` (go on through the other end's
+    impacts until the rod flies off); t_max [s]: the longest simulated time.
 
     Returns a DropResult: every contact, the dents, the totals, the energy balance, the
-    history if asked, the references. ValueError for invalid input or a failed integration.
+    history if asked, the references and ``input``, the record of this call
+    (``dynamics.provenance``: ``impactlab.rerun`` runs it again). ValueError for invalid input
+    or a failed integration.
     """
+    velocity = velocity_from(velocity, speed, incidence)
     body = check_body(body)
     bm = _body_model(body)
     flat = check_flat(flat)
@@ -377,4 +387,9 @@ def simulate_drop(
     inputs = {"friction": fric.name, "mu": mu_v, "angle": th, "velocity_in": (vx, vy)}
     inputs |= {"spin_in": w, "gravity": g, "rtol": options[0]}
     name = get_rate_law(rate).name if rate is not None else None
-    return _result(r, bm, model, inputs, (name, factor), tuple(dict.fromkeys(refs)))
+    result = _result(r, bm, model, inputs, (name, factor), tuple(dict.fromkeys(refs)))
+    # what was simulated, checked, for DropResult.input (``dynamics.provenance``)
+    drop_options = {"rate": name, "stop": stop, "t_max": options[1]}
+    call = (body, flat, law, law_params, g, None, options[0], drop_options, SIMULATE_DROP)
+    object.__setattr__(result, "_call", call)
+    return result

@@ -1,9 +1,13 @@
 """What was simulated: the full input of a result as JSON-ready data, and back.
 
-``input_record`` writes the arguments of one ``simulate`` call (the body with its material and
-sizes, the flat, the contact law and its parameters, the friction model and mu, angle, velocity,
-spin, gravity, the tolerance) and the impactlab version; ``from_record`` reads such a record back
-into ``simulate``'s arguments, and ``rerun`` runs it again (``impactlab simulate --from``).
+``input_record`` writes the arguments of one ``simulate`` or ``simulate_drop`` call (the body
+with its material and sizes, the flat, the contact law and its parameters, the friction model and
+mu, angle, velocity, spin, gravity, the tolerance; for a drop its options ``rate``, ``stop``,
+``t_max``), the function called (``function``) and the impactlab version; ``from_record`` reads
+such a record back into that function's arguments, and ``rerun`` runs it again (``impactlab
+simulate --from``). Every drop, of a rigid ``Rod`` or a ``FlexibleRod``, records
+``simulate_drop``: ``simulate`` takes no drop options for a rigid rod (its rigid engine is
+another model), so the drop's own function is the one that runs it again to the same numbers.
 
 Materials, bodies and contact models are written generically from their dataclass fields (the
 fields of ``__init__``), each as ``{"type": <class name>, <field>: <value>, ...}``, so a field added
@@ -32,10 +36,27 @@ from impactlab.dynamics.core.layout import DEFAULT_RTOL, PARTIAL_SLIP_RTOL
 from impactlab.dynamics.flexcore.layout import DROP_DEFAULT_RTOL as DROP_RTOL
 from impactlab.materials import ContactPair, Material
 
-__all__ = ["RECORD_FORMAT", "decode", "encode", "from_record", "input_record", "result_record"]
+__all__ = [
+    "FUNCTIONS",
+    "RECORD_FORMAT",
+    "SIMULATE",
+    "SIMULATE_DROP",
+    "decode",
+    "encode",
+    "from_record",
+    "input_record",
+    "record_function",
+    "result_record",
+]
 
 #: The format of the record (raised when its layout changes).
 RECORD_FORMAT = 1
+
+#: The functions a record may name: ``simulate`` (rigid impacts; a FlexibleRod's drop before
+#: the drop recorded itself) and ``simulate_drop`` (every drop, rigid or flexible rod).
+SIMULATE = "impactlab.simulate"
+SIMULATE_DROP = "impactlab.simulate_drop"
+FUNCTIONS = (SIMULATE, SIMULATE_DROP)
 
 #: The classes a record may name, by ``type``.
 _TYPES: dict[str, type] = {
@@ -52,6 +73,7 @@ UNITS: dict[str, str] = {
     "mu": "1",
     "rtol": "1",
     "params": "1",
+    "t_max": "s",
 }
 #: The unit written for a float field whose unit is not known here.
 _UNKNOWN_UNIT = "SI"
@@ -160,16 +182,20 @@ def input_record(
     velocity: tuple[float, float],
     spin: float,
     gravity: float,
-    constant_angle: bool,
+    constant_angle: bool | None,
     rtol: float,
     extra: Mapping[str, Any] | None = None,
+    function: str = SIMULATE,
 ) -> dict[str, Any]:
-    """The JSON-ready record of one ``simulate`` call (SI, checked values; ``angle`` None for
-    a sphere; ``extra``: options of the flexible drop such as ``rate``)."""
+    """The JSON-ready record of one call of ``function`` (``SIMULATE`` or ``SIMULATE_DROP``;
+    SI, checked values; ``angle`` None for a sphere; ``constant_angle`` None: not an argument
+    of ``function``; ``extra``: the drop's options ``rate``, ``stop``, ``t_max``)."""
+    if function not in FUNCTIONS:
+        raise ValueError(f"function must be one of {FUNCTIONS}, got {function!r}")
     record: dict[str, Any] = {
         "impactlab_version": __version__,
         "format": RECORD_FORMAT,
-        "function": "impactlab.simulate",
+        "function": function,
         "body": encode(body),
         "flat": encode(flat),
         "law": encode(law),
@@ -180,9 +206,11 @@ def input_record(
         "velocity": encode(tuple(float(v) for v in velocity), "velocity"),
         "spin": encode(float(spin), "spin"),
         "gravity": encode(float(gravity), "gravity"),
-        "constant_angle": bool(constant_angle),
+        "constant_angle": None if constant_angle is None else bool(constant_angle),
         "rtol": encode(float(rtol), "rtol"),
     }
+    if constant_angle is None:
+        del record["constant_angle"]
     for k, v in (extra or {}).items():
         record[k] = encode(v, k)
     return record
@@ -192,12 +220,33 @@ def input_record(
 _META = ("impactlab_version", "format", "function")
 
 
-def from_record(record: Mapping[str, Any]) -> dict[str, Any]:
-    """``simulate``'s keyword arguments from a record of :func:`input_record` (or from a
-    result's ``to_dict()`` / ``--json`` output, whose ``input`` it reads). ValueError naming
-    what is missing or unknown."""
+def _input(record: Mapping[str, Any]) -> Mapping[str, Any]:
+    """The input record itself, or the ``input`` of a result's ``to_dict()``."""
     if "input" in record and isinstance(record["input"], Mapping):
-        record = record["input"]
+        return record["input"]
+    if "input" in record and record["input"] is None:
+        raise ValueError(
+            "the result's 'input' is null: it was not returned by impactlab.simulate or "
+            "impactlab.simulate_drop (a result assembled otherwise records no input)"
+        )
+    return record
+
+
+def record_function(record: Mapping[str, Any]) -> str:
+    """The function a record (or a result's ``to_dict()``) calls: ``SIMULATE`` or
+    ``SIMULATE_DROP``; ValueError for another."""
+    function = _input(record).get("function", SIMULATE)
+    if function not in FUNCTIONS:
+        raise ValueError(f"the record's function {function!r} is not one of {FUNCTIONS}")
+    return str(function)
+
+
+def from_record(record: Mapping[str, Any]) -> dict[str, Any]:
+    """The keyword arguments of the record's function (:func:`record_function`) from a record
+    of :func:`input_record` (or from a result's ``to_dict()`` / ``--json`` output, whose
+    ``input`` it reads). ValueError naming what is missing or unknown."""
+    record_function(record)
+    record = _input(record)
     missing = [k for k in ("body", "flat", "law", "velocity") if k not in record]
     if missing:
         raise ValueError(
@@ -219,7 +268,7 @@ def result_record(result: Any) -> dict[str, Any] | None:
     call = getattr(result, "_call", None)
     if call is None:
         return None
-    body, flat, law, law_params, gravity, constant_angle, rtol, drop_options = call
+    body, flat, law, law_params, gravity, constant_angle, rtol, drop_options, *function = call
     if rtol is None:
         if drop_options is not None:
             rtol = DROP_RTOL
@@ -240,4 +289,5 @@ def result_record(result: Any) -> dict[str, Any] | None:
         constant_angle=constant_angle,
         rtol=rtol,
         extra=drop_options,
+        function=function[0] if function else SIMULATE,
     )

@@ -32,6 +32,7 @@ from impactlab.dynamics.checks import (
 from impactlab.dynamics.core import layout as L
 from impactlab.dynamics.core import status as S
 from impactlab.dynamics.core.driver import impact
+from impactlab.dynamics.drop import simulate_drop
 from impactlab.dynamics.drop_result import DropResult
 from impactlab.dynamics.flex_simulate import simulate_flexible
 from impactlab.dynamics.models import (
@@ -41,7 +42,7 @@ from impactlab.dynamics.models import (
 )
 from impactlab.dynamics.outcome import engine_result, impact_result, status_error
 from impactlab.dynamics.partial_slip import simulate_partial_slip
-from impactlab.dynamics.provenance import from_record
+from impactlab.dynamics.provenance import SIMULATE_DROP, from_record, record_function
 from impactlab.dynamics.results import ImpactResult
 from impactlab.friction import DEFAULT_MU, FrictionKind
 from impactlab.materials import AISI_1010, G0, Material
@@ -136,11 +137,9 @@ def simulate(
     if isinstance(body, FlexibleRod) or drop_options:  # the flexible drop: a DropResult
         args = {"law": law, "friction": friction, "mu": mu, "angle": angle, "velocity": velocity}
         args |= {"spin": spin, "law_params": law_params, "gravity": gravity, "rtol": rtol}
-        drop = simulate_flexible(body, flat, constant_angle=constant_angle, history=history,
+        # the drop records itself (``input``: a call of simulate_drop, its options in full)
+        return simulate_flexible(body, flat, constant_angle=constant_angle, history=history,
                                  **args, **drop_options)  # fmt: skip
-        object.__setattr__(drop, "_call", (body, flat, law, law_params, gravity, False, rtol,
-                                           drop_options))  # fmt: skip
-        return drop
     r = _fast(body, flat, law, friction, mu, angle, velocity, spin, law_params, gravity,
               constant_angle, rtol, history)  # fmt: skip
     if r is not None:
@@ -301,10 +300,18 @@ def _run_one(x: ImpactInputs, history: bool) -> ImpactResult:
 
 
 def rerun(record: Mapping[str, Any], **changes: Any) -> ImpactResult | DropResult:
-    """Run a recorded impact again: ``record`` is a result's ``to_dict()`` (or its ``input``,
-    or the JSON of ``impactlab simulate --json``); ``changes`` override its arguments
-    (``rerun(r.to_dict(), mu=0.3)``). ValueError when the record is not one."""
-    args = {**from_record(record), **changes}
+    """Run a recorded impact or drop again: ``record`` is a result's ``to_dict()`` (or its
+    ``input``, or the JSON of ``impactlab simulate --json`` or ``impactlab drop --json``), run
+    by the function it names (``simulate``, or ``simulate_drop`` for a drop of a rigid or
+    flexible rod); ``changes`` override its arguments (``rerun(r.to_dict(), mu=0.3)``; a new
+    ``velocity`` or ``speed`` and ``incidence`` replace the recorded velocity). ValueError when
+    the record is not one."""
+    args = from_record(record)
+    if {"speed", "incidence"} & set(changes):
+        args.pop("velocity", None)
+    args |= changes
+    if record_function(record) == SIMULATE_DROP:
+        return simulate_drop(args.pop("body"), **args)
     return simulate(args.pop("body"), **args)
 
 

@@ -1,0 +1,191 @@
+"""``impactlab simulate --from result.json``: a recorded impact or drop run again, with the
+options of the command line on top of its recorded input.
+
+The rule (``FROM_RULE``, said in ``--help`` and docs/tutorials/simulate.md): the recorded input
+is the default of every option; the options of the impact override it (the kinematics, mu, the
+law, the friction model, the flat, gravity, and ``--constant-angle`` for a rigid impact or
+``--rate`` for a drop); the options that make the body (the body argument, its material, sizes,
+inertia, modes and damping, ``--flexible``) and ``--config`` are refused, since the body is the
+recorded one. ``--vx`` or ``--vy`` replaces that component of the recorded velocity,
+``--speed`` with ``--incidence`` replaces the velocity; a new ``--law`` drops the recorded law
+parameters (they are the recorded law's).
+"""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Callable, Mapping
+from pathlib import Path
+from typing import Any
+
+from impactlab.cli._common import UserError, angle_quantity, quantity, velocity_input
+from impactlab.dynamics import ImpactResult
+from impactlab.dynamics.drop_result import DropResult
+from impactlab.materials import get_material
+
+__all__ = ["FROM_BODY_OPTIONS", "FROM_RULE", "from_changes", "load_record", "run_from"]
+
+#: What ``--from`` takes beside it, in one sentence (``--help``, the docs).
+FROM_RULE = (
+    "Simulate again the impact or drop recorded in a result's JSON (--json output of simulate "
+    "or drop, or impact_result.json: its 'input'); the recorded input is the default of every "
+    "option: the kinematics (--angle, --vx or --vy replace that component, --speed with "
+    "--incidence the velocity), --spin, --mu, --law (a new law drops the recorded law "
+    "parameters), --friction, --flat, --no-gravity, --constant-angle (rigid impact) and --rate "
+    "(drop) override it; the body's options (body, --material, sizes, --inertia, modes, "
+    "--damping, --flexible) and --config are refused: the body is the recorded one."
+)
+
+#: Options (keys of ``impactlab simulate``) that make the body: refused with ``--from``.
+FROM_BODY_OPTIONS = (
+    "body",
+    "material",
+    "radius",
+    "length",
+    "mass",
+    "diameter",
+    "inertia",
+    "flexible",
+    "modes_axial",
+    "modes_bending",
+    "damping",
+)
+
+
+def load_record(path: Path) -> dict[str, Any]:
+    """The JSON object in ``path``; UserError when it cannot be read or holds no object."""
+    try:
+        record = json.loads(path.read_text())
+    except OSError as exc:
+        raise UserError(f"--from: cannot read {str(path)!r}: {exc.strerror}") from None
+    except json.JSONDecodeError as exc:
+        why = f"{exc.msg}, line {exc.lineno}"
+        raise UserError(f"--from: {str(path)!r} is not JSON ({why})") from None
+    if not isinstance(record, dict):
+        raise UserError(f"--from: {str(path)!r} holds no result (a JSON object is needed)")
+    return record
+
+
+def _recorded(record: Mapping[str, Any], path: Path) -> tuple[str, dict[str, Any]]:
+    """(the recorded function, its arguments) of ``record``; UserError when it is not one."""
+    from impactlab.dynamics.provenance import from_record, record_function
+
+    try:
+        return record_function(record), from_record(record)
+    except (ValueError, TypeError) as exc:
+        raise UserError(f"--from {str(path)!r}: {exc}") from None
+
+
+def _velocity(given: Mapping[str, Any], recorded: Any, label: Callable[[str], str]) -> Any:
+    """The velocity: the recorded (vx, vy) with the given component(s) replaced, or the one
+    of --speed and --incidence (``velocity_input``'s rules and errors)."""
+    vx, vy = (given.get(k) for k in ("vx", "vy"))
+    speed, incidence = (given.get(k) for k in ("speed", "incidence"))
+    if speed is not None or incidence is not None:
+        return velocity_input(vx, vy, speed, incidence, label)
+    old_vx, old_vy = recorded
+    new_vx = old_vx if vx is None else quantity(vx, "m/s", label("vx"))
+    new_vy = old_vy if vy is None else quantity(vy, "m/s", label("vy"))
+    return (new_vx, new_vy)
+
+
+def _label(key: str) -> str:
+    return "--" + key.replace("_", "-")
+
+
+def _refuse_body_options(given: Mapping[str, Any]) -> None:
+    """UserError naming the given options that make the body (``FROM_BODY_OPTIONS``)."""
+    body_options = [
+        "the body" if k == "body" else _label(k) for k in FROM_BODY_OPTIONS if given.get(k)
+    ]
+    if body_options:
+        raise UserError(
+            f"{', '.join(body_options)}: --from simulates the recorded body; leave "
+            f"{'it' if len(body_options) == 1 else 'them'} out (or simulate a new body "
+            "without --from)"
+        )
+
+
+def _kinematics(given: Mapping[str, Any], recorded: Mapping[str, Any]) -> dict[str, Any]:
+    """The changed angle, velocity and spin."""
+    changes: dict[str, Any] = {}
+    if given.get("angle") is not None:
+        if recorded.get("angle") is None:
+            raise UserError(
+                f"--angle: the recorded body is a {type(recorded['body']).__name__}, which has "
+                "no angle to the flat; leave it out"
+            )
+        changes["angle"] = angle_quantity(given["angle"], "--angle")
+    if any(given.get(k) is not None for k in ("vx", "vy", "speed", "incidence")):
+        changes["velocity"] = _velocity(given, recorded["velocity"], _label)
+    if given.get("spin") is not None:
+        changes["spin"] = quantity(given["spin"], "rad/s", "--spin")
+    return changes
+
+
+def _options(given: Mapping[str, Any], drop: bool) -> dict[str, Any]:
+    """The changed --constant-angle (a rigid impact) or --rate (a drop)."""
+    from impactlab.cli.drop import rate_name  # lazy: the drop command's parser
+
+    changes: dict[str, Any] = {}
+    if given.get("constant_angle"):
+        if drop:
+            raise UserError(
+                "--constant-angle: the recorded drop follows the rod's rotation (no frozen "
+                "lever arms); leave it out"
+            )
+        changes["constant_angle"] = True
+    if given.get("rate") is not None:
+        if not drop:
+            raise UserError(
+                "--rate: the recorded impact is not a drop (only the drop has a rate-dependent "
+                "flat); leave it out"
+            )
+        changes["rate"] = rate_name(str(given["rate"]))
+    return changes
+
+
+def from_changes(
+    given: Mapping[str, Any], function: str, recorded: Mapping[str, Any]
+) -> dict[str, Any]:
+    """The arguments that the command-line options ``given`` (keys of ``impactlab simulate``,
+    None: not given) change in the ``recorded`` arguments of ``function`` (module docstring);
+    UserError for an option the rule refuses."""
+    from impactlab.dynamics.provenance import SIMULATE_DROP
+
+    _refuse_body_options(given)
+    changes = _kinematics(given, recorded)
+    if given.get("mu") is not None:
+        changes["mu"] = float(given["mu"])
+    if given.get("law") is not None:
+        changes["law"] = str(given["law"])
+        if changes["law"] != recorded.get("law"):
+            changes["law_params"] = None  # the recorded ones are the recorded law's
+    if given.get("friction") is not None:
+        changes["friction"] = str(given["friction"])
+    if given.get("flat") is not None:
+        try:
+            changes["flat"] = get_material(given["flat"], "--flat")
+        except ValueError as exc:
+            raise UserError(str(exc)) from None
+    if given.get("gravity") is False:
+        changes["gravity"] = False
+    return changes | _options(given, function == SIMULATE_DROP)
+
+
+def run_from(path: Path, given: Mapping[str, Any] | None = None) -> ImpactResult | DropResult:
+    """The impact or drop recorded in ``path`` (``impactlab simulate --json`` or ``impactlab
+    drop --json`` output, an ``impact_result.json`` or a result's ``to_dict()``) simulated
+    again, with the command-line options ``given`` on top (:func:`from_changes`)."""
+    from impactlab.dynamics import rerun  # lazy: a fast CLI start
+    from impactlab.dynamics.provenance import SIMULATE
+
+    record = load_record(path)
+    function, recorded = _recorded(record, path)
+    changes = from_changes(given or {}, function, recorded)
+    if function == SIMULATE and type(recorded["body"]).__name__ == "FlexibleRod":
+        changes.setdefault("history", False)  # a FlexibleRod recorded by simulate
+    try:
+        return rerun(record, **changes)
+    except (ValueError, TypeError) as exc:
+        raise UserError(f"--from {str(path)!r}: {exc}") from None
