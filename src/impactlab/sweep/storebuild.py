@@ -8,6 +8,8 @@ Layout (a Zarr v3 group that ``xarray.open_zarr`` reads):
 - one coordinate array per grid axis (SI values, ``units`` attribute);
 - the sampled inputs as variables along ``sample`` (written with the chunks that cover them);
 - fixed inputs as scalar coordinates;
+- the resolved material values of the cases that the inputs do not hold (a library material's
+  E, nu, S_y, ...: scalars, or arrays along a grid of materials; ``sweep.material_record``);
 - one array per kept output and ``status`` (int32; -1 = not computed), chunked exactly like the
   work: each work chunk is one Zarr chunk of every array, so no two chunks ever share a file;
 - ``.sweep/study.json`` (the canonical study) and ``.sweep/done/`` (completion markers).
@@ -31,6 +33,7 @@ from impactlab.flags import ResultFlag, messages
 from impactlab.sweep.dimensions import SAMPLE_DIM
 from impactlab.sweep.hooks import checkpoint
 from impactlab.sweep.inputs import INPUTS, INTEGER_OUTPUTS, get_input, output_spec
+from impactlab.sweep.material_record import resolved_material_values
 from impactlab.sweep.options import STUDY_FORMAT
 from impactlab.sweep.status import SWEEP_STATUS_MESSAGES
 from impactlab.sweep.study import Study
@@ -130,6 +133,27 @@ def _create_constants(g: Any, study: Study) -> list[str]:
     return names
 
 
+def _create_material_values(g: Any, study: Study) -> list[str]:
+    """The resolved material values of the cases that the study's inputs do not hold
+    (``sweep.material_record``); returns their names."""
+    names = []
+    for name, value, dims, attrs in resolved_material_values(study):
+        shape = np.shape(value)
+        z = g.create_array(
+            name,
+            shape=shape,
+            **({"chunks": shape} if shape else {}),
+            dtype="float64",
+            fill_value=np.nan,
+            dimension_names=dims,
+            attributes=attrs,
+            **CHUNK_KEYS,
+        )
+        z[...] = value
+        names.append(name)
+    return names
+
+
 def _create_output(g: Any, name: str, meta: StoreMeta, study: Study) -> None:
     """The array of one kept output, chunked like the work; unit and meaning from the schema."""
     spec = output_spec(name)
@@ -204,6 +228,7 @@ def build_store(path: Path, study: Study, meta: StoreMeta) -> None:
     g = zarr.open_group(str(path), mode="w", zarr_format=3)
     _create_axes(g, study)
     coords = [*_create_sampled(g, study), *_create_constants(g, study)]
+    coords += _create_material_values(g, study)
     for name in meta.outputs:
         _create_output(g, name, meta, study)
     messages = {**{int(k): v for k, v in meta.status_messages.items()}, **SWEEP_STATUS_MESSAGES}
