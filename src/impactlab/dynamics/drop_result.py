@@ -232,9 +232,17 @@ class DropResult:
       upper end of the law's range, ``fitted_delta_ratio_max``);
     - ``references`` / ``dois()``: the sources used.
 
+    ``stop="flight"`` integrates through the other end's impacts until the rod flies off
+    (``next_end`` -1): "the last contact" is then the last of either end, ``duration`` spans
+    every flight between the ends' impacts, and ``e`` (gravity removed over all of it) is a
+    number of the whole flight, no coefficient of restitution (it can exceed 1); OTHER_END
+    says so, and GRAVITY_DOMINATED, read on the tip's sequence, is not set by the flight.
+
     Velocities and spin are those of the floating frame after the last contact. Energy balance
     (``energy_balance``): rigid kinetic + vibration + potential - initial = work_normal +
-    work_friction + work_damping, to ``energy_error`` of the initial energy.
+    work_friction + work_damping, to ``energy_error`` of the initial energy (the largest over
+    every step, through every contact and flight); a balance, that or the residual of these
+    terms, worse than rtol promises is refused (``drop_checks.check_energy_balance``).
     """
 
     contacts: tuple[ContactRecord, ...]
