@@ -78,8 +78,9 @@ def simulate_batch(
 ) -> BatchResult:
     """Many impacts of one body, law and friction model, in parallel on all cores.
 
-    ``mu``, ``angle`` [rad], ``vx``, ``vy`` [m/s] and ``spin`` [rad/s] are scalars or 1-D arrays,
-    broadcast against each other; the dimensional ones may also be pint Quantities (any
+    ``mu``, ``angle`` [rad; a Rod's, required; a Sphere takes none and an angle given for it
+    is refused, as by ``simulate``], ``vx``, ``vy`` [m/s] and ``spin`` [rad/s] are scalars or
+    1-D arrays, broadcast against each other; the dimensional ones may also be pint Quantities (any
     registry) or strings with units, as in ``simulate``. ``vy`` (``vx`` default 0) or, instead,
     ``speed`` [m/s] and ``incidence`` [rad] (arrays too; vx = speed sin(incidence),
     vy = -speed cos(incidence), ``checks.velocity_from``) are required. Invalid cases (NaN
