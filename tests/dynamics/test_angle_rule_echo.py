@@ -71,3 +71,12 @@ def test_batch_refuses_an_angle_for_a_sphere_as_simulate_does(angle) -> None:
 def test_batch_of_spheres_without_an_angle_runs() -> None:
     b = il.simulate_batch(Sphere(0.005), law="hertz", vy=[-1.0, -2.0])
     assert b.ok.all()
+
+
+def test_the_closed_forms_echo_an_angle_in_radians() -> None:
+    from impactlab.analytic import critical_friction
+
+    with pytest.raises(ValueError, match=r"angle must be <= 1.5708 rad, got 95.0 rad$"):
+        critical_friction(Q_(95.0, ""))
+    with pytest.raises(ValueError, match=r"got 1.658\d* rad$"):
+        critical_friction(Q_(95.0, "deg"))

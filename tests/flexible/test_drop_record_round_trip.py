@@ -61,6 +61,8 @@ def test_a_drop_records_everything_and_reruns_identically(body) -> None:
     _same(il.rerun(rec), r)
     changed = il.rerun(d, mu=0.2)
     assert changed.mu == 0.2 and changed.input["mu"]["value"] == 0.2
+    turned = il.rerun(d, speed="1.5 m/s", incidence="10 deg")  # replaces the recorded velocity
+    assert turned.velocity_in == velocity_from(None, "1.5 m/s", "10 deg")
 
 
 def test_simulate_of_a_flexible_rod_records_the_drop_in_full() -> None:

@@ -30,16 +30,19 @@ def arr(
     Quantities); ValueError naming ``name`` if it is not finite or lies outside [low, high]
     (open ends where asked)."""
     x = check_array_finite(name, value, unit)
+    u = f" {unit}" if unit else ""  # the value as the rule reads it (an angle: radians)
     if low is not None:
         out = x <= low if low_open else x < low
         if out.any():
             op = ">" if low_open else ">="
-            raise ValueError(f"{name} must be {op} {low:g}, got {x.ravel()[np.argmax(out)]!r}")
+            got = float(x.ravel()[np.argmax(out)])
+            raise ValueError(f"{name} must be {op} {low:g}{u}, got {got!r}{u}")
     if high is not None:
         out = x >= high if high_open else x > high
         if out.any():
             op = "<" if high_open else "<="
-            raise ValueError(f"{name} must be {op} {high:g}, got {x.ravel()[np.argmax(out)]!r}")
+            got = float(x.ravel()[np.argmax(out)])
+            raise ValueError(f"{name} must be {op} {high:g}{u}, got {got!r}{u}")
     return x
 
 
