@@ -116,3 +116,28 @@ def test_drop_takes_speed_and_incidence_like_simulate() -> None:
         with pytest.raises(ValueError, match=says) as simulate_error:
             il.simulate(PAPER_ROD, angle=0.5, **kwargs)
         assert str(drop_error.value) == str(simulate_error.value)
+
+
+def test_cli_drop_from_with_options_on_top(tmp_path, monkeypatch, capsys) -> None:
+    base = ["drop", "--angle", "30 deg", "--vy", "-1.2 m/s", "--rigid", "--json"]
+    code, out, err = _cli(monkeypatch, capsys, *base, "--mu", "0.1")
+    assert code == 0, err
+    saved = tmp_path / "drop.json"
+    saved.write_text(out)
+    code, again, err = _cli(monkeypatch, capsys, "drop", "--from", str(saved), "--json")
+    assert code == 0, err
+    assert json.loads(again)["e"] == json.loads(out)["e"]
+    code, changed, err = _cli(monkeypatch, capsys, "drop", "--from", str(saved), "--mu", "0.3",
+                              "--json")  # fmt: skip
+    code_direct, direct, _ = _cli(monkeypatch, capsys, *base, "--mu", "0.3")
+    assert code == code_direct == 0, err
+    assert json.loads(changed)["input"] == json.loads(direct)["input"]
+    assert json.loads(changed)["e"] == json.loads(direct)["e"]
+    code, _, err = _cli(monkeypatch, capsys, "drop", "--from", str(saved), "--rigid")
+    assert code != 0 and "--rigid: --from simulates the recorded body" in err
+    impact = tmp_path / "impact.json"
+    code, out, err = _cli(monkeypatch, capsys, "simulate", "rod", "--angle", "30 deg", "--vy",
+                          "-1.2 m/s", "--json")  # fmt: skip
+    impact.write_text(out)
+    code, _, err = _cli(monkeypatch, capsys, "drop", "--from", str(impact))
+    assert code != 0 and "not a drop" in err and "impactlab simulate --from" in err

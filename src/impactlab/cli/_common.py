@@ -16,12 +16,25 @@ from rich.text import Text
 
 from impactlab._display import field_rows
 from impactlab._json import to_json
+from impactlab.contact.rate import RATE_LAWS
 from impactlab.schema import FIELDS
 from impactlab.units import angle_to_rad, to_si
 
 
 class UserError(ValueError):
     """An error in the user's input: reported as one line, exit status 2."""
+
+
+#: ``--rate`` values of the drop ("none": a rate-independent flat).
+RATE_CHOICES = ("none", *RATE_LAWS)
+
+
+def rate_name(rate: str, name: str = "--rate") -> str | None:
+    """The rate law of ``--rate`` (None for "none"); UserError listing the choices."""
+    key = rate.strip().lower()
+    if key not in RATE_CHOICES:
+        raise UserError(f"{name} must be one of {', '.join(RATE_CHOICES)}, got {rate!r}")
+    return None if key == "none" else key
 
 
 class _CurrentConsole:

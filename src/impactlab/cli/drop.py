@@ -13,6 +13,7 @@ from __future__ import annotations
 import sys
 import textwrap
 from collections.abc import Mapping
+from pathlib import Path
 from typing import Any, cast
 
 import typer
@@ -23,22 +24,21 @@ from impactlab.bodies.flexible_rod import DEFAULT_N_AXIAL, DEFAULT_N_BENDING
 from impactlab.cli._common import (
     KINEMATIC_HELP,
     LENGTH_HELP,
+    RATE_CHOICES,
     SI_UNITS,
     UserError,
     angle_quantity,
     emit,
     positive,
     quantity,
+    rate_name,
     velocity_input,
 )
-from impactlab.contact.rate import RATE_LAWS
+from impactlab.cli.simulate_from import run_from
 from impactlab.dynamics.drop import simulate_drop
 from impactlab.dynamics.drop_result import UNITS, DropResult
 from impactlab.friction import DEFAULT_MU
 from impactlab.materials import AISI_1010, Material, get_material
-
-#: ``--rate`` values ("none": a rate-independent flat).
-RATE_CHOICES = ("none", *RATE_LAWS)
 
 #: The totals printed after the contact table (SI units: ``SI_UNITS``).
 TOTALS = (
@@ -155,14 +155,6 @@ def _material(value: str | None, default: Material, name: str) -> Material:
         raise UserError(str(exc)) from None
 
 
-def rate_name(rate: str, name: str = "--rate") -> str | None:
-    """The rate law of ``--rate`` (None for "none"); UserError listing the choices."""
-    key = rate.strip().lower()
-    if key not in RATE_CHOICES:
-        raise UserError(f"{name} must be one of {', '.join(RATE_CHOICES)}, got {rate!r}")
-    return None if key == "none" else key
-
-
 def _contact_rows(result: DropResult) -> tuple[list[str], list[list[str]]]:
     """The contact table's header (field [display unit]) and rows, in display units."""
     header = ["#"]
@@ -210,7 +202,14 @@ def report_drop(result: DropResult, *, as_json: bool) -> None:
     emit(drop_summary(result), as_json=False, title="drop", units=UNITS)
 
 
+def _on_command_line(ctx: typer.Context, name: str) -> bool:
+    """True when the option ``name`` was given on the command line (not its default)."""
+    source = ctx.get_parameter_source(name)  # typer's click enum: compared by name
+    return source is not None and source.name == "COMMANDLINE"
+
+
 def drop_cmd(
+    ctx: typer.Context,
     angle: str = typer.Option(None, "--angle", help=KINEMATIC_HELP["angle"]),
     vy: str = typer.Option(None, "--vy", help=KINEMATIC_HELP["vy"]),
     vx: str = typer.Option(None, "--vx", help=KINEMATIC_HELP["vx"]),
@@ -263,6 +262,12 @@ def drop_cmd(
         None, "--damping", help="Modal damping ratio zeta of every mode, in [0, 1) (default 0)."
     ),
     no_gravity: bool = typer.Option(False, "--no-gravity", help="Switch gravity off."),
+    from_file: Path = typer.Option(
+        None,
+        "--from",
+        help="Drop again the drop recorded in a drop's JSON (drop --json), with the options "
+        "given on top: the rule of 'impactlab simulate --from' (the body's options refused).",
+    ),
     as_json: bool = typer.Option(False, "--json", help="Machine-readable output."),
 ) -> None:
     """Drop a rod (the paper's by default; flexible, or --rigid) on a flat (AISI 1010 by
@@ -282,6 +287,15 @@ def drop_cmd(
 
       impactlab drop --angle "20 deg" --vy "-1.41 m/s" --mu 0.2 --friction partial_slip
     """
+    if from_file is not None:  # the recorded drop, with the options given on top
+        values = {k: v for k, v in locals().items() if k in _FROM_KEYS}
+        given = {k: v if _on_command_line(ctx, k) else None for k, v in values.items()}
+        given |= {"gravity": False if no_gravity else None, "rigid": rigid or None}
+        result = run_from(from_file, given, drop_only=True)
+        for text in result.warnings:
+            print(f"warning: {text}", file=sys.stderr)
+        report_drop(cast(DropResult, result), as_json=as_json)  # drop_only: a drop
+        return
     if angle is None:
         raise UserError('--angle is required, with a unit, e.g. --angle "20 deg"')
     velocity = velocity_input(vx, vy, speed, incidence)
@@ -308,6 +322,12 @@ def drop_cmd(
     for text in result.warnings:
         print(f"warning: {text}", file=sys.stderr)
     report_drop(result, as_json=as_json)
+
+
+#: The options of ``drop`` that ``--from`` reads as given (the keys of ``impactlab simulate``).
+_FROM_KEYS: tuple[str, ...] = ("angle", "vy", "vx", "speed", "incidence", "spin", "length")
+_FROM_KEYS += ("radius", "mass", "diameter", "material", "flat", "mu", "friction", "law")
+_FROM_KEYS += ("rate", "modes_axial", "modes_bending", "damping")
 
 
 def register(app: typer.Typer) -> None:

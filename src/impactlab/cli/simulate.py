@@ -21,14 +21,16 @@ from impactlab.bodies.flexible_rod import DEFAULT_N_AXIAL, DEFAULT_N_BENDING
 from impactlab.cli._common import (
     KINEMATIC_HELP,
     LENGTH_HELP,
+    RATE_CHOICES,
     UserError,
     angle_quantity,
     load_toml,
     positive,
     quantity,
+    rate_name,
     velocity_input,
 )
-from impactlab.cli.drop import RATE_CHOICES, flexible_rod, rate_name
+from impactlab.cli.drop import flexible_rod
 from impactlab.cli.simulate_from import FROM_RULE, run_from
 from impactlab.cli.simulate_output import report_result
 from impactlab.dynamics import ImpactResult, simulate

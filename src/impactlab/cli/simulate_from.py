@@ -18,7 +18,7 @@ from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import Any
 
-from impactlab.cli._common import UserError, angle_quantity, quantity, velocity_input
+from impactlab.cli._common import UserError, angle_quantity, quantity, rate_name, velocity_input
 from impactlab.dynamics import ImpactResult
 from impactlab.dynamics.drop_result import DropResult
 from impactlab.materials import get_material
@@ -36,9 +36,11 @@ FROM_RULE = (
     "--damping, --flexible) and --config are refused: the body is the recorded one."
 )
 
-#: Options (keys of ``impactlab simulate``) that make the body: refused with ``--from``.
+#: Options (keys of ``impactlab simulate``, and ``drop``'s ``rigid``) that make the body:
+#: refused with ``--from``.
 FROM_BODY_OPTIONS = (
     "body",
+    "rigid",
     "material",
     "radius",
     "length",
@@ -125,8 +127,6 @@ def _kinematics(given: Mapping[str, Any], recorded: Mapping[str, Any]) -> dict[s
 
 def _options(given: Mapping[str, Any], drop: bool) -> dict[str, Any]:
     """The changed --constant-angle (a rigid impact) or --rate (a drop)."""
-    from impactlab.cli.drop import rate_name  # lazy: the drop command's parser
-
     changes: dict[str, Any] = {}
     if given.get("constant_angle"):
         if drop:
@@ -173,17 +173,26 @@ def from_changes(
     return changes | _options(given, function == SIMULATE_DROP)
 
 
-def run_from(path: Path, given: Mapping[str, Any] | None = None) -> ImpactResult | DropResult:
+def run_from(
+    path: Path, given: Mapping[str, Any] | None = None, *, drop_only: bool = False
+) -> ImpactResult | DropResult:
     """The impact or drop recorded in ``path`` (``impactlab simulate --json`` or ``impactlab
     drop --json`` output, an ``impact_result.json`` or a result's ``to_dict()``) simulated
-    again, with the command-line options ``given`` on top (:func:`from_changes`)."""
+    again, with the command-line options ``given`` on top (:func:`from_changes`);
+    ``drop_only`` (``impactlab drop --from``): UserError for a record of a rigid impact."""
     from impactlab.dynamics import rerun  # lazy: a fast CLI start
     from impactlab.dynamics.provenance import SIMULATE
 
     record = load_record(path)
     function, recorded = _recorded(record, path)
+    flexible = type(recorded["body"]).__name__ == "FlexibleRod"
+    if drop_only and function == SIMULATE and not flexible:
+        raise UserError(
+            f"--from {str(path)!r} records an impact of impactlab simulate, not a drop: run it "
+            "with 'impactlab simulate --from'"
+        )
     changes = from_changes(given or {}, function, recorded)
-    if function == SIMULATE and type(recorded["body"]).__name__ == "FlexibleRod":
+    if function == SIMULATE and flexible:
         changes.setdefault("history", False)  # a FlexibleRod recorded by simulate
     try:
         return rerun(record, **changes)
