@@ -92,7 +92,7 @@ _MESSAGES: dict[ResultFlag, str] = {
     ),
     ResultFlag.LAW_EXTRAPOLATED: (
         "law extrapolated: the largest interference exceeded {what}{how_far}, so {so}; the "
-        "outputs are not validated there (see the docs' Contact laws > Fitted ranges)"
+        "outputs are not validated there (see the docs' Contact laws > Verified ranges)"
     ),
 }
 
@@ -114,6 +114,20 @@ _EXTRAPOLATION_TEXT = {
         "the limit of the contact law's theory (first yield)",
         "limit",
         "the law is used where its theory no longer holds",
+    ),
+    "verified": (
+        "the upper end of the contact law's verified range (FE, 10 % force / 0.05 "
+        "delta_r/delta_max, for the pair's E*/S_y)",
+        "verified up to",
+        "the law is used where it was not verified against the FE reference (it may differ "
+        "from FE by more than those tolerances)",
+    ),
+    "unverified": (
+        "the stand-in upper end of the contact law's range (the pair's E*/S_y lies outside "
+        "the span of the FE cases, so no verified range applies)",
+        "stand-in limit",
+        "the law is probably used beyond its validated range (the stand-in is not verified "
+        "against FE for this pair)",
     ),
 }
 _UNKNOWN_STATUS = (
@@ -143,7 +157,8 @@ def messages(
     order; ``()`` for none. Unknown bits raise ``ValueError``. ``extrapolation`` = (max
     delta/delta_c, the law's upper end), when known, says how far LAW_EXTRAPOLATED went
     (``impactlab.contact.ranges.extrapolation``); ``status``, the range's
-    ``LawRange.status`` ("confirmed", "provisional", "theory"), words that sentence."""
+    status (``contact.ranges.range_status``: "verified", "unverified", "provisional",
+    "theory", ...), words that sentence."""
     try:
         value = int(flags)
     except (TypeError, ValueError):

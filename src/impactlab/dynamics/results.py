@@ -149,7 +149,7 @@ class ImpactResult:
     def warnings(self) -> tuple[str, ...]:
         """One explanatory sentence per flag (``impactlab.flags.messages``); ``()`` if none."""
         how_far = extrapolation(self._law_id, self._law_params, self.delta_max)
-        status = range_status(self._law_id)
+        status = range_status(self._law_id, self._law_params)
         return messages(self.flags, extrapolation=how_far, status=status)
 
     @property
