@@ -12,7 +12,7 @@ from typing import Any
 
 import pandas as pd
 
-from impactlab.contact.ranges import RANGES
+from impactlab.contact.ranges import RANGES, law_range
 from impactlab.contact.verified_ranges import tolerance_text
 from impactlab.materials import ContactPair
 from impactlab.paper import data as D
@@ -192,11 +192,11 @@ _PAPER_RATIO = _PAPER_PAIR.E_star / _PAPER_PAIR.yield_strength
 
 def _verified_words(law: str) -> str:
     """``verified up to 1 delta_c at E*/S_y = 360`` (the paper's pair), or the stand-in."""
-    cases = [c for c in RANGES[law].verified if abs(c.e_star_over_sy / _PAPER_RATIO - 1) < 1e-3]
+    cases = [c for c in law_range(law).verified if abs(c.e_star_over_sy / _PAPER_RATIO - 1) < 1e-3]
     if cases:
         c = cases[0]
         return f"verified up to {c.upper:.3g} delta_c at E*/S_y = {c.e_star_over_sy:.0f}"
-    return f"{RANGES[law].stand_in_text} (unverified)"
+    return f"{law_range(law).stand_in_text} (unverified)"
 
 
 def _sim_vs_experiment(simtab: pd.DataFrame, exp: pd.DataFrame) -> list[Block]:
