@@ -29,7 +29,7 @@ __all__ = [
 
 FLAG_ENERGY_GAIN = 1  #: bit of ``ResultFlag.ENERGY_GAIN`` (read by the compiled core)
 FLAG_GRAVITY_DOMINATED = 2  #: bit of ``ResultFlag.GRAVITY_DOMINATED``
-FLAG_LAW_EXTRAPOLATED = 4  #: bit of ``ResultFlag.LAW_EXTRAPOLATED`` (the law's fitted range)
+FLAG_LAW_EXTRAPOLATED = 4  #: bit of ``ResultFlag.LAW_EXTRAPOLATED`` (the law's verified range)
 FLAG_OTHER_END = 8  #: bit of ``ResultFlag.OTHER_END`` (the flexible drop only)
 #: Flags that caution rather than invalidate: the impact measures stay readable (``ok`` stays
 #: True). LAW_EXTRAPOLATED: the law is used beyond its (fitted, provisional or theoretical)
@@ -62,8 +62,9 @@ class ResultFlag(enum.IntFlag):
     #: rests, rocks or tips over rather than bounces, and e and the other impact measures are
     #: not meaningful
     GRAVITY_DOMINATED = FLAG_GRAVITY_DOMINATED
-    #: the largest interference exceeded the upper end of the contact law's fitted range
-    #: (``impactlab.contact.ranges``): the law is extrapolated (advisory: ``ADVISORY_FLAGS``)
+    #: the largest interference exceeded the upper end of the contact law's range (verified
+    #: against FE, else a stand-in; ``impactlab.contact.ranges``): the law is extrapolated
+    #: (advisory: ``ADVISORY_FLAGS``)
     LAW_EXTRAPOLATED = FLAG_LAW_EXTRAPOLATED
     #: a drop (``simulate_drop``) whose sequence is not one bounce of the tip: the other end
     #: touched the flat within it (``stop="flight"``), or the tip still approaches the flat

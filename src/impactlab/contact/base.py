@@ -172,12 +172,14 @@ class ContactModel:
 
     @property
     def fitted_range(self) -> LawRange:
-        """The law's fitted range, its source and confirmation status (``contact.ranges``)."""
+        """The law's range: its stand-in with source and status, and its verified range per FE
+        case (``LawRange.verified``; ``contact.ranges``)."""
         return law_range(self.name)
 
     def extrapolated(self, delta_max: Any) -> Any:
-        """True where an impact reaching ``delta_max`` [m] leaves the fitted range (a bool, or a
-        bool array for an array): ``contact.ranges.law_extrapolated``."""
+        """True where an impact reaching ``delta_max`` [m] leaves the law's range (verified
+        against FE, else its stand-in; a bool, or a bool array for an array):
+        ``contact.ranges.law_extrapolated``."""
         return law_extrapolated(self, delta_max)
 
     def in_calibrated_range(self, delta: Any) -> bool:
@@ -332,7 +334,7 @@ class ContactLaw(ABC):
 
     @property
     def calibrated_range(self) -> str:
-        """The fitted range in one line (``contact.ranges.LawRange.text``)."""
+        """The verified range and the stand-in in one line (``contact.ranges.LawRange.text``)."""
         return law_range(self.law).text
 
     def __repr__(self) -> str:

@@ -299,7 +299,8 @@ class DropResult:
 
     @property
     def extrapolated(self) -> bool:
-        """True when a contact of the drop left the law's fitted range."""
+        """True when a contact of the drop left the law's range (verified against
+        FE, else its stand-in)."""
         return ResultFlag.LAW_EXTRAPOLATED in self.flags
 
     @property

@@ -143,7 +143,7 @@ class ImpactResult:
         doc="delta_max / delta_c of the impact's law and pair (NaN if unknown; contact.ranges).",
     )
     extrapolated = property(lambda self: ResultFlag.LAW_EXTRAPOLATED in self.flags,
-                            doc="True when the impact left the law's fitted range.")  # fmt: skip
+                            doc="True when the impact left the law's range.")  # fmt: skip
 
     @property
     def warnings(self) -> tuple[str, ...]:

@@ -98,7 +98,7 @@ def sim_value(res: Any, q: str) -> float:
     }[q]
 
 
-#: The mark of a simulated row whose impact left its law's fitted range (LAW_EXTRAPOLATED).
+#: The mark of a simulated row whose impact left its law's verified range (LAW_EXTRAPOLATED).
 EXTRAPOLATED_MARK = "\u2020"
 
 
