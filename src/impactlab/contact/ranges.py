@@ -307,11 +307,29 @@ def _jg_delta_c(p: np.ndarray) -> Any:
     return (np.pi * c * p[..., k.P_SY] / (2.0 * p[..., k.P_ESTAR])) ** 2 * p[..., k.P_R]
 
 
+#: (law_id, one parameter vector's bytes) -> _verified's answer: a result's flag, ratio and
+#: warning each ask for it, always for the same few models.
+_ONE_PAIR: dict[tuple[int, bytes], tuple[np.ndarray, bool]] = {}
+
+
 def _verified(law_id: int, params: Any) -> tuple[np.ndarray, bool]:
     """(the verified upper end in the law's own ratio delta / delta_ref, NaN where the pair's
     E*/S_y is outside the FE span; whether the law has a verified range at all)."""
-    name = _NAME_BY_ID.get(int(law_id), "")
     p = np.asarray(params, dtype=np.float64)
+    if p.ndim == 1:
+        key = (int(law_id), p[: k.NPARAM].tobytes())
+        hit = _ONE_PAIR.get(key)
+        if hit is None:
+            if len(_ONE_PAIR) >= 256:
+                _ONE_PAIR.clear()
+            hit = _ONE_PAIR[key] = _measure_verified(int(law_id), p[: k.NPARAM])
+        return hit
+    return _measure_verified(int(law_id), p)
+
+
+def _measure_verified(law_id: int, p: np.ndarray) -> tuple[np.ndarray, bool]:
+    """``_verified`` computed (vectorised over rows of ``p``)."""
+    name = _NAME_BY_ID.get(law_id, "")
     if not verified_cases(name):
         return np.full(p.shape[:-1], np.nan), False
     with np.errstate(divide="ignore", invalid="ignore"):
