@@ -29,7 +29,7 @@ __all__ = [
 
 FLAG_ENERGY_GAIN = 1  #: bit of ``ResultFlag.ENERGY_GAIN`` (read by the compiled core)
 FLAG_GRAVITY_DOMINATED = 2  #: bit of ``ResultFlag.GRAVITY_DOMINATED``
-FLAG_LAW_EXTRAPOLATED = 4  #: bit of ``ResultFlag.LAW_EXTRAPOLATED`` (the law's fitted range)
+FLAG_LAW_EXTRAPOLATED = 4  #: bit of ``ResultFlag.LAW_EXTRAPOLATED`` (the law's verified range)
 FLAG_OTHER_END = 8  #: bit of ``ResultFlag.OTHER_END`` (the flexible drop only)
 #: Flags that caution rather than invalidate: the impact measures stay readable (``ok`` stays
 #: True). LAW_EXTRAPOLATED: the law is used beyond its (fitted, provisional or theoretical)
@@ -62,8 +62,9 @@ class ResultFlag(enum.IntFlag):
     #: rests, rocks or tips over rather than bounces, and e and the other impact measures are
     #: not meaningful
     GRAVITY_DOMINATED = FLAG_GRAVITY_DOMINATED
-    #: the largest interference exceeded the upper end of the contact law's fitted range
-    #: (``impactlab.contact.ranges``): the law is extrapolated (advisory: ``ADVISORY_FLAGS``)
+    #: the largest interference exceeded the upper end of the contact law's range (verified
+    #: against FE, else a stand-in; ``impactlab.contact.ranges``): the law is extrapolated
+    #: (advisory: ``ADVISORY_FLAGS``)
     LAW_EXTRAPOLATED = FLAG_LAW_EXTRAPOLATED
     #: a drop (``simulate_drop``) whose sequence is not one bounce of the tip: the other end
     #: touched the flat within it (``stop="flight"``), or the tip still approaches the flat
@@ -92,7 +93,7 @@ _MESSAGES: dict[ResultFlag, str] = {
     ),
     ResultFlag.LAW_EXTRAPOLATED: (
         "law extrapolated: the largest interference exceeded {what}{how_far}, so {so}; the "
-        "outputs are not validated there (see the docs' Contact laws > Fitted ranges)"
+        "outputs are not validated there (see the docs' Contact laws > Verified ranges)"
     ),
 }
 
@@ -114,6 +115,20 @@ _EXTRAPOLATION_TEXT = {
         "the limit of the contact law's theory (first yield)",
         "limit",
         "the law is used where its theory no longer holds",
+    ),
+    "verified": (
+        "the upper end of the contact law's verified range (FE, 10 % force / 0.05 "
+        "delta_r/delta_max, for the pair's E*/S_y)",
+        "verified up to",
+        "the law is used where it was not verified against the FE reference (it may differ "
+        "from FE by more than those tolerances)",
+    ),
+    "unverified": (
+        "the stand-in upper end of the contact law's range (the pair's E*/S_y lies outside "
+        "the span of the FE cases, so no verified range applies)",
+        "stand-in limit",
+        "the law is probably used beyond its validated range (the stand-in is not verified "
+        "against FE for this pair)",
     ),
 }
 _UNKNOWN_STATUS = (
@@ -143,7 +158,8 @@ def messages(
     order; ``()`` for none. Unknown bits raise ``ValueError``. ``extrapolation`` = (max
     delta/delta_c, the law's upper end), when known, says how far LAW_EXTRAPOLATED went
     (``impactlab.contact.ranges.extrapolation``); ``status``, the range's
-    ``LawRange.status`` ("confirmed", "provisional", "theory"), words that sentence."""
+    status (``contact.ranges.range_status``: "verified", "unverified", "provisional",
+    "theory", ...), words that sentence."""
     try:
         value = int(flags)
     except (TypeError, ValueError):

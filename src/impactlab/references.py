@@ -247,6 +247,17 @@ _ALL: tuple[Reference, ...] = (
 #: Material data: handbooks and data sheets (``impactlab.materials.library``).
 _MATERIAL_DATA: tuple[Reference, ...] = (
     Reference(
+        "johnson-cook-1983",
+        "G. R. Johnson, W. H. Cook, A constitutive model and data for metals subjected to "
+        "large strains, high strain rates and high temperatures, Proc. 7th Int. Symp. on "
+        "Ballistics, The Hague (1983) 541-547; Table 1: 1006 steel, A = 350 MPa, B = 275 MPa, "
+        "n = 0.36, C = 0.022, m = 1.00",
+        note="proceedings paper, no DOI; pages as commonly cited, not confirmed here; the "
+        "1006-steel constants confirmed against a secondary source that reproduces their table "
+        "(table number not confirmed); no DOI-bearing hardening law for AISI 1010 itself was "
+        "found in the sources searched",
+    ),
+    Reference(
         "matweb-al6061-t6",
         "MatWeb, data sheet 'Aluminum 6061-T6; 6061-T651' (values of the Aluminum Association "
         "and Alcoa)",

@@ -1,8 +1,10 @@
-"""The laws' fitted ranges (impactlab.contact.ranges) and the reference
-registry: every law has a range with a source and a status, every DOI is well-formed."""
+"""The laws' ranges (impactlab.contact.ranges): the verified range measured against FE for the
+pair's E*/S_y, the stand-in outside the FE cases' span; and the reference registry: every law
+has a range with a source and a status, every DOI is well-formed."""
 
 from __future__ import annotations
 
+import itertools
 import math
 
 import numpy as np
@@ -21,8 +23,17 @@ from impactlab.contact.ranges import (
     extrapolation_flags,
     law_extrapolated,
     law_range,
+    range_limit,
+    range_status,
+)
+from impactlab.contact.verified_ranges import (
+    e_star_over_sy_span,
+    verified_cases,
+    verified_laws,
+    verified_upper,
 )
 from impactlab.flags import FLAG_LAW_EXTRAPOLATED
+from impactlab.materials import AISI_201, ContactPair, Material
 from impactlab.references import DOI_PATTERN, REFERENCES, Reference
 
 
@@ -76,8 +87,8 @@ def test_critical_interference_per_law(paper_models: dict[str, ContactModel]) ->
 
 
 def test_calibrated_max_follows_the_range(paper_models: dict[str, ContactModel]) -> None:
-    for name, model in paper_models.items():
-        ratio = law_range(name).delta_ratio_max
+    for model in paper_models.values():
+        ratio = range_limit(model.law_id, model.params[: k.NPARAM])
         expected = min(ratio * model.critical_interference, model.max_interference)
         if math.isinf(ratio):  # no fitted range: no calibrated end either
             expected = math.inf
@@ -87,16 +98,24 @@ def test_calibrated_max_follows_the_range(paper_models: dict[str, ContactModel])
 def test_extrapolation_flag_is_strictly_beyond_the_range(
     paper_models: dict[str, ContactModel],
 ) -> None:
+    """The paper's pair (E*/S_y = 360, a shipped FE case): Ghaednia's law is verified up to
+    1 delta_c (its delta_r / delta_max leaves FE's by more than 0.05 at 1.5 delta_c)."""
     m = paper_models["ghaednia"]
     dc = m.critical_interference
-    d = np.array([0.5 * dc, 110.0 * dc * (1 - 1e-12), 110.0 * dc * (1 + 1e-12), 300 * dc, np.nan])
+    top = range_limit(m.law_id, m.params)
+    assert top == pytest.approx(1.0, rel=1e-12)
+    d = np.array([0.5 * dc, top * dc * (1 - 1e-12), top * dc * (1 + 1e-12), 300 * dc, np.nan])
     np.testing.assert_array_equal(law_extrapolated(m, d), [False, False, True, True, False])
-    assert law_extrapolated(m, 300 * dc) is True and law_extrapolated(m, dc) is False
+    assert law_extrapolated(m, 300 * dc) is True and law_extrapolated(m, 0.9 * dc) is False
     assert m.extrapolated(300 * dc) is True
     flags = extrapolation_flags(m.law_id, m.params, d)
     np.testing.assert_array_equal(flags, [0, 0, 4, 4, 0])
     assert delta_ratio(m.law_id, m.params, 300 * dc) == pytest.approx(300.0)
-    assert extrapolation(m.law_id, m.params, 300 * dc) == (pytest.approx(300.0), 110.0)
+    assert extrapolation(m.law_id, m.params, 300 * dc) == (
+        pytest.approx(300.0),
+        pytest.approx(1.0, rel=1e-12),
+    )
+    assert range_status(m.law_id, m.params) == "verified"
     # an unknown law or no parameters: nothing to say
     assert extrapolation_flags(-1, None, 1.0) == 0
     r, lim = extrapolation(-1, None, 1.0)
@@ -104,13 +123,54 @@ def test_extrapolation_flag_is_strictly_beyond_the_range(
 
 
 @pytest.mark.parametrize("name", ["brake", "thornton"])
-def test_analytical_laws_are_never_extrapolated(
+def test_analytical_laws_are_verified_too_and_never_flagged_outside_the_span(
     name: str, paper_models: dict[str, ContactModel]
 ) -> None:
+    """Brake and Thornton have no fitted range (stand-in: never extrapolated) but a verified
+    one: 1.5-2 delta_c for the paper's pair; a pair outside the FE span keeps the stand-in."""
     m = paper_models[name]
-    assert not law_extrapolated(m, 0.5 * m.max_interference)
-    assert extrapolation_flags(m.law_id, m.params, 0.5 * m.max_interference) == 0
+    dc = m.critical_interference
+    assert 1.0 <= range_limit(m.law_id, m.params) <= 2.5
+    assert law_extrapolated(m, 0.5 * m.max_interference)
+    assert extrapolation_flags(m.law_id, m.params, 0.5 * dc) == 0
+    soft = _soft_pair_model(name)
+    assert range_status(soft.law_id, soft.params) == "unverified"
+    assert not law_extrapolated(soft, 0.5 * soft.max_interference)
     assert FLAG_LAW_EXTRAPOLATED == 4
+
+
+def _soft_pair_model(name: str) -> ContactModel:
+    """``name`` built for the paper's sphere on a soft flat (S_y 100 MPa: E*/S_y about 1100,
+    beyond the FE cases' 81-360)."""
+    flat = Material("soft steel", 200e9, 0.3, 100e6, 30.0)
+    return get_law(name).build(ContactPair(AISI_201, flat), 8.8e-3)
+
+
+@pytest.mark.parametrize("name", ["ghaednia", "jackson-green", "kogut-komvopoulos"])
+def test_unverified_pair_keeps_the_provisional_stand_in(name: str) -> None:
+    m = _soft_pair_model(name)
+    ratio = m.params[k.P_ESTAR] / m.params[k.P_SY]
+    assert ratio > e_star_over_sy_span()[1]
+    assert range_status(m.law_id, m.params) == "unverified"
+    assert range_limit(m.law_id, m.params) == 110.0
+    dc = m.critical_interference
+    assert not law_extrapolated(m, 100 * dc) and law_extrapolated(m, 120 * dc)
+
+
+def test_between_cases_the_smaller_verified_range_holds() -> None:
+    """E*/S_y between two shipped cases: the smaller of their verified ranges (conservative)."""
+    for law in verified_laws():
+        cases = verified_cases(law)
+        for a, b in itertools.pairwise(cases):
+            mid = 0.5 * (a.e_star_over_sy + b.e_star_over_sy)
+            assert verified_upper(law, mid) == min(a.upper, b.upper)
+            assert verified_upper(law, a.e_star_over_sy) == a.upper
+        lo, hi = e_star_over_sy_span()
+        assert math.isnan(verified_upper(law, 0.9 * lo)) and math.isnan(
+            verified_upper(law, 1.1 * hi)
+        )
+    assert math.isnan(verified_upper("tabulated", 200.0))
+    assert range_status(k.GHAEDNIA) == "provisional"  # without a pair: the stand-in's status
 
 
 def test_every_doi_in_the_registry_is_well_formed() -> None:

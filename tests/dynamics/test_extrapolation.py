@@ -1,4 +1,5 @@
-"""A result says whether its impact stayed inside the contact law's fitted range:
+"""A result says whether its impact stayed inside the contact law's range (verified against FE
+for the pair's E*/S_y, else the stand-in):
 ``ImpactResult.max_delta_ratio``, ``.extrapolated``, the flag ``LAW_EXTRAPOLATED`` with its
 sentence (how far it went), on single results, batches (``run_arrays``' ``flags`` column) and
 sweep stores. Outputs beyond the range stay finite and
@@ -19,12 +20,15 @@ from impactlab.dynamics import OUTPUT_FIELDS, simulate, simulate_batch
 from impactlab.dynamics.batch import run_arrays
 from impactlab.flags import ADVISORY_FLAGS, FLAG_LAW_EXTRAPOLATED, ResultFlag, messages
 from impactlab.friction import FRICTION_IDS
-from impactlab.materials import AISI_201, AISI_1010, ContactPair
+from impactlab.materials import AISI_201, AISI_1010, ContactPair, Material
 from impactlab.sweep import Study, run_sweep
 
 PAPER = {"law": "ghaednia", "friction": "coulomb", "mu": 0.2, "angle": math.radians(20)}
-#: the paper's 20-degree impact at 1.41 m/s, and a gentle one (delta_max/delta_c about 45)
-FAST, GENTLE = (0.0, -1.41), (0.0, -0.3)
+#: the paper's 20-degree impact at 1.41 m/s, a gentle one (delta_max/delta_c about 45) and a
+#: tiny one inside the verified range (below 1 delta_c; without gravity, which would dominate)
+FAST, GENTLE, TINY = (0.0, -1.41), (0.0, -0.3), (0.0, -0.001)
+#: a flat whose E*/S_y (about 440) lies beyond the FE cases' span (81-360): unverified
+SOFT_FLAT = Material("soft low-carbon steel", 200e9, 0.3, 250e6, 90.0)
 
 
 def _delta_c() -> float:
@@ -39,12 +43,13 @@ def test_paper_impact_is_flagged_with_how_far_it_went() -> None:
     r = simulate(PAPER_ROD, velocity=FAST, **PAPER)
     ratio = r.delta_max / _delta_c()
     assert r.max_delta_ratio == pytest.approx(ratio, rel=1e-9)
-    assert ratio > law_range("ghaednia").delta_ratio_max  # beyond the (provisional) 110
+    assert ratio > law_range("ghaednia").delta_ratio_max  # beyond even the stand-in 110
     assert r.extrapolated and ResultFlag.LAW_EXTRAPOLATED in r.flags
     assert r.ok  # advisory: the measures stay readable
     (text,) = r.warnings
     assert text.startswith("law extrapolated:")
-    assert f"max delta/delta_c = {ratio:.4g}, provisional limit 110" in text
+    assert f"max delta/delta_c = {ratio:.4g}, verified up to 1)" in text
+    assert "FE, 10 % force / 0.05 delta_r/delta_max" in text
     assert "fitted up to" not in text and "energy-consistent" not in text
     assert "warning" in str(r) and "law extrapolated" in str(r)
     d = r.to_dict()
@@ -59,16 +64,35 @@ def test_outputs_beyond_the_range_are_finite_and_energy_consistent() -> None:
     assert r.energy_dissipated > 0.0  # no energy gain beyond the range
 
 
-def test_gentle_impact_is_not_flagged() -> None:
-    r = simulate(PAPER_ROD, velocity=GENTLE, **PAPER)
-    assert 1.0 < r.max_delta_ratio < law_range("ghaednia").delta_ratio_max
+def test_impact_inside_the_verified_range_is_not_flagged() -> None:
+    r = simulate(PAPER_ROD, velocity=TINY, gravity=False, **PAPER)
+    assert 0.1 < r.max_delta_ratio < 1.0  # Ghaednia's law is verified to 1 delta_c here
     assert not r.extrapolated and r.flags == ResultFlag.NONE and r.warnings == ()
 
 
+def test_gentle_impact_is_flagged_by_the_verified_range() -> None:
+    """45 delta_c: inside the former stand-in (110) but beyond the verified range (1)."""
+    r = simulate(PAPER_ROD, velocity=GENTLE, **PAPER)
+    assert 1.0 < r.max_delta_ratio < law_range("ghaednia").delta_ratio_max
+    assert r.extrapolated and r.ok
+
+
+def test_unverified_pair_keeps_the_stand_in_and_says_so() -> None:
+    r = simulate(PAPER_ROD, SOFT_FLAT, velocity=GENTLE, **PAPER)
+    assert 1.0 < r.max_delta_ratio < 110.0 and not r.extrapolated
+    fast = simulate(PAPER_ROD, SOFT_FLAT, velocity=FAST, **PAPER)
+    assert fast.max_delta_ratio > 110.0 and fast.extrapolated
+    (text,) = fast.warnings
+    assert "stand-in limit 110)" in text and "outside the span of the FE cases" in text
+
+
 @pytest.mark.parametrize("law", ["brake", "thornton"])
-def test_analytical_laws_are_not_flagged(law: str) -> None:
+def test_analytical_laws_are_flagged_beyond_their_verified_range(law: str) -> None:
+    """No fitted range (stand-in: never extrapolated), but a verified one: 1.5-2 delta_c."""
     r = simulate(PAPER_ROD, velocity=FAST, **(PAPER | {"law": law}))
-    assert r.max_delta_ratio > 100.0 and not r.extrapolated
+    assert r.max_delta_ratio > 100.0 and r.extrapolated
+    unverified = simulate(PAPER_ROD, SOFT_FLAT, velocity=FAST, **(PAPER | {"law": law}))
+    assert not unverified.extrapolated
 
 
 def test_hertz_beyond_first_yield_is_flagged() -> None:
@@ -81,7 +105,7 @@ def test_hertz_beyond_first_yield_is_flagged() -> None:
 def test_batch_and_run_arrays_carry_the_flag() -> None:
     b = simulate_batch(
         PAPER_ROD, law="ghaednia", friction="coulomb", mu=0.2, angle=PAPER["angle"],
-        vy=[-1.41, -0.3, -1.41, -1.41], vx=[0.0, 0.0, 0.0, math.nan],
+        vy=[-1.41, -0.001, -1.41, -1.41], vx=[0.0, 0.0, 0.0, math.nan], gravity=False,
     )  # fmt: skip
     np.testing.assert_array_equal(b.flags, [4, 0, 4, 0])
     assert np.isnan(b["flags"][3])  # a failed case has no outputs
@@ -90,12 +114,13 @@ def test_batch_and_run_arrays_carry_the_flag() -> None:
     model = get_law("ghaednia").build(ContactPair(AISI_201, AISI_1010), PAPER_ROD.tip_radius)
     np.testing.assert_array_equal(law_extrapolated(model, b.delta_max[:3]), [True, False, True])
     # run_arrays directly, one parameter row for all cases and one per case
-    init = np.array([[PAPER["angle"], 0.0, -1.41, 0.0], [PAPER["angle"], 0.0, -0.3, 0.0]])
+    init = np.array([[PAPER["angle"], 0.0, -1.41, 0.0], [PAPER["angle"], 0.0, -0.001, 0.0]])
     body = PAPER_ROD.to_params(AISI_1010)
     for lp in (model.params, np.stack([model.params] * 2)):
         out, st = run_arrays(model.law_id, FRICTION_IDS["coulomb"], lp, body, init, 0.2)
         assert list(st) == [0, 0]
-        np.testing.assert_array_equal(out[:, OUTPUT_FIELDS.index("flags")], [4.0, 0.0])
+        flags = out[:, OUTPUT_FIELDS.index("flags")].astype(np.int64)
+        np.testing.assert_array_equal(flags & FLAG_LAW_EXTRAPOLATED, [4, 0])
 
 
 def test_tiny_sweep_stores_the_flag(tmp_path: Path) -> None:
@@ -103,7 +128,8 @@ def test_tiny_sweep_stores_the_flag(tmp_path: Path) -> None:
         {
             "study": {"name": "range", "chunk_size": 2},
             "fixed": {"law": "ghaednia", "angle": "20 deg", "mu": 0.2},
-            "grid": {"vy": [-1.41, -0.3]},
+            "grid": {"vy": [-1.41, -0.001]},
+            "engine": {"gravity": False},
             "outputs": {"keep": ["e", "delta_max"]},
         }
     )
@@ -122,13 +148,15 @@ def test_flag_message_and_advisory_mask() -> None:
     assert messages(4, extrapolation=(math.nan, math.inf)) == (generic,)
 
 
-@pytest.mark.parametrize("status", [None, "confirmed", "provisional", "theory"])
+@pytest.mark.parametrize(
+    "status", [None, "confirmed", "provisional", "theory", "verified", "unverified"]
+)
 def test_extrapolation_message_depends_on_the_range_status(status: str | None) -> None:
     """QA: the sentence never claims energy consistency, points to the docs and words the limit
     after the range's status (provisional: a stand-in; theory: first yield, not fitted)."""
     (text,) = messages(FLAG_LAW_EXTRAPOLATED, extrapolation=(5.0, 1.0), status=status)
     assert "energy-consistent" not in text and "impactlab.contact.ranges" not in text
-    assert "see the docs' Contact laws > Fitted ranges" in text
+    assert "see the docs' Contact laws > Verified ranges" in text
     if status == "provisional":
         assert "provisional limit 1)" in text and "stand-in" in text
         assert "fitted up to" not in text
@@ -136,13 +164,22 @@ def test_extrapolation_message_depends_on_the_range_status(status: str | None) -
         assert "first yield" in text and "fitted" not in text
     elif status == "confirmed":
         assert "fitted up to 1)" in text
+    elif status == "verified":
+        assert "verified up to 1)" in text and "FE" in text
+    elif status == "unverified":
+        assert "stand-in limit 1)" in text and "outside the span of the FE cases" in text
 
 
-def test_hertz_warning_names_first_yield_not_a_fit() -> None:
+def test_hertz_warning_names_the_verified_range_or_first_yield() -> None:
+    """Hertz for the paper's pair: verified against FE to 1.5 delta_c; for a pair outside the
+    FE span its stand-in, first yield (never 'fitted')."""
     r = simulate(PAPER_ROD, velocity=FAST, **{**PAPER, "law": "hertz"})
     assert r.extrapolated
     (text,) = [w for w in r.warnings if w.startswith("law extrapolated")]
-    assert "first yield" in text and "fitted" not in text
+    assert "verified up to 1.5)" in text and "fitted" not in text
+    soft = simulate(PAPER_ROD, SOFT_FLAT, velocity=FAST, **{**PAPER, "law": "hertz"})
+    (text,) = [w for w in soft.warnings if w.startswith("law extrapolated")]
+    assert "stand-in limit 1)" in text and "fitted" not in text
 
 
 def test_rigid_outputs_carry_max_delta_ratio() -> None:

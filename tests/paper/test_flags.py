@@ -41,10 +41,12 @@ def test_simulation_table_carries_flags(sims20):
     assert (g["flags"] == "LAW_EXTRAPOLATED").all()
     assert (g["max_delta_ratio"] > RANGES["ghaednia"].delta_ratio_max).all()
     assert (tab[tab["law"] == "kogut-komvopoulos"]["flags"] == "LAW_EXTRAPOLATED").all()
-    assert (tab[tab["law"] == "brake"]["flags"] == "").all()  # analytical: never flagged
-    assert count_extrapolated(tab) == (4, 6)
+    # Brake has no fitted range but a verified one (2 delta_c for the paper's pair): flagged
+    assert (tab[tab["law"] == "brake"]["flags"] == "LAW_EXTRAPOLATED").all()
+    assert count_extrapolated(tab) == (6, 6)
     assert extrapolation_line(tab) == (
-        "4 of 6 simulated impacts lie beyond their law's fitted range (provisional); see report"
+        "6 of 6 simulated impacts lie beyond their law's verified range "
+        "(FE, 10 % force / 0.05 delta_r/delta_max); see report"
     )
 
 
@@ -73,9 +75,11 @@ def test_report_marks_flagged_rows_and_explains(sims20):
     assert (shown.loc[~flagged, "law"] == tab.loc[~flagged, "law"]).all()
     assert _marked(pd.DataFrame({"law": ["x"]}), "law")["law"].tolist() == ["x"]
     note = _extrapolation_note(tab)
-    assert note.startswith(f"{EXTRAPOLATED_MARK} LAW_EXTRAPOLATED: 4 of 6")
-    assert "provisional" in note and "ghaednia: up to 110" in note
-    assert "kogut-komvopoulos" in note and "brake" not in note
+    assert note.startswith(f"{EXTRAPOLATED_MARK} LAW_EXTRAPOLATED: 6 of 6")
+    assert "FE, 10 % force / 0.05 delta_r/delta_max" in note
+    assert "ghaednia: verified up to 1 delta_c at E*/S_y = 360" in note
+    assert "kogut-komvopoulos: verified up to 0.3 delta_c" in note
+    assert "brake: verified up to 2 delta_c" in note
 
 
 def _fake_result(tmp_path, simulations):
@@ -115,7 +119,10 @@ def test_cli_prints_flag_count_and_wording(tmp_path, monkeypatch, capsys, simula
         "(explained in Section 5 of the report)"
     ) in out
     assert "(within the tolerances)" not in out
-    line = "1 of 2 simulated impacts lie beyond their law's fitted range (provisional); see report"
+    line = (
+        "1 of 2 simulated impacts lie beyond their law's verified range "
+        "(FE, 10 % force / 0.05 delta_r/delta_max); see report"
+    )
     assert (line in out) == simulate
     assert D.ANGLES_DEG  # the paper's angles are still the three of the tables
 

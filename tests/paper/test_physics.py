@@ -15,7 +15,9 @@ from impactlab.paper import data as D
 from impactlab.paper.analytic_rows import experimental_rows
 from impactlab.paper.physics import (
     CONFIGURATIONS,
+    FE_TABULATED,
     MEASURED,
+    ROWS,
     physics_inputs,
     physics_table,
     rigid_e_gravity_removed,
@@ -40,7 +42,7 @@ def table(runs):
 
 
 def test_table_has_the_angles_and_configurations(table):
-    names = [MEASURED, *(c.name for c in CONFIGURATIONS)]
+    names = [MEASURED, *(c.name for c in ROWS)]
     assert set(table["angle [deg]"]) == set(D.ANGLES_DEG)
     assert set(table["configuration"]) == set(names)
     assert len(table) == len(D.ANGLES_DEG) * len(names)
@@ -68,6 +70,8 @@ def test_flexible_rows_have_several_contacts(table):
     assert (rigid["contacts"] == 1).all()
     rated = table[table["configuration"] == "flexible rod + rate-dependent flat"]
     assert (rated["rate factor"] > 1.0).all()
+    fe = table[table["configuration"] == FE_TABULATED.name]
+    assert len(fe) == 3 and (fe["contacts"] > 1).all() and (fe["rate factor"] == 1.0).all()
 
 
 def test_nothing_tuned_the_inputs_are_the_papers(runs):
@@ -77,8 +81,9 @@ def test_nothing_tuned_the_inputs_are_the_papers(runs):
         assert args["mu"] == x.mu and args["angle"] == x.angle
         assert args["velocity"] == (0.0, x.v_i)
         assert args["law"] == "ghaednia" and args["friction"] == "coulomb"
-        for cfg in CONFIGURATIONS:
+        for cfg in ROWS:
             res = runs[(cfg.name, ang)]
+            assert res.law == ("tabulated" if cfg is FE_TABULATED else "ghaednia")
             assert res.mu == x.mu
             assert res.angle == x.angle
             assert tuple(res.velocity_in) == (0.0, x.v_i)
@@ -94,7 +99,7 @@ def test_nothing_tuned_the_inputs_are_the_papers(runs):
 
 
 def test_table_values_are_the_results(runs, table):
-    for cfg in CONFIGURATIONS:
+    for cfg in ROWS:
         for ang in D.ANGLES_DEG:
             res = runs[(cfg.name, ang)]
             row = table[(table["configuration"] == cfg.name) & (table["angle [deg]"] == ang)]
@@ -120,6 +125,19 @@ def test_section_and_figure(runs, table, tmp_path):
     assert any(isinstance(b, Table) for b in blocks)
     assert any(isinstance(b, Figure) for b in blocks)
     assert physics_section(None, {}, 11) == []
+    text = " ".join(getattr(b, "text", "") for b in blocks)
+    assert "FE-tabulated law of a strain-hardening flat" in text
+
+
+def test_fe_tabulated_row_uses_the_hardened_fe_curves_untuned():
+    """The FE-tabulated row: the law built from the shipped hardened case of the paper's pair
+    (fe/data/hardening), rate-independent, and not among the calibrated configurations."""
+    from impactlab.fe.tabulated import HARDENED_PAPER_CASE
+    from impactlab.paper.physics import _hardened_model
+
+    assert FE_TABULATED not in CONFIGURATIONS and FE_TABULATED.rate is None
+    model = _hardened_model(FlexibleRod.paper().tip_radius)
+    assert model.name == "tabulated" and HARDENED_PAPER_CASE in model.source
 
 
 def test_figure_needs_history(runs, tmp_path):

@@ -69,5 +69,5 @@ def fill_jackson_family(
         "switch_force": float(k.loading_force(k.GHAEDNIA, p, d_sw)),
         "published_jump": jump,
         "full_contact_interference": d_full,
-        "calibrated_max_interference": calibrated_max(law, dc, dlim),
+        "calibrated_max_interference": calibrated_max(law, dc, dlim, p),
     }

@@ -18,7 +18,13 @@ from impactlab.contact import kernel_arrays as ka
 from impactlab.contact import kernels as k
 from impactlab.contact.curve_table import has_curves
 from impactlab.contact.names import Law
-from impactlab.contact.ranges import LawRange, critical_interference, law_extrapolated, law_range
+from impactlab.contact.ranges import (
+    LawRange,
+    critical_interference,
+    law_extrapolated,
+    law_range,
+    range_limit,
+)
 from impactlab.materials import ContactPair
 from impactlab.references import Reference
 from impactlab.units import is_quantity
@@ -141,11 +147,22 @@ class ContactModel:
 
     @property
     def calibrated_max_interference(self) -> float:
-        """Upper end of the range the law was fitted or validated on [m] (advisory, inf if none).
+        """Upper end of the law's range [m] for this pair: verified against FE where the
+        pair's E*/S_y is covered, else the stand-in (advisory, inf if none;
+        ``contact.ranges.range_limit``, capped at ``max_interference``).
 
         Beyond it the law is extrapolated; callers may warn, but it is not an error.
         """
-        return float(self.details.get("calibrated_max_interference", math.inf))
+        if "calibrated_max_interference" in self.details:
+            return float(self.details["calibrated_max_interference"])
+        if not 0 <= self.law_id < k.N_LAWS:
+            return math.inf
+        ratio = float(range_limit(self.law_id, self.params[: k.NPARAM]))
+        return (
+            math.inf
+            if math.isinf(ratio)
+            else min(ratio * self.critical_interference, self.max_interference)
+        )
 
     @property
     def critical_interference(self) -> float:
@@ -155,12 +172,14 @@ class ContactModel:
 
     @property
     def fitted_range(self) -> LawRange:
-        """The law's fitted range, its source and confirmation status (``contact.ranges``)."""
+        """The law's range: its stand-in with source and status, and its verified range per FE
+        case (``LawRange.verified``; ``contact.ranges``)."""
         return law_range(self.name)
 
     def extrapolated(self, delta_max: Any) -> Any:
-        """True where an impact reaching ``delta_max`` [m] leaves the fitted range (a bool, or a
-        bool array for an array): ``contact.ranges.law_extrapolated``."""
+        """True where an impact reaching ``delta_max`` [m] leaves the law's range (verified
+        against FE, else its stand-in; a bool, or a bool array for an array):
+        ``contact.ranges.law_extrapolated``."""
         return law_extrapolated(self, delta_max)
 
     def in_calibrated_range(self, delta: Any) -> bool:
@@ -315,7 +334,7 @@ class ContactLaw(ABC):
 
     @property
     def calibrated_range(self) -> str:
-        """The fitted range in one line (``contact.ranges.LawRange.text``)."""
+        """The verified range and the stand-in in one line (``contact.ranges.LawRange.text``)."""
         return law_range(self.law).text
 
     def __repr__(self) -> str:

@@ -36,5 +36,5 @@ class Hertz(ContactLaw):
         return {
             "delta_c": dc,
             "F_c": fc,
-            "calibrated_max_interference": calibrated_max(self.law, dc, R),
+            "calibrated_max_interference": calibrated_max(self.law, dc, R, p),
         }

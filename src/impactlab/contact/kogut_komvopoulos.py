@@ -126,5 +126,5 @@ class KogutKomvopoulos(ContactLaw):
             "published_jump": jump,
             "residual_ratio": res,
             "pole_interference": d_pole,
-            "calibrated_max_interference": calibrated_max(self.law, dy, dlim),
+            "calibrated_max_interference": calibrated_max(self.law, dy, dlim, p),
         }

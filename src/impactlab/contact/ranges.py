@@ -1,7 +1,16 @@
-"""The range over which each contact law was fitted or validated: one table, sources, status.
+"""The range over which each contact law is verified against FE, or its stand-in: status, sources.
 
-A law fitted to finite-element (FEM) results holds over the interferences and materials of those
-results; beyond them it is extrapolated. Each :class:`LawRange` states
+**Verified range.** Every law but the tabulated one has a range measured against the shipped
+finite-element (CalculiX) reference curves (``impactlab.contact.verified_ranges``): the
+interference up to which it stays within 10 % of the FE loading force and 0.05 of its
+delta_r / delta_max, for the pair's E*/S_y (the shipped cases' own value at their E*/S_y, the
+smaller of the two neighbouring cases' between them). That is the range the engine's
+LAW_EXTRAPOLATED flag uses wherever the pair's E*/S_y lies within the span of the FE cases
+(status ``"verified"``). Outside that span the range is ``"unverified"``: the law's former
+stand-in below is kept, and the flag's message says so.
+
+**Stand-in** (outside the verified span, and for the tabulated law). Each :class:`LawRange`
+states
 
 - ``delta_ratio_max``: the upper end of the range as a ratio ``delta / delta_ref`` (``inf``: the
   source states no fitted range);
@@ -19,10 +28,11 @@ results; beyond them it is extrapolated. Each :class:`LawRange` states
   extrapolated);
 - ``source`` (what the number rests on) and ``reference_keys`` (``impactlab.references``).
 
-The engine compares the largest interference of an impact with ``delta_ratio_max`` (strictly
-greater: extrapolated) and sets ``impactlab.flags.ResultFlag.LAW_EXTRAPOLATED``; see
-:func:`extrapolation_flags` (vectorised, used by ``run_arrays``) and :func:`law_extrapolated`.
-What was searched and not found is listed in docs/laws/index.md ("Fitted ranges").
+The engine compares the largest interference of an impact with the upper end of the range
+(the verified one, else the stand-in ``delta_ratio_max``; strictly greater: extrapolated) and
+sets ``impactlab.flags.ResultFlag.LAW_EXTRAPOLATED``; see :func:`extrapolation_flags`
+(vectorised, used by ``run_arrays``) and :func:`law_extrapolated`. What was searched and not
+found for the stand-ins is listed in docs/laws/index.md ("Fitted ranges").
 """
 
 from __future__ import annotations
@@ -37,6 +47,13 @@ import numpy as np
 
 from impactlab.contact import kernels as k
 from impactlab.contact.names import Law
+from impactlab.contact.verified_ranges import (
+    VerifiedCase,
+    e_star_over_sy_span,
+    tolerance_text,
+    verified_cases,
+    verified_upper,
+)
 from impactlab.flags import FLAG_LAW_EXTRAPOLATED
 from impactlab.references import cite
 
@@ -62,6 +79,7 @@ __all__ = [
     "extrapolation_flags",
     "law_extrapolated",
     "law_range",
+    "range_limit",
     "range_status",
 ]
 
@@ -73,6 +91,9 @@ STATUSES: Mapping[str, str] = MappingProxyType(
         "theory": "limit of the theory itself",
         "analytical": "closed-form law, no fitted range",
         "tabulated": "interpolated data: the hard limit is the data's end, nothing beyond",
+        "verified": "measured against FE for the pair's E*/S_y (contact.verified_ranges)",
+        "unverified": "the pair's E*/S_y lies outside the span of the FE cases: the stand-in "
+        "range is kept",
     }
 )
 
@@ -116,12 +137,33 @@ class LawRange:
         return self.status == "confirmed"
 
     @property
-    def text(self) -> str:
-        """One line for people: ``delta <= 110 delta_c (provisional)``."""
+    def verified(self) -> tuple[VerifiedCase, ...]:
+        """The law's verified range per FE case (``()``: none; contact.verified_ranges)."""
+        return verified_cases(str(self.law))
+
+    @property
+    def stand_in_text(self) -> str:
+        """The stand-in in one line: ``delta <= 110 delta_c (provisional)``."""
         if math.isinf(self.delta_ratio_max):
             return f"no fitted range ({self.status}): never flagged as extrapolated"
         ref = self.delta_ref.split(" ")[0]
         return f"delta <= {self.delta_ratio_max:g} {ref} ({self.status})"
+
+    @property
+    def text(self) -> str:
+        """One line for people: the verified range per FE case and, outside their E*/S_y
+        span, the stand-in; only the stand-in for a law without a verified range."""
+        cases = self.verified
+        if not cases:
+            return self.stand_in_text
+        lo, hi = e_star_over_sy_span()
+        per_case = ", ".join(
+            f"{c.upper:.3g} delta_c at E*/S_y = {c.e_star_over_sy:.0f}" for c in cases
+        )
+        return (
+            f"verified range ({tolerance_text()}): delta <= {per_case} (between cases the "
+            f"smaller); E*/S_y outside {lo:.0f}-{hi:.0f} unverified: {self.stand_in_text}"
+        )
 
     def describe(self) -> dict[str, Any]:
         """Plain data (``impactlab laws``): JSON-ready, ``None`` for an unbounded ratio."""
@@ -135,6 +177,18 @@ class LawRange:
             "confirmed": self.confirmed,
             "source": self.source,
             "references": [r.doi or r.citation for r in cite(*self.reference_keys)],
+            "verified": [
+                {
+                    "case": c.case,
+                    "e_star_over_sy": c.e_star_over_sy,
+                    "delta_ratio_max": c.upper,
+                    "limited_by": c.limited_by,
+                    "first_failure_delta_ratio": c.first_failure
+                    if math.isfinite(c.first_failure)
+                    else None,
+                }
+                for c in self.verified
+            ],
             "text": self.text,
         }
 
@@ -216,6 +270,7 @@ _RATIO_BY_ID = np.full(k.N_LAWS, np.inf)
 for _r in _ALL:
     _RATIO_BY_ID[_r.law.law_id] = _r.delta_ratio_max
 _STATUS_BY_ID = {r.law.law_id: r.status for r in _ALL}
+_NAME_BY_ID = {r.law.law_id: str(r.law) for r in _ALL}
 
 
 def law_range(law: str | Law) -> LawRange:
@@ -228,11 +283,13 @@ def law_range(law: str | Law) -> LawRange:
         ) from None
 
 
-def calibrated_max(law: Law, delta_ref: float, hard_limit: float) -> float:
-    """Upper end of ``law``'s fitted range [m] for a pair whose reference interference is
-    ``delta_ref`` [m], capped at the law's hard limit (``inf`` for a law without one)."""
-    ratio = RANGES[law].delta_ratio_max
-    return math.inf if math.isinf(ratio) else min(ratio * delta_ref, hard_limit)
+def calibrated_max(law: Law, delta_ref: float, hard_limit: float, params: Any = None) -> float:
+    """Upper end of ``law``'s range [m] for a pair whose reference interference is
+    ``delta_ref`` [m], capped at the law's hard limit (``inf`` for a law without one): the
+    verified range for the pair of ``params`` (its parameter vector) where there is one, else
+    the stand-in."""
+    ratio = RANGES[law].delta_ratio_max if params is None else range_limit(law.law_id, params)
+    return math.inf if math.isinf(ratio) else min(float(ratio) * delta_ref, hard_limit)
 
 
 def critical_interference(law_id: int, params: Any) -> Any:
@@ -240,12 +297,54 @@ def critical_interference(law_id: int, params: Any) -> Any:
     ``params`` (``(NPARAM,)``: a float; ``(N, NPARAM)``: an array): ``p[P_DY]``, for Hertz the
     Jackson-Green ``delta_c`` of the pair (from ``P_ESTAR``, ``P_R``, ``P_SY``, ``P_NU``)."""
     p = np.asarray(params, dtype=np.float64)
-    if int(law_id) == k.HERTZ:
-        c = 1.295 * np.exp(0.736 * p[..., k.P_NU])
-        ref = (np.pi * c * p[..., k.P_SY] / (2.0 * p[..., k.P_ESTAR])) ** 2 * p[..., k.P_R]
-    else:
-        ref = p[..., k.P_DY]
+    ref = _jg_delta_c(p) if int(law_id) == k.HERTZ else p[..., k.P_DY]
     return float(ref) if np.ndim(ref) == 0 else ref
+
+
+def _jg_delta_c(p: np.ndarray) -> Any:
+    """The pair's Jackson-Green delta_c [m] from ``P_ESTAR``, ``P_R``, ``P_SY``, ``P_NU``."""
+    c = 1.295 * np.exp(0.736 * p[..., k.P_NU])
+    return (np.pi * c * p[..., k.P_SY] / (2.0 * p[..., k.P_ESTAR])) ** 2 * p[..., k.P_R]
+
+
+#: (law_id, one parameter vector's bytes) -> _verified's answer: a result's flag, ratio and
+#: warning each ask for it, always for the same few models.
+_ONE_PAIR: dict[tuple[int, bytes], tuple[np.ndarray, bool]] = {}
+
+
+def _verified(law_id: int, params: Any) -> tuple[np.ndarray, bool]:
+    """(the verified upper end in the law's own ratio delta / delta_ref, NaN where the pair's
+    E*/S_y is outside the FE span; whether the law has a verified range at all)."""
+    p = np.asarray(params, dtype=np.float64)
+    if p.ndim == 1:
+        key = (int(law_id), p[: k.NPARAM].tobytes())
+        hit = _ONE_PAIR.get(key)
+        if hit is None:
+            if len(_ONE_PAIR) >= 256:
+                _ONE_PAIR.clear()
+            hit = _ONE_PAIR[key] = _measure_verified(int(law_id), p[: k.NPARAM])
+        return hit
+    return _measure_verified(int(law_id), p)
+
+
+def _measure_verified(law_id: int, p: np.ndarray) -> tuple[np.ndarray, bool]:
+    """``_verified`` computed (vectorised over rows of ``p``)."""
+    name = _NAME_BY_ID.get(law_id, "")
+    if not verified_cases(name):
+        return np.full(p.shape[:-1], np.nan), False
+    with np.errstate(divide="ignore", invalid="ignore"):
+        upper = np.asarray(verified_upper(name, p[..., k.P_ESTAR] / p[..., k.P_SY]))
+        own = upper * _jg_delta_c(p) / np.asarray(critical_interference(law_id, p))
+    return np.asarray(own, dtype=np.float64), True
+
+
+def range_limit(law_id: int, params: Any) -> Any:
+    """The upper end of law ``law_id``'s range as delta_max / delta_ref for pairs ``params``
+    (float or array): the verified range where the pair's E*/S_y is covered, else the
+    stand-in ``LawRange.delta_ratio_max``."""
+    own, _ = _verified(law_id, params)
+    out = np.where(np.isfinite(own), own, _RATIO_BY_ID[int(law_id)])
+    return float(out) if out.ndim == 0 else out
 
 
 def delta_ratio(law_id: int, params: Any, delta_max: Any) -> Any:
@@ -260,28 +359,38 @@ def extrapolation(law_id: int, params: Any, delta_max: float) -> tuple[float, fl
     law is unknown (``law_id < 0`` or ``params`` None)."""
     if params is None or not 0 <= int(law_id) < k.N_LAWS:
         return math.nan, math.inf
-    return float(delta_ratio(law_id, params, delta_max)), float(_RATIO_BY_ID[int(law_id)])
+    return float(delta_ratio(law_id, params, delta_max)), float(range_limit(law_id, params))
 
 
-def range_status(law_id: int) -> str | None:
-    """The ``LawRange.status`` of law ``law_id`` (None for an unknown law)."""
+def range_status(law_id: int, params: Any = None) -> str | None:
+    """The status of law ``law_id``'s range for the pair of ``params``: ``"verified"`` where
+    its E*/S_y is covered by the FE cases, ``"unverified"`` where a law with a verified range
+    meets a pair outside their span, else (and without ``params``) the stand-in's
+    ``LawRange.status``; None for an unknown law."""
     if not 0 <= int(law_id) < k.N_LAWS:
         return None
+    if params is not None:
+        own, has = _verified(law_id, params)
+        if has and np.ndim(own) == 0:
+            return "verified" if math.isfinite(float(own)) else "unverified"
     return _STATUS_BY_ID.get(int(law_id))
 
 
 def extrapolation_flags(law_id: int, params: Any, delta_max: Any) -> Any:
-    """``FLAG_LAW_EXTRAPOLATED`` where ``delta_max / delta_ref`` exceeds the law's range, else 0
+    """``FLAG_LAW_EXTRAPOLATED`` where ``delta_max / delta_ref`` exceeds the law's range
+    (:func:`range_limit`: verified, else the stand-in), else 0
     (int or int64 array; 0 for NaN, for an unknown law and for laws without a fitted range)."""
     if params is None or not 0 <= int(law_id) < k.N_LAWS:
         return 0
     ratio = np.asarray(delta_ratio(law_id, params, delta_max))
-    out = np.where(ratio > _RATIO_BY_ID[int(law_id)], FLAG_LAW_EXTRAPOLATED, 0).astype(np.int64)
+    limit = range_limit(law_id, params)
+    out = np.where(ratio > limit, FLAG_LAW_EXTRAPOLATED, 0).astype(np.int64)
     return int(out) if out.ndim == 0 else out
 
 
 def law_extrapolated(model: _Model, delta_max: Any) -> Any:
     """True where an impact that reached ``delta_max`` [m] (a float or an array) left the fitted
-    range of ``model``'s law, a ``ContactModel`` (bool or bool array)."""
+    range (verified, else the stand-in) of ``model``'s law, a ``ContactModel`` (bool or bool
+    array)."""
     out = np.asarray(extrapolation_flags(model.law_id, model.params, delta_max)) != 0
     return bool(out) if out.ndim == 0 else out

@@ -51,7 +51,7 @@ from dataclasses import dataclass
 
 from impactlab._validation import check_nonnegative, check_positive
 from impactlab.materials import Material
-from impactlab.references import Reference
+from impactlab.references import REFERENCES, Reference
 
 __all__ = [
     "COWPER_SYMONDS_MILD_STEEL",
@@ -87,13 +87,7 @@ RATE_REFERENCES: dict[str, Reference] = {
         "constants for mild steel)",
         note="book; table and equation numbers not confirmed, none cited",
     ),
-    "johnson-cook-1983": Reference(
-        "johnson-cook-1983",
-        "G. R. Johnson, W. H. Cook, A constitutive model and data for metals subjected to large "
-        "strains, high strain rates and high temperatures, Proc. 7th Int. Symp. on Ballistics, "
-        "The Hague (1983) 541-547",
-        note="proceedings paper, no DOI; pages as commonly cited, not confirmed here",
-    ),
+    "johnson-cook-1983": REFERENCES["johnson-cook-1983"],
     "tabor-1951": Reference(
         "tabor-1951",
         "D. Tabor, The Hardness of Metals, Clarendon Press, Oxford (1951)",

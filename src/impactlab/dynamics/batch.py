@@ -68,7 +68,8 @@ def run_arrays(
     Returns ``(out, status)``: out (N, len(OUTPUT_FIELDS)) float64, status (N,) int32
     (0 = ok; ``STATUS_MESSAGES``). The ``regime`` column holds codes (``REGIME_NAMES``); the
     ``flags`` column the ``ResultFlag`` bits, LAW_EXTRAPOLATED added here from each case's
-    delta_max / delta_c and the law's fitted range (``impactlab.contact.ranges``).
+    delta_max / delta_c and the law's range (``impactlab.contact.ranges``: verified against FE,
+    else a stand-in).
     """
     try:
         lid = int(law_id)
@@ -151,7 +152,7 @@ def shared_table(law_id: int, p: np.ndarray) -> np.ndarray:
 
 def _mark_extrapolated(law_id: int, law_params: np.ndarray, out: np.ndarray) -> None:
     """Add ``LAW_EXTRAPOLATED`` to the ``flags`` column where a case's delta_max / delta_c
-    exceeds the law's fitted range (``contact.ranges``; vectorised, failed cases untouched)."""
+    exceeds the law's (verified) range (``contact.ranges``; vectorised, failed cases untouched)."""
     done = np.isfinite(out[:, _FLAGS])
     extra = extrapolation_flags(law_id, law_params, np.where(done, out[:, _DMAX], np.nan))
     out[done, _FLAGS] = (

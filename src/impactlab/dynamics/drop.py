@@ -25,7 +25,7 @@ from impactlab.bodies.layout import BP_GSTAR
 from impactlab.bodies.modal import MODAL_REFERENCES
 from impactlab.contact import ContactModel
 from impactlab.contact.history_kernels import loading_contact_radius
-from impactlab.contact.ranges import extrapolation
+from impactlab.contact.ranges import extrapolation, range_status
 from impactlab.contact.rate import (
     RateFactor,
     check_rate_flat,
@@ -281,6 +281,7 @@ def _result(
         flags=drop_flags(o, e0, m, inputs["gravity"], rtol, model, r.contacts),
         max_delta_ratio=ratio,
         fitted_delta_ratio_max=ratio_max,
+        fitted_range_status=range_status(model.law_id, model.params),
         references=references,
         **inputs,
         **{k: v for k, v in o.items() if k not in skip},

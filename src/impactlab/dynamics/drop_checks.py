@@ -104,7 +104,7 @@ def drop_flags(
     criteria (``impactlab.dynamics.core.quality``) on the state after the last contact, the
     vibration energy counted with the kinetic energy, and on the duration and the normal
     impulse of the tip's sequence (its contacts before the other end's first touch); the
-    law's fitted range (``contact.ranges.law_extrapolated``) on the largest
+    law's (verified) range (``contact.ranges.law_extrapolated``) on the largest
     interference of the sequence; OTHER_END, unless gravity dominates (the rod rests or rocks:
     that flag says it), when the other end touched the flat or the tip still approaches it
     after the last contact (e < 0)."""

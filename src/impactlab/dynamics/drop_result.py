@@ -229,7 +229,8 @@ class DropResult:
       other end's first touch);
       LAW_EXTRAPOLATED when the largest interference of the sequence left the law's fitted
       range (``impactlab.contact.ranges``; ``max_delta_ratio`` = delta_max / delta_ref and the
-      upper end of the law's range, ``fitted_delta_ratio_max``);
+      upper end of the law's range, ``fitted_delta_ratio_max``, verified against FE or a
+      stand-in: ``fitted_range_status``, ``contact.ranges.range_status``);
     - ``references`` / ``dois()``: the sources used.
 
     ``stop="flight"`` integrates through the other end's impacts until the rod flies off
@@ -290,6 +291,7 @@ class DropResult:
     flags: ResultFlag = ResultFlag.NONE
     max_delta_ratio: float = math.nan
     fitted_delta_ratio_max: float = math.inf
+    fitted_range_status: str | None = None
     history: DropHistory | None = field(default=None, repr=False)
     references: tuple[Reference, ...] = field(default=(), repr=False)
     #: what ``simulate`` was given: the source of ``input`` (``dynamics.provenance``)
@@ -305,17 +307,20 @@ class DropResult:
 
     @property
     def extrapolated(self) -> bool:
-        """True when a contact of the drop left the law's fitted range."""
+        """True when a contact of the drop left the law's range (verified against
+        FE, else its stand-in)."""
         return ResultFlag.LAW_EXTRAPOLATED in self.flags
 
     @property
     def warnings(self) -> tuple[str, ...]:
         """One explanatory sentence per flag (``impactlab.flags.messages``); ``()`` if none."""
         how_far = (self.max_delta_ratio, self.fitted_delta_ratio_max)
-        try:
-            status: str | None = law_range(self.law).status
-        except ValueError:  # a custom law
-            status = None
+        status = self.fitted_range_status
+        if status is None:
+            try:
+                status = law_range(self.law).status
+            except ValueError:  # a custom law
+                status = None
         return messages(self.flags, extrapolation=how_far, status=status)
 
     @property

@@ -143,13 +143,13 @@ class ImpactResult:
         doc="delta_max / delta_c of the impact's law and pair (NaN if unknown; contact.ranges).",
     )
     extrapolated = property(lambda self: ResultFlag.LAW_EXTRAPOLATED in self.flags,
-                            doc="True when the impact left the law's fitted range.")  # fmt: skip
+                            doc="True when the impact left the law's range.")  # fmt: skip
 
     @property
     def warnings(self) -> tuple[str, ...]:
         """One explanatory sentence per flag (``impactlab.flags.messages``); ``()`` if none."""
         how_far = extrapolation(self._law_id, self._law_params, self.delta_max)
-        status = range_status(self._law_id)
+        status = range_status(self._law_id, self._law_params)
         return messages(self.flags, extrapolation=how_far, status=status)
 
     @property

@@ -22,6 +22,9 @@ from impactlab.fe.problem import make_problem
 from impactlab.materials import ContactPair, Material
 
 DATA_DIR = Path(__file__).resolve().parent / "data"
+#: Where the cases with a strain-hardening flat are (kept out of ``load_cases``, whose
+#: elastic-perfectly plastic cases the laws are measured against).
+HARDENED_DIR = DATA_DIR / "hardening"
 #: Version of the data files' layout (their names end in ``.v<DATA_VERSION>.json``).
 DATA_VERSION = 1
 #: The ``format`` field of every data file.

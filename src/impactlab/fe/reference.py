@@ -2,9 +2,11 @@
 
 ``python3 tasks.py fe-reference`` calls :func:`write_references`, which runs every case of
 :data:`CASES` (sphere radius 8.8 mm, elastic-perfectly plastic, frictionless, mesh level 1,
-the maxima of :data:`MAXIMA_OVER_DELTA_C` times delta_c) and writes one versioned JSON file
-per case into ``impactlab/fe/data/`` (``<case>.v<DATA_VERSION>.json``, read by
-:mod:`impactlab.fe.curves`). Runs already in the FE cache are read from it.
+the maxima of :data:`MAXIMA_OVER_DELTA_C` times delta_c) and of :data:`HARDENED_CASES` (the
+same with a strain-hardening flat) and writes one versioned JSON file per case into
+``impactlab/fe/data/`` (``<case>.v<DATA_VERSION>.json``, read by :mod:`impactlab.fe.curves`;
+the hardened ones into ``data/hardening/``), then :func:`write_derived`: the tabulated law's
+curves and the laws' verified ranges. Runs already in the FE cache are read from it.
 """
 
 from __future__ import annotations
@@ -22,11 +24,19 @@ from impactlab._json import jsonable
 from impactlab._version import __version__
 from impactlab.fe.cache import gmsh_version
 from impactlab.fe.ccx import ccx_version, find_ccx
-from impactlab.fe.curves import DATA_DIR, DATA_VERSION, FORMAT, data_path, material_record
+from impactlab.fe.curves import (
+    DATA_DIR,
+    DATA_VERSION,
+    FORMAT,
+    HARDENED_DIR,
+    data_path,
+    material_record,
+)
 from impactlab.fe.problem import make_problem
 from impactlab.fe.result import IndentationResult
 from impactlab.fe.run import indent
 from impactlab.materials import AISI_201, AISI_1010, Material
+from impactlab.materials.hardening import AISI_1010_HARDENING
 
 RADIUS = 8.8e-3
 
@@ -48,11 +58,29 @@ CASES: dict[str, tuple[Material, Material, str]] = {
     "elastic-sphere-on-aisi4340": (AISI_4340_QT, AISI_4340_QT, "elastic"),
 }
 
+#: The cases whose flat strain-hardens, as :data:`CASES`: the paper's pair with AISI 1010's
+#: hardening (``impactlab.materials.hardening``). They are stored apart, in ``data/hardening/``
+#: (``fe.curves.HARDENED_DIR``), so that the law accuracy and the verified ranges, which compare
+#: the laws (all elastic-perfectly plastic) with FE, read only the elastic-perfectly plastic
+#: cases; the hardened paper's pair gives the tabulated law of the experiment's report row.
+HARDENED_CASES: dict[str, tuple[Material, Material, str]] = {
+    "paper-aisi201-on-aisi1010-hardening": (AISI_1010, AISI_201, "elastic-plastic"),
+}
+#: Every case ``python3 tasks.py fe-reference`` runs.
+ALL_CASES: dict[str, tuple[Material, Material, str]] = {**CASES, **HARDENED_CASES}
+#: The hardened cases' flat hardening: name -> (true stress [Pa], true plastic strain) rows.
+FLAT_HARDENING: dict[str, tuple[tuple[float, float], ...]] = {
+    "paper-aisi201-on-aisi1010-hardening": AISI_1010_HARDENING.table(),
+}
+
 #: One line per case for people (stored in its data file).
 DESCRIPTIONS: dict[str, str] = {
     "paper-aisi201-on-aisi1010": "The paper's pair: AISI 201 sphere (elastic-plastic) on AISI 1010",
     "aisi201-on-al6061t6": "Aluminium: AISI 201 sphere (elastic-plastic) on 6061-T6",
     "elastic-sphere-on-aisi4340": "Hard steel: an elastic AISI 4340 Q&T sphere on AISI 4340 Q&T",
+    "paper-aisi201-on-aisi1010-hardening": "The paper's pair with a strain-hardening flat: AISI "
+    "201 sphere (elastic-plastic) on AISI 1010 with 1006 steel's hardening (Johnson & Cook "
+    "1983)",
 }
 
 #: The maxima, in multiples of the case's delta_c: about two per decade from 0.3 to 1000, and
@@ -75,7 +103,7 @@ CASE_MAXIMA: dict[str, tuple[float, ...]] = {
 
 def case_delta_c(name: str) -> float:
     """The critical interference delta_c [m] of a case (its FE problem's)."""
-    flat, body, kind = CASES[name]
+    flat, body, kind = ALL_CASES[name]
     return make_problem(flat, body, radius=RADIUS, delta_max=1e-9, sphere=kind).delta_c
 
 
@@ -153,7 +181,7 @@ def case_record(
     name: str, runs: list[IndentationResult], mesh_level: int, ccx: str, gmsh: str
 ) -> dict[str, Any]:
     """The content of a case's data file (read back by ``impactlab.fe.curves``)."""
-    flat, body, kind = CASES[name]
+    flat, body, kind = ALL_CASES[name]
     runs = sorted(runs, key=lambda r: r.delta_max)
     return {
         "format": FORMAT,
@@ -173,6 +201,9 @@ def case_record(
             "mu": 0.0,
             "mesh_level": mesh_level,
             "maxima_over_delta_c": case_ratios(name),
+            "flat_hardening": [list(r) for r in FLAT_HARDENING[name]]
+            if name in FLAT_HARDENING
+            else None,
         },
         "runs": [to_record(r) for r in runs],
     }
@@ -183,6 +214,12 @@ def _reporter(name: str, log: Callable[[str], None]) -> Callable[[int, Indentati
         log(f"  {name}: {r.delta_max / r.delta_c:.4g} delta_c, {r.status()}, {r.run_time:.0f} s")
 
     return report
+
+
+def case_directory(name: str, directory: Path = DATA_DIR) -> Path:
+    """Where the data file of case ``name`` goes: ``directory``, or its ``hardening/`` folder
+    for a case whose flat strain-hardens."""
+    return Path(directory) / HARDENED_DIR.name if name in FLAT_HARDENING else Path(directory)
 
 
 def write_references(
@@ -197,8 +234,8 @@ def write_references(
     their data files; returns the paths."""
     paths = []
     version = ccx_version(find_ccx())
-    for name in names or list(CASES):
-        flat, body, kind = CASES[name]
+    for name in names or list(ALL_CASES):
+        flat, body, kind = ALL_CASES[name]
         t0 = time.perf_counter()
         runs = indent(
             flat,
@@ -206,13 +243,15 @@ def write_references(
             radius=RADIUS,
             delta_max=case_maxima(name),
             sphere=kind,
+            flat_hardening=FLAT_HARDENING.get(name),
             mesh_level=mesh_level,
             workers=1 if workers is None else workers,
             progress=_reporter(name, log),
         )
         record = case_record(name, runs, mesh_level, version, gmsh_version())
-        directory.mkdir(parents=True, exist_ok=True)
-        path = data_path(name, directory)
+        folder = case_directory(name, directory)
+        folder.mkdir(parents=True, exist_ok=True)
+        path = data_path(name, folder)
         path.write_text(json.dumps(record, separators=(",", ":")) + "\n")
         log(f"{name}: {len(runs)} runs in {time.perf_counter() - t0:.0f} s -> {path}")
         paths.append(path)
@@ -224,14 +263,28 @@ def main(argv: list[str] | None = None) -> int:
     import argparse
 
     parser = argparse.ArgumentParser(description="Run the FE reference cases, write data files.")
-    parser.add_argument("cases", nargs="*", choices=[*CASES, []], help="default: all")
+    parser.add_argument("cases", nargs="*", choices=[*ALL_CASES, []], help="default: all")
     parser.add_argument("--mesh", type=int, default=1, help="mesh level (default 1)")
     parser.add_argument(
         "--workers", type=int, default=None, help="parallel ccx processes (default 1)"
     )
     args = parser.parse_args(argv)
-    write_references(args.cases or None, mesh_level=args.mesh, workers=args.workers)
+    names = args.cases or list(ALL_CASES)
+    write_references(names, mesh_level=args.mesh, workers=args.workers)
+    if any(n in CASES for n in names):
+        write_derived()
     return 0
+
+
+def write_derived(log: Callable[[str], None] = print) -> None:
+    """Rewrite what is derived from the shipped elastic-perfectly plastic curves: the tabulated
+    law's curves (``contact/data/fe-curves.json``) and the laws' verified ranges
+    (``contact/data/verified-ranges.json``, the engine's LAW_EXTRAPOLATED flag)."""
+    from impactlab.fe.tabulated import write_shipped_curves
+    from impactlab.fe.verified_ranges import write_verified_ranges
+
+    log(f"-> {write_shipped_curves()}")
+    log(f"-> {write_verified_ranges()}")
 
 
 if __name__ == "__main__":

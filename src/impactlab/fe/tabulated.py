@@ -6,6 +6,9 @@
   (delta_max, delta_r); the law is Hertz up to delta_c.
 - ``write_shipped_curves``: ``impactlab/contact/data/fe-curves.json`` from the shipped cases
   (``fe.curves``); a test checks that the file matches them.
+- ``hardened_curves``, ``hardened_law``: the curves and the law of the shipped paper's pair
+  with a strain-hardening flat (``fe/data/hardening``; not among the default candidates of
+  ``law="tabulated"``, which would otherwise find two curves for one E*/S_y).
 - ``tabulated_law(pair, radius)``: the law for any pair: from the shipped or cached curves
   when one matches the pair's E*/S_y and nu, else from new ``indent`` runs (CalculiX ``ccx``
   needed; RuntimeError saying how to install it), whose curves are kept in
@@ -30,7 +33,7 @@ from impactlab.contact.indentation_data import (
     curves_file_record,
 )
 from impactlab.contact.tabulated import Tabulated, curves_cache_dir, select_curves
-from impactlab.fe.curves import load_cases
+from impactlab.fe.curves import HARDENED_DIR, load_case, load_cases
 from impactlab.fe.run import indent
 from impactlab.materials import ContactPair
 
@@ -108,6 +111,28 @@ def write_shipped_curves(path: str | Path = SHIPPED_PATH) -> Path:
     return path
 
 
+#: The shipped FE case of the paper's pair whose flat strain-hardens.
+HARDENED_PAPER_CASE = "paper-aisi201-on-aisi1010-hardening"
+
+
+def hardened_curves(name: str = HARDENED_PAPER_CASE) -> IndentationCurves:
+    """The dimensionless curves of the shipped hardened case ``name`` (``fe/data/hardening``):
+    delta_c and F_c those of the pair's initial yield strength."""
+    case = load_case(name, HARDENED_DIR)
+    source = (
+        f"FE reference case {case.name!r} ({case.description}; CalculiX {case.ccx_version}, "
+        f"R = {case.radius:g} m, {case.sphere} sphere, mu = {case.mu:g}, mesh level "
+        f"{case.mesh_level})"
+    )
+    return curves_from_runs(case.runs, case.pair, case.radius, case.name, source)
+
+
+def hardened_law(pair: ContactPair, radius: float, name: str = HARDENED_PAPER_CASE) -> ContactModel:
+    """The tabulated law of ``pair`` (sphere of ``radius`` [m]) from the hardened case
+    ``name``; ValueError when the pair's E*/S_y or nu does not match the case's."""
+    return Tabulated(hardened_curves(name)).build(pair, radius)
+
+
 def _slug(text: str) -> str:
     return "".join(ch if ch.isalnum() else "-" for ch in text.lower()).strip("-")[:60]
 
@@ -159,8 +184,11 @@ def tabulated_law(
 
 
 __all__ = [
+    "HARDENED_PAPER_CASE",
     "RUN_MAXIMA_OVER_DELTA_C",
     "curves_from_runs",
+    "hardened_curves",
+    "hardened_law",
     "shipped_curves_record",
     "shipped_fe_curves",
     "tabulated_law",

@@ -1,32 +1,41 @@
 """ "Can physics explain the experiment?": the paper's three drops with the rigid rod,
-the flexible rod and the flexible rod on a rate-dependent flat, side by side with the
-measurements. Nothing is tuned: the paper's rod, drop velocities and measured mu (as the Coulomb
-coefficient), the Ghaednia law with impactlab's defaults, the AISI 1010 flat, gravity on, no
-damping. The model: docs/flexible.md. Which configuration explains the drops best, with the
-posterior of the rod's modal damping ratio, is the calibration of
-:mod:`impactlab.paper.calibration_report` (the report's next section).
+the flexible rod, the flexible rod on a rate-dependent flat and the flexible rod with the
+FE-tabulated law of a strain-hardening flat, side by side with the measurements. Nothing is
+tuned: the paper's rod, drop velocities and measured mu (as the Coulomb coefficient), the
+Ghaednia law with impactlab's defaults, the AISI 1010 flat, gravity on, no damping (the
+FE-tabulated row: the law tabulated from the FE indentation of the paper's pair with AISI
+1010's strain hardening, ``impactlab.fe.tabulated.hardened_law``). The model:
+docs/flexible.md. Which configuration explains the drops best, with the posterior of the rod's
+modal damping ratio, is the calibration of :mod:`impactlab.paper.calibration_report` (the
+report's next section).
 """
 
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
+from functools import cache
 from typing import Any
 
 import pandas as pd
 
 from impactlab.bodies import PAPER_ROD, FlexibleRod
+from impactlab.contact import ContactModel
 from impactlab.dynamics import simulate
 from impactlab.dynamics.drop import simulate_drop
-from impactlab.materials import G0
+from impactlab.fe.tabulated import hardened_law
+from impactlab.materials import G0, ContactPair
 from impactlab.paper import data as D
 from impactlab.paper.quantities import flag_columns
 
 __all__ = [
     "CONFIGURATIONS",
     "E_DEFINITION",
+    "FE_TABULATED",
+    "HARDENED_LAW",
     "LAW",
     "MEASURED",
+    "ROWS",
     "PhysicsConfig",
     "physics_inputs",
     "physics_table",
@@ -36,6 +45,9 @@ __all__ = [
 
 #: The contact law of every configuration (the paper's own law).
 LAW = "ghaednia"
+#: The law of the FE-tabulated row: tabulated from the FE curves of the paper's pair with a
+#: strain-hardening flat (``impactlab.fe.tabulated.hardened_law``).
+HARDENED_LAW = "tabulated (FE, hardening flat)"
 #: The friction model of every configuration (mu: the measured one of each drop).
 FRICTION = "coulomb"
 #: The configuration name of the measured rows.
@@ -45,13 +57,15 @@ MEASURED = "measured (paper)"
 @dataclass(frozen=True)
 class PhysicsConfig:
     """One physical model of the drop: its ``name``, whether the rod is ``flexible``, the flat's
-    ``rate`` law (None: rate-independent) and the sentence that states it."""
+    ``rate`` law (None: rate-independent), the sentence that states it and the contact ``law``
+    (a registered name or :data:`HARDENED_LAW`)."""
 
     name: str
     flexible: bool
     rate: str | None
     description: str
     damping: float = 0.0
+    law: str = LAW
 
 
 CONFIGURATIONS: tuple[PhysicsConfig, ...] = (
@@ -78,6 +92,30 @@ CONFIGURATIONS: tuple[PhysicsConfig, ...] = (
 )
 
 
+#: The FE-tabulated row (not calibrated: ``CONFIGURATIONS`` are). Rate-independent: a
+#: rate-dependent flat raises S_y, which moves the pair off the one E*/S_y the FE curves hold
+#: for (the tabulated law refuses a ContactModel with ``rate``), and no cited way scales an FE
+#: curve of a hardening flat with the strain rate.
+FE_TABULATED = PhysicsConfig(
+    "flexible rod + FE-tabulated law (hardening flat)",
+    True,
+    None,
+    "as 'flexible rod', the contact law tabulated from CalculiX indentations of the paper's "
+    "pair to 1000 delta_c with AISI 1010's strain hardening (S_y 305 MPa + 275 MPa eps_p^0.36, "
+    "the hardening of 1006 steel, Johnson & Cook 1983; fe/data/hardening); rate-independent "
+    "(a rate-raised S_y would leave the curves' E*/S_y; no cited way scales them with rate)",
+    law=HARDENED_LAW,
+)
+#: Every row of the table: the configurations (also calibrated) and the FE-tabulated one.
+ROWS: tuple[PhysicsConfig, ...] = (*CONFIGURATIONS, FE_TABULATED)
+
+
+@cache
+def _hardened_model(radius: float) -> ContactModel:
+    """The FE-tabulated law of the paper's pair (hardening flat) for a tip of ``radius`` [m]."""
+    return hardened_law(ContactPair(D.ROD_MATERIAL, D.FLAT_MATERIAL), radius)
+
+
 def physics_inputs(angle_deg: int) -> dict[str, Any]:
     """The inputs shared by every configuration at ``angle_deg``: the paper's flat, law,
     friction, measured mu, angle [rad] and drop velocity (0, v_i) [m/s]."""
@@ -98,12 +136,14 @@ def _run_one(cfg: PhysicsConfig, angle_deg: int, history: bool) -> Any:
     if not cfg.flexible:
         return simulate(PAPER_ROD, flat, gravity=True, **args)
     body = FlexibleRod.paper(damping=cfg.damping)
+    if cfg.law == HARDENED_LAW:
+        args["law"] = _hardened_model(body.tip_radius)
     return simulate_drop(body, flat, gravity=True, rate=cfg.rate, history=history, **args)
 
 
 def run_physics(
     angles: Iterable[int] = D.ANGLES_DEG,
-    configurations: Iterable[PhysicsConfig] = CONFIGURATIONS,
+    configurations: Iterable[PhysicsConfig] = ROWS,
     *,
     history_angle: int | None = 20,
 ) -> dict[tuple[str, int], Any]:
@@ -173,7 +213,7 @@ def _simulated_row(cfg: PhysicsConfig, angle_deg: int, res: Any) -> dict[str, An
 def physics_table(
     runs: Mapping[tuple[str, int], Any],
     experimental: pd.DataFrame,
-    configurations: Iterable[PhysicsConfig] = CONFIGURATIONS,
+    configurations: Iterable[PhysicsConfig] = ROWS,
 ) -> pd.DataFrame:
     """The comparison: per angle the measured row (T from the dent, Eq. 12, as in the
     experimental rows) and one row per configuration; display units (um, ms, N, J)."""

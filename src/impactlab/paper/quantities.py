@@ -8,6 +8,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
+from impactlab.contact.verified_ranges import tolerance_text
+
 #: Tolerances of the comparison (relative): simulated e and delta_p, the experimental T.
 TOL_SIMULATED = 0.15
 TOL_EXPERIMENT_T = 0.05
@@ -96,7 +98,7 @@ def sim_value(res: Any, q: str) -> float:
     }[q]
 
 
-#: The mark of a simulated row whose impact left its law's fitted range (LAW_EXTRAPOLATED).
+#: The mark of a simulated row whose impact left its law's verified range (LAW_EXTRAPOLATED).
 EXTRAPOLATED_MARK = "\u2020"
 
 
@@ -124,6 +126,6 @@ def extrapolation_line(simulations: Any) -> str:
     """The one line the reproduce command prints about the flagged simulated impacts."""
     n, m = count_extrapolated(simulations)
     return (
-        f"{n} of {m} simulated impacts lie beyond their law's fitted range (provisional); "
-        "see report"
+        f"{n} of {m} simulated impacts lie beyond their law's verified range "
+        f"({tolerance_text()}); see report"
     )

@@ -12,7 +12,9 @@ from typing import Any
 
 import pandas as pd
 
-from impactlab.contact.ranges import RANGES
+from impactlab.contact.ranges import RANGES, law_range
+from impactlab.contact.verified_ranges import tolerance_text
+from impactlab.materials import ContactPair
 from impactlab.paper import data as D
 from impactlab.paper.calibration_report import calibration_section, shipped_calibration
 from impactlab.paper.physics_report import physics_section
@@ -165,21 +167,36 @@ def _extrapolation_note(simulations: pd.DataFrame) -> str:
     flagged = simulations[simulations["flags"].fillna("").str.contains("LAW_EXTRAPOLATED")]
     laws = sorted(set(flagged["law"]))
     ranges = "; ".join(
-        f"{law}: up to {RANGES[law].delta_ratio_max:g} delta_c ({RANGES[law].status}), "
-        f"max delta/delta_c here {flagged[flagged['law'] == law]['max_delta_ratio'].max():.3g}"
+        f"{law}: {_verified_words(law)}, max delta/delta_c here "
+        f"{flagged[flagged['law'] == law]['max_delta_ratio'].max():.3g}"
         for law in laws
         if law in RANGES
     )
     return (
         f"{EXTRAPOLATED_MARK} LAW_EXTRAPOLATED: {n} of {m} simulated impacts push the "
-        "interference beyond the upper end of their contact law's fitted range "
-        "(impactlab.contact.ranges; `flags` and `max_delta_ratio` = delta_max/delta_c in the "
-        "CSV tables), so the law is used beyond the data it was fitted to. "
+        "interference beyond the upper end of their contact law's verified range "
+        f"({tolerance_text()}, for the pair's E*/S_y; impactlab.contact.ranges; `flags` and "
+        "`max_delta_ratio` = delta_max/delta_c in the CSV tables), so the law is used where it "
+        "was not verified against the FE reference. "
         + (f"{ranges}. " if ranges else "")
-        + "The upper ends marked provisional are labelled stand-ins (the sources' own ranges "
-        'were not found; docs/laws/index.md, "Fitted ranges"); the flag is advisory and '
-        "changes no number."
+        + "The verified ranges are measured from the shipped FE curves (docs/laws/index.md, "
+        '"Verified ranges"); a pair whose E*/S_y lies outside the FE cases keeps the former '
+        "stand-in, marked unverified; the flag is advisory and changes no number."
     )
+
+
+#: E*/S_y of the paper's pair (rod on flat): which verified range applies to the simulations.
+_PAPER_PAIR = ContactPair(D.ROD_MATERIAL, D.FLAT_MATERIAL)
+_PAPER_RATIO = _PAPER_PAIR.E_star / _PAPER_PAIR.yield_strength
+
+
+def _verified_words(law: str) -> str:
+    """``verified up to 1 delta_c at E*/S_y = 360`` (the paper's pair), or the stand-in."""
+    cases = [c for c in law_range(law).verified if abs(c.e_star_over_sy / _PAPER_RATIO - 1) < 1e-3]
+    if cases:
+        c = cases[0]
+        return f"verified up to {c.upper:.3g} delta_c at E*/S_y = {c.e_star_over_sy:.0f}"
+    return f"{law_range(law).stand_in_text} (unverified)"
 
 
 def _sim_vs_experiment(simtab: pd.DataFrame, exp: pd.DataFrame) -> list[Block]:

@@ -1,0 +1,148 @@
+"""The contact laws' verified ranges: how far each law stays close to the FE reference.
+
+The **verified range** of a law for a material pair is the largest interference, as a ratio
+delta / delta_c (delta_c the pair's Jackson-Green first-yield interference, paper Eq. 15), up
+to which the law stays within 10 % of the finite-element (CalculiX) loading force and within
+0.05 of its delta_r / delta_max, measured by ``impactlab.fe.accuracy`` against the shipped FE
+reference curves (``impactlab/fe/data``; docs/laws/accuracy.md). The measured numbers are in
+``contact/data/verified-ranges.json`` (:data:`VERIFIED_PATH`), written from the shipped curves
+by ``python3 tasks.py fe-reference`` (``impactlab.fe.verified_ranges``): never typed by hand.
+
+Each FE case is one E*/S_y (E* the pair's reduced modulus, S_y the yield strength of the body
+that yields first). For a pair between two shipped cases the range is bounded conservatively:
+the smaller of the two cases' verified ranges (nothing assumes how the range varies between
+them). Outside the span of the shipped cases the range is **unverified**: :func:`verified_upper`
+returns NaN and ``impactlab.contact.ranges`` keeps the law's former stand-in and says so.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import dataclass
+from functools import cache
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+__all__ = [
+    "FORMAT",
+    "VERIFIED_PATH",
+    "VerifiedCase",
+    "e_star_over_sy_span",
+    "tolerance_text",
+    "verified_cases",
+    "verified_laws",
+    "verified_upper",
+]
+
+VERIFIED_PATH = Path(__file__).resolve().parent / "data" / "verified-ranges.json"
+#: The ``format`` field of the data file.
+FORMAT = "impactlab verified ranges v1"
+#: Relative tolerance when matching an E*/S_y to a shipped case's (the file's 7 digits).
+_MATCH_RTOL = 1e-6
+
+
+@dataclass(frozen=True)
+class VerifiedCase:
+    """One law against one FE case: the case, its E*/S_y [1], the verified upper end
+    ``upper`` (delta / delta_c; 0: not even the first checked point), the check that limits it
+    (``"force"``, ``"delta_r"`` or ``"end of data"``) and where that check first fails
+    (delta / delta_c; nan at the end of the data)."""
+
+    case: str
+    e_star_over_sy: float
+    upper: float
+    limited_by: str
+    first_failure: float
+
+    @property
+    def text(self) -> str:
+        """``<= 1 delta_c at E*/S_y = 360 (delta_r fails at 1.5)``."""
+        at = f"at E*/S_y = {self.e_star_over_sy:.0f}"
+        if self.limited_by == "end of data":
+            return f">= {self.upper:.3g} delta_c {at} (end of data)"
+        return (
+            f"<= {self.upper:.3g} delta_c {at} ({self.limited_by} fails at "
+            f"{self.first_failure:.3g})"
+        )
+
+
+def _float(v: Any) -> float:
+    return math.nan if v is None else float(v)
+
+
+@cache
+def _data() -> dict[str, Any]:
+    record: dict[str, Any] = json.loads(VERIFIED_PATH.read_text())
+    if record.get("format") != FORMAT:
+        raise ValueError(f"{VERIFIED_PATH}: not a verified-ranges file ({record.get('format')!r})")
+    return record
+
+
+@cache
+def _table() -> dict[str, tuple[VerifiedCase, ...]]:
+    out = {}
+    for law, rows in _data()["laws"].items():
+        cases = (
+            VerifiedCase(
+                str(r["case"]),
+                float(r["e_star_over_sy"]),
+                float(r["verified_delta_ratio"]),
+                str(r["limited_by"]),
+                _float(r["first_failure_delta_ratio"]),
+            )
+            for r in rows
+        )
+        out[law] = tuple(sorted(cases, key=lambda c: c.e_star_over_sy))
+    return out
+
+
+def verified_laws() -> tuple[str, ...]:
+    """The laws that have a verified range (every law measured against FE)."""
+    return tuple(_table())
+
+
+def verified_cases(law: str) -> tuple[VerifiedCase, ...]:
+    """The verified range of ``law`` per shipped FE case, by increasing E*/S_y (``()`` for a
+    law without one)."""
+    return _table().get(str(law), ())
+
+
+def tolerance_text() -> str:
+    """``FE, 10 % force / 0.05 delta_r/delta_max``: the tolerances of the verified range."""
+    t = _data()["tolerances"]
+    return (
+        f"FE, {100 * t['force_relative']:g} % force / {t['residual_ratio_absolute']:g} "
+        "delta_r/delta_max"
+    )
+
+
+def e_star_over_sy_span() -> tuple[float, float]:
+    """(smallest, largest) E*/S_y of the shipped FE cases."""
+    values = [c.e_star_over_sy for cases in _table().values() for c in cases]
+    return min(values), max(values)
+
+
+def verified_upper(law: str, e_star_over_sy: Any) -> Any:
+    """The verified upper end delta / delta_c of ``law`` for pairs of ratio ``e_star_over_sy``
+    (float or array): a shipped case's own value at its E*/S_y, the smaller of the two
+    neighbouring cases' between them, NaN outside the span (unverified) or for a law without
+    a verified range."""
+    x = np.asarray(e_star_over_sy, dtype=np.float64)
+    out = np.full(x.shape, np.nan)
+    cases = verified_cases(law)
+    if cases:
+        xs = np.array([c.e_star_over_sy for c in cases])
+        us = np.array([c.upper for c in cases])
+        lo, hi = xs[0] * (1 - _MATCH_RTOL), xs[-1] * (1 + _MATCH_RTOL)
+        inside = np.isfinite(x) & (x >= lo) & (x <= hi)
+        xi = np.clip(x[inside], xs[0], xs[-1])
+        right = np.clip(np.searchsorted(xs, xi, side="left"), 0, xs.size - 1)
+        left = np.clip(right - 1, 0, xs.size - 1)
+        bound = np.minimum(us[left], us[right])
+        at_right = np.isclose(xi, xs[right], rtol=_MATCH_RTOL, atol=0.0)
+        at_left = np.isclose(xi, xs[left], rtol=_MATCH_RTOL, atol=0.0)
+        out[inside] = np.where(at_right, us[right], np.where(at_left, us[left], bound))
+    return float(out) if out.ndim == 0 else out

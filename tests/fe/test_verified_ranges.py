@@ -1,0 +1,105 @@
+"""The laws' verified ranges (``impactlab.contact.verified_ranges``) are what
+``impactlab.fe.accuracy`` measures from the shipped FE curves, and the hardened paper's pair
+(``fe/data/hardening``, AISI 1010 with a cited strain hardening) is a sound FE reference.
+No ccx needed: the shipped data files are read."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+from impactlab.contact.verified_ranges import VERIFIED_PATH, verified_cases, verified_upper
+from impactlab.fe.accuracy import measured_laws
+from impactlab.fe.curves import HARDENED_DIR, case_names, load_case
+from impactlab.fe.problem import check_hardening
+from impactlab.fe.reference import (
+    FLAT_HARDENING,
+    HARDENED_CASES,
+    case_ratios,
+)
+from impactlab.fe.tabulated import HARDENED_PAPER_CASE, hardened_curves, hardened_law
+from impactlab.fe.verified_ranges import verified_range_table
+from impactlab.materials import AISI_201, AISI_1010, ContactPair
+from impactlab.materials.hardening import AISI_1010_HARDENING, PowerLawHardening
+
+R = 8.8e-3
+
+
+def test_shipped_table_equals_what_the_accuracy_measures() -> None:
+    """The data file is generated, never typed: it equals fe.accuracy over the shipped curves."""
+    shipped = json.loads(VERIFIED_PATH.read_text())
+    fresh = json.loads(json.dumps(verified_range_table()))
+    assert shipped == fresh
+    assert set(shipped["laws"]) == set(measured_laws())
+    for law, rows in shipped["laws"].items():
+        assert len(verified_cases(law)) == len(rows) == len(case_names())
+        for c in verified_cases(law):
+            assert c.upper >= 0.0 and c.limited_by in ("force", "delta_r", "end of data")
+            assert verified_upper(law, c.e_star_over_sy) == c.upper
+
+
+def test_hardening_law_and_its_table() -> None:
+    h = AISI_1010_HARDENING
+    assert h.yield_strength == AISI_1010.yield_strength and (h.B, h.n) == (275e6, 0.36)
+    rows = check_hardening("flat_hardening", h.table())  # starts at strain 0, monotonic
+    s, e = np.array(rows).T
+    assert s[0] == AISI_1010.yield_strength and e[-1] == h.max_strain
+    np.testing.assert_allclose(s, h.yield_strength + h.B * e**h.n, rtol=1e-6)
+    assert float(h.stress(1.0)) == pytest.approx(305e6 + 275e6)
+    with pytest.raises(ValueError, match="n must lie in"):
+        PowerLawHardening("x", 1e8, 1e8, 1.5, "johnson-cook-1983")
+    with pytest.raises(ValueError, match="B must be a positive stress"):
+        PowerLawHardening("x", 1e8, -1.0, 0.3, "johnson-cook-1983")
+    with pytest.raises(ValueError, match="unknown reference key"):
+        PowerLawHardening("x", 1e8, 1e8, 0.3, "nobody-2099")
+    with pytest.raises(ValueError, match="plastic_strain"):
+        h.stress(-0.1)
+
+
+def test_hardened_case_is_stored_apart_and_complete() -> None:
+    assert HARDENED_PAPER_CASE in HARDENED_CASES and HARDENED_PAPER_CASE not in case_names()
+    case = load_case(HARDENED_PAPER_CASE, HARDENED_DIR)
+    assert (case.flat.name, case.sphere_material.name) == (AISI_1010.name, AISI_201.name)
+    record = json.loads((HARDENED_DIR / f"{HARDENED_PAPER_CASE}.v1.json").read_text())
+    assert [tuple(r) for r in record["inputs"]["flat_hardening"]] == list(
+        FLAT_HARDENING[HARDENED_PAPER_CASE]
+    )
+    ratios = [r.delta_max / case.delta_c for r in case.runs]
+    assert ratios == pytest.approx(case_ratios("paper-aisi201-on-aisi1010"), rel=1e-6)
+    assert all(r.converged for r in case.runs)
+    assert all(abs(r.force_balance) < 1e-4 for r in case.runs)
+
+
+def test_hardening_raises_the_force_and_lowers_the_permanent_depth() -> None:
+    """Against the elastic-perfectly plastic paper's pair (same mesh, same maxima): the same
+    force up to first yield, a larger one beyond; delta_r / delta_max no larger."""
+    hard = load_case(HARDENED_PAPER_CASE, HARDENED_DIR)
+    epp = load_case("paper-aisi201-on-aisi1010")
+    assert hard.delta_c == pytest.approx(epp.delta_c, rel=1e-12)
+    d_h, f_h = hard.loading_curve()
+    d_e, f_e = epp.loading_curve()
+    dc = epp.delta_c
+    for ratio in (0.3, 0.8):
+        x = ratio * dc
+        assert np.interp(x, d_h, f_h) == pytest.approx(np.interp(x, d_e, f_e), rel=0.01)
+    for ratio in (10.0, 100.0, 1000.0):
+        x = ratio * dc
+        assert np.interp(x, d_h, f_h) > 1.02 * np.interp(x, d_e, f_e)
+    for rh, re in zip(hard.runs, epp.runs, strict=True):
+        if rh.delta_max > 3 * dc:
+            assert rh.residual_ratio <= re.residual_ratio + 0.01
+
+
+def test_hardened_law_builds_for_the_papers_pair_only() -> None:
+    curves = hardened_curves()
+    assert curves.e_star_over_sy == pytest.approx(360.3, rel=1e-3)
+    model = hardened_law(ContactPair(AISI_201, AISI_1010), R)
+    dc = model.critical_interference
+    assert model.max_interference == pytest.approx(1000 * dc, rel=1e-3)
+    assert math.isfinite(float(model.force(500 * dc)))
+    soft = ContactPair(AISI_201, AISI_1010.__class__("soft", 200e9, 0.3, 150e6, 50.0))
+    with pytest.raises(ValueError, match="no indentation curves for E\\*/S_y"):
+        hardened_law(soft, R)
