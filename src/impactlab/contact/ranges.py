@@ -53,6 +53,7 @@ class _Model(Protocol):
 
 __all__ = [
     "RANGES",
+    "alias_range",
     "STATUSES",
     "LawRange",
     "calibrated_max",
@@ -216,6 +217,12 @@ _RATIO_BY_ID = np.full(k.N_LAWS, np.inf)
 for _r in _ALL:
     _RATIO_BY_ID[_r.law.law_id] = _r.delta_ratio_max
 _STATUS_BY_ID = {r.law.law_id: r.status for r in _ALL}
+
+
+def alias_range(name: str, law: Law) -> None:
+    """Let the law registered as ``name`` (``contact.registry.register_law``) share ``law``'s
+    range (a user's law is the tabulated law under its own name)."""
+    _BY_NAME.setdefault(name, RANGES[law])
 
 
 def law_range(law: str | Law) -> LawRange:
