@@ -21,8 +21,8 @@ its own name), then ``simulate(..., law=name)`` as for any law.
 from impactlab.contact.base import ContactLaw, ContactModel, Parameter, UnloadingBranch
 from impactlab.contact.energy import ReboundResult, loading_work, quasi_static_rebound
 from impactlab.contact.indentation_data import IndentationCurves, shipped_curves
-from impactlab.contact.names import Law
 from impactlab.contact.law_file import read_law_file
+from impactlab.contact.names import Law
 from impactlab.contact.registered import RegisteredLaw
 from impactlab.contact.registry import (
     builtin_law_names,

@@ -53,9 +53,9 @@ class _Model(Protocol):
 
 __all__ = [
     "RANGES",
-    "alias_range",
     "STATUSES",
     "LawRange",
+    "alias_range",
     "calibrated_max",
     "critical_interference",
     "delta_ratio",

@@ -213,8 +213,7 @@ def sample_law(
     model = law.build(pair, radius)
     t = np.linspace(0.0, 1.0, CHECKS_PER_INTERVAL + 2)[:-1]
     logs = np.log(grid)
-    check = np.exp(np.concatenate([a + t * (b - a) for a, b in zip(logs, logs[1:], strict=False)]))
-    check = np.append(check[check <= model.max_interference], grid[-1])
+    check = np.append(np.exp((logs[:-1, None] + t * np.diff(logs)[:, None]).ravel()), grid[-1])
     check = check[check <= model.max_interference]
     f_err = model.force(check) / _values("loading", loading, check) - 1.0
     r_model = np.array([model.unload(float(d)).delta_r for d in check])
