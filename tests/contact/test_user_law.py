@@ -170,7 +170,7 @@ def test_bad_callables_and_tables_are_refused() -> None:
     stiff = lambda d: hertz(d) if d <= DC else hertz(DC) * (d / DC) ** 1.8  # noqa: E731
     with pytest.raises(ValueError, match="departs from the callable's force"):
         register_law("bad-stiff", loading=stiff, unloading=toy_unloading, **kw)
-    with pytest.raises(ValueError, match="delta_max .* is required"):
+    with pytest.raises(ValueError, match=r"delta_max .* is required"):
         register_law("bad-range", loading=toy_loading, unloading=toy_unloading, pair=PAIR, radius=R)
     with pytest.raises(ValueError, match="force must not decrease"):
         IndentationCurves.from_arrays(PAIR, R, [DC, 2 * DC, 3 * DC, 4 * DC, 5 * DC],

@@ -86,13 +86,13 @@ def test_study_file_brings_its_law(law_file: Path) -> None:
 
 
 def test_bad_law_files_say_what_is_wrong(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.toml"
+    bad.write_text('name = "x"\n')
     with pytest.raises(ValueError, match="missing key"):
-        bad = tmp_path / "bad.toml"
-        bad.write_text('name = "x"\n')
         read_law_file(bad)
     with pytest.raises(ValueError, match=r"unknown key\(s\) \['colour'\]"):
         read_law_file(_write_law(tmp_path, "toy-colour", colour="red"))
-    with pytest.raises(ValueError, match="law file .*: .*built-in law's"):
+    with pytest.raises(ValueError, match=r"law file .*: .*built-in law's"):
         read_law_file(_write_law(tmp_path, "hertz"))
     res = CliRunner().invoke(app, ["--law-file", str(tmp_path / "nowhere.toml"), "laws"])
     assert res.exit_code != 0 and "nowhere.toml" in str(res.exception)
