@@ -1,9 +1,8 @@
 """Result objects of the flexible drop (``simulate_drop``): immutable, SI units.
 
-``DropResult`` lists every contact of the sequence (``ContactRecord``) and the dents they left
-(``DentRecord``), the totals a user compares with an experiment, the terms of the energy
-balance and, if asked, the history (``DropHistory``). Field units: ``UNITS`` (from the
-integrator's output table ``impactlab.dynamics.flexcore.layout.DROP_FIELDS``).
+``DropResult``: every contact (``ContactRecord``), the dents (``DentRecord``), the totals a user
+compares with an experiment, the energy balance and, if asked, the history (``DropHistory``).
+Units: ``UNITS`` (from ``impactlab.dynamics.flexcore.layout.DROP_FIELDS``).
 """
 
 from __future__ import annotations
@@ -18,6 +17,7 @@ from impactlab._display import html_table
 from impactlab._json import jsonable
 from impactlab._version import __version__
 from impactlab.contact.ranges import law_range
+from impactlab.dynamics.derived import DerivedOutputs
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.provenance import result_record
 from impactlab.dynamics.results import pint_quantities
@@ -199,7 +199,7 @@ _SUMMARY: dict[str, tuple[str, str, float]] = {
 
 
 @dataclass(frozen=True, eq=False)
-class DropResult:
+class DropResult(DerivedOutputs):
     """The outcome of one drop (SI units; units of the fields in ``UNITS``). Immutable.
 
     It carries the summary attributes of ``ImpactResult`` (``impactlab.simulate`` returns it
@@ -362,6 +362,7 @@ class DropResult:
         d["warnings"] = list(self.warnings)
         d["mean_force"] = self.mean_force
         d["energy_balance"] = self.energy_balance
+        d |= self.derived()  # schema.register_output
         d["references"] = [str(r) for r in self.references]
         d["impactlab_version"] = __version__
         d["input"] = self.input
@@ -391,8 +392,7 @@ class DropResult:
                 f"duration={self.duration:.6g} s{flags})")  # fmt: skip
 
     def __str__(self) -> str:
-        rows = self._rows()
-        width = max(len(label) for label, _v, _u in rows)
+        rows, width = self._rows(), max(len(label) for label, _v, _u in self._rows())
         body = (f"  {label.ljust(width)}  {value} {unit}".rstrip() for label, value, unit in rows)
         return "DropResult\n" + "\n".join(body)
 

@@ -30,6 +30,7 @@ from impactlab.dynamics.batch import (
     run_arrays,
 )
 from impactlab.friction import batch_friction_error
+from impactlab.schema import DERIVED_FIELDS
 from impactlab.sweep.flexible import FLEXIBLE_BODY, evaluate_flexible, validate_flexible
 from impactlab.sweep.inputs import INTEGER_OUTPUTS, KINEMATIC_INPUTS
 from impactlab.sweep.material_inputs import validate_material_names
@@ -126,7 +127,8 @@ class EngineEvaluator:
     identity = "impactlab.dynamics.batch"
 
     def output_fields(self) -> tuple[str, ...]:
-        return tuple(OUTPUT_FIELDS)
+        """The engine's outputs, then the derived outputs (``schema.register_output``)."""
+        return (*OUTPUT_FIELDS, *DERIVED_FIELDS)
 
     def status_messages(self) -> dict[int, str]:
         return {int(k): str(v) for k, v in STATUS_MESSAGES.items()}
@@ -146,9 +148,21 @@ class EngineEvaluator:
     def __call__(
         self, cases: Mapping[str, np.ndarray], statics: Statics, outputs: Sequence[str]
     ) -> tuple[dict[str, np.ndarray], np.ndarray]:
+        derived = [o for o in outputs if o in DERIVED_FIELDS]
+        engine = list(dict.fromkeys(
+            [o for o in outputs if o not in DERIVED_FIELDS]
+            + [n for o in derived for n in DERIVED_FIELDS[o].needs]
+        ))  # fmt: skip
         if statics.categories.get("body") == FLEXIBLE_BODY:  # one drop per case
-            return evaluate_flexible(cases, statics, outputs)
-        return evaluate(cases, statics, outputs)
+            res, status = evaluate_flexible(cases, statics, engine)
+        else:
+            res, status = evaluate(cases, statics, engine)
+        for name in derived:  # computed where the chunk runs, from its engine outputs
+            res[name] = np.asarray(
+                DERIVED_FIELDS[name].compute(**{n: res[n] for n in DERIVED_FIELDS[name].needs}),
+                dtype=np.float64,
+            )
+        return {o: res[o] for o in outputs}, status
 
 
 def _validate_categories(categories: Mapping[str, Sequence[str]], frictions: Sequence[str]) -> None:
