@@ -44,7 +44,9 @@ def _public_parameters() -> dict[str, str]:
     out: dict[str, str] = {}
     for name in impactlab.__all__:
         obj = getattr(impactlab, name)
-        if not (inspect.isfunction(obj) or inspect.isclass(obj) and dataclasses.is_dataclass(obj)):
+        if not (
+            inspect.isfunction(obj) or (inspect.isclass(obj) and dataclasses.is_dataclass(obj))
+        ):
             continue
         for p in inspect.signature(obj).parameters.values():  # type: ignore[arg-type]
             if p.kind not in (p.VAR_POSITIONAL, p.VAR_KEYWORD) and not p.name.startswith("_"):
