@@ -137,6 +137,23 @@ def test_sweep_runs_it_and_carries_its_data(toy: RegisteredLaw, tmp_path) -> Non
     assert again.laws == study.laws and again.hash() == study.hash()
 
 
+def test_a_result_reruns_with_the_law_it_carries(toy: RegisteredLaw) -> None:
+    """A result's input record holds the user's law, so ``rerun`` works where the law is not
+    registered (another process, a later session)."""
+    import json
+
+    r = _impact(NAME)
+    record = json.loads(json.dumps(r.to_dict()))
+    assert record["input"]["law_data"] == toy.record()
+    unregister_law(NAME)
+    try:
+        again = il.rerun(record)
+        assert NAME in law_names()
+    finally:
+        ensure_laws({NAME: toy.record()})
+    assert again.e == r.e and again.delta_p == r.delta_p
+
+
 def test_record_round_trip(toy: RegisteredLaw) -> None:
     back = law_from_record(toy.record())
     assert back.fingerprint() == toy.fingerprint()
