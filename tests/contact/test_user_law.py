@@ -4,6 +4,7 @@ given as the tabulated law, travels with a sweep's study, and bad input is refus
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Iterator
 
@@ -176,6 +177,9 @@ def test_names_and_data_are_protected(toy: RegisteredLaw) -> None:
         register_law("My Law", other)
     with pytest.raises(ValueError, match="unknown contact law 'no-such-law'"):
         get_law("no-such-law")
+    harder = dataclasses.replace(AISI_1010, yield_strength=600e6)  # another E*/S_y
+    with pytest.raises(ValueError, match=f"law '{NAME}': no indentation curves for E"):
+        toy.build(ContactPair(AISI_201, harder), R)
 
 
 def test_bad_callables_and_tables_are_refused() -> None:

@@ -193,6 +193,8 @@ def ensure_laws(records: Mapping[str, Any]) -> None:
     """Register the laws of ``records`` (name -> ``RegisteredLaw.record``) where they are not
     registered yet (a worker process), checking that each name means the same data."""
     for name, record in records.items():
+        if name in _USER and _USER[name].record() == record:
+            continue  # the common case in a worker: already registered (cheaper than a build)
         law = law_from_record(record)
         if law.name != name:
             raise ValueError(f"law record {name!r} names the law {law.name!r}")
