@@ -198,3 +198,21 @@ def test_bad_callables_and_tables_are_refused() -> None:
                                       [FC, 2 * FC, 1.5 * FC, 3 * FC, 4 * FC], [DC, 5 * DC],
                                       [0.0, 0.2 * DC])  # fmt: skip
     assert not any(n.startswith("bad-") for n in law_names())
+
+
+@pytest.mark.slow
+def test_a_spawned_worker_gets_the_law_from_the_study(toy: RegisteredLaw, tmp_path) -> None:
+    """The process pool starts its workers with "spawn": nothing of this process's registry
+    reaches them, only the study (end to end: the worker loads the engine from its cache)."""
+    from impactlab.sweep import Study, run_sweep
+
+    study = Study(
+        name="user-law-pool",
+        grid={"angle": np.radians([20.0, 70.0])},
+        fixed={"vy": -1.4, "mu": 0.2, "law": NAME},
+        outputs=["e"],
+    )
+    pool = run_sweep(study, tmp_path / "pool.zarr", quiet=True, backend="processes", workers=1)
+    here = run_sweep(study, tmp_path / "here.zarr", quiet=True)
+    assert (pool.dataset["status"].values == 0).all()
+    np.testing.assert_array_equal(pool.dataset["e"].values, here.dataset["e"].values)
