@@ -83,3 +83,21 @@ def test_bad_registrations_are_refused() -> None:
     with pytest.raises(ValueError, match="compute must be callable"):
         schema.register_output("toy_bad", "1", "x", ("e",), 3.0)  # type: ignore[arg-type]
     assert "toy_bad" not in schema.FIELDS
+
+
+@pytest.mark.slow
+def test_sweep_with_spawned_workers(toy: schema.DerivedField, tmp_path) -> None:
+    """The pool's workers (started with "spawn") know nothing of the field: the writer, in
+    this process, computes it from the engine outputs they return."""
+    from impactlab.sweep import Study, run_sweep
+
+    study = Study(
+        name="derived-pool",
+        grid={"angle": np.radians([20.0, 60.0])},
+        fixed={"vy": -1.4, "mu": 0.2, "law": "ghaednia"},
+        outputs=[NAME],
+    )
+    pool = run_sweep(study, tmp_path / "pool.zarr", quiet=True, backend="processes", workers=1)
+    here = run_sweep(study, tmp_path / "here.zarr", quiet=True)
+    np.testing.assert_array_equal(pool.dataset[NAME].values, here.dataset[NAME].values)
+    assert np.isfinite(pool.dataset[NAME].values).all()

@@ -148,21 +148,30 @@ class EngineEvaluator:
     def __call__(
         self, cases: Mapping[str, np.ndarray], statics: Statics, outputs: Sequence[str]
     ) -> tuple[dict[str, np.ndarray], np.ndarray]:
-        derived = [o for o in outputs if o in DERIVED_FIELDS]
-        engine = list(dict.fromkeys(
-            [o for o in outputs if o not in DERIVED_FIELDS]
-            + [n for o in derived for n in DERIVED_FIELDS[o].needs]
-        ))  # fmt: skip
         if statics.categories.get("body") == FLEXIBLE_BODY:  # one drop per case
-            res, status = evaluate_flexible(cases, statics, engine)
+            return evaluate_flexible(cases, statics, outputs)
+        return evaluate(cases, statics, outputs)
+
+
+def computed_outputs(kept: Sequence[str]) -> tuple[str, ...]:
+    """The engine outputs a chunk computes to give ``kept``: its engine outputs and those the
+    derived ones among it need (``schema.register_output``)."""
+    needs = [n for o in kept if o in DERIVED_FIELDS for n in DERIVED_FIELDS[o].needs]
+    return tuple(dict.fromkeys([*(o for o in kept if o not in DERIVED_FIELDS), *needs]))
+
+
+def with_derived(values: Mapping[str, np.ndarray], kept: Sequence[str]) -> dict[str, np.ndarray]:
+    """``kept`` from a chunk's engine outputs ``values``: the derived outputs computed here (the
+    writer's process, where they were registered), the others as they are."""
+    out = {}
+    for o in kept:
+        d = DERIVED_FIELDS.get(o)
+        if d is None:
+            out[o] = values[o]
         else:
-            res, status = evaluate(cases, statics, engine)
-        for name in derived:  # computed where the chunk runs, from its engine outputs
-            res[name] = np.asarray(
-                DERIVED_FIELDS[name].compute(**{n: res[n] for n in DERIVED_FIELDS[name].needs}),
-                dtype=np.float64,
-            )
-        return {o: res[o] for o in outputs}, status
+            got = d.compute(**{n: values[n] for n in d.needs})
+            out[o] = np.asarray(got, dtype=np.float64)
+    return out
 
 
 def _validate_categories(categories: Mapping[str, Sequence[str]], frictions: Sequence[str]) -> None:
@@ -255,8 +264,10 @@ __all__ = [
     "Evaluator",
     "Statics",
     "build_models",
+    "computed_outputs",
     "evaluate",
     "numba_cache_stats",
+    "with_derived",
 ]
 
 ENGINE = EngineEvaluator()
