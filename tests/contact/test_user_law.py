@@ -10,6 +10,8 @@ from collections.abc import Iterator
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 import impactlab as il
 from impactlab.contact import (
@@ -22,7 +24,8 @@ from impactlab.contact import (
     unregister_law,
 )
 from impactlab.contact._common import jg_critical
-from impactlab.contact.registered import RegisteredLaw, law_from_record
+from impactlab.contact.energy import loading_work
+from impactlab.contact.registered import RegisteredLaw, law_from_record, sample_law
 from impactlab.contact.registry import ensure_laws
 from impactlab.materials import AISI_201, AISI_1010, ContactPair
 
@@ -153,6 +156,37 @@ def test_a_result_reruns_with_the_law_it_carries(toy: RegisteredLaw) -> None:
     finally:
         ensure_laws({NAME: toy.record()})
     assert again.e == r.e and again.delta_p == r.delta_p
+
+
+@settings(max_examples=15)
+@given(
+    n=st.floats(1.0, 1.5),
+    share=st.floats(0.05, 0.9),
+    q=st.floats(0.2, 1.0),
+)
+def test_sampled_power_laws_stay_within_their_bound_and_create_no_energy(
+    n: float, share: float, q: float
+) -> None:
+    """Any F = F_c (delta/delta_c)^n (n <= 1.5: never stiffer than Hertz) with delta_r =
+    share delta_max (1 - (delta_c/delta_max)^q) samples within the 1 % bound, and the law built
+    from it returns at most the work spent at every turning point, with F >= 0 rising."""
+    law = sample_law(
+        "toy-property",
+        lambda d: hertz(d) if d <= DC else FC * (d / DC) ** n,
+        lambda dm: 0.0 if dm <= DC else share * dm * (1.0 - (DC / dm) ** q),
+        PAIR,
+        R,
+        300 * DC,
+    )
+    assert max(law.sampling_error) <= 0.01
+    model = law.build(PAIR, R)
+    d = np.geomspace(1e-3 * DC, model.max_interference, 200)
+    f = model.force(d)
+    assert np.all(f >= 0.0) and np.all(np.diff(f) >= 0.0)
+    for dm in d[::20]:
+        assert model.unload(float(dm)).energy_returned() <= loading_work(model, float(dm)) * (
+            1 + 1e-9
+        )
 
 
 def test_record_round_trip(toy: RegisteredLaw) -> None:

@@ -63,6 +63,10 @@ def test_law_file_on_the_command_line(law_file: Path) -> None:
     info = json.loads(res.stdout)
     assert info["name"] == NAME and info["registered"] is True
     assert info["sampling_error"]["force"] < 0.05  # leave-one-out, smooth synthetic data
+    for columns in ("200", "80"):  # the table and the blocks of a narrow terminal
+        res = runner.invoke(app, ["--law-file", str(law_file), "laws"], env={"COLUMNS": columns})
+        assert res.exit_code == 0, res.output
+        assert NAME in res.stdout
     args = ["--angle", "40 deg", "--vy", "-1.4", "--mu", "0.2", "--law", NAME, "--json"]
     res = runner.invoke(app, ["--law-file", str(law_file), "simulate", *args])
     assert res.exit_code == 0, res.output
