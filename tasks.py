@@ -84,7 +84,7 @@ def _env() -> dict[str, str]:
 #: every task and what it does, one line each (``python3 tasks.py help`` prints this table)
 TASKS: dict[str, str] = {
     "reproduce": "create .venv if needed, then reproduce the paper into ./reproduction/ [ARGS]",
-    "test": "create .venv if needed, then ruff, mypy and pytest [PYTEST ARGS]",
+    "test": "create .venv if needed, then ruff, mypy and pytest [--fast] [PYTEST ARGS]",
     "warm": "compile the engine into its cache ahead of the first run (impactlab warm) [ARGS]",
     "lint": "ruff check, ruff format --check, mypy, lint-imports",
     "bench": "run the benchmarks (benchmarks/run_all.py) [ARGS]",
@@ -105,6 +105,21 @@ def usage() -> str:
     return "\n".join(lines)
 
 
+def _test(rest: list[str], env: dict[str, str]) -> int:
+    """ruff, mypy, the engine's warm-up, then pytest; ``--fast``: without the slow and perf
+    marks (the local lane; CI runs everything)."""
+    for cmd in (_RUFF, _RUFF_FORMAT, _MYPY):
+        if _run(*cmd, env=env) != 0:
+            return 1
+    # compiled once here, then loaded from the cache by both test workers (each would
+    # otherwise compile the same engine at the same time)
+    if _run(PY, "-m", "impactlab", "warm", env=env) != 0:
+        return 1
+    if "--fast" in rest:
+        rest = ["-m", "not slow and not perf", *(a for a in rest if a != "--fast")]
+    return _run(PY, "-m", "pytest", "-n", "2", "--dist", "loadfile", *rest, env=env)
+
+
 def main(argv: list[str]) -> int:
     if not argv or argv[0] in {"-h", "--help", "help"}:
         print(usage())
@@ -123,14 +138,7 @@ def main(argv: list[str]) -> int:
     if task == "warm":
         return _run(PY, "-m", "impactlab", "warm", *rest, env=env)
     if task == "test":
-        for cmd in (_RUFF, _RUFF_FORMAT, _MYPY):
-            if _run(*cmd, env=env) != 0:
-                return 1
-        # compiled once here, then loaded from the cache by both test workers (each would
-        # otherwise compile the same engine at the same time)
-        if _run(PY, "-m", "impactlab", "warm", env=env) != 0:
-            return 1
-        return _run(PY, "-m", "pytest", "-n", "2", "--dist", "loadfile", *rest, env=env)
+        return _test(rest, env)
     if task == "lint":
         cmds = (_RUFF, _RUFF_FORMAT, _MYPY, [BIN / "lint-imports", "--no-cache"])
         return max(_run(*cmd, env=env) for cmd in cmds)

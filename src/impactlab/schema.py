@@ -8,21 +8,31 @@ Units are SI and spelled one way, parseable by pint: ``"m"``, ``"m/s"``, ``"rad"
 
 To add an engine output: append a ``Field`` to ``OUTPUT_FIELDS`` (the order is the column order
 of the engine's ``out`` array, so append, never insert) and fill it in
-``impactlab.dynamics.core.driver``.
+``impactlab.dynamics.core.driver`` (a recompilation). To add a field computed from the engine's
+outputs, without touching the compiled engine: ``register_output`` (a derived output; it appears
+in ``ImpactResult``, ``BatchResult``, ``DropResult`` and sweep stores, see
+docs/architecture.md, "An output field").
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 __all__ = [
+    "DERIVED_FIELDS",
     "FIELDS",
     "HISTORY_FIELDS",
     "OUTPUT_FIELDS",
     "RESULT_FIELDS",
+    "DerivedField",
     "Field",
+    "derived_values",
     "description",
+    "register_output",
     "unit",
+    "unregister_output",
 ]
 
 
@@ -162,3 +172,65 @@ def _get(name: str) -> Field:
         return FIELDS[name]
     except KeyError:
         raise KeyError(f"unknown result field {name!r}; known: {', '.join(FIELDS)}") from None
+
+
+@dataclass(frozen=True)
+class DerivedField:
+    """An output computed from the engine's outputs: ``field`` (name, unit, meaning), the
+    engine outputs it ``needs`` (``OUTPUT_FIELDS`` names) and ``compute``, called with them as
+    keyword arguments (floats, or arrays of one shape: it must broadcast, as numpy does)."""
+
+    field: Field
+    needs: tuple[str, ...]
+    compute: Callable[..., Any]
+
+
+#: The derived outputs registered (``register_output``), by name, in registration order.
+DERIVED_FIELDS: dict[str, DerivedField] = {}
+
+
+def register_output(
+    name: str,
+    unit: str,
+    description: str,
+    needs: tuple[str, ...] | list[str],
+    compute: Callable[..., Any],
+    symbol: str = "",
+) -> DerivedField:
+    """Register a derived output ``name`` [``unit``, SI, pint-parseable; "1" dimensionless],
+    computed by ``compute(**{need: value})`` from the engine outputs ``needs``. It then shows
+    in every result's ``to_dict`` and as an attribute (``ImpactResult``, ``DropResult``), as a
+    column of ``BatchResult`` (``batch[name]``, ``to_xarray``, ``to_dataframe``) and as a sweep
+    output (a store variable). ValueError for a name already taken (any field), a need that is
+    no engine output, or a ``compute`` that is not callable."""
+    if not (isinstance(name, str) and name.isidentifier() and not name.startswith("_")):
+        raise ValueError(f"output name must be a Python identifier, got {name!r}")
+    if name in FIELDS:
+        raise ValueError(f"output name {name!r} is taken: {FIELDS[name].description}")
+    outputs = {f.name for f in OUTPUT_FIELDS}
+    bad = [n for n in needs if n not in outputs]
+    if not needs or bad:
+        raise ValueError(
+            f"needs must name engine outputs, got {list(needs)!r}; engine outputs: "
+            f"{', '.join(f.name for f in OUTPUT_FIELDS)}"
+        )
+    if not callable(compute):
+        raise ValueError(f"compute must be callable, got {compute!r}")
+    derived = DerivedField(Field(name, unit, description, symbol), tuple(needs), compute)
+    DERIVED_FIELDS[name] = derived
+    FIELDS[name] = derived.field
+    return derived
+
+
+def unregister_output(name: str) -> None:
+    """Remove the derived output ``name`` (ValueError if none is registered under it)."""
+    if DERIVED_FIELDS.pop(name, None) is None:
+        raise ValueError(f"no derived output {name!r}; registered: {list(DERIVED_FIELDS)}")
+    del FIELDS[name]
+
+
+def derived_values(value_of: Callable[[str], Any]) -> dict[str, Any]:
+    """Every derived output from ``value_of(engine output name)`` (a float or an array)."""
+    return {
+        name: d.compute(**{n: value_of(n) for n in d.needs}) for name, d in DERIVED_FIELDS.items()
+    }

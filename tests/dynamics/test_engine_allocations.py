@@ -17,6 +17,8 @@ from impactlab.dynamics import batch
 from impactlab.dynamics.models import body_params, contact_model, kernel_params
 from impactlab.materials import AISI_1010
 
+pytestmark = pytest.mark.perf  # resource use of the compiled engine, not its speed
+
 
 @pytest.mark.parametrize("friction", ["coulomb", "mindlin"])
 def test_one_allocation_per_impact(friction) -> None:

@@ -6,6 +6,8 @@ import pytest
 
 from impactlab.dynamics.core import accumulate, approach, integrator
 
+pytestmark = pytest.mark.perf  # resource use of the compiled engine, not its speed
+
 
 @pytest.mark.parametrize(
     "fn",

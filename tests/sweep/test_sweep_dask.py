@@ -21,6 +21,8 @@ from sweep_fakes import BarrierEvaluator, GatedEvaluator, store_files, wait_for
 
 from impactlab.sweep import ENGINE, Study, SweepStore, run_sweep
 
+pytestmark = pytest.mark.slow  # end to end: a real Dask cluster of separate processes
+
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parents[1]
 

@@ -22,6 +22,8 @@ from impactlab.sweep import SweepStore, run_sweep
 from impactlab.sweep.hooks import KILL_AT, KILL_SIGNAL
 from impactlab.sweep.locking import pid_alive
 
+pytestmark = pytest.mark.slow  # end to end: sweeps in child processes, killed and resumed
+
 HERE = Path(__file__).resolve().parent
 
 _SCRIPT = textwrap.dedent("""

@@ -11,6 +11,7 @@ import sys
 import warnings
 from collections.abc import Iterator
 from contextlib import contextmanager
+from pathlib import Path
 from typing import Any, TextIO
 
 import typer
@@ -57,9 +58,20 @@ def _root(
         is_eager=True,
         help="Print the version of impactlab and exit.",
     ),
+    law_file: list[Path] = typer.Option(
+        [],
+        "--law-file",
+        help="A contact law of one's own from measured indentation data (TOML, see "
+        "docs/laws/user.md); its name then works as --law NAME. Repeatable.",
+    ),
 ) -> None:
     """Elastic-plastic oblique impacts with friction: simulate, invert, analyze, sweep,
     reproduce the paper."""
+    if law_file:
+        from impactlab.contact import read_law_file
+
+        for path in law_file:
+            read_law_file(path)
 
 
 # Each command module defines ``register(app)``; registered in this order (the help's order).

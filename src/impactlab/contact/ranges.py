@@ -72,6 +72,7 @@ __all__ = [
     "RANGES",
     "STATUSES",
     "LawRange",
+    "alias_range",
     "calibrated_max",
     "critical_interference",
     "delta_ratio",
@@ -271,6 +272,12 @@ for _r in _ALL:
     _RATIO_BY_ID[_r.law.law_id] = _r.delta_ratio_max
 _STATUS_BY_ID = {r.law.law_id: r.status for r in _ALL}
 _NAME_BY_ID = {r.law.law_id: str(r.law) for r in _ALL}
+
+
+def alias_range(name: str, law: Law) -> None:
+    """Let the law registered as ``name`` (``contact.registry.register_law``) share ``law``'s
+    range (a user's law is the tabulated law under its own name)."""
+    _BY_NAME.setdefault(name, RANGES[law])
 
 
 def law_range(law: str | Law) -> LawRange:

@@ -224,12 +224,15 @@ def interpolation_error(c: IndentationCurves) -> tuple[float, float]:
     return worst_f, worst_r
 
 
-def select_curves(pair: ContactPair, candidates: Sequence[IndentationCurves]) -> IndentationCurves:
+def select_curves(
+    pair: ContactPair, candidates: Sequence[IndentationCurves], law: str = "tabulated"
+) -> IndentationCurves:
     """The curves whose E*/S_y and nu match ``pair``'s (the closest in E*/S_y, within
-    ``RATIO_TOLERANCE`` and ``NU_TOLERANCE``); ValueError naming the nearest otherwise."""
+    ``RATIO_TOLERANCE`` and ``NU_TOLERANCE``); ValueError naming the law ``law`` and the
+    nearest curves otherwise."""
     ratio = pair.E_star / pair.yield_strength
     if not candidates:
-        raise ValueError("law 'tabulated': no indentation curves to choose from")
+        raise ValueError(f"law {law!r}: no indentation curves to choose from")
 
     def off(c: IndentationCurves) -> float:
         return abs(math.log(ratio / c.e_star_over_sy))
@@ -243,7 +246,7 @@ def select_curves(pair: ContactPair, candidates: Sequence[IndentationCurves]) ->
         return min(fits, key=off)
     near = min(candidates, key=off)
     raise ValueError(
-        f"law 'tabulated': no indentation curves for E*/S_y = {ratio:.4g}, nu = {pair.nu:g} "
+        f"law {law!r}: no indentation curves for E*/S_y = {ratio:.4g}, nu = {pair.nu:g} "
         f"(within {100 * RATIO_TOLERANCE:g} % and {NU_TOLERANCE:g}); nearest: {near.name!r} "
         f"(E*/S_y = {near.e_star_over_sy:.4g}, nu = {near.nu:g}); make curves for this pair "
         f"with impactlab.fe.tabulated_law(pair, radius) (runs CalculiX) or from measured data "
@@ -293,7 +296,7 @@ class Tabulated(ContactLaw):
             raise ValueError(f"pair must be a ContactPair, got {type(pair).__name__}")
         R = check_positive("radius", radius, "m")
         self.parameter_values(params)
-        c = select_curves(pair, self.candidates())
+        c = select_curves(pair, self.candidates(), self.name)
         E, Sy, nu = pair.E_star, pair.yield_strength, pair.nu
         dc, fc = jg_critical(E, R, Sy, nu)
         p = np.full(k.NPARAM, np.nan)

@@ -1,9 +1,8 @@
 """Result objects of the flexible drop (``simulate_drop``): immutable, SI units.
 
-``DropResult`` lists every contact of the sequence (``ContactRecord``) and the dents they left
-(``DentRecord``), the totals a user compares with an experiment, the terms of the energy
-balance and, if asked, the history (``DropHistory``). Field units: ``UNITS`` (from the
-integrator's output table ``impactlab.dynamics.flexcore.layout.DROP_FIELDS``).
+``DropResult``: every contact (``ContactRecord``), the dents (``DentRecord``), the totals a user
+compares with an experiment, the energy balance and, if asked, the history (``DropHistory``).
+Units: ``UNITS`` (from ``impactlab.dynamics.flexcore.layout.DROP_FIELDS``).
 """
 
 from __future__ import annotations
@@ -18,6 +17,8 @@ from impactlab._display import html_table
 from impactlab._json import jsonable
 from impactlab._version import __version__
 from impactlab.contact.ranges import law_range
+from impactlab.dynamics.derived import DerivedOutputs
+from impactlab.dynamics.drop_history import DropHistory
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.provenance import result_record
 from impactlab.dynamics.results import pint_quantities
@@ -126,55 +127,6 @@ def _from_row(cls: type[_R], row: np.ndarray, columns: tuple[int, ...]) -> _R:
     return cls(**values)
 
 
-@dataclass(frozen=True, eq=False)
-class DropHistory:
-    """The time history of a drop: columns ``flexcore.layout.DROP_HISTORY_FIELDS``
-    (``history["fn0"]``); the properties name the ones a figure needs."""
-
-    data: np.ndarray = field(repr=False)
-
-    def __post_init__(self) -> None:
-        a = np.array(self.data, dtype=np.float64, copy=True)
-        a.setflags(write=False)
-        object.__setattr__(self, "data", a)
-
-    def __len__(self) -> int:
-        return int(self.data.shape[0])
-
-    def __getitem__(self, name: str) -> np.ndarray:
-        if name not in F.DROP_HISTORY_FIELDS:
-            raise KeyError(f"unknown history column {name!r}; known: {F.DROP_HISTORY_FIELDS}")
-        return self.data[:, F.DROP_HISTORY_FIELDS.index(name)]
-
-    @property
-    def t(self) -> np.ndarray:
-        """Time from the first touch [s]."""
-        return self["t"]
-
-    @property
-    def normal_force(self) -> np.ndarray:
-        """Normal contact force on the tip (end 0) [N]."""
-        return self["fn0"]
-
-    @property
-    def tangential_force(self) -> np.ndarray:
-        """Tangential contact force on the tip [N] (+x)."""
-        return self["ft0"]
-
-    @property
-    def tip_x(self) -> np.ndarray:
-        """x of the tip's lowest point (below the centre of its sphere) [m]."""
-        return self["x0"]
-
-    @property
-    def tip_height(self) -> np.ndarray:
-        """Height of the tip's lowest point above the undeformed flat [m] (-delta)."""
-        return -self["delta0"]
-
-    def __repr__(self) -> str:
-        return f"DropHistory({len(self)} rows: {', '.join(F.DROP_HISTORY_FIELDS)})"
-
-
 def _contact_text(c: ContactRecord) -> str:
     return (
         f"t0 {c.start * 1e3:.4g} ms, {c.duration * 1e3:.3g} ms, delta_max "
@@ -199,7 +151,7 @@ _SUMMARY: dict[str, tuple[str, str, float]] = {
 
 
 @dataclass(frozen=True, eq=False)
-class DropResult:
+class DropResult(DerivedOutputs):
     """The outcome of one drop (SI units; units of the fields in ``UNITS``). Immutable.
 
     It carries the summary attributes of ``ImpactResult`` (``impactlab.simulate`` returns it
@@ -375,6 +327,7 @@ class DropResult:
         d["warnings"] = list(self.warnings)
         d["mean_force"] = self.mean_force
         d["energy_balance"] = self.energy_balance
+        d |= self.derived()  # schema.register_output
         d["references"] = [str(r) for r in self.references]
         d["impactlab_version"] = __version__
         d["input"] = self.input
@@ -404,8 +357,7 @@ class DropResult:
                 f"duration={self.duration:.6g} s{flags})")  # fmt: skip
 
     def __str__(self) -> str:
-        rows = self._rows()
-        width = max(len(label) for label, _v, _u in rows)
+        rows, width = self._rows(), max(len(label) for label, _v, _u in self._rows())
         body = (f"  {label.ljust(width)}  {value} {unit}".rstrip() for label, value, unit in rows)
         return "DropResult\n" + "\n".join(body)
 

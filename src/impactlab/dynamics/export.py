@@ -122,6 +122,8 @@ def batch_dataset(batch: Any) -> Any:
         )
     for j, name in enumerate(OUTPUT_FIELDS):
         variables[name] = _output_var(name, out[:, j], ok)
+    for name in schema.DERIVED_FIELDS:  # schema.register_output
+        variables[name] = _output_var(name, batch[name], ok)
     if batch.max_delta_ratio is not None:
         variables["max_delta_ratio"] = (
             "case",

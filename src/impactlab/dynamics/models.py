@@ -3,7 +3,7 @@
 ``build_contact_model`` is the one place where the engine's users (``simulate``,
 ``simulate_batch``, the sweep) build a ContactModel; it is cached by value (laws, materials and
 parameters are immutable and hashable). ``kernel_params`` and ``body_params`` give the
-float64 vectors the compiled core reads, cached per model object and per (body, flat) value.
+float64 vectors the compiled core reads (the first cached per model object).
 ``references_used`` lists the sources a result records; ``engine_setup`` gathers all of these
 for ``simulate``'s fast path, once per (body, flat, law name, friction name).
 """
@@ -137,33 +137,11 @@ def references_used(
 _REFERENCES: dict[tuple[int, str, bool], tuple[ContactModel, tuple[Reference, ...]]] = {}
 
 
-def _hashable(*values: Any) -> bool:
-    try:
-        hash(values)
-    except TypeError:
-        return False
-    return True
-
-
-#: [body, flat, vector] of the last ``body_params`` call (the objects are immutable).
-_LAST_BODY: list[Any] = []
-
-
-@functools.lru_cache(maxsize=256)
-def _cached_body_params(body: Rod | Sphere, flat: Material) -> np.ndarray:
-    return np.require(body.to_params(flat), np.float64, ["C", "W"])
-
-
 def body_params(body: Rod | Sphere, flat: Material) -> np.ndarray:
     """The body vector (``impactlab.bodies.layout``) of ``body`` on ``flat`` for the compiled
-    engine (writable, C-contiguous; cached by value, and by identity for the last pair)."""
-    last = _LAST_BODY
-    if last and last[0] is body and last[1] is flat:
-        return last[2]  # type: ignore[no-any-return]
-    if _hashable(body, flat):
-        bp = _cached_body_params(body, flat)
-        _LAST_BODY[:] = [body, flat, bp]
-        return bp
+    engine (writable, C-contiguous). Not cached: it costs 1.6 us, and the callers that repeat
+    it keep what they build (``engine_setup``, the sweep's models; docs/architecture.md,
+    "Caches")."""
     return np.require(body.to_params(flat), np.float64, ["C", "W"])
 
 

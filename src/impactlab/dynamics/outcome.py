@@ -39,8 +39,6 @@ _ROW = itemgetter(
 #: id(model) -> (model, delta_ref, delta_ratio_max) of ``_law_flag``, or (model, None, None)
 #: where ``contact.ranges.extrapolation_flags`` itself decides (unknown law, delta_ref = 0).
 _RANGES: dict[int, tuple[ContactModel, float | None, float | None]] = {}
-#: int -> ResultFlag (the flag values an impact can take).
-_FLAGS: dict[int, ResultFlag] = {}
 
 
 def _law_flag(model: ContactModel, delta_max: float) -> int:
@@ -63,14 +61,6 @@ def _law_flag(model: ContactModel, delta_max: float) -> int:
     if ref is None or ratio_max is None:
         return int(extrapolation_flags(model.law_id, model.params, delta_max))
     return FLAG_LAW_EXTRAPOLATED if delta_max / ref > ratio_max else 0
-
-
-def _result_flags(value: int) -> ResultFlag:
-    """``ResultFlag(value)``, one object per value."""
-    flag = _FLAGS.get(value)
-    if flag is None:
-        flag = _FLAGS[value] = ResultFlag(value)
-    return flag
 
 
 def status_error(
@@ -158,7 +148,7 @@ def engine_result(
             "angle_out": angle_out,
             "t_max": t_max,
             "n_steps": int(n_steps),
-            "flags": _result_flags(int(flags) | _law_flag(model, delta_max)),
+            "flags": ResultFlag(int(flags) | _law_flag(model, delta_max)),
             "history": None if history is None else History(history),
             "references": references,
             "_law_id": model.law_id,

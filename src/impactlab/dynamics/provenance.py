@@ -31,6 +31,7 @@ from impactlab._version import __version__
 from impactlab.bodies import Rod, Sphere
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.contact import ContactModel, get_law
+from impactlab.contact.registry import ensure_laws, registered_laws
 from impactlab.dynamics.checks import gravity_value
 from impactlab.dynamics.core.layout import DEFAULT_RTOL, PARTIAL_SLIP_RTOL
 from impactlab.dynamics.flexcore.layout import DROP_DEFAULT_RTOL as DROP_RTOL
@@ -213,6 +214,8 @@ def input_record(
         del record["constant_angle"]
     for k, v in (extra or {}).items():
         record[k] = encode(v, k)
+    if isinstance(law, str) and law in registered_laws():  # a user's law travels with its data
+        record["law_data"] = registered_laws()[law].record()
     return record
 
 
@@ -256,7 +259,9 @@ def from_record(record: Mapping[str, Any]) -> dict[str, Any]:
     fmt = record.get("format", RECORD_FORMAT)
     if fmt != RECORD_FORMAT:
         raise ValueError(f"record format {fmt!r} is not supported (this impactlab reads 1)")
-    args = {k: decode(v) for k, v in record.items() if k not in _META}
+    if "law_data" in record:  # a user's law (register_law): registered here if need be
+        ensure_laws({str(record["law"]): record["law_data"]})
+    args = {k: decode(v) for k, v in record.items() if k not in _META and k != "law_data"}
     args["velocity"] = tuple(args["velocity"])
     return args
 

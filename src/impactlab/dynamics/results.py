@@ -18,6 +18,7 @@ from impactlab.contact.ranges import extrapolation, extrapolation_flags, range_s
 from impactlab.dynamics.core.layout import HISTORY_FIELDS, OUTPUT_FIELDS
 from impactlab.dynamics.core.status import STATUS_MESSAGES
 from impactlab.dynamics.dent import dent_map
+from impactlab.dynamics.derived import DerivedOutputs, batch_derived
 from impactlab.dynamics.export import batch_dataset, batch_html
 from impactlab.dynamics.history import HISTORY_UNITS, DentMap, History, readonly_copy
 from impactlab.dynamics.provenance import result_record
@@ -83,7 +84,7 @@ SUMMARY_FIELDS: tuple[str, ...] = (
 
 
 @dataclass(frozen=True, eq=False)
-class ImpactResult:
+class ImpactResult(DerivedOutputs):
     """The outcome of one impact (SI units). Computed once; immutable.
 
     Units and meanings of the fields: ``impactlab.schema`` (``UNITS``). ``references`` are the
@@ -171,6 +172,7 @@ class ImpactResult:
         d["extrapolated"] = self.extrapolated
         d["flags"] = int(self.flags)
         d["warnings"] = list(self.warnings)
+        d |= self.derived()  # schema.register_output
         d["impactlab_version"] = __version__
         d["input"] = self.input
         if include_history and self.history is not None:
@@ -299,7 +301,10 @@ class BatchResult:
         except ValueError:
             if name in self.inputs:
                 return self.inputs[name]
-            raise KeyError(f"unknown field {name!r}; known: {', '.join(OUTPUT_FIELDS)}") from None
+            if name in schema.DERIVED_FIELDS:
+                return batch_derived(self.__getitem__, name)
+            known = ", ".join((*OUTPUT_FIELDS, *schema.DERIVED_FIELDS))
+            raise KeyError(f"unknown field {name!r}; known: {known}") from None
 
     def __getattr__(self, name: str) -> np.ndarray:
         if name.startswith("_") or name in (
@@ -349,6 +354,8 @@ class BatchResult:
         df = pd.DataFrame({k: np.array(v) for k, v in self.inputs.items()})
         for j, name in enumerate(OUTPUT_FIELDS):
             df[name] = np.array(self.out[:, j])
+        for name in schema.DERIVED_FIELDS:
+            df[name] = self[name]
         df["status"] = np.array(self.status)
         return df
 

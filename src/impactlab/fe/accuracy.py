@@ -1,6 +1,6 @@
 """Measured accuracy of every contact law against the shipped FE reference curves.
 
-For each registered law (``impactlab.contact.law_names``) and each shipped case
+For each built-in law (``impactlab.contact.builtin_law_names``) and each shipped case
 (``impactlab.fe.curves``), the law is built for the case's contact pair and radius exactly as a
 simulation builds it (``get_law(name).build(pair, radius)``, default parameters) and compared
 with the FE results:
@@ -31,7 +31,7 @@ from typing import Any
 
 import numpy as np
 
-from impactlab.contact import get_law, law_names
+from impactlab.contact import builtin_law_names, get_law
 from impactlab.fe.curves import ReferenceCase, load_cases
 
 #: Largest relative error of the loading force inside the verified range.
@@ -363,7 +363,7 @@ class CaseAccuracy:
 def measured_laws() -> tuple[str, ...]:
     """The laws measured here: every registered law but the tabulated one, which is built
     from these very curves (its round trip: docs/laws/tabulated.md)."""
-    return tuple(n for n in law_names() if n != "tabulated")
+    return tuple(n for n in builtin_law_names() if n != "tabulated")
 
 
 def accuracy(

@@ -65,6 +65,7 @@ def compute_chunk(
     t0 = time.perf_counter()
     set_numba_threads(numba_threads if numba_threads is not None else _dask_worker_threads())
     before = numba_cache_stats()
+    study.register_laws()  # a user's law travels with the study to every worker
     numeric, categories, bshape = study.chunk_cases(index)
     statics = Statics(categories, study.law_params, study.engine.kwargs())
     t1 = time.perf_counter()

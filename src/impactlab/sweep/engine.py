@@ -30,6 +30,7 @@ from impactlab.dynamics.batch import (
     run_arrays,
 )
 from impactlab.friction import batch_friction_error
+from impactlab.schema import DERIVED_FIELDS
 from impactlab.sweep.flexible import FLEXIBLE_BODY, evaluate_flexible, validate_flexible
 from impactlab.sweep.inputs import INTEGER_OUTPUTS, KINEMATIC_INPUTS
 from impactlab.sweep.material_inputs import validate_material_names
@@ -126,7 +127,8 @@ class EngineEvaluator:
     identity = "impactlab.dynamics.batch"
 
     def output_fields(self) -> tuple[str, ...]:
-        return tuple(OUTPUT_FIELDS)
+        """The engine's outputs, then the derived outputs (``schema.register_output``)."""
+        return (*OUTPUT_FIELDS, *DERIVED_FIELDS)
 
     def status_messages(self) -> dict[int, str]:
         return {int(k): str(v) for k, v in STATUS_MESSAGES.items()}
@@ -149,6 +151,27 @@ class EngineEvaluator:
         if statics.categories.get("body") == FLEXIBLE_BODY:  # one drop per case
             return evaluate_flexible(cases, statics, outputs)
         return evaluate(cases, statics, outputs)
+
+
+def computed_outputs(kept: Sequence[str]) -> tuple[str, ...]:
+    """The engine outputs a chunk computes to give ``kept``: its engine outputs and those the
+    derived ones among it need (``schema.register_output``)."""
+    needs = [n for o in kept if o in DERIVED_FIELDS for n in DERIVED_FIELDS[o].needs]
+    return tuple(dict.fromkeys([*(o for o in kept if o not in DERIVED_FIELDS), *needs]))
+
+
+def with_derived(values: Mapping[str, np.ndarray], kept: Sequence[str]) -> dict[str, np.ndarray]:
+    """``kept`` from a chunk's engine outputs ``values``: the derived outputs computed here (the
+    writer's process, where they were registered), the others as they are."""
+    out = {}
+    for o in kept:
+        d = DERIVED_FIELDS.get(o)
+        if d is None:
+            out[o] = values[o]
+        else:
+            got = d.compute(**{n: values[n] for n in d.needs})
+            out[o] = np.asarray(got, dtype=np.float64)
+    return out
 
 
 def _validate_categories(categories: Mapping[str, Sequence[str]], frictions: Sequence[str]) -> None:
@@ -241,8 +264,10 @@ __all__ = [
     "Evaluator",
     "Statics",
     "build_models",
+    "computed_outputs",
     "evaluate",
     "numba_cache_stats",
+    "with_derived",
 ]
 
 ENGINE = EngineEvaluator()

@@ -54,7 +54,7 @@ from impactlab.sweep.backends import (
 )
 from impactlab.sweep.chunks import ChunkResult
 from impactlab.sweep.display import sweep_result_html
-from impactlab.sweep.engine import ENGINE, Evaluator
+from impactlab.sweep.engine import ENGINE, Evaluator, computed_outputs, with_derived
 from impactlab.sweep.inputs import ALWAYS_STORED, CATEGORY_INPUTS, OUTPUT_ALIASES
 from impactlab.sweep.integrity import describe
 from impactlab.sweep.limits import usable_cores
@@ -347,7 +347,8 @@ def _run_store(
 
     def sink(res: ChunkResult, advance: Callable[[int], None]) -> None:
         tw = time.perf_counter()
-        sstore.write_chunk(writer, st, res.index, res.outputs, res.status)
+        outputs = with_derived(res.outputs, meta.outputs)  # derived outputs: computed here
+        sstore.write_chunk(writer, st, res.index, outputs, res.status)
         stats.write_s += time.perf_counter() - tw
         stats.chunks_computed += 1
         stats.cases_computed += res.n_cases
@@ -363,7 +364,7 @@ def _run_store(
 
     try:
         with _progress(lay.n_cases, done_cases, st.name, show) as advance:
-            job = Job(st, pending, ev, meta.outputs, sink, advance)
+            job = Job(st, pending, ev, computed_outputs(meta.outputs), sink, advance)
             if be.name == "threads":
                 run_threads(job, be.workers)
             elif be.name == "processes":

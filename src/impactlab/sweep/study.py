@@ -28,6 +28,7 @@ from typing import Any
 import numpy as np
 
 from impactlab.contact import get_law, law_names
+from impactlab.contact.registry import ensure_laws, law_records
 from impactlab.sweep.dimensions import (
     Axis,
     Layout,
@@ -168,6 +169,9 @@ class Study:
     outputs : engine outputs to keep (None: all; the paper's symbols L_s, T, F are accepted).
     engine : ``EngineOptions`` passed to the engine.
     law_params : parameters of the contact law (``impactlab laws``), fixed for the study.
+    laws : the user's laws (``impactlab.contact.register_law``) the study uses, name -> record;
+        filled from the registry, and registered from it where the study runs (a worker
+        process), so the law's data travel with the study and enter its hash.
     chunk_size : target number of cases per chunk (the unit of work, storage and resumption).
     uncertainty : what ``impactlab sweep`` reports at the end of a Monte Carlo study.
     max_cases : the largest number of cases accepted (a bigger study is refused with an estimate
@@ -181,6 +185,7 @@ class Study:
     outputs: Sequence[str] | None = None
     engine: EngineOptions = field(default_factory=EngineOptions)
     law_params: Mapping[str, float] = field(default_factory=dict)
+    laws: Mapping[str, Any] = field(default_factory=dict)
     chunk_size: int = DEFAULT_CHUNK_SIZE
     description: str = ""
     uncertainty: UncertaintySpec | None = None
@@ -206,7 +211,11 @@ class Study:
             object.__setattr__(self, "outputs", _check_outputs(self.outputs))
         if not isinstance(self.engine, EngineOptions):
             raise ValueError(f"engine must be EngineOptions, got {self.engine!r}")
+        if not isinstance(self.laws, Mapping):
+            raise ValueError(f"laws must be a mapping of law names to records, got {self.laws!r}")
+        ensure_laws(self.laws)
         laws = next((a.values for a in axes if a.name == "law"), (self.value_of("law"),))
+        object.__setattr__(self, "laws", law_records(laws))
         object.__setattr__(self, "law_params", _check_law_params(self.law_params, laws))
         if (
             isinstance(self.chunk_size, bool)
@@ -305,6 +314,8 @@ class Study:
             "engine": {k: v for k, v in self.engine.to_dict().items() if v is not None},
             "law_params": dict(self.law_params),
         }
+        if self.laws:  # only then: the hash of a study of built-in laws stays as it was
+            d["laws"] = {k: dict(v) for k, v in self.laws.items()}
         # the dimension order is meaningful: keep it explicit (JSON objects are sorted)
         d["grid_order"] = [a.name for a in self.axes]
         if self.sample is not None:
@@ -349,6 +360,11 @@ class Study:
         """Read a study file (TOML); ``max_cases`` overrides the file's."""
         data, source = read_study_file(path)
         return cls(**study_arguments(data, source, max_cases))
+
+    def register_laws(self) -> None:
+        """Register the study's own laws (``laws``) in this process, where they are not yet
+        (a pool or Dask worker)."""
+        ensure_laws(self.laws)
 
 
 def load_study(

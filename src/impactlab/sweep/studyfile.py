@@ -18,6 +18,7 @@ from typing import Any
 
 import numpy as np
 
+from impactlab.contact.law_file import read_law_file
 from impactlab.sweep.dimensions import Axis, Sample, Value
 from impactlab.sweep.distributions import (
     Distribution,
@@ -43,6 +44,7 @@ _TABLES = (
     "outputs",
     "engine",
     "law_params",
+    "laws",
     "uncertainty",
     "format",
     "grid_order",
@@ -76,6 +78,10 @@ def read_study_file(path: str | Path) -> tuple[dict[str, Any], str]:
     study_tab = dict(data.get("study", {})) if isinstance(data.get("study"), dict) else {}
     study_tab.setdefault("name", re.sub(r"[^A-Za-z0-9._-]", "_", p.stem).lstrip(".") or "study")
     data["study"] = study_tab
+    if isinstance(data.get("laws"), dict):  # law files are relative to the study file
+        data["laws"] = {
+            k: str(p.parent / v) if isinstance(v, str) else v for k, v in data["laws"].items()
+        }
     return data, str(p)
 
 
@@ -121,10 +127,32 @@ def study_arguments(
         "engine": _engine(table("engine")),
         "uncertainty": _uncertainty(table("uncertainty")) if "uncertainty" in data else None,
         "law_params": table("law_params"),
+        "laws": _laws(table("laws"), source),
         "max_cases": limit,
     }
     check_flexible_study(args)  # body = "flexible_rod" (impactlab.sweep.flexible)
     return args  # the kinematic rules: Study.__post_init__ (dimensions.check_kinematics)
+
+
+def _laws(table: Mapping[str, Any], source: str) -> dict[str, dict[str, Any]]:
+    """``[laws]``: name -> a law file (``contact.law_file``; relative to the study file) or a
+    registered law's record (``Study.to_dict``), each registered; their records by name."""
+    out = {}
+    for name, value in table.items():
+        if isinstance(value, str):
+            law = read_law_file(value)
+            if law.name != name:
+                raise ValueError(
+                    f"{source}: [laws] {name} = {value!r}: the file's law is named {law.name!r}"
+                )
+            out[name] = law.record()
+        elif isinstance(value, Mapping):
+            out[name] = dict(value)
+        else:
+            raise ValueError(
+                f"{source}: [laws] {name} must be a law file's path or a law record, got {value!r}"
+            )
+    return out
 
 
 def _quantity(value: Any, unit: str, bare_unit: str | None, label: str) -> float:

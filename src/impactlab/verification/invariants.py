@@ -10,7 +10,7 @@ from typing import Any
 import numpy as np
 
 from impactlab.bodies import PAPER_ROD
-from impactlab.contact import law_names
+from impactlab.contact import builtin_law_names
 from impactlab.dynamics import simulate
 from impactlab.friction import friction_names
 from impactlab.verification.table import TOLERANCES, VerificationTable, columns, worst_of
@@ -124,7 +124,7 @@ def verify_invariants(
     tol_e = TOLERANCES["energy_history"]
     records = [
         _row(law, fr, th, vy, mu)
-        for law in (law_names() if laws is None else laws)
+        for law in (builtin_law_names() if laws is None else laws)
         for fr in (friction_names() if frictions is None else frictions)
     ]
     worst = worst_of([r["rise"] for r in records])

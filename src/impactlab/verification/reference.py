@@ -8,7 +8,7 @@ from collections.abc import Mapping, Sequence
 from typing import Any
 
 from impactlab.bodies import PAPER_ROD, Sphere
-from impactlab.contact import law_names
+from impactlab.contact import builtin_law_names
 from impactlab.dynamics import simulate
 from impactlab.dynamics.reference import simulate_reference
 from impactlab.friction import FRICTION_IDS
@@ -25,7 +25,7 @@ def reference_cases(
     """The comparison cases: the paper's rod at 20 deg, 1.41 m/s, mu = 0.2, gravity on, for every
     law and friction model, plus the 45 and 70 deg drops (Ghaednia, Coulomb) and an oblique
     sphere (Mindlin)."""
-    laws = list(law_names() if laws is None else laws)
+    laws = list(builtin_law_names() if laws is None else laws)
     frictions = list(FRICTION_IDS if frictions is None else frictions)
     cases: list[dict[str, Any]] = [
         {
@@ -40,7 +40,7 @@ def reference_cases(
         for law in laws
         for fr in frictions
     ]
-    if laws == list(law_names()) and frictions == list(FRICTION_IDS):
+    if laws == list(builtin_law_names()) and frictions == list(FRICTION_IDS):
         cases += [
             {
                 "body": "rod",

@@ -1,0 +1,243 @@
+"""Contact laws brought by the user (``register_law``): the tabulated law under a name of its own.
+
+The engine's laws are compiled and dispatched by a law id, so an arbitrary Python function
+cannot run inside them. A user's law is therefore carried by the tabulated law (``law_id``
+``TABULATED``, ``contact.tabulated``): its loading curve F(delta) and its residual depths
+delta_r(delta_max), given
+
+- as tables: ``IndentationCurves`` (measured data: ``IndentationCurves.from_arrays``,
+  ``from_csv``; or FE curves), interpolated as the tabulated law does (PCHIP, Fritsch & Carlson
+  1980; leave-one-out error stated), or
+- as Python callables ``loading(delta) -> F`` [m -> N] and ``unloading(delta_max) -> delta_r``
+  [m -> m] of one pair and radius, sampled on ``points`` interferences spaced evenly in
+  log(delta) from the elastic limit to ``delta_max``; the law built from the samples is
+  compared with the callables at every sample and between samples (``CHECKS_PER_INTERVAL``
+  points per interval) and refused where it departs by more than ``tolerance``.
+
+Like the tabulated law, the curves are kept dimensionless (Jackson & Green 2005's delta_c and
+F_c of their pair), so the law serves every pair with the same E*/S_y (within 5 %) and nu
+(within 0.03), any radius, and refuses other pairs. Its data travel as a plain record
+(``RegisteredLaw.record``, ``law_from_record``): sweeps carry it to their worker processes in
+the study.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import math
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+
+from impactlab.contact._common import jg_critical
+from impactlab.contact.indentation_data import IndentationCurves, curves_from_record
+from impactlab.contact.tabulated import Tabulated, interpolation_error
+from impactlab.materials import ContactPair
+
+#: Largest relative force error and largest delta_r/delta_max error allowed by default between
+#: a sampled law and its callables.
+DEFAULT_TOLERANCE = 0.01
+#: Default number of samples of the callables.
+DEFAULT_POINTS = 64
+#: Points compared between two neighbouring samples (besides the samples themselves).
+CHECKS_PER_INTERVAL = 7
+#: The format of a registered law's record.
+RECORD_FORMAT = "impactlab registered law"
+
+
+def check_law_name(name: Any) -> str:
+    """``name`` as a law name: lower-case letters, digits, '-' and '_', starting with a letter
+    (so it reads the same in a study file, on the command line and in a store)."""
+    ok = isinstance(name, str) and name[:1].isalpha() and name == name.strip()
+    ok = ok and all(ch.isalnum() or ch in "-_" for ch in name) and name == name.lower()
+    if not ok:
+        raise ValueError(
+            f"law name must be lower-case letters, digits, '-' or '_', starting with a letter, "
+            f"got {name!r}"
+        )
+    return str(name)
+
+
+class RegisteredLaw(Tabulated):
+    """A user's contact law: the tabulated law of its ``curves`` under its own ``name``.
+
+    ``sampling_error`` is (largest relative force error, largest delta_r/delta_max error):
+    against the callables for a sampled law, the leave-one-out error of the interpolation for
+    tables.
+    """
+
+    def __init__(
+        self,
+        name: str,
+        curves: IndentationCurves,
+        *,
+        title: str = "",
+        sampling_error: tuple[float, float] | None = None,
+        sampled: bool = False,
+    ) -> None:
+        if not isinstance(curves, IndentationCurves):
+            raise ValueError(f"curves must be IndentationCurves, got {type(curves).__name__}")
+        super().__init__(curves)
+        self.name = check_law_name(name)  # type: ignore[misc]
+        self.title = title or f"User law {name!r} ({curves.name})"  # type: ignore[misc]
+        self.sampled = bool(sampled)
+        if sampling_error is None:
+            sampling_error = interpolation_error(curves)
+        self.sampling_error = (float(sampling_error[0]), float(sampling_error[1]))
+        how = "sampled from callables; error against them" if sampled else "leave-one-out error"
+        self.validity = (  # type: ignore[misc]
+            f"{curves.source}: the pair of the curves (E*/S_y = {curves.e_star_over_sy:.4g} "
+            f"within 5 %, nu = {curves.nu:g} within 0.03); delta up to the last tabulated point "
+            f"({curves.max_delta:.4g} delta_c, hard limit); {how}: "
+            f"{100 * self.sampling_error[0]:.2g} % in force, {self.sampling_error[1]:.2g} in "
+            f"delta_r/delta_max; unloading Hertzian"
+        )
+
+    @property
+    def own_curves(self) -> IndentationCurves:
+        """The law's curves."""
+        assert self.curves is not None
+        return self.curves[0]
+
+    def record(self) -> dict[str, Any]:
+        """The law as plain JSON-ready data (``law_from_record`` reads it back)."""
+        return {
+            "format": RECORD_FORMAT,
+            "name": self.name,
+            "title": self.title,
+            "sampled": self.sampled,
+            "sampling_error": list(self.sampling_error),
+            "curves": self.own_curves.record(),
+        }
+
+    def fingerprint(self) -> str:
+        """SHA-256 (hex, 16 digits) of the record: equal for equal data."""
+        text = json.dumps(self.record(), sort_keys=True, separators=(",", ":"))
+        return hashlib.sha256(text.encode()).hexdigest()[:16]
+
+    def describe(self) -> dict[str, Any]:
+        out = super().describe()
+        out["registered"] = True
+        out["sampling_error"] = {
+            "force": self.sampling_error[0],
+            "residual_ratio": self.sampling_error[1],
+        }
+        return out
+
+
+def law_from_record(record: Any) -> RegisteredLaw:
+    """The law of a ``RegisteredLaw.record``; ValueError for anything else."""
+    if not isinstance(record, dict) or record.get("format") != RECORD_FORMAT:
+        raise ValueError(f"not a registered contact law's record (format {RECORD_FORMAT!r})")
+    try:
+        err = record["sampling_error"]
+        return RegisteredLaw(
+            record["name"],
+            curves_from_record(record["curves"]),
+            title=str(record.get("title", "")),
+            sampling_error=(float(err[0]), float(err[1])),
+            sampled=bool(record.get("sampled", False)),
+        )
+    except (KeyError, TypeError, IndexError) as exc:
+        raise ValueError(f"registered contact law's record: missing or bad entry {exc}") from None
+
+
+def _values(what: str, fn: Callable[[float], Any], x: np.ndarray) -> np.ndarray:
+    """``fn`` at every point of ``x`` (floats in, one finite float out each)."""
+    out = np.empty(x.size)
+    for i, xi in enumerate(x):
+        try:
+            v = float(fn(float(xi)))
+        except Exception as exc:  # a user's function: say which call failed
+            raise ValueError(f"{what}({float(xi)!r}) raised {type(exc).__name__}: {exc}") from None
+        if not math.isfinite(v):
+            raise ValueError(f"{what}({float(xi)!r}) returned {v!r}; it must be finite")
+        out[i] = v
+    return out
+
+
+def sample_law(
+    name: str,
+    loading: Callable[[float], Any],
+    unloading: Callable[[float], Any],
+    pair: ContactPair,
+    radius: float,
+    delta_max: float,
+    *,
+    elastic_limit: float | None = None,
+    points: int = DEFAULT_POINTS,
+    tolerance: float = DEFAULT_TOLERANCE,
+    title: str = "",
+    source: str = "",
+) -> RegisteredLaw:
+    """The law of the callables ``loading`` (F [N] at delta [m]) and ``unloading`` (delta_r [m]
+    after loading to delta_max [m]) of ``pair`` and a sphere of ``radius`` [m], sampled on
+    ``points`` interferences from ``elastic_limit`` [m] (default: the pair's Jackson-Green
+    delta_c; Hertz below it, and ``loading`` must agree with Hertz there within 5 %) to
+    ``delta_max`` [m]. ValueError where the law built from the samples departs from the
+    callables by more than ``tolerance`` (relative in force, absolute in delta_r/delta_max)
+    anywhere on the check grid (the samples and ``CHECKS_PER_INTERVAL`` points between each
+    two)."""
+    if not isinstance(pair, ContactPair):
+        raise ValueError(f"pair must be a ContactPair, got {type(pair).__name__}")
+    for what, fn in (("loading", loading), ("unloading", unloading)):
+        if not callable(fn):
+            raise ValueError(f"{what} must be a callable of one float [m], got {fn!r}")
+    if isinstance(points, bool) or not isinstance(points, int) or not 8 <= points <= 4096:
+        raise ValueError(f"points must be an integer in [8, 4096], got {points!r}")
+    if not (isinstance(tolerance, float | int) and 0.0 < tolerance < 1.0):
+        raise ValueError(f"tolerance must lie in (0, 1), got {tolerance!r}")
+    dc, _fc = jg_critical(pair.E_star, float(radius), pair.yield_strength, pair.nu)
+    d0 = dc if elastic_limit is None else float(elastic_limit)
+    if not (math.isfinite(d0) and d0 > 0.0):
+        raise ValueError(f"elastic_limit must be > 0 m, got {elastic_limit!r}")
+    if not (isinstance(delta_max, float | int) and math.isfinite(delta_max) and delta_max > d0):
+        raise ValueError(
+            f"delta_max must be a number of m above the elastic limit ({d0:.4g} m), "
+            f"got {delta_max!r}"
+        )
+    grid = np.geomspace(d0, float(delta_max), points)
+    curves = IndentationCurves.from_arrays(
+        pair,
+        radius,
+        grid,
+        _values("loading", loading, grid),
+        grid,
+        _values("unloading", unloading, grid),
+        name=name,
+        source=source or f"sampled from Python callables ({points} points)",
+    )
+    law = RegisteredLaw(name, curves, title=title, sampling_error=(0.0, 0.0), sampled=True)
+    model = law.build(pair, radius)
+    t = np.linspace(0.0, 1.0, CHECKS_PER_INTERVAL + 2)[:-1]
+    logs = np.log(grid)
+    check = np.append(np.exp((logs[:-1, None] + t * np.diff(logs)[:, None]).ravel()), grid[-1])
+    check = check[check <= model.max_interference]
+    f_err = model.force(check) / _values("loading", loading, check) - 1.0
+    r_model = np.array([model.unload(float(d)).delta_r for d in check])
+    r_err = (r_model - _values("unloading", unloading, check)) / check
+    worst = (float(np.max(np.abs(f_err))), float(np.max(np.abs(r_err))))
+    for label, err, unit in (("force", f_err, "relative"), ("delta_r/delta_max", r_err, "")):
+        i = int(np.argmax(np.abs(err)))
+        if abs(err[i]) > tolerance:
+            raise ValueError(
+                f"law {name!r}: the law sampled on {points} points departs from the callable's "
+                f"{label} by {float(err[i]):+.3g} {unit} at delta = {float(check[i]):.4g} m "
+                f"(tolerance {tolerance:g}): give more points, or check that F/F_Hertz never "
+                f"rises and delta_r/delta_max never falls (the tabulated law enforces both)"
+            )
+    return RegisteredLaw(name, curves, title=title, sampling_error=worst, sampled=True)
+
+
+__all__ = [
+    "CHECKS_PER_INTERVAL",
+    "DEFAULT_POINTS",
+    "DEFAULT_TOLERANCE",
+    "RECORD_FORMAT",
+    "RegisteredLaw",
+    "check_law_name",
+    "law_from_record",
+    "sample_law",
+]

@@ -1,0 +1,54 @@
+"""Derived outputs (``impactlab.schema.register_output``) on the result objects.
+
+A derived output is computed from the engine's outputs (``OUTPUT_FIELDS`` names) when it is
+read, so registering one needs no recompilation. ``DerivedOutputs`` gives a one-impact result
+(``ImpactResult``, ``DropResult``) its derived outputs as attributes and in ``derived()``; a
+batch computes them from its columns (``batch_derived``); the sweep from its chunk's arrays
+(``impactlab.sweep.engine``). An engine output that a result does not define (a drop has no
+``vn_in``) reads as NaN.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from impactlab.dynamics.core.status import REGIME_NAMES
+from impactlab.schema import DERIVED_FIELDS, derived_values
+
+_REGIME_CODES = {name: code for code, name in REGIME_NAMES.items()}
+
+
+def result_output(result: Any, name: str) -> Any:
+    """The engine output ``name`` of a one-impact result (a float; NaN where it has none)."""
+    if name in ("vx_out", "vy_out"):
+        return float(result.velocity_out[0 if name == "vx_out" else 1])
+    if name == "regime":
+        return float(_REGIME_CODES.get(getattr(result, "regime", ""), math.nan))
+    return float(getattr(result, name, math.nan))  # (an engine output is never a derived name)
+
+
+class DerivedOutputs:
+    """Mixin of the one-impact results: the derived outputs as attributes and ``derived()``."""
+
+    def derived(self) -> dict[str, Any]:
+        """Every registered derived output (``impactlab.schema.DERIVED_FIELDS``) of this
+        result, by name."""
+        return derived_values(lambda n: result_output(self, n))
+
+    def __getattr__(self, name: str) -> Any:
+        if name.startswith("_") or name not in DERIVED_FIELDS:
+            raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
+        d = DERIVED_FIELDS[name]
+        return d.compute(**{n: result_output(self, n) for n in d.needs})
+
+
+def batch_derived(column: Any, name: str) -> np.ndarray:
+    """The derived output ``name`` of a batch whose engine outputs are ``column(name)``."""
+    d = DERIVED_FIELDS[name]
+    return np.asarray(d.compute(**{n: column(n) for n in d.needs}), dtype=np.float64)
+
+
+__all__ = ["DerivedOutputs", "batch_derived", "result_output"]

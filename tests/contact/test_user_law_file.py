@@ -1,0 +1,102 @@
+"""A user's law from the shell: a law file (TOML + CSV of measured data) read by
+``impactlab --law-file FILE``, then ``--law NAME`` in ``simulate`` and ``impactlab laws NAME``;
+a study file's ``[laws]`` table; one-line errors for bad files."""
+
+from __future__ import annotations
+
+import json
+import math
+from collections.abc import Iterator
+from pathlib import Path
+
+import numpy as np
+import pytest
+from typer.testing import CliRunner
+
+import impactlab as il
+from impactlab.cli import app
+from impactlab.contact import get_law, law_names, read_law_file, unregister_law
+from impactlab.contact._common import jg_critical
+from impactlab.materials import AISI_201, AISI_1010, ContactPair
+
+PAIR = ContactPair(AISI_201, AISI_1010)
+R = 8.8e-3
+DC, FC = jg_critical(PAIR.E_star, R, PAIR.yield_strength, PAIR.nu)
+NAME = "toy-measured"
+
+
+def _write_law(folder: Path, name: str = NAME, **extra: str) -> Path:
+    """Synthetic 'measured' data: Hertz to delta_c, then F ~ delta^1.2; delta_r growing."""
+    d = DC * np.geomspace(1.0, 300.0, 40)
+    f = FC * (d / DC) ** 1.2
+    dm = DC * np.geomspace(1.0, 300.0, 20)
+    dr = 0.6 * dm * (1.0 - np.sqrt(DC / dm))
+    np.savetxt(folder / "loading.csv", np.c_[d, f], delimiter=",", header="delta,F")
+    np.savetxt(folder / "unloading.csv", np.c_[dm, dr], delimiter=",", header="delta_max,delta_r")
+    lines = {
+        "name": name,
+        "source": "synthetic data of the test",
+        "body_material": "aisi-201",
+        "flat_material": "aisi-1010",
+        "radius": "8.8 mm",
+        "loading": "loading.csv",
+        "unloading": "unloading.csv",
+        **extra,
+    }
+    path = folder / f"{name}.toml"
+    path.write_text("".join(f"{k} = {json.dumps(v)}\n" for k, v in lines.items()))
+    return path
+
+
+@pytest.fixture(scope="module")
+def law_file(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Path]:
+    path = _write_law(tmp_path_factory.mktemp("law"))
+    yield path
+    if NAME in law_names():
+        unregister_law(NAME)
+
+
+def test_law_file_on_the_command_line(law_file: Path) -> None:
+    runner = CliRunner()
+    res = runner.invoke(app, ["--law-file", str(law_file), "laws", NAME, "--json"])
+    assert res.exit_code == 0, res.output
+    info = json.loads(res.stdout)
+    assert info["name"] == NAME and info["registered"] is True
+    assert info["sampling_error"]["force"] < 0.05  # leave-one-out, smooth synthetic data
+    for columns in ("200", "80"):  # the table and the blocks of a narrow terminal
+        res = runner.invoke(app, ["--law-file", str(law_file), "laws"], env={"COLUMNS": columns})
+        assert res.exit_code == 0, res.output
+        assert NAME in res.stdout
+    args = ["--angle", "40 deg", "--vy", "-1.4", "--mu", "0.2", "--law", NAME, "--json"]
+    res = runner.invoke(app, ["--law-file", str(law_file), "simulate", *args])
+    assert res.exit_code == 0, res.output
+    e = json.loads(res.stdout)["e"]
+    e = e["value"] if isinstance(e, dict) else e
+    r = il.simulate(il.Rod.paper(), law=NAME, mu=0.2, angle=math.radians(40), velocity=(0, -1.4))
+    assert e == pytest.approx(r.e, rel=1e-12)
+
+
+def test_study_file_brings_its_law(law_file: Path) -> None:
+    from impactlab.sweep import Study
+
+    study_file = law_file.parent / "study.toml"
+    study_file.write_text(
+        f'[laws]\n{NAME} = "{law_file.name}"\n[fixed]\nlaw = "{NAME}"\nvy = -1.4\nmu = 0.2\n'
+        '[grid]\nangle = ["30 deg", "60 deg"]\n'
+    )
+    study = Study.from_toml(study_file)
+    assert set(study.laws) == {NAME}
+    assert get_law(NAME).name == NAME
+
+
+def test_bad_law_files_say_what_is_wrong(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.toml"
+    bad.write_text('name = "x"\n')
+    with pytest.raises(ValueError, match="missing key"):
+        read_law_file(bad)
+    with pytest.raises(ValueError, match=r"unknown key\(s\) \['colour'\]"):
+        read_law_file(_write_law(tmp_path, "toy-colour", colour="red"))
+    with pytest.raises(ValueError, match=r"law file .*: .*built-in law's"):
+        read_law_file(_write_law(tmp_path, "hertz"))
+    res = CliRunner().invoke(app, ["--law-file", str(tmp_path / "nowhere.toml"), "laws"])
+    assert res.exit_code != 0 and "nowhere.toml" in str(res.exception)
