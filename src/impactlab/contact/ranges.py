@@ -28,11 +28,9 @@ states
   extrapolated);
 - ``source`` (what the number rests on) and ``reference_keys`` (``impactlab.references``).
 
-The engine compares the largest interference of an impact with the upper end of the range
-(the verified one, else the stand-in ``delta_ratio_max``; strictly greater: extrapolated) and
-sets ``impactlab.flags.ResultFlag.LAW_EXTRAPOLATED``; see :func:`extrapolation_flags`
-(vectorised, used by ``run_arrays``) and :func:`law_extrapolated`. What was searched and not
-found for the stand-ins is listed in docs/laws/index.md ("Fitted ranges").
+An impact whose largest interference exceeds the upper end sets LAW_EXTRAPOLATED
+(:func:`extrapolation_flags`, :func:`law_extrapolated`); docs/laws/index.md lists what was
+searched for the stand-ins.
 """
 
 from __future__ import annotations
