@@ -20,8 +20,7 @@ states
   Kogut-Komvopoulos' ``delta_y`` (``delta/r' = 1.78 S_y/E*``), Brake's ``delta_y`` (Eq. 23),
   Thornton's ``delta_y`` (``p_0 = p_y``); for ``hertz``, which has no yield, the Jackson-Green
   ``delta_c`` of the pair (first yield);
-- ``e_over_sy``: the range of E/S_y the source covers (``None``: not found in the sources read;
-  informative, not checked by the engine: ``source`` says whether it was read first-hand);
+- ``e_over_sy``: the range of E/S_y the source covers (``None``: not found; informative);
 - ``status``: ``"confirmed"`` (read in the source), ``"provisional"`` (a labelled stand-in, the
   source's own range was not found), ``"theory"`` (a limit of the theory itself: Hertz holds up
   to first yield) or ``"analytical"`` (a closed-form law with no fitted range: never
