@@ -28,8 +28,8 @@ from impactlab.bodies import Rod, Sphere
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.contact import ContactModel, get_law
 from impactlab.dynamics.checks import gravity_value
-from impactlab.dynamics.core.layout import DEFAULT_RTOL, PARTIAL_SLIP_RTOL
 from impactlab.dynamics.flexcore.layout import DROP_DEFAULT_RTOL as DROP_RTOL
+from impactlab.dynamics.kernels.layout import DEFAULT_RTOL, PARTIAL_SLIP_RTOL
 from impactlab.materials import ContactPair, Material
 
 __all__ = ["RECORD_FORMAT", "decode", "encode", "from_record", "input_record", "result_record"]

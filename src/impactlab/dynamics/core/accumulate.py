@@ -8,10 +8,10 @@ import math
 
 from numba import njit
 
-from impactlab.dynamics.core._jit import njit_no_refcount
-from impactlab.dynamics.core.friction import frictional, sticking
-from impactlab.dynamics.core.layout import C_MU, M_DR
-from impactlab.dynamics.core.rhs import energy
+from impactlab.dynamics.kernels._jit import njit_no_refcount
+from impactlab.dynamics.kernels.friction import frictional, sticking
+from impactlab.dynamics.kernels.layout import C_MU, M_DR
+from impactlab.dynamics.kernels.rhs import energy
 
 A_EMIN = 0  # lowest total energy so far [J]
 A_ERISE = 1  # largest rise of the total energy above that minimum [J]

@@ -4,8 +4,8 @@ and re-contact until the rod leaves the flat for good.
 
 It imports only numpy, numba, math, ``impactlab.contact.kernels``, ``impactlab.schema``, the
 Dormand-Prince tableau of ``impactlab.dynamics.core.integrator``, the rigid core's friction
-kernels, layout constants and status codes (``core.friction``, ``core.normal``,
-``core.layout``, ``core.status``). The model and the
+kernels, layout constants and status codes (``kernels.friction``, ``kernels.normal``,
+``kernels.layout``, ``kernels.status``). The model and the
 algorithm are documented in ``docs/flexible.md``; the Python API is
 ``impactlab.dynamics.drop.simulate_drop``.
 

@@ -1,9 +1,10 @@
 """Mode changes of the partial-slip cells at the ends of the flexible rod (compiled): the cell
 events (birth, release, stick/slip), the settle pass that applies every switch already due at a
-restart, and the cells at a touch. The rules are the slipcore's (``slipcore.switches``;
-docs/verification/index.md, "Partial slip"): a cell is born unstressed when the contact radius
-reaches it, slipping when the stick trial outruns its growing limit; it is released at zero
-force; it slips when |f| reaches its limit and sticks again when the limit outruns the trial.
+restart, and the cells at a touch. The rules and the cell kernels are the shared ones
+(``kernels.cells``; docs/verification/index.md, "Partial slip"): a cell is born unstressed
+when the contact radius reaches it, slipping when the stick trial outruns its growing limit; it
+is released at zero force; it slips when |f| reaches its limit and sticks again when the limit
+outruns the trial.
 """
 
 from __future__ import annotations
@@ -13,7 +14,9 @@ from numba import njit
 
 from impactlab.contact.kernels import P_ESTAR
 from impactlab.dynamics.flexcore import layout as F
-from impactlab.dynamics.flexcore.cells import (
+from impactlab.dynamics.flexcore.cells import reset, views
+from impactlab.dynamics.flexcore.rhs import evaluate
+from impactlab.dynamics.kernels.cells import (
     CP_DX,
     CP_FTOL,
     CP_G1,
@@ -25,13 +28,10 @@ from impactlab.dynamics.flexcore.cells import (
     birth,
     cell_length,
     n_in,
-    reset,
     stick_rate,
     to_slip,
     to_stick,
-    views,
 )
-from impactlab.dynamics.flexcore.rhs import evaluate
 
 
 @njit(cache=True, inline="always", error_model="numpy")

@@ -15,7 +15,7 @@ results), ``driver`` (``impact_slip``).
 
 from __future__ import annotations
 
+from impactlab.dynamics.kernels.cells import N_CELLS
 from impactlab.dynamics.slipcore.driver import impact_slip
-from impactlab.dynamics.slipcore.layout import N_CELLS
 
 __all__ = ["N_CELLS", "impact_slip"]

@@ -9,7 +9,8 @@ import math
 import numpy as np
 from numba import njit
 
-from impactlab.dynamics.core.layout import (
+from impactlab.dynamics.kernels.cells import STICK
+from impactlab.dynamics.kernels.layout import (
     C_C0,
     C_D,
     C_G,
@@ -65,11 +66,10 @@ from impactlab.dynamics.core.layout import (
     S_X,
     S_Y,
 )
-from impactlab.dynamics.core.normal import geometry
-from impactlab.dynamics.core.quality import result_flags
-from impactlab.dynamics.core.rhs import energy
-from impactlab.dynamics.core.status import REGIME_REVERSAL, REGIME_SLIP, REGIME_STICK
-from impactlab.dynamics.slipcore.layout import STICK
+from impactlab.dynamics.kernels.normal import geometry
+from impactlab.dynamics.kernels.quality import result_flags
+from impactlab.dynamics.kernels.rhs import energy
+from impactlab.dynamics.kernels.status import REGIME_REVERSAL, REGIME_SLIP, REGIME_STICK
 from impactlab.dynamics.slipcore.model import evaluate, stored_energy
 
 # --- accumulators over the accepted steps (as in the core's driver) ----------------------------
