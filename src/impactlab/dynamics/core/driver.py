@@ -17,7 +17,15 @@ import numpy as np
 from numba import njit
 
 from impactlab.bodies.layout import BP_KIND, KIND_ROD
-from impactlab.dynamics.core.accumulate import (
+from impactlab.dynamics.core.accumulate import NA, track
+from impactlab.dynamics.core.approach import W_WORK_LEN
+from impactlab.dynamics.core.ends import approach_end, near_separation, opening
+from impactlab.dynamics.core.events import GO_ON, handle_event
+from impactlab.dynamics.core.history import record as record_row
+from impactlab.dynamics.core.history import record_substeps
+from impactlab.dynamics.core.integrator import dp_step, first_event, integrate_to
+from impactlab.dynamics.kernels.dormand_prince import RECOMPUTE_LEN, STEP_LEN, step_views
+from impactlab.dynamics.kernels.layout import (
     A_DMAX,
     A_EMIN,
     A_ERISE,
@@ -29,17 +37,6 @@ from impactlab.dynamics.core.accumulate import (
     A_VSPOS,
     A_WCOMP,
     A_WREST,
-    NA,
-    track,
-)
-from impactlab.dynamics.core.approach import W_WORK_LEN
-from impactlab.dynamics.core.ends import approach_end, near_separation, opening
-from impactlab.dynamics.core.events import GO_ON, handle_event
-from impactlab.dynamics.core.history import record as record_row
-from impactlab.dynamics.core.history import record_substeps
-from impactlab.dynamics.core.integrator import dp_step, first_event, integrate_to
-from impactlab.dynamics.kernels.dormand_prince import RECOMPUTE_LEN, STEP_LEN, step_views
-from impactlab.dynamics.kernels.layout import (
     C_A0,
     C_B0,
     C_G,

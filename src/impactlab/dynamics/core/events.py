@@ -7,8 +7,11 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from impactlab.dynamics.core.accumulate import A_EEL, A_WCOMP, A_WMARK, A_WREST, stored
+from impactlab.dynamics.core.accumulate import A_EEL, stored
 from impactlab.dynamics.kernels.layout import (
+    A_WCOMP,
+    A_WMARK,
+    A_WREST,
     EV_LIMIT,
     EV_SEP,
     EV_SWITCH,

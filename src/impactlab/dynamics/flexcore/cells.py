@@ -156,12 +156,3 @@ def n_active(md, n, M):
     for k in range(F.NE):
         na += n_in(md[k, F.MD_CM : F.MD_CM + F.NCS])
     return na
-
-
-@njit(cache=True, error_model="numpy")
-def any_stuck(md, k):
-    """Whether a cell of end k sticks."""
-    found = False
-    for i in range(F.NCS):
-        found = found or md[k, F.MD_CM + i] == STICK
-    return found

@@ -8,11 +8,11 @@ import math
 from numba import njit
 
 from impactlab.dynamics.flexcore import layout as F
-from impactlab.dynamics.flexcore.cells import any_stuck
 from impactlab.dynamics.flexcore.history import record
 from impactlab.dynamics.flexcore.kinematics import mechanical_energy
 from impactlab.dynamics.flexcore.rhs import evaluate
 from impactlab.dynamics.flexcore.stepper import dense, integrate_to, locate
+from impactlab.dynamics.kernels.cells import any_stuck
 from impactlab.dynamics.kernels.dormand_prince import dense_coeffs
 from impactlab.dynamics.kernels.layout import FR_IMPULSE
 from impactlab.dynamics.kernels.step_control import power_growth
@@ -88,7 +88,8 @@ def step_stats(mdl, md, t, tend, sv, contacts, dents, cur_con, ek):
     for k in range(F.NE):
         if md[k, F.MD_IN] != 0.0:
             ci = cur_con[k]
-            if sticks and (md[k, F.MD_FM] == 0.0 if not partial else any_stuck(md, k)):
+            cells = md[k, F.MD_CM : F.MD_CM + F.NCS]
+            if sticks and (any_stuck(cells) if partial else md[k, F.MD_FM] == 0.0):
                 contacts[ci, F.CR_STICK] += tend - t
                 sv[F.SV_STICK] += tend - t
             contacts[ci, F.CR_DMAX] = max(contacts[ci, F.CR_DMAX], ek[k, F.EK_DELTA])

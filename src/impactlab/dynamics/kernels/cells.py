@@ -49,6 +49,15 @@ def n_in(cm):
 
 
 @njit(cache=True, inline="always", error_model="numpy")
+def any_stuck(cm):
+    """True while at least one cell sticks (no gross slip)."""
+    found = False
+    for i in range(cm.shape[0]):
+        found = found or cm[i] == STICK
+    return found
+
+
+@njit(cache=True, inline="always", error_model="numpy")
 def cell_length(i, a, dx):
     """Length [m] of cell ``i`` inside the contact radius ``a`` [m]."""
     ln = a - i * dx
@@ -145,3 +154,40 @@ def boundary_time(cm, dx, ar, ad):
     if ad < 0.0 and nin > 1:
         return ((nin - 1) * dx - ar) / ad
     return math.inf
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def release(y, o, cm, nin):
+    """The outermost of the ``nin`` cells in contact leaves it, at zero force."""
+    cm[nin - 1] = OUT
+    y[o + nin - 1] = 0.0
+
+
+@njit(cache=True, error_model="numpy")
+def apply_due(y, o, cm, sg, cp, L, Ld, f, mu, estar, Fn, vn, vs, ar, ad):
+    """Apply the first birth or release already due (the contact radius ``ar`` beyond a cell
+    boundary by 1e-9 of a cell), else every stick/slip switch already due (the tests of
+    ``cell_switch`` without their tolerances' sign change); False when none is. A restart
+    calls it until it returns False: several cells can change mode within one step, and only
+    the first event is located."""
+    nin = n_in(cm)
+    dx = cp[CP_DX]
+    if nin < cm.shape[0] and ad > 0.0 and ar > nin * dx + 1e-9 * dx:
+        birth(nin, y, o, cm, sg, cp, mu, estar, Fn, vn, vs, ar, ad)
+        return True
+    if nin > 1 and ad < 0.0 and ar < (nin - 1) * dx - 1e-9 * dx:
+        release(y, o, cm, nin)
+        return True
+    changed = False
+    for i in range(nin):
+        if cm[i] == STICK:
+            if abs(f[i]) > L[i] * (1.0 + SLIP_HYST) + cp[CP_FTOL]:
+                to_slip(i, y, o, cm, sg, L)
+                changed = True
+        elif cm[i] == SLIP and ar > i * dx:
+            ln = cell_length(i, ar, dx)
+            trial = stick_rate(i, f[i], ar, ad, vs, cp)
+            if Ld[i] - sg[i] * trial > 2.0 * cp[CP_G1] * ln * cp[CP_VTOL]:
+                to_stick(i, y, o, cm, sg, L)
+                changed = True
+    return changed

@@ -17,6 +17,13 @@ from impactlab.contact.kernels import P_ESTAR
 from impactlab.dynamics.kernels.cells import CP_DX, CP_FTOL, CP_G1, CP_VTOL, STEP_PAST, birth
 from impactlab.dynamics.kernels.dormand_prince import dense, dense_coeffs
 from impactlab.dynamics.kernels.layout import (
+    A_DMAX,
+    A_EMIN,
+    A_FMAX,
+    A_TMAX,
+    A_WCOMP,
+    A_WMARK,
+    A_WREST,
     C_A0,
     C_B0,
     C_GS,
@@ -62,20 +69,7 @@ from impactlab.dynamics.kernels.step_control import power_growth
 from impactlab.dynamics.kernels.transitions import without_switch
 from impactlab.dynamics.slipcore.layout import CP_FSC, EXTRA, G_CELL, NCP, Y_CELL
 from impactlab.dynamics.slipcore.model import boundary_horizon, evaluate, events
-from impactlab.dynamics.slipcore.outputs import (
-    A_DMAX,
-    A_EMIN,
-    A_FMAX,
-    A_JUMP,
-    A_TMAX,
-    A_WCOMP,
-    A_WMARK,
-    A_WREST,
-    NA,
-    record,
-    separation,
-    track,
-)
+from impactlab.dynamics.slipcore.outputs import A_JUMP, NA, record, separation, track
 from impactlab.dynamics.slipcore.stepper import first_event, integrate_to, rhs, step
 from impactlab.dynamics.slipcore.switches import apply_cell_event, normal_switch, settle
 

@@ -15,17 +15,11 @@ from numba import njit
 
 from impactlab.contact.kernels import P_ESTAR
 from impactlab.dynamics.kernels.cells import (
-    CP_DX,
-    CP_FTOL,
-    CP_G1,
-    CP_VTOL,
-    OUT,
     SLIP,
-    SLIP_HYST,
     STICK,
+    apply_due,
     birth,
-    cell_length,
-    stick_rate,
+    release,
     to_slip,
     to_stick,
 )
@@ -44,8 +38,7 @@ def apply_cell_event(k, y, cm, sg, cp, mu, estar, W, ev):
     if k == G_BIRTH:
         birth(nin, y, Y_CELL, cm, sg, cp, mu, estar, Fn, vn, vs, ar, ad)
     elif k == G_REL:
-        cm[nin - 1] = OUT
-        y[Y_CELL + nin - 1] = 0.0
+        release(y, Y_CELL, cm, nin)
     else:
         i = k - G_CELL
         if cm[i] == STICK:
@@ -56,30 +49,11 @@ def apply_cell_event(k, y, cm, sg, cp, mu, estar, W, ev):
 
 @njit(cache=True, error_model="numpy")
 def _due(law, p, c, md, y, cm, sg, cp, W, mu, estar):
-    """Apply the first switch already due at ``y``; False when none is."""
+    """Apply the first switch already due at ``y`` (``kernels.cells.apply_due``); False when
+    none is."""
     ev = evaluate(law, p, c, md, y, cm, sg, cp, W)
-    _delta, _a, _b, Fn, _Ft, vn, vs, ar, ad, nin = ev
-    dx = cp[CP_DX]
-    if nin < cm.shape[0] and ad > 0.0 and ar > nin * dx + 1e-9 * dx:
-        birth(nin, y, Y_CELL, cm, sg, cp, mu, estar, Fn, vn, vs, ar, ad)
-        return True
-    if nin > 1 and ad < 0.0 and ar < (nin - 1) * dx - 1e-9 * dx:
-        cm[nin - 1] = OUT
-        y[Y_CELL + nin - 1] = 0.0
-        return True
-    changed = False
-    for i in range(nin):
-        if cm[i] == STICK:
-            if abs(W[2, i]) > W[0, i] * (1.0 + SLIP_HYST) + cp[CP_FTOL]:
-                to_slip(i, y, Y_CELL, cm, sg, W[0])
-                changed = True
-        elif cm[i] == SLIP and ar > i * dx:
-            ln = cell_length(i, ar, dx)
-            trial = stick_rate(i, W[2, i], ar, ad, vs, cp)
-            if W[1, i] - sg[i] * trial > 2.0 * cp[CP_G1] * ln * cp[CP_VTOL]:
-                to_stick(i, y, Y_CELL, cm, sg, W[0])
-                changed = True
-    return changed
+    _delta, _a, _b, Fn, _Ft, vn, vs, ar, ad, _nin = ev
+    return apply_due(y, Y_CELL, cm, sg, cp, W[0], W[1], W[2], mu, estar, Fn, vn, vs, ar, ad)
 
 
 @njit(cache=True, error_model="numpy")
