@@ -48,7 +48,7 @@ DP_A = np.array(
         [B1, 0.0, B3, B4, B5, B6],
     ]
 )
-#: Error weights (5th- minus 4th-order weights).
+#: Error weights: the 4th- minus the 5th-order weights (the error norm squares them).
 DP_E = np.array([E1, 0.0, E3, E4, E5, E6, E7])
 #: Shampine's dense-output polynomial coefficients (theta^1 ... theta^4 per stage).
 DENSE_P = np.array(
@@ -103,8 +103,9 @@ def stage_point(y, K, h, stage, out, n):
 @njit(cache=True, inline="always", error_model="numpy")
 def error_sum(y, ynew, K, h, rtol, sc, n):
     """Sum over the first ``n`` components of the squared scaled local error of the step
-    (5th- minus 4th-order solution, ``h sum_j e_j K[j]``); error scale of component i:
-    ``rtol (sc[i] + max(|y_i|, |ynew_i|))``. The RMS norm is sqrt(sum / count)."""
+    (the difference of the 4th- and 5th-order solutions, ``h sum_j e_j K[j]``); error scale
+    of component i: ``rtol (sc[i] + max(|y_i|, |ynew_i|))``. The RMS norm is
+    sqrt(sum / count)."""
     err = 0.0
     for i in range(n):
         ei = 0.0
