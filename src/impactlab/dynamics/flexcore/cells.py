@@ -110,8 +110,9 @@ def cell_events(c, md, k, ek, ev):
         ev[e0 + F.FG_BIRTH] = ar - nin * dx
     if nin > 1:
         ev[e0 + F.FG_REL] = (nin - 1) * dx - ar
+    vs = ek[k, F.EK_VT]
     for i in range(nin):
-        ev[e0 + F.FG_CELL + i] = cell_switch(i, cm, sg, cp, L, Ld, f, ar, ad, ek[k, F.EK_VT])
+        ev[e0 + F.FG_CELL + i] = cell_switch(i, cm, sg, cp, L[i], Ld[i], f[i], ar, ad, vs)
 
 
 @njit(cache=True, error_model="numpy")

@@ -95,16 +95,17 @@ def limits(i, dx, mu, Fn, Fd, ar, ad):
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def cell_switch(i, cm, sg, cp, L, Ld, f, ar, ad, vs):
-    """Event function of cell ``i`` (limits ``L``, their rates ``Ld``, forces ``f``): STICK ->
-    SLIP when |f| passes its limit (relative hysteresis SLIP_HYST), SLIP -> STICK when the limit
-    outruns the stick trial (fires when it goes from <= 0 to > 0)."""
+def cell_switch(i, cm, sg, cp, limit, rate, fi, ar, ad, vs):
+    """Event function of cell ``i`` (its limit ``limit`` [N], the limit's rate ``rate`` [N/s], its
+    force ``fi`` [N]): STICK -> SLIP when |f| passes its limit (relative hysteresis SLIP_HYST),
+    SLIP -> STICK when the limit outruns the stick trial (fires when it goes from <= 0 to > 0).
+    Scalars, not arrays: no array views on the event functions' path."""
     if cm[i] == STICK:
-        return abs(f[i]) - L[i] * (1.0 + SLIP_HYST) - cp[CP_FTOL]
+        return abs(fi) - limit * (1.0 + SLIP_HYST) - cp[CP_FTOL]
     if cm[i] == SLIP and ar > i * cp[CP_DX]:
         ln = cell_length(i, ar, cp[CP_DX])
-        trial = stick_rate(i, f[i], ar, ad, vs, cp)
-        return Ld[i] - sg[i] * trial - 2.0 * cp[CP_G1] * ln * cp[CP_VTOL]
+        trial = stick_rate(i, fi, ar, ad, vs, cp)
+        return rate - sg[i] * trial - 2.0 * cp[CP_G1] * ln * cp[CP_VTOL]
     return -1.0
 
 

@@ -122,7 +122,7 @@ def derivative(c, y, cm, sg, cp, W, ev, dy):
 def cell_event(i, cm, sg, cp, W, ar, ad, vs):
     """Event function of cell ``i``: STICK -> SLIP when |f| passes its limit (relative
     hysteresis SLIP_HYST), SLIP -> STICK when the limit outruns the stick trial."""
-    return cell_switch(i, cm, sg, cp, W[0], W[1], W[2], ar, ad, vs)
+    return cell_switch(i, cm, sg, cp, W[0, i], W[1, i], W[2, i], ar, ad, vs)
 
 
 @njit(cache=True, error_model="numpy")
