@@ -37,8 +37,9 @@ VY = -1.41
 def _counts() -> dict[str, int]:
     """Instrumented run of the benchmark case in plain Python (NUMBA_DISABLE_JIT=1)."""
     from impactlab.bodies import PAPER_ROD
-    from impactlab.dynamics.core import approach, driver, ends, integrator, normal, rhs, transitions
-    from impactlab.dynamics.core.layout import N_OUT, O_NST
+    from impactlab.dynamics.core import approach, driver, ends, integrator
+    from impactlab.dynamics.kernels import normal, rhs, transitions
+    from impactlab.dynamics.kernels.layout import N_OUT, O_NST
     from impactlab.dynamics.models import body_params, contact_model, kernel_params
     from impactlab.friction import FRICTION_IDS
     from impactlab.materials import AISI_1010
@@ -124,9 +125,9 @@ def _times(n: int) -> dict[str, float]:
     from impactlab.contact.kernels import P_DSW, loading_force
     from impactlab.dynamics import DEFAULT_RTOL, simulate
     from impactlab.dynamics.core import driver
-    from impactlab.dynamics.core.layout import N_OUT, O_NST
-    from impactlab.dynamics.core.rhs import rhs
-    from impactlab.dynamics.core.setup import constants, initial_mode
+    from impactlab.dynamics.kernels.layout import N_OUT, O_NST
+    from impactlab.dynamics.kernels.rhs import rhs
+    from impactlab.dynamics.kernels.setup import constants, initial_mode
     from impactlab.dynamics.models import body_params, contact_model, kernel_params
     from impactlab.friction import FRICTION_IDS
     from impactlab.materials import AISI_1010

@@ -11,7 +11,9 @@ It digests (SHA-256 of the raw float64 bytes, so any changed bit shows):
 - three seeded sweep stores (a grid, a Monte Carlo sample, and the laws study), every variable;
 - ``simulate`` on a seeded random sample over every law x friction model x body, with histories
   and dents;
-- the analytic inversion of the paper's three cases.
+- the analytic inversion of the paper's three cases;
+- the partial-slip engine (``friction="partial_slip"``, rod and sphere, with histories) and the
+  flexible rod's drop (every friction model, with histories) on seeded random samples.
 
 Run it on the commit before and after the change; ``--compare`` lists every digest that differs
 and, where both runs saved the numbers (``OUT.npz`` next to ``OUT.json``), the largest relative
@@ -167,6 +169,60 @@ def simulate_digests() -> dict[str, str]:
     return d
 
 
+def _numbers(r: object) -> np.ndarray:
+    """The float fields of a result (an ImpactResult or a DropResult), in name order."""
+    names = sorted(k for k, v in vars(r).items() if isinstance(v, float | int) and k != "status")
+    return np.array([float(getattr(r, k)) for k in names], dtype=float)
+
+
+def _history(r: object) -> np.ndarray | None:
+    h = getattr(r, "history", None)
+    if h is None:
+        return None
+    data = getattr(h, "data", None)
+    if data is None and hasattr(h, "to_dataframe"):
+        data = h.to_dataframe().to_numpy(dtype=float)
+    return None if data is None else np.asarray(data, dtype=float)
+
+
+def engines_digests() -> dict[str, str]:
+    """The partial-slip impact and the flexible rod's drop on seeded random samples."""
+    import impactlab as il
+
+    rng = np.random.default_rng(20261128)
+    d: dict[str, str] = {}
+    cases: list[tuple[str, object, str, dict[str, object]]] = []
+    for law in ("ghaednia", "hertz", "thornton"):
+        for bname, body in {"rod": il.Rod.paper(), "sphere": il.Sphere(radius=0.01)}.items():
+            for k in range(3):
+                kw: dict[str, object] = {"law": law, "history": True}
+                if bname == "rod":
+                    kw["angle"] = float(rng.uniform(math.radians(5), math.radians(85)))
+                kw["velocity"] = (float(rng.uniform(-1.0, 1.0)), float(rng.uniform(-3.0, -0.3)))
+                kw["mu"] = float(rng.uniform(0.05, 0.6))
+                cases.append((f"partial_slip/{law}/{bname}/{k}", body, "partial_slip", kw))
+    flex = il.FlexibleRod.paper()
+    for fr in ("impulse_ratio", "coulomb", "mindlin", "partial_slip"):
+        for k in range(2):
+            kw = {
+                "angle": float(rng.uniform(math.radians(10), math.radians(70))),
+                "velocity": (0.0, float(rng.uniform(-2.0, -0.5))),
+                "mu": float(rng.uniform(0.05, 0.4)),
+            }
+            cases.append((f"flexible/{fr}/{k}", flex, fr, kw))
+    for key, body, fr, kw in cases:
+        try:
+            r = il.simulate(body, friction=fr, **kw)
+        except Exception as exc:  # the message is part of the digest
+            d[key] = "error:" + str(exc)[:80]
+            continue
+        d[key] = _digest(_numbers(r), key)
+        h = _history(r)
+        if h is not None:
+            d[key + "/history"] = _digest(h, key + "/history")
+    return d
+
+
 def invert_digests() -> dict[str, str]:
     import impactlab as il
 
@@ -219,6 +275,7 @@ def main() -> int:
         tmp = Path(t)
         d = {}
         d.update(simulate_digests())
+        d.update(engines_digests())
         d.update(invert_digests())
         d.update(sweep_digests(tmp))
         d.update(reproduce_digests(tmp))

@@ -26,6 +26,7 @@ PARTS: tuple[tuple[str, str, int], ...] = (
     ("impactlab.dynamics.flexcore", "the flexible-rod drop engine", 60),
     ("impactlab.dynamics.core.batch", "the parallel batch engine", 20),
     ("impactlab.dynamics.core", "the impact engine", 50),
+    ("impactlab.dynamics.kernels", "the engine's shared kernels", 5),
     ("impactlab.contact", "the contact-law kernels", 5),
 )
 

@@ -33,6 +33,7 @@ from pathlib import Path
 #: or whose constants and functions compiled code reads (``tests/core/test_compiled_cache.py``
 #: checks that every compiled function and every impactlab module it imports is covered).
 ENGINE_SOURCES = (
+    "dynamics/kernels",
     "dynamics/core",
     "dynamics/flexcore",
     "dynamics/slipcore",

@@ -1,6 +1,6 @@
 """Result flags: what makes a computed impact untrustworthy although the integration succeeded.
 
-A status code (``impactlab.dynamics.core.status``) says whether the engine could compute an
+A status code (``impactlab.dynamics.kernels.status``) says whether the engine could compute an
 impact at all; a flag says that a computed impact must not be read as plain success. The
 compiled core writes the flags as the output field ``flags`` (an integer bitmask stored as a
 float, like ``regime``); ``ImpactResult.flags``, ``BatchResult.flags`` and sweep stores carry

@@ -187,7 +187,7 @@ def test_a_long_compile_is_announced_once(monkeypatch: pytest.MonkeyPatch) -> No
     monkeypatch.setattr(_compile_notice, "DELAY_S", 0.0)
     listener = _compile_notice._Listener()
     listener.on_start(_event("impactlab.dynamics.core.driver"))
-    listener.on_start(_event("impactlab.dynamics.core.rhs"))  # nested: counted, not announced
+    listener.on_start(_event("impactlab.dynamics.kernels.rhs"))  # nested: counted, not announced
     assert _wait_for(lambda: stream.getvalue().endswith("\n"))
     listener.on_end(None)
     listener.on_end(None)

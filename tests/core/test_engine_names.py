@@ -5,19 +5,30 @@ it never finds two meanings."""
 from __future__ import annotations
 
 import importlib
+import pkgutil
 from collections import defaultdict
 
-ENGINE_MODULES = (
+#: The compiled packages: the shared kernels and the three drivers, every module of each.
+COMPILED_PACKAGES = (
+    "impactlab.dynamics.kernels",
+    "impactlab.dynamics.core",
+    "impactlab.dynamics.slipcore",
+    "impactlab.dynamics.flexcore",
+)
+LOW_MODULES = (
     "impactlab.contact.kernels",
+    "impactlab.contact.history_kernels",
     "impactlab.contact.table",
     "impactlab.bodies.layout",
-    "impactlab.dynamics.core.layout",
-    "impactlab.dynamics.core.status",
-    "impactlab.dynamics.core.friction",
-    "impactlab.dynamics.slipcore.layout",
-    "impactlab.dynamics.flexcore.layout",
-    "impactlab.dynamics.flexcore.cells",
 )
+
+
+def _package_modules(package: str) -> list[str]:
+    path = importlib.import_module(package).__path__
+    return [f"{package}.{m.name}" for m in pkgutil.iter_modules(path)]
+
+
+ENGINE_MODULES = LOW_MODULES + tuple(m for p in COMPILED_PACKAGES for m in _package_modules(p))
 
 
 def _constants(module: str) -> dict[str, object]:
@@ -40,3 +51,10 @@ def test_no_constant_name_has_two_values() -> None:
         if len({float(v) if isinstance(v, int | float) else repr(v) for v in where.values()}) > 1
     }
     assert not clashes, f"one name with two meanings: {clashes}"
+
+
+def test_every_compiled_package_is_listed() -> None:
+    """The walk finds the shared kernels' modules (a renamed package would leave it empty)."""
+    names = set(ENGINE_MODULES)
+    for module in ("layout", "status", "cells", "dormand_prince", "roots", "step_control"):
+        assert f"impactlab.dynamics.kernels.{module}" in names

@@ -14,7 +14,7 @@ import grimp
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
-CONTRACTS = ("layers", "core", "flexcore", "acyclic")
+CONTRACTS = ("layers", "kernels", "core", "slipcore", "flexcore", "acyclic")
 
 
 def _lint_imports(contract: str) -> subprocess.CompletedProcess[str]:

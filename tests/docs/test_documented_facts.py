@@ -10,7 +10,7 @@ from pathlib import Path
 
 import impactlab as il
 from impactlab.contact import law_names
-from impactlab.dynamics.core.layout import DEFAULT_RTOL, PARTIAL_SLIP_RTOL
+from impactlab.dynamics.kernels.layout import DEFAULT_RTOL, PARTIAL_SLIP_RTOL
 from impactlab.flags import ResultFlag
 from impactlab.friction import DEFAULT_MU, friction_names
 

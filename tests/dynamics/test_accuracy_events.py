@@ -17,7 +17,7 @@ import pytest
 
 from impactlab.contact.kernels import NPARAM
 from impactlab.dynamics.core.integrator import locate
-from impactlab.dynamics.core.layout import EV_SEP, FR_IMPULSE, NS, S_Y
+from impactlab.dynamics.kernels.layout import EV_SEP, FR_IMPULSE, NS, S_Y
 
 #: A sphere (L/2 = 0 at pi/2: delta = -y[S_Y]); the constants tuple, C_* order.
 SPHERE_C = (0.0, 1.0, 1.0, 1.0, 0.0, 0.5 * math.pi, 1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0)

@@ -15,7 +15,7 @@ from impactlab.contact.kernels import NPARAM
 from impactlab.dynamics import batch
 from impactlab.dynamics.core.atomic import fetch_add
 from impactlab.dynamics.core.batch import BLOCK, impact_batch
-from impactlab.dynamics.core.layout import N_OUT
+from impactlab.dynamics.kernels.layout import N_OUT
 from impactlab.dynamics.models import contact_model, kernel_params
 from impactlab.materials import AISI_1010
 

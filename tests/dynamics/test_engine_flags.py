@@ -21,7 +21,7 @@ from impactlab.bodies import PAPER_ROD, Rod, Sphere
 from impactlab.contact import law_names
 from impactlab.dynamics import OUTPUT_FIELDS, contact_model, simulate, simulate_batch
 from impactlab.dynamics.batch import run_arrays
-from impactlab.dynamics.core import layout
+from impactlab.dynamics.kernels import layout
 from impactlab.friction import FRICTION_IDS, friction_names
 from impactlab.materials import AISI_1010
 

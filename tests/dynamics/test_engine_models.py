@@ -15,7 +15,7 @@ from impactlab import schema
 from impactlab.bodies import PAPER_ROD, Rod, Sphere
 from impactlab.contact import get_law
 from impactlab.dynamics import HISTORY_FIELDS, OUTPUT_FIELDS, simulate, simulate_batch
-from impactlab.dynamics.core import layout
+from impactlab.dynamics.kernels import layout
 from impactlab.dynamics.models import (
     INTEGRATOR_REFERENCES,
     body_params,

@@ -1,4 +1,4 @@
-"""The core's hot leaf functions are compiled without reference counting (``core._jit``)."""
+"""The core's hot leaf functions are compiled without reference counting (``kernels._jit``)."""
 
 from __future__ import annotations
 

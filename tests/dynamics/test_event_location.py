@@ -13,7 +13,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from impactlab.dynamics.core import integrator
-from impactlab.dynamics.core.layout import NS
+from impactlab.dynamics.kernels.layout import NS
 
 
 def _locate(monkeypatch, g, coeffs) -> tuple[float, list[float]]:

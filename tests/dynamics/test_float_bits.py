@@ -16,8 +16,8 @@ from impactlab._floatbits import significand_exponent
 from impactlab.bodies import PAPER_ROD
 from impactlab.contact.kernels import NPARAM, P_DSW, loading_force
 from impactlab.contact.table import table_force
-from impactlab.dynamics.core.integrator import _G0, _G1, _G2, _G3, _POW2_FIFTH, growth
-from impactlab.dynamics.core.normal import SERIES_PHI, rotation_terms
+from impactlab.dynamics.kernels.normal import SERIES_PHI, rotation_terms
+from impactlab.dynamics.kernels.step_control import _G0, _G1, _G2, _G3, _POW2_FIFTH, growth
 from impactlab.dynamics.models import contact_model, kernel_params
 from impactlab.materials import AISI_1010
 

@@ -11,7 +11,7 @@ import pytest
 
 from impactlab.bodies import PAPER_ROD
 from impactlab.dynamics import simulate
-from impactlab.dynamics.core.layout import MU_NEGLIGIBLE
+from impactlab.dynamics.kernels.layout import MU_NEGLIGIBLE
 
 KW = {"law": "hertz", "angle": 1.0, "velocity": (0.0, -1.0), "history": False}
 OUTPUTS = ("e", "e_energy", "delta_max", "delta_p", "duration", "max_force", "normal_impulse")

@@ -14,7 +14,7 @@ from impactlab.bodies.layout import BP_GSTAR
 from impactlab.contact import law_names
 from impactlab.dynamics.batch import run_arrays
 from impactlab.dynamics.checks import check_impact
-from impactlab.dynamics.core import layout as L
+from impactlab.dynamics.kernels import layout as L
 from impactlab.dynamics.models import body_params, kernel_params
 from impactlab.dynamics.partial_slip import largest_radius
 from impactlab.dynamics.slipcore import impact_slip

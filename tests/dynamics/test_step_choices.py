@@ -14,7 +14,7 @@ from impactlab.bodies import PAPER_ROD
 from impactlab.dynamics import simulate
 from impactlab.dynamics.core.driver import _unloading_factor
 from impactlab.dynamics.core.ends import OPENING, THROUGH_SWITCH
-from impactlab.dynamics.core.layout import M_DM, M_DR, M_PHASE, NM
+from impactlab.dynamics.kernels.layout import M_DM, M_DR, M_PHASE, NM
 
 
 def _mode(phase: float, dm: float, dr: float) -> np.ndarray:

@@ -1,4 +1,4 @@
-"""The controller's step-size factor without ``pow`` (``integrator.growth``)."""
+"""The controller's step-size factor without ``pow`` (``kernels.step_control.growth``)."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ import math
 from hypothesis import given
 from hypothesis import strategies as st
 
-from impactlab.dynamics.core.integrator import growth
+from impactlab.dynamics.kernels.step_control import growth
 
 
 @given(st.floats(min_value=1e-19, max_value=1e19, allow_nan=False, allow_infinity=False))

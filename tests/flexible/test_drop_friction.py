@@ -12,8 +12,8 @@ from impactlab.bodies import Rod
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.contact.ranges import critical_interference, law_extrapolated
 from impactlab.dynamics import simulate
-from impactlab.dynamics.core import layout as core_layout
 from impactlab.dynamics.drop import simulate_drop
+from impactlab.dynamics.kernels import layout as core_layout
 from impactlab.dynamics.models import contact_model
 from impactlab.flags import ResultFlag
 from impactlab.friction import FrictionKind

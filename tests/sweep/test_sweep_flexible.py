@@ -13,7 +13,7 @@ import pytest
 
 import impactlab
 from impactlab.bodies.flexible_rod import FlexibleRod
-from impactlab.dynamics.core import status as S
+from impactlab.dynamics.kernels import status as S
 from impactlab.sweep import Study, run_sweep
 from impactlab.sweep.status import STATUS_BAD_BODY
 

@@ -30,8 +30,8 @@ def test_a_failed_drop_is_stored_with_its_own_code(tmp_path: Path, monkeypatch) 
     """Every engine shares one status table: a drop that missed a contact is stored as
     ``ST_MISSED_CONTACT`` with its own message, not as the nearest rigid-engine meaning."""
     from impactlab.dynamics import STATUS_MESSAGES
-    from impactlab.dynamics.core import status as S
     from impactlab.dynamics.drop_checks import DropError
+    from impactlab.dynamics.kernels import status as S
     from impactlab.sweep import flexible
 
     codes = [S.ST_TMAX, S.ST_TOO_MANY_CONTACTS, S.ST_MAX_STEPS, S.ST_MISSED_CONTACT]

@@ -26,8 +26,8 @@ from impactlab.calibrate.quantities import MEASURABLE
 from impactlab.contact import get_law
 from impactlab.contact.rate import RATE_LAWS
 from impactlab.dynamics import simulate
-from impactlab.dynamics.core.status import STATUS_MESSAGES
 from impactlab.dynamics.drop_result import DropResult
+from impactlab.dynamics.kernels.status import STATUS_MESSAGES
 from impactlab.flags import FLAG_ENERGY_GAIN
 from impactlab.friction import get_friction
 from impactlab.materials import get_material

@@ -26,7 +26,7 @@ from impactlab.contact.kernels import (
 )
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def turning_point(law: int, p: np.ndarray, delta_m: float) -> tuple[float, float, float]:
     """(F_m [N], delta_r [m], R_r [m]) of the unloading branch that starts at ``delta_m``."""
     F_m = loading_force(law, p, delta_m)
@@ -36,7 +36,7 @@ def turning_point(law: int, p: np.ndarray, delta_m: float) -> tuple[float, float
     return F_m, d_r, unloading_radius(p[P_ESTAR], delta_m, F_m, d_r)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def contact_force(
     law: int,
     p: np.ndarray,
@@ -52,7 +52,7 @@ def contact_force(
     return unloading_force(p[P_ESTAR], R_r, delta_r, delta)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def loading_contact_radius(law: int, p: np.ndarray, delta: float) -> float:
     """Contact radius on the loading curve [m]: Jackson-Green area fit for the JG family beyond
     delta = 1.9 delta_c, Hertz sqrt(R delta) otherwise (and for the other laws)."""
@@ -63,7 +63,7 @@ def loading_contact_radius(law: int, p: np.ndarray, delta: float) -> float:
     return math.sqrt(p[P_R] * delta)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def contact_radius(
     law: int,
     p: np.ndarray,

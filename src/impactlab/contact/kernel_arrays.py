@@ -18,7 +18,7 @@ _FORCE = 0
 _RADIUS = 1
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _loading_array(quantity: int, law: int, p: np.ndarray, delta: np.ndarray) -> np.ndarray:
     """``loading_force`` (``_FORCE``) or ``loading_contact_radius`` (``_RADIUS``) over an array
     of interferences, in the array's shape."""
@@ -32,13 +32,13 @@ def _loading_array(quantity: int, law: int, p: np.ndarray, delta: np.ndarray) ->
     return out.reshape(delta.shape)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def loading_force_array(law: int, p: np.ndarray, delta: np.ndarray) -> np.ndarray:
     """Vectorised ``loading_force`` over an array of interferences."""
     return _loading_array(_FORCE, law, p, delta)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def loading_contact_radius_array(law: int, p: np.ndarray, delta: np.ndarray) -> np.ndarray:
     """Vectorised ``loading_contact_radius`` over an array of interferences."""
     return _loading_array(_RADIUS, law, p, delta)
@@ -48,7 +48,7 @@ GAP_JACKSON_FAMILY = 0
 GAP_KOGUT_KOMVOPOULOS = 1
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def elastic_plastic_gap_array(kind: int, p: np.ndarray, delta: np.ndarray) -> np.ndarray:
     """F_ep(delta) - F_elastic(delta) [N] on a 1-D array, for locating the continuous switch of
     the Jackson-Green family (``GAP_JACKSON_FAMILY``) or Kogut-Komvopoulos

@@ -132,7 +132,7 @@ JG_AREA_SWITCH = 1.9
 # --------------------------------------------------------------------------------------------
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def hertz_force(E_star: float, R: float, delta: float) -> float:
     """Hertz sphere-on-flat force 4/3 E* sqrt(R) delta^1.5 [N]; 0 for delta <= 0."""
     if delta <= 0.0:
@@ -140,7 +140,7 @@ def hertz_force(E_star: float, R: float, delta: float) -> float:
     return 4.0 / 3.0 * E_star * math.sqrt(R) * delta * math.sqrt(delta)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def unloading_radius(E_star: float, delta_m: float, F_m: float, delta_r: float) -> float:
     """Flattened radius R_r [m] making the Hertzian unloading curve pass through (delta_m, F_m)."""
     d = delta_m - delta_r
@@ -150,7 +150,7 @@ def unloading_radius(E_star: float, delta_m: float, F_m: float, delta_r: float) 
     return c * c / (d * d * d)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def unloading_force(E_star: float, R_r: float, delta_r: float, delta: float) -> float:
     """Hertzian unloading force 4/3 E* sqrt(R_r) (delta - delta_r)^1.5 [N]; 0 below delta_r."""
     d = delta - delta_r
@@ -159,7 +159,7 @@ def unloading_force(E_star: float, R_r: float, delta_r: float, delta: float) -> 
     return 4.0 / 3.0 * E_star * math.sqrt(R_r) * d * math.sqrt(d)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def _sech(y: float) -> float:
     """sech(y) for y >= 0 without overflow."""
     e = math.exp(-y)
@@ -171,7 +171,7 @@ def _sech(y: float) -> float:
 # --------------------------------------------------------------------------------------------
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def jg_contact_radius(p: np.ndarray, delta: float) -> float:
     """Jackson-Green contact radius r = sqrt(R delta (delta / (1.9 delta_c))^B) [m]
     (JG 2005; paper Eq. 17 with its misprint corrected: delta, not delta_y, under the root)."""
@@ -183,7 +183,7 @@ def jg_contact_radius(p: np.ndarray, delta: float) -> float:
 _LOG_AREA_SWITCH = math.log(JG_AREA_SWITCH)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def jg_ep_force(p: np.ndarray, delta: float) -> float:
     """Elastic-plastic force of the Jackson-Green family [N] (paper Eq. 16 / JG 2005 Eq. 17),
     evaluated at any delta > 0 (no switch logic).
@@ -207,14 +207,14 @@ def jg_ep_force(p: np.ndarray, delta: float) -> float:
     return p[P_JG_FC] * (t1 + t2)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def _jg_loading(p: np.ndarray, delta: float) -> float:
     if delta < p[P_DSW]:
         return hertz_force(p[P_ESTAR], p[P_R], delta)
     return jg_ep_force(p, delta)
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def _jg_residual(p: np.ndarray, delta_m: float) -> float:
     """Paper Eq. 19: delta_r/delta_m = 0.8 [1 - ((delta_m/delta_c + 5.5)/6.5)^-2]."""
     dc = p[P_JG_DC]
@@ -229,7 +229,7 @@ def _jg_residual(p: np.ndarray, delta_m: float) -> float:
 # --------------------------------------------------------------------------------------------
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def kk_elastic_force(p: np.ndarray, delta: float) -> float:
     """Elastic branch, paper Eq. 20 with the prefactor 2 sqrt(2)/(3 pi) (not 4 sqrt(2)/(3 pi)):
     F = a' S_y (2 sqrt2 / (3 pi)) (E* delta / (S_y r')) = (2 sqrt2 / 3) E* delta r' [N],
@@ -241,7 +241,7 @@ def kk_elastic_force(p: np.ndarray, delta: float) -> float:
     return 2.0 * math.sqrt(2.0) / 3.0 * p[P_ESTAR] * delta * rp
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def kk_ep_force(p: np.ndarray, delta: float) -> float:
     """Elastic-plastic branch, paper Eq. 21 [N], evaluated at any 0 < delta < R (no switch)."""
     if delta <= 0.0:
@@ -258,7 +258,7 @@ def kk_ep_force(p: np.ndarray, delta: float) -> float:
     return math.pi * rp2 * p[P_SY] * num / den
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def _kk_loading(p: np.ndarray, delta: float) -> float:
     if delta < p[P_DSW]:
         return kk_elastic_force(p, delta)
@@ -270,7 +270,7 @@ def _kk_loading(p: np.ndarray, delta: float) -> float:
 # --------------------------------------------------------------------------------------------
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def brake_eq24_force(p: np.ndarray, delta: float) -> float:
     """Brake's transition, paper Eq. 24 as printed (with sqrt(R) and a = sqrt(2 R delta)) [N],
     for delta > delta_y; no clamp."""
@@ -287,7 +287,7 @@ def brake_eq24_force(p: np.ndarray, delta: float) -> float:
     return _sech((1.0 + ne) * x) * fh + (1.0 - _sech((1.0 - ne) * x)) * fp
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def _brake_loading(p: np.ndarray, delta: float) -> float:
     fh = hertz_force(p[P_ESTAR], p[P_R], delta)
     if delta <= p[P_DY]:
@@ -301,7 +301,7 @@ def _brake_loading(p: np.ndarray, delta: float) -> float:
 # --------------------------------------------------------------------------------------------
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True, inline="always", error_model="numpy")
 def _thornton_loading(p: np.ndarray, delta: float) -> float:
     dy = p[P_DY]
     if delta <= dy:
@@ -314,7 +314,7 @@ def _thornton_loading(p: np.ndarray, delta: float) -> float:
 # --------------------------------------------------------------------------------------------
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def loading_force(law: int, p: np.ndarray, delta: float) -> float:
     """Force on the loading curve of ``law`` at interference ``delta`` [N] (from the table
     appended to ``p`` where there is one and it covers ``delta``: ``contact.table``)."""
@@ -341,7 +341,7 @@ def loading_force(law: int, p: np.ndarray, delta: float) -> float:
     return math.nan
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def residual_depth(law: int, p: np.ndarray, delta_m: float, F_m: float) -> float:
     """Residual depth delta_r after unloading from (delta_m, F_m) [m]; 0 <= delta_r < delta_m."""
     if law == HERTZ or delta_m <= 0.0 or F_m <= 0.0:

@@ -19,8 +19,8 @@ from impactlab.contact.ranges import extrapolation_flags
 from impactlab.contact.tabulate import has_table, with_table
 from impactlab.dynamics.checks import check_rtol, gravity_value
 from impactlab.dynamics.core.batch import impact_batch
-from impactlab.dynamics.core.layout import N_OUT, OUTPUT_FIELDS
-from impactlab.dynamics.core.status import REGIME_NAMES, STATUS_MESSAGES
+from impactlab.dynamics.kernels.layout import N_OUT, OUTPUT_FIELDS
+from impactlab.dynamics.kernels.status import REGIME_NAMES, STATUS_MESSAGES
 from impactlab.friction import FRICTION_IDS, PARTIAL_SLIP, batch_friction_error
 
 __all__ = ["FRICTION_IDS", "OUTPUT_FIELDS", "REGIME_NAMES", "STATUS_MESSAGES", "run_arrays"]

@@ -25,7 +25,7 @@ from impactlab._validation import (
 )
 from impactlab.bodies import Rod, Sphere, lever_arms
 from impactlab.contact import ContactModel
-from impactlab.dynamics.core.layout import DEFAULT_RTOL, PARTIAL_SLIP_RTOL
+from impactlab.dynamics.kernels.layout import DEFAULT_RTOL, PARTIAL_SLIP_RTOL
 from impactlab.dynamics.models import contact_model
 from impactlab.friction import FrictionKind, FrictionModel, get_friction
 from impactlab.materials import G0, Material

@@ -15,7 +15,7 @@ from typing import Any
 
 import numpy as np
 
-from impactlab.dynamics.core.status import REGIME_NAMES
+from impactlab.dynamics.kernels.status import REGIME_NAMES
 from impactlab.schema import DERIVED_FIELDS, derived_values
 
 _REGIME_CODES = {name: code for code, name in REGIME_NAMES.items()}

@@ -41,7 +41,6 @@ from impactlab.dynamics.checks import (
     gravity_value,
     velocity_from,
 )
-from impactlab.dynamics.core.layout import MU_NEGLIGIBLE
 from impactlab.dynamics.drop_checks import (
     DROP_FRICTION,
     STOP_MODES,
@@ -57,6 +56,7 @@ from impactlab.dynamics.drop_result import ContactRecord, DentRecord, DropHistor
 from impactlab.dynamics.flexcore import drop
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.model import constants, model_tuple, state_length
+from impactlab.dynamics.kernels.layout import MU_NEGLIGIBLE
 from impactlab.dynamics.models import (
     body_params,
     build_contact_model,

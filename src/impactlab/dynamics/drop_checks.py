@@ -13,8 +13,8 @@ from impactlab.bodies import Rod
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.contact import ContactModel
 from impactlab.contact.ranges import law_extrapolated
-from impactlab.dynamics.core.quality import energy_gained, gravity_dominated
 from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.kernels.quality import energy_gained, gravity_dominated
 from impactlab.flags import ENERGY_GAIN_RTOL_FACTOR, ENERGY_ROUNDOFF, ResultFlag
 from impactlab.friction import FrictionKind, FrictionModel, get_friction
 
@@ -101,7 +101,7 @@ def drop_flags(
     contacts: np.ndarray,
 ) -> ResultFlag:
     """The result flags of a finished sequence (docs/flexible.md, "Flags"): the rigid engine's
-    criteria (``impactlab.dynamics.core.quality``) on the state after the last contact, the
+    criteria (``impactlab.dynamics.kernels.quality``) on the state after the last contact, the
     vibration energy counted with the kinetic energy, and on the duration and the normal
     impulse of the tip's sequence (its contacts before the other end's first touch); the
     law's (verified) range (``contact.ranges.law_extrapolated``) on the largest

@@ -17,8 +17,8 @@ import numpy as np
 from impactlab import schema
 from impactlab._display import display_unit, format_number
 from impactlab._html import grid_html
-from impactlab.dynamics.core.layout import HISTORY_FIELDS, OUTPUT_FIELDS
-from impactlab.dynamics.core.status import REGIME_NAMES, STATUS_MESSAGES
+from impactlab.dynamics.kernels.layout import HISTORY_FIELDS, OUTPUT_FIELDS
+from impactlab.dynamics.kernels.status import REGIME_NAMES, STATUS_MESSAGES
 from impactlab.flags import ResultFlag, messages
 from impactlab.references import Reference
 

@@ -11,8 +11,8 @@ from typing import Any
 import numpy as np
 
 from impactlab import schema
-from impactlab.dynamics.core.layout import HISTORY_FIELDS
 from impactlab.dynamics.export import history_dataframe
+from impactlab.dynamics.kernels.layout import HISTORY_FIELDS
 
 __all__ = ["HISTORY_UNITS", "DentMap", "History", "readonly_copy"]
 

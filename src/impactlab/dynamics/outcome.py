@@ -19,8 +19,8 @@ from impactlab.bodies import Rod
 from impactlab.contact import ContactModel
 from impactlab.contact.ranges import critical_interference, extrapolation, extrapolation_flags
 from impactlab.dynamics.checks import ImpactInputs
-from impactlab.dynamics.core import layout as L
-from impactlab.dynamics.core import status as S
+from impactlab.dynamics.kernels import layout as L
+from impactlab.dynamics.kernels import status as S
 from impactlab.dynamics.models import references_used
 from impactlab.dynamics.results import History, ImpactResult, assemble_result
 from impactlab.flags import FLAG_LAW_EXTRAPOLATED, ResultFlag

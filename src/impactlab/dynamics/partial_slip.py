@@ -17,9 +17,9 @@ import numpy as np
 from impactlab.bodies import Rod
 from impactlab.contact.history_kernels import loading_contact_radius
 from impactlab.dynamics.checks import ImpactInputs
-from impactlab.dynamics.core import layout as L
-from impactlab.dynamics.core import status as S
 from impactlab.dynamics.core.driver import impact
+from impactlab.dynamics.kernels import layout as L
+from impactlab.dynamics.kernels import status as S
 from impactlab.dynamics.models import body_params, kernel_params
 from impactlab.dynamics.outcome import impact_result, status_error
 from impactlab.dynamics.results import ImpactResult

@@ -22,7 +22,7 @@ from scipy.integrate import solve_ivp
 
 from impactlab.bodies import Rod, Sphere
 from impactlab.dynamics.checks import check_impact, velocity_from
-from impactlab.dynamics.core.status import REGIME_NAMES
+from impactlab.dynamics.kernels.status import REGIME_NAMES
 from impactlab.dynamics.models import body_params
 from impactlab.dynamics.reference_problem import ReferenceProblem
 from impactlab.dynamics.simulate import simulate

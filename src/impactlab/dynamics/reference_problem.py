@@ -15,7 +15,7 @@ from impactlab.bodies import BP_GSTAR, BP_INERTIA, BP_MASS, Rod, Sphere
 from impactlab.contact import history_kernels as hk
 from impactlab.contact import kernels as k
 from impactlab.contact.base import ContactModel
-from impactlab.dynamics.core.layout import MU_NEGLIGIBLE
+from impactlab.dynamics.kernels.layout import MU_NEGLIGIBLE
 
 _contact_radius: Callable[..., float] = hk.contact_radius
 
@@ -24,7 +24,7 @@ class ReferenceProblem:
     """The impact as an initial-value problem for ``solve_ivp``, with its mode (contact phase,
     friction state) switched between integration segments.
 
-    State: [dx, dy, phi, vx, vy, spin, W, q] (``impactlab.dynamics.core.layout``)."""
+    State: [dx, dy, phi, vx, vy, spin, W, q] (``impactlab.dynamics.kernels.layout``)."""
 
     def __init__(
         self,

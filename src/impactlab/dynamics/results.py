@@ -15,12 +15,12 @@ from impactlab import schema
 from impactlab._display import field_rows, flag_names, html_table, text_table
 from impactlab._version import __version__
 from impactlab.contact.ranges import extrapolation, extrapolation_flags, range_status
-from impactlab.dynamics.core.layout import HISTORY_FIELDS, OUTPUT_FIELDS
-from impactlab.dynamics.core.status import STATUS_MESSAGES
 from impactlab.dynamics.dent import dent_map
 from impactlab.dynamics.derived import DerivedOutputs, batch_derived
 from impactlab.dynamics.export import batch_dataset, batch_html
 from impactlab.dynamics.history import HISTORY_UNITS, DentMap, History, readonly_copy
+from impactlab.dynamics.kernels.layout import HISTORY_FIELDS, OUTPUT_FIELDS
+from impactlab.dynamics.kernels.status import STATUS_MESSAGES
 from impactlab.dynamics.provenance import result_record
 from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
 from impactlab.references import Reference

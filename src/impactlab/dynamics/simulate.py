@@ -29,12 +29,12 @@ from impactlab.dynamics.checks import (
     check_impact,
     velocity_from,
 )
-from impactlab.dynamics.core import layout as L
-from impactlab.dynamics.core import status as S
 from impactlab.dynamics.core.driver import impact
 from impactlab.dynamics.drop import simulate_drop
 from impactlab.dynamics.drop_result import DropResult
 from impactlab.dynamics.flex_simulate import simulate_flexible
+from impactlab.dynamics.kernels import layout as L
+from impactlab.dynamics.kernels import status as S
 from impactlab.dynamics.models import (
     body_params,
     engine_setup,

@@ -21,8 +21,8 @@ from impactlab.dynamics.checks import (
     check_flat,
     warn_fast,
 )
-from impactlab.dynamics.core import layout as L
 from impactlab.dynamics.flex_simulate import FLEXIBLE_BATCH_ERROR
+from impactlab.dynamics.kernels import layout as L
 from impactlab.dynamics.models import body_params, contact_model, references_used
 from impactlab.dynamics.results import BatchResult
 from impactlab.friction import DEFAULT_MU, get_friction

@@ -16,7 +16,7 @@ last separation, mean_force = P_n / duration, ...) and leaves the others NaN (-1
 outputs). Status: the sweep's rejection codes (``impactlab.sweep.status``) before the drop (a
 body whose modes cannot be built: BAD_BODY; an input the drop refuses, e.g. an approach speed
 below ``MIN_APPROACH_SPEED``: BAD_INPUT), and a failed drop with its own code from the one
-status table of every engine (``core.status``: e.g. ST_MISSED_CONTACT, ST_INACCURATE, ST_TMAX).
+status table of every engine (``kernels.status``: e.g. ST_MISSED_CONTACT, ST_INACCURATE, ST_TMAX).
 Every case gets a status: one bad case
 never stops a chunk, so the valid cases are stored.
 """
@@ -33,9 +33,9 @@ import numpy as np
 from impactlab.bodies import PAPER_ROD
 from impactlab.bodies.flexible_rod import DEFAULT_N_AXIAL, DEFAULT_N_BENDING, FlexibleRod
 from impactlab.contact import ContactModel
-from impactlab.dynamics.core import status as S
 from impactlab.dynamics.drop import DROP_FRICTION, MIN_APPROACH_SPEED, DropError, simulate_drop
 from impactlab.dynamics.drop_result import DropResult
+from impactlab.dynamics.kernels import status as S
 from impactlab.dynamics.models import build_contact_model
 from impactlab.materials import Material
 from impactlab.sweep.models import Statics, material_for
@@ -173,7 +173,7 @@ def _drop(
             rtol=engine.get("rtol"),
         )
     except DropError as exc:
-        return int(exc.status), None  # the one status table of every engine (core.status)
+        return int(exc.status), None  # the one status table of every engine (kernels.status)
     except ValueError:  # an input the drop refuses (its one-line message names it)
         return STATUS_BAD_INPUT, None
     except (ArithmeticError, np.linalg.LinAlgError):  # never expected: a status, not a crash

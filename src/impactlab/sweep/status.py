@@ -1,6 +1,6 @@
 """Status codes the sweep itself assigns: cases the engine never sees (rejected inputs) and
 cases not computed yet. The engine's own codes are small non-negative integers
-(``impactlab.dynamics.core.status``); these are kept apart."""
+(``impactlab.dynamics.kernels.status``); these are kept apart."""
 
 from __future__ import annotations
 

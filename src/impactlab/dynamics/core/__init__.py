@@ -1,25 +1,23 @@
-"""The compiled impact engine: planar rigid body (rod or sphere) on a flat, one contact.
+"""The compiled rigid impact: planar rigid body (rod or sphere) on a flat, one contact.
 
-Everything here runs in numba ``nopython`` mode: the equations of motion, the normal contact
+Everything here runs in numba ``nopython`` mode on the shared kernels of
+``impactlab.dynamics.kernels`` (layout, status codes, normal contact, friction, right-hand side,
+transitions, the Dormand-Prince tableau and dense output, the event search): the normal contact
 history (loading / unloading / reloading), the friction models and all phase switches,
 integrated by an embedded Dormand-Prince 5(4) pair with its 4th-order dense output and event
 location on the dense output. The equations, conventions and event logic are documented in
-``docs/engine/index.md``. The core imports only numpy, numba, math, ``impactlab.schema``,
-``impactlab.flags``, ``impactlab.contact.kernels`` and ``impactlab.bodies.layout``.
+``docs/engine/index.md``. It imports only numpy, numba, math, L0, the kernels,
+``impactlab.contact.kernels``, ``contact.history_kernels`` and ``impactlab.bodies.layout``;
+never the partial-slip or flexible drivers.
 
 Modules, lowest first:
 
-- ``layout``: indices of the state, constants, mode, event, output and history vectors; limits.
-- ``status``: status codes and messages, friction regime codes.
-- ``tuples``: the state and mode as tuples.
-- ``normal``: contact-point kinematics, the normal force and contact radius on the current branch.
-- ``friction``: friction kernels (stick force, Coulomb decision, switches, Mindlin trial rate).
-- ``rhs``: right-hand side, event functions, total energy.
-- ``integrator``: Dormand-Prince tableau, the step, dense output, event location.
+- ``integrator``: the step written out for the rigid state (``dp_step``), event location,
+  the integration over an exact interval.
 - ``history``: recording of the time history.
-- ``quality``: the result flags at separation (energy gain, gravity dominance).
-- ``setup``: input checks, constants, initial mode, error scales.
-- ``transitions``: mode transitions at events and the restart after a switch.
+- ``accumulate``: running extremes and the normal work (the accumulator array).
+- ``approach``, ``ends``: the two ends of the contact integrated in w = sqrt(delta - delta_0).
+- ``events``: the actions at an event.
 - ``driver``: ``impact`` (one impact: initialisation, step loop, results at separation).
 - ``atomic``: ``fetch_add``, the atomic counter of the batch's work queue.
 - ``batch``: ``impact_batch`` (parallel, dynamically scheduled blocks) and ``residual_caps``.

@@ -1,6 +1,6 @@
 """Running extremes and the normal work of an impact, kept in the accumulator array ``acc``
-(``A_*``) over the accepted steps of the driver (``driver``) and of the final approach
-(``approach``)."""
+(the ``A_*`` of ``kernels.layout``, and ``A_EEL``) over the accepted steps of the driver
+(``driver``) and of the final approach (``approach``)."""
 
 from __future__ import annotations
 
@@ -8,25 +8,26 @@ import math
 
 from numba import njit
 
-from impactlab.dynamics.core._jit import njit_no_refcount
-from impactlab.dynamics.core.friction import frictional, sticking
-from impactlab.dynamics.core.layout import C_MU, M_DR
-from impactlab.dynamics.core.rhs import energy
+from impactlab.dynamics.kernels._jit import njit_no_refcount
+from impactlab.dynamics.kernels.friction import frictional, sticking
+from impactlab.dynamics.kernels.layout import (
+    A_DMAX,
+    A_EMIN,
+    A_ERISE,
+    A_FEX,
+    A_FMAX,
+    A_OWN,
+    A_STICK,
+    A_TMAX,
+    A_VSNEG,
+    A_VSPOS,
+    C_MU,
+    M_DR,
+)
+from impactlab.dynamics.kernels.rhs import energy
 
-A_EMIN = 0  # lowest total energy so far [J]
-A_ERISE = 1  # largest rise of the total energy above that minimum [J]
-A_FEX = 2  # largest |F_t| - mu F_n [N]
-A_FMAX = 3  # largest normal force [N]
-A_DMAX = 4  # largest interference [m]
-A_TMAX = 5  # time of the largest interference [s]
-A_VSPOS = 6  # largest slip velocity [m/s]
-A_VSNEG = 7  # smallest slip velocity [m/s]
-A_STICK = 8  # time in stick [s]
-A_WMARK = 9  # normal work at the last v_n = 0 event [J]
-A_WCOMP = 10  # normal work of compression [J]
-A_WREST = 11  # normal work of restitution [J]
-A_EEL = 12  # stored elastic energy at the start of the current restitution [J]
-NA = 13
+A_EEL = A_OWN  # stored elastic energy at the start of the current restitution [J]
+NA = A_OWN + 1
 
 
 @njit_no_refcount

@@ -26,11 +26,10 @@ import math
 from numba import njit
 
 from impactlab.contact.kernels import P_ESTAR
-from impactlab.dynamics.core._jit import njit_no_refcount
 from impactlab.dynamics.core.accumulate import track
-from impactlab.dynamics.core.friction import tangential_force
 from impactlab.dynamics.core.history import record as record_row
-from impactlab.dynamics.core.integrator import (
+from impactlab.dynamics.kernels._jit import njit_no_refcount
+from impactlab.dynamics.kernels.dormand_prince import (
     A21,
     A31,
     A32,
@@ -57,18 +56,15 @@ from impactlab.dynamics.core.integrator import (
     E5,
     E6,
     E7,
-    G_ROUNDOFF,
     RECOMPUTE_LEN,
     STEP_LEN,
-    THETA_TOL,
     dense,
     dense_coeffs,
-    growth,
-    past_root,
     recompute_views,
     step_views,
 )
-from impactlab.dynamics.core.layout import (
+from impactlab.dynamics.kernels.friction import tangential_force
+from impactlab.dynamics.kernels.layout import (
     EV_FRIC,
     EV_SEP,
     EV_SWITCH,
@@ -83,9 +79,11 @@ from impactlab.dynamics.core.layout import (
     S_VX,
     S_VY,
 )
-from impactlab.dynamics.core.normal import geometry, normal_force
-from impactlab.dynamics.core.rhs import derivative, events_from
-from impactlab.dynamics.core.tuples import state_tuple
+from impactlab.dynamics.kernels.normal import geometry, normal_force
+from impactlab.dynamics.kernels.rhs import derivative, events_from
+from impactlab.dynamics.kernels.roots import G_ROUNDOFF, THETA_TOL, illinois, past_root
+from impactlab.dynamics.kernels.step_control import growth
+from impactlab.dynamics.kernels.tuples import state_tuple
 
 #: Components of the approach state: the state ``y`` and the time.
 NY = NS + 1
@@ -231,28 +229,19 @@ def _locate(law, p, fric, c, md, Y, K, w, sgn, h, Q, Yt, g0, b, g1):
         th = (a * fb - b * fa) / (fb - fa)
         if not (a < th < b):
             th = 0.5 * (a + b)
-        dense(Y, K, h, th, Q, Yt)
+        dense(Y, h, th, Q, Yt)
         f = _g_friction(law, p, fric, c, md, Yt, w + sgn * th * h, sgn)
         if abs(f) <= tiny:  # zero to round-off: as integrator.locate
             if f > 0.0:
                 return th
             probe = past_root(th, f, b, fb)
             if probe < b:
-                dense(Y, K, h, probe, Q, Yt)
+                dense(Y, h, probe, Q, Yt)
                 fp = _g_friction(law, p, fric, c, md, Yt, w + sgn * probe * h, sgn)
                 if fp > 0.0:
                     return probe
                 th, f = probe, fp
-        if f > 0.0:
-            b, fb = th, f
-            if side == 1:
-                fa *= 0.5
-            side = 1
-        else:
-            a, fa = th, f
-            if side == -1:
-                fb *= 0.5
-            side = -1
+        a, fa, b, fb, side = illinois(a, fa, b, fb, side, th, f)
         if b - a <= THETA_TOL:
             break
     return b
@@ -337,7 +326,7 @@ def w_integrate(
             # the step's but their ratio is well defined
             b = END_THETA
             dense_coeffs(K, Q)
-            dense(Y, K, h, b, Q, Yt)
+            dense(Y, h, b, Q, Yt)
             _r, evq_b = _rhs_w_cold(law, p, fric, c, md, Yt, w + sgn * b * h, sgn)
             gnew = _events(law, p, fric, c, md, evq_b, Yt[S_Q])
         ev = _fired(gold, gnew)
@@ -354,7 +343,7 @@ def w_integrate(
             for j in range(1, HISTORY_SUBSTEPS):
                 if j / HISTORY_SUBSTEPS >= theta:
                     break
-                dense(Y, K, h, j / HISTORY_SUBSTEPS, Q, Yt)
+                dense(Y, h, j / HISTORY_SUBSTEPS, Q, Yt)
                 hist, nh = record_row(hist, nh, Yt[Y_T], law, p, fric, c, md, state_tuple(Yt))
         if ev >= 0:  # the stick/slip switch: its state recomputed, then the driver switches
             k, evq_new = _to(

@@ -17,7 +17,15 @@ import numpy as np
 from numba import njit
 
 from impactlab.bodies.layout import BP_KIND, KIND_ROD
-from impactlab.dynamics.core.accumulate import (
+from impactlab.dynamics.core.accumulate import NA, track
+from impactlab.dynamics.core.approach import W_WORK_LEN
+from impactlab.dynamics.core.ends import approach_end, near_separation, opening
+from impactlab.dynamics.core.events import GO_ON, handle_event
+from impactlab.dynamics.core.history import record as record_row
+from impactlab.dynamics.core.history import record_substeps
+from impactlab.dynamics.core.integrator import dp_step, first_event, integrate_to
+from impactlab.dynamics.kernels.dormand_prince import RECOMPUTE_LEN, STEP_LEN, step_views
+from impactlab.dynamics.kernels.layout import (
     A_DMAX,
     A_EMIN,
     A_ERISE,
@@ -29,24 +37,6 @@ from impactlab.dynamics.core.accumulate import (
     A_VSPOS,
     A_WCOMP,
     A_WREST,
-    NA,
-    track,
-)
-from impactlab.dynamics.core.approach import W_WORK_LEN
-from impactlab.dynamics.core.ends import approach_end, near_separation, opening
-from impactlab.dynamics.core.events import GO_ON, handle_event
-from impactlab.dynamics.core.history import record as record_row
-from impactlab.dynamics.core.history import record_substeps
-from impactlab.dynamics.core.integrator import (
-    RECOMPUTE_LEN,
-    STEP_LEN,
-    dp_step,
-    first_event,
-    growth,
-    integrate_to,
-    step_views,
-)
-from impactlab.dynamics.core.layout import (
     C_A0,
     C_B0,
     C_G,
@@ -98,11 +88,11 @@ from impactlab.dynamics.core.layout import (
     S_VY,
     S_Y,
 )
-from impactlab.dynamics.core.normal import geometry
-from impactlab.dynamics.core.quality import result_flags
-from impactlab.dynamics.core.rhs import evaluate_cold, rhs_events_cold
-from impactlab.dynamics.core.setup import check_inputs, constants, error_scales, initial_mode
-from impactlab.dynamics.core.status import (
+from impactlab.dynamics.kernels.normal import geometry
+from impactlab.dynamics.kernels.quality import result_flags
+from impactlab.dynamics.kernels.rhs import evaluate_cold, rhs_events_cold
+from impactlab.dynamics.kernels.setup import check_inputs, constants, error_scales, initial_mode
+from impactlab.dynamics.kernels.status import (
     REGIME_FRICTIONLESS,
     REGIME_REVERSAL,
     REGIME_SLIP,
@@ -114,7 +104,8 @@ from impactlab.dynamics.core.status import (
     ST_STEP_UNDERFLOW,
     ST_TOO_MANY_EVENTS,
 )
-from impactlab.dynamics.core.tuples import state_tuple
+from impactlab.dynamics.kernels.step_control import growth
+from impactlab.dynamics.kernels.tuples import state_tuple
 
 #: Scratch of the step loop (``_integrate``): its arrays, a recomputation, a w-integration.
 INTEGRATE_WORK_LEN = (STEP_LEN + RECOMPUTE_LEN) * NS + W_WORK_LEN

@@ -12,7 +12,7 @@ from numba import njit
 from impactlab.dynamics.core.approach import W_EVENT, W_NAN, W_REACHED, w_integrate, w_state
 from impactlab.dynamics.core.events import GO_ON, NO_EVENTS, handle_event, on_event
 from impactlab.dynamics.core.history import record as record_row
-from impactlab.dynamics.core.layout import (
+from impactlab.dynamics.kernels.layout import (
     C_DLIM,
     C_DSW,
     EV_FRIC,
@@ -24,11 +24,11 @@ from impactlab.dynamics.core.layout import (
     M_PHASE,
     NS,
 )
-from impactlab.dynamics.core.normal import geometry
-from impactlab.dynamics.core.rhs import rhs_events_cold
-from impactlab.dynamics.core.status import ST_NAN
-from impactlab.dynamics.core.transitions import without_switch
-from impactlab.dynamics.core.tuples import state_tuple
+from impactlab.dynamics.kernels.normal import geometry
+from impactlab.dynamics.kernels.rhs import rhs_events_cold
+from impactlab.dynamics.kernels.status import ST_NAN
+from impactlab.dynamics.kernels.transitions import without_switch
+from impactlab.dynamics.kernels.tuples import state_tuple
 
 #: The final approach in w starts when separation is predicted within this many steps.
 APPROACH_STEPS = 2.0

@@ -7,8 +7,11 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from impactlab.dynamics.core.accumulate import A_EEL, A_WCOMP, A_WMARK, A_WREST, stored
-from impactlab.dynamics.core.layout import (
+from impactlab.dynamics.core.accumulate import A_EEL, stored
+from impactlab.dynamics.kernels.layout import (
+    A_WCOMP,
+    A_WMARK,
+    A_WREST,
     EV_LIMIT,
     EV_SEP,
     EV_SWITCH,
@@ -18,8 +21,8 @@ from impactlab.dynamics.core.layout import (
     S_Q,
     S_WORK,
 )
-from impactlab.dynamics.core.status import ST_LAW_LIMIT, ST_OK
-from impactlab.dynamics.core.transitions import restart, switch_mode, without_switch
+from impactlab.dynamics.kernels.status import ST_LAW_LIMIT, ST_OK
+from impactlab.dynamics.kernels.transitions import restart, switch_mode, without_switch
 
 GO_ON = -1  # internal status: the impact goes on
 NO_EVENTS = (-1.0, -1.0, -1.0, -1.0, -1.0, -1.0)  # an event tuple where none can fire

@@ -6,9 +6,9 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from impactlab.dynamics.core.friction import sticking
-from impactlab.dynamics.core.integrator import dense
-from impactlab.dynamics.core.layout import (
+from impactlab.dynamics.kernels.dormand_prince import dense
+from impactlab.dynamics.kernels.friction import sticking
+from impactlab.dynamics.kernels.layout import (
     C_C0,
     C_D,
     C_R,
@@ -39,9 +39,9 @@ from impactlab.dynamics.core.layout import (
     S_X,
     S_Y,
 )
-from impactlab.dynamics.core.normal import geometry
-from impactlab.dynamics.core.rhs import energy, evaluate_cold
-from impactlab.dynamics.core.tuples import state_tuple
+from impactlab.dynamics.kernels.normal import geometry
+from impactlab.dynamics.kernels.rhs import energy, evaluate_cold
+from impactlab.dynamics.kernels.tuples import state_tuple
 
 
 @njit(cache=True, error_model="numpy")
@@ -83,6 +83,6 @@ def record_substeps(hist, n, t, h, theta, law, p, fric, c, md, y, K, Q, yt):
         thj = j / HISTORY_SUBSTEPS
         if thj >= theta:
             break
-        dense(y, K, h, thj, Q, yt)
+        dense(y, h, thj, Q, yt)
         hist, n = record(hist, n, t + thj * h, law, p, fric, c, md, state_tuple(yt))
     return hist, n

@@ -9,9 +9,8 @@ and limits in docs/verification/index.md, "Partial slip"): a line of elastic-per
 elements of stiffness G_1 = 4 G* per unit length on |x| < a, cut into cells of width dx; cell i
 (both halves) carries f_i, F_t = -sum f_i; limit L_i = mu F_n g_i(a) (sum L_i = mu F_n);
 STICK: df_i/dt = 2 G_1 l_i v_slip (plus the share of a receding edge cell), SLIP: f_i = s_i L_i.
-The same rules as the slipcore (``slipcore.model`` / ``slipcore.switches``; the import
-contracts keep the two compiled packages apart, so the kernels are written here once for any
-offset and per end; see docs/flexible.md).
+The cell kernels are the shared ones of ``impactlab.dynamics.kernels.cells`` (also those of
+the rigid body's ``slipcore``); here they are applied per end (see docs/flexible.md).
 
 Per end k the cell modes and slip signs are columns of the mode table (``MD_CM``, ``MD_SG``),
 the limits, their rates and the forces columns of ``ek`` (``EK_L``, ``EK_LD``, ``EK_F``), the
@@ -24,78 +23,21 @@ import math
 
 from numba import njit
 
-from impactlab.dynamics.core.normal import dforce_ddelta, dradius_ddelta, radius
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.friction import rigid_mode
-
-OUT = 0.0  #: not (or no longer) in contact: f = 0
-STICK = 1.0  #: df/dt = 2 G_1 l v_slip
-SLIP = 2.0  #: f = s L
-CP_G1 = 0  #: G_1 = 4 G* [Pa]
-CP_DX = 1  #: cell width [m]
-CP_VTOL = 2  #: slip-rate hysteresis of the slip -> stick test [m/s]
-CP_FTOL = 3  #: force hysteresis of the stick -> slip test [N]
-SLIP_HYST = 1e-9  #: relative hysteresis of the stick -> slip test
-STEP_PAST = 1.05  #: a step ends this far past the predicted next cell boundary
-N_CELLS = 16  #: cells over the estimated largest contact radius (``friction.PARTIAL_SLIP_CELLS``)
-
-
-@njit(cache=True, inline="always", error_model="numpy")
-def n_in(cm):
-    """Number of cells in contact (born inwards-out, released outside-in)."""
-    n = 0
-    while n < cm.shape[0] and cm[n] != OUT:
-        n += 1
-    return n
-
-
-@njit(cache=True, inline="always", error_model="numpy")
-def cell_length(i, a, dx):
-    """Length of cell ``i`` inside the contact radius ``a``."""
-    ln = a - i * dx
-    return 0.0 if ln < 0.0 else (dx if ln > dx else ln)
-
-
-@njit(cache=True, inline="always", error_model="numpy")
-def stick_rate(i, f, a, ad, vs, cp):
-    """df_i/dt of cell ``i`` (force ``f``) in STICK: new material enters unstressed, material
-    leaving a receding edge cell takes its share of the force."""
-    ln = cell_length(i, a, cp[CP_DX])
-    r = 2.0 * cp[CP_G1] * ln * vs
-    if ad < 0.0 and 0.0 < ln < cp[CP_DX]:
-        r += f * ad / ln
-    return r
-
-
-@njit(cache=True, inline="always", error_model="numpy")
-def limits(i, dx, mu, Fn, Fd, ar, ad):
-    """(L_i, dL_i/dt) of cell ``i``: mu F_n g_i(a) and its rate (F_n' = Fd, a' = ad)."""
-    lo = i * dx
-    if not (lo < ar and Fn > 0.0):
-        return 0.0, 0.0
-    edge = lo + dx > ar
-    r = ar if edge else lo + dx
-    r3 = r * r * r - lo * lo * lo
-    a2 = ar * ar
-    g = max(0.0, 1.5 / ar * (r - lo) - 0.5 * r3 / (a2 * ar))  # >= 0 despite round-off
-    if edge:
-        dg = 1.5 * lo / a2 - 1.5 * lo * lo * lo / (a2 * a2)
-    else:
-        dg = -1.5 * (r - lo) / a2 + 1.5 * r3 / (a2 * a2)
-    return mu * Fn * g, mu * (Fd * g + Fn * dg * ad)
-
-
-@njit(cache=True, inline="always", error_model="numpy")
-def cell_switch(i, cm, sg, cp, L, Ld, f, ar, ad, vs):
-    """Event function of cell ``i``: STICK -> SLIP when |f| passes its limit, SLIP -> STICK
-    when the limit outruns the stick trial (fires when it goes from <= 0 to > 0)."""
-    if cm[i] == STICK:
-        return abs(f[i]) - L[i] * (1.0 + SLIP_HYST) - cp[CP_FTOL]
-    if cm[i] == SLIP and ar > i * cp[CP_DX]:
-        ln = cell_length(i, ar, cp[CP_DX])
-        trial = stick_rate(i, f[i], ar, ad, vs, cp)
-        return Ld[i] - sg[i] * trial - 2.0 * cp[CP_G1] * ln * cp[CP_VTOL]
-    return -1.0
+from impactlab.dynamics.kernels.cells import (
+    CP_DX,
+    OUT,
+    SLIP,
+    STEP_PAST,
+    STICK,
+    boundary_time,
+    cell_switch,
+    limits,
+    n_in,
+    stick_rate,
+)
+from impactlab.dynamics.kernels.normal import dforce_ddelta, dradius_ddelta, radius
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -168,41 +110,9 @@ def cell_events(c, md, k, ek, ev):
         ev[e0 + F.FG_BIRTH] = ar - nin * dx
     if nin > 1:
         ev[e0 + F.FG_REL] = (nin - 1) * dx - ar
+    vs = ek[k, F.EK_VT]
     for i in range(nin):
-        ev[e0 + F.FG_CELL + i] = cell_switch(i, cm, sg, cp, L, Ld, f, ar, ad, ek[k, F.EK_VT])
-
-
-@njit(cache=True, error_model="numpy")
-def birth(i, y, o, cm, sg, cp, mu, estar, Fn, vn, vs, ar, ad):
-    """Cell ``i`` enters the contact unstressed, slipping (towards v_slip) iff
-    G_1 |v_slip| a^2 > 1.5 mu F_n a' (at a = 0: G_1 |v_slip| > mu E* |v_n|), else sticking."""
-    y[o + i] = 0.0
-    g1 = cp[CP_G1]
-    if ar <= 0.0:
-        slip = g1 * abs(vs) > mu * estar * abs(vn)
-    else:
-        slip = g1 * abs(vs) * ar * ar > 1.5 * mu * Fn * ad
-    if vs != 0.0 and slip:
-        cm[i] = SLIP
-        sg[i] = 1.0 if vs > 0.0 else -1.0
-    else:
-        cm[i] = STICK
-        sg[i] = 0.0
-
-
-@njit(cache=True, error_model="numpy")
-def to_slip(i, y, o, cm, sg, L):
-    """Cell ``i`` slips in the direction of its force, clamped to its limit."""
-    cm[i] = SLIP
-    sg[i] = 1.0 if y[o + i] > 0.0 else -1.0
-    y[o + i] = sg[i] * L[i]
-
-
-@njit(cache=True, error_model="numpy")
-def to_stick(i, y, o, cm, sg, L):
-    """Cell ``i`` sticks with the force it had on its limit."""
-    y[o + i] = sg[i] * L[i]
-    cm[i] = STICK
+        ev[e0 + F.FG_CELL + i] = cell_switch(i, cm, sg, cp, L[i], Ld[i], f[i], ar, ad, vs)
 
 
 @njit(cache=True, error_model="numpy")
@@ -223,14 +133,8 @@ def horizon(c, md, ek):
         if md[k, F.MD_IN] == 0.0:
             continue
         cm = md[k, F.MD_CM : F.MD_CM + F.NCS]
-        nin = n_in(cm)
         dx = c[F.FC_CP + k * F.NFCP + CP_DX]
-        ar = ek[k, F.EK_A]
-        ad = ek[k, F.EK_AD]
-        if ad > 0.0 and nin < F.NCS:
-            hz = min(hz, (nin * dx - ar) / ad)
-        elif ad < 0.0 and nin > 1:
-            hz = min(hz, ((nin - 1) * dx - ar) / ad)
+        hz = min(hz, boundary_time(cm, dx, ek[k, F.EK_A], ek[k, F.EK_AD]))
     return hz
 
 
@@ -253,12 +157,3 @@ def n_active(md, n, M):
     for k in range(F.NE):
         na += n_in(md[k, F.MD_CM : F.MD_CM + F.NCS])
     return na
-
-
-@njit(cache=True, error_model="numpy")
-def any_stuck(md, k):
-    """Whether a cell of end k sticks."""
-    found = False
-    for i in range(F.NCS):
-        found = found or md[k, F.MD_CM + i] == STICK
-    return found

@@ -1,9 +1,10 @@
 """Mode changes of the partial-slip cells at the ends of the flexible rod (compiled): the cell
 events (birth, release, stick/slip), the settle pass that applies every switch already due at a
-restart, and the cells at a touch. The rules are the slipcore's (``slipcore.switches``;
-docs/verification/index.md, "Partial slip"): a cell is born unstressed when the contact radius
-reaches it, slipping when the stick trial outruns its growing limit; it is released at zero
-force; it slips when |f| reaches its limit and sticks again when the limit outruns the trial.
+restart, and the cells at a touch. The rules and the cell kernels are the shared ones
+(``kernels.cells``; docs/verification/index.md, "Partial slip"): a cell is born unstressed
+when the contact radius reaches it, slipping when the stick trial outruns its growing limit; it
+is released at zero force; it slips when |f| reaches its limit and sticks again when the limit
+outruns the trial.
 """
 
 from __future__ import annotations
@@ -13,25 +14,18 @@ from numba import njit
 
 from impactlab.contact.kernels import P_ESTAR
 from impactlab.dynamics.flexcore import layout as F
-from impactlab.dynamics.flexcore.cells import (
-    CP_DX,
-    CP_FTOL,
-    CP_G1,
-    CP_VTOL,
-    OUT,
+from impactlab.dynamics.flexcore.cells import reset, views
+from impactlab.dynamics.flexcore.rhs import evaluate
+from impactlab.dynamics.kernels.cells import (
     SLIP,
-    SLIP_HYST,
     STICK,
+    apply_due,
     birth,
-    cell_length,
     n_in,
-    reset,
-    stick_rate,
+    release,
     to_slip,
     to_stick,
-    views,
 )
-from impactlab.dynamics.flexcore.rhs import evaluate
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -47,32 +41,9 @@ def _due(mdl, md, k, y, ek):
     c = mdl[2]
     o = cell_offset(mdl, k)
     cm, sg, cp, L, Ld, f = views(c, md, ek, k)
-    nin = n_in(cm)
-    dx = cp[CP_DX]
-    ar = ek[k, F.EK_A]
-    ad = ek[k, F.EK_AD]
-    vs = ek[k, F.EK_VT]
-    if nin < F.NCS and ad > 0.0 and ar > nin * dx + 1e-9 * dx:
-        fn, vn = ek[k, F.EK_FN], ek[k, F.EK_VN]
-        birth(nin, y, o, cm, sg, cp, c[F.FC_MU], mdl[1][P_ESTAR], fn, vn, vs, ar, ad)
-        return True
-    if nin > 1 and ad < 0.0 and ar < (nin - 1) * dx - 1e-9 * dx:
-        cm[nin - 1] = OUT
-        y[o + nin - 1] = 0.0
-        return True
-    changed = False
-    for i in range(nin):
-        if cm[i] == STICK:
-            if abs(f[i]) > L[i] * (1.0 + SLIP_HYST) + cp[CP_FTOL]:
-                to_slip(i, y, o, cm, sg, L)
-                changed = True
-        elif cm[i] == SLIP and ar > i * dx:
-            ln = cell_length(i, ar, dx)
-            trial = stick_rate(i, f[i], ar, ad, vs, cp)
-            if Ld[i] - sg[i] * trial > 2.0 * cp[CP_G1] * ln * cp[CP_VTOL]:
-                to_stick(i, y, o, cm, sg, L)
-                changed = True
-    return changed
+    fn, vn, vs = ek[k, F.EK_FN], ek[k, F.EK_VN], ek[k, F.EK_VT]
+    ar, ad = ek[k, F.EK_A], ek[k, F.EK_AD]
+    return apply_due(y, o, cm, sg, cp, L, Ld, f, c[F.FC_MU], mdl[1][P_ESTAR], fn, vn, vs, ar, ad)
 
 
 @njit(cache=True, error_model="numpy")
@@ -106,8 +77,7 @@ def apply_cell_event(jev, mdl, md, y, ek):
             birth(nin, y, o, cm, sg, cp, c[F.FC_MU], mdl[1][P_ESTAR], fn, vn, vs, ar, ad)
     elif kind == F.FG_REL:
         if nin > 1:
-            cm[nin - 1] = OUT
-            y[o + nin - 1] = 0.0
+            release(y, o, cm, nin)
     else:
         i = kind - F.FG_CELL
         if cm[i] == STICK:

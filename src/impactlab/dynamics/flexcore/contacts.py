@@ -27,7 +27,6 @@ from impactlab.contact.kernels import (
     residual_depth,
     unloading_radius,
 )
-from impactlab.dynamics.core.layout import FR_COULOMB, FR_MINDLIN
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.cells import reset
 from impactlab.dynamics.flexcore.cellswitch import cell_offset, touch_cells
@@ -38,6 +37,7 @@ from impactlab.dynamics.flexcore.friction import (
     radius_factor,
 )
 from impactlab.dynamics.flexcore.rhs import evaluate
+from impactlab.dynamics.kernels.layout import FR_COULOMB, FR_MINDLIN
 
 
 @njit(cache=True, error_model="numpy")

@@ -22,6 +22,7 @@ from impactlab.dynamics.flexcore.rhs import evaluate
 from impactlab.dynamics.flexcore.setup import first_touch, scales, workspace
 from impactlab.dynamics.flexcore.stepper import dp_step
 from impactlab.dynamics.flexcore.steps import accept, reject
+from impactlab.dynamics.kernels.step_control import power_growth
 
 
 @njit(cache=True, error_model="numpy")
@@ -81,7 +82,7 @@ def drop(mdl, vx0, vy0, w0, rtol, t_max, stop_mode, record_on, out, contacts, de
         if not ok:
             break
         y[:] = yev
-        h *= 10.0 if err == 0.0 else min(10.0, 0.9 * err**-0.2)
+        h *= 10.0 if err == 0.0 else min(10.0, power_growth(err))
         if jev < 0:
             K[0, :] = K[6, :]
             gold[:] = gnew

@@ -27,16 +27,16 @@ from numba import njit
 
 from impactlab.contact.history_kernels import contact_radius as _contact_radius
 from impactlab.contact.kernels import P_ESTAR, P_R
-from impactlab.dynamics.core.friction import friction_switch, mindlin_trial_rate
-from impactlab.dynamics.core.layout import FR_COULOMB, FR_IMPULSE, FR_MINDLIN
-from impactlab.dynamics.core.normal import radius
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.kinematics import stick_ratio
+from impactlab.dynamics.kernels.friction import friction_switch, mindlin_trial_rate
+from impactlab.dynamics.kernels.layout import FR_COULOMB, FR_IMPULSE, FR_MINDLIN
+from impactlab.dynamics.kernels.normal import radius
 
 
 @njit(cache=True, inline="always", error_model="numpy")
 def rigid_mode(md, k):
-    """End k's mode as the rigid core's mode tuple (``core.layout.M_*``: phase, delta_m,
+    """End k's mode as the rigid core's mode tuple (``kernels.layout.M_*``: phase, delta_m,
     delta_r, R_r, friction mode, compressing, impulse-ratio sign, radius factor)."""
     return (
         md[k, F.MD_PH],

@@ -1,7 +1,7 @@
 """Layouts of the flexible-rod integrator: the constants vector, the per-end mode table, the
 events, the dents, the contact records, the run state, the output vector and the history.
 
-Imports only ``impactlab.schema`` (L0) and the status table of every engine (``core.status``):
+Imports only ``impactlab.schema`` (L0) and the status table of every engine (``kernels.status``):
 the compiled modules of this package read the indices.
 
 State vector (length 6 + 2 M + NQUAD, M elastic modes):
@@ -18,7 +18,7 @@ grows, the elastic displacement [m] while it shrinks; 0 for the other friction m
 
 from __future__ import annotations
 
-from impactlab.dynamics.core import status as _status
+from impactlab.dynamics.kernels import status as _status
 from impactlab.schema import Field
 
 NE = 2  #: number of ends (0: the tip that touches first, 1: the other end)
@@ -168,7 +168,7 @@ NSV = 29
 #: interference scale delta* (``SV_TOL_MISS``).
 MISS_TOL_FACTOR = 1.0
 
-# ---- status: the one table of every engine (``core.status``), named here for this package ----
+# ---- status: the one table of every engine (``kernels.status``), named here for this package ----
 ST_INACCURATE = _status.ST_INACCURATE
 ST_LAW_LIMIT = _status.ST_LAW_LIMIT
 ST_MAX_STEPS = _status.ST_MAX_STEPS

@@ -10,7 +10,7 @@ import numpy as np
 
 from impactlab.contact.kernels import P_DLIM, P_DSW
 from impactlab.dynamics.flexcore import layout as F
-from impactlab.dynamics.flexcore.cells import CP_DX
+from impactlab.dynamics.kernels.cells import CP_DX
 
 
 def constants(

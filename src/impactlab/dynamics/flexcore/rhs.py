@@ -17,11 +17,11 @@ from __future__ import annotations
 
 from numba import njit
 
-from impactlab.dynamics.core.layout import FR_COULOMB
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.cells import cell_events, cell_forces, cell_rates
 from impactlab.dynamics.flexcore.friction import friction_event, state_rate, tangential
 from impactlab.dynamics.flexcore.kinematics import end_kinematics, mobility, normal_force
+from impactlab.dynamics.kernels.layout import FR_COULOMB
 
 
 @njit(cache=True, inline="always", error_model="numpy")

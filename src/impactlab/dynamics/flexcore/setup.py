@@ -10,11 +10,11 @@ from numba import njit
 
 from impactlab.contact.kernels import P_ESTAR
 from impactlab.dynamics.flexcore import layout as F
-from impactlab.dynamics.flexcore.cells import CP_FTOL, CP_G1, CP_VTOL, N_CELLS
 from impactlab.dynamics.flexcore.cellswitch import touch_cells
 from impactlab.dynamics.flexcore.contacts import new_dent
 from impactlab.dynamics.flexcore.friction import initial_mode
 from impactlab.dynamics.flexcore.rhs import evaluate
+from impactlab.dynamics.kernels.cells import CP_FTOL, CP_G1, CP_VTOL, N_CELLS
 
 
 @njit(cache=True, error_model="numpy")

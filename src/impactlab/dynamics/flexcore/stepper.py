@@ -1,13 +1,16 @@
 """Dormand-Prince 5(4) steps, Shampine's dense output and event location for the flexible
 drop (compiled).
 
-The tableau is the rigid engine's (``impactlab.dynamics.core.integrator``: Dormand & Prince,
+The tableau, stage point, error sum, dense-output coefficients, Illinois update, round-off probe
+and step-size factor are the shared kernels' (``impactlab.dynamics.kernels``: Dormand & Prince,
 J. Comput. Appl. Math. 6 (1980) 19, doi:10.1016/0771-050X(80)90013-3; dense output: Shampine,
 Math. Comp. 46 (1986) 135, doi:10.1090/S0025-5718-1986-0815836-3); the state length varies
-with the number of modes, so the steps here loop over it. An event fires when its function
-goes from <= 0 to > 0; it is located on the dense output (Illinois regula falsi, with the rigid
-core's round-off probe past a root: ``core.integrator.past_root``) and the state at the event is
-recomputed by an error-controlled integration to the located time.
+with the number of modes. An event fires when its function goes from <= 0 to > 0; it is located
+on the dense output (Illinois regula falsi, with the round-off probe past a root:
+``kernels.roots.past_root``) and the state at the event is recomputed by an error-controlled
+integration to the located time. The dense output here evaluates the quartic by Horner's rule
+(the shared ``kernels.dormand_prince.dense`` by powers of theta: the two differ in the last
+bits, and the flexible results were verified with this one).
 """
 
 from __future__ import annotations
@@ -17,27 +20,11 @@ import math
 import numpy as np
 from numba import njit
 
-from impactlab.dynamics.core.integrator import (
-    DENSE_P,
-    DP_A,
-    DP_E,
-    G_ROUNDOFF,
-    THETA_TOL,
-    past_root,
-)
 from impactlab.dynamics.flexcore.cells import n_active
 from impactlab.dynamics.flexcore.rhs import rates
-
-
-@njit(cache=True, error_model="numpy")
-def dense_coeffs(K, Q, n):
-    """Coefficients Q (n, 4) of the dense-output polynomial: Q = K^T DENSE_P (stage by stage,
-    so each entry sums its 7 terms in stage order)."""
-    Q[:n, :] = 0.0
-    for st in range(7):
-        for i in range(n):
-            for j in range(4):
-                Q[i, j] += K[st, i] * DENSE_P[st, j]
+from impactlab.dynamics.kernels.dormand_prince import error_sum, stage_point
+from impactlab.dynamics.kernels.roots import G_ROUNDOFF, THETA_TOL, illinois, past_root
+from impactlab.dynamics.kernels.step_control import power_growth
 
 
 @njit(cache=True, error_model="numpy")
@@ -57,21 +44,11 @@ def dp_step(mdl, md, y, K, h, rtol, sc, st, ynew, ev, ek, Jn, Jt):
     n = y.shape[0]
     law, p, c, _om, om2, dmp, _zeta, Ue, We, Pe, Tg, ia, ib = mdl
     for stage in range(1, 7):
-        for i in range(n):
-            acc = 0.0
-            for j in range(stage):
-                acc += DP_A[stage, j] * K[j, i]
-            st[i] = y[i] + h * acc
+        stage_point(y, K, h, stage, st, n)
         rates(law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, st, K[stage], ev, ek, Jn, Jt)
-    err = 0.0
     for i in range(n):
-        e = 0.0
-        for j in range(7):
-            e += DP_E[j] * K[j, i]
         ynew[i] = st[i]
-        q = h * e / (rtol * (sc[i] + max(abs(y[i]), abs(st[i]))))
-        err += q * q
-    return math.sqrt(err / n_active(md, n, om2.shape[0]))
+    return math.sqrt(error_sum(y, ynew, K, h, rtol, sc, n) / n_active(md, n, om2.shape[0]))
 
 
 @njit(cache=True, error_model="numpy")
@@ -92,24 +69,15 @@ def integrate_to(mdl, md, y, k0, H, rtol, sc, out, ev, ek, Jn, Jt):
             hh = H - done
         err = dp_step(mdl, md, cur, Ks, hh, rtol, sc, st, out, ev, ek, Jn, Jt)
         if not (err <= 1.0) and hh > 1e-6 * H:
-            hh *= max(0.2, 0.9 * err**-0.2) if math.isfinite(err) else 0.25
+            hh *= max(0.2, power_growth(err)) if math.isfinite(err) else 0.25
         elif last:
             break
         else:
             done += hh
             cur[:] = out
             Ks[0, :] = Ks[6, :]
-            hh *= min(5.0, 0.9 * err**-0.2) if err > 0.0 else 5.0
+            hh *= min(5.0, power_growth(err)) if err > 0.0 else 5.0
     return cnt
-
-
-@njit(cache=True, inline="always", error_model="numpy")
-def illinois(a, fa, b, fb, side, th, f):
-    """One Illinois update of the bracket [a, b] (fa <= 0 < fb) with the value f at th: the
-    new (a, fa, b, fb, side), the stale end's value halved when the same side moves twice."""
-    if f > 0.0:
-        return a, (0.5 * fa if side == 1 else fa), th, f, 1
-    return th, f, b, (0.5 * fb if side == -1 else fb), -1
 
 
 @njit(cache=True, error_model="numpy")

@@ -7,13 +7,15 @@ import math
 
 from numba import njit
 
-from impactlab.dynamics.core.layout import FR_IMPULSE
 from impactlab.dynamics.flexcore import layout as F
-from impactlab.dynamics.flexcore.cells import any_stuck
 from impactlab.dynamics.flexcore.history import record
 from impactlab.dynamics.flexcore.kinematics import mechanical_energy
 from impactlab.dynamics.flexcore.rhs import evaluate
-from impactlab.dynamics.flexcore.stepper import dense, dense_coeffs, integrate_to, locate
+from impactlab.dynamics.flexcore.stepper import dense, integrate_to, locate
+from impactlab.dynamics.kernels.cells import any_stuck
+from impactlab.dynamics.kernels.dormand_prince import dense_coeffs
+from impactlab.dynamics.kernels.layout import FR_IMPULSE
+from impactlab.dynamics.kernels.step_control import power_growth
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -31,7 +33,6 @@ def first_event(mdl, md, y, h, K, Q, gold, gnew, sv, record_on, yt, der, ev, ek,
     """(jev, theta, fired): the earliest event crossed in the step (-1: none) and where; a
     touch that began the step within the invariant's tolerance past zero fires where it
     reaches the tolerance (``_missed_touch``)."""
-    n = y.shape[0]
     fired = False
     for j in range(gold.shape[0]):
         if gold[j] <= 0.0 and gnew[j] > 0.0:
@@ -40,7 +41,7 @@ def first_event(mdl, md, y, h, K, Q, gold, gnew, sv, record_on, yt, der, ev, ek,
         if _missed_touch(md, sv, gold, gnew, k):
             fired = True
     if fired or record_on:
-        dense_coeffs(K, Q, n)
+        dense_coeffs(K, Q)
     jev = -1
     theta = 2.0
     if fired:
@@ -87,7 +88,8 @@ def step_stats(mdl, md, t, tend, sv, contacts, dents, cur_con, ek):
     for k in range(F.NE):
         if md[k, F.MD_IN] != 0.0:
             ci = cur_con[k]
-            if sticks and (md[k, F.MD_FM] == 0.0 if not partial else any_stuck(md, k)):
+            cells = md[k, F.MD_CM : F.MD_CM + F.NCS]
+            if sticks and (any_stuck(cells) if partial else md[k, F.MD_FM] == 0.0):
                 contacts[ci, F.CR_STICK] += tend - t
                 sv[F.SV_STICK] += tend - t
             contacts[ci, F.CR_DMAX] = max(contacts[ci, F.CR_DMAX], ek[k, F.EK_DELTA])
@@ -119,7 +121,7 @@ def record_inside(mdl, md, y, t, h, theta, Q, sv, hist, nh, yt, der, ev, ek, Jn,
 def reject(h, err, sv):
     """The step size after a rejected step (error norm ``err``); 0 with ``sv[F.SV_STATUS]`` set
     when it underflows."""
-    h *= 0.25 if not math.isfinite(err) else max(0.2, 0.9 * err**-0.2)
+    h *= 0.25 if not math.isfinite(err) else max(0.2, power_growth(err))
     if h < sv[F.SV_HMIN]:
         sv[F.SV_STATUS] = F.ST_NAN if not math.isfinite(err) else F.ST_STEP_UNDERFLOW
         return 0.0

@@ -1,21 +1,23 @@
 """The compiled partial-slip engine: a rigid body (rod or sphere) on a flat with
 Mindlin-Deresiewicz partial-slip friction, one contact.
 
-Same layer as ``impactlab.dynamics.core``, whose layout, normal-contact kernels, input checks,
-transitions and integrator tableau it reuses. The tangential contact is the exact
+A driver beside ``impactlab.dynamics.core`` on the shared kernels of
+``impactlab.dynamics.kernels`` (layout, normal contact, input checks, transitions, the
+Dormand-Prince tableau and dense output, the partial-slip cells); it never imports another
+driver. The tangential contact is the exact
 Mindlin-Deresiewicz model in its method-of-dimensionality-reduction form, discretised into cells
 (``model``); every cell switch is an event located on the dense output. The derivation, validity
 and verification are in docs/verification/index.md ("Partial slip").
 
-Modules, lowest first: ``layout`` (cell modes, parameter and event indices, defaults),
-``model`` (cells, right-hand side, event functions), ``stepper`` (Dormand-Prince on arrays),
+Modules, lowest first: ``layout`` (parameter and event indices, defaults), ``model``
+(right-hand side, event functions), ``stepper`` (Dormand-Prince on arrays),
 ``switches`` (births, releases, stick/slip, settle), ``outputs`` (bookkeeping, history,
 results), ``driver`` (``impact_slip``).
 """
 
 from __future__ import annotations
 
+from impactlab.dynamics.kernels.cells import N_CELLS
 from impactlab.dynamics.slipcore.driver import impact_slip
-from impactlab.dynamics.slipcore.layout import N_CELLS
 
 __all__ = ["N_CELLS", "impact_slip"]

@@ -14,7 +14,16 @@ from numba import njit
 
 from impactlab.bodies.layout import BP_KIND, KIND_ROD
 from impactlab.contact.kernels import P_ESTAR
-from impactlab.dynamics.core.layout import (
+from impactlab.dynamics.kernels.cells import CP_DX, CP_FTOL, CP_G1, CP_VTOL, STEP_PAST, birth
+from impactlab.dynamics.kernels.dormand_prince import dense, dense_coeffs
+from impactlab.dynamics.kernels.layout import (
+    A_DMAX,
+    A_EMIN,
+    A_FMAX,
+    A_TMAX,
+    A_WCOMP,
+    A_WMARK,
+    A_WREST,
     C_A0,
     C_B0,
     C_GS,
@@ -45,8 +54,8 @@ from impactlab.dynamics.core.layout import (
     S_VY,
     S_WORK,
 )
-from impactlab.dynamics.core.setup import check_inputs, constants, error_scales
-from impactlab.dynamics.core.status import (
+from impactlab.dynamics.kernels.setup import check_inputs, constants, error_scales
+from impactlab.dynamics.kernels.status import (
     ST_BAD_INPUT,
     ST_LAW_LIMIT,
     ST_NAN,
@@ -56,44 +65,15 @@ from impactlab.dynamics.core.status import (
     ST_STEP_UNDERFLOW,
     ST_TOO_MANY_EVENTS,
 )
-from impactlab.dynamics.core.transitions import without_switch
-from impactlab.dynamics.slipcore.layout import (
-    CP_DX,
-    CP_FSC,
-    CP_FTOL,
-    CP_G1,
-    CP_VTOL,
-    EXTRA,
-    G_CELL,
-    NCP,
-)
+from impactlab.dynamics.kernels.step_control import power_growth
+from impactlab.dynamics.kernels.transitions import without_switch
+from impactlab.dynamics.slipcore.layout import CP_FSC, EXTRA, G_CELL, NCP, Y_CELL
 from impactlab.dynamics.slipcore.model import boundary_horizon, evaluate, events
-from impactlab.dynamics.slipcore.outputs import (
-    A_DMAX,
-    A_EMIN,
-    A_FMAX,
-    A_JUMP,
-    A_TMAX,
-    A_WCOMP,
-    A_WMARK,
-    A_WREST,
-    NA,
-    record,
-    separation,
-    track,
-)
-from impactlab.dynamics.slipcore.stepper import (
-    dense,
-    dense_coeffs,
-    first_event,
-    integrate_to,
-    rhs,
-    step,
-)
-from impactlab.dynamics.slipcore.switches import apply_cell_event, birth, normal_switch, settle
+from impactlab.dynamics.slipcore.outputs import A_JUMP, NA, record, separation, track
+from impactlab.dynamics.slipcore.stepper import first_event, integrate_to, rhs, step
+from impactlab.dynamics.slipcore.switches import apply_cell_event, normal_switch, settle
 
 _GO_ON = -1
-STEP_PAST = 1.05  # a step ends this far past the predicted next cell boundary
 
 
 @njit(cache=True, error_model="numpy")
@@ -162,7 +142,7 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
         h = min(h, tstar, STEP_PAST * hz + hmin) if hz > 0.0 else min(h, tstar)
         err, ev = step(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew)
         if not (err <= 1.0):
-            h *= max(0.2, 0.9 * err**-0.2) if math.isfinite(err) else 0.25
+            h *= max(0.2, power_growth(err)) if math.isfinite(err) else 0.25
             if h < hmin:
                 status = ST_NAN if not math.isfinite(err) else ST_STEP_UNDERFLOW
                 break
@@ -173,7 +153,7 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
             dense_coeffs(K, Q)
             for j in range(1, 4):
                 if j / 4.0 < theta:
-                    dense(y, Q, h, j / 4.0, yt)
+                    dense(y, h, j / 4.0, Q, yt)
                     hist, nh = record(hist, nh, t + j * h / 4.0, law, p, c, md, yt, cm, sg, cp, W)
         if k >= 0:
             nsteps += integrate_to(law, p, c, md, y, cm, sg, cp, W, K[0], theta * h, rtol, sc, yev)
@@ -188,7 +168,7 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
             break
         t = tend
         y[:] = yev
-        h *= 10.0 if err == 0.0 else min(10.0, 0.9 * err**-0.2)
+        h *= 10.0 if err == 0.0 else min(10.0, power_growth(err))
         if rec:
             hist, nh = record(hist, nh, t, law, p, c, md, y, cm, sg, cp, W)
         if k < 0:
@@ -252,7 +232,7 @@ def impact_slip(
     cm = np.zeros(EXTRA * n_cells, dtype=np.int64)
     sg = np.zeros(EXTRA * n_cells)
     # the first cell is born at first touch (a = 0)
-    birth(np.int64(0), y, cm, sg, cp, mu, p[P_ESTAR], 0.0, vn0, out[O_VTIN], 0.0, 0.0)
+    birth(np.int64(0), y, Y_CELL, cm, sg, cp, mu, p[P_ESTAR], 0.0, vn0, out[O_VTIN], 0.0, 0.0)
     e0 = 0.5 * c[C_M] * (vx0 * vx0 + vy0 * vy0) + 0.5 * c[C_I] * w0 * w0
     acc = np.zeros(NA)
     acc[A_EMIN] = e0

@@ -1,23 +1,17 @@
-"""Index layout of the partial-slip engine: cell modes, the cell-parameter vector, the event
-vector and the defaults (the rigid-body part of the state, the normal mode tuple and the outputs
-are those of ``impactlab.dynamics.core.layout``)."""
+"""Index layout of the partial-slip engine: the cell-parameter vector beyond the shared cell
+parameters, the event vector and the defaults (the cell modes, the shared cell parameters
+``CP_G1`` ... ``CP_FTOL`` and ``N_CELLS`` are those of ``impactlab.dynamics.kernels.cells``; the
+rigid-body part of the state, the normal mode tuple and the outputs those of
+``impactlab.dynamics.kernels.layout``)."""
 
 from __future__ import annotations
 
-from impactlab.dynamics.core.layout import NEV, NS
+from impactlab.dynamics.kernels.cells import CP_FTOL
+from impactlab.dynamics.kernels.layout import NEV, NS
 
-# --- cell modes ------------------------------------------------------------------------------
-OUT = 0  # not (or no longer) in contact: f = 0
-STICK = 1  # df/dt = 2 G_1 l v_slip (+ the share of a receding edge cell)
-SLIP = 2  # f = s L (on its moving Coulomb limit)
-
-# --- cell parameters (a float vector cp) -------------------------------------------------------
-CP_G1 = 0  # G_1 = 4 G* [Pa]: tangential stiffness per unit length of the MDR line
-CP_DX = 1  # cell width [m] (a_est / N)
-CP_VTOL = 2  # slip-rate hysteresis of the slip -> stick test [m/s]
-CP_FTOL = 3  # force hysteresis of the stick -> slip test [N]
-CP_FSC = 4  # error scale of one cell force [N]
-NCP = 5
+# --- cell parameters (a float vector cp): kernels.cells.CP_G1 ... CP_FTOL (0 .. 3), then -------
+CP_FSC = CP_FTOL + 1  # error scale of one cell force [N]
+NCP = CP_FSC + 1
 
 # --- events: the core's EV_* (0 .. NEV-1; EV_FRIC unused) then the cells' -----------------------
 G_BIRTH = NEV  # the contact radius reaches the next cell (while growing)
@@ -27,6 +21,4 @@ G_CELL = NEV + 2  # + i: stick -> slip or slip -> stick of cell i
 Y_CELL = NS
 
 # --- defaults ----------------------------------------------------------------------------------
-N_CELLS = 16  # cells over the largest contact radius (max |e_t - exact| ~ 1e-3, 2nd order)
 EXTRA = 4  # cell slots per cell of the estimate (the contact may outgrow it)
-SLIP_HYST = 1e-9  # relative hysteresis of the stick -> slip test

@@ -1,5 +1,6 @@
-"""The partial-slip contact: the MDR cells (limits, lengths, stick rates), the right-hand side
-and the event functions on the state array ``y`` (rigid-body state, then the cell forces).
+"""The partial-slip contact of a rigid body: the right-hand side and the event functions on the
+state array ``y`` (rigid-body state, then the cell forces), with the cell kernels (limits,
+lengths, stick rates, switch functions) of ``impactlab.dynamics.kernels.cells``.
 
 Mindlin-Deresiewicz partial slip with arbitrary normal and tangential history (Mindlin 1949,
 doi:10.1115/1.4009973; Mindlin & Deresiewicz 1953, doi:10.1115/1.4010702) in its exact
@@ -20,11 +21,21 @@ docs/verification/index.md ("Partial slip") has the derivation, validity and lim
 
 from __future__ import annotations
 
-import math
-
 from numba import njit
 
-from impactlab.dynamics.core.layout import (
+from impactlab.dynamics.kernels.cells import (
+    CP_DX,
+    CP_G1,
+    SLIP,
+    STICK,
+    boundary_time,
+    cell_length,
+    cell_switch,
+    limits,
+    n_in,
+    stick_rate,
+)
+from impactlab.dynamics.kernels.layout import (
     C_DLIM,
     C_DSW,
     C_G,
@@ -49,54 +60,14 @@ from impactlab.dynamics.core.layout import (
     S_X,
     S_Y,
 )
-from impactlab.dynamics.core.normal import (
+from impactlab.dynamics.kernels.normal import (
     dforce_ddelta,
     dradius_ddelta,
     geometry,
     normal_force,
     radius,
 )
-from impactlab.dynamics.slipcore.layout import (
-    CP_DX,
-    CP_FTOL,
-    CP_G1,
-    CP_VTOL,
-    G_BIRTH,
-    G_CELL,
-    G_REL,
-    OUT,
-    SLIP,
-    SLIP_HYST,
-    STICK,
-    Y_CELL,
-)
-
-
-@njit(cache=True, error_model="numpy")
-def n_in(cm):
-    """Number of cells in contact (cells are born inwards-out and released outside-in)."""
-    n = 0
-    while n < cm.shape[0] and cm[n] != OUT:
-        n += 1
-    return n
-
-
-@njit(cache=True, inline="always", error_model="numpy")
-def cell_length(i, a, dx):
-    """Length of cell ``i`` inside the contact radius ``a``."""
-    ln = a - i * dx
-    return 0.0 if ln < 0.0 else (dx if ln > dx else ln)
-
-
-@njit(cache=True, inline="always", error_model="numpy")
-def stick_rate(i, f, a, ad, vs, cp):
-    """df_i/dt of cell ``i`` (force ``f``) in STICK: new material enters unstressed, material
-    leaving a receding edge cell takes its share of the force."""
-    ln = cell_length(i, a, cp[CP_DX])
-    r = 2.0 * cp[CP_G1] * ln * vs
-    if ad < 0.0 and 0.0 < ln < cp[CP_DX]:
-        r += f * ad / ln
-    return r
+from impactlab.dynamics.slipcore.layout import G_BIRTH, G_CELL, G_REL, Y_CELL
 
 
 @njit(cache=True, error_model="numpy")
@@ -118,21 +89,7 @@ def evaluate(law, p, c, md, y, cm, sg, cp, W):
     mu = c[C_MU]
     Ft = 0.0
     for i in range(nin):
-        lo = i * dx
-        L = 0.0
-        Ld = 0.0
-        if lo < ar and Fn > 0.0:
-            edge = lo + dx > ar
-            r = ar if edge else lo + dx
-            r3 = r * r * r - lo * lo * lo
-            a2 = ar * ar
-            g = max(0.0, 1.5 / ar * (r - lo) - 0.5 * r3 / (a2 * ar))  # >= 0 despite round-off
-            if edge:
-                dg = 1.5 * lo / a2 - 1.5 * lo * lo * lo / (a2 * a2)
-            else:
-                dg = -1.5 * (r - lo) / a2 + 1.5 * r3 / (a2 * a2)
-            L = mu * Fn * g
-            Ld = mu * (Fd * g + Fn * dg * ad)
+        L, Ld = limits(i, dx, mu, Fn, Fd, ar, ad)
         W[0, i] = L
         W[1, i] = Ld
         f = sg[i] * L if cm[i] == SLIP else y[Y_CELL + i]
@@ -165,13 +122,7 @@ def derivative(c, y, cm, sg, cp, W, ev, dy):
 def cell_event(i, cm, sg, cp, W, ar, ad, vs):
     """Event function of cell ``i``: STICK -> SLIP when |f| passes its limit (relative
     hysteresis SLIP_HYST), SLIP -> STICK when the limit outruns the stick trial."""
-    if cm[i] == STICK:
-        return abs(W[2, i]) - W[0, i] * (1.0 + SLIP_HYST) - cp[CP_FTOL]
-    if cm[i] == SLIP and ar > i * cp[CP_DX]:
-        ln = cell_length(i, ar, cp[CP_DX])
-        trial = stick_rate(i, W[2, i], ar, ad, vs, cp)
-        return W[1, i] - sg[i] * trial - 2.0 * cp[CP_G1] * ln * cp[CP_VTOL]
-    return -1.0
+    return cell_switch(i, cm, sg, cp, W[0, i], W[1, i], W[2, i], ar, ad, vs)
 
 
 @njit(cache=True, error_model="numpy")
@@ -203,13 +154,7 @@ def events(c, md, cm, sg, cp, W, ev, g):
 def boundary_horizon(cm, cp, ar, ad):
     """Time until the contact radius ``ar`` (rate ``ad``) reaches the next cell boundary, where
     a cell is born or released and the cell lengths have a kink (inf when none lies ahead)."""
-    nin = n_in(cm)
-    dx = cp[CP_DX]
-    if ad > 0.0 and nin < cm.shape[0]:
-        return (nin * dx - ar) / ad
-    if ad < 0.0 and nin > 1:
-        return ((nin - 1) * dx - ar) / ad
-    return math.inf
+    return boundary_time(cm, cp[CP_DX], ar, ad)
 
 
 @njit(cache=True, error_model="numpy")

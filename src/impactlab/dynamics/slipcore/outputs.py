@@ -9,7 +9,20 @@ import math
 import numpy as np
 from numba import njit
 
-from impactlab.dynamics.core.layout import (
+from impactlab.dynamics.kernels.cells import any_stuck
+from impactlab.dynamics.kernels.layout import (
+    A_DMAX,
+    A_EMIN,
+    A_ERISE,
+    A_FEX,
+    A_FMAX,
+    A_OWN,
+    A_STICK,
+    A_TMAX,
+    A_VSNEG,
+    A_VSPOS,
+    A_WCOMP,
+    A_WREST,
     C_C0,
     C_D,
     C_G,
@@ -65,37 +78,15 @@ from impactlab.dynamics.core.layout import (
     S_X,
     S_Y,
 )
-from impactlab.dynamics.core.normal import geometry
-from impactlab.dynamics.core.quality import result_flags
-from impactlab.dynamics.core.rhs import energy
-from impactlab.dynamics.core.status import REGIME_REVERSAL, REGIME_SLIP, REGIME_STICK
-from impactlab.dynamics.slipcore.layout import STICK
+from impactlab.dynamics.kernels.normal import geometry
+from impactlab.dynamics.kernels.quality import result_flags
+from impactlab.dynamics.kernels.rhs import energy
+from impactlab.dynamics.kernels.status import REGIME_REVERSAL, REGIME_SLIP, REGIME_STICK
 from impactlab.dynamics.slipcore.model import evaluate, stored_energy
 
-# --- accumulators over the accepted steps (as in the core's driver) ----------------------------
-A_EMIN = 0  # lowest total energy so far [J]
-A_ERISE = 1  # largest rise of the total energy above that minimum [J]
-A_FEX = 2  # largest |F_t| - mu F_n [N]
-A_FMAX = 3  # largest normal force [N]
-A_DMAX = 4  # largest interference [m]
-A_TMAX = 5  # time of the largest interference [s]
-A_VSPOS = 6  # largest slip velocity [m/s]
-A_VSNEG = 7  # smallest slip velocity [m/s]
-A_STICK = 8  # time with at least one cell stuck [s]
-A_WMARK = 9  # normal work at the last v_n = 0 event [J]
-A_WCOMP = 10  # normal work of compression [J]
-A_WREST = 11  # normal work of restitution [J]
-A_JUMP = 12  # largest change of F_t across a switch [N]
-NA = 13
-
-
-@njit(cache=True, error_model="numpy")
-def any_stuck(cm):
-    """True while at least one cell sticks (no gross slip)."""
-    found = False
-    for i in range(cm.shape[0]):
-        found = found or cm[i] == STICK
-    return found
+# --- accumulators over the accepted steps: kernels.layout.A_*, then ---------------------------
+A_JUMP = A_OWN  # largest change of F_t across a switch [N]
+NA = A_OWN + 1
 
 
 @njit(cache=True, error_model="numpy")

@@ -1,10 +1,12 @@
 """Dormand-Prince 5(4) on the partial-slip state array: one step, the dense output, event
 location and the error-controlled integration over an exact interval.
 
-The tableau and Shampine's dense-output coefficients are the core's
-(``impactlab.dynamics.core.integrator``; Dormand & Prince 1980, doi:10.1016/0771-050X(80)90013-3;
-Shampine 1986, doi:10.1090/S0025-5718-1986-0815836-3); the state here is an array whose length
-depends on the number of cells, so the step functions are written for arrays.
+The tableau, the stage point, the error sum, Shampine's dense output, the Illinois update and
+the step-size factor are the shared kernels' (``impactlab.dynamics.kernels``: Dormand & Prince
+1980, doi:10.1016/0771-050X(80)90013-3; Shampine 1986, doi:10.1090/S0025-5718-1986-0815836-3);
+the state here is an array whose length depends on the number of cells. The event search
+stops at a bracket of 1e-13 without the round-off probe of the other engines (the partial-slip
+results were verified with it; the probe moves event times by up to the bracket width).
 """
 
 from __future__ import annotations
@@ -14,7 +16,9 @@ import math
 import numpy as np
 from numba import njit
 
-from impactlab.dynamics.core.integrator import DENSE_P, DP_A, DP_E
+from impactlab.dynamics.kernels.dormand_prince import dense, dense_coeffs, error_sum, stage_point
+from impactlab.dynamics.kernels.roots import illinois
+from impactlab.dynamics.kernels.step_control import power_growth
 from impactlab.dynamics.slipcore.layout import G_CELL, Y_CELL
 from impactlab.dynamics.slipcore.model import cell_event, derivative, evaluate, events, n_in
 
@@ -27,17 +31,6 @@ def rhs(law, p, c, md, y, cm, sg, cp, W, dy):
     return ev
 
 
-@njit(cache=True, inline="always", error_model="numpy")
-def _stage_point(y, K, h, stage, out, nact):
-    """The point ``y + h sum_j a_{stage,j} K[j]`` where stage ``stage`` is evaluated (the
-    first ``nact`` components: the cells out of contact stay at 0)."""
-    for i in range(nact):
-        acc = 0.0
-        for j in range(stage):
-            acc += DP_A[stage, j] * K[j, i]
-        out[i] = y[i] + h * acc
-
-
 @njit(cache=True, error_model="numpy")
 def step(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew):
     """One step of size ``h`` from ``y`` (``K[0]``: the derivative at ``y``); fills ``K[1:7]``
@@ -45,39 +38,11 @@ def step(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew):
     quantities at ``ynew``). Error scale of component i: rtol (sc[i] + max(|y_i|, |ynew_i|))."""
     nact = Y_CELL + n_in(cm)
     for stage in range(1, 6):
-        _stage_point(y, K, h, stage, ynew, nact)
+        stage_point(y, K, h, stage, ynew, nact)  # the cells out of contact stay at 0
         rhs(law, p, c, md, ynew, cm, sg, cp, W, K[stage])
-    _stage_point(y, K, h, 6, ynew, nact)
+    stage_point(y, K, h, 6, ynew, nact)
     ev = rhs(law, p, c, md, ynew, cm, sg, cp, W, K[6])
-    err = 0.0
-    for i in range(nact):
-        ei = 0.0
-        for j in range(7):
-            ei += DP_E[j] * K[j, i]
-        q = h * ei / (rtol * (sc[i] + max(abs(y[i]), abs(ynew[i]))))
-        err += q * q
-    return math.sqrt(err / nact), ev
-
-
-@njit(cache=True, error_model="numpy")
-def dense(y0, Q, h, theta, out):
-    """Dense output at t0 + theta h from the coefficients ``Q`` (``dense_coeffs``)."""
-    t2 = theta * theta
-    t3 = t2 * theta
-    t4 = t3 * theta
-    for i in range(y0.shape[0]):  # cells out of contact: K = 0
-        out[i] = y0[i] + h * (Q[i, 0] * theta + Q[i, 1] * t2 + Q[i, 2] * t3 + Q[i, 3] * t4)
-
-
-@njit(cache=True, error_model="numpy")
-def dense_coeffs(K, Q):
-    """Q = K^T DENSE_P for the last step."""
-    for i in range(K.shape[1]):
-        for j in range(4):
-            s = 0.0
-            for st in range(7):
-                s += K[st, i] * DENSE_P[st, j]
-            Q[i, j] = s
+    return math.sqrt(error_sum(y, ynew, K, h, rtol, sc, nact) / nact), ev
 
 
 @njit(cache=True, error_model="numpy")
@@ -100,18 +65,9 @@ def locate(k, g0, g1, law, p, c, md, y0, Q, h, cm, sg, cp, W, g, yt):
         th = (a * fb - b * fa) / (fb - fa)
         if not (a < th < b):
             th = 0.5 * (a + b)
-        dense(y0, Q, h, th, yt)
+        dense(y0, h, th, Q, yt)
         f = event_at(k, law, p, c, md, yt, cm, sg, cp, W, g)
-        if f > 0.0:
-            b, fb = th, f
-            if side == 1:
-                fa *= 0.5
-            side = 1
-        else:
-            a, fa = th, f
-            if side == -1:
-                fb *= 0.5
-            side = -1
+        a, fa, b, fb, side = illinois(a, fa, b, fb, side, th, f)
         if b - a <= 1e-13:
             break
     return b
@@ -157,12 +113,12 @@ def integrate_to(law, p, c, md, y, cm, sg, cp, W, k0, H, rtol, sc, out):
         Ks[0, :] = kc
         err, _ev = step(law, p, c, md, cur, cm, sg, cp, W, Ks, hh, rtol, sc, out)
         if not (err <= 1.0) and hh > 1e-6 * H:
-            hh *= max(0.2, 0.9 * err**-0.2) if math.isfinite(err) else 0.25
+            hh *= max(0.2, power_growth(err)) if math.isfinite(err) else 0.25
             continue
         if last:
             break
         done += hh
         cur[:] = out
         kc[:] = Ks[6]
-        hh *= min(5.0, 0.9 * err**-0.2) if err > 0.0 else 5.0
+        hh *= min(5.0, power_growth(err)) if err > 0.0 else 5.0
     return steps

@@ -1,6 +1,7 @@
 """Mode changes of the partial-slip engine at events: birth and release of cells, stick/slip
-switches of a cell, the normal-contact transitions (the core's), and the settle pass that
-applies every switch already due at a restart.
+switches of a cell (the cell kernels of ``kernels.cells``), the normal-contact transitions
+(``kernels.transitions``), and the settle pass that applies every switch already due at a
+restart.
 
 Rules (docs/verification/index.md, "Partial slip"): a cell is born unstressed when the contact
 radius reaches it, in SLIP (towards v_slip) when the stick trial outruns its growing limit, else
@@ -13,59 +14,21 @@ from __future__ import annotations
 from numba import njit
 
 from impactlab.contact.kernels import P_ESTAR
-from impactlab.dynamics.core.layout import EV_RELOAD, EV_VN, FR_MINDLIN, M_COMP, M_PHASE
-from impactlab.dynamics.core.status import ST_OK
-from impactlab.dynamics.core.transitions import unloading_branch
-from impactlab.dynamics.core.tuples import mode_with
-from impactlab.dynamics.slipcore.layout import (
-    CP_DX,
-    CP_FTOL,
-    CP_G1,
-    CP_VTOL,
-    G_BIRTH,
-    G_CELL,
-    G_REL,
-    OUT,
+from impactlab.dynamics.kernels.cells import (
     SLIP,
-    SLIP_HYST,
     STICK,
-    Y_CELL,
+    apply_due,
+    birth,
+    release,
+    to_slip,
+    to_stick,
 )
-from impactlab.dynamics.slipcore.model import cell_length, evaluate, stick_rate
-
-
-@njit(cache=True, error_model="numpy")
-def birth(i, y, cm, sg, cp, mu, estar, Fn, vn, vs, ar, ad):
-    """Cell ``i`` enters the contact unstressed. Near its inner end the limit grows like
-    1.5 mu F_n l^2/a^2 and the stick trial like G_1 |v_slip| l^2/a': it is born slipping iff
-    G_1 |v_slip| a^2 > 1.5 mu F_n a' (at first touch, a = 0: G_1 |v_slip| > mu E* |v_n|)."""
-    y[Y_CELL + i] = 0.0
-    g1 = cp[CP_G1]
-    if ar <= 0.0:
-        slip = g1 * abs(vs) > mu * estar * abs(vn)
-    else:
-        slip = g1 * abs(vs) * ar * ar > 1.5 * mu * Fn * ad
-    if vs != 0.0 and slip:
-        cm[i] = SLIP
-        sg[i] = 1.0 if vs > 0.0 else -1.0
-    else:
-        cm[i] = STICK
-        sg[i] = 0.0
-
-
-@njit(cache=True, error_model="numpy")
-def to_slip(i, y, cm, sg, W):
-    """Cell ``i`` starts to slip in the direction of its force, clamped to its limit."""
-    cm[i] = SLIP
-    sg[i] = 1.0 if y[Y_CELL + i] > 0.0 else -1.0
-    y[Y_CELL + i] = sg[i] * W[0, i]
-
-
-@njit(cache=True, error_model="numpy")
-def to_stick(i, y, cm, sg, W):
-    """Cell ``i`` sticks with the force it had on its limit."""
-    y[Y_CELL + i] = sg[i] * W[0, i]
-    cm[i] = STICK
+from impactlab.dynamics.kernels.layout import EV_RELOAD, EV_VN, FR_MINDLIN, M_COMP, M_PHASE
+from impactlab.dynamics.kernels.status import ST_OK
+from impactlab.dynamics.kernels.transitions import unloading_branch
+from impactlab.dynamics.kernels.tuples import mode_with
+from impactlab.dynamics.slipcore.layout import G_BIRTH, G_CELL, G_REL, Y_CELL
+from impactlab.dynamics.slipcore.model import evaluate
 
 
 @njit(cache=True, error_model="numpy")
@@ -73,44 +36,24 @@ def apply_cell_event(k, y, cm, sg, cp, mu, estar, W, ev):
     """The switch of the cell event ``k`` (birth, release or a cell's stick/slip)."""
     _delta, _a, _b, Fn, _Ft, vn, vs, ar, ad, nin = ev
     if k == G_BIRTH:
-        birth(nin, y, cm, sg, cp, mu, estar, Fn, vn, vs, ar, ad)
+        birth(nin, y, Y_CELL, cm, sg, cp, mu, estar, Fn, vn, vs, ar, ad)
     elif k == G_REL:
-        cm[nin - 1] = OUT
-        y[Y_CELL + nin - 1] = 0.0
+        release(y, Y_CELL, cm, nin)
     else:
         i = k - G_CELL
         if cm[i] == STICK:
-            to_slip(i, y, cm, sg, W)
+            to_slip(i, y, Y_CELL, cm, sg, W[0])
         elif cm[i] == SLIP:
-            to_stick(i, y, cm, sg, W)
+            to_stick(i, y, Y_CELL, cm, sg, W[0])
 
 
 @njit(cache=True, error_model="numpy")
 def _due(law, p, c, md, y, cm, sg, cp, W, mu, estar):
-    """Apply the first switch already due at ``y``; False when none is."""
+    """Apply the first switch already due at ``y`` (``kernels.cells.apply_due``); False when
+    none is."""
     ev = evaluate(law, p, c, md, y, cm, sg, cp, W)
-    _delta, _a, _b, Fn, _Ft, vn, vs, ar, ad, nin = ev
-    dx = cp[CP_DX]
-    if nin < cm.shape[0] and ad > 0.0 and ar > nin * dx + 1e-9 * dx:
-        birth(nin, y, cm, sg, cp, mu, estar, Fn, vn, vs, ar, ad)
-        return True
-    if nin > 1 and ad < 0.0 and ar < (nin - 1) * dx - 1e-9 * dx:
-        cm[nin - 1] = OUT
-        y[Y_CELL + nin - 1] = 0.0
-        return True
-    changed = False
-    for i in range(nin):
-        if cm[i] == STICK:
-            if abs(W[2, i]) > W[0, i] * (1.0 + SLIP_HYST) + cp[CP_FTOL]:
-                to_slip(i, y, cm, sg, W)
-                changed = True
-        elif cm[i] == SLIP and ar > i * dx:
-            ln = cell_length(i, ar, dx)
-            trial = stick_rate(i, W[2, i], ar, ad, vs, cp)
-            if W[1, i] - sg[i] * trial > 2.0 * cp[CP_G1] * ln * cp[CP_VTOL]:
-                to_stick(i, y, cm, sg, W)
-                changed = True
-    return changed
+    _delta, _a, _b, Fn, _Ft, vn, vs, ar, ad, _nin = ev
+    return apply_due(y, Y_CELL, cm, sg, cp, W[0], W[1], W[2], mu, estar, Fn, vn, vs, ar, ad)
 
 
 @njit(cache=True, error_model="numpy")

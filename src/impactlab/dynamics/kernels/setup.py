@@ -29,8 +29,8 @@ from impactlab.contact.kernels import (
     TABLE_HEADER,
     TABLE_MAGIC,
 )
-from impactlab.dynamics.core.friction import initial_friction_mode
-from impactlab.dynamics.core.layout import (
+from impactlab.dynamics.kernels.friction import initial_friction_mode
+from impactlab.dynamics.kernels.layout import (
     C_A0,
     C_D,
     C_I,
@@ -47,7 +47,7 @@ from impactlab.dynamics.core.layout import (
     S_X,
     S_Y,
 )
-from impactlab.dynamics.core.status import (
+from impactlab.dynamics.kernels.status import (
     ST_BAD_ANGLE,
     ST_BAD_FRICTION,
     ST_BAD_INPUT,

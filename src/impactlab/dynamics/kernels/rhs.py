@@ -2,7 +2,7 @@
 
 ``evaluate`` computes the contact quantities once; ``derivative`` and ``events_from`` use them,
 so that ``rhs_events`` (the last Dormand-Prince stage, FSAL) needs one force evaluation.
-State and units: ``impactlab.dynamics.core.layout``.
+State and units: ``impactlab.dynamics.kernels.layout``.
 """
 
 from __future__ import annotations
@@ -10,13 +10,13 @@ from __future__ import annotations
 from numba import njit
 
 from impactlab.contact.kernels import residual_depth
-from impactlab.dynamics.core._jit import njit_no_refcount
-from impactlab.dynamics.core.friction import (
+from impactlab.dynamics.kernels._jit import njit_no_refcount
+from impactlab.dynamics.kernels.friction import (
     friction_event,
     tangential_force,
     tangential_state_rate,
 )
-from impactlab.dynamics.core.layout import (
+from impactlab.dynamics.kernels.layout import (
     C_DLIM,
     C_DSW,
     C_G,
@@ -41,7 +41,7 @@ from impactlab.dynamics.core.layout import (
     S_VY,
     S_Y,
 )
-from impactlab.dynamics.core.normal import geometry, normal_force
+from impactlab.dynamics.kernels.normal import geometry, normal_force
 
 
 @njit(cache=True, inline="always", error_model="numpy")

@@ -11,8 +11,8 @@ from __future__ import annotations
 from numba import njit
 
 from impactlab.contact.kernels import P_ESTAR
-from impactlab.dynamics.core._jit import njit_no_refcount
-from impactlab.dynamics.core.layout import (
+from impactlab.dynamics.kernels._jit import njit_no_refcount
+from impactlab.dynamics.kernels.layout import (
     C_A0,
     C_B0,
     C_CONST,
@@ -29,7 +29,7 @@ from impactlab.dynamics.core.layout import (
     S_Q,
     S_SPIN,
 )
-from impactlab.dynamics.core.normal import dforce_ddelta, dradius_ddelta, radius
+from impactlab.dynamics.kernels.normal import dforce_ddelta, dradius_ddelta, radius
 
 # --- kernels with named scalar arguments ----------------------------------------------------
 

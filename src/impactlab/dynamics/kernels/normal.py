@@ -21,7 +21,7 @@ from impactlab.contact.kernels import (
     table_force,
     unloading_force,
 )
-from impactlab.dynamics.core.layout import (
+from impactlab.dynamics.kernels.layout import (
     C_A0,
     C_B0,
     C_C0,

@@ -1,5 +1,7 @@
-"""Index layout of the compiled core's vectors: state, constants, mode, events, outputs and
-history columns, plus the friction ids and the integration limits.
+"""Index layout of the rigid-body vectors every engine reads: state, constants, mode, events,
+outputs, history columns and the accumulator of running extremes, plus the friction ids and the
+integration limits (the partial-slip layout, ``slipcore.layout``, extends it; the flexible
+rod's modal layout is ``flexcore.layout``).
 
 numba freezes these module constants into the machine code (the cache folder is keyed by a
 hash of every engine source, ``impactlab._compiled_cache``). The output and
@@ -128,6 +130,22 @@ H_VN = H["normal_velocity"]
 H_PHASE = H["phase"]
 H_STICK = H["stick"]
 H_ENERGY = H["energy"]
+
+# --- running extremes and work of one impact: the accumulator array ``acc`` of the rigid and the
+# partial-slip drivers (each appends its own entries from A_OWN) ----------------------------------
+A_EMIN = 0  # lowest total energy so far [J]
+A_ERISE = 1  # largest rise of the total energy above that minimum [J]
+A_FEX = 2  # largest |F_t| - mu F_n [N]
+A_FMAX = 3  # largest normal force [N]
+A_DMAX = 4  # largest interference [m]
+A_TMAX = 5  # time of the largest interference [s]
+A_VSPOS = 6  # largest slip velocity [m/s]
+A_VSNEG = 7  # smallest slip velocity [m/s]
+A_STICK = 8  # time in stick (partial slip: with at least one cell stuck) [s]
+A_WMARK = 9  # normal work at the last v_n = 0 event [J]
+A_WCOMP = 10  # normal work of compression [J]
+A_WREST = 11  # normal work of restitution [J]
+A_OWN = 12  # the first entry of a driver's own
 
 # --- integration ----------------------------------------------------------------------------------
 DEFAULT_RTOL = 2e-7

@@ -21,13 +21,13 @@ from impactlab.contact.kernels import (
     residual_depth,
     unloading_radius,
 )
-from impactlab.dynamics.core.friction import (
+from impactlab.dynamics.kernels.friction import (
     frictional,
     mindlin_state_at_reload,
     mindlin_state_at_turn,
     switch_friction,
 )
-from impactlab.dynamics.core.layout import (
+from impactlab.dynamics.kernels.layout import (
     EV_FRIC,
     EV_RELOAD,
     EV_VN,
@@ -40,9 +40,9 @@ from impactlab.dynamics.core.layout import (
     NS,
     S_Q,
 )
-from impactlab.dynamics.core.rhs import rhs_events_cold
-from impactlab.dynamics.core.status import ST_NAN, ST_OK
-from impactlab.dynamics.core.tuples import mode_with, state_tuple
+from impactlab.dynamics.kernels.rhs import rhs_events_cold
+from impactlab.dynamics.kernels.status import ST_NAN, ST_OK
+from impactlab.dynamics.kernels.tuples import mode_with, state_tuple
 
 
 @njit(cache=True, error_model="numpy")
