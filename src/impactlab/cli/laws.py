@@ -90,6 +90,7 @@ _UNITS = {
             "max_eq24_over_hertz",
             "limit_pressure_ratio",
             "delta_ratio_max",
+            "first_failure_delta_ratio",
             "e_over_sy",
             "e_star_over_sy",
             "nu",
@@ -254,6 +255,8 @@ def _laws(name: str | None, radius: str, body: str, flat: str, as_json: bool) ->
     head = {k: v for k, v in info.items() if k not in ("parameters", "example", "law_id")}
     if isinstance(head.get("references"), list):  # the citations, not their records
         head["references"] = [_citation(r) for r in head["references"]]
+    if isinstance(head.get("fitted_range"), dict):  # per FE case: its one-line text says it
+        head["fitted_range"] = {k: v for k, v in head["fitted_range"].items() if k != "verified"}
     emit(head, as_json=False, title=f"contact law {name!r}")
     ptable = Table(title="parameters", show_header=True, header_style="bold")
     for col in ("name", "default", "unit", "meaning"):
