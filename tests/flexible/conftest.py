@@ -1,5 +1,5 @@
-"""Shared data of the flexible-rod tests: the paper's rod and drops, and one warm-up of the
-compiled drop integrator (loaded from numba's disk cache, or compiled once per session)."""
+"""One warm-up of the compiled drop integrator for the flexible-rod tests (loaded from numba's
+disk cache, or compiled once per session); the paper's drops are in ``paper_drops``."""
 
 from __future__ import annotations
 
@@ -8,12 +8,6 @@ import math
 import pytest
 
 from impactlab.bodies.flexible_rod import FlexibleRod
-from impactlab.bodies.rod_section import RodSection
-
-#: The paper's three drops: angle [deg], vy [m/s], measured mu (used as the Coulomb mu).
-CASES = [(20, -1.41, 0.20), (45, -2.18, 0.13), (70, -3.45, 0.10)]
-#: The paper's rod as a section (d from m, L and rho).
-SEC = RodSection.paper()
 
 
 @pytest.fixture(scope="session", autouse=True)

@@ -6,7 +6,7 @@ from __future__ import annotations
 import math
 
 import pytest
-from conftest import CASES
+from paper_drops import CASES
 
 from impactlab.bodies import Rod
 from impactlab.bodies.flexible_rod import FlexibleRod

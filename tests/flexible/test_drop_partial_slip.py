@@ -8,7 +8,7 @@ import math
 
 import numpy as np
 import pytest
-from conftest import CASES
+from paper_drops import CASES
 
 import impactlab
 from impactlab.bodies import Rod

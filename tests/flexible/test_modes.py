@@ -9,7 +9,7 @@ from collections.abc import Callable
 
 import numpy as np
 import pytest
-from conftest import SEC
+from paper_drops import SEC
 
 from impactlab.bodies import beam_modes as bm
 from impactlab.bodies.flexible_rod import FlexibleRod

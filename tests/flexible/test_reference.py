@@ -13,7 +13,7 @@ import math
 
 import numpy as np
 import pytest
-from conftest import CASES
+from paper_drops import CASES
 
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.dynamics.drop import simulate_drop
