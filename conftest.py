@@ -7,7 +7,35 @@ still bounded by each test's ``max_examples``.
 
 from __future__ import annotations
 
+from pathlib import Path
+
+import pytest
 from hypothesis import settings
 
 settings.register_profile("impactlab", deadline=None, print_blob=True)
 settings.load_profile("impactlab")
+
+
+#: The compiled parts (``impactlab.dynamics.warm.PARTS``) each test folder uses: the one warm-up
+#: of the suite compiles them (or loads them from numba's disk cache) once per session, before
+#: the folder's first test, so that no test's own run includes a compile.
+WARM_PARTS = {
+    "contact": ("contact laws",),
+    "core": ("rigid impact", "batch"),
+    "docs": ("rigid impact", "batch"),
+    "dynamics": ("rigid impact", "batch"),
+    "flexible": ("flexible rod",),
+}
+_WARMED: set[str] = set()
+
+
+@pytest.fixture(autouse=True)
+def warm_engine(request: pytest.FixtureRequest) -> None:
+    """Compile or load the engine parts the test's folder uses, each once per session."""
+    folder = Path(str(request.node.path)).parent.name
+    todo = [p for p in WARM_PARTS.get(folder, ()) if p not in _WARMED]
+    if todo:
+        from impactlab.dynamics.warm import warm
+
+        warm(tuple(todo))
+        _WARMED.update(todo)

@@ -1,7 +1,7 @@
 """Shared fixtures of the documentation tests: the site built once per session
-(``mkdocs build --strict``, about 5 s), and numba's on-disk cache warmed once per session, so
-that the verification functions and the example scripts (run in subprocesses with this
-process's NUMBA_CACHE_DIR) load the compiled engine instead of compiling it each."""
+(``mkdocs build --strict``, about 5 s). The suite's one warm-up (``warm_engine``, root
+conftest) loads or compiles the engine once per session, so that the verification functions
+and the example scripts (subprocesses with this process's NUMBA_CACHE_DIR) load it."""
 
 from __future__ import annotations
 
@@ -43,12 +43,3 @@ def site(tmp_path_factory: pytest.TempPathFactory) -> Path:
     )
     assert proc.returncode == 0, proc.stdout[-4000:] + proc.stderr[-4000:]
     return out
-
-
-@pytest.fixture(scope="session")
-def warm_engine() -> None:
-    """Compile (or load) the engine the examples and the verification use (the one warm-up:
-    ``impactlab.dynamics.warm``, which ``python3 tasks.py test`` runs before the suite)."""
-    from impactlab.dynamics.warm import warm
-
-    warm(("rigid impact", "batch"))

@@ -13,8 +13,8 @@ def warm(
     part: list[str] = typer.Option(
         None,
         "--part",
-        help="Only this part (repeatable): 'rigid impact', 'batch', 'partial slip', "
-        "'flexible rod'. Default: all.",
+        help="Only this part (repeatable): 'contact laws', 'rigid impact', 'batch', "
+        "'partial slip', 'flexible rod'. Default: all.",
     ),
     as_json: bool = typer.Option(False, "--json", help="Machine-readable output."),
 ) -> None:

@@ -88,8 +88,22 @@ def _flexible() -> None:
     )
 
 
+def _contact_laws() -> None:
+    from impactlab.bodies import PAPER_ROD
+    from impactlab.contact import builtin_law_names, get_law
+    from impactlab.materials import AISI_201, AISI_1010, ContactPair
+
+    pair = ContactPair(AISI_201, AISI_1010)
+    for name in builtin_law_names():
+        model = get_law(name).build(pair, PAPER_ROD.tip_radius)
+        model.force([1e-7, 1e-5])
+        model.contact_radius([1e-7, 1e-5])
+        model.unload(1e-5)
+
+
 #: The parts in the order ``warm`` compiles them.
 PARTS: dict[str, Callable[[], None]] = {
+    "contact laws": _contact_laws,
     "rigid impact": _rigid,
     "batch": _batch,
     "partial slip": _partial_slip,
