@@ -246,5 +246,5 @@ def test_warm_command_reports_the_cache() -> None:
 def test_warm_refuses_an_unknown_part() -> None:
     from impactlab.dynamics.warm import warm
 
-    with pytest.raises(ValueError, match="unknown engine part 'rigid'; choose from contact laws, rigid impact"):
+    with pytest.raises(ValueError, match="unknown engine part 'rigid'; choose from contact laws"):
         warm(("rigid",))
