@@ -80,7 +80,7 @@ def test_paper_case_is_plain_success() -> None:
 # --- energy gain ------------------------------------------------------------------------------
 
 
-@pytest.mark.parametrize("case", [GAIN_CASE, VERTICAL], ids=["issue-1720J", "issue-vertical"])
+@pytest.mark.parametrize("case", [GAIN_CASE, VERTICAL], ids=["gain-1720J", "vertical"])
 def test_impulse_ratio_energy_gain_is_flagged(case: dict) -> None:
     r = simulate(PAPER_ROD, friction="impulse_ratio", **case)
     assert r.energy_dissipated < 0.0  # the paper's model did create energy
@@ -92,7 +92,7 @@ def test_impulse_ratio_energy_gain_is_flagged(case: dict) -> None:
     json.dumps(d)
 
 
-def test_issue_case_energies() -> None:
+def test_energy_gain_case_energies() -> None:
     """19.35 J in, about 1720 J out (no gravity: all kinetic)."""
     r = simulate(PAPER_ROD, friction="impulse_ratio", **GAIN_CASE)
     e0 = _e0(PAPER_ROD, 0.72986, -9.12126, -5.9105)
@@ -101,7 +101,7 @@ def test_issue_case_energies() -> None:
 
 
 @pytest.mark.parametrize("friction", ["coulomb", "mindlin"])
-@pytest.mark.parametrize("case", [GAIN_CASE, VERTICAL], ids=["issue-1720J", "issue-vertical"])
+@pytest.mark.parametrize("case", [GAIN_CASE, VERTICAL], ids=["gain-1720J", "vertical"])
 def test_energy_consistent_models_are_not_flagged(friction: str, case: dict) -> None:
     r = simulate(PAPER_ROD, friction=friction, **case)
     e0 = _e0(PAPER_ROD, *case["velocity"], case.get("spin", 0.0))

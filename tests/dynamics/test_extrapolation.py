@@ -152,7 +152,7 @@ def test_flag_message_and_advisory_mask() -> None:
     "status", [None, "confirmed", "provisional", "theory", "verified", "unverified"]
 )
 def test_extrapolation_message_depends_on_the_range_status(status: str | None) -> None:
-    """QA: the sentence never claims energy consistency, points to the docs and words the limit
+    """The sentence never claims energy consistency, points to the docs and words the limit
     after the range's status (provisional: a stand-in; theory: first yield, not fitted)."""
     (text,) = messages(FLAG_LAW_EXTRAPOLATED, extrapolation=(5.0, 1.0), status=status)
     assert "energy-consistent" not in text and "impactlab.contact.ranges" not in text
@@ -183,7 +183,7 @@ def test_hertz_warning_names_the_verified_range_or_first_yield() -> None:
 
 
 def test_rigid_outputs_carry_max_delta_ratio() -> None:
-    """QA: to_dict and the batch's Dataset report max_delta_ratio (and to_dict extrapolated)."""
+    """to_dict and the batch's Dataset report max_delta_ratio (and to_dict extrapolated)."""
     r = simulate(PAPER_ROD, velocity=FAST, **PAPER)
     d = r.to_dict()
     assert d["max_delta_ratio"] == r.max_delta_ratio and d["extrapolated"] is True

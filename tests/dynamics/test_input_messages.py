@@ -1,4 +1,4 @@
-"""QA walk-through: the Python API's input errors say what the user wrote (an angle with a unit
+"""The Python API's input errors say what the user wrote (an angle with a unit
 is answered in degrees, numbers print as plain floats)."""
 
 from __future__ import annotations

@@ -1,5 +1,5 @@
 """The modal model against the independent corotational finite-element reference
-(``impactlab.dynamics.flex_reference``): the issue's target is 1 % in e, delta_p and the
+(``impactlab.dynamics.flex_reference``): the target is 1 % in e, delta_p and the
 contact sequence on an oblique case.
 
 Reference numbers (docs/flexible.md): at 20 deg the FE converges from above in delta_p

@@ -1,4 +1,4 @@
-"""QA walk-through: the command line answers angle errors in degrees, prints no numpy repr,
+"""The command line answers angle errors in degrees, prints no numpy repr,
 shows impactlab's warnings as one line and reports max_delta_ratio."""
 
 from __future__ import annotations
