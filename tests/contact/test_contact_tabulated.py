@@ -130,8 +130,10 @@ def test_loading_table_is_c2(curves: IndentationCurves) -> None:
     x0, inv_h = t[1], t[2]
     nodes = x0 + np.arange(1, N_LOAD - 1) / inv_h
     e = 1e-4 / inv_h
-    def second(x: np.ndarray) -> np.ndarray:  # noqa: E306
+
+    def second(x: np.ndarray) -> np.ndarray:
         return (table_values(t, x + e) - 2 * table_values(t, x) + table_values(t, x - e)) / e**2
+
     left, right = second(nodes - 2 * e), second(nodes + 2 * e)
     assert np.max(np.abs(right - left)) < 1e-2 * max(1.0, float(np.max(np.abs(left))))
 

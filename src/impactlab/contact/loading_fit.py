@@ -10,8 +10,10 @@ least-squares fit with few knots keeps the trend and drops the scatter.
 The fit: a clamped cubic B-spline on ``intervals`` equal knot intervals over [x_0, x_last],
 coefficients c_i with
 
-- c_0 = c_1 = 0: w = 0 and dw/dx = 0 at x_0, so the force is continuous with Hertz's and has
-  its slope (d log F / d log delta = 1.5) at the switch;
+- c_0 = 0: w = 0 at x_0, so the force is continuous with Hertz's at the switch; its slope
+  there is the data's (dw/dx = 0, Hertz's d log F / d log delta = 1.5, for every shipped FE
+  curve, whose first plastic points follow Hertz; a sampled law with a kink at the switch
+  keeps its kink);
 - 0 <= c_{i+1} - c_i <= (t_{i+4} - t_{i+1}) / 2: the spline's derivative is a quadratic
   B-spline with coefficients 3 (c_{i+1} - c_i) / (t_{i+4} - t_{i+1}), so 0 <= dw/dx <= 1.5
   everywhere (a B-spline lies between its smallest and largest coefficient: de Boor, A
@@ -56,8 +58,8 @@ def fit_with(x: np.ndarray, w: np.ndarray, intervals: int, span: tuple[float, fl
     t = _knots(span[0], span[1], intervals)
     nc = t.size - 4
     basis = BSpline.design_matrix(np.clip(x, span[0], span[1]), t, 3).toarray()
-    cumulative = np.tril(np.ones((nc, nc)))[:, 2:]  # c = cumulative @ increments, c0 = c1 = 0
-    upper = MAX_SLOPE / 3.0 * (t[5 : nc + 3] - t[2:nc])
+    cumulative = np.tril(np.ones((nc, nc)))[:, 1:]  # c = cumulative @ increments, c0 = 0
+    upper = MAX_SLOPE / 3.0 * (t[4 : nc + 3] - t[1:nc])
     sol = lsq_linear(basis @ cumulative, w, bounds=(0.0, upper), method="bvls")
     return BSpline(t, cumulative @ sol.x, 3)
 

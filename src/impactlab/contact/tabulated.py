@@ -6,9 +6,8 @@ Construction (``curve_tables``), from dimensionless curves (``contact.indentatio
 x = log(delta / delta_c), z = log(F / F_c):
 
 - loading: Hertz up to the elastic limit; from there a least-squares cubic spline of
-  w = -log(F/F_Hertz) = 1.5 x - z, constrained to w = 0 and dw/dx = 0 at the limit (continuous
-  with Hertz's force and slope) and to 0 <= dw/dx <= 1.5 (F/F_Hertz never increases, F never
-  decreases), its knot count chosen by generalised cross-validation (``contact.loading_fit``):
+  w = -log(F/F_Hertz) = 1.5 x - z, constrained to w = 0 at the limit (continuous with Hertz's
+  force) and to 0 <= dw/dx <= 1.5 (F/F_Hertz never increases, F never decreases), its knot count chosen by generalised cross-validation (``contact.loading_fit``):
   FE points scatter by about 1 %, which an interpolant would follow; stored on ``N_LOAD``
   uniform nodes in x that include the knots, so the compiled cubic Hermite lookup
   (``contact.curve_table``: one log, one exp and a cubic) is the spline itself (C2);
@@ -277,7 +276,7 @@ class Tabulated(ContactLaw):
         "the pair of the curves: E*/S_y within 5 % and nu within 0.03; delta up to the last "
         "tabulated point (hard limit, never extrapolated); loading within 2.5 % of every FE "
         "point past delta_c it was fitted to (2.3 % largest, 1.0 % rms for the shipped curves; "
-        "leave-one-out 2.5 % up to 100 delta_c, 3 % beyond), delta_r/delta_max within 0.001 "
+        "leave-one-out 3 %), delta_r/delta_max within 0.001 "
         "of the FE maxima (leave-one-out 0.015); unloading Hertzian (energy returned "
         "0.91-1.00 of the FE's past delta_c)"
     )
