@@ -7,8 +7,9 @@ x = log(delta / delta_c), z = log(F / F_c):
 
 - loading: Hertz up to the elastic limit; from there a least-squares cubic spline of
   w = -log(F/F_Hertz) = 1.5 x - z, constrained to w = 0 at the limit (continuous with Hertz's
-  force) and to 0 <= dw/dx <= 1.5 (F/F_Hertz never increases, F never decreases), its knot count chosen by generalised cross-validation (``contact.loading_fit``):
-  FE points scatter by about 1 %, which an interpolant would follow; stored on ``N_LOAD``
+  force) and to 0 <= dw/dx <= 1.5 (F/F_Hertz never increases, F never decreases), its knot
+  count chosen by generalised cross-validation (``contact.loading_fit``): FE points scatter
+  by about 1 %, which an interpolant would follow; stored on ``N_LOAD``
   uniform nodes in x that include the knots, so the compiled cubic Hermite lookup
   (``contact.curve_table``: one log, one exp and a cubic) is the spline itself (C2);
 - unloading: delta_r / delta_max as PCHIP (Fritsch & Carlson 1980) of log(delta_max /
