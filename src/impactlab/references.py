@@ -184,6 +184,20 @@ _ALL: tuple[Reference, ...] = (
         note="DOI not checked",
     ),
     Reference(
+        "de-boor-1978",
+        "C. de Boor, A Practical Guide to Splines, Springer (1978; revised edition 2001)",
+        "10.1007/978-1-4612-6333-3",
+        note="DOI not checked",
+    ),
+    Reference(
+        "craven-wahba-1979",
+        "P. Craven, G. Wahba, Smoothing noisy data with spline functions: estimating the "
+        "correct degree of smoothing by the method of generalized cross-validation, Numer. "
+        "Math. 31 (1979) 377-403",
+        "10.1007/BF01404567",
+        note="DOI not checked",
+    ),
+    Reference(
         "dormand-prince-1980",
         "J. R. Dormand, P. J. Prince, A family of embedded Runge-Kutta formulae, J. Comput. "
         "Appl. Math. 6 (1980) 19-26",

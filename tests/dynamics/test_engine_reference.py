@@ -23,9 +23,9 @@ from impactlab.dynamics.reference import simulate_reference
 from impactlab.friction import FRICTION_IDS
 
 REL = 1e-6
-#: The tabulated law's curvature jumps at every FE point (a C1 interpolant): at the default
-#: tolerance the engine holds it to its accuracy contract, 1e-5 (tests/dynamics/test_accuracy.py).
-REL_LAW = {"tabulated": 1e-5}
+#: Laws held to a wider bound here: none (the tabulated law was, at 1e-5, while its loading
+#: curve interpolated the scatter of its FE points; it is a smooth fit now).
+REL_LAW: dict[str, float] = {}
 
 ROD_CASE = {"angle": math.radians(35.0), "velocity": (0.1, -1.2), "spin": 2.0, "mu": 0.3}
 SPHERE = Sphere(0.006)

@@ -36,7 +36,7 @@ CURVE_MAGIC = 5.0e-77
 #: Header entries before the tables.
 CURVE_HEADER = 5
 #: Nodes of the loading and the residual-ratio grids.
-N_LOAD = 192
+N_LOAD = 193
 N_RES = 96
 #: Entries appended to the parameter vector.
 CURVE_LENGTH = CURVE_HEADER + 2 * N_LOAD + 2 * N_RES

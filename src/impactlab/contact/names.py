@@ -26,7 +26,16 @@ class Law(enum.StrEnum):
     )
     BRAKE = ("brake", k.BRAKE, ("brake-2015", PAPER))
     THORNTON = ("thornton", k.THORNTON, ("thornton-1997",))
-    TABULATED = ("tabulated", k.TABULATED, ("fritsch-carlson-1980", "jackson-green-2005"))
+    TABULATED = (
+        "tabulated",
+        k.TABULATED,
+        (
+            "fritsch-carlson-1980",
+            "jackson-green-2005",
+            "de-boor-1978",
+            "craven-wahba-1979",
+        ),
+    )
 
     law_id: int
     reference_keys: tuple[str, ...]

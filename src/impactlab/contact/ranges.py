@@ -255,9 +255,10 @@ _ALL = (
         math.inf,
         "delta_c (Jackson-Green, paper Eq. 15), the curves' unit of interference",
         "tabulated",
-        "interpolated indentation data (FE or measured): valid up to the last tabulated "
-        "interference, the law's hard limit (the engine stops beyond it), never extrapolated",
-        ("fritsch-carlson-1980", "jackson-green-2005"),
+        "indentation data (FE or measured), loading fitted, residual depths interpolated: "
+        "valid up to the last tabulated interference, the law's hard limit (the engine stops "
+        "beyond it), never extrapolated",
+        ("fritsch-carlson-1980", "jackson-green-2005", "de-boor-1978", "craven-wahba-1979"),
     ),
 )
 

@@ -6,8 +6,9 @@ cannot run inside them. A user's law is therefore carried by the tabulated law (
 delta_r(delta_max), given
 
 - as tables: ``IndentationCurves`` (measured data: ``IndentationCurves.from_arrays``,
-  ``from_csv``; or FE curves), interpolated as the tabulated law does (PCHIP, Fritsch & Carlson
-  1980; leave-one-out error stated), or
+  ``from_csv``; or FE curves), fitted and interpolated as the tabulated law does (loading: a
+  constrained least-squares spline, ``contact.loading_fit``; residual depths: PCHIP, Fritsch &
+  Carlson 1980; leave-one-out error stated), or
 - as Python callables ``loading(delta) -> F`` [m -> N] and ``unloading(delta_max) -> delta_r``
   [m -> m] of one pair and radius, sampled on ``points`` interferences spaced evenly in
   log(delta) from the elastic limit to ``delta_max``; the law built from the samples is
@@ -64,8 +65,8 @@ class RegisteredLaw(Tabulated):
     """A user's contact law: the tabulated law of its ``curves`` under its own ``name``.
 
     ``sampling_error`` is (largest relative force error, largest delta_r/delta_max error):
-    against the callables for a sampled law, the leave-one-out error of the interpolation for
-    tables.
+    against the callables for a sampled law, the leave-one-out error of the fit and the
+    interpolation for tables.
     """
 
     def __init__(
