@@ -1,8 +1,8 @@
 """Compile (or load from the disk cache) every compiled part of impactlab ahead of its first use.
 
 ``warm()`` runs one small case through each part: the rigid impact with each friction model,
-the parallel batch, the partial-slip impact, the flexible-rod drop and its parallel batch. The first run after
-installing or updating impactlab compiles them (announced on stderr, see
+the parallel batch, the partial-slip impact, the flexible-rod drop and its parallel batch. The
+first run after installing or updating impactlab compiles them (announced on stderr, see
 ``impactlab._compile_notice``); later runs load them from the cache in a second or two.
 ``impactlab warm`` and ``python3 tasks.py warm`` call it.
 """
