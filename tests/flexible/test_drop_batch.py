@@ -128,7 +128,7 @@ def test_rigid_rod_and_units() -> None:
 
 
 def test_bad_batch_input_is_one_message() -> None:
-    with pytest.raises(ValueError, match="unknown friction model .lugre."):
+    with pytest.raises(ValueError, match=r"unknown friction model .lugre."):
         simulate_drops(ROD, angle=0.3, vy=-1.0, friction="lugre")
     with pytest.raises(ValueError, match="stop must be one of"):
         simulate_drops(ROD, angle=0.3, vy=-1.0, stop="never")
