@@ -11,9 +11,9 @@ import numpy as np
 
 from impactlab.dynamics.drop import simulate_drop
 from impactlab.dynamics.kernels import status as S
-from impactlab.materials import AISI_201, AISI_1010
 from impactlab.sweep.flexible import DROP_OUTPUTS, evaluate_flexible, flexible_body
-from impactlab.sweep.models import Statics
+from impactlab.sweep.inputs import INPUTS
+from impactlab.sweep.models import Statics, material_for
 from impactlab.sweep.status import STATUS_BAD_BODY, STATUS_BAD_INPUT
 
 OUTPUTS = (*DROP_OUTPUTS, "regime")
@@ -23,7 +23,12 @@ def _chunk() -> dict[str, np.ndarray]:
     """Twelve cases: three bodies (two n_bending, two damping, one length) interleaved, one
     body with too many modes, an angle outside (0, pi/2], a receding tip and a NaN mu."""
     n = 12
-    c = {k: np.full(n, np.nan) for k in ("length", "tip_radius", "mass", "n_axial")}
+    c = {
+        k: np.full(n, np.nan if s.default is None else float(s.default))
+        for k, s in INPUTS.items()
+        if s.kind == "float"
+    }
+    c |= {k: np.full(n, np.nan) for k in ("length", "tip_radius", "mass", "n_axial")}
     c["n_bending"] = np.array([2, 3, 2, 3, 2, 3, 300, 2, 2, 2, 3, 2], dtype=float)
     c["damping"] = np.array([0, 0.01, 0, 0.01, 0, 0.01, 0, 0, 0, 0, 0.01, 0], dtype=float)
     c["length"][[8, 11]] = 0.25
@@ -38,10 +43,9 @@ def _chunk() -> dict[str, np.ndarray]:
 
 def test_chunk_equals_drop_by_drop() -> None:
     cases = _chunk()
-    statics = Statics(
-        {"friction": "coulomb", "law": "ghaednia", "body_material": "AISI_201",
-         "flat_material": "AISI_1010"},
-    )  # fmt: skip
+    cat = {k: str(s.default) for k, s in INPUTS.items() if s.kind == "category"}
+    cat |= {"body": "flexible_rod", "friction": "coulomb", "law": "ghaednia"}
+    statics = Statics(cat)
     res, status = evaluate_flexible(cases, statics, OUTPUTS)
     assert status[6] == STATUS_BAD_BODY and status[7] == S.ST_BAD_ANGLE
     assert status[9] == S.ST_NOT_APPROACHING and status[11] == STATUS_BAD_INPUT
@@ -53,9 +57,10 @@ def test_chunk_equals_drop_by_drop() -> None:
         if i not in ok:
             assert all(math.isnan(res[o][i]) for o in OUTPUTS)
             continue
-        body = flexible_body(row, AISI_201)
+        body = flexible_body(row, material_for("body", cat["body_material"], row))
+        flat = material_for("flat", cat["flat_material"], row)
         r = simulate_drop(
-            body, AISI_1010, law="ghaednia", friction="coulomb", mu=row["mu"],
+            body, flat, law="ghaednia", friction="coulomb", mu=row["mu"],
             angle=row["angle"], velocity=(row["vx"], row["vy"]), spin=row["spin"],
         )  # fmt: skip
         for o, read in DROP_OUTPUTS.items():
