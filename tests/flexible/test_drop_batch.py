@@ -153,7 +153,7 @@ def test_cell_count_is_the_friction_models() -> None:
     friction=st.sampled_from(["coulomb", "mindlin", "impulse_ratio"]),
 )
 def test_batch_equals_drop_property(angle, speed, incidence, spin, mu, friction) -> None:
-    """Random drops: batch and drop by drop agree to the last bit (or refuse alike)."""
+    """Random drops: batch and drop by drop agree to the last bit (or refuse or fail alike)."""
     cases = {
         "angle": np.array([angle, 0.5 * angle + 0.1]),
         "vx": np.array([speed * math.sin(incidence), 0.0]),
@@ -161,4 +161,5 @@ def test_batch_equals_drop_property(angle, speed, incidence, spin, mu, friction)
         "spin": np.array([spin, 0.0]),
         "mu": np.array([mu, mu]),
     }
-    _check_equal(ROD, {"law": "ghaednia", "friction": friction}, cases)
+    # t_max bounds the time of a drawn drop that rocks (ST_TMAX, alike in both)
+    _check_equal(ROD, {"law": "ghaednia", "friction": friction, "t_max": 0.02}, cases)
