@@ -24,7 +24,7 @@ WARM_PARTS = {
     "core": ("rigid impact", "batch"),
     "docs": ("rigid impact", "batch"),
     "dynamics": ("rigid impact", "batch"),
-    "flexible": ("flexible rod",),
+    "flexible": ("flexible rod", "flexible batch"),
 }
 _WARMED: set[str] = set()
 

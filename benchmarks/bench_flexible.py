@@ -8,6 +8,12 @@ Timoshenko finite elements, Ne = 80, scipy ``solve_ivp`` DOP853 with events, rto
 in the same run: the figure is the ratio FE / flexible, robust against other load on a shared
 machine. The issue's target: one flexible drop in 10 ms or less on one core.
 
+Batch: flexible drops per CPU-second of ``simulate_drops`` (one compiled call over a grid of
+BATCH_CASES drops: angles 15-75 deg, vy -0.8 to -3 m/s, mu 0.1-0.3) against ``simulate_drop``
+called once per case, both timed in the same run on one thread (process CPU time), their ratio
+the figure; the batch's outputs are checked equal to the drops one by one (bit for bit). The
+wall time of the batch on every core is recorded beside it.
+
     .venv/bin/python benchmarks/bench_flexible.py [--quick]
 
 Writes benchmarks/results/flexible.json and prints a summary.
@@ -30,6 +36,7 @@ import numpy as np
 from bench_engine import cpu_model  # this folder is on sys.path when run as a script
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.dynamics.drop import simulate_drop
+from impactlab.dynamics.drop_batch import simulate_drops
 from impactlab.dynamics.flex_reference import drop_reference
 from impactlab.dynamics.flexcore.layout import DROP_DEFAULT_RTOL
 
@@ -71,6 +78,56 @@ def one_angle(deg: int, repeats: int, n_elements: int) -> dict[str, float]:
     }
 
 
+#: Drops in the batch figure's grid (angles x speeds x friction coefficients).
+BATCH_GRID = (np.radians([15.0, 30.0, 45.0, 60.0, 75.0]), [-0.8, -1.41, -2.2, -3.0], [0.1, 0.3])
+BATCH_CASES = math.prod(len(a) for a in BATCH_GRID)
+
+
+def batch_throughput(repeats: int) -> dict[str, float]:
+    """Drops per CPU-second of ``simulate_drops`` and of ``simulate_drop`` case by case (one
+    thread, best of ``repeats``), their ratio, and the batch's wall time on every core."""
+    rod = FlexibleRod.paper()
+    th, vy, mu = (a.ravel() for a in np.meshgrid(*BATCH_GRID, indexing="ij"))
+    kw = {"law": "ghaednia", "friction": "coulomb"}
+    threads = numba.config.NUMBA_NUM_THREADS  # every core (main() runs on one thread)
+    numba.set_num_threads(1)
+    drops = simulate_drops(rod, angle=th, vy=vy, mu=mu, **kw)  # warm
+    singles = [
+        simulate_drop(rod, angle=float(a), velocity=(0.0, float(v)), mu=float(m), **kw)
+        for a, v, m in zip(th, vy, mu, strict=True)
+    ]
+    identical = all(
+        drops.e[i] == r.e and drops.delta_p[i] == r.delta_p and drops.n_steps[i] == r.n_steps
+        for i, r in enumerate(singles)
+    )
+    t_batch, t_single = [], []
+    for _ in range(repeats):
+        t0 = time.process_time()
+        simulate_drops(rod, angle=th, vy=vy, mu=mu, **kw)
+        t_batch.append(time.process_time() - t0)
+        t0 = time.process_time()
+        for a, v, m in zip(th, vy, mu, strict=True):
+            simulate_drop(rod, angle=float(a), velocity=(0.0, float(v)), mu=float(m), **kw)
+        t_single.append(time.process_time() - t0)
+    numba.set_num_threads(threads)
+    t0 = time.perf_counter()
+    simulate_drops(rod, angle=th, vy=vy, mu=mu, **kw)
+    wall_all = time.perf_counter() - t0
+    numba.set_num_threads(1)
+    per_s_batch = BATCH_CASES / min(t_batch)
+    per_s_single = BATCH_CASES / min(t_single)
+    return {
+        "cases": float(BATCH_CASES),
+        "ok_cases": float(np.count_nonzero(drops.ok)),
+        "identical_to_simulate_drop": identical,
+        "batch_drops_per_cpu_s": per_s_batch,
+        "simulate_drop_drops_per_cpu_s": per_s_single,
+        "ratio_batch_over_simulate_drop": per_s_batch / per_s_single,
+        "batch_wall_s_all_threads": wall_all,
+        "threads": float(threads),
+    }
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="20 deg only, fewer repetitions")
@@ -80,6 +137,7 @@ def main() -> None:
     angles = (20,) if args.quick else (20, 45, 70)
     t0 = time.time()
     per_angle = {str(a): one_angle(a, 10 if args.quick else 30, 80) for a in angles}
+    batch = batch_throughput(2 if args.quick else 5)
     result = {
         "machine": {
             "cpu": cpu_model(),
@@ -97,6 +155,7 @@ def main() -> None:
             "fe_elements": 80,
         },
         "angles": per_angle,
+        "batch": batch,
         "target_ms": 10.0,
         "target_met": all(v["flexible_ms_median"] <= 10.0 for v in per_angle.values()),
         "wall_s": time.time() - t0,
@@ -114,6 +173,13 @@ def main() -> None:
             f"{v['duration_fe_ms']:.3f} ms, contacts {v['contacts']:.0f} vs {v['contacts_fe']:.0f}"
         )
     print(f"target (<= 10 ms per drop on one core) met: {result['target_met']}")
+    print(
+        f"batch of {batch['cases']:.0f} drops on one thread: {batch['batch_drops_per_cpu_s']:.0f}"
+        f" drops per CPU-second against {batch['simulate_drop_drops_per_cpu_s']:.0f} for "
+        f"simulate_drop case by case (ratio {batch['ratio_batch_over_simulate_drop']:.2f}; "
+        f"identical: {batch['identical_to_simulate_drop']}); all {batch['threads']:.0f} "
+        f"threads: {batch['batch_wall_s_all_threads']:.2f} s wall"
+    )
     print(f"written {args.out}")
 
 

@@ -20,12 +20,14 @@ from impactlab.bodies import PAPER_ROD, FlexibleRod, Rod, Sphere
 from impactlab.contact import get_law, law_names
 from impactlab.dynamics import (
     BatchResult,
+    DropBatchResult,
     DropResult,
     ImpactResult,
     rerun,
     simulate,
     simulate_batch,
     simulate_drop,
+    simulate_drops,
 )
 from impactlab.materials import AISI_201, AISI_1010, ContactPair, Material, get_material
 
@@ -35,6 +37,7 @@ __all__ = [
     "PAPER_ROD",
     "BatchResult",
     "ContactPair",
+    "DropBatchResult",
     "DropResult",
     "FlexibleRod",
     "ImpactResult",
@@ -53,4 +56,5 @@ __all__ = [
     "simulate",
     "simulate_batch",
     "simulate_drop",
+    "simulate_drops",
 ]

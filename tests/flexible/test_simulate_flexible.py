@@ -68,7 +68,7 @@ def test_rigid_bodies_unchanged() -> None:
 
 
 def test_simulate_batch_refuses_a_flexible_rod() -> None:
-    """simulate_batch runs the rigid engine: a FlexibleRod is refused, pointing to simulate
-    and study files."""
-    with pytest.raises(ValueError, match=r"simulate_batch.*flexible_rod"):
+    """simulate_batch runs the rigid engine: a FlexibleRod is refused, pointing to
+    simulate_drops and study files."""
+    with pytest.raises(ValueError, match=r"simulate_batch.*simulate_drops.*flexible_rod"):
         impactlab.simulate_batch(BODY, vy=-1.41, angle=0.3)

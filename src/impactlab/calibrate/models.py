@@ -3,7 +3,8 @@
 A candidate model is a contact law x a friction model x a body model (each drop's own rigid
 body, or the flexible rod). ``predict`` evaluates W parameter vectors on D drops as one batch of
 W x D cases through the sweep's engine adapter (``impactlab.sweep.engine.ENGINE``: the compiled
-batch engine on every core for rigid bodies, one flexible drop per case for the flexible rod);
+batch engine on every core for rigid bodies, one compiled batch of drops per body for the
+flexible rod, ``sweep.flexible``);
 the models the batch engine does not run (partial slip; the flexible rod on a rate-dependent
 flat) go through ``simulate`` one case at a time (measured in benchmarks/bench_calibrate.py).
 """

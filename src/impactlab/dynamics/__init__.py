@@ -16,6 +16,7 @@ from impactlab.dynamics.batch import (
     run_arrays,
 )
 from impactlab.dynamics.drop import simulate_drop
+from impactlab.dynamics.drop_batch import DropBatchResult, simulate_drops
 from impactlab.dynamics.drop_result import ContactRecord, DropResult
 from impactlab.dynamics.kernels.layout import DEFAULT_RTOL, HISTORY_FIELDS
 from impactlab.dynamics.models import contact_model
@@ -33,6 +34,7 @@ __all__ = [
     "BatchResult",
     "ContactRecord",
     "DentMap",
+    "DropBatchResult",
     "DropResult",
     "History",
     "ImpactResult",
@@ -42,4 +44,5 @@ __all__ = [
     "simulate",
     "simulate_batch",
     "simulate_drop",
+    "simulate_drops",
 ]

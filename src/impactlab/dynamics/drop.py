@@ -55,6 +55,7 @@ from impactlab.dynamics.drop_checks import (
 from impactlab.dynamics.drop_result import ContactRecord, DentRecord, DropHistory, DropResult
 from impactlab.dynamics.flexcore import drop
 from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.flexcore.batch import initial_energy
 from impactlab.dynamics.flexcore.model import constants, model_tuple, state_length
 from impactlab.dynamics.kernels.layout import MU_NEGLIGIBLE
 from impactlab.dynamics.models import (
@@ -257,7 +258,7 @@ def _result(
     }
     m = bm.rigid.mass
     vx, vy = inputs["velocity_in"]
-    e0 = 0.5 * m * (vx * vx + vy * vy) + 0.5 * bm.inertia * inputs["spin_in"] ** 2
+    e0 = float(initial_energy(m, bm.inertia, vx, vy, inputs["spin_in"]))
     rtol = inputs.pop("rtol")
     check_energy_balance(o, e0, rtol)
     ratio, ratio_max = extrapolation(model.law_id, model.params, o["delta_max"])
@@ -278,7 +279,7 @@ def _result(
         rate_factor=rate[1].k if rate[1] is not None else 1.0,
         strain_rate=rate[1].strain_rate if rate[1] is not None else math.nan,
         history=DropHistory(r.history) if r.history is not None else None,
-        flags=drop_flags(o, e0, m, inputs["gravity"], rtol, model, r.contacts),
+        flags=drop_flags(r.out, e0, m, inputs["gravity"], rtol, model, r.contacts),
         max_delta_ratio=ratio,
         fitted_delta_ratio_max=ratio_max,
         fitted_range_status=range_status(model.law_id, model.params),

@@ -54,7 +54,7 @@ def simulate_flexible(
 
 #: The error of ``simulate_batch`` with a FlexibleRod.
 FLEXIBLE_BATCH_ERROR = (
-    "simulate_batch runs the rigid engine; a FlexibleRod's drop is one contact sequence per "
-    "call: use impactlab.simulate(FlexibleRod(...), ...) per case, or a study file with "
-    'body = "flexible_rod" (impactlab.sweep) for many cases'
+    "simulate_batch runs the rigid engine; many drops of a FlexibleRod run in "
+    "impactlab.simulate_drops(FlexibleRod(...), angle=..., vy=...), or a study file with "
+    'body = "flexible_rod" (impactlab.sweep)'
 )

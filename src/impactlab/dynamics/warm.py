@@ -1,8 +1,8 @@
 """Compile (or load from the disk cache) every compiled part of impactlab ahead of its first use.
 
 ``warm()`` runs one small case through each part: the rigid impact with each friction model,
-the parallel batch, the partial-slip impact and the flexible-rod drop. The first run after
-installing or updating impactlab compiles them (announced on stderr, see
+the parallel batch, the partial-slip impact, the flexible-rod drop and its parallel batch. The
+first run after installing or updating impactlab compiles them (announced on stderr, see
 ``impactlab._compile_notice``); later runs load them from the cache in a second or two.
 ``impactlab warm`` and ``python3 tasks.py warm`` call it.
 """
@@ -88,6 +88,20 @@ def _flexible() -> None:
     )
 
 
+def _flexible_batch() -> None:
+    from impactlab.bodies import FlexibleRod
+    from impactlab.dynamics.drop_batch import simulate_drops
+
+    simulate_drops(
+        FlexibleRod.paper(n_axial=1, n_bending=2),
+        law="ghaednia",
+        friction="coulomb",
+        mu=0.2,
+        angle=math.radians(20),
+        vy=[-1.0, -1.41],
+    )
+
+
 def _contact_laws() -> None:
     from impactlab.bodies import PAPER_ROD
     from impactlab.contact import builtin_law_names, get_law
@@ -108,6 +122,7 @@ PARTS: dict[str, Callable[[], None]] = {
     "batch": _batch,
     "partial slip": _partial_slip,
     "flexible rod": _flexible,
+    "flexible batch": _flexible_batch,
 }
 
 

@@ -1,6 +1,8 @@
 """Study files and sweeps with a flexible rod (``body = "flexible_rod"``): one flexible drop per
-case (``impactlab.dynamics.drop.simulate_drop``, the whole contact sequence), evaluated chunk by
-chunk behind the engine's Evaluator interface (``impactlab.sweep.engine``).
+case (the whole contact sequence, as ``impactlab.dynamics.drop.simulate_drop`` runs it),
+evaluated chunk by chunk behind the engine's Evaluator interface (``impactlab.sweep.engine``):
+the cases of a chunk are grouped by body (the inputs other than the kinematics), and each
+group runs as one compiled batch (``impactlab.dynamics.drop_batch.simulate_drops``).
 
 The body is ``impactlab.FlexibleRod`` with the inputs ``length``, ``tip_radius`` and ``mass``
 (unset: the paper's rod), its diameter derived from the mass, the length and the body
@@ -33,8 +35,8 @@ import numpy as np
 from impactlab.bodies import PAPER_ROD
 from impactlab.bodies.flexible_rod import DEFAULT_N_AXIAL, DEFAULT_N_BENDING, FlexibleRod
 from impactlab.contact import ContactModel
-from impactlab.dynamics.drop import DROP_FRICTION, MIN_APPROACH_SPEED, DropError, simulate_drop
-from impactlab.dynamics.drop_result import DropResult
+from impactlab.dynamics.drop import DROP_FRICTION
+from impactlab.dynamics.drop_batch import DropBatchResult, input_status, simulate_drops
 from impactlab.dynamics.kernels import status as S
 from impactlab.dynamics.models import build_contact_model
 from impactlab.materials import Material
@@ -60,8 +62,9 @@ FLEXIBLE_BODY = "flexible_rod"
 #: Inputs that only a flexible rod takes.
 FLEXIBLE_INPUTS = ("n_axial", "n_bending", "damping")
 
-#: Engine outputs a drop defines, read from its DropResult.
-DROP_OUTPUTS: dict[str, Callable[[DropResult], float]] = {
+#: Engine outputs a drop defines, read from its DropResult (a number) or from the
+#: DropBatchResult of many drops (an array).
+DROP_OUTPUTS: dict[str, Callable[[Any], Any]] = {
     "e": lambda r: r.e,
     "vx_out": lambda r: r.velocity_out[0],
     "vy_out": lambda r: r.velocity_out[1],
@@ -77,7 +80,7 @@ DROP_OUTPUTS: dict[str, Callable[[DropResult], float]] = {
     "stick_time": lambda r: r.stick_time,
     "angle_out": lambda r: r.angle_out,
     "n_steps": lambda r: r.n_steps,
-    "flags": lambda r: int(r.flags),
+    "flags": lambda r: r.flags,
 }
 
 
@@ -137,73 +140,84 @@ def _models(
     return 0, (body, flat_mat, model)
 
 
-def _kinematics_status(body: FlexibleRod, k: Mapping[str, float]) -> int:
-    """The engine's status for kinematics the drop would refuse (0: none)."""
-    if not all(math.isfinite(k[n]) for n in ("angle", "vx", "vy", "spin", "mu")) or k["mu"] < 0:
-        return STATUS_BAD_INPUT
-    if not 0.0 < k["angle"] <= 0.5 * math.pi:
-        return S.ST_BAD_ANGLE
-    vn = k["vy"] - k["spin"] * body.half_length * math.cos(k["angle"])
-    if not vn < 0.0:
-        return S.ST_NOT_APPROACHING
-    if -vn < MIN_APPROACH_SPEED:
-        return STATUS_BAD_INPUT
-    return 0
+#: The inputs that vary per drop; the others (model inputs) define the body and the law.
+KINEMATICS = ("angle", "vx", "vy", "spin", "mu")
 
 
-def _drop(
-    parts: tuple[FlexibleRod, Material, ContactModel], k: Mapping[str, float], statics: Statics
-) -> tuple[int, DropResult | None]:
+def _groups(cases: Mapping[str, np.ndarray], names: Sequence[str]) -> list[np.ndarray]:
+    """The case indices of each distinct combination of the inputs ``names`` (bitwise: NaN,
+    unset, is one value), in order of first appearance."""
+    n = len(cases["angle"])
+    if not names:
+        return [np.arange(n)]
+    rows = np.ascontiguousarray(np.stack([cases[k] for k in names], axis=1), dtype=np.float64)
+    keys = rows.view(np.dtype((np.void, rows.itemsize * rows.shape[1]))).ravel()
+    _, first, inverse = np.unique(keys, return_index=True, return_inverse=True)
+    order = np.argsort(first, kind="stable")
+    return [np.flatnonzero(inverse == g) for g in order]
+
+
+def _drops(
+    parts: tuple[FlexibleRod, Material, ContactModel],
+    kin: Mapping[str, np.ndarray],
+    statics: Statics,
+) -> tuple[DropBatchResult | None, np.ndarray]:
+    """The drops of one body (``simulate_drops``, one compiled call) and the status of each:
+    the sweep's own refusals of the kinematics first (an angle outside (0, pi/2], a non-finite
+    input, mu < 0, a tip that does not approach the flat), then the drop's."""
     body, flat, model = parts
-    st = _kinematics_status(body, k)
-    if st:
-        return st, None
+    status = input_status(body.half_length, kin, tol_angle=0.0)
+    run = status == 0
+    status[status == S.ST_BAD_INPUT] = STATUS_BAD_INPUT
+    if not np.any(run):
+        return None, status
     engine = dict(statics.engine)
     try:
-        r = simulate_drop(
+        drops = simulate_drops(
             body,
             flat,
             law=model,
             friction=statics.categories["friction"],
-            mu=k["mu"],
-            angle=k["angle"],
-            velocity=(k["vx"], k["vy"]),
-            spin=k["spin"],
+            **{k: v[run] for k, v in kin.items()},
             gravity=engine.get("gravity", True),
             rtol=engine.get("rtol"),
         )
-    except DropError as exc:
-        return int(exc.status), None  # the one status table of every engine (kernels.status)
-    except ValueError:  # an input the drop refuses (its one-line message names it)
-        return STATUS_BAD_INPUT, None
-    except (ArithmeticError, np.linalg.LinAlgError):  # never expected: a status, not a crash
-        return S.ST_NAN, None
-    return 0, r
+    except ValueError:  # an input the drop refuses for every case (its message names it)
+        status[run] = STATUS_BAD_INPUT
+        return None, status
+    st = drops.status.astype(np.int32)
+    st[st == S.ST_BAD_INPUT] = STATUS_BAD_INPUT
+    status[run] = st
+    return drops, status
 
 
 def evaluate_flexible(
     cases: Mapping[str, np.ndarray], statics: Statics, outputs: Sequence[str]
 ) -> tuple[dict[str, np.ndarray], np.ndarray]:
     """One chunk of flexible-rod cases (the Evaluator call of ``impactlab.sweep.engine``):
-    ({output: (N,) array}, status (N,) int32); outputs the drop does not define are NaN."""
+    ({output: (N,) array}, status (N,) int32); outputs the drop does not define are NaN. The
+    cases of each distinct body run in one compiled batch (``simulate_drops``)."""
     n = len(cases["angle"])
     status = np.zeros(n, dtype=np.int32)
     res = {o: np.full(n, np.nan) for o in outputs}
     cat = tuple(sorted(statics.categories.items()))
     lp = tuple(sorted(statics.law_params.items()))
-    model_inputs = sorted(set(cases) - {"angle", "vx", "vy", "spin", "mu"})
-    for i in range(n):
-        row = tuple((name, float(cases[name][i])) for name in model_inputs)
+    model_inputs = sorted(set(cases) - set(KINEMATICS))
+    for idx in _groups(cases, model_inputs):
+        row = tuple((name, float(cases[name][idx[0]])) for name in model_inputs)
         st, parts = _models(cat, row, lp)
-        r = None
-        if not st:
-            kin = {name: float(cases[name][i]) for name in ("angle", "vx", "vy", "spin", "mu")}
-            st, r = _drop(parts, kin, statics)
-        status[i] = st
-        if r is not None:
-            for o in outputs:
-                if o in DROP_OUTPUTS:
-                    res[o][i] = DROP_OUTPUTS[o](r)
+        if st:
+            status[idx] = st
+            continue
+        kin = {k: np.asarray(cases[k][idx], dtype=np.float64) for k in KINEMATICS}
+        drops, status[idx] = _drops(parts, kin, statics)
+        if drops is None:
+            continue
+        ran = idx[status[idx] == 0]
+        ok = drops.status == 0
+        for o in outputs:
+            if o in DROP_OUTPUTS:
+                res[o][ran] = np.asarray(DROP_OUTPUTS[o](drops), dtype=np.float64)[ok]
     return res, status
 
 

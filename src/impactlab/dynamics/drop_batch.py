@@ -1,0 +1,264 @@
+"""``simulate_drops``: many drops of one flexible (or rigid) rod on a flat, one law and friction
+model, in one compiled call on every core (``impactlab.dynamics.flexcore.batch``).
+
+The body's modal model and the contact model are built once; the cases (angle, velocity,
+spin, mu) run in the compiled loop, each with its status (``kernels.status``), and the checks
+of ``simulate_drop`` run on all of them at once: its input checks, the energy balance against
+the tolerance (ST_INACCURATE) and the result flags. Each output of a case equals, bit for
+bit, that of ``simulate_drop`` with the same inputs (tests/flexible/test_drop_batch.py).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+import numba
+import numpy as np
+
+from impactlab.bodies import Rod
+from impactlab.bodies.flexible_rod import FlexibleRod
+from impactlab.bodies.layout import BP_GSTAR
+from impactlab.contact import ContactModel
+from impactlab.contact.ranges import delta_ratio, extrapolation_flags
+from impactlab.dynamics.checks import batch_velocity, check_flat, check_rtol, gravity_value
+from impactlab.dynamics.drop import DEFAULT_T_MAX, MIN_APPROACH_SPEED, _body_model
+from impactlab.dynamics.drop_checks import (
+    check_body,
+    check_friction,
+    check_stop,
+    energy_balance_bound,
+    energy_balance_error,
+)
+from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.flexcore.batch import CK_E0, CK_FLAGS, N_CHECKS, drop_batch
+from impactlab.dynamics.flexcore.model import constants, model_tuple
+from impactlab.dynamics.history import readonly_copy
+from impactlab.dynamics.kernels import status as S
+from impactlab.dynamics.kernels.layout import MU_NEGLIGIBLE
+from impactlab.dynamics.models import body_params, contact_model, kernel_params, references_used
+from impactlab.dynamics.simulate_many import _batch_inputs
+from impactlab.friction import COULOMB, DEFAULT_MU, PARTIAL_SLIP
+from impactlab.materials import AISI_1010, Material
+from impactlab.references import Reference
+from impactlab.references import dois as doi_list
+
+__all__ = ["DropBatchResult", "simulate_drops"]
+
+#: The outputs of each case, in the columns of ``DropBatchResult.out``.
+DROP_BATCH_FIELDS = F.DROP_OUTPUT_FIELDS
+
+
+@dataclass(frozen=True)
+class DropBatchResult:
+    """Results of ``simulate_drops`` (SI units): ``out`` (N, len(DROP_OUTPUT_FIELDS)) in the
+    order of ``flexcore.layout.DROP_FIELDS``, ``status`` (N,) (0: ok; ``STATUS_MESSAGES``),
+    ``flags`` (N,) the ``ResultFlag`` bits, ``initial_energy`` [J] and ``max_delta_ratio``
+    (delta_max / delta_ref) per case; NaN (flags 0) where a case failed.
+
+    Fields by name: ``drops["e"]`` or ``drops.e``, the inputs (``angle``, ``vx``, ``vy``,
+    ``spin``, ``mu``), ``velocity_out`` (vx_out, vy_out) and ``mean_force`` = P_n / duration,
+    as ``DropResult`` has them."""
+
+    out: np.ndarray = field(repr=False)
+    status: np.ndarray = field(repr=False)
+    flags: np.ndarray = field(repr=False)
+    initial_energy: np.ndarray = field(repr=False)
+    max_delta_ratio: np.ndarray = field(repr=False)
+    inputs: dict[str, np.ndarray] = field(repr=False)
+    body: str
+    law: str
+    friction: str
+    gravity: float
+    rtol: float
+    references: tuple[Reference, ...] = field(default=(), repr=False)
+
+    def __post_init__(self) -> None:
+        for name in ("out", "flags", "initial_energy", "max_delta_ratio"):
+            object.__setattr__(self, name, readonly_copy(getattr(self, name)))
+        st = np.array(self.status, dtype=np.int32, copy=True)
+        st.setflags(write=False)
+        object.__setattr__(self, "status", st)
+        object.__setattr__(self, "inputs", {k: readonly_copy(v) for k, v in self.inputs.items()})
+
+    def __len__(self) -> int:
+        return int(self.status.shape[0])
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        if name in DROP_BATCH_FIELDS:
+            return self.out[:, DROP_BATCH_FIELDS.index(name)]
+        if name in self.inputs:
+            return self.inputs[name]
+        if name == "mean_force":
+            return self.mean_force
+        known = ", ".join((*DROP_BATCH_FIELDS, *self.inputs, "mean_force"))
+        raise KeyError(f"unknown field {name!r}; known: {known}")
+
+    def __getattr__(self, name: str) -> np.ndarray:
+        if name.startswith("_") or name in ("out", "status", "inputs"):
+            raise AttributeError(name)
+        try:
+            return self[name]
+        except KeyError:
+            raise AttributeError(name) from None
+
+    @property
+    def velocity_out(self) -> tuple[np.ndarray, np.ndarray]:
+        """(vx_out, vy_out) of the centre of mass after the last contact [m/s]."""
+        return self["vx_out"], self["vy_out"]
+
+    @property
+    def mean_force(self) -> np.ndarray:
+        """P_n / duration [N], as ``DropResult.mean_force``."""
+        return self["normal_impulse"] / self["duration"]
+
+    @property
+    def ok(self) -> np.ndarray:
+        """Boolean mask of the cases that ran and passed the checks (status 0)."""
+        return self.status == 0
+
+    def messages(self) -> list[str]:
+        """The status message of each case (``kernels.status.STATUS_MESSAGES``)."""
+        return [S.STATUS_MESSAGES.get(int(s), f"status {int(s)}") for s in self.status]
+
+    def dois(self) -> tuple[str, ...]:
+        """DOIs of ``references``, in order, without repeats."""
+        return doi_list(self.references)
+
+
+def input_status(
+    half_length: float, cols: Mapping[str, np.ndarray], tol_angle: float = 1e-12
+) -> np.ndarray:
+    """The status of each case's inputs as ``simulate_drop`` refuses them (0: runs): a
+    non-finite input or mu < 0, or an approach speed below ``MIN_APPROACH_SPEED``: ST_BAD_INPUT;
+    an angle outside (0, pi/2 + tol_angle]: ST_BAD_ANGLE; a tip that does not approach the
+    flat (vy - spin (L/2) cos(angle) >= 0): ST_NOT_APPROACHING."""
+    th, vx, vy, w, mu = (cols[k] for k in ("angle", "vx", "vy", "spin", "mu"))
+    st = np.zeros(th.shape, dtype=np.int32)
+    finite = np.isfinite(th) & np.isfinite(vx) & np.isfinite(vy) & np.isfinite(w)
+    finite &= np.isfinite(mu)
+    with np.errstate(invalid="ignore"):
+        vn = vy - w * half_length * np.cos(th)
+        st[(-vn < MIN_APPROACH_SPEED) & (vn < 0.0)] = S.ST_BAD_INPUT
+        st[~(vn < 0.0)] = S.ST_NOT_APPROACHING
+        st[~((th > 0.0) & (th <= 0.5 * math.pi + tol_angle))] = S.ST_BAD_ANGLE
+        st[~finite | (mu < 0.0)] = S.ST_BAD_INPUT
+    return st
+
+
+def simulate_drops(
+    body: FlexibleRod | Rod,
+    flat: Material = AISI_1010,
+    *,
+    angle: Any,
+    vy: Any = None,
+    vx: Any = None,
+    spin: Any = 0.0,
+    mu: Any = DEFAULT_MU,
+    law: str | ContactModel = "ghaednia",
+    friction: str = "coulomb",
+    law_params: Mapping[str, float] | None = None,
+    gravity: Any = True,
+    rtol: float | None = None,
+    stop: str = "sequence",
+    t_max: Any = DEFAULT_T_MAX,
+    speed: Any = None,
+    incidence: Any = None,
+) -> DropBatchResult:
+    """Many drops of ``body`` (a FlexibleRod, or a rigid Rod: its rigid limit) on ``flat``, in
+    parallel on all cores: each case as ``simulate_drop`` runs it, bit for bit.
+
+    ``angle`` [rad, in (0, pi/2]], ``vx``, ``vy`` [m/s] of the centre of mass at first touch
+    (or instead ``speed`` [m/s] and ``incidence`` [rad]: vx = speed sin(incidence),
+    vy = -speed cos(incidence)), ``spin`` [rad/s] and ``mu`` are scalars or 1-D arrays,
+    broadcast against each other (the dimensional ones may carry units, as in
+    ``simulate_batch``). law, friction (``"coulomb"``, ``"impulse_ratio"``, ``"mindlin"``,
+    ``"partial_slip"``), law_params, gravity (True, False or [m/s^2]), rtol (default 1e-7),
+    stop and t_max [s] as ``simulate_drop``, the same for every case; no rate-dependent flat
+    (``simulate_drop``'s ``rate``: its self-consistent factor iterates per case).
+
+    A case the drop refuses (a non-finite input, mu < 0, an angle outside (0, pi/2], a tip
+    that does not approach the flat) or whose drop fails (its status, e.g. ST_TMAX, or
+    ST_INACCURATE when the energy balance closed worse than rtol promises) gets its status in
+    ``DropBatchResult.status`` and NaN outputs; it never stops the batch. ValueError for a bad
+    body, flat, law, friction, gravity, rtol, stop or t_max (one message naming it).
+    """
+    body = check_body(body)
+    bm = _body_model(body)
+    flat = check_flat(flat)
+    fric, _ = check_friction(friction, 0.0)
+    if angle is None:
+        raise ValueError(
+            "angle is required: the rod axis to the flat at the first touch, in radians (or "
+            "with a unit), in (0, pi/2]"
+        )
+    g = gravity_value(gravity)
+    r = check_rtol(rtol if rtol is not None else F.DROP_DEFAULT_RTOL)
+    t_end, stop_mode = check_stop(stop, t_max)
+    model = contact_model(bm.rigid, flat, law, law_params)
+    vx, vy = batch_velocity(vx, vy, speed, incidence)
+    cols = _batch_inputs({"mu": mu, "angle": angle, "vx": vx, "vy": vy, "spin": spin})
+    n = cols["angle"].shape[0]
+    status = input_status(bm.rigid.half_length, cols)
+    run = status == 0
+    mu_run = np.where(cols["mu"] < MU_NEGLIGIBLE, 0.0, cols["mu"])  # frictionless below
+    fid = np.full(n, fric.friction_id, dtype=np.int64)
+    fid[(fric.friction_id == PARTIAL_SLIP) & (mu_run == 0.0)] = COULOMB
+    out = np.full((n, F.N_DROP_OUT), np.nan)
+    checks = np.full((n, N_CHECKS), np.nan)
+    if np.any(run):
+        p = kernel_params(model)
+        gstar = float(body_params(bm.rigid, flat)[BP_GSTAR])
+        rod = bm.rigid
+        c = constants(rod.half_length, rod.tip_radius, rod.mass, bm.inertia, g, 0.0, 0.0, p,
+                      COULOMB, gstar)  # fmt: skip
+        mdl = model_tuple(model.law_id, p, c, bm.omega, bm.zeta, bm.U, bm.W, bm.Psi,
+                          bm.geometric)  # fmt: skip
+        init = np.stack([cols[k][run] for k in ("angle", "vx", "vy", "spin")], axis=1)
+        o, ck = (
+            np.full((init.shape[0], F.N_DROP_OUT), np.nan),
+            np.full((init.shape[0], N_CHECKS), np.nan),
+        )
+        st = np.zeros(init.shape[0], dtype=np.int32)
+        drop_batch(numba.get_num_threads(), mdl, np.ascontiguousarray(init),
+                   np.ascontiguousarray(mu_run[run]), np.ascontiguousarray(fid[run]), r, t_end,
+                   stop_mode, o, ck, st)  # fmt: skip
+        status[run], out[run], checks[run] = st, o, ck
+    _refuse_inaccurate(out, checks, status, r)
+    done = status == 0
+    out[~done] = np.nan
+    checks[~done] = np.nan
+    dmax = out[:, F.O_DELTA_MAX]
+    flags = np.where(done, np.nan_to_num(checks[:, CK_FLAGS]).astype(np.int64), 0)
+    flags[done] |= np.asarray(extrapolation_flags(model.law_id, model.params, dmax[done]))
+    refs = references_used(model, fric, bool(np.any(mu_run > 0.0))) + bm.references
+    return DropBatchResult(
+        out=out,
+        status=status,
+        flags=flags,
+        initial_energy=checks[:, CK_E0],
+        max_delta_ratio=np.asarray(delta_ratio(model.law_id, model.params, dmax)),
+        inputs=cols,
+        body=bm.description,
+        law=model.name,
+        friction=fric.name,
+        gravity=g,
+        rtol=r,
+        references=tuple(dict.fromkeys(refs)),
+    )
+
+
+def _refuse_inaccurate(
+    out: np.ndarray, checks: np.ndarray, status: np.ndarray, rtol: float
+) -> None:
+    """ST_INACCURATE where a finished drop's energy balance closed worse than ``rtol`` promises
+    (``drop_checks.check_energy_balance``, on every case at once)."""
+    ok = status == 0
+    if not np.any(ok):
+        return
+    columns = {name: out[ok, i] for i, name in enumerate(F.DROP_OUTPUT_FIELDS)}
+    error = energy_balance_error(columns, checks[ok, CK_E0])
+    bad = np.flatnonzero(ok)[~(error <= energy_balance_bound(rtol))]
+    status[bad] = S.ST_INACCURATE

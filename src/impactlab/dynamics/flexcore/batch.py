@@ -1,0 +1,174 @@
+"""Many drops of one body in one compiled call (numba ``prange``), and the per-case checks of a
+finished drop that ``simulate_drop`` shares with it: the tip's sequence and the result flags.
+
+``drop_batch`` runs ``drop`` (``driver``) for each case of an (N, 4) array of first-touch
+states [angle [rad], vx, vy [m/s], spin [rad/s]] with its own mu and friction id, on the
+model tuple of one body and law (``model.model_tuple``; its constants vector is copied per
+case and given the case's angle, mu, friction, cell widths and step limit exactly as
+``model.constants`` sets them). Partial slip runs the Mindlin pre-pass of ``simulate_drop``
+first (its cells span the pre-pass's largest loading contact radius per end). Each case gets
+a status (``kernels.status``); a failed case never stops the batch. The cases are dealt to
+the threads in turn (case i to thread i mod T): the costs of neighbouring cases of a grid
+differ little, so each thread gets its share of the costly ones.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit, prange
+
+from impactlab.contact.history_kernels import loading_contact_radius
+from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.flexcore.driver import drop
+from impactlab.dynamics.kernels.cells import CP_DX, N_CELLS
+from impactlab.dynamics.kernels.quality import energy_gained, gravity_dominated
+from impactlab.flags import FLAG_ENERGY_GAIN, FLAG_GRAVITY_DOMINATED, FLAG_OTHER_END
+
+#: ``impactlab.friction`` ids the batch needs (coulomb, mindlin; partial slip is F.FR_PARTIAL).
+FR_COULOMB = 1
+FR_MINDLIN = 2
+#: Columns of the per-case checks array ``checks`` (N, N_CHECKS) that ``drop_batch`` fills.
+CK_E0, CK_FLAGS = 0, 1
+N_CHECKS = 2
+
+
+@njit(cache=True, error_model="numpy")
+def initial_energy(m, inertia, vx, vy, w):
+    """E0 = m (vx^2 + vy^2) / 2 + I_C w^2 / 2 [J] at first touch."""
+    return 0.5 * m * (vx * vx + vy * vy) + 0.5 * inertia * (w * w)
+
+
+@njit(cache=True, error_model="numpy")
+def tip_sequence(contacts, n_contacts, duration, normal_impulse):
+    """(duration [s], normal impulse [N s]) of the tip's sequence: its contacts before the
+    other end's first touch (``duration`` and ``normal_impulse``, the drop's totals, when the
+    other end never touched), and whether the other end touched."""
+    t1 = math.inf
+    for j in range(n_contacts):
+        if contacts[j, F.CR_END] == 1.0:
+            t1 = min(t1, contacts[j, F.CR_T0])
+    if t1 == math.inf:
+        return duration, normal_impulse, False
+    end = -math.inf
+    impulse = 0.0
+    for j in range(n_contacts):
+        if contacts[j, F.CR_END] == 0.0 and contacts[j, F.CR_T0] < t1:
+            end = max(end, contacts[j, F.CR_T0] + contacts[j, F.CR_DUR])
+            impulse += contacts[j, F.CR_PN]
+    return end, impulse, True
+
+
+@njit(cache=True, error_model="numpy")
+def sequence_flags(out, e0, m, g, rtol, contacts, n_contacts):
+    """The ``ResultFlag`` bits of a finished sequence but LAW_EXTRAPOLATED (docs/flexible.md,
+    "Flags"): ENERGY_GAIN (the vibration energy counted with the kinetic), GRAVITY_DOMINATED
+    on the tip's sequence, else OTHER_END when the other end touched or e < 0 (or NaN)."""
+    flags = 0
+    e_end = out[F.O_RIGID_KINETIC_ENERGY] + out[F.O_VIBRATION_ENERGY]
+    if energy_gained(e0, e_end, out[F.O_POTENTIAL_ENERGY], rtol):
+        flags |= FLAG_ENERGY_GAIN
+    duration, impulse, other = tip_sequence(
+        contacts, n_contacts, out[F.O_DURATION], out[F.O_NORMAL_IMPULSE]
+    )
+    if gravity_dominated(m * g * duration, impulse):
+        flags |= FLAG_GRAVITY_DOMINATED
+    elif other or not out[F.O_E] >= 0.0:
+        flags |= FLAG_OTHER_END
+    return flags
+
+
+@njit(cache=True, error_model="numpy")
+def case_model(mdl, angle, mu, fid, w0, w1, max_steps):
+    """The model tuple of one case: a copy of the constants vector with the case's angle, its
+    sine and cosine, mu, friction id, cell widths [m] and step limit (as ``model.constants``)."""
+    c = mdl[2].copy()
+    c[F.FC_TH0] = angle
+    c[F.FC_S0] = math.sin(angle)
+    c[F.FC_C0] = math.cos(angle)
+    c[F.FC_MU] = mu
+    c[F.FC_FRIC] = float(fid)
+    c[F.FC_CP + CP_DX] = w0
+    c[F.FC_CP + F.NFCP + CP_DX] = w1
+    c[F.FC_MAX_STEPS] = float(min(max_steps, F.DROP_MAX_STEPS))
+    return (mdl[0], mdl[1], c, mdl[3], mdl[4], mdl[5], mdl[6], mdl[7], mdl[8], mdl[9],
+            mdl[10], mdl[11], mdl[12])  # fmt: skip
+
+
+@njit(cache=True, error_model="numpy")
+def _run(mdl, vx, vy, w, rtol, t_max, stop_mode, no_history, out, contacts, dents):
+    """One drop on zeroed tables: (status, n_contacts)."""
+    contacts[:] = 0.0
+    dents[:] = 0.0
+    n = 6 + 2 * mdl[3].shape[0] + F.NQUAD
+    if mdl[2][F.FC_FRIC] == F.FR_PARTIAL:
+        n += F.NE * F.NCS
+    yfinal = np.zeros(n)
+    st, ncon, _nd, _h, _nh = drop(
+        mdl, vx, vy, w, rtol, t_max, stop_mode, no_history, out, contacts, dents, yfinal
+    )
+    return st, ncon
+
+
+@njit(cache=True, error_model="numpy")
+def cell_widths(law, p, contacts, n_contacts):
+    """Partial slip: the cell width of each end [m] (``N_CELLS`` cells over the largest loading
+    contact radius of its contacts; an end without contacts: the tip's), as ``simulate_drop``."""
+    a0 = 0.0
+    a1 = 0.0
+    for j in range(n_contacts):
+        a = loading_contact_radius(law, p, contacts[j, F.CR_DMAX])
+        if contacts[j, F.CR_END] == 0.0:
+            a0 = max(a0, a)
+        else:
+            a1 = max(a1, a)
+    if not a1 > 0.0:
+        a1 = a0
+    return a0 * 1.0001 / N_CELLS, a1 * 1.0001 / N_CELLS
+
+
+@njit(cache=True, error_model="numpy")
+def one_drop(mdl, init, mu, fid, rtol, t_max, stop_mode, out, checks):
+    """One case of the batch: fills ``out`` (layout.N_DROP_OUT) and ``checks`` (N_CHECKS);
+    returns its status."""
+    contacts = np.zeros((F.MAX_CONTACTS, F.NCR))
+    dents = np.zeros((F.MAX_DENTS, F.NDT))
+    no_history = init.shape[0] < 0  # a run-time False: one specialisation of ``drop``
+    angle, vx, vy, w = init[0], init[1], init[2], init[3]
+    w0 = math.nan
+    w1 = math.nan
+    max_steps = F.DROP_MAX_STEPS
+    if fid == F.FR_PARTIAL:  # the cells span the contact radius of a Mindlin pre-pass
+        pre = case_model(mdl, angle, mu, FR_MINDLIN, w0, w1, max_steps)
+        st, ncon = _run(pre, vx, vy, w, rtol, t_max, stop_mode, no_history, out, contacts, dents)
+        if st != F.ST_OK:
+            return st
+        w0, w1 = cell_widths(mdl[0], mdl[1], contacts, ncon)
+        max_steps = max(F.PARTIAL_MIN_STEPS, F.PARTIAL_STEP_FACTOR * int(out[F.O_N_STEPS]))
+    m = case_model(mdl, angle, mu, fid, w0, w1, max_steps)
+    st, ncon = _run(m, vx, vy, w, rtol, t_max, stop_mode, no_history, out, contacts, dents)
+    if st != F.ST_OK:
+        return st
+    c = mdl[2]
+    e0 = initial_energy(c[F.FC_M], c[F.FC_I], vx, vy, w)
+    checks[CK_E0] = e0
+    checks[CK_FLAGS] = sequence_flags(out, e0, c[F.FC_M], c[F.FC_G], rtol, contacts, ncon)
+    return st
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def drop_batch(threads, mdl, init, mu, fid, rtol, t_max, stop_mode, out, checks, status):
+    """Run ``init.shape[0]`` drops on ``threads`` loops (pass ``numba.get_num_threads()``).
+
+    ``mdl``: the model tuple of the body and law (its constants' angle, mu, friction and
+    cells are set per case); ``init``: (N, 4) [angle, vx, vy, spin]; ``mu``: (N,) the
+    friction coefficient each case runs with; ``fid``: (N,) int64 friction ids; rtol, t_max
+    [s], stop_mode as ``drop``. Fills ``out`` (N, layout.N_DROP_OUT), ``checks`` (N, N_CHECKS:
+    E0 [J] and the flags but LAW_EXTRAPOLATED) and ``status`` (N,) int32."""
+    n = init.shape[0]
+    nt = max(1, min(threads, n))
+    for t in prange(nt):
+        for i in range(t, n, nt):
+            status[i] = one_drop(mdl, init[i], mu[i], fid[i], rtol, t_max, stop_mode, out[i],
+                                 checks[i])  # fmt: skip
