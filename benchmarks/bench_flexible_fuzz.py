@@ -135,7 +135,7 @@ def history_miss(r: Any) -> str:
     its force is zero ("" if none)."""
     h = r.history
     dr = max((d.delta_p for d in r.dents if d.end == 0), default=0.0)
-    over = (h["delta0"] - dr) * (h["fn0"] == 0.0)
+    over = (h["penetration_0"] - dr) * (h["normal_force_0"] == 0.0)
     worst = float(over.max(initial=0.0))
     tol = max(1e-6 * max(r.delta_max, 1e-9), 1e-12) * 10.0
     if worst > tol:
