@@ -46,7 +46,14 @@ def _case(rng: np.random.Generator) -> dict[str, Any]:
 
 def _check(r: Any) -> list[str]:
     bad = []
-    values = (r.e, r.dent_depth, r.delta_max, r.sequence_duration, r.vibration_energy, r.sequence_mean_force)
+    values = (
+        r.e,
+        r.dent_depth,
+        r.delta_max,
+        r.sequence_duration,
+        r.vibration_energy,
+        r.sequence_mean_force,
+    )
     if not all(math.isfinite(v) for v in values):
         bad.append(f"non-finite output {values}")
     if not 0.0 <= r.dent_depth <= r.delta_max:

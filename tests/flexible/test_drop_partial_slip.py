@@ -87,7 +87,14 @@ def test_paper_flexible_drop() -> None:
         velocity=(0.0, -1.41),
     )
     assert r.friction == "partial_slip" and r.ok
-    values = [r.e, r.dent_depth, r.sequence_sliding_length, r.sequence_duration, r.delta_max, r.max_force]
+    values = [
+        r.e,
+        r.dent_depth,
+        r.sequence_sliding_length,
+        r.sequence_duration,
+        r.delta_max,
+        r.max_force,
+    ]
     values += [r.sequence_mean_force, r.tangential_impulse, r.vibration_energy, r.energy_error]
     assert all(math.isfinite(v) for v in values)
     assert r.n_contacts >= 1 and r.energy_error < 1e-5

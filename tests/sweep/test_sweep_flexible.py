@@ -27,8 +27,10 @@ TABLE = {
         "friction": ["coulomb", "mindlin"],
     },
     "outputs": {
-        "keep": ["e", "delta_p", "duration", "dent_depth", "sequence_sliding_length"]
-        + ["sequence_duration", "sequence_mean_force", "regime"]
+        "keep": [
+            *("e", "delta_p", "duration", "dent_depth", "sequence_sliding_length"),
+            *("sequence_duration", "sequence_mean_force", "regime"),
+        ]
     },
 }
 

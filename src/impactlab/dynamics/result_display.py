@@ -8,7 +8,7 @@ format).
 from __future__ import annotations
 
 from collections.abc import Mapping
-from typing import Any
+from typing import Any, ClassVar
 
 from impactlab._display import field_rows, html_table, text_table
 
@@ -34,7 +34,7 @@ class ResultDisplay:
         return []
 
     #: The fields of the one-line ``repr``, in order (each class names its own).
-    REPR_FIELDS: tuple[str, ...] = ()
+    REPR_FIELDS: ClassVar[tuple[str, ...]] = ()
 
     def __repr__(self) -> str:
         """One line: the headline fields in SI (``print(result)``: the whole table)."""
