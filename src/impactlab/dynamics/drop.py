@@ -330,9 +330,9 @@ def simulate_drop(
     None, ``"cowper-symonds"`` or ``"johnson-cook"`` (the flat's yield strength raised by the
     self-consistent rate factor, ``impactlab.contact.rate``); rtol: relative tolerance (default
     1e-7); history: keep the time history (``DropResult.history``; default True, as
-    ``impactlab.simulate``: a result answers its figures; pass False for many drops in a
-    loop, where a history, about 2 MB and 5 % of the run time of the paper's drop, is not
-    wanted); law_params: the law's parameters; stop:
+    ``impactlab.simulate``: a result can draw its figures; pass False for many drops in a
+    loop: the paper's drops keep about 4,800 rows, 0.6 MB, and take about 1.5 times as long
+    with them, 12 ms against 7.5 ms); law_params: the law's parameters; stop:
     ``"sequence"`` (stop when the tip is clear until the other end could land: that is a new
     impact, ``next_end`` / ``next_time``) or ``"flight"`` (go on through the other end's
     impacts until the rod flies off); t_max [s]: the longest simulated time.
