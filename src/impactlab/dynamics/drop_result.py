@@ -160,7 +160,8 @@ class DropResult(DerivedOutputs, ResultDisplay):
     """The outcome of one drop (SI units; units of the fields in ``UNITS``). Immutable.
 
     It carries the summary attributes of ``ImpactResult`` (``impactlab.simulate`` returns it
-    for a FlexibleRod), each read for the whole sequence of contacts:
+    for a FlexibleRod) read for the whole sequence of contacts, those that mean something
+    else for a sequence under names of their own (``schema.SEQUENCE_FIELDS``):
 
     - ``e``: minus the tip's rigid-body normal velocity after the last contact over the one
       before the first, with the gravity impulse of the sequence removed (as a ballistic fit
