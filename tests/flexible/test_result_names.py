@@ -66,6 +66,9 @@ def test_old_history_columns_warn_and_read_the_same_column() -> None:
         h["nope"]
     np.testing.assert_array_equal(h.tip_height, -h.penetration_0)
     assert set(h.units) == set(DROP_HISTORY_COLUMNS)
+    df = h.to_dataframe()
+    assert list(df.columns) == list(h.fields) and df.attrs["units"]["normal_force_0"] == "N"
+    np.testing.assert_array_equal(df["energy_balance_error"].to_numpy(), data[:, -1])
 
 
 def test_renamed_totals_keep_their_old_names_for_one_release(drop: DropResult) -> None:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -91,6 +92,15 @@ class DropHistory:
     def tip_height(self) -> np.ndarray:
         """Height of the tip's lowest point above the undeformed flat [m] (-penetration_0)."""
         return -self["penetration_0"]
+
+    def to_dataframe(self) -> Any:
+        """A pandas DataFrame of the columns (SI, units in ``df.attrs["units"]``), as
+        ``History.to_dataframe`` of an impact."""
+        import pandas as pd  # heavy, needed only here
+
+        df = pd.DataFrame(np.array(self.data), columns=list(DROP_HISTORY_COLUMNS))
+        df.attrs["units"] = dict(DROP_HISTORY_UNITS)
+        return df
 
     def __repr__(self) -> str:
         return f"DropHistory({len(self)} rows: {', '.join(DROP_HISTORY_COLUMNS)})"
