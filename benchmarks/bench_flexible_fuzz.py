@@ -101,13 +101,13 @@ def anomalies(r: Any, rtol: float = F.DROP_DEFAULT_RTOL) -> list[str]:
         return bad  # flagged: the result says it is not plain success
     scalars = {
         "e": r.e,
-        "delta_p": r.delta_p,
+        "dent_depth": r.dent_depth,
         "delta_max": r.delta_max,
-        "duration": r.duration,
+        "sequence_duration": r.sequence_duration,
         "vibration_energy": r.vibration_energy,
         "rigid_kinetic_energy": r.rigid_kinetic_energy,
-        "sliding_length": r.sliding_length,
-        "mean_force": r.mean_force,
+        "sequence_sliding_length": r.sequence_sliding_length,
+        "sequence_mean_force": r.sequence_mean_force,
         "energy_error": r.energy_error,
     }
     for name, v in scalars.items():
@@ -115,8 +115,8 @@ def anomalies(r: Any, rtol: float = F.DROP_DEFAULT_RTOL) -> list[str]:
             bad.append(f"{name} = {v!r} not finite")
     if not r.e >= 0.0:
         bad.append(f"e = {r.e!r} < 0 without a flag")
-    if not 0.0 <= r.delta_p <= r.delta_max:
-        bad.append(f"delta_p = {r.delta_p!r} outside [0, delta_max = {r.delta_max!r}]")
+    if not 0.0 <= r.dent_depth <= r.delta_max:
+        bad.append(f"dent_depth = {r.dent_depth!r} outside [0, delta_max = {r.delta_max!r}]")
     e_end = r.rigid_kinetic_energy + r.vibration_energy + r.potential_energy
     scale = r.initial_energy + r.rigid_kinetic_energy + r.vibration_energy
     scale += abs(r.potential_energy)
@@ -135,7 +135,7 @@ def history_miss(r: Any) -> str:
     its force is zero ("" if none)."""
     h = r.history
     dr = max((d.delta_p for d in r.dents if d.end == 0), default=0.0)
-    over = (h["delta0"] - dr) * (h["fn0"] == 0.0)
+    over = (h["penetration_0"] - dr) * (h["normal_force_0"] == 0.0)
     worst = float(over.max(initial=0.0))
     tol = max(1e-6 * max(r.delta_max, 1e-9), 1e-12) * 10.0
     if worst > tol:

@@ -66,11 +66,13 @@ BY_NAME: dict[str, Display] = {
         for name in (
             "delta_max",
             "delta_p",
+            "dent_depth",
             "delta_r",
             "delta_y",
             "delta_c",
             "delta_c_jackson_green",
             "sliding_length",
+            "sequence_sliding_length",
             "slip",
             "slip_path",
             "contact_travel",

@@ -36,6 +36,10 @@ def test_flexible_and_rate_dependent_models(template):
     # the rate-dependent flat changes the prediction, and so does the flexibility
     assert (rate.values["e"] != flex.values["e"]).any()
     assert (flex.values["e"] != rigid.values["e"]).any()
+    # a measured dent depth is the drop's final dent (dent_depth), its slip the sequence's
+    assert CandidateModel(body="flexible_rod").unsupported(list(template.quantities)) == []
+    assert "sliding_length" in template.quantities
+    assert np.isfinite(flex.values["sliding_length"]).all()
     with pytest.raises(ValueError, match="needs body='flexible_rod'"):
         CandidateModel(rate="cowper-symonds")
     with pytest.raises(ValueError, match="unknown rate law"):

@@ -36,7 +36,8 @@ def test_flexible_json_equals_the_library(monkeypatch, capsys):
     assert shape_problems(data) == []  # docs/json-schema.md
     ref = simulate_drop(FlexibleRod.paper(), mu=0.2, angle=math.radians(20), velocity=(0.0, -1.41))
     assert data["e"] == {"value": ref.e, "unit": "1"}
-    assert data["delta_p"] == {"value": ref.delta_p, "unit": "m"}
+    assert data["dent_depth"] == {"value": ref.dent_depth, "unit": "m"}
+    assert "delta_p" not in data and "duration" not in data  # a drop's totals: names of their own
     assert data["n_contacts"] == ref.n_contacts > 1
     assert len(data["contacts"]) == ref.n_contacts
     assert data["contacts"][0]["duration"]["unit"] == "s"
@@ -52,9 +53,9 @@ def test_table_lists_every_contact_and_the_totals(monkeypatch, capsys):
     ref = simulate_drop(FlexibleRod.paper(), mu=0.2, angle=math.radians(20), velocity=(0.0, -1.41))
     for k in range(1, ref.n_contacts + 1):
         assert lines[i + 1 + k].split()[0] == str(k)
-    for name in ("scar_length", "delta_p", "duration", "vibration_energy", "e"):
+    for name in ("scar_length", "dent_depth", "sequence_duration", "vibration_energy", "e"):
         assert name in out
-    assert f"{format_number(ref.delta_p * 1e6)} │ um" in out
+    assert f"{format_number(ref.dent_depth * 1e6)} │ um" in out
 
 
 def test_rigid_and_options(monkeypatch, capsys):

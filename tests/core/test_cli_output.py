@@ -261,8 +261,9 @@ def test_simulate_flexible_rod_is_the_drop() -> None:
     assert data["e"] == {"value": ref.e, "unit": "1"}
     assert data["n_contacts"] == ref.n_contacts and len(data["contacts"]) == ref.n_contacts
     rows = _table(_ok(FLEX))
-    assert rows["delta_p"] == (format_number(ref.delta_p * 1e6), "um")
-    assert rows["duration"][1] == "ms" and rows["mean_force"][1] == "N" and "flags" in rows
+    assert rows["dent_depth"] == (format_number(ref.dent_depth * 1e6), "um")
+    assert rows["sequence_duration"][1] == "ms" and rows["sequence_mean_force"][1] == "N"
+    assert "flags" in rows and "delta_p" not in rows
 
 
 @pytest.mark.parametrize(

@@ -145,7 +145,7 @@ def test_drop_any_rod_material_and_flat(monkeypatch, capsys) -> None:
     )
     data = json.loads(out)
     assert data["e"]["value"] == pytest.approx(ref.e, rel=1e-12)
-    assert data["delta_p"]["value"] == pytest.approx(ref.delta_p, rel=1e-12)
+    assert data["dent_depth"]["value"] == pytest.approx(ref.dent_depth, rel=1e-12)
     code, out, _ = _cli(
         monkeypatch, capsys, "drop", "--rigid", "--angle", "30 deg", "--vy", "-2 m/s",
         "--length", "200 mm", "--radius", "5 mm", "--diameter", "10 mm",

@@ -1,7 +1,7 @@
 """One name per quantity: every public parameter of the top-level API, every result field (the
 ``to_dict`` keys of the result classes, a batch's columns) and every history column is a name
-of docs/glossary.md (first column of its tables) or of a schema table (``impactlab.schema``,
-the drop's ``DROP_FIELDS``)."""
+of docs/glossary.md (first column of its tables) or of the schema (``impactlab.schema``: the
+impact's and the drop's fields and history columns)."""
 
 from __future__ import annotations
 
@@ -18,7 +18,6 @@ import impactlab
 from impactlab import schema
 from impactlab.analytic.result import InversionResult
 from impactlab.dynamics.drop_result import DropResult
-from impactlab.dynamics.flexcore.layout import DROP_FIELDS, DROP_HISTORY_FIELDS
 from impactlab.dynamics.results import ImpactResult, assemble_result
 from impactlab.flags import ResultFlag
 
@@ -34,9 +33,9 @@ def glossary_names() -> set[str]:
     return names
 
 
-#: The names of the schema tables: the engine's (``impactlab.schema``) and the drop's
-#: (``DROP_FIELDS``, with units and meanings).
-KNOWN = glossary_names() | set(schema.FIELDS) | {f.name for f in DROP_FIELDS}
+#: The names of the schema tables (``impactlab.schema``: the impact's and the drop's, with units
+#: and meanings).
+KNOWN = glossary_names() | set(schema.FIELDS)
 
 
 def _public_parameters() -> dict[str, str]:
@@ -89,7 +88,7 @@ def _result_fields() -> dict[str, str]:
 
 def _history_columns() -> dict[str, str]:
     out = {f.name: "ImpactResult.history" for f in schema.HISTORY_FIELDS}
-    return out | {n: "DropResult.history" for n in DROP_HISTORY_FIELDS}
+    return out | {f.name: "DropResult.history" for f in schema.DROP_HISTORY_FIELDS}
 
 
 @pytest.mark.parametrize(
@@ -100,6 +99,13 @@ def _history_columns() -> dict[str, str]:
 def test_every_public_name_is_in_the_glossary(names: dict[str, str]) -> None:
     missing = {n: where for n, where in names.items() if n not in KNOWN}
     assert not missing, f"not in docs/glossary.md nor impactlab.schema: {missing}"
+
+
+def test_renamed_names_are_gone_from_the_tables() -> None:
+    """A drop's names before 0.3 are no glossary name (they read the new ones, with a warning)."""
+    old = set(schema.RENAMED_DROP_HISTORY) - set(schema.FIELDS)
+    assert old and not old & glossary_names()
+    assert not set(schema.RENAMED_DROP_FIELDS) & {f.name for f in schema.DROP_FIELDS}
 
 
 def test_the_check_can_fail() -> None:

@@ -52,5 +52,5 @@ def test_drop_with_negligible_friction_runs_frictionless(friction: str) -> None:
     kw = {"law": "hertz", "angle": 1.0, "velocity": (0.0, -1.0)}
     r = simulate_drop(PAPER_ROD, friction=friction, mu=1e-14, **kw)
     ref = simulate_drop(PAPER_ROD, friction=friction, mu=0.0, **kw)
-    for k in ("e", "delta_max", "delta_p", "duration", "max_force"):
+    for k in ("e", "delta_max", "dent_depth", "sequence_duration", "max_force"):
         assert getattr(r, k) == getattr(ref, k), k

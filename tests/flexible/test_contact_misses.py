@@ -30,7 +30,7 @@ def _deepest_miss(r: il.DropResult) -> float:
     h = r.history
     assert h is not None
     dr = max(d.delta_p for d in r.dents if d.end == 0)
-    return float(((h["delta0"] - dr) * (h["fn0"] == 0.0)).max(initial=0.0))
+    return float(((h["penetration_0"] - dr) * (h["normal_force_0"] == 0.0)).max(initial=0.0))
 
 
 def test_grazing_recontact_is_located() -> None:
@@ -38,7 +38,7 @@ def test_grazing_recontact_is_located() -> None:
     ref = simulate_drop(FlexibleRod.paper(), rtol=1e-9, **GRAZING)
     assert r.n_contacts == ref.n_contacts == 6
     assert r.e == pytest.approx(ref.e, rel=1e-4)
-    assert r.delta_p == pytest.approx(ref.delta_p, rel=1e-4)
+    assert r.dent_depth == pytest.approx(ref.dent_depth, rel=1e-4)
     assert r.ok
     # the tip never lies below its dent's surface with zero force (beyond round-off)
     assert _deepest_miss(r) < 1e-6 * r.delta_max
@@ -55,7 +55,7 @@ def test_paper_drop_impulse_ratio_rate_has_no_false_law_limit() -> None:
     """A missed re-contact let the tip fall through its dent until the law's validity limit."""
     r = simulate_drop(FlexibleRod.paper(), friction="impulse_ratio", mu=0.2, rate="cowper-symonds",
                       angle=math.radians(20), velocity=(0.0, -1.41), history=True)  # fmt: skip
-    assert r.delta_p < 60e-6
+    assert r.dent_depth < 60e-6
     assert _deepest_miss(r) < 1e-6 * r.delta_max
 
 
@@ -66,7 +66,7 @@ def test_coarse_rod_slow_drop_has_no_false_law_limit() -> None:
                       angle="45 deg", velocity=(0, -0.5), rtol=1e-10)  # fmt: skip
     assert r.n_contacts == ref.n_contacts
     assert r.e == pytest.approx(ref.e, rel=1e-3)
-    assert np.isfinite(r.delta_p) and 0.0 <= r.delta_p <= r.delta_max
+    assert np.isfinite(r.dent_depth) and 0.0 <= r.dent_depth <= r.delta_max
 
 
 def test_missed_contact_status_is_a_clear_error() -> None:

@@ -19,6 +19,7 @@ from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.kernels import status as S
 from impactlab.dynamics.kernels.cells import N_CELLS
 from impactlab.friction import PARTIAL_SLIP_CELLS
+from impactlab.schema import RENAMED_DROP_FIELDS
 
 #: A small flexible rod: few modes, fast drops.
 ROD = FlexibleRod.paper(n_axial=1, n_bending=3, axial_residual=True, damping=0.01)
@@ -50,7 +51,7 @@ def _expected(body, kwargs: dict, case: dict) -> tuple[int, np.ndarray, list[flo
             code = S.ST_NOT_APPROACHING
         return code, nan, [math.nan, 0.0, math.nan]
     row = [
-        math.nan if n in _UNKEPT else float(_READ.get(n, lambda r, n=n: getattr(r, n))(r))
+        math.nan if n in _UNKEPT else float(_READ.get(n, lambda r, n=n: getattr(r, RENAMED_DROP_FIELDS.get(n, n)))(r))
         for n in F.DROP_OUTPUT_FIELDS
     ]
     return 0, np.array(row), [r.initial_energy, float(int(r.flags)), r.max_delta_ratio]
@@ -120,7 +121,7 @@ def test_rigid_rod_and_units() -> None:
     drops = simulate_drops(Rod.paper(), angle="20 deg", speed=[1.0, 1.5], incidence=0.1, mu=0.2)
     assert drops.ok.all() and len(drops) == 2
     r = simulate_drop(Rod.paper(), angle=math.radians(20), speed=1.5, incidence=0.1, mu=0.2)
-    assert drops.e[1] == r.e and drops.mean_force[1] == r.mean_force
+    assert drops.e[1] == r.e and drops.sequence_mean_force[1] == r.sequence_mean_force
     assert drops.velocity_out[0][1] == r.velocity_out[0] and drops["angle"][0] > 0
     assert drops.dois() == r.dois()[: len(drops.dois())] or set(drops.dois()) >= set(r.dois())
     with pytest.raises(KeyError, match="unknown field 'nope'"):

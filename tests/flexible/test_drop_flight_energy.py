@@ -56,5 +56,5 @@ def test_paper_20_deg_flight_closes_its_balance_and_is_not_gravity_dominated() -
     assert ResultFlag.GRAVITY_DOMINATED not in r.flags
     assert ResultFlag.ENERGY_GAIN not in r.flags
     last = r.contacts[-1]
-    assert r.duration == pytest.approx(last.start + last.duration, rel=1e-12)
+    assert r.sequence_duration == pytest.approx(last.start + last.duration, rel=1e-12)
     assert r.next_end == -1  # nothing left to land: the whole flight was integrated

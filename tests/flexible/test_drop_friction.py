@@ -41,9 +41,9 @@ def test_rigid_limit(friction: str, th: float, vx: float, vy: float, mu: float) 
     assert r.n_contacts == 1
     pairs = {
         "e": (r.e_raw, r0.e, 1.0),
-        "delta_p": (r.delta_p, r0.delta_p, r0.delta_max),
-        "sliding_length": (r.sliding_length, r0.sliding_length, r0.delta_max),
-        "duration": (r.duration, r0.duration, r0.duration),
+        "delta_p": (r.dent_depth, r0.delta_p, r0.delta_max),
+        "sliding_length": (r.sequence_sliding_length, r0.sliding_length, r0.delta_max),
+        "duration": (r.sequence_duration, r0.duration, r0.duration),
         "stick": (r.stick_time, r0.stick_time, r0.duration),
         "Pt": (r.tangential_impulse, r0.tangential_impulse, r0.normal_impulse),
         "spin": (r.spin_out, r0.spin_out, abs(vy) / 0.15),
@@ -71,7 +71,7 @@ def test_models_differ_on_the_flexible_rod() -> None:
     """The friction model matters: the three models give three different slips (same drop)."""
     body = FlexibleRod.paper(n_axial=2, n_bending=4, axial_residual=False)
     kw = {"mu": 0.2, "angle": math.radians(20), "velocity": (0.0, -1.41)}
-    slips = {f: simulate_drop(body, friction=f, **kw).sliding_length for f in MODELS}
+    slips = {f: simulate_drop(body, friction=f, **kw).sequence_sliding_length for f in MODELS}
     assert len({round(s, 12) for s in slips.values()}) == 3
 
 

@@ -46,11 +46,18 @@ def _case(rng: np.random.Generator) -> dict[str, Any]:
 
 def _check(r: Any) -> list[str]:
     bad = []
-    values = (r.e, r.delta_p, r.delta_max, r.duration, r.vibration_energy, r.mean_force)
+    values = (
+        r.e,
+        r.dent_depth,
+        r.delta_max,
+        r.sequence_duration,
+        r.vibration_energy,
+        r.sequence_mean_force,
+    )
     if not all(math.isfinite(v) for v in values):
         bad.append(f"non-finite output {values}")
-    if not 0.0 <= r.delta_p <= r.delta_max:
-        bad.append(f"delta_p {r.delta_p} outside [0, delta_max {r.delta_max}]")
+    if not 0.0 <= r.dent_depth <= r.delta_max:
+        bad.append(f"delta_p {r.dent_depth} outside [0, delta_max {r.delta_max}]")
     if r.ok:
         if not r.e >= 0.0:
             bad.append(f"e = {r.e} < 0 without a flag")
@@ -63,7 +70,7 @@ def _check(r: Any) -> list[str]:
     if r.history is not None:  # the tip never deeper than its deepest dent with zero force
         h = r.history
         dr = max(d.delta_p for d in r.dents if d.end == 0)
-        over = float(((h["delta0"] - dr) * (h["fn0"] == 0.0)).max(initial=0.0))
+        over = float(((h["penetration_0"] - dr) * (h["normal_force_0"] == 0.0)).max(initial=0.0))
         if over > 1e-5 * r.delta_max:
             bad.append(f"tip {over:.3g} m inside its dent with zero force")
     return bad

@@ -35,9 +35,9 @@ def test_rigid_limit(th: float, vx: float, vy: float, mu: float) -> None:
     assert r.n_contacts == 1 and r.friction == "partial_slip"
     pairs = {
         "e": (r.e_raw, r0.e, 1.0, 1e-6),
-        "delta_p": (r.delta_p, r0.delta_p, r0.delta_max, 1e-6),
-        "sliding_length": (r.sliding_length, r0.sliding_length, r0.delta_max, 1e-6),
-        "duration": (r.duration, r0.duration, r0.duration, 1e-6),
+        "delta_p": (r.dent_depth, r0.delta_p, r0.delta_max, 1e-6),
+        "sliding_length": (r.sequence_sliding_length, r0.sliding_length, r0.delta_max, 1e-6),
+        "duration": (r.sequence_duration, r0.duration, r0.duration, 1e-6),
         "Pt": (r.tangential_impulse, r0.tangential_impulse, r0.normal_impulse, 1e-6),
         "spin": (r.spin_out, r0.spin_out, abs(vy) / 0.15, 1e-6),
         "stick": (r.stick_time, r0.stick_time, r0.duration, 1e-5),
@@ -69,11 +69,11 @@ def test_partial_slip_is_used() -> None:
     kw = {"angle": math.radians(20), "velocity": (0.0, -1.41)}
     ps = simulate_drop(body, friction="partial_slip", mu=0.2, **kw)
     mi = simulate_drop(body, friction="mindlin", mu=0.2, **kw)
-    assert abs(ps.sliding_length - mi.sliding_length) > 1e-8
+    assert abs(ps.sequence_sliding_length - mi.sequence_sliding_length) > 1e-8
     assert ps.stick_time > 0.0
     free = simulate_drop(body, friction="partial_slip", mu=0.0, **kw)
     ref = simulate_drop(body, friction="coulomb", mu=0.0, **kw)
-    assert free.e == ref.e and free.delta_p == ref.delta_p
+    assert free.e == ref.e and free.dent_depth == ref.dent_depth
 
 
 def test_paper_flexible_drop() -> None:
@@ -87,8 +87,15 @@ def test_paper_flexible_drop() -> None:
         velocity=(0.0, -1.41),
     )
     assert r.friction == "partial_slip" and r.ok
-    values = [r.e, r.delta_p, r.sliding_length, r.duration, r.delta_max, r.max_force]
-    values += [r.mean_force, r.tangential_impulse, r.vibration_energy, r.energy_error]
+    values = [
+        r.e,
+        r.dent_depth,
+        r.sequence_sliding_length,
+        r.sequence_duration,
+        r.delta_max,
+        r.max_force,
+    ]
+    values += [r.sequence_mean_force, r.tangential_impulse, r.vibration_energy, r.energy_error]
     assert all(math.isfinite(v) for v in values)
     assert r.n_contacts >= 1 and r.energy_error < 1e-5
     assert r.history is not None

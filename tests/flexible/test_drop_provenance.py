@@ -19,7 +19,7 @@ def test_drop_record_reruns_and_repr_is_one_line() -> None:
     assert rec["body"]["type"] == "FlexibleRod" and rec["body"]["n_bending"] == 2
     assert rec["stop"] == "flight" and rec["impactlab_version"] == il.__version__
     again = il.rerun(d, history=False)
-    assert (again.e, again.delta_p, again.n_contacts) == (r.e, r.delta_p, r.n_contacts)
+    assert (again.e, again.dent_depth, again.n_contacts) == (r.e, r.dent_depth, r.n_contacts)
     text = repr(r)
     assert "\n" not in text and len(text) < 300 and "ContactRecord" not in text
-    assert r.to_pint()["delta_p"].to("um").magnitude == r.delta_p * 1e6
+    assert r.to_pint()["dent_depth"].to("um").magnitude == r.dent_depth * 1e6

@@ -33,7 +33,7 @@ from impactlab.flags import FLAG_ENERGY_GAIN
 from impactlab.friction import get_friction
 from impactlab.materials import get_material
 from impactlab.sweep.engine import ENGINE, Evaluator
-from impactlab.sweep.flexible import DROP_OUTPUTS, FLEXIBLE_BODY, flexible_body
+from impactlab.sweep.flexible import DROP_OUTPUTS, FLEXIBLE_BODY, MEASURED_AS, flexible_body
 from impactlab.sweep.inputs import MATERIAL_OVERRIDES
 from impactlab.sweep.material_inputs import CUSTOM
 from impactlab.sweep.models import Statics, material_for
@@ -100,7 +100,8 @@ class CandidateModel:
         fewer outputs than the rigid engine: ``sweep.flexible.DROP_OUTPUTS``)."""
         if self.body != FLEXIBLE_BODY:
             return []
-        return [q for q in quantities if not set(MEASURABLE[q].outputs) <= set(DROP_OUTPUTS)]
+        drop = set(DROP_OUTPUTS)
+        return [q for q in quantities if not set(_drop_outputs(MEASURABLE[q].outputs)) <= drop]
 
     @property
     def batched(self) -> bool:
@@ -116,6 +117,12 @@ class Prediction:
 
     values: Mapping[str, np.ndarray]
     status: np.ndarray
+
+
+def _drop_outputs(outputs: Sequence[str]) -> list[str]:
+    """The store columns of a drop that give the engine ``outputs`` an experiment measures (a
+    dent depth is the drop's final dent: ``sweep.flexible.MEASURED_AS``)."""
+    return [MEASURED_AS.get(o, o) for o in outputs]
 
 
 def _engine_outputs(quantities: Sequence[str]) -> list[str]:
@@ -185,11 +192,14 @@ def predict(
             cases[p.name] = np.repeat(theta[:, j], nd)
         categories = _whole_materials(dict(key), cases)
         statics = Statics(categories, dict(model.law_params), dict(engine or {}))
+        flexible = model.body == FLEXIBLE_BODY
+        asked = _drop_outputs(outputs) if flexible else outputs
         if model.batched:
             with _threads_for(w * nd):
-                res, st = evaluator(cases, statics, outputs)
+                res, st = evaluator(cases, statics, asked)
         else:
-            res, st = _one_by_one(cases, statics, outputs, model.rate)
+            res, st = _one_by_one(cases, statics, asked, model.rate)
+        res = {o: res[a] for o, a in zip(outputs, asked, strict=True)}
         st = np.asarray(st, dtype=np.int32).copy()
         flags = np.nan_to_num(res["flags"], nan=0.0).astype(np.int64)
         st[(st == 0) & ((flags & FLAG_ENERGY_GAIN) != 0)] = STATUS_ENERGY_GAIN

@@ -18,7 +18,7 @@ from typing import Any, cast
 
 import typer
 
-from impactlab._display import display_unit, field_row, flag_names
+from impactlab._display import display_unit, field_row
 from impactlab.bodies import PAPER_ROD, FlexibleRod, Rod
 from impactlab.bodies.flexible_rod import DEFAULT_N_AXIAL, DEFAULT_N_BENDING
 from impactlab.cli._common import (
@@ -39,27 +39,6 @@ from impactlab.dynamics.drop import simulate_drop
 from impactlab.dynamics.drop_result import UNITS, DropResult
 from impactlab.friction import DEFAULT_MU
 from impactlab.materials import AISI_1010, Material, get_material
-
-#: The totals printed after the contact table (SI units: ``SI_UNITS``).
-TOTALS = (
-    "n_contacts",
-    "e",
-    "e_raw",
-    "delta_p",
-    "delta_max",
-    "scar_length",
-    "sliding_length",
-    "duration",
-    "mean_force",
-    "max_force",
-    "normal_impulse",
-    "tangential_impulse",
-    "spin_out",
-    "mu_apparent",
-    "vibration_energy",
-    "energy_error",
-    "rate_factor",
-)
 
 #: What the contact table's columns and the less obvious totals mean (printed under the table).
 LEGEND = (
@@ -180,17 +159,6 @@ def _contact_table(result: DropResult) -> str:
     return "contacts\n" + "\n".join(lines)
 
 
-def drop_summary(result: DropResult) -> dict[str, Any]:
-    """The set-up and the totals of a drop (SI values; ``impactlab._display`` shows them)."""
-    data: dict[str, Any] = {"body": result.body, "law": result.law}
-    data["friction"] = result.friction
-    data["mu"] = result.mu
-    data["rate"] = result.rate or "none"
-    data.update({key: getattr(result, key) for key in TOTALS})
-    data["flags"] = flag_names(result.flags)
-    return data
-
-
 def report_drop(result: DropResult, *, as_json: bool) -> None:
     """Print a drop: JSON (SI, docs/json-schema.md), or the contact table and the totals."""
     if as_json:
@@ -199,7 +167,7 @@ def report_drop(result: DropResult, *, as_json: bool) -> None:
         return
     print(_contact_table(result))
     print(textwrap.fill(LEGEND, width=100))
-    emit(drop_summary(result), as_json=False, title="drop", units=UNITS)
+    emit(result.summary(), as_json=False, title="drop", units=result.display_units())
 
 
 def _on_command_line(ctx: typer.Context, name: str) -> bool:
@@ -318,6 +286,7 @@ def drop_cmd(
         spin=quantity(spin, "rad/s", "--spin") or 0.0,
         gravity=not no_gravity,
         rate=rate_name(rate),
+        history=False,
     )
     for text in result.warnings:
         print(f"warning: {text}", file=sys.stderr)

@@ -181,7 +181,7 @@ def run_from(
     again, with the command-line options ``given`` on top (:func:`from_changes`);
     ``drop_only`` (``impactlab drop --from``): UserError for a record of a rigid impact."""
     from impactlab.dynamics import rerun  # lazy: a fast CLI start
-    from impactlab.dynamics.provenance import SIMULATE
+    from impactlab.dynamics.provenance import SIMULATE, SIMULATE_DROP
 
     record = load_record(path)
     function, recorded = _recorded(record, path)
@@ -192,8 +192,8 @@ def run_from(
             "with 'impactlab simulate --from'"
         )
     changes = from_changes(given or {}, function, recorded)
-    if function == SIMULATE and flexible:
-        changes.setdefault("history", False)  # a FlexibleRod recorded by simulate
+    if function == SIMULATE_DROP or flexible:
+        changes.setdefault("history", False)  # a drop: the command prints no history
     try:
         return rerun(record, **changes)
     except (ValueError, TypeError) as exc:

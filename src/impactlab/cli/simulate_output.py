@@ -38,7 +38,7 @@ def report_result(result: ImpactResult | DropResult, *, out: Path | None, as_jso
     if as_json:
         emit({**data, "files": files}, as_json=True)
         return
-    emit(result.summary(), as_json=False, title="impact")
+    emit(result.summary(), as_json=False, title="impact", units=result.display_units())
     for f in files:
         console.print(Text(f"saved {f}"))
 

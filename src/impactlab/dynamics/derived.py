@@ -5,7 +5,7 @@ read, so registering one needs no recompilation. ``DerivedOutputs`` gives a one-
 (``ImpactResult``, ``DropResult``) its derived outputs as attributes and in ``derived()``; a
 batch computes them from its columns (``batch_derived``); the sweep from its chunk's arrays
 (``impactlab.sweep.engine``). An engine output that a result does not define (a drop has no
-``vn_in``) reads as NaN.
+``vn_in``, and its sequence totals are no ``duration``, ``delta_p``, ...) reads as NaN.
 """
 
 from __future__ import annotations
@@ -25,6 +25,8 @@ def result_output(result: Any, name: str) -> Any:
     """The engine output ``name`` of a one-impact result (a float; NaN where it has none)."""
     if name in ("vx_out", "vy_out"):
         return float(result.velocity_out[0 if name == "vx_out" else 1])
+    if name in getattr(type(result), "RENAMED", {}):
+        return math.nan  # a drop's sequence total of another meaning (schema.SEQUENCE_FIELDS)
     if name == "regime":
         return float(_REGIME_CODES.get(getattr(result, "regime", ""), math.nan))
     return float(getattr(result, name, math.nan))  # (an engine output is never a derived name)

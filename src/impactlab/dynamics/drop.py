@@ -18,6 +18,7 @@ from typing import Any, cast
 
 import numpy as np
 
+from impactlab import schema
 from impactlab._validation import check_finite
 from impactlab.bodies import Rod
 from impactlab.bodies.flexible_rod import FlexibleRod
@@ -285,8 +286,15 @@ def _result(
         fitted_range_status=range_status(model.law_id, model.params),
         references=references,
         **inputs,
-        **{k: v for k, v in o.items() if k not in skip},
+        **{_RENAMED_OUTPUTS.get(k, k): v for k, v in o.items() if k not in skip},
     )
+
+
+#: The drop's engine outputs (``flexcore.layout.DROP_FIELDS``) that ``DropResult`` names
+#: otherwise: the sequence totals (``impactlab.schema.SEQUENCE_FIELDS``).
+_RENAMED_OUTPUTS: dict[str, str] = {
+    k: v for k, v in schema.RENAMED_DROP_FIELDS.items() if k in F.DROP_OUTPUT_FIELDS
+}
 
 
 def simulate_drop(
@@ -302,7 +310,7 @@ def simulate_drop(
     gravity: Any = True,
     rate: str | None = None,
     rtol: float | None = None,
-    history: bool = False,
+    history: bool = True,
     law_params: Mapping[str, float] | None = None,
     stop: str = "sequence",
     t_max: Any = DEFAULT_T_MAX,
@@ -322,7 +330,10 @@ def simulate_drop(
     ``checks.velocity_from``); spin [rad/s]; gravity: True, False or a value [m/s^2]; rate:
     None, ``"cowper-symonds"`` or ``"johnson-cook"`` (the flat's yield strength raised by the
     self-consistent rate factor, ``impactlab.contact.rate``); rtol: relative tolerance (default
-    1e-7); history: keep the time history; law_params: the law's parameters; stop:
+    1e-7); history: keep the time history (``DropResult.history``; default True, as
+    ``impactlab.simulate``: a result can draw its figures; pass False for many drops in a
+    loop: the paper's drops keep about 4,800 rows, 0.6 MB, and take about 1.5 times as long
+    with them, 12 ms against 7.5 ms); law_params: the law's parameters; stop:
     ``"sequence"`` (stop when the tip is clear until the other end could land: that is a new
     impact, ``next_end`` / ``next_time``) or ``"flight"`` (go on through the other end's
     impacts until the rod flies off); t_max [s]: the longest simulated time.

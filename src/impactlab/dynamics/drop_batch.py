@@ -18,6 +18,7 @@ from typing import Any
 import numba
 import numpy as np
 
+from impactlab import schema
 from impactlab.bodies import Rod
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.bodies.layout import BP_GSTAR
@@ -47,8 +48,15 @@ from impactlab.references import dois as doi_list
 
 __all__ = ["DropBatchResult", "simulate_drops"]
 
-#: The outputs of each case, in the columns of ``DropBatchResult.out``.
+#: The outputs of each case, in the columns of ``DropBatchResult.out`` (the engine's names).
 DROP_BATCH_FIELDS = F.DROP_OUTPUT_FIELDS
+#: The public name of each column, as ``DropResult`` has them (the sequence totals renamed,
+#: ``schema.RENAMED_DROP_FIELDS``), and the ratio ``sequence_mean_force``.
+PUBLIC_FIELDS = (
+    *(schema.RENAMED_DROP_FIELDS.get(n, n) for n in DROP_BATCH_FIELDS),
+    "sequence_mean_force",
+)
+_ENGINE_NAME = {new: old for old, new in schema.RENAMED_DROP_FIELDS.items()}
 
 
 @dataclass(frozen=True)
@@ -59,8 +67,10 @@ class DropBatchResult:
     (delta_max / delta_ref) per case; NaN (flags 0) where a case failed.
 
     Fields by name: ``drops["e"]`` or ``drops.e``, the inputs (``angle``, ``vx``, ``vy``,
-    ``spin``, ``mu``), ``velocity_out`` (vx_out, vy_out) and ``mean_force`` = P_n / duration,
-    as ``DropResult`` has them."""
+    ``spin``, ``mu``), ``velocity_out`` (vx_out, vy_out), the sequence totals
+    (``sequence_duration``, ``dent_depth``, ``sequence_sliding_length``,
+    ``sequence_mean_force`` = P_n / sequence_duration) as ``DropResult`` has them; the names
+    before 0.3 warn (``schema.RENAMED_DROP_FIELDS``)."""
 
     out: np.ndarray = field(repr=False)
     status: np.ndarray = field(repr=False)
@@ -87,14 +97,22 @@ class DropBatchResult:
         return int(self.status.shape[0])
 
     def __getitem__(self, name: str) -> np.ndarray:
+        old = _ENGINE_NAME.get(name)
+        if old is not None:  # a sequence total: the engine's column under its own name
+            return self.sequence_mean_force if old == "mean_force" else self._column(old)
+        new = schema.RENAMED_DROP_FIELDS.get(name)
+        if new is not None:
+            schema.warn_renamed(name, new, "DropBatchResult field")
+            return self[new]
         if name in DROP_BATCH_FIELDS:
-            return self.out[:, DROP_BATCH_FIELDS.index(name)]
+            return self._column(name)
         if name in self.inputs:
             return self.inputs[name]
-        if name == "mean_force":
-            return self.mean_force
-        known = ", ".join((*DROP_BATCH_FIELDS, *self.inputs, "mean_force"))
+        known = ", ".join((*PUBLIC_FIELDS, *self.inputs))
         raise KeyError(f"unknown field {name!r}; known: {known}")
+
+    def _column(self, name: str) -> np.ndarray:
+        return self.out[:, DROP_BATCH_FIELDS.index(name)]
 
     def __getattr__(self, name: str) -> np.ndarray:
         if name.startswith("_") or name in ("out", "status", "inputs"):
@@ -110,9 +128,9 @@ class DropBatchResult:
         return self["vx_out"], self["vy_out"]
 
     @property
-    def mean_force(self) -> np.ndarray:
-        """P_n / duration [N], as ``DropResult.mean_force``."""
-        return self["normal_impulse"] / self["duration"]
+    def sequence_mean_force(self) -> np.ndarray:
+        """P_n / sequence_duration [N], as ``DropResult.sequence_mean_force``."""
+        return self._column("normal_impulse") / self._column("duration")
 
     @property
     def ok(self) -> np.ndarray:

@@ -2,50 +2,59 @@
 
 ``DropResult``: every contact (``ContactRecord``), the dents (``DentRecord``), the totals a user
 compares with an experiment, the energy balance and, if asked, the history (``DropHistory``).
-Units: ``UNITS`` (from ``impactlab.dynamics.flexcore.layout.DROP_FIELDS``).
+Units and meanings: ``UNITS``, from ``impactlab.schema`` (the one table of impacts and drops).
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field, fields
-from typing import Any, TypeVar
+from typing import Any, ClassVar, TypeVar
 
 import numpy as np
 
-from impactlab._display import html_table
+from impactlab import schema
+from impactlab._display import flag_names
 from impactlab._json import jsonable
 from impactlab._version import __version__
 from impactlab.contact.ranges import law_range
 from impactlab.dynamics.derived import DerivedOutputs
-from impactlab.dynamics.drop_history import DropHistory
+from impactlab.dynamics.drop_history import DROP_HISTORY_COLUMNS, DropHistory
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.provenance import result_record
+from impactlab.dynamics.result_display import ResultDisplay
 from impactlab.dynamics.results import pint_quantities
 from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
 from impactlab.references import Reference
 from impactlab.references import dois as doi_list
 
-__all__ = ["UNITS", "ContactRecord", "DentRecord", "DropHistory", "DropResult"]
+__all__ = ["SUMMARY_FIELDS", "UNITS", "ContactRecord", "DentRecord", "DropHistory", "DropResult"]
 
 _R = TypeVar("_R")
 
-#: Units of the DropResult fields (SI; "1" dimensionless).
-UNITS: dict[str, str] = {f.name: f.unit for f in F.DROP_FIELDS} | {
-    "velocity_out": "m/s",
-    "initial_energy": "J",
-    "angle": "rad",
-    "velocity_in": "m/s",
-    "spin_in": "rad/s",
-    "gravity": "m/s^2",
-    "mu": "1",
-    "rate_factor": "1",
-    "strain_rate": "1/s",
-    "mean_force": "N",
-    "flags": "1",
-    "max_delta_ratio": "1",
-    "fitted_delta_ratio_max": "1",
-}
+#: Units of the DropResult fields (SI; "1" dimensionless), from ``impactlab.schema``.
+UNITS: dict[str, str] = {
+    name: schema.unit(name)
+    for name in (
+        "e", "e_raw", "velocity_out", "spin_out", "angle_out", "sequence_duration", "dent_depth",
+        "delta_max", "scar_length", "sequence_sliding_length", "slip_path", "max_force",
+        "normal_impulse", "tangential_impulse", "stick_time", "mu_apparent", "initial_energy",
+        "rigid_kinetic_energy", "vibration_energy", "potential_energy", "work_normal",
+        "work_friction", "work_damping", "energy_error", "next_end", "next_time", "n_steps",
+        "n_contacts", "n_modes", "mu", "gravity", "angle", "velocity_in", "spin_in",
+        "rate_factor", "strain_rate", "sequence_mean_force", "flags", "max_delta_ratio",
+        "fitted_delta_ratio_max",
+    )
+}  # fmt: skip
+
+#: The totals of a drop's summary, in order: ``print(result)``, ``_repr_html_`` and
+#: ``impactlab drop`` show these (display units: ``impactlab._display``).
+SUMMARY_FIELDS: tuple[str, ...] = (
+    "n_contacts", "e", "e_raw", "dent_depth", "delta_max", "scar_length",
+    "sequence_sliding_length", "sequence_duration", "sequence_mean_force", "max_force",
+    "normal_impulse", "tangential_impulse", "spin_out", "mu_apparent", "vibration_energy",
+    "energy_error", "rate_factor",
+)  # fmt: skip
 
 
 @dataclass(frozen=True)
@@ -134,47 +143,47 @@ def _contact_text(c: ContactRecord) -> str:
     )
 
 
-#: The totals of the summary: field -> (label, unit, scale to the unit).
-_SUMMARY: dict[str, tuple[str, str, float]] = {
-    "n_contacts": ("contacts", "", 1.0),
-    "e": ("e (rigid body, gravity removed)", "", 1.0),
-    "delta_p": ("delta_p (deepest dent)", "um", 1e6),
-    "scar_length": ("scar length", "um", 1e6),
-    "sliding_length": ("sliding length (tip)", "um", 1e6),
-    "duration": ("duration (first touch to last separation)", "ms", 1e3),
-    "max_force": ("largest normal force", "N", 1.0),
-    "mean_force": ("mean force (P_n / duration)", "N", 1.0),
-    "spin_out": ("spin after the last contact", "rad/s", 1.0),
-    "vibration_energy": ("energy left in vibration", "J", 1.0),
-    "energy_error": ("energy balance error (relative)", "", 1.0),
-}
+class _RenamedKeys(dict[str, Any]):
+    """A ``to_dict`` whose keys before 0.3 (``schema.RENAMED_DROP_FIELDS``) still read their
+    value, with a DeprecationWarning; they are not among its keys (nor in its JSON)."""
+
+    def __missing__(self, key: str) -> Any:
+        new = schema.RENAMED_DROP_FIELDS.get(key)
+        if new is None:
+            raise KeyError(key)
+        schema.warn_renamed(key, new, "DropResult.to_dict key")
+        return self[new]
 
 
-@dataclass(frozen=True, eq=False)
-class DropResult(DerivedOutputs):
+@dataclass(frozen=True, eq=False, repr=False)
+class DropResult(DerivedOutputs, ResultDisplay):
     """The outcome of one drop (SI units; units of the fields in ``UNITS``). Immutable.
 
     It carries the summary attributes of ``ImpactResult`` (``impactlab.simulate`` returns it
-    for a FlexibleRod), each read for the whole sequence of contacts:
+    for a FlexibleRod) read for the whole sequence of contacts, those that mean something
+    else for a sequence under names of their own (``schema.SEQUENCE_FIELDS``):
 
     - ``e``: minus the tip's rigid-body normal velocity after the last contact over the one
       before the first, with the gravity impulse of the sequence removed (as a ballistic fit
       of marker data would remove it; ``e_raw`` keeps it); one bounce of the tip only when
       the sequence holds the tip's contacts alone and e >= 0 (else OTHER_END, below);
-    - ``delta_p``: the final dent depth (the deepest dent's permanent depth);
-    - ``sliding_length``: the tip's total slip, the sum over its contacts of int v_t dt
-      (signed, as ImpactResult's); ``scar_length``: the x-extent of the mark the tip left
-      over all its contacts; ``slip_path``: the sum of int |v_t| dt;
-    - ``duration``: first touch to last separation (flights between contacts included);
-    - ``mean_force``: total normal impulse / duration (the paper's F_mean = P_n / T read over
-      the sequence);
+    - ``dent_depth``: the final dent depth (the deepest dent's permanent depth; an impact's
+      ``delta_p`` is that of one unloading);
+    - ``sequence_sliding_length``: the tip's total slip, the sum over its contacts of
+      int v_t dt (signed, as ImpactResult's ``sliding_length`` of one contact);
+      ``scar_length``: the x-extent of the mark the tip left over all its contacts;
+      ``slip_path``: the sum of int |v_t| dt;
+    - ``sequence_duration``: first touch to last separation (flights between contacts
+      included; an impact's ``duration`` is one contact's);
+    - ``sequence_mean_force``: total normal impulse / sequence_duration (the paper's
+      F_mean = P_n / T read over the sequence);
     - ``delta_max``, ``max_force``: the largest interference and normal force of any contact;
     - ``flags`` / ``warnings`` / ``ok``: as ImpactResult's (``impactlab.flags``): ENERGY_GAIN
       when the energy after the last contact (rigid kinetic + vibration + potential) exceeds
       the initial one beyond the tolerance of the rigid engine's criterion
       (``impactlab.flags.ENERGY_GAIN_RTOL_FACTOR`` rtol + ``ENERGY_ROUNDOFF``, relative to
       E0 + the final kinetic, vibration and |potential| energy), GRAVITY_DOMINATED when
-      m g duration exceeds ``GRAVITY_IMPULSE_RATIO`` of the total normal impulse,
+      m g sequence_duration exceeds ``GRAVITY_IMPULSE_RATIO`` of the total normal impulse,
       OTHER_END when the other end touched the flat within the sequence (``stop="flight"``)
       or e < 0 (the tip still approaches the flat after its last contact), unless gravity
       dominates; GRAVITY_DOMINATED is judged on the tip's sequence (its contacts before the
@@ -186,7 +195,8 @@ class DropResult(DerivedOutputs):
     - ``references`` / ``dois()``: the sources used.
 
     ``stop="flight"`` integrates through the other end's impacts until the rod flies off
-    (``next_end`` -1): "the last contact" is then the last of either end, ``duration`` spans
+    (``next_end`` -1): "the last contact" is then the last of either end,
+    ``sequence_duration`` spans
     every flight between the ends' impacts, and ``e`` (gravity removed over all of it) is a
     number of the whole flight, no coefficient of restitution (it can exceed 1); OTHER_END
     says so, and GRAVITY_DOMINATED, read on the tip's sequence, is not set by the flight.
@@ -196,7 +206,18 @@ class DropResult(DerivedOutputs):
     work_friction + work_damping, to ``energy_error`` of the initial energy (the largest over
     every step, through every contact and flight); a balance, that or the residual of these
     terms, worse than rtol promises is refused (``drop_checks.check_energy_balance``).
+
+    The names before 0.3 of the renamed totals (``duration``, ``delta_p``, ``sliding_length``,
+    ``mean_force``: ``schema.RENAMED_DROP_FIELDS``) read the new ones with a DeprecationWarning,
+    as attributes and as ``to_dict()`` keys. ``print(result)``, ``_repr_html_`` and
+    ``impactlab drop`` show ``summary()`` (``dynamics.result_display``, as an impact's).
     """
+
+    #: Old name -> new name of the renamed totals (``schema.RENAMED_DROP_FIELDS``).
+    RENAMED: ClassVar[dict[str, str]] = schema.RENAMED_DROP_FIELDS
+    REPR_FIELDS: ClassVar[tuple[str, ...]] = (
+        "body", "law", "friction", "n_contacts", "e", "dent_depth", "sequence_duration",
+    )  # fmt: skip
 
     contacts: tuple[ContactRecord, ...]
     dents: tuple[DentRecord, ...]
@@ -206,11 +227,11 @@ class DropResult(DerivedOutputs):
     velocity_out: tuple[float, float]
     spin_out: float
     angle_out: float
-    duration: float
-    delta_p: float
+    sequence_duration: float
+    dent_depth: float
     delta_max: float
     scar_length: float
-    sliding_length: float
+    sequence_sliding_length: float
     slip_path: float
     max_force: float
     normal_impulse: float
@@ -253,9 +274,17 @@ class DropResult(DerivedOutputs):
         object.__setattr__(self, "flags", ResultFlag(int(self.flags)))
 
     @property
-    def mean_force(self) -> float:
-        """Total normal impulse over the duration, first touch to last separation [N]."""
-        return self.normal_impulse / self.duration
+    def sequence_mean_force(self) -> float:
+        """Total normal impulse over the sequence_duration (first touch to last separation)
+        [N]."""
+        return self.normal_impulse / self.sequence_duration
+
+    def __getattr__(self, name: str) -> Any:
+        new = self.RENAMED.get(name)
+        if new is not None:
+            schema.warn_renamed(name, new, "DropResult field")
+            return getattr(self, new)
+        return super().__getattr__(name)
 
     @property
     def extrapolated(self) -> bool:
@@ -304,8 +333,8 @@ class DropResult(DerivedOutputs):
         return doi_list(self.references)
 
     def to_pint(self, registry: Any = None) -> dict[str, Any]:
-        """The totals (``UNITS``, ``mean_force``) as pint Quantities in SI (``registry``: yours)."""
-        return pint_quantities(self, {**UNITS, "mean_force": "N"}, registry)
+        """The totals (``UNITS``) as pint Quantities in SI (``registry``: yours)."""
+        return pint_quantities(self, UNITS, registry)
 
     @property
     def input(self) -> dict[str, Any] | None:
@@ -315,7 +344,8 @@ class DropResult(DerivedOutputs):
 
     def to_dict(self, *, include_history: bool = False) -> dict[str, Any]:
         """JSON-ready values: scalars, ``contacts`` and ``dents`` as lists of dicts, the energy
-        balance, the references' citations; the history as lists of columns if asked."""
+        balance, the references' citations; the history as lists of columns if asked. A key
+        before 0.3 (``"duration"``, ...) reads its new one with a DeprecationWarning."""
         d: dict[str, Any] = {}
         for f in fields(self):
             if f.name in ("history", "references", "contacts", "dents", "_call"):
@@ -325,41 +355,33 @@ class DropResult(DerivedOutputs):
         d["dents"] = [x.__dict__ for x in self.dents]
         d["flags"] = int(self.flags)
         d["warnings"] = list(self.warnings)
-        d["mean_force"] = self.mean_force
+        d["sequence_mean_force"] = self.sequence_mean_force
         d["energy_balance"] = self.energy_balance
         d |= self.derived()  # schema.register_output
         d["references"] = [str(r) for r in self.references]
         d["impactlab_version"] = __version__
         d["input"] = self.input
         if include_history and self.history is not None:
-            d["history"] = {k: self.history[k].tolist() for k in F.DROP_HISTORY_FIELDS}
-        return jsonable(d)
+            d["history"] = {k: self.history[k].tolist() for k in DROP_HISTORY_COLUMNS}
+        return _RenamedKeys(jsonable(d))
 
-    def _rows(self) -> list[tuple[str, str, str]]:
-        """(label, value, unit) rows of the summary: set-up, totals, one row per contact."""
-        setup = [("body", self.body), ("law", self.law)]
-        setup.append(("friction", f"{self.friction} (mu = {self.mu:g})"))
-        if self.rate is not None:
-            setup.append(("rate", f"{self.rate} (k = {self.rate_factor:.4g})"))
-        totals = [(lab, f"{getattr(self, k) * f:.5g}", u) for k, (lab, u, f) in _SUMMARY.items()]
-        per_contact = [
+    def summary(self) -> dict[str, Any]:
+        """The set-up (body, law, friction, mu, rate), the totals (``SUMMARY_FIELDS``, SI) and
+        the names of the flags."""
+        data: dict[str, Any] = {"body": self.body, "law": self.law, "friction": self.friction}
+        data["mu"] = self.mu
+        data["rate"] = self.rate or "none"
+        data |= {k: getattr(self, k) for k in SUMMARY_FIELDS}
+        data["flags"] = flag_names(self.flags)
+        return data
+
+    def display_units(self) -> dict[str, str]:
+        """SI unit of each numeric field of ``summary()`` (``UNITS``)."""
+        return UNITS
+
+    def detail_rows(self) -> list[tuple[str, str, str]]:
+        """One row per contact (``print`` and ``_repr_html_``)."""
+        return [
             (f"contact {i + 1} (end {c.end})", _contact_text(c), "")
             for i, c in enumerate(self.contacts)
         ]
-        warn = [("warning", text, "") for text in self.warnings]
-        return [(a, b, "") for a, b in setup] + totals + per_contact + warn
-
-    def __repr__(self) -> str:
-        """One line: the body, the law and the headline totals (``print``: the table)."""
-        flags = f", flags={self.flags!r}" if self.flags else ""
-        return (f"DropResult(body={self.body!r}, law={self.law!r}, friction={self.friction!r}, "
-                f"n_contacts={self.n_contacts}, e={self.e:.6g}, delta_p={self.delta_p:.6g} m, "
-                f"duration={self.duration:.6g} s{flags})")  # fmt: skip
-
-    def __str__(self) -> str:
-        rows, width = self._rows(), max(len(label) for label, _v, _u in self._rows())
-        body = (f"  {label.ljust(width)}  {value} {unit}".rstrip() for label, value, unit in rows)
-        return "DropResult\n" + "\n".join(body)
-
-    def _repr_html_(self) -> str:
-        return html_table("DropResult", self._rows())

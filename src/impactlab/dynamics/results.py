@@ -12,7 +12,7 @@ from typing import Any
 import numpy as np
 
 from impactlab import schema
-from impactlab._display import field_rows, flag_names, html_table, text_table
+from impactlab._display import flag_names
 from impactlab._version import __version__
 from impactlab.contact.ranges import extrapolation, extrapolation_flags, range_status
 from impactlab.dynamics.dent import dent_map
@@ -22,6 +22,7 @@ from impactlab.dynamics.history import HISTORY_UNITS, DentMap, History, readonly
 from impactlab.dynamics.kernels.layout import HISTORY_FIELDS, OUTPUT_FIELDS
 from impactlab.dynamics.kernels.status import STATUS_MESSAGES
 from impactlab.dynamics.provenance import result_record
+from impactlab.dynamics.result_display import ResultDisplay
 from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
 from impactlab.references import Reference
 from impactlab.references import dois as doi_list
@@ -83,12 +84,13 @@ SUMMARY_FIELDS: tuple[str, ...] = (
 )  # fmt: skip
 
 
-@dataclass(frozen=True, eq=False)
-class ImpactResult(DerivedOutputs):
+@dataclass(frozen=True, eq=False, repr=False)
+class ImpactResult(DerivedOutputs, ResultDisplay):
     """The outcome of one impact (SI units). Computed once; immutable.
 
     Units and meanings of the fields: ``impactlab.schema`` (``UNITS``). ``references`` are the
-    sources the computation used; ``dois()`` their DOIs.
+    sources the computation used; ``dois()`` their DOIs. ``print(result)``, ``_repr_html_``
+    and ``impactlab simulate`` show ``summary()`` (``dynamics.result_display``, as a drop's).
 
     Sign conventions: x points from the tip towards the centre-of-mass side, y up, spin
     counter-clockwise positive. ``sliding_length`` is the integral of the slip velocity of the
@@ -211,16 +213,11 @@ class ImpactResult(DerivedOutputs):
         data["flags"] = flag_names(self.flags)
         return data
 
-    def _rows(self) -> list[tuple[str, str, str]]:
-        rows = field_rows(self.summary(), UNITS)
-        rows.extend(("warning", text, "") for text in self.warnings)
-        return rows
+    REPR_FIELDS = ("law", "friction", "e", "delta_p", "sliding_length", "duration")
 
-    def __str__(self) -> str:
-        return text_table("ImpactResult", self._rows())
-
-    def _repr_html_(self) -> str:
-        return html_table("ImpactResult", self._rows())
+    def display_units(self) -> dict[str, str]:
+        """SI unit of each numeric field of ``summary()`` (``UNITS``)."""
+        return UNITS
 
     def dent(self, *, nx: int = 241, ny: int = 121, margin: float = 0.15) -> DentMap:
         """The predicted permanent dent as a height map (model: docs/engine/index.md, "Dent").

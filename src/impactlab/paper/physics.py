@@ -195,13 +195,15 @@ def _simulated_row(cfg: PhysicsConfig, angle_deg: int, res: Any) -> dict[str, An
     """A result in the table's units: L_s is the tip's sliding length (rigid) or the scar
     length (flexible); T the contact duration (rigid) or first touch to last separation."""
     flexible = cfg.flexible
+    dent = res.dent_depth if flexible else res.delta_p
+    duration = res.sequence_duration if flexible else res.duration
     return {
         "configuration": cfg.name,
         "angle [deg]": angle_deg,
         "e": res.e if flexible else rigid_e_gravity_removed(res),
-        "delta_p [um]": abs(res.delta_p) * 1e6,
+        "delta_p [um]": abs(dent) * 1e6,
         "L_s [um]": abs(res.scar_length if flexible else res.sliding_length) * 1e6,
-        "T [ms]": res.duration * 1e3,
+        "T [ms]": duration * 1e3,
         "contacts": res.n_contacts if flexible else 1,
         "F_max [N]": res.max_force,
         "rate factor": res.rate_factor if flexible else 1.0,

@@ -30,7 +30,7 @@ from impactlab.dynamics.batch import (
     run_arrays,
 )
 from impactlab.friction import batch_friction_error
-from impactlab.schema import DERIVED_FIELDS
+from impactlab.schema import DERIVED_FIELDS, SEQUENCE_FIELDS
 from impactlab.sweep.flexible import FLEXIBLE_BODY, evaluate_flexible, validate_flexible
 from impactlab.sweep.inputs import INTEGER_OUTPUTS, KINEMATIC_INPUTS
 from impactlab.sweep.material_inputs import validate_material_names
@@ -120,6 +120,11 @@ def numba_cache_stats() -> dict[str, int]:
 # -- the engine --------------------------------------------------------------------------------
 
 
+#: Store columns of a flexible drop's sequence totals (``impactlab.schema.SEQUENCE_FIELDS``):
+#: NaN for the rigid bodies' cases.
+SEQUENCE_OUTPUTS: tuple[str, ...] = tuple(f.name for f in SEQUENCE_FIELDS)
+
+
 class EngineEvaluator:
     """The compiled engine (``impactlab.dynamics.batch.run_arrays``) behind the Evaluator
     interface."""
@@ -127,8 +132,10 @@ class EngineEvaluator:
     identity = "impactlab.dynamics.batch"
 
     def output_fields(self) -> tuple[str, ...]:
-        """The engine's outputs, then the derived outputs (``schema.register_output``)."""
-        return (*OUTPUT_FIELDS, *DERIVED_FIELDS)
+        """The engine's outputs, a flexible drop's sequence totals (``SEQUENCE_OUTPUTS``: a
+        study without a flexible rod leaves them out), then the derived outputs
+        (``schema.register_output``)."""
+        return (*OUTPUT_FIELDS, *SEQUENCE_OUTPUTS, *DERIVED_FIELDS)
 
     def status_messages(self) -> dict[int, str]:
         return {int(k): str(v) for k, v in STATUS_MESSAGES.items()}
@@ -150,7 +157,10 @@ class EngineEvaluator:
     ) -> tuple[dict[str, np.ndarray], np.ndarray]:
         if statics.categories.get("body") == FLEXIBLE_BODY:  # one drop per case
             return evaluate_flexible(cases, statics, outputs)
-        return evaluate(cases, statics, outputs)
+        rigid = [o for o in outputs if o not in SEQUENCE_OUTPUTS]
+        res, status = evaluate(cases, statics, rigid)
+        n = len(status)
+        return {o: res[o] if o in res else np.full(n, np.nan) for o in outputs}, status
 
 
 def computed_outputs(kept: Sequence[str]) -> tuple[str, ...]:
@@ -254,6 +264,7 @@ def _law_id(name: str) -> int:
 #: Silence unused-import linters for names re-exported for the docs.
 __all__ = [
     "KINEMATIC_INPUTS",
+    "SEQUENCE_OUTPUTS",
     "STATUS_BAD_BODY",
     "STATUS_BAD_INPUT",
     "STATUS_BAD_LAW",

@@ -11,13 +11,16 @@ material's density as FlexibleRod derives it, and the modal inputs ``n_axial``, 
 inertia follows from the beam theory: a study that sets ``inertia`` (or a sphere's ``radius``)
 for a flexible rod gets the status BAD_BODY for those cases.
 
-Outputs: the store keeps the engine's output fields; a flexible case fills those that the
-drop defines (``DROP_OUTPUTS``, each read for the whole sequence as ``DropResult`` documents:
-e, delta_p = final dent depth, sliding_length = the tip's total slip, duration = first touch to
-last separation, mean_force = P_n / duration, ...) and leaves the others NaN (-1 for integer
-outputs). Status: the sweep's rejection codes (``impactlab.sweep.status``) before the drop (a
-body whose modes cannot be built: BAD_BODY; an input the drop refuses, e.g. an approach speed
-below ``MIN_APPROACH_SPEED``: BAD_INPUT), and a failed drop with its own code from the one
+Outputs: the store keeps the engine's output fields and, for a study with a flexible rod, the
+drop's sequence totals (``impactlab.schema.SEQUENCE_FIELDS``); a flexible case fills those that
+the drop defines (``DROP_OUTPUTS``, each read for the whole sequence as ``DropResult``
+documents: e, dent_depth = final dent depth, sequence_sliding_length = the tip's total slip,
+sequence_duration = first touch to last separation, sequence_mean_force = P_n /
+sequence_duration, ...) and leaves the others NaN (-1 for integer outputs): a flexible case
+has no ``duration``, ``delta_p``, ``sliding_length`` or ``mean_force`` of one contact.
+Status: the sweep's rejection codes (``impactlab.sweep.status``) before the drop (a body whose
+modes cannot be built: BAD_BODY; an input the drop refuses, e.g. an approach speed below
+``MIN_APPROACH_SPEED``: BAD_INPUT), and a failed drop with its own code from the one
 status table of every engine (``kernels.status``: e.g. ST_MISSED_CONTACT, ST_INACCURATE, ST_TMAX).
 Every case gets a status: one bad case
 never stops a chunk, so the valid cases are stored.
@@ -40,6 +43,7 @@ from impactlab.dynamics.drop_batch import DropBatchResult, input_status, simulat
 from impactlab.dynamics.kernels import status as S
 from impactlab.dynamics.models import build_contact_model
 from impactlab.materials import Material
+from impactlab.schema import RENAMED_DROP_FIELDS
 from impactlab.sweep.models import Statics, material_for
 from impactlab.sweep.status import (
     STATUS_BAD_BODY,
@@ -52,6 +56,7 @@ __all__ = [
     "DROP_OUTPUTS",
     "FLEXIBLE_BODY",
     "FLEXIBLE_INPUTS",
+    "MEASURED_AS",
     "check_flexible_study",
     "evaluate_flexible",
     "validate_flexible",
@@ -62,18 +67,19 @@ FLEXIBLE_BODY = "flexible_rod"
 #: Inputs that only a flexible rod takes.
 FLEXIBLE_INPUTS = ("n_axial", "n_bending", "damping")
 
-#: Engine outputs a drop defines, read from its DropResult (a number) or from the
-#: DropBatchResult of many drops (an array).
+#: Store columns a drop fills, read from its DropResult (a number) or from the DropBatchResult
+#: of many drops (an array): engine outputs of the same meaning and the sequence totals
+#: (``impactlab.schema.SEQUENCE_FIELDS``).
 DROP_OUTPUTS: dict[str, Callable[[Any], Any]] = {
     "e": lambda r: r.e,
     "vx_out": lambda r: r.velocity_out[0],
     "vy_out": lambda r: r.velocity_out[1],
     "spin_out": lambda r: r.spin_out,
     "delta_max": lambda r: r.delta_max,
-    "delta_p": lambda r: r.delta_p,
-    "sliding_length": lambda r: r.sliding_length,
-    "duration": lambda r: r.duration,
-    "mean_force": lambda r: r.mean_force,
+    "dent_depth": lambda r: r.dent_depth,
+    "sequence_sliding_length": lambda r: r.sequence_sliding_length,
+    "sequence_duration": lambda r: r.sequence_duration,
+    "sequence_mean_force": lambda r: r.sequence_mean_force,
     "max_force": lambda r: r.max_force,
     "normal_impulse": lambda r: r.normal_impulse,
     "tangential_impulse": lambda r: r.tangential_impulse,
@@ -82,6 +88,11 @@ DROP_OUTPUTS: dict[str, Callable[[Any], Any]] = {
     "n_steps": lambda r: r.n_steps,
     "flags": lambda r: r.flags,
 }
+
+#: What an experiment that drops a rod measures as the impact output (key) is the drop's
+#: sequence total (value): the dent left, the total slip, first touch to last separation
+#: (``impactlab.calibrate`` compares them).
+MEASURED_AS: dict[str, str] = dict(RENAMED_DROP_FIELDS)
 
 
 def _given(row: Mapping[str, float], name: str) -> float | None:

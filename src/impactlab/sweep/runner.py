@@ -54,7 +54,14 @@ from impactlab.sweep.backends import (
 )
 from impactlab.sweep.chunks import ChunkResult
 from impactlab.sweep.display import sweep_result_html
-from impactlab.sweep.engine import ENGINE, Evaluator, computed_outputs, with_derived
+from impactlab.sweep.engine import (
+    ENGINE,
+    SEQUENCE_OUTPUTS,
+    Evaluator,
+    computed_outputs,
+    with_derived,
+)
+from impactlab.sweep.flexible import FLEXIBLE_BODY
 from impactlab.sweep.inputs import ALWAYS_STORED, CATEGORY_INPUTS, OUTPUT_ALIASES
 from impactlab.sweep.integrity import describe
 from impactlab.sweep.limits import usable_cores
@@ -125,6 +132,8 @@ class SweepInterrupted(KeyboardInterrupt):
 def resolve_outputs(study: Study, evaluator: Evaluator) -> tuple[str, ...]:
     """The outputs to keep, checked against what the evaluator provides."""
     fields = tuple(evaluator.output_fields())
+    if FLEXIBLE_BODY not in category_values(study)["body"]:  # no drop: no sequence totals
+        fields = tuple(f for f in fields if f not in SEQUENCE_OUTPUTS)
     if study.outputs is None:
         return fields
     outs = tuple(OUTPUT_ALIASES.get(o, o) for o in study.outputs)
