@@ -200,7 +200,7 @@ def plot_partial_slip(out_dir: str | Path, *, fast: bool = False) -> list[Path]:
 
 
 TEXT = """
-**Model** (`friction="partial_slip"`, `impactlab.simulate` only; Mindlin 1949,
+**Model** (`friction="partial_slip"`: `simulate`, `simulate_batch`, sweeps; Mindlin 1949,
 doi:10.1115/1.4009973; Mindlin & Deresiewicz 1953, doi:10.1115/1.4010702). The tangential
 contact is the exact Mindlin-Deresiewicz partial-slip problem with arbitrary normal and
 tangential load history, in its one-dimensional form by the method of dimensionality
