@@ -5,9 +5,11 @@ stores its results, flags and statuses like the other models: the values of
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 import impactlab as il
 from impactlab.sweep import Study, run_sweep
+from impactlab.sweep.engine import EngineEvaluator
 
 ANGLES = np.radians([10.0, 30.0, 60.0, 85.0])
 
@@ -34,3 +36,10 @@ def test_partial_slip_sweep_stores_batch_results(tmp_path) -> None:
     mind = ds.sel(friction="mindlin")
     assert not np.array_equal(mind["spin_out"].values, got["spin_out"].values)
     np.testing.assert_allclose(mind["e"].values, got["e"].values, rtol=0.05)
+
+
+def test_flexible_rod_sweep_refuses_partial_slip() -> None:
+    both = {"friction": ["partial_slip"], "body": ["rod", "flexible_rod"]}
+    with pytest.raises(ValueError, match=r"partial_slip.*flexible_rod.*simulate_drop"):
+        EngineEvaluator().validate(both)
+    EngineEvaluator().validate({"friction": ["partial_slip"], "body": ["rod", "sphere"]})
