@@ -4,8 +4,8 @@ A candidate model is a contact law x a friction model x a body model (each drop'
 body, or the flexible rod). ``predict`` evaluates W parameter vectors on D drops as one batch of
 W x D cases through the sweep's engine adapter (``impactlab.sweep.engine.ENGINE``: the compiled
 batch engine on every core for rigid bodies, one flexible drop per case for the flexible rod);
-the models the batch engine does not run (partial slip; the flexible rod on a rate-dependent
-flat) go through ``simulate`` one case at a time (measured in benchmarks/bench_calibrate.py).
+partial slip and the flexible rod on a rate-dependent flat go through ``simulate`` one case
+at a time (measured in benchmarks/bench_calibrate.py).
 """
 
 from __future__ import annotations
@@ -252,8 +252,8 @@ def _body(cat: Mapping[str, str], row: Mapping[str, float]) -> Rod | Sphere | Fl
 def _one_by_one(
     cases: Mapping[str, np.ndarray], statics: Statics, outputs: Sequence[str], rate: str | None
 ) -> tuple[dict[str, np.ndarray], np.ndarray]:
-    """One ``simulate`` call per case, for what the batch engine does not run (partial slip;
-    the flexible rod on a rate-dependent flat). A refused case or a failed drop gets
+    """One ``simulate`` call per case, for partial slip and the flexible rod on a
+    rate-dependent flat. A refused case or a failed drop gets
     STATUS_REFUSED, never an exception."""
     n = len(cases["angle"])
     res = {o: np.full(n, np.nan) for o in outputs}
