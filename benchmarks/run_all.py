@@ -26,6 +26,7 @@ def main(argv: list[str]) -> int:
         [sys.executable, str(HERE / "profile_engine.py")],
         [sys.executable, str(HERE / "bench_sweep.py"), *([] if full else ["--quick"])],
         [sys.executable, str(HERE / "bench_flexible.py")],
+        [sys.executable, str(HERE / "bench_partial_slip.py")],
         [sys.executable, str(HERE / "bench_compile.py")],
         [sys.executable, str(HERE / "bench_caches.py")],
     ]

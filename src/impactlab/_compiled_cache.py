@@ -37,6 +37,7 @@ ENGINE_SOURCES = (
     "dynamics/core",
     "dynamics/flexcore",
     "dynamics/slipcore",
+    "dynamics/slip_batch.py",
     "contact",
     "bodies/layout.py",
     "schema.py",

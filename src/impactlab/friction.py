@@ -30,7 +30,7 @@ The equations are in ``docs/engine/index.md``; the compiled implementation is in
   Universitatis Mech. Eng. 12 (2014) 1) and discretised into ``PARTIAL_SLIP_CELLS`` cells with
   stick/slip events: microslip spreading in from the contact edge, Masing unloading, births of
   unstressed annuli, the tangential stiffness 8 G* a of the actual (plastic) contact radius.
-  Compiled in ``impactlab.dynamics.slipcore``; ``simulate`` only (not the batch engine).
+  Compiled in ``impactlab.dynamics.slipcore``; ``simulate``, the batch engine and sweeps.
 """
 
 from __future__ import annotations
@@ -134,7 +134,7 @@ FRICTION_MODELS: dict[FrictionKind, FrictionModel] = {
         _model(
             FrictionKind.PARTIAL_SLIP,
             "Mindlin-Deresiewicz partial slip with load history (microslip, exact MDR form in "
-            f"{PARTIAL_SLIP_CELLS} cells); simulate() only",
+            f"{PARTIAL_SLIP_CELLS} cells)",
         ),
     )
 }
@@ -142,9 +142,14 @@ FRICTION_MODELS: dict[FrictionKind, FrictionModel] = {
 FRICTION_IDS: dict[str, int] = {
     str(kind): m.friction_id for kind, m in FRICTION_MODELS.items() if kind != "partial_slip"
 }
-"""name -> compiled id of the rigid-body core's models, the ones the batch engine
-(``run_arrays``, ``simulate_batch``, sweeps) runs. ``partial_slip`` (id ``PARTIAL_SLIP``) runs
-in ``simulate`` only (``impactlab.dynamics.slipcore``)."""
+"""name -> compiled id of the rigid-body core's models (``impactlab.dynamics.core``).
+``partial_slip`` (id ``PARTIAL_SLIP``) has its own engine (``impactlab.dynamics.slipcore``)."""
+
+BATCH_FRICTION_IDS: dict[str, int] = {
+    str(kind): m.friction_id for kind, m in FRICTION_MODELS.items()
+}
+"""name -> compiled id of every model the batch engine (``run_arrays``, ``simulate_batch``,
+sweeps) runs: the core's ``FRICTION_IDS`` and ``partial_slip``."""
 
 
 def batch_friction_error(name: object) -> str:
@@ -152,7 +157,7 @@ def batch_friction_error(name: object) -> str:
     return (
         f"friction model {name!r} is not available in the batch engine (run_arrays, "
         f"simulate_batch, sweeps): use impactlab.simulate() for it; batch models: "
-        f"{', '.join(FRICTION_IDS)}"
+        f"{', '.join(BATCH_FRICTION_IDS)}"
     )
 
 
@@ -172,6 +177,7 @@ def get_friction(name: str | FrictionKind) -> FrictionModel:
 
 
 __all__ = [
+    "BATCH_FRICTION_IDS",
     "COULOMB",
     "DEFAULT_MU",
     "FRICTION_IDS",

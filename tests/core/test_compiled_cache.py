@@ -220,6 +220,7 @@ def test_short_or_foreign_compiles_stay_silent(monkeypatch: pytest.MonkeyPatch) 
         ("impactlab.dynamics.slipcore.driver", "partial-slip"),
         ("impactlab.dynamics.flexcore.driver", "flexible-rod"),
         ("impactlab.dynamics.core.batch", "batch"),
+        ("impactlab.dynamics.slip_batch", "partial-slip batch"),
         ("impactlab.dynamics.core.driver", "impact engine"),
         ("impactlab.contact.kernels", "contact-law"),
     ],

@@ -1,6 +1,6 @@
 """Invariants of the ``partial_slip`` friction model: no energy gain, the Coulomb
 bound, continuity of F_t at every switch, the rigid (Coulomb) limit as G* grows, convergence
-in the cell count, the rods, the result object and the batch engine's refusal."""
+in the cell count, the rods, the result object and the batch engine's ids."""
 
 from __future__ import annotations
 
@@ -19,7 +19,13 @@ from impactlab.dynamics.models import body_params, kernel_params
 from impactlab.dynamics.partial_slip import largest_radius
 from impactlab.dynamics.slipcore import impact_slip
 from impactlab.flags import ResultFlag
-from impactlab.friction import FRICTION_IDS, PARTIAL_SLIP, friction_names, get_friction
+from impactlab.friction import (
+    BATCH_FRICTION_IDS,
+    FRICTION_IDS,
+    PARTIAL_SLIP,
+    friction_names,
+    get_friction,
+)
 from impactlab.sweep.engine import EngineEvaluator
 from impactlab.verification.partial_slip import kharaz_case, rigid_coulomb
 
@@ -130,15 +136,16 @@ def test_result_and_references() -> None:
     assert get_friction("partial_slip").references
 
 
-def test_batch_engine_refuses_partial_slip_clearly() -> None:
-    msg = "not available in the batch engine.*impulse_ratio, coulomb, mindlin"
-    with pytest.raises(ValueError, match=msg):
-        il.simulate_batch(SPHERE, friction="partial_slip", mu=0.2, vy=-1.0)
-    with pytest.raises(ValueError, match=msg):
-        run_arrays(0, 3, np.zeros(9), np.zeros(9), np.zeros((1, 4)), np.zeros(1))
-    with pytest.raises(ValueError, match=msg):
-        EngineEvaluator().validate({"friction": ["coulomb", "partial_slip"]})
+def test_batch_engine_runs_partial_slip() -> None:
+    """The batch engine and the sweeps take partial slip (tests/dynamics/test_partial_slip_batch.py
+    checks its results against simulate); the core's ids are unchanged."""
+    EngineEvaluator().validate({"friction": ["coulomb", "partial_slip"]})
+    b = il.simulate_batch(SPHERE, friction="partial_slip", mu=0.2, vy=-1.0)
+    assert b.friction == "partial_slip" and list(b.status) == [0]
+    with pytest.raises(ValueError, match="friction_id must be one of"):
+        run_arrays(0, 4, np.zeros(9), np.zeros(9), np.zeros((1, 4)), np.zeros(1))
     assert FRICTION_IDS == {"impulse_ratio": 0, "coulomb": 1, "mindlin": 2}  # unchanged
+    assert BATCH_FRICTION_IDS == {**FRICTION_IDS, "partial_slip": PARTIAL_SLIP}
     assert PARTIAL_SLIP == 3
 
 

@@ -263,8 +263,8 @@ def _body(cat: Mapping[str, str], row: Mapping[str, float]) -> Rod | Sphere | Fl
 def _one_by_one(
     cases: Mapping[str, np.ndarray], statics: Statics, outputs: Sequence[str], rate: str | None
 ) -> tuple[dict[str, np.ndarray], np.ndarray]:
-    """One ``simulate`` call per case, for what the batch engine does not run (partial slip;
-    the flexible rod on a rate-dependent flat). A refused case or a failed drop gets
+    """One ``simulate`` call per case, for partial slip and the flexible rod on a
+    rate-dependent flat. A refused case or a failed drop gets
     STATUS_REFUSED, never an exception."""
     n = len(cases["angle"])
     res = {o: np.full(n, np.nan) for o in outputs}

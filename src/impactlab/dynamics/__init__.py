@@ -9,6 +9,7 @@ See docs/engine/index.md for the equations, conventions and models.
 """
 
 from impactlab.dynamics.batch import (
+    BATCH_FRICTION_IDS,
     FRICTION_IDS,
     OUTPUT_FIELDS,
     REGIME_NAMES,
@@ -25,6 +26,7 @@ from impactlab.dynamics.simulate import rerun, simulate
 from impactlab.dynamics.simulate_many import simulate_batch
 
 __all__ = [
+    "BATCH_FRICTION_IDS",
     "DEFAULT_RTOL",
     "FRICTION_IDS",
     "HISTORY_FIELDS",

@@ -1,5 +1,9 @@
 """Low-level batch interface of the impact engine (arrays in, arrays out; all cores).
 
+Every friction model of ``BATCH_FRICTION_IDS`` runs here: the rigid core's models in
+``core.batch.impact_batch``, ``partial_slip`` in ``slip_batch.slip_batch`` (the same compiled
+impact as ``simulate(friction="partial_slip")``, so its results equal ``simulate``'s bit for bit).
+
 ``run_arrays`` is what sweeps call: every case may carry its own law parameters and body
 parameters. Invalid cases are flagged in ``status`` (see ``STATUS_MESSAGES``) with NaN outputs;
 they never stop the batch.
@@ -19,11 +23,19 @@ from impactlab.contact.ranges import extrapolation_flags
 from impactlab.contact.tabulate import has_table, with_table
 from impactlab.dynamics.checks import check_rtol, gravity_value
 from impactlab.dynamics.core.batch import impact_batch
-from impactlab.dynamics.kernels.layout import N_OUT, OUTPUT_FIELDS
+from impactlab.dynamics.kernels.layout import N_OUT, OUTPUT_FIELDS, PARTIAL_SLIP_RTOL
 from impactlab.dynamics.kernels.status import REGIME_NAMES, STATUS_MESSAGES
-from impactlab.friction import FRICTION_IDS, PARTIAL_SLIP, batch_friction_error
+from impactlab.dynamics.slip_batch import slip_batch
+from impactlab.friction import BATCH_FRICTION_IDS, FRICTION_IDS, PARTIAL_SLIP, PARTIAL_SLIP_CELLS
 
-__all__ = ["FRICTION_IDS", "OUTPUT_FIELDS", "REGIME_NAMES", "STATUS_MESSAGES", "run_arrays"]
+__all__ = [
+    "BATCH_FRICTION_IDS",
+    "FRICTION_IDS",
+    "OUTPUT_FIELDS",
+    "REGIME_NAMES",
+    "STATUS_MESSAGES",
+    "run_arrays",
+]
 
 
 def _rows(name: str, a: Any, width: int, n: int) -> np.ndarray:
@@ -53,13 +65,14 @@ def run_arrays(
 ) -> tuple[np.ndarray, np.ndarray]:
     """Run N impacts in parallel.
 
-    law_id : contact-law id (``contact.kernels``); friction_id : ``FRICTION_IDS[name]``.
+    law_id : contact-law id (``contact.kernels``); friction_id : ``BATCH_FRICTION_IDS[name]``.
     law_params : (N, NPARAM) or (NPARAM,) (``ContactModel.params``), or one law's
     ``kernel_params(model)`` (with its loading-curve table; shared parameters get one anyway).
     body_params : (N, NB) or (NB,) (``Rod/Sphere.to_params(flat)``, which includes G*).
     initial : (N, 4) = [angle [rad], vx, vy [m/s], spin [rad/s]]; mu : (N,) or scalar.
     gravity : True (9.80665), False or a value [m/s^2]; constant_angle : freeze the lever arms;
-    rtol : relative tolerance (None: the engine default); diagnostics : also compute the
+    rtol : relative tolerance (None: the engine default, ``PARTIAL_SLIP_RTOL`` for
+    ``partial_slip``, as in ``simulate``); diagnostics : also compute the
     diagnostic outputs (energy_rise, friction_excess; NaN otherwise); tabulate : evaluate the
     law's loading curve from its table (``contact.table``, within 1e-13 of the closed form)
     where one parameter vector is shared by every case; per-case parameters (N, NPARAM) always
@@ -81,10 +94,8 @@ def run_arrays(
         fid = int(friction_id)
     except (TypeError, ValueError):
         raise ValueError(f"friction_id must be an integer, got {friction_id!r}") from None
-    if fid == PARTIAL_SLIP:
-        raise ValueError(batch_friction_error("partial_slip"))
-    if fid not in FRICTION_IDS.values():
-        raise ValueError(f"friction_id must be one of {FRICTION_IDS}, got {friction_id!r}")
+    if fid not in BATCH_FRICTION_IDS.values():
+        raise ValueError(f"friction_id must be one of {BATCH_FRICTION_IDS}, got {friction_id!r}")
     init = check_array("initial", initial)
     if init.ndim == 1 and init.shape[0] == 4:
         init = init[None, :]
@@ -110,10 +121,16 @@ def run_arrays(
             lp = shared_table(lid, lp[0])[None, :]
     bp = _rows("body_params", body_params, NB, n)
     g = gravity_value(gravity)
-    r = check_rtol(rtol)
+    r = PARTIAL_SLIP_RTOL if rtol is None and fid == PARTIAL_SLIP else check_rtol(rtol)
     out = np.empty((n, N_OUT))
     status = np.empty(n, dtype=np.int32)
-    if n:
+    if n and fid == PARTIAL_SLIP:
+        slip_batch(
+            numba.get_num_threads(), lid, lp, bp, init, mu_a, g, bool(constant_angle), r,
+            bool(diagnostics), PARTIAL_SLIP_CELLS, out, status,
+        )  # fmt: skip
+        _mark_extrapolated(lid, lp, out)
+    elif n:
         impact_batch(
             numba.get_num_threads(),
             lid,

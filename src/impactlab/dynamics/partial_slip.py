@@ -1,5 +1,7 @@
 """``simulate`` with ``friction="partial_slip"``: one impact of a rigid rod or sphere with
-Mindlin-Deresiewicz partial-slip friction, run by the compiled ``impactlab.dynamics.slipcore``.
+Mindlin-Deresiewicz partial-slip friction, run by the compiled ``impactlab.dynamics.slipcore``
+through ``impactlab.dynamics.slip_batch`` (the batch engine's per-case function: a batch's
+results equal ``simulate``'s bit for bit).
 
 The cells of the tangential model span the largest contact radius, estimated by a pre-pass of
 the rigid core (frictionless for a sphere, whose normal motion friction does not change: exact;
@@ -9,13 +11,8 @@ with ``mindlin`` friction for a rod); a contact that outgrows the estimate takes
 
 from __future__ import annotations
 
-import math
-from typing import Any
-
 import numpy as np
 
-from impactlab.bodies import Rod
-from impactlab.contact.history_kernels import loading_contact_radius
 from impactlab.dynamics.checks import ImpactInputs
 from impactlab.dynamics.core.driver import impact
 from impactlab.dynamics.kernels import layout as L
@@ -23,31 +20,22 @@ from impactlab.dynamics.kernels import status as S
 from impactlab.dynamics.models import body_params, kernel_params
 from impactlab.dynamics.outcome import impact_result, status_error
 from impactlab.dynamics.results import ImpactResult
+from impactlab.dynamics.slip_batch import slip_case, slip_estimate
 from impactlab.dynamics.slipcore import impact_slip
-from impactlab.friction import COULOMB, MINDLIN, PARTIAL_SLIP_CELLS
+from impactlab.friction import COULOMB, PARTIAL_SLIP_CELLS
 
 __all__ = ["run_partial_slip"]
-
-
-def _core(x: ImpactInputs, fric: int, mu: float, history: bool, out: np.ndarray) -> Any:
-    vx, vy = x.velocity
-    p = kernel_params(x.model)
-    bp = body_params(x.body, x.flat)
-    return impact(
-        x.model.law_id, p, fric, bp, x.angle, vx, vy, x.spin, mu, x.gravity,
-        x.constant_angle, x.rtol, history, False, out,
-    )  # fmt: skip
 
 
 def largest_radius(x: ImpactInputs) -> tuple[int, float]:
     """(status, estimated largest contact radius [m]) from a pre-pass of the rigid core."""
     out = np.empty(L.N_OUT)
-    rod = isinstance(x.body, Rod)
-    status, _h, _n = _core(x, MINDLIN if rod else COULOMB, x.mu if rod else 0.0, False, out)
-    if status != S.ST_OK:
-        return int(status), math.nan
-    a = loading_contact_radius(x.model.law_id, kernel_params(x.model), out[L.O_DMAX])
-    return S.ST_OK, float(a) * 1.0001
+    vx, vy = x.velocity
+    status, a = slip_estimate(
+        x.model.law_id, kernel_params(x.model), body_params(x.body, x.flat), x.angle, vx, vy,
+        x.spin, x.mu, x.gravity, x.constant_angle, x.rtol, out,
+    )  # fmt: skip
+    return int(status), float(a)
 
 
 def run_partial_slip(
@@ -55,18 +43,28 @@ def run_partial_slip(
 ) -> tuple[int, np.ndarray, np.ndarray | None]:
     """(status, outputs, history rows or None) of one partial-slip impact (checked inputs)."""
     out = np.empty(L.N_OUT)
+    vx, vy = x.velocity
+    law, p, bp = x.model.law_id, kernel_params(x.model), body_params(x.body, x.flat)
+    if not history:  # the batch engine's per-case function
+        status = slip_case(
+            law, p, bp, x.angle, vx, vy, x.spin, x.mu, x.gravity, x.constant_angle, x.rtol,
+            False, n_cells, out,
+        )  # fmt: skip
+        return int(status), out, None
     if x.mu < L.MU_NEGLIGIBLE:  # frictionless, as in the core (``layout.MU_NEGLIGIBLE``)
-        status, hist, nh = _core(x, COULOMB, 0.0, history, out)
-        return int(status), out, (hist[:nh] if history else None)
+        status, hist, nh = impact(
+            law, p, COULOMB, bp, x.angle, vx, vy, x.spin, 0.0, x.gravity, x.constant_angle,
+            x.rtol, True, False, out,
+        )  # fmt: skip
+        return int(status), out, hist[:nh]
     status, a_est = largest_radius(x)
     if status != S.ST_OK:
         return status, out, None
-    vx, vy = x.velocity
     status, hist, nh, _jump = impact_slip(
-        x.model.law_id, kernel_params(x.model), body_params(x.body, x.flat), x.angle, vx, vy,
-        x.spin, x.mu, x.gravity, x.constant_angle, x.rtol, history, False, n_cells, a_est, out,
+        law, p, bp, x.angle, vx, vy, x.spin, x.mu, x.gravity, x.constant_angle, x.rtol, True,
+        False, n_cells, a_est, out,
     )  # fmt: skip
-    return int(status), out, (hist[:nh] if history else None)
+    return int(status), out, hist[:nh]
 
 
 def simulate_partial_slip(

@@ -61,6 +61,7 @@ def _batch() -> None:
 def _partial_slip() -> None:
     from impactlab.bodies import PAPER_ROD
     from impactlab.dynamics.simulate import simulate
+    from impactlab.dynamics.simulate_many import simulate_batch
 
     for history in (False, True):
         simulate(
@@ -72,6 +73,14 @@ def _partial_slip() -> None:
             velocity=(0.0, -1.41),
             history=history,
         )
+    simulate_batch(  # the parallel loop over cases
+        PAPER_ROD,
+        law="ghaednia",
+        friction="partial_slip",
+        mu=0.2,
+        angle=math.radians(20),
+        vy=[-1.0, -1.41],
+    )
 
 
 def _flexible() -> None:

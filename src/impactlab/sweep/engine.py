@@ -23,13 +23,12 @@ from numba.core.dispatcher import Dispatcher
 
 from impactlab.contact import get_law, law_names
 from impactlab.dynamics.batch import (
-    FRICTION_IDS,
+    BATCH_FRICTION_IDS,
     OUTPUT_FIELDS,
     REGIME_NAMES,
     STATUS_MESSAGES,
     run_arrays,
 )
-from impactlab.friction import batch_friction_error
 from impactlab.schema import DERIVED_FIELDS, SEQUENCE_FIELDS
 from impactlab.sweep.flexible import FLEXIBLE_BODY, evaluate_flexible, validate_flexible
 from impactlab.sweep.inputs import INTEGER_OUTPUTS, KINEMATIC_INPUTS
@@ -148,9 +147,14 @@ class EngineEvaluator:
 
     def validate(self, categories: Mapping[str, Sequence[str]]) -> None:
         validate_flexible(categories)
-        if "partial_slip" in categories.get("friction", ()):
-            raise ValueError(batch_friction_error("partial_slip"))
-        _validate_categories(categories, tuple(FRICTION_IDS))
+        flexible = FLEXIBLE_BODY in categories.get("body", ())
+        if flexible and "partial_slip" in categories.get("friction", ()):
+            raise ValueError(
+                "friction 'partial_slip' with body 'flexible_rod': sweeps run partial slip for "
+                "the rigid rod and the sphere only; a flexible rod's drop with partial slip: "
+                "impactlab.simulate_drop"
+            )
+        _validate_categories(categories, tuple(BATCH_FRICTION_IDS))
 
     def __call__(
         self, cases: Mapping[str, np.ndarray], statics: Statics, outputs: Sequence[str]
@@ -238,7 +242,7 @@ def evaluate(
     law_id = _law_id(statics.categories["law"])
     out, st = run_arrays(
         law_id,
-        FRICTION_IDS[statics.categories["friction"]],
+        BATCH_FRICTION_IDS[statics.categories["friction"]],
         sel(law_params),
         sel(body_params),
         initial if all_ok else np.ascontiguousarray(initial[ok]),

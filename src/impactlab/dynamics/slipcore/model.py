@@ -151,6 +151,49 @@ def events(c, md, cm, sg, cp, W, ev, g):
 
 
 @njit(cache=True, error_model="numpy")
+def event_value(k, law, p, c, md, y, cm, sg, cp):
+    """Event function ``k`` alone at state ``y``: the value ``events`` gives it, from only the
+    quantities it needs (the normal contact, and for a cell's event that cell's limit and force,
+    by the formulas of ``evaluate``). The event search calls it many times per event."""
+    delta, a, b, _xs, _sl = geometry(c, y)
+    w = y[S_SPIN]
+    vn = y[S_VY] - w * a
+    comp = md[M_COMP] != 0.0
+    if k == EV_VN:
+        return vn if comp else -vn
+    if md[M_PHASE] == 0.0:
+        if k == EV_LIMIT:
+            return delta - c[C_DLIM]
+        if k == EV_SWITCH:
+            return delta - c[C_DSW]
+    elif comp:
+        if k == EV_RELOAD:
+            return delta - md[M_DM]
+    elif k == EV_SEP:
+        return md[M_DR] - delta
+    if k < G_BIRTH:
+        return -1.0
+    ar = radius(law, p, md, delta)
+    dx = cp[CP_DX]
+    nin = n_in(cm)
+    if k == G_BIRTH:
+        return ar - nin * dx if nin < cm.shape[0] else -1.0
+    if k == G_REL:
+        return (nin - 1) * dx - ar if nin > 1 else -1.0
+    i = k - G_CELL
+    if i >= nin:
+        return -1.0
+    vs = y[S_VX] + w * b
+    Fn = normal_force(law, p, md, delta)
+    ddel = -vn
+    Fd = dforce_ddelta(law, p, md, delta, Fn) * ddel
+    ad = dradius_ddelta(law, p, md, delta) * ddel
+    L, Ld = limits(i, dx, c[C_MU], Fn, Fd, ar, ad)
+    f = sg[i] * L if cm[i] == SLIP else y[Y_CELL + i]
+    return cell_switch(i, cm, sg, cp, L, Ld, f, ar, ad, vs)
+
+
+@njit(cache=True, error_model="numpy")
 def boundary_horizon(cm, cp, ar, ad):
     """Time until the contact radius ``ar`` (rate ``ad``) reaches the next cell boundary, where
     a cell is born or released and the cell lengths have a kink (inf when none lies ahead)."""

@@ -19,8 +19,8 @@ from numba import njit
 from impactlab.dynamics.kernels.dormand_prince import dense, dense_coeffs, error_sum, stage_point
 from impactlab.dynamics.kernels.roots import illinois
 from impactlab.dynamics.kernels.step_control import power_growth
-from impactlab.dynamics.slipcore.layout import G_CELL, Y_CELL
-from impactlab.dynamics.slipcore.model import cell_event, derivative, evaluate, events, n_in
+from impactlab.dynamics.slipcore.layout import Y_CELL
+from impactlab.dynamics.slipcore.model import derivative, evaluate, event_value, n_in
 
 
 @njit(cache=True, error_model="numpy")
@@ -47,12 +47,9 @@ def step(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew):
 
 @njit(cache=True, error_model="numpy")
 def event_at(k, law, p, c, md, y, cm, sg, cp, W, g):
-    """Event function ``k`` at state ``y`` (a cell's alone; else all of them, into ``g``)."""
-    ev = evaluate(law, p, c, md, y, cm, sg, cp, W)
-    if k >= G_CELL:
-        return cell_event(k - G_CELL, cm, sg, cp, W, ev[7], ev[8], ev[6])
-    events(c, md, cm, sg, cp, W, ev, g)
-    return g[k]
+    """Event function ``k`` at state ``y`` (``model.event_value``: that function alone, the
+    value ``events`` gives it; ``W`` and ``g`` are left as they are)."""
+    return event_value(k, law, p, c, md, y, cm, sg, cp)
 
 
 @njit(cache=True, error_model="numpy")

@@ -1,0 +1,95 @@
+"""Partial-slip impacts in compiled code: one case (``slip_case``, the pre-pass of the rigid core
+then ``slipcore.impact_slip``) and many in parallel (``slip_batch``, numba prange with the rigid
+batch's work queue).
+
+``slip_case`` is what ``simulate(friction="partial_slip")`` runs, so a batch's results equal
+``simulate``'s bit for bit. The cells span the largest contact radius estimated by a pre-pass
+of the rigid core (frictionless for a sphere, whose normal motion friction does not change:
+exact; with ``mindlin`` friction for a rod), times 1.0001; a contact that outgrows the estimate
+takes up to ``slipcore.layout.EXTRA`` times as many cells. With mu < ``MU_NEGLIGIBLE`` the
+core's frictionless impact is returned.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit, prange
+
+from impactlab.bodies.layout import BP_KIND, KIND_ROD
+from impactlab.contact.history_kernels import loading_contact_radius
+from impactlab.dynamics.core.atomic import fetch_add
+from impactlab.dynamics.core.batch import BLOCK, _stride
+from impactlab.dynamics.core.driver import impact
+from impactlab.dynamics.kernels.layout import FR_COULOMB, FR_MINDLIN, MU_NEGLIGIBLE, O_DMAX
+from impactlab.dynamics.kernels.status import ST_BAD_INPUT, ST_OK
+from impactlab.dynamics.slipcore import impact_slip
+
+#: The cells' span over the pre-pass's largest contact radius (a margin for round-off).
+RADIUS_MARGIN = 1.0001
+
+
+@njit(cache=True, error_model="numpy")
+def slip_estimate(law, p, bp, th0, vx0, vy0, w0, mu, g, const_angle, rtol, out):
+    """(status, estimated largest contact radius [m]) from the pre-pass of the rigid core
+    (its outputs are left in ``out``)."""
+    rod = bp[BP_KIND] == KIND_ROD
+    st, _h, _n = impact(
+        law, p, FR_MINDLIN if rod else FR_COULOMB, bp, th0, vx0, vy0, w0, mu if rod else 0.0,
+        g, const_angle, rtol, False, False, out,
+    )  # fmt: skip
+    if st != ST_OK:
+        return st, math.nan
+    return ST_OK, loading_contact_radius(law, p, out[O_DMAX]) * RADIUS_MARGIN
+
+
+@njit(cache=True, error_model="numpy")
+def slip_case(law, p, bp, th0, vx0, vy0, w0, mu, g, const_angle, rtol, diag, n_cells, out):
+    """One partial-slip impact without history into ``out`` (the outputs of
+    ``impactlab.dynamics.core.impact``); ``n_cells`` cells over the estimated largest contact
+    radius. Returns the status."""
+    if not (mu >= 0.0):  # NaN or negative: refused, as by simulate's checks
+        for i in range(out.shape[0]):
+            out[i] = math.nan
+        return ST_BAD_INPUT
+    if mu < MU_NEGLIGIBLE:  # frictionless, as in the core
+        st, _h, _n = impact(
+            law, p, FR_COULOMB, bp, th0, vx0, vy0, w0, 0.0, g, const_angle, rtol, False, diag,
+            out,
+        )  # fmt: skip
+        return st
+    st, a_est = slip_estimate(law, p, bp, th0, vx0, vy0, w0, mu, g, const_angle, rtol, out)
+    if st != ST_OK:
+        return st
+    st, _h, _n, _jump = impact_slip(
+        law, p, bp, th0, vx0, vy0, w0, mu, g, const_angle, rtol, False, diag, n_cells, a_est,
+        out,
+    )  # fmt: skip
+    return st
+
+
+@njit(cache=True, parallel=True, error_model="numpy")
+def slip_batch(threads, law, lp, bpa, init, mu, g, const_angle, rtol, diag, n_cells, out, status):
+    """``init.shape[0]`` partial-slip impacts in parallel on ``threads`` loops (the arguments of
+    ``core.batch.impact_batch`` without the friction id, plus ``n_cells``): each thread takes
+    the next block of ``BLOCK`` cases from a shared counter, in a scattered order."""
+    n = init.shape[0]
+    shared_p = lp.shape[0] == 1
+    shared_b = bpa.shape[0] == 1
+    nb = (n + BLOCK - 1) // BLOCK
+    stride = _stride(nb)
+    next_block = np.zeros(1, np.int64)
+    for _t in prange(max(1, threads)):
+        while True:
+            kb = fetch_add(next_block, 1)
+            if kb >= nb:
+                break
+            b = (kb * stride) % nb
+            for i in range(b * BLOCK, min(b * BLOCK + BLOCK, n)):
+                pi = lp[0] if shared_p else lp[i]
+                bi = bpa[0] if shared_b else bpa[i]
+                status[i] = slip_case(
+                    law, pi, bi, init[i, 0], init[i, 1], init[i, 2], init[i, 3], mu[i], g,
+                    const_angle, rtol, diag, n_cells, out[i],
+                )  # fmt: skip
