@@ -22,7 +22,7 @@ from impactlab.verification.kharaz_calibration import (
 
 LONG = pytest.mark.skipif(
     os.environ.get("IMPACTLAB_CALIBRATE_LONG", "") in ("", "0"),
-    reason="partial slip, one simulate per case (minutes): set IMPACTLAB_CALIBRATE_LONG=1",
+    reason="the partial-slip calibration, 200 steps (minutes): set IMPACTLAB_CALIBRATE_LONG=1",
 )
 
 

@@ -46,7 +46,7 @@ def test_flexible_and_rate_dependent_models(template):
         CandidateModel(body="flexible_rod", rate="fast")
 
 
-def test_partial_slip_goes_case_by_case():
+def test_partial_slip_runs_in_the_batch_as_simulate():
     m = Measurements.from_records(
         [
             {
@@ -69,6 +69,9 @@ def test_partial_slip_goes_case_by_case():
     assert pred.status[0, 0] == 0
     assert pred.values["e_t"][0, 0] == pytest.approx(r.velocity_out[0] / 1.0, rel=1e-12)
     assert pred.values["spin_out"][0, 0] == pytest.approx(r.spin_out, rel=1e-12)
+    assert CandidateModel("hertz", "partial_slip").batched
+    assert CandidateModel("hertz", "partial_slip", body="flexible_rod").batched
+    assert not CandidateModel(body="flexible_rod", rate="cowper-symonds").batched
 
 
 def test_the_model_that_made_the_data_ranks_first(template):

@@ -5,7 +5,6 @@ stores its results, flags and statuses like the other models: the values of
 from __future__ import annotations
 
 import numpy as np
-import pytest
 
 import impactlab as il
 from impactlab.sweep import Study, run_sweep
@@ -38,8 +37,31 @@ def test_partial_slip_sweep_stores_batch_results(tmp_path) -> None:
     np.testing.assert_allclose(mind["e"].values, got["e"].values, rtol=0.05)
 
 
-def test_flexible_rod_sweep_refuses_partial_slip() -> None:
-    both = {"friction": ["partial_slip"], "body": ["rod", "flexible_rod"]}
-    with pytest.raises(ValueError, match=r"partial_slip.*flexible_rod.*simulate_drop"):
-        EngineEvaluator().validate(both)
-    EngineEvaluator().validate({"friction": ["partial_slip"], "body": ["rod", "sphere"]})
+def test_flexible_rod_sweep_runs_partial_slip(tmp_path) -> None:
+    """A flexible rod's drops with partial slip: the values of simulate_drops bit for bit."""
+    angles = np.radians([20.0, 45.0])
+    study = Study(
+        name="slipflex",
+        grid={"angle": angles},
+        fixed={
+            "body": "flexible_rod",
+            "friction": "partial_slip",
+            "law": "ghaednia",
+            "mu": 0.3,
+            "vy": -1.41,
+        },
+        outputs=["e", "dent_depth", "sequence_duration", "max_force"],
+    )
+    ds = run_sweep(study, tmp_path / "slipflex.zarr", quiet=True).dataset
+    assert ds["status"].values.tolist() == [0, 0]
+    want = il.simulate_drops(
+        il.FlexibleRod.paper(),
+        law="ghaednia",
+        friction="partial_slip",
+        mu=0.3,
+        vy=-1.41,
+        angle=angles,
+    )
+    for name in ("e", "dent_depth", "sequence_duration", "max_force", "flags"):
+        np.testing.assert_array_equal(ds[name].values, getattr(want, name).astype(ds[name].dtype))
+    EngineEvaluator().validate({"friction": ["partial_slip"], "body": ["rod", "flexible_rod"]})

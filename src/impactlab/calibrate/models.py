@@ -5,8 +5,8 @@ body, or the flexible rod). ``predict`` evaluates W parameter vectors on D drops
 W x D cases through the sweep's engine adapter (``impactlab.sweep.engine.ENGINE``: the compiled
 batch engine on every core for rigid bodies, one compiled batch of drops per body for the
 flexible rod, ``sweep.flexible``);
-the models the batch engine does not run (partial slip; the flexible rod on a rate-dependent
-flat) go through ``simulate`` one case at a time (measured in benchmarks/bench_calibrate.py).
+the flexible rod on a rate-dependent flat, which the batch engines do not run, goes through
+``simulate`` one case at a time (measured in benchmarks/bench_calibrate.py).
 """
 
 from __future__ import annotations
@@ -84,8 +84,6 @@ class CandidateModel:
         get_friction(self.friction)
         if self.body not in (None, FLEXIBLE_BODY):
             raise ValueError(f"model body must be None or {FLEXIBLE_BODY!r}, got {self.body!r}")
-        if self.body == FLEXIBLE_BODY and self.friction == "partial_slip":
-            raise ValueError("the partial-slip model is calibrated on rigid bodies only")
         if self.rate is not None and self.body != FLEXIBLE_BODY:
             raise ValueError(f"a rate law ({self.rate!r}) needs body={FLEXIBLE_BODY!r}")
         if self.rate not in (None, *RATE_LAWS):
@@ -105,9 +103,9 @@ class CandidateModel:
 
     @property
     def batched(self) -> bool:
-        """True when the sweep's engine adapter runs this model (not partial slip, not a
-        rate-dependent flat)."""
-        return self.friction != "partial_slip" and self.rate is None
+        """True when the sweep's engine adapter runs this model (every model but the flexible
+        rod on a rate-dependent flat)."""
+        return self.rate is None
 
 
 @dataclass(frozen=True)

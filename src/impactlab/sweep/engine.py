@@ -147,13 +147,6 @@ class EngineEvaluator:
 
     def validate(self, categories: Mapping[str, Sequence[str]]) -> None:
         validate_flexible(categories)
-        flexible = FLEXIBLE_BODY in categories.get("body", ())
-        if flexible and "partial_slip" in categories.get("friction", ()):
-            raise ValueError(
-                "friction 'partial_slip' with body 'flexible_rod': sweeps run partial slip for "
-                "the rigid rod and the sphere only; a flexible rod's drop with partial slip: "
-                "impactlab.simulate_drop"
-            )
         _validate_categories(categories, tuple(BATCH_FRICTION_IDS))
 
     def __call__(
