@@ -8,10 +8,10 @@ and a 10 mm steel sphere at 2 m/s and incidence 5, 20, 40, 60 and 80 deg, each w
 ``hertz`` law and the elastic-plastic ``ghaednia`` law, mu = 0.3, at each model's default
 tolerance. Each model runs the fastest way it can: ``simulate_batch`` (one compiled call over
 the cases, each case ``TILE`` times so that the call's fixed cost is spread); partial slip also
-one ``simulate`` per case without history (its only way before it ran in the batch engine). CPU seconds of
-this process (``time.process_time``) with numba limited to one thread, so the figures are per
-core and robust against other load; the best of ``--repeats`` rounds. The figure of merit is
-the ratio partial slip / mindlin of the time per impact.
+one ``simulate`` per case without history (its only way before it ran in the batch engine).
+CPU seconds of this process (``time.process_time``) with numba limited to one thread, so the
+figures are per core and robust against other load; the best of ``--repeats`` rounds. The
+figure of merit is the ratio partial slip / mindlin of the time per impact.
 
 Writes benchmarks/results/partial_slip.json and prints a summary.
 """

@@ -50,10 +50,10 @@ def _expected(body, kwargs: dict, case: dict) -> tuple[int, np.ndarray, list[flo
         if "does not approach" in text:
             code = S.ST_NOT_APPROACHING
         return code, nan, [math.nan, 0.0, math.nan]
-    row = [
-        math.nan if n in _UNKEPT else float(_READ.get(n, lambda r, n=n: getattr(r, RENAMED_DROP_FIELDS.get(n, n)))(r))
-        for n in F.DROP_OUTPUT_FIELDS
-    ]
+    def read(n: str) -> float:
+        return float(_READ.get(n, lambda r: getattr(r, RENAMED_DROP_FIELDS.get(n, n)))(r))
+
+    row = [math.nan if n in _UNKEPT else read(n) for n in F.DROP_OUTPUT_FIELDS]
     return 0, np.array(row), [r.initial_energy, float(int(r.flags)), r.max_delta_ratio]
 
 
