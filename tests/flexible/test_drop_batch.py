@@ -50,6 +50,7 @@ def _expected(body, kwargs: dict, case: dict) -> tuple[int, np.ndarray, list[flo
         if "does not approach" in text:
             code = S.ST_NOT_APPROACHING
         return code, nan, [math.nan, 0.0, math.nan]
+
     def read(n: str) -> float:
         return float(_READ.get(n, lambda r: getattr(r, RENAMED_DROP_FIELDS.get(n, n)))(r))
 
