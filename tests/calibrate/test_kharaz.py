@@ -1,7 +1,7 @@
 """mu from the Kharaz-Gorham-Salman rebound data against their independently measured 0.092.
 
-The batched models run here (seconds); the partial-slip model (one ``simulate`` per case, about
-100 times slower per impact) runs with IMPACTLAB_CALIBRATE_LONG=1 (about 3 minutes). Measured
+Every model runs in the batch engine; the partial-slip model, about 50 times the cost of
+Mindlin per impact, takes about half a minute (marked slow). Measured
 with 8 walkers x 200 steps (docs/calibrate.md): partial slip 0.094 [0.090, 0.098], Mindlin
 0.092 [0.088, 0.096], Coulomb 0.095 [0.090, 0.100]; PSIS-LOO ranks partial slip first.
 """
@@ -9,7 +9,6 @@ with 8 walkers x 200 steps (docs/calibrate.md): partial slip 0.094 [0.090, 0.098
 from __future__ import annotations
 
 import math
-import os
 
 import pytest
 
@@ -18,11 +17,6 @@ from impactlab.verification.kharaz_calibration import (
     kharaz_calibration,
     kharaz_measurements,
     summary_rows,
-)
-
-LONG = pytest.mark.skipif(
-    os.environ.get("IMPACTLAB_CALIBRATE_LONG", "") in ("", "0"),
-    reason="the partial-slip calibration, 200 steps (minutes): set IMPACTLAB_CALIBRATE_LONG=1",
 )
 
 
@@ -42,7 +36,6 @@ def test_batched_models_find_the_measured_mu():
     assert cal.ranking[0]["model"] == "hertz/mindlin"
 
 
-@LONG
 @pytest.mark.slow
 def test_partial_slip_finds_the_measured_mu_and_ranks_first():
     cal = kharaz_calibration(walkers=8, steps=200)
