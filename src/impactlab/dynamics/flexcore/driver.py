@@ -98,6 +98,6 @@ def drop(mdl, vx0, vy0, w0, rtol, t_max, stop_mode, record_on, out, contacts, de
                 break
         if record_on:
             hist, nh = record(hist, nh, t, mdl, y, ek, sv[F.SV_E0])
-    yfinal[: min(n, yfinal.shape[0])] = y[: min(n, yfinal.shape[0])]
+    copy_into(yfinal, y[: min(n, yfinal.shape[0])])
     fill_outputs(mdl, sv, t, y_end, vx0, vy0, out, contacts, dents)
     return int(sv[F.SV_STATUS]), int(sv[F.SV_NCON]), int(sv[F.SV_ND]), hist[:nh], nh
