@@ -3,9 +3,9 @@ point and event, in a buffer that grows by doubling."""
 
 from __future__ import annotations
 
-import numpy as np
 from numba import njit
 
+from impactlab.dynamics.kernels.buffers import grown
 from impactlab.dynamics.kernels.dormand_prince import dense
 from impactlab.dynamics.kernels.friction import sticking
 from impactlab.dynamics.kernels.layout import (
@@ -31,7 +31,6 @@ from impactlab.dynamics.kernels.layout import (
     H_Y,
     HISTORY_SUBSTEPS,
     M_PHASE,
-    NH,
     S_PHI,
     S_SPIN,
     S_VX,
@@ -49,9 +48,7 @@ def record(hist, n, t, law, p, fric, c, md, y):
     """Append one history row at time ``t`` [s] and state ``y`` (growing the buffer); returns
     (hist, n + 1)."""
     if n >= hist.shape[0]:
-        new = np.empty((2 * hist.shape[0] + 16, NH))
-        new[:n] = hist[:n]
-        hist = new
+        hist = grown(hist, n, 16)
     delta, _a, _b, Fn, Ft, vn, vs, kt = evaluate_cold(law, p, fric, c, md, y)
     _d, _a, _b, xs, _sl = geometry(c, y)
     row = hist[n]

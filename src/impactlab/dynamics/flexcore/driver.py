@@ -22,6 +22,7 @@ from impactlab.dynamics.flexcore.rhs import evaluate
 from impactlab.dynamics.flexcore.setup import first_touch, scales, workspace
 from impactlab.dynamics.flexcore.stepper import dp_step
 from impactlab.dynamics.flexcore.steps import accept, reject
+from impactlab.dynamics.kernels.buffers import copy_into
 from impactlab.dynamics.kernels.step_control import power_growth
 
 
@@ -81,11 +82,11 @@ def drop(mdl, vx0, vy0, w0, rtol, t_max, stop_mode, record_on, out, contacts, de
                                       ek, Jn, Jt)  # fmt: skip
         if not ok:
             break
-        y[:] = yev
+        copy_into(y, yev)
         h *= 10.0 if err == 0.0 else min(10.0, power_growth(err))
         if jev < 0:
-            K[0, :] = K[6, :]
-            gold[:] = gnew
+            copy_into(K[0], K[6])
+            copy_into(gold, gnew)
             refresh_thresholds(mdl, md, y, K, gold, sv, dents, ek, Jn, Jt)
         else:
             sv[F.SV_NEVENTS] += 1
@@ -97,6 +98,6 @@ def drop(mdl, vx0, vy0, w0, rtol, t_max, stop_mode, record_on, out, contacts, de
                 break
         if record_on:
             hist, nh = record(hist, nh, t, mdl, y, ek, sv[F.SV_E0])
-    yfinal[: min(n, yfinal.shape[0])] = y[: min(n, yfinal.shape[0])]
+    copy_into(yfinal, y[: min(n, yfinal.shape[0])])
     fill_outputs(mdl, sv, t, y_end, vx0, vy0, out, contacts, dents)
     return int(sv[F.SV_STATUS]), int(sv[F.SV_NCON]), int(sv[F.SV_ND]), hist[:nh], nh

@@ -3,11 +3,11 @@ points inside it), columns ``layout.DROP_HISTORY_FIELDS`` (compiled)."""
 
 from __future__ import annotations
 
-import numpy as np
 from numba import njit
 
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.kinematics import mechanical_energy
+from impactlab.dynamics.kernels.buffers import grown
 
 
 @njit(cache=True, error_model="numpy")
@@ -17,9 +17,7 @@ def record(hist, nh, t, mdl, y, ek, e0):
     c = mdl[2]
     M = mdl[3].shape[0]
     if nh >= hist.shape[0]:
-        new = np.empty((2 * hist.shape[0] + 64, F.N_DROP_HISTORY))
-        new[:nh] = hist[:nh]
-        hist = new
+        hist = grown(hist, nh, 64)
     r = hist[nh]
     r[0] = t
     for k in range(F.NE):

@@ -22,6 +22,7 @@ from numba import njit
 
 from impactlab.dynamics.flexcore.cells import n_active
 from impactlab.dynamics.flexcore.rhs import rates
+from impactlab.dynamics.kernels.buffers import copy_into
 from impactlab.dynamics.kernels.dormand_prince import error_sum, stage_point
 from impactlab.dynamics.kernels.roots import G_ROUNDOFF, THETA_TOL, illinois, past_root
 from impactlab.dynamics.kernels.step_control import power_growth
@@ -58,7 +59,7 @@ def integrate_to(mdl, md, y, k0, H, rtol, sc, out, ev, ek, Jn, Jt):
     Ks = np.empty((7, y.shape[0]))
     st = np.empty(y.shape[0])
     cur = y.copy()
-    Ks[0, :] = k0
+    copy_into(Ks[0], k0)
     done = 0.0
     hh = H
     cnt = 0
@@ -74,8 +75,8 @@ def integrate_to(mdl, md, y, k0, H, rtol, sc, out, ev, ek, Jn, Jt):
             break
         else:
             done += hh
-            cur[:] = out
-            Ks[0, :] = Ks[6, :]
+            copy_into(cur, out)
+            copy_into(Ks[0], Ks[6])
             hh *= min(5.0, power_growth(err)) if err > 0.0 else 5.0
     return cnt
 

@@ -12,6 +12,7 @@ from impactlab.dynamics.flexcore.history import record
 from impactlab.dynamics.flexcore.kinematics import mechanical_energy
 from impactlab.dynamics.flexcore.rhs import evaluate
 from impactlab.dynamics.flexcore.stepper import dense, integrate_to, locate
+from impactlab.dynamics.kernels.buffers import copy_into
 from impactlab.dynamics.kernels.cells import any_stuck
 from impactlab.dynamics.kernels.dormand_prince import dense_coeffs
 from impactlab.dynamics.kernels.layout import FR_IMPULSE
@@ -47,7 +48,8 @@ def first_event(mdl, md, y, h, K, Q, gold, gnew, sv, record_on, yt, der, ev, ek,
     if fired:
         for j in range(gold.shape[0]):
             if gold[j] <= 0.0 and gnew[j] > 0.0:
-                thj = locate(j, gold[j], gnew[j], mdl, md, y, h, Q, yt, der, ev, ek, Jn, Jt)
+                # shift 0.0 passed, not defaulted: one compiled locate for both calls
+                thj = locate(j, gold[j], gnew[j], mdl, md, y, h, Q, yt, der, ev, ek, Jn, Jt, 0.0)
                 if thj < theta:
                     theta = thj
                     jev = j
@@ -145,7 +147,7 @@ def accept(mdl, md, y, t, h, rtol, sc, K, Q, gold, gnew, ynew, yev, sv, contacts
     else:
         tend = t + h
         theta = 1.0
-        yev[:] = ynew
+        copy_into(yev, ynew)
     if record_on:
         hist, nh = record_inside(mdl, md, y, t, h, theta, Q, sv, hist, nh, yt, der, ev, ek, Jn, Jt)
     if fired or record_on:

@@ -11,6 +11,8 @@ their arguments and of module constants. The drivers import the kernels, never o
 Modules, lowest first:
 
 - ``_jit``: the compile option of the hot leaf functions (no reference counting).
+- ``buffers``: copies between work arrays as loops (no slice assignment of arrays, whose
+  error message numba would compile in every process), the growing history buffer.
 - ``layout``: indices of the rigid-body state, constants, mode, event, output and history
   vectors; friction ids; limits (the partial-slip and flexible layouts extend it).
 - ``status``: the status codes and messages of every engine, friction regime codes.

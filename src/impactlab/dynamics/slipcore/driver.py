@@ -14,6 +14,7 @@ from numba import njit
 
 from impactlab.bodies.layout import BP_KIND, KIND_ROD
 from impactlab.contact.kernels import P_ESTAR
+from impactlab.dynamics.kernels.buffers import copy_into
 from impactlab.dynamics.kernels.cells import CP_DX, CP_FTOL, CP_G1, CP_VTOL, STEP_PAST, birth
 from impactlab.dynamics.kernels.dormand_prince import dense, dense_coeffs
 from impactlab.dynamics.kernels.layout import (
@@ -159,7 +160,7 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
             nsteps += integrate_to(law, p, c, md, y, cm, sg, cp, W, K[0], theta * h, rtol, sc, yev)
             tend = t + theta * h
         else:
-            yev[:] = ynew
+            copy_into(yev, ynew)
             tend = t + h
         if k >= 0 or rec:  # else W and ev still hold the step's last stage, at ynew
             ev = evaluate(law, p, c, md, yev, cm, sg, cp, W)
@@ -167,13 +168,13 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
             status = ST_NAN
             break
         t = tend
-        y[:] = yev
+        copy_into(y, yev)
         h *= 10.0 if err == 0.0 else min(10.0, power_growth(err))
         if rec:
             hist, nh = record(hist, nh, t, law, p, c, md, y, cm, sg, cp, W)
         if k < 0:
-            K[0, :] = K[6]
-            gold[:] = gnew
+            copy_into(K[0], K[6])
+            copy_into(gold, gnew)
             continue
         nevents += 1
         if nevents > MAX_EVENTS:

@@ -6,9 +6,9 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
 from numba import njit
 
+from impactlab.dynamics.kernels.buffers import grown
 from impactlab.dynamics.kernels.cells import any_stuck
 from impactlab.dynamics.kernels.layout import (
     A_DMAX,
@@ -50,7 +50,6 @@ from impactlab.dynamics.kernels.layout import (
     H_Y,
     M_DR,
     M_PHASE,
-    NH,
     O_ANG,
     O_CT,
     O_DP,
@@ -125,9 +124,7 @@ def track(acc, law, p, c, md, y, cm, cp, W, ev, t0, t1, diag):
 def record(hist, n, t, law, p, c, md, y, cm, sg, cp, W):
     """Append one history row at time ``t`` and state ``y``; returns (hist, n + 1)."""
     if n >= hist.shape[0]:
-        new = np.empty((2 * hist.shape[0] + 16, NH))
-        new[:n] = hist[:n]
-        hist = new
+        hist = grown(hist, n, 16)
     ev = evaluate(law, p, c, md, y, cm, sg, cp, W)
     delta, _a, _b, Fn, Ft, vn, vs, _ar, _ad, _nin = ev
     _d, _a2, _b2, xs, _sl = geometry(c, y)

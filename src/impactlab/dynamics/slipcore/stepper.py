@@ -16,6 +16,7 @@ import math
 import numpy as np
 from numba import njit
 
+from impactlab.dynamics.kernels.buffers import copy_into
 from impactlab.dynamics.kernels.dormand_prince import dense, dense_coeffs, error_sum, stage_point
 from impactlab.dynamics.kernels.roots import illinois
 from impactlab.dynamics.kernels.step_control import power_growth
@@ -107,7 +108,7 @@ def integrate_to(law, p, c, md, y, cm, sg, cp, W, k0, H, rtol, sc, out):
         last = hh >= rem * (1.0 - 1e-12)
         if last:
             hh = rem
-        Ks[0, :] = kc
+        copy_into(Ks[0], kc)
         err, _ev = step(law, p, c, md, cur, cm, sg, cp, W, Ks, hh, rtol, sc, out)
         if not (err <= 1.0) and hh > 1e-6 * H:
             hh *= max(0.2, power_growth(err)) if math.isfinite(err) else 0.25
@@ -115,7 +116,7 @@ def integrate_to(law, p, c, md, y, cm, sg, cp, W, k0, H, rtol, sc, out):
         if last:
             break
         done += hh
-        cur[:] = out
-        kc[:] = Ks[6]
+        copy_into(cur, out)
+        copy_into(kc, Ks[6])
         hh *= min(5.0, power_growth(err)) if err > 0.0 else 5.0
     return steps
