@@ -30,11 +30,14 @@ Hermite pieces are the spline's own pieces (the table is the spline: C2, not onl
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
-from scipy.interpolate import BSpline
-from scipy.optimize import lsq_linear
 
 from impactlab.contact.curve_table import N_LOAD
+
+if TYPE_CHECKING:
+    from scipy.interpolate import BSpline
 
 #: Knot intervals the fit chooses from (each divides N_LOAD - 1): few for scattered FE curves
 #: (tens of points), many for dense samples of a smooth curve (``register_law``'s callables).
@@ -55,13 +58,16 @@ def _knots(x0: float, x1: float, intervals: int) -> np.ndarray:
 def fit_with(x: np.ndarray, w: np.ndarray, intervals: int, span: tuple[float, float]) -> BSpline:
     """The constrained fit of w(x) (x[0] = span[0] is the Hertz point, w[0] = 0) with
     ``intervals`` equal knot intervals over ``span``."""
+    from scipy.interpolate import BSpline as _BSpline  # on first use: import impactlab stays light
+    from scipy.optimize import lsq_linear
+
     t = _knots(span[0], span[1], intervals)
     nc = t.size - 4
-    basis = BSpline.design_matrix(np.clip(x, span[0], span[1]), t, 3).toarray()
+    basis = _BSpline.design_matrix(np.clip(x, span[0], span[1]), t, 3).toarray()
     cumulative = np.tril(np.ones((nc, nc)))[:, 1:]  # c = cumulative @ increments, c0 = 0
     upper = MAX_SLOPE / 3.0 * (t[4 : nc + 3] - t[1:nc])
     sol = lsq_linear(basis @ cumulative, w, bounds=(0.0, upper), method="bvls")
-    return BSpline(t, cumulative @ sol.x, 3)
+    return _BSpline(t, cumulative @ sol.x, 3)
 
 
 def candidate_intervals(points: int) -> tuple[int, ...]:
