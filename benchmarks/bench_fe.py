@@ -2,7 +2,7 @@
 
 Case: AISI 201 sphere (R = 8.8 mm, elastic-perfectly plastic) on AISI 1010, frictionless, mesh
 level 1, loaded to 1000 delta_c (436 um) and unloaded, one ccx process (OMP_NUM_THREADS=1),
-the cache bypassed. The issue's target: at most 10 minutes on the project's 2-core machine.
+the cache bypassed. The target: at most 10 minutes on the project's 2-core machine.
 Recorded: 2026-11-28, CalculiX 2.20, gmsh 4.15.2, the shared 2-core machine under other load:
 about 4 minutes of ccx (95 increments, 19 cut-backs, 2 324 elements), converged.
 

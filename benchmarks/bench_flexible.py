@@ -6,7 +6,7 @@ measured mu 0.20 / 0.13 / 0.10 as Coulomb mu), the Ghaednia law, gravity on, the
 tolerance. The baseline is ``impactlab.dynamics.flex_reference.drop_reference`` (corotational
 Timoshenko finite elements, Ne = 80, scipy ``solve_ivp`` DOP853 with events, rtol 1e-8), timed
 in the same run: the figure is the ratio FE / flexible, robust against other load on a shared
-machine. The issue's target: one flexible drop in 10 ms or less on one core.
+machine. The target: one flexible drop in 10 ms or less on one core.
 
 Batch: flexible drops per CPU-second of ``simulate_drops`` (one compiled call over a grid of
 BATCH_CASES drops: angles 15-75 deg, vy -0.8 to -3 m/s, mu 0.1-0.3) against ``simulate_drop``
