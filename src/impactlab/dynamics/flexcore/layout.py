@@ -263,8 +263,9 @@ O = {name: i for i, name in enumerate(DROP_OUTPUT_FIELDS)}
     O_POTENTIAL_ENERGY,
 ) = range(N_DROP_OUT)
 
-#: History columns: per end, interference [m], normal and tangential force [N], x and y of the
-#: lowest point of the sphere [m]; the centre of mass (x, y) [m], the rotation phi [rad], the
+#: History columns: per end, interference [m], normal and tangential force [N], x of the
+#: sphere's lowest point and height of its centre above the flat (R - delta) [m]; the centre of
+#: mass (x, y) [m], the rotation phi [rad], the
 #: tip's slip velocity [m/s] and the relative energy error [1].
 DROP_HISTORY_FIELDS = (
     "t",
