@@ -62,7 +62,7 @@ def impact_batch(threads, law, lp, fric, bpa, init, mu, g, const_angle, rtol, di
                 status[i] = st
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _stride(n):
     """A stride coprime to ``n`` near n / golden ratio (1 for n < 3): k -> k stride mod n is a
     permutation that scatters neighbouring blocks of cases."""

@@ -274,7 +274,7 @@ def _regime(fric, md, acc, t, vn0):
     return REGIME_SLIP
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _separation(out, fric, c, md, y, acc, t, vx0, vy0, vn0, th0, rod, e0, rtol, diag):
     """Write the results at separation (state ``y`` at time ``t``) into ``out``, the result
     flags included."""

@@ -52,7 +52,7 @@ OPENING_FIRST = 0.5
 THROUGH_SWITCH = 0.1
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def opening(
     law, p, fric, c, md, y, K, gold, rtol, sc, tstar, dstar, fscale, acc, diag, record, hist, nh,
     work,
@@ -131,7 +131,7 @@ def near_separation(md, evq, h):
     return vn > 0.0 and evq[0] - md[M_DR] < APPROACH_STEPS * h * vn
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def approach_end(
     law, p, fric, c, md, y, K, t, rtol, sc, tstar, dstar, fscale, acc, diag, record, hist, nh,
     work,

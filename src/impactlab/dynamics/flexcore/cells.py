@@ -52,7 +52,7 @@ def views(c, md, ek, k):
     return cm, sg, cp, L, Ld, f
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def cell_forces(law, p, c, md, k, y, o, ek):
     """F_t [N] of end k in contact from its cells (forces at y[o:]); fills ``EK_A``, ``EK_AD``
     and the end's limits, rates and forces in ``ek`` (``ek`` holds delta, v_n and F_n)."""
@@ -76,7 +76,7 @@ def cell_forces(law, p, c, md, k, y, o, ek):
     return Ft
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def cell_rates(c, md, k, o, ek, der):
     """The derivatives of end k's cell forces into der[o:o + NCS] (0 out of contact)."""
     cm, sg, cp, _L, Ld, f = views(c, md, ek, k)
@@ -93,7 +93,7 @@ def cell_rates(c, md, k, o, ek, der):
             der[o + i] = sg[i] * Ld[i]
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def cell_events(c, md, k, ek, ev):
     """End k's cell events into ev[NEV + k NEVC:] (-1 where none can fire)."""
     e0 = F.NFEV + k * F.NFEVC
@@ -138,7 +138,7 @@ def horizon(c, md, ek):
     return hz
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def step_cap(h, c, md, ek, hmin):
     """Partial slip: the step ``h`` ended just past (x STEP_PAST) the next cell boundary."""
     if c[F.FC_FRIC] != F.FR_PARTIAL:
@@ -147,7 +147,7 @@ def step_cap(h, c, md, ek, hmin):
     return min(h, STEP_PAST * hz + hmin) if hz > 0.0 else h
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def n_active(md, n, M):
     """Components of the state in the error norm: all but the cells out of contact."""
     ny0 = 6 + 2 * M + F.NQUAD

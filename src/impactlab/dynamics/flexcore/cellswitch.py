@@ -34,7 +34,7 @@ def cell_offset(mdl, k):
     return 6 + 2 * mdl[3].shape[0] + F.NQUAD + k * F.NCS
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _due(mdl, md, k, y, ek):
     """Apply end k's first birth or release already due, else every due stick/slip switch;
     False when none is."""
@@ -46,7 +46,7 @@ def _due(mdl, md, k, y, ek):
     return apply_due(y, o, cm, sg, cp, L, Ld, f, c[F.FC_MU], mdl[1][P_ESTAR], fn, vn, vs, ar, ad)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def settle(mdl, md, y, der, ev, ek, Jn, Jt):
     """Apply every cell switch already due at y (several cells can change within one step;
     only the first event is located). False if it does not settle."""
@@ -61,7 +61,7 @@ def settle(mdl, md, y, der, ev, ek, Jn, Jt):
     return False
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def apply_cell_event(jev, mdl, md, y, ek):
     """The switch of the cell event ``jev`` (>= NEV: birth, release or a cell's stick/slip)."""
     c = mdl[2]
@@ -86,7 +86,7 @@ def apply_cell_event(jev, mdl, md, y, ek):
             to_stick(i, y, o, cm, sg, L)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def touch_cells(mdl, md, k, y, ek):
     """End k touches: its cells reset, the first born at a = 0 (``ek``: before the touch)."""
     c = mdl[2]

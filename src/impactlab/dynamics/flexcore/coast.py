@@ -55,7 +55,7 @@ def jump(mdl, md, y, t, h, K, gold, sv, dents, record_on, hist, nh, yev, yt, der
     return True, t, hist, nh
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def out_of_contact(mdl, md, y, t, h, K, gold, sv, dents, stop_mode, record_on, hist, nh, yev, yt,
                    der, ev, ek, Jn, Jt):  # fmt: skip
     """No end in contact: the end-of-sequence test (every ``F.SV_CHECK_DT``), then a free-flight

@@ -31,7 +31,7 @@ _PENDING_ORDER = (
 )
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def _apply(jev, mdl, md, y, t, sv, contacts, dents, cur_con, snap, y_end, der, ev, ek, Jn, Jt):
     """The action of event ``jev`` (an end's, or a partial-slip cell's: ``jev`` >= NEV);
     returns (status, end, kind: -1 for a cell event)."""
@@ -58,7 +58,7 @@ def _apply(jev, mdl, md, y, t, sv, contacts, dents, cur_con, snap, y_end, der, e
     return st, k, kind
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def handle_events(
     jev, mdl, md, y, t, K, gold, sv, sc, contacts, dents, cur_con, snap, y_end, der, ev, ek, Jn, Jt
 ):

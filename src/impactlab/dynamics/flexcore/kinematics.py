@@ -109,7 +109,7 @@ def stick_ratio(c, M, Jn, Jt, k):
     return -mobility(c, M, Jt, Jn, k, k) / mobility(c, M, Jt, Jt, k, k)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def geometric_energy(Tg, ia, ib, y):
     """The cubic geometric-stiffness potential 1/2 sum T_abc q_a q_b q_c [J]."""
     E = 0.0
@@ -123,7 +123,7 @@ def geometric_energy(Tg, ia, ib, y):
     return E
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def mechanical_energy(mdl, y):
     """T + V [J]: kinetic, modal strain (with the geometric term) and gravity from the
     first-touch pose."""

@@ -109,7 +109,7 @@ def cell_switch(i, cm, sg, cp, limit, rate, fi, ar, ad, vs):
     return -1.0
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def birth(i, y, o, cm, sg, cp, mu, estar, Fn, vn, vs, ar, ad):
     """Cell ``i`` (force y[o + i]) enters the contact unstressed. Near its inner end the limit
     grows like 1.5 mu F_n l^2/a^2 and the stick trial like G_1 |v_slip| l^2/a': it is born
@@ -129,7 +129,7 @@ def birth(i, y, o, cm, sg, cp, mu, estar, Fn, vn, vs, ar, ad):
         sg[i] = 0.0
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def to_slip(i, y, o, cm, sg, L):
     """Cell ``i`` starts to slip in the direction of its force, clamped to its limit."""
     cm[i] = SLIP
@@ -137,7 +137,7 @@ def to_slip(i, y, o, cm, sg, L):
     y[o + i] = sg[i] * L[i]
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def to_stick(i, y, o, cm, sg, L):
     """Cell ``i`` sticks with the force it had on its limit."""
     y[o + i] = sg[i] * L[i]

@@ -46,7 +46,7 @@ def step(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew):
     return math.sqrt(error_sum(y, ynew, K, h, rtol, sc, nact) / nact), ev
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 def event_at(k, law, p, c, md, y, cm, sg, cp, W, g):
     """Event function ``k`` at state ``y`` (``model.event_value``: that function alone, the
     value ``events`` gives it; ``W`` and ``g`` are left as they are)."""

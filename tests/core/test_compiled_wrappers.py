@@ -1,0 +1,74 @@
+"""Compiled functions without a Python entry (``no_cpython_wrapper=True``) are never called
+from Python.
+
+numba skips the Python-callable wrapper of such a function (and, with ``no_cfunc_wrapper``, its
+C-callable one; together about 3 s of a cold rigid compile), and a call from Python then
+crashes the interpreter instead of raising an error. Only compiled code may
+call them: this test looks for every use of their names in Python code (outside compiled
+function bodies and imports) in the package, the tests, the benchmarks and the tools. It
+matches by name only, so a Python function of the same name elsewhere also fails it: such a
+compiled function keeps its wrapper.
+"""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+FOLDERS = ("src", "tests", "benchmarks", "tools")
+COMPILERS = {"njit", "jit", "njit_no_refcount"}
+
+
+def _decorator_name(dec: ast.expr) -> str:
+    d = dec.func if isinstance(dec, ast.Call) else dec
+    return d.id if isinstance(d, ast.Name) else getattr(d, "attr", "")
+
+
+def _without_wrapper(dec: ast.expr) -> bool:
+    return isinstance(dec, ast.Call) and any(
+        k.arg == "no_cpython_wrapper" and isinstance(k.value, ast.Constant) and k.value.value
+        for k in dec.keywords
+    )
+
+
+def _compiled(tree: ast.AST) -> list[ast.FunctionDef]:
+    return [
+        n
+        for n in ast.walk(tree)
+        if isinstance(n, ast.FunctionDef)
+        and any(_decorator_name(d) in COMPILERS for d in n.decorator_list)
+    ]
+
+
+def _trees() -> dict[Path, ast.Module]:
+    files = [p for folder in FOLDERS for p in (ROOT / folder).rglob("*.py")]
+    return {p: ast.parse(p.read_text()) for p in files}
+
+
+def test_functions_without_wrapper_are_called_only_from_compiled_code() -> None:
+    trees = _trees()
+    internal: dict[str, str] = {}
+    for path, tree in trees.items():
+        for fn in _compiled(tree):
+            if any(_without_wrapper(d) for d in fn.decorator_list):
+                internal[fn.name] = path.relative_to(ROOT).as_posix()
+    assert len(internal) > 40  # the engine's internal functions are found
+    uses: list[str] = []
+    for path, tree in trees.items():
+        inside = {id(n) for fn in _compiled(tree) for n in ast.walk(fn)}
+        for node in ast.walk(tree):
+            if id(node) in inside or isinstance(node, ast.Import | ast.ImportFrom):
+                continue
+            if isinstance(node, ast.Name):
+                name = node.id
+            elif isinstance(node, ast.Attribute):
+                name = node.attr
+            elif isinstance(node, ast.Constant) and isinstance(node.value, str):
+                name = node.value
+            else:
+                continue
+            if name in internal:
+                where = f"{path.relative_to(ROOT).as_posix()}:{node.lineno}"
+                uses.append(f"{name} ({internal[name]}) used from Python at {where}")
+    assert not uses, "\n".join(uses)
