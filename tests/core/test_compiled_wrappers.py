@@ -1,13 +1,12 @@
-"""Compiled functions without a Python entry (``no_cpython_wrapper=True``) are never called
-from Python.
+"""Compiled functions without wrappers (``njit_internal``, or ``no_cpython_wrapper=True``)
+are never called from Python.
 
-numba skips the Python-callable wrapper of such a function (and, with ``no_cfunc_wrapper``, its
-C-callable one; together about 3 s of a cold rigid compile), and a call from Python then
-crashes the interpreter instead of raising an error. Only compiled code may
-call them: this test looks for every use of their names in Python code (outside compiled
-function bodies and imports) in the package, the tests, the benchmarks and the tools. It
-matches by name only, so a Python function of the same name elsewhere also fails it: such a
-compiled function keeps its wrapper.
+numba compiles such a function without its Python- and C-callable wrappers (less compile
+time), and a call from Python then crashes the interpreter instead of raising an error. Only
+compiled code may call them: this test looks for every use of their names in Python code
+(outside compiled function bodies and imports) in the package, the tests, the benchmarks and
+the tools. It matches by name only, so a Python function of the same name elsewhere also fails
+it: such a compiled function keeps its wrappers.
 """
 
 from __future__ import annotations
@@ -17,7 +16,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
 FOLDERS = ("src", "tests", "benchmarks", "tools")
-COMPILERS = {"njit", "jit", "njit_no_refcount"}
+COMPILERS = {"njit", "jit", "njit_no_refcount", "njit_internal"}
 
 
 def _decorator_name(dec: ast.expr) -> str:
@@ -26,6 +25,8 @@ def _decorator_name(dec: ast.expr) -> str:
 
 
 def _without_wrapper(dec: ast.expr) -> bool:
+    if _decorator_name(dec) == "njit_internal":
+        return True
     return isinstance(dec, ast.Call) and any(
         k.arg == "no_cpython_wrapper" and isinstance(k.value, ast.Constant) and k.value.value
         for k in dec.keywords

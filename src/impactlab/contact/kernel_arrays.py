@@ -18,7 +18,7 @@ _FORCE = 0
 _RADIUS = 1
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit(cache=True, error_model="numpy")
 def _loading_array(quantity: int, law: int, p: np.ndarray, delta: np.ndarray) -> np.ndarray:
     """``loading_force`` (``_FORCE``) or ``loading_contact_radius`` (``_RADIUS``) over an array
     of interferences, in the array's shape."""

@@ -28,7 +28,7 @@ from numba import njit
 from impactlab.contact.kernels import P_ESTAR
 from impactlab.dynamics.core.accumulate import track
 from impactlab.dynamics.core.history import record as record_row
-from impactlab.dynamics.kernels._jit import njit_no_refcount
+from impactlab.dynamics.kernels._jit import njit_internal, njit_no_refcount
 from impactlab.dynamics.kernels.dormand_prince import (
     A21,
     A31,
@@ -202,7 +202,7 @@ def _fired(gold, gnew):
     return -1
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def w_state(law, p, fric, c, md, y, w):
     """(quantities, event tuple) at state ``y`` (length NS) with the interference delta_r + w^2
     of the final approach."""
@@ -210,7 +210,7 @@ def w_state(law, p, fric, c, md, y, w):
     return evq, _events(law, p, fric, c, md, evq, y[S_Q])
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def _g_friction(law, p, fric, c, md, Y, w, sgn):
     """The stick/slip event function at (Y, w)."""
     _r, evq = _rhs_w_cold(law, p, fric, c, md, Y, w, sgn)
@@ -247,7 +247,7 @@ def _locate(law, p, fric, c, md, Y, K, w, sgn, h, Q, Yt, g0, b, g1):
     return b
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def _to(law, p, fric, c, md, Y, k0, w, sgn, H, rtol, sc, tscale, out, work):
     """Integrate from (Y, w) over exactly H in u with error control into ``out`` (the state at
     an event is recomputed, as ``integrator.integrate_to``); returns (steps, quantities)."""
@@ -280,7 +280,7 @@ def _to(law, p, fric, c, md, Y, k0, w, sgn, H, rtol, sc, tscale, out, work):
     return n, evq
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def w_integrate(
     law, p, fric, c, md, y, t, wa, wb, first, rtol, sc, tscale, acc, diag, record, hist, nh, work
 ):

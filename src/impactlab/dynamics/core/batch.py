@@ -10,6 +10,7 @@ from numba import njit, prange
 from impactlab.contact.kernels import P_ESTAR, loading_force, residual_depth, unloading_radius
 from impactlab.dynamics.core.atomic import fetch_add
 from impactlab.dynamics.core.driver import impact
+from impactlab.dynamics.kernels._jit import njit_internal
 
 #: Cases a thread takes at once from the work queue (a block of neighbouring rows of ``out``).
 BLOCK = 16
@@ -62,7 +63,7 @@ def impact_batch(threads, law, lp, fric, bpa, init, mu, g, const_angle, rtol, di
                 status[i] = st
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def _stride(n):
     """A stride coprime to ``n`` near n / golden ratio (1 for n < 3): k -> k stride mod n is a
     permutation that scatters neighbouring blocks of cases."""

@@ -24,6 +24,7 @@ from impactlab.dynamics.core.events import GO_ON, handle_event
 from impactlab.dynamics.core.history import record as record_row
 from impactlab.dynamics.core.history import record_substeps
 from impactlab.dynamics.core.integrator import dp_step, first_event, integrate_to
+from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.dormand_prince import RECOMPUTE_LEN, STEP_LEN, step_views
 from impactlab.dynamics.kernels.layout import (
     A_DMAX,
@@ -274,7 +275,7 @@ def _regime(fric, md, acc, t, vn0):
     return REGIME_SLIP
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def _separation(out, fric, c, md, y, acc, t, vx0, vy0, vn0, th0, rod, e0, rtol, diag):
     """Write the results at separation (state ``y`` at time ``t``) into ``out``, the result
     flags included."""

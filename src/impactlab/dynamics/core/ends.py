@@ -12,6 +12,7 @@ from numba import njit
 from impactlab.dynamics.core.approach import W_EVENT, W_NAN, W_REACHED, w_integrate, w_state
 from impactlab.dynamics.core.events import GO_ON, NO_EVENTS, handle_event, on_event
 from impactlab.dynamics.core.history import record as record_row
+from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.layout import (
     C_DLIM,
     C_DSW,
@@ -52,7 +53,7 @@ OPENING_FIRST = 0.5
 THROUGH_SWITCH = 0.1
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def opening(
     law, p, fric, c, md, y, K, gold, rtol, sc, tstar, dstar, fscale, acc, diag, record, hist, nh,
     work,
@@ -131,7 +132,7 @@ def near_separation(md, evq, h):
     return vn > 0.0 and evq[0] - md[M_DR] < APPROACH_STEPS * h * vn
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def approach_end(
     law, p, fric, c, md, y, K, t, rtol, sc, tstar, dstar, fscale, acc, diag, record, hist, nh,
     work,

@@ -8,6 +8,7 @@ import numpy as np
 from numba import njit
 
 from impactlab.dynamics.core.accumulate import A_EEL, stored
+from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.layout import (
     A_WCOMP,
     A_WMARK,
@@ -28,7 +29,7 @@ GO_ON = -1  # internal status: the impact goes on
 NO_EVENTS = (-1.0, -1.0, -1.0, -1.0, -1.0, -1.0)  # an event tuple where none can fire
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def on_event(ev, law, p, fric, c, md, y, evq, acc):
     """Stop at the event ``ev`` (separation: ST_OK, law limit, failure) or switch: normal-work
     bookkeeping and mode transition. Returns (status or GO_ON, constants, mode)."""

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from numba import njit
 
+from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.buffers import grown
 from impactlab.dynamics.kernels.dormand_prince import dense
 from impactlab.dynamics.kernels.friction import sticking
@@ -71,7 +72,7 @@ def record(hist, n, t, law, p, fric, c, md, y):
     return hist, n + 1
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def record_substeps(hist, n, t, h, theta, law, p, fric, c, md, y, K, Q, yt):
     """Rows at the dense-output points t + j h / HISTORY_SUBSTEPS inside the step from ``y``
     that lie before ``theta`` (the event, or 1); ``Q``: dense-output coefficients, ``yt``: work

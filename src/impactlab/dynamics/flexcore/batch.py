@@ -22,6 +22,7 @@ from numba import njit, prange
 from impactlab.contact.history_kernels import loading_contact_radius
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.driver import drop
+from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.cells import CP_DX, N_CELLS
 from impactlab.dynamics.kernels.quality import energy_gained, gravity_dominated
 from impactlab.flags import FLAG_ENERGY_GAIN, FLAG_GRAVITY_DOMINATED, FLAG_OTHER_END
@@ -40,7 +41,7 @@ def initial_energy(m, inertia, vx, vy, w):
     return 0.5 * m * (vx * vx + vy * vy) + 0.5 * inertia * (w * w)
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def tip_sequence(contacts, n_contacts, duration, normal_impulse):
     """(duration [s], normal impulse [N s]) of the tip's sequence: its contacts before the
     other end's first touch (``duration`` and ``normal_impulse``, the drop's totals, when the
@@ -79,7 +80,7 @@ def sequence_flags(out, e0, m, g, rtol, contacts, n_contacts):
     return flags
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def case_model(mdl, angle, mu, fid, w0, w1, max_steps):
     """The model tuple of one case: a copy of the constants vector with the case's angle, its
     sine and cosine, mu, friction id, cell widths [m] and step limit (as ``model.constants``)."""
@@ -111,7 +112,7 @@ def _run(mdl, vx, vy, w, rtol, t_max, stop_mode, no_history, out, contacts, dent
     return st, ncon
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def cell_widths(law, p, contacts, n_contacts):
     """Partial slip: the cell width of each end [m] (``N_CELLS`` cells over the largest loading
     contact radius of its contacts; an end without contacts: the tip's), as ``simulate_drop``."""
@@ -128,7 +129,7 @@ def cell_widths(law, p, contacts, n_contacts):
     return a0 * 1.0001 / N_CELLS, a1 * 1.0001 / N_CELLS
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def one_drop(mdl, init, mu, fid, rtol, t_max, stop_mode, out, checks):
     """One case of the batch: fills ``out`` (layout.N_DROP_OUT) and ``checks`` (N_CHECKS);
     returns its status."""

@@ -25,6 +25,7 @@ from numba import njit
 
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.friction import rigid_mode
+from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.cells import (
     CP_DX,
     OUT,
@@ -52,7 +53,7 @@ def views(c, md, ek, k):
     return cm, sg, cp, L, Ld, f
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def cell_forces(law, p, c, md, k, y, o, ek):
     """F_t [N] of end k in contact from its cells (forces at y[o:]); fills ``EK_A``, ``EK_AD``
     and the end's limits, rates and forces in ``ek`` (``ek`` holds delta, v_n and F_n)."""
@@ -76,7 +77,7 @@ def cell_forces(law, p, c, md, k, y, o, ek):
     return Ft
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def cell_rates(c, md, k, o, ek, der):
     """The derivatives of end k's cell forces into der[o:o + NCS] (0 out of contact)."""
     cm, sg, cp, _L, Ld, f = views(c, md, ek, k)
@@ -93,7 +94,7 @@ def cell_rates(c, md, k, o, ek, der):
             der[o + i] = sg[i] * Ld[i]
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def cell_events(c, md, k, ek, ev):
     """End k's cell events into ev[NEV + k NEVC:] (-1 where none can fire)."""
     e0 = F.NFEV + k * F.NFEVC
@@ -138,7 +139,7 @@ def horizon(c, md, ek):
     return hz
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def step_cap(h, c, md, ek, hmin):
     """Partial slip: the step ``h`` ended just past (x STEP_PAST) the next cell boundary."""
     if c[F.FC_FRIC] != F.FR_PARTIAL:
@@ -147,7 +148,7 @@ def step_cap(h, c, md, ek, hmin):
     return min(h, STEP_PAST * hz + hmin) if hz > 0.0 else h
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def n_active(md, n, M):
     """Components of the state in the error norm: all but the cells out of contact."""
     ny0 = 6 + 2 * M + F.NQUAD

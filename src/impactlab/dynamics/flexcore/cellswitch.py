@@ -16,6 +16,7 @@ from impactlab.contact.kernels import P_ESTAR
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.cells import reset, views
 from impactlab.dynamics.flexcore.rhs import evaluate
+from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.cells import (
     SLIP,
     STICK,
@@ -34,7 +35,7 @@ def cell_offset(mdl, k):
     return 6 + 2 * mdl[3].shape[0] + F.NQUAD + k * F.NCS
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def _due(mdl, md, k, y, ek):
     """Apply end k's first birth or release already due, else every due stick/slip switch;
     False when none is."""
@@ -46,7 +47,7 @@ def _due(mdl, md, k, y, ek):
     return apply_due(y, o, cm, sg, cp, L, Ld, f, c[F.FC_MU], mdl[1][P_ESTAR], fn, vn, vs, ar, ad)
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def settle(mdl, md, y, der, ev, ek, Jn, Jt):
     """Apply every cell switch already due at y (several cells can change within one step;
     only the first event is located). False if it does not settle."""
@@ -61,7 +62,7 @@ def settle(mdl, md, y, der, ev, ek, Jn, Jt):
     return False
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def apply_cell_event(jev, mdl, md, y, ek):
     """The switch of the cell event ``jev`` (>= NEV: birth, release or a cell's stick/slip)."""
     c = mdl[2]
@@ -86,7 +87,7 @@ def apply_cell_event(jev, mdl, md, y, ek):
             to_stick(i, y, o, cm, sg, L)
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def touch_cells(mdl, md, k, y, ek):
     """End k touches: its cells reset, the first born at a = 0 (``ek``: before the touch)."""
     c = mdl[2]

@@ -12,6 +12,7 @@ from impactlab.dynamics.flexcore.contacts import (
 from impactlab.dynamics.flexcore.flight import flight, jump_length, left_for_good
 from impactlab.dynamics.flexcore.history import record
 from impactlab.dynamics.flexcore.rhs import evaluate
+from impactlab.dynamics.kernels._jit import njit_internal
 
 
 @njit(cache=True, error_model="numpy")
@@ -55,7 +56,7 @@ def jump(mdl, md, y, t, h, K, gold, sv, dents, record_on, hist, nh, yev, yt, der
     return True, t, hist, nh
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def out_of_contact(mdl, md, y, t, h, K, gold, sv, dents, stop_mode, record_on, hist, nh, yev, yt,
                    der, ev, ek, Jn, Jt):  # fmt: skip
     """No end in contact: the end-of-sequence test (every ``F.SV_CHECK_DT``), then a free-flight

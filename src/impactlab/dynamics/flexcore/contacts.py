@@ -37,6 +37,7 @@ from impactlab.dynamics.flexcore.friction import (
     radius_factor,
 )
 from impactlab.dynamics.flexcore.rhs import evaluate
+from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.layout import FR_COULOMB, FR_MINDLIN
 
 
@@ -57,7 +58,7 @@ def in_dent(dents, nd, k, x):
     return best
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def set_threshold(md, dents, nd, k, x, delta):
     """Out of contact: the touch threshold of end k (F.MD_DR) and its dent (F.MD_DENT) at x. The
     threshold is kept where the new one would already be exceeded (the sphere, inside a dent's
@@ -95,7 +96,7 @@ def pending(g, ek, md, k, kind, fric, tol_v, tol_d, tol_f):
     return v > 0.0
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def new_dent(dents, di, k, x, R):
     """Dent ``di`` of end k at x on virgin flat."""
     dents[di, F.DT_END] = k
@@ -109,7 +110,7 @@ def new_dent(dents, di, k, x, R):
     dents[di, F.DT_NC] = 1.0
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def _reload_mode(mdl, md, dents, k, di):
     """Mode table of end k touching dent di: its unloading curve (loading if it has none)."""
     c = mdl[2]
@@ -126,7 +127,7 @@ def _reload_mode(mdl, md, dents, k, di):
         md[k, F.MD_PH] = 0.0
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def on_touch(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, ek, Jn, Jt):
     """End k touches the flat at t: a new contact record, on its dent or a new one. Returns
     the status."""
@@ -176,7 +177,7 @@ def on_touch(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, ek, Jn, Jt):
     return F.ST_OK
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def on_turn(mdl, md, k, delta, dents):
     """Turning point of delta at end k: on the loading curve, the unloading branch of
     delta_m = delta is set and stored in its dent. Returns the status."""
@@ -206,7 +207,7 @@ def on_turn(mdl, md, k, delta, dents):
     return F.ST_OK
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def on_separation(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, y_end, ek):
     """End k leaves the flat at t: close its contact record, keep the state (``y_end``) and
     ask for an end-of-sequence test."""
@@ -237,7 +238,7 @@ def on_separation(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, y_end, e
     set_threshold(md, dents, int(sv[F.SV_ND]), k, ek[k, F.EK_X], ek[k, F.EK_DELTA])
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def on_friction(mdl, md, y, k, der, ev, ek, Jn, Jt):
     """Stick/slip switch of end k. Coulomb: from slip at v_t = 0, stick or reverse (decided
     with the stick force); from stick, slip against the needed force. Mindlin: the rigid

@@ -5,8 +5,6 @@ from __future__ import annotations
 
 import math
 
-from numba import njit
-
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.cellswitch import apply_cell_event, settle
 from impactlab.dynamics.flexcore.contacts import (
@@ -18,6 +16,7 @@ from impactlab.dynamics.flexcore.contacts import (
 )
 from impactlab.dynamics.flexcore.friction import mindlin_after
 from impactlab.dynamics.flexcore.rhs import evaluate
+from impactlab.dynamics.kernels._jit import njit_internal
 
 #: The order in which simultaneous events are handled at a restart.
 _PENDING_ORDER = (
@@ -31,7 +30,7 @@ _PENDING_ORDER = (
 )
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def _apply(jev, mdl, md, y, t, sv, contacts, dents, cur_con, snap, y_end, der, ev, ek, Jn, Jt):
     """The action of event ``jev`` (an end's, or a partial-slip cell's: ``jev`` >= NEV);
     returns (status, end, kind: -1 for a cell event)."""
@@ -58,7 +57,7 @@ def _apply(jev, mdl, md, y, t, sv, contacts, dents, cur_con, snap, y_end, der, e
     return st, k, kind
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def handle_events(
     jev, mdl, md, y, t, K, gold, sv, sc, contacts, dents, cur_con, snap, y_end, der, ev, ek, Jn, Jt
 ):

@@ -29,6 +29,7 @@ from impactlab.contact.history_kernels import contact_radius as _contact_radius
 from impactlab.contact.kernels import P_ESTAR, P_R
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.kinematics import stick_ratio
+from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.friction import friction_switch, mindlin_trial_rate
 from impactlab.dynamics.kernels.layout import FR_COULOMB, FR_IMPULSE, FR_MINDLIN
 from impactlab.dynamics.kernels.normal import radius
@@ -122,7 +123,7 @@ def coulomb_decide(c, M, Jn, Jt, k, Fn, Ft_stick, mu):
     return -1.0 if r > 0.0 else 1.0
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def initial_mode(p, c, M, md, k, vt, vn, Jn, Jt):
     """The friction mode of end k at touch (mu > 0): Coulomb the sign of v_t or the F_n -> 0+
     decision; impulse_ratio the sign of F_t; Mindlin gross slip when the Hertzian start ratio
@@ -152,7 +153,7 @@ def initial_mode(p, c, M, md, k, vt, vn, Jn, Jt):
         md[k, F.MD_FM] = 1.0 if vt > 0.0 else -1.0
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def radius_factor(law, p, c, dm, dr, rr):
     """Mindlin and partial slip: a_loading(delta_m) / a_unloading(delta_m), the factor that
     makes the contact radius continuous at the turning point (as the rigid core's
@@ -164,7 +165,7 @@ def radius_factor(law, p, c, dm, dr, rr):
     return a_load / a_unl if a_unl > 0.0 else 1.0
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def mindlin_switch(c, md, k, y, iqt, ek):
     """The Mindlin stick/slip switch of end k (the rigid core's ``friction_switch``)."""
     fm, q = friction_switch(
@@ -188,7 +189,7 @@ def mindlin_switch(c, md, k, y, iqt, ek):
     y[iqt + k] = q
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def mindlin_after(mdl, md, k, kind, y, ek, sc, sv):
     """Mindlin: the state Q_t of end k and its error scale after the event ``kind`` (applied
     to ``md``; ``ek`` holds the quantities before it). Touch and separation: Q_t = 0; turning

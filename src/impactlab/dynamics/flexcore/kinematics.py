@@ -19,6 +19,7 @@ from numba import njit
 
 from impactlab.contact.kernels import P_ESTAR, loading_force, unloading_force
 from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.kernels._jit import njit_internal
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -109,7 +110,7 @@ def stick_ratio(c, M, Jn, Jt, k):
     return -mobility(c, M, Jt, Jn, k, k) / mobility(c, M, Jt, Jt, k, k)
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def geometric_energy(Tg, ia, ib, y):
     """The cubic geometric-stiffness potential 1/2 sum T_abc q_a q_b q_c [J]."""
     E = 0.0
@@ -123,7 +124,7 @@ def geometric_energy(Tg, ia, ib, y):
     return E
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def mechanical_energy(mdl, y):
     """T + V [J]: kinetic, modal strain (with the geometric term) and gravity from the
     first-touch pose."""

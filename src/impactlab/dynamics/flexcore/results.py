@@ -5,13 +5,12 @@ from __future__ import annotations
 
 import math
 
-from numba import njit
-
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.kinematics import geometric_energy, vibration_energy
+from impactlab.dynamics.kernels._jit import njit_internal
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def _tip_path(contacts, ncon, dents, nd):
     """(scar length, signed slip, slip path) [m] over the contacts and dents of end 0."""
     xlo = math.inf
@@ -32,7 +31,7 @@ def _tip_path(contacts, ncon, dents, nd):
     return xhi - xlo, slip, aslip
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def _energies(mdl, ye, out):
     """Works, vibration and rigid kinetic energy after the last contact."""
     c, om, om2, Tg, ia, ib = mdl[2], mdl[3], mdl[4], mdl[10], mdl[11], mdl[12]
@@ -59,7 +58,7 @@ def _energies(mdl, ye, out):
     out[F.O_TANGENTIAL_IMPULSE] = pt
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def fill_outputs(mdl, sv, t, ye, vx0, vy0, out, contacts, dents):
     """Fill ``out``: the run's counters always, the impact measures only when the sequence
     finished (NaN otherwise). ``ye``: the state at the last separation; t: the final time."""

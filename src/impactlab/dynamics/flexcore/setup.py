@@ -14,10 +14,11 @@ from impactlab.dynamics.flexcore.cellswitch import touch_cells
 from impactlab.dynamics.flexcore.contacts import new_dent
 from impactlab.dynamics.flexcore.friction import initial_mode
 from impactlab.dynamics.flexcore.rhs import evaluate
+from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.cells import CP_FTOL, CP_G1, CP_VTOL, N_CELLS
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def cell_scales(c, vn0, fscale, sc, o):
     """Partial slip: the cells' error scales (state from ``o``) and their parameters (as the
     slipcore's: G_1 = 4 G*, the slip-rate and force hystereses; the width is set in Python)."""
@@ -87,7 +88,7 @@ def scales(mdl, vx0, vy0, w0, sc, sv):
     sv[F.SV_EPS_CLEAR] = 1e-3 * dstar
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def first_touch(mdl, md, y, vx0, vy0, w0, sv, contacts, dents, cur_con, der, ev, ek, Jn, Jt):
     """The state and the mode table at the first touch of end 0 (on virgin flat)."""
     c = mdl[2]
@@ -120,7 +121,7 @@ def first_touch(mdl, md, y, vx0, vy0, w0, sv, contacts, dents, cur_con, der, ev,
     sv[F.SV_NCON] = 1
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def workspace(n, M, nev):
     """The run state ``sv`` (layout.SV_*, with the initial status and horizon), the mode table,
     the state, the error scales and the work arrays of a state of length n (M modes, nev

@@ -12,6 +12,7 @@ from impactlab.dynamics.flexcore.history import record
 from impactlab.dynamics.flexcore.kinematics import mechanical_energy
 from impactlab.dynamics.flexcore.rhs import evaluate
 from impactlab.dynamics.flexcore.stepper import dense, integrate_to, locate
+from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.buffers import copy_into
 from impactlab.dynamics.kernels.cells import any_stuck
 from impactlab.dynamics.kernels.dormand_prince import dense_coeffs
@@ -65,7 +66,7 @@ def first_event(mdl, md, y, h, K, Q, gold, gnew, sv, record_on, yt, der, ev, ek,
     return jev, theta, fired
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def missed_contact(md, sv, ek, jev):
     """The contact invariant after a step ending at event ``jev``: True when an end out of
     contact (other than one touching at ``jev``) lies below its touch threshold (its dent's
@@ -79,7 +80,7 @@ def missed_contact(md, sv, ek, jev):
     return False
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def step_stats(mdl, md, t, tend, sv, contacts, dents, cur_con, ek):
     """Per-contact and run maxima, stick time and dent extents after a step to ``tend``;
     False on a non-finite force."""
@@ -106,7 +107,7 @@ def step_stats(mdl, md, t, tend, sv, contacts, dents, cur_con, ek):
     return ok
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def record_inside(mdl, md, y, t, h, theta, Q, sv, hist, nh, yt, der, ev, ek, Jn, Jt):
     """Record the dense points at 1/4, 1/2, 3/4 of the step that lie before ``theta``."""
     for jj in range(1, 4):
@@ -119,7 +120,7 @@ def record_inside(mdl, md, y, t, h, theta, Q, sv, hist, nh, yt, der, ev, ek, Jn,
     return hist, nh
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def reject(h, err, sv):
     """The step size after a rejected step (error norm ``err``); 0 with ``sv[F.SV_STATUS]`` set
     when it underflows."""
@@ -130,7 +131,7 @@ def reject(h, err, sv):
     return h
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def accept(mdl, md, y, t, h, rtol, sc, K, Q, gold, gnew, ynew, yev, sv, contacts, dents, cur_con,
            record_on, hist, nh, yt, der, ev, ek, Jn, Jt):  # fmt: skip
     """An accepted step from (t, y): cut at the first event it crosses (the state there into

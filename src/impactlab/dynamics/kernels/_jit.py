@@ -1,4 +1,6 @@
-"""The compile option of the core's hot leaf functions: no reference counting.
+"""Compile options of the engine: no reference counting; no wrappers.
+
+No reference counting, for the core's hot leaf functions:
 
 A function that allocates nothing needs no reference counts of its array arguments; numba
 emits them anyway where a function is inlined (``inline="always"``) with array arguments, and
@@ -7,6 +9,11 @@ the LLVM pass that prunes them leaves many in a function as branched as the driv
 serialising ``lock`` instruction inside the dependency chain of the stages. Compiled with
 numba's private ``_nrt=False`` option of ``numba.njit`` (used in numba's own tests), these
 functions carry none; they may call ordinary compiled functions, but must not create arrays.
+
+No wrappers, for the functions that only compiled code calls: numba gives every compiled
+function a Python-callable and a C-callable wrapper; without them a cold rigid compile takes
+about 2.3 s (6 %) less (``docs/engine/first-run.md``). Called from Python, such a function
+crashes the interpreter: ``tests/core/test_compiled_wrappers.py`` checks that none is.
 """
 
 from __future__ import annotations
@@ -20,8 +27,16 @@ _F = TypeVar("_F", bound=Callable[..., Any])
 
 #: numba's switch of the reference counting (NRT) for one function.
 _NO_REFCOUNT: dict[str, Any] = {"_nrt": False}
+#: numba's switches of the Python- and C-callable wrappers of a function.
+_NO_WRAPPERS: dict[str, Any] = {"no_cpython_wrapper": True, "no_cfunc_wrapper": True}
 
 
 def njit_no_refcount(fn: _F) -> _F:
     """``njit(cache=True, error_model="numpy")`` without reference counting (see module)."""
     return njit(cache=True, error_model="numpy", **_NO_REFCOUNT)(fn)  # type: ignore[no-any-return]
+
+
+def njit_internal(fn: _F) -> _F:
+    """``njit(cache=True, error_model="numpy")`` without the Python- and C-callable wrappers,
+    for a function that only compiled code calls (see module)."""
+    return njit(cache=True, error_model="numpy", **_NO_WRAPPERS)(fn)  # type: ignore[no-any-return]

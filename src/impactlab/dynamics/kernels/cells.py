@@ -19,6 +19,8 @@ import math
 
 from numba import njit
 
+from impactlab.dynamics.kernels._jit import njit_internal
+
 # --- cell modes (an entry of the mode array ``cm``) --------------------------------------------
 OUT = 0  #: not (or no longer) in contact: f = 0
 STICK = 1  #: df/dt = 2 G_1 l v_slip (+ the share of a receding edge cell)
@@ -109,7 +111,7 @@ def cell_switch(i, cm, sg, cp, limit, rate, fi, ar, ad, vs):
     return -1.0
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def birth(i, y, o, cm, sg, cp, mu, estar, Fn, vn, vs, ar, ad):
     """Cell ``i`` (force y[o + i]) enters the contact unstressed. Near its inner end the limit
     grows like 1.5 mu F_n l^2/a^2 and the stick trial like G_1 |v_slip| l^2/a': it is born
@@ -129,7 +131,7 @@ def birth(i, y, o, cm, sg, cp, mu, estar, Fn, vn, vs, ar, ad):
         sg[i] = 0.0
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def to_slip(i, y, o, cm, sg, L):
     """Cell ``i`` starts to slip in the direction of its force, clamped to its limit."""
     cm[i] = SLIP
@@ -137,7 +139,7 @@ def to_slip(i, y, o, cm, sg, L):
     y[o + i] = sg[i] * L[i]
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def to_stick(i, y, o, cm, sg, L):
     """Cell ``i`` sticks with the force it had on its limit."""
     y[o + i] = sg[i] * L[i]

@@ -11,7 +11,7 @@ from __future__ import annotations
 from numba import njit
 
 from impactlab.contact.kernels import P_ESTAR
-from impactlab.dynamics.kernels._jit import njit_no_refcount
+from impactlab.dynamics.kernels._jit import njit_internal, njit_no_refcount
 from impactlab.dynamics.kernels.layout import (
     C_A0,
     C_B0,
@@ -60,7 +60,7 @@ def coulomb_decide(mu, spin, fn, a, b, mass, inertia, frozen):
     return -1.0 if ratio > 0.0 else 1.0
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def friction_switch(
     fric, mode, compressing, spin, q, fn, ft, v_slip, a, b, kt, mu, mass, inertia, frozen
 ):
@@ -167,7 +167,7 @@ def sticking(fric, md):
     return (fric == FR_COULOMB or fric == FR_MINDLIN) and md[M_FM] == 0.0
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def initial_friction_mode(fric, p, c, spin, vn0, vt0):
     """(friction mode, impulse-ratio sign) at first touch; vn0, vt0: normal and slip velocity
     of the contact point [m/s]."""

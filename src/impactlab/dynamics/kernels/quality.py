@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from numba import njit
 
+from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.flags import (
     ENERGY_GAIN_RTOL_FACTOR,
     ENERGY_ROUNDOFF,
@@ -15,7 +16,7 @@ from impactlab.flags import (
 )
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def energy_gained(e0, e_kin, e_pot, rtol):
     """True when the total energy at separation, kinetic ``e_kin`` + gravity potential
     ``e_pot`` [J], exceeds the initial kinetic energy ``e0`` [J] by more than the integration
@@ -32,7 +33,7 @@ def gravity_dominated(gravity_impulse, normal_impulse):
     return gravity_impulse > 0.0 and gravity_impulse > GRAVITY_IMPULSE_RATIO * normal_impulse
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def result_flags(e0, e_kin, e_pot, rtol, gravity_impulse, normal_impulse):
     """The ``flags`` output (a ``ResultFlag`` bitmask, as a float) of an impact that separated."""
     flags = 0

@@ -29,6 +29,7 @@ from impactlab.contact.kernels import (
     TABLE_HEADER,
     TABLE_MAGIC,
 )
+from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.friction import initial_friction_mode
 from impactlab.dynamics.kernels.layout import (
     C_A0,
@@ -56,7 +57,7 @@ from impactlab.dynamics.kernels.status import (
 )
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def check_inputs(law, p, fric, bp, th0, vx0, vy0, w0, mu, g, rtol):
     """ST_OK, or the status code of the first invalid input (see ``impact``)."""
     for i in range(NB):
@@ -140,7 +141,7 @@ def constants(p, bp, th0, mu, g, const_angle):
     )
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def initial_mode(fric, p, c, w0, vn0, vt0):
     """The mode tuple ``md`` (``M_*``) at first touch: loading curve, compressing, the friction
     mode of the initial slip."""
@@ -149,7 +150,7 @@ def initial_mode(fric, p, c, w0, vn0, vt0):
     return (0.0, 0.0, 0.0, c[C_R], fm, 1.0, sir, 1.0)
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def error_scales(fric, p, c, vn0, sc):
     """(tstar, dstar, fscale): the Hertz time and interference scales t* [s], delta* [m] and
     the tangential force scale [N]; the absolute scales of the state (error control) into

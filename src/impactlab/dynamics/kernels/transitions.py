@@ -21,6 +21,7 @@ from impactlab.contact.kernels import (
     residual_depth,
     unloading_radius,
 )
+from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.friction import (
     frictional,
     mindlin_state_at_reload,
@@ -45,7 +46,7 @@ from impactlab.dynamics.kernels.status import ST_NAN, ST_OK
 from impactlab.dynamics.kernels.tuples import mode_with, state_tuple
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def without_switch(c):
     """The constants tuple without the law-switch event (passed once: later reloading happens
     beyond it)."""
@@ -70,7 +71,7 @@ def without_switch(c):
     )
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def unloading_branch(law, p, fric, md, delta):
     """(status, mode) on the unloading branch from the turning point ``delta`` [m] of the
     loading curve: delta_m, delta_r, R_r and (Mindlin) the contact-radius factor."""
@@ -87,7 +88,7 @@ def unloading_branch(law, p, fric, md, delta):
     return ST_OK, (1.0, delta, dri, rr, md[M_FM], md[M_COMP], md[M_SIR], af)
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def switch_mode(ev, law, p, fric, c, md, y, evq):
     """(status, mode) after the event ``ev`` (EV_VN, EV_RELOAD or EV_FRIC) at state ``y``;
     converts the Mindlin state ``y[S_Q]`` in place. ``evq``: the quantities evaluated at ``y``

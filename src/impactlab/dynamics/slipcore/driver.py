@@ -14,6 +14,7 @@ from numba import njit
 
 from impactlab.bodies.layout import BP_KIND, KIND_ROD
 from impactlab.contact.kernels import P_ESTAR
+from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.buffers import copy_into
 from impactlab.dynamics.kernels.cells import CP_DX, CP_FTOL, CP_G1, CP_VTOL, STEP_PAST, birth
 from impactlab.dynamics.kernels.dormand_prince import dense, dense_coeffs
@@ -77,7 +78,7 @@ from impactlab.dynamics.slipcore.switches import apply_cell_event, normal_switch
 _GO_ON = -1
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def _normal_event(k, law, p, c, md, y, ev, acc):
     """(status or _GO_ON, constants, mode) after the normal event ``k``, with the bookkeeping of
     the normal work of compression and restitution."""
@@ -98,7 +99,7 @@ def _normal_event(k, law, p, c, md, y, ev, acc):
     return (_GO_ON if st == ST_OK else st), c, md
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def _switch(k, law, p, c, md, y, cm, sg, cp, W, acc, K, gold):
     """Stop at the event ``k`` or switch and restart at ``y`` (derivative into ``K[0]``, event
     functions into ``gold``). Returns (status or _GO_ON, constants, mode)."""
@@ -187,7 +188,7 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
     return status, t, nsteps, md, hist, nh
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def _setup(p, c, vn0, n_cells, a_est):
     """(cell parameters, error scales of the state, t*) of an impact with ``n_cells`` cells over
     the estimated largest contact radius ``a_est`` [m]."""

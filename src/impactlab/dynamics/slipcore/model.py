@@ -23,6 +23,7 @@ from __future__ import annotations
 
 from numba import njit
 
+from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.cells import (
     CP_DX,
     CP_G1,
@@ -118,7 +119,7 @@ def derivative(c, y, cm, sg, cp, W, ev, dy):
             dy[Y_CELL + i] = sg[i] * W[1, i]
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def cell_event(i, cm, sg, cp, W, ar, ad, vs):
     """Event function of cell ``i``: STICK -> SLIP when |f| passes its limit (relative
     hysteresis SLIP_HYST), SLIP -> STICK when the limit outruns the stick trial."""
@@ -193,14 +194,14 @@ def event_value(k, law, p, c, md, y, cm, sg, cp):
     return cell_switch(i, cm, sg, cp, L, Ld, f, ar, ad, vs)
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def boundary_horizon(cm, cp, ar, ad):
     """Time until the contact radius ``ar`` (rate ``ad``) reaches the next cell boundary, where
     a cell is born or released and the cell lengths have a kink (inf when none lies ahead)."""
     return boundary_time(cm, cp[CP_DX], ar, ad)
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def stored_energy(cm, cp, W, ar):
     """Elastic energy stored in the cells, sum f_i^2 / (4 G_1 l_i) [J]."""
     e = 0.0

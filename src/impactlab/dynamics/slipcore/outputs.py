@@ -8,6 +8,7 @@ import math
 
 from numba import njit
 
+from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.buffers import grown
 from impactlab.dynamics.kernels.cells import any_stuck
 from impactlab.dynamics.kernels.layout import (
@@ -88,7 +89,7 @@ A_JUMP = A_OWN  # largest change of F_t across a switch [N]
 NA = A_OWN + 1
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def total_energy(law, p, c, md, y, cm, cp, W, ev):
     """Kinetic + gravity potential + normal elastic + tangential elastic (cells) energy [J]."""
     delta, _a, _b, Fn, Ft, _vn, _vs, ar, _ad, _nin = ev
@@ -159,7 +160,7 @@ def regime(acc, t, vn0):
     return REGIME_SLIP
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def separation(out, c, md, y, acc, t, vx0, vy0, vn0, th0, rod, e0, rtol, diag):
     """Write the results at separation (state ``y`` at time ``t``) into ``out``."""
     _delta, a, b, xs, slide = geometry(c, y)

@@ -16,6 +16,7 @@ import math
 import numpy as np
 from numba import njit
 
+from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.buffers import copy_into
 from impactlab.dynamics.kernels.dormand_prince import dense, dense_coeffs, error_sum, stage_point
 from impactlab.dynamics.kernels.roots import illinois
@@ -46,7 +47,7 @@ def step(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew):
     return math.sqrt(error_sum(y, ynew, K, h, rtol, sc, nact) / nact), ev
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def event_at(k, law, p, c, md, y, cm, sg, cp, W, g):
     """Event function ``k`` at state ``y`` (``model.event_value``: that function alone, the
     value ``events`` gives it; ``W`` and ``g`` are left as they are)."""

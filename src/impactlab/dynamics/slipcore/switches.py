@@ -11,9 +11,8 @@ it) and sticks again when the limit outruns the stick trial. F_t is continuous a
 
 from __future__ import annotations
 
-from numba import njit
-
 from impactlab.contact.kernels import P_ESTAR
+from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.cells import (
     SLIP,
     STICK,
@@ -31,7 +30,7 @@ from impactlab.dynamics.slipcore.layout import G_BIRTH, G_CELL, G_REL, Y_CELL
 from impactlab.dynamics.slipcore.model import evaluate
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def apply_cell_event(k, y, cm, sg, cp, mu, estar, W, ev):
     """The switch of the cell event ``k`` (birth, release or a cell's stick/slip)."""
     _delta, _a, _b, Fn, _Ft, vn, vs, ar, ad, nin = ev
@@ -47,7 +46,7 @@ def apply_cell_event(k, y, cm, sg, cp, mu, estar, W, ev):
             to_stick(i, y, Y_CELL, cm, sg, W[0])
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def _due(law, p, c, md, y, cm, sg, cp, W, mu, estar):
     """Apply the first switch already due at ``y`` (``kernels.cells.apply_due``); False when
     none is."""
@@ -56,7 +55,7 @@ def _due(law, p, c, md, y, cm, sg, cp, W, mu, estar):
     return apply_due(y, Y_CELL, cm, sg, cp, W[0], W[1], W[2], mu, estar, Fn, vn, vs, ar, ad)
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def settle(law, p, c, md, y, cm, sg, cp, W, mu):
     """Apply every switch that is already due at a restart (several cells can change mode
     within one step; only the first event is located). Returns False if it does not settle."""
@@ -67,7 +66,7 @@ def settle(law, p, c, md, y, cm, sg, cp, W, mu):
     return False
 
 
-@njit(cache=True, error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
+@njit_internal
 def normal_switch(k, law, p, md, delta):
     """(status, mode) after the normal event ``k`` (EV_VN or EV_RELOAD): the core's rules,
     with the contact-radius factor that keeps a(t) continuous at the turning point."""
