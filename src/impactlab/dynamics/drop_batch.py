@@ -88,9 +88,7 @@ class DropBatchResult:
     def __post_init__(self) -> None:
         for name in ("out", "flags", "initial_energy", "max_delta_ratio"):
             object.__setattr__(self, name, readonly_copy(getattr(self, name)))
-        st = np.array(self.status, dtype=np.int32, copy=True)
-        st.setflags(write=False)
-        object.__setattr__(self, "status", st)
+        object.__setattr__(self, "status", readonly_copy(self.status, np.int32))
         object.__setattr__(self, "inputs", {k: readonly_copy(v) for k, v in self.inputs.items()})
 
     def __len__(self) -> int:

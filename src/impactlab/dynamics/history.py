@@ -17,9 +17,9 @@ from impactlab.dynamics.kernels.layout import HISTORY_FIELDS
 __all__ = ["HISTORY_UNITS", "DentMap", "History", "readonly_copy"]
 
 
-def readonly_copy(a: Any) -> np.ndarray:
-    """A float64 copy of ``a`` that cannot be written to."""
-    out = np.array(a, dtype=np.float64, copy=True)
+def readonly_copy(a: Any, dtype: Any = np.float64) -> np.ndarray:
+    """A copy of ``a`` (float64 unless ``dtype`` says otherwise) that cannot be written to."""
+    out = np.array(a, dtype=dtype, copy=True)
     out.setflags(write=False)
     return out
 

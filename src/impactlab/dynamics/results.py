@@ -284,9 +284,7 @@ class BatchResult:
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "out", readonly_copy(self.out))
-        st = np.array(self.status, dtype=np.int32, copy=True)
-        st.setflags(write=False)
-        object.__setattr__(self, "status", st)
+        object.__setattr__(self, "status", readonly_copy(self.status, np.int32))
         object.__setattr__(self, "inputs", {k: readonly_copy(v) for k, v in self.inputs.items()})
 
     def __len__(self) -> int:
