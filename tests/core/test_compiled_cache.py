@@ -249,3 +249,34 @@ def test_warm_refuses_an_unknown_part() -> None:
 
     with pytest.raises(ValueError, match="unknown engine part 'rigid'; choose from contact laws"):
         warm(("rigid",))
+
+
+def test_the_process_groups_hold_every_part_once() -> None:
+    from impactlab.dynamics.warm import PARTS, PROCESS_GROUPS
+
+    names = [n for g in PROCESS_GROUPS for n in g]
+    assert sorted(names) == sorted(PARTS)
+    assert len(names) == len(set(names))
+
+
+def test_warm_in_processes_returns_the_parts_in_the_order_asked() -> None:
+    from impactlab.dynamics.warm import warm_in_processes
+
+    done = warm_in_processes(("flexible rod", "contact laws"), jobs=2)
+    assert [p.name for p in done] == ["flexible rod", "contact laws"]
+    assert all(p.cpu_s >= 0 and p.wall_s >= 0 for p in done)
+
+
+def test_warm_in_processes_names_the_group_that_failed(monkeypatch: pytest.MonkeyPatch) -> None:
+    from impactlab.dynamics import warm as warm_module
+
+    monkeypatch.setattr(warm_module.sys, "executable", "false")
+    with pytest.raises(RuntimeError, match=r"failed in: contact laws \(exit code 1\); flexible"):
+        warm_module.warm_in_processes(("contact laws", "flexible rod"), jobs=2)
+
+
+def test_warm_in_processes_refuses_zero_jobs() -> None:
+    from impactlab.dynamics.warm import warm_in_processes
+
+    with pytest.raises(ValueError, match="jobs must be a whole number >= 1, got 0"):
+        warm_in_processes(jobs=0)

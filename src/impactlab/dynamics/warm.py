@@ -9,10 +9,16 @@ first run after installing or updating impactlab compiles them (announced on std
 
 from __future__ import annotations
 
+import json
 import math
+import os
+import subprocess
+import sys
+import threading
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 from impactlab._compiled_cache import compiled_cache_dir
 
@@ -135,12 +141,26 @@ PARTS: dict[str, Callable[[], None]] = {
 }
 
 
-def warm(parts: tuple[str, ...] | None = None) -> list[WarmPart]:
-    """Compile or load ``parts`` (names of ``PARTS``; default all); returns their timings."""
+#: Parts that share little compiled code, warmed side by side by ``warm_in_processes``: the
+#: rigid engine with its batch and partial slip, and the flexible rod with its batch.
+PROCESS_GROUPS: tuple[tuple[str, ...], ...] = (
+    ("contact laws", "rigid impact", "batch", "partial slip"),
+    ("flexible rod", "flexible batch"),
+)
+
+
+def _checked(parts: tuple[str, ...] | None) -> tuple[str, ...]:
     names = tuple(PARTS) if parts is None else parts
     unknown = [n for n in names if n not in PARTS]
     if unknown:
         raise ValueError(f"unknown engine part {unknown[0]!r}; choose from {', '.join(PARTS)}")
+    return names
+
+
+def warm(parts: tuple[str, ...] | None = None) -> list[WarmPart]:
+    """Compile or load ``parts`` (names of ``PARTS``; default all) in this process; returns
+    their timings."""
+    names = _checked(parts)
     done = []
     for name in names:
         c0, w0 = time.process_time(), time.perf_counter()
@@ -149,4 +169,71 @@ def warm(parts: tuple[str, ...] | None = None) -> list[WarmPart]:
     return done
 
 
-__all__ = ["PARTS", "WarmPart", "compiled_cache_dir", "warm"]
+def default_jobs() -> int:
+    """Processes ``warm_in_processes`` uses by default: one per usable core, at most one per
+    group of ``PROCESS_GROUPS``."""
+    try:
+        cores = len(os.sched_getaffinity(0))
+    except AttributeError:  # not on Linux
+        cores = os.cpu_count() or 1
+    return max(1, min(cores, len(PROCESS_GROUPS)))
+
+
+def _relay(stream: Any) -> None:
+    """Copy a child's stderr (its compile notices) line by line to ours."""
+    for line in stream:
+        sys.stderr.write(line)
+        sys.stderr.flush()
+
+
+def warm_in_processes(
+    parts: tuple[str, ...] | None = None, jobs: int | None = None
+) -> list[WarmPart]:
+    """``warm`` with the groups of ``PROCESS_GROUPS`` compiled side by side, one process each
+    (``jobs`` > 1, default ``default_jobs()``), into the same cache; the parts' timings are the
+    processes' own (CPU seconds of the process that compiled them). The children's compile
+    notices come through on stderr, one line each."""
+    names = _checked(parts)
+    jobs = default_jobs() if jobs is None else jobs
+    if jobs < 1:
+        raise ValueError(f"jobs must be a whole number >= 1, got {jobs}")
+    groups = [[n for n in g if n in names] for g in PROCESS_GROUPS]
+    groups = [g for g in groups if g]
+    if jobs == 1 or len(groups) < 2:
+        return warm(names)
+    procs = []
+    for group in groups:
+        cmd = [sys.executable, "-m", "impactlab", "warm", "--json", "--jobs", "1"]
+        for name in group:
+            cmd += ["--part", name]
+        proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        relay = threading.Thread(target=_relay, args=(proc.stderr,), daemon=True)
+        relay.start()
+        procs.append((group, proc, relay))
+    timings: dict[str, WarmPart] = {}
+    failed = []
+    for group, proc, relay in procs:
+        out = proc.stdout.read() if proc.stdout is not None else ""
+        proc.wait()
+        relay.join()
+        if proc.returncode != 0:
+            failed.append(f"{', '.join(group)} (exit code {proc.returncode})")
+            continue
+        for p in json.loads(out)["parts"]:
+            timings[p["name"]] = WarmPart(
+                p["name"], p["cpu_time"]["value"], p["wall_time"]["value"]
+            )
+    if failed:
+        raise RuntimeError(f"warming the engine failed in: {'; '.join(failed)} (see above)")
+    return [timings[n] for n in names]
+
+
+__all__ = [
+    "PARTS",
+    "PROCESS_GROUPS",
+    "WarmPart",
+    "compiled_cache_dir",
+    "default_jobs",
+    "warm",
+    "warm_in_processes",
+]
