@@ -190,8 +190,8 @@ PMMA = Material(
     source="usplastic-acrylic-sheet",
     note="polymer, viscoelastic: outside every contact law's fitted range; E (ASTM D638) and "
     "S_y = compressive yield strength (ASTM D695, whose standard test runs at 1.3 mm/min and "
-    "23 degC) of the data sheet; nu = 0.399: dynamic, from the ultrasonic wave speeds of the CRC Handbook "
-    "(crc-sound-speed); no Brinell hardness in the sources (Rockwell M 93)",
+    "23 degC) of the data sheet; nu = 0.399: dynamic, from the ultrasonic wave speeds of the "
+    "CRC Handbook (crc-sound-speed); no Brinell hardness in the sources (Rockwell M 93)",
 )
 
 #: The library by name (the names ``impactlab materials`` lists).
