@@ -344,6 +344,30 @@ _MATERIAL_DATA: tuple[Reference, ...] = (
         note="nu 0.23, compressive strength 330 MPa; E 72 GPa and 2.52 g/cm^3 (container "
         "glass) from http://www.liquisearch.com/soda-lime_glass/typical_compositions_and_properties",
     ),
+    Reference(
+        "usplastic-acrylic-sheet",
+        "U.S. Plastic Corp., data sheet 'Physical Properties for Extruded Acrylic Sheet' (typical "
+        "values, 0.250 in sheet; ASTM D792, D638, D695)",
+        url="https://www.usplastic.com/knowledgebase/article.aspx?contentkey=533",
+        note="specific gravity 1.19 (D792); modulus of elasticity (D638) printed "
+        "'4000,000 psi (2,800 MPa)', a misprint of 400,000 psi: the printed 2,800 MPa taken; "
+        "compressive strength (yield, D695) 17,000 psi (117 MPa); Rockwell M-93, no Brinell "
+        "hardness, no Poisson's ratio. ASTM D695's standard test: 1.3 mm/min crosshead speed, "
+        "23 +/- 2 degC (https://www.micomlab.com/micom-testing/astm-d695/)",
+    ),
+    Reference(
+        "crc-sound-speed",
+        "CRC Handbook of Chemistry and Physics, section 14, 'Speed of sound in various media', "
+        "Table 1 (from D. E. Gray (ed.), American Institute of Physics Handbook, 3rd ed., 1972, "
+        "and W. P. Mason, Physical Acoustics and the Properties of Solids, 1958): Lucite "
+        "(PMMA), density 1.18 g/cm^3, v_l = 2680 m/s, v_s = 1100 m/s, v_ext = 1840 m/s",
+        url="https://hbcp.chemnetbase.com/faces/documents/14_19/14_19_0001.xhtml",
+        note="the table's heading, references and metal rows read at the address; the Lucite "
+        "row read in the table's reproduction (same metal rows) at https://rudywinoto.com/"
+        "flow-measurement/flow-meters/type-flow-meters/ultrasonic-flow-meter/"
+        "sound-velocity-of-material/; dynamic (ultrasonic) nu = (v_l^2 - 2 v_s^2) / "
+        "(2 (v_l^2 - v_s^2)) = 0.399, and rho v_ext^2 / (2 rho v_s^2) - 1 = 0.399 agrees",
+    ),
 )
 
 REFERENCES: MappingProxyType[str, Reference] = MappingProxyType(

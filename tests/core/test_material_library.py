@@ -9,6 +9,8 @@ import sys
 from dataclasses import fields
 
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 from impactlab.cli import main
 from impactlab.materials import (
@@ -16,11 +18,14 @@ from impactlab.materials import (
     AL_6061_T6,
     ALIASES,
     BRITTLE,
+    PMMA,
     PRESETS,
     Material,
+    dynamic_poisson_ratio,
     get_material,
     library_key,
 )
+from impactlab.materials.library import PMMA_WAVE_SPEEDS
 from impactlab.references import REFERENCES
 
 #: The source's own numbers, in its units (the data sheets read for the library).
@@ -30,6 +35,7 @@ CITED = {
     "ti-6al-4v": (113.8e9, 0.342, 880e6, 334.0, 4430.0),
     "copper-ofhc": (117e9, 0.34, 48e6, 42.0, 8940.0),
     "alumina-99.5": (416e9, 0.23, 3.0e9, math.nan, 3984.0),
+    "pmma": (2.8e9, 0.399, 117e6, math.nan, 1190.0),
 }
 PSI = 6894.757  # Pa
 LB_PER_IN3 = 27679.9047  # kg/m^3
@@ -47,7 +53,8 @@ def _cli(monkeypatch, capsys, *args: str) -> tuple[int, str, str]:
 
 
 def test_every_entry_has_a_source_a_condition_and_valid_values() -> None:
-    kinds = {"steel": 0, "aluminium": 0, "ti-6al-4v": 0, "brass": 0, "copper": 0, "glass": 0}
+    kinds = {"steel": 0, "aluminium": 0, "ti-6al-4v": 0, "brass": 0, "copper": 0, "glass": 0,
+             "pmma": 0}  # fmt: skip
     for key, m in PRESETS.items():
         assert m.source in REFERENCES, key  # cited: a key of impactlab.references
         ref = REFERENCES[m.source]
@@ -79,6 +86,33 @@ def test_us_units_converted() -> None:
     assert bearing.yield_strength == pytest.approx(295e3 * PSI)
     assert bearing.density == pytest.approx(7833, abs=1)
     assert not bearing.has_hardness  # HRC 60-67: beyond the Brinell scale, never guessed
+
+
+@given(st.floats(-0.99, 0.49), st.floats(100.0, 1e4))
+def test_dynamic_poisson_ratio_inverts_the_wave_speed_ratio(nu: float, v_shear: float) -> None:
+    """v_l / v_s = sqrt(2 (1 - nu) / (1 - 2 nu)) for an isotropic solid: back to nu."""
+    v_long = v_shear * math.sqrt(2.0 * (1.0 - nu) / (1.0 - 2.0 * nu))
+    assert dynamic_poisson_ratio(v_long, v_shear) == pytest.approx(nu, abs=1e-9)
+
+
+def test_dynamic_poisson_ratio_refuses_impossible_speeds() -> None:
+    for v_long, v_shear in ((1000.0, 1000.0), (1000.0, 0.0), (1000.0, -5.0), (1000.0, 2000.0)):
+        with pytest.raises(ValueError, match="0 < v_shear < v_longitudinal"):
+            dynamic_poisson_ratio(v_long, v_shear)
+
+
+def test_pmma_is_cited_and_consistent() -> None:
+    """PMMA: the data sheet's E, compressive yield and density; nu the CRC Handbook's dynamic
+    value, which its third wave speed (v_ext = 1840 m/s in a thin rod, E = rho v_ext^2) and
+    G = rho v_s^2 confirm: E / (2 G) - 1 within 0.001."""
+    v_long, v_shear = PMMA_WAVE_SPEEDS
+    assert PMMA.nu == round(dynamic_poisson_ratio(v_long, v_shear), 3) == 0.399
+    assert 1840.0**2 / (2.0 * v_shear**2) - 1.0 == pytest.approx(PMMA.nu, abs=1e-3)
+    assert "1840" in REFERENCES["crc-sound-speed"].citation
+    assert PMMA.source == "usplastic-acrylic-sheet" and "crc-sound-speed" in PMMA.note
+    assert "viscoelastic" in PMMA.note and "pmma" not in BRITTLE and not PMMA.has_hardness
+    for alias in ("acrylic", "Plexiglas", "perspex", "PMMA"):
+        assert get_material(alias) is PMMA
 
 
 def test_names_and_aliases() -> None:
@@ -154,6 +188,17 @@ def test_simulate_refuses_a_material_given_in_parts(monkeypatch, capsys, tmp_pat
     assert code == 2 and "--flat: a material by values needs E, nu, Sy and rho" in err
     code, _, err = _cli(monkeypatch, capsys, "simulate", "sphere", "--vy", "-1", "--flat", "al")
     assert code == 2 and "unknown material 'al'" in err
+
+
+def test_simulate_on_pmma(monkeypatch, capsys) -> None:
+    """A steel ball on the library's PMMA, by an alias, from the command line."""
+    args = ("simulate", "sphere", "--radius", "3 mm", "--vy", "-1 m/s", "--material", "52100")
+    code, out, err = _cli(monkeypatch, capsys, *args, "--flat", "acrylic", "--json")
+    assert code == 0, err
+    data = json.loads(out)
+    flat = data["input"]["flat"]
+    assert flat["name"] == PMMA.name and flat["E"]["value"] == PMMA.E
+    assert 0.0 < data["e"]["value"] <= 1.0
 
 
 def test_fe_takes_a_material_whole(monkeypatch, capsys) -> None:

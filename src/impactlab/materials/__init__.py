@@ -31,10 +31,12 @@ from impactlab.materials.library import (
     BRASS_C360,
     BRITTLE,
     COPPER_OFHC,
+    PMMA,
     PRESETS,
     SODA_LIME_GLASS,
     TI_6AL_4V,
     TUNGSTEN_CARBIDE,
+    dynamic_poisson_ratio,
 )
 
 __all__ = [
@@ -49,6 +51,7 @@ __all__ = [
     "BRITTLE",
     "COPPER_OFHC",
     "G0",
+    "PMMA",
     "PRESETS",
     "SODA_LIME_GLASS",
     "TI_6AL_4V",
@@ -56,6 +59,7 @@ __all__ = [
     "ContactPair",
     "Material",
     "brinell_to_pa",
+    "dynamic_poisson_ratio",
     "get_material",
     "library_key",
     "reduced_modulus",

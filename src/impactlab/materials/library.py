@@ -14,6 +14,11 @@ Brittle materials (tungsten carbide, alumina, glass) crack instead of yielding; 
 elastic-plastic laws need a yield strength, and these entries carry the **compressive strength**
 there, so that an impact below it is elastic. An impact that reaches it is outside what
 impactlab models (no fracture model): treat their plastic results as a bound only.
+
+PMMA is a polymer: viscoelastic (its modulus, Poisson's ratio and yield stress depend on the rate
+and the temperature), so it lies outside every contact law's fitted range (elastic-plastic,
+rate-independent, fitted for metals). Its entry carries the quasi-static values of a data sheet
+(ASTM D638/D695 at 23 degC) and the dynamic Poisson's ratio of ultrasonic wave speeds.
 """
 
 from __future__ import annotations
@@ -156,6 +161,39 @@ SODA_LIME_GLASS = Material(
     note="brittle: yield_strength holds the compressive strength",
 )
 
+#: Ultrasonic wave speeds of Lucite (PMMA) [m/s]: longitudinal v_l, shear v_s (CRC Handbook,
+#: "Speed of sound in various media", Table 1).
+PMMA_WAVE_SPEEDS = (2680.0, 1100.0)
+
+
+def dynamic_poisson_ratio(v_longitudinal: float, v_shear: float) -> float:
+    """Poisson's ratio of an isotropic solid from its bulk longitudinal and shear wave speeds
+    [m/s]: ``nu = (v_l^2 - 2 v_s^2) / (2 (v_l^2 - v_s^2))`` (exact for linear elasticity; the
+    *dynamic* nu at the waves' frequency). ValueError unless 0 < v_s < v_l."""
+    if not 0.0 < v_shear < v_longitudinal:
+        raise ValueError(
+            f"wave speeds must satisfy 0 < v_shear < v_longitudinal, got v_longitudinal="
+            f"{v_longitudinal!r} m/s, v_shear={v_shear!r} m/s"
+        )
+    vl2, vs2 = v_longitudinal**2, v_shear**2
+    return (vl2 - 2.0 * vs2) / (2.0 * (vl2 - vs2))
+
+
+#: PMMA (acrylic sheet); a viscoelastic polymer, outside every contact law's fitted range.
+PMMA = Material(
+    "PMMA (acrylic sheet)",
+    2800e6,
+    round(dynamic_poisson_ratio(*PMMA_WAVE_SPEEDS), 3),
+    117e6,
+    density=1190.0,
+    condition="sheet, 23 degC",
+    source="usplastic-acrylic-sheet",
+    note="polymer, viscoelastic: outside every contact law's fitted range; E (ASTM D638) and "
+    "S_y = compressive yield strength (ASTM D695, whose standard test runs at 1.3 mm/min and "
+    "23 degC) of the data sheet; nu = 0.399: dynamic, from the ultrasonic wave speeds of the "
+    "CRC Handbook (crc-sound-speed); no Brinell hardness in the sources (Rockwell M 93)",
+)
+
 #: The library by name (the names ``impactlab materials`` lists).
 PRESETS: dict[str, Material] = {
     "aisi-201": AISI_201,
@@ -169,6 +207,7 @@ PRESETS: dict[str, Material] = {
     "tungsten-carbide": TUNGSTEN_CARBIDE,
     "alumina-99.5": ALUMINA_995,
     "soda-lime-glass": SODA_LIME_GLASS,
+    "pmma": PMMA,
 }
 
 #: Other spellings of the library's names.
@@ -189,6 +228,11 @@ ALIASES: dict[str, str] = {
     "alumina": "alumina-99.5",
     "al2o3": "alumina-99.5",
     "glass": "soda-lime-glass",
+    "acrylic": "pmma",
+    "plexiglas": "pmma",
+    "plexiglass": "pmma",
+    "perspex": "pmma",
+    "lucite": "pmma",
 }
 
 #: Materials that crack instead of yielding (yield_strength: the compressive strength).
