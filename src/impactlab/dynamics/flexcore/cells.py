@@ -125,7 +125,7 @@ def reset(md, k, y, o):
         y[o + i] = 0.0
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, inline="always", error_model="numpy")
 def horizon(c, md, ek):
     """Time until the contact radius of an end in contact reaches its next cell boundary
     (inf when none lies ahead): a step ends just past it (a kink of the cell lengths)."""
@@ -139,7 +139,7 @@ def horizon(c, md, ek):
     return hz
 
 
-@njit_internal
+@njit(cache=True, inline="always", error_model="numpy")
 def step_cap(h, c, md, ek, hmin):
     """Partial slip: the step ``h`` ended just past (x STEP_PAST) the next cell boundary."""
     if c[F.FC_FRIC] != F.FR_PARTIAL:
@@ -148,7 +148,7 @@ def step_cap(h, c, md, ek, hmin):
     return min(h, STEP_PAST * hz + hmin) if hz > 0.0 else h
 
 
-@njit_internal
+@njit(cache=True, inline="always", error_model="numpy")
 def n_active(md, n, M):
     """Components of the state in the error norm: all but the cells out of contact."""
     ny0 = 6 + 2 * M + F.NQUAD

@@ -35,7 +35,7 @@ def cell_offset(mdl, k):
     return 6 + 2 * mdl[3].shape[0] + F.NQUAD + k * F.NCS
 
 
-@njit_internal
+@njit(cache=True, inline="always", error_model="numpy")
 def _due(mdl, md, k, y, ek):
     """Apply end k's first birth or release already due, else every due stick/slip switch;
     False when none is."""
@@ -47,7 +47,7 @@ def _due(mdl, md, k, y, ek):
     return apply_due(y, o, cm, sg, cp, L, Ld, f, c[F.FC_MU], mdl[1][P_ESTAR], fn, vn, vs, ar, ad)
 
 
-@njit_internal
+@njit(cache=True, inline="always", error_model="numpy")
 def settle(mdl, md, y, der, ev, ek, Jn, Jt):
     """Apply every cell switch already due at y (several cells can change within one step;
     only the first event is located). False if it does not settle."""
@@ -62,7 +62,7 @@ def settle(mdl, md, y, der, ev, ek, Jn, Jt):
     return False
 
 
-@njit_internal
+@njit(cache=True, inline="always", error_model="numpy")
 def apply_cell_event(jev, mdl, md, y, ek):
     """The switch of the cell event ``jev`` (>= NEV: birth, release or a cell's stick/slip)."""
     c = mdl[2]

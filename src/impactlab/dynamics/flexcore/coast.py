@@ -15,7 +15,7 @@ from impactlab.dynamics.flexcore.rhs import evaluate
 from impactlab.dynamics.kernels._jit import njit_internal
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, inline="always", error_model="numpy")
 def refresh_thresholds(mdl, md, y, K, gold, sv, dents, ek, Jn, Jt):
     """Out of contact the end moves over the flat: update its touch threshold (dent)."""
     for k in range(F.NE):
@@ -26,7 +26,7 @@ def refresh_thresholds(mdl, md, y, K, gold, sv, dents, ek, Jn, Jt):
                 evaluate(mdl, md, y, K[0], gold, ek, Jn, Jt)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, inline="always", error_model="numpy")
 def jump(mdl, md, y, t, h, K, gold, sv, dents, record_on, hist, nh, yev, yt, der, ev, ek, Jn, Jt):
     """Free flight without contact: advance in closed form when no end can touch within two
     steps. Returns (jumped, t, hist, nh)."""

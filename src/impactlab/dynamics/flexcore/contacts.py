@@ -41,7 +41,7 @@ from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.layout import FR_COULOMB, FR_MINDLIN
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, inline="always", error_model="numpy")
 def in_dent(dents, nd, k, x):
     """Index of the deepest dent of end k whose footprint contains x (-1: none)."""
     best = -1
@@ -71,7 +71,7 @@ def set_threshold(md, dents, nd, k, x, delta):
         md[k, F.MD_DR] = thr
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, inline="always", error_model="numpy")
 def pending(g, ek, md, k, kind, fric, tol_v, tol_d, tol_f):
     """Whether event ``kind`` of end k is already past its switch at a restart (several events
     at one instant). The interference events also need the rate that takes them there (touch
@@ -110,7 +110,7 @@ def new_dent(dents, di, k, x, R):
     dents[di, F.DT_NC] = 1.0
 
 
-@njit_internal
+@njit(cache=True, inline="always", error_model="numpy")
 def _reload_mode(mdl, md, dents, k, di):
     """Mode table of end k touching dent di: its unloading curve (loading if it has none)."""
     c = mdl[2]
@@ -127,7 +127,7 @@ def _reload_mode(mdl, md, dents, k, di):
         md[k, F.MD_PH] = 0.0
 
 
-@njit_internal
+@njit(cache=True, inline="always", error_model="numpy")
 def on_touch(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, ek, Jn, Jt):
     """End k touches the flat at t: a new contact record, on its dent or a new one. Returns
     the status."""
@@ -177,7 +177,7 @@ def on_touch(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, ek, Jn, Jt):
     return F.ST_OK
 
 
-@njit_internal
+@njit(cache=True, inline="always", error_model="numpy")
 def on_turn(mdl, md, k, delta, dents):
     """Turning point of delta at end k: on the loading curve, the unloading branch of
     delta_m = delta is set and stored in its dent. Returns the status."""
@@ -207,7 +207,7 @@ def on_turn(mdl, md, k, delta, dents):
     return F.ST_OK
 
 
-@njit_internal
+@njit(cache=True, inline="always", error_model="numpy")
 def on_separation(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, y_end, ek):
     """End k leaves the flat at t: close its contact record, keep the state (``y_end``) and
     ask for an end-of-sequence test."""
@@ -238,7 +238,7 @@ def on_separation(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, y_end, e
     set_threshold(md, dents, int(sv[F.SV_ND]), k, ek[k, F.EK_X], ek[k, F.EK_DELTA])
 
 
-@njit_internal
+@njit(cache=True, inline="always", error_model="numpy")
 def on_friction(mdl, md, y, k, der, ev, ek, Jn, Jt):
     """Stick/slip switch of end k. Coulomb: from slip at v_t = 0, stick or reverse (decided
     with the stick force); from stick, slip against the needed force. Mindlin: the rigid

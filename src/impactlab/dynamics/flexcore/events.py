@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import math
 
+from numba import njit
+
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.cellswitch import apply_cell_event, settle
 from impactlab.dynamics.flexcore.contacts import (
@@ -30,7 +32,7 @@ _PENDING_ORDER = (
 )
 
 
-@njit_internal
+@njit(cache=True, inline="always", error_model="numpy")
 def _apply(jev, mdl, md, y, t, sv, contacts, dents, cur_con, snap, y_end, der, ev, ek, Jn, Jt):
     """The action of event ``jev`` (an end's, or a partial-slip cell's: ``jev`` >= NEV);
     returns (status, end, kind: -1 for a cell event)."""

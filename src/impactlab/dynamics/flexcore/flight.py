@@ -22,7 +22,6 @@ import numpy as np
 from numba import njit
 
 from impactlab.dynamics.flexcore import layout as F
-from impactlab.dynamics.kernels._jit import njit_internal
 
 
 @njit(cache=True, error_model="numpy")
@@ -78,7 +77,7 @@ def bounds(om, Ue, We, M, y, k):
     return math.sqrt(b[0] ** 2 + b[1] ** 2), math.sqrt(b[2] ** 2 + b[3] ** 2)
 
 
-@njit_internal
+@njit(cache=True, inline="always", error_model="numpy")
 def rigid_clearance(c, y, M, k, tau):
     """Height [m] of end k's lowest point above the original flat in rigid ballistic flight
     from y after tau (undeformed geometry, the elastic part excluded)."""
@@ -117,7 +116,7 @@ def first_below(c, y, M, k, band, tau_max, eps):
     return tau
 
 
-@njit_internal
+@njit(cache=True, inline="always", error_model="numpy")
 def left_for_good(mdl, y, last_end, stop_mode, cap, eps):
     """The end-of-sequence test (module docstring): (done, next_end, next_time [s])."""
     c, om, Ue, We = mdl[2], mdl[3], mdl[7], mdl[8]
@@ -150,7 +149,7 @@ def left_for_good(mdl, y, last_end, stop_mode, cap, eps):
     return True, nxt, tnx
 
 
-@njit_internal
+@njit(cache=True, inline="always", error_model="numpy")
 def jump_length(mdl, y, ek):
     """A time [s] over which no end can reach the flat: 0.9 of the clearance of each end over
     a bound on its approach speed (0 when an end is at or below the surface)."""

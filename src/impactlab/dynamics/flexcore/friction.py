@@ -165,7 +165,7 @@ def radius_factor(law, p, c, dm, dr, rr):
     return a_load / a_unl if a_unl > 0.0 else 1.0
 
 
-@njit_internal
+@njit(cache=True, inline="always", error_model="numpy")
 def mindlin_switch(c, md, k, y, iqt, ek):
     """The Mindlin stick/slip switch of end k (the rigid core's ``friction_switch``)."""
     fm, q = friction_switch(
@@ -189,7 +189,7 @@ def mindlin_switch(c, md, k, y, iqt, ek):
     y[iqt + k] = q
 
 
-@njit_internal
+@njit(cache=True, inline="always", error_model="numpy")
 def mindlin_after(mdl, md, k, kind, y, ek, sc, sv):
     """Mindlin: the state Q_t of end k and its error scale after the event ``kind`` (applied
     to ``md``; ``ek`` holds the quantities before it). Touch and separation: Q_t = 0; turning

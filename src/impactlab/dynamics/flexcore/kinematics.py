@@ -141,7 +141,7 @@ def mechanical_energy(mdl, y):
     return E
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, inline="always", error_model="numpy")
 def vibration_energy(om2, M, y):
     """Modal (vibration) energy sum 1/2 (q'^2 + omega^2 q^2) [J] (linear part)."""
     iv = 3 + M

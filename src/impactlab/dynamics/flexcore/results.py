@@ -5,12 +5,14 @@ from __future__ import annotations
 
 import math
 
+from numba import njit
+
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.kinematics import geometric_energy, vibration_energy
 from impactlab.dynamics.kernels._jit import njit_internal
 
 
-@njit_internal
+@njit(cache=True, inline="always", error_model="numpy")
 def _tip_path(contacts, ncon, dents, nd):
     """(scar length, signed slip, slip path) [m] over the contacts and dents of end 0."""
     xlo = math.inf
@@ -31,7 +33,7 @@ def _tip_path(contacts, ncon, dents, nd):
     return xhi - xlo, slip, aslip
 
 
-@njit_internal
+@njit(cache=True, inline="always", error_model="numpy")
 def _energies(mdl, ye, out):
     """Works, vibration and rigid kinetic energy after the last contact."""
     c, om, om2, Tg, ia, ib = mdl[2], mdl[3], mdl[4], mdl[10], mdl[11], mdl[12]

@@ -232,7 +232,7 @@ def rates(law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, y, der, ev, ek, Jn, J
             cell_events(c, md, k, ek, ev)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, inline="always", error_model="numpy")
 def evaluate(mdl, md, y, der, ev, ek, Jn, Jt):
     """``rates`` with the model tuple ``mdl`` (package docstring)."""
     law, p, c, _om, om2, dmp, _zeta, Ue, We, Pe, Tg, ia, ib = mdl

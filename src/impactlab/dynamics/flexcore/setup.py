@@ -18,7 +18,7 @@ from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.cells import CP_FTOL, CP_G1, CP_VTOL, N_CELLS
 
 
-@njit_internal
+@njit(cache=True, inline="always", error_model="numpy")
 def cell_scales(c, vn0, fscale, sc, o):
     """Partial slip: the cells' error scales (state from ``o``) and their parameters (as the
     slipcore's: G_1 = 4 G*, the slip-rate and force hystereses; the width is set in Python)."""
@@ -31,7 +31,7 @@ def cell_scales(c, vn0, fscale, sc, o):
         c[b + CP_FTOL] = 1e-13 * fscale
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, inline="always", error_model="numpy")
 def scales(mdl, vx0, vy0, w0, sc, sv):
     """Error scales of the state components (as the rigid engine: Hertzian depth, time and
     velocity scales) and the tolerances of the run."""
@@ -121,7 +121,7 @@ def first_touch(mdl, md, y, vx0, vy0, w0, sv, contacts, dents, cur_con, der, ev,
     sv[F.SV_NCON] = 1
 
 
-@njit_internal
+@njit(cache=True, inline="always", error_model="numpy")
 def workspace(n, M, nev):
     """The run state ``sv`` (layout.SV_*, with the initial status and horizon), the mode table,
     the state, the error scales and the work arrays of a state of length n (M modes, nev

@@ -52,7 +52,7 @@ def dp_step(mdl, md, y, K, h, rtol, sc, st, ynew, ev, ek, Jn, Jt):
     return math.sqrt(error_sum(y, ynew, K, h, rtol, sc, n) / n_active(md, n, om2.shape[0]))
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, inline="always", error_model="numpy")
 def integrate_to(mdl, md, y, k0, H, rtol, sc, out, ev, ek, Jn, Jt):
     """Integrate from y over exactly H with error control into ``out`` (the state at an
     event); k0 = f(y). Returns the number of steps."""

@@ -30,7 +30,7 @@ def _missed_touch(md, sv, gold, gnew, k):
     return md[k, F.MD_IN] == 0.0 and 0.0 < gold[j] <= tol < gnew[j]
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, inline="always", error_model="numpy")
 def first_event(mdl, md, y, h, K, Q, gold, gnew, sv, record_on, yt, der, ev, ek, Jn, Jt):
     """(jev, theta, fired): the earliest event crossed in the step (-1: none) and where; a
     touch that began the step within the invariant's tolerance past zero fires where it
@@ -66,7 +66,7 @@ def first_event(mdl, md, y, h, K, Q, gold, gnew, sv, record_on, yt, der, ev, ek,
     return jev, theta, fired
 
 
-@njit_internal
+@njit(cache=True, inline="always", error_model="numpy")
 def missed_contact(md, sv, ek, jev):
     """The contact invariant after a step ending at event ``jev``: True when an end out of
     contact (other than one touching at ``jev``) lies below its touch threshold (its dent's
@@ -80,7 +80,7 @@ def missed_contact(md, sv, ek, jev):
     return False
 
 
-@njit_internal
+@njit(cache=True, inline="always", error_model="numpy")
 def step_stats(mdl, md, t, tend, sv, contacts, dents, cur_con, ek):
     """Per-contact and run maxima, stick time and dent extents after a step to ``tend``;
     False on a non-finite force."""
@@ -107,7 +107,7 @@ def step_stats(mdl, md, t, tend, sv, contacts, dents, cur_con, ek):
     return ok
 
 
-@njit_internal
+@njit(cache=True, inline="always", error_model="numpy")
 def record_inside(mdl, md, y, t, h, theta, Q, sv, hist, nh, yt, der, ev, ek, Jn, Jt):
     """Record the dense points at 1/4, 1/2, 3/4 of the step that lie before ``theta``."""
     for jj in range(1, 4):
@@ -120,7 +120,7 @@ def record_inside(mdl, md, y, t, h, theta, Q, sv, hist, nh, yt, der, ev, ek, Jn,
     return hist, nh
 
 
-@njit_internal
+@njit(cache=True, inline="always", error_model="numpy")
 def reject(h, err, sv):
     """The step size after a rejected step (error norm ``err``); 0 with ``sv[F.SV_STATUS]`` set
     when it underflows."""
