@@ -53,6 +53,8 @@ def deck_spec(problem: ImpactProblem, mesh: Mesh) -> ImpactDeckSpec:
         gap=problem.gap,
         increment=problem.increment,
         end_time=problem.end_time,
+        procedure=problem.procedure,
+        fixed_increment=problem.fixed_increment,
     )
 
 
