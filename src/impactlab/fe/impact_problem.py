@@ -112,8 +112,8 @@ class ImpactProblem:
 
     @property
     def procedure(self) -> str:
-        """"temperature-displacement" (elastic flat: automatic increments) or "dynamic-direct"
-        (elastic-plastic flat: fixed increments with numerical damping)."""
+        """The procedure: "temperature-displacement" (elastic flat: automatic increments) or
+        "dynamic-direct" (elastic-plastic flat: fixed increments, numerical damping)."""
         return "temperature-displacement" if self.flat_is_elastic else "dynamic-direct"
 
     @property
