@@ -250,3 +250,16 @@ def test_procedure_cards():
         procedure_card(_deck_spec("dynamic-direct", 2 * dt))
     with pytest.raises(ValueError, match="procedure must be one of"):
         procedure_card(_deck_spec("explicit", dt))
+
+
+def test_a_run_stopped_as_the_sphere_leaves_is_recognised():
+    """ccx stopping after the force fell past its peak below SEPARATION_FRACTION F_max is a
+    stop at separation; a stop before the peak or at a larger force is not."""
+    from impactlab.fe.impact_result import SEPARATION_FRACTION
+    from impactlab.fe.impact_run import _separating
+
+    peak = 1000.0
+    assert _separating(np.array([0.0, 400.0, peak, 300.0, 0.5 * SEPARATION_FRACTION * peak]))
+    assert not _separating(np.array([0.0, 400.0, peak, 300.0, 2.0 * SEPARATION_FRACTION * peak]))
+    assert not _separating(np.array([0.0, 0.1, peak]))
+    assert not _separating(np.zeros(4))
