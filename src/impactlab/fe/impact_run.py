@@ -108,7 +108,8 @@ def assemble(problem: ImpactProblem, mesh: Mesh, out: RunOutput) -> ImpactResult
     finished = out.returncode == 0 and n > 0 and math.isclose(t[-1], problem.end_time, rel_tol=1e-6)
     stopped = not finished and n > 1 and _separating(force)
     if stopped:  # ccx stopped as the sphere left the flat: read the rebound there
-        end, separated = float(t[-1]), True
+        end = end if separated else float(t[-1])  # F past the threshold, or still above it
+        separated = True
         rebound, points = float(-velocity[-1]), 1
     else:
         after = t > end if separated else np.zeros(t.size, dtype=bool)
