@@ -33,7 +33,7 @@ PLASTIC_PRESSURE_FACTOR = 2.8
 
 #: An elastic-plastic flat's run takes this many fixed increments per time-level increment
 #: (``*DYNAMIC, DIRECT``: Newton did not converge through the first contact increments of the
-#: mesh-level-1 model at 2, converged in about 4 iterations at 4; docs/fe-dynamic.md).
+#: mesh-level-1 model at 1 and 2, converged in mostly 2-4 iterations at 4; docs/fe-dynamic.md).
 PLASTIC_SUBDIVISION = 4
 
 #: The sphere starts this many first increments above the flat (free flight before contact).
