@@ -15,7 +15,12 @@ import shutil
 import numpy as np
 import pytest
 
-from impactlab.fe.impact_problem import hertz_estimates, make_impact_problem
+from impactlab.fe.impact_deck import HHT_ALPHA, ImpactDeckSpec, procedure_card
+from impactlab.fe.impact_problem import (
+    PLASTIC_SUBDIVISION,
+    hertz_estimates,
+    make_impact_problem,
+)
 from impactlab.fe.impact_quasistatic import one_dof_impact
 from impactlab.fe.impact_reference import IMPACT_CASES, load_impact_table
 from impactlab.fe.impact_result import contact_forces, contact_window
@@ -200,3 +205,61 @@ def test_sta_counts_each_increment_once():
         "     1          2     2     3  0.15E-05  0.15E-05  0.5E-06\n"
     )
     assert sta_counts(parse_sta(text)) == (2, 1, 14)
+
+
+def test_procedure_follows_the_flat():
+    """An elastic flat: the temperature-displacement step with automatic increments; an
+    elastic-plastic flat: *DYNAMIC, DIRECT at a quarter of the time-level increment. The
+    procedure is part of the cache key."""
+    elastic = make_impact_problem(
+        AISI_1010, AISI_201, radius=R, speed=1.0, sphere="elastic", flat_hardening="elastic"
+    )
+    plastic = make_impact_problem(AISI_1010, AISI_201, radius=R, speed=1.0)
+    assert elastic.procedure == "temperature-displacement"
+    assert plastic.procedure == "dynamic-direct"
+    assert plastic.fixed_increment == pytest.approx(plastic.increment / PLASTIC_SUBDIVISION)
+    assert plastic.gap == pytest.approx(3 * plastic.increment * 1.0)
+    assert elastic.key_data()["procedure"] != plastic.key_data()["procedure"]
+
+
+def _deck_spec(procedure: str, fixed: float) -> ImpactDeckSpec:
+    p = make_impact_problem(AISI_1010, AISI_201, radius=R, speed=1.0)
+    return ImpactDeckSpec(
+        base=None,  # type: ignore[arg-type]  # the step card does not read it
+        flat_density=7870.0,
+        sphere_density=p.sphere_density,
+        speed=1.0,
+        gap=p.gap,
+        increment=p.increment,
+        end_time=p.end_time,
+        procedure=procedure,
+        fixed_increment=fixed,
+    )
+
+
+def test_procedure_cards():
+    dt = make_impact_problem(AISI_1010, AISI_201, radius=R, speed=1.0).increment
+    direct = procedure_card(_deck_spec("dynamic-direct", dt / 4)).splitlines()
+    assert direct[0] == f"*DYNAMIC, DIRECT, ALPHA={HHT_ALPHA}"
+    assert float(direct[1].split(",")[0]) == pytest.approx(dt / 4, rel=1e-11)
+    assert -1.0 / 3.0 <= HHT_ALPHA <= 0.0
+    coupled = procedure_card(_deck_spec("temperature-displacement", 0.0)).splitlines()
+    assert coupled[0] == "*UNCOUPLED TEMPERATURE-DISPLACEMENT"
+    assert float(coupled[1].split(",")[0]) == pytest.approx(dt / 2, rel=1e-11)
+    with pytest.raises(ValueError, match="fixed_increment"):
+        procedure_card(_deck_spec("dynamic-direct", 2 * dt))
+    with pytest.raises(ValueError, match="procedure must be one of"):
+        procedure_card(_deck_spec("explicit", dt))
+
+
+def test_a_run_stopped_as_the_sphere_leaves_is_recognised():
+    """ccx stopping after the force fell past its peak below SEPARATION_FRACTION F_max is a
+    stop at separation; a stop before the peak or at a larger force is not."""
+    from impactlab.fe.impact_result import SEPARATION_FRACTION
+    from impactlab.fe.impact_run import _separating
+
+    peak = 1000.0
+    assert _separating(np.array([0.0, 400.0, peak, 300.0, 0.5 * SEPARATION_FRACTION * peak]))
+    assert not _separating(np.array([0.0, 400.0, peak, 300.0, 2.0 * SEPARATION_FRACTION * peak]))
+    assert not _separating(np.array([0.0, 0.1, peak]))
+    assert not _separating(np.zeros(4))

@@ -46,21 +46,48 @@ def test_a_law_column_is_one_call(comparison):
     assert "| dynamic FE |" in text
 
 
-def test_elastic_plastic_flat_has_the_quasi_static_fe_and_the_laws():
-    """The elastic-plastic flat: no dynamic FE (CalculiX 2.20 cannot run it), the 1-DOF impact
-    on the quasi-static FE curves and the laws. Physics that must hold: energy is lost (e < 1)
-    and more of it at the higher speed, the dent is permanent and deeper relative to the
-    peak at the higher speed, and every law dents the flat too."""
+def test_elastic_plastic_flat_has_every_model():
+    """The elastic-plastic flat: dynamic FE, the 1-DOF impact on the quasi-static FE curves and
+    the laws. Physics that must hold: energy is lost (e < 1) and more of it at the higher
+    speed, the dent is permanent and deeper relative to the peak at the higher speed, and
+    every law dents the flat too."""
     comp = compare_impacts("paper-ball-on-aisi1010")
-    assert all(math.isnan(r["restitution"]) for r in comp.columns["dynamic FE"])
-    qs = comp.columns["quasi-static FE 1-DOF"]
-    assert 0.0 < qs[1]["restitution"] < qs[0]["restitution"] < 1.0
-    ratios = [r["residual_depth"] / r["max_interference"] for r in qs]
-    assert 0.0 < ratios[0] < ratios[1] < 1.0
+    for name in ("dynamic FE", "quasi-static FE 1-DOF"):
+        col = comp.columns[name]
+        assert 0.0 < col[1]["restitution"] < col[0]["restitution"] < 1.0
+        ratios = [r["residual_depth"] / r["max_interference"] for r in col]
+        assert 0.0 < ratios[0] < ratios[1] < 1.0
     for law in ("jackson-green", "ghaednia", "kogut-komvopoulos", "brake", "thornton"):
         for row in comp.columns[law]:
             assert 0.0 < row["restitution"] < 1.0
             assert row["residual_depth"] > 0.0
+
+
+def test_plastic_flat_dynamic_fe_is_softer_than_hertz_and_close_to_quasi_static():
+    """The dynamic FE impact on the elastic-plastic flat: a lower peak force and a deeper
+    peak interference than Hertz's elastic impact of the same sphere; against the 1-DOF impact
+    on the quasi-static FE curves of the same bodies (docs/fe-dynamic.md, measured: e within
+    0.01, delta_max, F_max and T within 2 %, delta_p within 3 %): e within 0.02, delta_max,
+    F_max and T within 3 %, delta_p within 5 %. The runs' momentum balance closes to 1 %."""
+    from impactlab.fe.impact_reference import load_impact_table
+    from impactlab.materials import AISI_201, AISI_1010, ContactPair
+    from impactlab.verification.hertz import hertz_closed_form
+
+    table = load_impact_table("paper-ball-on-aisi1010")
+    assert table["ccx_version"] != "2.20"  # 2.20 cannot run it (docs/fe-dynamic.md)
+    e_star = ContactPair(AISI_201, AISI_1010).E_star
+    for row in table["rows"]:
+        dyn, qs = row["dynamic"], row["quasi_static"]
+        assert dyn["procedure"] == "dynamic-direct"
+        assert dyn["status"] == "converged" or dyn["status"].startswith("stopped at separation")
+        assert dyn["momentum_balance"] < 0.01
+        dm, fm, _ = hertz_closed_form(row["mass"], e_star, 8.8e-3, row["speed"])
+        assert dyn["max_force"] < fm
+        assert dyn["max_interference"] > dm
+        assert dyn["restitution"] == pytest.approx(qs["restitution"], abs=0.02)
+        for q in ("max_interference", "max_force", "contact_duration"):
+            assert dyn[q] == pytest.approx(qs[q], rel=0.03)
+        assert dyn["residual_depth"] == pytest.approx(qs["residual_depth"], rel=0.05)
 
 
 def test_rod_mass_case_is_deep_in_the_plastic_range():

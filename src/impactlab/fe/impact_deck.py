@@ -5,16 +5,26 @@ The bodies, materials and banded penalty contact are the indentation deck's
 and starts with the velocity -v (``*INITIAL CONDITIONS, TYPE=VELOCITY``; ccx passes it to
 the expanded sector's nodes only when the node set also carries a surface, hence ``SVEL``).
 
-Procedure. The time integration is CalculiX's implicit (Newton-iterated) integration with
-inertia (``*DENSITY``), run as an ``*UNCOUPLED TEMPERATURE-DISPLACEMENT`` step at constant
-temperature (no thermal expansion; the thermal field plays no part). ``*DYNAMIC`` itself did
-not get past the first contact increment: its energy-based impact rules (ccx's
-``checkimpacts``, applied only to ``*DYNAMIC`` steps) forced the increment below any minimum
-(1e-14 s) whatever the penalty slope or the increment; and ``*DYNAMIC, EXPLICIT`` needs
-increments of about 3.5e-12 s (the smallest brick of the 2-degree sector at the axis), some
-10^7 increments per impact. Printed per increment: the contact force of every band
-(``*CONTACT PRINT``, ``CF``), the displacements and velocities of every sphere node and of the
-flat's surface.
+Procedures. Both integrate implicitly (Newton-iterated) with inertia (``*DENSITY``).
+
+- Elastic flat: an ``*UNCOUPLED TEMPERATURE-DISPLACEMENT`` step at constant temperature (no
+  thermal expansion; the thermal field plays no part) with automatic increments. ``*DYNAMIC``
+  with automatic increments does not get past the first contact increment: its energy-based
+  impact rules (ccx's ``checkimpacts``, applied only to ``*DYNAMIC`` steps) force the increment
+  below any minimum (1e-14 s) whatever the penalty slope or the increment; ``*DYNAMIC,
+  EXPLICIT`` needs increments of about 3.5e-12 s (the smallest brick of the 2-degree sector at
+  the axis), some 10^7 increments per impact.
+- Elastic-plastic flat: ``*DYNAMIC, DIRECT`` (fixed increments, no impact rules) with the
+  Hilber-Hughes-Taylor parameter ``ALPHA`` = :data:`HHT_ALPHA`, whose numerical damping of the
+  highest frequencies lets Newton converge through the contact's onset (it did not at
+  alpha = 0 or -0.05; Hilber, Hughes, Taylor 1977, doi:10.1002/eqe.4290050306). The automatic
+  temperature-displacement step ran, but with cut-backs to 1e-8 s at every contact increment.
+  CalculiX 2.20 stops with "no convergence in incplas" before the first increment whenever
+  plasticity, contact and inertia meet; a CalculiX built from the author's sources after 2.23
+  runs it (docs/fe-dynamic.md).
+
+Printed per increment: the contact force of every band (``*CONTACT PRINT``, ``CF``), the
+displacements and velocities of every sphere node and of the flat's surface.
 """
 
 from __future__ import annotations
@@ -41,13 +51,19 @@ DENSITY_TO_DECK = 1.0e-12
 CONDUCTIVITY = 50.0
 SPECIFIC_HEAT = 460.0
 TEMPERATURE = 293.0
+#: The Hilber-Hughes-Taylor parameter of the "dynamic-direct" procedure (-1/3 <= alpha <= 0;
+#: -1/3 the strongest damping of the highest frequencies).
+HHT_ALPHA = -0.3
+#: The procedures: the step card of each.
+PROCEDURES = ("temperature-displacement", "dynamic-direct")
 
 
 @dataclass(frozen=True)
 class ImpactDeckSpec:
     """What the impact deck holds besides the mesh: the indentation deck's materials and
     contact, the densities [kg/m^3], the speed [m/s], the gap [m], the increment and end time
-    [s]."""
+    [s], the procedure (one of :data:`PROCEDURES`) and the fixed increment [s] of
+    "dynamic-direct"."""
 
     base: DeckSpec
     flat_density: float
@@ -56,6 +72,8 @@ class ImpactDeckSpec:
     gap: float
     increment: float
     end_time: float
+    procedure: str = "temperature-displacement"
+    fixed_increment: float = 0.0
 
 
 def shifted(mesh: Mesh, gap: float) -> np.ndarray:
@@ -74,6 +92,22 @@ def _material_card(card_text: str, density: float) -> str:
         f"*DENSITY\n{_f(density * DENSITY_TO_DECK)}\n"
     )
     return f"{head}\n{extra}{rest}"
+
+
+def procedure_card(spec: ImpactDeckSpec) -> str:
+    """The procedure card and its time line (first, end, smallest, largest increment [s])."""
+    dt, t_end = spec.increment, spec.end_time
+    limits = f"{_f(t_end)}, {_f(1e-4 * dt)}, {_f(dt)}\n"
+    if spec.procedure == "temperature-displacement":
+        return f"*UNCOUPLED TEMPERATURE-DISPLACEMENT\n{_f(0.5 * dt)}, {limits}"
+    if spec.procedure == "dynamic-direct":
+        if not 0.0 < spec.fixed_increment <= dt:
+            raise ValueError(
+                f"fixed_increment must be in (0, increment = {dt!r}] s, "
+                f"got {spec.fixed_increment!r} s"
+            )
+        return f"*DYNAMIC, DIRECT, ALPHA={HHT_ALPHA}\n{_f(spec.fixed_increment)}, {limits}"
+    raise ValueError(f"procedure must be one of {PROCEDURES}, got {spec.procedure!r}")
 
 
 def write_impact_deck(mesh: Mesh, spec: ImpactDeckSpec) -> str:
@@ -128,9 +162,7 @@ def write_impact_deck(mesh: Mesh, spec: ImpactDeckSpec) -> str:
     parts.append(f"*INITIAL CONDITIONS, TYPE=TEMPERATURE\nNALL, {_f(TEMPERATURE)}\n")
     v = -spec.speed / LENGTH_UNIT
     parts.append(f"*INITIAL CONDITIONS, TYPE=VELOCITY\nNSPH, 2, {_f(v)}\n")
-    dt, t_end = spec.increment, spec.end_time
-    parts.append("*STEP, NLGEOM, INC=100000\n*UNCOUPLED TEMPERATURE-DISPLACEMENT\n")
-    parts.append(f"{_f(0.5 * dt)}, {_f(t_end)}, {_f(1e-4 * dt)}, {_f(dt)}\n")
+    parts.append("*STEP, NLGEOM, INC=100000\n" + procedure_card(spec))
     parts.append("*NODE PRINT, NSET=NBOT, TOTALS=ONLY\nRF\n")
     parts.append("*NODE PRINT, NSET=NSPH\nU, V\n")
     parts.append("*NODE PRINT, NSET=NFSURF\nU\n")

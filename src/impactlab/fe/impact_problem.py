@@ -7,7 +7,8 @@ the sphere is free (no prescribed node) and starts with velocity -v a small gap 
 The hemisphere's density is set so that its mass is m: the full ball's mass by default, or the
 effective mass a rod puts behind its tip (the whole rod's mass for a rod striking along its
 axis). Time integration: CalculiX's implicit integration with inertia (see
-``impactlab.fe.impact_deck`` for why through the uncoupled temperature-displacement procedure).
+``impactlab.fe.impact_deck`` for the two procedures: the uncoupled temperature-displacement step
+for an elastic flat, ``*DYNAMIC, DIRECT`` with numerical damping for an elastic-plastic one).
 """
 
 from __future__ import annotations
@@ -29,6 +30,11 @@ TIME_INCREMENTS: dict[int, int] = {1: 60, 2: 120, 3: 240}
 #: Mean contact pressure of a fully plastic contact, in yield strengths (about 2.8-3 S_y; used
 #: only to size the model: the mesh extent and the simulated time).
 PLASTIC_PRESSURE_FACTOR = 2.8
+
+#: An elastic-plastic flat's run takes this many fixed increments per time-level increment
+#: (``*DYNAMIC, DIRECT``: Newton did not converge through the first contact increments of the
+#: mesh-level-1 model at 1 and 2, converged in mostly 2-4 iterations at 4; docs/fe-dynamic.md).
+PLASTIC_SUBDIVISION = 4
 
 #: The sphere starts this many first increments above the flat (free flight before contact).
 GAP_INCREMENTS = 3
@@ -100,8 +106,20 @@ class ImpactProblem:
 
     @property
     def increment(self) -> float:
-        """The time increment [s] (the largest ccx may take)."""
+        """The time-level increment [s]: T_est / TIME_INCREMENTS[time_level] (the largest ccx
+        may take for an elastic flat; it sets the gap and the end time in either case)."""
         return self.estimates()[1] / TIME_INCREMENTS[self.time_level]
+
+    @property
+    def procedure(self) -> str:
+        """The procedure: "temperature-displacement" (elastic flat: automatic increments) or
+        "dynamic-direct" (elastic-plastic flat: fixed increments, numerical damping)."""
+        return "temperature-displacement" if self.flat_is_elastic else "dynamic-direct"
+
+    @property
+    def fixed_increment(self) -> float:
+        """The fixed increment [s] of the "dynamic-direct" procedure."""
+        return self.increment / PLASTIC_SUBDIVISION
 
     @property
     def gap(self) -> float:
@@ -137,6 +155,8 @@ class ImpactProblem:
             "increments": TIME_INCREMENTS[self.time_level],
             "gap_increments": GAP_INCREMENTS,
             "end_time_factor": END_TIME_FACTOR,
+            "procedure": self.procedure,
+            "subdivision": PLASTIC_SUBDIVISION if self.procedure == "dynamic-direct" else 1,
         }
 
 

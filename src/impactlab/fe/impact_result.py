@@ -29,6 +29,10 @@ _CF = re.compile(
 #: The contact counts as closed while F > CONTACT_THRESHOLD * F_max.
 CONTACT_THRESHOLD = 1.0e-3
 
+#: A run ccx stopped after the force had fallen past its peak below this fraction of F_max
+#: is "stopped at separation": v_out and delta_p are read at its last increment.
+SEPARATION_FRACTION = 5.0e-3
+
 #: The array fields (stored as arrays in the cache; the rest is the header).
 IMPACT_ARRAYS = ("time", "force", "interference", "velocity", "dent_r", "dent_z")
 
@@ -47,7 +51,9 @@ class ImpactResult:
     increments); dent_r, dent_z: the flat's final surface (z > 0: pile-up) [m];
     momentum_balance: |m (v_in + v_out) - integral F dt| / (m v_in), the consistency of the
     force history with the velocities; separated: the sphere left the flat before the end;
-    converged: ccx finished the run; message, increments, cutbacks, iterations, run_time,
+    converged: ccx finished the run (a run with separated True and converged False stopped at
+    separation: v_out and delta_p are read at its last increment, where F < SEPARATION_FRACTION
+    F_max); message, increments, cutbacks, iterations, run_time,
     n_elements as for an indentation; delta_c [m]; inputs: every input (the cache key's data).
     """
 
@@ -78,8 +84,20 @@ class ImpactResult:
     delta_c: float
     inputs: dict[str, Any]
 
+    @property
+    def stopped_at_separation(self) -> bool:
+        """True when ccx stopped as the sphere left the flat (F below SEPARATION_FRACTION F_max
+        after its peak): the rebound speed and the dent are read at the last increment."""
+        return self.separated and not self.converged
+
     def status(self) -> str:
-        """``converged``, or what went wrong."""
+        """``converged``, ``stopped at separation: ...``, or what went wrong."""
+        if self.stopped_at_separation:
+            share = 100.0 * float(self.force[-1]) / self.max_force
+            return (
+                f"stopped at separation: ccx stopped at t = {self.time[-1]:.4g} s with "
+                f"F = {share:.2g} % of F_max (v_out, delta_p read there); {self.message}"
+            )
         if not self.converged:
             return f"NOT CONVERGED: ccx stopped at t = {self.time[-1]:.4g} s; {self.message}"
         if not self.separated:

@@ -26,6 +26,7 @@ from impactlab.fe.impact_deck import ImpactDeckSpec, write_impact_deck
 from impactlab.fe.impact_problem import ImpactProblem, make_impact_problem
 from impactlab.fe.impact_result import (
     IMPACT_ARRAYS,
+    SEPARATION_FRACTION,
     ImpactResult,
     centre_of_mass,
     contact_forces,
@@ -53,6 +54,8 @@ def deck_spec(problem: ImpactProblem, mesh: Mesh) -> ImpactDeckSpec:
         gap=problem.gap,
         increment=problem.increment,
         end_time=problem.end_time,
+        procedure=problem.procedure,
+        fixed_increment=problem.fixed_increment,
     )
 
 
@@ -103,15 +106,22 @@ def assemble(problem: ImpactProblem, mesh: Mesh, out: RunOutput) -> ImpactResult
     velocity = np.concatenate([[problem.speed], -v_cm])
     start, end, separated = contact_window(t, force) if n else (math.nan, math.nan, False)
     finished = out.returncode == 0 and n > 0 and math.isclose(t[-1], problem.end_time, rel_tol=1e-6)
-    after = t > end if separated else np.zeros(t.size, dtype=bool)
-    rebound = float(-np.mean(velocity[after][-FINAL_POINTS:])) if after.any() else math.nan
+    stopped = not finished and n > 1 and _separating(force)
+    if stopped:  # ccx stopped as the sphere left the flat: read the rebound there
+        end = end if separated else float(t[-1])  # F past the threshold, or still above it
+        separated = True
+        rebound, points = float(-velocity[-1]), 1
+    else:
+        after = t > end if separated else np.zeros(t.size, dtype=bool)
+        rebound = float(-np.mean(velocity[after][-FINAL_POINTS:])) if after.any() else math.nan
+        points = FINAL_POINTS
     impulse = trapezoid(force, t)
     m, v = problem.mass, problem.speed
     balance = abs(m * (v + rebound) - impulse) / (m * v) if math.isfinite(rebound) else math.nan
     dent_r = dent_z = np.empty(0)
     residual = math.nan
-    if finished and separated:
-        dent_r, dent_z, depth, flattening = _final_surfaces(dat, mesh, FINAL_POINTS)
+    if (finished or stopped) and separated:
+        dent_r, dent_z, depth, flattening = _final_surfaces(dat, mesh, points)
         residual = depth + flattening
     incs, cuts, its = sta_counts(parse_sta(out.sta))
     return ImpactResult(
@@ -141,6 +151,16 @@ def assemble(problem: ImpactProblem, mesh: Mesh, out: RunOutput) -> ImpactResult
         n_elements=mesh.n_elements,
         delta_c=problem.delta_c,
         inputs=problem.key_data(),
+    )
+
+
+def _separating(force: np.ndarray) -> bool:
+    """True when the force has passed its peak and fallen below SEPARATION_FRACTION F_max."""
+    peak = float(np.max(force))
+    return (
+        peak > 0.0
+        and int(np.argmax(force)) < force.size - 1
+        and float(force[-1]) < SEPARATION_FRACTION * peak
     )
 
 
@@ -226,7 +246,8 @@ def impact(
 
     Returns one :class:`ImpactResult` per speed, in the order given; a run ccx could not
     finish, or in which the sphere did not leave the flat, comes with a
-    ``NotConvergedWarning``.
+    ``NotConvergedWarning`` (also one that ccx stopped at separation, whose rebound speed and
+    dent are read at its last increment: ``ImpactResult.stopped_at_separation``).
     """
     sphere_material = flat if sphere_material is None else sphere_material
     problems = [
@@ -265,7 +286,7 @@ def impact(
             for future in as_completed([pool.submit(job, i) for i in todo]):
                 i, res = future.result()
                 results[i] = res
-                if res.converged and use_cache:
+                if (res.converged or res.stopped_at_separation) and use_cache:
                     store(directory, keys[i], res)
                 if progress is not None:
                     progress(i, res)

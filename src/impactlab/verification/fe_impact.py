@@ -84,7 +84,7 @@ def law_row(case: str, law: str, speed: float, mass: float) -> dict[str, float]:
 def _fe_column(rows: list[dict[str, Any]], key: str) -> list[dict[str, float]]:
     out = []
     for row in rows:
-        src = row[key] or {}  # None: not run (the dynamic FE of an elastic-plastic flat)
+        src = row[key] or {}  # None: not run (the rod-mass case's dynamic FE)
         out.append({q: math.nan if src.get(q) is None else float(src[q]) for q, _ in QUANTITIES})
     return out
 
