@@ -130,22 +130,26 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
     ynew, yt, yev = np.zeros(n), np.zeros(n), np.zeros(n)
     K, Q, W = np.zeros((7, n)), np.zeros((n, 4)), np.zeros((3, cm.shape[0]))
     gold, gnew, gt = np.empty(ng), np.empty(ng), np.empty(ng)
-    t, h, hmin = 0.0, 0.02 * tstar * rtol**0.2, 1e-14 * tstar
+    # hc: the controller's step; h: the step taken (hc cut at a cell boundary or at t*)
+    t, hc, hmin = 0.0, 0.02 * tstar * rtol**0.2, 1e-14 * tstar
     ev = rhs(law, p, c, md, y, cm, sg, cp, W, K[0])
     events(c, md, cm, sg, cp, W, ev, gold)
     nh = np.int64(0)  # not a literal: record() is compiled once, for any row count
     if rec:
         hist, nh = record(hist, nh, t, law, p, c, md, y, cm, sg, cp, W)
     nsteps, nevents, status = 0, 0, ST_NO_SEPARATION
+    ar0, ad0 = ev[7], ev[8]  # contact radius [m] and its rate [m/s] at t
+    t_last, ad_last = -1.0, 0.0  # the last accepted step's start and the radius rate there
     while nsteps < MAX_STEPS:
         nsteps += 1
         # end the step just past the next cell boundary: its kink then lies at the step's end
-        hz = boundary_horizon(cm, cp, ev[7], ev[8])
-        h = min(h, tstar, STEP_PAST * hz + hmin) if hz > 0.0 else min(h, tstar)
+        add = (ad0 - ad_last) / (t - t_last) if 0.0 <= t_last < t else 0.0
+        hz = boundary_horizon(cm, cp, ar0, ad0, add)
+        h = min(hc, tstar, STEP_PAST * hz + hmin) if hz > 0.0 else min(hc, tstar)
         err, ev = step(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew)
         if not (err <= 1.0):
-            h *= max(0.2, power_growth(err)) if math.isfinite(err) else 0.25
-            if h < hmin:
+            hc = h * (max(0.2, power_growth(err)) if math.isfinite(err) else 0.25)
+            if hc < hmin:
                 status = ST_NAN if not math.isfinite(err) else ST_STEP_UNDERFLOW
                 break
             continue
@@ -157,7 +161,7 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
                 if j / 4.0 < theta:
                     dense(y, h, j / 4.0, Q, yt)
                     hist, nh = record(hist, nh, t + j * h / 4.0, law, p, c, md, yt, cm, sg, cp, W)
-        if k >= 0:
+        if k >= 0:  # the state at the event, integrated anew (the dense output is 4th order)
             nsteps += integrate_to(law, p, c, md, y, cm, sg, cp, W, K[0], theta * h, rtol, sc, yev)
             tend = t + theta * h
         else:
@@ -168,10 +172,14 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
         if not track(acc, law, p, c, md, yev, cm, cp, W, ev, t, tend, diag):
             status = ST_NAN
             break
+        t_last, ad_last = t, ad0
+        ar0, ad0 = ev[7], ev[8]
         t = tend
         copy_into(y, yev)
-        h *= 10.0 if err == 0.0 else min(10.0, power_growth(err))
-        if rec:
+        # the controller's next step; a step cut short (at a cell boundary) does not shrink it
+        grown = h * (10.0 if err == 0.0 else min(10.0, power_growth(err)))
+        hc = max(hc, grown) if h < hc else grown
+        if rec and k < 0:
             hist, nh = record(hist, nh, t, law, p, c, md, y, cm, sg, cp, W)
         if k < 0:
             copy_into(K[0], K[6])
@@ -182,6 +190,8 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
             status = ST_TOO_MANY_EVENTS
             break
         st, c, md = _switch(k, law, p, c, md, y, cm, sg, cp, W, acc, K, gold)
+        if rec:  # the row at an event holds the state after the switch (F_t is continuous)
+            hist, nh = record(hist, nh, t, law, p, c, md, y, cm, sg, cp, W)
         if st != _GO_ON:
             status = st
             break
