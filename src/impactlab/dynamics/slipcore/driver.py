@@ -17,7 +17,7 @@ from impactlab.contact.kernels import P_ESTAR
 from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.buffers import copy_into
 from impactlab.dynamics.kernels.cells import CP_DX, CP_FTOL, CP_G1, CP_VTOL, STEP_PAST, birth
-from impactlab.dynamics.kernels.dormand_prince import dense, dense_coeffs
+from impactlab.dynamics.kernels.dormand_prince import dense
 from impactlab.dynamics.kernels.layout import (
     A_DMAX,
     A_EMIN,
@@ -121,6 +121,17 @@ def _switch(k, law, p, c, md, y, cm, sg, cp, W, acc, K, gold):
     return _GO_ON, c, md
 
 
+@njit_internal
+def _dense_rows(hist, nh, t, h, theta, law, p, c, md, y, cm, sg, cp, W, Q, yt):
+    """History rows at a quarter, half and three quarters of the step from ``y`` (size ``h``,
+    dense-output coefficients ``Q``) that lie before ``theta``; returns (hist, rows)."""
+    for j in range(1, 4):
+        if j / 4.0 < theta:
+            dense(y, h, j / 4.0, Q, yt)
+            hist, nh = record(hist, nh, t + j * h / 4.0, law, p, c, md, yt, cm, sg, cp, W)
+    return hist, nh
+
+
 @njit(cache=True, error_model="numpy")
 def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, acc):
     """The step loop from first touch to separation, a failure or MAX_STEPS.
@@ -129,7 +140,8 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
     ng = G_CELL + cm.shape[0]
     ynew, yt, yev = np.zeros(n), np.zeros(n), np.zeros(n)
     K, Q, W = np.zeros((7, n)), np.zeros((n, 4)), np.zeros((3, cm.shape[0]))
-    gold, gnew, gt = np.empty(ng), np.empty(ng), np.empty(ng)
+    gold, gnew, gmid = np.empty(ng), np.empty(ng), np.empty(ng)
+    Wm = np.zeros((3, cm.shape[0]))
     # hc: the controller's step; h: the step taken (hc cut at a cell boundary or at t*)
     t, hc, hmin = 0.0, 0.02 * tstar * rtol**0.2, 1e-14 * tstar
     ev = rhs(law, p, c, md, y, cm, sg, cp, W, K[0])
@@ -154,13 +166,9 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
                 break
             continue
         events(c, md, cm, sg, cp, W, ev, gnew)
-        k, theta = first_event(gold, gnew, law, p, c, md, y, K, Q, h, cm, sg, cp, W, gt, yt)
+        k, theta = first_event(gold, gnew, gmid, law, p, c, md, y, K, Q, h, cm, sg, cp, Wm, yt)
         if rec:
-            dense_coeffs(K, Q)
-            for j in range(1, 4):
-                if j / 4.0 < theta:
-                    dense(y, h, j / 4.0, Q, yt)
-                    hist, nh = record(hist, nh, t + j * h / 4.0, law, p, c, md, yt, cm, sg, cp, W)
+            hist, nh = _dense_rows(hist, nh, t, h, theta, law, p, c, md, y, cm, sg, cp, W, Q, yt)
         if k >= 0:  # the state at the event, integrated anew (the dense output is 4th order)
             nsteps += integrate_to(law, p, c, md, y, cm, sg, cp, W, K[0], theta * h, rtol, sc, yev)
             tend = t + theta * h
@@ -176,9 +184,7 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
         ar0, ad0 = ev[7], ev[8]
         t = tend
         copy_into(y, yev)
-        # the controller's next step; a step cut short (at a cell boundary) does not shrink it
-        grown = h * (10.0 if err == 0.0 else min(10.0, power_growth(err)))
-        hc = max(hc, grown) if h < hc else grown
+        hc = h * (10.0 if err == 0.0 else min(10.0, power_growth(err)))
         if rec and k < 0:
             hist, nh = record(hist, nh, t, law, p, c, md, y, cm, sg, cp, W)
         if k < 0:

@@ -23,7 +23,7 @@ from impactlab.dynamics.kernels.dormand_prince import DP_E, dense, dense_coeffs,
 from impactlab.dynamics.kernels.roots import illinois
 from impactlab.dynamics.kernels.step_control import power_growth
 from impactlab.dynamics.slipcore.layout import Y_CELL
-from impactlab.dynamics.slipcore.model import derivative, evaluate, event_value, n_in
+from impactlab.dynamics.slipcore.model import derivative, evaluate, event_value, events, n_in
 
 
 @njit(cache=True, error_model="numpy")
@@ -77,10 +77,10 @@ def event_at(k, law, p, c, md, y, cm, sg, cp, W, g):
 
 
 @njit(cache=True, error_model="numpy")
-def locate(k, g0, g1, law, p, c, md, y0, Q, h, cm, sg, cp, W, g, yt):
-    """theta in (0, 1] where event ``k`` fires: Illinois regula falsi on the dense output;
-    returns the bracket end where g > 0."""
-    a, fa, b, fb = 0.0, g0, 1.0, g1
+def locate(k, lo, g0, hi, g1, law, p, c, md, y0, Q, h, cm, sg, cp, W, g, yt):
+    """theta in (lo, hi] where event ``k`` fires (g(lo) = g0 <= 0 < g(hi) = g1): Illinois regula
+    falsi on the dense output; returns the bracket end where g > 0."""
+    a, fa, b, fb = lo, g0, hi, g1
     side = 0
     for _ in range(60):
         th = (a * fb - b * fa) / (fb - fa)
@@ -95,22 +95,29 @@ def locate(k, g0, g1, law, p, c, md, y0, Q, h, cm, sg, cp, W, g, yt):
 
 
 @njit(cache=True, error_model="numpy")
-def first_event(gold, gnew, law, p, c, md, y0, K, Q, h, cm, sg, cp, W, g, yt):
-    """(event, theta) of the earliest event inside the accepted step (-1, 2.0: none). Events
-    within 1e-10 of the earliest count as simultaneous: the lowest index wins (normal events,
-    then birth and release, then the cells)."""
+def first_event(gold, gnew, gmid, law, p, c, md, y0, K, Q, h, cm, sg, cp, Wm, yt):
+    """(event, theta) of the earliest event inside the accepted step (-1, 2.0: none). The
+    event functions are also evaluated at the step's midpoint (dense output, into ``gmid``;
+    ``Wm``: scratch): one that rises above zero and falls back within a step, a cell that
+    sticks for less than a step, is found there. Events within 1e-10 of the earliest count as
+    simultaneous: the lowest index wins (normal events, then birth and release, then the
+    cells). Leaves the dense-output coefficients in ``Q``."""
+    dense_coeffs(K, Q)
+    dense(y0, h, 0.5, Q, yt)
+    events(c, md, cm, sg, cp, Wm, evaluate(law, p, c, md, yt, cm, sg, cp, Wm), gmid)
     best = -1
     theta = 2.0
-    fired = False
     for k in range(gold.shape[0]):
-        if gold[k] <= 0.0 and gnew[k] > 0.0:
-            if not fired:
-                dense_coeffs(K, Q)
-                fired = True
-            th = locate(k, gold[k], gnew[k], law, p, c, md, y0, Q, h, cm, sg, cp, W, g, yt)
-            if th < theta - 1e-10:
-                theta = th
-                best = k
+        if gold[k] <= 0.0 and gmid[k] > 0.0:
+            lo, glo, hi, ghi = 0.0, gold[k], 0.5, gmid[k]
+        elif gmid[k] <= 0.0 and gnew[k] > 0.0:
+            lo, glo, hi, ghi = 0.5, gmid[k], 1.0, gnew[k]
+        else:
+            continue
+        th = locate(k, lo, glo, hi, ghi, law, p, c, md, y0, Q, h, cm, sg, cp, Wm, gmid, yt)
+        if th < theta - 1e-10:
+            theta = th
+            best = k
     return best, theta
 
 
