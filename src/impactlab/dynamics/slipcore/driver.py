@@ -140,6 +140,7 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
     ng = G_CELL + cm.shape[0]
     ynew, yt, yev = np.zeros(n), np.zeros(n), np.zeros(n)
     K, Q, W = np.zeros((7, n)), np.zeros((n, 4)), np.zeros((3, cm.shape[0]))
+    R = np.empty((9, n))  # scratch of the recomputation at an event
     gold, gnew, gmid = np.empty(ng), np.empty(ng), np.empty(ng)
     Wm = np.zeros((3, cm.shape[0]))
     # hc: the controller's step; h: the step taken (hc cut at a cell boundary or at t*)
@@ -170,7 +171,9 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
         if rec:
             hist, nh = _dense_rows(hist, nh, t, h, theta, law, p, c, md, y, cm, sg, cp, W, Q, yt)
         if k >= 0:  # the state at the event, integrated anew (the dense output is 4th order)
-            nsteps += integrate_to(law, p, c, md, y, cm, sg, cp, W, K[0], theta * h, rtol, sc, yev)
+            nsteps += integrate_to(
+                law, p, c, md, y, cm, sg, cp, W, K[0], theta * h, rtol, sc, yev, R
+            )
             tend = t + theta * h
         else:
             copy_into(yev, ynew)

@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
 from numba import njit
 
 from impactlab.dynamics.kernels._jit import njit_internal
@@ -107,28 +106,34 @@ def first_event(gold, gnew, gmid, law, p, c, md, y0, K, Q, h, cm, sg, cp, Wm, yt
     events(c, md, cm, sg, cp, Wm, evaluate(law, p, c, md, yt, cm, sg, cp, Wm), gmid)
     best = -1
     theta = 2.0
-    for k in range(gold.shape[0]):
-        if gold[k] <= 0.0 and gmid[k] > 0.0:
-            lo, glo, hi, ghi = 0.0, gold[k], 0.5, gmid[k]
-        elif gmid[k] <= 0.0 and gnew[k] > 0.0:
-            lo, glo, hi, ghi = 0.5, gmid[k], 1.0, gnew[k]
-        else:
-            continue
-        th = locate(k, lo, glo, hi, ghi, law, p, c, md, y0, Q, h, cm, sg, cp, Wm, gmid, yt)
-        if th < theta - 1e-10:
-            theta = th
-            best = k
+    # the first half, then (if nothing fired there) the second: later events need no location
+    for half in range(2):
+        lo = 0.5 * half
+        ga = gold if half == 0 else gmid
+        gb = gmid if half == 0 else gnew
+        for k in range(gold.shape[0]):
+            if ga[k] <= 0.0 and gb[k] > 0.0:
+                th = locate(
+                    k, lo, ga[k], lo + 0.5, gb[k], law, p, c, md, y0, Q, h, cm, sg, cp, Wm, gmid, yt
+                )
+                if th < theta - 1e-10:
+                    theta = th
+                    best = k
+        if best >= 0:
+            break
     return best, theta
 
 
 @njit(cache=True, error_model="numpy")
-def integrate_to(law, p, c, md, y, cm, sg, cp, W, k0, H, rtol, sc, out):
+def integrate_to(law, p, c, md, y, cm, sg, cp, W, k0, H, rtol, sc, out, R):
     """Integrate from ``y`` over exactly ``H`` with error control into ``out`` (the state at an
-    event is recomputed this way, not taken from the dense output). Returns the steps taken."""
-    n = y.shape[0]
-    Ks = np.empty((7, n))
-    cur = y.copy()
-    kc = k0.copy()
+    event is recomputed this way, not taken from the dense output; ``R``: 9 x len(y) scratch).
+    Returns the steps taken."""
+    Ks = R[:7]
+    cur = R[7]
+    kc = R[8]
+    copy_into(cur, y)
+    copy_into(kc, k0)
     done = 0.0
     hh = H
     steps = 0
