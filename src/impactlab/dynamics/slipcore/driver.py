@@ -73,7 +73,12 @@ from impactlab.dynamics.slipcore.layout import CP_FSC, EXTRA, G_CELL, NCP, Y_CEL
 from impactlab.dynamics.slipcore.model import boundary_horizon, evaluate, events
 from impactlab.dynamics.slipcore.outputs import A_JUMP, NA, record, separation, track
 from impactlab.dynamics.slipcore.stepper import first_event, integrate_to, rhs, step
-from impactlab.dynamics.slipcore.switches import apply_cell_event, normal_switch, settle
+from impactlab.dynamics.slipcore.switches import (
+    apply_cell_event,
+    normal_switch,
+    release_passed,
+    settle,
+)
 
 _GO_ON = -1
 
@@ -192,7 +197,11 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
             hist, nh = record(hist, nh, t, law, p, c, md, y, cm, sg, cp, W)
         if k < 0:
             copy_into(K[0], K[6])
-            copy_into(gold, gnew)
+            if release_passed(y, cm, cp, ev[7], K[0]):
+                ev = evaluate(law, p, c, md, y, cm, sg, cp, W)
+                events(c, md, cm, sg, cp, W, ev, gold)
+            else:
+                copy_into(gold, gnew)
             continue
         nevents += 1
         if nevents > MAX_EVENTS:

@@ -147,7 +147,7 @@ def events(c, md, cm, sg, cp, W, ev, g):
     dx = cp[CP_DX]
     if nin < cm.shape[0]:
         g[G_BIRTH] = ar - nin * dx
-    if nin > 1:
+    if nin > 1 and cm[nin - 1] == STICK:  # a slipping edge cell leaves without an event
         g[G_REL] = (nin - 1) * dx - ar
     for i in range(nin):
         g[G_CELL + i] = cell_event(i, cm, sg, cp, W, ar, ad, vs)
@@ -182,7 +182,7 @@ def event_value(k, law, p, c, md, y, cm, sg, cp):
     if k == G_BIRTH:
         return ar - nin * dx if nin < cm.shape[0] else -1.0
     if k == G_REL:
-        return (nin - 1) * dx - ar if nin > 1 else -1.0
+        return (nin - 1) * dx - ar if nin > 1 and cm[nin - 1] == STICK else -1.0
     i = k - G_CELL
     if i >= nin:
         return -1.0
