@@ -1,6 +1,6 @@
 """mu from the Kharaz-Gorham-Salman rebound data against their independently measured 0.092.
 
-Every model runs in the batch engine; the partial-slip model, about 50 times the cost of
+Every model runs in the batch engine; the partial-slip model, about 35 times the cost of
 Mindlin per impact, takes about half a minute (marked slow). Measured
 with 8 walkers x 200 steps (docs/calibrate.md): partial slip 0.094 [0.090, 0.098], Mindlin
 0.092 [0.088, 0.096], Coulomb 0.095 [0.090, 0.100]; PSIS-LOO ranks partial slip first.

@@ -210,8 +210,10 @@ elastic-perfectly-plastic tangential elements of stiffness G_1 = 4 G* per unit l
 The line is cut into N cells (default 16 over the largest contact radius, estimated by a
 pre-pass of the rigid core); a cell is born unstressed when the contact radius reaches it, sticks
 (df = 2 G_1 l v_slip) or slips on its moving limit, and is released at zero force when the
-contact recedes. Every birth, release and stick/slip switch is an event located on the dense
-output, so F_t is continuous and |F_t| <= mu F_n holds exactly; the cell forces are the load
+contact recedes. Every birth, stick/slip switch and release of a sticking cell is an event
+located on the dense output (a slipping cell's force reaches zero continuously as the contact
+recedes past it: it leaves at the end of that step), so F_t is continuous and
+|F_t| <= mu F_n holds exactly; the cell forces are the load
 history (they generalise the turning points T*, T** of Mindlin-Deresiewicz). Full stick gives
 k_t = 8 G* a, gross slip F_t = mu F_n; constant F_n gives Cattaneo-Mindlin loading and Masing
 unloading exactly. F_n(t) and a(t) come from the contact law (the loading curve, then the
@@ -222,7 +224,9 @@ works; the rigid rod and the sphere are supported, one at a time and in the batc
 **Convergence and cost.** The error of N cells against the exact solution falls like N^-2
 (prototype: max |e_t - exact| 0.023, 0.0092, 0.0038, 7.8e-4, 1.8e-4 for N = 2, 4, 8, 16, 32;
 tests/dynamics/test_partial_slip_invariants.py checks the order); 16 cells give ~1e-3. An
-impact takes 30-70 events and about 1 ms (sphere, warm), 10-20 times the `mindlin` model.
+impact takes 30-70 events and 60-600 steps (median 130), about 0.5 ms (warm, in the batch):
+35-37 times the `mindlin` model (`benchmarks/bench_partial_slip.py`;
+docs/engine/partial-slip-steps.md).
 
 **Validity.** Exact within the Cattaneo-Mindlin assumptions (half-spaces, no normal-tangential
 coupling: similar materials or small Dundurs beta, tangential load in one direction, local

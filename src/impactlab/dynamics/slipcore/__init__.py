@@ -6,7 +6,8 @@ A driver beside ``impactlab.dynamics.core`` on the shared kernels of
 Dormand-Prince tableau and dense output, the partial-slip cells); it never imports another
 driver. The tangential contact is the exact
 Mindlin-Deresiewicz model in its method-of-dimensionality-reduction form, discretised into cells
-(``model``); every cell switch is an event located on the dense output. The derivation, validity
+(``model``); every cell switch is an event located on the dense output, except the release of
+a slipping cell (its force reaches zero continuously). The derivation, validity
 and verification are in docs/verification/index.md ("Partial slip").
 
 Modules, lowest first: ``layout`` (parameter and event indices, defaults), ``model``

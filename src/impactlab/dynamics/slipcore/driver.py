@@ -17,7 +17,7 @@ from impactlab.contact.kernels import P_ESTAR
 from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.buffers import copy_into
 from impactlab.dynamics.kernels.cells import CP_DX, CP_FTOL, CP_G1, CP_VTOL, STEP_PAST, birth
-from impactlab.dynamics.kernels.dormand_prince import dense, dense_coeffs
+from impactlab.dynamics.kernels.dormand_prince import dense
 from impactlab.dynamics.kernels.layout import (
     A_DMAX,
     A_EMIN,
@@ -73,7 +73,12 @@ from impactlab.dynamics.slipcore.layout import CP_FSC, EXTRA, G_CELL, NCP, Y_CEL
 from impactlab.dynamics.slipcore.model import boundary_horizon, evaluate, events
 from impactlab.dynamics.slipcore.outputs import A_JUMP, NA, record, separation, track
 from impactlab.dynamics.slipcore.stepper import first_event, integrate_to, rhs, step
-from impactlab.dynamics.slipcore.switches import apply_cell_event, normal_switch, settle
+from impactlab.dynamics.slipcore.switches import (
+    apply_cell_event,
+    normal_switch,
+    release_passed,
+    settle,
+)
 
 _GO_ON = -1
 
@@ -121,6 +126,17 @@ def _switch(k, law, p, c, md, y, cm, sg, cp, W, acc, K, gold):
     return _GO_ON, c, md
 
 
+@njit_internal
+def _dense_rows(hist, nh, t, h, theta, law, p, c, md, y, cm, sg, cp, W, Q, yt):
+    """History rows at a quarter, half and three quarters of the step from ``y`` (size ``h``,
+    dense-output coefficients ``Q``) that lie before ``theta``; returns (hist, rows)."""
+    for j in range(1, 4):
+        if j / 4.0 < theta:
+            dense(y, h, j / 4.0, Q, yt)
+            hist, nh = record(hist, nh, t + j * h / 4.0, law, p, c, md, yt, cm, sg, cp, W)
+    return hist, nh
+
+
 @njit(cache=True, error_model="numpy")
 def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, acc):
     """The step loop from first touch to separation, a failure or MAX_STEPS.
@@ -129,36 +145,40 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
     ng = G_CELL + cm.shape[0]
     ynew, yt, yev = np.zeros(n), np.zeros(n), np.zeros(n)
     K, Q, W = np.zeros((7, n)), np.zeros((n, 4)), np.zeros((3, cm.shape[0]))
-    gold, gnew, gt = np.empty(ng), np.empty(ng), np.empty(ng)
-    t, h, hmin = 0.0, 0.02 * tstar * rtol**0.2, 1e-14 * tstar
+    R = np.empty((9, n))  # scratch of the recomputation at an event
+    gold, gnew, gmid = np.empty(ng), np.empty(ng), np.empty(ng)
+    Wm = np.zeros((3, cm.shape[0]))
+    # hc: the controller's step; h: the step taken (hc cut at a cell boundary or at t*)
+    t, hc, hmin = 0.0, 0.02 * tstar * rtol**0.2, 1e-14 * tstar
     ev = rhs(law, p, c, md, y, cm, sg, cp, W, K[0])
     events(c, md, cm, sg, cp, W, ev, gold)
     nh = np.int64(0)  # not a literal: record() is compiled once, for any row count
     if rec:
         hist, nh = record(hist, nh, t, law, p, c, md, y, cm, sg, cp, W)
     nsteps, nevents, status = 0, 0, ST_NO_SEPARATION
+    ar0, ad0 = ev[7], ev[8]  # contact radius [m] and its rate [m/s] at t
+    t_last, ad_last = -1.0, 0.0  # the last accepted step's start and the radius rate there
     while nsteps < MAX_STEPS:
         nsteps += 1
         # end the step just past the next cell boundary: its kink then lies at the step's end
-        hz = boundary_horizon(cm, cp, ev[7], ev[8])
-        h = min(h, tstar, STEP_PAST * hz + hmin) if hz > 0.0 else min(h, tstar)
+        add = (ad0 - ad_last) / (t - t_last) if 0.0 <= t_last < t else 0.0
+        hz = boundary_horizon(cm, cp, ar0, ad0, add)
+        h = min(hc, tstar, STEP_PAST * hz + hmin) if hz > 0.0 else min(hc, tstar)
         err, ev = step(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew)
         if not (err <= 1.0):
-            h *= max(0.2, power_growth(err)) if math.isfinite(err) else 0.25
-            if h < hmin:
+            hc = h * (max(0.2, power_growth(err)) if math.isfinite(err) else 0.25)
+            if hc < hmin:
                 status = ST_NAN if not math.isfinite(err) else ST_STEP_UNDERFLOW
                 break
             continue
         events(c, md, cm, sg, cp, W, ev, gnew)
-        k, theta = first_event(gold, gnew, law, p, c, md, y, K, Q, h, cm, sg, cp, W, gt, yt)
+        k, theta = first_event(gold, gnew, gmid, law, p, c, md, y, K, Q, h, cm, sg, cp, Wm, yt)
         if rec:
-            dense_coeffs(K, Q)
-            for j in range(1, 4):
-                if j / 4.0 < theta:
-                    dense(y, h, j / 4.0, Q, yt)
-                    hist, nh = record(hist, nh, t + j * h / 4.0, law, p, c, md, yt, cm, sg, cp, W)
-        if k >= 0:
-            nsteps += integrate_to(law, p, c, md, y, cm, sg, cp, W, K[0], theta * h, rtol, sc, yev)
+            hist, nh = _dense_rows(hist, nh, t, h, theta, law, p, c, md, y, cm, sg, cp, W, Q, yt)
+        if k >= 0:  # the state at the event, integrated anew (the dense output is 4th order)
+            nsteps += integrate_to(
+                law, p, c, md, y, cm, sg, cp, W, K[0], theta * h, rtol, sc, yev, R
+            )
             tend = t + theta * h
         else:
             copy_into(yev, ynew)
@@ -168,20 +188,28 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
         if not track(acc, law, p, c, md, yev, cm, cp, W, ev, t, tend, diag):
             status = ST_NAN
             break
+        t_last, ad_last = t, ad0
+        ar0, ad0 = ev[7], ev[8]
         t = tend
         copy_into(y, yev)
-        h *= 10.0 if err == 0.0 else min(10.0, power_growth(err))
-        if rec:
+        hc = h * (10.0 if err == 0.0 else min(10.0, power_growth(err)))
+        if rec and k < 0:
             hist, nh = record(hist, nh, t, law, p, c, md, y, cm, sg, cp, W)
         if k < 0:
             copy_into(K[0], K[6])
-            copy_into(gold, gnew)
+            if release_passed(y, cm, cp, ev[7], K[0]):
+                ev = evaluate(law, p, c, md, y, cm, sg, cp, W)
+                events(c, md, cm, sg, cp, W, ev, gold)
+            else:
+                copy_into(gold, gnew)
             continue
         nevents += 1
         if nevents > MAX_EVENTS:
             status = ST_TOO_MANY_EVENTS
             break
         st, c, md = _switch(k, law, p, c, md, y, cm, sg, cp, W, acc, K, gold)
+        if rec:  # the row at an event holds the state after the switch (F_t is continuous)
+            hist, nh = record(hist, nh, t, law, p, c, md, y, cm, sg, cp, W)
         if st != _GO_ON:
             status = st
             break

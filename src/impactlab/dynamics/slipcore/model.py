@@ -21,6 +21,8 @@ docs/verification/index.md ("Partial slip") has the derivation, validity and lim
 
 from __future__ import annotations
 
+import math
+
 from numba import njit
 
 from impactlab.dynamics.kernels._jit import njit_internal
@@ -145,7 +147,7 @@ def events(c, md, cm, sg, cp, W, ev, g):
     dx = cp[CP_DX]
     if nin < cm.shape[0]:
         g[G_BIRTH] = ar - nin * dx
-    if nin > 1:
+    if nin > 1 and cm[nin - 1] == STICK:  # a slipping edge cell leaves without an event
         g[G_REL] = (nin - 1) * dx - ar
     for i in range(nin):
         g[G_CELL + i] = cell_event(i, cm, sg, cp, W, ar, ad, vs)
@@ -180,7 +182,7 @@ def event_value(k, law, p, c, md, y, cm, sg, cp):
     if k == G_BIRTH:
         return ar - nin * dx if nin < cm.shape[0] else -1.0
     if k == G_REL:
-        return (nin - 1) * dx - ar if nin > 1 else -1.0
+        return (nin - 1) * dx - ar if nin > 1 and cm[nin - 1] == STICK else -1.0
     i = k - G_CELL
     if i >= nin:
         return -1.0
@@ -195,10 +197,20 @@ def event_value(k, law, p, c, md, y, cm, sg, cp):
 
 
 @njit_internal
-def boundary_horizon(cm, cp, ar, ad):
-    """Time until the contact radius ``ar`` (rate ``ad``) reaches the next cell boundary, where
-    a cell is born or released and the cell lengths have a kink (inf when none lies ahead)."""
-    return boundary_time(cm, cp[CP_DX], ar, ad)
+def boundary_horizon(cm, cp, ar, ad, add):
+    """Time [s] until the contact radius ``ar`` (rate ``ad``, acceleration ``add``) reaches the
+    next cell boundary, where a cell is born or released and the cell lengths have a kink:
+    the positive root of ar + ad t + add t^2 / 2 = boundary (inf when none lies ahead). The
+    acceleration matters: a(t) is concave while the contact grows, and a linear prediction
+    falls short of the boundary, which then costs one more, tiny step."""
+    lin = boundary_time(cm, cp[CP_DX], ar, ad)
+    if not (lin < math.inf):
+        return lin
+    d = lin * ad  # the distance to the boundary (the sign of ad)
+    disc = ad * ad + 2.0 * add * d
+    if not (disc >= 0.0):
+        return math.inf  # the radius turns before the boundary
+    return 2.0 * abs(d) / (abs(ad) + math.sqrt(disc))
 
 
 @njit_internal

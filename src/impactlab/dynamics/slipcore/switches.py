@@ -14,10 +14,12 @@ from __future__ import annotations
 from impactlab.contact.kernels import P_ESTAR
 from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.cells import (
+    CP_DX,
     SLIP,
     STICK,
     apply_due,
     birth,
+    n_in,
     release,
     to_slip,
     to_stick,
@@ -44,6 +46,21 @@ def apply_cell_event(k, y, cm, sg, cp, mu, estar, W, ev):
             to_slip(i, y, Y_CELL, cm, sg, W[0])
         elif cm[i] == SLIP:
             to_stick(i, y, Y_CELL, cm, sg, W[0])
+
+
+@njit_internal
+def release_passed(y, cm, cp, ar, dy):
+    """Release the outermost cell if it slips and the contact radius ``ar`` [m] has receded to
+    its inner end: its force s_i L_i fell to zero there continuously (L_i ~ l^2) and stays zero,
+    so the step ran through the release exactly and no event is needed (a sticking edge cell,
+    force ~ l, is released at a located event). Zeroes its entry of the derivative ``dy``;
+    True if it released."""
+    nin = n_in(cm)
+    if nin > 1 and cm[nin - 1] == SLIP and ar <= (nin - 1) * cp[CP_DX]:
+        release(y, Y_CELL, cm, nin)
+        dy[Y_CELL + nin - 1] = 0.0
+        return True
+    return False
 
 
 @njit_internal
