@@ -129,6 +129,10 @@ def test_batch_flags_bad_cases_and_never_crashes() -> None:
     assert list(b.status) == [0, 2, 0, 4, 4, 1]
     assert np.isnan(b.e[1:]).sum() >= 4 and np.isfinite(b.e[0])
     assert b.messages[1] == STATUS_MESSAGES[2]
+    # a refused case keeps its incoming velocities where the inputs define them, NaN elsewhere
+    assert b.vn_in[1] == 1.0 and np.isnan(b.vn_in[3])
+    failed = [f for f in OUTPUT_FIELDS if f not in ("vn_in", "vt_in")]
+    assert all(np.isnan(b[f][1]) for f in failed)
     r = simulate_batch(PAPER_ROD, law="hertz", mu=0.2, angle=[0.3, 20.0, -0.1], vy=-1.0)
     assert list(r.status) == [0, 7, 7]
 

@@ -5,8 +5,9 @@ Every friction model of ``BATCH_FRICTION_IDS`` runs here: the rigid core's model
 impact as ``simulate(friction="partial_slip")``, so its results equal ``simulate``'s bit for bit).
 
 ``run_arrays`` is what sweeps call: every case may carry its own law parameters and body
-parameters. Invalid cases are flagged in ``status`` (see ``STATUS_MESSAGES``) with NaN outputs;
-they never stop the batch.
+parameters. Invalid cases are flagged in ``status`` (see ``STATUS_MESSAGES``) with NaN outputs
+(the incoming ``vn_in`` and ``vt_in`` excepted wherever the inputs define them); they never stop
+the batch.
 """
 
 from __future__ import annotations

@@ -269,7 +269,8 @@ class BatchResult:
     """Results of ``simulate_batch``: ``out`` (N, len(OUTPUT_FIELDS)) and ``status`` (N,).
 
     Fields are available by name (``batch["e"]`` or ``batch.e``); cases with a non-zero status
-    hold NaN results (see ``messages``). ``references`` are the sources the batch used (contact
+    hold NaN results (see ``messages``), except the incoming ``vn_in`` and ``vt_in``, which are
+    kept wherever the inputs define them (a case refused for ``vn_in >= 0`` shows why). ``references`` are the sources the batch used (contact
     law, friction model if any mu > 0, the integrator); ``dois()`` their DOIs.
     """
 
