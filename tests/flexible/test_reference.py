@@ -34,9 +34,9 @@ def test_modal_vs_fe_20deg() -> None:
     assert ref.e == pytest.approx(r.e, rel=0.01)
     assert ref.delta_p == pytest.approx(r.dent_depth, rel=0.01)
     assert ref.duration == pytest.approx(r.sequence_duration, rel=0.01)
-    t_fe = np.array([c["t0"] for c in ref.contacts])
+    t_fe = np.array([c["start"] for c in ref.contacts])
     np.testing.assert_allclose(t_fe[1:], [c.start for c in r.contacts[1:]], rtol=0.01)
-    dm_fe = np.array([c["dmax"] for c in ref.contacts])
+    dm_fe = np.array([c["delta_max"] for c in ref.contacts])
     np.testing.assert_allclose(dm_fe, [c.delta_max for c in r.contacts], rtol=0.015)
 
 

@@ -146,9 +146,9 @@ class FEDrop:
     def in_dent(self, k: int, x: float) -> int:
         best, bd = -1, -1.0
         for i, dd in enumerate(self.dents):
-            inside = dd["xlo"] - dd["am"] <= x <= dd["xhi"] + dd["am"]
-            if dd["end"] == k and inside and dd["dr"] > bd:
-                bd, best = dd["dr"], i
+            inside = dd["x_min"] - dd["contact_radius"] <= x <= dd["x_max"] + dd["contact_radius"]
+            if dd["end"] == k and inside and dd["delta_p"] > bd:
+                bd, best = dd["delta_p"], i
         return best
 
     def stick_decide(self, yy: np.ndarray, k: int) -> float:
@@ -167,17 +167,29 @@ class FEDrop:
         dsw0 = switch_interference(self.p)
         if reload:
             dd = self.dents[di]
-            s.ph, s.dm, s.dr, s.rr = (1 if dd["dm"] > 0 else 0), dd["dm"], dd["dr"], dd["rr"]
-            s.dsw = dsw0 if dd["dm"] < dsw0 else math.inf
-            dd["nc"] += 1
+            s.ph, s.dm, s.dr = (1 if dd["delta_max"] > 0 else 0), dd["delta_max"], dd["delta_p"]
+            s.rr = dd["unloading_radius"]
+            s.dsw = dsw0 if dd["delta_max"] < dsw0 else math.inf
+            dd["n_contacts"] += 1
         else:
-            self.dents.append(dict(end=k, xlo=x, xhi=x, am=0.0, dm=0.0, dr=0.0, rr=self.fe.R, nc=1))
+            self.dents.append(
+                dict(
+                    end=k,
+                    x_min=x,
+                    x_max=x,
+                    contact_radius=0.0,
+                    delta_max=0.0,
+                    delta_p=0.0,
+                    unloading_radius=self.fe.R,
+                    n_contacts=1,
+                )
+            )
             di = len(self.dents) - 1
             s.ph, s.dm, s.dr, s.rr, s.dsw = 0, 0.0, 0.0, self.fe.R, dsw0
         s.inn, s.comp, s.dent = True, True, di
         if self.mu > 0.0:
             s.fm = (1.0 if vt > 0 else -1.0) if vt != 0.0 else self.stick_decide(yy, k)
-        rec = dict(end=k, t0=t, x0=x, dmax=d, reload=int(reload), dent=di)
+        rec = dict(end=k, start=t, x_start=x, delta_max=d, reload=int(reload), dent=di)
         self.cur[k] = rec
         self.contacts.append(rec)
 
@@ -189,8 +201,10 @@ class FEDrop:
             dri = residual_depth(self.law, self.p, d, Fm)
             s.dm, s.dr, s.rr, s.ph = d, dri, unloading_radius(self.p[P_ESTAR], d, Fm, dri), 1
             dd = self.dents[s.dent]
-            dd.update(dm=d, dr=dri, rr=s.rr)
-            dd["am"] = max(dd["am"], loading_contact_radius(self.law, self.p, d))
+            dd.update(delta_max=d, delta_p=dri, unloading_radius=s.rr)
+            dd["contact_radius"] = max(
+                dd["contact_radius"], loading_contact_radius(self.law, self.p, d)
+            )
         s.comp = not s.comp
 
     def separate(self, yy: np.ndarray, t: float, k: int) -> None:
@@ -198,11 +212,11 @@ class FEDrop:
         _d, x, _vn, _vt = self.kin(yy, k)
         c = self.cur[k]
         if c is not None:
-            c.update(duration=t - c["t0"], x1=x, delta_r=s.dr, t1=t)
+            c.update(duration=t - c["start"], x_end=x, delta_r=s.dr)
         self.cur[k] = None
         s.inn, s.fm, s.comp = False, 0.0, False
         s.dent = self.in_dent(k, x)
-        s.thr = self.dents[s.dent]["dr"] if s.dent >= 0 else 0.0
+        s.thr = self.dents[s.dent]["delta_p"] if s.dent >= 0 else 0.0
 
     def apply(self, yy: np.ndarray, t: float, k: int, kind: str) -> None:
         """The action of event ``kind`` of end k at (t, yy)."""
@@ -232,9 +246,9 @@ class FEDrop:
                     d, x, _vn, _vt = self.kin(ys[:, j], k)
                     c = self.cur[k]
                     if c is not None:
-                        c["dmax"] = max(c["dmax"], d)
+                        c["delta_max"] = max(c["delta_max"], d)
                     dd = self.dents[self.ends[k].dent]
-                    dd["xlo"], dd["xhi"] = min(dd["xlo"], x), max(dd["xhi"], x)
+                    dd["x_min"], dd["x_max"] = min(dd["x_min"], x), max(dd["x_max"], x)
 
     def refresh_thresholds(self, yy: np.ndarray) -> None:
         for k in range(2):
@@ -242,7 +256,7 @@ class FEDrop:
             if not s.inn:
                 d, x, _vn, _vt = self.kin(yy, k)
                 i = self.in_dent(k, x)
-                thr = self.dents[i]["dr"] if i >= 0 else 0.0
+                thr = self.dents[i]["delta_p"] if i >= 0 else 0.0
                 if d < thr or i == s.dent:
                     s.dent, s.thr = i, thr
 

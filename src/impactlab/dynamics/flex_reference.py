@@ -41,8 +41,10 @@ __all__ = ["ReferenceDrop", "drop_reference"]
 
 @dataclass(frozen=True)
 class ReferenceDrop:
-    """The reference's result (SI units): ``contacts`` (dicts: end, t0, duration, dmax, x0, x1,
-    delta_r, reload, dent), ``dents`` (dicts), e, the rigid-body velocities and spin at
+    """The reference's result (SI units): ``contacts`` (dicts named as ``ContactRecord``'s fields:
+    end, start, duration, delta_max, x_start, x_end, delta_r, reload, dent), ``dents`` (dicts
+    named as ``DentRecord``'s: end, x_min, x_max, contact_radius, delta_max, delta_p,
+    unloading_radius, n_contacts), e, the rigid-body velocities and spin at
     ``t_stop``, the duration (first touch to last separation), delta_p, the scar length, the
     largest relative energy error, the vibration energy, the number of right-hand sides and the
     wall time [s]."""
@@ -131,13 +133,13 @@ def _summary(run: FEDrop, y: np.ndarray, t: float, vn0: float) -> dict[str, Any]
     nd = run.nd
     X, V = y[:nd], y[nd : 2 * nd]
     vxc, vyc, w, Ic = fe.rigid_motion(X, V)
-    ended = [c["t1"] for c in run.contacts if "t1" in c]
+    ended = [c["start"] + c["duration"] for c in run.contacts if "duration" in c]
     T = max(ended) if ended else math.nan
     # chord angle, rotated back to the last separation (free spin w after it)
     th = math.atan2(X[3 * (fe.nn - 1) + 1] - X[1], X[3 * (fe.nn - 1)] - X[0]) - w * (t - T)
     e = -(vyc + fe.g * t - w * 0.5 * fe.L * math.cos(th)) / vn0  # gravity over [0, t] removed
-    xs = [c[key] for c in run.contacts if c["end"] == 0 for key in ("x0", "x1") if key in c]
-    xs += [dd[key] for dd in run.dents if dd["end"] == 0 for key in ("xlo", "xhi")]
+    xs = [c[key] for c in run.contacts if c["end"] == 0 for key in ("x_start", "x_end") if key in c]
+    xs += [dd[key] for dd in run.dents if dd["end"] == 0 for key in ("x_min", "x_max")]
     Vg = fe.g * np.sum(fe.mass * (X[1::3] - fe.X0[1::3]))
     ek = 0.5 * fe.m * (vxc**2 + vyc**2) + 0.5 * Ic * w * w
     return dict(
@@ -145,7 +147,7 @@ def _summary(run: FEDrop, y: np.ndarray, t: float, vn0: float) -> dict[str, Any]
         velocity_out=(vxc, vyc),
         spin_out=w,
         duration=T,
-        delta_p=max((dd["dr"] for dd in run.dents), default=0.0),
+        delta_p=max((dd["delta_p"] for dd in run.dents), default=0.0),
         scar_length=max(xs) - min(xs),
         vibration_energy=fe.energy(y) - Vg - ek,
     )

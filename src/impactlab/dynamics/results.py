@@ -270,8 +270,9 @@ class BatchResult:
 
     Fields are available by name (``batch["e"]`` or ``batch.e``); cases with a non-zero status
     hold NaN results (see ``messages``), except the incoming ``vn_in`` and ``vt_in``, which are
-    kept wherever the inputs define them (a case refused for ``vn_in >= 0`` shows why). ``references`` are the sources the batch used (contact
-    law, friction model if any mu > 0, the integrator); ``dois()`` their DOIs.
+    kept wherever the inputs define them (a case refused for ``vn_in >= 0`` shows why).
+    ``references`` are the sources the batch used (contact law, friction model if any mu > 0,
+    the integrator); ``dois()`` their DOIs.
     """
 
     out: np.ndarray = field(repr=False)
