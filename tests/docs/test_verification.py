@@ -28,7 +28,7 @@ def test_tolerances_are_the_published_ones() -> None:
         "reference": 1e-4,
         "paper_duration": 0.05,
         "invariants": 1e-6,
-        "energy_history": 1e-5,
+        "energy_history": 2e-5,
     }
 
 

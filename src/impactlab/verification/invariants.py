@@ -135,10 +135,14 @@ def verify_invariants(
 to turn) for every law and friction model. Checked:
 
 - along each recorded history, the total energy (kinetic + potential + elastic energy stored in
-  the contact) never rises above its running minimum by more than {tol_e:g} E0. The largest
-  rises, a few 1e-6 E0, sit in the last rows before separation (the stick-to-slip switch and
-  the separation event at a vanishing force); a real energy source is orders of magnitude
-  larger (see the excluded cases). The energy dissipated is >= -{tol:g} E0;
+  the contact) never rises above its running minimum by more than {tol_e:g} E0 (100 times the
+  default rtol). The largest rises sit in the last rows before separation, in rows sampled
+  from the dense output inside the step that ends the contact: a power-law unloading curve
+  ends with an unbounded second derivative at delta_r, which the step's interpolant does not
+  follow to rtol. They are numerical: over 300 random drops per law (Mindlin, reversal) the
+  largest was 1.4e-5 E0 at the default rtol of 2e-7, and on that drop 6.8e-7, 3.2e-7, 3.2e-8
+  and 3.4e-9 E0 at rtol 1e-7, 1e-8, 1e-9 and 1e-10. A real energy source is orders of
+  magnitude larger (see the excluded cases). The energy dissipated is >= -{tol:g} E0;
 - 0 <= e* <= 1 + {tol:g} (energetic COR, Stronge) and 0 <= delta_p <= delta_max;
 - 0 <= e <= 1 + {tol:g} for the dissipative laws. For the elastic `hertz` law e* = 1 and the
   kinematic e exceeds 1 slightly because the rod turns during the contact and changes its lever

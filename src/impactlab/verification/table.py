@@ -20,7 +20,9 @@ TOLERANCES: Mapping[str, float] = {
     "reference": 1e-4,  # engine vs solve_ivp, relative to each quantity's scale
     "paper_duration": 0.05,  # analytic T vs the paper's published T
     "invariants": 1e-6,  # -dissipated / E0, e and e* above 1
-    "energy_history": 1e-5,  # energy rise / E0 along a recorded history (dense output)
+    # energy rise / E0 along a recorded history (dense output): 100 times the default rtol
+    # (2e-7); the interpolant's error where a power-law unloading curve ends at separation
+    "energy_history": 2e-5,
 }
 
 
