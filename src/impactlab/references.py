@@ -269,7 +269,7 @@ _MATERIAL_DATA: tuple[Reference, ...] = (
         note="proceedings paper, no DOI; pages as commonly cited, not confirmed here; the "
         "1006-steel constants confirmed against a secondary source that reproduces their table "
         "(table number not confirmed); no DOI-bearing hardening law for AISI 1010 itself was "
-        "found in the sources searched",
+        "found in the sources searched (docs/materials.md, Strain hardening, lists them)",
     ),
     Reference(
         "matweb-al6061-t6",

@@ -11,6 +11,8 @@ temperature). The initial yield is the paper's S_y of AISI 1010 (305 MPa, Table 
 A = 350 MPa: the hardening term is borrowed, the material is the paper's. Nothing is fitted.
 Validity: Johnson & Cook's torsion and tension tests reach plastic strains of about 1 to 2;
 beyond the table's last strain the FE program keeps the stress constant.
+No cited law for AISI 1010 itself was found under any of its designations (UNS G10100,
+C10/Ck10/C10E, S10C, GB 10); docs/materials.md records the search and each near miss.
 """
 
 from __future__ import annotations
