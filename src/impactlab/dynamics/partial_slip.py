@@ -33,7 +33,7 @@ def largest_radius(x: ImpactInputs) -> tuple[int, float]:
     vx, vy = x.velocity
     status, a = slip_estimate(
         x.model.law_id, kernel_params(x.model), body_params(x.body, x.flat), x.angle, vx, vy,
-        x.spin, x.mu, x.gravity, x.constant_angle, x.rtol, out,
+        x.spin, x.mu, x.gravity, x.constant_angle, x.rtol, False, out,
     )  # fmt: skip
     return int(status), float(a)
 

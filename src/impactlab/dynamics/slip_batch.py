@@ -31,13 +31,21 @@ RADIUS_MARGIN = 1.0001
 
 
 @njit(cache=True, error_model="numpy")
-def slip_estimate(law, p, bp, th0, vx0, vy0, w0, mu, g, const_angle, rtol, out):
-    """(status, estimated largest contact radius [m]) from the pre-pass of the rigid core
-    (its outputs are left in ``out``)."""
+def slip_estimate(law, p, bp, th0, vx0, vy0, w0, mu, g, const_angle, rtol, diag, out):
+    """(status, estimated largest contact radius [m]) from the pre-pass of the rigid core (its
+    outputs are left in ``out``; with mu < ``MU_NEGLIGIBLE`` they are the impact's own, the
+    core's frictionless impact).
+
+    The core is called with the signature of ``simulate``'s calls from Python: every argument
+    a value, none a constant. numba compiles a function once per signature, and a constant
+    argument (``Literal[int](1)``, ``Literal[bool](False)``) is a signature of its own: it would
+    compile the whole rigid core again for this call."""
     rod = bp[BP_KIND] == KIND_ROD
+    rubbing = mu >= MU_NEGLIGIBLE
+    no_history = out.shape[0] < 0  # False, as a value (see above)
     st, _h, _n = impact(
-        law, p, FR_MINDLIN if rod else FR_COULOMB, bp, th0, vx0, vy0, w0, mu if rod else 0.0,
-        g, const_angle, rtol, False, False, out,
+        law, p, FR_MINDLIN if rod and rubbing else FR_COULOMB, bp, th0, vx0, vy0, w0,
+        mu if rod and rubbing else 0.0, g, const_angle, rtol, no_history, diag, out,
     )  # fmt: skip
     if st != ST_OK:
         return st, math.nan
@@ -53,18 +61,13 @@ def slip_case(law, p, bp, th0, vx0, vy0, w0, mu, g, const_angle, rtol, diag, n_c
         for i in range(out.shape[0]):
             out[i] = math.nan
         return ST_BAD_INPUT
-    if mu < MU_NEGLIGIBLE:  # frictionless, as in the core
-        st, _h, _n = impact(
-            law, p, FR_COULOMB, bp, th0, vx0, vy0, w0, 0.0, g, const_angle, rtol, False, diag,
-            out,
-        )  # fmt: skip
+    st, a_est = slip_estimate(law, p, bp, th0, vx0, vy0, w0, mu, g, const_angle, rtol, diag, out)
+    if st != ST_OK or mu < MU_NEGLIGIBLE:  # frictionless: the core's impact, as in the core
         return st
-    st, a_est = slip_estimate(law, p, bp, th0, vx0, vy0, w0, mu, g, const_angle, rtol, out)
-    if st != ST_OK:
-        return st
+    no_history = out.shape[0] < 0  # False, as a value: simulate's signature (slip_estimate)
     st, _h, _n, _jump = impact_slip(
-        law, p, bp, th0, vx0, vy0, w0, mu, g, const_angle, rtol, False, diag, n_cells, a_est,
-        out,
+        law, p, bp, th0, vx0, vy0, w0, mu, g, const_angle, rtol, no_history, diag, n_cells,
+        a_est, out,
     )  # fmt: skip
     return st
 

@@ -3,6 +3,7 @@ point and event, in a buffer that grows by doubling."""
 
 from __future__ import annotations
 
+import numpy as np
 from numba import njit
 
 from impactlab.dynamics.kernels._jit import njit_internal
@@ -49,7 +50,7 @@ def record(hist, n, t, law, p, fric, c, md, y):
     """Append one history row at time ``t`` [s] and state ``y`` (growing the buffer); returns
     (hist, n + 1)."""
     if n >= hist.shape[0]:
-        hist = grown(hist, n, 16)
+        hist = grown(hist, n, np.int64(16))
     delta, _a, _b, Fn, Ft, vn, vs, kt = evaluate_cold(law, p, fric, c, md, y)
     _d, _a, _b, xs, _sl = geometry(c, y)
     row = hist[n]

@@ -141,7 +141,7 @@ def one_drop(mdl, init, mu, fid, rtol, t_max, stop_mode, out, checks):
     w1 = math.nan
     max_steps = F.DROP_MAX_STEPS
     if fid == F.FR_PARTIAL:  # the cells span the contact radius of a Mindlin pre-pass
-        pre = case_model(mdl, angle, mu, FR_MINDLIN, w0, w1, max_steps)
+        pre = case_model(mdl, angle, mu, np.int64(FR_MINDLIN), w0, w1, max_steps)
         st, ncon = _run(pre, vx, vy, w, rtol, t_max, stop_mode, no_history, out, contacts, dents)
         if st != F.ST_OK:
             return st

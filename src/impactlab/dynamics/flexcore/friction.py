@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 from numba import njit
 
 from impactlab.contact.history_kernels import contact_radius as _contact_radius
@@ -169,7 +170,7 @@ def radius_factor(law, p, c, dm, dr, rr):
 def mindlin_switch(c, md, k, y, iqt, ek):
     """The Mindlin stick/slip switch of end k (the rigid core's ``friction_switch``)."""
     fm, q = friction_switch(
-        FR_MINDLIN,
+        np.int64(FR_MINDLIN),  # a value, not a constant: see kernels._jit
         md[k, F.MD_FM],
         md[k, F.MD_COMP],
         0.0,

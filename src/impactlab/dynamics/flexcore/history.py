@@ -3,6 +3,7 @@ points inside it), columns ``layout.DROP_HISTORY_FIELDS`` (compiled)."""
 
 from __future__ import annotations
 
+import numpy as np
 from numba import njit
 
 from impactlab.dynamics.flexcore import layout as F
@@ -17,7 +18,7 @@ def record(hist, nh, t, mdl, y, ek, e0):
     c = mdl[2]
     M = mdl[3].shape[0]
     if nh >= hist.shape[0]:
-        hist = grown(hist, nh, 64)
+        hist = grown(hist, nh, np.int64(64))
     r = hist[nh]
     r[0] = t
     for k in range(F.NE):

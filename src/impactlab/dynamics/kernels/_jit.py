@@ -14,6 +14,15 @@ No wrappers, for the functions that only compiled code calls: numba gives every 
 function a Python-callable and a C-callable wrapper; without them a cold rigid compile takes
 about 2.3 s (6 %) less (``docs/engine/first-run.md``). Called from Python, such a function
 crashes the interpreter: ``tests/core/test_compiled_wrappers.py`` checks that none is.
+
+Constant arguments, compiled for once: numba compiles a function once per signature, and a
+constant passed by compiled code is a type of its own (``Literal[int](2)``,
+``Literal[bool](False)``), so ``f(x, FR_MINDLIN)`` beside ``f(x, fric)`` compiles ``f`` and
+everything it calls twice. A caller that shares a kernel (or the rigid core) with another passes
+the value instead: ``np.int64(FR_MINDLIN)``, or a ``False`` computed at run time
+(``out.shape[0] < 0``). The rigid batch alone keeps its literal ``False`` for the history: it
+folds the history code away, 1-3 % of its speed (``docs/engine/first-run.md``).
+``tests/core/test_compiled_signatures.py`` checks the signatures a warm-up leaves in the cache.
 """
 
 from __future__ import annotations

@@ -222,7 +222,9 @@ def _setup(p, c, vn0, n_cells, a_est):
     the estimated largest contact radius ``a_est`` [m]."""
     m = EXTRA * n_cells
     sc = np.empty(NS + m)
-    tstar, _dstar, fscale = error_scales(FR_COULOMB, p, c, vn0, sc[:NS])
+    # np.int64(...): a value, not a constant, so that numba reuses the rigid core's compile of
+    # the shared kernel (a constant argument, Literal[int], is a signature of its own)
+    tstar, _dstar, fscale = error_scales(np.int64(FR_COULOMB), p, c, vn0, sc[:NS])
     sc[NS:] = fscale / n_cells
     cp = np.empty(NCP)
     cp[CP_G1] = 4.0 * c[C_GS]
@@ -244,7 +246,7 @@ def impact_slip(
     for i in range(out.shape[0]):
         out[i] = math.nan
     hist = np.empty((256 if record_ else 0, NH))
-    status = check_inputs(law, p, FR_MINDLIN, bp, th0, vx0, vy0, w0, mu, g, rtol)
+    status = check_inputs(law, p, np.int64(FR_MINDLIN), bp, th0, vx0, vy0, w0, mu, g, rtol)
     if status == ST_OK and not (mu > 0.0 and n_cells >= 1 and a_est > 0.0):
         status = ST_BAD_INPUT
     if status != ST_OK:
@@ -262,7 +264,21 @@ def impact_slip(
     cm = np.zeros(EXTRA * n_cells, dtype=np.int64)
     sg = np.zeros(EXTRA * n_cells)
     # the first cell is born at first touch (a = 0)
-    birth(np.int64(0), y, Y_CELL, cm, sg, cp, mu, p[P_ESTAR], 0.0, vn0, out[O_VTIN], 0.0, 0.0)
+    birth(
+        np.int64(0),
+        y,
+        np.int64(Y_CELL),
+        cm,
+        sg,
+        cp,
+        mu,
+        p[P_ESTAR],
+        0.0,
+        vn0,
+        out[O_VTIN],
+        0.0,
+        0.0,
+    )
     e0 = 0.5 * c[C_M] * (vx0 * vx0 + vy0 * vy0) + 0.5 * c[C_I] * w0 * w0
     acc = np.zeros(NA)
     acc[A_EMIN] = e0

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 from numba import njit
 
 from impactlab.dynamics.kernels._jit import njit_internal
@@ -93,7 +94,7 @@ NA = A_OWN + 1
 def total_energy(law, p, c, md, y, cm, cp, W, ev):
     """Kinetic + gravity potential + normal elastic + tangential elastic (cells) energy [J]."""
     delta, _a, _b, Fn, Ft, _vn, _vs, ar, _ad, _nin = ev
-    e = energy(law, p, FR_COULOMB, c, md, y, Fn, Ft, delta, 0.0)
+    e = energy(law, p, np.int64(FR_COULOMB), c, md, y, Fn, Ft, delta, 0.0)
     return e + stored_energy(cm, cp, W, ar)
 
 
@@ -125,7 +126,7 @@ def track(acc, law, p, c, md, y, cm, cp, W, ev, t0, t1, diag):
 def record(hist, n, t, law, p, c, md, y, cm, sg, cp, W):
     """Append one history row at time ``t`` and state ``y``; returns (hist, n + 1)."""
     if n >= hist.shape[0]:
-        hist = grown(hist, n, 16)
+        hist = grown(hist, n, np.int64(16))
     ev = evaluate(law, p, c, md, y, cm, sg, cp, W)
     delta, _a, _b, Fn, Ft, vn, vs, _ar, _ad, _nin = ev
     _d, _a2, _b2, xs, _sl = geometry(c, y)

@@ -11,6 +11,8 @@ it) and sticks again when the limit outruns the stick trial. F_t is continuous a
 
 from __future__ import annotations
 
+import numpy as np
+
 from impactlab.contact.kernels import P_ESTAR
 from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.cells import (
@@ -36,16 +38,17 @@ from impactlab.dynamics.slipcore.model import evaluate
 def apply_cell_event(k, y, cm, sg, cp, mu, estar, W, ev):
     """The switch of the cell event ``k`` (birth, release or a cell's stick/slip)."""
     _delta, _a, _b, Fn, _Ft, vn, vs, ar, ad, nin = ev
+    o = np.int64(Y_CELL)  # a value, not a constant: the flexible rod's compile of the cells
     if k == G_BIRTH:
-        birth(nin, y, Y_CELL, cm, sg, cp, mu, estar, Fn, vn, vs, ar, ad)
+        birth(nin, y, o, cm, sg, cp, mu, estar, Fn, vn, vs, ar, ad)
     elif k == G_REL:
-        release(y, Y_CELL, cm, nin)
+        release(y, o, cm, nin)
     else:
         i = k - G_CELL
         if cm[i] == STICK:
-            to_slip(i, y, Y_CELL, cm, sg, W[0])
+            to_slip(i, y, o, cm, sg, W[0])
         elif cm[i] == SLIP:
-            to_stick(i, y, Y_CELL, cm, sg, W[0])
+            to_stick(i, y, o, cm, sg, W[0])
 
 
 @njit_internal
@@ -57,7 +60,7 @@ def release_passed(y, cm, cp, ar, dy):
     True if it released."""
     nin = n_in(cm)
     if nin > 1 and cm[nin - 1] == SLIP and ar <= (nin - 1) * cp[CP_DX]:
-        release(y, Y_CELL, cm, nin)
+        release(y, np.int64(Y_CELL), cm, nin)
         dy[Y_CELL + nin - 1] = 0.0
         return True
     return False
@@ -69,7 +72,9 @@ def _due(law, p, c, md, y, cm, sg, cp, W, mu, estar):
     none is."""
     ev = evaluate(law, p, c, md, y, cm, sg, cp, W)
     _delta, _a, _b, Fn, _Ft, vn, vs, ar, ad, _nin = ev
-    return apply_due(y, Y_CELL, cm, sg, cp, W[0], W[1], W[2], mu, estar, Fn, vn, vs, ar, ad)
+    return apply_due(
+        y, np.int64(Y_CELL), cm, sg, cp, W[0], W[1], W[2], mu, estar, Fn, vn, vs, ar, ad
+    )
 
 
 @njit_internal
@@ -90,7 +95,7 @@ def normal_switch(k, law, p, md, delta):
     if k == EV_VN:
         if md[M_COMP] != 0.0:
             if md[M_PHASE] == 0.0:
-                status, md = unloading_branch(law, p, FR_MINDLIN, md, delta)
+                status, md = unloading_branch(law, p, np.int64(FR_MINDLIN), md, delta)
                 if status != ST_OK:
                     return status, md
             return ST_OK, mode_with(md, M_COMP, 0.0)
