@@ -37,8 +37,7 @@ def range_note(law_id: int, params: Any) -> str | None:
     upper = "no upper end" if math.isinf(limit) else f"{limit:.3g} delta_c"
     if status == "verified":
         return (
-            f"verified against FE up to {upper} (E*/S_y = {ratio:.4g}; FE cases "
-            f"{lo:.0f}-{hi:.0f})"
+            f"verified against FE up to {upper} (E*/S_y = {ratio:.4g}; FE cases {lo:.0f}-{hi:.0f})"
         )
     if status == "unverified":
         return (

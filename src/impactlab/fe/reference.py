@@ -36,8 +36,8 @@ from impactlab.fe.problem import make_problem
 from impactlab.fe.result import IndentationResult
 from impactlab.fe.run import indent
 from impactlab.materials import AISI_201, AISI_1010, Material
-from impactlab.materials.library import AISI_52100, AISI_304, COPPER_OFHC, PMMA
 from impactlab.materials.hardening import AISI_1010_HARDENING
+from impactlab.materials.library import AISI_304, AISI_52100, COPPER_OFHC, PMMA
 
 RADIUS = 8.8e-3
 
