@@ -212,6 +212,7 @@ def test_range_note_names_the_status_the_span_and_the_limit() -> None:
     line = range_note(paper.law_id, paper.params)
     assert line is not None and line.startswith("verified against FE up to 1 delta_c")
     brake = _soft_pair_model("brake")  # no stand-in range: unverified, no upper end
+    lo, hi = e_star_over_sy_span("brake")  # its own cases (not PMMA: no Brinell hardness)
     assert range_note(brake.law_id, brake.params) == (
         f"unverified: E*/S_y = 2198 outside the FE cases' {lo:.0f}-{hi:.0f}; stand-in limit "
         "no upper end"

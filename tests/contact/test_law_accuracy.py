@@ -18,6 +18,7 @@ from typer.testing import CliRunner
 from impactlab._json import shape_problems
 from impactlab.cli import laws as laws_cli
 from impactlab.contact import get_law
+from impactlab.contact.verified_ranges import verified_cases
 from impactlab.fe import accuracy as acc
 from impactlab.fe.accuracy_views import markdown
 from impactlab.fe.curves import DATA_VERSION, FORMAT, case_from_record, case_names, load_cases
@@ -228,10 +229,16 @@ def test_paper_pair_at_1000_delta_c_matches_docs_fe() -> None:
 
 
 def test_every_law_is_measured_on_every_case(results) -> None:
+    """Every law is built for every pair, but Brake's for a flat without a Brinell hardness
+    (PMMA): that law is then left out of the case's recommendation and verified ranges."""
     for res in results:
         assert [a.law for a in res.laws] == list(acc.measured_laws())
         for a in res.laws:
-            assert a.message == "", a.message
+            if not a.built:
+                assert a.law == "brake" and math.isnan(res.case.flat.brinell_hardness)
+                assert "Brinell hardness" in a.message and a not in res.built
+                assert res.case.name not in [c.case for c in verified_cases("brake")]
+                continue
             assert np.all(np.isfinite(a.force_error)) and np.all(np.isfinite(a.residual_error))
             assert a.verified.upper >= 0.3 or a.verified.limited_by != "end of data"
         assert res.closest().law in acc.measured_laws()

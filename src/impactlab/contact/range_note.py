@@ -15,6 +15,7 @@ from typing import Any
 import numpy as np
 
 from impactlab.contact import kernels as k
+from impactlab.contact.names import Law
 from impactlab.contact.ranges import STATUSES, range_limit, range_status
 from impactlab.contact.verified_ranges import e_star_over_sy_span
 
@@ -23,7 +24,7 @@ __all__ = ["range_note"]
 
 def range_note(law_id: int, params: Any) -> str | None:
     """``verified against FE up to 1 delta_c (E*/S_y = 360; FE cases 28-1731)``, or
-    ``unverified: E*/S_y = 2198 outside the FE cases' 28-1731, stand-in limit 110 delta_c``,
+    ``unverified: E*/S_y = 2198 outside the FE cases' 28-1731; stand-in limit 110 delta_c``,
     or the stand-in's status (``contact.ranges.STATUSES``) and limit for a law without a
     verified range (the tabulated law: its data's end); None for an unknown
     law or without parameters (SI parameters ``params`` of ``ContactModel.params``)."""
@@ -33,7 +34,8 @@ def range_note(law_id: int, params: Any) -> str | None:
     p = np.asarray(params, dtype=np.float64)
     ratio = float(p[k.P_ESTAR] / p[k.P_SY])
     limit = float(range_limit(law_id, params))
-    lo, hi = e_star_over_sy_span()
+    name = next((str(law) for law in Law if law.law_id == int(law_id)), "")
+    lo, hi = e_star_over_sy_span(name)
     upper = "no upper end" if math.isinf(limit) else f"{limit:.3g} delta_c"
     if status == "verified":
         return (

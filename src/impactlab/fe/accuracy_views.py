@@ -40,7 +40,7 @@ def table_rows(result: CaseAccuracy, only: str | None = None) -> tuple[list[str]
     rows = []
     for a in (a for a in result.laws if only in (None, a.law)):
         cells = [f"{_pct(a.force_error_at(r))} / {_abs(a.residual_error_at(r))}" for r in ratios]
-        rows.append([a.law, *cells, a.verified.text])
+        rows.append([a.law, *cells, a.verified.text if a.built else f"not built: {a.message}"])
     fe = ["FE: delta_r/delta_max", *(f"{x:.3f}" for x in result.laws[0].residual_fe)]
     rows.append([*fe, ""] if result.laws else fe)
     return header, rows
@@ -82,7 +82,9 @@ def markdown(results: Sequence[CaseAccuracy]) -> str:
     )
     out.append("|" + " --- |" * (len(results) + 1))
     for i, name in enumerate(laws):
-        cells = [_range_cell(r.laws[i].verified) for r in results]
+        cells = [
+            _range_cell(r.laws[i].verified) if r.laws[i].built else "not built" for r in results
+        ]
         out.append(f"| {name} | " + " | ".join(cells) + " |")
     return "\n".join(out) + "\n"
 
