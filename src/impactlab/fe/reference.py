@@ -110,12 +110,15 @@ MAXIMA_OVER_DELTA_C: tuple[float, ...] = (
 #: 548 s), and 700 delta_c stopped at 618 delta_c (too many cut-backs, 242 s); its largest
 #: maximum is 500 delta_c.
 #: PMMA's delta_c is 83 um, R / 106: it stops at 10 delta_c (0.83 mm, delta / R = 0.095), as
-#: the hard steel stops at delta / R = 0.1.
+#: the hard steel stops at delta / R = 0.1. Copper's 100 delta_c (2.0 um) did not converge at
+#: mesh level 1: ccx stopped on loading at 69.6 delta_c (too many cut-backs, 59 increments,
+#: 284 s), nor did 50 delta_c, tried in its place (stopped at 30.7 delta_c, 268 s), while 150,
+#: 300 and 1000 delta_c converged: 150 stands in for 100.
 CASE_MAXIMA: dict[str, tuple[float, ...]] = {
     "aisi201-on-al6061t6": (0.3, 1.0, 1.5, 2.0, 3.0, 10.0, 30.0, 100.0, 300.0, 500.0),
     "elastic-sphere-on-aisi4340": (0.3, 1.0, 1.5, 2.0, 3.0, 10.0, 30.0, 100.0),
     "aisi201-on-pmma": (0.3, 1.0, 1.5, 2.0, 3.0, 10.0),
-    "elastic-52100-on-copper-ofhc": (0.3, 1.0, 1.5, 2.0, 3.0, 10.0, 30.0, 50.0, 150.0, 300.0, 1000.0),
+    "elastic-52100-on-copper-ofhc": (0.3, 1.0, 1.5, 2.0, 3.0, 10.0, 30.0, 150.0, 300.0, 1000.0),
 }
 
 
