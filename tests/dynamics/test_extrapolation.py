@@ -109,6 +109,18 @@ def test_an_unflagged_impact_still_says_whether_its_pair_was_verified() -> None:
     assert paper.to_dict()["law_range"] == paper.law_range
 
 
+def test_a_drop_carries_the_law_range_line_too() -> None:
+    """``DropResult.law_range``: the same line as an impact's, in its summary and to_dict."""
+    from impactlab.bodies.flexible_rod import FlexibleRod
+    from impactlab.dynamics.drop import simulate_drop
+
+    drop = simulate_drop(FlexibleRod.paper(), mu=0.2, angle=math.radians(20), velocity=(0, -1.41))
+    impact = simulate(PAPER_ROD, velocity=FAST, **PAPER)
+    assert drop.law_range == impact.law_range and drop.law_range is not None
+    assert drop.summary()["law_range"] == drop.to_dict()["law_range"] == drop.law_range
+    assert "law_range" in str(drop)
+
+
 @pytest.mark.parametrize("law", ["brake", "thornton"])
 def test_analytical_laws_are_flagged_beyond_their_verified_range(law: str) -> None:
     """No fitted range (stand-in: never extrapolated), but a verified one: 1.5-2 delta_c."""
