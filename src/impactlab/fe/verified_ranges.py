@@ -3,7 +3,7 @@
 :func:`verified_range_table` runs ``impactlab.fe.accuracy`` over every law it measures and
 every shipped elastic-perfectly plastic case and keeps, per law and case, the verified range
 (``fe.accuracy.verified_range``: 10 % in force, 0.05 in delta_r / delta_max); a law that cannot
-be built for a case's pair (Brake's without the flat's Brinell hardness) has no range there.
+be built for a case's pair (Brake's without both bodies' Brinell hardness) has no range there.
 :func:`write_verified_ranges` stores it in ``impactlab/contact/data/verified-ranges.json``
 (``contact.verified_ranges.VERIFIED_PATH``), which the engine's LAW_EXTRAPOLATED flag reads
 (``impactlab.contact.ranges``); ``python3 tasks.py fe-reference`` rewrites it after the curves.
