@@ -13,6 +13,7 @@ import pytest
 from impactlab.contact import Law, get_law, law_names
 from impactlab.contact import kernels as k
 from impactlab.contact.base import ContactModel
+from impactlab.contact.range_note import range_note
 from impactlab.contact.ranges import (
     RANGES,
     STATUSES,
@@ -33,7 +34,7 @@ from impactlab.contact.verified_ranges import (
     verified_upper,
 )
 from impactlab.flags import FLAG_LAW_EXTRAPOLATED
-from impactlab.materials import AISI_201, ContactPair, Material
+from impactlab.materials import AISI_201, AISI_1010, ContactPair, Material
 from impactlab.references import DOI_PATTERN, REFERENCES, Reference
 
 
@@ -140,9 +141,9 @@ def test_analytical_laws_are_verified_too_and_never_flagged_outside_the_span(
 
 
 def _soft_pair_model(name: str) -> ContactModel:
-    """``name`` built for the paper's sphere on a soft flat (S_y 100 MPa: E*/S_y about 1100,
-    beyond the FE cases' 81-360)."""
-    flat = Material("soft steel", 200e9, 0.3, 100e6, 30.0)
+    """``name`` built for the paper's sphere on a soft flat (S_y 50 MPa: E*/S_y about 2200,
+    beyond the FE cases' 28-1731)."""
+    flat = Material("soft steel", 200e9, 0.3, 50e6, 30.0)
     return get_law(name).build(ContactPair(AISI_201, flat), 8.8e-3)
 
 
@@ -197,3 +198,23 @@ def test_confirmation_status_of_the_law_sources() -> None:
     assert {"jackson-green-2005", "kogut-etsion-2002", "ghaednia-2016-impact"} <= confirmed
     for key in ("ghaednia-2016-contact", "kogut-komvopoulos-2004", "thornton-1997"):
         assert not REFERENCES[key].confirmed and "not confirmed" in REFERENCES[key].note
+
+
+def test_range_note_names_the_status_the_span_and_the_limit() -> None:
+    """``range_note``: the one line results show (``law_range``) for each kind of status."""
+    lo, hi = e_star_over_sy_span()
+    soft = _soft_pair_model("ghaednia")
+    assert range_note(soft.law_id, soft.params) == (
+        f"unverified: E*/S_y = 2198 outside the FE cases' {lo:.0f}-{hi:.0f}; stand-in limit "
+        "110 delta_c"
+    )
+    paper = get_law("ghaednia").build(ContactPair(AISI_201, AISI_1010), 8.8e-3)
+    line = range_note(paper.law_id, paper.params)
+    assert line is not None and line.startswith("verified against FE up to 1 delta_c")
+    brake = _soft_pair_model("brake")  # no stand-in range: unverified, no upper end
+    lo, hi = e_star_over_sy_span("brake")  # its own cases (not PMMA: no Brinell hardness)
+    assert range_note(brake.law_id, brake.params) == (
+        f"unverified: E*/S_y = 2198 outside the FE cases' {lo:.0f}-{hi:.0f}; stand-in limit "
+        "no upper end"
+    )
+    assert range_note(-1, paper.params) is None and range_note(paper.law_id, None) is None

@@ -36,6 +36,11 @@ FE_FORCE_RMS_BOUND = 0.011
 LOO_FORCE_BOUND = 0.03
 LOO_FORCE_BOUND_100 = 0.03
 LOO_RESIDUAL_BOUND = 0.015
+#: The same for curves with fewer than 8 maxima (PMMA: 6 over 1.5 decades, 0.3-10 delta_c).
+LOO_RESIDUAL_BOUND_FEW = 0.021
+#: FE points up to delta_c against Hertz: the level-1 mesh's error, larger for PMMA's nu = 0.40.
+HERTZ_BOUND = 0.011
+HERTZ_BOUND_NU_040 = 0.014
 RESIDUAL_BOUND = 0.001
 
 
@@ -80,7 +85,8 @@ def test_fe_round_trip_loading_within_the_stated_bound(curves: IndentationCurves
     assert np.max(np.abs(rel)) == pytest.approx(model.details["loading_fit_max"], abs=1e-9)
     assert model.details["residual_raised"] == 0.0
     below = d <= case.delta_c  # Hertz there: the FE points lie within 1.1 % of it
-    assert np.max(np.abs(model.force(d[below]) / f[below] - 1.0)) <= 0.011
+    bound = HERTZ_BOUND if curves.nu < 0.35 else HERTZ_BOUND_NU_040
+    assert np.max(np.abs(model.force(d[below]) / f[below] - 1.0)) <= bound
     for run in case.runs:
         if run.converged and run.delta_max <= model.max_interference:
             br = model.unload(run.delta_max)
@@ -97,11 +103,12 @@ def test_leave_one_out_error_within_the_stated_bound(curves: IndentationCurves) 
         curves, delta=np.exp(x[upto][1:]), force=np.exp(z[upto][1:])
     )  # the same data up to 100 delta_c
     assert interpolation_error(below)[0] <= LOO_FORCE_BOUND_100
-    assert 0.0 < er <= LOO_RESIDUAL_BOUND
+    bound = LOO_RESIDUAL_BOUND if curves.delta_max.size >= 8 else LOO_RESIDUAL_BOUND_FEW
+    assert 0.0 < er <= bound
 
 
 def test_compiled_lookup_equals_its_python_mirror_and_is_c1_at_the_switch() -> None:
-    c = shipped_curves()[0]
+    c = next(c for c in shipped_curves() if c.name == "paper-aisi201-on-aisi1010")
     tables = curve_tables(c)
     m = tabulated_model(c, ContactPair(AISI_201, AISI_1010), R)
     dc, fc = m.details["delta_c"], m.details["F_c"]

@@ -16,6 +16,7 @@ import pytest
 from impactlab.bodies import PAPER_ROD
 from impactlab.contact import get_law
 from impactlab.contact.ranges import law_extrapolated, law_range
+from impactlab.contact.verified_ranges import e_star_over_sy_span
 from impactlab.dynamics import OUTPUT_FIELDS, simulate, simulate_batch
 from impactlab.dynamics.batch import run_arrays
 from impactlab.flags import ADVISORY_FLAGS, FLAG_LAW_EXTRAPOLATED, ResultFlag, messages
@@ -27,8 +28,11 @@ PAPER = {"law": "ghaednia", "friction": "coulomb", "mu": 0.2, "angle": math.radi
 #: the paper's 20-degree impact at 1.41 m/s, a gentle one (delta_max/delta_c about 45) and a
 #: tiny one inside the verified range (below 1 delta_c; without gravity, which would dominate)
 FAST, GENTLE, TINY = (0.0, -1.41), (0.0, -0.3), (0.0, -0.001)
-#: a flat whose E*/S_y (about 440) lies beyond the FE cases' span (81-360): unverified
-SOFT_FLAT = Material("soft low-carbon steel", 200e9, 0.3, 250e6, 90.0)
+#: a flat whose E*/S_y (about 2200) lies beyond the FE cases' span (28-1731): unverified
+SOFT_FLAT = Material("soft low-carbon steel", 200e9, 0.3, 50e6, 30.0)
+#: a gentle impact on the soft flat (delta_max/delta_c about 40), without gravity, which would
+#: dominate it
+SOFT_GENTLE = (0.0, -0.003)
 
 
 def _delta_c() -> float:
@@ -78,12 +82,43 @@ def test_gentle_impact_is_flagged_by_the_verified_range() -> None:
 
 
 def test_unverified_pair_keeps_the_stand_in_and_says_so() -> None:
-    r = simulate(PAPER_ROD, SOFT_FLAT, velocity=GENTLE, **PAPER)
+    r = simulate(PAPER_ROD, SOFT_FLAT, velocity=SOFT_GENTLE, gravity=False, **PAPER)
     assert 1.0 < r.max_delta_ratio < 110.0 and not r.extrapolated
     fast = simulate(PAPER_ROD, SOFT_FLAT, velocity=FAST, **PAPER)
     assert fast.max_delta_ratio > 110.0 and fast.extrapolated
     (text,) = fast.warnings
     assert "stand-in limit 110)" in text and "outside the span of the FE cases" in text
+
+
+def test_an_unflagged_impact_still_says_whether_its_pair_was_verified() -> None:
+    """Below the stand-in no flag is set, so the result's ``law_range`` line says it: in
+    ``print(result)``, ``summary()`` and ``to_dict()`` (the CLI's table and ``--json``)."""
+    soft = simulate(PAPER_ROD, SOFT_FLAT, velocity=SOFT_GENTLE, gravity=False, **PAPER)
+    assert not soft.extrapolated and not soft.warnings
+    lo, hi = e_star_over_sy_span()
+    line = soft.law_range
+    assert line is not None and line.startswith("unverified: E*/S_y = 2198")
+    assert f"outside the FE cases' {lo:.0f}-{hi:.0f}" in line and "stand-in limit 110" in line
+    assert soft.to_dict()["law_range"] == line and soft.summary()["law_range"] == line
+    assert f"law_range           {line}" in str(soft)
+    paper = simulate(PAPER_ROD, velocity=TINY, gravity=False, **PAPER)
+    assert not paper.extrapolated
+    assert paper.law_range == (
+        f"verified against FE up to 1 delta_c (E*/S_y = 360.3; FE cases {lo:.0f}-{hi:.0f})"
+    )
+    assert paper.to_dict()["law_range"] == paper.law_range
+
+
+def test_a_drop_carries_the_law_range_line_too() -> None:
+    """``DropResult.law_range``: the same line as an impact's, in its summary and to_dict."""
+    from impactlab.bodies.flexible_rod import FlexibleRod
+    from impactlab.dynamics.drop import simulate_drop
+
+    drop = simulate_drop(FlexibleRod.paper(), mu=0.2, angle=math.radians(20), velocity=(0, -1.41))
+    impact = simulate(PAPER_ROD, velocity=FAST, **PAPER)
+    assert drop.law_range == impact.law_range and drop.law_range is not None
+    assert drop.summary()["law_range"] == drop.to_dict()["law_range"] == drop.law_range
+    assert "law_range" in str(drop)
 
 
 @pytest.mark.parametrize("law", ["brake", "thornton"])

@@ -11,8 +11,15 @@ import math
 import numpy as np
 import pytest
 
-from impactlab.contact.verified_ranges import VERIFIED_PATH, verified_cases, verified_upper
-from impactlab.fe.accuracy import measured_laws
+from impactlab.contact import get_law
+from impactlab.contact.ranges import range_status
+from impactlab.contact.verified_ranges import (
+    VERIFIED_PATH,
+    e_star_over_sy_span,
+    verified_cases,
+    verified_upper,
+)
+from impactlab.fe.accuracy import accuracy, measured_laws
 from impactlab.fe.curves import HARDENED_DIR, case_names, load_case
 from impactlab.fe.problem import check_hardening
 from impactlab.fe.reference import (
@@ -24,6 +31,7 @@ from impactlab.fe.tabulated import HARDENED_PAPER_CASE, hardened_curves, hardene
 from impactlab.fe.verified_ranges import verified_range_table
 from impactlab.materials import AISI_201, AISI_1010, ContactPair
 from impactlab.materials.hardening import AISI_1010_HARDENING, PowerLawHardening
+from impactlab.materials.library import AISI_52100, BRITTLE, PRESETS
 
 R = 8.8e-3
 
@@ -34,11 +42,29 @@ def test_shipped_table_equals_what_the_accuracy_measures() -> None:
     fresh = json.loads(json.dumps(verified_range_table()))
     assert shipped == fresh
     assert set(shipped["laws"]) == set(measured_laws())
+    measured = accuracy()
     for law, rows in shipped["laws"].items():
-        assert len(verified_cases(law)) == len(rows) == len(case_names())
+        built = [ca for ca in measured if next(a for a in ca.laws if a.law == law).built]
+        assert len(verified_cases(law)) == len(rows) == len(built)
+        # Brake's law needs both bodies' Brinell hardness: not PMMA's nor the 52100 ball's
+        assert len(built) == len(case_names()) - (3 if law == "brake" else 0)
         for c in verified_cases(law):
             assert c.upper >= 0.0 and c.limited_by in ("force", "delta_r", "end of data")
             assert verified_upper(law, c.e_star_over_sy) == c.upper
+
+
+def test_every_ductile_library_flat_is_verified_against_a_common_ball() -> None:
+    """The FE cases span E*/S_y of every ductile flat of the library (PMMA 28 to OFHC copper
+    1731) against an AISI 52100 or AISI 201 ball: each such pair has a verified range."""
+    lo, hi = e_star_over_sy_span()
+    assert lo == pytest.approx(28.04, abs=0.01) and hi == pytest.approx(1731.3, abs=0.1)
+    for name, flat in PRESETS.items():
+        if name in BRITTLE:
+            continue
+        for ball in (AISI_52100, AISI_201):
+            for law in ("ghaednia", "jackson-green", "kogut-komvopoulos", "hertz", "thornton"):
+                model = get_law(law).build(ContactPair(ball, flat), R)
+                assert range_status(model.law_id, model.params) == "verified", (name, ball, law)
 
 
 def test_hardening_law_and_its_table() -> None:

@@ -154,7 +154,7 @@ class LawRange:
         cases = self.verified
         if not cases:
             return self.stand_in_text
-        lo, hi = e_star_over_sy_span()
+        lo, hi = e_star_over_sy_span(str(self.law))
         per_case = ", ".join(
             f"{c.upper:.3g} delta_c at E*/S_y = {c.e_star_over_sy:.0f}" for c in cases
         )

@@ -119,10 +119,13 @@ def tolerance_text() -> str:
     )
 
 
-def e_star_over_sy_span() -> tuple[float, float]:
-    """(smallest, largest) E*/S_y of the shipped FE cases."""
-    values = [c.e_star_over_sy for cases in _table().values() for c in cases]
-    return min(values), max(values)
+def e_star_over_sy_span(law: str | None = None) -> tuple[float, float]:
+    """(smallest, largest) E*/S_y of the shipped FE cases (``law``: of those it was measured
+    on; (nan, nan) for a law without a verified range)."""
+    table = _table()
+    chosen = table.values() if law is None else [table.get(str(law), ())]
+    values = [c.e_star_over_sy for cases in chosen for c in cases]
+    return (min(values), max(values)) if values else (math.nan, math.nan)
 
 
 def verified_upper(law: str, e_star_over_sy: Any) -> Any:

@@ -26,6 +26,7 @@ from impactlab.bodies.layout import BP_GSTAR
 from impactlab.bodies.modal import MODAL_REFERENCES
 from impactlab.contact import ContactModel
 from impactlab.contact.history_kernels import loading_contact_radius
+from impactlab.contact.range_note import range_note
 from impactlab.contact.ranges import extrapolation, range_status
 from impactlab.contact.rate import (
     RateFactor,
@@ -284,6 +285,7 @@ def _result(
         max_delta_ratio=ratio,
         fitted_delta_ratio_max=ratio_max,
         fitted_range_status=range_status(model.law_id, model.params),
+        law_range=range_note(model.law_id, model.params),
         references=references,
         **inputs,
         **{_RENAMED_OUTPUTS.get(k, k): v for k, v in o.items() if k not in skip},

@@ -191,7 +191,8 @@ class DropResult(DerivedOutputs, ResultDisplay):
       LAW_EXTRAPOLATED when the largest interference of the sequence left the law's fitted
       range (``impactlab.contact.ranges``; ``max_delta_ratio`` = delta_max / delta_ref and the
       upper end of the law's range, ``fitted_delta_ratio_max``, verified against FE or a
-      stand-in: ``fitted_range_status``, ``contact.ranges.range_status``);
+      stand-in: ``fitted_range_status``, ``contact.ranges.range_status``; in one line, shown
+      with the summary: ``law_range``, ``contact.range_note``);
     - ``references`` / ``dois()``: the sources used.
 
     ``stop="flight"`` integrates through the other end's impacts until the rod flies off
@@ -265,6 +266,8 @@ class DropResult(DerivedOutputs, ResultDisplay):
     max_delta_ratio: float = math.nan
     fitted_delta_ratio_max: float = math.inf
     fitted_range_status: str | None = None
+    #: the law's range for the pair in one line (``contact.range_note``; None: unknown law)
+    law_range: str | None = None
     history: DropHistory | None = field(default=None, repr=False)
     references: tuple[Reference, ...] = field(default=(), repr=False)
     #: what ``simulate`` was given: the source of ``input`` (``dynamics.provenance``)
@@ -372,6 +375,8 @@ class DropResult(DerivedOutputs, ResultDisplay):
         data["mu"] = self.mu
         data["rate"] = self.rate or "none"
         data |= {k: getattr(self, k) for k in SUMMARY_FIELDS}
+        if self.law_range is not None:
+            data["law_range"] = self.law_range
         data["flags"] = flag_names(self.flags)
         return data
 

@@ -14,6 +14,7 @@ import numpy as np
 from impactlab import schema
 from impactlab._display import flag_names
 from impactlab._version import __version__
+from impactlab.contact.range_note import range_note
 from impactlab.contact.ranges import extrapolation, extrapolation_flags, range_status
 from impactlab.dynamics.dent import dent_map
 from impactlab.dynamics.derived import DerivedOutputs, batch_derived
@@ -147,6 +148,11 @@ class ImpactResult(DerivedOutputs, ResultDisplay):
     )
     extrapolated = property(lambda self: ResultFlag.LAW_EXTRAPOLATED in self.flags,
                             doc="True when the impact left the law's range.")  # fmt: skip
+    law_range = property(
+        lambda self: range_note(self._law_id, self._law_params),
+        doc="The law's range for this pair in one line: verified against FE (up to what), or "
+        "unverified (E*/S_y outside the FE cases) and the stand-in (contact.range_note).",
+    )
 
     @property
     def warnings(self) -> tuple[str, ...]:
@@ -172,6 +178,7 @@ class ImpactResult(DerivedOutputs, ResultDisplay):
             d[name] = list(v) if isinstance(v, tuple) else v
         d["max_delta_ratio"] = self.max_delta_ratio
         d["extrapolated"] = self.extrapolated
+        d["law_range"] = self.law_range
         d["flags"] = int(self.flags)
         d["warnings"] = list(self.warnings)
         d |= self.derived()  # schema.register_output
@@ -202,14 +209,16 @@ class ImpactResult(DerivedOutputs, ResultDisplay):
 
     def summary(self) -> dict[str, Any]:
         """What was simulated (``body``, ``flat``: their descriptions, when ``simulate`` made
-        the result), the summary's fields (``SUMMARY_FIELDS``, SI; no angles for a sphere) and
-        the names of the flags."""
+        the result), the summary's fields (``SUMMARY_FIELDS``, SI; no angles for a sphere), the
+        law's range (``law_range``, when the law is known) and the names of the flags."""
         call = getattr(self, "_call", None)  # what simulate() was given (provenance)
         data = {} if call is None else {"body": str(call[0]), "flat": call[1].name}
         data |= {k: getattr(self, k) for k in SUMMARY_FIELDS}
         for k in ("angle", "angle_out"):
             if not np.isfinite(data[k]):
                 del data[k]  # a sphere
+        if self.law_range is not None:
+            data["law_range"] = self.law_range
         data["flags"] = flag_names(self.flags)
         return data
 

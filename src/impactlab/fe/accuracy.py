@@ -176,6 +176,8 @@ class LawAccuracy:
     law_ref_over_delta_c: float
     message: str = ""
 
+    built = property(lambda self: not self.message, doc="True when the law was built.")
+
     @property
     def residual_error(self) -> np.ndarray:
         """delta_r / delta_max of the law less FE's, at ``maxima_ratio``."""
@@ -308,21 +310,26 @@ class CaseAccuracy:
     case: ReferenceCase
     laws: tuple[LawAccuracy, ...]
 
+    @property
+    def built(self) -> tuple[LawAccuracy, ...]:
+        """The laws that could be built for the pair (Brake's needs Brinell hardnesses)."""
+        return tuple(a for a in self.laws if a.built)
+
     def closest(self) -> LawAccuracy:
         """The law closest to FE over the whole checked span (smallest ``score``)."""
-        return min(self.laws, key=lambda a: a.score())
+        return min(self.built, key=lambda a: a.score())
 
     def closest_in_force(self) -> LawAccuracy:
         """The law with the smallest RMS force error."""
-        return min(self.laws, key=lambda a: a.rms_force_error())
+        return min(self.built, key=lambda a: a.rms_force_error())
 
     def closest_in_residual(self) -> LawAccuracy:
         """The law with the smallest RMS delta_r / delta_max error."""
-        return min(self.laws, key=lambda a: a.rms_residual_error())
+        return min(self.built, key=lambda a: a.rms_residual_error())
 
     def longest_verified(self) -> LawAccuracy:
         """The law with the largest verified range (the closer one on a tie)."""
-        return max(self.laws, key=lambda a: (a.verified.upper, -a.score()))
+        return max(self.built, key=lambda a: (a.verified.upper, -a.score()))
 
     def recommendation(self) -> str:
         """One line: which law is closest to FE for this pair (overall, in force alone, in
@@ -332,8 +339,8 @@ class CaseAccuracy:
         top = float(np.max(best.force_ratio))
         ef = float(np.max(np.abs(best.force_error)))
         er = float(np.max(np.abs(best.residual_error)))
-        most = max(a.verified.upper for a in self.laws)
-        who = ", ".join(a.law for a in self.laws if a.verified.upper == most)
+        most = max(a.verified.upper for a in self.built)
+        who = ", ".join(a.law for a in self.built if a.verified.upper == most)
         return (
             f"{c.description} (E*/S_y = {c.e_star_over_sy:.0f}): closest to FE over "
             f"{LOWEST_RATIO:g}-{top:.4g} delta_c: {best.law} (force within {100 * ef:.0f} %, "

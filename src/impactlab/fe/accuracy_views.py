@@ -39,6 +39,10 @@ def table_rows(result: CaseAccuracy, only: str | None = None) -> tuple[list[str]
     header = ["law", *(f"{r:g}" for r in ratios), "verified range"]
     rows = []
     for a in (a for a in result.laws if only in (None, a.law)):
+        if not a.built:  # e.g. Brake's law for a material without a Brinell hardness
+            why = a.message.split(" (")[0]
+            rows.append([a.law, *("n/a" for _ in ratios), f"not built for this pair: {why}"])
+            continue
         cells = [f"{_pct(a.force_error_at(r))} / {_abs(a.residual_error_at(r))}" for r in ratios]
         rows.append([a.law, *cells, a.verified.text])
     fe = ["FE: delta_r/delta_max", *(f"{x:.3f}" for x in result.laws[0].residual_fe)]
@@ -82,7 +86,9 @@ def markdown(results: Sequence[CaseAccuracy]) -> str:
     )
     out.append("|" + " --- |" * (len(results) + 1))
     for i, name in enumerate(laws):
-        cells = [_range_cell(r.laws[i].verified) for r in results]
+        cells = [
+            _range_cell(r.laws[i].verified) if r.laws[i].built else "not built" for r in results
+        ]
         out.append(f"| {name} | " + " | ".join(cells) + " |")
     return "\n".join(out) + "\n"
 

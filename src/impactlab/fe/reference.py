@@ -37,6 +37,7 @@ from impactlab.fe.result import IndentationResult
 from impactlab.fe.run import indent
 from impactlab.materials import AISI_201, AISI_1010, Material
 from impactlab.materials.hardening import AISI_1010_HARDENING
+from impactlab.materials.library import AISI_304, AISI_52100, COPPER_OFHC, PMMA
 
 RADIUS = 8.8e-3
 
@@ -51,11 +52,20 @@ AISI_4340_QT = Material("AISI 4340 Q&T 427 C (hard steel)", 205e9, 0.29, 1379e6,
 #: the paper's pair (AISI 201 sphere, S_y 760 MPa, on AISI 1010, 305 MPa; both elastic-plastic),
 #: the paper's sphere steel on 6061-T6 aluminium (elastic-plastic sphere), and a sphere of the
 #: hard steel kept elastic (a hardened ball) on the hard steel: an AISI 201 sphere would yield
-#: before a 1.4 GPa flat.
+#: before a 1.4 GPa flat. The library's flats span E*/S_y = 28 (PMMA) to 1731 (OFHC copper)
+#: against an AISI 52100 or AISI 201 ball; the ends of that span are cases of their own, with
+#: the library's entries (``impactlab.materials.library``, cited there) and the ball that gives
+#: the end's extreme E*/S_y, so that both balls' pairs lie inside the span: the AISI 201 sphere
+#: on PMMA (E*/S_y 28.04; 28.05 with a 52100 ball), and an elastic AISI 52100 ball (hardened,
+#: S_y 2 GPa: it does not yield) on OFHC copper (1731; 1720 with an AISI 201 ball) and on
+#: AISI 304 (504), which splits the long gap between the paper's 360 and copper's 1731.
 CASES: dict[str, tuple[Material, Material, str]] = {
     "paper-aisi201-on-aisi1010": (AISI_1010, AISI_201, "elastic-plastic"),
     "aisi201-on-al6061t6": (AL_6061_T6, AISI_201, "elastic-plastic"),
     "elastic-sphere-on-aisi4340": (AISI_4340_QT, AISI_4340_QT, "elastic"),
+    "aisi201-on-pmma": (PMMA, AISI_201, "elastic-plastic"),
+    "elastic-52100-on-aisi304": (AISI_304, AISI_52100, "elastic"),
+    "elastic-52100-on-copper-ofhc": (COPPER_OFHC, AISI_52100, "elastic"),
 }
 
 #: The cases whose flat strain-hardens, as :data:`CASES`: the paper's pair with AISI 1010's
@@ -78,6 +88,10 @@ DESCRIPTIONS: dict[str, str] = {
     "paper-aisi201-on-aisi1010": "The paper's pair: AISI 201 sphere (elastic-plastic) on AISI 1010",
     "aisi201-on-al6061t6": "Aluminium: AISI 201 sphere (elastic-plastic) on 6061-T6",
     "elastic-sphere-on-aisi4340": "Hard steel: an elastic AISI 4340 Q&T sphere on AISI 4340 Q&T",
+    "aisi201-on-pmma": "PMMA: AISI 201 sphere (elastic-plastic) on PMMA (rate-independent, "
+    "elastic-perfectly plastic: the data sheet's quasi-static values)",
+    "elastic-52100-on-aisi304": "Stainless steel: an elastic AISI 52100 ball on annealed AISI 304",
+    "elastic-52100-on-copper-ofhc": "Copper: an elastic AISI 52100 ball on annealed OFHC copper",
     "paper-aisi201-on-aisi1010-hardening": "The paper's pair with a strain-hardening flat: AISI "
     "201 sphere (elastic-plastic) on AISI 1010 with 1006 steel's hardening (Johnson & Cook "
     "1983)",
@@ -95,9 +109,16 @@ MAXIMA_OVER_DELTA_C: tuple[float, ...] = (
 #: loading at 775 delta_c (increment below the minimum after 65 increments and 27 cut-backs,
 #: 548 s), and 700 delta_c stopped at 618 delta_c (too many cut-backs, 242 s); its largest
 #: maximum is 500 delta_c.
+#: PMMA's delta_c is 83 um, R / 106: it stops at 10 delta_c (0.83 mm, delta / R = 0.095), as
+#: the hard steel stops at delta / R = 0.1. Copper's 100 delta_c (2.0 um) did not converge at
+#: mesh level 1: ccx stopped on loading at 69.6 delta_c (too many cut-backs, 59 increments,
+#: 284 s), nor did 50 delta_c, tried in its place (stopped at 30.7 delta_c, 268 s), while 150,
+#: 300 and 1000 delta_c converged: 150 stands in for 100.
 CASE_MAXIMA: dict[str, tuple[float, ...]] = {
     "aisi201-on-al6061t6": (0.3, 1.0, 1.5, 2.0, 3.0, 10.0, 30.0, 100.0, 300.0, 500.0),
     "elastic-sphere-on-aisi4340": (0.3, 1.0, 1.5, 2.0, 3.0, 10.0, 30.0, 100.0),
+    "aisi201-on-pmma": (0.3, 1.0, 1.5, 2.0, 3.0, 10.0),
+    "elastic-52100-on-copper-ofhc": (0.3, 1.0, 1.5, 2.0, 3.0, 10.0, 30.0, 150.0, 300.0, 1000.0),
 }
 
 

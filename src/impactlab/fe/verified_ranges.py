@@ -2,7 +2,8 @@
 
 :func:`verified_range_table` runs ``impactlab.fe.accuracy`` over every law it measures and
 every shipped elastic-perfectly plastic case and keeps, per law and case, the verified range
-(``fe.accuracy.verified_range``: 10 % in force, 0.05 in delta_r / delta_max).
+(``fe.accuracy.verified_range``: 10 % in force, 0.05 in delta_r / delta_max); a law that cannot
+be built for a case's pair (Brake's without both bodies' Brinell hardness) has no range there.
 :func:`write_verified_ranges` stores it in ``impactlab/contact/data/verified-ranges.json``
 (``contact.verified_ranges.VERIFIED_PATH``), which the engine's LAW_EXTRAPOLATED flag reads
 (``impactlab.contact.ranges``); ``python3 tasks.py fe-reference`` rewrites it after the curves.
@@ -34,7 +35,7 @@ def verified_range_table(results: Sequence[CaseAccuracy] | None = None) -> dict[
     chosen = list(results) if results is not None else accuracy()
     laws: dict[str, list[dict[str, Any]]] = {}
     for ca in chosen:
-        for a in ca.laws:
+        for a in ca.built:
             v = a.verified
             laws.setdefault(a.law, []).append(
                 {

@@ -1,0 +1,52 @@
+"""One line for people on the range a result's contact law is held to for its pair: verified
+against FE (``impactlab.contact.ranges``, ``range_status`` "verified"), or not, and why.
+
+An impact that stays below the law's stand-in range carries no flag, so its result alone would
+not say whether the law was ever checked against FE for the pair; ``ImpactResult.summary()``,
+``DropResult.summary()`` and their ``to_dict()`` (``impactlab simulate`` / ``drop``, with
+``--json``) show this line (``law_range``) next to the flags.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from impactlab.contact import kernels as k
+from impactlab.contact.names import Law
+from impactlab.contact.ranges import STATUSES, range_limit, range_status
+from impactlab.contact.verified_ranges import e_star_over_sy_span
+
+__all__ = ["range_note"]
+
+
+def range_note(law_id: int, params: Any) -> str | None:
+    """``verified against FE up to 1 delta_c (E*/S_y = 360; FE cases 28-1731)``, or
+    ``unverified: E*/S_y = 2198 outside the FE cases' 28-1731; stand-in limit 110 delta_c``,
+    or the stand-in's status (``contact.ranges.STATUSES``) and limit for a law without a
+    verified range (the tabulated law: its data's end); None for an unknown
+    law or without parameters (SI parameters ``params`` of ``ContactModel.params``)."""
+    status = range_status(law_id, params)
+    if status is None or params is None:
+        return None
+    p = np.asarray(params, dtype=np.float64)
+    ratio = float(p[k.P_ESTAR] / p[k.P_SY])
+    limit = float(range_limit(law_id, params))
+    name = next((str(law) for law in Law if law.law_id == int(law_id)), "")
+    lo, hi = e_star_over_sy_span(name)
+    upper = "no upper end" if math.isinf(limit) else f"{limit:.3g} delta_c"
+    if status == "verified":
+        return (
+            f"verified against FE up to {upper} (E*/S_y = {ratio:.4g}; FE cases {lo:.0f}-{hi:.0f})"
+        )
+    if status == "unverified":
+        return (
+            f"unverified: E*/S_y = {ratio:.4g} outside the FE cases' {lo:.0f}-{hi:.0f}; "
+            f"stand-in limit {upper}"
+        )
+    meaning = STATUSES.get(status, "")
+    if math.isinf(limit):
+        return f"{status}, not verified against FE: {meaning}"
+    return f"{status}, not verified against FE ({meaning}): limit {upper}"
