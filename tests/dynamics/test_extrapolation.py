@@ -7,6 +7,7 @@ energy-consistent: the flag is advisory (``ok`` stays True)."""
 
 from __future__ import annotations
 
+import html
 import math
 from pathlib import Path
 
@@ -119,6 +120,18 @@ def test_a_drop_carries_the_law_range_line_too() -> None:
     assert drop.law_range == impact.law_range and drop.law_range is not None
     assert drop.summary()["law_range"] == drop.to_dict()["law_range"] == drop.law_range
     assert "law_range" in str(drop)
+
+
+def test_a_batch_carries_the_law_range_line_of_its_pair() -> None:
+    """``BatchResult.law_range``: the line of an impact of the same pair, in the xarray
+    attributes and the notebook view."""
+    soft = simulate_batch(PAPER_ROD, SOFT_FLAT, vy=[-0.01, -0.02], gravity=False, **PAPER)
+    one = simulate(PAPER_ROD, SOFT_FLAT, velocity=SOFT_GENTLE, gravity=False, **PAPER)
+    assert soft.law_range == one.law_range and soft.law_range.startswith("unverified")
+    assert soft.to_xarray().attrs["law_range"] == soft.law_range
+    assert html.escape(soft.law_range) in soft._repr_html_()
+    paper = simulate_batch(PAPER_ROD, vy=[-1.41], **PAPER)
+    assert paper.law_range == simulate(PAPER_ROD, velocity=TINY, **PAPER).law_range
 
 
 @pytest.mark.parametrize("law", ["brake", "thornton"])

@@ -139,6 +139,8 @@ def batch_dataset(batch: Any) -> Any:
         "dois": [r.doi for r in refs if r.doi],
         "source": "impactlab.simulate_batch",
     }
+    if batch.law_range is not None:
+        attrs["law_range"] = batch.law_range
     return xr.Dataset(variables, coords={"case": np.arange(n)}, attrs=attrs)
 
 
@@ -162,6 +164,7 @@ def batch_html(batch: Any) -> str:
     caption = (
         f"{n} cases: {n_ok} ok, {n - n_ok} failed, {n_flagged} flagged; law {batch.law}, "
         f"friction {batch.friction}"
+        + ("" if batch.law_range is None else f"; law range: {batch.law_range}")
     )
     header = ("output", "min", "median", "max", "unit")
     return grid_html("BatchResult", header, rows, caption)

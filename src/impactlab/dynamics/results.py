@@ -292,6 +292,9 @@ class BatchResult:
     references: tuple[Reference, ...] = field(default=(), repr=False)
     #: delta_max / delta_c of each case (NaN where it failed; None: not computed)
     max_delta_ratio: np.ndarray | None = field(default=None, repr=False)
+    #: the range the law is held to for the batch's pair, one line (``contact.range_note``:
+    #: verified against FE up to ..., or unverified and why); None: not known
+    law_range: str | None = field(default=None, repr=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "out", readonly_copy(self.out))
@@ -320,6 +323,7 @@ class BatchResult:
             "law",
             "friction",
             "references",
+            "law_range",
         ):
             raise AttributeError(name)
         try:

@@ -12,6 +12,7 @@ from impactlab._validation import check_array, check_flag
 from impactlab.bodies import Rod, Sphere
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.contact import ContactModel
+from impactlab.contact.range_note import range_note
 from impactlab.contact.ranges import delta_ratio
 from impactlab.dynamics.batch import run_arrays
 from impactlab.dynamics.checks import (
@@ -122,6 +123,7 @@ def simulate_batch(
         max_delta_ratio=np.asarray(
             delta_ratio(model.law_id, model.params, out[:, L.OUTPUT_FIELDS.index("delta_max")])
         ),
+        law_range=range_note(model.law_id, model.params),
     )
 
 
