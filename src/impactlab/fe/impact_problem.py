@@ -36,10 +36,11 @@ PLASTIC_PRESSURE_FACTOR = 2.8
 #: mesh-level-1 model at 1 and 2, converged in mostly 2-4 iterations at 4; docs/fe-dynamic.md).
 PLASTIC_SUBDIVISION = 4
 
-#: ... or fewer, so that the sphere approaches the flat by at most this many critical
-#: interferences delta_c per fixed increment (Newton converged through the contact's onset at
-#: 0.62 delta_c per increment at 1 m/s, diverged in the second contact increment at 0.67 and
-#: 3.4 delta_c at 1.41 m/s, converged at 0.33 delta_c there; docs/fe-dynamic.md).
+#: ... or more, so that the sphere approaches the flat by at most this many critical
+#: interferences delta_c per fixed increment. Newton got through the contact's onset at 0.62
+#: delta_c per increment at 1 m/s; at 1.41 m/s it diverged in the second contact increment at
+#: 3.4 and 0.67 delta_c and got through at 1/3 (docs/fe-dynamic.md, where also the runs that
+#: diverged at 1/4 and 1/3 when first touch fell exactly on an increment's end).
 MAX_APPROACH_PER_INCREMENT = 1.0 / 3.0
 
 #: The sphere starts this many first increments above the flat (free flight before contact).
