@@ -40,7 +40,8 @@ PLASTIC_SUBDIVISION = 4
 #: interferences delta_c per fixed increment. Newton got through the contact's onset at 0.62
 #: delta_c per increment at 1 m/s; at 1.41 m/s it diverged in the second contact increment at
 #: 3.4 and 0.67 delta_c and got through at 1/3 (docs/fe-dynamic.md, where also the runs that
-#: diverged at 1/4 and 1/3 when first touch fell exactly on an increment's end).
+#: diverged at 1/4 and 1/3 when first touch fell exactly on an increment's end, and the ball
+#: at 2 and 3 m/s, which this bound does not get through the onset).
 MAX_APPROACH_PER_INCREMENT = 1.0 / 3.0
 
 #: The sphere starts this many first increments above the flat (free flight before contact).
