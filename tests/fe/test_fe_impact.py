@@ -14,9 +14,12 @@ import shutil
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from impactlab.fe.impact_deck import HHT_ALPHA, ImpactDeckSpec, procedure_card
 from impactlab.fe.impact_problem import (
+    MAX_APPROACH_PER_INCREMENT,
     PLASTIC_SUBDIVISION,
     hertz_estimates,
     make_impact_problem,
@@ -209,26 +212,61 @@ def test_sta_counts_each_increment_once():
 
 def test_procedure_follows_the_flat():
     """An elastic flat: the temperature-displacement step with automatic increments; an
-    elastic-plastic flat: *DYNAMIC, DIRECT at a quarter of the time-level increment. The
-    procedure is part of the cache key."""
+    elastic-plastic flat: *DYNAMIC, DIRECT at a quarter of the time-level increment, or less
+    where the approach per increment would pass MAX_APPROACH_PER_INCREMENT delta_c (1 m/s:
+    0.62 delta_c at a quarter). The procedure is part of the cache key."""
     elastic = make_impact_problem(
         AISI_1010, AISI_201, radius=R, speed=1.0, sphere="elastic", flat_hardening="elastic"
     )
+    slow = make_impact_problem(AISI_1010, AISI_201, radius=R, speed=0.1)
     plastic = make_impact_problem(AISI_1010, AISI_201, radius=R, speed=1.0)
     assert elastic.procedure == "temperature-displacement"
     assert plastic.procedure == "dynamic-direct"
-    assert plastic.fixed_increment == pytest.approx(plastic.increment / PLASTIC_SUBDIVISION)
-    assert plastic.gap == pytest.approx(3 * plastic.increment * 1.0)
+    assert slow.fixed_increment == pytest.approx(slow.increment / PLASTIC_SUBDIVISION)
+    assert not slow.approach_limited and not elastic.approach_limited
+    assert plastic.approach_limited
+    assert plastic.fixed_increment * 1.0 == pytest.approx(
+        MAX_APPROACH_PER_INCREMENT * plastic.delta_c, rel=1e-12
+    )
+    assert plastic.fixed_increment < plastic.increment / PLASTIC_SUBDIVISION
+    for p, v in ((slow, 0.1), (plastic, 1.0)):
+        assert p.gap == pytest.approx(3 * p.increment * v)
     assert elastic.key_data()["procedure"] != plastic.key_data()["procedure"]
+    # the limit enters the cache key only where it sets the increment
+    assert "max_approach_per_increment" in plastic.key_data()
+    assert "max_approach_per_increment" not in slow.key_data()
 
 
-def _deck_spec(procedure: str, fixed: float) -> ImpactDeckSpec:
-    p = make_impact_problem(AISI_1010, AISI_201, radius=R, speed=1.0)
+@settings(max_examples=25, deadline=None)
+@given(
+    speed=st.floats(0.01, 5.0),
+    mass=st.one_of(st.none(), st.floats(1e-3, 0.5)),
+)
+def test_fixed_increment_bounds_the_approach(speed, mass):
+    """Every elastic-plastic run: fixed increment <= the time-level increment / 4 and an
+    approach per increment v dt <= MAX_APPROACH_PER_INCREMENT delta_c, one of the two bounds
+    reached; the deck's step line carries that increment."""
+    p = make_impact_problem(AISI_1010, AISI_201, radius=R, speed=speed, mass=mass)
+    dt = p.fixed_increment
+    by_time = p.increment / PLASTIC_SUBDIVISION
+    by_approach = MAX_APPROACH_PER_INCREMENT * p.delta_c / speed
+    assert 0.0 < dt <= by_time * (1 + 1e-12)
+    assert speed * dt <= MAX_APPROACH_PER_INCREMENT * p.delta_c * (1 + 1e-12)
+    assert dt == pytest.approx(min(by_time, by_approach), rel=1e-12)
+    assert p.approach_limited == (by_approach < by_time)
+    card = procedure_card(_deck_spec("dynamic-direct", dt, speed=speed, mass=mass))
+    assert float(card.splitlines()[1].split(",")[0]) == pytest.approx(dt, rel=1e-11)
+
+
+def _deck_spec(
+    procedure: str, fixed: float, speed: float = 1.0, mass: float | None = None
+) -> ImpactDeckSpec:
+    p = make_impact_problem(AISI_1010, AISI_201, radius=R, speed=speed, mass=mass)
     return ImpactDeckSpec(
         base=None,  # type: ignore[arg-type]  # the step card does not read it
         flat_density=7870.0,
         sphere_density=p.sphere_density,
-        speed=1.0,
+        speed=speed,
         gap=p.gap,
         increment=p.increment,
         end_time=p.end_time,

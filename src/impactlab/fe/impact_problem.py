@@ -36,6 +36,14 @@ PLASTIC_PRESSURE_FACTOR = 2.8
 #: mesh-level-1 model at 1 and 2, converged in mostly 2-4 iterations at 4; docs/fe-dynamic.md).
 PLASTIC_SUBDIVISION = 4
 
+#: ... or more, so that the sphere approaches the flat by at most this many critical
+#: interferences delta_c per fixed increment. Newton got through the contact's onset at 0.62
+#: delta_c per increment at 1 m/s; at 1.41 m/s it diverged in the second contact increment at
+#: 3.4 and 0.67 delta_c and got through at 1/3 (docs/fe-dynamic.md, where also the runs that
+#: diverged at 1/4 and 1/3 when first touch fell exactly on an increment's end, and the ball
+#: at 2 and 3 m/s, which this bound does not get through the onset).
+MAX_APPROACH_PER_INCREMENT = 1.0 / 3.0
+
 #: The sphere starts this many first increments above the flat (free flight before contact).
 GAP_INCREMENTS = 3
 
@@ -118,8 +126,21 @@ class ImpactProblem:
 
     @property
     def fixed_increment(self) -> float:
-        """The fixed increment [s] of the "dynamic-direct" procedure."""
-        return self.increment / PLASTIC_SUBDIVISION
+        """The fixed increment [s] of the "dynamic-direct" procedure: the time-level increment
+        / PLASTIC_SUBDIVISION, or less, so that the approach per increment v dt is at most
+        MAX_APPROACH_PER_INCREMENT delta_c."""
+        by_time = self.increment / PLASTIC_SUBDIVISION
+        by_approach = MAX_APPROACH_PER_INCREMENT * self.delta_c / self.speed
+        return min(by_time, by_approach)
+
+    @property
+    def approach_limited(self) -> bool:
+        """True when MAX_APPROACH_PER_INCREMENT, not the time level, sets the fixed increment
+        of a "dynamic-direct" run."""
+        return (
+            self.procedure == "dynamic-direct"
+            and self.fixed_increment < self.increment / PLASTIC_SUBDIVISION
+        )
 
     @property
     def gap(self) -> float:
@@ -157,6 +178,12 @@ class ImpactProblem:
             "end_time_factor": END_TIME_FACTOR,
             "procedure": self.procedure,
             "subdivision": PLASTIC_SUBDIVISION if self.procedure == "dynamic-direct" else 1,
+            # only where it sets the increment (the runs it does not touch keep their keys)
+            **(
+                {"max_approach_per_increment": MAX_APPROACH_PER_INCREMENT}
+                if self.approach_limited
+                else {}
+            ),
         }
 
 

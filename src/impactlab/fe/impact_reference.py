@@ -74,13 +74,12 @@ IMPACT_CASES: dict[str, ImpactCase] = {
     "rod-mass-on-aisi1010": ImpactCase(
         "The paper's rod tip (R = 8.8 mm, AISI 201, elastic-plastic) carrying the whole rod's "
         "mass (0.4607 kg: a rod striking along its axis) on AISI 1010 (elastic-perfectly "
-        "plastic) at the paper's slowest drop speed: quasi-static FE 1-DOF only",
+        "plastic) at the paper's slowest drop speed",
         AISI_1010,
         AISI_201,
         "elastic-plastic",
         None,
         (1.41,),
-        dynamic=False,
         mass=0.4607,
     ),
 }
