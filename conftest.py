@@ -7,6 +7,8 @@ still bounded by each test's ``max_examples``.
 
 from __future__ import annotations
 
+import sys
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
@@ -39,3 +41,33 @@ def warm_engine(request: pytest.FixtureRequest) -> None:
 
         warm(tuple(todo))
         _WARMED.update(todo)
+
+
+@pytest.fixture
+def cli_main(
+    monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> Callable[..., tuple[int, str, str]]:
+    """``impactlab ARGS`` in this process, through the installed command's ``main`` (its
+    one-line errors, exit statuses and warnings): ``cli_main(*args)`` gives (exit status,
+    stdout, stderr). Without the interpreter start and the package import of a subprocess
+    (1-2 s each); ``tests/core/test_cli_main.py`` runs the command itself."""
+    from impactlab.cli import main
+
+    monkeypatch.delenv("IMPACTLAB_DEBUG", raising=False)
+
+    def run(*args: str) -> tuple[int, str, str]:
+        capsys.readouterr()  # only this command's output
+        monkeypatch.setattr(sys, "argv", ["impactlab", *args])
+        try:
+            main()
+            code = 0
+        except SystemExit as exc:  # as the interpreter ends: None is 0, a message is 1
+            if exc.code is None or isinstance(exc.code, int):
+                code = exc.code or 0
+            else:
+                print(exc.code, file=sys.stderr)
+                code = 1
+        out, err = capsys.readouterr()
+        return code, out, err
+
+    return run
