@@ -10,6 +10,7 @@ from __future__ import annotations
 import sys
 from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 import pytest
 from hypothesis import settings
@@ -29,6 +30,31 @@ WARM_PARTS = {
     "flexible": ("flexible rod", "flexible batch"),
 }
 _WARMED: set[str] = set()
+
+
+#: Test files that share an expensive session fixture, run by one worker under
+#: ``pytest -n N --dist loadfile`` (each worker would otherwise make the fixture itself):
+#: file -> the name of the group it runs in.
+SAME_WORKER = {
+    # the documentation site, ``mkdocs build --strict`` (tests/docs/conftest.py: ``site``)
+    "tests/docs/test_docs_build.py": "docs site",
+    "tests/docs/test_browser.py": "docs site",
+}
+
+
+@pytest.hookimpl(optionalhook=True)
+def pytest_xdist_make_scheduler(config: pytest.Config, log: Any) -> Any:
+    """``--dist loadfile`` with the files of ``SAME_WORKER`` grouped; other modes as xdist's."""
+    if config.getvalue("dist") != "loadfile":
+        return None
+    from xdist.scheduler import LoadFileScheduling
+
+    class SharedFixtureFileScheduling(LoadFileScheduling):
+        def _split_scope(self, nodeid: str) -> str:
+            path = super()._split_scope(nodeid)
+            return SAME_WORKER.get(path, path)
+
+    return SharedFixtureFileScheduling(config, log)
 
 
 @pytest.fixture(autouse=True)
