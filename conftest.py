@@ -7,6 +7,7 @@ still bounded by each test's ``max_examples``.
 
 from __future__ import annotations
 
+import os
 import sys
 from collections.abc import Callable
 from pathlib import Path
@@ -17,6 +18,13 @@ from hypothesis import settings
 
 settings.register_profile("impactlab", deadline=None, print_blob=True)
 settings.load_profile("impactlab")
+
+# The parallel batch engine's OpenMP threads (numba's "omp" threading layer) sleep when they
+# run out of work instead of spinning: with two test workers on two cores, a worker's spinning
+# threads take the core the other worker needs, and the suite's many small batches spend most
+# of their CPU time waiting. Set before the first parallel call loads the OpenMP library; the
+# numbers are the same either way.
+os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
 
 
 #: The compiled parts (``impactlab.dynamics.warm.PARTS``) each test folder uses: the one warm-up
