@@ -1,13 +1,18 @@
-"""The installed entry point: user errors give one line and a non-zero exit, never a traceback."""
+"""The installed entry point: user errors give one line and a non-zero exit, never a traceback.
+The command itself runs in a subprocess for the user errors, the help and the start-up
+imports; the other checks run its ``main`` in this process (the ``cli_main`` fixture)."""
 
 from __future__ import annotations
 
 import os
 import subprocess
 import sys
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
+
+CliMain = Callable[..., tuple[int, str, str]]
 
 
 def _run(*args: str) -> subprocess.CompletedProcess[str]:
@@ -69,24 +74,26 @@ def test_help_lists_every_command() -> None:
         ("simulate", "rod", "--angle", "20 deg", "--vy", "-1 m/s", "--plot"),
     ],
 )
-def test_out_naming_a_file_is_one_line(tmp_path: Path, command: tuple[str, ...]) -> None:
+def test_out_naming_a_file_is_one_line(
+    cli_main: CliMain, tmp_path: Path, command: tuple[str, ...]
+) -> None:
     """--out naming an existing file, or a folder below one: one line naming it, no traceback."""
     taken = tmp_path / "taken"
     taken.write_text("a file")
     for out in (taken, taken / "below"):
-        res = _run(*command, "--out", str(out))
-        assert res.returncode == 2, res.stderr
-        assert "Traceback" not in res.stderr
-        lines = res.stderr.strip().splitlines()
+        code, _, err = cli_main(*command, "--out", str(out))
+        assert code == 2, err
+        assert "Traceback" not in err
+        lines = err.strip().splitlines()
         assert len(lines) == 1 and str(out) in lines[0] and "--out" in lines[0], lines
 
 
-def test_bare_angle_is_refused_with_a_hint() -> None:
+def test_bare_angle_is_refused_with_a_hint(cli_main: CliMain) -> None:
     """``--angle 0.35`` once ran at 0.35 degrees without a word."""
     for cmd in (("simulate", "rod", "--vy", "-1 m/s"), ("invert", "--case", "paper-20")):
-        res = _run(*cmd, "--angle", "0.35")
-        assert res.returncode == 2 and "Traceback" not in res.stderr
-        assert "--angle 0.35 has no unit: give a unit, e.g. '20 deg' or '0.35 rad'" in res.stderr
+        code, _, err = cli_main(*cmd, "--angle", "0.35")
+        assert code == 2 and "Traceback" not in err
+        assert "--angle 0.35 has no unit: give a unit, e.g. '20 deg' or '0.35 rad'" in err
 
 
 def test_cli_starts_without_the_heavy_packages() -> None:
@@ -112,11 +119,11 @@ def test_cli_starts_without_the_heavy_packages() -> None:
     assert res.returncode == 0, res.stderr
 
 
-def test_worker_timeout_help_states_the_sweeps_default() -> None:
+def test_worker_timeout_help_states_the_sweeps_default(cli_main: CliMain) -> None:
     from impactlab.cli.sweep import WORKER_TIMEOUT_HELP_DEFAULT
     from impactlab.sweep.backends import DEFAULT_WORKER_TIMEOUT
 
     assert WORKER_TIMEOUT_HELP_DEFAULT == DEFAULT_WORKER_TIMEOUT
-    res = _run("sweep", "run", "--help")
-    assert res.returncode == 0, res.stderr
-    assert f"(default: {WORKER_TIMEOUT_HELP_DEFAULT})" in " ".join(res.stdout.split())
+    code, out, err = cli_main("sweep", "run", "--help")
+    assert code == 0, err
+    assert f"(default: {WORKER_TIMEOUT_HELP_DEFAULT})" in " ".join(out.split())

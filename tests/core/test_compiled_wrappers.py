@@ -49,15 +49,16 @@ def _trees() -> dict[Path, ast.Module]:
 
 def test_functions_without_wrapper_are_called_only_from_compiled_code() -> None:
     trees = _trees()
+    compiled = {path: _compiled(tree) for path, tree in trees.items()}
     internal: dict[str, str] = {}
-    for path, tree in trees.items():
-        for fn in _compiled(tree):
+    for path, fns in compiled.items():
+        for fn in fns:
             if any(_without_wrapper(d) for d in fn.decorator_list):
                 internal[fn.name] = path.relative_to(ROOT).as_posix()
     assert len(internal) > 40  # the engine's internal functions are found
     uses: list[str] = []
     for path, tree in trees.items():
-        inside = {id(n) for fn in _compiled(tree) for n in ast.walk(fn)}
+        inside = {id(n) for fn in compiled[path] for n in ast.walk(fn)}
         for node in ast.walk(tree):
             if id(node) in inside or isinstance(node, ast.Import | ast.ImportFrom):
                 continue

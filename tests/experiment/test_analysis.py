@@ -5,8 +5,7 @@ from __future__ import annotations
 import json
 import math
 import re
-import subprocess
-import sys
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -145,35 +144,21 @@ def test_cli_analyze(tmp_path: Path, drops: dict, scans: dict) -> None:
     assert "│ T " in r2.stdout and "│ ms" in r2.stdout
 
 
-def test_cli_bad_scan_exits_with_one_line(tmp_path: Path, drops: dict) -> None:
+def test_cli_bad_scan_exits_with_one_line(
+    cli_main: Callable[..., tuple[int, str, str]], tmp_path: Path, drops: dict
+) -> None:
     geo = tmp_path / "geometry.toml"
     geo.write_text(GEOMETRY_TOML)
     bad = tmp_path / "dent.sdf"
     bad.write_text("aISO-1.0\nNumPoints = 10\n")
     out = tmp_path / "o"
-    proc = subprocess.run(
-        [
-            sys.executable,
-            "-m",
-            "impactlab",
-            "analyze",
-            str(drops[20].c3d),
-            str(bad),
-            "--geometry",
-            str(geo),
-            "--out",
-            str(out),
-            "--json",
-        ],
-        capture_output=True,
-        text=True,
-        timeout=120,
-    )
-    assert proc.returncode == 2
-    err = [ln for ln in proc.stderr.splitlines() if ln.strip()]
+    args = [str(drops[20].c3d), str(bad), "--geometry", str(geo), "--out", str(out), "--json"]
+    code, stdout, stderr = cli_main("analyze", *args)
+    assert code == 2
+    err = [ln for ln in stderr.splitlines() if ln.strip()]
     assert len(err) == 1 and err[0].startswith("error: scan:") and "dent.sdf" in err[0]
-    assert "Traceback" not in proc.stderr
-    data = json.loads(proc.stdout)  # the marker results are printed and saved
+    assert "Traceback" not in stderr
+    data = json.loads(stdout)  # the marker results are printed and saved
     assert "e" in data["summary"] and (out / "results.json").exists()
 
 
@@ -262,16 +247,13 @@ def test_sign_flipped_scan_is_refused_then_read_over(
 PLAIN_8MM = ("--pixel-size", "8 mm", "--height-unit", "m")
 
 
-def test_cli_refuses_impossible_dent(plain_scan: tuple[Path, float, Any]) -> None:
+def test_cli_refuses_impossible_dent(
+    cli_main: Callable[..., tuple[int, str, str]], plain_scan: tuple[Path, float, Any]
+) -> None:
     path, _, _ = plain_scan
-    proc = subprocess.run(
-        [sys.executable, "-m", "impactlab", "analyze", "none.c3d", str(path), *PLAIN_8MM],
-        capture_output=True,
-        text=True,
-        timeout=120,
-    )
-    assert proc.returncode == 2 and "Traceback" not in proc.stderr
-    err = proc.stderr.strip().splitlines()
+    code, _, stderr = cli_main("analyze", "none.c3d", str(path), *PLAIN_8MM)
+    assert code == 2 and "Traceback" not in stderr
+    err = stderr.strip().splitlines()
     assert len(err) == 1 and "scan: " in err[0] and "wider than the tip's diameter" in err[0]
 
 
