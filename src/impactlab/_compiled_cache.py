@@ -40,7 +40,7 @@ ENGINE_SOURCES = (
     "dynamics/slip_batch.py",
     "contact",
     "bodies/layout.py",
-    "schema.py",
+    "schema",
     "_floatbits.py",
     "flags.py",
 )

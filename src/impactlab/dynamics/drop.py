@@ -10,11 +10,10 @@ drop itself runs in the compiled integrator ``impactlab.dynamics.flexcore``.
 
 from __future__ import annotations
 
-import functools
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import Any, cast
+from typing import Any
 
 import numpy as np
 
@@ -23,7 +22,6 @@ from impactlab._validation import check_finite
 from impactlab.bodies import Rod
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.bodies.layout import BP_GSTAR
-from impactlab.bodies.modal import MODAL_REFERENCES
 from impactlab.contact import ContactModel
 from impactlab.contact.history_kernels import loading_contact_radius
 from impactlab.contact.range_note import range_note
@@ -43,6 +41,7 @@ from impactlab.dynamics.checks import (
     gravity_value,
     velocity_from,
 )
+from impactlab.dynamics.drop_body import BodyModel, body_model
 from impactlab.dynamics.drop_checks import (
     DROP_FRICTION,
     STOP_MODES,
@@ -97,51 +96,6 @@ MIN_APPROACH_SPEED = 1e-9
 ELASTIC_LAWS = frozenset({"hertz"})
 
 
-@dataclass(frozen=True, eq=False)
-class _BodyModel:
-    """What the integrator needs of a body: geometry, inertia, material and the modal data."""
-
-    rigid: Rod
-    inertia: float
-    omega: np.ndarray
-    zeta: np.ndarray
-    U: np.ndarray
-    W: np.ndarray
-    Psi: np.ndarray
-    geometric: tuple[np.ndarray, np.ndarray, np.ndarray] | None
-    description: str
-    references: tuple[Reference, ...]
-
-
-@functools.lru_cache(maxsize=64)
-def _body_model(body: FlexibleRod | Rod) -> _BodyModel:
-    if isinstance(body, Rod):
-        empty = np.zeros((2, 0))
-        desc = f"rigid Rod (L = {body.length:g} m, I_C = {body.inertia:.5g} kg m^2)"
-        inertia = cast(float, body.inertia)  # a float after Rod.__post_init__
-        return _BodyModel(
-            body, inertia, np.zeros(0), np.zeros(0), empty, empty, empty, None, desc, ()
-        )
-    b = body.basis()
-    desc = (
-        f"FlexibleRod ({body.theory}, {body.n_axial} axial"
-        f"{' + 2 residual' if body.axial_residual else ''}, {body.n_bending} bending modes"
-        f"{', geometric stiffness' if body.geometric else ''}, zeta = {body.damping:g})"
-    )
-    return _BodyModel(
-        body.rigid(),
-        b.inertia,
-        b.omega,
-        np.full(b.n_modes, body.damping),
-        b.U,
-        b.W,
-        b.Psi,
-        body.geometric_tensor() if body.geometric else None,
-        desc,
-        MODAL_REFERENCES if b.n_modes else (),
-    )
-
-
 @dataclass(frozen=True)
 class _Run:
     status: int
@@ -152,7 +106,7 @@ class _Run:
 
 
 def _run(
-    bm: _BodyModel,
+    bm: BodyModel,
     model: ContactModel,
     state: tuple[float, float, float, float],
     friction: tuple[int, float, float, tuple[float, float]],
@@ -249,7 +203,7 @@ def _rate_model(
 
 def _result(
     r: _Run,
-    bm: _BodyModel,
+    bm: BodyModel,
     model: ContactModel,
     inputs: dict[str, Any],
     rate: tuple[str | None, RateFactor | None],
@@ -347,7 +301,7 @@ def simulate_drop(
     """
     velocity = velocity_from(velocity, speed, incidence)
     body = check_body(body)
-    bm = _body_model(body)
+    bm = body_model(body)
     flat = check_flat(flat)
     fric, mu_v = check_friction(friction, mu)
     if angle is None:

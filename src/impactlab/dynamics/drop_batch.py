@@ -25,7 +25,8 @@ from impactlab.bodies.layout import BP_GSTAR
 from impactlab.contact import ContactModel
 from impactlab.contact.ranges import delta_ratio, extrapolation_flags
 from impactlab.dynamics.checks import batch_velocity, check_flat, check_rtol, gravity_value
-from impactlab.dynamics.drop import DEFAULT_T_MAX, MIN_APPROACH_SPEED, _body_model
+from impactlab.dynamics.drop import DEFAULT_T_MAX, MIN_APPROACH_SPEED
+from impactlab.dynamics.drop_body import body_model
 from impactlab.dynamics.drop_checks import (
     check_body,
     check_friction,
@@ -202,7 +203,7 @@ def simulate_drops(
     body, flat, law, friction, gravity, rtol, stop or t_max (one message naming it).
     """
     body = check_body(body)
-    bm = _body_model(body)
+    bm = body_model(body)
     flat = check_flat(flat)
     fric, _ = check_friction(friction, 0.0)
     if angle is None:
