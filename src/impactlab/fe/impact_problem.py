@@ -238,14 +238,21 @@ def make_impact_problem(
     first = ImpactProblem(probe, v, m, int(time_level))
     d_est = first.estimates()[0]
     # the mesh and flat block are sized for 1.3 times the expected largest interference
-    indentation = make_problem(
-        flat,
-        sphere_material,
-        radius=R,
-        delta_max=1.3 * d_est,
-        sphere=sphere,
-        flat_hardening=flat_hardening,
-        sphere_hardening=sphere_hardening,
-        mesh_level=mesh_level,
-    )
+    try:
+        indentation = make_problem(
+            flat,
+            sphere_material,
+            radius=R,
+            delta_max=1.3 * d_est,
+            sphere=sphere,
+            flat_hardening=flat_hardening,
+            sphere_hardening=sphere_hardening,
+            mesh_level=mesh_level,
+        )
+    except ValueError as exc:
+        raise ValueError(
+            f"speed {v!r} m/s with mass {m:.4g} kg: the expected largest interference "
+            f"{d_est:.3g} m (x 1.3 for the mesh) is beyond what the FE problem of a sphere of "
+            f"radius {R!r} m allows ({exc}); lower the speed or the mass"
+        ) from None
     return replace(first, indentation=indentation)
