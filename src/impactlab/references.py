@@ -133,6 +133,20 @@ _ALL: tuple[Reference, ...] = (
         "confirmed",
     ),
     Reference(
+        "swift-1952",
+        "H. W. Swift, Plastic instability under plane stress, J. Mech. Phys. Solids 1 (1952) 1-18",
+        "10.1016/0022-5096(52)90003-3",
+        note="the flow curve sigma = K (eps0 + eps_p)^n; DOI not checked",
+    ),
+    Reference(
+        "dieter-1961",
+        "G. E. Dieter, Mechanical Metallurgy, McGraw-Hill, New York (1961), ISBN 07-016890-3; "
+        "the tension test: Considere's necking criterion d sigma / d eps = sigma, and for a "
+        "power law the uniform true strain equal to the exponent",
+        note="a book without a DOI; ISBN as printed on the copyright page of a public scan "
+        "(https://pdfdrive.to/book/mechanical-metallurgy)",
+    ),
+    Reference(
         "stronge-2000",
         "W. J. Stronge, Impact Mechanics, Cambridge University Press (2000)",
         "10.1017/CBO9780511626432",
@@ -260,6 +274,20 @@ _ALL: tuple[Reference, ...] = (
 
 #: Material data: handbooks and data sheets (``impactlab.materials.library``).
 _MATERIAL_DATA: tuple[Reference, ...] = (
+    Reference(
+        "sae-j1397",
+        "SAE J1397, Estimated mechanical properties and machinability of steel bars, SAE "
+        "International; AISI/SAE 1010 cold drawn: tensile strength 53,000 psi, yield 44,000 psi, "
+        "elongation 20 % in 2 in., reduction of area 40 %, Brinell 105 (hot rolled: 47,000, "
+        "26,000, 28 %, 50 %, 95); estimated minimum values",
+        url="https://summitsteel.com/mechanical-properties/carbon-steel/",
+        note="the standard itself not read; its 1010 rows read in two public reproductions: "
+        "Summit Steel, 'Mechanical Property | Carbon Steel, Estimated Minimum Values' (AISI and "
+        "SAE table; it prints Brinell 106 for cold-drawn 1010) and Maryland Metrics, 'Mechanical "
+        "Properties of Standard Cold Drawn Steels' (estimated minimum values, 20-30 mm round "
+        "bars; https://www.scribd.com/doc/293076924), which agree on 53,000 / 44,000 psi, "
+        "20 %, 40 %",
+    ),
     Reference(
         "johnson-cook-1983",
         "G. R. Johnson, W. H. Cook, A constitutive model and data for metals subjected to "
