@@ -277,16 +277,21 @@ _MATERIAL_DATA: tuple[Reference, ...] = (
     Reference(
         "sae-j1397",
         "SAE J1397, Estimated mechanical properties and machinability of steel bars, SAE "
-        "International; AISI/SAE 1010 cold drawn: tensile strength 53,000 psi, yield 44,000 psi, "
-        "elongation 20 % in 2 in., reduction of area 40 %, Brinell 105 (hot rolled: 47,000, "
-        "26,000, 28 %, 50 %, 95); estimated minimum values",
+        "International (rev. May 1992); AISI/SAE 1010 cold drawn: tensile strength "
+        "53,000 psi, yield 44,000 psi, elongation 20 % in 2 in., reduction of area 40 %, "
+        "Brinell 105 (hot rolled: 47,000, 26,000 psi, 28 %, 50 %, 95); estimated minimum "
+        "values for 20-30 mm (3/4-1 1/4 in) bars",
         url="https://summitsteel.com/mechanical-properties/carbon-steel/",
-        note="the standard itself not read; its 1010 rows read in two public reproductions: "
-        "Summit Steel, 'Mechanical Property | Carbon Steel, Estimated Minimum Values' (AISI and "
-        "SAE table; it prints Brinell 106 for cold-drawn 1010) and Maryland Metrics, 'Mechanical "
-        "Properties of Standard Cold Drawn Steels' (estimated minimum values, 20-30 mm round "
-        "bars; https://www.scribd.com/doc/293076924), which agree on 53,000 / 44,000 psi, "
-        "20 %, 40 %",
+        note="the standard's scope (bar sizes, 2 in gauge) read in a public copy of J1397 "
+        "rev. May 1992 (kupdf.net, 'SAE-J1397-92'), whose tables were not in reach; the 1010 "
+        "rows read in reproductions that agree: Summit Steel, 'Mechanical Property | Carbon "
+        "Steel, Estimated Minimum Values' (prints Brinell 106 for cold-drawn 1010); Maryland "
+        "Metrics, 'Mechanical Properties of Standard Cold Drawn Steels' (scribd 293076924); "
+        "Budynas & Nisbett, Shigley's Mechanical Engineering Design, 9th ed., Table A-20, "
+        "p. 1040, source '1986 SAE Handbook, p. 2.15' (370 (53) and 300 (44) MPa (kpsi), "
+        "pdfcoffee.com/table-a-20-pdf-free.html); and AZoM's 'AISI 1010 carbon steel' page "
+        "(azom.com/article.aspx?ArticleID=6539), cold drawn: 365 MPa (52,900 psi), 305 MPa "
+        "(44,200 psi), 20 %, 40 %, Brinell 105, 7.87 g/cm3: the paper's S_y, H and density",
     ),
     Reference(
         "johnson-cook-1983",
