@@ -301,8 +301,9 @@ _MATERIAL_DATA: tuple[Reference, ...] = (
         "n = 0.36, C = 0.022, m = 1.00",
         note="proceedings paper, no DOI; pages as commonly cited, not confirmed here; the "
         "1006-steel constants confirmed against a secondary source that reproduces their table "
-        "(table number not confirmed); no DOI-bearing hardening law for AISI 1010 itself was "
-        "found in the sources searched (docs/materials.md, Strain hardening, lists them)",
+        "(table number not confirmed); used for 1006's rate term and for the earlier stand-in "
+        "hardening of AISI 1010 (AISI_1010_WITH_1006_HARDENING); no published hardening law "
+        "for AISI 1010 itself was found (docs/materials.md, Strain hardening)",
     ),
     Reference(
         "matweb-al6061-t6",
