@@ -143,8 +143,11 @@ _ALL: tuple[Reference, ...] = (
         "G. E. Dieter, Mechanical Metallurgy, McGraw-Hill, New York (1961), ISBN 07-016890-3; "
         "the tension test: Considere's necking criterion d sigma / d eps = sigma, and for a "
         "power law the uniform true strain equal to the exponent",
-        note="a book without a DOI; ISBN as printed on the copyright page of a public scan "
-        "(https://pdfdrive.to/book/mechanical-metallurgy)",
+        note="a book without a DOI; ISBN read on the copyright page of a public scan "
+        "(pdfdrive.to/book/mechanical-metallurgy); its section on instability in tension was "
+        "not read here (section and page not confirmed); the criterion and Considere's "
+        "construction also on the University of Cambridge DoITPoMS teaching pages "
+        "(doitpoms.ac.uk/tlplib/mechanical_testing_metals)",
     ),
     Reference(
         "stronge-2000",
