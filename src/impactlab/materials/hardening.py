@@ -8,7 +8,7 @@ module holds the hardening laws and turns them into such tables.
 from the grade's cited tensile properties (the cold-drawn 1010 row of SAE J1397: yield 44 ksi,
 which the paper gives as S_y = 305 MPa, and tensile strength 53 ksi, S_u = 365 MPa) through
 Swift's law ``sigma = K (eps0 + eps_p)^n`` (Swift 1952) with eps0 = 0.002 (sigma(0) is the
-0.2 % offset yield) and Considere's necking criterion at the tensile strength: n = 0.0697,
+0.2 % offset yield) and Considere's necking criterion at the tensile strength: n = 0.0696,
 K = 470 MPa. Nothing is fitted to an impact. Validity: one power law from yield through the
 uniform strain (eps_u = n - eps0 = 0.068), extrapolated beyond; isotropic, quasi-static, room
 temperature; the SAE values are estimated minima of bars of a size range. Beyond the table's
