@@ -133,6 +133,23 @@ _ALL: tuple[Reference, ...] = (
         "confirmed",
     ),
     Reference(
+        "swift-1952",
+        "H. W. Swift, Plastic instability under plane stress, J. Mech. Phys. Solids 1 (1952) 1-18",
+        "10.1016/0022-5096(52)90003-3",
+        note="the flow curve sigma = K (eps0 + eps_p)^n; DOI not checked",
+    ),
+    Reference(
+        "dieter-1961",
+        "G. E. Dieter, Mechanical Metallurgy, McGraw-Hill, New York (1961), ISBN 07-016890-3; "
+        "the tension test: Considere's necking criterion d sigma / d eps = sigma, and for a "
+        "power law the uniform true strain equal to the exponent",
+        note="a book without a DOI; ISBN read on the copyright page of a public scan "
+        "(pdfdrive.to/book/mechanical-metallurgy); its section on instability in tension was "
+        "not read here (section and page not confirmed); the criterion and Considere's "
+        "construction also on the University of Cambridge DoITPoMS teaching pages "
+        "(doitpoms.ac.uk/tlplib/mechanical_testing_metals)",
+    ),
+    Reference(
         "stronge-2000",
         "W. J. Stronge, Impact Mechanics, Cambridge University Press (2000)",
         "10.1017/CBO9780511626432",
@@ -261,6 +278,25 @@ _ALL: tuple[Reference, ...] = (
 #: Material data: handbooks and data sheets (``impactlab.materials.library``).
 _MATERIAL_DATA: tuple[Reference, ...] = (
     Reference(
+        "sae-j1397",
+        "SAE J1397, Estimated mechanical properties and machinability of steel bars, SAE "
+        "International (rev. May 1992); AISI/SAE 1010 cold drawn: tensile strength "
+        "53,000 psi, yield 44,000 psi, elongation 20 % in 2 in., reduction of area 40 %, "
+        "Brinell 105 (hot rolled: 47,000, 26,000 psi, 28 %, 50 %, 95); estimated minimum "
+        "values for 20-30 mm (3/4-1 1/4 in) bars",
+        url="https://summitsteel.com/mechanical-properties/carbon-steel/",
+        note="the standard's scope (bar sizes, 2 in gauge) read in a public copy of J1397 "
+        "rev. May 1992 (kupdf.net, 'SAE-J1397-92'), whose tables were not in reach; the 1010 "
+        "rows read in reproductions that agree: Summit Steel, 'Mechanical Property | Carbon "
+        "Steel, Estimated Minimum Values' (prints Brinell 106 for cold-drawn 1010); Maryland "
+        "Metrics, 'Mechanical Properties of Standard Cold Drawn Steels' (scribd 293076924); "
+        "Budynas & Nisbett, Shigley's Mechanical Engineering Design, 9th ed., Table A-20, "
+        "p. 1040, source '1986 SAE Handbook, p. 2.15' (370 (53) and 300 (44) MPa (kpsi), "
+        "pdfcoffee.com/table-a-20-pdf-free.html); and AZoM's 'AISI 1010 carbon steel' page "
+        "(azom.com/article.aspx?ArticleID=6539), cold drawn: 365 MPa (52,900 psi), 305 MPa "
+        "(44,200 psi), 20 %, 40 %, Brinell 105, 7.87 g/cm3: the paper's S_y, H and density",
+    ),
+    Reference(
         "johnson-cook-1983",
         "G. R. Johnson, W. H. Cook, A constitutive model and data for metals subjected to "
         "large strains, high strain rates and high temperatures, Proc. 7th Int. Symp. on "
@@ -268,8 +304,9 @@ _MATERIAL_DATA: tuple[Reference, ...] = (
         "n = 0.36, C = 0.022, m = 1.00",
         note="proceedings paper, no DOI; pages as commonly cited, not confirmed here; the "
         "1006-steel constants confirmed against a secondary source that reproduces their table "
-        "(table number not confirmed); no DOI-bearing hardening law for AISI 1010 itself was "
-        "found in the sources searched (docs/materials.md, Strain hardening, lists them)",
+        "(table number not confirmed); used for 1006's rate term and for the earlier stand-in "
+        "hardening of AISI 1010 (AISI_1010_WITH_1006_HARDENING); no published hardening law "
+        "for AISI 1010 itself was found (docs/materials.md, Strain hardening)",
     ),
     Reference(
         "matweb-al6061-t6",

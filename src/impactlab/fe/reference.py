@@ -69,10 +69,11 @@ CASES: dict[str, tuple[Material, Material, str]] = {
 }
 
 #: The cases whose flat strain-hardens, as :data:`CASES`: the paper's pair with AISI 1010's
-#: hardening (``impactlab.materials.hardening``). They are stored apart, in ``data/hardening/``
-#: (``fe.curves.HARDENED_DIR``), so that the law accuracy and the verified ranges, which compare
-#: the laws (all elastic-perfectly plastic) with FE, read only the elastic-perfectly plastic
-#: cases; the hardened paper's pair gives the tabulated law of the experiment's report row.
+#: own hardening (``impactlab.materials.hardening.AISI_1010_HARDENING``). They are stored
+#: apart, in ``data/hardening/`` (``fe.curves.HARDENED_DIR``), so that the law accuracy and
+#: the verified ranges, which compare the laws (all elastic-perfectly plastic) with FE, read
+#: only the elastic-perfectly plastic cases; the hardened paper's pair gives the tabulated law
+#: of the experiment's report row.
 HARDENED_CASES: dict[str, tuple[Material, Material, str]] = {
     "paper-aisi201-on-aisi1010-hardening": (AISI_1010, AISI_201, "elastic-plastic"),
 }
@@ -93,8 +94,8 @@ DESCRIPTIONS: dict[str, str] = {
     "elastic-52100-on-aisi304": "Stainless steel: an elastic AISI 52100 ball on annealed AISI 304",
     "elastic-52100-on-copper-ofhc": "Copper: an elastic AISI 52100 ball on annealed OFHC copper",
     "paper-aisi201-on-aisi1010-hardening": "The paper's pair with a strain-hardening flat: AISI "
-    "201 sphere (elastic-plastic) on AISI 1010 with 1006 steel's hardening (Johnson & Cook "
-    "1983)",
+    "201 sphere (elastic-plastic) on AISI 1010 with its own hardening (Swift law from SAE "
+    "J1397's cold-drawn yield and tensile strength, Considere's criterion)",
 }
 
 #: The maxima, in multiples of the case's delta_c: about two per decade from 0.3 to 1000, and

@@ -4,7 +4,8 @@ FE-tabulated law of a strain-hardening flat, side by side with the measurements.
 tuned: the paper's rod, drop velocities and measured mu (as the Coulomb coefficient), the
 Ghaednia law with impactlab's defaults, the AISI 1010 flat, gravity on, no damping (the
 FE-tabulated row: the law tabulated from the FE indentation of the paper's pair with AISI
-1010's strain hardening, ``impactlab.fe.tabulated.hardened_law``). The model:
+1010's own strain hardening, ``impactlab.materials.hardening.AISI_1010_HARDENING``, derived
+from SAE J1397's cold-drawn tensile properties; ``impactlab.fe.tabulated.hardened_law``). The model:
 docs/flexible.md. Which configuration explains the drops best, with the posterior of the rod's
 modal damping ratio, is the calibration of :mod:`impactlab.paper.calibration_report` (the
 report's next section).
@@ -101,8 +102,9 @@ FE_TABULATED = PhysicsConfig(
     True,
     None,
     "as 'flexible rod', the contact law tabulated from CalculiX indentations of the paper's "
-    "pair to 1000 delta_c with AISI 1010's strain hardening (S_y 305 MPa + 275 MPa eps_p^0.36, "
-    "the hardening of 1006 steel, Johnson & Cook 1983; fe/data/hardening); rate-independent "
+    "pair to 1000 delta_c with AISI 1010's own strain hardening (Swift law 470 MPa "
+    "(0.002 + eps_p)^0.070, derived from SAE J1397's cold-drawn S_y 305 and S_u 365 MPa by "
+    "Considere's criterion; fe/data/hardening); rate-independent "
     "(a rate-raised S_y would leave the curves' E*/S_y; no cited way scales them with rate)",
     law=HARDENED_LAW,
 )

@@ -92,8 +92,9 @@ def _fe_row(table: pd.DataFrame) -> list[Block]:
 
     return [
         Para(
-            "The flexible rod with the FE-tabulated law of a strain-hardening flat (nothing "
-            f"tuned, rate-independent): delta_p {v(fe, 'delta_p [um]')} um, "
+            "The flexible rod with the FE-tabulated law of a strain-hardening flat (AISI 1010's "
+            "own hardening, a Swift law derived from SAE J1397's cold-drawn yield and tensile "
+            f"strength; nothing tuned, rate-independent): delta_p {v(fe, 'delta_p [um]')} um, "
             f"{_ratio(table, fe, 'delta_p [um]')} times the measured depth (flexible rod with "
             f"the {LAW!r} law: {v(flex, 'delta_p [um]')} um); e {v(fe, 'e')} against the "
             f"measured {v(MEASURED, 'e')}; L_s {v(fe, 'L_s [um]')} um; {v(fe, 'contacts')} "
