@@ -10,6 +10,8 @@ import pytest
 import impactlab.fe as fe
 from impactlab.fe import cache
 from impactlab.fe.ccx import INSTALL_HINT, find_ccx, parse_dat, parse_sta
+from impactlab.fe.deck import write_deck
+from impactlab.fe.mesh import build_mesh
 from impactlab.fe.problem import make_problem
 from impactlab.fe.result import contact_radius_from_gap, zero_crossing
 from impactlab.materials import AISI_201, AISI_1010
@@ -57,6 +59,8 @@ def test_missing_ccx_message(monkeypatch, tmp_path):
         ),
         ({"delta_max": 1e-6, "sphere_hardening": [[305e6, 0.01]]}, "must start at plastic"),
         ({"delta_max": 1e-6, "flat_hardening": [1, 2, 3]}, "flat_hardening must be rows"),
+        ({"delta_max": 1e-6, "unload": "no"}, "unload must be True or False, got 'no'"),
+        ({"delta_max": 1e-6, "unload": 0}, "unload must be True or False, got 0"),
     ],
 )
 def test_bad_input_one_line(kwargs, pattern):
@@ -96,6 +100,23 @@ def test_cache_key_covers_every_input():
     assert cache.cache_key(a, "2.20") == cache.cache_key(dict(a), "2.20")
     assert cache.cache_key(a, "2.20") != cache.cache_key(b, "2.20")
     assert cache.cache_key(a, "2.20") != cache.cache_key(a, "2.21")
+    c = make_problem(AISI_1010, AISI_201, radius=R, delta_max=1e-6, unload=False).key_data()
+    assert cache.cache_key(a, "2.20") != cache.cache_key(c, "2.20")
+    assert "unload" not in a  # a complete run's key is what it was before the option
+
+
+def test_loading_only_deck_has_one_step():
+    """``unload=False``: the deck ends after the loading step; the loading step's text is the
+    complete run's."""
+    pytest.importorskip("gmsh", reason="the deck needs a mesh (the fe extra)")
+    full = make_problem(AISI_1010, AISI_201, radius=R, delta_max=1e-6)
+    only = make_problem(AISI_1010, AISI_201, radius=R, delta_max=1e-6, unload=False)
+    mesh = build_mesh(full.mesh_spec())
+    a = write_deck(mesh, full.deck_spec(mesh.spec))
+    b = write_deck(mesh, only.deck_spec(mesh.spec))
+    assert a.count("*STEP") == 2 and b.count("*STEP") == 1
+    assert "UNLOAD" not in b
+    assert b.split("*STEP", 1)[1] == a.split("*STEP", 2)[1]
 
 
 def test_parse_sta_counts_cutbacks():

@@ -89,18 +89,28 @@ def test_cache_hit_runs_no_ccx_and_is_equal(elastic, monkeypatch):
     assert again.residual_depth == res.residual_depth
 
 
-def test_repeatable_in_parallel(elastic):
-    """Two maxima in one call (two ccx processes): the delta_c run repeats bit for bit."""
+def test_repeatable_in_parallel_and_loading_only(elastic):
+    """Two maxima in one call (two ccx processes in parallel), each stopped at its maximum
+    (``unload=False``): the delta_c run repeats the complete run's loading bit for bit."""
     res, _, _ = elastic
     runs = indent(
         AISI_1010,
         delta_max=[0.5 * res.delta_max, res.delta_max],
+        unload=False,
         use_cache=False,
         workers=2,
         **ELASTIC,
     )
+    assert all(r.converged for r in runs), [r.status() for r in runs]
+    np.testing.assert_array_equal(runs[1].loading_delta, res.loading_delta)
     np.testing.assert_array_equal(runs[1].loading_force, res.loading_force)
+    np.testing.assert_array_equal(runs[1].contact_radius, res.contact_radius)
     assert runs[0].delta_max == pytest.approx(0.5 * res.delta_max)
+    assert runs[0].loading_delta[-1] == pytest.approx(0.5 * res.delta_max, rel=1e-12)
+    for r in runs:  # nothing of an unloading that did not run
+        assert r.unloading_force.size == 0 and r.dent_z.size == 0
+        assert np.isnan(r.residual_depth)
+        assert r.max_force == r.loading_force[-1]
 
 
 def test_truncated_run_is_marked_not_converged(elastic):
@@ -119,15 +129,27 @@ def test_truncated_run_is_marked_not_converged(elastic):
     assert bad.last_converged_delta < problem.delta_max
     assert np.isnan(bad.residual_depth)
     assert "NOT CONVERGED" in bad.status() and "too many cutbacks" in bad.status()
+    # the same output read as a loading-only run: not converged either (it stops before 1.0)
+    loading_only = make_problem(
+        AISI_1010, AISI_1010, delta_max=problem.delta_max, unload=False, **ELASTIC
+    )
+    deck = loading_only.deck_spec(loading_only.mesh_spec())
+    bad = assemble(loading_only, mesh, deck, out)
+    assert not bad.converged and bad.last_converged_delta < problem.delta_max
+    assert "NOT CONVERGED" in bad.status()
 
 
 def test_friction_stiffens_the_elastic_loading_slightly(elastic, tmp_path):
     """Coulomb friction (mu = 0.5) against the frictionless run of the same rigid sphere on
     the elastic flat (same mesh and increments): friction restrains the flat's surface from
     moving inwards under the sphere, so the force at a given interference is a little higher,
-    by a few per cent for nu = 0.3 (Spence's finite-friction Hertz problem); never lower."""
+    by a few per cent for nu = 0.3 (Spence's finite-friction Hertz problem); never lower.
+    Loading only: the frictional unloading (four fifths of the run's iterations) is not what
+    this checks."""
     res0, problem, _ = elastic
-    res = indent(AISI_1010, delta_max=problem.delta_max, mu=0.5, cache_dir=tmp_path, **ELASTIC)[0]
+    res = indent(
+        AISI_1010, delta_max=problem.delta_max, mu=0.5, unload=False, cache_dir=tmp_path, **ELASTIC
+    )[0]
     assert res.converged, res.status()
     np.testing.assert_allclose(res.loading_delta, res0.loading_delta, rtol=1e-12)
     ratio = res.loading_force[1:] / res0.loading_force[1:]
