@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import json
+import math
 import sys
 
 import numpy as np
@@ -160,34 +162,48 @@ def test_zero_crossing_and_contact_radius():
     assert INSTALL_HINT.startswith("CalculiX (ccx) was not found")
 
 
-def _cli(*args, env=None):
-    import os
-    import subprocess
-
-    full = {**os.environ, **(env or {})}
-    return subprocess.run(
-        [sys.executable, "-m", "impactlab", "fe", "indent", *args],
-        capture_output=True,
-        text=True,
-        env=full,
-        check=False,
-    )
-
-
-def test_cli_errors_are_one_line(tmp_path):
-    res = _cli("--max", "9 mm")
-    assert res.returncode == 2, res.stderr
-    assert "delta_max" in res.stderr and "sphere radius" in res.stderr
-    assert len(res.stderr.strip().splitlines()) == 1
+def test_cli_errors_are_one_line(tmp_path, cli_main, monkeypatch):
+    code, _, err = cli_main("fe", "indent", "--max", "9 mm")
+    assert code == 2, err
+    assert "delta_max" in err and "sphere radius" in err
+    assert len(err.strip().splitlines()) == 1
     table = tmp_path / "h.csv"
     table.write_text("stress,strain\n305e6,0\n300e6,0.1\n")
-    res = _cli("--max", "1 um", "--hardening", str(table))
-    assert res.returncode == 2
-    assert "flat_hardening must be monotonic" in res.stderr
-    res = _cli("--max", "1 um", env={"PATH": str(tmp_path), "IMPACTLAB_CCX": ""})
-    assert res.returncode == 2
-    assert "apt-get install calculix-ccx" in res.stderr
-    assert "Traceback" not in res.stderr
+    code, _, err = cli_main("fe", "indent", "--max", "1 um", "--hardening", str(table))
+    assert code == 2
+    assert "flat_hardening must be monotonic" in err
+    monkeypatch.setenv("PATH", str(tmp_path))
+    monkeypatch.setenv("IMPACTLAB_CCX", "")
+    code, _, err = cli_main("fe", "indent", "--max", "1 um")
+    assert code == 2
+    assert "apt-get install calculix-ccx" in err
+    assert "Traceback" not in err
+
+
+def test_cli_loading_only(cli_main, monkeypatch):
+    """``--loading-only`` passes ``unload=False``; its summary has no delta_r (null)."""
+    seen = {}
+
+    def fake_indent(flat, body, **kwargs):
+        seen.update(kwargs)
+        d = np.array([0.0, 0.5e-6, 1e-6])
+        none = np.empty(0)
+        res = fe.IndentationResult(
+            1e-6, d, 10.0 * d / 1e-6, d, none, none, math.nan, none, none, 0.4e-6, True,
+            1e-6, "", 2, 0, 6, 1.0, 100, 0.0, {},
+        )  # fmt: skip
+        return [res]
+
+    monkeypatch.setattr(fe, "indent", fake_indent)
+    monkeypatch.setattr(fe, "find_ccx", lambda: "ccx")
+    code, out, err = cli_main("fe", "indent", "--max", "1 um", "--loading-only", "--json")
+    assert code == 0, err
+    assert seen["unload"] is False
+    run = json.loads(out)["runs"][0]
+    assert run["residual_depth"]["value"] is None and run["unloading_force"] == []
+    code, _, err = cli_main("fe", "indent", "--max", "1 um", "--json")
+    assert code == 0, err
+    assert seen["unload"] is True
 
 
 def test_mesh_resolution_is_checked_against_the_requested_interference():
