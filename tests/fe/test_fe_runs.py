@@ -1,7 +1,9 @@
 """impactlab.fe against CalculiX: Hertz, force balance, cache, repeatability, plasticity.
 
 Skipped (with the reason) when ccx or gmsh is missing; impactlab's own modules are imported
-unconditionally, so a broken import fails. The smoke part takes about a minute on two cores;
+unconditionally, so a broken import fails. The smoke part is four ccx runs, about 110 s of
+CPU: one complete elastic run shared by the elastic checks, one call running the frictional
+loading twice in parallel (friction and repeatability), and the paper's pair to 10 delta_c;
 the long checks (finer meshes, 1000 delta_c: 3-15 minutes of ccx each) run only with
 ``IMPACTLAB_FE_LONG=1``, outside the test suite's time budget.
 """
