@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import json
+import math
 import sys
 
 import numpy as np
@@ -10,6 +12,8 @@ import pytest
 import impactlab.fe as fe
 from impactlab.fe import cache
 from impactlab.fe.ccx import INSTALL_HINT, find_ccx, parse_dat, parse_sta
+from impactlab.fe.deck import write_deck
+from impactlab.fe.mesh import build_mesh
 from impactlab.fe.problem import make_problem
 from impactlab.fe.result import contact_radius_from_gap, zero_crossing
 from impactlab.materials import AISI_201, AISI_1010
@@ -57,6 +61,8 @@ def test_missing_ccx_message(monkeypatch, tmp_path):
         ),
         ({"delta_max": 1e-6, "sphere_hardening": [[305e6, 0.01]]}, "must start at plastic"),
         ({"delta_max": 1e-6, "flat_hardening": [1, 2, 3]}, "flat_hardening must be rows"),
+        ({"delta_max": 1e-6, "unload": "no"}, "unload must be True or False, got 'no'"),
+        ({"delta_max": 1e-6, "unload": 0}, "unload must be True or False, got 0"),
     ],
 )
 def test_bad_input_one_line(kwargs, pattern):
@@ -96,6 +102,23 @@ def test_cache_key_covers_every_input():
     assert cache.cache_key(a, "2.20") == cache.cache_key(dict(a), "2.20")
     assert cache.cache_key(a, "2.20") != cache.cache_key(b, "2.20")
     assert cache.cache_key(a, "2.20") != cache.cache_key(a, "2.21")
+    c = make_problem(AISI_1010, AISI_201, radius=R, delta_max=1e-6, unload=False).key_data()
+    assert cache.cache_key(a, "2.20") != cache.cache_key(c, "2.20")
+    assert "unload" not in a  # a complete run's key is what it was before the option
+
+
+def test_loading_only_deck_has_one_step():
+    """``unload=False``: the deck ends after the loading step; the loading step's text is the
+    complete run's."""
+    pytest.importorskip("gmsh", reason="the deck needs a mesh (the fe extra)")
+    full = make_problem(AISI_1010, AISI_201, radius=R, delta_max=1e-6)
+    only = make_problem(AISI_1010, AISI_201, radius=R, delta_max=1e-6, unload=False)
+    mesh = build_mesh(full.mesh_spec())
+    a = write_deck(mesh, full.deck_spec(mesh.spec))
+    b = write_deck(mesh, only.deck_spec(mesh.spec))
+    assert a.count("*STEP") == 2 and b.count("*STEP") == 1
+    assert "UNLOAD" not in b
+    assert b.split("*STEP", 1)[1] == a.split("*STEP", 2)[1]
 
 
 def test_parse_sta_counts_cutbacks():
@@ -139,34 +162,48 @@ def test_zero_crossing_and_contact_radius():
     assert INSTALL_HINT.startswith("CalculiX (ccx) was not found")
 
 
-def _cli(*args, env=None):
-    import os
-    import subprocess
-
-    full = {**os.environ, **(env or {})}
-    return subprocess.run(
-        [sys.executable, "-m", "impactlab", "fe", "indent", *args],
-        capture_output=True,
-        text=True,
-        env=full,
-        check=False,
-    )
-
-
-def test_cli_errors_are_one_line(tmp_path):
-    res = _cli("--max", "9 mm")
-    assert res.returncode == 2, res.stderr
-    assert "delta_max" in res.stderr and "sphere radius" in res.stderr
-    assert len(res.stderr.strip().splitlines()) == 1
+def test_cli_errors_are_one_line(tmp_path, cli_main, monkeypatch):
+    code, _, err = cli_main("fe", "indent", "--max", "9 mm")
+    assert code == 2, err
+    assert "delta_max" in err and "sphere radius" in err
+    assert len(err.strip().splitlines()) == 1
     table = tmp_path / "h.csv"
     table.write_text("stress,strain\n305e6,0\n300e6,0.1\n")
-    res = _cli("--max", "1 um", "--hardening", str(table))
-    assert res.returncode == 2
-    assert "flat_hardening must be monotonic" in res.stderr
-    res = _cli("--max", "1 um", env={"PATH": str(tmp_path), "IMPACTLAB_CCX": ""})
-    assert res.returncode == 2
-    assert "apt-get install calculix-ccx" in res.stderr
-    assert "Traceback" not in res.stderr
+    code, _, err = cli_main("fe", "indent", "--max", "1 um", "--hardening", str(table))
+    assert code == 2
+    assert "flat_hardening must be monotonic" in err
+    monkeypatch.setenv("PATH", str(tmp_path))
+    monkeypatch.setenv("IMPACTLAB_CCX", "")
+    code, _, err = cli_main("fe", "indent", "--max", "1 um")
+    assert code == 2
+    assert "apt-get install calculix-ccx" in err
+    assert "Traceback" not in err
+
+
+def test_cli_loading_only(cli_main, monkeypatch):
+    """``--loading-only`` passes ``unload=False``; its summary has no delta_r (null)."""
+    seen = {}
+
+    def fake_indent(flat, body, **kwargs):
+        seen.update(kwargs)
+        d = np.array([0.0, 0.5e-6, 1e-6])
+        none = np.empty(0)
+        res = fe.IndentationResult(
+            1e-6, d, 10.0 * d / 1e-6, d, none, none, math.nan, none, none, 0.4e-6, True,
+            1e-6, "", 2, 0, 6, 1.0, 100, 0.0, {},
+        )  # fmt: skip
+        return [res]
+
+    monkeypatch.setattr(fe, "indent", fake_indent)
+    monkeypatch.setattr(fe, "find_ccx", lambda: "ccx")
+    code, out, err = cli_main("fe", "indent", "--max", "1 um", "--loading-only", "--json")
+    assert code == 0, err
+    assert seen["unload"] is False
+    run = json.loads(out)["runs"][0]
+    assert run["residual_depth"]["value"] is None and run["unloading_force"] == []
+    code, _, err = cli_main("fe", "indent", "--max", "1 um", "--json")
+    assert code == 0, err
+    assert seen["unload"] is True
 
 
 def test_mesh_resolution_is_checked_against_the_requested_interference():

@@ -1,7 +1,9 @@
 """impactlab.fe against CalculiX: Hertz, force balance, cache, repeatability, plasticity.
 
 Skipped (with the reason) when ccx or gmsh is missing; impactlab's own modules are imported
-unconditionally, so a broken import fails. The smoke part takes about a minute on two cores;
+unconditionally, so a broken import fails. The smoke part is four ccx runs, about 110 s of
+CPU: one complete elastic run shared by the elastic checks, one call running the frictional
+loading twice in parallel (friction and repeatability), and the paper's pair to 10 delta_c;
 the long checks (finer meshes, 1000 delta_c: 3-15 minutes of ccx each) run only with
 ``IMPACTLAB_FE_LONG=1``, outside the test suite's time budget.
 """
@@ -89,18 +91,33 @@ def test_cache_hit_runs_no_ccx_and_is_equal(elastic, monkeypatch):
     assert again.residual_depth == res.residual_depth
 
 
-def test_repeatable_in_parallel(elastic):
-    """Two maxima in one call (two ccx processes): the delta_c run repeats bit for bit."""
-    res, _, _ = elastic
-    runs = indent(
+@pytest.fixture(scope="module")
+def frictional(elastic):
+    """The elastic fixture's problem with Coulomb friction (mu = 0.5), stopped at delta_c
+    (``unload=False``), twice in one call: two ccx processes in parallel."""
+    _, problem, _ = elastic
+    return indent(
         AISI_1010,
-        delta_max=[0.5 * res.delta_max, res.delta_max],
+        delta_max=[problem.delta_max, problem.delta_max],
+        mu=0.5,
+        unload=False,
         use_cache=False,
         workers=2,
         **ELASTIC,
     )
-    np.testing.assert_array_equal(runs[1].loading_force, res.loading_force)
-    assert runs[0].delta_max == pytest.approx(0.5 * res.delta_max)
+
+
+def test_repeatable_in_parallel(frictional):
+    """The same run twice in one call, in two ccx processes at the same time: bit for bit."""
+    a, b = frictional
+    assert a.converged and b.converged, (a.status(), b.status())
+    np.testing.assert_array_equal(a.loading_delta, b.loading_delta)
+    np.testing.assert_array_equal(a.loading_force, b.loading_force)
+    np.testing.assert_array_equal(a.contact_radius, b.contact_radius)
+    for r in (a, b):  # nothing of an unloading that did not run
+        assert r.unloading_force.size == 0 and r.dent_z.size == 0
+        assert np.isnan(r.residual_depth)
+        assert r.max_force == r.loading_force[-1]
 
 
 def test_truncated_run_is_marked_not_converged(elastic):
@@ -119,15 +136,25 @@ def test_truncated_run_is_marked_not_converged(elastic):
     assert bad.last_converged_delta < problem.delta_max
     assert np.isnan(bad.residual_depth)
     assert "NOT CONVERGED" in bad.status() and "too many cutbacks" in bad.status()
+    # the same output read as a loading-only run: not converged either (it stops before 1.0)
+    loading_only = make_problem(
+        AISI_1010, AISI_1010, delta_max=problem.delta_max, unload=False, **ELASTIC
+    )
+    deck = loading_only.deck_spec(loading_only.mesh_spec())
+    bad = assemble(loading_only, mesh, deck, out)
+    assert not bad.converged and bad.last_converged_delta < problem.delta_max
+    assert "NOT CONVERGED" in bad.status()
 
 
-def test_friction_stiffens_the_elastic_loading_slightly(elastic, tmp_path):
+def test_friction_stiffens_the_elastic_loading_slightly(elastic, frictional):
     """Coulomb friction (mu = 0.5) against the frictionless run of the same rigid sphere on
     the elastic flat (same mesh and increments): friction restrains the flat's surface from
     moving inwards under the sphere, so the force at a given interference is a little higher,
-    by a few per cent for nu = 0.3 (Spence's finite-friction Hertz problem); never lower."""
-    res0, problem, _ = elastic
-    res = indent(AISI_1010, delta_max=problem.delta_max, mu=0.5, cache_dir=tmp_path, **ELASTIC)[0]
+    by a few per cent for nu = 0.3 (Spence's finite-friction Hertz problem); never lower.
+    Loading only: the frictional unloading (four fifths of a complete run's iterations) is not
+    what this checks."""
+    res0, _, _ = elastic
+    res = frictional[0]
     assert res.converged, res.status()
     np.testing.assert_allclose(res.loading_delta, res0.loading_delta, rtol=1e-12)
     ratio = res.loading_force[1:] / res0.loading_force[1:]

@@ -6,6 +6,7 @@ Examples::
     impactlab fe indent --max "5 um" --flat-E "69 GPa" --flat-nu 0.33 --flat-sy "276 MPa"
     impactlab fe indent --max "20 um" --sphere rigid --hardening flat.csv --json
     impactlab fe indent --max "50 um" --mesh 2 --plot --out fe-out/
+    impactlab fe indent --max "5 um" --mu 0.3 --loading-only     # no unloading step
 """
 
 from __future__ import annotations
@@ -159,13 +160,19 @@ def indent_cmd(
     ),
     mu: float = typer.Option(0.0, help="Friction coefficient of the contact."),
     mesh: int = typer.Option(1, "--mesh", help="Mesh level 1-4 (each doubles the elements)."),
+    loading_only: bool = typer.Option(
+        False,
+        "--loading-only",
+        help="Stop at each --max: the loading curve only (no unloading, delta_r or dent).",
+    ),
     workers: int | None = typer.Option(None, help="Parallel ccx processes (default: CPUs)."),
     no_cache: bool = typer.Option(False, "--no-cache", help="Run even if cached."),
     plot: bool = typer.Option(False, "--plot", help="Write a figure (fe_indent.png)."),
     out: Path | None = typer.Option(None, "--out", help="Folder for the figure."),
     as_json: bool = typer.Option(False, "--json", help="Machine-readable output (with curves)."),
 ) -> None:
-    """Indent a flat with a sphere to each --max and unload (CalculiX, axisymmetric)."""
+    """Indent a flat with a sphere to each --max and unload (CalculiX, axisymmetric; with
+    --loading-only the run stops at each --max)."""
     from impactlab.fe import find_ccx, indent
 
     R = positive(radius, "m", "--radius")
@@ -196,6 +203,7 @@ def indent_cmd(
         "flat_hardening": table,
         "mu": mu,
         "mesh_level": mesh,
+        "unload": not loading_only,
         "workers": workers,
         "use_cache": not no_cache,
         "progress": progress,

@@ -57,7 +57,7 @@ class DeckSpec:
     band_edges: tuple[float, ...]  # distances [m] splitting the flat's surface into bands
     band_stiffness: tuple[float, ...]  # penalty slope of each band [Pa/m]
     loading: StepControl
-    unloading: StepControl
+    unloading: StepControl | None  # None: the run stops at delta_max (no unloading step)
 
 
 def _f(x: float) -> str:
@@ -139,11 +139,14 @@ def write_deck(mesh: Mesh, spec: DeckSpec) -> str:
             parts.append(f"*FRICTION\n{_f(spec.mu)}, {_f(slope)}\n")
         parts.append(f"*CONTACT PAIR, INTERACTION=I{k}, TYPE=SURFACE TO SURFACE\nSF{k}, SSPH\n")
     parts.append(_amplitude("LOAD", spec.loading.path))
-    parts.append(_amplitude("UNLOAD", spec.unloading.path))
+    steps = [(spec.loading, "LOAD")]
+    if spec.unloading is not None:
+        parts.append(_amplitude("UNLOAD", spec.unloading.path))
+        steps.append((spec.unloading, "UNLOAD"))
     parts.append("*BOUNDARY\nNAXIS, 1, 1, 0.0\nNBOT, 1, 2, 0.0\n")
     if spec.sphere is None:
         parts.append("*BOUNDARY\nNTOP, 1, 1, 0.0\n")
-    for k, (step, amp) in enumerate(((spec.loading, "LOAD"), (spec.unloading, "UNLOAD"))):
+    for k, (step, amp) in enumerate(steps):
         parts.append("*STEP, NLGEOM, INC=100000\n*STATIC\n")
         parts.append(f"{_f(step.first)}, 1.0, {_f(step.smallest)}, {_f(step.largest)}\n")
         op = "" if k == 0 else ", OP=MOD"

@@ -95,6 +95,7 @@ class Problem:
     sphere_hardening: tuple[tuple[float, float], ...]
     mu: float
     mesh_level: int
+    unload: bool = True
 
     @property
     def pair(self) -> ContactPair:
@@ -127,12 +128,14 @@ class Problem:
         return min(LOW_FRACTION * self.delta_c, self.delta_max / 20.0)
 
     def key_data(self) -> dict[str, Any]:
-        """Every input as plain JSON-able values (the cache key is a hash of this)."""
+        """Every input as plain JSON-able values (the cache key is a hash of this); a
+        loading-only run (``unload=False``) adds ``"unload": False``, so that the keys of
+        complete runs stay what they were."""
 
         def mat(m: Material) -> list[float]:
             return [m.E, m.nu, m.yield_strength]
 
-        return {
+        data: dict[str, Any] = {
             "flat": mat(self.flat),
             "sphere_material": mat(self.sphere_material),
             "sphere": self.sphere,
@@ -146,6 +149,9 @@ class Problem:
             "flat_size": [FLAT_SIZE_CRITICAL, FLAT_SIZE_MAX],
             "increments": [INCREMENTS_PER_DECADE, UNLOADING_INCREMENTS, LOW_FRACTION],
         }
+        if not self.unload:
+            data["unload"] = False
+        return data
 
     def mesh_spec(self) -> MeshSpec:
         """The self-similar mesh for this run."""
@@ -163,7 +169,8 @@ class Problem:
         )
 
     def deck_spec(self, spec: MeshSpec) -> DeckSpec:
-        """Materials, contact bands with their penalty slopes, and the load path."""
+        """Materials, contact bands with their penalty slopes, and the load path (no
+        unloading step when ``unload`` is False)."""
         flat = MaterialCard("FLAT", self.flat.E, self.flat.nu, self.flat_hardening)
         sphere: MaterialCard | None = None
         if self.sphere != "rigid":
@@ -188,7 +195,7 @@ class Problem:
             band_edges=tuple(edges),
             band_stiffness=stiffness,
             loading=loading_path(self.delta_low / self.delta_max),
-            unloading=unloading_path(),
+            unloading=unloading_path() if self.unload else None,
         )
 
 
@@ -254,6 +261,7 @@ def make_problem(
     sphere_hardening: Any = None,
     mu: Any = 0.0,
     mesh_level: int = 1,
+    unload: Any = True,
 ) -> Problem:
     """Check every input and build the :class:`Problem` (one-line ValueErrors naming the
     parameter, its value and what is allowed)."""
@@ -276,6 +284,8 @@ def make_problem(
     check_finite("mu", mu_v)
     if isinstance(mesh_level, bool) or mesh_level not in MESH_GROWTH:
         raise ValueError(f"mesh_level must be one of {sorted(MESH_GROWTH)}, got {mesh_level!r}")
+    if not isinstance(unload, bool | np.bool_):
+        raise ValueError(f"unload must be True or False, got {unload!r}")
     if isinstance(flat_hardening, str) and flat_hardening == "elastic":
         fh: tuple[tuple[float, float], ...] = ()
     elif flat_hardening is None:
@@ -287,7 +297,9 @@ def make_problem(
         if sphere_hardening is None
         else check_hardening("sphere_hardening", sphere_hardening)
     )
-    problem = Problem(flat, sphere_material, sphere, R, d, fh, sh, mu_v, int(mesh_level))
+    problem = Problem(
+        flat, sphere_material, sphere, R, d, fh, sh, mu_v, int(mesh_level), bool(unload)
+    )
     check_resolution(problem.mesh_spec(), d)
     return problem
 

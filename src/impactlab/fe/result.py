@@ -26,11 +26,12 @@ class IndentationResult:
     deformed surfaces); unloading_delta, unloading_force: the unloading curve from delta_max;
     residual_depth: delta_r, the interference where the unloading force reaches zero [m]
     (nan when the run did not get there); dent_r, dent_z: the flat's surface after unloading,
-    radius [m] and height [m] (> 0: pile-up above the undeformed surface);
-    delta_c: the pair's critical interference [m]; converged: True when ccx finished both
-    steps; last_converged_delta: the interference of the last converged increment [m];
-    message: ccx's error when it stopped, else ""; increments, cutbacks, iterations: of both
-    steps; run_time: ccx's wall time [s]; n_elements: of the mesh; force_balance: the largest
+    radius [m] and height [m] (> 0: pile-up above the undeformed surface); a loading-only run
+    (``unload=False``) has empty unloading and dent arrays and a nan residual_depth;
+    delta_c: the pair's critical interference [m]; converged: True when ccx finished every
+    step of the run; last_converged_delta: the interference of the last converged increment
+    [m]; message: ccx's error when it stopped, else ""; increments, cutbacks, iterations: of
+    all steps; run_time: ccx's wall time [s]; n_elements: of the mesh; force_balance: the largest
     relative difference between the sphere's and the flat's reaction forces (0 for a
     perfectly balanced model); inputs: every input of the run (the cache key's data).
     """
@@ -102,9 +103,12 @@ def _amplitude(step: StepControl, t: np.ndarray) -> np.ndarray:
 
 
 def delta_at(
-    loading: StepControl, unloading: StepControl, t: np.ndarray, dmax: float
+    loading: StepControl, unloading: StepControl | None, t: np.ndarray, dmax: float
 ) -> np.ndarray:
-    """The prescribed interference [m] at total times t (step 1: 0..1, step 2: 1..2)."""
+    """The prescribed interference [m] at total times t (step 1: 0..1, step 2: 1..2; a run
+    without an unloading step has only step 1)."""
+    if unloading is None:
+        return np.asarray(_amplitude(loading, t) * dmax)
     out = np.where(t <= 1.0, _amplitude(loading, t), _amplitude(unloading, t - 1.0))
     return np.asarray(out * dmax)
 

@@ -51,14 +51,16 @@ def assemble(problem: Problem, mesh: Mesh, deck: DeckSpec, out: RunOutput) -> In
     for ti, di in zip(t[load], delta[load], strict=True):
         r, _, gap = surface_gap(dat, float(ti), mesh.nodes, sph_xy, problem.radius, float(di))
         radii.append(contact_radius_from_gap(r, gap - gap_tolerance(mesh, r)))
-    finished = out.returncode == 0 and t.size > 0 and math.isclose(t[-1], 2.0, rel_tol=1e-9)
+    unloads = deck.unloading is not None
+    end = 2.0 if unloads else 1.0
+    finished = out.returncode == 0 and t.size > 0 and math.isclose(t[-1], end, rel_tol=1e-9)
     dent_r = dent_z = final_gap = np.empty(0)
-    if t.size:
+    if t.size and unloads:
         r, z, final_gap = surface_gap(dat, float(t[-1]), mesh.nodes, sph_xy, problem.radius, 0.0)
         dent_r, dent_z = r, z
     ud = (
         np.concatenate([[dmax], delta[unload]])
-        if load.any() and t[load][-1] == 1.0
+        if unloads and load.any() and t[load][-1] == 1.0
         else delta[unload]
     )
     uf = (
@@ -117,6 +119,7 @@ def indent(
     sphere_hardening: Any = None,
     mu: Any = 0.0,
     mesh_level: int = 1,
+    unload: bool = True,
     workers: int | None = None,
     cache_dir: str | Path | None = None,
     use_cache: bool = True,
@@ -133,7 +136,11 @@ def indent(
     [Pa], true plastic strain), the first at strain 0 (default: elastic-perfectly plastic at
     S_y); ``flat_hardening="elastic"`` keeps the flat elastic. mu: Coulomb friction
     coefficient of the contact (0: frictionless). mesh_level: 1-4, each doubling the number
-    of elements. workers: parallel ccx processes (default ``os.cpu_count()``).
+    of elements. unload: False stops each run at delta_max (the loading curve and contact
+    radius only: no unloading curve, delta_r or dent), about half the iterations of a
+    frictionless run and a fifth of a frictional one, whose unloading is the costly part; the
+    loading curve is bit for bit the complete run's. workers: parallel ccx processes (default
+    ``os.cpu_count()``).
     cache_dir: where results are cached (``impactlab.fe.cache``);
     use_cache: False to always run. keep_files: a folder to keep the ccx files in (one
     sub-folder per maximum). progress: called as ``progress(index, result)`` as each run ends.
@@ -155,6 +162,7 @@ def indent(
             sphere_hardening=sphere_hardening,
             mu=mu,
             mesh_level=mesh_level,
+            unload=unload,
         )
         for d in check_maxima(delta_max)
     ]
