@@ -74,6 +74,7 @@ def _measure(part: str) -> dict[str, object]:
     stack: list[list[object]] = []  # [function, pass or "", start, child time]
     per_fn: dict[str, float] = defaultdict(float)
     per_pass: dict[str, float] = defaultdict(float)
+    per_fn_pass: dict[str, float] = defaultdict(float)
     calls: dict[str, int] = defaultdict(int)
 
     class _Listener(event.Listener):
@@ -99,6 +100,7 @@ def _measure(part: str) -> dict[str, object]:
             per_fn[str(key)] += own
             if step:
                 per_pass[str(step)] += own
+                per_fn_pass[f"{key} | {step}"] += own
 
     from numba.core import codegen
 
@@ -146,6 +148,7 @@ def _measure(part: str) -> dict[str, object]:
         "functions": dict(sorted(per_fn.items(), key=lambda kv: -kv[1])),
         "compiles": dict(calls),
         "passes": dict(sorted(per_pass.items(), key=lambda kv: -kv[1])),
+        "function_passes": dict(sorted(per_fn_pass.items(), key=lambda kv: -kv[1])[:60]),
         "llvm": dict(llvm),
         "llvm_per_function": dict(per_llvm),
         "multi_signature": multi,

@@ -28,7 +28,7 @@ from numba import njit
 from impactlab.contact.kernels import P_ESTAR
 from impactlab.dynamics.core.accumulate import track
 from impactlab.dynamics.core.history import record as record_row
-from impactlab.dynamics.kernels._jit import njit_internal, njit_no_refcount
+from impactlab.dynamics.kernels._jit import njit_internal, njit_llvm_inline, njit_no_refcount
 from impactlab.dynamics.kernels.dormand_prince import (
     A21,
     A31,
@@ -80,7 +80,7 @@ from impactlab.dynamics.kernels.layout import (
     S_VY,
 )
 from impactlab.dynamics.kernels.normal import geometry, normal_force
-from impactlab.dynamics.kernels.rhs import derivative, events_from
+from impactlab.dynamics.kernels.rhs import derivative, events_stage
 from impactlab.dynamics.kernels.roots import G_ROUNDOFF, THETA_TOL, illinois, past_root
 from impactlab.dynamics.kernels.step_control import growth
 from impactlab.dynamics.kernels.tuples import state_tuple
@@ -137,11 +137,18 @@ def _rhs_w_cold(law, p, fric, c, md, Y, w, sgn):
     return _rhs_w(law, p, fric, c, md, Y, w, sgn)
 
 
+@njit_llvm_inline
+def _rhs_w_stage(law, p, fric, c, md, Y, w, sgn):
+    """``_rhs_w`` for the stage loop of ``_step``: compiled once and inlined there by LLVM
+    (``kernels._jit.njit_llvm_inline``), not by numba."""
+    return _rhs_w(law, p, fric, c, md, Y, w, sgn)
+
+
 @njit(cache=True, inline="always", error_model="numpy")
 def _events(law, p, fric, c, md, evq, q):
     """Event tuple from the evaluated quantities ``evq`` (``rhs.events_from``)."""
     delta, _a, _b, Fn, Ft, vn, vs, kt = evq
-    return events_from(law, p, fric, c, md, delta, Fn, Ft, vn, vs, kt, q)
+    return events_stage(law, p, fric, c, md, delta, Fn, Ft, vn, vs, kt, q)
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -177,7 +184,7 @@ def _step(law, p, fric, c, md, Y, K, w, sgn, h, rtol, sc, tscale, Yn):
     # point (its node is 1: w + sgn h)
     for stage in range(1, 7):
         _point(Y, K, h, stage, Yn)
-        r, evq = _rhs_w(law, p, fric, c, md, Yn, w + sgn * _C[stage] * h, sgn)
+        r, evq = _rhs_w_stage(law, p, fric, c, md, Yn, w + sgn * _C[stage] * h, sgn)
         _put(K, stage, r)
     err = 0.0
     for i in range(NY):

@@ -10,7 +10,7 @@ from __future__ import annotations
 from numba import njit
 
 from impactlab.contact.kernels import residual_depth
-from impactlab.dynamics.kernels._jit import njit_no_refcount
+from impactlab.dynamics.kernels._jit import njit_llvm_inline, njit_no_refcount
 from impactlab.dynamics.kernels.friction import (
     friction_event,
     tangential_force,
@@ -107,6 +107,20 @@ def rhs_events(law, p, fric, c, md, y):
     delta, _a, _b, Fn, Ft, vn, vs, kt = ev
     der = derivative(fric, c, md, y, ev)
     return der, events_from(law, p, fric, c, md, delta, Fn, Ft, vn, vs, kt, y[S_Q]), ev
+
+
+@njit_llvm_inline
+def evaluate_stage(law, p, fric, c, md, y):
+    """``evaluate`` for the Dormand-Prince stage loop of ``integrator.dp_step``: compiled once
+    and inlined there by LLVM (``kernels._jit.njit_llvm_inline``), not by numba."""
+    return evaluate(law, p, fric, c, md, y)
+
+
+@njit_llvm_inline
+def events_stage(law, p, fric, c, md, delta, Fn, Ft, vn, vs, kt, q):
+    """``events_from`` for the steps' new points (``integrator.dp_step``, the w-steps):
+    compiled once and inlined by LLVM (``kernels._jit.njit_llvm_inline``)."""
+    return events_from(law, p, fric, c, md, delta, Fn, Ft, vn, vs, kt, q)
 
 
 @njit_no_refcount
