@@ -131,17 +131,18 @@ def _rhs_w(law, p, fric, c, md, Y, w, sgn):
     return (d[0] * s, d[1] * s, d[2] * s, d[3] * s, d[4] * s, d[5] * s, d[6] * s, d[7] * s, s), evq
 
 
-@njit_no_refcount
-def _rhs_w_cold(law, p, fric, c, md, Y, w, sgn):
-    """``_rhs_w`` compiled once, for the callers off the steps (see ``rhs.rhs_events_cold``)."""
-    return _rhs_w(law, p, fric, c, md, Y, w, sgn)
-
-
 @njit_llvm_inline
 def _rhs_w_stage(law, p, fric, c, md, Y, w, sgn):
     """``_rhs_w`` for the stage loop of ``_step``: compiled once and inlined there by LLVM
     (``kernels._jit.njit_llvm_inline``), not by numba."""
     return _rhs_w(law, p, fric, c, md, Y, w, sgn)
+
+
+@njit_no_refcount
+def _rhs_w_cold(law, p, fric, c, md, Y, w, sgn):
+    """``_rhs_w`` as a call, for the callers off the steps (see ``rhs.rhs_events_cold``):
+    ``_rhs_w_stage`` inlined by LLVM, so that numba compiles the body once."""
+    return _rhs_w_stage(law, p, fric, c, md, Y, w, sgn)
 
 
 @njit(cache=True, inline="always", error_model="numpy")

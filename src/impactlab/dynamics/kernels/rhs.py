@@ -125,21 +125,22 @@ def events_stage(law, p, fric, c, md, delta, Fn, Ft, vn, vs, kt, q):
 
 @njit_no_refcount
 def evaluate_cold(law, p, fric, c, md, y):
-    """``evaluate`` compiled once, for the callers off the step loop (see ``rhs_events_cold``)."""
-    return evaluate(law, p, fric, c, md, y)
+    """``evaluate`` as a call, for the callers off the step loop (see ``rhs_events_cold``):
+    ``evaluate_stage`` inlined by LLVM, so that numba compiles the force evaluation once."""
+    return evaluate_stage(law, p, fric, c, md, y)
 
 
 @njit_no_refcount
 def rhs_events_cold(law, p, fric, c, md, y):
     """``rhs_events`` compiled once as a function of its own, for the callers off the step loop
-    (first touch, restarts, the ends of the contact): each inlined copy of the force
-    evaluation costs seconds of compilation; only the Dormand-Prince stages inline it. The
-    force evaluation here is a call of ``evaluate_cold`` (not a copy of its own): the same
-    numbers, about 2 s less to compile."""
+    (first touch, restarts, the ends of the contact): each copy of the force evaluation that
+    numba inlines costs seconds of compilation; the Dormand-Prince stages have theirs inlined
+    by LLVM. The force evaluation here is a call of ``evaluate_cold`` (not a copy of its own):
+    the same numbers, about 2 s less to compile."""
     ev = evaluate_cold(law, p, fric, c, md, y)
     delta, _a, _b, Fn, Ft, vn, vs, kt = ev
     der = derivative(fric, c, md, y, ev)
-    return der, events_from(law, p, fric, c, md, delta, Fn, Ft, vn, vs, kt, y[S_Q]), ev
+    return der, events_stage(law, p, fric, c, md, delta, Fn, Ft, vn, vs, kt, y[S_Q]), ev
 
 
 @njit(cache=True, error_model="numpy")
