@@ -80,7 +80,7 @@ from impactlab.dynamics.kernels.layout import (
     S_VY,
 )
 from impactlab.dynamics.kernels.normal import geometry, normal_force
-from impactlab.dynamics.kernels.rhs import derivative, events_stage
+from impactlab.dynamics.kernels.rhs import derivative, events_from
 from impactlab.dynamics.kernels.roots import G_ROUNDOFF, THETA_TOL, illinois, past_root
 from impactlab.dynamics.kernels.step_control import growth
 from impactlab.dynamics.kernels.tuples import state_tuple
@@ -133,8 +133,8 @@ def _rhs_w(law, p, fric, c, md, Y, w, sgn):
 
 @njit_llvm_inline
 def _rhs_w_stage(law, p, fric, c, md, Y, w, sgn):
-    """``_rhs_w`` for the stage loop of ``_step``: compiled once and inlined there by LLVM
-    (``kernels._jit.njit_llvm_inline``), not by numba."""
+    """``_rhs_w`` for the stage loop of ``_step`` and for ``_rhs_w_cold``: compiled once by
+    numba and inlined into both by LLVM (``kernels._jit.njit_llvm_inline``)."""
     return _rhs_w(law, p, fric, c, md, Y, w, sgn)
 
 
@@ -149,7 +149,7 @@ def _rhs_w_cold(law, p, fric, c, md, Y, w, sgn):
 def _events(law, p, fric, c, md, evq, q):
     """Event tuple from the evaluated quantities ``evq`` (``rhs.events_from``)."""
     delta, _a, _b, Fn, Ft, vn, vs, kt = evq
-    return events_stage(law, p, fric, c, md, delta, Fn, Ft, vn, vs, kt, q)
+    return events_from(law, p, fric, c, md, delta, Fn, Ft, vn, vs, kt, q)
 
 
 @njit(cache=True, inline="always", error_model="numpy")

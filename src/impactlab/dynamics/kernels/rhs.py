@@ -111,16 +111,10 @@ def rhs_events(law, p, fric, c, md, y):
 
 @njit_llvm_inline
 def evaluate_stage(law, p, fric, c, md, y):
-    """``evaluate`` for the Dormand-Prince stage loop of ``integrator.dp_step``: compiled once
-    and inlined there by LLVM (``kernels._jit.njit_llvm_inline``), not by numba."""
+    """``evaluate`` for the Dormand-Prince stage loop of ``integrator.dp_step`` and for
+    ``evaluate_cold``: compiled once by numba and inlined into both by LLVM
+    (``kernels._jit.njit_llvm_inline``)."""
     return evaluate(law, p, fric, c, md, y)
-
-
-@njit_llvm_inline
-def events_stage(law, p, fric, c, md, delta, Fn, Ft, vn, vs, kt, q):
-    """``events_from`` for the steps' new points (``integrator.dp_step``, the w-steps):
-    compiled once and inlined by LLVM (``kernels._jit.njit_llvm_inline``)."""
-    return events_from(law, p, fric, c, md, delta, Fn, Ft, vn, vs, kt, q)
 
 
 @njit_no_refcount
@@ -134,13 +128,12 @@ def evaluate_cold(law, p, fric, c, md, y):
 def rhs_events_cold(law, p, fric, c, md, y):
     """``rhs_events`` compiled once as a function of its own, for the callers off the step loop
     (first touch, restarts, the ends of the contact): each copy of the force evaluation that
-    numba inlines costs seconds of compilation; the Dormand-Prince stages have theirs inlined
-    by LLVM. The force evaluation here is a call of ``evaluate_cold`` (not a copy of its own):
-    the same numbers, about 2 s less to compile."""
+    numba inlines costs seconds of compilation. The force evaluation here is a call of
+    ``evaluate_cold`` (not a copy of its own): the same numbers, about 2 s less to compile."""
     ev = evaluate_cold(law, p, fric, c, md, y)
     delta, _a, _b, Fn, Ft, vn, vs, kt = ev
     der = derivative(fric, c, md, y, ev)
-    return der, events_stage(law, p, fric, c, md, delta, Fn, Ft, vn, vs, kt, y[S_Q]), ev
+    return der, events_from(law, p, fric, c, md, delta, Fn, Ft, vn, vs, kt, y[S_Q]), ev
 
 
 @njit(cache=True, error_model="numpy")
