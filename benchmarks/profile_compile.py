@@ -11,7 +11,9 @@ measured one builds on, each in its own process (``rigid`` for ``partial_slip`` 
   functions compiled inside it) and how many signatures it was compiled for;
 - per compiler pass, its exclusive CPU seconds summed over the functions (type inference,
   lowering, the LLVM optimisation in ``NativeLowering``, ...);
-- every dispatcher of the package compiled for more than one type signature.
+- every dispatcher of the package compiled for more than one type signature;
+
+and writes, with ``--json``, also the 60 largest (function, compiler pass) times.
 
 Only the increment over the parts already in the cache is compiled, so the figures are those
 of the measured part alone. CPU seconds of this process (``time.process_time``).
