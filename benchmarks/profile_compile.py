@@ -11,7 +11,9 @@ measured one builds on, each in its own process (``rigid`` for ``partial_slip`` 
   functions compiled inside it) and how many signatures it was compiled for;
 - per compiler pass, its exclusive CPU seconds summed over the functions (type inference,
   lowering, the LLVM optimisation in ``NativeLowering``, ...);
-- every dispatcher of the package compiled for more than one type signature.
+- every dispatcher of the package compiled for more than one type signature;
+
+and writes, with ``--json``, also the 60 largest (function, compiler pass) times.
 
 Only the increment over the parts already in the cache is compiled, so the figures are those
 of the measured part alone. CPU seconds of this process (``time.process_time``).
@@ -74,6 +76,7 @@ def _measure(part: str) -> dict[str, object]:
     stack: list[list[object]] = []  # [function, pass or "", start, child time]
     per_fn: dict[str, float] = defaultdict(float)
     per_pass: dict[str, float] = defaultdict(float)
+    per_fn_pass: dict[str, float] = defaultdict(float)
     calls: dict[str, int] = defaultdict(int)
 
     class _Listener(event.Listener):
@@ -99,6 +102,7 @@ def _measure(part: str) -> dict[str, object]:
             per_fn[str(key)] += own
             if step:
                 per_pass[str(step)] += own
+                per_fn_pass[f"{key} | {step}"] += own
 
     from numba.core import codegen
 
@@ -146,6 +150,7 @@ def _measure(part: str) -> dict[str, object]:
         "functions": dict(sorted(per_fn.items(), key=lambda kv: -kv[1])),
         "compiles": dict(calls),
         "passes": dict(sorted(per_pass.items(), key=lambda kv: -kv[1])),
+        "function_passes": dict(sorted(per_fn_pass.items(), key=lambda kv: -kv[1])[:60]),
         "llvm": dict(llvm),
         "llvm_per_function": dict(per_llvm),
         "multi_signature": multi,

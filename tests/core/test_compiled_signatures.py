@@ -22,7 +22,7 @@ ROOT = Path(__file__).resolve().parents[2]
 ENGINE = ROOT / "src" / "impactlab" / "dynamics"
 FOLDERS = ("core", "slipcore", "flexcore", "kernels")
 MODULES = ("slip_batch.py", "drop_batch.py")
-COMPILERS = {"njit", "jit", "njit_no_refcount", "njit_internal"}
+COMPILERS = {"njit", "jit", "njit_no_refcount", "njit_internal", "njit_llvm_inline"}
 #: (file, callee, argument position): constants kept on purpose.
 ALLOWED = {("core/batch.py", "impact", 12)}
 

@@ -1,5 +1,5 @@
-"""Compiled functions without wrappers (``njit_internal``, or ``no_cpython_wrapper=True``)
-are never called from Python.
+"""Compiled functions without wrappers (``njit_internal``, ``njit_llvm_inline``, or
+``no_cpython_wrapper=True``) are never called from Python.
 
 numba compiles such a function without its Python- and C-callable wrappers (less compile
 time), and a call from Python then crashes the interpreter instead of raising an error. Only
@@ -16,7 +16,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
 FOLDERS = ("src", "tests", "benchmarks", "tools")
-COMPILERS = {"njit", "jit", "njit_no_refcount", "njit_internal"}
+COMPILERS = {"njit", "jit", "njit_no_refcount", "njit_internal", "njit_llvm_inline"}
 
 
 def _decorator_name(dec: ast.expr) -> str:
@@ -25,7 +25,7 @@ def _decorator_name(dec: ast.expr) -> str:
 
 
 def _without_wrapper(dec: ast.expr) -> bool:
-    if _decorator_name(dec) == "njit_internal":
+    if _decorator_name(dec) in ("njit_internal", "njit_llvm_inline"):
         return True
     return isinstance(dec, ast.Call) and any(
         k.arg == "no_cpython_wrapper" and isinstance(k.value, ast.Constant) and k.value.value

@@ -28,7 +28,7 @@ from numba import njit
 from impactlab.contact.kernels import P_ESTAR
 from impactlab.dynamics.core.accumulate import track
 from impactlab.dynamics.core.history import record as record_row
-from impactlab.dynamics.kernels._jit import njit_internal, njit_no_refcount
+from impactlab.dynamics.kernels._jit import njit_internal, njit_llvm_inline, njit_no_refcount
 from impactlab.dynamics.kernels.dormand_prince import (
     A21,
     A31,
@@ -131,10 +131,18 @@ def _rhs_w(law, p, fric, c, md, Y, w, sgn):
     return (d[0] * s, d[1] * s, d[2] * s, d[3] * s, d[4] * s, d[5] * s, d[6] * s, d[7] * s, s), evq
 
 
+@njit_llvm_inline
+def _rhs_w_stage(law, p, fric, c, md, Y, w, sgn):
+    """``_rhs_w`` for the stage loop of ``_step`` and for ``_rhs_w_cold``: compiled once by
+    numba and inlined into both by LLVM (``kernels._jit.njit_llvm_inline``)."""
+    return _rhs_w(law, p, fric, c, md, Y, w, sgn)
+
+
 @njit_no_refcount
 def _rhs_w_cold(law, p, fric, c, md, Y, w, sgn):
-    """``_rhs_w`` compiled once, for the callers off the steps (see ``rhs.rhs_events_cold``)."""
-    return _rhs_w(law, p, fric, c, md, Y, w, sgn)
+    """``_rhs_w`` as a call, for the callers off the steps (see ``rhs.rhs_events_cold``):
+    ``_rhs_w_stage`` inlined by LLVM, so that numba compiles the body once."""
+    return _rhs_w_stage(law, p, fric, c, md, Y, w, sgn)
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -177,7 +185,7 @@ def _step(law, p, fric, c, md, Y, K, w, sgn, h, rtol, sc, tscale, Yn):
     # point (its node is 1: w + sgn h)
     for stage in range(1, 7):
         _point(Y, K, h, stage, Yn)
-        r, evq = _rhs_w(law, p, fric, c, md, Yn, w + sgn * _C[stage] * h, sgn)
+        r, evq = _rhs_w_stage(law, p, fric, c, md, Yn, w + sgn * _C[stage] * h, sgn)
         _put(K, stage, r)
     err = 0.0
     for i in range(NY):

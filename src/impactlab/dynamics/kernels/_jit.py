@@ -23,6 +23,21 @@ the value instead: ``np.int64(FR_MINDLIN)``, or a ``False`` computed at run time
 (``out.shape[0] < 0``). The rigid batch alone keeps its literal ``False`` for the history: it
 folds the history code away, 1-3 % of its speed (``docs/engine/first-run.md``).
 ``tests/core/test_compiled_signatures.py`` checks the signatures a warm-up leaves in the cache.
+
+Inlined by LLVM, for the force evaluation in the Dormand-Prince stage loops: numba's
+``inline="always"`` inlines a function's Python IR into every caller, whose type inference and
+lowering then handle the callee's body again, and numba's type inference of a loop body grows
+faster than its size (it passes over the whole body again until no type changes).
+``njit_llvm_inline`` compiles the body once, without wrappers or reference counting, and sets
+numba's ``forceinline`` option (LLVM's ``alwaysinline`` attribute): LLVM inlines the compiled
+body into each caller when it optimises the caller with its callees, so the callers' machine
+code does the same operations as with ``inline="always"`` (the same bits:
+``tools/fingerprint.py``), and numba's front end handles the body once instead of once per
+stage loop (``docs/engine/first-run.md``). A function inlined this way is optimised with its
+own callees first, so LLVM may inline more of them into the caller than it would have: the
+event functions stay numba-inlined, since through ``njit_llvm_inline`` they brought the
+Mindlin slip test (``friction.mindlin_trial_rate``) into ``integrator.dp_step`` (a quarter more
+instructions, and slower).
 """
 
 from __future__ import annotations
@@ -38,6 +53,8 @@ _F = TypeVar("_F", bound=Callable[..., Any])
 _NO_REFCOUNT: dict[str, Any] = {"_nrt": False}
 #: numba's switches of the Python- and C-callable wrappers of a function.
 _NO_WRAPPERS: dict[str, Any] = {"no_cpython_wrapper": True, "no_cfunc_wrapper": True}
+#: numba's switch of LLVM's ``alwaysinline`` attribute for a compiled function.
+_LLVM_INLINE: dict[str, Any] = {"forceinline": True}
 
 
 def njit_no_refcount(fn: _F) -> _F:
@@ -49,3 +66,10 @@ def njit_internal(fn: _F) -> _F:
     """``njit(cache=True, error_model="numpy")`` without the Python- and C-callable wrappers,
     for a function that only compiled code calls (see module)."""
     return njit(cache=True, error_model="numpy", **_NO_WRAPPERS)(fn)  # type: ignore[no-any-return]
+
+
+def njit_llvm_inline(fn: _F) -> _F:
+    """``njit(cache=True, error_model="numpy")`` compiled once, inlined by LLVM into every
+    caller; without wrappers or reference counting (see module)."""
+    opts = {**_NO_WRAPPERS, **_NO_REFCOUNT, **_LLVM_INLINE}
+    return njit(cache=True, error_model="numpy", **opts)(fn)  # type: ignore[no-any-return]

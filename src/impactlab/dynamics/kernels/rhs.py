@@ -10,7 +10,7 @@ from __future__ import annotations
 from numba import njit
 
 from impactlab.contact.kernels import residual_depth
-from impactlab.dynamics.kernels._jit import njit_no_refcount
+from impactlab.dynamics.kernels._jit import njit_llvm_inline, njit_no_refcount
 from impactlab.dynamics.kernels.friction import (
     friction_event,
     tangential_force,
@@ -109,19 +109,27 @@ def rhs_events(law, p, fric, c, md, y):
     return der, events_from(law, p, fric, c, md, delta, Fn, Ft, vn, vs, kt, y[S_Q]), ev
 
 
+@njit_llvm_inline
+def evaluate_stage(law, p, fric, c, md, y):
+    """``evaluate`` for the Dormand-Prince stage loop of ``integrator.dp_step`` and for
+    ``evaluate_cold``: compiled once by numba and inlined into both by LLVM
+    (``kernels._jit.njit_llvm_inline``)."""
+    return evaluate(law, p, fric, c, md, y)
+
+
 @njit_no_refcount
 def evaluate_cold(law, p, fric, c, md, y):
-    """``evaluate`` compiled once, for the callers off the step loop (see ``rhs_events_cold``)."""
-    return evaluate(law, p, fric, c, md, y)
+    """``evaluate`` as a call, for the callers off the step loop (see ``rhs_events_cold``):
+    ``evaluate_stage`` inlined by LLVM, so that numba compiles the force evaluation once."""
+    return evaluate_stage(law, p, fric, c, md, y)
 
 
 @njit_no_refcount
 def rhs_events_cold(law, p, fric, c, md, y):
     """``rhs_events`` compiled once as a function of its own, for the callers off the step loop
-    (first touch, restarts, the ends of the contact): each inlined copy of the force
-    evaluation costs seconds of compilation; only the Dormand-Prince stages inline it. The
-    force evaluation here is a call of ``evaluate_cold`` (not a copy of its own): the same
-    numbers, about 2 s less to compile."""
+    (first touch, restarts, the ends of the contact): each copy of the force evaluation that
+    numba inlines costs seconds of compilation. The force evaluation here is a call of
+    ``evaluate_cold`` (not a copy of its own): the same numbers, about 2 s less to compile."""
     ev = evaluate_cold(law, p, fric, c, md, y)
     delta, _a, _b, Fn, Ft, vn, vs, kt = ev
     der = derivative(fric, c, md, y, ev)

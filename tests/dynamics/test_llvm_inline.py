@@ -1,0 +1,58 @@
+"""The force evaluation of the Dormand-Prince stage loops is compiled once by numba and inlined
+by LLVM (``kernels._jit.njit_llvm_inline``): the stage loops' machine code calls none of it."""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+import pytest
+from numba import njit
+from numba import types as nbt
+
+from impactlab.dynamics.core import approach, integrator
+from impactlab.dynamics.kernels import rhs
+from impactlab.dynamics.kernels.layout import NC, NM
+
+pytestmark = pytest.mark.perf  # the shape of the compiled engine, not its speed
+
+_A1 = nbt.Array(nbt.float64, 1, "C")
+_A2 = nbt.Array(nbt.float64, 2, "C")
+_F = nbt.float64
+_I = nbt.int64
+_C = nbt.UniTuple(_F, NC)
+_M = nbt.UniTuple(_F, NM)
+
+
+def _llvm_inlined(module: object) -> list[Any]:
+    """The module's compiled functions that LLVM inlines (by their options: their names are
+    never used from Python, ``tests/core/test_compiled_wrappers.py``)."""
+    return [f for f in vars(module).values() if getattr(f, "targetoptions", {}).get("forceinline")]
+
+
+@pytest.mark.parametrize("module", [rhs, approach])
+def test_stage_force_evaluation_is_inlined_by_llvm_without_wrappers_or_counts(
+    module: object,
+) -> None:
+    (fn,) = _llvm_inlined(module)  # one per form of the force evaluation
+    opts = fn.targetoptions
+    assert opts.get("_nrt") is False
+    assert opts.get("no_cpython_wrapper") is True and opts.get("no_cfunc_wrapper") is True
+
+
+def test_stage_loop_calls_no_force_evaluation() -> None:
+    """``dp_step`` compiled afresh (outside the cache, whose code numba does not show): LLVM
+    has inlined the force evaluation, and the loading curve's call inside it is still there
+    (so the pattern finds calls)."""
+    (stage,) = _llvm_inlined(rhs)
+    opts = {k: v for k, v in integrator.dp_step.targetoptions.items() if k != "nopython"}
+    opts["cache"] = False
+    step = njit(**opts)(integrator.dp_step.py_func)
+    sig = (_I, _A1, _I, _C, _M, _A1, _A2, _F, _F, _A1, _A1)
+    step.compile(sig)
+    ir = step.inspect_llvm(sig)
+    body = re.search(r"define [^\n]*dp_step[^\n]*\{(.*?)\n\}", ir, re.S)
+    assert body is not None
+    calls = re.findall(r"call [^\n]*@\"?(\w+)", body.group(1))
+    assert any("loading_force" in c for c in calls)
+    assert not [c for c in calls if stage.py_func.__name__ in c]
