@@ -27,12 +27,12 @@ DX = 1e-5
 def test_limits_without_division_equal_the_shared_limits(i, a_cells, fn, fd, ad) -> None:
     ar = a_cells * DX
     mu = 0.3
-    L0, Ld0 = limits(i, DX, mu, fn, fd, ar, ad)
-    L1, Ld1 = limits_inv(i, DX, mu, fn, fd, ar, ad, 1.0 / ar)
-    assert L1 >= 0.0
-    assert abs(L1 - L0) <= 4e-15 * mu * fn
+    lim0, rate0 = limits(i, DX, mu, fn, fd, ar, ad)
+    lim1, rate1 = limits_inv(i, DX, mu, fn, fd, ar, ad, 1.0 / ar)
+    assert lim1 >= 0.0
+    assert abs(lim1 - lim0) <= 4e-15 * mu * fn
     # the rate's scale: each of its two terms
-    assert abs(Ld1 - Ld0) <= 4e-15 * mu * (abs(fd) + 3.0 * fn * abs(ad) / ar)
+    assert abs(rate1 - rate0) <= 4e-15 * mu * (abs(fd) + 3.0 * fn * abs(ad) / ar)
 
 
 def test_limits_of_a_contact_sum_to_the_coulomb_limit() -> None:
