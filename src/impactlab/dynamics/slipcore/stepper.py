@@ -7,8 +7,8 @@ doi:10.1016/0771-050X(80)90013-3; Shampine 1986, doi:10.1090/S0025-5718-1986-081
 state here is an array whose length depends on the number of cells, and the dense output is
 formed for the entries in use only (the rigid-body state and the cells in contact; for an
 event function, the entries it reads). Events are located by ``bracket`` (Anderson-Bjorck
-regula falsi with a closing step) to a bracket of THETA_TOL, in one pass over the events with
-a sign change in the step (``_first_in``).
+regula falsi with a closing step) to a bracket of EVENT_BRACKET, in one pass over the events
+with a sign change in the step (``_first_in``).
 """
 
 from __future__ import annotations
@@ -27,7 +27,7 @@ from impactlab.dynamics.slipcore.layout import G_CELL, Y_CELL
 from impactlab.dynamics.slipcore.model import derivative, evaluate, event_value, events, n_in
 
 #: Closed bracket width of an event's location, in theta (a fraction of the step).
-THETA_TOL = 1e-13
+EVENT_BRACKET = 1e-13
 #: Events this close (in theta) count as simultaneous: the lowest index is applied first.
 SIMULTANEOUS = 1e-10
 
@@ -121,15 +121,15 @@ def event_at(k, theta, law, p, c, md, y0, Q, h, cm, sg, cp, yt):
 @njit_no_refcount
 def locate(k, lo, g0, hi, g1, law, p, c, md, y0, Q, h, cm, sg, cp, yt):
     """theta in (lo, hi] where event ``k`` fires (g(lo) = g0 <= 0 < g(hi) = g1), to a bracket
-    of THETA_TOL (``bracket``: regula falsi from the linear estimate with the Anderson-Bjorck
-    scaling and a closing step); returns the bracket end where g > 0."""
+    of EVENT_BRACKET (``bracket``: regula falsi from the linear estimate with the
+    Anderson-Bjorck scaling and a closing step); returns the bracket end where g > 0."""
     a, fa, b, fb = lo, g0, hi, g1
     side = 0  # +1: the g > 0 end moved last, -1: the other end, 0: neither yet
     for _ in range(60):
-        th = next_point(a, fa, b, fb, side, 0.5 * THETA_TOL)
+        th = next_point(a, fa, b, fb, side, 0.5 * EVENT_BRACKET)
         f = event_at(k, th, law, p, c, md, y0, Q, h, cm, sg, cp, yt)
         a, fa, b, fb, side = update(a, fa, b, fb, side, th, f)
-        if b - a <= THETA_TOL:
+        if b - a <= EVENT_BRACKET:
             break
     return b
 
