@@ -181,6 +181,13 @@ LITERATURE: tuple[Reference, ...] = (
         "10.1090/S0025-5718-1986-0815836-3",
     ),
     Reference(
+        "anderson-bjorck-1973",
+        "N. Anderson, A. Bjorck, A new high order method of regula falsi type for computing a "
+        "root of an equation, BIT 13 (1973) 253-264",
+        "10.1007/BF01951936",
+        note="the partial-slip engine's event search (dynamics.slipcore.bracket); DOI not checked",
+    ),
+    Reference(
         "kabsch-1976",
         "W. Kabsch, A solution for the best rotation to relate two sets of vectors, Acta Cryst. "
         "A32 (1976) 922-923",

@@ -97,6 +97,30 @@ def limits(i, dx, mu, Fn, Fd, ar, ad):
 
 
 @njit(cache=True, inline="always", error_model="numpy")
+def limits_inv(i, dx, mu, Fn, Fd, ar, ad, u):
+    """``limits`` without a division, from the reciprocal radius ``u`` = 1/``ar`` [1/m] that
+    the caller computes once for all cells: an inner cell (r = l + dx) has
+    g_i = 1.5 dx u - 0.5 (r^3 - l^3) u^3, dg_i/da = -1.5 dx u^2 + 1.5 (r^3 - l^3) u^4; the edge
+    cell (r = a), with x = (a - l)/a, g_i = x^2 (1.5 - 0.5 x), dg_i/da = 1.5 x (1 - x)(2 - x) u
+    (the same g_i, free of the cancellation of its O(x) terms). Equal to ``limits`` to
+    round-off; the partial-slip engine's form (the flexible rod keeps ``limits``)."""
+    lo = i * dx
+    if not (lo < ar and Fn > 0.0):
+        return 0.0, 0.0
+    if lo + dx > ar:  # the edge cell
+        x = (ar - lo) * u
+        g = x * x * (1.5 - 0.5 * x)
+        dg = 1.5 * x * (1.0 - x) * (2.0 - x) * u
+    else:
+        r = lo + dx
+        r3 = r * r * r - lo * lo * lo
+        u2 = u * u
+        g = max(0.0, u * (1.5 * dx - 0.5 * r3 * u2))  # >= 0 despite round-off
+        dg = u2 * (1.5 * r3 * u2 - 1.5 * dx)
+    return mu * Fn * g, mu * (Fd * g + Fn * dg * ad)
+
+
+@njit(cache=True, inline="always", error_model="numpy")
 def cell_switch(i, cm, sg, cp, limit, rate, fi, ar, ad, vs):
     """Event function of cell ``i`` (its limit ``limit`` [N], the limit's rate ``rate`` [N/s], its
     force ``fi`` [N]): STICK -> SLIP when |f| passes its limit (relative hysteresis SLIP_HYST),

@@ -15,9 +15,15 @@ from numba import njit
 from impactlab.bodies.layout import BP_KIND, KIND_ROD
 from impactlab.contact.kernels import P_ESTAR
 from impactlab.dynamics.kernels._jit import njit_internal
-from impactlab.dynamics.kernels.buffers import copy_into
-from impactlab.dynamics.kernels.cells import CP_DX, CP_FTOL, CP_G1, CP_VTOL, STEP_PAST, birth
-from impactlab.dynamics.kernels.dormand_prince import dense
+from impactlab.dynamics.kernels.cells import (
+    CP_DX,
+    CP_FTOL,
+    CP_G1,
+    CP_VTOL,
+    STEP_PAST,
+    birth,
+    n_in,
+)
 from impactlab.dynamics.kernels.layout import (
     A_DMAX,
     A_EMIN,
@@ -70,9 +76,15 @@ from impactlab.dynamics.kernels.status import (
 from impactlab.dynamics.kernels.step_control import power_growth
 from impactlab.dynamics.kernels.transitions import without_switch
 from impactlab.dynamics.slipcore.layout import CP_FSC, EXTRA, G_CELL, NCP, Y_CELL
-from impactlab.dynamics.slipcore.model import boundary_horizon, evaluate, events
+from impactlab.dynamics.slipcore.model import boundary_horizon, derivative, evaluate, events
 from impactlab.dynamics.slipcore.outputs import A_JUMP, NA, record, separation, track
-from impactlab.dynamics.slipcore.stepper import first_event, integrate_to, rhs, step
+from impactlab.dynamics.slipcore.stepper import (
+    dense_active,
+    first_event,
+    integrate_to,
+    rhs,
+    step,
+)
 from impactlab.dynamics.slipcore.switches import (
     apply_cell_event,
     normal_switch,
@@ -105,10 +117,10 @@ def _normal_event(k, law, p, c, md, y, ev, acc):
 
 
 @njit_internal
-def _switch(k, law, p, c, md, y, cm, sg, cp, W, acc, K, gold):
-    """Stop at the event ``k`` or switch and restart at ``y`` (derivative into ``K[0]``, event
-    functions into ``gold``). Returns (status or _GO_ON, constants, mode)."""
-    ev = evaluate(law, p, c, md, y, cm, sg, cp, W)
+def _switch(k, law, p, c, md, y, cm, sg, cp, W, ev, acc, K, gold):
+    """Stop at the event ``k`` or switch and restart at ``y`` (its quantities ``ev``, ``W``
+    filled there; derivative into ``K[0]``, event functions into ``gold``). Returns (status or
+    _GO_ON, constants, mode)."""
     ft_before = ev[4]
     if k <= EV_SWITCH:
         st, c, md = _normal_event(k, law, p, c, md, y, ev, acc)
@@ -116,9 +128,10 @@ def _switch(k, law, p, c, md, y, cm, sg, cp, W, acc, K, gold):
             return st, c, md
     else:
         apply_cell_event(k, y, cm, sg, cp, c[C_MU], p[P_ESTAR], W, ev)
-    if not settle(law, p, c, md, y, cm, sg, cp, W, c[C_MU]):
+    settled, ev = settle(law, p, c, md, y, cm, sg, cp, W, c[C_MU])
+    if not settled:
         return ST_TOO_MANY_EVENTS, c, md
-    ev = rhs(law, p, c, md, y, cm, sg, cp, W, K[0])
+    derivative(c, y, cm, sg, cp, W, ev, K[0])  # rhs at y: ev and W are those at y
     acc[A_JUMP] = max(acc[A_JUMP], abs(ev[4] - ft_before))
     events(c, md, cm, sg, cp, W, ev, gold)
     if gold[EV_SEP] > 0.0:  # a switch located at the separation itself: that is the end
@@ -126,13 +139,23 @@ def _switch(k, law, p, c, md, y, cm, sg, cp, W, acc, K, gold):
     return _GO_ON, c, md
 
 
+@njit(cache=True, inline="always", error_model="numpy")
+def copy_active(dst, src, n):
+    """The first ``n`` entries of ``src`` into ``dst`` (the rigid-body state and the cells in
+    contact; the entries of the cells out of contact are never read, and a cell is born with
+    its entry set)."""
+    for i in range(n):
+        dst[i] = src[i]
+
+
 @njit_internal
 def _dense_rows(hist, nh, t, h, theta, law, p, c, md, y, cm, sg, cp, W, Q, yt):
     """History rows at a quarter, half and three quarters of the step from ``y`` (size ``h``,
     dense-output coefficients ``Q``) that lie before ``theta``; returns (hist, rows)."""
+    nact = Y_CELL + n_in(cm)
     for j in range(1, 4):
         if j / 4.0 < theta:
-            dense(y, h, j / 4.0, Q, yt)
+            dense_active(y, h, j / 4.0, Q, yt, nact)
             hist, nh = record(hist, nh, t + j * h / 4.0, law, p, c, md, yt, cm, sg, cp, W)
     return hist, nh
 
@@ -165,6 +188,7 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
         hz = boundary_horizon(cm, cp, ar0, ad0, add)
         h = min(hc, tstar, STEP_PAST * hz + hmin) if hz > 0.0 else min(hc, tstar)
         err, ev = step(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew)
+        nact = Y_CELL + n_in(cm)  # the entries in use: the rigid-body state, the cells in contact
         if not (err <= 1.0):
             hc = h * (max(0.2, power_growth(err)) if math.isfinite(err) else 0.25)
             if hc < hmin:
@@ -181,7 +205,7 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
             )
             tend = t + theta * h
         else:
-            copy_into(yev, ynew)
+            copy_active(yev, ynew, nact)
             tend = t + h
         if k >= 0 or rec:  # else W and ev still hold the step's last stage, at ynew
             ev = evaluate(law, p, c, md, yev, cm, sg, cp, W)
@@ -191,23 +215,23 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
         t_last, ad_last = t, ad0
         ar0, ad0 = ev[7], ev[8]
         t = tend
-        copy_into(y, yev)
+        copy_active(y, yev, nact)
         hc = h * (10.0 if err == 0.0 else min(10.0, power_growth(err)))
         if rec and k < 0:
             hist, nh = record(hist, nh, t, law, p, c, md, y, cm, sg, cp, W)
         if k < 0:
-            copy_into(K[0], K[6])
+            copy_active(K[0], K[6], nact)
             if release_passed(y, cm, cp, ev[7], K[0]):
                 ev = evaluate(law, p, c, md, y, cm, sg, cp, W)
                 events(c, md, cm, sg, cp, W, ev, gold)
             else:
-                copy_into(gold, gnew)
+                gold, gnew = gnew, gold
             continue
         nevents += 1
         if nevents > MAX_EVENTS:
             status = ST_TOO_MANY_EVENTS
             break
-        st, c, md = _switch(k, law, p, c, md, y, cm, sg, cp, W, acc, K, gold)
+        st, c, md = _switch(k, law, p, c, md, y, cm, sg, cp, W, ev, acc, K, gold)
         if rec:  # the row at an event holds the state after the switch (F_t is continuous)
             hist, nh = record(hist, nh, t, law, p, c, md, y, cm, sg, cp, W)
         if st != _GO_ON:

@@ -23,9 +23,7 @@ from __future__ import annotations
 
 import math
 
-from numba import njit
-
-from impactlab.dynamics.kernels._jit import njit_internal
+from impactlab.dynamics.kernels._jit import njit_internal, njit_llvm_inline, njit_no_refcount
 from impactlab.dynamics.kernels.cells import (
     CP_DX,
     CP_G1,
@@ -34,7 +32,7 @@ from impactlab.dynamics.kernels.cells import (
     boundary_time,
     cell_length,
     cell_switch,
-    limits,
+    limits_inv,
     n_in,
     stick_rate,
 )
@@ -73,7 +71,7 @@ from impactlab.dynamics.kernels.normal import (
 from impactlab.dynamics.slipcore.layout import G_BIRTH, G_CELL, G_REL, Y_CELL
 
 
-@njit(cache=True, error_model="numpy")
+@njit_no_refcount
 def evaluate(law, p, c, md, y, cm, sg, cp, W):
     """Contact quantities at state ``y``: fills W[0] = limits L_i, W[1] = dL_i/dt and W[2] = the
     cell forces f_i (OUT: 0, SLIP: s_i L_i) and returns
@@ -91,8 +89,9 @@ def evaluate(law, p, c, md, y, cm, sg, cp, W):
     dx = cp[CP_DX]
     mu = c[C_MU]
     Ft = 0.0
+    u = 1.0 / ar if ar > 0.0 else 0.0
     for i in range(nin):
-        L, Ld = limits(i, dx, mu, Fn, Fd, ar, ad)
+        L, Ld = limits_inv(i, dx, mu, Fn, Fd, ar, ad, u)
         W[0, i] = L
         W[1, i] = Ld
         f = sg[i] * L if cm[i] == SLIP else y[Y_CELL + i]
@@ -101,7 +100,7 @@ def evaluate(law, p, c, md, y, cm, sg, cp, W):
     return delta, a, b, Fn, Ft, vn, vs, ar, ad, nin
 
 
-@njit(cache=True, error_model="numpy")
+@njit_no_refcount
 def derivative(c, y, cm, sg, cp, W, ev, dy):
     """The time derivative of ``y`` into ``dy`` from the quantities ``ev`` of ``evaluate``."""
     _delta, a, b, Fn, Ft, vn, vs, ar, ad, nin = ev
@@ -121,14 +120,14 @@ def derivative(c, y, cm, sg, cp, W, ev, dy):
             dy[Y_CELL + i] = sg[i] * W[1, i]
 
 
-@njit_internal
+@njit_llvm_inline
 def cell_event(i, cm, sg, cp, W, ar, ad, vs):
     """Event function of cell ``i``: STICK -> SLIP when |f| passes its limit (relative
     hysteresis SLIP_HYST), SLIP -> STICK when the limit outruns the stick trial."""
     return cell_switch(i, cm, sg, cp, W[0, i], W[1, i], W[2, i], ar, ad, vs)
 
 
-@njit(cache=True, error_model="numpy")
+@njit_no_refcount
 def events(c, md, cm, sg, cp, W, ev, g):
     """All event functions into ``g`` (fire when g goes from <= 0 to > 0): the core's normal
     events (EV_*), the birth and release of the outermost cell, and one per cell."""
@@ -153,7 +152,7 @@ def events(c, md, cm, sg, cp, W, ev, g):
         g[G_CELL + i] = cell_event(i, cm, sg, cp, W, ar, ad, vs)
 
 
-@njit(cache=True, error_model="numpy")
+@njit_no_refcount
 def event_value(k, law, p, c, md, y, cm, sg, cp):
     """Event function ``k`` alone at state ``y``: the value ``events`` gives it, from only the
     quantities it needs (the normal contact, and for a cell's event that cell's limit and force,
@@ -191,7 +190,7 @@ def event_value(k, law, p, c, md, y, cm, sg, cp):
     ddel = -vn
     Fd = dforce_ddelta(law, p, md, delta, Fn) * ddel
     ad = dradius_ddelta(law, p, md, delta) * ddel
-    L, Ld = limits(i, dx, c[C_MU], Fn, Fd, ar, ad)
+    L, Ld = limits_inv(i, dx, c[C_MU], Fn, Fd, ar, ad, 1.0 / ar if ar > 0.0 else 0.0)
     f = sg[i] * L if cm[i] == SLIP else y[Y_CELL + i]
     return cell_switch(i, cm, sg, cp, L, Ld, f, ar, ad, vs)
 

@@ -1,12 +1,14 @@
 """Dormand-Prince 5(4) on the partial-slip state array: one step, the dense output, event
 location and the error-controlled integration over an exact interval.
 
-The tableau, the stage point, the error sum, Shampine's dense output, the Illinois update and
-the step-size factor are the shared kernels' (``impactlab.dynamics.kernels``: Dormand & Prince
-1980, doi:10.1016/0771-050X(80)90013-3; Shampine 1986, doi:10.1090/S0025-5718-1986-0815836-3);
-the state here is an array whose length depends on the number of cells. The event search
-stops at a bracket of 1e-13 without the round-off probe of the other engines (the partial-slip
-results were verified with it; the probe moves event times by up to the bracket width).
+The tableau, the stage point, Shampine's dense output and the step-size factor are the shared
+kernels' (``impactlab.dynamics.kernels``: Dormand & Prince 1980,
+doi:10.1016/0771-050X(80)90013-3; Shampine 1986, doi:10.1090/S0025-5718-1986-0815836-3); the
+state here is an array whose length depends on the number of cells, and the dense output is
+formed for the entries in use only (the rigid-body state and the cells in contact; for an
+event function, the entries it reads). Events are located by ``bracket`` (Anderson-Bjorck
+regula falsi with a closing step) to a bracket of EVENT_BRACKET, in one pass over the events
+with a sign change in the step (``_first_in``).
 """
 
 from __future__ import annotations
@@ -15,17 +17,22 @@ import math
 
 from numba import njit
 
-from impactlab.dynamics.kernels._jit import njit_internal
+from impactlab.dynamics.kernels._jit import njit_llvm_inline, njit_no_refcount
 from impactlab.dynamics.kernels.buffers import copy_into
 from impactlab.dynamics.kernels.cells import SLIP
-from impactlab.dynamics.kernels.dormand_prince import DP_E, dense, dense_coeffs, stage_point
-from impactlab.dynamics.kernels.roots import illinois
+from impactlab.dynamics.kernels.dormand_prince import DENSE_P, DP_E, stage_point
 from impactlab.dynamics.kernels.step_control import power_growth
-from impactlab.dynamics.slipcore.layout import Y_CELL
+from impactlab.dynamics.slipcore.bracket import next_point, update
+from impactlab.dynamics.slipcore.layout import G_CELL, Y_CELL
 from impactlab.dynamics.slipcore.model import derivative, evaluate, event_value, events, n_in
 
+#: Closed bracket width of an event's location, in theta (a fraction of the step).
+EVENT_BRACKET = 1e-13
+#: Events this close (in theta) count as simultaneous: the lowest index is applied first.
+SIMULTANEOUS = 1e-10
 
-@njit(cache=True, error_model="numpy")
+
+@njit_no_refcount
 def rhs(law, p, c, md, y, cm, sg, cp, W, dy):
     """Derivative of ``y`` into ``dy``; returns the evaluated quantities."""
     ev = evaluate(law, p, c, md, y, cm, sg, cp, W)
@@ -53,7 +60,7 @@ def error_sum(y, ynew, K, h, rtol, sc, cm):
     return err, count
 
 
-@njit(cache=True, error_model="numpy")
+@njit_no_refcount
 def step(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew):
     """One step of size ``h`` from ``y`` (``K[0]``: the derivative at ``y``); fills ``K[1:7]``
     and ``ynew`` (FSAL). Returns (RMS error norm over the rigid state and the cells in contact,
@@ -68,59 +75,118 @@ def step(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew):
     return math.sqrt(err / count), ev
 
 
-@njit_internal
-def event_at(k, law, p, c, md, y, cm, sg, cp, W, g):
-    """Event function ``k`` at state ``y`` (``model.event_value``: that function alone, the
-    value ``events`` gives it; ``W`` and ``g`` are left as they are)."""
-    return event_value(k, law, p, c, md, y, cm, sg, cp)
+@njit(cache=True, inline="always", error_model="numpy")
+def dense_coeffs_active(K, Q, n):
+    """``dormand_prince.dense_coeffs`` for the first ``n`` components only (the rigid-body
+    state and the cells in contact; the same sums, the same bits)."""
+    for i in range(n):
+        for j in range(4):
+            s = 0.0
+            for st in range(7):
+                s += K[st, i] * DENSE_P[st, j]
+            Q[i, j] = s
 
 
-@njit(cache=True, error_model="numpy")
-def locate(k, lo, g0, hi, g1, law, p, c, md, y0, Q, h, cm, sg, cp, W, g, yt):
-    """theta in (lo, hi] where event ``k`` fires (g(lo) = g0 <= 0 < g(hi) = g1): Illinois regula
-    falsi on the dense output; returns the bracket end where g > 0."""
+@njit(cache=True, inline="always", error_model="numpy")
+def _dense_entry(y0, h, i, theta, t2, t3, t4, Q, out):
+    """Entry ``i`` of ``dormand_prince.dense`` (the same expression, the same bits)."""
+    out[i] = y0[i] + h * (Q[i, 0] * theta + Q[i, 1] * t2 + Q[i, 2] * t3 + Q[i, 3] * t4)
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def dense_active(y0, h, theta, Q, out, n):
+    """The dense output at t0 + theta h of the first ``n`` components."""
+    t2 = theta * theta
+    t3 = t2 * theta
+    t4 = t3 * theta
+    for i in range(n):
+        _dense_entry(y0, h, i, theta, t2, t3, t4, Q, out)
+
+
+@njit_llvm_inline
+def event_at(k, theta, law, p, c, md, y0, Q, h, cm, sg, cp, yt):
+    """Event function ``k`` on the dense output at ``theta`` (``model.event_value``): only the
+    entries it reads are interpolated (the rigid-body state and, for a cell's event, that
+    cell's force)."""
+    t2 = theta * theta
+    t3 = t2 * theta
+    t4 = t3 * theta
+    for i in range(Y_CELL):
+        _dense_entry(y0, h, i, theta, t2, t3, t4, Q, yt)
+    if k >= G_CELL:
+        _dense_entry(y0, h, Y_CELL + k - G_CELL, theta, t2, t3, t4, Q, yt)
+    return event_value(k, law, p, c, md, yt, cm, sg, cp)
+
+
+@njit_no_refcount
+def locate(k, lo, g0, hi, g1, law, p, c, md, y0, Q, h, cm, sg, cp, yt):
+    """theta in (lo, hi] where event ``k`` fires (g(lo) = g0 <= 0 < g(hi) = g1), to a bracket
+    of EVENT_BRACKET (``bracket``: regula falsi from the linear estimate with the
+    Anderson-Bjorck scaling and a closing step); returns the bracket end where g > 0."""
     a, fa, b, fb = lo, g0, hi, g1
-    side = 0
+    side = 0  # +1: the g > 0 end moved last, -1: the other end, 0: neither yet
     for _ in range(60):
-        th = (a * fb - b * fa) / (fb - fa)
-        if not (a < th < b):
-            th = 0.5 * (a + b)
-        dense(y0, h, th, Q, yt)
-        f = event_at(k, law, p, c, md, yt, cm, sg, cp, W, g)
-        a, fa, b, fb, side = illinois(a, fa, b, fb, side, th, f)
-        if b - a <= 1e-13:
+        th = next_point(a, fa, b, fb, side, 0.5 * EVENT_BRACKET)
+        f = event_at(k, th, law, p, c, md, y0, Q, h, cm, sg, cp, yt)
+        a, fa, b, fb, side = update(a, fa, b, fb, side, th, f)
+        if b - a <= EVENT_BRACKET:
             break
     return b
 
 
-@njit(cache=True, error_model="numpy")
+@njit_no_refcount
+def _first_in(lo, ga, gb, law, p, c, md, y0, Q, h, cm, sg, cp, yt):
+    """(event, theta) of the earliest event with a sign change over [lo, lo + 1/2] (``ga``,
+    ``gb``: the event functions at its ends; -1, 2.0: none). One search: the event with the
+    earliest linear estimate is located first; every other event with a sign change is then
+    evaluated at that root, and located only where it has already fired there (or, for a
+    lower index, fires within SIMULTANEOUS after it: simultaneous events go to the lowest
+    index, normal events before birth and release before the cells)."""
+    best = -1
+    est = 2.0
+    for k in range(ga.shape[0]):
+        if ga[k] <= 0.0 and gb[k] > 0.0:
+            e = lo + 0.5 * ga[k] / (ga[k] - gb[k])
+            if e < est:
+                est = e
+                best = k
+    if best < 0:
+        return best, 2.0
+    hi = lo + 0.5
+    theta = locate(best, lo, ga[best], hi, gb[best], law, p, c, md, y0, Q, h, cm, sg, cp, yt)
+    for k in range(ga.shape[0]):
+        if k == best or not (ga[k] <= 0.0 and gb[k] > 0.0):
+            continue
+        f = event_at(k, theta, law, p, c, md, y0, Q, h, cm, sg, cp, yt)
+        if f > 0.0:  # fired at or before theta
+            th = locate(k, lo, ga[k], theta, f, law, p, c, md, y0, Q, h, cm, sg, cp, yt)
+            if th < theta - SIMULTANEOUS or k < best:
+                theta, best = th, k
+        elif k < best:
+            t1 = min(theta + SIMULTANEOUS, hi)
+            f1 = event_at(k, t1, law, p, c, md, y0, Q, h, cm, sg, cp, yt) if t1 < hi else gb[k]
+            if f1 > 0.0:  # fires within SIMULTANEOUS after theta: the lower index wins
+                theta = locate(k, theta, f, t1, f1, law, p, c, md, y0, Q, h, cm, sg, cp, yt)
+                best = k
+    return best, theta
+
+
+@njit_no_refcount
 def first_event(gold, gnew, gmid, law, p, c, md, y0, K, Q, h, cm, sg, cp, Wm, yt):
     """(event, theta) of the earliest event inside the accepted step (-1, 2.0: none). The
     event functions are also evaluated at the step's midpoint (dense output, into ``gmid``;
     ``Wm``: scratch): one that rises above zero and falls back within a step, a cell that
-    sticks for less than a step, is found there. Events within 1e-10 of the earliest count as
-    simultaneous: the lowest index wins (normal events, then birth and release, then the
-    cells). Leaves the dense-output coefficients in ``Q``."""
-    dense_coeffs(K, Q)
-    dense(y0, h, 0.5, Q, yt)
+    sticks for less than a step, is found there. Events within SIMULTANEOUS of the earliest
+    count as simultaneous: the lowest index wins (normal events, then birth and release, then
+    the cells). Leaves the dense-output coefficients of the active components in ``Q``."""
+    nact = Y_CELL + n_in(cm)
+    dense_coeffs_active(K, Q, nact)
+    dense_active(y0, h, 0.5, Q, yt, nact)
     events(c, md, cm, sg, cp, Wm, evaluate(law, p, c, md, yt, cm, sg, cp, Wm), gmid)
-    best = -1
-    theta = 2.0
     # the first half, then (if nothing fired there) the second: later events need no location
-    for half in range(2):
-        lo = 0.5 * half
-        ga = gold if half == 0 else gmid
-        gb = gmid if half == 0 else gnew
-        for k in range(gold.shape[0]):
-            if ga[k] <= 0.0 and gb[k] > 0.0:
-                th = locate(
-                    k, lo, ga[k], lo + 0.5, gb[k], law, p, c, md, y0, Q, h, cm, sg, cp, Wm, gmid, yt
-                )
-                if th < theta - 1e-10:
-                    theta = th
-                    best = k
-        if best >= 0:
-            break
+    best, theta = _first_in(0.0, gold, gmid, law, p, c, md, y0, Q, h, cm, sg, cp, yt)
+    if best < 0:
+        best, theta = _first_in(0.5, gmid, gnew, law, p, c, md, y0, Q, h, cm, sg, cp, yt)
     return best, theta
 
 

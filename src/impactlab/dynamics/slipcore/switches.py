@@ -67,25 +67,20 @@ def release_passed(y, cm, cp, ar, dy):
 
 
 @njit_internal
-def _due(law, p, c, md, y, cm, sg, cp, W, mu, estar):
-    """Apply the first switch already due at ``y`` (``kernels.cells.apply_due``); False when
-    none is."""
-    ev = evaluate(law, p, c, md, y, cm, sg, cp, W)
-    _delta, _a, _b, Fn, _Ft, vn, vs, ar, ad, _nin = ev
-    return apply_due(
-        y, np.int64(Y_CELL), cm, sg, cp, W[0], W[1], W[2], mu, estar, Fn, vn, vs, ar, ad
-    )
-
-
-@njit_internal
 def settle(law, p, c, md, y, cm, sg, cp, W, mu):
     """Apply every switch that is already due at a restart (several cells can change mode
-    within one step; only the first event is located). Returns False if it does not settle."""
+    within one step; only the first event is located: ``kernels.cells.apply_due``, one at a
+    time, each on the quantities evaluated anew). Returns (False if it does not settle, the
+    quantities of ``model.evaluate`` at the settled state, ``W`` filled there)."""
     estar = p[P_ESTAR]
+    ev = evaluate(law, p, c, md, y, cm, sg, cp, W)
     for _ in range(4 * cm.shape[0] + 8):
-        if not _due(law, p, c, md, y, cm, sg, cp, W, mu, estar):
-            return True
-    return False
+        _delta, _a, _b, Fn, _Ft, vn, vs, ar, ad, _nin = ev
+        o = np.int64(Y_CELL)
+        if not apply_due(y, o, cm, sg, cp, W[0], W[1], W[2], mu, estar, Fn, vn, vs, ar, ad):
+            return True, ev
+        ev = evaluate(law, p, c, md, y, cm, sg, cp, W)
+    return False, ev
 
 
 @njit_internal
