@@ -15,8 +15,7 @@ test), ``contacts`` (the event actions: touch, turning point, separation, stick/
 ``friction`` (the friction models), ``cells`` and ``cellswitch`` (the partial-slip cells per
 end), ``history`` (recorded rows), ``setup`` (first touch, scales, work arrays), ``steps``,
 ``coast`` and ``events`` (the branches of the loop), ``results`` (the output vector), ``model``
-(the inputs from Python), ``driver`` (``drop``: the event loop) and ``compile_gc`` (Python's
-garbage collector paused while numba compiles this package: docs/engine/first-run.md).
+(the inputs from Python) and ``driver`` (``drop``: the event loop).
 
 Every compiled function takes the model as one tuple
 ``mdl = (law, p, c, om, om2, dmp, zeta, Ue, We, Pe, Tg, ia, ib)``:
@@ -28,9 +27,6 @@ the modal end values U, W, Psi (NE, M) and the geometric-stiffness tensor with i
 
 from __future__ import annotations
 
-from impactlab.dynamics.flexcore.compile_gc import install as _install_compile_gc
 from impactlab.dynamics.flexcore.driver import drop
-
-_install_compile_gc()
 
 __all__ = ["drop"]

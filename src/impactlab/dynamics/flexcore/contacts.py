@@ -239,26 +239,16 @@ def on_separation(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, y_end, e
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def on_friction(mdl, md, y, k, ek):
-    """Stick/slip switch of end k. Coulomb: from slip at v_t = 0, stick or reverse, decided
-    with the stick force (``coulomb_stick_decision``: True is returned, the end set to stick);
-    from stick, slip against the needed force. Mindlin: the rigid core's switch
-    (``friction.mindlin_switch``)."""
+def on_friction(mdl, md, y, k, der, ev, ek, Jn, Jt):
+    """Stick/slip switch of end k. Coulomb: from slip at v_t = 0, stick or reverse (decided
+    with the stick force); from stick, slip against the needed force. Mindlin: the rigid
+    core's switch (``friction.mindlin_switch``)."""
     c, M = mdl[2], mdl[3].shape[0]
     if c[F.FC_FRIC] == FR_MINDLIN:
         mindlin_switch(c, md, k, y, 6 + 2 * M + F.Q_TAN, ek)
     elif md[k, F.MD_FM] != 0.0:
         md[k, F.MD_FM] = 0.0
-        return True
+        evaluate(mdl, md, y, der, ev, ek, Jn, Jt)
+        md[k, F.MD_FM] = coulomb_decide(c, M, Jn, Jt, k, ek[k, F.EK_FN], ek[k, F.EK_FT], c[F.FC_MU])
     else:
         md[k, F.MD_FM] = -1.0 if ek[k, F.EK_FT] > 0.0 else 1.0
-    return False
-
-
-@njit(cache=True, inline="always", error_model="numpy")
-def coulomb_stick_decision(mdl, md, y, k, der, ev, ek, Jn, Jt):
-    """Coulomb, end k set to stick at v_t = 0 by ``on_friction``: stick or slip, decided with
-    its stick force (``friction.coulomb_decide``)."""
-    c, M = mdl[2], mdl[3].shape[0]
-    evaluate(mdl, md, y, der, ev, ek, Jn, Jt)
-    md[k, F.MD_FM] = coulomb_decide(c, M, Jn, Jt, k, ek[k, F.EK_FN], ek[k, F.EK_FT], c[F.FC_MU])

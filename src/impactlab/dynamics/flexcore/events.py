@@ -10,7 +10,6 @@ from numba import njit
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.cellswitch import apply_cell_event, settle
 from impactlab.dynamics.flexcore.contacts import (
-    coulomb_stick_decision,
     on_friction,
     on_separation,
     on_touch,
@@ -33,22 +32,17 @@ _PENDING_ORDER = (
 )
 
 
-@njit_internal
-def apply_event(jev, mdl, md, y, t, sv, sc, contacts, dents, cur_con, snap, y_end, ek, Jn, Jt):
-    """The action of event ``jev`` (an end's, or a partial-slip cell's: ``jev`` >= NEV) and the
-    Mindlin state after it (``friction.mindlin_after``; ``sc``: the error scales). Returns
-    (status, end, kind: -1 for a cell event, decide: a Coulomb end to decide at v_t = 0 with
-    its stick force, ``contacts.coulomb_stick_decision``). It evaluates no right-hand side
-    (which would be compiled into it once more: ``docs/engine/first-run.md``)."""
+@njit(cache=True, inline="always", error_model="numpy")
+def _apply(jev, mdl, md, y, t, sv, contacts, dents, cur_con, snap, y_end, der, ev, ek, Jn, Jt):
+    """The action of event ``jev`` (an end's, or a partial-slip cell's: ``jev`` >= NEV);
+    returns (status, end, kind: -1 for a cell event)."""
     k = jev // F.NFEVK
     kind = jev % F.NFEVK
     st = F.ST_OK
-    decide = False
     if jev >= F.NFEV:  # a partial-slip cell: birth, release or stick/slip
         apply_cell_event(jev, mdl, md, y, ek)
-        k = 0
-        kind = -1
-    elif kind == F.FEV_LIMIT:
+        return st, 0, -1
+    if kind == F.FEV_LIMIT:
         st = F.ST_LAW_LIMIT
     elif kind == F.FEV_TOUCH:
         st = on_touch(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, ek, Jn, Jt)
@@ -61,30 +55,26 @@ def apply_event(jev, mdl, md, y, t, sv, sc, contacts, dents, cur_con, snap, y_en
     elif kind == F.FEV_SEP:
         on_separation(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, y_end, ek)
     elif kind == F.FEV_FRIC:
-        decide = on_friction(mdl, md, y, k, ek)
-    if st == F.ST_OK:
-        mindlin_after(mdl, md, k, kind, y, ek, sc, sv)
-    return st, k, kind, decide
+        on_friction(mdl, md, y, k, der, ev, ek, Jn, Jt)
+    return st, k, kind
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit_internal
 def handle_events(
     jev, mdl, md, y, t, K, gold, sv, sc, contacts, dents, cur_con, snap, y_end, der, ev, ek, Jn, Jt
 ):
     """Apply event ``jev`` at (t, y) and every event already past its switch at the same
     instant (at most 8), after each (partial slip) every cell switch due
     (``cellswitch.settle``); ``sc``: the error scales (the Mindlin state's changes with its
-    meaning). False (with ``sv[F.SV_STATUS]`` set) on a failure. The actions are compiled
-    apart (``apply_event``), the evaluations here."""
+    meaning). False (with ``sv[F.SV_STATUS]`` set) on a failure."""
     fric = mdl[2][F.FC_FRIC]
     for _it in range(8):
-        st, k, _kind, decide = apply_event(jev, mdl, md, y, t, sv, sc, contacts, dents, cur_con,
-                                           snap, y_end, ek, Jn, Jt)  # fmt: skip
+        st, k, kind = _apply(jev, mdl, md, y, t, sv, contacts, dents, cur_con, snap, y_end, der,
+                             ev, ek, Jn, Jt)  # fmt: skip
         if st != F.ST_OK:
             sv[F.SV_STATUS] = st
             return False
-        if decide:
-            coulomb_stick_decision(mdl, md, y, k, der, ev, ek, Jn, Jt)
+        mindlin_after(mdl, md, k, kind, y, ek, sc, sv)
         if fric == F.FR_PARTIAL and not settle(mdl, md, y, K[0], gold, ek, Jn, Jt):
             sv[F.SV_STATUS] = F.ST_TOO_MANY_EVENTS
             return False
