@@ -12,6 +12,8 @@ measured one builds on, each in its own process (``rigid`` for ``partial_slip`` 
 - per compiler pass, its exclusive CPU seconds summed over the functions (type inference,
   lowering, the LLVM optimisation in ``NativeLowering``, ...);
 - every dispatcher of the package compiled for more than one type signature;
+- the CPU seconds of Python's cyclic garbage collector and its number of collections
+  (``gc.callbacks``; the flexible drop pauses it while it compiles: ``flexcore.compile_gc``);
 
 and writes, with ``--json``, also the 60 largest (function, compiler pass) times.
 
@@ -22,6 +24,7 @@ of the measured part alone. CPU seconds of this process (``time.process_time``).
 from __future__ import annotations
 
 import argparse
+import gc
 import json
 import os
 import shutil
@@ -67,6 +70,22 @@ def _copy_base(base: Path, cache: Path) -> None:
     if not folders:
         raise SystemExit(f"--base {base}: no {ENGINE_PREFIX}* folder in it")
     shutil.copytree(folders[-1], cache / f"{ENGINE_PREFIX}{engine_source_hash()}")
+
+
+class _GCTimer:
+    """A ``gc.callbacks`` entry: CPU seconds and number of the collector's passes."""
+
+    def __init__(self) -> None:
+        self.start = 0.0
+        self.seconds = 0.0
+        self.count = 0
+
+    def __call__(self, phase: str, info: dict[str, int]) -> None:
+        if phase == "start":
+            self.start = time.process_time()
+        else:
+            self.seconds += time.process_time() - self.start
+            self.count += 1
 
 
 def _measure(part: str) -> dict[str, object]:
@@ -130,9 +149,12 @@ def _measure(part: str) -> dict[str, object]:
     _timed(codegen.JITCodeLibrary, "_finalize_specific", "LLVM: machine code")
     event.register("numba:compile", _Listener("numba:compile"))
     event.register("numba:run_pass", _Listener("numba:run_pass"))
+    collector = _GCTimer()
+    gc.callbacks.append(collector)
     t0 = time.process_time()
     exec(PARTS[part], {})
     total = time.process_time() - t0
+    gc.callbacks.remove(collector)
     multi = {}
     for name, mod in list(sys.modules.items()):
         if not name.startswith("impactlab"):
@@ -154,6 +176,8 @@ def _measure(part: str) -> dict[str, object]:
         "llvm": dict(llvm),
         "llvm_per_function": dict(per_llvm),
         "multi_signature": multi,
+        "gc_s": collector.seconds,
+        "gc_collections": collector.count,
     }
 
 
@@ -199,6 +223,7 @@ def main() -> None:
         print(f"{s:8.2f} {ll:7.2f} {res['compiles'][name]:3d}  {name}")
     for name, s in res["llvm"].items():
         print(f"{s:11.2f}  {name}")
+    print(f"{res['gc_s']:11.2f}  Python gc ({res['gc_collections']} collections, within the above)")
     print(f"{'exclusive s':>11}  pass")
     for name, s in list(res["passes"].items())[:15]:
         print(f"{s:11.2f}  {name}")

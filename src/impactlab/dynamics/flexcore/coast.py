@@ -27,41 +27,24 @@ def refresh_thresholds(mdl, md, y, K, gold, sv, dents, ek, Jn, Jt):
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def jump(mdl, md, y, t, h, K, gold, sv, dents, record_on, hist, nh, yev, yt, der, ev, ek, Jn, Jt):
-    """Free flight without contact: advance in closed form when no end can touch within two
-    steps. Returns (jumped, t, hist, nh)."""
+def jump_time(mdl, y, h, sv, ek):
+    """Free flight without contact: the time [s] to advance in closed form when no end can
+    touch within two steps (0: integrate a step instead)."""
     Tg = mdl[10]
     if Tg.shape[0] > 0:
-        return False, t, hist, nh  # the closed-form flight is linear: integrate instead
+        return 0.0  # the closed-form flight is linear: integrate instead
     jump = jump_length(mdl, y, ek)
     if not jump > 2.0 * h:
-        return False, t, hist, nh
-    jump = min(jump, max(sv[F.SV_CHECK_DT], 2.0 * h))
-    flight(mdl, y, jump, yev)
-    if record_on:
-        for jj in range(1, 4):
-            flight(mdl, y, jump * jj / 4.0, yt)
-            evaluate(mdl, md, yt, der, ev, ek, Jn, Jt)
-            hist, nh = record(hist, nh, t + jump * jj / 4.0, mdl, yt, ek, sv[F.SV_E0])
-    for i in range(y.shape[0]):
-        y[i] = yev[i]
-    t += jump
-    sv[F.SV_NJUMPS] += 1
-    evaluate(mdl, md, y, K[0], gold, ek, Jn, Jt)
-    for k in range(F.NE):
-        set_threshold(md, dents, int(sv[F.SV_ND]), k, ek[k, F.EK_X], ek[k, F.EK_DELTA])
-    evaluate(mdl, md, y, K[0], gold, ek, Jn, Jt)
-    if record_on:
-        hist, nh = record(hist, nh, t, mdl, y, ek, sv[F.SV_E0])
-    return True, t, hist, nh
+        return 0.0
+    return min(jump, max(sv[F.SV_CHECK_DT], 2.0 * h))
 
 
 @njit_internal
-def out_of_contact(mdl, md, y, t, h, K, gold, sv, dents, stop_mode, record_on, hist, nh, yev, yt,
-                   der, ev, ek, Jn, Jt):  # fmt: skip
+def out_of_contact(mdl, y, t, h, sv, stop_mode, yev, ek):
     """No end in contact: the end-of-sequence test (every ``F.SV_CHECK_DT``), then a free-flight
-    jump if one is possible. Returns (code, t, hist, nh): 0 integrate a step, 1 jumped,
-    2 the sequence is over."""
+    jump if one is possible, its end state into ``yev``. Returns (code, tau): code 0 integrate a
+    step, 1 jump by tau [s] (``complete_jump``), 2 the sequence is over. It evaluates no
+    right-hand side (which would be compiled into it once more: ``docs/engine/first-run.md``)."""
     if t - sv[F.SV_T_CHECK] >= sv[F.SV_CHECK_DT]:
         sv[F.SV_T_CHECK] = t
         done, nx, tn = left_for_good(
@@ -72,8 +55,33 @@ def out_of_contact(mdl, md, y, t, h, K, gold, sv, dents, stop_mode, record_on, h
             sv[F.SV_NEXT_END] = nx
             sv[F.SV_NEXT_TIME] = tn
             sv[F.SV_STATUS] = F.ST_OK
-            return 2, t, hist, nh
-    jumped, t, hist, nh = jump(
-        mdl, md, y, t, h, K, gold, sv, dents, record_on, hist, nh, yev, yt, der, ev, ek, Jn, Jt
-    )
-    return (1 if jumped else 0), t, hist, nh
+            return 2, 0.0
+    tau = jump_time(mdl, y, h, sv, ek)
+    if tau == 0.0:
+        return 0, 0.0
+    flight(mdl, y, tau, yev)
+    return 1, tau
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def complete_jump(mdl, md, y, t, tau, K, gold, sv, dents, record_on, hist, nh, yev, yt, der, ev,
+                  ek, Jn, Jt):  # fmt: skip
+    """The free-flight jump by tau from (t, y) to ``yev`` (``out_of_contact``): the recorded
+    points inside it, the state, the thresholds and the evaluations there. Returns
+    (t, hist, nh)."""
+    if record_on:
+        for jj in range(1, 4):
+            flight(mdl, y, tau * jj / 4.0, yt)
+            evaluate(mdl, md, yt, der, ev, ek, Jn, Jt)
+            hist, nh = record(hist, nh, t + tau * jj / 4.0, mdl, yt, ek, sv[F.SV_E0])
+    for i in range(y.shape[0]):
+        y[i] = yev[i]
+    t += tau
+    sv[F.SV_NJUMPS] += 1
+    evaluate(mdl, md, y, K[0], gold, ek, Jn, Jt)
+    for k in range(F.NE):
+        set_threshold(md, dents, int(sv[F.SV_ND]), k, ek[k, F.EK_X], ek[k, F.EK_DELTA])
+    evaluate(mdl, md, y, K[0], gold, ek, Jn, Jt)
+    if record_on:
+        hist, nh = record(hist, nh, t, mdl, y, ek, sv[F.SV_E0])
+    return t, hist, nh

@@ -14,12 +14,12 @@ from numba import njit
 
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.cells import step_cap
-from impactlab.dynamics.flexcore.coast import out_of_contact, refresh_thresholds
+from impactlab.dynamics.flexcore.coast import complete_jump, out_of_contact, refresh_thresholds
 from impactlab.dynamics.flexcore.events import handle_events
 from impactlab.dynamics.flexcore.history import record
 from impactlab.dynamics.flexcore.results import fill_outputs
 from impactlab.dynamics.flexcore.rhs import evaluate
-from impactlab.dynamics.flexcore.setup import first_touch, scales, workspace
+from impactlab.dynamics.flexcore.setup import first_touch, scales, touch_modes, workspace
 from impactlab.dynamics.flexcore.stepper import dp_step
 from impactlab.dynamics.flexcore.steps import accept, reject
 from impactlab.dynamics.kernels.buffers import copy_into
@@ -49,7 +49,9 @@ def drop(mdl, vx0, vy0, w0, rtol, t_max, stop_mode, record_on, out, contacts, de
     nh = np.int64(0)  # not a literal: record() is compiled once, for any row count
     scales(mdl, vx0, vy0, w0, sc, sv)  # first: the cell parameters of partial slip
     sv[F.SV_TOL_MISS] = F.MISS_TOL_FACTOR * max(1e-6, rtol) * sv[F.SV_DSTAR]
-    first_touch(mdl, md, y, vx0, vy0, w0, sv, contacts, dents, cur_con, der, ev, ek, Jn, Jt)
+    first_touch(mdl, md, y, vx0, vy0, w0, sv, contacts, dents, cur_con)
+    evaluate(mdl, md, y, der, ev, ek, Jn, Jt)
+    touch_modes(mdl, md, y, ek, Jn, Jt)
     t = 0.0
     h = 0.02 * sv[F.SV_TSTAR] * rtol**0.2
     evaluate(mdl, md, y, K[0], gold, ek, Jn, Jt)
@@ -61,12 +63,12 @@ def drop(mdl, vx0, vy0, w0, rtol, t_max, stop_mode, record_on, out, contacts, de
             sv[F.SV_STATUS] = F.ST_TMAX
             break
         if md[0, F.MD_IN] == 0.0 and md[1, F.MD_IN] == 0.0:
-            code, t, hist, nh = out_of_contact(mdl, md, y, t, h, K, gold, sv, dents, stop_mode,
-                                               record_on, hist, nh, yev, yt, der, ev, ek, Jn,
-                                               Jt)  # fmt: skip
+            code, tau = out_of_contact(mdl, y, t, h, sv, stop_mode, yev, ek)
             if code == 2:
                 break
             if code == 1:
+                t, hist, nh = complete_jump(mdl, md, y, t, tau, K, gold, sv, dents, record_on,
+                                            hist, nh, yev, yt, der, ev, ek, Jn, Jt)  # fmt: skip
                 continue
         sv[F.SV_NSTEPS] += 1
         h = min(h, sv[F.SV_HMAX])

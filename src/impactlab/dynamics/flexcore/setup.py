@@ -13,7 +13,6 @@ from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.cellswitch import touch_cells
 from impactlab.dynamics.flexcore.contacts import new_dent
 from impactlab.dynamics.flexcore.friction import initial_mode
-from impactlab.dynamics.flexcore.rhs import evaluate
 from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.cells import CP_FTOL, CP_G1, CP_VTOL, N_CELLS
 
@@ -89,8 +88,10 @@ def scales(mdl, vx0, vy0, w0, sc, sv):
 
 
 @njit_internal
-def first_touch(mdl, md, y, vx0, vy0, w0, sv, contacts, dents, cur_con, der, ev, ek, Jn, Jt):
-    """The state and the mode table at the first touch of end 0 (on virgin flat)."""
+def first_touch(mdl, md, y, vx0, vy0, w0, sv, contacts, dents, cur_con):
+    """The state and the mode table at the first touch of end 0 (on virgin flat), before its
+    friction mode (``touch_modes``, after the first evaluation: this function calls none, so
+    that the right-hand side is not compiled into it once more)."""
     c = mdl[2]
     M = mdl[3].shape[0]
     iv = 3 + M
@@ -111,14 +112,21 @@ def first_touch(mdl, md, y, vx0, vy0, w0, sv, contacts, dents, cur_con, der, ev,
     md[0, F.MD_PH] = 0.0
     md[0, F.MD_COMP] = 1.0
     md[0, F.MD_DENT] = 0.0
-    evaluate(mdl, md, y, der, ev, ek, Jn, Jt)
-    initial_mode(mdl[1], c, M, md, tip, ek[0, F.EK_VT], ek[0, F.EK_VN], Jn, Jt)
-    if c[F.FC_FRIC] == F.FR_PARTIAL:
-        touch_cells(mdl, md, tip, y, ek)
     for f in (F.CR_END, F.CR_T0, F.CR_X0, F.CR_DENT, F.CR_RELOAD, F.CR_DMAX, F.CR_FMAX, F.CR_STICK):
         contacts[0, f] = 0.0
     cur_con[0] = 0
     sv[F.SV_NCON] = 1
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def touch_modes(mdl, md, y, ek, Jn, Jt):
+    """The friction mode (and the partial-slip cells) of end 0 at its first touch; ``ek``,
+    ``Jn``, ``Jt``: evaluated at the state of ``first_touch``."""
+    c = mdl[2]
+    tip = np.int64(0)  # a run-time integer (``first_touch``)
+    initial_mode(mdl[1], c, mdl[3].shape[0], md, tip, ek[0, F.EK_VT], ek[0, F.EK_VN], Jn, Jt)
+    if c[F.FC_FRIC] == F.FR_PARTIAL:
+        touch_cells(mdl, md, tip, y, ek)
 
 
 @njit(cache=True, inline="always", error_model="numpy")

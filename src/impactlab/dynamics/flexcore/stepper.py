@@ -81,8 +81,8 @@ def integrate_to(mdl, md, y, k0, H, rtol, sc, out, ev, ek, Jn, Jt):
     return cnt
 
 
-@njit(cache=True, error_model="numpy")
-def locate(jev, g0, g1, mdl, md, y0, h, Q, yt, der, ev, ek, Jn, Jt, shift=0.0):
+@njit(cache=True, inline="always", error_model="numpy")
+def locate(jev, g0, g1, mdl, md, y0, h, Q, yt, der, ev, ek, Jn, Jt, shift):
     """theta in (0, 1] where event ``jev`` fires between y0 and y0 + h: the root of
     g - ``shift`` (g the event function; ``shift`` > 0 locates the level a missed touch
     reached, ``steps.first_event``) by Illinois regula falsi on the dense output; g0 <= 0 < g1

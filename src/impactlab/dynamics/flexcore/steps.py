@@ -47,22 +47,24 @@ def first_event(mdl, md, y, h, K, Q, gold, gnew, sv, record_on, yt, der, ev, ek,
     jev = -1
     theta = 2.0
     if fired:
-        for j in range(gold.shape[0]):
-            if gold[j] <= 0.0 and gnew[j] > 0.0:
-                # shift 0.0 passed, not defaulted: one compiled locate for both calls
-                thj = locate(j, gold[j], gnew[j], mdl, md, y, h, Q, yt, der, ev, ek, Jn, Jt, 0.0)
-                if thj < theta:
-                    theta = thj
-                    jev = j
-        for k in range(F.NE):
-            if _missed_touch(md, sv, gold, gnew, k):
-                j = k * F.NFEVK + F.FEV_TOUCH
-                tol = sv[F.SV_TOL_MISS]
-                thj = locate(j, gold[j] - tol, gnew[j] - tol, mdl, md, y, h, Q, yt, der, ev, ek,
-                             Jn, Jt, tol)  # fmt: skip
-                if thj < theta:
-                    theta = thj
-                    jev = j
+        nev = gold.shape[0]
+        for i in range(nev + F.NE):  # the sign changes, then the missed touches
+            if i < nev:
+                if not (gold[i] <= 0.0 and gnew[i] > 0.0):
+                    continue
+                j = i
+                shift = 0.0
+            else:
+                if not _missed_touch(md, sv, gold, gnew, i - nev):
+                    continue
+                j = (i - nev) * F.NFEVK + F.FEV_TOUCH
+                shift = sv[F.SV_TOL_MISS]
+            # one call site: locate is inlined here once (g - 0.0 is g, bit for bit)
+            thj = locate(j, gold[j] - shift, gnew[j] - shift, mdl, md, y, h, Q, yt, der, ev, ek,
+                         Jn, Jt, shift)  # fmt: skip
+            if thj < theta:
+                theta = thj
+                jev = j
     return jev, theta, fired
 
 
