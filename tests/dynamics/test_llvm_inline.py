@@ -1,6 +1,7 @@
 """The force evaluation of the Dormand-Prince stage loops, its pieces shared by the time step and
-the w-step, and the state tuple are compiled once by numba and inlined by LLVM
-(``kernels._jit.njit_llvm_inline``): the stage loops' machine code calls none of them."""
+the w-step, the state tuple, the dense output and the step factor are compiled once by numba and
+inlined by LLVM (``kernels._jit.njit_llvm_inline``): the stage loop's machine code calls none of
+them."""
 
 from __future__ import annotations
 
@@ -28,7 +29,12 @@ _M = nbt.UniTuple(_F, NM)
 def _llvm_inlined(module: object) -> list[Any]:
     """The module's compiled functions that LLVM inlines (by their options: their names are
     never used from Python, ``tests/core/test_compiled_wrappers.py``)."""
-    return [f for f in vars(module).values() if getattr(f, "targetoptions", {}).get("forceinline")]
+    return [
+        f
+        for f in vars(module).values()
+        if getattr(f, "targetoptions", {}).get("forceinline")
+        and f.py_func.__module__ == module.__name__  # type: ignore[attr-defined]
+    ]
 
 
 @pytest.mark.parametrize(
