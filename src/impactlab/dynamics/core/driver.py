@@ -6,7 +6,10 @@ event location, history, mode transitions) and writes the results at separation
 in the accumulator array ``acc`` (``A_*``).
 
 ``_integrate`` (the step loop, about 75 lines) is the longest function of the core: it carries
-the state between steps (step size, event tuple, mode, history buffer) and its early exits.
+the state between steps (step size, event tuple, mode, history buffer) and its early exits. It
+and the opening (``ends.opening``), each called from one place, are inlined into ``impact`` by
+numba: a function compiled on its own would have the whole engine below it linked into its
+library and its machine code generated again (``docs/engine/first-run.md``).
 """
 
 from __future__ import annotations
