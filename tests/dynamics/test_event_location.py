@@ -1,7 +1,7 @@
 """Event location on the dense output (``integrator.locate``): the bracket
 end where g > 0, the root to round-off, and few evaluations. The search runs as plain Python
-(``locate.py_func``) on a dense output made by hand, with the event function replaced by a
-counting stand-in, so every evaluation is seen."""
+(``locate.py_func``, with the kernels it calls in their Python form) on a dense output made by
+hand, with the event function replaced by a counting stand-in, so every evaluation is seen."""
 
 from __future__ import annotations
 
@@ -28,6 +28,11 @@ def _locate(monkeypatch, g, coeffs) -> tuple[float, list[float]]:
         return g(x)
 
     monkeypatch.setattr(integrator, "event_value", event_value)
+    # the kernels compiled without a Python wrapper (inlined by LLVM) as their Python source:
+    # called from Python, their compiled form would crash the interpreter
+    for name, fn in list(vars(integrator).items()):
+        if getattr(fn, "targetoptions", {}).get("no_cpython_wrapper"):
+            monkeypatch.setattr(integrator, name, fn.py_func)
     y0 = np.zeros(NS)
     Q = np.zeros((NS, 4))
     Q[0, :] = coef

@@ -14,34 +14,38 @@ from numba import njit
 from impactlab.contact import history_kernels as hk
 from impactlab.contact import kernels as k
 
-_FORCE = 0
-_RADIUS = 1
+
+@njit(cache=True, error_model="numpy")
+def _loading_force_1d(law: int, p: np.ndarray, delta: np.ndarray) -> np.ndarray:
+    out = np.empty(delta.shape[0])
+    for i in range(delta.shape[0]):
+        out[i] = k.loading_force(law, p, delta[i])
+    return out
 
 
 @njit(cache=True, error_model="numpy")
-def _loading_array(quantity: int, law: int, p: np.ndarray, delta: np.ndarray) -> np.ndarray:
-    """``loading_force`` (``_FORCE``) or ``loading_contact_radius`` (``_RADIUS``) over an array
-    of interferences, in the array's shape."""
-    out = np.empty(delta.size)
-    flat = delta.ravel()
-    for i in range(flat.size):
-        if quantity == _FORCE:
-            out[i] = k.loading_force(law, p, flat[i])
-        else:
-            out[i] = hk.loading_contact_radius(law, p, flat[i])
-    return out.reshape(delta.shape)
+def _loading_contact_radius_1d(law: int, p: np.ndarray, delta: np.ndarray) -> np.ndarray:
+    out = np.empty(delta.shape[0])
+    for i in range(delta.shape[0]):
+        out[i] = hk.loading_contact_radius(law, p, delta[i])
+    return out
 
 
-@njit(cache=True, error_model="numpy")
+def _flat(delta: np.ndarray) -> np.ndarray:
+    """``delta`` as a contiguous 1-D float64 array: one compiled signature for every caller
+    (the loops above are compiled on a first rigid impact, whose model building calls them)."""
+    return np.ascontiguousarray(np.asarray(delta, dtype=np.float64).ravel())
+
+
 def loading_force_array(law: int, p: np.ndarray, delta: np.ndarray) -> np.ndarray:
-    """Vectorised ``loading_force`` over an array of interferences."""
-    return _loading_array(_FORCE, law, p, delta)
+    """Vectorised ``loading_force`` [N] over an array of interferences [m], in its shape."""
+    return _loading_force_1d(law, p, _flat(delta)).reshape(np.shape(delta))
 
 
-@njit(cache=True, error_model="numpy")
 def loading_contact_radius_array(law: int, p: np.ndarray, delta: np.ndarray) -> np.ndarray:
-    """Vectorised ``loading_contact_radius`` over an array of interferences."""
-    return _loading_array(_RADIUS, law, p, delta)
+    """Vectorised ``loading_contact_radius`` [m] over an array of interferences [m], in its
+    shape."""
+    return _loading_contact_radius_1d(law, p, _flat(delta)).reshape(np.shape(delta))
 
 
 GAP_JACKSON_FAMILY = 0

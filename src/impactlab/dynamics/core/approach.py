@@ -58,12 +58,11 @@ from impactlab.dynamics.kernels.dormand_prince import (
     E7,
     RECOMPUTE_LEN,
     STEP_LEN,
-    dense,
     dense_coeffs,
+    dense_llvm,
     recompute_views,
     step_views,
 )
-from impactlab.dynamics.kernels.friction import tangential_force
 from impactlab.dynamics.kernels.layout import (
     EV_FRIC,
     EV_SEP,
@@ -79,10 +78,15 @@ from impactlab.dynamics.kernels.layout import (
     S_VX,
     S_VY,
 )
-from impactlab.dynamics.kernels.normal import geometry, normal_force
-from impactlab.dynamics.kernels.rhs import derivative, events_from
+from impactlab.dynamics.kernels.rhs import (
+    derivative,
+    events_cold,
+    geometry_llvm,
+    normal_force_llvm,
+    tangential_force_llvm,
+)
 from impactlab.dynamics.kernels.roots import G_ROUNDOFF, THETA_TOL, illinois, past_root
-from impactlab.dynamics.kernels.step_control import growth
+from impactlab.dynamics.kernels.step_control import growth_llvm
 from impactlab.dynamics.kernels.tuples import state_tuple
 
 #: Components of the approach state: the state ``y`` and the time.
@@ -112,18 +116,18 @@ def _rhs_w(law, p, fric, c, md, Y, w, sgn):
     (F = 4/3 E* sqrt(R_r) w^3), dt/du = 2 w / v_n; sgn = +1: the opening, delta = w^2 on the
     loading curve, dt/du = 2 w / (-v_n)."""
     y = state_tuple(Y)
-    _delta, a, b, _xs, _sl = geometry(c, y)
+    _delta, a, b, _xs, _sl = geometry_llvm(c, y)
     w = max(w, 0.0)
     if sgn < 0.0:
         delta = md[M_DR] + w * w
         Fn = 4.0 / 3.0 * p[P_ESTAR] * math.sqrt(md[M_RR]) * (w * w * w)
     else:
         delta = w * w
-        Fn = normal_force(law, p, md, delta)
+        Fn = normal_force_llvm(law, p, md, delta)
     spin = y[S_SPIN]
     vn = y[S_VY] - spin * a
     vs = y[S_VX] + spin * b
-    Ft, kt = tangential_force(law, p, fric, c, md, delta, Fn, spin, a, b, y[S_Q])
+    Ft, kt = tangential_force_llvm(law, p, fric, c, md, delta, Fn, spin, a, b, y[S_Q])
     evq = (delta, a, b, Fn, Ft, vn, vs, kt)
     d = derivative(fric, c, md, y, evq)
     rate = -sgn * vn
@@ -143,13 +147,6 @@ def _rhs_w_cold(law, p, fric, c, md, Y, w, sgn):
     """``_rhs_w`` as a call, for the callers off the steps (see ``rhs.rhs_events_cold``):
     ``_rhs_w_stage`` inlined by LLVM, so that numba compiles the body once."""
     return _rhs_w_stage(law, p, fric, c, md, Y, w, sgn)
-
-
-@njit(cache=True, inline="always", error_model="numpy")
-def _events(law, p, fric, c, md, evq, q):
-    """Event tuple from the evaluated quantities ``evq`` (``rhs.events_from``)."""
-    delta, _a, _b, Fn, Ft, vn, vs, kt = evq
-    return events_from(law, p, fric, c, md, delta, Fn, Ft, vn, vs, kt, q)
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -215,14 +212,14 @@ def w_state(law, p, fric, c, md, y, w):
     """(quantities, event tuple) at state ``y`` (length NS) with the interference delta_r + w^2
     of the final approach."""
     _r, evq = _rhs_w_cold(law, p, fric, c, md, y, w, -1.0)
-    return evq, _events(law, p, fric, c, md, evq, y[S_Q])
+    return evq, events_cold(law, p, fric, c, md, evq, y[S_Q])
 
 
 @njit_internal
 def _g_friction(law, p, fric, c, md, Y, w, sgn):
     """The stick/slip event function at (Y, w)."""
     _r, evq = _rhs_w_cold(law, p, fric, c, md, Y, w, sgn)
-    return _events(law, p, fric, c, md, evq, Y[S_Q])[EV_FRIC]
+    return events_cold(law, p, fric, c, md, evq, Y[S_Q])[EV_FRIC]
 
 
 @njit(cache=True, error_model="numpy")
@@ -237,14 +234,14 @@ def _locate(law, p, fric, c, md, Y, K, w, sgn, h, Q, Yt, g0, b, g1):
         th = (a * fb - b * fa) / (fb - fa)
         if not (a < th < b):
             th = 0.5 * (a + b)
-        dense(Y, h, th, Q, Yt)
+        dense_llvm(Y, h, th, Q, Yt)
         f = _g_friction(law, p, fric, c, md, Yt, w + sgn * th * h, sgn)
         if abs(f) <= tiny:  # zero to round-off: as integrator.locate
             if f > 0.0:
                 return th
             probe = past_root(th, f, b, fb)
             if probe < b:
-                dense(Y, h, probe, Q, Yt)
+                dense_llvm(Y, h, probe, Q, Yt)
                 fp = _g_friction(law, p, fric, c, md, Yt, w + sgn * probe * h, sgn)
                 if fp > 0.0:
                     return probe
@@ -276,7 +273,7 @@ def _to(law, p, fric, c, md, Y, k0, w, sgn, H, rtol, sc, tscale, out, work):
             law, p, fric, c, md, cur, Ks, w + sgn * done, sgn, hh, rtol, sc, tscale, out
         )
         if not (err <= 1.0) and hh > 1e-6 * H:
-            hh *= max(0.2, growth(err)) if math.isfinite(err) else 0.25
+            hh *= max(0.2, growth_llvm(err)) if math.isfinite(err) else 0.25
             continue
         if last:
             break
@@ -284,7 +281,7 @@ def _to(law, p, fric, c, md, Y, k0, w, sgn, H, rtol, sc, tscale, out, work):
         for i in range(NY):
             cur[i] = out[i]
             kc[i] = Ks[6, i]
-        hh *= min(5.0, growth(err)) if err > 0.0 else 5.0
+        hh *= min(5.0, growth_llvm(err)) if err > 0.0 else 5.0
     return n, evq
 
 
@@ -311,7 +308,7 @@ def w_integrate(
     _put(K, 0, r)
     if not (span > 0.0 and math.isfinite(r[Y_T])):
         return W_FALLBACK, t, 0, hist, nh, evq, w
-    gold = _events(law, p, fric, c, md, evq, y[S_Q])
+    gold = events_cold(law, p, fric, c, md, evq, y[S_Q])
     done = 0.0
     h = first * span
     n = 0
@@ -324,9 +321,9 @@ def w_integrate(
         if not (err <= 1.0):
             if h < 1e-6 * span or (not math.isfinite(err) and h < 1e-3 * span):
                 break
-            h *= max(0.2, growth(err)) if math.isfinite(err) else 0.25
+            h *= max(0.2, growth_llvm(err)) if math.isfinite(err) else 0.25
             continue
-        gnew = _events(law, p, fric, c, md, evq_new, Yn[S_Q])
+        gnew = events_cold(law, p, fric, c, md, evq_new, Yn[S_Q])
         b = 1.0
         if last and sgn < 0.0:
             # at w = 0 every force vanishes and so does the stick/slip function (0/0 as a
@@ -334,9 +331,9 @@ def w_integrate(
             # the step's but their ratio is well defined
             b = END_THETA
             dense_coeffs(K, Q)
-            dense(Y, h, b, Q, Yt)
+            dense_llvm(Y, h, b, Q, Yt)
             _r, evq_b = _rhs_w_cold(law, p, fric, c, md, Yt, w + sgn * b * h, sgn)
-            gnew = _events(law, p, fric, c, md, evq_b, Yt[S_Q])
+            gnew = events_cold(law, p, fric, c, md, evq_b, Yt[S_Q])
         ev = _fired(gold, gnew)
         if ev >= 0 and (ev != EV_FRIC or sgn > 0.0 or fric != FR_COULOMB):
             break  # back to the time integration
@@ -351,7 +348,7 @@ def w_integrate(
             for j in range(1, HISTORY_SUBSTEPS):
                 if j / HISTORY_SUBSTEPS >= theta:
                     break
-                dense(Y, h, j / HISTORY_SUBSTEPS, Q, Yt)
+                dense_llvm(Y, h, j / HISTORY_SUBSTEPS, Q, Yt)
                 hist, nh = record_row(hist, nh, Yt[Y_T], law, p, fric, c, md, state_tuple(Yt))
         if ev >= 0:  # the stick/slip switch: its state recomputed, then the driver switches
             k, evq_new = _to(
@@ -379,5 +376,5 @@ def w_integrate(
         w = wa + sgn * done
         if record:
             hist, nh = record_row(hist, nh, Y[Y_T], law, p, fric, c, md, state_tuple(Y))
-        h *= min(5.0, growth(err)) if err > 0.0 else 5.0
+        h *= min(5.0, growth_llvm(err)) if err > 0.0 else 5.0
     return W_FALLBACK, Y[Y_T], n, hist, nh, evq, w

@@ -6,7 +6,10 @@ event location, history, mode transitions) and writes the results at separation
 in the accumulator array ``acc`` (``A_*``).
 
 ``_integrate`` (the step loop, about 75 lines) is the longest function of the core: it carries
-the state between steps (step size, event tuple, mode, history buffer) and its early exits.
+the state between steps (step size, event tuple, mode, history buffer) and its early exits. It
+and the opening (``ends.opening``), each called from one place, are inlined into ``impact`` by
+numba: a function compiled on its own would have the whole engine below it linked into its
+library and its machine code generated again (``docs/engine/first-run.md``).
 """
 
 from __future__ import annotations
@@ -105,7 +108,7 @@ from impactlab.dynamics.kernels.status import (
     ST_STEP_UNDERFLOW,
     ST_TOO_MANY_EVENTS,
 )
-from impactlab.dynamics.kernels.step_control import growth
+from impactlab.dynamics.kernels.step_control import growth_llvm
 from impactlab.dynamics.kernels.tuples import state_tuple
 
 #: Scratch of the step loop (``_integrate``): its arrays, a recomputation, a w-integration.
@@ -121,7 +124,7 @@ def _shrink(err, h, hmin):
         # a non-finite force inside the step (law failure or outside its domain)
         h *= 0.25
         return h, (ST_NAN if h < hmin else GO_ON)
-    h *= max(0.2, growth(err))
+    h *= max(0.2, growth_llvm(err))
     return h, (ST_STEP_UNDERFLOW if h < hmin else GO_ON)
 
 
@@ -142,7 +145,7 @@ def _unloading_factor(md):
     return math.sqrt(max(1.0 - md[M_DR] / dm, 0.04))
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, inline="always", error_model="numpy")
 def _integrate(
     law, p, fric, c, md, y, sc, tstar, dstar, fscale, rtol, record, diag, hist, acc, work
 ):
@@ -216,7 +219,7 @@ def _integrate(
         t = tend
         for i in range(NS):
             y[i] = yev[i]
-        h *= 10.0 if err == 0.0 else min(10.0, growth(err))
+        h *= 10.0 if err == 0.0 else min(10.0, growth_llvm(err))
         if ev < 0:
             for i in range(NS):
                 K[0, i] = K[6, i]

@@ -53,7 +53,7 @@ OPENING_FIRST = 0.5
 THROUGH_SWITCH = 0.1
 
 
-@njit_internal
+@njit(cache=True, inline="always", error_model="numpy")
 def opening(
     law, p, fric, c, md, y, K, gold, rtol, sc, tstar, dstar, fscale, acc, diag, record, hist, nh,
     work,

@@ -8,7 +8,7 @@ from numba import njit
 
 from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.buffers import grown
-from impactlab.dynamics.kernels.dormand_prince import dense
+from impactlab.dynamics.kernels.dormand_prince import dense_llvm
 from impactlab.dynamics.kernels.friction import sticking
 from impactlab.dynamics.kernels.layout import (
     C_C0,
@@ -82,6 +82,6 @@ def record_substeps(hist, n, t, h, theta, law, p, fric, c, md, y, K, Q, yt):
         thj = j / HISTORY_SUBSTEPS
         if thj >= theta:
             break
-        dense(y, h, thj, Q, yt)
+        dense_llvm(y, h, thj, Q, yt)
         hist, n = record(hist, n, t + thj * h, law, p, fric, c, md, state_tuple(yt))
     return hist, n

@@ -46,14 +46,14 @@ from impactlab.dynamics.kernels.dormand_prince import (
     E5,
     E6,
     E7,
-    dense,
     dense_coeffs,
+    dense_llvm,
     recompute_views,
 )
 from impactlab.dynamics.kernels.layout import NEV, NS, S_Q
 from impactlab.dynamics.kernels.rhs import derivative, evaluate_stage, event_value, events_from
 from impactlab.dynamics.kernels.roots import G_ROUNDOFF, THETA_TOL, illinois, past_root
-from impactlab.dynamics.kernels.step_control import growth
+from impactlab.dynamics.kernels.step_control import growth_llvm
 from impactlab.dynamics.kernels.tuples import state_tuple
 
 
@@ -137,7 +137,7 @@ def locate(ev, g0, g1, law, p, fric, c, md, y0, K, h, Q, yt):
         th = (a * fb - b * fa) / (fb - fa)
         if not (a < th < b):
             th = 0.5 * (a + b)
-        dense(y0, h, th, Q, yt)
+        dense_llvm(y0, h, th, Q, yt)
         f = event_value(ev, law, p, fric, c, md, state_tuple(yt))
         if abs(f) <= tiny:
             if f > 0.0:  # past the root by round-off
@@ -145,7 +145,7 @@ def locate(ev, g0, g1, law, p, fric, c, md, y0, K, h, Q, yt):
             # short of it by round-off: probe just past the root (secant slope to b)
             probe = past_root(th, f, b, fb)
             if probe < b:
-                dense(y0, h, probe, Q, yt)
+                dense_llvm(y0, h, probe, Q, yt)
                 fp = event_value(ev, law, p, fric, c, md, state_tuple(yt))
                 if fp > 0.0:
                     return probe
@@ -201,7 +201,7 @@ def integrate_to(law, p, fric, c, md, y, k0, H, rtol, sc, out, work):
             Ks[0, i] = kc[i]
         err, _g, _ev = dp_step(law, p, fric, c, md, cur, Ks, hh, rtol, sc, out)
         if not (err <= 1.0) and hh > 1e-6 * H:
-            hh *= max(0.2, growth(err)) if math.isfinite(err) else 0.25
+            hh *= max(0.2, growth_llvm(err)) if math.isfinite(err) else 0.25
             continue
         if last:
             break
@@ -209,5 +209,5 @@ def integrate_to(law, p, fric, c, md, y, k0, H, rtol, sc, out, work):
         for i in range(NS):
             cur[i] = out[i]
             kc[i] = Ks[6, i]
-        hh *= min(5.0, growth(err)) if err > 0.0 else 5.0
+        hh *= min(5.0, growth_llvm(err)) if err > 0.0 else 5.0
     return n

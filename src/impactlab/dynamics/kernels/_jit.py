@@ -24,7 +24,9 @@ the value instead: ``np.int64(FR_MINDLIN)``, or a ``False`` computed at run time
 folds the history code away, 1-3 % of its speed (``docs/engine/first-run.md``).
 ``tests/core/test_compiled_signatures.py`` checks the signatures a warm-up leaves in the cache.
 
-Inlined by LLVM, for the force evaluation in the Dormand-Prince stage loops: numba's
+Inlined by LLVM, for the force evaluation in the Dormand-Prince stage loops (and its pieces
+shared by the time step and the w-step, and small kernels with many call sites: the state
+tuple, the dense output, the step factor): numba's
 ``inline="always"`` inlines a function's Python IR into every caller, whose type inference and
 lowering then handle the callee's body again, and numba's type inference of a loop body grows
 faster than its size (it passes over the whole body again until no type changes).

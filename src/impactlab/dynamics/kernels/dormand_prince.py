@@ -14,6 +14,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from impactlab.dynamics.kernels._jit import njit_llvm_inline
+
 # --- Dormand-Prince 5(4) tableau (Dormand & Prince 1980) and Shampine's dense output -------------
 A21 = 1.0 / 5.0
 A31, A32 = 3.0 / 40.0, 9.0 / 40.0
@@ -125,6 +127,14 @@ def dense(y0, h, theta, Q, out):
     t4 = t3 * theta
     for i in range(out.shape[0]):
         out[i] = y0[i] + h * (Q[i, 0] * theta + Q[i, 1] * t2 + Q[i, 2] * t3 + Q[i, 3] * t4)
+
+
+@njit_llvm_inline
+def dense_llvm(y0, h, theta, Q, out):
+    """``dense`` compiled once and inlined by LLVM (``kernels._jit.njit_llvm_inline``), for the
+    rigid engine's event location and history, where numba would otherwise translate and type
+    it again at each of its seven call sites."""
+    dense(y0, h, theta, Q, out)
 
 
 @njit(cache=True, inline="always", error_model="numpy")

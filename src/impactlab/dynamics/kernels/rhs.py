@@ -10,7 +10,7 @@ from __future__ import annotations
 from numba import njit
 
 from impactlab.contact.kernels import residual_depth
-from impactlab.dynamics.kernels._jit import njit_llvm_inline, njit_no_refcount
+from impactlab.dynamics.kernels._jit import njit_internal, njit_llvm_inline, njit_no_refcount
 from impactlab.dynamics.kernels.friction import (
     friction_event,
     tangential_force,
@@ -44,15 +44,35 @@ from impactlab.dynamics.kernels.layout import (
 from impactlab.dynamics.kernels.normal import geometry, normal_force
 
 
+@njit_llvm_inline
+def geometry_llvm(c, y):
+    """``normal.geometry`` compiled once and inlined by LLVM (``kernels._jit``): the force
+    evaluations of the time step (``evaluate``) and of the w-step (``approach._rhs_w``) share
+    it, so that numba compiles it once for both."""
+    return geometry(c, y)
+
+
+@njit_llvm_inline
+def normal_force_llvm(law, p, md, delta):
+    """``normal.normal_force`` compiled once and inlined by LLVM (as ``geometry_llvm``)."""
+    return normal_force(law, p, md, delta)
+
+
+@njit_llvm_inline
+def tangential_force_llvm(law, p, fric, c, md, delta, fn, spin, a, b, q):
+    """``friction.tangential_force`` compiled once and inlined by LLVM (as ``geometry_llvm``)."""
+    return tangential_force(law, p, fric, c, md, delta, fn, spin, a, b, q)
+
+
 @njit(cache=True, inline="always", error_model="numpy")
 def evaluate(law, p, fric, c, md, y):
     """(delta, a, b, F_n, F_t, v_n, v_slip, k_t) at state ``y`` in mode ``md``."""
-    delta, a, b, _xs, _sl = geometry(c, y)
-    Fn = normal_force(law, p, md, delta)
+    delta, a, b, _xs, _sl = geometry_llvm(c, y)
+    Fn = normal_force_llvm(law, p, md, delta)
     w = y[S_SPIN]
     vn = y[S_VY] - w * a
     vs = y[S_VX] + w * b
-    Ft, kt = tangential_force(law, p, fric, c, md, delta, Fn, w, a, b, y[S_Q])
+    Ft, kt = tangential_force_llvm(law, p, fric, c, md, delta, Fn, w, a, b, y[S_Q])
     return delta, a, b, Fn, Ft, vn, vs, kt
 
 
@@ -124,6 +144,15 @@ def evaluate_cold(law, p, fric, c, md, y):
     return evaluate_stage(law, p, fric, c, md, y)
 
 
+@njit_internal
+def events_cold(law, p, fric, c, md, evq, q):
+    """Event tuple from the evaluated quantities ``evq`` (``events_from``), compiled once and
+    called, for the callers off the time step's loop (``rhs_events_cold``, the w-steps of
+    ``approach``, which read their events at five places, once per step)."""
+    delta, _a, _b, Fn, Ft, vn, vs, kt = evq
+    return events_from(law, p, fric, c, md, delta, Fn, Ft, vn, vs, kt, q)
+
+
 @njit_no_refcount
 def rhs_events_cold(law, p, fric, c, md, y):
     """``rhs_events`` compiled once as a function of its own, for the callers off the step loop
@@ -131,9 +160,8 @@ def rhs_events_cold(law, p, fric, c, md, y):
     numba inlines costs seconds of compilation. The force evaluation here is a call of
     ``evaluate_cold`` (not a copy of its own): the same numbers, about 2 s less to compile."""
     ev = evaluate_cold(law, p, fric, c, md, y)
-    delta, _a, _b, Fn, Ft, vn, vs, kt = ev
     der = derivative(fric, c, md, y, ev)
-    return der, events_from(law, p, fric, c, md, delta, Fn, Ft, vn, vs, kt, y[S_Q]), ev
+    return der, events_cold(law, p, fric, c, md, ev, y[S_Q]), ev
 
 
 @njit(cache=True, error_model="numpy")

@@ -15,6 +15,7 @@ import numpy as np
 from numba import njit
 
 from impactlab._floatbits import significand_exponent
+from impactlab.dynamics.kernels._jit import njit_llvm_inline
 
 #: m^-0.2 on [0.5, 1) as a cubic in t = 4 m - 3 (Chebyshev interpolant, relative error 1.5e-4).
 _G0, _G1, _G2, _G3 = (
@@ -49,3 +50,10 @@ def power_growth(err):
     """The step-size factor 0.9 err^-0.2 by ``pow`` (err > 0: inf at err = 0, which the
     callers' bounds clip)."""
     return 0.9 * err**-0.2
+
+
+@njit_llvm_inline
+def growth_llvm(err):
+    """``growth`` compiled once and inlined by LLVM (``kernels._jit.njit_llvm_inline``), for the
+    rigid engine's step loops (eight call sites that numba would translate and type again)."""
+    return growth(err)

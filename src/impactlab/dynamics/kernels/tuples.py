@@ -5,10 +5,14 @@ from __future__ import annotations
 
 from numba import njit
 
+from impactlab.dynamics.kernels._jit import njit_llvm_inline
 
-@njit(cache=True, inline="always", error_model="numpy")
+
+@njit_llvm_inline
 def state_tuple(y):
-    """The state array ``y`` (length NS) as a tuple."""
+    """The state array ``y`` (length NS) as a tuple; compiled once for each array type and
+    inlined by LLVM (``kernels._jit.njit_llvm_inline``): numba would translate and type it
+    again at each of its two dozen call sites."""
     return (y[0], y[1], y[2], y[3], y[4], y[5], y[6], y[7])
 
 
