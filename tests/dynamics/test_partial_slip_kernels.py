@@ -10,7 +10,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from impactlab.dynamics.kernels.cells import limits, limits_inv
-from impactlab.dynamics.slipcore.bracket import next_point, update
+from impactlab.dynamics.kernels.roots import anderson_bjorck, anderson_bjorck_point
 
 TOL = 1e-13
 DX = 1e-5
@@ -59,10 +59,10 @@ def _search(g, lo=0.0, hi=0.5):
     a, fa, b, fb, side = lo, g(lo), hi, g(hi), 0
     n = 0
     while b - a > TOL and n < 60:
-        th = next_point(a, fa, b, fb, side, 0.5 * TOL)
+        th = anderson_bjorck_point(a, fa, b, fb, side, 0.5 * TOL)
         assert a < th < b
         n += 1
-        a, fa, b, fb, side = update(a, fa, b, fb, side, th, g(th))
+        a, fa, b, fb, side = anderson_bjorck(a, fa, b, fb, side, th, g(th))
     return b, a, n
 
 

@@ -185,7 +185,10 @@ LITERATURE: tuple[Reference, ...] = (
         "N. Anderson, A. Bjorck, A new high order method of regula falsi type for computing a "
         "root of an equation, BIT 13 (1973) 253-264",
         "10.1007/BF01951936",
-        note="the partial-slip engine's event search (dynamics.slipcore.bracket); DOI not checked",
+        note=(
+            "the partial-slip engine's event search (dynamics.kernels.roots.anderson_bjorck); "
+            "DOI not checked"
+        ),
     ),
     Reference(
         "kabsch-1976",

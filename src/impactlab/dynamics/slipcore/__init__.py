@@ -3,7 +3,8 @@ Mindlin-Deresiewicz partial-slip friction, one contact.
 
 A driver beside ``impactlab.dynamics.core`` on the shared kernels of
 ``impactlab.dynamics.kernels`` (layout, normal contact, input checks, transitions, the
-Dormand-Prince tableau and dense output, the partial-slip cells); it never imports another
+Dormand-Prince tableau and dense output, the partial-slip cells, the Anderson-Bjorck bracket
+update of the event search); it never imports another
 driver. The tangential contact is the exact
 Mindlin-Deresiewicz model in its method-of-dimensionality-reduction form, discretised into cells
 (``model``); every cell switch is an event located on the dense output, except the release of
@@ -11,8 +12,7 @@ a slipping cell (its force reaches zero continuously). The derivation, validity
 and verification are in docs/verification/index.md ("Partial slip").
 
 Modules, lowest first: ``layout`` (parameter and event indices, defaults), ``model``
-(right-hand side, event functions), ``bracket`` (the root search's bracket updates),
-``stepper`` (Dormand-Prince on arrays, event location),
+(right-hand side, event functions), ``stepper`` (Dormand-Prince on arrays, event location),
 ``switches`` (births, releases, stick/slip, settle), ``outputs`` (bookkeeping, history,
 results), ``driver`` (``impact_slip``).
 """

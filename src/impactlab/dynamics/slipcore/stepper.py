@@ -21,8 +21,8 @@ from impactlab.dynamics.kernels._jit import njit_llvm_inline, njit_no_refcount
 from impactlab.dynamics.kernels.buffers import copy_into
 from impactlab.dynamics.kernels.cells import SLIP
 from impactlab.dynamics.kernels.dormand_prince import DENSE_P, DP_E, stage_point
+from impactlab.dynamics.kernels.roots import anderson_bjorck, anderson_bjorck_point
 from impactlab.dynamics.kernels.step_control import power_growth
-from impactlab.dynamics.slipcore.bracket import next_point, update
 from impactlab.dynamics.slipcore.layout import G_CELL, Y_CELL
 from impactlab.dynamics.slipcore.model import derivative, evaluate, event_value, events, n_in
 
@@ -126,9 +126,9 @@ def locate(k, lo, g0, hi, g1, law, p, c, md, y0, Q, h, cm, sg, cp, yt):
     a, fa, b, fb = lo, g0, hi, g1
     side = 0  # +1: the g > 0 end moved last, -1: the other end, 0: neither yet
     for _ in range(60):
-        th = next_point(a, fa, b, fb, side, 0.5 * EVENT_BRACKET)
+        th = anderson_bjorck_point(a, fa, b, fb, side, 0.5 * EVENT_BRACKET)
         f = event_at(k, th, law, p, c, md, y0, Q, h, cm, sg, cp, yt)
-        a, fa, b, fb, side = update(a, fa, b, fb, side, th, f)
+        a, fa, b, fb, side = anderson_bjorck(a, fa, b, fb, side, th, f)
         if b - a <= EVENT_BRACKET:
             break
     return b
