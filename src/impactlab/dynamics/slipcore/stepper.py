@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 from numba import njit
 
 from impactlab.dynamics.kernels._jit import njit_llvm_inline, njit_no_refcount
@@ -142,7 +143,9 @@ def _first_in(lo, ga, gb, law, p, c, md, y0, Q, h, cm, sg, cp, yt):
     evaluated at that root, and located only where it has already fired there (or, for a
     lower index, fires within SIMULTANEOUS after it: simultaneous events go to the lowest
     index, normal events before birth and release before the cells)."""
-    best = -1
+    # a typed value, not the constant -1: numba types a call first with the constant (before
+    # the loop's int64 reaches it) and compiled locate and the event functions for it as well
+    best = np.int64(-1)
     est = 2.0
     for k in range(ga.shape[0]):
         if ga[k] <= 0.0 and gb[k] > 0.0:
