@@ -145,7 +145,7 @@ def _first_in(lo, ga, gb, law, p, c, md, y0, Q, h, cm, sg, cp, yt):
     index, normal events before birth and release before the cells)."""
     # a typed value, not the constant -1: numba types a call first with the constant (before
     # the loop's int64 reaches it) and compiled locate and the event functions for it as well
-    best = np.int64(-1)
+    best = int(np.int64(-1))
     est = 2.0
     for k in range(ga.shape[0]):
         if ga[k] <= 0.0 and gb[k] > 0.0:
