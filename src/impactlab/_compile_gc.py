@@ -19,15 +19,10 @@ import gc
 import threading
 from typing import Any
 
+from impactlab._compile_notice import module_of, register
+
 #: The package whose compilation pauses the collector.
 PACKAGE = "impactlab."
-
-
-def _module_of(event: Any) -> str:
-    try:
-        return str(event.data["dispatcher"].py_func.__module__)
-    except (AttributeError, KeyError, TypeError):
-        return ""
 
 
 class GCPause:
@@ -41,7 +36,7 @@ class GCPause:
     def on_start(self, event: Any) -> None:
         with self.lock:
             self.depth += 1
-            if self.depth == 1 and gc.isenabled() and _module_of(event).startswith(PACKAGE):
+            if self.depth == 1 and gc.isenabled() and module_of(event).startswith(PACKAGE):
                 gc.disable()
                 self.paused = True
 
@@ -60,19 +55,5 @@ _INSTALLED: list[Any] = []
 
 def install() -> None:
     """Register the pause with numba's compile events (once per process)."""
-    if _INSTALLED:
-        return
-    from numba.core import event
-
-    pause = GCPause()
-
-    class _Listener(event.Listener):  # type: ignore[misc]
-        def on_start(self, ev: Any) -> None:
-            pause.on_start(ev)
-
-        def on_end(self, ev: Any) -> None:
-            pause.on_end(ev)
-
-    handle = _Listener()
-    event.register("numba:compile", handle)
-    _INSTALLED.append(handle)
+    if not _INSTALLED:
+        _INSTALLED.append(register(GCPause()))

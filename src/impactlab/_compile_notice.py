@@ -111,7 +111,7 @@ class _Listener:
                 return
             if self.depth != 1 or os.environ.get("IMPACTLAB_QUIET_COMPILE", "") not in ("", "0"):
                 return
-            module = _module_of(event)
+            module = module_of(event)
             if module.startswith("impactlab."):
                 cache = os.environ.get("NUMBA_CACHE_DIR", "numba's default folder")
                 self.notice = _Notice(module, sys.stderr, cache)
@@ -126,11 +126,29 @@ class _Listener:
         notice.finish()
 
 
-def _module_of(event: Any) -> str:
+def module_of(event: Any) -> str:
+    """The module of the function a ``numba:compile`` event compiles ("" if it has none)."""
     try:
         return str(event.data["dispatcher"].py_func.__module__)
     except (AttributeError, KeyError, TypeError):
         return ""
+
+
+def register(target: Any) -> Any:
+    """Register ``target`` (``on_start(event)``, ``on_end(event)``) for numba's
+    ``numba:compile`` events; returns numba's listener."""
+    from numba.core import event
+
+    class _NumbaListener(event.Listener):  # type: ignore[misc]
+        def on_start(self, ev: Any) -> None:
+            target.on_start(ev)
+
+        def on_end(self, ev: Any) -> None:
+            target.on_end(ev)
+
+    handle = _NumbaListener()
+    event.register("numba:compile", handle)
+    return handle
 
 
 _INSTALLED: list[Any] = []
@@ -138,19 +156,5 @@ _INSTALLED: list[Any] = []
 
 def install() -> None:
     """Register the listener with numba (once per process)."""
-    if _INSTALLED:
-        return
-    from numba.core import event
-
-    listener = _Listener()
-
-    class _NumbaListener(event.Listener):  # type: ignore[misc]
-        def on_start(self, ev: Any) -> None:
-            listener.on_start(ev)
-
-        def on_end(self, ev: Any) -> None:
-            listener.on_end(ev)
-
-    handle = _NumbaListener()
-    event.register("numba:compile", handle)
-    _INSTALLED.append(handle)
+    if not _INSTALLED:
+        _INSTALLED.append(register(_Listener()))

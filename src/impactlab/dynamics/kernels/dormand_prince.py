@@ -119,14 +119,27 @@ def error_sum(y, ynew, K, h, rtol, sc, n):
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def dense(y0, h, theta, Q, out):
-    """Dense output at t0 + theta h (Q = K^T P, computed by ``dense_coeffs``; any state
-    length: that of ``out``)."""
+def dense_entry(y0, h, i, theta, t2, t3, t4, Q, out):
+    """Entry ``i`` of the dense output at t0 + theta h (t2, t3, t4: the powers of theta)."""
+    out[i] = y0[i] + h * (Q[i, 0] * theta + Q[i, 1] * t2 + Q[i, 2] * t3 + Q[i, 3] * t4)
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def dense_rows(y0, h, theta, Q, out, n):
+    """Dense output at t0 + theta h of the first ``n`` components (Q = K^T P, computed by
+    ``dense_coeffs``)."""
     t2 = theta * theta
     t3 = t2 * theta
     t4 = t3 * theta
-    for i in range(out.shape[0]):
-        out[i] = y0[i] + h * (Q[i, 0] * theta + Q[i, 1] * t2 + Q[i, 2] * t3 + Q[i, 3] * t4)
+    for i in range(n):
+        dense_entry(y0, h, i, theta, t2, t3, t4, Q, out)
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def dense(y0, h, theta, Q, out):
+    """Dense output at t0 + theta h (Q = K^T P, computed by ``dense_coeffs``; any state
+    length: that of ``out``)."""
+    dense_rows(y0, h, theta, Q, out, out.shape[0])
 
 
 @njit_llvm_inline
@@ -138,15 +151,22 @@ def dense_llvm(y0, h, theta, Q, out):
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def dense_coeffs(K, Q):
-    """The dense-output coefficients Q = K^T DENSE_P of the last step (any state length: the
-    rows of ``Q``; each entry sums its 7 terms in stage order)."""
-    for i in range(Q.shape[0]):
+def dense_coeffs_rows(K, Q, n):
+    """The dense-output coefficients Q = K^T DENSE_P of the last step for the first ``n``
+    components (each entry sums its 7 terms in stage order)."""
+    for i in range(n):
         for j in range(4):
             s = 0.0
             for st in range(7):
                 s += K[st, i] * DENSE_P[st, j]
             Q[i, j] = s
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def dense_coeffs(K, Q):
+    """The dense-output coefficients Q = K^T DENSE_P of the last step (any state length: the
+    rows of ``Q``)."""
+    dense_coeffs_rows(K, Q, Q.shape[0])
 
 
 @njit(cache=True, inline="always", error_model="numpy")

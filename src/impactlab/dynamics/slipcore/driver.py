@@ -24,6 +24,7 @@ from impactlab.dynamics.kernels.cells import (
     birth,
     n_in,
 )
+from impactlab.dynamics.kernels.dormand_prince import dense_rows
 from impactlab.dynamics.kernels.layout import (
     A_DMAX,
     A_EMIN,
@@ -79,7 +80,6 @@ from impactlab.dynamics.slipcore.layout import CP_FSC, EXTRA, G_CELL, NCP, Y_CEL
 from impactlab.dynamics.slipcore.model import boundary_horizon, derivative, evaluate, events
 from impactlab.dynamics.slipcore.outputs import A_JUMP, NA, record, separation, track
 from impactlab.dynamics.slipcore.stepper import (
-    dense_active,
     first_event,
     integrate_to,
     rhs,
@@ -155,7 +155,7 @@ def _dense_rows(hist, nh, t, h, theta, law, p, c, md, y, cm, sg, cp, W, Q, yt):
     nact = Y_CELL + n_in(cm)
     for j in range(1, 4):
         if j / 4.0 < theta:
-            dense_active(y, h, j / 4.0, Q, yt, nact)
+            dense_rows(y, h, j / 4.0, Q, yt, nact)
             hist, nh = record(hist, nh, t + j * h / 4.0, law, p, c, md, yt, cm, sg, cp, W)
     return hist, nh
 

@@ -21,7 +21,13 @@ from numba import njit
 from impactlab.dynamics.kernels._jit import njit_llvm_inline, njit_no_refcount
 from impactlab.dynamics.kernels.buffers import copy_into
 from impactlab.dynamics.kernels.cells import SLIP
-from impactlab.dynamics.kernels.dormand_prince import DENSE_P, DP_E, stage_point
+from impactlab.dynamics.kernels.dormand_prince import (
+    DP_E,
+    dense_coeffs_rows,
+    dense_entry,
+    dense_rows,
+    stage_point,
+)
 from impactlab.dynamics.kernels.roots import anderson_bjorck, anderson_bjorck_point
 from impactlab.dynamics.kernels.step_control import power_growth
 from impactlab.dynamics.slipcore.layout import G_CELL, Y_CELL
@@ -76,34 +82,6 @@ def step(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew):
     return math.sqrt(err / count), ev
 
 
-@njit(cache=True, inline="always", error_model="numpy")
-def dense_coeffs_active(K, Q, n):
-    """``dormand_prince.dense_coeffs`` for the first ``n`` components only (the rigid-body
-    state and the cells in contact; the same sums, the same bits)."""
-    for i in range(n):
-        for j in range(4):
-            s = 0.0
-            for st in range(7):
-                s += K[st, i] * DENSE_P[st, j]
-            Q[i, j] = s
-
-
-@njit(cache=True, inline="always", error_model="numpy")
-def _dense_entry(y0, h, i, theta, t2, t3, t4, Q, out):
-    """Entry ``i`` of ``dormand_prince.dense`` (the same expression, the same bits)."""
-    out[i] = y0[i] + h * (Q[i, 0] * theta + Q[i, 1] * t2 + Q[i, 2] * t3 + Q[i, 3] * t4)
-
-
-@njit(cache=True, inline="always", error_model="numpy")
-def dense_active(y0, h, theta, Q, out, n):
-    """The dense output at t0 + theta h of the first ``n`` components."""
-    t2 = theta * theta
-    t3 = t2 * theta
-    t4 = t3 * theta
-    for i in range(n):
-        _dense_entry(y0, h, i, theta, t2, t3, t4, Q, out)
-
-
 @njit_llvm_inline
 def event_at(k, theta, law, p, c, md, y0, Q, h, cm, sg, cp, yt):
     """Event function ``k`` on the dense output at ``theta`` (``model.event_value``): only the
@@ -113,9 +91,9 @@ def event_at(k, theta, law, p, c, md, y0, Q, h, cm, sg, cp, yt):
     t3 = t2 * theta
     t4 = t3 * theta
     for i in range(Y_CELL):
-        _dense_entry(y0, h, i, theta, t2, t3, t4, Q, yt)
+        dense_entry(y0, h, i, theta, t2, t3, t4, Q, yt)
     if k >= G_CELL:
-        _dense_entry(y0, h, Y_CELL + k - G_CELL, theta, t2, t3, t4, Q, yt)
+        dense_entry(y0, h, Y_CELL + k - G_CELL, theta, t2, t3, t4, Q, yt)
     return event_value(k, law, p, c, md, yt, cm, sg, cp)
 
 
@@ -183,8 +161,8 @@ def first_event(gold, gnew, gmid, law, p, c, md, y0, K, Q, h, cm, sg, cp, Wm, yt
     count as simultaneous: the lowest index wins (normal events, then birth and release, then
     the cells). Leaves the dense-output coefficients of the active components in ``Q``."""
     nact = Y_CELL + n_in(cm)
-    dense_coeffs_active(K, Q, nact)
-    dense_active(y0, h, 0.5, Q, yt, nact)
+    dense_coeffs_rows(K, Q, nact)
+    dense_rows(y0, h, 0.5, Q, yt, nact)
     events(c, md, cm, sg, cp, Wm, evaluate(law, p, c, md, yt, cm, sg, cp, Wm), gmid)
     # the first half, then (if nothing fired there) the second: later events need no location
     best, theta = _first_in(0.0, gold, gmid, law, p, c, md, y0, Q, h, cm, sg, cp, yt)
