@@ -1,7 +1,8 @@
 """``simulate`` with ``friction="partial_slip"``: one impact of a rigid rod or sphere with
-Mindlin-Deresiewicz partial-slip friction, run by the compiled ``impactlab.dynamics.slipcore``
-through ``impactlab.dynamics.slip_batch`` (the batch engine's per-case function: a batch's
-results equal ``simulate``'s bit for bit).
+Mindlin-Deresiewicz partial-slip friction, run by the compiled ``impactlab.dynamics.slipcore``:
+the steps of the batch engine's per-case function (``impactlab.dynamics.slip_batch.slip_case``)
+called one by one from Python, so that a first impact compiles neither the rigid core again
+nor the batch's function (a batch's results equal ``simulate``'s bit for bit).
 
 The cells of the tangential model span the largest contact radius, estimated by a pre-pass of
 the rigid core (frictionless for a sphere, whose normal motion friction does not change: exact;
@@ -11,8 +12,11 @@ with ``mindlin`` friction for a rod); a contact that outgrows the estimate takes
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
+from impactlab.contact.history_kernels import loading_contact_radius
 from impactlab.dynamics.checks import ImpactInputs
 from impactlab.dynamics.core.driver import impact
 from impactlab.dynamics.kernels import layout as L
@@ -20,7 +24,7 @@ from impactlab.dynamics.kernels import status as S
 from impactlab.dynamics.models import body_params, kernel_params
 from impactlab.dynamics.outcome import impact_result, status_error
 from impactlab.dynamics.results import ImpactResult
-from impactlab.dynamics.slip_batch import slip_case, slip_estimate
+from impactlab.dynamics.slip_batch import RADIUS_MARGIN, prepass_friction
 from impactlab.dynamics.slipcore import impact_slip
 from impactlab.friction import COULOMB, PARTIAL_SLIP_CELLS
 
@@ -28,43 +32,46 @@ __all__ = ["run_partial_slip"]
 
 
 def largest_radius(x: ImpactInputs) -> tuple[int, float]:
-    """(status, estimated largest contact radius [m]) from a pre-pass of the rigid core."""
+    """(status, estimated largest contact radius [m]) from a pre-pass of the rigid core: the
+    computation of ``slip_batch.slip_estimate``, run from Python on the rigid core's own compile
+    (the signature of ``simulate``'s rigid calls), so that a first partial-slip impact does not
+    compile the rigid core again into another library. The same bits as ``slip_estimate``."""
     out = np.empty(L.N_OUT)
     vx, vy = x.velocity
-    status, a = slip_estimate(
-        x.model.law_id, kernel_params(x.model), body_params(x.body, x.flat), x.angle, vx, vy,
-        x.spin, x.mu, x.gravity, x.constant_angle, x.rtol, False, out,
+    law, p, bp = x.model.law_id, kernel_params(x.model), body_params(x.body, x.flat)
+    fric, mu = prepass_friction(bp, x.mu)
+    status, _h, _n = impact(
+        law, p, fric, bp, x.angle, vx, vy, x.spin, mu, x.gravity, x.constant_angle, x.rtol,
+        False, False, out,
     )  # fmt: skip
-    return int(status), float(a)
+    if status != S.ST_OK:
+        return int(status), math.nan
+    return S.ST_OK, float(loading_contact_radius(law, p, out[L.O_DMAX])) * RADIUS_MARGIN
 
 
 def run_partial_slip(
     x: ImpactInputs, history: bool, n_cells: int = PARTIAL_SLIP_CELLS
 ) -> tuple[int, np.ndarray, np.ndarray | None]:
-    """(status, outputs, history rows or None) of one partial-slip impact (checked inputs)."""
+    """(status, outputs, history rows or None) of one partial-slip impact (checked inputs): the
+    computation of ``slip_batch.slip_case``, the batch's per-case function, step by step (its
+    results equal a batch's bit for bit)."""
     out = np.empty(L.N_OUT)
     vx, vy = x.velocity
     law, p, bp = x.model.law_id, kernel_params(x.model), body_params(x.body, x.flat)
-    if not history:  # the batch engine's per-case function
-        status = slip_case(
-            law, p, bp, x.angle, vx, vy, x.spin, x.mu, x.gravity, x.constant_angle, x.rtol,
-            False, n_cells, out,
-        )  # fmt: skip
-        return int(status), out, None
     if x.mu < L.MU_NEGLIGIBLE:  # frictionless, as in the core (``layout.MU_NEGLIGIBLE``)
         status, hist, nh = impact(
             law, p, COULOMB, bp, x.angle, vx, vy, x.spin, 0.0, x.gravity, x.constant_angle,
-            x.rtol, True, False, out,
+            x.rtol, history, False, out,
         )  # fmt: skip
-        return int(status), out, hist[:nh]
+        return int(status), out, (hist[:nh] if history else None)
     status, a_est = largest_radius(x)
     if status != S.ST_OK:
         return status, out, None
     status, hist, nh, _jump = impact_slip(
-        law, p, bp, x.angle, vx, vy, x.spin, x.mu, x.gravity, x.constant_angle, x.rtol, True,
+        law, p, bp, x.angle, vx, vy, x.spin, x.mu, x.gravity, x.constant_angle, x.rtol, history,
         False, n_cells, a_est, out,
     )  # fmt: skip
-    return int(status), out, hist[:nh]
+    return int(status), out, (hist[:nh] if history else None)
 
 
 def simulate_partial_slip(

@@ -16,6 +16,7 @@ import math
 
 import numpy as np
 from numba import njit, prange
+from numba.extending import register_jitable
 
 from impactlab.bodies.layout import BP_KIND, KIND_ROD
 from impactlab.contact.history_kernels import loading_contact_radius
@@ -30,6 +31,16 @@ from impactlab.dynamics.slipcore import impact_slip
 RADIUS_MARGIN = 1.0001
 
 
+@register_jitable
+def prepass_friction(bp: np.ndarray, mu: float) -> tuple[int, float]:
+    """(friction id, mu) of the rigid core's pre-pass: ``mindlin`` for a rod that rubs, else
+    frictionless (a sphere's normal motion does not depend on friction). Plain Python when
+    called from Python, inlined where compiled code calls it."""
+    if bp[BP_KIND] == KIND_ROD and mu >= MU_NEGLIGIBLE:
+        return FR_MINDLIN, mu
+    return FR_COULOMB, 0.0
+
+
 @njit(cache=True, error_model="numpy")
 def slip_estimate(law, p, bp, th0, vx0, vy0, w0, mu, g, const_angle, rtol, diag, out):
     """(status, estimated largest contact radius [m]) from the pre-pass of the rigid core (its
@@ -40,12 +51,10 @@ def slip_estimate(law, p, bp, th0, vx0, vy0, w0, mu, g, const_angle, rtol, diag,
     a value, none a constant. numba compiles a function once per signature, and a constant
     argument (``Literal[int](1)``, ``Literal[bool](False)``) is a signature of its own: it would
     compile the whole rigid core again for this call."""
-    rod = bp[BP_KIND] == KIND_ROD
-    rubbing = mu >= MU_NEGLIGIBLE
+    fric, mu_pre = prepass_friction(bp, mu)
     no_history = out.shape[0] < 0  # False, as a value (see above)
     st, _h, _n = impact(
-        law, p, FR_MINDLIN if rod and rubbing else FR_COULOMB, bp, th0, vx0, vy0, w0,
-        mu if rod and rubbing else 0.0, g, const_angle, rtol, no_history, diag, out,
+        law, p, fric, bp, th0, vx0, vy0, w0, mu_pre, g, const_angle, rtol, no_history, diag, out,
     )  # fmt: skip
     if st != ST_OK:
         return st, math.nan

@@ -160,7 +160,7 @@ def _dense_rows(hist, nh, t, h, theta, law, p, c, md, y, cm, sg, cp, W, Q, yt):
     return hist, nh
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, inline="always", error_model="numpy")
 def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, acc):
     """The step loop from first touch to separation, a failure or MAX_STEPS.
     Returns (status, t, steps, mode, history, rows)."""

@@ -61,14 +61,26 @@ from impactlab.dynamics.kernels.layout import (
     S_X,
     S_Y,
 )
-from impactlab.dynamics.kernels.normal import (
-    dforce_ddelta,
-    dradius_ddelta,
-    geometry,
-    normal_force,
-    radius,
-)
+from impactlab.dynamics.kernels.normal import dforce_ddelta, dradius_ddelta, radius
+from impactlab.dynamics.kernels.rhs import geometry_llvm, normal_force_llvm
 from impactlab.dynamics.slipcore.layout import G_BIRTH, G_CELL, G_REL, Y_CELL
+
+
+@njit_llvm_inline
+def radius_llvm(law, p, md, delta):
+    """``normal.radius`` compiled once and inlined by LLVM (``kernels._jit``): ``evaluate`` and
+    ``event_value`` share it, as they share ``kernels.rhs.geometry_llvm`` and
+    ``normal_force_llvm`` with the rigid engine (compiled there already)."""
+    return radius(law, p, md, delta)
+
+
+@njit_llvm_inline
+def normal_rates(law, p, md, delta, Fn, ddel):
+    """(dF_n/dt [N/s], da/dt [m/s]) at interference ``delta`` [m] on the current branch, with
+    F_n = ``Fn`` and d delta/dt = ``ddel`` [m/s]; compiled once and inlined by LLVM."""
+    Fd = dforce_ddelta(law, p, md, delta, Fn) * ddel
+    ad = dradius_ddelta(law, p, md, delta) * ddel
+    return Fd, ad
 
 
 @njit_no_refcount
@@ -76,15 +88,13 @@ def evaluate(law, p, c, md, y, cm, sg, cp, W):
     """Contact quantities at state ``y``: fills W[0] = limits L_i, W[1] = dL_i/dt and W[2] = the
     cell forces f_i (OUT: 0, SLIP: s_i L_i) and returns
     (delta, a, b, F_n, F_t, v_n, v_slip, radius, d radius/dt, n in contact)."""
-    delta, a, b, _xs, _sl = geometry(c, y)
+    delta, a, b, _xs, _sl = geometry_llvm(c, y)
     w = y[S_SPIN]
     vn = y[S_VY] - w * a
     vs = y[S_VX] + w * b
-    Fn = normal_force(law, p, md, delta)
-    ar = radius(law, p, md, delta)
-    ddel = -vn
-    Fd = dforce_ddelta(law, p, md, delta, Fn) * ddel
-    ad = dradius_ddelta(law, p, md, delta) * ddel
+    Fn = normal_force_llvm(law, p, md, delta)
+    ar = radius_llvm(law, p, md, delta)
+    Fd, ad = normal_rates(law, p, md, delta, Fn, -vn)
     nin = n_in(cm)
     dx = cp[CP_DX]
     mu = c[C_MU]
@@ -157,7 +167,7 @@ def event_value(k, law, p, c, md, y, cm, sg, cp):
     """Event function ``k`` alone at state ``y``: the value ``events`` gives it, from only the
     quantities it needs (the normal contact, and for a cell's event that cell's limit and force,
     by the formulas of ``evaluate``). The event search calls it many times per event."""
-    delta, a, b, _xs, _sl = geometry(c, y)
+    delta, a, b, _xs, _sl = geometry_llvm(c, y)
     w = y[S_SPIN]
     vn = y[S_VY] - w * a
     comp = md[M_COMP] != 0.0
@@ -175,7 +185,7 @@ def event_value(k, law, p, c, md, y, cm, sg, cp):
         return md[M_DR] - delta
     if k < G_BIRTH:
         return -1.0
-    ar = radius(law, p, md, delta)
+    ar = radius_llvm(law, p, md, delta)
     dx = cp[CP_DX]
     nin = n_in(cm)
     if k == G_BIRTH:
@@ -186,10 +196,8 @@ def event_value(k, law, p, c, md, y, cm, sg, cp):
     if i >= nin:
         return -1.0
     vs = y[S_VX] + w * b
-    Fn = normal_force(law, p, md, delta)
-    ddel = -vn
-    Fd = dforce_ddelta(law, p, md, delta, Fn) * ddel
-    ad = dradius_ddelta(law, p, md, delta) * ddel
+    Fn = normal_force_llvm(law, p, md, delta)
+    Fd, ad = normal_rates(law, p, md, delta, Fn, -vn)
     L, Ld = limits_inv(i, dx, c[C_MU], Fn, Fd, ar, ad, 1.0 / ar if ar > 0.0 else 0.0)
     f = sg[i] * L if cm[i] == SLIP else y[Y_CELL + i]
     return cell_switch(i, cm, sg, cp, L, Ld, f, ar, ad, vs)

@@ -79,9 +79,8 @@ from impactlab.dynamics.kernels.layout import (
     S_X,
     S_Y,
 )
-from impactlab.dynamics.kernels.normal import geometry
 from impactlab.dynamics.kernels.quality import result_flags
-from impactlab.dynamics.kernels.rhs import energy
+from impactlab.dynamics.kernels.rhs import energy, geometry_llvm
 from impactlab.dynamics.kernels.status import REGIME_REVERSAL, REGIME_SLIP, REGIME_STICK
 from impactlab.dynamics.slipcore.model import evaluate, stored_energy
 
@@ -129,7 +128,7 @@ def record(hist, n, t, law, p, c, md, y, cm, sg, cp, W):
         hist = grown(hist, n, np.int64(16))
     ev = evaluate(law, p, c, md, y, cm, sg, cp, W)
     delta, _a, _b, Fn, Ft, vn, vs, _ar, _ad, _nin = ev
-    _d, _a2, _b2, xs, _sl = geometry(c, y)
+    _d, _a2, _b2, xs, _sl = geometry_llvm(c, y)
     row = hist[n]
     row[H_T] = t
     row[H_DELTA] = delta
@@ -164,7 +163,7 @@ def regime(acc, t, vn0):
 @njit_internal
 def separation(out, c, md, y, acc, t, vx0, vy0, vn0, th0, rod, e0, rtol, diag):
     """Write the results at separation (state ``y`` at time ``t``) into ``out``."""
-    _delta, a, b, xs, slide = geometry(c, y)
+    _delta, a, b, xs, slide = geometry_llvm(c, y)
     m = c[C_M]
     g = c[C_G]
     vx = y[S_VX]
