@@ -61,13 +61,7 @@ from impactlab.dynamics.kernels.layout import (
     S_X,
     S_Y,
 )
-from impactlab.dynamics.kernels.normal import (
-    dforce_ddelta,
-    dradius_ddelta,
-    geometry,
-    normal_force,
-    radius,
-)
+from impactlab.dynamics.kernels.normal import geometry, normal_contact, radius
 from impactlab.dynamics.slipcore.layout import G_BIRTH, G_CELL, G_REL, Y_CELL
 
 
@@ -75,16 +69,16 @@ from impactlab.dynamics.slipcore.layout import G_BIRTH, G_CELL, G_REL, Y_CELL
 def evaluate(law, p, c, md, y, cm, sg, cp, W):
     """Contact quantities at state ``y``: fills W[0] = limits L_i, W[1] = dL_i/dt and W[2] = the
     cell forces f_i (OUT: 0, SLIP: s_i L_i) and returns
-    (delta, a, b, F_n, F_t, v_n, v_slip, radius, d radius/dt, n in contact)."""
+    (delta, a, b, F_n, F_t, v_n, v_slip, radius, d radius/dt, n in contact). The normal
+    contact (F_n, the radius and their rates) comes from one pass over the law
+    (``kernels.normal.normal_contact``)."""
     delta, a, b, _xs, _sl = geometry(c, y)
     w = y[S_SPIN]
     vn = y[S_VY] - w * a
     vs = y[S_VX] + w * b
-    Fn = normal_force(law, p, md, delta)
-    ar = radius(law, p, md, delta)
-    ddel = -vn
-    Fd = dforce_ddelta(law, p, md, delta, Fn) * ddel
-    ad = dradius_ddelta(law, p, md, delta) * ddel
+    Fn, Fs, ar, As = normal_contact(law, p, md, delta)
+    Fd = Fs * -vn
+    ad = As * -vn
     nin = n_in(cm)
     dx = cp[CP_DX]
     mu = c[C_MU]
@@ -186,10 +180,9 @@ def event_value(k, law, p, c, md, y, cm, sg, cp):
     if i >= nin:
         return -1.0
     vs = y[S_VX] + w * b
-    Fn = normal_force(law, p, md, delta)
-    ddel = -vn
-    Fd = dforce_ddelta(law, p, md, delta, Fn) * ddel
-    ad = dradius_ddelta(law, p, md, delta) * ddel
+    Fn, Fs, _ar, As = normal_contact(law, p, md, delta)
+    Fd = Fs * -vn
+    ad = As * -vn
     L, Ld = limits_inv(i, dx, c[C_MU], Fn, Fd, ar, ad, 1.0 / ar if ar > 0.0 else 0.0)
     f = sg[i] * L if cm[i] == SLIP else y[Y_CELL + i]
     return cell_switch(i, cm, sg, cp, L, Ld, f, ar, ad, vs)
