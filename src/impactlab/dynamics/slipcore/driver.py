@@ -20,6 +20,7 @@ from impactlab.dynamics.kernels.cells import (
     CP_FTOL,
     CP_G1,
     CP_VTOL,
+    STEP_PAST,
     birth,
     n_in,
 )
@@ -192,7 +193,8 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
         # end the step just past the next cell boundary: its kink then lies at the step's end
         add = (ad0 - ad_last) / (t - t_last) if 0.0 <= t_last < t else 0.0
         hz = boundary_horizon(cm, cp, ar0, ad0, add)
-        h = min(hc, tstar, BOUNDARY_PAST * hz + hmin) if hz > 0.0 else min(hc, tstar)
+        past = BOUNDARY_PAST if ad0 > 0.0 else STEP_PAST  # a birth ahead, or a release
+        h = min(hc, tstar, past * hz + hmin) if hz > 0.0 else min(hc, tstar)
         err, ev = step(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew)
         nact = Y_CELL + n_in(cm)  # the entries in use: the rigid-body state, the cells in contact
         if not (err <= 1.0):

@@ -188,12 +188,14 @@ def event_value(k, law, p, c, md, y, cm, sg, cp):
     return cell_switch(i, cm, sg, cp, L, Ld, f, ar, ad, vs)
 
 
-#: The step loop ends a step this far past the predicted next cell boundary (``STEP_PAST``
-#: of the flexible rod: 1.05). The cell lengths have a kink there, and a sticking edge cell's
-#: force rate 2 G_1 l v_slip with it: at 5 % of the step past the kink the error estimate of
-#: the step saw the kink and rejected the step in about one crossing of two (20 rejections
-#: per impact); the prediction is good to about 2e-3 of the step (median), so a margin of
-#: 1e-3 leaves the kink within a few thousandths of the step's end.
+#: While the contact grows, the step loop ends a step this far past the predicted next cell
+#: boundary (a birth; ``STEP_PAST`` = 1.05 while it recedes, as for the flexible rod). The cell
+#: lengths have a kink there, and a sticking edge cell's force rate 2 G_1 l v_slip with it: at
+#: 5 % of the step past the kink the step's error estimate saw it and rejected the step in
+#: about one crossing of two; the prediction is good to about 2.5e-3 of the step (median), so a
+#: margin of 1e-3 leaves the kink within a few thousandths of the step's end. While the contact
+#: recedes, a sticking edge cell (stick rate f a'/l, stiff as l -> 0) can alternate between its
+#: limit and sticking in steps cut this close (one random impact: 827 switches): 1.05 there.
 BOUNDARY_PAST = 1.001
 
 
