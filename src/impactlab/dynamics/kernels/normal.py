@@ -159,9 +159,9 @@ def normal_contact(law, p, md, delta):
     slopes exact (``contact.slopes``: 1.5 F_n / d and a / (2 d) on the Hertzian branches, the
     table's polynomial differentiated, (1 + B) a / (2 delta) on the Jackson-Green area fit)
     where ``dforce_ddelta`` and ``dradius_ddelta`` take central differences (relative error
-    about 1e-10; kept for the rigid and flexible engines, whose results they define). A law's
-    closed-form curve beyond the switch without a table (Kogut-Komvopoulos, Brake, Thornton,
-    a row the table left to the closed form) keeps the central difference of the force."""
+    about 1e-10; kept for the rigid and flexible engines, whose results they define). Beyond
+    the law's switch where no table row covers delta (no table, or a row left to the closed
+    form), and on Kogut-Komvopoulos's elastic branch, the force keeps its central difference."""
     if md[M_PHASE] != 0.0:
         d = delta - md[M_DR]
         if d <= 0.0 or delta <= 0.0:
