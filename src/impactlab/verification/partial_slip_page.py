@@ -224,8 +224,8 @@ works; the rigid rod and the sphere are supported, one at a time and in the batc
 **Convergence and cost.** The error of N cells against the exact solution falls like N^-2
 (prototype: max |e_t - exact| 0.023, 0.0092, 0.0038, 7.8e-4, 1.8e-4 for N = 2, 4, 8, 16, 32;
 tests/dynamics/test_partial_slip_invariants.py checks the order); 16 cells give ~1e-3. An
-impact takes 30-70 events and 60-600 steps (median 130), about 0.5 ms (warm, in the batch):
-35-37 times the `mindlin` model (`benchmarks/bench_partial_slip.py`;
+impact takes 30-70 events and 60-550 steps (median 103), about 0.26 ms (warm, in the batch):
+16-18 times the `mindlin` model (`benchmarks/bench_partial_slip.py`;
 docs/engine/partial-slip-steps.md).
 
 **Validity.** Exact within the Cattaneo-Mindlin assumptions (half-spaces, no normal-tangential

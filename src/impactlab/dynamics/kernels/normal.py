@@ -21,6 +21,7 @@ from impactlab.contact.kernels import (
     table_force,
     unloading_force,
 )
+from impactlab.contact.slopes import loading_radius_slope, table_force_slope
 from impactlab.dynamics.kernels.layout import (
     C_A0,
     C_B0,
@@ -149,3 +150,34 @@ def dradius_ddelta(law, p, md, delta):
         return 0.0
     h = 1e-6 * d
     return (radius(law, p, md, delta + h) - radius(law, p, md, delta - h)) / (2.0 * h)
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def normal_contact(law, p, md, delta):
+    """(F_n [N], dF_n/d delta [N/m], a [m], da/d delta) on the current branch from one pass:
+    the branch decided once, F_n and a as ``normal_force`` and ``radius`` (the same bits), the
+    slopes exact (``contact.slopes``: 1.5 F_n / d and a / (2 d) on the Hertzian branches, the
+    table's polynomial differentiated, (1 + B) a / (2 delta) on the Jackson-Green area fit)
+    where ``dforce_ddelta`` and ``dradius_ddelta`` take central differences (relative error
+    about 1e-10; kept for the rigid and flexible engines, whose results they define). Beyond
+    the law's switch where no table row covers delta (no table, or a row left to the closed
+    form), and on Kogut-Komvopoulos's elastic branch, the force keeps its central difference."""
+    if md[M_PHASE] != 0.0:
+        d = delta - md[M_DR]
+        if d <= 0.0 or delta <= 0.0:
+            return 0.0, 0.0, 0.0, 0.0
+        Fn = unloading_force(p[P_ESTAR], md[M_RR], md[M_DR], delta)
+        ar = md[M_AF] * math.sqrt(md[M_RR] * d)
+        return Fn, 1.5 * Fn / d, ar, 0.5 * ar / d
+    if delta <= 0.0:
+        return 0.0, 0.0, 0.0, 0.0
+    ar, ad = loading_radius_slope(law, p, delta)
+    if delta >= p[P_DSW]:
+        f, fd = table_force_slope(p, NPARAM, delta)
+        if f >= 0.0:
+            return f, fd, ar, ad
+    elif law != KOGUT_KOMVOPOULOS:
+        Fn = hertz_force(p[P_ESTAR], p[P_R], delta)
+        return Fn, 1.5 * Fn / delta, ar, ad
+    Fn = normal_force(law, p, md, delta)
+    return Fn, dforce_ddelta(law, p, md, delta, Fn), ar, ad

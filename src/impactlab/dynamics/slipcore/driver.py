@@ -77,7 +77,13 @@ from impactlab.dynamics.kernels.status import (
 from impactlab.dynamics.kernels.step_control import power_growth
 from impactlab.dynamics.kernels.transitions import without_switch
 from impactlab.dynamics.slipcore.layout import CP_FSC, EXTRA, G_CELL, NCP, Y_CELL
-from impactlab.dynamics.slipcore.model import boundary_horizon, derivative, evaluate, events
+from impactlab.dynamics.slipcore.model import (
+    BOUNDARY_PAST,
+    boundary_horizon,
+    derivative,
+    evaluate,
+    events,
+)
 from impactlab.dynamics.slipcore.outputs import A_JUMP, NA, record, separation, track
 from impactlab.dynamics.slipcore.stepper import (
     first_event,
@@ -181,15 +187,18 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
     nsteps, nevents, status = 0, 0, ST_NO_SEPARATION
     ar0, ad0 = ev[7], ev[8]  # contact radius [m] and its rate [m/s] at t
     t_last, ad_last = -1.0, 0.0  # the last accepted step's start and the radius rate there
+    rejected = False  # the last step tried was rejected
     while nsteps < MAX_STEPS:
         nsteps += 1
         # end the step just past the next cell boundary: its kink then lies at the step's end
         add = (ad0 - ad_last) / (t - t_last) if 0.0 <= t_last < t else 0.0
         hz = boundary_horizon(cm, cp, ar0, ad0, add)
-        h = min(hc, tstar, STEP_PAST * hz + hmin) if hz > 0.0 else min(hc, tstar)
+        past = BOUNDARY_PAST if ad0 > 0.0 else STEP_PAST  # a birth ahead, or a release
+        h = min(hc, tstar, past * hz + hmin) if hz > 0.0 else min(hc, tstar)
         err, ev = step(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew)
         nact = Y_CELL + n_in(cm)  # the entries in use: the rigid-body state, the cells in contact
         if not (err <= 1.0):
+            rejected = True
             hc = h * (max(0.2, power_growth(err)) if math.isfinite(err) else 0.25)
             if hc < hmin:
                 status = ST_NAN if not math.isfinite(err) else ST_STEP_UNDERFLOW
@@ -216,7 +225,11 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
         ar0, ad0 = ev[7], ev[8]
         t = tend
         copy_active(y, yev, nact)
-        hc = h * (10.0 if err == 0.0 else min(10.0, power_growth(err)))
+        # no growth right after a rejection (Hairer, Norsett & Wanner I, Sec. II.4,
+        # doi:10.1007/978-3-540-78862-1): the rejected step's size is known to be too long
+        grow = 1.0 if rejected else 10.0
+        hc = h * (grow if err == 0.0 else min(grow, power_growth(err)))
+        rejected = False
         if rec and k < 0:
             hist, nh = record(hist, nh, t, law, p, c, md, y, cm, sg, cp, W)
         if k < 0:
