@@ -346,9 +346,11 @@ def simulate_cmd(
     opt = _merge(load_toml(config), cli, config)
     if plot and opt.given("flexible"):
         raise UserError("--plot: the flexible rod's drop has no figures here; leave it out")
-    from impactlab.experiment.checks import output_folder  # lazy: a fast CLI start
+    folder = None
+    if plot:
+        from impactlab.experiment.checks import output_folder  # lazy: a fast CLI start
 
-    folder = output_folder(Path(".") if out is None else out, "--out") if plot else None
+        folder = output_folder(Path(".") if out is None else out, "--out")
     if from_file is None:
         result = run_simulate(opt)
     report_result(result, out=folder, as_json=as_json)
