@@ -23,6 +23,8 @@ from __future__ import annotations
 
 import gc
 import threading
+from collections.abc import Iterator
+from contextlib import contextmanager
 from typing import Any
 
 from impactlab._compile_notice import module_of, register
@@ -40,6 +42,8 @@ class GCPause:
         self.depth = 0
         self.paused = False
         self.lock = threading.Lock()
+        self.defer = False  # freeze the compilation's garbage instead (``garbage_deferred``)
+        self.froze = False
 
     def on_start(self, event: Any) -> None:
         with self.lock:
@@ -55,13 +59,41 @@ class GCPause:
                 return
             self.paused = False
         gc.enable()
-        gc.collect(YOUNGEST)
+        if self.defer and (self.froze or gc.get_freeze_count() == 0):
+            gc.freeze()  # garbage and all: handed back when ``garbage_deferred`` ends
+            self.froze = True
+        else:
+            gc.collect(YOUNGEST)
 
 
+#: The pause of this process (registered with numba by ``install``).
+PAUSE = GCPause()
 _INSTALLED: list[Any] = []
 
 
 def install() -> None:
     """Register the pause with numba's compile events (once per process)."""
     if not _INSTALLED:
-        _INSTALLED.append(register(GCPause()))
+        _INSTALLED.append(register(PAUSE))
+
+
+@contextmanager
+def garbage_deferred(pause: GCPause = PAUSE) -> Iterator[None]:
+    """Within the block, a compilation's garbage is not collected when it ends: the objects
+    alive then, garbage included, move to the collector's permanent generation (``gc.freeze``)
+    and go back to its oldest generation when the block ends (``gc.unfreeze``), to be collected
+    at its next full pass. For a command that compiles, runs once and ends
+    (``impactlab simulate``): the process exits before that pass, and its exit skips the
+    frozen objects (``impactlab.cli``), so the pass over the compilation's garbage (0.8 s of
+    CPU after a first rigid impact, 1.27 million objects) is never made. The price is memory:
+    the garbage stays until the block ends (the process's peak, about 650 MB for the rigid
+    engine, is then its size to the end). Objects the caller had frozen itself are left as
+    they are: the block then collects as outside it."""
+    pause.defer = True
+    try:
+        yield
+    finally:
+        pause.defer = False
+        if pause.froze:
+            pause.froze = False
+            gc.unfreeze()
