@@ -104,14 +104,19 @@ def test_a_real_compilation_pauses_and_restores_it() -> None:
 
 
 def test_deferred_garbage_is_frozen_then_handed_back(gc_on: None) -> None:
-    """``garbage_deferred`` (``impactlab simulate``): the end of a compilation freezes instead
-    of collecting, and the block's end hands the objects back to the collector."""
+    """``garbage_deferred`` (``impactlab simulate``): the block's start and the end of a
+    compilation freeze instead of collecting, and the block's end hands the objects back to the
+    collector."""
     assert gc.get_freeze_count() == 0
     pause = _compile_gc.GCPause()
     with _compile_gc.garbage_deferred(pause):
+        assert gc.get_freeze_count() > 0  # what was alive at the start
         pause.on_start(ENGINE)
+        garbage = [[]]
+        garbage[0].append(garbage)  # a reference cycle left by the compilation
+        del garbage
         pause.on_end(ENGINE)
-        assert gc.isenabled() and gc.get_freeze_count() > 0
+        assert gc.isenabled() and gc.collect(0) == 0  # frozen, not in the youngest generation
         pause.on_start(ENGINE)  # a second compilation in the block: frozen as well
         pause.on_end(ENGINE)
     assert gc.get_freeze_count() == 0
