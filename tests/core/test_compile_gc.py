@@ -101,3 +101,36 @@ def test_a_real_compilation_pauses_and_restores_it() -> None:
     enabled, states = out.stdout.split(" ", 1)
     assert enabled == "True"
     assert states.strip() == "[False]"  # off while the function compiled
+
+
+def test_deferred_garbage_is_frozen_then_handed_back(gc_on: None) -> None:
+    """``garbage_deferred`` (``impactlab simulate``): the block's start and the end of a
+    compilation freeze instead of collecting, and the block's end hands the objects back to the
+    collector."""
+    assert gc.get_freeze_count() == 0
+    pause = _compile_gc.GCPause()
+    with _compile_gc.garbage_deferred(pause):
+        assert gc.get_freeze_count() > 0  # what was alive at the start
+        pause.on_start(ENGINE)
+        garbage = [[]]
+        garbage[0].append(garbage)  # a reference cycle left by the compilation
+        del garbage
+        pause.on_end(ENGINE)
+        assert gc.isenabled() and gc.collect(0) == 0  # frozen, not in the youngest generation
+        pause.on_start(ENGINE)  # a second compilation in the block: frozen as well
+        pause.on_end(ENGINE)
+    assert gc.get_freeze_count() == 0
+    assert not pause.defer and not pause.froze
+
+
+def test_deferral_leaves_objects_the_caller_froze_alone(gc_on: None) -> None:
+    gc.freeze()
+    try:
+        frozen = gc.get_freeze_count()
+        pause = _compile_gc.GCPause()
+        with _compile_gc.garbage_deferred(pause):
+            pause.on_start(ENGINE)
+            pause.on_end(ENGINE)  # collected, as without the block
+        assert gc.get_freeze_count() == frozen and not pause.froze
+    finally:
+        gc.unfreeze()

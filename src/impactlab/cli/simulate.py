@@ -16,6 +16,7 @@ from typing import Any
 
 import typer
 
+from impactlab._compile_gc import garbage_deferred
 from impactlab.bodies import PAPER_ROD, FlexibleRod, Rod, Sphere
 from impactlab.bodies.flexible_rod import DEFAULT_N_AXIAL, DEFAULT_N_BENDING
 from impactlab.cli._common import (
@@ -334,24 +335,28 @@ def simulate_cmd(
     cli["flexible"] = True if flexible else None
     if out is not None and not plot:
         raise UserError("--out applies only with --plot (where to save the figures)")
-    if from_file is not None:
-        if config is not None:
-            raise UserError(
-                "--config and --from: --from takes the recorded input, with options on top; "
-                "leave out --config"
-            )
-        result = run_from(from_file, cli)
-        if plot and isinstance(result, DropResult):
+    # one impact or drop, then the process ends: a first compile's garbage is left to the exit
+    with garbage_deferred():
+        if from_file is not None:
+            if config is not None:
+                raise UserError(
+                    "--config and --from: --from takes the recorded input, with options on top; "
+                    "leave out --config"
+                )
+            result = run_from(from_file, cli)
+            if plot and isinstance(result, DropResult):
+                raise UserError("--plot: the flexible rod's drop has no figures here; leave it out")
+        opt = _merge(load_toml(config), cli, config)
+        if plot and opt.given("flexible"):
             raise UserError("--plot: the flexible rod's drop has no figures here; leave it out")
-    opt = _merge(load_toml(config), cli, config)
-    if plot and opt.given("flexible"):
-        raise UserError("--plot: the flexible rod's drop has no figures here; leave it out")
-    from impactlab.experiment.checks import output_folder  # lazy: a fast CLI start
+        folder = None
+        if plot:
+            from impactlab.experiment.checks import output_folder  # lazy: a fast CLI start
 
-    folder = output_folder(Path(".") if out is None else out, "--out") if plot else None
-    if from_file is None:
-        result = run_simulate(opt)
-    report_result(result, out=folder, as_json=as_json)
+            folder = output_folder(Path(".") if out is None else out, "--out")
+        if from_file is None:
+            result = run_simulate(opt)
+        report_result(result, out=folder, as_json=as_json)
 
 
 def register(app: typer.Typer) -> None:
