@@ -235,7 +235,7 @@ def simulate_drops(
         mdl = model_tuple(model.law_id, p, c, bm.omega, bm.zeta, bm.U, bm.W, bm.Psi,
                           bm.geometric)  # fmt: skip
         # the right-hand side of partial slip, compiled only where a case uses it
-        mdl += addresses(bool(np.any(fid[run] == PARTIAL_SLIP)))
+        mdl += addresses(bool(np.any(fid[run] == PARTIAL_SLIP)))[:2]
         init = np.stack([cols[k][run] for k in ("angle", "vx", "vy", "spin")], axis=1)
         o, ck = (
             np.full((init.shape[0], F.N_DROP_OUT), np.nan),

@@ -1,8 +1,9 @@
 """Calls of compiled functions through their addresses (compiled; ``indirect`` has the why).
 
-``call_rates(address, args)`` and ``call_step(address, args)`` call the function at
+``call_rates(address, args)``, ``call_step`` and ``call_events`` call the function at
 ``address`` (an int64: the entry point of a compiled ``rhs.rates`` / ``rhs.rates_cells``, or
-``stepper.dp_step`` / ``stepper.dp_step_cells``, in numba's own calling convention, as numba's
+``stepper.dp_step`` / ``stepper.dp_step_cells``; ``call_events``: ``events.handle_events``), in
+numba's own calling convention, as numba's
 first-class function type calls a jit function) with the tuple ``args``. The callee is not
 linked into the caller's library: its machine code is generated once. The argument types must
 be the signature's exactly (checked when the caller is compiled).
@@ -22,10 +23,11 @@ _F2 = types.float64[:, ::1]
 _F3 = types.float64[:, :, ::1]
 _I1 = types.int64[::1]
 #: The model tuple (``model.model_tuple``): the law id, p, c, om, om2, dmp, zeta, Ue, We, Pe,
-#: Tg, ia, ib (C-contiguous copies), the addresses of the right-hand side and of the step.
+#: Tg, ia, ib (C-contiguous copies), the addresses of the right-hand side, of the step and of
+#: the event handler.
 MODEL = types.Tuple(
     (types.int64, _F1, _F1, _F1, _F1, _F1, _F1, _F2, _F2, _F2, _F3, _I1, _I1, types.int64,
-     types.int64)
+     types.int64, types.int64)
 )  # fmt: skip
 #: ``rhs.rates`` and ``rhs.rates_cells``: the model's arrays one by one, then md, y, der, ev,
 #: ek, Jn, Jt.
@@ -38,6 +40,12 @@ RATES_SIGNATURE = types.none(
 STEP_SIGNATURE = types.float64(
     MODEL, _F2, _F1, _F2, types.float64, types.float64, _F1, _F1, _F1, _F1, _F2, _F2, _F2
 )
+#: ``events.handle_events``: jev, mdl, md, y, t, K, gold, sv, sc, contacts, dents, cur_con,
+#: snap, y_end, der, ev, ek, Jn, Jt; False on a failure.
+EVENTS_SIGNATURE = types.boolean(
+    types.int64, MODEL, _F2, _F1, types.float64, _F2, _F1, _F1, _F1, _F2, _F2, _I1, _F2, _F1,
+    _F1, _F1, _F2, _F2, _F2,
+)  # fmt: skip
 
 
 def _typed_call(name: str, sig: Any, address: Any, args: Any) -> Any:
@@ -71,3 +79,10 @@ def call_step(typingctx: Any, address: Any, args: Any) -> Any:
     """Call the Dormand-Prince step at ``address`` (int64) with the tuple ``args``; returns
     its error norm."""
     return _typed_call("call_step", STEP_SIGNATURE, address, args)
+
+
+@intrinsic
+def call_events(typingctx: Any, address: Any, args: Any) -> Any:
+    """Call the event handler at ``address`` (int64) with the tuple ``args``; returns its
+    success."""
+    return _typed_call("call_events", EVENTS_SIGNATURE, address, args)

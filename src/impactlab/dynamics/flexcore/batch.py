@@ -84,8 +84,8 @@ def sequence_flags(out, e0, m, g, rtol, contacts, n_contacts):
 def case_model(mdl, angle, mu, fid, w0, w1, max_steps):
     """The model tuple of one case: a copy of the constants vector with the case's angle, its
     sine and cosine, mu, friction id, cell widths [m] and step limit (as ``model.constants``),
-    and the addresses of its friction model's right-hand side and step (the batch model's
-    last four entries: those of every model but partial slip, then those of partial slip)."""
+    and the addresses of its friction model's right-hand side and step, and of the event
+    handler (the batch model ends with those of partial slip's right-hand side and step)."""
     c = mdl[2].copy()
     cells = fid == F.FR_PARTIAL
     c[F.FC_TH0] = angle
@@ -96,10 +96,10 @@ def case_model(mdl, angle, mu, fid, w0, w1, max_steps):
     c[F.FC_CP + CP_DX] = w0
     c[F.FC_CP + F.NFCP + CP_DX] = w1
     c[F.FC_MAX_STEPS] = float(min(max_steps, F.DROP_MAX_STEPS))
-    rhs = mdl[15] if cells else mdl[13]
-    step = mdl[16] if cells else mdl[14]
+    rhs = mdl[16] if cells else mdl[13]
+    step = mdl[17] if cells else mdl[14]
     return (mdl[0], mdl[1], c, mdl[3], mdl[4], mdl[5], mdl[6], mdl[7], mdl[8], mdl[9],
-            mdl[10], mdl[11], mdl[12], rhs, step)  # fmt: skip
+            mdl[10], mdl[11], mdl[12], rhs, step, mdl[15])  # fmt: skip
 
 
 @njit(cache=True, error_model="numpy")

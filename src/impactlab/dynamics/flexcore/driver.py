@@ -13,10 +13,9 @@ import numpy as np
 from numba import njit
 
 from impactlab.dynamics.flexcore import layout as F
-from impactlab.dynamics.flexcore.address_call import call_step
+from impactlab.dynamics.flexcore.address_call import call_events, call_step
 from impactlab.dynamics.flexcore.cells import step_cap
 from impactlab.dynamics.flexcore.coast import complete_jump, out_of_contact, refresh_thresholds
-from impactlab.dynamics.flexcore.events import handle_events
 from impactlab.dynamics.flexcore.history import record
 from impactlab.dynamics.flexcore.results import fill_outputs
 from impactlab.dynamics.flexcore.rhs import evaluate
@@ -95,8 +94,8 @@ def drop(mdl, vx0, vy0, w0, rtol, t_max, stop_mode, record_on, out, contacts, de
             if sv[F.SV_NEVENTS] > F.DROP_MAX_EVENTS:
                 sv[F.SV_STATUS] = F.ST_TOO_MANY_EVENTS
                 break
-            if not handle_events(jev, mdl, md, y, t, K, gold, sv, sc, contacts, dents, cur_con,
-                                 snap, y_end, der, ev, ek, Jn, Jt):  # fmt: skip
+            if not call_events(mdl[15], (jev, mdl, md, y, t, K, gold, sv, sc, contacts, dents,
+                                         cur_con, snap, y_end, der, ev, ek, Jn, Jt)):  # fmt: skip
                 break
         if record_on:
             hist, nh = record(hist, nh, t, mdl, y, ek, sv[F.SV_E0])

@@ -80,12 +80,14 @@ def model_tuple(
     Psi: np.ndarray,  # noqa: N803 (the modal section rotation, as in ModalBasis)
     geometric: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None,
 ) -> tuple[Any, ...]:
-    """``(law, p, c, om, om2, dmp, zeta, Ue, We, Pe, Tg, ia, ib, rhs, step)`` for ``driver.drop``:
+    """``(law, p, c, om, om2, dmp, zeta, Ue, We, Pe, Tg, ia, ib, rhs, step, events)`` for
+    ``driver.drop``:
     omega (M,) [rad/s], zeta (M,) damping ratios, U, W, Psi (2, M) modal end values;
     ``geometric``: (T, ia, ib) of ``impactlab.bodies.geometric.geometric_tensor`` or None;
-    ``rhs`` and ``step`` the addresses of the right-hand side and of the Dormand-Prince step of
-    the friction model in ``c`` (``indirect``: ``rates_cells`` and ``dp_step_cells`` for partial
-    slip, ``rates`` and ``dp_step`` otherwise)."""
+    ``rhs``, ``step`` and ``events`` the addresses of the right-hand side and of the
+    Dormand-Prince step of the friction model in ``c`` (``indirect``: ``rates_cells`` and
+    ``dp_step_cells`` for partial slip, ``rates`` and ``dp_step`` otherwise) and of the event
+    handler."""
 
     om = _array(omega)
     z = _array(zeta)

@@ -259,5 +259,5 @@ def rates_cells(law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, y, der, ev, ek,
 @njit(cache=True, inline="always", error_model="numpy")
 def evaluate(mdl, md, y, der, ev, ek, Jn, Jt):
     """The right-hand side with the model tuple ``mdl`` (package docstring)."""
-    law, p, c, _om, om2, dmp, _zeta, Ue, We, Pe, Tg, ia, ib, rhs, _step = mdl
+    law, p, c, _om, om2, dmp, _zeta, Ue, We, Pe, Tg, ia, ib, rhs, _step, _events = mdl
     call_rates(rhs, (law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, y, der, ev, ek, Jn, Jt))

@@ -54,7 +54,7 @@ def dp_step(mdl, md, y, K, h, rtol, sc, st, ynew, ev, ek, Jn, Jt):
     not count). Every friction model but partial slip (``dp_step_cells``); called through its
     address (``address_call.call_step``), it calls ``rates`` directly (inlined by LLVM)."""
     n = y.shape[0]
-    law, p, c, _om, om2, dmp, _zeta, Ue, We, Pe, Tg, ia, ib, _rhs, _step = mdl
+    law, p, c, _om, om2, dmp, _zeta, Ue, We, Pe, Tg, ia, ib, _rhs, _step, _events = mdl
     for stage in range(1, 7):
         stage_point(y, K, h, stage, st, n)
         rates(law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, st, K[stage], ev, ek, Jn, Jt)
@@ -65,7 +65,7 @@ def dp_step(mdl, md, y, K, h, rtol, sc, st, ynew, ev, ek, Jn, Jt):
 def dp_step_cells(mdl, md, y, K, h, rtol, sc, st, ynew, ev, ek, Jn, Jt):
     """``dp_step`` for partial slip (``rates_cells``)."""
     n = y.shape[0]
-    law, p, c, _om, om2, dmp, _zeta, Ue, We, Pe, Tg, ia, ib, _rhs, _step = mdl
+    law, p, c, _om, om2, dmp, _zeta, Ue, We, Pe, Tg, ia, ib, _rhs, _step, _events = mdl
     for stage in range(1, 7):
         stage_point(y, K, h, stage, st, n)
         rates_cells(law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, st, K[stage], ev, ek, Jn, Jt)
@@ -109,7 +109,7 @@ def locate(jev, g0, g1, mdl, md, y0, h, Q, yt, der, ev, ek, Jn, Jt, shift):
     are the values of g - shift at the ends. As the rigid core's ``integrator.locate``: an
     iterate where g - shift is zero to round-off ends the search, on the far side at once, on
     the near side after a probe just past the root (``past_root``)."""
-    law, p, c, _om, om2, dmp, _zeta, Ue, We, Pe, Tg, ia, ib, rhs, _step = mdl
+    law, p, c, _om, om2, dmp, _zeta, Ue, We, Pe, Tg, ia, ib, rhs, _step, _events = mdl
     a, fa, b, fb, side, prev = 0.0, g0, 1.0, g1, 0, 2.0
     tiny = G_ROUNDOFF * max(-g0, g1)
     for _ in range(100):
