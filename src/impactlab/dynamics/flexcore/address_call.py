@@ -11,6 +11,7 @@ be the signature's exactly (checked when the caller is compiled).
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 from numba import types
@@ -52,7 +53,7 @@ def _typed_call(name: str, sig: Any, address: Any, args: Any) -> Any:
     """The signature and code generator of a call through ``address`` for ``sig``."""
     if not isinstance(address, types.Integer) or not isinstance(args, types.BaseTuple):
         return None
-    if tuple(args.types) != tuple(sig.args):
+    if tuple(args.types) != tuple(sig.args):  # type: ignore[attr-defined]
         raise TypingError(f"{name}: arguments {args} are not {sig.args}")
     argtys = tuple(sig.args)
 
@@ -68,21 +69,25 @@ def _typed_call(name: str, sig: Any, address: Any, args: Any) -> Any:
     return sig.return_type(address, args), codegen
 
 
-@intrinsic
-def call_rates(typingctx: Any, address: Any, args: Any) -> Any:
+def _call_rates(typingctx: Any, address: Any, args: Any) -> Any:
     """Call the right-hand side at ``address`` (int64) with the tuple ``args``."""
     return _typed_call("call_rates", RATES_SIGNATURE, address, args)
 
 
-@intrinsic
-def call_step(typingctx: Any, address: Any, args: Any) -> Any:
+def _call_step(typingctx: Any, address: Any, args: Any) -> Any:
     """Call the Dormand-Prince step at ``address`` (int64) with the tuple ``args``; returns
     its error norm."""
     return _typed_call("call_step", STEP_SIGNATURE, address, args)
 
 
-@intrinsic
-def call_events(typingctx: Any, address: Any, args: Any) -> Any:
+def _call_events(typingctx: Any, address: Any, args: Any) -> Any:
     """Call the event handler at ``address`` (int64) with the tuple ``args``; returns its
     success."""
     return _typed_call("call_events", EVENTS_SIGNATURE, address, args)
+
+
+#: The intrinsics (typed for mypy as plain callables: compiled code calls them as
+#: ``call_rates(address, args)``).
+call_rates: Callable[..., Any] = intrinsic(_call_rates)
+call_step: Callable[..., Any] = intrinsic(_call_step)
+call_events: Callable[..., Any] = intrinsic(_call_events)
