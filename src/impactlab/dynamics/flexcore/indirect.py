@@ -1,13 +1,16 @@
-"""The right-hand side called through its address: the addresses for the model tuple (Python).
+"""The addresses of the compiled right-hand side, step and event handler, for the model tuple
+(Python).
 
 numba links the code of every compiled function a function calls into that function's library
-and optimises and generates machine code for it again there; ``rhs.rates``, called directly
-from the step, the event search and the event loop, was generated again in each of their
-libraries. Called through its address instead (``address_call.call_rates``: the model tuple
-carries the address, an int64), it is compiled once, and a drop without partial slip never
-compiles the cells' right-hand side (``rhs.rates_cells``) at all. The address is read in
-Python when a drop starts, never baked into compiled code: the cached engine holds none, and a
-second process loads every function from the cache.
+and optimises and generates machine code for it again there: ``rhs.rates`` was generated again
+in the libraries of the step, the acceptance of a step, the event handler and the drop.
+Called through their addresses instead (``address_call``: the model tuple carries them as
+int64), ``rates``, ``stepper.dp_step`` and ``events.handle_events`` are generated once each
+(``rates`` twice: the step's stage loop calls it directly, for speed), and a drop without
+partial slip never compiles the cells' right-hand side and step (``rhs.rates_cells``,
+``stepper.dp_step_cells``). The addresses are read in Python when a drop starts, never baked
+into compiled code: the cached engine holds none, and a second process loads every function
+from the cache.
 """
 
 from __future__ import annotations

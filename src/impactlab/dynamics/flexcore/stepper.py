@@ -52,7 +52,8 @@ def dp_step(mdl, md, y, K, h, rtol, sc, st, ynew, ev, ek, Jn, Jt):
     order) and ``ev``/``ek`` at ynew; returns the scaled RMS error norm (error scale of
     component i: rtol (sc[i] + max(|y_i|, |ynew_i|)); partial-slip cells out of contact do
     not count). Every friction model but partial slip (``dp_step_cells``); called through its
-    address (``address_call.call_step``), it calls ``rates`` directly (inlined by LLVM)."""
+    address (``address_call.call_step``), it calls ``rates`` directly (through the address in
+    the stage loop, the drop ran 8-10 % slower)."""
     n = y.shape[0]
     law, p, c, _om, om2, dmp, _zeta, Ue, We, Pe, Tg, ia, ib, _rhs, _step, _events = mdl
     for stage in range(1, 7):
