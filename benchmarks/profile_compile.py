@@ -13,7 +13,7 @@ measured one builds on, each in its own process (``rigid`` for ``partial_slip`` 
   lowering, the LLVM optimisation in ``NativeLowering``, ...);
 - every dispatcher of the package compiled for more than one type signature;
 - the CPU seconds of Python's cyclic garbage collector and its number of collections
-  (``gc.callbacks``; the flexible drop pauses it while it compiles: ``flexcore.compile_gc``);
+  (``gc.callbacks``; ``impactlab._compile_gc`` pauses it while numba compiles);
 
 and writes, with ``--json``, also the 60 largest (function, compiler pass) times.
 

@@ -15,14 +15,16 @@ test), ``contacts`` (the event actions: touch, turning point, separation, stick/
 ``friction`` (the friction models), ``cells`` and ``cellswitch`` (the partial-slip cells per
 end), ``history`` (recorded rows), ``setup`` (first touch, scales, work arrays), ``steps``,
 ``coast`` and ``events`` (the branches of the loop), ``results`` (the output vector), ``model``
-(the inputs from Python) and ``driver`` (``drop``: the event loop).
+(the inputs from Python), ``address_call`` and ``indirect`` (the right-hand side and the step
+called through their addresses) and ``driver`` (``drop``: the event loop).
 
 Every compiled function takes the model as one tuple
-``mdl = (law, p, c, om, om2, dmp, zeta, Ue, We, Pe, Tg, ia, ib)``:
+``mdl = (law, p, c, om, om2, dmp, zeta, Ue, We, Pe, Tg, ia, ib, rhs, step)``:
 the contact law id and its parameter vector, the constants vector (``layout.FC_*``), the modal
 circular frequencies, their squares, the damping coefficients 2 zeta omega, the damping ratios,
-the modal end values U, W, Psi (NE, M) and the geometric-stiffness tensor with its indices
-(``model.model_tuple`` builds it).
+the modal end values U, W, Psi (NE, M), the geometric-stiffness tensor with its indices, and
+the addresses of the compiled right-hand side and Dormand-Prince step of the friction model
+(``indirect``; ``model.model_tuple`` builds it).
 """
 
 from __future__ import annotations

@@ -83,8 +83,11 @@ def sequence_flags(out, e0, m, g, rtol, contacts, n_contacts):
 @njit_internal
 def case_model(mdl, angle, mu, fid, w0, w1, max_steps):
     """The model tuple of one case: a copy of the constants vector with the case's angle, its
-    sine and cosine, mu, friction id, cell widths [m] and step limit (as ``model.constants``)."""
+    sine and cosine, mu, friction id, cell widths [m] and step limit (as ``model.constants``),
+    and the addresses of its friction model's right-hand side and step, and of the event
+    handler (the batch model ends with those of partial slip's right-hand side and step)."""
     c = mdl[2].copy()
+    cells = fid == F.FR_PARTIAL
     c[F.FC_TH0] = angle
     c[F.FC_S0] = math.sin(angle)
     c[F.FC_C0] = math.cos(angle)
@@ -93,8 +96,10 @@ def case_model(mdl, angle, mu, fid, w0, w1, max_steps):
     c[F.FC_CP + CP_DX] = w0
     c[F.FC_CP + F.NFCP + CP_DX] = w1
     c[F.FC_MAX_STEPS] = float(min(max_steps, F.DROP_MAX_STEPS))
+    rhs = mdl[16] if cells else mdl[13]
+    step = mdl[17] if cells else mdl[14]
     return (mdl[0], mdl[1], c, mdl[3], mdl[4], mdl[5], mdl[6], mdl[7], mdl[8], mdl[9],
-            mdl[10], mdl[11], mdl[12])  # fmt: skip
+            mdl[10], mdl[11], mdl[12], rhs, step, mdl[15])  # fmt: skip
 
 
 @njit(cache=True, error_model="numpy")
@@ -163,10 +168,13 @@ def drop_batch(threads, mdl, init, mu, fid, rtol, t_max, stop_mode, out, checks,
     """Run ``init.shape[0]`` drops on ``threads`` loops (pass ``numba.get_num_threads()``).
 
     ``mdl``: the model tuple of the body and law (its constants' angle, mu, friction and
-    cells are set per case); ``init``: (N, 4) [angle, vx, vy, spin]; ``mu``: (N,) the
-    friction coefficient each case runs with; ``fid``: (N,) int64 friction ids; rtol, t_max
-    [s], stop_mode as ``drop``. Fills ``out`` (N, layout.N_DROP_OUT), ``checks`` (N, N_CHECKS:
-    E0 [J] and the flags but LAW_EXTRAPOLATED) and ``status`` (N,) int32."""
+    cells are set per case) and, last, the addresses of partial slip's right-hand side and
+    step (``indirect.addresses``; where no case uses it, those of the others again);
+    ``init``: (N, 4) [angle,
+    vx, vy, spin]; ``mu``: (N,) the friction coefficient each case runs with; ``fid``: (N,)
+    int64 friction ids; rtol, t_max [s], stop_mode as ``drop``. Fills ``out`` (N,
+    layout.N_DROP_OUT), ``checks`` (N, N_CHECKS: E0 [J] and the flags but LAW_EXTRAPOLATED)
+    and ``status`` (N,) int32."""
     n = init.shape[0]
     nt = max(1, min(threads, n))
     for t in prange(nt):

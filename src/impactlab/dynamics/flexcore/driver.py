@@ -13,14 +13,13 @@ import numpy as np
 from numba import njit
 
 from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.flexcore.address_call import call_events, call_step
 from impactlab.dynamics.flexcore.cells import step_cap
 from impactlab.dynamics.flexcore.coast import complete_jump, out_of_contact, refresh_thresholds
-from impactlab.dynamics.flexcore.events import handle_events
 from impactlab.dynamics.flexcore.history import record
 from impactlab.dynamics.flexcore.results import fill_outputs
 from impactlab.dynamics.flexcore.rhs import evaluate
 from impactlab.dynamics.flexcore.setup import first_touch, scales, touch_modes, workspace
-from impactlab.dynamics.flexcore.stepper import dp_step
 from impactlab.dynamics.flexcore.steps import accept, reject
 from impactlab.dynamics.kernels.buffers import copy_into
 from impactlab.dynamics.kernels.step_control import power_growth
@@ -73,7 +72,7 @@ def drop(mdl, vx0, vy0, w0, rtol, t_max, stop_mode, record_on, out, contacts, de
         sv[F.SV_NSTEPS] += 1
         h = min(h, sv[F.SV_HMAX])
         h = step_cap(h, mdl[2], md, ek, sv[F.SV_HMIN])  # partial slip: a cell boundary
-        err = dp_step(mdl, md, y, K, h, rtol, sc, st, ynew, gnew, ek, Jn, Jt)
+        err = call_step(mdl[14], (mdl, md, y, K, h, rtol, sc, st, ynew, gnew, ek, Jn, Jt))
         if not err <= 1.0:
             h = reject(h, err, sv)
             if h == 0.0:
@@ -95,8 +94,8 @@ def drop(mdl, vx0, vy0, w0, rtol, t_max, stop_mode, record_on, out, contacts, de
             if sv[F.SV_NEVENTS] > F.DROP_MAX_EVENTS:
                 sv[F.SV_STATUS] = F.ST_TOO_MANY_EVENTS
                 break
-            if not handle_events(jev, mdl, md, y, t, K, gold, sv, sc, contacts, dents, cur_con,
-                                 snap, y_end, der, ev, ek, Jn, Jt):  # fmt: skip
+            if not call_events(mdl[15], (jev, mdl, md, y, t, K, gold, sv, sc, contacts, dents,
+                                         cur_con, snap, y_end, der, ev, ek, Jn, Jt)):  # fmt: skip
                 break
         if record_on:
             hist, nh = record(hist, nh, t, mdl, y, ek, sv[F.SV_E0])

@@ -18,7 +18,6 @@ from impactlab.dynamics.flexcore.contacts import (
 )
 from impactlab.dynamics.flexcore.friction import mindlin_after
 from impactlab.dynamics.flexcore.rhs import evaluate
-from impactlab.dynamics.kernels._jit import njit_internal
 
 #: The order in which simultaneous events are handled at a restart.
 _PENDING_ORDER = (
@@ -59,14 +58,15 @@ def _apply(jev, mdl, md, y, t, sv, contacts, dents, cur_con, snap, y_end, der, e
     return st, k, kind
 
 
-@njit_internal
+@njit(cache=True, error_model="numpy")
 def handle_events(
     jev, mdl, md, y, t, K, gold, sv, sc, contacts, dents, cur_con, snap, y_end, der, ev, ek, Jn, Jt
 ):
     """Apply event ``jev`` at (t, y) and every event already past its switch at the same
     instant (at most 8), after each (partial slip) every cell switch due
     (``cellswitch.settle``); ``sc``: the error scales (the Mindlin state's changes with its
-    meaning). False (with ``sv[F.SV_STATUS]`` set) on a failure."""
+    meaning). False (with ``sv[F.SV_STATUS]`` set) on a failure. Called through its address
+    (``address_call.call_events``): its code is not generated again in ``drop``'s library."""
     fric = mdl[2][F.FC_FRIC]
     for _it in range(8):
         st, k, kind = _apply(jev, mdl, md, y, t, sv, contacts, dents, cur_con, snap, y_end, der,

@@ -10,6 +10,7 @@ import numpy as np
 
 from impactlab.contact.kernels import P_DLIM, P_DSW
 from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.flexcore.indirect import addresses
 from impactlab.dynamics.kernels.cells import CP_DX
 
 
@@ -79,9 +80,15 @@ def model_tuple(
     Psi: np.ndarray,  # noqa: N803 (the modal section rotation, as in ModalBasis)
     geometric: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None,
 ) -> tuple[Any, ...]:
-    """``(law, p, c, om, om2, dmp, zeta, Ue, We, Pe, Tg, ia, ib)`` for ``driver.drop``:
+    """``(law, p, c, om, om2, dmp, zeta, Ue, We, Pe, Tg, ia, ib, rhs, step, events)`` for
+    ``driver.drop``:
     omega (M,) [rad/s], zeta (M,) damping ratios, U, W, Psi (2, M) modal end values;
-    ``geometric``: (T, ia, ib) of ``impactlab.bodies.geometric.geometric_tensor`` or None."""
+    ``geometric``: (T, ia, ib) of ``impactlab.bodies.geometric.geometric_tensor`` or None;
+    ``rhs``, ``step`` and ``events`` the addresses of the right-hand side and of the
+    Dormand-Prince step of the friction model in ``c`` (``indirect``: ``rates_cells`` and
+    ``dp_step_cells`` for partial slip, ``rates`` and ``dp_step`` otherwise) and of the event
+    handler."""
+
     om = _array(omega)
     z = _array(zeta)
     if geometric is None:
@@ -106,4 +113,5 @@ def model_tuple(
         Tg,
         ia,
         ib,
+        *addresses(int(c[F.FC_FRIC]) == F.FR_PARTIAL),
     )

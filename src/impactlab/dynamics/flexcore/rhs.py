@@ -18,6 +18,7 @@ from __future__ import annotations
 from numba import njit
 
 from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.flexcore.address_call import call_rates
 from impactlab.dynamics.flexcore.cells import cell_events, cell_forces, cell_rates
 from impactlab.dynamics.flexcore.friction import friction_event, state_rate, tangential
 from impactlab.dynamics.flexcore.kinematics import end_kinematics, mobility, normal_force
@@ -25,29 +26,43 @@ from impactlab.dynamics.kernels.layout import FR_COULOMB
 
 
 @njit(cache=True, inline="always", error_model="numpy")
+def _end_state(law, p, c, Ue, We, Pe, md, y, ek, Jn, Jt, k):
+    """Kinematics and normal force of end k into ``ek`` (F_t, k_t zero); returns delta [m]."""
+    delta, xS, vn, vt, jdot = end_kinematics(c, Ue, We, Pe, y, k, Jn, Jt)
+    ek[k, F.EK_DELTA] = delta
+    ek[k, F.EK_X] = xS
+    ek[k, F.EK_VN] = vn
+    ek[k, F.EK_VT] = vt
+    ek[k, F.EK_FN] = normal_force(law, p, md, k, delta)
+    ek[k, F.EK_JDOT] = jdot
+    ek[k, F.EK_FT] = 0.0
+    ek[k, F.EK_KT] = 0.0
+    return delta
+
+
+@njit(cache=True, inline="always", error_model="numpy")
 def _end_forces(law, p, c, Ue, We, Pe, md, y, ek, Jn, Jt):
-    """Kinematics of both ends and the contact forces without stick forces into ``ek``."""
+    """Kinematics of both ends and the contact forces without stick forces into ``ek``
+    (every friction model but partial slip)."""
     mu = c[F.FC_MU]
     iqt = 6 + 2 * Ue.shape[1] + F.Q_TAN
-    partial = c[F.FC_FRIC] == F.FR_PARTIAL
     for k in range(F.NE):
-        delta, xS, vn, vt, jdot = end_kinematics(c, Ue, We, Pe, y, k, Jn, Jt)
-        ek[k, F.EK_DELTA] = delta
-        ek[k, F.EK_X] = xS
-        ek[k, F.EK_VN] = vn
-        ek[k, F.EK_VT] = vt
-        ek[k, F.EK_FN] = normal_force(law, p, md, k, delta)
-        ek[k, F.EK_JDOT] = jdot
-        ek[k, F.EK_FT] = 0.0
-        ek[k, F.EK_KT] = 0.0
-        if md[k, F.MD_IN] != 0.0 and mu > 0.0 and partial:
-            ek[k, F.EK_FT] = cell_forces(
-                law, p, c, md, k, y, iqt - F.Q_TAN + F.NQUAD + k * F.NCS, ek
-            )
-        elif md[k, F.MD_IN] != 0.0 and mu > 0.0:
+        delta = _end_state(law, p, c, Ue, We, Pe, md, y, ek, Jn, Jt, k)
+        if md[k, F.MD_IN] != 0.0 and mu > 0.0:
             ft, kt = tangential(law, p, c, md, k, y[iqt + k], delta, ek[k, F.EK_FN])
             ek[k, F.EK_FT] = ft
             ek[k, F.EK_KT] = kt
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _end_forces_cells(law, p, c, Ue, We, Pe, md, y, ek, Jn, Jt):
+    """``_end_forces`` for partial slip: the friction force of an end from its cells."""
+    mu = c[F.FC_MU]
+    o = 6 + 2 * Ue.shape[1] + F.NQUAD
+    for k in range(F.NE):
+        _end_state(law, p, c, Ue, We, Pe, md, y, ek, Jn, Jt, k)
+        if md[k, F.MD_IN] != 0.0 and mu > 0.0:
+            ek[k, F.EK_FT] = cell_forces(law, p, c, md, k, y, o + k * F.NCS, ek)
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -218,22 +233,31 @@ def _events(law, p, c, md, y, ev, ek, M):
 def rates(law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, y, der, ev, ek, Jn, Jt):
     """Derivative ``der`` and event values ``ev`` at state y in the mode table md; ``ek``
     (F.NE, NEK) receives per end the evaluated quantities (``layout.EK_*``), Jn and Jt the
-    Jacobian rows. The model's arrays one by one (the hot path: see ``evaluate``)."""
+    Jacobian rows. The model's arrays one by one (the hot path: see ``evaluate``). Every
+    friction model but partial slip (``rates_cells``)."""
     _end_forces(law, p, c, Ue, We, Pe, md, y, ek, Jn, Jt)
     _accelerations(c, om2, dmp, Tg, ia, ib, md, y, der, ek, Jn, Jt)
     if c[F.FC_MU] > 0.0 and c[F.FC_FRIC] == FR_COULOMB:
         _stick_forces(c, om2.shape[0], md, der, ek, Jt)
     _quadratures(c, dmp, md, y, der, ek)
     _events(law, p, c, md, y, ev, ek, om2.shape[0])
-    if c[F.FC_FRIC] == F.FR_PARTIAL:
-        o = 6 + 2 * om2.shape[0] + F.NQUAD
-        for k in range(F.NE):
-            cell_rates(c, md, k, o + k * F.NCS, ek, der)
-            cell_events(c, md, k, ek, ev)
+
+
+@njit(cache=True, error_model="numpy")
+def rates_cells(law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, y, der, ev, ek, Jn, Jt):
+    """``rates`` for partial slip: the friction forces, rates and events of the cells."""
+    _end_forces_cells(law, p, c, Ue, We, Pe, md, y, ek, Jn, Jt)
+    _accelerations(c, om2, dmp, Tg, ia, ib, md, y, der, ek, Jn, Jt)
+    _quadratures(c, dmp, md, y, der, ek)
+    _events(law, p, c, md, y, ev, ek, om2.shape[0])
+    o = 6 + 2 * om2.shape[0] + F.NQUAD
+    for k in range(F.NE):
+        cell_rates(c, md, k, o + k * F.NCS, ek, der)
+        cell_events(c, md, k, ek, ev)
 
 
 @njit(cache=True, inline="always", error_model="numpy")
 def evaluate(mdl, md, y, der, ev, ek, Jn, Jt):
-    """``rates`` with the model tuple ``mdl`` (package docstring)."""
-    law, p, c, _om, om2, dmp, _zeta, Ue, We, Pe, Tg, ia, ib = mdl
-    rates(law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, y, der, ev, ek, Jn, Jt)
+    """The right-hand side with the model tuple ``mdl`` (package docstring)."""
+    law, p, c, _om, om2, dmp, _zeta, Ue, We, Pe, Tg, ia, ib, rhs, _step, _events = mdl
+    call_rates(rhs, (law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, y, der, ev, ek, Jn, Jt))

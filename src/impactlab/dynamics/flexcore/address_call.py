@@ -1,0 +1,93 @@
+"""Calls of compiled functions through their addresses (compiled; ``indirect`` has the why).
+
+``call_rates(address, args)``, ``call_step`` and ``call_events`` call the function at
+``address`` (an int64: the entry point of a compiled ``rhs.rates`` / ``rhs.rates_cells``, or
+``stepper.dp_step`` / ``stepper.dp_step_cells``; ``call_events``: ``events.handle_events``), in
+numba's own calling convention, as numba's
+first-class function type calls a jit function) with the tuple ``args``. The callee is not
+linked into the caller's library: its machine code is generated once. The argument types must
+be the signature's exactly (checked when the caller is compiled).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+from numba import types
+from numba.core import cgutils
+from numba.core.errors import TypingError
+from numba.extending import intrinsic
+
+_F1 = types.float64[::1]
+_F2 = types.float64[:, ::1]
+_F3 = types.float64[:, :, ::1]
+_I1 = types.int64[::1]
+#: The model tuple (``model.model_tuple``): the law id, p, c, om, om2, dmp, zeta, Ue, We, Pe,
+#: Tg, ia, ib (C-contiguous copies), the addresses of the right-hand side, of the step and of
+#: the event handler.
+MODEL = types.Tuple(
+    (types.int64, _F1, _F1, _F1, _F1, _F1, _F1, _F2, _F2, _F2, _F3, _I1, _I1, types.int64,
+     types.int64, types.int64)
+)  # fmt: skip
+#: ``rhs.rates`` and ``rhs.rates_cells``: the model's arrays one by one, then md, y, der, ev,
+#: ek, Jn, Jt.
+RATES_SIGNATURE = types.none(
+    types.int64, _F1, _F1, _F1, _F1, _F2, _F2, _F2, _F3, _I1, _I1, _F2, _F1, _F1, _F1, _F2,
+    _F2, _F2,
+)  # fmt: skip
+#: ``stepper.dp_step`` and ``stepper.dp_step_cells``: mdl, md, y, K, h, rtol, sc, st, ynew, ev,
+#: ek, Jn, Jt; the error norm.
+STEP_SIGNATURE = types.float64(
+    MODEL, _F2, _F1, _F2, types.float64, types.float64, _F1, _F1, _F1, _F1, _F2, _F2, _F2
+)
+#: ``events.handle_events``: jev, mdl, md, y, t, K, gold, sv, sc, contacts, dents, cur_con,
+#: snap, y_end, der, ev, ek, Jn, Jt; False on a failure.
+EVENTS_SIGNATURE = types.boolean(
+    types.int64, MODEL, _F2, _F1, types.float64, _F2, _F1, _F1, _F1, _F2, _F2, _I1, _F2, _F1,
+    _F1, _F1, _F2, _F2, _F2,
+)  # fmt: skip
+
+
+def _typed_call(name: str, sig: Any, address: Any, args: Any) -> Any:
+    """The signature and code generator of a call through ``address`` for ``sig``."""
+    if not isinstance(address, types.Integer) or not isinstance(args, types.BaseTuple):
+        return None
+    if tuple(args.types) != tuple(sig.args):  # type: ignore[attr-defined]
+        raise TypingError(f"{name}: arguments {args} are not {sig.args}")
+    argtys = tuple(sig.args)
+
+    def codegen(context: Any, builder: Any, signature: Any, llargs: Any) -> Any:
+        fnty = context.call_conv.get_function_type(sig.return_type, argtys)
+        fptr = builder.inttoptr(llargs[0], fnty.as_pointer())
+        vals = cgutils.unpack_tuple(builder, llargs[1], len(argtys))
+        status, res = context.call_conv.call_function(builder, fptr, sig.return_type, argtys, vals)
+        with cgutils.if_unlikely(builder, status.is_error):
+            context.call_conv.return_status_propagate(builder, status)
+        return res if sig.return_type != types.none else context.get_dummy_value()
+
+    return sig.return_type(address, args), codegen
+
+
+def _call_rates(typingctx: Any, address: Any, args: Any) -> Any:
+    """Call the right-hand side at ``address`` (int64) with the tuple ``args``."""
+    return _typed_call("call_rates", RATES_SIGNATURE, address, args)
+
+
+def _call_step(typingctx: Any, address: Any, args: Any) -> Any:
+    """Call the Dormand-Prince step at ``address`` (int64) with the tuple ``args``; returns
+    its error norm."""
+    return _typed_call("call_step", STEP_SIGNATURE, address, args)
+
+
+def _call_events(typingctx: Any, address: Any, args: Any) -> Any:
+    """Call the event handler at ``address`` (int64) with the tuple ``args``; returns its
+    success."""
+    return _typed_call("call_events", EVENTS_SIGNATURE, address, args)
+
+
+#: The intrinsics (typed for mypy as plain callables: compiled code calls them as
+#: ``call_rates(address, args)``).
+call_rates: Callable[..., Any] = intrinsic(_call_rates)
+call_step: Callable[..., Any] = intrinsic(_call_step)
+call_events: Callable[..., Any] = intrinsic(_call_events)

@@ -1,0 +1,58 @@
+"""The flexible drop's right-hand side and step, called through their addresses: the model
+tuple has the one type the callers are compiled for, the addresses are those of compiled code,
+a call with other argument types is refused when the caller compiles, and the right-hand side
+of every model but partial slip does not name the cells' kernels (they compile only for a
+drop that uses them)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from numba import njit, typeof
+from numba.core.errors import TypingError
+
+from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.flexcore import rhs
+from impactlab.dynamics.flexcore.address_call import MODEL, call_rates
+from impactlab.dynamics.flexcore.indirect import addresses
+from impactlab.dynamics.flexcore.model import model_tuple
+
+
+def _model(friction_id: int) -> tuple[object, ...]:
+    c = np.zeros(F.NFC)
+    c[F.FC_FRIC] = friction_id
+    m, ends = np.ones(3), np.ones((2, 3))
+    return model_tuple(1, np.zeros(8), c, m, 0.01 * m, ends, ends, ends)
+
+
+@pytest.mark.parametrize("friction_id", [1, F.FR_PARTIAL])
+def test_the_model_tuple_has_the_callers_type(friction_id: int) -> None:
+    mdl = _model(friction_id)
+    assert typeof(mdl) == MODEL
+    assert mdl[13:] == addresses(friction_id == F.FR_PARTIAL)
+
+
+def test_addresses_are_kept_and_differ_per_friction_family() -> None:
+    plain, cells = addresses(False), addresses(True)
+    assert all(isinstance(a, int) and a > 0 for a in plain + cells)
+    assert len(set(plain[:2] + cells[:2])) == 4  # the right-hand sides and steps
+    assert plain[2] == cells[2]  # one event handler
+    assert addresses(False) == plain
+
+
+def test_a_call_with_other_argument_types_is_refused() -> None:
+    @njit
+    def wrong(y: np.ndarray) -> None:
+        call_rates(np.int64(1), (y,))
+
+    with pytest.raises(TypingError, match="call_rates: arguments"):
+        wrong(np.zeros(3))
+
+
+def test_only_the_partial_slip_right_hand_side_names_the_cells() -> None:
+    def cell_kernels(*fns: object) -> set[str]:
+        names = set().union(*(f.py_func.__code__.co_names for f in fns))  # type: ignore[attr-defined]
+        return {n for n in names if n.startswith("cell_")}
+
+    assert not cell_kernels(rhs.rates, rhs._end_forces)
+    assert len(cell_kernels(rhs.rates_cells, rhs._end_forces_cells)) == 3  # forces, rates, events
