@@ -44,8 +44,11 @@ def describe(module: str) -> tuple[str, int]:
 class _Notice:
     """The state of one announced compilation (a timer thread prints and refreshes the line)."""
 
-    def __init__(self, module: str, stream: TextIO, cache_dir: str) -> None:
+    def __init__(
+        self, module: str, stream: TextIO, cache_dir: str, announced: set[str] | None = None
+    ) -> None:
         self.module = module
+        self.announced = set() if announced is None else announced
         self.stream = stream
         self.cache_dir = cache_dir
         self.count = 0
@@ -59,6 +62,9 @@ class _Notice:
         if self.done.wait(DELAY_S):
             return
         what, seconds = describe(self.module)
+        if what in self.announced:  # one line per part and process: a part compiled in
+            return  # several pieces (the flexible drop's addresses, then the drop) says it once
+        self.announced.add(what)
         self.shown = True
         tty = _isatty(self.stream)
         line = (
@@ -102,6 +108,7 @@ class _Listener:
         self.depth = 0
         self.notice: _Notice | None = None
         self.lock = threading.Lock()
+        self.announced: set[str] = set()  # the parts announced in this process
 
     def on_start(self, event: Any) -> None:
         with self.lock:
@@ -114,7 +121,7 @@ class _Listener:
             module = module_of(event)
             if module.startswith("impactlab."):
                 cache = os.environ.get("NUMBA_CACHE_DIR", "numba's default folder")
-                self.notice = _Notice(module, sys.stderr, cache)
+                self.notice = _Notice(module, sys.stderr, cache, self.announced)
 
     def on_end(self, event: Any) -> None:
         with self.lock:

@@ -198,6 +198,26 @@ def test_a_long_compile_is_announced_once(monkeypatch: pytest.MonkeyPatch) -> No
     assert "cached in" in lines[0]
 
 
+def test_a_part_compiled_in_pieces_is_announced_once(monkeypatch: pytest.MonkeyPatch) -> None:
+    stream = _stderr(monkeypatch)
+    monkeypatch.setattr(_compile_notice, "DELAY_S", 0.0)
+    listener = _compile_notice._Listener()
+    for module in ("impactlab.dynamics.flexcore.rhs", "impactlab.dynamics.flexcore.driver"):
+        listener.on_start(_event(module))  # two outermost compiles of one part
+        assert _wait_for(
+            lambda: listener.notice is not None and not listener.notice.thread.is_alive()
+        )
+        listener.on_end(None)
+    listener.on_start(_event("impactlab.dynamics.core.driver"))  # another part: its own line
+    assert _wait_for(lambda: stream.getvalue().count("\n") == 2)
+    listener.on_end(None)
+    lines = stream.getvalue().splitlines()
+    assert [line.split(" (")[0] for line in lines] == [
+        "impactlab: compiling the flexible-rod drop engine",
+        "impactlab: compiling the impact engine",
+    ]
+
+
 def test_short_or_foreign_compiles_stay_silent(monkeypatch: pytest.MonkeyPatch) -> None:
     stream = _stderr(monkeypatch)
     monkeypatch.setattr(_compile_notice, "DELAY_S", 3600.0)
