@@ -26,7 +26,6 @@ import math
 import numpy as np
 from numba import njit
 
-from impactlab._floatbits import significand_exponent
 from impactlab.contact.kernels import (
     GHAEDNIA,
     JACKSON_GREEN,
@@ -36,31 +35,18 @@ from impactlab.contact.kernels import (
     P_R,
     jg_contact_radius,
 )
-from impactlab.contact.table import DEG, HEADER, SUB, TABLE_MAGIC
+from impactlab.contact.table import SUB, row_force, table_row
 
 
 @njit(cache=True, inline="always", error_model="numpy")
 def table_force_slope(p: np.ndarray, nparam: int, delta: float) -> tuple[float, float]:
     """(F [N], dF/d delta [N/m]) of the tabulated loading curve at ``delta`` [m]; F = -1.0 (and
     slope 0) where the table does not cover ``delta`` (as ``contact.table.table_force``)."""
-    if p.shape[0] <= nparam or p[nparam] != TABLE_MAGIC:
+    row, t, s, u = table_row(p, nparam, delta)
+    if row < 0:
         return -1.0, 0.0
-    u = delta * p[nparam + 1]
-    if not (u >= 1.0 and u < p[nparam + 2]):
-        return -1.0, 0.0
-    s, k = significand_exponent(u)  # u = s 2^k, s in [1, 2)
-    x = (s - 1.0) * SUB
-    j = int(x)
-    t = 2.0 * (x - j) - 1.0
-    row = nparam + HEADER + (k * SUB + j) * (DEG + 1)
-    if not (p[row + DEG] == p[row + DEG] and p[row] == p[row]):
-        return -1.0, 0.0
+    f = row_force(p, row, t)
     t2 = t * t
-    q0 = p[row] + p[row + 1] * t
-    q1 = p[row + 2] + p[row + 3] * t
-    q2 = p[row + 4] + p[row + 5] * t
-    q3 = p[row + 6] + p[row + 7] * t
-    f = (q0 + q1 * t2) + (q2 + q3 * t2) * (t2 * t2)
     # F'(t) = c1 + 2 c2 t + ... + 7 c7 t^6, in the same pairs
     d0 = p[row + 1] + 2.0 * p[row + 2] * t
     d1 = 3.0 * p[row + 3] + 4.0 * p[row + 4] * t

@@ -37,22 +37,39 @@ TABLE_MAGIC = 7.0e-77
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def table_force(p: np.ndarray, nparam: int, delta: float) -> float:
-    """The tabulated loading force [N] at ``delta`` [m], or -1.0 where the table does not cover
-    it (no table, outside its range, or a row left to the closed form)."""
+def table_row(p: np.ndarray, nparam: int, delta: float) -> tuple[int, float, float, float]:
+    """(first index of the row in ``p``, position t in [-1, 1] inside it, significand s and
+    u = delta/delta_lo) of the table's row at ``delta`` [m]; row -1 where the table does not
+    cover it (no table, outside its range, or a row left to the closed form)."""
     if p.shape[0] <= nparam or p[nparam] != TABLE_MAGIC:
-        return -1.0
+        return -1, 0.0, 1.0, 1.0
     u = delta * p[nparam + 1]
     if not (u >= 1.0 and u < p[nparam + 2]):
-        return -1.0
+        return -1, 0.0, 1.0, 1.0
     s, k = significand_exponent(u)  # u = s 2^k, s in [1, 2)
     x = (s - 1.0) * SUB
     j = int(x)
     t = 2.0 * (x - j) - 1.0
     row = nparam + HEADER + (k * SUB + j) * (DEG + 1)
     if not (p[row + DEG] == p[row + DEG] and p[row] == p[row]):
+        return -1, 0.0, 1.0, 1.0
+    return row, t, s, u
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def table_force(p: np.ndarray, nparam: int, delta: float) -> float:
+    """The tabulated loading force [N] at ``delta`` [m], or -1.0 where the table does not cover
+    it (no table, outside its range, or a row left to the closed form)."""
+    row, t, _s, _u = table_row(p, nparam, delta)
+    if row < 0:
         return -1.0
-    # Estrin's scheme (pairs, then t^2, then t^4): a shorter dependency chain than Horner's
+    return row_force(p, row, t)
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def row_force(p: np.ndarray, row: int, t: float) -> float:
+    """The force [N] of the table's row starting at ``p[row]``, at position ``t`` in [-1, 1]:
+    Estrin's scheme (pairs, then t^2, then t^4), a shorter dependency chain than Horner's."""
     t2 = t * t
     q0 = p[row] + p[row + 1] * t
     q1 = p[row + 2] + p[row + 3] * t
