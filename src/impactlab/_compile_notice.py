@@ -6,7 +6,10 @@ numba compiles a function on its first call unless its disk cache holds it; it e
 compilation is still running after ``DELAY_S``, one line goes to stderr (what is compiled, why,
 about how long, where it is cached), and on a terminal a counter of the seconds and functions
 compiled so far follows on the same line until the compilation ends. Compilations within
-``DELAY_S`` (small helpers) print nothing. ``IMPACTLAB_QUIET_COMPILE=1`` silences it.
+``DELAY_S`` (small helpers) print nothing. ``IMPACTLAB_QUIET_COMPILE=1`` silences it. A part
+compiled in several pieces, one after the other (the flexible drop: its right-hand side, step
+and event handler, then the drop), runs them inside ``one_line()``: one line and one counter
+for all of them.
 """
 
 from __future__ import annotations
@@ -15,6 +18,8 @@ import os
 import sys
 import threading
 import time
+from collections.abc import Iterator
+from contextlib import contextmanager
 from typing import Any, TextIO
 
 #: Seconds a compilation runs before it is announced (short ones stay silent).
@@ -109,6 +114,7 @@ class _Listener:
         self.notice: _Notice | None = None
         self.lock = threading.Lock()
         self.announced: set[str] = set()  # the parts announced in this process
+        self.groups = 0  # open ``one_line`` blocks: their compiles share one notice
 
     def on_start(self, event: Any) -> None:
         with self.lock:
@@ -126,10 +132,22 @@ class _Listener:
     def on_end(self, event: Any) -> None:
         with self.lock:
             self.depth = max(self.depth - 1, 0)
-            if self.depth == 0 and self.notice is not None:
+            if self.depth == 0 and self.groups == 0 and self.notice is not None:
                 notice, self.notice = self.notice, None
             else:
                 return
+        notice.finish()
+
+    def open_group(self) -> None:
+        with self.lock:
+            self.groups += 1
+
+    def close_group(self) -> None:
+        with self.lock:
+            self.groups = max(self.groups - 1, 0)
+            if self.groups != 0 or self.depth != 0 or self.notice is None:
+                return
+            notice, self.notice = self.notice, None
         notice.finish()
 
 
@@ -158,10 +176,23 @@ def register(target: Any) -> Any:
     return handle
 
 
+#: The listener of this process (registered with numba by ``install``).
+LISTENER = _Listener()
 _INSTALLED: list[Any] = []
 
 
 def install() -> None:
     """Register the listener with numba (once per process)."""
     if not _INSTALLED:
-        _INSTALLED.append(register(_Listener()))
+        _INSTALLED.append(register(LISTENER))
+
+
+@contextmanager
+def one_line(listener: _Listener = LISTENER) -> Iterator[None]:
+    """The compilations inside the block are announced as one: the first one's line, with one
+    counter (on a terminal) that ends when the block does. Nothing compiled: nothing printed."""
+    listener.open_group()
+    try:
+        yield
+    finally:
+        listener.close_group()

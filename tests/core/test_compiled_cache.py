@@ -218,6 +218,26 @@ def test_a_part_compiled_in_pieces_is_announced_once(monkeypatch: pytest.MonkeyP
     ]
 
 
+def test_compiles_in_one_block_share_one_line(monkeypatch: pytest.MonkeyPatch) -> None:
+    stream = _stderr(monkeypatch)
+    monkeypatch.setattr(_compile_notice, "DELAY_S", 0.0)
+    listener = _compile_notice._Listener()
+    with _compile_notice.one_line(listener):
+        for module in ("impactlab.dynamics.flexcore.rhs", "impactlab.dynamics.flexcore.driver"):
+            listener.on_start(_event(module))
+            assert _wait_for(lambda: stream.getvalue().endswith("\n"))
+            listener.on_end(None)
+            assert listener.notice is not None  # the block is open: the notice stays
+        first = listener.notice
+    assert listener.notice is None and not first.thread.is_alive()  # ended with the block
+    assert first.count == 1  # the second compile counted on the first one's line
+    assert stream.getvalue().count("impactlab: compiling") == 1
+    with _compile_notice.one_line(listener):  # nothing compiled: nothing printed
+        pass
+    assert stream.getvalue().count("\n") == 1
+    assert listener.groups == 0 and listener.depth == 0
+
+
 def test_short_or_foreign_compiles_stay_silent(monkeypatch: pytest.MonkeyPatch) -> None:
     stream = _stderr(monkeypatch)
     monkeypatch.setattr(_compile_notice, "DELAY_S", 3600.0)
