@@ -24,7 +24,6 @@ from impactlab.dynamics.kernels.cells import (
     birth,
     n_in,
 )
-from impactlab.dynamics.kernels.dormand_prince import dense_rows
 from impactlab.dynamics.kernels.layout import (
     A_DMAX,
     A_EMIN,
@@ -91,6 +90,7 @@ from impactlab.dynamics.slipcore.stepper import (
     rhs,
     step,
 )
+from impactlab.dynamics.slipcore.sums import dense_rows_t
 from impactlab.dynamics.slipcore.switches import (
     apply_cell_event,
     normal_switch,
@@ -161,7 +161,7 @@ def _dense_rows(hist, nh, t, h, theta, law, p, c, md, y, cm, sg, cp, W, Q, yt):
     nact = Y_CELL + n_in(cm)
     for j in range(1, 4):
         if j / 4.0 < theta:
-            dense_rows(y, h, j / 4.0, Q, yt, nact)
+            dense_rows_t(y, h, j / 4.0, Q, yt, nact)
             hist, nh = record(hist, nh, t + j * h / 4.0, law, p, c, md, yt, cm, sg, cp, W)
     return hist, nh
 
@@ -173,8 +173,9 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
     n = y.shape[0]
     ng = G_CELL + cm.shape[0]
     ynew, yt, yev = np.zeros(n), np.zeros(n), np.zeros(n)
-    K, Q, W = np.zeros((7, n)), np.zeros((n, 4)), np.zeros((3, cm.shape[0]))
-    R = np.empty((9, n))  # scratch of the recomputation at an event
+    K, Q, W = np.zeros((7, n)), np.zeros((4, n)), np.zeros((3, cm.shape[0]))
+    R = np.empty((10, n))  # scratch of the recomputation at an event
+    q = np.empty(n)  # the scaled local errors of a step
     gold, gnew, gmid = np.empty(ng), np.empty(ng), np.empty(ng)
     Wm = np.zeros((3, cm.shape[0]))
     # hc: the controller's step; h: the step taken (hc cut at a cell boundary or at t*)
@@ -195,7 +196,7 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
         hz = boundary_horizon(cm, cp, ar0, ad0, add)
         past = BOUNDARY_PAST if ad0 > 0.0 else STEP_PAST  # a birth ahead, or a release
         h = min(hc, tstar, past * hz + hmin) if hz > 0.0 else min(hc, tstar)
-        err, ev = step(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew)
+        err, ev = step(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew, q)
         nact = Y_CELL + n_in(cm)  # the entries in use: the rigid-body state, the cells in contact
         if not (err <= 1.0):
             rejected = True

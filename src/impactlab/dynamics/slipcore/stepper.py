@@ -21,17 +21,17 @@ from numba import njit
 from impactlab.dynamics.kernels._jit import njit_llvm_inline, njit_no_refcount
 from impactlab.dynamics.kernels.buffers import copy_into
 from impactlab.dynamics.kernels.cells import SLIP
-from impactlab.dynamics.kernels.dormand_prince import (
-    DP_E,
-    dense_coeffs_rows,
-    dense_entry,
-    dense_rows,
-    stage_point,
-)
 from impactlab.dynamics.kernels.roots import anderson_bjorck, anderson_bjorck_point
 from impactlab.dynamics.kernels.step_control import power_growth
 from impactlab.dynamics.slipcore.layout import G_CELL, Y_CELL
 from impactlab.dynamics.slipcore.model import derivative, evaluate, event_value, events, n_in
+from impactlab.dynamics.slipcore.sums import (
+    dense_coeffs_t,
+    dense_entry_t,
+    dense_rows_t,
+    error_terms,
+    stage_sum,
+)
 
 #: Closed bracket width of an event's location, in theta (a fraction of the step).
 EVENT_BRACKET = 1e-13
@@ -48,37 +48,33 @@ def rhs(law, p, c, md, y, cm, sg, cp, W, dy):
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def error_sum(y, ynew, K, h, rtol, sc, cm):
-    """(sum of the squared scaled local errors, their count) over the rigid-body state and the
-    cells that are not slipping: a slipping cell's force is s_i L_i, a function of the normal
-    contact, and its state entry is never read (its error is no error of the solution). Error
-    scale of component i: rtol (sc[i] + max(|y_i|, |ynew_i|))."""
+def error_sum(q, cm):
+    """(sum of the squared scaled local errors ``q`` (``sums.error_terms``), their count) over
+    the rigid-body state and the cells that are not slipping: a slipping cell's force is
+    s_i L_i, a function of the normal contact, and its state entry is never read (its error is
+    no error of the solution)."""
     err = 0.0
     count = 0
     for i in range(Y_CELL + n_in(cm)):
         if i >= Y_CELL and cm[i - Y_CELL] == SLIP:
             continue
-        ei = 0.0
-        for j in range(7):
-            ei += DP_E[j] * K[j, i]
-        q = h * ei / (rtol * (sc[i] + max(abs(y[i]), abs(ynew[i]))))
-        err += q * q
+        err += q[i] * q[i]
         count += 1
     return err, count
 
 
 @njit_no_refcount
-def step(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew):
+def step(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew, q):
     """One step of size ``h`` from ``y`` (``K[0]``: the derivative at ``y``); fills ``K[1:7]``
-    and ``ynew`` (FSAL). Returns (RMS error norm over the rigid state and the cells in contact,
-    quantities at ``ynew``); the norm leaves out the slipping cells (``error_sum``)."""
+    and ``ynew`` (FSAL), and ``q`` with the scaled local errors. Returns (RMS error norm over
+    the rigid state and the cells in contact, quantities at ``ynew``); the norm leaves out the
+    slipping cells (``error_sum``)."""
     nact = Y_CELL + n_in(cm)
-    for stage in range(1, 6):
-        stage_point(y, K, h, stage, ynew, nact)  # the cells out of contact stay at 0
-        rhs(law, p, c, md, ynew, cm, sg, cp, W, K[stage])
-    stage_point(y, K, h, 6, ynew, nact)
-    ev = rhs(law, p, c, md, ynew, cm, sg, cp, W, K[6])
-    err, count = error_sum(y, ynew, K, h, rtol, sc, cm)
+    for stage in range(1, 7):
+        stage_sum(y, K, h, stage, ynew, nact)  # the cells out of contact stay at 0
+        ev = rhs(law, p, c, md, ynew, cm, sg, cp, W, K[stage])
+    error_terms(y, ynew, K, h, rtol, sc, q, nact)
+    err, count = error_sum(q, cm)
     return math.sqrt(err / count), ev
 
 
@@ -91,9 +87,9 @@ def event_at(k, theta, law, p, c, md, y0, Q, h, cm, sg, cp, yt):
     t3 = t2 * theta
     t4 = t3 * theta
     for i in range(Y_CELL):
-        dense_entry(y0, h, i, theta, t2, t3, t4, Q, yt)
+        dense_entry_t(y0, h, i, theta, t2, t3, t4, Q, yt)
     if k >= G_CELL:
-        dense_entry(y0, h, Y_CELL + k - G_CELL, theta, t2, t3, t4, Q, yt)
+        dense_entry_t(y0, h, Y_CELL + k - G_CELL, theta, t2, t3, t4, Q, yt)
     return event_value(k, law, p, c, md, yt, cm, sg, cp)
 
 
@@ -161,8 +157,8 @@ def first_event(gold, gnew, gmid, law, p, c, md, y0, K, Q, h, cm, sg, cp, Wm, yt
     count as simultaneous: the lowest index wins (normal events, then birth and release, then
     the cells). Leaves the dense-output coefficients of the active components in ``Q``."""
     nact = Y_CELL + n_in(cm)
-    dense_coeffs_rows(K, Q, nact)
-    dense_rows(y0, h, 0.5, Q, yt, nact)
+    dense_coeffs_t(K, Q, nact)
+    dense_rows_t(y0, h, 0.5, Q, yt, nact)
     events(c, md, cm, sg, cp, Wm, evaluate(law, p, c, md, yt, cm, sg, cp, Wm), gmid)
     # the first half, then (if nothing fired there) the second: later events need no location
     best, theta = _first_in(0.0, gold, gmid, law, p, c, md, y0, Q, h, cm, sg, cp, yt)
@@ -174,11 +170,12 @@ def first_event(gold, gnew, gmid, law, p, c, md, y0, K, Q, h, cm, sg, cp, Wm, yt
 @njit(cache=True, error_model="numpy")
 def integrate_to(law, p, c, md, y, cm, sg, cp, W, k0, H, rtol, sc, out, R):
     """Integrate from ``y`` over exactly ``H`` with error control into ``out`` (the state at an
-    event is recomputed this way, not taken from the dense output; ``R``: 9 x len(y) scratch).
+    event is recomputed this way, not taken from the dense output; ``R``: 10 x len(y) scratch).
     Returns the steps taken."""
     Ks = R[:7]
     cur = R[7]
     kc = R[8]
+    q = R[9]
     copy_into(cur, y)
     copy_into(kc, k0)
     done = 0.0
@@ -191,7 +188,7 @@ def integrate_to(law, p, c, md, y, cm, sg, cp, W, k0, H, rtol, sc, out, R):
         if last:
             hh = rem
         copy_into(Ks[0], kc)
-        err, _ev = step(law, p, c, md, cur, cm, sg, cp, W, Ks, hh, rtol, sc, out)
+        err, _ev = step(law, p, c, md, cur, cm, sg, cp, W, Ks, hh, rtol, sc, out, q)
         if not (err <= 1.0) and hh > 1e-6 * H:
             hh *= max(0.2, power_growth(err)) if math.isfinite(err) else 0.25
             continue
