@@ -81,39 +81,51 @@ def normal_contact_llvm(law, p, md, delta):
     return normal_contact(law, p, md, delta)
 
 
-@njit_no_refcount
-def evaluate(law, p, c, md, y, cm, sg, cp, W):
-    """Contact quantities at state ``y``: fills W[0] = limits L_i, W[1] = dL_i/dt and W[2] = the
-    cell forces f_i (OUT: 0, SLIP: s_i L_i) and returns
-    (delta, a, b, F_n, F_t, v_n, v_slip, radius, d radius/dt, n in contact). The normal
-    contact (F_n, the radius and their rates) comes from one pass over the law
-    (``kernels.normal.normal_contact``)."""
+@njit_llvm_inline
+def normal_state(law, p, c, md, y):
+    """(delta, a, b, F_n, v_n, v_slip, radius, dF_n/dt, d radius/dt) at state ``y``: the
+    normal contact from one pass over the law (``kernels.normal.normal_contact``)."""
     delta, a, b, _xs, _sl = geometry_llvm(c, y)
     w = y[S_SPIN]
     vn = y[S_VY] - w * a
     vs = y[S_VX] + w * b
     Fn, Fs, ar, As = normal_contact_llvm(law, p, md, delta)
-    Fd = Fs * -vn
-    ad = As * -vn
-    nin = n_in(cm)
-    dx = cp[CP_DX]
-    mu = c[C_MU]
+    return delta, a, b, Fn, vn, vs, ar, Fs * -vn, As * -vn
+
+
+@njit_llvm_inline
+def tangential_force(W, nin):
+    """F_t = -sum f_i [N] over the ``nin`` cells in contact (in cell order, from 0.0). A loop of
+    its own: the cells' loops before it, free of this chain of additions, vectorise."""
     Ft = 0.0
-    u = 1.0 / ar if ar > 0.0 else 0.0
     for i in range(nin):
-        L, Ld = limits_inv(i, dx, mu, Fn, Fd, ar, ad, u)
-        W[0, i] = L
-        W[1, i] = Ld
-        f = sg[i] * L if cm[i] == SLIP else y[Y_CELL + i]
-        W[2, i] = f
-        Ft -= f
-    return delta, a, b, Fn, Ft, vn, vs, ar, ad, nin
+        Ft -= W[2, i]
+    return Ft
 
 
 @njit_no_refcount
-def derivative(c, y, cm, sg, cp, W, ev, dy):
-    """The time derivative of ``y`` into ``dy`` from the quantities ``ev`` of ``evaluate``."""
-    _delta, a, b, Fn, Ft, vn, vs, ar, ad, nin = ev
+def evaluate(law, p, c, md, y, cm, sg, cp, W):
+    """Contact quantities at state ``y``: fills W[0] = limits L_i, W[1] = dL_i/dt and W[2] = the
+    cell forces f_i (OUT: 0, SLIP: s_i L_i) and returns
+    (delta, a, b, F_n, F_t, v_n, v_slip, radius, d radius/dt, n in contact)."""
+    delta, a, b, Fn, vn, vs, ar, Fd, ad = normal_state(law, p, c, md, y)
+    nin = n_in(cm)
+    dx = cp[CP_DX]
+    mu = c[C_MU]
+    u = 1.0 / ar if ar > 0.0 else 0.0
+    for i in range(nin):
+        L, Ld = limits_inv(i, dx, mu, Fn, Fd, ar, ad, u)
+        yi = y[Y_CELL + i]  # read unconditionally: the loop vectorises without masked loads
+        W[0, i] = L
+        W[1, i] = Ld
+        W[2, i] = sg[i] * L if cm[i] == SLIP else yi
+    return delta, a, b, Fn, tangential_force(W, nin), vn, vs, ar, ad, nin
+
+
+@njit_llvm_inline
+def rigid_rates(c, y, ev, dy):
+    """The time derivative of the rigid-body state into ``dy`` from the quantities ``ev``."""
+    _delta, a, b, Fn, Ft, vn, _vs, _ar, _ad, _nin = ev
     m = c[C_M]
     dy[S_X] = y[S_VX]
     dy[S_Y] = y[S_VY]
@@ -123,11 +135,50 @@ def derivative(c, y, cm, sg, cp, W, ev, dy):
     dy[S_SPIN] = (b * Ft - a * Fn) / c[C_I]
     dy[S_WORK] = Fn * vn
     dy[S_Q] = 0.0
+
+
+@njit_no_refcount
+def derivative(c, y, cm, sg, cp, W, ev, dy):
+    """The time derivative of ``y`` into ``dy`` from the quantities ``ev`` of ``evaluate``."""
+    rigid_rates(c, y, ev, dy)
+    _delta, _a, _b, _Fn, _Ft, _vn, vs, ar, ad, nin = ev
     for i in range(nin):
         if cm[i] == STICK:
             dy[Y_CELL + i] = stick_rate(i, W[2, i], ar, ad, vs, cp)
         else:
             dy[Y_CELL + i] = sg[i] * W[1, i]
+
+
+@njit_llvm_inline
+def evaluate_rates(law, p, c, md, y, cm, sg, cp, W, dy):
+    """``evaluate`` and ``derivative`` in one pass over the cells (the same bits): fills ``W``
+    and ``dy``, returns the quantities of ``evaluate``. The stages of a step call it, inlined by
+    LLVM: a call passes about 90 values (the arrays' fields, the constant and mode tuples),
+    about as long as the cells' loop itself takes."""
+    delta, a, b, Fn, vn, vs, ar, Fd, ad = normal_state(law, p, c, md, y)
+    nin = n_in(cm)
+    dx = cp[CP_DX]
+    g2 = 2.0 * cp[CP_G1]
+    mu = c[C_MU]
+    u = 1.0 / ar if ar > 0.0 else 0.0
+    for i in range(nin):
+        L, Ld = limits_inv(i, dx, mu, Fn, Fd, ar, ad, u)
+        yi = y[Y_CELL + i]
+        s = sg[i]
+        mode = cm[i]
+        f = s * L if mode == SLIP else yi
+        W[0, i] = L
+        W[1, i] = Ld
+        W[2, i] = f
+        # kernels.cells.stick_rate with the cell parameters read once
+        ln = cell_length(i, ar, dx)
+        r = g2 * ln * vs
+        if ad < 0.0 and 0.0 < ln < dx:
+            r += f * ad / ln
+        dy[Y_CELL + i] = r if mode == STICK else s * Ld
+    ev = (delta, a, b, Fn, tangential_force(W, nin), vn, vs, ar, ad, nin)
+    rigid_rates(c, y, ev, dy)
+    return ev
 
 
 @njit_llvm_inline

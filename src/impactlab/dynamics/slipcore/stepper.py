@@ -24,7 +24,13 @@ from impactlab.dynamics.kernels.cells import SLIP
 from impactlab.dynamics.kernels.roots import anderson_bjorck, anderson_bjorck_point
 from impactlab.dynamics.kernels.step_control import power_growth
 from impactlab.dynamics.slipcore.layout import G_CELL, Y_CELL
-from impactlab.dynamics.slipcore.model import derivative, evaluate, event_value, events, n_in
+from impactlab.dynamics.slipcore.model import (
+    evaluate,
+    evaluate_rates,
+    event_value,
+    events,
+    n_in,
+)
 from impactlab.dynamics.slipcore.sums import (
     dense_coeffs_t,
     dense_entry_t,
@@ -39,12 +45,10 @@ EVENT_BRACKET = 1e-13
 SIMULTANEOUS = 1e-10
 
 
-@njit_no_refcount
+@njit_llvm_inline
 def rhs(law, p, c, md, y, cm, sg, cp, W, dy):
     """Derivative of ``y`` into ``dy``; returns the evaluated quantities."""
-    ev = evaluate(law, p, c, md, y, cm, sg, cp, W)
-    derivative(c, y, cm, sg, cp, W, ev, dy)
-    return ev
+    return evaluate_rates(law, p, c, md, y, cm, sg, cp, W, dy)
 
 
 @njit(cache=True, inline="always", error_model="numpy")
