@@ -137,7 +137,7 @@ def _switch(k, law, p, c, md, y, cm, sg, cp, W, ev, acc, K, gold):
     settled, ev = settle(law, p, c, md, y, cm, sg, cp, W, c[C_MU])
     if not settled:
         return ST_TOO_MANY_EVENTS, c, md
-    derivative(c, y, cm, sg, cp, W, ev, K[0])  # rhs at y: ev and W are those at y
+    derivative(c, y, W, ev, K[0])  # rhs at y: ev and W are those at y
     acc[A_JUMP] = max(acc[A_JUMP], abs(ev[4] - ft_before))
     events(c, md, cm, sg, cp, W, ev, gold)
     if gold[EV_SEP] > 0.0:  # a switch located at the separation itself: that is the end
@@ -173,14 +173,14 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
     n = y.shape[0]
     ng = G_CELL + cm.shape[0]
     ynew, yt, yev = np.zeros(n), np.zeros(n), np.zeros(n)
-    K, Q, W = np.zeros((7, n)), np.zeros((4, n)), np.zeros((3, cm.shape[0]))
+    K, Q, W = np.zeros((7, n)), np.zeros((4, n)), np.zeros((4, cm.shape[0]))
     R = np.empty((10, n))  # scratch of the recomputation at an event
     q = np.empty(n)  # the scaled local errors of a step
     gold, gnew, gmid = np.empty(ng), np.empty(ng), np.empty(ng)
-    Wm = np.zeros((3, cm.shape[0]))
+    Wm = np.zeros((4, cm.shape[0]))
     # hc: the controller's step; h: the step taken (hc cut at a cell boundary or at t*)
     t, hc, hmin = 0.0, 0.02 * tstar * rtol**0.2, 1e-14 * tstar
-    ev = rhs(law, p, c, md, y, cm, sg, cp, W, K[0])
+    ev = rhs(law, p, c, md, y, cm, sg, cp, W, K[0], n_in(cm))
     events(c, md, cm, sg, cp, W, ev, gold)
     nh = np.int64(0)  # not a literal: record() is compiled once, for any row count
     if rec:

@@ -23,6 +23,8 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from impactlab.dynamics.kernels._jit import njit_internal, njit_llvm_inline, njit_no_refcount
 from impactlab.dynamics.kernels.cells import (
     CP_DX,
@@ -34,7 +36,6 @@ from impactlab.dynamics.kernels.cells import (
     cell_switch,
     limits_inv,
     n_in,
-    stick_rate,
 )
 from impactlab.dynamics.kernels.layout import (
     C_DLIM,
@@ -96,29 +97,46 @@ def normal_state(law, p, c, md, y):
 @njit_llvm_inline
 def tangential_force(W, nin):
     """F_t = -sum f_i [N] over the ``nin`` cells in contact (in cell order, from 0.0). A loop of
-    its own: the cells' loops before it, free of this chain of additions, vectorise."""
+    its own: the cells' loop before it, free of this chain of additions, vectorises."""
     Ft = 0.0
     for i in range(nin):
         Ft -= W[2, i]
     return Ft
 
 
-@njit_no_refcount
-def evaluate(law, p, c, md, y, cm, sg, cp, W):
-    """Contact quantities at state ``y``: fills W[0] = limits L_i, W[1] = dL_i/dt and W[2] = the
-    cell forces f_i (OUT: 0, SLIP: s_i L_i) and returns
-    (delta, a, b, F_n, F_t, v_n, v_slip, radius, d radius/dt, n in contact)."""
-    delta, a, b, Fn, vn, vs, ar, Fd, ad = normal_state(law, p, c, md, y)
-    nin = n_in(cm)
+@njit_llvm_inline
+def cell_quantities(y, cm, sg, cp, W, mu, Fn, Fd, ar, ad, vs, nin, dy, o):
+    """The ``nin`` cells in contact: W[0] = limits L_i, W[1] = dL_i/dt, W[2] = forces f_i (SLIP:
+    s_i L_i) and their rates df_i/dt into dy[o + i] (STICK: ``kernels.cells.stick_rate``, SLIP:
+    s_i dL_i/dt). One loop without branches that LLVM vectorises over the cells."""
     dx = cp[CP_DX]
-    mu = c[C_MU]
+    g2 = 2.0 * cp[CP_G1]
     u = 1.0 / ar if ar > 0.0 else 0.0
     for i in range(nin):
         L, Ld = limits_inv(i, dx, mu, Fn, Fd, ar, ad, u)
-        yi = y[Y_CELL + i]  # read unconditionally: the loop vectorises without masked loads
+        yi = y[Y_CELL + i]  # read unconditionally: no masked loads
+        s = sg[i]
+        mode = cm[i]
+        f = s * L if mode == SLIP else yi
         W[0, i] = L
         W[1, i] = Ld
-        W[2, i] = sg[i] * L if cm[i] == SLIP else yi
+        W[2, i] = f
+        # kernels.cells.stick_rate with the cell parameters read once (the same bits)
+        ln = cell_length(i, ar, dx)
+        r = g2 * ln * vs
+        if ad < 0.0 and 0.0 < ln < dx:
+            r += f * ad / ln
+        dy[o + i] = r if mode == STICK else s * Ld
+
+
+@njit_no_refcount
+def evaluate(law, p, c, md, y, cm, sg, cp, W):
+    """Contact quantities at state ``y``: fills W[0] = limits L_i, W[1] = dL_i/dt, W[2] = the
+    cell forces f_i (OUT: 0, SLIP: s_i L_i) and W[3] = their rates, and returns
+    (delta, a, b, F_n, F_t, v_n, v_slip, radius, d radius/dt, n in contact)."""
+    delta, a, b, Fn, vn, vs, ar, Fd, ad = normal_state(law, p, c, md, y)
+    nin = n_in(cm)
+    cell_quantities(y, cm, sg, cp, W, c[C_MU], Fn, Fd, ar, ad, vs, nin, W[3], np.int64(0))
     return delta, a, b, Fn, tangential_force(W, nin), vn, vs, ar, ad, nin
 
 
@@ -138,44 +156,22 @@ def rigid_rates(c, y, ev, dy):
 
 
 @njit_no_refcount
-def derivative(c, y, cm, sg, cp, W, ev, dy):
-    """The time derivative of ``y`` into ``dy`` from the quantities ``ev`` of ``evaluate``."""
+def derivative(c, y, W, ev, dy):
+    """The time derivative of ``y`` into ``dy`` from the quantities ``ev`` and ``W`` of
+    ``evaluate``."""
     rigid_rates(c, y, ev, dy)
-    _delta, _a, _b, _Fn, _Ft, _vn, vs, ar, ad, nin = ev
-    for i in range(nin):
-        if cm[i] == STICK:
-            dy[Y_CELL + i] = stick_rate(i, W[2, i], ar, ad, vs, cp)
-        else:
-            dy[Y_CELL + i] = sg[i] * W[1, i]
+    for i in range(ev[9]):
+        dy[Y_CELL + i] = W[3, i]
 
 
 @njit_llvm_inline
-def evaluate_rates(law, p, c, md, y, cm, sg, cp, W, dy):
-    """``evaluate`` and ``derivative`` in one pass over the cells (the same bits): fills ``W``
-    and ``dy``, returns the quantities of ``evaluate``. The stages of a step call it, inlined by
-    LLVM: a call passes about 90 values (the arrays' fields, the constant and mode tuples),
-    about as long as the cells' loop itself takes."""
+def evaluate_rates(law, p, c, md, y, cm, sg, cp, W, dy, nin):
+    """``evaluate`` and ``derivative`` together for the ``nin`` cells in contact (the same
+    bits): fills ``W[:3]`` and ``dy``, returns the quantities of ``evaluate``. The stages of a
+    step call it, inlined by LLVM: a call passes about 90 values (the arrays' fields, the
+    constant and mode tuples), about as long as the cells' loop itself takes."""
     delta, a, b, Fn, vn, vs, ar, Fd, ad = normal_state(law, p, c, md, y)
-    nin = n_in(cm)
-    dx = cp[CP_DX]
-    g2 = 2.0 * cp[CP_G1]
-    mu = c[C_MU]
-    u = 1.0 / ar if ar > 0.0 else 0.0
-    for i in range(nin):
-        L, Ld = limits_inv(i, dx, mu, Fn, Fd, ar, ad, u)
-        yi = y[Y_CELL + i]
-        s = sg[i]
-        mode = cm[i]
-        f = s * L if mode == SLIP else yi
-        W[0, i] = L
-        W[1, i] = Ld
-        W[2, i] = f
-        # kernels.cells.stick_rate with the cell parameters read once
-        ln = cell_length(i, ar, dx)
-        r = g2 * ln * vs
-        if ad < 0.0 and 0.0 < ln < dx:
-            r += f * ad / ln
-        dy[Y_CELL + i] = r if mode == STICK else s * Ld
+    cell_quantities(y, cm, sg, cp, W, c[C_MU], Fn, Fd, ar, ad, vs, nin, dy, np.int64(Y_CELL))
     ev = (delta, a, b, Fn, tangential_force(W, nin), vn, vs, ar, ad, nin)
     rigid_rates(c, y, ev, dy)
     return ev
@@ -188,8 +184,8 @@ def cell_event(i, cm, sg, cp, W, ar, ad, vs):
     return cell_switch(i, cm, sg, cp, W[0, i], W[1, i], W[2, i], ar, ad, vs)
 
 
-@njit_no_refcount
-def events(c, md, cm, sg, cp, W, ev, g):
+@njit_llvm_inline
+def events_llvm(c, md, cm, sg, cp, W, ev, g):
     """All event functions into ``g`` (fire when g goes from <= 0 to > 0): the core's normal
     events (EV_*), the birth and release of the outermost cell, and one per cell."""
     delta, _a, _b, _Fn, _Ft, vn, vs, ar, ad, nin = ev
@@ -211,6 +207,13 @@ def events(c, md, cm, sg, cp, W, ev, g):
         g[G_REL] = (nin - 1) * dx - ar
     for i in range(nin):
         g[G_CELL + i] = cell_event(i, cm, sg, cp, W, ar, ad, vs)
+
+
+@njit_no_refcount
+def events(c, md, cm, sg, cp, W, ev, g):
+    """``events_llvm`` as a function of its own, for the callers other than the midpoint check
+    of a step (which inlines it)."""
+    events_llvm(c, md, cm, sg, cp, W, ev, g)
 
 
 @njit_no_refcount

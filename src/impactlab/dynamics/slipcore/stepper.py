@@ -28,7 +28,7 @@ from impactlab.dynamics.slipcore.model import (
     evaluate,
     evaluate_rates,
     event_value,
-    events,
+    events_llvm,
     n_in,
 )
 from impactlab.dynamics.slipcore.sums import (
@@ -46,9 +46,10 @@ SIMULTANEOUS = 1e-10
 
 
 @njit_llvm_inline
-def rhs(law, p, c, md, y, cm, sg, cp, W, dy):
-    """Derivative of ``y`` into ``dy``; returns the evaluated quantities."""
-    return evaluate_rates(law, p, c, md, y, cm, sg, cp, W, dy)
+def rhs(law, p, c, md, y, cm, sg, cp, W, dy, nin):
+    """Derivative of ``y`` into ``dy`` (``nin`` cells in contact); returns the evaluated
+    quantities."""
+    return evaluate_rates(law, p, c, md, y, cm, sg, cp, W, dy, nin)
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -73,10 +74,11 @@ def step(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew, q):
     and ``ynew`` (FSAL), and ``q`` with the scaled local errors. Returns (RMS error norm over
     the rigid state and the cells in contact, quantities at ``ynew``); the norm leaves out the
     slipping cells (``error_sum``)."""
-    nact = Y_CELL + n_in(cm)
+    nin = n_in(cm)
+    nact = Y_CELL + nin
     for stage in range(1, 7):
         stage_sum(y, K, h, stage, ynew, nact)  # the cells out of contact stay at 0
-        ev = rhs(law, p, c, md, ynew, cm, sg, cp, W, K[stage])
+        ev = rhs(law, p, c, md, ynew, cm, sg, cp, W, K[stage], nin)
     error_terms(y, ynew, K, h, rtol, sc, q, nact)
     err, count = error_sum(q, cm)
     return math.sqrt(err / count), ev
@@ -152,6 +154,15 @@ def _first_in(lo, ga, gb, law, p, c, md, y0, Q, h, cm, sg, cp, yt):
     return best, theta
 
 
+@njit(cache=True, inline="always", error_model="numpy")
+def crosses(ga, gb):
+    """True if an event function goes from <= 0 (``ga``) to > 0 (``gb``): a search is due."""
+    hits = 0
+    for k in range(ga.shape[0]):
+        hits += 1 if ga[k] <= 0.0 and gb[k] > 0.0 else 0
+    return hits > 0
+
+
 @njit_no_refcount
 def first_event(gold, gnew, gmid, law, p, c, md, y0, K, Q, h, cm, sg, cp, Wm, yt):
     """(event, theta) of the earliest event inside the accepted step (-1, 2.0: none). The
@@ -163,10 +174,12 @@ def first_event(gold, gnew, gmid, law, p, c, md, y0, K, Q, h, cm, sg, cp, Wm, yt
     nact = Y_CELL + n_in(cm)
     dense_coeffs_t(K, Q, nact)
     dense_rows_t(y0, h, 0.5, Q, yt, nact)
-    events(c, md, cm, sg, cp, Wm, evaluate(law, p, c, md, yt, cm, sg, cp, Wm), gmid)
+    events_llvm(c, md, cm, sg, cp, Wm, evaluate(law, p, c, md, yt, cm, sg, cp, Wm), gmid)
     # the first half, then (if nothing fired there) the second: later events need no location
-    best, theta = _first_in(0.0, gold, gmid, law, p, c, md, y0, Q, h, cm, sg, cp, yt)
-    if best < 0:
+    best, theta = np.int64(-1), 2.0
+    if crosses(gold, gmid):
+        best, theta = _first_in(0.0, gold, gmid, law, p, c, md, y0, Q, h, cm, sg, cp, yt)
+    if best < 0 and crosses(gmid, gnew):
         best, theta = _first_in(0.5, gmid, gnew, law, p, c, md, y0, Q, h, cm, sg, cp, yt)
     return best, theta
 
