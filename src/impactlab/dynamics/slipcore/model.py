@@ -239,18 +239,20 @@ def event_value(k, law, p, c, md, y, cm, sg, cp):
         return md[M_DR] - delta
     if k < G_BIRTH:
         return -1.0
-    ar = radius_llvm(law, p, md, delta)
     dx = cp[CP_DX]
     nin = n_in(cm)
     if k == G_BIRTH:
+        ar = radius_llvm(law, p, md, delta)
         return ar - nin * dx if nin < cm.shape[0] else -1.0
     if k == G_REL:
+        ar = radius_llvm(law, p, md, delta)
         return (nin - 1) * dx - ar if nin > 1 and cm[nin - 1] == STICK else -1.0
     i = k - G_CELL
     if i >= nin:
         return -1.0
     vs = y[S_VX] + w * b
-    Fn, Fs, _ar, As = normal_contact_llvm(law, p, md, delta)
+    # one pass over the law: its radius is ``radius``'s to the bit (tests/contact)
+    Fn, Fs, ar, As = normal_contact_llvm(law, p, md, delta)
     Fd = Fs * -vn
     ad = As * -vn
     L, Ld = limits_inv(i, dx, c[C_MU], Fn, Fd, ar, ad, 1.0 / ar if ar > 0.0 else 0.0)

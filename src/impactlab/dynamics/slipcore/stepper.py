@@ -19,7 +19,6 @@ import numpy as np
 from numba import njit
 
 from impactlab.dynamics.kernels._jit import njit_llvm_inline, njit_no_refcount
-from impactlab.dynamics.kernels.buffers import copy_into
 from impactlab.dynamics.kernels.cells import SLIP
 from impactlab.dynamics.kernels.roots import anderson_bjorck, anderson_bjorck_point
 from impactlab.dynamics.kernels.step_control import power_growth
@@ -188,13 +187,16 @@ def first_event(gold, gnew, gmid, law, p, c, md, y0, K, Q, h, cm, sg, cp, Wm, yt
 def integrate_to(law, p, c, md, y, cm, sg, cp, W, k0, H, rtol, sc, out, R):
     """Integrate from ``y`` over exactly ``H`` with error control into ``out`` (the state at an
     event is recomputed this way, not taken from the dense output; ``R``: 10 x len(y) scratch).
-    Returns the steps taken."""
+    Returns the steps taken. Only the entries in use are copied (the rigid-body state and the
+    cells in contact: the others are never read)."""
+    nact = Y_CELL + n_in(cm)
     Ks = R[:7]
     cur = R[7]
     kc = R[8]
     q = R[9]
-    copy_into(cur, y)
-    copy_into(kc, k0)
+    for i in range(nact):
+        cur[i] = y[i]
+        kc[i] = k0[i]
     done = 0.0
     hh = H
     steps = 0
@@ -204,7 +206,8 @@ def integrate_to(law, p, c, md, y, cm, sg, cp, W, k0, H, rtol, sc, out, R):
         last = hh >= rem * (1.0 - 1e-12)
         if last:
             hh = rem
-        copy_into(Ks[0], kc)
+        for i in range(nact):
+            Ks[0, i] = kc[i]
         err, _ev = step(law, p, c, md, cur, cm, sg, cp, W, Ks, hh, rtol, sc, out, q)
         if not (err <= 1.0) and hh > 1e-6 * H:
             hh *= max(0.2, power_growth(err)) if math.isfinite(err) else 0.25
@@ -212,7 +215,8 @@ def integrate_to(law, p, c, md, y, cm, sg, cp, W, k0, H, rtol, sc, out, R):
         if last:
             break
         done += hh
-        copy_into(cur, out)
-        copy_into(kc, Ks[6])
+        for i in range(nact):
+            cur[i] = out[i]
+            kc[i] = Ks[6, i]
         hh *= min(5.0, power_growth(err)) if err > 0.0 else 5.0
     return steps
