@@ -210,15 +210,17 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
         if rec:
             hist, nh = _dense_rows(hist, nh, t, h, theta, law, p, c, md, y, cm, sg, cp, W, Q, yt)
         if k >= 0:  # the state at the event, integrated anew (the dense output is 4th order)
-            nsteps += integrate_to(
+            # ev and W: the quantities at yev, from the last stage of the last step (FSAL)
+            n_re, ev = integrate_to(
                 law, p, c, md, y, cm, sg, cp, W, K[0], theta * h, rtol, sc, yev, R
             )
+            nsteps += n_re
             tend = t + theta * h
         else:
             copy_active(yev, ynew, nact)
             tend = t + h
-        if k >= 0 or rec:  # else W and ev still hold the step's last stage, at ynew
-            ev = evaluate(law, p, c, md, yev, cm, sg, cp, W)
+            if rec:  # else W and ev still hold the step's last stage, at ynew
+                ev = evaluate(law, p, c, md, yev, cm, sg, cp, W)
         if not track(acc, law, p, c, md, yev, cm, cp, W, ev, t, tend, diag):
             status = ST_NAN
             break

@@ -187,8 +187,10 @@ def first_event(gold, gnew, gmid, law, p, c, md, y0, K, Q, h, cm, sg, cp, Wm, yt
 def integrate_to(law, p, c, md, y, cm, sg, cp, W, k0, H, rtol, sc, out, R):
     """Integrate from ``y`` over exactly ``H`` with error control into ``out`` (the state at an
     event is recomputed this way, not taken from the dense output; ``R``: 10 x len(y) scratch).
-    Returns the steps taken. Only the entries in use are copied (the rigid-body state and the
-    cells in contact: the others are never read)."""
+    Returns (the steps taken, the quantities of ``model.evaluate`` at ``out``, ``W`` filled
+    there but for its rates W[3]: the last stage of the last step, FSAL). Only the entries in
+    use are copied (the rigid-body state and the cells in contact: the others are never
+    read)."""
     nact = Y_CELL + n_in(cm)
     Ks = R[:7]
     cur = R[7]
@@ -208,7 +210,7 @@ def integrate_to(law, p, c, md, y, cm, sg, cp, W, k0, H, rtol, sc, out, R):
             hh = rem
         for i in range(nact):
             Ks[0, i] = kc[i]
-        err, _ev = step(law, p, c, md, cur, cm, sg, cp, W, Ks, hh, rtol, sc, out, q)
+        err, ev = step(law, p, c, md, cur, cm, sg, cp, W, Ks, hh, rtol, sc, out, q)
         if not (err <= 1.0) and hh > 1e-6 * H:
             hh *= max(0.2, power_growth(err)) if math.isfinite(err) else 0.25
             continue
@@ -219,4 +221,4 @@ def integrate_to(law, p, c, md, y, cm, sg, cp, W, k0, H, rtol, sc, out, R):
             cur[i] = out[i]
             kc[i] = Ks[6, i]
         hh *= min(5.0, power_growth(err)) if err > 0.0 else 5.0
-    return steps
+    return steps, ev
