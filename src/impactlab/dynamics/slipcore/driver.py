@@ -205,8 +205,9 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
                 status = ST_NAN if not math.isfinite(err) else ST_STEP_UNDERFLOW
                 break
             continue
-        events(c, md, cm, sg, cp, W, ev, gnew)
-        k, theta = first_event(gold, gnew, gmid, law, p, c, md, y, K, Q, h, cm, sg, cp, Wm, yt)
+        k, theta = first_event(
+            gold, gnew, gmid, law, p, c, md, y, K, Q, h, cm, sg, cp, W, ev, Wm, yt
+        )
         if rec:
             hist, nh = _dense_rows(hist, nh, t, h, theta, law, p, c, md, y, cm, sg, cp, W, Q, yt)
         if k >= 0:  # the state at the event, integrated anew (the dense output is 4th order)

@@ -163,13 +163,15 @@ def crosses(ga, gb):
 
 
 @njit_no_refcount
-def first_event(gold, gnew, gmid, law, p, c, md, y0, K, Q, h, cm, sg, cp, Wm, yt):
+def first_event(gold, gnew, gmid, law, p, c, md, y0, K, Q, h, cm, sg, cp, W, ev, Wm, yt):
     """(event, theta) of the earliest event inside the accepted step (-1, 2.0: none). The
-    event functions are also evaluated at the step's midpoint (dense output, into ``gmid``;
+    event functions at the step's end go into ``gnew`` (from ``W`` and ``ev`` there). They
+    are also evaluated at the step's midpoint (dense output, into ``gmid``;
     ``Wm``: scratch): one that rises above zero and falls back within a step, a cell that
     sticks for less than a step, is found there. Events within SIMULTANEOUS of the earliest
     count as simultaneous: the lowest index wins (normal events, then birth and release, then
     the cells). Leaves the dense-output coefficients of the active components in ``Q``."""
+    events_llvm(c, md, cm, sg, cp, W, ev, gnew)  # at the step's end (``W``, ``ev``: there)
     nact = Y_CELL + n_in(cm)
     dense_coeffs_t(K, Q, nact)
     dense_rows_t(y0, h, 0.5, Q, yt, nact)
