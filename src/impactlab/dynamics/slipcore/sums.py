@@ -1,5 +1,5 @@
-"""The Dormand-Prince sums of the partial-slip step, written so that LLVM vectorises them over
-the state entries: the stage points, the local error terms and Shampine's dense output.
+"""The Dormand-Prince sums of the partial-slip step over the entries in use: the stage points,
+the local error terms and Shampine's dense output.
 
 The tableau and the dense-output polynomial are the shared kernels' (``kernels.dormand_prince``:
 Dormand & Prince 1980, doi:10.1016/0771-050X(80)90013-3; Shampine 1986,
@@ -7,9 +7,9 @@ doi:10.1090/S0025-5718-1986-0815836-3), and each entry is summed exactly as the 
 sum it (from 0.0, term by term in stage order, zero coefficients included): the same bits. The
 shared ``stage_point`` loops over the stages inside the loop over the entries, a chain of up
 to seven dependent additions per entry with a coefficient read per term; here the loop over
-the entries is the inner one (each term added to all entries in turn), which LLVM vectorises,
-and the dense-output coefficients are stored one row per power of theta (``Q``: 4 x n, each
-row contiguous over the entries).
+the entries is the inner one (each term added to all entries in turn; LLVM vectorises it from
+32 entries, below which it keeps the scalar loop), and the dense-output coefficients are
+stored one row per power of theta (``Q``: 4 x n, each row contiguous over the entries).
 """
 
 from __future__ import annotations
