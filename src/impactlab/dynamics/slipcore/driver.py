@@ -87,7 +87,7 @@ from impactlab.dynamics.slipcore.outputs import A_JUMP, NA, record, separation, 
 from impactlab.dynamics.slipcore.stepper import (
     first_event,
     integrate_to,
-    rhs,
+    slip_rhs,
     step,
 )
 from impactlab.dynamics.slipcore.sums import dense_rows_t
@@ -180,7 +180,7 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
     Wm = np.zeros((4, cm.shape[0]))
     # hc: the controller's step; h: the step taken (hc cut at a cell boundary or at t*)
     t, hc, hmin = 0.0, 0.02 * tstar * rtol**0.2, 1e-14 * tstar
-    ev = rhs(law, p, c, md, y, cm, sg, cp, W, K[0], n_in(cm))
+    ev = slip_rhs(law, p, c, md, y, cm, sg, cp, W, K[0], n_in(cm))
     events(c, md, cm, sg, cp, W, ev, gold)
     nh = np.int64(0)  # not a literal: record() is compiled once, for any row count
     if rec:

@@ -95,7 +95,7 @@ def normal_state(law, p, c, md, y):
 
 
 @njit_llvm_inline
-def tangential_force(W, nin):
+def cells_tangential_force(W, nin):
     """F_t = -sum f_i [N] over the ``nin`` cells in contact (in cell order, from 0.0). A loop of
     its own: the cells' loop before it, free of this chain of additions, can be vectorised."""
     Ft = 0.0
@@ -139,7 +139,7 @@ def evaluate(law, p, c, md, y, cm, sg, cp, W):
     delta, a, b, Fn, vn, vs, ar, Fd, ad = normal_state(law, p, c, md, y)
     nin = n_in(cm)
     cell_quantities(y, cm, sg, cp, W, c[C_MU], Fn, Fd, ar, ad, vs, nin, W[3], np.int64(0))
-    return delta, a, b, Fn, tangential_force(W, nin), vn, vs, ar, ad, nin
+    return delta, a, b, Fn, cells_tangential_force(W, nin), vn, vs, ar, ad, nin
 
 
 @njit_llvm_inline
@@ -174,7 +174,7 @@ def evaluate_rates(law, p, c, md, y, cm, sg, cp, W, dy, nin):
     constant and mode tuples), about 35 ns."""
     delta, a, b, Fn, vn, vs, ar, Fd, ad = normal_state(law, p, c, md, y)
     cell_quantities(y, cm, sg, cp, W, c[C_MU], Fn, Fd, ar, ad, vs, nin, dy, np.int64(Y_CELL))
-    ev = (delta, a, b, Fn, tangential_force(W, nin), vn, vs, ar, ad, nin)
+    ev = (delta, a, b, Fn, cells_tangential_force(W, nin), vn, vs, ar, ad, nin)
     rigid_rates(c, y, ev, dy)
     return ev
 

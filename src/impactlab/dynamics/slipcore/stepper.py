@@ -45,7 +45,7 @@ SIMULTANEOUS = 1e-10
 
 
 @njit_llvm_inline
-def rhs(law, p, c, md, y, cm, sg, cp, W, dy, nin):
+def slip_rhs(law, p, c, md, y, cm, sg, cp, W, dy, nin):
     """Derivative of ``y`` into ``dy`` (``nin`` cells in contact); returns the evaluated
     quantities."""
     return evaluate_rates(law, p, c, md, y, cm, sg, cp, W, dy, nin)
@@ -77,7 +77,7 @@ def step(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew, q):
     nact = Y_CELL + nin
     for stage in range(1, 7):
         stage_sum(y, K, h, stage, ynew, nact)  # the cells out of contact stay at 0
-        ev = rhs(law, p, c, md, ynew, cm, sg, cp, W, K[stage], nin)
+        ev = slip_rhs(law, p, c, md, ynew, cm, sg, cp, W, K[stage], nin)
     error_terms(y, ynew, K, h, rtol, sc, q, nact)
     err, count = error_sum(q, cm)
     return math.sqrt(err / count), ev
