@@ -12,7 +12,8 @@ a slipping cell (its force reaches zero continuously). The derivation, validity
 and verification are in docs/verification/index.md ("Partial slip").
 
 Modules, lowest first: ``layout`` (parameter and event indices, defaults), ``model``
-(right-hand side, event functions), ``stepper`` (Dormand-Prince on arrays, event location),
+(right-hand side, event functions), ``sums`` (the Dormand-Prince sums over the entries in
+use), ``stepper`` (Dormand-Prince on arrays, event location),
 ``switches`` (births, releases, stick/slip, settle), ``outputs`` (bookkeeping, history,
 results), ``driver`` (``impact_slip``).
 """

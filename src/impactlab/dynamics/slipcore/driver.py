@@ -24,7 +24,6 @@ from impactlab.dynamics.kernels.cells import (
     birth,
     n_in,
 )
-from impactlab.dynamics.kernels.dormand_prince import dense_rows
 from impactlab.dynamics.kernels.layout import (
     A_DMAX,
     A_EMIN,
@@ -88,9 +87,10 @@ from impactlab.dynamics.slipcore.outputs import A_JUMP, NA, record, separation, 
 from impactlab.dynamics.slipcore.stepper import (
     first_event,
     integrate_to,
-    rhs,
+    slip_rhs,
     step,
 )
+from impactlab.dynamics.slipcore.sums import dense_rows_t
 from impactlab.dynamics.slipcore.switches import (
     apply_cell_event,
     normal_switch,
@@ -137,7 +137,7 @@ def _switch(k, law, p, c, md, y, cm, sg, cp, W, ev, acc, K, gold):
     settled, ev = settle(law, p, c, md, y, cm, sg, cp, W, c[C_MU])
     if not settled:
         return ST_TOO_MANY_EVENTS, c, md
-    derivative(c, y, cm, sg, cp, W, ev, K[0])  # rhs at y: ev and W are those at y
+    derivative(c, y, W, ev, K[0])  # rhs at y: ev and W are those at y
     acc[A_JUMP] = max(acc[A_JUMP], abs(ev[4] - ft_before))
     events(c, md, cm, sg, cp, W, ev, gold)
     if gold[EV_SEP] > 0.0:  # a switch located at the separation itself: that is the end
@@ -161,7 +161,7 @@ def _dense_rows(hist, nh, t, h, theta, law, p, c, md, y, cm, sg, cp, W, Q, yt):
     nact = Y_CELL + n_in(cm)
     for j in range(1, 4):
         if j / 4.0 < theta:
-            dense_rows(y, h, j / 4.0, Q, yt, nact)
+            dense_rows_t(y, h, j / 4.0, Q, yt, nact)
             hist, nh = record(hist, nh, t + j * h / 4.0, law, p, c, md, yt, cm, sg, cp, W)
     return hist, nh
 
@@ -173,13 +173,14 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
     n = y.shape[0]
     ng = G_CELL + cm.shape[0]
     ynew, yt, yev = np.zeros(n), np.zeros(n), np.zeros(n)
-    K, Q, W = np.zeros((7, n)), np.zeros((n, 4)), np.zeros((3, cm.shape[0]))
-    R = np.empty((9, n))  # scratch of the recomputation at an event
+    K, Q, W = np.zeros((7, n)), np.zeros((4, n)), np.zeros((4, cm.shape[0]))
+    R = np.empty((10, n))  # scratch of the recomputation at an event
+    q = np.empty(n)  # the scaled local errors of a step
     gold, gnew, gmid = np.empty(ng), np.empty(ng), np.empty(ng)
-    Wm = np.zeros((3, cm.shape[0]))
+    Wm = np.zeros((4, cm.shape[0]))
     # hc: the controller's step; h: the step taken (hc cut at a cell boundary or at t*)
     t, hc, hmin = 0.0, 0.02 * tstar * rtol**0.2, 1e-14 * tstar
-    ev = rhs(law, p, c, md, y, cm, sg, cp, W, K[0])
+    ev = slip_rhs(law, p, c, md, y, cm, sg, cp, W, K[0], n_in(cm))
     events(c, md, cm, sg, cp, W, ev, gold)
     nh = np.int64(0)  # not a literal: record() is compiled once, for any row count
     if rec:
@@ -195,7 +196,7 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
         hz = boundary_horizon(cm, cp, ar0, ad0, add)
         past = BOUNDARY_PAST if ad0 > 0.0 else STEP_PAST  # a birth ahead, or a release
         h = min(hc, tstar, past * hz + hmin) if hz > 0.0 else min(hc, tstar)
-        err, ev = step(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew)
+        err, ev = step(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew, q)
         nact = Y_CELL + n_in(cm)  # the entries in use: the rigid-body state, the cells in contact
         if not (err <= 1.0):
             rejected = True
@@ -204,20 +205,23 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
                 status = ST_NAN if not math.isfinite(err) else ST_STEP_UNDERFLOW
                 break
             continue
-        events(c, md, cm, sg, cp, W, ev, gnew)
-        k, theta = first_event(gold, gnew, gmid, law, p, c, md, y, K, Q, h, cm, sg, cp, Wm, yt)
+        k, theta = first_event(
+            gold, gnew, gmid, law, p, c, md, y, K, Q, h, cm, sg, cp, W, ev, Wm, yt
+        )
         if rec:
             hist, nh = _dense_rows(hist, nh, t, h, theta, law, p, c, md, y, cm, sg, cp, W, Q, yt)
         if k >= 0:  # the state at the event, integrated anew (the dense output is 4th order)
-            nsteps += integrate_to(
+            # ev and W: the quantities at yev, from the last stage of the last step (FSAL)
+            n_re, ev = integrate_to(
                 law, p, c, md, y, cm, sg, cp, W, K[0], theta * h, rtol, sc, yev, R
             )
+            nsteps += n_re
             tend = t + theta * h
         else:
             copy_active(yev, ynew, nact)
             tend = t + h
-        if k >= 0 or rec:  # else W and ev still hold the step's last stage, at ynew
-            ev = evaluate(law, p, c, md, yev, cm, sg, cp, W)
+            if rec:  # else W and ev still hold the step's last stage, at ynew
+                ev = evaluate(law, p, c, md, yev, cm, sg, cp, W)
         if not track(acc, law, p, c, md, yev, cm, cp, W, ev, t, tend, diag):
             status = ST_NAN
             break

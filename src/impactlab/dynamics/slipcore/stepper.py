@@ -19,19 +19,24 @@ import numpy as np
 from numba import njit
 
 from impactlab.dynamics.kernels._jit import njit_llvm_inline, njit_no_refcount
-from impactlab.dynamics.kernels.buffers import copy_into
 from impactlab.dynamics.kernels.cells import SLIP
-from impactlab.dynamics.kernels.dormand_prince import (
-    DP_E,
-    dense_coeffs_rows,
-    dense_entry,
-    dense_rows,
-    stage_point,
-)
 from impactlab.dynamics.kernels.roots import anderson_bjorck, anderson_bjorck_point
 from impactlab.dynamics.kernels.step_control import power_growth
 from impactlab.dynamics.slipcore.layout import G_CELL, Y_CELL
-from impactlab.dynamics.slipcore.model import derivative, evaluate, event_value, events, n_in
+from impactlab.dynamics.slipcore.model import (
+    evaluate,
+    evaluate_rates,
+    event_value,
+    events_llvm,
+    n_in,
+)
+from impactlab.dynamics.slipcore.sums import (
+    dense_coeffs_t,
+    dense_entry_t,
+    dense_rows_t,
+    error_terms,
+    stage_sum,
+)
 
 #: Closed bracket width of an event's location, in theta (a fraction of the step).
 EVENT_BRACKET = 1e-13
@@ -39,46 +44,42 @@ EVENT_BRACKET = 1e-13
 SIMULTANEOUS = 1e-10
 
 
-@njit_no_refcount
-def rhs(law, p, c, md, y, cm, sg, cp, W, dy):
-    """Derivative of ``y`` into ``dy``; returns the evaluated quantities."""
-    ev = evaluate(law, p, c, md, y, cm, sg, cp, W)
-    derivative(c, y, cm, sg, cp, W, ev, dy)
-    return ev
+@njit_llvm_inline
+def slip_rhs(law, p, c, md, y, cm, sg, cp, W, dy, nin):
+    """Derivative of ``y`` into ``dy`` (``nin`` cells in contact); returns the evaluated
+    quantities."""
+    return evaluate_rates(law, p, c, md, y, cm, sg, cp, W, dy, nin)
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def error_sum(y, ynew, K, h, rtol, sc, cm):
-    """(sum of the squared scaled local errors, their count) over the rigid-body state and the
-    cells that are not slipping: a slipping cell's force is s_i L_i, a function of the normal
-    contact, and its state entry is never read (its error is no error of the solution). Error
-    scale of component i: rtol (sc[i] + max(|y_i|, |ynew_i|))."""
+def error_sum(q, cm):
+    """(sum of the squared scaled local errors ``q`` (``sums.error_terms``), their count) over
+    the rigid-body state and the cells that are not slipping: a slipping cell's force is
+    s_i L_i, a function of the normal contact, and its state entry is never read (its error is
+    no error of the solution)."""
     err = 0.0
     count = 0
     for i in range(Y_CELL + n_in(cm)):
         if i >= Y_CELL and cm[i - Y_CELL] == SLIP:
             continue
-        ei = 0.0
-        for j in range(7):
-            ei += DP_E[j] * K[j, i]
-        q = h * ei / (rtol * (sc[i] + max(abs(y[i]), abs(ynew[i]))))
-        err += q * q
+        err += q[i] * q[i]
         count += 1
     return err, count
 
 
 @njit_no_refcount
-def step(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew):
+def step(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew, q):
     """One step of size ``h`` from ``y`` (``K[0]``: the derivative at ``y``); fills ``K[1:7]``
-    and ``ynew`` (FSAL). Returns (RMS error norm over the rigid state and the cells in contact,
-    quantities at ``ynew``); the norm leaves out the slipping cells (``error_sum``)."""
-    nact = Y_CELL + n_in(cm)
-    for stage in range(1, 6):
-        stage_point(y, K, h, stage, ynew, nact)  # the cells out of contact stay at 0
-        rhs(law, p, c, md, ynew, cm, sg, cp, W, K[stage])
-    stage_point(y, K, h, 6, ynew, nact)
-    ev = rhs(law, p, c, md, ynew, cm, sg, cp, W, K[6])
-    err, count = error_sum(y, ynew, K, h, rtol, sc, cm)
+    and ``ynew`` (FSAL), and ``q`` with the scaled local errors. Returns (RMS error norm over
+    the rigid state and the cells in contact, quantities at ``ynew``); the norm leaves out the
+    slipping cells (``error_sum``)."""
+    nin = n_in(cm)
+    nact = Y_CELL + nin
+    for stage in range(1, 7):
+        stage_sum(y, K, h, stage, ynew, nact)  # the cells out of contact stay at 0
+        ev = slip_rhs(law, p, c, md, ynew, cm, sg, cp, W, K[stage], nin)
+    error_terms(y, ynew, K, h, rtol, sc, q, nact)
+    err, count = error_sum(q, cm)
     return math.sqrt(err / count), ev
 
 
@@ -91,9 +92,9 @@ def event_at(k, theta, law, p, c, md, y0, Q, h, cm, sg, cp, yt):
     t3 = t2 * theta
     t4 = t3 * theta
     for i in range(Y_CELL):
-        dense_entry(y0, h, i, theta, t2, t3, t4, Q, yt)
+        dense_entry_t(y0, h, i, theta, t2, t3, t4, Q, yt)
     if k >= G_CELL:
-        dense_entry(y0, h, Y_CELL + k - G_CELL, theta, t2, t3, t4, Q, yt)
+        dense_entry_t(y0, h, Y_CELL + k - G_CELL, theta, t2, t3, t4, Q, yt)
     return event_value(k, law, p, c, md, yt, cm, sg, cp)
 
 
@@ -152,21 +153,34 @@ def _first_in(lo, ga, gb, law, p, c, md, y0, Q, h, cm, sg, cp, yt):
     return best, theta
 
 
+@njit(cache=True, inline="always", error_model="numpy")
+def crosses(ga, gb):
+    """True if an event function goes from <= 0 (``ga``) to > 0 (``gb``): a search is due."""
+    hits = 0
+    for k in range(ga.shape[0]):
+        hits += 1 if ga[k] <= 0.0 and gb[k] > 0.0 else 0
+    return hits > 0
+
+
 @njit_no_refcount
-def first_event(gold, gnew, gmid, law, p, c, md, y0, K, Q, h, cm, sg, cp, Wm, yt):
+def first_event(gold, gnew, gmid, law, p, c, md, y0, K, Q, h, cm, sg, cp, W, ev, Wm, yt):
     """(event, theta) of the earliest event inside the accepted step (-1, 2.0: none). The
-    event functions are also evaluated at the step's midpoint (dense output, into ``gmid``;
+    event functions at the step's end go into ``gnew`` (from ``W`` and ``ev`` there). They
+    are also evaluated at the step's midpoint (dense output, into ``gmid``;
     ``Wm``: scratch): one that rises above zero and falls back within a step, a cell that
     sticks for less than a step, is found there. Events within SIMULTANEOUS of the earliest
     count as simultaneous: the lowest index wins (normal events, then birth and release, then
     the cells). Leaves the dense-output coefficients of the active components in ``Q``."""
+    events_llvm(c, md, cm, sg, cp, W, ev, gnew)  # at the step's end (``W``, ``ev``: there)
     nact = Y_CELL + n_in(cm)
-    dense_coeffs_rows(K, Q, nact)
-    dense_rows(y0, h, 0.5, Q, yt, nact)
-    events(c, md, cm, sg, cp, Wm, evaluate(law, p, c, md, yt, cm, sg, cp, Wm), gmid)
+    dense_coeffs_t(K, Q, nact)
+    dense_rows_t(y0, h, 0.5, Q, yt, nact)
+    events_llvm(c, md, cm, sg, cp, Wm, evaluate(law, p, c, md, yt, cm, sg, cp, Wm), gmid)
     # the first half, then (if nothing fired there) the second: later events need no location
-    best, theta = _first_in(0.0, gold, gmid, law, p, c, md, y0, Q, h, cm, sg, cp, yt)
-    if best < 0:
+    best, theta = np.int64(-1), 2.0
+    if crosses(gold, gmid):
+        best, theta = _first_in(0.0, gold, gmid, law, p, c, md, y0, Q, h, cm, sg, cp, yt)
+    if best < 0 and crosses(gmid, gnew):
         best, theta = _first_in(0.5, gmid, gnew, law, p, c, md, y0, Q, h, cm, sg, cp, yt)
     return best, theta
 
@@ -174,13 +188,19 @@ def first_event(gold, gnew, gmid, law, p, c, md, y0, K, Q, h, cm, sg, cp, Wm, yt
 @njit(cache=True, error_model="numpy")
 def integrate_to(law, p, c, md, y, cm, sg, cp, W, k0, H, rtol, sc, out, R):
     """Integrate from ``y`` over exactly ``H`` with error control into ``out`` (the state at an
-    event is recomputed this way, not taken from the dense output; ``R``: 9 x len(y) scratch).
-    Returns the steps taken."""
+    event is recomputed this way, not taken from the dense output; ``R``: 10 x len(y) scratch).
+    Returns (the steps taken, the quantities of ``model.evaluate`` at ``out``, ``W`` filled
+    there but for its rates W[3]: the last stage of the last step, FSAL). Only the entries in
+    use are copied (the rigid-body state and the cells in contact: the others are never
+    read)."""
+    nact = Y_CELL + n_in(cm)
     Ks = R[:7]
     cur = R[7]
     kc = R[8]
-    copy_into(cur, y)
-    copy_into(kc, k0)
+    q = R[9]
+    for i in range(nact):
+        cur[i] = y[i]
+        kc[i] = k0[i]
     done = 0.0
     hh = H
     steps = 0
@@ -190,15 +210,17 @@ def integrate_to(law, p, c, md, y, cm, sg, cp, W, k0, H, rtol, sc, out, R):
         last = hh >= rem * (1.0 - 1e-12)
         if last:
             hh = rem
-        copy_into(Ks[0], kc)
-        err, _ev = step(law, p, c, md, cur, cm, sg, cp, W, Ks, hh, rtol, sc, out)
+        for i in range(nact):
+            Ks[0, i] = kc[i]
+        err, ev = step(law, p, c, md, cur, cm, sg, cp, W, Ks, hh, rtol, sc, out, q)
         if not (err <= 1.0) and hh > 1e-6 * H:
             hh *= max(0.2, power_growth(err)) if math.isfinite(err) else 0.25
             continue
         if last:
             break
         done += hh
-        copy_into(cur, out)
-        copy_into(kc, Ks[6])
+        for i in range(nact):
+            cur[i] = out[i]
+            kc[i] = Ks[6, i]
         hh *= min(5.0, power_growth(err)) if err > 0.0 else 5.0
-    return steps
+    return steps, ev
