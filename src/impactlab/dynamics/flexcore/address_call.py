@@ -1,12 +1,14 @@
 """Calls of compiled functions through their addresses (compiled; ``indirect`` has the why).
 
-``call_rates(address, args)``, ``call_step`` and ``call_events`` call the function at
-``address`` (an int64: the entry point of a compiled ``rhs.rates`` / ``rhs.rates_cells``, or
-``stepper.dp_step`` / ``stepper.dp_step_cells``; ``call_events``: ``events.handle_events``), in
-numba's own calling convention, as numba's
-first-class function type calls a jit function) with the tuple ``args``. The callee is not
+``call_rates(address, args)``, ``call_step``, ``call_events``, ``call_accept``, ``call_coast``,
+``call_outputs`` and ``call_record`` call the function at ``address`` (an int64: the entry point
+of a compiled ``rhs.rates`` / ``rhs.rates_cells``, ``stepper.dp_step`` /
+``stepper.dp_step_cells``, ``events.handle_events``, ``steps.accept``, ``coast.out_of_contact``,
+``results.fill_outputs``, ``history.record``), in numba's own calling convention (as numba's
+first-class function type calls a jit function), with the tuple ``args``. The callee is not
 linked into the caller's library: its machine code is generated once. The argument types must
-be the signature's exactly (checked when the caller is compiled).
+be the signature's exactly (checked when the caller is compiled). The model tuple carries the
+addresses at the indices ``AT_*``.
 """
 
 from __future__ import annotations
@@ -23,13 +25,20 @@ _F1 = types.float64[::1]
 _F2 = types.float64[:, ::1]
 _F3 = types.float64[:, :, ::1]
 _I1 = types.int64[::1]
+#: The indices of the addresses in the model tuple: the right-hand side, the step, the event
+#: handler, the accepted step, the free flight, the outputs and the history row.
+AT_RHS, AT_STEP, AT_EVENTS, AT_ACCEPT, AT_COAST, AT_OUTPUTS, AT_RECORD = range(13, 20)
+#: The number of addresses in the model tuple.
+N_ADDRESSES = 7
+#: The batch's model tuple (``batch.drop_batch``) ends with those of partial slip's right-hand
+#: side and step.
+AT_CELLS_RHS, AT_CELLS_STEP = 13 + N_ADDRESSES, 14 + N_ADDRESSES
 #: The model tuple (``model.model_tuple``): the law id, p, c, om, om2, dmp, zeta, Ue, We, Pe,
-#: Tg, ia, ib (C-contiguous copies), the addresses of the right-hand side, of the step and of
-#: the event handler.
+#: Tg, ia, ib (C-contiguous copies), then the addresses (``AT_*``).
 MODEL = types.Tuple(
-    (types.int64, _F1, _F1, _F1, _F1, _F1, _F1, _F2, _F2, _F2, _F3, _I1, _I1, types.int64,
-     types.int64, types.int64)
-)  # fmt: skip
+    (types.int64, _F1, _F1, _F1, _F1, _F1, _F1, _F2, _F2, _F2, _F3, _I1, _I1)
+    + (types.int64,) * N_ADDRESSES
+)
 #: ``rhs.rates`` and ``rhs.rates_cells``: the model's arrays one by one, then md, y, der, ev,
 #: ek, Jn, Jt.
 RATES_SIGNATURE = types.none(
@@ -47,6 +56,25 @@ EVENTS_SIGNATURE = types.boolean(
     types.int64, MODEL, _F2, _F1, types.float64, _F2, _F1, _F1, _F1, _F2, _F2, _I1, _F2, _F1,
     _F1, _F1, _F2, _F2, _F2,
 )  # fmt: skip
+
+#: ``steps.accept``: mdl, md, y, t, h, rtol, sc, K, Q, gold, gnew, ynew, yev, sv, contacts,
+#: dents, cur_con, record_on, hist, nh, yt, der, ev, ek, Jn, Jt; (ok, jev, tend, hist, nh).
+ACCEPT_SIGNATURE = types.Tuple((types.boolean, types.int64, types.float64, _F2, types.int64))(
+    MODEL, _F2, _F1, types.float64, types.float64, types.float64, _F1, _F2, _F2, _F1, _F1, _F1,
+    _F1, _F1, _F2, _F2, _I1, types.boolean, _F2, types.int64, _F1, _F1, _F1, _F2, _F2, _F2,
+)  # fmt: skip
+#: ``coast.out_of_contact``: mdl, y, t, h, sv, stop_mode, yev, ek; (code, tau).
+COAST_SIGNATURE = types.Tuple((types.int64, types.float64))(
+    MODEL, _F1, types.float64, types.float64, _F1, types.int64, _F1, _F2
+)
+#: ``results.fill_outputs``: mdl, sv, t, ye, vx0, vy0, out, contacts, dents.
+OUTPUTS_SIGNATURE = types.none(
+    MODEL, _F1, types.float64, _F1, types.float64, types.float64, _F1, _F2, _F2
+)
+#: ``history.record``: hist, nh, t, mdl, y, ek, e0; (hist, nh).
+RECORD_SIGNATURE = types.Tuple((_F2, types.int64))(
+    _F2, types.int64, types.float64, MODEL, _F1, _F2, types.float64
+)
 
 
 def _typed_call(name: str, sig: Any, address: Any, args: Any) -> Any:
@@ -86,8 +114,32 @@ def _call_events(typingctx: Any, address: Any, args: Any) -> Any:
     return _typed_call("call_events", EVENTS_SIGNATURE, address, args)
 
 
+def _call_accept(typingctx: Any, address: Any, args: Any) -> Any:
+    """Call the accepted step at ``address`` (int64) with the tuple ``args``."""
+    return _typed_call("call_accept", ACCEPT_SIGNATURE, address, args)
+
+
+def _call_coast(typingctx: Any, address: Any, args: Any) -> Any:
+    """Call the free-flight test and jump at ``address`` (int64) with the tuple ``args``."""
+    return _typed_call("call_coast", COAST_SIGNATURE, address, args)
+
+
+def _call_outputs(typingctx: Any, address: Any, args: Any) -> Any:
+    """Call the outputs at ``address`` (int64) with the tuple ``args``."""
+    return _typed_call("call_outputs", OUTPUTS_SIGNATURE, address, args)
+
+
+def _call_record(typingctx: Any, address: Any, args: Any) -> Any:
+    """Call the history row at ``address`` (int64) with the tuple ``args``."""
+    return _typed_call("call_record", RECORD_SIGNATURE, address, args)
+
+
 #: The intrinsics (typed for mypy as plain callables: compiled code calls them as
 #: ``call_rates(address, args)``).
 call_rates: Callable[..., Any] = intrinsic(_call_rates)
 call_step: Callable[..., Any] = intrinsic(_call_step)
 call_events: Callable[..., Any] = intrinsic(_call_events)
+call_accept: Callable[..., Any] = intrinsic(_call_accept)
+call_coast: Callable[..., Any] = intrinsic(_call_coast)
+call_outputs: Callable[..., Any] = intrinsic(_call_outputs)
+call_record: Callable[..., Any] = intrinsic(_call_record)

@@ -21,6 +21,17 @@ from numba import njit, prange
 
 from impactlab.contact.history_kernels import loading_contact_radius
 from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.flexcore.address_call import (
+    AT_ACCEPT,
+    AT_CELLS_RHS,
+    AT_CELLS_STEP,
+    AT_COAST,
+    AT_EVENTS,
+    AT_OUTPUTS,
+    AT_RECORD,
+    AT_RHS,
+    AT_STEP,
+)
 from impactlab.dynamics.flexcore.driver import drop
 from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.cells import CP_DX, N_CELLS
@@ -96,10 +107,11 @@ def case_model(mdl, angle, mu, fid, w0, w1, max_steps):
     c[F.FC_CP + CP_DX] = w0
     c[F.FC_CP + F.NFCP + CP_DX] = w1
     c[F.FC_MAX_STEPS] = float(min(max_steps, F.DROP_MAX_STEPS))
-    rhs = mdl[16] if cells else mdl[13]
-    step = mdl[17] if cells else mdl[14]
+    rhs = mdl[AT_CELLS_RHS] if cells else mdl[AT_RHS]
+    step = mdl[AT_CELLS_STEP] if cells else mdl[AT_STEP]
     return (mdl[0], mdl[1], c, mdl[3], mdl[4], mdl[5], mdl[6], mdl[7], mdl[8], mdl[9],
-            mdl[10], mdl[11], mdl[12], rhs, step, mdl[15])  # fmt: skip
+            mdl[10], mdl[11], mdl[12], rhs, step, mdl[AT_EVENTS], mdl[AT_ACCEPT], mdl[AT_COAST],
+            mdl[AT_OUTPUTS], mdl[AT_RECORD])  # fmt: skip
 
 
 @njit(cache=True, error_model="numpy")

@@ -6,13 +6,12 @@ from __future__ import annotations
 from numba import njit
 
 from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.flexcore.address_call import AT_RECORD, call_record
 from impactlab.dynamics.flexcore.contacts import (
     set_threshold,
 )
 from impactlab.dynamics.flexcore.flight import flight, jump_length, left_for_good
-from impactlab.dynamics.flexcore.history import record
 from impactlab.dynamics.flexcore.rhs import evaluate
-from impactlab.dynamics.kernels._jit import njit_internal
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -39,7 +38,7 @@ def jump_time(mdl, y, h, sv, ek):
     return min(jump, max(sv[F.SV_CHECK_DT], 2.0 * h))
 
 
-@njit_internal
+@njit(cache=True, error_model="numpy")
 def out_of_contact(mdl, y, t, h, sv, stop_mode, yev, ek):
     """No end in contact: the end-of-sequence test (every ``F.SV_CHECK_DT``), then a free-flight
     jump if one is possible, its end state into ``yev``. Returns (code, tau): code 0 integrate a
@@ -73,7 +72,9 @@ def complete_jump(mdl, md, y, t, tau, K, gold, sv, dents, record_on, hist, nh, y
         for jj in range(1, 4):
             flight(mdl, y, tau * jj / 4.0, yt)
             evaluate(mdl, md, yt, der, ev, ek, Jn, Jt)
-            hist, nh = record(hist, nh, t + tau * jj / 4.0, mdl, yt, ek, sv[F.SV_E0])
+            hist, nh = call_record(
+                mdl[AT_RECORD], (hist, nh, t + tau * jj / 4.0, mdl, yt, ek, sv[F.SV_E0])
+            )
     for i in range(y.shape[0]):
         y[i] = yev[i]
     t += tau
@@ -83,5 +84,5 @@ def complete_jump(mdl, md, y, t, tau, K, gold, sv, dents, record_on, hist, nh, y
         set_threshold(md, dents, int(sv[F.SV_ND]), k, ek[k, F.EK_X], ek[k, F.EK_DELTA])
     evaluate(mdl, md, y, K[0], gold, ek, Jn, Jt)
     if record_on:
-        hist, nh = record(hist, nh, t, mdl, y, ek, sv[F.SV_E0])
+        hist, nh = call_record(mdl[AT_RECORD], (hist, nh, t, mdl, y, ek, sv[F.SV_E0]))
     return t, hist, nh

@@ -128,7 +128,7 @@ def geometric_energy(Tg, ia, ib, y):
 def mechanical_energy(mdl, y):
     """T + V [J]: kinetic, modal strain (with the geometric term) and gravity from the
     first-touch pose."""
-    _law, _p, c, om, om2, _dmp, _zeta, _Ue, _We, _Pe, Tg, ia, ib, _rhs, _step, _events = mdl
+    _law, _p, c, om, om2, _dmp, _zeta, _Ue, _We, _Pe, Tg, ia, ib = mdl[:13]
     M = om.shape[0]
     iv = 3 + M
     m = c[F.FC_M]

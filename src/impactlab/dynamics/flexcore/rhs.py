@@ -18,7 +18,7 @@ from __future__ import annotations
 from numba import njit
 
 from impactlab.dynamics.flexcore import layout as F
-from impactlab.dynamics.flexcore.address_call import call_rates
+from impactlab.dynamics.flexcore.address_call import AT_RHS, call_rates
 from impactlab.dynamics.flexcore.cells import cell_events, cell_forces, cell_rates
 from impactlab.dynamics.flexcore.friction import friction_event, state_rate, tangential
 from impactlab.dynamics.flexcore.kinematics import end_kinematics, mobility, normal_force
@@ -259,5 +259,6 @@ def rates_cells(law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, y, der, ev, ek,
 @njit(cache=True, inline="always", error_model="numpy")
 def evaluate(mdl, md, y, der, ev, ek, Jn, Jt):
     """The right-hand side with the model tuple ``mdl`` (package docstring)."""
-    law, p, c, _om, om2, dmp, _zeta, Ue, We, Pe, Tg, ia, ib, rhs, _step, _events = mdl
+    law, p, c, _om, om2, dmp, _zeta, Ue, We, Pe, Tg, ia, ib = mdl[:13]
+    rhs = mdl[AT_RHS]
     call_rates(rhs, (law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, y, der, ev, ek, Jn, Jt))

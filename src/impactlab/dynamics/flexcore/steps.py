@@ -8,11 +8,10 @@ import math
 from numba import njit
 
 from impactlab.dynamics.flexcore import layout as F
-from impactlab.dynamics.flexcore.history import record
+from impactlab.dynamics.flexcore.address_call import AT_RECORD, call_record
 from impactlab.dynamics.flexcore.kinematics import mechanical_energy
 from impactlab.dynamics.flexcore.rhs import evaluate
 from impactlab.dynamics.flexcore.stepper import dense, integrate_to, locate
-from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.buffers import copy_into
 from impactlab.dynamics.kernels.cells import any_stuck
 from impactlab.dynamics.kernels.dormand_prince import dense_coeffs
@@ -118,7 +117,7 @@ def record_inside(mdl, md, y, t, h, theta, Q, sv, hist, nh, yt, der, ev, ek, Jn,
             break
         dense(y, h, thj, Q, yt, y.shape[0])
         evaluate(mdl, md, yt, der, ev, ek, Jn, Jt)
-        hist, nh = record(hist, nh, t + thj * h, mdl, yt, ek, sv[F.SV_E0])
+        hist, nh = call_record(mdl[AT_RECORD], (hist, nh, t + thj * h, mdl, yt, ek, sv[F.SV_E0]))
     return hist, nh
 
 
@@ -133,7 +132,7 @@ def reject(h, err, sv):
     return h
 
 
-@njit_internal
+@njit(cache=True, error_model="numpy")
 def accept(mdl, md, y, t, h, rtol, sc, K, Q, gold, gnew, ynew, yev, sv, contacts, dents, cur_con,
            record_on, hist, nh, yt, der, ev, ek, Jn, Jt):  # fmt: skip
     """An accepted step from (t, y): cut at the first event it crosses (the state there into
