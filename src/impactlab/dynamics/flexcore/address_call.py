@@ -4,7 +4,7 @@
 ``call_outputs`` and ``call_record`` call the function at ``address`` (an int64: the entry point
 of a compiled ``rhs.rates`` / ``rhs.rates_cells``, ``stepper.dp_step`` /
 ``stepper.dp_step_cells``, ``events.handle_events``, ``steps.accept``, ``coast.out_of_contact``,
-``results.fill_outputs``, ``history.record``), in numba's own calling convention (as numba's
+``results.fill_outputs``, ``history.history_row``), in numba's own calling convention (as numba's
 first-class function type calls a jit function), with the tuple ``args``. The callee is not
 linked into the caller's library: its machine code is generated once. The argument types must
 be the signature's exactly (checked when the caller is compiled). The model tuple carries the
@@ -71,7 +71,7 @@ COAST_SIGNATURE = types.Tuple((types.int64, types.float64))(
 OUTPUTS_SIGNATURE = types.none(
     MODEL, _F1, types.float64, _F1, types.float64, types.float64, _F1, _F2, _F2
 )
-#: ``history.record``: hist, nh, t, mdl, y, ek, e0; (hist, nh).
+#: ``history.history_row``: hist, nh, t, mdl, y, ek, e0; (hist, nh).
 RECORD_SIGNATURE = types.Tuple((_F2, types.int64))(
     _F2, types.int64, types.float64, MODEL, _F1, _F2, types.float64
 )

@@ -12,6 +12,7 @@ from impactlab.dynamics.flexcore.contacts import (
 )
 from impactlab.dynamics.flexcore.flight import flight, jump_length, left_for_good
 from impactlab.dynamics.flexcore.rhs import evaluate
+from impactlab.dynamics.kernels._jit import njit_internal
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -38,7 +39,7 @@ def jump_time(mdl, y, h, sv, ek):
     return min(jump, max(sv[F.SV_CHECK_DT], 2.0 * h))
 
 
-@njit(cache=True, error_model="numpy")
+@njit_internal
 def out_of_contact(mdl, y, t, h, sv, stop_mode, yev, ek):
     """No end in contact: the end-of-sequence test (every ``F.SV_CHECK_DT``), then a free-flight
     jump if one is possible, its end state into ``yev``. Returns (code, tau): code 0 integrate a

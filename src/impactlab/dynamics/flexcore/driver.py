@@ -56,7 +56,7 @@ def drop(mdl, vx0, vy0, w0, rtol, t_max, stop_mode, record_on, out, contacts, de
     )
     cur_con = np.full(F.NE, -1)
     hist = np.empty((1024 if record_on else 1, F.N_DROP_HISTORY))
-    nh = np.int64(0)  # not a literal: record() is compiled once, for any row count
+    nh = np.int64(0)  # not a literal: history_row() is compiled once, for any row count
     scales(mdl, vx0, vy0, w0, sc, sv)  # first: the cell parameters of partial slip
     sv[F.SV_TOL_MISS] = F.MISS_TOL_FACTOR * max(1e-6, rtol) * sv[F.SV_DSTAR]
     first_touch(mdl, md, y, vx0, vy0, w0, sv, contacts, dents, cur_con)

@@ -18,6 +18,7 @@ from impactlab.dynamics.flexcore.contacts import (
 )
 from impactlab.dynamics.flexcore.friction import mindlin_after
 from impactlab.dynamics.flexcore.rhs import evaluate
+from impactlab.dynamics.kernels._jit import njit_internal
 
 #: The order in which simultaneous events are handled at a restart.
 _PENDING_ORDER = (
@@ -58,7 +59,7 @@ def _apply(jev, mdl, md, y, t, sv, contacts, dents, cur_con, snap, y_end, der, e
     return st, k, kind
 
 
-@njit(cache=True, error_model="numpy")
+@njit_internal
 def handle_events(
     jev, mdl, md, y, t, K, gold, sv, sc, contacts, dents, cur_con, snap, y_end, der, ev, ek, Jn, Jt
 ):

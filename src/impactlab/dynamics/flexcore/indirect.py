@@ -6,8 +6,8 @@ and optimises and generates machine code for it again there: ``rhs.rates`` was g
 in the libraries of the step, the acceptance of a step, the event handler and the drop.
 Called through their addresses instead (``address_call``: the model tuple carries them as
 int64), ``rates``, ``stepper.dp_step``, ``events.handle_events``, ``steps.accept``,
-``coast.out_of_contact``, ``results.fill_outputs`` and ``history.record`` are generated once each
-(``rates`` twice: the step's stage loop calls it directly, for speed), and a drop without
+``coast.out_of_contact``, ``results.fill_outputs`` and ``history.history_row`` are generated
+once each (``rates`` twice: the step's stage loop calls it directly, for speed), and a drop without
 partial slip never compiles the cells' right-hand side and step (``rhs.rates_cells``,
 ``stepper.dp_step_cells``). The addresses are read in Python when a drop starts, never baked
 into compiled code: the cached engine holds none, and a second process loads every function
@@ -31,7 +31,7 @@ from impactlab.dynamics.flexcore.address_call import (
 )
 from impactlab.dynamics.flexcore.coast import out_of_contact
 from impactlab.dynamics.flexcore.events import handle_events
-from impactlab.dynamics.flexcore.history import record
+from impactlab.dynamics.flexcore.history import history_row
 from impactlab.dynamics.flexcore.results import fill_outputs
 from impactlab.dynamics.flexcore.rhs import rates, rates_cells
 from impactlab.dynamics.flexcore.stepper import dp_step, dp_step_cells
@@ -46,18 +46,17 @@ def addresses(partial_slip: bool) -> tuple[int, ...]:
     of the event handler, the accepted step, the free flight, the outputs and the history row:
     compiled, or loaded from the cache, on first use, then kept for the process."""
     if partial_slip not in _ADDRESSES:
-        rhs, step = (rates_cells, dp_step_cells) if partial_slip else (rates, dp_step)
         collecting = gc.isenabled()
         gc.disable()  # the garbage of these compilations waits for the drop's (_compile_gc)
         try:
             _ADDRESSES[partial_slip] = (
-                int(_get_jit_address(rhs, RATES_SIGNATURE)),
-                int(_get_jit_address(step, STEP_SIGNATURE)),
+                int(_get_jit_address(rates_cells if partial_slip else rates, RATES_SIGNATURE)),
+                int(_get_jit_address(dp_step_cells if partial_slip else dp_step, STEP_SIGNATURE)),
                 int(_get_jit_address(handle_events, EVENTS_SIGNATURE)),
                 int(_get_jit_address(accept, ACCEPT_SIGNATURE)),
                 int(_get_jit_address(out_of_contact, COAST_SIGNATURE)),
                 int(_get_jit_address(fill_outputs, OUTPUTS_SIGNATURE)),
-                int(_get_jit_address(record, RECORD_SIGNATURE)),
+                int(_get_jit_address(history_row, RECORD_SIGNATURE)),
             )
         finally:
             if collecting:

@@ -9,6 +9,7 @@ from numba import njit
 
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.kinematics import geometric_energy, vibration_energy
+from impactlab.dynamics.kernels._jit import njit_internal
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -59,7 +60,7 @@ def _energies(mdl, ye, out):
     out[F.O_TANGENTIAL_IMPULSE] = pt
 
 
-@njit(cache=True, error_model="numpy")
+@njit_internal
 def fill_outputs(mdl, sv, t, ye, vx0, vy0, out, contacts, dents):
     """Fill ``out``: the run's counters always, the impact measures only when the sequence
     finished (NaN otherwise). ``ye``: the state at the last separation; t: the final time."""

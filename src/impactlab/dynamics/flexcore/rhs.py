@@ -22,6 +22,7 @@ from impactlab.dynamics.flexcore.address_call import AT_RHS, call_rates
 from impactlab.dynamics.flexcore.cells import cell_events, cell_forces, cell_rates
 from impactlab.dynamics.flexcore.friction import friction_event, state_rate, tangential
 from impactlab.dynamics.flexcore.kinematics import end_kinematics, mobility, normal_force
+from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.layout import FR_COULOMB
 
 
@@ -229,7 +230,7 @@ def _events(law, p, c, md, y, ev, ek, M):
             ev[e0 + F.FEV_FRIC] = friction_event(law, p, c, md, k, y[iqt + k], ek)
 
 
-@njit(cache=True, error_model="numpy")
+@njit_internal
 def rates(law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, y, der, ev, ek, Jn, Jt):
     """Derivative ``der`` and event values ``ev`` at state y in the mode table md; ``ek``
     (F.NE, NEK) receives per end the evaluated quantities (``layout.EK_*``), Jn and Jt the
@@ -243,7 +244,7 @@ def rates(law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, y, der, ev, ek, Jn, J
     _events(law, p, c, md, y, ev, ek, om2.shape[0])
 
 
-@njit(cache=True, error_model="numpy")
+@njit_internal
 def rates_cells(law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, y, der, ev, ek, Jn, Jt):
     """``rates`` for partial slip: the friction forces, rates and events of the cells."""
     _end_forces_cells(law, p, c, Ue, We, Pe, md, y, ek, Jn, Jt)

@@ -23,6 +23,7 @@ from numba import njit
 from impactlab.dynamics.flexcore.address_call import AT_RHS, AT_STEP, call_rates, call_step
 from impactlab.dynamics.flexcore.cells import n_active
 from impactlab.dynamics.flexcore.rhs import rates, rates_cells
+from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.buffers import copy_into
 from impactlab.dynamics.kernels.dormand_prince import error_sum, stage_point
 from impactlab.dynamics.kernels.roots import G_ROUNDOFF, THETA_TOL, illinois, past_root
@@ -62,7 +63,7 @@ def dp_step(mdl, md, y, K, h, rtol, sc, st, ynew, ev, ek, Jn, Jt):
     return _error_norm(y, K, h, rtol, sc, st, ynew, md, om2.shape[0])
 
 
-@njit(cache=True, error_model="numpy")
+@njit_internal
 def dp_step_cells(mdl, md, y, K, h, rtol, sc, st, ynew, ev, ek, Jn, Jt):
     """``dp_step`` for partial slip (``rates_cells``)."""
     n = y.shape[0]

@@ -12,6 +12,7 @@ from impactlab.dynamics.flexcore.address_call import AT_RECORD, call_record
 from impactlab.dynamics.flexcore.kinematics import mechanical_energy
 from impactlab.dynamics.flexcore.rhs import evaluate
 from impactlab.dynamics.flexcore.stepper import dense, integrate_to, locate
+from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.buffers import copy_into
 from impactlab.dynamics.kernels.cells import any_stuck
 from impactlab.dynamics.kernels.dormand_prince import dense_coeffs
@@ -132,7 +133,7 @@ def reject(h, err, sv):
     return h
 
 
-@njit(cache=True, error_model="numpy")
+@njit_internal
 def accept(mdl, md, y, t, h, rtol, sc, K, Q, gold, gnew, ynew, yev, sv, contacts, dents, cur_con,
            record_on, hist, nh, yt, der, ev, ek, Jn, Jt):  # fmt: skip
     """An accepted step from (t, y): cut at the first event it crosses (the state there into
