@@ -1,14 +1,14 @@
 """Calls of compiled functions through their addresses (compiled; ``indirect`` has the why).
 
 ``call_rates(address, args)``, ``call_step``, ``call_events``, ``call_accept``, ``call_coast``,
-``call_outputs`` and ``call_record`` call the function at ``address`` (an int64: the entry point
-of a compiled ``rhs.rates`` / ``rhs.rates_cells``, ``stepper.dp_step`` /
+``call_outputs``, ``call_record`` and ``call_cells`` call the function at ``address`` (an int64:
+the entry point of a compiled ``rhs.rates`` / ``rhs.rates_cells``, ``stepper.dp_step`` /
 ``stepper.dp_step_cells``, ``events.handle_events``, ``steps.accept``, ``coast.out_of_contact``,
-``results.fill_outputs``, ``history.history_row``), in numba's own calling convention (as numba's
-first-class function type calls a jit function), with the tuple ``args``. The callee is not
-linked into the caller's library: its machine code is generated once. The argument types must
-be the signature's exactly (checked when the caller is compiled). The model tuple carries the
-addresses at the indices ``AT_*``.
+``results.fill_outputs``, ``history.history_row``, ``cellswitch.cell_action``), in numba's own
+calling convention (as numba's first-class function type calls a jit function), with the tuple
+``args``. The callee is not linked into the caller's library: its machine code is generated
+once. The argument types must be the signature's exactly (checked when the caller is
+compiled). The model tuple carries the addresses at the indices ``AT_*``.
 """
 
 from __future__ import annotations
@@ -26,13 +26,14 @@ _F2 = types.float64[:, ::1]
 _F3 = types.float64[:, :, ::1]
 _I1 = types.int64[::1]
 #: The indices of the addresses in the model tuple: the right-hand side, the step, the event
-#: handler, the accepted step, the free flight, the outputs and the history row.
-AT_RHS, AT_STEP, AT_EVENTS, AT_ACCEPT, AT_COAST, AT_OUTPUTS, AT_RECORD = range(13, 20)
+#: handler, the accepted step, the free flight, the outputs, the history row and the cell
+#: switches of partial slip (0, never called, in a drop without partial slip).
+AT_RHS, AT_STEP, AT_EVENTS, AT_ACCEPT, AT_COAST, AT_OUTPUTS, AT_RECORD, AT_CELLS = range(13, 21)
 #: The number of addresses in the model tuple.
-N_ADDRESSES = 7
-#: The batch's model tuple (``batch.drop_batch``) ends with those of partial slip's right-hand
-#: side and step.
-AT_CELLS_RHS, AT_CELLS_STEP = 13 + N_ADDRESSES, 14 + N_ADDRESSES
+N_ADDRESSES = 8
+#: The batch's model tuple (``batch.drop_batch``) ends with partial slip's right-hand side, step
+#: and cell switches (``indirect.batch_addresses``).
+AT_PARTIAL_RHS, AT_PARTIAL_STEP, AT_PARTIAL_CELLS = range(13 + N_ADDRESSES, 16 + N_ADDRESSES)
 #: The model tuple (``model.model_tuple``): the law id, p, c, om, om2, dmp, zeta, Ue, We, Pe,
 #: Tg, ia, ib (C-contiguous copies), then the addresses (``AT_*``).
 MODEL = types.Tuple(
@@ -75,6 +76,10 @@ OUTPUTS_SIGNATURE = types.none(
 RECORD_SIGNATURE = types.Tuple((_F2, types.int64))(
     _F2, types.int64, types.float64, MODEL, _F1, _F2, types.float64
 )
+
+#: ``cellswitch.cell_action``: action, i, mdl, md, y, der, ev, ek, Jn, Jt; False when the cells
+#: do not settle.
+CELLS_SIGNATURE = types.boolean(types.int64, types.int64, MODEL, _F2, _F1, _F1, _F1, _F2, _F2, _F2)
 
 
 def _typed_call(name: str, sig: Any, address: Any, args: Any) -> Any:
@@ -134,6 +139,11 @@ def _call_record(typingctx: Any, address: Any, args: Any) -> Any:
     return _typed_call("call_record", RECORD_SIGNATURE, address, args)
 
 
+def _call_cells(typingctx: Any, address: Any, args: Any) -> Any:
+    """Call partial slip's cell switches at ``address`` (int64) with the tuple ``args``."""
+    return _typed_call("call_cells", CELLS_SIGNATURE, address, args)
+
+
 #: The intrinsics (typed for mypy as plain callables: compiled code calls them as
 #: ``call_rates(address, args)``).
 call_rates: Callable[..., Any] = intrinsic(_call_rates)
@@ -143,3 +153,4 @@ call_accept: Callable[..., Any] = intrinsic(_call_accept)
 call_coast: Callable[..., Any] = intrinsic(_call_coast)
 call_outputs: Callable[..., Any] = intrinsic(_call_outputs)
 call_record: Callable[..., Any] = intrinsic(_call_record)
+call_cells: Callable[..., Any] = intrinsic(_call_cells)

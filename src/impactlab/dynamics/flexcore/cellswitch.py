@@ -98,3 +98,25 @@ def touch_cells(mdl, md, k, y, ek):
     cm, sg, cp, _L, _Ld, _f = views(c, md, ek, k)
     vn, vs = ek[k, F.EK_VN], ek[k, F.EK_VT]
     birth(np.int64(0), y, o, cm, sg, cp, c[F.FC_MU], mdl[1][P_ESTAR], 0.0, vn, vs, 0.0, 0.0)
+
+
+#: The actions of ``cell_action``: a cell event, the switches due, an end's touch, its separation.
+CELL_EVENT, CELL_SETTLE, CELL_TOUCH, CELL_RESET = 0, 1, 2, 3
+
+
+@njit_internal
+def cell_action(action, i, mdl, md, y, der, ev, ek, Jn, Jt):
+    """Partial slip's cell switches, called through their address (``address_call.call_cells``)
+    by a partial-slip drop only (another drop compiles none of them): the cell event ``i``
+    (``CELL_EVENT``, ``apply_cell_event``), every switch already due (``CELL_SETTLE``,
+    ``settle``: False when it does not settle), end i's cells at its touch (``CELL_TOUCH``,
+    ``touch_cells``) or at its separation (``CELL_RESET``: out of contact, unstressed)."""
+    if action == CELL_EVENT:
+        apply_cell_event(i, mdl, md, y, ek)
+    elif action == CELL_SETTLE:
+        return settle(mdl, md, y, der, ev, ek, Jn, Jt)
+    elif action == CELL_TOUCH:
+        touch_cells(mdl, md, i, y, ek)
+    else:
+        reset(md, i, y, cell_offset(mdl, i))
+    return True

@@ -28,8 +28,6 @@ from impactlab.contact.kernels import (
     unloading_radius,
 )
 from impactlab.dynamics.flexcore import layout as F
-from impactlab.dynamics.flexcore.cells import reset
-from impactlab.dynamics.flexcore.cellswitch import cell_offset, touch_cells
 from impactlab.dynamics.flexcore.friction import (
     coulomb_decide,
     initial_mode,
@@ -166,8 +164,6 @@ def on_touch(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, ek, Jn, Jt):
     md[k, F.MD_IN] = 1.0
     md[k, F.MD_COMP] = 1.0
     initial_mode(mdl[1], c, M, md, k, ek[k, F.EK_VT], ek[k, F.EK_VN], Jn, Jt)
-    if c[F.FC_FRIC] == F.FR_PARTIAL:
-        touch_cells(mdl, md, k, y, ek)
     b = iq + 3 + 4 * k
     for i in range(4):
         snap[k, i] = y[b + i]
@@ -228,8 +224,6 @@ def on_separation(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, y_end, e
     md[k, F.MD_IN] = 0.0
     md[k, F.MD_FM] = 0.0
     md[k, F.MD_COMP] = 0.0
-    if mdl[2][F.FC_FRIC] == F.FR_PARTIAL:
-        reset(md, k, y, cell_offset(mdl, k))
     sv[F.SV_LAST_END] = k
     sv[F.SV_T_LAST_SEP] = t
     for i in range(y.shape[0]):

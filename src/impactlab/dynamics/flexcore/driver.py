@@ -61,7 +61,7 @@ def drop(mdl, vx0, vy0, w0, rtol, t_max, stop_mode, record_on, out, contacts, de
     sv[F.SV_TOL_MISS] = F.MISS_TOL_FACTOR * max(1e-6, rtol) * sv[F.SV_DSTAR]
     first_touch(mdl, md, y, vx0, vy0, w0, sv, contacts, dents, cur_con)
     evaluate(mdl, md, y, der, ev, ek, Jn, Jt)
-    touch_modes(mdl, md, y, ek, Jn, Jt)
+    touch_modes(mdl, md, y, der, ev, ek, Jn, Jt)
     t = 0.0
     h = 0.02 * sv[F.SV_TSTAR] * rtol**0.2
     evaluate(mdl, md, y, K[0], gold, ek, Jn, Jt)

@@ -22,6 +22,10 @@ from numba.experimental.function_type import _get_jit_address
 
 from impactlab.dynamics.flexcore.address_call import (
     ACCEPT_SIGNATURE,
+    AT_CELLS,
+    AT_RHS,
+    AT_STEP,
+    CELLS_SIGNATURE,
     COAST_SIGNATURE,
     EVENTS_SIGNATURE,
     OUTPUTS_SIGNATURE,
@@ -29,6 +33,7 @@ from impactlab.dynamics.flexcore.address_call import (
     RECORD_SIGNATURE,
     STEP_SIGNATURE,
 )
+from impactlab.dynamics.flexcore.cellswitch import cell_action
 from impactlab.dynamics.flexcore.coast import out_of_contact
 from impactlab.dynamics.flexcore.events import handle_events
 from impactlab.dynamics.flexcore.history import history_row
@@ -43,8 +48,10 @@ _ADDRESSES: dict[bool, tuple[int, ...]] = {}
 def addresses(partial_slip: bool) -> tuple[int, ...]:
     """The entry points (``address_call.AT_*``) of the right-hand side and of the step
     (``rates_cells`` and ``dp_step_cells`` for partial slip, else ``rates`` and ``dp_step``),
-    of the event handler, the accepted step, the free flight, the outputs and the history row:
-    compiled, or loaded from the cache, on first use, then kept for the process."""
+    of the event handler, the accepted step, the free flight, the outputs and the history row,
+    and of the cell switches (``cellswitch.cell_action``; 0 without partial slip: never
+    called, never compiled): compiled, or loaded from the cache, on first use, then kept for
+    the process."""
     if partial_slip not in _ADDRESSES:
         collecting = gc.isenabled()
         gc.disable()  # the garbage of these compilations waits for the drop's (_compile_gc)
@@ -57,8 +64,17 @@ def addresses(partial_slip: bool) -> tuple[int, ...]:
                 int(_get_jit_address(out_of_contact, COAST_SIGNATURE)),
                 int(_get_jit_address(fill_outputs, OUTPUTS_SIGNATURE)),
                 int(_get_jit_address(history_row, RECORD_SIGNATURE)),
+                int(_get_jit_address(cell_action, CELLS_SIGNATURE)) if partial_slip else 0,
             )
         finally:
             if collecting:
                 gc.enable()
     return _ADDRESSES[partial_slip]
+
+
+def batch_addresses(partial_slip: bool) -> tuple[int, int, int]:
+    """The right-hand side, step and cell switches of partial slip that a batch's model tuple
+    ends with (``batch.drop_batch``; a batch without partial slip: those of the other models,
+    never called)."""
+    a = addresses(partial_slip)
+    return a[AT_RHS - AT_RHS], a[AT_STEP - AT_RHS], a[AT_CELLS - AT_RHS]
