@@ -15,7 +15,7 @@ from numba import njit
 from impactlab.contact.kernels import P_ESTAR
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.cells import reset, views
-from impactlab.dynamics.flexcore.rhs import evaluate
+from impactlab.dynamics.flexcore.rhs import evaluate_model
 from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.cells import (
     SLIP,
@@ -52,7 +52,7 @@ def settle(mdl, md, y, der, ev, ek, Jn, Jt):
     """Apply every cell switch already due at y (several cells can change within one step;
     only the first event is located). False if it does not settle."""
     for _ in range(4 * F.NCS + 8):
-        evaluate(mdl, md, y, der, ev, ek, Jn, Jt)
+        evaluate_model(mdl, md, y, der, ev, ek, Jn, Jt)
         changed = False
         for k in range(F.NE):
             if not changed and md[k, F.MD_IN] != 0.0:

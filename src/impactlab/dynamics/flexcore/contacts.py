@@ -34,7 +34,7 @@ from impactlab.dynamics.flexcore.friction import (
     mindlin_switch,
     radius_factor,
 )
-from impactlab.dynamics.flexcore.rhs import evaluate
+from impactlab.dynamics.flexcore.rhs import evaluate_model
 from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.layout import FR_COULOMB, FR_MINDLIN
 
@@ -242,7 +242,7 @@ def on_friction(mdl, md, y, k, der, ev, ek, Jn, Jt):
         mindlin_switch(c, md, k, y, 6 + 2 * M + F.Q_TAN, ek)
     elif md[k, F.MD_FM] != 0.0:
         md[k, F.MD_FM] = 0.0
-        evaluate(mdl, md, y, der, ev, ek, Jn, Jt)
+        evaluate_model(mdl, md, y, der, ev, ek, Jn, Jt)
         md[k, F.MD_FM] = coulomb_decide(c, M, Jn, Jt, k, ek[k, F.EK_FN], ek[k, F.EK_FT], c[F.FC_MU])
     else:
         md[k, F.MD_FM] = -1.0 if ek[k, F.EK_FT] > 0.0 else 1.0

@@ -29,7 +29,7 @@ from impactlab.dynamics.flexcore.address_call import (
 )
 from impactlab.dynamics.flexcore.cells import step_cap
 from impactlab.dynamics.flexcore.coast import complete_jump, refresh_thresholds
-from impactlab.dynamics.flexcore.rhs import evaluate
+from impactlab.dynamics.flexcore.rhs import evaluate_model
 from impactlab.dynamics.flexcore.setup import first_touch, scales, touch_modes, workspace
 from impactlab.dynamics.flexcore.steps import reject
 from impactlab.dynamics.kernels.buffers import copy_into
@@ -60,11 +60,11 @@ def drop(mdl, vx0, vy0, w0, rtol, t_max, stop_mode, record_on, out, contacts, de
     scales(mdl, vx0, vy0, w0, sc, sv)  # first: the cell parameters of partial slip
     sv[F.SV_TOL_MISS] = F.MISS_TOL_FACTOR * max(1e-6, rtol) * sv[F.SV_DSTAR]
     first_touch(mdl, md, y, vx0, vy0, w0, sv, contacts, dents, cur_con)
-    evaluate(mdl, md, y, der, ev, ek, Jn, Jt)
+    evaluate_model(mdl, md, y, der, ev, ek, Jn, Jt)
     touch_modes(mdl, md, y, der, ev, ek, Jn, Jt)
     t = 0.0
     h = 0.02 * sv[F.SV_TSTAR] * rtol**0.2
-    evaluate(mdl, md, y, K[0], gold, ek, Jn, Jt)
+    evaluate_model(mdl, md, y, K[0], gold, ek, Jn, Jt)
     if record_on:
         hist, nh = call_record(mdl[AT_RECORD], (hist, nh, t, mdl, y, ek, sv[F.SV_E0]))
     y_end = y.copy()  # the state right after the last separation

@@ -19,7 +19,7 @@ from impactlab.dynamics.flexcore.contacts import (
     pending,
 )
 from impactlab.dynamics.flexcore.friction import mindlin_after
-from impactlab.dynamics.flexcore.rhs import evaluate
+from impactlab.dynamics.flexcore.rhs import evaluate_model
 from impactlab.dynamics.kernels._jit import njit_internal
 
 #: The order in which simultaneous events are handled at a restart.
@@ -90,7 +90,7 @@ def handle_events(
         if fric == F.FR_PARTIAL and not call_cells(mdl[AT_CELLS], due):
             sv[F.SV_STATUS] = F.ST_TOO_MANY_EVENTS
             return False
-        evaluate(mdl, md, y, K[0], gold, ek, Jn, Jt)
+        evaluate_model(mdl, md, y, K[0], gold, ek, Jn, Jt)
         jev = -1
         for kk in range(F.NE):
             for kind2 in _PENDING_ORDER:

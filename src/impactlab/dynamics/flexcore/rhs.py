@@ -22,7 +22,7 @@ from impactlab.dynamics.flexcore.address_call import AT_RHS, call_rates
 from impactlab.dynamics.flexcore.cells import cell_events, cell_forces, cell_rates
 from impactlab.dynamics.flexcore.friction import friction_event, state_rate, tangential
 from impactlab.dynamics.flexcore.kinematics import end_kinematics, mobility, normal_force
-from impactlab.dynamics.kernels._jit import njit_internal
+from impactlab.dynamics.kernels._jit import njit_internal, njit_llvm_inline
 from impactlab.dynamics.kernels.layout import FR_COULOMB
 
 
@@ -234,7 +234,7 @@ def _events(law, p, c, md, y, ev, ek, M):
 def rates(law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, y, der, ev, ek, Jn, Jt):
     """Derivative ``der`` and event values ``ev`` at state y in the mode table md; ``ek``
     (F.NE, NEK) receives per end the evaluated quantities (``layout.EK_*``), Jn and Jt the
-    Jacobian rows. The model's arrays one by one (the hot path: see ``evaluate``). Every
+    Jacobian rows. The model's arrays one by one (the hot path: see ``evaluate_model``). Every
     friction model but partial slip (``rates_cells``)."""
     _end_forces(law, p, c, Ue, We, Pe, md, y, ek, Jn, Jt)
     _accelerations(c, om2, dmp, Tg, ia, ib, md, y, der, ek, Jn, Jt)
@@ -257,9 +257,11 @@ def rates_cells(law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, y, der, ev, ek,
         cell_events(c, md, k, ek, ev)
 
 
-@njit(cache=True, inline="always", error_model="numpy")
-def evaluate(mdl, md, y, der, ev, ek, Jn, Jt):
-    """The right-hand side with the model tuple ``mdl`` (package docstring)."""
+@njit_llvm_inline
+def evaluate_model(mdl, md, y, der, ev, ek, Jn, Jt):
+    """The right-hand side with the model tuple ``mdl`` (package docstring), through its
+    address. Compiled once and inlined by LLVM into its 11 callers (``kernels._jit``): numba
+    inlining it would unpack the model tuple again at each of them."""
     law, p, c, _om, om2, dmp, _zeta, Ue, We, Pe, Tg, ia, ib = mdl[:13]
     rhs = mdl[AT_RHS]
     call_rates(rhs, (law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, y, der, ev, ek, Jn, Jt))
