@@ -45,7 +45,7 @@ def test_addresses_are_kept_and_differ_per_friction_family() -> None:
 def test_a_call_with_other_argument_types_is_refused() -> None:
     @njit
     def wrong(y: np.ndarray) -> None:
-        call_rates(np.int64(1), (y,))
+        call_rates(np.int64(1), y)
 
     with pytest.raises(TypingError, match="call_rates: arguments"):
         wrong(np.zeros(3))

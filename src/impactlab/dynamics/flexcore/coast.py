@@ -74,7 +74,7 @@ def complete_jump(mdl, md, y, t, tau, K, gold, sv, dents, record_on, hist, nh, y
             flight(mdl, y, tau * jj / 4.0, yt)
             evaluate_model(mdl, md, yt, der, ev, ek, Jn, Jt)
             hist, nh = call_record(
-                mdl[AT_RECORD], (hist, nh, t + tau * jj / 4.0, mdl, yt, ek, sv[F.SV_E0])
+                mdl[AT_RECORD], hist, nh, t + tau * jj / 4.0, mdl, yt, ek, sv[F.SV_E0]
             )
     for i in range(y.shape[0]):
         y[i] = yev[i]
@@ -85,5 +85,5 @@ def complete_jump(mdl, md, y, t, tau, K, gold, sv, dents, record_on, hist, nh, y
         set_threshold(md, dents, int(sv[F.SV_ND]), k, ek[k, F.EK_X], ek[k, F.EK_DELTA])
     evaluate_model(mdl, md, y, K[0], gold, ek, Jn, Jt)
     if record_on:
-        hist, nh = call_record(mdl[AT_RECORD], (hist, nh, t, mdl, y, ek, sv[F.SV_E0]))
+        hist, nh = call_record(mdl[AT_RECORD], hist, nh, t, mdl, y, ek, sv[F.SV_E0])
     return t, hist, nh

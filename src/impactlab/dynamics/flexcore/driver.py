@@ -66,14 +66,14 @@ def drop(mdl, vx0, vy0, w0, rtol, t_max, stop_mode, record_on, out, contacts, de
     h = 0.02 * sv[F.SV_TSTAR] * rtol**0.2
     evaluate_model(mdl, md, y, K[0], gold, ek, Jn, Jt)
     if record_on:
-        hist, nh = call_record(mdl[AT_RECORD], (hist, nh, t, mdl, y, ek, sv[F.SV_E0]))
+        hist, nh = call_record(mdl[AT_RECORD], hist, nh, t, mdl, y, ek, sv[F.SV_E0])
     y_end = y.copy()  # the state right after the last separation
     while sv[F.SV_NSTEPS] < mdl[2][F.FC_MAX_STEPS]:
         if t > t_max:
             sv[F.SV_STATUS] = F.ST_TMAX
             break
         if md[0, F.MD_IN] == 0.0 and md[1, F.MD_IN] == 0.0:
-            code, tau = call_coast(mdl[AT_COAST], (mdl, y, t, h, sv, stop_mode, yev, ek))
+            code, tau = call_coast(mdl[AT_COAST], mdl, y, t, h, sv, stop_mode, yev, ek)
             if code == 2:
                 break
             if code == 1:
@@ -83,15 +83,16 @@ def drop(mdl, vx0, vy0, w0, rtol, t_max, stop_mode, record_on, out, contacts, de
         sv[F.SV_NSTEPS] += 1
         h = min(h, sv[F.SV_HMAX])
         h = step_cap(h, mdl[2], md, ek, sv[F.SV_HMIN])  # partial slip: a cell boundary
-        err = call_step(mdl[AT_STEP], (mdl, md, y, K, h, rtol, sc, st, ynew, gnew, ek, Jn, Jt))
+        err = call_step(mdl[AT_STEP], mdl, md, y, K, h, rtol, sc, st, ynew, gnew, ek, Jn, Jt)
         if not err <= 1.0:
             h = reject(h, err, sv)
             if h == 0.0:
                 break
             continue
-        step_args = (mdl, md, y, t, h, rtol, sc, K, Q, gold, gnew, ynew, yev, sv, contacts, dents,
-                     cur_con, record_on, hist, nh, yt, der, ev, ek, Jn, Jt)  # fmt: skip
-        ok, jev, t, hist, nh = call_accept(mdl[AT_ACCEPT], step_args)
+        ok, jev, t, hist, nh = call_accept(mdl[AT_ACCEPT], mdl, md, y, t, h, rtol, sc, K, Q,
+                                           gold, gnew, ynew, yev, sv, contacts, dents,
+                                           cur_con, record_on, hist, nh, yt, der, ev, ek,
+                                           Jn, Jt)  # fmt: skip
         if not ok:
             break
         copy_into(y, yev)
@@ -105,12 +106,12 @@ def drop(mdl, vx0, vy0, w0, rtol, t_max, stop_mode, record_on, out, contacts, de
             if sv[F.SV_NEVENTS] > F.DROP_MAX_EVENTS:
                 sv[F.SV_STATUS] = F.ST_TOO_MANY_EVENTS
                 break
-            event_args = (jev, mdl, md, y, t, K, gold, sv, sc, contacts, dents, cur_con, snap,
-                          y_end, der, ev, ek, Jn, Jt)  # fmt: skip
-            if not call_events(mdl[AT_EVENTS], event_args):
+            handled = call_events(mdl[AT_EVENTS], jev, mdl, md, y, t, K, gold, sv, sc, contacts,
+                                  dents, cur_con, snap, y_end, der, ev, ek, Jn, Jt)  # fmt: skip
+            if not handled:
                 break
         if record_on:
-            hist, nh = call_record(mdl[AT_RECORD], (hist, nh, t, mdl, y, ek, sv[F.SV_E0]))
+            hist, nh = call_record(mdl[AT_RECORD], hist, nh, t, mdl, y, ek, sv[F.SV_E0])
     copy_into(yfinal, y[: min(n, yfinal.shape[0])])
-    call_outputs(mdl[AT_OUTPUTS], (mdl, sv, t, y_end, vx0, vy0, out, contacts, dents))
+    call_outputs(mdl[AT_OUTPUTS], mdl, sv, t, y_end, vx0, vy0, out, contacts, dents)
     return int(sv[F.SV_STATUS]), int(sv[F.SV_NCON]), int(sv[F.SV_ND]), hist[:nh], nh

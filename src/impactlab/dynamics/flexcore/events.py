@@ -45,14 +45,14 @@ def _apply(jev, mdl, md, y, t, sv, contacts, dents, cur_con, snap, y_end, der, e
     st = F.ST_OK
     partial = mdl[2][F.FC_FRIC] == F.FR_PARTIAL
     if jev >= F.NFEV:  # a partial-slip cell: birth, release or stick/slip
-        call_cells(mdl[AT_CELLS], (np.int64(CELL_EVENT), jev, mdl, md, y, der, ev, ek, Jn, Jt))
+        call_cells(mdl[AT_CELLS], np.int64(CELL_EVENT), jev, mdl, md, y, der, ev, ek, Jn, Jt)
         return st, 0, -1
     if kind == F.FEV_LIMIT:
         st = F.ST_LAW_LIMIT
     elif kind == F.FEV_TOUCH:
         st = on_touch(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, ek, Jn, Jt)
         if partial and st == F.ST_OK:  # the cells reset, the first born (independent of the rest)
-            call_cells(mdl[AT_CELLS], (np.int64(CELL_TOUCH), k, mdl, md, y, der, ev, ek, Jn, Jt))
+            call_cells(mdl[AT_CELLS], np.int64(CELL_TOUCH), k, mdl, md, y, der, ev, ek, Jn, Jt)
     elif kind == F.FEV_VN:
         st = on_turn(mdl, md, k, ek[k, F.EK_DELTA], dents)
     elif kind == F.FEV_RELOAD:
@@ -61,7 +61,7 @@ def _apply(jev, mdl, md, y, t, sv, contacts, dents, cur_con, snap, y_end, der, e
         md[k, F.MD_DSW] = math.inf
     elif kind == F.FEV_SEP:
         if partial:  # the cells out of contact first (on_separation keeps the state after it)
-            call_cells(mdl[AT_CELLS], (np.int64(CELL_RESET), k, mdl, md, y, der, ev, ek, Jn, Jt))
+            call_cells(mdl[AT_CELLS], np.int64(CELL_RESET), k, mdl, md, y, der, ev, ek, Jn, Jt)
         on_separation(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, y_end, ek)
     elif kind == F.FEV_FRIC:
         on_friction(mdl, md, y, k, der, ev, ek, Jn, Jt)
@@ -86,8 +86,9 @@ def handle_events(
             sv[F.SV_STATUS] = st
             return False
         mindlin_after(mdl, md, k, kind, y, ek, sc, sv)
-        due = (np.int64(CELL_SETTLE), np.int64(0), mdl, md, y, K[0], gold, ek, Jn, Jt)
-        if fric == F.FR_PARTIAL and not call_cells(mdl[AT_CELLS], due):
+        if fric == F.FR_PARTIAL and not call_cells(
+            mdl[AT_CELLS], np.int64(CELL_SETTLE), np.int64(0), mdl, md, y, K[0], gold, ek, Jn, Jt
+        ):
             sv[F.SV_STATUS] = F.ST_TOO_MANY_EVENTS
             return False
         evaluate_model(mdl, md, y, K[0], gold, ek, Jn, Jt)

@@ -264,4 +264,4 @@ def evaluate_model(mdl, md, y, der, ev, ek, Jn, Jt):
     inlining it would unpack the model tuple again at each of them."""
     law, p, c, _om, om2, dmp, _zeta, Ue, We, Pe, Tg, ia, ib = mdl[:13]
     rhs = mdl[AT_RHS]
-    call_rates(rhs, (law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, y, der, ev, ek, Jn, Jt))
+    call_rates(rhs, law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, y, der, ev, ek, Jn, Jt)

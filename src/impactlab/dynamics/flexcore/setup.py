@@ -128,7 +128,7 @@ def touch_modes(mdl, md, y, der, ev, ek, Jn, Jt):
     tip = np.int64(0)  # a run-time integer (``first_touch``)
     initial_mode(mdl[1], c, mdl[3].shape[0], md, tip, ek[0, F.EK_VT], ek[0, F.EK_VN], Jn, Jt)
     if c[F.FC_FRIC] == F.FR_PARTIAL:
-        call_cells(mdl[AT_CELLS], (np.int64(CELL_TOUCH), tip, mdl, md, y, der, ev, ek, Jn, Jt))
+        call_cells(mdl[AT_CELLS], np.int64(CELL_TOUCH), tip, mdl, md, y, der, ev, ek, Jn, Jt)
 
 
 @njit(cache=True, inline="always", error_model="numpy")

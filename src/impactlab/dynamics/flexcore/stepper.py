@@ -90,7 +90,7 @@ def integrate_to(mdl, md, y, k0, H, rtol, sc, out, ev, ek, Jn, Jt):
         last = hh >= (H - done) * (1.0 - 1e-12)
         if last:
             hh = H - done
-        err = call_step(mdl[AT_STEP], (mdl, md, cur, Ks, hh, rtol, sc, st, out, ev, ek, Jn, Jt))
+        err = call_step(mdl[AT_STEP], mdl, md, cur, Ks, hh, rtol, sc, st, out, ev, ek, Jn, Jt)
         if not (err <= 1.0) and hh > 1e-6 * H:
             hh *= max(0.2, power_growth(err)) if math.isfinite(err) else 0.25
         elif last:
@@ -120,7 +120,7 @@ def locate(jev, g0, g1, mdl, md, y0, h, Q, yt, der, ev, ek, Jn, Jt, shift):
         if not (a < th < b):
             th = 0.5 * (a + b)
         dense(y0, h, th, Q, yt, y0.shape[0])
-        call_rates(rhs, (law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, yt, der, ev, ek, Jn, Jt))
+        call_rates(rhs, law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, yt, der, ev, ek, Jn, Jt)
         f = ev[jev] - shift
         if abs(f) <= tiny:
             if f > 0.0:  # past the root by round-off
@@ -129,7 +129,7 @@ def locate(jev, g0, g1, mdl, md, y0, h, Q, yt, der, ev, ek, Jn, Jt, shift):
             if probe < b:
                 dense(y0, h, probe, Q, yt, y0.shape[0])
                 call_rates(
-                    rhs, (law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, yt, der, ev, ek, Jn, Jt)
+                    rhs, law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, yt, der, ev, ek, Jn, Jt
                 )
                 fp = ev[jev] - shift
                 if fp > 0.0:

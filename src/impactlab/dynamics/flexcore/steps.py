@@ -118,7 +118,7 @@ def record_inside(mdl, md, y, t, h, theta, Q, sv, hist, nh, yt, der, ev, ek, Jn,
             break
         dense(y, h, thj, Q, yt, y.shape[0])
         evaluate_model(mdl, md, yt, der, ev, ek, Jn, Jt)
-        hist, nh = call_record(mdl[AT_RECORD], (hist, nh, t + thj * h, mdl, yt, ek, sv[F.SV_E0]))
+        hist, nh = call_record(mdl[AT_RECORD], hist, nh, t + thj * h, mdl, yt, ek, sv[F.SV_E0])
     return hist, nh
 
 
