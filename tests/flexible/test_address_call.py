@@ -1,8 +1,8 @@
-"""The flexible drop's right-hand side and step, called through their addresses: the model
-tuple has the one type the callers are compiled for, the addresses are those of compiled code,
-a call with other argument types is refused when the caller compiles, and the right-hand side
-of every model but partial slip does not name the cells' kernels (they compile only for a
-drop that uses them)."""
+"""The flexible drop's functions called through their addresses: the model tuple has the one
+type the callers are compiled for, the addresses are those of compiled code (the cell switches'
+only with partial slip), a call with other argument types is refused when the caller compiles,
+and neither the right-hand side of every model but partial slip nor the event handler names
+the cells' kernels (they compile only for a drop that uses them)."""
 
 from __future__ import annotations
 
@@ -13,10 +13,17 @@ import pytest
 from numba import njit, typeof
 from numba.core.errors import TypingError
 
+from impactlab.dynamics.flexcore import contacts, events, rhs, setup
 from impactlab.dynamics.flexcore import layout as F
-from impactlab.dynamics.flexcore import rhs
-from impactlab.dynamics.flexcore.address_call import MODEL, call_rates
-from impactlab.dynamics.flexcore.indirect import addresses
+from impactlab.dynamics.flexcore.address_call import (
+    AT_CELLS,
+    AT_EVENTS,
+    AT_RHS,
+    MODEL,
+    N_ADDRESSES,
+    call_rates,
+)
+from impactlab.dynamics.flexcore.indirect import addresses, batch_addresses
 from impactlab.dynamics.flexcore.model import model_tuple
 
 
@@ -36,10 +43,14 @@ def test_the_model_tuple_has_the_callers_type(friction_id: int) -> None:
 
 def test_addresses_are_kept_and_differ_per_friction_family() -> None:
     plain, cells = addresses(False), addresses(True)
-    assert all(isinstance(a, int) and a > 0 for a in plain + cells)
+    assert len(plain) == len(cells) == N_ADDRESSES
+    switches = AT_CELLS - AT_RHS
+    assert plain[switches] == 0  # never called, never compiled without partial slip
+    assert all(isinstance(a, int) and a > 0 for a in plain[:switches] + cells)
     assert len(set(plain[:2] + cells[:2])) == 4  # the right-hand sides and steps
-    assert plain[2] == cells[2]  # one event handler
+    assert plain[AT_EVENTS - AT_RHS : switches] == cells[AT_EVENTS - AT_RHS : switches]
     assert addresses(False) == plain
+    assert batch_addresses(True) == (cells[0], cells[1], cells[switches])
 
 
 def test_a_call_with_other_argument_types_is_refused() -> None:
@@ -59,3 +70,21 @@ def test_only_the_partial_slip_right_hand_side_names_the_cells() -> None:
     assert not cell_kernels(rhs.rates.py_func, rhs._end_forces.py_func)
     cells = cell_kernels(rhs.rates_cells.py_func, rhs._end_forces_cells.py_func)
     assert len(cells) == 3  # forces, rates, events
+
+
+def test_the_event_handler_names_no_cell_switch() -> None:
+    names = set().union(
+        *(
+            f.py_func.__code__.co_names
+            for f in (
+                events.handle_events,
+                events._apply,
+                contacts.on_touch,
+                contacts.on_separation,
+                setup.touch_modes,
+            )
+        )
+    )
+    switches = {"apply_cell_event", "settle", "touch_cells", "reset", "apply_due", "birth"}
+    assert not names & switches
+    assert "call_cells" in names  # behind the one address of ``cellswitch.cell_action``
