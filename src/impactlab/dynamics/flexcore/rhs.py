@@ -15,6 +15,7 @@ An event fires when its function goes from <= 0 to > 0.
 
 from __future__ import annotations
 
+import numpy as np
 from numba import njit
 
 from impactlab.dynamics.flexcore import layout as F
@@ -129,8 +130,10 @@ def _stick_forces(c, M, md, der, ek, Jt):
     iv = 3 + M
     m = c[F.FC_M]
     ns = 0
-    sk0 = -1
-    sk1 = -1
+    # run-time integers: a literal -1 had numba compile ``mobility`` for it as well, while it
+    # typed the loop below (a signature of its own, never called)
+    sk0 = np.int64(-1)
+    sk1 = np.int64(-1)
     for k in range(F.NE):
         if md[k, F.MD_IN] != 0.0 and md[k, F.MD_FM] == 0.0:
             if ns == 0:
