@@ -137,9 +137,9 @@ def _stick_forces(c, M, md, der, ek, Jt):
     for k in range(F.NE):
         if md[k, F.MD_IN] != 0.0 and md[k, F.MD_FM] == 0.0:
             if ns == 0:
-                sk0 = k
+                sk0 = np.int64(k)
             else:
-                sk1 = k
+                sk1 = np.int64(k)
             ns += 1
     if ns == 0:
         return
@@ -161,13 +161,13 @@ def _stick_forces(c, M, md, der, ek, Jt):
             f0 = -(A00 * a0 + A01 * a1) / tr2
             f1 = -(A01 * a0 + A11 * a1) / tr2
     for t in range(ns):
-        k = sk0 if t == 0 else sk1
+        ks = sk0 if t == 0 else sk1
         f = f0 if t == 0 else f1
-        ek[k, F.EK_FT] = f
+        ek[ks, F.EK_FT] = f
         der[iv] += f / m
-        der[iv + 2] += Jt[k, 2] * f / c[F.FC_I]
+        der[iv + 2] += Jt[ks, 2] * f / c[F.FC_I]
         for j in range(M):
-            der[iv + 3 + j] += Jt[k, 3 + j] * f
+            der[iv + 3 + j] += Jt[ks, 3 + j] * f
 
 
 @njit(cache=True, inline="always", error_model="numpy")
