@@ -234,7 +234,7 @@ def simulate_drops(
                       COULOMB, gstar)  # fmt: skip
         mdl = model_tuple(model.law_id, p, c, bm.omega, bm.zeta, bm.U, bm.W, bm.Psi,
                           bm.geometric)  # fmt: skip
-        # the right-hand side of partial slip, compiled only where a case uses it
+        # partial slip's right-hand side, step and cell switches, compiled only where a case uses it
         mdl += batch_addresses(bool(np.any(fid[run] == PARTIAL_SLIP)))
         init = np.stack([cols[k][run] for k in ("angle", "vx", "vy", "spin")], axis=1)
         o, ck = (
