@@ -14,6 +14,9 @@ measured one builds on, each in its own process (``rigid`` for ``partial_slip`` 
 - every dispatcher of the package compiled for more than one type signature;
 - the CPU seconds of Python's cyclic garbage collector and its number of collections
   (``gc.callbacks``; ``impactlab._compile_gc`` pauses it while numba compiles);
+- with ``--inlined``, per function inlined by numba (``inline="always"``), how many times its
+  body was instantiated and its IR statements in all (numba translates, types and lowers an
+  inlined body again at every call site; ``numba.core.inline_closurecall.InlineWorker``);
 
 and writes, with ``--json``, also the 60 largest (function, compiler pass) times.
 
@@ -34,6 +37,7 @@ import tempfile
 import time
 from collections import defaultdict
 from pathlib import Path
+from typing import Any
 
 PY = "import math, impactlab as il\n"
 RIGID = PY + ("il.simulate(il.Rod.paper(), mu=0.2, angle=math.radians(20), velocity=(0.0, -1.41))")
@@ -88,9 +92,35 @@ class _GCTimer:
             self.count += 1
 
 
-def _measure(part: str) -> dict[str, object]:
+def _count_inlined() -> dict[str, list[int]]:
+    """Count numba's inlined bodies: name -> [instantiations, IR statements of its own]."""
+    from numba.core import inline_closurecall as icc
+
+    counts: dict[str, list[int]] = defaultdict(lambda: [0, 0])
+    nested: list[list[int]] = []  # the statements of the bodies inlined into the current one
+    orig = icc.InlineWorker.run_untyped_passes
+
+    def run_untyped_passes(self: Any, func: Any, enable_ssa: bool = False) -> Any:
+        nested.append([0])
+        callee_ir = orig(self, func, enable_ssa)
+        inner = nested.pop()[0]
+        size = sum(len(b.body) for b in callee_ir.blocks.values())
+        row = counts[f"{func.__module__}.{func.__qualname__}"]
+        row[0] += 1
+        row[1] += size - inner
+        if nested:
+            nested[-1][0] += size
+        return callee_ir
+
+    icc.InlineWorker.run_untyped_passes = run_untyped_passes  # type: ignore[method-assign]
+    return counts
+
+
+def _measure(part: str, inlined: bool = False) -> dict[str, object]:
     """Run ``part`` in this process with the listeners; the per-function and per-pass times."""
     from numba.core import event
+
+    inline_counts = _count_inlined() if inlined else {}
 
     stack: list[list[object]] = []  # [function, pass or "", start, child time]
     per_fn: dict[str, float] = defaultdict(float)
@@ -178,6 +208,7 @@ def _measure(part: str) -> dict[str, object]:
         "multi_signature": multi,
         "gc_s": collector.seconds,
         "gc_collections": collector.count,
+        "inlined": dict(sorted(inline_counts.items(), key=lambda kv: -kv[1][1])),
     }
 
 
@@ -192,11 +223,12 @@ def main() -> None:
         "in, instead of compiling them; valid while their source files are unchanged)",
     )
     ap.add_argument("--top", type=int, default=40)
+    ap.add_argument("--inlined", action="store_true", help="count numba's inlined bodies")
     ap.add_argument("--json", type=Path)
     ap.add_argument("--child", action="store_true", help=argparse.SUPPRESS)
     args = ap.parse_args()
     if args.child:
-        print(json.dumps(_measure(args.part)))
+        print(json.dumps(_measure(args.part, args.inlined)))
         return
     with tempfile.TemporaryDirectory() as tmp:
         cache = args.cache or Path(tmp) / "cache"
@@ -207,7 +239,7 @@ def main() -> None:
                 _fill(before, cache)
         env = dict(os.environ, NUMBA_CACHE_DIR=str(cache), IMPACTLAB_QUIET_COMPILE="1")
         out = subprocess.run(
-            [sys.executable, __file__, args.part, "--child"],
+            [sys.executable, __file__, args.part, "--child"] + ["--inlined"] * args.inlined,
             env=env,
             check=True,
             capture_output=True,
@@ -227,6 +259,10 @@ def main() -> None:
     print(f"{'exclusive s':>11}  pass")
     for name, s in list(res["passes"].items())[:15]:
         print(f"{s:11.2f}  {name}")
+    if res["inlined"]:
+        print(f"{'bodies':>6} {'stmts':>6}  inlined by numba (instantiations, own IR statements)")
+        for name, (n, size) in list(res["inlined"].items())[: args.top]:
+            print(f"{n:6d} {size:6d}  {name}")
     for name, sigs in res["multi_signature"].items():
         print(f"{len(sigs)} signatures: {name}")
         for s in sigs:

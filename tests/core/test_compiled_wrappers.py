@@ -6,7 +6,9 @@ time), and a call from Python then crashes the interpreter instead of raising an
 compiled code may call them: this test looks for every use of their names in Python code
 (outside compiled function bodies and imports) in the package, the tests, the benchmarks and
 the tools. It matches by name only, so a Python function of the same name elsewhere also fails
-it: such a compiled function keeps its wrappers.
+it: such a compiled function keeps its wrappers. Two uses call nothing and pass: reading the
+dispatcher's ``py_func`` and taking a compiled entry point with numba's ``_get_jit_address``
+(the flexible drop's functions called through their addresses, ``flexcore.indirect``).
 """
 
 from __future__ import annotations
@@ -42,6 +44,18 @@ def _compiled(tree: ast.AST) -> list[ast.FunctionDef]:
     ]
 
 
+def _no_call(tree: ast.AST) -> set[int]:
+    """The nodes that name a compiled function without calling it from Python: ``f.py_func``
+    and the first argument of ``_get_jit_address(f, signature)``."""
+    named: list[ast.AST] = []
+    for n in ast.walk(tree):
+        if isinstance(n, ast.Attribute) and n.attr == "py_func":
+            named.append(n.value)
+        elif isinstance(n, ast.Call) and _decorator_name(n) == "_get_jit_address" and n.args:
+            named.append(n.args[0])
+    return {id(m) for n in named for m in ast.walk(n)}
+
+
 def _trees() -> dict[Path, ast.Module]:
     files = [p for folder in FOLDERS for p in (ROOT / folder).rglob("*.py")]
     return {p: ast.parse(p.read_text()) for p in files}
@@ -58,7 +72,7 @@ def test_functions_without_wrapper_are_called_only_from_compiled_code() -> None:
     assert len(internal) > 40  # the engine's internal functions are found
     uses: list[str] = []
     for path, tree in trees.items():
-        inside = {id(n) for fn in compiled[path] for n in ast.walk(fn)}
+        inside = {id(n) for fn in compiled[path] for n in ast.walk(fn)} | _no_call(tree)
         for node in ast.walk(tree):
             if id(node) in inside or isinstance(node, ast.Import | ast.ImportFrom):
                 continue

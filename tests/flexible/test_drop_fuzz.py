@@ -25,7 +25,7 @@ FRICTION = ("coulomb", "impulse_ratio", "mindlin", "partial_slip")
 def _case(rng: np.random.Generator) -> dict[str, Any]:
     n_axial, n_bending, residual = MODES[int(rng.integers(0, len(MODES)))]
     law = str(rng.choice(LAWS))
-    rates = (None, None, "cowper-symonds", "johnson-cook")
+    rate_models = (None, None, "cowper-symonds", "johnson-cook")
     return {
         "body": FlexibleRod.paper(
             n_axial=n_axial,
@@ -36,7 +36,7 @@ def _case(rng: np.random.Generator) -> dict[str, Any]:
         "law": law,
         "friction": str(rng.choice(FRICTION)),
         "mu": float(rng.choice([0.0, rng.uniform(0.0, 0.6)])),
-        "rate": None if law == "hertz" else rates[int(rng.integers(0, 4))],
+        "rate": None if law == "hertz" else rate_models[int(rng.integers(0, 4))],
         "angle": math.radians(float(10.0 ** rng.uniform(-3.0, math.log10(90.0)))),
         "velocity": (float(rng.uniform(-0.5, 0.5)), -float(10.0 ** rng.uniform(-0.5, 0.6))),
         "spin": float(rng.choice([0.0, rng.uniform(-10.0, 10.0)])),

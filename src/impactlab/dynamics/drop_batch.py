@@ -36,7 +36,7 @@ from impactlab.dynamics.drop_checks import (
 )
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.batch import CK_E0, CK_FLAGS, N_CHECKS, drop_batch
-from impactlab.dynamics.flexcore.indirect import addresses
+from impactlab.dynamics.flexcore.indirect import batch_addresses
 from impactlab.dynamics.flexcore.model import constants, model_tuple
 from impactlab.dynamics.history import readonly_copy
 from impactlab.dynamics.kernels import status as S
@@ -234,8 +234,8 @@ def simulate_drops(
                       COULOMB, gstar)  # fmt: skip
         mdl = model_tuple(model.law_id, p, c, bm.omega, bm.zeta, bm.U, bm.W, bm.Psi,
                           bm.geometric)  # fmt: skip
-        # the right-hand side of partial slip, compiled only where a case uses it
-        mdl += addresses(bool(np.any(fid[run] == PARTIAL_SLIP)))[:2]
+        # partial slip's right-hand side, step and cell switches, compiled only where a case uses it
+        mdl += batch_addresses(bool(np.any(fid[run] == PARTIAL_SLIP)))
         init = np.stack([cols[k][run] for k in ("angle", "vx", "vy", "spin")], axis=1)
         o, ck = (
             np.full((init.shape[0], F.N_DROP_OUT), np.nan),

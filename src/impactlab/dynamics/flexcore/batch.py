@@ -21,6 +21,19 @@ from numba import njit, prange
 
 from impactlab.contact.history_kernels import loading_contact_radius
 from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.flexcore.address_call import (
+    AT_ACCEPT,
+    AT_CELLS,
+    AT_COAST,
+    AT_EVENTS,
+    AT_OUTPUTS,
+    AT_PARTIAL_CELLS,
+    AT_PARTIAL_RHS,
+    AT_PARTIAL_STEP,
+    AT_RECORD,
+    AT_RHS,
+    AT_STEP,
+)
 from impactlab.dynamics.flexcore.driver import drop
 from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.cells import CP_DX, N_CELLS
@@ -84,8 +97,9 @@ def sequence_flags(out, e0, m, g, rtol, contacts, n_contacts):
 def case_model(mdl, angle, mu, fid, w0, w1, max_steps):
     """The model tuple of one case: a copy of the constants vector with the case's angle, its
     sine and cosine, mu, friction id, cell widths [m] and step limit (as ``model.constants``),
-    and the addresses of its friction model's right-hand side and step, and of the event
-    handler (the batch model ends with those of partial slip's right-hand side and step)."""
+    and the addresses of its friction model's right-hand side, step and cell switches, and the
+    others (the batch model ends with partial slip's right-hand side, step and cell switches:
+    ``indirect.batch_addresses``)."""
     c = mdl[2].copy()
     cells = fid == F.FR_PARTIAL
     c[F.FC_TH0] = angle
@@ -96,10 +110,12 @@ def case_model(mdl, angle, mu, fid, w0, w1, max_steps):
     c[F.FC_CP + CP_DX] = w0
     c[F.FC_CP + F.NFCP + CP_DX] = w1
     c[F.FC_MAX_STEPS] = float(min(max_steps, F.DROP_MAX_STEPS))
-    rhs = mdl[16] if cells else mdl[13]
-    step = mdl[17] if cells else mdl[14]
+    rhs = mdl[AT_PARTIAL_RHS] if cells else mdl[AT_RHS]
+    step = mdl[AT_PARTIAL_STEP] if cells else mdl[AT_STEP]
+    switches = mdl[AT_PARTIAL_CELLS] if cells else mdl[AT_CELLS]
     return (mdl[0], mdl[1], c, mdl[3], mdl[4], mdl[5], mdl[6], mdl[7], mdl[8], mdl[9],
-            mdl[10], mdl[11], mdl[12], rhs, step, mdl[15])  # fmt: skip
+            mdl[10], mdl[11], mdl[12], rhs, step, mdl[AT_EVENTS], mdl[AT_ACCEPT], mdl[AT_COAST],
+            mdl[AT_OUTPUTS], mdl[AT_RECORD], switches)  # fmt: skip
 
 
 @njit(cache=True, error_model="numpy")
@@ -168,8 +184,8 @@ def drop_batch(threads, mdl, init, mu, fid, rtol, t_max, stop_mode, out, checks,
     """Run ``init.shape[0]`` drops on ``threads`` loops (pass ``numba.get_num_threads()``).
 
     ``mdl``: the model tuple of the body and law (its constants' angle, mu, friction and
-    cells are set per case) and, last, the addresses of partial slip's right-hand side and
-    step (``indirect.addresses``; where no case uses it, those of the others again);
+    cells are set per case) and, last, the addresses of partial slip's right-hand side, step
+    and cell switches (``indirect.batch_addresses``; where no case uses it, never called);
     ``init``: (N, 4) [angle,
     vx, vy, spin]; ``mu``: (N,) the friction coefficient each case runs with; ``fid``: (N,)
     int64 friction ids; rtol, t_max [s], stop_mode as ``drop``. Fills ``out`` (N,

@@ -15,7 +15,7 @@ from numba import njit
 from impactlab.contact.kernels import P_ESTAR
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.cells import reset, views
-from impactlab.dynamics.flexcore.rhs import evaluate
+from impactlab.dynamics.flexcore.rhs import evaluate_model
 from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.cells import (
     SLIP,
@@ -52,7 +52,7 @@ def settle(mdl, md, y, der, ev, ek, Jn, Jt):
     """Apply every cell switch already due at y (several cells can change within one step;
     only the first event is located). False if it does not settle."""
     for _ in range(4 * F.NCS + 8):
-        evaluate(mdl, md, y, der, ev, ek, Jn, Jt)
+        evaluate_model(mdl, md, y, der, ev, ek, Jn, Jt)
         changed = False
         for k in range(F.NE):
             if not changed and md[k, F.MD_IN] != 0.0:
@@ -98,3 +98,25 @@ def touch_cells(mdl, md, k, y, ek):
     cm, sg, cp, _L, _Ld, _f = views(c, md, ek, k)
     vn, vs = ek[k, F.EK_VN], ek[k, F.EK_VT]
     birth(np.int64(0), y, o, cm, sg, cp, c[F.FC_MU], mdl[1][P_ESTAR], 0.0, vn, vs, 0.0, 0.0)
+
+
+#: The actions of ``cell_action``: a cell event, the switches due, an end's touch, its separation.
+CELL_EVENT, CELL_SETTLE, CELL_TOUCH, CELL_RESET = 0, 1, 2, 3
+
+
+@njit_internal
+def cell_action(action, i, mdl, md, y, der, ev, ek, Jn, Jt):
+    """Partial slip's cell switches, called through their address (``address_call.call_cells``)
+    by a partial-slip drop only (another drop compiles none of them): the cell event ``i``
+    (``CELL_EVENT``, ``apply_cell_event``), every switch already due (``CELL_SETTLE``,
+    ``settle``: False when it does not settle), end i's cells at its touch (``CELL_TOUCH``,
+    ``touch_cells``) or at its separation (``CELL_RESET``: out of contact, unstressed)."""
+    if action == CELL_EVENT:
+        apply_cell_event(i, mdl, md, y, ek)
+    elif action == CELL_SETTLE:
+        return settle(mdl, md, y, der, ev, ek, Jn, Jt)
+    elif action == CELL_TOUCH:
+        touch_cells(mdl, md, i, y, ek)
+    else:
+        reset(md, i, y, cell_offset(mdl, i))
+    return True

@@ -6,12 +6,12 @@ from __future__ import annotations
 from numba import njit
 
 from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.flexcore.address_call import AT_RECORD, call_record
 from impactlab.dynamics.flexcore.contacts import (
     set_threshold,
 )
 from impactlab.dynamics.flexcore.flight import flight, jump_length, left_for_good
-from impactlab.dynamics.flexcore.history import record
-from impactlab.dynamics.flexcore.rhs import evaluate
+from impactlab.dynamics.flexcore.rhs import evaluate_model
 from impactlab.dynamics.kernels._jit import njit_internal
 
 
@@ -23,7 +23,7 @@ def refresh_thresholds(mdl, md, y, K, gold, sv, dents, ek, Jn, Jt):
             old = md[k, F.MD_DENT]
             set_threshold(md, dents, int(sv[F.SV_ND]), k, ek[k, F.EK_X], ek[k, F.EK_DELTA])
             if md[k, F.MD_DENT] != old:
-                evaluate(mdl, md, y, K[0], gold, ek, Jn, Jt)
+                evaluate_model(mdl, md, y, K[0], gold, ek, Jn, Jt)
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -72,16 +72,18 @@ def complete_jump(mdl, md, y, t, tau, K, gold, sv, dents, record_on, hist, nh, y
     if record_on:
         for jj in range(1, 4):
             flight(mdl, y, tau * jj / 4.0, yt)
-            evaluate(mdl, md, yt, der, ev, ek, Jn, Jt)
-            hist, nh = record(hist, nh, t + tau * jj / 4.0, mdl, yt, ek, sv[F.SV_E0])
+            evaluate_model(mdl, md, yt, der, ev, ek, Jn, Jt)
+            hist, nh = call_record(
+                mdl[AT_RECORD], hist, nh, t + tau * jj / 4.0, mdl, yt, ek, sv[F.SV_E0]
+            )
     for i in range(y.shape[0]):
         y[i] = yev[i]
     t += tau
     sv[F.SV_NJUMPS] += 1
-    evaluate(mdl, md, y, K[0], gold, ek, Jn, Jt)
+    evaluate_model(mdl, md, y, K[0], gold, ek, Jn, Jt)
     for k in range(F.NE):
         set_threshold(md, dents, int(sv[F.SV_ND]), k, ek[k, F.EK_X], ek[k, F.EK_DELTA])
-    evaluate(mdl, md, y, K[0], gold, ek, Jn, Jt)
+    evaluate_model(mdl, md, y, K[0], gold, ek, Jn, Jt)
     if record_on:
-        hist, nh = record(hist, nh, t, mdl, y, ek, sv[F.SV_E0])
+        hist, nh = call_record(mdl[AT_RECORD], hist, nh, t, mdl, y, ek, sv[F.SV_E0])
     return t, hist, nh

@@ -28,15 +28,13 @@ from impactlab.contact.kernels import (
     unloading_radius,
 )
 from impactlab.dynamics.flexcore import layout as F
-from impactlab.dynamics.flexcore.cells import reset
-from impactlab.dynamics.flexcore.cellswitch import cell_offset, touch_cells
 from impactlab.dynamics.flexcore.friction import (
     coulomb_decide,
     initial_mode,
     mindlin_switch,
     radius_factor,
 )
-from impactlab.dynamics.flexcore.rhs import evaluate
+from impactlab.dynamics.flexcore.rhs import evaluate_model
 from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.layout import FR_COULOMB, FR_MINDLIN
 
@@ -166,8 +164,6 @@ def on_touch(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, ek, Jn, Jt):
     md[k, F.MD_IN] = 1.0
     md[k, F.MD_COMP] = 1.0
     initial_mode(mdl[1], c, M, md, k, ek[k, F.EK_VT], ek[k, F.EK_VN], Jn, Jt)
-    if c[F.FC_FRIC] == F.FR_PARTIAL:
-        touch_cells(mdl, md, k, y, ek)
     b = iq + 3 + 4 * k
     for i in range(4):
         snap[k, i] = y[b + i]
@@ -228,8 +224,6 @@ def on_separation(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, y_end, e
     md[k, F.MD_IN] = 0.0
     md[k, F.MD_FM] = 0.0
     md[k, F.MD_COMP] = 0.0
-    if mdl[2][F.FC_FRIC] == F.FR_PARTIAL:
-        reset(md, k, y, cell_offset(mdl, k))
     sv[F.SV_LAST_END] = k
     sv[F.SV_T_LAST_SEP] = t
     for i in range(y.shape[0]):
@@ -248,7 +242,7 @@ def on_friction(mdl, md, y, k, der, ev, ek, Jn, Jt):
         mindlin_switch(c, md, k, y, 6 + 2 * M + F.Q_TAN, ek)
     elif md[k, F.MD_FM] != 0.0:
         md[k, F.MD_FM] = 0.0
-        evaluate(mdl, md, y, der, ev, ek, Jn, Jt)
+        evaluate_model(mdl, md, y, der, ev, ek, Jn, Jt)
         md[k, F.MD_FM] = coulomb_decide(c, M, Jn, Jt, k, ek[k, F.EK_FN], ek[k, F.EK_FT], c[F.FC_MU])
     else:
         md[k, F.MD_FM] = -1.0 if ek[k, F.EK_FT] > 0.0 else 1.0

@@ -13,14 +13,25 @@ import numpy as np
 from numba import njit
 
 from impactlab.dynamics.flexcore import layout as F
-from impactlab.dynamics.flexcore.address_call import call_events, call_step
+from impactlab.dynamics.flexcore.address_call import (
+    AT_ACCEPT,
+    AT_COAST,
+    AT_EVENTS,
+    AT_OUTPUTS,
+    AT_RECORD,
+    AT_STEP,
+    call_accept,
+    call_coast,
+    call_events,
+    call_outputs,
+    call_record,
+    call_step,
+)
 from impactlab.dynamics.flexcore.cells import step_cap
-from impactlab.dynamics.flexcore.coast import complete_jump, out_of_contact, refresh_thresholds
-from impactlab.dynamics.flexcore.history import record
-from impactlab.dynamics.flexcore.results import fill_outputs
-from impactlab.dynamics.flexcore.rhs import evaluate
+from impactlab.dynamics.flexcore.coast import complete_jump, refresh_thresholds
+from impactlab.dynamics.flexcore.rhs import evaluate_model
 from impactlab.dynamics.flexcore.setup import first_touch, scales, touch_modes, workspace
-from impactlab.dynamics.flexcore.steps import accept, reject
+from impactlab.dynamics.flexcore.steps import reject
 from impactlab.dynamics.kernels.buffers import copy_into
 from impactlab.dynamics.kernels.step_control import power_growth
 
@@ -45,24 +56,24 @@ def drop(mdl, vx0, vy0, w0, rtol, t_max, stop_mode, record_on, out, contacts, de
     )
     cur_con = np.full(F.NE, -1)
     hist = np.empty((1024 if record_on else 1, F.N_DROP_HISTORY))
-    nh = np.int64(0)  # not a literal: record() is compiled once, for any row count
+    nh = np.int64(0)  # not a literal: history_row() is compiled once, for any row count
     scales(mdl, vx0, vy0, w0, sc, sv)  # first: the cell parameters of partial slip
     sv[F.SV_TOL_MISS] = F.MISS_TOL_FACTOR * max(1e-6, rtol) * sv[F.SV_DSTAR]
     first_touch(mdl, md, y, vx0, vy0, w0, sv, contacts, dents, cur_con)
-    evaluate(mdl, md, y, der, ev, ek, Jn, Jt)
-    touch_modes(mdl, md, y, ek, Jn, Jt)
+    evaluate_model(mdl, md, y, der, ev, ek, Jn, Jt)
+    touch_modes(mdl, md, y, der, ev, ek, Jn, Jt)
     t = 0.0
     h = 0.02 * sv[F.SV_TSTAR] * rtol**0.2
-    evaluate(mdl, md, y, K[0], gold, ek, Jn, Jt)
+    evaluate_model(mdl, md, y, K[0], gold, ek, Jn, Jt)
     if record_on:
-        hist, nh = record(hist, nh, t, mdl, y, ek, sv[F.SV_E0])
+        hist, nh = call_record(mdl[AT_RECORD], hist, nh, t, mdl, y, ek, sv[F.SV_E0])
     y_end = y.copy()  # the state right after the last separation
     while sv[F.SV_NSTEPS] < mdl[2][F.FC_MAX_STEPS]:
         if t > t_max:
             sv[F.SV_STATUS] = F.ST_TMAX
             break
         if md[0, F.MD_IN] == 0.0 and md[1, F.MD_IN] == 0.0:
-            code, tau = out_of_contact(mdl, y, t, h, sv, stop_mode, yev, ek)
+            code, tau = call_coast(mdl[AT_COAST], mdl, y, t, h, sv, stop_mode, yev, ek)
             if code == 2:
                 break
             if code == 1:
@@ -72,15 +83,16 @@ def drop(mdl, vx0, vy0, w0, rtol, t_max, stop_mode, record_on, out, contacts, de
         sv[F.SV_NSTEPS] += 1
         h = min(h, sv[F.SV_HMAX])
         h = step_cap(h, mdl[2], md, ek, sv[F.SV_HMIN])  # partial slip: a cell boundary
-        err = call_step(mdl[14], (mdl, md, y, K, h, rtol, sc, st, ynew, gnew, ek, Jn, Jt))
+        err = call_step(mdl[AT_STEP], mdl, md, y, K, h, rtol, sc, st, ynew, gnew, ek, Jn, Jt)
         if not err <= 1.0:
             h = reject(h, err, sv)
             if h == 0.0:
                 break
             continue
-        ok, jev, t, hist, nh = accept(mdl, md, y, t, h, rtol, sc, K, Q, gold, gnew, ynew, yev, sv,
-                                      contacts, dents, cur_con, record_on, hist, nh, yt, der, ev,
-                                      ek, Jn, Jt)  # fmt: skip
+        ok, jev, t, hist, nh = call_accept(mdl[AT_ACCEPT], mdl, md, y, t, h, rtol, sc, K, Q,
+                                           gold, gnew, ynew, yev, sv, contacts, dents,
+                                           cur_con, record_on, hist, nh, yt, der, ev, ek,
+                                           Jn, Jt)  # fmt: skip
         if not ok:
             break
         copy_into(y, yev)
@@ -94,11 +106,12 @@ def drop(mdl, vx0, vy0, w0, rtol, t_max, stop_mode, record_on, out, contacts, de
             if sv[F.SV_NEVENTS] > F.DROP_MAX_EVENTS:
                 sv[F.SV_STATUS] = F.ST_TOO_MANY_EVENTS
                 break
-            if not call_events(mdl[15], (jev, mdl, md, y, t, K, gold, sv, sc, contacts, dents,
-                                         cur_con, snap, y_end, der, ev, ek, Jn, Jt)):  # fmt: skip
+            handled = call_events(mdl[AT_EVENTS], jev, mdl, md, y, t, K, gold, sv, sc, contacts,
+                                  dents, cur_con, snap, y_end, der, ev, ek, Jn, Jt)  # fmt: skip
+            if not handled:
                 break
         if record_on:
-            hist, nh = record(hist, nh, t, mdl, y, ek, sv[F.SV_E0])
+            hist, nh = call_record(mdl[AT_RECORD], hist, nh, t, mdl, y, ek, sv[F.SV_E0])
     copy_into(yfinal, y[: min(n, yfinal.shape[0])])
-    fill_outputs(mdl, sv, t, y_end, vx0, vy0, out, contacts, dents)
+    call_outputs(mdl[AT_OUTPUTS], mdl, sv, t, y_end, vx0, vy0, out, contacts, dents)
     return int(sv[F.SV_STATUS]), int(sv[F.SV_NCON]), int(sv[F.SV_ND]), hist[:nh], nh

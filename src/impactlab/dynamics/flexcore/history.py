@@ -4,15 +4,15 @@ points inside it), columns ``layout.DROP_HISTORY_FIELDS`` (compiled)."""
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.kinematics import mechanical_energy
+from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.buffers import grown
 
 
-@njit(cache=True, error_model="numpy")
-def record(hist, nh, t, mdl, y, ek, e0):
+@njit_internal
+def history_row(hist, nh, t, mdl, y, ek, e0):
     """Append the row at time t (state y, evaluated quantities ek; e0: initial energy [J]);
     returns (hist, nh), the array grown when full."""
     c = mdl[2]

@@ -1,12 +1,13 @@
-"""The addresses of the compiled right-hand side, step and event handler, for the model tuple
-(Python).
+"""The addresses of the compiled right-hand side, step, event handler, accepted step, free
+flight, outputs and history row, for the model tuple (Python).
 
 numba links the code of every compiled function a function calls into that function's library
 and optimises and generates machine code for it again there: ``rhs.rates`` was generated again
 in the libraries of the step, the acceptance of a step, the event handler and the drop.
 Called through their addresses instead (``address_call``: the model tuple carries them as
-int64), ``rates``, ``stepper.dp_step`` and ``events.handle_events`` are generated once each
-(``rates`` twice: the step's stage loop calls it directly, for speed), and a drop without
+int64), ``rates``, ``stepper.dp_step``, ``events.handle_events``, ``steps.accept``,
+``coast.out_of_contact``, ``results.fill_outputs`` and ``history.history_row`` are generated
+once each (``rates`` twice: the step's stage loop calls it directly, for speed), and a drop without
 partial slip never compiles the cells' right-hand side and step (``rhs.rates_cells``,
 ``stepper.dp_step_cells``). The addresses are read in Python when a drop starts, never baked
 into compiled code: the cached engine holds none, and a second process loads every function
@@ -20,32 +21,74 @@ import gc
 from numba.experimental.function_type import _get_jit_address
 
 from impactlab.dynamics.flexcore.address_call import (
+    ACCEPT_SIGNATURE,
+    AT_CELLS,
+    AT_RHS,
+    AT_STEP,
+    CELLS_SIGNATURE,
+    COAST_SIGNATURE,
     EVENTS_SIGNATURE,
+    OUTPUTS_SIGNATURE,
     RATES_SIGNATURE,
+    RECORD_SIGNATURE,
     STEP_SIGNATURE,
 )
+from impactlab.dynamics.flexcore.cellswitch import cell_action
+from impactlab.dynamics.flexcore.coast import out_of_contact
 from impactlab.dynamics.flexcore.events import handle_events
+from impactlab.dynamics.flexcore.history import history_row
+from impactlab.dynamics.flexcore.results import fill_outputs
 from impactlab.dynamics.flexcore.rhs import rates, rates_cells
 from impactlab.dynamics.flexcore.stepper import dp_step, dp_step_cells
+from impactlab.dynamics.flexcore.steps import accept
 
-_ADDRESSES: dict[bool, tuple[int, int, int]] = {}
+_ADDRESSES: dict[bool, tuple[int, ...]] = {}
 
 
-def addresses(partial_slip: bool) -> tuple[int, int, int]:
-    """The entry points of the right-hand side and of the step (``rates_cells`` and
-    ``dp_step_cells`` for partial slip, else ``rates`` and ``dp_step``) and of the event
-    handler: compiled, or loaded from the cache, on first use, then kept for the process."""
+def addresses(partial_slip: bool) -> tuple[int, ...]:
+    """The entry points (``address_call.AT_*``) of the right-hand side and of the step
+    (``rates_cells`` and ``dp_step_cells`` for partial slip, else ``rates`` and ``dp_step``),
+    of the event handler, the accepted step, the free flight, the outputs and the history row,
+    and of the cell switches (``cellswitch.cell_action``; 0 without partial slip: never
+    called, never compiled): compiled, or loaded from the cache, on first use, then kept for
+    the process."""
     if partial_slip not in _ADDRESSES:
-        rhs, step = (rates_cells, dp_step_cells) if partial_slip else (rates, dp_step)
         collecting = gc.isenabled()
-        gc.disable()  # the garbage of these compilations waits for the drop's (_compile_gc)
+        gc.disable()  # not collected after each compilation (``impactlab._compile_gc``): below
         try:
             _ADDRESSES[partial_slip] = (
-                int(_get_jit_address(rhs, RATES_SIGNATURE)),
-                int(_get_jit_address(step, STEP_SIGNATURE)),
+                int(_get_jit_address(rates_cells if partial_slip else rates, RATES_SIGNATURE)),
+                int(_get_jit_address(dp_step_cells if partial_slip else dp_step, STEP_SIGNATURE)),
                 int(_get_jit_address(handle_events, EVENTS_SIGNATURE)),
+                int(_get_jit_address(accept, ACCEPT_SIGNATURE)),
+                int(_get_jit_address(out_of_contact, COAST_SIGNATURE)),
+                int(_get_jit_address(fill_outputs, OUTPUTS_SIGNATURE)),
+                int(_get_jit_address(history_row, RECORD_SIGNATURE)),
+                int(_get_jit_address(cell_action, CELLS_SIGNATURE)) if partial_slip else 0,
             )
         finally:
             if collecting:
+                _to_oldest_generation()
                 gc.enable()
     return _ADDRESSES[partial_slip]
+
+
+def batch_addresses(partial_slip: bool) -> tuple[int, int, int]:
+    """The right-hand side, step and cell switches of partial slip that a batch's model tuple
+    ends with (``batch.drop_batch``; a batch without partial slip: those of the other models,
+    never called)."""
+    a = addresses(partial_slip)
+    return a[AT_RHS - AT_RHS], a[AT_STEP - AT_RHS], a[AT_CELLS - AT_RHS]
+
+
+def _to_oldest_generation() -> None:
+    """Hand the objects of the compilations just made (numba keeps most of them alive) to the
+    collector's oldest generation, where its next full pass finds their garbage: the next
+    collection of the youngest generation would otherwise pass over every one of them (0.7 s
+    of CPU after a first drop's compile, rigid engine cached). ``gc.freeze`` and
+    ``gc.unfreeze`` move every object without passing over any. Where the caller keeps objects
+    frozen (``impactlab._compile_gc.garbage_deferred``) they join them until it hands them back."""
+    caller_froze = gc.get_freeze_count() > 0
+    gc.freeze()
+    if not caller_froze:
+        gc.unfreeze()

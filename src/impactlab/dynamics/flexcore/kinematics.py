@@ -19,7 +19,7 @@ from numba import njit
 
 from impactlab.contact.kernels import P_ESTAR, loading_force, unloading_force
 from impactlab.dynamics.flexcore import layout as F
-from impactlab.dynamics.kernels._jit import njit_internal
+from impactlab.dynamics.kernels._jit import njit_internal, njit_llvm_inline
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -93,9 +93,10 @@ def normal_force(law, p, md, k, delta):
     return unloading_force(p[P_ESTAR], md[k, F.MD_RR], md[k, F.MD_DR], delta)
 
 
-@njit(cache=True, inline="always", error_model="numpy")
+@njit_llvm_inline
 def mobility(c, M, Ja, Jb, ka, kb):
-    """J_a M^-1 J_b^T for row ka of Ja and row kb of Jb [1/kg]."""
+    """J_a M^-1 J_b^T for row ka of Ja and row kb of Jb [1/kg] (compiled once, inlined by LLVM
+    at its five call sites: ``kernels._jit``)."""
     r = Ja[ka, 0] * Jb[kb, 0] / c[F.FC_M] + Ja[ka, 1] * Jb[kb, 1] / c[F.FC_M]
     r += Ja[ka, 2] * Jb[kb, 2] / c[F.FC_I]
     for j in range(M):
@@ -128,7 +129,7 @@ def geometric_energy(Tg, ia, ib, y):
 def mechanical_energy(mdl, y):
     """T + V [J]: kinetic, modal strain (with the geometric term) and gravity from the
     first-touch pose."""
-    _law, _p, c, om, om2, _dmp, _zeta, _Ue, _We, _Pe, Tg, ia, ib, _rhs, _step, _events = mdl
+    _law, _p, c, om, om2, _dmp, _zeta, _Ue, _We, _Pe, Tg, ia, ib = mdl[:13]
     M = om.shape[0]
     iv = 3 + M
     m = c[F.FC_M]

@@ -80,14 +80,14 @@ def model_tuple(
     Psi: np.ndarray,  # noqa: N803 (the modal section rotation, as in ModalBasis)
     geometric: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None,
 ) -> tuple[Any, ...]:
-    """``(law, p, c, om, om2, dmp, zeta, Ue, We, Pe, Tg, ia, ib, rhs, step, events)`` for
+    """``(law, p, c, om, om2, dmp, zeta, Ue, We, Pe, Tg, ia, ib, *addresses)`` for
     ``driver.drop``:
     omega (M,) [rad/s], zeta (M,) damping ratios, U, W, Psi (2, M) modal end values;
     ``geometric``: (T, ia, ib) of ``impactlab.bodies.geometric.geometric_tensor`` or None;
-    ``rhs``, ``step`` and ``events`` the addresses of the right-hand side and of the
-    Dormand-Prince step of the friction model in ``c`` (``indirect``: ``rates_cells`` and
-    ``dp_step_cells`` for partial slip, ``rates`` and ``dp_step`` otherwise) and of the event
-    handler."""
+    the addresses (``address_call.AT_*``): of the right-hand side and of the Dormand-Prince
+    step of the friction model in ``c`` (``indirect``: ``rates_cells`` and ``dp_step_cells``
+    for partial slip, ``rates`` and ``dp_step`` otherwise), of the event handler, the accepted
+    step, the free flight, the outputs and the history row."""
 
     om = _array(omega)
     z = _array(zeta)

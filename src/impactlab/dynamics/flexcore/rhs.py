@@ -15,13 +15,15 @@ An event fires when its function goes from <= 0 to > 0.
 
 from __future__ import annotations
 
+import numpy as np
 from numba import njit
 
 from impactlab.dynamics.flexcore import layout as F
-from impactlab.dynamics.flexcore.address_call import call_rates
+from impactlab.dynamics.flexcore.address_call import AT_RHS, call_rates
 from impactlab.dynamics.flexcore.cells import cell_events, cell_forces, cell_rates
 from impactlab.dynamics.flexcore.friction import friction_event, state_rate, tangential
 from impactlab.dynamics.flexcore.kinematics import end_kinematics, mobility, normal_force
+from impactlab.dynamics.kernels._jit import njit_internal, njit_llvm_inline
 from impactlab.dynamics.kernels.layout import FR_COULOMB
 
 
@@ -128,14 +130,16 @@ def _stick_forces(c, M, md, der, ek, Jt):
     iv = 3 + M
     m = c[F.FC_M]
     ns = 0
-    sk0 = -1
-    sk1 = -1
+    # run-time integers: a literal -1 had numba compile ``mobility`` for it as well, while it
+    # typed the loop below (a signature of its own, never called)
+    sk0 = np.int64(-1)
+    sk1 = np.int64(-1)
     for k in range(F.NE):
         if md[k, F.MD_IN] != 0.0 and md[k, F.MD_FM] == 0.0:
             if ns == 0:
-                sk0 = k
+                sk0 = np.int64(k)
             else:
-                sk1 = k
+                sk1 = np.int64(k)
             ns += 1
     if ns == 0:
         return
@@ -157,13 +161,13 @@ def _stick_forces(c, M, md, der, ek, Jt):
             f0 = -(A00 * a0 + A01 * a1) / tr2
             f1 = -(A01 * a0 + A11 * a1) / tr2
     for t in range(ns):
-        k = sk0 if t == 0 else sk1
+        ks = sk0 if t == 0 else sk1
         f = f0 if t == 0 else f1
-        ek[k, F.EK_FT] = f
+        ek[ks, F.EK_FT] = f
         der[iv] += f / m
-        der[iv + 2] += Jt[k, 2] * f / c[F.FC_I]
+        der[iv + 2] += Jt[ks, 2] * f / c[F.FC_I]
         for j in range(M):
-            der[iv + 3 + j] += Jt[k, 3 + j] * f
+            der[iv + 3 + j] += Jt[ks, 3 + j] * f
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -229,11 +233,11 @@ def _events(law, p, c, md, y, ev, ek, M):
             ev[e0 + F.FEV_FRIC] = friction_event(law, p, c, md, k, y[iqt + k], ek)
 
 
-@njit(cache=True, error_model="numpy")
+@njit_internal
 def rates(law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, y, der, ev, ek, Jn, Jt):
     """Derivative ``der`` and event values ``ev`` at state y in the mode table md; ``ek``
     (F.NE, NEK) receives per end the evaluated quantities (``layout.EK_*``), Jn and Jt the
-    Jacobian rows. The model's arrays one by one (the hot path: see ``evaluate``). Every
+    Jacobian rows. The model's arrays one by one (the hot path: see ``evaluate_model``). Every
     friction model but partial slip (``rates_cells``)."""
     _end_forces(law, p, c, Ue, We, Pe, md, y, ek, Jn, Jt)
     _accelerations(c, om2, dmp, Tg, ia, ib, md, y, der, ek, Jn, Jt)
@@ -243,7 +247,7 @@ def rates(law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, y, der, ev, ek, Jn, J
     _events(law, p, c, md, y, ev, ek, om2.shape[0])
 
 
-@njit(cache=True, error_model="numpy")
+@njit_internal
 def rates_cells(law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, y, der, ev, ek, Jn, Jt):
     """``rates`` for partial slip: the friction forces, rates and events of the cells."""
     _end_forces_cells(law, p, c, Ue, We, Pe, md, y, ek, Jn, Jt)
@@ -256,8 +260,11 @@ def rates_cells(law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, y, der, ev, ek,
         cell_events(c, md, k, ek, ev)
 
 
-@njit(cache=True, inline="always", error_model="numpy")
-def evaluate(mdl, md, y, der, ev, ek, Jn, Jt):
-    """The right-hand side with the model tuple ``mdl`` (package docstring)."""
-    law, p, c, _om, om2, dmp, _zeta, Ue, We, Pe, Tg, ia, ib, rhs, _step, _events = mdl
-    call_rates(rhs, (law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, y, der, ev, ek, Jn, Jt))
+@njit_llvm_inline
+def evaluate_model(mdl, md, y, der, ev, ek, Jn, Jt):
+    """The right-hand side with the model tuple ``mdl`` (package docstring), through its
+    address. Compiled once and inlined by LLVM into its 11 callers (``kernels._jit``): numba
+    inlining it would unpack the model tuple again at each of them."""
+    law, p, c, _om, om2, dmp, _zeta, Ue, We, Pe, Tg, ia, ib = mdl[:13]
+    rhs = mdl[AT_RHS]
+    call_rates(rhs, law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, y, der, ev, ek, Jn, Jt)

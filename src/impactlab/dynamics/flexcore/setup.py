@@ -10,7 +10,8 @@ from numba import njit
 
 from impactlab.contact.kernels import P_ESTAR
 from impactlab.dynamics.flexcore import layout as F
-from impactlab.dynamics.flexcore.cellswitch import touch_cells
+from impactlab.dynamics.flexcore.address_call import AT_CELLS, call_cells
+from impactlab.dynamics.flexcore.cellswitch import CELL_TOUCH
 from impactlab.dynamics.flexcore.contacts import new_dent
 from impactlab.dynamics.flexcore.friction import initial_mode
 from impactlab.dynamics.kernels._jit import njit_internal
@@ -119,14 +120,15 @@ def first_touch(mdl, md, y, vx0, vy0, w0, sv, contacts, dents, cur_con):
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def touch_modes(mdl, md, y, ek, Jn, Jt):
-    """The friction mode (and the partial-slip cells) of end 0 at its first touch; ``ek``,
-    ``Jn``, ``Jt``: evaluated at the state of ``first_touch``."""
+def touch_modes(mdl, md, y, der, ev, ek, Jn, Jt):
+    """The friction mode (and the partial-slip cells, through ``cellswitch.cell_action``'s
+    address) of end 0 at its first touch; ``ek``, ``Jn``, ``Jt``: evaluated at the state of
+    ``first_touch``; ``der``, ``ev``: work arrays."""
     c = mdl[2]
     tip = np.int64(0)  # a run-time integer (``first_touch``)
     initial_mode(mdl[1], c, mdl[3].shape[0], md, tip, ek[0, F.EK_VT], ek[0, F.EK_VN], Jn, Jt)
     if c[F.FC_FRIC] == F.FR_PARTIAL:
-        touch_cells(mdl, md, tip, y, ek)
+        call_cells(mdl[AT_CELLS], np.int64(CELL_TOUCH), tip, mdl, md, y, der, ev, ek, Jn, Jt)
 
 
 @njit(cache=True, inline="always", error_model="numpy")

@@ -20,9 +20,10 @@ import math
 import numpy as np
 from numba import njit
 
-from impactlab.dynamics.flexcore.address_call import call_rates, call_step
+from impactlab.dynamics.flexcore.address_call import AT_RHS, AT_STEP, call_rates, call_step
 from impactlab.dynamics.flexcore.cells import n_active
 from impactlab.dynamics.flexcore.rhs import rates, rates_cells
+from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.buffers import copy_into
 from impactlab.dynamics.kernels.dormand_prince import error_sum, stage_point
 from impactlab.dynamics.kernels.roots import G_ROUNDOFF, THETA_TOL, illinois, past_root
@@ -55,18 +56,18 @@ def dp_step(mdl, md, y, K, h, rtol, sc, st, ynew, ev, ek, Jn, Jt):
     address (``address_call.call_step``), it calls ``rates`` directly (through the address in
     the stage loop, the drop ran 8-10 % slower)."""
     n = y.shape[0]
-    law, p, c, _om, om2, dmp, _zeta, Ue, We, Pe, Tg, ia, ib, _rhs, _step, _events = mdl
+    law, p, c, _om, om2, dmp, _zeta, Ue, We, Pe, Tg, ia, ib = mdl[:13]
     for stage in range(1, 7):
         stage_point(y, K, h, stage, st, n)
         rates(law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, st, K[stage], ev, ek, Jn, Jt)
     return _error_norm(y, K, h, rtol, sc, st, ynew, md, om2.shape[0])
 
 
-@njit(cache=True, error_model="numpy")
+@njit_internal
 def dp_step_cells(mdl, md, y, K, h, rtol, sc, st, ynew, ev, ek, Jn, Jt):
     """``dp_step`` for partial slip (``rates_cells``)."""
     n = y.shape[0]
-    law, p, c, _om, om2, dmp, _zeta, Ue, We, Pe, Tg, ia, ib, _rhs, _step, _events = mdl
+    law, p, c, _om, om2, dmp, _zeta, Ue, We, Pe, Tg, ia, ib = mdl[:13]
     for stage in range(1, 7):
         stage_point(y, K, h, stage, st, n)
         rates_cells(law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, st, K[stage], ev, ek, Jn, Jt)
@@ -89,7 +90,7 @@ def integrate_to(mdl, md, y, k0, H, rtol, sc, out, ev, ek, Jn, Jt):
         last = hh >= (H - done) * (1.0 - 1e-12)
         if last:
             hh = H - done
-        err = call_step(mdl[14], (mdl, md, cur, Ks, hh, rtol, sc, st, out, ev, ek, Jn, Jt))
+        err = call_step(mdl[AT_STEP], mdl, md, cur, Ks, hh, rtol, sc, st, out, ev, ek, Jn, Jt)
         if not (err <= 1.0) and hh > 1e-6 * H:
             hh *= max(0.2, power_growth(err)) if math.isfinite(err) else 0.25
         elif last:
@@ -110,7 +111,8 @@ def locate(jev, g0, g1, mdl, md, y0, h, Q, yt, der, ev, ek, Jn, Jt, shift):
     are the values of g - shift at the ends. As the rigid core's ``integrator.locate``: an
     iterate where g - shift is zero to round-off ends the search, on the far side at once, on
     the near side after a probe just past the root (``past_root``)."""
-    law, p, c, _om, om2, dmp, _zeta, Ue, We, Pe, Tg, ia, ib, rhs, _step, _events = mdl
+    law, p, c, _om, om2, dmp, _zeta, Ue, We, Pe, Tg, ia, ib = mdl[:13]
+    rhs = mdl[AT_RHS]
     a, fa, b, fb, side, prev = 0.0, g0, 1.0, g1, 0, 2.0
     tiny = G_ROUNDOFF * max(-g0, g1)
     for _ in range(100):
@@ -118,7 +120,7 @@ def locate(jev, g0, g1, mdl, md, y0, h, Q, yt, der, ev, ek, Jn, Jt, shift):
         if not (a < th < b):
             th = 0.5 * (a + b)
         dense(y0, h, th, Q, yt, y0.shape[0])
-        call_rates(rhs, (law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, yt, der, ev, ek, Jn, Jt))
+        call_rates(rhs, law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, yt, der, ev, ek, Jn, Jt)
         f = ev[jev] - shift
         if abs(f) <= tiny:
             if f > 0.0:  # past the root by round-off
@@ -127,7 +129,7 @@ def locate(jev, g0, g1, mdl, md, y0, h, Q, yt, der, ev, ek, Jn, Jt, shift):
             if probe < b:
                 dense(y0, h, probe, Q, yt, y0.shape[0])
                 call_rates(
-                    rhs, (law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, yt, der, ev, ek, Jn, Jt)
+                    rhs, law, p, c, om2, dmp, Ue, We, Pe, Tg, ia, ib, md, yt, der, ev, ek, Jn, Jt
                 )
                 fp = ev[jev] - shift
                 if fp > 0.0:

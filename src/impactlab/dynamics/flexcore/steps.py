@@ -8,9 +8,9 @@ import math
 from numba import njit
 
 from impactlab.dynamics.flexcore import layout as F
-from impactlab.dynamics.flexcore.history import record
+from impactlab.dynamics.flexcore.address_call import AT_RECORD, call_record
 from impactlab.dynamics.flexcore.kinematics import mechanical_energy
-from impactlab.dynamics.flexcore.rhs import evaluate
+from impactlab.dynamics.flexcore.rhs import evaluate_model
 from impactlab.dynamics.flexcore.stepper import dense, integrate_to, locate
 from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.buffers import copy_into
@@ -117,8 +117,8 @@ def record_inside(mdl, md, y, t, h, theta, Q, sv, hist, nh, yt, der, ev, ek, Jn,
         if thj >= theta:
             break
         dense(y, h, thj, Q, yt, y.shape[0])
-        evaluate(mdl, md, yt, der, ev, ek, Jn, Jt)
-        hist, nh = record(hist, nh, t + thj * h, mdl, yt, ek, sv[F.SV_E0])
+        evaluate_model(mdl, md, yt, der, ev, ek, Jn, Jt)
+        hist, nh = call_record(mdl[AT_RECORD], hist, nh, t + thj * h, mdl, yt, ek, sv[F.SV_E0])
     return hist, nh
 
 
@@ -154,7 +154,7 @@ def accept(mdl, md, y, t, h, rtol, sc, K, Q, gold, gnew, ynew, yev, sv, contacts
     if record_on:
         hist, nh = record_inside(mdl, md, y, t, h, theta, Q, sv, hist, nh, yt, der, ev, ek, Jn, Jt)
     if fired or record_on:
-        evaluate(mdl, md, yev, der, ev, ek, Jn, Jt)
+        evaluate_model(mdl, md, yev, der, ev, ek, Jn, Jt)
     if not step_stats(mdl, md, t, tend, sv, contacts, dents, cur_con, ek):
         sv[F.SV_STATUS] = F.ST_NAN
         return False, jev, tend, hist, nh
