@@ -30,7 +30,7 @@ PARTS: tuple[tuple[str, str, int], ...] = (
     ("impactlab.dynamics.slipcore", "the partial-slip impact engine", 20),
     ("impactlab.dynamics.flexcore.batch", "the flexible-rod drop batch", 30),
     ("impactlab.dynamics.slip_batch", "the partial-slip batch engine", 20),
-    ("impactlab.dynamics.flexcore", "the flexible-rod drop engine", 30),
+    ("impactlab.dynamics.flexcore", "the flexible-rod drop engine", 25),
     ("impactlab.dynamics.core.batch", "the parallel batch engine", 20),
     ("impactlab.dynamics.core", "the impact engine", 25),
     ("impactlab.dynamics.kernels", "the engine's shared kernels", 5),

@@ -2,7 +2,7 @@
 
 ``call_rates(address, *args)``, ``call_step``, ``call_events``, ``call_accept``, ``call_coast``,
 ``call_outputs``, ``call_record`` and ``call_cells`` call the function at ``address`` (an int64:
-the entry point of a compiled ``rhs.rates`` / ``rhs.rates_cells``, ``stepper.dp_step`` /
+the entry point of a compiled ``rhs.rates`` / ``rhs.rates_cells``, ``stepper.dp_step_rates`` /
 ``stepper.dp_step_cells``, ``events.handle_events``, ``steps.accept``, ``coast.out_of_contact``,
 ``results.fill_outputs``, ``history.history_row``, ``cellswitch.cell_action``), in numba's own
 calling convention (as numba's first-class function type calls a jit function), with the
@@ -50,8 +50,8 @@ RATES_SIGNATURE = types.none(
     types.int64, _F1, _F1, _F1, _F1, _F2, _F2, _F2, _F3, _I1, _I1, _F2, _F1, _F1, _F1, _F2,
     _F2, _F2,
 )  # fmt: skip
-#: ``stepper.dp_step`` and ``stepper.dp_step_cells``: mdl, md, y, K, h, rtol, sc, st, ynew, ev,
-#: ek, Jn, Jt; the error norm.
+#: ``stepper.dp_step_rates`` and ``stepper.dp_step_cells``: mdl, md, y, K, h, rtol, sc, st,
+#: ynew, ev, ek, Jn, Jt; the error norm.
 STEP_SIGNATURE = types.float64(
     MODEL, _F2, _F1, _F2, types.float64, types.float64, _F1, _F1, _F1, _F1, _F2, _F2, _F2
 )

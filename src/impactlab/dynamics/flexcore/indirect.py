@@ -5,7 +5,7 @@ numba links the code of every compiled function a function calls into that funct
 and optimises and generates machine code for it again there: ``rhs.rates`` was generated again
 in the libraries of the step, the acceptance of a step, the event handler and the drop.
 Called through their addresses instead (``address_call``: the model tuple carries them as
-int64), ``rates``, ``stepper.dp_step``, ``events.handle_events``, ``steps.accept``,
+int64), ``rates``, ``stepper.dp_step_rates``, ``events.handle_events``, ``steps.accept``,
 ``coast.out_of_contact``, ``results.fill_outputs`` and ``history.history_row`` are generated
 once each (``rates`` twice: the step's stage loop calls it directly, for speed), and a drop without
 partial slip never compiles the cells' right-hand side and step (``rhs.rates_cells``,
@@ -31,15 +31,15 @@ from impactlab.dynamics.flexcore.address_call import (
     OUTPUTS_SIGNATURE,
     RATES_SIGNATURE,
     RECORD_SIGNATURE,
-    STEP_SIGNATURE,
 )
+from impactlab.dynamics.flexcore.address_call import STEP_SIGNATURE as STEP
 from impactlab.dynamics.flexcore.cellswitch import cell_action
 from impactlab.dynamics.flexcore.coast import out_of_contact
 from impactlab.dynamics.flexcore.events import handle_events
 from impactlab.dynamics.flexcore.history import history_row
 from impactlab.dynamics.flexcore.results import fill_outputs
 from impactlab.dynamics.flexcore.rhs import rates, rates_cells
-from impactlab.dynamics.flexcore.stepper import dp_step, dp_step_cells
+from impactlab.dynamics.flexcore.stepper import dp_step_cells, dp_step_rates
 from impactlab.dynamics.flexcore.steps import accept
 
 _ADDRESSES: dict[bool, tuple[int, ...]] = {}
@@ -47,18 +47,18 @@ _ADDRESSES: dict[bool, tuple[int, ...]] = {}
 
 def addresses(partial_slip: bool) -> tuple[int, ...]:
     """The entry points (``address_call.AT_*``) of the right-hand side and of the step
-    (``rates_cells`` and ``dp_step_cells`` for partial slip, else ``rates`` and ``dp_step``),
-    of the event handler, the accepted step, the free flight, the outputs and the history row,
-    and of the cell switches (``cellswitch.cell_action``; 0 without partial slip: never
-    called, never compiled): compiled, or loaded from the cache, on first use, then kept for
-    the process."""
+    (``rates_cells`` and ``dp_step_cells`` for partial slip, else ``rates`` and
+    ``dp_step_rates``), of the event handler, the accepted step, the free flight, the outputs
+    and the history row, and of the cell switches (``cellswitch.cell_action``; 0 without
+    partial slip: never called, never compiled): compiled, or loaded from the cache, on first
+    use, then kept for the process."""
     if partial_slip not in _ADDRESSES:
         collecting = gc.isenabled()
         gc.disable()  # not collected after each compilation (``impactlab._compile_gc``): below
         try:
             _ADDRESSES[partial_slip] = (
                 int(_get_jit_address(rates_cells if partial_slip else rates, RATES_SIGNATURE)),
-                int(_get_jit_address(dp_step_cells if partial_slip else dp_step, STEP_SIGNATURE)),
+                int(_get_jit_address(dp_step_cells if partial_slip else dp_step_rates, STEP)),
                 int(_get_jit_address(handle_events, EVENTS_SIGNATURE)),
                 int(_get_jit_address(accept, ACCEPT_SIGNATURE)),
                 int(_get_jit_address(out_of_contact, COAST_SIGNATURE)),

@@ -86,7 +86,7 @@ def model_tuple(
     ``geometric``: (T, ia, ib) of ``impactlab.bodies.geometric.geometric_tensor`` or None;
     the addresses (``address_call.AT_*``): of the right-hand side and of the Dormand-Prince
     step of the friction model in ``c`` (``indirect``: ``rates_cells`` and ``dp_step_cells``
-    for partial slip, ``rates`` and ``dp_step`` otherwise), of the event handler, the accepted
+    for partial slip, ``rates`` and ``dp_step_rates`` otherwise), of the event handler, the accepted
     step, the free flight, the outputs and the history row."""
 
     om = _array(omega)

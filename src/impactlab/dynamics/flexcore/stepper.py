@@ -47,8 +47,8 @@ def _error_norm(y, K, h, rtol, sc, st, ynew, md, M):
     return math.sqrt(error_sum(y, ynew, K, h, rtol, sc, n) / n_active(md, n, M))
 
 
-@njit(cache=True, error_model="numpy")
-def dp_step(mdl, md, y, K, h, rtol, sc, st, ynew, ev, ek, Jn, Jt):
+@njit_internal
+def dp_step_rates(mdl, md, y, K, h, rtol, sc, st, ynew, ev, ek, Jn, Jt):
     """One Dormand-Prince step of size h from y (K[0] = f(y)): fills K[1..6], ``ynew`` (5th
     order) and ``ev``/``ek`` at ynew; returns the scaled RMS error norm (error scale of
     component i: rtol (sc[i] + max(|y_i|, |ynew_i|)); partial-slip cells out of contact do
@@ -65,7 +65,7 @@ def dp_step(mdl, md, y, K, h, rtol, sc, st, ynew, ev, ek, Jn, Jt):
 
 @njit_internal
 def dp_step_cells(mdl, md, y, K, h, rtol, sc, st, ynew, ev, ek, Jn, Jt):
-    """``dp_step`` for partial slip (``rates_cells``)."""
+    """``dp_step_rates`` for partial slip (``rates_cells``)."""
     n = y.shape[0]
     law, p, c, _om, om2, dmp, _zeta, Ue, We, Pe, Tg, ia, ib = mdl[:13]
     for stage in range(1, 7):
