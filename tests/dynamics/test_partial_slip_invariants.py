@@ -18,7 +18,7 @@ from impactlab.dynamics.checks import check_impact
 from impactlab.dynamics.kernels import layout as L
 from impactlab.dynamics.models import body_params, kernel_params
 from impactlab.dynamics.partial_slip import largest_radius
-from impactlab.dynamics.slipcore import impact_slip
+from impactlab.dynamics.slipcore import impact_slip, slip_addresses
 from impactlab.flags import ResultFlag
 from impactlab.friction import (
     BATCH_FRICTION_IDS,
@@ -48,7 +48,7 @@ def _raw(body, law, vel, mu=0.3, gstar=1.0, n_cells=16, angle=None, gravity=0.0)
     out = np.empty(L.N_OUT)
     st, hist, nh, jump = impact_slip(
         x.model.law_id, kernel_params(x.model), bp, x.angle, vel[0], vel[1], 0.0, mu,
-        x.gravity, False, x.rtol, True, True, n_cells, a_est, out,
+        x.gravity, False, x.rtol, True, True, n_cells, a_est, out, slip_addresses(),
     )  # fmt: skip
     return int(st), out, hist[:nh], jump
 

@@ -17,6 +17,7 @@ from typing import Any
 import numba
 import numpy as np
 
+from impactlab._compile_notice import one_line
 from impactlab._validation import check_array
 from impactlab.bodies import NB
 from impactlab.contact.kernels import N_LAWS, NPARAM, param_length
@@ -27,6 +28,7 @@ from impactlab.dynamics.core.batch import impact_batch
 from impactlab.dynamics.kernels.layout import N_OUT, OUTPUT_FIELDS, PARTIAL_SLIP_RTOL
 from impactlab.dynamics.kernels.status import REGIME_NAMES, STATUS_MESSAGES
 from impactlab.dynamics.slip_batch import slip_batch
+from impactlab.dynamics.slipcore import slip_addresses
 from impactlab.friction import BATCH_FRICTION_IDS, FRICTION_IDS, PARTIAL_SLIP, PARTIAL_SLIP_CELLS
 
 __all__ = [
@@ -126,10 +128,11 @@ def run_arrays(
     out = np.empty((n, N_OUT))
     status = np.empty(n, dtype=np.int32)
     if n and fid == PARTIAL_SLIP:
-        slip_batch(
-            numba.get_num_threads(), lid, lp, bp, init, mu_a, g, bool(constant_angle), r,
-            bool(diagnostics), PARTIAL_SLIP_CELLS, out, status,
-        )  # fmt: skip
+        with one_line():  # a first batch compiles the addresses' functions, then the batch
+            slip_batch(
+                numba.get_num_threads(), lid, lp, bp, init, mu_a, g, bool(constant_angle), r,
+                bool(diagnostics), PARTIAL_SLIP_CELLS, out, status, slip_addresses(),
+            )  # fmt: skip
         _mark_extrapolated(lid, lp, out)
     elif n:
         impact_batch(

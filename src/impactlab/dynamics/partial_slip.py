@@ -16,6 +16,7 @@ import math
 
 import numpy as np
 
+from impactlab._compile_notice import one_line
 from impactlab.contact.history_kernels import loading_contact_radius
 from impactlab.dynamics.checks import ImpactInputs
 from impactlab.dynamics.core.driver import impact
@@ -25,7 +26,7 @@ from impactlab.dynamics.models import body_params, kernel_params
 from impactlab.dynamics.outcome import impact_result, status_error
 from impactlab.dynamics.results import ImpactResult
 from impactlab.dynamics.slip_batch import RADIUS_MARGIN, prepass_friction
-from impactlab.dynamics.slipcore import impact_slip
+from impactlab.dynamics.slipcore import impact_slip, slip_addresses
 from impactlab.friction import COULOMB, PARTIAL_SLIP_CELLS
 
 __all__ = ["run_partial_slip"]
@@ -67,10 +68,11 @@ def run_partial_slip(
     status, a_est = largest_radius(x)
     if status != S.ST_OK:
         return status, out, None
-    status, hist, nh, _jump = impact_slip(
-        law, p, bp, x.angle, vx, vy, x.spin, x.mu, x.gravity, x.constant_angle, x.rtol, history,
-        False, n_cells, a_est, out,
-    )  # fmt: skip
+    with one_line():  # a first impact compiles the addresses' functions, then the impact
+        status, hist, nh, _jump = impact_slip(
+            law, p, bp, x.angle, vx, vy, x.spin, x.mu, x.gravity, x.constant_angle, x.rtol,
+            history, False, n_cells, a_est, out, slip_addresses(),
+        )  # fmt: skip
     return int(status), out, (hist[:nh] if history else None)
 
 

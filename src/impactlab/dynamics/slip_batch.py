@@ -62,10 +62,10 @@ def slip_estimate(law, p, bp, th0, vx0, vy0, w0, mu, g, const_angle, rtol, diag,
 
 
 @njit(cache=True, error_model="numpy")
-def slip_case(law, p, bp, th0, vx0, vy0, w0, mu, g, const_angle, rtol, diag, n_cells, out):
+def slip_case(law, p, bp, th0, vx0, vy0, w0, mu, g, const_angle, rtol, diag, n_cells, out, at):
     """One partial-slip impact without history into ``out`` (the outputs of
     ``impactlab.dynamics.core.impact``); ``n_cells`` cells over the estimated largest contact
-    radius. Returns the status."""
+    radius; ``at``: the engine's addresses (``slipcore.slip_addresses``). Returns the status."""
     if not (mu >= 0.0):  # NaN or negative: refused, as by simulate's checks
         for i in range(out.shape[0]):
             out[i] = math.nan
@@ -76,13 +76,15 @@ def slip_case(law, p, bp, th0, vx0, vy0, w0, mu, g, const_angle, rtol, diag, n_c
     no_history = out.shape[0] < 0  # False, as a value: simulate's signature (slip_estimate)
     st, _h, _n, _jump = impact_slip(
         law, p, bp, th0, vx0, vy0, w0, mu, g, const_angle, rtol, no_history, diag, n_cells,
-        a_est, out,
+        a_est, out, at,
     )  # fmt: skip
     return st
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def slip_batch(threads, law, lp, bpa, init, mu, g, const_angle, rtol, diag, n_cells, out, status):
+def slip_batch(
+    threads, law, lp, bpa, init, mu, g, const_angle, rtol, diag, n_cells, out, status, at
+):
     """``init.shape[0]`` partial-slip impacts in parallel on ``threads`` loops (the arguments of
     ``core.batch.impact_batch`` without the friction id, plus ``n_cells``): each thread takes
     the next block of ``BLOCK`` cases from a shared counter, in a scattered order."""
@@ -103,5 +105,5 @@ def slip_batch(threads, law, lp, bpa, init, mu, g, const_angle, rtol, diag, n_ce
                 bi = bpa[0] if shared_b else bpa[i]
                 status[i] = slip_case(
                     law, pi, bi, init[i, 0], init[i, 1], init[i, 2], init[i, 3], mu[i], g,
-                    const_angle, rtol, diag, n_cells, out[i],
+                    const_angle, rtol, diag, n_cells, out[i], at,
                 )  # fmt: skip

@@ -5,13 +5,10 @@
 the entry point of a compiled ``rhs.rates`` / ``rhs.rates_cells``, ``stepper.dp_step_rates`` /
 ``stepper.dp_step_cells``, ``events.handle_events``, ``steps.accept``, ``coast.out_of_contact``,
 ``results.fill_outputs``, ``history.history_row``, ``cellswitch.cell_action``), in numba's own
-calling convention (as numba's first-class function type calls a jit function), with the
-arguments that follow the address: ``call_step(mdl[AT_STEP], mdl, md, y, ...)``. The callee is
-not linked into the caller's library: its machine code is generated once. The argument types
-must be the signature's exactly (checked when the caller is compiled). The arguments are passed
-as numba passes them to any call, borrowed: packed in a tuple instead, every array in it (the
-model tuple's too) was counted in and out of the tuple at each call, some 60 atomic
-reference-count updates per step. The model tuple carries the addresses at the indices
+calling convention, with the arguments that follow the address (``kernels.address_call``):
+``call_step(mdl[AT_STEP], mdl, md, y, ...)``. Packed in a tuple instead, every array in the
+arguments (the model tuple's too) was counted in and out of the tuple at each call, some 60
+atomic reference-count updates per step. The model tuple carries the addresses at the indices
 ``AT_*``.
 """
 
@@ -21,9 +18,9 @@ from collections.abc import Callable
 from typing import Any
 
 from numba import types
-from numba.core import cgutils
-from numba.core.errors import TypingError
 from numba.extending import intrinsic
+
+from impactlab.dynamics.kernels.address_call import typed_call
 
 _F1 = types.float64[::1]
 _F2 = types.float64[:, ::1]
@@ -86,67 +83,46 @@ RECORD_SIGNATURE = types.Tuple((_F2, types.int64))(
 CELLS_SIGNATURE = types.boolean(types.int64, types.int64, MODEL, _F2, _F1, _F1, _F1, _F2, _F2, _F2)
 
 
-def _typed_call(name: str, sig: Any, address: Any, args: tuple[Any, ...]) -> Any:
-    """The signature and code generator of a call through ``address`` for ``sig`` (``args``:
-    the argument types after the address, received by numba as a ``StarArgTuple``)."""
-    if not isinstance(address, types.Integer):
-        return None
-    if tuple(args) != tuple(sig.args):
-        raise TypingError(f"{name}: arguments {args} are not {sig.args}")
-    argtys = tuple(sig.args)
-
-    def codegen(context: Any, builder: Any, signature: Any, llargs: Any) -> Any:
-        fnty = context.call_conv.get_function_type(sig.return_type, argtys)
-        fptr = builder.inttoptr(llargs[0], fnty.as_pointer())
-        vals = cgutils.unpack_tuple(builder, llargs[1], len(argtys))
-        status, res = context.call_conv.call_function(builder, fptr, sig.return_type, argtys, vals)
-        with cgutils.if_unlikely(builder, status.is_error):
-            context.call_conv.return_status_propagate(builder, status)
-        return res if sig.return_type != types.none else context.get_dummy_value()
-
-    return sig.return_type(address, types.StarArgTuple.from_types(argtys)), codegen
-
-
 def _call_rates(typingctx: Any, address: Any, *args: Any) -> Any:
     """Call the right-hand side at ``address`` (int64) with ``args``."""
-    return _typed_call("call_rates", RATES_SIGNATURE, address, args)
+    return typed_call("call_rates", RATES_SIGNATURE, address, args)
 
 
 def _call_step(typingctx: Any, address: Any, *args: Any) -> Any:
     """Call the Dormand-Prince step at ``address`` (int64) with ``args``; returns
     its error norm."""
-    return _typed_call("call_step", STEP_SIGNATURE, address, args)
+    return typed_call("call_step", STEP_SIGNATURE, address, args)
 
 
 def _call_events(typingctx: Any, address: Any, *args: Any) -> Any:
     """Call the event handler at ``address`` (int64) with ``args``; returns its
     success."""
-    return _typed_call("call_events", EVENTS_SIGNATURE, address, args)
+    return typed_call("call_events", EVENTS_SIGNATURE, address, args)
 
 
 def _call_accept(typingctx: Any, address: Any, *args: Any) -> Any:
     """Call the accepted step at ``address`` (int64) with ``args``."""
-    return _typed_call("call_accept", ACCEPT_SIGNATURE, address, args)
+    return typed_call("call_accept", ACCEPT_SIGNATURE, address, args)
 
 
 def _call_coast(typingctx: Any, address: Any, *args: Any) -> Any:
     """Call the free-flight test and jump at ``address`` (int64) with ``args``."""
-    return _typed_call("call_coast", COAST_SIGNATURE, address, args)
+    return typed_call("call_coast", COAST_SIGNATURE, address, args)
 
 
 def _call_outputs(typingctx: Any, address: Any, *args: Any) -> Any:
     """Call the outputs at ``address`` (int64) with ``args``."""
-    return _typed_call("call_outputs", OUTPUTS_SIGNATURE, address, args)
+    return typed_call("call_outputs", OUTPUTS_SIGNATURE, address, args)
 
 
 def _call_record(typingctx: Any, address: Any, *args: Any) -> Any:
     """Call the history row at ``address`` (int64) with ``args``."""
-    return _typed_call("call_record", RECORD_SIGNATURE, address, args)
+    return typed_call("call_record", RECORD_SIGNATURE, address, args)
 
 
 def _call_cells(typingctx: Any, address: Any, *args: Any) -> Any:
     """Call partial slip's cell switches at ``address`` (int64) with ``args``."""
-    return _typed_call("call_cells", CELLS_SIGNATURE, address, args)
+    return typed_call("call_cells", CELLS_SIGNATURE, address, args)
 
 
 #: The intrinsics (typed for mypy as plain callables: compiled code calls them as

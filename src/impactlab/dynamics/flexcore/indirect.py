@@ -16,10 +16,6 @@ from the cache.
 
 from __future__ import annotations
 
-import gc
-
-from numba.experimental.function_type import _get_jit_address
-
 from impactlab.dynamics.flexcore.address_call import (
     ACCEPT_SIGNATURE,
     AT_CELLS,
@@ -41,6 +37,7 @@ from impactlab.dynamics.flexcore.results import fill_outputs
 from impactlab.dynamics.flexcore.rhs import rates, rates_cells
 from impactlab.dynamics.flexcore.stepper import dp_step_cells, dp_step_rates
 from impactlab.dynamics.flexcore.steps import accept
+from impactlab.dynamics.kernels.address_call import compiled_addresses
 
 _ADDRESSES: dict[bool, tuple[int, ...]] = {}
 
@@ -53,23 +50,19 @@ def addresses(partial_slip: bool) -> tuple[int, ...]:
     partial slip: never called, never compiled): compiled, or loaded from the cache, on first
     use, then kept for the process."""
     if partial_slip not in _ADDRESSES:
-        collecting = gc.isenabled()
-        gc.disable()  # not collected after each compilation (``impactlab._compile_gc``): below
-        try:
-            _ADDRESSES[partial_slip] = (
-                int(_get_jit_address(rates_cells if partial_slip else rates, RATES_SIGNATURE)),
-                int(_get_jit_address(dp_step_cells if partial_slip else dp_step_rates, STEP)),
-                int(_get_jit_address(handle_events, EVENTS_SIGNATURE)),
-                int(_get_jit_address(accept, ACCEPT_SIGNATURE)),
-                int(_get_jit_address(out_of_contact, COAST_SIGNATURE)),
-                int(_get_jit_address(fill_outputs, OUTPUTS_SIGNATURE)),
-                int(_get_jit_address(history_row, RECORD_SIGNATURE)),
-                int(_get_jit_address(cell_action, CELLS_SIGNATURE)) if partial_slip else 0,
-            )
-        finally:
-            if collecting:
-                _to_oldest_generation()
-                gc.enable()
+        functions = [
+            (rates_cells if partial_slip else rates, RATES_SIGNATURE),
+            (dp_step_cells if partial_slip else dp_step_rates, STEP),
+            (handle_events, EVENTS_SIGNATURE),
+            (accept, ACCEPT_SIGNATURE),
+            (out_of_contact, COAST_SIGNATURE),
+            (fill_outputs, OUTPUTS_SIGNATURE),
+            (history_row, RECORD_SIGNATURE),
+        ]
+        if partial_slip:
+            functions.append((cell_action, CELLS_SIGNATURE))
+        found = compiled_addresses(functions)
+        _ADDRESSES[partial_slip] = found if partial_slip else (*found, 0)
     return _ADDRESSES[partial_slip]
 
 
@@ -79,16 +72,3 @@ def batch_addresses(partial_slip: bool) -> tuple[int, int, int]:
     never called)."""
     a = addresses(partial_slip)
     return a[AT_RHS - AT_RHS], a[AT_STEP - AT_RHS], a[AT_CELLS - AT_RHS]
-
-
-def _to_oldest_generation() -> None:
-    """Hand the objects of the compilations just made (numba keeps most of them alive) to the
-    collector's oldest generation, where its next full pass finds their garbage: the next
-    collection of the youngest generation would otherwise pass over every one of them (0.7 s
-    of CPU after a first drop's compile, rigid engine cached). ``gc.freeze`` and
-    ``gc.unfreeze`` move every object without passing over any. Where the caller keeps objects
-    frozen (``impactlab._compile_gc.garbage_deferred``) they join them until it hands them back."""
-    caller_froze = gc.get_freeze_count() > 0
-    gc.freeze()
-    if not caller_froze:
-        gc.unfreeze()

@@ -70,6 +70,14 @@ def njit_internal(fn: _F) -> _F:
     return njit(cache=True, error_model="numpy", **_NO_WRAPPERS)(fn)  # type: ignore[no-any-return]
 
 
+def njit_leaf(fn: _F) -> _F:
+    """``njit(cache=True, error_model="numpy")`` without wrappers or reference counting, for a
+    function that only compiled code calls, through its address (``address_call``), and that
+    creates no arrays (views of its arguments are none of its own; see module)."""
+    opts = {**_NO_WRAPPERS, **_NO_REFCOUNT}
+    return njit(cache=True, error_model="numpy", **opts)(fn)  # type: ignore[no-any-return]
+
+
 def njit_llvm_inline(fn: _F) -> _F:
     """``njit(cache=True, error_model="numpy")`` compiled once, inlined by LLVM into every
     caller; without wrappers or reference counting (see module)."""

@@ -14,13 +14,15 @@ and verification are in docs/verification/index.md ("Partial slip").
 Modules, lowest first: ``layout`` (parameter and event indices, defaults), ``model``
 (right-hand side, event functions), ``sums`` (the Dormand-Prince sums over the entries in
 use), ``stepper`` (Dormand-Prince on arrays, event location),
-``switches`` (births, releases, stick/slip, settle), ``outputs`` (bookkeeping, history,
-results), ``driver`` (``impact_slip``).
+``address_call`` (calls through addresses), ``switches`` (births, releases, stick/slip,
+settle), ``outputs`` (bookkeeping, history, results), ``restart`` (the switch at an event),
+``indirect`` (the addresses, read in Python), ``driver`` (``impact_slip``).
 """
 
 from __future__ import annotations
 
 from impactlab.dynamics.kernels.cells import N_CELLS
 from impactlab.dynamics.slipcore.driver import impact_slip
+from impactlab.dynamics.slipcore.indirect import addresses as slip_addresses
 
-__all__ = ["N_CELLS", "impact_slip"]
+__all__ = ["N_CELLS", "impact_slip", "slip_addresses"]

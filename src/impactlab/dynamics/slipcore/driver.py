@@ -29,23 +29,14 @@ from impactlab.dynamics.kernels.layout import (
     A_EMIN,
     A_FMAX,
     A_TMAX,
-    A_WCOMP,
-    A_WMARK,
-    A_WREST,
     C_A0,
     C_B0,
     C_GS,
     C_I,
     C_M,
-    C_MU,
     C_R,
-    EV_LIMIT,
-    EV_SEP,
-    EV_SWITCH,
-    EV_VN,
     FR_COULOMB,
     FR_MINDLIN,
-    M_COMP,
     MAX_EVENTS,
     MAX_STEPS,
     NH,
@@ -60,12 +51,10 @@ from impactlab.dynamics.kernels.layout import (
     S_SPIN,
     S_VX,
     S_VY,
-    S_WORK,
 )
 from impactlab.dynamics.kernels.setup import check_inputs, constants, error_scales
 from impactlab.dynamics.kernels.status import (
     ST_BAD_INPUT,
-    ST_LAW_LIMIT,
     ST_NAN,
     ST_NO_SEPARATION,
     ST_NOT_APPROACHING,
@@ -74,75 +63,31 @@ from impactlab.dynamics.kernels.status import (
     ST_TOO_MANY_EVENTS,
 )
 from impactlab.dynamics.kernels.step_control import power_growth
-from impactlab.dynamics.kernels.transitions import without_switch
+from impactlab.dynamics.slipcore.address_call import (
+    AT_FIRST_EVENT,
+    AT_INTEGRATE_TO,
+    AT_RECORD,
+    AT_ROWS,
+    AT_STEP,
+    AT_SWITCH,
+    call_first_event,
+    call_integrate_to,
+    call_record,
+    call_rows,
+    call_step,
+    call_switch,
+)
 from impactlab.dynamics.slipcore.layout import CP_FSC, EXTRA, G_CELL, NCP, Y_CELL
 from impactlab.dynamics.slipcore.model import (
     BOUNDARY_PAST,
     boundary_horizon,
-    derivative,
     evaluate,
     events,
 )
-from impactlab.dynamics.slipcore.outputs import A_JUMP, NA, record, separation, track
-from impactlab.dynamics.slipcore.stepper import (
-    first_event,
-    integrate_to,
-    slip_rhs,
-    step,
-)
-from impactlab.dynamics.slipcore.sums import dense_rows_t
-from impactlab.dynamics.slipcore.switches import (
-    apply_cell_event,
-    normal_switch,
-    release_passed,
-    settle,
-)
-
-_GO_ON = -1
-
-
-@njit_internal
-def _normal_event(k, law, p, c, md, y, ev, acc):
-    """(status or _GO_ON, constants, mode) after the normal event ``k``, with the bookkeeping of
-    the normal work of compression and restitution."""
-    if k == EV_SEP:
-        acc[A_WREST] += y[S_WORK] - acc[A_WMARK]
-        return ST_OK, c, md
-    if k == EV_LIMIT:
-        return ST_LAW_LIMIT, c, md
-    if k == EV_SWITCH:
-        return _GO_ON, without_switch(c), md
-    if k == EV_VN:
-        if md[M_COMP] != 0.0:
-            acc[A_WCOMP] += y[S_WORK] - acc[A_WMARK]
-        else:
-            acc[A_WREST] += y[S_WORK] - acc[A_WMARK]
-        acc[A_WMARK] = y[S_WORK]
-    st, md = normal_switch(k, law, p, md, ev[0])
-    return (_GO_ON if st == ST_OK else st), c, md
-
-
-@njit_internal
-def _switch(k, law, p, c, md, y, cm, sg, cp, W, ev, acc, K, gold):
-    """Stop at the event ``k`` or switch and restart at ``y`` (its quantities ``ev``, ``W``
-    filled there; derivative into ``K[0]``, event functions into ``gold``). Returns (status or
-    _GO_ON, constants, mode)."""
-    ft_before = ev[4]
-    if k <= EV_SWITCH:
-        st, c, md = _normal_event(k, law, p, c, md, y, ev, acc)
-        if st != _GO_ON:
-            return st, c, md
-    else:
-        apply_cell_event(k, y, cm, sg, cp, c[C_MU], p[P_ESTAR], W, ev)
-    settled, ev = settle(law, p, c, md, y, cm, sg, cp, W, c[C_MU])
-    if not settled:
-        return ST_TOO_MANY_EVENTS, c, md
-    derivative(c, y, W, ev, K[0])  # rhs at y: ev and W are those at y
-    acc[A_JUMP] = max(acc[A_JUMP], abs(ev[4] - ft_before))
-    events(c, md, cm, sg, cp, W, ev, gold)
-    if gold[EV_SEP] > 0.0:  # a switch located at the separation itself: that is the end
-        return _normal_event(np.int64(EV_SEP), law, p, c, md, y, ev, acc)
-    return _GO_ON, c, md
+from impactlab.dynamics.slipcore.outputs import A_JUMP, NA, separation, track
+from impactlab.dynamics.slipcore.restart import GO_ON
+from impactlab.dynamics.slipcore.stepper import slip_rhs
+from impactlab.dynamics.slipcore.switches import release_passed
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -154,20 +99,8 @@ def copy_active(dst, src, n):
         dst[i] = src[i]
 
 
-@njit_internal
-def _dense_rows(hist, nh, t, h, theta, law, p, c, md, y, cm, sg, cp, W, Q, yt):
-    """History rows at a quarter, half and three quarters of the step from ``y`` (size ``h``,
-    dense-output coefficients ``Q``) that lie before ``theta``; returns (hist, rows)."""
-    nact = Y_CELL + n_in(cm)
-    for j in range(1, 4):
-        if j / 4.0 < theta:
-            dense_rows_t(y, h, j / 4.0, Q, yt, nact)
-            hist, nh = record(hist, nh, t + j * h / 4.0, law, p, c, md, yt, cm, sg, cp, W)
-    return hist, nh
-
-
 @njit(cache=True, inline="always", error_model="numpy")
-def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, acc):
+def _integrate(at, law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, acc):
     """The step loop from first touch to separation, a failure or MAX_STEPS.
     Returns (status, t, steps, mode, history, rows)."""
     n = y.shape[0]
@@ -184,7 +117,7 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
     events(c, md, cm, sg, cp, W, ev, gold)
     nh = np.int64(0)  # not a literal: record() is compiled once, for any row count
     if rec:
-        hist, nh = record(hist, nh, t, law, p, c, md, y, cm, sg, cp, W)
+        hist, nh = call_record(at[AT_RECORD], hist, nh, t, law, p, c, md, y, cm, sg, cp, W)
     nsteps, nevents, status = 0, 0, ST_NO_SEPARATION
     ar0, ad0 = ev[7], ev[8]  # contact radius [m] and its rate [m/s] at t
     t_last, ad_last = -1.0, 0.0  # the last accepted step's start and the radius rate there
@@ -196,7 +129,7 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
         hz = boundary_horizon(cm, cp, ar0, ad0, add)
         past = BOUNDARY_PAST if ad0 > 0.0 else STEP_PAST  # a birth ahead, or a release
         h = min(hc, tstar, past * hz + hmin) if hz > 0.0 else min(hc, tstar)
-        err, ev = step(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew, q)
+        err, ev = call_step(at[AT_STEP], law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew, q)
         nact = Y_CELL + n_in(cm)  # the entries in use: the rigid-body state, the cells in contact
         if not (err <= 1.0):
             rejected = True
@@ -205,15 +138,51 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
                 status = ST_NAN if not math.isfinite(err) else ST_STEP_UNDERFLOW
                 break
             continue
-        k, theta = first_event(
-            gold, gnew, gmid, law, p, c, md, y, K, Q, h, cm, sg, cp, W, ev, Wm, yt
+        k, theta = call_first_event(
+            at[AT_FIRST_EVENT],
+            gold,
+            gnew,
+            gmid,
+            law,
+            p,
+            c,
+            md,
+            y,
+            K,
+            Q,
+            h,
+            cm,
+            sg,
+            cp,
+            W,
+            ev,
+            Wm,
+            yt,
         )
         if rec:
-            hist, nh = _dense_rows(hist, nh, t, h, theta, law, p, c, md, y, cm, sg, cp, W, Q, yt)
+            hist, nh = call_rows(
+                at[AT_ROWS], hist, nh, t, h, theta, law, p, c, md, y, cm, sg, cp, W, Q, yt
+            )
         if k >= 0:  # the state at the event, integrated anew (the dense output is 4th order)
             # ev and W: the quantities at yev, from the last stage of the last step (FSAL)
-            n_re, ev = integrate_to(
-                law, p, c, md, y, cm, sg, cp, W, K[0], theta * h, rtol, sc, yev, R
+            n_re, ev = call_integrate_to(
+                at[AT_INTEGRATE_TO],
+                at[AT_STEP],
+                law,
+                p,
+                c,
+                md,
+                y,
+                cm,
+                sg,
+                cp,
+                W,
+                K[0],
+                theta * h,
+                rtol,
+                sc,
+                yev,
+                R,
             )
             nsteps += n_re
             tend = t + theta * h
@@ -235,7 +204,7 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
         hc = h * (grow if err == 0.0 else min(grow, power_growth(err)))
         rejected = False
         if rec and k < 0:
-            hist, nh = record(hist, nh, t, law, p, c, md, y, cm, sg, cp, W)
+            hist, nh = call_record(at[AT_RECORD], hist, nh, t, law, p, c, md, y, cm, sg, cp, W)
         if k < 0:
             copy_active(K[0], K[6], nact)
             if release_passed(y, cm, cp, ev[7], K[0]):
@@ -248,10 +217,10 @@ def _integrate(law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, hist, a
         if nevents > MAX_EVENTS:
             status = ST_TOO_MANY_EVENTS
             break
-        st, c, md = _switch(k, law, p, c, md, y, cm, sg, cp, W, ev, acc, K, gold)
+        st, c, md = call_switch(at[AT_SWITCH], k, law, p, c, md, y, cm, sg, cp, W, ev, acc, K, gold)
         if rec:  # the row at an event holds the state after the switch (F_t is continuous)
-            hist, nh = record(hist, nh, t, law, p, c, md, y, cm, sg, cp, W)
-        if st != _GO_ON:
+            hist, nh = call_record(at[AT_RECORD], hist, nh, t, law, p, c, md, y, cm, sg, cp, W)
+        if st != GO_ON:
             status = st
             break
     return status, t, nsteps, md, hist, nh
@@ -278,12 +247,13 @@ def _setup(p, c, vn0, n_cells, a_est):
 
 @njit(cache=True, error_model="numpy")
 def impact_slip(
-    law, p, bp, th0, vx0, vy0, w0, mu, g, const_angle, rtol, record_, diag, n_cells, a_est, out
+    law, p, bp, th0, vx0, vy0, w0, mu, g, const_angle, rtol, record_, diag, n_cells, a_est, out, at
 ):
     """Simulate one impact with partial-slip friction (``mu`` > 0, ``n_cells`` >= 1 cells over
-    ``a_est`` [m], the estimated largest contact radius); the other arguments and the outputs
-    are those of ``impactlab.dynamics.core.impact``. Returns (status, history, rows, the
-    largest change of F_t across a switch over mu F_max)."""
+    ``a_est`` [m], the estimated largest contact radius; ``at``: the addresses of
+    ``indirect.addresses``); the other arguments and the outputs are those of
+    ``impactlab.dynamics.core.impact``. Returns (status, history, rows, the largest change of
+    F_t across a switch over mu F_max)."""
     for i in range(out.shape[0]):
         out[i] = math.nan
     hist = np.empty((256 if record_ else 0, NH))
@@ -324,7 +294,7 @@ def impact_slip(
     acc = np.zeros(NA)
     acc[A_EMIN] = e0
     status, t, nsteps, md, hist, nh = _integrate(
-        law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, record_, diag, hist, acc
+        at, law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, record_, diag, hist, acc
     )
     out[O_NST] = nsteps
     out[O_DMAX] = acc[A_DMAX]

@@ -1,5 +1,6 @@
 """Bookkeeping of a partial-slip impact: running extremes over the accepted steps, the history
-rows and the outputs at separation (the same ``OUTPUT_FIELDS`` and ``HISTORY_FIELDS`` as the
+rows (at the steps' ends, and inside a step from the dense output) and the outputs at
+separation (the same ``OUTPUT_FIELDS`` and ``HISTORY_FIELDS`` as the
 core; ``stick`` is 1 while at least one cell sticks, i.e. without gross slip)."""
 
 from __future__ import annotations
@@ -11,7 +12,7 @@ from numba import njit
 
 from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.buffers import grown
-from impactlab.dynamics.kernels.cells import any_stuck
+from impactlab.dynamics.kernels.cells import any_stuck, n_in
 from impactlab.dynamics.kernels.layout import (
     A_DMAX,
     A_EMIN,
@@ -82,7 +83,9 @@ from impactlab.dynamics.kernels.layout import (
 from impactlab.dynamics.kernels.quality import result_flags
 from impactlab.dynamics.kernels.rhs import energy, geometry_llvm
 from impactlab.dynamics.kernels.status import REGIME_REVERSAL, REGIME_SLIP, REGIME_STICK
+from impactlab.dynamics.slipcore.layout import Y_CELL
 from impactlab.dynamics.slipcore.model import evaluate, stored_energy
+from impactlab.dynamics.slipcore.sums import dense_rows_t
 
 # --- accumulators over the accepted steps: kernels.layout.A_*, then ---------------------------
 A_JUMP = A_OWN  # largest change of F_t across a switch [N]
@@ -121,7 +124,7 @@ def track(acc, law, p, c, md, y, cm, cp, W, ev, t0, t1, diag):
     return True
 
 
-@njit(cache=True, error_model="numpy")
+@njit_internal
 def record(hist, n, t, law, p, c, md, y, cm, sg, cp, W):
     """Append one history row at time ``t`` and state ``y``; returns (hist, n + 1)."""
     if n >= hist.shape[0]:
@@ -147,6 +150,18 @@ def record(hist, n, t, law, p, c, md, y, cm, sg, cp, W):
     row[H_STICK] = 1.0 if any_stuck(cm) else 0.0
     row[H_ENERGY] = total_energy(law, p, c, md, y, cm, cp, W, ev)
     return hist, n + 1
+
+
+@njit_internal
+def dense_rows(hist, nh, t, h, theta, law, p, c, md, y, cm, sg, cp, W, Q, yt):
+    """History rows at a quarter, half and three quarters of the step from ``y`` (size ``h``,
+    dense-output coefficients ``Q``) that lie before ``theta``; returns (hist, rows)."""
+    nact = Y_CELL + n_in(cm)
+    for j in range(1, 4):
+        if j / 4.0 < theta:
+            dense_rows_t(y, h, j / 4.0, Q, yt, nact)
+            hist, nh = record(hist, nh, t + j * h / 4.0, law, p, c, md, yt, cm, sg, cp, W)
+    return hist, nh
 
 
 @njit(cache=True, error_model="numpy")

@@ -18,10 +18,11 @@ import math
 import numpy as np
 from numba import njit
 
-from impactlab.dynamics.kernels._jit import njit_llvm_inline, njit_no_refcount
+from impactlab.dynamics.kernels._jit import njit_leaf, njit_llvm_inline, njit_no_refcount
 from impactlab.dynamics.kernels.cells import SLIP
 from impactlab.dynamics.kernels.roots import anderson_bjorck, anderson_bjorck_point
 from impactlab.dynamics.kernels.step_control import power_growth
+from impactlab.dynamics.slipcore.address_call import call_step
 from impactlab.dynamics.slipcore.layout import G_CELL, Y_CELL
 from impactlab.dynamics.slipcore.model import (
     evaluate,
@@ -67,7 +68,7 @@ def error_sum(q, cm):
     return err, count
 
 
-@njit_no_refcount
+@njit_leaf
 def step(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew, q):
     """One step of size ``h`` from ``y`` (``K[0]``: the derivative at ``y``); fills ``K[1:7]``
     and ``ynew`` (FSAL), and ``q`` with the scaled local errors. Returns (RMS error norm over
@@ -162,7 +163,7 @@ def crosses(ga, gb):
     return hits > 0
 
 
-@njit_no_refcount
+@njit_leaf
 def first_event(gold, gnew, gmid, law, p, c, md, y0, K, Q, h, cm, sg, cp, W, ev, Wm, yt):
     """(event, theta) of the earliest event inside the accepted step (-1, 2.0: none). The
     event functions at the step's end go into ``gnew`` (from ``W`` and ``ev`` there). They
@@ -185,14 +186,14 @@ def first_event(gold, gnew, gmid, law, p, c, md, y0, K, Q, h, cm, sg, cp, W, ev,
     return best, theta
 
 
-@njit(cache=True, error_model="numpy")
-def integrate_to(law, p, c, md, y, cm, sg, cp, W, k0, H, rtol, sc, out, R):
+@njit_leaf
+def integrate_to(step_at, law, p, c, md, y, cm, sg, cp, W, k0, H, rtol, sc, out, R):
     """Integrate from ``y`` over exactly ``H`` with error control into ``out`` (the state at an
-    event is recomputed this way, not taken from the dense output; ``R``: 10 x len(y) scratch).
-    Returns (the steps taken, the quantities of ``model.evaluate`` at ``out``, ``W`` filled
-    there but for its rates W[3]: the last stage of the last step, FSAL). Only the entries in
-    use are copied (the rigid-body state and the cells in contact: the others are never
-    read)."""
+    event is recomputed this way, not taken from the dense output; ``R``: 10 x len(y) scratch),
+    in steps of ``step`` called at its address ``step_at`` (``address_call``). Returns (the
+    steps taken, the quantities of ``model.evaluate`` at ``out``, ``W`` filled there but for its
+    rates W[3]: the last stage of the last step, FSAL). Only the entries in use are copied (the
+    rigid-body state and the cells in contact: the others are never read)."""
     nact = Y_CELL + n_in(cm)
     Ks = R[:7]
     cur = R[7]
@@ -212,7 +213,7 @@ def integrate_to(law, p, c, md, y, cm, sg, cp, W, k0, H, rtol, sc, out, R):
             hh = rem
         for i in range(nact):
             Ks[0, i] = kc[i]
-        err, ev = step(law, p, c, md, cur, cm, sg, cp, W, Ks, hh, rtol, sc, out, q)
+        err, ev = call_step(step_at, law, p, c, md, cur, cm, sg, cp, W, Ks, hh, rtol, sc, out, q)
         if not (err <= 1.0) and hh > 1e-6 * H:
             hh *= max(0.2, power_growth(err)) if math.isfinite(err) else 0.25
             continue

@@ -1,0 +1,110 @@
+"""Calls of the partial-slip engine's step, event search, recomputation at an event, switch
+and history through their addresses (compiled; ``kernels.address_call`` has the why).
+
+``call_step(at[AT_STEP], *args)``, ``call_first_event``, ``call_integrate_to``,
+``call_switch``, ``call_record`` and ``call_rows`` call ``stepper.step``,
+``stepper.first_event``, ``stepper.integrate_to``, ``restart.switch``, ``outputs.record`` and
+``outputs.dense_rows`` with the arguments that follow the address. The impact receives the
+addresses as the tuple ``at`` (``indirect.addresses``, indices ``AT_*``): each of these
+functions is generated once, in its own library, instead of again in every library that calls
+it (the step in the recomputation's, and all of them in the impact's and the batch's).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+from numba import types
+from numba.extending import intrinsic
+
+from impactlab.dynamics.kernels.address_call import typed_call
+from impactlab.dynamics.kernels.layout import NC, NM
+
+_F1 = types.float64[::1]
+_F2 = types.float64[:, ::1]
+_I1 = types.int64[::1]
+_F8 = types.float64
+_I8 = types.int64
+#: The constants and mode tuples (``kernels.layout``: C_*, M_*).
+_C = types.UniTuple(_F8, NC)
+_MD = types.UniTuple(_F8, NM)
+#: The quantities of ``model.evaluate``: (delta, a, b, F_n, F_t, v_n, v_slip, radius,
+#: d radius/dt, cells in contact).
+EV = types.Tuple((_F8,) * 9 + (_I8,))
+#: The indices of the addresses in ``at``: the step, the event search, the recomputation at an
+#: event, the switch at an event, a history row and the history rows inside a step.
+AT_STEP, AT_FIRST_EVENT, AT_INTEGRATE_TO, AT_SWITCH, AT_RECORD, AT_ROWS = range(6)
+#: The number of addresses.
+N_ADDRESSES = 6
+#: The type of ``at``.
+ADDRESSES = types.UniTuple(_I8, N_ADDRESSES)
+
+#: ``stepper.step``: law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew, q; (error norm, ev).
+STEP_SIGNATURE = types.Tuple((_F8, EV))(
+    _I8, _F1, _C, _MD, _F1, _I1, _F1, _F1, _F2, _F2, _F8, _F8, _F1, _F1, _F1
+)
+#: ``stepper.first_event``: gold, gnew, gmid, law, p, c, md, y0, K, Q, h, cm, sg, cp, W, ev, Wm,
+#: yt; (event, theta).
+FIRST_EVENT_SIGNATURE = types.Tuple((_I8, _F8))(
+    _F1, _F1, _F1, _I8, _F1, _C, _MD, _F1, _F2, _F2, _F8, _I1, _F1, _F1, _F2, EV, _F2, _F1
+)
+#: ``stepper.integrate_to``: the step's address, law, p, c, md, y, cm, sg, cp, W, k0, H, rtol,
+#: sc, out, R; (steps, ev).
+INTEGRATE_TO_SIGNATURE = types.Tuple((_I8, EV))(
+    _I8, _I8, _F1, _C, _MD, _F1, _I1, _F1, _F1, _F2, _F1, _F8, _F8, _F1, _F1, _F2
+)
+#: ``restart.switch``: k, law, p, c, md, y, cm, sg, cp, W, ev, acc, K, gold; (status or
+#: GO_ON, c, md).
+SWITCH_SIGNATURE = types.Tuple((_I8, _C, _MD))(
+    _I8, _I8, _F1, _C, _MD, _F1, _I1, _F1, _F1, _F2, EV, _F1, _F2, _F1
+)
+#: ``outputs.record``: hist, n, t, law, p, c, md, y, cm, sg, cp, W; (hist, rows).
+RECORD_SIGNATURE = types.Tuple((_F2, _I8))(
+    _F2, _I8, _F8, _I8, _F1, _C, _MD, _F1, _I1, _F1, _F1, _F2
+)
+#: ``outputs.dense_rows``: hist, nh, t, h, theta, law, p, c, md, y, cm, sg, cp, W, Q, yt;
+#: (hist, rows).
+ROWS_SIGNATURE = types.Tuple((_F2, _I8))(
+    _F2, _I8, _F8, _F8, _F8, _I8, _F1, _C, _MD, _F1, _I1, _F1, _F1, _F2, _F2, _F1
+)
+
+
+def _call_step(typingctx: Any, address: Any, *args: Any) -> Any:
+    """Call the step at ``address`` (int64) with ``args``."""
+    return typed_call("call_step", STEP_SIGNATURE, address, args)
+
+
+def _call_first_event(typingctx: Any, address: Any, *args: Any) -> Any:
+    """Call the event search at ``address`` (int64) with ``args``."""
+    return typed_call("call_first_event", FIRST_EVENT_SIGNATURE, address, args)
+
+
+def _call_integrate_to(typingctx: Any, address: Any, *args: Any) -> Any:
+    """Call the recomputation at an event at ``address`` (int64) with ``args``."""
+    return typed_call("call_integrate_to", INTEGRATE_TO_SIGNATURE, address, args)
+
+
+def _call_switch(typingctx: Any, address: Any, *args: Any) -> Any:
+    """Call the switch at an event at ``address`` (int64) with ``args``."""
+    return typed_call("call_switch", SWITCH_SIGNATURE, address, args)
+
+
+def _call_record(typingctx: Any, address: Any, *args: Any) -> Any:
+    """Call the history row at ``address`` (int64) with ``args``."""
+    return typed_call("call_record", RECORD_SIGNATURE, address, args)
+
+
+def _call_rows(typingctx: Any, address: Any, *args: Any) -> Any:
+    """Call the history rows inside a step at ``address`` (int64) with ``args``."""
+    return typed_call("call_rows", ROWS_SIGNATURE, address, args)
+
+
+#: The intrinsics (typed for mypy as plain callables: compiled code calls them as
+#: ``call_step(address, *args)``).
+call_step: Callable[..., Any] = intrinsic(_call_step)
+call_first_event: Callable[..., Any] = intrinsic(_call_first_event)
+call_integrate_to: Callable[..., Any] = intrinsic(_call_integrate_to)
+call_switch: Callable[..., Any] = intrinsic(_call_switch)
+call_record: Callable[..., Any] = intrinsic(_call_record)
+call_rows: Callable[..., Any] = intrinsic(_call_rows)

@@ -1,0 +1,44 @@
+"""The addresses of the partial-slip engine's step, event search, recomputation at an event,
+switch and history (``address_call``), for ``impact_slip``'s argument ``at`` (Python).
+
+Read in Python when an impact or a batch starts, never baked into compiled code
+(``kernels.address_call``): compiled, or loaded from the cache, on first use, then kept for
+the process.
+"""
+
+from __future__ import annotations
+
+from impactlab.dynamics.kernels.address_call import compiled_addresses
+from impactlab.dynamics.slipcore.address_call import (
+    FIRST_EVENT_SIGNATURE,
+    INTEGRATE_TO_SIGNATURE,
+    RECORD_SIGNATURE,
+    ROWS_SIGNATURE,
+    STEP_SIGNATURE,
+    SWITCH_SIGNATURE,
+)
+from impactlab.dynamics.slipcore.outputs import dense_rows, record
+from impactlab.dynamics.slipcore.restart import switch
+from impactlab.dynamics.slipcore.stepper import first_event, integrate_to, step
+
+_ADDRESSES: list[tuple[int, ...]] = []
+
+
+def addresses() -> tuple[int, ...]:
+    """The entry points (``address_call.AT_*``) of ``stepper.step``, ``stepper.first_event``,
+    ``stepper.integrate_to``, ``restart.switch``, ``outputs.record`` and
+    ``outputs.dense_rows``."""
+    if not _ADDRESSES:
+        _ADDRESSES.append(
+            compiled_addresses(
+                (
+                    (step, STEP_SIGNATURE),
+                    (first_event, FIRST_EVENT_SIGNATURE),
+                    (integrate_to, INTEGRATE_TO_SIGNATURE),
+                    (switch, SWITCH_SIGNATURE),
+                    (record, RECORD_SIGNATURE),
+                    (dense_rows, ROWS_SIGNATURE),
+                )
+            )
+        )
+    return _ADDRESSES[0]
