@@ -1,5 +1,5 @@
-"""Compiled functions without wrappers (``njit_internal``, ``njit_llvm_inline``, or
-``no_cpython_wrapper=True``) are never called from Python.
+"""Compiled functions without wrappers (``njit_internal``, ``njit_leaf``, ``njit_llvm_inline``,
+or ``no_cpython_wrapper=True``) are never called from Python.
 
 numba compiles such a function without its Python- and C-callable wrappers (less compile
 time), and a call from Python then crashes the interpreter instead of raising an error. Only
@@ -7,8 +7,9 @@ compiled code may call them: this test looks for every use of their names in Pyt
 (outside compiled function bodies and imports) in the package, the tests, the benchmarks and
 the tools. It matches by name only, so a Python function of the same name elsewhere also fails
 it: such a compiled function keeps its wrappers. Two uses call nothing and pass: reading the
-dispatcher's ``py_func`` and taking a compiled entry point with numba's ``_get_jit_address``
-(the flexible drop's functions called through their addresses, ``flexcore.indirect``).
+dispatcher's ``py_func``, and pairing it with its signature, ``(f, STEP_SIGNATURE)``, for
+``kernels.address_call.compiled_addresses`` or numba's ``_get_jit_address`` (the functions
+called through their addresses, ``flexcore.indirect`` and ``slipcore.indirect``).
 """
 
 from __future__ import annotations
@@ -18,7 +19,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
 FOLDERS = ("src", "tests", "benchmarks", "tools")
-COMPILERS = {"njit", "jit", "njit_no_refcount", "njit_internal", "njit_llvm_inline"}
+COMPILERS = {"njit", "jit", "njit_no_refcount", "njit_internal", "njit_leaf", "njit_llvm_inline"}
 
 
 def _decorator_name(dec: ast.expr) -> str:
@@ -27,7 +28,7 @@ def _decorator_name(dec: ast.expr) -> str:
 
 
 def _without_wrapper(dec: ast.expr) -> bool:
-    if _decorator_name(dec) in ("njit_internal", "njit_llvm_inline"):
+    if _decorator_name(dec) in ("njit_internal", "njit_leaf", "njit_llvm_inline"):
         return True
     return isinstance(dec, ast.Call) and any(
         k.arg == "no_cpython_wrapper" and isinstance(k.value, ast.Constant) and k.value.value
@@ -45,14 +46,22 @@ def _compiled(tree: ast.AST) -> list[ast.FunctionDef]:
 
 
 def _no_call(tree: ast.AST) -> set[int]:
-    """The nodes that name a compiled function without calling it from Python: ``f.py_func``
-    and the first argument of ``_get_jit_address(f, signature)``."""
+    """The nodes that name a compiled function without calling it from Python: ``f.py_func``,
+    the first argument of ``_get_jit_address(f, signature)`` and the function of a pair
+    ``(f, NAME_SIGNATURE)``."""
     named: list[ast.AST] = []
     for n in ast.walk(tree):
         if isinstance(n, ast.Attribute) and n.attr == "py_func":
             named.append(n.value)
         elif isinstance(n, ast.Call) and _decorator_name(n) == "_get_jit_address" and n.args:
             named.append(n.args[0])
+        elif (
+            isinstance(n, ast.Tuple)
+            and len(n.elts) == 2
+            and isinstance(n.elts[1], ast.Name)
+            and n.elts[1].id.endswith("SIGNATURE")
+        ):
+            named.append(n.elts[0])
     return {id(m) for n in named for m in ast.walk(n)}
 
 

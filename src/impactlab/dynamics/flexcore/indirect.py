@@ -27,8 +27,8 @@ from impactlab.dynamics.flexcore.address_call import (
     OUTPUTS_SIGNATURE,
     RATES_SIGNATURE,
     RECORD_SIGNATURE,
+    STEP_SIGNATURE,
 )
-from impactlab.dynamics.flexcore.address_call import STEP_SIGNATURE as STEP
 from impactlab.dynamics.flexcore.cellswitch import cell_action
 from impactlab.dynamics.flexcore.coast import out_of_contact
 from impactlab.dynamics.flexcore.events import handle_events
@@ -52,7 +52,7 @@ def addresses(partial_slip: bool) -> tuple[int, ...]:
     if partial_slip not in _ADDRESSES:
         functions = [
             (rates_cells if partial_slip else rates, RATES_SIGNATURE),
-            (dp_step_cells if partial_slip else dp_step_rates, STEP),
+            (dp_step_cells if partial_slip else dp_step_rates, STEP_SIGNATURE),
             (handle_events, EVENTS_SIGNATURE),
             (accept, ACCEPT_SIGNATURE),
             (out_of_contact, COAST_SIGNATURE),

@@ -1,13 +1,14 @@
 """Calls of the partial-slip engine's step, event search, recomputation at an event, switch
 and history through their addresses (compiled; ``kernels.address_call`` has the why).
 
-``call_step(at[AT_STEP], *args)``, ``call_first_event``, ``call_integrate_to``,
-``call_switch``, ``call_record`` and ``call_rows`` call ``stepper.step``,
-``stepper.first_event``, ``stepper.integrate_to``, ``restart.switch``, ``outputs.record`` and
-``outputs.dense_rows`` with the arguments that follow the address. The impact receives the
-addresses as the tuple ``at`` (``indirect.addresses``, indices ``AT_*``): each of these
-functions is generated once, in its own library, instead of again in every library that calls
-it (the step in the recomputation's, and all of them in the impact's and the batch's).
+``call_step(at[SA_STEP], *args)``, ``call_first_event``, ``call_integrate_to``,
+``call_switch``, ``call_record`` and ``call_rows`` call ``stepper.dp_step_slip``,
+``stepper.slip_first_event``, ``stepper.slip_integrate_to``, ``restart.switch_at_event``,
+``outputs.history_row`` and ``outputs.dense_rows`` with the arguments that follow the address.
+The impact receives the addresses as the tuple ``at`` (``indirect.addresses``, indices
+``SA_*``): each of these functions is generated once, in its own library, instead of again in
+every library that calls it (the step in the recomputation's, and all of them in the impact's
+and the batch's).
 """
 
 from __future__ import annotations
@@ -34,32 +35,33 @@ _MD = types.UniTuple(_F8, NM)
 EV = types.Tuple((_F8,) * 9 + (_I8,))
 #: The indices of the addresses in ``at``: the step, the event search, the recomputation at an
 #: event, the switch at an event, a history row and the history rows inside a step.
-AT_STEP, AT_FIRST_EVENT, AT_INTEGRATE_TO, AT_SWITCH, AT_RECORD, AT_ROWS = range(6)
+SA_STEP, SA_FIRST_EVENT, SA_INTEGRATE_TO, SA_SWITCH, SA_RECORD, SA_ROWS = range(6)
 #: The number of addresses.
-N_ADDRESSES = 6
+N_SLIP_ADDRESSES = 6
 #: The type of ``at``.
-ADDRESSES = types.UniTuple(_I8, N_ADDRESSES)
+ADDRESSES = types.UniTuple(_I8, N_SLIP_ADDRESSES)
 
-#: ``stepper.step``: law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew, q; (error norm, ev).
+#: ``stepper.dp_step_slip``: law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew, q;
+#: (error norm, ev).
 STEP_SIGNATURE = types.Tuple((_F8, EV))(
     _I8, _F1, _C, _MD, _F1, _I1, _F1, _F1, _F2, _F2, _F8, _F8, _F1, _F1, _F1
 )
-#: ``stepper.first_event``: gold, gnew, gmid, law, p, c, md, y0, K, Q, h, cm, sg, cp, W, ev, Wm,
-#: yt; (event, theta).
+#: ``stepper.slip_first_event``: gold, gnew, gmid, law, p, c, md, y0, K, Q, h, cm, sg, cp, W,
+#: ev, Wm, yt; (event, theta).
 FIRST_EVENT_SIGNATURE = types.Tuple((_I8, _F8))(
     _F1, _F1, _F1, _I8, _F1, _C, _MD, _F1, _F2, _F2, _F8, _I1, _F1, _F1, _F2, EV, _F2, _F1
 )
-#: ``stepper.integrate_to``: the step's address, law, p, c, md, y, cm, sg, cp, W, k0, H, rtol,
+#: ``stepper.slip_integrate_to``: the step's address, law, p, c, md, y, cm, sg, cp, W, k0, H, rtol,
 #: sc, out, R; (steps, ev).
 INTEGRATE_TO_SIGNATURE = types.Tuple((_I8, EV))(
     _I8, _I8, _F1, _C, _MD, _F1, _I1, _F1, _F1, _F2, _F1, _F8, _F8, _F1, _F1, _F2
 )
-#: ``restart.switch``: k, law, p, c, md, y, cm, sg, cp, W, ev, acc, K, gold; (status or
+#: ``restart.switch_at_event``: k, law, p, c, md, y, cm, sg, cp, W, ev, acc, K, gold; (status or
 #: GO_ON, c, md).
 SWITCH_SIGNATURE = types.Tuple((_I8, _C, _MD))(
     _I8, _I8, _F1, _C, _MD, _F1, _I1, _F1, _F1, _F2, EV, _F1, _F2, _F1
 )
-#: ``outputs.record``: hist, n, t, law, p, c, md, y, cm, sg, cp, W; (hist, rows).
+#: ``outputs.history_row``: hist, n, t, law, p, c, md, y, cm, sg, cp, W; (hist, rows).
 RECORD_SIGNATURE = types.Tuple((_F2, _I8))(
     _F2, _I8, _F8, _I8, _F1, _C, _MD, _F1, _I1, _F1, _F1, _F2
 )

@@ -64,12 +64,12 @@ from impactlab.dynamics.kernels.status import (
 )
 from impactlab.dynamics.kernels.step_control import power_growth
 from impactlab.dynamics.slipcore.address_call import (
-    AT_FIRST_EVENT,
-    AT_INTEGRATE_TO,
-    AT_RECORD,
-    AT_ROWS,
-    AT_STEP,
-    AT_SWITCH,
+    SA_FIRST_EVENT,
+    SA_INTEGRATE_TO,
+    SA_RECORD,
+    SA_ROWS,
+    SA_STEP,
+    SA_SWITCH,
     call_first_event,
     call_integrate_to,
     call_record,
@@ -115,9 +115,9 @@ def _integrate(at, law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, his
     t, hc, hmin = 0.0, 0.02 * tstar * rtol**0.2, 1e-14 * tstar
     ev = slip_rhs(law, p, c, md, y, cm, sg, cp, W, K[0], n_in(cm))
     events(c, md, cm, sg, cp, W, ev, gold)
-    nh = np.int64(0)  # not a literal: record() is compiled once, for any row count
+    nh = np.int64(0)  # not a literal: history_row() is compiled once, for any row count
     if rec:
-        hist, nh = call_record(at[AT_RECORD], hist, nh, t, law, p, c, md, y, cm, sg, cp, W)
+        hist, nh = call_record(at[SA_RECORD], hist, nh, t, law, p, c, md, y, cm, sg, cp, W)
     nsteps, nevents, status = 0, 0, ST_NO_SEPARATION
     ar0, ad0 = ev[7], ev[8]  # contact radius [m] and its rate [m/s] at t
     t_last, ad_last = -1.0, 0.0  # the last accepted step's start and the radius rate there
@@ -129,7 +129,7 @@ def _integrate(at, law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, his
         hz = boundary_horizon(cm, cp, ar0, ad0, add)
         past = BOUNDARY_PAST if ad0 > 0.0 else STEP_PAST  # a birth ahead, or a release
         h = min(hc, tstar, past * hz + hmin) if hz > 0.0 else min(hc, tstar)
-        err, ev = call_step(at[AT_STEP], law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew, q)
+        err, ev = call_step(at[SA_STEP], law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew, q)
         nact = Y_CELL + n_in(cm)  # the entries in use: the rigid-body state, the cells in contact
         if not (err <= 1.0):
             rejected = True
@@ -139,7 +139,7 @@ def _integrate(at, law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, his
                 break
             continue
         k, theta = call_first_event(
-            at[AT_FIRST_EVENT],
+            at[SA_FIRST_EVENT],
             gold,
             gnew,
             gmid,
@@ -161,13 +161,13 @@ def _integrate(at, law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, his
         )
         if rec:
             hist, nh = call_rows(
-                at[AT_ROWS], hist, nh, t, h, theta, law, p, c, md, y, cm, sg, cp, W, Q, yt
+                at[SA_ROWS], hist, nh, t, h, theta, law, p, c, md, y, cm, sg, cp, W, Q, yt
             )
         if k >= 0:  # the state at the event, integrated anew (the dense output is 4th order)
             # ev and W: the quantities at yev, from the last stage of the last step (FSAL)
             n_re, ev = call_integrate_to(
-                at[AT_INTEGRATE_TO],
-                at[AT_STEP],
+                at[SA_INTEGRATE_TO],
+                at[SA_STEP],
                 law,
                 p,
                 c,
@@ -204,7 +204,7 @@ def _integrate(at, law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, his
         hc = h * (grow if err == 0.0 else min(grow, power_growth(err)))
         rejected = False
         if rec and k < 0:
-            hist, nh = call_record(at[AT_RECORD], hist, nh, t, law, p, c, md, y, cm, sg, cp, W)
+            hist, nh = call_record(at[SA_RECORD], hist, nh, t, law, p, c, md, y, cm, sg, cp, W)
         if k < 0:
             copy_active(K[0], K[6], nact)
             if release_passed(y, cm, cp, ev[7], K[0]):
@@ -217,9 +217,9 @@ def _integrate(at, law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, his
         if nevents > MAX_EVENTS:
             status = ST_TOO_MANY_EVENTS
             break
-        st, c, md = call_switch(at[AT_SWITCH], k, law, p, c, md, y, cm, sg, cp, W, ev, acc, K, gold)
+        st, c, md = call_switch(at[SA_SWITCH], k, law, p, c, md, y, cm, sg, cp, W, ev, acc, K, gold)
         if rec:  # the row at an event holds the state after the switch (F_t is continuous)
-            hist, nh = call_record(at[AT_RECORD], hist, nh, t, law, p, c, md, y, cm, sg, cp, W)
+            hist, nh = call_record(at[SA_RECORD], hist, nh, t, law, p, c, md, y, cm, sg, cp, W)
         if st != GO_ON:
             status = st
             break

@@ -17,26 +17,26 @@ from impactlab.dynamics.slipcore.address_call import (
     STEP_SIGNATURE,
     SWITCH_SIGNATURE,
 )
-from impactlab.dynamics.slipcore.outputs import dense_rows, record
-from impactlab.dynamics.slipcore.restart import switch
-from impactlab.dynamics.slipcore.stepper import first_event, integrate_to, step
+from impactlab.dynamics.slipcore.outputs import dense_rows, history_row
+from impactlab.dynamics.slipcore.restart import switch_at_event
+from impactlab.dynamics.slipcore.stepper import dp_step_slip, slip_first_event, slip_integrate_to
 
 _ADDRESSES: list[tuple[int, ...]] = []
 
 
 def addresses() -> tuple[int, ...]:
-    """The entry points (``address_call.AT_*``) of ``stepper.step``, ``stepper.first_event``,
-    ``stepper.integrate_to``, ``restart.switch``, ``outputs.record`` and
-    ``outputs.dense_rows``."""
+    """The entry points (``address_call.SA_*``) of ``stepper.dp_step_slip``,
+    ``stepper.slip_first_event``, ``stepper.slip_integrate_to``, ``restart.switch_at_event``,
+    ``outputs.history_row`` and ``outputs.dense_rows``."""
     if not _ADDRESSES:
         _ADDRESSES.append(
             compiled_addresses(
                 (
-                    (step, STEP_SIGNATURE),
-                    (first_event, FIRST_EVENT_SIGNATURE),
-                    (integrate_to, INTEGRATE_TO_SIGNATURE),
-                    (switch, SWITCH_SIGNATURE),
-                    (record, RECORD_SIGNATURE),
+                    (dp_step_slip, STEP_SIGNATURE),
+                    (slip_first_event, FIRST_EVENT_SIGNATURE),
+                    (slip_integrate_to, INTEGRATE_TO_SIGNATURE),
+                    (switch_at_event, SWITCH_SIGNATURE),
+                    (history_row, RECORD_SIGNATURE),
                     (dense_rows, ROWS_SIGNATURE),
                 )
             )

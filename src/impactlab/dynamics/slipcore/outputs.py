@@ -125,7 +125,7 @@ def track(acc, law, p, c, md, y, cm, cp, W, ev, t0, t1, diag):
 
 
 @njit_internal
-def record(hist, n, t, law, p, c, md, y, cm, sg, cp, W):
+def history_row(hist, n, t, law, p, c, md, y, cm, sg, cp, W):
     """Append one history row at time ``t`` and state ``y``; returns (hist, n + 1)."""
     if n >= hist.shape[0]:
         hist = grown(hist, n, np.int64(16))
@@ -160,7 +160,7 @@ def dense_rows(hist, nh, t, h, theta, law, p, c, md, y, cm, sg, cp, W, Q, yt):
     for j in range(1, 4):
         if j / 4.0 < theta:
             dense_rows_t(y, h, j / 4.0, Q, yt, nact)
-            hist, nh = record(hist, nh, t + j * h / 4.0, law, p, c, md, yt, cm, sg, cp, W)
+            hist, nh = history_row(hist, nh, t + j * h / 4.0, law, p, c, md, yt, cm, sg, cp, W)
     return hist, nh
 
 

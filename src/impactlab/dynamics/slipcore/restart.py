@@ -1,6 +1,6 @@
 """The partial-slip engine at an event: stop, or switch and restart.
 
-``switch`` applies the event located in a step (a normal event of the core's rules, or a
+``switch_at_event`` applies the event located in a step (a normal event of the core's rules, or a
 cell's birth, release or stick/slip switch), settles every switch already due, and restarts
 the step loop at the event's state (derivative and event functions there); ``normal_event``
 keeps the bookkeeping of the normal work of compression and restitution.
@@ -56,7 +56,7 @@ def normal_event(k, law, p, c, md, y, ev, acc):
 
 
 @njit_leaf
-def switch(k, law, p, c, md, y, cm, sg, cp, W, ev, acc, K, gold):
+def switch_at_event(k, law, p, c, md, y, cm, sg, cp, W, ev, acc, K, gold):
     """Stop at the event ``k`` or switch and restart at ``y`` (its quantities ``ev``, ``W``
     filled there; derivative into ``K[0]``, event functions into ``gold``). Returns (status or
     GO_ON, constants, mode)."""

@@ -69,7 +69,7 @@ def error_sum(q, cm):
 
 
 @njit_leaf
-def step(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew, q):
+def dp_step_slip(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew, q):
     """One step of size ``h`` from ``y`` (``K[0]``: the derivative at ``y``); fills ``K[1:7]``
     and ``ynew`` (FSAL), and ``q`` with the scaled local errors. Returns (RMS error norm over
     the rigid state and the cells in contact, quantities at ``ynew``); the norm leaves out the
@@ -164,7 +164,7 @@ def crosses(ga, gb):
 
 
 @njit_leaf
-def first_event(gold, gnew, gmid, law, p, c, md, y0, K, Q, h, cm, sg, cp, W, ev, Wm, yt):
+def slip_first_event(gold, gnew, gmid, law, p, c, md, y0, K, Q, h, cm, sg, cp, W, ev, Wm, yt):
     """(event, theta) of the earliest event inside the accepted step (-1, 2.0: none). The
     event functions at the step's end go into ``gnew`` (from ``W`` and ``ev`` there). They
     are also evaluated at the step's midpoint (dense output, into ``gmid``;
@@ -187,10 +187,10 @@ def first_event(gold, gnew, gmid, law, p, c, md, y0, K, Q, h, cm, sg, cp, W, ev,
 
 
 @njit_leaf
-def integrate_to(step_at, law, p, c, md, y, cm, sg, cp, W, k0, H, rtol, sc, out, R):
+def slip_integrate_to(step_at, law, p, c, md, y, cm, sg, cp, W, k0, H, rtol, sc, out, R):
     """Integrate from ``y`` over exactly ``H`` with error control into ``out`` (the state at an
     event is recomputed this way, not taken from the dense output; ``R``: 10 x len(y) scratch),
-    in steps of ``step`` called at its address ``step_at`` (``address_call``). Returns (the
+    in steps of ``dp_step_slip`` called at its address ``step_at`` (``address_call``). Returns (the
     steps taken, the quantities of ``model.evaluate`` at ``out``, ``W`` filled there but for its
     rates W[3]: the last stage of the last step, FSAL). Only the entries in use are copied (the
     rigid-body state and the cells in contact: the others are never read)."""
