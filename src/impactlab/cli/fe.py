@@ -174,12 +174,18 @@ def indent_cmd(
     """Indent a flat with a sphere to each --max and unload (CalculiX, axisymmetric; with
     --loading-only the run stops at each --max)."""
     from impactlab.fe import find_ccx, indent
+    from impactlab.fe.problem import make_problem
 
     R = positive(radius, "m", "--radius")
     deltas = [positive(m, "m", "--max") for m in maxima]
     fm = _material(flat, flat_E, flat_nu, flat_sy, "flat")
     bm = _material(body, body_E, body_nu, body_sy, "body")
     table = read_hardening(hardening) if hardening is not None else None
+    for d in deltas:  # bad input is refused before ccx is looked for (``indent`` checks again)
+        make_problem(
+            fm, bm, radius=R, delta_max=d, sphere=sphere, flat_hardening=table, mu=mu,
+            mesh_level=mesh, unload=not loading_only,
+        )  # fmt: skip
     try:
         find_ccx()
     except RuntimeError as exc:  # not installed: one line saying how to install it
