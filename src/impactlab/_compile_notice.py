@@ -27,7 +27,7 @@ DELAY_S = 1.0
 #: The compiled parts, by the module of the function being compiled: (name, about how long in
 #: CPU seconds on a 2-core machine, as measured by benchmarks/bench_compile.py).
 PARTS: tuple[tuple[str, str, int], ...] = (
-    ("impactlab.dynamics.slipcore", "the partial-slip impact engine", 25),
+    ("impactlab.dynamics.slipcore", "the partial-slip impact engine", 20),
     ("impactlab.dynamics.flexcore.batch", "the flexible-rod drop batch", 30),
     ("impactlab.dynamics.slip_batch", "the partial-slip batch engine", 20),
     ("impactlab.dynamics.flexcore", "the flexible-rod drop engine", 25),
