@@ -14,13 +14,9 @@ atomic reference-count updates per step. The model tuple carries the addresses a
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from typing import Any
-
 from numba import types
-from numba.extending import intrinsic
 
-from impactlab.dynamics.kernels.address_call import typed_call
+from impactlab.dynamics.kernels.address_call import address_intrinsic
 
 _F1 = types.float64[::1]
 _F2 = types.float64[:, ::1]
@@ -83,55 +79,12 @@ RECORD_SIGNATURE = types.Tuple((_F2, types.int64))(
 CELLS_SIGNATURE = types.boolean(types.int64, types.int64, MODEL, _F2, _F1, _F1, _F1, _F2, _F2, _F2)
 
 
-def _call_rates(typingctx: Any, address: Any, *args: Any) -> Any:
-    """Call the right-hand side at ``address`` (int64) with ``args``."""
-    return typed_call("call_rates", RATES_SIGNATURE, address, args)
-
-
-def _call_step(typingctx: Any, address: Any, *args: Any) -> Any:
-    """Call the Dormand-Prince step at ``address`` (int64) with ``args``; returns
-    its error norm."""
-    return typed_call("call_step", STEP_SIGNATURE, address, args)
-
-
-def _call_events(typingctx: Any, address: Any, *args: Any) -> Any:
-    """Call the event handler at ``address`` (int64) with ``args``; returns its
-    success."""
-    return typed_call("call_events", EVENTS_SIGNATURE, address, args)
-
-
-def _call_accept(typingctx: Any, address: Any, *args: Any) -> Any:
-    """Call the accepted step at ``address`` (int64) with ``args``."""
-    return typed_call("call_accept", ACCEPT_SIGNATURE, address, args)
-
-
-def _call_coast(typingctx: Any, address: Any, *args: Any) -> Any:
-    """Call the free-flight test and jump at ``address`` (int64) with ``args``."""
-    return typed_call("call_coast", COAST_SIGNATURE, address, args)
-
-
-def _call_outputs(typingctx: Any, address: Any, *args: Any) -> Any:
-    """Call the outputs at ``address`` (int64) with ``args``."""
-    return typed_call("call_outputs", OUTPUTS_SIGNATURE, address, args)
-
-
-def _call_record(typingctx: Any, address: Any, *args: Any) -> Any:
-    """Call the history row at ``address`` (int64) with ``args``."""
-    return typed_call("call_record", RECORD_SIGNATURE, address, args)
-
-
-def _call_cells(typingctx: Any, address: Any, *args: Any) -> Any:
-    """Call partial slip's cell switches at ``address`` (int64) with ``args``."""
-    return typed_call("call_cells", CELLS_SIGNATURE, address, args)
-
-
-#: The intrinsics (typed for mypy as plain callables: compiled code calls them as
-#: ``call_rates(address, *args)``).
-call_rates: Callable[..., Any] = intrinsic(_call_rates)
-call_step: Callable[..., Any] = intrinsic(_call_step)
-call_events: Callable[..., Any] = intrinsic(_call_events)
-call_accept: Callable[..., Any] = intrinsic(_call_accept)
-call_coast: Callable[..., Any] = intrinsic(_call_coast)
-call_outputs: Callable[..., Any] = intrinsic(_call_outputs)
-call_record: Callable[..., Any] = intrinsic(_call_record)
-call_cells: Callable[..., Any] = intrinsic(_call_cells)
+#: The intrinsics: compiled code calls them as ``call_rates(address, *args)``.
+call_rates = address_intrinsic("call_rates", RATES_SIGNATURE)
+call_step = address_intrinsic("call_step", STEP_SIGNATURE)
+call_events = address_intrinsic("call_events", EVENTS_SIGNATURE)
+call_accept = address_intrinsic("call_accept", ACCEPT_SIGNATURE)
+call_coast = address_intrinsic("call_coast", COAST_SIGNATURE)
+call_outputs = address_intrinsic("call_outputs", OUTPUTS_SIGNATURE)
+call_record = address_intrinsic("call_record", RECORD_SIGNATURE)
+call_cells = address_intrinsic("call_cells", CELLS_SIGNATURE)

@@ -3,12 +3,12 @@
 numba links the code of every compiled function a function calls into that function's library,
 and optimises and generates machine code for it again there: a callee of the step loop is
 generated once in its own library and once more in each library that calls it. Called through
-its address instead, a callee's machine code is generated once. ``typed_call`` builds the
-intrinsic's signature and code for one callee signature: the call in numba's own calling
-convention (as numba's first-class function type calls a jit function), with the arguments
-that follow the address, borrowed as numba passes them to any call (packed in a tuple, every
-array in it would be counted in and out of the tuple at each call). The argument types must be
-the signature's exactly (checked when the caller is compiled).
+its address instead, a callee's machine code is generated once. ``address_intrinsic`` makes
+the intrinsic for one callee signature, ``typed_call`` its signature and code: the call in
+numba's own calling convention (as numba's first-class function type calls a jit function),
+with the arguments that follow the address, borrowed as numba passes them to any call (packed
+in a tuple, every array in it would be counted in and out of the tuple at each call). The
+argument types must be the signature's exactly (checked when the caller is compiled).
 
 ``compiled_addresses`` reads the addresses in Python (compiling, or loading from the cache, on
 first use): they are passed to compiled code as int64 values, never baked into it, so the
@@ -18,12 +18,13 @@ cached engine holds none and a second process loads every function from the cach
 from __future__ import annotations
 
 import gc
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from typing import Any
 
 from numba.core import cgutils, types
 from numba.core.errors import TypingError
 from numba.experimental.function_type import _get_jit_address
+from numba.extending import intrinsic
 
 
 def typed_call(name: str, sig: Any, address: Any, args: tuple[Any, ...]) -> Any:
@@ -46,6 +47,18 @@ def typed_call(name: str, sig: Any, address: Any, args: tuple[Any, ...]) -> Any:
         return res if sig.return_type != types.none else context.get_dummy_value()
 
     return sig.return_type(address, types.StarArgTuple.from_types(argtys)), codegen
+
+
+def address_intrinsic(name: str, sig: Any) -> Callable[..., Any]:
+    """The intrinsic ``name(address, *args)``: a call of the compiled function of signature
+    ``sig`` at ``address`` (int64) with ``args`` (``typed_call``); typed for mypy as a plain
+    callable."""
+
+    def typer(typingctx: Any, address: Any, *args: Any) -> Any:
+        return typed_call(name, sig, address, args)
+
+    typer.__name__ = typer.__qualname__ = name
+    return intrinsic(typer)  # type: ignore[no-any-return]
 
 
 def compiled_addresses(functions: Sequence[tuple[Any, Any]]) -> tuple[int, ...]:

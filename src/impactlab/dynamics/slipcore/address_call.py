@@ -13,13 +13,9 @@ and the batch's).
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from typing import Any
-
 from numba import types
-from numba.extending import intrinsic
 
-from impactlab.dynamics.kernels.address_call import typed_call
+from impactlab.dynamics.kernels.address_call import address_intrinsic
 from impactlab.dynamics.kernels.layout import NC, NM
 
 _F1 = types.float64[::1]
@@ -72,41 +68,10 @@ ROWS_SIGNATURE = types.Tuple((_F2, _I8))(
 )
 
 
-def _call_step(typingctx: Any, address: Any, *args: Any) -> Any:
-    """Call the step at ``address`` (int64) with ``args``."""
-    return typed_call("call_step", STEP_SIGNATURE, address, args)
-
-
-def _call_first_event(typingctx: Any, address: Any, *args: Any) -> Any:
-    """Call the event search at ``address`` (int64) with ``args``."""
-    return typed_call("call_first_event", FIRST_EVENT_SIGNATURE, address, args)
-
-
-def _call_integrate_to(typingctx: Any, address: Any, *args: Any) -> Any:
-    """Call the recomputation at an event at ``address`` (int64) with ``args``."""
-    return typed_call("call_integrate_to", INTEGRATE_TO_SIGNATURE, address, args)
-
-
-def _call_switch(typingctx: Any, address: Any, *args: Any) -> Any:
-    """Call the switch at an event at ``address`` (int64) with ``args``."""
-    return typed_call("call_switch", SWITCH_SIGNATURE, address, args)
-
-
-def _call_record(typingctx: Any, address: Any, *args: Any) -> Any:
-    """Call the history row at ``address`` (int64) with ``args``."""
-    return typed_call("call_record", RECORD_SIGNATURE, address, args)
-
-
-def _call_rows(typingctx: Any, address: Any, *args: Any) -> Any:
-    """Call the history rows inside a step at ``address`` (int64) with ``args``."""
-    return typed_call("call_rows", ROWS_SIGNATURE, address, args)
-
-
-#: The intrinsics (typed for mypy as plain callables: compiled code calls them as
-#: ``call_step(address, *args)``).
-call_step: Callable[..., Any] = intrinsic(_call_step)
-call_first_event: Callable[..., Any] = intrinsic(_call_first_event)
-call_integrate_to: Callable[..., Any] = intrinsic(_call_integrate_to)
-call_switch: Callable[..., Any] = intrinsic(_call_switch)
-call_record: Callable[..., Any] = intrinsic(_call_record)
-call_rows: Callable[..., Any] = intrinsic(_call_rows)
+#: The intrinsics: compiled code calls them as ``call_step(address, *args)``.
+call_step = address_intrinsic("call_step", STEP_SIGNATURE)
+call_first_event = address_intrinsic("call_first_event", FIRST_EVENT_SIGNATURE)
+call_integrate_to = address_intrinsic("call_integrate_to", INTEGRATE_TO_SIGNATURE)
+call_switch = address_intrinsic("call_switch", SWITCH_SIGNATURE)
+call_record = address_intrinsic("call_record", RECORD_SIGNATURE)
+call_rows = address_intrinsic("call_rows", ROWS_SIGNATURE)
