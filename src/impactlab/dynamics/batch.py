@@ -27,7 +27,7 @@ from impactlab.dynamics.checks import check_rtol, gravity_value
 from impactlab.dynamics.core.batch import impact_batch
 from impactlab.dynamics.kernels.layout import N_OUT, OUTPUT_FIELDS, PARTIAL_SLIP_RTOL
 from impactlab.dynamics.kernels.status import REGIME_NAMES, STATUS_MESSAGES
-from impactlab.dynamics.slip_batch import slip_batch
+from impactlab.dynamics.slip_batch import prepass_address, slip_batch
 from impactlab.dynamics.slipcore import slip_addresses
 from impactlab.friction import BATCH_FRICTION_IDS, FRICTION_IDS, PARTIAL_SLIP, PARTIAL_SLIP_CELLS
 
@@ -132,6 +132,7 @@ def run_arrays(
             slip_batch(
                 numba.get_num_threads(), lid, lp, bp, init, mu_a, g, bool(constant_angle), r,
                 bool(diagnostics), PARTIAL_SLIP_CELLS, out, status, slip_addresses(),
+                prepass_address(),
             )  # fmt: skip
         _mark_extrapolated(lid, lp, out)
     elif n:

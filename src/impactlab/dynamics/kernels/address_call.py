@@ -64,10 +64,16 @@ def address_intrinsic(name: str, sig: Any) -> Callable[..., Any]:
 def compiled_addresses(functions: Sequence[tuple[Any, Any]]) -> tuple[int, ...]:
     """The entry points of the compiled ``(dispatcher, signature)`` pairs, compiled (or loaded
     from the cache) here, with the cyclic garbage collector paused meanwhile (as
-    ``impactlab._compile_gc`` pauses it around a compile)."""
+    ``impactlab._compile_gc`` pauses it around a compile). Each is compiled for its argument
+    types, as a call from Python compiles it (numba's cache keys a compile by the signature it
+    was asked for: with the return type, a compile that a call from Python left in the cache
+    was not found), and the return type is then checked against the signature's."""
     collecting = gc.isenabled()
     gc.disable()
     try:
+        for fn, sig in functions:
+            if tuple(sig.args) not in fn.overloads:
+                fn.compile(tuple(sig.args))
         return tuple(int(_get_jit_address(fn, sig)) for fn, sig in functions)
     finally:
         if collecting:
