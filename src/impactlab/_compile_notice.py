@@ -28,8 +28,8 @@ DELAY_S = 1.0
 #: CPU seconds on a 2-core machine, as measured by benchmarks/bench_compile.py).
 PARTS: tuple[tuple[str, str, int], ...] = (
     ("impactlab.dynamics.slipcore", "the partial-slip impact engine", 20),
-    ("impactlab.dynamics.flexcore.batch", "the flexible-rod drop batch", 30),
-    ("impactlab.dynamics.slip_batch", "the partial-slip batch engine", 20),
+    ("impactlab.dynamics.flexcore.batch", "the flexible-rod drop batch", 10),
+    ("impactlab.dynamics.slip_batch", "the partial-slip batch engine", 10),
     ("impactlab.dynamics.flexcore", "the flexible-rod drop engine", 25),
     ("impactlab.dynamics.core.batch", "the parallel batch engine", 20),
     ("impactlab.dynamics.core", "the impact engine", 25),

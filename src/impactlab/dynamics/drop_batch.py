@@ -35,7 +35,13 @@ from impactlab.dynamics.drop_checks import (
     energy_balance_error,
 )
 from impactlab.dynamics.flexcore import layout as F
-from impactlab.dynamics.flexcore.batch import CK_E0, CK_FLAGS, N_CHECKS, drop_batch
+from impactlab.dynamics.flexcore.batch import (
+    CK_E0,
+    CK_FLAGS,
+    N_CHECKS,
+    drop_address,
+    drop_batch,
+)
 from impactlab.dynamics.flexcore.indirect import batch_addresses
 from impactlab.dynamics.flexcore.model import constants, model_tuple
 from impactlab.dynamics.history import readonly_copy
@@ -244,7 +250,7 @@ def simulate_drops(
         st = np.zeros(init.shape[0], dtype=np.int32)
         drop_batch(numba.get_num_threads(), mdl, np.ascontiguousarray(init),
                    np.ascontiguousarray(mu_run[run]), np.ascontiguousarray(fid[run]), r, t_end,
-                   stop_mode, o, ck, st)  # fmt: skip
+                   stop_mode, o, ck, st, drop_address())  # fmt: skip
         status[run], out[run], checks[run] = st, o, ck
     _refuse_inaccurate(out, checks, status, r)
     done = status == 0

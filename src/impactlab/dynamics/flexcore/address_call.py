@@ -79,6 +79,14 @@ RECORD_SIGNATURE = types.Tuple((_F2, types.int64))(
 CELLS_SIGNATURE = types.boolean(types.int64, types.int64, MODEL, _F2, _F1, _F1, _F1, _F2, _F2, _F2)
 
 
+#: ``driver.drop`` as ``simulate_drop`` calls it from Python: mdl, vx0, vy0, w0, rtol, t_max,
+#: stop_mode, record_on, out, contacts, dents, yfinal; (status, contacts, dents, history,
+#: rows). The batch calls it through its address (``batch.drop_address``).
+DROP_SIGNATURE = types.Tuple((types.int64, types.int64, types.int64, _F2, types.int64))(
+    MODEL, *(types.float64,) * 5, types.int64, types.boolean, _F1, _F2, _F2, _F1
+)
+
+
 #: The intrinsics: compiled code calls them as ``call_rates(address, *args)``.
 call_rates = address_intrinsic("call_rates", RATES_SIGNATURE)
 call_step = address_intrinsic("call_step", STEP_SIGNATURE)
@@ -88,3 +96,4 @@ call_coast = address_intrinsic("call_coast", COAST_SIGNATURE)
 call_outputs = address_intrinsic("call_outputs", OUTPUTS_SIGNATURE)
 call_record = address_intrinsic("call_record", RECORD_SIGNATURE)
 call_cells = address_intrinsic("call_cells", CELLS_SIGNATURE)
+call_drop = address_intrinsic("call_drop", DROP_SIGNATURE)

@@ -33,9 +33,12 @@ from impactlab.dynamics.flexcore.address_call import (
     AT_RECORD,
     AT_RHS,
     AT_STEP,
+    DROP_SIGNATURE,
+    call_drop,
 )
 from impactlab.dynamics.flexcore.driver import drop
 from impactlab.dynamics.kernels._jit import njit_internal
+from impactlab.dynamics.kernels.address_call import compiled_addresses
 from impactlab.dynamics.kernels.cells import CP_DX, N_CELLS
 from impactlab.dynamics.kernels.quality import energy_gained, gravity_dominated
 from impactlab.flags import FLAG_ENERGY_GAIN, FLAG_GRAVITY_DOMINATED, FLAG_OTHER_END
@@ -119,16 +122,17 @@ def case_model(mdl, angle, mu, fid, w0, w1, max_steps):
 
 
 @njit(cache=True, error_model="numpy")
-def _run(mdl, vx, vy, w, rtol, t_max, stop_mode, no_history, out, contacts, dents):
-    """One drop on zeroed tables: (status, n_contacts)."""
+def _run(drop_at, mdl, vx, vy, w, rtol, t_max, stop_mode, no_history, out, contacts, dents):
+    """One drop (``driver.drop`` at its address ``drop_at``) on zeroed tables: (status,
+    n_contacts)."""
     contacts[:] = 0.0
     dents[:] = 0.0
     n = 6 + 2 * mdl[3].shape[0] + F.NQUAD
     if mdl[2][F.FC_FRIC] == F.FR_PARTIAL:
         n += F.NE * F.NCS
     yfinal = np.zeros(n)
-    st, ncon, _nd, _h, _nh = drop(
-        mdl, vx, vy, w, rtol, t_max, stop_mode, no_history, out, contacts, dents, yfinal
+    st, ncon, _nd, _h, _nh = call_drop(
+        drop_at, mdl, vx, vy, w, rtol, t_max, stop_mode, no_history, out, contacts, dents, yfinal
     )
     return st, ncon
 
@@ -151,7 +155,7 @@ def cell_widths(law, p, contacts, n_contacts):
 
 
 @njit_internal
-def one_drop(mdl, init, mu, fid, rtol, t_max, stop_mode, out, checks):
+def one_drop(drop_at, mdl, init, mu, fid, rtol, t_max, stop_mode, out, checks):
     """One case of the batch: fills ``out`` (layout.N_DROP_OUT) and ``checks`` (N_CHECKS);
     returns its status."""
     contacts = np.zeros((F.MAX_CONTACTS, F.NCR))
@@ -163,13 +167,15 @@ def one_drop(mdl, init, mu, fid, rtol, t_max, stop_mode, out, checks):
     max_steps = F.DROP_MAX_STEPS
     if fid == F.FR_PARTIAL:  # the cells span the contact radius of a Mindlin pre-pass
         pre = case_model(mdl, angle, mu, np.int64(FR_MINDLIN), w0, w1, max_steps)
-        st, ncon = _run(pre, vx, vy, w, rtol, t_max, stop_mode, no_history, out, contacts, dents)
+        st, ncon = _run(
+            drop_at, pre, vx, vy, w, rtol, t_max, stop_mode, no_history, out, contacts, dents
+        )
         if st != F.ST_OK:
             return st
         w0, w1 = cell_widths(mdl[0], mdl[1], contacts, ncon)
         max_steps = max(F.PARTIAL_MIN_STEPS, F.PARTIAL_STEP_FACTOR * int(out[F.O_N_STEPS]))
     m = case_model(mdl, angle, mu, fid, w0, w1, max_steps)
-    st, ncon = _run(m, vx, vy, w, rtol, t_max, stop_mode, no_history, out, contacts, dents)
+    st, ncon = _run(drop_at, m, vx, vy, w, rtol, t_max, stop_mode, no_history, out, contacts, dents)
     if st != F.ST_OK:
         return st
     c = mdl[2]
@@ -180,7 +186,7 @@ def one_drop(mdl, init, mu, fid, rtol, t_max, stop_mode, out, checks):
 
 
 @njit(cache=True, parallel=True, error_model="numpy")
-def drop_batch(threads, mdl, init, mu, fid, rtol, t_max, stop_mode, out, checks, status):
+def drop_batch(threads, mdl, init, mu, fid, rtol, t_max, stop_mode, out, checks, status, drop_at):
     """Run ``init.shape[0]`` drops on ``threads`` loops (pass ``numba.get_num_threads()``).
 
     ``mdl``: the model tuple of the body and law (its constants' angle, mu, friction and
@@ -190,10 +196,24 @@ def drop_batch(threads, mdl, init, mu, fid, rtol, t_max, stop_mode, out, checks,
     vx, vy, spin]; ``mu``: (N,) the friction coefficient each case runs with; ``fid``: (N,)
     int64 friction ids; rtol, t_max [s], stop_mode as ``drop``. Fills ``out`` (N,
     layout.N_DROP_OUT), ``checks`` (N, N_CHECKS: E0 [J] and the flags but LAW_EXTRAPOLATED)
-    and ``status`` (N,) int32."""
+    and ``status`` (N,) int32; ``drop_at``: the address of ``driver.drop``
+    (``drop_address``)."""
     n = init.shape[0]
     nt = max(1, min(threads, n))
     for t in prange(nt):
         for i in range(t, n, nt):
-            status[i] = one_drop(mdl, init[i], mu[i], fid[i], rtol, t_max, stop_mode, out[i],
-                                 checks[i])  # fmt: skip
+            status[i] = one_drop(drop_at, mdl, init[i], mu[i], fid[i], rtol, t_max, stop_mode,
+                                 out[i], checks[i])  # fmt: skip
+
+
+_DROP: list[int] = []
+
+
+def drop_address() -> int:
+    """The entry point of ``driver.drop`` (``address_call.DROP_SIGNATURE``, the compile
+    ``simulate_drop`` uses; compiled, or loaded from the cache, on first use, then kept for the
+    process): the batch calls it through its address, so that its library does not generate
+    the drop again."""
+    if not _DROP:
+        _DROP.extend(compiled_addresses(((drop, DROP_SIGNATURE),)))
+    return _DROP[0]
