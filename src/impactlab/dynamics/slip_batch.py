@@ -13,6 +13,7 @@ core's frictionless impact is returned.
 from __future__ import annotations
 
 import math
+from functools import cache
 
 import numpy as np
 from numba import njit, prange, types
@@ -40,15 +41,13 @@ IMPACT_SIGNATURE = types.Tuple((types.int64, types.float64[:, ::1], types.int64)
     types.boolean, types.boolean, _F1,
 )  # fmt: skip
 call_impact = address_intrinsic("call_impact", IMPACT_SIGNATURE)
-_PREPASS: list[int] = []
 
 
+@cache
 def prepass_address() -> int:
     """The entry point of the rigid core's ``impact`` (``IMPACT_SIGNATURE``; compiled, or
     loaded from the cache, on first use, then kept for the process)."""
-    if not _PREPASS:
-        _PREPASS.extend(compiled_addresses(((impact, IMPACT_SIGNATURE),)))
-    return _PREPASS[0]
+    return compiled_addresses(((impact, IMPACT_SIGNATURE),))[0]
 
 
 @register_jitable

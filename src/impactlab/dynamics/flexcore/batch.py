@@ -15,6 +15,7 @@ differ little, so each thread gets its share of the costly ones.
 from __future__ import annotations
 
 import math
+from functools import cache
 
 import numpy as np
 from numba import njit, prange
@@ -206,14 +207,10 @@ def drop_batch(threads, mdl, init, mu, fid, rtol, t_max, stop_mode, out, checks,
                                  out[i], checks[i])  # fmt: skip
 
 
-_DROP: list[int] = []
-
-
+@cache
 def drop_address() -> int:
     """The entry point of ``driver.drop`` (``address_call.DROP_SIGNATURE``, the compile
     ``simulate_drop`` uses; compiled, or loaded from the cache, on first use, then kept for the
     process): the batch calls it through its address, so that its library does not generate
     the drop again."""
-    if not _DROP:
-        _DROP.extend(compiled_addresses(((drop, DROP_SIGNATURE),)))
-    return _DROP[0]
+    return compiled_addresses(((drop, DROP_SIGNATURE),))[0]

@@ -16,6 +16,8 @@ from the cache.
 
 from __future__ import annotations
 
+from functools import cache
+
 from impactlab.dynamics.flexcore.address_call import (
     ACCEPT_SIGNATURE,
     AT_CELLS,
@@ -39,9 +41,8 @@ from impactlab.dynamics.flexcore.stepper import dp_step_cells, dp_step_rates
 from impactlab.dynamics.flexcore.steps import accept
 from impactlab.dynamics.kernels.address_call import compiled_addresses
 
-_ADDRESSES: dict[bool, tuple[int, ...]] = {}
 
-
+@cache
 def addresses(partial_slip: bool) -> tuple[int, ...]:
     """The entry points (``address_call.AT_*``) of the right-hand side and of the step
     (``rates_cells`` and ``dp_step_cells`` for partial slip, else ``rates`` and
@@ -49,21 +50,19 @@ def addresses(partial_slip: bool) -> tuple[int, ...]:
     and the history row, and of the cell switches (``cellswitch.cell_action``; 0 without
     partial slip: never called, never compiled): compiled, or loaded from the cache, on first
     use, then kept for the process."""
-    if partial_slip not in _ADDRESSES:
-        functions = [
-            (rates_cells if partial_slip else rates, RATES_SIGNATURE),
-            (dp_step_cells if partial_slip else dp_step_rates, STEP_SIGNATURE),
-            (handle_events, EVENTS_SIGNATURE),
-            (accept, ACCEPT_SIGNATURE),
-            (out_of_contact, COAST_SIGNATURE),
-            (fill_outputs, OUTPUTS_SIGNATURE),
-            (history_row, RECORD_SIGNATURE),
-        ]
-        if partial_slip:
-            functions.append((cell_action, CELLS_SIGNATURE))
-        found = compiled_addresses(functions)
-        _ADDRESSES[partial_slip] = found if partial_slip else (*found, 0)
-    return _ADDRESSES[partial_slip]
+    functions = [
+        (rates_cells if partial_slip else rates, RATES_SIGNATURE),
+        (dp_step_cells if partial_slip else dp_step_rates, STEP_SIGNATURE),
+        (handle_events, EVENTS_SIGNATURE),
+        (accept, ACCEPT_SIGNATURE),
+        (out_of_contact, COAST_SIGNATURE),
+        (fill_outputs, OUTPUTS_SIGNATURE),
+        (history_row, RECORD_SIGNATURE),
+    ]
+    if partial_slip:
+        functions.append((cell_action, CELLS_SIGNATURE))
+    found = compiled_addresses(functions)
+    return found if partial_slip else (*found, 0)
 
 
 def batch_addresses(partial_slip: bool) -> tuple[int, int, int]:

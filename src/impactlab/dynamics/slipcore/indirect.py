@@ -8,6 +8,8 @@ the process.
 
 from __future__ import annotations
 
+from functools import cache
+
 from impactlab.dynamics.kernels.address_call import compiled_addresses
 from impactlab.dynamics.slipcore.address_call import (
     FIRST_EVENT_SIGNATURE,
@@ -21,24 +23,19 @@ from impactlab.dynamics.slipcore.outputs import dense_rows, history_row
 from impactlab.dynamics.slipcore.restart import switch_at_event
 from impactlab.dynamics.slipcore.stepper import dp_step_slip, slip_first_event, slip_integrate_to
 
-_ADDRESSES: list[tuple[int, ...]] = []
 
-
+@cache
 def addresses() -> tuple[int, ...]:
     """The entry points (``address_call.SA_*``) of ``stepper.dp_step_slip``,
     ``stepper.slip_first_event``, ``stepper.slip_integrate_to``, ``restart.switch_at_event``,
     ``outputs.history_row`` and ``outputs.dense_rows``."""
-    if not _ADDRESSES:
-        _ADDRESSES.append(
-            compiled_addresses(
-                (
-                    (dp_step_slip, STEP_SIGNATURE),
-                    (slip_first_event, FIRST_EVENT_SIGNATURE),
-                    (slip_integrate_to, INTEGRATE_TO_SIGNATURE),
-                    (switch_at_event, SWITCH_SIGNATURE),
-                    (history_row, RECORD_SIGNATURE),
-                    (dense_rows, ROWS_SIGNATURE),
-                )
-            )
+    return compiled_addresses(
+        (
+            (dp_step_slip, STEP_SIGNATURE),
+            (slip_first_event, FIRST_EVENT_SIGNATURE),
+            (slip_integrate_to, INTEGRATE_TO_SIGNATURE),
+            (switch_at_event, SWITCH_SIGNATURE),
+            (history_row, RECORD_SIGNATURE),
+            (dense_rows, ROWS_SIGNATURE),
         )
-    return _ADDRESSES[0]
+    )
