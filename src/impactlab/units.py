@@ -20,6 +20,7 @@ string) and the range checks.
 from __future__ import annotations
 
 import math
+import re
 from functools import lru_cache
 from typing import TYPE_CHECKING, Any
 
@@ -52,13 +53,47 @@ def has_unit(value: Any) -> bool:
     return is_quantity(value) and not getattr(value, "unitless", False)
 
 
+#: A leading number (sign, digits, decimal point, exponent) and what follows it.
+_LEADING_NUMBER = re.compile(r"\s*[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?(.*)")
+#: A number standing on its own (not an exponent such as the 2 of ``m^2``).
+_LONE_NUMBER = re.compile(r"(?:^|[\s(])[+-]?\.?\d")
+
+
+def _angle_power(items: Any) -> float:
+    """The summed power of the dimensionless units (angles, percent; not pi) among ``items``
+    ((unit name, exponent) pairs)."""
+    reg = registry()
+    return sum(e for u, e in items if u != "pi" and reg.Unit(u).dimensionless)
+
+
+def _one_number_one_unit(name: str, text: str, q: Any, unit: str) -> None:
+    """ValueError naming ``name`` unless ``text`` is one quantity: pint multiplies what stands
+    side by side, so ``"20 deg 3"`` would be 60 deg, ``"1.41 m/s 2"`` 2.82 m/s and
+    ``"20 deg deg"`` (deg^2, dimensionless as deg is) 0.35 deg. Refused: a second number after
+    the leading one, and angle units (dimensionless in pint) to another power than that of
+    ``unit`` or 0 (1 for rad, deg and rad/s, where rpm has none; 0 for a length or a speed)."""
+    lead = _LEADING_NUMBER.fullmatch(text)
+    if lead is not None and _LONE_NUMBER.search(lead.group(1)):
+        raise ValueError(
+            f"{name}: {text!r} holds more than one number (pint would multiply them); write "
+            f"one number and its unit, e.g. '1.0 {unit}'"
+        )
+    power = _angle_power(q.unit_items())
+    if power not in (0, _angle_power(registry().Unit(unit)._units.items())):
+        raise ValueError(
+            f"{name}: {text!r} has dimensionless units (angles such as deg, or percent) to the "
+            f"power {power:g}; write one number and one unit of {unit}, e.g. '1.0 {unit}'"
+        )
+
+
 def _parse(name: str, text: str, unit: str) -> Any:
-    """``text`` as a Quantity of impactlab's registry; ValueError naming ``name``."""
+    """``text`` as a Quantity of impactlab's registry (one number and its unit:
+    ``_one_number_one_unit``); ValueError naming ``name``."""
     text = text.strip()
     if not text:
         raise ValueError(f"{name} is empty; expected a quantity in {unit}, e.g. '1.0 {unit}'")
     try:
-        return registry().Quantity(text)
+        q = registry().Quantity(text)
     except Exception as exc:  # pint's parser raises several unrelated types
         if type(exc).__name__ == "OffsetUnitCalculusError":  # "20 degC": a temperature
             raise ValueError(
@@ -66,6 +101,8 @@ def _parse(name: str, text: str, unit: str) -> Any:
                 f"expected a quantity in {unit}, e.g. '20 deg' for an angle"
             ) from None
         raise ValueError(f"{name}: cannot parse {text!r} as a quantity ({exc})") from None
+    _one_number_one_unit(name, text, q, unit)
+    return q
 
 
 def _convert(name: str, q: Any, unit: str, shown: Any) -> Any:
@@ -110,9 +147,13 @@ def magnitude(name: str, value: Any, unit: str) -> Any:
     if isinstance(value, str):
         q = _parse(name, value, unit)
         if q.unitless:
+            lead = _LEADING_NUMBER.fullmatch(value)
+            bare = lead is not None and not lead.group(1).strip()
+            example = f"{value.strip()} {unit}" if bare else f"1.0 {unit}"
+            what = "has no unit" if bare else f"is a pure number ({q:~})"
             raise ValueError(
-                f"{name}: the string {value!r} has no unit; pass a number in {unit} or a string "
-                f"with units, e.g. '{value.strip()} {unit}'"
+                f"{name}: the string {value!r} {what}; pass a number in {unit} or a string "
+                f"with units, e.g. '{example}'"
             )
         return float(_convert(name, q, unit, value).magnitude)
     if is_quantity(value):
@@ -131,6 +172,12 @@ def to_si(value: Any, unit: str, *, name: str = "value") -> float:
     else:
         q = _parse(name, str(value), unit)
         if q.unitless:
+            lead = _LEADING_NUMBER.fullmatch(str(value))
+            if lead is None or lead.group(1).strip():
+                raise ValueError(
+                    f"{name}: {value!r} is a pure number ({q:~}); give a number in {unit} or "
+                    f"one with its unit, e.g. '1.0 {unit}'"
+                )
             q = float(q.magnitude) * target  # a bare number means "in the stated unit"
     x = float(_convert(name, q, unit, value).to_base_units().magnitude)
     if not math.isfinite(x):

@@ -6,6 +6,7 @@ import dataclasses
 import json
 import math
 import sys
+import warnings
 
 import numpy as np
 import pint
@@ -317,3 +318,21 @@ def test_invert_takes_units_and_quantities_of_any_registry():
     assert r.duration == pytest.approx(ref.duration, rel=1e-12)
     assert r.inputs["sliding_length"] == pytest.approx((1.4e-3, 0.0))
     assert r.seed == 0 and isinstance(an.invert(**BASE, seed=np.int64(3)).seed, int)
+
+
+def test_a_velocity_change_that_contradicts_e_warns() -> None:
+    base = {"angle": math.radians(20), "v_i": -1.41, "mu": 0.2, "delta_p": 22e-6,
+            "sliding_length": 1400e-6}  # fmt: skip
+    plain = an.invert(**base, e=0.5)
+    consistent = 1.5 * 1.41 / (plain.K_y * PAPER_ROD.mass)  # F T = (1 + e)|v_i| / K_y = m dv_cy
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # consistent inputs: no warning
+        agreed = an.invert(**base, e=0.5, dv_cy=consistent)
+    assert agreed.F_momentum == pytest.approx(agreed.F_rigid, rel=1e-12)
+    with pytest.warns(il.ImplausibleInputWarning, match=r"implies e = 23.* outside \[0, 1\]"):
+        wild = an.invert(**base, e=0.5, dv_cy=10.0)
+    assert "F from the rigid-body identity (with e): 69.31" in str(wild)
+    with pytest.warns(il.ImplausibleInputWarning, match="but e = 0.5 was measured"):
+        an.invert(**base, e=0.5, dv_cy=1.3 * consistent)
+    with pytest.warns(il.ImplausibleInputWarning, match="outside"):
+        an.invert(**base, dv_cy=0.9)  # e > 1 without e given

@@ -168,3 +168,14 @@ def test_law_parameters_take_their_units_and_refuse_text(paper_pair: ContactPair
         get_law("ghaednia").build(paper_pair, 8.8e-3, published_switch="1")
     with pytest.raises(ValueError, match="law_params must be a mapping"):
         brake.parameter_values("abc")
+
+
+def test_a_switch_parameter_takes_true_and_false(paper_pair: ContactPair) -> None:
+    law = get_law("ghaednia")
+    for flag, number in ((True, 1.0), (False, 0.0), (np.bool_(True), 1.0)):
+        assert law.parameter_values({"published_switch": flag}) == {"published_switch": number}
+    on = law.build(paper_pair, 8.8e-3, published_switch=True)
+    same = law.build(paper_pair, 8.8e-3, published_switch=1)
+    assert np.array_equal(on.params, same.params, equal_nan=True)
+    with pytest.raises(ValueError, match="bool"):  # a bool for a quantity stays refused
+        get_law("thornton").parameter_values({"limit_pressure_ratio": True})

@@ -20,13 +20,21 @@ from impactlab.sweep import Study
 @settings(deadline=None, max_examples=30)
 @given(L=st.floats(0.05, 1.0), d=st.floats(0.002, 0.03))
 def test_rigid_and_flexible_rods_agree_on_the_mass_from_the_diameter(L, d) -> None:
-    rod = Rod(length=L, tip_radius=0.4 * d, diameter=d, material=BRASS_C360)
+    rod = Rod(length=L, tip_radius=0.5 * d, diameter=d, material=BRASS_C360)
     assert rod.mass == pytest.approx(BRASS_C360.density * math.pi * d * d / 4 * L, rel=1e-14)
     if L / d >= 2:
-        flex = FlexibleRod(length=L, tip_radius=0.4 * d, diameter=d, material=BRASS_C360)
+        flex = FlexibleRod(length=L, tip_radius=0.5 * d, diameter=d, material=BRASS_C360)
         assert flex.mass == pytest.approx(rod.mass, rel=1e-14)
-    again = Rod(length=L, tip_radius=0.4 * d, mass=rod.mass * 1.01, diameter=d, material=BRASS_C360)
+    again = Rod(length=L, tip_radius=0.5 * d, mass=rod.mass * 1.01, diameter=d, material=BRASS_C360)
     assert again.mass == rod.mass * 1.01  # within 2 %: the given mass is kept
+
+
+def test_a_rod_wider_than_its_tip_is_refused() -> None:
+    # d > 2R: the end face's rim stands out beside the tip and strikes first at shallow angles
+    for body in (Rod, FlexibleRod):
+        with pytest.raises(ValueError, match=r"exceeds twice the tip radius .* below 84.3 deg"):
+            body(length=0.2, tip_radius=0.001, diameter=0.02)
+    assert Rod(length=0.2, tip_radius=0.01, diameter=0.02).diameter == 0.02  # d = 2R: accepted
 
 
 def test_mass_and_diameter_checked_against_the_density() -> None:

@@ -81,6 +81,32 @@ def test_magnitude_refuses_what_is_not_a_quantity_of_the_unit(value: object, mat
 
 
 @pytest.mark.parametrize(
+    ("name", "text", "unit", "match"),
+    [
+        ("angle", "20 deg 3", "rad", "holds more than one number"),  # pint: 60 deg
+        ("vy", "1.41 m/s 2", "m/s", "holds more than one number"),  # pint: 2.82 m/s
+        ("length", "1 000 m", "m", "holds more than one number"),
+        ("angle", "20 deg deg", "rad", "dimensionless units .* to the power 2"),  # pint: deg^2
+        ("length", "5 deg m", "m", "dimensionless units .* to the power 1"),
+        ("angle", "20 percent", "rad", r"is a pure number \(20 %\).*'1.0 rad'"),
+    ],
+)
+def test_text_is_one_number_and_one_unit(name: str, text: str, unit: str, match: str) -> None:
+    with pytest.raises(ValueError, match=f"{name}: .*{match}"):
+        magnitude(name, text, unit)
+    with pytest.raises(ValueError, match=name):
+        to_si(text, unit, name=name)
+
+
+def test_unit_expressions_that_stay_allowed() -> None:
+    assert magnitude("angle", "pi/4 rad", "rad") == pytest.approx(math.pi / 4)
+    assert magnitude("spin", "3 rpm", "rad/s") == pytest.approx(0.1 * math.pi)
+    assert magnitude("spin", "20 deg/s", "rad/s") == pytest.approx(math.radians(20))
+    assert magnitude("g", "9.81 m/s^2", "m/s^2") == 9.81
+    assert magnitude("x", "-1.5e-3 m", "m") == -1.5e-3
+
+
+@pytest.mark.parametrize(
     ("value", "match"),
     [
         ("0.2", r"mu must be a real number, got the string '0.2': write mu=0.2"),

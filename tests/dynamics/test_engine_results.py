@@ -171,6 +171,7 @@ def test_batch_result() -> None:
     assert len(b) == 3 and np.all(b.ok)
     single = simulate(PAPER_ROD, **PAPER)
     assert b.e[1] == single.e  # bitwise the same engine
+    assert (b.velocity_out[0][1], b.velocity_out[1][1]) == single.velocity_out
     assert b["e"] is not None and b.mu[2] == 1.0
     assert [REGIME_NAMES[int(c)] for c in b.regime] == ["slip", "slip", "stick"]
     df = b.to_dataframe()

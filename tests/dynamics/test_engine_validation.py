@@ -22,7 +22,7 @@ from impactlab.dynamics import (
 )
 from impactlab.flags import ResultFlag
 from impactlab.friction import get_friction
-from impactlab.materials import AISI_1010
+from impactlab.materials import AISI_1010, AL_6061_T6
 
 OK = {"angle": math.radians(20), "velocity": (0.0, -1.41), "mu": 0.2}
 
@@ -69,8 +69,12 @@ def test_rod_defaults_and_paper_preset() -> None:
     [
         ({"mu": -0.1}, "mu must be >= 0"),
         ({"mu": math.nan}, "mu must be finite"),
-        ({"angle": 20.0}, "looks like degrees"),
-        ({"angle": 90.0}, "looks like degrees"),
+        ({"angle": 20.0}, r"got 20.0 rad \(1145.92 deg\); if 20.0 is meant in degrees"),
+        ({"angle": 90.0}, "if 90.0 is meant in degrees"),
+        ({"angle": 1.6}, r"got 1.6 rad \(91.6732 deg\); if 1.6 is meant in degrees"),
+        ({"mu": 2e3}, r"mu must lie in \[0, 1000\]"),
+        ({"velocity": {"vx": 0.0, "vy": -1.41}}, "velocity must be a pair .* got a dict"),
+        ({"velocity": {0.0, -1.41}}, "velocity must be a pair .* got a set"),
         ({"angle": -0.2}, r"angle must be in radians in \(0, pi/2\]"),
         ({"angle": 120.0}, r"angle must be in radians"),
         ({"angle": None}, "angle is required"),
@@ -111,6 +115,19 @@ def test_contact_model_radius_mismatch() -> None:
     model = contact_model(Sphere(0.01), AISI_1010, "hertz")
     with pytest.raises(ValueError, match="differs from the body's tip radius"):
         simulate(PAPER_ROD, law=model, **OK)
+
+
+def test_contact_model_of_another_pair_is_refused() -> None:
+    # built for the rod on aluminium, passed with the steel flat: the dent would be one pair's,
+    # the Mindlin stiffness G* and the result's labels the other's
+    model = contact_model(PAPER_ROD, AL_6061_T6, "ghaednia")
+    for friction in ("coulomb", "mindlin"):
+        with pytest.raises(ValueError, match="built for another contact pair: its E\\*"):
+            simulate(PAPER_ROD, AISI_1010, law=model, friction=friction, **OK)
+    with pytest.raises(ValueError, match="another contact pair"):
+        simulate_batch(PAPER_ROD, AISI_1010, law=model, angle=0.35, vy=-1.41)
+    same = simulate(PAPER_ROD, AL_6061_T6, law=model, **OK)
+    assert same.e == simulate(PAPER_ROD, AL_6061_T6, law="ghaednia", **OK).e
 
 
 def test_bad_body_and_flat() -> None:
@@ -257,7 +274,9 @@ def test_a_tip_wider_than_the_rod_is_refused_and_odd_sizes_warn() -> None:
     with pytest.warns(ImplausibleInputWarning, match="mass = 4607.0 kg"):
         Rod(length=0.3048, tip_radius=0.0088, mass=4607.0)
     with pytest.warns(ImplausibleInputWarning, match="radius = 0.6 m"):
-        Sphere(0.6, mass=1.0)
+        Sphere(0.6, mass=500.0)
+    with pytest.warns(ImplausibleInputWarning, match=r"density = 884194\d*\.\d* kg/m\^3"):
+        Sphere(0.003, mass=10.0)  # 11 000 times steel's density: a unit mistake
     assert Rod(length="30.48 cm", tip_radius="8.8 mm", mass="460.7 g") == PAPER_ROD
 
 
@@ -287,3 +306,31 @@ def test_an_impact_that_never_separates_names_the_approach_speed(gravity: bool) 
     with pytest.raises(ValueError, match=r"approached the flat at 1e-200 m/s") as info:
         simulate(Rod.paper(), AISI_1010, angle=0.35, velocity=(0.0, -1e-200), gravity=gravity)
     assert ("gravity=False" in str(info.value)) is gravity
+
+
+@pytest.mark.filterwarnings("ignore::impactlab.ImplausibleInputWarning")
+@pytest.mark.parametrize(
+    ("kwargs", "match"),
+    [
+        ({"velocity": (1e300, -1.0)}, r"velocity\[0\] \(vx\) = 1e\+300 m/s exceeds 10000 m/s"),
+        ({"velocity": (0.0, -2e4)}, r"velocity\[1\] \(vy\) = -20000.0 m/s exceeds"),
+        ({"spin": 1e10}, r"the contact point's speed \(from the spin\) .* exceeds 10000 m/s"),
+        ({"mu": 1e300}, r"mu must lie in \[0, 1000\]"),
+        ({"gravity": 1e300}, r"gravity must lie in \[0, 1e\+07\] m/s\^2"),
+    ],
+)
+def test_inputs_beyond_their_bounds_name_the_parameter(kwargs, match) -> None:
+    # beyond these the energy bookkeeping overflows or cancels (a NaN or a 0.0 work)
+    args = {**OK, "velocity": (0.0, -1.0), **kwargs}
+    with pytest.raises(ValueError, match=match):
+        simulate(PAPER_ROD, **args)
+
+
+@pytest.mark.filterwarnings("ignore::impactlab.ImplausibleInputWarning")
+def test_batch_cases_beyond_the_bounds_are_refused_per_case() -> None:
+    b = simulate_batch(
+        PAPER_ROD, angle=0.35, vx=[1e300, 0.0, 0.0, 0.0], vy=-1.0, mu=[0.2, 1e300, 0.2, 0.2],
+        spin=[0.0, 0.0, 1e10, 0.0],
+    )  # fmt: skip
+    assert list(b.status) == [4, 4, 4, 0] and "speeds up to 1e4 m/s" in b.messages[0]
+    assert np.isnan(b.energy_dissipated[:3]).all() and np.isfinite(b.energy_dissipated[3])

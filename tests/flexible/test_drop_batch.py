@@ -65,7 +65,7 @@ def _check_equal(body, kwargs: dict, cases: dict[str, np.ndarray]) -> np.ndarray
     for i in range(len(drops)):
         case = {k: float(v[i]) for k, v in cases.items()}
         status, row, extra = _expected(body, kwargs, case)
-        assert drops.status[i] == status, (case, drops.messages()[i])
+        assert drops.status[i] == status, (case, drops.messages[i])
         got = drops.out[i, kept]
         assert np.array_equal(got, row[kept], equal_nan=True), (case, got - row[kept])
         mine = [drops.initial_energy[i], float(drops.flags[i]), drops.max_delta_ratio[i]]
@@ -114,6 +114,22 @@ def test_recontacts_and_a_failed_drop() -> None:
     assert (drops["n_contacts"] > 1).any()
     short = _check_equal(ROD, {**kwargs, "t_max": 1e-6}, cases)
     assert (short == S.ST_TMAX).all()
+
+
+def test_ok_means_what_it_means_for_one_drop() -> None:
+    """ok as DropResult.ok (computed, no flag but the advisory ones); computed is the status;
+    flags are int64 and to_dataframe has every public field."""
+    drops = simulate_drops(Rod.paper(), angle="20 deg", vy=[-0.04, -1.41], mu=0.2)
+    speeds = (-0.04, -1.41)
+    single = [simulate_drop(Rod.paper(), angle="20 deg", velocity=(0.0, v), mu=0.2) for v in speeds]
+    assert drops.flags.dtype == np.int64 and list(drops.flags) == [r.flags for r in single]
+    assert list(drops.ok) == [r.ok for r in single] == [False, True]  # gravity-dominated
+    assert drops.computed.all() and drops.flagged.all()
+    assert drops.messages == ["ok", "ok"]
+    df = drops.to_dataframe()
+    assert {"angle", "e", "sequence_mean_force", "status", "flags"} <= set(df.columns)
+    beyond = simulate_drops(Rod.paper(), angle="20 deg", vx=[2e4, 0.0], vy=-1.41, mu=[0.2, 2e3])
+    assert list(beyond.status) == [S.ST_BAD_INPUT] * 2 and not beyond.computed.any()
 
 
 def test_rigid_rod_and_units() -> None:

@@ -175,6 +175,30 @@ def _forces(
     return F_rig, F_mom
 
 
+def _check_momentum(
+    meas: Mapping[str, Measured], m: float, K_y: float, T0: float, g: float
+) -> None:
+    """ImplausibleInputWarning when the measured dv_cy [m/s] implies a coefficient of
+    restitution outside [0, 1], or one that disagrees with the measured ``e`` beyond three
+    combined standard uncertainties (and 0.05): F T = m (dv_cy + g T) (Eq. 29) and
+    F T = ((1 + e)|v_i| + g T) / K_y (the rigid-body identity) give
+    e = (K_y m (dv_cy + g T) - g T) / |v_i| - 1."""
+    v = abs(meas["v_i"].value)
+    dv = meas["dv_cy"]
+    implied = (K_y * m * (dv.value + g * T0) - g * T0) / v - 1.0
+    sigma = K_y * m * dv.sigma / v
+    text = f"dv_cy = {dv.value!r} m/s implies e = {implied:.4g} (Eq. 29, rigid-body identity)"
+    if not -3.0 * sigma <= implied <= 1.0 + 3.0 * sigma:
+        warn_implausible(f"{text}, outside [0, 1]: no impact gives it; check dv_cy and its sign")
+    elif "e" in meas:
+        e = meas["e"]
+        if abs(implied - e.value) > max(0.05, 3.0 * math.hypot(sigma, e.sigma)):
+            warn_implausible(
+                f"{text}, but e = {e.value!r} was measured: the force from dv_cy "
+                "(F_momentum) and from e (F_rigid) disagree; check both"
+            )
+
+
 def _linear_sigmas(
     meas: Mapping[str, Measured], sens_T: Mapping[str, float], sens_F: Mapping[str, float]
 ) -> tuple[float, float]:
@@ -283,6 +307,8 @@ def _result(
     varied = any(v.sigma > 0 for v in meas.values())
     K_x, K_y, al, mu_c = coef
     F_rig, F_mom = _forces(meas, m, K_y, T0, opt["gravity"], opt["g"])
+    if "dv_cy" in meas:
+        _check_momentum(meas, m, K_y, T0, opt["g"] if opt["gravity"] else 0.0)
     return InversionResult(
         duration=T0,
         mean_force=float(F0_a),

@@ -167,6 +167,9 @@ class InversionResult:
             out("F", self.mean_force, self.sigma_F_linear, self.F_mc, self.sigma_F_mc)
             + f"  [{self.force_method}]",
         ]
+        if self.F_momentum is not None and self.F_rigid is not None:  # both inputs given
+            rigid = format_number(self.F_rigid)
+            lines.append(f"  F from the rigid-body identity (with e): {rigid} N")
         if uncertain and self.mc_rejected > 0:
             lines.append(
                 f"  note: {self.mc_rejected:.2%} of the Monte Carlo samples fell in the "

@@ -22,6 +22,25 @@ PLAUSIBLE_RADIUS = (1e-6, 0.5)
 PLAUSIBLE_MASS = (1e-6, 1e3)
 
 
+#: Plausible mean density [kg/m^3] of a body: from a hollow ball's (10) to beyond the densest
+#: metals' (osmium, 22 600).
+PLAUSIBLE_DENSITY = (10.0, 3e4)
+
+
+def check_tip_width(tip_radius: float, diameter: float | None) -> None:
+    """ValueError when a rod's ``diameter`` [m] exceeds twice its ``tip_radius`` [m] (to 1e-9):
+    the end face would then stand out beside the hemispherical tip, and at angles to the flat
+    below arccos(2R/d) its rim, not the tip, would strike first."""
+    if diameter is not None and diameter > 2.0 * tip_radius * (1.0 + 1e-9):
+        rim = math.degrees(math.acos(2.0 * tip_radius / diameter))
+        raise ValueError(
+            f"diameter ({diameter!r} m) exceeds twice the tip radius ({2.0 * tip_radius!r} m): "
+            "the rod's end face would stand out beside its hemispherical tip, and below "
+            f"{rim:.3g} deg to the flat its rim would strike before the tip (allowed: "
+            "diameter <= 2 tip_radius; the tip as wide as the rod or wider)"
+        )
+
+
 #: Largest relative difference between the density that mass, diameter and length imply
 #: (m / (pi d^2 / 4 L)) and the material's density when both mass and diameter are given.
 DENSITY_TOLERANCE = 0.02

@@ -28,6 +28,7 @@ from impactlab.bodies._checks import (
     PLAUSIBLE_MASS,
     PLAUSIBLE_RADIUS,
     check_material,
+    check_tip_width,
     plausible,
 )
 from impactlab.bodies.geometric import geometric_tensor
@@ -124,8 +125,10 @@ class FlexibleRod:
     diameter : diameter d [m]; None: from the mass, the length and the material's density.
         At least one of ``mass`` and ``diameter`` is required; given both, the density they
         imply must match the material's within ``DENSITY_TOLERANCE`` (2 %), and L/d must be
-        at least ``MIN_SLENDERNESS`` (2). Lengths, tip radii and masses outside the bounds of
-        ``impactlab.bodies._checks`` give an ImplausibleInputWarning, as for ``Rod``.
+        at least ``MIN_SLENDERNESS`` (2). A given diameter must not exceed 2R (else the end
+        face's rim, not the tip, strikes the flat at shallow angles). Lengths, tip radii and
+        masses outside the bounds of ``impactlab.bodies._checks`` give an
+        ImplausibleInputWarning, as for ``Rod``.
     material : the rod's material (E, nu, density; the contact pair's elastic constants).
     n_axial, n_bending : numbers of axial and bending free-free modes (integers in
         [0, ``MAX_MODES``] = [0, 128]).
@@ -162,6 +165,7 @@ class FlexibleRod:
         if self.mass is None and self.diameter is None:
             raise ValueError("give the mass [kg] or the diameter [m] of the rod (or both)")
         d = None if self.diameter is None else check_positive("diameter", self.diameter, "m")
+        check_tip_width(R, d)
         if self.mass is None:
             m = rho * math.pi * cast(float, d) ** 2 / 4.0 * L
         else:

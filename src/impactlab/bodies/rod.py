@@ -21,6 +21,7 @@ from impactlab.bodies._checks import (
     PLAUSIBLE_MASS,
     PLAUSIBLE_RADIUS,
     check_material,
+    check_tip_width,
     plausible,
     rod_mass,
 )
@@ -56,9 +57,10 @@ class Rod:
     Each quantity is a number in the SI unit above, a string with units (``"8.8 mm"``) or a
     pint Quantity of any registry; the fields hold SI floats.
 
-    Bounds: ValueError unless every quantity is finite and > 0 and ``tip_radius <= length / 2``
-    (a wider tip is not a rod); ImplausibleInputWarning (most likely a unit mistake) for a
-    length outside [1 mm, 10 m], a tip radius outside [1 um, 0.5 m] or a mass outside
+    Bounds: ValueError unless every quantity is finite and > 0, ``tip_radius <= length / 2``
+    (a wider tip is not a rod), ``diameter <= 2 tip_radius`` (else the end face's rim, not the
+    tip, strikes the flat at shallow angles); ImplausibleInputWarning (most likely a unit
+    mistake) for a length outside [1 mm, 10 m], a tip radius outside [1 um, 0.5 m] or a mass outside
     [1 mg, 1000 kg].
     """
 
@@ -81,6 +83,7 @@ class Rod:
         plausible("tip_radius", R, PLAUSIBLE_RADIUS, "m")
         check_material("material", self.material)
         d = None if self.diameter is None else check_positive("diameter", self.diameter, "m")
+        check_tip_width(R, d)
         given = None if self.mass is None else check_positive("mass", self.mass, "kg")
         m = plausible("mass", rod_mass(L, given, d, self.material), PLAUSIBLE_MASS, "kg")
         object.__setattr__(self, "diameter", d)

@@ -270,8 +270,8 @@ class ContactLaw(ABC):
     def parameter_values(self, params: Any) -> dict[str, float]:
         """The given law parameters ``params`` (a mapping of names to values) as floats in the
         parameters' units: a value is a number in its unit, or, for a parameter with a unit, a
-        string with units or a pint Quantity. ValueError for a non-mapping, an unknown name or
-        a bad value (naming it)."""
+        string with units or a pint Quantity; a 0/1 switch (``published_switch``) also True or
+        False. ValueError for a non-mapping, an unknown name or a bad value (naming it)."""
         if not isinstance(params, Mapping):
             raise ValueError(
                 f"law_params must be a mapping of parameter names to values, got {params!r}"
@@ -292,6 +292,9 @@ class ContactLaw(ABC):
         values = {}
         for name, v in params.items():
             unit = known[name].unit
+            if isinstance(v, bool | np.bool_) and name.endswith("_switch"):
+                values[name] = float(v)  # a 0/1 switch: True and False say it best
+                continue
             values[name] = check_finite(name, v, "" if unit == "-" else unit)
         return values
 

@@ -114,9 +114,14 @@ class Brake(ContactLaw):
         hb = values["hardness"]
         if math.isnan(hb):
             if not (pair.body.has_hardness and pair.flat.has_hardness):
+                missing = " and ".join(
+                    repr(m.name) for m in (pair.body, pair.flat) if not m.has_hardness
+                )
                 raise ValueError(
-                    "hardness: Brake's law needs the Brinell hardness of both materials "
-                    "(brinell_hardness) or an explicit hardness= value in kgf/mm^2"
+                    f"hardness: Brake's law needs the Brinell hardness of both materials, and "
+                    f"{missing} has none (brinell_hardness); give the material one, or the "
+                    "combined value as a law parameter: law_params={'hardness': ...} in "
+                    "kgf/mm^2 (a [law_params] table in a --config file on the command line)"
                 )
             hb = 1.0 / (2.0 / pair.body.brinell_hardness + 2.0 / pair.flat.brinell_hardness)
         hb = check_positive("hardness", hb, "kgf/mm^2")

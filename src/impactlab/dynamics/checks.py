@@ -25,7 +25,13 @@ from impactlab._validation import (
 )
 from impactlab.bodies import Rod, Sphere, lever_arms
 from impactlab.contact import ContactModel
-from impactlab.dynamics.kernels.layout import DEFAULT_RTOL, PARTIAL_SLIP_RTOL
+from impactlab.dynamics.kernels.layout import (
+    DEFAULT_RTOL,
+    MAX_GRAVITY,
+    MAX_MU,
+    MAX_SPEED,
+    PARTIAL_SLIP_RTOL,
+)
 from impactlab.dynamics.models import contact_model
 from impactlab.friction import FrictionKind, FrictionModel, get_friction
 from impactlab.materials import G0, Material
@@ -45,7 +51,35 @@ def gravity_value(gravity: Any) -> float:
         return 0.0
     if isinstance(gravity, bool | np.bool_):
         return G0 if gravity else 0.0
-    return check_nonnegative("gravity", gravity, "m/s^2")
+    g = check_nonnegative("gravity", gravity, "m/s^2")
+    if not g <= MAX_GRAVITY:
+        raise ValueError(
+            f"gravity must lie in [0, {MAX_GRAVITY:g}] m/s^2 (a million g), got {g!r} m/s^2"
+        )
+    return g
+
+
+def check_mu(mu: Any) -> float:
+    """The friction coefficient, in [0, MAX_MU] (dry contacts stay below about 2; beyond
+    MAX_MU every contact sticks alike)."""
+    m = check_nonnegative("mu", mu)
+    if not m <= MAX_MU:
+        raise ValueError(
+            f"mu must lie in [0, {MAX_MU:g}] (dry friction stays below about 2; a larger mu "
+            f"only sticks), got {m!r}"
+        )
+    return m
+
+
+def check_speed(name: str, speed: float) -> float:
+    """``speed`` [m/s] unless its magnitude exceeds MAX_SPEED (ValueError naming ``name``)."""
+    if not abs(speed) <= MAX_SPEED:
+        raise ValueError(
+            f"{name} = {speed!r} m/s exceeds {MAX_SPEED:g} m/s in magnitude, far beyond the "
+            "impacts a contact law of rigid bodies describes (and the energy balance would lose "
+            f"its digits); allowed: up to {MAX_SPEED:g} m/s"
+        )
+    return speed
 
 
 def check_rtol(rtol: Any) -> float:
@@ -81,8 +115,8 @@ def check_angle(angle: Any, body: Rod | Sphere) -> float:
     hint = ""
     if 0.5 * math.pi < th <= 90.0 + 1e-9:
         hint = (
-            f"; {th!r} looks like degrees: pass math.radians({th!r}) = "
-            f"{math.radians(th):.6g} rad or the string '{th:g} deg'"
+            f" ({math.degrees(th):.6g} deg); if {th!r} is meant in degrees, pass "
+            f"math.radians({th!r}) = {math.radians(th):.6g} rad or the string '{th:g} deg'"
         )
     raise ValueError(f"angle must be in radians in (0, pi/2], got {th!r} rad{hint}")
 
@@ -99,12 +133,17 @@ def check_velocity(velocity: Any) -> tuple[float, float]:
     """(vx, vy) [m/s] from a pair of finite numbers, strings with units or pint Quantities (or
     one pint Quantity holding the pair)."""
     velocity = magnitude("velocity", velocity, "m/s")
+    if isinstance(velocity, Mapping | set | frozenset):  # no order, or keys for values
+        raise ValueError(
+            f"velocity must be a pair (vx, vy) in m/s (a tuple or a list), got a "
+            f"{type(velocity).__name__}: {velocity!r}"
+        )
     try:
         vx, vy = velocity
     except (TypeError, ValueError):
         raise ValueError(f"velocity must be a pair (vx, vy) in m/s, got {velocity!r}") from None
     return tuple(  # type: ignore[return-value]
-        check_finite(name, v, "m/s")
+        check_speed(name, check_finite(name, v, "m/s"))
         for name, v in (("velocity[0] (vx)", vx), ("velocity[1] (vy)", vy))
     )
 
@@ -215,7 +254,10 @@ def _approach(body: Rod | Sphere, th: float, vx: float, vy: float, w: float) -> 
             f"velocity: the contact point does not approach the flat (its normal velocity "
             f"vy - spin * (L/2) cos(angle) = {float(vn)!r} m/s must be < 0)"
         )
-    warn_fast("the impact speed", max(math.hypot(vx, vy), math.hypot(vx + w * b, vn)))
+    tip = math.hypot(vx + w * b, vn)
+    if not tip <= MAX_SPEED:
+        check_speed("the contact point's speed (from the spin)", tip)
+    warn_fast("the impact speed", max(math.hypot(vx, vy), tip))
     return vn
 
 
@@ -253,7 +295,9 @@ def _plain_inputs(
         and _plain(velocity[1])
         and _plain(spin)
         and _plain(mu)
-        and mu >= 0.0
+        and 0.0 <= mu <= MAX_MU
+        and abs(velocity[0]) <= MAX_SPEED
+        and abs(velocity[1]) <= MAX_SPEED
         and type(constant_angle) is bool
         and (gravity is True or gravity is False)
         and (rtol is None or (_plain(rtol) and RTOL_RANGE[0] <= rtol <= RTOL_RANGE[1]))
@@ -318,7 +362,7 @@ def check_impact(
         flat=check_flat(flat),
         model=contact_model(body, check_flat(flat), law, law_params),
         friction=get_friction(friction),
-        mu=check_nonnegative("mu", mu),
+        mu=check_mu(mu),
         angle=th,
         velocity=(vx, vy),
         spin=w,
@@ -338,7 +382,9 @@ __all__ = [
     "check_body",
     "check_flat",
     "check_impact",
+    "check_mu",
     "check_rtol",
+    "check_speed",
     "check_velocity",
     "gravity_value",
     "velocity_from",

@@ -24,6 +24,7 @@ from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.bodies.layout import BP_GSTAR
 from impactlab.contact import ContactModel
 from impactlab.contact.ranges import delta_ratio, extrapolation_flags
+from impactlab.dynamics.batch_status import BatchStatus, flag_column
 from impactlab.dynamics.checks import batch_velocity, check_flat, check_rtol, gravity_value
 from impactlab.dynamics.drop import DEFAULT_T_MAX, MIN_APPROACH_SPEED
 from impactlab.dynamics.drop_body import body_model
@@ -46,7 +47,7 @@ from impactlab.dynamics.flexcore.indirect import batch_addresses
 from impactlab.dynamics.flexcore.model import constants, model_tuple
 from impactlab.dynamics.history import readonly_copy
 from impactlab.dynamics.kernels import status as S
-from impactlab.dynamics.kernels.layout import MU_NEGLIGIBLE
+from impactlab.dynamics.kernels.layout import MAX_MU, MAX_SPEED, MU_NEGLIGIBLE
 from impactlab.dynamics.models import body_params, contact_model, kernel_params, references_used
 from impactlab.dynamics.simulate_many import _batch_inputs
 from impactlab.friction import COULOMB, DEFAULT_MU, PARTIAL_SLIP
@@ -68,17 +69,18 @@ _ENGINE_NAME = {new: old for old, new in schema.RENAMED_DROP_FIELDS.items()}
 
 
 @dataclass(frozen=True)
-class DropBatchResult:
+class DropBatchResult(BatchStatus):
     """Results of ``simulate_drops`` (SI units): ``out`` (N, len(DROP_OUTPUT_FIELDS)) in the
     order of ``flexcore.layout.DROP_FIELDS``, ``status`` (N,) (0: ok; ``STATUS_MESSAGES``),
-    ``flags`` (N,) the ``ResultFlag`` bits, ``initial_energy`` [J] and ``max_delta_ratio``
+    ``flags`` (N,) the ``ResultFlag`` bits (int64), ``initial_energy`` [J] and ``max_delta_ratio``
     (delta_max / delta_ref) per case; NaN (flags 0) where a case failed.
 
     Fields by name: ``drops["e"]`` or ``drops.e``, the inputs (``angle``, ``vx``, ``vy``,
     ``spin``, ``mu``), ``velocity_out`` (vx_out, vy_out), the sequence totals
     (``sequence_duration``, ``dent_depth``, ``sequence_sliding_length``,
     ``sequence_mean_force`` = P_n / sequence_duration) as ``DropResult`` has them; the names
-    before 0.3 warn (``schema.RENAMED_DROP_FIELDS``)."""
+    before 0.3 warn (``schema.RENAMED_DROP_FIELDS``). ``computed``, ``ok``, ``flagged`` and
+    ``messages`` per case as every batch has them (``batch_status.BatchStatus``)."""
 
     out: np.ndarray = field(repr=False)
     status: np.ndarray = field(repr=False)
@@ -94,8 +96,9 @@ class DropBatchResult:
     references: tuple[Reference, ...] = field(default=(), repr=False)
 
     def __post_init__(self) -> None:
-        for name in ("out", "flags", "initial_energy", "max_delta_ratio"):
+        for name in ("out", "initial_energy", "max_delta_ratio"):
             object.__setattr__(self, name, readonly_copy(getattr(self, name)))
+        object.__setattr__(self, "flags", readonly_copy(flag_column(self.flags), np.int64))
         object.__setattr__(self, "status", readonly_copy(self.status, np.int32))
         object.__setattr__(self, "inputs", {k: readonly_copy(v) for k, v in self.inputs.items()})
 
@@ -138,14 +141,16 @@ class DropBatchResult:
         """P_n / sequence_duration [N], as ``DropResult.sequence_mean_force``."""
         return self._column("normal_impulse") / self._column("duration")
 
-    @property
-    def ok(self) -> np.ndarray:
-        """Boolean mask of the cases that ran and passed the checks (status 0)."""
-        return self.status == 0
+    def to_dataframe(self) -> Any:
+        """A pandas DataFrame: inputs, outputs (``PUBLIC_FIELDS``), status and flags per case."""
+        import pandas as pd  # heavy, needed only here
 
-    def messages(self) -> list[str]:
-        """The status message of each case (``kernels.status.STATUS_MESSAGES``)."""
-        return [S.STATUS_MESSAGES.get(int(s), f"status {int(s)}") for s in self.status]
+        df = pd.DataFrame({k: np.array(v) for k, v in self.inputs.items()})
+        for name in PUBLIC_FIELDS:
+            df[name] = np.array(self[name])
+        df["status"] = np.array(self.status)
+        df["flags"] = np.array(self.flags)
+        return df
 
     def dois(self) -> tuple[str, ...]:
         """DOIs of ``references``, in order, without repeats."""
@@ -156,7 +161,8 @@ def input_status(
     half_length: float, cols: Mapping[str, np.ndarray], tol_angle: float = 1e-12
 ) -> np.ndarray:
     """The status of each case's inputs as ``simulate_drop`` refuses them (0: runs): a
-    non-finite input or mu < 0, or an approach speed below ``MIN_APPROACH_SPEED``: ST_BAD_INPUT;
+    non-finite input, mu outside [0, MAX_MU], a velocity component beyond MAX_SPEED, or an
+    approach speed below ``MIN_APPROACH_SPEED``: ST_BAD_INPUT;
     an angle outside (0, pi/2 + tol_angle]: ST_BAD_ANGLE; a tip that does not approach the
     flat (vy - spin (L/2) cos(angle) >= 0): ST_NOT_APPROACHING."""
     th, vx, vy, w, mu = (cols[k] for k in ("angle", "vx", "vy", "spin", "mu"))
@@ -168,7 +174,8 @@ def input_status(
         st[(-vn < MIN_APPROACH_SPEED) & (vn < 0.0)] = S.ST_BAD_INPUT
         st[~(vn < 0.0)] = S.ST_NOT_APPROACHING
         st[~((th > 0.0) & (th <= 0.5 * math.pi + tol_angle))] = S.ST_BAD_ANGLE
-        st[~finite | (mu < 0.0)] = S.ST_BAD_INPUT
+        fast = (np.abs(vx) > MAX_SPEED) | (np.abs(vy) > MAX_SPEED) | (mu > MAX_MU)
+        st[~finite | (mu < 0.0) | fast] = S.ST_BAD_INPUT
     return st
 
 

@@ -9,11 +9,12 @@ from typing import Any
 
 import numpy as np
 
-from impactlab._validation import check_nonnegative, check_positive
+from impactlab._validation import check_positive
 from impactlab.bodies import Rod
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.contact import ContactModel
 from impactlab.contact.ranges import law_extrapolated
+from impactlab.dynamics.checks import check_mu
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.batch import sequence_flags
 from impactlab.flags import ENERGY_GAIN_RTOL_FACTOR, ENERGY_ROUNDOFF, ResultFlag
@@ -40,7 +41,7 @@ def check_friction(friction: str, mu: float) -> tuple[FrictionModel, float]:
     if fric.kind not in DROP_FRICTION:
         names = ", ".join(repr(str(k)) for k in DROP_FRICTION)
         raise ValueError(f"friction: the drop integrator implements {names}, got {friction!r}")
-    return fric, check_nonnegative("mu", mu)
+    return fric, check_mu(mu)
 
 
 def check_stop(stop: Any, t_max: Any) -> tuple[float, int]:

@@ -82,5 +82,7 @@ def simulate_partial_slip(
     """The ``ImpactResult`` of one partial-slip impact; ValueError on an engine failure."""
     status, out, hist = run_partial_slip(x, history, n_cells)
     if status != S.ST_OK:
-        raise status_error(status, x.model, prefix="partial_slip impact: ")
+        raise status_error(
+            status, x.model, prefix="partial_slip impact: ", vn=x.vn, gravity=x.gravity
+        )
     return impact_result(x, out, hist)

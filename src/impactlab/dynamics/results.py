@@ -16,12 +16,12 @@ from impactlab._display import flag_names
 from impactlab._version import __version__
 from impactlab.contact.range_note import range_note
 from impactlab.contact.ranges import extrapolation, extrapolation_flags, range_status
+from impactlab.dynamics.batch_status import BatchStatus, flag_column
 from impactlab.dynamics.dent import dent_map
 from impactlab.dynamics.derived import DerivedOutputs, batch_derived
 from impactlab.dynamics.export import batch_dataset, batch_html
 from impactlab.dynamics.history import HISTORY_UNITS, DentMap, History, readonly_copy
 from impactlab.dynamics.kernels.layout import HISTORY_FIELDS, OUTPUT_FIELDS
-from impactlab.dynamics.kernels.status import STATUS_MESSAGES
 from impactlab.dynamics.provenance import result_record
 from impactlab.dynamics.result_display import ResultDisplay
 from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
@@ -274,7 +274,7 @@ def assemble_result(values: dict[str, Any]) -> ImpactResult:
 
 
 @dataclass(frozen=True, eq=False)
-class BatchResult:
+class BatchResult(BatchStatus):
     """Results of ``simulate_batch``: ``out`` (N, len(OUTPUT_FIELDS)) and ``status`` (N,).
 
     Fields are available by name (``batch["e"]`` or ``batch.e``); cases with a non-zero status
@@ -336,26 +336,16 @@ class BatchResult:
         return doi_list(self.references)
 
     @property
-    def ok(self) -> np.ndarray:
-        """Boolean mask of the successful cases."""
-        return self.status == 0
-
-    @property
     def flags(self) -> np.ndarray:
         """The ``ResultFlag`` bitmask of each case (int64; 0 for failed cases, whose status
         says why)."""
-        f = self.out[:, OUTPUT_FIELDS.index("flags")]
-        return np.where(np.isfinite(f), f, 0.0).astype(np.int64)
+        return flag_column(self.out[:, OUTPUT_FIELDS.index("flags")])
 
     @property
-    def flagged(self) -> np.ndarray:
-        """Boolean mask of the successful cases that carry a flag (``impactlab.flags``)."""
-        return self.flags != 0
-
-    @property
-    def messages(self) -> list[str]:
-        """The status message of each case."""
-        return [STATUS_MESSAGES.get(int(s), f"status {int(s)}") for s in self.status]
+    def velocity_out(self) -> tuple[np.ndarray, np.ndarray]:
+        """(vx_out, vy_out) of the centre of mass after the impact [m/s], as
+        ``ImpactResult.velocity_out`` and ``DropBatchResult.velocity_out``."""
+        return self["vx_out"], self["vy_out"]
 
     def to_dataframe(self) -> Any:
         """A pandas DataFrame: inputs, outputs and status per case."""
@@ -392,9 +382,9 @@ class BatchResult:
         return batch_html(self)
 
     def __repr__(self) -> str:
-        n_ok = int(np.count_nonzero(self.ok))
-        n_flagged = int(np.count_nonzero(self.flagged))
+        masks = (("computed", self.computed), ("ok", self.ok), ("flagged", self.flagged))
+        counts = ", ".join(f"{int(np.count_nonzero(mask))} {name}" for name, mask in masks)
         return (
-            f"BatchResult({len(self)} cases, {n_ok} ok, {n_flagged} flagged, law={self.law!r}, "
+            f"BatchResult({len(self)} cases, {counts}, law={self.law!r}, "
             f"friction={self.friction!r})"
         )

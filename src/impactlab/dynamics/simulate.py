@@ -220,7 +220,7 @@ def _fast(
         and -PLAUSIBLE_SPEED <= vx <= PLAUSIBLE_SPEED
         and -PLAUSIBLE_SPEED <= vy <= PLAUSIBLE_SPEED
         and -_BIG < spin < _BIG
-        and 0.0 <= mu < _BIG
+        and 0.0 <= mu <= L.MAX_MU
     ):
         return None
     if kind is Rod:
@@ -233,7 +233,7 @@ def _fast(
         return None
     if gravity is True or gravity is False:
         g = G0 if gravity else 0.0
-    elif type(gravity) in _PLAIN and 0.0 <= gravity < _BIG:
+    elif type(gravity) in _PLAIN and 0.0 <= gravity <= L.MAX_GRAVITY:
         g = float(gravity)
     else:
         return None

@@ -127,7 +127,7 @@ def engine_boundary(angles: np.ndarray, *, iterations: int = 30, v: float = 1.0)
             gravity=False,
             constant_angle=True,
         )
-        if not np.all(b.ok):
+        if not np.all(b.computed):
             raise RuntimeError(f"engine failed in the bisection: {set(b.messages)}")
         is_slip = np.asarray(b["regime"]) == slip
         lo = np.where(is_slip, mid, lo)

@@ -39,6 +39,9 @@ from impactlab.dynamics.kernels.layout import (
     C_R,
     FR_IMPULSE,
     FR_MINDLIN,
+    MAX_GRAVITY,
+    MAX_MU,
+    MAX_SPEED,
     S_PHI,
     S_Q,
     S_SPIN,
@@ -90,9 +93,12 @@ def check_inputs(law, p, fric, bp, th0, vx0, vy0, w0, mu, g, rtol):
         return ST_RADIUS_MISMATCH
     if not (math.isfinite(vx0) and math.isfinite(vy0) and math.isfinite(w0) and math.isfinite(th0)):
         return ST_BAD_INPUT
-    if not (math.isfinite(mu) and mu >= 0.0):
+    reach = bp[BP_HALF_LENGTH] + bp[BP_RADIUS]  # the farthest point of contact from C
+    if not (abs(vx0) <= MAX_SPEED and abs(vy0) <= MAX_SPEED and abs(w0) * reach <= MAX_SPEED):
         return ST_BAD_INPUT
-    if not (math.isfinite(g) and g >= 0.0):
+    if not (math.isfinite(mu) and 0.0 <= mu <= MAX_MU):
+        return ST_BAD_INPUT
+    if not (math.isfinite(g) and 0.0 <= g <= MAX_GRAVITY):
         return ST_BAD_INPUT
     if not (rtol > 1e-14 and rtol < 1e-2):
         return ST_BAD_INPUT
