@@ -75,8 +75,9 @@ class ResultFlag(enum.IntFlag):
 
 _MESSAGES: dict[ResultFlag, str] = {
     ResultFlag.ENERGY_GAIN: (
-        "energy gain: the total energy at separation exceeds the initial kinetic energy "
-        "beyond the integration tolerance, so the friction model created energy (the paper's "
+        "energy gain: the total energy at separation exceeds the initial kinetic energy, or "
+        "friction did positive work in one of a drop's contacts, beyond the integration "
+        "tolerance, so the friction model created energy (the paper's "
         "impulse_ratio does so once the slip stops; coulomb is its energy-consistent completion)"
     ),
     ResultFlag.GRAVITY_DOMINATED: (

@@ -93,7 +93,7 @@ def _parse(name: str, text: str, unit: str) -> Any:
     if not text:
         raise ValueError(f"{name} is empty; expected a quantity in {unit}, e.g. '1.0 {unit}'")
     try:
-        q = registry().Quantity(text)
+        q: Any = registry().Quantity(text)
     except Exception as exc:  # pint's parser raises several unrelated types
         if type(exc).__name__ == "OffsetUnitCalculusError":  # "20 degC": a temperature
             raise ValueError(

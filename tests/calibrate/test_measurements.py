@@ -116,6 +116,65 @@ def test_file_errors(tmp_path):
         Measurements.from_records(_rec() + _rec())
 
 
+@pytest.mark.parametrize(
+    ("change", "match"),
+    [
+        ({"angle": "200 deg"}, r"drop 1 \(x\), column 'angle': angle must lie in \(0, 90\] deg"),
+        ({"angle": "0 deg"}, r"column 'angle': angle must lie in \(0, 90\] deg, got 0 deg"),
+        ({"mu": -0.2}, r"drop 1 \(x\), column 'mu': mu must be >= 0, got -0.2"),
+        ({"tip_radius": "-1 mm"}, r"column 'tip_radius': tip_radius must be > 0"),
+        ({"flat_yield_strength": "0 MPa"}, r"column 'flat_yield_strength': .* must be > 0"),
+    ],
+)
+def test_impossible_drop_inputs_are_refused_on_reading(change, match):
+    """What a single impact refuses is refused when the file is read, naming drop and column
+    (not after sampling, as a prior that gives no likelihood)."""
+    with pytest.raises(ValueError, match=match) as info:
+        Measurements.from_records(_rec(**change))
+    assert "\n" not in str(info.value)
+
+
+@pytest.mark.parametrize("value", ["12", "0.000012"])
+def test_column_unit_of_the_wrong_dimension_is_refused(tmp_path, value):
+    """A header unit that does not fit the column is refused as a unit in a value is."""
+    path = tmp_path / "m.csv"
+    path.write_text(
+        "label,angle [deg],vy [m/s],mu,delta_p [kg],delta_p_sigma [kg]\n"
+        f"a,20,-1.41,0.2,{value},0.000001\n"
+    )
+    with pytest.raises(
+        ValueError,
+        match=rf"delta_p: '{value} kg' has the wrong dimension; "
+        "expected a quantity convertible to m",
+    ):
+        read_measurements(path)
+    path.write_text(
+        "label,angle [deg],vy [m/s],mu,delta_p [kg],delta_p_sigma [kg]\na,20,-1.41,0.2,12 um,1 um\n"
+    )
+    with pytest.raises(ValueError, match=r"column unit \[kg\]\): '1 kg' has the wrong dimension"):
+        read_measurements(path)
+
+
+def test_measurements_file_that_is_not_utf8_names_the_file(tmp_path):
+    for name in ("binary.csv", "binary.toml"):
+        (tmp_path / name).write_bytes(b"\x00\xff\xfe garbage")
+        with pytest.raises(
+            ValueError,
+            match=rf"{name}: not a text \((CSV|TOML)\) file: it is not "
+            "UTF-8 text",
+        ) as info:
+            read_measurements(tmp_path / name)
+        assert "\n" not in str(info.value)
+
+
+@pytest.mark.parametrize(("row", "fields"), [("a,20,-1.41,0.4", 4), ("a,20,-1.41,0.4,0.02,7", 6)])
+def test_row_with_another_number_of_fields_names_the_line(tmp_path, row, fields):
+    path = tmp_path / "ragged.csv"
+    path.write_text(f"# drops\nlabel,angle [deg],vy [m/s],e,e_sigma\n\n{row}\n")
+    with pytest.raises(ValueError, match=rf"ragged.csv: line 4: {fields} fields, the header has 5"):
+        read_measurements(path)
+
+
 def test_aliases_and_sphere_angle():
     m = Measurements.from_records(
         [

@@ -7,9 +7,10 @@ lever arms. Asserted for every successful case:
 - no NaN in any output that is defined (``angle_out`` is NaN for a sphere, ``e_energy`` where
   the compression did no work, the diagnostics are off);
 - no unflagged energy gain: where ENERGY_GAIN is not set, the total energy at separation
-  (recomputed here from the outputs) exceeds E_0 by no more than the stated tolerance, and
-  where it is set, energy was gained; the models that cannot create energy (Coulomb, Mindlin) are
-  never flagged for it;
+  (recomputed here from the outputs) exceeds E_0 by no more than the stated tolerance (where it
+  is set, energy was gained in total or friction did positive work, which the normal contact's
+  loss may hide); the models that cannot create energy (Coulomb, Mindlin) are never flagged for
+  it;
 - 0 <= delta_p <= delta_max, 0 <= e* <= 1 (+1e-5), F >= 0, F_max >= 0, T > 0; flags in 0..7;
 - failures only where expected (``_check_status``).
 
@@ -97,7 +98,6 @@ def _check(out: np.ndarray, status: np.ndarray, init: np.ndarray, body: Rod | Sp
         e0 + e_kin + np.abs(e_pot)
     )
     assert np.all(gain[~gained] <= tol[~gained]), np.max(gain[~gained] / tol[~gained])
-    assert np.all(gain[gained] > 0.0)
     if fr in ENERGY_CONSISTENT:
         assert not np.any(gained), np.count_nonzero(gained)
     dp, dmax = o[:, O["delta_p"]], o[:, O["delta_max"]]

@@ -23,7 +23,7 @@ def test_angle_with_a_unit_is_answered_in_degrees(angle: object, shown: str) -> 
 
 
 def test_bare_number_keeps_the_degrees_hint() -> None:
-    with pytest.raises(ValueError, match=r"radians in \(0, pi/2\], got 20.0 rad; 20.0 looks like"):
+    with pytest.raises(ValueError, match=r"in \(0, pi/2\], got 20.0 rad \(1145.92 deg\); if"):
         simulate(PAPER_ROD, angle=20.0, velocity=(0.0, -1.41))
 
 

@@ -162,6 +162,34 @@ def test_cli_bad_scan_exits_with_one_line(
     assert "e" in data["summary"] and (out / "results.json").exists()
 
 
+@pytest.mark.parametrize("archive", ["x3p", "npz"])
+def test_zip_archive_named_npy_keeps_the_marker_results(
+    cli_main: Callable[..., tuple[int, str, str]],
+    tmp_path: Path,
+    drops: dict,
+    scans: dict,
+    archive: str,
+) -> None:
+    """An X3P or NPZ archive (zip content) saved under a ``.npy`` name is a bad scan file, not a
+    crash: the error names the file and the kinematics are printed and saved."""
+    bad = tmp_path / "dent.npy"
+    if archive == "x3p":
+        bad.write_bytes(scans[20].files["x3p"].read_bytes())
+    else:
+        with bad.open("wb") as fh:
+            np.savez(fh, z=scans[20].z)
+    res = analyze(None, bad, pixel_size="8 um", height_unit="m")
+    assert set(res.errors) == {"scan"} and res.dent is None
+    assert "dent.npy: not a readable NPY array (it is a zip/NPZ archive)" in res.errors["scan"]
+    geo = tmp_path / "geometry.toml"
+    geo.write_text(GEOMETRY_TOML)
+    out = tmp_path / "o"
+    args = [str(drops[20].c3d), str(bad), "--geometry", str(geo), "--out", str(out), "--json"]
+    code, stdout, stderr = cli_main("analyze", *args, "--pixel-size", "8 um", "--height-unit", "m")
+    assert code == 2 and "Traceback" not in stderr and "zip/NPZ archive" in stderr
+    assert "e" in json.loads(stdout)["summary"] and (out / "results.json").exists()
+
+
 def test_engine_comparison(drops: dict, scans: dict, rod: Any) -> None:
     """With flat=, the engine runs with the measured initial state."""
     d = drops[45]
@@ -242,6 +270,23 @@ def test_sign_flipped_scan_is_refused_then_read_over(
     over = analyze(None, flipped, pixel_size=dx, height_unit="m", flip_heights=True)
     assert over.ok and over.dent is not None
     assert over.dent.delta_p.value == pytest.approx(truth.groove.depth, rel=0.02)
+
+
+def test_corrupt_heights_are_not_taken_for_a_flipped_scan(
+    tmp_path: Path, plain_scan: tuple[Path, float, Any]
+) -> None:
+    """Damaged bytes in the middle of a scan give absurd heights (1e177 m, as 16 flipped bytes
+    do): a corrupt file, not a bump to read the other way up."""
+    path, dx, _ = plain_scan
+    heights = np.load(path)
+    heights.flat[heights.size // 2 : heights.size // 2 + 2] = (1.7e177, -4.4e182)
+    damaged = tmp_path / "damaged.npy"
+    np.save(damaged, heights)
+    res = analyze(None, damaged, pixel_size=dx, height_unit="m")
+    assert set(res.errors) == {"scan"} and res.dent is None
+    message = res.errors["scan"]
+    assert message.startswith(f"{damaged}: ") and "implausible height value(s)" in message
+    assert "corrupt" in message and "sign-flipped" not in message
 
 
 PLAIN_8MM = ("--pixel-size", "8 mm", "--height-unit", "m")

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import re
 from typing import Any
 
 import numpy as np
@@ -86,6 +87,22 @@ def test_y_up_camera_frame(rod: Any) -> None:
         measure_impact(tracks, rod, geometry=geo, up="+z")
 
 
+@pytest.mark.parametrize(("lab_up", "wrong_up"), [("+z", "-z"), ("+z", "+y"), ("+y", "-x")])
+def test_wrong_up_names_gravity_and_the_measured_axis(rod: Any, lab_up: str, wrong_up: str) -> None:
+    """The error gives gravity's measured direction (downwards) and the up= the data indicate."""
+    tr = S.rigid_impulse_impact(rod, math.radians(20), (0.0, -1.41), e=0.5, mu=0.2)
+    tracks, info = S.marker_tracks(rod, tr, up=lab_up, seed=5)
+    geo = MarkerGeometry(S.DEFAULT_MARKERS, info["labels"])
+    with pytest.raises(MarkerError) as caught:
+        measure_impact(tracks, rod, geometry=geo, up=wrong_up)
+    message = str(caught.value)
+    axis = "xyz".index(lab_up[1])
+    down = re.search(r"gravity in the data points along \(([^)]*)\)", message)
+    assert down is not None
+    assert float(down.group(1).split(",")[axis]) == pytest.approx(-1.0, abs=0.05)
+    assert message.endswith(f"pass up='{lab_up}'")
+
+
 @pytest.mark.parametrize("case", [45, 70])
 def test_estimated_geometry(rod: Any, case: int) -> None:
     """Without the marker geometry: axis = the cluster's principal direction (markers laid out
@@ -150,8 +167,38 @@ def test_loose_marker(rod: Any) -> None:
     late = tracks.time > info["t_impact"]
     pos[late, 1, 2] += 0.004  # marker M2 shifts by 4 mm at the impact
     loose = MarkerTracks(tracks.time, pos, tracks.labels, "loose.c3d")
-    with pytest.raises(RigidityError, match="M2"):
+    with pytest.raises(RigidityError, match="M2") as caught:
         measure_impact(loose, rod, geometry=MarkerGeometry(S.DEFAULT_MARKERS, info["labels"]))
+    assert "length unit" not in str(caught.value)
+
+
+@pytest.mark.parametrize("geometry", [True, False])
+def test_marker_file_in_mm_read_as_m_names_the_units(drops: dict, rod: Any, geometry: bool) -> None:
+    """Coordinates 1000 times too large: markers metres apart, not a loose marker."""
+    d = drops[20]
+    tracks = read_c3d(d.c3d, units="m")
+    with pytest.raises(MarkerError) as caught:
+        measure_impact(tracks, rod, geometry=d.geometry if geometry else None)
+    message = str(caught.value)
+    assert not isinstance(caught.value, RigidityError)
+    assert "m apart, but the rod is 0.3048 m long" in message
+    assert "another length unit than the one used (read as 'm')" in message
+
+
+def test_rigidity_failure_with_a_fall_far_from_g_names_the_units(drops: dict, rod: Any) -> None:
+    """Coordinates 5 times too large: the scaled noise fails the rigidity check, and the error
+    says that the markers fall with 5 g."""
+    tracks = read_c3d(drops[20].c3d)
+    scaled = MarkerTracks(
+        tracks.time, tracks.positions * 5.0, tracks.labels, "scaled.c3d", {"units": "mm"}
+    )
+    with pytest.raises(RigidityError) as caught:
+        measure_impact(scaled, rod, rigidity_tolerance=0.5e-3)
+    message = str(caught.value)
+    assert "not rigidly attached" in message
+    fall = re.search(r"the markers fall with ([0-9.]+) m/s\^2", message)
+    assert fall is not None and float(fall.group(1)) == pytest.approx(5 * 9.81, rel=0.1)
+    assert "another length unit than the one used (read as 'mm')" in message
 
 
 def test_geometry_that_does_not_match(rod: Any) -> None:

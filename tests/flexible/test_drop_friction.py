@@ -111,6 +111,19 @@ def test_energy_gain_flag(case: dict) -> None:
     assert r.to_dict()["flags"] == int(r.flags)
 
 
+def test_friction_that_gains_energy_in_one_contact_is_flagged() -> None:
+    """The paper's drop with the flexible rod and impulse_ratio: friction does positive work in
+    some contacts (the impulse keeps its direction where the slip reverses), hidden in the
+    sequence's total by the others' losses; flagged ENERGY_GAIN, not ok. Coulomb: never."""
+    case = {"mu": 0.2, "angle": math.radians(20), "velocity": (0.0, -1.41)}
+    r = simulate_drop(FlexibleRod.paper(), friction="impulse_ratio", **case)
+    works = [c.work_friction for c in r.contacts]
+    assert max(works) > 1e-3 and sum(works) < 0.0  # created in a contact, lost in the sum
+    assert ResultFlag.ENERGY_GAIN in r.flags and not r.ok
+    c = simulate_drop(FlexibleRod.paper(), friction="coulomb", **case)
+    assert max(x.work_friction for x in c.contacts) <= 0.0 and ResultFlag.ENERGY_GAIN not in c.flags
+
+
 def test_gravity_dominated_flag() -> None:
     """A slow drop (1 cm/s): gravity's impulse over the sequence exceeds a tenth of the normal
     impulse, flagged as the rigid engine flags its one impact (the law's range aside: the rod

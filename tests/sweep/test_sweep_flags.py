@@ -54,7 +54,7 @@ def test_run_summary_counts_flags(tmp_path, monkeypatch, capsys) -> None:
     main()
     summary = json.loads(capsys.readouterr().out)
     # hertz at 1.41 m/s is far beyond first yield: both cases extrapolate the law
-    assert summary["flagged"] == "2 case(s) (energy gain: 1, law extrapolated: 2)"
+    assert summary["flagged"] == {"total": 2, "energy_gain": 1, "law_extrapolated": 2}
     ds = open_sweep(tmp_path / "ir.zarr").load()
     gained = int(ds["flags"].sel(friction="impulse_ratio"))
     assert gained & ResultFlag.ENERGY_GAIN and float(ds["e"].sel(friction="impulse_ratio")) > 1.0

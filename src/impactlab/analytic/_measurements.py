@@ -14,10 +14,14 @@ from impactlab.analytic._inputs import HALF_PI
 from impactlab.analytic.result import Measured, measured
 
 __all__ = [
+    "MIN_DENT_DEPTH",
+    "PLAUSIBLE_DENT_DEPTH",
     "PLAUSIBLE_DENT_RATIO",
     "PLAUSIBLE_DURATION",
     "PLAUSIBLE_SPEED",
+    "SIGMA_RANGE_FRACTION",
     "check_plausible",
+    "check_sigma_fits",
     "measurements",
 ]
 
@@ -48,6 +52,18 @@ PLAUSIBLE_SPEED = 100.0
 PLAUSIBLE_DENT_RATIO = 0.1
 #: A nominal impact duration above this [s] draws an ImplausibleInputWarning.
 PLAUSIBLE_DURATION = 0.1
+#: A dent shallower than this [m] is refused: no profilometer resolves it (most likely a unit
+#: mistake, or no dent at all). The same bound as ``analyze``'s scan check
+#: (``impactlab.experiment.profilometry.plausibility.MIN_DEPTH``), which this layer may not import.
+MIN_DENT_DEPTH = 1e-9
+#: A dent shallower than this [m] draws an ImplausibleInputWarning (``analyze``'s
+#: ``PLAUSIBLE_DEPTH`` in ``impactlab.experiment.profilometry.plausibility``).
+PLAUSIBLE_DENT_DEPTH = 0.1e-6
+#: The largest standard deviation of an input of bounded range (e in [0, 1], the angle in
+#: (0, pi/2) rad), as a fraction of the range's width: at a quarter, the measurement's
+#: +-2 sigma band already spans the whole range. (mu has no upper bound of its own: a mu
+#: beyond mu_c sticks, and the Monte Carlo's rejected share, warned above 5 %, shows it.)
+SIGMA_RANGE_FRACTION = 0.25
 
 
 def measurements(values: Mapping[str, Any]) -> dict[str, Measured]:
@@ -90,6 +106,9 @@ def _check_ranges(meas: Mapping[str, Measured]) -> None:
         )
     if "e" in meas and not 0.0 <= meas["e"].value <= 1.0:
         raise ValueError(f"e must lie in [0, 1], got {meas['e'].value!r}")
+    check_sigma_fits("angle", meas["angle"].sigma, 0.0, HALF_PI, "rad")
+    if "e" in meas:
+        check_sigma_fits("e", meas["e"].sigma, 0.0, 1.0)
     if "dv_cy" in meas and meas["dv_cy"].value <= 0.0:
         raise ValueError(
             f"dv_cy must be > 0 (upward change of the centre-of-mass velocity), got "
@@ -97,11 +116,44 @@ def _check_ranges(meas: Mapping[str, Measured]) -> None:
         )
 
 
+def check_sigma_fits(name: str, sigma: float, low: float, high: float, unit: str = "") -> None:
+    """ValueError when the standard deviation ``sigma`` of input ``name`` (same unit as the
+    input, ``unit``: "rad" for the angle) exceeds ``SIGMA_RANGE_FRACTION`` of the width of its
+    range [low, high]: such a sigma spans the whole range and carries no measurement."""
+    limit = SIGMA_RANGE_FRACTION * (high - low)
+    if sigma <= limit:
+        return
+    if unit == "rad":
+        given = f"{sigma!r} rad ({math.degrees(sigma):.4g} deg)"
+        bound = f"(0, 90) deg, at most {math.degrees(limit):.4g} deg"
+    else:
+        u = f" {unit}" if unit else ""
+        given = f"{sigma!r}{u}"
+        bound = f"[{low:g}, {high:.4g}]{u}, at most {limit:.4g}{u}"
+    raise ValueError(
+        f"the sigma of {name} = {given} does not fit its range: a standard deviation may be "
+        f"at most {SIGMA_RANGE_FRACTION:g} of the range's width ({name} in {bound}); a wider "
+        "one spans the whole range and carries no measurement"
+    )
+
+
 def check_plausible(meas: Mapping[str, Measured], length: float, tip_radius: float) -> None:
-    """ValueError for what is impossible for this rod (a dent deeper than the tip radius, a
-    sliding length longer than the rod); ImplausibleInputWarning for a dent deeper than
-    ``PLAUSIBLE_DENT_RATIO`` R or a speed above ``PLAUSIBLE_SPEED``."""
+    """ValueError for what is impossible for this rod (a dent shallower than ``MIN_DENT_DEPTH``
+    or deeper than the tip radius, a sliding length longer than the rod);
+    ImplausibleInputWarning for a dent shallower than ``PLAUSIBLE_DENT_DEPTH`` or deeper than
+    ``PLAUSIBLE_DENT_RATIO`` R, or a speed above ``PLAUSIBLE_SPEED``."""
     dp, ls = meas["delta_p"].value, meas["sliding_length"].value
+    if dp < MIN_DENT_DEPTH:
+        raise ValueError(
+            f"delta_p = {dp!r} m is below {MIN_DENT_DEPTH * 1e9:g} nm, finer than any "
+            "profilometer resolves: an impact that leaves no measurable dent cannot be "
+            "inverted (Eq. 12 needs the dent); check the value and its unit (SI: m)"
+        )
+    if dp < PLAUSIBLE_DENT_DEPTH:
+        warn_implausible(
+            f"delta_p = {dp * 1e9:.4g} nm is shallower than {PLAUSIBLE_DENT_DEPTH * 1e6:g} um, "
+            "implausible for the dent of a drop; check the value and its unit (SI: m)"
+        )
     if dp > tip_radius:
         raise ValueError(
             f"delta_p = {dp!r} m is deeper than the rod's tip radius ({tip_radius!r} m): a dent "

@@ -29,7 +29,12 @@ from impactlab.analytic.closed_forms import G0, check_sliding, coefficients, dur
 from impactlab.analytic.result import InversionResult, Measured
 from impactlab.bodies import Rod
 
-__all__ = ["invert"]
+__all__ = ["MC_REJECTED_WARNING", "invert"]
+
+#: A Monte Carlo that discards more than this share of its samples (sticking regime or out of
+#: range) draws an ImplausibleInputWarning: its mean and spread then describe a truncated
+#: distribution, not the measurement's.
+MC_REJECTED_WARNING = 0.05
 
 Value = float | Measured | tuple[float, float]
 
@@ -90,7 +95,9 @@ def _sensitivities(
 def _monte_carlo(
     meas: Mapping[str, Measured], n: int, seed: int | None, core: Any, varied: bool
 ) -> dict[str, Any]:
-    """Means, standard deviations, 95 % intervals and the rejected fraction of ``n`` samples."""
+    """Means, standard deviations, 95 % intervals, the rejected fraction and the number of
+    samples kept of ``n`` samples; ImplausibleInputWarning when more than
+    ``MC_REJECTED_WARNING`` of them are discarded."""
     rng = np.random.default_rng(seed)
     samples = {
         k: (v.value + v.sigma * rng.standard_normal(n)) if v.sigma > 0 else np.full(n, v.value)
@@ -104,6 +111,13 @@ def _monte_carlo(
             "almost all Monte Carlo samples fall in the sticking regime or out of "
             "range: the uncertainties are too large for this inversion"
         )
+    if rejected > MC_REJECTED_WARNING:
+        warn_implausible(
+            f"{rejected:.1%} of the {n} Monte Carlo samples fell in the sticking regime or out "
+            f"of range and were discarded (more than {MC_REJECTED_WARNING:.0%}): T_mc and F_mc "
+            f"rest on the {Tv.size} kept, a truncated distribution; the uncertainties given are "
+            "too large for this inversion, check the sigmas"
+        )
     return {
         "T_mc": float(np.mean(Tv)),
         "F_mc": float(np.mean(Fv)),
@@ -112,6 +126,7 @@ def _monte_carlo(
         "T_interval_mc": (float(np.percentile(Tv, 2.5)), float(np.percentile(Tv, 97.5))),
         "F_interval_mc": (float(np.percentile(Fv, 2.5)), float(np.percentile(Fv, 97.5))),
         "mc_rejected": rejected,
+        "mc_used": int(Tv.size),
     }
 
 
@@ -236,7 +251,8 @@ def invert(
     v_i : vertical tip velocity before the impact [m/s]; sign ignored (the paper writes -1.41).
     mu : friction coefficient over the impact (Eq. 28, e.g. from
         :func:`friction_from_velocities`), >= 0 and < mu_c(angle) (gross sliding).
-    delta_p : permanent dent depth [m], >= 0 (the paper prints -22e-6; impactlab takes 22e-6).
+    delta_p : permanent dent depth [m], a magnitude of at least 1 nm (the paper prints -22e-6;
+        impactlab takes 22e-6).
     sliding_length : length L_s of the sliding scar [m], > 0 (the paper prints -1400e-6).
     e : coefficient of restitution of the tip's normal velocity, in [0, 1]. Needed for F when
         ``dv_cy`` is not given (rigid-body identity F T = (1 + e)|v_i| / K_y).
@@ -251,11 +267,14 @@ def invert(
         patch, which a dent's length records; see docs/analytic.md).
     n_samples, seed : Monte Carlo sample count (an int >= 100) and seed (None or an int >= 0).
 
-    Bounds: ValueError for a nominal delta_p deeper than the rod's tip radius or a sliding
-    length longer than the rod (impossible: most likely a unit mistake), and for the sticking
-    regime (mu >= mu_c), where the dent does not fix T; ImplausibleInputWarning for a dent
-    deeper than a tenth of the tip radius, |v_i| or dv_cy above 100 m/s, or a nominal duration
-    above 0.1 s.
+    Bounds: ValueError for a nominal delta_p below 1 nm (no profilometer resolves it) or deeper
+    than the rod's tip radius, a sliding length longer than the rod (impossible: most likely a
+    unit mistake), the sticking regime (mu >= mu_c), where the dent does not fix T, and a sigma
+    of e or the angle wider than a quarter of its range ([0, 1], (0, pi/2)): it spans the
+    whole range. ImplausibleInputWarning for a dent shallower than 0.1 um or
+    deeper than a tenth of the tip radius, |v_i| or dv_cy above 100 m/s, a nominal duration
+    above 0.1 s, or a Monte Carlo that discards more than 5 % of its samples
+    (``mc_rejected``; ``mc_used`` samples kept).
 
     Returns an :class:`InversionResult` with ``duration`` and ``mean_force``, their first-order
     and Monte Carlo uncertainties, alpha, K_x, K_y, mu_c and the inputs used.

@@ -69,7 +69,8 @@ class InversionResult:
     (first-order propagation, numerical Jacobian); ``T_mc``, ``F_mc`` (Monte Carlo means),
     ``sigma_T_mc``, ``sigma_F_mc`` (Monte Carlo standard deviations), ``T_interval_mc``,
     ``F_interval_mc`` (2.5 and 97.5 percentiles), ``mc_rejected`` (fraction of samples that fell in
-    the sticking regime or out of range and were discarded), ``n_samples``, ``seed``; ``alpha``,
+    the sticking regime or out of range and were discarded), ``mc_used`` (the number of samples
+    kept), ``n_samples``, ``seed``; ``alpha``,
     ``K_x``, ``K_y`` [1/kg], ``mu_c``; ``force_method`` ("momentum" for Eq. 29 with dv_cy, else
     "rigid-body identity"); ``F_momentum``, ``F_rigid`` (each None when its input is missing);
     ``gravity``; ``measure`` ("slip" or "travel", what the sliding length measures); ``inputs``
@@ -89,6 +90,7 @@ class InversionResult:
     T_interval_mc: tuple[float, float]
     F_interval_mc: tuple[float, float]
     mc_rejected: float
+    mc_used: int
     n_samples: int
     seed: int | None
     alpha: float
@@ -172,7 +174,8 @@ class InversionResult:
             lines.append(f"  F from the rigid-body identity (with e): {rigid} N")
         if uncertain and self.mc_rejected > 0:
             lines.append(
-                f"  note: {self.mc_rejected:.2%} of the Monte Carlo samples fell in the "
-                "sticking regime or out of range and were discarded"
+                f"  note: {self.mc_rejected:.2%} of the {self.n_samples} Monte Carlo samples "
+                f"fell in the sticking regime or out of range and were discarded "
+                f"({self.mc_used} used)"
             )
         return "\n".join(lines)

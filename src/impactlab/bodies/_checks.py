@@ -22,11 +22,6 @@ PLAUSIBLE_RADIUS = (1e-6, 0.5)
 PLAUSIBLE_MASS = (1e-6, 1e3)
 
 
-#: Plausible mean density [kg/m^3] of a body: from a hollow ball's (10) to beyond the densest
-#: metals' (osmium, 22 600).
-PLAUSIBLE_DENSITY = (10.0, 3e4)
-
-
 def check_tip_width(tip_radius: float, diameter: float | None) -> None:
     """ValueError when a rod's ``diameter`` [m] exceeds twice its ``tip_radius`` [m] (to 1e-9):
     the end face would then stand out beside the hemispherical tip, and at angles to the flat

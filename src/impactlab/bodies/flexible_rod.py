@@ -165,13 +165,13 @@ class FlexibleRod:
         if self.mass is None and self.diameter is None:
             raise ValueError("give the mass [kg] or the diameter [m] of the rod (or both)")
         d = None if self.diameter is None else check_positive("diameter", self.diameter, "m")
-        check_tip_width(R, d)
         if self.mass is None:
             m = rho * math.pi * cast(float, d) ** 2 / 4.0 * L
         else:
             m = check_positive("mass", self.mass, "kg")
         plausible("mass", m, PLAUSIBLE_MASS, "kg")
         _check_geometry(L, m, d, self.material)
+        check_tip_width(R, d)
         for name, value in (("length", L), ("tip_radius", R), ("mass", m), ("diameter", d)):
             object.__setattr__(self, name, value)
         object.__setattr__(self, "n_axial", _count("n_axial", self.n_axial))

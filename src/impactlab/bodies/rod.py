@@ -83,9 +83,9 @@ class Rod:
         plausible("tip_radius", R, PLAUSIBLE_RADIUS, "m")
         check_material("material", self.material)
         d = None if self.diameter is None else check_positive("diameter", self.diameter, "m")
-        check_tip_width(R, d)
         given = None if self.mass is None else check_positive("mass", self.mass, "kg")
         m = plausible("mass", rod_mass(L, given, d, self.material), PLAUSIBLE_MASS, "kg")
+        check_tip_width(R, d)
         object.__setattr__(self, "diameter", d)
         inertia = (
             m * L * L / 12.0

@@ -10,7 +10,6 @@ import numpy as np
 from impactlab._html import dataclass_html, dataclass_rows
 from impactlab._validation import check_positive
 from impactlab.bodies._checks import (
-    PLAUSIBLE_DENSITY,
     PLAUSIBLE_MASS,
     PLAUSIBLE_RADIUS,
     check_material,
@@ -31,8 +30,10 @@ class Sphere:
     (``"5 mm"``) or a pint Quantity of any registry.
 
     Bounds: ValueError unless the radius, mass and density are finite and > 0;
-    ImplausibleInputWarning for a radius outside [1 um, 0.5 m], a mass outside [1 mg, 1000 kg]
-    or a mean density (given, or the mass's) outside [10, 30 000] kg/m^3.
+    ImplausibleInputWarning for a radius outside [1 um, 0.5 m] or a mass outside
+    [1 mg, 1000 kg]. The mass is free of the material's density (a hollow ball, or a sphere
+    that stands in for a heavier body's effective mass: ``fe.impact_reference``'s rod-mass
+    case is 8.8 mm with the rod's 0.46 kg).
     """
 
     radius: float
@@ -57,7 +58,6 @@ class Sphere:
             )
             m = 4.0 / 3.0 * math.pi * R**3 * rho
         plausible("mass", m, PLAUSIBLE_MASS, "kg")
-        plausible("density", rho, PLAUSIBLE_DENSITY, "kg/m^3")
         object.__setattr__(self, "radius", R)
         object.__setattr__(self, "mass", m)
         object.__setattr__(self, "density", rho)

@@ -25,6 +25,7 @@ from typing import Any
 import numpy as np
 
 from impactlab.bodies import PAPER_ROD
+from impactlab.calibrate.measurement_files import csv_records, read_text
 from impactlab.calibrate.quantities import (
     DROP_CATEGORIES,
     MEASURABLE,
@@ -32,6 +33,7 @@ from impactlab.calibrate.quantities import (
     canonical_output,
 )
 from impactlab.materials import PRESETS
+from impactlab.sweep.dimensions import check_allowed, check_rod_angles
 from impactlab.sweep.inputs import INPUTS, UNIT_REQUIRED
 from impactlab.units import to_si
 
@@ -143,12 +145,10 @@ def read_measurements(path: str | Path) -> Measurements:
         raise FileNotFoundError(f"measurements file not found: {p}")
     suffix = p.suffix.lower()
     if suffix == ".csv":
-        lines = [ln for ln in p.read_text().splitlines() if ln.strip() and not ln.startswith("#")]
-        records = [dict(r) for r in csv.DictReader(lines)]
-        return Measurements.from_records(records, source=str(p))
+        return Measurements.from_records(csv_records(p), source=str(p))
     if suffix == ".toml":
         try:
-            doc = tomllib.loads(p.read_text())
+            doc = tomllib.loads(read_text(p, "TOML"))
         except tomllib.TOMLDecodeError as exc:
             raise ValueError(f"{p}: not valid TOML ({exc})") from None
         unknown = set(doc) - {"drop", "units"}
@@ -190,14 +190,19 @@ def _blank(v: Any) -> bool:
     )
 
 
-def _value(where: str, name: str, v: Any, unit: str) -> float:
+def _value(where: str, name: str, v: Any, column_unit: str | None, si_unit: str) -> float:
+    """``v`` in SI (``si_unit``): a bare number is in ``column_unit`` (the column header's or
+    the ``[units]`` table's; None: SI) and must fit its dimension, as a unit in a value must."""
     if isinstance(v, bool) or not isinstance(v, int | float | str):
         raise ValueError(f"{where}: {name} must be a number or a quantity string, got {v!r}")
     try:
-        x = to_si(float(v) if isinstance(v, str) and _is_number(v) else v, unit, name=name)
+        if column_unit and _bare(v):
+            return to_si(f"{str(v).strip()} {column_unit}", si_unit, name=name)
+        if column_unit:
+            to_si(f"1 {column_unit}", si_unit, name=f"{name} (column unit [{column_unit}])")
+        return to_si(float(v) if isinstance(v, str) and _is_number(v) else v, si_unit, name=name)
     except ValueError as exc:
         raise ValueError(f"{where}: {exc}") from None
-    return x
 
 
 def _bare(v: Any) -> bool:
@@ -245,13 +250,13 @@ def _parse_row(i: int, record: Mapping[str, Any], units: Mapping[str, str]) -> _
                     f"{where}: {name}: the bare number {v!r} has no unit; an angle needs one, "
                     f"e.g. '20 deg', or a unit in the column header ('{name} [deg]')"
                 )
-            inputs[name] = _value(where, name, v, unit or INPUTS[name].parse_unit)
+            inputs[name] = _value(where, name, v, unit, INPUTS[name].parse_unit)
         elif name.endswith("_sigma") and canonical_output(name[: -len("_sigma")]):
             q = str(canonical_output(name[: -len("_sigma")]))
-            sig[q] = _value(where, name, v, unit or MEASURABLE[q].unit)
+            sig[q] = _value(where, name, v, unit, MEASURABLE[q].unit)
         elif canonical_output(name):
             q = str(canonical_output(name))
-            obs[q] = _value(where, name, v, unit or MEASURABLE[q].unit)
+            obs[q] = _value(where, name, v, unit, MEASURABLE[q].unit)
         else:
             raise ValueError(
                 f"{where}: unknown column {name!r}; a drop takes label, "
@@ -269,6 +274,7 @@ def _check_row(where: str, row: _Row) -> None:
     for req in ("angle", "vy"):
         if req not in row.inputs:
             raise ValueError(f"{where} ({row.label}): the drop needs {req!r}")
+    _check_inputs(f"{where} ({row.label})", row)
     if row.inputs["vy"] >= 0.0:
         raise ValueError(
             f"{where} ({row.label}): vy = {row.inputs['vy']:g} m/s must be < 0 (towards the flat)"
@@ -295,6 +301,15 @@ def _check_row(where: str, row: _Row) -> None:
         if q not in row.observed:
             raise ValueError(f"{where} ({row.label}): {q}_sigma is given without {q}")
     _check_depths(where, row)
+
+
+def _check_inputs(where: str, row: _Row) -> None:
+    """The values a single impact refuses (the sweep's rules: ``sweep.dimensions``): an angle
+    of a rod outside (0, 90] deg, mu < 0, a size, mass or material property <= 0, ..."""
+    for name, x in row.inputs.items():
+        check_allowed(name, [x], f"{where}, column {name!r}")
+    if row.categories.get("body", "rod") != "sphere":
+        check_rod_angles([row.inputs["angle"]], f"{where}, column 'angle'")
 
 
 def _unit_text(unit: str) -> str:

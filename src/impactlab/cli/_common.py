@@ -172,17 +172,23 @@ def parse_rod_table(table: Mapping[str, Any], prefix: str) -> dict[str, float]:
     return out
 
 
-def load_toml(path: Path | None) -> dict[str, Any]:
-    """Read a TOML input file (empty dict for None); clear error if missing or malformed."""
+def load_toml(path: Path | None, option: str = "input file") -> dict[str, Any]:
+    """Read a TOML input file (empty dict for None); a UserError naming ``option`` (``--file``)
+    and the path when it is missing, a folder, unreadable or not valid TOML."""
     if path is None:
         return {}
+    shown = f"{option} {str(path)!r}"
+    if path.is_dir():
+        raise UserError(f"{shown} is a folder: give a TOML file")
     if not path.is_file():
-        raise UserError(f"input file {str(path)!r} does not exist")
+        raise UserError(f"{shown} does not exist")
     try:
         with path.open("rb") as fh:
             return tomllib.load(fh)
     except tomllib.TOMLDecodeError as exc:
-        raise UserError(f"input file {str(path)!r} is not valid TOML: {exc}") from None
+        raise UserError(f"{shown} is not valid TOML: {exc}") from None
+    except OSError as exc:
+        raise UserError(f"{shown} cannot be read ({exc.strerror or exc})") from None
 
 
 #: SI units of the fields the commands print that are not in ``impactlab.schema``.

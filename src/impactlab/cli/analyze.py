@@ -22,7 +22,7 @@ from impactlab.cli._common import (
     parse_rod_table,
     print_rows,
 )
-from impactlab.cli.invert import inversion_json
+from impactlab.cli.invert_output import inversion_json
 
 if TYPE_CHECKING:
     from impactlab.experiment import ExperimentResult, MarkerGeometry
@@ -36,7 +36,7 @@ def _rod_from(spec: str | None) -> tuple[Rod, dict[str, Any]]:
     if spec is None or spec.strip().lower() == "paper":
         return PAPER_ROD, {}
     path = Path(spec)
-    data = load_toml(path)
+    data = load_toml(path, "--rod")
     table = data.get("rod")
     if not isinstance(table, dict):
         raise UserError(
@@ -59,7 +59,7 @@ def _rod_from(spec: str | None) -> tuple[Rod, dict[str, Any]]:
 def _geometry_from(spec: str | None, rod_data: dict[str, Any]) -> MarkerGeometry | None:
     from impactlab.experiment import MarkerGeometry  # lazy: a fast CLI start
 
-    data = load_toml(Path(spec)) if spec is not None else rod_data
+    data = load_toml(Path(spec), "--geometry") if spec is not None else rod_data
     table = data.get("markers")
     if table is None:
         if spec is not None:
@@ -182,8 +182,8 @@ def _print_summary(res: ExperimentResult) -> None:
                 rows.append((label, text, unit))
     names = (Path(p).name if p else "-" for p in (res.markers_path, res.scan_path))
     print_rows(rows, "impactlab analyze: " + " + ".join(names))
-    for w in res.warnings:
-        console.print(Text(f"warning: {w}"))
+    for w in res.warnings:  # on stderr, as every command's warnings
+        typer.echo(f"warning: {w}", err=True)
     for name, path in {**res.figures, **res.files}.items():
         console.print(Text(f"saved {name}: {path}"))
 

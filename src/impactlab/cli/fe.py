@@ -19,7 +19,8 @@ from typing import Any
 
 import typer
 
-from impactlab.cli._common import UserError, console, emit, positive, quantity
+from impactlab._display import field_row, format_value
+from impactlab.cli._common import SI_UNITS, UserError, console, positive, print_rows, quantity
 from impactlab.materials import Material, get_material
 
 fe_app = typer.Typer(
@@ -115,6 +116,35 @@ def _summary(res: Any) -> dict[str, Any]:
         "force_balance": res.force_balance,
         "run_time": res.run_time,
     }
+
+
+#: Display units of the table (the JSON stays in SI): every length of an indentation is
+#: dent-scale, in um as every command shows dents; ccx's run time in s (runs take seconds to
+#: minutes).
+_TABLE_UNITS = {"m": ("um", 1e6), "s": ("s", 1.0)}
+#: The table's label of ``last_converged_delta`` (shown only for a run that did not converge:
+#: the interference of its last converged increment, where its curves end).
+STOPPED_AT = "stopped at (last_converged_delta)"
+
+
+def summary_rows(res: Any) -> list[tuple[str, str, str]]:
+    """The table of one run: its summary (the JSON's fields) with lengths in um and the run
+    time in s; ``last_converged_delta`` only when the run did not converge (a converged run's
+    is where its unloading ended, which says nothing), as :data:`STOPPED_AT`."""
+    data = _summary(res)
+    stopped = data.pop("last_converged_delta")
+    if not res.converged:
+        data[STOPPED_AT] = stopped
+    si = {**SI_UNITS, **_UNITS, STOPPED_AT: "m"}
+    rows = []
+    for name, value in data.items():
+        unit = si.get(name)
+        if unit in _TABLE_UNITS and isinstance(value, float):
+            shown, scale = _TABLE_UNITS[unit]
+            rows.append((name, format_value(value * scale), shown))
+        else:
+            rows.append(field_row(name, value, unit))
+    return rows
 
 
 def _plot(results: list[Any], out: Path | None) -> Path:
@@ -232,8 +262,7 @@ def indent_cmd(
         print(json.dumps(to_json({"runs": payload}, _UNITS), indent=2))
     else:
         for r in results:
-            data = _summary(r)
-            emit(data, as_json=False, title=f"FE indentation to {r.delta_max:.4g} m", units=_UNITS)
+            print_rows(summary_rows(r), f"FE indentation to {r.delta_max * 1e6:.4g} um")
     if plot:
         path = _plot(results, out)
         if not as_json:

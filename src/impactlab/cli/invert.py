@@ -7,15 +7,15 @@ angle without a unit is refused (20 could be degrees or radians).
 from __future__ import annotations
 
 import json
-from collections.abc import Mapping
+import warnings
 from pathlib import Path
 from typing import Any
 
 import typer
 
-from impactlab._display import field_row, field_rows
-from impactlab._json import quantity as quantity_json
+from impactlab._display import field_row
 from impactlab._json import to_json
+from impactlab._validation import ImplausibleInputWarning
 from impactlab.analytic import InversionResult, invert
 from impactlab.bodies import PAPER_ROD, Rod
 from impactlab.cli._common import (
@@ -28,6 +28,8 @@ from impactlab.cli._common import (
     quantity,
     rod_option,
 )
+from impactlab.cli.config_values import check_booleans
+from impactlab.cli.invert_output import inversion_json, print_inversion
 
 # input name -> (SI unit used for parsing, accepted TOML keys, command-line option)
 _FIELDS: dict[str, tuple[str, tuple[str, ...], str]] = {
@@ -82,6 +84,7 @@ def _from_file(
     """(values, sigmas, rod, extra: case, gravity, samples, seed) of a measurement file."""
     tables = {k: v for k, v in data.items() if k in ("sigma", "rod")}
     extra = {k: v for k, v in data.items() if k in _EXTRA}
+    check_booleans(extra, ("gravity",), "the measurement file")
     values = {k: v for k, v in data.items() if k not in tables and k not in extra}
     for name, table in tables.items():
         if not isinstance(table, dict):
@@ -135,7 +138,7 @@ def run_invert(
     """Merge case < file < command line and call :func:`impactlab.analytic.invert` (the paper
     case's negative dent depth and sliding length enter as magnitudes). Returns the result and
     the inputs as given (SI, signs kept: the echo), as ``(value, sigma)`` by keyword."""
-    v, s, r, extra = _from_file(load_toml(file))
+    v, s, r, extra = _from_file(load_toml(file, "--file"))
     case = case or extra.get("case")
     if case is not None:
         from impactlab.paper.data import get_case  # lazy: a fast CLI start
@@ -156,10 +159,22 @@ def run_invert(
         **kwargs,
         rod=_rod(r),
         gravity=gravity if gravity is not None else bool(extra.get("gravity", False)),
-        n_samples=samples if samples is not None else int(extra.get("samples", 20_000)),
-        seed=seed if seed is not None else int(extra.get("seed", 0)),
+        n_samples=samples if samples is not None else _file_count(extra, "samples", 20_000, 100),
+        seed=seed if seed is not None else _file_count(extra, "seed", 0, 0),
     )
     return result, kwargs
+
+
+def _file_count(extra: dict[str, Any], key: str, default: int, least: int) -> int:
+    """The integer ``key`` of a measurement file (``samples``, ``seed``), ``default`` when it
+    is absent; UserError naming the key for a value that is not an integer >= ``least`` (a
+    float such as 200.7 or 1.5 is refused, not rounded)."""
+    value = extra.get(key, default)
+    if isinstance(value, bool) or not isinstance(value, int) or value < least:
+        raise UserError(
+            f"{key} in the measurement file must be an integer >= {least}, got {value!r}"
+        )
+    return value
 
 
 #: Help of the measured inputs' options.
@@ -242,32 +257,48 @@ def invert_cmd(
     """
     inputs = (angle, vi, e, mu, delta_p, ls, dv_cy)
     sigmas = (sigma_angle, sigma_vi, sigma_e, sigma_mu, sigma_delta_p, sigma_ls, sigma_dv_cy)
-    res, given = run_invert(
-        case=case,
-        file=file,
-        values=dict(zip(_FIELDS, inputs, strict=True)),
-        sigmas=dict(zip(_FIELDS, sigmas, strict=True)),
-        rod={"mass": mass, "length": length, "tip_radius": tip_radius, "inertia": inertia},
-        gravity=gravity,
-        samples=samples,
-        seed=seed,
-    )
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", ImplausibleInputWarning)
+        res, given = run_invert(
+            case=case,
+            file=file,
+            values=dict(zip(_FIELDS, inputs, strict=True)),
+            sigmas=dict(zip(_FIELDS, sigmas, strict=True)),
+            rod={"mass": mass, "length": length, "tip_radius": tip_radius, "inertia": inertia},
+            gravity=gravity,
+            samples=samples,
+            seed=seed,
+        )
+    found = _inversion_warnings(caught)
     if flat is None and case is not None:
         flat = "aisi-1010"  # the paper's flat
-    model, warnings = _compare_with_engine(res, flat) if flat is not None else ({}, [])
+    model, compared = _compare_with_engine(res, flat) if flat is not None else ({}, [])
+    found += compared
     if as_json:
         data = inversion_json(res, given)
         if model:
             data["model"] = to_json(model, SI_UNITS)
-        print(json.dumps({**data, "warnings": warnings}, indent=2))
-        return
-    _print_result(res, given)
-    if model:
-        rows = [(f"model {k} ({model['law']})", *field_row(k, v, SI_UNITS[k])[1:])
-                for k, v in model.items() if isinstance(v, float)]  # fmt: skip
-        print_rows(rows, f"simulated impact on {model['flat']}")
-    for text in warnings:
+        print(json.dumps({**data, "warnings": found}, indent=2))
+    else:
+        print_inversion(res, given)
+        if model:
+            rows = [(f"model {k} ({model['law']})", *field_row(k, v, SI_UNITS[k])[1:])
+                    for k, v in model.items() if isinstance(v, float)]  # fmt: skip
+            print_rows(rows, f"simulated impact on {model['flat']}")
+    for text in found:
         typer.echo(f"warning: {text}", err=True)
+
+
+def _inversion_warnings(caught: list[warnings.WarningMessage]) -> list[str]:
+    """The texts of the inversion's ImplausibleInputWarnings (for the JSON's ``warnings`` and
+    stderr); any other warning is shown again as Python shows it."""
+    texts = []
+    for w in caught:
+        if issubclass(w.category, ImplausibleInputWarning):
+            texts.append(str(w.message))
+        else:
+            warnings.showwarning(w.message, w.category, w.filename, w.lineno)
+    return texts
 
 
 def _compare_with_engine(res: InversionResult, flat: str) -> tuple[dict[str, Any], list[str]]:
@@ -298,74 +329,6 @@ def _compare_with_engine(res: InversionResult, flat: str) -> tuple[dict[str, Any
         law=law, sigma_duration=res.sigma_T_linear,
     )  # fmt: skip
     return model, warnings
-
-
-#: SI units of the inversion's inputs, by keyword of ``impactlab.analytic.invert``.
-INPUT_UNITS = {
-    "angle": "rad",
-    "v_i": "m/s",
-    "e": "1",
-    "mu": "1",
-    "delta_p": "m",
-    "sliding_length": "m",
-    "dv_cy": "m/s",
-}
-#: The sigma of each output: output -> its field in InversionResult.
-_SIGMAS = {
-    "duration": "sigma_T_linear",
-    "mean_force": "sigma_F_linear",
-    "T_mc": "sigma_T_mc",
-    "F_mc": "sigma_F_mc",
-}
-
-
-def _per(unit: str, by: str) -> str:
-    return unit if by == "1" else f"{unit}/({by})"
-
-
-def inversion_json(
-    res: InversionResult, given: Mapping[str, tuple[float, float]] | None = None
-) -> dict[str, Any]:
-    """The inversion as JSON (docs/json-schema.md): outputs with their sigma (first order for
-    ``duration``/``mean_force``, Monte Carlo for ``T_mc``/``F_mc``), the inputs as given (signs
-    kept; ``res.inputs`` without ``given``), the rod and the sensitivities, each with its unit."""
-    data = {k: v for k, v in res.to_dict().items() if k not in _SIGMAS.values()}
-    inputs = given or res.inputs
-    sigmas = {k: getattr(res, name) for k, name in _SIGMAS.items()}
-    data["inputs"] = {k: quantity_json(float(v), INPUT_UNITS[k], s) for k, (v, s) in inputs.items()}
-    for out, unit in (("T", "s"), ("F", "N")):
-        sens = data.pop(f"sensitivity_{out}")
-        data[f"sensitivity_{out}"] = {
-            k: quantity_json(float(d), _per(unit, INPUT_UNITS[k])) for k, d in sens.items()
-        }
-    return to_json(data, SI_UNITS, sigmas)  # type: ignore[no-any-return]
-
-
-def _print_result(res: InversionResult, given: Mapping[str, tuple[float, float]]) -> None:
-    """The inputs as given, then T and F (± first order; Monte Carlo rows only when an input
-    has an uncertainty), in display units."""
-    uncertain = any(s > 0 for _v, s in given.values())
-    rows = [field_row(k, float(v), INPUT_UNITS[k], s) for k, (v, s) in given.items()]
-    outputs: dict[str, Any] = {
-        "duration": res.duration,
-        "mean_force": res.mean_force,
-        "force_method": res.force_method,
-    }
-    if uncertain:
-        outputs.update({"T_mc": res.T_mc, "F_mc": res.F_mc, "n_samples": res.n_samples})
-    outputs.update({"alpha": res.alpha, "mu_c": res.mu_c, "K_x": res.K_x, "K_y": res.K_y})
-    outputs["gravity"] = "included" if res.gravity else "neglected (paper)"
-    sigmas = {k: getattr(res, name) for k, name in _SIGMAS.items()} if uncertain else {}
-    rows += field_rows(outputs, SI_UNITS, sigmas)
-    title = "impactlab invert (paper Eqs. 12, 29)"
-    if uncertain:
-        title += ": ± first order; T_mc, F_mc: Monte Carlo mean ± sigma"
-    print_rows(rows, title)
-    if uncertain and res.mc_rejected > 0:
-        typer.echo(
-            f"note: {res.mc_rejected:.2%} of the Monte Carlo samples fell in the "
-            "sticking regime or out of range and were discarded"
-        )
 
 
 def register(app: typer.Typer) -> None:

@@ -23,6 +23,7 @@ from rich.text import Text
 from impactlab._display import field_row
 from impactlab._json import quantity as quantity_json
 from impactlab.cli._common import console, emit, quantity
+from impactlab.cli.laws_accuracy import print_accuracy
 from impactlab.contact import get_law, law_names
 from impactlab.contact.base import ContactLaw
 from impactlab.materials import ContactPair, get_material
@@ -127,7 +128,7 @@ def laws(
     """
     try:
         if accuracy:
-            _accuracy(name, as_json)
+            print_accuracy(name, as_json)
             return
         _laws(name, radius, body, flat, as_json)
     except ValueError as exc:  # one line, no traceback, whichever entry point runs us
@@ -156,43 +157,6 @@ def _citation(ref: Any) -> str:
     if isinstance(ref, dict) and "citation" in ref:
         return str(ref["citation"]) + (f" (doi:{ref['doi']})" if ref.get("doi") else "")
     return str(ref)
-
-
-def _accuracy(name: str | None, as_json: bool) -> None:
-    """``impactlab laws [NAME] --accuracy``: docs/laws/accuracy.md."""
-    from impactlab.fe import accuracy as acc
-    from impactlab.fe.accuracy_views import table_rows
-
-    only = str(get_law(name).name) if name else None
-    if only is not None and only not in acc.measured_laws():
-        raise ValueError(
-            f"law {only!r} is built from the shipped FE curves, not measured against them: "
-            "see docs/laws/tabulated.md for its round trip"
-        )
-    results = acc.accuracy()
-    if as_json:
-        emit(acc.report(results, only), as_json=True, units=acc.UNITS)
-        return
-    if not results:
-        raise ValueError("no FE reference curves are shipped (impactlab/fe/data/)")
-    for res in results:
-        header, rows = table_rows(res, only)
-        c = res.case
-        title = (
-            f"{c.description}: E*/S_y = {c.e_star_over_sy:.0f}, delta_c = {c.delta_c * 1e6:.4g} um"
-            "\nforce error / delta_r/delta_max error, at delta_max/delta_c ="
-        )
-        table = Table(title=title, show_header=True, header_style="bold")
-        for i, col in enumerate(header):  # the law's name never folds; the numbers may
-            table.add_column(col, overflow="fold", no_wrap=i == 0)
-        for row in rows:
-            table.add_row(*row)
-        console.print(table)
-        console.print(f"recommendation: {res.recommendation()}\n")
-    console.print(
-        f"verified range: within {100 * acc.FORCE_TOLERANCE:g} % in force and "
-        f"{acc.RESIDUAL_TOLERANCE:g} in delta_r/delta_max of FE (docs/laws/accuracy.md)."
-    )
 
 
 #: The narrowest terminal [columns] that gets the overview as a table; below it, one block per

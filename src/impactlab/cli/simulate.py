@@ -31,6 +31,7 @@ from impactlab.cli._common import (
     rate_name,
     velocity_input,
 )
+from impactlab.cli.config_values import check_booleans
 from impactlab.cli.drop import flexible_rod
 from impactlab.cli.simulate_from import FROM_RULE, run_from
 from impactlab.cli.simulate_output import report_result
@@ -124,6 +125,7 @@ def _merge(config: dict[str, Any], cli: dict[str, Any], config_path: Path | None
         )
     if unknown:
         raise UserError(f"unknown key(s) {unknown} in the config file; known: {list(_KEYS)}")
+    check_booleans(section, _FLAGS, str(config_path))
     given = {k: v for k, v in cli.items() if v is not None}
     return _Options({**section, **given}, frozenset(given), str(config_path))
 

@@ -73,9 +73,29 @@ def _recorded(record: Mapping[str, Any], path: Path) -> tuple[str, dict[str, Any
     from impactlab.dynamics.provenance import from_record, record_function
 
     try:
-        return record_function(record), from_record(record)
+        function = record_function(record)
+        _check_recorded_keys(record)
+        return function, from_record(record)
     except (ValueError, TypeError) as exc:
         raise UserError(f"--from {str(path)!r}: {exc}") from None
+
+
+#: The keys every recorded impact has (``impactlab.dynamics.provenance.input_record``).
+_RECORDED_KEYS = ("body", "flat", "law", "velocity")
+
+
+def _check_recorded_keys(record: Mapping[str, Any]) -> None:
+    """ValueError when ``record`` (or its ``input``) lacks a key of every recorded impact,
+    naming what --from reads: the JSON output of ``impactlab simulate`` or ``impactlab drop``."""
+    recorded = record.get("input")
+    recorded = recorded if isinstance(recorded, Mapping) else record
+    missing = [k for k in _RECORDED_KEYS if k not in recorded]
+    if missing:
+        raise ValueError(
+            f"the file records no impact (no {', '.join(missing)}): give "
+            "the output of 'impactlab simulate ... --json' or 'impactlab drop ... --json', or "
+            "the 'input' of a result's to_dict()"
+        )
 
 
 def _velocity(given: Mapping[str, Any], recorded: Any, label: Callable[[str], str]) -> Any:

@@ -25,6 +25,8 @@ from impactlab._display import field_row, format_number
 from impactlab._json import quantity as quantity_json
 from impactlab._json import to_json
 from impactlab.cli._common import UserError, emit, print_rows
+from impactlab.cli.output_paths import existing_store, output_file, output_store
+from impactlab.cli.sweep_summary import info_json, run_summary
 
 if TYPE_CHECKING:
     from impactlab.sweep import SweepResult
@@ -149,35 +151,6 @@ def _uncertainty_json(report: dict[str, Any]) -> dict[str, Any]:
     return {**to_json(report, units), "summary": summary}
 
 
-def _run_summary(
-    res: SweepResult, ds: Any, netcdf: Path | None, files: list[str]
-) -> dict[str, Any]:
-    from impactlab.sweep import flag_counts, status_counts
-    from impactlab.sweep.display import steady_throughput, warm_up_s
-    from impactlab.sweep.summary import format_flag_counts
-
-    s = res.stats
-    summary: dict[str, Any] = {
-        "store": str(res.path),
-        "cases": s.n_cases,
-        "chunks": s.n_chunks,
-        "chunks_resumed": s.chunks_before,
-        "chunks_computed": s.chunks_computed,
-        "wall_time": s.wall_s,
-        "throughput": steady_throughput(s),  # after each worker's first task (the compile)
-        "first_task": warm_up_s(s),
-        "backend": s.backend,
-        "status": status_counts(ds),
-    }
-    if "flags" in ds.data_vars:
-        summary["flagged"] = format_flag_counts(flag_counts(ds["flags"].values, ds["flags"].attrs))
-    if netcdf is not None:
-        summary["netcdf"] = str(netcdf)
-    if files:
-        summary["plots"] = files
-    return summary
-
-
 _Out = Annotated[
     Path | None,
     typer.Option(
@@ -244,8 +217,12 @@ def run_cmd(
 
     Example: impactlab sweep examples/study-regime-map.toml --out map.zarr --plot plots/
     """
+    from impactlab.experiment.checks import output_folder
     from impactlab.sweep import export_netcdf, plot_sweep
 
+    _check_run_paths(out, netcdf)
+    if plot is not None:
+        plot = output_folder(plot, "--plot")
     where = _Where(out, scheduler, workers, max_cases, worker_timeout, backend)
     res = _run(study, where, quiet, restart)
     ds = res.dataset
@@ -257,10 +234,18 @@ def run_cmd(
     if quiet and not as_json:
         return
     emit(
-        _run_summary(res, ds, netcdf, files),
+        run_summary(res, ds, netcdf, files, as_json=as_json),
         as_json=as_json,
         title=f"sweep {res.study.name}",
     )
+
+
+def _check_run_paths(out: Path | None, netcdf: Path | None) -> None:
+    """--out (a store) and --netcdf (a file) can be written, before the study runs."""
+    if out is not None:
+        output_store(out, "--out")
+    if netcdf is not None:
+        output_file(netcdf, "--netcdf")
 
 
 @sweep_app.command("uncertainty")
@@ -296,6 +281,7 @@ def uncertainty_cmd(
     if source.is_dir():
         ds = open_sweep(source)
     else:
+        _check_run_paths(out, None)
         where = _Where(out, scheduler, workers, max_cases)
         ds = _run(source, where, quiet or as_json, False).dataset
     _print_uncertainty(ds, outputs, percentiles, as_json, include_flagged)
@@ -309,7 +295,8 @@ def info_cmd(
     """Progress and contents of a store (chunks done, status counts)."""
     from impactlab.sweep import store_info
 
-    emit(store_info(store), as_json=as_json, title=str(store))
+    info = store_info(existing_store(store))
+    emit(info_json(info) if as_json else info, as_json=as_json, title=str(store))
 
 
 @sweep_app.command("plot")
@@ -320,10 +307,12 @@ def plot_cmd(
     """Regime map (with mu_c on angle x mu), maps of e, delta_p, L_s, T over the swept inputs
     (angle, mu, velocities; sphere studies too), histograms of samples; names what it cannot
     draw and why."""
+    from impactlab.experiment.checks import output_folder
     from impactlab.sweep import open_sweep, plot_sweep
 
+    ds = open_sweep(existing_store(store))
     skipped: list[str] = []
-    files = _plots(plot_sweep, open_sweep(store), out, skipped)
+    files = _plots(plot_sweep, ds, output_folder(out, "--out"), skipped)
     if not files:
         raise UserError("nothing to plot: " + "; ".join(skipped))
     for f in files:
@@ -359,7 +348,8 @@ def export_cmd(
     """Export a store to NetCDF-4."""
     from impactlab.sweep import export_netcdf, open_sweep
 
-    export_netcdf(open_sweep(store), target)
+    ds = open_sweep(existing_store(store))
+    export_netcdf(ds, output_file(target, "the NetCDF file"))
     print(target, file=sys.stdout)
 
 

@@ -104,6 +104,9 @@ class ContactModel:
     details: Mapping[str, float] = field(default_factory=dict, repr=False)
     references: tuple[Reference, ...] = field(default=(), repr=False)
     source: str = ""
+    #: the contact pair a law's ``build`` made the model for (None: made by hand, or read back
+    #: from a record); the engine refuses it for another pair (``dynamics.models``)
+    pair: ContactPair | None = field(default=None, init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         p = np.array(self.params, dtype=np.float64)
@@ -265,7 +268,9 @@ class ContactLaw(ABC):
         p[k.P_DLIM] = R
         details = self._fill(p, pair, values) or {}
         self._check_loading_curve(p, pair, published=values.get("published_switch", 0.0) == 1.0)
-        return ContactModel(self.name, self.law_id, p, details, self.references)
+        model = ContactModel(self.name, self.law_id, p, details, self.references)
+        object.__setattr__(model, "pair", pair)
+        return model
 
     def parameter_values(self, params: Any) -> dict[str, float]:
         """The given law parameters ``params`` (a mapping of names to values) as floats in the

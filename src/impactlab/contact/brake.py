@@ -119,7 +119,7 @@ class Brake(ContactLaw):
                 )
                 raise ValueError(
                     f"hardness: Brake's law needs the Brinell hardness of both materials, and "
-                    f"{missing} has none (brinell_hardness); give the material one, or the "
+                    f"{missing} has none; give the material a brinell_hardness, or the "
                     "combined value as a law parameter: law_params={'hardness': ...} in "
                     "kgf/mm^2 (a [law_params] table in a --config file on the command line)"
                 )

@@ -205,14 +205,11 @@ class IndentationCurves:
         ``loading`` with columns delta [m], F [N]; ``unloading`` with delta_max [m],
         delta_r [m]. See ``from_arrays``."""
         cols = []
-        for what, path in (("loading", loading), ("unloading", unloading)):
-            try:
-                a = np.loadtxt(Path(path), delimiter=",", skiprows=1, ndmin=2)
-            except (OSError, ValueError) as exc:
-                raise ValueError(f"{what} CSV {str(path)!r}: {exc}") from None
-            if a.shape[1] != 2:
-                raise ValueError(f"{what} CSV {str(path)!r} must have 2 columns, got {a.shape[1]}")
-            cols += [a[:, 0], a[:, 1]]
+        for what, path, names in (
+            ("loading", loading, "delta [m], F [N]"),
+            ("unloading", unloading, "delta_max [m], delta_r [m]"),
+        ):
+            cols += read_two_columns(Path(path), f"{what} CSV {str(path)!r}", names)
         return cls.from_arrays(pair, radius, *cols, **kwargs)
 
     def record(self) -> dict[str, Any]:
@@ -228,6 +225,48 @@ class IndentationCurves:
             "delta_max": self.delta_max.tolist(),
             "residual_ratio": self.residual_ratio.tolist(),
         }
+
+
+def read_two_columns(path: Path, where: str, names: str) -> list[np.ndarray]:
+    """The two columns (``names``, for the messages) of the comma-separated file ``path``: one
+    header line, then one row of two numbers per line (blank lines and ``#`` comments
+    skipped). ValueError starting with ``where`` for a file that is missing, a folder, empty,
+    without data rows, or with a row of another width or a text that is not a number."""
+    try:
+        text = path.read_text(encoding="utf-8", errors="replace")
+    except OSError as exc:
+        if path.is_dir():
+            why = "is a folder, not a CSV file"
+        elif not path.exists():
+            why = "does not exist"
+        else:
+            why = f"cannot be read ({exc.strerror or exc})"
+        raise ValueError(f"{where} {why}") from None
+    lines = text.splitlines()
+    if not lines or not text.strip():
+        raise ValueError(f"{where}: the file is empty (expected a header line, then rows of "
+                         f"{names})")  # fmt: skip
+    rows: list[tuple[float, float]] = []
+    for number, line in enumerate(lines[1:], start=2):
+        content = line.split("#", 1)[0].strip()
+        if not content:
+            continue
+        cells = [c.strip() for c in content.split(",")]
+        if len(cells) != 2:
+            raise ValueError(
+                f"{where}: line {number} has {len(cells)} column(s), must have 2 columns "
+                f"({names}); is the file truncated?"
+            )
+        try:
+            rows.append((float(cells[0]), float(cells[1])))
+        except ValueError:
+            raise ValueError(
+                f"{where}: line {number} is not two numbers ({names}), got {content!r}"
+            ) from None
+    if not rows:
+        raise ValueError(f"{where}: no data rows after the header line (expected {names})")
+    table = np.array(rows, dtype=np.float64)
+    return [table[:, 0], table[:, 1]]
 
 
 def curves_from_record(d: dict[str, Any]) -> IndentationCurves:

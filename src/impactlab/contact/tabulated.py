@@ -330,7 +330,9 @@ class Tabulated(ContactLaw):
             "residual_raised": residual_raised(c),
         }
         source = f"{c.name}: {c.source}"
-        return ContactModel(self.name, self.law_id, full, details, self.references, source)
+        model = ContactModel(self.name, self.law_id, full, details, self.references, source)
+        object.__setattr__(model, "pair", pair)
+        return model
 
     def _fill(self, p: np.ndarray, pair: ContactPair, values: dict[str, float]) -> None:
         raise NotImplementedError("Tabulated.build fills the parameters itself")

@@ -11,7 +11,6 @@ for ``simulate``'s fast path, once per (body, flat, law name, friction name).
 from __future__ import annotations
 
 import functools
-import math
 import weakref
 from collections.abc import Mapping
 from typing import Any
@@ -20,7 +19,6 @@ import numpy as np
 
 from impactlab.bodies import Rod, Sphere
 from impactlab.contact import ContactModel, get_law
-from impactlab.contact import kernels as k
 from impactlab.contact.tabulate import with_table
 from impactlab.friction import FrictionKind, FrictionModel, get_friction
 from impactlab.materials import ContactPair, Material
@@ -70,8 +68,8 @@ def contact_model(
     """The (cached) ContactModel of ``law`` for ``body`` on ``flat``.
 
     ``law`` is a registered law name or a ready ContactModel (then ``law_params`` must be
-    empty, its radius must equal the body's tip radius and its E*, yield strength and Poisson
-    ratio those of the body's material on ``flat``: ``check_model_pair``).
+    empty, its radius must equal the body's tip radius and, if a law built it, for ``flat``:
+    ``check_model_flat``).
     """
     R = body.tip_radius
     if isinstance(law, ContactModel):
@@ -82,7 +80,7 @@ def contact_model(
                 f"law: the ContactModel's radius ({law.radius!r} m) differs from the body's tip "
                 f"radius ({R!r} m); build the model with radius={R!r}"
             )
-        check_model_pair(law, ContactPair(body.material, flat))
+        check_model_flat(law, flat)
         return law
     if not isinstance(law, str):
         raise ValueError(f"law must be a law name or a ContactModel, got {type(law).__name__}")
@@ -99,28 +97,18 @@ def contact_model(
     return build_contact_model(law, body.material, flat, R, law_params)
 
 
-#: (name, ContactModel parameter slot, ContactPair property) of the pair's numbers a model holds.
-_PAIR_SLOTS: tuple[tuple[str, int, str], ...] = (
-    ("E*", k.P_ESTAR, "E_star"),
-    ("yield strength", k.P_SY, "yield_strength"),
-    ("Poisson ratio", k.P_NU, "nu"),
-)
-
-
-def check_model_pair(model: ContactModel, pair: ContactPair) -> None:
-    """ValueError when the ready ``model`` was built for another contact pair than ``pair``
-    (the body's material on the flat): its E*, yield strength and Poisson ratio must be the
-    pair's (to 1e-9), else the dent would be one pair's and the friction (G*) and the
-    result's labels another's."""
-    for name, slot, prop in _PAIR_SLOTS:
-        have, want = float(model.params[slot]), float(getattr(pair, prop))
-        if math.isfinite(have) and not math.isclose(have, want, rel_tol=1e-9):
-            raise ValueError(
-                f"law: the ContactModel was built for another contact pair: its {name} is "
-                f"{have:.6g}, the body's material on this flat ({pair.body.name} on "
-                f"{pair.flat.name}) has {want:.6g}; build it with "
-                f"ContactPair(body.material, flat), or pass that flat"
-            )
+def check_model_flat(model: ContactModel, flat: Material) -> None:
+    """ValueError when the ready ``model`` was built by a law for another flat than ``flat``:
+    the dent would be the other flat's while the result names this one (and Mindlin's G* takes
+    this one). A model made by hand (``model.pair`` None) is the user's, and so is one built
+    for another body material on this flat (a stiffer rod with the same contact, say)."""
+    if model.pair is None or model.pair.flat == flat:
+        return
+    raise ValueError(
+        f"law: the ContactModel was built for the flat {model.pair.flat.name!r}, not for "
+        f"{flat.name!r}; pass that flat, or build the model for this one "
+        "(get_law(name).build(ContactPair(body.material, flat), radius))"
+    )
 
 
 #: (law, id(body), id(flat)) -> (body, flat, model) of ``contact_model`` without law_params:

@@ -254,7 +254,7 @@ def from_record(record: Mapping[str, Any]) -> dict[str, Any]:
     if missing:
         raise ValueError(
             f"the record lacks {missing}: give the 'input' of a result's to_dict() or of "
-            f"'impactlab simulate --json' (impactlab >= 0.3)"
+            f"the output of 'impactlab simulate ... --json' or 'impactlab drop ... --json'"
         )
     fmt = record.get("format", RECORD_FORMAT)
     if fmt != RECORD_FORMAT:

@@ -40,7 +40,7 @@ def table_rows(result: CaseAccuracy, only: str | None = None) -> tuple[list[str]
     rows = []
     for a in (a for a in result.laws if only in (None, a.law)):
         if not a.built:  # e.g. Brake's law for a material without a Brinell hardness
-            why = a.message.split(" (")[0]
+            why = a.message.split("; ")[0]
             rows.append([a.law, *("n/a" for _ in ratios), f"not built for this pair: {why}"])
             continue
         cells = [f"{_pct(a.force_error_at(r))} / {_abs(a.residual_error_at(r))}" for r in ratios]

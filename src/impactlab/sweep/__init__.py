@@ -24,7 +24,7 @@ from impactlab.sweep.engine import (
     numba_cache_stats,
 )
 from impactlab.sweep.inputs import INPUTS, OUTPUT_ALIASES, OUTPUTS, InputSpec
-from impactlab.sweep.integrity import DamagedStoreError
+from impactlab.sweep.integrity import DamagedStoreError, RepairableStoreError
 from impactlab.sweep.limits import DEFAULT_MAX_CASES, SweepSizeWarning
 from impactlab.sweep.models import Statics
 from impactlab.sweep.options import EngineOptions, UncertaintySpec
@@ -65,6 +65,7 @@ __all__ = [
     "LogNormal",
     "Normal",
     "PlotSkipped",
+    "RepairableStoreError",
     "Sample",
     "SliceWarning",
     "Statics",

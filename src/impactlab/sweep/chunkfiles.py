@@ -37,6 +37,18 @@ from impactlab.sweep.integrity import digest, file_digest
 Item = tuple[str, Any, np.ndarray]
 
 
+def no_result_where_failed(values: Any, status: np.ndarray, array: ArrayChunks) -> np.ndarray:
+    """One output's ``values`` for ``array``, shaped as ``status``: the fill value (NaN; -1 for
+    an integer output such as ``regime`` or ``flags``) where the case has no result (a status
+    != 0, or a NaN given for an integer output)."""
+    v = np.asarray(values).reshape(status.shape)
+    failed = status != 0
+    if array.dtype.kind in "iu":
+        keep = ~failed & np.isfinite(v) if v.dtype.kind == "f" else ~failed
+        return np.where(keep, v, array.fill)
+    return np.where(failed, np.nan, v) if failed.any() else v
+
+
 class ArrayChunks:
     """One array of a store, opened for whole-chunk writes through its own codecs."""
 

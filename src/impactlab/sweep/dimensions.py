@@ -126,6 +126,13 @@ def check_allowed(name: str, values: Sequence[float], where: str) -> None:
         )
 
 
+def check_rod_angles(angles: Sequence[float], where: str, rule_suffix: str = "") -> None:
+    """ValueError naming ``where``, the offending values and the interval unless every angle
+    [rad] of a rod lies in :data:`ANGLE`, (0, 90] deg (``rule_suffix`` ends the rule's text)."""
+    rule = _rule_text("angle", ANGLE) + rule_suffix
+    _refuse(where, "angle", angles, [a for a in angles if not _inside(a, ANGLE)], rule)
+
+
 def check_kinematics(
     fixed: Mapping[str, Value], axes: Sequence[Axis], sampled: Collection[str] = ()
 ) -> None:
@@ -154,8 +161,7 @@ def check_kinematics(
             )
     angles = [float(v) for v in values("angle") if isinstance(v, float)]
     if bodies & set(_ANGLED_BODIES):
-        rule = _rule_text("angle", ANGLE) + (" for a rod" if "sphere" in bodies else "")
-        _refuse(where("angle"), "angle", angles, [a for a in angles if not _inside(a, ANGLE)], rule)
+        check_rod_angles(angles, where("angle"), " for a rod" if "sphere" in bodies else "")
     spin_zero = "spin" not in (*grid, *sampled) and float(fixed.get("spin", 0.0)) == 0.0
     if spin_zero and "vy" in (*grid, *fixed):
         vy = [float(v) for v in values("vy")]

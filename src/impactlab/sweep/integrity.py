@@ -37,6 +37,20 @@ class CorruptStoreError(ValueError):
     not Zarr's. The message names the store, the file and what is wrong with it."""
 
 
+class RepairableStoreError(CorruptStoreError):
+    """Metadata that a resume of the same study rewrites: result arrays (a kept output,
+    ``status``) whose ``zarr.json`` is gone (``missing_arrays``), or a ``.sweep/study.json``
+    that is not a JSON object (``study_record``: what is wrong with it, or None). The intact
+    chunks are kept; those whose files are gone are computed again."""
+
+    def __init__(
+        self, message: str, missing_arrays: tuple[str, ...], study_record: str | None
+    ) -> None:
+        super().__init__(message)
+        self.missing_arrays = missing_arrays
+        self.study_record = study_record
+
+
 def digest(data: Any) -> str:
     """``"<size>:<crc32>"`` of ``data`` (bytes or any contiguous buffer)."""
     view = memoryview(data)
@@ -125,16 +139,67 @@ def _node_problem(f: Path) -> str | None:
     return None
 
 
+def _result_arrays(root: Path) -> tuple[str, ...]:
+    """The arrays written chunk by chunk (the kept outputs and ``status``) that the root
+    attributes of the store at ``root`` name (its ``zarr.json`` already checked)."""
+    attrs = json.loads((root / "zarr.json").read_bytes()).get("attributes")
+    outputs = attrs.get("outputs") if isinstance(attrs, dict) else None
+    if not isinstance(outputs, list) or not attrs.get("study_hash"):
+        return ()
+    return (*(str(o) for o in outputs), "status")
+
+
+def _study_record_problem(root: Path) -> str | None:
+    """What is wrong with ``.sweep/study.json`` (not JSON, not an object), or None (also when
+    there is none: a store cut short while being created, see ``SweepStore.prepare``)."""
+    f = root / ".sweep" / "study.json"
+    if not f.is_file():
+        return None
+    try:
+        record = json.loads(f.read_bytes().decode("utf-8"))
+    except OSError as exc:
+        return f"cannot be read ({exc.strerror or exc})"
+    except UnicodeDecodeError:
+        return "is not text (binary junk)"
+    except json.JSONDecodeError as exc:
+        return f"is not valid JSON ({exc.msg} at line {exc.lineno}, column {exc.colno})"
+    return None if isinstance(record, dict) else "is not a JSON object"
+
+
+def _corrupt(root: Path, node: Path, why: str) -> CorruptStoreError:
+    return CorruptStoreError(
+        f"sweep store {str(root)!r} is damaged: {node.relative_to(root).as_posix()} {why}; "
+        f"run the study into it again with --restart to start it fresh"
+    )
+
+
 def check_metadata(path: str | Path) -> None:
     """CorruptStoreError unless the root and every sub-folder (an array, ``.sweep``) of the
     store at ``path`` have a ``zarr.json`` that reads as Zarr v3 metadata (the chunks' data is
-    checked by ``SweepStore.verify``)."""
+    checked by ``SweepStore.verify``). RepairableStoreError (a CorruptStoreError) when only
+    result arrays are missing or ``.sweep/study.json`` is not JSON: a resume repairs those."""
     root = Path(path)
-    for node in [root, *sorted(d for d in root.iterdir() if d.is_dir())]:
+    f = root / "zarr.json"
+    why = _node_problem(f) if f.exists() else "is missing"
+    if why is not None:
+        raise _corrupt(root, f, why)
+    results = _result_arrays(root)
+    missing = tuple(n for n in results if not (root / n / "zarr.json").exists())
+    for node in sorted(d for d in root.iterdir() if d.is_dir() and d.name not in missing):
         f = node / "zarr.json"
         why = _node_problem(f) if f.exists() else "is missing"
         if why is not None:
-            raise CorruptStoreError(
-                f"sweep store {str(root)!r} is damaged: {f.relative_to(root).as_posix()} {why}; "
-                f"run the study into it again with --restart to start it fresh"
-            )
+            raise _corrupt(root, f, why)
+    record = _study_record_problem(root)
+    if not missing and record is None:
+        return
+    problems = [f"result array {n!r} is gone: {n}/zarr.json is missing" for n in missing]
+    problems += [f".sweep/study.json {record}"] if record is not None else []
+    raise RepairableStoreError(
+        f"sweep store {str(root)!r} is damaged: {'; '.join(problems)}; run the same study into "
+        f"it again (impactlab sweep run STUDY.toml --out {root}) to rewrite it: the intact "
+        "chunks are kept and those that lack data are computed again (--restart would discard "
+        "them all)",
+        missing,
+        record,
+    )

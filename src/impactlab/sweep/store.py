@@ -28,12 +28,13 @@ import numpy as np
 import xarray as xr
 import zarr
 
-from impactlab.sweep.chunkfiles import ChunkWriter
+from impactlab.sweep.chunkfiles import ChunkWriter, no_result_where_failed
 from impactlab.sweep.hooks import checkpoint
 from impactlab.sweep.inputs import INPUTS, OUTPUTS
 from impactlab.sweep.integrity import (
     CorruptStoreError,
     DamagedStoreError,
+    RepairableStoreError,
     check_marker,
     check_metadata,
     damaged_error,
@@ -41,6 +42,7 @@ from impactlab.sweep.integrity import (
 )
 from impactlab.sweep.locking import acquire_lock, release_lock, stale, write_lock
 from impactlab.sweep.options import STUDY_FORMAT
+from impactlab.sweep.repair import repair_metadata
 from impactlab.sweep.storebuild import META, StoreMeta, build_store
 from impactlab.sweep.study import Study
 
@@ -48,6 +50,7 @@ __all__ = [
     "ChunkWriter",
     "CorruptStoreError",
     "DamagedStoreError",
+    "RepairableStoreError",
     "StoreMeta",
     "StudyMismatchError",
     "SweepStore",
@@ -245,6 +248,8 @@ class SweepStore:
             self.acquire()
             try:
                 old = self.study_hash()
+            except RepairableStoreError as problem:
+                old = self._repaired_hash(problem, study, meta, restart)
             except CorruptStoreError:
                 if not restart:
                     self.release()
@@ -264,6 +269,20 @@ class SweepStore:
         if not self.create(study, meta):
             return self.prepare(study, meta)  # another process put a store there first
         return set()
+
+    def _repaired_hash(
+        self, problem: RepairableStoreError, study: Study, meta: StoreMeta, restart: bool
+    ) -> str | None:
+        """The study hash of a store whose result arrays or study record need rewriting
+        (``repair_metadata``): repaired when it holds this study (not on ``restart``, which
+        starts it fresh); another study's store is left as it is."""
+        raw = zarr.open_group(str(self.path), mode="r").attrs.get("study_hash")
+        old = None if raw is None else str(raw)
+        if restart or old != meta.study_hash:
+            return old
+        repair_metadata(self.path, problem, study, meta)
+        self._metadata_checked = False
+        return self.study_hash()
 
     # -- one writer at a time --------------------------------------------------------------------
 
@@ -291,18 +310,17 @@ class SweepStore:
         status: np.ndarray,
     ) -> None:
         """Write chunk ``index``'s outputs and status (1-D, C order over the block), the sampled
-        inputs it is the first to cover, then its completion marker with the files' checksums."""
+        inputs it is the first to cover, then its completion marker with the files' checksums.
+        Every output of a case with status != 0 is stored as "no result" (NaN, the fill value
+        -1 of an integer output such as ``regime`` or ``flags``), whatever the engine left."""
         lay = study.layout
         block = lay.block(index)
         bshape = tuple(s.stop - s.start for s in block)
+        codes = np.asarray(status, dtype=np.int32).reshape(bshape)
         items: list[tuple[str, Any, np.ndarray]] = []
         for name, values in outputs.items():
-            a = writer.arrays[name]
-            v = np.asarray(values).reshape(bshape)
-            if a.dtype.kind == "i" and v.dtype.kind == "f":
-                v = np.where(np.isfinite(v), v, a.fill)  # NaN -> the "none" code
-            items.append((name, block, v))
-        items.append(("status", block, np.asarray(status, dtype=np.int32).reshape(bshape)))
+            items.append((name, block, no_result_where_failed(values, codes, writer.arrays[name])))
+        items.append(("status", block, codes))
         if study.sample is not None and all(s.start == 0 for s in block[:-1]):
             sl = block[-1]
             draw = study.sample.draw

@@ -174,6 +174,25 @@ def _create_output(g: Any, name: str, meta: StoreMeta, study: Study) -> None:
     _chunked(g, name, study, dtype, fill, attrs)
 
 
+def _status_messages(meta: StoreMeta) -> dict[int, str]:
+    """The status codes of the engine and of the sweep's own refusals, with their meaning."""
+    return {**{int(k): v for k, v in meta.status_messages.items()}, **SWEEP_STATUS_MESSAGES}
+
+
+def create_result_array(g: Any, name: str, meta: StoreMeta, study: Study) -> None:
+    """The array of one kept output, or ``status`` (int32, -1 = not computed), in the group
+    ``g``: chunked like the work, written chunk by chunk."""
+    if name != "status":
+        _create_output(g, name, meta, study)
+        return
+    status_attrs = {
+        "long_name": "case status (0: ok; see 'messages')",
+        "units": "1",
+        "messages": {str(k): v for k, v in sorted(_status_messages(meta).items())},
+    }
+    _chunked(g, "status", study, "int32", -1, status_attrs)
+
+
 def flag_attrs() -> dict[str, Any]:
     """CF flag attributes of the ``flags`` output: each bit, its name and its explanation."""
     bits = [f for f in ResultFlag if f.value]
@@ -229,17 +248,10 @@ def build_store(path: Path, study: Study, meta: StoreMeta) -> None:
     _create_axes(g, study)
     coords = [*_create_sampled(g, study), *_create_constants(g, study)]
     coords += _create_material_values(g, study)
-    for name in meta.outputs:
-        _create_output(g, name, meta, study)
-    messages = {**{int(k): v for k, v in meta.status_messages.items()}, **SWEEP_STATUS_MESSAGES}
-    status_attrs = {
-        "long_name": "case status (0: ok; see 'messages')",
-        "units": "1",
-        "messages": {str(k): v for k, v in sorted(messages.items())},
-    }
-    _chunked(g, "status", study, "int32", -1, status_attrs)
+    for name in (*meta.outputs, "status"):
+        create_result_array(g, name, meta, study)
     checkpoint("create:arrays")
-    g.attrs.update(_root_attrs(study, meta, messages, coords))
+    g.attrs.update(_root_attrs(study, meta, _status_messages(meta), coords))
     # the bookkeeping lives in a (data-less) sub-group so that Zarr readers accept it
     g.create_group(
         META,
@@ -249,9 +261,14 @@ def build_store(path: Path, study: Study, meta: StoreMeta) -> None:
         },
     )
     (path / META / "done").mkdir(parents=True, exist_ok=True)
+    write_study_record(path, study)
+    consolidate(path)
+
+
+def write_study_record(path: Path, study: Study) -> None:
+    """Write ``.sweep/study.json`` (the canonical study) of the store at ``path``."""
     text = json.dumps(study.to_dict(), indent=1, sort_keys=True) + "\n"
     (path / META / "study.json").write_text(text)
-    consolidate(path)
 
 
 def consolidate(path: Path) -> None:

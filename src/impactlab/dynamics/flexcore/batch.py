@@ -42,7 +42,13 @@ from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.address_call import compiled_addresses
 from impactlab.dynamics.kernels.cells import CP_DX, N_CELLS
 from impactlab.dynamics.kernels.quality import energy_gained, gravity_dominated
-from impactlab.flags import FLAG_ENERGY_GAIN, FLAG_GRAVITY_DOMINATED, FLAG_OTHER_END
+from impactlab.flags import (
+    ENERGY_GAIN_RTOL_FACTOR,
+    ENERGY_ROUNDOFF,
+    FLAG_ENERGY_GAIN,
+    FLAG_GRAVITY_DOMINATED,
+    FLAG_OTHER_END,
+)
 
 #: ``impactlab.friction`` ids the batch needs (coulomb, mindlin; partial slip is F.FR_PARTIAL).
 FR_COULOMB = 1
@@ -81,11 +87,14 @@ def tip_sequence(contacts, n_contacts, duration, normal_impulse):
 @njit(cache=True, error_model="numpy")
 def sequence_flags(out, e0, m, g, rtol, contacts, n_contacts):
     """The ``ResultFlag`` bits of a finished sequence but LAW_EXTRAPOLATED (docs/flexible.md,
-    "Flags"): ENERGY_GAIN (the vibration energy counted with the kinetic), GRAVITY_DOMINATED
-    on the tip's sequence, else OTHER_END when the other end touched or e < 0 (or NaN)."""
+    "Flags"): ENERGY_GAIN (the vibration energy counted with the kinetic; or friction that did
+    positive work in a contact, ``friction_gained``), GRAVITY_DOMINATED on the tip's
+    sequence, else OTHER_END when the other end touched or e < 0 (or NaN)."""
     flags = 0
     e_end = out[F.O_RIGID_KINETIC_ENERGY] + out[F.O_VIBRATION_ENERGY]
-    if energy_gained(e0, e_end, out[F.O_POTENTIAL_ENERGY], rtol):
+    e_pot = out[F.O_POTENTIAL_ENERGY]
+    scale = e0 + e_end + abs(e_pot)  # the balance's, as energy_gained's
+    if energy_gained(e0, e_end, e_pot, rtol) or friction_gained(contacts, n_contacts, scale, rtol):
         flags |= FLAG_ENERGY_GAIN
     duration, impulse, other = tip_sequence(
         contacts, n_contacts, out[F.O_DURATION], out[F.O_NORMAL_IMPULSE]
@@ -95,6 +104,20 @@ def sequence_flags(out, e0, m, g, rtol, contacts, n_contacts):
     elif other or not out[F.O_E] >= 0.0:
         flags |= FLAG_OTHER_END
     return flags
+
+
+@njit(cache=True, error_model="numpy")
+def friction_gained(contacts, n_contacts, scale, rtol):
+    """True when friction did positive work [J] in one of the ``n_contacts`` contacts beyond
+    the energy criterion's tolerance, (ENERGY_GAIN_RTOL_FACTOR rtol + ENERGY_ROUNDOFF) times
+    the balance's ``scale`` [J] (E0 + the final kinetic, vibration and |potential| energy):
+    energy created inside a contact (the impulse_ratio model's, once the slip reverses), which
+    the losses of the other contacts would hide from the sequence's total."""
+    limit = (ENERGY_GAIN_RTOL_FACTOR * rtol + ENERGY_ROUNDOFF) * scale
+    gained = False
+    for j in range(n_contacts):
+        gained = gained or contacts[j, F.CR_WT] > limit
+    return gained
 
 
 @njit_internal

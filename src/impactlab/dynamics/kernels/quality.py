@@ -33,11 +33,23 @@ def gravity_dominated(gravity_impulse, normal_impulse):
     return gravity_impulse > 0.0 and gravity_impulse > GRAVITY_IMPULSE_RATIO * normal_impulse
 
 
+@njit(cache=True, error_model="numpy")
+def friction_work_gained(work, scale, rtol):
+    """True when friction's work ``work`` [J] over a contact is positive beyond the energy
+    criterion's tolerance, (ENERGY_GAIN_RTOL_FACTOR rtol + ENERGY_ROUNDOFF) ``scale`` [J]:
+    friction created energy (which the normal contact's losses may hide from the total)."""
+    return work > (ENERGY_GAIN_RTOL_FACTOR * rtol + ENERGY_ROUNDOFF) * scale
+
+
 @njit_internal
-def result_flags(e0, e_kin, e_pot, rtol, gravity_impulse, normal_impulse):
-    """The ``flags`` output (a ``ResultFlag`` bitmask, as a float) of an impact that separated."""
+def result_flags(e0, e_kin, e_pot, w_normal, rtol, gravity_impulse, normal_impulse):
+    """The ``flags`` output (a ``ResultFlag`` bitmask, as a float) of an impact that separated;
+    ``w_normal``: the normal force's work [J], so that friction's is the rest of the energy's
+    change."""
     flags = 0
-    if energy_gained(e0, e_kin, e_pot, rtol):
+    w_friction = e_kin + e_pot - e0 - w_normal
+    scale = e0 + e_kin + abs(e_pot) + abs(w_normal)
+    if energy_gained(e0, e_kin, e_pot, rtol) or friction_work_gained(w_friction, scale, rtol):
         flags |= FLAG_ENERGY_GAIN
     if gravity_dominated(gravity_impulse, normal_impulse):
         flags |= FLAG_GRAVITY_DOMINATED

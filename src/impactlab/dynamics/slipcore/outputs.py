@@ -77,6 +77,7 @@ from impactlab.dynamics.kernels.layout import (
     S_SPIN,
     S_VX,
     S_VY,
+    S_WORK,
     S_X,
     S_Y,
 )
@@ -201,7 +202,7 @@ def separation(out, c, md, y, acc, t, vx0, vy0, vn0, th0, rod, e0, rtol, diag):
     e_kin = 0.5 * m * (vx * vx + vy * vy) + 0.5 * c[C_I] * w * w
     e_pot = m * g * y[S_Y]
     out[O_ED] = e0 - (e_kin + e_pot)
-    out[O_FLAGS] = result_flags(e0, e_kin, e_pot, rtol, m * g * t, pn)
+    out[O_FLAGS] = result_flags(e0, e_kin, e_pot, y[S_WORK], rtol, m * g * t, pn)
     out[O_STICK] = acc[A_STICK]
     out[O_REG] = regime(acc, t, vn0)
     out[O_VNOUT] = vn

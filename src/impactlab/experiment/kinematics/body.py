@@ -48,13 +48,23 @@ def fitted_gravity(
             f"m/s^2, not g = {g:.4g}: check the length units"
         )
     elif cosang < math.cos(math.radians(25.0)):
-        dirn = ", ".join(f"{v:+.2f}" for v in (-a / np.linalg.norm(a)))
+        down = a / np.linalg.norm(a)
+        dirn = ", ".join(f"{v:+.2f}" for v in down)
         raise MarkerError(
-            f"{src}: gravity in the data points down along ({dirn}) in camera "
-            f"coordinates, {math.degrees(math.acos(max(-1, min(1, cosang)))):.0f} deg "
-            f"away from -up; pass the right up= (e.g. up='+y')"
+            f"{src}: gravity in the data points along ({dirn}) in camera coordinates, "
+            f"{math.degrees(math.acos(max(-1, min(1, cosang)))):.0f} deg away from the "
+            f"downward direction -up that up= gives; pass {suggested_up(-down)}"
         )
     return fitted_g
+
+
+def suggested_up(measured_up: np.ndarray) -> str:
+    """The ``up=`` argument for the measured upward unit vector: the camera axis it lies along
+    (within 25 deg), e.g. ``up='+z'``, else the vector itself."""
+    k = int(np.argmax(np.abs(measured_up)))
+    if abs(measured_up[k]) >= math.cos(math.radians(25.0)):
+        return f"up='{'+' if measured_up[k] > 0 else '-'}{'xyz'[k]}'"
+    return "up=(" + ", ".join(f"{v:.2f}" for v in measured_up) + ")"
 
 
 @dataclass(frozen=True)

@@ -7,7 +7,8 @@ from typing import Any
 
 import numpy as np
 
-from impactlab.experiment.errors import MarkerError, TooFewFramesError
+from impactlab.experiment.errors import MarkerError, RigidityError, TooFewFramesError
+from impactlab.experiment.kinematics.marker_scale import check_marker_spread, free_fall_units_hint
 from impactlab.experiment.markers import MarkerTracks
 from impactlab.experiment.rigid import MarkerGeometry, check_rigidity, fit_poses, reference_cluster
 
@@ -60,10 +61,23 @@ def marker_poses(
     rigidity_window: int,
     min_fit_frames: int,
     src: str,
+    *,
+    rod_length: float,
+    upv: np.ndarray,
+    g: float,
 ) -> tuple[Any, ...]:
-    """(reference cluster, rigidity report, poses, frames with a pose)."""
+    """(reference cluster, rigidity report, poses, frames with a pose). Coordinates in a wrong
+    length unit (markers farther apart than the rod is long, or a rigidity failure with a fall
+    far from ``g`` [m/s^2]) are named as such before any loose marker."""
+    check_marker_spread(tracks, rod_length, src)
     tracks, reference = _cluster(tracks, geometry, src)
-    rigidity = check_rigidity(tracks, tolerance=rigidity_tolerance, window=rigidity_window)
+    try:
+        rigidity = check_rigidity(tracks, tolerance=rigidity_tolerance, window=rigidity_window)
+    except RigidityError as exc:
+        hint = free_fall_units_hint(tracks, upv, g)
+        if not hint:
+            raise
+        raise RigidityError(f"{exc}{hint}") from None
     if geometry is not None:
         _check_geometry(tracks, reference, rigidity_tolerance, src)
     poses = fit_poses(tracks, reference)

@@ -263,7 +263,15 @@ def measure_impact(
     warnings: list[str] = []
     _check_options(tracks, guard, window, min_fit_frames, max_fit_frames, src)
     reference, rigidity, poses, ok = marker_poses(
-        tracks, geometry, rigidity_tolerance, rigidity_window, min_fit_frames, src
+        tracks,
+        geometry,
+        rigidity_tolerance,
+        rigidity_window,
+        min_fit_frames,
+        src,
+        rod_length=2.0 * half,
+        upv=upv,
+        g=g,
     )
     imp = detect_impact(poses, ok, reference, upv, g, window, src)
     t_ref = imp.t_ref
@@ -272,7 +280,15 @@ def measure_impact(
     if geometry is not None:
         body = RodBody(np.zeros(3), np.array([1.0, 0.0, 0.0]), None, "given")
     else:
-        body = estimated_body(poses, reference, pre_fr, post_fr, t_ref, upv, g, max_com_sigma, src)
+        try:
+            body = estimated_body(
+                poses, reference, pre_fr, post_fr, t_ref, upv, g, max_com_sigma, src
+            )
+        except MarkerError as exc:  # a wrong length unit spoils the fits: say so first
+            units = [w for w in warnings if "length units" in w]
+            if not units:
+                raise
+            raise type(exc)(f"{exc}; but {units[0]}") from None
     axes, origin = impact_frame(poses, int(pre_fr[-1]), body, upv, src)
     fm = _Frame(poses, axes, origin, t_ref, g, half, R_tip)
     pre, post, body = _fits(fm, pre_fr, post_fr, body, upv, min_fit_frames, src, warnings)

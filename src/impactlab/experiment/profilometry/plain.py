@@ -24,6 +24,13 @@ def _load_npy(p: Path) -> np.ndarray:
         raise FileFormatError(
             p, f"not a readable NPY array ({type(exc).__name__}: {str(exc)[:160]})"
         ) from None
+    if isinstance(z, np.lib.npyio.NpzFile):
+        z.close()
+        raise FileFormatError(
+            p, "not a readable NPY array (it is a zip/NPZ archive); save one 2D array with np.save"
+        )
+    if not isinstance(z, np.ndarray):
+        raise FileFormatError(p, f"not a readable NPY array (np.load gives {type(z).__name__})")
     if z.ndim != 2 or not np.issubdtype(z.dtype, np.number):
         raise FileFormatError(
             p, f"expected a 2D numeric array, got shape {z.shape}, dtype {z.dtype}"

@@ -13,6 +13,7 @@ import numpy as np
 from scipy import ndimage
 
 from impactlab.experiment.errors import DentCutOffError, DentNotFoundError, ScanError
+from impactlab.experiment.profilometry.height_values import check_height_values
 from impactlab.experiment.profilometry.heightmap import HeightMap
 from impactlab.experiment.profilometry.levelling import Levelled, level_plane
 from impactlab.experiment.profilometry.outline import edges_touched, fill_nan
@@ -37,7 +38,9 @@ class Surface:
 
 
 def surface(hm: HeightMap, smooth: float) -> Surface:
-    """The levelled scan, filled over dropouts and smoothed by ``smooth`` pixels."""
+    """The levelled scan, filled over dropouts and smoothed by ``smooth`` pixels;
+    FileFormatError for corrupt heights (:func:`check_height_values`)."""
+    check_height_values(hm)
     lev = level_plane(hm)
     zl = np.asarray(lev.z)
     valid = np.isfinite(zl)

@@ -1,0 +1,42 @@
+"""The text of a measurements file and the rows of a CSV one, with errors that name the file and
+the line (a file that is not UTF-8 text, a row with more or fewer fields than the header)."""
+
+from __future__ import annotations
+
+import csv
+from pathlib import Path
+
+__all__ = ["csv_records", "read_text"]
+
+
+def read_text(path: Path, kind: str) -> str:
+    """The UTF-8 text of ``path`` (a byte order mark is dropped); ValueError naming the file
+    when it is not UTF-8 text (``kind``: ``"CSV"``, ``"TOML"``, for the message)."""
+    try:
+        return path.read_text(encoding="utf-8-sig")
+    except UnicodeDecodeError:
+        raise ValueError(f"{path}: not a text ({kind}) file: it is not UTF-8 text") from None
+
+
+def csv_records(path: Path) -> list[dict[str, str]]:
+    """The rows of a CSV file as header -> text, without blank lines and ``#`` comment lines;
+    ValueError naming the file and the line for a row whose number of fields differs from the
+    header's (a truncated or ragged row)."""
+    numbered = [
+        (number, line)
+        for number, line in enumerate(read_text(path, "CSV").splitlines(), start=1)
+        if line.strip() and not line.startswith("#")
+    ]
+    if not numbered:
+        return []
+    header = next(csv.reader([numbered[0][1]]))
+    records = []
+    for number, line in numbered[1:]:
+        fields = next(csv.reader([line]))
+        if len(fields) != len(header):
+            raise ValueError(
+                f"{path}: line {number}: {len(fields)} fields, the header has {len(header)} "
+                "(a truncated or ragged row)"
+            )
+        records.append(dict(zip(header, fields, strict=True)))
+    return records

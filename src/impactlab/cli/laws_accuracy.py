@@ -1,0 +1,107 @@
+"""``impactlab laws [NAME] --accuracy``: every law against the shipped FE curves
+(docs/laws/accuracy.md), one table per material pair, or one block per law where the table
+does not fit the terminal: a number is never broken across lines."""
+
+from __future__ import annotations
+
+import textwrap
+from collections.abc import Sequence
+
+from rich.table import Table
+from rich.text import Text
+
+from impactlab.cli._common import console, emit
+from impactlab.contact import get_law
+
+#: The narrowest last column [characters] of the table (the verified range, text that wraps).
+_MIN_TEXT_COLUMN = 24
+#: Spaces between the cells of one block's line.
+_GAP = "   "
+
+
+def table_width(header: Sequence[str], rows: Sequence[Sequence[str]]) -> int:
+    """The width [characters] the table needs so that no cell but the last (a text) folds:
+    every column as wide as its widest cell, rich's borders and padding (3 per column, 1 at
+    the end)."""
+    widths = [max(len(r[i]) for r in [header, *rows] if i < len(r)) for i in range(len(header))]
+    return sum(widths[:-1]) + min(widths[-1], _MIN_TEXT_COLUMN) + 3 * len(widths) + 1
+
+
+def wrapped(text: str, width: int) -> str:
+    """``text`` wrapped to ``width`` at spaces, keeping a number with its " %" and every word
+    whole (its own lines kept)."""
+    keep = "\0"  # a space that textwrap does not break at
+    lines = []
+    for line in text.splitlines() or [""]:
+        parts = textwrap.wrap(
+            line.replace(" %", keep + "%"),
+            width,
+            break_long_words=False,
+            break_on_hyphens=False,
+        )
+        lines += [p.replace(keep, " ") for p in parts] or [""]
+    return "\n".join(lines)
+
+
+def law_blocks(header: Sequence[str], rows: Sequence[Sequence[str]], width: int) -> list[str]:
+    """The table as one block per row: ``law: verified range``, then the cells as
+    ``delta_max/delta_c: cell`` items, as many on a line as ``width`` holds (each item whole,
+    aligned in columns)."""
+    ratios = header[1:-1]
+    lines: list[str] = []
+    for row in rows:
+        name, cells = row[0], row[1 : 1 + len(ratios)]
+        verified = row[-1] if len(row) == len(header) else ""
+        lines.append(wrapped(f"{name}: {verified}" if verified else f"{name}:", width))
+        items = [f"{r}: {c}" for r, c in zip(ratios, cells, strict=True)]
+        item_width = max((len(i) for i in items), default=0)
+        per_line = max(1, (width - 2 + len(_GAP)) // (item_width + len(_GAP)))
+        for start in range(0, len(items), per_line):
+            chunk = items[start : start + per_line]
+            lines.append("  " + _GAP.join(i.ljust(item_width) for i in chunk).rstrip())
+    return lines
+
+
+def print_accuracy(name: str | None, as_json: bool) -> None:
+    """The accuracy of every law (``name``: that one) against the shipped FE curves: JSON, a
+    table per material pair, or blocks where the table is wider than the terminal."""
+    from impactlab.fe import accuracy as acc
+    from impactlab.fe.accuracy_views import table_rows
+
+    only = str(get_law(name).name) if name else None
+    if only is not None and only not in acc.measured_laws():
+        raise ValueError(
+            f"law {only!r} is built from the shipped FE curves, not measured against them: "
+            "see docs/laws/tabulated.md for its round trip"
+        )
+    results = acc.accuracy()
+    if as_json:
+        emit(acc.report(results, only), as_json=True, units=acc.UNITS)
+        return
+    if not results:
+        raise ValueError("no FE reference curves are shipped (impactlab/fe/data/)")
+    width = console.width
+    for res in results:
+        header, rows = table_rows(res, only)
+        c = res.case
+        title = (
+            f"{c.description}: E*/S_y = {c.e_star_over_sy:.0f}, delta_c = {c.delta_c * 1e6:.4g} um"
+            "\nforce error / delta_r/delta_max error, at delta_max/delta_c ="
+        )
+        if table_width(header, rows) > width:
+            console.print(Text(wrapped(title, width)))
+            console.print(Text("\n".join(law_blocks(header, rows, width))))
+        else:
+            table = Table(title=title, show_header=True, header_style="bold")
+            for i, col in enumerate(header):  # numbers never wrap; the verified range may
+                last = i == len(header) - 1
+                table.add_column(col, overflow="fold" if last else "ellipsis", no_wrap=not last)
+            for row in rows:
+                table.add_row(*row)
+            console.print(table)
+        console.print(Text(wrapped(f"recommendation: {res.recommendation()}", width) + "\n"))
+    tolerances = (
+        f"verified range: within {100 * acc.FORCE_TOLERANCE:g} % in force and "
+        f"{acc.RESIDUAL_TOLERANCE:g} in delta_r/delta_max of FE (docs/laws/accuracy.md)."
+    )
+    console.print(Text(wrapped(tolerances, width)))

@@ -1,0 +1,80 @@
+"""``impactlab fe indent``'s table: every length in um (as every command shows dents), ccx's
+run time in s, and ``last_converged_delta`` only for a run that stopped early, labelled as
+where it stopped; the JSON keeps its SI fields."""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+import pytest
+
+from impactlab import fe
+from impactlab.cli.fe import STOPPED_AT
+
+CliMain = Callable[..., tuple[int, str, str]]
+
+
+def _run(converged: bool) -> fe.IndentationResult:
+    """A run to 1 um: residual depth 0.0745 um, contact radius 97.8 um, pile-up 3.1 nm, 53 s."""
+    d = np.array([0.0, 0.5e-6, 1e-6])
+    end = 0.0 if converged else 0.8e-6  # a converged run's last increment ends the unloading
+    return fe.IndentationResult(
+        1e-6, d, 10.0 * d / 1e-6, np.array([0.0, 60e-6, 97.832e-6]), d[::-1], 10.0 * d[::-1],
+        7.4526e-8, np.array([0.0, 1e-4]), np.array([-7.4526e-8, 3.0951e-9]), 0.43624e-6,
+        converged, end, "", 20, 0, 60, 53.041, 2128, 1e-7, {},
+    )  # fmt: skip
+
+
+@pytest.fixture
+def fake_runs(monkeypatch: pytest.MonkeyPatch) -> Callable[[bool], None]:
+    def use(converged: bool) -> None:
+        def fake_indent(flat: Any, body: Any, **kwargs: Any) -> list[fe.IndentationResult]:
+            return [_run(converged)]
+
+        monkeypatch.setattr(fe, "indent", fake_indent)
+        monkeypatch.setattr(fe, "find_ccx", lambda: "ccx")
+
+    return use
+
+
+def _rows(out: str) -> dict[str, tuple[str, str]]:
+    """quantity -> (value, unit) of the table's rows."""
+    rows = {}
+    for line in out.splitlines():
+        cells = [c.strip() for c in line.strip("│ ").split("│")]
+        if len(cells) == 3:
+            rows[cells[0]] = (cells[1], cells[2])
+    return rows
+
+
+def test_lengths_in_um_and_run_time_in_s(cli_main: CliMain, fake_runs: Any) -> None:
+    fake_runs(True)
+    code, out, err = cli_main("fe", "indent", "--max", "1 um")
+    assert code == 0, err
+    rows = _rows(out)
+    assert "FE indentation to 1 um" in out
+    assert rows["delta_max"] == ("1", "um") and rows["delta_c"] == ("0.43624", "um")
+    assert rows["residual_depth"] == ("0.074526", "um")
+    assert rows["contact_radius_at_max"] == ("97.832", "um")
+    assert rows["pile_up"] == ("0.0030951", "um")
+    assert rows["run_time"] == ("53.041", "s")
+    assert "last_converged_delta" not in out  # converged: nothing stopped
+
+
+def test_a_run_that_stopped_says_where(cli_main: CliMain, fake_runs: Any) -> None:
+    fake_runs(False)
+    code, out, err = cli_main("fe", "indent", "--max", "1 um")
+    assert code == 0, err
+    assert _rows(out)[STOPPED_AT] == ("0.8", "um")
+
+
+def test_json_keeps_its_si_fields(cli_main: CliMain, fake_runs: Any) -> None:
+    fake_runs(True)
+    code, out, err = cli_main("fe", "indent", "--max", "1 um", "--json")
+    assert code == 0, err
+    run = json.loads(out)["runs"][0]
+    assert run["last_converged_delta"] == {"value": 0.0, "unit": "m"}
+    assert run["residual_depth"]["unit"] == "m" and run["run_time"]["unit"] == "s"

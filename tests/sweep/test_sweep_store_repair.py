@@ -1,0 +1,92 @@
+"""A store with damaged metadata that the study defines (a result array's ``zarr.json``, the
+study record ``.sweep/study.json``): ``open_sweep``, ``info`` and a resume agree. The resume of
+the same study rewrites it, keeps every intact chunk and computes only those whose data is gone
+(impactlab.sweep.repair); another study is refused as usual."""
+
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import numpy as np
+import pytest
+from sweep_fakes import FakeEvaluator, store_files
+
+from impactlab.sweep import (
+    CorruptStoreError,
+    RepairableStoreError,
+    Study,
+    StudyMismatchError,
+    open_sweep,
+    run_sweep,
+    store_info,
+)
+
+
+def _study(vy: float = -1.41) -> Study:
+    return Study(
+        name="repair",
+        chunk_size=10,
+        grid={"angle": np.radians([10.0, 30.0, 50.0, 70.0]), "mu": np.linspace(0.0, 0.6, 5)},
+        fixed={"vy": vy},
+    )
+
+
+@pytest.fixture
+def stores(tmp_path) -> tuple[Path, Path]:
+    """(a finished store to damage, an identical copy to compare with)."""
+    ref = run_sweep(_study(), tmp_path / "ref.zarr", evaluator=FakeEvaluator(), quiet=True).path
+    store = tmp_path / "a.zarr"
+    shutil.copytree(ref, store)
+    return store, ref
+
+
+def _same_diagnosis(store: Path, needle: str) -> None:
+    """open_sweep and info refuse the store with the same message, advising a resume."""
+    with pytest.raises(RepairableStoreError) as opened:
+        open_sweep(store)
+    with pytest.raises(CorruptStoreError) as info:
+        store_info(store)
+    message = str(opened.value)
+    assert needle in message and str(info.value) == message and "\n" not in message
+    assert f"run the same study into it again (impactlab sweep run STUDY.toml --out {store})" in (
+        message
+    )
+
+
+@pytest.mark.parametrize("array", ["e", "status"])
+def test_a_lost_result_array_is_recreated_and_only_its_chunks_recomputed(stores, array) -> None:
+    store, ref = stores
+    shutil.rmtree(store / array)
+    _same_diagnosis(store, f"result array {array!r} is gone: {array}/zarr.json is missing")
+    again = run_sweep(_study(), store, evaluator=FakeEvaluator(), quiet=True)
+    assert again.stats.chunks_repaired == again.stats.chunks_computed == 2
+    assert store_files(store) == store_files(ref)
+
+
+def test_a_lost_array_description_keeps_every_chunk(stores) -> None:
+    store, ref = stores
+    (store / "e" / "zarr.json").unlink()  # its chunk files are still there
+    _same_diagnosis(store, "result array 'e' is gone: e/zarr.json is missing")
+    again = run_sweep(_study(), store, evaluator=FakeEvaluator(), quiet=True)
+    assert again.stats.chunks_computed == 0 and again.stats.chunks_before == 2
+    assert store_files(store) == store_files(ref)
+
+
+def test_a_truncated_study_record_is_detected_and_rewritten(stores) -> None:
+    store, ref = stores
+    record = store / ".sweep" / "study.json"
+    record.write_bytes(record.read_bytes()[:40])
+    _same_diagnosis(store, ".sweep/study.json is not valid JSON")
+    again = run_sweep(_study(), store, evaluator=FakeEvaluator(), quiet=True)
+    assert again.stats.chunks_computed == 0
+    assert store_files(store) == store_files(ref)
+
+
+def test_another_study_is_not_written_into_a_damaged_store(stores) -> None:
+    store, _ = stores
+    shutil.rmtree(store / "e")
+    with pytest.raises(StudyMismatchError, match="holds a different study"):
+        run_sweep(_study(vy=-2.0), store, evaluator=FakeEvaluator(), quiet=True)
+    with pytest.raises(RepairableStoreError):
+        open_sweep(store)
