@@ -1,25 +1,14 @@
 """A switch in a TOML input file is a TOML boolean: a quoted "false" is refused (Python would
-read the non-empty string as true)."""
+read the non-empty string as true). Through the ``cli_main`` fixture."""
 
 from __future__ import annotations
 
-import sys
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
 
-from impactlab.cli import main
-
-
-def _cli(monkeypatch, capsys, *args: str) -> tuple[int, str, str]:
-    monkeypatch.setattr(sys, "argv", ["impactlab", *args])
-    try:
-        main()
-        code = 0
-    except SystemExit as exc:
-        code = int(exc.code or 0)
-    out = capsys.readouterr()
-    return code, out.out, out.err
+CliMain = Callable[..., tuple[int, str, str]]
 
 
 @pytest.mark.parametrize(
@@ -28,24 +17,22 @@ def _cli(monkeypatch, capsys, *args: str) -> tuple[int, str, str]:
      ('constant_angle = "no"', "constant_angle"), ("gravity = 0", "gravity")],
 )  # fmt: skip
 def test_simulate_refuses_a_switch_that_is_not_a_boolean(
-    tmp_path: Path, monkeypatch, capsys, line: str, key: str
+    tmp_path: Path, cli_main: CliMain, line: str, key: str
 ) -> None:
     cfg = tmp_path / "case.toml"
     cfg.write_text(f'angle = "30 deg"\nvy = "-2 m/s"\n{line}\n')
-    code, _, err = _cli(monkeypatch, capsys, "simulate", "rod", "--config", str(cfg))
+    code, _, err = cli_main("simulate", "rod", "--config", str(cfg))
     assert code == 2 and f"{key} in {cfg} must be true or false (a TOML boolean" in err
 
 
-def test_invert_refuses_a_gravity_that_is_not_a_boolean(
-    tmp_path: Path, monkeypatch, capsys
-) -> None:
+def test_invert_refuses_a_gravity_that_is_not_a_boolean(tmp_path: Path, cli_main: CliMain) -> None:
     cfg = tmp_path / "drop.toml"
     cfg.write_text(
         'angle = "20 deg"\nv_i = "-1.41 m/s"\ne = 0.5\nmu = 0.2\ndelta_p = "22 um"\n'
         'L_s = "1400 um"\ngravity = "false"\n'
     )
-    code, _, err = _cli(monkeypatch, capsys, "invert", "--file", str(cfg))
+    code, _, err = cli_main("invert", "--file", str(cfg))
     assert code == 2 and "gravity in the measurement file must be true or false" in err
     cfg.write_text(cfg.read_text().replace('"false"', "false"))
-    code, out, _ = _cli(monkeypatch, capsys, "invert", "--file", str(cfg))
+    code, out, _ = cli_main("invert", "--file", str(cfg))
     assert code == 0 and "neglected" in out

@@ -100,7 +100,7 @@ def test_wrong_up_names_gravity_and_the_measured_axis(rod: Any, lab_up: str, wro
     down = re.search(r"gravity in the data points along \(([^)]*)\)", message)
     assert down is not None
     assert float(down.group(1).split(",")[axis]) == pytest.approx(-1.0, abs=0.05)
-    assert message.endswith(f"pass up='{lab_up}'")
+    assert message.endswith(f"pass up='{lab_up}' (impactlab analyze --up {lab_up})")
 
 
 @pytest.mark.parametrize("case", [45, 70])

@@ -117,16 +117,23 @@ def damaged_error(store: Path, damaged: Mapping[int, str]) -> DamagedStoreError:
     )
 
 
+def _read_json(f: Path) -> tuple[object, str | None]:
+    """(the JSON value of the file ``f``, None), or (None, what is wrong with it)."""
+    try:
+        return json.loads(f.read_bytes().decode("utf-8")), None
+    except OSError as exc:
+        return None, f"cannot be read ({exc.strerror or exc})"
+    except UnicodeDecodeError:
+        return None, "is not text (binary junk)"
+    except json.JSONDecodeError as exc:
+        return None, f"is not valid JSON ({exc.msg} at line {exc.lineno}, column {exc.colno})"
+
+
 def _node_problem(f: Path) -> str | None:
     """What is wrong with the Zarr metadata file ``f``, or None when Zarr reads it."""
-    try:
-        meta = json.loads(f.read_bytes().decode("utf-8"))
-    except OSError as exc:
-        return f"cannot be read ({exc.strerror or exc})"
-    except UnicodeDecodeError:
-        return "is not text (binary junk)"
-    except json.JSONDecodeError as exc:
-        return f"is not valid JSON ({exc.msg} at line {exc.lineno}, column {exc.colno})"
+    meta, problem = _read_json(f)
+    if problem is not None:
+        return problem
     if not isinstance(meta, dict):
         return f"is not a JSON object (it holds a {type(meta).__name__})"
     if meta.get("zarr_format") != 3 or meta.get("node_type") not in ("group", "array"):
@@ -155,14 +162,9 @@ def _study_record_problem(root: Path) -> str | None:
     f = root / ".sweep" / "study.json"
     if not f.is_file():
         return None
-    try:
-        record = json.loads(f.read_bytes().decode("utf-8"))
-    except OSError as exc:
-        return f"cannot be read ({exc.strerror or exc})"
-    except UnicodeDecodeError:
-        return "is not text (binary junk)"
-    except json.JSONDecodeError as exc:
-        return f"is not valid JSON ({exc.msg} at line {exc.lineno}, column {exc.colno})"
+    record, problem = _read_json(f)
+    if problem is not None:
+        return problem
     return None if isinstance(record, dict) else "is not a JSON object"
 
 

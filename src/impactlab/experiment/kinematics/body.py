@@ -63,7 +63,8 @@ def suggested_up(measured_up: np.ndarray) -> str:
     (within 25 deg), e.g. ``up='+z'``, else the vector itself."""
     k = int(np.argmax(np.abs(measured_up)))
     if abs(measured_up[k]) >= math.cos(math.radians(25.0)):
-        return f"up='{'+' if measured_up[k] > 0 else '-'}{'xyz'[k]}'"
+        axis = f"{'+' if measured_up[k] > 0 else '-'}{'xyz'[k]}"
+        return f"up='{axis}' (impactlab analyze --up {axis})"
     return "up=(" + ", ".join(f"{v:.2f}" for v in measured_up) + ")"
 
 

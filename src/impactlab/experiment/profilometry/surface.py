@@ -79,7 +79,8 @@ def _check_sign(
             f"dent (its deepest depression is {depth * 1e6:.3g} um deep): the heights look "
             "sign-flipped (depths stored as positive heights); if so, read the scan the other "
             "way up: analyze(..., flip_heights=True) (impactlab analyze --flip-heights) or "
-            "measure_dent(height_map.flipped())"
+            "measure_dent(height_map.flipped()); if it was turned over already "
+            "(flip_heights=True, --flip-heights), leave that out"
         )
 
 
