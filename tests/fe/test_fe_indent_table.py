@@ -78,3 +78,17 @@ def test_json_keeps_its_si_fields(cli_main: CliMain, fake_runs: Any) -> None:
     run = json.loads(out)["runs"][0]
     assert run["last_converged_delta"] == {"value": 0.0, "unit": "m"}
     assert run["residual_depth"]["unit"] == "m" and run["run_time"]["unit"] == "s"
+
+
+def test_json_follows_the_schema_rules(cli_main: CliMain, fake_runs) -> None:
+    """Every number with a unit, or a dimensionless ratio, is a quantity object (the rules of
+    docs/json-schema.md): the ratios too."""
+    from impactlab._json import shape_problems
+
+    fake_runs(True)
+    code, out, _ = cli_main("fe", "indent", "--max", "1 um", "--json")
+    data = json.loads(out)
+    assert code == 0 and shape_problems(data) == []
+    run = data["runs"][0]
+    for name in ("delta_max_over_delta_c", "residual_ratio", "force_balance"):
+        assert run[name]["unit"] == "1", name

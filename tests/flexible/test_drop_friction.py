@@ -124,6 +124,16 @@ def test_friction_that_gains_energy_in_one_contact_is_flagged() -> None:
     assert max(x.work_friction for x in c.contacts) <= 0.0 and ResultFlag.ENERGY_GAIN not in c.flags
 
 
+def test_works_shared_with_the_other_end_flag_nothing() -> None:
+    """While both ends touch, a contact's recorded works hold the other end's too (shared
+    accumulators): such a contact's positive friction work is no gain of its own, and
+    partial slip, which cannot create energy, is not flagged for it."""
+    case = {"mu": 0.8, "angle": math.radians(45), "velocity": (0.0, -1.0)}
+    r = simulate_drop(FlexibleRod.paper(), friction="partial_slip", **case)
+    assert max(c.work_friction for c in r.contacts) > 1e-4  # recorded, shared with the other end
+    assert ResultFlag.ENERGY_GAIN not in r.flags
+
+
 def test_gravity_dominated_flag() -> None:
     """A slow drop (1 cm/s): gravity's impulse over the sequence exceeds a tenth of the normal
     impulse, flagged as the rigid engine flags its one impact (the law's range aside: the rod

@@ -252,6 +252,20 @@ def test_study_file_errors_name_the_problem(table, message) -> None:
         Study.from_dict(table)
 
 
+def test_log_spacing_takes_either_sign() -> None:
+    def axis(name: str, start: float, stop: float) -> np.ndarray:
+        grid = {name: {"start": start, "stop": stop, "num": 4, "spacing": "log"}}
+        fixed = {"angle": "20 deg", "mu": 0.2, "vy": -1.0}
+        s = Study.from_dict({"grid": grid, "fixed": {k: v for k, v in fixed.items() if k != name}})
+        return np.asarray(s.axes[0].values)
+
+    np.testing.assert_allclose(axis("vy", -4.0, -0.5), -np.geomspace(4.0, 0.5, 4))
+    np.testing.assert_allclose(axis("mu", 0.05, 0.4), np.geomspace(0.05, 0.4, 4))
+    for start, stop in ((-4.0, 0.5), (0.0, 1.0)):
+        with pytest.raises(ValueError, match="log spacing needs start and stop of one sign"):
+            axis("vy", start, stop)
+
+
 def test_study_file_reading(tmp_path) -> None:
     p = tmp_path / "s.toml"
     p.write_text(

@@ -19,13 +19,18 @@ FORCE_TOLERANCE = 0.10
 RESIDUAL_TOLERANCE = 0.05
 
 
+#: ``VerifiedRange.limited_by`` of a law that could not be built for the pair.
+NOT_BUILT = "not built"
+
+
 @dataclass(frozen=True)
 class VerifiedRange:
     """Where a law stays within the tolerances of FE (ratios delta / delta_c).
 
     upper: the largest delta / delta_c verified (0: not even the first checked point);
-    limited_by: ``"force"``, ``"delta_r"`` (the check that failed first, by ratio) or
-    ``"end of data"`` (neither failed); first_failure: delta / delta_c of the first checked
+    limited_by: ``"force"``, ``"delta_r"`` (the check that failed first, by ratio),
+    ``"end of data"`` (neither failed) or ``NOT_BUILT`` (the law could not be built for the
+    pair: nothing was checked); first_failure: delta / delta_c of the first checked
     point outside the tolerance of the limiting check (nan at the end of the data);
     force_upper, residual_upper: the range each check alone verifies; force_failure,
     residual_failure: where each check first fails (nan: it never does).
@@ -49,6 +54,8 @@ class VerifiedRange:
         """``<= 30 delta_c (delta_r fails at 100)``, ``>= 1000 delta_c (end of data)``."""
         if self.end_of_data:
             return f">= {self.upper:.3g} delta_c (end of data)"
+        if self.limited_by == NOT_BUILT:
+            return "not built for this pair"
         if self.upper <= 0.0:
             return f"none ({self.limited_by} fails at {self.first_failure:.3g})"
         return f"<= {self.upper:.3g} delta_c ({self.limited_by} fails at {self.first_failure:.3g})"

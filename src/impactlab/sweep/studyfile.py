@@ -304,8 +304,11 @@ def _range(
         if num > limit[0]:
             raise too_many(f"[grid] {name} (num = {num})", num, *limit)
         if spacing == "log":
-            if start <= 0 or stop <= 0 or (start < 0) != (stop < 0):
-                raise ValueError(f"[grid] {name}: log spacing needs start and stop > 0")
+            if start == 0 or stop == 0 or (start < 0) != (stop < 0):
+                raise ValueError(
+                    f"[grid] {name}: log spacing needs start and stop of one sign, neither 0 "
+                    f"(geomspace), got {start!r} and {stop!r}"
+                )
             return np.geomspace(start, stop, num)
         return np.linspace(start, stop, num)
     if spacing == "log":

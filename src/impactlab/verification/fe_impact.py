@@ -28,6 +28,9 @@ QUANTITIES: tuple[tuple[str, str], ...] = (
     ("contact_duration", "T [us]"),
 )
 _SCALE = {"residual_depth": 1e6, "max_interference": 1e6, "contact_duration": 1e6}
+#: Fixed decimals of the quantities near a bound (e near 1, a residual depth near 0), whose
+#: deviation 4 significant digits would round away (1.0003 shown as 1); the others: 4 digits.
+_DECIMALS = {"restitution": 4, "residual_depth": 4}
 
 #: The elastic-plastic laws.
 PLASTIC_LAWS: tuple[str, ...] = (
@@ -121,7 +124,9 @@ def comparison_markdown(comp: ImpactComparison) -> str:
             vals = []
             for q, _ in QUANTITIES:
                 x = col[i][q] * _SCALE.get(q, 1.0)
-                vals.append("n/a" if not math.isfinite(x) else f"{x:.4g}")
+                places = _DECIMALS.get(q)
+                shown = f"{x:.{places}f}" if places is not None else f"{x:.4g}"
+                vals.append("n/a" if not math.isfinite(x) else shown)
             lines.append(f"| {v:g} | {name} | " + " | ".join(vals) + " |")
     return head + "\n".join(lines) + "\n"
 
