@@ -16,7 +16,7 @@ from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.buffers import copy_into
 from impactlab.dynamics.kernels.cells import any_stuck
 from impactlab.dynamics.kernels.dormand_prince import dense_coeffs
-from impactlab.dynamics.kernels.layout import FR_IMPULSE
+from impactlab.dynamics.kernels.layout import FR_COULOMB, FR_IMPULSE
 from impactlab.dynamics.kernels.step_control import power_growth
 
 
@@ -31,16 +31,29 @@ def _missed_touch(md, sv, gold, gnew, k):
 
 
 @njit(cache=True, inline="always", error_model="numpy")
+def _reversed_slip(mdl, md, gold, gnew, k):
+    """The Coulomb slip of end k that started the step with its event function -fm v_t
+    already positive (the state of a slip reversal recomputed a hair short of v_t = 0, within
+    the integration tolerance, leaves the new direction against that v_t) and ends it larger:
+    v_t went the new way and came back within the step, a sign change that the test from
+    g <= 0 misses. Located where g climbs back through its start value."""
+    j = k * F.NFEVK + F.FEV_FRIC
+    slip = md[k, F.MD_IN] != 0.0 and md[k, F.MD_FM] != 0.0
+    return slip and mdl[2][F.FC_FRIC] == FR_COULOMB and 0.0 < gold[j] < gnew[j]
+
+
+@njit(cache=True, inline="always", error_model="numpy")
 def first_event(mdl, md, y, h, K, Q, gold, gnew, sv, record_on, yt, der, ev, ek, Jn, Jt):
     """(jev, theta, fired): the earliest event crossed in the step (-1: none) and where; a
     touch that began the step within the invariant's tolerance past zero fires where it
-    reaches the tolerance (``_missed_touch``)."""
+    reaches the tolerance (``_missed_touch``), a Coulomb slip that began it against v_t where
+    its event function climbs back through its start value (``_reversed_slip``)."""
     fired = False
     for j in range(gold.shape[0]):
         if gold[j] <= 0.0 and gnew[j] > 0.0:
             fired = True
     for k in range(F.NE):
-        if _missed_touch(md, sv, gold, gnew, k):
+        if _missed_touch(md, sv, gold, gnew, k) or _reversed_slip(mdl, md, gold, gnew, k):
             fired = True
     if fired or record_on:
         dense_coeffs(K, Q)
@@ -48,17 +61,22 @@ def first_event(mdl, md, y, h, K, Q, gold, gnew, sv, record_on, yt, der, ev, ek,
     theta = 2.0
     if fired:
         nev = gold.shape[0]
-        for i in range(nev + F.NE):  # the sign changes, then the missed touches
+        for i in range(nev + 2 * F.NE):  # the sign changes, missed touches, reversed slips
             if i < nev:
                 if not (gold[i] <= 0.0 and gnew[i] > 0.0):
                     continue
                 j = i
                 shift = 0.0
-            else:
+            elif i < nev + F.NE:
                 if not _missed_touch(md, sv, gold, gnew, i - nev):
                     continue
                 j = (i - nev) * F.NFEVK + F.FEV_TOUCH
                 shift = sv[F.SV_TOL_MISS]
+            else:
+                if not _reversed_slip(mdl, md, gold, gnew, i - nev - F.NE):
+                    continue
+                j = (i - nev - F.NE) * F.NFEVK + F.FEV_FRIC
+                shift = gold[j]
             # one call site: locate is inlined here once (g - 0.0 is g, bit for bit)
             thj = locate(j, gold[j] - shift, gnew[j] - shift, mdl, md, y, h, Q, yt, der, ev, ek,
                          Jn, Jt, shift)  # fmt: skip
