@@ -121,7 +121,7 @@ def test_file_errors(tmp_path):
     [
         ({"angle": "200 deg"}, r"drop 1 \(x\), column 'angle': angle must lie in \(0, 90\] deg"),
         ({"angle": "0 deg"}, r"column 'angle': angle must lie in \(0, 90\] deg, got 0 deg"),
-        ({"mu": -0.2}, r"drop 1 \(x\), column 'mu': mu must be >= 0, got -0.2"),
+        ({"mu": -0.2}, r"drop 1 \(x\), column 'mu': mu must lie in \[0, 1000\], got -0.2"),
         ({"tip_radius": "-1 mm"}, r"column 'tip_radius': tip_radius must be > 0"),
         ({"flat_yield_strength": "0 MPa"}, r"column 'flat_yield_strength': .* must be > 0"),
     ],

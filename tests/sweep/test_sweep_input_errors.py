@@ -100,7 +100,7 @@ def test_run_into_damaged_store_needs_restart(store) -> None:
     [
         (
             "[fixed]\nvy = -1\nangle = '20 deg'\n[grid]\nmu = [0.1, -0.2, 0.3, -0.05]\n",
-            "grid dimension 'mu': mu must be >= 0, got -0.2, -0.05 (2 of 4 values)",
+            "grid dimension 'mu': mu must lie in [0, 1000], got -0.2, -0.05 (2 of 4 values)",
         ),
         (
             "[fixed]\nvy = -1\nmu = 0.1\n[grid]\n"
@@ -126,7 +126,7 @@ def test_run_into_damaged_store_needs_restart(store) -> None:
         ),
         (
             "[fixed]\nvy = -1\nangle = '20 deg'\nmu = -0.1\n[grid]\nvx = [0, 1]\n",
-            "input 'mu': mu must be >= 0, got -0.1",
+            "input 'mu': mu must lie in [0, 1000], got -0.1",
         ),
     ],
 )
@@ -144,7 +144,9 @@ def test_invalid_grid_values_refused_when_loaded(
 
 
 def test_python_grid_axis_refuses_invalid_values() -> None:
-    with pytest.raises(ValueError, match=r"'mu': mu must be >= 0, got -0.1 \(1 of 2 values\)"):
+    with pytest.raises(
+        ValueError, match=r"'mu': mu must lie in \[0, 1000\], got -0.1 \(1 of 2 values\)"
+    ):
         Study(name="s", grid={"mu": [-0.1, 0.2]}, fixed={"angle": 0.3, "vy": -1.0})
 
 

@@ -17,6 +17,7 @@ from rich.text import Text
 from impactlab._display import field_rows
 from impactlab._json import to_json
 from impactlab.contact.rate import RATE_LAWS
+from impactlab.dynamics.kernels.inputs import angle_allowed, incidence_allowed
 from impactlab.schema import FIELDS
 from impactlab.units import angle_to_rad, to_si
 
@@ -79,7 +80,7 @@ def angle_quantity(value: Any, name: str) -> float:
     """An angle with its unit ("20 deg", "0.35 rad") in radians, in (0, 90] deg (answered in
     degrees otherwise). A bare number is refused: 0.35 could be degrees or radians."""
     th = any_angle(value, name)
-    if not 0.0 < th <= 0.5 * math.pi + 1e-12:
+    if not angle_allowed(th):
         raise UserError(f"{name} must be in (0, 90] deg, got {str(value).strip()}")
     return th
 
@@ -105,7 +106,7 @@ def velocity_input(
                             "is missing")  # fmt: skip
         v = positive(speed, "m/s", name("speed"))
         th = any_angle(incidence, name("incidence"))
-        if not abs(th) < 0.5 * math.pi:
+        if not incidence_allowed(th):
             raise UserError(
                 f"{name('incidence')} must lie in (-90, 90) deg from the flat's normal, got "
                 f"{str(incidence).strip()}"

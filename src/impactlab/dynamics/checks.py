@@ -1,6 +1,8 @@
 """Validation of the engine's Python inputs (one place for simulate, simulate_batch, run_arrays
 and the reference implementation): gravity, tolerance, angle, velocity, body and flat, and
-:func:`check_impact`, all the inputs of one impact at once.
+:func:`check_impact`, all the inputs of one impact at once. The rules themselves (the bounds,
+the angle's range) are those of ``dynamics.kernels.inputs``, which the compiled cores apply
+too; this module reads the inputs' units and types and words the errors.
 
 Quantities follow ``impactlab.units.magnitude`` (a number in SI, a string with units such as
 ``"20 deg"`` or ``"1.41 m/s"``, or a pint Quantity of any registry); dimensionless inputs (mu,
@@ -25,20 +27,27 @@ from impactlab._validation import (
 )
 from impactlab.bodies import Rod, Sphere, lever_arms
 from impactlab.contact import ContactModel
-from impactlab.dynamics.kernels.layout import (
-    DEFAULT_RTOL,
+from impactlab.dynamics.kernels.inputs import (
+    IN_OK,
     MAX_GRAVITY,
     MAX_MU,
     MAX_SPEED,
-    PARTIAL_SLIP_RTOL,
+    RTOL_RANGE,
+    angle_allowed,
+    gravity_allowed,
+    incidence_allowed,
+    input_problem,
+    mu_allowed,
+    rtol_allowed,
+    speed_allowed,
+    spin_allowed,
 )
+from impactlab.dynamics.kernels.layout import DEFAULT_RTOL, PARTIAL_SLIP_RTOL
 from impactlab.dynamics.models import contact_model
 from impactlab.friction import FrictionKind, FrictionModel, get_friction
 from impactlab.materials import G0, Material
 from impactlab.units import has_unit, magnitude
 
-#: Range of the relative tolerance accepted by the Python API.
-RTOL_RANGE = (1e-13, 1e-3)
 #: Speeds above this [m/s] (of the centre of mass or of the contact point) draw an
 #: ImplausibleInputWarning: most likely a unit mistake (mm/s taken as m/s).
 PLAUSIBLE_SPEED = 100.0
@@ -52,7 +61,7 @@ def gravity_value(gravity: Any) -> float:
     if isinstance(gravity, bool | np.bool_):
         return G0 if gravity else 0.0
     g = check_nonnegative("gravity", gravity, "m/s^2")
-    if not g <= MAX_GRAVITY:
+    if not gravity_allowed(g):
         raise ValueError(
             f"gravity must lie in [0, {MAX_GRAVITY:g}] m/s^2 (a million g), got {g!r} m/s^2"
         )
@@ -63,7 +72,7 @@ def check_mu(mu: Any) -> float:
     """The friction coefficient, in [0, MAX_MU] (dry contacts stay below about 2; beyond
     MAX_MU every contact sticks alike)."""
     m = check_nonnegative("mu", mu)
-    if not m <= MAX_MU:
+    if not mu_allowed(m):
         raise ValueError(
             f"mu must lie in [0, {MAX_MU:g}] (dry friction stays below about 2; a larger mu "
             f"only sticks), got {m!r}"
@@ -73,7 +82,7 @@ def check_mu(mu: Any) -> float:
 
 def check_speed(name: str, speed: float) -> float:
     """``speed`` [m/s] unless its magnitude exceeds MAX_SPEED (ValueError naming ``name``)."""
-    if not abs(speed) <= MAX_SPEED:
+    if not speed_allowed(speed):
         raise ValueError(
             f"{name} = {speed!r} m/s exceeds {MAX_SPEED:g} m/s in magnitude, far beyond the "
             "impacts a contact law of rigid bodies describes (and the energy balance would lose "
@@ -82,13 +91,32 @@ def check_speed(name: str, speed: float) -> float:
     return speed
 
 
+def check_spin(spin: float, reach: float) -> float:
+    """``spin`` [rad/s] unless it moves the contact point, ``reach`` [m] from the centre of mass
+    (L/2 + R), faster than MAX_SPEED (ValueError)."""
+    if not spin_allowed(spin, reach):
+        raise ValueError(
+            f"spin = {spin!r} rad/s moves the contact point ({reach:.4g} m from the centre of "
+            f"mass, L/2 + R) at {abs(spin) * reach:.4g} m/s, beyond {MAX_SPEED:g} m/s; allowed: "
+            f"|spin| <= {MAX_SPEED / reach:.4g} rad/s"
+        )
+    return spin
+
+
+def contact_reach(body: Rod | Sphere) -> float:
+    """The farthest point of contact from the centre of mass [m]: L/2 + R."""
+    return body.half_length + body.tip_radius
+
+
 def check_rtol(rtol: Any) -> float:
     """The relative tolerance (None: ``DEFAULT_RTOL``), in [1e-13, 1e-3]."""
     if rtol is None:
         return DEFAULT_RTOL
     r = check_finite("rtol", rtol)
-    if not RTOL_RANGE[0] <= r <= RTOL_RANGE[1]:
-        raise ValueError(f"rtol must lie in [1e-13, 1e-3], got {float(r)!r}")
+    if not rtol_allowed(r):
+        raise ValueError(
+            f"rtol must lie in [{RTOL_RANGE[0]:g}, {RTOL_RANGE[1]:g}], got {float(r)!r}"
+        )
     return r
 
 
@@ -108,7 +136,7 @@ def check_angle(angle: Any, body: Rod | Sphere) -> float:
             "angle is required for a Rod: the rod axis to the flat, in radians, in (0, pi/2]"
         )
     th = check_finite("angle", angle, "rad")
-    if 0.0 < th <= 0.5 * math.pi + 1e-12:
+    if angle_allowed(th):
         return th
     if has_unit(angle):  # the user gave a unit: answer in degrees
         raise ValueError(f"angle must be in (0, 90] deg, got {_as_given(angle)}")
@@ -172,7 +200,7 @@ def velocity_from(velocity: Any, speed: Any, incidence: Any) -> Any:
         raise ValueError(f"speed and incidence go together: {missing} is missing")
     v = check_positive("speed", speed, "m/s")
     th = check_finite("incidence", incidence, "rad")
-    if not abs(th) < 0.5 * math.pi:
+    if not incidence_allowed(th):
         hint = (
             ""
             if has_unit(incidence)
@@ -255,8 +283,6 @@ def _approach(body: Rod | Sphere, th: float, vx: float, vy: float, w: float) -> 
             f"vy - spin * (L/2) cos(angle) = {float(vn)!r} m/s must be < 0)"
         )
     tip = math.hypot(vx + w * b, vn)
-    if not tip <= MAX_SPEED:
-        check_speed("the contact point's speed (from the spin)", tip)
     warn_fast("the impact speed", max(math.hypot(vx, vy), tip))
     return vn
 
@@ -290,22 +316,21 @@ def _plain_inputs(
         and type(velocity) is tuple
         and len(velocity) == 2
         and _plain(angle)
-        and 0.0 < angle <= 0.5 * math.pi + 1e-12
         and _plain(velocity[0])
         and _plain(velocity[1])
         and _plain(spin)
         and _plain(mu)
-        and 0.0 <= mu <= MAX_MU
-        and abs(velocity[0]) <= MAX_SPEED
-        and abs(velocity[1]) <= MAX_SPEED
         and type(constant_angle) is bool
         and (gravity is True or gravity is False)
-        and (rtol is None or (_plain(rtol) and RTOL_RANGE[0] <= rtol <= RTOL_RANGE[1]))
+        and (rtol is None or _plain(rtol))
     ):
         return None
     g = G0 if gravity else 0.0
     r = DEFAULT_RTOL if rtol is None else float(rtol)
-    return float(angle), float(velocity[0]), float(velocity[1]), float(spin), float(mu), g, r
+    th, vx, vy, w, m = (float(v) for v in (angle, *velocity, spin, mu))
+    if input_problem(True, th, vx, vy, w, contact_reach(body), m, g, r) != IN_OK:
+        return None
+    return th, vx, vy, w, m, g, r
 
 
 def _is_partial_slip(friction: Any) -> bool:
@@ -356,7 +381,7 @@ def check_impact(
     body = check_body(body)
     th = check_angle(angle, body)
     vx, vy = check_velocity(velocity)
-    w = check_finite("spin", spin, "rad/s")
+    w = check_spin(check_finite("spin", spin, "rad/s"), contact_reach(body))
     return ImpactInputs(
         body=body,
         flat=check_flat(flat),
@@ -385,7 +410,9 @@ __all__ = [
     "check_mu",
     "check_rtol",
     "check_speed",
+    "check_spin",
     "check_velocity",
+    "contact_reach",
     "gravity_value",
     "velocity_from",
     "warn_fast",

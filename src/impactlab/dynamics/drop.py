@@ -37,8 +37,9 @@ from impactlab.contact.rate import (
 from impactlab.dynamics.checks import (
     check_angle,
     check_flat,
-    check_rtol,
+    check_spin,
     check_velocity,
+    contact_reach,
     gravity_value,
     velocity_from,
 )
@@ -52,6 +53,7 @@ from impactlab.dynamics.drop_checks import (
     check_friction,
     check_stop,
     drop_flags,
+    drop_rtol,
     status_error,
 )
 from impactlab.dynamics.drop_result import ContactRecord, DentRecord, DropHistory, DropResult
@@ -313,10 +315,10 @@ def simulate_drop(
         )
     th = check_angle(angle, bm.rigid)
     vx, vy = check_velocity(velocity)
-    w = check_finite("spin", spin, "rad/s")
+    w = check_spin(check_finite("spin", spin, "rad/s"), contact_reach(bm.rigid))
     g = gravity_value(gravity)
     options = (
-        check_rtol(rtol if rtol is not None else F.DROP_DEFAULT_RTOL),
+        drop_rtol(rtol),
         *check_stop(stop, t_max),
     )
     vn0 = vy - w * bm.rigid.half_length * math.cos(th)

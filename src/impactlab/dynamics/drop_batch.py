@@ -25,13 +25,14 @@ from impactlab.bodies.layout import BP_GSTAR
 from impactlab.contact import ContactModel
 from impactlab.contact.ranges import delta_ratio, extrapolation_flags
 from impactlab.dynamics.batch_status import BatchStatus, flag_column
-from impactlab.dynamics.checks import batch_velocity, check_flat, check_rtol, gravity_value
+from impactlab.dynamics.checks import batch_velocity, check_flat, gravity_value
 from impactlab.dynamics.drop import DEFAULT_T_MAX, MIN_APPROACH_SPEED
 from impactlab.dynamics.drop_body import body_model
 from impactlab.dynamics.drop_checks import (
     check_body,
     check_friction,
     check_stop,
+    drop_rtol,
     energy_balance_bound,
     energy_balance_error,
 )
@@ -47,7 +48,8 @@ from impactlab.dynamics.flexcore.indirect import batch_addresses
 from impactlab.dynamics.flexcore.model import constants, model_tuple
 from impactlab.dynamics.history import readonly_copy
 from impactlab.dynamics.kernels import status as S
-from impactlab.dynamics.kernels.layout import MAX_MU, MAX_SPEED, MU_NEGLIGIBLE
+from impactlab.dynamics.kernels.inputs import IN_ANGLE, IN_OK, input_problem
+from impactlab.dynamics.kernels.layout import MU_NEGLIGIBLE
 from impactlab.dynamics.models import body_params, contact_model, kernel_params, references_used
 from impactlab.dynamics.simulate_many import _batch_inputs
 from impactlab.friction import COULOMB, DEFAULT_MU, PARTIAL_SLIP
@@ -55,7 +57,7 @@ from impactlab.materials import AISI_1010, Material
 from impactlab.references import Reference
 from impactlab.references import dois as doi_list
 
-__all__ = ["DropBatchResult", "simulate_drops"]
+__all__ = ["DropBatchResult", "input_status", "simulate_drops"]
 
 #: The outputs of each case, in the columns of ``DropBatchResult.out`` (the engine's names).
 DROP_BATCH_FIELDS = F.DROP_OUTPUT_FIELDS
@@ -158,25 +160,46 @@ class DropBatchResult(BatchStatus):
 
 
 def input_status(
-    half_length: float, cols: Mapping[str, np.ndarray], tol_angle: float = 1e-12
+    rod: Rod, cols: Mapping[str, np.ndarray], gravity: float, rtol: float
 ) -> np.ndarray:
-    """The status of each case's inputs as ``simulate_drop`` refuses them (0: runs): a
-    non-finite input, mu outside [0, MAX_MU], a velocity component beyond MAX_SPEED, or an
-    approach speed below ``MIN_APPROACH_SPEED``: ST_BAD_INPUT;
-    an angle outside (0, pi/2 + tol_angle]: ST_BAD_ANGLE; a tip that does not approach the
-    flat (vy - spin (L/2) cos(angle) >= 0): ST_NOT_APPROACHING."""
-    th, vx, vy, w, mu = (cols[k] for k in ("angle", "vx", "vy", "spin", "mu"))
-    st = np.zeros(th.shape, dtype=np.int32)
-    finite = np.isfinite(th) & np.isfinite(vx) & np.isfinite(vy) & np.isfinite(w)
-    finite &= np.isfinite(mu)
-    with np.errstate(invalid="ignore"):
-        vn = vy - w * half_length * np.cos(th)
-        st[(-vn < MIN_APPROACH_SPEED) & (vn < 0.0)] = S.ST_BAD_INPUT
-        st[~(vn < 0.0)] = S.ST_NOT_APPROACHING
-        st[~((th > 0.0) & (th <= 0.5 * math.pi + tol_angle))] = S.ST_BAD_ANGLE
-        fast = (np.abs(vx) > MAX_SPEED) | (np.abs(vy) > MAX_SPEED) | (mu > MAX_MU)
-        st[~finite | (mu < 0.0) | fast] = S.ST_BAD_INPUT
-    return st
+    """The status of each case's inputs as ``simulate_drop`` refuses them (0: runs), by the
+    rules of every impact (``dynamics.kernels.inputs.input_problem``, ``gravity`` [m/s^2] and
+    ``rtol`` the same for every case): a non-finite input, a speed, spin, mu, gravity or rtol
+    outside its bound, or an approach speed below ``MIN_APPROACH_SPEED``: ST_BAD_INPUT; an
+    angle outside (0, pi/2]: ST_BAD_ANGLE; a tip that does not approach the flat
+    (vy - spin (L/2) cos(angle) >= 0): ST_NOT_APPROACHING."""
+    reach = rod.half_length + rod.tip_radius
+    th, vx, vy, w, mu = (np.asarray(cols[k], dtype=np.float64).tolist()
+                         for k in ("angle", "vx", "vy", "spin", "mu"))  # fmt: skip
+    return np.array(
+        [
+            _case_status(rod.half_length, reach, case, gravity, rtol)
+            for case in zip(th, vx, vy, w, mu, strict=True)
+        ],
+        dtype=np.int32,
+    )
+
+
+def _case_status(
+    half_length: float,
+    reach: float,
+    case: tuple[float, float, float, float, float],
+    gravity: float,
+    rtol: float,
+) -> int:
+    """One case (angle, vx, vy, spin, mu) of :func:`input_status`."""
+    th, vx, vy, w, mu = case
+    if not all(map(math.isfinite, (th, vx, vy, w, mu))):
+        return S.ST_BAD_INPUT
+    problem = input_problem(True, th, vx, vy, w, reach, mu, gravity, rtol)
+    if problem == IN_ANGLE:
+        return S.ST_BAD_ANGLE
+    if problem != IN_OK:
+        return S.ST_BAD_INPUT
+    vn = vy - w * half_length * math.cos(th)
+    if not vn < 0.0:
+        return S.ST_NOT_APPROACHING
+    return S.ST_BAD_INPUT if -vn < MIN_APPROACH_SPEED else S.ST_OK
 
 
 def simulate_drops(
@@ -226,13 +249,13 @@ def simulate_drops(
             "with a unit), in (0, pi/2]"
         )
     g = gravity_value(gravity)
-    r = check_rtol(rtol if rtol is not None else F.DROP_DEFAULT_RTOL)
+    r = drop_rtol(rtol)
     t_end, stop_mode = check_stop(stop, t_max)
     model = contact_model(bm.rigid, flat, law, law_params)
     vx, vy = batch_velocity(vx, vy, speed, incidence)
     cols = _batch_inputs({"mu": mu, "angle": angle, "vx": vx, "vy": vy, "spin": spin})
     n = cols["angle"].shape[0]
-    status = input_status(bm.rigid.half_length, cols)
+    status = input_status(bm.rigid, cols, g, r)
     run = status == 0
     mu_run = np.where(cols["mu"] < MU_NEGLIGIBLE, 0.0, cols["mu"])  # frictionless below
     fid = np.full(n, fric.friction_id, dtype=np.int64)

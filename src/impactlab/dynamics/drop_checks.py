@@ -14,7 +14,7 @@ from impactlab.bodies import Rod
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.contact import ContactModel
 from impactlab.contact.ranges import law_extrapolated
-from impactlab.dynamics.checks import check_mu
+from impactlab.dynamics.checks import check_mu, check_rtol
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.batch import sequence_flags
 from impactlab.flags import ENERGY_GAIN_RTOL_FACTOR, ENERGY_ROUNDOFF, ResultFlag
@@ -42,6 +42,11 @@ def check_friction(friction: str, mu: float) -> tuple[FrictionModel, float]:
         names = ", ".join(repr(str(k)) for k in DROP_FRICTION)
         raise ValueError(f"friction: the drop integrator implements {names}, got {friction!r}")
     return fric, check_mu(mu)
+
+
+def drop_rtol(rtol: Any) -> float:
+    """The relative tolerance of a drop: ``rtol``, checked, or ``DROP_DEFAULT_RTOL`` for None."""
+    return check_rtol(rtol if rtol is not None else F.DROP_DEFAULT_RTOL)
 
 
 def check_stop(stop: Any, t_max: Any) -> tuple[float, int]:

@@ -24,7 +24,6 @@ from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.contact import ContactModel
 from impactlab.dynamics.checks import (
     PLAUSIBLE_SPEED,
-    RTOL_RANGE,
     ImpactInputs,
     check_impact,
     velocity_from,
@@ -35,6 +34,7 @@ from impactlab.dynamics.drop_result import DropResult
 from impactlab.dynamics.flex_simulate import simulate_flexible
 from impactlab.dynamics.kernels import layout as L
 from impactlab.dynamics.kernels import status as S
+from impactlab.dynamics.kernels.inputs import IN_OK, input_problem
 from impactlab.dynamics.models import (
     body_params,
     engine_setup,
@@ -172,8 +172,12 @@ def simulate(
 _PLAIN = frozenset((float, int, np.float64))
 #: Largest plain number ``_fast`` takes (a larger int is left to the full checks).
 _BIG = 1e300
-#: The largest rod angle the checks accept [rad] (``checks.check_angle``).
-_MAX_ANGLE = 0.5 * math.pi + 1e-12
+
+
+def _plain_number(x: Any) -> float | None:
+    """``x`` as a float when it is a plain number (``_PLAIN``) below ``_BIG`` in magnitude,
+    else None (NaN: None)."""
+    return float(x) if type(x) in _PLAIN and -_BIG < x < _BIG else None
 
 
 def _fast(
@@ -211,39 +215,24 @@ def _fast(
         and type(history) is bool
     ):
         return None
-    vx, vy = velocity
-    if not (
-        type(vx) in _PLAIN
-        and type(vy) in _PLAIN
-        and type(spin) in _PLAIN
-        and type(mu) in _PLAIN
-        and -PLAUSIBLE_SPEED <= vx <= PLAUSIBLE_SPEED
-        and -PLAUSIBLE_SPEED <= vy <= PLAUSIBLE_SPEED
-        and -_BIG < spin < _BIG
-        and 0.0 <= mu <= L.MAX_MU
-    ):
-        return None
     if kind is Rod:
-        if not (type(angle) in _PLAIN and 0.0 < angle <= _MAX_ANGLE):
-            return None
-        th = th_out = float(angle)
+        th = _plain_number(angle)
     elif angle is None:  # a sphere has no angle (an angle given: the full path refuses it)
-        th, th_out = 0.5 * math.pi, math.nan
+        th = 0.5 * math.pi
     else:
         return None
-    if gravity is True or gravity is False:
-        g = G0 if gravity else 0.0
-    elif type(gravity) in _PLAIN and 0.0 <= gravity <= L.MAX_GRAVITY:
-        g = float(gravity)
-    else:
+    plain_gravity = gravity is True or gravity is False
+    g = (G0 if gravity else 0.0) if plain_gravity else _plain_number(gravity)
+    tol = L.DEFAULT_RTOL if rtol is None else _plain_number(rtol)
+    vx, vy, w, m = (_plain_number(v) for v in (*velocity, spin, mu))
+    if th is None or g is None or tol is None or vx is None or vy is None or w is None:
         return None
-    if rtol is None:
-        tol = L.DEFAULT_RTOL
-    elif type(rtol) in _PLAIN and RTOL_RANGE[0] <= rtol <= RTOL_RANGE[1]:
-        tol = float(rtol)
-    else:
+    if m is None or not (abs(vx) <= PLAUSIBLE_SPEED and abs(vy) <= PLAUSIBLE_SPEED):
         return None
-    vx, vy, w = float(vx), float(vy), float(spin)
+    reach = body.half_length + body.tip_radius
+    if input_problem(kind is Rod, th, vx, vy, w, reach, m, g, tol) != IN_OK:
+        return None  # the full path words the error
+    th_out = th if kind is Rod else math.nan
     if w == 0.0:  # the contact point's normal velocity is vy (checks._approach)
         vn = vy
         if not (vy < 0.0 and math.hypot(vx, vy) <= PLAUSIBLE_SPEED):
@@ -259,7 +248,6 @@ def _fast(
     if setup is None:
         return None
     _, _, model, fric, kp, bp, refs, refs_mu = setup
-    m = float(mu)
     out = np.empty(L.N_OUT)
     status, hist, nh = impact(
         model.law_id, kp, fric.friction_id, bp, th, vx, vy, w, m, g, constant_angle, tol, history,

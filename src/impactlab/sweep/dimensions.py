@@ -7,12 +7,13 @@ Monte Carlo sample is drawn. The cases are cut into chunks: regular blocks of th
 
 Invalid inputs are refused when a study is made, naming the dimension, the offending values
 and what is allowed (the rules of a single impact: ``impactlab.materials.Material``,
-``impactlab.bodies``, ``impactlab.dynamics.checks``): a value outside :data:`ALLOWED` on a grid
-axis or in ``fixed`` (:func:`check_value`, :class:`Axis`), and, for the study as a whole, an
-angle outside (0, 90] deg for a rod and a centre-of-mass velocity vy >= 0 that no spin can turn
-into an approach (:func:`check_kinematics`). What only a combination of inputs makes invalid
-(S_y >= E, a tip wider than half the rod, ...) and sampled values are checked case by case and
-stored as a status code, like cases that fail physically (no separation, ...).
+``impactlab.bodies``, the bounds of ``impactlab.dynamics.kernels.inputs``): a value outside
+:data:`ALLOWED` on a grid axis or in ``fixed`` (:func:`check_value`, :class:`Axis`), and, for
+the study as a whole, an angle outside (0, 90] deg for a rod and a centre-of-mass velocity
+vy >= 0 that no spin can turn into an approach (:func:`check_kinematics`). What only a
+combination of inputs makes invalid (S_y >= E, a tip wider than half the rod, a spin too fast
+for the body's reach, ...) and sampled values are checked case by case and stored as a status
+code, like cases that fail physically (no separation, ...).
 """
 
 from __future__ import annotations
@@ -25,6 +26,7 @@ from typing import Any
 import numpy as np
 
 from impactlab._display import display_unit, format_number
+from impactlab.dynamics.kernels.inputs import MAX_ANGLE, MAX_MU, MAX_SPEED
 from impactlab.sweep.distributions import Distribution
 from impactlab.sweep.inputs import MATERIAL_OVERRIDES, get_input
 
@@ -48,8 +50,10 @@ _COUNT: Interval = (0.0, math.inf, True, True, True)
 #: The values a numeric input may take on its own (SI), as the single impact requires them;
 #: inputs not named here take any finite number.
 ALLOWED: dict[str, Interval] = {
-    "mu": (0.0, math.inf, True, True, False),
-    "speed": (0.0, math.inf, False, True, False),
+    "mu": (0.0, MAX_MU, True, True, False),
+    "speed": (0.0, MAX_SPEED, False, True, False),
+    "vx": (-MAX_SPEED, MAX_SPEED, True, True, False),
+    "vy": (-MAX_SPEED, MAX_SPEED, True, True, False),
     "incidence": (-0.5 * math.pi, 0.5 * math.pi, False, False, False),
     **{n: _POSITIVE for n in ("length", "tip_radius", "radius", "mass", "inertia")},
     "n_axial": _COUNT,
@@ -64,9 +68,9 @@ ALLOWED: dict[str, Interval] = {
         for name, field in side.items()
     },
 }
-#: The angle of a rod (rigid or flexible) to the flat [rad]: (0, pi/2] (+1e-12 for 90 deg
-#: converted from degrees, as ``impactlab.dynamics.checks``).
-ANGLE: Interval = (0.0, 0.5 * math.pi + 1e-12, False, True, False)
+#: The angle of a rod (rigid or flexible) to the flat [rad]: (0, pi/2] (``MAX_ANGLE``: +1e-12
+#: for 90 deg converted from degrees).
+ANGLE: Interval = (0.0, MAX_ANGLE, False, True, False)
 #: Inputs of a rod that a sphere does not have (refused in a study of spheres only).
 _ROD_ONLY = ("angle", "length", "tip_radius", "inertia")
 #: Bodies that have an angle to the flat (a sphere's is ignored).

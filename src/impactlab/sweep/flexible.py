@@ -38,8 +38,10 @@ import numpy as np
 from impactlab.bodies import PAPER_ROD
 from impactlab.bodies.flexible_rod import DEFAULT_N_AXIAL, DEFAULT_N_BENDING, FlexibleRod
 from impactlab.contact import ContactModel
+from impactlab.dynamics.checks import gravity_value
 from impactlab.dynamics.drop import DROP_FRICTION
 from impactlab.dynamics.drop_batch import DropBatchResult, input_status, simulate_drops
+from impactlab.dynamics.drop_checks import drop_rtol
 from impactlab.dynamics.kernels import status as S
 from impactlab.dynamics.models import build_contact_model
 from impactlab.materials import Material
@@ -174,15 +176,19 @@ def _drops(
     statics: Statics,
 ) -> tuple[DropBatchResult | None, np.ndarray]:
     """The drops of one body (``simulate_drops``, one compiled call) and the status of each:
-    the sweep's own refusals of the kinematics first (an angle outside (0, pi/2], a non-finite
-    input, mu < 0, a tip that does not approach the flat), then the drop's."""
+    the refusals of the inputs first (``drop_batch.input_status``: the rules of every impact,
+    a tip that does not approach the flat), then the drop's."""
     body, flat, model = parts
-    status = input_status(body.half_length, kin, tol_angle=0.0)
+    engine = dict(statics.engine)
+    try:
+        g, r = gravity_value(engine.get("gravity", True)), drop_rtol(engine.get("rtol"))
+    except ValueError:  # refused for every case (simulate_drops names it)
+        g, r = 0.0, math.nan
+    status = input_status(body.rigid(), kin, g, r)
     run = status == 0
     status[status == S.ST_BAD_INPUT] = STATUS_BAD_INPUT
     if not np.any(run):
         return None, status
-    engine = dict(statics.engine)
     try:
         drops = simulate_drops(
             body,

@@ -147,16 +147,6 @@ A_WCOMP = 10  # normal work of compression [J]
 A_WREST = 11  # normal work of restitution [J]
 A_OWN = 12  # the first entry of a driver's own
 
-# --- bounds of the inputs (beyond them a ValueError in Python, ST_BAD_INPUT in the core) --------
-#: Largest speed [m/s] of the centre of mass, each velocity component, and of the contact
-#: point: far beyond the impacts a contact law of rigid bodies describes; faster, the energy
-#: bookkeeping (kinetic energies of order m v^2) would lose the digits of the work it balances.
-MAX_SPEED = 1e4
-#: Largest friction coefficient [1]: dry contacts stay below about 2; a larger mu sticks.
-MAX_MU = 1e3
-#: Largest gravitational acceleration [m/s^2] (a million g).
-MAX_GRAVITY = 1e7
-
 # --- integration ----------------------------------------------------------------------------------
 DEFAULT_RTOL = 2e-7
 #: The partial-slip engine (``dynamics.slipcore``, without the w-integrated ends of ``approach``)
