@@ -10,7 +10,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from impactlab import simulate, simulate_batch, simulate_drops
+from impactlab import simulate, simulate_batch, simulate_drop, simulate_drops
 from impactlab.bodies import PAPER_ROD
 from impactlab.cli._common import angle_quantity
 from impactlab.dynamics.kernels import inputs as I
@@ -132,3 +132,9 @@ def test_the_compiled_core_and_python_apply_one_rule(
         assert status not in (ST_BAD_INPUT, ST_BAD_ANGLE)
     else:
         assert status == (ST_BAD_ANGLE if code == I.IN_ANGLE else ST_BAD_INPUT)
+
+
+def test_a_drop_names_the_spin_past_its_bound() -> None:
+    spin = EDGES[I.IN_SPIN][2]
+    with pytest.raises(ValueError, match=r"spin = .* rad/s moves the contact point"):
+        simulate_drop(PAPER_ROD, angle=0.35, velocity=(0.0, -1.0), spin=spin)
