@@ -3,10 +3,16 @@ uncertainty report summarises."""
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import Any
 
+from impactlab.dynamics.kernels.inputs import (
+    MAX_GRAVITY,
+    RTOL_MAX,
+    RTOL_MIN,
+    gravity_allowed,
+    rtol_allowed,
+)
 from impactlab.sweep.inputs import OUTPUT_ALIASES
 
 #: Version of the study/store format; part of the study hash.
@@ -31,13 +37,16 @@ class EngineOptions:
     rtol: float | None = None
 
     def __post_init__(self) -> None:
-        if self.rtol is not None and not (_number(self.rtol) and 0.0 < float(self.rtol) < 1.0):
-            raise ValueError(f"engine rtol must be a number in (0, 1), got {self.rtol!r}")
+        if self.rtol is not None and not (_number(self.rtol) and rtol_allowed(float(self.rtol))):
+            raise ValueError(
+                f"engine rtol must be a number in [{RTOL_MIN:g}, {RTOL_MAX:g}], got {self.rtol!r}"
+            )
         if self.gravity is not None and not isinstance(self.gravity, bool):
             g = self.gravity
-            if not (_number(g) and math.isfinite(float(g)) and float(g) >= 0.0):
+            if not (_number(g) and gravity_allowed(float(g))):
                 raise ValueError(
-                    f"engine gravity must be true/false or a number >= 0 (m/s^2), got {g!r}"
+                    f"engine gravity must be true/false or a number in [0, {MAX_GRAVITY:g}] "
+                    f"(m/s^2), got {g!r}"
                 )
         if self.constant_angle is not None and not isinstance(self.constant_angle, bool):
             raise ValueError(
