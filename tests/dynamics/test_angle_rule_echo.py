@@ -12,7 +12,7 @@ import pytest
 
 import impactlab as il
 from impactlab.bodies import PAPER_ROD, Sphere
-from impactlab.dynamics.checks import check_angle, velocity_from
+from impactlab.dynamics.input_checks import check_angle, velocity_from
 from impactlab.units import has_unit, registry
 
 Q_ = registry().Quantity

@@ -12,7 +12,7 @@ from hypothesis import strategies as st
 from impactlab import simulate
 from impactlab.bodies import PAPER_ROD, Sphere
 from impactlab.cli._common import UserError, velocity_input
-from impactlab.dynamics.checks import velocity_from
+from impactlab.dynamics.input_checks import velocity_from
 from impactlab.materials import AISI_52100, AL_6061_T6
 from impactlab.sweep import Study
 

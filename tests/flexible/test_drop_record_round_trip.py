@@ -16,8 +16,8 @@ from impactlab._json import shape_problems
 from impactlab.bodies import PAPER_ROD
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.cli import main
-from impactlab.dynamics.checks import velocity_from
 from impactlab.dynamics.drop import simulate_drop
+from impactlab.dynamics.input_checks import velocity_from
 from impactlab.dynamics.provenance import SIMULATE_DROP
 from impactlab.materials import AL_6061_T6
 

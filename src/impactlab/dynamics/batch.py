@@ -23,8 +23,8 @@ from impactlab.bodies import NB
 from impactlab.contact.kernels import N_LAWS, NPARAM, param_length
 from impactlab.contact.ranges import extrapolation_flags
 from impactlab.contact.tabulate import has_table, with_table
-from impactlab.dynamics.checks import check_rtol, gravity_value
 from impactlab.dynamics.core.batch import impact_batch
+from impactlab.dynamics.input_checks import check_rtol, gravity_value
 from impactlab.dynamics.kernels.layout import N_OUT, OUTPUT_FIELDS, PARTIAL_SLIP_RTOL
 from impactlab.dynamics.kernels.status import REGIME_NAMES, STATUS_MESSAGES
 from impactlab.dynamics.slip_batch import prepass_address, slip_batch

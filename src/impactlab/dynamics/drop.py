@@ -34,15 +34,6 @@ from impactlab.contact.rate import (
     rate_materials,
     self_consistent_factor,
 )
-from impactlab.dynamics.checks import (
-    check_angle,
-    check_flat,
-    check_spin,
-    check_velocity,
-    contact_reach,
-    gravity_value,
-    velocity_from,
-)
 from impactlab.dynamics.drop_body import BodyModel, body_model
 from impactlab.dynamics.drop_checks import (
     DROP_FRICTION,
@@ -61,6 +52,15 @@ from impactlab.dynamics.flexcore import drop
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.batch import initial_energy
 from impactlab.dynamics.flexcore.model import constants, model_tuple, state_length
+from impactlab.dynamics.input_checks import (
+    check_angle,
+    check_flat,
+    check_spin,
+    check_velocity,
+    contact_reach,
+    gravity_value,
+    velocity_from,
+)
 from impactlab.dynamics.kernels.layout import MU_NEGLIGIBLE
 from impactlab.dynamics.models import (
     body_params,

@@ -25,7 +25,6 @@ from impactlab.bodies.layout import BP_GSTAR
 from impactlab.contact import ContactModel
 from impactlab.contact.ranges import delta_ratio, extrapolation_flags
 from impactlab.dynamics.batch_status import BatchStatus, flag_column
-from impactlab.dynamics.checks import batch_velocity, check_flat, gravity_value
 from impactlab.dynamics.drop import DEFAULT_T_MAX, MIN_APPROACH_SPEED
 from impactlab.dynamics.drop_body import body_model
 from impactlab.dynamics.drop_checks import (
@@ -47,6 +46,12 @@ from impactlab.dynamics.flexcore.batch import (
 from impactlab.dynamics.flexcore.indirect import batch_addresses
 from impactlab.dynamics.flexcore.model import constants, model_tuple
 from impactlab.dynamics.history import readonly_copy
+from impactlab.dynamics.input_checks import (
+    batch_velocity,
+    check_flat,
+    contact_reach,
+    gravity_value,
+)
 from impactlab.dynamics.kernels import status as S
 from impactlab.dynamics.kernels.inputs import IN_ANGLE, IN_OK, input_problem
 from impactlab.dynamics.kernels.layout import MU_NEGLIGIBLE
@@ -168,7 +173,7 @@ def input_status(
     outside its bound, or an approach speed below ``MIN_APPROACH_SPEED``: ST_BAD_INPUT; an
     angle outside (0, pi/2]: ST_BAD_ANGLE; a tip that does not approach the flat
     (vy - spin (L/2) cos(angle) >= 0): ST_NOT_APPROACHING."""
-    reach = rod.half_length + rod.tip_radius
+    reach = contact_reach(rod)
     th, vx, vy, w, mu = (np.asarray(cols[k], dtype=np.float64).tolist()
                          for k in ("angle", "vx", "vy", "spin", "mu"))  # fmt: skip
     return np.array(

@@ -14,9 +14,9 @@ from impactlab.bodies import Rod
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.contact import ContactModel
 from impactlab.contact.ranges import law_extrapolated
-from impactlab.dynamics.checks import check_mu, check_rtol
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.batch import sequence_flags
+from impactlab.dynamics.input_checks import check_mu, check_rtol
 from impactlab.flags import ENERGY_GAIN_RTOL_FACTOR, ENERGY_ROUNDOFF, ResultFlag
 from impactlab.friction import FrictionKind, FrictionModel, get_friction
 

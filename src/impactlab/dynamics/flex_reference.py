@@ -30,9 +30,9 @@ from impactlab.contact import ContactModel
 from impactlab.contact.kernels import (
     P_ESTAR,
 )
-from impactlab.dynamics.checks import gravity_value
 from impactlab.dynamics.flex_fe import CorotationalRod
 from impactlab.dynamics.flex_fe_drop import FEDrop, FEEnd, switch_interference
+from impactlab.dynamics.input_checks import gravity_value
 from impactlab.dynamics.models import contact_model, kernel_params
 from impactlab.materials import AISI_1010, Material
 

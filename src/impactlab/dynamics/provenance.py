@@ -32,8 +32,8 @@ from impactlab.bodies import Rod, Sphere
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.contact import ContactModel, get_law
 from impactlab.contact.registry import ensure_laws, registered_laws
-from impactlab.dynamics.checks import gravity_value
 from impactlab.dynamics.flexcore.layout import DROP_DEFAULT_RTOL as DROP_RTOL
+from impactlab.dynamics.input_checks import gravity_value
 from impactlab.dynamics.kernels.layout import DEFAULT_RTOL, PARTIAL_SLIP_RTOL
 from impactlab.materials import ContactPair, Material
 

@@ -21,7 +21,8 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from impactlab.bodies import Rod, Sphere
-from impactlab.dynamics.checks import check_impact, velocity_from
+from impactlab.dynamics.checks import check_impact
+from impactlab.dynamics.input_checks import velocity_from
 from impactlab.dynamics.kernels.status import REGIME_NAMES
 from impactlab.dynamics.models import body_params
 from impactlab.dynamics.reference_problem import ReferenceProblem

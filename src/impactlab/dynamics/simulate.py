@@ -22,16 +22,12 @@ from impactlab._validation import check_flag
 from impactlab.bodies import Rod, Sphere, lever_arms
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.contact import ContactModel
-from impactlab.dynamics.checks import (
-    PLAUSIBLE_SPEED,
-    ImpactInputs,
-    check_impact,
-    velocity_from,
-)
+from impactlab.dynamics.checks import ImpactInputs, check_impact
 from impactlab.dynamics.core.driver import impact
 from impactlab.dynamics.drop import simulate_drop
 from impactlab.dynamics.drop_result import DropResult
 from impactlab.dynamics.flex_simulate import simulate_flexible
+from impactlab.dynamics.input_checks import PLAUSIBLE_SPEED, contact_reach, velocity_from
 from impactlab.dynamics.kernels import layout as L
 from impactlab.dynamics.kernels import status as S
 from impactlab.dynamics.kernels.inputs import IN_OK, input_problem
@@ -229,8 +225,7 @@ def _fast(
         return None
     if m is None or not (abs(vx) <= PLAUSIBLE_SPEED and abs(vy) <= PLAUSIBLE_SPEED):
         return None
-    reach = body.half_length + body.tip_radius
-    if input_problem(kind is Rod, th, vx, vy, w, reach, m, g, tol) != IN_OK:
+    if input_problem(kind is Rod, th, vx, vy, w, contact_reach(body), m, g, tol) != IN_OK:
         return None  # the full path words the error
     th_out = th if kind is Rod else math.nan
     if w == 0.0:  # the contact point's normal velocity is vy (checks._approach)

@@ -15,14 +15,14 @@ from impactlab.contact import ContactModel
 from impactlab.contact.range_note import range_note
 from impactlab.contact.ranges import delta_ratio
 from impactlab.dynamics.batch import run_arrays
-from impactlab.dynamics.checks import (
+from impactlab.dynamics.flex_simulate import FLEXIBLE_BATCH_ERROR
+from impactlab.dynamics.input_checks import (
     batch_velocity,
     check_angle,
     check_body,
     check_flat,
     warn_fast,
 )
-from impactlab.dynamics.flex_simulate import FLEXIBLE_BATCH_ERROR
 from impactlab.dynamics.kernels import layout as L
 from impactlab.dynamics.models import body_params, contact_model, references_used
 from impactlab.dynamics.results import BatchResult

@@ -38,10 +38,10 @@ import numpy as np
 from impactlab.bodies import PAPER_ROD
 from impactlab.bodies.flexible_rod import DEFAULT_N_AXIAL, DEFAULT_N_BENDING, FlexibleRod
 from impactlab.contact import ContactModel
-from impactlab.dynamics.checks import gravity_value
 from impactlab.dynamics.drop import DROP_FRICTION
 from impactlab.dynamics.drop_batch import DropBatchResult, input_status, simulate_drops
 from impactlab.dynamics.drop_checks import drop_rtol
+from impactlab.dynamics.input_checks import gravity_value
 from impactlab.dynamics.kernels import status as S
 from impactlab.dynamics.models import build_contact_model
 from impactlab.materials import Material

@@ -2,12 +2,12 @@
 friction coefficient, gravity and the tolerance.
 
 Every check of these inputs reads this module: the compiled cores (``setup.check_inputs``, so
-every batch and sweep case), the Python API (``dynamics.checks``, ``simulate``'s fast path, a
-batch of drops), the command line and a sweep's study check. The functions are pure and plain
-Python where Python calls them; where compiled code calls them, numba compiles them inline
-(``register_jitable``): one definition for both. :func:`input_problem` applies every rule at
-once and names the first input outside its rule (``IN_*``); :data:`INPUT_RULES` says each rule
-in words for the errors.
+every batch and sweep case), the Python API (``dynamics.input_checks``, ``dynamics.checks``,
+``simulate``'s fast path, a batch of drops), the command line and a sweep's study check. The
+functions are pure and plain Python where Python calls them; where compiled code calls them,
+numba compiles them inline (``register_jitable``): one definition for both.
+:func:`input_problem` applies every rule at once and names the first input outside its rule
+(``IN_*``); :data:`INPUT_RULES` says each rule in words for the errors.
 """
 
 from __future__ import annotations

@@ -1,0 +1,263 @@
+"""Checks of the engine's Python inputs one at a time: gravity, mu, a speed, the spin, the
+tolerance, the angle, the velocity (or speed and incidence), body and flat. The rules themselves
+(the bounds, the angle's range) are those of ``dynamics.kernels.inputs``, which the compiled
+cores apply too; these functions read the inputs' units and types and word the errors.
+
+Quantities follow ``impactlab.units.magnitude`` (a number in SI, a string with units such as
+``"20 deg"`` or ``"1.41 m/s"``, or a pint Quantity of any registry); dimensionless inputs (mu,
+rtol) follow the number rule of ``impactlab._validation`` (no strings, no bools).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+
+from impactlab._validation import (
+    check_finite,
+    check_nonnegative,
+    check_positive,
+    warn_implausible,
+)
+from impactlab.bodies import Rod, Sphere
+from impactlab.dynamics.kernels.inputs import (
+    MAX_GRAVITY,
+    MAX_MU,
+    MAX_SPEED,
+    RTOL_RANGE,
+    angle_allowed,
+    gravity_allowed,
+    incidence_allowed,
+    mu_allowed,
+    rtol_allowed,
+    speed_allowed,
+    spin_allowed,
+)
+from impactlab.dynamics.kernels.layout import DEFAULT_RTOL
+from impactlab.materials import G0, Material
+from impactlab.units import has_unit, magnitude
+
+#: Speeds above this [m/s] (of the centre of mass or of the contact point) draw an
+#: ImplausibleInputWarning: most likely a unit mistake (mm/s taken as m/s).
+PLAUSIBLE_SPEED = 100.0
+
+
+def gravity_value(gravity: Any) -> float:
+    """True -> standard gravity 9.80665 m/s^2, False (or None) -> 0, a value (>= 0; a number in
+    m/s^2, a string with units or a pint Quantity) -> that value [m/s^2]."""
+    if gravity is None:
+        return 0.0
+    if isinstance(gravity, bool | np.bool_):
+        return G0 if gravity else 0.0
+    g = check_nonnegative("gravity", gravity, "m/s^2")
+    if not gravity_allowed(g):
+        raise ValueError(
+            f"gravity must lie in [0, {MAX_GRAVITY:g}] m/s^2 (a million g), got {g!r} m/s^2"
+        )
+    return g
+
+
+def check_mu(mu: Any) -> float:
+    """The friction coefficient, in [0, MAX_MU] (dry contacts stay below about 2; beyond
+    MAX_MU every contact sticks alike)."""
+    m = check_nonnegative("mu", mu)
+    if not mu_allowed(m):
+        raise ValueError(
+            f"mu must lie in [0, {MAX_MU:g}] (dry friction stays below about 2; a larger mu "
+            f"only sticks), got {m!r}"
+        )
+    return m
+
+
+def check_speed(name: str, speed: float) -> float:
+    """``speed`` [m/s] unless its magnitude exceeds MAX_SPEED (ValueError naming ``name``)."""
+    if not speed_allowed(speed):
+        raise ValueError(
+            f"{name} = {speed!r} m/s exceeds {MAX_SPEED:g} m/s in magnitude, far beyond the "
+            "impacts a contact law of rigid bodies describes (and the energy balance would lose "
+            f"its digits); allowed: up to {MAX_SPEED:g} m/s"
+        )
+    return speed
+
+
+def check_spin(spin: float, reach: float) -> float:
+    """``spin`` [rad/s] unless it moves the contact point, ``reach`` [m] from the centre of mass
+    (L/2 + R), faster than MAX_SPEED (ValueError)."""
+    if not spin_allowed(spin, reach):
+        raise ValueError(
+            f"spin = {spin!r} rad/s moves the contact point ({reach:.4g} m from the centre of "
+            f"mass, L/2 + R) at {abs(spin) * reach:.4g} m/s, beyond {MAX_SPEED:g} m/s; allowed: "
+            f"|spin| <= {MAX_SPEED / reach:.4g} rad/s"
+        )
+    return spin
+
+
+def contact_reach(body: Rod | Sphere) -> float:
+    """The farthest point of contact from the centre of mass [m]: L/2 + R."""
+    return body.half_length + body.tip_radius
+
+
+def check_rtol(rtol: Any) -> float:
+    """The relative tolerance (None: ``DEFAULT_RTOL``), in [1e-13, 1e-3]."""
+    if rtol is None:
+        return DEFAULT_RTOL
+    r = check_finite("rtol", rtol)
+    if not rtol_allowed(r):
+        raise ValueError(
+            f"rtol must lie in [{RTOL_RANGE[0]:g}, {RTOL_RANGE[1]:g}], got {float(r)!r}"
+        )
+    return r
+
+
+def check_angle(angle: Any, body: Rod | Sphere) -> float:
+    """Validate the rod angle (in (0, pi/2]; a bare number is radians, ``"20 deg"`` works). A
+    sphere has none: pi/2 inside, and an angle given for it is refused (as on the command line:
+    an input that does not apply to the body is refused everywhere)."""
+    if isinstance(body, Sphere):
+        if angle is not None:
+            raise ValueError(
+                f"angle ({angle!r}): a Sphere has no angle to the flat (its contact point lies "
+                "below its centre); leave angle out"
+            )
+        return 0.5 * math.pi
+    if angle is None:
+        raise ValueError(
+            "angle is required for a Rod: the rod axis to the flat, in radians, in (0, pi/2]"
+        )
+    th = check_finite("angle", angle, "rad")
+    if angle_allowed(th):
+        return th
+    if has_unit(angle):  # the user gave a unit: answer in degrees
+        raise ValueError(f"angle must be in (0, 90] deg, got {_as_given(angle)}")
+    hint = ""
+    if 0.5 * math.pi < th <= 90.0 + 1e-9:
+        hint = (
+            f" ({math.degrees(th):.6g} deg); if {th!r} is meant in degrees, pass "
+            f"math.radians({th!r}) = {math.radians(th):.6g} rad or the string '{th:g} deg'"
+        )
+    raise ValueError(f"angle must be in radians in (0, pi/2], got {th!r} rad{hint}")
+
+
+def _as_given(angle: Any) -> str:
+    """An angle with a unit as the user wrote it: the string, or a Quantity's magnitude and
+    unit (``95 deg``)."""
+    if isinstance(angle, str):
+        return angle.strip()
+    return f"{float(angle.magnitude)!r} {angle.units:~}".replace(".0 ", " ", 1)
+
+
+def check_velocity(velocity: Any) -> tuple[float, float]:
+    """(vx, vy) [m/s] from a pair of finite numbers, strings with units or pint Quantities (or
+    one pint Quantity holding the pair)."""
+    velocity = magnitude("velocity", velocity, "m/s")
+    if isinstance(velocity, Mapping | set | frozenset):  # no order, or keys for values
+        raise ValueError(
+            f"velocity must be a pair (vx, vy) in m/s (a tuple or a list), got a "
+            f"{type(velocity).__name__}: {velocity!r}"
+        )
+    try:
+        vx, vy = velocity
+    except (TypeError, ValueError):
+        raise ValueError(f"velocity must be a pair (vx, vy) in m/s, got {velocity!r}") from None
+    return tuple(  # type: ignore[return-value]
+        check_speed(name, check_finite(name, v, "m/s"))
+        for name, v in (("velocity[0] (vx)", vx), ("velocity[1] (vy)", vy))
+    )
+
+
+def velocity_from(velocity: Any, speed: Any, incidence: Any) -> Any:
+    """``velocity`` (vx, vy), or the one that ``speed`` [m/s, > 0] and ``incidence`` [rad]
+    give: vx = speed sin(incidence), vy = -speed cos(incidence). The incidence is the angle of
+    the centre of mass's velocity to the flat's normal, in (-pi/2, pi/2): 0 is a normal drop,
+    a positive incidence moves the body towards +x (vx > 0; for a rod, from the tip towards
+    its centre of mass). Quantities as ``impactlab.units.magnitude`` (a bare incidence is
+    radians, ``"30 deg"`` works). ValueError when both or neither are given."""
+    if speed is None and incidence is None:
+        if velocity is None:
+            raise ValueError(
+                "give the velocity of the centre of mass: velocity=(vx, vy) [m/s], or speed= "
+                "[m/s] and incidence= (its angle to the flat's normal, e.g. '30 deg')"
+            )
+        return velocity
+    if velocity is not None:
+        raise ValueError(
+            "give either velocity=(vx, vy) or speed= and incidence=, not both (they say the "
+            "same thing)"
+        )
+    if speed is None or incidence is None:
+        missing = "speed" if speed is None else "incidence"
+        raise ValueError(f"speed and incidence go together: {missing} is missing")
+    v = check_positive("speed", speed, "m/s")
+    th = check_finite("incidence", incidence, "rad")
+    if not incidence_allowed(th):
+        hint = (
+            ""
+            if has_unit(incidence)
+            else f" (a bare incidence is radians; for degrees write '{th:g} deg')"
+        )
+        raise ValueError(
+            f"incidence must lie in (-90, 90) deg from the flat's normal, got "
+            f"{math.degrees(th):.6g} deg{hint}"
+        )
+    return (v * math.sin(th), -v * math.cos(th))
+
+
+def batch_velocity(vx: Any, vy: Any, speed: Any, incidence: Any) -> tuple[Any, Any]:
+    """(vx, vy) of a batch: as given (vx None: 0), or from speed and incidence (scalars or
+    arrays, element by element). ValueError when both or neither are given."""
+    if speed is None and incidence is None:
+        if vy is None:
+            raise ValueError("vy is required (or speed= and incidence=)")
+        return (0.0 if vx is None else vx), vy
+    if vx is not None or vy is not None:
+        raise ValueError("give either vx/vy or speed= and incidence=, not both")
+    if speed is None or incidence is None:
+        missing = "speed" if speed is None else "incidence"
+        raise ValueError(f"speed and incidence go together: {missing} is missing")
+    v = np.asarray(magnitude("speed", speed, "m/s"), dtype=np.float64)
+    th = np.asarray(magnitude("incidence", incidence, "rad"), dtype=np.float64)
+    return v * np.sin(th), -v * np.cos(th)
+
+
+def check_body(body: Any) -> Rod | Sphere:
+    """``body`` if it is a Rod or a Sphere, else ValueError."""
+    if not isinstance(body, Rod | Sphere):
+        raise ValueError(f"body must be an impactlab Rod or Sphere, got {type(body).__name__}")
+    return body
+
+
+def check_flat(flat: Any) -> Material:
+    """``flat`` if it is a Material, else ValueError."""
+    if not isinstance(flat, Material):
+        raise ValueError(f"flat must be an impactlab Material, got {type(flat).__name__}")
+    return flat
+
+
+def warn_fast(what: str, speed: float) -> None:
+    """An ImplausibleInputWarning when ``speed`` [m/s] exceeds :data:`PLAUSIBLE_SPEED`."""
+    if speed > PLAUSIBLE_SPEED:
+        warn_implausible(
+            f"{what} ({speed:.6g} m/s) exceeds {PLAUSIBLE_SPEED:g} m/s, far beyond the rigid-"
+            "body impacts impactlab models; check the units (SI: m/s, rad/s)"
+        )
+
+
+__all__ = [
+    "PLAUSIBLE_SPEED",
+    "batch_velocity",
+    "check_angle",
+    "check_body",
+    "check_flat",
+    "check_mu",
+    "check_rtol",
+    "check_speed",
+    "check_spin",
+    "check_velocity",
+    "contact_reach",
+    "gravity_value",
+    "velocity_from",
+    "warn_fast",
+]
