@@ -113,7 +113,8 @@ def _integrate(at, law, p, c, md, y, cm, sg, cp, sc, tstar, rtol, rec, diag, his
     Wm = np.zeros((4, cm.shape[0]))
     # hc: the controller's step; h: the step taken (hc cut at a cell boundary or at t*)
     t, hc, hmin = 0.0, 0.02 * tstar * rtol**0.2, 1e-14 * tstar
-    ev = slip_rhs(law, p, c, md, y, cm, sg, cp, W, K[0], n_in(cm))
+    nin0 = n_in(cm)
+    ev = slip_rhs(law, p, c, md, y, cm, sg, cp, W, K[0], nin0, nin0 >= 0)  # limits: a value
     events(c, md, cm, sg, cp, W, ev, gold)
     nh = np.int64(0)  # not a literal: history_row() is compiled once, for any row count
     if rec:

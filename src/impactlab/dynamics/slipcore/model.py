@@ -131,6 +131,30 @@ def cell_quantities(y, cm, sg, cp, W, mu, Fn, Fd, ar, ad, vs, nin, dy, o):
         dy[o + i] = r if mode == STICK else s * Ld
 
 
+@njit_llvm_inline
+def cell_forces(y, cm, sg, cp, W, mu, Fn, Fd, ar, ad, vs, nin, dy, o):
+    """``cell_quantities`` for a stage inside a step: W[2] = the forces f_i and their rates into
+    dy[o + i], the same values (the same bits), without W[0] and W[1] (the limits and their
+    rates, which only the event functions read) and without the limits of the sticking cells
+    (a slipping cell's force is s_i L_i)."""
+    dx = cp[CP_DX]
+    g2 = 2.0 * cp[CP_G1]
+    u = 1.0 / ar if ar > 0.0 else 0.0
+    for i in range(nin):
+        if cm[i] == SLIP:
+            L, Ld = limits_inv(i, dx, mu, Fn, Fd, ar, ad, u)
+            W[2, i] = sg[i] * L
+            dy[o + i] = sg[i] * Ld
+        else:  # STICK: kernels.cells.stick_rate, as in cell_quantities
+            f = y[Y_CELL + i]
+            ln = cell_length(i, ar, dx)
+            r = g2 * ln * vs
+            if ad < 0.0 and 0.0 < ln < dx:
+                r += f * ad / ln
+            W[2, i] = f
+            dy[o + i] = r
+
+
 @njit_no_refcount
 def evaluate(law, p, c, md, y, cm, sg, cp, W):
     """Contact quantities at state ``y``: fills W[0] = limits L_i, W[1] = dL_i/dt, W[2] = the
@@ -167,13 +191,18 @@ def derivative(c, y, W, ev, dy):
 
 
 @njit_llvm_inline
-def evaluate_rates(law, p, c, md, y, cm, sg, cp, W, dy, nin):
+def evaluate_rates(law, p, c, md, y, cm, sg, cp, W, dy, nin, limits):
     """``evaluate`` and ``derivative`` together for the ``nin`` cells in contact (the same
-    bits): fills ``W[:3]`` and ``dy``, returns the quantities of ``evaluate``. The stages of a
-    step call it, inlined by LLVM: a call passes about 90 values (the arrays' fields, the
-    constant and mode tuples), about 35 ns."""
+    bits): fills ``W[:3]`` (with ``limits`` False only ``W[2]``: ``cell_forces``) and ``dy``,
+    returns the quantities of ``evaluate``. The stages of a step call it, inlined by LLVM: a
+    call passes about 90 values (the arrays' fields, the constant and mode tuples), about
+    35 ns."""
     delta, a, b, Fn, vn, vs, ar, Fd, ad = normal_state(law, p, c, md, y)
-    cell_quantities(y, cm, sg, cp, W, c[C_MU], Fn, Fd, ar, ad, vs, nin, dy, np.int64(Y_CELL))
+    o = np.int64(Y_CELL)
+    if limits:
+        cell_quantities(y, cm, sg, cp, W, c[C_MU], Fn, Fd, ar, ad, vs, nin, dy, o)
+    else:
+        cell_forces(y, cm, sg, cp, W, c[C_MU], Fn, Fd, ar, ad, vs, nin, dy, o)
     ev = (delta, a, b, Fn, cells_tangential_force(W, nin), vn, vs, ar, ad, nin)
     rigid_rates(c, y, ev, dy)
     return ev

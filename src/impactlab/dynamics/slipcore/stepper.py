@@ -46,10 +46,11 @@ SIMULTANEOUS = 1e-10
 
 
 @njit_llvm_inline
-def slip_rhs(law, p, c, md, y, cm, sg, cp, W, dy, nin):
+def slip_rhs(law, p, c, md, y, cm, sg, cp, W, dy, nin, limits):
     """Derivative of ``y`` into ``dy`` (``nin`` cells in contact); returns the evaluated
-    quantities."""
-    return evaluate_rates(law, p, c, md, y, cm, sg, cp, W, dy, nin)
+    quantities, and fills ``W`` (its limits W[0] and W[1] only if ``limits``: the event
+    functions read them at a step's end, not inside it)."""
+    return evaluate_rates(law, p, c, md, y, cm, sg, cp, W, dy, nin, limits)
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -78,7 +79,8 @@ def dp_step_slip(law, p, c, md, y, cm, sg, cp, W, K, h, rtol, sc, ynew, q):
     nact = Y_CELL + nin
     for stage in range(1, 7):
         stage_sum(y, K, h, stage, ynew, nact)  # the cells out of contact stay at 0
-        ev = slip_rhs(law, p, c, md, ynew, cm, sg, cp, W, K[stage], nin)
+        # the limits at the last stage only (the step's end, FSAL: its event functions)
+        ev = slip_rhs(law, p, c, md, ynew, cm, sg, cp, W, K[stage], nin, stage == 6)
     error_terms(y, ynew, K, h, rtol, sc, q, nact)
     err, count = error_sum(q, cm)
     return math.sqrt(err / count), ev
