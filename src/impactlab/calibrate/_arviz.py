@@ -1,9 +1,16 @@
 """ArviZ, imported once without its notice about a future refactor (a FutureWarning that
-would otherwise reach every user of ``impactlab.calibrate``), and a context that hides its
-advisory warnings."""
+would otherwise reach every user of ``impactlab.calibrate``), and the contexts that hide or
+record its advisory warnings.
+
+``warnings.catch_warnings`` swaps process-wide state and restores it on exit, so two such
+blocks in two threads (models calibrated on a threaded Dask worker) undo each other: one
+thread's exit restored the filters while the other still computed, and ArviZ's Pareto-k
+advisory reached the user's stderr. The contexts here hold one lock while they run.
+"""
 
 from __future__ import annotations
 
+import threading
 import warnings
 from collections.abc import Iterator
 from contextlib import contextmanager
@@ -12,16 +19,27 @@ with warnings.catch_warnings():
     warnings.filterwarnings("ignore", category=FutureWarning, module="arviz")
     import arviz as az
 
-__all__ = ["az", "quiet"]
+__all__ = ["az", "quiet", "recording"]
+
+#: Held by ``quiet`` and ``recording`` (re-entrant: ``quiet`` may run inside ``recording``).
+_WARNING_STATE = threading.RLock()
 
 
 @contextmanager
 def quiet() -> Iterator[None]:
     """Hide ArviZ's advisory warnings (few draws per chain, Pareto k, pandas deprecations):
     the calibration reports what matters in its own warnings (Pareto k counts, R-hat)."""
-    with warnings.catch_warnings():
+    with _WARNING_STATE, warnings.catch_warnings():
         warnings.simplefilter("ignore", UserWarning)
         warnings.simplefilter("ignore", FutureWarning)
         warnings.simplefilter("ignore", DeprecationWarning)
         warnings.filterwarnings("ignore", message=".*inplace.*")
         yield
+
+
+@contextmanager
+def recording() -> Iterator[list[warnings.WarningMessage]]:
+    """Record every warning raised inside (none reaches the user; the caller reports them)."""
+    with _WARNING_STATE, warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        yield caught

@@ -4,14 +4,13 @@ posterior predictive checks (ArviZ for R-hat, ESS and PSIS-LOO)."""
 from __future__ import annotations
 
 import logging
-import warnings
 from dataclasses import dataclass, field
 from typing import Any
 
 import emcee
 import numpy as np
 
-from impactlab.calibrate._arviz import az, quiet
+from impactlab.calibrate._arviz import az, quiet, recording
 from impactlab.calibrate.posterior import LogPosterior
 from impactlab.calibrate.priors import Parameter
 from impactlab.calibrate.quantities import MEASURABLE
@@ -93,8 +92,7 @@ class ModelPosterior:
 
 
 def _loo(idata: Any) -> tuple[dict[str, float], list[str]]:
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
+    with recording() as caught:
         try:
             r = az.loo(idata, pointwise=True)
         except (ValueError, TypeError, IndexError) as exc:
