@@ -24,6 +24,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from numba import njit
 
 from impactlab.dynamics.kernels._jit import njit_internal, njit_llvm_inline, njit_no_refcount
 from impactlab.dynamics.kernels.cells import (
@@ -104,6 +105,17 @@ def cells_tangential_force(W, nin):
     return Ft
 
 
+@njit(cache=True, inline="always", error_model="numpy")
+def cell_stick_rate(i, f, ar, ad, vs, g2, dx):
+    """``kernels.cells.stick_rate`` of cell ``i`` (force ``f`` [N]) with the cell parameters
+    read once by the caller (``g2`` = 2 G_1 [Pa], ``dx`` [m]; the same bits) [N/s]."""
+    ln = cell_length(i, ar, dx)
+    r = g2 * ln * vs
+    if ad < 0.0 and 0.0 < ln < dx:
+        r += f * ad / ln
+    return r
+
+
 @njit_llvm_inline
 def cell_quantities(y, cm, sg, cp, W, mu, Fn, Fd, ar, ad, vs, nin, dy, o):
     """The ``nin`` cells in contact: W[0] = limits L_i, W[1] = dL_i/dt, W[2] = forces f_i (SLIP:
@@ -123,11 +135,7 @@ def cell_quantities(y, cm, sg, cp, W, mu, Fn, Fd, ar, ad, vs, nin, dy, o):
         W[0, i] = L
         W[1, i] = Ld
         W[2, i] = f
-        # kernels.cells.stick_rate with the cell parameters read once (the same bits)
-        ln = cell_length(i, ar, dx)
-        r = g2 * ln * vs
-        if ad < 0.0 and 0.0 < ln < dx:
-            r += f * ad / ln
+        r = cell_stick_rate(i, f, ar, ad, vs, g2, dx)
         dy[o + i] = r if mode == STICK else s * Ld
 
 
@@ -145,14 +153,10 @@ def cell_forces(y, cm, sg, cp, W, mu, Fn, Fd, ar, ad, vs, nin, dy, o):
             L, Ld = limits_inv(i, dx, mu, Fn, Fd, ar, ad, u)
             W[2, i] = sg[i] * L
             dy[o + i] = sg[i] * Ld
-        else:  # STICK: kernels.cells.stick_rate, as in cell_quantities
+        else:  # STICK
             f = y[Y_CELL + i]
-            ln = cell_length(i, ar, dx)
-            r = g2 * ln * vs
-            if ad < 0.0 and 0.0 < ln < dx:
-                r += f * ad / ln
             W[2, i] = f
-            dy[o + i] = r
+            dy[o + i] = cell_stick_rate(i, f, ar, ad, vs, g2, dx)
 
 
 @njit_no_refcount
