@@ -16,7 +16,13 @@ from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.bodies.modal import modal_basis, rigid_modes
 from impactlab.bodies.residual import axial_residual_modes
 from impactlab.bodies.rod_section import EULER_BERNOULLI, TIMOSHENKO, RodSection
-from impactlab.bodies.timoshenko import timoshenko_frequencies, timoshenko_shape_fn
+from impactlab.bodies.timoshenko import (
+    _determinant,
+    _determinants,
+    timoshenko_cutoff,
+    timoshenko_frequencies,
+    timoshenko_shape_fn,
+)
 from impactlab.dynamics.flex_fe import CorotationalRod
 from impactlab.materials import AISI_201
 
@@ -120,6 +126,23 @@ def test_timoshenko_shapes(k: int) -> None:
     scale = math.sqrt(om**2 / EI)
     assert np.max(np.abs(dP)) < 1e-6 * scale
     assert np.max(np.abs(gam)) < 1e-6 * scale * L
+
+
+@pytest.mark.parametrize("diameter", [None, 0.05, 0.3048 / 20000])
+def test_frequency_scan_equals_one_frequency_at_a_time(diameter: float | None) -> None:
+    """The root scan's determinants, computed for all frequencies at once, are those of one
+    frequency at a time to the bit, below and above the cut-off (the roots are refined from
+    the scan's sign changes, so the frequencies depend on it)."""
+    sec = SEC if diameter is None else RodSection.paper(diameter=diameter)
+    cut = timoshenko_cutoff(sec)
+    eb = bm.eb_frequencies(sec, 8)
+    om = np.concatenate(
+        [np.geomspace(0.3 * eb[0], 1.05 * eb[-1], 300), np.geomspace(0.5 * cut, 3.0 * cut, 300)]
+    )
+    om = om[np.abs(om / cut - 1.0) > 1e-6]
+    one_at_a_time = np.array([_determinant(w, sec) for w in om])
+    assert np.all(np.isfinite(one_at_a_time))
+    assert np.array_equal(_determinants(sec, om).view(np.int64), one_at_a_time.view(np.int64))
 
 
 def test_timoshenko_limits_and_fe() -> None:
