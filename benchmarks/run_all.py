@@ -27,6 +27,7 @@ def main(argv: list[str]) -> int:
         [sys.executable, str(HERE / "bench_sweep.py"), *([] if full else ["--quick"])],
         [sys.executable, str(HERE / "bench_flexible.py")],
         [sys.executable, str(HERE / "bench_partial_slip.py")],
+        [sys.executable, str(HERE / "bench_partial_slip_spread.py")],
         [sys.executable, str(HERE / "bench_compile.py")],
         [sys.executable, str(HERE / "bench_caches.py")],
     ]
