@@ -124,13 +124,39 @@ def test_friction_that_gains_energy_in_one_contact_is_flagged() -> None:
     assert max(x.work_friction for x in c.contacts) <= 0.0 and ResultFlag.ENERGY_GAIN not in c.flags
 
 
-def test_works_shared_with_the_other_end_flag_nothing() -> None:
-    """While both ends touch, a contact's recorded works hold the other end's too (shared
-    accumulators): such a contact's positive friction work is no gain of its own, and
-    partial slip, which cannot create energy, is not flagged for it."""
-    case = {"mu": 0.8, "angle": math.radians(45), "velocity": (0.0, -1.0)}
-    r = simulate_drop(FlexibleRod.paper(), friction="partial_slip", **case)
-    assert max(c.work_friction for c in r.contacts) > 1e-4  # recorded, shared with the other end
+def _overlapping(contacts: list) -> int:
+    """The pairs of contacts of the two ends that overlap in time."""
+    return sum(
+        1
+        for i, a in enumerate(contacts)
+        for b in contacts[i + 1 :]
+        if a.end != b.end and a.start < b.start + b.duration and b.start < a.start + a.duration
+    )
+
+
+@pytest.mark.parametrize(
+    ("friction", "angle_deg", "mu", "vy"),
+    [
+        ("partial_slip", 45.0, 0.8, -1.0),
+        ("coulomb", 0.01, 0.3, -1.41),
+        ("mindlin", 0.1, 0.3, -1.41),
+    ],
+)
+def test_contact_works_are_each_ends_own(
+    friction: str, angle_deg: float, mu: float, vy: float
+) -> None:
+    """While both ends touch, each contact's works are its end's own (each end integrates its
+    own): the contacts' works add up to the drop's totals, overlapping contacts included, and
+    the friction of a model that cannot create energy does negative work in every contact."""
+    case = {"mu": mu, "angle": math.radians(angle_deg), "velocity": (0.0, vy), "stop": "flight"}
+    r = simulate_drop(FlexibleRod.paper(), friction=friction, **case)
+    assert _overlapping(r.contacts) > 0
+    scale = abs(r.work_normal)
+    assert sum(c.work_normal for c in r.contacts) == pytest.approx(r.work_normal, abs=1e-12 * scale)
+    assert sum(c.work_friction for c in r.contacts) == pytest.approx(
+        r.work_friction, abs=1e-12 * scale
+    )
+    assert max(c.work_friction for c in r.contacts) <= 1e-12 * scale
     assert ResultFlag.ENERGY_GAIN not in r.flags
 
 

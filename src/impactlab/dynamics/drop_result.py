@@ -65,7 +65,8 @@ class ContactRecord:
     signed slip integral ``slip`` = int v_t dt and ``slip_path`` = int |v_t| dt [m], the contact
     point at touch and at separation [m], its ``dent`` (index into ``DropResult.dents``),
     ``reload`` (True if it started on an existing dent), the dent's ``delta_r`` after it [m], the
-    works of the normal force and of friction [J] and the time spent sticking [s]."""
+    works of its end's normal force and friction [J] (its own, also while the other end touches:
+    the contacts' works add up to the drop's) and the time spent sticking [s]."""
 
     end: int
     start: float

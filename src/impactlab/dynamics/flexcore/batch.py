@@ -107,32 +107,17 @@ def sequence_flags(out, e0, m, g, rtol, contacts, n_contacts):
 
 
 @njit(cache=True, error_model="numpy")
-def alone_in_contact(contacts, n_contacts, j):
-    """True when no contact of the other end overlaps contact ``j`` in time: the drop's work
-    accumulators are shared by both ends, so a contact's recorded works are its end's own only
-    then."""
-    t0 = contacts[j, F.CR_T0]
-    t1 = t0 + contacts[j, F.CR_DUR]
-    for i in range(n_contacts):
-        if contacts[i, F.CR_END] != contacts[j, F.CR_END]:
-            s0 = contacts[i, F.CR_T0]
-            if s0 < t1 and s0 + contacts[i, F.CR_DUR] > t0:
-                return False
-    return True
-
-
-@njit(cache=True, error_model="numpy")
 def friction_gained(contacts, n_contacts, scale, rtol):
     """True when friction did positive work [J] in one of the ``n_contacts`` contacts beyond
     the energy criterion's tolerance, (ENERGY_GAIN_RTOL_FACTOR rtol + ENERGY_ROUNDOFF) times
     the balance's ``scale`` [J] (E0 + the final kinetic, vibration and |potential| energy):
     energy created inside a contact (the impulse_ratio model's, once the slip reverses), which
-    the losses of the other contacts would hide from the sequence's total. Only a contact
-    during which the other end does not touch counts (``alone_in_contact``)."""
+    the losses of the other contacts would hide from the sequence's total (a contact's works
+    are its end's own, also while the other end touches)."""
     limit = (ENERGY_GAIN_RTOL_FACTOR * rtol + ENERGY_ROUNDOFF) * scale
     gained = False
     for j in range(n_contacts):
-        if contacts[j, F.CR_WT] > limit and alone_in_contact(contacts, n_contacts, j):
+        if contacts[j, F.CR_WT] > limit:
             gained = True
     return gained
 
@@ -168,7 +153,7 @@ def _run(drop_at, mdl, vx, vy, w, rtol, t_max, stop_mode, no_history, out, conta
     n_contacts)."""
     contacts[:] = 0.0
     dents[:] = 0.0
-    n = 6 + 2 * mdl[3].shape[0] + F.NQUAD
+    n = 6 + 2 * mdl[3].shape[0] + F.NQUAD + F.N_END_WORKS
     if mdl[2][F.FC_FRIC] == F.FR_PARTIAL:
         n += F.NE * F.NCS
     yfinal = np.zeros(n)

@@ -167,8 +167,9 @@ def on_touch(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, ek, Jn, Jt):
     b = iq + 3 + 4 * k
     for i in range(4):
         snap[k, i] = y[b + i]
-    snap[k, 4] = y[iq]
-    snap[k, 5] = y[iq + 1]
+    iw = y.shape[0] - F.N_END_WORKS + 2 * k  # the end's own works
+    snap[k, 4] = y[iw]
+    snap[k, 5] = y[iw + 1]
     sv[F.SV_LAST_END] = k
     return F.ST_OK
 
@@ -218,8 +219,9 @@ def on_separation(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, y_end, e
     contacts[ci, F.CR_ASLIP] = y[b + 3] - snap[k, 3]
     contacts[ci, F.CR_X1] = ek[k, F.EK_X]
     contacts[ci, F.CR_DR] = md[k, F.MD_DR]
-    contacts[ci, F.CR_WN] = y[iq] - snap[k, 4]
-    contacts[ci, F.CR_WT] = y[iq + 1] - snap[k, 5]
+    iw = y.shape[0] - F.N_END_WORKS + 2 * k
+    contacts[ci, F.CR_WN] = y[iw] - snap[k, 4]
+    contacts[ci, F.CR_WT] = y[iw + 1] - snap[k, 5]
     cur_con[k] = -1
     md[k, F.MD_IN] = 0.0
     md[k, F.MD_FM] = 0.0

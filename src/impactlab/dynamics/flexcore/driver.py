@@ -49,7 +49,7 @@ def drop(mdl, vx0, vy0, w0, rtol, t_max, stop_mode, record_on, out, contacts, de
     """
     M = mdl[3].shape[0]
     partial = mdl[2][F.FC_FRIC] == F.FR_PARTIAL
-    n = 6 + 2 * M + F.NQUAD + (F.NE * F.NCS if partial else 0)
+    n = 6 + 2 * M + F.NQUAD + (F.NE * F.NCS if partial else 0) + F.N_END_WORKS
     nev = F.NFEV + (F.NE * F.NFEVC if partial else 0)
     sv, md, y, sc, Jn, Jt, ek, ev, gold, gnew, K, Q, st, ynew, yt, yev, der, snap = workspace(
         n, M, nev

@@ -4,16 +4,19 @@ events, the dents, the contact records, the run state, the output vector and the
 Imports only ``impactlab.schema`` (L0) and the status table of every engine (``kernels.status``):
 the compiled modules of this package read the indices.
 
-State vector (length 6 + 2 M + NQUAD, M elastic modes):
+State vector (length 6 + 2 M + NQUAD + N_END_WORKS, M elastic modes):
 ``[dX, dY, phi, q_1..q_M, vx, vy, spin, q'_1..q'_M, W_n, W_t, W_d, (P_n, P_t, S, |S|) x NE,
-Q_t x NE]``;
+Q_t x NE, (cells), (W_n, W_t) x NE]``;
 dX, dY: displacement of the centre of mass C from its position at first touch [m] (the origin
 of x is the first contact point), phi: rotation since first touch [rad], q: modal coordinates
 [kg^1/2 m], W_n, W_t, W_d: work of the normal forces, of friction and of the modal damping [J];
 per end: normal and tangential impulse [N s], signed and absolute slip integrals [m]; per end
 the Mindlin tangential state Q_t (as the rigid core's ``S_Q``: the force [N] while the contact
 grows, the elastic displacement [m] while it shrinks; 0 for the other friction models). With
-``partial_slip`` NCS cell forces [N] per end follow (``cells``; state length ``state_length``).
+``partial_slip`` NCS cell forces [N] per end follow (``cells``). Last, per end the works of its
+normal force and of its friction force [J], the contact records' works: integrated with the
+state but left out of the error norm (their sums are W_n and W_t, which are in it), so that
+they change no step (state length ``model.state_length``).
 """
 
 from __future__ import annotations
@@ -23,7 +26,8 @@ from impactlab.schema import Field
 
 NE = 2  #: number of ends (0: the tip that touches first, 1: the other end)
 Q_TAN = 3 + 4 * NE  #: offset of the Mindlin states Q_t in the block after the modal velocities
-NQUAD = Q_TAN + NE  #: quadratures and tangential states at the end of the state vector
+NQUAD = Q_TAN + NE  #: quadratures and tangential states after the modal velocities
+N_END_WORKS = 2 * NE  #: the ends' own works (W_n, W_t per end), the last entries of the state
 FR_PARTIAL = 3  #: ``impactlab.friction`` id of ``partial_slip`` (Mindlin-Deresiewicz cells)
 
 # ---- constants vector (``FC_*``) --------------------------------------------------------------

@@ -59,9 +59,9 @@ def constants(
 
 def state_length(n_modes: int, friction_id: int) -> int:
     """Length of the integrator's state with ``n_modes`` modes (partial slip: plus the cells of
-    both ends)."""
+    both ends; last, the ends' own works)."""
     cells = F.NE * F.NCS if friction_id == F.FR_PARTIAL else 0
-    return 6 + 2 * n_modes + F.NQUAD + cells
+    return 6 + 2 * n_modes + F.NQUAD + cells + F.N_END_WORKS
 
 
 def _array(a: Any, dtype: type = np.float64) -> np.ndarray:

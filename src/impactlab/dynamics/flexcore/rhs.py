@@ -172,18 +172,24 @@ def _stick_forces(c, M, md, der, ek, Jt):
 
 @njit(cache=True, inline="always", error_model="numpy")
 def _quadratures(c, dmp, md, y, der, ek):
-    """Derivatives of the works and of the per-end impulses and slip integrals."""
+    """Derivatives of the works (the drop's and each end's own) and of the per-end impulses
+    and slip integrals."""
     M = dmp.shape[0]
     iv = 3 + M
     iq = 6 + 2 * M
+    iw = y.shape[0] - F.N_END_WORKS
     mu = c[F.FC_MU]
     wn = 0.0
     wt = 0.0
     for k in range(F.NE):
         b = iq + 3 + 4 * k
         if md[k, F.MD_IN] != 0.0:
-            wn += ek[k, F.EK_FN] * ek[k, F.EK_VN]
-            wt += ek[k, F.EK_FT] * ek[k, F.EK_VT]
+            pn = ek[k, F.EK_FN] * ek[k, F.EK_VN]
+            pt = ek[k, F.EK_FT] * ek[k, F.EK_VT]
+            wn += pn
+            wt += pt
+            der[iw + 2 * k] = pn
+            der[iw + 2 * k + 1] = pt
             der[b] = ek[k, F.EK_FN]
             der[b + 1] = ek[k, F.EK_FT]
             der[b + 2] = ek[k, F.EK_VT]
@@ -198,6 +204,8 @@ def _quadratures(c, dmp, md, y, der, ek):
             der[b + 2] = 0.0
             der[b + 3] = 0.0
             der[iq + F.Q_TAN + k] = 0.0
+            der[iw + 2 * k] = 0.0
+            der[iw + 2 * k + 1] = 0.0
     wd = 0.0
     for j in range(M):
         wd -= dmp[j] * y[iv + 3 + j] * y[iv + 3 + j]

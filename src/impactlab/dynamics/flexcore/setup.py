@@ -63,6 +63,8 @@ def scales(mdl, vx0, vy0, w0, sc, sv):
     e0 = 0.5 * m * (vx0 * vx0 + vy0 * vy0) + 0.5 * c[F.FC_I] * w0 * w0
     for i in range(F.NQUAD):
         sc[iq + i] = e0
+    for i in range(sc.shape[0] - F.N_END_WORKS, sc.shape[0]):
+        sc[i] = e0  # the ends' own works (outside the error norm)
     for k in range(F.NE):
         b = iq + 3 + 4 * k
         sc[b] = meff * vstar

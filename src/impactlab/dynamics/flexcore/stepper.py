@@ -20,6 +20,7 @@ import math
 import numpy as np
 from numba import njit
 
+from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.address_call import AT_RHS, AT_STEP, call_rates, call_step
 from impactlab.dynamics.flexcore.cells import n_active
 from impactlab.dynamics.flexcore.rhs import rates, rates_cells
@@ -40,11 +41,13 @@ def dense(y0, h, theta, Q, out, n):
 
 @njit(cache=True, inline="always", error_model="numpy")
 def _error_norm(y, K, h, rtol, sc, st, ynew, md, M):
-    """``ynew`` from the last stage point ``st``; the scaled RMS error norm of the step."""
+    """``ynew`` from the last stage point ``st``; the scaled RMS error norm of the step (the
+    ends' own works, the state's last entries, left out: their sums are in it)."""
     n = y.shape[0]
     for i in range(n):
         ynew[i] = st[i]
-    return math.sqrt(error_sum(y, ynew, K, h, rtol, sc, n) / n_active(md, n, M))
+    ne = n - F.N_END_WORKS
+    return math.sqrt(error_sum(y, ynew, K, h, rtol, sc, ne) / n_active(md, ne, M))
 
 
 @njit_internal
