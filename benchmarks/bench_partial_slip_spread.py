@@ -26,10 +26,7 @@ from __future__ import annotations
 
 import argparse
 import json
-import math
 import sys
-import time
-from collections.abc import Callable
 from pathlib import Path
 
 import numba
@@ -37,6 +34,9 @@ import numpy as np
 
 import impactlab as il
 from impactlab.materials import AISI_1010
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from bench_partial_slip import best_cpu, cpu_model
 
 ROOT = Path(__file__).resolve().parent
 RESULTS = ROOT / "results" / "partial_slip_spread.json"
@@ -73,17 +73,6 @@ def batch(body: str, law: str, mu: float, model: str, rtol: float | None, tile: 
         rtol=rtol,
         **kin,  # type: ignore[arg-type]
     )
-
-
-def best_cpu(f: Callable[[], object], repeats: int) -> float:
-    """The smallest CPU time [s] of ``repeats`` calls of ``f`` (after one warm-up call)."""
-    f()
-    best = math.inf
-    for _ in range(repeats):
-        t = time.process_time()
-        f()
-        best = min(best, time.process_time() - t)
-    return best
 
 
 def cost(repeats: int) -> dict[str, object]:
@@ -159,6 +148,7 @@ def main(argv: list[str]) -> int:
     args = ap.parse_args(argv)
     numba.set_num_threads(1)
     result = {
+        "machine": {"cpu": cpu_model(), "numba_threads": 1},
         "setup": {
             "laws": list(LAWS),
             "mus": list(MUS),
