@@ -1,6 +1,7 @@
 """Randomised flexible drops (a seeded sample over modes, laws, friction, rate, angles down to
 0.001 deg, both ends with ``stop="flight"``): no missed contact, no e < 0 or energy gain
-without a flag, finite outputs, 0 <= delta_p <= delta_max; a failure is a one-line
+without a flag, finite outputs, 0 <= delta_p <= delta_max, the contacts' works adding up to
+the drop's; a failure is a one-line
 ValueError, never another exception. The larger run: benchmarks/bench_flexible_fuzz.py."""
 
 from __future__ import annotations
@@ -58,6 +59,11 @@ def _check(r: Any) -> list[str]:
         bad.append(f"non-finite output {values}")
     if not 0.0 <= r.dent_depth <= r.delta_max:
         bad.append(f"delta_p {r.dent_depth} outside [0, delta_max {r.delta_max}]")
+    works = r.initial_energy + abs(r.work_normal) + abs(r.work_friction)
+    for name in ("work_normal", "work_friction"):  # each contact's are its end's own
+        total = sum(getattr(c, name) for c in r.contacts)
+        if abs(total - getattr(r, name)) > 1e-9 * works:
+            bad.append(f"the contacts' {name} add up to {total}, the drop's is {getattr(r, name)}")
     if r.ok:
         if not r.e >= 0.0:
             bad.append(f"e = {r.e} < 0 without a flag")
