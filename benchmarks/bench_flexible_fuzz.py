@@ -16,7 +16,7 @@ result that must pass:
   potential energy against the initial kinetic energy, the ENERGY_GAIN criterion);
 * finite outputs; 0 <= delta_p <= delta_max;
 * the contacts' works of the normal force and of friction add up to the drop's (to 1e-9 of
-  E0 + |W_n| + |W_t|): each contact's are its end's own.
+  E0 + |W_n| + |W_t|; every result, flagged or not): each contact's are its end's own.
 
 Anything else (an unexpected exception, an unflagged anomaly) is an anomaly and is printed
 with the inputs that reproduce it.
@@ -99,6 +99,13 @@ def run_case(case: dict[str, Any], history: bool = False) -> Any:
 def anomalies(r: Any, rtol: float = F.DROP_DEFAULT_RTOL) -> list[str]:
     """What is wrong with a returned result (``[]``: nothing)."""
     bad = []
+    works = r.initial_energy + abs(r.work_normal) + abs(r.work_friction)
+    for name in ("work_normal", "work_friction"):  # each contact's are its end's own
+        total = sum(getattr(c, name) for c in r.contacts)
+        if abs(total - getattr(r, name)) > 1e-9 * works:
+            bad.append(
+                f"the contacts' {name} add up to {total!r}, the drop's is {getattr(r, name)!r}"
+            )
     if not r.ok:
         return bad  # flagged: the result says it is not plain success
     scalars = {
@@ -124,13 +131,6 @@ def anomalies(r: Any, rtol: float = F.DROP_DEFAULT_RTOL) -> list[str]:
     scale += abs(r.potential_energy)
     if e_end - r.initial_energy > (ENERGY_GAIN_RTOL_FACTOR * rtol + ENERGY_ROUNDOFF) * scale:
         bad.append(f"energy gain {e_end / r.initial_energy - 1.0:.3g} E0 without a flag")
-    works = r.initial_energy + abs(r.work_normal) + abs(r.work_friction)
-    for name in ("work_normal", "work_friction"):  # each contact's are its end's own
-        total = sum(getattr(c, name) for c in r.contacts)
-        if abs(total - getattr(r, name)) > 1e-9 * works:
-            bad.append(
-                f"the contacts' {name} add up to {total!r}, the drop's is {getattr(r, name)!r}"
-            )
     if r.history is not None:
         miss = history_miss(r)
         if miss:
