@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 import math
 import re
+import warnings
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -14,6 +15,7 @@ import pytest
 from typer.testing import CliRunner
 
 import impactlab.analytic as analytic
+from impactlab import ImplausibleInputWarning
 from impactlab.analytic import invert
 from impactlab.bodies import PAPER_ROD
 from impactlab.cli import app
@@ -254,6 +256,25 @@ def test_implausible_dents_are_warned(plain_scan: tuple[Path, float, Any]) -> No
     assert "997 times shallower than a tip of radius R = 8.8 mm" in text
     good = analyze(None, path, pixel_size=dx, height_unit="m")
     assert good.ok and not good.warnings
+
+
+def test_a_shallow_dent_is_warned_once(
+    plain_scan: tuple[Path, float, Any], drops: dict, rod: Any
+) -> None:
+    """A 22 nm dent with the markers: the scan stage's warning names the height unit, and the
+    inversion's warnings join the result's (``inversion: ...``) without repeating it; none
+    leaks as a Python warning."""
+    path, dx, _ = plain_scan
+    d = drops[20]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", ImplausibleInputWarning)
+        res = analyze(
+            d.c3d, path, rod, geometry=d.geometry, pixel_size=dx, height_unit="mm", n_samples=500
+        )
+    assert res.inversion is not None, res.errors
+    shallow = [w for w in res.warnings if "shallower than 0.1 um" in w]
+    assert len(shallow) == 1 and shallow[0].startswith("scan: ")
+    assert "height unit (read as 'mm')" in shallow[0]
 
 
 def test_sign_flipped_scan_is_refused_then_read_over(

@@ -18,12 +18,15 @@ never lost; an invalid argument raises a TypeError or ValueError naming it at on
 from __future__ import annotations
 
 import inspect
+import threading
+import warnings
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 from impactlab import analytic
 from impactlab._mpl import pyplot
+from impactlab._validation import ImplausibleInputWarning
 from impactlab.bodies import PAPER_ROD, Rod
 from impactlab.dynamics import simulate
 from impactlab.experiment.checks import check_instance, check_options, check_path, output_folder
@@ -33,7 +36,7 @@ from impactlab.experiment.markers import read_markers
 from impactlab.experiment.plots import plot_dent, plot_kinematics
 from impactlab.experiment.profilometry import DentMetrics, measure_dent, read_scan
 from impactlab.experiment.profilometry.heightmap import pixel_pair
-from impactlab.experiment.profilometry.plausibility import check_dent
+from impactlab.experiment.profilometry.plausibility import PLAUSIBLE_DEPTH, check_dent
 from impactlab.experiment.result import ExperimentResult
 from impactlab.experiment.rigid import MarkerGeometry
 from impactlab.materials import Material, get_material
@@ -43,6 +46,8 @@ __all__ = ["ExperimentResult", "analyze", "default_rod", "rod_properties"]
 #: What a stage may fail with on bad data: the package's errors (ExperimentError is a ValueError),
 #: invalid values and unreadable or unwritable files. Anything else is a bug and propagates.
 _DATA_ERRORS = (ValueError, OSError)
+#: ``warnings.catch_warnings`` swaps process-wide state: one inversion's record at a time.
+_RECORDING = threading.Lock()
 
 
 def default_rod() -> Rod:
@@ -125,22 +130,46 @@ def _inversion_stage(
     gravity: bool,
     n_samples: int,
 ) -> None:
-    try:
-        # through the module attribute, so that the inversion can be replaced (tests)
-        res.inversion = analytic.invert(
-            angle=k.angle_in.pair(),
-            v_i=k.v_i.pair(),
-            mu=k.mu.pair(),
-            e=k.e.pair(),
-            dv_cy=k.dv_cy.pair(),
-            delta_p=d.delta_p.pair(),
-            sliding_length=d.sliding_length.pair(),
-            rod=rod,
-            gravity=gravity,
-            n_samples=n_samples,
-        )
-    except ValueError as exc:
-        res.errors["inversion"] = _message(exc)
+    with _RECORDING, warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            # through the module attribute, so that the inversion can be replaced (tests)
+            res.inversion = analytic.invert(
+                angle=k.angle_in.pair(),
+                v_i=k.v_i.pair(),
+                mu=k.mu.pair(),
+                e=k.e.pair(),
+                dv_cy=k.dv_cy.pair(),
+                delta_p=d.delta_p.pair(),
+                sliding_length=d.sliding_length.pair(),
+                rod=rod,
+                gravity=gravity,
+                n_samples=n_samples,
+            )
+        except ValueError as exc:
+            res.errors["inversion"] = _message(exc)
+    res.warnings += _inversion_warnings(caught, d)
+
+
+def _inversion_warnings(caught: list[warnings.WarningMessage], d: DentMetrics) -> list[str]:
+    """The inversion's ImplausibleInputWarnings as the result's warnings (``inversion: ...``),
+    less its warning of a dent shallower than 0.1 um, which the scan stage gave already (the
+    same bound, ``PLAUSIBLE_DEPTH``, with the scan's likely cause: the height unit); any other
+    warning is issued again as Python issues it."""
+    out = []
+    for w in caught:
+        if not issubclass(w.category, ImplausibleInputWarning):
+            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+            continue
+        text = str(w.message)
+        if (
+            d.delta_p.value < PLAUSIBLE_DEPTH
+            and text.startswith("delta_p = ")
+            and "shallower" in text
+        ):
+            continue
+        out.append(f"inversion: {text}")
+    return out
 
 
 def _model_stage(res: ExperimentResult, rod: Rod, flat: Material, law: str) -> None:
