@@ -118,6 +118,13 @@ def per_case_call(body: object, law: str, kin: dict[str, np.ndarray]) -> Callabl
     return run
 
 
+def write_results(result: dict[str, object], path: Path) -> None:
+    """Write ``result`` as JSON to ``path`` and say where."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(json.dumps(result, indent=1) + "\n")
+    print(f"-> {path.relative_to(ROOT.parent)}")
+
+
 def measure(repeats: int) -> dict[str, object]:
     rows = []
     tot = {"mindlin": 0.0, "partial_slip_simulate": 0.0, "partial_slip_batch": 0.0}
@@ -198,9 +205,7 @@ def main(argv: list[str]) -> int:
         f"all cases: mindlin {s['mindlin_us']:.1f} us/impact; partial slip "  # type: ignore[index]
         f"{s['ratio_fastest']:.1f}x mindlin at its fastest"  # type: ignore[index]
     )
-    RESULTS.parent.mkdir(parents=True, exist_ok=True)
-    RESULTS.write_text(json.dumps(result, indent=1) + "\n")
-    print(f"-> {RESULTS.relative_to(ROOT.parent)}")
+    write_results(result, RESULTS)
     return 0
 
 

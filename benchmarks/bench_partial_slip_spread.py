@@ -25,7 +25,6 @@ Writes benchmarks/results/partial_slip_spread.json and prints a summary. The 20 
 from __future__ import annotations
 
 import argparse
-import json
 import sys
 from pathlib import Path
 
@@ -36,7 +35,7 @@ import impactlab as il
 from impactlab.materials import AISI_1010
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from bench_partial_slip import best_cpu, cpu_model
+from bench_partial_slip import best_cpu, cpu_model, write_results
 
 ROOT = Path(__file__).resolve().parent
 RESULTS = ROOT / "results" / "partial_slip_spread.json"
@@ -166,9 +165,7 @@ def main(argv: list[str]) -> int:
         f"all {c['impacts']} impacts: mindlin {c['mindlin_us']:.1f} us, partial slip "  # type: ignore[index]
         f"{c['partial_slip_us']:.1f} us per impact, ratio {c['ratio']:.2f}"  # type: ignore[index]
     )
-    RESULTS.parent.mkdir(parents=True, exist_ok=True)
-    RESULTS.write_text(json.dumps(result, indent=1) + "\n")
-    print(f"-> {RESULTS.relative_to(ROOT.parent)}")
+    write_results(result, RESULTS)
     return 0
 
 
