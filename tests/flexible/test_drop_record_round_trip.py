@@ -142,3 +142,24 @@ def test_cli_drop_from_with_options_on_top(tmp_path, monkeypatch, capsys) -> Non
     impact.write_text(out)
     code, _, err = _cli(monkeypatch, capsys, "drop", "--from", str(impact))
     assert code != 0 and "not a drop" in err and "impactlab simulate --from" in err
+
+
+def test_cli_drop_stop(tmp_path, monkeypatch, capsys) -> None:
+    """``--stop flight`` follows the other end's impacts as ``simulate_drop(stop="flight")``
+    does, is recorded, and changes a recorded drop under ``--from``; a bad value is one line."""
+    base = ["drop", "--angle", "20 deg", "--vy", "-1.41 m/s", "--mu", "0.2", "--rigid", "--json"]
+    code, seq, err = _cli(monkeypatch, capsys, *base)
+    assert code == 0, err
+    code, flight, err = _cli(monkeypatch, capsys, *base, "--stop", "flight")
+    assert code == 0, err
+    api = simulate_drop(PAPER_ROD, mu=0.2, angle=math.radians(20), velocity=(0, -1.41),
+                        stop="flight", history=False)  # fmt: skip
+    assert json.loads(flight)["n_contacts"] == api.n_contacts > json.loads(seq)["n_contacts"]
+    saved = tmp_path / "drop.json"
+    saved.write_text(seq)
+    code, again, err = _cli(monkeypatch, capsys, "drop", "--from", str(saved), "--stop", "flight",
+                            "--json")  # fmt: skip
+    assert code == 0, err
+    assert json.loads(again)["n_contacts"] == api.n_contacts
+    code, _, err = _cli(monkeypatch, capsys, *base, "--stop", "landing")
+    assert code != 0 and "stop must be one of" in err and len(err.strip().splitlines()) == 1

@@ -230,6 +230,13 @@ def drop_cmd(
         None, "--damping", help="Modal damping ratio zeta of every mode, in [0, 1) (default 0)."
     ),
     no_gravity: bool = typer.Option(False, "--no-gravity", help="Switch gravity off."),
+    stop: str = typer.Option(
+        None,
+        "--stop",
+        help="What the drop follows: 'sequence' (default: the tip's impact, until the tip is "
+        "clear until the other end could land) or 'flight' (on through the other end's "
+        "impacts until the rod flies off).",
+    ),
     from_file: Path = typer.Option(
         None,
         "--from",
@@ -254,6 +261,8 @@ def drop_cmd(
       impactlab drop --angle "70 deg" --vy "-3.45 m/s" --mu 0.1 --rigid --json
 
       impactlab drop --angle "20 deg" --vy "-1.41 m/s" --mu 0.2 --friction partial_slip
+
+      impactlab drop --angle "0.1 deg" --vy "-1.41 m/s" --mu 0.3 --stop flight
     """
     if from_file is not None:  # the recorded drop, with the options given on top
         values = {k: v for k, v in locals().items() if k in _FROM_KEYS}
@@ -287,6 +296,7 @@ def drop_cmd(
         gravity=not no_gravity,
         rate=rate_name(rate),
         history=False,
+        stop="sequence" if stop is None else stop,
     )
     for text in result.warnings:
         print(f"warning: {text}", file=sys.stderr)
@@ -296,7 +306,7 @@ def drop_cmd(
 #: The options of ``drop`` that ``--from`` reads as given (the keys of ``impactlab simulate``).
 _FROM_KEYS: tuple[str, ...] = ("angle", "vy", "vx", "speed", "incidence", "spin", "length")
 _FROM_KEYS += ("radius", "mass", "diameter", "material", "flat", "mu", "friction", "law")
-_FROM_KEYS += ("rate", "modes_axial", "modes_bending", "damping")
+_FROM_KEYS += ("rate", "modes_axial", "modes_bending", "damping", "stop")
 
 
 def register(app: typer.Typer) -> None:

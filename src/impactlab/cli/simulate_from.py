@@ -146,7 +146,7 @@ def _kinematics(given: Mapping[str, Any], recorded: Mapping[str, Any]) -> dict[s
 
 
 def _options(given: Mapping[str, Any], drop: bool) -> dict[str, Any]:
-    """The changed --constant-angle (a rigid impact) or --rate (a drop)."""
+    """The changed --constant-angle (a rigid impact), --rate or --stop (a drop)."""
     changes: dict[str, Any] = {}
     if given.get("constant_angle"):
         if drop:
@@ -162,6 +162,13 @@ def _options(given: Mapping[str, Any], drop: bool) -> dict[str, Any]:
                 "flat); leave it out"
             )
         changes["rate"] = rate_name(str(given["rate"]))
+    if given.get("stop") is not None:
+        if not drop:
+            raise UserError(
+                "--stop: the recorded impact is not a drop (only a drop has another end's "
+                "impacts to follow); leave it out"
+            )
+        changes["stop"] = str(given["stop"])
     return changes
 
 
