@@ -97,25 +97,30 @@ def _basis(sec: RodSection, om: float, x: np.ndarray) -> tuple[np.ndarray, ...]:
 
 
 def _boundary(sec: RodSection, om: float) -> np.ndarray:
-    """Unscaled 4x4 free-free boundary matrix: rows Psi'(0), gamma(0)/sig, Psi'(L),
-    gamma(L)/sig."""
-    _W, _P, dP, G = _basis(sec, om, np.array([0.0, sec.length]))
-    return np.array([dP[:, 0], G[:, 0], dP[:, 1], G[:, 1]])
+    """Unscaled 4x4 free-free boundary matrix at ``om`` [rad/s]: rows Psi'(0), gamma(0)/sig,
+    Psi'(L), gamma(L)/sig (``_boundaries`` of one frequency)."""
+    return _boundaries(sec, np.array([om]))[0]
 
 
 def _matrix(sec: RodSection, om: float) -> np.ndarray:
     """The boundary matrix with its columns scaled to a largest entry of 1 (its determinant
     is then O(1) at every frequency)."""
-    Mx = _boundary(sec, om)
-    for j in range(4):
-        n = np.max(np.abs(Mx[:, j]))
-        if n > 0:
-            Mx[:, j] /= n
-    return Mx
+    return _scaled(_boundaries(sec, np.array([om])))[0]
 
 
 def _determinant(om: float, sec: RodSection) -> float:
     return float(np.linalg.det(_matrix(sec, om)))
+
+
+def _determinants(sec: RodSection, oms: np.ndarray) -> np.ndarray:
+    """``_determinant`` at every frequency of ``oms`` [rad/s] at once (the root scan's grid)."""
+    return np.asarray(np.linalg.det(_scaled(_boundaries(sec, np.asarray(oms, dtype=float)))))
+
+
+def _scaled(Mx: np.ndarray) -> np.ndarray:
+    """Boundary matrices (frequencies, 4, 4) with each column scaled to a largest entry of 1."""
+    n = np.max(np.abs(Mx), axis=1, keepdims=True)
+    return np.where(n > 0, Mx / np.where(n > 0, n, 1.0), Mx)
 
 
 def _end_rows(beta: np.ndarray, sig: np.ndarray, c: np.ndarray, s: np.ndarray) -> np.ndarray:
@@ -126,13 +131,11 @@ def _end_rows(beta: np.ndarray, sig: np.ndarray, c: np.ndarray, s: np.ndarray) -
     return np.stack([np.stack([k * c, k * s], -1), np.stack([-s / beta, c / beta], -1)], 1)
 
 
-def _determinants(sec: RodSection, oms: np.ndarray) -> np.ndarray:
-    """``_determinant`` at every frequency of ``oms`` [rad/s] in one pass of array operations:
-    the same formulas, operation for operation (the same values to the bit: tests/flexible/
-    test_modes.py), about 40 times faster than one frequency at a time."""
+def _boundaries(sec: RodSection, om: np.ndarray) -> np.ndarray:
+    """The unscaled boundary matrices (frequencies, 4, 4) at the frequencies ``om`` [rad/s]:
+    ``_wavenumbers`` and ``_basis`` at x = 0 and L, as array operations over the frequencies
+    (the same operations, so one frequency's matrix is the same to the bit at any count)."""
     rho, A, I, E, kG = _consts(sec)
-    om = np.asarray(oms, dtype=float)
-    # _wavenumbers
     sig = rho * om * om / kG
     p = sig + rho * om * om / E
     q = sig * (rho * om * om / E - kG * A / (E * I))
@@ -143,7 +146,6 @@ def _determinants(sec: RodSection, oms: np.ndarray) -> np.ndarray:
     a = np.sqrt(np.where(below, l2p, -l2p))
     L = sec.length
     one, zero = np.ones_like(om), np.zeros_like(om)
-    # _boundary: rows Psi'(0), gamma(0)/sig, Psi'(L), gamma(L)/sig; columns the basis functions
     Mx = np.empty((om.shape[0], 4, 4))
     Mx[:, 0:2, 0:2] = _end_rows(b, sig, one, zero)
     Mx[:, 2:4, 0:2] = _end_rows(b, sig, np.cos(b * L), np.sin(b * L))
@@ -158,10 +160,7 @@ def _determinants(sec: RodSection, oms: np.ndarray) -> np.ndarray:
             e = (one if i == 0 else decay) if x_is_0 else (decay if i == 0 else one)
             Mx[:, row, 2 + i] = np.where(below, (lam * lam + sig) * e, osc[:, 0, i])
             Mx[:, row + 1, 2 + i] = np.where(below, -e / lam, osc[:, 1, i])
-    # _matrix: each column scaled to a largest entry of 1
-    n = np.max(np.abs(Mx), axis=1, keepdims=True)
-    Mx = np.where(n > 0, Mx / np.where(n > 0, n, 1.0), Mx)
-    return np.asarray(np.linalg.det(Mx))
+    return Mx
 
 
 def timoshenko_frequencies(sec: RodSection, n: int) -> np.ndarray:
