@@ -38,6 +38,7 @@ from impactlab.dynamics.flexcore.address_call import (
     call_drop,
 )
 from impactlab.dynamics.flexcore.driver import drop
+from impactlab.dynamics.flexcore.setup import state_size
 from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.address_call import compiled_addresses
 from impactlab.dynamics.kernels.cells import CP_DX, N_CELLS
@@ -153,10 +154,7 @@ def _run(drop_at, mdl, vx, vy, w, rtol, t_max, stop_mode, no_history, out, conta
     n_contacts)."""
     contacts[:] = 0.0
     dents[:] = 0.0
-    n = 6 + 2 * mdl[3].shape[0] + F.NQUAD + F.N_END_WORKS
-    if mdl[2][F.FC_FRIC] == F.FR_PARTIAL:
-        n += F.NE * F.NCS
-    yfinal = np.zeros(n)
+    yfinal = np.zeros(state_size(mdl[3].shape[0], mdl[2][F.FC_FRIC]))
     st, ncon, _nd, _h, _nh = call_drop(
         drop_at, mdl, vx, vy, w, rtol, t_max, stop_mode, no_history, out, contacts, dents, yfinal
     )

@@ -30,7 +30,13 @@ from impactlab.dynamics.flexcore.address_call import (
 from impactlab.dynamics.flexcore.cells import step_cap
 from impactlab.dynamics.flexcore.coast import complete_jump, refresh_thresholds
 from impactlab.dynamics.flexcore.rhs import evaluate_model
-from impactlab.dynamics.flexcore.setup import first_touch, scales, touch_modes, workspace
+from impactlab.dynamics.flexcore.setup import (
+    first_touch,
+    scales,
+    state_size,
+    touch_modes,
+    workspace,
+)
 from impactlab.dynamics.flexcore.steps import reject
 from impactlab.dynamics.kernels.buffers import copy_into
 from impactlab.dynamics.kernels.step_control import power_growth
@@ -49,7 +55,7 @@ def drop(mdl, vx0, vy0, w0, rtol, t_max, stop_mode, record_on, out, contacts, de
     """
     M = mdl[3].shape[0]
     partial = mdl[2][F.FC_FRIC] == F.FR_PARTIAL
-    n = 6 + 2 * M + F.NQUAD + (F.NE * F.NCS if partial else 0) + F.N_END_WORKS
+    n = state_size(M, mdl[2][F.FC_FRIC])
     nev = F.NFEV + (F.NE * F.NFEVC if partial else 0)
     sv, md, y, sc, Jn, Jt, ek, ev, gold, gnew, K, Q, st, ynew, yt, yev, der, snap = workspace(
         n, M, nev

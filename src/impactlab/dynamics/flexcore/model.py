@@ -11,6 +11,7 @@ import numpy as np
 from impactlab.contact.kernels import P_DLIM, P_DSW
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.indirect import addresses
+from impactlab.dynamics.flexcore.setup import state_size
 from impactlab.dynamics.kernels.cells import CP_DX
 
 
@@ -59,9 +60,8 @@ def constants(
 
 def state_length(n_modes: int, friction_id: int) -> int:
     """Length of the integrator's state with ``n_modes`` modes (partial slip: plus the cells of
-    both ends; last, the ends' own works)."""
-    cells = F.NE * F.NCS if friction_id == F.FR_PARTIAL else 0
-    return 6 + 2 * n_modes + F.NQUAD + cells + F.N_END_WORKS
+    both ends; last, the ends' own works): the compiled ``setup.state_size``, as Python."""
+    return int(state_size.py_func(n_modes, friction_id))
 
 
 def _array(a: Any, dtype: type = np.float64) -> np.ndarray:

@@ -19,6 +19,14 @@ from impactlab.dynamics.kernels.cells import CP_FTOL, CP_G1, CP_VTOL, N_CELLS
 
 
 @njit(cache=True, inline="always", error_model="numpy")
+def state_size(M, fric):
+    """Length of the state with M modes and friction model ``fric`` (layout module docstring:
+    partial slip adds the cells of both ends; last, the ends' own works)."""
+    cells = F.NE * F.NCS if fric == F.FR_PARTIAL else 0
+    return 6 + 2 * M + F.NQUAD + cells + F.N_END_WORKS
+
+
+@njit(cache=True, inline="always", error_model="numpy")
 def cell_scales(c, vn0, fscale, sc, o):
     """Partial slip: the cells' error scales (state from ``o``) and their parameters (as the
     slipcore's: G_1 = 4 G*, the slip-rate and force hystereses; the width is set in Python)."""
