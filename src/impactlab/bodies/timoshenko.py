@@ -39,22 +39,20 @@ def timoshenko_cutoff(sec: RodSection) -> float:
     return math.sqrt(kG * A / (rho * I))
 
 
-def _wavenumbers(sec: RodSection, om: float) -> tuple[int, float, float, float]:
-    """Roots of the Timoshenko dispersion relation for W = e^{lambda x}:
-    E I l^4 + l^2 (E I sig + rho I om^2) + sig (rho I om^2 - kGA) = 0, sig = rho om^2 / (kG).
-    Returns (kind, a, b, sig): kind 0 below the cut-off (l^2 = a^2 > 0 and -b^2), kind 1 above
-    (l^2 = -a^2, -b^2)."""
+def _wavenumbers(sec: RodSection, om: np.ndarray) -> tuple[np.ndarray, ...]:
+    """Roots of the Timoshenko dispersion relation for W = e^{lambda x} at the frequencies
+    ``om`` [rad/s]: E I l^4 + l^2 (E I sig + rho I om^2) + sig (rho I om^2 - kGA) = 0,
+    sig = rho om^2 / (kG). Returns (below, a, b, sig): below the cut-off (``below`` True)
+    l^2 = a^2 > 0 and -b^2, above it l^2 = -a^2 and -b^2."""
     rho, A, I, E, kG = _consts(sec)
     sig = rho * om * om / kG
     p = sig + rho * om * om / E
     q = sig * (rho * om * om / E - kG * A / (E * I))
-    disc = math.sqrt(p * p - 4.0 * q)
+    disc = np.sqrt(p * p - 4.0 * q)
     l2p = 0.5 * (-p + disc)
-    l2m = 0.5 * (-p - disc)
-    b = math.sqrt(-l2m)
-    if l2p > 0.0:
-        return 0, math.sqrt(l2p), b, sig
-    return 1, math.sqrt(-l2p), b, sig
+    b = np.sqrt(-(0.5 * (-p - disc)))
+    below = l2p > 0.0
+    return below, np.sqrt(np.where(below, l2p, -l2p)), b, sig
 
 
 def _oscillating(
@@ -80,7 +78,8 @@ def _basis(sec: RodSection, om: float, x: np.ndarray) -> tuple[np.ndarray, ...]:
     (rows: the 4 basis functions). Below the cut-off: cos bx, sin bx, e^{-ax}, e^{-a(L-x)};
     above: cos bx, sin bx, cos ax, sin ax."""
     L = sec.length
-    kind, a, b, sig = _wavenumbers(sec, om)
+    below, a_, b_, sig_ = _wavenumbers(sec, np.array([om]))
+    kind, a, b, sig = 0 if below[0] else 1, float(a_[0]), float(b_[0]), float(sig_[0])
     x = np.asarray(x, dtype=float)
     W = np.empty((4, *x.shape))
     rows = (W, np.empty_like(W), np.empty_like(W), np.empty_like(W))
@@ -135,15 +134,7 @@ def _boundaries(sec: RodSection, om: np.ndarray) -> np.ndarray:
     """The unscaled boundary matrices (frequencies, 4, 4) at the frequencies ``om`` [rad/s]:
     ``_wavenumbers`` and ``_basis`` at x = 0 and L, as array operations over the frequencies
     (the same operations, so one frequency's matrix is the same to the bit at any count)."""
-    rho, A, I, E, kG = _consts(sec)
-    sig = rho * om * om / kG
-    p = sig + rho * om * om / E
-    q = sig * (rho * om * om / E - kG * A / (E * I))
-    disc = np.sqrt(p * p - 4.0 * q)
-    l2p = 0.5 * (-p + disc)
-    b = np.sqrt(-(0.5 * (-p - disc)))
-    below = l2p > 0.0  # below the cut-off: e^{-ax}, e^{-a(L-x)}; above: cos ax, sin ax
-    a = np.sqrt(np.where(below, l2p, -l2p))
+    below, a, b, sig = _wavenumbers(sec, om)  # below the cut-off: e^{-ax}, e^{-a(L-x)}
     L = sec.length
     one, zero = np.ones_like(om), np.zeros_like(om)
     Mx = np.empty((om.shape[0], 4, 4))
@@ -206,7 +197,7 @@ def timoshenko_shape_fn(sec: RodSection, om: float) -> ShapeFn:
     coef = vt[-1] / np.where(scale > 0, scale, 1.0)
     L = sec.length
     rho, A, I, _E, _kg = _consts(sec)
-    sig = _wavenumbers(sec, om)[3]
+    sig = float(_wavenumbers(sec, np.array([om]))[3][0])
     x, w = gauss(L, 64)
     Wb, Pb, _dPb, _Gb = _basis(sec, om, x)
     norm2 = float(np.sum(w * (rho * A * (coef @ Wb) ** 2 + rho * I * (coef @ Pb) ** 2)))
