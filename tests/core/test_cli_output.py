@@ -266,10 +266,23 @@ def test_simulate_flexible_rod_is_the_drop() -> None:
     assert "flags" in rows and "delta_p" not in rows
 
 
+def test_simulate_flexible_rod_stop() -> None:
+    """``--stop flight`` follows the other end's impacts as ``simulate(..., stop="flight")``
+    does (the drop of ``impactlab drop --stop``)."""
+    body = FlexibleRod.paper(n_axial=1, n_bending=2)
+    ref = il.simulate(body, angle="20 deg", velocity=(0.0, -1.41), mu=0.2, history=False,
+                      stop="flight")  # fmt: skip
+    data = _json([*FLEX, "--stop", "flight"])
+    assert data["n_contacts"] == ref.n_contacts > _json(FLEX)["n_contacts"]
+    assert data["e"]["value"] == ref.e
+
+
 @pytest.mark.parametrize(
     ("args", "needle"),
     [
-        ([*ROD20, "--modes-axial", "3"], "--modes-axial: only the flexible rod has modes"),
+        ([*ROD20, "--modes-axial", "3"], "--modes-axial: only the flexible rod's drop has modes"),
+        ([*ROD20, "--stop", "flight"], "--stop: only the flexible rod's drop"),
+        ([*FLEX, "--stop", "landing"], "stop must be one of"),
         ([*ROD20, "--rate", "johnson-cook"], "--rate: only the flexible rod"),
         (["simulate", "sphere", "--vy", "-1 m/s", "--flexible"], "--flexible: a sphere has no"),
         ([*FLEX, "--inertia", "1 kg*m^2"], "--inertia: the flexible rod's inertia"),

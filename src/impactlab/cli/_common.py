@@ -137,6 +137,14 @@ KINEMATIC_HELP = {
 }
 
 
+#: What a drop follows (``simulate_drop(stop=...)``), shared by ``drop`` and ``simulate --flexible``.
+STOP_HELP = (
+    "What the drop follows: 'sequence' (default: the tip's impact, until the tip is clear until "
+    "the other end could land) or 'flight' (on through the other end's impacts until the rod "
+    "flies off)."
+)
+
+
 #: The rod's properties in a [rod] table or as options, with their SI units.
 ROD_FIELDS: dict[str, str] = {"mass": "kg", "length": "m", "tip_radius": "m", "inertia": "kg*m^2"}
 

@@ -26,6 +26,7 @@ from impactlab.cli._common import (
     LENGTH_HELP,
     RATE_CHOICES,
     SI_UNITS,
+    STOP_HELP,
     UserError,
     angle_quantity,
     emit,
@@ -233,9 +234,7 @@ def drop_cmd(
     stop: str = typer.Option(
         None,
         "--stop",
-        help="What the drop follows: 'sequence' (default: the tip's impact, until the tip is "
-        "clear until the other end could land) or 'flight' (on through the other end's "
-        "impacts until the rod flies off).",
+        help=STOP_HELP,
     ),
     from_file: Path = typer.Option(
         None,

@@ -23,6 +23,7 @@ from impactlab.cli._common import (
     KINEMATIC_HELP,
     LENGTH_HELP,
     RATE_CHOICES,
+    STOP_HELP,
     UserError,
     angle_quantity,
     load_toml,
@@ -67,11 +68,12 @@ _KEYS = (
     "modes_bending",
     "damping",
     "rate",
+    "stop",
 )
 #: Options of a rod that a sphere does not have.
 _ROD_ONLY = ("angle", "length", "inertia", "constant_angle", "diameter")
 #: Options of the flexible rod (``--flexible``) only.
-_FLEX_ONLY = ("modes_axial", "modes_bending", "damping", "rate")
+_FLEX_ONLY = ("modes_axial", "modes_bending", "damping", "rate", "stop")
 #: Options the flexible rod's drop does not have.
 _NOT_FLEX = ("inertia", "constant_angle", "law_params", "rtol")
 #: Command-line spelling of the keys whose option is not ``--<key>``.
@@ -159,7 +161,8 @@ def _body(opt: _Options) -> tuple[Rod | Sphere | FlexibleRod, float | None]:
         _refuse(
             opt,
             _FLEX_ONLY,
-            "only the flexible rod has modes or a rate-dependent flat (add --flexible)",
+            "only the flexible rod's drop has modes, a rate-dependent flat or a stop rule "
+            "(add --flexible)",
         )
     if kind == "sphere":
         _refuse(
@@ -215,7 +218,8 @@ def run_simulate(opt: _Options) -> ImpactResult | DropResult:
     }
     if isinstance(body, FlexibleRod):  # the drop: a DropResult
         rate = rate_name(str(cfg.get("rate", "none")), opt.label("rate"))
-        return simulate(body, angle=rod_angle, rate=rate, history=False, **common)
+        stop = str(cfg.get("stop", "sequence"))
+        return simulate(body, angle=rod_angle, rate=rate, stop=stop, history=False, **common)
     return simulate(
         body,
         angle=rod_angle,
@@ -258,6 +262,7 @@ _HELP = {
     "modes_bending": f"Flexible rod: bending modes (default {DEFAULT_N_BENDING}).",
     "damping": "Flexible rod: modal damping ratio zeta of every mode, in [0, 1) (default 0).",
     "rate": f"Flexible rod: rate-dependent flat, {', '.join(RATE_CHOICES)} (default none).",
+    "stop": f"Flexible rod: {STOP_HELP}",
 }
 
 
@@ -298,6 +303,7 @@ def simulate_cmd(
     modes_bending: int = _option("modes_bending"),
     damping: float = _option("damping"),
     rate: str = _option("rate"),
+    stop: str = _option("stop"),
     config: Path = typer.Option(
         None, "--config", help="TOML file of these keys (or a 'simulate' table); options win."
     ),
