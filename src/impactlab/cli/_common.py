@@ -137,7 +137,7 @@ KINEMATIC_HELP = {
 }
 
 
-#: What a drop follows (``simulate_drop(stop=...)``), shared by ``drop`` and ``simulate --flexible``.
+#: What a drop follows (``simulate_drop(stop=...)``), for ``drop`` and ``simulate --flexible``.
 STOP_HELP = (
     "What the drop follows: 'sequence' (default: the tip's impact, until the tip is clear until "
     "the other end could land) or 'flight' (on through the other end's impacts until the rod "
