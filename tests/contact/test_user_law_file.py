@@ -100,3 +100,23 @@ def test_bad_law_files_say_what_is_wrong(tmp_path: Path) -> None:
         read_law_file(_write_law(tmp_path, "hertz"))
     res = CliRunner().invoke(app, ["--law-file", str(tmp_path / "nowhere.toml"), "laws"])
     assert res.exit_code != 0 and "nowhere.toml" in str(res.exception)
+
+
+def test_a_json_result_of_a_law_file_reruns_where_the_law_is_unknown(
+    law_file: Path, tmp_path: Path
+) -> None:
+    """``simulate --json`` writes the law's data (its numbers as quantity objects); ``--from``
+    and ``rerun`` register the law from them where it is not registered (another process)."""
+    runner = CliRunner()
+    args = ["--angle", "40 deg", "--vy", "-1.4", "--mu", "0.2", "--law", NAME, "--json"]
+    res = runner.invoke(app, ["--law-file", str(law_file), "simulate", *args])
+    assert res.exit_code == 0, res.output
+    saved = tmp_path / "r.json"
+    saved.write_text(res.stdout)
+    e = json.loads(res.stdout)["e"]["value"]
+    unregister_law(NAME)
+    res = runner.invoke(app, ["simulate", "--from", str(saved), "--json"])
+    assert res.exit_code == 0, res.output
+    assert NAME in law_names() and json.loads(res.stdout)["e"]["value"] == e
+    unregister_law(NAME)
+    assert il.rerun(json.loads(saved.read_text())).e == e

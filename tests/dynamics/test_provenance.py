@@ -154,3 +154,32 @@ def test_a_built_contact_model_is_recorded_and_reruns() -> None:
     assert rec["law"]["type"] == "ContactModel" and rec["law"]["name"] == "hertz"
     again = il.rerun(rec)
     assert (again.e, again.delta_max) == (r.e, r.delta_max)
+
+
+def test_a_record_edited_in_other_units_reruns_in_si() -> None:
+    """A quantity object is read in the unit it names (a record edited by hand), converted to
+    the unit written for its key; a unit of another dimension, or none pint knows, is refused
+    with the key named."""
+    s = il.Sphere(radius=0.005, material=il.AISI_201)
+    r = il.simulate(s, ALU, law="thornton", law_params={"limit_pressure_ratio": 2.0},
+                    velocity=(0.3, -1.0), mu=0.2, history=False)  # fmt: skip
+    rec = json.loads(json.dumps(r.to_dict()))
+    rec["input"]["body"]["radius"] = {"value": 5, "unit": "mm"}
+    rec["input"]["velocity"] = {"value": [300, -1000], "unit": "mm/s"}
+    rec["input"]["angle"] = None
+    rec["input"]["flat"]["E"] = {"value": 68.9, "unit": "GPa"}
+    again = il.rerun(rec)
+    assert again.input["body"]["radius"]["value"] == pytest.approx(0.005, rel=1e-15)
+    assert again.velocity_in == pytest.approx((0.3, -1.0), rel=1e-15)
+    assert again.e == pytest.approx(r.e, rel=1e-12)
+    for field, bad, needle in (
+        ("radius", {"value": 5, "unit": "m/s"}, "'radius': the unit 'm/s' is not a unit of m"),
+        ("radius", {"value": 5, "unit": "furlongz"}, "'radius': cannot read the unit"),
+    ):
+        wrong = json.loads(json.dumps(rec))
+        wrong["input"]["body"][field] = bad
+        with pytest.raises(ValueError, match=needle):
+            il.rerun(wrong)
+    rec["input"]["law_params"]["limit_pressure_ratio"] = {"value": 2.0, "unit": "m"}
+    with pytest.raises(ValueError, match="'limit_pressure_ratio': the unit 'm' is not a unit of 1"):
+        il.rerun(rec)

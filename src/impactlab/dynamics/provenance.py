@@ -122,25 +122,60 @@ def encode(value: Any, key: str = "") -> Any:
     return value
 
 
-def decode(data: Any) -> Any:
-    """The Python values of :func:`encode`'s data: quantity objects to SI numbers (or lists),
-    ``{"type": ...}`` to the named class. ValueError for an unknown type."""
+def decode(data: Any, key: str = "", units: Mapping[str, str] | None = None) -> Any:
+    """The Python values of :func:`encode`'s data: quantity objects to numbers (or lists) in
+    the unit :func:`encode` writes for their key (``units``, default ``UNITS``; a field of
+    unknown unit in SI), converted from the unit the object names (a record edited by hand
+    may say ``{"value": 5, "unit": "mm"}``); ``{"type": ...}`` to the named class.
+    ValueError for an unknown type, an unknown unit or a unit of the wrong dimension."""
+    units = UNITS if units is None else units
     if isinstance(data, Mapping):
         if "value" in data and "unit" in data:
-            if "nonfinite" in data:
-                return float(data["nonfinite"])
-            v = data["value"]
-            return [float(x) for x in v] if isinstance(v, list) else v
+            return _quantity_value(data, key, units)
         if "type" in data:
             name = data["type"]
             cls = _TYPES.get(name)
             if cls is None:
                 raise ValueError(f"unknown type {name!r} in the record; known: {sorted(_TYPES)}")
-            return _build(cls, {k: decode(v) for k, v in data.items() if k != "type"})
-        return {k: decode(v) for k, v in data.items()}
+            fields = {k: decode(v, k) for k, v in data.items() if k != "type"}
+            return _build(cls, fields)
+        return {k: decode(v, k, units) for k, v in data.items()}
     if isinstance(data, list):
-        return [decode(v) for v in data]
+        return [decode(v, key, units) for v in data]
     return data
+
+
+def _quantity_value(data: Mapping[str, Any], key: str, units: Mapping[str, str]) -> Any:
+    """The number (or list) of a quantity object in the unit written for ``key``."""
+    if "nonfinite" in data:
+        return float(data["nonfinite"])
+    v = data["value"]
+    value = [float(x) for x in v] if isinstance(v, list) else v
+    unit, want = data["unit"], units.get(key, _UNKNOWN_UNIT)
+    if value is None or unit in (want, _UNKNOWN_UNIT):
+        return value
+    return _converted(value, unit, want, key)
+
+
+def _converted(value: Any, unit: Any, want: str, key: str) -> Any:
+    """``value`` [``unit``] in ``want`` (SI base units where ``want`` is not known)."""
+    import pint
+
+    from impactlab.units import registry
+
+    name = f"the record's {key!r}" if key else "a quantity of the record"
+    reg = registry()
+    try:
+        q = reg.Quantity(np.asarray(value, dtype=float), str(unit))
+        out = q.to_base_units() if want == _UNKNOWN_UNIT else q.to(want)
+    except pint.DimensionalityError:
+        raise ValueError(
+            f"{name}: the unit {unit!r} is not a unit of {want} (the value {value!r})"
+        ) from None
+    except Exception as exc:  # an unknown unit name: pint raises several types
+        raise ValueError(f"{name}: cannot read the unit {unit!r} ({exc})") from None
+    m = np.asarray(out.magnitude, dtype=float)
+    return [float(x) for x in m] if isinstance(value, list) else float(m)
 
 
 def _build(cls: type, values: dict[str, Any]) -> Any:
@@ -167,8 +202,13 @@ def _law_params(law: Any, given: Mapping[str, Any] | None) -> dict[str, Any] | N
     if not isinstance(law, str):
         return encode(dict(given))
     spec = get_law(law)
-    units = {q.name: ("1" if q.unit in ("-", "") else q.unit) for q in spec.parameters}
+    units = _param_units(law)
     return {k: _float(v, units[k]) for k, v in spec.parameter_values(given).items()}
+
+
+def _param_units(law: str) -> dict[str, str]:
+    """The units of a named law's parameters."""
+    return {q.name: ("1" if q.unit in ("-", "") else q.unit) for q in get_law(law).parameters}
 
 
 def input_record(
@@ -260,8 +300,15 @@ def from_record(record: Mapping[str, Any]) -> dict[str, Any]:
     if fmt != RECORD_FORMAT:
         raise ValueError(f"record format {fmt!r} is not supported (this impactlab reads 1)")
     if "law_data" in record:  # a user's law (register_law): registered here if need be
-        ensure_laws({str(record["law"]): record["law_data"]})
-    args = {k: decode(v) for k, v in record.items() if k not in _META and k != "law_data"}
+        # a --json output writes its numbers as quantity objects: back to numbers
+        ensure_laws({str(record["law"]): decode(record["law_data"])})
+    law = record["law"]
+    params = _param_units(law) if isinstance(law, str) else None
+    args = {
+        k: decode(v, k, params if k == "law_params" else None)
+        for k, v in record.items()
+        if k not in _META and k != "law_data"
+    }
     args["velocity"] = tuple(args["velocity"])
     return args
 
