@@ -18,6 +18,7 @@ __all__ = [
     "ADVISORY_FLAGS",
     "ENERGY_GAIN_RTOL_FACTOR",
     "ENERGY_ROUNDOFF",
+    "FLAG_BEYOND_TIP",
     "FLAG_ENERGY_GAIN",
     "FLAG_GRAVITY_DOMINATED",
     "FLAG_LAW_EXTRAPOLATED",
@@ -30,7 +31,8 @@ __all__ = [
 FLAG_ENERGY_GAIN = 1  #: bit of ``ResultFlag.ENERGY_GAIN`` (read by the compiled core)
 FLAG_GRAVITY_DOMINATED = 2  #: bit of ``ResultFlag.GRAVITY_DOMINATED``
 FLAG_LAW_EXTRAPOLATED = 4  #: bit of ``ResultFlag.LAW_EXTRAPOLATED`` (the law's verified range)
-FLAG_OTHER_END = 8  #: bit of ``ResultFlag.OTHER_END`` (the flexible drop only)
+FLAG_OTHER_END = 8  #: bit of ``ResultFlag.OTHER_END`` (a drop; a rigid rod's other end)
+FLAG_BEYOND_TIP = 16  #: bit of ``ResultFlag.BEYOND_TIP`` (a rigid rod's impact)
 #: Flags that caution rather than invalidate: the impact measures stay readable (``ok`` stays
 #: True). LAW_EXTRAPOLATED: the law is used beyond its (fitted, provisional or theoretical)
 #: range; its outputs stay finite but are not validated there.
@@ -69,8 +71,15 @@ class ResultFlag(enum.IntFlag):
     #: a drop (``simulate_drop``) whose sequence is not one bounce of the tip: the other end
     #: touched the flat within it (``stop="flight"``), or the tip still approaches the flat
     #: after its last contact (e < 0: the other end lands first); e, the duration and the mean
-    #: force then mix or cut the impacts
+    #: force then mix or cut the impacts. An impact of a rigid rod (``simulate``, the tip's
+    #: contact alone): the other end may have reached the flat during the contact (L sin theta
+    #: <= delta_max at the smaller of the angles at first touch and at separation)
     OTHER_END = FLAG_OTHER_END
+    #: an impact of a rigid rod whose largest interference exceeds R (1 - |cos theta|), the
+    #: depth at which the flat reaches the rim of the hemispherical tip (theta: the rod's
+    #: angle to the flat, the one of first touch or separation farther from 90 deg): the
+    #: contact is no longer a sphere's on a flat, which every contact law assumes
+    BEYOND_TIP = FLAG_BEYOND_TIP
 
 
 _MESSAGES: dict[ResultFlag, str] = {
@@ -90,7 +99,16 @@ _MESSAGES: dict[ResultFlag, str] = {
         "other end: the other end of the rod touched the flat within the sequence "
         "(stop='flight'), or the tip still approaches the flat after its last contact (e < 0: "
         "the other end lands before the tip leaves), so e, the duration and the mean force do "
-        "not describe one bounce of the tip; read the contacts one by one"
+        "not describe one bounce of the tip; read the contacts one by one (an impact of a "
+        "rigid rod, which follows the tip alone: its other end came within the interference "
+        "of the flat, L sin(angle) <= delta_max, so it may have struck; simulate_drop follows "
+        "both ends)"
+    ),
+    ResultFlag.BEYOND_TIP: (
+        "beyond the tip: the largest interference exceeds R (1 - |cos(angle)|), the depth at "
+        "which the flat reaches the rim of the rod's hemispherical tip at its angle to the "
+        "flat, so the contact is no longer that of a sphere on a flat, which the contact laws "
+        "describe; the outputs do not hold (raise the angle or lower the impact velocity)"
     ),
     ResultFlag.LAW_EXTRAPOLATED: (
         "law extrapolated: the largest interference exceeded {what}{how_far}, so {so}; the "

@@ -20,6 +20,7 @@ import numpy as np
 from impactlab._compile_notice import one_line
 from impactlab._validation import check_array
 from impactlab.bodies import NB
+from impactlab.bodies.layout import BP_HALF_LENGTH, BP_KIND, BP_RADIUS, KIND_ROD
 from impactlab.contact.kernels import N_LAWS, NPARAM, param_length
 from impactlab.contact.ranges import extrapolation_flags
 from impactlab.contact.tabulate import has_table, with_table
@@ -27,6 +28,7 @@ from impactlab.dynamics.core.batch import impact_batch
 from impactlab.dynamics.input_checks import check_rtol, gravity_value
 from impactlab.dynamics.kernels.layout import N_OUT, OUTPUT_FIELDS, PARTIAL_SLIP_RTOL
 from impactlab.dynamics.kernels.status import REGIME_NAMES, STATUS_MESSAGES
+from impactlab.dynamics.rod_reach import rod_reach_flags
 from impactlab.dynamics.slip_batch import prepass_address, slip_batch
 from impactlab.dynamics.slipcore import slip_addresses
 from impactlab.friction import BATCH_FRICTION_IDS, FRICTION_IDS, PARTIAL_SLIP, PARTIAL_SLIP_CELLS
@@ -135,6 +137,7 @@ def run_arrays(
                 prepass_address(),
             )  # fmt: skip
         _mark_extrapolated(lid, lp, out)
+        _mark_reach(bp, init, out)
     elif n:
         impact_batch(
             numba.get_num_threads(),
@@ -152,10 +155,12 @@ def run_arrays(
             status,
         )
         _mark_extrapolated(lid, lp, out)
+        _mark_reach(bp, init, out)
     return out, status
 
 
 _DMAX, _FLAGS = OUTPUT_FIELDS.index("delta_max"), OUTPUT_FIELDS.index("flags")
+_ANGLE_OUT = OUTPUT_FIELDS.index("angle_out")
 #: (law id, parameter bytes) -> the parameters with their table (the last few, for repeated
 #: batches of one law: a sweep's chunks, a benchmark's repeats).
 _TABLES: dict[tuple[int, bytes], np.ndarray] = {}
@@ -170,6 +175,19 @@ def shared_table(law_id: int, p: np.ndarray) -> np.ndarray:
             _TABLES.clear()
         hit = _TABLES[key] = with_table(law_id, p)
     return hit
+
+
+def _mark_reach(bp: np.ndarray, init: np.ndarray, out: np.ndarray) -> None:
+    """Add ``BEYOND_TIP`` and ``OTHER_END`` to the ``flags`` column of the rods' cases whose
+    tip or other end left the model's geometry (``rod_reach``; failed cases untouched)."""
+    rod = np.broadcast_to(bp[:, BP_KIND] == KIND_ROD, out.shape[:1])
+    done = np.isfinite(out[:, _FLAGS]) & rod
+    if not done.any():
+        return
+    bits = rod_reach_flags(
+        bp[:, BP_HALF_LENGTH], bp[:, BP_RADIUS], init[:, 0], out[:, _ANGLE_OUT], out[:, _DMAX]
+    )
+    out[done, _FLAGS] = out[done, _FLAGS].astype(np.int64) | np.broadcast_to(bits, done.shape)[done]
 
 
 def _mark_extrapolated(law_id: int, law_params: np.ndarray, out: np.ndarray) -> None:

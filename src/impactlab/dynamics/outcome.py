@@ -23,6 +23,7 @@ from impactlab.dynamics.kernels import layout as L
 from impactlab.dynamics.kernels import status as S
 from impactlab.dynamics.models import references_used
 from impactlab.dynamics.results import History, ImpactResult, assemble_result
+from impactlab.dynamics.rod_reach import rod_reach_bits
 from impactlab.flags import FLAG_LAW_EXTRAPOLATED, ResultFlag
 from impactlab.friction import FrictionModel
 from impactlab.references import Reference
@@ -109,14 +110,19 @@ def engine_result(
     angle: float,
     velocity: tuple[float, float],
     spin: float,
+    rod: tuple[float, float] | None = None,
 ) -> ImpactResult:
     """The ``ImpactResult`` of the output row ``out`` and the history rows (None: no history
     kept) of an impact with ``model`` and ``friction`` (``references``: the sources used), from
-    the checked inputs mu, angle [rad] (NaN for a sphere), velocity [m/s] and spin [rad/s]."""
+    the checked inputs mu, angle [rad] (NaN for a sphere), velocity [m/s] and spin [rad/s];
+    ``rod``: a rod's (L/2, R) [m], whose reach is checked (``rod_reach``; None: a sphere)."""
     (e, e_energy, vx, vy, spin_out, delta_max, delta_p, sliding_length, contact_travel,
      duration, mean_force, max_force, normal_impulse, tangential_impulse, energy_dissipated,
      stick_time, regime, vn_in, vt_in, vn_out, vt_out, angle_out, t_max, n_steps,
      flags) = _ROW(out.tolist())  # fmt: skip
+    bits = int(flags) | _law_flag(model, delta_max)
+    if rod is not None:
+        bits |= rod_reach_bits(rod[0], rod[1], angle, angle_out, delta_max)
     return assemble_result(
         {  # every ImpactResult field, in field order
             "e": e,
@@ -148,7 +154,7 @@ def engine_result(
             "angle_out": angle_out,
             "t_max": t_max,
             "n_steps": int(n_steps),
-            "flags": ResultFlag(int(flags) | _law_flag(model, delta_max)),
+            "flags": ResultFlag(bits),
             "history": None if history is None else History(history),
             "references": references,
             "_law_id": model.law_id,
@@ -171,4 +177,5 @@ def impact_result(x: ImpactInputs, out: np.ndarray, history: np.ndarray | None) 
         x.angle if isinstance(x.body, Rod) else math.nan,
         x.velocity,
         x.spin,
+        (x.body.half_length, x.body.tip_radius) if isinstance(x.body, Rod) else None,
     )

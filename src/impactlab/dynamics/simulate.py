@@ -251,7 +251,10 @@ def _fast(
     if status != S.ST_OK:
         raise status_error(int(status), model, vn=vn, gravity=g)
     hist = hist[:nh] if history else None
-    r = engine_result(out, hist, model, fric, refs_mu if m > 0.0 else refs, m, th_out, (vx, vy), w)
+    rod = (body.half_length, body.tip_radius) if kind is Rod else None
+    r = engine_result(
+        out, hist, model, fric, refs_mu if m > 0.0 else refs, m, th_out, (vx, vy), w, rod
+    )
     r.__dict__["_call"] = (body, flat, law, None, g, constant_angle, tol, None)  # as the full path
     return r
 
