@@ -99,6 +99,21 @@ def test_simulate_bad_input(override: dict, match: str) -> None:
         simulate(PAPER_ROD, **kw)
 
 
+@pytest.mark.parametrize(
+    ("angle", "match"),
+    [
+        (20.0, r"got 20.0 rad \(1145.92 deg\); if 20.0 is meant in degrees"),
+        (None, "angle is required"),
+        (math.nan, "angle must be finite"),
+    ],
+)
+def test_one_bad_angle_for_a_whole_batch_is_refused_as_by_simulate(angle, match) -> None:
+    """One angle for every case is checked as ``simulate`` checks it (an array of angles
+    keeps its per-case status)."""
+    with pytest.raises(ValueError, match=match):
+        simulate_batch(PAPER_ROD, angle=angle, vy=-1.41, mu=0.2)
+
+
 def test_spin_can_make_the_rod_recede() -> None:
     # v_n = vy - spin * (L/2) cos(angle) >= 0: the tip moves away although vy < 0
     with pytest.raises(ValueError, match="does not approach"):
