@@ -11,13 +11,18 @@ The one input rule of the Python API (:func:`check_finite` and everything built 
   registry, converted by ``impactlab.units.magnitude`` (dimension checked); a bare number string
   is refused (it names no unit);
 - flags are bools (:func:`check_flag`), seeds None or integers >= 0 (:func:`check_seed`).
+
+A user's text file (TOML, JSON, CSV) is read by :func:`read_text_file`: one ``ValueError`` line
+naming the file and the first byte that is not UTF-8 text.
 """
 
 from __future__ import annotations
 
 import math
+import os
 import sys
 import warnings
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -92,12 +97,28 @@ def check_finite(name: str, value: Any, unit: str = "") -> float:
     return x
 
 
+def _suffix(unit: str) -> str:
+    """The unit after a number in a message, ``" Pa"``; none for a dimensionless value (``""``,
+    ``"1"``)."""
+    return f" {unit}" if unit not in ("", "1") else ""
+
+
+def value_text(x: float, unit: str = "") -> str:
+    """``x`` as the shortest text that reads back as ``x`` (exponent form for |x| >= 1e6 or
+    < 1e-4) and its ``unit``, for messages: ``value_text(-69e9, "Pa") == "-6.9e+10 Pa"``."""
+    x = float(x)
+    if x == 0.0 or not math.isfinite(x) or 1e-4 <= abs(x) < 1e6:
+        text = repr(x)
+    else:
+        text = next(t for n in range(17) if float(t := f"{x:.{n}e}") == x)
+    return text + _suffix(unit)
+
+
 def check_positive(name: str, value: Any, unit: str = "") -> float:
     """Finite and > 0 (in ``unit``: :func:`check_finite`)."""
     x = check_finite(name, value, unit)
     if x <= 0.0:
-        u = f" {unit}" if unit else ""
-        raise ValueError(f"{name} must be > 0{u}, got {x!r}")
+        raise ValueError(f"{name} must be > 0{_suffix(unit)}, got {value_text(x, unit)}")
     return x
 
 
@@ -105,8 +126,7 @@ def check_nonnegative(name: str, value: Any, unit: str = "") -> float:
     """Finite and >= 0 (in ``unit``: :func:`check_finite`)."""
     x = check_finite(name, value, unit)
     if x < 0.0:
-        u = f" {unit}" if unit else ""
-        raise ValueError(f"{name} must be >= 0{u}, got {x!r}")
+        raise ValueError(f"{name} must be >= 0{_suffix(unit)}, got {value_text(x, unit)}")
     return x
 
 
@@ -127,7 +147,9 @@ def check_range(
     if not (lo_ok and hi_ok):
         lb = "[" if low_inclusive else "("
         hb = "]" if high_inclusive else ")"
-        raise ValueError(f"{name} must lie in {lb}{low}, {high}{hb}, got {x!r}")
+        raise ValueError(
+            f"{name} must lie in {lb}{low}, {high}{hb}{_suffix(unit)}, got {value_text(x, unit)}"
+        )
     return x
 
 
@@ -180,3 +202,19 @@ def check_array_finite(name: str, values: Any, unit: str = "") -> np.ndarray:
         idx = int(np.flatnonzero(bad.ravel())[0])
         raise ValueError(f"{name} must be finite; entry {idx} is {arr.ravel()[idx]!r}")
     return arr
+
+
+def read_text_file(path: str | os.PathLike[str], kind: str, what: str = "") -> str:
+    """The UTF-8 text of a user's file (a leading byte order mark dropped). ``kind`` is its
+    format (``"TOML"``, ``"JSON"``, ``"CSV"``), ``what`` how a message names it (``"--config
+    'a.toml'"``). ValueError, one line, when it is not UTF-8 text: ``"--config 'a.toml' is not a
+    text file (TOML is UTF-8 text; byte 1 is 0xff)"`` (``"not a text file (...)"`` without
+    ``what``). OSError (a missing or unreadable file) passes through."""
+    data = Path(path).read_bytes()
+    skip = 3 if data.startswith(b"\xef\xbb\xbf") else 0
+    try:
+        return data[skip:].decode("utf-8")
+    except UnicodeDecodeError as exc:
+        at = skip + exc.start
+        problem = f"not a text file ({kind} is UTF-8 text; byte {at} is 0x{data[at]:02x})"
+        raise ValueError(f"{what} is {problem}" if what else problem) from None

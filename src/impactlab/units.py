@@ -132,6 +132,14 @@ def _foreign(name: str, q: Any) -> Any:
         raise ValueError(f"{name}: cannot read the unit of {q!r} ({exc})") from None
 
 
+def _check_finite(name: str, q: Any, shown: Any) -> None:
+    """ValueError naming ``name`` when the number or Quantity ``q`` (of the text ``shown``) is
+    NaN or infinite: ``'nan'`` and ``'inf'`` are not values, with or without a unit."""
+    m = getattr(q, "magnitude", q)
+    if np.ndim(m) == 0 and not math.isfinite(float(m)):
+        raise ValueError(f"{name} must be finite, got {shown!r}")
+
+
 def magnitude(name: str, value: Any, unit: str) -> Any:
     """The magnitude of ``value`` in ``unit`` under the Python API's rule (module docstring).
 
@@ -146,6 +154,7 @@ def magnitude(name: str, value: Any, unit: str) -> Any:
     """
     if isinstance(value, str):
         q = _parse(name, value, unit)
+        _check_finite(name, q, value)
         if q.unitless:
             lead = _LEADING_NUMBER.fullmatch(value)
             bare = lead is not None and not lead.group(1).strip()
@@ -171,6 +180,7 @@ def to_si(value: Any, unit: str, *, name: str = "value") -> float:
         q = float(value) * target
     else:
         q = _parse(name, str(value), unit)
+        _check_finite(name, q, value)
         if q.unitless:
             lead = _LEADING_NUMBER.fullmatch(str(value))
             if lead is None or lead.group(1).strip():
@@ -189,7 +199,9 @@ def angle_to_rad(value: Any, *, name: str = "angle") -> float:
     """An angle written as text with its unit (``"20 deg"``, ``"0.35 rad"``) in radians. A bare
     number, written or not, is refused: it could be degrees or radians (the angle rule of
     docs/glossary.md; the Python API's bare numbers are radians, ``magnitude``)."""
-    if isinstance(value, int | float) or _parse(name, str(value), "deg").unitless:
+    q = None if isinstance(value, int | float) else _parse(name, str(value), "deg")
+    _check_finite(name, value if q is None else q, value)
+    if q is None or q.unitless:
         raise ValueError(
             f"{name} {str(value).strip()} has no unit: give a unit, e.g. '20 deg' or '0.35 rad'"
         )

@@ -4,6 +4,7 @@ some parameter values is a likelihood of zero with a count, not a crash."""
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 import pytest
@@ -39,6 +40,34 @@ MU = parse_parameter("mu", "uniform(0, 0.6)")
 )
 def test_bad_priors(name, spec, match):
     with pytest.raises(ValueError, match=match):
+        parse_parameter(name, spec)
+
+
+@pytest.mark.parametrize(
+    ("name", "spec", "message"),
+    [
+        (
+            "mu",
+            "uniform(-1,1)",
+            "prior of mu: [-1, 1] reaches outside the possible values [0, inf]",
+        ),
+        (
+            "flat_nu",
+            "uniform(0.1, 0.7)",
+            "prior of flat_nu: [0.1, 0.7] reaches outside the possible values [-1, 0.5]",
+        ),
+        (
+            "flat_yield_strength",
+            "uniform(-100 MPa, 1 GPa)",
+            "prior of flat_yield_strength: [-1e+08, 1e+09] Pa reaches outside the possible "
+            "values [0, inf] Pa",
+        ),
+    ],
+)
+def test_a_prior_outside_the_possible_values_gives_a_unit_only_where_there_is_one(
+    name, spec, message
+):
+    with pytest.raises(ValueError, match=f"^{re.escape(message)}$"):
         parse_parameter(name, spec)
 
 

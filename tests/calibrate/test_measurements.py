@@ -160,8 +160,8 @@ def test_measurements_file_that_is_not_utf8_names_the_file(tmp_path):
         (tmp_path / name).write_bytes(b"\x00\xff\xfe garbage")
         with pytest.raises(
             ValueError,
-            match=rf"{name}: not a text \((CSV|TOML)\) file: it is not "
-            "UTF-8 text",
+            match=rf"measurements file '.*{name}' is not a text file \((CSV|TOML) is UTF-8 "
+            r"text; byte 1 is 0xff\)$",
         ) as info:
             read_measurements(tmp_path / name)
         assert "\n" not in str(info.value)

@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import math
+import re
+from collections.abc import Callable
 
 import numpy as np
 import pint
@@ -13,8 +15,11 @@ from impactlab._validation import (
     check_array,
     check_finite,
     check_flag,
+    check_nonnegative,
     check_positive,
+    check_range,
     check_seed,
+    value_text,
     warn_implausible,
 )
 from impactlab.units import angle_to_rad, is_quantity, magnitude, to_si
@@ -51,6 +56,18 @@ def test_text_angles_carry_their_unit() -> None:
 def test_bad_quantities_name_the_input(bad: str) -> None:
     with pytest.raises(ValueError, match="radius"):
         to_si(bad, "m", name="radius")
+
+
+@pytest.mark.parametrize("text", ["nan", "inf", "-inf", " NaN ", "nan m/s"])
+def test_text_that_is_not_finite_is_said_to_be_so(text: str) -> None:
+    message = rf"^vy must be finite, got '{text}'$"
+    with pytest.raises(ValueError, match=message):
+        to_si(text, "m/s", name="vy")
+    with pytest.raises(ValueError, match=message):
+        magnitude("vy", text, "m/s")
+    if "m/s" not in text:
+        with pytest.raises(ValueError, match=rf"^angle must be finite, got '{text}'$"):
+            angle_to_rad(text)
 
 
 # -- the Python API's input rule (impactlab.units.magnitude + impactlab._validation) -------------
@@ -130,6 +147,32 @@ def test_the_number_rule_accepts_real_numbers() -> None:
     assert check_finite("mu", 0.2 * pint.UnitRegistry().dimensionless) == pytest.approx(0.2)
     assert check_positive("length", "30.48 cm", "m") == pytest.approx(0.3048)
     assert check_positive("length", 0.3048, "m") == 0.3048
+
+
+@pytest.mark.parametrize(
+    ("check", "value", "unit", "message"),
+    [
+        (check_positive, -69e9, "Pa", "E must be > 0 Pa, got -6.9e+10 Pa"),
+        (check_positive, "-8.8 mm", "m", "E must be > 0 m, got -0.0088 m"),
+        (check_positive, 0, "", "E must be > 0, got 0.0"),
+        (check_nonnegative, -2.5e-7, "s", "E must be >= 0 s, got -2.5e-07 s"),
+        (check_nonnegative, -1234567.0, "1", "E must be >= 0, got -1.234567e+06"),
+    ],
+)
+def test_a_value_out_of_range_is_given_with_its_unit(
+    check: Callable[..., float], value: object, unit: str, message: str
+) -> None:
+    with pytest.raises(ValueError, match=f"^{re.escape(message)}$"):
+        check("E", value, unit)
+
+
+def test_value_text_reads_back_as_the_value() -> None:
+    for x in (-69e9, 2700.0, 0.3, 1e-7, 123456789.123, -0.0, 1 / 3 * 1e-9):
+        text = value_text(x)
+        assert float(text) == x and ("e" in text) == (x != 0 and not 1e-4 <= abs(x) < 1e6)
+    assert value_text(2.76e8, "Pa") == "2.76e+08 Pa" and value_text(0.5, "1") == "0.5"
+    with pytest.raises(ValueError, match=r"must lie in \[0.0, 1.0\] rad, got 2.0 rad$"):
+        check_range("angle", 2.0, 0.0, 1.0, unit="rad")
 
 
 def test_arrays_flags_and_seeds() -> None:

@@ -23,6 +23,7 @@ import tomllib
 from pathlib import Path
 from typing import Any
 
+from impactlab._validation import read_text_file
 from impactlab.calibrate.api import parse_model
 from impactlab.calibrate.priors import parse_parameter
 
@@ -36,12 +37,12 @@ _ENGINE = {"gravity", "rtol"}
 def load_config(path: str | Path) -> dict[str, Any]:
     """The keyword arguments of ``calibrate`` from a calibration file: measurements (a path),
     parameters, models and the sampler's and engine's settings. ValueError naming an unknown
-    key."""
+    key, or the file when it is not UTF-8 text or not TOML."""
     p = Path(path)
     if not p.is_file():
         raise FileNotFoundError(f"calibration file not found: {p}")
     try:
-        doc = tomllib.loads(p.read_text())
+        doc = tomllib.loads(read_text_file(p, "TOML", f"calibration file {str(p)!r}"))
     except tomllib.TOMLDecodeError as exc:
         raise ValueError(f"{p}: not valid TOML ({exc})") from None
     unknown = set(doc) - _TOP

@@ -6,16 +6,15 @@ from __future__ import annotations
 import csv
 from pathlib import Path
 
+from impactlab._validation import read_text_file
+
 __all__ = ["csv_records", "read_text"]
 
 
 def read_text(path: Path, kind: str) -> str:
-    """The UTF-8 text of ``path`` (a byte order mark is dropped); ValueError naming the file
-    when it is not UTF-8 text (``kind``: ``"CSV"``, ``"TOML"``, for the message)."""
-    try:
-        return path.read_text(encoding="utf-8-sig")
-    except UnicodeDecodeError:
-        raise ValueError(f"{path}: not a text ({kind}) file: it is not UTF-8 text") from None
+    """The UTF-8 text of the measurements file ``path`` (``kind``: ``"CSV"``, ``"TOML"``);
+    ValueError naming it when it is not UTF-8 text (``impactlab._validation.read_text_file``)."""
+    return read_text_file(path, kind, f"measurements file {str(path)!r}")
 
 
 def csv_records(path: Path) -> list[dict[str, str]]:

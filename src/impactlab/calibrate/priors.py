@@ -87,13 +87,14 @@ class Parameter:
                 f"prior of {self.name} excludes every value: [{self.low:g}, {self.high:g}] is "
                 "empty (low must be < high)"
             )
+        u = "" if self.unit in ("", "1") else f" {self.unit}"
         if self.low < lo or self.high > hi or (self.high <= lo) or (self.low >= hi):
             raise ValueError(
-                f"prior of {self.name}: [{self.low:g}, {self.high:g}] {self.unit} reaches outside "
-                f"the possible values [{lo:g}, {hi:g}]"
+                f"prior of {self.name}: [{self.low:g}, {self.high:g}]{u} reaches outside "
+                f"the possible values [{lo:g}, {hi:g}]{u}"
             )
         if self.kind == "loguniform" and self.low <= 0:
-            raise ValueError(f"prior of {self.name}: loguniform needs low > 0, got {self.low:g}")
+            raise ValueError(f"prior of {self.name}: loguniform needs low > 0, got {self.low:g}{u}")
         if (
             self.kind == "normal"
             and stats.norm(self.mean, self.sd).cdf(self.high)

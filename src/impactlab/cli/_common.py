@@ -16,6 +16,7 @@ from rich.text import Text
 
 from impactlab._display import field_rows
 from impactlab._json import to_json
+from impactlab._validation import read_text_file
 from impactlab.contact.rate import RATE_LAWS
 from impactlab.dynamics.kernels.inputs import angle_allowed, incidence_allowed
 from impactlab.schema import FIELDS
@@ -70,9 +71,11 @@ def any_angle(value: Any, name: str) -> float:
     refused: 0.35 could be degrees or radians (the angle rule, docs/glossary.md)."""
     text = str(value).strip()
     try:
-        float(text)
+        x = float(text)
     except ValueError:
         return angle_to_rad(text, name=name)
+    if not math.isfinite(x):
+        raise UserError(f"{name} must be finite, got {text!r}")
     raise UserError(f"{name} {text} has no unit: give a unit, e.g. '20 deg' or '0.35 rad'")
 
 
@@ -183,7 +186,7 @@ def parse_rod_table(table: Mapping[str, Any], prefix: str) -> dict[str, float]:
 
 def load_toml(path: Path | None, option: str = "input file") -> dict[str, Any]:
     """Read a TOML input file (empty dict for None); a UserError naming ``option`` (``--file``)
-    and the path when it is missing, a folder, unreadable or not valid TOML."""
+    and the path when it is missing, a folder, unreadable, not UTF-8 text or not valid TOML."""
     if path is None:
         return {}
     shown = f"{option} {str(path)!r}"
@@ -192,10 +195,11 @@ def load_toml(path: Path | None, option: str = "input file") -> dict[str, Any]:
     if not path.is_file():
         raise UserError(f"{shown} does not exist")
     try:
-        with path.open("rb") as fh:
-            return tomllib.load(fh)
+        return tomllib.loads(read_text_file(path, "TOML", shown))
     except tomllib.TOMLDecodeError as exc:
         raise UserError(f"{shown} is not valid TOML: {exc}") from None
+    except ValueError as exc:  # not UTF-8 text
+        raise UserError(str(exc)) from None
     except OSError as exc:
         raise UserError(f"{shown} cannot be read ({exc.strerror or exc})") from None
 

@@ -43,7 +43,8 @@ def _parameters(specs: list[str]) -> dict[str, str]:
 
 
 def _progress(quiet: bool) -> tuple[Any, Any]:
-    """(progress callback, the rich Progress to stop) on stderr, or (None, None)."""
+    """(progress callback, the rich Progress to stop) on stderr, or (None, None). The bar
+    starts with the first report: an input error before it is one line, without a blank one."""
     if quiet:
         return None, None
     from rich.console import Console
@@ -58,9 +59,10 @@ def _progress(quiet: bool) -> tuple[Any, Any]:
         transient=True,
     )
     tasks: dict[str, Any] = {}
-    bar.start()
 
     def report(model: str, done: int, total: int) -> None:
+        if not tasks:
+            bar.start()
         if model not in tasks:
             tasks[model] = bar.add_task(model, total=total)
         bar.update(tasks[model], completed=done)
@@ -160,7 +162,7 @@ def calibrate_cmd(
     try:
         cal = calibrate(progress=report, **kw)
     finally:
-        if bar is not None:
+        if bar is not None and bar.live.is_started:  # stop() prints a line on its own
             bar.stop()
     files = save(cal, out) if out is not None else {}
     if as_json:

@@ -20,6 +20,7 @@ from typing import Any
 import typer
 
 from impactlab._display import field_row, format_value
+from impactlab._validation import read_text_file
 from impactlab.cli._common import SI_UNITS, UserError, console, positive, print_rows, quantity
 from impactlab.materials import Material, get_material
 
@@ -61,20 +62,23 @@ def read_hardening(path: Path) -> list[tuple[float, float]]:
     (a header line is skipped)."""
     if not path.is_file():
         raise FileNotFoundError(f"--hardening file not found: {path}")
+    try:
+        text = read_text_file(path, "CSV", f"--hardening {str(path)!r}")
+    except ValueError as exc:  # not UTF-8 text
+        raise UserError(str(exc)) from None
     rows: list[tuple[float, float]] = []
-    with path.open(newline="") as fh:
-        for i, row in enumerate(csv.reader(fh)):
-            if not row or not "".join(row).strip():
-                continue
-            try:
-                rows.append((float(row[0]), float(row[1])))
-            except (ValueError, IndexError):
-                if i == 0:
-                    continue  # header
-                raise UserError(
-                    f"--hardening {path}: line {i + 1} must be 'stress_Pa, plastic_strain', "
-                    f"got {','.join(row)!r}"
-                ) from None
+    for i, row in enumerate(csv.reader(text.splitlines())):
+        if not row or not "".join(row).strip():
+            continue
+        try:
+            rows.append((float(row[0]), float(row[1])))
+        except (ValueError, IndexError):
+            if i == 0:
+                continue  # header
+            raise UserError(
+                f"--hardening {path}: line {i + 1} must be 'stress_Pa, plastic_strain', "
+                f"got {','.join(row)!r}"
+            ) from None
     return rows
 
 

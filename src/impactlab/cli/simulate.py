@@ -354,7 +354,7 @@ def simulate_cmd(
             result = run_from(from_file, cli)
             if plot and isinstance(result, DropResult):
                 raise UserError("--plot: the flexible rod's drop has no figures here; leave it out")
-        opt = _merge(load_toml(config), cli, config)
+        opt = _merge(load_toml(config, "--config"), cli, config)
         if plot and opt.given("flexible"):
             raise UserError("--plot: the flexible rod's drop has no figures here; leave it out")
         folder = None

@@ -18,6 +18,7 @@ from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import Any
 
+from impactlab._validation import read_text_file
 from impactlab.cli._common import UserError, angle_quantity, quantity, rate_name, velocity_input
 from impactlab.dynamics import ImpactResult
 from impactlab.dynamics.drop_result import DropResult
@@ -55,14 +56,17 @@ FROM_BODY_OPTIONS = (
 
 
 def load_record(path: Path) -> dict[str, Any]:
-    """The JSON object in ``path``; UserError when it cannot be read or holds no object."""
+    """The JSON object in ``path``; UserError when it cannot be read, is not UTF-8 text or
+    holds no object."""
     try:
-        record = json.loads(path.read_text())
+        record = json.loads(read_text_file(path, "JSON", f"--from {str(path)!r}"))
     except OSError as exc:
         raise UserError(f"--from: cannot read {str(path)!r}: {exc.strerror}") from None
     except json.JSONDecodeError as exc:
         why = f"{exc.msg}, line {exc.lineno}"
         raise UserError(f"--from: {str(path)!r} is not JSON ({why})") from None
+    except ValueError as exc:  # not UTF-8 text
+        raise UserError(str(exc)) from None
     if not isinstance(record, dict):
         raise UserError(f"--from: {str(path)!r} holds no result (a JSON object is needed)")
     return record

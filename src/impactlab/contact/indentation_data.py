@@ -20,7 +20,7 @@ from typing import Any
 
 import numpy as np
 
-from impactlab._validation import check_positive
+from impactlab._validation import check_positive, read_text_file
 from impactlab.contact._common import jg_critical
 from impactlab.materials import ContactPair
 
@@ -230,10 +230,11 @@ class IndentationCurves:
 def read_two_columns(path: Path, where: str, names: str) -> list[np.ndarray]:
     """The two columns (``names``, for the messages) of the comma-separated file ``path``: one
     header line, then one row of two numbers per line (blank lines and ``#`` comments
-    skipped). ValueError starting with ``where`` for a file that is missing, a folder, empty,
-    without data rows, or with a row of another width or a text that is not a number."""
+    skipped). ValueError starting with ``where`` for a file that is missing, a folder, not UTF-8
+    text, empty, without data rows, or with a row of another width or a text that is not a
+    number."""
     try:
-        text = path.read_text(encoding="utf-8", errors="replace")
+        text = read_text_file(path, "CSV", where)
     except OSError as exc:
         if path.is_dir():
             why = "is a folder, not a CSV file"
@@ -295,8 +296,9 @@ def curves_file_record(curves: list[IndentationCurves]) -> dict[str, Any]:
 
 
 def read_curves(path: str | Path) -> tuple[IndentationCurves, ...]:
-    """Every curve set in the curves file ``path`` (ValueError for another format)."""
-    record = json.loads(Path(path).read_text())
+    """Every curve set in the curves file ``path`` (ValueError for another format or a file
+    that is not UTF-8 text)."""
+    record = json.loads(read_text_file(path, "JSON", f"curves file {str(path)!r}"))
     if record.get("format") != FORMAT or record.get("version") != FORMAT_VERSION:
         raise ValueError(
             f"{str(path)!r} is not an indentation curves file of version {FORMAT_VERSION}"

@@ -22,7 +22,7 @@ import tomllib
 from pathlib import Path
 from typing import Any
 
-from impactlab._validation import check_positive
+from impactlab._validation import check_positive, read_text_file
 from impactlab.contact.indentation_data import IndentationCurves
 from impactlab.contact.registered import RegisteredLaw
 from impactlab.contact.registry import register_law
@@ -35,13 +35,12 @@ OPTIONAL_KEYS = ("title", "source")
 
 def read_law_file(path: str | Path) -> RegisteredLaw:
     """Register the law of the law file ``path`` (module docstring) and return it.
-    ValueError naming the file and the key for a missing file, bad TOML, an unknown or missing
-    key, or bad data."""
+    ValueError naming the file and the key for a missing file, one that is not UTF-8 text, bad
+    TOML, an unknown or missing key, or bad data."""
     where = str(path)
     p = Path(path)
     try:
-        with p.open("rb") as fh:
-            data: dict[str, Any] = tomllib.load(fh)
+        data: dict[str, Any] = tomllib.loads(read_text_file(p, "TOML", f"law file {where!r}"))
     except OSError as exc:
         raise ValueError(f"law file {where!r}: {exc.strerror or exc}") from None
     except tomllib.TOMLDecodeError as exc:

@@ -11,7 +11,7 @@ import sys
 from dataclasses import dataclass, field
 
 from impactlab._html import dataclass_html, dataclass_rows
-from impactlab._validation import check_finite, check_positive, check_range
+from impactlab._validation import check_finite, check_positive, check_range, value_text
 
 #: Standard gravity [m/s^2], used to convert kgf to N.
 G0 = 9.80665
@@ -103,8 +103,8 @@ class Material:
         object.__setattr__(self, "meyer_index", n)
         if self.yield_strength >= self.E:
             raise ValueError(
-                f"yield_strength ({self.yield_strength!r} Pa) must be smaller than E "
-                f"({self.E!r} Pa); check the units"
+                f"yield_strength ({value_text(self.yield_strength, 'Pa')}) must be smaller than "
+                f"E ({value_text(self.E, 'Pa')}); check the units"
             )
         self._relabel_if_changed()
 

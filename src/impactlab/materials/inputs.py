@@ -25,6 +25,7 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
+from impactlab._validation import read_text_file
 from impactlab.materials.core import Material, brinell_to_pa
 from impactlab.materials.library import ALIASES, PRESETS
 from impactlab.units import to_si
@@ -148,10 +149,10 @@ def parse_values(text: str, where: str = "material") -> dict[str, str]:
 
 
 def from_file(path: Path, where: str = "material") -> Material:
-    """A material from a TOML file (the table at top level or under ``[material]``)."""
+    """A material from a TOML file (the table at top level or under ``[material]``); ValueError
+    naming ``where`` and the file when it cannot be read, is not UTF-8 text or not TOML."""
     try:
-        with path.open("rb") as fh:
-            data = tomllib.load(fh)
+        data = tomllib.loads(read_text_file(path, "TOML", f"{where}: {str(path)!r}"))
     except OSError as exc:
         raise ValueError(f"{where}: cannot read {str(path)!r}: {exc.strerror or exc}") from None
     except tomllib.TOMLDecodeError as exc:

@@ -18,6 +18,7 @@ from typing import Any
 
 import numpy as np
 
+from impactlab._validation import read_text_file
 from impactlab.contact.law_file import read_law_file
 from impactlab.sweep.dimensions import Axis, Sample, Value
 from impactlab.sweep.distributions import (
@@ -62,12 +63,9 @@ def read_study_file(path: str | Path) -> tuple[dict[str, Any], str]:
     if not p.is_file():
         raise ValueError(f"study file {str(p)!r} does not exist")
     try:
-        text = p.read_bytes().decode("utf-8")
-    except UnicodeDecodeError as exc:
-        raise ValueError(
-            f"study file {str(p)!r} is not a text file (TOML is UTF-8 text; byte "
-            f"{exc.start} is 0x{exc.object[exc.start]:02x}): give the study file (TOML)"
-        ) from None
+        text = read_text_file(p, "TOML", f"study file {str(p)!r}")
+    except ValueError as exc:
+        raise ValueError(f"{exc}: give the study file (TOML)") from None
     except OSError as exc:
         raise ValueError(f"cannot read study file {str(p)!r}: {exc.strerror or exc}") from None
     try:

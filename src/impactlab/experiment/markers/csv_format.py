@@ -20,6 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
+from impactlab._validation import read_text_file
 from impactlab.experiment.checks import check_instance, check_path
 from impactlab.experiment.errors import FileFormatError
 from impactlab.experiment.markers.tracks import MarkerTracks, length_factor
@@ -159,9 +160,9 @@ def read_csv_markers(
     if not p.is_file():
         raise FileFormatError(p, "file does not exist" if not p.exists() else "not a file")
     try:
-        text = p.read_text(encoding="utf-8-sig")
-    except UnicodeDecodeError:
-        raise FileFormatError(p, "not a text (CSV) file: it is not UTF-8 text") from None
+        text = read_text_file(p, "CSV")
+    except ValueError as exc:  # not UTF-8 text
+        raise FileFormatError(p, str(exc)) from None
     meta, rows = split_commented(text)
     if not rows:
         raise FileFormatError(p, "no header and no data rows")

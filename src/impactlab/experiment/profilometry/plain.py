@@ -9,6 +9,7 @@ from typing import Any
 
 import numpy as np
 
+from impactlab._validation import read_text_file
 from impactlab.experiment.errors import FileFormatError
 from impactlab.experiment.markers import length_factor
 from impactlab.experiment.profilometry.heightmap import HeightMap, pixel_pair
@@ -42,9 +43,9 @@ def _load_text(p: Path) -> tuple[np.ndarray, dict[str, str]]:
     """(heights in the file's unit, the '# key: value' header) of a CSV/text matrix; comma,
     semicolon or blank separated, empty cells (or nan, bad, na) are no data."""
     try:
-        text = p.read_text(encoding="utf-8-sig")
-    except UnicodeDecodeError:
-        raise FileFormatError(p, "not a text (CSV) height map: it is not UTF-8 text") from None
+        text = read_text_file(p, "CSV")
+    except ValueError as exc:  # not UTF-8 text
+        raise FileFormatError(p, str(exc)) from None
     rows: list[list[float]] = []
     header, lines = split_commented(text)
     for ln, line in lines:
