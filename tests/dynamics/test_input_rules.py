@@ -126,7 +126,9 @@ def test_the_compiled_core_and_python_apply_one_rule(
 ) -> None:
     case = (angle, vx, -1.2, spin, mu, 9.80665, 1e-7)
     code = problem(case)
-    batch = simulate_batch(PAPER_ROD, angle=angle, vx=vx, vy=-1.2, spin=spin, mu=mu)
+    # an array of angles: the compiled core's status per case (one angle alone is checked by
+    # Python first, as simulate checks it)
+    batch = simulate_batch(PAPER_ROD, angle=[angle], vx=vx, vy=-1.2, spin=spin, mu=mu)
     status = int(batch.status[0])
     if code == I.IN_OK:
         assert status not in (ST_BAD_INPUT, ST_BAD_ANGLE)
