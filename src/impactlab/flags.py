@@ -32,7 +32,7 @@ FLAG_ENERGY_GAIN = 1  #: bit of ``ResultFlag.ENERGY_GAIN`` (read by the compiled
 FLAG_GRAVITY_DOMINATED = 2  #: bit of ``ResultFlag.GRAVITY_DOMINATED``
 FLAG_LAW_EXTRAPOLATED = 4  #: bit of ``ResultFlag.LAW_EXTRAPOLATED`` (the law's verified range)
 FLAG_OTHER_END = 8  #: bit of ``ResultFlag.OTHER_END`` (a drop; a rigid rod's other end)
-FLAG_BEYOND_TIP = 16  #: bit of ``ResultFlag.BEYOND_TIP`` (a rigid rod's impact)
+FLAG_BEYOND_TIP = 16  #: bit of ``ResultFlag.BEYOND_TIP`` (a rod's impact or drop)
 #: Flags that caution rather than invalidate: the impact measures stay readable (``ok`` stays
 #: True). LAW_EXTRAPOLATED: the law is used beyond its (fitted, provisional or theoretical)
 #: range; its outputs stay finite but are not validated there.
@@ -75,10 +75,10 @@ class ResultFlag(enum.IntFlag):
     #: contact alone): the other end may have reached the flat during the contact (L sin theta
     #: <= delta_max at the smaller of the angles at first touch and at separation)
     OTHER_END = FLAG_OTHER_END
-    #: an impact of a rigid rod whose largest interference exceeds R (1 - |cos theta|), the
-    #: depth at which the flat reaches the rim of the hemispherical tip (theta: the rod's
-    #: angle to the flat, the one of first touch or separation farther from 90 deg): the
-    #: contact is no longer a sphere's on a flat, which every contact law assumes
+    #: a rod's impact (or a contact of a drop) whose largest interference exceeds
+    #: R (1 - |cos theta|), the depth at which the flat reaches the rim of the hemispherical
+    #: end (theta: the rod's angle to the flat, the one of touch or separation farther from
+    #: 90 deg): the contact is no longer a sphere's on a flat, which every contact law assumes
     BEYOND_TIP = FLAG_BEYOND_TIP
 
 
@@ -106,9 +106,10 @@ _MESSAGES: dict[ResultFlag, str] = {
     ),
     ResultFlag.BEYOND_TIP: (
         "beyond the tip: the largest interference exceeds R (1 - |cos(angle)|), the depth at "
-        "which the flat reaches the rim of the rod's hemispherical tip at its angle to the "
-        "flat, so the contact is no longer that of a sphere on a flat, which the contact laws "
-        "describe; the outputs do not hold (raise the angle or lower the impact velocity)"
+        "which the flat reaches the rim of the rod's hemispherical end at its angle to the "
+        "flat (in a drop: in one of its contacts), so the contact is no longer that of a "
+        "sphere on a flat, which the contact laws describe; the outputs do not hold (raise the "
+        "angle or lower the impact velocity)"
     ),
     ResultFlag.LAW_EXTRAPOLATED: (
         "law extrapolated: the largest interference exceeded {what}{how_far}, so {so}; the "

@@ -91,3 +91,19 @@ def test_the_command_line_warns() -> None:
     )
     assert res.exit_code == 0, res.output
     assert "beyond the tip" in res.output and "beyond_tip" in res.output
+
+
+@pytest.mark.parametrize("body", [ROD, il.FlexibleRod.paper(n_axial=1, n_bending=2)])
+def test_a_drop_marks_a_contact_beyond_the_rim(body: il.Rod | il.FlexibleRod) -> None:
+    """A drop checks every contact's interference against the rim of its end at the rod's
+    angle (its contacts' angles at touch and separation): at 5 deg the tip's first contact
+    (40-73 um) passes the rim (33.5 um), at 20 deg (rim 531 um) none does; the batch of drops
+    carries the same bits."""
+    for deg, beyond in ((5.0, True), (20.0, False)):
+        r = il.simulate_drop(body, angle=math.radians(deg), velocity=(0.0, -1.41), mu=0.2,
+                             history=False)  # fmt: skip
+        assert (ResultFlag.BEYOND_TIP in r.flags) == beyond
+        assert not r.ok if beyond else r.ok
+        if isinstance(body, il.FlexibleRod):
+            b = il.simulate_drops(body, angle=math.radians(deg), vy=[-1.41], mu=0.2)
+            assert int(b.flags[0]) == int(r.flags)

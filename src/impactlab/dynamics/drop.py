@@ -239,7 +239,9 @@ def _result(
         rate_factor=rate[1].k if rate[1] is not None else 1.0,
         strain_rate=rate[1].strain_rate if rate[1] is not None else math.nan,
         history=DropHistory(r.history) if r.history is not None else None,
-        flags=drop_flags(r.out, e0, m, inputs["gravity"], rtol, model, r.contacts),
+        flags=drop_flags(
+            r.out, e0, m, inputs["gravity"], rtol, model, r.contacts, bm.rigid.tip_radius
+        ),
         max_delta_ratio=ratio,
         fitted_delta_ratio_max=ratio_max,
         fitted_range_status=range_status(model.law_id, model.params),

@@ -95,6 +95,7 @@ def drop_flags(
     rtol: float,
     model: ContactModel,
     contacts: np.ndarray,
+    radius: float,
 ) -> ResultFlag:
     """The result flags of a finished sequence (docs/flexible.md, "Flags") from its output
     vector ``out`` (``layout.DROP_FIELDS``) and its contact table: the rigid engine's criteria
@@ -104,9 +105,10 @@ def drop_flags(
     law's (verified) range (``contact.ranges.law_extrapolated``) on the largest
     interference of the sequence; OTHER_END, unless gravity dominates (the rod rests or rocks:
     that flag says it), when the other end touched the flat or the tip still approaches it
-    after the last contact (e < 0). The compiled part (``flexcore.batch.sequence_flags``) is
-    the one ``simulate_drops`` runs."""
-    bits = sequence_flags(out, e0, m, g, rtol, contacts, contacts.shape[0])
+    after the last contact (e < 0); BEYOND_TIP when the flat reached the rim of an end's
+    hemisphere (``radius`` [m]) in a contact (``kernels.quality.beyond_rim``). The compiled
+    part (``flexcore.batch.sequence_flags``) is the one ``simulate_drops`` runs."""
+    bits = sequence_flags(out, e0, m, g, rtol, contacts, contacts.shape[0], radius)
     flags = ResultFlag(int(bits))
     if law_extrapolated(model, float(out[F.O_DELTA_MAX])):
         flags |= ResultFlag.LAW_EXTRAPOLATED

@@ -25,7 +25,11 @@ from typing import Any
 
 import numpy as np
 
+from impactlab.dynamics.kernels.quality import beyond_rim
 from impactlab.flags import FLAG_BEYOND_TIP, FLAG_OTHER_END
+
+#: The compiled engines' rim criterion as plain Python (the same comparison).
+_beyond_rim = beyond_rim.py_func
 
 __all__ = ["rod_reach_bits", "rod_reach_flags"]
 
@@ -37,9 +41,8 @@ def rod_reach_bits(
     ``radius`` R [m], the angles to the flat at first touch and at separation [rad] and the
     largest interference [m] (``rod_reach_flags`` for arrays, the same comparisons); 0 where
     an input is NaN."""
-    cos_far = max(abs(math.cos(angle)), abs(math.cos(angle_out)))
     sin_low = min(math.sin(angle), math.sin(angle_out))
-    bits = FLAG_BEYOND_TIP if delta_max > radius * (1.0 - cos_far) else 0
+    bits = FLAG_BEYOND_TIP if _beyond_rim(radius, angle, angle_out, delta_max) else 0
     if 2.0 * half_length * sin_low <= delta_max:
         bits |= FLAG_OTHER_END
     return bits

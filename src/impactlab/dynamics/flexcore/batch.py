@@ -42,10 +42,11 @@ from impactlab.dynamics.flexcore.setup import state_size
 from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.address_call import compiled_addresses
 from impactlab.dynamics.kernels.cells import CP_DX, N_CELLS
-from impactlab.dynamics.kernels.quality import energy_gained, gravity_dominated
+from impactlab.dynamics.kernels.quality import beyond_rim, energy_gained, gravity_dominated
 from impactlab.flags import (
     ENERGY_GAIN_RTOL_FACTOR,
     ENERGY_ROUNDOFF,
+    FLAG_BEYOND_TIP,
     FLAG_ENERGY_GAIN,
     FLAG_GRAVITY_DOMINATED,
     FLAG_OTHER_END,
@@ -86,12 +87,17 @@ def tip_sequence(contacts, n_contacts, duration, normal_impulse):
 
 
 @njit(cache=True, error_model="numpy")
-def sequence_flags(out, e0, m, g, rtol, contacts, n_contacts):
+def sequence_flags(out, e0, m, g, rtol, contacts, n_contacts, radius):
     """The ``ResultFlag`` bits of a finished sequence but LAW_EXTRAPOLATED (docs/flexible.md,
     "Flags"): ENERGY_GAIN (the vibration energy counted with the kinetic; or friction that did
     positive work in a contact, ``friction_gained``), GRAVITY_DOMINATED on the tip's
-    sequence, else OTHER_END when the other end touched or e < 0 (or NaN)."""
+    sequence, else OTHER_END when the other end touched or e < 0 (or NaN); BEYOND_TIP when
+    the flat reached the rim of an end's hemisphere (``radius`` [m]) in one of the contacts."""
     flags = 0
+    for j in range(n_contacts):
+        c = contacts[j]
+        if beyond_rim(radius, c[F.CR_TH0], c[F.CR_TH1], c[F.CR_DMAX]):
+            flags |= FLAG_BEYOND_TIP
     e_end = out[F.O_RIGID_KINETIC_ENERGY] + out[F.O_VIBRATION_ENERGY]
     e_pot = out[F.O_POTENTIAL_ENERGY]
     scale = e0 + e_end + abs(e_pot)  # the balance's, as energy_gained's
@@ -205,7 +211,9 @@ def one_drop(drop_at, mdl, init, mu, fid, rtol, t_max, stop_mode, out, checks):
     c = mdl[2]
     e0 = initial_energy(c[F.FC_M], c[F.FC_I], vx, vy, w)
     checks[CK_E0] = e0
-    checks[CK_FLAGS] = sequence_flags(out, e0, c[F.FC_M], c[F.FC_G], rtol, contacts, ncon)
+    checks[CK_FLAGS] = sequence_flags(
+        out, e0, c[F.FC_M], c[F.FC_G], rtol, contacts, ncon, c[F.FC_R]
+    )
     return st
 
 

@@ -143,6 +143,7 @@ def on_touch(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, ek, Jn, Jt):
     contacts[ci, F.CR_DMAX] = ek[k, F.EK_DELTA]
     contacts[ci, F.CR_FMAX] = 0.0
     contacts[ci, F.CR_STICK] = 0.0
+    contacts[ci, F.CR_TH0] = contacts[ci, F.CR_TH1] = c[F.FC_TH0] + y[2]
     if di >= 0:
         _reload_mode(mdl, md, dents, k, di)
         contacts[ci, F.CR_RELOAD] = 1.0
@@ -222,6 +223,7 @@ def on_separation(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, y_end, e
     iw = y.shape[0] - F.N_END_WORKS + 2 * k
     contacts[ci, F.CR_WN] = y[iw] - snap[k, 4]
     contacts[ci, F.CR_WT] = y[iw + 1] - snap[k, 5]
+    contacts[ci, F.CR_TH1] = mdl[2][F.FC_TH0] + y[2]
     cur_con[k] = -1
     md[k, F.MD_IN] = 0.0
     md[k, F.MD_FM] = 0.0

@@ -132,7 +132,9 @@ CR_DR = 13  #: the dent's delta_r after the contact [m]
 CR_WN = 14  #: work of the normal force [J]
 CR_WT = 15  #: work of friction [J]
 CR_STICK = 16  #: time spent sticking [s]
-NCR = 17
+CR_TH0 = 17  #: the rod's angle to the flat at touch [rad] (the rim check; not a record field)
+CR_TH1 = 18  #: ... at separation (at touch until then) [rad]
+NCR = 19
 MAX_CONTACTS = 4096
 
 # ---- run state (``SV_*``, a float vector shared by the driver's helpers) ----------------------

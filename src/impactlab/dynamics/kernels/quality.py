@@ -1,8 +1,10 @@
 """The result flags of a finished impact (``impactlab.flags``): energy gain and gravity
-dominance, from the energy balance and the impulses at separation (docs/engine/index.md,
-"Result flags")."""
+dominance, from the energy balance and the impulses at separation, and the rim of a rod's
+hemispherical end (docs/engine/index.md, "Result flags")."""
 
 from __future__ import annotations
+
+import math
 
 from numba import njit
 
@@ -24,6 +26,16 @@ def energy_gained(e0, e_kin, e_pot, rtol):
     balance, e0 + e_kin + |e_pot|."""
     scale = e0 + e_kin + abs(e_pot)
     return e_kin + e_pot - e0 > (ENERGY_GAIN_RTOL_FACTOR * rtol + ENERGY_ROUNDOFF) * scale
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def beyond_rim(radius, angle, angle_out, delta_max):
+    """True when the largest interference ``delta_max`` [m] of a contact of a rod's
+    hemispherical end (radius [m]) exceeds R (1 - |cos theta|), the depth at which the flat
+    reaches the hemisphere's rim, theta the rod's angle to the flat [rad]: of those at touch and
+    at separation, the one farther from pi/2 (``ResultFlag.BEYOND_TIP``). False for NaN."""
+    cos_far = max(abs(math.cos(angle)), abs(math.cos(angle_out)))
+    return delta_max > radius * (1.0 - cos_far)
 
 
 @njit(cache=True, error_model="numpy")
