@@ -90,3 +90,42 @@ def test_another_study_is_not_written_into_a_damaged_store(stores) -> None:
         run_sweep(_study(vy=-2.0), store, evaluator=FakeEvaluator(), quiet=True)
     with pytest.raises(RepairableStoreError):
         open_sweep(store)
+
+
+@pytest.mark.parametrize(
+    ("damage", "needle"),
+    [
+        (lambda s: (s / "angle" / "c.0").unlink(), "angle does not hold the study's values"),
+        (lambda s: (s / "mu" / "c.0").write_bytes(b"cut short"), "mu cannot be read"),
+        (lambda s: shutil.rmtree(s / "vy"), "vy cannot be read"),
+    ],
+)
+def test_a_damaged_coordinate_is_refused_then_written_again_from_the_study(
+    stores, damage, needle
+) -> None:
+    """A grid coordinate or fixed input is written once, from the study, and no chunk marker
+    covers it: gone, it read as NaN coordinates, cut short it made the store unreadable. It is
+    refused by name (open_sweep and info alike), and a run of the same study writes it again,
+    computing nothing: the store is the same bytes as before."""
+    from impactlab.sweep import DamagedStoreError
+
+    store, ref = stores
+    damage(store)
+    for read in (open_sweep, store_info):
+        with pytest.raises(DamagedStoreError, match=needle) as err:
+            read(store)
+        assert "every computed chunk is kept" in str(err.value) and "\n" not in str(err.value)
+    again = run_sweep(_study(), store, evaluator=FakeEvaluator(), quiet=True)
+    assert again.stats.chunks_computed == 0
+    assert store_files(store) == store_files(ref)
+    assert np.array_equal(open_sweep(store)["angle"].values, _study().axes[0].array())
+
+
+def test_a_deleted_study_record_is_written_again_from_the_root_attributes(stores) -> None:
+    """``.sweep/study.json`` gone, the root attributes (written after every array) still name
+    the study's hash: a run of the same study writes the record again and keeps every chunk."""
+    store, ref = stores
+    (store / ".sweep" / "study.json").unlink()
+    again = run_sweep(_study(), store, evaluator=FakeEvaluator(), quiet=True)
+    assert again.stats.chunks_computed == 0
+    assert store_files(store) == store_files(ref)

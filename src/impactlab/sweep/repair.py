@@ -1,5 +1,5 @@
 """Repairing a store's metadata on resume: result arrays whose ``zarr.json`` is gone are
-created again (their chunk files, where still there, are kept), and an unreadable
+created again (their chunk files, where still there, are kept), and an unreadable or deleted
 ``.sweep/study.json`` is written again, for the study the store was made for (same hash).
 
 Only what the study itself defines is rewritten; no computed value is touched. The chunks
@@ -9,12 +9,14 @@ computes exactly those again (``SweepStore.verify``); every intact chunk is kept
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 import zarr
 
 from impactlab.sweep.integrity import RepairableStoreError
 from impactlab.sweep.storebuild import (
+    META,
     StoreMeta,
     consolidate,
     create_result_array,
@@ -22,7 +24,7 @@ from impactlab.sweep.storebuild import (
 )
 from impactlab.sweep.study import Study
 
-__all__ = ["repair_metadata"]
+__all__ = ["repair_metadata", "restore_study_record"]
 
 
 def repair_metadata(
@@ -38,4 +40,18 @@ def repair_metadata(
             create_result_array(group, name, meta, study)
         consolidate(path)
     if problem.study_record is not None:
+        write_study_record(path, study)
+
+
+def restore_study_record(path: Path, study: Study, meta: StoreMeta) -> None:
+    """Write ``.sweep/study.json`` of the store at ``path`` again where it is gone but the root
+    attributes, written after every array when the store was built, name ``study``'s hash
+    (``meta.study_hash``); nothing otherwise."""
+    if (path / META / "study.json").exists() or not (path / META).is_dir():
+        return
+    try:
+        attrs = json.loads((path / "zarr.json").read_text()).get("attributes", {})
+    except (OSError, ValueError, AttributeError):
+        return
+    if isinstance(attrs, dict) and attrs.get("study_hash") == meta.study_hash:
         write_study_record(path, study)

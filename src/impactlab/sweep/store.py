@@ -29,6 +29,11 @@ import xarray as xr
 import zarr
 
 from impactlab.sweep.chunkfiles import ChunkWriter, no_result_where_failed
+from impactlab.sweep.defined_arrays import (
+    damaged_defined_arrays,
+    defined_arrays_error,
+    rewrite_defined_arrays,
+)
 from impactlab.sweep.hooks import checkpoint
 from impactlab.sweep.inputs import INPUTS, OUTPUTS
 from impactlab.sweep.integrity import (
@@ -42,7 +47,7 @@ from impactlab.sweep.integrity import (
 )
 from impactlab.sweep.locking import acquire_lock, release_lock, stale, write_lock
 from impactlab.sweep.options import STUDY_FORMAT
-from impactlab.sweep.repair import repair_metadata
+from impactlab.sweep.repair import repair_metadata, restore_study_record
 from impactlab.sweep.storebuild import META, StoreMeta, build_store
 from impactlab.sweep.study import Study
 
@@ -232,6 +237,8 @@ class SweepStore:
         interrupted holds no results and is started afresh.
         """
         self._clean_siblings()
+        if not self.exists():
+            restore_study_record(self.path, study, meta)
         if self._occupied() and not self.exists():
             evidence = self._evidence()
             if not evidence:
@@ -257,6 +264,7 @@ class SweepStore:
                 old = None  # damaged metadata: nothing to keep
             if old == meta.study_hash and not restart:
                 self.clean_partial()
+                rewrite_defined_arrays(self.path, study)  # a coordinate's file gone or cut
                 return self.done_chunks()
             if not restart:
                 self.release()
@@ -351,6 +359,9 @@ def open_sweep(path: str | Path, *, verify: bool = True) -> xr.Dataset:
         damaged = SweepStore(p).verify()
         if damaged:
             raise damaged_error(p, damaged)
+    broken = damaged_defined_arrays(p)  # no marker covers them: read NaN or not at all
+    if broken:
+        raise defined_arrays_error(p, broken)
     try:
         ds = xr.open_zarr(str(p), consolidated=False)
     except Exception as exc:  # what check_metadata cannot see; named, not a deep traceback

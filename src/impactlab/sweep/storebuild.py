@@ -99,6 +99,29 @@ def _create_axes(g: Any, study: Study) -> None:
         _new_array(g, axis.name, axis.array(), (axis.name,))
 
 
+def defined_arrays(study: Study) -> dict[str, tuple[Any, tuple[str, ...], Any]]:
+    """The arrays the study itself defines, written once when the store is built: name ->
+    (values, dimension names, attributes or None for a coordinate's own): the grid axes, the
+    fixed (and defaulted) inputs as scalars, the resolved material values."""
+    out: dict[str, tuple[Any, tuple[str, ...], Any]] = {
+        axis.name: (axis.array(), (axis.name,), None) for axis in study.axes
+    }
+    for name, value in _constants(study):
+        out[name] = (value, (), None)
+    for name, value, dims, attrs in resolved_material_values(study):
+        out[name] = (value, tuple(dims), attrs)
+    return out
+
+
+def create_defined_array(g: Any, name: str, entry: tuple[Any, tuple[str, ...], Any]) -> None:
+    """Create the study-defined array ``name`` (an entry of ``defined_arrays``) in ``g``."""
+    value, dims, attrs = entry
+    if attrs is None:
+        _new_array(g, name, value, dims)
+    else:
+        _material_array(g, name, value, dims, attrs)
+
+
 def _create_sampled(g: Any, study: Study) -> list[str]:
     """The sampled inputs along ``sample`` (filled by the chunk writes); returns their names."""
     if study.sample is None:
@@ -122,15 +145,36 @@ def _create_sampled(g: Any, study: Study) -> list[str]:
     return list(study.sample.inputs)
 
 
-def _create_constants(g: Any, study: Study) -> list[str]:
-    """The fixed (and defaulted) inputs as scalar arrays; returns their names."""
+def _constants(study: Study) -> list[tuple[str, Any]]:
+    """(name, value) of the fixed (and defaulted) inputs, by name."""
     varying = set(study.varying())
     constants = {n: study.value_of(n) for n in INPUTS if n not in varying}
+    return sorted((n, v) for n, v in constants.items() if v is not None)
+
+
+def _create_constants(g: Any, study: Study) -> list[str]:
+    """The fixed (and defaulted) inputs as scalar arrays; returns their names."""
     names = []
-    for name, value in sorted((n, v) for n, v in constants.items() if v is not None):
+    for name, value in _constants(study):
         _new_array(g, name, value, ())
         names.append(name)
     return names
+
+
+def _material_array(g: Any, name: str, value: Any, dims: Any, attrs: Any) -> None:
+    """One resolved material value (a scalar, or an array along a grid of materials)."""
+    shape = np.shape(value)
+    z = g.create_array(
+        name,
+        shape=shape,
+        **({"chunks": shape} if shape else {}),
+        dtype="float64",
+        fill_value=np.nan,
+        dimension_names=dims,
+        attributes=attrs,
+        **CHUNK_KEYS,
+    )
+    z[...] = value
 
 
 def _create_material_values(g: Any, study: Study) -> list[str]:
@@ -138,18 +182,7 @@ def _create_material_values(g: Any, study: Study) -> list[str]:
     (``sweep.material_record``); returns their names."""
     names = []
     for name, value, dims, attrs in resolved_material_values(study):
-        shape = np.shape(value)
-        z = g.create_array(
-            name,
-            shape=shape,
-            **({"chunks": shape} if shape else {}),
-            dtype="float64",
-            fill_value=np.nan,
-            dimension_names=dims,
-            attributes=attrs,
-            **CHUNK_KEYS,
-        )
-        z[...] = value
+        _material_array(g, name, value, dims, attrs)
         names.append(name)
     return names
 
