@@ -25,6 +25,7 @@ __all__ = [
     "FLAG_OTHER_END",
     "GRAVITY_IMPULSE_RATIO",
     "ResultFlag",
+    "invalidating_names",
     "messages",
 ]
 
@@ -196,3 +197,11 @@ def messages(
         for flag, text in sorted(_MESSAGES.items())
         if value & flag
     )
+
+
+def invalidating_names() -> str:
+    """The short names of the flags that make a result not plain success (every flag but
+    ``ADVISORY_FLAGS``), in bit order: ``"energy gain, gravity-dominated, other end, beyond the
+    tip"``."""
+    bits = [f for f in ResultFlag if f.value and not f & ADVISORY_FLAGS]
+    return ", ".join(_MESSAGES[f].split(":")[0] for f in bits)

@@ -55,6 +55,15 @@ def test_missing_study_file(tmp_path, monkeypatch, capsys) -> None:
     assert code == 2 and "does not exist" in err
 
 
+def test_uncertainty_of_a_missing_store_names_a_store(tmp_path, monkeypatch, capsys) -> None:
+    gone = tmp_path / "gone.zarr"
+    code, _, err = run_cli(monkeypatch, capsys, "sweep", "uncertainty", str(gone))
+    assert code == 2 and err.strip() == (
+        f"error: sweep store {str(gone)!r} does not exist: give a Monte Carlo study file (TOML) "
+        "or the Zarr store it ran into"
+    )
+
+
 def test_run_resume_export_plot_info(tmp_path, monkeypatch, capsys) -> None:
     study = tmp_path / "small.toml"
     study.write_text(

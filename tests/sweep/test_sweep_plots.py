@@ -56,3 +56,29 @@ def test_sample_histograms(tmp_path, fake) -> None:
     ds = run_sweep(st, tmp_path / "h.zarr", evaluator=fake, quiet=True).dataset
     files = plot_sweep(ds, tmp_path / "p")
     assert [f.name for f in files] == ["histograms.png"] and files[0].stat().st_size > 0
+
+
+def test_regime_map_leaves_flagged_cases_blank() -> None:
+    """A case computed but not plain success (here BEYOND_TIP, 16) is left blank and marked x,
+    as in the output maps; an advisory LAW_EXTRAPOLATED (4) case is drawn."""
+    import xarray as xr
+
+    angle, mu = np.radians([5.0, 20.0, 40.0]), np.array([0.1, 0.3])
+    regime = np.ones((3, 2))
+    flags = np.array([[16, 16], [4, 0], [0, 4]], dtype=np.int16)
+    ds = xr.Dataset(
+        {
+            "regime": (("angle", "mu"), regime, {"regimes": {"1": "slip"}}),
+            "status": (("angle", "mu"), np.zeros((3, 2), dtype=np.int32)),
+            "flags": (("angle", "mu"), flags),
+        },
+        coords={"angle": angle, "mu": mu},
+    )
+    fig, ax = plt.subplots()
+    plot_regime_map(ds, ax=ax, show_mu_c=False)
+    shown = np.ma.getdata(ax.collections[0].get_array()).reshape(2, 3)  # (mu, angle)
+    assert np.isnan(shown[:, 0]).all() and np.isfinite(shown[:, 1:]).all()
+    marks = [ln for ln in ax.get_lines() if ln.get_marker() == "x"]
+    assert len(marks) == 1 and len(marks[0].get_xdata()) == 2
+    assert "2 flagged cases blank" in ax.get_title()
+    plt.close(fig)

@@ -27,6 +27,7 @@ from impactlab._json import to_json
 from impactlab.cli._common import UserError, emit, print_rows
 from impactlab.cli.output_paths import existing_store, output_file, output_store
 from impactlab.cli.sweep_summary import info_json, run_summary
+from impactlab.flags import invalidating_names
 
 if TYPE_CHECKING:
     from impactlab.sweep import SweepResult
@@ -119,7 +120,7 @@ def _print_report(report: dict[str, Any], title: str) -> None:
                 rows.append((f"{out} {key}", text, shown))
     n = f"{report['n_cases']} cases, {report['n_invalid']} excluded (status != 0)"
     flagged = int(report.get("n_flagged", 0))
-    n += f", {flagged} flagged (energy gain, gravity-dominated, other end) " + (
+    n += f", {flagged} flagged ({invalidating_names()}) " + (
         "included" if report.get("flagged_included") else "excluded"
     )
     print_rows(rows, f"{title}: {n}; mean ± standard deviation, percentiles")
@@ -281,6 +282,11 @@ def uncertainty_cmd(
     if source.is_dir():
         ds = open_sweep(source)
     else:
+        if not source.exists() and source.suffix == ".zarr":
+            raise UserError(
+                f"sweep store {str(source)!r} does not exist: give a Monte Carlo study file "
+                "(TOML) or the Zarr store it ran into"
+            )
         _check_run_paths(out, None)
         where = _Where(out, scheduler, workers, max_cases)
         ds = _run(source, where, quiet or as_json, False).dataset

@@ -117,9 +117,10 @@ def _regime_panel(
     from matplotlib.colors import BoundaryNorm, ListedColormap
     from matplotlib.patches import Patch
 
-    sub = select(ds[["regime", "status"]], (x, y), sel)
-    reg = np.asarray(sub["regime"].transpose(y, x).values, dtype=float)
-    reg[np.asarray(sub["status"].transpose(y, x).values) != 0] = np.nan
+    sub = select(ds[_variables(ds, "regime")], (x, y), sel).transpose(y, x)
+    bad = _flagged(sub)  # computed, but not plain success: blank, marked x, as in output maps
+    reg = np.asarray(sub["regime"].values, dtype=float)
+    reg[(np.asarray(sub["status"].values) != 0) | bad] = np.nan
     names = {int(k): v for k, v in ds["regime"].attrs.get("regimes", {}).items()}
     codes = sorted(names) or sorted({int(v) for v in reg[np.isfinite(reg)].ravel()})
     xs, xl = label(ds, x)
@@ -145,11 +146,14 @@ def _regime_panel(
                 th * xs, mu_c * ys, "k-", lw=2, label=r"$\mu_c = ab/(k^2+b^2)$ (rigid body)"
             )
             handles.append(line)
+    if bad.any():
+        iy, ix = np.nonzero(bad)
+        ax.plot(xv[ix], yv[iy], "kx", ms=5)
     ax.set_xlim(xv.min(), xv.max())
     ax.set_ylim(yv.min(), yv.max())
     ax.set_xlabel(xl)
     ax.set_ylabel(yl)
-    title(ax, "friction regime", ds, sub)
+    title(ax, "friction regime" + _flag_note(int(bad.sum())), ds, sub)
     if handles:
         ax.legend(handles=handles, loc="best", fontsize="small")
 
@@ -165,9 +169,9 @@ def plot_output_map(
 ) -> Any:
     """``output`` over ``x`` and ``y`` (colour map) or over ``x`` alone (line); invalid cases
     (status != 0) are blank, and so are flagged ones (not plain success: energy gain,
-    gravity-dominated, the other end), marked x and counted in the title. Other dimensions as
-    in ``plot_regime_map`` (facets without ``ax``, the slice in the titles); returns the Axes
-    (an array of Axes for facets)."""
+    gravity-dominated, the other end, beyond the tip), marked x and counted in the title. Other
+    dimensions as in ``plot_regime_map`` (facets without ``ax``, the slice in the titles);
+    returns the Axes (an array of Axes for facets)."""
     out = OUTPUT_ALIASES.get(output, output)
     if out not in ds.data_vars:
         raise ValueError(f"the sweep has no output {output!r}")
@@ -198,7 +202,8 @@ def _category_line(ds: Any, out: str, x: str, sel: Mapping[str, Any], ax: Any) -
 
 def _flagged(sub: Any) -> np.ndarray:
     """True where a computed case carries a flag that says it is not plain success (energy
-    gain, gravity-dominated, the other end; the advisory LAW_EXTRAPOLATED aside)."""
+    gain, gravity-dominated, the other end, beyond the tip; the advisory LAW_EXTRAPOLATED
+    aside)."""
     st = np.asarray(sub["status"].values)
     if "flags" not in sub.data_vars:
         return np.zeros(st.shape, dtype=bool)

@@ -28,7 +28,7 @@ import numpy as np
 import pandas as pd
 from scipy import stats
 
-from impactlab.flags import ADVISORY_FLAGS
+from impactlab.flags import ADVISORY_FLAGS, invalidating_names
 from impactlab.sweep.dimensions import SAMPLE_DIM
 from impactlab.sweep.inputs import OUTPUT_ALIASES, output_spec
 from impactlab.sweep.options import (
@@ -276,7 +276,7 @@ def format_report(rep: UncertaintyReport, title: str = "") -> str:
     if title:
         lines.append(title)
     flagged = (
-        f"flagged (not plain success: energy gain, gravity-dominated, other end): "
+        f"flagged (not plain success: {invalidating_names()}): "
         f"{rep.n_flagged}, {'included' if rep.flagged_included else 'excluded'}"
     )
     lines.append(f"cases: {rep.n_cases}, excluded (status != 0): {rep.n_invalid}; {flagged}")
