@@ -137,6 +137,13 @@ def test_bad_distributions(spec, message) -> None:
         distribution_from_dict(spec, lambda v, k: float(v), "mu")
 
 
+def test_a_bad_parameter_of_an_angle_names_its_si_unit() -> None:
+    """The parameters are converted to SI before they are checked: the message says in what."""
+    spec = {"dist": "normal", "mean": "20 deg", "std": "-1 deg"}
+    with pytest.raises(ValueError, match=r"std must be > 0, got -0.01745\d* \(in rad, the "):
+        distribution_from_dict(spec, lambda v, k: math.radians(float(v.split()[0])), "angle")
+
+
 def test_study_table_units_and_round_trip() -> None:
     s = Study.from_dict(
         {

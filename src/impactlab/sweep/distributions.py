@@ -24,6 +24,7 @@ import numpy as np
 from scipy import special
 
 from impactlab._validation import check_finite, check_positive
+from impactlab.sweep.inputs import INPUTS
 
 _GAMMA = np.uint64(0x9E3779B97F4A7C15)
 _M1 = np.uint64(0xBF58476D1CE4E5B9)
@@ -297,7 +298,16 @@ def distribution_from_dict(d: dict[str, Any], convert: Any, name: str) -> Distri
         msg = str(exc)
         if msg.startswith("sample input"):
             raise
-        raise ValueError(f"sample input {name!r}: {msg}") from None
+        raise ValueError(f"sample input {name!r}: {_in_si(msg, name)}") from None
+
+
+def _in_si(msg: str, name: str) -> str:
+    """``msg`` with the SI unit that the input's values were converted to, where it quotes a
+    value (``got ...``) and the input has a unit."""
+    spec = INPUTS.get(name)
+    if spec is None or spec.unit in ("", "1") or "got" not in msg:
+        return msg
+    return f"{msg} (in {spec.unit}, the input's SI unit)"
 
 
 def distribution_from_canonical(d: dict[str, Any]) -> Distribution:
