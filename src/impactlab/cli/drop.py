@@ -261,7 +261,7 @@ def drop_cmd(
 
       impactlab drop --angle "20 deg" --vy "-1.41 m/s" --mu 0.2 --friction partial_slip
 
-      impactlab drop --angle "0.1 deg" --vy "-1.41 m/s" --mu 0.3 --stop flight
+      impactlab drop --angle "20 deg" --vy "-1.41 m/s" --mu 0.2 --stop flight
     """
     if from_file is not None:  # the recorded drop, with the options given on top
         values = {k: v for k, v in locals().items() if k in _FROM_KEYS}
