@@ -76,7 +76,7 @@ def test_run_summary_json_counts_are_integers(finished: Any) -> None:
     assert summary["flagged"] == {"total": 7, "energy_gain": 2, "law_extrapolated": 7}
     assert summary["throughput"] is None  # one chunk: every case ran in a first task
     text = run_summary(finished, finished.dataset, None, [], as_json=False)
-    assert text["flagged"] == "7 case(s) (energy gain: 2, law extrapolated: 7)"
+    assert text["flagged"] == "7 case(s) (energy gain: 2, law extrapolated (advisory): 7)"
 
 
 @pytest.mark.parametrize(

@@ -40,7 +40,7 @@ def flagged_text_json(text: Any) -> Any:
         name, _, count = part.rpartition(": ")
         if not name or not count.replace(",", "").isdigit():
             return text
-        counts[name] = int(count.replace(",", ""))
+        counts[name.removesuffix(" (advisory)")] = int(count.replace(",", ""))
     return flagged_json(counts)
 
 

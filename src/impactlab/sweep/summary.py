@@ -11,6 +11,7 @@ from typing import Any
 import numpy as np
 import zarr
 
+from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
 from impactlab.sweep.dimensions import Layout
 from impactlab.sweep.integrity import describe
 from impactlab.sweep.store import SweepStore, open_sweep
@@ -47,11 +48,20 @@ def flag_counts(flags: np.ndarray, attrs: Mapping[str, Any]) -> dict[str, int]:
     return out
 
 
+#: The names of the advisory flags (``ADVISORY_FLAGS``: the result stays ``ok``), as counted.
+_ADVISORY = {messages(f)[0].split(":")[0] for f in ResultFlag if f & ADVISORY_FLAGS}
+
+
 def format_flag_counts(counts: Mapping[str, int]) -> str:
-    """``"12 of the cases: energy gain: 10, gravity dominated: 2"`` (``"none"`` when 0)."""
+    """``"12 case(s) (energy gain: 10, law extrapolated (advisory): 2)"`` (``"none"`` when 0);
+    an advisory flag (the result stays ``ok``) is marked so."""
     if not counts.get("flagged"):
         return "none"
-    parts = ", ".join(f"{k}: {v:,}" for k, v in counts.items() if k != "flagged" and v)
+    parts = ", ".join(
+        f"{k}{' (advisory)' if k in _ADVISORY else ''}: {v:,}"
+        for k, v in counts.items()
+        if k != "flagged" and v
+    )
     return f"{counts['flagged']:,} case(s) ({parts})"
 
 
