@@ -212,6 +212,24 @@ def test_geometry_that_does_not_match(rod: Any) -> None:
         measure_impact(tracks, rod, geometry=renamed)
 
 
+def test_a_marker_never_seen_is_named(rod: Any) -> None:
+    """A marker invalid in every frame: the cluster cannot be measured, nor a given geometry
+    checked against it; both messages name the marker."""
+    tr = S.rigid_impulse_impact(rod, math.radians(45), (0.0, -2.18), e=0.49, mu=0.13)
+    tracks, info = S.marker_tracks(rod, tr, seed=10)
+    pos = tracks.positions.copy()
+    pos[:, 2, :] = np.nan
+    blind = MarkerTracks(tracks.time, pos, tracks.labels, tracks.source)
+    lost = f"never seen: [{tracks.labels[2]!r}]"
+    with pytest.raises(MarkerError, match=re.escape(lost)) as without:
+        measure_impact(blind, rod)
+    assert "give the marker geometry" in str(without.value)
+    geometry = MarkerGeometry(S.DEFAULT_MARKERS, info["labels"])
+    with pytest.raises(MarkerError, match=re.escape(lost)) as given_one:
+        measure_impact(blind, rod, geometry=geometry)
+    assert "leave a marker that is never seen out of the geometry" in str(given_one.value)
+
+
 def test_engine_truth(rod: Any) -> None:
     """With the impact engine (finite contact duration, its history through the contact)."""
     truth = S.engine_impact(rod, AISI_1010, math.radians(45), (0.0, -2.18), mu=0.13)

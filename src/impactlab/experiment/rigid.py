@@ -147,6 +147,12 @@ def fit_poses(tracks: MarkerTracks, reference: np.ndarray) -> Poses:
     return Poses(tracks.time, R, t, rms, ok, ref)
 
 
+def never_seen(tracks: MarkerTracks) -> str:
+    """`` (never seen: ['M3'])``: the markers invalid in every frame (``""`` for none)."""
+    gone = [lab for j, lab in enumerate(tracks.labels) if not tracks.valid[:, j].any()]
+    return f" (never seen: {gone})" if gone else ""
+
+
 def reference_cluster(
     tracks: MarkerTracks, *, iterations: int = 3, max_frames: int = 400
 ) -> np.ndarray:
@@ -156,7 +162,7 @@ def reference_cluster(
     if full.size == 0:
         raise MarkerError(
             f"{tracks.source or 'marker tracks'}: no frame shows all "
-            f"{tracks.n_markers} markers, so the marker cluster cannot be "
+            f"{tracks.n_markers} markers{never_seen(tracks)}, so the marker cluster cannot be "
             "measured; give the marker geometry"
         )
     if full.size > max_frames:

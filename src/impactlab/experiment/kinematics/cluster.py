@@ -10,7 +10,13 @@ import numpy as np
 from impactlab.experiment.errors import MarkerError, RigidityError, TooFewFramesError
 from impactlab.experiment.kinematics.marker_scale import check_marker_spread, free_fall_units_hint
 from impactlab.experiment.markers import MarkerTracks
-from impactlab.experiment.rigid import MarkerGeometry, check_rigidity, fit_poses, reference_cluster
+from impactlab.experiment.rigid import (
+    MarkerGeometry,
+    check_rigidity,
+    fit_poses,
+    never_seen,
+    reference_cluster,
+)
 
 __all__ = ["marker_poses"]
 
@@ -42,6 +48,12 @@ def _check_geometry(
     tracks: MarkerTracks, reference: np.ndarray, tolerance: float, src: str
 ) -> None:
     """The given geometry must match the measured cluster shape."""
+    if not np.all(tracks.valid, axis=1).any():
+        raise MarkerError(
+            f"{src}: the marker geometry cannot be checked against the data: no frame shows "
+            f"all {tracks.n_markers} markers{never_seen(tracks)}; leave a marker that is never "
+            "seen out of the geometry (its labels)"
+        )
     meas = reference_cluster(tracks)
     d_meas = np.linalg.norm(meas[:, None] - meas[None], axis=2)
     d_geo = np.linalg.norm(reference[:, None] - reference[None], axis=2)
