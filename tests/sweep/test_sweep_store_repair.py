@@ -97,7 +97,7 @@ def test_another_study_is_not_written_into_a_damaged_store(stores) -> None:
     [
         (lambda s: (s / "angle" / "c.0").unlink(), "angle does not hold the study's values"),
         (lambda s: (s / "mu" / "c.0").write_bytes(b"cut short"), "mu cannot be read"),
-        (lambda s: shutil.rmtree(s / "vy"), "vy cannot be read"),
+        (lambda s: shutil.rmtree(s / "vy"), "vy does not hold the study.s values"),
     ],
 )
 def test_a_damaged_coordinate_is_refused_then_written_again_from_the_study(

@@ -26,9 +26,9 @@ from impactlab.sweep.study import Study
 __all__ = ["damaged_defined_arrays", "defined_arrays_error", "rewrite_defined_arrays"]
 
 
-def _stored_study(path: Path) -> Study | None:
+def _stored_study(group: Any) -> Study | None:
     """The study recorded in the store's root attributes (None when there is none)."""
-    text = zarr.open_group(str(path), mode="r").attrs.get("study")
+    text = group.attrs.get("study")
     return Study.from_dict(json.loads(text)) if isinstance(text, str) else None
 
 
@@ -45,14 +45,15 @@ def damaged_defined_arrays(path: str | Path, study: Study | None = None) -> dict
     """The study-defined arrays of the store at ``path`` that cannot be read or do not hold the
     study's values, each with what is wrong (``{}``: all intact). ``study``: the store's own
     (read from its root attributes by default)."""
-    root = Path(path)
-    study = _stored_study(root) if study is None else study
+    group = zarr.open_group(str(path), mode="r")  # its consolidated metadata: one read
+    study = _stored_study(group) if study is None else study
     if study is None:
         return {}
     problems = {}
     for name, (value, _dims, _attrs) in defined_arrays(study).items():
         try:
-            stored = zarr.open_array(str(root / name), mode="r")[...]
+            node: Any = group[name]
+            stored = node[...]
         except Exception as exc:  # zarr raises many unrelated types for a damaged array
             problems[name] = f"cannot be read ({type(exc).__name__}: {exc})"
             continue
