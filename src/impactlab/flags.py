@@ -19,6 +19,7 @@ __all__ = [
     "ENERGY_GAIN_RTOL_FACTOR",
     "ENERGY_ROUNDOFF",
     "FLAG_BEYOND_TIP",
+    "FLAG_BRITTLE",
     "FLAG_ENERGY_GAIN",
     "FLAG_GRAVITY_DOMINATED",
     "FLAG_LAW_EXTRAPOLATED",
@@ -34,6 +35,7 @@ FLAG_GRAVITY_DOMINATED = 2  #: bit of ``ResultFlag.GRAVITY_DOMINATED``
 FLAG_LAW_EXTRAPOLATED = 4  #: bit of ``ResultFlag.LAW_EXTRAPOLATED`` (the law's verified range)
 FLAG_OTHER_END = 8  #: bit of ``ResultFlag.OTHER_END`` (a drop; a rigid rod's other end)
 FLAG_BEYOND_TIP = 16  #: bit of ``ResultFlag.BEYOND_TIP`` (a rod's impact or drop)
+FLAG_BRITTLE = 32  #: bit of ``ResultFlag.BRITTLE`` (a brittle material past first yield)
 #: Flags that caution rather than invalidate: the impact measures stay readable (``ok`` stays
 #: True). LAW_EXTRAPOLATED: the law is used beyond its (fitted, provisional or theoretical)
 #: range; its outputs stay finite but are not validated there.
@@ -81,6 +83,12 @@ class ResultFlag(enum.IntFlag):
     #: end (theta: the rod's angle to the flat, the one of touch or separation farther from
     #: 90 deg): the contact is no longer a sphere's on a flat, which every contact law assumes
     BEYOND_TIP = FLAG_BEYOND_TIP
+    #: the material that yields first (``ContactPair.weaker``) is brittle
+    #: (``Material.brittle``: its yield strength holds its compressive strength) and the
+    #: largest interference passed the pair's first yield (the law's delta_c; for Hertz the
+    #: Jackson-Green delta_c): such a material cracks rather than dents, and impactlab has no
+    #: fracture model
+    BRITTLE = FLAG_BRITTLE
 
 
 _MESSAGES: dict[ResultFlag, str] = {
@@ -111,6 +119,13 @@ _MESSAGES: dict[ResultFlag, str] = {
         "flat (in a drop: in one of its contacts), so the contact is no longer that of a "
         "sphere on a flat, which the contact laws describe; the outputs do not hold (raise the "
         "angle or lower the impact velocity)"
+    ),
+    ResultFlag.BRITTLE: (
+        "brittle: the largest interference passed first yield (delta_max > delta_c) of a "
+        "brittle material, whose yield strength is its compressive strength; such a material "
+        "cracks rather than yields, and impactlab has no fracture model, so the dent, e and "
+        "the forces past first yield do not hold (treat them as a bound only; lower the "
+        "impact velocity to stay elastic)"
     ),
     ResultFlag.LAW_EXTRAPOLATED: (
         "law extrapolated: the largest interference exceeded {what}{how_far}, so {so}; the "
@@ -202,6 +217,6 @@ def messages(
 def invalidating_names() -> str:
     """The short names of the flags that make a result not plain success (every flag but
     ``ADVISORY_FLAGS``), in bit order: ``"energy gain, gravity-dominated, other end, beyond the
-    tip"``."""
+    tip, brittle"``."""
     bits = [f for f in ResultFlag if f.value and not f & ADVISORY_FLAGS]
     return ", ".join(_MESSAGES[f].split(":")[0] for f in bits)

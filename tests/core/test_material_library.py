@@ -160,7 +160,7 @@ def test_toml_file(tmp_path) -> None:
 
 def test_new_fields_are_plain_dataclass_fields() -> None:
     names = [f.name for f in fields(Material)]
-    assert names[-3:] == ["condition", "source", "note"]
+    assert names[-4:] == ["condition", "source", "note", "brittle"]
     assert "Table 1" not in str(AISI_1010) and "note" not in repr(AISI_1010)
 
 

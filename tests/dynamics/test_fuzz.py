@@ -86,7 +86,7 @@ def _check(out: np.ndarray, status: np.ndarray, init: np.ndarray, body: Rod | Sp
     x = init[status == 0]
     assert np.all(np.isfinite(o[:, [O[n] for n in DEFINED]]))
     flags = o[:, O["flags"]]
-    assert np.all(np.isin(flags, np.arange(2.0 * F.FLAG_BEYOND_TIP)))  # known bits only
+    assert np.all(np.isin(flags, np.arange(2.0 * F.FLAG_BRITTLE)))  # known bits only
     gained = (flags.astype(np.int64) & F.FLAG_ENERGY_GAIN) != 0
     # the energy balance, recomputed from the outputs
     e0 = 0.5 * body.mass * (x[:, 1] ** 2 + x[:, 2] ** 2) + 0.5 * body.inertia * x[:, 3] ** 2

@@ -30,7 +30,7 @@ def test_flags_are_stored_and_counted_although_not_kept(tmp_path) -> None:
     ds = res.dataset
     assert list(ds.data_vars) == ["e", "flags", "status"]
     assert ds["flags"].dtype == np.int16
-    assert ds["flags"].attrs["flag_masks"] == [1, 2, 4, 8, 16]  # 8: OTHER_END, 16: BEYOND_TIP
+    assert ds["flags"].attrs["flag_masks"] == [1, 2, 4, 8, 16, 32]  # 16 BEYOND_TIP, 32 BRITTLE
     assert ds["flags"].attrs["flag_meanings"].split()[:2] == ["energy_gain", "gravity-dominated"]
     flags = ds["flags"].values
     mu, vy = np.meshgrid(ds["mu"].values, ds["vy"].values, indexing="ij")

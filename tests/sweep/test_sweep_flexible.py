@@ -107,6 +107,16 @@ def test_study_level_checks() -> None:
         run_sweep(bad, quiet=True)
 
 
+def test_a_sequence_total_without_a_drop_is_refused_by_name(tmp_path: Path) -> None:
+    """A rigid study asking for a drop's sequence total is told why, not "unknown output"."""
+    rigid = Study.from_dict(
+        {"fixed": {"angle": "20 deg", "mu": 0.1}, "grid": {"vy": [-1.0, -2.0]},
+         "outputs": {"keep": ["e", "sequence_duration"]}}
+    )  # fmt: skip
+    with pytest.raises(ValueError, match=r"\['sequence_duration'\] are totals of a drop's"):
+        run_sweep(rigid, tmp_path / "r.zarr", quiet=True)
+
+
 def test_example_study_reads() -> None:
     """examples/study-flexible.toml is a valid, small study of flexible rods."""
     st = Study.from_toml(EXAMPLE)

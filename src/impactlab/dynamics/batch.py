@@ -22,7 +22,7 @@ from impactlab._validation import check_array
 from impactlab.bodies import NB
 from impactlab.bodies.layout import BP_HALF_LENGTH, BP_KIND, BP_RADIUS, KIND_ROD
 from impactlab.contact.kernels import N_LAWS, NPARAM, param_length
-from impactlab.contact.ranges import extrapolation_flags
+from impactlab.contact.ranges import brittle_flags, extrapolation_flags
 from impactlab.contact.tabulate import has_table, with_table
 from impactlab.dynamics.core.batch import impact_batch
 from impactlab.dynamics.input_checks import check_rtol, gravity_value
@@ -67,6 +67,7 @@ def run_arrays(
     rtol: float | None = None,
     diagnostics: bool = False,
     tabulate: bool = True,
+    brittle: Any = False,
 ) -> tuple[np.ndarray, np.ndarray]:
     """Run N impacts in parallel.
 
@@ -81,13 +82,15 @@ def run_arrays(
     diagnostic outputs (energy_rise, friction_excess; NaN otherwise); tabulate : evaluate the
     law's loading curve from its table (``contact.table``, within 1e-13 of the closed form)
     where one parameter vector is shared by every case; per-case parameters (N, NPARAM) always
-    use the closed forms, as ``tabulate=False`` does for shared ones.
+    use the closed forms, as ``tabulate=False`` does for shared ones. brittle : the material
+    that yields first is brittle (``materials.yields_brittle``), for all cases or per case
+    ((N,) bools): BRITTLE is added where delta_max passed first yield.
 
     Returns ``(out, status)``: out (N, len(OUTPUT_FIELDS)) float64, status (N,) int32
     (0 = ok; ``STATUS_MESSAGES``). The ``regime`` column holds codes (``REGIME_NAMES``); the
     ``flags`` column the ``ResultFlag`` bits, LAW_EXTRAPOLATED added here from each case's
     delta_max / delta_c and the law's range (``impactlab.contact.ranges``: verified against FE,
-    else a stand-in).
+    else a stand-in), and BEYOND_TIP, OTHER_END and BRITTLE (above).
     """
     try:
         lid = int(law_id)
@@ -136,7 +139,7 @@ def run_arrays(
                 bool(diagnostics), PARTIAL_SLIP_CELLS, out, status, slip_addresses(),
                 prepass_address(),
             )  # fmt: skip
-        _mark_extrapolated(lid, lp, out)
+        _mark_law_flags(lid, lp, out, brittle)
         _mark_reach(bp, init, out)
     elif n:
         impact_batch(
@@ -154,7 +157,7 @@ def run_arrays(
             out,
             status,
         )
-        _mark_extrapolated(lid, lp, out)
+        _mark_law_flags(lid, lp, out, brittle)
         _mark_reach(bp, init, out)
     return out, status
 
@@ -190,11 +193,17 @@ def _mark_reach(bp: np.ndarray, init: np.ndarray, out: np.ndarray) -> None:
     out[done, _FLAGS] = out[done, _FLAGS].astype(np.int64) | np.broadcast_to(bits, done.shape)[done]
 
 
-def _mark_extrapolated(law_id: int, law_params: np.ndarray, out: np.ndarray) -> None:
+def _mark_law_flags(
+    law_id: int, law_params: np.ndarray, out: np.ndarray, brittle: Any = False
+) -> None:
     """Add ``LAW_EXTRAPOLATED`` to the ``flags`` column where a case's delta_max / delta_c
-    exceeds the law's (verified) range (``contact.ranges``; vectorised, failed cases untouched)."""
+    exceeds the law's (verified) range, and ``BRITTLE`` where ``brittle`` and delta_max passed
+    first yield (``contact.ranges``; vectorised, failed cases untouched)."""
     done = np.isfinite(out[:, _FLAGS])
-    extra = extrapolation_flags(law_id, law_params, np.where(done, out[:, _DMAX], np.nan))
+    dmax = np.where(done, out[:, _DMAX], np.nan)
+    extra = extrapolation_flags(law_id, law_params, dmax) | brittle_flags(
+        law_id, law_params, dmax, np.broadcast_to(np.asarray(brittle, dtype=bool), done.shape)
+    )
     out[done, _FLAGS] = (
         out[done, _FLAGS].astype(np.int64) | np.broadcast_to(extra, done.shape)[done]
     )

@@ -77,7 +77,7 @@ from impactlab.friction import (
     PARTIAL_SLIP,
     PARTIAL_SLIP_CELLS,
 )
-from impactlab.materials import AISI_1010, Material
+from impactlab.materials import AISI_1010, Material, yields_brittle
 from impactlab.references import Reference
 
 __all__ = [
@@ -219,7 +219,7 @@ def _result(
     m = bm.rigid.mass
     vx, vy = inputs["velocity_in"]
     e0 = float(initial_energy(m, bm.inertia, vx, vy, inputs["spin_in"]))
-    rtol = inputs.pop("rtol")
+    rtol, brittle = inputs.pop("rtol"), inputs.pop("brittle")
     check_energy_balance(o, e0, rtol)
     ratio, ratio_max = extrapolation(model.law_id, model.params, o["delta_max"])
     skip = {"vx_out", "vy_out", "n_contacts", "next_end", "n_steps", "n_jumps", "n_dents"}
@@ -240,7 +240,7 @@ def _result(
         strain_rate=rate[1].strain_rate if rate[1] is not None else math.nan,
         history=DropHistory(r.history) if r.history is not None else None,
         flags=drop_flags(
-            r.out, e0, m, inputs["gravity"], rtol, model, r.contacts, bm.rigid.tip_radius
+            r.out, e0, m, inputs["gravity"], rtol, model, r.contacts, bm.rigid.tip_radius, brittle
         ),
         max_delta_ratio=ratio,
         fitted_delta_ratio_max=ratio_max,
@@ -361,6 +361,7 @@ def simulate_drop(
         refs += get_rate_law(rate).references
     inputs = {"friction": fric.name, "mu": mu_v, "angle": th, "velocity_in": (vx, vy)}
     inputs |= {"spin_in": w, "gravity": g, "rtol": options[0]}
+    inputs["brittle"] = yields_brittle(bm.rigid.material, flat)
     name = get_rate_law(rate).name if rate is not None else None
     result = _result(r, bm, model, inputs, (name, factor), tuple(dict.fromkeys(refs)))
     # what was simulated, checked, for DropResult.input (``dynamics.provenance``)

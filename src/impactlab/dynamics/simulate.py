@@ -41,7 +41,7 @@ from impactlab.dynamics.partial_slip import simulate_partial_slip
 from impactlab.dynamics.provenance import SIMULATE_DROP, from_record, record_function
 from impactlab.dynamics.results import ImpactResult
 from impactlab.friction import DEFAULT_MU, FrictionKind
-from impactlab.materials import AISI_1010, G0, Material
+from impactlab.materials import AISI_1010, G0, Material, yields_brittle
 
 
 @overload
@@ -253,8 +253,9 @@ def _fast(
     hist = hist[:nh] if history else None
     rod = (body.half_length, body.tip_radius) if kind is Rod else None
     r = engine_result(
-        out, hist, model, fric, refs_mu if m > 0.0 else refs, m, th_out, (vx, vy), w, rod
-    )
+        out, hist, model, fric, refs_mu if m > 0.0 else refs, m, th_out, (vx, vy), w, rod,
+        yields_brittle(body.material, flat),
+    )  # fmt: skip
     r.__dict__["_call"] = (body, flat, law, None, g, constant_angle, tol, None)  # as the full path
     return r
 

@@ -27,7 +27,7 @@ from impactlab.dynamics.kernels import layout as L
 from impactlab.dynamics.models import body_params, contact_model, references_used
 from impactlab.dynamics.results import BatchResult
 from impactlab.friction import DEFAULT_MU, get_friction
-from impactlab.materials import AISI_1010, Material
+from impactlab.materials import AISI_1010, Material, yields_brittle
 
 #: simulate_batch's array inputs and their units ("1": a plain number).
 _BATCH_UNITS = {"mu": "1", "angle": "rad", "vx": "m/s", "vy": "m/s", "spin": "rad/s"}
@@ -113,6 +113,7 @@ def simulate_batch(
         gravity=gravity,
         constant_angle=check_flag("constant_angle", constant_angle),
         rtol=rtol,
+        brittle=yields_brittle(body.material, flat),
     )
     return BatchResult(
         out=out,

@@ -10,6 +10,8 @@ import math
 import sys
 from dataclasses import dataclass, field
 
+import numpy as np
+
 from impactlab._html import dataclass_html, dataclass_rows
 from impactlab._validation import check_finite, check_positive, check_range, value_text
 
@@ -61,6 +63,10 @@ class Material:
     source : key of the reference the values come from (``impactlab.references``; "" for
         values given by the user).
     note : what the source gives and how it was read (text).
+    brittle : True for a material that cracks rather than yields (glass, ceramics, cemented
+        carbides): its ``yield_strength`` holds the compressive strength, and an impact that
+        passes first yield with it as the material that yields first is flagged
+        ``ResultFlag.BRITTLE`` (impactlab has no fracture model).
 
     E, yield_strength, density and brinell_hardness are numbers in the units above, strings
     with units (``"200 GPa"``) or pint Quantities of any registry; nu and meyer_index are plain
@@ -78,6 +84,7 @@ class Material:
     condition: str = ""
     source: str = ""
     note: str = field(default="", compare=False, repr=False)
+    brittle: bool = False
 
     def __post_init__(self) -> None:
         if not isinstance(self.name, str) or not self.name:
@@ -85,6 +92,9 @@ class Material:
         for text in ("condition", "source", "note"):
             if not isinstance(getattr(self, text), str):
                 raise ValueError(f"{text} must be a string, got {getattr(self, text)!r}")
+        if not isinstance(self.brittle, bool | np.bool_):
+            raise ValueError(f"brittle must be True or False, got {self.brittle!r}")
+        object.__setattr__(self, "brittle", bool(self.brittle))
         for name, unit in (("E", "Pa"), ("yield_strength", "Pa"), ("density", "kg/m^3")):
             value = check_positive(name, getattr(self, name), unit)
             object.__setattr__(self, name, value)
@@ -120,6 +130,7 @@ class Material:
         if entry is None:
             return
         changed = [f for f in _VALUES if _differs(getattr(self, f), getattr(entry, f))]
+        changed += ["brittle"] if self.brittle != entry.brittle else []
         if changed:
             object.__setattr__(self, "name", f"{self.name}, modified ({', '.join(changed)})")
             object.__setattr__(self, "source", "")
@@ -145,7 +156,13 @@ class Material:
     def __str__(self) -> str:
         """One line in display units: ``Material NAME: E = 200 GPa, nu = 0.3, ...``
         (``repr`` stays the dataclass's, in SI)."""
-        rows = [r for r in dataclass_rows(self) if r[0] not in ("name", "source") and r[1] != ""]
+        rows = [
+            r
+            for r in dataclass_rows(self)
+            if r[0] not in ("name", "source", "brittle") and r[1] != ""
+        ]
+        if self.brittle:
+            rows.append(("brittle", "yes", ""))
         return summary_line(f"Material {self.name}", rows)
 
 
@@ -164,6 +181,12 @@ def reduced_shear_modulus(a: Material, b: Material | None = None) -> float:
     if b is not None:
         c += (2.0 - b.nu) / b.shear_modulus
     return 1.0 / c
+
+
+def yields_brittle(body: Material, flat: Material) -> bool:
+    """True when the material that yields first (the smaller yield strength; the flat if
+    equal, as ``ContactPair.weaker``) is brittle."""
+    return body.brittle if body.yield_strength < flat.yield_strength else flat.brittle
 
 
 @dataclass(frozen=True)
@@ -208,6 +231,11 @@ class ContactPair:
     def nu(self) -> float:
         """Poisson's ratio of the material that yields first."""
         return self.weaker.nu
+
+    @property
+    def brittle(self) -> bool:
+        """True when the material that yields first is brittle (``Material.brittle``)."""
+        return yields_brittle(self.body, self.flat)
 
     def _derived(self) -> dict[str, float]:
         return {"E_star": self.E_star, "G_star": self.G_star, "yield_strength": self.yield_strength}

@@ -45,6 +45,7 @@ KEYS: dict[str, tuple[str, str]] = {
     "meyer_index": ("meyer_index", "1"),
     "name": ("name", ""),
     "condition": ("condition", ""),
+    "brittle": ("brittle", "bool"),
 }
 #: The fields a definition by values must give.
 REQUIRED: tuple[str, ...] = ("E", "nu", "yield_strength", "density")
@@ -86,6 +87,19 @@ def _number(field: str, unit: str, value: Any, label: str) -> float:
     return x / brinell_to_pa(1.0) if unit == "kgf/mm^2" else x
 
 
+_TRUE, _FALSE = ("true", "yes", "1"), ("false", "no", "0")
+
+
+def _flag(value: Any, label: str) -> bool:
+    """True or False from a bool or the text ``true``/``yes``/``1``, ``false``/``no``/``0``."""
+    if isinstance(value, bool):
+        return value
+    text = str(value).strip().lower()
+    if text in _TRUE + _FALSE:
+        return text in _TRUE
+    raise ValueError(f"{label}: expected true or false, got {value!r}")
+
+
 def from_values(values: Mapping[str, Any], where: str = "material") -> Material:
     """A Material from a definition by values (keys: :data:`KEYS`); ValueError naming
     ``where`` for an unknown key, a missing required value or a bad one."""
@@ -95,13 +109,17 @@ def from_values(values: Mapping[str, Any], where: str = "material") -> Material:
         if key not in KEYS:
             raise ValueError(
                 f"{where}: unknown property {str(raw)!r}; allowed: E, nu, Sy (yield_strength), "
-                "rho (density), HB (brinell_hardness), n (meyer_index), name, condition"
+                "rho (density), HB (brinell_hardness), n (meyer_index), name, condition, "
+                "brittle"
             )
         field, unit = KEYS[key]
         if field in fields:
             raise ValueError(f"{where}: {field} is given twice")
         label = f"{where} {str(raw).strip()}"
-        fields[field] = str(value).strip() if unit == "" else _number(field, unit, value, label)
+        if unit == "bool":
+            fields[field] = _flag(value, label)
+        else:
+            fields[field] = str(value).strip() if unit == "" else _number(field, unit, value, label)
     missing = [_SPELLED[f] for f in REQUIRED if f not in fields]
     if missing:
         raise ValueError(

@@ -13,7 +13,9 @@ with a material by values when Brake's law matters.
 Brittle materials (tungsten carbide, alumina, glass) crack instead of yielding; the
 elastic-plastic laws need a yield strength, and these entries carry the **compressive strength**
 there, so that an impact below it is elastic. An impact that reaches it is outside what
-impactlab models (no fracture model): treat their plastic results as a bound only.
+impactlab models (no fracture model): these entries are ``brittle``, and a result whose largest
+interference passes first yield with one of them as the material that yields first carries
+``ResultFlag.BRITTLE`` (not plain success).
 
 PMMA is a polymer: viscoelastic (its modulus, Poisson's ratio and yield stress depend on the rate
 and the temperature), so it lies outside every contact law's fitted range (elastic-plastic,
@@ -132,6 +134,7 @@ TUNGSTEN_CARBIDE = Material(
     density=15000.0,
     condition="sintered",
     source="makeitfrom-wc",
+    brittle=True,
     note="brittle: yield_strength holds the compressive strength; density as rounded by the "
     "source (15 g/cm^3)",
 )
@@ -145,6 +148,7 @@ ALUMINA_995 = Material(
     density=3984.0,
     condition="sintered",
     source="nist-srd30-alumina",
+    brittle=True,
     note=">= 99.5 % Al2O3, >= 98 % dense; brittle: yield_strength holds the compressive "
     "strength; nu: the middle of 0.22-0.24",
 )
@@ -158,6 +162,7 @@ SODA_LIME_GLASS = Material(
     density=2520.0,
     condition="annealed",
     source="makeitfrom-soda-lime",
+    brittle=True,
     note="brittle: yield_strength holds the compressive strength",
 )
 
@@ -235,5 +240,6 @@ ALIASES: dict[str, str] = {
     "lucite": "pmma",
 }
 
-#: Materials that crack instead of yielding (yield_strength: the compressive strength).
-BRITTLE: frozenset[str] = frozenset({"tungsten-carbide", "alumina-99.5", "soda-lime-glass"})
+#: The library's materials that crack instead of yielding (``Material.brittle``;
+#: yield_strength: the compressive strength).
+BRITTLE: frozenset[str] = frozenset(key for key, m in PRESETS.items() if m.brittle)

@@ -16,9 +16,9 @@ from impactlab.bodies import NB, PAPER_ROD, Rod, Sphere
 from impactlab.contact import get_law
 from impactlab.contact.kernels import param_length
 from impactlab.dynamics.models import body_params, build_contact_model
-from impactlab.materials import Material
+from impactlab.materials import Material, get_material
 from impactlab.sweep.inputs import BODY_INPUTS, CATEGORY_INPUTS, LAW_INPUTS, MATERIAL_OVERRIDES
-from impactlab.sweep.material_inputs import material_of
+from impactlab.sweep.material_inputs import CUSTOM, material_of
 from impactlab.sweep.status import STATUS_BAD_BODY, STATUS_BAD_LAW, STATUS_BAD_MATERIAL
 
 
@@ -49,6 +49,25 @@ def material_for(side: str, preset: str, row: Mapping[str, float]) -> Material:
     (``"custom"``) the one the row's property values define
     (``impactlab.sweep.material_inputs``)."""
     return material_of(side, preset, _side(side, row))
+
+
+def brittle_cases(cases: Mapping[str, np.ndarray], statics: Statics) -> np.ndarray | bool:
+    """Per case, whether the material that yields first (``materials.yields_brittle``) is
+    brittle: a library material (or one given as text) by its ``brittle``, a material by
+    values never; False for the whole chunk where neither side is brittle."""
+    sy: dict[str, Any] = {}
+    brittle: dict[str, bool] = {}
+    for side in ("body", "flat"):
+        name = statics.categories[f"{side}_material"]
+        if name == CUSTOM:
+            sy[side] = np.asarray(cases[f"{side}_yield_strength"], dtype=np.float64)
+            brittle[side] = False
+        else:
+            mat = get_material(name, f"{side}_material")
+            sy[side], brittle[side] = mat.yield_strength, mat.brittle
+    if not (brittle["body"] or brittle["flat"]):
+        return False
+    return np.where(sy["body"] < sy["flat"], brittle["body"], brittle["flat"])
 
 
 def _body(cat: Mapping[str, str], row: Mapping[str, float], body_mat: Material) -> Rod | Sphere:

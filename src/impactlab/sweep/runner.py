@@ -132,11 +132,19 @@ class SweepInterrupted(KeyboardInterrupt):
 def resolve_outputs(study: Study, evaluator: Evaluator) -> tuple[str, ...]:
     """The outputs to keep, checked against what the evaluator provides."""
     fields = tuple(evaluator.output_fields())
+    drops_only: tuple[str, ...] = ()
     if FLEXIBLE_BODY not in category_values(study)["body"]:  # no drop: no sequence totals
+        drops_only = tuple(f for f in fields if f in SEQUENCE_OUTPUTS)
         fields = tuple(f for f in fields if f not in SEQUENCE_OUTPUTS)
     if study.outputs is None:
         return fields
     outs = tuple(OUTPUT_ALIASES.get(o, o) for o in study.outputs)
+    sequence = [o for o in outs if o in drops_only]
+    if sequence:
+        raise ValueError(
+            f"output(s) {sequence} are totals of a drop's sequence: a study gives them only "
+            f"with body = {FLEXIBLE_BODY!r} (a drop), and this study has no such body"
+        )
     unknown = [o for o in outs if o not in fields]
     if unknown:
         raise ValueError(
