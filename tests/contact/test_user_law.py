@@ -250,3 +250,35 @@ def test_a_spawned_worker_gets_the_law_from_the_study(toy: RegisteredLaw, tmp_pa
     here = run_sweep(study, tmp_path / "here.zarr", quiet=True)
     assert (pool.dataset["status"].values == 0).all()
     np.testing.assert_array_equal(pool.dataset["e"].values, here.dataset["e"].values)
+
+
+def test_the_accuracy_command_measures_a_law_of_ones_own(toy: RegisteredLaw) -> None:
+    """``impactlab laws NAME --accuracy`` measures a registered law against the shipped FE
+    case of its pair, beside the built-in laws; a pair with no FE case is told so."""
+    import json
+
+    from typer.testing import CliRunner
+
+    from impactlab.cli import app
+
+    res = CliRunner().invoke(app, ["laws", NAME, "--accuracy", "--json"])
+    assert res.exit_code == 0, res.output
+    cases = json.loads(res.stdout)["cases"]
+    assert [c["e_star_over_sy"]["value"] for c in cases] == pytest.approx([360.0], rel=0.01)
+    assert list(cases[0]["laws"]) == [NAME]
+    far = ContactPair(AISI_201, dataclasses.replace(AISI_1010, yield_strength=150e6))
+    dc, fc = jg_critical(far.E_star, R, far.yield_strength, far.nu)  # E*/S_y 732: no FE case
+
+    def loading(delta: float) -> float:
+        return fc * (delta / dc) ** (1.5 if delta <= dc else 1.25)
+
+    def unloading(delta_max: float) -> float:
+        return 0.0 if delta_max <= dc else 0.7 * delta_max * (1.0 - math.sqrt(dc / delta_max))
+
+    register_law("toy-lone", loading=loading, unloading=unloading, pair=far, radius=R,
+                 delta_max=400 * dc)  # fmt: skip
+    try:
+        res = CliRunner().invoke(app, ["laws", "toy-lone", "--accuracy"])
+    finally:
+        unregister_law("toy-lone")
+    assert res.exit_code == 2 and "none of the shipped FE cases has that pair" in res.output

@@ -60,6 +60,15 @@ def test_missing_ccx_message(monkeypatch, tmp_path):
             "flat_hardening must be monotonic",
         ),
         ({"delta_max": 1e-6, "sphere_hardening": [[305e6, 0.01]]}, "must start at plastic"),
+        (
+            {"delta_max": 1e-6, "flat_hardening": [[305.0, 0.0], [400.0, 0.1]]},
+            r"flat_hardening must start at the material's yield strength S_y = 3.05e\+08 Pa .*"
+            r"got a first stress of 305.0 Pa \(stresses are in Pa",
+        ),
+        (
+            {"delta_max": 1e-6, "sphere_hardening": [[500e6, 0.0], [900e6, 0.1]]},
+            r"sphere_hardening must start at the material's yield strength S_y = 7.6e\+08 Pa",
+        ),
         ({"delta_max": 1e-6, "flat_hardening": [1, 2, 3]}, "flat_hardening must be rows"),
         ({"delta_max": 1e-6, "unload": "no"}, "unload must be True or False, got 'no'"),
         ({"delta_max": 1e-6, "unload": 0}, "unload must be True or False, got 0"),

@@ -6,12 +6,13 @@ from __future__ import annotations
 
 import textwrap
 from collections.abc import Sequence
+from typing import Any
 
 from rich.table import Table
 from rich.text import Text
 
 from impactlab.cli._common import console, emit
-from impactlab.contact import get_law
+from impactlab.contact import builtin_law_names, get_law
 
 #: The narrowest last column [characters] of the table (the verified range, text that wraps).
 _MIN_TEXT_COLUMN = 24
@@ -62,6 +63,34 @@ def law_blocks(header: Sequence[str], rows: Sequence[Sequence[str]], width: int)
     return lines
 
 
+def _results(only: str | None) -> list[Any]:
+    """The accuracy of the built-in laws against every shipped case; with a law of one's own
+    (``only``, registered) that law beside them, for the cases of its pair only."""
+    from impactlab.fe import accuracy as acc
+
+    measured = acc.measured_laws()
+    if only is None or only in measured:
+        return acc.accuracy()
+    if only in builtin_law_names():
+        raise ValueError(
+            f"law {only!r} is built from the shipped FE curves, not measured against them: "
+            "see docs/laws/tabulated.md for its round trip"
+        )
+    results = [
+        r
+        for r in acc.accuracy((*measured, only))
+        if any(a.law == only and a.built for a in r.laws)
+    ]
+    if not results:
+        spans = ", ".join(f"{r.case.e_star_over_sy:.0f}" for r in acc.accuracy(()))
+        raise ValueError(
+            f"law {only!r} holds for its own pair only (its E*/S_y and nu), and none of the "
+            f"shipped FE cases has that pair (their E*/S_y: {spans}): nothing to measure it "
+            "against"
+        )
+    return results
+
+
 def print_accuracy(name: str | None, as_json: bool) -> None:
     """The accuracy of every law (``name``: that one) against the shipped FE curves: JSON, a
     table per material pair, or blocks where the table is wider than the terminal."""
@@ -69,12 +98,7 @@ def print_accuracy(name: str | None, as_json: bool) -> None:
     from impactlab.fe.accuracy_views import table_rows
 
     only = str(get_law(name).name) if name else None
-    if only is not None and only not in acc.measured_laws():
-        raise ValueError(
-            f"law {only!r} is built from the shipped FE curves, not measured against them: "
-            "see docs/laws/tabulated.md for its round trip"
-        )
-    results = acc.accuracy()
+    results = _results(only)
     if as_json:
         emit(acc.report(results, only), as_json=True, units=acc.UNITS)
         return

@@ -17,7 +17,7 @@ from typing import Any, Literal
 
 import numpy as np
 
-from impactlab._validation import check_finite, check_nonnegative, check_positive
+from impactlab._validation import check_finite, check_nonnegative, check_positive, value_text
 from impactlab.fe.deck import DeckSpec, MaterialCard, StepControl
 from impactlab.fe.mesh import MeshSpec
 from impactlab.materials import ContactPair, Material
@@ -65,7 +65,7 @@ def check_hardening(name: str, table: Any) -> tuple[tuple[float, float], ...]:
     if e[0] != 0.0 or np.any(s <= 0.0):
         raise ValueError(
             f"{name} must start at plastic strain 0 with positive stresses, got first row "
-            f"({s[0]!r}, {e[0]!r})"
+            f"({float(s[0])!r}, {float(e[0])!r})"
         )
     if np.any(np.diff(e) <= 0.0) or np.any(np.diff(s) < 0.0):
         raise ValueError(
@@ -73,6 +73,26 @@ def check_hardening(name: str, table: Any) -> tuple[tuple[float, float], ...]:
             f"got strains {e.tolist()} and stresses {s.tolist()}"
         )
     return tuple((float(a), float(b)) for a, b in arr)
+
+
+#: How far a hardening table's first stress may lie from the material's S_y (relative).
+HARDENING_START_TOL = 0.05
+
+
+def check_hardening_start(name: str, rows: tuple[tuple[float, float], ...], m: Material) -> None:
+    """ValueError unless the table's first stress is the material's yield strength (within
+    ``HARDENING_START_TOL``): delta_c and E*/S_y, which every result is read against, come
+    from S_y, so the FE's first yield must be there."""
+    s0, sy = rows[0][0], m.yield_strength
+    if abs(s0 / sy - 1.0) <= HARDENING_START_TOL:
+        return
+    hint = " (stresses are in Pa: 305 MPa is 305e6)" if s0 < 1e-3 * sy else ""
+    raise ValueError(
+        f"{name} must start at the material's yield strength S_y = {value_text(sy, 'Pa')} "
+        f"(within {HARDENING_START_TOL:.0%}; delta_c and E*/S_y are computed from S_y), got "
+        f"a first stress of {value_text(s0, 'Pa')}{hint}; give the material the table's "
+        "first stress as its yield strength, or a table that starts at S_y"
+    )
 
 
 def critical_interference(pair: ContactPair, radius: float) -> float:
@@ -292,11 +312,12 @@ def make_problem(
         fh = perfectly_plastic(flat)
     else:
         fh = check_hardening("flat_hardening", flat_hardening)
-    sh = (
-        perfectly_plastic(sphere_material)
-        if sphere_hardening is None
-        else check_hardening("sphere_hardening", sphere_hardening)
-    )
+        check_hardening_start("flat_hardening", fh, flat)
+    if sphere_hardening is None:
+        sh = perfectly_plastic(sphere_material)
+    else:
+        sh = check_hardening("sphere_hardening", sphere_hardening)
+        check_hardening_start("sphere_hardening", sh, sphere_material)
     problem = Problem(
         flat, sphere_material, sphere, R, d, fh, sh, mu_v, int(mesh_level), bool(unload)
     )
