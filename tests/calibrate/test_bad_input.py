@@ -87,6 +87,19 @@ def test_bad_models():
     with pytest.raises(ValueError, match="friction"):
         parse_model("hertz/glue")
     assert parse_model("hertz/mindlin").name == "hertz/mindlin"
+    with pytest.raises(ValueError, match=r"a rate law \('johnson-cook'\) needs body="):
+        parse_model(CandidateModel("hertz", rate="johnson-cook"))
+    with pytest.raises(ValueError, match="unknown rate law 'nope'; known: cowper-symonds"):
+        parse_model("hertz/coulomb/flexible_rod/nope")
+
+
+def test_a_models_name_is_read_back_as_that_model():
+    """Every name the ranking prints is a model specification (the rate law's included)."""
+    for spec in ("ghaednia", "hertz/mindlin", "ghaednia/coulomb/flexible_rod",
+                 "ghaednia/coulomb/flexible_rod/cowper-symonds"):  # fmt: skip
+        model = parse_model(spec)
+        assert parse_model(model.name) == model
+    assert parse_model("ghaednia/coulomb/flexible_rod/cowper-symonds").rate == "cowper-symonds"
 
 
 def test_parameter_no_model_uses(template):

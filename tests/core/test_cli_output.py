@@ -280,10 +280,10 @@ def test_simulate_flexible_rod_stop() -> None:
 @pytest.mark.parametrize(
     ("args", "needle"),
     [
-        ([*ROD20, "--modes-axial", "3"], "--modes-axial: only the flexible rod's drop has modes"),
-        ([*ROD20, "--stop", "flight"], "--stop: only the flexible rod's drop"),
+        ([*ROD20, "--modes-axial", "3"], "--modes-axial: only a drop has modes"),
+        ([*ROD20, "--stop", "flight"], "--stop: only a drop has"),
         ([*FLEX, "--stop", "landing"], "stop must be one of"),
-        ([*ROD20, "--rate", "johnson-cook"], "--rate: only the flexible rod"),
+        ([*ROD20, "--rate", "johnson-cook"], "--rate: only a drop has"),
         (["simulate", "sphere", "--vy", "-1 m/s", "--flexible"], "--flexible: a sphere has no"),
         ([*FLEX, "--inertia", "1 kg*m^2"], "--inertia: the flexible rod's inertia"),
         ([*FLEX, "--constant-angle"], "--constant-angle: the flexible rod's"),

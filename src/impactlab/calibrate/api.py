@@ -74,18 +74,25 @@ class Calibration:
 
 
 def parse_model(spec: str | CandidateModel | Mapping[str, Any]) -> CandidateModel:
-    """A CandidateModel from ``"law/friction[/flexible_rod]"``, a mapping of its fields or
-    itself."""
+    """A CandidateModel from ``"law/friction[/flexible_rod[/rate]]"`` (the form of its
+    ``name``), a mapping of its fields or itself."""
     if isinstance(spec, CandidateModel):
         return spec
     if isinstance(spec, Mapping):
         return CandidateModel(**dict(spec))
     parts = [p.strip() for p in str(spec).split("/")]
-    if not 1 <= len(parts) <= 3 or not all(parts):
-        raise ValueError(f"model {spec!r}: expected 'law', 'law/friction' or 'law/friction/body'")
+    if not 1 <= len(parts) <= 4 or not all(parts):
+        raise ValueError(
+            f"model {spec!r}: expected 'law', 'law/friction', 'law/friction/body' or "
+            "'law/friction/flexible_rod/rate'"
+        )
     friction = parts[1] if len(parts) > 1 else "coulomb"
     body = parts[2] if len(parts) > 2 else None
-    return CandidateModel(parts[0], friction, body)
+    rate = parts[3] if len(parts) > 3 else None
+    try:
+        return CandidateModel(parts[0], friction, body, rate=rate)
+    except ValueError as exc:
+        raise ValueError(f"model {spec!r}: {exc}") from None
 
 
 def _params(parameters: Sequence[Parameter] | Mapping[str, Any]) -> tuple[Parameter, ...]:

@@ -85,7 +85,11 @@ class CandidateModel:
         if self.body not in (None, FLEXIBLE_BODY):
             raise ValueError(f"model body must be None or {FLEXIBLE_BODY!r}, got {self.body!r}")
         if self.rate is not None and self.body != FLEXIBLE_BODY:
-            raise ValueError(f"a rate law ({self.rate!r}) needs body={FLEXIBLE_BODY!r}")
+            raise ValueError(
+                f"a rate law ({self.rate!r}) needs body={FLEXIBLE_BODY!r}: the rigid models of a "
+                "calibration are impacts, and a rate-dependent flat is a drop's "
+                "(`impactlab drop --rigid --rate` runs one rigid rod)"
+            )
         if self.rate not in (None, *RATE_LAWS):
             raise ValueError(f"unknown rate law {self.rate!r}; known: {', '.join(RATE_LAWS)}")
         if not self.name:

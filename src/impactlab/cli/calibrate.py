@@ -27,8 +27,9 @@ _PARAM_HELP = (
     "Repeat for several."
 )
 _MODEL_HELP = (
-    'A candidate model "law/friction[/flexible_rod]" (default ghaednia/coulomb). Repeat for '
-    "several; they are ranked by PSIS-LOO."
+    'A candidate model "law/friction[/flexible_rod[/rate]]" (default ghaednia/coulomb; rate: '
+    "cowper-symonds or johnson-cook, the flexible rod's flat). Repeat for several; they are "
+    "ranked by PSIS-LOO."
 )
 
 

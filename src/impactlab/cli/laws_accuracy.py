@@ -77,9 +77,7 @@ def _results(only: str | None) -> list[Any]:
             "see docs/laws/tabulated.md for its round trip"
         )
     results = [
-        r
-        for r in acc.accuracy((*measured, only))
-        if any(a.law == only and a.built for a in r.laws)
+        r for r in acc.accuracy((*measured, only)) if any(a.law == only and a.built for a in r.laws)
     ]
     if not results:
         spans = ", ".join(f"{r.case.e_star_over_sy:.0f}" for r in acc.accuracy(()))

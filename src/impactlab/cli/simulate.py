@@ -161,8 +161,8 @@ def _body(opt: _Options) -> tuple[Rod | Sphere | FlexibleRod, float | None]:
         _refuse(
             opt,
             _FLEX_ONLY,
-            "only the flexible rod's drop has modes, a rate-dependent flat or a stop rule "
-            "(add --flexible)",
+            "only a drop has modes, a rate-dependent flat or a stop rule (add --flexible, or "
+            "run the rigid rod's drop: impactlab drop --rigid)",
         )
     if kind == "sphere":
         _refuse(
