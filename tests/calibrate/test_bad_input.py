@@ -215,3 +215,26 @@ def test_prior_support_property(low, width, kind, u):
     assert p.logpdf(np.array([p.low * 0.5, p.high * 2.0])).tolist() == [-np.inf, -np.inf]
     draws = p.sample(16, np.random.default_rng(0))
     assert ((draws >= p.low) & (draws <= p.high)).all()
+
+
+@pytest.mark.filterwarnings("ignore::impactlab.calibrate.CalibrationWarning")  # a short chain
+def test_one_drop_says_that_loo_needs_two() -> None:
+    """ArviZ's remark on a single observation becomes a sentence a user can act on."""
+    from impactlab.calibrate import Measurements
+
+    one = Measurements.from_records(
+        [{"label": "20 deg", "angle": "20 deg", "vy": -1.4, "e": 0.5, "e_sigma": 0.01}]
+    )
+    data = synthetic_measurements(one, CandidateModel(), [MU], [0.15], np.random.default_rng(0))
+    cal = calibrate(data, [MU], walkers=8, steps=12, n_ppc=0)
+    notes = " ".join(cal.posteriors["ghaednia/coulomb"].warnings)
+    assert "PSIS-LOO with one drop" in notes and "point-wise LOO" not in notes
+
+
+def test_a_semicolon_separated_file_is_named(tmp_path) -> None:
+    from impactlab.calibrate.measurements import read_measurements
+
+    path = tmp_path / "drops.csv"
+    path.write_text("label;angle;vy;e\na;20 deg;-1.41;0.4\n")
+    with pytest.raises(ValueError, match="separates its columns with ';' or tabs"):
+        read_measurements(path)

@@ -34,6 +34,7 @@ def test_json_and_files(template, tmp_path):
     post = doc["models"]["ghaednia/coulomb"]
     assert 0.0 < post["parameters"]["mu"]["median"]["value"] < 0.6
     assert doc["ranking"][0]["model"] == "ghaednia/coulomb"
+    assert doc["ranking"][0]["rank"] == 1  # as the table and calibration.json number it
     assert (out / "results.json").is_file() and (out / "report.html").is_file()
     html = (out / "report.html").read_text()
     assert "data:image/png;base64," in html and "<script" not in html  # self-contained

@@ -51,3 +51,25 @@ def test_ranked_configurations_and_section(tmp_path):
     assert "PSIS-LOO" in text and "zeta" in text and "no model reproduces" in text
     files = write_calibration_report(tmp_path, cal)
     assert "data:image/png;base64," in files["html"].read_text()
+
+
+@pytest.mark.parametrize("steps", ["abc", "3"])
+def test_the_command_refuses_bad_steps_in_one_line(steps: str, capsys) -> None:
+    from impactlab.paper.calibration_report import main
+
+    assert main(["out", steps]) == 2
+    assert capsys.readouterr().err == f"error: STEPS must be an integer >= 10, got {steps!r}\n"
+
+
+def test_the_module_runs_without_a_runpy_warning() -> None:
+    """``python -m impactlab.paper.calibration_report`` is not imported by ``impactlab.paper``
+    before it runs (runpy's RuntimeWarning)."""
+    import subprocess
+    import sys
+
+    res = subprocess.run(
+        [sys.executable, "-W", "error::RuntimeWarning", "-m",
+         "impactlab.paper.calibration_report", "out", "abc"],
+        capture_output=True, text=True, check=False,
+    )  # fmt: skip
+    assert res.returncode == 2 and "RuntimeWarning" not in res.stderr, res.stderr

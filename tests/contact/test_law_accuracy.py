@@ -301,6 +301,13 @@ def test_cli_json_one_law(app) -> None:
         assert case["laws"]["jackson-green"]["verified_delta_ratio"]["unit"] == "1"
 
 
+def test_cli_pair_options_are_refused_with_accuracy(app) -> None:
+    """--flat, --body and --radius choose an example pair, not an FE case: refused, not
+    silently ignored."""
+    res = CliRunner().invoke(app, ["laws", "ghaednia", "--accuracy", "--flat", "al-6061-t6"])
+    assert res.exit_code == 2 and "--flat with --accuracy" in res.output
+
+
 def test_cli_unknown_law_is_one_line(app) -> None:
     res = CliRunner().invoke(app, ["laws", "nope", "--accuracy"])
     assert res.exit_code == 2

@@ -55,7 +55,7 @@ def calibration_json(cal: Calibration) -> dict[str, Any]:
     ranking = [
         {
             "model": r["model"],
-            "rank": int(r["rank"]),
+            "rank": int(r["rank"]) + 1,  # 1 = best, as the table and calibration.json
             **{
                 k: quantity(r[k], _ONE)
                 for k in ("elpd_loo", "se", "elpd_diff", "dse", "p_loo", "weight")

@@ -257,6 +257,11 @@ def _parse_row(i: int, record: Mapping[str, Any], units: Mapping[str, str]) -> _
         elif canonical_output(name):
             q = str(canonical_output(name))
             obs[q] = _value(where, name, v, unit, MEASURABLE[q].unit)
+        elif ";" in name or "\t" in name:
+            raise ValueError(
+                f"{where}: the header is one column {name!r}: the file separates its columns "
+                "with ';' or tabs; a measurements CSV separates them with commas"
+            )
         else:
             raise ValueError(
                 f"{where}: unknown column {name!r}; a drop takes label, "

@@ -106,7 +106,14 @@ def _loo(idata: Any) -> tuple[dict[str, float], list[str]]:
         "n_bad_k": int(np.sum(k > 0.7)),
     }
     notes = [f"PSIS-LOO: {out['n_bad_k']} drop(s) with Pareto k > 0.7"] if out["n_bad_k"] else []
-    notes += [str(w.message).splitlines()[0] for w in caught if "Pareto" not in str(w.message)]
+    for w in caught:
+        text = str(w.message).splitlines()[0]
+        if "Pareto" in text:
+            continue
+        if "point-wise LOO is the same with the sum LOO" in text:  # ArviZ, one observation
+            text = "PSIS-LOO with one drop: leaving it out leaves no data, so elpd_loo does not "
+            text += "rank the models (give at least two drops)"
+        notes.append(text)
     return out, notes
 
 

@@ -101,18 +101,22 @@ _UNITS = {
 }
 
 
+#: The pair and radius of one law's example numbers (the paper's), as the options' defaults.
+_EXAMPLE_PAIR = {"--radius": "8.8 mm", "--body": "aisi-201", "--flat": "aisi-1010"}
+
+
 def laws(
     name: str | None = typer.Argument(None, help="Show one law in detail (e.g. 'brake')."),
     radius: str = typer.Option(
-        "8.8 mm",
+        _EXAMPLE_PAIR["--radius"],
         "--radius",
         help="Tip radius for the example numbers of one law, e.g. '5 mm' (bare number: m).",
     ),
     body: str = typer.Option(
-        "aisi-201", "--body", help="Body material: library name or properties."
+        _EXAMPLE_PAIR["--body"], "--body", help="Body material: library name or properties."
     ),
     flat: str = typer.Option(
-        "aisi-1010", "--flat", help="Flat material: library name or properties."
+        _EXAMPLE_PAIR["--flat"], "--flat", help="Flat material: library name or properties."
     ),
     as_json: bool = typer.Option(False, "--json", help="Machine-readable output."),
     accuracy: bool = typer.Option(
@@ -128,6 +132,14 @@ def laws(
     """
     try:
         if accuracy:
+            chosen = {"--radius": radius, "--body": body, "--flat": flat}
+            given = [o for o, v in chosen.items() if v != _EXAMPLE_PAIR[o]]
+            if given:
+                raise ValueError(
+                    f"{', '.join(given)} with --accuracy: the accuracy is measured against the "
+                    "shipped FE cases, each with its own pair and radius (all are listed); "
+                    "leave them out"
+                )
             print_accuracy(name, as_json)
             return
         _laws(name, radius, body, flat, as_json)

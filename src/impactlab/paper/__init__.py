@@ -7,6 +7,8 @@ inconsistencies (in the paper's signs: dent depth and sliding length negative);
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING, Any
+
 from impactlab.paper.data import (
     CASES,
     CITATION,
@@ -22,7 +24,21 @@ from impactlab.paper.data import (
     PublishedRow,
     get_case,
 )
-from impactlab.paper.reproduction import ReproductionResult, reproduce
+
+if TYPE_CHECKING:
+    from impactlab.paper.reproduction import ReproductionResult, reproduce
+
+
+def __getattr__(name: str) -> Any:
+    """``reproduce`` and ``ReproductionResult``, imported on first use: the reproduction
+    imports every report section, and ``python -m impactlab.paper.calibration_report`` (one of
+    them) must not find itself imported before it runs."""
+    if name in ("reproduce", "ReproductionResult"):
+        from impactlab.paper import reproduction
+
+        return getattr(reproduction, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
 
 __all__ = [
     "CASES",

@@ -278,7 +278,13 @@ def main(argv: Sequence[str] | None = None) -> int:
     if not 1 <= len(args) <= 2:
         print(main.__doc__, file=sys.stderr)
         return 2
-    steps = int(args[1]) if len(args) == 2 else 40
+    try:
+        steps = int(args[1]) if len(args) == 2 else 40
+    except ValueError:
+        steps = 0
+    if steps < 10:
+        print(f"error: STEPS must be an integer >= 10, got {args[1]!r}", file=sys.stderr)
+        return 2
     if args[0] == "--shipped":
         print(f"summary: {write_shipped_calibration(steps=steps)}")
         return 0

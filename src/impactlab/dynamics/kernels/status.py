@@ -25,7 +25,7 @@ ST_INACCURATE = 15
 
 STATUS_MESSAGES: dict[int, str] = {
     ST_OK: "ok",
-    ST_LAW_LIMIT: "the interference exceeded the contact law's validity range (delta > P_DLIM)",
+    ST_LAW_LIMIT: "the interference exceeded the contact law's largest valid interference",
     ST_NOT_APPROACHING: "the contact point does not approach the flat (normal velocity >= 0)",
     ST_NO_SEPARATION: "no separation within the step limit",
     ST_BAD_INPUT: "invalid input: a body, law, initial-state, mu or tolerance value is not finite "
