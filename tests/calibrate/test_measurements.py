@@ -184,15 +184,25 @@ def test_aliases_and_sphere_angle():
                 "vx": 1.0,
                 "vy": -3.0,
                 "mu": 0.1,
-                "L_s": "5 um",
-                "L_s_sigma": "1 um",
+                "T": "0.1 ms",
+                "T_sigma": "0.01 ms",
                 "e_t": 0.7,
                 "e_t_sigma": 0.05,
             }
         ]
     )
-    assert m.quantities == ("sliding_length", "e_t")
+    assert m.quantities == ("duration", "e_t")
     assert m.inputs["angle"][0] == pytest.approx(math.pi / 2)
+
+
+@pytest.mark.parametrize("column", ["L_s", "Ls", "L_s_sigma"])
+def test_the_papers_L_s_is_refused_as_ambiguous(column):
+    """A scan's L_s is the mark's extent, not the engine's signed slip: the file must say
+    which (``scar_length`` or ``sliding_length``)."""
+    rec = {"angle": "20 deg", "vy": -1.4, "mu": 0.2, column: "5 um"}
+    with pytest.raises(ValueError, match=f"column '{column}': L_s names two quantities: give "
+                       "scar_length"):  # fmt: skip
+        Measurements.from_records([rec])
 
 
 def test_an_analysed_experiment_is_appended(tmp_path):
@@ -222,9 +232,9 @@ def test_an_analysed_experiment_is_appended(tmp_path):
     m = append_experiment(path, res, "second", body_material="aisi-1010")
     assert m.labels == ("first", "second")
     assert m.categories[1]["body_material"] == "aisi-1010"
-    np.testing.assert_allclose(m.observed["sliding_distance"], [1.4e-3, 1.4e-3])
+    np.testing.assert_allclose(m.observed["scar_length"], [1.4e-3, 1.4e-3])
     np.testing.assert_allclose(m.inputs["mu"], [0.2, 0.2])
-    assert set(m.quantities) == {"e", "delta_p", "sliding_distance"}
+    assert set(m.quantities) == {"e", "delta_p", "scar_length"}
     assert read_measurements(path).n_values == 6
     with pytest.raises(ValueError, match="has no kinematics"):
         append_experiment(path, SimpleNamespace(kinematics=None, errors={"markers": "x"}), "bad")

@@ -46,6 +46,29 @@ def test_flexible_and_rate_dependent_models(template):
         CandidateModel(body="flexible_rod", rate="fast")
 
 
+def test_a_scar_is_the_marks_extent_for_every_body():
+    """scar_length: an impact's |contact_travel|, a drop's scar_length (rigid, flexible and on
+    a rate-dependent flat), never the slip integral."""
+    from impactlab.bodies import PAPER_ROD, FlexibleRod
+    from impactlab.dynamics import simulate_drop
+
+    m = Measurements.from_records(
+        [{"angle": "45 deg", "vy": -1.4, "scar_length": "1 mm", "scar_length_sigma": "0.1 mm"}]
+    )
+    theta = np.array([[0.2]])
+    x = {"mu": 0.2, "angle": np.radians(45), "velocity": (0.0, -1.4)}
+    r = simulate(PAPER_ROD, AISI_1010, history=False, **x)
+    got = predict(CandidateModel(), m, [MU], theta).values["scar_length"][0, 0]
+    assert got == pytest.approx(abs(r.contact_travel), rel=1e-9)
+    assert abs(abs(r.contact_travel) - abs(r.sliding_length)) > 1e-6  # the slip differs
+    for model, rate in ((CandidateModel(body="flexible_rod"), None),
+                        (CandidateModel(body="flexible_rod", rate="cowper-symonds"),
+                         "cowper-symonds")):  # fmt: skip
+        d = simulate_drop(FlexibleRod.paper(), AISI_1010, rate=rate, **x)
+        got = predict(model, m, [MU], theta).values["scar_length"][0, 0]
+        assert got == pytest.approx(d.scar_length, rel=1e-6)
+
+
 def test_partial_slip_runs_in_the_batch_as_simulate():
     m = Measurements.from_records(
         [

@@ -34,7 +34,7 @@ def test_the_three_drops_and_models():
     assert m.inputs["vy"][1] == x.v_i and m.inputs["mu"][1] == x.mu
     assert m.observed["delta_p"][1] == pytest.approx(abs(x.delta_p))
     assert m.sigma["delta_p"][1] == pytest.approx(0.1 * abs(x.delta_p))
-    assert m.observed["sliding_distance"][0] == pytest.approx(abs(D.EXPERIMENTS[20].L_s))
+    assert m.observed["scar_length"][0] == pytest.approx(abs(D.EXPERIMENTS[20].L_s))
     assert [p.name for p in PAPER_MODELS] == [c.name for c in CONFIGURATIONS]
     assert PAPER_MODELS[2].rate == "cowper-symonds" and PAPER_MODELS[0].body is None
 

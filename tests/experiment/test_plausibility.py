@@ -57,7 +57,7 @@ def test_analyze_warns_beside_the_model(tmp_path: Path, drops: dict, scans: dict
     if implausible:
         assert f"{ratio:.3g} times" in implausible[0]
     table = CliRunner().invoke(app, [*args, "--flat", "aisi-1010"], env={"COLUMNS": "200"})
-    assert "model L_s = |sliding_length|" in table.stdout  # the scan's sign: a magnitude
+    assert "model L_s = |contact_travel|" in table.stdout  # the mark's extent: a magnitude
 
 
 def test_invert_paper_case_warns_with_the_factor(monkeypatch, capsys) -> None:

@@ -27,6 +27,7 @@ import numpy as np
 from impactlab.bodies import PAPER_ROD
 from impactlab.calibrate.measurement_files import csv_records, read_text
 from impactlab.calibrate.quantities import (
+    AMBIGUOUS,
     DROP_CATEGORIES,
     MEASURABLE,
     NUMERIC_INPUTS,
@@ -242,6 +243,9 @@ def _parse_row(i: int, record: Mapping[str, Any], units: Mapping[str, str]) -> _
                 f"{where}: {name!r} is not a property of a drop: the contact law and the "
                 "friction model are chosen by the candidate models of the calibration"
             )
+        ambiguous = AMBIGUOUS.get(name.removesuffix("_sigma"))
+        if ambiguous:
+            raise ValueError(f"{where}: column {name!r}: {ambiguous}")
         if name in DROP_CATEGORIES:
             cats[name] = _category(where, name, str(v).strip())
         elif name in NUMERIC_INPUTS:

@@ -239,6 +239,8 @@ def _derived(q: str, res: Mapping[str, np.ndarray], cases: Mapping[str, np.ndarr
         return res["vx_out"] / cases["vx"]
     if q == "sliding_distance":
         return np.abs(res["sliding_length"])
+    if q == "scar_length":  # an impact's travel; a drop's scar_length (MEASURED_AS), >= 0
+        return np.abs(res["contact_travel"])
     return res[MEASURABLE[q].outputs[0]]
 
 

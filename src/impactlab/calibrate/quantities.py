@@ -11,6 +11,7 @@ from impactlab.schema import FIELDS
 from impactlab.sweep.inputs import CATEGORY_INPUTS, INPUTS, KINEMATIC_INPUTS
 
 __all__ = [
+    "AMBIGUOUS",
     "DROP_CATEGORIES",
     "MEASURABLE",
     "NUMERIC_INPUTS",
@@ -61,8 +62,16 @@ MEASURABLE: dict[str, Measurable] = {
         Measurable(
             "sliding_distance",
             "m",
-            "|sliding_length|: the length of the slip, a magnitude (a dent's measured L_s)",
+            "|sliding_length|: the length of the slip (the slip speed's integral), a magnitude",
             ("sliding_length",),
+            0.0,
+        ),
+        Measurable(
+            "scar_length",
+            "m",
+            "the extent of the mark along the flat, a magnitude (a scan's measured L_s): "
+            "|contact_travel| of an impact, a drop's scar_length over all its contacts",
+            ("contact_travel",),
             0.0,
         ),
         Measurable(
@@ -76,14 +85,20 @@ MEASURABLE: dict[str, Measurable] = {
     )
 }
 
-#: The paper's symbols accepted as names of measured quantities.
+#: The paper's symbols accepted as names of measured quantities (not L_s: see ``AMBIGUOUS``).
 OUTPUT_ALIASES: dict[str, str] = {
-    "L_s": "sliding_length",
-    "Ls": "sliding_length",
     "T": "duration",
     "F": "mean_force",
     "delta_r": "delta_p",
 }
+
+#: Names a measurements file may not use, with why: the paper's L_s is the length of the mark
+#: on the scan, which an impact's signed slip ``sliding_length`` is not.
+AMBIGUOUS: dict[str, str] = dict.fromkeys(
+    ("L_s", "Ls"),
+    "L_s names two quantities: give scar_length (the mark's extent along the flat, as a "
+    "scan measures it, a magnitude) or sliding_length (the engine's slip, signed along +x)",
+)
 
 #: Category inputs a drop may set (the contact law and the friction model are the candidate
 #: models' choices, never the file's).

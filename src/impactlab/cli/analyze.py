@@ -28,7 +28,9 @@ if TYPE_CHECKING:
     from impactlab.experiment import ExperimentResult, MarkerGeometry
 
 #: The engine comparison's fields (``res.model``) that the summary shows, as ``model <field>``.
-_MODEL = ("e", "delta_p", "sliding_length", "duration", "mean_force", "spin_out")
+_MODEL = (
+    "e", "delta_p", "contact_travel", "sliding_length", "duration", "mean_force", "spin_out"
+)  # fmt: skip
 
 
 def _rod_from(spec: str | None) -> tuple[Rod, dict[str, Any]]:
@@ -176,8 +178,8 @@ def _print_summary(res: ExperimentResult) -> None:
             v = res.model.get(k)
             if isinstance(v, float):
                 label = f"model {k} ({law})"
-                if k == "sliding_length":  # a length, as the scan's L_s: its magnitude
-                    v, label = abs(v), f"model L_s = |sliding_length| ({law})"
+                if k == "contact_travel":  # the mark's extent, as the scan's L_s: a magnitude
+                    v, label = abs(v), f"model L_s = |contact_travel| ({law})"
                 _n, text, unit = field_row(k, v, SI_UNITS.get(k, "1"))
                 rows.append((label, text, unit))
     names = (Path(p).name if p else "-" for p in (res.markers_path, res.scan_path))

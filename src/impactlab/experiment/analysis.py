@@ -378,7 +378,7 @@ def _engine_comparison(rod: Rod, flat: Material, k: ImpactKinematics, law: str) 
         spin=k.spin_in.value,
     )
     out: dict[str, Any] = {"law": law, "flat": flat.name}
-    for name in ("e", "delta_p", "sliding_length", "duration", "mean_force"):
+    for name in ("e", "delta_p", "sliding_length", "contact_travel", "duration", "mean_force"):
         out[name] = float(getattr(r, name))
     out["velocity_out"] = [float(v) for v in r.velocity_out]
     out["spin_out"] = float(r.spin_out)

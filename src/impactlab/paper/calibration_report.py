@@ -6,9 +6,10 @@ is that of the un-tuned model.
 
 The measured values (e, delta_p, L_s at 20, 45 and 70 deg, Sec. 5.1.3) come without stated
 uncertainties; ``PAPER_SIGMAS`` are this module's assumption (e +- 0.03; delta_p and L_s +- 10 %),
-stated in the section. L_s is compared with the magnitude of the tip's total slip
-(``sliding_distance``); e with the engine's e at the contact point (the rigid engine keeps the
-gravity impulse m g T in it: about 0.003 here, a tenth of the assumed sigma).
+stated in the section. L_s is compared with the extent of the mark the tip left
+(``scar_length``: the contact point's travel of a rigid impact, a drop's scar length over all
+its contacts; not the slip integral); e with the engine's e at the contact point (the rigid
+engine keeps the gravity impulse m g T in it: about 0.003 here, a tenth of the assumed sigma).
 """
 
 from __future__ import annotations
@@ -46,7 +47,7 @@ __all__ = [
 SHIPPED = Path(__file__).resolve().parent / "data" / "calibration.json"
 
 #: Assumed standard uncertainties: e absolute, delta_p and L_s relative.
-PAPER_SIGMAS = {"e": 0.03, "delta_p": 0.10, "sliding_distance": 0.10}
+PAPER_SIGMAS = {"e": 0.03, "delta_p": 0.10, "scar_length": 0.10}
 #: The prior of the flexible rod's modal damping ratio (the hand fit's scan range).
 ZETA_PRIOR = "uniform(0, 0.6)"
 
@@ -78,8 +79,8 @@ def paper_measurements(sigmas: dict[str, float] | None = None) -> Measurements:
                 "e_sigma": s["e"],
                 "delta_p": dp,
                 "delta_p_sigma": s["delta_p"] * dp,
-                "sliding_distance": ls,
-                "sliding_distance_sigma": s["sliding_distance"] * ls,
+                "scar_length": ls,
+                "scar_length_sigma": s["scar_length"] * ls,
             }
         )
     return Measurements.from_records(records)
@@ -218,10 +219,10 @@ def calibration_section(cal: Calibration | Mapping[str, Any], number: int) -> li
             f"parameter, the flexible rod's modal damping ratio zeta (prior {ZETA_PRIOR}, one "
             "zeta for every mode). This replaces the hand-fitted damping row. Likelihood: "
             "independent Gaussian errors with assumed standard uncertainties (the paper gives "
-            "none): e +- 0.03, delta_p and L_s +- 10 %; L_s is compared with the magnitude of "
-            f"the tip's total slip. Sampler: emcee, {st['walkers']} walkers x {st['steps']} "
-            f"steps ({st['burn']} discarded), seed {st['seed']}. With three drops the PSIS-LOO "
-            "standard errors are wide."
+            "none): e +- 0.03, delta_p and L_s +- 10 %; L_s is compared with the extent of "
+            "the mark the tip left (the scar length), as in the previous section. Sampler: "
+            f"emcee, {st['walkers']} walkers x {st['steps']} steps ({st['burn']} discarded), "
+            f"seed {st['seed']}. With three drops the PSIS-LOO standard errors are wide."
         ),
         Table(
             pd.DataFrame(summary["ranking"]),

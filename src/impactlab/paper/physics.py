@@ -194,8 +194,9 @@ def rigid_e_gravity_removed(res: Any) -> float:
 
 
 def _simulated_row(cfg: PhysicsConfig, angle_deg: int, res: Any) -> dict[str, Any]:
-    """A result in the table's units: L_s is the tip's sliding length (rigid) or the scar
-    length (flexible); T the contact duration (rigid) or first touch to last separation."""
+    """A result in the table's units: L_s is the extent of the mark, as a scan measures it (the
+    contact point's travel of a rigid impact, the scar length of a drop over all its contacts);
+    T the contact duration (rigid) or first touch to last separation."""
     flexible = cfg.flexible
     dent = res.dent_depth if flexible else res.delta_p
     duration = res.sequence_duration if flexible else res.duration
@@ -204,7 +205,7 @@ def _simulated_row(cfg: PhysicsConfig, angle_deg: int, res: Any) -> dict[str, An
         "angle [deg]": angle_deg,
         "e": res.e if flexible else rigid_e_gravity_removed(res),
         "delta_p [um]": abs(dent) * 1e6,
-        "L_s [um]": abs(res.scar_length if flexible else res.sliding_length) * 1e6,
+        "L_s [um]": abs(res.scar_length if flexible else res.contact_travel) * 1e6,
         "T [ms]": duration * 1e3,
         "contacts": res.n_contacts if flexible else 1,
         "F_max [N]": res.max_force,

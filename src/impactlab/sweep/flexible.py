@@ -86,15 +86,16 @@ DROP_OUTPUTS: dict[str, Callable[[Any], Any]] = {
     "normal_impulse": lambda r: r.normal_impulse,
     "tangential_impulse": lambda r: r.tangential_impulse,
     "stick_time": lambda r: r.stick_time,
+    "scar_length": lambda r: r.scar_length,
     "angle_out": lambda r: r.angle_out,
     "n_steps": lambda r: r.n_steps,
     "flags": lambda r: r.flags,
 }
 
 #: What an experiment that drops a rod measures as the impact output (key) is the drop's
-#: sequence total (value): the dent left, the total slip, first touch to last separation
-#: (``impactlab.calibrate`` compares them).
-MEASURED_AS: dict[str, str] = dict(RENAMED_DROP_FIELDS)
+#: sequence total (value): the dent left, the total slip, first touch to last separation, the
+#: mark's extent over all contacts (``impactlab.calibrate`` compares them).
+MEASURED_AS: dict[str, str] = {**RENAMED_DROP_FIELDS, "contact_travel": "scar_length"}
 
 
 def _given(row: Mapping[str, float], name: str) -> float | None:
