@@ -105,12 +105,19 @@ def _suffix(unit: str) -> str:
 
 def value_text(x: float, unit: str = "") -> str:
     """``x`` as the shortest text that reads back as ``x`` (exponent form for |x| >= 1e6 or
-    < 1e-4) and its ``unit``, for messages: ``value_text(-69e9, "Pa") == "-6.9e+10 Pa"``."""
+    < 1e-4) and its ``unit``, for messages: ``value_text(-69e9, "Pa") == "-6.9e+10 Pa"``; a
+    value that needs more than 12 significant digits, the round-off of a unit conversion
+    (-50 um is -4.9999999999999996e-05 m), is shown to 12 (``-5e-05 m``)."""
     x = float(x)
-    if x == 0.0 or not math.isfinite(x) or 1e-4 <= abs(x) < 1e6:
+    if x == 0.0 or not math.isfinite(x):
+        return repr(x) + _suffix(unit)
+    digits = next(n for n in range(17) if float(f"{x:.{n}e}") == x)
+    if digits >= 12:
+        text = f"{x:.12g}"
+    elif 1e-4 <= abs(x) < 1e6:
         text = repr(x)
     else:
-        text = next(t for n in range(17) if float(t := f"{x:.{n}e}") == x)
+        text = f"{x:.{digits}e}"
     return text + _suffix(unit)
 
 

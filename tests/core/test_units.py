@@ -167,9 +167,14 @@ def test_a_value_out_of_range_is_given_with_its_unit(
 
 
 def test_value_text_reads_back_as_the_value() -> None:
-    for x in (-69e9, 2700.0, 0.3, 1e-7, 123456789.123, -0.0, 1 / 3 * 1e-9):
+    for x in (-69e9, 2700.0, 0.3, 1e-7, 123456789.123, -0.0):
         text = value_text(x)
         assert float(text) == x and ("e" in text) == (x != 0 and not 1e-4 <= abs(x) < 1e6)
+    # beyond 11 significant digits (the round-off of a conversion): 12 digits, within 1e-12
+    for x in (1 / 3 * 1e-9, -50e-6 * (1 - 2**-52), 0.1 + 0.2):
+        text = value_text(x)
+        assert abs(float(text) / x - 1.0) < 1e-12 and len(text.lstrip("-")) <= 18
+    assert value_text(-4.9999999999999996e-05, "m") == "-5e-05 m"
     assert value_text(2.76e8, "Pa") == "2.76e+08 Pa" and value_text(0.5, "1") == "0.5"
     with pytest.raises(ValueError, match=r"must lie in \[0.0, 1.0\] rad, got 2.0 rad$"):
         check_range("angle", 2.0, 0.0, 1.0, unit="rad")

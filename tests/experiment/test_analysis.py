@@ -374,3 +374,11 @@ def test_out_dir_naming_a_file_is_refused_at_once(tmp_path: Path, scans: dict) -
         with pytest.raises(ValueError, match=re.escape(f"out_dir {str(out)!r}")):
             analyze(None, scans[20].files["x3p"], out_dir=out)
     assert taken.read_text() == "x"
+
+
+def test_the_papers_rod_by_name_as_on_the_command_line() -> None:
+    """``rod="paper"`` is the paper's rod in Python too (``--rod paper`` is the CLI's default)."""
+    from impactlab.experiment import analyze
+
+    assert analyze(None, None, "paper").rod == analyze(None, None).rod
+    assert analyze(None, None, " Paper ").rod["length"] == 0.3048

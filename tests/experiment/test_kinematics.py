@@ -103,6 +103,41 @@ def test_wrong_up_names_gravity_and_the_measured_axis(rod: Any, lab_up: str, wro
     assert message.endswith(f"pass up='{lab_up}' (impactlab analyze --up {lab_up})")
 
 
+def _tilted(tracks: MarkerTracks, deg: float) -> MarkerTracks:
+    """The same tracks seen by a camera whose vertical is ``deg`` off the lab's (about x)."""
+    c, s = math.cos(math.radians(deg)), math.sin(math.radians(deg))
+    rot = np.array([[1.0, 0.0, 0.0], [0.0, c, -s], [0.0, s, c]])
+    return MarkerTracks(tracks.time, tracks.positions @ rot.T, tracks.labels, "tilted")
+
+
+def test_a_tilted_camera_is_named_with_the_up_that_fixes_it(rod: Any) -> None:
+    """A vertical 10 deg off up= biases e and mu: a warning gives the tilt and the measured up
+    vector, and with that vector (also as the command line's text) the truth comes back."""
+    tr = S.rigid_impulse_impact(rod, math.radians(30), (0.0, -1.41), e=0.6, mu=0.15)
+    tracks, info = S.marker_tracks(rod, tr, seed=7)
+    geo = MarkerGeometry(S.DEFAULT_MARKERS, info["labels"])
+    tilted = _tilted(tracks, 10.0)
+    k = measure_impact(tilted, rod, geometry=geo)
+    (warning,) = [w for w in k.warnings if "deg away from -up" in w]
+    text = re.search(r"--up '([^']*)'", warning)
+    assert text is not None and re.search(r"\b(9\.\d|10\.\d) deg away", warning)
+    fixed = measure_impact(tilted, rod, geometry=geo, up=text.group(1))
+    assert not any("deg away from -up" in w for w in fixed.warnings)
+    assert abs(fixed.e.value - tr.e) < 0.02 and abs(fixed.mu.value - tr.mu) < 0.01
+    level = measure_impact(tracks, rod, geometry=geo)
+    assert not any("deg away from -up" in w for w in level.warnings)
+
+
+def test_a_wrong_time_base_is_refused(rod: Any) -> None:
+    """A frame rate off by 2 (time stretched): the free fall is at g/4, e and mu are wrong:
+    refused, naming the time base, not only the length unit."""
+    tr = S.rigid_impulse_impact(rod, math.radians(30), (0.0, -1.41), e=0.6, mu=0.15)
+    tracks, info = S.marker_tracks(rod, tr, seed=7)
+    slow = MarkerTracks(2.0 * tracks.time, tracks.positions, tracks.labels, "slow")
+    with pytest.raises(MarkerError, match=r"0\.25 times g .* the time base or the length unit"):
+        measure_impact(slow, rod, geometry=MarkerGeometry(S.DEFAULT_MARKERS, info["labels"]))
+
+
 @pytest.mark.parametrize("case", [45, 70])
 def test_estimated_geometry(rod: Any, case: int) -> None:
     """Without the marker geometry: axis = the cluster's principal direction (markers laid out

@@ -91,9 +91,11 @@ def _check_ranges(meas: Mapping[str, Measured]) -> None:
     """ValueError for a nominal value outside its range (module docstring of ``invert``)."""
     th = meas["angle"].value
     if not 0.0 < th < HALF_PI:
+        hint = "; pass radians or a string such as '20 deg'" if 2.0 <= th <= 90.0 else ""
         raise ValueError(
-            f"angle must lie in (0, pi/2) rad, got {th!r} rad "
-            f"({math.degrees(th):.4g} deg); pass radians or a string such as '20 deg'"
+            f"angle must lie in (0, 90) deg, open at both ends (the rod tilted: at 90 deg it "
+            f"stands vertical and its tip cannot slide), got {math.degrees(th):.4g} deg "
+            f"({th!r} rad){hint}"
         )
     if meas["v_i"].value == 0.0:
         raise ValueError("v_i must be non-zero (the drop speed), got 0.0")

@@ -202,15 +202,18 @@ def _check_momentum(
     dv = meas["dv_cy"]
     implied = (K_y * m * (dv.value + g * T0) - g * T0) / v - 1.0
     sigma = K_y * m * dv.sigma / v
-    text = f"dv_cy = {dv.value!r} m/s implies e = {implied:.4g} (Eq. 29, rigid-body identity)"
+    text = (
+        f"dv_cy = {dv.value:.4g} +- {dv.sigma:.2g} m/s implies e = {implied:.4g} (Eq. 29, "
+        "rigid-body identity)"
+    )
     if not -3.0 * sigma <= implied <= 1.0 + 3.0 * sigma:
         warn_implausible(f"{text}, outside [0, 1]: no impact gives it; check dv_cy and its sign")
     elif "e" in meas:
         e = meas["e"]
         if abs(implied - e.value) > max(0.05, 3.0 * math.hypot(sigma, e.sigma)):
             warn_implausible(
-                f"{text}, but e = {e.value!r} was measured: the force from dv_cy "
-                "(F_momentum) and from e (F_rigid) disagree; check both"
+                f"{text}, but e = {e.value:.4g} +- {e.sigma:.2g} was measured: the force from "
+                "dv_cy (F_momentum) and from e (F_rigid) disagree; check both"
             )
 
 

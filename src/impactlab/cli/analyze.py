@@ -100,7 +100,10 @@ def analyze_cmd(
         "the centre of mass, x towards the tip); default: estimated.",
     ),
     up: str = typer.Option(
-        "+z", "--up", help="The lab's upward axis in the marker data (+z, +y, ...)."
+        "+z",
+        "--up",
+        help="The lab's upward axis in the marker data (+z, +y, ...), or a vector "
+        "('0, 0.98, 0.17': a camera tilted from the vertical).",
     ),
     marker_units: str | None = typer.Option(
         None, "--marker-units", help="Length unit of the marker coordinates when the file has none."

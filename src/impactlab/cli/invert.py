@@ -235,7 +235,7 @@ def invert_cmd(
         help="Gravity during the contact (default: no, as in the paper).",
     ),
     samples: int | None = typer.Option(
-        None, "--samples", help="Monte Carlo samples (default 20000)."
+        None, "--samples", min=100, help="Monte Carlo samples (default 20000; at least 100)."
     ),
     seed: int | None = typer.Option(None, "--seed", help="Monte Carlo seed (default 0)."),
     flat: str | None = typer.Option(

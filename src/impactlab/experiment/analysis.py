@@ -50,6 +50,11 @@ _DATA_ERRORS = (ValueError, OSError)
 _RECORDING = threading.Lock()
 
 
+def _is_paper(rod: Any) -> bool:
+    """True for no rod or the name ``"paper"`` (any case): the paper's rod."""
+    return rod is None or (isinstance(rod, str) and rod.strip().lower() == "paper")
+
+
 def default_rod() -> Rod:
     """The paper's rod: ``impactlab.bodies.PAPER_ROD`` (L = 0.3048 m, R = 8.8 mm, m = 0.4607 kg,
     I_C = m L^2 / 12)."""
@@ -274,7 +279,7 @@ def _checked(
     return _Run(
         None if markers_path is None else check_path(markers_path, "markers_path"),
         None if scan_path is None else check_path(scan_path, "scan_path"),
-        rod_properties(default_rod() if rod is None else rod),
+        rod_properties(default_rod() if _is_paper(rod) else rod),
         None if flat is None else _flat_material(flat),
         None if out_dir is None else output_folder(out_dir, "out_dir"),
         kinematics,
@@ -313,7 +318,8 @@ def analyze(
     ----------
     markers_path : C3D or CSV marker file (None skips the stage).
     scan_path : profilometer scan (None skips the stage).
-    rod : an ``impactlab.bodies.Rod`` (or rod-like: :func:`rod_properties`); default the paper's.
+    rod : an ``impactlab.bodies.Rod`` (or rod-like: :func:`rod_properties`); default (or
+        ``"paper"``, as ``--rod paper``) the paper's.
     flat : a flat material (``Material`` or preset name): also run the impact engine with the
         measured initial state, for comparison.
     geometry : the markers on the rod (:class:`MarkerGeometry`); None estimates it.

@@ -41,31 +41,46 @@ def fitted_gravity(
     if not sig_a < 0.2 * g:
         return None
     fitted_g = float(np.linalg.norm(a))
-    cosang = float(-(a @ upv) / max(np.linalg.norm(a), 1e-30))
     if not (0.5 * g < fitted_g < 2.0 * g):
-        warnings.append(
-            f"the free fall before the impact accelerates at {fitted_g:.3g} "
-            f"m/s^2, not g = {g:.4g}: check the length units"
+        raise MarkerError(
+            f"{src}: the free fall before the impact accelerates at {fitted_g:.3g} m/s^2, "
+            f"{fitted_g / g:.3g} times g = {g:.4g} m/s^2: the time base or the length unit is "
+            "wrong (check the frame rate, a C3D's POINT:RATE or the time column's unit, and "
+            "the marker units); e and mu cannot be measured from it"
         )
-    elif cosang < math.cos(math.radians(25.0)):
-        down = a / np.linalg.norm(a)
-        dirn = ", ".join(f"{v:+.2f}" for v in down)
+    down = a / fitted_g
+    tilt = math.degrees(math.acos(max(-1.0, min(1.0, float(-(down @ upv))))))
+    dirn = ", ".join(f"{v:+.2f}" for v in down)
+    if tilt > 25.0:
         raise MarkerError(
             f"{src}: gravity in the data points along ({dirn}) in camera coordinates, "
-            f"{math.degrees(math.acos(max(-1, min(1, cosang)))):.0f} deg away from the "
-            f"downward direction -up that up= gives; pass {suggested_up(-down)}"
+            f"{tilt:.0f} deg away from the downward direction -up that up= gives; pass "
+            f"{suggested_up(-down)}"
+        )
+    # the fitted direction's own uncertainty [deg]: tilts within it are noise
+    if tilt > max(TILT_WARN_DEG, 3.0 * math.degrees(sig_a / fitted_g)):
+        warnings.append(
+            f"gravity in the data points along ({dirn}), {tilt:.1f} deg away from -up: e, mu "
+            "and the angle are measured in a frame tilted by as much (10 deg biases mu by "
+            f"several percent); pass {suggested_up(-down, exact=True)}"
         )
     return fitted_g
 
 
-def suggested_up(measured_up: np.ndarray) -> str:
+#: A tilt of the camera's vertical from the fitted gravity [deg] beyond which a warning says so.
+TILT_WARN_DEG = 2.0
+
+
+def suggested_up(measured_up: np.ndarray, exact: bool = False) -> str:
     """The ``up=`` argument for the measured upward unit vector: the camera axis it lies along
-    (within 25 deg), e.g. ``up='+z'``, else the vector itself."""
+    (within 25 deg), e.g. ``up='+z'``, else (and with ``exact``) the vector itself, with the
+    command line's form."""
     k = int(np.argmax(np.abs(measured_up)))
-    if abs(measured_up[k]) >= math.cos(math.radians(25.0)):
+    if not exact and abs(measured_up[k]) >= math.cos(math.radians(25.0)):
         axis = f"{'+' if measured_up[k] > 0 else '-'}{'xyz'[k]}"
         return f"up='{axis}' (impactlab analyze --up {axis})"
-    return "up=(" + ", ".join(f"{v:.2f}" for v in measured_up) + ")"
+    text = ", ".join(f"{v:.3f}" for v in measured_up)
+    return f"up=({text}) (impactlab analyze --up '{text}')"
 
 
 @dataclass(frozen=True)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import re
 from typing import Any
 
 import numpy as np
@@ -14,14 +15,26 @@ G0 = 9.80665
 
 
 def parse_up(up: Any) -> np.ndarray:
-    """The lab's upward unit vector from "+z", "-y", "z" ... or a 3-vector."""
+    """The lab's upward unit vector from "+z", "-y", "z" ..., a 3-vector, or a 3-vector as
+    text ("0, 0.83, 0.56", brackets and spaces allowed: the command line's form)."""
+    if (
+        isinstance(up, str)
+        and re.fullmatch(r"\s*[\[(]?[^a-zA-Z]*[\])]?\s*", up)
+        and any(c.isdigit() for c in up)
+    ):
+        parts = [p for p in re.split(r"[\s,;]+", up.strip().strip("[]()").strip()) if p]
+        try:
+            up = [float(p) for p in parts]
+        except ValueError:
+            raise ValueError(f"up as a vector must be three numbers, got {up!r}") from None
     if isinstance(up, str):
         s = up.strip().lower()
         sign = -1.0 if s.startswith("-") else 1.0
         s = s.lstrip("+-")
         if s not in ("x", "y", "z"):
             raise ValueError(
-                f"up must be one of '+x', '-x', '+y', '-y', '+z', '-z' or a 3-vector, got {up!r}"
+                f"up must be one of '+x', '-x', '+y', '-y', '+z', '-z' or a 3-vector "
+                f"(e.g. '0, 0.83, 0.56'), got {up!r}"
             )
         v = np.zeros(3)
         v["xyz".index(s)] = sign

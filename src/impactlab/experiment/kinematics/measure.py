@@ -279,16 +279,13 @@ def measure_impact(
     fitted_g = fitted_gravity(poses, pre_fr, t_ref, upv, g, src, warnings)
     if geometry is not None:
         body = RodBody(np.zeros(3), np.array([1.0, 0.0, 0.0]), None, "given")
-    else:
-        try:
-            body = estimated_body(
-                poses, reference, pre_fr, post_fr, t_ref, upv, g, max_com_sigma, src
-            )
-        except MarkerError as exc:  # a wrong length unit spoils the fits: say so first
-            units = [w for w in warnings if "length units" in w]
-            if not units:
-                raise
-            raise type(exc)(f"{exc}; but {units[0]}") from None
+    else:  # (a free fall far from g, which spoils the fits, was refused by fitted_gravity)
+        body = estimated_body(poses, reference, pre_fr, post_fr, t_ref, upv, g, max_com_sigma, src)
+        warnings.append(
+            "geometry estimated: the rod's axis is taken as the markers' principal direction, "
+            "which holds only for markers laid out along the rod; the +- of e, mu and the "
+            "angle does not include that assumption (give the marker geometry to remove it)"
+        )
     axes, origin = impact_frame(poses, int(pre_fr[-1]), body, upv, src)
     fm = _Frame(poses, axes, origin, t_ref, g, half, R_tip)
     pre, post, body = _fits(fm, pre_fr, post_fr, body, upv, min_fit_frames, src, warnings)

@@ -167,7 +167,9 @@ def read_c3d(path: str | Path, *, units: str | None = None, backend: str = "auto
     unit = units if units is not None else data["units"]
     if unit is None:
         raise FileFormatError(
-            p, "the C3D file has no POINT:UNITS parameter; pass units= (e.g. units='mm')"
+            p,
+            "the C3D file has no POINT:UNITS parameter; pass units= (e.g. units='mm'; "
+            "impactlab analyze --marker-units mm)",
         )
     try:
         fac = length_factor(unit, name="POINT:UNITS" if units is None else "units")
