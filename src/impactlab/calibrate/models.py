@@ -27,7 +27,9 @@ from impactlab.calibrate.quantities import MEASURABLE
 from impactlab.contact import get_law
 from impactlab.contact.rate import RATE_LAWS
 from impactlab.dynamics import simulate
+from impactlab.dynamics.derived import e_gravity_removed
 from impactlab.dynamics.drop_result import DropResult
+from impactlab.dynamics.input_checks import gravity_value
 from impactlab.dynamics.kernels.status import STATUS_MESSAGES
 from impactlab.flags import FLAG_ENERGY_GAIN
 from impactlab.friction import get_friction
@@ -182,7 +184,12 @@ def predict(
     theta = np.atleast_2d(np.asarray(theta, dtype=np.float64))
     w, d_all = theta.shape[0], meas.n_drops
     quantities = meas.quantities
-    outputs = _engine_outputs(quantities)
+    flexible = model.body == FLEXIBLE_BODY
+    # a rigid impact's e without the gravity impulse of its contact, as a drop's e
+    e_parts = ("vn_in", "vn_out", "duration") if "e" in quantities and not flexible else ()
+    base = _engine_outputs(quantities)
+    outputs = [*base, *(o for o in e_parts if o not in base)]
+    g = gravity_value(dict(engine or {}).get("gravity", True))
     values = {q: np.full((w, d_all), np.nan) for q in quantities}
     status = np.zeros((w, d_all), dtype=np.int32)
     for key, idx in _groups(meas, model).items():
@@ -194,7 +201,6 @@ def predict(
             cases[p.name] = np.repeat(theta[:, j], nd)
         categories = _whole_materials(dict(key), cases)
         statics = Statics(categories, dict(model.law_params), dict(engine or {}))
-        flexible = model.body == FLEXIBLE_BODY
         asked = _drop_outputs(outputs) if flexible else outputs
         if model.batched:
             with _threads_for(w * nd):
@@ -202,6 +208,8 @@ def predict(
         else:
             res, st = _one_by_one(cases, statics, asked, model.rate)
         res = {o: res[a] for o, a in zip(outputs, asked, strict=True)}
+        if e_parts:
+            res["e"] = e_gravity_removed(res["vn_in"], res["vn_out"], res["duration"], g)
         st = np.asarray(st, dtype=np.int32).copy()
         flags = np.nan_to_num(res["flags"], nan=0.0).astype(np.int64)
         st[(st == 0) & ((flags & FLAG_ENERGY_GAIN) != 0)] = STATUS_ENERGY_GAIN

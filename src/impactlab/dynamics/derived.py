@@ -21,6 +21,15 @@ from impactlab.schema import DERIVED_FIELDS, derived_values
 _REGIME_CODES = {name: code for code, name in REGIME_NAMES.items()}
 
 
+def e_gravity_removed(vn_in: Any, vn_out: Any, duration: Any, gravity: float) -> Any:
+    """A rigid impact's e with the gravity impulse of its contact removed, as a drop's ``e``
+    removes it and as marker tracks extrapolated to the impact measure it:
+    (v_n,out + g T) / |v_n,in| (``vn_in``, ``vn_out`` [m/s] of the contact point, ``duration``
+    T [s], ``gravity`` g [m/s^2]; floats or arrays). Gravity exerts no moment about the centre
+    of mass, so it changes the contact point's normal velocity by g T alone."""
+    return (np.asarray(vn_out) + gravity * np.asarray(duration)) / np.abs(vn_in)
+
+
 def result_output(result: Any, name: str) -> Any:
     """The engine output ``name`` of a one-impact result (a float; NaN where it has none)."""
     if name in ("vx_out", "vy_out"):

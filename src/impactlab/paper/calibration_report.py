@@ -8,8 +8,8 @@ The measured values (e, delta_p, L_s at 20, 45 and 70 deg, Sec. 5.1.3) come with
 uncertainties; ``PAPER_SIGMAS`` are this module's assumption (e +- 0.03; delta_p and L_s +- 10 %),
 stated in the section. L_s is compared with the extent of the mark the tip left
 (``scar_length``: the contact point's travel of a rigid impact, a drop's scar length over all
-its contacts; not the slip integral); e with the engine's e at the contact point (the rigid
-engine keeps the gravity impulse m g T in it: about 0.003 here, a tenth of the assumed sigma).
+its contacts; not the slip integral); e with the gravity impulse of the contact removed, for
+the rigid rod as for the drops (``dynamics.derived.e_gravity_removed``).
 """
 
 from __future__ import annotations

@@ -23,6 +23,7 @@ import pandas as pd
 from impactlab.bodies import PAPER_ROD, FlexibleRod
 from impactlab.contact import ContactModel
 from impactlab.dynamics import simulate
+from impactlab.dynamics.derived import e_gravity_removed
 from impactlab.dynamics.drop import simulate_drop
 from impactlab.fe.tabulated import hardened_law
 from impactlab.materials import G0, ContactPair
@@ -190,7 +191,7 @@ def rigid_e_gravity_removed(res: Any) -> float:
     """The rigid engine's e (ImpactResult, gravity on: the gravity impulse m g T of the contact
     kept) with that impulse removed, as ``DropResult.e`` removes it: -(v_n,out + g T)/v_n,in.
     Gravity exerts no moment about the centre of mass, so it changes only v_y."""
-    return float((res.vn_out + G0 * res.duration) / abs(res.vn_in))
+    return float(e_gravity_removed(res.vn_in, res.vn_out, res.duration, G0))
 
 
 def _simulated_row(cfg: PhysicsConfig, angle_deg: int, res: Any) -> dict[str, Any]:
