@@ -13,6 +13,7 @@ from typing import Any
 
 import numpy as np
 
+from impactlab._display import display_unit, format_number
 from impactlab.calibrate.cluster import map_on_dask
 from impactlab.calibrate.measurements import Measurements, read_measurements
 from impactlab.calibrate.models import CandidateModel, predict
@@ -318,10 +319,16 @@ def _misfits(posteriors: Mapping[str, ModelPosterior]) -> list[str]:
             z = z if math.isfinite(z) else math.inf
             if key not in worst or z < worst[key][0]:
                 worst[key] = (z, name, r)
-    return [
-        f"no model reproduces {d} {q} = {r['observed']:.4g} +- {r['sigma']:.2g}"
-        f"{'' if r['unit'] == '1' else ' ' + r['unit']}: "
-        f"the closest best fit ({name}: {r['best']:.4g}) is {z:.1f} sigma away"
-        for (d, q), (z, name, r) in worst.items()
-        if z > MISFIT_SIGMAS
-    ]
+    lines = []
+    for (d, q), (z, name, r) in worst.items():
+        if z <= MISFIT_SIGMAS:
+            continue
+        show = display_unit(q, r["unit"])  # dent-scale lengths in um, as the tables
+        unit = "" if show.unit in ("1", "") else f" {show.unit}"
+        value, sigma, best = (format_number(r[k] * show.scale, n)
+                              for k, n in (("observed", 4), ("sigma", 2), ("best", 4)))  # fmt: skip
+        lines.append(
+            f"no model reproduces {d} {q} = {value} +- {sigma}{unit}: the closest best fit "
+            f"({name}: {best}{unit}) is {z:.1f} sigma away"
+        )
+    return lines

@@ -23,8 +23,8 @@ from impactlab.cli._common import UserError, console
 
 _PARAM_HELP = (
     'A free parameter and its prior, "name=uniform(low, high)", "name=loguniform(low, high)" or '
-    '"name=normal(mean, sd)"; values with units ("flat_yield_strength=uniform(100 MPa, 1 GPa)"). '
-    "Repeat for several."
+    '"name=normal(mean, sd)" ("normal(mean, sd, low, high)": truncated); values with units '
+    '("flat_yield_strength=uniform(100 MPa, 1 GPa)"). Repeat for several.'
 )
 _MODEL_HELP = (
     'A candidate model "law/friction[/flexible_rod[/rate]]" (default ghaednia/coulomb; rate: '
