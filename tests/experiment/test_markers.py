@@ -133,7 +133,7 @@ def test_csv_frame_column_needs_rate(tmp_path: Path) -> None:
         ("# units: mm\ntime,A_x,A_y\n0,1,2\n", "three columns"),
         ("# units: mm\ntime,A_x,A_z,A_y\n0,1,2,3\n0.1,1,2,3\n", "should be '<label>_y'"),
         ("# units: parsec/s\ntime,A_x,A_y,A_z\n0,1,2,3\n0.1,1,2,3\n", "not a length unit"),
-        ("# units: mm\ntime,A_x,A_y,A_z\n0,1,2,3\n0,1,2,3\n", "time does not increase"),
+        ("# units: mm\ntime,A_x,A_y,A_z\n0,1,2,3\n0,1,2,3\n", r"line 4: the time does not inc"),
     ],
 )
 def test_csv_errors_name_the_problem(tmp_path: Path, text: str, match: str) -> None:

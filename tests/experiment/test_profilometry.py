@@ -243,3 +243,13 @@ def test_a_bump_is_not_a_dent(small: Any) -> None:
     assert measure_dent(HeightMap(dusty, dx, dy)).delta_p.value == pytest.approx(
         truth.groove.depth, rel=0.02
     )
+
+
+def test_rectangular_pixels_as_the_command_line_writes_them() -> None:
+    """--pixel-size '2 um, 3 um' is (dx, dy), as the pair in Python."""
+    from impactlab.experiment.profilometry.heightmap import pixel_pair
+
+    assert pixel_pair("2 um, 3 um") == pixel_pair(("2 um", "3 um")) == (2e-6, 3e-6)
+    assert pixel_pair("(4 um, 4 um)") == pixel_pair("4 um")
+    with pytest.raises(ValueError, match="pixel_size must be one size or"):
+        pixel_pair("2 um, 3 um, 4 um")

@@ -109,7 +109,10 @@ def analyze_cmd(
         None, "--marker-units", help="Length unit of the marker coordinates when the file has none."
     ),
     pixel_size: str | None = typer.Option(
-        None, "--pixel-size", help="Pixel size of a plain height map ('2 um')."
+        None,
+        "--pixel-size",
+        help="Pixel size of a plain height map ('2 um'; rectangular pixels: '2 um, 3 um', x then "
+        "y).",
     ),
     height_unit: str | None = typer.Option(
         None, "--height-unit", help="Height unit of a plain height map ('um')."

@@ -126,9 +126,15 @@ def _unit(p: Path, units: str | None, meta: dict[str, str]) -> tuple[str, float]
 
 
 def _time(
-    p: Path, tcol: np.ndarray, is_frame: bool, rate: float | None, meta: dict[str, str]
+    p: Path,
+    tcol: np.ndarray,
+    is_frame: bool,
+    rate: float | None,
+    meta: dict[str, str],
+    lines: list[int],
 ) -> np.ndarray:
-    """Frame times [s] from the first column (times, or frame numbers with a rate)."""
+    """Frame times [s] from the first column (times, or frame numbers with a rate); ``lines``:
+    the file line of each data row, for messages."""
     if is_frame:
         fr = rate
         if fr is None and "rate" in meta:
@@ -142,8 +148,13 @@ def _time(
             )
         tcol = (tcol - tcol[0]) / fr
     if np.any(np.diff(tcol) <= 0):
-        row = int(np.flatnonzero(np.diff(tcol) <= 0)[0])
-        raise FileFormatError(p, f"time does not increase at data row {row + 2}")
+        row = int(np.flatnonzero(np.diff(tcol) <= 0)[0]) + 1
+        name = "the frame number" if is_frame else "the time"
+        raise FileFormatError(
+            p,
+            f"line {lines[row]}: {name} does not increase (line {lines[row - 1]} has the same "
+            "or a later one)",
+        )
     return tcol
 
 
@@ -172,7 +183,8 @@ def read_csv_markers(
     if data.shape[0] < 2:
         raise FileFormatError(p, f"only {data.shape[0]} data rows; need at least 2 frames")
     unit, fac = _unit(p, units, meta)
-    tcol = _time(p, data[:, 0], names[0].lower() == "frame", rate, meta)
+    lines = [ln for ln, _ in rows[1:]]
+    tcol = _time(p, data[:, 0], names[0].lower() == "frame", rate, meta, lines)
     xyz = data[:, 1:].reshape(data.shape[0], len(labels), 3) * fac
     return MarkerTracks(tcol, xyz, tuple(labels), str(p), {"format": "csv", "units": unit})
 

@@ -63,7 +63,9 @@ class HeightMap:
 
 def pixel_pair(pixel_size: Any) -> tuple[float, float]:
     """(dx, dy) [m] from one pixel size or a (dx, dy) pair (quantity strings such as "2 um",
-    metres for bare numbers)."""
+    metres for bare numbers; a pair also as one text, "2 um, 3 um": the command line's form)."""
+    if isinstance(pixel_size, str) and "," in pixel_size:
+        pixel_size = [p.strip() for p in pixel_size.strip().strip("()[]").split(",")]
     if isinstance(pixel_size, tuple | list):
         if len(pixel_size) != 2:
             raise ValueError(f"pixel_size must be one size or (dx, dy), got {pixel_size!r}")
