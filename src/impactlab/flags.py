@@ -83,11 +83,10 @@ class ResultFlag(enum.IntFlag):
     #: end (theta: the rod's angle to the flat, the one of touch or separation farther from
     #: 90 deg): the contact is no longer a sphere's on a flat, which every contact law assumes
     BEYOND_TIP = FLAG_BEYOND_TIP
-    #: the material that yields first (``ContactPair.weaker``) is brittle
-    #: (``Material.brittle``: its yield strength holds its compressive strength) and the
-    #: largest interference passed the pair's first yield (the law's delta_c; for Hertz the
-    #: Jackson-Green delta_c): such a material cracks rather than dents, and impactlab has no
-    #: fracture model
+    #: a brittle member of the pair (``Material.brittle``: its yield strength holds its
+    #: compressive strength) carried a mean contact pressure past its first yield, (2/3) C(nu)
+    #: S_y (``impactlab.contact.brittle``): such a material cracks rather than yields, and
+    #: impactlab has no fracture model
     BRITTLE = FLAG_BRITTLE
 
 
@@ -121,11 +120,11 @@ _MESSAGES: dict[ResultFlag, str] = {
         "angle or lower the impact velocity)"
     ),
     ResultFlag.BRITTLE: (
-        "brittle: the largest interference passed first yield (delta_max > delta_c) of a "
-        "brittle material, whose yield strength is its compressive strength; such a material "
-        "cracks rather than yields, and impactlab has no fracture model, so the dent, e and "
-        "the forces past first yield do not hold (treat them as a bound only; lower the "
-        "impact velocity to stay elastic)"
+        "brittle: the largest mean contact pressure passed the first yield of a brittle "
+        "member of the pair (body or flat), whose yield strength is its compressive strength; "
+        "such a material cracks rather than yields, and impactlab has no fracture model, so "
+        "the dent, e and the forces past first yield do not hold (treat them as a bound only; "
+        "lower the impact velocity to stay below it)"
     ),
     ResultFlag.LAW_EXTRAPOLATED: (
         "law extrapolated: the largest interference exceeded {what}{how_far}, so {so}; the "

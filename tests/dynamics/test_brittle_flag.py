@@ -1,9 +1,9 @@
 """An impact on a brittle material past its first yield is marked BRITTLE, never plain success:
 the library's tungsten carbide, alumina and glass carry their compressive strength as the yield
-strength, crack rather than yield, and impactlab has no fracture model. The material that
-yields first (the smaller yield strength) decides; the threshold is the law's first-yield
-interference (``contact.ranges.critical_interference``). ``simulate`` (both friction paths),
-batches, drops and sweeps alike."""
+strength, crack rather than yield, and impactlab has no fracture model. Every brittle member of
+the pair is checked (both carry the same pressure): the largest mean contact pressure against
+the mean pressure of a Hertzian contact at the member's first yield (``contact.brittle``).
+``simulate`` (both friction paths), batches, drops and sweeps alike."""
 
 from __future__ import annotations
 
@@ -17,22 +17,24 @@ from typer.testing import CliRunner
 
 import impactlab as il
 from impactlab.cli import app
-from impactlab.contact.ranges import brittle_flags, critical_interference
+from impactlab.contact.brittle import (
+    brittle_flags,
+    brittle_pressure,
+    first_yield_pressure,
+    mean_pressure,
+)
+from impactlab.contact.ranges import critical_interference
 from impactlab.dynamics.models import contact_model
 from impactlab.flags import FLAG_BRITTLE, ResultFlag, invalidating_names, messages
 from impactlab.materials import (
     AISI_201,
     AISI_1010,
-    AISI_52100,
-    ALUMINA_995,
     BRITTLE,
     PRESETS,
     SODA_LIME_GLASS,
     TUNGSTEN_CARBIDE,
-    ContactPair,
     Material,
     get_material,
-    yields_brittle,
 )
 
 ROD = il.Rod.paper()
@@ -66,25 +68,45 @@ def test_a_bad_brittle_value_is_refused_by_name() -> None:
         get_material("E=70GPa, nu=0.22, Sy=300MPa, rho=2500, brittle=maybe")
 
 
-def test_the_material_that_yields_first_decides() -> None:
-    assert yields_brittle(AISI_201, SODA_LIME_GLASS)  # glass 330 MPa < 760 MPa
-    assert ContactPair(AISI_201, SODA_LIME_GLASS).brittle
-    assert not yields_brittle(TUNGSTEN_CARBIDE, AISI_1010)  # the steel flat yields first
-    assert yields_brittle(AISI_52100, ALUMINA_995) is False  # 2.03 GPa < 3.0 GPa: the steel
+def test_every_brittle_member_counts() -> None:
+    """The lowest first-yield pressure of the brittle members; inf without one."""
+    glass = first_yield_pressure(SODA_LIME_GLASS)
+    assert glass == pytest.approx(2 / 3 * 1.295 * math.exp(0.736 * 0.23) * 330e6)
+    assert brittle_pressure(AISI_201, SODA_LIME_GLASS) == glass
+    assert brittle_pressure(SODA_LIME_GLASS, AISI_1010) == glass  # the flat yields first
+    assert brittle_pressure(SODA_LIME_GLASS, TUNGSTEN_CARBIDE) == glass
+    assert brittle_pressure(AISI_201, AISI_1010) == math.inf
 
 
 def test_the_threshold_is_first_yield() -> None:
-    """Just below the law's delta_ref nothing, just above BRITTLE; never for a tough pair."""
-    model = contact_model(ROD, SODA_LIME_GLASS, "ghaednia", None)
-    ref = critical_interference(model.law_id, model.params)
+    """For the brittle material that yields first, on the Hertzian branch, the pressure
+    criterion is delta_max > delta_c: just below nothing, just above BRITTLE."""
+    model = contact_model(ROD, SODA_LIME_GLASS, "hertz", None)
+    ref = critical_interference(model.law_id, model.params)  # Jackson-Green delta_c
+    limit = brittle_pressure(AISI_201, SODA_LIME_GLASS)
     below, above = ref * (1 - 1e-9), ref * (1 + 1e-9)
-    assert brittle_flags(model.law_id, model.params, below, True) == 0
-    assert brittle_flags(model.law_id, model.params, above, True) == FLAG_BRITTLE
-    assert brittle_flags(model.law_id, model.params, above, False) == 0
-    assert brittle_flags(model.law_id, model.params, math.nan, True) == 0
+    force = [float(model.force(np.array([d]))[0]) for d in (below, above)]
+    assert brittle_flags(model.law_id, model.params, below, force[0], limit) == 0
+    assert brittle_flags(model.law_id, model.params, above, force[1], limit) == FLAG_BRITTLE
+    assert brittle_flags(model.law_id, model.params, above, force[1], math.inf) == 0
+    assert brittle_flags(model.law_id, model.params, math.nan, math.nan, limit) == 0
     many = brittle_flags(model.law_id, model.params, np.array([below, above, above]),
-                         np.array([True, True, False]))  # fmt: skip
+                         np.array([force[0], force[1], force[1]]),
+                         np.array([limit, limit, math.inf]))  # fmt: skip
     np.testing.assert_array_equal(many, [0, FLAG_BRITTLE, 0])
+    pm = mean_pressure(model.law_id, model.params, above, force[1])
+    assert pm[0] == pytest.approx(limit, rel=1e-8)
+
+
+def test_a_glass_ball_on_steel_is_marked_a_carbide_ball_is_not() -> None:
+    """The steel flat yields first in both, but the glass ball carries the same pressure, far
+    past its strength; the carbide ball's strength is far above what the steel can carry."""
+    for mat, marked in ((SODA_LIME_GLASS, True), (TUNGSTEN_CARBIDE, False)):
+        ball = il.Sphere(radius=0.005, material=mat)
+        r = il.simulate(ball, AISI_1010, velocity=(0.0, -5.0))
+        assert (ResultFlag.BRITTLE in r.flags) is marked, mat.name
+        slow = il.simulate(ball, AISI_1010, velocity=(0.0, -0.05))
+        assert ResultFlag.BRITTLE not in slow.flags
 
 
 @pytest.mark.parametrize("law", ["ghaednia", "hertz", "kogut-komvopoulos"])
@@ -138,6 +160,14 @@ def test_a_sweep_marks_the_brittle_cases(tmp_path: Path) -> None:
     assert [bool(f & FLAG_BRITTLE) for f in flags] == [True, False]
     steel = ds["flags"].sel(flat_material="aisi-1010").values.astype(int)
     assert not np.any(steel & FLAG_BRITTLE)
+    balls = Study(
+        name="balls",
+        fixed={"body": "sphere", "radius": 0.005, "mu": 0.2, "flat_material": "aisi-1010"},
+        grid={"vy": [-5.0, -0.05], "body_material": ["soda-lime-glass", "tungsten-carbide"]},
+    )
+    ds = open_sweep(run_sweep(balls, tmp_path / "b.zarr", quiet=True).path)
+    bits = ds["flags"].transpose("body_material", "vy").values.astype(int) & FLAG_BRITTLE
+    np.testing.assert_array_equal(bits != 0, [[True, False], [False, False]])
 
 
 def test_the_flag_invalidates_and_explains_itself() -> None:

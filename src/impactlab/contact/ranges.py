@@ -48,7 +48,7 @@ from impactlab.contact.verified_ranges import (
     verified_cases,
     verified_upper,
 )
-from impactlab.flags import FLAG_BRITTLE, FLAG_LAW_EXTRAPOLATED
+from impactlab.flags import FLAG_LAW_EXTRAPOLATED
 
 
 class _Model(Protocol):
@@ -66,7 +66,6 @@ __all__ = [
     "STATUSES",
     "LawRange",
     "alias_range",
-    "brittle_flags",
     "calibrated_max",
     "critical_interference",
     "delta_ratio",
@@ -292,19 +291,6 @@ def extrapolation_flags(law_id: int, params: Any, delta_max: Any) -> Any:
     ratio = np.asarray(delta_ratio(law_id, params, delta_max))
     limit = range_limit(law_id, params)
     out = np.where(ratio > limit, FLAG_LAW_EXTRAPOLATED, 0).astype(np.int64)
-    return int(out) if out.ndim == 0 else out
-
-
-def brittle_flags(law_id: int, params: Any, delta_max: Any, brittle: Any) -> Any:
-    """``FLAG_BRITTLE`` where ``brittle`` (the material that yields first cracks rather than
-    yields: ``ContactPair.brittle``; a bool or a bool array) and ``delta_max`` [m] passed first
-    yield, ``delta_ref`` (:func:`critical_interference`), else 0 (int or int64 array; 0 for NaN
-    and for an unknown law)."""
-    if params is None or not 0 <= int(law_id) < k.N_LAWS or not np.any(brittle):
-        return 0 if np.ndim(delta_max) == 0 else np.zeros(np.shape(delta_max), dtype=np.int64)
-    ratio = np.asarray(delta_ratio(law_id, params, delta_max))
-    out = np.where(np.asarray(brittle, dtype=bool) & (ratio > 1.0), FLAG_BRITTLE, 0)
-    out = out.astype(np.int64)
     return int(out) if out.ndim == 0 else out
 
 

@@ -12,6 +12,7 @@ the batch.
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import numba
@@ -21,8 +22,9 @@ from impactlab._compile_notice import one_line
 from impactlab._validation import check_array
 from impactlab.bodies import NB
 from impactlab.bodies.layout import BP_HALF_LENGTH, BP_KIND, BP_RADIUS, KIND_ROD
+from impactlab.contact.brittle import brittle_flags
 from impactlab.contact.kernels import N_LAWS, NPARAM, param_length
-from impactlab.contact.ranges import brittle_flags, extrapolation_flags
+from impactlab.contact.ranges import extrapolation_flags
 from impactlab.contact.tabulate import has_table, with_table
 from impactlab.dynamics.core.batch import impact_batch
 from impactlab.dynamics.input_checks import check_rtol, gravity_value
@@ -67,7 +69,7 @@ def run_arrays(
     rtol: float | None = None,
     diagnostics: bool = False,
     tabulate: bool = True,
-    brittle: Any = False,
+    brittle_limit: Any = math.inf,
 ) -> tuple[np.ndarray, np.ndarray]:
     """Run N impacts in parallel.
 
@@ -82,9 +84,9 @@ def run_arrays(
     diagnostic outputs (energy_rise, friction_excess; NaN otherwise); tabulate : evaluate the
     law's loading curve from its table (``contact.table``, within 1e-13 of the closed form)
     where one parameter vector is shared by every case; per-case parameters (N, NPARAM) always
-    use the closed forms, as ``tabulate=False`` does for shared ones. brittle : the material
-    that yields first is brittle (``materials.yields_brittle``), for all cases or per case
-    ((N,) bools): BRITTLE is added where delta_max passed first yield.
+    use the closed forms, as ``tabulate=False`` does for shared ones. brittle_limit : the mean
+    contact pressure [Pa] a brittle member of the pair stands (``contact.brittle``), for all
+    cases or per case; inf (default): none is brittle.
 
     Returns ``(out, status)``: out (N, len(OUTPUT_FIELDS)) float64, status (N,) int32
     (0 = ok; ``STATUS_MESSAGES``). The ``regime`` column holds codes (``REGIME_NAMES``); the
@@ -139,7 +141,7 @@ def run_arrays(
                 bool(diagnostics), PARTIAL_SLIP_CELLS, out, status, slip_addresses(),
                 prepass_address(),
             )  # fmt: skip
-        _mark_law_flags(lid, lp, out, brittle)
+        _mark_law_flags(lid, lp, out, brittle_limit)
         _mark_reach(bp, init, out)
     elif n:
         impact_batch(
@@ -157,12 +159,13 @@ def run_arrays(
             out,
             status,
         )
-        _mark_law_flags(lid, lp, out, brittle)
+        _mark_law_flags(lid, lp, out, brittle_limit)
         _mark_reach(bp, init, out)
     return out, status
 
 
 _DMAX, _FLAGS = OUTPUT_FIELDS.index("delta_max"), OUTPUT_FIELDS.index("flags")
+_FMAX = OUTPUT_FIELDS.index("max_force")
 _ANGLE_OUT = OUTPUT_FIELDS.index("angle_out")
 #: (law id, parameter bytes) -> the parameters with their table (the last few, for repeated
 #: batches of one law: a sweep's chunks, a benchmark's repeats).
@@ -194,15 +197,17 @@ def _mark_reach(bp: np.ndarray, init: np.ndarray, out: np.ndarray) -> None:
 
 
 def _mark_law_flags(
-    law_id: int, law_params: np.ndarray, out: np.ndarray, brittle: Any = False
+    law_id: int, law_params: np.ndarray, out: np.ndarray, brittle_limit: Any = math.inf
 ) -> None:
     """Add ``LAW_EXTRAPOLATED`` to the ``flags`` column where a case's delta_max / delta_c
-    exceeds the law's (verified) range, and ``BRITTLE`` where ``brittle`` and delta_max passed
-    first yield (``contact.ranges``; vectorised, failed cases untouched)."""
+    exceeds the law's (verified) range (``contact.ranges``; vectorised), and ``BRITTLE`` where
+    its mean contact pressure exceeds ``brittle_limit`` (``contact.brittle``); failed cases
+    untouched."""
     done = np.isfinite(out[:, _FLAGS])
     dmax = np.where(done, out[:, _DMAX], np.nan)
+    limit = np.broadcast_to(np.asarray(brittle_limit, dtype=np.float64), done.shape)
     extra = extrapolation_flags(law_id, law_params, dmax) | brittle_flags(
-        law_id, law_params, dmax, np.broadcast_to(np.asarray(brittle, dtype=bool), done.shape)
+        law_id, law_params, dmax, out[:, _FMAX], limit
     )
     out[done, _FLAGS] = (
         out[done, _FLAGS].astype(np.int64) | np.broadcast_to(extra, done.shape)[done]

@@ -24,6 +24,7 @@ from impactlab.bodies import Rod
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.bodies.layout import BP_GSTAR
 from impactlab.contact import ContactModel
+from impactlab.contact.brittle import brittle_pressure
 from impactlab.contact.history_kernels import loading_contact_radius
 from impactlab.contact.range_note import range_note
 from impactlab.contact.ranges import extrapolation, range_status
@@ -77,7 +78,7 @@ from impactlab.friction import (
     PARTIAL_SLIP,
     PARTIAL_SLIP_CELLS,
 )
-from impactlab.materials import AISI_1010, Material, yields_brittle
+from impactlab.materials import AISI_1010, Material
 from impactlab.references import Reference
 
 __all__ = [
@@ -361,7 +362,7 @@ def simulate_drop(
         refs += get_rate_law(rate).references
     inputs = {"friction": fric.name, "mu": mu_v, "angle": th, "velocity_in": (vx, vy)}
     inputs |= {"spin_in": w, "gravity": g, "rtol": options[0]}
-    inputs["brittle"] = yields_brittle(bm.rigid.material, flat)
+    inputs["brittle"] = brittle_pressure(bm.rigid.material, flat)
     name = get_rate_law(rate).name if rate is not None else None
     result = _result(r, bm, model, inputs, (name, factor), tuple(dict.fromkeys(refs)))
     # what was simulated, checked, for DropResult.input (``dynamics.provenance``)

@@ -23,7 +23,8 @@ from impactlab.bodies import Rod
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.bodies.layout import BP_GSTAR
 from impactlab.contact import ContactModel
-from impactlab.contact.ranges import brittle_flags, delta_ratio, extrapolation_flags
+from impactlab.contact.brittle import brittle_flags, brittle_pressure
+from impactlab.contact.ranges import delta_ratio, extrapolation_flags
 from impactlab.dynamics.batch_status import BatchStatus, flag_column
 from impactlab.dynamics.drop import DEFAULT_T_MAX, MIN_APPROACH_SPEED
 from impactlab.dynamics.drop_body import body_model
@@ -58,7 +59,7 @@ from impactlab.dynamics.kernels.layout import MU_NEGLIGIBLE
 from impactlab.dynamics.models import body_params, contact_model, kernel_params, references_used
 from impactlab.dynamics.simulate_many import _batch_inputs
 from impactlab.friction import COULOMB, DEFAULT_MU, PARTIAL_SLIP
-from impactlab.materials import AISI_1010, Material, yields_brittle
+from impactlab.materials import AISI_1010, Material
 from impactlab.references import Reference
 from impactlab.references import dois as doi_list
 
@@ -294,8 +295,11 @@ def simulate_drops(
     dmax = out[:, F.O_DELTA_MAX]
     flags = np.where(done, np.nan_to_num(checks[:, CK_FLAGS]).astype(np.int64), 0)
     flags[done] |= np.asarray(extrapolation_flags(model.law_id, model.params, dmax[done]))
-    brittle = yields_brittle(bm.rigid.material, flat)
-    flags[done] |= np.asarray(brittle_flags(model.law_id, model.params, dmax[done], brittle))
+    limit = brittle_pressure(bm.rigid.material, flat)
+    fmax = out[:, F.O_MAX_FORCE]
+    flags[done] |= np.asarray(
+        brittle_flags(model.law_id, model.params, dmax[done], fmax[done], limit)
+    )
     refs = references_used(model, fric, bool(np.any(mu_run > 0.0))) + bm.references
     return DropBatchResult(
         out=out,

@@ -4,6 +4,7 @@ the result flags (docs/flexible.md, "Flags")."""
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from typing import Any
 
@@ -13,7 +14,8 @@ from impactlab._validation import check_positive
 from impactlab.bodies import Rod
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.contact import ContactModel
-from impactlab.contact.ranges import brittle_flags, law_extrapolated
+from impactlab.contact.brittle import brittle_flags
+from impactlab.contact.ranges import law_extrapolated
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.batch import sequence_flags
 from impactlab.dynamics.input_checks import check_mu, check_rtol
@@ -96,7 +98,7 @@ def drop_flags(
     model: ContactModel,
     contacts: np.ndarray,
     radius: float,
-    brittle: bool = False,
+    brittle_limit: float = math.inf,
 ) -> ResultFlag:
     """The result flags of a finished sequence (docs/flexible.md, "Flags") from its output
     vector ``out`` (``layout.DROP_FIELDS``) and its contact table: the rigid engine's criteria
@@ -108,15 +110,15 @@ def drop_flags(
     that flag says it), when the other end touched the flat or the tip still approaches it
     after the last contact (e < 0); BEYOND_TIP when the flat reached the rim of an end's
     hemisphere (``radius`` [m]) in a contact (``kernels.quality.beyond_rim``); BRITTLE when
-    ``brittle`` (the material that yields first) and the largest interference passed first
-    yield. The compiled part (``flexcore.batch.sequence_flags``) is the one ``simulate_drops``
-    runs."""
+    the largest mean contact pressure exceeds ``brittle_limit`` [Pa] (``contact.brittle``).
+    The compiled part (``flexcore.batch.sequence_flags``) is the one ``simulate_drops`` runs."""
     bits = sequence_flags(out, e0, m, g, rtol, contacts, contacts.shape[0], radius)
     flags = ResultFlag(int(bits))
     if law_extrapolated(model, float(out[F.O_DELTA_MAX])):
         flags |= ResultFlag.LAW_EXTRAPOLATED
-    if brittle:
-        flags |= brittle_flags(model.law_id, model.params, float(out[F.O_DELTA_MAX]), True)
+    if brittle_limit < math.inf:
+        dmax, fmax = float(out[F.O_DELTA_MAX]), float(out[F.O_MAX_FORCE])
+        flags |= brittle_flags(model.law_id, model.params, dmax, fmax, brittle_limit)
     return flags
 
 

@@ -17,12 +17,8 @@ import numpy as np
 
 from impactlab.bodies import Rod
 from impactlab.contact import ContactModel
-from impactlab.contact.ranges import (
-    brittle_flags,
-    critical_interference,
-    extrapolation,
-    extrapolation_flags,
-)
+from impactlab.contact.brittle import brittle_flags, brittle_pressure
+from impactlab.contact.ranges import critical_interference, extrapolation, extrapolation_flags
 from impactlab.dynamics.checks import ImpactInputs
 from impactlab.dynamics.kernels import layout as L
 from impactlab.dynamics.kernels import status as S
@@ -31,7 +27,6 @@ from impactlab.dynamics.results import History, ImpactResult, assemble_result
 from impactlab.dynamics.rod_reach import rod_reach_bits
 from impactlab.flags import FLAG_LAW_EXTRAPOLATED, ResultFlag
 from impactlab.friction import FrictionModel
-from impactlab.materials import yields_brittle
 from impactlab.references import Reference
 
 __all__ = ["engine_result", "impact_result", "status_error"]
@@ -117,13 +112,14 @@ def engine_result(
     velocity: tuple[float, float],
     spin: float,
     rod: tuple[float, float] | None = None,
-    brittle: bool = False,
+    brittle_limit: float = math.inf,
 ) -> ImpactResult:
     """The ``ImpactResult`` of the output row ``out`` and the history rows (None: no history
     kept) of an impact with ``model`` and ``friction`` (``references``: the sources used), from
     the checked inputs mu, angle [rad] (NaN for a sphere), velocity [m/s] and spin [rad/s];
     ``rod``: a rod's (L/2, R) [m], whose reach is checked (``rod_reach``; None: a sphere);
-    ``brittle``: the material that yields first is brittle (``materials.yields_brittle``)."""
+    ``brittle_limit`` [Pa]: the mean contact pressure a brittle member of the pair stands
+    (``contact.brittle.brittle_pressure``; inf: none is brittle)."""
     (e, e_energy, vx, vy, spin_out, delta_max, delta_p, sliding_length, contact_travel,
      duration, mean_force, max_force, normal_impulse, tangential_impulse, energy_dissipated,
      stick_time, regime, vn_in, vt_in, vn_out, vt_out, angle_out, t_max, n_steps,
@@ -131,8 +127,8 @@ def engine_result(
     bits = int(flags) | _law_flag(model, delta_max)
     if rod is not None:
         bits |= rod_reach_bits(rod[0], rod[1], angle, angle_out, delta_max)
-    if brittle:
-        bits |= brittle_flags(model.law_id, model.params, delta_max, True)
+    if brittle_limit < math.inf:
+        bits |= brittle_flags(model.law_id, model.params, delta_max, max_force, brittle_limit)
     return assemble_result(
         {  # every ImpactResult field, in field order
             "e": e,
@@ -188,5 +184,5 @@ def impact_result(x: ImpactInputs, out: np.ndarray, history: np.ndarray | None) 
         x.velocity,
         x.spin,
         (x.body.half_length, x.body.tip_radius) if isinstance(x.body, Rod) else None,
-        yields_brittle(x.body.material, x.flat),
+        brittle_pressure(x.body.material, x.flat),
     )

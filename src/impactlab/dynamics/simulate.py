@@ -22,6 +22,7 @@ from impactlab._validation import check_flag
 from impactlab.bodies import Rod, Sphere, lever_arms
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.contact import ContactModel
+from impactlab.contact.brittle import brittle_pressure
 from impactlab.dynamics.checks import ImpactInputs, check_impact
 from impactlab.dynamics.core.driver import impact
 from impactlab.dynamics.drop import simulate_drop
@@ -41,7 +42,7 @@ from impactlab.dynamics.partial_slip import simulate_partial_slip
 from impactlab.dynamics.provenance import SIMULATE_DROP, from_record, record_function
 from impactlab.dynamics.results import ImpactResult
 from impactlab.friction import DEFAULT_MU, FrictionKind
-from impactlab.materials import AISI_1010, G0, Material, yields_brittle
+from impactlab.materials import AISI_1010, G0, Material
 
 
 @overload
@@ -254,7 +255,7 @@ def _fast(
     rod = (body.half_length, body.tip_radius) if kind is Rod else None
     r = engine_result(
         out, hist, model, fric, refs_mu if m > 0.0 else refs, m, th_out, (vx, vy), w, rod,
-        yields_brittle(body.material, flat),
+        brittle_pressure(body.material, flat),
     )  # fmt: skip
     r.__dict__["_call"] = (body, flat, law, None, g, constant_angle, tol, None)  # as the full path
     return r

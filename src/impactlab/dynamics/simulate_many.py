@@ -12,6 +12,7 @@ from impactlab._validation import check_array, check_flag
 from impactlab.bodies import Rod, Sphere
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.contact import ContactModel
+from impactlab.contact.brittle import brittle_pressure
 from impactlab.contact.range_note import range_note
 from impactlab.contact.ranges import delta_ratio
 from impactlab.dynamics.batch import run_arrays
@@ -27,7 +28,7 @@ from impactlab.dynamics.kernels import layout as L
 from impactlab.dynamics.models import body_params, contact_model, references_used
 from impactlab.dynamics.results import BatchResult
 from impactlab.friction import DEFAULT_MU, get_friction
-from impactlab.materials import AISI_1010, Material, yields_brittle
+from impactlab.materials import AISI_1010, Material
 
 #: simulate_batch's array inputs and their units ("1": a plain number).
 _BATCH_UNITS = {"mu": "1", "angle": "rad", "vx": "m/s", "vy": "m/s", "spin": "rad/s"}
@@ -113,7 +114,7 @@ def simulate_batch(
         gravity=gravity,
         constant_angle=check_flag("constant_angle", constant_angle),
         rtol=rtol,
-        brittle=yields_brittle(body.material, flat),
+        brittle_limit=brittle_pressure(body.material, flat),
     )
     return BatchResult(
         out=out,

@@ -18,7 +18,6 @@ from impactlab.materials.core import (
     reduced_modulus,
     reduced_shear_modulus,
     summary_line,
-    yields_brittle,
 )
 from impactlab.materials.inputs import get_material, library_key
 from impactlab.materials.library import (
@@ -66,5 +65,4 @@ __all__ = [
     "reduced_modulus",
     "reduced_shear_modulus",
     "summary_line",
-    "yields_brittle",
 ]

@@ -64,9 +64,9 @@ class Material:
         values given by the user).
     note : what the source gives and how it was read (text).
     brittle : True for a material that cracks rather than yields (glass, ceramics, cemented
-        carbides): its ``yield_strength`` holds the compressive strength, and an impact that
-        passes first yield with it as the material that yields first is flagged
-        ``ResultFlag.BRITTLE`` (impactlab has no fracture model).
+        carbides): its ``yield_strength`` holds the compressive strength, and an impact whose
+        contact pressure passes its first yield is flagged ``ResultFlag.BRITTLE`` (impactlab
+        has no fracture model; ``impactlab.contact.brittle``).
 
     E, yield_strength, density and brinell_hardness are numbers in the units above, strings
     with units (``"200 GPa"``) or pint Quantities of any registry; nu and meyer_index are plain
@@ -183,12 +183,6 @@ def reduced_shear_modulus(a: Material, b: Material | None = None) -> float:
     return 1.0 / c
 
 
-def yields_brittle(body: Material, flat: Material) -> bool:
-    """True when the material that yields first (the smaller yield strength; the flat if
-    equal, as ``ContactPair.weaker``) is brittle."""
-    return body.brittle if body.yield_strength < flat.yield_strength else flat.brittle
-
-
 @dataclass(frozen=True)
 class ContactPair:
     """The two materials in contact: the impacting body's and the flat's.
@@ -231,11 +225,6 @@ class ContactPair:
     def nu(self) -> float:
         """Poisson's ratio of the material that yields first."""
         return self.weaker.nu
-
-    @property
-    def brittle(self) -> bool:
-        """True when the material that yields first is brittle (``Material.brittle``)."""
-        return yields_brittle(self.body, self.flat)
 
     def _derived(self) -> dict[str, float]:
         return {"E_star": self.E_star, "G_star": self.G_star, "yield_strength": self.yield_strength}

@@ -33,7 +33,7 @@ from impactlab.schema import DERIVED_FIELDS, SEQUENCE_FIELDS
 from impactlab.sweep.flexible import FLEXIBLE_BODY, evaluate_flexible, validate_flexible
 from impactlab.sweep.inputs import INTEGER_OUTPUTS, KINEMATIC_INPUTS
 from impactlab.sweep.material_inputs import validate_material_names
-from impactlab.sweep.models import Statics, brittle_cases, build_models
+from impactlab.sweep.models import Statics, brittle_limit, build_models
 from impactlab.sweep.status import (
     STATUS_BAD_BODY,
     STATUS_BAD_INPUT,
@@ -233,7 +233,6 @@ def evaluate(
         return np.ascontiguousarray(a[ok])
 
     law_id = _law_id(statics.categories["law"])
-    brittle = np.broadcast_to(brittle_cases(cases, statics), (n,))
     out, st = run_arrays(
         law_id,
         BATCH_FRICTION_IDS[statics.categories["friction"]],
@@ -241,7 +240,7 @@ def evaluate(
         sel(body_params),
         initial if all_ok else np.ascontiguousarray(initial[ok]),
         mu if all_ok else np.ascontiguousarray(mu[ok]),
-        brittle=brittle if all_ok else brittle[ok],
+        brittle_limit=brittle_limit(statics),
         **dict(statics.engine),
     )
     st = np.asarray(st, dtype=np.int32)

@@ -14,6 +14,7 @@ import numpy as np
 
 from impactlab.bodies import NB, PAPER_ROD, Rod, Sphere
 from impactlab.contact import get_law
+from impactlab.contact.brittle import first_yield_pressure
 from impactlab.contact.kernels import param_length
 from impactlab.dynamics.models import body_params, build_contact_model
 from impactlab.materials import Material, get_material
@@ -51,23 +52,16 @@ def material_for(side: str, preset: str, row: Mapping[str, float]) -> Material:
     return material_of(side, preset, _side(side, row))
 
 
-def brittle_cases(cases: Mapping[str, np.ndarray], statics: Statics) -> np.ndarray | bool:
-    """Per case, whether the material that yields first (``materials.yields_brittle``) is
-    brittle: a library material (or one given as text) by its ``brittle``, a material by
-    values never; False for the whole chunk where neither side is brittle."""
-    sy: dict[str, Any] = {}
-    brittle: dict[str, bool] = {}
-    for side in ("body", "flat"):
-        name = statics.categories[f"{side}_material"]
-        if name == CUSTOM:
-            sy[side] = np.asarray(cases[f"{side}_yield_strength"], dtype=np.float64)
-            brittle[side] = False
-        else:
-            mat = get_material(name, f"{side}_material")
-            sy[side], brittle[side] = mat.yield_strength, mat.brittle
-    if not (brittle["body"] or brittle["flat"]):
-        return False
-    return np.where(sy["body"] < sy["flat"], brittle["body"], brittle["flat"])
+def brittle_limit(statics: Statics) -> float:
+    """The mean contact pressure [Pa] a brittle member of the chunk's pair stands
+    (``contact.brittle.brittle_pressure``): a library material (or one given as text) by its
+    ``brittle``, a material by values never; inf when neither is brittle."""
+    mats = [
+        get_material(name, f"{side}_material")
+        for side in ("body", "flat")
+        if (name := statics.categories[f"{side}_material"]) != CUSTOM
+    ]
+    return min((first_yield_pressure(m) for m in mats if m.brittle), default=math.inf)
 
 
 def _body(cat: Mapping[str, str], row: Mapping[str, float], body_mat: Material) -> Rod | Sphere:
