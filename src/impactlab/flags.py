@@ -52,7 +52,9 @@ ENERGY_GAIN_RTOL_FACTOR = 100.0
 ENERGY_ROUNDOFF = 1e-10
 #: Gravity dominates when its impulse m g T exceeds this fraction of the contact's normal
 #: impulse P_n: gravity then accounts for up to that fraction of the change of the contact
-#: point's normal velocity; at the threshold it changes e by about 1 % (at most 1.3 %).
+#: point's normal velocity; at the threshold it changes e by about 1 % (at most 1.3 %) with
+#: Coulomb friction or none, and by up to 3.5 % with Mindlin's tangential stiffness
+#: (docs/engine/index.md, "Result flags").
 GRAVITY_IMPULSE_RATIO = 0.1
 
 

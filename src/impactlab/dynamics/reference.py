@@ -159,7 +159,7 @@ def _integrate(
 
 
 def _regime(P: ReferenceProblem, st: _Stats, t: float, vstar: float) -> int:
-    if P.fric == "none":
+    if P.fric == "none" or (P.fric == "impulse_ratio" and P.sir == 0.0):
         return 0
     if st.vs_pos > 1e-6 * vstar and st.vs_neg < -1e-6 * vstar:
         return 3

@@ -15,6 +15,7 @@ from impactlab.bodies import BP_GSTAR, BP_INERTIA, BP_MASS, Rod, Sphere
 from impactlab.contact import history_kernels as hk
 from impactlab.contact import kernels as k
 from impactlab.contact.base import ContactModel
+from impactlab.dynamics.kernels.friction import LEVER_ROUNDOFF
 from impactlab.dynamics.kernels.layout import MU_NEGLIGIBLE
 
 _contact_radius: Callable[..., float] = hk.contact_radius
@@ -261,10 +262,11 @@ class ReferenceProblem:
         """The friction mode at first touch (contact-point velocities vn0, vt0 [m/s])."""
         a0, b0 = self.a0, self.b0
         if self.fric == "impulse_ratio":
+            tol = LEVER_ROUNDOFF * (a0 * a0 + b0 * b0)  # as the compiled engine
             self.sir = (
                 -math.copysign(1.0, vt0)
                 if vt0 != 0.0
-                else (1.0 if a0 * b0 > 0.0 else (-1.0 if a0 * b0 < 0.0 else 0.0))
+                else (1.0 if a0 * b0 > tol else (-1.0 if a0 * b0 < -tol else 0.0))
             )
         elif self.fric == "coulomb":
             self.fm = (

@@ -266,7 +266,7 @@ def _regime(fric, md, acc, t, vn0):
     vs_neg = acc[A_VSNEG]
     sir = md[M_SIR]
     vtol = 1e-6 * abs(vn0)
-    if fric == FR_NONE:
+    if fric == FR_NONE or (fric == FR_IMPULSE and sir == 0.0):  # no tangential force at all
         return REGIME_FRICTIONLESS
     if vs_pos > vtol and vs_neg < -vtol:
         return REGIME_REVERSAL

@@ -31,7 +31,7 @@ from impactlab.contact.kernels import P_ESTAR, P_R
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.kinematics import stick_ratio
 from impactlab.dynamics.kernels._jit import njit_internal
-from impactlab.dynamics.kernels.friction import friction_switch, mindlin_trial_rate
+from impactlab.dynamics.kernels.friction import LEVER_ROUNDOFF, friction_switch, mindlin_trial_rate
 from impactlab.dynamics.kernels.layout import FR_COULOMB, FR_IMPULSE, FR_MINDLIN
 from impactlab.dynamics.kernels.normal import radius
 
@@ -144,8 +144,8 @@ def initial_mode(p, c, M, md, k, vt, vn, Jn, Jt):
         if vt != 0.0:
             md[k, F.MD_SIR] = -1.0 if vt > 0.0 else 1.0
         else:
-            r = stick_ratio(c, M, Jn, Jt, k)
-            md[k, F.MD_SIR] = 1.0 if r > 0.0 else (-1.0 if r < 0.0 else 0.0)
+            r = stick_ratio(c, M, Jn, Jt, k)  # zero within round-off: a vertical rod
+            md[k, F.MD_SIR] = 1.0 if r > LEVER_ROUNDOFF else (-1.0 if r < -LEVER_ROUNDOFF else 0.0)
     elif (
         fric == FR_MINDLIN
         and vt != 0.0

@@ -34,6 +34,12 @@ from impactlab.dynamics.kernels.normal import dforce_ddelta, dradius_ddelta, rad
 # --- kernels with named scalar arguments ----------------------------------------------------
 
 
+#: The lever arms' product a b [m^2] below this fraction of a^2 + b^2 is round-off: cos(pi/2)
+#: is 6e-17, not 0, so a vertical rod's a is about 1e-17 m; impulse_ratio then applies no
+#: tangential force, as for a sphere, instead of one of arbitrary sign.
+LEVER_ROUNDOFF = 1e-12
+
+
 @njit(cache=True, inline="always", error_model="numpy")
 def stick_force(spin, fn, a, b, mass, inertia, frozen):
     """Tangential force that keeps the contact point from slipping (d v_slip/dt = 0) [N].
@@ -177,9 +183,10 @@ def initial_friction_mode(fric, p, c, spin, vn0, vt0):
     if fric == FR_IMPULSE:
         if vt0 != 0.0:
             sir = -1.0 if vt0 > 0.0 else 1.0
-        else:
+        else:  # the sign of a b; zero within round-off (a vertical rod: a = (L/2) cos(pi/2))
             ab = c[C_A0] * c[C_B0]
-            sir = 1.0 if ab > 0.0 else (-1.0 if ab < 0.0 else 0.0)
+            tol = LEVER_ROUNDOFF * (c[C_A0] * c[C_A0] + c[C_B0] * c[C_B0])
+            sir = 1.0 if ab > tol else (-1.0 if ab < -tol else 0.0)
     elif fric == FR_COULOMB:
         if vt0 != 0.0:
             fm = 1.0 if vt0 > 0.0 else -1.0
