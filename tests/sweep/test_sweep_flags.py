@@ -42,10 +42,10 @@ def test_flags_are_stored_and_counted_although_not_kept(tmp_path) -> None:
 
 
 def test_run_summary_counts_flags(tmp_path, monkeypatch, capsys) -> None:
-    # the compiled engine: the paper's impulse-ratio friction gains energy at 90 degrees
+    # the compiled engine: the paper's impulse-ratio friction gains energy at 89 degrees
     f = tmp_path / "ir.toml"
     f.write_text(
-        "[fixed]\nangle = '90 deg'\nmu = 0.2\nvy = -1.41\nlaw = 'hertz'\n"
+        "[fixed]\nangle = '89 deg'\nmu = 0.2\nvy = -1.41\nlaw = 'hertz'\n"
         "[grid]\nfriction = ['coulomb', 'impulse_ratio']\n[outputs]\nkeep = ['e']\n"
     )
     monkeypatch.setattr(
