@@ -103,9 +103,10 @@ BY_NAME: dict[str, Display] = {
 
 def display_unit(name: str, si_unit: str) -> Display:
     """The display unit of field ``name`` whose SI unit is ``si_unit`` (unknown SI units are
-    shown as they are)."""
-    if name in BY_NAME and si_unit not in ("", "1", "-"):
-        return BY_NAME[name]
+    shown as they are); a material input ``body_E``, ``flat_E`` as ``E``."""
+    own = name if name in BY_NAME else name.removeprefix("body_").removeprefix("flat_")
+    if own in BY_NAME and si_unit not in ("", "1", "-"):
+        return BY_NAME[own]
     return BY_SI_UNIT.get(si_unit, Display(si_unit, 1.0))
 
 

@@ -200,3 +200,11 @@ def test_implausible_warnings_point_at_the_callers_line() -> None:
     with pytest.warns(ImplausibleInputWarning, match="too big") as rec:
         warn_implausible("too big")
     assert rec[0].filename == __file__
+
+
+def test_a_material_input_is_shown_in_its_propertys_unit() -> None:
+    """body_E and flat_E in GPa as E (a fitted modulus read 180496 MPa)."""
+    from impactlab._display import display_unit
+
+    assert display_unit("body_E", "Pa").unit == display_unit("E", "Pa").unit == "GPa"
+    assert display_unit("flat_yield_strength", "Pa").unit == "MPa"
