@@ -238,3 +238,17 @@ def test_an_analysed_experiment_is_appended(tmp_path):
     assert read_measurements(path).n_values == 6
     with pytest.raises(ValueError, match="has no kinematics"):
         append_experiment(path, SimpleNamespace(kinematics=None, errors={"markers": "x"}), "bad")
+
+
+def test_a_toml_unit_holds_for_the_quantitys_sigma_too(tmp_path):
+    """[units] delta_p = "um" reads delta_p_sigma in um as well (it was read in metres)."""
+    path = tmp_path / "drops.toml"
+    path.write_text(
+        '[units]\ndelta_p = "um"\nscar_length = "mm"\nscar_length_sigma = "um"\n'
+        '[[drop]]\nangle = "20 deg"\nvy = -1.41\nmu = 0.2\ndelta_p = 22\ndelta_p_sigma = 2.2\n'
+        "scar_length = 1.4\nscar_length_sigma = 140\n"
+    )
+    m = read_measurements(path)
+    assert m.sigma["delta_p"][0] == pytest.approx(2.2e-6)
+    assert m.observed["scar_length"][0] == pytest.approx(1.4e-3)
+    assert m.sigma["scar_length"][0] == pytest.approx(140e-6)  # its own unit wins

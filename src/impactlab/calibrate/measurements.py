@@ -231,7 +231,8 @@ def _parse_row(i: int, record: Mapping[str, Any], units: Mapping[str, str]) -> _
     label, cats, inputs, obs, sig = f"drop {i + 1}", {}, {}, {}, {}
     for key, v in record.items():
         name, unit = _split_header(str(key))
-        unit = unit or units.get(name)
+        # a TOML file's [units] entry of a quantity is its uncertainty's too
+        unit = unit or units.get(name) or units.get(name.removesuffix("_sigma"))
         if name in _LABEL_KEYS:
             if not _blank(v):
                 label = str(v).strip()

@@ -253,10 +253,10 @@ _HELP = {
     "diameter": "Rod diameter d, e.g. '12 mm' (bare number: m; optional): the mass follows from "
     "d, L and the material's density (with --mass too: checked to 2 %).",
     "material": "Body material: a library name (see 'impactlab materials'), properties "
-    "'E=200GPa, nu=0.3, Sy=760MPa, rho=7800kg/m^3' (HB=, n= optional) or a TOML file "
+    "'E=200GPa, nu=0.3, Sy=760MPa, rho=7800kg/m^3' (HB=, n=, brittle=yes optional) or a TOML file "
     "(default aisi-201).",
     "flat": "Flat material: a library name (see 'impactlab materials'), properties "
-    "'E=69GPa, nu=0.33, Sy=276MPa, rho=2700kg/m^3' (HB=, n= optional) or a TOML file "
+    "'E=69GPa, nu=0.33, Sy=276MPa, rho=2700kg/m^3' (HB=, n=, brittle=yes optional) or a TOML file "
     "(default aisi-1010).",
     "modes_axial": f"Flexible rod: axial modes (default {DEFAULT_N_AXIAL}, + 2 residual).",
     "modes_bending": f"Flexible rod: bending modes (default {DEFAULT_N_BENDING}).",
@@ -319,7 +319,10 @@ def simulate_cmd(
         False, "--plot", help="Save force-time, force-penetration, contact-path and dent figures."
     ),
     out: Path = typer.Option(
-        None, "--out", help="Folder for --plot and the JSON result (default: the current one)."
+        None,
+        "--out",
+        help="Folder of the --plot figures and their JSON result (only with --plot; default: "
+        "the current one).",
     ),
 ) -> None:
     """Simulate one impact and print its summary (display units: um, ms, deg; --json: SI);

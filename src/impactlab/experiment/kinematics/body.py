@@ -73,10 +73,10 @@ TILT_WARN_DEG = 2.0
 
 def suggested_up(measured_up: np.ndarray, exact: bool = False) -> str:
     """The ``up=`` argument for the measured upward unit vector: the camera axis it lies along
-    (within 25 deg), e.g. ``up='+z'``, else (and with ``exact``) the vector itself, with the
-    command line's form."""
+    (within ``TILT_WARN_DEG``, the tilt that draws a warning), e.g. ``up='+z'``, else (and
+    with ``exact``) the vector itself, with the command line's form."""
     k = int(np.argmax(np.abs(measured_up)))
-    if not exact and abs(measured_up[k]) >= math.cos(math.radians(25.0)):
+    if not exact and abs(measured_up[k]) >= math.cos(math.radians(TILT_WARN_DEG)):
         axis = f"{'+' if measured_up[k] > 0 else '-'}{'xyz'[k]}"
         return f"up='{axis}' (impactlab analyze --up {axis})"
     text = ", ".join(f"{v:.3f}" for v in measured_up)
