@@ -26,7 +26,7 @@ from impactlab.dynamics.result_display import ResultDisplay
 from impactlab.dynamics.results import ImpactResult
 from impactlab.sweep import Study
 from impactlab.sweep.engine import ENGINE, SEQUENCE_OUTPUTS
-from impactlab.sweep.runner import resolve_outputs
+from impactlab.sweep.study_meta import resolve_outputs
 
 KW = {"mu": 0.2, "angle": math.radians(40), "velocity": (0.0, -1.4)}
 

@@ -26,7 +26,7 @@ from impactlab.sweep import Normal, Sample, Study, SweepStore, open_sweep, run_s
 from impactlab.sweep.chunkfiles import ChunkWriter
 from impactlab.sweep.chunks import compute_chunk
 from impactlab.sweep.integrity import file_digest, marker_text
-from impactlab.sweep.runner import store_meta
+from impactlab.sweep.study_meta import store_meta
 
 
 def _grid() -> Study:

@@ -1,0 +1,66 @@
+"""What a study's store is made for: the outputs it keeps (checked against the evaluator), the
+values of its category inputs, and the store metadata (outputs, messages, the engine's
+identity and the study's hash)."""
+
+from __future__ import annotations
+
+from impactlab._version import __version__
+from impactlab.sweep.engine import SEQUENCE_OUTPUTS, Evaluator
+from impactlab.sweep.flexible import FLEXIBLE_BODY
+from impactlab.sweep.inputs import ALWAYS_STORED, CATEGORY_INPUTS, OUTPUT_ALIASES
+from impactlab.sweep.store import StoreMeta
+from impactlab.sweep.study import Study
+
+__all__ = ["category_values", "resolve_outputs", "store_meta"]
+
+
+def resolve_outputs(study: Study, evaluator: Evaluator) -> tuple[str, ...]:
+    """The outputs to keep, checked against what the evaluator provides."""
+    fields = tuple(evaluator.output_fields())
+    drops_only: tuple[str, ...] = ()
+    if FLEXIBLE_BODY not in category_values(study)["body"]:  # no drop: no sequence totals
+        drops_only = tuple(f for f in fields if f in SEQUENCE_OUTPUTS)
+        fields = tuple(f for f in fields if f not in SEQUENCE_OUTPUTS)
+    if study.outputs is None:
+        return fields
+    outs = tuple(OUTPUT_ALIASES.get(o, o) for o in study.outputs)
+    sequence = [o for o in outs if o in drops_only]
+    if sequence:
+        raise ValueError(
+            f"output(s) {sequence} are totals of a drop's sequence: a study gives them only "
+            f"with body = {FLEXIBLE_BODY!r} (a drop), and this study has no such body"
+        )
+    unknown = [o for o in outs if o not in fields]
+    if unknown:
+        raise ValueError(
+            f"unknown output(s) {unknown}; the engine provides: {', '.join(fields)} "
+            f"(aliases: {', '.join(f'{k}={v}' for k, v in OUTPUT_ALIASES.items())})"
+        )
+    return outs + tuple(o for o in ALWAYS_STORED if o in fields and o not in outs)
+
+
+def category_values(study: Study) -> dict[str, list[str]]:
+    """Every value each category input takes in the study."""
+    vals: dict[str, list[str]] = {}
+    for name in CATEGORY_INPUTS:
+        axis = next((a for a in study.axes if a.name == name), None)
+        if axis is not None:
+            vals[name] = [str(v) for v in axis.values]
+        else:
+            vals[name] = [str(study.value_of(name))]
+    return vals
+
+
+def store_meta(study: Study, evaluator: Evaluator) -> StoreMeta:
+    """The store metadata for ``study`` run by ``evaluator`` (hash includes the engine and the
+    impactlab version)."""
+    outputs = resolve_outputs(study, evaluator)
+    ident = f"{evaluator.identity}|impactlab {__version__}"
+    return StoreMeta(
+        study_hash=study.hash(ident),
+        outputs=outputs,
+        integer_outputs=tuple(o for o in evaluator.integer_outputs() if o in outputs),
+        status_messages=evaluator.status_messages(),
+        regimes=evaluator.regimes(),
+        engine=ident,
+    )
