@@ -213,6 +213,7 @@ def _result(
     inputs: dict[str, Any],
     rate: tuple[str | None, RateFactor | None],
     references: tuple[Reference, ...],
+    brittle_limit: float,
 ) -> DropResult:
     o: dict[str, Any] = {
         name: float(v) for name, v in zip(F.DROP_OUTPUT_FIELDS, r.out, strict=True)
@@ -220,7 +221,7 @@ def _result(
     m = bm.rigid.mass
     vx, vy = inputs["velocity_in"]
     e0 = float(initial_energy(m, bm.inertia, vx, vy, inputs["spin_in"]))
-    rtol, brittle = inputs.pop("rtol"), inputs.pop("brittle")
+    rtol = inputs.pop("rtol")
     check_energy_balance(o, e0, rtol)
     ratio, ratio_max = extrapolation(model.law_id, model.params, o["delta_max"])
     skip = {"vx_out", "vy_out", "n_contacts", "next_end", "n_steps", "n_jumps", "n_dents"}
@@ -241,7 +242,15 @@ def _result(
         strain_rate=rate[1].strain_rate if rate[1] is not None else math.nan,
         history=DropHistory(r.history) if r.history is not None else None,
         flags=drop_flags(
-            r.out, e0, m, inputs["gravity"], rtol, model, r.contacts, bm.rigid.tip_radius, brittle
+            r.out,
+            e0,
+            m,
+            inputs["gravity"],
+            rtol,
+            model,
+            r.contacts,
+            bm.rigid.tip_radius,
+            brittle_limit,
         ),
         max_delta_ratio=ratio,
         fitted_delta_ratio_max=ratio_max,
@@ -362,9 +371,9 @@ def simulate_drop(
         refs += get_rate_law(rate).references
     inputs = {"friction": fric.name, "mu": mu_v, "angle": th, "velocity_in": (vx, vy)}
     inputs |= {"spin_in": w, "gravity": g, "rtol": options[0]}
-    inputs["brittle"] = brittle_pressure(bm.rigid.material, flat)
     name = get_rate_law(rate).name if rate is not None else None
-    result = _result(r, bm, model, inputs, (name, factor), tuple(dict.fromkeys(refs)))
+    limit = brittle_pressure(bm.rigid.material, flat)
+    result = _result(r, bm, model, inputs, (name, factor), tuple(dict.fromkeys(refs)), limit)
     # what was simulated, checked, for DropResult.input (``dynamics.provenance``)
     drop_options = {"rate": name, "stop": stop, "t_max": options[1]}
     call = (body, flat, law, law_params, g, None, options[0], drop_options, SIMULATE_DROP)
