@@ -41,6 +41,8 @@ def first_yield_pressure(m: Material) -> float:
 def brittle_pressure(body: Material, flat: Material) -> float:
     """The lowest :func:`first_yield_pressure` [Pa] of the pair's brittle members; inf when
     neither is brittle."""
+    if not (body.brittle or flat.brittle):  # the common case, on simulate's fast path
+        return math.inf
     return min((first_yield_pressure(m) for m in (body, flat) if m.brittle), default=math.inf)
 
 
