@@ -61,8 +61,8 @@ def default_cache_root() -> Path:
 
 
 def source_hash(package: Path, sources: tuple[str, ...]) -> str:
-    """The first 16 hex digits of the SHA-256 of the ``.py`` files of ``sources`` (folders and
-    files relative to ``package``): their paths and bytes, in sorted order."""
+    """The first 16 hex digits of the SHA-256 of ``sources`` (relative to ``package``): the
+    ``.py`` files of a folder, a file as named; their paths and bytes, in sorted order."""
     files: list[Path] = []
     for name in sources:
         path = package / name

@@ -104,6 +104,28 @@ def test_changed_study_is_refused_or_restarted_explicitly(tmp_path, fake) -> Non
     assert (other / "notes.txt").read_text() == "keep me"
 
 
+def test_store_begun_by_other_code_is_refused_with_the_reason(
+    tmp_path, fake, monkeypatch
+) -> None:
+    store = tmp_path / "s.zarr"
+    with pytest.raises(RuntimeError):
+        run_sweep(grid_study(), store, evaluator=CrashingEvaluator(after=2), quiet=True)
+    engine = open_sweep(store).attrs["engine"]
+    assert engine.startswith(f"{fake.identity}|impactlab ") and "|code " in engine
+    # the same study, resumed after the code that computes results changed
+    monkeypatch.setattr("impactlab.sweep.study_meta.results_code_hash", lambda: "0" * 16)
+    with pytest.raises(StudyMismatchError, match="computed by other impactlab code") as info:
+        run_sweep(grid_study(), store, evaluator=fake, quiet=True)
+    assert engine in str(info.value) and "0" * 16 in str(info.value)
+    assert "--restart" in str(info.value)
+    # another study is still named as such
+    with pytest.raises(StudyMismatchError, match="holds a different study"):
+        run_sweep(grid_study(fixed={"vy": -2.0}), store, evaluator=fake, quiet=True)
+    fresh = run_sweep(grid_study(), store, evaluator=fake, quiet=True, restart=True)
+    assert fresh.stats.chunks_computed == fresh.stats.n_chunks
+    assert "0" * 16 in open_sweep(store).attrs["engine"]
+
+
 def test_process_pool_equals_in_process_run(tmp_path, fake) -> None:
     a = run_sweep(
         sample_study(size=600, chunk=100), tmp_path / "a.zarr", evaluator=fake, quiet=True

@@ -1,4 +1,4 @@
-"""Repairing a store's metadata on resume: result arrays whose ``zarr.json`` is gone are
+"""Resuming a store: why a store cannot be resumed by a study, and repairing its metadata: result arrays whose ``zarr.json`` is gone are
 created again (their chunk files, where still there, are kept), and an unreadable or deleted
 ``.sweep/study.json`` is written again, for the study the store was made for (same hash).
 
@@ -24,7 +24,28 @@ from impactlab.sweep.storebuild import (
 )
 from impactlab.sweep.study import Study
 
-__all__ = ["repair_metadata", "restore_study_record"]
+__all__ = ["mismatch_message", "repair_metadata", "restore_study_record"]
+
+
+def mismatch_message(
+    path: Path, old: str | None, attrs: dict[str, object], study: Study, meta: StoreMeta
+) -> str:
+    """Why the store at ``path`` (study hash ``old``, root attributes ``attrs``) cannot be
+    resumed by ``study`` under ``meta``: another study, or this study computed by other code
+    (its chunks and new ones would mix results of two versions)."""
+    engine = attrs.get("engine")
+    if isinstance(engine, str) and engine != meta.engine and study.hash(engine) == old:
+        return (
+            f"store {str(path)!r} holds this study, computed by other impactlab code (stored: "
+            f"{engine!r}; installed: {meta.engine!r}): its chunks and new ones would mix the "
+            f"results of two versions; finish it with the impactlab that began it, run with "
+            f"--restart to discard it and start fresh, or choose another --out"
+        )
+    return (
+        f"store {str(path)!r} holds a different study (hash {old}, this study "
+        f"{meta.study_hash}); run with --restart to discard it and start fresh, or "
+        f"choose another --out"
+    )
 
 
 def repair_metadata(

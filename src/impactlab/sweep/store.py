@@ -47,7 +47,7 @@ from impactlab.sweep.integrity import (
 )
 from impactlab.sweep.locking import acquire_lock, release_lock, stale, write_lock
 from impactlab.sweep.options import STUDY_FORMAT
-from impactlab.sweep.repair import repair_metadata, restore_study_record
+from impactlab.sweep.repair import mismatch_message, repair_metadata, restore_study_record
 from impactlab.sweep.storebuild import META, StoreMeta, build_store
 from impactlab.sweep.study import Study
 
@@ -269,14 +269,19 @@ class SweepStore:
             if not restart:
                 self.release()
                 raise StudyMismatchError(
-                    f"store {str(self.path)!r} holds a different study (hash {old}, this study "
-                    f"{meta.study_hash}); run with --restart to discard it and start fresh, or "
-                    f"choose another --out"
+                    mismatch_message(self.path, old, self._root_attrs(), study, meta)
                 )
             self.remove()
         if not self.create(study, meta):
             return self.prepare(study, meta)  # another process put a store there first
         return set()
+
+    def _root_attrs(self) -> dict[str, Any]:
+        """The root group's attributes as stored, unchecked ({} where they cannot be read)."""
+        try:
+            return dict(zarr.open_group(str(self.path), mode="r").attrs)
+        except Exception:  # noqa: BLE001 - a damaged store: nothing to explain from
+            return {}
 
     def _repaired_hash(
         self, problem: RepairableStoreError, study: Study, meta: StoreMeta, restart: bool

@@ -5,13 +5,14 @@ identity and the study's hash)."""
 from __future__ import annotations
 
 from impactlab._version import __version__
+from impactlab.sweep.code_identity import results_code_hash
 from impactlab.sweep.engine import SEQUENCE_OUTPUTS, Evaluator
 from impactlab.sweep.flexible import FLEXIBLE_BODY
 from impactlab.sweep.inputs import ALWAYS_STORED, CATEGORY_INPUTS, OUTPUT_ALIASES
 from impactlab.sweep.store import StoreMeta
 from impactlab.sweep.study import Study
 
-__all__ = ["category_values", "resolve_outputs", "store_meta"]
+__all__ = ["category_values", "engine_identity", "resolve_outputs", "store_meta"]
 
 
 def resolve_outputs(study: Study, evaluator: Evaluator) -> tuple[str, ...]:
@@ -51,11 +52,17 @@ def category_values(study: Study) -> dict[str, list[str]]:
     return vals
 
 
+def engine_identity(evaluator: Evaluator) -> str:
+    """What computes a store's results: the evaluator, the impactlab version and
+    ``results_code_hash`` (a store's chunks are all computed by the same code)."""
+    return f"{evaluator.identity}|impactlab {__version__}|code {results_code_hash()}"
+
+
 def store_meta(study: Study, evaluator: Evaluator) -> StoreMeta:
-    """The store metadata for ``study`` run by ``evaluator`` (hash includes the engine and the
-    impactlab version)."""
+    """The store metadata for ``study`` run by ``evaluator`` (hash includes the engine, the
+    impactlab version and the hash of the code that computes results)."""
     outputs = resolve_outputs(study, evaluator)
-    ident = f"{evaluator.identity}|impactlab {__version__}"
+    ident = engine_identity(evaluator)
     return StoreMeta(
         study_hash=study.hash(ident),
         outputs=outputs,
