@@ -104,9 +104,7 @@ def test_changed_study_is_refused_or_restarted_explicitly(tmp_path, fake) -> Non
     assert (other / "notes.txt").read_text() == "keep me"
 
 
-def test_store_begun_by_other_code_is_refused_with_the_reason(
-    tmp_path, fake, monkeypatch
-) -> None:
+def test_store_begun_by_other_code_is_refused_with_the_reason(tmp_path, fake, monkeypatch) -> None:
     store = tmp_path / "s.zarr"
     with pytest.raises(RuntimeError):
         run_sweep(grid_study(), store, evaluator=CrashingEvaluator(after=2), quiet=True)

@@ -46,6 +46,14 @@ def critical_ratio(a: Any, b: Any, k2: Any) -> Any:
     return a * b / (k2 + b * b)
 
 
+def jam_ratio(a: float, b: float, k2: float) -> float:
+    """The impulse ratio P_t / P_n (towards +x, dimensionless) from which a slipping contact
+    point is driven into the flat, c_n = k^2 + a^2 - ratio a b <= 0: (k^2 + a^2) / (a b), inf
+    where a b <= 0 (Painleve's paradox; Stewart 2000, doi:10.1137/S0036144599360110)."""
+    ab = a * b
+    return (k2 + a * a) / ab if ab > 0.0 else math.inf
+
+
 @dataclass(frozen=True)
 class RigidImpulse:
     """Outcome of :func:`rigid_impulse` (SI units).

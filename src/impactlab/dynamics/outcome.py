@@ -15,7 +15,9 @@ from operator import itemgetter
 
 import numpy as np
 
-from impactlab.bodies import Rod
+from impactlab.bodies import Rod, Sphere
+from impactlab.bodies.geometry import lever_arms
+from impactlab.bodies.impulse import jam_ratio
 from impactlab.contact import ContactModel
 from impactlab.contact.brittle import brittle_flags, brittle_pressure
 from impactlab.contact.ranges import critical_interference, extrapolation, extrapolation_flags
@@ -26,10 +28,10 @@ from impactlab.dynamics.models import references_used
 from impactlab.dynamics.results import History, ImpactResult, assemble_result
 from impactlab.dynamics.rod_reach import rod_reach_bits
 from impactlab.flags import FLAG_LAW_EXTRAPOLATED, ResultFlag
-from impactlab.friction import FrictionModel
+from impactlab.friction import FrictionKind, FrictionModel
 from impactlab.references import Reference
 
-__all__ = ["engine_result", "impact_result", "status_error"]
+__all__ = ["engine_result", "impact_result", "slip_jam", "status_error"]
 
 #: The output-row columns ``engine_result`` reads, in the order it unpacks them.
 _ROW = itemgetter(
@@ -65,16 +67,51 @@ def _law_flag(model: ContactModel, delta_max: float) -> int:
     return FLAG_LAW_EXTRAPOLATED if delta_max / ref > ratio_max else 0
 
 
+def slip_jam(
+    body: Rod | Sphere,
+    angle: float,
+    friction: FrictionModel,
+    mu: float,
+    velocity: tuple[float, float],
+    spin: float,
+) -> float | None:
+    """For the paper's ``impulse_ratio`` friction (F_t = mu F_n throughout, no stick): the ratio
+    ``jam_ratio`` (k^2 + a^2) / (a b) of a rod whose slipping contact point is driven into the
+    flat by the friction force's moment (Painleve's paradox: ``mu`` at or above that ratio, the
+    slip towards -x); None otherwise (another friction model, whose contact point can stick, a
+    sphere, a slip the other way, or ``mu`` below it). ``angle`` [rad], ``velocity`` (vx, vy)
+    [m/s], ``spin`` [rad/s]."""
+    if friction.kind is not FrictionKind.IMPULSE_RATIO or type(body) is not Rod:
+        return None
+    a, b = (float(x) for x in lever_arms(body.half_length, body.tip_radius, angle))
+    if velocity[0] + spin * b > 0.0:
+        return None  # friction towards +x: c_n = k^2 + a^2 + mu a b > 0
+    jam = jam_ratio(a, b, float(body.inertia) / float(body.mass))  # type: ignore[arg-type]
+    return jam if mu >= jam else None
+
+
 def status_error(
     status: int,
     model: ContactModel,
     prefix: str = "",
     vn: float | None = None,
     gravity: float | None = None,
+    jam: float | None = None,
 ) -> ValueError:
     """The ValueError of an impact that ended with engine ``status`` (not ``ST_OK``); ``vn``
-    [m/s] and ``gravity`` [m/s^2], where known, explain an impact that never separates."""
-    if status == S.ST_LAW_LIMIT:
+    [m/s] and ``gravity`` [m/s^2], where known, explain an impact that never separates; ``jam``
+    (``slip_jam``) one whose interference ran away under friction."""
+    if status == S.ST_LAW_LIMIT and jam is not None:
+        text = (
+            f"the interference exceeded {model.max_interference:.6g} m, the validity limit of "
+            f"the {model.name!r} law, because friction drove the tip into the flat: at this "
+            f"angle the friction force's moment pushes the slipping contact point in faster "
+            f"than the normal force pushes it out once mu >= (k^2 + a^2) / (a b) = "
+            f"{jam:.3g} under impulse_ratio's F_t = mu F_n (Painleve's paradox; Stewart 2000, "
+            f"doi:10.1137/S0036144599360110): lower mu below {jam:.3g}, or use friction "
+            f"'coulomb', whose contact point can stick"
+        )
+    elif status == S.ST_LAW_LIMIT:
         text = (
             f"the interference exceeded {model.max_interference:.6g} m, the validity limit of "
             f"the {model.name!r} law: lower the impact velocity or choose another law"

@@ -37,7 +37,7 @@ from impactlab.dynamics.models import (
     engine_setup,
     kernel_params,
 )
-from impactlab.dynamics.outcome import engine_result, impact_result, status_error
+from impactlab.dynamics.outcome import engine_result, impact_result, slip_jam, status_error
 from impactlab.dynamics.partial_slip import simulate_partial_slip
 from impactlab.dynamics.provenance import SIMULATE_DROP, from_record, record_function
 from impactlab.dynamics.results import ImpactResult
@@ -250,7 +250,8 @@ def _fast(
         False, out,
     )  # fmt: skip
     if status != S.ST_OK:
-        raise status_error(int(status), model, vn=vn, gravity=g)
+        jam = slip_jam(body, th, fric, m, (vx, vy), w)
+        raise status_error(int(status), model, vn=vn, gravity=g, jam=jam)
     hist = hist[:nh] if history else None
     rod = (body.half_length, body.tip_radius) if kind is Rod else None
     r = engine_result(
@@ -283,7 +284,8 @@ def _run_one(x: ImpactInputs, history: bool) -> ImpactResult:
         out,
     )
     if status != S.ST_OK:
-        raise status_error(int(status), x.model, vn=x.vn, gravity=x.gravity)
+        jam = slip_jam(x.body, x.angle, x.friction, x.mu, x.velocity, x.spin)
+        raise status_error(int(status), x.model, vn=x.vn, gravity=x.gravity, jam=jam)
     return impact_result(x, out, hist[:nh] if history else None)
 
 

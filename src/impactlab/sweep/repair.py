@@ -1,6 +1,7 @@
-"""Resuming a store: why a store cannot be resumed by a study, and repairing its metadata: result arrays whose ``zarr.json`` is gone are
-created again (their chunk files, where still there, are kept), and an unreadable or deleted
-``.sweep/study.json`` is written again, for the study the store was made for (same hash).
+"""Resuming a store: why a store cannot be resumed by a study, and repairing its metadata:
+result arrays whose ``zarr.json`` is gone are created again (their chunk files, where still
+there, are kept), and an unreadable or deleted ``.sweep/study.json`` is written again, for the
+study the store was made for (same hash).
 
 Only what the study itself defines is rewritten; no computed value is touched. The chunks
 whose files are gone no longer match their completion markers, so the resume that follows

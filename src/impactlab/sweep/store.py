@@ -280,7 +280,7 @@ class SweepStore:
         """The root group's attributes as stored, unchecked ({} where they cannot be read)."""
         try:
             return dict(zarr.open_group(str(self.path), mode="r").attrs)
-        except Exception:  # noqa: BLE001 - a damaged store: nothing to explain from
+        except Exception:  # a damaged store: nothing to explain from
             return {}
 
     def _repaired_hash(
