@@ -47,3 +47,22 @@ def test_recording_keeps_what_is_raised_inside_and_nothing_leaks():
             warnings.warn("hidden", UserWarning, stacklevel=1)
     assert [str(w.message) for w in caught] == ["advisory"]
     assert outside == []
+
+
+def test_sampling_leaves_the_process_wide_warning_filters_alone(template):
+    """The chain hides the floating-point warnings of refused proposals with numpy's per-thread
+    error state: a process-wide ``catch_warnings`` around it would restore the filters under a
+    context of another thread (a second chain on a threaded Dask worker)."""
+    import numpy as np
+
+    from impactlab.calibrate import CandidateModel, calibrate, parse_parameter
+    from impactlab.calibrate.synthetic import synthetic_measurements
+
+    mu = parse_parameter("mu", "uniform(0, 0.6)")
+    data = synthetic_measurements(template, CandidateModel(), [mu], [0.15],
+                                  np.random.default_rng(3))  # fmt: skip
+    filters = warnings.filters
+    seen: list[bool] = []
+    calibrate(data, [mu], ["ghaednia/coulomb"], walkers=8, steps=10, n_ppc=0,
+              progress=lambda *_: seen.append(warnings.filters is filters))  # fmt: skip
+    assert seen and all(seen)

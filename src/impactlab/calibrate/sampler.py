@@ -14,7 +14,6 @@ from __future__ import annotations
 
 import hashlib
 import json
-import warnings
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -99,8 +98,10 @@ def run_chain(
     if progress is not None:
         progress(post.model.name, done, steps)
     every = max(1, steps // 100)
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", RuntimeWarning)  # -inf log probabilities of refusals
+    # -inf log probabilities of refusals: numpy's floating-point state, which is per thread
+    # (warnings.catch_warnings is process-wide: chains on a threaded Dask worker undid each
+    # other's filters, and ArviZ's advisories reached the user)
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         for i, _ in enumerate(sampler.sample(start, iterations=max(steps - done, 0)), done + 1):
             if progress is not None and (i % every == 0 or i == steps):
                 progress(post.model.name, i, steps)
