@@ -129,3 +129,48 @@ def test_a_deleted_study_record_is_written_again_from_the_root_attributes(stores
     again = run_sweep(_study(), store, evaluator=FakeEvaluator(), quiet=True)
     assert again.stats.chunks_computed == 0
     assert store_files(store) == store_files(ref)
+
+
+@pytest.mark.parametrize(
+    ("damage", "needle"),
+    [
+        (lambda f: f.write_bytes(f.read_bytes()[:50]), "zarr.json is not valid JSON"),
+        (lambda f: f.write_bytes(b"\x00\xff junk"), "zarr.json is not text"),
+        (lambda f: f.unlink(), "zarr.json is missing"),
+    ],
+)
+def test_a_damaged_root_is_rewritten_from_the_study_record(stores, damage, needle) -> None:
+    """The root ``zarr.json`` holds the study's attributes: cut short, junk or gone, it is
+    written again from ``.sweep/study.json`` and the engine identity kept beside it, by a run
+    of the same study; every chunk is kept and the store reads as before."""
+    store, ref = stores
+    damage(store / "zarr.json")
+    _same_diagnosis(store, needle)
+    again = run_sweep(_study(), store, evaluator=FakeEvaluator(), quiet=True)
+    assert again.stats.chunks_computed == 0 and again.stats.chunks_before == 2
+    assert open_sweep(store).attrs == open_sweep(ref).attrs
+    np.testing.assert_array_equal(open_sweep(store)["e"].values, open_sweep(ref)["e"].values)
+
+
+def test_a_damaged_root_is_not_rewritten_for_another_study_or_other_code(
+    stores, monkeypatch
+) -> None:
+    store, _ = stores
+    (store / "zarr.json").write_bytes(b"{")
+    with pytest.raises(StudyMismatchError, match="holds a different study"):
+        run_sweep(_study(vy=-2.0), store, evaluator=FakeEvaluator(), quiet=True)
+    monkeypatch.setattr("impactlab.sweep.study_meta.results_code_hash", lambda: "0" * 16)
+    with pytest.raises(StudyMismatchError, match="computed by other impactlab code"):
+        run_sweep(_study(), store, evaluator=FakeEvaluator(), quiet=True)
+    assert (store / "zarr.json").read_bytes() == b"{"  # nothing rewritten
+    assert not (store / ".sweep" / "lock").exists()
+    fresh = run_sweep(_study(), store, evaluator=FakeEvaluator(), quiet=True, restart=True)
+    assert fresh.stats.chunks_computed == fresh.stats.n_chunks
+
+
+def test_a_damaged_root_and_record_still_needs_a_restart(stores) -> None:
+    store, _ = stores
+    (store / "zarr.json").write_bytes(b"{")
+    (store / ".sweep" / "study.json").write_bytes(b"{")
+    with pytest.raises(CorruptStoreError, match="--restart"):
+        run_sweep(_study(), store, evaluator=FakeEvaluator(), quiet=True)

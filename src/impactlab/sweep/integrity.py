@@ -39,16 +39,23 @@ class CorruptStoreError(ValueError):
 
 class RepairableStoreError(CorruptStoreError):
     """Metadata that a resume of the same study rewrites: result arrays (a kept output,
-    ``status``) whose ``zarr.json`` is gone (``missing_arrays``), or a ``.sweep/study.json``
-    that is not a JSON object (``study_record``: what is wrong with it, or None). The intact
-    chunks are kept; those whose files are gone are computed again."""
+    ``status``) whose ``zarr.json`` is gone (``missing_arrays``), a ``.sweep/study.json``
+    that is not a JSON object (``study_record``: what is wrong with it, or None), or the root's
+    ``zarr.json`` (``root``: what is wrong with it, or None; rewritten from the study record and
+    the engine identity kept in ``.sweep/zarr.json``). The intact chunks are kept; those whose
+    files are gone are computed again."""
 
     def __init__(
-        self, message: str, missing_arrays: tuple[str, ...], study_record: str | None
+        self,
+        message: str,
+        missing_arrays: tuple[str, ...],
+        study_record: str | None,
+        root: str | None = None,
     ) -> None:
         super().__init__(message)
         self.missing_arrays = missing_arrays
         self.study_record = study_record
+        self.root = root
 
 
 def digest(data: Any) -> str:
@@ -168,6 +175,18 @@ def _study_record_problem(root: Path) -> str | None:
     return None if isinstance(record, dict) else "is not a JSON object"
 
 
+def recorded_engine(root: Path) -> str | None:
+    """The engine identity a store keeps beside its study record (the attribute ``engine`` of
+    ``.sweep/zarr.json``), where that and a readable ``.sweep/study.json`` are there; else None
+    (a store written before the identity was kept there, or its bookkeeping damaged too)."""
+    if _study_record_problem(root) is not None or not (root / ".sweep" / "study.json").is_file():
+        return None
+    meta, problem = _read_json(root / ".sweep" / "zarr.json")
+    attrs = meta.get("attributes") if problem is None and isinstance(meta, dict) else None
+    engine = attrs.get("engine") if isinstance(attrs, dict) else None
+    return engine if isinstance(engine, str) else None
+
+
 def _corrupt(root: Path, node: Path, why: str) -> CorruptStoreError:
     return CorruptStoreError(
         f"sweep store {str(root)!r} is damaged: {node.relative_to(root).as_posix()} {why}; "
@@ -183,6 +202,15 @@ def check_metadata(path: str | Path) -> None:
     root = Path(path)
     f = root / "zarr.json"
     why = _node_problem(f) if f.exists() else "is missing"
+    if why is not None and recorded_engine(root) is not None:
+        raise RepairableStoreError(
+            f"sweep store {str(root)!r} is damaged: zarr.json {why}; run the same study into it "
+            f"again (impactlab sweep run STUDY.toml --out {root}) to rewrite it from the study "
+            "record (.sweep/study.json): the chunks are kept (--restart would discard them all)",
+            (),
+            None,
+            why,
+        )
     if why is not None:
         raise _corrupt(root, f, why)
     results = _result_arrays(root)

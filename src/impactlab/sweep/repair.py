@@ -15,7 +15,7 @@ from pathlib import Path
 
 import zarr
 
-from impactlab.sweep.integrity import RepairableStoreError
+from impactlab.sweep.integrity import RepairableStoreError, recorded_engine
 from impactlab.sweep.storebuild import (
     META,
     StoreMeta,
@@ -25,7 +25,7 @@ from impactlab.sweep.storebuild import (
 )
 from impactlab.sweep.study import Study
 
-__all__ = ["mismatch_message", "repair_metadata", "restore_study_record"]
+__all__ = ["mismatch_message", "repair_metadata", "restore_study_record", "root_mismatch"]
 
 
 def mismatch_message(
@@ -47,6 +47,24 @@ def mismatch_message(
         f"{meta.study_hash}); run with --restart to discard it and start fresh, or "
         f"choose another --out"
     )
+
+
+def root_mismatch(path: Path, study: Study, meta: StoreMeta) -> str | None:
+    """Why the root ``zarr.json`` of the store at ``path`` (gone or unreadable) must not be
+    rewritten for ``study`` under ``meta`` (``mismatch_message``: its study record holds another
+    study, or the engine identity kept beside it is not the installed one), or None."""
+    engine = recorded_engine(path)
+    try:
+        recorded = Study.from_dict(json.loads((path / META / "study.json").read_text()))
+    except Exception as exc:  # a record that no longer reads as a study: not this one
+        return (
+            f"store {str(path)!r} is damaged (its zarr.json) and its study record cannot be "
+            f"read as a study ({exc}); run with --restart to discard it and start fresh"
+        )
+    old = recorded.hash(engine or "")
+    if engine == meta.engine and old == meta.study_hash:
+        return None
+    return mismatch_message(path, old, {"engine": engine}, study, meta)
 
 
 def repair_metadata(

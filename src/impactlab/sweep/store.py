@@ -44,11 +44,17 @@ from impactlab.sweep.integrity import (
     check_metadata,
     damaged_error,
     marker_text,
+    recorded_engine,
 )
 from impactlab.sweep.locking import acquire_lock, release_lock, stale, write_lock
 from impactlab.sweep.options import STUDY_FORMAT
-from impactlab.sweep.repair import mismatch_message, repair_metadata, restore_study_record
-from impactlab.sweep.storebuild import META, StoreMeta, build_store
+from impactlab.sweep.repair import (
+    mismatch_message,
+    repair_metadata,
+    restore_study_record,
+    root_mismatch,
+)
+from impactlab.sweep.storebuild import META, StoreMeta, build_store, rewrite_root
 from impactlab.sweep.study import Study
 
 __all__ = [
@@ -60,7 +66,6 @@ __all__ = [
     "StudyMismatchError",
     "SweepStore",
     "check_metadata",
-    "export_netcdf",
     "open_sweep",
 ]
 
@@ -93,7 +98,10 @@ class SweepStore:
         return self._meta / "lock"
 
     def exists(self) -> bool:
-        return (self.path / "zarr.json").is_file() and (self._meta / "study.json").is_file()
+        """A store, built to its study record (written after the root's ``zarr.json``)."""
+        return (self._meta / "study.json").is_file() and (
+            (self.path / "zarr.json").is_file() or recorded_engine(self.path) is not None
+        )
 
     def done_chunks(self) -> set[int]:
         """Indices of the chunks whose completion marker exists (intact or not: ``verify``)."""
@@ -136,7 +144,7 @@ class SweepStore:
         return dict(zarr.open_group(str(self.path), mode="r").attrs)
 
     def study_hash(self) -> str | None:
-        if not (self.path / "zarr.json").is_file():
+        if not self.exists():
             return None
         h = self.attrs().get("study_hash")
         return None if h is None else str(h)
@@ -289,6 +297,19 @@ class SweepStore:
         """The study hash of a store whose result arrays or study record need rewriting
         (``repair_metadata``): repaired when it holds this study (not on ``restart``, which
         starts it fresh); another study's store is left as it is."""
+        if problem.root is not None:  # rewritten from the study record, for this study only
+            if restart:
+                return None
+            why = root_mismatch(self.path, study, meta)
+            if why is not None:
+                self.release()
+                raise StudyMismatchError(why)
+            rewrite_root(self.path, study, meta)
+            self._metadata_checked = False
+            try:
+                return self.study_hash()
+            except RepairableStoreError as more:
+                return self._repaired_hash(more, study, meta, restart)
         raw = zarr.open_group(str(self.path), mode="r").attrs.get("study_hash")
         old = None if raw is None else str(raw)
         if restart or old != meta.study_hash:
@@ -357,7 +378,7 @@ def open_sweep(path: str | Path, *, verify: bool = True) -> xr.Dataset:
         damaged store (``DamagedStoreError`` naming the chunks; a resume recomputes them).
     """
     p = Path(path)
-    if not (p / "zarr.json").is_file():
+    if not (p / "zarr.json").is_file() and not SweepStore(p).exists():
         raise ValueError(f"{str(p)!r} is not a sweep store (no zarr.json)")
     check_metadata(p)
     if verify:
@@ -376,23 +397,3 @@ def open_sweep(path: str | Path, *, verify: bool = True) -> xr.Dataset:
     order = [*ds.attrs.get("outputs", []), "status"]
     names = [v for v in order if v in ds.data_vars] + [v for v in ds.data_vars if v not in order]
     return ds[names]
-
-
-def export_netcdf(ds: xr.Dataset, path: str | Path) -> Path:
-    """Write the Dataset to NetCDF-4 (strings kept; dictionary attributes become JSON text)."""
-    out = Path(path)
-
-    def attrs(a: Mapping[str, Any]) -> dict[str, Any]:
-        return {k: json.dumps(v) if isinstance(v, dict) else v for k, v in a.items()}
-
-    def plain(var: xr.Variable) -> xr.Variable:
-        values = var.values
-        if values.dtype.kind == "T":  # numpy StringDType -> fixed-width unicode
-            values = np.array(values.tolist(), dtype=str)
-        return xr.Variable(var.dims, values, attrs(var.attrs))
-
-    loaded = ds.load()
-    coords = {str(k): plain(v.variable) for k, v in loaded.coords.items()}
-    data = {str(k): plain(v.variable) for k, v in loaded.data_vars.items()}
-    xr.Dataset(data, coords=coords, attrs=attrs(loaded.attrs)).to_netcdf(out, engine="netcdf4")
-    return out

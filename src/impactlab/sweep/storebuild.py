@@ -290,11 +290,26 @@ def build_store(path: Path, study: Study, meta: StoreMeta) -> None:
         META,
         attributes={
             "description": "impactlab sweep bookkeeping: "
-            "study.json and per-chunk completion markers"
+            "study.json and per-chunk completion markers",
+            "engine": meta.engine,  # with study.json: the root's attributes can be rewritten
         },
     )
     (path / META / "done").mkdir(parents=True, exist_ok=True)
     write_study_record(path, study)
+    consolidate(path)
+
+
+def rewrite_root(path: Path, study: Study, meta: StoreMeta) -> None:
+    """Write the root ``zarr.json`` of the store at ``path`` again (gone or unreadable): a Zarr
+    group with the attributes ``build_store`` gave it, over the arrays that are there, and the
+    consolidated metadata. The caller holds the lock and has checked that the store holds
+    ``study`` computed by ``meta.engine``."""
+    (path / "zarr.json").unlink(missing_ok=True)
+    g = zarr.open_group(str(path), mode="a", zarr_format=3)
+    coords = list(study.sample.inputs) if study.sample is not None else []
+    coords += [name for name, _ in _constants(study)]
+    coords += [name for name, *_ in resolved_material_values(study)]
+    g.attrs.update(_root_attrs(study, meta, _status_messages(meta), coords))
     consolidate(path)
 
 
