@@ -86,12 +86,24 @@ def _one_number_one_unit(name: str, text: str, q: Any, unit: str) -> None:
         )
 
 
+def refuse_comma(name: str, text: str, unit: str) -> None:
+    """ValueError naming ``name`` when the quantity text ``text`` holds a comma: pint drops it
+    as a thousands separator, so a decimal comma ``"2,5 mm"`` would read as 25 mm."""
+    if "," in text:
+        example = text.strip().replace(",", ".") if text.count(",") == 1 else f"2.5 {unit}"
+        raise ValueError(
+            f"{name}: {text!r} holds a comma; write one quantity with a decimal point, e.g. "
+            f"'{example}' (a comma would be read as a thousands separator: '2,5' as 25)"
+        )
+
+
 def _parse(name: str, text: str, unit: str) -> Any:
     """``text`` as a Quantity of impactlab's registry (one number and its unit:
     ``_one_number_one_unit``); ValueError naming ``name``."""
     text = text.strip()
     if not text:
         raise ValueError(f"{name} is empty; expected a quantity in {unit}, e.g. '1.0 {unit}'")
+    refuse_comma(name, text, unit)
     try:
         q: Any = registry().Quantity(text)
     except Exception as exc:  # pint's parser raises several unrelated types
@@ -208,4 +220,12 @@ def angle_to_rad(value: Any, *, name: str = "angle") -> float:
     return to_si(value, "degree", name=name)
 
 
-__all__ = ["angle_to_rad", "has_unit", "is_quantity", "magnitude", "registry", "to_si"]
+__all__ = [
+    "angle_to_rad",
+    "has_unit",
+    "is_quantity",
+    "magnitude",
+    "refuse_comma",
+    "registry",
+    "to_si",
+]

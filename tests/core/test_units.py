@@ -106,6 +106,9 @@ def test_magnitude_refuses_what_is_not_a_quantity_of_the_unit(value: object, mat
         ("angle", "20 deg deg", "rad", "dimensionless units .* to the power 2"),  # pint: deg^2
         ("length", "5 deg m", "m", "dimensionless units .* to the power 1"),
         ("angle", "20 percent", "rad", r"is a pure number \(20 %\).*'1.0 rad'"),
+        ("radius", "2,5 mm", "m", "holds a comma.*'2.5 mm'"),  # pint: 25 mm
+        ("angle", "2,0 deg", "rad", "holds a comma.*'2.0 deg'"),  # pint: 20 deg
+        ("mass", "1,000.5 kg", "kg", "holds a comma"),  # pint: 1000.5 kg
     ],
 )
 def test_text_is_one_number_and_one_unit(name: str, text: str, unit: str, match: str) -> None:
@@ -208,3 +211,12 @@ def test_a_material_input_is_shown_in_its_propertys_unit() -> None:
 
     assert display_unit("body_E", "Pa").unit == display_unit("E", "Pa").unit == "GPa"
     assert display_unit("flat_yield_strength", "Pa").unit == "MPa"
+
+
+def test_a_decimal_comma_in_a_study_file_is_refused(tmp_path) -> None:
+    from impactlab.sweep import load_study
+
+    f = tmp_path / "s.toml"
+    f.write_text('[fixed]\nvy = "-1,41 m/s"\nmu = 0.2\n[grid]\nangle = ["20 deg", "45 deg"]\n')
+    with pytest.raises(ValueError, match=r"vy: '-1,41 m/s' holds a comma.*'-1.41 m/s'"):
+        load_study(f)

@@ -35,6 +35,7 @@ from impactlab.sweep.options import (
     EngineOptions,
     UncertaintySpec,
 )
+from impactlab.units import refuse_comma
 from impactlab.units import registry as units_registry
 
 _TABLES = (
@@ -168,6 +169,8 @@ def _quantity(value: Any, unit: str, bare_unit: str | None, label: str) -> float
             f"'{str(value).strip()} deg' (or unit = 'deg' in the input's table)"
         )
     bare = bare_unit or unit  # None: refused above for a bare number
+    if isinstance(value, str):
+        refuse_comma(label, value, unit)
     try:
         if isinstance(value, str):
             q = ureg.Quantity(value.strip())
