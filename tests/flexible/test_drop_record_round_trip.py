@@ -163,3 +163,30 @@ def test_cli_drop_stop(tmp_path, monkeypatch, capsys) -> None:
     assert json.loads(again)["n_contacts"] == api.n_contacts
     code, _, err = _cli(monkeypatch, capsys, *base, "--stop", "landing")
     assert code != 0 and "stop must be one of" in err and len(err.strip().splitlines()) == 1
+
+
+def test_a_rate_law_of_ones_own_constants_travels_with_the_record(monkeypatch, capsys) -> None:
+    """A ``RateLaw.custom`` is recorded with its constants (the library law by its name), shown
+    with them, and runs again to the same numbers (it ran with the library's constants)."""
+    from impactlab.contact.rate import RateLaw
+
+    own = RateLaw.custom("cowper-symonds", D=6500.0, q=4.0)
+    kw = {"law": "ghaednia", "mu": 0.2, "angle": "20 deg", "velocity": (0.0, -1.41)}
+    r = simulate_drop(FLEX, il.AISI_1010, rate=own, **kw)
+    library = simulate_drop(FLEX, il.AISI_1010, rate="cowper-symonds", **kw)
+    assert r.rate == "cowper-symonds (D = 6500 1/s, q = 4)" and library.rate == "cowper-symonds"
+    assert r.rate_factor != library.rate_factor
+    d = json.loads(json.dumps(r.to_dict()))
+    rec = d["input"]
+    assert shape_problems(rec) == [] and library.to_dict()["input"]["rate"] == "cowper-symonds"
+    assert rec["rate"]["form"] == "cowper-symonds"
+    assert rec["rate"]["parameters"] == {"D": {"value": 6500.0, "unit": "1/s"},
+                                         "q": {"value": 4.0, "unit": "1"}}  # fmt: skip
+    again = il.rerun(d)
+    _same(again, r)
+    assert again.rate_factor == r.rate_factor and again.rate == r.rate
+    rec["rate"]["parameters"]["D"] = {"value": 6.5, "unit": "1/ms"}  # edited by hand
+    assert il.rerun(d).rate_factor == r.rate_factor
+    rec["rate"] = {"form": "cowper-symonds"}
+    with pytest.raises(ValueError, match="is not a rate law: expected 'form' and 'parameters'"):
+        il.rerun(d)

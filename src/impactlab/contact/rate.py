@@ -204,6 +204,19 @@ class RateLaw:
         return johnson_cook(rate, p["C"], p["rate0"])
 
     @property
+    def label(self) -> str:
+        """The law's name where it is the library's law of that name, else the name with its
+        constants (``"cowper-symonds (D = 6500 1/s, q = 4)"``): what a result shows."""
+        if RATE_LAWS.get(self.name) == self:
+            return self.name
+        units = {"D": " 1/s", "rate0": " 1/s"}
+        return (
+            f"{self.name} ("
+            + ", ".join(f"{k} = {v:g}{units.get(k, '')}" for k, v in self.parameters)
+            + ")"
+        )
+
+    @property
     def references(self) -> tuple[Reference, ...]:
         """The law's sources (law, parameters, strain-rate estimate)."""
         return tuple(RATE_REFERENCES[k] for k in (*self.reference_keys, "tabor-1951"))

@@ -371,11 +371,12 @@ def simulate_drop(
         refs += get_rate_law(rate).references
     inputs = {"friction": fric.name, "mu": mu_v, "angle": th, "velocity_in": (vx, vy)}
     inputs |= {"spin_in": w, "gravity": g, "rtol": options[0]}
-    name = get_rate_law(rate).name if rate is not None else None
+    rate_law = get_rate_law(rate) if rate is not None else None
+    name = rate_law.label if rate_law is not None else None
     limit = brittle_pressure(bm.rigid.material, flat)
     result = _result(r, bm, model, inputs, (name, factor), tuple(dict.fromkeys(refs)), limit)
     # what was simulated, checked, for DropResult.input (``dynamics.provenance``)
-    drop_options = {"rate": name, "stop": stop, "t_max": options[1]}
+    drop_options = {"rate": rate_law, "stop": stop, "t_max": options[1]}
     call = (body, flat, law, law_params, g, None, options[0], drop_options, SIMULATE_DROP)
     object.__setattr__(result, "_call", call)
     return result

@@ -31,6 +31,7 @@ from impactlab._version import __version__
 from impactlab.bodies import Rod, Sphere
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.contact import ContactModel, get_law
+from impactlab.contact.rate import RATE_LAWS, RateLaw
 from impactlab.contact.registry import ensure_laws, registered_laws
 from impactlab.dynamics.flexcore.layout import DROP_DEFAULT_RTOL as DROP_RTOL
 from impactlab.dynamics.input_checks import gravity_value
@@ -253,10 +254,43 @@ def input_record(
     if constant_angle is None:
         del record["constant_angle"]
     for k, v in (extra or {}).items():
-        record[k] = encode(v, k)
+        record[k] = _rate_record(v) if k == "rate" else encode(v, k)
     if isinstance(law, str) and law in registered_laws():  # a user's law travels with its data
         record["law_data"] = registered_laws()[law].record()
     return record
+
+
+#: Units of a rate law's constants in a record.
+_RATE_UNITS = {"D": "1/s", "q": "1", "C": "1", "rate0": "1/s"}
+
+
+def _rate_record(rate: RateLaw | str | None) -> Any:
+    """A drop's rate law in a record: None, the library law's name, or, for a law with other
+    constants (``RateLaw.custom``), its form, constants and description, so that the record
+    runs it again."""
+    if rate is None or isinstance(rate, str):
+        return rate
+    if RATE_LAWS.get(rate.name) == rate:
+        return rate.name
+    return {
+        "form": rate.name,
+        "parameters": {k: _float(float(v), _RATE_UNITS[k]) for k, v in rate.parameters},
+        "description": rate.description,
+    }
+
+
+def _rate_from_record(data: Any) -> Any:
+    """The ``rate`` argument of a record's ``rate`` (``_rate_record``)."""
+    if not isinstance(data, Mapping):
+        return data
+    try:
+        params = {str(k): decode(v, str(k), _RATE_UNITS) for k, v in data["parameters"].items()}
+        return RateLaw.custom(str(data["form"]), str(data.get("description", "")), **params)
+    except (KeyError, TypeError, AttributeError) as exc:
+        raise ValueError(
+            f"the record's rate {data!r} is not a rate law: expected 'form' and 'parameters' "
+            f"({exc})"
+        ) from None
 
 
 #: Keys of a record that are not arguments of ``simulate``.
@@ -307,8 +341,10 @@ def from_record(record: Mapping[str, Any]) -> dict[str, Any]:
     args = {
         k: decode(v, k, params if k == "law_params" else None)
         for k, v in record.items()
-        if k not in _META and k != "law_data"
+        if k not in _META and k not in ("law_data", "rate")
     }
+    if "rate" in record:
+        args["rate"] = _rate_from_record(record["rate"])
     args["velocity"] = tuple(args["velocity"])
     return args
 
