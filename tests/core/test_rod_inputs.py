@@ -37,6 +37,14 @@ def test_a_rod_wider_than_its_tip_is_refused() -> None:
     assert Rod(length=0.2, tip_radius=0.01, diameter=0.02).diameter == 0.02  # d = 2R: accepted
 
 
+def test_a_flexible_rod_whose_mass_makes_it_wider_than_its_tip_is_refused() -> None:
+    """The beam is a uniform rod of its material: without a diameter, the mass implies one
+    (27.4 mm here, for a 4 mm tip), which is checked as a given one is."""
+    with pytest.raises(ValueError, match=r"the diameter that the mass, length and density imply"):
+        FlexibleRod(length=0.1, tip_radius=0.002, mass=0.46)
+    assert FlexibleRod.paper().diameter is None  # 15.7 mm implied, under 2R = 17.6 mm
+
+
 def test_mass_and_diameter_checked_against_the_density() -> None:
     with pytest.raises(ValueError, match=r"imply a density of .* within 2%"):
         Rod(length=0.3, tip_radius=0.005, mass=1.0, diameter=0.01)

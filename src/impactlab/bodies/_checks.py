@@ -22,14 +22,15 @@ PLAUSIBLE_RADIUS = (1e-6, 0.5)
 PLAUSIBLE_MASS = (1e-6, 1e3)
 
 
-def check_tip_width(tip_radius: float, diameter: float | None) -> None:
+def check_tip_width(tip_radius: float, diameter: float | None, what: str = "diameter") -> None:
     """ValueError when a rod's ``diameter`` [m] exceeds twice its ``tip_radius`` [m] (to 1e-9):
     the end face would then stand out beside the hemispherical tip, and at angles to the flat
-    below arccos(2R/d) its rim, not the tip, would strike first."""
+    below arccos(2R/d) its rim, not the tip, would strike first. ``what`` names the diameter
+    in the message (one the mass implies, say)."""
     if diameter is not None and diameter > 2.0 * tip_radius * (1.0 + 1e-9):
         rim = math.degrees(math.acos(2.0 * tip_radius / diameter))
         raise ValueError(
-            f"diameter ({diameter!r} m) exceeds twice the tip radius ({2.0 * tip_radius!r} m): "
+            f"{what} ({diameter!r} m) exceeds twice the tip radius ({2.0 * tip_radius!r} m): "
             "the rod's end face would stand out beside its hemispherical tip, and below "
             f"{rim:.3g} deg to the flat its rim would strike before the tip (allowed: "
             "diameter <= 2 tip_radius; the tip as wide as the rod or wider)"

@@ -125,8 +125,9 @@ class FlexibleRod:
     diameter : diameter d [m]; None: from the mass, the length and the material's density.
         At least one of ``mass`` and ``diameter`` is required; given both, the density they
         imply must match the material's within ``DENSITY_TOLERANCE`` (2 %), and L/d must be
-        at least ``MIN_SLENDERNESS`` (2). A given diameter must not exceed 2R (else the end
-        face's rim, not the tip, strikes the flat at shallow angles). Lengths, tip radii and
+        at least ``MIN_SLENDERNESS`` (2). The diameter, given or implied by the mass, must
+        not exceed 2R (else the end face's rim, not the tip, strikes the flat at shallow
+        angles). Lengths, tip radii and
         masses outside the bounds of ``impactlab.bodies._checks`` give an
         ImplausibleInputWarning, as for ``Rod``.
     material : the rod's material (E, nu, density; the contact pair's elastic constants).
@@ -171,7 +172,12 @@ class FlexibleRod:
             m = check_positive("mass", self.mass, "kg")
         plausible("mass", m, PLAUSIBLE_MASS, "kg")
         _check_geometry(L, m, d, self.material)
-        check_tip_width(R, d)
+        if d is None:  # the beam is a uniform circular rod of its material: d from the mass
+            implied = math.sqrt(4.0 * m / (math.pi * rho * L))
+            what = "the diameter that the mass, length and density imply, sqrt(4 m / (pi rho L))"
+            check_tip_width(R, implied, what)
+        else:
+            check_tip_width(R, d)
         for name, value in (("length", L), ("tip_radius", R), ("mass", m), ("diameter", d)):
             object.__setattr__(self, name, value)
         object.__setattr__(self, "n_axial", _count("n_axial", self.n_axial))
