@@ -27,7 +27,7 @@ from impactlab.contact.kernels import N_LAWS, NPARAM, param_length
 from impactlab.contact.ranges import extrapolation_flags
 from impactlab.contact.tabulate import has_table, with_table
 from impactlab.dynamics.core.batch import impact_batch
-from impactlab.dynamics.input_checks import check_rtol, gravity_value
+from impactlab.dynamics.input_checks import check_partial_slip_rtol, check_rtol, gravity_value
 from impactlab.dynamics.kernels.layout import N_OUT, OUTPUT_FIELDS, PARTIAL_SLIP_RTOL
 from impactlab.dynamics.kernels.status import REGIME_NAMES, STATUS_MESSAGES
 from impactlab.dynamics.rod_reach import rod_reach_flags
@@ -132,6 +132,8 @@ def run_arrays(
     bp = _rows("body_params", body_params, NB, n)
     g = gravity_value(gravity)
     r = PARTIAL_SLIP_RTOL if rtol is None and fid == PARTIAL_SLIP else check_rtol(rtol)
+    if fid == PARTIAL_SLIP:
+        check_partial_slip_rtol(r)
     out = np.empty((n, N_OUT))
     status = np.empty(n, dtype=np.int32)
     if n and fid == PARTIAL_SLIP:

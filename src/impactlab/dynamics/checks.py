@@ -17,6 +17,7 @@ from impactlab.dynamics.input_checks import (
     check_body,
     check_flat,
     check_mu,
+    check_partial_slip_rtol,
     check_rtol,
     check_spin,
     check_velocity,
@@ -140,6 +141,8 @@ def check_impact(
     if rtol is None and _is_partial_slip(friction):
         rtol = PARTIAL_SLIP_RTOL
     fast = _plain_inputs(body, flat, angle, velocity, spin, mu, gravity, rtol, constant_angle)
+    if rtol is not None and _is_partial_slip(friction):
+        check_partial_slip_rtol(check_rtol(rtol))
     if fast is not None:
         th, vx, vy, w, m, g, r = fast
         return ImpactInputs(

@@ -109,7 +109,7 @@ def simulate(
         history (needed for ``dent()`` and the plots).
     rtol : float, optional
         Relative tolerance in [1e-13, 1e-3] (default ``DEFAULT_RTOL`` = 2e-7; 3e-8 for
-        ``friction="partial_slip"``).
+        ``friction="partial_slip"``, which takes at most 1e-5).
 
     Returns
     -------

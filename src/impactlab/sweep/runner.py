@@ -43,6 +43,7 @@ from rich.progress import (
     TimeRemainingColumn,
 )
 
+from impactlab.dynamics.input_checks import check_partial_slip_rtol
 from impactlab.sweep.backends import (
     BACKENDS,
     DEFAULT_WORKER_TIMEOUT,
@@ -247,6 +248,8 @@ def run_sweep(
     ev: Evaluator = evaluator if evaluator is not None else ENGINE
     be = _backend(backend, workers, scheduler, client, max_in_flight, worker_timeout)
     ev.validate(category_values(st))
+    if "partial_slip" in category_values(st)["friction"] and st.engine.rtol is not None:
+        check_partial_slip_rtol(float(st.engine.rtol))
     meta = store_meta(st, ev)
     path = Path(store) if store is not None else Path(f"{st.name}.zarr")
     sstore = SweepStore(path)
