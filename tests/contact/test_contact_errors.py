@@ -126,8 +126,10 @@ def test_calibrated_range_is_advisory(paper_models: dict[str, ContactModel]) -> 
     assert model.in_calibrated_range(0.5 * cal)
     assert not model.in_calibrated_range([0.5 * cal, 200e-6])
     assert np.isfinite(model.force(200e-6))  # no error, only a flag
-    assert paper_models["thornton"].calibrated_max_interference == pytest.approx(1.5 * dc)
-    assert paper_models["hertz"].calibrated_max_interference == pytest.approx(1.5 * dc)
+    # delta_r of the FE run at 1.5 delta_c is below the contact's resolution (fe.run), so
+    # no law is verified there: the next checked point, 2 delta_c, fails on delta_r
+    assert paper_models["thornton"].calibrated_max_interference == pytest.approx(1.0 * dc)
+    assert paper_models["hertz"].calibrated_max_interference == pytest.approx(1.0 * dc)
     assert math.isinf(paper_models["tabulated"].calibrated_max_interference)
 
 

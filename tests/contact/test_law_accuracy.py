@@ -191,6 +191,12 @@ def test_every_case_is_shipped_with_its_inputs_and_convergence() -> None:
                 assert run.loading_delta[-1] == pytest.approx(run.last_converged_delta)
                 assert run.last_converged_delta < run.delta_max
                 continue
+            if math.isnan(run.residual_depth):  # below the contact's resolution: one run
+                assert (case.name, round(run.delta_max / case.delta_c, 6)) == (
+                    "paper-aisi201-on-aisi1010",
+                    1.5,
+                )
+                continue  # tests/fe/test_fe_residual_depth.py
             assert 0.0 <= run.residual_ratio < 1.0
             # delta_r (the final gap between the surfaces) lies between the last unloading
             # point that still carries force and the first one that does not
@@ -200,7 +206,7 @@ def test_every_case_is_shipped_with_its_inputs_and_convergence() -> None:
             tol = 2e-3 * run.delta_max
             assert lo - tol <= run.residual_depth <= hi + tol, (case.name, run.delta_max)
         # the permanent depth grows with the maximum (physics, not a fit)
-        res = [r.residual_ratio for r in case.runs if r.converged]
+        res = [r.residual_ratio for r in case.runs if r.converged and r.residual_ratio >= 0]
         assert np.all(np.diff(res) > -0.01), res
 
 
@@ -241,7 +247,9 @@ def test_every_law_is_measured_on_every_case(results) -> None:
                 assert "Brinell hardness" in a.message and a not in res.built
                 assert res.case.name not in [c.case for c in verified_cases("brake")]
                 continue
-            assert np.all(np.isfinite(a.force_error)) and np.all(np.isfinite(a.residual_error))
+            resolved = np.isfinite(a.residual_fe)  # FE's delta_r below its resolution: nan
+            assert np.all(np.isfinite(a.force_error))
+            assert np.all(np.isfinite(a.residual_error[resolved]))
             assert a.verified.upper >= 0.3 or a.verified.limited_by != "end of data"
         assert res.closest().law in acc.measured_laws()
         line = res.recommendation()

@@ -124,8 +124,9 @@ class LawAccuracy:
         return float(np.sqrt(np.mean(e**2))) if e.size and np.all(np.isfinite(e)) else math.inf
 
     def rms_residual_error(self) -> float:
-        """RMS of the delta_r / delta_max error over the maxima (inf if any is nan)."""
-        e = self.residual_error
+        """RMS of the delta_r / delta_max error over the maxima where FE resolves delta_r
+        (inf if the law's is nan at any of them)."""
+        e = self.residual_error[np.isfinite(self.residual_fe)]
         return float(np.sqrt(np.mean(e**2))) if e.size and np.all(np.isfinite(e)) else math.inf
 
     def score(self) -> float:
@@ -182,7 +183,7 @@ def law_accuracy(law: str, case: ReferenceCase) -> LawAccuracy:
     d, f = case.loading_curve()
     keep = (d >= LOWEST_RATIO * dc) & (f > 0.0)
     d, f = np.asarray(d[keep]), np.asarray(f[keep])
-    runs = [r for r in case.runs if r.converged and math.isfinite(r.residual_depth)]
+    runs = [r for r in case.runs if r.converged]  # delta_r nan: below the FE's resolution
     maxima = np.array([r.delta_max for r in runs])
     fe_res = np.array([r.residual_ratio for r in runs])
     try:
@@ -208,7 +209,8 @@ def law_accuracy(law: str, case: ReferenceCase) -> LawAccuracy:
     law_res = np.array(
         [model.unload(m).delta_r / m if m <= model.max_interference else math.nan for m in maxima]
     )
-    v = verified_range(d / dc, force_err, maxima / dc, law_res - fe_res)
+    known = np.isfinite(fe_res)  # an unresolved FE delta_r checks nothing
+    v = verified_range(d / dc, force_err, (maxima / dc)[known], (law_res - fe_res)[known])
     return LawAccuracy(
         law=law,
         case=case.name,
@@ -259,7 +261,7 @@ class CaseAccuracy:
         best, bf, br = self.closest(), self.closest_in_force(), self.closest_in_residual()
         top = float(np.max(best.force_ratio))
         ef = float(np.max(np.abs(best.force_error)))
-        er = float(np.max(np.abs(best.residual_error)))
+        er = float(np.nanmax(np.abs(best.residual_error)))
         most = max(a.verified.upper for a in self.built)
         who = ", ".join(a.law for a in self.built if a.verified.upper == most)
         return (

@@ -31,6 +31,10 @@ def _abs(x: float) -> str:
     return "n/a" if not math.isfinite(x) else f"{x:+.3f}"
 
 
+def _ratio(x: float) -> str:
+    return "n/a" if not math.isfinite(x) else f"{x:.3f}"
+
+
 def table_rows(result: CaseAccuracy, only: str | None = None) -> tuple[list[str], list[list[str]]]:
     """(header, rows) of one case: per law (``only``: that one) the force error and the
     delta_r / delta_max error at the FE maxima, and the verified range (text for tables);
@@ -45,7 +49,7 @@ def table_rows(result: CaseAccuracy, only: str | None = None) -> tuple[list[str]
             continue
         cells = [f"{_pct(a.force_error_at(r))} / {_abs(a.residual_error_at(r))}" for r in ratios]
         rows.append([a.law, *cells, a.verified.text])
-    fe = ["FE: delta_r/delta_max", *(f"{x:.3f}" for x in result.laws[0].residual_fe)]
+    fe = ["FE: delta_r/delta_max", *(_ratio(x) for x in result.laws[0].residual_fe)]
     rows.append([*fe, ""] if result.laws else fe)
     return header, rows
 

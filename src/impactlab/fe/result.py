@@ -25,7 +25,8 @@ class IndentationResult:
     contact_radius: the contact radius [m] at each loading point (from the gap between the
     deformed surfaces); unloading_delta, unloading_force: the unloading curve from delta_max;
     residual_depth: delta_r, the interference where the unloading force reaches zero [m]
-    (nan when the run did not get there); dent_r, dent_z: the flat's surface after unloading,
+    (nan when the run did not get there, or where it lies below what the contact resolves:
+    ``fe.run.residual_depth``); dent_r, dent_z: the flat's surface after unloading,
     radius [m] and height [m] (> 0: pile-up above the undeformed surface); a loading-only run
     (``unload=False``) has empty unloading and dent arrays and a nan residual_depth;
     delta_c: the pair's critical interference [m]; converged: True when ccx finished every
