@@ -30,7 +30,7 @@ def test_rod_thicker_than_long_is_refused() -> None:
 
 def test_implausible_length_warns_as_rod() -> None:
     with pytest.warns(ImplausibleInputWarning, match=r"length = 304.8 m"):
-        FlexibleRod.paper(length=304.8, mass=900.0)
+        FlexibleRod.paper(length=304.8, mass=900.0, tip_radius=0.011)  # d = 21.9 mm
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         FlexibleRod.paper()  # the paper's rod: no warning

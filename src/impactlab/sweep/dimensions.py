@@ -29,6 +29,7 @@ from impactlab._display import display_unit, format_number
 from impactlab.dynamics.kernels.inputs import MAX_ANGLE, MAX_MU, MAX_SPEED
 from impactlab.sweep.distributions import Distribution
 from impactlab.sweep.inputs import MATERIAL_OVERRIDES, get_input
+from impactlab.units import angle_to_rad, is_quantity, magnitude
 
 #: Name of the Monte Carlo dimension (reserved: no input has this name).
 SAMPLE_DIM = "sample"
@@ -163,6 +164,11 @@ def check_kinematics(
                 f"{', '.join(given)}: a sphere has no angle, length, tip radius or inertia "
                 "(radius and mass or density); leave them out, or study a rod"
             )
+    if "sphere" not in bodies and any("radius" in g for g in (grid, fixed, sampled)):
+        raise ValueError(
+            "radius: the radius of a sphere, and no body of this study is one; a rod's tip "
+            "radius is tip_radius"
+        )
     angles = [float(v) for v in values("angle") if isinstance(v, float)]
     if bodies & set(_ANGLED_BODIES):
         check_rod_angles(angles, where("angle"), " for a rod" if "sphere" in bodies else "")
@@ -175,12 +181,17 @@ def check_kinematics(
 
 def _number(name: str, value: Any) -> Value:
     """``value`` as a fixed or axis value of input ``name`` (SI float or a category string),
-    without the :data:`ALLOWED` interval."""
+    without the :data:`ALLOWED` interval; a quantity (text with its unit, a pint Quantity of
+    any registry) is converted to the input's SI unit, as everywhere in the Python API."""
     spec = get_input(name)
     if spec.kind == "category":
         if not isinstance(value, str) or not value:
             raise ValueError(f"input {name!r} takes a name (string), got {value!r}")
         return value
+    if isinstance(value, str) and spec.unit == "rad":  # the angle rule's own message
+        value = angle_to_rad(value, name=f"input {name!r}")
+    elif isinstance(value, str) or is_quantity(value):
+        value = magnitude(f"input {name!r}", value, spec.unit)
     if isinstance(value, bool) or not isinstance(value, int | float | np.integer | np.floating):
         raise ValueError(f"input {name!r} must be a number in {spec.unit}, got {value!r}")
     x = float(value)
@@ -209,10 +220,14 @@ class Axis:
         get_input(self.name)
         if self.name == SAMPLE_DIM:
             raise ValueError(f"{SAMPLE_DIM!r} is reserved")
+        values = self.values
+        if is_quantity(values) and not self.is_category:  # a pint array: to SI, then numbers
+            unit = get_input(self.name).unit
+            values = np.atleast_1d(magnitude(f"grid axis {self.name!r}", values, unit))
         vals = (
-            tuple(_number(self.name, v) for v in np.asarray(self.values).tolist())
-            if not isinstance(self.values, str)
-            else (_number(self.name, self.values),)
+            tuple(_number(self.name, v) for v in np.asarray(values, dtype=object).tolist())
+            if not isinstance(values, str)
+            else (_number(self.name, values),)
         )
         if not vals:
             raise ValueError(f"grid axis {self.name!r} has no values")

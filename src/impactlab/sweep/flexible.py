@@ -252,7 +252,8 @@ def validate_flexible(categories: Mapping[str, Sequence[str]]) -> None:
 
 
 def check_flexible_study(args: Mapping[str, Any]) -> None:
-    """The study-level checks of a flexible rod (``Study`` keyword arguments from a study file):
+    """The study-level checks of a flexible rod (``Study``'s fixed values, grid axes, sample and
+    engine options):
     the flexible inputs need ``body = "flexible_rod"`` among the bodies, and a flexible rod
     follows its rotation (no ``[engine] constant_angle = true``)."""
     bodies = {args["fixed"].get("body", "rod")}

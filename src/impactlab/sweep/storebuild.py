@@ -146,9 +146,12 @@ def _create_sampled(g: Any, study: Study) -> list[str]:
 
 
 def _constants(study: Study) -> list[tuple[str, Any]]:
-    """(name, value) of the fixed (and defaulted) inputs, by name."""
+    """(name, value) of the fixed (and defaulted) inputs, by name; vx and vy not where speed
+    and incidence give the velocity (their defaults would read as the cases' values)."""
     varying = set(study.varying())
-    constants = {n: study.value_of(n) for n in INPUTS if n not in varying}
+    by_speed = "speed" in varying or study.value_of("speed") is not None
+    derived = {"vx", "vy"} if by_speed else set()
+    constants = {n: study.value_of(n) for n in INPUTS if n not in varying | derived}
     return sorted((n, v) for n, v in constants.items() if v is not None)
 
 

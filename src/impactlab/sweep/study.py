@@ -40,6 +40,7 @@ from impactlab.sweep.dimensions import (
     layout,
 )
 from impactlab.sweep.display import study_html, study_repr
+from impactlab.sweep.flexible import check_flexible_study
 from impactlab.sweep.inputs import INPUTS, OUTPUT_ALIASES, get_input
 from impactlab.sweep.limits import DEFAULT_MAX_CASES, check_max_cases, too_many, warn_chunking
 from impactlab.sweep.material_inputs import check_material_inputs
@@ -50,18 +51,19 @@ from impactlab.sweep.options import (
     UncertaintySpec,
 )
 from impactlab.sweep.studyfile import read_study_file, study_arguments
+from impactlab.units import is_quantity
+
+
+def _listed(values: Any) -> tuple[Any, ...]:
+    """The values of one grid axis as a tuple (one value or many)."""
+    return tuple(np.atleast_1d(np.asarray(values, dtype=object)).tolist())
 
 
 def _axes(grid: Any) -> tuple[Axis, ...]:
     """Grid axes from a mapping input -> values, or a sequence of ``Axis`` / (name, values)."""
     if isinstance(grid, Mapping):
         return tuple(
-            Axis(
-                k,
-                tuple(np.atleast_1d(np.asarray(v, dtype=object)).tolist())
-                if not isinstance(v, str)
-                else (v,),
-            )
+            Axis(k, v if isinstance(v, str) or is_quantity(v) else _listed(v))
             for k, v in grid.items()
         )
     return tuple(a if isinstance(a, Axis) else Axis(*a) for a in grid)
@@ -211,6 +213,9 @@ class Study:
             object.__setattr__(self, "outputs", _check_outputs(self.outputs))
         if not isinstance(self.engine, EngineOptions):
             raise ValueError(f"engine must be EngineOptions, got {self.engine!r}")
+        check_flexible_study(
+            {"fixed": fixed, "grid": axes, "sample": self.sample, "engine": self.engine}
+        )
         if not isinstance(self.laws, Mapping):
             raise ValueError(f"laws must be a mapping of law names to records, got {self.laws!r}")
         ensure_laws(self.laws)

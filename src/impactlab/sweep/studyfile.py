@@ -26,7 +26,6 @@ from impactlab.sweep.distributions import (
     distribution_from_canonical,
     distribution_from_dict,
 )
-from impactlab.sweep.flexible import check_flexible_study
 from impactlab.sweep.inputs import INPUTS, UNIT_REQUIRED, get_input
 from impactlab.sweep.limits import DEFAULT_MAX_CASES, check_max_cases, too_many
 from impactlab.sweep.options import (
@@ -129,8 +128,7 @@ def study_arguments(
         "laws": _laws(table("laws"), source),
         "max_cases": limit,
     }
-    check_flexible_study(args)  # body = "flexible_rod" (impactlab.sweep.flexible)
-    return args  # the kinematic rules: Study.__post_init__ (dimensions.check_kinematics)
+    return args  # the study-level rules: Study.__post_init__ (check_kinematics, the flexible rod)
 
 
 def _laws(table: Mapping[str, Any], source: str) -> dict[str, dict[str, Any]]:
