@@ -45,7 +45,7 @@ def test_quantities_that_do_not_read_are_refused(fixed, message) -> None:
 
 
 def test_a_sphere_radius_without_a_sphere_is_refused() -> None:
-    with pytest.raises(ValueError, match="radius: the radius of a sphere.*tip_radius"):
+    with pytest.raises(ValueError, match=r"radius: the radius of a sphere.*tip_radius"):
         Study(name="r", grid={"angle": [0.35]}, fixed={"vy": -1.41, "mu": 0.2, "radius": 0.005})
     Study(name="r", grid={"body": ["rod", "sphere"]},
           fixed={"vy": -1.41, "mu": 0.2, "angle": 0.35, "radius": 0.005})  # fmt: skip

@@ -220,7 +220,7 @@ class Axis:
         get_input(self.name)
         if self.name == SAMPLE_DIM:
             raise ValueError(f"{SAMPLE_DIM!r} is reserved")
-        values = self.values
+        values: Any = self.values
         if is_quantity(values) and not self.is_category:  # a pint array: to SI, then numbers
             unit = get_input(self.name).unit
             values = np.atleast_1d(magnitude(f"grid axis {self.name!r}", values, unit))

@@ -114,7 +114,8 @@ def study_arguments(
     )
     grid_tab = table("grid")
     outputs = _outputs(table("outputs")) if "outputs" in data else None
-    args = {
+    # the study-level rules: Study.__post_init__ (check_kinematics, the flexible rod)
+    return {
         "name": str(st.get("name", "study")),
         "description": str(st.get("description", "")),
         "chunk_size": st.get("chunk_size", DEFAULT_CHUNK_SIZE),
@@ -128,7 +129,6 @@ def study_arguments(
         "laws": _laws(table("laws"), source),
         "max_cases": limit,
     }
-    return args  # the study-level rules: Study.__post_init__ (check_kinematics, the flexible rod)
 
 
 def _laws(table: Mapping[str, Any], source: str) -> dict[str, dict[str, Any]]:
