@@ -10,9 +10,11 @@ mistake: a length outside :data:`PLAUSIBLE_LENGTH`, a tip radius or sphere radiu
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
+from pathlib import Path
 
 from impactlab._validation import warn_implausible
-from impactlab.materials import Material
+from impactlab.materials import Material, get_material
 
 #: Plausible rod length [m]: 1 mm to 10 m.
 PLAUSIBLE_LENGTH = (1e-3, 10.0)
@@ -65,10 +67,17 @@ def rod_mass(L: float, m: float | None, d: float | None, material: Material) -> 
 
 
 def check_material(name: str, value: object) -> Material:
-    """``value`` if it is a :class:`~impactlab.materials.Material`; ValueError naming ``name``."""
-    if not isinstance(value, Material):
-        raise ValueError(f"{name} must be an impactlab Material, got {type(value).__name__}")
-    return value
+    """The :class:`~impactlab.materials.Material` ``value`` is or names: a Material, a library
+    name, a definition by values (text or mapping) or a TOML file
+    (:func:`~impactlab.materials.get_material`); ValueError naming ``name`` otherwise."""
+    if isinstance(value, Material):
+        return value
+    if isinstance(value, str | Mapping | Path):
+        return get_material(value, name)
+    raise ValueError(
+        f"{name} must be an impactlab Material, a library name (impactlab materials) or a "
+        f"material by values ('E=..., nu=..., Sy=..., rho=...'), got {type(value).__name__}"
+    )
 
 
 def plausible(name: str, value: float, bounds: tuple[float, float], unit: str) -> float:

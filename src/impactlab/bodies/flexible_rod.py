@@ -161,7 +161,7 @@ class FlexibleRod:
                 f"tip_radius ({R!r} m) must not exceed half the length (L/2 = {0.5 * L!r} m)"
             )
         plausible("tip_radius", R, PLAUSIBLE_RADIUS, "m")
-        check_material("material", self.material)
+        object.__setattr__(self, "material", check_material("material", self.material))
         rho = self.material.density
         if self.mass is None and self.diameter is None:
             raise ValueError("give the mass [kg] or the diameter [m] of the rod (or both)")

@@ -81,7 +81,7 @@ class Rod:
                 "hemispherical tip would be wider than the rod is long; check the units (SI: m)"
             )
         plausible("tip_radius", R, PLAUSIBLE_RADIUS, "m")
-        check_material("material", self.material)
+        object.__setattr__(self, "material", check_material("material", self.material))
         d = None if self.diameter is None else check_positive("diameter", self.diameter, "m")
         given = None if self.mass is None else check_positive("mass", self.mass, "kg")
         m = plausible("mass", rod_mass(L, given, d, self.material), PLAUSIBLE_MASS, "kg")

@@ -44,7 +44,7 @@ class Sphere:
 
     def __post_init__(self) -> None:
         R = plausible("radius", check_positive("radius", self.radius, "m"), PLAUSIBLE_RADIUS, "m")
-        check_material("material", self.material)
+        object.__setattr__(self, "material", check_material("material", self.material))
         if self.mass is not None and self.density is not None:
             raise ValueError("give either mass or density for a Sphere, not both")
         if self.mass is not None:

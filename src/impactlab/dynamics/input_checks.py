@@ -23,6 +23,7 @@ from impactlab._validation import (
     warn_implausible,
 )
 from impactlab.bodies import Rod, Sphere
+from impactlab.bodies._checks import check_material
 from impactlab.dynamics.kernels.inputs import (
     MAX_GRAVITY,
     MAX_MU,
@@ -249,10 +250,8 @@ def check_body(body: Any) -> Rod | Sphere:
 
 
 def check_flat(flat: Any) -> Material:
-    """``flat`` if it is a Material, else ValueError."""
-    if not isinstance(flat, Material):
-        raise ValueError(f"flat must be an impactlab Material, got {type(flat).__name__}")
-    return flat
+    """The Material ``flat`` is or names (``bodies._checks.check_material``), else ValueError."""
+    return flat if type(flat) is Material else check_material("flat", flat)
 
 
 def warn_fast(what: str, speed: float) -> None:

@@ -83,7 +83,10 @@ def simulate(
     Parameters
     ----------
     body, flat : Rod or Sphere, Material
-        The impacting rigid body; the flat's material (default AISI 1010, the paper's flat).
+        The impacting rigid body; the flat's material (default AISI 1010, the paper's flat): a
+        Material, a library name (``"al-6061-t6"``), a material by values
+        (``"E=69GPa, nu=0.33, Sy=276MPa, rho=2700kg/m^3"``) or a TOML file
+        (``impactlab.get_material``).
     law, friction : str
         Contact-law name (``impactlab.law_names()``) or a built ContactModel; friction model
         (``impactlab.friction.friction_names()``).

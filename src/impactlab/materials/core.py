@@ -201,6 +201,14 @@ class ContactPair:
     body: Material
     flat: Material
 
+    def __post_init__(self) -> None:
+        for side in ("body", "flat"):
+            value = getattr(self, side)
+            if type(value) is not Material:  # a name, values, a file (materials.inputs)
+                from impactlab.materials.inputs import get_material  # builds on this module
+
+                object.__setattr__(self, side, get_material(value, f"ContactPair {side}"))
+
     @property
     def E_star(self) -> float:
         """Reduced modulus E* [Pa]."""
