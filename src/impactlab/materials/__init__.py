@@ -1,6 +1,7 @@
 """Materials, contact pairs and the material library (SI units throughout).
 
-- :class:`Material` (``impactlab.materials.core``), :class:`ContactPair`, the reduced moduli;
+- :class:`Material` (``impactlab.materials.core``), :class:`ContactPair`
+  (``impactlab.materials.pair``), the reduced moduli;
 - the library of common impact materials with cited properties (``impactlab.materials.library``):
   :data:`PRESETS` by name, the paper's :data:`AISI_201` and :data:`AISI_1010` and the others;
 - :func:`get_material`: a material from a library name, a definition by values
@@ -12,7 +13,6 @@ from __future__ import annotations
 
 from impactlab.materials.core import (
     G0,
-    ContactPair,
     Material,
     brinell_to_pa,
     reduced_modulus,
@@ -38,6 +38,7 @@ from impactlab.materials.library import (
     TUNGSTEN_CARBIDE,
     dynamic_poisson_ratio,
 )
+from impactlab.materials.pair import ContactPair
 
 __all__ = [
     "AISI_201",

@@ -1,0 +1,72 @@
+"""The two materials of a contact: :class:`ContactPair` (SI units)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from impactlab._html import dataclass_html, dataclass_rows
+from impactlab.materials.core import Material, reduced_modulus, reduced_shear_modulus, summary_line
+from impactlab.materials.inputs import get_material
+
+__all__ = ["ContactPair"]
+
+
+@dataclass(frozen=True)
+class ContactPair:
+    """The two materials in contact: the impacting body's and the flat's.
+
+    The quantities each contact law takes from the pair (documented per law in ``docs/laws``):
+
+    - ``E_star``: reduced modulus, all laws.
+    - ``yield_strength``: the smaller S_y of the two (the material that yields first; for the
+      paper's pair this is the flat's, 305 MPa), used by Ghaednia, Jackson-Green,
+      Kogut-Komvopoulos and Brake. Thornton takes its limiting pressure p_y as a parameter.
+    - ``nu``: Poisson's ratio of the material that yields first (Jackson-Green's C(nu), Brake's
+      yield function).
+    - Brinell hardness of both bodies: Brake combines them (Eq. 25, see its law page).
+    """
+
+    body: Material
+    flat: Material
+
+    def __post_init__(self) -> None:
+        for side in ("body", "flat"):
+            value = getattr(self, side)
+            if type(value) is not Material:  # a name, values, a file (materials.inputs)
+                object.__setattr__(self, side, get_material(value, f"ContactPair {side}"))
+
+    @property
+    def E_star(self) -> float:
+        """Reduced modulus E* [Pa]."""
+        return reduced_modulus(self.body, self.flat)
+
+    @property
+    def G_star(self) -> float:
+        """Effective shear modulus G* [Pa]."""
+        return reduced_shear_modulus(self.body, self.flat)
+
+    @property
+    def weaker(self) -> Material:
+        """The material with the smaller yield strength (the flat if equal)."""
+        return self.body if self.body.yield_strength < self.flat.yield_strength else self.flat
+
+    @property
+    def yield_strength(self) -> float:
+        """Yield strength of the material that yields first [Pa]."""
+        return self.weaker.yield_strength
+
+    @property
+    def nu(self) -> float:
+        """Poisson's ratio of the material that yields first."""
+        return self.weaker.nu
+
+    def _derived(self) -> dict[str, float]:
+        return {"E_star": self.E_star, "G_star": self.G_star, "yield_strength": self.yield_strength}
+
+    def _repr_html_(self) -> str:
+        return dataclass_html(self, self._derived())
+
+    def __str__(self) -> str:
+        """One line in display units: the two materials by name, E*, G* and the yield strength
+        of the material that yields first."""
+        return summary_line("ContactPair", dataclass_rows(self, self._derived()))
