@@ -136,3 +136,21 @@ def test_models_on_dask_equal_the_local_run(template):
         np.testing.assert_array_equal(local.posteriors[name].samples,
                                       remote.posteriors[name].samples)  # fmt: skip
     assert [r["model"] for r in local.ranking] == [r["model"] for r in remote.ranking]
+
+
+def test_a_result_that_is_not_ok_is_no_prediction() -> None:
+    """Every invalidating flag (not only ENERGY_GAIN) makes the case a failure with its reason:
+    a brittle flat past first yield here; the advisory LAW_EXTRAPOLATED keeps its case."""
+    from impactlab.calibrate.models import STATUS_FLAGGED, status_message
+    from impactlab.flags import FLAG_BRITTLE
+
+    m = Measurements.from_records([
+        {"angle": "45 deg", "vy": -1.41, "flat_material": "soda-lime-glass", "e": 0.5,
+         "e_sigma": 0.03},
+        {"angle": "20 deg", "vy": -1.41, "e": 0.5, "e_sigma": 0.03},
+    ])  # fmt: skip
+    pred = predict(CandidateModel(), m, [MU], np.array([[0.2]]))
+    assert pred.status[0].tolist() == [STATUS_FLAGGED[FLAG_BRITTLE], 0]
+    assert np.isnan(pred.values["e"][0, 0]) and np.isfinite(pred.values["e"][0, 1])
+    assert status_message(pred.status[0, 0]).startswith("result flagged BRITTLE")
+    assert sorted(STATUS_FLAGGED) == [1, 2, 8, 16, 32]  # every flag but LAW_EXTRAPOLATED

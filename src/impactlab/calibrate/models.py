@@ -31,7 +31,13 @@ from impactlab.dynamics.derived import e_gravity_removed
 from impactlab.dynamics.drop_result import DropResult
 from impactlab.dynamics.input_checks import gravity_value
 from impactlab.dynamics.kernels.status import STATUS_MESSAGES
-from impactlab.flags import FLAG_ENERGY_GAIN
+from impactlab.flags import (
+    FLAG_BEYOND_TIP,
+    FLAG_BRITTLE,
+    FLAG_ENERGY_GAIN,
+    FLAG_GRAVITY_DOMINATED,
+    FLAG_OTHER_END,
+)
 from impactlab.friction import get_friction
 from impactlab.materials import get_material
 from impactlab.sweep.engine import ENGINE, Evaluator
@@ -47,9 +53,22 @@ __all__ = ["CandidateModel", "Prediction", "predict"]
 STATUS_ENERGY_GAIN = 301
 #: Status of a partial-slip case that ``simulate`` refused.
 STATUS_REFUSED = 302
+#: Status of a case flagged by another invalidating flag (``impactlab.flags``: not ``ok``), by
+#: flag, in bit order: its outputs are not a prediction of the drop, a likelihood of zero.
+STATUS_FLAGGED = {
+    FLAG_ENERGY_GAIN: STATUS_ENERGY_GAIN,
+    FLAG_GRAVITY_DOMINATED: 303,
+    FLAG_OTHER_END: 304,
+    FLAG_BEYOND_TIP: 305,
+    FLAG_BRITTLE: 306,
+}
 _OWN_MESSAGES = {
     STATUS_ENERGY_GAIN: "result flagged ENERGY_GAIN (breaks energy conservation)",
     STATUS_REFUSED: "simulate refused the case (or the drop failed)",
+    303: "result flagged GRAVITY_DOMINATED (e and the impact measures not meaningful)",
+    304: "result flagged OTHER_END (the other end landed: not one bounce of the tip)",
+    305: "result flagged BEYOND_TIP (the flat reached the rim of the tip)",
+    306: "result flagged BRITTLE (a brittle member past first yield)",
 }
 
 
@@ -212,7 +231,8 @@ def predict(
             res["e"] = e_gravity_removed(res["vn_in"], res["vn_out"], res["duration"], g)
         st = np.asarray(st, dtype=np.int32).copy()
         flags = np.nan_to_num(res["flags"], nan=0.0).astype(np.int64)
-        st[(st == 0) & ((flags & FLAG_ENERGY_GAIN) != 0)] = STATUS_ENERGY_GAIN
+        for flag, code in STATUS_FLAGGED.items():  # a case flagged twice: its lowest bit
+            st[(st == 0) & ((flags & flag) != 0)] = code
         status[:, idx] = st.reshape(w, nd)
         for q in quantities:
             got = _derived(q, res, cases)
