@@ -4,7 +4,8 @@ Likelihood: each measured value is the model's prediction plus independent Gauss
 its stated standard uncertainty, ``log N(y | f(theta), sigma^2)``; a drop contributes the sum
 over its measured quantities. A case the model cannot run (a law's limit, a refused input) or
 whose result is not ``ok`` (an invalidating flag: ``models.STATUS_FLAGGED``) has a likelihood
-of zero (log -inf); it is counted by reason in ``failures``, never raised. One call evaluates every walker on every drop in one batch (``models.predict``).
+of zero (log -inf); it is counted by reason in ``failures``, never raised. One call evaluates
+every walker on every drop in one batch (``models.predict``).
 """
 
 from __future__ import annotations
