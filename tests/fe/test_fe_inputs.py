@@ -40,6 +40,21 @@ def test_missing_ccx_message(monkeypatch, tmp_path):
     assert "\n" not in msg
     with pytest.raises(RuntimeError, match="apt-get install calculix-ccx"):
         fe.indent(AISI_1010, AISI_201, radius=R, delta_max=1e-6, cache_dir=tmp_path)
+    monkeypatch.setenv("IMPACTLAB_CCX", str(tmp_path / "ccx-elsewhere"))
+    with pytest.raises(RuntimeError, match=r"IMPACTLAB_CCX is set to '.*ccx-elsewhere'"):
+        find_ccx()
+
+
+def test_a_run_that_does_not_converge_exits_with_status_2(cli_main, monkeypatch, tmp_path):
+    """What was computed is printed; the exit status says that not every run converged."""
+    fake = tmp_path / "ccx"
+    fake.write_text("#!/bin/sh\nexit 3\n")
+    fake.chmod(0o755)
+    monkeypatch.setenv("IMPACTLAB_CCX", str(fake))
+    monkeypatch.setenv("IMPACTLAB_CACHE_DIR", str(tmp_path / "cache"))  # no cache entry kept
+    code, out, err = cli_main("fe", "indent", "--max", "5 um", "--no-cache")
+    assert code == 2 and "NOT CONVERGED" in out
+    assert "error: 1 of 1 FE run(s) did not converge (delta_max = 5 um)" in err
 
 
 @pytest.mark.parametrize(

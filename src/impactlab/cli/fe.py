@@ -274,6 +274,13 @@ def indent_cmd(
         path = _plot(results, out)
         if not as_json:
             console.print(f"figure: {path}", markup=False)
+    failed = [r for r in results if not r.converged]
+    if failed:  # what converged is printed above; the status says that not all did
+        raise UserError(
+            f"{len(failed)} of {len(results)} FE run(s) did not converge (delta_max = "
+            + ", ".join(f"{r.delta_max * 1e6:.4g} um" for r in failed)
+            + "): their curves stop at the last converged point; see each run's status"
+        )
 
 
 def register(app: typer.Typer) -> None:

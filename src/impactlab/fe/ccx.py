@@ -30,8 +30,15 @@ _CONTACT = re.compile(r"^\s*contact stress .* and time\s+(" + _FLOAT + r")\s*$")
 
 
 def find_ccx() -> str:
-    """Path of the ccx executable; RuntimeError with how to install it when there is none."""
-    exe = os.environ.get("IMPACTLAB_CCX") or shutil.which("ccx")
+    """Path of the ccx executable; RuntimeError with how to install it when there is none, or
+    naming ``IMPACTLAB_CCX`` when that is set to something that is not one."""
+    own = os.environ.get("IMPACTLAB_CCX", "").strip()
+    if own and not (Path(own).is_file() or shutil.which(own)):
+        raise RuntimeError(
+            f"IMPACTLAB_CCX is set to {own!r}, which is not an executable file; point it at "
+            f"CalculiX's ccx, or unset it to use the ccx on PATH"
+        )
+    exe = own or shutil.which("ccx")
     if not exe or not (Path(exe).is_file() or shutil.which(exe)):
         raise RuntimeError(INSTALL_HINT)
     return exe
