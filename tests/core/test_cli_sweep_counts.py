@@ -93,3 +93,14 @@ def test_flag_text_reads_back_as_the_counts(counts: dict[str, int]) -> None:
 def test_info_json_keeps_what_it_cannot_read() -> None:
     info = {"cases": 3, "chunks_done": "odd", "flagged": "odd"}
     assert info_json(info) == info
+
+
+def test_flag_counts_in_json_use_the_result_flag_names() -> None:
+    """The same names as ``ResultFlag``, ``flag_names`` and a store's ``flag_meanings``."""
+    from impactlab.cli.sweep_summary import flagged_json, flagged_text_json
+
+    counts = {"flagged": 3, "gravity-dominated": 1, "beyond the tip": 2, "law extrapolated": 3}
+    want = {"total": 3, "gravity_dominated": 1, "beyond_tip": 2, "law_extrapolated": 3}
+    assert flagged_json(counts) == want
+    text = "3 case(s) (gravity-dominated: 1, beyond the tip: 2, law extrapolated (advisory): 3)"
+    assert flagged_text_json(text) == want

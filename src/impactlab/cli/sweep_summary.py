@@ -21,9 +21,16 @@ _CHUNKS_TEXT = re.compile(r"(?P<done>\d+) of (?P<total>\d+)")
 
 def flagged_json(counts: Mapping[str, int]) -> dict[str, int]:
     """``impactlab.sweep.flag_counts``' counts as JSON: ``total`` (cases with any flag), then
-    each flag that marks a case, by its name with underscores (``law_extrapolated``)."""
+    each flag that marks a case, by its ``ResultFlag`` name in lower case (``law_extrapolated``,
+    ``beyond_tip``)."""
+    from impactlab.sweep.summary import FLAG_NAMES
+
     out = {"total": int(counts.get("flagged", 0))}
-    out |= {k.replace(" ", "_"): int(v) for k, v in counts.items() if k != "flagged" and v}
+    out |= {
+        FLAG_NAMES.get(k, k.replace(" ", "_")): int(v)
+        for k, v in counts.items()
+        if k != "flagged" and v
+    }
     return out
 
 

@@ -64,7 +64,9 @@ OUTPUT_FIELDS: tuple[Field, ...] = (
         "flags",
         "1",
         "result flags (impactlab.flags.ResultFlag bitmask): 1 energy gain, 2 gravity-dominated, "
-        "4 law extrapolated, 8 other end (flexible drops: e < 0 or the other end touched); 0 none",
+        "4 law extrapolated (advisory), 8 other end (the other end touched or may have), 16 "
+        "beyond the tip (the flat reached the rim of the tip), 32 brittle (a brittle member "
+        "past first yield); 0 none",
     ),
 )
 

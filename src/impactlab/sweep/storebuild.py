@@ -235,7 +235,7 @@ def flag_attrs() -> dict[str, Any]:
     texts = {int(f): messages(f)[0] for f in bits}
     return {
         "flag_masks": [int(f) for f in bits],
-        "flag_meanings": " ".join(texts[int(f)].split(":")[0].replace(" ", "_") for f in bits),
+        "flag_meanings": " ".join(str(f.name).lower() for f in bits),  # as ResultFlag, CF
         "flag_messages": {str(k): v for k, v in texts.items()},
     }
 

@@ -30,11 +30,20 @@ def status_counts(ds: Any) -> dict[str, int]:
     return _counts(np.asarray(ds["status"].values), ds.attrs.get("status_messages", {}))
 
 
+#: Each flag's label in the counts (its message's head: "gravity-dominated", "beyond the tip"),
+#: by mask; and its name (``ResultFlag``'s, lower case: ``beyond_tip``), by label.
+_FLAG_LABELS = {int(f): messages(f)[0].split(":")[0] for f in ResultFlag if f.value}
+FLAG_NAMES = {label: str(ResultFlag(m).name).lower() for m, label in _FLAG_LABELS.items()}
+
+
 def _flag_bits(attrs: Mapping[str, Any]) -> list[tuple[int, str]]:
-    """(mask, name) of each flag of a ``flags`` variable (CF ``flag_masks``/``flag_meanings``)."""
+    """(mask, label) of each flag of a ``flags`` variable (CF ``flag_masks``/``flag_meanings``;
+    a known mask by its label, whatever name an older store wrote)."""
     masks = [int(m) for m in attrs.get("flag_masks", [])]
     names = str(attrs.get("flag_meanings", "")).split()
-    return [(m, n.replace("_", " ")) for m, n in zip(masks, names, strict=False)]
+    return [
+        (m, _FLAG_LABELS.get(m, n.replace("_", " "))) for m, n in zip(masks, names, strict=False)
+    ]
 
 
 def flag_counts(flags: np.ndarray, attrs: Mapping[str, Any]) -> dict[str, int]:
