@@ -47,3 +47,15 @@ def test_anything_else_is_refused_naming_the_input(bad) -> None:
 def test_an_unknown_name_lists_the_library() -> None:
     with pytest.raises(ValueError, match=r"flat: unknown material 'aisi-1011'; known: aisi-201"):
         il.simulate(il.Rod.paper(), "aisi-1011", angle=0.35, velocity=(0.0, -1.41))
+
+
+def test_a_property_given_twice_is_refused() -> None:
+    with pytest.raises(ValueError, match=r"E is given twice \('69GPa' and '70GPa'\)"):
+        il.get_material("E=69GPa, E=70GPa, nu=0.33, Sy=276MPa, rho=2700kg/m^3")
+
+
+def test_a_history_names_its_columns_for_a_wrong_one() -> None:
+    r = il.simulate(il.Rod.paper(), angle=0.35, velocity=(0.0, -1.41))
+    with pytest.raises(AttributeError, match=r"no attribute 'force'; columns: t, penetration"):
+        r.history.force  # noqa: B018
+    assert not hasattr(r.history, "force")

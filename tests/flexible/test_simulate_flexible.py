@@ -54,10 +54,13 @@ def test_drop_options_pass_through() -> None:
 def test_bad_combinations() -> None:
     """A drop option with a rigid body or an unknown keyword: TypeError naming it;
     constant_angle or a missing angle with a FlexibleRod: ValueError."""
-    with pytest.raises(TypeError, match="t_max"):
+    with pytest.raises(TypeError, match="got t_max: options of a FlexibleRod's drop"):
         impactlab.simulate(Rod.paper(), angle=0.3, t_max=0.1, **KW)
-    with pytest.raises(TypeError, match="n_modes"):
+    with pytest.raises(TypeError, match="n_modes; it takes angle"):
         impactlab.simulate(BODY, angle=0.3, n_modes=3, **KW)
+    for body in (Rod.paper(), BODY):  # a typo is named with the keyword it resembles
+        with pytest.raises(TypeError, match=r"mue \(did you mean mu\?\)"):
+            impactlab.simulate(body, angle=0.3, mue=0.2, velocity=(0.0, -1.41))
     with pytest.raises(ValueError, match="constant_angle"):
         impactlab.simulate(BODY, angle=0.3, constant_angle=True, **KW)
     with pytest.raises(ValueError, match="angle"):

@@ -2,7 +2,8 @@
 
 ``DropResult``: every contact (``ContactRecord``), the dents (``DentRecord``), the totals a user
 compares with an experiment, the energy balance and, if asked, the history (``DropHistory``).
-Units and meanings: ``UNITS``, from ``impactlab.schema`` (the one table of impacts and drops).
+Units and meanings: ``impactlab.dynamics.drop_result.UNITS``, from ``impactlab.schema`` (the
+one table of impacts and drops: ``schema.unit(name)``, ``schema.description(name)``).
 """
 
 from __future__ import annotations

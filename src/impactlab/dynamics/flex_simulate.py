@@ -4,6 +4,8 @@ of ``simulate_batch`` with a FlexibleRod."""
 
 from __future__ import annotations
 
+import difflib
+
 from typing import Any
 
 from impactlab._validation import check_flag
@@ -35,12 +37,23 @@ def simulate_flexible(
     history) and the drop's options ``rate``, ``stop``, ``t_max``. ``constant_angle`` must be
     False (the drop follows the rod's rotation). TypeError for a drop option with another body
     or an unknown keyword."""
-    extra = sorted(set(kwargs) - set(DROP_OPTIONS) - set(_SIMULATE_ARGS))
-    if extra or not isinstance(body, FlexibleRod):
-        given = extra or sorted(set(kwargs) & set(DROP_OPTIONS))
+    known = (*_SIMULATE_ARGS, "constant_angle", "history", "speed", "incidence", *DROP_OPTIONS)
+    extra = sorted(set(kwargs) - set(known))
+    if extra:
+        hints = [
+            f"{k} (did you mean {close[0]}?)" if close else k
+            for k in extra
+            for close in [difflib.get_close_matches(k, known, n=1)]
+        ]
         raise TypeError(
-            f"simulate() got unexpected keyword argument(s) {', '.join(given)}: a FlexibleRod "
-            f"also takes {', '.join(DROP_OPTIONS)} (got body {type(body).__name__})"
+            f"simulate() got unexpected keyword argument(s) {', '.join(hints)}; it takes "
+            f"{', '.join(sorted(known))} ({', '.join(DROP_OPTIONS)}: a FlexibleRod's drop)"
+        )
+    if not isinstance(body, FlexibleRod):
+        given = sorted(set(kwargs) & set(DROP_OPTIONS))
+        raise TypeError(
+            f"simulate() got {', '.join(given)}: options of a FlexibleRod's drop (got body "
+            f"{type(body).__name__}; a rigid rod's drop: impactlab.simulate_drop)"
         )
     if check_flag("constant_angle", constant_angle):
         raise ValueError(

@@ -49,7 +49,9 @@ class History:
         try:
             j = HISTORY_FIELDS.index(name)
         except ValueError:
-            raise AttributeError(name) from None
+            raise AttributeError(
+                f"'History' object has no attribute {name!r}; columns: {', '.join(HISTORY_FIELDS)}"
+            ) from None
         return self.data[:, j]
 
     def __getitem__(self, name: str) -> np.ndarray:

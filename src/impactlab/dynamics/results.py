@@ -89,7 +89,8 @@ SUMMARY_FIELDS: tuple[str, ...] = (
 class ImpactResult(DerivedOutputs, ResultDisplay):
     """The outcome of one impact (SI units). Computed once; immutable.
 
-    Units and meanings of the fields: ``impactlab.schema`` (``UNITS``). ``references`` are the
+    Units and meanings of the fields: ``impactlab.dynamics.results.UNITS`` and
+    ``impactlab.schema.unit(name)`` / ``description(name)``. ``references`` are the
     sources the computation used; ``dois()`` their DOIs. ``print(result)``, ``_repr_html_``
     and ``impactlab simulate`` show ``summary()`` (``dynamics.result_display``, as a drop's).
 

@@ -162,6 +162,11 @@ def parse_values(text: str, where: str = "material") -> dict[str, str]:
         key, eq, value = item.partition("=")
         if not eq or not key.strip() or not value.strip():
             raise ValueError(f"{where}: expected key=value pairs such as '{EXAMPLE}', got {item!r}")
+        if key.strip() in out:
+            raise ValueError(
+                f"{where}: {key.strip()} is given twice ({out[key.strip()]!r} and "
+                f"{value.strip()!r}); give each property once"
+            )
         out[key.strip()] = value.strip()
     return out
 
