@@ -5,7 +5,6 @@ of ``simulate_batch`` with a FlexibleRod."""
 from __future__ import annotations
 
 import difflib
-
 from typing import Any
 
 from impactlab._validation import check_flag
