@@ -156,7 +156,12 @@ DROP_FIELDS: tuple[Field, ...] = (
     Field("work_friction", "J", "work of friction (negative: dissipated)"),
     Field("work_damping", "J", "work of the modal damping (negative: dissipated)"),
     Field("energy_error", "1", "largest |T + V - E0 - W| / E0 over a drop"),
-    Field("next_end", "1", "the end that can land next (-1: none within the horizon)"),
+    Field(
+        "next_end",
+        "1",
+        "the end that can land next (0 the tip, after a flight; 1 the other end; -1: none within "
+        "the horizon)",
+    ),
     Field("next_time", "s", "lower bound of that landing, from the last separation"),
     Field("n_modes", "1", "number of elastic modes of the flexible rod"),
     Field("gravity", "m/s^2", "gravitational acceleration"),

@@ -48,8 +48,9 @@ def out_of_contact(mdl, y, t, h, sv, stop_mode, yev, ek):
     if t - sv[F.SV_T_CHECK] >= sv[F.SV_CHECK_DT]:
         sv[F.SV_T_CHECK] = t
         done, nx, tn = left_for_good(
-            mdl, y, int(sv[F.SV_LAST_END]), stop_mode, F.HORIZON_CAP, sv[F.SV_EPS_CLEAR]
-        )
+            mdl, y, int(sv[F.SV_LAST_END]), stop_mode, F.HORIZON_CAP, sv[F.SV_EPS_CLEAR],
+            F.NEW_IMPACT_CHECKS * sv[F.SV_CHECK_DT],
+        )  # fmt: skip
         if done:
             sv[F.SV_FINISHED] = 1.0
             sv[F.SV_NEXT_END] = nx

@@ -10,7 +10,10 @@ motion and the rigorous bound B_k = |sum_j A_j (U_j, W_j)(end k)| on the elastic
 of end k (A_j = sqrt(q_j^2 + (q_j'/omega_j)^2); modal energy does not grow in free flight), the
 lower bound y_S,k(rigid, tau) - R - B_k of the end that was in contact stays > 0 for all
 tau in (0, tau_h], tau_h = min(2 v_Cy / g (C back at its height: a new drop), the time at
-which another end can first reach the flat (a new impact, ``next_end``), ``HORIZON_CAP``).
+which another end can first reach the flat (a new impact, ``next_end``), ``HORIZON_CAP``); or
+when that lower bound stays > 0 for at least ``flight_min`` (10 periods of the lowest mode) and
+then may reach the flat within tau_h: the end flies clear and comes back after the rod turned,
+a new impact of the same end (``next_end`` that end, ``next_time`` the earliest it can touch).
 With ``stop_mode`` 1 ("flight") the other ends are no horizon: every end must stay clear.
 """
 
@@ -117,7 +120,7 @@ def first_below(c, y, M, k, band, tau_max, eps):
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def left_for_good(mdl, y, last_end, stop_mode, cap, eps):
+def left_for_good(mdl, y, last_end, stop_mode, cap, eps, flight_min):
     """The end-of-sequence test (module docstring): (done, next_end, next_time [s])."""
     c, om, Ue, We = mdl[2], mdl[3], mdl[7], mdl[8]
     M = om.shape[0]
@@ -142,7 +145,10 @@ def left_for_good(mdl, y, last_end, stop_mode, cap, eps):
     for k in range(F.NE):
         if stop_mode == 0 and k != last_end:
             continue
-        if first_below(c, y, M, k, bands[k], tau_h, eps) <= tau_h:
+        t_touch = first_below(c, y, M, k, bands[k], tau_h, eps)
+        if t_touch <= tau_h:
+            if stop_mode == 0 and t_touch >= flight_min:  # back after a clear flight: anew
+                return True, k, t_touch
             return False, -1, math.inf
     if tau_h == math.inf:
         return False, -1, math.inf

@@ -196,6 +196,12 @@ PARTIAL_STEP_FACTOR = 100
 PARTIAL_MIN_STEPS = 50_000
 DROP_MAX_EVENTS = 200_000
 HORIZON_CAP = 0.5  #: longest look-ahead of the end-of-sequence test [s]
+#: A flight of the end that was in contact clear of the flat for at least this many of the
+#: end-of-sequence test's intervals (0.1 T_1 each: 10 periods of the lowest mode) ends the
+#: sequence even if that end's path comes back down: its return, after the rod turned in free
+#: flight, is a new impact of that end (``next_end``), not a re-contact of a ringing rod,
+#: whose re-contacts come within a few periods.
+NEW_IMPACT_CHECKS = 100.0
 
 #: The integrator's outputs, in the order of its ``out`` vector. "After the last contact" means
 #: the state at the last separation; velocities are those of the floating frame (rigid body).
