@@ -90,7 +90,9 @@ def test_angles_and_speeds_that_are_not_finite(cli_main: CliMain, args: tuple[st
 def test_a_bad_material_value_is_given_with_its_unit(
     cli_main: CliMain, value: str, message: str
 ) -> None:
-    flat = f"E=69GPa, nu=0.33, Sy=276MPa, rho=2700kg/m^3, {value}"
+    props = {"E": "69GPa", "nu": "0.33", "Sy": "276MPa", "rho": "2700kg/m^3"}
+    key, _, given = value.partition("=")
+    flat = ", ".join(f"{k}={v}" for k, v in (props | {key: given}).items())
     code, _, err = _rod(cli_main, "--angle", "20 deg", "--vy", "-1 m/s", "--flat", flat)
     assert code == 2 and len(err.strip().splitlines()) == 1
     assert err.startswith(f"error: --flat: {message}"), err

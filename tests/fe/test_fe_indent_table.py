@@ -67,8 +67,8 @@ def test_lengths_in_um_and_run_time_in_s(cli_main: CliMain, fake_runs: Any) -> N
 def test_a_run_that_stopped_says_where(cli_main: CliMain, fake_runs: Any) -> None:
     fake_runs(False)
     code, out, err = cli_main("fe", "indent", "--max", "1 um")
-    assert code == 0, err
-    assert _rows(out)[STOPPED_AT] == ("0.8", "um")
+    assert code == 2 and "1 of 1 FE run(s) did not converge (delta_max = 1 um)" in err
+    assert _rows(out)[STOPPED_AT] == ("0.8", "um")  # what was computed is printed
 
 
 def test_json_keeps_its_si_fields(cli_main: CliMain, fake_runs: Any) -> None:

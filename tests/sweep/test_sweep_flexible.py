@@ -95,11 +95,13 @@ def test_study_level_checks() -> None:
     """Flexible inputs without a flexible rod, constant_angle with one, and a friction model
     the drop lacks are refused when the study is read or run."""
     with pytest.raises(ValueError, match=r"n_bending.*flexible_rod"):
-        Study.from_dict({"fixed": {"angle": "20 deg", "vy": -1, "mu": 0.1, "n_bending": 3}})
+        Study.from_dict(
+            {"fixed": {"angle": "20 deg", "vy": -1, "n_bending": 3}, "grid": {"mu": [0.1, 0.2]}}
+        )
     with pytest.raises(ValueError, match="constant_angle"):
         Study.from_dict(
-            {"fixed": {"angle": "20 deg", "vy": -1, "mu": 0.1, "body": "flexible_rod"},
-             "engine": {"constant_angle": True}}
+            {"fixed": {"angle": "20 deg", "vy": -1, "body": "flexible_rod"},
+             "grid": {"mu": [0.1, 0.2]}, "engine": {"constant_angle": True}}
         )  # fmt: skip
     fixed = {"angle": "20 deg", "vy": -1, "mu": 0.1, "body": "flexible_rod"}
     bad = Study.from_dict({"fixed": fixed, "grid": {"friction": ["coulomb", "nonsense"]}})
