@@ -52,15 +52,14 @@ def test_every_law_has_a_range_with_a_source() -> None:
 
 def test_no_range_is_claimed_confirmed_without_a_source_read() -> None:
     """What this project could read: no FEM range was found, so none is 'confirmed'; the FEM
-    laws carry the labelled 110 stand-in, the analytical laws none."""
+    laws carry the labelled 110 stand-in, the analytical laws their first yield."""
     for name in ("ghaednia", "jackson-green", "kogut-komvopoulos"):
         r = law_range(name)
         assert r.status == "provisional" and r.delta_ratio_max == 110.0
         assert "provisional" in r.text and "not" in r.source
     for name in ("brake", "thornton"):
         assert law_range(name).status == "analytical"
-        assert math.isinf(law_range(name).delta_ratio_max)
-        assert law_range(name).describe()["delta_ratio_max"] is None  # JSON-ready
+        assert law_range(name).delta_ratio_max == 1.0 and "first yield" in law_range(name).source
     assert law_range("hertz").status == "theory" and law_range("hertz").delta_ratio_max == 1.0
 
 
@@ -124,11 +123,12 @@ def test_extrapolation_flag_is_strictly_beyond_the_range(
 
 
 @pytest.mark.parametrize("name", ["brake", "thornton"])
-def test_analytical_laws_are_verified_too_and_never_flagged_outside_the_span(
+def test_analytical_laws_are_verified_too_and_flagged_past_first_yield_outside_the_span(
     name: str, paper_models: dict[str, ContactModel]
 ) -> None:
-    """Brake and Thornton have no fitted range (stand-in: never extrapolated) but a verified
-    one: 1-2 delta_c for the paper's pair; a pair outside the FE span keeps the stand-in."""
+    """Brake and Thornton have no fitted range but a verified one: 1-2 delta_c for the paper's
+    pair; a pair outside the FE span keeps the stand-in, their first yield (as Hertz's): a
+    plastic impact there is not verified."""
     m = paper_models[name]
     dc = m.critical_interference
     assert 1.0 - 1e-12 <= range_limit(m.law_id, m.params) <= 2.5
@@ -136,7 +136,8 @@ def test_analytical_laws_are_verified_too_and_never_flagged_outside_the_span(
     assert extrapolation_flags(m.law_id, m.params, 0.5 * dc) == 0
     soft = _soft_pair_model(name)
     assert range_status(soft.law_id, soft.params) == "unverified"
-    assert not law_extrapolated(soft, 0.5 * soft.max_interference)
+    assert law_extrapolated(soft, 0.5 * soft.max_interference)
+    assert not law_extrapolated(soft, 0.5 * soft.critical_interference)
     assert FLAG_LAW_EXTRAPOLATED == 4
 
 
@@ -211,10 +212,10 @@ def test_range_note_names_the_status_the_span_and_the_limit() -> None:
     paper = get_law("ghaednia").build(ContactPair(AISI_201, AISI_1010), 8.8e-3)
     line = range_note(paper.law_id, paper.params)
     assert line is not None and line.startswith("verified against FE up to 1 delta_c")
-    brake = _soft_pair_model("brake")  # no stand-in range: unverified, no upper end
+    brake = _soft_pair_model("brake")  # unverified: its stand-in, first yield
     lo, hi = e_star_over_sy_span("brake")  # its own cases (not PMMA: no Brinell hardness)
     assert range_note(brake.law_id, brake.params) == (
         f"unverified: E*/S_y = 2198 outside the FE cases' {lo:.0f}-{hi:.0f}; stand-in limit "
-        "no upper end"
+        "1 delta_c"
     )
     assert range_note(-1, paper.params) is None and range_note(paper.law_id, None) is None

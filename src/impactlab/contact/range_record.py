@@ -27,7 +27,7 @@ STATUSES: Mapping[str, str] = MappingProxyType(
         "confirmed": "read in the source",
         "provisional": "stand-in value: the source's own range was not found",
         "theory": "limit of the theory itself",
-        "analytical": "closed-form law, no fitted range",
+        "analytical": "closed-form law, no fitted range (stand-in: its first yield)",
         "tabulated": "interpolated data: the hard limit is the data's end, nothing beyond",
         "verified": "measured against FE for the pair's E*/S_y (contact.verified_ranges)",
         "unverified": "the pair's E*/S_y lies outside the span of the FE cases: the stand-in "

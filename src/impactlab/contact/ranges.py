@@ -23,8 +23,8 @@ states
 - ``e_over_sy``: the range of E/S_y the source covers (``None``: not found; informative);
 - ``status``: ``"confirmed"`` (read in the source), ``"provisional"`` (a labelled stand-in, the
   source's own range was not found), ``"theory"`` (a limit of the theory itself: Hertz holds up
-  to first yield) or ``"analytical"`` (a closed-form law with no fitted range: never
-  extrapolated);
+  to first yield) or ``"analytical"`` (a closed-form law with no fitted range: its stand-in is
+  its first yield, so a plastic impact on a pair outside the FE span is marked, as Hertz's);
 - ``source`` (what the number rests on) and ``reference_keys`` (``impactlab.references``).
 
 An impact whose largest interference exceeds the upper end sets LAW_EXTRAPOLATED
@@ -136,19 +136,22 @@ _ALL = (
     ),
     LawRange(
         Law.BRAKE,
-        math.inf,
+        1.0,
         "delta_y (Brake, paper Eq. 23)",
         "analytical",
         "analytical transition model, no fitted range; Brake (2015) validates it against impact "
-        "experiments from the literature (abstract, OSTI 1146110, read)",
+        "experiments from the literature (abstract, OSTI 1146110, read); outside the FE cases' "
+        "E*/S_y its plastic part is not verified: the stand-in is its first yield",
         ("brake-2015",),
     ),
     LawRange(
         Law.THORNTON,
-        math.inf,
+        1.0,
         "delta_y (Thornton: Hertz peak pressure = p_y)",
         "analytical",
-        "analytical elastic-perfectly plastic model (limiting pressure p_y), no fitted range",
+        "analytical elastic-perfectly plastic model (limiting pressure p_y), no fitted range; "
+        "outside the FE cases' E*/S_y its plastic part is not verified: the stand-in is its "
+        "first yield",
         ("thornton-1997",),
     ),
     LawRange(
