@@ -6,7 +6,9 @@ numba compiles a function on its first call unless its disk cache holds it; it e
 compilation is still running after ``DELAY_S``, one line goes to stderr (what is compiled, why,
 about how long, where it is cached), and on a terminal a counter of the seconds and functions
 compiled so far follows on the same line until the compilation ends. Compilations within
-``DELAY_S`` (small helpers) print nothing. ``IMPACTLAB_QUIET_COMPILE=1`` silences it. A part
+``DELAY_S`` (small helpers; ``KERNEL_DELAY_FACTOR`` times it for the kernels that a cold run
+compiles on the way to an engine, which then announces itself) print nothing.
+``IMPACTLAB_QUIET_COMPILE=1`` silences it. A part
 compiled in several pieces, one after the other (the flexible drop: its right-hand side, step
 and event handler, then the drop), runs them inside ``one_line()``: one line and one counter
 for all of them.
@@ -24,6 +26,12 @@ from typing import Any, TextIO
 
 #: Seconds a compilation runs before it is announced (short ones stay silent).
 DELAY_S = 1.0
+#: The parts compiled on the way to an engine (its kernels, then the engine itself) wait this
+#: many times ``DELAY_S``: a cold run compiles them for 1-3 s and then the engine, which says
+#: so; announcing both gave two lines where a busy host stretched the kernels past 1 s.
+KERNEL_DELAY_FACTOR = 5.0
+#: Those parts, by their description in ``PARTS``.
+KERNEL_PARTS = frozenset(("the engine's shared kernels", "the contact-law kernels"))
 #: The compiled parts, by the module of the function being compiled: (name, about how long in
 #: CPU seconds on a 2-core machine, as measured by benchmarks/bench_compile.py).
 PARTS: tuple[tuple[str, str, int], ...] = (
@@ -64,9 +72,9 @@ class _Notice:
         self.thread.start()
 
     def _run(self) -> None:
-        if self.done.wait(DELAY_S):
-            return
         what, seconds = describe(self.module)
+        if self.done.wait(DELAY_S * (KERNEL_DELAY_FACTOR if what in KERNEL_PARTS else 1.0)):
+            return
         if what in self.announced:  # one line per part and process: a part compiled in
             return  # several pieces (the flexible drop's addresses, then the drop) says it once
         self.announced.add(what)

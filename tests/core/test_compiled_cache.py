@@ -320,3 +320,20 @@ def test_warm_in_processes_refuses_zero_jobs() -> None:
 
     with pytest.raises(ValueError, match="jobs must be a whole number >= 1, got 0"):
         warm_in_processes(jobs=0)
+
+
+def test_the_kernels_on_the_way_to_an_engine_wait_longer(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A cold run compiles the contact-law kernels (1-3 s) and then the engine: only the
+    engine's line, unless the kernels alone run past KERNEL_DELAY_FACTOR x DELAY_S."""
+    stream = _stderr(monkeypatch)
+    monkeypatch.setattr(_compile_notice, "DELAY_S", 0.05)
+    monkeypatch.setattr(_compile_notice, "KERNEL_DELAY_FACTOR", 3600.0 / 0.05)
+    listener = _compile_notice._Listener()
+    listener.on_start(_event("impactlab.contact.kernels"))
+    listener.on_end(None)  # long before its delay: silent
+    listener.on_start(_event("impactlab.dynamics.core.driver"))
+    assert _wait_for(lambda: stream.getvalue().endswith("\n"))
+    listener.on_end(None)
+    lines = stream.getvalue().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("impactlab: compiling the impact engine")
+    assert _compile_notice.KERNEL_PARTS <= {name for _, name, _ in _compile_notice.PARTS}
