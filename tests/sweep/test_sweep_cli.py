@@ -136,3 +136,36 @@ def test_uncertainty_command(tmp_path, monkeypatch, capsys) -> None:
     outs = {r["output"] for r in rep["summary"]}
     assert outs == {"e", "delta_p", "sliding_length", "duration", "mean_force"}
     assert {r["input"] for r in rep["sensitivity"]} == {"vy", "mu"}
+
+
+def test_a_cluster_without_workers_is_one_line(tmp_path, monkeypatch, capsys) -> None:
+    """The sweep stops when the cluster has had no worker for worker_timeout: the command says
+    so in one line (exit 2), not with the traceback of the watch."""
+    import impactlab.sweep as sweep_pkg
+    from impactlab.sweep.backends import NoWorkersError
+
+    def no_workers(*_args: object, **_kwargs: object) -> None:
+        raise NoWorkersError("no Dask worker left on the cluster for 5 s (worker_timeout); ...")
+
+    monkeypatch.setattr(sweep_pkg, "run_sweep", no_workers)
+    study = tmp_path / "s.toml"
+    study.write_text("[fixed]\nvy = -1.41\nmu = 0.2\n[grid]\nangle = ['20 deg', '45 deg']\n")
+    code, out, err = run_cli(monkeypatch, capsys, "sweep", str(study), "--out",
+                             str(tmp_path / "s.zarr"))  # fmt: skip
+    assert code == 2 and out == ""
+    assert err == "error: no Dask worker left on the cluster for 5 s (worker_timeout); ...\n"
+
+
+def test_uncertainty_outputs_the_study_does_not_keep_are_refused_before_the_sweep(
+    tmp_path, monkeypatch, capsys
+) -> None:
+    study = tmp_path / "u.toml"
+    study.write_text(
+        "[study]\nname = 'u'\n[fixed]\nangle = '20 deg'\nvy = -1.41\n[sample]\nsize = 20\n"
+        "seed = 1\nmu = { dist = 'uniform', low = 0.1, high = 0.3 }\n"
+        "[uncertainty]\noutputs = ['e', 'zz']\n"
+    )
+    store = tmp_path / "u.zarr"
+    code, _, err = run_cli(monkeypatch, capsys, "sweep", str(study), "--out", str(store), "-q")
+    assert code == 2 and "[uncertainty] would report ['zz'], which the study does not keep" in err
+    assert not store.exists()  # nothing computed

@@ -64,7 +64,7 @@ class _Where:
 
 def _run(study_path: Path, where: _Where, quiet: bool, restart: bool) -> SweepResult:
     from impactlab.sweep import Study, SweepSizeWarning, run_sweep
-    from impactlab.sweep.backends import DEFAULT_WORKER_TIMEOUT
+    from impactlab.sweep.backends import DEFAULT_WORKER_TIMEOUT, NoWorkersError
 
     timeout = where.worker_timeout
 
@@ -88,6 +88,8 @@ def _run(study_path: Path, where: _Where, quiet: bool, restart: bool) -> SweepRe
         if where.scheduler is not None:
             raise UserError(f"cannot use the Dask scheduler {where.scheduler!r}: {exc}") from None
         raise
+    except NoWorkersError as exc:  # one line, as docs/sweep.md says
+        raise UserError(str(exc)) from None
 
 
 def _print_uncertainty(

@@ -122,6 +122,11 @@ def run_processes(job: Job, workers: int, max_in_flight: int | None) -> None:
     ex.shutdown(wait=True)
 
 
+class NoWorkersError(RuntimeError):
+    """The Dask cluster had no worker for ``worker_timeout`` seconds (the finished chunks are
+    stored; a run of the same study continues)."""
+
+
 class _WorkerWatch:
     """Fails the sweep once the cluster has had no worker for ``timeout`` seconds."""
 
@@ -137,7 +142,7 @@ class _WorkerWatch:
         now = time.monotonic()
         self.since = now if self.since is None else self.since
         if now - self.since >= self.timeout:
-            raise RuntimeError(
+            raise NoWorkersError(
                 f"no Dask worker left on the cluster for {self.timeout:g} s (worker_timeout); "
                 f"the finished chunks are stored: start workers and run the same command again "
                 f"to continue"

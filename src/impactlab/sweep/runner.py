@@ -251,6 +251,13 @@ def run_sweep(
     if "partial_slip" in category_values(st)["friction"] and st.engine.rtol is not None:
         check_partial_slip_rtol(float(st.engine.rtol))
     meta = store_meta(st, ev)
+    unkept = [o for o in st.uncertainty.outputs if o not in meta.outputs] if st.uncertainty else []
+    if unkept:  # found before the sweep, not by its report after it
+        raise ValueError(
+            f"[uncertainty] would report {unkept}, which the study does not keep (it keeps: "
+            f"{', '.join(meta.outputs)}); keep them in [outputs], or name the outputs to "
+            f"report in [uncertainty] outputs"
+        )
     path = Path(store) if store is not None else Path(f"{st.name}.zarr")
     sstore = SweepStore(path)
     try:
