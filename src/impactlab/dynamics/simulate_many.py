@@ -104,6 +104,7 @@ def simulate_batch(
         angle = check_angle(angle, body)  # one angle for every case: refused as by simulate
     vx, vy = batch_velocity(vx, vy, speed, incidence)
     x = _batch_inputs({"mu": mu, "angle": angle, "vx": vx, "vy": vy, "spin": spin})
+    _refuse_degrees(x["angle"], isinstance(body, Sphere))
     out, status = run_arrays(
         model.law_id,
         fric.friction_id,
@@ -128,6 +129,18 @@ def simulate_batch(
         ),
         law_range=range_note(model.law_id, model.params),
     )
+
+
+def _refuse_degrees(angle: np.ndarray, sphere: bool) -> None:
+    """ValueError when every angle of a rod's batch lies in (pi/2, 90]: numbers in degrees,
+    which would fail case by case (status 7) without a word."""
+    a = angle[np.isfinite(angle)]
+    if not sphere and a.size and bool(np.all((a > 0.5 * np.pi) & (a <= 90.0))):
+        raise ValueError(
+            f"angle: every value lies in (pi/2, 90] ({float(a.min()):g} to {float(a.max()):g}): "
+            "degrees? a bare angle is radians, as every bare number of the Python API is SI; "
+            "pass np.radians(...) or a Quantity"
+        )
 
 
 __all__ = ["simulate_batch"]
