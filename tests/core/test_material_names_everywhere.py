@@ -52,10 +52,3 @@ def test_an_unknown_name_lists_the_library() -> None:
 def test_a_property_given_twice_is_refused() -> None:
     with pytest.raises(ValueError, match=r"E is given twice \('69GPa' and '70GPa'\)"):
         il.get_material("E=69GPa, E=70GPa, nu=0.33, Sy=276MPa, rho=2700kg/m^3")
-
-
-def test_a_history_names_its_columns_for_a_wrong_one() -> None:
-    r = il.simulate(il.Rod.paper(), angle=0.35, velocity=(0.0, -1.41))
-    with pytest.raises(AttributeError, match=r"no attribute 'force'; columns: t, penetration"):
-        r.history.force  # noqa: B018
-    assert not hasattr(r.history, "force")

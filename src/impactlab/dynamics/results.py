@@ -6,6 +6,7 @@ derived products (the dent map, data frames) are computed from them on request.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -170,12 +171,15 @@ class ImpactResult(DerivedOutputs, ResultDisplay):
 
     def to_dict(self, *, include_history: bool = False) -> dict[str, Any]:
         """Scalar fields as a plain dict (with ``max_delta_ratio`` and ``extrapolated``;
-        ``flags`` as an int, ``warnings`` as a list; history as lists of columns if asked)."""
+        ``flags`` as an int, ``warnings`` as a list; history as lists of columns if asked). A
+        sphere's ``angle`` and ``angle_out`` are None (it has none; strict JSON has no NaN)."""
         d: dict[str, Any] = {}
         for name in self.__dataclass_fields__:
             if name.startswith("_") or name in ("history", "references"):
                 continue
             v = getattr(self, name)
+            if name in ("angle", "angle_out") and isinstance(v, float) and math.isnan(v):
+                v = None
             d[name] = list(v) if isinstance(v, tuple) else v
         d["max_delta_ratio"] = self.max_delta_ratio
         d["extrapolated"] = self.extrapolated
