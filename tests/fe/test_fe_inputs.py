@@ -252,3 +252,23 @@ def test_mesh_resolution_is_checked_against_the_requested_interference():
     assert contact_elements(coarse, 4e-4) < MIN_CONTACT_ELEMENTS
     with pytest.raises(ValueError, match=r"too coarse for delta_max = 0.0004 m"):
         check_resolution(coarse, 4e-4)
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        (("--flat-nu", "0.6"), "error: --flat-nu: nu must lie in (-1.0, 0.5), got 0.6"),
+        (("--flat-sy", "276 GPa"), "error: --flat-sy: yield_strength (2.76e+11 Pa) must be"),
+    ],
+)
+def test_a_material_option_is_named_in_its_error(cli_main, args, message):
+    values = {"--flat-E": "200 GPa", "--flat-nu": "0.3", "--flat-sy": "276 MPa"} | dict([args])
+    code, _, err = cli_main(
+        "fe", "indent", "--max", "1 um", *(x for kv in values.items() for x in kv)
+    )
+    assert code == 2 and err.startswith(message) and err.count("\n") == 1
+
+
+def test_a_bare_maximum_is_said_to_be_metres(cli_main):
+    code, _, err = cli_main("fe", "indent", "--max", "5")
+    assert code == 2 and "a bare number is in m: give a unit, e.g. '5 um'" in err

@@ -49,12 +49,16 @@ def _material(name: str, E: str | None, nu: float | None, sy: str | None, label:
             f"{', '.join(f'--{label}-{k}' for k in given)} without {', '.join(missing)}: a "
             f"material by values is given whole (a library material is never partly changed)"
         )
-    return Material(
-        f"{label} (custom)",
-        quantity(E, "Pa", f"--{label}-E"),  # type: ignore[arg-type]
-        float(nu),  # type: ignore[arg-type]
-        quantity(sy, "Pa", f"--{label}-sy"),  # type: ignore[arg-type]
-    )
+    try:
+        return Material(
+            f"{label} (custom)",
+            quantity(E, "Pa", f"--{label}-E"),  # type: ignore[arg-type]
+            float(nu),  # type: ignore[arg-type]
+            quantity(sy, "Pa", f"--{label}-sy"),  # type: ignore[arg-type]
+        )
+    except ValueError as exc:  # the Material's own words, named by the option that set it
+        option = {"E": "E", "nu": "nu", "yield_strength": "sy"}.get(str(exc).split()[0])
+        raise UserError(f"--{label}-{option or 'E/nu/sy'}: {exc}") from None
 
 
 def read_hardening(path: Path) -> list[tuple[float, float]]:

@@ -292,7 +292,10 @@ def make_problem(
     R = check_positive("radius", radius, "m")
     d = check_positive("delta_max", delta_max, "m")
     if d >= R:
-        raise ValueError(f"delta_max ({d!r} m) must be smaller than the sphere radius ({R!r} m)")
+        raise ValueError(
+            f"delta_max ({d!r} m) must be smaller than the sphere radius ({R!r} m) (a bare "
+            f"number is in m: give a unit, e.g. '5 um')"
+        )
     if estimated_contact_radius(R, d) >= 0.95 * R:
         raise ValueError(
             f"delta_max ({d!r} m) is too large for radius {R!r} m: the contact radius would "
