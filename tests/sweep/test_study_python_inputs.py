@@ -68,3 +68,14 @@ def test_speed_and_incidence_store_no_velocity_components(tmp_path) -> None:
     ds = run_sweep(st, tmp_path / "s.zarr", evaluator=FakeEvaluator(), quiet=True).dataset
     assert "vx" not in ds and "vy" not in ds
     assert float(ds["speed"]) == 2.0 and list(ds["incidence"].values) == [0.0, 0.5]
+
+
+def test_a_material_fixed_by_values_that_is_none_is_refused() -> None:
+    """Every case would fail (status 101) with exit 0: refused when the study is built."""
+    with pytest.raises(ValueError, match=r"\[fixed\] flat_\*: yield_strength .* smaller than E"):
+        Study(name="m", grid={"angle": [0.35, 0.5]},
+              fixed={"vy": -1.41, "mu": 0.2, "flat_E": 200e6, "flat_nu": 0.3,
+                     "flat_yield_strength": 305e6})  # fmt: skip
+    Study(name="m", grid={"flat_E": [200e9, 210e9]},  # varied: checked case by case
+          fixed={"angle": 0.35, "vy": -1.41, "mu": 0.2, "flat_nu": 0.3,
+                 "flat_yield_strength": 305e6})  # fmt: skip

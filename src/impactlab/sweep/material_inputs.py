@@ -36,8 +36,9 @@ def check_material_inputs(
 ) -> dict[str, Any]:
     """``fixed`` with ``<side>_material = "custom"`` added for every side defined by values.
     ``varied``: the inputs on the grid or in the sample; ``categories``: the values of the
-    category inputs set in [fixed] or on the grid. ValueError for a partial definition, or for
-    a library name beside property inputs."""
+    category inputs set in [fixed] or on the grid. ValueError for a partial definition, for
+    a library name beside property inputs, or for a material fixed by values that is not one
+    (S_y >= E, nu out of range: every case would fail)."""
     given = set(fixed) | set(varied)
     out = dict(fixed)
     for side, fields in MATERIAL_OVERRIDES.items():
@@ -61,6 +62,12 @@ def check_material_inputs(
                 f"is then labelled {CUSTOM!r}) or the {side}_* properties"
             )
         out[key] = CUSTOM
+        if not set(props) & set(varied):  # one material for every case: checked now, not
+            values = {f: float(fixed[n]) for n, f in fields.items() if n in fixed}  # per case
+            try:
+                custom_material(side, values)
+            except ValueError as exc:
+                raise ValueError(f"[fixed] {side}_*: {exc}") from None
     return out
 
 
