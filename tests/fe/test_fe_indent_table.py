@@ -92,3 +92,6 @@ def test_json_follows_the_schema_rules(cli_main: CliMain, fake_runs) -> None:
     run = data["runs"][0]
     for name in ("delta_max_over_delta_c", "residual_ratio", "force_balance"):
         assert run[name]["unit"] == "1", name
+    case = data["case"]  # what was indented: two outputs can be told apart
+    assert case["radius"] == {"value": 0.0088, "unit": "m"} and case["mesh_level"] == 1
+    assert case["flat"].startswith("AISI 1010") and case["sphere"] == "elastic-plastic"

@@ -260,6 +260,15 @@ def indent_cmd(
             results = indent(fm, bm, **kwargs)
     else:
         results = indent(fm, bm, **kwargs)
+    case = {  # what was indented: the JSON's "case", the line above the tables
+        "sphere_material": bm.name,
+        "sphere": sphere,
+        "radius": R,
+        "flat": fm.name,
+        "flat_hardening": "table" if table is not None else "none (elastic-perfectly plastic)",
+        "mu": mu,
+        "mesh_level": mesh,
+    }
     if as_json:
         from impactlab._json import to_json
         from impactlab.fe.cache import ARRAYS
@@ -270,8 +279,14 @@ def indent_cmd(
             for name in ARRAYS:
                 item[name] = getattr(r, name).tolist()
             payload.append(item)
-        print(json.dumps(to_json({"runs": payload}, _UNITS), indent=2))
+        units = {**_UNITS, "radius": "m", "mu": "1"}
+        print(json.dumps(to_json({"case": case, "runs": payload}, units), indent=2))
     else:
+        console.print(
+            f"{bm.name} sphere ({sphere}, R = {R * 1e3:g} mm) on {fm.name}"
+            f"{' (hardening table)' if table is not None else ''}, mu = {mu:g}, mesh level {mesh}",
+            markup=False,
+        )
         for r in results:
             print_rows(summary_rows(r), f"FE indentation to {r.delta_max * 1e6:.4g} um")
     if plot:
