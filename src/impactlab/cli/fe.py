@@ -15,7 +15,7 @@ import csv
 import json
 import sys
 from pathlib import Path
-from typing import Any
+from typing import Any, cast
 
 import typer
 
@@ -217,7 +217,7 @@ def indent_cmd(
     from impactlab.fe import find_ccx, indent
     from impactlab.fe.problem import make_problem
 
-    R = positive(radius, "m", "--radius")
+    R = cast(float, positive(radius, "m", "--radius"))  # the option has a default
     deltas = [positive(m, "m", "--max") for m in maxima]
     fm = _material(flat, flat_E, flat_nu, flat_sy, "flat")
     bm = _material(body, body_E, body_nu, body_sy, "body")
