@@ -111,6 +111,14 @@ def status_error(
             f"doi:10.1137/S0036144599360110): lower mu below {jam:.3g}, or use friction "
             f"'coulomb', whose contact point can stick"
         )
+    elif status == S.ST_LAW_LIMIT and model.name == "tabulated":
+        ratio = model.max_interference / model.critical_interference
+        text = (
+            f"the interference exceeded {model.max_interference:.6g} m, where the tabulated "
+            f"law's curves end ({ratio:.4g} delta_c of the pair): lower the impact velocity, "
+            f"or use curves that reach further (impactlab.fe.tabulated_law's "
+            f"maxima_over_delta_c for a pair of one's own; docs/laws/tabulated.md)"
+        )
     elif status == S.ST_LAW_LIMIT:
         text = (
             f"the interference exceeded {model.max_interference:.6g} m, the validity limit of "

@@ -1,7 +1,8 @@
-"""Painleve's paradox under the paper's impulse_ratio friction (F_t = mu F_n throughout): once
-mu reaches (k^2 + a^2) / (a b), the friction force's moment pushes the slipping contact point
-into the flat faster than the normal force pushes it out. The rod's interference then runs to
-the law's limit; the error says why and gives the bound, which is the rigid-body closed form."""
+"""Why an impact's interference ran to the law's limit, said in its error. Painleve's paradox
+under the paper's impulse_ratio friction (F_t = mu F_n throughout): once mu reaches
+(k^2 + a^2) / (a b), the friction force's moment pushes the slipping contact point into the
+flat faster than the normal force pushes it out; the error names it and gives the bound, the
+rigid-body closed form. The tabulated law ends where its curves end, and says so."""
 
 from __future__ import annotations
 
@@ -59,3 +60,8 @@ def test_below_the_bound_or_with_stick_there_is_no_jam() -> None:
 def test_a_law_limit_without_friction_keeps_its_message() -> None:
     with pytest.raises(ValueError, match="lower the impact velocity"):
         il.simulate(ROD, friction="impulse_ratio", mu=0.0, angle=ANGLE, velocity=(0.0, -60.0))
+
+
+def test_the_tabulated_law_says_where_its_curves_end() -> None:
+    with pytest.raises(ValueError, match=r"where the tabulated law's curves end \(1000 delta_c"):
+        il.simulate(ROD, law="tabulated", angle=math.radians(70), velocity=(0.0, -40.0), mu=0.2)
