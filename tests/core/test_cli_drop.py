@@ -129,3 +129,20 @@ def test_help_has_examples(monkeypatch, capsys):
     code, out, _err = _cli(monkeypatch, capsys, "--help")
     assert code == 0
     assert 'impactlab drop --angle "20 deg"' in out and "--rigid" in out
+
+
+def test_drop_takes_a_tolerance_and_says_whether_it_is_ok(cli_main, tmp_path) -> None:
+    """``--rtol`` runs the drop at another tolerance (to check its convergence), also on top of
+    ``--from``; the JSON says ``ok`` as the result does."""
+    import json
+
+    code, out, _ = cli_main("drop", "--angle", "20 deg", "--vy", "-1.41 m/s", "--mu", "0.2",
+                            "--rtol", "1e-9", "--json")  # fmt: skip
+    d = json.loads(out)
+    assert code == 0 and d["input"]["rtol"] == {"value": 1e-9, "unit": "1"} and d["ok"] is True
+    rec = tmp_path / "d.json"
+    rec.write_text(out)
+    code, out, _ = cli_main("drop", "--from", str(rec), "--rtol", "1e-8", "--json")
+    assert code == 0 and json.loads(out)["input"]["rtol"]["value"] == 1e-8
+    code, _, err = cli_main("drop", "--angle", "20 deg", "--vy", "-1.41 m/s", "--rtol", "0.1")
+    assert code == 2 and "rtol must lie in [1e-13, 0.001], got 0.1" in err

@@ -231,6 +231,12 @@ def drop_cmd(
         None, "--damping", help="Modal damping ratio zeta of every mode, in [0, 1) (default 0)."
     ),
     no_gravity: bool = typer.Option(False, "--no-gravity", help="Switch gravity off."),
+    rtol: float = typer.Option(
+        None,
+        "--rtol",
+        help="Relative tolerance of the integration, in [1e-13, 1e-3] (default 1e-7): run "
+        "again tighter to check that the contacts and totals hold.",
+    ),
     stop: str = typer.Option(
         None,
         "--stop",
@@ -296,6 +302,7 @@ def drop_cmd(
         rate=rate_name(rate),
         history=False,
         stop="sequence" if stop is None else stop,
+        rtol=rtol,
     )
     for text in result.warnings:
         print(f"warning: {text}", file=sys.stderr)
@@ -305,7 +312,7 @@ def drop_cmd(
 #: The options of ``drop`` that ``--from`` reads as given (the keys of ``impactlab simulate``).
 _FROM_KEYS: tuple[str, ...] = ("angle", "vy", "vx", "speed", "incidence", "spin", "length")
 _FROM_KEYS += ("radius", "mass", "diameter", "material", "flat", "mu", "friction", "law")
-_FROM_KEYS += ("rate", "modes_axial", "modes_bending", "damping", "stop")
+_FROM_KEYS += ("rate", "modes_axial", "modes_bending", "damping", "stop", "rtol")
 
 
 def register(app: typer.Typer) -> None:

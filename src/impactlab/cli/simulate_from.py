@@ -201,6 +201,8 @@ def from_changes(
             raise UserError(str(exc)) from None
     if given.get("gravity") is False:
         changes["gravity"] = False
+    if given.get("rtol") is not None:  # impactlab drop --rtol
+        changes["rtol"] = float(given["rtol"])
     return changes | _options(given, function == SIMULATE_DROP)
 
 

@@ -359,6 +359,7 @@ class DropResult(DerivedOutputs, ResultDisplay):
         d["contacts"] = [c.__dict__ for c in self.contacts]
         d["dents"] = [x.__dict__ for x in self.dents]
         d["flags"] = int(self.flags)
+        d["ok"] = bool(self.ok)
         d["warnings"] = list(self.warnings)
         d["sequence_mean_force"] = self.sequence_mean_force
         d["energy_balance"] = self.energy_balance

@@ -185,6 +185,7 @@ class ImpactResult(DerivedOutputs, ResultDisplay):
         d["extrapolated"] = self.extrapolated
         d["law_range"] = self.law_range
         d["flags"] = int(self.flags)
+        d["ok"] = bool(self.ok)
         d["warnings"] = list(self.warnings)
         d |= self.derived()  # schema.register_output
         d["impactlab_version"] = __version__
