@@ -272,3 +272,18 @@ def test_a_material_option_is_named_in_its_error(cli_main, args, message):
 def test_a_bare_maximum_is_said_to_be_metres(cli_main):
     code, _, err = cli_main("fe", "indent", "--max", "5")
     assert code == 2 and "a bare number is in m: give a unit, e.g. '5 um'" in err
+
+
+@pytest.mark.parametrize(
+    ("table", "message"),
+    [
+        ([[305e6, 0.0], [1e15, 0.1]], r"a true stress of 1e\+15 Pa is not below E"),
+        ([[305e6, 0.0], [400e6, 1e6]], r"a true plastic strain of 1e\+06 \(allowed: up to 5\)"),
+        ([[305e6, 0.0], [math.nan, 0.1]], r"must be finite, got row 2 \(nan, 0.1\)"),
+    ],
+)
+def test_a_hardening_table_that_is_no_metals_is_refused(table, message):
+    from impactlab.fe.problem import make_problem
+
+    with pytest.raises(ValueError, match=message):
+        make_problem(AISI_1010, AISI_201, radius=R, delta_max=1e-6, flat_hardening=table)

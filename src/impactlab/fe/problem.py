@@ -56,10 +56,16 @@ def check_hardening(name: str, table: Any) -> tuple[tuple[float, float], ...]:
         arr = np.asarray(table, dtype=np.float64)
     except (TypeError, ValueError):
         raise ValueError(f"{name} must be rows of (true stress [Pa], plastic strain)") from None
-    if arr.ndim != 2 or arr.shape[1] != 2 or len(arr) < 1 or not np.all(np.isfinite(arr)):
+    if arr.ndim != 2 or arr.shape[1] != 2 or len(arr) < 1:
         raise ValueError(
-            f"{name} must be rows of finite (true stress [Pa], plastic strain), got shape "
-            f"{arr.shape}"
+            f"{name} must be rows of (true stress [Pa], plastic strain), got shape {arr.shape}"
+        )
+    bad = np.flatnonzero(~np.all(np.isfinite(arr), axis=1))
+    if bad.size:
+        row = arr[int(bad[0])]
+        raise ValueError(
+            f"{name} must be finite, got row {int(bad[0]) + 1} ({float(row[0])!r}, "
+            f"{float(row[1])!r})"
         )
     s, e = arr[:, 0], arr[:, 1]
     if e[0] != 0.0 or np.any(s <= 0.0):
@@ -77,6 +83,9 @@ def check_hardening(name: str, table: Any) -> tuple[tuple[float, float], ...]:
 
 #: How far a hardening table's first stress may lie from the material's S_y (relative).
 HARDENING_START_TOL = 0.05
+#: Largest true plastic strain of a hardening table: an indentation strains the flat by tens of
+#: percent at most, so a larger number is a percentage or an engineering strain mistyped.
+HARDENING_MAX_STRAIN = 5.0
 
 
 def check_hardening_start(name: str, rows: tuple[tuple[float, float], ...], m: Material) -> None:
@@ -84,6 +93,19 @@ def check_hardening_start(name: str, rows: tuple[tuple[float, float], ...], m: M
     ``HARDENING_START_TOL``): delta_c and E*/S_y, which every result is read against, come
     from S_y, so the FE's first yield must be there."""
     s0, sy = rows[0][0], m.yield_strength
+    top, strain = max(r[0] for r in rows), max(r[1] for r in rows)
+    if top >= m.E:
+        raise ValueError(
+            f"{name}: a true stress of {value_text(top, 'Pa')} is not below E = "
+            f"{value_text(m.E, 'Pa')}: no metal hardens that far; check the columns (stress "
+            "[Pa], then plastic strain) and the units"
+        )
+    if strain > HARDENING_MAX_STRAIN:
+        raise ValueError(
+            f"{name}: a true plastic strain of {strain:g} (allowed: up to "
+            f"{HARDENING_MAX_STRAIN:g}); strains are fractions, 0.1 for 10 %; check the columns "
+            "(stress [Pa], then plastic strain)"
+        )
     if abs(s0 / sy - 1.0) <= HARDENING_START_TOL:
         return
     hint = " (stresses are in Pa: 305 MPa is 305e6)" if s0 < 1e-3 * sy else ""
