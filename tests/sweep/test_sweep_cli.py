@@ -169,3 +169,15 @@ def test_uncertainty_outputs_the_study_does_not_keep_are_refused_before_the_swee
     code, _, err = run_cli(monkeypatch, capsys, "sweep", str(study), "--out", str(store), "-q")
     assert code == 2 and "[uncertainty] would report ['zz'], which the study does not keep" in err
     assert not store.exists()  # nothing computed
+
+
+def test_a_chunking_warning_is_given_once(tmp_path, monkeypatch, capsys) -> None:
+    """The study warns when it is built; the store's record read back does not warn again."""
+    study = tmp_path / "w.toml"
+    study.write_text(
+        "[study]\nname = 'w'\nchunk_size = 1\n[fixed]\nvy = -1.41\nmu = 0.2\n[grid]\n"
+        "angle = ['10 deg', '20 deg', '30 deg', '40 deg', '50 deg', '60 deg', '70 deg', '80 deg']\n"
+    )
+    code, _, err = run_cli(monkeypatch, capsys, "sweep", str(study), "--out",
+                           str(tmp_path / "w.zarr"), "-q")  # fmt: skip
+    assert code == 0 and err.count("chunk_size = 1 cuts 8 cases") == 1

@@ -21,7 +21,7 @@ import zarr
 
 from impactlab.sweep.integrity import DamagedStoreError
 from impactlab.sweep.storebuild import consolidate, create_defined_array, defined_arrays
-from impactlab.sweep.study import Study
+from impactlab.sweep.study import Study, recorded_study
 
 __all__ = ["damaged_defined_arrays", "defined_arrays_error", "rewrite_defined_arrays"]
 
@@ -29,7 +29,7 @@ __all__ = ["damaged_defined_arrays", "defined_arrays_error", "rewrite_defined_ar
 def _stored_study(group: Any) -> Study | None:
     """The study recorded in the store's root attributes (None when there is none)."""
     text = group.attrs.get("study")
-    return Study.from_dict(json.loads(text)) if isinstance(text, str) else None
+    return recorded_study(json.loads(text)) if isinstance(text, str) else None
 
 
 def _same(stored: Any, expected: Any) -> bool:

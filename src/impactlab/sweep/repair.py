@@ -23,7 +23,7 @@ from impactlab.sweep.storebuild import (
     create_result_array,
     write_study_record,
 )
-from impactlab.sweep.study import Study
+from impactlab.sweep.study import Study, recorded_study
 
 __all__ = ["mismatch_message", "repair_metadata", "restore_study_record", "root_mismatch"]
 
@@ -55,7 +55,7 @@ def root_mismatch(path: Path, study: Study, meta: StoreMeta) -> str | None:
     study, or the engine identity kept beside it is not the installed one), or None."""
     engine = recorded_engine(path)
     try:
-        recorded = Study.from_dict(json.loads((path / META / "study.json").read_text()))
+        recorded = recorded_study(json.loads((path / META / "study.json").read_text()))
     except Exception as exc:  # a record that no longer reads as a study: not this one
         return (
             f"store {str(path)!r} is damaged (its zarr.json) and its study record cannot be "

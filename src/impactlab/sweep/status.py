@@ -26,8 +26,9 @@ class SweepStatus(enum.IntEnum):
     )
     BAD_BODY = (
         102,
-        "body rejected (impactlab.bodies: non-positive length, radius, mass or inertia, or both "
-        "mass and density given)",
+        "body rejected (impactlab.bodies: a non-positive length, radius, mass or inertia; a tip "
+        "radius above half the length; a diameter wider than twice the tip radius, or mass and "
+        "diameter more than 2 % off the density; both mass and density given)",
     )
     BAD_LAW = (103, "contact law rejected its parameters (outside the law's validity)")
     BAD_INPUT = (104, "non-finite kinematic input (angle, vx, vy, spin or mu)")

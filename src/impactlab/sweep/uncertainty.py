@@ -36,7 +36,7 @@ from impactlab.sweep.options import (
     DEFAULT_UNCERTAINTY_OUTPUTS,
     UncertaintySpec,
 )
-from impactlab.sweep.study import Study
+from impactlab.sweep.study import recorded_study
 
 
 @dataclass(frozen=True)
@@ -235,7 +235,7 @@ def study_uncertainty_spec(ds: Any) -> UncertaintySpec | None:
     """The ``[uncertainty]`` table of the study that wrote the sweep's Dataset (None: none, or
     no readable study in the attributes)."""
     try:
-        return Study.from_dict(json.loads(ds.attrs["study"])).uncertainty
+        return recorded_study(json.loads(ds.attrs["study"])).uncertainty
     except (KeyError, ValueError):
         return None
 

@@ -29,7 +29,8 @@ STATUS_MESSAGES: dict[int, str] = {
     ST_NOT_APPROACHING: "the contact point does not approach the flat (normal velocity >= 0)",
     ST_NO_SEPARATION: "no separation within the step limit",
     ST_BAD_INPUT: "invalid input: a body, law, initial-state, mu or tolerance value is not finite "
-    "or out of range (speeds up to 1e4 m/s, mu up to 1e3, gravity up to 1e7 m/s^2)",
+    "or out of range (mu in [0, 1e3], speeds up to 1e4 m/s, gravity in [0, 1e7] m/s^2, rtol in "
+    "[1e-13, 1e-3])",
     ST_NAN: "the contact law returned a non-finite value (law not available or outside its domain)",
     ST_STEP_UNDERFLOW: "step-size underflow: the integrator could not meet the tolerance",
     ST_BAD_ANGLE: "angle outside (0, pi/2] radians",
