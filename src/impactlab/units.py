@@ -128,6 +128,12 @@ def _convert(name: str, q: Any, unit: str, shown: Any) -> Any:
             f"{name}: {shown!r} is a frequency in hertz, ambiguous as an angular velocity "
             "(cycles or radians per second); give rad/s, or turns as 'turn/s' or 'rpm'"
         )
+    # pint takes every dimensionless unit for any other: a solid angle (sr = rad^2) or a count
+    # would pass for an angle; the powers of the radian must agree
+    base = dict(q.to_base_units().unit_items())
+    want = dict(registry().Quantity(1.0, unit).to_base_units().unit_items())
+    if base.get("radian", 0) != want.get("radian", 0) or "count" in base:
+        raise ValueError(f"{name}: {shown!r} is not a quantity of {unit} (its unit is {q.units:~})")
     try:
         return q.to(unit)
     except pint.DimensionalityError:
@@ -216,6 +222,11 @@ def angle_to_rad(value: Any, *, name: str = "angle") -> float:
     if q is None or q.unitless:
         raise ValueError(
             f"{name} {str(value).strip()} has no unit: give a unit, e.g. '20 deg' or '0.35 rad'"
+        )
+    if dict(q.to_base_units().unit_items()) != {"radian": 1}:  # pint: sr, count are numbers
+        raise ValueError(
+            f"{name}: {str(value).strip()!r} is not an angle (its unit is {q.units:~}); give "
+            f"deg, rad, turn or arcmin, e.g. '20 deg'"
         )
     return to_si(value, "degree", name=name)
 

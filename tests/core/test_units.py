@@ -220,3 +220,14 @@ def test_a_decimal_comma_in_a_study_file_is_refused(tmp_path) -> None:
     f.write_text('[fixed]\nvy = "-1,41 m/s"\nmu = 0.2\n[grid]\nangle = ["20 deg", "45 deg"]\n')
     with pytest.raises(ValueError, match=r"vy: '-1,41 m/s' holds a comma.*'-1.41 m/s'"):
         load_study(f)
+
+
+@pytest.mark.parametrize("text", ["0.3 sr", "0.3 count"])
+def test_a_dimensionless_unit_that_is_no_angle_is_refused(text: str) -> None:
+    """pint converts any dimensionless unit to another: a solid angle or a count read as
+    radians before."""
+    with pytest.raises(ValueError, match=rf"angle: '{text}' is not"):
+        magnitude("angle", text, "rad")
+    with pytest.raises(ValueError, match="is not an angle"):
+        angle_to_rad(text)
+    assert magnitude("spin", "3 rpm", "rad/s") == pytest.approx(0.3141592653589793)
