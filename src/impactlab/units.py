@@ -128,18 +128,20 @@ def _convert(name: str, q: Any, unit: str, shown: Any) -> Any:
             f"{name}: {shown!r} is a frequency in hertz, ambiguous as an angular velocity "
             "(cycles or radians per second); give rad/s, or turns as 'turn/s' or 'rpm'"
         )
-    # pint takes every dimensionless unit for any other: a solid angle (sr = rad^2) or a count
-    # would pass for an angle; the powers of the radian must agree
-    base = dict(q.to_base_units().unit_items())
-    want = dict(registry().Quantity(1.0, unit).to_base_units().unit_items())
-    if base.get("radian", 0) != want.get("radian", 0) or "count" in base:
-        raise ValueError(f"{name}: {shown!r} is not a quantity of {unit} (its unit is {q.units:~})")
     try:
-        return q.to(unit)
+        out = q.to(unit)
     except pint.DimensionalityError:
         raise ValueError(
             f"{name}: {shown!r} has the wrong dimension; expected a quantity convertible to {unit}"
         ) from None
+    # pint converts any dimensionless unit into another: a solid angle (sr = rad^2) or a count
+    # would pass for an angle. A pure number stays one (radians, the angle rule); otherwise the
+    # powers of the radian must agree.
+    base = dict(q.to_base_units().unit_items())
+    want = dict(registry().Quantity(1.0, unit).to_base_units().unit_items())
+    if base and (base.get("radian", 0) != want.get("radian", 0) or "count" in base):
+        raise ValueError(f"{name}: {shown!r} is not a quantity of {unit} (its unit is {q.units:~})")
+    return out
 
 
 def _foreign(name: str, q: Any) -> Any:
