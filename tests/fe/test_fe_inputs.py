@@ -287,3 +287,13 @@ def test_a_hardening_table_that_is_no_metals_is_refused(table, message):
 
     with pytest.raises(ValueError, match=message):
         make_problem(AISI_1010, AISI_201, radius=R, delta_max=1e-6, flat_hardening=table)
+
+
+def test_one_run_asked_two_ways_has_one_cache_key():
+    """'5 um' converts to 4.9999999999999996e-06: the inputs are kept to 15 significant digits,
+    so it and 5e-6 are the same run (the cache does not compute it again)."""
+    from impactlab.fe.problem import make_problem
+
+    spelled = make_problem(AISI_1010, AISI_201, radius="8.8 mm", delta_max="5 um")
+    plain = make_problem(AISI_1010, AISI_201, radius=0.0088, delta_max=5e-6)
+    assert spelled.delta_max == 5e-6 and spelled.key_data() == plain.key_data()

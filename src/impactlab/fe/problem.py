@@ -311,8 +311,10 @@ def make_problem(
         raise ValueError("flat and sphere_material must be impactlab.materials.Material objects")
     if sphere not in SPHERE_KINDS:
         raise ValueError(f"sphere must be one of {', '.join(SPHERE_KINDS)}, got {sphere!r}")
-    R = check_positive("radius", radius, "m")
-    d = check_positive("delta_max", delta_max, "m")
+    # 15 significant digits: "5 um" converts to 4.9999999999999996e-06, and the cache key (a hash
+    # of the inputs) would tell it from 5e-6, an identical run of minutes
+    R = float(f"{check_positive('radius', radius, 'm'):.15g}")
+    d = float(f"{check_positive('delta_max', delta_max, 'm'):.15g}")
     if d >= R:
         raise ValueError(
             f"delta_max ({d!r} m) must be smaller than the sphere radius ({R!r} m) (a bare "
