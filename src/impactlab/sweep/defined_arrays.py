@@ -21,7 +21,8 @@ import zarr
 
 from impactlab.sweep.integrity import DamagedStoreError
 from impactlab.sweep.storebuild import consolidate, create_defined_array, defined_arrays
-from impactlab.sweep.study import Study, recorded_study
+from impactlab.sweep.study import Study
+from impactlab.sweep.study_record import recorded_study
 
 __all__ = ["damaged_defined_arrays", "defined_arrays_error", "rewrite_defined_arrays"]
 

@@ -23,7 +23,8 @@ from impactlab.sweep.storebuild import (
     create_result_array,
     write_study_record,
 )
-from impactlab.sweep.study import Study, recorded_study
+from impactlab.sweep.study import Study
+from impactlab.sweep.study_record import recorded_study
 
 __all__ = ["mismatch_message", "repair_metadata", "restore_study_record", "root_mismatch"]
 

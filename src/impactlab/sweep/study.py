@@ -19,7 +19,6 @@ import hashlib
 import json
 import math
 import re
-import warnings
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
@@ -43,13 +42,7 @@ from impactlab.sweep.dimensions import (
 from impactlab.sweep.display import study_html, study_repr
 from impactlab.sweep.flexible import check_flexible_study
 from impactlab.sweep.inputs import INPUTS, OUTPUT_ALIASES, get_input
-from impactlab.sweep.limits import (
-    DEFAULT_MAX_CASES,
-    SweepSizeWarning,
-    check_max_cases,
-    too_many,
-    warn_chunking,
-)
+from impactlab.sweep.limits import DEFAULT_MAX_CASES, check_max_cases, too_many, warn_chunking
 from impactlab.sweep.material_inputs import check_material_inputs
 from impactlab.sweep.options import (
     DEFAULT_CHUNK_SIZE,
@@ -391,11 +384,3 @@ def load_study(
     if isinstance(source, Mapping):
         return Study.from_dict(source, max_cases=max_cases)
     return Study.from_toml(source, max_cases=max_cases)
-
-
-def recorded_study(data: Mapping[str, Any]) -> Study:
-    """The study a store records (its canonical form, ``Study.to_dict``), read back without
-    the SweepSizeWarning it gave when it was built (a store is opened many times)."""
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", SweepSizeWarning)
-        return Study.from_dict(data)

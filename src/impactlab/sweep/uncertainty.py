@@ -36,7 +36,7 @@ from impactlab.sweep.options import (
     DEFAULT_UNCERTAINTY_OUTPUTS,
     UncertaintySpec,
 )
-from impactlab.sweep.study import recorded_study
+from impactlab.sweep.study_record import recorded_study
 
 
 @dataclass(frozen=True)
