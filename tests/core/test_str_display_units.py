@@ -1,14 +1,16 @@
 """``print(body)`` and ``print(material)``: one readable line in display units, while
-``repr`` stays the dataclass's exact SI repr (equality, hashing, pickling unchanged)."""
+``repr`` stays exact and rebuilds the object (equality, hashing, pickling unchanged): a
+library material's is the call that gives it, ``get_material('aisi-201')``."""
 
 from __future__ import annotations
 
+import dataclasses
 import pickle
 
 import pytest
 
 from impactlab.bodies import FlexibleRod, Rod, Sphere
-from impactlab.materials import AISI_201, AISI_1010, ContactPair, Material
+from impactlab.materials import AISI_201, AISI_1010, ContactPair, Material, get_material
 
 
 def test_rod_str_in_display_units() -> None:
@@ -45,18 +47,45 @@ def test_material_and_pair_str() -> None:
     assert text.endswith("yield_strength = 305 MPa")
 
 
-_NAMES = {"Rod": Rod, "Material": Material, "ContactPair": ContactPair, "FlexibleRod": FlexibleRod}
+_NAMES = {
+    "Rod": Rod,
+    "Material": Material,
+    "ContactPair": ContactPair,
+    "FlexibleRod": FlexibleRod,
+    "get_material": get_material,
+}
+_MODIFIED = dataclasses.replace(AISI_1010, E=69e9)  # no longer the library's: every field
 
 
 @pytest.mark.parametrize(
     "obj",
-    [Rod.paper(), Sphere(0.01), AISI_201, ContactPair(AISI_201, AISI_1010), FlexibleRod.paper()],
+    [
+        Rod.paper(),
+        Sphere(0.01),
+        AISI_201,
+        _MODIFIED,
+        Material("x", 70e9, 0.33, 2.5e8, 120.0),
+        ContactPair(AISI_201, AISI_1010),
+        FlexibleRod.paper(),
+    ],
 )
 def test_repr_stays_exact(obj: object) -> None:
     text = repr(obj)
-    assert text.startswith(f"{type(obj).__name__}(") and text != str(obj)
+    library = obj == AISI_201
+    call = "get_material" if library else type(obj).__name__
+    assert text.startswith(f"{call}(") and text != str(obj)
     assert pickle.loads(pickle.dumps(obj)) == obj
     assert hash(pickle.loads(pickle.dumps(obj))) == hash(obj)
     if not isinstance(obj, Sphere):  # a Sphere's repr holds mass and density (derived)
         again = eval(text, dict(_NAMES))  # the repr rebuilds it
         assert again == obj and hash(again) == hash(obj)
+
+
+def test_a_signature_shows_the_library_name() -> None:
+    """``help(simulate)`` shows its default flat as the call that gives it, not every field."""
+    import inspect
+
+    from impactlab import simulate
+
+    assert "flat: 'Material' = get_material('aisi-1010')" in str(inspect.signature(simulate))
+    assert "material=get_material('aisi-201')," in repr(Rod.paper())

@@ -95,3 +95,33 @@ def test_json_follows_the_schema_rules(cli_main: CliMain, fake_runs) -> None:
     case = data["case"]  # what was indented: two outputs can be told apart
     assert case["radius"] == {"value": 0.0088, "unit": "m"} and case["mesh_level"] == 1
     assert case["flat"].startswith("AISI 1010") and case["sphere"] == "elastic-plastic"
+
+
+def _loading_only() -> fe.IndentationResult:
+    """A loading-only run to 1 um: no unloading, no dent, no residual depth."""
+    d = np.array([0.0, 0.5e-6, 1e-6])
+    empty = np.array([])
+    return fe.IndentationResult(
+        1e-6, d, 10.0 * d / 1e-6, np.array([0.0, 60e-6, 97.832e-6]), empty, empty,
+        np.nan, empty, empty, 0.43624e-6, True, 1e-6, "", 10, 0, 30, 20.0, 2128, 1e-7, {},
+    )  # fmt: skip
+
+
+@pytest.mark.parametrize(("runs", "panels"), [((_loading_only,), 1), ((_loading_only, _run), 2)])
+def test_plot_draws_a_dent_panel_only_for_a_dent(
+    cli_main: CliMain, monkeypatch: pytest.MonkeyPatch, tmp_path: Any, runs: Any, panels: int
+) -> None:
+    """A loading-only run has no dent: its figure is the loading curve alone (no empty panel);
+    beside a run that unloaded, the dent panel shows that run's dent."""
+    import matplotlib.figure
+
+    made = [make(True) if make is _run else make() for make in runs]
+    monkeypatch.setattr(fe, "indent", lambda flat, body, **kwargs: made)
+    monkeypatch.setattr(fe, "find_ccx", lambda: "ccx")
+    saved: list[int] = []
+    monkeypatch.setattr(
+        matplotlib.figure.Figure, "savefig", lambda fig, *a, **k: saved.append(len(fig.axes))
+    )
+    code, _, err = cli_main("fe", "indent", "--max", "1 um", "--plot", "--out", str(tmp_path))
+    assert code == 0, err
+    assert saved == [panels]

@@ -156,6 +156,27 @@ def test_a_cluster_without_workers_is_one_line(tmp_path, monkeypatch, capsys) ->
     assert err == "error: no Dask worker left on the cluster for 5 s (worker_timeout); ...\n"
 
 
+def test_a_scheduler_that_does_not_answer_says_the_store_resumes(
+    tmp_path, monkeypatch, capsys
+) -> None:
+    """A scheduler that times out: one line naming it and saying that the store keeps what it
+    holds and resumes."""
+    import impactlab.sweep as sweep_pkg
+
+    def unreachable(*_args: object, **_kwargs: object) -> None:
+        raise TimeoutError("Timed out trying to connect to tcp://127.0.0.1:9 after 30 s")
+
+    monkeypatch.setattr(sweep_pkg, "run_sweep", unreachable)
+    study = tmp_path / "s.toml"
+    study.write_text("[fixed]\nvy = -1.41\nmu = 0.2\n[grid]\nangle = ['20 deg', '45 deg']\n")
+    store = tmp_path / "s.zarr"
+    code, out, err = run_cli(monkeypatch, capsys, "sweep", str(study), "--out", str(store),
+                             "--scheduler", "tcp://127.0.0.1:9")  # fmt: skip
+    assert code == 2 and out == "" and err.count("\n") == 1, err
+    assert "cannot use the Dask scheduler 'tcp://127.0.0.1:9': Timed out" in err
+    assert f"the store {store} keeps what it holds (run again to resume" in err
+
+
 def test_uncertainty_outputs_the_study_does_not_keep_are_refused_before_the_sweep(
     tmp_path, monkeypatch, capsys
 ) -> None:
@@ -181,3 +202,24 @@ def test_a_chunking_warning_is_given_once(tmp_path, monkeypatch, capsys) -> None
     code, _, err = run_cli(monkeypatch, capsys, "sweep", str(study), "--out",
                            str(tmp_path / "w.zarr"), "-q")  # fmt: skip
     assert code == 0 and err.count("chunk_size = 1 cuts 8 cases") == 1
+
+
+def test_an_implausible_speed_is_said_once(tmp_path, monkeypatch, capsys) -> None:
+    """A grid speed past 100 m/s (a unit slip: cm/s as m/s) gets the warning a single impact
+    gives, once: when the study is built, not again when the store's record is read back."""
+    study = tmp_path / "v.toml"
+    study.write_text("[fixed]\nmu = 0.1\nangle = '45 deg'\n[grid]\nvy = [-1.0, -141.0]\n")
+    code, _, err = run_cli(monkeypatch, capsys, "sweep", str(study), "--out",
+                           str(tmp_path / "v.zarr"), "-q")  # fmt: skip
+    assert code == 0
+    assert err.count("the largest grid or fixed speed of the study (141 m/s) exceeds 100") == 1
+
+
+def test_a_plausible_study_does_not_warn() -> None:
+    import warnings
+
+    from impactlab.sweep import Study
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        Study(grid={"vy": [-1.0, -99.0]}, fixed={"angle": 0.5, "mu": 0.1})

@@ -3,6 +3,8 @@ show, and the throughput leaves out each worker's first task (the one-time compi
 
 from __future__ import annotations
 
+from types import SimpleNamespace
+
 import matplotlib
 
 matplotlib.use("Agg")
@@ -12,7 +14,7 @@ import numpy as np
 import pytest
 
 from impactlab.sweep import Study, SweepStats, plot_output_map, plot_regime_map, run_sweep
-from impactlab.sweep.display import steady_throughput, warm_up_s
+from impactlab.sweep.display import _rows, steady_throughput, warm_up_s
 
 
 @pytest.fixture
@@ -59,6 +61,8 @@ def test_steady_throughput_leaves_out_first_tasks(cube) -> None:
     assert warm_up_s(s) == 1.0 and steady_throughput(s) == pytest.approx(800 / 2.0)
     s.first_task_cases = {"a": 600, "b": 400}
     assert steady_throughput(s) is None  # every chunk was a first task
+    text = dict(_rows(SimpleNamespace(stats=s, path="s.zarr")))["throughput"]
+    assert text == "333.33 impacts/s, the engine's load included (every chunk was a first task)"
     stats = cube.stats
     assert sum(stats.first_task_cases.values()) == cube.dataset["e"].size  # one chunk
     html = cube._repr_html_()

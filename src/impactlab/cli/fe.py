@@ -159,18 +159,29 @@ def summary_rows(res: Any) -> list[tuple[str, str, str]]:
 
 
 def _plot(results: list[Any], out: Path | None) -> Path:
+    """The loading and unloading curves and, when some run unloaded, the residual dents
+    (a loading-only run has no dent: one panel)."""
     from impactlab._mpl import pyplot
 
     plt = pyplot()
-    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4))
+    dented = [r for r in results if r.dent_r.size]
+    if dented:
+        fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4))
+    else:
+        fig, ax1 = plt.subplots(1, 1, figsize=(5.5, 4))
     for r in results:
         lab = f"{r.delta_max / r.delta_c:.3g} delta_c"
         ax1.plot(r.loading_delta * 1e6, r.loading_force, label=lab)
-        ax1.plot(r.unloading_delta * 1e6, r.unloading_force, "--", color=ax1.lines[-1].get_color())
-        ax2.plot(r.dent_r * 1e3, r.dent_z * 1e6, label=lab)
-    ax1.set(xlabel="interference [um]", ylabel="force [N]", title="loading and unloading")
-    ax2.set(xlabel="r [mm]", ylabel="surface height [um]", title="residual dent")
-    ax2.set_xlim(0, max(3.0 * float(r.contact_radius[-1]) * 1e3 for r in results))
+        if r.unloading_delta.size:
+            color = ax1.lines[-1].get_color()
+            ax1.plot(r.unloading_delta * 1e6, r.unloading_force, "--", color=color)
+    title = "loading and unloading" if dented else "loading"
+    ax1.set(xlabel="interference [um]", ylabel="force [N]", title=title)
+    if dented:
+        for r in dented:
+            ax2.plot(r.dent_r * 1e3, r.dent_z * 1e6, label=f"{r.delta_max / r.delta_c:.3g} delta_c")
+        ax2.set(xlabel="r [mm]", ylabel="surface height [um]", title="residual dent")
+        ax2.set_xlim(0, max(3.0 * float(r.contact_radius[-1]) * 1e3 for r in dented))
     ax1.legend()
     fig.tight_layout()
     folder = out or Path(".")

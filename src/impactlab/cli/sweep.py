@@ -86,7 +86,11 @@ def _run(study_path: Path, where: _Where, quiet: bool, restart: bool) -> SweepRe
         )
     except (OSError, TimeoutError) as exc:
         if where.scheduler is not None:
-            raise UserError(f"cannot use the Dask scheduler {where.scheduler!r}: {exc}") from None
+            raise UserError(
+                f"cannot use the Dask scheduler {where.scheduler!r}: {exc}; the store "
+                f"{where.out} keeps what it holds (run again to resume, with a scheduler that "
+                "answers or without --scheduler)"
+            ) from None
         raise
     except NoWorkersError as exc:  # one line, as docs/sweep.md says
         raise UserError(str(exc)) from None

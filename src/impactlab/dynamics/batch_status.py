@@ -8,7 +8,7 @@ alone. ``BatchResult`` (impacts) and ``DropBatchResult`` (flexible-rod drops) sh
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -21,6 +21,22 @@ def flag_column(values: np.ndarray) -> np.ndarray:
     column is NaN, a failed case, whose status says why)."""
     f = np.asarray(values, dtype=np.float64)
     return np.where(np.isfinite(f), f, 0.0).astype(np.int64)
+
+
+#: The outputs that hold integer codes or counts (held as floats in a batch's ``out``).
+INTEGER_FIELDS = ("regime", "flags", "n_steps", "n_contacts", "next_end", "n_jumps", "n_dents")
+
+
+def integer_series(values: np.ndarray, computed: np.ndarray) -> Any:
+    """An integer-coded column (flags, regime, counts) as a pandas nullable ``Int64`` Series:
+    integers where the case was computed, ``<NA>`` where it failed (its status says why), as
+    pandas marks a missing integer; never floats."""
+    import pandas as pd  # heavy, needed only here
+
+    f = np.asarray(values, dtype=np.float64)
+    keep = np.asarray(computed, dtype=bool) & np.isfinite(f)
+    ints = np.where(keep, f, 0.0).astype(np.int64)
+    return pd.Series(pd.arrays.IntegerArray(ints, ~keep))
 
 
 class BatchStatus:

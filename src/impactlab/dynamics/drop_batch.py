@@ -25,7 +25,12 @@ from impactlab.bodies.layout import BP_GSTAR
 from impactlab.contact import ContactModel
 from impactlab.contact.brittle import brittle_flags, brittle_pressure
 from impactlab.contact.ranges import delta_ratio, extrapolation_flags
-from impactlab.dynamics.batch_status import BatchStatus, flag_column
+from impactlab.dynamics.batch_status import (
+    INTEGER_FIELDS,
+    BatchStatus,
+    flag_column,
+    integer_series,
+)
 from impactlab.dynamics.drop import DEFAULT_T_MAX, MIN_APPROACH_SPEED
 from impactlab.dynamics.drop_body import body_model
 from impactlab.dynamics.drop_checks import (
@@ -150,14 +155,18 @@ class DropBatchResult(BatchStatus):
         return self._column("normal_impulse") / self._column("duration")
 
     def to_dataframe(self) -> Any:
-        """A pandas DataFrame: inputs, outputs (``PUBLIC_FIELDS``), status and flags per case."""
+        """A pandas DataFrame: inputs, outputs (``PUBLIC_FIELDS``), status and flags per case
+        (counts, codes and ``flags`` as nullable integers, ``<NA>`` where a case failed)."""
         import pandas as pd  # heavy, needed only here
 
         df = pd.DataFrame({k: np.array(v) for k, v in self.inputs.items()})
         for name in PUBLIC_FIELDS:
-            df[name] = np.array(self[name])
+            if name in INTEGER_FIELDS:
+                df[name] = integer_series(self[name], self.computed)
+            else:
+                df[name] = np.array(self[name])
         df["status"] = np.array(self.status)
-        df["flags"] = np.array(self.flags)
+        df["flags"] = integer_series(self.flags, self.computed)
         return df
 
     def dois(self) -> tuple[str, ...]:

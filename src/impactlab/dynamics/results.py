@@ -17,7 +17,12 @@ from impactlab._display import flag_names
 from impactlab._version import __version__
 from impactlab.contact.range_note import range_note
 from impactlab.contact.ranges import extrapolation, extrapolation_flags, range_status
-from impactlab.dynamics.batch_status import BatchStatus, flag_column
+from impactlab.dynamics.batch_status import (
+    INTEGER_FIELDS,
+    BatchStatus,
+    flag_column,
+    integer_series,
+)
 from impactlab.dynamics.dent import dent_map
 from impactlab.dynamics.derived import DerivedOutputs, batch_derived
 from impactlab.dynamics.export import batch_dataset, batch_html
@@ -354,12 +359,16 @@ class BatchResult(BatchStatus):
         return self["vx_out"], self["vy_out"]
 
     def to_dataframe(self) -> Any:
-        """A pandas DataFrame: inputs, outputs and status per case."""
+        """A pandas DataFrame: inputs, outputs and status per case (``regime``, ``flags`` and
+        ``n_steps`` as nullable integers, ``<NA>`` where a case failed)."""
         import pandas as pd  # heavy, needed only here
 
         df = pd.DataFrame({k: np.array(v) for k, v in self.inputs.items()})
         for j, name in enumerate(OUTPUT_FIELDS):
-            df[name] = np.array(self.out[:, j])
+            if name in INTEGER_FIELDS:
+                df[name] = integer_series(self.out[:, j], self.computed)
+            else:
+                df[name] = np.array(self.out[:, j])
         for name in schema.DERIVED_FIELDS:
             df[name] = self[name]
         df["status"] = np.array(self.status)

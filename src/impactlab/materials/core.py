@@ -153,9 +153,23 @@ class Material:
     def _repr_html_(self) -> str:
         return dataclass_html(self)
 
+    def __repr__(self) -> str:
+        """A library entry, unchanged: ``get_material('aisi-1010')`` (the call that gives it,
+        short enough for a signature in ``help()``); any other material: every field, in SI."""
+        library = sys.modules.get("impactlab.materials.library")
+        presets: dict[str, Material] = getattr(library, "PRESETS", None) or {}
+        key = next((k for k, m in presets.items() if m == self), None)
+        if key is not None:
+            return f"get_material({key!r})"
+        values = ", ".join(
+            f"{f}={getattr(self, f)!r}"
+            for f in ("name", *_VALUES, "condition", "source", "brittle")
+        )
+        return f"Material({values})"
+
     def __str__(self) -> str:
         """One line in display units: ``Material NAME: E = 200 GPa, nu = 0.3, ...``
-        (``repr`` stays the dataclass's, in SI)."""
+        (``repr``: the library call of a library entry, else every field in SI)."""
         rows = [
             r
             for r in dataclass_rows(self)

@@ -26,6 +26,7 @@ from typing import Any
 import numpy as np
 
 from impactlab._display import display_unit, format_number
+from impactlab.dynamics.input_checks import warn_fast
 from impactlab.dynamics.kernels.inputs import MAX_ANGLE, MAX_MU, MAX_SPEED
 from impactlab.sweep.distributions import Distribution
 from impactlab.sweep.inputs import MATERIAL_OVERRIDES, get_input
@@ -177,6 +178,13 @@ def check_kinematics(
         vy = [float(v) for v in values("vy")]
         rule = "the contact point must approach the flat (vy < 0 m/s with spin = 0)"
         _refuse(where("vy"), "vy", vy, [v for v in vy if not v < 0.0], rule)
+    speeds = [abs(float(v)) for n in ("vx", "vy", "speed") for v in values(n) if _is_number(v)]
+    if speeds:  # the warning a single impact gives (sampled values: case by case)
+        warn_fast("the largest grid or fixed speed of the study", max(speeds))
+
+
+def _is_number(value: Any) -> bool:
+    return isinstance(value, float | int) and not isinstance(value, bool) and math.isfinite(value)
 
 
 def _number(name: str, value: Any) -> Value:

@@ -102,8 +102,19 @@ def _rows(result: Any) -> Sequence[tuple[str, str]]:
         ("cases computed", str(s.cases_computed)),
         ("wall time", f"{format_number(s.wall_s)} s ({s.backend}, {s.workers} workers)"),
         ("first task (compile/load)", f"{format_number(warm_up_s(s))} s"),
-        ("throughput", "-" if steady is None else f"{format_number(steady)} impacts/s"),
+        ("throughput", _throughput_text(s, steady)),
     )
+
+
+def _throughput_text(stats: Any, steady: float | None) -> str:
+    """The steady throughput, or, when every chunk was a worker's first task, the whole run's
+    (loading or compiling the engine included, and said)."""
+    if steady is not None:
+        return f"{format_number(steady)} impacts/s"
+    if stats.cases_computed <= 0 or stats.wall_s <= 0.0:
+        return "-"
+    overall = format_number(stats.cases_computed / stats.wall_s)
+    return f"{overall} impacts/s, the engine's load included (every chunk was a first task)"
 
 
 def sweep_result_html(result: Any) -> str:

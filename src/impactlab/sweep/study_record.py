@@ -6,6 +6,7 @@ import warnings
 from collections.abc import Mapping
 from typing import Any
 
+from impactlab._validation import ImplausibleInputWarning
 from impactlab.sweep.limits import SweepSizeWarning
 from impactlab.sweep.study import Study
 
@@ -13,8 +14,9 @@ __all__ = ["recorded_study"]
 
 
 def recorded_study(data: Mapping[str, Any]) -> Study:
-    """The study a store records, read back without the SweepSizeWarning it gave when it was
-    built (a store is opened many times)."""
+    """The study a store records, read back without the warnings (chunking, an implausible
+    speed) it gave when it was built (a store is opened many times)."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", SweepSizeWarning)
+        warnings.simplefilter("ignore", ImplausibleInputWarning)
         return Study.from_dict(data)
