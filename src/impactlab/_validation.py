@@ -22,6 +22,7 @@ import math
 import os
 import sys
 import warnings
+from collections.abc import Iterable
 from pathlib import Path
 from typing import Any
 
@@ -34,6 +35,19 @@ class ImplausibleInputWarning(UserWarning):
     """An input that is possible but implausible (most likely a unit mistake): a tip radius
     over half a metre, a rod longer than 10 m, an impact faster than 100 m/s, ... The
     computation goes on; each public function states its bounds in its docstring."""
+
+
+def did_you_mean(name: Any, known: Iterable[str]) -> str:
+    """`` (did you mean 'x'?)`` for the known name nearest to ``name`` (a mistyped or
+    ``-``/``_``-swapped name), or ``""``."""
+    import difflib
+
+    if not isinstance(name, str):
+        return ""
+    names = list(known)
+    swapped = [k for k in names if k.replace("-", "_") == name.replace("-", "_")]
+    near = swapped or difflib.get_close_matches(name, names, n=1, cutoff=0.6)
+    return f" (did you mean {near[0]!r}?)" if near else ""
 
 
 def _caller_level() -> int:

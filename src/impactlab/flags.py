@@ -69,7 +69,7 @@ class ResultFlag(enum.IntFlag):
     #: rests, rocks or tips over rather than bounces, and e and the other impact measures are
     #: not meaningful
     GRAVITY_DOMINATED = FLAG_GRAVITY_DOMINATED
-    #: the largest interference exceeded the upper end of the contact law's range (verified
+    #: the largest interference passed the upper end of the contact law's range (verified
     #: against FE, else a stand-in; ``impactlab.contact.ranges``): the law is extrapolated
     #: (advisory: ``ADVISORY_FLAGS``)
     LAW_EXTRAPOLATED = FLAG_LAW_EXTRAPOLATED
@@ -129,8 +129,8 @@ _MESSAGES: dict[ResultFlag, str] = {
         "lower the impact velocity to stay below it)"
     ),
     ResultFlag.LAW_EXTRAPOLATED: (
-        "law extrapolated: the largest interference exceeded {what}{how_far}, so {so}; the "
-        "outputs are not validated there (see the docs' Contact laws > Verified ranges)"
+        "law extrapolated: the largest interference passed {what}{how_far}: {so} (advisory; "
+        "`impactlab laws --accuracy` measures each law)"
     ),
 }
 
@@ -138,38 +138,33 @@ _MESSAGES: dict[ResultFlag, str] = {
 #: (what was exceeded, what the limit is called, the consequence).
 _EXTRAPOLATION_TEXT = {
     "confirmed": (
-        "the upper end of the contact law's fitted range",
+        "the law's fitted range",
         "fitted up to",
         "the law is used beyond the data it was fitted to",
     ),
     "provisional": (
-        "the provisional upper end of the contact law's range",
+        "the law's provisional limit (a stand-in: its own fitted range was not found)",
         "provisional limit",
-        "the law is probably used beyond the data it was fitted to (the limit is a stand-in: "
-        "the law's own fitted range was not found)",
+        "the law is probably used beyond the data it was fitted to",
     ),
     "theory": (
-        "the limit of the contact law's theory (first yield)",
+        "the limit of the law's theory (first yield)",
         "limit",
-        "the law is used where its theory no longer holds",
+        "its theory no longer holds there",
     ),
     "verified": (
-        "the upper end of the contact law's verified range (FE, 10 % force / 0.05 "
-        "delta_r/delta_max, for the pair's E*/S_y)",
+        "the range where the law was verified against FE",
         "verified up to",
-        "the law is used where it was not verified against the FE reference (it may differ "
-        "from FE by more than those tolerances)",
+        "it may differ from FE there by more than 10 % in force or 0.05 in delta_r/delta_max",
     ),
     "unverified": (
-        "the stand-in upper end of the contact law's range (the pair's E*/S_y lies outside "
-        "the span of the FE cases, so no verified range applies)",
+        "the law's stand-in limit (no FE case covers the pair's E*/S_y)",
         "stand-in limit",
-        "the law is probably used beyond its validated range (the stand-in is not verified "
-        "against FE for this pair)",
+        "the law is probably used beyond its validated range",
     ),
 }
 _UNKNOWN_STATUS = (
-    "the upper end of the contact law's range",
+    "the law's range",
     "limit",
     "the law is used beyond its validated range",
 )

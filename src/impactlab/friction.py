@@ -38,6 +38,7 @@ from __future__ import annotations
 import enum
 from dataclasses import dataclass
 
+from impactlab._validation import did_you_mean
 from impactlab.references import PAPER, Reference, cite
 
 DEFAULT_MU = 0.0
@@ -172,7 +173,8 @@ def get_friction(name: str | FrictionKind) -> FrictionModel:
         return FRICTION_MODELS[name]  # type: ignore[index]
     except (KeyError, TypeError):
         raise ValueError(
-            f"unknown friction model {name!r}; known models: {', '.join(FRICTION_MODELS)}"
+            f"unknown friction model {name!r}{did_you_mean(name, map(str, FRICTION_MODELS))}; "
+            f"known models: {', '.join(FRICTION_MODELS)}"
         ) from None
 
 

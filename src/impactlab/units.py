@@ -90,6 +90,11 @@ def refuse_comma(name: str, text: str, unit: str) -> None:
     """ValueError naming ``name`` when the quantity text ``text`` holds a comma: pint drops it
     as a thousands separator, so a decimal comma ``"2,5 mm"`` would read as 25 mm."""
     if "," in text:
+        if text.strip()[:1] in "([":  # a pair written as one string: its values one by one
+            raise ValueError(
+                f"{name}: {text!r} is one string; give each component as its own quantity, "
+                f"e.g. ('0 {unit}', '-1.41 {unit}')"
+            )
         example = text.strip().replace(",", ".") if text.count(",") == 1 else f"2.5 {unit}"
         raise ValueError(
             f"{name}: {text!r} holds a comma; write one quantity with a decimal point, e.g. "
@@ -178,7 +183,8 @@ def magnitude(name: str, value: Any, unit: str) -> Any:
         if q.unitless:
             lead = _LEADING_NUMBER.fullmatch(value)
             bare = lead is not None and not lead.group(1).strip()
-            example = f"{value.strip()} {unit}" if bare else f"1.0 {unit}"
+            shown = "deg" if unit == "rad" else unit  # an angle is written in degrees
+            example = f"{value.strip()} {shown}" if bare else f"1.0 {shown}"
             what = "has no unit" if bare else f"is a pure number ({q:~})"
             raise ValueError(
                 f"{name}: the string {value!r} {what}; pass a number in {unit} or a string "

@@ -58,8 +58,8 @@ def test_rigid_identity_force():
 
 
 def test_sign_of_v_i_does_not_matter_and_paper_signs_of_the_dent_are_refused():
-    # delta_p and the sliding length are magnitudes in impactlab (the paper prints them
-    # negative); v_i keeps accepting either sign
+    # delta_p is a depth in impactlab (the paper prints the final tip height, negative); the
+    # sliding length is signed in the engine and v_i's sign is ignored: both by magnitude
     x = EXPERIMENTS[45]
     a = an.invert(
         angle=x.angle,
@@ -80,7 +80,7 @@ def test_sign_of_v_i_does_not_matter_and_paper_signs_of_the_dent_are_refused():
         n_samples=200,
     )
     assert a.duration == b.duration and a.mean_force == b.mean_force
-    for kw in ({"delta_p": -abs(x.delta_p)}, {"sliding_length": -abs(x.L_s)}):
+    for kw in ({"delta_p": -abs(x.delta_p)},):
         args = dict(
             angle=x.angle,
             v_i=x.v_i,

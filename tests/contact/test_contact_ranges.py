@@ -219,3 +219,7 @@ def test_range_note_names_the_status_the_span_and_the_limit() -> None:
         "1 delta_c"
     )
     assert range_note(-1, paper.params) is None and range_note(paper.law_id, None) is None
+    tab = get_law("tabulated").build(ContactPair(AISI_201, AISI_1010), 8.8e-3)
+    line = range_note(tab.law_id, tab.params)  # its curves are its range, FE's or a user's
+    assert line is not None and line.startswith("tabulated: interpolated from its curves")
+    assert "not verified" not in line

@@ -105,7 +105,8 @@ def test_magnitude_refuses_what_is_not_a_quantity_of_the_unit(value: object, mat
         ("length", "1 000 m", "m", "holds more than one number"),
         ("angle", "20 deg deg", "rad", "dimensionless units .* to the power 2"),  # pint: deg^2
         ("length", "5 deg m", "m", "dimensionless units .* to the power 1"),
-        ("angle", "20 percent", "rad", r"is a pure number \(20 %\).*'1.0 rad'"),
+        ("angle", "20 percent", "rad", r"is a pure number \(20 %\).*'1.0 deg'"),
+        ("velocity", "(0, -5.076) km/h", "m/s", r"is one string; give each component"),
         ("radius", "2,5 mm", "m", "holds a comma.*'2.5 mm'"),  # pint: 25 mm
         ("angle", "2,0 deg", "rad", "holds a comma.*'2.0 deg'"),  # pint: 20 deg
         ("mass", "1,000.5 kg", "kg", "holds a comma"),  # pint: 1000.5 kg
@@ -116,6 +117,12 @@ def test_text_is_one_number_and_one_unit(name: str, text: str, unit: str, match:
         magnitude(name, text, unit)
     with pytest.raises(ValueError, match=name):
         to_si(text, unit, name=name)
+
+
+def test_a_bare_angle_gets_a_hint_that_is_itself_accepted() -> None:
+    with pytest.raises(ValueError, match=r"angle: the string '20' has no unit.*e.g. '20 deg'"):
+        magnitude("angle", "20", "rad")
+    assert magnitude("angle", "20 deg", "rad") == pytest.approx(math.radians(20))
 
 
 def test_unit_expressions_that_stay_allowed() -> None:
@@ -231,3 +238,19 @@ def test_a_dimensionless_unit_that_is_no_angle_is_refused(text: str) -> None:
     with pytest.raises(ValueError, match="is not an angle"):
         angle_to_rad(text)
     assert magnitude("spin", "3 rpm", "rad/s") == pytest.approx(0.3141592653589793)
+
+
+def test_unknown_law_and_friction_names_suggest_the_nearest() -> None:
+    """A law's names take '-', a friction model's '_': the swapped spelling or a typo gets a
+    suggestion (in the Python API, the command line and study files)."""
+    from impactlab.contact import get_law
+    from impactlab.friction import get_friction
+
+    with pytest.raises(ValueError, match=r"'partial-slip' \(did you mean 'partial_slip'\?\)"):
+        get_friction("partial-slip")
+    with pytest.raises(ValueError, match=r"'columb' \(did you mean 'coulomb'\?\)"):
+        get_friction("columb")
+    with pytest.raises(ValueError, match=r"'jackson_green' \(did you mean 'jackson-green'\?\)"):
+        get_law("jackson_green")
+    with pytest.raises(ValueError, match=r"unknown contact law 'zzz'; known laws"):
+        get_law("zzz")

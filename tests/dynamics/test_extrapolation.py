@@ -54,7 +54,7 @@ def test_paper_impact_is_flagged_with_how_far_it_went() -> None:
     (text,) = r.warnings
     assert text.startswith("law extrapolated:")
     assert f"max delta/delta_c = {ratio:.4g}, verified up to 1)" in text
-    assert "FE, 10 % force / 0.05 delta_r/delta_max" in text
+    assert "10 % in force or 0.05 in delta_r/delta_max" in text and "(advisory;" in text
     assert "fitted up to" not in text and "energy-consistent" not in text
     assert "warning" in str(r) and "law extrapolated" in str(r)
     d = r.to_dict()
@@ -88,7 +88,7 @@ def test_unverified_pair_keeps_the_stand_in_and_says_so() -> None:
     fast = simulate(PAPER_ROD, SOFT_FLAT, velocity=FAST, **PAPER)
     assert fast.max_delta_ratio > 110.0 and fast.extrapolated
     (text,) = fast.warnings
-    assert "stand-in limit 110)" in text and "outside the span of the FE cases" in text
+    assert "stand-in limit 110)" in text and "no FE case covers the pair's E*/S_y" in text
 
 
 def test_an_unflagged_impact_still_says_whether_its_pair_was_verified() -> None:
@@ -192,7 +192,7 @@ def test_tiny_sweep_stores_the_flag(tmp_path: Path) -> None:
 def test_flag_message_and_advisory_mask() -> None:
     assert ADVISORY_FLAGS == FLAG_LAW_EXTRAPOLATED
     (generic,) = messages(FLAG_LAW_EXTRAPOLATED)
-    assert generic.startswith("law extrapolated: the largest interference exceeded")
+    assert generic.startswith("law extrapolated: the largest interference passed")
     assert "max delta" not in generic  # how far is unknown without the numbers
     (far,) = messages(FLAG_LAW_EXTRAPOLATED, extrapolation=(312.4, 110.0), status="confirmed")
     assert "(max delta/delta_c = 312.4, fitted up to 110)" in far
@@ -203,11 +203,12 @@ def test_flag_message_and_advisory_mask() -> None:
     "status", [None, "confirmed", "provisional", "theory", "verified", "unverified"]
 )
 def test_extrapolation_message_depends_on_the_range_status(status: str | None) -> None:
-    """The sentence never claims energy consistency, points to the docs and words the limit
-    after the range's status (provisional: a stand-in; theory: first yield, not fitted)."""
+    """The sentence never claims energy consistency, says it is advisory, points to the command
+    that measures each law and words the limit after the range's status (provisional: a
+    stand-in; theory: first yield, not fitted)."""
     (text,) = messages(FLAG_LAW_EXTRAPOLATED, extrapolation=(5.0, 1.0), status=status)
     assert "energy-consistent" not in text and "impactlab.contact.ranges" not in text
-    assert "see the docs' Contact laws > Verified ranges" in text
+    assert "(advisory; `impactlab laws --accuracy` measures each law)" in text
     if status == "provisional":
         assert "provisional limit 1)" in text and "stand-in" in text
         assert "fitted up to" not in text
@@ -218,7 +219,7 @@ def test_extrapolation_message_depends_on_the_range_status(status: str | None) -
     elif status == "verified":
         assert "verified up to 1)" in text and "FE" in text
     elif status == "unverified":
-        assert "stand-in limit 1)" in text and "outside the span of the FE cases" in text
+        assert "stand-in limit 1)" in text and "no FE case covers the pair's E*/S_y" in text
 
 
 def test_hertz_warning_names_the_verified_range_or_first_yield() -> None:

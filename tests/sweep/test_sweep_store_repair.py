@@ -86,8 +86,9 @@ def test_a_truncated_study_record_is_detected_and_rewritten(stores) -> None:
 def test_another_study_is_not_written_into_a_damaged_store(stores) -> None:
     store, _ = stores
     shutil.rmtree(store / "e")
-    with pytest.raises(StudyMismatchError, match="holds a different study"):
+    with pytest.raises(StudyMismatchError, match="holds a different study") as caught:
         run_sweep(_study(vy=-2.0), store, evaluator=FakeEvaluator(), quiet=True)
+    assert "restart=True in Python" in str(caught.value)  # the Python spelling too
     with pytest.raises(RepairableStoreError):
         open_sweep(store)
 

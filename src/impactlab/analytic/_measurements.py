@@ -38,7 +38,9 @@ _UNITS = {
     "dv_cy": "m/s",
 }
 #: The inputs that are magnitudes although the paper prints them negative.
-_MAGNITUDES = {"delta_p": "the permanent dent depth", "sliding_length": "the length of the scar"}
+#: Lengths given as magnitudes (the sliding length is signed in the engine, along +x: its
+#: magnitude enters, as v_i's).
+_MAGNITUDES = {"delta_p": "the permanent dent depth"}
 
 
 def _label(name: str) -> str:

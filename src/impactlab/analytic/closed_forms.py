@@ -123,13 +123,17 @@ def sliding_length(
     """Sliding length L_s = -alpha (delta_p + v_i T) [m] along +x (paper Eq. 12, sign fixed).
 
     ``delta_p`` >= 0 [m] is the dent depth (the paper's delta_p <= 0 is the final tip height, so
-    its form reads L_s = alpha (delta_p - v_i T)), ``v_i`` < 0 [m/s], ``duration`` T > 0 [s]. The
-    result is the slip along +x, negative in gross sliding (the tip slides towards -x), as the
-    engine's ``sliding_length``. ValueError in the sticking regime (mu >= mu_c), where L_s = 0.
-    ``measure="travel"`` gives the contact patch's travel instead of the slip (gravity neglected).
+    its form reads L_s = alpha (delta_p - v_i T)), ``v_i`` the drop velocity [m/s] (sign
+    ignored, != 0, as everywhere in ``impactlab.analytic``; v_i = -|v_i| above), ``duration``
+    T > 0 [s]. The result is the slip along +x, negative in gross sliding (the tip slides
+    towards -x), as the engine's ``sliding_length``. ValueError in the sticking regime
+    (mu >= mu_c), where L_s = 0. ``measure="travel"`` gives the contact patch's travel instead
+    of the slip (gravity neglected).
     """
     dp = magnitude("delta_p", delta_p, "the permanent dent depth")
-    vi = arr("v_i", v_i, unit="m/s", high=0.0, high_open=True)
+    vi = -np.abs(arr("v_i", v_i, unit="m/s"))
+    if (vi == 0).any():
+        raise ValueError("v_i must be non-zero (the drop speed), got 0.0")
     T = arr("duration", duration, unit="s", low=0.0, low_open=True)
     th = _angle(angle)
     mu_ = arr("mu", mu, low=0.0)
@@ -153,13 +157,14 @@ def impact_duration(
         T = (L_s / |alpha| + delta_p) / |v_i|                   (gravity neglected, the paper)
         (g/2) T^2 + |v_i| T = L_s / |alpha| + delta_p           (gravity=True)
 
-    ``delta_p`` >= 0 [m] the dent depth and ``sliding_length`` > 0 [m] the length of the scar
-    (magnitudes; negative values raise ValueError); ``v_i`` the drop velocity [m/s] (sign
+    ``delta_p`` >= 0 [m] the dent depth (a negative value, the paper's sign, raises
+    ValueError); ``sliding_length`` [m] the length of the scar, or the engine's signed
+    ``sliding_length`` (its magnitude enters; != 0); ``v_i`` the drop velocity [m/s] (sign
     ignored, != 0). ``alpha_`` must be negative (gross sliding); ``alpha_ >= 0`` means the tip
     sticks and raises ValueError.
     """
     dp = magnitude("delta_p", delta_p, "the permanent dent depth")
-    ls = magnitude("sliding_length (L_s)", sliding_length, "the length of the sliding scar")
+    ls = np.abs(arr("sliding_length (L_s)", sliding_length, unit="m"))  # signed: along +x
     vi = np.abs(arr("v_i", v_i, unit="m/s"))
     al = arr("alpha", alpha_)
     if (vi == 0).any():

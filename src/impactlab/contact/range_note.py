@@ -47,6 +47,11 @@ def range_note(law_id: int, params: Any) -> str | None:
             f"stand-in limit {upper}"
         )
     meaning = STATUSES.get(status, "")
+    if status == "tabulated":  # its data are its range: FE curves, or a user's own
+        return (
+            "tabulated: interpolated from its curves (the FE indentations for 'tabulated', the "
+            "user's data for a registered law) and refused beyond their end"
+        )
     if math.isinf(limit):
         return f"{status}, not verified against FE: {meaning}"
     return f"{status}, not verified against FE ({meaning}): limit {upper}"

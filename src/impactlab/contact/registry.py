@@ -12,6 +12,7 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 from typing import Any
 
+from impactlab._validation import did_you_mean
 from impactlab.contact.base import ContactLaw
 from impactlab.contact.brake import Brake
 from impactlab.contact.ghaednia import Ghaednia
@@ -74,7 +75,8 @@ def get_law(name: str | Law) -> ContactLaw:
         return _USER[name]  # type: ignore[index]
     except (KeyError, TypeError):
         raise ValueError(
-            f"unknown contact law {name!r}; known laws: {', '.join(law_names())} (a law of "
+            f"unknown contact law {name!r}{did_you_mean(name, law_names())}; known laws: "
+            f"{', '.join(law_names())} (a law of "
             f"one's own: impactlab.contact.register_law, or `impactlab --law-file FILE`)"
         ) from None
 

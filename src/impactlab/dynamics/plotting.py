@@ -113,7 +113,7 @@ def plot_dent(result: ImpactResult, ax: Any = None) -> Any:
     fig.colorbar(cs, ax=ax, label="height [um]")
     ax.set_aspect("equal")
     ax.set_xlabel("x [mm]")
-    ax.set_ylabel("y [mm]")
+    ax.set_ylabel("y, across the impact plane [mm]")
     ax.set_title(f"dent: depth {dm.max_depth * 1e6:.3g} um, length {dm.length * 1e3:.3g} mm")
     return fig
 

@@ -43,6 +43,10 @@ from impactlab.fe.range_check import (
 
 #: The force is compared from this delta / delta_c on (below it the FE curve starts).
 LOWEST_RATIO = 0.1
+#: Where the fully plastic regime starts [delta_c], which the recommendation names on its own
+#: (impacts such as the paper's reach 180-650 delta_c: a score over the whole span would
+#: weigh the elastic-plastic onset, where most FE points lie, above them).
+PLASTIC_FROM = 100.0
 #: SI units of the numbers in :func:`report` (for ``impactlab._json.to_json``).
 UNITS: dict[str, str] = {
     "radius": "m",
@@ -137,6 +141,25 @@ class LawAccuracy:
             self.rms_force_error() / FORCE_TOLERANCE
             + self.rms_residual_error() / RESIDUAL_TOLERANCE
         )
+
+    def errors_from(self, low: float) -> tuple[np.ndarray, np.ndarray]:
+        """(relative force errors, delta_r / delta_max errors) at delta / delta_c >= ``low``
+        (the residual ones where FE resolves delta_r)."""
+        at = low * (1.0 - 1e-6)  # the stored curves carry 7 significant digits
+        force = self.force_error[self.force_ratio >= at]
+        keep = (self.maxima_ratio >= at) & np.isfinite(self.residual_fe)
+        return np.asarray(force), np.asarray(self.residual_error[keep])
+
+    def score_from(self, low: float) -> float:
+        """``score`` over the checked points at delta / delta_c >= ``low`` (inf if there is
+        none, or the law is nan at one)."""
+        force, residual = self.errors_from(low)
+        if not (force.size and residual.size):
+            return math.inf
+        if not (np.all(np.isfinite(force)) and np.all(np.isfinite(residual))):
+            return math.inf
+        rms_f, rms_r = np.sqrt(np.mean(force**2)), np.sqrt(np.mean(residual**2))
+        return float(0.5 * (rms_f / FORCE_TOLERANCE + rms_r / RESIDUAL_TOLERANCE))
 
     def describe(self) -> dict[str, Any]:
         """Plain data (``impactlab laws --accuracy --json``; SI, units in :data:`UNITS`)."""
@@ -250,6 +273,19 @@ class CaseAccuracy:
         """The law with the smallest RMS delta_r / delta_max error."""
         return min(self.built, key=lambda a: a.rms_residual_error())
 
+    def closest_fully_plastic(self) -> LawAccuracy | None:
+        """The law closest to FE from :data:`PLASTIC_FROM` delta_c on (smallest
+        ``score_from``); None when the case has fewer than two FE maxima there."""
+        at = PLASTIC_FROM * (1.0 - 1e-6)
+        if np.count_nonzero(self.case_maxima() >= at) < 2:
+            return None
+        best = min(self.built, key=lambda a: a.score_from(PLASTIC_FROM))
+        return best if math.isfinite(best.score_from(PLASTIC_FROM)) else None
+
+    def case_maxima(self) -> np.ndarray:
+        """delta_max / delta_c of the case's converged FE runs."""
+        return np.asarray(self.built[0].maxima_ratio) if self.built else np.array([])
+
     def longest_verified(self) -> LawAccuracy:
         """The law with the largest verified range (the closer one on a tie)."""
         return max(self.built, key=lambda a: (a.verified.upper, -a.score()))
@@ -270,7 +306,19 @@ class CaseAccuracy:
             f"delta_r/delta_max within {er:.2f}); in force alone {bf.law} (RMS "
             f"{100 * bf.rms_force_error():.0f} %), in delta_r/delta_max alone {br.law} (RMS "
             f"{br.rms_residual_error():.2f}); largest verified range {most:.3g} delta_c "
-            f"({who})"
+            f"({who})" + self._plastic_text()
+        )
+
+    def _plastic_text(self) -> str:
+        """``; from 100 delta_c on (fully plastic): ghaednia (force within 7 %, ...)`` or ""."""
+        p = self.closest_fully_plastic()
+        if p is None:
+            return ""
+        force, residual = p.errors_from(PLASTIC_FROM)
+        return (
+            f"; from {PLASTIC_FROM:g} delta_c on (fully plastic, where impacts such as the "
+            f"paper's lie): {p.law} (force within {100 * np.max(np.abs(force)):.0f} %, "
+            f"delta_r/delta_max within {np.max(np.abs(residual)):.2f})"
         )
 
     def describe(self, only: str | None = None) -> dict[str, Any]:
@@ -285,6 +333,7 @@ class CaseAccuracy:
             "delta_c": c.delta_c,
             "e_star_over_sy": c.e_star_over_sy,
             "closest": self.closest().law,
+            "closest_fully_plastic": getattr(self.closest_fully_plastic(), "law", None),
             "recommendation": self.recommendation(),
             "laws": {a.law: a.describe() for a in self.laws if only in (None, a.law)},
         }

@@ -118,7 +118,7 @@ def figure_dent(path: Path, res: Any) -> Path:
     im = ax.imshow(z * 1e6, extent=ext, origin="lower", aspect="equal", cmap="viridis")
     fig.colorbar(im, ax=ax, label="height [um]")
     ax.set_xlabel("x [um]")
-    ax.set_ylabel("y [um]")
+    ax.set_ylabel("y, across the impact plane [um]")
     ax.set_title("Fig. 4: simulated dent, 20 deg, 1.41 m/s, Ghaednia et al.")
     return _save(plt, fig, path)
 

@@ -120,9 +120,11 @@ def physics_section(
             "impactlab's defaults (the last row: the FE-tabulated law instead), gravity on and "
             "no structural damping (the next section "
             "calibrates the damping). Measured T is the one "
-            "inferred from the dent (Eq. 12, Section 3). L_s is the tip's sliding length for "
-            "the rigid rod and the scar length (x-extent of the tip's contact path over all "
-            "contacts) for the flexible rod; T is first touch to last separation; "
+            "inferred from the dent (Eq. 12, Section 3). L_s is the extent of the mark the "
+            "tip left, as a scan measures it: the contact point's travel (contact_travel) for "
+            "the rigid rod, not the signed slip integral (sliding_length) of Section 4, and the "
+            "scar length (x-extent of the tip's contact path over all contacts) for the "
+            "flexible rod; T is first touch to last separation; "
             f"{E_DEFINITION}. The model and its verification: docs/flexible.md."
         ),
         Bullets(configs),

@@ -21,6 +21,7 @@ from typing import Protocol, runtime_checkable
 import numpy as np
 from numba.core.dispatcher import Dispatcher
 
+from impactlab._validation import did_you_mean
 from impactlab.contact import get_law, law_names
 from impactlab.dynamics.batch import (
     BATCH_FRICTION_IDS,
@@ -187,11 +188,15 @@ def _validate_categories(categories: Mapping[str, Sequence[str]], frictions: Seq
             get_law(law)
         except ValueError:
             raise ValueError(
-                f"unknown contact law {law!r}; known laws: {', '.join(law_names())}"
+                f"unknown contact law {law!r}{did_you_mean(law, law_names())}; known laws: "
+                f"{', '.join(law_names())}"
             ) from None
     for fr in categories.get("friction", ()):
         if fr not in frictions:
-            raise ValueError(f"unknown friction model {fr!r}; known: {', '.join(frictions)}")
+            raise ValueError(
+                f"unknown friction model {fr!r}{did_you_mean(fr, frictions)}; known: "
+                f"{', '.join(frictions)}"
+            )
     for key in ("body_material", "flat_material"):
         validate_material_names(categories.get(key, ()), key)
     for b in categories.get("body", ()):

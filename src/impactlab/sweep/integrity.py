@@ -190,7 +190,8 @@ def recorded_engine(root: Path) -> str | None:
 def _corrupt(root: Path, node: Path, why: str) -> CorruptStoreError:
     return CorruptStoreError(
         f"sweep store {str(root)!r} is damaged: {node.relative_to(root).as_posix()} {why}; "
-        f"run the study into it again with --restart to start it fresh"
+        f"run the study into it again with --restart (restart=True in Python) to start it "
+        f"fresh"
     )
 
 

@@ -41,12 +41,12 @@ def mismatch_message(
             f"store {str(path)!r} holds this study, computed by other impactlab code (stored: "
             f"{engine!r}; installed: {meta.engine!r}): its chunks and new ones would mix the "
             f"results of two versions; finish it with the impactlab that began it, run with "
-            f"--restart to discard it and start fresh, or choose another --out"
+            f"--restart to discard it and start fresh, or choose another --out (another store path)"
         )
     return (
         f"store {str(path)!r} holds a different study (hash {old}, this study "
-        f"{meta.study_hash}); run with --restart to discard it and start fresh, or "
-        f"choose another --out"
+        f"{meta.study_hash}); run with --restart (restart=True in Python) to discard it and "
+        f"start fresh, or choose another --out (another store path)"
     )
 
 
@@ -60,7 +60,8 @@ def root_mismatch(path: Path, study: Study, meta: StoreMeta) -> str | None:
     except Exception as exc:  # a record that no longer reads as a study: not this one
         return (
             f"store {str(path)!r} is damaged (its zarr.json) and its study record cannot be "
-            f"read as a study ({exc}); run with --restart to discard it and start fresh"
+            f"read as a study ({exc}); run with --restart (restart=True in Python) to discard "
+            f"it and start fresh"
         )
     old = recorded.hash(engine or "")
     if engine == meta.engine and old == meta.study_hash:

@@ -251,12 +251,14 @@ class SweepStore:
             evidence = self._evidence()
             if not evidence:
                 raise ValueError(
-                    f"{str(self.path)!r} exists but is not a sweep store; choose another --out"
+                    f"{str(self.path)!r} exists but is not a sweep store; choose another --out "
+                    f"(another store path)"
                 )
             if (evidence == "group" or self.done_chunks()) and not restart:
                 raise ValueError(
                     f"store {str(self.path)!r} lacks its study record (.sweep/study.json): its "
-                    f"creation was cut short; run with --restart to discard it and start fresh"
+                    f"creation was cut short; run with --restart (restart=True in Python) to "
+                    f"discard it and start fresh"
                 )
             self.remove()  # cut short while being created: nothing to keep
         if self.exists():
