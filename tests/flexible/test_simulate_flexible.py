@@ -61,6 +61,9 @@ def test_bad_combinations() -> None:
     for body in (Rod.paper(), BODY):  # a typo is named with the keyword it resembles
         with pytest.raises(TypeError, match=r"mue \(did you mean mu\?\)"):
             impactlab.simulate(body, angle=0.3, mue=0.2, velocity=(0.0, -1.41))
+    for body in (Rod.paper(), BODY):  # simulate_batch's velocity names: simulate's is named
+        with pytest.raises(ValueError, match=r"velocity=\(vx, vy\) \[m/s\], not vy="):
+            impactlab.simulate(body, angle=0.3, vy=-1.41)
     with pytest.raises(ValueError, match="constant_angle"):
         impactlab.simulate(BODY, angle=0.3, constant_angle=True, **KW)
     with pytest.raises(ValueError, match="angle"):

@@ -29,6 +29,16 @@ from impactlab.contact.base import ContactLaw
 from impactlab.materials import ContactPair, get_material
 
 
+def _stand_in_text(rng: dict[str, Any]) -> str:
+    """The law's range beyond the FE cases in one line: the limit, its status and its source
+    (the verified part is the ``calibrated_range`` row above it)."""
+    limit = rng.get("delta_ratio_max")
+    ref = str(rng.get("delta_ref", "")).split(" (")[0]
+    head = "no limit" if limit is None else f"{limit:g} {ref}"
+    status, meaning = rng.get("status", ""), rng.get("status_meaning", "")
+    return f"{head} ({status}: {meaning}); source: {rng.get('source', '')}"
+
+
 def _param_text(law: ContactLaw) -> str:
     if not law.parameters:
         return "none"
@@ -231,8 +241,8 @@ def _laws(name: str | None, radius: str, body: str, flat: str, as_json: bool) ->
     head = {k: v for k, v in info.items() if k not in ("parameters", "example", "law_id")}
     if isinstance(head.get("references"), list):  # the citations, not their records
         head["references"] = [_citation(r) for r in head["references"]]
-    if isinstance(head.get("fitted_range"), dict):  # per FE case: its one-line text says it
-        head["fitted_range"] = {k: v for k, v in head["fitted_range"].items() if k != "verified"}
+    if isinstance(head.get("fitted_range"), dict):  # the verified part is calibrated_range's
+        head["fitted_range"] = _stand_in_text(head["fitted_range"])
     emit(head, as_json=False, title=f"contact law {name!r}")
     ptable = Table(title="parameters", show_header=True, header_style="bold")
     for col in ("name", "default", "unit", "meaning"):

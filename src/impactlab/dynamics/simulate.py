@@ -132,6 +132,12 @@ def simulate(
     >>> round(r.e, 2)
     0.42
     """
+    split = [k for k in ("vx", "vy") if k in drop_options]
+    if split and velocity is None and speed is None:  # simulate_batch's names, given here
+        raise ValueError(
+            f"simulate takes the velocity as one pair, velocity=(vx, vy) [m/s], not "
+            f"{' and '.join(f'{k}=' for k in split)} (the names of simulate_batch's arrays)"
+        )
     if velocity is None or speed is not None or incidence is not None:
         velocity = velocity_from(velocity, speed, incidence)
     if isinstance(body, FlexibleRod) or drop_options:  # the flexible drop: a DropResult

@@ -14,7 +14,7 @@ from scipy.optimize import brentq
 import impactlab.analytic as an
 from impactlab.bodies import Rod
 from impactlab.paper import data as D
-from impactlab.paper.quantities import rel_diff, scaled
+from impactlab.paper.quantities import EQ12_REL, rel_diff, scaled
 
 #: I_C / (m L^2) values for the inertia sensitivity.
 INERTIA_RATIOS: tuple[float, ...] = (0.05, 1 / 15, 1 / 12, 0.1, 0.12, 0.15)
@@ -139,7 +139,7 @@ def published_consistency() -> pd.DataFrame:
                 "rod m_eff = 1/K_y [kg]": 1 / K_y,
                 "L_s published [um]": r.L_s * 1e6,
                 "L_s from Eq. 12 [um]": ls12 * 1e6,
-                "Eq. 12 rel. diff": r.L_s / ls12 - 1.0,
+                EQ12_REL: r.L_s / ls12 - 1.0,
             }
         )
     return pd.DataFrame(rows)

@@ -21,9 +21,14 @@ PAPER_DEPTH = "delta_p, paper's sign [um]"
 PAPER_SIGN_NOTE = (
     'Signs: the columns marked "paper\'s sign" print the dent depth as the paper does '
     "(negative); impactlab's delta_p is a positive depth (as in Section 11 and every other "
-    "output). L_s keeps one sign everywhere: negative when the tip slides towards -x, as in the "
-    "paper's tables and impactlab's sliding_length."
+    "output). L_s is the signed slip up to Section 7: negative when the tip slides towards -x, "
+    "as in the paper's tables and impactlab's sliding_length; Section 11 compares the extent "
+    "of the mark (a positive length, as a scan measures it). A relative difference is ours / "
+    "published - 1, except where a column says otherwise (published / Eq. 12 - 1)."
 )
+
+#: The column of a published L_s relative to Eq. 12 on its own row (published / Eq. 12 - 1).
+EQ12_REL = "published / Eq. 12 - 1"
 
 #: The compared quantities: (attribute of ``PublishedRow``, column label, display scale).
 QUANTS: tuple[tuple[str, str, float], ...] = (

@@ -11,6 +11,7 @@ import pandas as pd
 
 from impactlab.paper import data as D
 from impactlab.paper.quantities import (
+    EQ12_REL,
     TOL_SIMULATED,
     Simulations,
     paper_depth,
@@ -188,16 +189,17 @@ def _impulse_text(c: pd.Series, res: Any) -> str:
 
 
 def _reason_eq12(c: pd.Series) -> str:
-    d = c["Eq. 12 rel. diff"]
+    d = c[EQ12_REL]
     if abs(d) > 0.15:
         return (
             f"the published L_s contradicts Eq. 12 applied to the row's own delta_p and T "
-            f"(alpha (delta_p - v_i T) = {c['L_s from Eq. 12 [um]']:.3g} um, "
-            f"{d:+.0%})"
+            f"(alpha (delta_p - v_i T) = {c['L_s from Eq. 12 [um]']:.3g} um; published / "
+            f"Eq. 12 - 1 = {d:+.0%})"
         )
     return (
         f"the published L_s follows Eq. 12 from the row's own delta_p and T "
-        f"({c['L_s from Eq. 12 [um]']:.3g} um, {d:+.0%}); since |delta_p| << |v_i| T, "
+        f"({c['L_s from Eq. 12 [um]']:.3g} um; published / Eq. 12 - 1 = {d:+.0%}); since "
+        "|delta_p| << |v_i| T, "
         "L_s ~ alpha |v_i| T, so L_s carries the difference in T (see T)"
     )
 
