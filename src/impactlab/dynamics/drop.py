@@ -257,6 +257,7 @@ def _result(
         fitted_range_status=range_status(model.law_id, model.params),
         law_range=range_note(model.law_id, model.params),
         references=references,
+        _law=(model.law_id, np.asarray(model.params)),
         **inputs,
         **{_RENAMED_OUTPUTS.get(k, k): v for k, v in o.items() if k not in skip},
     )
