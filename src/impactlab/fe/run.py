@@ -29,7 +29,6 @@ from impactlab.fe.result import (
 )
 from impactlab.materials import Material
 
-
 #: The largest delta_max / delta_c the shipped FE cases reach and the mesh was checked at
 #: (level 1 within 1.4 % of level 2 there, docs/fe.md).
 CHECKED_RATIO = 1000.0
