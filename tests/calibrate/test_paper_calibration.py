@@ -11,13 +11,14 @@ import pytest
 
 from impactlab.paper import data as D
 from impactlab.paper.calibration_report import (
-    PAPER_MODELS,
     calibrate_paper,
     calibration_section,
     paper_measurements,
+    paper_models,
+    shipped_calibration,
     write_calibration_report,
 )
-from impactlab.paper.physics import CONFIGURATIONS
+from impactlab.paper.physics import ROWS
 from impactlab.paper.report import Heading, Table, to_markdown
 
 LONG = pytest.mark.skipif(
@@ -35,15 +36,28 @@ def test_the_three_drops_and_models():
     assert m.observed["delta_p"][1] == pytest.approx(abs(x.delta_p))
     assert m.sigma["delta_p"][1] == pytest.approx(0.1 * abs(x.delta_p))
     assert m.observed["scar_length"][0] == pytest.approx(abs(D.EXPERIMENTS[20].L_s))
-    assert [p.name for p in PAPER_MODELS] == [c.name for c in CONFIGURATIONS]
-    assert PAPER_MODELS[2].rate == "cowper-symonds" and PAPER_MODELS[0].body is None
+    models = paper_models()  # every row of the physics section, the FE-tabulated one too
+    assert [p.name for p in models] == [c.name for c in ROWS] and len(models) == 4
+    assert models[2].rate == "cowper-symonds" and models[0].body is None
+    assert models[3].law == "paper-fe-hardened" and models[3].body == "flexible_rod"
+
+
+def test_the_shipped_calibration_ranks_every_row_and_says_where_it_comes_from() -> None:
+    """The report's calibration section is the shipped run: every configuration of the physics
+    section ranked, the sampler's settings, and a sentence saying the numbers are shipped and
+    whether the chains converged."""
+    summary = shipped_calibration()
+    assert {r["configuration"] for r in summary["ranking"]} == {c.name for c in ROWS}
+    text = to_markdown(calibration_section(summary, 12), "t")
+    assert "shipped with the package" in text and "does not rerun the calibration" in text
+    assert ("did not converge" in text) != ("converged (R-hat <= 1.05)" in text)
 
 
 @LONG
 @pytest.mark.slow
 def test_ranked_configurations_and_section(tmp_path):
     cal = calibrate_paper(walkers=4, steps=10, n_ppc=4)
-    assert {r["model"] for r in cal.ranking} == {c.name for c in CONFIGURATIONS}
+    assert {r["model"] for r in cal.ranking} == {c.name for c in ROWS}
     assert any("'rigid rod' does not use damping" in w for w in cal.warnings)
     blocks = calibration_section(cal, 12)
     assert isinstance(blocks[0], Heading) and any(isinstance(b, Table) for b in blocks)

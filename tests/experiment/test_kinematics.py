@@ -134,7 +134,7 @@ def test_a_wrong_time_base_is_refused(rod: Any) -> None:
     tr = S.rigid_impulse_impact(rod, math.radians(30), (0.0, -1.41), e=0.6, mu=0.15)
     tracks, info = S.marker_tracks(rod, tr, seed=7)
     slow = MarkerTracks(2.0 * tracks.time, tracks.positions, tracks.labels, "slow")
-    with pytest.raises(MarkerError, match=r"0\.25 times g .* the time base or the length unit"):
+    with pytest.raises(MarkerError, match=r"0\.25\d* times g .* the time base or the length unit"):
         measure_impact(slow, rod, geometry=MarkerGeometry(S.DEFAULT_MARKERS, info["labels"]))
 
 

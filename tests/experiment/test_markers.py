@@ -116,12 +116,35 @@ def test_csv_units_from_argument_and_conflict(tmp_path: Path) -> None:
 
 
 def test_csv_frame_column_needs_rate(tmp_path: Path) -> None:
+    """The message says what to put in the file (the command line has no rate option)."""
     p = tmp_path / "f.csv"
     p.write_text("# units: mm\nframe,A_x,A_y,A_z\n1,0,0,0\n2,0,0,1\n3,0,0,2\n")
-    with pytest.raises(FileFormatError, match="rate"):
+    with pytest.raises(FileFormatError, match="add a line '# rate: 500 Hz' above the header"):
         read_csv_markers(p)
     t = read_csv_markers(p, rate=250.0)
     np.testing.assert_allclose(t.time, [0.0, 0.004, 0.008])
+
+
+@pytest.mark.parametrize(
+    "rate", ["500", "500 Hz", "0.5 kHz", "500 1/s", "500/s", "500 fps", "500 frames per second"]
+)
+def test_csv_rate_with_its_unit(tmp_path: Path, rate: str) -> None:
+    """The unit of '# rate:' is read, never dropped ('0.5 kHz' was read as 0.5 Hz)."""
+    p = tmp_path / "f.csv"
+    p.write_text(f"# units: mm\n# rate: {rate}\nframe,A_x,A_y,A_z\n1,0,0,0\n2,0,0,1\n")
+    np.testing.assert_allclose(read_csv_markers(p).time, [0.0, 0.002])
+
+
+@pytest.mark.parametrize(
+    ("rate", "needle"),
+    [("500 mm", "wrong dimension"), ("fast", "cannot parse"), ("0 Hz", "must be > 0 Hz")],
+)
+def test_csv_rate_that_is_not_a_frame_rate(tmp_path: Path, rate: str, needle: str) -> None:
+    p = tmp_path / "f.csv"
+    p.write_text(f"# units: mm\n# rate: {rate}\nframe,A_x,A_y,A_z\n1,0,0,0\n2,0,0,1\n")
+    with pytest.raises(FileFormatError, match=f"'# rate: {rate}'") as caught:
+        read_csv_markers(p)
+    assert needle in str(caught.value)
 
 
 @pytest.mark.parametrize(

@@ -93,3 +93,30 @@ def test_marker_geometry() -> None:
         MarkerGeometry(np.array([[0, 0, 0], [0.1, 0, 0], [0.2, 0, 0.0]]))
     with pytest.raises(ValueError, match="at least 3"):
         MarkerGeometry.from_mapping({"M1": [0, 0, 0], "M2": [1, 0, 0]})
+
+
+@pytest.mark.parametrize(
+    "value", ["a", [1.0, 2.0], [1.0, "b", 3.0], [1.0, 2.0, float("nan")], [True, 0, 0]]
+)
+def test_marker_geometry_names_a_bad_entry(value: object) -> None:
+    table = {"units": "mm", "M1": value, "M2": [-90, 0, 22], "M3": [-130, -20, 4]}
+    with pytest.raises(ValueError, match=r"^markers\.M1 must be \[x, y, z\], three numbers"):
+        MarkerGeometry.from_mapping(table)
+
+
+def test_marker_geometry_says_in_which_unit_it_was_read() -> None:
+    rows = {"M1": [-30, 18, 0], "M2": [-90, 0, 22], "M3": [-130, -20, 4]}
+    assert MarkerGeometry.from_mapping(rows).units_note == "m (no units key)"
+    assert MarkerGeometry.from_mapping({"units": "mm", **rows}).units_note == "mm"
+    assert MarkerGeometry.from_mapping(rows, units="cm").units_note == "cm (units=)"
+
+
+def test_reference_cluster_ignores_wrong_frames() -> None:
+    """A glitch of 50 mm and garbage coordinates in some frames leave the shape unchanged."""
+    tracks, _ = _moving(n=60, noise=1e-5, seed=2)
+    pos = tracks.positions.copy()
+    pos[5, 1, 0] += 0.05
+    pos[20, 2] = 1e27
+    bad = MarkerTracks(tracks.time, pos, tracks.labels)
+    shape = reference_cluster(bad)
+    assert kabsch(REF - REF.mean(axis=0), shape)[2] < 1e-4

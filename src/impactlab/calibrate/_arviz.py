@@ -10,6 +10,7 @@ advisory reached the user's stderr. The contexts here hold one lock while they r
 
 from __future__ import annotations
 
+import logging
 import threading
 import warnings
 from collections.abc import Iterator
@@ -26,10 +27,25 @@ _WARNING_STATE = threading.RLock()
 
 
 @contextmanager
+def _arviz_log_quiet() -> Iterator[None]:
+    """ArviZ's log records (``Shape validation failed``: too few draws for R-hat) go nowhere:
+    the calibration says so in its own warnings (R-hat not assessable)."""
+    # ArviZ logs through its own Logger object (``arviz._log``), not one of logging's registry
+    logger = getattr(az, "_log", None) or logging.getLogger("arviz")
+    level = logger.level
+    logger.setLevel(logging.ERROR)
+    try:
+        yield
+    finally:
+        logger.setLevel(level)
+
+
+@contextmanager
 def quiet() -> Iterator[None]:
-    """Hide ArviZ's advisory warnings (few draws per chain, Pareto k, pandas deprecations):
-    the calibration reports what matters in its own warnings (Pareto k counts, R-hat)."""
-    with _WARNING_STATE, warnings.catch_warnings():
+    """Hide ArviZ's advisory warnings and log records (few draws per chain, Pareto k, pandas
+    deprecations): the calibration reports what matters in its own warnings (Pareto k counts,
+    R-hat, and R-hat that cannot be assessed)."""
+    with _WARNING_STATE, warnings.catch_warnings(), _arviz_log_quiet():
         warnings.simplefilter("ignore", UserWarning)
         warnings.simplefilter("ignore", FutureWarning)
         warnings.simplefilter("ignore", DeprecationWarning)
@@ -39,7 +55,8 @@ def quiet() -> Iterator[None]:
 
 @contextmanager
 def recording() -> Iterator[list[warnings.WarningMessage]]:
-    """Record every warning raised inside (none reaches the user; the caller reports them)."""
-    with _WARNING_STATE, warnings.catch_warnings(record=True) as caught:
+    """Record every warning raised inside (none reaches the user; the caller reports them;
+    ArviZ's log records are dropped)."""
+    with _WARNING_STATE, warnings.catch_warnings(record=True) as caught, _arviz_log_quiet():
         warnings.simplefilter("always")
         yield caught

@@ -3,7 +3,7 @@ and the models ranked by PSIS-LOO."""
 
 from __future__ import annotations
 
-import math
+import contextlib
 import re
 import warnings
 from collections.abc import Mapping, Sequence
@@ -11,19 +11,23 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-import numpy as np
-
-from impactlab._display import display_unit, format_number
 from impactlab.calibrate.cluster import map_on_dask
+from impactlab.calibrate.diagnostics import edge_note, misfits
+from impactlab.calibrate.input_checks import check_inputs, parameter_usage, sampler_settings
+from impactlab.calibrate.input_checks import parameters as free_parameters
 from impactlab.calibrate.measurements import Measurements, read_measurements
-from impactlab.calibrate.models import CandidateModel, predict
+from impactlab.calibrate.model_specs import model_definition, parse_model
+from impactlab.calibrate.models import CandidateModel
 from impactlab.calibrate.posterior import LogPosterior
-from impactlab.calibrate.priors import Parameter, parse_parameter
-from impactlab.calibrate.ranking import rank_models
+from impactlab.calibrate.priors import Parameter
+from impactlab.calibrate.ranking import NOT_CONVERGED, NOT_DISTINGUISHABLE, rank_models
 from impactlab.calibrate.result import ModelPosterior, summarise
 from impactlab.calibrate.sampler import ProgressFn, run_chain
+from impactlab.calibrate.statelock import state_lock
+from impactlab.dynamics.input_checks import gravity_value
 from impactlab.references import cite
 from impactlab.sweep.engine import ENGINE, Evaluator
+from impactlab.sweep.options import EngineOptions
 
 __all__ = ["REFERENCES", "Calibration", "CalibrationWarning", "calibrate", "parse_model"]
 
@@ -36,14 +40,17 @@ REFERENCES = cite(
 
 class CalibrationWarning(UserWarning):
     """Something the calibration ran through but the user should know (a parameter a model
-    does not use, a drop value replaced by a free parameter, a misfit)."""
+    does not use, a drop value replaced by a free parameter, a misfit, a chain that has not
+    converged, a posterior against its prior's bound, a best model the data do not single
+    out)."""
 
 
 @dataclass
 class Calibration:
     """What ``calibrate`` returns: ``posteriors`` (model name -> ModelPosterior), ``ranking``
-    (rows best first, ``rank_models``), the ``measurements``, the sampler settings and the
-    ``warnings`` issued."""
+    (rows best first, ``rank_models``: with ``converged``, ``distinguishable`` and ``note``),
+    the ``measurements``, the sampler settings (with the engine options and each model's
+    definition) and the ``warnings`` given."""
 
     posteriors: dict[str, ModelPosterior]
     ranking: list[dict[str, Any]]
@@ -53,12 +60,21 @@ class Calibration:
 
     @property
     def best(self) -> ModelPosterior:
-        """The best-ranked model's posterior."""
+        """The best-ranked model's posterior (``best_caveats``: why the choice may not hold)."""
         name = self.ranking[0]["model"] if self.ranking else next(iter(self.posteriors))
         return self.posteriors[name]
 
+    @property
+    def best_caveats(self) -> list[str]:
+        """Why ``best`` may not be the model the data single out: its elpd does not differ from
+        the runner-up's by 2 dse (``"not distinguishable (elpd_diff < 2 dse)"``), or its chain
+        has not converged (``"not converged"``); empty when neither."""
+        if not self.ranking:
+            return [] if self.best.converged else [NOT_CONVERGED]
+        return [n for n in self.ranking[0]["note"].split("; ") if n]
+
     def to_dict(self) -> dict[str, Any]:
-        """JSON-ready (SI units)."""
+        """JSON-ready (the units of ``Measurements`` and ``Parameter.unit``)."""
         return {
             "measurements": {
                 "source": self.measurements.source,
@@ -72,95 +88,6 @@ class Calibration:
             "models": {k: v.to_dict() for k, v in self.posteriors.items()},
             "warnings": self.warnings,
         }
-
-
-def parse_model(spec: str | CandidateModel | Mapping[str, Any]) -> CandidateModel:
-    """A CandidateModel from ``"law/friction[/flexible_rod[/rate]]"`` (the form of its
-    ``name``), a mapping of its fields or itself."""
-    if isinstance(spec, CandidateModel):
-        return spec
-    if isinstance(spec, Mapping):
-        return CandidateModel(**dict(spec))
-    parts = [p.strip() for p in str(spec).split("/")]
-    if not 1 <= len(parts) <= 4 or not all(parts):
-        raise ValueError(
-            f"model {spec!r}: expected 'law', 'law/friction', 'law/friction/body' or "
-            "'law/friction/flexible_rod/rate'"
-        )
-    friction = parts[1] if len(parts) > 1 else "coulomb"
-    body = parts[2] if len(parts) > 2 else None
-    rate = parts[3] if len(parts) > 3 else None
-    try:
-        return CandidateModel(parts[0], friction, body, rate=rate)
-    except ValueError as exc:
-        raise ValueError(f"model {spec!r}: {exc}") from None
-
-
-def _params(parameters: Sequence[Parameter] | Mapping[str, Any]) -> tuple[Parameter, ...]:
-    if isinstance(parameters, Mapping):
-        out = tuple(
-            v if isinstance(v, Parameter) else parse_parameter(k, v) for k, v in parameters.items()
-        )
-    else:
-        out = tuple(parameters)
-    if not out:
-        raise ValueError("calibrate needs at least one free parameter")
-    names = [p.name for p in out]
-    if len(set(names)) != len(names):
-        raise ValueError(f"a free parameter is given twice: {names}")
-    return out
-
-
-def _check_inputs(meas: Measurements, params: Sequence[Parameter], note: list[str]) -> None:
-    free = {p.name for p in params}
-    if "mu" not in free and not np.isfinite(meas.inputs["mu"]).all():
-        missing = [
-            lab for lab, m in zip(meas.labels, meas.inputs["mu"], strict=True) if math.isnan(m)
-        ]
-        raise ValueError(
-            f"drops {missing} give no mu: give it in the measurements file or make mu a free "
-            "parameter"
-        )
-    for p in params:
-        given = np.isfinite(meas.inputs[p.name])
-        if given.any():
-            note.append(
-                f"{p.name} is a free parameter: the value given for {int(given.sum())} drop(s) "
-                "in the measurements is not used"
-            )
-
-
-def _uses(
-    model: CandidateModel,
-    meas: Measurements,
-    params: Sequence[Parameter],
-    evaluator: Evaluator,
-    engine: Mapping[str, Any],
-) -> list[bool]:
-    """For each parameter: does changing it (over the prior's deciles 1, 3, 5, 7, 9, the
-    others at their medians) change any prediction of ``model``? One batch of 5P + 1 vectors.
-    (A parameter whose every value fails counts as used: the prior check names the reason.)"""
-    med = np.array([float(p.quantile(0.5)) for p in params])
-    levels = (0.1, 0.3, 0.5, 0.7, 0.9)
-    rows = [med]
-    for j, p in enumerate(params):
-        for q in levels:
-            t = med.copy()
-            t[j] = float(p.quantile(q))
-            rows.append(t)
-    pred = predict(model, meas, params, np.array(rows), evaluator=evaluator, engine=engine)
-    used = []
-    k = len(levels)
-    for j in range(len(params)):
-        idx = list(range(1 + k * j, 1 + k * (j + 1)))
-        same = all(
-            np.array_equal(v[i], v[idx[0]], equal_nan=True)
-            for v in pred.values.values()
-            for i in idx[1:]
-        ) and all(np.array_equal(pred.status[i], pred.status[idx[0]]) for i in idx[1:])
-        all_failed = bool((pred.status[idx] != 0).all())
-        used.append(not same or all_failed)
-    return used
 
 
 @dataclass(frozen=True)
@@ -218,23 +145,54 @@ def calibrate(
     measurements : a Measurements or the path of a measurements file (CSV or TOML);
     parameters : Parameters, or name -> prior text (``{"mu": "uniform(0, 1)"}``);
     models : CandidateModels or ``"law/friction[/flexible_rod]"`` texts;
-    walkers : ensemble size (default max(16, 4 P), even); steps : steps per walker in all;
-    burn : steps discarded (default steps // 2); seed : the random seed (same inputs and seed:
-    the same chain); state_dir : a folder keeping each model's chain (emcee HDF5), so that an
-    interrupted calibration resumes (``restart`` discards it); progress(model, done, total);
-    evaluator, engine : the engine adapter and its options (gravity, rtol; default: the
-    compiled engine, gravity on); scheduler : a Dask ``distributed.Client`` or scheduler
-    address: each model's chain runs as one task there (no progress display; ``state_dir``
-    must be a folder the workers share).
+    walkers : ensemble size (default max(16, 4 P), even); steps : steps per walker in all
+    (a saved chain that holds more is used up to ``steps``); burn : steps discarded (default
+    steps // 2); seed : the random seed, an integer in [0, 2^32) (same inputs and seed: the
+    same chain); state_dir : a folder keeping each model's chain (emcee HDF5), so that an
+    interrupted calibration resumes (``restart`` discards it; one calibration at a time uses
+    a folder); progress(model, done, total); evaluator, engine : the engine adapter and its
+    options (gravity, rtol; default: the compiled engine, gravity on); scheduler : a Dask
+    ``distributed.Client`` or scheduler address: each model's chain runs as one task there
+    (no progress display; ``state_dir`` must be a folder the workers share).
 
     ValueError for a parameter no model uses, a prior in which a model cannot produce the
     measurements, and bad input in general; a CalibrationWarning for a parameter some models do
-    not use and for values of the file that a free parameter replaces.
+    not use, for values of the file that a free parameter replaces, for misfits, chains that
+    have not converged, posteriors against their prior's bound and a best model the data do
+    not single out (``Calibration.best_caveats``). Ctrl-C raises
+    ``statelock.CalibrationInterrupted`` (a KeyboardInterrupt naming the step reached);
+    ``statelock.StateInUse`` (a ValueError) when another calibration uses ``state_dir``.
     """
+    lock = state_lock(Path(state_dir)) if state_dir is not None else contextlib.nullcontext()
+    with lock:
+        return _calibrate(
+            measurements, parameters, models, walkers=walkers, steps=steps, burn=burn,
+            seed=seed, state_dir=state_dir, restart=restart, progress=progress,
+            evaluator=evaluator, engine=engine, n_ppc=n_ppc, scheduler=scheduler,
+        )  # fmt: skip
+
+
+def _calibrate(
+    measurements: Measurements | str | Path,
+    parameters: Sequence[Parameter] | Mapping[str, Any],
+    models: Sequence[CandidateModel | str] | CandidateModel | str,
+    *,
+    walkers: int | None,
+    steps: int,
+    burn: int | None,
+    seed: int,
+    state_dir: str | Path | None,
+    restart: bool,
+    progress: ProgressFn | None,
+    evaluator: Evaluator,
+    engine: Mapping[str, Any] | None,
+    n_ppc: int,
+    scheduler: Any,
+) -> Calibration:
     meas = (
         measurements if isinstance(measurements, Measurements) else read_measurements(measurements)
     )
-    params = _params(parameters)
+    params = free_parameters(parameters)
     cands = [
         parse_model(m) for m in ([models] if isinstance(models, str | CandidateModel) else models)
     ]
@@ -250,20 +208,16 @@ def calibrate(
     names = [c.name for c in cands]
     if len(set(names)) != len(names):
         raise ValueError(f"two candidate models have the same name: {names}")
-    least = max(4, 2 * len(params))
-    if walkers is not None and walkers < least:
-        raise ValueError(f"walkers must be >= {least} (4 and 2 x parameters), got {walkers}")
-    nw = walkers if walkers is not None else max(16, 4 * len(params))
-    nw += nw % 2
-    if steps < 10:
-        raise ValueError(f"steps must be >= 10, got {steps}")
-    nburn = steps // 2 if burn is None else int(burn)
-    if not 0 <= nburn < steps:
-        raise ValueError(f"burn must lie in [0, steps), got {burn}")
+    nw, steps, nburn, seed = sampler_settings(len(params), walkers, steps, burn, seed)
     eng = dict(engine or {})
+    unknown = sorted(set(eng) - {"gravity", "rtol"})
+    if unknown:
+        raise ValueError(f"unknown engine option(s) {unknown}; known: gravity, rtol")
+    g = gravity_value(eng.get("gravity", True))
+    EngineOptions(rtol=eng.get("rtol"))  # ValueError for an rtol the engine refuses
     notes: list[str] = []
-    _check_inputs(meas, params, notes)
-    usage = {c.name: _uses(c, meas, params, evaluator, eng) for c in cands}
+    check_inputs(meas, params, cands, notes)
+    usage = {c.name: parameter_usage(c, meas, params, evaluator, eng) for c in cands}
     for j, p in enumerate(params):
         users = [n for n in names if usage[n][j]]
         if not users:
@@ -277,7 +231,7 @@ def calibrate(
             if not usage[n][j]
         ]
     for text in notes:
-        warnings.warn(text, CalibrationWarning, stacklevel=2)
+        warnings.warn(text, CalibrationWarning, stacklevel=3)
     run = _Run(meas, params, evaluator, eng, nw, steps, nburn, seed, restart, n_ppc)
     states = [
         Path(state_dir) / f"{_slug(c.name)}.h5" if state_dir is not None else None for c in cands
@@ -289,9 +243,11 @@ def calibrate(
             scheduler, run, [(c, s, None) for c, s in zip(cands, states, strict=True)]
         )
     posteriors = {c.name: p for c, p in zip(cands, done, strict=True)}
-    misfits = _misfits(posteriors)
-    for text in misfits:
-        warnings.warn(text, CalibrationWarning, stacklevel=2)
+    found = misfits(posteriors) + _chain_warnings(posteriors, params, usage)
+    ranking = rank_models(posteriors)
+    found += _best_warnings(ranking)
+    for text in found:
+        warnings.warn(text, CalibrationWarning, stacklevel=3)
     settings = {
         "sampler": "emcee EnsembleSampler (stretch move), vectorised",
         "walkers": nw,
@@ -300,35 +256,52 @@ def calibrate(
         "seed": seed,
         "parameters": {p.name: p.describe() for p in params},
         "models": names,
+        "model_definitions": {c.name: model_definition(c) for c in cands},
+        "engine": {"gravity": g, "rtol": eng.get("rtol")},
         "likelihood": "independent Gaussian errors with the stated standard uncertainties",
         "references": [str(r) for r in REFERENCES],
     }
-    return Calibration(posteriors, rank_models(posteriors), meas, settings, notes + misfits)
+    return Calibration(posteriors, ranking, meas, settings, notes + found)
 
 
-#: A best fit farther than this many standard uncertainties from a measured value is a misfit.
-MISFIT_SIGMAS = 5.0
+def _chain_warnings(
+    posteriors: Mapping[str, ModelPosterior],
+    params: Sequence[Parameter],
+    usage: Mapping[str, Sequence[bool]],
+) -> list[str]:
+    """Each model's convergence problems (of the parameters it uses: an unused one's chain is
+    its prior's, and says nothing of the model), and each used parameter whose posterior lies
+    against a bound of its prior (added to the model's own warnings too), as
+    ``"model: text"``."""
+    out = []
+    for name, post in posteriors.items():
+        unused = [f"{p.name}: " for j, p in enumerate(params) if not usage[name][j]]
+        post.convergence = [c for c in post.convergence if not c.startswith(tuple(unused))]
+        edges = [
+            note
+            for j, p in enumerate(params)
+            if usage[name][j] and (note := edge_note(p, post.samples[:, j])) is not None
+        ]
+        post.warnings.extend(edges)
+        out += [f"{name}: {text}" for text in (*post.convergence, *edges)]
+    return out
 
 
-def _misfits(posteriors: Mapping[str, ModelPosterior]) -> list[str]:
-    """One line per measured value that no model's best fit comes within MISFIT_SIGMAS of."""
-    worst: dict[tuple[str, str], tuple[float, str, dict[str, Any]]] = {}
-    for name, p in posteriors.items():
-        for r in p.ppc:
-            key, z = (r["drop"], r["quantity"]), abs(r["z_best"])
-            z = z if math.isfinite(z) else math.inf
-            if key not in worst or z < worst[key][0]:
-                worst[key] = (z, name, r)
-    lines = []
-    for (d, q), (z, name, r) in worst.items():
-        if z <= MISFIT_SIGMAS:
-            continue
-        show = display_unit(q, r["unit"])  # dent-scale lengths in um, as the tables
-        unit = "" if show.unit in ("1", "") else f" {show.unit}"
-        value, sigma, best = (format_number(r[k] * show.scale, n)
-                              for k, n in (("observed", 4), ("sigma", 2), ("best", 4)))  # fmt: skip
-        lines.append(
-            f"no model reproduces {d} {q} = {value} +- {sigma}{unit}: the closest best fit "
-            f"({name}: {best}{unit}) is {z:.1f} sigma away"
+def _best_warnings(ranking: Sequence[Mapping[str, Any]]) -> list[str]:
+    """Why the best-ranked model may not be the one the data single out."""
+    if not ranking:
+        return []
+    best, out = ranking[0], []
+    if NOT_DISTINGUISHABLE in best["note"]:
+        other = ranking[1]
+        out.append(
+            f"the best-ranked model {best['model']!r} is not distinguishable from "
+            f"{other['model']!r}: elpd_diff {other['elpd_diff']:.2f} < 2 dse "
+            f"({2 * other['dse']:.2f}); the data do not single out one model"
         )
-    return lines
+    if NOT_CONVERGED in best["note"]:
+        out.append(
+            f"the best-ranked model {best['model']!r} has not converged: its rank and "
+            "posterior may change with more steps"
+        )
+    return out

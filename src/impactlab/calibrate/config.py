@@ -13,8 +13,9 @@
     [engine]
     gravity = true                      # or a value in m/s^2; rtol = 1e-7
 
-``[[model]]`` tables (``law``, ``friction``, ``body``, ``name``, ``fixed``, ``law_params``)
-may replace ``models`` where a model needs more than its law and friction.
+``[[model]]`` tables (``law``, ``friction``, ``body``, ``rate``, ``name``, ``fixed``,
+``law_params``) may replace ``models`` where a model needs more than its law and friction; a
+misspelt key, or a ``fixed`` input that is unknown or out of range, is refused naming it.
 """
 
 from __future__ import annotations
@@ -36,9 +37,12 @@ _ENGINE = {"gravity", "rtol"}
 
 def load_config(path: str | Path) -> dict[str, Any]:
     """The keyword arguments of ``calibrate`` from a calibration file: measurements (a path),
-    parameters, models and the sampler's and engine's settings. ValueError naming an unknown
-    key, or the file when it is not UTF-8 text or not TOML."""
+    parameters, models and the sampler's and engine's settings. ValueError naming the file and
+    an unknown key, a sampler setting that is not an integer, a bad model table, or the file
+    when it is not UTF-8 text or not TOML."""
     p = Path(path)
+    if p.is_dir():
+        raise IsADirectoryError(f"calibration file {str(p)!r} is a directory; give the file")
     if not p.is_file():
         raise FileNotFoundError(f"calibration file not found: {p}")
     try:
@@ -58,16 +62,31 @@ def load_config(path: str | Path) -> dict[str, Any]:
     out["parameters"] = [parse_parameter(k, v) for k, v in params.items()]
     models: list[Any] = list(doc.get("models", [])) + list(doc.get("model", []))
     if models:
-        out["models"] = [parse_model(m) for m in models]
-    for table, keys in (("sampler", _SAMPLER), ("engine", _ENGINE)):
-        t = doc.get(table, {})
-        bad = set(t) - keys
-        if bad:
-            raise ValueError(
-                f"{p}: unknown key(s) {sorted(bad)} in [{table}]; known: {sorted(keys)}"
-            )
-        if table == "sampler":
-            out.update({k: int(v) for k, v in t.items()})
-        elif t:
-            out["engine"] = dict(t)
+        try:
+            out["models"] = [parse_model(m) for m in models]
+        except ValueError as exc:
+            raise ValueError(f"{p}: {exc}") from None
+    out.update(_sampler(p, _table(p, doc, "sampler", _SAMPLER)))
+    engine = _table(p, doc, "engine", _ENGINE)
+    if engine:
+        out["engine"] = engine
     return out
+
+
+def _table(p: Path, doc: dict[str, Any], name: str, keys: set[str]) -> dict[str, Any]:
+    """The table ``name`` of the file (empty if absent); ValueError for an unknown key."""
+    t = doc.get(name, {})
+    if not isinstance(t, dict):
+        raise ValueError(f"{p}: [{name}] must be a table of key = value")
+    bad = set(t) - keys
+    if bad:
+        raise ValueError(f"{p}: unknown key(s) {sorted(bad)} in [{name}]; known: {sorted(keys)}")
+    return dict(t)
+
+
+def _sampler(p: Path, t: dict[str, Any]) -> dict[str, int]:
+    """The [sampler] settings, each an integer (``steps = 12.7`` or ``"ten"`` is refused)."""
+    for k, v in t.items():
+        if isinstance(v, bool) or not isinstance(v, int):
+            raise ValueError(f"{p}: [sampler] {k} must be an integer, got {v!r}")
+    return t

@@ -1,13 +1,17 @@
 """A calibration as the command line's JSON (docs/json-schema.md: every number with a fractional
-part is a quantity object ``{"value", "unit"[, "sigma"]}`` in SI; counts stay integers)."""
+part is a quantity object ``{"value", "unit"[, "sigma"]}``, in SI or the unit it names (a
+Brinell hardness in kgf/mm^2, an autocorrelation time in steps); counts stay integers)."""
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from typing import Any
 
 from impactlab._json import jsonable, quantity
 from impactlab.calibrate.api import Calibration
 from impactlab.calibrate.result import ModelPosterior
+from impactlab.contact import get_law
+from impactlab.sweep.inputs import INPUTS
 
 __all__ = ["calibration_json"]
 
@@ -21,7 +25,8 @@ def _model(post: ModelPosterior) -> dict[str, Any]:
         params[p.name] = {
             "prior": p.describe(),
             **{k: quantity(s[k], p.unit) for k in ("median", "mean", "sd", "q05", "q95")},
-            **{k: quantity(s[k], _ONE) for k in ("rhat", "ess_bulk", "tau")},
+            **{k: quantity(s[k], _ONE) for k in ("rhat", "ess_bulk")},
+            "tau": quantity(s["tau"], "steps"),
             "best": quantity(post.best[p.name], p.unit),
         }
     loo: dict[str, Any] = {k: quantity(v, _ONE) for k, v in post.loo.items() if k != "n_bad_k"}
@@ -46,8 +51,38 @@ def _model(post: ModelPosterior) -> dict[str, Any]:
         "acceptance": quantity(post.acceptance, _ONE),
         "steps": int(post.steps),
         "burn": int(post.burn),
+        "converged": post.converged,
         "warnings": list(post.warnings),
     }
+
+
+def _law_params(law: str, given: Mapping[str, Any]) -> dict[str, Any]:
+    try:
+        units = {q.name: q.unit for q in get_law(law).parameters if q.unit not in ("-", "")}
+    except (ValueError, AttributeError):
+        units = {}
+    return {
+        k: quantity(v, units.get(k) or _ONE) if isinstance(v, float) else v
+        for k, v in given.items()
+    }
+
+
+def _settings(settings: Mapping[str, Any]) -> dict[str, Any]:
+    """The settings, their numbers as quantities: the engine's gravity and rtol, the values
+    each model fixes (in the input's unit) and its law parameters (in the law's)."""
+    out = dict(settings)
+    eng = dict(out.get("engine", {}))
+    if "gravity" in eng:
+        eng["gravity"] = quantity(eng["gravity"], "m/s^2")
+    if eng.get("rtol") is not None:
+        eng["rtol"] = quantity(float(eng["rtol"]), _ONE)
+    out["engine"] = eng
+    defs = {}
+    for name, d in out.get("model_definitions", {}).items():
+        fixed = {k: quantity(v, INPUTS[k].unit) for k, v in d.get("fixed", {}).items()}
+        defs[name] = {**d, "fixed": fixed, "law_params": _law_params(d["law"], d["law_params"])}
+    out["model_definitions"] = defs
+    return out
 
 
 def calibration_json(cal: Calibration) -> dict[str, Any]:
@@ -61,6 +96,10 @@ def calibration_json(cal: Calibration) -> dict[str, Any]:
                 for k in ("elpd_loo", "se", "elpd_diff", "dse", "p_loo", "weight")
             },
             "pareto_k_warning": bool(r["warning"]),
+            "pareto_k_max": quantity(r["pareto_k_max"], _ONE),
+            "converged": bool(r["converged"]),
+            "distinguishable": r["distinguishable"],
+            "note": r["note"],
         }
         for r in cal.ranking
     ]
@@ -73,7 +112,7 @@ def calibration_json(cal: Calibration) -> dict[str, Any]:
                 "quantities": list(m.quantities),
                 "values": m.n_values,
             },
-            "settings": {k: v for k, v in cal.settings.items()},
+            "settings": _settings(cal.settings),
             "criterion": "PSIS-LOO elpd over drops (higher is better)",
             "ranking": ranking,
             "models": {k: _model(v) for k, v in cal.posteriors.items()},

@@ -19,8 +19,8 @@ def read_text(path: Path, kind: str) -> str:
 
 def csv_records(path: Path) -> list[dict[str, str]]:
     """The rows of a CSV file as header -> text, without blank lines and ``#`` comment lines;
-    ValueError naming the file and the line for a row whose number of fields differs from the
-    header's (a truncated or ragged row)."""
+    ValueError naming the file and the line for a header that names a column twice, and for a
+    row whose number of fields differs from the header's (a truncated or ragged row)."""
     numbered = [
         (number, line)
         for number, line in enumerate(read_text(path, "CSV").splitlines(), start=1)
@@ -29,6 +29,12 @@ def csv_records(path: Path) -> list[dict[str, str]]:
     if not numbered:
         return []
     header = next(csv.reader([numbered[0][1]]))
+    twice = sorted({h.strip() for h in header if [x.strip() for x in header].count(h.strip()) > 1})
+    if twice:
+        raise ValueError(
+            f"{path}: line {numbered[0][0]}: the header names the column(s) {twice} twice; "
+            "keep one of each"
+        )
     records = []
     for number, line in numbered[1:]:
         fields = next(csv.reader([line]))

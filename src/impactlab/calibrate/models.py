@@ -21,6 +21,7 @@ import numba
 import numpy as np
 
 from impactlab.bodies import PAPER_ROD, FlexibleRod, Rod, Sphere
+from impactlab.calibrate.fixed import fixed_values
 from impactlab.calibrate.measurements import Measurements
 from impactlab.calibrate.priors import Parameter
 from impactlab.calibrate.quantities import MEASURABLE
@@ -87,7 +88,9 @@ def status_message(code: int) -> str:
 class CandidateModel:
     """One physical model: ``law`` (a registered contact law), ``friction`` (a friction
     model), ``body`` (None: each drop's own rigid body; ``"flexible_rod"``: every rod is the
-    flexible rod), ``fixed`` inputs this model sets for every drop (SI, e.g. ``damping``), the
+    flexible rod), ``fixed`` inputs this model sets for every drop (e.g. ``damping``; numbers in
+    the input's unit or quantity strings, ``"300 MPa"``; ValueError naming the key for an
+    unknown input or a value outside its range: ``calibrate.fixed``), the
     law's ``law_params`` and, for the flexible rod, the flat's ``rate`` law (``"cowper-symonds"``
     or ``"johnson-cook"``, ``impactlab.contact.rate``). ``name`` defaults to
     ``law/friction[/flexible_rod][/rate]``."""
@@ -95,7 +98,7 @@ class CandidateModel:
     law: str = "ghaednia"
     friction: str = "coulomb"
     body: str | None = None
-    fixed: Mapping[str, float] = field(default_factory=dict)
+    fixed: Mapping[str, float | str] = field(default_factory=dict)
     law_params: Mapping[str, float] = field(default_factory=dict)
     name: str = ""
     rate: str | None = None
@@ -117,6 +120,7 @@ class CandidateModel:
             parts = [self.law, self.friction] + ([self.body] if self.body else [])
             parts += [self.rate] if self.rate else []
             object.__setattr__(self, "name", "/".join(parts))
+        object.__setattr__(self, "fixed", fixed_values(self.name, self.fixed))
 
     def unsupported(self, quantities: Sequence[str]) -> list[str]:
         """The measured ``quantities`` this model does not predict (the flexible drop defines

@@ -8,7 +8,8 @@ every drop. Its prior is one of
 - ``normal(mean, sd)`` or ``normal(mean, sd, low, high)`` (truncated to [low, high] and to the
   parameter's possible range),
 
-with values in the input's SI unit or as quantity strings (``"uniform(100 MPa, 1 GPa)"``).
+with values in the input's unit (SI; the Brinell hardness in kgf/mm^2, as the sweep stores it) or
+as quantity strings (``"uniform(100 MPa, 1 GPa)"``).
 scipy.stats gives the densities and draws.
 """
 
@@ -24,8 +25,8 @@ import numpy as np
 from scipy import stats
 
 from impactlab.calibrate.quantities import KINEMATICS, NUMERIC_INPUTS
+from impactlab.calibrate.values import did_you_mean, to_unit
 from impactlab.sweep.inputs import INPUTS
-from impactlab.units import to_si
 
 __all__ = ["PRIOR_KINDS", "Parameter", "parse_parameter"]
 
@@ -50,7 +51,8 @@ def possible_range(name: str) -> tuple[float, float]:
 
 @dataclass(frozen=True)
 class Parameter:
-    """One free parameter: its input ``name``, prior ``kind`` and the prior's numbers (SI):
+    """One free parameter: its input ``name``, prior ``kind`` and the prior's numbers (in the
+    input's ``unit``):
     ``low``/``high`` (uniform, loguniform; the truncation of normal) and ``mean``/``sd``
     (normal)."""
 
@@ -65,7 +67,8 @@ class Parameter:
         allowed = tuple(n for n in NUMERIC_INPUTS if n not in KINEMATICS)
         if self.name not in allowed:
             raise ValueError(
-                f"unknown free parameter {self.name!r}; a parameter is one of {', '.join(allowed)}"
+                f"unknown free parameter {self.name!r}{did_you_mean(self.name, allowed)}; a "
+                f"parameter is one of {', '.join(allowed)}"
             )
         if self.kind not in PRIOR_KINDS:
             raise ValueError(
@@ -108,7 +111,7 @@ class Parameter:
 
     @property
     def unit(self) -> str:
-        """The parameter's SI unit."""
+        """The parameter's unit: the input's (SI; a Brinell hardness in kgf/mm^2)."""
         return INPUTS[self.name].unit
 
     @cached_property
@@ -138,6 +141,10 @@ class Parameter:
         x = np.asarray(self._frozen.rvs(size=n, random_state=rng), dtype=np.float64)
         return np.clip(x, self.low, self.high)
 
+    def cdf(self, x: Any) -> np.ndarray:
+        """The prior's cumulative distribution at ``x``: its share of mass below ``x``."""
+        return np.asarray(self._frozen.cdf(np.asarray(x, dtype=np.float64)), dtype=np.float64)
+
     def quantile(self, q: Any) -> np.ndarray:
         """The prior's quantiles ``q`` in [0, 1]."""
         x = np.asarray(self._frozen.ppf(q), dtype=np.float64)
@@ -158,12 +165,12 @@ _SPEC = re.compile(r"^\s*([a-z]+)\s*\((.*)\)\s*$")
 def parse_parameter(name: str, spec: Any) -> Parameter:
     """A Parameter from a prior text, ``"uniform(100 MPa, 1 GPa)"``, or a mapping
     ``{"prior": "normal", "mean": ..., "sd": ..., "low": ..., "high": ...}``; bare numbers are
-    in the input's SI unit."""
+    in the input's unit (``Parameter.unit``)."""
     unit = INPUTS[name].unit if name in INPUTS else "1"
     if isinstance(spec, dict):
         kind = str(spec.get("prior", "uniform"))
         nums = {
-            k: to_si(v, unit, name=f"{name}.{k}")
+            k: to_unit(v, unit, name=f"{name}.{k}")
             for k, v in spec.items()
             if k in ("low", "high", "mean", "sd")
         }
@@ -180,7 +187,7 @@ def parse_parameter(name: str, spec: Any) -> Parameter:
     kind, args = m.group(1), [a.strip() for a in m.group(2).split(",") if a.strip()]
     if kind not in PRIOR_KINDS:
         raise ValueError(f"prior of {name}: unknown kind {kind!r}; known: {', '.join(PRIOR_KINDS)}")
-    values = [to_si(a, unit, name=name) for a in args]
+    values = [to_unit(a, unit, name=name) for a in args]
     if kind in ("uniform", "loguniform") and len(values) == 2:
         return Parameter(name, kind, low=values[0], high=values[1])
     if kind == "normal" and len(values) in (2, 4):

@@ -16,6 +16,7 @@ __all__ = [
     "MEASURABLE",
     "NUMERIC_INPUTS",
     "OUTPUT_ALIASES",
+    "PLAUSIBLE",
     "Measurable",
     "canonical_output",
 ]
@@ -85,6 +86,17 @@ MEASURABLE: dict[str, Measurable] = {
     )
 }
 
+#: The largest magnitude of a measured value (SI) that an impact of a drop test can have, and
+#: the unit to suggest: a larger one is a unit mistake (1400 um read as 1400 m, 50 ms as 50 s).
+#: A mark or a slip of 10 cm, a contact of 0.1 s are far beyond any impact of a dropped body;
+#: a dent is checked against the tip radius instead (``measurement_rows``).
+PLAUSIBLE: dict[str, tuple[float, str]] = {
+    **dict.fromkeys(
+        ("scar_length", "sliding_length", "sliding_distance", "contact_travel"), (0.1, "um")
+    ),
+    "duration": (0.1, "ms"),
+}
+
 #: The paper's symbols accepted as names of measured quantities (not L_s: see ``AMBIGUOUS``).
 OUTPUT_ALIASES: dict[str, str] = {
     "T": "duration",
@@ -105,8 +117,11 @@ AMBIGUOUS: dict[str, str] = dict.fromkeys(
 DROP_CATEGORIES: tuple[str, ...] = tuple(c for c in CATEGORY_INPUTS if c not in ("law", "friction"))
 #: Numeric inputs a drop may set (SI; unset: the preset's value or the input's default).
 NUMERIC_INPUTS: tuple[str, ...] = tuple(n for n, s in INPUTS.items() if s.kind == "float")
-#: Inputs that describe the drop's kinematics (never free parameters, except mu).
-KINEMATICS: tuple[str, ...] = tuple(k for k in KINEMATIC_INPUTS if k != "mu")
+#: Inputs that describe the drop's kinematics, the velocity as speed and incidence too (never
+#: free parameters or a model's fixed inputs, except mu).
+KINEMATICS: tuple[str, ...] = tuple(
+    k for k in (*KINEMATIC_INPUTS, "speed", "incidence") if k != "mu"
+)
 
 
 def canonical_output(name: str) -> str | None:

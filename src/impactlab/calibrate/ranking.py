@@ -4,28 +4,32 @@ log likelihoods by Pareto-smoothed importance sampling, and compared with ``arvi
 (stacking weights). Why a cross-validated score rather than the evidence: it asks how well a
 model predicts a drop it was not fitted to, it does not depend on the width of a uniform prior
 that the evidence penalises, and it comes from the same chain. With few drops its standard
-errors are large: ``dse`` says whether a difference means anything (about 2 dse or more)."""
+errors are large: ``dse`` says whether a difference means anything (about 2 dse or more); each
+row says whether its model is distinguishable from the best and whether its chain converged."""
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from typing import Any
 
 from impactlab.calibrate._arviz import az, quiet
 from impactlab.calibrate.result import ModelPosterior
 
-__all__ = ["rank_models"]
+__all__ = ["annotate", "distinguishable", "rank_models"]
 
 
 def rank_models(posteriors: Mapping[str, ModelPosterior]) -> list[dict[str, Any]]:
     """Rows best first: model, rank, elpd_loo, se, elpd_diff (to the best), dse (its standard
-    error), p_loo, weight (stacking), warning (Pareto k > 0.7 somewhere)."""
+    error), p_loo, weight (stacking), warning (Pareto k > 0.7 somewhere), pareto_k_max,
+    converged (the model's chain: ``ModelPosterior.converged``), distinguishable and note
+    (``annotate``)."""
     usable = {k: v for k, v in posteriors.items() if v.loo}
     if not usable:
         return []
     if len(usable) == 1:
         ((name, p),) = usable.items()
-        return [
+        rows = [
             {
                 "model": name,
                 "rank": 0,
@@ -38,6 +42,7 @@ def rank_models(posteriors: Mapping[str, ModelPosterior]) -> list[dict[str, Any]
                 "warning": bool(p.loo["n_bad_k"]),
             }
         ]
+        return annotate(rows, posteriors)
     with quiet():
         table = az.compare({k: v.idata() for k, v in usable.items()}, ic="loo")
     rows = []
@@ -55,4 +60,36 @@ def rank_models(posteriors: Mapping[str, ModelPosterior]) -> list[dict[str, Any]
                 "warning": bool(r["warning"]),
             }
         )
+    return annotate(rows, posteriors)
+
+
+#: A difference of elpd smaller than this many of its standard errors does not tell two
+#: models apart.
+DSE_MULTIPLE = 2.0
+NOT_DISTINGUISHABLE = "not distinguishable (elpd_diff < 2 dse)"
+NOT_CONVERGED = "not converged"
+
+
+def distinguishable(row: Mapping[str, Any]) -> bool:
+    """Whether a ranked model's elpd differs from the best's by at least DSE_MULTIPLE of its
+    standard error (a tie, elpd_diff 0, never does)."""
+    diff, dse = float(row["elpd_diff"]), float(row["dse"])
+    return diff > 0.0 and diff >= DSE_MULTIPLE * dse
+
+
+def annotate(
+    rows: list[dict[str, Any]], posteriors: Mapping[str, ModelPosterior]
+) -> list[dict[str, Any]]:
+    """``rows`` (best first) with pareto_k_max, converged, distinguishable (from the best; the
+    best's: from the runner-up; None for a single model) and note (what makes the row's place
+    unsure: ``NOT_DISTINGUISHABLE``, ``NOT_CONVERGED``, joined by "; ")."""
+    for i, r in enumerate(rows):
+        post = posteriors[r["model"]]
+        r["pareto_k_max"] = float(post.loo.get("pareto_k_max", math.nan))
+        r["converged"] = post.converged
+        other = rows[1] if i == 0 and len(rows) > 1 else r
+        r["distinguishable"] = None if len(rows) == 1 else distinguishable(other)
+        notes = [NOT_DISTINGUISHABLE] if r["distinguishable"] is False else []
+        notes += [] if post.converged else [NOT_CONVERGED]
+        r["note"] = "; ".join(notes)
     return rows

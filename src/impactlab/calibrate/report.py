@@ -7,6 +7,7 @@ import base64
 import html
 import io
 import json
+import math
 from pathlib import Path
 from typing import Any
 
@@ -43,6 +44,11 @@ def _table(header: list[str], rows: list[list[Any]]) -> str:
     return f"<table><tr>{head}</tr>{body}</table>"
 
 
+def _number(x: float, spec: str) -> str:
+    """A diagnostic's number, or "n/a" where it could not be assessed (NaN)."""
+    return "n/a" if math.isnan(x) else format(x, spec)
+
+
 def _value(name: str, unit: str, x: float) -> str:
     d = display_unit(name, unit)
     return format_number(x * d.scale, 4)
@@ -59,9 +65,9 @@ def _model_section(post: ModelPosterior) -> str:
                 _value(p.name, p.unit, s["median"]),
                 f"[{_value(p.name, p.unit, s['q05'])}, {_value(p.name, p.unit, s['q95'])}]",
                 _value(p.name, p.unit, post.best[p.name]),
-                f"{s['rhat']:.3f}",
-                f"{s['ess_bulk']:.0f}",
-                f"{s['tau']:.1f}",
+                _number(s["rhat"], ".3f"),
+                _number(s["ess_bulk"], ".0f"),
+                _number(s["tau"], ".1f"),
                 p.describe(),
             ]
         )
@@ -74,7 +80,7 @@ def _model_section(post: ModelPosterior) -> str:
             "best fit",
             "R-hat",
             "ESS",
-            "tau",
+            "tau [steps]",
             "prior",
         ],
         rows,
@@ -83,7 +89,8 @@ def _model_section(post: ModelPosterior) -> str:
     notes = "".join(f"<li class='warn'>{html.escape(w)}</li>" for w in post.warnings)
     return (
         f"<h3>{html.escape(post.model)}</h3>{params}"
-        f"<p>{post.evaluations} model evaluations; acceptance {post.acceptance:.2f}; "
+        f"<p>{'converged' if post.converged else 'not converged'}; "
+        f"{post.evaluations} model evaluations; acceptance {post.acceptance:.2f}; "
         f"{post.steps} steps ({post.burn} discarded); failed cases (likelihood zero): "
         f"{html.escape(fails)}</p>"
         + (f"<ul>{notes}</ul>" if notes else "")
@@ -95,7 +102,10 @@ def html_report(cal: Calibration, title: str = "impactlab calibration") -> str:
     """The report as one HTML document (figures embedded)."""
     m = cal.measurements
     rank = _table(
-        ["rank", "model", "elpd_loo", "se", "elpd_diff", "dse", "p_loo", "weight", "Pareto k"],
+        [
+            *("rank", "model", "elpd_loo", "se", "elpd_diff", "dse", "p_loo", "weight"),
+            *("Pareto k (max)", "converged", "note"),
+        ],
         [
             [
                 r["rank"] + 1,
@@ -106,7 +116,9 @@ def html_report(cal: Calibration, title: str = "impactlab calibration") -> str:
                 f"{r['dse']:.2f}",
                 f"{r['p_loo']:.2f}",
                 f"{r['weight']:.2f}",
-                "> 0.7" if r["warning"] else "ok",
+                f"{_number(r['pareto_k_max'], '.2f')}" + (" (> 0.7)" if r["warning"] else ""),
+                "yes" if r["converged"] else "no",
+                r["note"],
             ]
             for r in cal.ranking
         ],

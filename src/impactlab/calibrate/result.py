@@ -11,6 +11,7 @@ import emcee
 import numpy as np
 
 from impactlab.calibrate._arviz import az, quiet, recording
+from impactlab.calibrate.diagnostics import convergence_notes, misfit_text
 from impactlab.calibrate.posterior import LogPosterior
 from impactlab.calibrate.priors import Parameter
 from impactlab.calibrate.quantities import MEASURABLE
@@ -34,7 +35,11 @@ class ModelPosterior:
     ppc : one dict per measured value: drop, quantity, observed, sigma, best, median, q05, q95
         (the model's prediction) and pred_q05/q95 (with the measurement noise), z_best;
     failures : failed cases by reason; evaluations : cases run; acceptance : mean acceptance
-    fraction; warnings : what the diagnostics found (short R-hat, ESS, Pareto k, misfits).
+    fraction; steps, burn : the chain's steps used and discarded (a saved chain longer than
+    ``steps``, from an earlier run, is used up to ``steps``); warnings : what the diagnostics
+    found (R-hat, autocorrelation time, Pareto k, misfits, a prior's bound);
+    convergence : those of the warnings that say the chain has not converged or cannot tell
+    (``converged`` is True when there are none).
     """
 
     model: str
@@ -53,6 +58,12 @@ class ModelPosterior:
     steps: int
     burn: int
     warnings: list[str] = field(default_factory=list)
+    convergence: list[str] = field(default_factory=list)
+
+    @property
+    def converged(self) -> bool:
+        """True when the diagnostics found no convergence problem (``convergence``)."""
+        return not self.convergence
 
     @property
     def names(self) -> tuple[str, ...]:
@@ -87,6 +98,7 @@ class ModelPosterior:
             "acceptance": self.acceptance,
             "steps": self.steps,
             "burn": self.burn,
+            "converged": self.converged,
             "warnings": self.warnings,
         }
 
@@ -178,10 +190,12 @@ def summarise(
     seed: int,
     n_ppc: int = 200,
 ) -> ModelPosterior:
-    """The ModelPosterior of a finished chain (draws after ``burn`` steps)."""
-    chain = sampler.get_chain(discard=burn)  # (S, W, P)
-    blobs = np.asarray(sampler.get_blobs(discard=burn), dtype=np.float64)
-    logp = sampler.get_log_prob()
+    """The ModelPosterior of a finished chain: its first ``steps`` steps (a saved chain may
+    hold more, from an earlier longer run), draws after ``burn``."""
+    saved = sampler.iteration
+    chain = sampler.get_chain()[burn:steps]  # (S, W, P)
+    blobs = np.asarray(sampler.get_blobs(), dtype=np.float64)[burn:steps]
+    logp = sampler.get_log_prob()[:steps]
     blobs = blobs.reshape(chain.shape[0], chain.shape[1], -1)
     names = [p.name for p in post.params]
     chains = np.ascontiguousarray(chain.transpose(1, 0, 2))
@@ -207,24 +221,20 @@ def summarise(
             "tau": float(tau[j]),
         }
     i_best = np.unravel_index(np.argmax(logp), logp.shape)
-    best = sampler.get_chain()[i_best]
+    best = sampler.get_chain()[:steps][i_best]
     with quiet():
         idata = az.from_dict(log_likelihood={"drops": log_lik})
         idata.add_groups(posterior=post_idata.posterior)
     loo, notes = _loo(idata)
-    for n, s in summary.items():
-        if s["rhat"] > 1.05:
-            notes.append(f"{n}: R-hat {s['rhat']:.3f} > 1.05 (run more steps)")
-        if s["tau"] * 50 > steps:
-            notes.append(f"{n}: chain shorter than 50 autocorrelation times ({s['tau']:.0f})")
+    unconverged = convergence_notes(summary, steps)
+    notes += unconverged
+    if saved > steps:
+        notes.append(
+            f"the saved chain holds {saved} steps; the first {steps} are used (steps = {steps})"
+        )
     rng = np.random.default_rng(seed + 1)
     ppc = _ppc(post, samples, best, rng, n_ppc)
-    for r in ppc:
-        if abs(r["z_best"]) > 5:
-            notes.append(
-                f"{r['drop']} {r['quantity']}: best fit {r['best']:.4g} is "
-                f"{r['z_best']:+.1f} sigma from the measured {r['observed']:.4g}"
-            )
+    notes += [misfit_text(r) for r in ppc if abs(r["z_best"]) > 5]
     return ModelPosterior(
         model=post.model.name,
         params=tuple(post.params),
@@ -242,4 +252,5 @@ def summarise(
         steps=steps,
         burn=burn,
         warnings=notes,
+        convergence=unconverged,
     )

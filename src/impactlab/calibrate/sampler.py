@@ -7,7 +7,9 @@ pointwise log likelihoods it stores (``impactlab.calibrate.ranking``), so no evi
 (nested sampling) is needed.
 
 With ``state`` (a file path) the chain is kept in emcee's HDF5 backend: an interrupted run
-continues from its last step when called again with the same inputs.
+continues from its last step when called again with the same inputs. Ctrl-C raises
+``CalibrationInterrupted`` (the step reached, and whether it was saved); a chain file another
+program holds open is a ``StateInUse`` error, never HDF5's traceback.
 """
 
 from __future__ import annotations
@@ -22,6 +24,7 @@ import emcee
 import numpy as np
 
 from impactlab.calibrate.posterior import LogPosterior, initial_walkers
+from impactlab.calibrate.statelock import CalibrationInterrupted, chain_in_use
 
 __all__ = ["ProgressFn", "run_chain"]
 
@@ -61,6 +64,8 @@ def _backend(state: Path | None, key: str, restart: bool) -> tuple[Any, bool]:
                 same = f["chain"].attrs.get("impactlab_fingerprint") == key
             if same and backend.iteration > 0:
                 return backend, True
+        except BlockingIOError as exc:  # HDF5's lock: another program has the file open
+            raise chain_in_use(state, exc, 0) from None
         except (OSError, KeyError):
             pass
     if state.exists():
@@ -83,6 +88,9 @@ def run_chain(
     key = fingerprint(post, walkers, seed)
     backend, resumed = _backend(state, key, restart)
     sampler = emcee.EnsembleSampler(walkers, ndim, post, vectorize=True, backend=backend)
+    # the log posterior itself, not emcee's wrapper: that prints a traceback of any exception
+    # (Ctrl-C included) before passing it on
+    sampler.log_prob_fn = post
     if resumed:
         done = backend.iteration
         start: Any = backend.get_last_sample()  # with its random state
@@ -101,8 +109,18 @@ def run_chain(
     # -inf log probabilities of refusals: numpy's floating-point state, which is per thread
     # (warnings.catch_warnings is process-wide: chains on a threaded Dask worker undid each
     # other's filters, and ArviZ's advisories reached the user)
-    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        for i, _ in enumerate(sampler.sample(start, iterations=max(steps - done, 0)), done + 1):
-            if progress is not None and (i % every == 0 or i == steps):
-                progress(post.model.name, i, steps)
+    try:
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+            chain = sampler.sample(start, iterations=max(steps - done, 0))
+            for i, _ in enumerate(chain, done + 1):
+                if progress is not None and (i % every == 0 or i == steps):
+                    progress(post.model.name, i, steps)
+    except KeyboardInterrupt:
+        raise CalibrationInterrupted(
+            post.model.name, backend.iteration, steps, state is not None
+        ) from None
+    except BlockingIOError as exc:
+        if state is None:  # only the HDF5 backend locks a file
+            raise
+        raise chain_in_use(state, exc, backend.iteration) from None
     return sampler

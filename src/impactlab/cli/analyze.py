@@ -70,9 +70,13 @@ def _geometry_from(spec: str | None, rod_data: dict[str, Any]) -> MarkerGeometry
                 '(units = "mm", M1 = [x, y, z], ...)'
             )
         return None
+    where = f"--geometry {spec!r}" if spec is not None else "the [markers] table of --rod"
     if not isinstance(table, dict):
-        raise UserError('[markers] must be a table (units = "mm", M1 = [x, y, z], ...)')
-    return MarkerGeometry.from_mapping(table)
+        raise UserError(f'{where}: [markers] must be a table (units = "mm", M1 = [x, y, z], ...)')
+    try:
+        return MarkerGeometry.from_mapping(table)
+    except (TypeError, ValueError) as exc:
+        raise UserError(f"{where}: {exc}") from None
 
 
 def analyze_cmd(
@@ -106,7 +110,11 @@ def analyze_cmd(
         "('0, 0.98, 0.17': a camera tilted from the vertical).",
     ),
     marker_units: str | None = typer.Option(
-        None, "--marker-units", help="Length unit of the marker coordinates when the file has none."
+        None,
+        "--marker-units",
+        help="Length unit of the marker coordinates ('mm'): needed for a CSV file without a "
+        "'# units:' line, which it must agree with otherwise; for a C3D file it replaces the "
+        "POINT:UNITS parameter (a file that states a wrong unit).",
     ),
     pixel_size: str | None = typer.Option(
         None,

@@ -6,14 +6,17 @@ impactlab calibrate DROPS.csv|DROPS.toml --param "mu=uniform(0, 0.6)" [--param .
                     [--scheduler tcp://host:port]
 
 With ``--out DIR`` the chains are kept in DIR/state (an interrupted run continues where it
-stopped when run again with the same inputs) and results.json and report.html are written there.
+stopped when run again with the same inputs; one run at a time uses DIR) and results.json and
+report.html are written there. Ctrl-C stops with one line naming the step reached.
 """
 
 from __future__ import annotations
 
 import json
+import math
+import sys
 from pathlib import Path
-from typing import Annotated, Any
+from typing import Annotated, Any, NoReturn
 
 import typer
 
@@ -39,6 +42,11 @@ def _parameters(specs: list[str]) -> dict[str, str]:
         name, sep, prior = s.partition("=")
         if not sep or not name.strip():
             raise UserError(f"--param {s!r}: expected name=prior, e.g. 'mu=uniform(0, 0.6)'")
+        if name.strip() in out:
+            raise UserError(
+                f"--param {name.strip()} is given twice ({out[name.strip()]!r} and "
+                f"{prior.strip()!r}); give each parameter once"
+            )
         out[name.strip()] = prior.strip()
     return out
 
@@ -71,19 +79,28 @@ def _progress(quiet: bool) -> tuple[Any, Any]:
     return report, bar
 
 
+def _diag(x: float, spec: str) -> str:
+    """A diagnostic's number, or "n/a" where it could not be assessed (NaN)."""
+    return "n/a" if math.isnan(x) else format(x, spec)
+
+
 def _print(cal: Any) -> None:
     from rich.table import Table
     from rich.text import Text
 
     t = Table(title=Text("models ranked by PSIS-LOO (leave one drop out)"), header_style="bold")
-    for col in ("rank", "model", "elpd_loo", "se", "elpd_diff", "dse", "weight"):
-        t.add_column(col, justify="left" if col == "model" else "right")
+    cols = ("rank", "model", "elpd_loo", "se", "elpd_diff", "dse", "weight", "Pareto k",
+            "converged", "note")  # fmt: skip
+    for col in cols:
+        t.add_column(col, justify="left" if col in ("model", "note") else "right")
     for r in cal.ranking:
         t.add_row(
             str(r["rank"] + 1), Text(r["model"]), f"{r['elpd_loo']:.2f}", f"{r['se']:.2f}",
             f"{r['elpd_diff']:.2f}", f"{r['dse']:.2f}", f"{r['weight']:.2f}",
+            _diag(r["pareto_k_max"], ".2f"), "yes" if r["converged"] else "no", Text(r["note"]),
         )  # fmt: skip
     console.print(t)
+    shown = set(cal.warnings)  # printed as warnings already
     for name, post in cal.posteriors.items():
         p = Table(title=Text(name), header_style="bold")
         for col in ("parameter", "median", "90 % interval", "best", "unit", "R-hat", "ESS"):
@@ -96,7 +113,8 @@ def _print(cal: Any) -> None:
 
             p.add_row(
                 Text(par.name), f(s["median"]), f"[{f(s['q05'])}, {f(s['q95'])}]",
-                f(post.best[par.name]), Text(d.unit), f"{s['rhat']:.3f}", f"{s['ess_bulk']:.0f}",
+                f(post.best[par.name]), Text(d.unit), _diag(s["rhat"], ".3f"),
+                _diag(s["ess_bulk"], ".0f"),
             )  # fmt: skip
         console.print(p)
         fails = sum(post.failures.values())
@@ -107,7 +125,8 @@ def _print(cal: Any) -> None:
             )
         )
         for w in post.warnings:
-            console.print(Text(f"  note: {w}"))
+            if f"{name}: {w}" not in shown:
+                console.print(Text(f"  note: {w}"))
 
 
 def calibrate_cmd(
@@ -138,6 +157,7 @@ def calibrate_cmd(
     from impactlab.calibrate import calibrate
     from impactlab.calibrate.config import load_config
     from impactlab.calibrate.report import save
+    from impactlab.calibrate.statelock import StateInUseError
 
     kw: dict[str, Any] = load_config(config) if config is not None else {}
     if measurements is not None:
@@ -153,15 +173,23 @@ def calibrate_cmd(
         kw["models"] = model
     sampler = {"walkers": walkers, "steps": steps, "burn": burn, "seed": seed}
     kw.update({k: v for k, v in sampler.items() if v is not None})
+    kw.update(_run_options(seed, out, restart))
     if scheduler is not None:
         kw["scheduler"] = scheduler
         quiet = True  # the workers cannot report progress here
-    if out is not None:
-        kw["state_dir"] = out / "state"
-        kw["restart"] = restart
     report, bar = _progress(quiet)
     try:
         cal = calibrate(progress=report, **kw)
+    except StateInUseError as exc:
+        if out is None or exc.folder != out / "state":
+            raise
+        raise UserError(
+            f"another calibration is using {out}: wait for it to end or choose another --out"
+            if "another calibration" in str(exc)
+            else str(exc)
+        ) from None
+    except KeyboardInterrupt as exc:
+        _interrupted(exc, bar, out)
     finally:
         if bar is not None and bar.live.is_started:  # stop() prints a line on its own
             bar.stop()
@@ -176,6 +204,38 @@ def calibrate_cmd(
     _print(cal)
     for k, v in files.items():
         console.print(f"{k}: {v}")
+
+
+def _run_options(seed: int | None, out: Path | None, restart: bool) -> dict[str, Any]:
+    """``state_dir`` and ``restart`` of ``--out``/``--restart``; UserError naming the option
+    for a seed outside [0, 2^32), ``--restart`` without ``--out``, an ``--out`` that is a file."""
+    from impactlab.calibrate.input_checks import MAX_SEED
+
+    if seed is not None and not 0 <= seed <= MAX_SEED:
+        raise UserError(f"--seed must be an integer in [0, {MAX_SEED}], got {seed}")
+    if restart and out is None:
+        raise UserError("--restart discards the chains saved in --out: give --out DIR too")
+    if out is None:
+        return {}
+    if out.exists() and not out.is_dir():
+        raise UserError(f"--out {str(out)!r} is a file; give a folder")
+    return {"state_dir": out / "state", "restart": restart}
+
+
+def _interrupted(exc: KeyboardInterrupt, bar: Any, out: Path | None) -> NoReturn:
+    """Ctrl-C: one line on stderr (the step reached; how to resume), exit status 130."""
+    from impactlab.calibrate.statelock import CalibrationInterrupted
+
+    if bar is not None and bar.live.is_started:
+        bar.stop()
+    if isinstance(exc, CalibrationInterrupted):
+        text = str(exc)
+    elif out is not None:
+        text = "interrupted; run the same command again to resume (the chains are in --out)"
+    else:
+        text = "interrupted (nothing was saved: give --out DIR to resume later)"
+    print(text, file=sys.stderr)
+    raise typer.Exit(130)
 
 
 def _as_param(name: str, prior: str) -> Any:

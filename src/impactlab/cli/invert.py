@@ -1,12 +1,15 @@
 """``impactlab invert``: impact duration and mean force from a measured dent (paper Eqs. 12, 29).
 
 Inputs merge as case < file < command line. Dimensional values carry their unit ("22 um"); an
-angle without a unit is refused (20 could be degrees or radians).
+angle without a unit is refused (20 could be degrees or radians). A bare ``--sigma-*`` number is
+in the unit its value was given in on the command line (``--ls "1400 um" --sigma-ls 50``: 50 um),
+and is refused when the value comes from ``--case`` or ``--file``.
 """
 
 from __future__ import annotations
 
 import json
+import re
 import warnings
 from pathlib import Path
 from typing import Any
@@ -46,6 +49,12 @@ _ALIAS = {k: name for name, (_, keys, _) in _FIELDS.items() for k in keys}
 _ARGUMENTS = {"L_s": "sliding_length"}
 #: the other keys of a measurement file
 _EXTRA = ("case", "gravity", "samples", "seed")
+#: a number and what follows it (its unit) in a command-line value
+_NUMBER_AND_UNIT = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?\s*(.*)")
+#: a unit to show in the example of an error about a bare sigma
+_EXAMPLE_UNITS = {"v_i": "m/s", "delta_p": "um", "L_s": "um", "dv_cy": "m/s"}
+#: a sigma with its unit, for the help
+_EXAMPLE_SIGMAS = {"v_i": "0.01 m/s", "delta_p": "0.5 um", "L_s": "50 um", "dv_cy": "0.005 m/s"}
 #: the inputs that T needs (F needs e or dv_cy besides)
 _REQUIRED = ("angle", "v_i", "mu", "delta_p", "L_s")
 
@@ -63,6 +72,42 @@ def _parse(value: Any, unit: str, name: str) -> float:
     if isinstance(value, bool) or not isinstance(value, int | float):
         raise UserError(f"{name} must be a number, got {value!r}")
     return float(value)
+
+
+def _unit_text(value: Any) -> str | None:
+    """The unit written after the number of a command-line value ("1400 um" -> "um"); None for
+    a bare number (or a value that is not text)."""
+    if not isinstance(value, str):
+        return None
+    m = _NUMBER_AND_UNIT.fullmatch(value.strip())
+    unit = m.group(1).strip() if m is not None else ""
+    return unit or None
+
+
+def _is_bare(value: Any) -> bool:
+    try:
+        float(str(value).strip())
+    except ValueError:
+        return False
+    return True
+
+
+def _parse_sigma(name: str, sigma: Any, value: Any) -> float:
+    """A command-line ``--sigma-*`` in SI: with its unit, or a bare number in the unit its value
+    was given in on the command line (SI for a bare value); a bare sigma of a dimensional input
+    whose value comes from --case or --file is refused (its unit would be a guess). An angle's
+    sigma needs its unit, as the angle."""
+    unit, _, flag = _FIELDS[name]
+    option = "--sigma-" + flag[2:]
+    if not unit or unit == "degree" or not _is_bare(sigma):
+        return _parse(sigma, unit, option)
+    if value is None:
+        raise UserError(
+            f"{option} {str(sigma).strip()} has no unit and {flag} comes from --case or --file: "
+            f"give its unit, e.g. {option} '{str(sigma).strip()} {_EXAMPLE_UNITS[name]}'"
+        )
+    given = _unit_text(value)
+    return _parse(f"{str(sigma).strip()} {given}" if given else sigma, unit, option)
 
 
 def _measured(
@@ -150,9 +195,7 @@ def run_invert(
     cli_s = {k: val for k, val in (sigmas or {}).items() if val is not None}
     _check_complete(set(v) | set(cli_v), set(s) | set(cli_s))
     v.update({k: _parse(val, _FIELDS[k][0], _FIELDS[k][2]) for k, val in cli_v.items()})
-    s.update(
-        {k: _parse(val, _FIELDS[k][0], "--sigma-" + _FIELDS[k][2][2:]) for k, val in cli_s.items()}
-    )
+    s.update({k: _parse_sigma(k, val, cli_v.get(k)) for k, val in cli_s.items()})
     r.update(parse_rod_table({k: val for k, val in (rod or {}).items() if val is not None}, "--"))
     kwargs: dict[str, Any] = {_ARGUMENTS.get(k, k): (val, s.get(k, 0.0)) for k, val in v.items()}
     result = invert(
@@ -194,13 +237,27 @@ _HELP = {
 }
 
 
+def _sigma_help(name: str) -> str:
+    """The help of ``--sigma-*``: how its unit is read (``_parse_sigma``)."""
+    unit, _, flag = _FIELDS[name]
+    if not unit:
+        return f"Std. dev. of {flag} (default 0)."
+    if unit == "degree":
+        return f"Std. dev. of {flag} with its unit ('0.5 deg'; a bare number is refused)."
+    ex = _EXAMPLE_UNITS[name]
+    return (
+        f"Std. dev. of {flag}, e.g. '{_EXAMPLE_SIGMAS[name]}' (default 0). A bare number is in "
+        "the unit of "
+        f"{flag} as given on the command line ('... {ex}': {ex}; a bare {flag}: {unit}); with "
+        f"{flag} from --case or --file it needs its unit."
+    )
+
+
 def _measured_option(name: str, *, sigma: bool = False) -> Any:
     """The option of a measured input (``--vi``), or of its standard deviation (``--sigma-vi``)."""
     flag = _FIELDS[name][2]
     if sigma:
-        return typer.Option(
-            None, "--sigma-" + flag[2:], help=f"Std. dev. of {flag}, same unit (default 0)."
-        )
+        return typer.Option(None, "--sigma-" + flag[2:], help=_sigma_help(name))
     return typer.Option(None, flag, help=_HELP[name])
 
 

@@ -8,38 +8,47 @@ never lost; an invalid argument raises a TypeError or ValueError naming it at on
    make it (:func:`~impactlab.experiment.profilometry.plausibility.check_dent`);
 3. ``inversion``: T and F from both (``impactlab.analytic.invert``: paper Eq. 12 with the
    measured e, mu, v_i, angle, delta_p, L_s; F from Eq. 29 with the measured centre-of-mass
-   velocity change);
+   velocity change); an impact that sticks within the measurement's uncertainty (mu within a
+   few sigma of mu_c, or no tangential exit velocity of the tip: ``experiment.sticking``) is
+   this stage's error instead;
 4. ``model`` (optional, with ``flat``): the impact engine run with the measured initial state, for
    comparison (the paper's Tables 2-3); then a warning for an inferred T or F far from the
    simulated impact's, or a T longer than the marker fits allow (``experiment.consistency``);
-5. ``figures`` and ``results.json`` in ``out_dir``.
+5. ``figures`` and ``results`` (``results.json``) in ``out_dir``, figures an earlier run
+   left there removed (``experiment.saving``); a file that cannot be written is the stage's
+   error, naming it.
 """
 
 from __future__ import annotations
 
-import inspect
 import threading
 import warnings
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 from impactlab import analytic
-from impactlab._mpl import pyplot
 from impactlab._validation import ImplausibleInputWarning
-from impactlab.bodies import PAPER_ROD, Rod
+from impactlab.bodies import Rod
 from impactlab.dynamics import simulate
-from impactlab.experiment.checks import check_instance, check_options, check_path, output_folder
+from impactlab.experiment.arguments import (
+    KINEMATICS_DEFAULTS,
+    check_scalars,
+    checked_run,
+    default_rod,
+    rod_properties,
+)
+from impactlab.experiment.arguments import dent_options as _dent_options
+from impactlab.experiment.arguments import kinematics_options as _kinematics_options
 from impactlab.experiment.consistency import check_against_model, check_single_impact
 from impactlab.experiment.kinematics import ImpactKinematics, measure_impact, parse_up
 from impactlab.experiment.markers import read_markers
-from impactlab.experiment.plots import plot_dent, plot_kinematics
 from impactlab.experiment.profilometry import DentMetrics, measure_dent, read_scan
-from impactlab.experiment.profilometry.heightmap import pixel_pair
 from impactlab.experiment.profilometry.plausibility import PLAUSIBLE_DEPTH, check_dent
 from impactlab.experiment.result import ExperimentResult
 from impactlab.experiment.rigid import MarkerGeometry
-from impactlab.materials import Material, get_material
+from impactlab.experiment.saving import remove_stale_figures, save_results, write_figures
+from impactlab.experiment.sticking import sticking_message
+from impactlab.materials import Material
 
 __all__ = ["ExperimentResult", "analyze", "default_rod", "rod_properties"]
 
@@ -50,51 +59,8 @@ _DATA_ERRORS = (ValueError, OSError)
 _RECORDING = threading.Lock()
 
 
-def _is_paper(rod: Any) -> bool:
-    """True for no rod or the name ``"paper"`` (any case): the paper's rod."""
-    return rod is None or (isinstance(rod, str) and rod.strip().lower() == "paper")
-
-
-def default_rod() -> Rod:
-    """The paper's rod: ``impactlab.bodies.PAPER_ROD`` (L = 0.3048 m, R = 8.8 mm, m = 0.4607 kg,
-    I_C = m L^2 / 12)."""
-    return PAPER_ROD
-
-
-def rod_properties(rod: Any) -> Rod:
-    """The rod as an ``impactlab.bodies.Rod`` (mass, length, tip_radius, inertia): a Rod itself,
-    or a rod-like object with ``mass``, ``tip_radius``, a length (``L``, ``length`` or
-    ``half_length``) and optionally ``inertia``. ValueError naming ``rod`` otherwise."""
-    if isinstance(rod, Rod):
-        return rod
-    if hasattr(rod, "length"):
-        length = float(rod.length)
-    elif hasattr(rod, "L"):
-        length = float(rod.L)
-    elif hasattr(rod, "half_length"):
-        length = 2.0 * float(rod.half_length)
-    else:
-        raise ValueError(f"rod must have a length (L or length), got {rod!r}")
-    try:
-        return Rod(
-            length=length,
-            tip_radius=float(rod.tip_radius),
-            mass=float(rod.mass),
-            inertia=getattr(rod, "inertia", None),
-        )
-    except AttributeError as exc:
-        raise ValueError(f"rod must have mass and tip_radius: {exc}") from None
-
-
 def _message(exc: BaseException) -> str:
     return str(exc)
-
-
-def _flat_material(flat: Any) -> Material:
-    try:
-        return flat if isinstance(flat, Material) else get_material(str(flat))
-    except ValueError as exc:
-        raise ValueError(f"flat: {exc}") from None
 
 
 def _markers_stage(res: ExperimentResult, path: Path, rod: Rod, opts: dict[str, Any]) -> None:
@@ -135,6 +101,10 @@ def _inversion_stage(
     gravity: bool,
     n_samples: int,
 ) -> None:
+    stuck = sticking_message(k, rod)
+    if stuck is not None:
+        res.errors["inversion"] = stuck
+        return
     with _RECORDING, warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         try:
@@ -187,7 +157,7 @@ def _model_stage(res: ExperimentResult, rod: Rod, flat: Material, law: str) -> N
 
 
 #: The marker fits' default guard (frames left out on each side of the impact instant).
-_GUARD = int(inspect.signature(measure_impact).parameters["guard"].default)
+_GUARD = int(KINEMATICS_DEFAULTS["guard"])
 
 
 def _plausibility_stage(res: ExperimentResult, guard: int) -> None:
@@ -211,84 +181,6 @@ def _plausibility_stage(res: ExperimentResult, guard: int) -> None:
         single = check_single_impact(inv.duration, gap, guard)
         found += [single] if single else []
     res.warnings += [f"plausibility: {w}" for w in found]
-
-
-def _figures_stage(res: ExperimentResult, out: Path) -> None:
-    plt = pyplot()
-    try:
-        if res.kinematics is not None:
-            p = out / "kinematics.png"
-            plt.close(plot_kinematics(res.kinematics, p))
-            res.figures["kinematics"] = str(p)
-        if res.dent is not None:
-            p = out / "dent.png"
-            plt.close(plot_dent(res.dent, p))
-            res.figures["dent"] = str(p)
-    except OSError as exc:
-        res.errors["figures"] = _message(exc)
-
-
-def _check_scalars(n_samples: Any, law: Any, **switches: Any) -> None:
-    if isinstance(n_samples, bool) or not isinstance(n_samples, int) or n_samples < 100:
-        raise ValueError(f"n_samples must be an integer >= 100, got {n_samples!r}")
-    if not isinstance(law, str):
-        raise TypeError(f"law must be a contact law's name such as 'ghaednia', got {law!r}")
-    for name, value in switches.items():
-        if not isinstance(value, bool):
-            raise TypeError(f"{name} must be True or False, got {type(value).__name__} {value!r}")
-
-
-@dataclass(frozen=True)
-class _Run:
-    """The checked arguments of :func:`analyze`."""
-
-    markers: Path | None
-    scan: Path | None
-    rod: Rod
-    flat: Material | None
-    out: Path | None
-    kinematics: dict[str, Any]
-    dent: dict[str, Any]
-    names: tuple[str | None, str | None]
-
-    def result(self) -> ExperimentResult:
-        """An empty result for these files and this rod."""
-        rod = {k: float(getattr(self.rod, k)) for k in ("mass", "length", "tip_radius", "inertia")}
-        return ExperimentResult(*self.names, rod=rod)
-
-
-def _checked(
-    markers_path: Any,
-    scan_path: Any,
-    rod: Any,
-    flat: Any,
-    out_dir: Any,
-    kinematics: dict[str, Any],
-    dent: dict[str, Any],
-) -> _Run:
-    """Every argument checked before any work: one TypeError/ValueError naming the parameter."""
-    geometry = kinematics["geometry"]
-    if geometry is not None:
-        check_instance(geometry, MarkerGeometry, "geometry", "e.g. MarkerGeometry.from_mapping()")
-    if dent["pixel_size"] is not None:
-        pixel_pair(dent["pixel_size"])  # ValueError naming pixel_size
-    names = {"marker_units": kinematics["marker_units"], "height_unit": dent["height_unit"]}
-    for name, opt in names.items():
-        if opt is not None and not isinstance(opt, str):
-            raise TypeError(f"{name} must be a unit name such as 'mm' or None, got {opt!r}")
-    return _Run(
-        None if markers_path is None else check_path(markers_path, "markers_path"),
-        None if scan_path is None else check_path(scan_path, "scan_path"),
-        rod_properties(default_rod() if _is_paper(rod) else rod),
-        None if flat is None else _flat_material(flat),
-        None if out_dir is None else output_folder(out_dir, "out_dir"),
-        kinematics,
-        dent,
-        (
-            None if markers_path is None else str(markers_path),
-            None if scan_path is None else str(scan_path),
-        ),
-    )
 
 
 def analyze(
@@ -328,30 +220,33 @@ def analyze(
     flip_heights : the scan stores depths as positive heights: read it the other way up (a
         sign-flipped scan is refused otherwise, see :func:`measure_dent`).
     out_dir : save results.json and the figures (dent.png, kinematics.png) there (a folder,
-        created; an existing file there is refused).
+        created; an existing file there is refused); a figure of an earlier run that this run
+        does not draw is removed (a warning says so).
     gravity : passed to ``invert`` (gravity during the contact in Eq. 12; the measured velocity
         change already excludes the gravity impulse, see docs/experiment.md).
     n_samples : Monte Carlo samples of the inversion (>= 100). strict : raise
         :class:`ExperimentError` after saving if a stage failed (default: ``result.errors``).
     kinematics_options, dent_options : extra keywords for :func:`measure_impact` and
-        :func:`measure_dent`. law : contact law of the engine comparison.
+        :func:`measure_dent` (names, and the values of the kinematics' options, checked at
+        once). law : contact law of the engine comparison (checked even without ``flat``).
 
-    A stage that fails on its data (a bad file, a failed fit, an inversion outside its range, a
-    dent the rod cannot make: :func:`check_dent`) is recorded in ``result.errors``; an invalid
+    A stage that fails on its data (a bad file, a failed fit, a sticking impact, an inversion
+    outside its range, a dent the rod cannot make: :func:`check_dent`, a file that cannot be
+    written) is recorded in ``result.errors``; an invalid
     argument raises TypeError or ValueError naming it at once.
     """
     switches = {"flip_heights": flip_heights, "figures": figures, "gravity": gravity}
-    _check_scalars(n_samples, law, strict=strict, **switches)
-    run = _checked(
+    check_scalars(n_samples, law, strict=strict, **switches)
+    run = checked_run(
         markers_path,
         scan_path,
         rod,
         flat,
         out_dir,
         {"marker_units": marker_units, "geometry": geometry, "up": parse_up(up)}
-        | check_options(kinematics_options, measure_impact, "kinematics_options"),
+        | _kinematics_options(kinematics_options),
         {"pixel_size": pixel_size, "height_unit": height_unit, "flip_heights": flip_heights}
-        | check_options(dent_options, measure_dent, "dent_options"),
+        | _dent_options(dent_options),
     )
     res = run.result()
     if run.markers is not None:
@@ -365,8 +260,9 @@ def analyze(
     _plausibility_stage(res, int(run.kinematics.get("guard", _GUARD)))
     if run.out is not None:
         if figures:
-            _figures_stage(res, run.out)
-        res.save(run.out)
+            write_figures(res, run.out)
+        remove_stale_figures(res, run.out)
+        save_results(res, run.out)
     if strict:
         res.raise_for_errors()
     return res

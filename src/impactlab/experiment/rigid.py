@@ -60,7 +60,10 @@ def _kabsch_batch(
     cb = points.mean(axis=1)  # (n, 3)
     A = reference - ca
     B = points - cb[:, None, :]
-    H = np.einsum("ki,nkj->nij", A, B)
+    with np.errstate(over="ignore", invalid="ignore"):
+        H = np.einsum("ki,nkj->nij", A, B)
+    absurd = ~np.all(np.isfinite(H), axis=(1, 2))  # coordinates too large to square
+    H[absurd] = np.eye(3)
     U, _, Vt = np.linalg.svd(H)
     V = np.transpose(Vt, (0, 2, 1))
     UT = np.transpose(U, (0, 2, 1))
@@ -74,7 +77,9 @@ def _kabsch_batch(
     t = cb - np.einsum("nij,j->ni", R, ca)
     fitted = np.einsum("nij,kj->nki", R, reference) + t[:, None, :]
     res = points - fitted
-    rms = np.sqrt(np.mean(np.sum(res * res, axis=2), axis=1))
+    with np.errstate(over="ignore", invalid="ignore"):
+        rms = np.sqrt(np.mean(np.sum(res * res, axis=2), axis=1))
+    rms[absurd | ~np.isfinite(rms)] = np.inf
     return R, t, rms
 
 
@@ -134,7 +139,7 @@ def fit_poses(tracks: MarkerTracks, reference: np.ndarray) -> Poses:
     if full.any():
         Rf, tf, rf = _kabsch_batch(ref, tracks.positions[full])
         R[full], t[full], rms[full] = Rf, tf, rf
-        ok[full] = True
+        ok[full] = np.isfinite(rf)  # coordinates too large for a fit give no pose
     for k in np.flatnonzero(~full & (valid.sum(axis=1) >= 3)):
         sel = valid[k]
         sub = ref[sel]
@@ -142,8 +147,10 @@ def fit_poses(tracks: MarkerTracks, reference: np.ndarray) -> Poses:
         s = np.linalg.svd(c, compute_uv=False)
         if s[1] < 1e-3 * s[0]:
             continue  # the visible markers are collinear: no pose this frame
-        R[k], t[k], rms[k] = kabsch(sub, tracks.positions[k, sel])
-        ok[k] = True
+        Rk, tk, rk = _kabsch_batch(sub, tracks.positions[k, sel][None])
+        R[k], t[k], rms[k] = Rk[0], tk[0], rk[0]
+        ok[k] = bool(np.isfinite(rk[0]))
+    R[~ok], t[~ok] = np.nan, np.nan
     return Poses(tracks.time, R, t, rms, ok, ref)
 
 
@@ -153,11 +160,32 @@ def never_seen(tracks: MarkerTracks) -> str:
     return f" (never seen: {gone})" if gone else ""
 
 
+#: A frame whose Kabsch residual exceeds this many times the median residual of the record (and
+#: ``OUTLIER_FLOOR`` of the cluster's size) is left out of the reference cluster.
+OUTLIER_FACTOR = 5.0
+OUTLIER_FLOOR = 1e-3
+
+
+def _plausible_frames(pts: np.ndarray) -> np.ndarray:
+    """(n,) True for the frames whose inter-marker distances all lie within 10 times the
+    cluster's size of their medians over the record (others hold garbage coordinates)."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        d = np.linalg.norm(pts[:, :, None, :] - pts[:, None, :, :], axis=3)
+        med = np.median(d, axis=0)
+        off = np.max(np.abs(d - med), axis=(1, 2))
+    return np.isfinite(off) & (off <= 10.0 * max(float(med.max()), 1e-12))
+
+
 def reference_cluster(
     tracks: MarkerTracks, *, iterations: int = 3, max_frames: int = 400
 ) -> np.ndarray:
     """The marker cluster's shape (m, 3) [m], centred on its centroid, as the Procrustes mean of
-    the frames in which every marker is seen (generalised Procrustes analysis, a few passes)."""
+    the frames in which every marker is seen (generalised Procrustes analysis, a few passes).
+
+    Robust to a few wrong samples (a marker glitch, labels swapped for some frames, garbage
+    coordinates): the first estimate is the frame whose inter-marker distances lie nearest
+    their medians, and frames whose residual exceeds ``OUTLIER_FACTOR`` times the median one
+    are left out of the mean."""
     full = np.flatnonzero(np.all(tracks.valid, axis=1))
     if full.size == 0:
         raise MarkerError(
@@ -168,11 +196,17 @@ def reference_cluster(
     if full.size > max_frames:
         full = full[np.linspace(0, full.size - 1, max_frames).astype(int)]
     pts = tracks.positions[full]
-    ref = pts[0] - pts[0].mean(axis=0)
+    sane = _plausible_frames(pts)
+    pts = pts[sane] if sane.any() else pts
+    d = np.linalg.norm(pts[:, :, None, :] - pts[:, None, :, :], axis=3)
+    start = int(np.argmin(np.max(np.abs(d - np.median(d, axis=0)), axis=(1, 2))))
+    ref = pts[start] - pts[start].mean(axis=0)
     _check_not_collinear(ref, tracks.source or "marker tracks")
+    size = float(np.sqrt(np.mean(np.sum(ref * ref, axis=1))))
     for _ in range(max(1, iterations)):
-        R, t, _ = _kabsch_batch(ref, pts)
-        back = np.einsum("nji,nkj->nki", R, pts - t[:, None, :])  # R^T (x - t)
+        R, t, rms = _kabsch_batch(ref, pts)
+        use = rms <= max(OUTLIER_FACTOR * float(np.median(rms)), OUTLIER_FLOOR * size)
+        back = np.einsum("nji,nkj->nki", R[use], pts[use] - t[use, None, :])  # R^T (x - t)
         ref = back.mean(axis=0)
         ref = ref - ref.mean(axis=0)
     return ref
@@ -258,6 +292,9 @@ class MarkerGeometry:
 
     markers: np.ndarray
     labels: tuple[str, ...] | None = None
+    units_note: str = field(default="", compare=False, repr=False)
+    """The unit the geometry's lengths were read in (e.g. ``"m (no units key)"``), for
+    messages; empty for one given in metres as an array."""
 
     def __post_init__(self) -> None:
         m = np.array(self.markers, dtype=np.float64)
@@ -277,19 +314,39 @@ class MarkerGeometry:
     @classmethod
     def from_mapping(cls, data: Mapping[str, Any], *, units: str | None = None) -> MarkerGeometry:
         """From ``{"units": "mm", "M1": [x, y, z], ...}`` (the ``[markers]`` table of a TOML
-        file); ``units`` overrides the table's (default m)."""
+        file); ``units`` overrides the table's (default m, said in the messages that compare
+        the geometry with the markers). ValueError naming ``markers.<label>`` for an entry that
+        is not three numbers."""
         check_instance(data, Mapping, "data", '{"units": "mm", "M1": [x, y, z], ...}')
         d = dict(data)
-        unit = units or d.pop("units", None) or "m"
-        d.pop("units", None)
+        table_unit = d.pop("units", None)
+        unit = units or table_unit or "m"
+        if units:
+            note = f"{units} (units=)"
+        elif table_unit:
+            note = str(table_unit)
+        else:
+            note = "m (no units key)"
         fac = length_factor(str(unit), name="markers.units")
         labels, rows = [], []
         for k, v in d.items():
-            arr = np.asarray(v, dtype=np.float64)
-            if arr.shape != (3,):
-                raise ValueError(f"markers.{k} must be [x, y, z], got {v!r}")
             labels.append(str(k))
-            rows.append(arr * fac)
+            rows.append(_xyz(k, v) * fac)
         if len(rows) < 3:
             raise ValueError(f"the marker geometry needs at least 3 markers, got {len(rows)}")
-        return cls(np.array(rows), tuple(labels))
+        return cls(np.array(rows), tuple(labels), note)
+
+
+def _xyz(label: Any, value: Any) -> np.ndarray:
+    """``markers.<label>`` as three finite numbers; ValueError naming it otherwise."""
+    wrong = ValueError(
+        f"markers.{label} must be [x, y, z], three numbers (in the table's units), got {value!r}"
+    )
+    if isinstance(value, str | bytes) or not isinstance(value, list | tuple | np.ndarray):
+        raise wrong
+    if any(isinstance(x, bool) or not isinstance(x, int | float | np.number) for x in value):
+        raise wrong
+    arr = np.asarray(value, dtype=np.float64)
+    if arr.shape != (3,) or not np.all(np.isfinite(arr)):
+        raise wrong
+    return arr

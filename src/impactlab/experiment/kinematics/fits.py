@@ -17,6 +17,7 @@ from impactlab.experiment.rigid import Poses
 __all__ = [
     "SegmentFit",
     "fit_segment",
+    "grow_segment",
     "robust_sigma",
     "segment_data",
     "trimmed_fit",
@@ -114,6 +115,36 @@ def _prediction_z(
     return float(np.max(np.abs(d - a @ coef) / np.sqrt(var)))
 
 
+def grow_segment(
+    A_all: np.ndarray, D: np.ndarray, n0: int, threshold: float, floor: np.ndarray
+) -> list[int]:
+    """Rows of a segment grown outwards from its first ``n0`` rows (the design ``A_all`` and the
+    data ``D``, ordered from the impact outwards): the next row is taken while every coordinate
+    lies within ``threshold`` prediction sigmas of the fit so far (``floor``: the smallest
+    residual variance per coordinate); a single disagreeing row is skipped as an outlier, two in
+    a row end the segment."""
+    keep = list(range(n0))
+    j = n0
+    while j < A_all.shape[0]:
+        A = A_all[keep]
+        AtA_inv = np.linalg.inv(A.T @ A)
+        coef = AtA_inv @ A.T @ D[keep]
+        E = D[keep] - A @ coef
+        S = np.maximum(np.sum(E * E, axis=0) / max(len(keep) - A.shape[1], 1), floor)
+        if _prediction_z(A_all[j], D[j], coef, AtA_inv, S) <= threshold:
+            keep.append(j)
+            j += 1
+            continue
+        if (
+            j + 1 < A_all.shape[0]
+            and _prediction_z(A_all[j + 1], D[j + 1], coef, AtA_inv, S) <= threshold
+        ):
+            j += 1  # a single outlier: skip it
+            continue
+        break
+    return keep
+
+
 def trimmed_fit(
     poses: Poses,
     frames: np.ndarray,
@@ -128,11 +159,11 @@ def trimmed_fit(
     threshold: float = 5.0,
     n_start: int = 10,
 ) -> SegmentFit:
-    """Fit a free-flight segment grown outwards from the impact: start with the ``n_start``
-    frames nearest to it, then add one frame at a time while it agrees with the prediction of the
-    current fit (every coordinate within ``threshold`` prediction sigmas). A single disagreeing
-    frame is dropped as an outlier; two in a row end the segment (the rod still held before its
-    release, a second bounce, the rod leaving the camera's volume)."""
+    """Fit a free-flight segment grown outwards from the impact (:func:`grow_segment`): start
+    with the ``n_start`` frames nearest to it, then add one frame at a time while it agrees with
+    the prediction of the current fit (every coordinate within ``threshold`` prediction sigmas).
+    A single disagreeing frame is dropped as an outlier; two in a row end the segment (the rod
+    still held before its release, a second bounce, the rod leaving the camera's volume)."""
     order = frames[::-1] if far_end == "start" else frames
     tau_all = poses.time[order] - t_ref
     data_all = segment_data(poses, order, com_body, axis_body, axes, origin)
@@ -141,26 +172,7 @@ def trimmed_fit(
     A_all = np.column_stack([np.ones_like(tau_all), tau_all])
     floor = np.array([1e-6, 1e-6, 1e-6, 1e-6]) ** 2
     n0 = min(max(min_frames, n_start), order.size)
-    keep = list(range(n0))
-    j = n0
-    while j < order.size:
-        A = A_all[keep]
-        AtA_inv = np.linalg.inv(A.T @ A)
-        coef = AtA_inv @ A.T @ D[keep]
-        E = D[keep] - A @ coef
-        S = np.maximum(np.sum(E * E, axis=0) / max(len(keep) - 2, 1), floor)
-
-        if _prediction_z(A_all[j], D[j], coef, AtA_inv, S) <= threshold:
-            keep.append(j)
-            j += 1
-            continue
-        if (
-            j + 1 < order.size
-            and _prediction_z(A_all[j + 1], D[j + 1], coef, AtA_inv, S) <= threshold
-        ):
-            j += 1  # a single outlier: skip it
-            continue
-        break
+    keep = grow_segment(A_all, D, n0, threshold, floor)
     sel = np.sort(order[keep])
     tau = poses.time[sel] - t_ref
     data = segment_data(poses, sel, com_body, axis_body, axes, origin)

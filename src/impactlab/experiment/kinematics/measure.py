@@ -15,18 +15,22 @@ import numpy as np
 
 from impactlab.experiment.checks import check_instance
 from impactlab.experiment.errors import MarkerError, TooFewFramesError
-from impactlab.experiment.kinematics.body import (
-    RodBody,
-    estimated_body,
-    fitted_gravity,
-    impact_frame,
-)
+from impactlab.experiment.kinematics.body import RodBody, estimated_body, impact_frame
 from impactlab.experiment.kinematics.cluster import marker_poses
 from impactlab.experiment.kinematics.com import estimate_com
 from impactlab.experiment.kinematics.derive import DERIVED, derive
-from impactlab.experiment.kinematics.detect import detect_impact, free_flight
+from impactlab.experiment.kinematics.detect import (
+    Impact,
+    detect_impact,
+    free_flight,
+    later_impact_note,
+    several_impacts_hint,
+)
 from impactlab.experiment.kinematics.fits import SegmentFit, fit_segment, segment_data, trimmed_fit
 from impactlab.experiment.kinematics.frame import G0, parse_up, rod_dimensions
+from impactlab.experiment.kinematics.gravity import fitted_gravity
+from impactlab.experiment.kinematics.mirror import e_outside, mirrored, mirrored_geometry_error
+from impactlab.experiment.kinematics.options import check_kinematics_options
 from impactlab.experiment.kinematics.result import ImpactKinematics
 from impactlab.experiment.markers import MarkerTracks
 from impactlab.experiment.rigid import MarkerGeometry, Poses
@@ -68,20 +72,11 @@ _UNITS = (
 )
 
 
-def _check_options(
-    tracks: MarkerTracks,
-    guard: int,
-    window: int,
-    min_fit_frames: int,
-    max_fit_frames: int,
-    src: str,
-) -> None:
-    if guard < 1 or window < 2 or min_fit_frames < 4 or max_fit_frames < min_fit_frames:
-        raise ValueError(
-            f"need guard >= 1, window >= 2, min_fit_frames >= 4 and max_fit_frames >= "
-            f"min_fit_frames; got {guard}, {window}, {min_fit_frames}, "
-            f"{max_fit_frames}"
-        )
+#: e outside [0, 1] by more than this many of its sigmas is refused.
+E_SIGMAS = 3.0
+
+
+def _check_markers(tracks: MarkerTracks, src: str) -> None:
     if tracks.n_markers < 3:
         raise MarkerError(
             f"{src}: {tracks.n_markers} markers; at least 3 are needed for the rod's pose"
@@ -100,6 +95,17 @@ def _check_derived(y: np.ndarray, src: str) -> None:
             f"{src}: the tip is not moving towards the flat before the impact "
             f"(v_tip,y = {y[10]:.3g} m/s); check up="
         )
+
+
+def _e_error(src: str, e: Estimate, imp: Impact) -> MarkerError:
+    """The error for a restitution coefficient outside [0, 1] that no mirrored geometry explains."""
+    cannot = "leave the flat faster than it came" if e.value > 1 else "keep moving into the flat"
+    return MarkerError(
+        f"{src}: e = {e:.4g} is outside [0, 1] by more than {E_SIGMAS:g} sigma: the tip "
+        f"cannot {cannot}, so the fits do not describe one impact of the rod (check the marker "
+        f"geometry, up= and the impact found at t = {imp.t_ref:.4f} s)"
+        f"{several_impacts_hint(imp)}"
+    )
 
 
 @dataclass(frozen=True)
@@ -254,33 +260,81 @@ def measure_impact(
         centre of mass along the rod axis.
 
     Raises :class:`MarkerError` subclasses naming the problem (loose markers, no impact, too few
-    free-flight frames, geometry that does not fit).
+    free-flight frames, a free fall far from g, geometry that does not fit, a mirrored geometry,
+    e outside [0, 1]); TypeError or ValueError naming an option of the wrong kind or range.
     """
     check_instance(tracks, MarkerTracks, "tracks", "read them with read_markers()")
+    opts = check_kinematics_options(
+        {
+            "g": g,
+            "guard": guard,
+            "window": window,
+            "max_fit_frames": max_fit_frames,
+            "min_fit_frames": min_fit_frames,
+            "rigidity_tolerance": rigidity_tolerance,
+            "rigidity_window": rigidity_window,
+            "max_com_sigma": max_com_sigma,
+        }
+    )
+    if geometry is not None:
+        check_instance(geometry, MarkerGeometry, "geometry", "e.g. MarkerGeometry.from_mapping()")
     src = tracks.source or "marker tracks"
     half, R_tip = rod_dimensions(rod)
     upv = parse_up(up)
+    _check_markers(tracks, src)
+    k, imp = _measure(tracks, (half, R_tip), geometry, upv, opts, src)
+    if e_outside(k.e, E_SIGMAS):
+        if geometry is not None:
+            try:
+                flipped = _measure(tracks, (half, R_tip), mirrored(geometry), upv, opts, src)[0]
+            except ValueError:  # the mirrored geometry does not fit either
+                flipped = None
+            if flipped is not None and not e_outside(flipped.e, E_SIGMAS):
+                raise mirrored_geometry_error(src, k.e, flipped.e)
+        raise _e_error(src, k.e, imp)
+    return k
+
+
+def _measure(
+    tracks: MarkerTracks,
+    rod: tuple[float, float],
+    geometry: MarkerGeometry | None,
+    upv: np.ndarray,
+    opts: dict[str, Any],
+    src: str,
+) -> tuple[ImpactKinematics, Impact]:
+    """The steps of :func:`measure_impact` (``rod``: its half length and tip radius [m]; the
+    options checked) and the impact found."""
+    half, R_tip = rod
+    g, guard, min_fit = opts["g"], opts["guard"], opts["min_fit_frames"]
     warnings: list[str] = []
-    _check_options(tracks, guard, window, min_fit_frames, max_fit_frames, src)
     reference, rigidity, poses, ok = marker_poses(
         tracks,
         geometry,
-        rigidity_tolerance,
-        rigidity_window,
-        min_fit_frames,
+        opts["rigidity_tolerance"],
+        opts["rigidity_window"],
+        min_fit,
         src,
         rod_length=2.0 * half,
         upv=upv,
         g=g,
+        warnings=warnings,
     )
-    imp = detect_impact(poses, ok, reference, upv, g, window, src)
+    imp = detect_impact(poses, ok, reference, upv, g, opts["window"], src)
     t_ref = imp.t_ref
-    pre_fr, post_fr = free_flight(poses, ok, imp, guard, max_fit_frames, min_fit_frames, src)
-    fitted_g = fitted_gravity(poses, pre_fr, t_ref, upv, g, src, warnings)
+    note = later_impact_note(imp)
+    warnings += [note] if note else []
+    # the time base, the length unit and up= first, from a free fall fitted without g
+    falling = ok[(ok <= imp.k_star - guard)][-opts["max_fit_frames"] :]
+    lever = 0.0 if geometry is not None else half + float(np.ptp(reference, axis=0).max())
+    fitted_g = fitted_gravity(poses, falling, t_ref, upv, g, src, warnings, lever)
+    pre_fr, post_fr = free_flight(poses, ok, imp, guard, opts["max_fit_frames"], min_fit, src)
     if geometry is not None:
         body = RodBody(np.zeros(3), np.array([1.0, 0.0, 0.0]), None, "given")
     else:  # (a free fall far from g, which spoils the fits, was refused by fitted_gravity)
-        body = estimated_body(poses, reference, pre_fr, post_fr, t_ref, upv, g, max_com_sigma, src)
+        body = estimated_body(
+            poses, reference, pre_fr, post_fr, t_ref, upv, g, opts["max_com_sigma"], src
+        )
         warnings.append(
             "geometry estimated: the rod's axis is taken as the markers' principal direction, "
             "which holds only for markers laid out along the rod; the +- of e, mu and the "
@@ -288,7 +342,7 @@ def measure_impact(
         )
     axes, origin = impact_frame(poses, int(pre_fr[-1]), body, upv, src)
     fm = _Frame(poses, axes, origin, t_ref, g, half, R_tip)
-    pre, post, body = _fits(fm, pre_fr, post_fr, body, upv, min_fit_frames, src, warnings)
+    pre, post, body = _fits(fm, pre_fr, post_fr, body, upv, min_fit, src, warnings)
     y, cov_y, notes = _propagated(fm, pre, post, body)
     warnings += notes
     _check_derived(y, src)
@@ -297,7 +351,7 @@ def measure_impact(
     tilt = _plausibility(E_, poses, pre, body.axis, axes[2], warnings)
     estimates: dict[str, Any] = {name: E_[name] for name in _SCALARS}
     estimates.update({name: (E_[a], E_[b]) for name, (a, b) in _PAIRS.items()})
-    return ImpactKinematics(
+    kin = ImpactKinematics(
         **estimates,
         v_c_z_in=E_["v_cz_in"],
         v_c_z_out=E_["v_cz_out"],
@@ -314,6 +368,7 @@ def measure_impact(
         poses=poses,
         warnings=tuple(warnings),
     )
+    return kin, imp
 
 
 def _geometry(fm: _Frame, body: RodBody) -> dict[str, Any]:

@@ -1,7 +1,7 @@
 """Marker tracks as CSV text (the layout documented in docs/experiment.md)::
 
     # units: mm                 <- length unit of the coordinates (or pass units=)
-    # rate: 500                 <- optional; needed only with a 'frame' column
+    # rate: 500 Hz              <- optional; needed only with a 'frame' column (Hz, kHz, fps)
     time,M1_x,M1_y,M1_z,M2_x,M2_y,M2_z,M3_x,M3_y,M3_z
     0.000,12.31,45.60,301.2,...
     0.002,,,,...                <- empty cells (or NaN) mark an occluded marker
@@ -25,6 +25,7 @@ from impactlab.experiment.checks import check_instance, check_path
 from impactlab.experiment.errors import FileFormatError
 from impactlab.experiment.markers.tracks import MarkerTracks, length_factor
 from impactlab.experiment.textfiles import split_commented
+from impactlab.units import to_si
 
 __all__ = ["read_csv_markers", "write_csv_markers"]
 
@@ -125,6 +126,32 @@ def _unit(p: Path, units: str | None, meta: dict[str, str]) -> tuple[str, float]
         raise FileFormatError(p, str(exc)) from None
 
 
+#: Spellings of "per second" in a '# rate:' line that pint does not read as a frequency.
+_PER_SECOND = re.compile(
+    r"(?i)^(?P<number>[^a-z/]*?)\s*(?:fps|frames?\s*(?:/|per)\s*s(?:ec(?:ond)?)?|1\s*/\s*s)$"
+)
+
+
+def frame_rate(p: Path, text: str) -> float:
+    """The frame rate [Hz] of a '# rate:' line: a number with a unit (Hz, kHz, 1/s, fps) or a
+    bare number in Hz; FileFormatError naming the line otherwise (a unit is never dropped)."""
+    value = text.strip()
+    m = _PER_SECOND.match(value)
+    if m is not None:
+        value = f"{m.group('number').strip()} Hz"
+    try:
+        fr = to_si(value, "Hz", name="rate")
+    except ValueError as exc:
+        raise FileFormatError(
+            p,
+            f"'# rate: {text}' is not a frame rate ({exc}); write e.g. '# rate: 500 Hz' (Hz, "
+            "kHz, 1/s or fps; a bare number is in Hz)",
+        ) from None
+    if not (math.isfinite(fr) and fr > 0):
+        raise FileFormatError(p, f"'# rate: {text}': the frame rate must be > 0 Hz")
+    return fr
+
+
 def _time(
     p: Path,
     tcol: np.ndarray,
@@ -138,14 +165,15 @@ def _time(
     if is_frame:
         fr = rate
         if fr is None and "rate" in meta:
-            try:
-                fr = float(meta["rate"].split()[0])
-            except ValueError:
-                raise FileFormatError(p, f"'# rate: {meta['rate']}' is not a number") from None
-        if fr is None or not (math.isfinite(fr) and fr > 0):
+            fr = frame_rate(p, meta["rate"])
+        if fr is None:
             raise FileFormatError(
-                p, "a 'frame' column needs the frame rate: add '# rate: 500' or pass rate="
+                p,
+                "a 'frame' column needs the frame rate: add a line '# rate: 500 Hz' above the "
+                "header (or, from Python, pass rate= to read_markers)",
             )
+        if not (math.isfinite(fr) and fr > 0):
+            raise FileFormatError(p, f"the frame rate must be a finite number > 0 Hz, got {fr!r}")
         tcol = (tcol - tcol[0]) / fr
     if np.any(np.diff(tcol) <= 0):
         row = int(np.flatnonzero(np.diff(tcol) <= 0)[0]) + 1
@@ -165,7 +193,8 @@ def read_csv_markers(
 
     ``units`` (length unit of the coordinates) is needed unless the file has a ``# units:`` line;
     if both are given they must agree. ``rate`` [Hz] is needed only for a ``frame`` column without
-    a ``# rate:`` line. Raises :class:`FileFormatError` naming the file and line for bad content.
+    a ``# rate:`` line (``500``, ``500 Hz``, ``0.5 kHz``, ``500 fps``: its unit is read, never
+    dropped). Raises :class:`FileFormatError` naming the file and line for bad content.
     """
     p = Path(path)
     if not p.is_file():

@@ -20,6 +20,7 @@ from __future__ import annotations
 import math
 
 from impactlab.experiment.errors import ScanError
+from impactlab.experiment.markers import length_factor
 from impactlab.experiment.profilometry.heightmap import HeightMap
 from impactlab.experiment.profilometry.metrics import DentMetrics
 
@@ -49,6 +50,20 @@ def _units(scan: HeightMap | None) -> tuple[str, str]:
     return heights, f"the pixel size ({_length(scan.dx)} x {_length(scan.dy)})"
 
 
+def _too_small(scan: HeightMap | None) -> str:
+    """`` (heights stored in metres and read as 'nm' come out 1e+09 times too small)``, with the
+    height unit the scan was read in (a generic sentence when it is not known)."""
+    meta = (scan.meta or {}) if scan is not None else {}
+    unit = meta.get("height_unit") or meta.get("unit")
+    try:
+        factor = 1.0 / length_factor(str(unit)) if unit else math.nan
+    except ValueError:
+        factor = math.nan
+    if not (math.isfinite(factor) and factor > 1.0):
+        return " (heights stored in metres and read in a smaller unit come out too small)"
+    return f" (heights stored in metres and read as {unit!r} come out {factor:.3g} times too small)"
+
+
 def _cap_depth(width: float, R: float) -> float:
     """Depth [m] of a sphere of radius ``R`` at the chord ``width`` (inf for width >= 2R)."""
     half = 0.5 * width
@@ -75,7 +90,7 @@ def check_dent(
     if depth < MIN_DEPTH:
         wrong.append(
             f"delta_p = {depth:.3g} m is below 1 nm, finer than any profilometer resolves: check "
-            f"{heights} (heights stored in metres and read as um are 1e6 times too small)"
+            f"{heights}{_too_small(scan)}"
         )
     elif depth > R:
         wrong.append(

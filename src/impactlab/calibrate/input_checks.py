@@ -1,0 +1,158 @@
+"""What ``calibrate`` checks before it samples: the free parameters, the sampler's settings,
+the drops' inputs against the parameters and models (mu given or free, one material property
+for drops on one material, an input not both fixed and free) and which model uses which
+parameter."""
+
+from __future__ import annotations
+
+import math
+import operator
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+import numpy as np
+
+from impactlab.calibrate.measurements import Measurements
+from impactlab.calibrate.models import CandidateModel, predict
+from impactlab.calibrate.priors import Parameter, parse_parameter
+from impactlab.sweep.engine import Evaluator
+from impactlab.sweep.inputs import MATERIAL_OVERRIDES
+
+__all__ = ["check_inputs", "parameter_usage", "parameters", "sampler_settings"]
+
+#: The largest seed (numpy's legacy RandomState, which emcee's moves use, takes 32 bits).
+MAX_SEED = 2**32 - 1
+
+
+def parameters(given: Sequence[Parameter] | Mapping[str, Any]) -> tuple[Parameter, ...]:
+    """The free parameters (Parameters, or name -> prior text); ValueError for none or one
+    given twice."""
+    if isinstance(given, Mapping):
+        out = tuple(
+            v if isinstance(v, Parameter) else parse_parameter(k, v) for k, v in given.items()
+        )
+    else:
+        out = tuple(given)
+    if not out:
+        raise ValueError("calibrate needs at least one free parameter")
+    names = [p.name for p in out]
+    twice = sorted({n for n in names if names.count(n) > 1})
+    if twice:
+        raise ValueError(f"a free parameter is given twice: {', '.join(twice)}")
+    return out
+
+
+def _integer(name: str, value: Any) -> int:
+    """``value`` as an int; ValueError naming ``name`` for a float, text or a bool."""
+    try:
+        if isinstance(value, bool):
+            raise TypeError
+        return operator.index(value)
+    except TypeError:
+        raise ValueError(f"{name} must be an integer, got {value!r}") from None
+
+
+def sampler_settings(
+    n_params: int, walkers: int | None, steps: int, burn: int | None, seed: int
+) -> tuple[int, int, int, int]:
+    """(walkers, steps, burn, seed) checked: walkers >= max(4, 2 P) (default max(16, 4 P),
+    made even), steps >= 10, 0 <= burn < steps (default steps // 2), 0 <= seed < 2^32."""
+    least = max(4, 2 * n_params)
+    if walkers is not None and _integer("walkers", walkers) < least:
+        raise ValueError(f"walkers must be >= {least} (4 and 2 x parameters), got {walkers}")
+    nw = walkers if walkers is not None else max(16, 4 * n_params)
+    nw += nw % 2
+    if _integer("steps", steps) < 10:
+        raise ValueError(f"steps must be >= 10, got {steps}")
+    nburn = steps // 2 if burn is None else _integer("burn", burn)
+    if not 0 <= nburn < steps:
+        raise ValueError(f"burn must lie in [0, steps), got {burn}")
+    if not 0 <= _integer("seed", seed) <= MAX_SEED:
+        raise ValueError(f"seed must be an integer in [0, {MAX_SEED}], got {seed!r}")
+    return int(nw), int(steps), int(nburn), int(seed)
+
+
+def check_inputs(
+    meas: Measurements,
+    params: Sequence[Parameter],
+    models: Sequence[CandidateModel],
+    note: list[str],
+) -> None:
+    """ValueError for drops without mu when mu is not free, for a material property calibrated
+    over drops on different materials, and for an input a model fixes that is also free; a
+    note (appended to ``note``) for drop values a free parameter replaces."""
+    free = {p.name for p in params}
+    if "mu" not in free and not np.isfinite(meas.inputs["mu"]).all():
+        missing = [
+            lab for lab, m in zip(meas.labels, meas.inputs["mu"], strict=True) if math.isnan(m)
+        ]
+        raise ValueError(
+            f"drops {missing} give no mu: give it in the measurements file or make mu a free "
+            "parameter"
+        )
+    for p in params:
+        given = np.isfinite(meas.inputs[p.name])
+        if given.any():
+            note.append(
+                f"{p.name} is a free parameter: the value given for {int(given.sum())} drop(s) "
+                "in the measurements is not used"
+            )
+    _one_material(meas, params)
+    for m in models:
+        both = sorted(free & set(m.fixed))
+        if both:
+            raise ValueError(
+                f"model {m.name!r} fixes {', '.join(both)}, which is also a free parameter: "
+                "remove it from the model's fixed inputs or from the parameters"
+            )
+
+
+def _one_material(meas: Measurements, params: Sequence[Parameter]) -> None:
+    """A free material property (``flat_yield_strength``, ...) is one value for every drop: the
+    drops must share that side's material."""
+    for side, fields in MATERIAL_OVERRIDES.items():
+        key = f"{side}_material"
+        calibrated = [p.name for p in params if p.name in fields]
+        by_material: dict[str, list[str]] = {}
+        for label, cat in zip(meas.labels, meas.categories, strict=True):
+            by_material.setdefault(cat[key], []).append(label)
+        if calibrated and len(by_material) > 1:
+            groups = "; ".join(f"{k}: {', '.join(v)}" for k, v in by_material.items())
+            raise ValueError(
+                f"{', '.join(calibrated)} is one free parameter for every drop, but the drops' "
+                f"{key} differ ({groups}): one value cannot describe different materials; "
+                "calibrate the drops of each material on their own"
+            )
+
+
+def parameter_usage(
+    model: CandidateModel,
+    meas: Measurements,
+    params: Sequence[Parameter],
+    evaluator: Evaluator,
+    engine: Mapping[str, Any],
+) -> list[bool]:
+    """For each parameter: does changing it (over the prior's deciles 1, 3, 5, 7, 9, the
+    others at their medians) change any prediction of ``model``? One batch of 5P + 1 vectors.
+    (A parameter whose every value fails counts as used: the prior check names the reason.)"""
+    med = np.array([float(p.quantile(0.5)) for p in params])
+    levels = (0.1, 0.3, 0.5, 0.7, 0.9)
+    rows = [med]
+    for j, p in enumerate(params):
+        for q in levels:
+            t = med.copy()
+            t[j] = float(p.quantile(q))
+            rows.append(t)
+    pred = predict(model, meas, params, np.array(rows), evaluator=evaluator, engine=engine)
+    used = []
+    k = len(levels)
+    for j in range(len(params)):
+        idx = list(range(1 + k * j, 1 + k * (j + 1)))
+        same = all(
+            np.array_equal(v[i], v[idx[0]], equal_nan=True)
+            for v in pred.values.values()
+            for i in idx[1:]
+        ) and all(np.array_equal(pred.status[i], pred.status[idx[0]]) for i in idx[1:])
+        all_failed = bool((pred.status[idx] != 0).all())
+        used.append(not same or all_failed)
+    return used

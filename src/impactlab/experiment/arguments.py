@@ -1,0 +1,165 @@
+"""The arguments of :func:`impactlab.experiment.analyze`, checked before any work: one
+TypeError (wrong kind of value) or ValueError (a value outside what is allowed) naming the
+parameter, the value given and what is allowed; and the rod as a ``bodies.Rod``."""
+
+from __future__ import annotations
+
+import inspect
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from impactlab.bodies import PAPER_ROD, Rod
+from impactlab.contact.registry import get_law
+from impactlab.experiment.checks import check_instance, check_options, check_path, output_folder
+from impactlab.experiment.kinematics import measure_impact
+from impactlab.experiment.kinematics.options import check_kinematics_options
+from impactlab.experiment.profilometry import measure_dent
+from impactlab.experiment.profilometry.heightmap import pixel_pair
+from impactlab.experiment.result import ExperimentResult
+from impactlab.experiment.rigid import MarkerGeometry
+from impactlab.materials import Material, get_material
+
+__all__ = [
+    "KINEMATICS_DEFAULTS",
+    "AnalysisRun",
+    "check_scalars",
+    "checked_run",
+    "default_rod",
+    "dent_options",
+    "kinematics_options",
+    "rod_properties",
+]
+
+#: The defaults of :func:`measure_impact`'s keyword options.
+KINEMATICS_DEFAULTS = {
+    p.name: p.default
+    for p in inspect.signature(measure_impact).parameters.values()
+    if p.kind is p.KEYWORD_ONLY
+}
+
+
+def _is_paper(rod: Any) -> bool:
+    """True for no rod or the name ``"paper"`` (any case): the paper's rod."""
+    return rod is None or (isinstance(rod, str) and rod.strip().lower() == "paper")
+
+
+def default_rod() -> Rod:
+    """The paper's rod: ``impactlab.bodies.PAPER_ROD`` (L = 0.3048 m, R = 8.8 mm, m = 0.4607 kg,
+    I_C = m L^2 / 12)."""
+    return PAPER_ROD
+
+
+def rod_properties(rod: Any) -> Rod:
+    """The rod as an ``impactlab.bodies.Rod`` (mass, length, tip_radius, inertia): a Rod itself,
+    or a rod-like object with ``mass``, ``tip_radius``, a length (``L``, ``length`` or
+    ``half_length``) and optionally ``inertia``. ValueError naming ``rod`` otherwise."""
+    if isinstance(rod, Rod):
+        return rod
+    if hasattr(rod, "length"):
+        length = float(rod.length)
+    elif hasattr(rod, "L"):
+        length = float(rod.L)
+    elif hasattr(rod, "half_length"):
+        length = 2.0 * float(rod.half_length)
+    else:
+        raise ValueError(f"rod must have a length (L or length), got {rod!r}")
+    try:
+        return Rod(
+            length=length,
+            tip_radius=float(rod.tip_radius),
+            mass=float(rod.mass),
+            inertia=getattr(rod, "inertia", None),
+        )
+    except AttributeError as exc:
+        raise ValueError(f"rod must have mass and tip_radius: {exc}") from None
+
+
+def _flat_material(flat: Any) -> Material:
+    try:
+        return flat if isinstance(flat, Material) else get_material(str(flat))
+    except ValueError as exc:
+        raise ValueError(f"flat: {exc}") from None
+
+
+def check_scalars(n_samples: Any, law: Any, **switches: Any) -> None:
+    """``n_samples`` (an int >= 100), ``law`` (a known contact law's name, checked also without
+    ``flat``) and the True/False ``switches``."""
+    if isinstance(n_samples, bool) or not isinstance(n_samples, int) or n_samples < 100:
+        raise ValueError(f"n_samples must be an integer >= 100, got {n_samples!r}")
+    if not isinstance(law, str):
+        raise TypeError(f"law must be a contact law's name such as 'ghaednia', got {law!r}")
+    try:
+        get_law(law)
+    except ValueError as exc:
+        raise ValueError(f"law: {exc}") from None
+    for name, value in switches.items():
+        if not isinstance(value, bool):
+            raise TypeError(f"{name} must be True or False, got {type(value).__name__} {value!r}")
+
+
+def kinematics_options(options: Any) -> dict[str, Any]:
+    """``kinematics_options`` checked: known keys of :func:`measure_impact` (ValueError naming
+    an unknown one) with values of the right kind and range (each error naming the option)."""
+    given = check_options(options, measure_impact, "kinematics_options")
+    check_kinematics_options({**KINEMATICS_DEFAULTS, **given}, "kinematics_options: ")
+    return given
+
+
+def dent_options(options: Any) -> dict[str, Any]:
+    """``dent_options`` checked: known keys of :func:`measure_dent` (ValueError naming an
+    unknown one)."""
+    return check_options(options, measure_dent, "dent_options")
+
+
+@dataclass(frozen=True)
+class AnalysisRun:
+    """The checked arguments of :func:`analyze`."""
+
+    markers: Path | None
+    scan: Path | None
+    rod: Rod
+    flat: Material | None
+    out: Path | None
+    kinematics: dict[str, Any]
+    dent: dict[str, Any]
+    names: tuple[str | None, str | None]
+
+    def result(self) -> ExperimentResult:
+        """An empty result for these files and this rod."""
+        rod = {k: float(getattr(self.rod, k)) for k in ("mass", "length", "tip_radius", "inertia")}
+        return ExperimentResult(*self.names, rod=rod)
+
+
+def checked_run(
+    markers_path: Any,
+    scan_path: Any,
+    rod: Any,
+    flat: Any,
+    out_dir: Any,
+    kinematics: dict[str, Any],
+    dent: dict[str, Any],
+) -> AnalysisRun:
+    """Every argument checked before any work: one TypeError/ValueError naming the parameter."""
+    geometry = kinematics["geometry"]
+    if geometry is not None:
+        check_instance(geometry, MarkerGeometry, "geometry", "e.g. MarkerGeometry.from_mapping()")
+    if dent["pixel_size"] is not None:
+        pixel_pair(dent["pixel_size"])  # ValueError naming pixel_size
+    names = {"marker_units": kinematics["marker_units"], "height_unit": dent["height_unit"]}
+    for name, opt in names.items():
+        if opt is not None and not isinstance(opt, str):
+            raise TypeError(f"{name} must be a unit name such as 'mm' or None, got {opt!r}")
+    return AnalysisRun(
+        None if markers_path is None else check_path(markers_path, "markers_path"),
+        None if scan_path is None else check_path(scan_path, "scan_path"),
+        rod_properties(default_rod() if _is_paper(rod) else rod),
+        None if flat is None else _flat_material(flat),
+        None if out_dir is None else output_folder(out_dir, "out_dir"),
+        kinematics,
+        dent,
+        (
+            None if markers_path is None else str(markers_path),
+            None if scan_path is None else str(scan_path),
+        ),
+    )

@@ -1,0 +1,148 @@
+"""Gravity in the marker data: the free fall before the impact checks the time base, the length
+unit and the up direction before any fit that assumes g (a step of
+:func:`~impactlab.experiment.kinematics.measure_impact`).
+
+The fall is fitted with a free acceleration (a quadratic in time per coordinate) over the frames
+just before the impact (at most ``FALL_FRAMES``), grown backwards from the impact while the frames
+agree with it (a wrong sample is skipped), so that the check depends neither on g nor on the
+segments of the ballistic fits: a wrong time base is named as such, not as too few free-flight
+frames.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from impactlab.experiment.errors import MarkerError
+from impactlab.experiment.kinematics.fits import grow_segment
+from impactlab.experiment.rigid import Poses
+
+__all__ = ["GRAVITY_SIGMAS", "GRAVITY_TOLERANCE", "TILT_WARN_DEG", "fitted_gravity", "suggested_up"]
+
+#: A tilt of the camera's vertical from the fitted gravity [deg] beyond which a warning says so.
+TILT_WARN_DEG = 2.0
+#: A free fall whose acceleration differs from g by more than this fraction of g ...
+GRAVITY_TOLERANCE = 0.10
+#: ... and by more than this many of its standard uncertainties is refused.
+GRAVITY_SIGMAS = 4.0
+#: The free-fall fit uses at most the ``FALL_FRAMES`` frames nearest the impact (80 ms at 500 fps,
+#: as the fits' default ``max_fit_frames``; a rod dropped from rest reaches 1.41 m/s in 144 ms, so
+#: a hold before the release stays out), starting from the ``FALL_START`` nearest; fewer than
+#: ``MIN_FALL_FRAMES`` in all give no check.
+FALL_FRAMES = 40
+FALL_START = 12
+MIN_FALL_FRAMES = 8
+
+
+def suggested_up(measured_up: np.ndarray, exact: bool = False, sigma_deg: float = 0.0) -> str:
+    """The ``up=`` argument for the measured upward unit vector: the camera axis it lies along
+    (within ``TILT_WARN_DEG``, the tilt that draws a warning, or 3 of the direction's
+    uncertainty ``sigma_deg``), e.g. ``up='+z'``, else (and with ``exact``) the vector itself,
+    with the command line's form."""
+    k = int(np.argmax(np.abs(measured_up)))
+    within = math.radians(max(TILT_WARN_DEG, 3.0 * sigma_deg))
+    if not exact and abs(measured_up[k]) >= math.cos(within):
+        axis = f"{'+' if measured_up[k] > 0 else '-'}{'xyz'[k]}"
+        return f"up='{axis}' (impactlab analyze --up {axis})"
+    text = ", ".join(f"{v:.3f}" for v in measured_up)
+    return f"up=({text}) (impactlab analyze --up '{text}')"
+
+
+def _free_fall(
+    poses: Poses, fr: np.ndarray, t_ref: float
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(acceleration (3,) [m/s^2], its covariance (3, 3) summed over the coordinates as the
+    variance of each, the frames used): a free quadratic fit of the cluster origin, grown
+    backwards from the impact."""
+    order = fr[::-1]
+    tau = poses.time[order] - t_ref
+    A_all = np.column_stack([np.ones_like(tau), tau, 0.5 * tau * tau])
+    D = poses.translation[order]
+    n0 = min(FALL_START, order.size)
+    keep = grow_segment(A_all, D, n0, 5.0, np.full(3, 1e-12))
+    A, X = A_all[keep], D[keep]
+    coef, *_ = np.linalg.lstsq(A, X, rcond=None)
+    E = X - A @ coef
+    s2 = np.sum(E * E, axis=0) / max(len(keep) - 3, 1)
+    var_a = np.linalg.inv(A.T @ A)[2, 2] * s2
+    return coef[2], var_a, np.sort(order[keep])
+
+
+def _turn_rate(poses: Poses, fr: np.ndarray) -> float:
+    """The rod's mean rate of turn over the frames ``fr`` [rad/s]."""
+    R = poses.rotation[fr[0]].T @ poses.rotation[fr[-1]]
+    angle = math.acos(max(-1.0, min(1.0, 0.5 * (float(np.trace(R)) - 1.0))))
+    return angle / max(float(poses.time[fr[-1]] - poses.time[fr[0]]), 1e-12)
+
+
+def _time_base_error(src: str, fitted: float, sig: float, g: float) -> MarkerError:
+    ratio = fitted / g
+    stretch = math.sqrt(g / fitted) if fitted > 0 else math.inf
+    if stretch > 1:
+        ms = ", milliseconds read as seconds?" if 500.0 < stretch < 2000.0 else ""
+        as_if = f" (as if the times were {stretch:.3g} times too long{ms})"
+    else:
+        as_if = f" (as if the times were {1 / stretch:.3g} times too short)"
+    return MarkerError(
+        f"{src}: the free fall before the impact accelerates at {fitted:.3g} ± {sig:.2g} "
+        f"m/s^2, {ratio:.3g} times g = {g:.4g} m/s^2{as_if}: the time base or the length unit "
+        "is wrong (check the frame rate: a C3D's POINT:RATE or a CSV's '# rate:' line; the "
+        "time column's unit, seconds; and the marker units); e and mu cannot be measured "
+        "from it"
+    )
+
+
+def fitted_gravity(
+    poses: Poses,
+    fr: np.ndarray,
+    t_ref: float,
+    upv: np.ndarray,
+    g: float,
+    src: str,
+    warnings: list[str],
+    lever: float = 0.0,
+) -> float | None:
+    """The free fall before the impact (the last ``FALL_FRAMES`` of the frames ``fr``, in time
+    order) fitted with a free acceleration: its magnitude [m/s^2] (None with too few frames or
+    too uncertain a fit).
+
+    MarkerError when the acceleration differs from ``g`` by more than ``GRAVITY_TOLERANCE`` of
+    it and ``GRAVITY_SIGMAS`` of its uncertainty (a wrong time base or length unit), or when it
+    points more than 25 deg away from -``up``; a warning for a smaller tilt beyond its noise.
+    ``lever`` [m]: the largest distance of the fitted point (the cluster origin) from the centre
+    of mass, 0 when it is the centre of mass (a given geometry): a turning rod's centripetal
+    acceleration there is allowed for."""
+    fr = fr[-FALL_FRAMES:]
+    if fr.size < MIN_FALL_FRAMES:
+        return None
+    a, var_a, used = _free_fall(poses, fr, t_ref)
+    if used.size < MIN_FALL_FRAMES:
+        return None
+    fitted_g = float(np.linalg.norm(a))
+    sig_a = float(np.sqrt(np.sum(var_a)))
+    if not sig_a < 0.2 * max(g, fitted_g):
+        return None
+    centripetal = _turn_rate(poses, used) ** 2 * lever
+    allowed = max(GRAVITY_TOLERANCE * g, GRAVITY_SIGMAS * sig_a, centripetal)
+    if abs(fitted_g - g) > allowed:
+        raise _time_base_error(src, fitted_g, sig_a, g)
+    down = a / fitted_g
+    tilt = math.degrees(math.acos(max(-1.0, min(1.0, float(-(down @ upv))))))
+    dirn = ", ".join(f"{v:+.2f}" for v in down)
+    sig_deg = math.degrees(sig_a / fitted_g)  # the fitted direction's own uncertainty
+    if tilt > 25.0:
+        raise MarkerError(
+            f"{src}: gravity in the data points along ({dirn}) in camera coordinates, "
+            f"{tilt:.0f} deg away from the downward direction -up that up= gives; pass "
+            f"{suggested_up(-down, sigma_deg=sig_deg)}"
+        )
+    # tilts within the direction's uncertainty are noise
+    if tilt > max(TILT_WARN_DEG, 3.0 * sig_deg):
+        warnings.append(
+            f"gravity in the data points along ({dirn}), {tilt:.1f} deg away from -up: e, mu "
+            "and the angle are measured in a frame tilted by as much (10 deg biases mu by "
+            f"several percent); pass {suggested_up(-down, exact=True)}"
+        )
+    return fitted_g

@@ -1,0 +1,133 @@
+"""Candidate models from tables (a calibration file's ``[[model]]``): known keys, fixed inputs
+read in their unit and range-checked; the calibration file's own checks; what a calibration
+refuses between the models, the parameters and the drops; the settings it records."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+
+from impactlab._json import shape_problems
+from impactlab.calibrate import CandidateModel, Measurements, calibrate, parse_model
+from impactlab.calibrate import parse_parameter as prior
+from impactlab.calibrate.config import load_config
+from impactlab.calibrate.jsonout import calibration_json
+from impactlab.calibrate.synthetic import synthetic_measurements
+
+MU = prior("mu", "uniform(0, 0.6)")
+
+
+@pytest.mark.parametrize(
+    ("spec", "match"),
+    [
+        ({"law": "ghaednia", "frition": "mindlin"},
+         r"model 'ghaednia': unknown key 'frition' \(did you mean 'friction'\?\); known: law"),
+        ({"law": "ghaednia", "body": "flexible_rod", "fixed": {"dampin": 0.05}},
+         r"model 'ghaednia/coulomb/flexible_rod': fixed 'dampin' is not an input a model can "
+         r"fix \(did you mean 'damping'\?\)"),
+        ({"law": "ghaednia", "fixed": {"damping": 5}},
+         r"model 'ghaednia/coulomb', fixed damping: damping must lie in \[0, 1\), got 5"),
+        ({"law": "ghaednia", "fixed": {"flat_yield_strength": "300 kg"}},
+         r"fixed flat_yield_strength: flat_yield_strength: '300 kg' has the wrong dimension"),
+        ({"law": "ghaednia", "fixed": {"angle": "20 deg"}}, "fixed 'angle' is not an input"),
+        ({"law": "ghaednia", "fixed": 0.05}, "fixed must be a table of input = value"),
+    ],
+)  # fmt: skip
+def test_bad_model_tables_name_the_key(spec, match):
+    with pytest.raises(ValueError, match=match) as info:
+        parse_model(spec)
+    assert "\n" not in str(info.value)
+
+
+def test_fixed_values_take_units():
+    m = parse_model({"law": "ghaednia", "fixed": {"flat_yield_strength": "300 MPa",
+                                                   "flat_brinell_hardness": 105}})  # fmt: skip
+    assert m.fixed == {"flat_yield_strength": 3e8, "flat_brinell_hardness": 105.0}
+
+
+def _config(tmp_path, sampler: str, extra: str = "") -> object:
+    path = tmp_path / "cal.toml"
+    path.write_text(
+        'measurements = "drops.csv"\n[parameters]\nmu = "uniform(0, 1)"\n'
+        f"[sampler]\n{sampler}\n{extra}"
+    )
+    return path
+
+
+@pytest.mark.parametrize(
+    ("sampler", "match"),
+    [
+        ('steps = "ten"', r"cal.toml: \[sampler\] steps must be an integer, got 'ten'"),
+        ("steps = 12.7", r"cal.toml: \[sampler\] steps must be an integer, got 12.7"),
+        ("seed = true", r"\[sampler\] seed must be an integer, got True"),
+    ],
+)
+def test_config_sampler_settings_are_integers(tmp_path, sampler, match):
+    with pytest.raises(ValueError, match=match):
+        load_config(_config(tmp_path, sampler))
+
+
+def test_config_errors_name_the_file(tmp_path):
+    path = _config(tmp_path, "steps = 20", '[[model]]\nlaw = "ghaednia"\nfrition = "mindlin"\n')
+    with pytest.raises(ValueError, match=r"cal.toml: model 'ghaednia': unknown key 'frition'"):
+        load_config(path)
+    with pytest.raises(IsADirectoryError, match=r"calibration file .* is a directory"):
+        load_config(tmp_path)
+
+
+def _drops(template):
+    return synthetic_measurements(template, CandidateModel(), [MU], [0.15],
+                                  np.random.default_rng(0))  # fmt: skip
+
+
+def test_sampler_settings_are_checked(template):
+    data = _drops(template)
+    for kw, match in (
+        ({"seed": -1}, r"seed must be an integer in \[0, 4294967295\], got -1"),
+        ({"steps": 12.7}, "steps must be an integer, got 12.7"),
+        ({"engine": {"gravity": True, "foo": 1}}, r"unknown engine option\(s\) \['foo'\]"),
+        ({"engine": {"rtol": 5.0}}, "engine rtol must be a number in"),
+    ):
+        with pytest.raises(ValueError, match=match):
+            calibrate(data, [MU], steps=kw.pop("steps", 10), **kw)
+
+
+def test_an_input_both_fixed_and_free_is_refused(template):
+    model = CandidateModel(fixed={"mu": 0.2})
+    with pytest.raises(ValueError, match=r"model 'ghaednia/coulomb' fixes mu, which is also a "
+                       "free parameter"):  # fmt: skip
+        calibrate(_drops(template), [MU], [model], steps=10)
+
+
+def test_one_material_property_for_drops_on_two_materials():
+    recs = [
+        {"label": lab, "angle": "20 deg", "vy": -1.41, "mu": 0.15, "e": 0.43, "e_sigma": 0.02,
+         "flat_material": mat}
+        for lab, mat in (("steel", "aisi-1010"), ("alu", "al-6061-t6"))
+    ]  # fmt: skip
+    m = Measurements.from_records(recs)
+    with pytest.raises(ValueError, match=r"flat_yield_strength is one free parameter for every "
+                       r"drop, but the drops' flat_material differ \(aisi-1010: steel; "
+                       r"al-6061-t6: alu\)"):  # fmt: skip
+        calibrate(m, [prior("flat_yield_strength", "uniform(100 MPa, 1 GPa)")], steps=10)
+
+
+@pytest.mark.filterwarnings("ignore::impactlab.calibrate.CalibrationWarning")  # a short chain
+def test_the_settings_hold_the_engine_and_the_models(template):
+    """results.json runs the calibration again: the engine's options and every model's
+    definition (fixed inputs, rate law) are in its settings."""
+    model = CandidateModel(fixed={"flat_yield_strength": "300 MPa"}, name="sy300")
+    cal = calibrate(_drops(template), [MU], [model], walkers=4, steps=10, n_ppc=0,
+                    engine={"gravity": "9.81 m/s^2", "rtol": 1e-6})  # fmt: skip
+    st = cal.settings
+    assert st["engine"] == {"gravity": 9.81, "rtol": 1e-6}
+    assert st["model_definitions"]["sy300"]["fixed"] == {"flat_yield_strength": 3e8}
+    assert st["model_definitions"]["sy300"]["rate"] is None
+    doc = json.loads(json.dumps(calibration_json(cal)))
+    assert shape_problems(doc) == []
+    fixed = doc["settings"]["model_definitions"]["sy300"]["fixed"]
+    assert fixed == {"flat_yield_strength": {"value": 3e8, "unit": "Pa"}}
+    assert doc["settings"]["engine"]["gravity"] == {"value": 9.81, "unit": "m/s^2"}
+    assert doc["models"]["sy300"]["parameters"]["mu"]["tau"]["unit"] == "steps"
