@@ -13,6 +13,7 @@ from impactlab.paper import data as D
 from impactlab.paper.calibration_report import (
     calibrate_paper,
     calibration_section,
+    hardened_law,
     paper_measurements,
     paper_models,
     shipped_calibration,
@@ -36,7 +37,13 @@ def test_the_three_drops_and_models():
     assert m.observed["delta_p"][1] == pytest.approx(abs(x.delta_p))
     assert m.sigma["delta_p"][1] == pytest.approx(0.1 * abs(x.delta_p))
     assert m.observed["scar_length"][0] == pytest.approx(abs(D.EXPERIMENTS[20].L_s))
-    models = paper_models()  # every row of the physics section, the FE-tabulated one too
+    from impactlab.contact import law_names
+
+    before = law_names()
+    with hardened_law() as name:  # every row of the physics section, the FE-tabulated one too
+        models = paper_models(name)
+        assert name in law_names()
+    assert law_names() == before  # the process's laws as they were
     assert [p.name for p in models] == [c.name for c in ROWS] and len(models) == 4
     assert models[2].rate == "cowper-symonds" and models[0].body is None
     assert models[3].law == "paper-fe-hardened" and models[3].body == "flexible_rod"

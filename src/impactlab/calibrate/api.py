@@ -13,7 +13,11 @@ from typing import Any
 
 from impactlab.calibrate.cluster import map_on_dask
 from impactlab.calibrate.diagnostics import edge_note, misfits
-from impactlab.calibrate.input_checks import check_inputs, parameter_usage, sampler_settings
+from impactlab.calibrate.input_checks import (
+    check_calibration_inputs,
+    parameter_usage,
+    sampler_settings,
+)
 from impactlab.calibrate.input_checks import parameters as free_parameters
 from impactlab.calibrate.measurements import Measurements, read_measurements
 from impactlab.calibrate.model_specs import model_definition, parse_model
@@ -216,7 +220,7 @@ def _calibrate(
     g = gravity_value(eng.get("gravity", True))
     EngineOptions(rtol=eng.get("rtol"))  # ValueError for an rtol the engine refuses
     notes: list[str] = []
-    check_inputs(meas, params, cands, notes)
+    check_calibration_inputs(meas, params, cands, notes)
     usage = {c.name: parameter_usage(c, meas, params, evaluator, eng) for c in cands}
     for j, p in enumerate(params):
         users = [n for n in names if usage[n][j]]

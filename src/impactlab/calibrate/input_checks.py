@@ -18,7 +18,7 @@ from impactlab.calibrate.priors import Parameter, parse_parameter
 from impactlab.sweep.engine import Evaluator
 from impactlab.sweep.inputs import MATERIAL_OVERRIDES
 
-__all__ = ["check_inputs", "parameter_usage", "parameters", "sampler_settings"]
+__all__ = ["check_calibration_inputs", "parameter_usage", "parameters", "sampler_settings"]
 
 #: The largest seed (numpy's legacy RandomState, which emcee's moves use, takes 32 bits).
 MAX_SEED = 2**32 - 1
@@ -72,7 +72,7 @@ def sampler_settings(
     return int(nw), int(steps), int(nburn), int(seed)
 
 
-def check_inputs(
+def check_calibration_inputs(
     meas: Measurements,
     params: Sequence[Parameter],
     models: Sequence[CandidateModel],

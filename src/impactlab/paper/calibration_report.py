@@ -14,7 +14,8 @@ the rigid rod as for the drops (``dynamics.derived.e_gravity_removed``).
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterator, Mapping, Sequence
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
@@ -35,6 +36,7 @@ __all__ = [
     "calibrate_paper",
     "calibration_section",
     "calibration_summary",
+    "hardened_law",
     "paper_measurements",
     "paper_models",
     "shipped_calibration",
@@ -63,6 +65,56 @@ ZETA_PRIOR = "uniform(0, 0.6)"
 HARDENED_LAW_NAME = "paper-fe-hardened"
 
 
+@contextmanager
+def hardened_law() -> Iterator[str]:
+    """The FE-tabulated law of the hardening flat registered under :data:`HARDENED_LAW_NAME`
+    while the block runs (the same curves as the physics section's), unregistered after it
+    unless it was registered before: a calibration leaves the process's laws as it found them."""
+    from impactlab.contact import law_names, register_law, unregister_law
+    from impactlab.fe.tabulated import hardened_curves
+
+    ours = HARDENED_LAW_NAME not in law_names()
+    if ours:
+        register_law(HARDENED_LAW_NAME, hardened_curves(), title=FE_TABULATED.name)
+    try:
+        yield HARDENED_LAW_NAME
+    finally:
+        if ours:
+            unregister_law(HARDENED_LAW_NAME)
+
+
+def paper_models(hardened: str) -> tuple[CandidateModel, ...]:
+    """Every configuration of the physics section as a candidate model (its law, friction,
+    body and rate), the FE-tabulated one under the registered law ``hardened``
+    (``with hardened_law() as name: paper_models(name)``)."""
+    return tuple(
+        CandidateModel(
+            hardened if c.law == HARDENED_LAW else c.law,
+            FRICTION,
+            "flexible_rod" if c.flexible else None,
+            name=c.name,
+            rate=c.rate,
+        )
+        for c in ROWS
+    )
+
+
+#: The sampler of the shipped run: the chains' autocorrelation time is about 10 steps, and
+#: R-hat < 1.05 and 50 autocorrelation times after the burn-in need about a thousand steps.
+SHIPPED_WALKERS = 8
+SHIPPED_STEPS = 1200
+
+#: Assumed standard uncertainties: e absolute, delta_p and L_s relative.
+PAPER_SIGMAS = {"e": 0.03, "delta_p": 0.10, "scar_length": 0.10}
+#: The prior of the flexible rod's modal damping ratio (the hand fit's scan range).
+ZETA_PRIOR = "uniform(0, 0.6)"
+
+
+#: The name under which the FE-tabulated law of the hardening flat is registered for the
+#: calibration (a candidate model names its law; ``contact.register_law``).
+HARDENED_LAW_NAME = "paper-fe-hardened"
+
+
 def _law_name(cfg: Any) -> str:
     """The registered law of ``cfg``: the paper's law, or the FE-tabulated law of the
     hardening flat, registered on first use (the same curves as the physics section's)."""
@@ -74,17 +126,6 @@ def _law_name(cfg: Any) -> str:
     if HARDENED_LAW_NAME not in law_names():
         register_law(HARDENED_LAW_NAME, hardened_curves(), title=FE_TABULATED.name)
     return HARDENED_LAW_NAME
-
-
-def paper_models() -> tuple[CandidateModel, ...]:
-    """Every configuration of the physics section as a candidate model (its law, friction,
-    body and rate), the FE-tabulated one included."""
-    return tuple(
-        CandidateModel(
-            _law_name(c), FRICTION, "flexible_rod" if c.flexible else None, name=c.name, rate=c.rate
-        )
-        for c in ROWS
-    )
 
 
 def paper_measurements(sigmas: dict[str, float] | None = None) -> Measurements:
@@ -121,7 +162,7 @@ def calibrate_paper(
     progress: ProgressFn | None = None,
     state_dir: Any = None,
 ) -> Calibration:
-    """zeta ~ ``ZETA_PRIOR`` for every configuration (``models``; None: ``paper_models()``)
+    """zeta ~ ``ZETA_PRIOR`` for every configuration (``models``; None: ``paper_models``)
     on the three drops. A flexible drop costs about 0.1 s here (its modes are rebuilt for each
     zeta): the defaults (the shipped run's) take about half an hour; the rigid rod does not use
     zeta (a CalibrationWarning says so)."""
@@ -129,12 +170,12 @@ def calibrate_paper(
 
     from impactlab.calibrate import CalibrationWarning
 
-    with warnings.catch_warnings():
+    with warnings.catch_warnings(), hardened_law() as hardened:
         warnings.simplefilter("ignore", CalibrationWarning)  # reported in cal.warnings
         return calibrate(
             paper_measurements(),
             [_prior("damping", ZETA_PRIOR)],
-            list(paper_models() if models is None else models),
+            list(paper_models(hardened) if models is None else models),
             walkers=walkers,
             steps=steps,
             seed=seed,
