@@ -29,6 +29,15 @@ CASES = {
     70: (70.0, -3.45, 0.05, 0.10, 105e-6, 200e-6),
 }
 
+#: A marker geometry file (body frame, mm) of the synthetic drops' three markers.
+GEOMETRY_TOML = """
+[markers]
+units = "mm"
+M1 = [-30.0, 18.0, 0.0]
+M2 = [-90.0, 0.0, 22.0]
+M3 = [-130.0, -20.0, 4.0]
+"""
+
 #: Realistic noise: 0.15 mm per marker coordinate, 0.1 um on the scan heights.
 MARKER_NOISE = 0.15e-3
 SCAN_NOISE = 0.1e-6

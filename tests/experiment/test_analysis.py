@@ -33,13 +33,7 @@ from impactlab.experiment import (
     rod_properties,
 )
 
-GEOMETRY_TOML = """
-[markers]
-units = "mm"
-M1 = [-30.0, 18.0, 0.0]
-M2 = [-90.0, 0.0, 22.0]
-M3 = [-130.0, -20.0, 4.0]
-"""
+from .conftest import GEOMETRY_TOML
 
 
 @pytest.mark.parametrize("case", [20, 45])

@@ -16,15 +16,9 @@ import pytest
 from impactlab import testing as S
 from impactlab.experiment import MarkerGeometry, analyze
 
-CliMain = Callable[..., tuple[int, str, str]]
+from .conftest import GEOMETRY_TOML
 
-GEOMETRY_TOML = """
-[markers]
-units = "mm"
-M1 = [-30.0, 18.0, 0.0]
-M2 = [-90.0, 0.0, 22.0]
-M3 = [-130.0, -20.0, 4.0]
-"""
+CliMain = Callable[..., tuple[int, str, str]]
 
 
 @pytest.fixture(scope="module")
