@@ -118,8 +118,15 @@ def test_end_to_end(tmp_path_factory):
         "table4",
         "physics_comparison",
         "physics_drop_20",
+        "fe_reference",
     ):
         assert res.files[name].is_file(), name
+    # the paper's laws against the FE law of the paper's pair, in the same impacts
+    fe = pd.read_csv(res.files["fe_reference"])
+    assert len(fe) == 12 and fe["e vs FE"].isna().sum() == 3  # the FE rows: no difference
+    brake = fe[fe["law"] == "brake"]
+    assert (brake["F vs FE"].between(-0.25, -0.15)).all()  # Brake's force 15-25 % low
+    assert "The paper's laws against the FE reference" in res.report_md.read_text()
     assert "Can physics explain the experiment?" in res.report_md.read_text()
     # every not-reproduced number carries a reason
     bad = res.comparison[res.comparison["reproduced"] == False]  # noqa: E712

@@ -17,6 +17,7 @@ from impactlab.contact.verified_ranges import tolerance_text
 from impactlab.materials import ContactPair
 from impactlab.paper import data as D
 from impactlab.paper.calibration_report import calibration_section, shipped_calibration
+from impactlab.paper.fe_reference_rows import FE_REFERENCE_TEXT, fe_reference_summary
 from impactlab.paper.physics_report import physics_section
 from impactlab.paper.quantities import (
     EXTRAPOLATED_MARK,
@@ -24,7 +25,16 @@ from impactlab.paper.quantities import (
     PAPER_SIGN_NOTE,
     count_extrapolated,
 )
-from impactlab.paper.report import Block, Bullets, Code, Figure, Heading, Para, Table
+from impactlab.paper.report import (
+    Block,
+    Bullets,
+    Code,
+    Figure,
+    Heading,
+    Para,
+    Table,
+    fmt_pct,
+)
 from impactlab.paper.report_acceptance import acceptance
 from impactlab.paper.report_reasons import not_reproduced
 from impactlab.paper.simulations import FRICTIONS
@@ -51,6 +61,8 @@ class ReportData:
     physics: pd.DataFrame | None = None
     #: the file of every simulation's full input (None: not simulated)
     inputs_file: str | None = None
+    #: the paper's laws against the FE law (``paper.fe_reference_rows``; None: not simulated)
+    fe_reference: pd.DataFrame | None = None
 
 
 def build_report(d: ReportData) -> list[Block]:
@@ -145,7 +157,25 @@ def _simulated(d: ReportData) -> list[Block]:
             )
         )
         B += _sim_vs_experiment(d.simulations, d.experimental)
+    if d.fe_reference is not None:
+        B += [
+            Para(FE_REFERENCE_TEXT),
+            Table(
+                _percent(d.fe_reference, "vs FE"),
+                "The paper's laws against the FE reference",
+                digits=4,
+            ),
+            Para(fe_reference_summary(d.fe_reference)),
+        ]
     return B
+
+
+def _percent(table: pd.DataFrame, suffix: str) -> pd.DataFrame:
+    """``table`` with its columns ending in ``suffix`` (relative differences) as percentages."""
+    shown = table.copy()
+    for col in [c for c in shown.columns if str(c).endswith(suffix)]:
+        shown[col] = [fmt_pct(v) for v in shown[col]]
+    return shown
 
 
 def _marked(table: pd.DataFrame, column: str) -> pd.DataFrame:

@@ -35,6 +35,7 @@ from impactlab.paper.analytic_rows import (
     published_consistency,
 )
 from impactlab.paper.comparison import comparison_table, side_by_side
+from impactlab.paper.fe_reference_rows import fe_reference_table, run_fe_reference
 from impactlab.paper.figures import figure_alpha, figure_dent, figure_forces, figure_inertia
 from impactlab.paper.physics import physics_table, run_physics
 from impactlab.paper.physics_figures import figure_drop
@@ -106,6 +107,7 @@ def reproduce(
     tables = {ang: side_by_side(comparison, ang) for ang in D.ANGLES_DEG}
     simtab = simulation_table(sims) if sims else None
     eq12 = eq12_check(sims) if sims else None
+    fe_ref = fe_reference_table(sims, run_fe_reference()) if sims else None
     physics = run_physics() if simulate else None
     phystab = physics_table(physics, experimental) if physics else None
 
@@ -119,6 +121,7 @@ def reproduce(
             "inertia_sensitivity": inertia,
             "simulations": simtab,
             "eq12_check": eq12,
+            "fe_reference": fe_ref,
             "physics_comparison": phystab,
         },
     )
@@ -145,6 +148,7 @@ def reproduce(
             version=__version__,
             physics=phystab,
             inputs_file="simulation_inputs.json" if sims else None,
+            fe_reference=fe_ref,
         ),
         written,
     )

@@ -1,0 +1,121 @@
+"""The paper's three laws against the FE reference, in the paper's own impacts: the rigid rod
+with the law tabulated from CalculiX indentations of the paper's pair (``law="tabulated"``,
+``impactlab.fe``; elastic-perfectly plastic flat, 0.1-1000 delta_c) beside each of the paper's
+laws, and how far each lies from it.
+
+The tabulated law is the FE reference itself, so it is verified to the end of its data: of the
+laws impactlab has, it is the one to trust for these impacts as far as the quasi-static contact
+of an elastic-perfectly plastic flat goes (what it leaves out: rate effects, the flat's
+hardening and the rod's flexibility, which Section 11 adds).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping
+from typing import Any
+
+import pandas as pd
+
+from impactlab.bodies import PAPER_ROD
+from impactlab.dynamics import simulate
+from impactlab.paper import data as D
+from impactlab.paper.quantities import rel_diff
+
+__all__ = [
+    "FE_LAW",
+    "FE_REFERENCE_TEXT",
+    "FRICTION",
+    "fe_reference_summary",
+    "fe_reference_table",
+    "run_fe_reference",
+]
+
+#: The law of the FE reference (CalculiX indentations of the paper's pair).
+FE_LAW = "tabulated"
+#: The friction model of the comparison (both models give the same numbers here: Section 4).
+FRICTION = "coulomb"
+
+#: What the table is, for the report.
+FE_REFERENCE_TEXT = (
+    "The paper's laws against the FE reference: the same impacts (rigid rod, Coulomb friction) "
+    "with the law tabulated from CalculiX indentations of the paper's own pair (AISI 201 sphere "
+    "on AISI 1010, elastic-perfectly plastic, 0.1-1000 delta_c; docs/laws/tabulated.md). It is "
+    "the FE reference itself, verified to the end of its data, so of impactlab's laws it is the "
+    "one to trust for these impacts as far as the quasi-static contact of an elastic-perfectly "
+    "plastic flat goes; it leaves out rate effects, the flat's hardening and the rod's "
+    "flexibility (Section 11). 'vs FE' is the law's value / the FE law's - 1."
+)
+
+
+def run_fe_reference(angles: Iterable[int] = D.ANGLES_DEG) -> dict[int, Any]:
+    """The FE law's impact at each angle [deg] (the inputs of ``simulations.run_simulations``)."""
+    out: dict[int, Any] = {}
+    for ang in angles:
+        x = D.EXPERIMENTS[ang]
+        out[ang] = simulate(
+            PAPER_ROD,
+            D.FLAT_MATERIAL,
+            law=FE_LAW,
+            friction=FRICTION,
+            mu=x.mu,
+            angle=x.angle,
+            velocity=(0.0, x.v_i),
+            history=False,
+        )
+    return out
+
+
+def _row(ang: int, law: str, res: Any, fe: Any | None) -> dict[str, Any]:
+    """One row; ``fe`` None for the FE law's own (no difference to show)."""
+
+    def vs(name: str) -> float | None:
+        return None if fe is None else rel_diff(getattr(res, name), getattr(fe, name))
+
+    return {
+        "angle [deg]": ang,
+        "law": law,
+        "e": res.e,
+        "e vs FE": vs("e"),
+        "delta_p [um]": res.delta_p * 1e6,
+        "delta_p vs FE": vs("delta_p"),
+        "T [ms]": res.duration * 1e3,
+        "F [N]": res.mean_force,
+        "F vs FE": vs("mean_force"),
+        "F_max [N]": res.max_force,
+        "max_delta_ratio": res.max_delta_ratio,
+    }
+
+
+def fe_reference_table(
+    sims: Mapping[tuple[int, str, str], Any], fe: Mapping[int, Any]
+) -> pd.DataFrame:
+    """Per angle: the FE law's row, then each of the paper's laws (``sims``: the reproduction's
+    simulations, keyed (angle, law, friction)) with its relative difference from it."""
+    rows = []
+    for ang, ref in fe.items():
+        rows.append(_row(ang, f"{FE_LAW} (FE reference)", ref, None))
+        rows.extend(
+            _row(ang, law, sims[(ang, law, FRICTION)], ref)
+            for law in D.PAPER_LAWS
+            if (ang, law, FRICTION) in sims
+        )
+    return pd.DataFrame(rows)
+
+
+def fe_reference_summary(table: pd.DataFrame) -> str:
+    """One sentence per law: the range of its differences from the FE law over the angles."""
+
+    def span(values: pd.Series) -> str:
+        lo, hi = float(values.min()), float(values.max())
+        return f"{lo:+.0%}" if abs(hi - lo) < 0.005 else f"{lo:+.0%} to {hi:+.0%}"
+
+    parts = []
+    for law in D.PAPER_LAWS:
+        rows = table[table["law"] == law]
+        if rows.empty:
+            continue
+        parts.append(
+            f"{law}: e {span(rows['e vs FE'])}, delta_p {span(rows['delta_p vs FE'])}, "
+            f"F {span(rows['F vs FE'])}"
+        )
+    return "Against the FE reference, over the three angles: " + "; ".join(parts) + "."
