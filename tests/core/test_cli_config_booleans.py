@@ -36,3 +36,24 @@ def test_invert_refuses_a_gravity_that_is_not_a_boolean(tmp_path: Path, cli_main
     cfg.write_text(cfg.read_text().replace('"false"', "false"))
     code, out, _ = cli_main("invert", "--file", str(cfg))
     assert code == 0 and "neglected" in out
+
+
+@pytest.mark.parametrize(
+    ("line", "message"),
+    [
+        ('modes_axial = "x"', "modes_axial (in {cfg}) must be an integer >= 0, got 'x'"),
+        ("modes_bending = 2.5", "modes_bending (in {cfg}) must be an integer >= 0, got 2.5"),
+        ('damping = "x"', "damping (in {cfg}) must be a number in [0, 1), got 'x'"),
+        ("vx = true", "vx (in {cfg}) must be a quantity in m/s, got True"),
+    ],
+)
+def test_a_config_value_of_the_wrong_kind_is_named(
+    tmp_path: Path, cli_main: CliMain, line: str, message: str
+) -> None:
+    """A mode count, a damping ratio or a quantity of the wrong TOML kind is one line naming
+    the key and the file (not a TypeError traceback, nor a boolean read as 1 m/s)."""
+    cfg = tmp_path / "case.toml"
+    flexible = "flexible = true\n" if "vx" not in line else ""
+    cfg.write_text(f'angle = "20 deg"\nvy = "-1.41 m/s"\n{flexible}{line}\n')
+    code, _, err = cli_main("simulate", "--config", str(cfg))
+    assert code == 2 and message.format(cfg=cfg) in err, err

@@ -127,3 +127,21 @@ def test_worker_timeout_help_states_the_sweeps_default(cli_main: CliMain) -> Non
     code, out, err = cli_main("sweep", "run", "--help")
     assert code == 0, err
     assert f"(default: {WORKER_TIMEOUT_HELP_DEFAULT})" in " ".join(out.split())
+
+
+@pytest.mark.parametrize(
+    ("args", "needle"),
+    [
+        (("simulate", "rod", "--mu", "abc"), "Invalid value for '--mu'"),
+        (("materials", "--bogus"), "No such option: --bogus"),
+        (("simulate", "--tip-radius", "1 mm"), "Possible options: --radius"),
+    ],
+)
+def test_usage_errors_are_one_line_too(args: tuple[str, ...], needle: str) -> None:
+    """A wrong option or value (caught by the command-line parser) is one ``error:`` line
+    naming the command's help, as every other error (not click's Usage/Try/Error block)."""
+    res = _run(*args)
+    assert res.returncode == 2
+    lines = res.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("error: ") and needle in lines[0], res.stderr
+    assert f"impactlab {args[0]} --help')" in lines[0]  # the program name as invoked

@@ -45,7 +45,10 @@ def test_anything_else_is_refused_naming_the_input(bad) -> None:
 
 
 def test_an_unknown_name_lists_the_library() -> None:
-    with pytest.raises(ValueError, match=r"flat: unknown material 'aisi-1011'; known: aisi-201"):
+    with pytest.raises(
+        ValueError,
+        match=r"flat: unknown material 'aisi-1011' \(did you mean 'aisi-1010'\?\); known: aisi-201",
+    ):
         il.simulate(il.Rod.paper(), "aisi-1011", angle=0.35, velocity=(0.0, -1.41))
 
 

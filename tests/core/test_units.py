@@ -254,3 +254,19 @@ def test_unknown_law_and_friction_names_suggest_the_nearest() -> None:
         get_law("jackson_green")
     with pytest.raises(ValueError, match=r"unknown contact law 'zzz'; known laws"):
         get_law("zzz")
+
+
+def test_an_unknown_material_suggests_the_nearest_name() -> None:
+    from impactlab.materials import get_material
+
+    with pytest.raises(
+        ValueError, match=r"unknown material 'aisi-101' \(did you mean 'aisi-1010'\?\)"
+    ):
+        get_material("aisi-101")
+
+
+def test_laws_names_its_options_and_refuses_example_options_without_a_law(cli_main) -> None:
+    code, _, err = cli_main("laws", "--radius", "5 mm")
+    assert code == 2 and "--radius without a law" in err
+    code, _, err = cli_main("laws", "ghaednia", "--body", "aisi-20")
+    assert code == 2 and "--body: unknown material 'aisi-20' (did you mean 'aisi-201'?)" in err

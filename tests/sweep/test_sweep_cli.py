@@ -223,3 +223,16 @@ def test_a_plausible_study_does_not_warn() -> None:
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         Study(grid={"vy": [-1.0, -99.0]}, fixed={"angle": 0.5, "mu": 0.1})
+
+
+def test_uncertainty_of_a_grid_study_is_refused_before_it_runs(
+    tmp_path, monkeypatch, capsys
+) -> None:
+    """A grid without a [sample] has nothing to summarise: said at once, no store written."""
+    study = tmp_path / "g.toml"
+    study.write_text("[fixed]\nvy = -1.41\nmu = 0.2\n[grid]\nangle = ['20 deg', '45 deg']\n")
+    store = tmp_path / "g.zarr"
+    code, _, err = run_cli(monkeypatch, capsys, "sweep", "uncertainty", str(study),
+                           "--out", str(store))  # fmt: skip
+    assert code == 2 and "needs a Monte Carlo sample ([sample])" in err
+    assert not store.exists()

@@ -141,6 +141,14 @@ def _freeze_at_exit() -> None:
     gc.freeze()
 
 
+def _usage_line(exc: Exception, message: str) -> str:
+    """click's usage error in one line, with the command whose help says more."""
+    text = " ".join(message.split())
+    ctx = getattr(exc, "ctx", None)
+    path = getattr(ctx, "command_path", None)
+    return f"{text} (see '{path} --help')" if isinstance(path, str) and path else text
+
+
 def main() -> None:
     """Entry point: run the app and turn user errors into a one-line message with exit code 2;
     impactlab's own warnings print as one line ``warning: <message>``."""
@@ -167,10 +175,10 @@ def main() -> None:
         print("interrupted", file=sys.stderr)
         sys.exit(130)
     except Exception as exc:  # usage errors of typer's (vendored) click, and the like
-        show = getattr(exc, "show", None)
+        message = getattr(exc, "format_message", None)
         code = getattr(exc, "exit_code", None)
-        if callable(show) and isinstance(code, int):
-            show()
+        if callable(message) and isinstance(code, int):  # one line, as every other error
+            print(f"error: {_usage_line(exc, str(message()))}", file=sys.stderr)
             sys.exit(code)
         if type(exc).__name__ == "Abort":
             print("aborted", file=sys.stderr)

@@ -55,6 +55,8 @@ def quantity(value: str | float | None, unit: str, name: str) -> float | None:
     """Parse a CLI quantity ("8.8 mm"; a bare number is in ``unit``) to SI; None passes through."""
     if value is None:
         return None
+    if isinstance(value, bool):  # a config file's `vx = true`: no quantity
+        raise UserError(f"{name} must be a quantity in {unit}, got {value!r}")
     return to_si(value, unit, name=name)
 
 
@@ -142,9 +144,9 @@ KINEMATIC_HELP = {
 
 #: What a drop follows (``simulate_drop(stop=...)``), for ``drop`` and ``simulate --flexible``.
 STOP_HELP = (
-    "What the drop follows: 'sequence' (default: the tip's impact, until the tip is clear until "
-    "the other end could land) or 'flight' (on through the other end's impacts until the rod "
-    "flies off)."
+    "what the drop follows: 'sequence' (default: the tip's impact, its contacts until the tip "
+    "leaves the flat for good or the other end lands) or 'flight' (on through the other end's "
+    "impacts until the rod flies off)."
 )
 
 
@@ -152,16 +154,19 @@ STOP_HELP = (
 ROD_FIELDS: dict[str, str] = {"mass": "kg", "length": "m", "tip_radius": "m", "inertia": "kg*m^2"}
 
 
-#: The length convention, said in every rod option's help.
-LENGTH_HELP = (
-    "Rod length L between the centres of the end spheres (the overall length is L + 2R), "
-    "e.g. '304.8 mm' (bare number: m)."
-)
+def length_help(default: str) -> str:
+    """The rod length option's help: the length convention, said in every rod option's help,
+    and the ``default``."""
+    return (
+        "Rod length L between the centres of the end spheres (the overall length is L + 2R), "
+        f"e.g. '304.8 mm' (bare number: m; default {default})."
+    )
+
 
 #: The rod options' help (the defaults are the paper's rod).
 _ROD_HELP = {
     "mass": "Rod mass, e.g. '0.46 kg' (bare number: kg; default 0.4607 kg).",
-    "length": f"{LENGTH_HELP} (default 0.3048 m).",
+    "length": length_help("0.3048 m"),
     "tip_radius": "Tip radius, e.g. '8.8 mm' (bare number: m; default 8.8 mm).",
     "inertia": "I_C about the centre of mass, e.g. '3.6e-3 kg*m^2' (default m L^2/12).",
 }

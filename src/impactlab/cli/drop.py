@@ -23,13 +23,13 @@ from impactlab.bodies import PAPER_ROD, FlexibleRod, Rod
 from impactlab.bodies.flexible_rod import DEFAULT_N_AXIAL, DEFAULT_N_BENDING
 from impactlab.cli._common import (
     KINEMATIC_HELP,
-    LENGTH_HELP,
     RATE_CHOICES,
     SI_UNITS,
     STOP_HELP,
     UserError,
     angle_quantity,
     emit,
+    length_help,
     positive,
     quantity,
     rate_name,
@@ -63,12 +63,24 @@ _COLUMNS = (
 )
 
 
-def _count(value: int | None, name: str, default: int) -> int:
+def _count(value: Any, name: str, default: int) -> int:
+    """A mode count (an option or a config file's value): an integer >= 0, else UserError
+    naming ``name``."""
     if value is None:
         return default
-    if value < 0:
-        raise UserError(f"{name} must be an integer >= 0, got {value}")
+    if isinstance(value, bool) or not isinstance(value, int) or value < 0:
+        raise UserError(f"{name} must be an integer >= 0, got {value!r}")
     return value
+
+
+def _ratio(value: Any, name: str) -> float:
+    """A damping ratio (an option or a config file's value): a number, else UserError naming
+    ``name`` (its range is FlexibleRod's to check)."""
+    if value is None:
+        return 0.0
+    if isinstance(value, bool) or not isinstance(value, int | float):
+        raise UserError(f"{name} must be a number in [0, 1), got {value!r}")
+    return float(value)
 
 
 def flexible_rod(
@@ -84,7 +96,7 @@ def flexible_rod(
     name = label or (lambda key: "--" + key.replace("_", "-"))
     n_axial = _count(values.get("modes_axial"), name("modes_axial"), DEFAULT_N_AXIAL)
     n_bending = _count(values.get("modes_bending"), name("modes_bending"), DEFAULT_N_BENDING)
-    damping = values.get("damping")
+    damping = _ratio(values.get("damping"), name("damping"))
     return FlexibleRod(
         length=cast(float, sizes["length"]),
         tip_radius=cast(float, sizes["tip_radius"]),
@@ -94,7 +106,7 @@ def flexible_rod(
         n_axial=n_axial,
         n_bending=n_bending,
         axial_residual=n_axial >= 1,
-        damping=0.0 if damping is None else float(damping),
+        damping=damping,
     )
 
 
@@ -185,9 +197,7 @@ def drop_cmd(
     speed: str = typer.Option(None, "--speed", help=KINEMATIC_HELP["speed"]),
     incidence: str = typer.Option(None, "--incidence", help=KINEMATIC_HELP["incidence"]),
     spin: str = typer.Option(None, "--spin", help=KINEMATIC_HELP["spin"]),
-    length: str = typer.Option(
-        None, "--length", help=f"{LENGTH_HELP} (default: the paper's rod, 304.8 mm)."
-    ),
+    length: str = typer.Option(None, "--length", help=length_help("the paper's rod, 304.8 mm")),
     radius: str = typer.Option(
         None, "--radius", help="Tip radius R of the rounded ends, e.g. '8.8 mm' (default 8.8 mm)."
     ),
@@ -240,7 +250,7 @@ def drop_cmd(
     stop: str = typer.Option(
         None,
         "--stop",
-        help=STOP_HELP,
+        help=STOP_HELP[0].upper() + STOP_HELP[1:],
     ),
     from_file: Path = typer.Option(
         None,
@@ -256,17 +266,23 @@ def drop_cmd(
 
     Examples:
 
-      impactlab drop --angle "30 deg" --vy "-2 m/s" --length "200 mm" --radius "5 mm"
-      --diameter "10 mm" --material brass-c360 --flat al-6061-t6
+    \b
+      impactlab drop --angle "30 deg" --vy "-2 m/s" --length "200 mm" --radius "5 mm" \\
+        --diameter "10 mm" --material brass-c360 --flat al-6061-t6
 
+    \b
       impactlab drop --angle "20 deg" --vy "-1.41 m/s" --mu 0.2
 
+    \b
       impactlab drop --angle "45 deg" --vy "-2.18 m/s" --mu 0.13 --rate cowper-symonds
 
+    \b
       impactlab drop --angle "70 deg" --vy "-3.45 m/s" --mu 0.1 --rigid --json
 
+    \b
       impactlab drop --angle "20 deg" --vy "-1.41 m/s" --mu 0.2 --friction partial_slip
 
+    \b
       impactlab drop --angle "20 deg" --vy "-1.41 m/s" --mu 0.2 --stop flight
     """
     if from_file is not None:  # the recorded drop, with the options given on top

@@ -141,9 +141,14 @@ def laws(
     Example: impactlab laws jackson-green --radius "8.8 mm" --json
     """
     try:
+        chosen = {"--radius": radius, "--body": body, "--flat": flat}
+        given = [o for o, v in chosen.items() if v != _EXAMPLE_PAIR[o]]
+        if given and name is None and not accuracy:  # they set one law's example numbers
+            raise ValueError(
+                f"{', '.join(given)} without a law: they set the example numbers of one law "
+                "(impactlab laws NAME --radius ...); the list has none"
+            )
         if accuracy:
-            chosen = {"--radius": radius, "--body": body, "--flat": flat}
-            given = [o for o, v in chosen.items() if v != _EXAMPLE_PAIR[o]]
             if given:
                 raise ValueError(
                     f"{', '.join(given)} with --accuracy: the accuracy is measured against the "
@@ -232,7 +237,7 @@ def _laws(name: str | None, radius: str, body: str, flat: str, as_json: bool) ->
     law = get_law(name)
     R = quantity(radius, "m", "radius")
     assert R is not None
-    pair = ContactPair(get_material(body), get_material(flat))
+    pair = ContactPair(get_material(body, "--body"), get_material(flat, "--flat"))
     info = _described(law)
     info["example"] = {"body": body, "flat": flat, **_numbers(law, pair, R)}
     if as_json:

@@ -21,11 +21,11 @@ from impactlab.bodies import PAPER_ROD, FlexibleRod, Rod, Sphere
 from impactlab.bodies.flexible_rod import DEFAULT_N_AXIAL, DEFAULT_N_BENDING
 from impactlab.cli._common import (
     KINEMATIC_HELP,
-    LENGTH_HELP,
     RATE_CHOICES,
     STOP_HELP,
     UserError,
     angle_quantity,
+    length_help,
     load_toml,
     positive,
     quantity,
@@ -247,7 +247,7 @@ _HELP = {
     "inertia": 'Rod I_C, e.g. "0.0036 kg*m^2" (bare number: kg*m^2; default m L^2/12; rigid rod '
     "only).",
     "radius": "Tip / sphere radius, e.g. '8.8 mm' (bare number: m; default 8.8 mm, the paper's).",
-    "length": f"{LENGTH_HELP} (default 0.3048 m).",
+    "length": length_help("0.3048 m"),
     "mass": "Mass, e.g. '0.46 kg' (bare number: kg; rod default 0.4607 kg, or from --diameter; "
     "sphere default from the density).",
     "diameter": "Rod diameter d, e.g. '12 mm' (bare number: m; optional): the mass follows from "
@@ -330,13 +330,17 @@ def simulate_cmd(
 
     Examples:
 
+    \b
       impactlab simulate rod --angle "20 deg" --vy "-1.41 m/s" --mu 0.2 --plot
 
+    \b
       impactlab simulate sphere --radius "5 mm" --vy "-1 m/s" --material aisi-1010
 
-      impactlab simulate sphere --radius "3 mm" --speed "2.5 m/s" --incidence "30 deg"
-      --material aisi-52100 --flat al-6061-t6
+    \b
+      impactlab simulate sphere --radius "3 mm" --speed "2.5 m/s" --incidence "30 deg" \\
+        --material aisi-52100 --flat al-6061-t6
 
+    \b
       impactlab simulate rod --flexible --angle "20 deg" --vy "-1.41 m/s" --mu 0.2
     """
     # the options named like the config file's keys, as given (None: not given)

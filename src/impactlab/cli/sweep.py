@@ -294,9 +294,25 @@ def uncertainty_cmd(
                 "(TOML) or the Zarr store it ran into"
             )
         _check_run_paths(out, None)
+        _check_uncertainty_study(source, max_cases)  # before any case is computed
         where = _Where(out, scheduler, workers, max_cases)
         ds = _run(source, where, quiet or as_json, False).dataset
     _print_uncertainty(ds, outputs, percentiles, as_json, include_flagged)
+
+
+def _check_uncertainty_study(path: Path, max_cases: int | None) -> None:
+    """UserError, before the sweep runs, for a study without a Monte Carlo sample, which the
+    uncertainty report cannot summarise (its warnings are given when the sweep builds it)."""
+    from impactlab.sweep import Study
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        study = Study.from_toml(path, max_cases=max_cases)
+    if study.sample is None:
+        raise UserError(
+            f"{path}: the uncertainty report needs a Monte Carlo sample ([sample]); this study "
+            "is a grid only: run it with `impactlab sweep` instead"
+        )
 
 
 @sweep_app.command("info")

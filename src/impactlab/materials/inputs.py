@@ -25,7 +25,7 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
-from impactlab._validation import read_text_file
+from impactlab._validation import did_you_mean, read_text_file
 from impactlab.materials.core import Material, brinell_to_pa
 from impactlab.materials.library import ALIASES, PRESETS
 from impactlab.units import to_si
@@ -213,8 +213,9 @@ def get_material(value: Any, where: str = "material") -> Material:
             raise ValueError(f"{where}: material file {text!r} does not exist")
         return from_file(path, where)
     prefix = "" if where == "material" else f"{where}: "
+    near = did_you_mean(_key(text), (*PRESETS, *ALIASES))
     raise ValueError(
-        f"{prefix}unknown material {text!r}; known: {library_names()} (see 'impactlab "
+        f"{prefix}unknown material {text!r}{near}; known: {library_names()} (see 'impactlab "
         f"materials'), or give its properties: '{EXAMPLE}'"
     )
 
