@@ -3,6 +3,7 @@ read the non-empty string as true). Through the ``cli_main`` fixture."""
 
 from __future__ import annotations
 
+import json
 from collections.abc import Callable
 from pathlib import Path
 
@@ -57,3 +58,19 @@ def test_a_config_value_of_the_wrong_kind_is_named(
     cfg.write_text(f'angle = "20 deg"\nvy = "-1.41 m/s"\n{flexible}{line}\n')
     code, _, err = cli_main("simulate", "--config", str(cfg))
     assert code == 2 and message.format(cfg=cfg) in err, err
+
+
+def test_the_tip_radius_reads_under_either_name(tmp_path: Path, cli_main: CliMain) -> None:
+    """The rod's tip radius is --radius or --tip-radius, radius or tip_radius in a config file
+    (the name study files and [rod] tables use); a misspelt key gets the nearest known one."""
+    cfg = tmp_path / "case.toml"
+    for text in ('tip_radius = "5 mm"\n', ""):
+        cfg.write_text(f'angle = "20 deg"\nvy = "-1 m/s"\n{text}')
+        extra = () if text else ("--tip-radius", "5 mm")
+        code, out, err = cli_main("simulate", "--config", str(cfg), *extra, "--json")
+        assert code == 0, err
+        body = json.loads(out)["input"]["body"]
+        assert body["tip_radius"] == {"value": 0.005, "unit": "m"}
+    cfg.write_text('angle = "20 deg"\nvy = "-1 m/s"\nmuu = 0.2\n')
+    code, _, err = cli_main("simulate", "--config", str(cfg))
+    assert code == 2 and "unknown key(s) in the config file: muu (did you mean 'mu'?)" in err

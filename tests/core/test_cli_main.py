@@ -134,7 +134,7 @@ def test_worker_timeout_help_states_the_sweeps_default(cli_main: CliMain) -> Non
     [
         (("simulate", "rod", "--mu", "abc"), "Invalid value for '--mu'"),
         (("materials", "--bogus"), "No such option: --bogus"),
-        (("simulate", "--tip-radius", "1 mm"), "Possible options: --radius"),
+        (("simulate", "--radus", "1 mm"), "Possible options: --radius"),
     ],
 )
 def test_usage_errors_are_one_line_too(args: tuple[str, ...], needle: str) -> None:

@@ -240,3 +240,16 @@ def test_a_library_material_changed_in_python_loses_its_label() -> None:
     assert m.name == "AISI 1010 low-carbon steel (paper's flat), modified (E, yield_strength)"
     assert m.source == "" and library_key(m) is None
     assert replace(AISI_1010) == AISI_1010  # unchanged: still the library's
+
+
+def test_the_materials_command_shows_one_material(cli_main) -> None:
+    """``impactlab materials NAME`` (a name or an alias) shows one entry in full; an unknown
+    name suggests the nearest."""
+    import json
+
+    code, out, err = cli_main("materials", "6061-t6", "--json")
+    assert code == 0, err
+    data = json.loads(out)
+    assert data["key"] == "al-6061-t6" and data["condition"] == "T6 (T651)"
+    code, _, err = cli_main("materials", "aisi-101")
+    assert code == 2 and "did you mean 'aisi-1010'?" in err

@@ -199,7 +199,10 @@ def drop_cmd(
     spin: str = typer.Option(None, "--spin", help=KINEMATIC_HELP["spin"]),
     length: str = typer.Option(None, "--length", help=length_help("the paper's rod, 304.8 mm")),
     radius: str = typer.Option(
-        None, "--radius", help="Tip radius R of the rounded ends, e.g. '8.8 mm' (default 8.8 mm)."
+        None,
+        "--radius",
+        "--tip-radius",
+        help="Tip radius R of the rounded ends, e.g. '8.8 mm' (bare number: m; default 8.8 mm).",
     ),
     mass: str = typer.Option(
         None, "--mass", help="Rod mass, e.g. '0.46 kg' (default: the paper's 0.4607 kg)."

@@ -9,9 +9,9 @@ import typer
 from rich.table import Table
 from rich.text import Text
 
-from impactlab.cli._common import console, emit
-from impactlab.materials import BRITTLE, PRESETS
-from impactlab.materials.inputs import EXAMPLE
+from impactlab.cli._common import UserError, console, emit
+from impactlab.materials import BRITTLE, PRESETS, get_material
+from impactlab.materials.inputs import EXAMPLE, library_key
 from impactlab.references import REFERENCES
 
 
@@ -20,6 +20,9 @@ def _hb(value: float) -> str:
 
 
 def materials(
+    name: str | None = typer.Argument(
+        None, help="Show one material in full: a library name or alias (e.g. 'aisi-1010')."
+    ),
     as_json: bool = typer.Option(False, "--json", help="Machine-readable output (SI)."),
 ) -> None:
     """List the material library: E [GPa], nu, yield strength S_y [MPa], Brinell hardness HB
@@ -30,8 +33,11 @@ def materials(
     ("E=69GPa, nu=0.33, Sy=276MPa, rho=2700kg/m^3"; HB=... and n=... optional), or a TOML
     file of the same keys.
 
-    Example: impactlab materials --json
+    Example: impactlab materials --json; impactlab materials 6061-t6
     """
+    if name is not None:
+        _one(name, as_json)
+        return
     if as_json:
         data = {}
         for key, m in PRESETS.items():
@@ -60,11 +66,29 @@ def materials(
     console.print(table)
     console.print(
         Text(
-            "* brittle: Sy holds the compressive strength (no fracture model). Sources: "
+            "rho in kg/m^3, HB in kgf/mm^2. * brittle: Sy holds the compressive strength (no "
+            "fracture model). Sources: "
             "impactlab materials --json, docs/materials.md. Any other material: --flat "
             f'"{EXAMPLE}".'
         )
     )
+
+
+def _one(name: str, as_json: bool) -> None:
+    """One library material in full: its values (SI in --json), condition, source and note."""
+    key = library_key(get_material(name, "NAME"))  # a library name or alias, else one line
+    if key is None:  # a definition by values or a file: not a library entry
+        raise UserError(f"NAME: {name!r} is not a library name (see 'impactlab materials')")
+    m = PRESETS[key]
+    ref = REFERENCES[m.source]
+    data = {
+        "key": key,
+        **asdict(m),
+        "brittle": key in BRITTLE,
+        "citation": ref.citation,
+        "url": ref.url,
+    }
+    emit(data, as_json=as_json, title=f"material {key!r}")
 
 
 def register(app: typer.Typer) -> None:

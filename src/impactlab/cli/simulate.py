@@ -17,6 +17,7 @@ from typing import Any
 import typer
 
 from impactlab._compile_gc import garbage_deferred
+from impactlab._validation import did_you_mean
 from impactlab.bodies import PAPER_ROD, FlexibleRod, Rod, Sphere
 from impactlab.bodies.flexible_rod import DEFAULT_N_AXIAL, DEFAULT_N_BENDING
 from impactlab.cli._common import (
@@ -125,8 +126,15 @@ def _merge(config: dict[str, Any], cli: dict[str, Any], config_path: Path | None
             'flat = { E = "69 GPa", nu = 0.33, Sy = "276 MPa", rho = "2700 kg/m^3" }, or a '
             "library name, flat = \"al-6061-t6\" (see 'impactlab materials')"
         )
+    if "tip_radius" in section:  # the rod's name for it elsewhere (study files, [rod] tables)
+        if "radius" in section:
+            raise UserError("radius and tip_radius in the config file: they are one; give one")
+        section = {**section, "radius": section["tip_radius"]}
+        section.pop("tip_radius")
+        unknown.remove("tip_radius")
     if unknown:
-        raise UserError(f"unknown key(s) {unknown} in the config file; known: {list(_KEYS)}")
+        hints = "".join(f"{k}{did_you_mean(k, _KEYS)}, " for k in unknown)[:-2]
+        raise UserError(f"unknown key(s) in the config file: {hints}; known: {', '.join(_KEYS)}")
     check_booleans(section, _FLAGS, str(config_path))
     given = {k: v for k, v in cli.items() if v is not None}
     return _Options({**section, **given}, frozenset(given), str(config_path))
@@ -246,7 +254,8 @@ _HELP = {
     "friction": "Friction model: impulse_ratio, coulomb (default), mindlin or partial_slip.",
     "inertia": 'Rod I_C, e.g. "0.0036 kg*m^2" (bare number: kg*m^2; default m L^2/12; rigid rod '
     "only).",
-    "radius": "Tip / sphere radius, e.g. '8.8 mm' (bare number: m; default 8.8 mm, the paper's).",
+    "radius": "Tip / sphere radius (--tip-radius too), e.g. '8.8 mm' (bare number: m; default "
+    "8.8 mm, the paper's).",
     "length": length_help("0.3048 m"),
     "mass": "Mass, e.g. '0.46 kg' (bare number: kg; rod default 0.4607 kg, or from --diameter; "
     "sphere default from the density).",
@@ -266,8 +275,12 @@ _HELP = {
 }
 
 
+#: Other spellings of an option (the rod's tip radius is tip_radius elsewhere).
+_ALIASES = {"radius": ("--tip-radius",)}
+
+
 def _option(key: str) -> Any:
-    return typer.Option(None, "--" + key.replace("_", "-"), help=_HELP[key])
+    return typer.Option(None, "--" + key.replace("_", "-"), *_ALIASES.get(key, ()), help=_HELP[key])
 
 
 def simulate_cmd(
