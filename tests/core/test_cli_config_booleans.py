@@ -74,3 +74,14 @@ def test_the_tip_radius_reads_under_either_name(tmp_path: Path, cli_main: CliMai
     cfg.write_text('angle = "20 deg"\nvy = "-1 m/s"\nmuu = 0.2\n')
     code, _, err = cli_main("simulate", "--config", str(cfg))
     assert code == 2 and "unknown key(s) in the config file: muu (did you mean 'mu'?)" in err
+
+
+def test_an_api_error_names_the_option_or_the_config_key(tmp_path: Path, cli_main: CliMain) -> None:
+    """The engine's message names its parameter (``mu must be >= 0``); the command says how the
+    user gave it: ``--mu`` on the command line, ``mu (in FILE)`` in a config file."""
+    code, _, err = cli_main("simulate", "rod", "--angle", "20 deg", "--vy", "-1", "--mu", "-1")
+    assert code == 2 and err.strip() == "error: --mu must be >= 0, got -1.0"
+    cfg = tmp_path / "case.toml"
+    cfg.write_text('angle = "20 deg"\nvy = "-1 m/s"\nmu = -1.0\n')
+    code, _, err = cli_main("simulate", "--config", str(cfg))
+    assert code == 2 and f"error: mu (in {cfg}) must be >= 0" in err

@@ -5,7 +5,7 @@ from __future__ import annotations
 import json
 import math
 import tomllib
-from collections.abc import Mapping
+from collections.abc import Callable, Iterable, Mapping
 from pathlib import Path
 from typing import Any
 
@@ -49,6 +49,13 @@ class _CurrentConsole:
 
 
 console = _CurrentConsole()
+
+
+def as_option(message: str, keys: Iterable[str], label: Callable[[str], str]) -> str:
+    """``message`` with its leading parameter name among ``keys`` (``"mu must be >= 0"``, an API
+    message) spelled as the user gave it, ``label(key)`` (``"--mu must be >= 0"``)."""
+    head, _, rest = message.partition(" ")
+    return f"{label(head)} {rest}" if head in keys and rest else message
 
 
 def quantity(value: str | float | None, unit: str, name: str) -> float | None:

@@ -26,6 +26,7 @@ from impactlab.cli._common import (
     STOP_HELP,
     UserError,
     angle_quantity,
+    as_option,
     length_help,
     load_toml,
     positive,
@@ -383,7 +384,12 @@ def simulate_cmd(
 
             folder = output_folder(Path(".") if out is None else out, "--out")
         if from_file is None:
-            result = run_simulate(opt)
+            try:
+                result = run_simulate(opt)
+            except UserError:
+                raise
+            except ValueError as exc:  # the API's message names its parameter: name the option
+                raise UserError(as_option(str(exc), _KEYS, opt.label)) from None
         report_result(result, out=folder, as_json=as_json)
 
 

@@ -54,7 +54,7 @@ def drop_rtol(rtol: Any) -> float:
 def check_stop(stop: Any, t_max: Any) -> tuple[float, int]:
     """(t_max [s], the compiled stop mode)."""
     if stop not in STOP_MODES:
-        raise ValueError(f"stop must be one of {STOP_MODES}, got {stop!r}")
+        raise ValueError(f"stop must be one of {', '.join(STOP_MODES)}, got {stop!r}")
     return check_positive("t_max", t_max, "s"), STOP_MODES.index(stop)
 
 
