@@ -73,3 +73,19 @@ def test_errors_are_one_line(template, tmp_path):
         r = runner.invoke(app, args)
         assert isinstance(r.exception, ValueError | FileNotFoundError), (args, r.output)
         assert text in str(r.exception) and "\n" not in str(r.exception)
+
+
+def test_piped_tables_keep_every_cell_whole(template, tmp_path, monkeypatch):
+    """Not a terminal (a pipe, a file): the tables are as wide as their cells, never cut to 80
+    columns with an ellipsis; the notes are one line each."""
+    monkeypatch.delenv("COLUMNS", raising=False)
+    path = _drops(template, tmp_path)
+    r = runner.invoke(app, ["calibrate", str(path), "-p", "mu=uniform(0, 0.6)", "-p",
+                            "flat_yield_strength=uniform(250 MPa, 350 MPa)", "-m",
+                            "ghaednia/coulomb", "-m", "jackson-green/coulomb", "--walkers", "8",
+                            "--steps", "10", "--quiet"])  # fmt: skip
+    assert r.exit_code == 0, r.output
+    assert "\u2026" not in r.stdout  # no ellipsis
+    assert "| jackson-green/coulomb |" in r.stdout.replace("\u2502", "|")
+    assert "| flat_yield_strength |" in r.stdout.replace("\u2502", "|")
+    assert "not converged" in r.stdout

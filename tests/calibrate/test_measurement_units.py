@@ -1,5 +1,5 @@
 """The measurements file's units and the drops it refuses: each input in its own unit (a Brinell
-hardness in kgf/mm^2), an uncertainty in its quantity's unit, implausible magnitudes, the
+hardness in kgf/mm^2, or HB), an uncertainty in its quantity's unit, implausible magnitudes, the
 velocity given once, a rod's and a sphere's own inputs, columns given twice and NaN."""
 
 from __future__ import annotations
@@ -44,10 +44,41 @@ def test_a_brinell_hardness_is_read_in_its_own_unit(tmp_path):
     assert back.inputs["flat_brinell_hardness"][0] == 105.0
 
 
+def test_hb_is_the_unit_of_a_brinell_hardness(tmp_path):
+    """HB and HBW (a Brinell number: kgf/mm^2) in a header, a value, the [units] table."""
+    header = read(_csv(tmp_path, "flat_brinell_hardness [HB]", "105", "a.csv"))
+    value = read(_csv(tmp_path, "flat_brinell_hardness", "105 HB", "b.csv"))
+    toml = tmp_path / "c.toml"
+    toml.write_text('[units]\nflat_brinell_hardness = "HBW"\n[[drop]]\nangle = "20 deg"\n'
+                    'vy = -1.41\nmu = 0.2\nflat_brinell_hardness = 105\ne = 0.45\n'
+                    'e_sigma = 0.02\n')  # fmt: skip
+    for m in (header, value, read(toml), _one(flat_brinell_hardness="HBW 105")):
+        assert m.inputs["flat_brinell_hardness"][0] == 105.0
+    with pytest.raises(ValueError, match=r"flat_yield_strength: '300 HB' is a Brinell hardness "
+                       r"\(HB\), not a quantity of Pa"):  # fmt: skip
+        _one(flat_yield_strength="300 HB")
+
+
+def test_implausible_input_magnitudes_are_refused(tmp_path):
+    """A unit left out of a drop's input: a yield strength of 300 Pa, a tip radius of 4 m."""
+    for header, row, match in (
+        ("flat_yield_strength", "300",
+         r"drop 1 \(a\), column 'flat_yield_strength': flat_yield_strength = 300 Pa is below "
+         r"100000 Pa: an implausible magnitude .*give its unit, e.g. '300 MPa'"),
+        ("tip_radius", "4", r"tip_radius = 4 m is above 1 m: .* e.g. '4 mm'"),
+        ("flat_brinell_hardness", "1.03e9",
+         r"flat_brinell_hardness = 1.03e\+09 kgf/mm\^2 is above"),
+    ):  # fmt: skip
+        with pytest.raises(ValueError, match=match):
+            read(_csv(tmp_path, header, row))
+    assert read(_csv(tmp_path, "flat_yield_strength [MPa]", "300")).inputs[
+        "flat_yield_strength"][0] == 3e8  # fmt: skip
+
+
 def test_a_brinell_prior_is_in_kgf_per_mm2():
     p = parse_parameter("flat_brinell_hardness", "uniform(50, 200)")
     assert (p.low, p.high) == (50.0, 200.0)
-    assert p.describe() == "uniform(50, 200) kgf/mm^2"
+    assert p.describe() == "uniform(50 kgf/mm^2, 200 kgf/mm^2)"
     q = parse_parameter("flat_brinell_hardness", "uniform(50 kgf/mm^2, 1 GPa)")
     assert q.high == pytest.approx(1e9 / 9.80665e6)
 

@@ -1,6 +1,7 @@
 """Candidate models from tables (a calibration file's ``[[model]]``): known keys, fixed inputs
-read in their unit and range-checked; the calibration file's own checks; what a calibration
-refuses between the models, the parameters and the drops; the settings it records."""
+read in their unit, range- and magnitude-checked, and said when the model does not use them;
+the calibration file's own checks; what a calibration refuses between the models, the
+parameters and the drops; the settings it records."""
 
 from __future__ import annotations
 
@@ -10,7 +11,13 @@ import numpy as np
 import pytest
 
 from impactlab._json import shape_problems
-from impactlab.calibrate import CandidateModel, Measurements, calibrate, parse_model
+from impactlab.calibrate import (
+    CalibrationWarning,
+    CandidateModel,
+    Measurements,
+    calibrate,
+    parse_model,
+)
 from impactlab.calibrate import parse_parameter as prior
 from impactlab.calibrate.config import load_config
 from impactlab.calibrate.jsonout import calibration_json
@@ -33,6 +40,10 @@ MU = prior("mu", "uniform(0, 0.6)")
          r"fixed flat_yield_strength: flat_yield_strength: '300 kg' has the wrong dimension"),
         ({"law": "ghaednia", "fixed": {"angle": "20 deg"}}, "fixed 'angle' is not an input"),
         ({"law": "ghaednia", "fixed": 0.05}, "fixed must be a table of input = value"),
+        ({"law": "ghaednia", "fixed": {"flat_yield_strength": 300}},
+         r"model 'ghaednia/coulomb', fixed flat_yield_strength: flat_yield_strength = 300 Pa is "
+         r"below 100000 Pa: an implausible magnitude .*give its unit, e.g. '300 MPa'"),
+        ({"law": "ghaednia", "fixed": {"flat_E": 200}}, r"fixed flat_E: .*e.g. '200 GPa'"),
     ],
 )  # fmt: skip
 def test_bad_model_tables_name_the_key(spec, match):
@@ -45,6 +56,25 @@ def test_fixed_values_take_units():
     m = parse_model({"law": "ghaednia", "fixed": {"flat_yield_strength": "300 MPa",
                                                    "flat_brinell_hardness": 105}})  # fmt: skip
     assert m.fixed == {"flat_yield_strength": 3e8, "flat_brinell_hardness": 105.0}
+
+
+def test_a_fixed_input_the_model_does_not_use_is_said(template):
+    """A rigid body's damping, a Brinell hardness under Ghaednia's law (it reads S_y): each a
+    warning naming the model and the input; a fixed input the model uses is not."""
+    data = synthetic_measurements(template, CandidateModel(), [MU], [0.15],
+                                  np.random.default_rng(0))  # fmt: skip
+    model = CandidateModel(fixed={"damping": 0.05, "flat_brinell_hardness": "105 HB",
+                                  "flat_yield_strength": "300 MPa"})  # fmt: skip
+    with pytest.warns(CalibrationWarning) as caught:
+        cal = calibrate(data, [MU], [model], walkers=4, steps=10, n_ppc=0)
+    said = [w for w in cal.warnings if "does not use its fixed" in w]
+    assert said == [
+        "model 'ghaednia/coulomb' does not use its fixed damping (= 0.05): it changes none of "
+        "the model's predictions of the measured values; remove it",
+        "model 'ghaednia/coulomb' does not use its fixed flat_brinell_hardness (= 105 "
+        "kgf/mm^2): it changes none of the model's predictions of the measured values; remove it",
+    ]
+    assert sum("does not use its fixed" in str(w.message) for w in caught) == 2
 
 
 def _config(tmp_path, sampler: str, extra: str = "") -> object:
@@ -130,4 +160,9 @@ def test_the_settings_hold_the_engine_and_the_models(template):
     fixed = doc["settings"]["model_definitions"]["sy300"]["fixed"]
     assert fixed == {"flat_yield_strength": {"value": 3e8, "unit": "Pa"}}
     assert doc["settings"]["engine"]["gravity"] == {"value": 9.81, "unit": "m/s^2"}
+    again = parse_model(doc["settings"]["model_definitions"]["sy300"])  # as a [[model]] table
+    assert again.fixed == model.fixed
+    hb = {"flat_brinell_hardness": {"value": 105.0, "unit": "kgf/mm^2"}, "damping": {
+        "value": 0.05, "unit": "1"}}  # fmt: skip
+    assert parse_model({"fixed": hb}).fixed == {"flat_brinell_hardness": 105.0, "damping": 0.05}
     assert doc["models"]["sy300"]["parameters"]["mu"]["tau"]["unit"] == "steps"

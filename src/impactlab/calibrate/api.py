@@ -17,8 +17,10 @@ from impactlab.calibrate.input_checks import (
     check_calibration_inputs,
     parameter_usage,
     sampler_settings,
+    unused_fixed,
 )
 from impactlab.calibrate.input_checks import parameters as free_parameters
+from impactlab.calibrate.measurement_rows import unit_text
 from impactlab.calibrate.measurements import Measurements, read_measurements
 from impactlab.calibrate.model_specs import model_definition, parse_model
 from impactlab.calibrate.models import CandidateModel
@@ -31,6 +33,7 @@ from impactlab.calibrate.statelock import state_lock
 from impactlab.dynamics.input_checks import gravity_value
 from impactlab.references import cite
 from impactlab.sweep.engine import ENGINE, Evaluator
+from impactlab.sweep.inputs import INPUTS
 from impactlab.sweep.options import EngineOptions
 
 __all__ = ["REFERENCES", "Calibration", "CalibrationWarning", "calibrate", "parse_model"]
@@ -234,6 +237,13 @@ def _calibrate(
             for n in names
             if not usage[n][j]
         ]
+    notes += [
+        f"model {c.name!r} does not use its fixed {k} (= {c.fixed[k]:g}"
+        f"{unit_text(INPUTS[k].unit)}): it changes none of the model's predictions of the "
+        "measured values; remove it"
+        for c in cands
+        for k in unused_fixed(c, meas, params, evaluator, eng)
+    ]
     for text in notes:
         warnings.warn(text, CalibrationWarning, stacklevel=3)
     run = _Run(meas, params, evaluator, eng, nw, steps, nburn, seed, restart, n_ppc)

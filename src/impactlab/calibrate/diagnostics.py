@@ -24,11 +24,17 @@ __all__ = [
     "misfit_text",
     "misfits",
     "shown",
+    "steps_needed",
 ]
 
-#: R-hat above this: the walkers have not mixed.
+#: R-hat (rank-normalised split R-hat, the walkers as chains) above this: the walkers have not
+#: mixed. Vehtari et al. (2021) ask < 1.01 of independent chains; an ensemble's walkers are not
+#: independent, and over a kept chain of 50 autocorrelation times (below) R-hat over walkers
+#: still lies a little above 1, so the looser 1.05 (Gelman et al.'s 1.1 is looser still).
 RHAT_MAX = 1.05
-#: A chain shorter than this many autocorrelation times is too short (emcee's advice).
+#: The kept chain (after burn-in) must be this many autocorrelation times long: emcee's
+#: ``integrated_time`` trusts its estimate of tau (and so the effective sample size) only then
+#: (its ``tol``, 50; Foreman-Mackey et al., emcee's docs "Autocorrelation analysis").
 TAU_MULTIPLE = 50
 #: The outer share of a prior's mass at each bound, and the share of posterior draws in it
 #: above which the posterior lies against that bound (2.5 times the prior's own share: a
@@ -37,26 +43,48 @@ EDGE_MASS = 0.02
 EDGE_SHARE = 0.05
 
 
-def convergence_notes(summary: Mapping[str, Mapping[str, float]], steps: int) -> list[str]:
-    """One line per parameter whose chain has not converged (R-hat > RHAT_MAX, shorter than
-    TAU_MULTIPLE autocorrelation times) or cannot be assessed (too few draws per walker:
-    R-hat, ESS or the autocorrelation time is not a number)."""
+def steps_needed(tau: float, burn: int) -> int:
+    """The steps (burn-in included) that keep TAU_MULTIPLE autocorrelation times ``tau`` after a
+    burn-in of ``burn`` steps, rounded up to two significant digits (1780 -> 1800)."""
+    total = burn + math.ceil(TAU_MULTIPLE * tau)
+    step = 10 ** max(math.floor(math.log10(total)) - 1, 0)
+    return int(math.ceil(total / step) * step)
+
+
+def convergence_notes(
+    summary: Mapping[str, Mapping[str, float]], kept: int, burn: int, draws: int
+) -> list[str]:
+    """One line per parameter whose chain has not converged (R-hat > RHAT_MAX; a chain of
+    ``kept`` steps after a burn-in of ``burn`` shorter than TAU_MULTIPLE autocorrelation times,
+    with the steps that would do) or cannot be assessed (too few draws per walker: R-hat, ESS
+    or the autocorrelation time is not a number; an ESS is NaN too where ArviZ's estimate
+    exceeded the ``draws``, all walkers' kept steps)."""
     notes = []
     for n, s in summary.items():
-        if not (math.isfinite(s["rhat"]) and math.isfinite(s["ess_bulk"])):
+        if not math.isfinite(s["rhat"]):
             notes.append(
                 f"{n}: R-hat and ESS not assessable (too few draws per walker after burn-in; "
                 "ArviZ needs at least 4): convergence unknown, run more steps"
             )
-        elif s["rhat"] > RHAT_MAX:
-            notes.append(f"{n}: R-hat {s['rhat']:.3f} > {RHAT_MAX} (run more steps)")
-        if not math.isfinite(s["tau"]):
+        else:
+            if not math.isfinite(s["ess_bulk"]):
+                notes.append(
+                    f"{n}: ESS not assessable (the estimate exceeds the {draws} draws after "
+                    "burn-in: too short a chain to estimate it): run more steps"
+                )
+            if s["rhat"] > RHAT_MAX:
+                notes.append(f"{n}: R-hat {s['rhat']:.3f} > {RHAT_MAX} (run more steps)")
+        tau = s["tau"]
+        if not (math.isfinite(tau) and tau > 0):
             notes.append(
                 f"{n}: autocorrelation time not assessable (chain too short): run more steps"
             )
-        elif s["tau"] * TAU_MULTIPLE > steps:
+        elif tau * TAU_MULTIPLE > kept:
             notes.append(
-                f"{n}: chain shorter than {TAU_MULTIPLE} autocorrelation times ({s['tau']:.0f})"
+                f"{n}: the chain is {kept} steps after burn-in, "
+                f"{format_number(kept / tau, 2)} autocorrelation times (tau = "
+                f"{format_number(tau, 2)} steps); {TAU_MULTIPLE} are needed: run about "
+                f"{steps_needed(tau, burn)} steps with burn {burn}"
             )
     return notes
 

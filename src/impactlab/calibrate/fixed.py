@@ -1,12 +1,15 @@
 """The inputs a candidate model fixes for every drop (``CandidateModel.fixed``, a ``[[model]]``
 table's ``fixed``): known names (a misspelt one is refused with the nearest), values with units
-read in the input's own unit, and the single impact's allowed range (``sweep.dimensions``)."""
+(or results.json's quantity objects) read in the input's own unit, the single impact's allowed
+range (``sweep.dimensions``) and a plausible magnitude (``input_magnitudes``: a bare
+``flat_yield_strength = 300`` is 300 Pa)."""
 
 from __future__ import annotations
 
 from collections.abc import Mapping
 from typing import Any
 
+from impactlab.calibrate.input_magnitudes import check_magnitude
 from impactlab.calibrate.quantities import KINEMATICS, NUMERIC_INPUTS
 from impactlab.calibrate.values import did_you_mean, to_unit
 from impactlab.sweep.dimensions import check_allowed
@@ -18,10 +21,22 @@ __all__ = ["FIXABLE", "fixed_values"]
 FIXABLE: tuple[str, ...] = tuple(n for n in NUMERIC_INPUTS if n not in KINEMATICS)
 
 
+def _quantity_object(v: Any) -> Any:
+    """A quantity object of results.json (``{"value": 3e8, "unit": "Pa"}``) as the text of
+    that quantity (``"300000000.0 Pa"``); anything else as it is."""
+    if isinstance(v, Mapping) and set(v) == {"value", "unit"}:
+        value, unit = v["value"], str(v["unit"])
+        if isinstance(value, int | float) and not isinstance(value, bool):
+            return value if unit in ("", "1") else f"{float(value)!r} {unit}"
+    return v
+
+
 def fixed_values(model: str, fixed: Any) -> dict[str, float]:
-    """``fixed`` (input name -> a number in the input's unit or a quantity string, ``"300
-    MPa"``) as numbers in each input's unit. ValueError naming the model and the key for an
-    unknown name, an unreadable value or one outside the input's allowed range."""
+    """``fixed`` (input name -> a number in the input's unit, a quantity string, ``"300
+    MPa"``, or a quantity object of results.json, ``{"value": 3e8, "unit": "Pa"}``) as numbers
+    in each input's unit. ValueError naming the model and the key for an unknown name, an
+    unreadable value, one outside the input's allowed range or an implausible magnitude (a unit
+    left out)."""
     if not isinstance(fixed, Mapping):
         raise ValueError(
             f"model {model!r}: fixed must be a table of input = value (e.g. "
@@ -36,6 +51,7 @@ def fixed_values(model: str, fixed: Any) -> dict[str, float]:
                 f"{did_you_mean(name, FIXABLE)}; known: {', '.join(FIXABLE)}"
             )
         where = f"model {model!r}, fixed {name}"
+        v = _quantity_object(v)
         if isinstance(v, bool) or not isinstance(v, int | float | str):
             raise ValueError(f"{where}: expected a number or a quantity string, got {v!r}")
         try:
@@ -43,5 +59,6 @@ def fixed_values(model: str, fixed: Any) -> dict[str, float]:
         except ValueError as exc:
             raise ValueError(f"{where}: {exc}") from None
         check_allowed(name, [x], where)
+        check_magnitude(name, x, INPUTS[name].unit, where)
         out[name] = x
     return out

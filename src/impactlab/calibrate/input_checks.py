@@ -1,10 +1,11 @@
 """What ``calibrate`` checks before it samples: the free parameters, the sampler's settings,
 the drops' inputs against the parameters and models (mu given or free, one material property
-for drops on one material, an input not both fixed and free) and which model uses which
-parameter."""
+for drops on one material, an input not both fixed and free), which model uses which
+parameter and which fixed input changes none of a model's predictions."""
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import operator
 from collections.abc import Mapping, Sequence
@@ -15,10 +16,17 @@ import numpy as np
 from impactlab.calibrate.measurements import Measurements
 from impactlab.calibrate.models import CandidateModel, predict
 from impactlab.calibrate.priors import Parameter, parse_parameter
+from impactlab.sweep.dimensions import check_allowed
 from impactlab.sweep.engine import Evaluator
 from impactlab.sweep.inputs import MATERIAL_OVERRIDES
 
-__all__ = ["check_calibration_inputs", "parameter_usage", "parameters", "sampler_settings"]
+__all__ = [
+    "check_calibration_inputs",
+    "parameter_usage",
+    "parameters",
+    "sampler_settings",
+    "unused_fixed",
+]
 
 #: The largest seed (numpy's legacy RandomState, which emcee's moves use, takes 32 bits).
 MAX_SEED = 2**32 - 1
@@ -156,3 +164,47 @@ def parameter_usage(
         all_failed = bool((pred.status[idx] != 0).all())
         used.append(not same or all_failed)
     return used
+
+
+def _moved(name: str, x: float) -> float | None:
+    """Another value of input ``name`` near ``x`` that its range allows (x +- 20 %, +- 0.1 or,
+    for a count, +- 1), or None."""
+    for y in (x * 1.2, x * 0.8, x + 0.1, x - 0.1, x + 1.0, x - 1.0):
+        try:
+            check_allowed(name, [y], name)
+        except ValueError:
+            continue
+        if y != x:
+            return y
+    return None
+
+
+def unused_fixed(
+    model: CandidateModel,
+    meas: Measurements,
+    params: Sequence[Parameter],
+    evaluator: Evaluator,
+    engine: Mapping[str, Any],
+) -> list[str]:
+    """The inputs ``model`` fixes that change none of its predictions of the measured values
+    (each moved by about 20 %, the free parameters at their prior medians): a rigid body's
+    ``damping``, a Brinell hardness under a law that does not read it. One evaluation of the
+    drops per fixed input, and one. (Cases that all fail tell nothing: counted as used.)"""
+    if not model.fixed:
+        return []
+    theta = np.array([[float(p.quantile(0.5)) for p in params]])
+    base = predict(model, meas, params, theta, evaluator=evaluator, engine=engine)
+    if (base.status != 0).all():
+        return []
+    unused = []
+    for name, x in model.fixed.items():
+        y = _moved(name, float(x))
+        if y is None:
+            continue
+        other = dataclasses.replace(model, fixed={**model.fixed, name: y})
+        pred = predict(other, meas, params, theta, evaluator=evaluator, engine=engine)
+        if np.array_equal(pred.status, base.status) and all(
+            np.array_equal(pred.values[q], v, equal_nan=True) for q, v in base.values.items()
+        ):
+            unused.append(name)
+    return unused

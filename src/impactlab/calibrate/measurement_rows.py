@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from impactlab.bodies import PAPER_ROD
+from impactlab.calibrate.input_magnitudes import check_magnitude
 from impactlab.calibrate.quantities import (
     AMBIGUOUS,
     DROP_CATEGORIES,
@@ -281,9 +282,11 @@ def _check_row(where: str, row: Row, nan: set[str]) -> None:
 
 def _check_inputs(where: str, row: Row) -> None:
     """The values a single impact refuses (the sweep's rules: ``sweep.dimensions``): an angle
-    of a rod outside (0, 90] deg, mu < 0, a size, mass or material property <= 0, ..."""
+    of a rod outside (0, 90] deg, mu < 0, a size, mass or material property <= 0, ...; and
+    implausible magnitudes, a unit left out (``input_magnitudes``: a yield strength of 300 Pa)."""
     for name, x in row.inputs.items():
         check_allowed(name, [x], f"{where}, column {name!r}")
+        check_magnitude(name, x, INPUTS[name].unit, f"{where}, column {name!r}")
     if row.categories.get("body", "rod") != "sphere":
         check_rod_angles([row.inputs["angle"]], f"{where}, column 'angle'")
 

@@ -6,11 +6,12 @@ every drop. Its prior is one of
 
 - ``uniform(low, high)``, ``loguniform(low, high)`` (``low > 0``),
 - ``normal(mean, sd)`` or ``normal(mean, sd, low, high)`` (truncated to [low, high] and to the
-  parameter's possible range),
+  parameter's possible range; a bound may be ``inf`` or ``-inf``, an open end),
 
 with values in the input's unit (SI; the Brinell hardness in kgf/mm^2, as the sweep stores it) or
-as quantity strings (``"uniform(100 MPa, 1 GPa)"``).
-scipy.stats gives the densities and draws.
+as quantity strings (``"uniform(100 MPa, 1 GPa)"``; a Brinell hardness also ``"105 HB"``).
+``Parameter.describe`` writes a prior in this form (``parse_parameter`` reads it back to the same
+numbers). scipy.stats gives the densities and draws.
 """
 
 from __future__ import annotations
@@ -24,6 +25,7 @@ from typing import Any
 import numpy as np
 from scipy import stats
 
+from impactlab._display import display_unit
 from impactlab.calibrate.quantities import KINEMATICS, NUMERIC_INPUTS
 from impactlab.calibrate.values import did_you_mean, to_unit
 from impactlab.sweep.inputs import INPUTS
@@ -151,21 +153,56 @@ class Parameter:
         return np.clip(x, self.low, self.high)  # scipy's ppf may round past a bound
 
     def describe(self) -> str:
-        """``"uniform(1e+08, 1e+09) Pa"`` and the like."""
-        if self.kind == "normal":
-            return (
-                f"normal({self.mean:g}, {self.sd:g}) in [{self.low:g}, {self.high:g}] {self.unit}"
-            )
-        return f"{self.kind}({self.low:g}, {self.high:g}) {self.unit}"
+        """The prior as ``-p`` and ``[parameters]`` read it (``parse_parameter`` gives this
+        parameter back): ``"uniform(100 MPa, 1000 MPa)"``, ``"uniform(0, 0.6)"``,
+        ``"normal(0.2, 0.05)"`` (bounds only where they cut more than the possible range),
+        ``"uniform(50 kgf/mm^2, 200 kgf/mm^2)"``."""
+        if self.kind != "normal":
+            return f"{self.kind}({self._text(self.low)}, {self._text(self.high)})"
+        head = f"normal({self._text(self.mean)}, {self._text(self.sd)}"
+        if (self.low, self.high) == possible_range(self.name):
+            return f"{head})"
+        return f"{head}, {self._text(self.low)}, {self._text(self.high)})"
+
+    def _text(self, x: float) -> str:
+        """``x`` (in ``unit``) as a value ``parse_parameter`` reads back to the same float: in
+        the display unit where that holds (``"100 MPa"``), else in ``unit``; ``inf``, ``-inf``
+        bare (the open end of a truncated normal)."""
+        if not math.isfinite(x):
+            return "inf" if x > 0 else "-inf"
+        if self.unit in ("", "1"):
+            return _number(x)
+        shown = display_unit(self.name, self.unit)
+        for text in (f"{_number(x * shown.scale)} {shown.unit}", f"{_number(x)} {self.unit}"):
+            try:
+                if to_unit(text, self.unit, name=self.name) == x:
+                    return text
+            except ValueError:
+                continue
+        return f"{_number(x)} {self.unit}"
+
+
+def _number(x: float) -> str:
+    """The shortest text of ``x`` that reads back to it (``100``, ``0.6``, ``1e-05``)."""
+    text = repr(float(x))
+    return text.removesuffix(".0")
 
 
 _SPEC = re.compile(r"^\s*([a-z]+)\s*\((.*)\)\s*$")
 
 
+def _value(text: str, unit: str, name: str, *, bound: bool) -> float:
+    """A number of a prior text in ``unit``; a bound of a truncated normal may be ``inf`` or
+    ``-inf`` (an open end, as ``describe`` writes it)."""
+    if bound and text.lower().lstrip("+") in ("inf", "-inf"):
+        return -math.inf if text.startswith("-") else math.inf
+    return to_unit(text, unit, name=name)
+
+
 def parse_parameter(name: str, spec: Any) -> Parameter:
-    """A Parameter from a prior text, ``"uniform(100 MPa, 1 GPa)"``, or a mapping
-    ``{"prior": "normal", "mean": ..., "sd": ..., "low": ..., "high": ...}``; bare numbers are
-    in the input's unit (``Parameter.unit``)."""
+    """A Parameter from a prior text, ``"uniform(100 MPa, 1 GPa)"`` (what
+    ``Parameter.describe`` writes), or a mapping ``{"prior": "normal", "mean": ..., "sd": ...,
+    "low": ..., "high": ...}``; bare numbers are in the input's unit (``Parameter.unit``)."""
     unit = INPUTS[name].unit if name in INPUTS else "1"
     if isinstance(spec, dict):
         kind = str(spec.get("prior", "uniform"))
@@ -187,7 +224,7 @@ def parse_parameter(name: str, spec: Any) -> Parameter:
     kind, args = m.group(1), [a.strip() for a in m.group(2).split(",") if a.strip()]
     if kind not in PRIOR_KINDS:
         raise ValueError(f"prior of {name}: unknown kind {kind!r}; known: {', '.join(PRIOR_KINDS)}")
-    values = [to_unit(a, unit, name=name) for a in args]
+    values = [_value(a, unit, name, bound=i >= 2) for i, a in enumerate(args)]
     if kind in ("uniform", "loguniform") and len(values) == 2:
         return Parameter(name, kind, low=values[0], high=values[1])
     if kind == "normal" and len(values) in (2, 4):

@@ -4,6 +4,7 @@ posterior predictive checks (ArviZ for R-hat, ESS and PSIS-LOO)."""
 from __future__ import annotations
 
 import logging
+import math
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -104,6 +105,13 @@ class ModelPosterior:
 
 
 def _loo(idata: Any) -> tuple[dict[str, float], list[str]]:
+    """PSIS-LOO over drops, and the notes to show: drops with Pareto k > 0.7, one drop only,
+    a result that is not finite. numpy's overflow warnings from inside ArviZ's smoothing are
+    dropped: ``exp`` of the differences of the Pareto fit's log likelihoods over its grid (more
+    than 709) gives that grid point the weight 0, its right limit (the loo package computes the
+    same in log space), and ``expm1`` of a tail with a shape k far above 0.7 gives weights that
+    ArviZ truncates to the largest raw one; what they point at, a tail the smoothing cannot
+    tame, is the Pareto k note."""
     with recording() as caught:
         try:
             r = az.loo(idata, pointwise=True)
@@ -118,14 +126,22 @@ def _loo(idata: Any) -> tuple[dict[str, float], list[str]]:
         "n_bad_k": int(np.sum(k > 0.7)),
     }
     notes = [f"PSIS-LOO: {out['n_bad_k']} drop(s) with Pareto k > 0.7"] if out["n_bad_k"] else []
+    if not (math.isfinite(out["elpd"]) and math.isfinite(out["se"])):
+        notes.append(
+            f"PSIS-LOO: elpd_loo = {out['elpd']:g} +- {out['se']:g} is not a finite number: "
+            "this model's rank is unreliable"
+        )
     for w in caught:
         text = str(w.message).splitlines()[0]
-        if "Pareto" in text:
+        if "Pareto" in text or (
+            issubclass(w.category, RuntimeWarning) and text.startswith("overflow encountered")
+        ):
             continue
         if "point-wise LOO is the same with the sum LOO" in text:  # ArviZ, one observation
             text = "PSIS-LOO with one drop: leaving it out leaves no data, so elpd_loo does not "
             text += "rank the models (give at least two drops)"
-        notes.append(text)
+        if text not in notes:
+            notes.append(text)
     return out, notes
 
 
@@ -181,6 +197,13 @@ def _autocorr_time(chain: np.ndarray) -> np.ndarray:
         logger.setLevel(level)
 
 
+def _assessable_ess(ess: float, draws: int) -> float:
+    """ArviZ's bulk ESS, or NaN (not assessable) where it exceeds the number of ``draws``: the
+    draws of an ensemble are positively correlated, and ArviZ reports up to N log10 N (80.7
+    of 48 draws) when a chain is too short to estimate it."""
+    return ess if ess <= draws else math.nan
+
+
 def summarise(
     post: LogPosterior,
     sampler: emcee.EnsembleSampler,
@@ -217,7 +240,7 @@ def summarise(
             "q05": float(q05),
             "q95": float(q95),
             "rhat": float(rhat[n]),
-            "ess_bulk": float(ess[n]),
+            "ess_bulk": _assessable_ess(float(ess[n]), x.size),
             "tau": float(tau[j]),
         }
     i_best = np.unravel_index(np.argmax(logp), logp.shape)
@@ -226,7 +249,7 @@ def summarise(
         idata = az.from_dict(log_likelihood={"drops": log_lik})
         idata.add_groups(posterior=post_idata.posterior)
     loo, notes = _loo(idata)
-    unconverged = convergence_notes(summary, steps)
+    unconverged = convergence_notes(summary, chain.shape[0], burn, samples.shape[0])
     notes += unconverged
     if saved > steps:
         notes.append(

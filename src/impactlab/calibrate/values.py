@@ -1,16 +1,23 @@
 """Numbers of a calibration read in each input's own unit, as the sweep stores them
-(``impactlab.sweep.inputs``: SI, except the Brinell hardness in kgf/mm^2), and the near names
-offered for a misspelt key (``impactlab._validation.did_you_mean``)."""
+(``impactlab.sweep.inputs``: SI, except the Brinell hardness in kgf/mm^2, which may also be
+written ``"105 HB"`` or ``"105 HBW"``: a Brinell number is kgf/mm^2), and the near names offered
+for a misspelt key (``impactlab._validation.did_you_mean``)."""
 
 from __future__ import annotations
 
+import re
 from functools import cache
 from typing import Any
 
 from impactlab._validation import did_you_mean
 from impactlab.units import magnitude, to_si
 
-__all__ = ["bare", "did_you_mean", "is_number", "to_unit"]
+__all__ = ["BRINELL_UNIT", "bare", "did_you_mean", "is_number", "to_unit"]
+
+#: The unit of a Brinell hardness (``impactlab.sweep.inputs``): its number HB is in kgf/mm^2.
+BRINELL_UNIT = "kgf/mm^2"
+#: A Brinell hardness written with its symbol: ``105 HB``, ``105 HBW`` or ``HBW 105``.
+_HB = re.compile(r"^\s*(?:(?P<a>[^\sA-Za-z][^\s]*)\s*HBW?|HBW?\s+(?P<b>\S+))\s*$")
 
 
 def is_number(text: str) -> bool:
@@ -37,11 +44,26 @@ def _si_factor(unit: str) -> float:
 
 def to_unit(value: Any, unit: str, *, name: str) -> float:
     """``value`` (a number in ``unit`` or a quantity string, ``"12 um"``) as a number in
-    ``unit`` itself, not in its SI base (a Brinell hardness stays in kgf/mm^2). ValueError
-    naming ``name`` for unparsable text, a wrong dimension or a value that is not finite."""
+    ``unit`` itself, not in its SI base (a Brinell hardness stays in kgf/mm^2, and may be
+    written ``"105 HB"``). ValueError naming ``name`` for unparsable text, a wrong dimension or a
+    value that is not finite."""
+    value = _brinell(value, unit, name)
     x = to_si(value, unit, name=name)  # parses and checks; the SI magnitude
     if _si_factor(unit) == 1.0:
         return x
     if bare(value):
         return float(value)
     return float(magnitude(name, str(value), unit))
+
+
+def _brinell(value: Any, unit: str, name: str) -> Any:
+    """A Brinell hardness written with its symbol HB or HBW (``"105 HB"``, ``"HBW 105"``) as
+    ``"105 kgf/mm^2"``; the symbol on another input is refused, naming the input."""
+    if not isinstance(value, str):
+        return value
+    m = _HB.match(value)
+    if m is None:
+        return value
+    if unit != BRINELL_UNIT:
+        raise ValueError(f"{name}: {value!r} is a Brinell hardness (HB), not a quantity of {unit}")
+    return f"{m.group('a') or m.group('b')} {BRINELL_UNIT}"

@@ -19,6 +19,7 @@ from pathlib import Path
 from typing import Annotated, Any, NoReturn
 
 import typer
+from rich.text import Text
 
 from impactlab._display import display_unit, format_number
 from impactlab._json import jsonable
@@ -84,27 +85,46 @@ def _diag(x: float, spec: str) -> str:
     return "n/a" if math.isnan(x) else format(x, spec)
 
 
+def _show(table: Any) -> None:
+    """``table`` on stdout, every cell in full: on a terminal at its width (cells wrap, never
+    cut with an ellipsis), elsewhere (a pipe, a file) as wide as the table needs: rich would
+    cut it to 80 columns."""
+    from rich.console import Console
+
+    out = Console()
+    if not out.is_terminal:
+        need = out.measure(table, options=out.options.update_width(10_000)).maximum
+        out = Console(width=max(out.width, need))
+    out.print(table)
+
+
+def _line(text: str) -> None:
+    """One line on stdout, never broken (a terminal wraps it)."""
+    console.print(Text(text), soft_wrap=True)
+
+
 def _print(cal: Any) -> None:
     from rich.table import Table
-    from rich.text import Text
 
     t = Table(title=Text("models ranked by PSIS-LOO (leave one drop out)"), header_style="bold")
     cols = ("rank", "model", "elpd_loo", "se", "elpd_diff", "dse", "weight", "Pareto k",
             "converged", "note")  # fmt: skip
     for col in cols:
-        t.add_column(col, justify="left" if col in ("model", "note") else "right")
+        t.add_column(col, justify="left" if col in ("model", "note") else "right", overflow="fold")
     for r in cal.ranking:
         t.add_row(
             str(r["rank"] + 1), Text(r["model"]), f"{r['elpd_loo']:.2f}", f"{r['se']:.2f}",
             f"{r['elpd_diff']:.2f}", f"{r['dse']:.2f}", f"{r['weight']:.2f}",
             _diag(r["pareto_k_max"], ".2f"), "yes" if r["converged"] else "no", Text(r["note"]),
         )  # fmt: skip
-    console.print(t)
+    _show(t)
     shown = set(cal.warnings)  # printed as warnings already
     for name, post in cal.posteriors.items():
         p = Table(title=Text(name), header_style="bold")
         for col in ("parameter", "median", "90 % interval", "best", "unit", "R-hat", "ESS"):
-            p.add_column(col, justify="left" if col in ("parameter", "unit") else "right")
+            p.add_column(
+                col, justify="left" if col in ("parameter", "unit") else "right", overflow="fold"
+            )
         for par in post.params:
             s, d = post.summary[par.name], display_unit(par.name, par.unit)
 
@@ -116,17 +136,15 @@ def _print(cal: Any) -> None:
                 f(post.best[par.name]), Text(d.unit), _diag(s["rhat"], ".3f"),
                 _diag(s["ess_bulk"], ".0f"),
             )  # fmt: skip
-        console.print(p)
+        _show(p)
         fails = sum(post.failures.values())
-        console.print(
-            Text(
-                f"{post.evaluations} evaluations in this run, acceptance {post.acceptance:.2f}, "
-                f"{fails} failed cases (likelihood zero)"
-            )
+        _line(
+            f"{post.evaluations} evaluations in this run, acceptance {post.acceptance:.2f}, "
+            f"{fails} failed cases (likelihood zero)"
         )
         for w in post.warnings:
             if f"{name}: {w}" not in shown:
-                console.print(Text(f"  note: {w}"))
+                _line(f"  note: {w}")
 
 
 def calibrate_cmd(

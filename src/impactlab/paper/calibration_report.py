@@ -310,7 +310,8 @@ def calibration_section(cal: Calibration | Mapping[str, Any], number: int) -> li
         f" The chains did not converge ({len(unconverged)} of them; the warnings below say "
         "which): the ranking and the intervals are provisional."
         if unconverged
-        else " Every chain that samples zeta converged (R-hat <= 1.05)."
+        else " Every chain that samples zeta converged (R-hat <= 1.05 over the walkers, and "
+        "50 autocorrelation times after the burn-in)."
     )
     fails = tuple(summary["failures"])
     warned: list[Block] = [Para("Warnings of the calibration:"), Bullets(notes)] if notes else []
