@@ -13,8 +13,8 @@ import xarray as xr
 from impactlab import schema
 from impactlab.bodies import PAPER_ROD
 from impactlab.dynamics import simulate, simulate_batch
+from impactlab.dynamics.batch_result import BatchResult
 from impactlab.dynamics.kernels.status import REGIME_NAMES, ST_BAD_ANGLE
-from impactlab.dynamics.results import BatchResult
 
 
 @pytest.fixture(scope="module")

@@ -247,3 +247,18 @@ def test_rigid_outputs_carry_max_delta_ratio() -> None:
     np.testing.assert_allclose(
         ds["max_delta_ratio"].values, [r.max_delta_ratio, b.max_delta_ratio[1]], rtol=1e-12
     )
+
+
+def test_an_impact_and_a_drop_report_their_law_range_under_the_same_keys() -> None:
+    """to_dict of an impact and of a drop both carry max_delta_ratio, fitted_delta_ratio_max,
+    fitted_range_status and extrapolated (one result family)."""
+    from impactlab.bodies import FlexibleRod
+    from impactlab.dynamics.drop import simulate_drop
+
+    keys = ("max_delta_ratio", "fitted_delta_ratio_max", "fitted_range_status", "extrapolated")
+    impact = simulate(PAPER_ROD, velocity=FAST, **PAPER).to_dict()
+    drop = simulate_drop(FlexibleRod.paper(), velocity=FAST, history=False, **PAPER).to_dict()
+    for d in (impact, drop):
+        assert all(k in d for k in keys)
+    assert impact["fitted_range_status"] == drop["fitted_range_status"] == "verified"
+    assert impact["fitted_delta_ratio_max"] == drop["fitted_delta_ratio_max"] == 1.0

@@ -16,12 +16,13 @@ from impactlab.dynamics.batch import (
     STATUS_MESSAGES,
     run_arrays,
 )
+from impactlab.dynamics.batch_result import BatchResult
 from impactlab.dynamics.drop import simulate_drop
 from impactlab.dynamics.drop_batch import DropBatchResult, simulate_drops
 from impactlab.dynamics.drop_result import ContactRecord, DropResult
 from impactlab.dynamics.kernels.layout import DEFAULT_RTOL, HISTORY_FIELDS
 from impactlab.dynamics.models import contact_model
-from impactlab.dynamics.results import BatchResult, DentMap, History, ImpactResult
+from impactlab.dynamics.results import DentMap, History, ImpactResult
 from impactlab.dynamics.simulate import rerun, simulate
 from impactlab.dynamics.simulate_many import simulate_batch
 

@@ -21,9 +21,9 @@ from impactlab.dynamics.derived import DerivedOutputs
 from impactlab.dynamics.drop_history import DROP_HISTORY_COLUMNS, DropHistory
 from impactlab.dynamics.drop_records import ContactRecord, DentRecord
 from impactlab.dynamics.history import DentMap
+from impactlab.dynamics.pint_fields import pint_quantities
 from impactlab.dynamics.provenance import result_record
 from impactlab.dynamics.result_display import ResultDisplay
-from impactlab.dynamics.results import pint_quantities
 from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
 from impactlab.references import Reference
 from impactlab.references import dois as doi_list
@@ -284,6 +284,7 @@ class DropResult(DerivedOutputs, ResultDisplay):
             d[f.name] = getattr(self, f.name)
         d["contacts"] = [c.__dict__ for c in self.contacts]
         d["dents"] = [x.__dict__ for x in self.dents]
+        d["extrapolated"] = self.extrapolated
         d["flags"] = int(self.flags)
         d["ok"] = bool(self.ok)
         d["warnings"] = list(self.warnings)

@@ -17,17 +17,11 @@ from impactlab._display import flag_names
 from impactlab._version import __version__
 from impactlab.contact.range_note import range_note
 from impactlab.contact.ranges import extrapolation, extrapolation_flags, range_status
-from impactlab.dynamics.batch_status import (
-    INTEGER_FIELDS,
-    BatchStatus,
-    flag_column,
-    integer_series,
-)
 from impactlab.dynamics.dent import dent_map
-from impactlab.dynamics.derived import DerivedOutputs, batch_derived
-from impactlab.dynamics.export import batch_dataset, batch_html
+from impactlab.dynamics.derived import DerivedOutputs
 from impactlab.dynamics.history import HISTORY_UNITS, DentMap, History, readonly_copy
-from impactlab.dynamics.kernels.layout import HISTORY_FIELDS, OUTPUT_FIELDS
+from impactlab.dynamics.kernels.layout import HISTORY_FIELDS
+from impactlab.dynamics.pint_fields import pint_quantities
 from impactlab.dynamics.provenance import result_record
 from impactlab.dynamics.result_display import ResultDisplay
 from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
@@ -38,7 +32,6 @@ __all__ = [
     "HISTORY_UNITS",
     "SUMMARY_FIELDS",
     "UNITS",
-    "BatchResult",
     "DentMap",
     "History",
     "ImpactResult",
@@ -174,8 +167,15 @@ class ImpactResult(DerivedOutputs, ResultDisplay):
         for a successful integration); ``ADVISORY_FLAGS`` (LAW_EXTRAPOLATED) leave it True."""
         return (int(self.flags) & ~ADVISORY_FLAGS) == 0
 
+    @property
+    def fitted_delta_ratio_max(self) -> float:
+        """The upper end of the law's range for the pair, in its own delta_c (verified against
+        FE, else its stand-in; inf: none), as ``DropResult.fitted_delta_ratio_max``."""
+        return float(extrapolation(self._law_id, self._law_params, self.delta_max)[1])
+
     def to_dict(self, *, include_history: bool = False) -> dict[str, Any]:
-        """Scalar fields as a plain dict (with ``max_delta_ratio`` and ``extrapolated``;
+        """Scalar fields as a plain dict (with ``max_delta_ratio``, ``fitted_delta_ratio_max``,
+        ``fitted_range_status`` and ``extrapolated``, as a drop's;
         ``flags`` as an int, ``warnings`` as a list; history as lists of columns if asked). A
         sphere's ``angle`` and ``angle_out`` are None (it has none; strict JSON has no NaN)."""
         d: dict[str, Any] = {}
@@ -187,6 +187,8 @@ class ImpactResult(DerivedOutputs, ResultDisplay):
                 v = None
             d[name] = list(v) if isinstance(v, tuple) else v
         d["max_delta_ratio"] = self.max_delta_ratio
+        d["fitted_delta_ratio_max"] = self.fitted_delta_ratio_max
+        d["fitted_range_status"] = range_status(self._law_id, self._law_params)
         d["extrapolated"] = self.extrapolated
         d["law_range"] = self.law_range
         d["flags"] = int(self.flags)
@@ -253,28 +255,6 @@ class ImpactResult(DerivedOutputs, ResultDisplay):
         return DentMap(*surface)
 
 
-def _pint_unit(unit: str) -> str:
-    return "dimensionless" if unit == "1" else unit
-
-
-def pint_quantities(result: Any, units: dict[str, str], registry: Any = None) -> dict[str, Any]:
-    """The fields of ``result`` that have a unit in ``units`` as pint Quantities (SI; a pair
-    such as ``velocity_out`` as one Quantity of an array); ``registry``: the caller's pint
-    registry (default ``impactlab.units.registry()``)."""
-    from impactlab.units import registry as shared  # pint loads on first use
-
-    ureg = shared() if registry is None else registry
-    out: dict[str, Any] = {}
-    for name, unit in units.items():
-        value = getattr(result, name, None)
-        if isinstance(value, tuple):
-            value = np.asarray(value, dtype=np.float64)
-        elif not isinstance(value, float | int) or isinstance(value, bool):
-            continue
-        out[name] = ureg.Quantity(value, _pint_unit(unit))
-    return out
-
-
 def assemble_result(values: dict[str, Any]) -> ImpactResult:
     """``ImpactResult(**values)`` without the generated ``__init__`` (``dynamics.outcome``):
     ``values`` holds every field in field order, ``flags`` the ``ResultFlag`` that
@@ -282,124 +262,3 @@ def assemble_result(values: dict[str, Any]) -> ImpactResult:
     result = object.__new__(ImpactResult)
     result.__dict__.update(values)
     return result
-
-
-@dataclass(frozen=True, eq=False)
-class BatchResult(BatchStatus):
-    """Results of ``simulate_batch``: ``out`` (N, len(OUTPUT_FIELDS)) and ``status`` (N,).
-
-    Fields are available by name (``batch["e"]`` or ``batch.e``); cases with a non-zero status
-    hold NaN results (see ``messages``), except the incoming ``vn_in`` and ``vt_in``, which are
-    kept wherever the inputs define them (a case refused for ``vn_in >= 0`` shows why).
-    ``references`` are the sources the batch used (contact law, friction model if any mu > 0,
-    the integrator); ``dois()`` their DOIs.
-    """
-
-    out: np.ndarray = field(repr=False)
-    status: np.ndarray = field(repr=False)
-    inputs: dict[str, np.ndarray] = field(repr=False)
-    law: str
-    friction: str
-    references: tuple[Reference, ...] = field(default=(), repr=False)
-    #: delta_max / delta_c of each case (NaN where it failed; None: not computed)
-    max_delta_ratio: np.ndarray | None = field(default=None, repr=False)
-    #: the range the law is held to for the batch's pair, one line (``contact.range_note``:
-    #: verified against FE up to ..., or unverified and why); None: not known
-    law_range: str | None = field(default=None, repr=False)
-
-    def __post_init__(self) -> None:
-        object.__setattr__(self, "out", readonly_copy(self.out))
-        object.__setattr__(self, "status", readonly_copy(self.status, np.int32))
-        object.__setattr__(self, "inputs", {k: readonly_copy(v) for k, v in self.inputs.items()})
-
-    def __len__(self) -> int:
-        return int(self.status.shape[0])
-
-    def __getitem__(self, name: str) -> np.ndarray:
-        try:
-            return self.out[:, OUTPUT_FIELDS.index(name)]
-        except ValueError:
-            if name in self.inputs:
-                return self.inputs[name]
-            if name in schema.DERIVED_FIELDS:
-                return batch_derived(self.__getitem__, name)
-            known = ", ".join((*OUTPUT_FIELDS, *schema.DERIVED_FIELDS))
-            raise KeyError(f"unknown field {name!r}; known: {known}") from None
-
-    def __getattr__(self, name: str) -> np.ndarray:
-        if name.startswith("_") or name in (
-            "out",
-            "status",
-            "inputs",
-            "law",
-            "friction",
-            "references",
-            "law_range",
-        ):
-            raise AttributeError(name)
-        try:
-            return self[name]
-        except KeyError:
-            raise AttributeError(name) from None
-
-    def dois(self) -> tuple[str, ...]:
-        """DOIs of ``references``, in order, without repeats."""
-        return doi_list(self.references)
-
-    @property
-    def flags(self) -> np.ndarray:
-        """The ``ResultFlag`` bitmask of each case (int64; 0 for failed cases, whose status
-        says why)."""
-        return flag_column(self.out[:, OUTPUT_FIELDS.index("flags")])
-
-    @property
-    def velocity_out(self) -> tuple[np.ndarray, np.ndarray]:
-        """(vx_out, vy_out) of the centre of mass after the impact [m/s], as
-        ``ImpactResult.velocity_out`` and ``DropBatchResult.velocity_out``."""
-        return self["vx_out"], self["vy_out"]
-
-    def to_dataframe(self) -> Any:
-        """A pandas DataFrame: inputs, outputs and status per case (``regime``, ``flags`` and
-        ``n_steps`` as nullable integers, ``<NA>`` where a case failed)."""
-        import pandas as pd  # heavy, needed only here
-
-        df = pd.DataFrame({k: np.array(v) for k, v in self.inputs.items()})
-        for j, name in enumerate(OUTPUT_FIELDS):
-            if name in INTEGER_FIELDS:
-                df[name] = integer_series(self.out[:, j], self.computed)
-            else:
-                df[name] = np.array(self.out[:, j])
-        for name in schema.DERIVED_FIELDS:
-            df[name] = self[name]
-        df["status"] = np.array(self.status)
-        return df
-
-    def to_xarray(self) -> Any:
-        """An ``xarray.Dataset`` over ``case`` (units in attributes; ``dynamics.export``)."""
-        return batch_dataset(self)
-
-    def to_pint(self, registry: Any = None) -> dict[str, Any]:
-        """Each output column with a unit (``impactlab.schema``) as a pint Quantity of an array
-        (SI; NaN where a case failed); ``registry``: your pint registry."""
-        from impactlab.units import registry as shared  # pint loads on first use
-
-        ureg = shared() if registry is None else registry
-        out: dict[str, Any] = {}
-        for j, name in enumerate(OUTPUT_FIELDS):
-            try:
-                unit = schema.unit(name)
-            except KeyError:
-                continue
-            out[name] = ureg.Quantity(np.array(self.out[:, j]), _pint_unit(unit))
-        return out
-
-    def _repr_html_(self) -> str:
-        return batch_html(self)
-
-    def __repr__(self) -> str:
-        masks = (("computed", self.computed), ("ok", self.ok), ("flagged", self.flagged))
-        counts = ", ".join(f"{int(np.count_nonzero(mask))} {name}" for name, mask in masks)
-        return (
-            f"BatchResult({len(self)} cases, {counts}, law={self.law!r}, "
-            f"friction={self.friction!r})"
-        )

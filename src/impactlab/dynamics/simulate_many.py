@@ -16,6 +16,7 @@ from impactlab.contact.brittle import brittle_pressure
 from impactlab.contact.range_note import range_note
 from impactlab.contact.ranges import delta_ratio
 from impactlab.dynamics.batch import run_arrays
+from impactlab.dynamics.batch_result import BatchResult
 from impactlab.dynamics.flex_simulate import FLEXIBLE_BATCH_ERROR
 from impactlab.dynamics.input_checks import (
     batch_velocity,
@@ -26,7 +27,6 @@ from impactlab.dynamics.input_checks import (
 )
 from impactlab.dynamics.kernels import layout as L
 from impactlab.dynamics.models import body_params, contact_model, references_used
-from impactlab.dynamics.results import BatchResult
 from impactlab.friction import DEFAULT_MU, get_friction
 from impactlab.materials import AISI_1010, Material
 

@@ -1,0 +1,146 @@
+"""The results of ``simulate_batch``: one row per impact, with each case's status and flags."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from impactlab import schema
+from impactlab.dynamics.batch_status import (
+    INTEGER_FIELDS,
+    BatchStatus,
+    flag_column,
+    integer_series,
+)
+from impactlab.dynamics.derived import batch_derived
+from impactlab.dynamics.export import batch_dataset, batch_html
+from impactlab.dynamics.history import readonly_copy
+from impactlab.dynamics.kernels.layout import OUTPUT_FIELDS
+from impactlab.dynamics.pint_fields import pint_unit
+from impactlab.references import Reference
+from impactlab.references import dois as doi_list
+
+__all__ = ["BatchResult"]
+
+
+@dataclass(frozen=True, eq=False)
+class BatchResult(BatchStatus):
+    """Results of ``simulate_batch``: ``out`` (N, len(OUTPUT_FIELDS)) and ``status`` (N,).
+
+    Fields are available by name (``batch["e"]`` or ``batch.e``); cases with a non-zero status
+    hold NaN results (see ``messages``), except the incoming ``vn_in`` and ``vt_in``, which are
+    kept wherever the inputs define them (a case refused for ``vn_in >= 0`` shows why).
+    ``references`` are the sources the batch used (contact law, friction model if any mu > 0,
+    the integrator); ``dois()`` their DOIs.
+    """
+
+    out: np.ndarray = field(repr=False)
+    status: np.ndarray = field(repr=False)
+    inputs: dict[str, np.ndarray] = field(repr=False)
+    law: str
+    friction: str
+    references: tuple[Reference, ...] = field(default=(), repr=False)
+    #: delta_max / delta_c of each case (NaN where it failed; None: not computed)
+    max_delta_ratio: np.ndarray | None = field(default=None, repr=False)
+    #: the range the law is held to for the batch's pair, one line (``contact.range_note``:
+    #: verified against FE up to ..., or unverified and why); None: not known
+    law_range: str | None = field(default=None, repr=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "out", readonly_copy(self.out))
+        object.__setattr__(self, "status", readonly_copy(self.status, np.int32))
+        object.__setattr__(self, "inputs", {k: readonly_copy(v) for k, v in self.inputs.items()})
+
+    def __len__(self) -> int:
+        return int(self.status.shape[0])
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        try:
+            return self.out[:, OUTPUT_FIELDS.index(name)]
+        except ValueError:
+            if name in self.inputs:
+                return self.inputs[name]
+            if name in schema.DERIVED_FIELDS:
+                return batch_derived(self.__getitem__, name)
+            known = ", ".join((*OUTPUT_FIELDS, *schema.DERIVED_FIELDS))
+            raise KeyError(f"unknown field {name!r}; known: {known}") from None
+
+    def __getattr__(self, name: str) -> np.ndarray:
+        if name.startswith("_") or name in (
+            "out",
+            "status",
+            "inputs",
+            "law",
+            "friction",
+            "references",
+            "law_range",
+        ):
+            raise AttributeError(name)
+        try:
+            return self[name]
+        except KeyError:
+            raise AttributeError(name) from None
+
+    def dois(self) -> tuple[str, ...]:
+        """DOIs of ``references``, in order, without repeats."""
+        return doi_list(self.references)
+
+    @property
+    def flags(self) -> np.ndarray:
+        """The ``ResultFlag`` bitmask of each case (int64; 0 for failed cases, whose status
+        says why)."""
+        return flag_column(self.out[:, OUTPUT_FIELDS.index("flags")])
+
+    @property
+    def velocity_out(self) -> tuple[np.ndarray, np.ndarray]:
+        """(vx_out, vy_out) of the centre of mass after the impact [m/s], as
+        ``ImpactResult.velocity_out`` and ``DropBatchResult.velocity_out``."""
+        return self["vx_out"], self["vy_out"]
+
+    def to_dataframe(self) -> Any:
+        """A pandas DataFrame: inputs, outputs and status per case (``regime``, ``flags`` and
+        ``n_steps`` as nullable integers, ``<NA>`` where a case failed)."""
+        import pandas as pd  # heavy, needed only here
+
+        df = pd.DataFrame({k: np.array(v) for k, v in self.inputs.items()})
+        for j, name in enumerate(OUTPUT_FIELDS):
+            if name in INTEGER_FIELDS:
+                df[name] = integer_series(self.out[:, j], self.computed)
+            else:
+                df[name] = np.array(self.out[:, j])
+        for name in schema.DERIVED_FIELDS:
+            df[name] = self[name]
+        df["status"] = np.array(self.status)
+        return df
+
+    def to_xarray(self) -> Any:
+        """An ``xarray.Dataset`` over ``case`` (units in attributes; ``dynamics.export``)."""
+        return batch_dataset(self)
+
+    def to_pint(self, registry: Any = None) -> dict[str, Any]:
+        """Each output column with a unit (``impactlab.schema``) as a pint Quantity of an array
+        (SI; NaN where a case failed); ``registry``: your pint registry."""
+        from impactlab.units import registry as shared  # pint loads on first use
+
+        ureg = shared() if registry is None else registry
+        out: dict[str, Any] = {}
+        for j, name in enumerate(OUTPUT_FIELDS):
+            try:
+                unit = schema.unit(name)
+            except KeyError:
+                continue
+            out[name] = ureg.Quantity(np.array(self.out[:, j]), pint_unit(unit))
+        return out
+
+    def _repr_html_(self) -> str:
+        return batch_html(self)
+
+    def __repr__(self) -> str:
+        masks = (("computed", self.computed), ("ok", self.ok), ("flagged", self.flagged))
+        counts = ", ".join(f"{int(np.count_nonzero(mask))} {name}" for name, mask in masks)
+        return (
+            f"BatchResult({len(self)} cases, {counts}, law={self.law!r}, "
+            f"friction={self.friction!r})"
+        )
