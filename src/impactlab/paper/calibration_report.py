@@ -99,35 +99,6 @@ def paper_models(hardened: str) -> tuple[CandidateModel, ...]:
     )
 
 
-#: The sampler of the shipped run: the chains' autocorrelation time is about 10 steps, and
-#: R-hat < 1.05 and 50 autocorrelation times after the burn-in need about a thousand steps.
-SHIPPED_WALKERS = 8
-SHIPPED_STEPS = 1200
-
-#: Assumed standard uncertainties: e absolute, delta_p and L_s relative.
-PAPER_SIGMAS = {"e": 0.03, "delta_p": 0.10, "scar_length": 0.10}
-#: The prior of the flexible rod's modal damping ratio (the hand fit's scan range).
-ZETA_PRIOR = "uniform(0, 0.6)"
-
-
-#: The name under which the FE-tabulated law of the hardening flat is registered for the
-#: calibration (a candidate model names its law; ``contact.register_law``).
-HARDENED_LAW_NAME = "paper-fe-hardened"
-
-
-def _law_name(cfg: Any) -> str:
-    """The registered law of ``cfg``: the paper's law, or the FE-tabulated law of the
-    hardening flat, registered on first use (the same curves as the physics section's)."""
-    if cfg.law != HARDENED_LAW:
-        return str(cfg.law)
-    from impactlab.contact import law_names, register_law
-    from impactlab.fe.tabulated import hardened_curves
-
-    if HARDENED_LAW_NAME not in law_names():
-        register_law(HARDENED_LAW_NAME, hardened_curves(), title=FE_TABULATED.name)
-    return HARDENED_LAW_NAME
-
-
 def paper_measurements(sigmas: dict[str, float] | None = None) -> Measurements:
     """The three drops: the paper's rod on AISI 1010, angle, drop velocity (0, v_i) and
     measured mu of each; measured e, delta_p and |L_s| with the ``PAPER_SIGMAS``."""

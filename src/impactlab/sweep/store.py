@@ -250,10 +250,7 @@ class SweepStore:
         if self._occupied() and not self.exists():
             evidence = self._evidence()
             if not evidence:
-                raise ValueError(
-                    f"{str(self.path)!r} exists but is not a sweep store; choose another --out "
-                    f"(another store path)"
-                )
+                raise ValueError(f"{str(self.path)!r} is not a sweep store; choose another --out")
             if (evidence == "group" or self.done_chunks()) and not restart:
                 raise ValueError(
                     f"store {str(self.path)!r} lacks its study record (.sweep/study.json): its "
