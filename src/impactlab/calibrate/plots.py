@@ -35,8 +35,8 @@ def corner_figure(post: ModelPosterior) -> Any:
         ax.set_xlabel(labels[0])
         ax.set_title(post.model)
         return fig
-    fig = corner.corner(
-        x, labels=labels, truths=best, quantiles=[0.05, 0.5, 0.95], show_titles=True
+    fig = corner.corner(  # quiet: corner's "too few points" goes to the root logger
+        x, labels=labels, truths=best, quantiles=[0.05, 0.5, 0.95], show_titles=True, quiet=True
     )
     fig.suptitle(post.model, y=1.02)
     return fig

@@ -129,7 +129,10 @@ def analyze_cmd(
         False, "--flip-heights", help="The scan stores depths as heights: turn it over."
     ),
     out: Path | None = typer.Option(
-        None, "--out", help="Directory for results.json and the figures (dent.png, kinematics.png)."
+        None,
+        "--out",
+        help="Directory for results.json and the figures (dent.png, kinematics.png); a file "
+        "there that no analysis wrote is never removed or written over.",
     ),
     gravity: bool = typer.Option(
         False,

@@ -3,13 +3,14 @@
 Inputs merge as case < file < command line. Dimensional values carry their unit ("22 um"); an
 angle without a unit is refused (20 could be degrees or radians). A bare ``--sigma-*`` number is
 in the unit its value was given in on the command line (``--ls "1400 um" --sigma-ls 50``: 50 um),
-and is refused when the value comes from ``--case`` or ``--file``.
+and is refused when the value comes from ``--case`` or ``--file``. The same holds in a ``--file``:
+a bare number of its ``[sigma]`` table is in the unit its value is written in, in that file, and
+is refused when the file does not give the value.
 """
 
 from __future__ import annotations
 
 import json
-import re
 import warnings
 from pathlib import Path
 from typing import Any
@@ -24,120 +25,24 @@ from impactlab.bodies import PAPER_ROD, Rod
 from impactlab.cli._common import (
     SI_UNITS,
     UserError,
-    angle_quantity,
     load_toml,
     parse_rod_table,
     print_rows,
-    quantity,
     rod_option,
 )
-from impactlab.cli.config_values import check_booleans
+from impactlab.cli.invert_inputs import (
+    ARGUMENTS,
+    EXAMPLE_SIGMAS,
+    EXAMPLE_UNITS,
+    FIELDS,
+    from_file,
+    parse_sigma,
+    parse_value,
+)
 from impactlab.cli.invert_output import inversion_json, print_inversion
 
-# input name -> (SI unit used for parsing, accepted TOML keys, command-line option)
-_FIELDS: dict[str, tuple[str, tuple[str, ...], str]] = {
-    "angle": ("degree", ("angle",), "--angle"),
-    "v_i": ("m/s", ("vi", "v_i"), "--vi"),
-    "e": ("", ("e",), "--e"),
-    "mu": ("", ("mu",), "--mu"),
-    "delta_p": ("m", ("delta_p", "delta-p"), "--delta-p"),
-    "L_s": ("m", ("ls", "L_s", "l_s"), "--ls"),
-    "dv_cy": ("m/s", ("dv_cy", "dv-cy"), "--dv-cy"),
-}
-_ALIAS = {k: name for name, (_, keys, _) in _FIELDS.items() for k in keys}
-#: input name -> keyword of impactlab.analytic.invert, where they differ
-_ARGUMENTS = {"L_s": "sliding_length"}
-#: the other keys of a measurement file
-_EXTRA = ("case", "gravity", "samples", "seed")
-#: a number and what follows it (its unit) in a command-line value
-_NUMBER_AND_UNIT = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?\s*(.*)")
-#: a unit to show in the example of an error about a bare sigma
-_EXAMPLE_UNITS = {"v_i": "m/s", "delta_p": "um", "L_s": "um", "dv_cy": "m/s"}
-#: a sigma with its unit, for the help
-_EXAMPLE_SIGMAS = {"v_i": "0.01 m/s", "delta_p": "0.5 um", "L_s": "50 um", "dv_cy": "0.005 m/s"}
 #: the inputs that T needs (F needs e or dv_cy besides)
 _REQUIRED = ("angle", "v_i", "mu", "delta_p", "L_s")
-
-
-def _parse(value: Any, unit: str, name: str) -> float:
-    if unit == "degree":
-        return angle_quantity(value, name)
-    if unit:
-        return quantity(value, unit, name)  # type: ignore[return-value]
-    if isinstance(value, str):
-        try:
-            return float(value)
-        except ValueError:
-            raise UserError(f"{name} must be a number, got {value!r}") from None
-    if isinstance(value, bool) or not isinstance(value, int | float):
-        raise UserError(f"{name} must be a number, got {value!r}")
-    return float(value)
-
-
-def _unit_text(value: Any) -> str | None:
-    """The unit written after the number of a command-line value ("1400 um" -> "um"); None for
-    a bare number (or a value that is not text)."""
-    if not isinstance(value, str):
-        return None
-    m = _NUMBER_AND_UNIT.fullmatch(value.strip())
-    unit = m.group(1).strip() if m is not None else ""
-    return unit or None
-
-
-def _is_bare(value: Any) -> bool:
-    try:
-        float(str(value).strip())
-    except ValueError:
-        return False
-    return True
-
-
-def _parse_sigma(name: str, sigma: Any, value: Any) -> float:
-    """A command-line ``--sigma-*`` in SI: with its unit, or a bare number in the unit its value
-    was given in on the command line (SI for a bare value); a bare sigma of a dimensional input
-    whose value comes from --case or --file is refused (its unit would be a guess). An angle's
-    sigma needs its unit, as the angle."""
-    unit, _, flag = _FIELDS[name]
-    option = "--sigma-" + flag[2:]
-    if not unit or unit == "degree" or not _is_bare(sigma):
-        return _parse(sigma, unit, option)
-    if value is None:
-        raise UserError(
-            f"{option} {str(sigma).strip()} has no unit and {flag} comes from --case or --file: "
-            f"give its unit, e.g. {option} '{str(sigma).strip()} {_EXAMPLE_UNITS[name]}'"
-        )
-    given = _unit_text(value)
-    return _parse(f"{str(sigma).strip()} {given}" if given else sigma, unit, option)
-
-
-def _measured(
-    table: dict[str, Any], where: str, prefix: str = "", more: tuple[str, ...] = ()
-) -> dict[str, float]:
-    """The measured values (or their sigmas) of a TOML table, by input name."""
-    out: dict[str, float] = {}
-    for key, val in table.items():
-        if key not in _ALIAS:
-            allowed = ", ".join(sorted([*_ALIAS, *more]))
-            raise UserError(f"unknown key {key!r} in {where}; allowed: {allowed}")
-        out[_ALIAS[key]] = _parse(val, _FIELDS[_ALIAS[key]][0], prefix + key)
-    return out
-
-
-def _from_file(
-    data: dict[str, Any],
-) -> tuple[dict[str, float], dict[str, float], dict[str, float], dict[str, Any]]:
-    """(values, sigmas, rod, extra: case, gravity, samples, seed) of a measurement file."""
-    tables = {k: v for k, v in data.items() if k in ("sigma", "rod")}
-    extra = {k: v for k, v in data.items() if k in _EXTRA}
-    check_booleans(extra, ("gravity",), "the measurement file")
-    values = {k: v for k, v in data.items() if k not in tables and k not in extra}
-    for name, table in tables.items():
-        if not isinstance(table, dict):
-            raise UserError(f"[{name}] must be a table")
-    sigmas = _measured(tables.get("sigma", {}), "[sigma]", "sigma.")
-    rod = parse_rod_table(tables.get("rod", {}), "rod.")
-    file_values = _measured(values, "the measurement file", more=("sigma", "rod", *_EXTRA))
-    return file_values, sigmas, rod, extra
 
 
 def _rod(r: dict[str, float]) -> Rod:
@@ -159,7 +64,7 @@ def _check_complete(have: set[str], sigmas: set[str]) -> None:
     if missing:
         raise UserError(
             "missing input(s): "
-            + ", ".join(_FIELDS[m][2] for m in missing)
+            + ", ".join(FIELDS[m][2] for m in missing)
             + " (or use --case paper-20|paper-45|paper-70 or --file)"
         )
     if "e" not in have and "dv_cy" not in have:
@@ -183,7 +88,7 @@ def run_invert(
     """Merge case < file < command line and call :func:`impactlab.analytic.invert` (the paper
     case's negative dent depth and sliding length enter as magnitudes). Returns the result and
     the inputs as given (SI, signs kept: the echo), as ``(value, sigma)`` by keyword."""
-    v, s, r, extra = _from_file(load_toml(file, "--file"))
+    v, s, r, extra = from_file(load_toml(file, "--file"))
     case = case or extra.get("case")
     if case is not None:
         from impactlab.paper.data import get_case  # lazy: a fast CLI start
@@ -194,10 +99,10 @@ def run_invert(
     cli_v = {k: val for k, val in (values or {}).items() if val is not None}
     cli_s = {k: val for k, val in (sigmas or {}).items() if val is not None}
     _check_complete(set(v) | set(cli_v), set(s) | set(cli_s))
-    v.update({k: _parse(val, _FIELDS[k][0], _FIELDS[k][2]) for k, val in cli_v.items()})
-    s.update({k: _parse_sigma(k, val, cli_v.get(k)) for k, val in cli_s.items()})
+    v.update({k: parse_value(val, FIELDS[k][0], FIELDS[k][2]) for k, val in cli_v.items()})
+    s.update({k: parse_sigma(k, val, cli_v.get(k)) for k, val in cli_s.items()})
     r.update(parse_rod_table({k: val for k, val in (rod or {}).items() if val is not None}, "--"))
-    kwargs: dict[str, Any] = {_ARGUMENTS.get(k, k): (val, s.get(k, 0.0)) for k, val in v.items()}
+    kwargs: dict[str, Any] = {ARGUMENTS.get(k, k): (val, s.get(k, 0.0)) for k, val in v.items()}
     result = invert(
         **kwargs,
         rod=_rod(r),
@@ -238,15 +143,15 @@ _HELP = {
 
 
 def _sigma_help(name: str) -> str:
-    """The help of ``--sigma-*``: how its unit is read (``_parse_sigma``)."""
-    unit, _, flag = _FIELDS[name]
+    """The help of ``--sigma-*``: how its unit is read (``parse_sigma``)."""
+    unit, _, flag = FIELDS[name]
     if not unit:
         return f"Std. dev. of {flag} (default 0)."
     if unit == "degree":
         return f"Std. dev. of {flag} with its unit ('0.5 deg'; a bare number is refused)."
-    ex = _EXAMPLE_UNITS[name]
+    ex = EXAMPLE_UNITS[name]
     return (
-        f"Std. dev. of {flag}, e.g. '{_EXAMPLE_SIGMAS[name]}' (default 0). A bare number is in "
+        f"Std. dev. of {flag}, e.g. '{EXAMPLE_SIGMAS[name]}' (default 0). A bare number is in "
         "the unit of "
         f"{flag} as given on the command line ('... {ex}': {ex}; a bare {flag}: {unit}); with "
         f"{flag} from --case or --file it needs its unit."
@@ -255,7 +160,7 @@ def _sigma_help(name: str) -> str:
 
 def _measured_option(name: str, *, sigma: bool = False) -> Any:
     """The option of a measured input (``--vi``), or of its standard deviation (``--sigma-vi``)."""
-    flag = _FIELDS[name][2]
+    flag = FIELDS[name][2]
     if sigma:
         return typer.Option(None, "--sigma-" + flag[2:], help=_sigma_help(name))
     return typer.Option(None, flag, help=_HELP[name])
@@ -284,7 +189,11 @@ def invert_cmd(
         None, "--case", help="Start from the paper's measurements: paper-20, paper-45 or paper-70."
     ),
     file: Path | None = typer.Option(
-        None, "--file", help="TOML file of measurements (keys as the options; [sigma], [rod])."
+        None,
+        "--file",
+        help="TOML file of measurements (keys as the options; [sigma], [rod]). A bare number "
+        "in [sigma] is in the unit of its value in the file (ls = '1400 um' and [sigma] ls = "
+        "50: 50 um); without that value in the file it needs its unit.",
     ),
     gravity: bool | None = typer.Option(
         None,
@@ -319,8 +228,8 @@ def invert_cmd(
         res, given = run_invert(
             case=case,
             file=file,
-            values=dict(zip(_FIELDS, inputs, strict=True)),
-            sigmas=dict(zip(_FIELDS, sigmas, strict=True)),
+            values=dict(zip(FIELDS, inputs, strict=True)),
+            sigmas=dict(zip(FIELDS, sigmas, strict=True)),
             rod={"mass": mass, "length": length, "tip_radius": tip_radius, "inertia": inertia},
             gravity=gravity,
             samples=samples,

@@ -15,8 +15,8 @@ never lost; an invalid argument raises a TypeError or ValueError naming it at on
    comparison (the paper's Tables 2-3); then a warning for an inferred T or F far from the
    simulated impact's, or a T longer than the marker fits allow (``experiment.consistency``);
 5. ``figures`` and ``results`` (``results.json``) in ``out_dir``, figures an earlier run
-   left there removed (``experiment.saving``); a file that cannot be written is the stage's
-   error, naming it.
+   left there removed (``experiment.saving``: only files an analysis wrote are removed or
+   written over); a file that cannot be written is the stage's error, naming it.
 """
 
 from __future__ import annotations
@@ -221,7 +221,8 @@ def analyze(
         sign-flipped scan is refused otherwise, see :func:`measure_dent`).
     out_dir : save results.json and the figures (dent.png, kinematics.png) there (a folder,
         created; an existing file there is refused); a figure of an earlier run that this run
-        does not draw is removed (a warning says so).
+        does not draw is removed (a warning says so); a file there that no analysis wrote is
+        never removed or written over (docs/experiment.md, The output folder).
     gravity : passed to ``invert`` (gravity during the contact in Eq. 12; the measured velocity
         change already excludes the gravity impulse, see docs/experiment.md).
     n_samples : Monte Carlo samples of the inversion (>= 100). strict : raise

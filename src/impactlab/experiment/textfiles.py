@@ -2,12 +2,16 @@
 
 from __future__ import annotations
 
+#: What a spreadsheet pads a one-cell line with: field separators and blanks.
+_PADDING = " \t,;"
+
 
 def split_commented(text: str) -> tuple[dict[str, str], list[tuple[int, str]]]:
     """Split ``text`` into its ``# key: value`` metadata (keys lower-cased) and its data lines.
 
     Blank lines and other ``#`` comments are skipped; data lines keep their 1-based line numbers
-    (for error messages) and their original text.
+    (for error messages) and their original text. The field separators that a spreadsheet pads
+    a one-cell line with (``# units: mm,,,,``) are stripped from both ends of a value.
     """
     meta: dict[str, str] = {}
     rows: list[tuple[int, str]] = []
@@ -19,7 +23,7 @@ def split_commented(text: str) -> tuple[dict[str, str], list[tuple[int, str]]]:
             body = s.lstrip("#").strip()
             if ":" in body:
                 key, value = body.split(":", 1)
-                meta[key.strip().lower()] = value.strip()
+                meta[key.strip().lower()] = value.strip(_PADDING)
             continue
         rows.append((ln, line))
     return meta, rows

@@ -11,8 +11,9 @@ Pipeline (details and the uncertainty model in docs/experiment.md):
 3. impact detection: the first impact-sized jump of the velocity and rate of turn of the
    cluster, from straight-line fits to ``window`` frames on either side of each frame (gravity
    removed; ``.detect``); the next one (a second bounce) ends the flight after it;
-4. the free fall just before the impact fitted with a free acceleration: the time base, the
-   length unit and ``up`` checked before any fit that assumes g (``.gravity``);
+4. the free fall before the impact (all the record holds) fitted with a free acceleration: the
+   time base, the length unit and ``up`` checked before any fit that assumes g, a warning where
+   the fall is too short to check them (``.gravity``);
 5. free-flight segments before and after, ``guard`` frames away from the impact frame, at most
    ``max_fit_frames`` long, trimmed at their far end where the data stop being ballistic (the rod
    still held before the release, a second bounce after; ``.fits``);
@@ -24,7 +25,8 @@ Pipeline (details and the uncertainty model in docs/experiment.md):
 8. at that instant: v_C, the spin and the angle before and after, the tip velocities, e and mu;
    all with first-order uncertainties propagated from the two fits (numerical Jacobian), the
    impact instant included (``.measure``, result in ``.result``); an e outside [0, 1] is refused
-   (a mirrored geometry named as such: ``.mirror``).
+   and a given geometry is checked against the rigid-body impulse relations (``.impulse``), a
+   mirrored one named as such (``.mirror``).
 
 Frame of the results (the paper's, Fig. 1): y up (``up``), x horizontal in the vertical plane of
 the rod axis at impact, positive from the tip towards C; z = x cross y. The angle is that of the

@@ -32,6 +32,9 @@ __all__ = [
 IMPACT_SIGMAS = 12.0
 #: ... and this fraction of the largest jump of the record.
 OTHERS_FRACTION = 0.3
+#: The noise of the jumps comes from the flight before the largest one when it holds at least
+#: this many samples.
+MIN_NOISE_SAMPLES = 15
 
 
 @dataclass(frozen=True)
@@ -71,6 +74,53 @@ def _peaks(stat: np.ndarray, above: np.ndarray, t: np.ndarray, span: float) -> l
     return [max(g, key=lambda q: float(stat[q])) for g in groups]
 
 
+def _separations(t: np.ndarray, window: int) -> np.ndarray:
+    """Per sample, the slope jump that a unit constant acceleration leaves (that of t^2 / 2:
+    about the time between the centres of the two windows, changed by gaps in the record)."""
+    return velocity_jumps(t, 0.5 * (t - t[0]) ** 2, window)
+
+
+def _remove_constant_acceleration(jumps: np.ndarray, sep: np.ndarray) -> None:
+    """A wrong time base leaves gravity's residue, a constant acceleration, in every frame of
+    the origin's channels: its jump (the acceleration times ``sep``, which gaps in the record
+    change) is removed where the median acceleration stands out of its spread."""
+    with np.errstate(invalid="ignore", divide="ignore"):
+        acc = jumps[:, :3] / sep[:, None]
+    for c in range(3):
+        med = float(np.nanmedian(acc[:, c])) if np.any(np.isfinite(acc[:, c])) else 0.0
+        if abs(med) > 3.0 * robust_sigma(acc[:, c]):
+            jumps[:, c] -= med * sep
+
+
+def _flight_noise(
+    jumps: np.ndarray, stat: np.ndarray, sig_c: np.ndarray, window: int
+) -> np.ndarray:
+    """The noise of each channel's jumps from the flight before the largest jump (the rod
+    turning after an impact spreads the jumps of the whole record), when that flight holds
+    enough samples; never above the whole record's (``sig_c``). Used only when the whole
+    record's noise hides every jump: its peaks can shift into the turn after the impact."""
+    i_max = int(np.nanargmax(stat))
+    before = jumps[: max(i_max - window, 0)]
+    if np.sum(np.isfinite(before[:, 0])) < MIN_NOISE_SAMPLES:
+        return sig_c
+    pre = np.array([max(robust_sigma(before[:, c]), 1e-9) for c in range(jumps.shape[1])])
+    return np.minimum(sig_c, pre)
+
+
+def _sharpest(z_velocity: np.ndarray, i: int, reach: int) -> int:
+    """The impact's sample near the peak ``i`` of the combined jumps: where the origin's
+    velocity jumps most (``z_velocity``, in noise sigmas) within ``reach`` samples, when that
+    jump is impact-sized. The rate of turn keeps changing after the impact (the axis turning
+    fast, its jumps large against a still rod's noise), which can move the combined peak a few
+    frames late; the velocity's jump is sharp at the impact."""
+    lo, hi = max(i - reach, 0), min(i + reach + 1, z_velocity.shape[0])
+    size = np.sqrt(np.sum(z_velocity[lo:hi] ** 2, axis=1))
+    if not np.any(np.isfinite(size)):
+        return i
+    j = lo + int(np.nanargmax(size))
+    return j if size[j - lo] > IMPACT_SIGMAS else i
+
+
 def detect_impact(
     poses: Poses,
     ok: np.ndarray,
@@ -95,25 +145,30 @@ def detect_impact(
     jumps = np.column_stack([velocity_jumps(t_ok, chans[:, c], window) for c in range(6)])
     if not np.any(np.isfinite(jumps[:, 0])):
         raise TooFewFramesError(f"{src}: too few frames ({ok.size}) to find the impact")
+    _remove_constant_acceleration(jumps, _separations(t_ok, window))
     sig_c = np.array([max(robust_sigma(jumps[:, c]), 1e-9) for c in range(6)])
-    # a wrong time base leaves gravity's jump in every frame: the median removes it
-    median = np.nanmedian(jumps[:, :3], axis=0)
-    jumps[:, :3] -= np.where(np.abs(median) > 3.0 * sig_c[:3], median, 0.0)
     stat = np.sqrt(np.sum((jumps / sig_c) ** 2, axis=1))
+    if not np.nanmax(stat) > IMPACT_SIGMAS:  # a weak impact: the noise of the flight before
+        stat = np.sqrt(np.sum((jumps / _flight_noise(jumps, stat, sig_c, window)) ** 2, axis=1))
     i_max = int(np.nanargmax(stat))
     jmax = float(stat[i_max])
     if not jmax > IMPACT_SIGMAS:
         raise ImpactNotFoundError(
             f"{src}: no impact found: the largest jump of the rod's velocity is {jmax:.3g} "
-            f"noise sigmas (need > {IMPACT_SIGMAS:g}); is there an impact in the record?"
+            f"noise sigmas (need > {IMPACT_SIGMAS:g}); is there an impact in the record? If "
+            f"there is, it may be hidden by too little free flight before it in the record "
+            f"(at least {window} frames are needed, {2 * window + MIN_NOISE_SAMPLES} let the "
+            "noise be taken from that flight: the rod's turn after an impact spreads the "
+            "jumps of the rest), by marker noise large for the impact's change of velocity, or "
+            "by a wrong time base (times in another unit than seconds, a wrong frame rate)"
         )
     with np.errstate(invalid="ignore"):
         big = stat > max(IMPACT_SIGMAS, OTHERS_FRACTION * jmax)
     dt = float(np.median(np.diff(t_ok)))
     peaks = _peaks(stat, big, t_ok, 2 * window * dt)
-    i_star = peaks[0]
+    i_star = _sharpest(jumps[:, :3] / sig_c[:3], peaks[0], 2 * window)
     k_star = int(ok[i_star])
-    later = [p for p in peaks if p > i_star]
+    later = peaks[1:]
     lo_i = 0
     hi_i = ok.size - 1
     if later:  # the flight after ends a few frames before the next jump's peak (by time: gaps)
@@ -124,8 +179,8 @@ def detect_impact(
         float(poses.time[k_star]),
         lo_i,
         hi_i,
-        tuple(float(t_ok[p]) for p in peaks),
-        float(t_ok[i_max]),
+        (float(t_ok[i_star]), *(float(t_ok[p]) for p in later)),
+        float(t_ok[i_star] if i_max == peaks[0] else t_ok[i_max]),
     )
 
 

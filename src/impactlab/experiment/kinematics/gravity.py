@@ -2,11 +2,13 @@
 unit and the up direction before any fit that assumes g (a step of
 :func:`~impactlab.experiment.kinematics.measure_impact`).
 
-The fall is fitted with a free acceleration (a quadratic in time per coordinate) over the frames
-just before the impact (at most ``FALL_FRAMES``), grown backwards from the impact while the frames
-agree with it (a wrong sample is skipped), so that the check depends neither on g nor on the
-segments of the ballistic fits: a wrong time base is named as such, not as too few free-flight
-frames.
+The fall is fitted with a free acceleration (a quadratic in time per coordinate) over all the
+free flight the record holds before the impact: grown backwards from the impact while the frames
+agree with it (a wrong sample is skipped; a hold before the release, or an earlier bounce, ends
+it), so that the check depends neither on g nor on the segments of the ballistic fits: a wrong
+time base is named as such, not as too few free-flight frames. A fall too short or too noisy to
+check the time base, or to check it to ``GRAVITY_TOLERANCE``, is reported as a warning that says
+why and what the results then rest on.
 """
 
 from __future__ import annotations
@@ -27,13 +29,13 @@ TILT_WARN_DEG = 2.0
 GRAVITY_TOLERANCE = 0.10
 #: ... and by more than this many of its standard uncertainties is refused.
 GRAVITY_SIGMAS = 4.0
-#: The free-fall fit uses at most the ``FALL_FRAMES`` frames nearest the impact (80 ms at 500 fps,
-#: as the fits' default ``max_fit_frames``; a rod dropped from rest reaches 1.41 m/s in 144 ms, so
-#: a hold before the release stays out), starting from the ``FALL_START`` nearest; fewer than
-#: ``MIN_FALL_FRAMES`` in all give no check.
-FALL_FRAMES = 40
+#: The free-fall fit starts from the ``FALL_START`` frames nearest the impact and grows backwards
+#: over the free flight; fewer than ``MIN_FALL_FRAMES`` in all give no check (a warning).
 FALL_START = 12
 MIN_FALL_FRAMES = 8
+#: A fit whose acceleration is uncertain by more than this fraction of g checks nothing (a
+#: warning).
+MAX_FALL_SIGMA = 0.2
 
 
 def suggested_up(measured_up: np.ndarray, exact: bool = False, sigma_deg: float = 0.0) -> str:
@@ -53,15 +55,22 @@ def suggested_up(measured_up: np.ndarray, exact: bool = False, sigma_deg: float 
 def _free_fall(
     poses: Poses, fr: np.ndarray, t_ref: float
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """(acceleration (3,) [m/s^2], its covariance (3, 3) summed over the coordinates as the
-    variance of each, the frames used): a free quadratic fit of the cluster origin, grown
-    backwards from the impact."""
+    """(acceleration (3,) [m/s^2], the variance of each of its coordinates, the frames used): a
+    free quadratic fit of the cluster origin, grown backwards from the impact. A rod held
+    still before its release departs from the fall's parabola only slowly near its apex (the
+    release), so the frames before the fitted apex, where the fall would rise, are left out."""
     order = fr[::-1]
     tau = poses.time[order] - t_ref
     A_all = np.column_stack([np.ones_like(tau), tau, 0.5 * tau * tau])
     D = poses.translation[order]
     n0 = min(FALL_START, order.size)
-    keep = grow_segment(A_all, D, n0, 5.0, np.full(3, 1e-12))
+    keep = np.array(grow_segment(A_all, D, n0, 5.0, np.full(3, 1e-12)))
+    for _ in range(3):  # a hold before the release: only the falling side of the apex
+        coef, *_ = np.linalg.lstsq(A_all[keep], D[keep], rcond=None)
+        falling = (coef[1] + np.outer(tau[keep], coef[2])) @ coef[2] > 0.0
+        if falling.all() or falling.sum() < MIN_FALL_FRAMES:
+            break
+        keep = keep[falling]
     A, X = A_all[keep], D[keep]
     coef, *_ = np.linalg.lstsq(A, X, rcond=None)
     E = X - A @ coef
@@ -94,6 +103,31 @@ def _time_base_error(src: str, fitted: float, sig: float, g: float) -> MarkerErr
     )
 
 
+def _unchecked(why: str) -> str:
+    """The warning for a time base that the free fall cannot check."""
+    return (
+        f"the time base and the length unit are not checked: {why}; e, v_i and every velocity "
+        "then rest on the record's frame rate (a C3D's POINT:RATE, a CSV's '# rate:' line or "
+        "its time column, in seconds) and marker units being right (a time base 10 % off "
+        "moves the velocities by 10 %)"
+    )
+
+
+def _weak(
+    used: np.ndarray, poses: Poses, fitted: float, sig: float, allowed: float, g: float
+) -> str:
+    """The warning for a fall that checks the time base less closely than GRAVITY_TOLERANCE."""
+    span = float(poses.time[used[-1]] - poses.time[used[0]])
+    off = 50.0 * allowed / g  # a time base off by s moves the acceleration by about 2 s
+    return (
+        f"the time base is checked only roughly: the free fall before the impact ({used.size} "
+        f"frames over {span * 1e3:.3g} ms) accelerates at {fitted:.3g} ± {sig:.2g} m/s^2, so a "
+        f"frame rate or time column off by up to about {off:.2g} % would pass unseen (a longer "
+        "record before the impact checks it closely); e, v_i and every velocity rest on it "
+        "being right"
+    )
+
+
 def fitted_gravity(
     poses: Poses,
     fr: np.ndarray,
@@ -104,9 +138,9 @@ def fitted_gravity(
     warnings: list[str],
     lever: float = 0.0,
 ) -> float | None:
-    """The free fall before the impact (the last ``FALL_FRAMES`` of the frames ``fr``, in time
-    order) fitted with a free acceleration: its magnitude [m/s^2] (None with too few frames or
-    too uncertain a fit).
+    """The free fall before the impact (the frames ``fr`` before it, in time order) fitted
+    with a free acceleration: its magnitude [m/s^2] (None, with a warning, for a fall too short
+    or too noisy to check; a warning too for one that checks the time base only roughly).
 
     MarkerError when the acceleration differs from ``g`` by more than ``GRAVITY_TOLERANCE`` of
     it and ``GRAVITY_SIGMAS`` of its uncertainty (a wrong time base or length unit), or when it
@@ -114,24 +148,47 @@ def fitted_gravity(
     ``lever`` [m]: the largest distance of the fitted point (the cluster origin) from the centre
     of mass, 0 when it is the centre of mass (a given geometry): a turning rod's centripetal
     acceleration there is allowed for."""
-    fr = fr[-FALL_FRAMES:]
     if fr.size < MIN_FALL_FRAMES:
+        span = float(poses.time[fr[-1]] - poses.time[fr[0]]) if fr.size > 1 else 0.0
+        warnings.append(
+            _unchecked(
+                f"the record holds only {fr.size} frames ({span * 1e3:.3g} ms) of free fall "
+                f"before the impact, fewer than {MIN_FALL_FRAMES}",
+            )
+        )
         return None
     a, var_a, used = _free_fall(poses, fr, t_ref)
     if used.size < MIN_FALL_FRAMES:
+        warnings.append(
+            _unchecked(
+                f"only {used.size} frames before the impact fall freely (fewer than "
+                f"{MIN_FALL_FRAMES}; the rest is held, or bounces)",
+            )
+        )
         return None
     fitted_g = float(np.linalg.norm(a))
-    sig_a = float(np.sqrt(np.sum(var_a)))
-    if not sig_a < 0.2 * max(g, fitted_g):
+    down = a / fitted_g if fitted_g > 0 else -upv
+    sig_a = float(np.sqrt(np.sum(down * down * var_a)))  # the magnitude's (along a)
+    if not sig_a < MAX_FALL_SIGMA * max(g, fitted_g):
+        span = float(poses.time[used[-1]] - poses.time[used[0]])
+        warnings.append(
+            _unchecked(
+                f"the free fall before the impact ({used.size} frames over {span * 1e3:.3g} ms)"
+                f" gives the acceleration only to ± {sig_a:.2g} m/s^2, more than "
+                f"{MAX_FALL_SIGMA:g} g (too short a fall for the markers' noise)",
+            )
+        )
         return None
     centripetal = _turn_rate(poses, used) ** 2 * lever
     allowed = max(GRAVITY_TOLERANCE * g, GRAVITY_SIGMAS * sig_a, centripetal)
     if abs(fitted_g - g) > allowed:
         raise _time_base_error(src, fitted_g, sig_a, g)
-    down = a / fitted_g
+    if allowed > GRAVITY_TOLERANCE * g and GRAVITY_SIGMAS * sig_a >= centripetal:
+        warnings.append(_weak(used, poses, fitted_g, sig_a, allowed, g))
     tilt = math.degrees(math.acos(max(-1.0, min(1.0, float(-(down @ upv))))))
     dirn = ", ".join(f"{v:+.2f}" for v in down)
-    sig_deg = math.degrees(sig_a / fitted_g)  # the fitted direction's own uncertainty
+    # the fitted direction's own uncertainty (all the components', conservatively)
+    sig_deg = math.degrees(float(np.sqrt(np.sum(var_a))) / fitted_g)
     if tilt > 25.0:
         raise MarkerError(
             f"{src}: gravity in the data points along ({dirn}) in camera coordinates, "

@@ -29,7 +29,8 @@ from impactlab.experiment.kinematics.detect import (
 from impactlab.experiment.kinematics.fits import SegmentFit, fit_segment, segment_data, trimmed_fit
 from impactlab.experiment.kinematics.frame import G0, parse_up, rod_dimensions
 from impactlab.experiment.kinematics.gravity import fitted_gravity
-from impactlab.experiment.kinematics.mirror import e_outside, mirrored, mirrored_geometry_error
+from impactlab.experiment.kinematics.impulse import gyration_squared
+from impactlab.experiment.kinematics.mirror import E_SIGMAS, checked_against_mirror
 from impactlab.experiment.kinematics.options import check_kinematics_options
 from impactlab.experiment.kinematics.result import ImpactKinematics
 from impactlab.experiment.markers import MarkerTracks
@@ -70,10 +71,6 @@ _UNITS = (
     "m/s",
     "m/s",
 )
-
-
-#: e outside [0, 1] by more than this many of its sigmas is refused.
-E_SIGMAS = 3.0
 
 
 def _check_markers(tracks: MarkerTracks, src: str) -> None:
@@ -283,16 +280,14 @@ def measure_impact(
     upv = parse_up(up)
     _check_markers(tracks, src)
     k, imp = _measure(tracks, (half, R_tip), geometry, upv, opts, src)
-    if e_outside(k.e, E_SIGMAS):
-        if geometry is not None:
-            try:
-                flipped = _measure(tracks, (half, R_tip), mirrored(geometry), upv, opts, src)[0]
-            except ValueError:  # the mirrored geometry does not fit either
-                flipped = None
-            if flipped is not None and not e_outside(flipped.e, E_SIGMAS):
-                raise mirrored_geometry_error(src, k.e, flipped.e)
-        raise _e_error(src, k.e, imp)
-    return k
+    return checked_against_mirror(
+        k,
+        geometry,
+        gyration_squared(rod),
+        lambda geo: _measure(tracks, (half, R_tip), geo, upv, opts, src)[0],
+        src,
+        lambda: _e_error(src, k.e, imp),
+    )
 
 
 def _measure(
@@ -325,7 +320,7 @@ def _measure(
     note = later_impact_note(imp)
     warnings += [note] if note else []
     # the time base, the length unit and up= first, from a free fall fitted without g
-    falling = ok[(ok <= imp.k_star - guard)][-opts["max_fit_frames"] :]
+    falling = ok[ok <= imp.k_star - guard]  # all the record holds: grown back from the impact
     lever = 0.0 if geometry is not None else half + float(np.ptp(reference, axis=0).max())
     fitted_g = fitted_gravity(poses, falling, t_ref, upv, g, src, warnings, lever)
     pre_fr, post_fr = free_flight(poses, ok, imp, guard, opts["max_fit_frames"], min_fit, src)

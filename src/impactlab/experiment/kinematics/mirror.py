@@ -6,9 +6,12 @@ a mirrored one. Two signs show it:
 * markers not all in one plane (four or more): no rotation maps the geometry onto the measured
   cluster, but its mirror image fits (:func:`check_not_mirrored_shape`);
 * three markers (always in one plane, where a rotation does map the mirror image onto them):
-  the body frame, and so the centre of mass and the rod's axis, come out mirrored, and e falls
-  outside [0, 1]; the same analysis with the geometry mirrored (:func:`mirrored`) then gives
-  an e within it (:func:`mirrored_geometry_error`).
+  the body frame, and so the centre of mass and the rod's axis, come out mirrored: the measured
+  spin change then disagrees with the one the change of the centre of mass's velocity implies
+  (the rigid-body impulse relation, :mod:`.impulse`), or e falls outside [0, 1]. The same
+  analysis with the geometry mirrored (:func:`mirrored`) then satisfies the relation, with an
+  e within [0, 1] (:func:`checked_against_mirror`). Where both geometries satisfy it (shallow
+  angles, where the mirror moves C little) nothing is said.
 
 The cause is one of two: a body frame written left-handed (one coordinate's sign flipped in the
 geometry) or a lab frame of the marker file that is left-handed (one camera axis flipped).
@@ -16,13 +19,33 @@ geometry) or a lab frame of the marker file that is left-handed (one camera axis
 
 from __future__ import annotations
 
+import dataclasses
+import math
+from collections.abc import Callable
+
 import numpy as np
 
 from impactlab.experiment.errors import MarkerError
+from impactlab.experiment.kinematics.impulse import ImpulseCheck, impulse_check
+from impactlab.experiment.kinematics.result import ImpactKinematics
 from impactlab.experiment.rigid import MarkerGeometry, kabsch
 from impactlab.experiment.uncertainty import Estimate
 
-__all__ = ["CAUSE", "check_not_mirrored_shape", "mirrored", "mirrored_geometry_error"]
+__all__ = [
+    "CAUSE",
+    "E_SIGMAS",
+    "E_WARN_SIGMAS",
+    "check_not_mirrored_shape",
+    "checked_against_mirror",
+    "e_outside",
+    "mirrored",
+    "mirrored_geometry_error",
+]
+
+#: e outside [0, 1] by more than this many of its sigmas is refused ...
+E_SIGMAS = 3.0
+#: ... and by more than this many (but not E_SIGMAS) draws a warning.
+E_WARN_SIGMAS = 2.0
 
 #: The two causes of a mirrored fit, and what to do.
 CAUSE = (
@@ -70,3 +93,97 @@ def mirrored_geometry_error(src: str, e: Estimate, e_mirrored: Estimate) -> Mark
         f"three markers keep every distance in the mirror image, so only the result shows it): "
         f"{CAUSE}"
     )
+
+
+def _angle(k: ImpactKinematics) -> str:
+    return f"{math.degrees(k.angle_in.value):.1f} deg"
+
+
+def mirrored_impulse_error(
+    src: str, k: ImpactKinematics, own: ImpulseCheck, flipped: ImpactKinematics, fl: ImpulseCheck
+) -> MarkerError:
+    """The error for a given geometry that breaks the impulse relation while its mirror image
+    satisfies it."""
+    return MarkerError(
+        f"{src}: with the given marker geometry the velocity changes break the rigid-body "
+        f"impulse relations (k^2 dw = b dv_Cx - a dv_Cy, a turn perpendicular to the rod): "
+        f"{own.text()}; e = {k.e:.4g}, angle {_angle(k)}; but with the geometry mirrored (its "
+        f"third coordinate negated) they hold: {fl.text()}; e = {flipped.e:.4g}, angle "
+        f"{_angle(flipped)}; three markers keep every distance in the mirror image, so only the "
+        f"motion shows it: {CAUSE}"
+    )
+
+
+def _e_note(e: Estimate) -> str | None:
+    """A warning for an e outside [0, 1] by more than ``E_WARN_SIGMAS`` (and not ``E_SIGMAS``)."""
+    if not e_outside(e, E_WARN_SIGMAS):
+        return None
+    below = e.value < 0.0
+    n = (-e.value if below else e.value - 1.0) / e.sigma if e.sigma > 0 else math.inf
+    where = "below 0" if below else "above 1"
+    cannot = "keep moving into the flat" if below else "leave the flat faster than it came"
+    return (
+        f"e = {e:.4g} lies {n:.2g} sigma {where} (the tip cannot {cannot}; accepted as noise "
+        f"within {E_SIGMAS:g} sigma): check the marker geometry (a mirrored one), up= and the "
+        "impact found"
+    )
+
+
+def _axis_note(
+    k: ImpactKinematics, own: ImpulseCheck, flipped: ImpactKinematics, fl: ImpulseCheck
+) -> str:
+    """The warning for a turn off the perpendicular to the rod that the mirrored geometry
+    removes, while the spin change agrees with the impulse either way."""
+    return (
+        f"with the given marker geometry the rod turns at the impact about an axis "
+        f"{own.axis_degrees:.2g} deg off the perpendicular to it, with the geometry mirrored "
+        f"(its third coordinate negated) {fl.axis_degrees:.2g} deg: the geometry may be "
+        f"mirrored (three markers keep every distance in the mirror image), or the rod rolled "
+        f"about its axis at the impact (a tip sliding sideways); e = {k.e:.4g} and the angle "
+        f"{_angle(k)} hold for the given geometry only, and the mirrored one gives e = "
+        f"{flipped.e:.4g} and {_angle(flipped)} (a mirror comes from a geometry written "
+        f"left-handed, one coordinate's sign flipped, or a marker file whose lab frame is "
+        f"left-handed, one camera axis flipped)"
+    )
+
+
+def checked_against_mirror(
+    k: ImpactKinematics,
+    geometry: MarkerGeometry | None,
+    k2: float | None,
+    remeasure: Callable[[MarkerGeometry], ImpactKinematics],
+    src: str,
+    e_error: Callable[[], MarkerError],
+) -> ImpactKinematics:
+    """``k`` checked for a mirrored geometry (module docstring) and for e in [0, 1].
+
+    With a given ``geometry`` that breaks an impulse relation (``k2`` = I_C / m [m^2]; None
+    skips them) or gives an e outside [0, 1] by more than ``E_SIGMAS``, the analysis is repeated
+    with the geometry mirrored (``remeasure``). When that one satisfies both relations with an e
+    within [0, 1]: the mirrored-geometry error for a bad e or a spin change that disagrees with
+    the impulse; a warning for a turn off the perpendicular to the rod only (a rod that rolls
+    about its axis at the impact breaks that relation too). Otherwise an e outside [0, 1] by
+    more than ``E_SIGMAS`` is ``e_error()``, by more than ``E_WARN_SIGMAS`` a warning; ``k`` is
+    returned with the warnings."""
+    bad_e = e_outside(k.e, E_SIGMAS)
+    own = impulse_check(k, k2) if geometry is not None and k2 is not None else None
+    notes: list[str] = []
+    if geometry is not None and (bad_e or (own is not None and not own.consistent)):
+        try:
+            flipped: ImpactKinematics | None = remeasure(mirrored(geometry))
+        except ValueError:  # the mirrored geometry does not fit either
+            flipped = None
+        if flipped is not None and not e_outside(flipped.e, E_SIGMAS):
+            fl = impulse_check(flipped, k2) if k2 is not None else None
+            if fl is None or fl.consistent:
+                if bad_e:
+                    raise mirrored_geometry_error(src, k.e, flipped.e)
+                if own is not None and fl is not None:
+                    if not own.spin_agrees:
+                        raise mirrored_impulse_error(src, k, own, flipped, fl)
+                    notes.append(_axis_note(k, own, flipped, fl))
+    if bad_e:
+        raise e_error()
+    note = _e_note(k.e)
+    notes += [note] if note else []
+    return dataclasses.replace(k, warnings=(*k.warnings, *notes)) if notes else k

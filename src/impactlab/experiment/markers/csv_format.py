@@ -132,13 +132,19 @@ _PER_SECOND = re.compile(
 )
 
 
+#: Hz and kHz in any case (pint knows 'Hz' and 'kHz' only).
+_HERTZ = re.compile(r"(?i)(?<![a-z])(k?)hz(?![a-z])")
+
+
 def frame_rate(p: Path, text: str) -> float:
-    """The frame rate [Hz] of a '# rate:' line: a number with a unit (Hz, kHz, 1/s, fps) or a
-    bare number in Hz; FileFormatError naming the line otherwise (a unit is never dropped)."""
+    """The frame rate [Hz] of a '# rate:' line: a number with a unit (Hz, kHz in any case,
+    1/s, fps) or a bare number in Hz; FileFormatError naming the line otherwise (a unit is never
+    dropped)."""
     value = text.strip()
     m = _PER_SECOND.match(value)
     if m is not None:
         value = f"{m.group('number').strip()} Hz"
+    value = _HERTZ.sub(lambda h: "kHz" if h.group(1) else "Hz", value)  # hz, KHZ: any case
     try:
         fr = to_si(value, "Hz", name="rate")
     except ValueError as exc:
@@ -183,7 +189,34 @@ def _time(
             f"line {lines[row]}: {name} does not increase (line {lines[row - 1]} has the same "
             "or a later one)",
         )
+    if not is_frame:
+        _check_rate_against_times(p, tcol, rate, meta)
     return tcol
+
+
+#: A stated frame rate and the time column's steps may differ by this fraction.
+RATE_TOLERANCE = 0.01
+
+
+def _check_rate_against_times(
+    p: Path, tcol: np.ndarray, rate: float | None, meta: dict[str, str]
+) -> None:
+    """FileFormatError when a frame rate (``rate=`` or a '# rate:' line) contradicts the time
+    column: its typical step (the median, so that gaps do not count) differs from 1 / rate by
+    more than ``RATE_TOLERANCE``."""
+    stated = f"rate={rate!r} Hz" if rate is not None else f"'# rate: {meta.get('rate')}'"
+    if rate is None:
+        if "rate" not in meta:
+            return
+        rate = frame_rate(p, meta["rate"])
+    step = float(np.median(np.diff(tcol)))
+    if abs(step * rate - 1.0) > RATE_TOLERANCE:
+        raise FileFormatError(
+            p,
+            f"{stated} contradicts the time column, whose steps are {step:.6g} s "
+            f"({1.0 / step:.6g} frames per second): correct the rate or the times, or remove "
+            "the rate (a 'time' column needs none)",
+        )
 
 
 def read_csv_markers(

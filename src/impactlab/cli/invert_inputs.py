@@ -1,0 +1,159 @@
+"""The measured inputs of ``impactlab invert``: their units, option names and TOML keys, and how
+a value or a standard deviation is read (from the command line or a ``--file``).
+
+A bare standard deviation of a dimensional input is in the unit its value is written in, on the
+command line (``--ls "1400 um" --sigma-ls 50``: 50 um) as in a measurement file (``ls = "1400
+um"`` and ``[sigma] ls = 50``: 50 um); where the value comes from elsewhere (``--case``, or the
+file for a command-line sigma) it is refused: its unit would be a guess.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+from impactlab.cli._common import UserError, angle_quantity, parse_rod_table, quantity
+from impactlab.cli.config_values import check_booleans
+
+__all__ = [
+    "ALIAS",
+    "ARGUMENTS",
+    "EXAMPLE_SIGMAS",
+    "EXAMPLE_UNITS",
+    "EXTRA",
+    "FIELDS",
+    "from_file",
+    "parse_sigma",
+    "parse_value",
+]
+
+# input name -> (SI unit used for parsing, accepted TOML keys, command-line option)
+FIELDS: dict[str, tuple[str, tuple[str, ...], str]] = {
+    "angle": ("degree", ("angle",), "--angle"),
+    "v_i": ("m/s", ("vi", "v_i"), "--vi"),
+    "e": ("", ("e",), "--e"),
+    "mu": ("", ("mu",), "--mu"),
+    "delta_p": ("m", ("delta_p", "delta-p"), "--delta-p"),
+    "L_s": ("m", ("ls", "L_s", "l_s"), "--ls"),
+    "dv_cy": ("m/s", ("dv_cy", "dv-cy"), "--dv-cy"),
+}
+ALIAS = {k: name for name, (_, keys, _) in FIELDS.items() for k in keys}
+#: input name -> keyword of impactlab.analytic.invert, where they differ
+ARGUMENTS = {"L_s": "sliding_length"}
+#: the other keys of a measurement file
+EXTRA = ("case", "gravity", "samples", "seed")
+#: a number and what follows it (its unit) in a command-line value
+_NUMBER_AND_UNIT = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?\s*(.*)")
+#: a unit to show in the example of an error about a bare sigma
+EXAMPLE_UNITS = {"v_i": "m/s", "delta_p": "um", "L_s": "um", "dv_cy": "m/s"}
+#: a sigma with its unit, for the help
+EXAMPLE_SIGMAS = {"v_i": "0.01 m/s", "delta_p": "0.5 um", "L_s": "50 um", "dv_cy": "0.005 m/s"}
+
+
+def parse_value(value: Any, unit: str, name: str) -> float:
+    if unit == "degree":
+        return angle_quantity(value, name)
+    if unit:
+        return quantity(value, unit, name)  # type: ignore[return-value]
+    if isinstance(value, str):
+        try:
+            return float(value)
+        except ValueError:
+            raise UserError(f"{name} must be a number, got {value!r}") from None
+    if isinstance(value, bool) or not isinstance(value, int | float):
+        raise UserError(f"{name} must be a number, got {value!r}")
+    return float(value)
+
+
+def _unit_text(value: Any) -> str | None:
+    """The unit written after the number of a command-line value ("1400 um" -> "um"); None for
+    a bare number (or a value that is not text)."""
+    if not isinstance(value, str):
+        return None
+    m = _NUMBER_AND_UNIT.fullmatch(value.strip())
+    unit = m.group(1).strip() if m is not None else ""
+    return unit or None
+
+
+def _is_bare(value: Any) -> bool:
+    try:
+        float(str(value).strip())
+    except ValueError:
+        return False
+    return True
+
+
+def parse_sigma(name: str, sigma: Any, value: Any) -> float:
+    """A command-line ``--sigma-*`` in SI: with its unit, or a bare number in the unit its value
+    was given in on the command line (SI for a bare value); a bare sigma of a dimensional input
+    whose value comes from --case or --file is refused (its unit would be a guess). An angle's
+    sigma needs its unit, as the angle."""
+    unit, _, flag = FIELDS[name]
+    option = "--sigma-" + flag[2:]
+    if not unit or unit == "degree" or not _is_bare(sigma):
+        return parse_value(sigma, unit, option)
+    if value is None:
+        raise UserError(
+            f"{option} {str(sigma).strip()} has no unit and {flag} comes from --case or --file: "
+            f"give its unit, e.g. {option} '{str(sigma).strip()} {EXAMPLE_UNITS[name]}'"
+        )
+    given = _unit_text(value)
+    return parse_value(f"{str(sigma).strip()} {given}" if given else sigma, unit, option)
+
+
+def _measured(
+    table: dict[str, Any], where: str, prefix: str = "", more: tuple[str, ...] = ()
+) -> dict[str, float]:
+    """The measured values (or their sigmas) of a TOML table, by input name."""
+    out: dict[str, float] = {}
+    for key, val in table.items():
+        if key not in ALIAS:
+            allowed = ", ".join(sorted([*ALIAS, *more]))
+            raise UserError(f"unknown key {key!r} in {where}; allowed: {allowed}")
+        out[ALIAS[key]] = parse_value(val, FIELDS[ALIAS[key]][0], prefix + key)
+    return out
+
+
+def _file_sigmas(table: dict[str, Any], values: dict[str, Any]) -> dict[str, float]:
+    """The ``[sigma]`` table of a measurement file in SI, read as ``--sigma-*`` are: a bare
+    number of a dimensional input is in the unit its value is written in, in the same file
+    (``ls = "1400 um"`` and ``[sigma] ls = 50``: 50 um; a bare value: SI), and is refused when
+    the file does not give that value (its unit would be a guess)."""
+    raw = {ALIAS.get(k, k): v for k, v in values.items()}
+    out = _measured({k: v for k, v in table.items() if k not in ALIAS}, "[sigma]", "sigma.")
+    for key, sigma in table.items():
+        if key not in ALIAS:
+            continue
+        name = ALIAS[key]
+        unit = FIELDS[name][0]
+        if not unit or unit == "degree" or not _is_bare(sigma):
+            out[name] = parse_value(sigma, unit, f"sigma.{key}")
+            continue
+        if name not in raw:
+            value_keys = " or ".join(repr(k) for k in FIELDS[name][1][:2])
+            raise UserError(
+                f"sigma.{key} = {sigma!r} in the measurement file has no unit and the file gives "
+                f"no {value_keys} to take it from: give its unit, e.g. "
+                f"{key} = '{str(sigma).strip()} {EXAMPLE_UNITS[name]}' in [sigma]"
+            )
+        given = _unit_text(raw[name])
+        text = f"{str(sigma).strip()} {given}" if given else sigma
+        out[name] = parse_value(text, unit, f"sigma.{key}")
+    return out
+
+
+def from_file(
+    data: dict[str, Any],
+) -> tuple[dict[str, float], dict[str, float], dict[str, float], dict[str, Any]]:
+    """(values, sigmas, rod, extra: case, gravity, samples, seed) of a measurement file."""
+    tables = {k: v for k, v in data.items() if k in ("sigma", "rod")}
+    extra = {k: v for k, v in data.items() if k in EXTRA}
+    check_booleans(extra, ("gravity",), "the measurement file")
+    values = {k: v for k, v in data.items() if k not in tables and k not in extra}
+    for name, table in tables.items():
+        if not isinstance(table, dict):
+            raise UserError(f"[{name}] must be a table")
+    file_values = _measured(values, "the measurement file", more=("sigma", "rod", *EXTRA))
+    sigmas = _file_sigmas(tables.get("sigma", {}), values)
+    rod = parse_rod_table(tables.get("rod", {}), "rod.")
+    return file_values, sigmas, rod, extra
