@@ -19,8 +19,8 @@ import struct
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from impactlab import __version__
 from impactlab._mpl import pyplot
+from impactlab._version import __version__
 from impactlab.experiment.plots import plot_dent, plot_kinematics
 from impactlab.experiment.result import ExperimentResult
 
