@@ -85,3 +85,12 @@ def test_an_api_error_names_the_option_or_the_config_key(tmp_path: Path, cli_mai
     cfg.write_text('angle = "20 deg"\nvy = "-1 m/s"\nmu = -1.0\n')
     code, _, err = cli_main("simulate", "--config", str(cfg))
     assert code == 2 and f"error: mu (in {cfg}) must be >= 0" in err
+
+
+def test_simulate_takes_rtol_for_a_rigid_and_a_flexible_rod(cli_main: CliMain) -> None:
+    """--rtol (as `drop --rtol`): recorded in the result's input, for either body."""
+    for extra in ((), ("--flexible",)):
+        code, out, err = cli_main("simulate", "rod", *extra, "--angle", "20 deg", "--vy", "-1.41",
+                                  "--mu", "0.2", "--rtol", "1e-8", "--json")  # fmt: skip
+        assert code == 0, err
+        assert json.loads(out)["input"]["rtol"] == {"value": 1e-8, "unit": "1"}

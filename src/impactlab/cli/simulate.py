@@ -77,7 +77,7 @@ _ROD_ONLY = ("angle", "length", "inertia", "constant_angle", "diameter")
 #: Options of the flexible rod (``--flexible``) only.
 _FLEX_ONLY = ("modes_axial", "modes_bending", "damping", "rate", "stop")
 #: Options the flexible rod's drop does not have.
-_NOT_FLEX = ("inertia", "constant_angle", "law_params", "rtol")
+_NOT_FLEX = ("inertia", "constant_angle")
 #: Command-line spelling of the keys whose option is not ``--<key>``.
 _FLAGS = {
     "gravity": "--no-gravity",
@@ -273,6 +273,7 @@ _HELP = {
     "damping": "Flexible rod: modal damping ratio zeta of every mode, in [0, 1) (default 0).",
     "rate": f"Flexible rod: rate-dependent flat, {', '.join(RATE_CHOICES)} (default none).",
     "stop": f"Flexible rod: {STOP_HELP}",
+    "rtol": "Integration tolerance, in [1e-13, 1e-3] (1e-5 at most with partial_slip).",
 }
 
 
@@ -318,6 +319,7 @@ def simulate_cmd(
     damping: float = _option("damping"),
     rate: str = _option("rate"),
     stop: str = _option("stop"),
+    rtol: float = typer.Option(None, "--rtol", help=_HELP["rtol"]),
     config: Path = typer.Option(
         None, "--config", help="TOML file of these keys (or a 'simulate' table); options win."
     ),
