@@ -97,7 +97,9 @@ def test_run_resume_export_plot_info(tmp_path, monkeypatch, capsys) -> None:
     code, out, err = run_cli(
         monkeypatch, capsys, "sweep", "run", str(study), "--out", str(store), "--json"
     )
-    assert code == 0 and json.loads(out)["chunks_computed"] == 0  # nothing recomputed
+    resumed = json.loads(out)
+    assert code == 0 and resumed["chunks_computed"] == 0  # nothing recomputed
+    assert resumed["first_task"] is None  # nothing loaded the engine: no first task to time
     code, out, err = run_cli(monkeypatch, capsys, "sweep", "info", str(store), "--json")
     assert shape_problems(json.loads(out)) == []
     counts = json.loads(out)

@@ -73,7 +73,8 @@ def run_summary(
     """The summary of a finished ``sweep run``: the store, the counts of cases and chunks, the
     wall time [s], the throughput [1/s] after each worker's first task (None when every chunk
     computed was a first task: a single-chunk run has no case after the engine's load to time),
-    the first task [s], the status counts and the flagged cases (text for the table, integer
+    the first task [s] (None when the run computed nothing: every chunk was stored), the status
+    counts and the flagged cases (text for the table, integer
     counts with ``as_json``)."""
     from impactlab.sweep import flag_counts, status_counts
     from impactlab.sweep.display import steady_throughput, warm_up_s
@@ -88,7 +89,7 @@ def run_summary(
         "chunks_computed": s.chunks_computed,
         "wall_time": s.wall_s,
         "throughput": steady_throughput(s),  # after each worker's first task (the compile)
-        "first_task": warm_up_s(s),
+        "first_task": warm_up_s(s) if s.chunks_computed else None,  # None: nothing computed
         "backend": s.backend,
         "status": status_counts(ds),
     }

@@ -101,7 +101,10 @@ def _rows(result: Any) -> Sequence[tuple[str, str]]:
         ("chunks", f"{s.chunks_computed} computed, {s.chunks_before} already stored"),
         ("cases computed", str(s.cases_computed)),
         ("wall time", f"{format_number(s.wall_s)} s ({s.backend}, {s.workers} workers)"),
-        ("first task (compile/load)", f"{format_number(warm_up_s(s))} s"),
+        (
+            "first task (compile/load)",
+            f"{format_number(warm_up_s(s))} s" if s.chunks_computed else "- (nothing computed)",
+        ),
         ("throughput", _throughput_text(s, steady)),
     )
 
