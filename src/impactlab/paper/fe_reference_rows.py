@@ -16,10 +16,9 @@ from typing import Any
 
 import pandas as pd
 
-from impactlab.bodies import PAPER_ROD
-from impactlab.dynamics import simulate
 from impactlab.paper import data as D
 from impactlab.paper.quantities import rel_diff
+from impactlab.paper.simulations import run_simulations
 
 __all__ = [
     "FE_LAW",
@@ -49,20 +48,8 @@ FE_REFERENCE_TEXT = (
 
 def run_fe_reference(angles: Iterable[int] = D.ANGLES_DEG) -> dict[int, Any]:
     """The FE law's impact at each angle [deg] (the inputs of ``simulations.run_simulations``)."""
-    out: dict[int, Any] = {}
-    for ang in angles:
-        x = D.EXPERIMENTS[ang]
-        out[ang] = simulate(
-            PAPER_ROD,
-            D.FLAT_MATERIAL,
-            law=FE_LAW,
-            friction=FRICTION,
-            mu=x.mu,
-            angle=x.angle,
-            velocity=(0.0, x.v_i),
-            history=False,
-        )
-    return out
+    sims = run_simulations(angles, laws=(FE_LAW,), frictions=(FRICTION,), history=False)
+    return {ang: res for (ang, _law, _fr), res in sims.items()}
 
 
 def _row(ang: int, law: str, res: Any, fe: Any | None) -> dict[str, Any]:
