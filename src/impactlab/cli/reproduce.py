@@ -46,7 +46,8 @@ def reproduce_cmd(
         typer.echo("simulations skipped (--no-simulate): analytic part only")
     typer.echo(
         f"report: {res.report_md} and {res.report_html} (reproduced in "
-        f"{format_number(res.elapsed_s)} s, imports and any first compile not counted)"
+        f"{format_number(res.elapsed_s)} s after the imports; a first run's includes compiling "
+        "the engine)"
     )
 
 
