@@ -49,10 +49,10 @@ __all__ = [
 #: ``write_shipped_calibration`` (``python3 tasks.py calibrate-paper``).
 SHIPPED = Path(__file__).resolve().parent / "data" / "calibration.json"
 
-#: The sampler of the shipped run: the chains' autocorrelation time is about 10 steps, and
-#: R-hat < 1.05 and 50 autocorrelation times after the burn-in need about a thousand steps.
+#: The sampler of the shipped run: the chains' autocorrelation time is about 25 steps, so 50
+#: of them after a burn-in of half the chain need about 2500 steps (2400: 45-49 of them).
 SHIPPED_WALKERS = 8
-SHIPPED_STEPS = 1200
+SHIPPED_STEPS = 2400
 
 #: Assumed standard uncertainties: e absolute, delta_p and L_s relative.
 PAPER_SIGMAS = {"e": 0.03, "delta_p": 0.10, "scar_length": 0.10}
@@ -135,8 +135,8 @@ def calibrate_paper(
 ) -> Calibration:
     """zeta ~ ``ZETA_PRIOR`` for every configuration (``models``; None: ``paper_models``)
     on the three drops. A flexible drop costs about 0.1 s here (its modes are rebuilt for each
-    zeta): the defaults (the shipped run's) take about half an hour; the rigid rod does not use
-    zeta (a CalibrationWarning says so)."""
+    zeta): the defaults (the shipped run's) take about 40 minutes on 2 cores; the rigid rod
+    does not use zeta (a CalibrationWarning says so)."""
     import warnings
 
     from impactlab.calibrate import CalibrationWarning
