@@ -11,7 +11,7 @@ import pytest
 
 from impactlab._display import format_number
 from impactlab._json import shape_problems
-from impactlab.bodies import PAPER_ROD, FlexibleRod
+from impactlab.bodies import PAPER_ROD, FlexibleRod, Rod
 from impactlab.cli import main
 from impactlab.dynamics.drop import simulate_drop
 
@@ -89,6 +89,25 @@ def test_rigid_and_options(monkeypatch, capsys):
     assert data["velocity_in"] == {"value": [0.1, -1.41], "unit": "m/s"}
 
 
+def test_rigid_rod_takes_its_inertia(monkeypatch, capsys, tmp_path):
+    """``drop --rigid --inertia``: the rigid rod of ``simulate rod --inertia``; its JSON drops
+    it again with ``--from``."""
+    args = (*PAPER_20, "--rigid", "--inertia", "0.004 kg*m^2", "--json")
+    code, out, err = _cli(monkeypatch, capsys, *args)
+    assert code == 0, err
+    body = Rod(length=PAPER_ROD.length, tip_radius=PAPER_ROD.tip_radius, mass=PAPER_ROD.mass,
+               material=PAPER_ROD.material, inertia=0.004)  # fmt: skip
+    ref = simulate_drop(body, mu=0.2, angle=math.radians(20), velocity=(0.0, -1.41))
+    assert json.loads(out)["e"]["value"] == ref.e
+    assert ref.e != simulate_drop(PAPER_ROD, mu=0.2, angle=math.radians(20),
+                                  velocity=(0.0, -1.41)).e  # fmt: skip
+    record = tmp_path / "drop.json"
+    record.write_text(out)
+    code, again, err = _cli(monkeypatch, capsys, "--from", str(record), "--json")
+    assert code == 0, err
+    assert json.loads(again)["e"] == json.loads(out)["e"]
+
+
 def test_friction_model_is_chosen(monkeypatch, capsys):
     code, out, err = _cli(
         monkeypatch, capsys, *PAPER_20, "--rigid", "--friction", "mindlin", "--json"
@@ -116,6 +135,8 @@ def test_friction_model_is_chosen(monkeypatch, capsys):
         ((*PAPER_20, "--law", "nope"), "nope"),
         (("--angle", "20 deg", "--vy", "1.41 m/s"), "does not approach"),
         (("--angle", "20 deg", "--vy", "-1.41 kg"), "--vy"),
+        ((*PAPER_20, "--inertia", "0.004 kg*m^2"), "--inertia: the flexible rod's inertia"),
+        ((*PAPER_20, "--rigid", "--inertia", "0"), "--inertia must be > 0"),
     ],
 )
 def test_errors_are_one_line(monkeypatch, capsys, args, needle):

@@ -145,3 +145,32 @@ def test_usage_errors_are_one_line_too(args: tuple[str, ...], needle: str) -> No
     lines = res.stderr.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("error: ") and needle in lines[0], res.stderr
     assert f"impactlab {args[0]} --help')" in lines[0]  # the program name as invoked
+
+
+def _command_paths() -> list[tuple[str, ...]]:
+    """Every command and sub-command of ``impactlab``, as the words that name it."""
+    import typer.main
+
+    from impactlab.cli import app
+
+    root = typer.main.get_command(app)
+    paths: list[tuple[str, ...]] = []
+
+    def walk(command: object, path: tuple[str, ...]) -> None:
+        paths.append(path)
+        for name, sub in getattr(command, "commands", {}).items():
+            walk(sub, (*path, name))
+
+    walk(root, ())
+    return paths
+
+
+def test_every_command_takes_h_for_its_help(cli_main: CliMain) -> None:
+    """``-h`` is ``--help`` for the program and for every command and sub-command."""
+    paths = _command_paths()
+    assert ("sweep", "run") in paths and ("fe", "indent") in paths
+    for path in paths:
+        code_long, out_long, _ = cli_main(*path, "--help")
+        code_short, out_short, err = cli_main(*path, "-h")
+        assert code_short == code_long == 0, (path, err)
+        assert out_short == out_long and out_short.startswith("Usage: "), path

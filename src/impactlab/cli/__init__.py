@@ -40,6 +40,7 @@ app = typer.Typer(
     "reproduce the paper.",
     no_args_is_help=True,
     add_completion=False,
+    context_settings={"help_option_names": ["-h", "--help"]},
     pretty_exceptions_enable=False,
     rich_markup_mode=None,  # help texts are plain: "[rod]" is a TOML table, not markup
 )

@@ -5,7 +5,7 @@ Any rod (length L between the end-sphere centres, tip radius, mass and/or diamet
 material and any flat (``--material``/``--flat``: a library name, properties or a TOML file).
 Quantities carry units as in ``impactlab simulate``; the angle is required, with its unit; the
 velocity is --vy (and --vx) or --speed and --incidence. Options that do not apply (mode counts
-or damping with ``--rigid``) are refused.
+or damping with ``--rigid``, ``--inertia`` without it) are refused.
 """
 
 from __future__ import annotations
@@ -115,9 +115,11 @@ def _body(
     modes: Mapping[str, Any],
     sizes: Mapping[str, float | None],
     material: Material,
+    inertia: float | None = None,
 ) -> FlexibleRod | Rod:
     """The rod: the paper's sizes unless given (``sizes``: length, tip_radius, mass, diameter;
-    None: not given), flexible with the given mode counts and damping, or rigid."""
+    None: not given), flexible with the given mode counts and damping, or rigid (with its
+    moment of inertia ``inertia`` about the centre of mass, kg m^2; None: from its size)."""
     length = sizes["length"] if sizes["length"] is not None else PAPER_ROD.length
     tip = sizes["tip_radius"] if sizes["tip_radius"] is not None else PAPER_ROD.tip_radius
     mass, diameter = sizes["mass"], sizes["diameter"]
@@ -133,7 +135,12 @@ def _body(
         if given:
             raise UserError(f"{', '.join(given)}: a rigid rod has no modes; leave out --rigid")
         return Rod(length=length, tip_radius=tip, mass=mass, material=material,  # type: ignore[arg-type]
-                   diameter=diameter)  # fmt: skip
+                   diameter=diameter, inertia=inertia)  # fmt: skip
+    if inertia is not None:
+        raise UserError(
+            "--inertia: the flexible rod's inertia follows from its size and material; give "
+            "--rigid for a rigid rod of another inertia"
+        )
     sizes_in = {"length": length, "tip_radius": tip, "mass": mass, "diameter": diameter}
     return flexible_rod(modes, sizes_in, material)
 
@@ -234,6 +241,12 @@ def drop_cmd(
         "none", "--rate", help=f"Rate-dependent flat: {', '.join(RATE_CHOICES)} (default none)."
     ),
     rigid: bool = typer.Option(False, "--rigid", help="The rigid rod (no modes) instead."),
+    inertia: str = typer.Option(
+        None,
+        "--inertia",
+        help='With --rigid: the rod\'s I_C, e.g. "0.0036 kg*m^2" (bare number: kg*m^2; default '
+        "from its size).",
+    ),
     modes_axial: int = typer.Option(
         None, "--modes-axial", help=f"Axial modes (default {DEFAULT_N_AXIAL}, + 2 residual)."
     ),
@@ -307,7 +320,8 @@ def drop_cmd(
         "diameter": positive(diameter, "m", "--diameter"),
     }
     modes = {"modes_axial": modes_axial, "modes_bending": modes_bending, "damping": damping}
-    body = _body(rigid, modes, sizes, _material(material, PAPER_ROD.material, "--material"))
+    rod_material = _material(material, PAPER_ROD.material, "--material")
+    body = _body(rigid, modes, sizes, rod_material, positive(inertia, "kg*m^2", "--inertia"))
     result = simulate_drop(
         body,
         _material(flat, AISI_1010, "--flat"),
@@ -330,7 +344,8 @@ def drop_cmd(
 
 #: The options of ``drop`` that ``--from`` reads as given (the keys of ``impactlab simulate``).
 _FROM_KEYS: tuple[str, ...] = ("angle", "vy", "vx", "speed", "incidence", "spin", "length")
-_FROM_KEYS += ("radius", "mass", "diameter", "material", "flat", "mu", "friction", "law")
+_FROM_KEYS += ("radius", "mass", "diameter", "inertia", "material", "flat", "mu", "friction")
+_FROM_KEYS += ("law",)
 _FROM_KEYS += ("rate", "modes_axial", "modes_bending", "damping", "stop", "rtol")
 
 
