@@ -71,6 +71,42 @@ def test_a_prior_outside_the_possible_values_gives_a_unit_only_where_there_is_on
         parse_parameter(name, spec)
 
 
+@pytest.mark.parametrize(
+    ("name", "spec", "message"),
+    [
+        (
+            "flat_yield_strength",
+            "uniform(100, 1000)",
+            "prior of flat_yield_strength: uniform(100, 1000) in Pa lies wholly below 100000 "
+            "Pa: an implausible magnitude (a number without its unit is in Pa); give the unit, "
+            "e.g. 'uniform(100 MPa, 1000 MPa)'",
+        ),
+        (
+            "body_E",
+            {"prior": "normal", "mean": 200, "sd": 10},
+            "prior of body_E: normal(200, 10) in Pa lies wholly below 100000 Pa: an "
+            "implausible magnitude (a number without its unit is in Pa); give the unit, e.g. "
+            "'normal(200 GPa, 10 GPa)'",
+        ),
+        (
+            "tip_radius",
+            "loguniform(4, 10)",
+            "prior of tip_radius: loguniform(4, 10) in m lies wholly above 1 m: an implausible "
+            "magnitude (a number without its unit is in m); give the unit, e.g. "
+            "'loguniform(4 mm, 10 mm)'",
+        ),
+    ],
+)
+def test_a_prior_range_without_its_unit_is_refused(name, spec, message):
+    """A prior whose whole range is an implausible magnitude (a unit left out: 100-1000 Pa for a
+    yield strength) is refused naming the unit to give; one that only reaches past the
+    plausible range is kept."""
+    with pytest.raises(ValueError, match=f"^{re.escape(message)}$"):
+        parse_parameter(name, spec)
+    kept = parse_parameter("flat_yield_strength", "loguniform(1 kPa, 1 GPa)")
+    assert (kept.low, kept.high) == (1e3, 1e9)
+
+
 def test_prior_units_and_density():
     p = parse_parameter("flat_yield_strength", "uniform(100 MPa, 1 GPa)")
     assert (p.low, p.high, p.unit) == (1e8, 1e9, "Pa")

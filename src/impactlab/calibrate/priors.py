@@ -26,6 +26,7 @@ import numpy as np
 from scipy import stats
 
 from impactlab._display import display_unit
+from impactlab.calibrate.input_magnitudes import PLAUSIBLE_INPUTS
 from impactlab.calibrate.quantities import KINEMATICS, NUMERIC_INPUTS
 from impactlab.calibrate.values import did_you_mean, to_unit
 from impactlab.sweep.inputs import INPUTS
@@ -110,6 +111,30 @@ class Parameter:
                 f"prior of {self.name} excludes every value: normal({self.mean:g}, {self.sd:g}) "
                 f"has no mass in [{self.low:g}, {self.high:g}]"
             )
+        self._check_magnitude()
+
+    def _check_magnitude(self) -> None:
+        """ValueError when the whole prior (a normal's mean +- 5 sd within its bounds) lies
+        outside what the input can plausibly be (``PLAUSIBLE_INPUTS``): a range given without
+        its unit, ``uniform(100, 1000)`` for a yield strength, is 100-1000 Pa."""
+        rule = PLAUSIBLE_INPUTS.get(self.name)
+        if rule is None:
+            return
+        low, high = self.low, self.high
+        if self.kind == "normal":
+            low, high = max(low, self.mean - 5 * self.sd), min(high, self.mean + 5 * self.sd)
+        plausible_low, plausible_high, hint = rule
+        if plausible_low <= high and low <= plausible_high:
+            return
+        side = f"below {plausible_low:g}" if high < plausible_low else f"above {plausible_high:g}"
+        numbers = (self.mean, self.sd) if self.kind == "normal" else (self.low, self.high)
+        given = ", ".join(_number(x) for x in numbers)
+        hinted = ", ".join(f"{_number(x)} {hint}" for x in numbers)
+        raise ValueError(
+            f"prior of {self.name}: {self.kind}({given}) in {self.unit} lies wholly {side} "
+            f"{self.unit}: an implausible magnitude (a number without its unit is in "
+            f"{self.unit}); give the unit, e.g. '{self.kind}({hinted})'"
+        )
 
     @property
     def unit(self) -> str:
