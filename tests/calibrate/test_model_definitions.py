@@ -149,7 +149,8 @@ def test_the_settings_hold_the_engine_and_the_models(template):
     """results.json runs the calibration again: the engine's options and every model's
     definition (fixed inputs, rate law) are in its settings."""
     model = CandidateModel(fixed={"flat_yield_strength": "300 MPa"}, name="sy300")
-    cal = calibrate(_drops(template), [MU], [model], walkers=4, steps=10, n_ppc=0,
+    brake = CandidateModel("brake", law_params={"hardness": "105 HB", "meyer_index": 2.2})
+    cal = calibrate(_drops(template), [MU], [model, brake], walkers=4, steps=10, n_ppc=0,
                     engine={"gravity": "9.81 m/s^2", "rtol": 1e-6})  # fmt: skip
     st = cal.settings
     assert st["engine"] == {"gravity": 9.81, "rtol": 1e-6}
@@ -166,3 +167,24 @@ def test_the_settings_hold_the_engine_and_the_models(template):
         "value": 0.05, "unit": "1"}}  # fmt: skip
     assert parse_model({"fixed": hb}).fixed == {"flat_brinell_hardness": 105.0, "damping": 0.05}
     assert doc["models"]["sy300"]["parameters"]["mu"]["tau"]["unit"] == "steps"
+    saved = doc["settings"]["model_definitions"]["brake/coulomb"]
+    assert saved["law_params"] == {"hardness": {"value": 105.0, "unit": "kgf/mm^2"},
+                                   "meyer_index": {"value": 2.2, "unit": "1"}}  # fmt: skip
+    assert parse_model(saved).law_params == brake.law_params == {"hardness": 105.0,
+                                                                 "meyer_index": 2.2}  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    ("law_params", "match"),
+    [
+        ({"hardnes": 105.0}, r"model 'brake/coulomb', law_params: unknown parameter\(s\) "
+         r"\['hardnes'\] for contact law 'brake'; known: \['hardness', 'meyer_index'\]"),
+        ({"hardness": "1 m"}, "hardness: '1 m' has the wrong dimension"),
+        ([105.0], "law_params must be a table of parameter = value"),
+    ],
+)  # fmt: skip
+def test_a_models_law_params_are_read_when_it_is_made(law_params, match):
+    """A misspelt law parameter or a value of the wrong dimension is refused naming the model
+    when the model is made, not in every case of the calibration."""
+    with pytest.raises(ValueError, match=match):
+        CandidateModel("brake", law_params=law_params)

@@ -2,7 +2,8 @@
 table's ``fixed``): known names (a misspelt one is refused with the nearest), values with units
 (or results.json's quantity objects) read in the input's own unit, the single impact's allowed
 range (``sweep.dimensions``) and a plausible magnitude (``input_magnitudes``: a bare
-``flat_yield_strength = 300`` is 300 Pa)."""
+``flat_yield_strength = 300`` is 300 Pa); and the law parameters a model sets
+(``CandidateModel.law_params``), read as the contact law reads them."""
 
 from __future__ import annotations
 
@@ -12,10 +13,11 @@ from typing import Any
 from impactlab.calibrate.input_magnitudes import check_magnitude
 from impactlab.calibrate.quantities import KINEMATICS, NUMERIC_INPUTS
 from impactlab.calibrate.values import did_you_mean, to_unit
+from impactlab.contact import get_law
 from impactlab.sweep.dimensions import check_allowed
 from impactlab.sweep.inputs import INPUTS
 
-__all__ = ["FIXABLE", "fixed_values"]
+__all__ = ["FIXABLE", "fixed_values", "law_param_values"]
 
 #: What a model may fix: the inputs a free parameter may be (not a drop's kinematics).
 FIXABLE: tuple[str, ...] = tuple(n for n in NUMERIC_INPUTS if n not in KINEMATICS)
@@ -62,3 +64,28 @@ def fixed_values(model: str, fixed: Any) -> dict[str, float]:
         check_magnitude(name, x, INPUTS[name].unit, where)
         out[name] = x
     return out
+
+
+def law_param_values(model: str, law: str, law_params: Any) -> dict[str, float]:
+    """``law_params`` (parameter name -> a number in the parameter's unit, a quantity string,
+    ``"105 kgf/mm^2"``, a quantity object of results.json, ``{"value": 105, "unit":
+    "kgf/mm^2"}``, or a switch's True/False) as numbers in each parameter's unit, read by the
+    contact law ``law`` (``ContactLaw.parameter_values``). ValueError naming the model for an
+    unknown name or a bad value."""
+    if not isinstance(law_params, Mapping):
+        raise ValueError(
+            f"model {model!r}: law_params must be a table of parameter = value (e.g. "
+            f'{{ hardness = "105 HB" }}), got {law_params!r}'
+        )
+    contact_law = get_law(law)
+    units = {q.name: q.unit for q in contact_law.parameters if q.unit not in ("", "-")}
+    try:
+        given = {}
+        for key, v in law_params.items():
+            v = _quantity_object(v)
+            if isinstance(v, str) and key in units:  # "105 HB" read as the calibration reads it
+                v = to_unit(v, units[key], name=str(key))
+            given[str(key)] = v
+        return contact_law.parameter_values(given)
+    except ValueError as exc:
+        raise ValueError(f"model {model!r}, law_params: {exc}") from None

@@ -21,7 +21,7 @@ import numba
 import numpy as np
 
 from impactlab.bodies import PAPER_ROD, FlexibleRod, Rod, Sphere
-from impactlab.calibrate.fixed import fixed_values
+from impactlab.calibrate.fixed import fixed_values, law_param_values
 from impactlab.calibrate.measurements import Measurements
 from impactlab.calibrate.priors import Parameter
 from impactlab.calibrate.quantities import MEASURABLE
@@ -91,8 +91,9 @@ class CandidateModel:
     flexible rod), ``fixed`` inputs this model sets for every drop (e.g. ``damping``; numbers in
     the input's unit or quantity strings, ``"300 MPa"``; ValueError naming the key for an
     unknown input or a value outside its range: ``calibrate.fixed``), the
-    law's ``law_params`` and, for the flexible rod, the flat's ``rate`` law (``"cowper-symonds"``
-    or ``"johnson-cook"``, ``impactlab.contact.rate``). ``name`` defaults to
+    law's ``law_params`` (numbers in each parameter's unit or quantity strings, ``"105 HB"``;
+    ValueError naming an unknown one) and, for the flexible rod, the flat's ``rate`` law
+    (``"cowper-symonds"`` or ``"johnson-cook"``, ``impactlab.contact.rate``). ``name`` defaults to
     ``law/friction[/flexible_rod][/rate]``."""
 
     law: str = "ghaednia"
@@ -121,6 +122,9 @@ class CandidateModel:
             parts += [self.rate] if self.rate else []
             object.__setattr__(self, "name", "/".join(parts))
         object.__setattr__(self, "fixed", fixed_values(self.name, self.fixed))
+        object.__setattr__(
+            self, "law_params", law_param_values(self.name, self.law, self.law_params)
+        )
 
     def unsupported(self, quantities: Sequence[str]) -> list[str]:
         """The measured ``quantities`` this model does not predict (the flexible drop defines
