@@ -3,11 +3,14 @@
 from __future__ import annotations
 
 import math
+import re
+import warnings
 
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
+from impactlab._validation import ImplausibleInputWarning
 from impactlab.materials import (
     AISI_201,
     AISI_1010,
@@ -97,3 +100,44 @@ def test_moduli_take_units_and_numbers_refuse_text() -> None:
         Material("x", E="200e9", nu=0.3, yield_strength=305e6)  # type: ignore[arg-type]
     with pytest.raises(ValueError, match="meyer_index must be a real number, got the bool True"):
         Material("x", E=200e9, nu=0.3, yield_strength=305e6, meyer_index=True)
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        (
+            "E=69GPa, nu=0.33, Sy=276, rho=2700kg/m^3, HB=95",
+            "material Sy = 276 has no unit and is read in Pa: 276 Pa is below 100000 Pa, an "
+            "implausible magnitude; give its unit, e.g. '276 MPa'",
+        ),
+        (
+            "E=69, nu=0.33, Sy=276MPa, rho=2700",
+            "material E = 69 has no unit and is read in Pa: 69 Pa is below 100000 Pa, an "
+            "implausible magnitude; give its unit, e.g. '69 GPa'",
+        ),
+        (
+            "E=69GPa, nu=0.33, Sy=276MPa, rho=2.7",
+            "material rho = 2.7 has no unit and is read in kg/m^3: 2.7 kg/m^3 is below 100 "
+            "kg/m^3, an implausible magnitude; give its unit, e.g. '2.7 g/cm^3'",
+        ),
+    ],
+)
+def test_a_bare_value_of_an_implausible_magnitude_is_refused(text: str, message: str) -> None:
+    """``Sy=276`` in a definition by values is 276 Pa, a unit left out: refused, naming the
+    unit to give (the rule of the calibration's measurements); SI numbers read as before."""
+    with pytest.raises(ValueError, match=f"^{re.escape(message)}$"):
+        get_material(text)
+    m = get_material("E=69e9, nu=0.33, Sy=276e6, rho=2700, HB=95")
+    assert (m.E, m.yield_strength, m.density, m.brinell_hardness) == (69e9, 276e6, 2700.0, 95.0)
+
+
+def test_a_material_of_implausible_values_warns() -> None:
+    """Material(E=200, ...) in Pa (GPa meant) warns naming each value; plausible ones do not."""
+    with pytest.warns(ImplausibleInputWarning) as record:
+        Material("x", E=200, nu=0.3, yield_strength=0.3)
+    texts = [str(w.message) for w in record]
+    assert any("E = 200.0 Pa lies outside the plausible range" in t for t in texts)
+    assert any("yield_strength = 0.3 Pa" in t for t in texts)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", ImplausibleInputWarning)
+        Material("y", E=69e9, nu=0.33, yield_strength=276e6, density=2700.0)

@@ -13,7 +13,13 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from impactlab._html import dataclass_html, dataclass_rows
-from impactlab._validation import check_finite, check_positive, check_range, value_text
+from impactlab._validation import (
+    check_finite,
+    check_positive,
+    check_range,
+    value_text,
+    warn_implausible,
+)
 
 #: Standard gravity [m/s^2], used to convert kgf to N.
 G0 = 9.80665
@@ -37,6 +43,17 @@ def brinell_to_pa(hb: float) -> float:
     """Brinell hardness number (kgf/mm^2) to pressure in Pa: ``HB * g0 * 1e6``."""
     return hb * G0 * 1.0e6
 
+
+#: Plausible values of a solid a drop test strikes (field -> (low, high, unit, the unit a bare
+#: number outside them most likely left out)): a modulus or a strength below 0.1 MPa is one
+#: given in MPa or GPa but read in Pa; a density below 100 kg/m^3 one in g/cm^3; a hardness
+#: above 10^4 kgf/mm^2 (the hardest metals are below 10^3) one in Pa.
+PLAUSIBLE: dict[str, tuple[float, float, str, str]] = {
+    "E": (1e5, 1e13, "Pa", "GPa"),
+    "yield_strength": (1e5, 1e11, "Pa", "MPa"),
+    "density": (100.0, 3e4, "kg/m^3", "g/cm^3"),
+    "brinell_hardness": (0.1, 1e4, _HB, "Pa"),
+}
 
 #: The fields that hold a material's values (what a library entry's source gives).
 _VALUES = ("E", "nu", "yield_strength", "brinell_hardness", "meyer_index", "density")
@@ -71,7 +88,8 @@ class Material:
     E, yield_strength, density and brinell_hardness are numbers in the units above, strings
     with units (``"200 GPa"``) or pint Quantities of any registry; nu and meyer_index are plain
     numbers. ValueError unless E, yield_strength, density and brinell_hardness (when given) are
-    finite and > 0, nu lies in (-1, 0.5), meyer_index in (2, 3] and yield_strength < E.
+    finite and > 0, nu lies in (-1, 0.5), meyer_index in (2, 3] and yield_strength < E; an
+    ImplausibleInputWarning for a value outside :data:`PLAUSIBLE` (most likely a unit left out).
     """
 
     name: str
@@ -111,6 +129,14 @@ class Material:
         if not 2.0 < n <= 3.0:
             raise ValueError(f"meyer_index must lie in (2, 3], got {n!r}")
         object.__setattr__(self, "meyer_index", n)
+        for name, (low, high, unit, _) in PLAUSIBLE.items():
+            value = getattr(self, name)
+            if not (low <= value <= high or math.isnan(value)):
+                warn_implausible(
+                    f"material {self.name!r}: {name} = {value!r} {unit} lies outside the "
+                    f"plausible range [{low:g}, {high:g}] {unit}; check the units (impactlab "
+                    f"takes SI: a bare number is in {unit})"
+                )
         if self.yield_strength >= self.E:
             raise ValueError(
                 f"yield_strength ({value_text(self.yield_strength, 'Pa')}) must be smaller than "

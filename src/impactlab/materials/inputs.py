@@ -26,7 +26,7 @@ from pathlib import Path
 from typing import Any
 
 from impactlab._validation import did_you_mean, read_text_file
-from impactlab.materials.core import Material, brinell_to_pa
+from impactlab.materials.core import PLAUSIBLE, Material, brinell_to_pa
 from impactlab.materials.library import ALIASES, PRESETS
 from impactlab.units import to_si
 
@@ -84,7 +84,25 @@ def _number(field: str, unit: str, value: Any, label: str) -> float:
     if isinstance(value, str):  # "kg/m3": a power written without "^"
         value = re.sub(r"(?<=[A-Za-z])([23])\b", r"^\1", value)
     x = to_si(value, unit, name=label)  # SI: a hardness in Pa
-    return x / brinell_to_pa(1.0) if unit == "kgf/mm^2" else x
+    x = x / brinell_to_pa(1.0) if unit == "kgf/mm^2" else x
+    _check_bare(field, value, x, label)
+    return x
+
+
+def _check_bare(field: str, value: Any, x: float, label: str) -> None:
+    """ValueError for a bare number (no unit) of an implausible magnitude: ``Sy=276`` is 276 Pa,
+    a unit left out (:data:`impactlab.materials.core.PLAUSIBLE`)."""
+    try:
+        float(value)
+    except (TypeError, ValueError):
+        return  # it has a unit: the material's own check warns
+    low, high, unit, hint = PLAUSIBLE[field]
+    if x > 0 and not low <= x <= high:  # <= 0: the material's own error says what is allowed
+        side = f"below {low:g}" if x < low else f"above {high:g}"
+        raise ValueError(
+            f"{label} = {value} has no unit and is read in {unit}: {x:g} {unit} is {side} "
+            f"{unit}, an implausible magnitude; give its unit, e.g. '{value} {hint}'"
+        )
 
 
 _TRUE, _FALSE = ("true", "yes", "1"), ("false", "no", "0")
