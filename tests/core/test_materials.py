@@ -141,3 +141,13 @@ def test_a_material_of_implausible_values_warns() -> None:
     with warnings.catch_warnings():
         warnings.simplefilter("error", ImplausibleInputWarning)
         Material("y", E=69e9, nu=0.33, yield_strength=276e6, density=2700.0)
+
+
+def test_the_fe_rigid_stand_in_warns_nothing() -> None:
+    """The FE's rigid sphere is a material 10^9 times stiffer than the flat on purpose."""
+    from impactlab.fe.problem import Problem
+
+    problem = Problem(AISI_1010, AISI_201, "rigid", 8.8e-3, 5e-6, (), (), 0.0, 1)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", ImplausibleInputWarning)
+        assert problem.pair.E_star == pytest.approx(AISI_1010.E / (1 - AISI_1010.nu**2), rel=1e-8)

@@ -11,13 +11,20 @@ from __future__ import annotations
 
 import itertools
 import math
+import warnings
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any, Literal
 
 import numpy as np
 
-from impactlab._validation import check_finite, check_nonnegative, check_positive, value_text
+from impactlab._validation import (
+    ImplausibleInputWarning,
+    check_finite,
+    check_nonnegative,
+    check_positive,
+    value_text,
+)
 from impactlab.fe.deck import DeckSpec, MaterialCard, StepControl
 from impactlab.fe.mesh import MeshSpec
 from impactlab.materials import ContactPair, Material
@@ -148,9 +155,11 @@ class Problem:
         if self.sphere == "rigid":
             m = self.sphere_material
             sy = max(m.yield_strength, self.flat.yield_strength)
-            rigid = Material(
-                "rigid", self.flat.E * 1e9, self.flat.nu, sy, m.brinell_hardness, m.meyer_index
-            )
+            with warnings.catch_warnings():  # 10^9 times the flat's E on purpose
+                warnings.simplefilter("ignore", ImplausibleInputWarning)
+                rigid = Material(
+                    "rigid", self.flat.E * 1e9, self.flat.nu, sy, m.brinell_hardness, m.meyer_index
+                )
             return ContactPair(rigid, self.flat)
         return ContactPair(self.sphere_material, self.flat)
 
