@@ -214,9 +214,15 @@ def test_range_note_names_the_status_the_span_and_the_limit() -> None:
     assert line is not None and line.startswith("verified against FE up to 1 delta_c")
     brake = _soft_pair_model("brake")  # unverified: its stand-in, first yield
     lo, hi = e_star_over_sy_span("brake")  # its own cases (not PMMA: no Brinell hardness)
-    assert range_note(brake.law_id, brake.params) == (
+    assert range_note(brake.law_id, brake.params) == (  # in Brake's own delta_y (LawRange)
         f"unverified: E*/S_y = 2198 outside the FE cases' {lo:.0f}-{hi:.0f}; stand-in limit "
-        "1 delta_c"
+        "1 delta_y"
+    )
+    # a verified range in the docs' (Jackson-Green's) delta_c, and in the law's own reference
+    # where that differs (Kogut-Komvopoulos' delta_y = 0.985 delta_c)
+    kk = get_law("kogut-komvopoulos").build(ContactPair(AISI_201, AISI_1010), 8.8e-3)
+    assert range_note(kk.law_id, kk.params).startswith(  # type: ignore[union-attr]
+        "verified against FE up to 0.3 delta_c (Jackson-Green's; = 0.305 delta_y, the law's own; "
     )
     assert range_note(-1, paper.params) is None and range_note(paper.law_id, None) is None
     tab = get_law("tabulated").build(ContactPair(AISI_201, AISI_1010), 8.8e-3)

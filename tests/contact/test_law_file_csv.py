@@ -11,7 +11,7 @@ import pytest
 from typer.testing import CliRunner
 
 from impactlab.cli import app
-from impactlab.contact.indentation_data import read_two_columns
+from impactlab.contact.table_input import read_two_columns
 
 GOOD_UNLOADING = "delta_max,delta_r\n1e-6,1e-7\n2e-6,3e-7\n"
 
@@ -83,5 +83,5 @@ def test_empty_csv_through_the_command(
     assert exit_.value.code == 2
     assert err.strip().splitlines() == [
         f"error: law file {str(law)!r}: loading CSV {str(tmp_path / 'empty.csv')!r}: the file "
-        "is empty (expected a header line, then rows of delta [m], F [N])"
+        "is empty (expected rows of delta [m], F [N], after an optional header line)"
     ]

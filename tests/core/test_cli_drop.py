@@ -167,3 +167,90 @@ def test_drop_takes_a_tolerance_and_says_whether_it_is_ok(cli_main, tmp_path) ->
     assert code == 0 and json.loads(out)["input"]["rtol"]["value"] == 1e-8
     code, _, err = cli_main("drop", "--angle", "20 deg", "--vy", "-1.41 m/s", "--rtol", "0.1")
     assert code == 2 and "rtol must lie in [1e-13, 0.001], got 0.1" in err
+
+
+def test_partial_slip_tolerance_is_capped(monkeypatch, capsys):
+    """A loose rtol with partial slip (8 contacts and a 9 % energy error at 1e-3) is refused
+    as the rigid engine refuses it, naming the option."""
+    args = (*PAPER_20, "--friction", "partial_slip", "--rtol", "1e-3")
+    code, _out, err = _cli(monkeypatch, capsys, *args)
+    assert code == 2 and len(err.strip().splitlines()) == 1
+    assert err.startswith("error: --rtol 0.001 is too loose for friction 'partial_slip'")
+    assert "up to 1e-05" in err
+
+
+def test_an_implausible_speed_warns(monkeypatch, capsys):
+    code, _out, err = _cli(monkeypatch, capsys, "--angle", "20 deg", "--vy", "-120 m/s")
+    assert "warning: the impact speed (120 m/s) exceeds 100 m/s" in err
+    assert code in (0, 2)  # the warning, whatever the drop then does
+
+
+#: Drops whose JSON is walked: flexible, rigid, the whole flight, a rate-dependent flat.
+_DROPS = (
+    PAPER_20,
+    ("--angle", "70 deg", "--vy", "-3.45 m/s", "--mu", "0.1", "--rigid"),
+    (*PAPER_20, "--stop", "flight"),
+    ("--angle", "45 deg", "--vy", "-2.18 m/s", "--mu", "0.13", "--rate", "johnson-cook"),
+)
+
+
+def _not_quantities(data, units, path=""):
+    """(path, value) of every value under a key with a unit that is no quantity object (an
+    integer count or code aside), and of every null outside one."""
+    found = []
+    items = data.items() if isinstance(data, dict) else enumerate(data)
+    for k, v in items:
+        where = f"{path}.{k}"
+        if isinstance(v, dict) and set(v) >= {"value", "unit"}:
+            continue
+        if isinstance(v, dict | list):
+            found += _not_quantities(v, units, where)
+        elif v is None or (k in units and not isinstance(v, int)):
+            found.append((where, v))
+    return found
+
+
+@pytest.mark.parametrize("args", _DROPS)
+def test_every_drop_quantity_is_an_object(monkeypatch, capsys, args):
+    """docs/json-schema.md: every quantity is an object whose value is null when it does not
+    exist (next_time of a rod that flies off, strain_rate without a rate law); bare nulls
+    are names that are unset (rate, law_range) only. The recorded input is the record's."""
+    from impactlab.cli._common import SI_UNITS
+    from impactlab.dynamics.drop_result import UNITS
+
+    code, out, err = _cli(monkeypatch, capsys, *args, "--json")
+    assert code == 0, err
+    data = json.loads(out)
+    assert shape_problems(data) == []
+    assert data["next_time"]["unit"] == "s" and data["strain_rate"]["unit"] == "1/s"
+    rest = {k: v for k, v in data.items() if k != "input"}
+    bare = _not_quantities(rest, {**SI_UNITS, **UNITS})
+    assert {p for p, _v in bare} <= {".rate", ".law_range", ".fitted_range_status"}, bare
+    if "--rate" not in args:
+        assert data["strain_rate"] == {"value": None, "unit": "1/s"} and data["rate"] is None
+    if "--rigid" in args or "flight" in args:  # nothing lands next
+        assert data["next_time"] == {"value": None, "unit": "s"} and data["next_end"] == -1
+
+
+def test_t_max_is_an_option_and_its_error_names_it(monkeypatch, capsys, tmp_path):
+    """``--t-max`` with its unit (recorded in the JSON input; on top of ``--from``); the error
+    of a drop that runs out of time says to raise ``--t-max``."""
+    code, _out, err = _cli(monkeypatch, capsys, *PAPER_20, "--t-max", "0.01 ms")
+    assert code == 2 and len(err.strip().splitlines()) == 1
+    assert "t_max reached" in err and err.strip().endswith("raise --t-max")
+    code, out, err = _cli(monkeypatch, capsys, *PAPER_20, "--t-max", "2 s", "--json")
+    assert code == 0, err
+    data = json.loads(out)
+    assert data["input"]["t_max"] == {"value": 2.0, "unit": "s"}
+    ref = simulate_drop(FlexibleRod.paper(), mu=0.2, angle=math.radians(20), velocity=(0.0, -1.41))
+    assert data["e"]["value"] == ref.e  # the sequence ends long before either t_max
+    record = tmp_path / "drop.json"
+    record.write_text(out)
+    code, out, err = _cli(monkeypatch, capsys, "--from", str(record), "--t-max", "1 s", "--json")
+    assert code == 0, err
+    assert json.loads(out)["input"]["t_max"] == {"value": 1.0, "unit": "s"}
+    code, _out, err = _cli(monkeypatch, capsys, "--from", str(record), "--t-max", "10 us")
+    assert code == 2 and err.startswith(f"error: --from {str(record)!r}: drop: t_max reached")
+    assert err.strip().endswith("raise --t-max")
+    code, _out, err = _cli(monkeypatch, capsys, *PAPER_20, "--t-max", "0 s")
+    assert code == 2 and "--t-max must be > 0" in err

@@ -277,6 +277,15 @@ def test_simulate_flexible_rod_stop() -> None:
     assert data["e"]["value"] == ref.e
 
 
+def test_simulate_flexible_takes_a_time_limit() -> None:
+    """``--t-max`` is ``simulate(..., t_max=)`` for the flexible rod's drop."""
+    body = FlexibleRod.paper(n_axial=1, n_bending=2)
+    ref = il.simulate(body, angle="20 deg", velocity=(0.0, -1.41), mu=0.2, history=False,
+                      t_max=2.0)  # fmt: skip
+    data = _json([*FLEX, "--t-max", "2 s"])
+    assert data["e"]["value"] == ref.e and data["input"]["t_max"]["value"] == 2.0
+
+
 @pytest.mark.parametrize(
     ("args", "needle"),
     [
@@ -284,6 +293,8 @@ def test_simulate_flexible_rod_stop() -> None:
         ([*ROD20, "--stop", "flight"], "--stop: only a drop has"),
         ([*FLEX, "--stop", "landing"], "stop must be one of"),
         ([*ROD20, "--rate", "johnson-cook"], "--rate: only a drop has"),
+        ([*ROD20, "--t-max", "1 s"], "--t-max: only a drop has"),
+        ([*FLEX, "--t-max", "1 ms"], "ms after the first touch: raise --t-max"),
         (["simulate", "sphere", "--vy", "-1 m/s", "--flexible"], "--flexible: a sphere has no"),
         ([*FLEX, "--inertia", "1 kg*m^2"], "--inertia: the flexible rod's inertia"),
         ([*FLEX, "--constant-angle"], "--constant-angle: the flexible rod's"),

@@ -94,7 +94,7 @@ def test_json_follows_the_schema_rules(cli_main: CliMain, fake_runs) -> None:
         assert run[name]["unit"] == "1", name
     case = data["case"]  # what was indented: two outputs can be told apart
     assert case["radius"] == {"value": 0.0088, "unit": "m"} and case["mesh_level"] == 1
-    assert case["flat"].startswith("AISI 1010") and case["sphere"] == "elastic-plastic"
+    assert case["flat"]["name"].startswith("AISI 1010") and case["sphere"] == "elastic-plastic"
 
 
 def _loading_only() -> fe.IndentationResult:

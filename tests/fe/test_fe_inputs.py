@@ -211,13 +211,13 @@ def test_zero_crossing_and_contact_radius():
 def test_cli_errors_are_one_line(tmp_path, cli_main, monkeypatch):
     code, _, err = cli_main("fe", "indent", "--max", "9 mm")
     assert code == 2, err
-    assert "delta_max" in err and "sphere radius" in err
+    assert "--max '9 mm'" in err and "sphere radius" in err and "bare number" not in err
     assert len(err.strip().splitlines()) == 1
     table = tmp_path / "h.csv"
     table.write_text("stress,strain\n305e6,0\n300e6,0.1\n")
     code, _, err = cli_main("fe", "indent", "--max", "1 um", "--hardening", str(table))
     assert code == 2
-    assert "flat_hardening must be monotonic" in err
+    assert "--hardening must be monotonic" in err
     monkeypatch.setenv("PATH", str(tmp_path))
     monkeypatch.setenv("IMPACTLAB_CCX", "")
     code, _, err = cli_main("fe", "indent", "--max", "1 um")

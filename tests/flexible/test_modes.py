@@ -231,7 +231,7 @@ def test_flexible_rod_body() -> None:
         ({"mass": None, "diameter": None}, "mass"),
         ({"mass": -1.0}, "mass"),
         ({"n_bending": 2.5}, "n_bending"),
-        ({"n_axial": 0}, "axial_residual"),
+        ({"n_axial": 0, "axial_residual": True}, "axial_residual"),
         ({"damping": 1.0}, "damping"),
         ({"theory": "rayleigh"}, "theory"),
         ({"tip_radius": 0.2}, "tip_radius"),

@@ -9,7 +9,7 @@ from typing import Any
 import numpy as np
 
 from impactlab._validation import check_array_finite
-from impactlab.bodies import PAPER_ROD, Rod
+from impactlab.bodies import PAPER_ROD, Rod, Sphere
 
 HALF_PI = 0.5 * math.pi
 _MEASURES = ("slip", "travel")
@@ -81,6 +81,12 @@ def rod_values(rod: Rod | None) -> tuple[Any, Any, Any, Any]:
     validated; ValueError naming the attribute (``rod.mass`` ...) when one is missing or bad."""
     if rod is None:
         rod = PAPER_ROD
+    if isinstance(rod, Sphere):  # it has a mass and a tip radius, but no rod's length
+        raise ValueError(
+            "rod: got a Sphere; invert and the closed forms need a Rod (they are a tilted "
+            "rod's, its tip L/2 from the centre of mass): impactlab.Rod(length=..., "
+            "tip_radius=..., mass=...), or None for the paper's rod"
+        )
     try:
         raw = (rod.mass, rod.length, rod.tip_radius, getattr(rod, "inertia", None))
     except AttributeError as exc:

@@ -4,7 +4,8 @@ Bounds (SI). Refused, because impossible: a length, tip radius, radius, mass, in
 density that is not a finite number > 0, and a rod whose tip radius exceeds half its length.
 Warned with :class:`~impactlab._validation.ImplausibleInputWarning`, because most likely a unit
 mistake: a length outside :data:`PLAUSIBLE_LENGTH`, a tip radius or sphere radius outside
-:data:`PLAUSIBLE_RADIUS`, a mass outside :data:`PLAUSIBLE_MASS`.
+:data:`PLAUSIBLE_RADIUS`, a mass outside :data:`PLAUSIBLE_MASS`, and a rigid rod's mass over
+:data:`HEAVY_ROD_FACTOR` times that of a uniform rod as wide as its tip.
 """
 
 from __future__ import annotations
@@ -24,19 +25,60 @@ PLAUSIBLE_RADIUS = (1e-6, 0.5)
 PLAUSIBLE_MASS = (1e-6, 1e3)
 
 
+def tip_width_problem(
+    tip_radius: float, diameter: float | None, what: str = "diameter"
+) -> str | None:
+    """Why a rod's ``diameter`` [m] is too wide for its ``tip_radius`` [m] (None when it is
+    not): above twice the tip radius (to 1e-9) the end face would stand out beside the
+    hemispherical tip, and at angles to the flat below arccos(2R/d) its rim, not the tip, would
+    strike first. ``what`` names the diameter in the message (one the mass implies, say)."""
+    if diameter is None or not diameter > 2.0 * tip_radius * (1.0 + 1e-9):
+        return None
+    rim = math.degrees(math.acos(2.0 * tip_radius / diameter))
+    return (
+        f"{what} ({diameter!r} m) exceeds twice the tip radius ({2.0 * tip_radius!r} m): "
+        "the rod's end face would stand out beside its hemispherical tip, and below "
+        f"{rim:.3g} deg to the flat its rim would strike before the tip (allowed: "
+        "diameter <= 2 tip_radius; the tip as wide as the rod or wider)"
+    )
+
+
 def check_tip_width(tip_radius: float, diameter: float | None, what: str = "diameter") -> None:
-    """ValueError when a rod's ``diameter`` [m] exceeds twice its ``tip_radius`` [m] (to 1e-9):
-    the end face would then stand out beside the hemispherical tip, and at angles to the flat
-    below arccos(2R/d) its rim, not the tip, would strike first. ``what`` names the diameter
-    in the message (one the mass implies, say)."""
-    if diameter is not None and diameter > 2.0 * tip_radius * (1.0 + 1e-9):
-        rim = math.degrees(math.acos(2.0 * tip_radius / diameter))
-        raise ValueError(
-            f"{what} ({diameter!r} m) exceeds twice the tip radius ({2.0 * tip_radius!r} m): "
-            "the rod's end face would stand out beside its hemispherical tip, and below "
-            f"{rim:.3g} deg to the flat its rim would strike before the tip (allowed: "
-            "diameter <= 2 tip_radius; the tip as wide as the rod or wider)"
-        )
+    """ValueError when a rod's ``diameter`` [m] exceeds twice its ``tip_radius`` [m]
+    (:func:`tip_width_problem`)."""
+    problem = tip_width_problem(tip_radius, diameter, what)
+    if problem is not None:
+        raise ValueError(problem)
+
+
+#: How the message of :func:`tip_width_problem` names a diameter implied by the mass.
+IMPLIED_DIAMETER = "the diameter that the mass, length and density imply, sqrt(4 m / (pi rho L))"
+
+
+#: A rigid rod's mass (given with neither its diameter nor its inertia) above this multiple of
+#: the heaviest uniform rod of its material that its tip covers, rho pi R^2 L (an implied
+#: diameter above sqrt(10) 2R), draws an ImplausibleInputWarning: a denser material alone
+#: cannot make it up (tungsten is 2.5 times steel), a unit mistake can.
+HEAVY_ROD_FACTOR = 10.0
+
+
+def heavy_rod_problem(L: float, R: float, m: float, material: Material) -> str | None:
+    """Why a rigid rod's mass ``m`` [kg] is implausible for its length ``L`` and tip radius
+    ``R`` [m] (None when it is not): the diameter a uniform rod of the material's density
+    would have, sqrt(4 m / (pi rho L)), exceeds 2R (:func:`tip_width_problem`, the text
+    ``FlexibleRod`` refuses with) and the mass is over :data:`HEAVY_ROD_FACTOR` times that of
+    a uniform rod as wide as the tip."""
+    ratio = m / (material.density * math.pi * R * R * L)
+    if not ratio > HEAVY_ROD_FACTOR:
+        return None
+    d = math.sqrt(4.0 * m / (math.pi * material.density * L))
+    problem = tip_width_problem(R, d, IMPLIED_DIAMETER)
+    return (
+        f"{problem}; the mass is {ratio:.3g} times that of a uniform rod of the material "
+        f"(rho = {material.density:.4g} kg/m^3) as wide as the tip (warned above "
+        f"{HEAVY_ROD_FACTOR:g}: a unit mistake?); a Rod takes its mass as given: for one that "
+        "is not a uniform section (a heavy head), give its inertia"
+    )
 
 
 #: Largest relative difference between the density that mass, diameter and length imply

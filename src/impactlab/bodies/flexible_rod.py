@@ -5,11 +5,14 @@ The body model (floating frame with mean-axis conditions, the contact at either 
 the defaults from the convergence study) is documented in ``docs/flexible.md``; the drop of
 such a rod on a flat is ``impactlab.dynamics.drop.simulate_drop``.
 
-Defaults (chosen from the convergence study of the paper's three drops, ``docs/flexible.md``):
-Timoshenko beam theory, 8 axial modes + the 2 axial residual pseudo-modes, 12 bending modes
-(22 elastic coordinates), no structural damping, no geometric stiffness. Against a converged
-64 axial + 48 bending model they give e within 0.6 %, delta_p within 0.4 % and the same contact
-sequence; fewer modes change the number of contacts at 20 deg.
+Defaults (from the convergence study of the paper's three drops, ``docs/flexible.md``):
+Timoshenko beam theory, no structural damping, no geometric stiffness, and per family the fewest
+modes that reach the band the contacts shape (``AXIAL_CUTOFF_HZ``, ``BENDING_CUTOFF_HZ``), at
+least 8 axial (+ the 2 axial residual pseudo-modes) and 12 bending: 22 elastic coordinates for
+the paper's rod, more for a longer or more slender one. At the paper's three drops they give e
+within 0.6 % of a 64 axial + 48 bending model and the same contact sequence; over 200 random
+drops of the paper's rod e moves by 0.25 % (median), 1.8 % at most against 24 + 36 modes, and
+the number of contacts can change: check convergence with more modes, not only a tighter rtol.
 """
 
 from __future__ import annotations
@@ -22,7 +25,7 @@ from typing import cast
 import numpy as np
 
 from impactlab._html import dataclass_html, dataclass_rows
-from impactlab._validation import check_positive, check_range
+from impactlab._validation import check_positive, check_range, warn_implausible
 from impactlab.bodies._checks import (
     PLAUSIBLE_LENGTH,
     PLAUSIBLE_MASS,
@@ -31,18 +34,39 @@ from impactlab.bodies._checks import (
     check_tip_width,
     plausible,
 )
+from impactlab.bodies.beam_modes import axial_frequencies, eb_frequencies
 from impactlab.bodies.geometric import geometric_tensor
 from impactlab.bodies.modal import ModalBasis, modal_basis
 from impactlab.bodies.rod import Rod
-from impactlab.bodies.rod_section import TIMOSHENKO, RodSection, check_theory
+from impactlab.bodies.rod_section import EULER_BERNOULLI, TIMOSHENKO, RodSection, check_theory
+from impactlab.bodies.timoshenko import timoshenko_frequencies
 from impactlab.materials import AISI_201, Material, summary_line
 
-__all__ = ["DEFAULT_N_AXIAL", "DEFAULT_N_BENDING", "MAX_MODES", "FlexibleRod"]
+__all__ = [
+    "AXIAL_CUTOFF_HZ",
+    "BENDING_CUTOFF_HZ",
+    "DEFAULT_N_AXIAL",
+    "DEFAULT_N_BENDING",
+    "MAX_MODES",
+    "FlexibleRod",
+    "check_mode_count",
+    "default_mode_count",
+]
 
-#: Default number of axial modes (plus the two axial residual pseudo-modes).
+#: Fewest axial modes by default (plus the two axial residual pseudo-modes): the paper's rod's.
 DEFAULT_N_AXIAL = 8
-#: Default number of bending modes.
+#: Fewest bending modes by default: the paper's rod's.
 DEFAULT_N_BENDING = 12
+#: The band [Hz] that the default mode counts cover, per family. The contacts of the paper's
+#: drops shape the response up to 20-40 kHz (docs/flexible.md), and its rod converged with 8
+#: axial and 12 bending modes: its 8th axial mode is at 66.45 kHz (k c / 2L, c = 5064 m/s; the
+#: 7th at 58.15 kHz) and its 12th Timoshenko bending mode at 38.02 kHz (the 11th at 33.36 kHz).
+#: Rounded down to 66 and 38 kHz, the paper's rod gets exactly 8 + 12; a rod of another length,
+#: diameter or material gets the modes that reach the same frequencies (axial ones go as 1/L,
+#: bending ones as 1/L^2 at first).
+AXIAL_CUTOFF_HZ = 66e3
+#: See ``AXIAL_CUTOFF_HZ``.
+BENDING_CUTOFF_HZ = 38e3
 #: Most modes of either family: the converged reference of docs/flexible.md uses 64 axial + 48
 #: bending modes; 128 bending modes already resolve wavelengths (2 L / n) a third of the
 #: paper's rod's diameter, where beam theory no longer holds, and the step of the drop shrinks
@@ -50,17 +74,63 @@ DEFAULT_N_BENDING = 12
 MAX_MODES = 128
 
 
-def _count(name: str, value: object) -> int:
+def check_mode_count(name: str, value: object) -> int:
+    """``value`` as a mode count, an integer in [0, ``MAX_MODES``]; else ValueError naming
+    ``name`` (the keyword, or the option as the user gave it)."""
     if isinstance(value, bool) or not isinstance(value, int | np.integer) or value < 0:
         raise ValueError(f"{name} must be an integer >= 0, got {value!r}")
     if value > MAX_MODES:
         raise ValueError(
             f"{name} must be an integer in [0, {MAX_MODES}], got {int(value)} (higher modes "
-            f"resolve wavelengths below the rod's diameter, where beam theory does not hold, "
-            f"and only slow the drop; the default {DEFAULT_N_AXIAL} axial + "
-            f"{DEFAULT_N_BENDING} bending modes are converged to 0.6 % in e)"
+            "resolve wavelengths below the rod's diameter, where beam theory does not hold, "
+            "and only slow the drop; to check convergence, double the default counts)"
         )
     return int(value)
+
+
+@functools.lru_cache(maxsize=64)
+def _band_count(sec: RodSection, theory: str, axial: bool) -> tuple[int, float]:
+    """(the fewest modes of the family, at least its default, at most MAX_MODES, whose highest
+    reaches its cutoff; the frequency of that highest mode [Hz])."""
+    fewest, cutoff = (
+        (DEFAULT_N_AXIAL, AXIAL_CUTOFF_HZ) if axial else (DEFAULT_N_BENDING, BENDING_CUTOFF_HZ)
+    )
+    om_cut = 2.0 * math.pi * cutoff
+    om = axial_frequencies(sec, MAX_MODES) if axial else eb_frequencies(sec, MAX_MODES)
+    n = max(fewest, min(MAX_MODES, int(np.searchsorted(om, om_cut)) + 1))
+    if axial or theory == EULER_BERNOULLI:  # closed forms
+        return n, float(om[n - 1]) / (2.0 * math.pi)
+    while True:  # Timoshenko: doubling from the Euler-Bernoulli count (shear lowers every mode)
+        om = timoshenko_frequencies(sec, n)
+        if om[-1] >= om_cut or n == MAX_MODES:
+            break
+        n = min(MAX_MODES, 2 * n)
+    # the basis finds the roots of exactly k modes, on a grid that follows k (a near-double
+    # root above the shear cut-off can slip through one grid and not another): the fewest k
+    # whose own highest root reaches the cutoff
+    for k in range(max(fewest, int(np.searchsorted(om, om_cut)) + 1), n):
+        om_k = timoshenko_frequencies(sec, k)
+        if om_k[-1] >= om_cut:
+            return k, float(om_k[-1]) / (2.0 * math.pi)
+    return n, float(om[-1]) / (2.0 * math.pi)
+
+
+def default_mode_count(sec: RodSection, theory: str, family: str) -> int:
+    """The default number of ``family`` (``"axial"`` or ``"bending"``) modes of a rod of
+    section ``sec`` and beam ``theory``: the fewest whose highest frequency reaches the
+    family's cutoff (``AXIAL_CUTOFF_HZ``, ``BENDING_CUTOFF_HZ``), at least ``DEFAULT_N_AXIAL``
+    / ``DEFAULT_N_BENDING``; ``MAX_MODES`` with an ImplausibleInputWarning when even those do
+    not reach it."""
+    axial = family == "axial"
+    n, top = _band_count(sec, theory, axial)
+    cutoff = AXIAL_CUTOFF_HZ if axial else BENDING_CUTOFF_HZ
+    if top < cutoff:
+        warn_implausible(
+            f"n_{family}: the rod's {MAX_MODES} {family} modes (MAX_MODES) reach "
+            f"{top / 1e3:.3g} kHz, below the {cutoff / 1e3:g} kHz that the default counts "
+            "cover: the drop resolves less of the contacts' response than for the paper's rod"
+        )
+    return n
 
 
 #: Largest relative difference between the density that mass, diameter and length imply
@@ -132,9 +202,13 @@ class FlexibleRod:
         ImplausibleInputWarning, as for ``Rod``.
     material : the rod's material (E, nu, density; the contact pair's elastic constants).
     n_axial, n_bending : numbers of axial and bending free-free modes (integers in
-        [0, ``MAX_MODES``] = [0, 128]).
+        [0, ``MAX_MODES``] = [0, 128]); None (default): per family the fewest whose highest
+        frequency reaches ``AXIAL_CUTOFF_HZ`` = 66 kHz / ``BENDING_CUTOFF_HZ`` = 38 kHz, at
+        least 8 / 12 (``default_mode_count``; the paper's rod: 8 and 12, a 0.6 m rod of the
+        same diameter: 16 and 25). The fields hold the counts used (``dataclasses.replace``
+        keeps them: give ``n_axial=None, n_bending=None`` to choose them again).
     axial_residual : add the two axial residual pseudo-modes (static compliance of all the
-        truncated axial modes; needs n_axial >= 1).
+        truncated axial modes; needs n_axial >= 1); None (default): with any axial mode.
     damping : modal damping ratio zeta [1] of every elastic mode, in [0, 1) (default 0).
     theory : ``"timoshenko"`` (default) or ``"euler-bernoulli"``.
     geometric : add the geometric stiffness of the axial force (cubic modal potential); more
@@ -146,9 +220,9 @@ class FlexibleRod:
     mass: float | None = None
     diameter: float | None = None
     material: Material = AISI_201
-    n_axial: int = DEFAULT_N_AXIAL
-    n_bending: int = DEFAULT_N_BENDING
-    axial_residual: bool = True
+    n_axial: int | None = None
+    n_bending: int | None = None
+    axial_residual: bool | None = None
     damping: float = 0.0
     theory: str = TIMOSHENKO
     geometric: bool = False
@@ -180,13 +254,22 @@ class FlexibleRod:
             check_tip_width(R, d)
         for name, value in (("length", L), ("tip_radius", R), ("mass", m), ("diameter", d)):
             object.__setattr__(self, name, value)
-        object.__setattr__(self, "n_axial", _count("n_axial", self.n_axial))
-        object.__setattr__(self, "n_bending", _count("n_bending", self.n_bending))
-        if self.axial_residual and self.n_axial < 1:
-            raise ValueError("axial_residual=True needs n_axial >= 1")
         z = check_range("damping", self.damping, 0.0, 1.0, high_inclusive=False)
         object.__setattr__(self, "damping", z)
         object.__setattr__(self, "theory", check_theory(self.theory))
+        for family in ("axial", "bending"):
+            name, value = f"n_{family}", getattr(self, f"n_{family}")
+            if value is None:  # by frequency: the band of the paper's rod's defaults
+                value = default_mode_count(self.section, self.theory, family)
+            object.__setattr__(self, name, check_mode_count(name, value))
+        n_axial = cast(int, self.n_axial)
+        if self.axial_residual is None:  # the CLI's and the study files' rule
+            object.__setattr__(self, "axial_residual", n_axial >= 1)
+        if self.axial_residual is True and n_axial < 1:
+            raise ValueError(
+                f"axial_residual=True needs n_axial >= 1, got n_axial={n_axial} (leave "
+                "axial_residual out: it follows n_axial)"
+            )
         for flag in ("axial_residual", "geometric"):
             if not isinstance(getattr(self, flag), bool):
                 raise ValueError(f"{flag} must be True or False, got {getattr(self, flag)!r}")
@@ -235,12 +318,21 @@ class FlexibleRod:
 
     def basis(self) -> ModalBasis:
         """The free-free modal basis (cached by value)."""
-        return _basis(self.section, self.n_axial, self.n_bending, self.theory, self.axial_residual)
+        return _basis(self.section, *self._modes())
 
     def geometric_tensor(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """The geometric-stiffness tensor and its index arrays
         (``impactlab.bodies.geometric.geometric_tensor``; cached by value)."""
-        return _tensor(self.section, self.n_axial, self.n_bending, self.theory, self.axial_residual)
+        return _tensor(self.section, *self._modes())
+
+    def _modes(self) -> tuple[int, int, str, bool]:
+        """(n_axial, n_bending, theory, axial_residual): ints and a bool after __post_init__."""
+        n_ax, n_b, res = (
+            cast(int, self.n_axial),
+            cast(int, self.n_bending),
+            bool(self.axial_residual),
+        )
+        return n_ax, n_b, self.theory, res
 
     @property
     def frequencies_hz(self) -> np.ndarray:

@@ -15,13 +15,14 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from impactlab._html import dataclass_html, dataclass_rows
-from impactlab._validation import check_positive
+from impactlab._validation import check_positive, warn_implausible
 from impactlab.bodies._checks import (
     PLAUSIBLE_LENGTH,
     PLAUSIBLE_MASS,
     PLAUSIBLE_RADIUS,
     check_material,
     check_tip_width,
+    heavy_rod_problem,
     plausible,
     rod_mass,
 )
@@ -61,7 +62,12 @@ class Rod:
     (a wider tip is not a rod), ``diameter <= 2 tip_radius`` (else the end face's rim, not the
     tip, strikes the flat at shallow angles); ImplausibleInputWarning (most likely a unit
     mistake) for a length outside [1 mm, 10 m], a tip radius outside [1 um, 0.5 m] or a mass outside
-    [1 mg, 1000 kg].
+    [1 mg, 1000 kg]. A mass given without the diameter is the rigid body's own (a rod need not
+    be a uniform section of its material: a heavy head, a hollow tube; ``FlexibleRod``, a
+    uniform beam, refuses a mass whose diameter sqrt(4 m / (pi rho L)) exceeds 2 tip_radius);
+    given with neither the diameter nor the inertia, a mass over ten times that of a uniform
+    rod as wide as the tip (``bodies._checks.HEAVY_ROD_FACTOR``) draws an
+    ImplausibleInputWarning.
     """
 
     length: float
@@ -86,6 +92,10 @@ class Rod:
         given = None if self.mass is None else check_positive("mass", self.mass, "kg")
         m = plausible("mass", rod_mass(L, given, d, self.material), PLAUSIBLE_MASS, "kg")
         check_tip_width(R, d)
+        if d is None and self.inertia is None:  # a uniform rod as far as the model knows
+            problem = heavy_rod_problem(L, R, m, self.material)
+            if problem is not None:
+                warn_implausible(problem)
         object.__setattr__(self, "diameter", d)
         inertia = (
             m * L * L / 12.0

@@ -10,6 +10,7 @@ or damping with ``--rigid``, ``--inertia`` without it) are refused.
 
 from __future__ import annotations
 
+import math
 import sys
 import textwrap
 from collections.abc import Mapping
@@ -20,7 +21,13 @@ import typer
 
 from impactlab._display import display_unit, field_row
 from impactlab.bodies import PAPER_ROD, FlexibleRod, Rod
-from impactlab.bodies.flexible_rod import DEFAULT_N_AXIAL, DEFAULT_N_BENDING
+from impactlab.bodies.flexible_rod import (
+    AXIAL_CUTOFF_HZ,
+    BENDING_CUTOFF_HZ,
+    DEFAULT_N_AXIAL,
+    DEFAULT_N_BENDING,
+    check_mode_count,
+)
 from impactlab.cli._common import (
     KINEMATIC_HELP,
     RATE_CHOICES,
@@ -35,8 +42,8 @@ from impactlab.cli._common import (
     rate_name,
     velocity_input,
 )
-from impactlab.cli.simulate_from import run_from
-from impactlab.dynamics.drop import simulate_drop
+from impactlab.cli.simulate_from import option_error, run_from
+from impactlab.dynamics.drop import DEFAULT_T_MAX, simulate_drop
 from impactlab.dynamics.drop_result import UNITS, DropResult
 from impactlab.friction import DEFAULT_MU
 from impactlab.materials import AISI_1010, Material, get_material
@@ -63,14 +70,26 @@ _COLUMNS = (
 )
 
 
-def _count(value: Any, name: str, default: int) -> int:
-    """A mode count (an option or a config file's value): an integer >= 0, else UserError
-    naming ``name``."""
+#: The help of the mode counts (``impactlab simulate --flexible`` too).
+MODES_HELP = {
+    "modes_axial": f"Axial modes (default: the fewest that reach {AXIAL_CUTOFF_HZ / 1e3:g} kHz, "
+    f"at least {DEFAULT_N_AXIAL}; + 2 residual).",
+    "modes_bending": "Bending modes (default: the fewest that reach "
+    f"{BENDING_CUTOFF_HZ / 1e3:g} kHz, at least {DEFAULT_N_BENDING}).",
+}
+
+
+def _count(value: Any, name: str) -> int | None:
+    """A mode count (an option or a config file's value): an integer in [0, MAX_MODES], else
+    UserError naming ``name``; None (not given): FlexibleRod's default, by frequency."""
     if value is None:
-        return default
-    if isinstance(value, bool) or not isinstance(value, int) or value < 0:
+        return None
+    if not isinstance(value, int):  # 2.5 or "x" from a config file
         raise UserError(f"{name} must be an integer >= 0, got {value!r}")
-    return value
+    try:
+        return check_mode_count(name, value)
+    except ValueError as exc:
+        raise UserError(str(exc)) from None
 
 
 def _ratio(value: Any, name: str) -> float:
@@ -91,11 +110,12 @@ def flexible_rod(
 ) -> FlexibleRod:
     """A FlexibleRod of the given ``sizes`` (length, tip_radius, and mass and/or diameter) and
     ``material`` with the mode counts and damping of ``values`` (``modes_axial``,
-    ``modes_bending``, ``damping``; None: the defaults). ``label(key)`` spells an option in
+    ``modes_bending``, ``damping``; None: the defaults, the mode counts by frequency and the
+    axial residual pseudo-modes with any axial mode). ``label(key)`` spells an option in
     errors."""
     name = label or (lambda key: "--" + key.replace("_", "-"))
-    n_axial = _count(values.get("modes_axial"), name("modes_axial"), DEFAULT_N_AXIAL)
-    n_bending = _count(values.get("modes_bending"), name("modes_bending"), DEFAULT_N_BENDING)
+    n_axial = _count(values.get("modes_axial"), name("modes_axial"))
+    n_bending = _count(values.get("modes_bending"), name("modes_bending"))
     damping = _ratio(values.get("damping"), name("damping"))
     return FlexibleRod(
         length=cast(float, sizes["length"]),
@@ -105,7 +125,6 @@ def flexible_rod(
         material=material,
         n_axial=n_axial,
         n_bending=n_bending,
-        axial_residual=n_axial >= 1,
         damping=damping,
     )
 
@@ -179,11 +198,29 @@ def _contact_table(result: DropResult) -> str:
     return "contacts\n" + "\n".join(lines)
 
 
+def _missing_as_nan(data: Any, units: Mapping[str, str]) -> Any:
+    """``data`` with each None (a value that does not exist, also in a pair) under a key with a
+    unit made NaN: the JSON writes it as a quantity of value null (docs/json-schema.md)."""
+    if isinstance(data, list) and any(isinstance(v, Mapping) for v in data):
+        return [_missing_as_nan(v, units) for v in data]
+    if not isinstance(data, Mapping):
+        return data
+    out = {}
+    for k, v in data.items():
+        if k in units and (v is None or (isinstance(v, list) and None in v)):
+            v = math.nan if v is None else [math.nan if x is None else x for x in v]
+        out[k] = _missing_as_nan(v, units)
+    return out
+
+
 def report_drop(result: DropResult, *, as_json: bool) -> None:
     """Print a drop: JSON (SI, docs/json-schema.md), or the contact table and the totals."""
     if as_json:
         balance = {key: "J" for key in result.energy_balance}  # its terms, by name
-        emit(result.to_dict(), as_json=True, units={**UNITS, **balance})
+        units = {**SI_UNITS, **UNITS, **balance}
+        data = result.to_dict()
+        recorded = data.pop("input")  # the call as recorded: --from reads it back as it is
+        emit(_missing_as_nan(data, units) | {"input": recorded}, as_json=True, units=units)
         return
     print(_contact_table(result))
     print(textwrap.fill(LEGEND, width=100))
@@ -247,12 +284,8 @@ def drop_cmd(
         help='With --rigid: the rod\'s I_C, e.g. "0.0036 kg*m^2" (bare number: kg*m^2; default '
         "from its size).",
     ),
-    modes_axial: int = typer.Option(
-        None, "--modes-axial", help=f"Axial modes (default {DEFAULT_N_AXIAL}, + 2 residual)."
-    ),
-    modes_bending: int = typer.Option(
-        None, "--modes-bending", help=f"Bending modes (default {DEFAULT_N_BENDING})."
-    ),
+    modes_axial: int = typer.Option(None, "--modes-axial", help=MODES_HELP["modes_axial"]),
+    modes_bending: int = typer.Option(None, "--modes-bending", help=MODES_HELP["modes_bending"]),
     damping: float = typer.Option(
         None, "--damping", help="Modal damping ratio zeta of every mode, in [0, 1) (default 0)."
     ),
@@ -260,19 +293,23 @@ def drop_cmd(
     rtol: float = typer.Option(
         None,
         "--rtol",
-        help="Relative tolerance of the integration, in [1e-13, 1e-3] (default 1e-7): run "
-        "again tighter to check that the contacts and totals hold.",
+        help="Relative tolerance of the integration, in [1e-13, 1e-3] (default 1e-7). To check "
+        "the contacts and totals, run again with more modes (--modes-axial, --modes-bending: "
+        "twice the counts shown) as well as tighter.",
     ),
-    stop: str = typer.Option(
+    stop: str = typer.Option(None, "--stop", help=STOP_HELP[0].upper() + STOP_HELP[1:]),
+    t_max: str = typer.Option(
         None,
-        "--stop",
-        help=STOP_HELP[0].upper() + STOP_HELP[1:],
+        "--t-max",
+        help="Longest simulated time after the first touch, e.g. '2 s' (bare number: s; "
+        "default 500 ms): a long or slow rod may need more.",
     ),
     from_file: Path = typer.Option(
         None,
         "--from",
         help="Drop again the drop recorded in a drop's JSON (drop --json), with the options "
-        "given on top: the rule of 'impactlab simulate --from' (the body's options refused).",
+        "given on top (--rtol and --t-max too): the rule of 'impactlab simulate --from' (the "
+        "body's options refused).",
     ),
     as_json: bool = typer.Option(False, "--json", help="Machine-readable output."),
 ) -> None:
@@ -322,21 +359,25 @@ def drop_cmd(
     modes = {"modes_axial": modes_axial, "modes_bending": modes_bending, "damping": damping}
     rod_material = _material(material, PAPER_ROD.material, "--material")
     body = _body(rigid, modes, sizes, rod_material, positive(inertia, "kg*m^2", "--inertia"))
-    result = simulate_drop(
-        body,
-        _material(flat, AISI_1010, "--flat"),
-        law=law,
-        friction=friction,
-        mu=mu,
-        angle=angle_quantity(angle, "--angle"),
-        velocity=velocity,
-        spin=quantity(spin, "rad/s", "--spin") or 0.0,
-        gravity=not no_gravity,
-        rate=rate_name(rate),
-        history=False,
-        stop="sequence" if stop is None else stop,
-        rtol=rtol,
-    )
+    try:
+        result = simulate_drop(
+            body,
+            _material(flat, AISI_1010, "--flat"),
+            law=law,
+            friction=friction,
+            mu=mu,
+            angle=angle_quantity(angle, "--angle"),
+            velocity=velocity,
+            spin=quantity(spin, "rad/s", "--spin") or 0.0,
+            gravity=not no_gravity,
+            rate=rate_name(rate),
+            history=False,
+            stop="sequence" if stop is None else stop,
+            rtol=rtol,
+            t_max=positive(t_max, "s", "--t-max") or DEFAULT_T_MAX,
+        )
+    except ValueError as exc:  # the API's message names its keyword (t_max): name the option
+        raise option_error(exc, _FROM_KEYS) from None
     for text in result.warnings:
         print(f"warning: {text}", file=sys.stderr)
     report_drop(result, as_json=as_json)
@@ -345,8 +386,7 @@ def drop_cmd(
 #: The options of ``drop`` that ``--from`` reads as given (the keys of ``impactlab simulate``).
 _FROM_KEYS: tuple[str, ...] = ("angle", "vy", "vx", "speed", "incidence", "spin", "length")
 _FROM_KEYS += ("radius", "mass", "diameter", "inertia", "material", "flat", "mu", "friction")
-_FROM_KEYS += ("law",)
-_FROM_KEYS += ("rate", "modes_axial", "modes_bending", "damping", "stop", "rtol")
+_FROM_KEYS += ("law", "rate", "modes_axial", "modes_bending", "damping", "stop", "rtol", "t_max")
 
 
 def register(app: typer.Typer) -> None:

@@ -14,6 +14,7 @@ from __future__ import annotations
 import csv
 import json
 import sys
+import warnings
 from pathlib import Path
 from typing import Any, cast
 
@@ -21,7 +22,15 @@ import typer
 
 from impactlab._display import field_row, format_value
 from impactlab._validation import read_text_file
-from impactlab.cli._common import SI_UNITS, UserError, console, positive, print_rows, quantity
+from impactlab.cli._common import (
+    SI_UNITS,
+    UserError,
+    as_option,
+    console,
+    positive,
+    print_rows,
+    quantity,
+)
 from impactlab.materials import Material, get_material
 
 fe_app = typer.Typer(
@@ -49,16 +58,21 @@ def _material(name: str, E: str | None, nu: float | None, sy: str | None, label:
             f"{', '.join(f'--{label}-{k}' for k in given)} without {', '.join(missing)}: a "
             f"material by values is given whole (a library material is never partly changed)"
         )
-    try:
-        return Material(
-            f"{label} (custom)",
-            quantity(E, "Pa", f"--{label}-E"),  # type: ignore[arg-type]
-            float(nu),  # type: ignore[arg-type]
-            quantity(sy, "Pa", f"--{label}-sy"),  # type: ignore[arg-type]
-        )
+    try:  # its warnings only for a material that is made: a refused one gets one line
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            made = Material(
+                f"{label} (custom)",
+                quantity(E, "Pa", f"--{label}-E"),  # type: ignore[arg-type]
+                float(nu),  # type: ignore[arg-type]
+                quantity(sy, "Pa", f"--{label}-sy"),  # type: ignore[arg-type]
+            )
     except ValueError as exc:  # the Material's own words, named by the option that set it
         option = {"E": "E", "nu": "nu", "yield_strength": "sy"}.get(str(exc).split()[0])
         raise UserError(f"--{label}-{option or 'E/nu/sy'}: {exc}") from None
+    for w in caught:
+        warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+    return made
 
 
 def read_hardening(path: Path) -> list[tuple[float, float]]:
@@ -106,6 +120,65 @@ _UNITS = {
     "dent_r": "m",
     "dent_z": "m",
 }
+
+
+#: The options of ``make_problem``'s parameters, for its messages.
+_OPTIONS = {
+    "delta_max": "--max",
+    "radius": "--radius",
+    "sphere": "--sphere",
+    "mu": "--mu",
+    "mesh_level": "--mesh",
+    "flat_hardening": "--hardening",
+}
+#: The unit hint of a length given as a bare number (taken in m).
+BARE_HINT = " (a bare number is in m: give a unit, e.g. '5 um')"
+
+
+def _bare(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
+
+
+def _check_maxima(maxima: list[str], deltas: list[float], radius: str, R: float) -> None:
+    """Each --max below the sphere radius; the unit hint only for a bare number."""
+    for text, d in zip(maxima, deltas, strict=True):
+        if d >= R:
+            hint = BARE_HINT if _bare(text) or _bare(radius) else ""
+            raise UserError(
+                f"--max {text!r} ({d:g} m) must be smaller than the sphere radius (--radius "
+                f"{radius!r}, {R:g} m){hint}"
+            )
+
+
+def _case(bm: Material, fm: Material, table: Any, **inputs: Any) -> dict[str, Any]:
+    """What was indented, every input (the form of the reference files' ``inputs``:
+    ``fe.curves``): both materials' values, the hardening table's rows (None without one)
+    and ``inputs``."""
+    from impactlab.fe.curves import material_record
+
+    rows = None
+    if table is not None:
+        rows = {
+            "true_stress": [float(r[0]) for r in table],
+            "true_plastic_strain": [float(r[1]) for r in table],
+        }
+    return {
+        "sphere_material": material_record(bm),
+        "flat": material_record(fm),
+        "flat_hardening": rows,
+        **inputs,
+    }
+
+
+def _material_text(m: Material) -> str:
+    """A material's name, with its values when it was given by them."""
+    if not m.name.endswith("(custom)"):
+        return m.name
+    return f"{m.name}: E = {m.E / 1e9:g} GPa, nu = {m.nu:g}, S_y = {m.yield_strength / 1e6:g} MPa"
 
 
 def _summary(res: Any) -> dict[str, Any]:
@@ -233,11 +306,15 @@ def indent_cmd(
     fm = _material(flat, flat_E, flat_nu, flat_sy, "flat")
     bm = _material(body, body_E, body_nu, body_sy, "body")
     table = read_hardening(hardening) if hardening is not None else None
+    _check_maxima(maxima, cast(list[float], deltas), radius, R)
     for d in deltas:  # bad input is refused before ccx is looked for (``indent`` checks again)
-        make_problem(
-            fm, bm, radius=R, delta_max=d, sphere=sphere, flat_hardening=table, mu=mu,
-            mesh_level=mesh, unload=not loading_only,
-        )  # fmt: skip
+        try:
+            make_problem(
+                fm, bm, radius=R, delta_max=d, sphere=sphere, flat_hardening=table, mu=mu,
+                mesh_level=mesh, unload=not loading_only,
+            )  # fmt: skip
+        except ValueError as exc:  # named by the option that set it
+            raise UserError(as_option(str(exc), _OPTIONS, _OPTIONS.__getitem__)) from None
     try:
         find_ccx()
     except RuntimeError as exc:  # not installed: one line saying how to install it
@@ -271,15 +348,9 @@ def indent_cmd(
             results = indent(fm, bm, **kwargs)
     else:
         results = indent(fm, bm, **kwargs)
-    case = {  # what was indented: the JSON's "case", the line above the tables
-        "sphere_material": bm.name,
-        "sphere": sphere,
-        "radius": R,
-        "flat": fm.name,
-        "flat_hardening": "table" if table is not None else "none (elastic-perfectly plastic)",
-        "mu": mu,
-        "mesh_level": mesh,
-    }
+    case = _case(  # what was indented: the JSON's "case"
+        bm, fm, table, sphere=sphere, radius=R, mu=mu, mesh_level=mesh, loading_only=loading_only
+    )
     if as_json:
         from impactlab._json import to_json
         from impactlab.fe.cache import ARRAYS
@@ -290,11 +361,19 @@ def indent_cmd(
             for name in ARRAYS:
                 item[name] = getattr(r, name).tolist()
             payload.append(item)
-        units = {**_UNITS, "radius": "m", "mu": "1"}
+        materials = ("E", "nu", "yield_strength", "brinell_hardness", "meyer_index", "density")
+        units = {
+            **_UNITS,
+            **{key: SI_UNITS[key] for key in materials},
+            "radius": "m",
+            "mu": "1",
+            "true_stress": "Pa",
+            "true_plastic_strain": "1",
+        }
         print(json.dumps(to_json({"case": case, "runs": payload}, units), indent=2))
     else:
         console.print(
-            f"{bm.name} sphere ({sphere}, R = {R * 1e3:g} mm) on {fm.name}"
+            f"{_material_text(bm)} sphere ({sphere}, R = {R * 1e3:g} mm) on {_material_text(fm)}"
             f"{' (hardening table)' if table is not None else ''}, mu = {mu:g}, mesh level {mesh}",
             markup=False,
         )

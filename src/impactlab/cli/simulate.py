@@ -19,15 +19,10 @@ import typer
 from impactlab._compile_gc import garbage_deferred
 from impactlab._validation import did_you_mean
 from impactlab.bodies import PAPER_ROD, FlexibleRod, Rod, Sphere
-from impactlab.bodies.flexible_rod import DEFAULT_N_AXIAL, DEFAULT_N_BENDING
 from impactlab.cli._common import (
-    KINEMATIC_HELP,
-    RATE_CHOICES,
-    STOP_HELP,
     UserError,
     angle_quantity,
     as_option,
-    length_help,
     load_toml,
     positive,
     quantity,
@@ -37,8 +32,11 @@ from impactlab.cli._common import (
 from impactlab.cli.config_values import check_booleans
 from impactlab.cli.drop import flexible_rod
 from impactlab.cli.simulate_from import FROM_RULE, run_from
+from impactlab.cli.simulate_help import HELP
 from impactlab.cli.simulate_output import report_result
 from impactlab.dynamics import ImpactResult, simulate
+from impactlab.dynamics.drop import DEFAULT_T_MAX
+from impactlab.dynamics.drop_checks import DropError
 from impactlab.dynamics.drop_result import DropResult
 from impactlab.friction import DEFAULT_MU
 from impactlab.materials import AISI_201, AISI_1010, Material, get_material
@@ -71,11 +69,12 @@ _KEYS = (
     "damping",
     "rate",
     "stop",
+    "t_max",
 )
 #: Options of a rod that a sphere does not have.
 _ROD_ONLY = ("angle", "length", "inertia", "constant_angle", "diameter")
 #: Options of the flexible rod (``--flexible``) only.
-_FLEX_ONLY = ("modes_axial", "modes_bending", "damping", "rate", "stop")
+_FLEX_ONLY = ("modes_axial", "modes_bending", "damping", "rate", "stop", "t_max")
 #: Options the flexible rod's drop does not have.
 _NOT_FLEX = ("inertia", "constant_angle")
 #: Command-line spelling of the keys whose option is not ``--<key>``.
@@ -170,8 +169,8 @@ def _body(opt: _Options) -> tuple[Rod | Sphere | FlexibleRod, float | None]:
         _refuse(
             opt,
             _FLEX_ONLY,
-            "only a drop has modes, a rate-dependent flat or a stop rule (add --flexible, or "
-            "run the rigid rod's drop: impactlab drop --rigid)",
+            "only a drop has modes, a rate-dependent flat, a stop rule or a time limit (add "
+            "--flexible, or run the rigid rod's drop: impactlab drop --rigid)",
         )
     if kind == "sphere":
         _refuse(
@@ -228,7 +227,9 @@ def run_simulate(opt: _Options) -> ImpactResult | DropResult:
     if isinstance(body, FlexibleRod):  # the drop: a DropResult
         rate = rate_name(str(cfg.get("rate", "none")), opt.label("rate"))
         stop = str(cfg.get("stop", "sequence"))
-        return simulate(body, angle=rod_angle, rate=rate, stop=stop, history=False, **common)
+        t_max = positive(cfg.get("t_max"), "s", opt.label("t_max")) or DEFAULT_T_MAX
+        return simulate(body, angle=rod_angle, rate=rate, stop=stop, t_max=t_max, history=False,
+                        **common)  # fmt: skip
     return simulate(
         body,
         angle=rod_angle,
@@ -248,41 +249,12 @@ def _mu(value: Any, name: str) -> float:
         raise UserError(f"{name} must be a number, got {value!r}") from None
 
 
-#: Help of the options that are keys of the config file.
-_HELP = {
-    **KINEMATIC_HELP,
-    "law": "Contact law, see 'impactlab laws' (default ghaednia).",
-    "friction": "Friction model: impulse_ratio, coulomb (default), mindlin or partial_slip.",
-    "inertia": 'Rod I_C, e.g. "0.0036 kg*m^2" (bare number: kg*m^2; default m L^2/12; rigid rod '
-    "only).",
-    "radius": "Tip / sphere radius (--tip-radius too), e.g. '8.8 mm' (bare number: m; default "
-    "8.8 mm, the paper's).",
-    "length": length_help("0.3048 m"),
-    "mass": "Mass, e.g. '0.46 kg' (bare number: kg; rod default 0.4607 kg, or from --diameter; "
-    "sphere default from the density).",
-    "diameter": "Rod diameter d, e.g. '12 mm' (bare number: m; optional): the mass follows from "
-    "d, L and the material's density (with --mass too: checked to 2 %).",
-    "material": "Body material: a library name (see 'impactlab materials'), properties "
-    "'E=200GPa, nu=0.3, Sy=760MPa, rho=7800kg/m^3' (HB=, n=, brittle=yes optional) or a TOML file "
-    "(default aisi-201).",
-    "flat": "Flat material: a library name (see 'impactlab materials'), properties "
-    "'E=69GPa, nu=0.33, Sy=276MPa, rho=2700kg/m^3' (HB=, n=, brittle=yes optional) or a TOML file "
-    "(default aisi-1010).",
-    "modes_axial": f"Flexible rod: axial modes (default {DEFAULT_N_AXIAL}, + 2 residual).",
-    "modes_bending": f"Flexible rod: bending modes (default {DEFAULT_N_BENDING}).",
-    "damping": "Flexible rod: modal damping ratio zeta of every mode, in [0, 1) (default 0).",
-    "rate": f"Flexible rod: rate-dependent flat, {', '.join(RATE_CHOICES)} (default none).",
-    "stop": f"Flexible rod: {STOP_HELP}",
-    "rtol": "Integration tolerance, in [1e-13, 1e-3] (1e-5 at most with partial_slip).",
-}
-
-
 #: Other spellings of an option (the rod's tip radius is tip_radius elsewhere).
 _ALIASES = {"radius": ("--tip-radius",)}
 
 
 def _option(key: str) -> Any:
-    return typer.Option(None, "--" + key.replace("_", "-"), *_ALIASES.get(key, ()), help=_HELP[key])
+    return typer.Option(None, "--" + key.replace("_", "-"), *_ALIASES.get(key, ()), help=HELP[key])
 
 
 def simulate_cmd(
@@ -319,15 +291,12 @@ def simulate_cmd(
     damping: float = _option("damping"),
     rate: str = _option("rate"),
     stop: str = _option("stop"),
-    rtol: float = typer.Option(None, "--rtol", help=_HELP["rtol"]),
+    t_max: str = _option("t_max"),
+    rtol: float = typer.Option(None, "--rtol", help=HELP["rtol"]),
     config: Path = typer.Option(
         None, "--config", help="TOML file of these keys (or a 'simulate' table); options win."
     ),
-    from_file: Path = typer.Option(
-        None,
-        "--from",
-        help=FROM_RULE,
-    ),
+    from_file: Path = typer.Option(None, "--from", help=FROM_RULE),
     as_json: bool = typer.Option(
         False, "--json", help="Machine-readable output, SI (docs/json-schema.md)."
     ),
@@ -391,6 +360,8 @@ def simulate_cmd(
             except UserError:
                 raise
             except ValueError as exc:  # the API's message names its parameter: name the option
+                if isinstance(exc, DropError):  # "raise t_max": the option's spelling
+                    raise UserError(exc.worded(opt.label)) from None
                 raise UserError(as_option(str(exc), _KEYS, opt.label)) from None
         report_result(result, out=folder, as_json=as_json)
 

@@ -14,17 +14,33 @@ parameters (they are the recorded law's).
 from __future__ import annotations
 
 import json
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Iterable, Mapping
 from pathlib import Path
 from typing import Any
 
 from impactlab._validation import read_text_file
-from impactlab.cli._common import UserError, angle_quantity, quantity, rate_name, velocity_input
+from impactlab.cli._common import (
+    UserError,
+    angle_quantity,
+    as_option,
+    positive,
+    quantity,
+    rate_name,
+    velocity_input,
+)
 from impactlab.dynamics import ImpactResult
+from impactlab.dynamics.drop_checks import DropError
 from impactlab.dynamics.drop_result import DropResult
 from impactlab.materials import get_material
 
-__all__ = ["FROM_BODY_OPTIONS", "FROM_RULE", "from_changes", "load_record", "run_from"]
+__all__ = [
+    "FROM_BODY_OPTIONS",
+    "FROM_RULE",
+    "from_changes",
+    "load_record",
+    "option_error",
+    "run_from",
+]
 
 #: What ``--from`` takes beside it, in one sentence (``--help``, the docs).
 FROM_RULE = (
@@ -119,6 +135,22 @@ def _label(key: str) -> str:
     return "--" + key.replace("_", "-")
 
 
+def option_error(exc: ValueError, options: Iterable[str]) -> UserError:
+    """The API's error ``exc`` for the command line: a keyword it names (``t_max``, ``rtol``,
+    its leading parameter) spelled as the option (``--t-max``) where the command's ``options``
+    (its keys) have it (``DropError.worded``, ``_common.as_option``)."""
+    if isinstance(exc, UserError):
+        return exc
+    keys = frozenset(options)
+
+    def label(key: str) -> str:
+        return _label(key) if key in keys else key
+
+    if isinstance(exc, DropError):
+        return UserError(exc.worded(label))
+    return UserError(as_option(str(exc), keys, label))
+
+
 def _refuse_body_options(given: Mapping[str, Any]) -> None:
     """UserError naming the given options that make the body (``FROM_BODY_OPTIONS``)."""
     body_options = [
@@ -173,6 +205,10 @@ def _options(given: Mapping[str, Any], drop: bool) -> dict[str, Any]:
                 "impacts to follow); leave it out"
             )
         changes["stop"] = str(given["stop"])
+    if given.get("t_max") is not None:  # impactlab drop --t-max
+        if not drop:
+            raise UserError("--t-max: the recorded impact is not a drop; leave it out")
+        changes["t_max"] = positive(given["t_max"], "s", "--t-max")
     return changes
 
 
@@ -229,5 +265,7 @@ def run_from(
         changes.setdefault("history", False)  # a drop: the command prints no history
     try:
         return rerun(record, **changes)
-    except (ValueError, TypeError) as exc:
+    except ValueError as exc:  # the keyword it names (t_max) as the command's option
+        raise UserError(f"--from {str(path)!r}: {option_error(exc, given or {})}") from None
+    except TypeError as exc:
         raise UserError(f"--from {str(path)!r}: {exc}") from None

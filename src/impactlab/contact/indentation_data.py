@@ -22,24 +22,39 @@ import numpy as np
 
 from impactlab._validation import check_positive, read_text_file
 from impactlab.contact._common import jg_critical
+from impactlab.contact.table_input import (
+    END_RTOL,
+    HERTZ_TOLERANCE,
+    MIN_LOADING_POINTS,
+    MIN_RESIDUAL_POINTS,
+    Rows,
+    check_loading,
+    check_unloading,
+    read_table,
+    two,
+)
 from impactlab.materials import ContactPair
+from impactlab.units import is_quantity, magnitude
 
 #: Where the shipped curves are (``shipped_curves``).
 SHIPPED_PATH = Path(__file__).resolve().parent / "data" / "fe-curves.json"
 #: The ``format`` field of a curves file.
 FORMAT = "impactlab indentation curves"
 FORMAT_VERSION = 1
-#: Fewest loading points past the elastic limit, and fewest (delta_max, delta_r) pairs.
-MIN_LOADING_POINTS = 4
-MIN_RESIDUAL_POINTS = 2
-#: Relative gap at the end of the loading curve taken as rounding (``max_delta``).
-END_RTOL = 1e-6
-#: Largest relative difference from Hertz allowed at the first point of measured data.
-HERTZ_TOLERANCE = 0.05
 
 
-def _vector(name: str, value: Any) -> np.ndarray:
+def _vector(name: str, value: Any, unit: str = "") -> np.ndarray:
+    """``value`` as a read-only float64 vector of finite numbers. A pint Quantity is converted
+    to ``unit`` (dimensionless without one); ValueError naming ``name`` otherwise."""
+    if is_quantity(value):
+        try:
+            value = magnitude(name, value, unit or "dimensionless")
+        except ValueError:
+            want = f"a quantity in {unit}" if unit else "dimensionless"
+            raise ValueError(f"{name} must be {want}, got one in {value.units}") from None
     try:
+        if isinstance(value, str | bytes):
+            raise ValueError
         a = np.array(value, dtype=np.float64).ravel()
     except (TypeError, ValueError):
         raise ValueError(f"{name} must be an array of numbers, got {value!r}") from None
@@ -56,8 +71,7 @@ def _increasing(name: str, a: np.ndarray) -> None:
     if (step <= 0.0).any():
         i = int(np.flatnonzero(step <= 0.0)[0])
         raise ValueError(
-            f"{name} must be strictly increasing, got {float(a[i])!r} then {float(a[i + 1])!r} at "
-            f"index {i + 1}"
+            f"{name} must be strictly increasing, got {two(a[i], a[i + 1])} at index {i + 1}"
         )
 
 
@@ -102,14 +116,14 @@ class IndentationCurves:
         if drop.any():
             i = int(np.flatnonzero(drop)[0])
             raise ValueError(
-                f"force must not decrease along the loading curve, got {float(f[i])!r} then "
-                f"{float(f[i + 1])!r} at index {i + 1} (delta/delta_c = {float(d[i + 1])!r})"
+                f"force must not decrease along the loading curve, got {two(f[i], f[i + 1])} "
+                f"at index {i + 1} (delta/delta_c = {d[i + 1]:.4g})"
             )
         past = int((d > lim).sum())
         if past < MIN_LOADING_POINTS:
             raise ValueError(
                 f"the loading curve needs at least {MIN_LOADING_POINTS} points past the elastic "
-                f"limit (delta/delta_c = {lim!r}), got {past}"
+                f"limit (delta/delta_c = {lim:.4g}), got {past}"
             )
         if dm.size < MIN_RESIDUAL_POINTS:
             raise ValueError(
@@ -122,8 +136,8 @@ class IndentationCurves:
         if (r < 0.0).any() or (r >= 1.0).any():
             i = int(np.flatnonzero((r < 0.0) | (r >= 1.0))[0])
             raise ValueError(
-                f"delta_r must lie in [0, delta_max): delta_r / delta_max = {float(r[i])!r} at "
-                f"delta_max/delta_c = {float(dm[i])!r}"
+                f"delta_r must lie in [0, delta_max): delta_r / delta_max = {r[i]:.4g} at "
+                f"delta_max/delta_c = {dm[i]:.4g}"
             )
         for name, a in (("delta", d), ("force", f), ("delta_max", dm), ("residual_ratio", r)):
             object.__setattr__(self, name, a)
@@ -151,46 +165,14 @@ class IndentationCurves:
     ) -> IndentationCurves:
         """Curves from dimensional data of ``pair`` with a sphere of ``radius`` [m]: the
         loading curve ``delta`` [m], ``force`` [N] and the (``delta_max`` [m], ``delta_r`` [m])
-        pairs. The law is Hertz up to the first loading point, whose force must lie within
-        ``HERTZ_TOLERANCE`` of Hertz's (ValueError otherwise)."""
-        if not isinstance(pair, ContactPair):
-            raise ValueError(f"pair must be a ContactPair, got {type(pair).__name__}")
-        R = check_positive("radius", radius, "m")
-        dc, fc = jg_critical(pair.E_star, R, pair.yield_strength, pair.nu)
-        d, f = _vector("delta", delta), _vector("force", force)
-        dm, dr = _vector("delta_max", delta_max), _vector("delta_r", delta_r)
-        if dm.shape != dr.shape:
-            raise ValueError(f"delta_max and delta_r differ in length: {dm.size} and {dr.size}")
-        if d.size and f.size == d.size and d[0] > 0.0:
-            d0, f0 = float(d[0]), float(f[0])
-            hertz = 4.0 / 3.0 * pair.E_star * math.sqrt(R) * d0**1.5
-            off = f0 / hertz - 1.0
-            if not abs(off) <= HERTZ_TOLERANCE:
-                raise ValueError(
-                    f"force at the first loading point (delta = {d0!r} m) is {f0!r} N, "
-                    f"{100 * off:+.1f} % from Hertz's {hertz:.6g} N for this pair and radius: "
-                    f"the data must start in the elastic range (within "
-                    f"{100 * HERTZ_TOLERANCE:g} %)"
-                )
-        with np.errstate(divide="ignore", invalid="ignore"):
-            ratio = dr / dm
-        if ((dr >= dm) & (dm > 0.0)).any():
-            i = int(np.flatnonzero(dr >= dm)[0])
-            raise ValueError(
-                f"delta_r must be < delta_max, got delta_r = {float(dr[i])!r} m at delta_max = "
-                f"{float(dm[i])!r} m"
-            )
-        return cls(
-            name,
-            source,
-            pair.E_star / pair.yield_strength,
-            pair.nu,
-            d / dc,
-            f / fc,
-            dm / dc,
-            ratio,
-            elastic_limit=float(d[0] / dc) if d.size else 1.0,
-        )
+        pairs (numbers in SI, or pint Quantities, converted). The law is Hertz up to the first
+        loading point, whose force must lie within ``HERTZ_TOLERANCE`` of Hertz's; every
+        interference must be below ``radius``, and at least 2 delta_max within the loading
+        curve's range (ValueError otherwise: ``contact.table_input``)."""
+        d, f = _vector("delta", delta, "m"), _vector("force", force, "N")
+        dm, dr = _vector("delta_max", delta_max, "m"), _vector("delta_r", delta_r, "m")
+        rows = (Rows(("delta", "force")), Rows(("delta_max", "delta_r")))
+        return cls._checked(pair, radius, (d, f, dm, dr), rows, name, source)
 
     @classmethod
     def from_csv(
@@ -199,18 +181,55 @@ class IndentationCurves:
         radius: float,
         loading: str | Path,
         unloading: str | Path,
-        **kwargs: str,
+        *,
+        name: str = "measured",
+        source: str = "measured indentation data",
     ) -> IndentationCurves:
-        """Curves from two CSV files (SI units, one header line, comma-separated):
-        ``loading`` with columns delta [m], F [N]; ``unloading`` with delta_max [m],
-        delta_r [m]. See ``from_arrays``."""
-        cols = []
-        for what, path, names in (
-            ("loading", loading, "delta [m], F [N]"),
-            ("unloading", unloading, "delta_max [m], delta_r [m]"),
+        """Curves from two CSV files (SI units, comma-separated, an optional header line:
+        ``read_table``): ``loading`` with columns delta [m], F [N]; ``unloading`` with
+        delta_max [m], delta_r [m]. See ``from_arrays``; a message names the file and line."""
+        cols: list[np.ndarray] = []
+        rows = []
+        for what, path, names, header in (
+            ("loading", loading, ("delta", "F"), "delta [m], F [N]"),
+            ("unloading", unloading, ("delta_max", "delta_r"), "delta_max [m], delta_r [m]"),
         ):
-            cols += read_two_columns(Path(path), f"{what} CSV {str(path)!r}", names)
-        return cls.from_arrays(pair, radius, *cols, **kwargs)
+            where = f"{what} CSV {str(path)!r}"
+            x, y, lines = read_table(Path(path), where, header)
+            cols += [x, y]
+            rows.append(Rows(names, where, lines))
+        return cls._checked(pair, radius, tuple(cols), (rows[0], rows[1]), name, source)
+
+    @classmethod
+    def _checked(
+        cls,
+        pair: ContactPair,
+        radius: float,
+        cols: tuple[np.ndarray, ...],
+        rows: tuple[Rows, Rows],
+        name: str,
+        source: str,
+    ) -> IndentationCurves:
+        """The curves of SI tables ``cols`` (delta, F, delta_max, delta_r) after the checks of
+        ``table_input`` (``check_loading``, ``check_unloading``; ``rows`` name their rows)."""
+        if not isinstance(pair, ContactPair):
+            raise ValueError(f"pair must be a ContactPair, got {type(pair).__name__}")
+        R = check_positive("radius", radius, "m")
+        d, f, dm, dr = cols
+        check_loading(pair, R, d, f, rows[0])
+        check_unloading(R, dm, dr, (float(d[0]), float(d[-1])), rows[1])
+        dc, fc = jg_critical(pair.E_star, R, pair.yield_strength, pair.nu)
+        return cls(
+            name,
+            source,
+            pair.E_star / pair.yield_strength,
+            pair.nu,
+            d / dc,
+            f / fc,
+            dm / dc,
+            dr / dm,
+            elastic_limit=float(d[0] / dc),
+        )
 
     def record(self) -> dict[str, Any]:
         """JSON-ready content (``curves_from_record`` reads it back)."""
@@ -225,49 +244,6 @@ class IndentationCurves:
             "delta_max": self.delta_max.tolist(),
             "residual_ratio": self.residual_ratio.tolist(),
         }
-
-
-def read_two_columns(path: Path, where: str, names: str) -> list[np.ndarray]:
-    """The two columns (``names``, for the messages) of the comma-separated file ``path``: one
-    header line, then one row of two numbers per line (blank lines and ``#`` comments
-    skipped). ValueError starting with ``where`` for a file that is missing, a folder, not UTF-8
-    text, empty, without data rows, or with a row of another width or a text that is not a
-    number."""
-    try:
-        text = read_text_file(path, "CSV", where)
-    except OSError as exc:
-        if path.is_dir():
-            why = "is a folder, not a CSV file"
-        elif not path.exists():
-            why = "does not exist"
-        else:
-            why = f"cannot be read ({exc.strerror or exc})"
-        raise ValueError(f"{where} {why}") from None
-    lines = text.splitlines()
-    if not lines or not text.strip():
-        raise ValueError(f"{where}: the file is empty (expected a header line, then rows of "
-                         f"{names})")  # fmt: skip
-    rows: list[tuple[float, float]] = []
-    for number, line in enumerate(lines[1:], start=2):
-        content = line.split("#", 1)[0].strip()
-        if not content:
-            continue
-        cells = [c.strip() for c in content.split(",")]
-        if len(cells) != 2:
-            raise ValueError(
-                f"{where}: line {number} has {len(cells)} column(s), must have 2 columns "
-                f"({names}); is the file truncated?"
-            )
-        try:
-            rows.append((float(cells[0]), float(cells[1])))
-        except ValueError:
-            raise ValueError(
-                f"{where}: line {number} is not two numbers ({names}), got {content!r}"
-            ) from None
-    if not rows:
-        raise ValueError(f"{where}: no data rows after the header line (expected {names})")
-    table = np.array(rows, dtype=np.float64)
-    return [table[:, 0], table[:, 1]]
 
 
 def curves_from_record(d: dict[str, Any]) -> IndentationCurves:

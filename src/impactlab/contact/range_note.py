@@ -16,8 +16,8 @@ import numpy as np
 
 from impactlab.contact import kernels as k
 from impactlab.contact.names import Law
-from impactlab.contact.ranges import STATUSES, range_limit, range_status
-from impactlab.contact.verified_ranges import e_star_over_sy_span
+from impactlab.contact.ranges import STATUSES, law_range, range_limit, range_status
+from impactlab.contact.verified_ranges import e_star_over_sy_span, verified_upper
 
 __all__ = ["range_note"]
 
@@ -26,8 +26,14 @@ def range_note(law_id: int, params: Any) -> str | None:
     """``verified against FE up to 1 delta_c (E*/S_y = 360; FE cases 28-1731)``, or
     ``unverified: E*/S_y = 2198 outside the FE cases' 28-1731; stand-in limit 110 delta_c``,
     or the stand-in's status (``contact.ranges.STATUSES``) and limit for a law without a
-    verified range (the tabulated law: its data's end); None for an unknown
-    law or without parameters (SI parameters ``params`` of ``ContactModel.params``)."""
+    verified range (the tabulated law: its data's end); None for an unknown law or without
+    parameters (SI parameters ``params`` of ``ContactModel.params``).
+
+    A verified upper end is in Jackson-Green's delta_c, as in the docs and ``impactlab laws
+    --accuracy``; where the law's own reference interference differs (Kogut-Komvopoulos' and
+    Brake's delta_y, the unit of a result's ``max_delta_ratio``) the line also gives it in
+    that one (``... 0.3 delta_c (Jackson-Green's; = 0.305 delta_y, the law's own; ...``). A
+    stand-in limit is in the law's own reference (``LawRange.delta_ref``)."""
     status = range_status(law_id, params)
     if status is None or params is None:
         return None
@@ -36,10 +42,16 @@ def range_note(law_id: int, params: Any) -> str | None:
     limit = float(range_limit(law_id, params))
     name = next((str(law) for law in Law if law.law_id == int(law_id)), "")
     lo, hi = e_star_over_sy_span(name)
-    upper = "no upper end" if math.isinf(limit) else f"{limit:.3g} delta_c"
+    ref = law_range(name).delta_ref.split(" ")[0]  # the law's own: delta_c or delta_y
+    upper = "no upper end" if math.isinf(limit) else f"{limit:.3g} {ref}"
     if status == "verified":
+        jg = float(verified_upper(name, ratio))  # in Jackson-Green's delta_c, as the docs
+        own = f"Jackson-Green's; = {upper}, the law's own; "
+        if math.isclose(limit, jg, rel_tol=5e-4):
+            own = ""
         return (
-            f"verified against FE up to {upper} (E*/S_y = {ratio:.4g}; FE cases {lo:.0f}-{hi:.0f})"
+            f"verified against FE up to {jg:.3g} delta_c ({own}E*/S_y = {ratio:.4g}; FE cases "
+            f"{lo:.0f}-{hi:.0f})"
         )
     if status == "unverified":
         return (

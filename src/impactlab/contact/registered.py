@@ -32,6 +32,7 @@ from typing import Any
 
 import numpy as np
 
+from impactlab._validation import check_positive, warn_implausible
 from impactlab.contact._common import jg_critical
 from impactlab.contact.indentation_data import IndentationCurves, curves_from_record
 from impactlab.contact.tabulated import Tabulated, interpolation_error
@@ -46,6 +47,10 @@ DEFAULT_POINTS = 64
 CHECKS_PER_INTERVAL = 7
 #: The format of a registered law's record.
 RECORD_FORMAT = "impactlab registered law"
+#: Plausible sphere radius [m] of a sampled law; outside it an ImplausibleInputWarning (most
+#: likely a unit mistake). The bodies' bound (``impactlab.bodies._checks.PLAUSIBLE_RADIUS``),
+#: repeated: the contact layer does not import the bodies.
+PLAUSIBLE_RADIUS = (1e-6, 0.5)
 
 
 def check_law_name(name: Any) -> str:
@@ -190,14 +195,28 @@ def sample_law(
         raise ValueError(f"points must be an integer in [8, 4096], got {points!r}")
     if not (isinstance(tolerance, float | int) and 0.0 < tolerance < 1.0):
         raise ValueError(f"tolerance must lie in (0, 1), got {tolerance!r}")
-    dc, _fc = jg_critical(pair.E_star, float(radius), pair.yield_strength, pair.nu)
+    radius = check_positive("radius", radius, "m")
+    lo, hi = PLAUSIBLE_RADIUS
+    if not lo <= radius <= hi:
+        mm = f"; in mm it would be {radius / 1000:g} m" if radius > hi else ""
+        warn_implausible(
+            f"radius = {radius:g} m lies outside the plausible range [{lo:g}, {hi:g}] m; check "
+            f"the units (impactlab takes SI: a bare number is in m{mm})"
+        )
+    dc, _fc = jg_critical(pair.E_star, radius, pair.yield_strength, pair.nu)
     d0 = dc if elastic_limit is None else float(elastic_limit)
     if not (math.isfinite(d0) and d0 > 0.0):
-        raise ValueError(f"elastic_limit must be > 0 m, got {elastic_limit!r}")
+        raise ValueError(f"elastic_limit must be > 0 m, got {d0!r}")
     if not (isinstance(delta_max, float | int) and math.isfinite(delta_max) and delta_max > d0):
+        limit = (
+            f"the pair's delta_c at radius = {radius:g} m (Jackson & Green 2005)"
+            if elastic_limit is None
+            else "elastic_limit"
+        )
+        got = float(delta_max) if isinstance(delta_max, float | int) else delta_max
         raise ValueError(
-            f"delta_max must be a number of m above the elastic limit ({d0:.4g} m), "
-            f"got {delta_max!r}"
+            f"delta_max must be a number of m above the elastic limit, {limit}: {d0:.4g} m; "
+            f"got {got!r}"
         )
     grid = np.geomspace(d0, float(delta_max), points)
     curves = IndentationCurves.from_arrays(
@@ -236,6 +255,7 @@ __all__ = [
     "CHECKS_PER_INTERVAL",
     "DEFAULT_POINTS",
     "DEFAULT_TOLERANCE",
+    "PLAUSIBLE_RADIUS",
     "RECORD_FORMAT",
     "RegisteredLaw",
     "check_law_name",

@@ -109,9 +109,9 @@ def _raw_loading(c: IndentationCurves) -> tuple[np.ndarray, np.ndarray]:
     z = np.concatenate(([1.5 * x[0]], np.log(c.force[keep])))
     if z[1] < z[0]:
         raise ValueError(
-            f"force at delta/delta_c = {float(c.delta[keep][0])!r} "
-            f"({float(c.force[keep][0])!r} F_c) is below Hertz's at the elastic limit "
-            f"delta/delta_c = {c.elastic_limit!r}: the loading curve would decrease"
+            f"force at delta/delta_c = {float(c.delta[keep][0]):.4g} "
+            f"({float(c.force[keep][0]):.4g} F_c) is below Hertz's at the elastic limit "
+            f"delta/delta_c = {c.elastic_limit:.4g}: the loading curve would decrease"
         )
     return x, z
 
@@ -150,8 +150,8 @@ def residual_points(c: IndentationCurves) -> tuple[np.ndarray, np.ndarray]:
     if r[0] > 0.0:
         if not c.elastic_limit < dm[0]:
             raise ValueError(
-                f"delta_r > 0 at delta_max/delta_c = {dm[0]!r}, at or below the elastic limit "
-                f"({c.elastic_limit!r}): the first residual depth must lie past it"
+                f"delta_r > 0 at delta_max/delta_c = {dm[0]:.4g}, at or below the elastic limit "
+                f"({c.elastic_limit:.4g}): the first residual depth must lie past it"
             )
         dm, r = np.concatenate(([c.elastic_limit], dm)), np.concatenate(([0.0], r))
     nz = np.flatnonzero(r > 0.0)
@@ -321,7 +321,8 @@ class Tabulated(ContactLaw):
         details = {
             "delta_c": dc,
             "F_c": fc,
-            "elastic_limit": float(p[k.P_DSW]),
+            # the curves' elastic_limit (delta/delta_c); in m it is the switch_interference
+            "elastic_limit_over_delta_c": c.elastic_limit,
             "curves_e_star_over_sy": c.e_star_over_sy,
             "curves_nu": c.nu,
             "ratio_offset": E / Sy / c.e_star_over_sy - 1.0,

@@ -19,8 +19,8 @@ import numpy as np
 
 from impactlab import schema
 from impactlab._compile_notice import one_line
-from impactlab._validation import check_finite
-from impactlab.bodies import Rod
+from impactlab._validation import check_finite, check_flag
+from impactlab.bodies import Rod, lever_arms
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.bodies.layout import BP_GSTAR
 from impactlab.contact import ContactModel
@@ -38,6 +38,7 @@ from impactlab.contact.rate import (
 from impactlab.dynamics.drop_body import BodyModel, body_model
 from impactlab.dynamics.drop_checks import (
     DROP_FRICTION,
+    MIN_APPROACH_SPEED,
     STOP_MODES,
     DropError,
     check_body,
@@ -61,6 +62,7 @@ from impactlab.dynamics.input_checks import (
     contact_reach,
     gravity_value,
     velocity_from,
+    warn_fast,
 )
 from impactlab.dynamics.kernels.layout import MU_NEGLIGIBLE
 from impactlab.dynamics.models import (
@@ -92,10 +94,6 @@ __all__ = [
 
 #: Longest simulated time after the first touch [s] (a sequence still going is an error).
 DEFAULT_T_MAX = 0.5
-#: Smallest normal approach speed of the tip the drop integrates [m/s]: the Hertzian depth and
-#: time scales of the integrator (delta* ~ v^0.8) underflow below about 1e-100 m/s; far above
-#: that, every drop below about 1 cm/s is gravity-dominated (flagged).
-MIN_APPROACH_SPEED = 1e-9
 #: Contact laws without plasticity: a rate-dependent flat is refused with them.
 ELASTIC_LAWS = frozenset({"hertz"})
 
@@ -314,7 +312,9 @@ def simulate_drop(
     Returns a DropResult: every contact, the dents, the totals, the energy balance, the
     history if asked, the references and ``input``, the record of this call
     (``dynamics.provenance``: ``impactlab.rerun`` runs it again). ValueError for invalid input
-    or a failed integration.
+    (the checks of ``impactlab.simulate``; history True or False; with partial slip rtol up to
+    1e-5) or a failed integration (``DropError``); an ImplausibleInputWarning for an impact
+    speed above 100 m/s.
     """
     velocity = velocity_from(velocity, speed, incidence)
     body = check_body(body)
@@ -331,9 +331,10 @@ def simulate_drop(
     w = check_spin(check_finite("spin", spin, "rad/s"), contact_reach(bm.rigid))
     g = gravity_value(gravity)
     options = (
-        drop_rtol(rtol),
+        drop_rtol(rtol, fric),
         *check_stop(stop, t_max),
     )
+    record_history = check_flag("history", history)
     vn0 = vy - w * bm.rigid.half_length * math.cos(th)
     if not vn0 < 0.0:
         raise ValueError(
@@ -346,6 +347,8 @@ def simulate_drop(
             f"{-float(vn0):.3g} m/s is below {MIN_APPROACH_SPEED:g} m/s, the smallest the drop "
             f"integrates (its Hertzian depth and time scales underflow); give a larger |vy|"
         )
+    _, b = lever_arms(bm.rigid.half_length, bm.rigid.tip_radius, th)  # as simulate warns
+    warn_fast("the impact speed", max(math.hypot(vx, vy), math.hypot(vx + w * b, vn0)))
 
     gstar = float(body_params(bm.rigid, flat)[BP_GSTAR])
     mu_run = 0.0 if mu_v < MU_NEGLIGIBLE else mu_v  # frictionless, as in the rigid engine
@@ -364,7 +367,7 @@ def simulate_drop(
                     (*options, record), max_steps)  # fmt: skip
 
     model, factor = _rate_model(rate, law, bm.rigid, flat, law_params, run, vn0)
-    r = run(model, bool(history))
+    r = run(model, record_history)
     if r.status != F.ST_OK:
         raise status_error(r.status, model, r.out)
     refs = references_used(model, fric, mu_run > 0.0) + bm.references

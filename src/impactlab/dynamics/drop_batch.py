@@ -10,7 +10,6 @@ bit, that of ``simulate_drop`` with the same inputs (tests/flexible/test_drop_ba
 
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
@@ -24,6 +23,7 @@ from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.bodies.layout import BP_GSTAR
 from impactlab.contact import ContactModel
 from impactlab.contact.brittle import brittle_flags, brittle_pressure
+from impactlab.contact.range_note import range_note
 from impactlab.contact.ranges import delta_ratio, extrapolation_flags
 from impactlab.dynamics.batch_status import (
     INTEGER_FIELDS,
@@ -31,7 +31,7 @@ from impactlab.dynamics.batch_status import (
     flag_column,
     integer_series,
 )
-from impactlab.dynamics.drop import DEFAULT_T_MAX, MIN_APPROACH_SPEED
+from impactlab.dynamics.drop import DEFAULT_T_MAX
 from impactlab.dynamics.drop_body import body_model
 from impactlab.dynamics.drop_checks import (
     check_body,
@@ -40,7 +40,10 @@ from impactlab.dynamics.drop_checks import (
     drop_rtol,
     energy_balance_bound,
     energy_balance_error,
+    input_problems,
+    input_status,
 )
+from impactlab.dynamics.export import _flag_attrs, _status_attrs
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.batch import (
     CK_E0,
@@ -52,16 +55,11 @@ from impactlab.dynamics.flexcore.batch import (
 from impactlab.dynamics.flexcore.indirect import batch_addresses
 from impactlab.dynamics.flexcore.model import constants, model_tuple
 from impactlab.dynamics.history import readonly_copy
-from impactlab.dynamics.input_checks import (
-    batch_velocity,
-    check_flat,
-    contact_reach,
-    gravity_value,
-)
+from impactlab.dynamics.input_checks import batch_velocity, check_flat, gravity_value
 from impactlab.dynamics.kernels import status as S
-from impactlab.dynamics.kernels.inputs import IN_ANGLE, IN_OK, input_problem
 from impactlab.dynamics.kernels.layout import MU_NEGLIGIBLE
 from impactlab.dynamics.models import body_params, contact_model, kernel_params, references_used
+from impactlab.dynamics.pint_fields import pint_unit
 from impactlab.dynamics.simulate_many import _batch_inputs
 from impactlab.friction import COULOMB, DEFAULT_MU, PARTIAL_SLIP
 from impactlab.materials import AISI_1010, Material
@@ -79,6 +77,57 @@ PUBLIC_FIELDS = (
     "sequence_mean_force",
 )
 _ENGINE_NAME = {new: old for old, new in schema.RENAMED_DROP_FIELDS.items()}
+#: The outputs of ``to_xarray`` and ``to_pint``.
+_DATASET_OUTPUTS = (*PUBLIC_FIELDS, "initial_energy", "max_delta_ratio")
+#: The engine's own unit and meaning of each column (``flexcore.layout.DROP_FIELDS``).
+_ENGINE_FIELDS = {f.name: f for f in F.DROP_FIELDS}
+
+
+def output_unit(name: str) -> tuple[str, str]:
+    """(SI unit, meaning) of an output of ``DropBatchResult`` (``impactlab.schema``, else the
+    engine's column: ``n_jumps``, ``n_dents``, ``t_final``)."""
+    try:
+        return schema.unit(name), schema.description(name)
+    except KeyError:
+        f = _ENGINE_FIELDS[_ENGINE_NAME.get(name, name)]
+        return f.unit, f.description
+
+
+def drop_dataset(drops: DropBatchResult) -> Any:
+    """``DropBatchResult.to_xarray``: the conventions of ``export.batch_dataset``."""
+    import xarray as xr  # heavy, needed only here
+
+    status = np.asarray(drops.status)
+    failed = status != 0
+    variables: dict[str, Any] = {}
+    for name, v in drops.inputs.items():
+        unit, meaning = output_unit(name)
+        variables[name] = ("case", np.array(v), {"units": unit, "long_name": f"input: {meaning}"})
+    for name in _DATASET_OUTPUTS:
+        unit, meaning = output_unit(name)
+        attrs: dict[str, Any] = {"units": unit, "long_name": meaning}
+        values = np.array(drops[name], dtype=np.float64)
+        if name in INTEGER_FIELDS:  # counts, and next_end (-1: no end lands next)
+            attrs["comment"] = "-2: the case failed (see status)"
+            values = np.where(failed, -2, values).astype(np.int64)
+        variables[name] = ("case", values, attrs)
+    flags = np.where(failed, -1, np.asarray(drops.flags)).astype(np.int64)
+    unit, meaning = output_unit("flags")
+    flag_attrs = {"units": unit, "long_name": meaning, **_flag_attrs()}
+    variables["flags"] = (
+        "case",
+        flags,
+        flag_attrs | {"comment": "-1: the case failed (see status)"},
+    )
+    variables["status"] = ("case", status.astype(np.int32), _status_attrs())
+    attrs = {"body": drops.body, "law": drops.law, "friction": drops.friction}
+    attrs |= {"gravity": drops.gravity, "rtol": drops.rtol}
+    attrs |= {"references": [r.key for r in drops.references]}
+    attrs |= {"dois": [r.doi for r in drops.references if r.doi]}
+    attrs |= {"source": "impactlab.simulate_drops"}
+    if drops.law_range is not None:
+        attrs["law_range"] = drops.law_range
+    return xr.Dataset(variables, coords={"case": np.arange(status.shape[0])}, attrs=attrs)
 
 
 @dataclass(frozen=True)
@@ -93,7 +142,10 @@ class DropBatchResult(BatchStatus):
     (``sequence_duration``, ``dent_depth``, ``sequence_sliding_length``,
     ``sequence_mean_force`` = P_n / sequence_duration) as ``DropResult`` has them; the names
     before 0.3 warn (``schema.RENAMED_DROP_FIELDS``). ``computed``, ``ok``, ``flagged`` and
-    ``messages`` per case as every batch has them (``batch_status.BatchStatus``)."""
+    ``messages`` per case as every batch has them (``batch_status.BatchStatus``; a refused
+    input's message names the input and its rule). ``law_range``: the law's range for the
+    pair in one line (``contact.range_note``), as ``BatchResult`` and ``DropResult`` have it;
+    ``to_dataframe``, ``to_xarray`` (NetCDF-ready) and ``to_pint`` as ``BatchResult``'s."""
 
     out: np.ndarray = field(repr=False)
     status: np.ndarray = field(repr=False)
@@ -107,6 +159,10 @@ class DropBatchResult(BatchStatus):
     gravity: float
     rtol: float
     references: tuple[Reference, ...] = field(default=(), repr=False)
+    #: the range the law is held to for the batch's pair, one line (``contact.range_note``)
+    law_range: str | None = field(default=None, repr=False)
+    #: why each case refused with ST_BAD_INPUT is refused, by case index (``case_problem``)
+    refusals: Mapping[int, str] = field(default_factory=dict, repr=False)
 
     def __post_init__(self) -> None:
         for name in ("out", "initial_energy", "max_delta_ratio"):
@@ -128,6 +184,8 @@ class DropBatchResult(BatchStatus):
             return self[new]
         if name in DROP_BATCH_FIELDS:
             return self._column(name)
+        if name in ("initial_energy", "max_delta_ratio"):
+            return np.asarray(getattr(self, name))
         if name in self.inputs:
             return self.inputs[name]
         known = ", ".join((*PUBLIC_FIELDS, *self.inputs))
@@ -169,52 +227,40 @@ class DropBatchResult(BatchStatus):
         df["flags"] = integer_series(self.flags, self.computed)
         return df
 
+    @property
+    def messages(self) -> list[str]:
+        """The status message of each case (``kernels.status.STATUS_MESSAGES``); a case refused
+        for its inputs (ST_BAD_INPUT) names the input and its rule, or the smallest approach
+        speed the drop integrates (``drop_checks.case_problem``)."""
+        texts = super().messages
+        for i, why in self.refusals.items():
+            texts[i] = f"invalid input: {why}"
+        return texts
+
+    def to_xarray(self) -> Any:
+        """An ``xarray.Dataset`` over ``case``, as ``BatchResult.to_xarray``: the inputs and
+        outputs (``PUBLIC_FIELDS``, ``initial_energy``, ``max_delta_ratio``; SI, ``units`` and
+        ``long_name`` attributes), the counts and ``next_end`` as integers (-2 where the case
+        failed: its status says why), ``flags`` and ``status`` as integer codes whose meanings
+        are in their attributes (flags -1 where the case failed). ``ds.to_netcdf(path)``
+        writes it as it is."""
+        return drop_dataset(self)
+
+    def to_pint(self, registry: Any = None) -> dict[str, Any]:
+        """Each output (``PUBLIC_FIELDS``, ``initial_energy``, ``max_delta_ratio``) as a pint
+        Quantity of an array (SI; NaN where a case failed); ``registry``: your pint
+        registry."""
+        from impactlab.units import registry as shared  # pint loads on first use
+
+        ureg = shared() if registry is None else registry
+        return {
+            name: ureg.Quantity(np.array(self[name]), pint_unit(output_unit(name)[0]))
+            for name in _DATASET_OUTPUTS
+        }
+
     def dois(self) -> tuple[str, ...]:
         """DOIs of ``references``, in order, without repeats."""
         return doi_list(self.references)
-
-
-def input_status(
-    rod: Rod, cols: Mapping[str, np.ndarray], gravity: float, rtol: float
-) -> np.ndarray:
-    """The status of each case's inputs as ``simulate_drop`` refuses them (0: runs), by the
-    rules of every impact (``dynamics.kernels.inputs.input_problem``, ``gravity`` [m/s^2] and
-    ``rtol`` the same for every case): a non-finite input, a speed, spin, mu, gravity or rtol
-    outside its bound, or an approach speed below ``MIN_APPROACH_SPEED``: ST_BAD_INPUT; an
-    angle outside (0, pi/2]: ST_BAD_ANGLE; a tip that does not approach the flat
-    (vy - spin (L/2) cos(angle) >= 0): ST_NOT_APPROACHING."""
-    reach = contact_reach(rod)
-    th, vx, vy, w, mu = (np.asarray(cols[k], dtype=np.float64).tolist()
-                         for k in ("angle", "vx", "vy", "spin", "mu"))  # fmt: skip
-    return np.array(
-        [
-            _case_status(rod.half_length, reach, case, gravity, rtol)
-            for case in zip(th, vx, vy, w, mu, strict=True)
-        ],
-        dtype=np.int32,
-    )
-
-
-def _case_status(
-    half_length: float,
-    reach: float,
-    case: tuple[float, float, float, float, float],
-    gravity: float,
-    rtol: float,
-) -> int:
-    """One case (angle, vx, vy, spin, mu) of :func:`input_status`."""
-    th, vx, vy, w, mu = case
-    if not all(map(math.isfinite, (th, vx, vy, w, mu))):
-        return S.ST_BAD_INPUT
-    problem = input_problem(True, th, vx, vy, w, reach, mu, gravity, rtol)
-    if problem == IN_ANGLE:
-        return S.ST_BAD_ANGLE
-    if problem != IN_OK:
-        return S.ST_BAD_INPUT
-    vn = vy - w * half_length * math.cos(th)
-    if not vn < 0.0:
-        return S.ST_NOT_APPROACHING
-    return S.ST_BAD_INPUT if -vn < MIN_APPROACH_SPEED else S.ST_OK
 
 
 def simulate_drops(
@@ -249,10 +295,12 @@ def simulate_drops(
     (``simulate_drop``'s ``rate``: its self-consistent factor iterates per case).
 
     A case the drop refuses (a non-finite input, mu < 0, an angle outside (0, pi/2], a tip
-    that does not approach the flat) or whose drop fails (its status, e.g. ST_TMAX, or
-    ST_INACCURATE when the energy balance closed worse than rtol promises) gets its status in
-    ``DropBatchResult.status`` and NaN outputs; it never stops the batch. ValueError for a bad
-    body, flat, law, friction, gravity, rtol, stop or t_max (one message naming it).
+    that does not approach the flat, or approaches it slower than ``MIN_APPROACH_SPEED``) or
+    whose drop fails (its status, e.g. ST_TMAX, or ST_INACCURATE when the energy balance
+    closed worse than rtol promises) gets its status in ``DropBatchResult.status`` (its reason
+    in ``messages``) and NaN outputs; it never stops the batch. ValueError for a bad body,
+    flat, law, friction, gravity, rtol (with partial slip: up to 1e-5), stop or t_max (one
+    message naming it).
     """
     body = check_body(body)
     bm = body_model(body)
@@ -264,13 +312,13 @@ def simulate_drops(
             "with a unit), in (0, pi/2]"
         )
     g = gravity_value(gravity)
-    r = drop_rtol(rtol)
+    r = drop_rtol(rtol, fric)
     t_end, stop_mode = check_stop(stop, t_max)
     model = contact_model(bm.rigid, flat, law, law_params)
     vx, vy = batch_velocity(vx, vy, speed, incidence)
     cols = _batch_inputs({"mu": mu, "angle": angle, "vx": vx, "vy": vy, "spin": spin})
     n = cols["angle"].shape[0]
-    status = input_status(bm.rigid, cols, g, r)
+    status, refusals = input_problems(bm.rigid, cols, g, r)
     run = status == 0
     mu_run = np.where(cols["mu"] < MU_NEGLIGIBLE, 0.0, cols["mu"])  # frictionless below
     fid = np.full(n, fric.friction_id, dtype=np.int64)
@@ -323,6 +371,8 @@ def simulate_drops(
         gravity=g,
         rtol=r,
         references=tuple(dict.fromkeys(refs)),
+        law_range=range_note(model.law_id, model.params),
+        refusals={i: t for i, t in refusals.items() if status[i] == S.ST_BAD_INPUT},
     )
 
 

@@ -1,11 +1,11 @@
-"""The checks of a flexible-rod drop: its inputs (body, friction, spin unit, stop), its failure
-as a ``DropError`` with the status and a hint, the energy balance against the tolerance, and
-the result flags (docs/flexible.md, "Flags")."""
+"""The checks of a flexible-rod drop: its inputs (body, friction, tolerance, stop, and each
+case's kinematics as a status), its failure as a ``DropError`` with the status and a hint, the
+energy balance against the tolerance, and the result flags (docs/flexible.md, "Flags")."""
 
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from typing import Any
 
 import numpy as np
@@ -18,9 +18,32 @@ from impactlab.contact.brittle import brittle_flags
 from impactlab.contact.ranges import law_extrapolated
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.batch import sequence_flags
-from impactlab.dynamics.input_checks import check_mu, check_rtol
+from impactlab.dynamics.input_checks import (
+    PARTIAL_SLIP_RTOL_MAX,
+    check_mu,
+    check_rtol,
+    contact_reach,
+)
+from impactlab.dynamics.kernels import status as S
+from impactlab.dynamics.kernels.inputs import (
+    IN_ANGLE,
+    IN_GRAVITY,
+    IN_MU,
+    IN_OK,
+    IN_RTOL,
+    IN_SPIN,
+    IN_VX,
+    IN_VY,
+    input_problem,
+    problem_text,
+)
 from impactlab.flags import ENERGY_GAIN_RTOL_FACTOR, ENERGY_ROUNDOFF, ResultFlag
 from impactlab.friction import FrictionKind, FrictionModel, get_friction
+
+#: Smallest normal approach speed of the tip the drop integrates [m/s]: the Hertzian depth and
+#: time scales of the integrator (delta* ~ v^0.8) underflow below about 1e-100 m/s; far above
+#: that, every drop below about 1 cm/s is gravity-dominated (flagged).
+MIN_APPROACH_SPEED = 1e-9
 
 #: ``stop`` values: the tip's sequence (the other end's landing is a new impact), or the whole
 #: flight through the other end's impacts until the rod flies off.
@@ -46,9 +69,22 @@ def check_friction(friction: str, mu: float) -> tuple[FrictionModel, float]:
     return fric, check_mu(mu)
 
 
-def drop_rtol(rtol: Any) -> float:
-    """The relative tolerance of a drop: ``rtol``, checked, or ``DROP_DEFAULT_RTOL`` for None."""
-    return check_rtol(rtol if rtol is not None else F.DROP_DEFAULT_RTOL)
+def drop_rtol(rtol: Any, friction: FrictionModel | None = None) -> float:
+    """The relative tolerance of a drop: ``rtol``, checked, or ``DROP_DEFAULT_RTOL`` for None;
+    with ``friction`` partial slip at most ``PARTIAL_SLIP_RTOL_MAX``, the rigid engine's cap
+    (``input_checks``): the paper's drops at rtol 1e-5 keep the contacts of rtol 1e-9 and e,
+    the dent and the slip within 0.04 %, at 1e-4 the 70 deg drop gains a contact, and at 1e-3
+    the 20 deg one has 8 contacts instead of 5 and an energy error of 9 %."""
+    r = check_rtol(rtol if rtol is not None else F.DROP_DEFAULT_RTOL)
+    partial_slip = friction is not None and friction.kind is FrictionKind.PARTIAL_SLIP
+    if partial_slip and r > PARTIAL_SLIP_RTOL_MAX:
+        raise ValueError(
+            f"rtol {r:g} is too loose for friction 'partial_slip' (allowed: up to "
+            f"{PARTIAL_SLIP_RTOL_MAX:g}, as in the rigid engine; the drop's default is "
+            f"{F.DROP_DEFAULT_RTOL:g}): beyond it the Mindlin-Deresiewicz cells' events "
+            "outrun the steps and the contacts and the energy balance go wrong"
+        )
+    return r
 
 
 def check_stop(stop: Any, t_max: Any) -> tuple[float, int]:
@@ -58,35 +94,119 @@ def check_stop(stop: Any, t_max: Any) -> tuple[float, int]:
     return check_positive("t_max", t_max, "s"), STOP_MODES.index(stop)
 
 
-class DropError(ValueError):
-    """A drop whose integration failed; ``status`` is its code (``flexcore.layout.ST_*``)."""
+#: The keywords a drop's error tells the user to change: ``{t_max}`` in a message's template.
+DROP_KEYWORDS = ("t_max", "rtol", "friction")
 
-    def __init__(self, message: str, status: int) -> None:
-        super().__init__(message)
+
+def _literal(text: str) -> str:
+    """``text`` as a literal part of a ``DropError`` template (its braces doubled)."""
+    return text.replace("{", "{{").replace("}", "}}")
+
+
+#: The kinematic inputs of a case, in the order of ``case_problem``'s ``case``.
+CASE_INPUTS = ("angle", "vx", "vy", "spin", "mu")
+
+
+def case_problem(
+    half_length: float,
+    reach: float,
+    case: tuple[float, float, float, float, float],
+    gravity: float,
+    rtol: float,
+) -> tuple[int, str]:
+    """(status, why) of one case's inputs (angle [rad], vx, vy [m/s], spin [rad/s], mu) as
+    ``simulate_drop`` refuses them, ``(ST_OK, "")`` when it runs: the rules of every impact
+    (``kernels.inputs.input_problem``, with ``gravity`` [m/s^2], ``rtol`` and the contact
+    point's ``reach`` L/2 + R [m]) and, for a rod of half length ``half_length`` [m], a tip
+    that approaches the flat at ``MIN_APPROACH_SPEED`` or faster. A non-finite input, a speed,
+    spin, mu, gravity or rtol outside its bound or too slow an approach: ST_BAD_INPUT; an
+    angle outside (0, pi/2]: ST_BAD_ANGLE; a tip that does not approach: ST_NOT_APPROACHING."""
+    for name, value in zip(CASE_INPUTS, case, strict=True):
+        if not math.isfinite(value):
+            return S.ST_BAD_INPUT, f"{name} = {value!r} is not finite"
+    th, vx, vy, w, mu = case
+    problem = input_problem(True, th, vx, vy, w, reach, mu, gravity, rtol)
+    if problem != IN_OK:
+        values = {IN_ANGLE: th, IN_VX: vx, IN_VY: vy, IN_SPIN: w, IN_MU: mu}
+        values |= {IN_GRAVITY: gravity, IN_RTOL: rtol}
+        code = S.ST_BAD_ANGLE if problem == IN_ANGLE else S.ST_BAD_INPUT
+        return code, problem_text(problem, values[problem])
+    vn = vy - w * half_length * math.cos(th)
+    if not vn < 0.0:
+        return S.ST_NOT_APPROACHING, (
+            f"the tip's normal velocity vy - spin (L/2) cos(angle) = {vn!r} m/s must be < 0"
+        )
+    if -vn < MIN_APPROACH_SPEED:
+        return S.ST_BAD_INPUT, (
+            f"vy = {vy!r} m/s, spin = {w!r} rad/s: the tip's normal approach speed "
+            f"|vy - spin (L/2) cos(angle)| = {-vn:.3g} m/s is below {MIN_APPROACH_SPEED:g} m/s, "
+            "the smallest the drop integrates"
+        )
+    return S.ST_OK, ""
+
+
+def input_problems(
+    rod: Rod, cols: Mapping[str, np.ndarray], gravity: float, rtol: float
+) -> tuple[np.ndarray, dict[int, str]]:
+    """The status of each case's inputs (``cols``: the columns of ``CASE_INPUTS``; 0: runs) and,
+    by case index, why each refused one is refused (``case_problem``)."""
+    reach = contact_reach(rod)
+    columns = (np.asarray(cols[k], dtype=np.float64).tolist() for k in CASE_INPUTS)
+    status = []
+    why: dict[int, str] = {}
+    for i, case in enumerate(zip(*columns, strict=True)):
+        code, text = case_problem(rod.half_length, reach, case, gravity, rtol)
+        status.append(code)
+        if code != S.ST_OK:
+            why[i] = text
+    return np.array(status, dtype=np.int32), why
+
+
+def input_status(
+    rod: Rod, cols: Mapping[str, np.ndarray], gravity: float, rtol: float
+) -> np.ndarray:
+    """The status of each case's inputs as ``simulate_drop`` refuses them (0: runs;
+    ``case_problem``)."""
+    return input_problems(rod, cols, gravity, rtol)[0]
+
+
+class DropError(ValueError):
+    """A drop whose integration failed; ``status`` is its code (``flexcore.layout.ST_*``).
+    ``template``: the message with the keywords it asks to change as ``{t_max}``, ``{rtol}``,
+    ``{friction}`` (``DROP_KEYWORDS``); ``str(error)`` names the Python keywords,
+    ``worded(label)`` the caller's spelling (``impactlab drop``: ``--t-max``)."""
+
+    def __init__(self, message: str, status: int, *, template: str | None = None) -> None:
+        self.template = _literal(message) if template is None else template
+        super().__init__(self.worded(str))
         self.status = status
+
+    def worded(self, label: Callable[[str], str]) -> str:
+        """The message with each keyword it names spelled ``label(keyword)``."""
+        return self.template.format(**{k: label(k) for k in DROP_KEYWORDS})
 
 
 def status_error(status: int, model: ContactModel, out: np.ndarray | None = None) -> DropError:
     """The ValueError of a failed drop (``layout.ST_*``; ``out``: its output row, when known)."""
-    text = F.STATUS_MESSAGES.get(status, f"status {status}")
+    text = _literal(F.STATUS_MESSAGES.get(status, f"status {status}"))
     where = ""
     if out is not None:
         steps, t = int(out[F.O_N_STEPS]), float(out[F.O_T_FINAL])
         where = f" after {steps} steps, {t * 1e3:.4g} ms after the first touch"
-    hints = {
-        F.ST_LAW_LIMIT: f" ({model.max_interference:.6g} m for the {model.name!r} law){where}: "
-        "the contact force could not stop the rod within the law's range (too fast an "
-        "impact, a jammed friction contact or too strong gravity); lower the impact velocity, "
-        "mu or gravity, or choose another law",
-        F.ST_TMAX: f"{where}: raise t_max",
+    hints = {  # templates: {t_max}, {rtol}, {friction} name the keyword (DropError.worded)
+        F.ST_LAW_LIMIT: f" ({model.max_interference:.6g} m for the {_literal(repr(model.name))} "
+        f"law){where}: the contact force could not stop the rod within the law's range (too "
+        "fast an impact, a jammed friction contact or too strong gravity); lower the impact "
+        "velocity, mu or gravity, or choose another law",
+        F.ST_TMAX: f"{where}: raise {{t_max}}",
         F.ST_MAX_STEPS: f"{where} (the limit: {F.DROP_MAX_STEPS}; with partial slip "
         f"{F.PARTIAL_STEP_FACTOR} times the steps of its Mindlin pre-pass, at least "
         f"{F.PARTIAL_MIN_STEPS}): a long, creeping contact (resting, rocking or rolling); try "
-        "friction='mindlin'",
-        F.ST_MISSED_CONTACT: f"{where}: lower rtol",
-        F.ST_STEP_UNDERFLOW: f"{where}: the integrator could not meet rtol",
+        "{friction}='mindlin'",
+        F.ST_MISSED_CONTACT: f"{where}: lower {{rtol}}",
+        F.ST_STEP_UNDERFLOW: f"{where}: the integrator could not meet {{rtol}}",
     }
-    return DropError(f"drop: {text}{hints.get(status, '')}", status)
+    return DropError("", status, template=f"drop: {text}{hints.get(status, '')}")
 
 
 def drop_flags(
@@ -158,9 +278,11 @@ def check_energy_balance(o: dict[str, Any], e0: float, rtol: float) -> None:
     bound = energy_balance_bound(rtol)
     error = float(energy_balance_error(o, e0))
     if not error <= bound:
+        text = _literal(F.STATUS_MESSAGES[F.ST_INACCURATE])
         raise DropError(
-            f"drop: {F.STATUS_MESSAGES[F.ST_INACCURATE]}: the energy balance closed to "
-            f"{error:.3g} of its energy scale, beyond the {ENERGY_GAIN_RTOL_FACTOR:g} rtol + "
-            f"{ENERGY_ROUNDOFF:g} = {bound:.3g} that rtol = {rtol:g} promises: lower rtol",
+            "",
             F.ST_INACCURATE,
+            template=f"drop: {text}: the energy balance closed to {error:.3g} of its energy "
+            f"scale, beyond the {ENERGY_GAIN_RTOL_FACTOR:g} rtol + {ENERGY_ROUNDOFF:g} = "
+            f"{bound:.3g} that {{rtol}} = {rtol:g} promises: lower {{rtol}}",
         )

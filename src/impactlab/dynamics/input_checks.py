@@ -18,6 +18,7 @@ import numpy as np
 
 from impactlab._validation import (
     check_finite,
+    check_flag,
     check_nonnegative,
     check_positive,
     warn_implausible,
@@ -161,6 +162,18 @@ def check_angle(angle: Any, body: Rod | Sphere) -> float:
     raise ValueError(f"angle must be in radians in (0, pi/2], got {th!r} rad{hint}")
 
 
+def check_constant_angle(constant_angle: Any, body: Rod | Sphere) -> bool:
+    """``constant_angle`` (True or False); True for a Sphere is refused, as an angle given for
+    it is (``check_angle``): a sphere has no angle to freeze."""
+    frozen = check_flag("constant_angle", constant_angle)
+    if frozen and isinstance(body, Sphere):
+        raise ValueError(
+            "constant_angle=True: a Sphere has no angle to freeze (its contact point always lies "
+            "straight below its centre); leave constant_angle out"
+        )
+    return frozen
+
+
 def _as_given(angle: Any) -> str:
     """An angle with a unit as the user wrote it: the string, or a Quantity's magnitude and
     unit (``95 deg``)."""
@@ -172,7 +185,15 @@ def _as_given(angle: Any) -> str:
 def check_velocity(velocity: Any) -> tuple[float, float]:
     """(vx, vy) [m/s] from a pair of finite numbers, strings with units or pint Quantities (or
     one pint Quantity holding the pair)."""
+    given = velocity
     velocity = magnitude("velocity", velocity, "m/s")
+    if isinstance(velocity, float | int | np.number) or (
+        isinstance(velocity, np.ndarray) and velocity.ndim == 0
+    ):  # one number, not a pair: say it as the user wrote it
+        raise ValueError(
+            f"velocity must be a pair (vx, vy) in m/s, got one number, {_velocity_given(given)} "
+            f"(a vertical drop: velocity=(0.0, {-abs(float(velocity)):g}))"
+        )
     if isinstance(velocity, Mapping | set | frozenset):  # no order, or keys for values
         raise ValueError(
             f"velocity must be a pair (vx, vy) in m/s (a tuple or a list), got a "
@@ -186,6 +207,13 @@ def check_velocity(velocity: Any) -> tuple[float, float]:
         check_speed(name, check_finite(name, v, "m/s"))
         for name, v in (("velocity[0] (vx)", vx), ("velocity[1] (vy)", vy))
     )
+
+
+def _velocity_given(value: Any) -> str:
+    """A velocity as the user gave it: a string quoted, a Quantity with its unit."""
+    if hasattr(value, "magnitude") and hasattr(value, "units"):
+        return f"{value.magnitude!r} {value.units:~}"
+    return repr(value)
 
 
 def velocity_from(velocity: Any, speed: Any, incidence: Any) -> Any:
@@ -242,8 +270,30 @@ def batch_velocity(vx: Any, vy: Any, speed: Any, incidence: Any) -> tuple[Any, A
     return v * np.sin(th), -v * np.cos(th)
 
 
+#: How to build a body, for a class given where an instance is needed.
+_BUILD = {
+    "Rod": "Rod.paper() or Rod(length=..., tip_radius=..., mass=...)",
+    "FlexibleRod": "FlexibleRod.paper() or FlexibleRod(length=..., tip_radius=..., mass=...)",
+    "Sphere": "Sphere(radius=...)",
+}
+
+
+def given_body(body: Any) -> str:
+    """What a wrong ``body`` is, for the error: "got None", "got str", or for a class "got the
+    class Rod, not an instance (build one: Rod.paper() or ...)"."""
+    if body is None:
+        return "got None"
+    if isinstance(body, type):
+        build = _BUILD.get(body.__name__)
+        hint = f" (build one: {build})" if build else ""
+        return f"got the class {body.__name__}, not an instance{hint}"
+    return f"got {type(body).__name__}"
+
+
 def check_body(body: Any) -> Rod | Sphere:
     """``body`` if it is a Rod or a Sphere, else ValueError."""
+    if body is None or isinstance(body, type):  # say what it is (a class: not an instance)
+        raise ValueError(f"body must be an impactlab Rod or Sphere, {given_body(body)}")
     if not isinstance(body, Rod | Sphere):
         raise ValueError(f"body must be an impactlab Rod or Sphere, got {type(body).__name__}")
     return body
@@ -269,6 +319,7 @@ __all__ = [
     "batch_velocity",
     "check_angle",
     "check_body",
+    "check_constant_angle",
     "check_flat",
     "check_mu",
     "check_partial_slip_rtol",
@@ -277,6 +328,7 @@ __all__ = [
     "check_spin",
     "check_velocity",
     "contact_reach",
+    "given_body",
     "gravity_value",
     "velocity_from",
     "warn_fast",

@@ -177,14 +177,15 @@ class ImpactResult(DerivedOutputs, ResultDisplay):
         """Scalar fields as a plain dict (with ``max_delta_ratio``, ``fitted_delta_ratio_max``,
         ``fitted_range_status`` and ``extrapolated``, as a drop's;
         ``flags`` as an int, ``warnings`` as a list; history as lists of columns if asked). A
-        sphere's ``angle`` and ``angle_out`` are None (it has none; strict JSON has no NaN)."""
+        sphere has no ``angle`` and ``angle_out`` (left out, as by ``impactlab simulate --json``
+        and ``summary()``; its ``input`` records ``angle`` as None)."""
         d: dict[str, Any] = {}
         for name in self.__dataclass_fields__:
             if name.startswith("_") or name in ("history", "references"):
                 continue
             v = getattr(self, name)
             if name in ("angle", "angle_out") and isinstance(v, float) and math.isnan(v):
-                v = None
+                continue  # a sphere's (strict JSON has no NaN)
             d[name] = list(v) if isinstance(v, tuple) else v
         d["max_delta_ratio"] = self.max_delta_ratio
         d["fitted_delta_ratio_max"] = self.fitted_delta_ratio_max

@@ -28,7 +28,13 @@ from impactlab.dynamics.core.driver import impact
 from impactlab.dynamics.drop import simulate_drop
 from impactlab.dynamics.drop_result import DropResult
 from impactlab.dynamics.flex_simulate import simulate_flexible
-from impactlab.dynamics.input_checks import PLAUSIBLE_SPEED, contact_reach, velocity_from
+from impactlab.dynamics.input_checks import (
+    PLAUSIBLE_SPEED,
+    check_constant_angle,
+    contact_reach,
+    given_body,
+    velocity_from,
+)
 from impactlab.dynamics.kernels import layout as L
 from impactlab.dynamics.kernels import status as S
 from impactlab.dynamics.kernels.inputs import IN_OK, input_problem
@@ -94,7 +100,8 @@ def simulate(
         Friction coefficient, >= 0 (default ``impactlab.friction.DEFAULT_MU``).
     angle : float or str
         Rod axis to the flat, in (0, pi/2] rad; tip lowest, centre of mass at +x of the tip.
-        A bare number above pi/2 is refused with a degrees hint; a sphere takes none (refused).
+        A bare number above pi/2 is refused with a degrees hint; a sphere takes none (refused,
+        as is ``constant_angle=True`` for it).
     velocity, spin : pair, float
         (vx, vy) of the centre of mass at first touch [m/s] (the contact point must approach);
         angular velocity [rad/s], counter-clockwise positive.
@@ -140,6 +147,10 @@ def simulate(
         )
     if velocity is None or speed is not None or incidence is not None:
         velocity = velocity_from(velocity, speed, incidence)
+    if not isinstance(body, Rod | Sphere | FlexibleRod):
+        raise ValueError(
+            f"body must be an impactlab Rod, Sphere or FlexibleRod, {given_body(body)}"
+        )
     if isinstance(body, FlexibleRod) or drop_options:  # the flexible drop: a DropResult
         args = {"law": law, "friction": friction, "mu": mu, "angle": angle, "velocity": velocity}
         args |= {"spin": spin, "law_params": law_params, "gravity": gravity, "rtol": rtol}
@@ -150,6 +161,8 @@ def simulate(
               constant_angle, rtol, history)  # fmt: skip
     if r is not None:
         return r
+    if isinstance(body, Sphere):
+        check_constant_angle(constant_angle, body)  # True refused, as an angle is
     x = check_impact(
         body,
         flat,
@@ -223,8 +236,8 @@ def _fast(
         return None
     if kind is Rod:
         th = _plain_number(angle)
-    elif angle is None:  # a sphere has no angle (an angle given: the full path refuses it)
-        th = 0.5 * math.pi
+    elif angle is None and constant_angle is False:  # a sphere has no angle: one given, or
+        th = 0.5 * math.pi  # constant_angle=True, goes to the full path, which refuses it
     else:
         return None
     plain_gravity = gravity is True or gravity is False

@@ -22,6 +22,7 @@ from impactlab.dynamics.input_checks import (
     batch_velocity,
     check_angle,
     check_body,
+    check_constant_angle,
     check_flat,
     warn_fast,
 )
@@ -81,8 +82,8 @@ def simulate_batch(
     """Many impacts of one body, law and friction model, in parallel on all cores.
 
     ``mu``, ``angle`` [rad; a Rod's, required; a Sphere takes none and an angle given for it
-    is refused, as by ``simulate``; one angle for every case is checked as ``simulate`` checks
-    it], ``vx``, ``vy`` [m/s] and ``spin`` [rad/s] are scalars or
+    (or ``constant_angle=True``) is refused, as by ``simulate``; one angle for every case is
+    checked as ``simulate`` checks it], ``vx``, ``vy`` [m/s] and ``spin`` [rad/s] are scalars or
     1-D arrays, broadcast against each other; the dimensional ones may also be pint Quantities (any
     registry) or strings with units, as in ``simulate``. ``vy`` (``vx`` default 0) or, instead,
     ``speed`` [m/s] and ``incidence`` [rad] (arrays too; vx = speed sin(incidence),
@@ -100,6 +101,7 @@ def simulate_batch(
     model = contact_model(body, flat, law, law_params)
     if isinstance(body, Sphere):
         angle = check_angle(angle, body)  # pi/2; an angle given for a sphere is refused
+        check_constant_angle(constant_angle, body)  # and constant_angle=True
     elif angle is None or np.ndim(getattr(angle, "magnitude", angle)) == 0:
         angle = check_angle(angle, body)  # one angle for every case: refused as by simulate
     vx, vy = batch_velocity(vx, vy, speed, incidence)

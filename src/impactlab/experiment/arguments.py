@@ -9,7 +9,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from impactlab.bodies import PAPER_ROD, Rod
+from impactlab.bodies import PAPER_ROD, Rod, Sphere
 from impactlab.contact.registry import get_law
 from impactlab.experiment.checks import check_instance, check_options, check_path, output_folder
 from impactlab.experiment.kinematics import measure_impact
@@ -56,6 +56,12 @@ def rod_properties(rod: Any) -> Rod:
     ``half_length``) and optionally ``inertia``. ValueError naming ``rod`` otherwise."""
     if isinstance(rod, Rod):
         return rod
+    if isinstance(rod, Sphere):  # it has a mass and a tip radius, but no rod's length
+        raise ValueError(
+            "rod: got a Sphere; analyze needs a Rod (the impulse relations are a tilted rod's, "
+            "its tip L/2 from the centre of mass): impactlab.Rod(length=..., tip_radius=..., "
+            "mass=...), or None for the paper's rod"
+        )
     if hasattr(rod, "length"):
         length = float(rod.length)
     elif hasattr(rod, "L"):

@@ -29,17 +29,25 @@ _HEADER = re.compile(r"^\s*(.+?) for set (\S+) and time\s+(" + _FLOAT + r")\s*$"
 _CONTACT = re.compile(r"^\s*contact stress .* and time\s+(" + _FLOAT + r")\s*$")
 
 
+def _executable(name: str) -> bool:
+    """Whether ``name`` is a file this process may execute (a path, or a command on PATH)."""
+    path = Path(name)
+    return (path.is_file() and os.access(path, os.X_OK)) or shutil.which(name) is not None
+
+
 def find_ccx() -> str:
     """Path of the ccx executable; RuntimeError with how to install it when there is none, or
-    naming ``IMPACTLAB_CCX`` when that is set to something that is not one."""
+    naming ``IMPACTLAB_CCX`` when that is set to something that is not one (missing, a
+    folder, or a file without execute permission)."""
     own = os.environ.get("IMPACTLAB_CCX", "").strip()
-    if own and not (Path(own).is_file() or shutil.which(own)):
+    if own and not _executable(own):
+        why = " (a file without execute permission)" if Path(own).is_file() else ""
         raise RuntimeError(
-            f"IMPACTLAB_CCX is set to {own!r}, which is not an executable file; point it at "
-            f"CalculiX's ccx, or unset it to use the ccx on PATH"
+            f"IMPACTLAB_CCX is set to {own!r}, which is not an executable file{why}; point it "
+            f"at CalculiX's ccx, or unset it to use the ccx on PATH"
         )
     exe = own or shutil.which("ccx")
-    if not exe or not (Path(exe).is_file() or shutil.which(exe)):
+    if not exe or not _executable(exe):
         raise RuntimeError(INSTALL_HINT)
     return exe
 

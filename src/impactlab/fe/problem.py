@@ -28,6 +28,7 @@ from impactlab._validation import (
 from impactlab.fe.deck import DeckSpec, MaterialCard, StepControl
 from impactlab.fe.mesh import MeshSpec
 from impactlab.materials import ContactPair, Material
+from impactlab.units import is_quantity
 
 SphereKind = Literal["rigid", "elastic", "elastic-plastic"]
 SPHERE_KINDS: tuple[str, ...] = ("rigid", "elastic", "elastic-plastic")
@@ -325,9 +326,10 @@ def make_problem(
     R = float(f"{check_positive('radius', radius, 'm'):.15g}")
     d = float(f"{check_positive('delta_max', delta_max, 'm'):.15g}")
     if d >= R:
+        bare = not isinstance(delta_max, str) and not is_quantity(delta_max)
         raise ValueError(
-            f"delta_max ({d!r} m) must be smaller than the sphere radius ({R!r} m) (a bare "
-            f"number is in m: give a unit, e.g. '5 um')"
+            f"delta_max ({d!r} m) must be smaller than the sphere radius ({R!r} m)"
+            + (" (a bare number is in m: give a unit, e.g. '5 um')" if bare else "")
         )
     if estimated_contact_radius(R, d) >= 0.95 * R:
         raise ValueError(

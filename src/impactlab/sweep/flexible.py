@@ -7,7 +7,9 @@ group runs as one compiled batch (``impactlab.dynamics.drop_batch.simulate_drops
 The body is ``impactlab.FlexibleRod`` with the inputs ``length``, ``tip_radius`` and ``mass``
 (unset: the paper's rod), its diameter derived from the mass, the length and the body
 material's density as FlexibleRod derives it, and the modal inputs ``n_axial``, ``n_bending``
-(integers) and ``damping`` (the modal damping ratio; unset: FlexibleRod's defaults). The
+(integers) and ``damping`` (the modal damping ratio; unset: FlexibleRod's defaults, the mode
+counts by frequency, so that each length of a sweep has its own; the axial residual
+pseudo-modes come with any axial mode). Each group runs with its own body and mode counts. The
 inertia follows from the beam theory: a study that sets ``inertia`` (or a sphere's ``radius``)
 for a flexible rod gets the status BAD_BODY for those cases.
 
@@ -36,7 +38,7 @@ from typing import Any
 import numpy as np
 
 from impactlab.bodies import PAPER_ROD
-from impactlab.bodies.flexible_rod import DEFAULT_N_AXIAL, DEFAULT_N_BENDING, FlexibleRod
+from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.contact import ContactModel
 from impactlab.dynamics.drop import DROP_FRICTION
 from impactlab.dynamics.drop_batch import DropBatchResult, input_status, simulate_drops
@@ -103,10 +105,10 @@ def _given(row: Mapping[str, float], name: str) -> float | None:
     return None if math.isnan(v) else float(v)
 
 
-def _count(row: Mapping[str, float], name: str, default: int) -> int:
+def _count(row: Mapping[str, float], name: str) -> int | None:
     v = _given(row, name)
     if v is None:
-        return default
+        return None  # FlexibleRod's default, by frequency
     if v != math.floor(v) or v < 0:
         raise ValueError(f"{name} must be an integer >= 0, got {v!r}")
     return int(v)
@@ -118,15 +120,13 @@ def flexible_body(row: Mapping[str, float], material: Material) -> FlexibleRod:
         if _given(row, name) is not None:
             raise ValueError(f"a flexible rod takes no {name!r} (its inertia follows the beam)")
     length, tip, mass = (_given(row, n) for n in ("length", "tip_radius", "mass"))
-    n_axial = _count(row, "n_axial", DEFAULT_N_AXIAL)
     return FlexibleRod(
         length=PAPER_ROD.length if length is None else length,
         tip_radius=PAPER_ROD.tip_radius if tip is None else tip,
         mass=PAPER_ROD.mass if mass is None else mass,
         material=material,
-        n_axial=n_axial,
-        n_bending=_count(row, "n_bending", DEFAULT_N_BENDING),
-        axial_residual=n_axial >= 1,
+        n_axial=_count(row, "n_axial"),
+        n_bending=_count(row, "n_bending"),
         damping=_given(row, "damping") or 0.0,
     )
 

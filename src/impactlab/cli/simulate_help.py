@@ -1,0 +1,37 @@
+"""Help texts of ``impactlab simulate``'s options that are keys of its config file."""
+
+from __future__ import annotations
+
+from impactlab.cli._common import KINEMATIC_HELP, RATE_CHOICES, STOP_HELP, length_help
+from impactlab.cli.drop import MODES_HELP
+
+__all__ = ["HELP"]
+
+#: Help of the options that are keys of the config file.
+HELP = {
+    **KINEMATIC_HELP,
+    "law": "Contact law, see 'impactlab laws' (default ghaednia).",
+    "friction": "Friction model: impulse_ratio, coulomb (default), mindlin or partial_slip.",
+    "inertia": 'Rod I_C, e.g. "0.0036 kg*m^2" (bare number: kg*m^2; default m L^2/12; rigid rod '
+    "only).",
+    "radius": "Tip / sphere radius (--tip-radius too), e.g. '8.8 mm' (bare number: m; default "
+    "8.8 mm, the paper's).",
+    "length": length_help("0.3048 m"),
+    "mass": "Mass, e.g. '0.46 kg' (bare number: kg; rod default 0.4607 kg, or from --diameter; "
+    "sphere default from the density).",
+    "diameter": "Rod diameter d, e.g. '12 mm' (bare number: m; optional): the mass follows from "
+    "d, L and the material's density (with --mass too: checked to 2 %).",
+    "material": "Body material: a library name (see 'impactlab materials'), properties "
+    "'E=200GPa, nu=0.3, Sy=760MPa, rho=7800kg/m^3' (HB=, n=, brittle=yes optional) or a TOML file "
+    "(default aisi-201).",
+    "flat": "Flat material: a library name (see 'impactlab materials'), properties "
+    "'E=69GPa, nu=0.33, Sy=276MPa, rho=2700kg/m^3' (HB=, n=, brittle=yes optional) or a TOML file "
+    "(default aisi-1010).",
+    **{k: f"Flexible rod: {v[0].lower()}{v[1:]}" for k, v in MODES_HELP.items()},
+    "damping": "Flexible rod: modal damping ratio zeta of every mode, in [0, 1) (default 0).",
+    "rate": f"Flexible rod: rate-dependent flat, {', '.join(RATE_CHOICES)} (default none).",
+    "stop": f"Flexible rod: {STOP_HELP}",
+    "t_max": "Flexible rod: longest simulated time after the first touch, e.g. '2 s' (default "
+    "500 ms).",
+    "rtol": "Integration tolerance, in [1e-13, 1e-3] (1e-5 at most with partial_slip).",
+}

@@ -1,0 +1,276 @@
+"""Dimensional indentation tables, as measured: the checks of a loading table (delta [m],
+F [N]) and an unloading table (delta_max [m], delta_r [m]) before they become
+``IndentationCurves`` (``from_arrays``, ``from_csv``), and the reading of their CSV files.
+
+A message names the value as given (in m and N, to 4 significant digits) and where it is:
+the array index, or the CSV file and its line.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from impactlab._validation import read_text_file
+from impactlab.materials import ContactPair
+
+#: Fewest loading points past the elastic limit, and fewest (delta_max, delta_r) pairs.
+MIN_LOADING_POINTS = 4
+MIN_RESIDUAL_POINTS = 2
+#: Relative gap at the end of the loading curve taken as rounding (``max_delta``).
+END_RTOL = 1e-6
+#: Largest relative difference from Hertz allowed at the first point of measured data.
+HERTZ_TOLERANCE = 0.05
+
+
+def two(a: float, b: float, unit: str = "") -> str:
+    """``a then b`` to 4 significant digits, more where 4 would show them equal."""
+    n = next((n for n in range(4, 17) if f"{a:.{n}g}" != f"{b:.{n}g}"), 4)
+    u = f" {unit}" if unit else ""
+    return f"{a:.{n}g}{u} then {b:.{n}g}{u}"
+
+
+@dataclass(frozen=True)
+class Rows:
+    """How a message names the rows of one dimensional table: ``where`` (the CSV file, or
+    empty for arrays), its line numbers (None: array indices) and its column ``names``."""
+
+    names: tuple[str, str]
+    where: str = ""
+    lines: np.ndarray | None = None
+
+    def at(self, i: int, text: str) -> str:
+        if self.lines is None:
+            return f"{text} at index {i}"
+        return f"{self.where} line {int(self.lines[i])}: {text}"
+
+    def whole(self, text: str) -> str:
+        return f"{self.where}: {text}" if self.where else text
+
+
+#: Units a table may have been written in by mistake, and their size in m.
+_WRONG_UNITS = (("mm", 1e-3), ("um", 1e-6), ("nm", 1e-9))
+
+
+def _unit_hint(values: np.ndarray, radius: float, span: tuple[float, float] | None) -> str:
+    """The unit that would make ``values`` [m] fit (all below ``radius`` and, with ``span``,
+    at least 2 inside it), as a hint; a plain reminder of the unit when none does."""
+    for unit, size in _WRONG_UNITS:
+        v = values * size
+        if v.max() < radius and (
+            span is None or int(((v >= span[0]) & (v <= span[1])).sum()) >= MIN_RESIDUAL_POINTS
+        ):
+            return f" (written in {unit}? give them in m)"
+    return " (lengths in m)"
+
+
+def check_loading(pair: ContactPair, R: float, d: np.ndarray, f: np.ndarray, rows: Rows) -> None:
+    """The loading table (delta [m], F [N]) of ``pair`` with a sphere of radius ``R`` [m]:
+    delta, F > 0 (its first point is the elastic limit, where the law leaves Hertz), delta
+    strictly increasing and below ``R``, F non-decreasing, at least ``MIN_LOADING_POINTS``
+    points past the first, whose force lies within ``HERTZ_TOLERANCE`` of Hertz's. ValueError
+    naming the row (``rows``) and its values otherwise."""
+    D, F = rows.names
+    if d.shape != f.shape:
+        raise ValueError(f"{D} and {F} differ in length: {d.size} and {f.size}")
+    bad = (d <= 0.0) | (f <= 0.0)
+    if bad.any():
+        i = int(np.flatnonzero(bad)[0])
+        raise ValueError(
+            rows.at(
+                i,
+                f"{D} and {F} must be > 0, got {d[i]:.4g} m, {f[i]:.4g} N"
+                " (the first point is the elastic limit, where the law leaves "
+                "Hertz: leave out a row at 0)",
+            )
+        )
+    step = np.diff(d)
+    if (step <= 0.0).any():
+        i = int(np.flatnonzero(step <= 0.0)[0]) + 1
+        raise ValueError(
+            rows.at(i, f"{D} must be strictly increasing, got {two(d[i - 1], d[i], 'm')}")
+        )
+    drop = np.diff(f) < 0.0
+    if drop.any():
+        i = int(np.flatnonzero(drop)[0]) + 1
+        raise ValueError(
+            rows.at(
+                i,
+                f"{F} must not decrease along the loading curve, got "
+                f"{two(f[i - 1], f[i], 'N')} ({D} = {d[i]:.4g} m)",
+            )
+        )
+    if d.size and d[-1] >= R:
+        i = int(np.flatnonzero(d >= R)[0])
+        raise ValueError(
+            rows.at(
+                i,
+                f"{D} = {d[i]:.4g} m is not smaller than the sphere radius "
+                f"{R:.4g} m" + _unit_hint(d, R, None),
+            )
+        )
+    if d.size - 1 < MIN_LOADING_POINTS:
+        first = f" (its first point, {D} = {d[0]:.4g} m)" if d.size else ""
+        raise ValueError(
+            rows.whole(
+                f"the loading curve needs at least {MIN_LOADING_POINTS} "
+                f"points past the elastic limit{first}, got "
+                f"{max(d.size - 1, 0)}"
+            )
+        )
+    d0, f0 = float(d[0]), float(f[0])
+    hertz = 4.0 / 3.0 * pair.E_star * math.sqrt(R) * d0**1.5
+    off = f0 / hertz - 1.0
+    if not abs(off) <= HERTZ_TOLERANCE:
+        raise ValueError(
+            rows.at(
+                0,
+                f"{F} at the first loading point ({D} = {d0:.4g} m) is "
+                f"{f0:.4g} N, {100 * off:+.1f} % from Hertz's {hertz:.4g} N "
+                "for this pair and radius: the data must start in the "
+                f"elastic range (within {100 * HERTZ_TOLERANCE:g} %)",
+            )
+        )
+
+
+def check_unloading(
+    R: float, dm: np.ndarray, dr: np.ndarray, span: tuple[float, float], rows: Rows
+) -> None:
+    """The unloading table (delta_max [m], delta_r [m]) for a sphere of radius ``R`` [m] and a
+    loading curve over ``span`` [m]: at least ``MIN_RESIDUAL_POINTS`` pairs, 0 <= delta_r <
+    delta_max (delta_r = 0 up to the elastic limit, ``span[0]``), delta_max strictly
+    increasing and below ``R``, at least ``MIN_RESIDUAL_POINTS`` of them within ``span`` (a
+    table in another unit than m fails here: the message suggests which). ValueError naming
+    the row (``rows``) otherwise."""
+    M, Rr = rows.names
+    if dm.shape != dr.shape:
+        raise ValueError(f"{M} and {Rr} differ in length: {dm.size} and {dr.size}")
+    if dm.size < MIN_RESIDUAL_POINTS:
+        raise ValueError(
+            rows.whole(
+                f"at least {MIN_RESIDUAL_POINTS} ({M}, {Rr}) pairs are needed, got {dm.size}"
+            )
+        )
+    for bad, text in (
+        (dm <= 0.0, f"{M} must be > 0, got {{m:.4g}} m"),
+        (dr < 0.0, f"{Rr} must be >= 0, got {{r:.4g}} m"),
+        (dr >= dm, f"{Rr} must be < {M}, got {Rr} = {{r:.4g}} m at {M} = {{m:.4g}} m"),
+    ):
+        if bad.any():
+            i = int(np.flatnonzero(bad)[0])
+            raise ValueError(rows.at(i, text.format(m=dm[i], r=dr[i])))
+    step = np.diff(dm)
+    if (step <= 0.0).any():
+        i = int(np.flatnonzero(step <= 0.0)[0]) + 1
+        raise ValueError(
+            rows.at(i, f"{M} must be strictly increasing, got {two(dm[i - 1], dm[i], 'm')}")
+        )
+    lo, hi = span[0], span[1] * (1.0 + END_RTOL)
+    early = (dm <= lo) & (dr > 0.0)
+    if early.any():
+        i = int(np.flatnonzero(early)[0])
+        raise ValueError(
+            rows.at(
+                i,
+                f"{Rr} must be 0 up to the elastic limit (the first loading point, "
+                f"{lo:.4g} m), got {Rr} = {dr[i]:.4g} m at {M} = {dm[i]:.4g} m",
+            )
+        )
+    if dm[-1] >= R:
+        i = int(np.flatnonzero(dm >= R)[0])
+        raise ValueError(
+            rows.at(
+                i,
+                f"{M} = {dm[i]:.4g} m is not smaller than the sphere "
+                f"radius {R:.4g} m" + _unit_hint(dm, R, (lo, hi)),
+            )
+        )
+    inside = int(((dm >= lo) & (dm <= hi)).sum())
+    if inside < MIN_RESIDUAL_POINTS:
+        raise ValueError(
+            rows.whole(
+                f"{inside} {M} within the loading curve's range, {span[0]:.4g}-{span[1]:.4g} m, "
+                f"at least {MIN_RESIDUAL_POINTS} needed; got {M} from {dm[0]:.4g} to "
+                f"{dm[-1]:.4g} m" + _unit_hint(dm, R, (lo, hi))
+            )
+        )
+
+
+def read_table(path: Path, where: str, names: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(first column, second column, line numbers) of the comma-separated file ``path``: rows
+    of two finite numbers (``names``, for the messages); blank lines and ``#`` comments are
+    skipped, and the first other line is a header unless it is all numbers (then it is the
+    first row). ValueError starting with ``where`` for a file that is missing, a folder, not
+    UTF-8 text, empty, without data rows, or with a row of another width or a text that is not
+    a finite number."""
+    try:
+        text = read_text_file(path, "CSV", where)
+    except OSError as exc:
+        if path.is_dir():
+            why = "is a folder, not a CSV file"
+        elif not path.exists():
+            why = "does not exist"
+        else:
+            why = f"cannot be read ({exc.strerror or exc})"
+        raise ValueError(f"{where} {why}") from None
+    if not text.strip():
+        raise ValueError(
+            f"{where}: the file is empty (expected rows of {names}, after an optional header line)"
+        )
+    rows: list[tuple[float, float]] = []
+    numbers: list[int] = []
+    first = True
+    for number, line in enumerate(text.splitlines(), start=1):
+        content = line.split("#", 1)[0].strip()
+        if not content:
+            continue
+        cells = [c.strip() for c in content.split(",")]
+        if first:
+            first = False
+            if any(_number(c) is None for c in cells):
+                continue  # the header line
+        if len(cells) != 2:
+            raise ValueError(
+                f"{where} line {number} has {len(cells)} column(s), must have 2 columns "
+                f"({names}); is the file truncated?"
+            )
+        x, y = (_number(c) for c in cells)
+        if x is None or y is None or not (math.isfinite(x) and math.isfinite(y)):
+            what = "two numbers" if x is None or y is None else "two finite numbers"
+            raise ValueError(f"{where} line {number} is not {what} ({names}), got {content!r}")
+        rows.append((x, y))
+        numbers.append(number)
+    if not rows:
+        raise ValueError(f"{where}: no data rows after the header line (expected {names})")
+    table = np.array(rows, dtype=np.float64)
+    return table[:, 0], table[:, 1], np.array(numbers)
+
+
+def _number(text: str) -> float | None:
+    try:
+        return float(text)
+    except ValueError:
+        return None
+
+
+def read_two_columns(path: Path, where: str, names: str) -> list[np.ndarray]:
+    """The two columns of ``read_table``."""
+    x, y, _lines = read_table(path, where, names)
+    return [x, y]
+
+
+__all__ = [
+    "END_RTOL",
+    "HERTZ_TOLERANCE",
+    "MIN_LOADING_POINTS",
+    "MIN_RESIDUAL_POINTS",
+    "Rows",
+    "check_loading",
+    "check_unloading",
+    "read_table",
+    "read_two_columns",
+    "two",
+]
