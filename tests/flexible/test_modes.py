@@ -240,3 +240,22 @@ def test_flexible_rod_body() -> None:
     for kw, word in bad:
         with pytest.raises(ValueError, match=word):
             FlexibleRod.paper(**kw)
+
+
+@pytest.mark.parametrize(("section", "counts"), [
+    ("paper", (64, 96)),  # the paper's rod: a pair at 193.63 / 193.66 kHz
+    ("thick", (24, 96)),  # L/d = 8, cut-off 25 kHz: a pair at 31.44 / 31.45 kHz
+])  # fmt: skip
+def test_near_equal_roots_above_the_cut_off_are_both_found(
+    section: str, counts: tuple[int, int]
+) -> None:
+    """Above the cut-off two roots can fall within one grid step (whose spacing follows the
+    count asked for): the first n frequencies are the same whatever the count, none missed."""
+    if section == "paper":
+        rod = FlexibleRod.paper()
+    else:
+        rod = FlexibleRod(length=0.594, tip_radius=0.594 / 16, diameter=0.594 / 8,
+                          material=AISI_201, n_axial=1, n_bending=1)  # fmt: skip
+    few, many = (timoshenko_frequencies(rod.section, n) for n in counts)
+    np.testing.assert_allclose(many[: counts[0]], few, rtol=1e-12)
+    assert np.all(np.diff(many) > 0)

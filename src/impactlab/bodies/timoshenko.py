@@ -157,7 +157,11 @@ def _boundaries(sec: RodSection, om: np.ndarray) -> np.ndarray:
 def timoshenko_frequencies(sec: RodSection, n: int) -> np.ndarray:
     """First n free-free Timoshenko bending frequencies [rad/s]: roots of the boundary
     determinant, bracketed on a grid finer than the mode spacing and refined by Brent's
-    method (sign changes through a pole or across the cut-off are rejected)."""
+    method (sign changes through a pole or across the cut-off are rejected). Above the
+    cut-off the two spectra can put two roots within one grid step, where the determinant
+    dips to zero and back without a sign change between grid points: at each such dip
+    (a local minimum of |det| between three grid points of one sign) the determinant's
+    extremum is located, and where it crosses zero both roots are refined there."""
     from scipy.optimize import brentq  # on first use: ``import impactlab`` stays light
 
     om_eb = eb_frequencies(sec, n + 2)
@@ -166,26 +170,48 @@ def timoshenko_frequencies(sec: RodSection, n: int) -> np.ndarray:
     grid = np.geomspace(0.3 * om_eb[0], 1.05 * om_eb[-1], 400 * (n + 2))
     grid = grid[np.abs(grid / cut - 1.0) > 1e-6]  # degenerate basis at the cut-off
     vals = _determinants(sec, grid)
+
+    def refine(lo: float, hi: float) -> None:
+        r = brentq(_determinant, lo, hi, args=(sec,), xtol=1e-13 * lo, rtol=1e-15, maxiter=200)
+        if abs(_determinant(r, sec)) < 1e-6:  # not a pole
+            roots.append(float(r))
+
     for i in range(len(grid) - 1):
         if vals[i] == 0.0:
             roots.append(float(grid[i]))
         elif vals[i] * vals[i + 1] < 0.0 and not grid[i] < cut < grid[i + 1]:
-            r = brentq(
-                _determinant,
-                grid[i],
-                grid[i + 1],
-                args=(sec,),
-                xtol=1e-13 * grid[i],
-                rtol=1e-15,
-                maxiter=200,
-            )
-            if abs(_determinant(r, sec)) < 1e-6:  # not a pole
-                roots.append(float(r))
+            refine(float(grid[i]), float(grid[i + 1]))
+        elif i > 0 and grid[i] > cut and _dips(vals[i - 1], vals[i], vals[i + 1]):
+            inner = _crossing(sec, float(grid[i - 1]), float(grid[i + 1]), float(vals[i]))
+            if inner is not None:  # two roots between grid[i - 1] and grid[i + 1]
+                refine(float(grid[i - 1]), inner)
+                refine(inner, float(grid[i + 1]))
         if len(roots) >= n:
             break
     if len(roots) < n:
         raise RuntimeError(f"found only {len(roots)} Timoshenko roots below {grid[-1]:.4g} rad/s")
-    return np.array(roots[:n])
+    return np.array(sorted(roots)[:n])
+
+
+def _dips(before: float, here: float, after: float) -> bool:
+    """True where |det| has a local minimum at a grid point between two of the same sign."""
+    same_sign = before * here > 0.0 and here * after > 0.0
+    return same_sign and abs(here) < abs(before) and abs(here) < abs(after)
+
+
+def _crossing(sec: RodSection, lo: float, hi: float, here: float) -> float | None:
+    """The frequency in (lo, hi) [rad/s] where the determinant, of the sign of ``here`` at the
+    grid points, reaches its extremum towards zero, if it crosses zero there; else None."""
+    from scipy.optimize import minimize_scalar
+
+    sign = 1.0 if here > 0.0 else -1.0
+    res = minimize_scalar(
+        lambda om: sign * _determinant(om, sec),
+        bounds=(lo, hi),
+        method="bounded",
+        options={"xatol": 1e-12 * lo},
+    )
+    return float(res.x) if sign * _determinant(float(res.x), sec) < 0.0 else None
 
 
 def timoshenko_shape_fn(sec: RodSection, om: float) -> ShapeFn:
