@@ -43,7 +43,7 @@ from impactlab.dynamics.drop_checks import (
     input_problems,
     input_status,
 )
-from impactlab.dynamics.export import _flag_attrs, _status_attrs
+from impactlab.dynamics.export import flag_attrs, status_attrs
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.batch import (
     CK_E0,
@@ -113,13 +113,13 @@ def drop_dataset(drops: DropBatchResult) -> Any:
         variables[name] = ("case", values, attrs)
     flags = np.where(failed, -1, np.asarray(drops.flags)).astype(np.int64)
     unit, meaning = output_unit("flags")
-    flag_attrs = {"units": unit, "long_name": meaning, **_flag_attrs()}
+    flag_meta = {"units": unit, "long_name": meaning, **flag_attrs()}
     variables["flags"] = (
         "case",
         flags,
-        flag_attrs | {"comment": "-1: the case failed (see status)"},
+        flag_meta | {"comment": "-1: the case failed (see status)"},
     )
-    variables["status"] = ("case", status.astype(np.int32), _status_attrs())
+    variables["status"] = ("case", status.astype(np.int32), status_attrs())
     attrs = {"body": drops.body, "law": drops.law, "friction": drops.friction}
     attrs |= {"gravity": drops.gravity, "rtol": drops.rtol}
     attrs |= {"references": [r.key for r in drops.references]}

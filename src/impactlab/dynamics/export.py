@@ -26,8 +26,10 @@ __all__ = [
     "HISTORY_CATEGORIES",
     "batch_dataset",
     "batch_html",
+    "flag_attrs",
     "history_dataframe",
     "history_units",
+    "status_attrs",
 ]
 
 #: The coded history columns and the names of their codes (0, 1): categorical in a DataFrame.
@@ -69,7 +71,9 @@ def _regime_attrs() -> dict[str, Any]:
     }
 
 
-def _flag_attrs() -> dict[str, Any]:
+def flag_attrs() -> dict[str, Any]:
+    """The attributes of a ``flags`` variable: the bits, their names and messages (CF
+    ``flag_masks``/``flag_meanings``)."""
     bits = [f for f in ResultFlag if f.value]
     return {
         "flag_masks": [int(f) for f in bits],
@@ -78,7 +82,9 @@ def _flag_attrs() -> dict[str, Any]:
     }
 
 
-def _status_attrs() -> dict[str, Any]:
+def status_attrs() -> dict[str, Any]:
+    """The attributes of a ``status`` variable: the codes and their messages (CF
+    ``flag_values``/``flag_meanings``)."""
     codes = sorted(STATUS_MESSAGES)
     return {
         "long_name": "engine status of the case (0: ok; other codes: no result, NaN outputs)",
@@ -96,7 +102,7 @@ def _output_var(name: str, values: np.ndarray, ok: np.ndarray) -> tuple[Any, ...
     if name == "regime":
         attrs.update(_regime_attrs())
     elif name == "flags":
-        attrs.update(_flag_attrs())
+        attrs.update(flag_attrs())
     attrs["comment"] = "-1: the case failed (see status)"
     return ("case", codes, attrs)
 
@@ -130,7 +136,7 @@ def batch_dataset(batch: Any) -> Any:
             np.array(batch.max_delta_ratio, dtype=np.float64),
             {"units": "1", "long_name": schema.description("max_delta_ratio")},
         )
-    variables["status"] = ("case", status.astype(np.int32), _status_attrs())
+    variables["status"] = ("case", status.astype(np.int32), status_attrs())
     refs: tuple[Reference, ...] = tuple(batch.references)
     attrs = {
         "law": batch.law,
