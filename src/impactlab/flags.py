@@ -170,14 +170,18 @@ _UNKNOWN_STATUS = (
 )
 
 
-def _how_far(extrapolation: tuple[float, float] | None, limit_name: str) -> str:
-    """`` (max delta/delta_c = 312, fitted up to 110)`` or ``""`` when unknown."""
+def _how_far(
+    extrapolation: tuple[float, float] | None, limit_name: str, reference: str = "delta_c"
+) -> str:
+    """`` (max delta/delta_c = 312, fitted up to 110)`` (``reference``: the law's own
+    reference interference, ``delta_y`` for Kogut-Komvopoulos and Brake) or ``""`` when
+    unknown."""
     if extrapolation is None:
         return ""
     ratio, limit = extrapolation
     if not (ratio == ratio and limit == limit and limit < float("inf")):  # NaN or no range
         return ""
-    return f" (max delta/delta_c = {ratio:.4g}, {limit_name} {limit:g})"
+    return f" (max delta/{reference} = {ratio:.4g}, {limit_name} {limit:.4g})"
 
 
 def messages(
@@ -185,13 +189,15 @@ def messages(
     *,
     extrapolation: tuple[float, float] | None = None,
     status: str | None = None,
+    reference: str = "delta_c",
 ) -> tuple[str, ...]:
     """One explanatory sentence per flag set in ``flags`` (an int or a ``ResultFlag``), in bit
     order; ``()`` for none. Unknown bits raise ``ValueError``. ``extrapolation`` = (max
-    delta/delta_c, the law's upper end), when known, says how far LAW_EXTRAPOLATED went
-    (``impactlab.contact.ranges.extrapolation``); ``status``, the range's
-    status (``contact.ranges.range_status``: "verified", "unverified", "provisional",
-    "theory", ...), words that sentence."""
+    delta/delta_ref, the law's upper end), when known, says how far LAW_EXTRAPOLATED went
+    (``impactlab.contact.ranges.extrapolation``), in the law's own ``reference``
+    (``delta_c``, or ``delta_y`` for Kogut-Komvopoulos and Brake: ``LawRange.delta_ref``);
+    ``status``, the range's status (``contact.ranges.range_status``: "verified",
+    "unverified", "provisional", "theory", ...), words that sentence."""
     try:
         value = int(flags)
     except (TypeError, ValueError):
@@ -202,7 +208,7 @@ def messages(
     if value < 0 or value & ~known:
         raise ValueError(f"flags {value!r} holds bits outside the known flags (mask {known})")
     what, limit_name, so = _EXTRAPOLATION_TEXT.get(status or "", _UNKNOWN_STATUS)
-    how_far = _how_far(extrapolation, limit_name)
+    how_far = _how_far(extrapolation, limit_name, reference)
     return tuple(
         text.format(how_far=how_far, what=what, so=so)
         for flag, text in sorted(_MESSAGES.items())

@@ -61,6 +61,19 @@ def test_paper_impact_is_flagged_with_how_far_it_went() -> None:
     assert d["flags"] == FLAG_LAW_EXTRAPOLATED and d["warnings"] == [text]
 
 
+@pytest.mark.parametrize("law", ["kogut-komvopoulos", "brake"])
+def test_a_law_measured_in_its_own_delta_y_says_so(law: str) -> None:
+    """Kogut-Komvopoulos and Brake measure their ranges in their own delta_y: the warning's
+    ratio and limit say delta_y (the law_range line gives both), for an impact and a drop."""
+    from impactlab.dynamics import simulate_drop
+
+    for result in (simulate(PAPER_ROD, velocity=FAST, **{**PAPER, "law": law}),
+                   simulate_drop(PAPER_ROD, velocity=FAST, **{**PAPER, "law": law})):  # fmt: skip
+        (text,) = result.warnings
+        assert f"max delta/delta_y = {result.max_delta_ratio:.4g}, verified up to " in text
+        assert "delta/delta_c" not in text
+
+
 def test_outputs_beyond_the_range_are_finite_and_energy_consistent() -> None:
     r = simulate(PAPER_ROD, velocity=(0.0, -3.45), **PAPER)
     assert r.extrapolated and r.max_delta_ratio > 200.0

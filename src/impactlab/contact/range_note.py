@@ -42,7 +42,7 @@ def range_note(law_id: int, params: Any) -> str | None:
     limit = float(range_limit(law_id, params))
     name = next((str(law) for law in Law if law.law_id == int(law_id)), "")
     lo, hi = e_star_over_sy_span(name)
-    ref = law_range(name).delta_ref.split(" ")[0]  # the law's own: delta_c or delta_y
+    ref = law_range(name).reference  # the law's own: delta_c or delta_y
     upper = "no upper end" if math.isinf(limit) else f"{limit:.3g} {ref}"
     if status == "verified":
         jg = float(verified_upper(name, ratio))  # in Jackson-Green's delta_c, as the docs

@@ -66,12 +66,17 @@ class LawRange:
         return verified_cases(str(self.law))
 
     @property
+    def reference(self) -> str:
+        """The name of the ratio's reference interference: ``"delta_c"`` (Jackson-Green's) or
+        ``"delta_y"`` (the law's own first yield: Kogut-Komvopoulos, Brake, Thornton)."""
+        return self.delta_ref.split(" ")[0]
+
+    @property
     def stand_in_text(self) -> str:
         """The stand-in in one line: ``delta <= 110 delta_c (provisional)``."""
         if math.isinf(self.delta_ratio_max):
             return f"no fitted range ({self.status}): never flagged as extrapolated"
-        ref = self.delta_ref.split(" ")[0]
-        return f"delta <= {self.delta_ratio_max:g} {ref} ({self.status})"
+        return f"delta <= {self.delta_ratio_max:g} {self.reference} ({self.status})"
 
     @property
     def text(self) -> str:

@@ -75,6 +75,7 @@ __all__ = [
     "law_range",
     "range_limit",
     "range_status",
+    "reference_name",
 ]
 
 #: The stand-in used where a FEM-fitted law's own range was not found: Kogut & Etsion (2002)
@@ -269,6 +270,13 @@ def extrapolation(law_id: int, params: Any, delta_max: float) -> tuple[float, fl
     if params is None or not 0 <= int(law_id) < k.N_LAWS:
         return math.nan, math.inf
     return float(delta_ratio(law_id, params, delta_max)), float(range_limit(law_id, params))
+
+
+def reference_name(law_id: int) -> str:
+    """The name of law ``law_id``'s ratio reference (``LawRange.reference``: ``"delta_c"`` or
+    ``"delta_y"``); ``"delta_c"`` for an unknown law."""
+    record = next((r for r in _ALL if r.law.law_id == int(law_id)), None)
+    return "delta_c" if record is None else record.reference
 
 
 def range_status(law_id: int, params: Any = None) -> str | None:

@@ -227,13 +227,13 @@ class DropResult(DerivedOutputs, ResultDisplay):
     def warnings(self) -> tuple[str, ...]:
         """One explanatory sentence per flag (``impactlab.flags.messages``); ``()`` if none."""
         how_far = (self.max_delta_ratio, self.fitted_delta_ratio_max)
-        status = self.fitted_range_status
-        if status is None:
-            try:
-                status = law_range(self.law).status
-            except ValueError:  # a custom law
-                status = None
-        return messages(self.flags, extrapolation=how_far, status=status)
+        status, reference = self.fitted_range_status, "delta_c"
+        try:
+            record = law_range(self.law)
+            status, reference = status or record.status, record.reference
+        except ValueError:  # a custom law
+            pass
+        return messages(self.flags, extrapolation=how_far, status=status, reference=reference)
 
     @property
     def ok(self) -> bool:

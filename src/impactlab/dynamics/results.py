@@ -16,7 +16,12 @@ from impactlab import schema
 from impactlab._display import flag_names
 from impactlab._version import __version__
 from impactlab.contact.range_note import range_note
-from impactlab.contact.ranges import extrapolation, extrapolation_flags, range_status
+from impactlab.contact.ranges import (
+    extrapolation,
+    extrapolation_flags,
+    range_status,
+    reference_name,
+)
 from impactlab.dynamics.dent import dent_map
 from impactlab.dynamics.derived import DerivedOutputs
 from impactlab.dynamics.history import HISTORY_UNITS, DentMap, History, readonly_copy
@@ -159,7 +164,8 @@ class ImpactResult(DerivedOutputs, ResultDisplay):
         """One explanatory sentence per flag (``impactlab.flags.messages``); ``()`` if none."""
         how_far = extrapolation(self._law_id, self._law_params, self.delta_max)
         status = range_status(self._law_id, self._law_params)
-        return messages(self.flags, extrapolation=how_far, status=status)
+        reference = reference_name(self._law_id)
+        return messages(self.flags, extrapolation=how_far, status=status, reference=reference)
 
     @property
     def ok(self) -> bool:
