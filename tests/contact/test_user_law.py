@@ -216,6 +216,26 @@ def test_names_and_data_are_protected(toy: RegisteredLaw) -> None:
         toy.build(ContactPair(AISI_201, harder), R)
 
 
+def test_the_switch_interference_is_named_in_metres() -> None:
+    """``switch_interference`` [m] is where the sampled law leaves Hertz; ``elastic_limit``,
+    its name before, still works with a DeprecationWarning (the curves' ``elastic_limit`` is
+    the same point in delta/delta_c)."""
+    kw = {"pair": PAIR, "radius": R, "delta_max": 100 * DC}
+    law = register_law("toy-switch", loading=toy_loading, unloading=toy_unloading,
+                       switch_interference=DC, **kw)  # fmt: skip
+    try:
+        assert law.own_curves.elastic_limit == pytest.approx(1.0, rel=1e-12)
+        with pytest.warns(DeprecationWarning, match="'elastic_limit' is renamed"):
+            again = register_law("toy-switch", loading=toy_loading, unloading=toy_unloading,
+                                 elastic_limit=DC, **kw)  # fmt: skip
+        assert again.fingerprint() == law.fingerprint()
+    finally:
+        unregister_law("toy-switch")
+    with pytest.raises(ValueError, match=r"switch_interference must be > 0 m, got -1\.0"):
+        register_law("toy-bad", loading=toy_loading, unloading=toy_unloading,
+                     switch_interference=-1.0, **kw)  # fmt: skip
+
+
 def test_bad_callables_and_tables_are_refused() -> None:
     kw = {"pair": PAIR, "radius": R, "delta_max": 100 * DC}
     with pytest.raises(ValueError, match=r"loading\(.*\) returned nan"):

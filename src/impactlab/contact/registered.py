@@ -172,7 +172,7 @@ def sample_law(
     radius: float,
     delta_max: float,
     *,
-    elastic_limit: float | None = None,
+    switch_interference: float | None = None,
     points: int = DEFAULT_POINTS,
     tolerance: float = DEFAULT_TOLERANCE,
     title: str = "",
@@ -180,7 +180,7 @@ def sample_law(
 ) -> RegisteredLaw:
     """The law of the callables ``loading`` (F [N] at delta [m]) and ``unloading`` (delta_r [m]
     after loading to delta_max [m]) of ``pair`` and a sphere of ``radius`` [m], sampled on
-    ``points`` interferences from ``elastic_limit`` [m] (default: the pair's Jackson-Green
+    ``points`` interferences from ``switch_interference`` [m] (default: the pair's Jackson-Green
     delta_c; Hertz below it, and ``loading`` must agree with Hertz there within 5 %) to
     ``delta_max`` [m]. ValueError where the law built from the samples departs from the
     callables by more than ``tolerance`` (relative in force, absolute in delta_r/delta_max)
@@ -204,14 +204,14 @@ def sample_law(
             f"the units (impactlab takes SI: a bare number is in m{mm})"
         )
     dc, _fc = jg_critical(pair.E_star, radius, pair.yield_strength, pair.nu)
-    d0 = dc if elastic_limit is None else float(elastic_limit)
+    d0 = dc if switch_interference is None else float(switch_interference)
     if not (math.isfinite(d0) and d0 > 0.0):
-        raise ValueError(f"elastic_limit must be > 0 m, got {d0!r}")
+        raise ValueError(f"switch_interference must be > 0 m, got {d0!r}")
     if not (isinstance(delta_max, float | int) and math.isfinite(delta_max) and delta_max > d0):
         limit = (
             f"the pair's delta_c at radius = {radius:g} m (Jackson & Green 2005)"
-            if elastic_limit is None
-            else "elastic_limit"
+            if switch_interference is None
+            else "switch_interference"
         )
         got = float(delta_max) if isinstance(delta_max, float | int) else delta_max
         raise ValueError(

@@ -33,6 +33,7 @@ from impactlab.contact.registered import (
 from impactlab.contact.tabulated import Tabulated
 from impactlab.contact.thornton import Thornton
 from impactlab.materials import ContactPair
+from impactlab.schema import warn_renamed
 
 _LAWS: dict[str, ContactLaw] = {
     law.law: law
@@ -116,11 +117,12 @@ def register_law(
     pair: ContactPair | None = None,
     radius: float | None = None,
     delta_max: float | None = None,
-    elastic_limit: float | None = None,
+    switch_interference: float | None = None,
     points: int = DEFAULT_POINTS,
     tolerance: float = DEFAULT_TOLERANCE,
     title: str = "",
     source: str = "",
+    elastic_limit: float | None = None,
 ) -> RegisteredLaw:
     """Register a contact law of one's own under ``name``; afterwards ``name`` works wherever
     a law is asked for (``simulate``, ``simulate_batch``, ``simulate_drop``, sweeps and study
@@ -134,7 +136,14 @@ def register_law(
     tabulated law of those curves (``law_id`` TABULATED): valid for pairs with the curves'
     E*/S_y and nu, up to the last tabulated interference. ValueError for a built-in name, a
     name already registered with other data, bad tables or callables (naming the value).
+    ``switch_interference`` [m]: where the sampled law leaves Hertz (default: the pair's
+    Jackson-Green delta_c); ``elastic_limit`` is its name before 0.3 (a DeprecationWarning;
+    ``IndentationCurves.elastic_limit`` is the same point as delta/delta_c).
     """
+    if elastic_limit is not None:
+        warn_renamed("elastic_limit", "switch_interference", "register_law keyword")
+        if switch_interference is None:
+            switch_interference = elastic_limit
     check_law_name(name)
     if name in _LAWS:  # before any sampling: the cheap refusal first
         raise ValueError(
@@ -162,7 +171,7 @@ def register_law(
         pair,
         radius,
         delta_max,
-        elastic_limit=elastic_limit,
+        switch_interference=switch_interference,
         points=points,
         tolerance=tolerance,
         title=title,
