@@ -31,7 +31,7 @@ os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
 #: of the suite compiles them (or loads them from numba's disk cache) once per session, before
 #: the folder's first test, so that no test's own run includes a compile.
 WARM_PARTS = {
-    "contact": ("contact laws",),
+    "contact": ("contact laws", "flexible rod", "flexible batch"),
     "core": ("rigid impact", "batch"),
     # the examples run as subprocesses: the reproduction needs the flexible rod and the laws'
     # kernels as well, which the subprocess then loads instead of compiling under a time limit

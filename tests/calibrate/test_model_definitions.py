@@ -181,6 +181,7 @@ def test_the_settings_hold_the_engine_and_the_models(template):
          r"\['hardnes'\] for contact law 'brake'; known: \['hardness', 'meyer_index'\]"),
         ({"hardness": "1 m"}, "hardness: '1 m' has the wrong dimension"),
         ([105.0], "law_params must be a table of parameter = value"),
+        ({"hardness": 1.03e9}, r"law_params: hardness = 1.03e\+09 kgf/mm\^2 is above 10000"),
     ],
 )  # fmt: skip
 def test_a_models_law_params_are_read_when_it_is_made(law_params, match):

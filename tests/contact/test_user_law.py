@@ -143,7 +143,7 @@ def test_sweep_runs_it_and_carries_its_data(toy: RegisteredLaw, tmp_path) -> Non
 
 def test_a_result_reruns_with_the_law_it_carries(toy: RegisteredLaw) -> None:
     """A result's input record holds the user's law, so ``rerun`` works where the law is not
-    registered (another process, a later session)."""
+    registered (another process, or a Python started later)."""
     import json
 
     r = _impact(NAME)

@@ -196,3 +196,11 @@ def test_a_spheres_result_and_its_cli_json_have_the_same_keys(monkeypatch, capsy
     assert set(cli) - {"files"} == set(d)
     assert "angle" not in d and "angle_out" not in d
     assert il.rerun(d).e == r.e
+
+
+def test_an_inertia_no_body_of_the_rod_can_have_is_refused() -> None:
+    """All the mass at the tips gives I_C = m (L/2 + R)^2, the most a rod can have."""
+    top = 0.4607 * (0.1524 + 0.0088) ** 2
+    assert Rod.paper(inertia=top).inertia == top
+    with pytest.raises(ValueError, match=r"inertia = 0.4 kg m\^2 exceeds m \(L/2 \+ R\)\^2"):
+        Rod.paper(inertia=0.4)

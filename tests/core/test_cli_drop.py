@@ -137,6 +137,7 @@ def test_friction_model_is_chosen(monkeypatch, capsys):
         (("--angle", "20 deg", "--vy", "-1.41 kg"), "--vy"),
         ((*PAPER_20, "--inertia", "0.004 kg*m^2"), "--inertia: the flexible rod's inertia"),
         ((*PAPER_20, "--rigid", "--inertia", "0"), "--inertia must be > 0"),
+        ((*PAPER_20, "--rigid", "--inertia", "0.4 kg*m^2"), "--inertia = 0.4 kg m^2 exceeds m"),
     ],
 )
 def test_errors_are_one_line(monkeypatch, capsys, args, needle):

@@ -1,5 +1,5 @@
 """The worked examples in examples/*.py run as the documentation says: each in a fresh
-subprocess (sharing this session's numba cache, warmed once, and with MPLBACKEND=Agg), writing
+subprocess (sharing this test run's numba cache, warmed once, and with MPLBACKEND=Agg), writing
 only into the folder it is given, and printing its key numbers."""
 
 from __future__ import annotations

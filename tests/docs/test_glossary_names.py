@@ -1,7 +1,8 @@
-"""One name per quantity: every public parameter of the top-level API, every result field (the
-``to_dict`` keys of the result classes, a batch's columns) and every history column is a name
-of docs/glossary.md (first column of its tables) or of the schema (``impactlab.schema``: the
-impact's and the drop's fields and history columns)."""
+"""One name per quantity: every public parameter of the top-level API and of the contact laws'
+API (``impactlab.contact``: ``register_law``, ``IndentationCurves``, ...), every result field
+(the ``to_dict`` keys of the result classes, a batch's columns) and every history column is a
+name of docs/glossary.md (first column of its tables) or of the schema (``impactlab.schema``:
+the impact's and the drop's fields and history columns)."""
 
 from __future__ import annotations
 
@@ -15,6 +16,7 @@ from typing import Any
 import pytest
 
 import impactlab
+import impactlab.contact
 from impactlab import schema
 from impactlab.analytic.result import InversionResult
 from impactlab.dynamics.drop_result import DropResult
@@ -38,18 +40,23 @@ def glossary_names() -> set[str]:
 KNOWN = glossary_names() | set(schema.FIELDS)
 
 
+#: The public modules whose callables' parameters are checked.
+MODULES = (impactlab, impactlab.contact)
+
+
 def _public_parameters() -> dict[str, str]:
-    """Parameter name -> the first public callable of ``impactlab.__all__`` that takes it."""
+    """Parameter name -> the first public callable of ``MODULES``' ``__all__`` that takes it."""
     out: dict[str, str] = {}
-    for name in impactlab.__all__:
-        obj = getattr(impactlab, name)
-        if not (
-            inspect.isfunction(obj) or (inspect.isclass(obj) and dataclasses.is_dataclass(obj))
-        ):
-            continue
-        for p in inspect.signature(obj).parameters.values():  # type: ignore[arg-type]
-            if p.kind not in (p.VAR_POSITIONAL, p.VAR_KEYWORD) and not p.name.startswith("_"):
-                out.setdefault(p.name, name)
+    for module in MODULES:
+        for name in module.__all__:
+            obj = getattr(module, name)
+            if not (
+                inspect.isfunction(obj) or (inspect.isclass(obj) and dataclasses.is_dataclass(obj))
+            ):
+                continue
+            for p in inspect.signature(obj).parameters.values():  # type: ignore[arg-type]
+                if p.kind not in (p.VAR_POSITIONAL, p.VAR_KEYWORD) and not p.name.startswith("_"):
+                    out.setdefault(p.name, f"{module.__name__}.{name}")
     return out
 
 
@@ -112,3 +119,5 @@ def test_the_check_can_fail() -> None:
     assert "no_such_quantity" not in KNOWN
     assert {"simulate", "invert"} <= set(impactlab.__all__)
     assert {"velocity", "v_i", "gravity", "g"} <= set(_public_parameters())
+    # the contact laws' API: register_law's keyword and IndentationCurves' field
+    assert {"switch_interference", "elastic_limit", "residual_ratio"} <= set(_public_parameters())

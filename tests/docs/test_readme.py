@@ -19,7 +19,7 @@ def test_every_python_block_runs() -> None:
     blocks = _python_blocks(README.read_text())
     assert blocks, "the README shows no Python"
     namespace: dict[str, object] = {}
-    for block in blocks:  # the blocks build on one another, as in one session
+    for block in blocks:  # the blocks build on one another, as in one interpreter
         exec(compile(block, str(README), "exec"), namespace)
 
 

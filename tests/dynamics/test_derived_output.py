@@ -1,6 +1,6 @@
 """A derived output registered from outside the package (``impactlab.schema.register_output``)
-appears in ImpactResult, BatchResult, the drop result and a sweep store, with its unit; bad
-registrations are refused."""
+appears in ImpactResult, BatchResult, the drop result, a batch of drops and a sweep store, with
+its unit; bad registrations are refused."""
 
 from __future__ import annotations
 
@@ -59,6 +59,49 @@ def test_drop_result(toy: schema.DerivedField) -> None:
     r = il.simulate_drop(il.Rod.paper(), angle=math.radians(40), velocity=(0.0, -1.4), **KW)
     assert math.isnan(getattr(r, NAME)) and r.to_dict()[NAME] is None  # JSON: NaN is null
     assert r.dent_depth > 0.0 and r.delta_max > 0.0
+
+
+RATIO = "e_per_depth"
+
+
+@pytest.fixture(scope="module")
+def ratio() -> Iterator[schema.DerivedField]:
+    """A derived output whose needs a drop has: e / delta_max [1/m]."""
+    field = schema.register_output(
+        RATIO, "1/m", "e per metre of the largest interference", ("e", "delta_max"), _per_depth
+    )
+    yield field
+    schema.unregister_output(RATIO)
+
+
+def _per_depth(e: object, delta_max: object) -> object:
+    return np.divide(e, delta_max)  # type: ignore[call-overload]
+
+
+def test_drop_batch_result(toy: schema.DerivedField, ratio: schema.DerivedField) -> None:
+    """``simulate_drops`` has every derived output as ``DropResult`` has it, case by case: by
+    name, as an attribute, in ``to_xarray``, ``to_dataframe`` and ``to_pint``; a need that a
+    drop lacks (delta_p) reads NaN there as here."""
+    angles = np.radians([20.0, 40.0])
+    drops = il.simulate_drops(il.Rod.paper(), angle=angles, vy=-1.4, **KW)
+    assert drops.computed.all()
+    want = drops["e"] / drops["delta_max"]
+    assert np.all(want > 0.0) and np.all(np.isfinite(want))
+    np.testing.assert_array_equal(drops[RATIO], want)
+    np.testing.assert_array_equal(getattr(drops, RATIO), want)
+    ds = drops.to_xarray()
+    np.testing.assert_array_equal(ds[RATIO].values, want)
+    assert ds[RATIO].attrs["units"] == "1/m"
+    np.testing.assert_array_equal(drops.to_dataframe()[RATIO].to_numpy(), want)
+    q = drops.to_pint()[RATIO]
+    np.testing.assert_array_equal(q.to("1/m").magnitude, want)
+    for i, angle in enumerate(angles):
+        one = il.simulate_drop(il.Rod.paper(), angle=angle, velocity=(0.0, -1.4), **KW)
+        assert getattr(one, RATIO) == drops[RATIO][i]
+        assert math.isnan(getattr(one, NAME))
+    assert np.isnan(drops[NAME]).all() and np.isnan(ds[NAME].values).all()
+    with pytest.raises(KeyError, match=RATIO):
+        drops["no_such_output"]
 
 
 def test_sweep_store(toy: schema.DerivedField, tmp_path) -> None:

@@ -50,7 +50,8 @@ class Rod:
         rho pi d^2 / 4 L (a uniform section over L, as ``FlexibleRod``).
     material : the rod's material (elastic constants for the contact pair; its density).
     inertia : moment of inertia about the centre of mass I_C [kg m^2]; default m L^2 / 12
-        (the paper does not give I_C; m L^2/12 reproduces its impact durations best).
+        (the paper does not give I_C; m L^2/12 reproduces its impact durations best); at most
+        m (L/2 + R)^2, all the mass at the tips (ValueError beyond).
     diameter : the rod's diameter d [m] (optional). Give the mass, the diameter or both; given
         both, the density they imply must match the material's within 2 %
         (``impactlab.bodies._checks.DENSITY_TOLERANCE``).
@@ -102,6 +103,13 @@ class Rod:
             if self.inertia is None
             else check_positive("inertia", self.inertia, "kg m^2")
         )
+        reach = 0.5 * L + R  # no mass of the rod lies farther from its centre of mass
+        if inertia > m * reach * reach * (1.0 + 1e-12):
+            raise ValueError(
+                f"inertia = {inertia:g} kg m^2 exceeds m (L/2 + R)^2 = {m * reach * reach:g} kg "
+                "m^2, the most a body of this mass within the rod's length can have (all of it "
+                "at its ends); check the value and its unit (SI: kg m^2)"
+            )
         object.__setattr__(self, "length", L)
         object.__setattr__(self, "tip_radius", R)
         object.__setattr__(self, "mass", m)

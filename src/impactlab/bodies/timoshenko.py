@@ -15,6 +15,7 @@ cross-section, gamma = W' - Psi the shear angle; the rod and s are those of
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Callable
 
@@ -155,6 +156,14 @@ def _boundaries(sec: RodSection, om: np.ndarray) -> np.ndarray:
 
 
 def timoshenko_frequencies(sec: RodSection, n: int) -> np.ndarray:
+    """First n free-free Timoshenko bending frequencies [rad/s] (``_frequencies``; kept for
+    the last sections and counts asked for: a rod's default counts and its modal basis ask
+    for the same ones)."""
+    return np.array(_frequencies(sec, int(n)))
+
+
+@functools.lru_cache(maxsize=128)
+def _frequencies(sec: RodSection, n: int) -> np.ndarray:
     """First n free-free Timoshenko bending frequencies [rad/s]: roots of the boundary
     determinant, bracketed on a grid finer than the mode spacing and refined by Brent's
     method (sign changes through a pole or across the cut-off are rejected). Above the

@@ -86,6 +86,11 @@ def law_param_values(model: str, law: str, law_params: Any) -> dict[str, float]:
             if isinstance(v, str) and key in units:  # "105 HB" read as the calibration reads it
                 v = to_unit(v, units[key], name=str(key))
             given[str(key)] = v
-        return contact_law.parameter_values(given)
+        values = contact_law.parameter_values(given)
     except ValueError as exc:
         raise ValueError(f"model {model!r}, law_params: {exc}") from None
+    where = f"model {model!r}, law_params"
+    for key, x in values.items():  # a hardness of 1.03e9: Pa read as kgf/mm^2
+        if units.get(key) == "kgf/mm^2":
+            check_magnitude(key, x, "kgf/mm^2", where, like="flat_brinell_hardness")
+    return values

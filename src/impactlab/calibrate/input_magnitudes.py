@@ -29,10 +29,11 @@ PLAUSIBLE_INPUTS: dict[str, tuple[float, float, str]] = {
 }
 
 
-def check_magnitude(name: str, x: float, unit: str, where: str) -> None:
+def check_magnitude(name: str, x: float, unit: str, where: str, like: str | None = None) -> None:
     """ValueError naming ``where`` and ``name`` when ``x`` (in ``unit``, the input's) lies
-    outside what a drop's input can be (``PLAUSIBLE_INPUTS``), with the unit to give."""
-    rule = PLAUSIBLE_INPUTS.get(name)
+    outside what a drop's input can be (``PLAUSIBLE_INPUTS`` of ``name``, or of the input
+    ``like``: a law's hardness is a Brinell hardness), with the unit to give."""
+    rule = PLAUSIBLE_INPUTS.get(like or name)
     if rule is None or not math.isfinite(x):
         return
     low, high, hint = rule

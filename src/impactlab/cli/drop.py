@@ -20,14 +20,7 @@ from typing import Any, cast
 import typer
 
 from impactlab._display import display_unit, field_row
-from impactlab.bodies import PAPER_ROD, FlexibleRod, Rod
-from impactlab.bodies.flexible_rod import (
-    AXIAL_CUTOFF_HZ,
-    BENDING_CUTOFF_HZ,
-    DEFAULT_N_AXIAL,
-    DEFAULT_N_BENDING,
-    check_mode_count,
-)
+from impactlab.bodies import PAPER_ROD
 from impactlab.cli._common import (
     KINEMATIC_HELP,
     RATE_CHOICES,
@@ -42,6 +35,7 @@ from impactlab.cli._common import (
     rate_name,
     velocity_input,
 )
+from impactlab.cli.drop_body import MODES_HELP, drop_body
 from impactlab.cli.simulate_from import option_error, run_from
 from impactlab.dynamics.drop import DEFAULT_T_MAX, simulate_drop
 from impactlab.dynamics.drop_result import UNITS, DropResult
@@ -68,100 +62,6 @@ _COLUMNS = (
     "slip",
     "reload",
 )
-
-
-#: The help of the mode counts (``impactlab simulate --flexible`` too).
-MODES_HELP = {
-    "modes_axial": f"Axial modes (default: the fewest that reach {AXIAL_CUTOFF_HZ / 1e3:g} kHz, "
-    f"at least {DEFAULT_N_AXIAL}; + 2 residual).",
-    "modes_bending": "Bending modes (default: the fewest that reach "
-    f"{BENDING_CUTOFF_HZ / 1e3:g} kHz, at least {DEFAULT_N_BENDING}).",
-}
-
-
-def _count(value: Any, name: str) -> int | None:
-    """A mode count (an option or a config file's value): an integer in [0, MAX_MODES], else
-    UserError naming ``name``; None (not given): FlexibleRod's default, by frequency."""
-    if value is None:
-        return None
-    if not isinstance(value, int):  # 2.5 or "x" from a config file
-        raise UserError(f"{name} must be an integer >= 0, got {value!r}")
-    try:
-        return check_mode_count(name, value)
-    except ValueError as exc:
-        raise UserError(str(exc)) from None
-
-
-def _ratio(value: Any, name: str) -> float:
-    """A damping ratio (an option or a config file's value): a number, else UserError naming
-    ``name`` (its range is FlexibleRod's to check)."""
-    if value is None:
-        return 0.0
-    if isinstance(value, bool) or not isinstance(value, int | float):
-        raise UserError(f"{name} must be a number in [0, 1), got {value!r}")
-    return float(value)
-
-
-def flexible_rod(
-    values: Mapping[str, Any],
-    sizes: Mapping[str, float | None],
-    material: Material,
-    label: Any = None,
-) -> FlexibleRod:
-    """A FlexibleRod of the given ``sizes`` (length, tip_radius, and mass and/or diameter) and
-    ``material`` with the mode counts and damping of ``values`` (``modes_axial``,
-    ``modes_bending``, ``damping``; None: the defaults, the mode counts by frequency and the
-    axial residual pseudo-modes with any axial mode). ``label(key)`` spells an option in
-    errors."""
-    name = label or (lambda key: "--" + key.replace("_", "-"))
-    n_axial = _count(values.get("modes_axial"), name("modes_axial"))
-    n_bending = _count(values.get("modes_bending"), name("modes_bending"))
-    damping = _ratio(values.get("damping"), name("damping"))
-    return FlexibleRod(
-        length=cast(float, sizes["length"]),
-        tip_radius=cast(float, sizes["tip_radius"]),
-        mass=sizes.get("mass"),
-        diameter=sizes.get("diameter"),
-        material=material,
-        n_axial=n_axial,
-        n_bending=n_bending,
-        damping=damping,
-    )
-
-
-def _body(
-    rigid: bool,
-    modes: Mapping[str, Any],
-    sizes: Mapping[str, float | None],
-    material: Material,
-    inertia: float | None = None,
-) -> FlexibleRod | Rod:
-    """The rod: the paper's sizes unless given (``sizes``: length, tip_radius, mass, diameter;
-    None: not given), flexible with the given mode counts and damping, or rigid (with its
-    moment of inertia ``inertia`` about the centre of mass, kg m^2; None: from its size)."""
-    length = sizes["length"] if sizes["length"] is not None else PAPER_ROD.length
-    tip = sizes["tip_radius"] if sizes["tip_radius"] is not None else PAPER_ROD.tip_radius
-    mass, diameter = sizes["mass"], sizes["diameter"]
-    if mass is None and diameter is None:  # the paper's rod's mass, or from its diameter
-        if material != PAPER_ROD.material or sizes["length"] is not None:
-            raise UserError(
-                "--mass or --diameter: give one (or both) for a rod other than the paper's "
-                "(its mass follows from the diameter, the length and the material's density)"
-            )
-        mass = PAPER_ROD.mass
-    if rigid:
-        given = [f"--{k.replace('_', '-')}" for k, v in modes.items() if v is not None]
-        if given:
-            raise UserError(f"{', '.join(given)}: a rigid rod has no modes; leave out --rigid")
-        return Rod(length=length, tip_radius=tip, mass=mass, material=material,  # type: ignore[arg-type]
-                   diameter=diameter, inertia=inertia)  # fmt: skip
-    if inertia is not None:
-        raise UserError(
-            "--inertia: the flexible rod's inertia follows from its size and material; give "
-            "--rigid for a rigid rod of another inertia"
-        )
-    sizes_in = {"length": length, "tip_radius": tip, "mass": mass, "diameter": diameter}
-    return flexible_rod(modes, sizes_in, material)
 
 
 def _material(value: str | None, default: Material, name: str) -> Material:
@@ -358,7 +258,7 @@ def drop_cmd(
     }
     modes = {"modes_axial": modes_axial, "modes_bending": modes_bending, "damping": damping}
     rod_material = _material(material, PAPER_ROD.material, "--material")
-    body = _body(rigid, modes, sizes, rod_material, positive(inertia, "kg*m^2", "--inertia"))
+    body = drop_body(rigid, modes, sizes, rod_material, positive(inertia, "kg*m^2", "--inertia"))
     try:
         result = simulate_drop(
             body,

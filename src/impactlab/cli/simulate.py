@@ -30,7 +30,7 @@ from impactlab.cli._common import (
     velocity_input,
 )
 from impactlab.cli.config_values import check_booleans
-from impactlab.cli.drop import flexible_rod
+from impactlab.cli.drop_body import flexible_rod
 from impactlab.cli.simulate_from import FROM_RULE, run_from
 from impactlab.cli.simulate_help import HELP
 from impactlab.cli.simulate_output import report_result

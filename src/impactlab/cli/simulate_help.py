@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from impactlab.cli._common import KINEMATIC_HELP, RATE_CHOICES, STOP_HELP, length_help
-from impactlab.cli.drop import MODES_HELP
+from impactlab.cli.drop_body import MODES_HELP
 
 __all__ = ["HELP"]
 

@@ -91,8 +91,9 @@ def run_arrays(
     Returns ``(out, status)``: out (N, len(OUTPUT_FIELDS)) float64, status (N,) int32
     (0 = ok; ``STATUS_MESSAGES``). The ``regime`` column holds codes (``REGIME_NAMES``); the
     ``flags`` column the ``ResultFlag`` bits, LAW_EXTRAPOLATED added here from each case's
-    delta_max / delta_c and the law's range (``impactlab.contact.ranges``: verified against FE,
-    else a stand-in), and BEYOND_TIP, OTHER_END and BRITTLE (above).
+    delta_max / delta_ref (the law's own reference) and the law's range
+    (``impactlab.contact.ranges``: verified against FE, else a stand-in), and BEYOND_TIP,
+    OTHER_END and BRITTLE (above).
     """
     try:
         lid = int(law_id)
@@ -201,7 +202,7 @@ def _mark_reach(bp: np.ndarray, init: np.ndarray, out: np.ndarray) -> None:
 def _mark_law_flags(
     law_id: int, law_params: np.ndarray, out: np.ndarray, brittle_limit: Any = math.inf
 ) -> None:
-    """Add ``LAW_EXTRAPOLATED`` to the ``flags`` column where a case's delta_max / delta_c
+    """Add ``LAW_EXTRAPOLATED`` to the ``flags`` column where a case's delta_max / delta_ref
     exceeds the law's (verified) range (``contact.ranges``; vectorised), and ``BRITTLE`` where
     its mean contact pressure exceeds ``brittle_limit`` (``contact.brittle``); failed cases
     untouched."""

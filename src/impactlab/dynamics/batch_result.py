@@ -42,7 +42,8 @@ class BatchResult(BatchStatus):
     law: str
     friction: str
     references: tuple[Reference, ...] = field(default=(), repr=False)
-    #: delta_max / delta_c of each case (NaN where it failed; None: not computed)
+    #: delta_max / delta_ref of each case, the law's own reference interference (NaN where
+    #: it failed; None: not computed)
     max_delta_ratio: np.ndarray | None = field(default=None, repr=False)
     #: the range the law is held to for the batch's pair, one line (``contact.range_note``:
     #: verified against FE up to ..., or unverified and why); None: not known

@@ -31,6 +31,7 @@ from impactlab.dynamics.batch_status import (
     flag_column,
     integer_series,
 )
+from impactlab.dynamics.derived import batch_derived
 from impactlab.dynamics.drop import DEFAULT_T_MAX
 from impactlab.dynamics.drop_body import body_model
 from impactlab.dynamics.drop_checks import (
@@ -103,7 +104,7 @@ def drop_dataset(drops: DropBatchResult) -> Any:
     for name, v in drops.inputs.items():
         unit, meaning = output_unit(name)
         variables[name] = ("case", np.array(v), {"units": unit, "long_name": f"input: {meaning}"})
-    for name in _DATASET_OUTPUTS:
+    for name in (*_DATASET_OUTPUTS, *schema.DERIVED_FIELDS):  # schema.register_output
         unit, meaning = output_unit(name)
         attrs: dict[str, Any] = {"units": unit, "long_name": meaning}
         values = np.array(drops[name], dtype=np.float64)
@@ -188,11 +189,20 @@ class DropBatchResult(BatchStatus):
             return np.asarray(getattr(self, name))
         if name in self.inputs:
             return self.inputs[name]
-        known = ", ".join((*PUBLIC_FIELDS, *self.inputs))
+        if name in schema.DERIVED_FIELDS:  # schema.register_output, as DropResult reads it
+            return batch_derived(self._engine_output, name)
+        known = ", ".join((*PUBLIC_FIELDS, *self.inputs, *schema.DERIVED_FIELDS))
         raise KeyError(f"unknown field {name!r}; known: {known}")
 
     def _column(self, name: str) -> np.ndarray:
         return self.out[:, DROP_BATCH_FIELDS.index(name)]
+
+    def _engine_output(self, name: str) -> np.ndarray:
+        """An ``OUTPUT_FIELDS`` output as ``DropResult`` reads it (``derived.result_output``)."""
+        if name == "flags":
+            return np.where(self.computed, self.flags, np.nan)
+        keep = name in DROP_BATCH_FIELDS and name not in schema.RENAMED_DROP_FIELDS
+        return self._column(name) if keep else np.full(len(self), np.nan)  # NaN: a drop has none
 
     def __getattr__(self, name: str) -> np.ndarray:
         if name.startswith("_") or name in ("out", "status", "inputs"):
@@ -218,7 +228,7 @@ class DropBatchResult(BatchStatus):
         import pandas as pd  # heavy, needed only here
 
         df = pd.DataFrame({k: np.array(v) for k, v in self.inputs.items()})
-        for name in PUBLIC_FIELDS:
+        for name in (*PUBLIC_FIELDS, *schema.DERIVED_FIELDS):  # schema.register_output too
             if name in INTEGER_FIELDS:
                 df[name] = integer_series(self[name], self.computed)
             else:
@@ -255,7 +265,7 @@ class DropBatchResult(BatchStatus):
         ureg = shared() if registry is None else registry
         return {
             name: ureg.Quantity(np.array(self[name]), pint_unit(output_unit(name)[0]))
-            for name in _DATASET_OUTPUTS
+            for name in (*_DATASET_OUTPUTS, *schema.DERIVED_FIELDS)
         }
 
     def dois(self) -> tuple[str, ...]:

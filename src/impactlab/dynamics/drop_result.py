@@ -108,8 +108,10 @@ class DropResult(DerivedOutputs, ResultDisplay):
       dominates; GRAVITY_DOMINATED is judged on the tip's sequence (its contacts before the
       other end's first touch);
       LAW_EXTRAPOLATED when the largest interference of the sequence left the law's fitted
-      range (``impactlab.contact.ranges``; ``max_delta_ratio`` = delta_max / delta_ref and the
-      upper end of the law's range, ``fitted_delta_ratio_max``, verified against FE or a
+      range (``impactlab.contact.ranges``; ``max_delta_ratio`` = delta_max / delta_ref, the
+      law's own reference interference, ``LawRange.reference``: Jackson-Green's delta_c, or
+      delta_y for Kogut-Komvopoulos, Brake, Thornton; and the upper end of the law's range in
+      that ratio, ``fitted_delta_ratio_max``, verified against FE or a
       stand-in: ``fitted_range_status``, ``contact.ranges.range_status``; in one line, shown
       with the summary: ``law_range``, ``contact.range_note``);
     - ``references`` / ``dois()``: the sources used.

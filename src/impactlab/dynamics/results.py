@@ -149,7 +149,9 @@ class ImpactResult(DerivedOutputs, ResultDisplay):
 
     max_delta_ratio = property(
         lambda self: extrapolation(self._law_id, self._law_params, self.delta_max)[0],
-        doc="delta_max / delta_c of the impact's law and pair (NaN if unknown; contact.ranges).",
+        doc="delta_max / delta_ref of the impact's law and pair: the law's own reference "
+        "interference (LawRange.reference: Jackson-Green's delta_c, or delta_y for "
+        "Kogut-Komvopoulos, Brake, Thornton); NaN if unknown (contact.ranges).",
     )
     extrapolated = property(lambda self: ResultFlag.LAW_EXTRAPOLATED in self.flags,
                             doc="True when the impact left the law's range.")  # fmt: skip
@@ -175,8 +177,9 @@ class ImpactResult(DerivedOutputs, ResultDisplay):
 
     @property
     def fitted_delta_ratio_max(self) -> float:
-        """The upper end of the law's range for the pair, in its own delta_c (verified against
-        FE, else its stand-in; inf: none), as ``DropResult.fitted_delta_ratio_max``."""
+        """The upper end of the law's range for the pair, in delta / delta_ref (as
+        ``max_delta_ratio``; verified against FE, else its stand-in; inf: none), as
+        ``DropResult.fitted_delta_ratio_max``."""
         return float(extrapolation(self._law_id, self._law_params, self.delta_max)[1])
 
     def to_dict(self, *, include_history: bool = False) -> dict[str, Any]:

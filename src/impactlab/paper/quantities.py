@@ -113,8 +113,8 @@ def flag_names(res: Any) -> str:
 
 
 def flag_columns(res: Any) -> dict[str, Any]:
-    """The ``flags`` (names) and ``max_delta_ratio`` (delta_max / delta_c of the law) of a
-    simulated result, as the reproduction's tables carry them."""
+    """The ``flags`` (names) and ``max_delta_ratio`` (delta_max / delta_ref, the law's own
+    reference) of a simulated result, as the reproduction's tables carry them."""
     return {"flags": flag_names(res), "max_delta_ratio": float(res.max_delta_ratio)}
 
 

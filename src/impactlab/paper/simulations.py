@@ -55,7 +55,8 @@ def run_simulations(
 
 def simulation_table(sims: Simulations) -> pd.DataFrame:
     """One row per simulation with the result's scalars (display units), checks and flags
-    (``flags``: names, e.g. LAW_EXTRAPOLATED; ``max_delta_ratio``: delta_max / delta_c)."""
+    (``flags``: names, e.g. LAW_EXTRAPOLATED; ``max_delta_ratio``: delta_max / delta_ref of
+    the law)."""
     rows = []
     for (ang, law, fr), res in sims.items():
         x = D.EXPERIMENTS[ang]

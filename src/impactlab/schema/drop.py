@@ -170,6 +170,6 @@ DROP_FIELDS: tuple[Field, ...] = (
     Field(
         "fitted_delta_ratio_max",
         "1",
-        "upper end of the law's fitted range of delta_max / delta_c",
+        "upper end of the law's fitted range of delta_max / delta_ref (its own reference)",
     ),
 )

@@ -110,7 +110,8 @@ RESULT_FIELDS: tuple[Field, ...] = (
     Field(
         "max_delta_ratio",
         "1",
-        "delta_max over the law's reference (first-yield) interference, delta_max / delta_c",
-        r"\delta_{max}/\delta_c",
+        "delta_max / delta_ref, the law's own reference interference (LawRange.reference: "
+        "Jackson-Green's delta_c, or delta_y for Kogut-Komvopoulos, Brake, Thornton)",
+        r"\delta_{max}/\delta_{ref}",
     ),
 )
