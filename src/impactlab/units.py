@@ -221,6 +221,20 @@ def to_si(value: Any, unit: str, *, name: str = "value") -> float:
     return x
 
 
+def parse_quantity(name: str, text: str, unit: str) -> Any:
+    """``text`` as a Quantity of impactlab's registry under the rules every text input follows
+    (one number and one unit, no comma, no temperature, angle units to the power of ``unit``'s);
+    ValueError naming ``name``. The number is not converted: :func:`convert_quantity`."""
+    return _parse(name, text, unit)
+
+
+def convert_quantity(name: str, q: Any, unit: str, shown: Any) -> Any:
+    """The Quantity ``q`` (of impactlab's registry) expressed in ``unit``; ValueError naming
+    ``name`` and the text ``shown`` on a wrong dimension, on hertz asked for as an angular
+    velocity, and on powers of the radian that differ from ``unit``'s."""
+    return _convert(name, q, unit, shown)
+
+
 def angle_to_rad(value: Any, *, name: str = "angle") -> float:
     """An angle written as text with its unit (``"20 deg"``, ``"0.35 rad"``) in radians. A bare
     number, written or not, is refused: it could be degrees or radians (the angle rule of
@@ -241,9 +255,11 @@ def angle_to_rad(value: Any, *, name: str = "angle") -> float:
 
 __all__ = [
     "angle_to_rad",
+    "convert_quantity",
     "has_unit",
     "is_quantity",
     "magnitude",
+    "parse_quantity",
     "refuse_comma",
     "registry",
     "to_si",

@@ -77,14 +77,14 @@ def test_a_prior_outside_the_possible_values_gives_a_unit_only_where_there_is_on
         (
             "flat_yield_strength",
             "uniform(100, 1000)",
-            "prior of flat_yield_strength: uniform(100, 1000) in Pa lies wholly below 100000 "
+            "prior of flat_yield_strength: uniform(100, 1000) in Pa lies wholly below 10000 "
             "Pa: an implausible magnitude (a number without its unit is in Pa); give the unit, "
             "e.g. 'uniform(100 MPa, 1000 MPa)'",
         ),
         (
             "body_E",
             {"prior": "normal", "mean": 200, "sd": 10},
-            "prior of body_E: normal(200, 10) in Pa lies wholly below 100000 Pa: an "
+            "prior of body_E: normal(200, 10) in Pa lies wholly below 10000 Pa: an "
             "implausible magnitude (a number without its unit is in Pa); give the unit, e.g. "
             "'normal(200 GPa, 10 GPa)'",
         ),

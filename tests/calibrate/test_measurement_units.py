@@ -64,7 +64,7 @@ def test_implausible_input_magnitudes_are_refused(tmp_path):
     for header, row, match in (
         ("flat_yield_strength", "300",
          r"drop 1 \(a\), column 'flat_yield_strength': flat_yield_strength = 300 Pa is below "
-         r"100000 Pa: an implausible magnitude .*give its unit, e.g. '300 MPa'"),
+         r"10000 Pa: an implausible magnitude .*give its unit, e.g. '300 MPa'"),
         ("tip_radius", "4", r"tip_radius = 4 m is above 1 m: .* e.g. '4 mm'"),
         ("flat_brinell_hardness", "1.03e9",
          r"flat_brinell_hardness = 1.03e\+09 kgf/mm\^2 is above"),

@@ -42,7 +42,7 @@ MU = prior("mu", "uniform(0, 0.6)")
         ({"law": "ghaednia", "fixed": 0.05}, "fixed must be a table of input = value"),
         ({"law": "ghaednia", "fixed": {"flat_yield_strength": 300}},
          r"model 'ghaednia/coulomb', fixed flat_yield_strength: flat_yield_strength = 300 Pa is "
-         r"below 100000 Pa: an implausible magnitude .*give its unit, e.g. '300 MPa'"),
+         r"below 10000 Pa: an implausible magnitude .*give its unit, e.g. '300 MPa'"),
         ({"law": "ghaednia", "fixed": {"flat_E": 200}}, r"fixed flat_E: .*e.g. '200 GPa'"),
     ],
 )  # fmt: skip

@@ -107,17 +107,17 @@ def test_moduli_take_units_and_numbers_refuse_text() -> None:
     [
         (
             "E=69GPa, nu=0.33, Sy=276, rho=2700kg/m^3, HB=95",
-            "material Sy = 276 has no unit and is read in Pa: 276 Pa is below 100000 Pa, an "
+            "material Sy = 276 has no unit and is read in Pa: 276 Pa is below 10000 Pa, an "
             "implausible magnitude; give its unit, e.g. '276 MPa'",
         ),
         (
             "E=69, nu=0.33, Sy=276MPa, rho=2700",
-            "material E = 69 has no unit and is read in Pa: 69 Pa is below 100000 Pa, an "
+            "material E = 69 has no unit and is read in Pa: 69 Pa is below 10000 Pa, an "
             "implausible magnitude; give its unit, e.g. '69 GPa'",
         ),
         (
             "E=69GPa, nu=0.33, Sy=276MPa, rho=2.7",
-            "material rho = 2.7 has no unit and is read in kg/m^3: 2.7 kg/m^3 is below 100 "
+            "material rho = 2.7 has no unit and is read in kg/m^3: 2.7 kg/m^3 is below 5 "
             "kg/m^3, an implausible magnitude; give its unit, e.g. '2.7 g/cm^3'",
         ),
     ],

@@ -83,13 +83,19 @@ def test_damaged_metadata_names_store_and_file(
 
 
 def test_run_into_damaged_store_rewrites_it_or_restarts(store) -> None:
-    """A damaged root is rewritten by the same study (tests/sweep/test_sweep_store_repair.py);
-    an array's damaged metadata needs --restart, which starts the store fresh."""
+    """A damaged root, and an array's damaged metadata, are rewritten by the same study
+    (tests/sweep/test_sweep_store_repair.py, test_store_metadata_repair.py); the damaged
+    metadata of a folder that is not the study's needs --restart, which starts the store
+    fresh."""
     (store / "zarr.json").write_text("not json")
     st = Study(name="s", grid={"angle": np.radians([20.0, 45.0])}, fixed={"vy": -1.0, "mu": 0.2})
     again = run_sweep(st, store, evaluator=FakeEvaluator(), quiet=True)
     assert again.stats.chunks_computed == 0
     (store / "angle" / "zarr.json").write_text("not json")
+    again = run_sweep(st, store, evaluator=FakeEvaluator(), quiet=True)
+    assert again.stats.chunks_computed == 0
+    (store / "notes").mkdir()
+    (store / "notes" / "zarr.json").write_text("not json")
     with pytest.raises(CorruptStoreError, match="--restart"):
         run_sweep(st, store, evaluator=FakeEvaluator(), quiet=True)
     res = run_sweep(st, store, evaluator=FakeEvaluator(), quiet=True, restart=True)

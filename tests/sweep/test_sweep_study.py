@@ -208,7 +208,7 @@ def test_study_table_units_and_round_trip() -> None:
         ),
         (
             {"grid": {"angle": ["10 deg"], "mu": [0.1]}, "fixed": {"vy": "2 kg"}},
-            "not convertible to m/s",
+            "has the wrong dimension; expected a quantity convertible to m/s",
         ),
         (
             {

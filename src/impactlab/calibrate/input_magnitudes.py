@@ -9,14 +9,14 @@ import math
 
 __all__ = ["PLAUSIBLE_INPUTS", "check_magnitude"]
 
-_STRESS = (1e5, math.inf, "MPa")  # 0.1 MPa: below any solid a drop test strikes
-_MODULUS = (1e5, math.inf, "GPa")
+_STRESS = (1e4, math.inf, "MPa")  # 10 kPa: below any solid a drop test strikes (materials)
+_MODULUS = (1e4, math.inf, "GPa")
 
 #: Input -> (lowest, highest plausible value in the input's unit, the unit to suggest): a
-#: stress or a modulus below 0.1 MPa (MPa or GPa read as Pa), a Brinell hardness above 10^4
+#: stress or a modulus below 10 kPa (MPa or GPa read as Pa), a Brinell hardness above 10^4
 #: kgf/mm^2 (Pa read as kgf/mm^2; the hardest metals are below 10^3), a rod longer than 10 m, a
 #: tip or a sphere over 1 m in radius, a body over 100 kg (mm or g read as m or kg), a density
-#: below 100 kg/m^3 (g/cm^3 read as kg/m^3).
+#: below 5 kg/m^3 (g/cm^3 read as kg/m^3).
 PLAUSIBLE_INPUTS: dict[str, tuple[float, float, str]] = {
     **{f"{side}_yield_strength": _STRESS for side in ("body", "flat")},
     **{f"{side}_E": _MODULUS for side in ("body", "flat")},
@@ -25,7 +25,7 @@ PLAUSIBLE_INPUTS: dict[str, tuple[float, float, str]] = {
     "tip_radius": (0.0, 1.0, "mm"),
     "radius": (0.0, 1.0, "mm"),
     "mass": (0.0, 100.0, "g"),
-    "body_density": (100.0, math.inf, "g/cm^3"),
+    "body_density": (5.0, math.inf, "g/cm^3"),
 }
 
 

@@ -130,10 +130,15 @@ class Parameter:
         numbers = (self.mean, self.sd) if self.kind == "normal" else (self.low, self.high)
         given = ", ".join(_number(x) for x in numbers)
         hinted = ", ".join(f"{_number(x)} {hint}" for x in numbers)
+        try:  # the unit most likely left out, where the range then is plausible
+            top = to_unit(f"{_number(max(numbers))} {hint}", self.unit, name=self.name)
+        except ValueError:
+            top = math.nan
+        suggestion = f", e.g. '{self.kind}({hinted})'" if plausible_low <= top else ""
         raise ValueError(
             f"prior of {self.name}: {self.kind}({given}) in {self.unit} lies wholly {side} "
             f"{self.unit}: an implausible magnitude (a number without its unit is in "
-            f"{self.unit}); give the unit, e.g. '{self.kind}({hinted})'"
+            f"{self.unit}); give the unit{suggestion}"
         )
 
     @property

@@ -26,7 +26,7 @@ from impactlab._json import quantity as quantity_json
 from impactlab._json import to_json
 from impactlab.cli._common import UserError, emit, print_rows
 from impactlab.cli.output_paths import existing_store, output_file, output_store
-from impactlab.cli.sweep_summary import info_json, run_summary
+from impactlab.cli.sweep_summary import info_json, run_summary, warn_incomplete
 from impactlab.flags import invalidating_names
 
 if TYPE_CHECKING:
@@ -124,7 +124,9 @@ def _print_report(report: dict[str, Any], title: str) -> None:
             if key.startswith("p") and isinstance(value, float):
                 _n, text, shown = field_row(out, value, unit)
                 rows.append((f"{out} {key}", text, shown))
-    n = f"{report['n_cases']} cases, {report['n_invalid']} excluded (status != 0)"
+    n = f"{report['n_cases']} cases, {report['n_invalid']} excluded (invalid: status > 0)"
+    if report.get("n_not_computed"):
+        n += f", {report['n_not_computed']} not computed (status -1)"
     flagged = int(report.get("n_flagged", 0))
     n += f", {flagged} flagged ({invalidating_names()}) " + (
         "included" if report.get("flagged_included") else "excluded"
@@ -287,6 +289,7 @@ def uncertainty_cmd(
 
     if source.is_dir():
         ds = open_sweep(source)
+        warn_incomplete(source)
     else:
         if not source.exists() and source.suffix == ".zarr":
             raise UserError(
@@ -296,7 +299,9 @@ def uncertainty_cmd(
         _check_run_paths(out, None)
         _check_uncertainty_study(source, max_cases)  # before any case is computed
         where = _Where(out, scheduler, workers, max_cases)
-        ds = _run(source, where, quiet or as_json, False).dataset
+        res = _run(source, where, quiet or as_json, False)
+        ds = res.dataset
+        warn_incomplete(res.path)
     _print_uncertainty(ds, outputs, percentiles, as_json, include_flagged)
 
 
@@ -339,6 +344,7 @@ def plot_cmd(
     from impactlab.sweep import open_sweep, plot_sweep
 
     ds = open_sweep(existing_store(store))
+    warn_incomplete(store)
     skipped: list[str] = []
     files = _plots(plot_sweep, ds, output_folder(out, "--out"), skipped)
     if not files:
@@ -378,6 +384,7 @@ def export_cmd(
 
     ds = open_sweep(existing_store(store))
     export_netcdf(ds, output_file(target, "the NetCDF file"))
+    warn_incomplete(store)  # its cases not computed yet are in the file as status -1
     print(target, file=sys.stdout)
 
 

@@ -6,6 +6,7 @@
 from __future__ import annotations
 
 import re
+import sys
 from collections.abc import Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -101,3 +102,13 @@ def run_summary(
     if files:
         summary["plots"] = files
     return summary
+
+
+def warn_incomplete(store: Path) -> None:
+    """A warning on stderr when the store at ``store`` has chunks still to compute (what is
+    exported or reported of it covers the finished chunks only; the others read status -1)."""
+    from impactlab.sweep.summary import incomplete_note
+
+    note = incomplete_note(store)
+    if note is not None:
+        print(f"warning: {note}", file=sys.stderr)

@@ -45,13 +45,14 @@ def brinell_to_pa(hb: float) -> float:
 
 
 #: Plausible values of a solid a drop test strikes (field -> (low, high, unit, the unit a bare
-#: number outside them most likely left out)): a modulus or a strength below 0.1 MPa is one
-#: given in MPa or GPa but read in Pa; a density below 100 kg/m^3 one in g/cm^3; a hardness
-#: above 10^4 kgf/mm^2 (the hardest metals are below 10^3) one in Pa.
+#: number outside them most likely left out)): a modulus or a strength below 10 kPa (softer
+#: than a soft silicone or a foam's crush strength) is one given in MPa or GPa but read in Pa;
+#: a density below 5 kg/m^3 (lighter than any foam) one in g/cm^3; a hardness above 10^4
+#: kgf/mm^2 (the hardest metals are below 10^3) one in Pa.
 PLAUSIBLE: dict[str, tuple[float, float, str, str]] = {
-    "E": (1e5, 1e13, "Pa", "GPa"),
-    "yield_strength": (1e5, 1e11, "Pa", "MPa"),
-    "density": (100.0, 3e4, "kg/m^3", "g/cm^3"),
+    "E": (1e4, 1e13, "Pa", "GPa"),
+    "yield_strength": (1e4, 1e11, "Pa", "MPa"),
+    "density": (5.0, 3e4, "kg/m^3", "g/cm^3"),
     "brinell_hardness": (0.1, 1e4, _HB, "Pa"),
 }
 

@@ -99,9 +99,16 @@ def _check_bare(field: str, value: Any, x: float, label: str) -> None:
     low, high, unit, hint = PLAUSIBLE[field]
     if x > 0 and not low <= x <= high:  # <= 0: the material's own error says what is allowed
         side = f"below {low:g}" if x < low else f"above {high:g}"
+        suggestion = ""
+        try:  # the unit most likely meant, where the number then is plausible
+            hinted = _number(field, unit, f"{value} {hint}", label)
+        except ValueError:
+            hinted = math.nan
+        if low <= hinted <= high:
+            suggestion = f", e.g. '{value} {hint}'"
         raise ValueError(
             f"{label} = {value} has no unit and is read in {unit}: {x:g} {unit} is {side} "
-            f"{unit}, an implausible magnitude; give its unit, e.g. '{value} {hint}'"
+            f"{unit}, an implausible magnitude; give its unit{suggestion}"
         )
 
 

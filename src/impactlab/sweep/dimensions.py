@@ -79,7 +79,8 @@ _ROD_ONLY = ("angle", "length", "tip_radius", "inertia")
 _ANGLED_BODIES = ("rod", "flexible_rod")
 
 
-def _inside(x: float, rule: Interval) -> bool:
+def inside(x: float, rule: Interval) -> bool:
+    """True when ``x`` lies in the interval ``rule`` (and is an integer where it must be)."""
     lo, hi, lo_in, hi_in, integer = rule
     return (
         (x >= lo if lo_in else x > lo)
@@ -88,7 +89,7 @@ def _inside(x: float, rule: Interval) -> bool:
     )
 
 
-def _shown(name: str, values: Sequence[float]) -> tuple[list[str], str]:
+def shown_values(name: str, values: Sequence[float]) -> tuple[list[str], str]:
     """``values`` of input ``name`` as text in its display unit, and the unit ("" for none)."""
     spec = get_input(name)
     field = next((s[name] for s in MATERIAL_OVERRIDES.values() if name in s), name)
@@ -96,10 +97,10 @@ def _shown(name: str, values: Sequence[float]) -> tuple[list[str], str]:
     return [format_number(v * d.scale) for v in values], "" if d.unit == "-" else d.unit
 
 
-def _rule_text(name: str, rule: Interval) -> str:
+def rule_text(name: str, rule: Interval) -> str:
     """``"mu must be >= 0"``, ``"angle must lie in (0, 90] deg"`` (bounds in display units)."""
     lo, hi, lo_in, hi_in, integer = rule
-    (lo_t, hi_t), unit = _shown(name, [lo, hi])
+    (lo_t, hi_t), unit = shown_values(name, [lo, hi])
     u = f" {unit}" if unit else ""
     if integer:
         return f"{name} must be an integer >= {lo_t}"
@@ -115,7 +116,7 @@ def _refuse(
     empty (values in display units, at most four named)."""
     if not bad:
         return
-    texts, unit = _shown(name, list(bad[:4]))
+    texts, unit = shown_values(name, list(bad[:4]))
     got = ", ".join(texts) + (", ..." if len(bad) > 4 else "")
     got += f" {unit}" if unit else ""
     count = f" ({len(bad)} of {len(values)} values)" if len(values) > 1 else ""
@@ -128,15 +129,15 @@ def check_allowed(name: str, values: Sequence[float], where: str) -> None:
     rule = ALLOWED.get(name)
     if rule is not None:
         _refuse(
-            where, name, values, [v for v in values if not _inside(v, rule)], _rule_text(name, rule)
+            where, name, values, [v for v in values if not inside(v, rule)], rule_text(name, rule)
         )
 
 
 def check_rod_angles(angles: Sequence[float], where: str, rule_suffix: str = "") -> None:
     """ValueError naming ``where``, the offending values and the interval unless every angle
     [rad] of a rod lies in :data:`ANGLE`, (0, 90] deg (``rule_suffix`` ends the rule's text)."""
-    rule = _rule_text("angle", ANGLE) + rule_suffix
-    _refuse(where, "angle", angles, [a for a in angles if not _inside(a, ANGLE)], rule)
+    rule = rule_text("angle", ANGLE) + rule_suffix
+    _refuse(where, "angle", angles, [a for a in angles if not inside(a, ANGLE)], rule)
 
 
 def check_kinematics(

@@ -43,6 +43,7 @@ from impactlab.sweep.status import (
     STATUS_NOT_RUN,
     SWEEP_STATUS_MESSAGES,
 )
+from impactlab.sweep.study_rules import unset_ignored
 
 
 @runtime_checkable
@@ -120,6 +121,11 @@ def numba_cache_stats() -> dict[str, int]:
 # -- the engine --------------------------------------------------------------------------------
 
 
+#: The engine's diagnostic outputs: computed (``run_arrays(diagnostics=True)``, a few per cent
+#: of the engine's time, every other output bit for bit the same) only for a chunk that keeps
+#: one of them.
+DIAGNOSTIC_OUTPUTS = frozenset({"energy_rise", "friction_excess"})
+
 #: Store columns of a flexible drop's sequence totals (``impactlab.schema.SEQUENCE_FIELDS``):
 #: NaN for the rigid bodies' cases.
 SEQUENCE_OUTPUTS: tuple[str, ...] = tuple(f.name for f in SEQUENCE_FIELDS)
@@ -153,7 +159,9 @@ class EngineEvaluator:
     def __call__(
         self, cases: Mapping[str, np.ndarray], statics: Statics, outputs: Sequence[str]
     ) -> tuple[dict[str, np.ndarray], np.ndarray]:
-        if statics.categories.get("body") == FLEXIBLE_BODY:  # one drop per case
+        body = statics.categories.get("body", "rod")
+        cases = unset_ignored(cases, body)  # another body's inputs (a study of several)
+        if body == FLEXIBLE_BODY:  # one drop per case
             return evaluate_flexible(cases, statics, outputs)
         rigid = [o for o in outputs if o not in SEQUENCE_OUTPUTS]
         res, status = evaluate(cases, statics, rigid)
@@ -246,6 +254,7 @@ def evaluate(
         initial if all_ok else np.ascontiguousarray(initial[ok]),
         mu if all_ok else np.ascontiguousarray(mu[ok]),
         brittle_limit=brittle_limit(statics),
+        diagnostics=not DIAGNOSTIC_OUTPUTS.isdisjoint(outputs),  # the others' bits unchanged
         **dict(statics.engine),
     )
     st = np.asarray(st, dtype=np.int32)
@@ -266,6 +275,7 @@ def _law_id(name: str) -> int:
 
 #: Silence unused-import linters for names re-exported for the docs.
 __all__ = [
+    "DIAGNOSTIC_OUTPUTS",
     "KINEMATIC_INPUTS",
     "SEQUENCE_OUTPUTS",
     "STATUS_BAD_BODY",

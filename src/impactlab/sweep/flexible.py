@@ -10,8 +10,9 @@ material's density as FlexibleRod derives it, and the modal inputs ``n_axial``, 
 (integers) and ``damping`` (the modal damping ratio; unset: FlexibleRod's defaults, the mode
 counts by frequency, so that each length of a sweep has its own; the axial residual
 pseudo-modes come with any axial mode). Each group runs with its own body and mode counts. The
-inertia follows from the beam theory: a study that sets ``inertia`` (or a sphere's ``radius``)
-for a flexible rod gets the status BAD_BODY for those cases.
+inertia follows from the beam theory: a study of flexible rods only that sets ``inertia`` is
+refused when it is built, and in a study of several bodies the flexible rod leaves ``inertia``
+(and a sphere's ``radius``) unset; a case that still gives them gets the status BAD_BODY.
 
 Outputs: the store keeps the engine's output fields and, for a study with a flexible rod, the
 drop's sequence totals (``impactlab.schema.SEQUENCE_FIELDS``); a flexible case fills those that

@@ -38,8 +38,10 @@ class CorruptStoreError(ValueError):
 
 
 class RepairableStoreError(CorruptStoreError):
-    """Metadata that a resume of the same study rewrites: result arrays (a kept output,
-    ``status``) whose ``zarr.json`` is gone (``missing_arrays``), a ``.sweep/study.json``
+    """Metadata that a resume of the same study rewrites: arrays whose ``zarr.json`` is gone or
+    unreadable (``missing_arrays``: a kept output, ``status``, or an array the store was built
+    with, named in the root's consolidated metadata: a coordinate, an input, the ``.sweep``
+    group; their metadata follows from the study), a ``.sweep/study.json``
     that is not a JSON object (``study_record``: what is wrong with it, or None), or the root's
     ``zarr.json`` (``root``: what is wrong with it, or None; rewritten from the study record and
     the engine identity kept in ``.sweep/zarr.json``). The intact chunks are kept; those whose
@@ -195,11 +197,32 @@ def _corrupt(root: Path, node: Path, why: str) -> CorruptStoreError:
     )
 
 
+def _built_nodes(root: Path) -> set[str]:
+    """The nodes the store at ``root`` was built with: the names its root ``zarr.json``
+    (already checked) lists in its consolidated metadata (none without it)."""
+    meta = json.loads((root / "zarr.json").read_bytes()).get("consolidated_metadata")
+    nodes = meta.get("metadata") if isinstance(meta, dict) else None
+    return {str(k) for k in nodes if "/" not in str(k)} if isinstance(nodes, dict) else set()
+
+
+def _array_problem(name: str, why: str, results: tuple[str, ...]) -> str:
+    """``"result array 'e' is gone: e/zarr.json is missing"``, ``"array 'mu': mu/zarr.json is
+    not valid JSON (...)"``."""
+    if name in results:
+        gone = why == "is missing"
+        return (
+            f"result array {name!r} {'is gone' if gone else 'is damaged'}: {name}/zarr.json {why}"
+        )
+    return f"{'group' if name.startswith('.') else 'array'} {name!r}: {name}/zarr.json {why}"
+
+
 def check_metadata(path: str | Path) -> None:
     """CorruptStoreError unless the root and every sub-folder (an array, ``.sweep``) of the
     store at ``path`` have a ``zarr.json`` that reads as Zarr v3 metadata (the chunks' data is
     checked by ``SweepStore.verify``). RepairableStoreError (a CorruptStoreError) when only
-    result arrays are missing or ``.sweep/study.json`` is not JSON: a resume repairs those."""
+    metadata that follows from the study is gone or unreadable (that of a result array, or of
+    an array or group the store was built with) or ``.sweep/study.json`` is not JSON: a resume
+    repairs those, keeping the chunks."""
     root = Path(path)
     f = root / "zarr.json"
     why = _node_problem(f) if f.exists() else "is missing"
@@ -215,22 +238,25 @@ def check_metadata(path: str | Path) -> None:
     if why is not None:
         raise _corrupt(root, f, why)
     results = _result_arrays(root)
-    missing = tuple(n for n in results if not (root / n / "zarr.json").exists())
-    for node in sorted(d for d in root.iterdir() if d.is_dir() and d.name not in missing):
+    built = _built_nodes(root) if results else set()
+    damaged = {n: "is missing" for n in results if not (root / n / "zarr.json").exists()}
+    for node in sorted(d for d in root.iterdir() if d.is_dir() and d.name not in damaged):
         f = node / "zarr.json"
         why = _node_problem(f) if f.exists() else "is missing"
-        if why is not None:
+        if why is not None and (node.name in results or node.name in built):
+            damaged[node.name] = why  # follows from the study: written again by a resume
+        elif why is not None:
             raise _corrupt(root, f, why)
     record = _study_record_problem(root)
-    if not missing and record is None:
+    if not damaged and record is None:
         return
-    problems = [f"result array {n!r} is gone: {n}/zarr.json is missing" for n in missing]
+    problems = [_array_problem(n, why, results) for n, why in sorted(damaged.items())]
     problems += [f".sweep/study.json {record}"] if record is not None else []
     raise RepairableStoreError(
         f"sweep store {str(root)!r} is damaged: {'; '.join(problems)}; run the same study into "
         f"it again (impactlab sweep run STUDY.toml --out {root}) to rewrite it: the intact "
         "chunks are kept and those that lack data are computed again (--restart would discard "
         "them all)",
-        missing,
+        tuple(sorted(damaged)),
         record,
     )

@@ -43,6 +43,13 @@ def check_material_inputs(
     out = dict(fixed)
     for side, fields in MATERIAL_OVERRIDES.items():
         props = [name for name in fields if name in given]
+        key = f"{side}_material"
+        if not props and CUSTOM in [str(v) for v in categories.get(key, ())]:
+            raise ValueError(
+                f"{key} = {CUSTOM!r}: a {side} material by values needs "
+                f"{', '.join(f'{side}_{f}' for f in REQUIRED_FIELDS[side])} (every case of it "
+                f"would fail); set them in [fixed], [grid] or [sample], or name library materials"
+            )
         if not props:
             continue
         missing = [f"{side}_{f}" for f in REQUIRED_FIELDS[side] if f"{side}_{f}" not in given]
@@ -53,7 +60,6 @@ def check_material_inputs(
                 f"material is never partly changed); set them too, or name a library material "
                 f"with {side}_material and leave out the {side}_* properties"
             )
-        key = f"{side}_material"
         names = [str(v) for v in categories.get(key, ()) if str(v) != CUSTOM]
         if names:
             raise ValueError(

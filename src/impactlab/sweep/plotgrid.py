@@ -11,6 +11,7 @@ The plots themselves: ``impactlab.sweep.plots``.
 
 from __future__ import annotations
 
+import textwrap
 import warnings
 from collections.abc import Mapping, Sequence
 from typing import Any
@@ -20,7 +21,17 @@ import numpy as np
 from impactlab._mpl import pyplot
 from impactlab.sweep.display import plot_unit, slice_note, value_text
 
-__all__ = ["MAX_FACETS", "MAX_FACETS_SIDE", "SliceWarning", "facets", "label", "select", "title"]
+__all__ = [
+    "MAX_FACETS",
+    "MAX_FACETS_SIDE",
+    "EmptyPanel",
+    "SliceWarning",
+    "empty_panel",
+    "facets",
+    "label",
+    "select",
+    "title",
+]
 
 
 def label(ds: Any, name: str) -> tuple[float, str]:
@@ -55,6 +66,40 @@ def select(ds: Any, keep: Sequence[str], sel: Mapping[str, Any] | None) -> Any:
     if sel:
         raise ValueError(f"sel names {sorted(sel)}, which are not dimensions to select on")
     return ds
+
+
+class EmptyPanel(UserWarning):
+    """A panel of a plot shows no value: the message names the panel's slice and why (no case
+    there has a result, with the commonest status; or the output has no value where cases
+    have one, as a flexible rod's drop has no ``duration`` of one contact)."""
+
+
+def empty_reason(sub: Any, out: str, messages: Mapping[str, str]) -> str:
+    """Why the slice ``sub`` (with ``status``) shows no value of ``out``."""
+    st = np.asarray(sub["status"].values).ravel()
+    if not (st == 0).any():
+        codes, counts = np.unique(st, return_counts=True)
+        code = int(codes[np.argmax(counts)])
+        text = str(messages.get(str(code), "?")).split(" (")[0]
+        return f"no case there has a result (status {code}: {text})"
+    raw = np.asarray(sub[out].values)
+    vals = raw.astype(float).ravel()[st == 0]
+    if (np.isfinite(vals) & ((vals >= 0) if raw.dtype.kind in "iu" else True)).any():
+        return "every case with a result there is flagged (not plain success)"
+    return f"{out} has no value where the cases have a result (not an output of theirs)"
+
+
+def empty_panel(ax: Any, full: Any, sub: Any, out: str, shown: Any) -> None:
+    """When the values ``shown`` of ``out`` on ``ax`` (the slice ``sub`` of ``full``) hold no
+    finite number: the reason written on the panel and an :class:`EmptyPanel` warning."""
+    if np.isfinite(np.asarray(shown, dtype=float)).any():
+        return
+    why = empty_reason(sub, out, full.attrs.get("status_messages", {}))
+    ax.text(0.5, 0.5, textwrap.fill(f"no value: {why}", 30), ha="center", va="center",
+            fontsize="small", transform=ax.transAxes,
+            bbox={"facecolor": "white", "edgecolor": "0.6"})  # fmt: skip
+    at = where(full, sub) or "the only panel"
+    warnings.warn(f"{out}: empty panel ({at}): {why}", EmptyPanel, stacklevel=3)
 
 
 def where(full: Any, sub: Any) -> str:

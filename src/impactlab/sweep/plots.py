@@ -31,6 +31,7 @@ from impactlab.sweep.plotgrid import (
     MAX_FACETS,
     MAX_FACETS_SIDE,
     SliceWarning,
+    empty_panel,
     facets,
     label,
     select,
@@ -154,6 +155,7 @@ def _regime_panel(
     ax.set_xlabel(xl)
     ax.set_ylabel(yl)
     title(ax, "friction regime" + _flag_note(int(bad.sum())), ds, sub)
+    empty_panel(ax, ds, sub, "regime", np.where(reg >= 0, reg, np.nan))
     if handles:
         ax.legend(handles=handles, loc="best", fontsize="small")
 
@@ -198,6 +200,7 @@ def _category_line(ds: Any, out: str, x: str, sel: Mapping[str, Any], ax: Any) -
     ax.set_yticks(shown, [names.get(c, str(c)) for c in shown])
     ax.set_xlabel(xl)
     title(ax, out, ds, sub)
+    empty_panel(ax, ds, sub, out, np.where(codes >= 0, codes, np.nan))
 
 
 def _flagged(sub: Any) -> np.ndarray:
@@ -240,7 +243,8 @@ def _output_panel(
         ax.plot(xv, vals * vs, "o-", ms=3)
         if bad.any():
             raw = np.asarray(sub[out].values, dtype=float)[bad] * vs
-            ax.plot(xv[bad], np.where(np.isfinite(raw), raw, np.nanmin(vals * vs)), "rx", ms=5)
+            low = np.nanmin(vals * vs) if np.isfinite(vals).any() else 0.0  # none unflagged
+            ax.plot(xv[bad], np.where(np.isfinite(raw), raw, low), "rx", ms=5)
         ax.set_ylabel(vlabel)
     else:
         ys, yl = label(ds, y)
@@ -253,6 +257,7 @@ def _output_panel(
         ax.set_ylabel(yl)
     ax.set_xlabel(xl)
     title(ax, out + _flag_note(int(bad.sum())), ds, sub)
+    empty_panel(ax, ds, sub, out, vals)
 
 
 def plot_histograms(ds: Any, outputs: Sequence[str]) -> Any:

@@ -24,7 +24,7 @@ import numpy as np
 from impactlab._mpl import pyplot
 from impactlab.sweep.dimensions import SAMPLE_DIM
 from impactlab.sweep.inputs import OUTPUT_ALIASES
-from impactlab.sweep.plotgrid import SliceWarning, select
+from impactlab.sweep.plotgrid import EmptyPanel, SliceWarning, select
 from impactlab.sweep.plots import (
     CATEGORY_OUTPUTS,
     plot_histograms,
@@ -142,19 +142,33 @@ def plot_sweep(
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
     files: list[Path] = []
+    empty: list[str] = []
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", SliceWarning)
+        warnings.simplefilter("always", EmptyPanel)
         for name, draw in plan.plots:
+            before = len(caught)
             fig = np.ravel(draw())[0].figure
             path = out / name
             fig.savefig(path, dpi=120, bbox_inches="tight")
             plt.close(fig)
             files.append(path)
+            empty += _empty_notes(name, [w for w in caught[before:] if w.category is EmptyPanel])
     for note in dict.fromkeys(str(w.message) for w in caught if w.category is SliceWarning):
         warnings.warn(note, SliceWarning, stacklevel=2)
     for w in caught:
-        if w.category is not SliceWarning:
+        if w.category not in (SliceWarning, EmptyPanel):
             warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
-    for reason in plan.skipped:
+    for reason in [*plan.skipped, *empty]:
         warnings.warn(f"not plotted: {reason}", PlotSkipped, stacklevel=2)
     return files
+
+
+def _empty_notes(name: str, caught: Sequence[Any]) -> list[str]:
+    """One note per reason for the empty panels of the plot file ``name`` (their
+    :class:`EmptyPanel` warnings): ``"e_angle.png: empty panel(s) body = sphere; ...: why"``."""
+    by_reason: dict[str, list[str]] = {}
+    for w in caught:
+        head, _, why = str(w.message).partition("): ")
+        by_reason.setdefault(why, []).append(head.partition(": empty panel (")[2])
+    return [f"{name}: empty panel(s) {'; '.join(at)}: {why}" for why, at in by_reason.items()]

@@ -1,7 +1,8 @@
 """Resuming a store: why a store cannot be resumed by a study, and repairing its metadata:
-result arrays whose ``zarr.json`` is gone are created again (their chunk files, where still
-there, are kept), and an unreadable or deleted ``.sweep/study.json`` is written again, for the
-study the store was made for (same hash).
+arrays whose ``zarr.json`` is gone or unreadable are created again (a result array's or a
+sampled input's chunk files, where still there, are kept; a coordinate or fixed input is
+written whole from the study), and an unreadable or deleted ``.sweep/study.json`` is written
+again, for the study the store was made for (same hash).
 
 Only what the study itself defines is rewritten; no computed value is touched. The chunks
 whose files are gone no longer match their completion markers, so the resume that follows
@@ -11,16 +12,21 @@ computes exactly those again (``SweepStore.verify``); every intact chunk is kept
 from __future__ import annotations
 
 import json
+import shutil
 from pathlib import Path
 
 import zarr
 
-from impactlab.sweep.integrity import RepairableStoreError, recorded_engine
+from impactlab.sweep.integrity import CorruptStoreError, RepairableStoreError, recorded_engine
 from impactlab.sweep.storebuild import (
     META,
     StoreMeta,
     consolidate,
+    create_defined_array,
+    create_meta_group,
     create_result_array,
+    create_sampled_array,
+    defined_arrays,
     write_study_record,
 )
 from impactlab.sweep.study import Study
@@ -72,14 +78,33 @@ def root_mismatch(path: Path, study: Study, meta: StoreMeta) -> str | None:
 def repair_metadata(
     path: Path, problem: RepairableStoreError, study: Study, meta: StoreMeta
 ) -> None:
-    """Create the arrays ``problem.missing_arrays`` of the store at ``path`` again (empty, as
-    when the store was built), write its study record again when ``problem.study_record`` says
-    it is unreadable, and consolidate the metadata. The caller holds the store's lock and has
-    checked that the store holds ``study`` (its hash)."""
+    """Write the metadata of the arrays ``problem.missing_arrays`` of the store at ``path``
+    again (gone or unreadable), as when the store was built: a result array's or a sampled
+    input's over the chunk files still there, a study-defined array whole (its values follow
+    from the study), the ``.sweep`` group's; write its study record again when
+    ``problem.study_record`` says it is unreadable, and consolidate the metadata. The caller
+    holds the store's lock and has checked that the store holds ``study`` (its hash)."""
     if problem.missing_arrays:
         group = zarr.open_group(str(path), mode="r+")
+        defined = defined_arrays(study)
+        sampled = () if study.sample is None else tuple(study.sample.inputs)
         for name in problem.missing_arrays:
-            create_result_array(group, name, meta, study)
+            (path / name / "zarr.json").unlink(missing_ok=True)  # unreadable: written again
+            if name in (*meta.outputs, "status"):
+                create_result_array(group, name, meta, study)
+            elif name in sampled:
+                create_sampled_array(group, name, study)
+            elif name in defined:
+                shutil.rmtree(path / name, ignore_errors=True)
+                create_defined_array(group, name, defined[name])
+            elif name == META:
+                create_meta_group(group, meta)
+            else:  # not the study's: nothing to write it from
+                raise CorruptStoreError(
+                    f"sweep store {str(path)!r} is damaged: {name}/zarr.json cannot be read and "
+                    f"{name!r} is not an array of the study; run with --restart (restart=True "
+                    f"in Python) to start it fresh"
+                )
         consolidate(path)
     if problem.study_record is not None:
         write_study_record(path, study)

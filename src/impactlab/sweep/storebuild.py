@@ -126,23 +126,29 @@ def _create_sampled(g: Any, study: Study) -> list[str]:
     """The sampled inputs along ``sample`` (filled by the chunk writes); returns their names."""
     if study.sample is None:
         return []
-    c = study.layout.chunks[-1]
     for name in study.sample.inputs:
-        g.create_array(
-            name,
-            shape=(study.sample.size,),
-            chunks=(c,),
-            dtype="float64",
-            fill_value=np.nan,
-            dimension_names=(SAMPLE_DIM,),
-            compressors=compressors(),
-            **CHUNK_KEYS,
-            attributes={
-                **_attrs_units(name),
-                "distribution": json.dumps(study.sample.inputs[name].to_dict()),
-            },
-        )
+        create_sampled_array(g, name, study)
     return list(study.sample.inputs)
+
+
+def create_sampled_array(g: Any, name: str, study: Study) -> None:
+    """The array of the sampled input ``name`` along ``sample`` in the group ``g`` (filled by
+    the chunk writes, chunked like the work's last dimension)."""
+    assert study.sample is not None
+    g.create_array(
+        name,
+        shape=(study.sample.size,),
+        chunks=(study.layout.chunks[-1],),
+        dtype="float64",
+        fill_value=np.nan,
+        dimension_names=(SAMPLE_DIM,),
+        compressors=compressors(),
+        **CHUNK_KEYS,
+        attributes={
+            **_attrs_units(name),
+            "distribution": json.dumps(study.sample.inputs[name].to_dict()),
+        },
+    )
 
 
 def _constants(study: Study) -> list[tuple[str, Any]]:
@@ -288,7 +294,15 @@ def build_store(path: Path, study: Study, meta: StoreMeta) -> None:
         create_result_array(g, name, meta, study)
     checkpoint("create:arrays")
     g.attrs.update(_root_attrs(study, meta, _status_messages(meta), coords))
-    # the bookkeeping lives in a (data-less) sub-group so that Zarr readers accept it
+    create_meta_group(g, meta)
+    (path / META / "done").mkdir(parents=True, exist_ok=True)
+    write_study_record(path, study)
+    consolidate(path)
+
+
+def create_meta_group(g: Any, meta: StoreMeta) -> None:
+    """The bookkeeping sub-group ``.sweep`` of the group ``g``: data-less, so that Zarr readers
+    accept it; its attribute ``engine`` lets the root's attributes be rewritten."""
     g.create_group(
         META,
         attributes={
@@ -297,9 +311,6 @@ def build_store(path: Path, study: Study, meta: StoreMeta) -> None:
             "engine": meta.engine,  # with study.json: the root's attributes can be rewritten
         },
     )
-    (path / META / "done").mkdir(parents=True, exist_ok=True)
-    write_study_record(path, study)
-    consolidate(path)
 
 
 def rewrite_root(path: Path, study: Study, meta: StoreMeta) -> None:

@@ -50,6 +50,7 @@ from impactlab.sweep.options import (
     EngineOptions,
     UncertaintySpec,
 )
+from impactlab.sweep.study_rules import check_study_rules
 from impactlab.sweep.studyfile import read_study_file, study_arguments
 from impactlab.units import is_quantity
 
@@ -216,6 +217,7 @@ class Study:
         check_flexible_study(
             {"fixed": fixed, "grid": axes, "sample": self.sample, "engine": self.engine}
         )
+        check_study_rules(fixed, axes, self.sample)  # bodies' inputs, sampled values
         if not isinstance(self.laws, Mapping):
             raise ValueError(f"laws must be a mapping of law names to records, got {self.laws!r}")
         ensure_laws(self.laws)

@@ -34,7 +34,7 @@ from impactlab.sweep.options import (
     EngineOptions,
     UncertaintySpec,
 )
-from impactlab.units import refuse_comma
+from impactlab.units import convert_quantity, parse_quantity
 from impactlab.units import registry as units_registry
 
 _TABLES = (
@@ -153,37 +153,56 @@ def _laws(table: Mapping[str, Any], source: str) -> dict[str, dict[str, Any]]:
 
 
 def _quantity(value: Any, unit: str, bare_unit: str | None, label: str) -> float:
-    """``value`` (a number in ``bare_unit`` or a quantity string) as a float in ``unit``;
-    ``bare_unit`` None: a bare number is refused (an angle)."""
-    ureg = units_registry()
-    import pint  # loaded by the registry (``impactlab.units`` imports pint on first use)
+    """``value`` (a number in ``bare_unit``, or a quantity string) as a float in ``unit``.
 
+    Text follows the rules of every text input (``impactlab.units``: one number and one unit,
+    no comma, no temperature, the powers of the radian, no hertz for an angular velocity); the
+    study file adds two: a bare number (written or not) is in ``bare_unit`` (None: refused, an
+    angle), and an angle is a quantity of radians (not percent, not sr). Converted with pint,
+    so that a scale is kept (``unit = "percent"``: 20 is 0.2)."""
     if isinstance(value, bool) or not isinstance(value, int | float | str):
         raise ValueError(f"{label}: expected a number or a quantity string, got {value!r}")
     q: Any
-    if bare_unit is None and _bare(value):
+    shown = value
+    if _bare(value):
+        if bare_unit is None:
+            raise ValueError(
+                f"{label}: the bare number {value!r} has no unit; an angle needs one, e.g. "
+                f"'{str(value).strip()} deg' (or unit = 'deg' in the input's table)"
+            )
+        q = float(value) * _unit(label, bare_unit)
+        shown = f"{str(value).strip()} {bare_unit}"  # a table's unit named with the number
+    elif unit == "dimensionless":
         raise ValueError(
-            f"{label}: the bare number {value!r} has no unit; an angle needs one, e.g. "
-            f"'{str(value).strip()} deg' (or unit = 'deg' in the input's table)"
+            f"{label}: {value!r} is not a plain number; this input has no unit: write the "
+            f"number alone (e.g. 0.2), or a scale as the table's unit (unit = 'percent')"
         )
-    bare = bare_unit or unit  # None: refused above for a bare number
-    if isinstance(value, str):
-        refuse_comma(label, value, unit)
-    try:
-        if isinstance(value, str):
-            q = ureg.Quantity(value.strip())
-            if q.unitless:
-                q = float(q.magnitude) * ureg.Unit(bare)
-        else:
-            q = float(value) * ureg.Unit(bare)
-        x = float(q.to(unit).magnitude)
-    except pint.DimensionalityError:
-        raise ValueError(f"{label}: {value!r} is not convertible to {unit}") from None
-    except Exception as exc:  # pint's parser raises several unrelated types for unparsable text
-        raise ValueError(f"{label}: cannot parse {value!r} as a quantity ({exc})") from None
+    else:
+        q = parse_quantity(label, str(value), "deg" if unit == "rad" else unit)
+    if unit == "rad" and dict(q.to_base_units().unit_items()) != {"radian": 1}:
+        raise ValueError(
+            f"{label}: {shown!r} is not an angle (its unit is {q.units:~}); give deg, rad, turn "
+            f"or arcmin, e.g. '20 deg'"
+        )
+    if q.unitless and not _bare(value):
+        raise ValueError(
+            f"{label}: {value!r} is a pure number ({q:~}); write the number alone or with a "
+            f"unit of {unit}, e.g. '1.0 {unit}'"
+        )
+    x = float(convert_quantity(label, q, unit, shown).magnitude)
     if not math.isfinite(x):
         raise ValueError(f"{label} must be finite, got {value!r}")
     return x
+
+
+def _unit(label: str, unit: Any) -> Any:
+    """The pint unit named ``unit`` (a table's ``unit``, or the input's own)."""
+    if not isinstance(unit, str):
+        raise ValueError(f"{label}: unit must be a unit's name (text), got {unit!r}")
+    try:
+        return units_registry().Unit(unit)
+    except Exception as exc:  # pint's parser raises several unrelated types
+        raise ValueError(f"{label}: unit {unit!r} is not a unit ({exc})") from None
 
 
 def _bare(value: Any) -> bool:
@@ -306,16 +325,17 @@ def _range(
             if start == 0 or stop == 0 or (start < 0) != (stop < 0):
                 raise ValueError(
                     f"[grid] {name}: log spacing needs start and stop of one sign, neither 0 "
-                    f"(geomspace), got {start!r} and {stop!r}"
+                    f"(geomspace), got {spec['start']!r} and {spec['stop']!r}"
                 )
             return np.geomspace(start, stop, num)
         return np.linspace(start, stop, num)
     if spacing == "log":
         raise ValueError(f"[grid] {name}: log spacing takes 'num', not 'step'")
     step = conv(spec["step"], "step")
-    if step == 0 or (stop - start) / step < 0:
+    if step == 0 or (stop - start) / step < 0:  # the values as written, not in SI
         raise ValueError(
-            f"[grid] {name}: step {step!r} does not lead from start {start!r} to stop {stop!r}"
+            f"[grid] {name}: step {spec['step']!r} does not lead from start {spec['start']!r} "
+            f"to stop {spec['stop']!r}"
         )
     count = math.floor((stop - start) / step + 1e-9) + 1
     if count > limit[0]:

@@ -113,3 +113,15 @@ def store_info(path: str | Path) -> dict[str, Any]:
         flags = _intact_values(p, "flags", set(damaged))
         info["flagged"] = format_flag_counts(flag_counts(flags, ds["flags"].attrs))
     return info
+
+
+def incomplete_note(path: str | Path) -> str | None:
+    """``"store incomplete: 68 of 100 chunks done; run the study again to finish it"`` for
+    the store at ``path`` (already opened: its metadata checked), counting its intact chunks;
+    None when every chunk is done."""
+    store = SweepStore(Path(path))
+    total = store.attrs().get("n_chunks")
+    done = len(store.done_chunks()) - len(store.verify())
+    if not isinstance(total, int) or done >= total:
+        return None
+    return f"store incomplete: {done} of {total} chunks done; run the study again to finish it"

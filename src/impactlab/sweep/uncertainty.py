@@ -36,6 +36,7 @@ from impactlab.sweep.options import (
     DEFAULT_UNCERTAINTY_OUTPUTS,
     UncertaintySpec,
 )
+from impactlab.sweep.status import STATUS_NOT_RUN
 from impactlab.sweep.study_record import recorded_study
 
 
@@ -46,10 +47,12 @@ class UncertaintyReport:
     summary : one row per output: n (valid cases), mean, std, percentiles ("p2.5", ...), unit.
     sensitivity : one row per (output, input): rank_corr2, src2, and per output r2 of the
         linear fit; sorted by output, then by decreasing rank_corr2.
-    n_cases, n_invalid : sample size and cases excluded (status != 0).
+    n_cases, n_invalid : sample size and cases excluded as invalid (status > 0: the engine's
+        failures, the sweep's refusals).
     n_flagged : computed cases carrying a flag that says they are not plain success (energy
         gain, gravity-dominated, the other end; ``impactlab.flags``), excluded unless the
         report was asked to include them (``flagged_included``).
+    n_not_computed : cases of an incomplete store not computed yet (status -1), excluded too.
     """
 
     summary: pd.DataFrame
@@ -58,6 +61,7 @@ class UncertaintyReport:
     n_invalid: int
     n_flagged: int = 0
     flagged_included: bool = False
+    n_not_computed: int = 0
 
     def ranking(self, output: str) -> list[str]:
         """Inputs ordered by decreasing influence (rank_corr2) on ``output``."""
@@ -75,6 +79,7 @@ class UncertaintyReport:
         return {
             "n_cases": self.n_cases,
             "n_invalid": self.n_invalid,
+            "n_not_computed": self.n_not_computed,
             "n_flagged": self.n_flagged,
             "flagged_included": self.flagged_included,
             "summary": self.summary.reset_index().to_dict(orient="records"),
@@ -174,9 +179,16 @@ def uncertainty_report(
             .drop(columns="_o")
         )
         sensitivity = sensitivity.reset_index(drop=True)
-    n_invalid = int((status != 0).sum())
+    n_not_computed = int((status == STATUS_NOT_RUN).sum())  # an incomplete store's
+    n_invalid = int((status != 0).sum()) - n_not_computed
     return UncertaintyReport(
-        summary, sensitivity, int(status.size), n_invalid, int(flagged.sum()), include_flagged
+        summary,
+        sensitivity,
+        int(status.size),
+        n_invalid,
+        int(flagged.sum()),
+        include_flagged,
+        n_not_computed,
     )
 
 
@@ -279,7 +291,10 @@ def format_report(rep: UncertaintyReport, title: str = "") -> str:
         f"flagged (not plain success: {invalidating_names()}): "
         f"{rep.n_flagged}, {'included' if rep.flagged_included else 'excluded'}"
     )
-    lines.append(f"cases: {rep.n_cases}, excluded (status != 0): {rep.n_invalid}; {flagged}")
+    lines.append(
+        f"cases: {rep.n_cases}, excluded: {rep.n_invalid} invalid (status > 0), "
+        f"{rep.n_not_computed} not computed (status -1); {flagged}"
+    )
     lines.append("")
     lines.append(rep.summary.to_string(float_format=lambda v: f"{v:.4g}"))
     lines.append("")

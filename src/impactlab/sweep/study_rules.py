@@ -1,0 +1,126 @@
+"""Study-level rules decided when a study is built, beside those of
+:func:`impactlab.sweep.dimensions.check_kinematics`: the inputs each body takes, what the bodies
+of a study need, and the values a sampled distribution can draw.
+
+- Each body takes the inputs it has (:data:`IGNORED_BY`): in a study of several bodies (a
+  ``body`` grid axis) a rod's length, tip radius and inertia are no sphere's, a sphere's radius
+  no rod's, and a flexible rod's inertia follows its beam; the engine adapter leaves them unset
+  for the bodies that do not take them (:func:`unset_ignored`), as a sphere ignores the angle.
+  An input that no body of the study takes is refused, and so is a body that lacks what it
+  needs (a sphere without ``radius``): every case of it would fail.
+- A distribution is checked by the values its draws can take: its quantiles at the smallest
+  and the largest uniform the draws use short of 1 (2^-54 and 1 - 2^-53: a normal reaches
+  about 8.3 standard deviations), against the input's allowed values as a grid's values are
+  (:data:`~impactlab.sweep.dimensions.ALLOWED`, the angle of a rod, vy < 0 without spin).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+
+import numpy as np
+
+from impactlab.sweep.dimensions import (
+    ALLOWED,
+    ANGLE,
+    Axis,
+    Interval,
+    Sample,
+    Value,
+    inside,
+    rule_text,
+    shown_values,
+)
+from impactlab.sweep.distributions import Distribution, Uniform
+from impactlab.sweep.flexible import FLEXIBLE_BODY
+
+__all__ = ["IGNORED_BY", "UNIFORM_EXTREMES", "check_study_rules", "unset_ignored"]
+
+#: The inputs of other bodies that a body leaves unset in a study of several bodies.
+IGNORED_BY: dict[str, tuple[str, ...]] = {
+    "rod": ("radius",),
+    "sphere": ("length", "tip_radius", "inertia"),
+    FLEXIBLE_BODY: ("radius", "inertia"),
+}
+#: The smallest uniform of the draws and the largest short of 1 (``distributions.uniforms``).
+UNIFORM_EXTREMES = np.array([2.0**-54, 1.0 - 2.0**-53])
+#: The rule of vy when no spin can turn the contact point towards the flat.
+_APPROACH: Interval = (-np.inf, 0.0, True, False, False)
+
+
+def unset_ignored(cases: Mapping[str, np.ndarray], body: str) -> Mapping[str, np.ndarray]:
+    """``cases`` (input -> 1-D array) with the inputs that ``body`` does not take unset (NaN)."""
+    ignored = [k for k in IGNORED_BY.get(body, ()) if k in cases and not np.isnan(cases[k]).all()]
+    if not ignored:
+        return cases
+    n = len(cases[ignored[0]])
+    return {**cases, **{k: np.full(n, np.nan) for k in ignored}}
+
+
+def check_study_rules(
+    fixed: Mapping[str, Value], axes: Sequence[Axis], sample: Sample | None
+) -> None:
+    """ValueError (one line, naming the input and the body or the distribution) for an input
+    no body of the study takes, a body that lacks what it needs, and a sampled distribution
+    that can draw values the input does not allow."""
+    grid = {a.name: a.values for a in axes}
+    sampled = {} if sample is None else dict(sample.inputs)
+    given = set(fixed) | set(grid) | set(sampled)
+    bodies = [str(b) for b in grid.get("body", (fixed.get("body", "rod"),))]
+    if "inertia" in given and "rod" not in bodies:
+        raise ValueError(
+            f"inertia: only a rigid rod takes it, and the study's bodies are "
+            f"{', '.join(bodies)} (a flexible rod's follows its beam, a sphere's its radius and "
+            "mass); leave it out"
+        )
+    if "sphere" in bodies and "radius" not in given:
+        raise ValueError(
+            "radius: body 'sphere' needs it (every case of the sphere would fail); set radius "
+            "in [fixed], [grid] or [sample]"
+        )
+    spin_zero = "spin" not in grid and "spin" not in sampled and not fixed.get("spin", 0.0)
+    for name, dist in sampled.items():
+        rules = [ALLOWED.get(name)]
+        if name == "angle" and {"rod", FLEXIBLE_BODY} & set(bodies):
+            rules.append(ANGLE)
+        if name == "vy" and spin_zero:
+            rules.append(_APPROACH)
+        for rule in rules:
+            if rule is not None:
+                _check_draws(name, dist, rule)
+
+
+def _check_draws(name: str, dist: Distribution, rule: Interval) -> None:
+    """ValueError unless every value ``dist`` can draw for input ``name`` lies in ``rule``."""
+    what = (
+        "the contact point must approach the flat (vy < 0 m/s with spin = 0)"
+        if rule is _APPROACH
+        else rule_text(name, rule)
+    )
+    if rule[4]:
+        raise ValueError(
+            f"sample input {name!r}: {what}, and a {dist.kind} distribution draws any number; "
+            "put it on the [grid]"
+        )
+    low, high = (float(v) for v in dist.ppf(UNIFORM_EXTREMES))
+    for x, lower in ((low, True), (high, False)):
+        if inside(x, rule):
+            continue
+        key = "low" if lower else "high"
+        (text, bound), unit = shown_values(name, [x, rule[0] if lower else rule[1]])
+        u = f" {unit}" if unit else ""
+        closed = rule[2] if lower else rule[3]  # the bound itself is allowed
+        if isinstance(dist, Uniform):
+            fix = f"keep {key} {'at least' if lower else 'at most'} {bound}{u}"
+            fix = fix if closed else f"keep {key} {'above' if lower else 'below'} {bound}{u}"
+        else:
+            side = "above" if lower else "below"
+            fix = (
+                f"truncate it: {key} = {bound}{u}"
+                if closed
+                else f"truncate it: {key} {side} {bound}{u}"
+            )
+        raise ValueError(
+            f"sample input {name!r}: {what}, but its {dist.kind} distribution draws values "
+            f"{'down' if lower else 'up'} to {text}{u}; {fix}"
+        )
