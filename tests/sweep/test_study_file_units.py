@@ -5,6 +5,7 @@ the Python API refuses is refused in a study file too, and one both accept has o
 from __future__ import annotations
 
 import math
+import re
 
 import pytest
 
@@ -108,3 +109,22 @@ def test_a_range_is_reported_as_written() -> None:
     assert str(caught.value) == (
         "[grid] angle: step '10 deg' does not lead from start '80 deg' to stop '10 deg'"
     )
+
+
+@pytest.mark.parametrize(
+    ("where", "message"),
+    [
+        ("fixed", "input 'flat_yield_strength': flat_yield_strength = 276 Pa is below 10000 Pa"),
+        ("grid", "grid dimension 'flat_yield_strength': flat_yield_strength = 276 Pa is below"),
+    ],
+)
+def test_a_material_value_of_an_implausible_magnitude_is_refused(where: str, message: str) -> None:
+    """``flat_yield_strength = 276`` is 276 Pa, a unit left out: refused when the study is
+    built (a material by values and a calibration refuse it too); 276 MPa is read."""
+    base = {"vy": -1.41, "mu": 0.2, "angle": 0.349, "flat_E": 69e9, "flat_nu": 0.33}
+    values = {"fixed": {**base, "flat_yield_strength": 276.0}, "grid": {"law": ["brake"]}}
+    if where == "grid":
+        values = {"fixed": base, "grid": {"flat_yield_strength": [276.0, 300e6]}}
+    with pytest.raises(ValueError, match="^" + re.escape(message)):
+        Study(name="soft", **values)
+    Study(name="steel", fixed={**base, "flat_yield_strength": 276e6}, grid={"law": ["brake"]})

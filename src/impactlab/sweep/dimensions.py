@@ -30,6 +30,7 @@ from impactlab.dynamics.input_checks import warn_fast
 from impactlab.dynamics.kernels.inputs import MAX_ANGLE, MAX_MU, MAX_SPEED
 from impactlab.sweep.distributions import Distribution
 from impactlab.sweep.inputs import MATERIAL_OVERRIDES, get_input
+from impactlab.sweep.magnitudes import check_magnitudes
 from impactlab.units import angle_to_rad, is_quantity, magnitude
 
 #: Name of the Monte Carlo dimension (reserved: no input has this name).
@@ -215,6 +216,7 @@ def check_value(name: str, value: Any) -> Value:
     x = _number(name, value)
     if isinstance(x, float):
         check_allowed(name, [x], f"input {name!r}")
+        check_magnitudes(name, [x], f"input {name!r}")
     return x
 
 
@@ -242,6 +244,7 @@ class Axis:
             raise ValueError(f"grid axis {self.name!r} has no values")
         numbers = [v for v in vals if isinstance(v, float)]
         check_allowed(self.name, numbers, f"grid dimension {self.name!r}")
+        check_magnitudes(self.name, numbers, f"grid dimension {self.name!r}")
         if len(set(vals)) != len(vals):
             raise ValueError(f"grid axis {self.name!r} has repeated values")
         object.__setattr__(self, "values", vals)

@@ -14,9 +14,11 @@ with a material they do not have.
 from __future__ import annotations
 
 import math
+import warnings
 from collections.abc import Iterable, Mapping
 from typing import Any
 
+from impactlab._validation import ImplausibleInputWarning
 from impactlab.materials import Material, get_material
 from impactlab.sweep.inputs import MATERIAL_OVERRIDES
 
@@ -86,7 +88,9 @@ def custom_material(side: str, values: Mapping[str, float]) -> Material:
         raise ValueError(f"{side} material by values: {', '.join(missing)} not set")
     if side == "flat":
         given.setdefault("density", FLAT_DENSITY)
-    return Material(f"{side} material by values", **given)  # type: ignore[arg-type]
+    with warnings.catch_warnings():  # the study (or the prior) was checked when it was made:
+        warnings.simplefilter("ignore", ImplausibleInputWarning)  # not once per case
+        return Material(f"{side} material by values", **given)  # type: ignore[arg-type]
 
 
 def material_of(side: str, name: str, values: Mapping[str, float]) -> Material:
