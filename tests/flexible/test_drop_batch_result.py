@@ -107,3 +107,13 @@ def test_to_pint_has_units(drops) -> None:
     assert q["e"].units == ureg.dimensionless
     assert q["initial_energy"].to("mJ").magnitude[0] == pytest.approx(1e3 * drops.initial_energy[0])
     assert math.isnan(q["dent_depth"].magnitude[2])
+
+
+def test_the_drops_e_says_what_it_leaves_out() -> None:
+    """A drop's ``e`` removes the gravity impulse of its sequence: its column says so (the
+    impact's long name would not)."""
+    from impactlab import Rod, simulate_drops
+
+    ds = simulate_drops(Rod.paper(), angle=0.35, vy=[-1.41, -1.0], mu=0.2).to_xarray()
+    assert "gravity impulse of the sequence removed" in ds["e"].attrs["long_name"]
+    assert "kept" in ds["e_raw"].attrs["long_name"]

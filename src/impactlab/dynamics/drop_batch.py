@@ -88,7 +88,7 @@ def output_unit(name: str) -> tuple[str, str]:
     """(SI unit, meaning) of an output of ``DropBatchResult`` (``impactlab.schema``, else the
     engine's column: ``n_jumps``, ``n_dents``, ``t_final``)."""
     try:
-        return schema.unit(name), schema.description(name)
+        return schema.unit(name), schema.DROP_MEANINGS.get(name) or schema.description(name)
     except KeyError:
         f = _ENGINE_FIELDS[_ENGINE_NAME.get(name, name)]
         return f.unit, f.description

@@ -29,6 +29,7 @@ from typing import Any
 from impactlab.schema.drop import (
     DROP_FIELDS,
     DROP_HISTORY_FIELDS,
+    DROP_MEANINGS,
     END_SUFFIXES,
     RENAMED_DROP_FIELDS,
     RENAMED_DROP_HISTORY,
@@ -42,6 +43,7 @@ __all__ = [
     "DERIVED_FIELDS",
     "DROP_FIELDS",
     "DROP_HISTORY_FIELDS",
+    "DROP_MEANINGS",
     "END_SUFFIXES",
     "FIELDS",
     "HISTORY_FIELDS",

@@ -140,6 +140,14 @@ RENAMED_DROP_FIELDS: dict[str, str] = {
     "mean_force": "sequence_mean_force",
 }
 
+#: What a drop's field of an impact's name means where it differs from the impact's (a
+#: drop's ``e`` leaves out the gravity impulse of its sequence): the ``long_name`` of a
+#: batch of drops' column.
+DROP_MEANINGS: dict[str, str] = {
+    "e": "a drop's COR, -v_n,out / v_n,in over its sequence with the gravity impulse of the "
+    "sequence removed (as a fit of measured flights; e_raw keeps it)",
+}
+
 #: The other fields of ``DropResult`` that an impact has not (its sequence, energies, options).
 DROP_FIELDS: tuple[Field, ...] = (
     *SEQUENCE_FIELDS,
