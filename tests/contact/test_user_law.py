@@ -231,6 +231,12 @@ def test_the_switch_interference_is_named_in_metres() -> None:
         assert again.fingerprint() == law.fingerprint()
     finally:
         unregister_law("toy-switch")
+    with pytest.raises(ValueError, match="differ: give switch_interference only"), \
+            pytest.warns(DeprecationWarning):  # fmt: skip
+        register_law("toy-both", loading=toy_loading, unloading=toy_unloading,
+                     switch_interference=DC, elastic_limit=2 * DC, **kw)  # fmt: skip
+    with pytest.raises(ValueError, match="curves carry their own elastic limit"):
+        register_law("toy-curves", law.own_curves, switch_interference=DC)
     with pytest.raises(ValueError, match=r"switch_interference must be > 0 m, got -1\.0"):
         register_law("toy-bad", loading=toy_loading, unloading=toy_unloading,
                      switch_interference=-1.0, **kw)  # fmt: skip

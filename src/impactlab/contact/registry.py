@@ -142,8 +142,12 @@ def register_law(
     """
     if elastic_limit is not None:
         warn_renamed("elastic_limit", "switch_interference", "register_law keyword")
-        if switch_interference is None:
-            switch_interference = elastic_limit
+        if switch_interference is not None and switch_interference != elastic_limit:
+            raise ValueError(
+                f"switch_interference ({switch_interference!r} m) and its former name "
+                f"elastic_limit ({elastic_limit!r} m) differ: give switch_interference only"
+            )
+        switch_interference = elastic_limit
     check_law_name(name)
     if name in _LAWS:  # before any sampling: the cheap refusal first
         raise ValueError(
@@ -154,6 +158,11 @@ def register_law(
     if curves is not None and sampled:
         raise ValueError("give either curves or loading and unloading callables, not both")
     if curves is not None:
+        if switch_interference is not None:
+            raise ValueError(
+                "switch_interference applies to sampled callables; curves carry their own "
+                "elastic limit (IndentationCurves.elastic_limit, in delta/delta_c)"
+            )
         if not isinstance(curves, IndentationCurves):
             raise ValueError(f"curves must be IndentationCurves, got {type(curves).__name__}")
         return add_law(RegisteredLaw(name, curves, title=title))
