@@ -232,7 +232,7 @@ def test_the_switch_interference_is_named_in_metres() -> None:
     finally:
         unregister_law("toy-switch")
     with pytest.raises(ValueError, match="differ: give switch_interference only"), \
-            pytest.warns(DeprecationWarning):  # fmt: skip
+            pytest.warns(DeprecationWarning, match="renamed"):  # fmt: skip
         register_law("toy-both", loading=toy_loading, unloading=toy_unloading,
                      switch_interference=DC, elastic_limit=2 * DC, **kw)  # fmt: skip
     with pytest.raises(ValueError, match="curves carry their own elastic limit"):
