@@ -36,7 +36,7 @@ geometry = st.fixed_dictionaries(
         "length": st.floats(0.02, 2.0),
         "tip_radius": st.floats(1e-4, 0.05),
         "mass": st.floats(0.01, 10.0),
-        "ratio": st.floats(0.02, 0.34),  # I_C / (m L^2): from a slender rod to an end-heavy one
+        "ratio": st.floats(0.02, 0.25),  # I_C / (m L^2): a slender rod to all mass at the ends
     }
 ).filter(lambda g: g["tip_radius"] <= 0.5 * g["length"])  # a Rod refuses a wider tip
 
