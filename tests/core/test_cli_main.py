@@ -174,3 +174,15 @@ def test_every_command_takes_h_for_its_help(cli_main: CliMain) -> None:
         code_short, out_short, err = cli_main(*path, "-h")
         assert code_short == code_long == 0, (path, err)
         assert out_short == out_long and out_short.startswith("Usage: "), path
+
+
+def test_the_body_material_is_material_everywhere(cli_main: CliMain) -> None:
+    """``--material`` names the body's material in ``laws`` and ``fe indent`` as in
+    ``simulate`` and ``drop`` (``--body`` still works there)."""
+    args = ("laws", "ghaednia", "--json")
+    code, by_material, err = cli_main(*args, "--material", "aisi-52100")
+    assert code == 0, err
+    assert by_material == cli_main(*args, "--body", "aisi-52100")[1]
+    assert by_material != cli_main(*args)[1]
+    code, out, _ = cli_main("fe", "indent", "--help")
+    assert code == 0 and "--body, --material" in out

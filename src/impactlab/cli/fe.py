@@ -272,7 +272,9 @@ def indent_cmd(
     ),
     radius: str = typer.Option("8.8 mm", "--radius", help="Sphere radius."),
     sphere: str = typer.Option("elastic-plastic", help="rigid, elastic or elastic-plastic."),
-    body: str = typer.Option("aisi-201", help="The sphere's material preset."),
+    body: str = typer.Option(
+        "aisi-201", "--body", "--material", help="The sphere's material preset (--material too)."
+    ),
     flat: str = typer.Option("aisi-1010", help="The flat's material preset."),
     flat_E: str | None = typer.Option(None, "--flat-E", help="Flat's Young's modulus."),
     flat_nu: float | None = typer.Option(None, "--flat-nu", help="Flat's Poisson's ratio."),

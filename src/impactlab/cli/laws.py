@@ -131,7 +131,10 @@ def laws(
         help="Tip radius for the example numbers of one law, e.g. '5 mm' (bare number: m).",
     ),
     body: str = typer.Option(
-        _EXAMPLE_PAIR["--body"], "--body", help="Body material: library name or properties."
+        _EXAMPLE_PAIR["--body"],
+        "--body",
+        "--material",
+        help="Body material: library name or properties (--material too, as in simulate).",
     ),
     flat: str = typer.Option(
         _EXAMPLE_PAIR["--flat"], "--flat", help="Flat material: library name or properties."
