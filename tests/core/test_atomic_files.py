@@ -1,0 +1,39 @@
+"""A file written whole or not at all (impactlab._files)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from impactlab._files import write_bytes_atomic, write_text_atomic
+
+
+def test_writes_the_text_and_leaves_no_temporary_file(tmp_path: Path) -> None:
+    target = tmp_path / "results.json"
+    write_text_atomic(target, '{"e": 0.42}\n')
+    assert target.read_text() == '{"e": 0.42}\n'
+    assert [p.name for p in tmp_path.iterdir()] == ["results.json"]
+
+
+def test_replaces_an_existing_file(tmp_path: Path) -> None:
+    target = tmp_path / "m.csv"
+    target.write_text("old\n")
+    write_text_atomic(target, "new\n")
+    assert target.read_text() == "new\n"
+
+
+def test_a_failed_write_leaves_the_old_file_whole(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    target = tmp_path / "m.csv"
+    target.write_text("label,e\nd1,0.4\n")
+
+    def full_disk(*args: object) -> None:
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr("impactlab._files.os.replace", full_disk)
+    with pytest.raises(OSError, match="No space left"):
+        write_bytes_atomic(target, b"label,e\nd1,0.4\nd2,0.")
+    assert target.read_text() == "label,e\nd1,0.4\n"
+    assert [p.name for p in tmp_path.iterdir()] == ["m.csv"]
