@@ -61,6 +61,12 @@ def test_the_json_case_records_a_custom_flat_and_its_hardening(
     assert flat["name"] == "flat (custom)"
     assert flat["E"] == {"value": 69e9, "unit": "Pa"} and flat["nu"] == {"value": 0.33, "unit": "1"}
     assert flat["yield_strength"] == {"value": 276e6, "unit": "Pa"}
+    # not given, not used by a quasi-static indentation: null, not the Material's defaults
+    # (a steel's 7850 kg/m^3 and Meyer index 2.2 for an aluminium-like flat)
+    assert flat["density"] is None and flat["meyer_index"] is None
+    assert flat["brinell_hardness"] is None
+    # a library material is recorded whole
+    assert case["sphere_material"]["density"] == {"value": AISI_201.density, "unit": "kg/m^3"}
     assert case["flat_hardening"]["true_stress"] == {"value": [276e6, 300e6, 350e6], "unit": "Pa"}
     assert case["flat_hardening"]["true_plastic_strain"]["value"] == [0.0, 0.01, 0.1]
     assert case["sphere_material"]["E"] == {"value": AISI_201.E, "unit": "Pa"}

@@ -7,7 +7,14 @@ import math
 
 import pytest
 
-from impactlab.verification.fe_impact import add_law, compare_impacts, comparison_markdown
+from impactlab.verification.fe_impact import (
+    _range_cell,
+    _shown,
+    add_law,
+    compare_impacts,
+    comparison_markdown,
+    law_row,
+)
 
 CASE = "elastic-ball-on-aisi1010"
 
@@ -37,13 +44,102 @@ def test_elastic_impact_agrees_across_models(comparison):
             assert row["contact_duration"] == pytest.approx(hertz[i]["contact_duration"], rel=0.015)
 
 
-def test_a_law_column_is_one_call(comparison):
-    add_law(comparison, "jackson-green")
-    col = comparison.columns["jackson-green"]
+def test_a_law_column_is_one_call():
+    comp = compare_impacts("paper-ball-on-aisi1010")
+    add_law(comp, "tabulated")
+    col = comp.columns["tabulated"]
     assert all(math.isfinite(r["restitution"]) for r in col)
-    text = comparison_markdown(comparison)
-    assert text.count("| jackson-green |") == len(comparison.speeds)
+    text = comparison_markdown(comp)
+    assert text.count("| tabulated |") == len(comp.speeds)
     assert "| dynamic FE |" in text
+    # the FE curves of the same pair: e within 0.03 of the quasi-static FE impact's
+    # (docs/fe-dynamic.md: 0.82 against 0.84, 0.58 against 0.60)
+    for row, qs in zip(col, comp.columns["quasi-static FE 1-DOF"], strict=True):
+        assert row["restitution"] == pytest.approx(qs["restitution"], abs=0.03)
+
+
+@pytest.mark.parametrize("law", ["tabulated", "ghaednia", "jackson-green"])
+def test_an_elastic_plastic_law_on_the_elastic_case_is_refused(comparison, law):
+    """Both bodies kept elastic: a law that yields would report a dent and e < 1 that the FE
+    runs cannot have (tabulated: e 0.82, delta_p 1.02 um at 0.1 m/s against e 0.9999)."""
+    match = (
+        r"is elastic-plastic but case 'elastic-ball-on-aisi1010' keeps both bodies elastic"
+        r".*paper-ball-on-aisi1010.*\(hertz\)"
+    )
+    with pytest.raises(ValueError, match=match):
+        add_law(comparison, law)
+    assert law not in comparison.columns
+    with pytest.raises(ValueError, match="keeps both bodies elastic"):
+        compare_impacts(CASE, laws=(law,))
+
+
+@pytest.mark.parametrize("case", ["paper-ball-on-aisi1010", "rod-mass-on-aisi1010"])
+def test_an_elastic_law_on_a_yielding_case_is_refused(case):
+    match = rf"law 'hertz' is elastic but case '{case}' has bodies that yield"
+    with pytest.raises(ValueError, match=match + r".*elastic-ball-on-aisi1010.*jackson-green"):
+        compare_impacts(case, laws=("hertz",))
+
+
+def test_an_unknown_law_or_case_is_named():
+    with pytest.raises(ValueError, match=r"law must be a registered contact law .*'hertzz'"):
+        compare_impacts(CASE, laws=("hertzz",))
+    with pytest.raises(ValueError, match=r"case must be one of .*'nope'"):
+        law_row("nope", "hertz", 1.0, 0.02)
+
+
+def test_rows_past_the_law_range_are_marked():
+    """The laws' verified range for the paper's pair is 0.3-2 delta_c
+    (contact/data/verified-ranges.json); at 0.1 m/s the impact reaches about 8 delta_c: every
+    closed-form law's row says so, as the engine's LAW_EXTRAPOLATED does; the FE rows and the
+    tabulated law (its data are FE curves to 1000 delta_c) carry delta_max / delta_c only."""
+    comp = compare_impacts("paper-ball-on-aisi1010")
+    add_law(comp, "tabulated")
+    lines = comparison_markdown(comp).splitlines()
+    assert lines[0].endswith("| delta_max/delta_c (law's range) |")
+    expected = {"jackson-green": 1.0, "ghaednia": 1.0, "kogut-komvopoulos": 0.3, "brake": 2.0}
+    for law, limit in expected.items():
+        for row in comp.columns[law]:
+            assert row["range_limit"] == pytest.approx(limit, rel=1e-3)
+            assert row["extrapolated"] == 1.0
+        marked = [ln for ln in lines if f"| {law} |" in ln]
+        assert len(marked) == 2 and all(f"> {limit:g}: extrapolated |" in ln for ln in marked)
+    for name in ("dynamic FE", "quasi-static FE 1-DOF", "tabulated"):
+        rows = [ln for ln in lines if f"| {name} |" in ln]
+        assert len(rows) == 2 and not any("extrapolated" in ln or "<=" in ln for ln in rows)
+    assert [ln.split("|")[-2].strip() for ln in lines if "| dynamic FE |" in ln] == ["7.89", "57.2"]
+
+
+def test_hertz_on_the_elastic_case_has_no_range(comparison):
+    """Bodies kept elastic: Hertz holds at any interference, no range applies (the engine,
+    which does not know the bodies cannot yield, flags it past the pair's 1 delta_c)."""
+    for row in comparison.columns["hertz"]:
+        assert math.isnan(row["range_limit"]) and row["extrapolated"] == 0.0
+    assert "extrapolated" not in comparison_markdown(comparison)
+
+
+def test_range_cell_within_and_past_the_range():
+    row = {"max_interference": 0.5e-6, "range_limit": 2.0, "extrapolated": 0.0}
+    assert _range_cell(row, 0.4e-6) == "1.25 <= 2"
+    assert _range_cell({**row, "extrapolated": 1.0, "range_limit": 1.0}, 0.4e-6) == (
+        "1.25 > 1: extrapolated"
+    )
+    assert _range_cell({"max_interference": math.nan}, 0.4e-6) == "n/a"
+
+
+@pytest.mark.parametrize(
+    ("q", "x", "shown"),
+    [
+        ("residual_depth", 109.3305, "109.3"),
+        ("residual_depth", 1.0104, "1.010"),
+        ("residual_depth", -0.0091, "-0.0091"),
+        ("residual_depth", 0.0, "0.0000"),
+        ("restitution", 1.00031, "1.0003"),
+        ("max_force", 999.81, "999.8"),
+    ],
+)
+def test_cells_show_four_digits(q, x, shown):
+    """Four significant digits (a residual depth at most 4 decimals), e to 4 decimals."""
+    assert _shown(q, x) == shown
 
 
 def test_elastic_plastic_flat_has_every_model():

@@ -156,8 +156,8 @@ def _check_maxima(maxima: list[str], deltas: list[float], radius: str, R: float)
 
 def _case(bm: Material, fm: Material, table: Any, **inputs: Any) -> dict[str, Any]:
     """What was indented, every input (the form of the reference files' ``inputs``:
-    ``fe.curves``): both materials' values, the hardening table's rows (None without one)
-    and ``inputs``."""
+    ``fe.curves``): both materials' values (of one given by values only those given, the rest
+    None), the hardening table's rows (None without one) and ``inputs``."""
     from impactlab.fe.curves import material_record
 
     rows = None
@@ -167,8 +167,8 @@ def _case(bm: Material, fm: Material, table: Any, **inputs: Any) -> dict[str, An
             "true_plastic_strain": [float(r[1]) for r in table],
         }
     return {
-        "sphere_material": material_record(bm),
-        "flat": material_record(fm),
+        "sphere_material": material_record(bm, by_values=bm.name.endswith("(custom)")),
+        "flat": material_record(fm, by_values=fm.name.endswith("(custom)")),
         "flat_hardening": rows,
         **inputs,
     }

@@ -11,6 +11,7 @@ import functools
 import os
 import re
 import shutil
+import signal
 import subprocess
 import time
 from dataclasses import dataclass, field
@@ -167,10 +168,10 @@ def run_ccx(deck: str, workdir: Path, exe: str, timeout: float | None = None) ->
             timeout=timeout,
             check=False,
         )
-        rc, log = proc.returncode, proc.stdout + proc.stderr
+        rc, tail = proc.returncode, _error_lines(proc.stdout + proc.stderr, proc.returncode)
     except subprocess.TimeoutExpired as exc:
         partial = exc.stdout.decode(errors="replace") if isinstance(exc.stdout, bytes) else ""
-        rc, log = -9, f"ccx stopped after the time limit of {timeout} s\n{partial}"
+        rc, tail = -9, f"ccx stopped after the time limit of {timeout} s; {_error_lines(partial)}"
     seconds = time.perf_counter() - t0
     dat = workdir / "job.dat"
     sta = workdir / "job.sta"
@@ -178,16 +179,33 @@ def run_ccx(deck: str, workdir: Path, exe: str, timeout: float | None = None) ->
         dat=dat.read_text() if dat.exists() else "",
         sta=sta.read_text() if sta.exists() else "",
         returncode=rc,
-        log_tail=_error_lines(log),
+        log_tail=tail,
         seconds=seconds,
     )
 
 
-def _error_lines(log: str) -> str:
-    """The ``*ERROR`` messages of a ccx log (the last ones), or its last lines."""
+def exit_text(returncode: int) -> str:
+    """How ccx ended: ``exit status 255``, or ``killed by signal 11 (SIGSEGV)``."""
+    if returncode >= 0:
+        return f"exit status {returncode}"
+    try:
+        name = f" ({signal.Signals(-returncode).name})"
+    except ValueError:
+        name = ""
+    return f"killed by signal {-returncode}{name}"
+
+
+def _error_lines(log: str, returncode: int = 0) -> str:
+    """The ``*ERROR`` messages of a ccx log (the last ones), or its last lines; for a run
+    that ended with a non-zero status, that status first (ccx may crash without an
+    ``*ERROR`` line: ``ccx exit status 255, no *ERROR message; its last output: ...``)."""
     lines = [ln.strip() for ln in log.splitlines() if ln.strip()]
     errors = [i for i, ln in enumerate(lines) if ln.startswith("*ERROR")]
     if errors:
         i = errors[-1]
-        return " ".join(lines[i : i + 3])
-    return " ".join(lines[-3:])
+        text = " ".join(lines[i : i + 3])
+        return text if returncode == 0 else f"ccx {exit_text(returncode)}: {text}"
+    text = " ".join(lines[-3:])
+    if returncode == 0:
+        return text
+    return f"ccx {exit_text(returncode)}, no *ERROR message; its last output: {text or 'none'}"

@@ -116,10 +116,18 @@ def _material(d: dict[str, Any]) -> Material:
     )
 
 
-def material_record(m: Material) -> dict[str, Any]:
-    """A material as JSON-ready values (the inverse of reading it from a data file)."""
+#: What a quasi-static indentation uses of a material (with its name): a material given by
+#: these values alone holds the Material's defaults in the rest (density, Meyer index), which
+#: are not inputs and which the indentation does not use (no inertia; Brake's law only).
+INDENTATION_FIELDS = ("name", "E", "nu", "yield_strength")
+
+
+def material_record(m: Material, *, by_values: bool = False) -> dict[str, Any]:
+    """A material as JSON-ready values (the inverse of reading it from a data file); of a
+    material given by its values alone (``by_values``: :data:`INDENTATION_FIELDS`), the other
+    fields are None (not given)."""
     hb = m.brinell_hardness
-    return {
+    record = {
         "name": m.name,
         "E": m.E,
         "nu": m.nu,
@@ -128,6 +136,9 @@ def material_record(m: Material) -> dict[str, Any]:
         "meyer_index": m.meyer_index,
         "density": m.density,
     }
+    if by_values:
+        record.update({k: None for k in record if k not in INDENTATION_FIELDS})
+    return record
 
 
 def _array(v: Any) -> np.ndarray:

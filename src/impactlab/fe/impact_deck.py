@@ -20,8 +20,9 @@ Procedures. Both integrate implicitly (Newton-iterated) with inertia (``*DENSITY
   alpha = 0 or -0.05; Hilber, Hughes, Taylor 1977, doi:10.1002/eqe.4290050306). The automatic
   temperature-displacement step ran, but with cut-backs to 1e-8 s at every contact increment.
   CalculiX 2.20 stops with "no convergence in incplas" before the first increment whenever
-  plasticity, contact and inertia meet; a CalculiX built from the author's sources after 2.23
-  runs it (docs/fe-dynamic.md).
+  plasticity, contact and inertia meet (``impact_run.check_ccx_release`` refuses such a run
+  on 2.20 and older); a CalculiX built from the author's sources after 2.23 runs it
+  (docs/fe-dynamic.md).
 
 Printed per increment: the contact force of every band (``*CONTACT PRINT``, ``CF``), the
 displacements and velocities of every sphere node and of the flat's surface.

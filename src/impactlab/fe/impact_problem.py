@@ -102,6 +102,13 @@ class ImpactProblem:
         """True when the flat has no plasticity table."""
         return not self.indentation.flat_hardening
 
+    @property
+    def plastic_bodies(self) -> tuple[str, ...]:
+        """The bodies that can yield: ``("flat", "sphere")``, either or none."""
+        p = self.indentation
+        sphere = p.sphere == "elastic-plastic" and bool(p.sphere_hardening)
+        return ("flat",) * (not self.flat_is_elastic) + ("sphere",) * sphere
+
     def estimates(self) -> tuple[float, float]:
         """(largest expected interference [m], expected contact duration [s]): Hertz's for an
         elastic flat, else the larger of Hertz's and the fully plastic estimate."""

@@ -10,6 +10,7 @@ from __future__ import annotations
 import json
 import math
 import os
+import re
 import tempfile
 import warnings
 from collections.abc import Callable
@@ -41,6 +42,30 @@ from impactlab.materials import Material
 
 #: delta_p and the rebound speed are means over the last FINAL_POINTS increments.
 FINAL_POINTS = 5
+#: The newest CalculiX release known to stop before the first increment whenever plasticity,
+#: contact and inertia meet (``impact_deck``): an impact with a body that can yield needs a
+#: newer one.
+LAST_FAILING_CCX = (2, 20)
+#: Where the docs say which CalculiX runs it and how to build one.
+CCX_DOCS = "docs/fe-dynamic.md#the-elastic-plastic-flat-procedure-and-calculix-versions"
+#: How the user sets each body plastic (for the message that refuses it).
+_PLASTIC_INPUT = {"flat": "flat_hardening not 'elastic'", "sphere": "sphere='elastic-plastic'"}
+
+
+def check_ccx_release(version: str, exe: str, problems: list[ImpactProblem]) -> None:
+    """RuntimeError (one line) when a body can yield in ``problems`` and ccx's ``version``
+    (``ccx_version``) is LAST_FAILING_CCX or older; an unreadable version passes."""
+    m = re.match(r"(\d+)\.(\d+)", version)
+    plastic = next((p.plastic_bodies for p in problems if p.plastic_bodies), ())
+    if not plastic or m is None or (int(m.group(1)), int(m.group(2))) > LAST_FAILING_CCX:
+        return
+    which = " and ".join(f"the {b} ({_PLASTIC_INPUT[b]})" for b in plastic)
+    raise RuntimeError(
+        f"CalculiX {version} ({exe}) cannot run an impact in which {which} can yield (it "
+        f"stops before the first increment): a CalculiX newer than 2.20 is needed, set through "
+        f"IMPACTLAB_CCX=/path/to/ccx ({CCX_DOCS}); or keep both bodies elastic "
+        f"(sphere='elastic', flat_hardening='elastic')"
+    )
 
 
 def deck_spec(problem: ImpactProblem, mesh: Mesh) -> ImpactDeckSpec:
@@ -244,10 +269,12 @@ def impact(
     time_level: 1-3 (60, 120, 240 increments per estimated contact duration); workers,
     cache_dir, use_cache, keep_files, progress: as for ``indent``.
 
-    Returns one :class:`ImpactResult` per speed, in the order given; a run ccx could not
-    finish, or in which the sphere did not leave the flat, comes with a
-    ``NotConvergedWarning`` (also one that ccx stopped at separation, whose rebound speed and
-    dent are read at its last increment: ``ImpactResult.stopped_at_separation``).
+    RuntimeError before any run when a body can yield and ccx is CalculiX 2.20 or older
+    (:func:`check_ccx_release`). Returns one :class:`ImpactResult` per speed, in the order
+    given; a run ccx could not finish (its message names ccx's exit status), or in which the
+    sphere did not leave the flat, comes with a ``NotConvergedWarning`` (also one that ccx
+    stopped at separation, whose rebound speed and dent are read at its last increment:
+    ``ImpactResult.stopped_at_separation``).
     """
     sphere_material = flat if sphere_material is None else sphere_material
     problems = [
@@ -269,6 +296,7 @@ def impact(
         raise ValueError(f"workers must be a positive integer, got {workers!r}")
     exe = find_ccx()
     version = ccx_version(exe)
+    check_ccx_release(version, exe, problems)
     directory = Path(cache_dir) if cache_dir is not None else cache.default_cache_dir()
     keys = [cache.cache_key(p.key_data(), version) for p in problems]
     results: list[ImpactResult | None] = [load(directory, k) if use_cache else None for k in keys]

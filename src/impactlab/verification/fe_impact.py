@@ -4,7 +4,11 @@ Reads the shipped tables (``impactlab.fe.impact_reference``: dynamic FE and the 
 on the quasi-static FE curves of the same bodies, without running CalculiX) and adds one
 column per contact law, simulated by impactlab's engine for the same sphere (radius, mass,
 speed; frictionless, no gravity). A new law becomes a column with one call:
-``add_law(comparison, "tabulated")``.
+``add_law(comparison, "tabulated")``, if it shares the case's materials: an elastic-plastic
+law only where a body can yield, an elastic one (Hertz) only where both are kept elastic.
+Each row also gives delta_max / delta_c and, for a law, the upper end of its range for the
+pair (verified against the FE indentations, ``impactlab.contact.ranges``), marked where the
+impact went past it.
 """
 
 from __future__ import annotations
@@ -14,10 +18,20 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from impactlab.bodies import Sphere
+from impactlab.contact import law_names
 from impactlab.dynamics import simulate
-from impactlab.fe.impact_reference import IMPACT_CASES, RADIUS, load_impact_table
+from impactlab.fe.impact_reference import IMPACT_CASES, RADIUS, ImpactCase, load_impact_table
+from impactlab.fe.problem import critical_interference
+from impactlab.materials import ContactPair
 
-__all__ = ["ImpactComparison", "add_law", "compare_impacts", "comparison_markdown", "law_row"]
+__all__ = [
+    "ImpactComparison",
+    "add_law",
+    "check_law",
+    "compare_impacts",
+    "comparison_markdown",
+    "law_row",
+]
 
 #: The quantities compared, with their labels and units.
 QUANTITIES: tuple[tuple[str, str], ...] = (
@@ -28,9 +42,13 @@ QUANTITIES: tuple[tuple[str, str], ...] = (
     ("contact_duration", "T [us]"),
 )
 _SCALE = {"residual_depth": 1e6, "max_interference": 1e6, "contact_duration": 1e6}
-#: Fixed decimals of the quantities near a bound (e near 1, a residual depth near 0), whose
-#: deviation 4 significant digits would round away (1.0003 shown as 1); the others: 4 digits.
-_DECIMALS = {"restitution": 4, "residual_depth": 4}
+#: Fixed decimals of e, whose deviation from 1 four significant digits would round away
+#: (1.0003 shown as 1); a residual depth: 4 significant digits, at most 4 decimals (its
+#: deviation from 0: -0.0091 um); the others: 4 significant digits.
+_DECIMALS = {"restitution": 4}
+_NEAR_ZERO = ("residual_depth",)
+#: The last column: delta_max / delta_c, and a law's range in delta_c.
+RANGE_LABEL = "delta_max/delta_c (law's range)"
 
 #: The elastic-plastic laws.
 PLASTIC_LAWS: tuple[str, ...] = (
@@ -40,6 +58,9 @@ PLASTIC_LAWS: tuple[str, ...] = (
     "brake",
     "thornton",
 )
+#: The elastic laws (no yield, no permanent dent); every other law is elastic-plastic (a
+#: registered law is the tabulated law on its own indentation data).
+ELASTIC_LAWS: tuple[str, ...] = ("hertz",)
 #: The laws compared by default: Hertz for the elastic case, the elastic-plastic laws for the
 #: elastic-plastic flat.
 DEFAULT_LAWS: dict[str, tuple[str, ...]] = {
@@ -58,11 +79,48 @@ class ImpactComparison:
     speeds: list[float]
     mass: float
     columns: dict[str, list[dict[str, float]]] = field(default_factory=dict)
+    delta_c: float = math.nan  # the pair's critical interference [m]
+
+
+def _yields(c: ImpactCase) -> bool:
+    """True when a body of the case can yield (not both kept elastic)."""
+    return not (c.sphere == "elastic" and c.flat_hardening == "elastic")
+
+
+def check_law(case: str, law: str) -> None:
+    """ValueError (one line) unless ``law`` is a registered law whose materials the case
+    shares: elastic-plastic where a body can yield, elastic where both are kept elastic."""
+    if case not in IMPACT_CASES:
+        raise ValueError(f"case must be one of {', '.join(IMPACT_CASES)}, got {case!r}")
+    known = law_names()
+    if law not in known:
+        raise ValueError(f"law must be a registered contact law ({', '.join(known)}), got {law!r}")
+    yields, plastic_law = _yields(IMPACT_CASES[case]), law not in ELASTIC_LAWS
+    if plastic_law == yields:
+        return
+    fitting = " or ".join(n for n, c in IMPACT_CASES.items() if _yields(c) == plastic_law)
+    if yields:
+        raise ValueError(
+            f"law {law!r} is elastic but case {case!r} has bodies that yield: compare it on "
+            f"{fitting}, or use an elastic-plastic law here "
+            f"({', '.join(n for n in known if n not in ELASTIC_LAWS)})"
+        )
+    raise ValueError(
+        f"law {law!r} is elastic-plastic but case {case!r} keeps both bodies elastic (nothing "
+        f"can yield): compare it on {fitting}, or use an elastic law here "
+        f"({', '.join(ELASTIC_LAWS)})"
+    )
 
 
 def law_row(case: str, law: str, speed: float, mass: float) -> dict[str, float]:
     """e, delta_p, delta_max, F_max and the duration of ``law``'s impact for the case's
-    sphere and flat at ``speed`` [m/s] (frictionless, no gravity; SI units)."""
+    sphere and flat at ``speed`` [m/s] (frictionless, no gravity; SI units), with
+    ``range_limit``, the upper end of the law's range for the pair in delta_c (verified
+    against FE, else its stand-in; inf: none, as the tabulated law's, refused beyond its data;
+    nan where both bodies are kept elastic: Hertz holds at any interference there) and
+    ``extrapolated`` (1.0 where delta_max passed it, the engine's LAW_EXTRAPOLATED, else 0.0).
+    ValueError for a law the case's materials do not fit (:func:`check_law`)."""
+    check_law(case, law)
     c = IMPACT_CASES[case]
     body = Sphere(RADIUS, mass=mass, material=c.sphere_material)
     r = simulate(
@@ -75,12 +133,20 @@ def law_row(case: str, law: str, speed: float, mass: float) -> dict[str, float]:
         gravity=False,
         history=False,
     )
+    limit, extrapolated = math.nan, False
+    if _yields(c):  # the law's own reference interference, then in the pair's delta_c
+        delta_c = critical_interference(ContactPair(c.sphere_material, c.flat), RADIUS)
+        delta_ref = float(r.delta_max) / float(r.max_delta_ratio)
+        limit = float(r.fitted_delta_ratio_max) * delta_ref / delta_c
+        extrapolated = bool(r.extrapolated)
     return {
         "restitution": float(r.e),
         "residual_depth": float(r.delta_p),
         "max_interference": float(r.delta_max),
         "max_force": float(r.max_force),
         "contact_duration": float(r.duration),
+        "range_limit": limit,
+        "extrapolated": float(extrapolated),
     }
 
 
@@ -93,7 +159,9 @@ def _fe_column(rows: list[dict[str, Any]], key: str) -> list[dict[str, float]]:
 
 
 def add_law(comparison: ImpactComparison, law: str) -> ImpactComparison:
-    """Add the column of a registered contact law (``impactlab.contact.law_names()``)."""
+    """Add the column of a registered contact law (``impactlab.contact.law_names()``) whose
+    materials the case shares; ValueError (one line) otherwise (:func:`check_law`)."""
+    check_law(comparison.case, law)
     comparison.columns[law] = [
         law_row(comparison.case, law, v, comparison.mass) for v in comparison.speeds
     ]
@@ -105,7 +173,10 @@ def compare_impacts(case: str, laws: tuple[str, ...] | None = None) -> ImpactCom
     table = load_impact_table(case)
     rows = table["rows"]
     comp = ImpactComparison(
-        case=case, speeds=[float(r["speed"]) for r in rows], mass=float(rows[0]["mass"])
+        case=case,
+        speeds=[float(r["speed"]) for r in rows],
+        mass=float(rows[0]["mass"]),
+        delta_c=float(table["delta_c"]),
     )
     comp.columns["dynamic FE"] = _fe_column(rows, "dynamic")
     comp.columns["quasi-static FE 1-DOF"] = _fe_column(rows, "quasi_static")
@@ -114,19 +185,44 @@ def compare_impacts(case: str, laws: tuple[str, ...] | None = None) -> ImpactCom
     return comp
 
 
+def _shown(q: str, x: float) -> str:
+    """One quantity's cell (``x`` in the table's unit)."""
+    if not math.isfinite(x):
+        return "n/a"
+    if q in _DECIMALS:
+        return f"{x:.{_DECIMALS[q]}f}"
+    if q in _NEAR_ZERO:
+        digits = 3 - math.floor(math.log10(abs(x))) if x != 0.0 else 4
+        return f"{x:.{min(4, max(0, digits))}f}"
+    return f"{x:.4g}"
+
+
+def _range_cell(row: dict[str, float], delta_c: float) -> str:
+    """``7.98 > 1: extrapolated``, ``0.8 <= 1``, or delta_max / delta_c alone (the FE rows, a
+    law without a range, an elastic case)."""
+    ratio = row["max_interference"] / delta_c
+    if not math.isfinite(ratio):
+        return "n/a"
+    limit = row.get("range_limit", math.nan)
+    if not math.isfinite(limit):
+        return f"{ratio:.3g}"
+    if row.get("extrapolated", 0.0):
+        return f"{ratio:.3g} > {limit:.3g}: extrapolated"
+    return f"{ratio:.3g} <= {limit:.3g}"
+
+
 def comparison_markdown(comp: ImpactComparison) -> str:
-    """The comparison as a Markdown table: one row per speed and column."""
-    head = "| v [m/s] | model | " + " | ".join(label for _, label in QUANTITIES) + " |\n"
-    head += "| --- | --- |" + " --- |" * len(QUANTITIES) + "\n"
+    """The comparison as a Markdown table: one row per speed and column; the last column is
+    delta_max / delta_c and, for a law on a case where a body yields, the upper end of the
+    law's range for the pair (``> ...: extrapolated`` where the impact went past it)."""
+    labels = [label for _, label in QUANTITIES] + [RANGE_LABEL]
+    head = "| v [m/s] | model | " + " | ".join(labels) + " |\n"
+    head += "| --- | --- |" + " --- |" * len(labels) + "\n"
     lines = []
     for i, v in enumerate(comp.speeds):
         for name, col in comp.columns.items():
-            vals = []
-            for q, _ in QUANTITIES:
-                x = col[i][q] * _SCALE.get(q, 1.0)
-                places = _DECIMALS.get(q)
-                shown = f"{x:.{places}f}" if places is not None else f"{x:.4g}"
-                vals.append("n/a" if not math.isfinite(x) else shown)
+            vals = [_shown(q, col[i][q] * _SCALE.get(q, 1.0)) for q, _ in QUANTITIES]
+            vals.append(_range_cell(col[i], comp.delta_c))
             lines.append(f"| {v:g} | {name} | " + " | ".join(vals) + " |")
     return head + "\n".join(lines) + "\n"
 
