@@ -130,7 +130,7 @@ def test_friction_model_is_chosen(monkeypatch, capsys):
         (("--angle", "20", "--vy", "-1.41"), "has no unit"),
         ((*PAPER_20, "--rate", "fast"), "--rate must be one of"),
         ((*PAPER_20, "--rigid", "--damping", "0.1"), "a rigid rod has no modes"),
-        ((*PAPER_20, "--damping", "1.5"), "damping"),
+        ((*PAPER_20, "--damping", "1.5"), "--damping must lie in [0.0, 1.0), got 1.5"),
         ((*PAPER_20, "--modes-bending", "-1"), "--modes-bending must be an integer >= 0"),
         ((*PAPER_20, "--law", "nope"), "nope"),
         (("--angle", "20 deg", "--vy", "1.41 m/s"), "does not approach"),

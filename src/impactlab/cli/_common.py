@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 import tomllib
 from collections.abc import Callable, Iterable, Mapping
 from pathlib import Path
@@ -17,8 +18,9 @@ from rich.text import Text
 from impactlab._display import field_rows
 from impactlab._json import to_json
 from impactlab._validation import read_text_file
-from impactlab.contact.rate import RATE_LAWS
+from impactlab.contact.rate import RATE_LAWS, RateLaw
 from impactlab.dynamics.kernels.inputs import angle_allowed, incidence_allowed
+from impactlab.materials import Material
 from impactlab.schema import FIELDS
 from impactlab.units import angle_to_rad, to_si
 
@@ -30,13 +32,97 @@ class UserError(ValueError):
 #: ``--rate`` values of the drop ("none": a rate-independent flat).
 RATE_CHOICES = ("none", *RATE_LAWS)
 
+#: Each rate law's form and the SI unit of its constants ("1": a pure number).
+RATE_CONSTANTS = {
+    "cowper-symonds": ("1 + (eps_dot/D)^(1/q)", {"D": "1/s", "q": "1"}),
+    "johnson-cook": ("1 + C ln(eps_dot/rate0)", {"C": "1", "rate0": "1/s"}),
+}
+#: A rate law with one's own constants, as ``--rate`` takes it.
+RATE_EXAMPLE = "cowper-symonds(D=6500 1/s, q=4)"
+#: The sources of the library's rate laws, short (``impactlab.contact.rate``).
+_RATE_SOURCES = {
+    "cowper-symonds-1957": "Cowper & Symonds 1957",
+    "jones-1989": "constants as quoted by Jones, Structural Impact 1989",
+    "johnson-cook-1983": "Johnson & Cook 1983",
+}
 
-def rate_name(rate: str, name: str = "--rate") -> str | None:
-    """The rate law of ``--rate`` (None for "none"); UserError listing the choices."""
-    key = rate.strip().lower()
-    if key not in RATE_CHOICES:
-        raise UserError(f"{name} must be one of {', '.join(RATE_CHOICES)}, got {rate!r}")
-    return None if key == "none" else key
+
+def _constants(name: str, law: RateLaw | None = None) -> str:
+    """``D = 40.4 1/s, q = 5`` (``law``'s constants) or ``D=... 1/s, q=...`` (a template)."""
+    values = {} if law is None else dict(law.parameters)
+    return ", ".join(
+        (f"{k}=..." if law is None else f"{k} = {values[k]:g}") + ("" if u == "1" else f" {u}")
+        for k, u in RATE_CONSTANTS[name][1].items()
+    )
+
+
+def rate_help() -> str:
+    """The help of ``--rate``: each library law's form, constants (with units), what they were
+    fitted for and their sources, and how to give one's own constants."""
+    laws = "; ".join(
+        f"{n}: k = {RATE_CONSTANTS[n][0]}, {_constants(n, law)} ({law.description.split(':')[0]}"
+        f"; {', '.join(_RATE_SOURCES.get(k, k) for k in law.reference_keys)})"
+        for n, law in RATE_LAWS.items()
+    )
+    own = " or ".join(f'"{n}({_constants(n)})"' for n in RATE_LAWS)
+    fitted = {law.fitted_for.name for law in RATE_LAWS.values() if law.fitted_for is not None}
+    return (
+        "Rate-dependent flat, its yield strength times k(eps_dot), eps_dot its strain rate "
+        f"(default none): {laws}; fitted for {' and '.join(sorted(fitted))} (another flat is "
+        f"refused). A flat's own constants: {own} (a bare number is in the unit shown), e.g. "
+        f'"{RATE_EXAMPLE}"; the form a result prints reads back.'
+    )
+
+
+def rate_name(rate: str, name: str = "--rate") -> str | RateLaw | None:
+    """The rate law of ``--rate``: None for "none", a library law's name, or a law with one's
+    own constants, ``"cowper-symonds(D=6500 1/s, q=4)"`` (or as a result prints it,
+    ``"cowper-symonds (D = 6500 1/s, q = 4)"``); UserError naming ``name``."""
+    match = re.fullmatch(r"\s*([a-z_-]+)\s*(?:\((.*)\))?\s*", rate, re.DOTALL | re.IGNORECASE)
+    key = match.group(1).lower() if match else ""
+    if match is None or key not in RATE_CHOICES or (key == "none" and match.group(2) is not None):
+        raise UserError(
+            f"{name} must be one of {', '.join(RATE_CHOICES)}, or a law with its constants "
+            f'such as "{RATE_EXAMPLE}", got {rate!r}'
+        )
+    if key == "none" or match.group(2) is None:
+        return None if key == "none" else key
+    units, values = RATE_CONSTANTS[key][1], {}
+    takes = (
+        f"{name} {rate.strip()!r}: {key} takes {', '.join(f'{k} [{u}]' for k, u in units.items())}"
+    )
+    for item in match.group(2).split(","):
+        given, eq, text = (part.strip() for part in item.partition("="))
+        known = {k.lower(): k for k in units}.get(given.lower())
+        if not eq or not text or known is None or known in values:
+            raise UserError(
+                f"{takes}, got {item.strip()!r}" + (" twice" if known in values else "")
+            )
+        text = re.sub(r"(\S)\s+1\s*/", r"\1 /", text)  # "6500 1/s", as a result prints it
+        try:
+            values[known] = to_si(text, units[known], name=f"{name} {known}")
+        except ValueError as exc:  # "--rate D: '6500 m' has the wrong dimension"
+            raise UserError(str(exc)) from None
+    if set(values) != set(units):
+        raise UserError(f"{takes}, missing {', '.join(k for k in units if k not in values)}")
+    try:
+        return RateLaw.custom(key, "", **values)
+    except ValueError as exc:  # "D must be > 0 1/s, got ..."
+        raise UserError(f"{name} {exc}") from None
+
+
+def check_rate_flat(rate: str | RateLaw | None, flat: Material, name: str = "--rate") -> None:
+    """UserError when the library rate law ``rate`` (``name``: how the user gave it) was not
+    fitted for ``flat``'s material (``contact.rate.check_rate_flat``; a law with one's own
+    constants is not checked), saying how to give the flat's own constants with ``--rate``."""
+    law = RATE_LAWS.get(rate) if isinstance(rate, str) else None
+    why = None if law is None or law.fitted_for is None else law.fitted_for.mismatch(flat)
+    if law is not None and law.fitted_for is not None and why is not None:
+        raise UserError(
+            f"{name} {law.name}: its constants are fitted for {law.fitted_for.name}, but the flat "
+            f"{flat.name!r} has {why}; give the flat's own constants, --rate "
+            f'"{law.name}({_constants(law.name)})" (e.g. "{RATE_EXAMPLE}"; --help lists them)'
+        )
 
 
 class _CurrentConsole:

@@ -23,21 +23,22 @@ from impactlab._display import display_unit, field_row
 from impactlab.bodies import PAPER_ROD
 from impactlab.cli._common import (
     KINEMATIC_HELP,
-    RATE_CHOICES,
     SI_UNITS,
     STOP_HELP,
     UserError,
     angle_quantity,
+    check_rate_flat,
     emit,
     length_help,
     positive,
     quantity,
+    rate_help,
     rate_name,
     velocity_input,
 )
 from impactlab.cli.drop_body import MODES_HELP, drop_body
 from impactlab.cli.simulate_from import option_error, run_from
-from impactlab.dynamics.drop import DEFAULT_T_MAX, simulate_drop
+from impactlab.dynamics.drop import DEFAULT_T_MAX, ELASTIC_LAWS, simulate_drop
 from impactlab.dynamics.drop_result import UNITS, DropResult
 from impactlab.friction import DEFAULT_MU
 from impactlab.materials import AISI_1010, Material, get_material
@@ -174,9 +175,7 @@ def drop_cmd(
         help="Friction model: impulse_ratio, coulomb (default), mindlin or partial_slip.",
     ),
     law: str = typer.Option("ghaednia", "--law", help="Contact law (default ghaednia)."),
-    rate: str = typer.Option(
-        "none", "--rate", help=f"Rate-dependent flat: {', '.join(RATE_CHOICES)} (default none)."
-    ),
+    rate: str = typer.Option("none", "--rate", help=rate_help()),
     rigid: bool = typer.Option(False, "--rigid", help="The rigid rod (no modes) instead."),
     inertia: str = typer.Option(
         None,
@@ -230,6 +229,10 @@ def drop_cmd(
       impactlab drop --angle "45 deg" --vy "-2.18 m/s" --mu 0.13 --rate cowper-symonds
 
     \b
+      impactlab drop --angle "20 deg" --vy "-1.41 m/s" --mu 0.2 --flat al-6061-t6 \\
+        --rate "cowper-symonds(D=6500 1/s, q=4)"
+
+    \b
       impactlab drop --angle "70 deg" --vy "-3.45 m/s" --mu 0.1 --rigid --json
 
     \b
@@ -259,10 +262,17 @@ def drop_cmd(
     modes = {"modes_axial": modes_axial, "modes_bending": modes_bending, "damping": damping}
     rod_material = _material(material, PAPER_ROD.material, "--material")
     body = drop_body(rigid, modes, sizes, rod_material, positive(inertia, "kg*m^2", "--inertia"))
+    flat_material, rate_law = _material(flat, AISI_1010, "--flat"), rate_name(rate)
+    check_rate_flat(rate_law, flat_material)  # the command line's way to other constants
+    if rate_law is not None and law.strip().lower() in ELASTIC_LAWS:
+        raise UserError(
+            f"--rate {rate.strip()}: --law {law} is elastic (no yield strength for the rate to "
+            "raise); leave out --rate, or give an elastic-plastic --law"
+        )
     try:
         result = simulate_drop(
             body,
-            _material(flat, AISI_1010, "--flat"),
+            flat_material,
             law=law,
             friction=friction,
             mu=mu,
@@ -270,7 +280,7 @@ def drop_cmd(
             velocity=velocity,
             spin=quantity(spin, "rad/s", "--spin") or 0.0,
             gravity=not no_gravity,
-            rate=rate_name(rate),
+            rate=rate_law,
             history=False,
             stop="sequence" if stop is None else stop,
             rtol=rtol,

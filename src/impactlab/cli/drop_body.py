@@ -68,16 +68,21 @@ def flexible_rod(
     n_axial = _count(values.get("modes_axial"), name("modes_axial"))
     n_bending = _count(values.get("modes_bending"), name("modes_bending"))
     damping = _ratio(values.get("damping"), name("damping"))
-    return FlexibleRod(
-        length=cast(float, sizes["length"]),
-        tip_radius=cast(float, sizes["tip_radius"]),
-        mass=sizes.get("mass"),
-        diameter=sizes.get("diameter"),
-        material=material,
-        n_axial=n_axial,
-        n_bending=n_bending,
-        damping=damping,
-    )
+    try:
+        return FlexibleRod(
+            length=cast(float, sizes["length"]),
+            tip_radius=cast(float, sizes["tip_radius"]),
+            mass=sizes.get("mass"),
+            diameter=sizes.get("diameter"),
+            material=material,
+            n_axial=n_axial,
+            n_bending=n_bending,
+            damping=damping,
+        )
+    except ValueError as exc:  # "damping must lie in [0.0, 1.0)": the option's spelling
+        option = {"tip_radius": "radius", "n_axial": "modes_axial", "n_bending": "modes_bending"}
+        keys = ("length", "mass", "diameter", "damping", *option)
+        raise UserError(as_option(str(exc), keys, lambda k: name(option.get(k, k)))) from None
 
 
 def drop_body(

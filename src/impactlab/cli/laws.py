@@ -22,7 +22,7 @@ from rich.text import Text
 
 from impactlab._display import field_row
 from impactlab._json import quantity as quantity_json
-from impactlab.cli._common import console, emit, quantity
+from impactlab.cli._common import console, emit, positive
 from impactlab.cli.laws_accuracy import print_accuracy
 from impactlab.contact import get_law, law_names
 from impactlab.contact.base import ContactLaw
@@ -131,10 +131,12 @@ def laws(
         help="Tip radius for the example numbers of one law, e.g. '5 mm' (bare number: m).",
     ),
     body: str = typer.Option(
-        _EXAMPLE_PAIR["--body"],
+        None,
         "--body",
-        "--material",
-        help="Body material: library name or properties (--material too, as in simulate).",
+        help="Body material: library name or properties (default aisi-201).",
+    ),
+    material: str = typer.Option(
+        None, "--material", help="The body material, as --body (the name simulate gives it)."
     ),
     flat: str = typer.Option(
         _EXAMPLE_PAIR["--flat"], "--flat", help="Flat material: library name or properties."
@@ -152,8 +154,16 @@ def laws(
     Example: impactlab laws jackson-green --radius "8.8 mm" --json
     """
     try:
-        chosen = {"--radius": radius, "--body": body, "--flat": flat}
-        given = [o for o, v in chosen.items() if v != _EXAMPLE_PAIR[o]]
+        if body is not None and material is not None:
+            raise ValueError(
+                "--body and --material both given: they name the body's material; give one"
+            )
+        body_option = "--body" if material is None else "--material"
+        body_default = _EXAMPLE_PAIR["--body"]
+        chosen = {"--radius": radius, body_option: material or body, "--flat": flat}
+        given = [
+            o for o, v in chosen.items() if v not in (None, _EXAMPLE_PAIR.get(o, body_default))
+        ]
         if given and name is None and not accuracy:  # they set one law's example numbers
             raise ValueError(
                 f"{', '.join(given)} without a law: they set the example numbers of one law "
@@ -168,7 +178,8 @@ def laws(
                 )
             print_accuracy(name, as_json)
             return
-        _laws(name, radius, body, flat, as_json)
+        body = material or body or _EXAMPLE_PAIR["--body"]
+        _laws(name, radius, body, flat, as_json, body_option)
     except ValueError as exc:  # one line, no traceback, whichever entry point runs us
         print(f"error: {exc}", file=sys.stderr)
         raise typer.Exit(2) from None
@@ -224,7 +235,11 @@ def _law_blocks(width: int) -> None:
     console.print(Text("Details of one law: impactlab laws NAME (see docs/laws/)."))
 
 
-def _laws(name: str | None, radius: str, body: str, flat: str, as_json: bool) -> None:
+def _laws(
+    name: str | None, radius: str, body: str, flat: str, as_json: bool, body_option: str
+) -> None:
+    """The list of the laws (``name`` None) or one law with its numbers for ``body`` (given
+    by the option ``body_option``) on ``flat``."""
     if name is None:
         data = {n: _described(get_law(n)) for n in law_names()}
         if as_json:
@@ -246,9 +261,9 @@ def _laws(name: str | None, radius: str, body: str, flat: str, as_json: bool) ->
         console.print("Details of one law: impactlab laws NAME (see docs/laws/).")
         return
     law = get_law(name)
-    R = quantity(radius, "m", "radius")
+    R = positive(radius, "m", "--radius")
     assert R is not None
-    pair = ContactPair(get_material(body, "--body"), get_material(flat, "--flat"))
+    pair = ContactPair(get_material(body, body_option), get_material(flat, "--flat"))
     info = _described(law)
     info["example"] = {"body": body, "flat": flat, **_numbers(law, pair, R)}
     if as_json:

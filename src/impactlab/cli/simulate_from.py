@@ -23,6 +23,7 @@ from impactlab.cli._common import (
     UserError,
     angle_quantity,
     as_option,
+    check_rate_flat,
     positive,
     quantity,
     rate_name,
@@ -263,6 +264,9 @@ def run_from(
     changes = from_changes(given or {}, function, recorded)
     if function == SIMULATE_DROP or flexible:
         changes.setdefault("history", False)  # a drop: the command prints no history
+        rate = changes.get("rate", recorded.get("rate"))
+        blame = "--rate" if "rate" in changes else "the recorded rate"
+        check_rate_flat(rate, changes.get("flat", recorded["flat"]), blame)
     try:
         return rerun(record, **changes)
     except ValueError as exc:  # the keyword it names (t_max) as the command's option

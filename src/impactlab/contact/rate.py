@@ -23,10 +23,10 @@ Rate laws and their parameters for low-carbon steel:
   eps_dot_0 = 1 1/s, for 1006 steel (a low-carbon steel close to the flat's AISI 1010).
   G. R. Johnson, W. H. Cook, A constitutive model and data for metals subjected to large
   strains, high strain rates and high temperatures, Proc. 7th Int. Symp. on Ballistics, The
-  Hague (1983), pp. 541-547 (pages as commonly cited). Their 1006-steel constants (A = 350 MPa,
-  B = 275 MPa, n = 0.36, C = 0.022, m = 1.00) were confirmed against a secondary source that
-  reproduces their table; the table number is not confirmed, so none is cited. A lower
-  estimate: the constants are fitted to large-strain flow stress.
+  Hague (1983), pp. 541-547 (pages as commonly cited, not confirmed). Their 1006-steel
+  constants (A = 350 MPa, B = 275 MPa, n = 0.36, C = 0.022, m = 1.00) were confirmed against a
+  secondary source that reproduces their table; the table number is not confirmed, so none is
+  cited. A lower estimate: the constants are fitted to large-strain flow stress.
 
 The strain-rate estimate of the contact: Tabor's representative strain of a spherical
 indentation, eps_r = 0.2 a / R (D. Tabor, The Hardness of Metals, Clarendon Press, Oxford
