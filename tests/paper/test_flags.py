@@ -19,7 +19,7 @@ from impactlab.paper.quantities import (
     flag_names,
     sim_value,
 )
-from impactlab.paper.report_sections import _extrapolation_note, _marked
+from impactlab.paper.report_simulated import _extrapolation_note, _marked
 from impactlab.paper.simulations import run_simulations, simulation_table
 
 

@@ -4,15 +4,14 @@ from __future__ import annotations
 
 import typer
 
-from impactlab._display import format_number
-
 
 def reproduce_cmd(
     out: str = typer.Option(
         "reproduction",
         "--out",
         help="Folder to write into (created; "
-        "a non-empty folder must come from a previous reproduction).",
+        "a non-empty folder must come from a previous reproduction, whose files this run "
+        "does not write are removed).",
     ),
     no_simulate: bool = typer.Option(
         False, "--no-simulate", help="Skip the simulations (analytic part only)."
@@ -23,17 +22,13 @@ def reproduce_cmd(
 
     Example: impactlab reproduce --out reproduction
     """
-    from impactlab.experiment.checks import output_folder  # lazy: a fast CLI start
-    from impactlab.paper.quantities import duration_checks, extrapolation_line
-    from impactlab.paper.reproduction import reproduce
+    from impactlab.paper.quantities import duration_checks, extrapolation_line  # lazy: fast start
+    from impactlab.paper.reproduction import prepare_output, reproduce
 
-    res = reproduce(output_folder(out, "--out"), simulate=not no_simulate)
+    # the folder checked (and refused) under the option's name, before any computation
+    res = reproduce(prepare_output(out, "--out"), simulate=not no_simulate)
     for c in duration_checks(res.experimental):
-        typer.echo(
-            f"{c.angle_deg} deg: T = {format_number(c.T_ms)} ms (published "
-            f"{format_number(c.published_ms)} ms, "
-            f"{c.rel_diff:+.1%}) {'ok' if c.ok else 'OFF'}"
-        )
+        typer.echo(c.text())
     bad = res.comparison[res.comparison["reproduced"] == False]  # noqa: E712
     n_bad = len(bad.drop_duplicates(["source", "angle [deg]", "model", "quantity"]))
     typer.echo(
@@ -46,8 +41,7 @@ def reproduce_cmd(
         typer.echo("simulations skipped (--no-simulate): analytic part only")
     typer.echo(
         f"report: {res.report_md} and {res.report_html} (reproduced in "
-        f"{format_number(res.elapsed_s)} s after the imports; a first run's includes compiling "
-        "the engine)"
+        f"{res.elapsed_s:.1f} s after the imports; a first run's includes compiling the engine)"
     )
 
 

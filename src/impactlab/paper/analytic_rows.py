@@ -1,6 +1,6 @@
 """The analytic part of the reproduction (no simulation): the experimental rows by the paper's
-inversion (Eqs. 12 and 29), their sensitivity to the rod's unknown inertia, and the
-self-consistency of the published simulated rows.
+inversion (Eqs. 12 and 29), their sensitivity to the rod's unknown inertia and to the reading of
+its length, and the self-consistency of the published simulated rows.
 """
 
 from __future__ import annotations
@@ -18,6 +18,9 @@ from impactlab.paper.quantities import EQ12_REL, rel_diff, scaled
 
 #: I_C / (m L^2) values for the inertia sensitivity.
 INERTIA_RATIOS: tuple[float, ...] = (0.05, 1 / 15, 1 / 12, 0.1, 0.12, 0.15)
+
+#: The outcomes of the rigid-body bound over the printed rounding (``published_consistency``).
+WITHIN, WITHIN_ROUNDING, EXCEEDS = "within", "within rounding", "exceeds"
 
 
 def invert_case(x: D.Experiment, **kw: Any) -> an.InversionResult:
@@ -78,6 +81,36 @@ def experimental_rows(rod: Any = None) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
+def length_readings() -> pd.DataFrame:
+    """T of the 20 and 45 deg experiments (paper method) under three readings of Table 1's
+    L = 0.3048 m: impactlab's (Eq. 1's L between the tip centres, with I_C = m L^2/12 of a
+    slender rod of length L: two readings mixed, the acceptance checks' reading), and the two
+    self-consistent ones (L the overall length, tip centres at L/2 - R from the centre of mass;
+    L between the centres, I_C of the whole rod of length L + 2R). Display units (mm, ms)."""
+    m, L, R = D.PAPER_ROD.mass, D.PAPER_ROD.length, D.PAPER_ROD.tip_radius
+    readings = (
+        ("L between the tip centres, I_C = m L^2/12 (used: the two mixed)", L, L, False),
+        ("L the overall length (tip centres L/2 - R from C, I_C = m L^2/12)", L - 2 * R, L, True),
+        ("L between the tip centres (I_C = m (L + 2R)^2/12 of the whole rod)", L, L + 2 * R, True),
+    )
+    rows = []
+    for name, between, inertia_length, consistent in readings:
+        rod = Rod(length=between, tip_radius=R, mass=m, inertia=m * inertia_length**2 / 12)
+        row: dict[str, Any] = {
+            "reading": name,
+            "self-consistent": consistent,
+            "tip centres apart [mm]": between * 1e3,
+            "I_C [kg m^2]": rod.inertia,
+        }
+        for ang in (20, 45):
+            T = invert_case(D.EXPERIMENTS[ang], rod=rod).duration
+            pub = D.published_row(ang, "experiment")
+            row[f"T {ang} deg [ms]"] = T * 1e3
+            row[f"T {ang} deg rel. diff"] = rel_diff(T, pub.T if pub else None)
+        rows.append(row)
+    return pd.DataFrame(rows)
+
+
 def inertia_sensitivity(ratios: Iterable[float] = INERTIA_RATIOS) -> pd.DataFrame:
     """T of the experimental rows for several I_C / (m L^2) (paper method), and the ratio at which
     each published T would be met exactly (a diagnostic, not used anywhere)."""
@@ -106,12 +139,49 @@ def inertia_sensitivity(ratios: Iterable[float] = INERTIA_RATIOS) -> pd.DataFram
     return pd.DataFrame(rows)
 
 
+def _decimals(x: float, at_least: int) -> int:
+    """The decimals ``x`` was printed with: at least ``at_least``, more where it has them."""
+    d = at_least
+    while round(x, d) != round(x, 9):
+        d += 1
+    return d
+
+
+def _printed(x: float, at_least: int, scale: float = 1.0) -> tuple[float, float]:
+    """The interval a printed number stands for: ``x`` +- half a unit of its last printed digit
+    (``x * scale`` printed with at least ``at_least`` decimals; SI bounds)."""
+    half = 0.5 * 10.0 ** -_decimals(abs(x) * scale, at_least) / scale
+    return x - half, x + half
+
+
+def _bound_outcome(r: D.PublishedRow, v_i: float) -> dict[str, Any]:
+    """F T against (1 + e) m |v_i| over the rounding of every printed number (T in ms with two
+    decimals, or three as the text's 0.256; F in whole newtons; e and v_i with two decimals;
+    Table 1's m with four): ``WITHIN`` or ``EXCEEDS`` when every value the printed numbers can
+    stand for says so, else ``WITHIN_ROUNDING``."""
+    assert r.F is not None and r.T is not None and r.e is not None
+    F, T = _printed(r.F, 0), _printed(r.T, 2, 1e3)
+    e, v, m = _printed(r.e, 2), _printed(abs(v_i), 2), _printed(D.PAPER_ROD.mass, 4)
+    ft = (F[0] * T[0], F[1] * T[1])
+    bound = ((1 + e[0]) * m[0] * v[0], (1 + e[1]) * m[1] * v[1])
+    outcome = EXCEEDS if ft[0] > bound[1] else WITHIN if ft[1] <= bound[0] else WITHIN_ROUNDING
+    return {
+        "F T min [N s]": ft[0],
+        "F T max [N s]": ft[1],
+        "bound min [N s]": bound[0],
+        "bound max [N s]": bound[1],
+        "vs bound": outcome,
+    }
+
+
 def published_consistency() -> pd.DataFrame:
     """Self-consistency of every published simulated row (Tables 2, 3 and the Sec. 5.2 text).
 
     For a rigid rod in gross sliding the normal impulse is P = (1 + e)|v_i| / K_y (gravity
-    neglected) and P <= (1 + e) m |v_i| whenever mu b <= a; the published F T should equal P. Eq. 12
-    must also tie the row's own L_s to its delta_p and T.
+    neglected) and P <= (1 + e) m |v_i| whenever mu b <= a; the published F T should equal P. The
+    bound is tested over the printed rounding of each number (``vs bound``: ``WITHIN``,
+    ``WITHIN_ROUNDING`` or ``EXCEEDS``). Eq. 12 must also tie the row's own L_s to its delta_p
+    and T.
     """
     rows = []
     for r in (*D.TABLE_ROWS, *D.TEXT_ROWS):
@@ -134,9 +204,11 @@ def published_consistency() -> pd.DataFrame:
                 "(1+e)|v_i|/K_y [N s]": P,
                 "ratio": r.F * r.T / P,
                 "(1+e) m |v_i| [N s]": bound,
-                "exceeds bound": bool(r.F * r.T > bound),
+                **_bound_outcome(r, x.v_i),
                 "implied m_eff [kg]": r.F * r.T / ((1 + r.e) * abs(x.v_i)),
                 "rod m_eff = 1/K_y [kg]": 1 / K_y,
+                "|delta_p| published [um]": abs(r.delta_p) * 1e6,
+                "|v_i| T published [um]": abs(x.v_i) * r.T * 1e6,
                 "L_s published [um]": r.L_s * 1e6,
                 "L_s from Eq. 12 [um]": ls12 * 1e6,
                 EQ12_REL: r.L_s / ls12 - 1.0,

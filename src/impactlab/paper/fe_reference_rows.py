@@ -65,6 +65,7 @@ def _row(ang: int, law: str, res: Any, fe: Any | None) -> dict[str, Any]:
         "e vs FE": vs("e"),
         "delta_p [um]": res.delta_p * 1e6,
         "delta_p vs FE": vs("delta_p"),
+        "delta_p/delta_max": res.delta_p / res.delta_max,
         "T [ms]": res.duration * 1e3,
         "F [N]": res.mean_force,
         "F vs FE": vs("mean_force"),

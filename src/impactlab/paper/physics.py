@@ -29,6 +29,7 @@ from impactlab.fe.tabulated import hardened_law
 from impactlab.materials import G0, ContactPair
 from impactlab.paper import data as D
 from impactlab.paper.quantities import flag_columns
+from impactlab.paper.simulations import paper_angles
 
 __all__ = [
     "CONFIGURATIONS",
@@ -151,9 +152,10 @@ def run_physics(
     history_angle: int | None = 20,
 ) -> dict[tuple[str, int], Any]:
     """Every (configuration name, angle [deg]) drop: an ImpactResult (rigid) or a DropResult
-    (flexible; with its history at ``history_angle``)."""
+    (flexible; with its history at ``history_angle``); ``angles``: of the paper's experiments
+    (20, 45, 70 deg; ValueError for another)."""
     out: dict[tuple[str, int], Any] = {}
-    angs = tuple(angles)
+    angs = paper_angles(angles)
     for cfg in configurations:
         for ang in angs:
             out[(cfg.name, ang)] = _run_one(cfg, ang, history=ang == history_angle)

@@ -57,6 +57,20 @@ class DurationCheck:
         """Within ``TOL_EXPERIMENT_T``."""
         return abs(self.rel_diff) <= TOL_EXPERIMENT_T
 
+    @property
+    def verdict(self) -> str:
+        """``PASS`` or ``FAIL``."""
+        return "PASS" if self.ok else "FAIL"
+
+    def text(self) -> str:
+        """``20 deg: T = 4.106 ms vs published 4.30 ms (-4.5%, tolerance 5%): PASS``, the one
+        wording of the report and the reproduce command (T to the microsecond, the published
+        value as printed)."""
+        return (
+            f"{self.angle_deg} deg: T = {self.T_ms:.3f} ms vs published {self.published_ms:.2f} "
+            f"ms ({self.rel_diff:+.1%}, tolerance {TOL_EXPERIMENT_T:.0%}): {self.verdict}"
+        )
+
 
 def duration_checks(experimental: Any) -> list[DurationCheck]:
     """The acceptance tests (20 and 45 deg) from the experimental rows (a DataFrame with the

@@ -10,6 +10,7 @@ from typing import Any, NamedTuple
 import pandas as pd
 
 from impactlab.paper import data as D
+from impactlab.paper.analytic_rows import EXCEEDS, WITHIN_ROUNDING
 from impactlab.paper.quantities import (
     EQ12_REL,
     TOL_SIMULATED,
@@ -81,7 +82,7 @@ class Reasons:
         if q in ("T", "F") and c is not None and res is not None and tab is not None:
             parts += self._reason_impulse(key, q, c, res, tab)
         if c is not None and q == "L_s":
-            parts.append(_reason_eq12(c))
+            parts.append(_reason_eq12(c, res, D.EXPERIMENTS[ang].v_i))
         if q in ("delta_p", "e") and res is not None and not parts:
             parts.append(_reason_dent(q, res))
         if not parts:
@@ -176,10 +177,18 @@ def _impulse_text(c: pd.Series, res: Any) -> str:
         f"(1+e)|v_i|/K_y = {c['(1+e)|v_i|/K_y [N s]']:.3g} N s that its own e allows "
         f"for this rod (K_y = {1 / c['rod m_eff = 1/K_y [kg]']:.3g} 1/kg)"
     )
-    if c["exceeds bound"]:
+    bound = (
+        f"(1+e) m |v_i| = {c['(1+e) m |v_i| [N s]']:.3g} N s, the bound for any rigid body of "
+        "the rod's mass (mu b < a)"
+    )
+    if c["vs bound"] == EXCEEDS:
+        txt += f" and exceeds {bound}, beyond the rounding of the printed numbers"
+    elif c["vs bound"] == WITHIN_ROUNDING:
         txt += (
-            f" and exceeds (1+e) m |v_i| = {c['(1+e) m |v_i| [N s]']:.3g} N s, the "
-            "bound for any rigid body of the rod's mass (mu b < a)"
+            f"; it lies within the rounding of the printed numbers of {bound} (F T "
+            f"{c['F T min [N s]']:.4g}-{c['F T max [N s]']:.4g} N s, bound "
+            f"{c['bound min [N s]']:.4g}-{c['bound max [N s]']:.4g} N s): whether it exceeds "
+            "the bound, the printed digits cannot tell"
         )
     txt += (
         f"; impactlab's F T equals its normal impulse "
@@ -188,7 +197,9 @@ def _impulse_text(c: pd.Series, res: Any) -> str:
     return txt
 
 
-def _reason_eq12(c: pd.Series) -> str:
+def _reason_eq12(c: pd.Series, res: Any, v_i: float) -> str:
+    """Why the published L_s differs: its own row contradicts Eq. 12, or it follows Eq. 12 and
+    carries the published T (``res``: impactlab's simulation or None; ``v_i`` [m/s])."""
     d = c[EQ12_REL]
     if abs(d) > 0.15:
         return (
@@ -196,11 +207,18 @@ def _reason_eq12(c: pd.Series) -> str:
             f"(alpha (delta_p - v_i T) = {c['L_s from Eq. 12 [um]']:.3g} um; published / "
             f"Eq. 12 - 1 = {d:+.0%})"
         )
+    ours = (
+        ""
+        if res is None
+        else f"; impactlab's {abs(res.delta_p) * 1e6:.3g} against "
+        f"{abs(v_i) * res.duration * 1e6:.3g} um"
+    )
     return (
         f"the published L_s follows Eq. 12 from the row's own delta_p and T "
         f"({c['L_s from Eq. 12 [um]']:.3g} um; published / Eq. 12 - 1 = {d:+.0%}); since "
-        "|delta_p| << |v_i| T, "
-        "L_s ~ alpha |v_i| T, so L_s carries the difference in T (see T)"
+        f"|delta_p| is smaller than |v_i| T (published {c['|delta_p| published [um]']:.3g} "
+        f"against {c['|v_i| T published [um]']:.3g} um{ours}), L_s = alpha (|v_i| T - "
+        "|delta_p|) grows with T, so L_s carries the difference in T (see T)"
     )
 
 

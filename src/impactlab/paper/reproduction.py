@@ -5,7 +5,9 @@ own Table 4 for 70 deg) with impactlab's numbers, Figs. 4 and 5, force-time and 
 plots, the sensitivity of the experimental T to the rod's inertia, the self-consistency checks of
 the published rows, and a report (Markdown and HTML) that explains every published number
 impactlab does not reproduce. It writes only into the folder it is given (see
-:func:`prepare_output`). The physics is never adjusted to a published number.
+:func:`prepare_output`); a file an earlier run wrote there that this run does not write is
+removed, with a :class:`ReproductionWarning` naming it, so the folder holds one run. The physics
+is never adjusted to a published number.
 
 The parts: :mod:`~impactlab.paper.analytic_rows` (experimental rows, inertia, consistency),
 :mod:`~impactlab.paper.simulations`, :mod:`~impactlab.paper.comparison` (with
@@ -18,8 +20,9 @@ from __future__ import annotations
 import json
 import os
 import time
+import warnings
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from types import MappingProxyType
 from typing import Any
@@ -32,6 +35,7 @@ from impactlab.paper import data as D
 from impactlab.paper.analytic_rows import (
     experimental_rows,
     inertia_sensitivity,
+    length_readings,
     published_consistency,
 )
 from impactlab.paper.comparison import comparison_table, side_by_side
@@ -44,10 +48,15 @@ from impactlab.paper.report import to_html, to_markdown
 from impactlab.paper.report_sections import TITLE, ReportData, build_report
 from impactlab.paper.simulations import eq12_check, run_simulations, simulation_table
 
-#: Marker file that identifies a folder written by :func:`reproduce`.
+#: Marker file that identifies a folder written by :func:`reproduce`; it lists the files of the
+#: reproduction in the folder (``"files"``), which the next run reads to remove the stale ones.
 MARKER = ".impactlab-reproduction.json"
 
 _TABLE_NAMES = {20: "table2", 45: "table3", 70: "table4"}
+
+
+class ReproductionWarning(UserWarning):
+    """A file an earlier reproduction left in the folder was removed (or could not be)."""
 
 
 @dataclass(frozen=True)
@@ -70,21 +79,22 @@ class ReproductionResult:
     extras: Mapping[str, Any] = field(default_factory=dict)
 
 
-def prepare_output(out_dir: str | os.PathLike[str]) -> Path:
+def prepare_output(out_dir: str | os.PathLike[str], name: str = "out_dir") -> Path:
     """Create ``out_dir`` or accept it if it is empty or holds a previous reproduction (marker
-    file). Refuses (ValueError) a non-empty folder without the marker and a path that is a file.
-    Nothing outside ``out_dir`` is touched; inside it only the reproduction's own files are
-    (re)written."""
-    out = check_path(out_dir, "out_dir").expanduser()
+    file). Refuses (ValueError naming ``name``, the folder as the user gave it: the command
+    line's ``--out``) a non-empty folder without the marker and a path that is a file. Nothing
+    outside ``out_dir`` is touched; inside it only the reproduction's own files are (re)written,
+    and the marker keeps the earlier run's list of files until this run completes."""
+    out = check_path(out_dir, name).expanduser()
     if out.is_dir():
         entries = list(out.iterdir())
         if entries and not (out / MARKER).is_file():
             raise ValueError(
-                f"out_dir {str(out)!r} is not empty and was not written by 'impactlab "
+                f"{name} {str(out)!r} is not empty and was not written by 'impactlab "
                 f"reproduce' (no {MARKER}); refusing to write there: choose a new or empty folder"
             )
-    out = output_folder(out, "out_dir")  # refuses a file, or a file among its parents
-    (out / MARKER).write_text(json.dumps({"tool": "impactlab reproduce", "status": "running"}))
+    out = output_folder(out, name)  # refuses a file, or a file among its parents
+    _write_marker(out, "running", _marker_files(out))
     return out
 
 
@@ -96,12 +106,37 @@ def reproduce(
     """Regenerate the paper's comparison into ``out_dir`` (created if needed; a non-empty folder
     must come from a previous reproduction). ``simulate=False`` skips the engine (analytic part
     only). Returns a :class:`ReproductionResult`; writes report.md, report.html, CSV tables and
-    PNG figures, nothing outside ``out_dir``."""
+    PNG figures, nothing outside ``out_dir``. The files of an earlier run that this one does not
+    write (the simulations' after a run with them) are removed, each with a
+    :class:`ReproductionWarning` (``extras["removed"]``: their names)."""
+    if not isinstance(simulate, bool):
+        raise TypeError(f"simulate must be True or False, got {simulate!r}")
     t0 = time.perf_counter()
     out = prepare_output(out_dir)
+    previous = _marker_files(out)
+    written: dict[str, Path] = {}
+    try:
+        res = _reproduce(out, simulate, written, t0)
+    except BaseException:  # the marker still lists every file of ours in the folder
+        _write_marker(out, "failed", previous | {p.name for p in written.values()})
+        raise
+    kept = _remove_stale(out, previous - {p.name for p in written.values()})
+    _write_marker(
+        out, "complete", {p.name for p in written.values()} | kept, time.perf_counter() - t0
+    )
+    removed = sorted(previous - {p.name for p in written.values()} - kept)
+    return replace(res, extras=MappingProxyType({**res.extras, "removed": tuple(removed)}))
+
+
+def _reproduce(
+    out: Path, simulate: bool, written: dict[str, Path], t0: float
+) -> ReproductionResult:
+    """The reproduction into the prepared folder ``out``; every file written is recorded in
+    ``written`` as soon as it is."""
     experimental = experimental_rows()
     consistency = published_consistency()
     inertia = inertia_sensitivity()
+    readings = length_readings()
     sims = run_simulations() if simulate else None
     comparison = comparison_table(sims, experimental, consistency)
     tables = {ang: side_by_side(comparison, ang) for ang in D.ANGLES_DEG}
@@ -111,7 +146,7 @@ def reproduce(
     physics = run_physics() if simulate else None
     phystab = physics_table(physics, experimental) if physics else None
 
-    written = _write_tables(
+    _write_tables(
         out,
         {
             "experimental_rows": experimental,
@@ -124,6 +159,7 @@ def reproduce(
             "fe_reference": fe_ref,
             "physics_comparison": phystab,
         },
+        written,
     )
     figs = _write_figures(out, inertia, sims, written)
     if sims:
@@ -149,6 +185,7 @@ def reproduce(
             physics=phystab,
             inputs_file="simulation_inputs.json" if sims else None,
             fe_reference=fe_ref,
+            readings=readings,
         ),
         written,
     )
@@ -165,32 +202,79 @@ def reproduce(
         report_md=md,
         report_html=html_path,
         elapsed_s=time.perf_counter() - t0,
-        extras=MappingProxyType({"simulated": sims is not None, "physics": phystab}),
+        extras=MappingProxyType(
+            {"simulated": sims is not None, "physics": phystab, "length_readings": readings}
+        ),
     )
 
 
 def _write_report(out: Path, data: ReportData, written: dict[str, Path]) -> tuple[Path, Path]:
-    """report.md and report.html (recorded in ``written``), then the completed marker file."""
+    """report.md and report.html (recorded in ``written``)."""
     blocks = build_report(data)
     md = out / "report.md"
     md.write_text(to_markdown(blocks, TITLE), encoding="utf-8")
+    written["report_md"] = md
     html_path = out / "report.html"
     # one self-contained page: the figures (already written into ``out``) embedded
     html_path.write_text(to_html(blocks, TITLE, base=out), encoding="utf-8")
-    written["report_md"], written["report_html"] = md, html_path
-    (out / MARKER).write_text(
-        json.dumps(
-            {
-                "tool": "impactlab reproduce",
-                "status": "complete",
-                "version": __version__,
-                "files": sorted(p.name for p in written.values()),
-                "elapsed_s": data.elapsed,
-            },
-            indent=2,
-        )
-    )
+    written["report_html"] = html_path
     return md, html_path
+
+
+def _marker_files(out: Path) -> set[str]:
+    """The files the marker in ``out`` lists (none without a readable one); only plain names
+    of files in ``out`` itself count, never a path elsewhere."""
+    try:
+        listed = json.loads((out / MARKER).read_text()).get("files", [])
+    except (OSError, ValueError, AttributeError):
+        return set()
+    if not isinstance(listed, list):
+        return set()
+    return {
+        f
+        for f in listed
+        if isinstance(f, str) and f not in ("", ".", "..", MARKER) and Path(f).name == f
+    }
+
+
+def _write_marker(out: Path, status: str, files: set[str], elapsed: float | None = None) -> None:
+    """The marker: the tool, the run's ``status``, the version and the reproduction's files."""
+    record: dict[str, Any] = {
+        "tool": "impactlab reproduce",
+        "status": status,
+        "version": __version__,
+        "files": sorted(files),
+    }
+    if elapsed is not None:
+        record["elapsed_s"] = elapsed
+    (out / MARKER).write_text(json.dumps(record, indent=2))
+
+
+def _remove_stale(out: Path, stale: set[str]) -> set[str]:
+    """Remove the files ``stale`` (an earlier run's, not written by this one) from ``out``, one
+    ReproductionWarning each; returns those that could not be removed."""
+    kept: set[str] = set()
+    for name in sorted(stale):
+        path = out / name
+        if not path.is_file() or path.is_symlink():
+            continue  # gone already, or not a file of ours
+        try:
+            path.unlink()
+        except OSError as exc:
+            kept.add(name)
+            warnings.warn(
+                f"{str(path)!r} is left from an earlier run and could not be removed "
+                f"({exc.strerror or exc}): it does not show this run",
+                ReproductionWarning,
+                stacklevel=3,
+            )
+        else:
+            warnings.warn(
+                f"removed {str(path)!r}, left by an earlier run (this run does not write it)",
+                ReproductionWarning,
+                stacklevel=3,
+            )
+    return kept
 
 
 def _write_inputs(path: Path, sims: Simulations) -> Path:
@@ -201,16 +285,17 @@ def _write_inputs(path: Path, sims: Simulations) -> Path:
     return path
 
 
-def _write_tables(out: Path, tables: Mapping[str, pd.DataFrame | None]) -> dict[str, Path]:
-    """Each table (None: skipped) as ``out/<name>.csv``; returns name -> path."""
-    written: dict[str, Path] = {}
+def _write_tables(
+    out: Path, tables: Mapping[str, pd.DataFrame | None], written: dict[str, Path]
+) -> None:
+    """Each table (None: skipped) as ``out/<name>.csv``, recorded in ``written`` (name ->
+    path)."""
     for name, df in tables.items():
         if df is None:
             continue
         p = out / f"{name}.csv"
         df.to_csv(p, index=False)
         written[name] = p
-    return written
 
 
 def _write_figures(

@@ -6,6 +6,7 @@ them.
 from __future__ import annotations
 
 from collections.abc import Iterable
+from numbers import Real
 from typing import Any
 
 import pandas as pd
@@ -26,6 +27,21 @@ from impactlab.paper.quantities import (
 FRICTIONS: tuple[str, ...] = ("impulse_ratio", "coulomb")
 
 
+def paper_angles(angles: Iterable[Any], name: str = "angles") -> tuple[int, ...]:
+    """``angles`` [deg] as a tuple, each one of the paper's experiments; ValueError naming
+    ``name``, the value and the allowed angles otherwise."""
+    if isinstance(angles, str | bytes) or not isinstance(angles, Iterable):
+        angles = (angles,)
+    out = tuple(angles)
+    for a in out:
+        if isinstance(a, bool) or not isinstance(a, Real) or a not in D.EXPERIMENTS:
+            allowed = ", ".join(str(k) for k in D.EXPERIMENTS)
+            raise ValueError(
+                f"{name}: {a!r} is not an angle of the paper's experiments (allowed: {allowed} deg)"
+            )
+    return tuple(int(a) for a in out)
+
+
 def run_simulations(
     angles: Iterable[int] = D.ANGLES_DEG,
     laws: Iterable[str] = D.PAPER_LAWS,
@@ -34,9 +50,10 @@ def run_simulations(
     history: bool = True,
 ) -> dict[tuple[int, str, str], Any]:
     """Every (angle, law, friction) simulation of the paper's experiments: the paper's rod on the
-    AISI 1010 flat, the measured v_i and mu, no spin, gravity on, the angle free to change."""
+    AISI 1010 flat, the measured v_i and mu, no spin, gravity on, the angle free to change.
+    ``angles``: of the paper's experiments (20, 45, 70 deg; ValueError for another)."""
     out: dict[tuple[int, str, str], Any] = {}
-    for ang in angles:
+    for ang in paper_angles(angles):
         x = D.EXPERIMENTS[ang]
         for law in laws:
             for fr in frictions:

@@ -1,0 +1,139 @@
+"""The posterior predictive check of the calibration section: each measured value beside each
+configuration's prediction, with the 90 % band a new measurement would fall in.
+
+The band is the 5 % and 95 % quantiles of the predictive distribution: the mixture, over the
+posterior draws, of a normal around each draw's prediction with the measurement's standard
+uncertainty sigma. It is computed exactly (no noise sampled) from the draws' predictions: a row
+that carries them (``draws``), or a configuration without a free parameter (the rigid rod), whose
+every draw predicts its best fit, so that its band is best fit +- 1.645 sigma. A row without
+them (the shipped summary keeps only quantiles) keeps the band the calibration sampled, one
+noise value per draw (Monte Carlo), and says so.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from statistics import NormalDist
+from typing import Any
+
+import numpy as np
+import pandas as pd
+from scipy.optimize import brentq
+
+__all__ = [
+    "BAND",
+    "EXACT",
+    "MONTE_CARLO",
+    "band_note",
+    "checks_table",
+    "mixture_band",
+    "ppc_rows",
+]
+
+#: The band's column, and how each row's band was obtained (column ``band``).
+BAND = "90 % band (with noise)"
+EXACT = "exact"
+MONTE_CARLO = "sampled (Monte Carlo)"
+
+#: The central interval [probability].
+_LEVELS = (0.05, 0.95)
+
+
+def mixture_band(means: Sequence[float], sigma: float) -> tuple[float, float]:
+    """The 5 % and 95 % quantiles of the equal-weight mixture of normals N(``means[i]``,
+    ``sigma``), exactly (root of the mixture's distribution function)."""
+    mu = np.asarray(means, dtype=float)
+    if mu.size == 0 or not np.isfinite(mu).all() or not sigma > 0:
+        raise ValueError(f"a band needs finite predictions and sigma > 0, got sigma = {sigma!r}")
+    unit = NormalDist()
+    if np.ptp(mu) == 0.0:
+        lo, hi = (float(mu[0] + sigma * unit.inv_cdf(p)) for p in _LEVELS)
+        return lo, hi
+
+    def cdf(x: float, p: float) -> float:
+        return float(np.mean([unit.cdf((x - m) / sigma) for m in mu])) - p
+
+    a, b = float(mu.min()) - 10 * sigma, float(mu.max()) + 10 * sigma
+    lo, hi = (float(brentq(cdf, a, b, args=(p,), xtol=1e-12 * sigma)) for p in _LEVELS)
+    return lo, hi
+
+
+def ppc_rows(posteriors: Mapping[str, Any]) -> list[dict[str, Any]]:
+    """The check's rows of a finished calibration (``Calibration.posteriors``), display units
+    (um for lengths), with each measurement's ``sigma``."""
+    rows = []
+    for name, post in posteriors.items():
+        for r in post.ppc:
+            scale = 1e6 if r["unit"] == "m" else 1.0
+            rows.append(
+                {
+                    "configuration": name,
+                    "drop": r["drop"],
+                    "quantity": r["quantity"] + (" [um]" if scale != 1.0 else ""),
+                    "measured": r["observed"] * scale,
+                    "sigma": r["sigma"] * scale,
+                    "best fit": r["best"] * scale,
+                    "predicted median": r["median"] * scale,
+                    BAND: f"[{r['pred_q05'] * scale:.3g}, {r['pred_q95'] * scale:.3g}]",
+                    "z (best fit)": r["z_best"],
+                }
+            )
+    return rows
+
+
+def checks_table(
+    rows: Sequence[Mapping[str, Any]],
+    fixed: set[str],
+    sigmas: Mapping[str, float],
+) -> pd.DataFrame:
+    """The check's table: ``rows`` (``ppc_rows``, or those of a stored summary) with the band
+    recomputed exactly where the draws' predictions are known, and its column ``band`` saying
+    how it was obtained. ``fixed``: the configurations without a free parameter (their every
+    draw predicts the best fit); ``sigmas``: per quantity (its name before the unit) the
+    measurement's sigma where a row does not carry its own (absolute for ``e``, relative to the
+    measured value otherwise)."""
+    out = []
+    for r in rows:
+        sigma, draws = r.get("sigma"), r.get("draws")
+        if sigma is None:
+            q = str(r["quantity"]).split(" [")[0]
+            sigma = sigmas[q] if q == "e" else sigmas[q] * abs(float(r["measured"]))
+        if draws is None and r["configuration"] in fixed:
+            draws = [r["best fit"]]
+        band = r[BAND]
+        if draws is not None:
+            lo, hi = mixture_band(draws, float(sigma))
+            band = f"[{lo:.3g}, {hi:.3g}]"
+        shown = {k: r[k] for k in ("configuration", "drop", "quantity", "measured")}
+        out.append(
+            shown
+            | {"sigma": sigma, "best fit": r["best fit"], "predicted median": r["predicted median"]}
+            | {BAND: band, "band": EXACT if draws is not None else MONTE_CARLO}
+            | {"z (best fit)": r["z (best fit)"]}
+        )
+    return pd.DataFrame(out)
+
+
+def band_note(checks: pd.DataFrame, n_draws: int | None) -> str:
+    """How the predictive band of each row was obtained."""
+    draws = f"the {n_draws} posterior draws" if n_draws else "the posterior draws"
+    sampled = sorted(set(checks.loc[checks["band"] == MONTE_CARLO, "configuration"]))
+    exact = sorted(set(checks.loc[checks["band"] == EXACT, "configuration"]))
+    text = (
+        "90 % band (with noise): the 5 % and 95 % quantiles of the predictive distribution, "
+        f"the mixture over {draws} of a normal around each draw's prediction with the "
+        "measurement's sigma (column 'sigma'), where a new measurement would fall. "
+    )
+    if exact:
+        text += (
+            f"Exact for {' and '.join(exact)} (column 'band'): the quantiles of that mixture; a "
+            "configuration without a free parameter predicts its best fit with every draw, so "
+            "its band is best fit +- 1.645 sigma. "
+        )
+    if sampled:
+        text += (
+            f"For {', '.join(sampled)}, the summary keeps only the band the calibration "
+            f"sampled, one noise value for each of {draws} (Monte Carlo), not the draws' "
+            "predictions: those bands carry that sampling error."
+        )
+    return text
