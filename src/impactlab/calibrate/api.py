@@ -15,6 +15,7 @@ from impactlab.calibrate.cluster import map_on_dask
 from impactlab.calibrate.diagnostics import edge_note, misfits
 from impactlab.calibrate.input_checks import (
     check_calibration_inputs,
+    engine_options,
     parameter_usage,
     sampler_settings,
     unused_fixed,
@@ -27,14 +28,12 @@ from impactlab.calibrate.models import CandidateModel
 from impactlab.calibrate.posterior import LogPosterior
 from impactlab.calibrate.priors import Parameter
 from impactlab.calibrate.ranking import NOT_CONVERGED, NOT_DISTINGUISHABLE, rank_models
-from impactlab.calibrate.result import ModelPosterior, summarise
+from impactlab.calibrate.result import ONE_DROP, ModelPosterior, summarise
 from impactlab.calibrate.sampler import ProgressFn, run_chain
 from impactlab.calibrate.statelock import state_lock
-from impactlab.dynamics.input_checks import gravity_value
 from impactlab.references import cite
 from impactlab.sweep.engine import ENGINE, Evaluator
 from impactlab.sweep.inputs import INPUTS
-from impactlab.sweep.options import EngineOptions
 
 __all__ = ["REFERENCES", "Calibration", "CalibrationWarning", "calibrate", "parse_model"]
 
@@ -49,7 +48,7 @@ class CalibrationWarning(UserWarning):
     """Something the calibration ran through but the user should know (a parameter a model
     does not use, a drop value replaced by a free parameter, a misfit, a chain that has not
     converged, a posterior against its prior's bound, a best model the data do not single
-    out)."""
+    out, a ranking over one drop)."""
 
 
 @dataclass
@@ -74,8 +73,9 @@ class Calibration:
     @property
     def best_caveats(self) -> list[str]:
         """Why ``best`` may not be the model the data single out: its elpd does not differ from
-        the runner-up's by 2 dse (``"not distinguishable (elpd_diff < 2 dse)"``), or its chain
-        has not converged (``"not converged"``); empty when neither."""
+        the runner-up's by 2 dse (``"not distinguishable (elpd_diff < 2 dse)"``), one drop
+        cannot rank the models (``"not distinguishable (one drop: PSIS-LOO does not rank)"``),
+        or its chain has not converged (``"not converged"``); empty when none."""
         if not self.ranking:
             return [] if self.best.converged else [NOT_CONVERGED]
         return [n for n in self.ranking[0]["note"].split("; ") if n]
@@ -157,8 +157,10 @@ def calibrate(
     steps // 2); seed : the random seed, an integer in [0, 2^32) (same inputs and seed: the
     same chain); state_dir : a folder keeping each model's chain (emcee HDF5), so that an
     interrupted calibration resumes (``restart`` discards it; one calibration at a time uses
-    a folder); progress(model, done, total); evaluator, engine : the engine adapter and its
-    options (gravity, rtol; default: the compiled engine, gravity on); scheduler : a Dask
+    a folder; a saved chain of other inputs, or unreadable, is refused:
+    ``statelock.SavedChainError``); progress(model, done, total); evaluator, engine : the engine
+    adapter and its options (gravity, rtol: a value, or results.json's quantity object; default:
+    the compiled engine, gravity on); scheduler : a Dask
     ``distributed.Client`` or scheduler address: each model's chain runs as one task there
     (no progress display; ``state_dir`` must be a folder the workers share).
 
@@ -216,12 +218,7 @@ def _calibrate(
     if len(set(names)) != len(names):
         raise ValueError(f"two candidate models have the same name: {names}")
     nw, steps, nburn, seed = sampler_settings(len(params), walkers, steps, burn, seed)
-    eng = dict(engine or {})
-    unknown = sorted(set(eng) - {"gravity", "rtol"})
-    if unknown:
-        raise ValueError(f"unknown engine option(s) {unknown}; known: gravity, rtol")
-    g = gravity_value(eng.get("gravity", True))
-    EngineOptions(rtol=eng.get("rtol"))  # ValueError for an rtol the engine refuses
+    eng, g = engine_options(engine)
     notes: list[str] = []
     check_calibration_inputs(meas, params, cands, notes)
     usage = {c.name: parameter_usage(c, meas, params, evaluator, eng) for c in cands}
@@ -259,6 +256,7 @@ def _calibrate(
     posteriors = {c.name: p for c, p in zip(cands, done, strict=True)}
     found = misfits(posteriors) + _chain_warnings(posteriors, params, usage)
     ranking = rank_models(posteriors)
+    found += [ONE_DROP] if meas.n_drops < 2 else []
     found += _best_warnings(ranking)
     for text in found:
         warnings.warn(text, CalibrationWarning, stacklevel=3)
@@ -308,10 +306,14 @@ def _best_warnings(ranking: Sequence[Mapping[str, Any]]) -> list[str]:
     best, out = ranking[0], []
     if NOT_DISTINGUISHABLE in best["note"]:
         other = ranking[1]
+        why = (
+            f"elpd_diff {other['elpd_diff']:.2f} < 2 dse ({2 * other['dse']:.2f})"
+            if other["dse"] > 0
+            else f"elpd_diff {other['elpd_diff']:.2f} has no standard error (dse 0) to judge it"
+        )
         out.append(
             f"the best-ranked model {best['model']!r} is not distinguishable from "
-            f"{other['model']!r}: elpd_diff {other['elpd_diff']:.2f} < 2 dse "
-            f"({2 * other['dse']:.2f}); the data do not single out one model"
+            f"{other['model']!r}: {why}; the data do not single out one model"
         )
     if NOT_CONVERGED in best["note"]:
         out.append(

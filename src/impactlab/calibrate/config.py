@@ -12,6 +12,7 @@
     seed = 0
     [engine]
     gravity = true                      # or a value in m/s^2; rtol = 1e-7
+                                        # (or results.json's { value = 9.81, unit = "m/s^2" })
 
 ``[[model]]`` tables (``law``, ``friction``, ``body``, ``rate``, ``name``, ``fixed``,
 ``law_params``) may replace ``models`` where a model needs more than its law and friction; a
@@ -26,6 +27,7 @@ from typing import Any
 
 from impactlab._validation import read_text_file
 from impactlab.calibrate.api import parse_model
+from impactlab.calibrate.input_checks import engine_options
 from impactlab.calibrate.priors import parse_parameter
 
 __all__ = ["load_config"]
@@ -69,7 +71,10 @@ def load_config(path: str | Path) -> dict[str, Any]:
     out.update(_sampler(p, _table(p, doc, "sampler", _SAMPLER)))
     engine = _table(p, doc, "engine", _ENGINE)
     if engine:
-        out["engine"] = engine
+        try:
+            out["engine"] = engine_options(engine)[0]
+        except ValueError as exc:
+            raise ValueError(f"{p}: [engine] {exc}") from None
     return out
 
 

@@ -17,13 +17,13 @@ from impactlab.contact import get_law
 from impactlab.sweep.dimensions import check_allowed
 from impactlab.sweep.inputs import INPUTS
 
-__all__ = ["FIXABLE", "fixed_values", "law_param_values"]
+__all__ = ["FIXABLE", "fixed_values", "law_param_values", "quantity_object"]
 
 #: What a model may fix: the inputs a free parameter may be (not a drop's kinematics).
 FIXABLE: tuple[str, ...] = tuple(n for n in NUMERIC_INPUTS if n not in KINEMATICS)
 
 
-def _quantity_object(v: Any) -> Any:
+def quantity_object(v: Any) -> Any:
     """A quantity object of results.json (``{"value": 3e8, "unit": "Pa"}``) as the text of
     that quantity (``"300000000.0 Pa"``); anything else as it is."""
     if isinstance(v, Mapping) and set(v) == {"value", "unit"}:
@@ -53,7 +53,7 @@ def fixed_values(model: str, fixed: Any) -> dict[str, float]:
                 f"{did_you_mean(name, FIXABLE)}; known: {', '.join(FIXABLE)}"
             )
         where = f"model {model!r}, fixed {name}"
-        v = _quantity_object(v)
+        v = quantity_object(v)
         if isinstance(v, bool) or not isinstance(v, int | float | str):
             raise ValueError(f"{where}: expected a number or a quantity string, got {v!r}")
         try:
@@ -82,7 +82,7 @@ def law_param_values(model: str, law: str, law_params: Any) -> dict[str, float]:
     try:
         given = {}
         for key, v in law_params.items():
-            v = _quantity_object(v)
+            v = quantity_object(v)
             if isinstance(v, str) and key in units:  # "105 HB" read as the calibration reads it
                 v = to_unit(v, units[key], name=str(key))
             given[str(key)] = v

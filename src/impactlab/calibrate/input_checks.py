@@ -13,15 +13,20 @@ from typing import Any
 
 import numpy as np
 
+from impactlab.calibrate.fixed import quantity_object
 from impactlab.calibrate.measurements import Measurements
 from impactlab.calibrate.models import CandidateModel, predict
 from impactlab.calibrate.priors import Parameter, parse_parameter
+from impactlab.calibrate.values import to_unit
+from impactlab.dynamics.input_checks import gravity_value
 from impactlab.sweep.dimensions import check_allowed
 from impactlab.sweep.engine import Evaluator
 from impactlab.sweep.inputs import MATERIAL_OVERRIDES
+from impactlab.sweep.options import EngineOptions
 
 __all__ = [
     "check_calibration_inputs",
+    "engine_options",
     "parameter_usage",
     "parameters",
     "sampler_settings",
@@ -48,6 +53,25 @@ def parameters(given: Sequence[Parameter] | Mapping[str, Any]) -> tuple[Paramete
     if twice:
         raise ValueError(f"a free parameter is given twice: {', '.join(twice)}")
     return out
+
+
+def engine_options(engine: Mapping[str, Any] | None) -> tuple[dict[str, Any], float]:
+    """(the engine options, the gravity in m/s^2): ``gravity`` and ``rtol`` as given, a
+    quantity object of results.json (``{"value": 9.80665, "unit": "m/s^2"}``) read as its
+    number in the option's unit. ValueError for an unknown option, and a gravity or an rtol
+    that the engine refuses."""
+    eng = dict(engine or {})
+    unknown = sorted(set(eng) - {"gravity", "rtol"})
+    if unknown:
+        raise ValueError(f"unknown engine option(s) {unknown}; known: gravity, rtol")
+    if isinstance(eng.get("gravity"), Mapping):
+        eng["gravity"] = gravity_value(quantity_object(eng["gravity"]))
+    if isinstance(eng.get("rtol"), Mapping):
+        rtol = quantity_object(eng["rtol"])
+        eng["rtol"] = rtol if isinstance(rtol, Mapping) else to_unit(rtol, "1", name="rtol")
+    g = gravity_value(eng.get("gravity", True))
+    EngineOptions(rtol=eng.get("rtol"))  # ValueError for an rtol the engine refuses
+    return eng, g
 
 
 def _integer(name: str, value: Any) -> int:

@@ -19,8 +19,10 @@ def read_text(path: Path, kind: str) -> str:
 
 def csv_records(path: Path) -> list[dict[str, str]]:
     """The rows of a CSV file as header -> text, without blank lines and ``#`` comment lines;
-    ValueError naming the file and the line for a header that names a column twice, and for a
-    row whose number of fields differs from the header's (a truncated or ragged row)."""
+    ValueError naming the file and the line for a header that names a column twice, a header
+    of one column holding ';' or tabs (a file that separates its columns with them, before its
+    rows are counted: their decimal commas would split them), and for a row whose number of
+    fields differs from the header's (a truncated or ragged row)."""
     numbered = [
         (number, line)
         for number, line in enumerate(read_text(path, "CSV").splitlines(), start=1)
@@ -29,6 +31,13 @@ def csv_records(path: Path) -> list[dict[str, str]]:
     if not numbered:
         return []
     header = next(csv.reader([numbered[0][1]]))
+    if len(header) == 1 and (";" in header[0] or "\t" in header[0]):
+        sep = "';'" if ";" in header[0] else "tabs"
+        raise ValueError(
+            f"{path}: line {numbered[0][0]}: the header is one column {header[0]!r}: the file "
+            f"separates its columns with {sep}; a measurements CSV separates them with commas "
+            "and writes decimals with a point (0.4, not 0,4)"
+        )
     twice = sorted({h.strip() for h in header if [x.strip() for x in header].count(h.strip()) > 1})
     if twice:
         raise ValueError(

@@ -17,14 +17,14 @@ from typing import Any
 
 from impactlab.bodies import PAPER_ROD
 from impactlab.calibrate.input_magnitudes import check_magnitude
-from impactlab.calibrate.quantities import (
-    AMBIGUOUS,
-    DROP_CATEGORIES,
-    MEASURABLE,
-    NUMERIC_INPUTS,
-    PLAUSIBLE,
-    canonical_output,
+from impactlab.calibrate.measurement_columns import (
+    LABEL_KEYS,
+    column_kind,
+    fraction,
+    resolve_units,
+    split_header,
 )
+from impactlab.calibrate.quantities import ANGLES, MEASURABLE, PLAUSIBLE
 from impactlab.calibrate.values import bare, to_unit
 from impactlab.materials import PRESETS
 from impactlab.sweep.dimensions import check_allowed, check_rod_angles
@@ -32,7 +32,6 @@ from impactlab.sweep.inputs import INPUTS, UNIT_REQUIRED
 
 __all__ = ["LABEL_KEYS", "Row", "parse_row", "split_header", "unit_text"]
 
-LABEL_KEYS = ("label", "drop", "name")
 #: Inputs of a rod that a sphere does not have (as in a sweep of spheres).
 _ROD_ONLY = ("angle", "length", "tip_radius", "inertia")
 
@@ -48,15 +47,6 @@ class Row:
     sigma: dict[str, float]
 
 
-def split_header(key: str) -> tuple[str, str | None]:
-    """``"delta_p [um]"`` -> ("delta_p", "um")."""
-    key = key.strip()
-    if key.endswith("]") and "[" in key:
-        name, unit = key[:-1].split("[", 1)
-        return name.strip(), unit.strip()
-    return key, None
-
-
 def unit_text(unit: str) -> str:
     """`` unit``, or nothing for a pure number."""
     return "" if unit in ("1", "", "-") else f" {unit}"
@@ -70,12 +60,18 @@ def _blank(v: Any) -> bool:
     return v is None or (isinstance(v, str) and not v.strip()) or _is_nan(v)
 
 
-def _value(where: str, name: str, v: Any, column_unit: str | None, unit: str) -> float:
+def _value(
+    where: str, name: str, v: Any, column_unit: str | None, unit: str, canon: str = ""
+) -> float:
     """``v`` in ``unit``: a bare number is in ``column_unit`` (the column header's or the
-    ``[units]`` table's; None: ``unit``) and must fit its dimension, as a unit in a value must."""
+    ``[units]`` table's; None: ``unit``) and must fit its dimension, as a unit in a value must;
+    a fraction (``canon``, the column's canonical name) may be in percent."""
     if isinstance(v, bool) or not isinstance(v, int | float | str):
         raise ValueError(f"{where}: {name} must be a number or a quantity string, got {v!r}")
     try:
+        part = fraction(canon or name, v, column_unit)
+        if part is not None:
+            return part
         if column_unit and bare(v):
             return to_unit(f"{str(v).strip()} {column_unit}", unit, name=name)
         if column_unit:
@@ -85,6 +81,16 @@ def _value(where: str, name: str, v: Any, column_unit: str | None, unit: str) ->
         raise ValueError(f"{where}: {exc}") from None
 
 
+def _angle_unit(where: str, name: str, v: Any, unit: str | None, header: str) -> None:
+    """An angle (an input's or a measured one) refused as a bare number without a unit: 20
+    could be degrees or radians (the angle rule, docs/glossary.md)."""
+    if not unit and bare(v):
+        raise ValueError(
+            f"{where}: {name}: the bare number {v!r} has no unit; an angle needs one, "
+            f"e.g. '{str(v).strip()} deg', or a unit in the column header ('{header} [deg]')"
+        )
+
+
 def _category(where: str, name: str, value: str) -> str:
     known = ("rod", "sphere") if name == "body" else tuple(PRESETS)
     if value not in known:
@@ -92,58 +98,31 @@ def _category(where: str, name: str, value: str) -> str:
     return value
 
 
-def _kind(where: str, name: str) -> tuple[str, str]:
-    """(what the column is: "label", "category", "input", "sigma", "value", its canonical
-    name); ValueError for a column a drop does not take."""
-    if name in LABEL_KEYS:
-        return "label", "label"
-    if name in ("law", "friction"):
-        raise ValueError(
-            f"{where}: {name!r} is not a property of a drop: the contact law and the "
-            "friction model are chosen by the candidate models of the calibration"
-        )
-    ambiguous = AMBIGUOUS.get(name.removesuffix("_sigma"))
-    if ambiguous:
-        raise ValueError(f"{where}: column {name!r}: {ambiguous}")
-    if name in DROP_CATEGORIES:
-        return "category", name
-    if name in NUMERIC_INPUTS:
-        return "input", name
-    q = canonical_output(name.removesuffix("_sigma"))
-    if name.endswith("_sigma") and q:
-        return "sigma", f"{q}_sigma"
-    if canonical_output(name):
-        return "value", str(canonical_output(name))
-    if ";" in name or "\t" in name:
-        raise ValueError(
-            f"{where}: the header is one column {name!r}: the file separates its columns "
-            "with ';' or tabs; a measurements CSV separates them with commas"
-        )
-    raise ValueError(
-        f"{where}: unknown column {name!r}; a drop takes label, "
-        f"{', '.join(DROP_CATEGORIES)}, the numeric inputs ({', '.join(NUMERIC_INPUTS)}) "
-        f"and measured quantities ({', '.join(MEASURABLE)}) with <name>_sigma"
-    )
-
-
-def parse_row(i: int, record: Mapping[str, Any], units: Mapping[str, str]) -> Row:
+def parse_row(i: int, record: Mapping[str, Any], units: Mapping[str, Any]) -> Row:
     """Drop ``i`` (from 0) of a file: ``record`` column -> value, ``units`` the ``[units]``
-    table. ValueError naming the drop and the column for anything it cannot use."""
+    table (its keys read as column names: ``measurement_columns.resolve_units``). ValueError
+    naming the drop and the column for anything it cannot use."""
     where = f"drop {i + 1}"
+    units = resolve_units(units)
     cols = []
     seen: dict[str, str] = {}
     for key, v in record.items():
         name, unit = split_header(str(key))
-        kind, canon = _kind(where, name)
+        kind, canon = column_kind(where, name)
         if canon in seen:
             raise ValueError(
                 f"{where}: {canon} is given twice (columns {seen[canon]!r} and {str(key)!r}); "
                 "keep one"
             )
+        if unit is not None and kind in ("label", "category"):
+            raise ValueError(
+                f"{where}: column {str(key)!r}: {name} is not a quantity, so it takes no unit; "
+                f"write the header {name!r}"
+            )
         seen[canon] = str(key)
-        cols.append((kind, canon, name, unit, v))
+        cols.append((kind, canon, name, unit or units.get(canon), v))
     # the unit of each measured value's column: its uncertainty's unless that has its own
-    value_units = {c: u or units.get(n) for k, c, n, u, _ in cols if k == "value"}
+    value_units = {c: u for k, c, _, u, _ in cols if k == "value"}
     texts = {c: v for k, c, _, _, v in cols if k == "value"}
     label, cats, inputs, obs, sig = f"drop {i + 1}", {}, {}, {}, {}
     nan: set[str] = set()
@@ -158,23 +137,22 @@ def parse_row(i: int, record: Mapping[str, Any], units: Mapping[str, str]) -> Ro
         if kind == "category":
             cats[canon] = _category(where, canon, str(v).strip())
         elif kind == "input":
-            unit = unit or units.get(name)
-            if canon in UNIT_REQUIRED and not unit and bare(v):
-                raise ValueError(
-                    f"{where}: {canon}: the bare number {v!r} has no unit; an angle needs one, "
-                    f"e.g. '20 deg', or a unit in the column header ('{canon} [deg]')"
-                )
+            if canon in UNIT_REQUIRED:
+                _angle_unit(where, canon, v, unit, canon)
             spec = INPUTS[canon]
             unit = unit or (spec.parse_unit if spec.parse_unit != spec.unit else None)
-            inputs[canon] = _value(where, name, v, unit, spec.unit)
+            inputs[canon] = _value(where, name, v, unit, spec.unit, canon)
         elif kind == "sigma":
             q = canon.removesuffix("_sigma")
-            own = unit or units.get(name)
-            unit = own or value_units.get(q) or units.get(name.removesuffix("_sigma"))
-            _sigma_unit(where, name, v, unit, q, texts.get(q))
-            sig[q] = _value(where, name, v, unit, MEASURABLE[q].unit)
+            unit = unit or value_units.get(q) or units.get(q)
+            _sigma_unit(where, name, v, unit, q, texts.get(q), value_units.get(q))
+            if q in ANGLES:
+                _angle_unit(where, name, v, unit, f"{q}_sigma")
+            sig[q] = _value(where, name, v, unit, MEASURABLE[q].unit, canon)
         else:
-            obs[canon] = _value(where, name, v, unit or units.get(name), MEASURABLE[canon].unit)
+            if canon in ANGLES:
+                _angle_unit(where, name, v, unit, canon)
+            obs[canon] = _value(where, name, v, unit, MEASURABLE[canon].unit, canon)
     row = Row(label, cats, inputs, obs, sig)
     _velocity(f"{where} ({label})", row)
     _body(f"{where} ({label})", row)
@@ -182,10 +160,28 @@ def parse_row(i: int, record: Mapping[str, Any], units: Mapping[str, str]) -> Ro
     return row
 
 
-def _sigma_unit(where: str, name: str, v: Any, unit: str | None, q: str, value: Any) -> None:
-    """A bare uncertainty beside a value written with its unit (``"12 um"``) would be read in
-    SI: refused, with the value's unit to give it."""
-    if unit or not bare(v) or MEASURABLE[q].unit in ("1", "") or value is None or bare(value):
+def _sigma_unit(
+    where: str, name: str, v: Any, unit: str | None, q: str, value: Any, value_unit: str | None
+) -> None:
+    """A bare uncertainty beside a value written with its unit (``"12 um"``, ``"43 %"``) would
+    be read in SI: refused, with the value's unit to give it. An uncertainty in percent beside a
+    value that is not (``e = 0.43``, ``e_sigma = "5 %"``) could be 5 % of e or 0.05: refused."""
+    if value is None or _blank(value):
+        return
+    try:
+        value_part = fraction(q, value, value_unit) is not None
+        own_part = fraction(name, v, unit) is not None
+    except ValueError as exc:
+        raise ValueError(f"{where}: {exc}") from None
+    if own_part and not value_part:
+        raise ValueError(
+            f"{where}: {name} = {_shown(v, unit)!r} is in percent while {q} = "
+            f"{_shown(value, value_unit)!r} is not: a percentage of {q} could be relative (of "
+            f"the value) or of 1; give {name} as {q} is (a fraction of 1), or {q} in percent too"
+        )
+    if unit or not bare(v) or bare(value):
+        return
+    if MEASURABLE[q].unit in ("1", "") and not value_part:
         return
     if isinstance(value, str) and value.strip():
         shown = re.sub(r"^[-+0-9.eE]+\s*", "", value.strip())
@@ -193,6 +189,11 @@ def _sigma_unit(where: str, name: str, v: Any, unit: str | None, q: str, value: 
             f"{where}: {name} = {v!r} has no unit while {q} = {value!r} has one: give the "
             f"uncertainty's unit too (e.g. '{str(v).strip()} {shown}')"
         )
+
+
+def _shown(v: Any, unit: str | None) -> str:
+    """A value as the file gives it: ``"5 %"`` for a bare 5 in a column of unit %."""
+    return f"{str(v).strip()} {unit}" if bare(v) and unit else str(v).strip()
 
 
 def _velocity(where: str, row: Row) -> None:
@@ -273,11 +274,16 @@ def _check_row(where: str, row: Row, nan: set[str]) -> None:
         if (m.low is not None and x < m.low) or (m.high is not None and x > m.high):
             raise ValueError(
                 f"{where}: {q} = {x:g}{unit_text(m.unit)} lies outside the possible range "
-                f"[{m.low}, {m.high}] ({m.description})"
+                f"[{_bound(m.low, -math.inf):g}, {_bound(m.high, math.inf):g}]"
+                f"{unit_text(m.unit)} ({m.description})"
             )
         if q == "e_t" and row.inputs.get("vx", 0.0) == 0.0:
             raise ValueError(f"{where}: e_t needs a drop with vx != 0")
     _check_magnitudes(where, row)
+
+
+def _bound(x: float | None, open_end: float) -> float:
+    return open_end if x is None else x
 
 
 def _check_inputs(where: str, row: Row) -> None:

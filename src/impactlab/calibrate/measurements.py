@@ -7,16 +7,19 @@ A row names the drop (``label``), its body and flat (``body``, ``body_material``
 quantities (:data:`impactlab.calibrate.quantities.MEASURABLE`: ``e``, ``e_t``, ``spin_out``,
 ``delta_p``, ``sliding_length``, ``scar_length``, ``duration``, ...), each with its standard
 uncertainty ``<name>_sigma`` (in its quantity's unit unless it names its own). Units: a CSV header
-may carry one (``delta_p [um]``), a TOML file a ``[units]`` table; a value may be a string with
-units (``"12 um"``); a bare number is otherwise in the input's unit (SI; a Brinell hardness in
-kgf/mm^2, as in the sweep), and an angle is refused bare (``"20 deg"``, or ``angle [deg]`` as
-the column header), as in study files and on the command line. Rows are read and checked by
-``impactlab.calibrate.measurement_rows``.
+may carry one (``delta_p [um]``), a TOML file a ``[units]`` table (its keys are column names,
+aliases too: ``T = "ms"``; an unknown key, or one that is not a quantity, is refused); a value
+may be a string with units (``"12 um"``); a bare number is otherwise in the input's unit (SI; a
+Brinell hardness in kgf/mm^2, as in the sweep), an angle (``angle``, ``incidence``,
+``angle_out``) is refused bare (``"20 deg"``, or ``angle [deg]`` as the column header), as in
+study files and on the command line, and a fraction (e, e_t, mu, ...) may be in percent. Rows
+are read and checked by ``impactlab.calibrate.measurement_rows``.
 """
 
 from __future__ import annotations
 
 import csv
+import io
 import math
 import tomllib
 from collections.abc import Mapping, Sequence
@@ -26,6 +29,8 @@ from typing import Any
 
 import numpy as np
 
+from impactlab._files import write_text_atomic
+from impactlab.calibrate.measurement_columns import resolve_units
 from impactlab.calibrate.measurement_files import csv_records, read_text
 from impactlab.calibrate.measurement_rows import Row, parse_row
 from impactlab.calibrate.quantities import DROP_CATEGORIES, MEASURABLE, NUMERIC_INPUTS
@@ -78,7 +83,8 @@ class Measurements:
         numbers. ValueError naming the row and column for anything not understood."""
         if not records:
             raise ValueError(f"{source or 'measurements'}: no drops (rows) found")
-        rows = [parse_row(i, r, units or {}) for i, r in enumerate(records)]
+        table = resolve_units(units or {})
+        rows = [parse_row(i, r, table) for i, r in enumerate(records)]
         return _assemble(rows, source)
 
     def table(self) -> Any:
@@ -112,16 +118,18 @@ class Measurements:
         return out
 
     def to_csv(self, path: str | Path) -> Path:
-        """Write the drops as a CSV file (units named in the header); returns the path."""
+        """Write the drops as a CSV file (UTF-8, units named in the header) whole or not at
+        all: a full disk or an interruption leaves a file there as it was; returns the path."""
         rows = self.records()
         header: list[str] = []
         for r in rows:
             header += [k for k in r if k not in header]
+        text = io.StringIO(newline="")
+        w = csv.DictWriter(text, fieldnames=header)
+        w.writeheader()
+        w.writerows(rows)
         p = Path(path)
-        with p.open("w", newline="") as fh:
-            w = csv.DictWriter(fh, fieldnames=header)
-            w.writeheader()
-            w.writerows(rows)
+        write_text_atomic(p, text.getvalue())
         return p
 
     def extended(self, other: Measurements) -> Measurements:
@@ -155,7 +163,11 @@ def read_measurements(path: str | Path) -> Measurements:
         if not isinstance(drops, list):
             raise ValueError(f"{p}: 'drop' must be an array of tables ([[drop]])")
         _refuse_nan(p, drops)
-        return Measurements.from_records(drops, doc.get("units", {}), source=str(p))
+        try:
+            units = resolve_units(doc.get("units", {}))
+        except ValueError as exc:
+            raise ValueError(f"{p}: {exc}") from None
+        return Measurements.from_records(drops, units, source=str(p))
     raise ValueError(f"measurements file must end in .csv or .toml, got {p.name!r}")
 
 

@@ -28,7 +28,7 @@ from scipy import stats
 from impactlab._display import display_unit
 from impactlab.calibrate.input_magnitudes import PLAUSIBLE_INPUTS
 from impactlab.calibrate.quantities import KINEMATICS, NUMERIC_INPUTS
-from impactlab.calibrate.values import did_you_mean, to_unit
+from impactlab.calibrate.values import bare, did_you_mean, to_unit
 from impactlab.sweep.inputs import INPUTS
 
 __all__ = ["PRIOR_KINDS", "Parameter", "parse_parameter"]
@@ -218,6 +218,7 @@ def _number(x: float) -> str:
     return text.removesuffix(".0")
 
 
+_NUMBERS = ("low", "high", "mean", "sd")
 _SPEC = re.compile(r"^\s*([a-z]+)\s*\((.*)\)\s*$")
 
 
@@ -229,19 +230,46 @@ def _value(text: str, unit: str, name: str, *, bound: bool) -> float:
     return to_unit(text, unit, name=name)
 
 
+_LEADING_NUMBER = re.compile(r"^\s*[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?\s*(?P<unit>\S.*)$")
+
+
+def _mixed_units(name: str, unit: str, spec: Any, args: list[Any]) -> None:
+    """ValueError when some numbers of a prior carry a unit and another one of a dimensional
+    input does not: ``normal(300 MPa, 50)`` would read the sd as 50 Pa. A bare 0, ``inf`` or
+    ``-inf`` is the same in every unit."""
+    if unit in ("", "1"):
+        return
+    given = [
+        a
+        for a in args
+        if isinstance(a, str) and not bare(a) and a.strip().lower().lstrip("+-") != "inf"
+    ]
+    if not given:
+        return
+    for a in args:
+        text = str(a).strip()
+        if bare(a) and float(text) != 0.0 and math.isfinite(float(text)):
+            m = _LEADING_NUMBER.match(str(given[0]))
+            shown = m.group("unit") if m else "HB"
+            raise ValueError(
+                f"prior of {name}: {spec!r}: {text} has no unit while {str(given[0]).strip()!r}"
+                f" has one: give its unit too (e.g. '{text} {shown}'); a number without a unit "
+                f"would be read in {unit}"
+            )
+
+
 def parse_parameter(name: str, spec: Any) -> Parameter:
     """A Parameter from a prior text, ``"uniform(100 MPa, 1 GPa)"`` (what
     ``Parameter.describe`` writes), or a mapping ``{"prior": "normal", "mean": ..., "sd": ...,
-    "low": ..., "high": ...}``; bare numbers are in the input's unit (``Parameter.unit``)."""
+    "low": ..., "high": ...}``; bare numbers are in the input's unit (``Parameter.unit``),
+    unless another number of the prior carries a unit: then a bare one (other than 0 or an
+    infinite bound) is refused."""
     unit = INPUTS[name].unit if name in INPUTS else "1"
     if isinstance(spec, dict):
+        _mixed_units(name, unit, spec, [v for k, v in spec.items() if k in _NUMBERS])
         kind = str(spec.get("prior", "uniform"))
-        nums = {
-            k: to_unit(v, unit, name=f"{name}.{k}")
-            for k, v in spec.items()
-            if k in ("low", "high", "mean", "sd")
-        }
-        extra = set(spec) - {"prior", "low", "high", "mean", "sd"}
+        nums = {k: to_unit(v, unit, name=f"{name}.{k}") for k, v in spec.items() if k in _NUMBERS}
+        extra = set(spec) - {"prior", *_NUMBERS}
         if extra:
             raise ValueError(f"prior of {name}: unknown key(s) {sorted(extra)}")
         return Parameter(name, kind, **nums)
@@ -254,6 +282,7 @@ def parse_parameter(name: str, spec: Any) -> Parameter:
     kind, args = m.group(1), [a.strip() for a in m.group(2).split(",") if a.strip()]
     if kind not in PRIOR_KINDS:
         raise ValueError(f"prior of {name}: unknown kind {kind!r}; known: {', '.join(PRIOR_KINDS)}")
+    _mixed_units(name, unit, spec, args)
     values = [_value(a, unit, name, bound=i >= 2) for i, a in enumerate(args)]
     if kind in ("uniform", "loguniform") and len(values) == 2:
         return Parameter(name, kind, low=values[0], high=values[1])

@@ -5,6 +5,7 @@ SI units and plausible ranges.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 from impactlab.schema import FIELDS
@@ -12,7 +13,9 @@ from impactlab.sweep.inputs import CATEGORY_INPUTS, INPUTS, KINEMATIC_INPUTS
 
 __all__ = [
     "AMBIGUOUS",
+    "ANGLES",
     "DROP_CATEGORIES",
+    "FRACTIONS",
     "MEASURABLE",
     "NUMERIC_INPUTS",
     "OUTPUT_ALIASES",
@@ -59,7 +62,16 @@ MEASURABLE: dict[str, Measurable] = {
         _engine("normal_impulse", 0.0),
         _engine("tangential_impulse"),
         _engine("energy_dissipated", 0.0),
-        _engine("angle_out"),
+        Measurable(
+            "angle_out",
+            "rad",
+            "the rod's angle to the flat at separation, in [0, 180] deg: the rod stays above "
+            "the flat (at 0 or 180 deg it lies in it); a contact turns it little (the paper's "
+            "rod at 1.4-5 m/s: under 0.2 deg), so it lies near the incoming angle",
+            ("angle_out",),
+            0.0,
+            math.pi,
+        ),
         Measurable(
             "sliding_distance",
             "m",
@@ -85,6 +97,15 @@ MEASURABLE: dict[str, Measurable] = {
         ),
     )
 }
+
+#: Measured quantities that are angles: refused bare, as the inputs' angles are (a bare 20 could
+#: be degrees or radians; ``sweep.inputs.UNIT_REQUIRED``).
+ANGLES: tuple[str, ...] = tuple(q for q, m in MEASURABLE.items() if m.unit == "rad")
+
+#: The numbers of unit 1 that are fractions, and so may be given in percent (``"43 %"``, a
+#: header ``e [%]``): the restitutions and the drop's mu and damping ratio (not a Poisson's
+#: ratio, a Meyer index or a number of modes).
+FRACTIONS: tuple[str, ...] = ("e", "e_energy", "e_t", "mu", "damping")
 
 #: The largest magnitude of a measured value (SI) that an impact of a drop test can have, and
 #: the unit to suggest: a larger one is a unit mistake (1400 um read as 1400 m, 50 ms as 50 s).

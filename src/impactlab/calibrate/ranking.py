@@ -5,7 +5,9 @@ log likelihoods by Pareto-smoothed importance sampling, and compared with ``arvi
 model predicts a drop it was not fitted to, it does not depend on the width of a uniform prior
 that the evidence penalises, and it comes from the same chain. With few drops its standard
 errors are large: ``dse`` says whether a difference means anything (about 2 dse or more); each
-row says whether its model is distinguishable from the best and whether its chain converged."""
+row says whether its model is distinguishable from the best and whether its chain converged.
+With one drop PSIS-LOO does not rank (leaving the drop out leaves no data; dse is 0): no model
+is distinguishable then, whatever the elpd_diff and the weights say."""
 
 from __future__ import annotations
 
@@ -27,6 +29,7 @@ def rank_models(posteriors: Mapping[str, ModelPosterior]) -> list[dict[str, Any]
     usable = {k: v for k, v in posteriors.items() if v.loo}
     if not usable:
         return []
+    drops = int(next(iter(usable.values())).log_lik.shape[-1])
     if len(usable) == 1:
         ((name, p),) = usable.items()
         rows = [
@@ -42,7 +45,7 @@ def rank_models(posteriors: Mapping[str, ModelPosterior]) -> list[dict[str, Any]
                 "warning": bool(p.loo["n_bad_k"]),
             }
         ]
-        return annotate(rows, posteriors)
+        return annotate(rows, posteriors, drops=drops)
     with quiet():
         table = az.compare({k: v.idata() for k, v in usable.items()}, ic="loo")
     rows = []
@@ -60,36 +63,48 @@ def rank_models(posteriors: Mapping[str, ModelPosterior]) -> list[dict[str, Any]
                 "warning": bool(r["warning"]),
             }
         )
-    return annotate(rows, posteriors)
+    return annotate(rows, posteriors, drops=drops)
 
 
 #: A difference of elpd smaller than this many of its standard errors does not tell two
 #: models apart.
 DSE_MULTIPLE = 2.0
 NOT_DISTINGUISHABLE = "not distinguishable (elpd_diff < 2 dse)"
+#: The note of every row of a ranking over one drop.
+NOT_RANKED = "not distinguishable (one drop: PSIS-LOO does not rank)"
 NOT_CONVERGED = "not converged"
 
 
-def distinguishable(row: Mapping[str, Any]) -> bool:
+def distinguishable(row: Mapping[str, Any], drops: int | None = None) -> bool:
     """Whether a ranked model's elpd differs from the best's by at least DSE_MULTIPLE of its
-    standard error (a tie, elpd_diff 0, never does)."""
+    standard error: never for a tie (elpd_diff 0), a standard error that is 0 or not a number
+    (nothing to judge the difference by), or fewer than 2 ``drops`` (None: not known)."""
     diff, dse = float(row["elpd_diff"]), float(row["dse"])
-    return diff > 0.0 and diff >= DSE_MULTIPLE * dse
+    if drops is not None and drops < 2:
+        return False
+    return diff > 0.0 and dse > 0.0 and diff >= DSE_MULTIPLE * dse
 
 
 def annotate(
-    rows: list[dict[str, Any]], posteriors: Mapping[str, ModelPosterior]
+    rows: list[dict[str, Any]],
+    posteriors: Mapping[str, ModelPosterior],
+    *,
+    drops: int | None = None,
 ) -> list[dict[str, Any]]:
     """``rows`` (best first) with pareto_k_max, converged, distinguishable (from the best; the
-    best's: from the runner-up; None for a single model) and note (what makes the row's place
-    unsure: ``NOT_DISTINGUISHABLE``, ``NOT_CONVERGED``, joined by "; ")."""
+    best's: from the runner-up; None for a single model, False for every row when there are
+    fewer than 2 ``drops``, None: not known) and note (what makes the row's place unsure:
+    ``NOT_DISTINGUISHABLE`` or, over one drop, ``NOT_RANKED``; ``NOT_CONVERGED``; joined by
+    "; ")."""
+    one = drops is not None and drops < 2
     for i, r in enumerate(rows):
         post = posteriors[r["model"]]
         r["pareto_k_max"] = float(post.loo.get("pareto_k_max", math.nan))
         r["converged"] = post.converged
         other = rows[1] if i == 0 and len(rows) > 1 else r
-        r["distinguishable"] = None if len(rows) == 1 else distinguishable(other)
-        notes = [NOT_DISTINGUISHABLE] if r["distinguishable"] is False else []
+        r["distinguishable"] = None if len(rows) == 1 else distinguishable(other, drops)
+        why = NOT_RANKED if one else NOT_DISTINGUISHABLE
+        notes = [why] if r["distinguishable"] is False else []
         notes += [] if post.converged else [NOT_CONVERGED]
         r["note"] = "; ".join(notes)
     return rows

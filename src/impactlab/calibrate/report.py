@@ -8,10 +8,12 @@ import html
 import io
 import json
 import math
+from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
 from impactlab._display import display_unit, format_number
+from impactlab._files import write_text_atomic
 from impactlab.calibrate.api import Calibration
 from impactlab.calibrate.jsonout import calibration_json
 from impactlab.calibrate.plots import corner_figure, ppc_figure
@@ -98,6 +100,40 @@ def _model_section(post: ModelPosterior) -> str:
     )
 
 
+def _setting(name: str, v: Any, nested: bool = False) -> str:
+    """A setting of results.json as text: a quantity with its unit, in its display unit
+    (``9.80665 m/s^2``, ``300 MPa``), a table as ``key = value; ...`` (within one, as
+    ``{ key = value, ... }``), None as the default."""
+    if isinstance(v, Mapping) and set(v) == {"value", "unit"}:
+        if isinstance(v["value"], bool) or not isinstance(v["value"], int | float):
+            return str(v["value"])
+        d = display_unit(name, str(v["unit"]))
+        shown = format_number(float(v["value"]) * d.scale, 6)
+        return shown if d.unit in ("", "1", "-") else f"{shown} {d.unit}"
+    if isinstance(v, Mapping):
+        items = [f"{k} = {_setting(str(k), x, True)}" for k, x in v.items() if x not in (None, {})]
+        if nested:
+            return "{ " + ", ".join(items) + " }"
+        return "; ".join(items) or "none"
+    if isinstance(v, list | tuple):
+        return ", ".join(_setting(name, x) for x in v)
+    return "default" if v is None else str(v)
+
+
+def _settings_rows(settings: Mapping[str, Any]) -> list[list[str]]:
+    """One row per setting, per prior and engine option, per model definition, and per
+    reference."""
+    rows = []
+    for key, v in settings.items():
+        if key in ("parameters", "engine", "model_definitions") and isinstance(v, Mapping):
+            rows += [[f"{key}: {k}", _setting(str(k), x)] for k, x in v.items()]
+        elif key == "references" and isinstance(v, list):
+            rows += [[key if i == 0 else "", str(r)] for i, r in enumerate(v)]
+        else:
+            rows.append([key, _setting(key, v)])
+    return rows
+
+
 def html_report(cal: Calibration, title: str = "impactlab calibration") -> str:
     """The report as one HTML document (figures embedded)."""
     m = cal.measurements
@@ -123,7 +159,7 @@ def html_report(cal: Calibration, title: str = "impactlab calibration") -> str:
             for r in cal.ranking
         ],
     )
-    settings = _table(["setting", "value"], [[k, str(v)] for k, v in cal.settings.items()])
+    settings = _table(["setting", "value"], _settings_rows(calibration_json(cal)["settings"]))
     notes = "".join(f"<li class='warn'>{html.escape(w)}</li>" for w in cal.warnings)
     ppc = _png(ppc_figure(cal.posteriors))
     return (
@@ -144,12 +180,13 @@ def html_report(cal: Calibration, title: str = "impactlab calibration") -> str:
 
 def save(cal: Calibration, out_dir: str | Path, *, report: bool = True) -> dict[str, Path]:
     """Write results.json (the command line's JSON, docs/json-schema.md) and report.html into
-    ``out_dir``; returns name -> path."""
+    ``out_dir``, each whole or not at all (a full disk leaves an earlier file as it was);
+    returns name -> path."""
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     files = {"results": out / "results.json"}
-    files["results"].write_text(json.dumps(calibration_json(cal), indent=2))
+    write_text_atomic(files["results"], json.dumps(calibration_json(cal), indent=2))
     if report:
         files["report"] = out / "report.html"
-        files["report"].write_text(html_report(cal))
+        write_text_atomic(files["report"], html_report(cal))
     return files

@@ -17,7 +17,13 @@ from impactlab.calibrate.posterior import LogPosterior
 from impactlab.calibrate.priors import Parameter
 from impactlab.calibrate.quantities import MEASURABLE
 
-__all__ = ["ModelPosterior", "summarise"]
+__all__ = ["ONE_DROP", "ModelPosterior", "summarise"]
+
+#: What a calibration on one drop says (a note of each model and a warning of the calibration).
+ONE_DROP = (
+    "PSIS-LOO with one drop: leaving it out leaves no data, so elpd_loo does not rank the "
+    "models (give at least two drops)"
+)
 
 #: Central credible interval reported (and checked by the coverage test): 90 %.
 INTERVAL = (0.05, 0.95)
@@ -138,8 +144,7 @@ def _loo(idata: Any) -> tuple[dict[str, float], list[str]]:
         ):
             continue
         if "point-wise LOO is the same with the sum LOO" in text:  # ArviZ, one observation
-            text = "PSIS-LOO with one drop: leaving it out leaves no data, so elpd_loo does not "
-            text += "rank the models (give at least two drops)"
+            text = ONE_DROP
         if text not in notes:
             notes.append(text)
     return out, notes

@@ -7,7 +7,9 @@ pointwise log likelihoods it stores (``impactlab.calibrate.ranking``), so no evi
 (nested sampling) is needed.
 
 With ``state`` (a file path) the chain is kept in emcee's HDF5 backend: an interrupted run
-continues from its last step when called again with the same inputs. Ctrl-C raises
+continues from its last step when called again with the same inputs; a saved chain of other
+inputs, or one that cannot be read, is never replaced unasked: ``SavedChainError`` names the
+file and why (``restart`` discards it). Ctrl-C raises
 ``CalibrationInterrupted`` (the step reached, and whether it was saved); a chain file another
 program holds open is a ``StateInUse`` error, never HDF5's traceback.
 """
@@ -24,7 +26,7 @@ import emcee
 import numpy as np
 
 from impactlab.calibrate.posterior import LogPosterior, initial_walkers
-from impactlab.calibrate.statelock import CalibrationInterrupted, chain_in_use
+from impactlab.calibrate.statelock import CalibrationInterrupted, SavedChainError, chain_in_use
 
 __all__ = ["ProgressFn", "run_chain"]
 
@@ -32,10 +34,10 @@ __all__ = ["ProgressFn", "run_chain"]
 ProgressFn = Callable[[str, int, int], None]
 
 
-def fingerprint(post: LogPosterior, walkers: int, seed: int) -> str:
-    """A hash of everything that determines the chain (data, model, priors, walkers, seed)."""
+def _inputs(post: LogPosterior, walkers: int, seed: int) -> dict[str, Any]:
+    """Everything that determines the chain (data, model, priors, walkers, seed), by part."""
     m = post.meas
-    doc = {
+    return {
         "model": repr(post.model),
         "params": [repr(p) for p in post.params],
         "walkers": walkers,
@@ -47,27 +49,78 @@ def fingerprint(post: LogPosterior, walkers: int, seed: int) -> str:
         "observed": {k: v.tolist() for k, v in m.observed.items()},
         "sigma": {k: v.tolist() for k, v in m.sigma.items()},
     }
+
+
+def _hash(doc: Any) -> str:
     text = json.dumps(doc, sort_keys=True, default=str).replace("NaN", "null")
     return hashlib.sha256(text.encode()).hexdigest()[:16]
 
 
-def _backend(state: Path | None, key: str, restart: bool) -> tuple[Any, bool]:
+def fingerprint(post: LogPosterior, walkers: int, seed: int) -> str:
+    """A hash of everything that determines the chain (data, model, priors, walkers, seed)."""
+    return _hash(_inputs(post, walkers, seed))
+
+
+#: What each part of the inputs is, to say which changed since a chain was saved.
+_PARTS = {
+    "model": "the model",
+    "params": "the priors",
+    "walkers": "the number of walkers",
+    "seed": "the seed",
+    "engine": "the engine options",
+    "labels": "the drops' labels",
+    "cats": "the drops' bodies or materials",
+    "inputs": "the drops' inputs",
+    "observed": "the measured values",
+    "sigma": "the measured values' uncertainties",
+}
+
+
+def _changed(saved: Any, parts: dict[str, str]) -> str:
+    """Why a saved chain does not fit: the parts of its inputs that differ from ``parts``
+    (the hashes stored with it), or all of them in general for a file without them."""
+    try:
+        old = json.loads(saved)
+        differ = [_PARTS[k] for k in _PARTS if old.get(k) != parts[k]]
+    except (TypeError, ValueError, AttributeError):
+        differ = []
+    what = ", ".join(differ) or "the measurements, priors, model, walkers, seed or engine options"
+    return f"was made with other inputs ({what} changed)"
+
+
+def _unreadable(exc: BaseException) -> str:
+    if isinstance(exc, KeyError):
+        return "holds no chain of a calibration"
+    text = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
+    return f"cannot be read ({text}): a run stopped while writing it, or another file"
+
+
+def _backend(
+    state: Path | None, key: str, parts: dict[str, str], restart: bool
+) -> tuple[Any, bool]:
     """(backend, resumed): emcee's HDF backend at ``state`` (resumed when it holds a chain of
-    the same fingerprint ``key``), or the in-memory one."""
+    the same fingerprint ``key``), or the in-memory one. A saved chain of other inputs, or one
+    that cannot be read, is kept and refused (``SavedChainError``) unless ``restart``; one
+    without a step is replaced (it holds no work)."""
     if state is None:
         return emcee.backends.Backend(), False
     state.parent.mkdir(parents=True, exist_ok=True)
-    backend = emcee.backends.HDFBackend(str(state), name="chain")
     if state.exists() and not restart:
+        backend = emcee.backends.HDFBackend(str(state), name="chain")
         try:
             with backend.open() as f:
-                same = f["chain"].attrs.get("impactlab_fingerprint") == key
-            if same and backend.iteration > 0:
-                return backend, True
+                attrs = f["chain"].attrs
+                same = attrs.get("impactlab_fingerprint") == key
+                saved_parts = attrs.get("impactlab_parts")
+            steps = backend.iteration
         except BlockingIOError as exc:  # HDF5's lock: another program has the file open
             raise chain_in_use(state, exc, 0) from None
-        except (OSError, KeyError):
-            pass
+        except (OSError, KeyError) as exc:
+            raise SavedChainError(state, _unreadable(exc)) from None
+        if same and steps > 0:
+            return backend, True
+        if steps > 0:
+            raise SavedChainError(state, _changed(saved_parts, parts))
     if state.exists():
         state.unlink()
     return emcee.backends.HDFBackend(str(state), name="chain"), False
@@ -85,8 +138,9 @@ def run_chain(
 ) -> emcee.EnsembleSampler:
     """Run (or continue) the ensemble for ``steps`` steps in all; returns the sampler."""
     ndim = len(post.params)
-    key = fingerprint(post, walkers, seed)
-    backend, resumed = _backend(state, key, restart)
+    doc = _inputs(post, walkers, seed)
+    key, parts = _hash(doc), {k: _hash(v) for k, v in doc.items()}
+    backend, resumed = _backend(state, key, parts, restart)
     sampler = emcee.EnsembleSampler(walkers, ndim, post, vectorize=True, backend=backend)
     # the log posterior itself, not emcee's wrapper: that prints a traceback of any exception
     # (Ctrl-C included) before passing it on
@@ -102,6 +156,7 @@ def run_chain(
         if state is not None:
             with backend.open("a") as f:
                 f["chain"].attrs["impactlab_fingerprint"] = key
+                f["chain"].attrs["impactlab_parts"] = json.dumps(parts)
         done = 0
     if progress is not None:
         progress(post.model.name, done, steps)

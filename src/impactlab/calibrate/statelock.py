@@ -1,6 +1,7 @@
 """One calibration at a time in a folder of saved chains: a lock file held while it runs (two
 runs writing one chain would each crash in HDF5's own lock, or spoil the chain), and the
-errors of a chain file another program holds open, or of an interrupted run."""
+errors of a chain file another program holds open, of a saved chain that does not fit the
+calibration, or of an interrupted run."""
 
 from __future__ import annotations
 
@@ -9,9 +10,15 @@ import sys
 from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
-from typing import IO
+from typing import IO, Any
 
-__all__ = ["CalibrationInterrupted", "StateInUseError", "chain_in_use", "state_lock"]
+__all__ = [
+    "CalibrationInterrupted",
+    "SavedChainError",
+    "StateInUseError",
+    "chain_in_use",
+    "state_lock",
+]
 
 LOCK_NAME = ".lock"
 
@@ -23,6 +30,26 @@ class StateInUseError(ValueError):
     def __init__(self, message: str, folder: Path) -> None:
         super().__init__(message)
         self.folder = folder
+
+    def __reduce__(self) -> tuple[Any, ...]:  # pickled whole: raised on a Dask worker
+        return type(self), (str(self), self.folder)
+
+
+class SavedChainError(ValueError):
+    """A saved chain, ``state``, that this calibration cannot resume, and ``reason``: made with
+    other inputs (the measurements, priors, model, walkers, seed or engine options changed), or
+    unreadable (a run stopped while writing it). The file is kept; ``restart=True``
+    (``--restart``) discards it."""
+
+    def __init__(self, state: Path, reason: str) -> None:
+        self.state, self.reason = state, reason
+        super().__init__(
+            f"the saved chain {state} {reason}; it is kept: restart=True discards it and starts "
+            "again (or give another state_dir)"
+        )
+
+    def __reduce__(self) -> tuple[Any, ...]:  # pickled whole: raised on a Dask worker
+        return type(self), (self.state, self.reason)
 
 
 class CalibrationInterrupted(KeyboardInterrupt):

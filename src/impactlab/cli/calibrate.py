@@ -6,8 +6,10 @@ impactlab calibrate DROPS.csv|DROPS.toml --param "mu=uniform(0, 0.6)" [--param .
                     [--scheduler tcp://host:port]
 
 With ``--out DIR`` the chains are kept in DIR/state (an interrupted run continues where it
-stopped when run again with the same inputs; one run at a time uses DIR) and results.json and
-report.html are written there. Ctrl-C stops with one line naming the step reached.
+stopped when run again with the same inputs; a saved chain of other inputs, or one that cannot
+be read, stops the run, naming the file: ``--restart`` discards it; one run at a time uses DIR)
+and results.json and report.html are written there (each whole or not at all). Ctrl-C stops
+with one line naming the step reached.
 """
 
 from __future__ import annotations
@@ -143,7 +145,7 @@ def _print(cal: Any) -> None:
             f"{fails} failed cases (likelihood zero)"
         )
         for w in post.warnings:
-            if f"{name}: {w}" not in shown:
+            if f"{name}: {w}" not in shown and w not in shown:
                 _line(f"  note: {w}")
 
 
@@ -163,7 +165,10 @@ def calibrate_cmd(
     out: Annotated[
         Path | None, typer.Option(help="Folder for the saved chains, results.json, report.html.")
     ] = None,
-    restart: Annotated[bool, typer.Option(help="Discard saved chains in --out.")] = False,
+    restart: Annotated[
+        bool,
+        typer.Option(help="Discard the saved chains in --out (one of other inputs stops a run)."),
+    ] = False,
     scheduler: Annotated[
         str | None, typer.Option(help="Dask scheduler address: one task per model there.")
     ] = None,
@@ -175,7 +180,7 @@ def calibrate_cmd(
     from impactlab.calibrate import calibrate
     from impactlab.calibrate.config import load_config
     from impactlab.calibrate.report import save
-    from impactlab.calibrate.statelock import StateInUseError
+    from impactlab.calibrate.statelock import SavedChainError, StateInUseError
 
     kw: dict[str, Any] = load_config(config) if config is not None else {}
     if measurements is not None:
@@ -205,6 +210,11 @@ def calibrate_cmd(
             f"another calibration is using {out}: wait for it to end or choose another --out"
             if "another calibration" in str(exc)
             else str(exc)
+        ) from None
+    except SavedChainError as exc:
+        raise UserError(
+            f"the saved chain {exc.state} {exc.reason}; it is kept: --restart discards it and "
+            "starts again (or choose another --out)"
         ) from None
     except KeyboardInterrupt as exc:
         _interrupted(exc, bar, out)

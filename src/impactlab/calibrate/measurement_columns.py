@@ -1,0 +1,157 @@
+"""The columns of a measurements file: what each name is (aliases resolved), the ``[units]``
+table of a TOML file read through the same names, and values in percent.
+
+A ``[units]`` key is a column's name as a drop's column would be written (``T`` is
+``duration``, ``F_sigma`` is ``mean_force_sigma``); a key that names no column, or a column
+that is not a quantity (``label``, ``body``), is refused, so that no unit is dropped silently.
+A fraction (``quantities.FRACTIONS``: e, e_energy, e_t, mu, damping) may be given in percent,
+1 % = 0.01 of 1 (``"43 %"``, a header ``e [%]``, ``[units] e = "%"``).
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Mapping
+from typing import Any
+
+from impactlab.calibrate.quantities import (
+    AMBIGUOUS,
+    DROP_CATEGORIES,
+    FRACTIONS,
+    MEASURABLE,
+    NUMERIC_INPUTS,
+    OUTPUT_ALIASES,
+    canonical_output,
+)
+from impactlab.calibrate.values import did_you_mean, is_number
+
+__all__ = [
+    "LABEL_KEYS",
+    "column_kind",
+    "fraction",
+    "is_percent",
+    "resolve_units",
+    "split_header",
+]
+
+LABEL_KEYS = ("label", "drop", "name")
+#: Every column name a drop takes (for the nearest name offered for a misspelt one).
+_COLUMNS: tuple[str, ...] = (
+    *LABEL_KEYS,
+    *DROP_CATEGORIES,
+    *NUMERIC_INPUTS,
+    *(n for q in (*MEASURABLE, *OUTPUT_ALIASES) for n in (q, f"{q}_sigma")),
+)
+_PERCENT = re.compile(r"^\s*(?P<x>\S+?)\s*(?:%|percent)\s*$", re.IGNORECASE)
+
+
+def split_header(key: str) -> tuple[str, str | None]:
+    """``"delta_p [um]"`` -> ("delta_p", "um")."""
+    key = key.strip()
+    if key.endswith("]") and "[" in key:
+        name, unit = key[:-1].split("[", 1)
+        return name.strip(), unit.strip()
+    return key, None
+
+
+def column_kind(where: str, name: str) -> tuple[str, str]:
+    """(what the column is: "label", "category", "input", "sigma", "value", its canonical
+    name); ValueError for a column a drop does not take (with the nearest name)."""
+    if name in LABEL_KEYS:
+        return "label", "label"
+    if name in ("law", "friction"):
+        raise ValueError(
+            f"{where}: {name!r} is not a property of a drop: the contact law and the "
+            "friction model are chosen by the candidate models of the calibration"
+        )
+    ambiguous = AMBIGUOUS.get(name.removesuffix("_sigma"))
+    if ambiguous:
+        raise ValueError(f"{where}: column {name!r}: {ambiguous}")
+    if name in DROP_CATEGORIES:
+        return "category", name
+    if name in NUMERIC_INPUTS:
+        return "input", name
+    q = canonical_output(name.removesuffix("_sigma"))
+    if name.endswith("_sigma") and q:
+        return "sigma", f"{q}_sigma"
+    if canonical_output(name):
+        return "value", str(canonical_output(name))
+    if ";" in name or "\t" in name:
+        raise ValueError(
+            f"{where}: the header is one column {name!r}: the file separates its columns "
+            "with ';' or tabs; a measurements CSV separates them with commas"
+        )
+    raise ValueError(
+        f"{where}: unknown column {name!r}{did_you_mean(name, _COLUMNS)}; a drop takes label, "
+        f"{', '.join(DROP_CATEGORIES)}, the numeric inputs ({', '.join(NUMERIC_INPUTS)}) "
+        f"and measured quantities ({', '.join(MEASURABLE)}) with <name>_sigma"
+    )
+
+
+def resolve_units(units: Any) -> dict[str, str]:
+    """The ``[units]`` table as canonical column -> unit text (``{"T": "ms"}`` ->
+    ``{"duration": "ms"}``). ValueError naming the key for one that names no column (with
+    the nearest name), a column that is not a quantity (label, body, materials), a column
+    named twice (``T`` and ``duration``) and a unit that is not text."""
+    if not isinstance(units, Mapping):
+        raise ValueError(f"[units] must be a table of column = unit, got {units!r}")
+    out: dict[str, str] = {}
+    keys: dict[str, str] = {}
+    for key, unit in units.items():
+        name = str(key)
+        if name not in _COLUMNS and name.removesuffix("_sigma") not in AMBIGUOUS:
+            raise ValueError(
+                f"[units]: unknown column {name!r}{did_you_mean(name, _COLUMNS)}; a key of "
+                "[units] is a column of the drops: a numeric input, a measured quantity or its "
+                "_sigma"
+            )
+        kind, canon = column_kind("[units]", name)
+        if kind in ("label", "category"):
+            raise ValueError(
+                f"[units] {name} = {unit!r}: {name} is not a quantity ({_what(kind)}), so it "
+                "takes no unit; remove the key"
+            )
+        if not isinstance(unit, str) or not unit.strip():
+            raise ValueError(
+                f'[units] {name} = {unit!r}: a unit is text, e.g. {name} = "um" (a number '
+                'with its unit belongs in the drop: "22 um")'
+            )
+        if canon in keys:
+            raise ValueError(
+                f"[units]: {canon} is given twice (keys {keys[canon]!r} and {name!r}); keep one"
+            )
+        keys[canon], out[canon] = name, unit.strip()
+    return out
+
+
+def _what(kind: str) -> str:
+    return "the drop's name" if kind == "label" else "a body or a material, chosen by name"
+
+
+def is_percent(unit: str | None) -> bool:
+    """Whether the unit text ``unit`` is percent (``%``, ``percent``)."""
+    return unit is not None and unit.strip().lower() in ("%", "percent")
+
+
+def fraction(name: str, v: Any, column_unit: str | None) -> float | None:
+    """``v`` as a fraction of 1 when it is in percent (``"43 %"``, or a bare 43 in a column of
+    unit ``%``): 0.43; None when it is not. ValueError for a percentage of ``name`` when
+    ``name`` is no fraction (``quantities.FRACTIONS``)."""
+    m = _PERCENT.match(v) if isinstance(v, str) else None
+    if m and is_number(m.group("x")):
+        x = float(m.group("x"))
+    elif is_percent(column_unit) and not isinstance(v, bool) and _number(v):
+        x = float(v)
+    else:
+        return None
+    base = name.removesuffix("_sigma")
+    if base not in FRACTIONS:
+        raise ValueError(
+            f"{name}: {v!r} is in percent; only a fraction ({', '.join(FRACTIONS)}) may be, and "
+            f"{base} is not one: give it as a plain number"
+        )
+    return x / 100.0
+
+
+def _number(v: Any) -> bool:
+    return isinstance(v, int | float) or (isinstance(v, str) and is_number(v))
