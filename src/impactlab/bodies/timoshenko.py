@@ -16,6 +16,7 @@ cross-section, gamma = W' - Psi the shear angle; the rod and s are those of
 from __future__ import annotations
 
 import functools
+import itertools
 import math
 from collections.abc import Callable
 
@@ -170,7 +171,8 @@ def _frequencies(sec: RodSection, n: int) -> np.ndarray:
     cut-off the two spectra can put two roots within one grid step, where the determinant
     dips to zero and back without a sign change between grid points: at each such dip
     (a local minimum of |det| between three grid points of one sign) the determinant's
-    extremum is located, and where it crosses zero both roots are refined there."""
+    extremum is located, and where it crosses zero both roots are refined there. The first n
+    are then checked against the count of the frequencies below the last (``_counted``)."""
     from scipy.optimize import brentq  # on first use: ``import impactlab`` stays light
 
     om_eb = eb_frequencies(sec, n + 2)
@@ -199,7 +201,35 @@ def _frequencies(sec: RodSection, n: int) -> np.ndarray:
             break
     if len(roots) < n:
         raise RuntimeError(f"found only {len(roots)} Timoshenko roots below {grid[-1]:.4g} rad/s")
-    return np.array(sorted(roots)[:n])
+    return np.array(_counted(sec, sorted(roots)[:n], float(grid[0])))
+
+
+def _counted(sec: RodSection, roots: list[float], start: float) -> list[float]:
+    """``roots`` [rad/s] (the scan's first n, ascending) checked against the count of the
+    frequencies below the last (``timoshenko_count``): where the scan missed roots (two
+    within a grid step whose dip falls between grid points) or took a false one, the roots
+    of every interval between the midpoints of the scan's whose count differs from one are
+    found again from the count; the others are kept to the bit."""
+    from impactlab.bodies.timoshenko_count import bending_modes_below, roots_between
+
+    n = len(roots)
+    top = roots[-1] * (1.0 + 1e-9)
+    if bending_modes_below(sec, top) == n:
+        return roots
+    edges = [start] + [0.5 * (a + b) for a, b in itertools.pairwise(roots)] + [top]
+    counts = [bending_modes_below(sec, om) for om in edges]
+    out = roots_between(sec, 1e-3 * start, start, 0, counts[0])  # below the scan's grid
+    for j, root in enumerate(roots):
+        if counts[j + 1] - counts[j] == 1:
+            out.append(root)
+        else:
+            out += roots_between(sec, edges[j], edges[j + 1], counts[j], counts[j + 1])
+    hi = top
+    while len(out) < n:  # false roots taken out: the next ones above the scan's last
+        lo, hi = hi, hi * 1.05
+        c_lo, c_hi = bending_modes_below(sec, lo), bending_modes_below(sec, hi)
+        out += roots_between(sec, lo, hi, c_lo, c_hi)
+    return sorted(out)[:n]
 
 
 def _dips(before: float, here: float, after: float) -> bool:
