@@ -100,3 +100,15 @@ def scans(data_dir: Path) -> dict[int, Scan]:
             files[fmt] = S.write_scan(z, dx, dx, data_dir / f"dent_{key}.{ext}", fmt=fmt)
         out[key] = Scan(truth, z, dx, files)
     return out
+
+
+@pytest.fixture(scope="session")
+def junk(data_dir: Path) -> dict[str, Path]:
+    """Files that exist but cannot be read ("c3d": markers, "x3p": a scan): their stage fails
+    and the others go on (a path that names no file is refused before any work instead)."""
+    out = {}
+    for ext in ("c3d", "x3p"):
+        path = data_dir / f"junk.{ext}"
+        path.write_bytes(b"not a measurement\n" * 8)
+        out[ext] = path
+    return out

@@ -308,10 +308,12 @@ PLAIN_8MM = ("--pixel-size", "8 mm", "--height-unit", "m")
 
 
 def test_cli_refuses_impossible_dent(
-    cli_main: Callable[..., tuple[int, str, str]], plain_scan: tuple[Path, float, Any]
+    cli_main: Callable[..., tuple[int, str, str]],
+    plain_scan: tuple[Path, float, Any],
+    junk: dict[str, Path],
 ) -> None:
     path, _, _ = plain_scan
-    code, _, stderr = cli_main("analyze", "none.c3d", str(path), *PLAIN_8MM)
+    code, _, stderr = cli_main("analyze", str(junk["c3d"]), str(path), *PLAIN_8MM)
     assert code == 2 and "Traceback" not in stderr
     err = stderr.strip().splitlines()
     assert len(err) == 1 and "scan: " in err[0] and "wider than the tip's diameter" in err[0]

@@ -104,25 +104,30 @@ def test_a_figure_of_an_earlier_run_is_removed(tmp_path: Path, drops: dict, scan
 
 
 def test_a_folder_in_the_way_of_results_json_is_named(
-    tmp_path: Path, drops: dict, cli_main: CliMain
+    tmp_path: Path, drops: dict, cli_main: CliMain, junk: dict[str, Path]
 ) -> None:
-    """results.json (and a figure) that cannot be written: the stage's error naming the file;
-    the command line prints the measured table first, then the error, exit status 2."""
+    """results.json that cannot be written: the stage's error naming the file, and nothing
+    written into the folder (the figures go with it); the command line prints the measured
+    table first, then the error, exit status 2. A figure that cannot be written is named."""
     (tmp_path / "results.json").mkdir()
-    (tmp_path / "kinematics.png").mkdir()
     d = drops[20]
     res = analyze(d.c3d, None, geometry=d.geometry, out_dir=tmp_path)
     assert res.kinematics is not None and "results" not in res.files
     message = res.errors["results"]
     assert "results.json" in message and "a folder of that name is in the way" in message
-    assert "kinematics.png" in res.errors["figures"]
+    assert "results.json" in res.errors["figures"] and not res.figures
+    assert not (tmp_path / "kinematics.png").exists()
     geo = tmp_path / "geometry.toml"
     geo.write_text(GEOMETRY_TOML)
-    code, out, err = cli_main("analyze", str(d.c3d), "missing.x3p", "--geometry", str(geo),
+    code, out, err = cli_main("analyze", str(d.c3d), str(junk["x3p"]), "--geometry", str(geo),
                               "--out", str(tmp_path))  # fmt: skip
     assert code == 2 and "│ e " in out and "│ mu " in out
     (line,) = [ln for ln in err.splitlines() if ln.startswith("error:")]
     assert "results: cannot write" in line and "results.json" in line and "Errno" not in line
+    (tmp_path / "results.json").rmdir()
+    (tmp_path / "kinematics.png").mkdir()
+    res = analyze(d.c3d, None, geometry=d.geometry, out_dir=tmp_path)
+    assert "kinematics.png" in res.errors["figures"] and "results" in res.files
 
 
 # -- units named in messages ---------------------------------------------------------------------
@@ -143,11 +148,11 @@ def test_a_dent_read_in_a_too_small_unit_names_that_unit(
 
 
 def test_a_geometry_without_units_is_said_to_be_read_in_metres(
-    tmp_path: Path, drops: dict, cli_main: CliMain
+    tmp_path: Path, drops: dict, cli_main: CliMain, junk: dict[str, Path]
 ) -> None:
     geo = tmp_path / "geometry.toml"
     geo.write_text(GEOMETRY_TOML.replace('units = "mm"\n', ""))
-    code, _, err = cli_main("analyze", str(drops[20].c3d), "missing.x3p", "--geometry", str(geo))
+    code, _, err = cli_main("analyze", str(drops[20].c3d), str(junk["x3p"]), "--geometry", str(geo))
     assert code == 2
     assert "does not match the markers" in err
     assert "the geometry was read in m (no units key)" in err
@@ -159,7 +164,7 @@ def test_a_geometry_entry_that_is_not_three_numbers_is_named(
     geo = tmp_path / "geometry.toml"
     geo.write_text(GEOMETRY_TOML.replace("[-30.0, 18.0, 0.0]", '"a"'))
     code, _, err = cli_main("analyze", str(drops[20].c3d), "missing.x3p", "--geometry", str(geo))
-    assert code == 2
+    assert code == 2  # (the geometry file is read before the paths are looked at)
     assert err.strip() == (
         f"error: --geometry {str(geo)!r}: markers.M1 must be [x, y, z], three numbers (in the "
         "table's units), got 'a'"

@@ -8,7 +8,9 @@ import json
 from collections.abc import Callable
 from pathlib import Path
 
-from impactlab.experiment import analyze
+import pytest
+
+from impactlab.experiment import FileFormatError, analyze
 from impactlab.experiment.saving import MARK, written_by_analyze
 
 from .conftest import GEOMETRY_TOML
@@ -17,11 +19,13 @@ CliMain = Callable[..., tuple[int, str, str]]
 PHOTO = b"my photo"
 
 
-def test_a_users_figure_is_never_removed(tmp_path: Path, drops: dict) -> None:
+def test_a_users_figure_is_never_removed(
+    tmp_path: Path, drops: dict, junk: dict[str, Path]
+) -> None:
     """'removed dent.png, left by an earlier run' deleted a file that no run had written."""
     (tmp_path / "dent.png").write_bytes(PHOTO)
     d = drops[20]
-    res = analyze(d.c3d, tmp_path / "nonexist.x3p", geometry=d.geometry, out_dir=tmp_path)
+    res = analyze(d.c3d, junk["x3p"], geometry=d.geometry, out_dir=tmp_path)
     assert (tmp_path / "dent.png").read_bytes() == PHOTO
     (note,) = [w for w in res.warnings if "dent.png" in w]
     assert "was not written by impactlab analyze: it is left as it is" in note
@@ -48,7 +52,7 @@ def test_a_users_results_json_is_never_written_over(tmp_path: Path, drops: dict)
 
 
 def test_a_figure_of_an_earlier_run_is_still_removed(
-    tmp_path: Path, drops: dict, scans: dict, cli_main: CliMain
+    tmp_path: Path, drops: dict, scans: dict, cli_main: CliMain, junk: dict[str, Path]
 ) -> None:
     d = drops[20]
     first = analyze(d.c3d, scans[20].files["x3p"], geometry=d.geometry, out_dir=tmp_path)
@@ -58,7 +62,7 @@ def test_a_figure_of_an_earlier_run_is_still_removed(
     assert written_by_analyze(tmp_path / "results.json")
     geo = tmp_path / "geometry.toml"
     geo.write_text(GEOMETRY_TOML)
-    code, _, err = cli_main("analyze", str(d.c3d), "nonexist.x3p", "--geometry", str(geo),
+    code, _, err = cli_main("analyze", str(d.c3d), str(junk["x3p"]), "--geometry", str(geo),
                             "--out", str(tmp_path))  # fmt: skip
     assert code == 2 and not (tmp_path / "dent.png").exists()
     assert "removed" in err and "dent.png" in err and "left by an earlier run" in err
@@ -72,3 +76,86 @@ def test_an_unreadable_or_other_file_is_not_taken_for_a_run(tmp_path: Path) -> N
     folder = tmp_path / "kinematics.png"
     folder.mkdir()
     assert not written_by_analyze(folder)
+
+
+# -- damaged files of an earlier run, a folder checked before anything is written ----------------
+
+
+def _first_run(out: Path, drops: dict, scans: dict) -> dict[str, bytes]:
+    d = drops[20]
+    first = analyze(d.c3d, scans[20].files["x3p"], geometry=d.geometry, out_dir=out)
+    assert set(first.figures) == {"kinematics", "dent"} and "results" in first.files
+    return {p.name: p.read_bytes() for p in out.iterdir()}
+
+
+def test_a_results_json_cut_short_by_an_earlier_run_is_replaced(
+    tmp_path: Path, drops: dict, scans: dict
+) -> None:
+    """A results.json cut short (an interrupted run) blocked re-analysis as 'not written by
+    impactlab analyze', after the new figures had been written."""
+    before = _first_run(tmp_path, drops, scans)
+    (tmp_path / "results.json").write_bytes(before["results.json"][:300])
+    d = drops[20]
+    res = analyze(d.c3d, scans[20].files["x3p"], geometry=d.geometry, out_dir=tmp_path)
+    assert res.ok, res.errors
+    saved = json.loads((tmp_path / "results.json").read_text())
+    assert saved["summary"]["L_s"]["value"] > 0
+    (note,) = [w for w in res.warnings if "results.json" in w]
+    assert note.startswith("results: ") and "is replaced: it is cut short" in note
+    (tmp_path / "results.json").write_bytes(b"")  # empty: nothing to lose either
+    res = analyze(d.c3d, None, geometry=d.geometry, out_dir=tmp_path)
+    assert "results" in res.files and any("it is empty" in w for w in res.warnings)
+
+
+def test_a_users_results_json_leaves_the_whole_folder_as_it_was(
+    tmp_path: Path, drops: dict, scans: dict
+) -> None:
+    before = _first_run(tmp_path, drops, scans)
+    (tmp_path / "results.json").write_text('{"mine": 1}')
+    before["results.json"] = b'{"mine": 1}'
+    d = drops[45]
+    res = analyze(d.c3d, None, geometry=d.geometry, out_dir=tmp_path)
+    assert {p.name: p.read_bytes() for p in tmp_path.iterdir()} == before
+    assert "not written" in res.errors["results"] and not res.figures
+    figures = res.errors["figures"]
+    assert "results.json" in figures and "nothing in the folder" in figures
+
+
+def test_a_misspelt_input_path_leaves_the_folder_as_it_was(
+    tmp_path: Path, drops: dict, scans: dict, cli_main: CliMain
+) -> None:
+    """A scan path that names no file removed the earlier run's dent figure and rewrote
+    results.json without delta_p, L_s, T and F."""
+    out = tmp_path / "out"
+    before = _first_run(out, drops, scans)
+    d = drops[20]
+    with pytest.raises(FileFormatError) as caught:
+        analyze(d.c3d, tmp_path / "dnet.x3p", geometry=d.geometry, out_dir=out)
+    assert "dnet.x3p: no such file (scan_path); nothing was read or written" in str(caught.value)
+    assert {p.name: p.read_bytes() for p in out.iterdir()} == before
+    geo = tmp_path / "geometry.toml"
+    geo.write_text(GEOMETRY_TOML)
+    for args, name in (((str(d.c3d), "dnet.x3p"), "SCAN"), (("drpo.c3d", str(d.c3d)), "MARKERS")):
+        code, _, err = cli_main("analyze", *args, "--geometry", str(geo), "--out", str(out))
+        assert code == 2 and f"no such file ({name}); nothing was read or written" in err
+        assert {p.name: p.read_bytes() for p in out.iterdir()} == before
+    code, _, _ = cli_main("analyze", str(d.c3d), "dnet.x3p", "--out", str(tmp_path / "new"))
+    assert code == 2 and not (tmp_path / "new").exists()
+    with pytest.raises(FileFormatError, match=r"not a file \(markers_path\)"):
+        analyze(tmp_path, None)
+
+
+def test_results_json_is_written_whole_or_not_at_all(
+    tmp_path: Path, drops: dict, scans: dict, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    before = _first_run(tmp_path, drops, scans)
+
+    def full_disk(fd: int) -> None:
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr("impactlab._files.os.fsync", full_disk)
+    d = drops[20]
+    res = analyze(d.c3d, scans[20].files["x3p"], geometry=d.geometry, out_dir=tmp_path)
+    assert "No space left on device" in res.errors["results"]
+    assert (tmp_path / "results.json").read_bytes() == before["results.json"]
+    assert not [p.name for p in tmp_path.iterdir() if p.name not in before]  # nothing partial

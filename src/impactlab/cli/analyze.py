@@ -119,11 +119,14 @@ def analyze_cmd(
     pixel_size: str | None = typer.Option(
         None,
         "--pixel-size",
-        help="Pixel size of a plain height map ('2 um'; rectangular pixels: '2 um, 3 um', x then "
-        "y).",
+        help="Pixel size of a height map whose file does not state it ('2 um'; rectangular "
+        "pixels: '2 um, 3 um', x then y); a file that states it must agree.",
     ),
     height_unit: str | None = typer.Option(
-        None, "--height-unit", help="Height unit of a plain height map ('um')."
+        None,
+        "--height-unit",
+        help="Height unit of a height map whose file does not state it ('um'); a file that "
+        "states it must agree.",
     ),
     flip_heights: bool = typer.Option(
         False, "--flip-heights", help="The scan stores depths as heights: turn it over."
@@ -150,10 +153,14 @@ def analyze_cmd(
     Example: impactlab analyze drop.c3d dent.x3p --geometry markers.toml --out results/
     """
     from impactlab.experiment import analyze  # lazy: a fast CLI start
-    from impactlab.experiment.checks import output_folder
+    from impactlab.experiment.checks import check_input_file, check_output_folder, output_folder
 
     rod_obj, rod_data = _rod_from(rod)
     geo = _geometry_from(geometry, rod_data)
+    if out is not None:
+        check_output_folder(out, "--out")
+    check_input_file(markers, "MARKERS")  # a misspelt path: nothing read, --out untouched
+    check_input_file(scan, "SCAN")
     folder = output_folder(out, "--out") if out is not None else None
     res = analyze(
         markers,

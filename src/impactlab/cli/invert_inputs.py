@@ -9,10 +9,11 @@ file for a command-line sigma) it is refused: its unit would be a guess.
 
 from __future__ import annotations
 
+import math
 import re
 from typing import Any
 
-from impactlab.cli._common import UserError, angle_quantity, parse_rod_table, quantity
+from impactlab.cli._common import UserError, angle_quantity, any_angle, parse_rod_table, quantity
 from impactlab.cli.config_values import check_booleans
 
 __all__ = [
@@ -50,9 +51,23 @@ EXAMPLE_UNITS = {"v_i": "m/s", "delta_p": "um", "L_s": "um", "dv_cy": "m/s"}
 EXAMPLE_SIGMAS = {"v_i": "0.01 m/s", "delta_p": "0.5 um", "L_s": "50 um", "dv_cy": "0.005 m/s"}
 
 
+def _inversion_angle(value: Any, name: str) -> float:
+    """The rod's angle [rad] of an inversion: with its unit, in (0, 90) deg, open at both ends
+    (the range of ``impactlab.analytic.invert``: at 90 deg the tip cannot slide)."""
+    th = any_angle(value, name)
+    if not 0.0 < th < 0.5 * math.pi:
+        raise UserError(
+            f"{name} must lie in (0, 90) deg, open at both ends (the rod tilted: at 90 deg it "
+            f"stands vertical and its tip cannot slide), got {str(value).strip()}"
+        )
+    return th
+
+
 def parse_value(value: Any, unit: str, name: str) -> float:
     if unit == "degree":
-        return angle_quantity(value, name)
+        if name.startswith(("--sigma-", "sigma.")):  # a standard deviation, not the angle
+            return angle_quantity(value, name)
+        return _inversion_angle(value, name)
     if unit:
         return quantity(value, unit, name)  # type: ignore[return-value]
     if isinstance(value, str):

@@ -46,7 +46,12 @@ from impactlab.experiment.profilometry import DentMetrics, measure_dent, read_sc
 from impactlab.experiment.profilometry.plausibility import PLAUSIBLE_DEPTH, check_dent
 from impactlab.experiment.result import ExperimentResult
 from impactlab.experiment.rigid import MarkerGeometry
-from impactlab.experiment.saving import remove_stale_figures, save_results, write_figures
+from impactlab.experiment.saving import (
+    check_folder,
+    remove_stale_figures,
+    save_results,
+    write_figures,
+)
 from impactlab.experiment.sticking import sticking_message
 from impactlab.materials import Material
 
@@ -209,20 +214,23 @@ def analyze(
     Parameters
     ----------
     markers_path : C3D or CSV marker file (None skips the stage).
-    scan_path : profilometer scan (None skips the stage).
+    scan_path : profilometer scan (None skips the stage). A path that names no readable file
+        raises FileFormatError at once, before anything is written.
     rod : an ``impactlab.bodies.Rod`` (or rod-like: :func:`rod_properties`); default (or
         ``"paper"``, as ``--rod paper``) the paper's.
     flat : a flat material (``Material`` or preset name): also run the impact engine with the
         measured initial state, for comparison.
     geometry : the markers on the rod (:class:`MarkerGeometry`); None estimates it.
     up : the lab's upward axis ("+z" default). marker_units : override/supply the marker units.
-    pixel_size, height_unit : for plain .npy/.csv height maps.
+    pixel_size, height_unit : for height maps whose file does not state them (plain .npy/.csv);
+        where the file states them they must agree with it (the stage's error otherwise).
     flip_heights : the scan stores depths as positive heights: read it the other way up (a
         sign-flipped scan is refused otherwise, see :func:`measure_dent`).
     out_dir : save results.json and the figures (dent.png, kinematics.png) there (a folder,
         created; an existing file there is refused); a figure of an earlier run that this run
         does not draw is removed (a warning says so); a file there that no analysis wrote is
-        never removed or written over (docs/experiment.md, The output folder).
+        never removed or written over, and when ``results.json`` cannot be written nothing is
+        (docs/experiment.md, The output folder).
     gravity : passed to ``invert`` (gravity during the contact in Eq. 12; the measured velocity
         change already excludes the gravity impulse, see docs/experiment.md).
     n_samples : Monte Carlo samples of the inversion (>= 100). strict : raise
@@ -259,7 +267,7 @@ def analyze(
     if run.flat is not None:
         _model_stage(res, run.rod, run.flat, law)
     _plausibility_stage(res, int(run.kinematics.get("guard", _GUARD)))
-    if run.out is not None:
+    if run.out is not None and check_folder(res, run.out, figures):
         if figures:
             write_figures(res, run.out)
         remove_stale_figures(res, run.out)

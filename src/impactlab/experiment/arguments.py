@@ -11,7 +11,13 @@ from typing import Any
 
 from impactlab.bodies import PAPER_ROD, Rod, Sphere
 from impactlab.contact.registry import get_law
-from impactlab.experiment.checks import check_instance, check_options, check_path, output_folder
+from impactlab.experiment.checks import (
+    check_input_file,
+    check_instance,
+    check_options,
+    check_output_folder,
+    output_folder,
+)
 from impactlab.experiment.kinematics import measure_impact
 from impactlab.experiment.kinematics.options import check_kinematics_options
 from impactlab.experiment.profilometry import measure_dent
@@ -146,7 +152,11 @@ def checked_run(
     kinematics: dict[str, Any],
     dent: dict[str, Any],
 ) -> AnalysisRun:
-    """Every argument checked before any work: one TypeError/ValueError naming the parameter."""
+    """Every argument checked before any work: one TypeError/ValueError naming the parameter
+    (a marker or scan file that does not exist or cannot be read: FileFormatError, before the
+    output folder is touched)."""
+    if out_dir is not None:
+        check_output_folder(out_dir, "out_dir")  # made last, after the inputs are found
     geometry = kinematics["geometry"]
     if geometry is not None:
         check_instance(geometry, MarkerGeometry, "geometry", "e.g. MarkerGeometry.from_mapping()")
@@ -157,8 +167,8 @@ def checked_run(
         if opt is not None and not isinstance(opt, str):
             raise TypeError(f"{name} must be a unit name such as 'mm' or None, got {opt!r}")
     return AnalysisRun(
-        None if markers_path is None else check_path(markers_path, "markers_path"),
-        None if scan_path is None else check_path(scan_path, "scan_path"),
+        None if markers_path is None else check_input_file(markers_path, "markers_path"),
+        None if scan_path is None else check_input_file(scan_path, "scan_path"),
         rod_properties(default_rod() if _is_paper(rod) else rod),
         None if flat is None else _flat_material(flat),
         None if out_dir is None else output_folder(out_dir, "out_dir"),

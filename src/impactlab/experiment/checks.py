@@ -13,7 +13,16 @@ from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import Any
 
-__all__ = ["check_instance", "check_options", "check_path", "output_folder"]
+from impactlab.experiment.errors import FileFormatError
+
+__all__ = [
+    "check_input_file",
+    "check_instance",
+    "check_options",
+    "check_output_folder",
+    "check_path",
+    "output_folder",
+]
 
 
 def _kind(value: Any) -> str:
@@ -30,11 +39,30 @@ def check_path(value: Any, name: str) -> Path:
     return Path(value)
 
 
+def check_input_file(value: Any, name: str) -> Path:
+    """``value`` as the Path of an existing, readable file; FileFormatError naming ``name`` and
+    the path otherwise. Checked before any work, so that a misspelt path leaves an output
+    folder as it was."""
+    p = check_path(value, name)
+    if not p.exists():
+        problem = "no such file"
+    elif not p.is_file():
+        problem = "not a file"
+    else:
+        try:
+            with p.open("rb"):
+                return p
+        except OSError as exc:
+            problem = f"cannot be read ({exc.strerror or exc})"
+    raise FileFormatError(p, f"{problem} ({name}); nothing was read or written")
+
+
 def check_instance(value: Any, cls: type, name: str, hint: str = "") -> None:
     """TypeError naming ``name`` unless ``value`` is a ``cls`` (``hint``: where one comes from)."""
     if not isinstance(value, cls):
         more = f" ({hint})" if hint else ""
-        raise TypeError(f"{name} must be a {cls.__name__}{more}, got {_kind(value)}")
+        article = "an" if cls.__name__[:1] in "AEIOU" else "a"
+        raise TypeError(f"{name} must be {article} {cls.__name__}{more}, got {_kind(value)}")
 
 
 def check_options(options: Any, func: Callable[..., Any], name: str) -> dict[str, Any]:
@@ -58,6 +86,19 @@ def check_options(options: Any, func: Callable[..., Any], name: str) -> dict[str
 def output_folder(path: Any, name: str = "out_dir") -> Path:
     """The folder ``path`` (created with its parents): ValueError naming ``name`` and the path when
     it, or one of its parents, is an existing file, or when it cannot be created."""
+    out = check_output_folder(path, name)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise ValueError(
+            f"{name} {str(out)!r}: cannot create the folder ({exc.strerror or exc})"
+        ) from None
+    return out
+
+
+def check_output_folder(path: Any, name: str = "out_dir") -> Path:
+    """The folder ``path``, checked as :func:`output_folder` checks it but not created: nothing
+    is touched (the inputs are checked next, before the folder is made)."""
     out = check_path(path, name).expanduser()
     for p in (out, *out.parents):
         if p.exists():
@@ -65,10 +106,4 @@ def output_folder(path: Any, name: str = "out_dir") -> Path:
                 what = "exists and is not a folder" if p == out else f"is inside {str(p)!r}, a file"
                 raise ValueError(f"{name} {str(out)!r} {what}: choose a folder")
             break
-    try:
-        out.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        raise ValueError(
-            f"{name} {str(out)!r}: cannot create the folder ({exc.strerror or exc})"
-        ) from None
     return out

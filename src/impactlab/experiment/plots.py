@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from impactlab._mpl import pyplot
+from impactlab.experiment.checks import check_instance
 from impactlab.experiment.kinematics import ImpactKinematics
 from impactlab.experiment.profilometry import DentMetrics
 
@@ -35,7 +36,9 @@ def plot_dent(
     dent: DentMetrics, path: str | Path | None = None, *, title: str = "", dpi: int = 130
 ) -> Figure:
     """Height map (colour, um) with outline, deepest point and sliding direction; centre-line and
-    cross profiles. Saves a PNG to ``path`` when given; returns the figure."""
+    cross profiles of ``dent`` (a :class:`DentMetrics`: TypeError naming ``dent`` otherwise).
+    Saves a PNG to ``path`` when given; returns the figure."""
+    check_instance(dent, DentMetrics, "dent", "measure one with measure_dent(read_scan(path))")
     fig = _figure(12.0, 4.6)
     gs = fig.add_gridspec(2, 2, width_ratios=[1.25, 1.0])
     ax_map = fig.add_subplot(gs[:, 0])
@@ -116,7 +119,9 @@ def plot_kinematics(
     kin: ImpactKinematics, path: str | Path | None = None, *, dpi: int = 130
 ) -> Figure:
     """Centre-of-mass height, horizontal position and rod angle against time with the ballistic
-    fits before and after the impact. Saves a PNG to ``path`` when given; returns the figure."""
+    fits before and after the impact, of ``kin`` (an :class:`ImpactKinematics`: TypeError naming
+    ``kin`` otherwise). Saves a PNG to ``path`` when given; returns the figure."""
+    check_instance(kin, ImpactKinematics, "kin", "measure one with measure_impact(tracks, rod)")
     fig = _figure(11.0, 3.8)
     axs = fig.subplots(1, 3)
     t_all, d_all = kin.series()

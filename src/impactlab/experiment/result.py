@@ -8,6 +8,7 @@ from pathlib import Path
 from typing import Any
 
 from impactlab._display import field_row, html_table
+from impactlab._files import write_text_atomic
 from impactlab._json import jsonable
 from impactlab.experiment.errors import ExperimentError
 from impactlab.experiment.kinematics import ImpactKinematics
@@ -103,10 +104,11 @@ class ExperimentResult:
         return jsonable(d)
 
     def save(self, out_dir: str | Path) -> Path:
-        """Write ``results.json`` into ``out_dir`` (created); returns its path."""
+        """Write ``results.json`` into ``out_dir`` (created), whole or not at all (an
+        interrupted write leaves the earlier file as it was); returns its path."""
         out = Path(out_dir)
         out.mkdir(parents=True, exist_ok=True)
         p = out / "results.json"
         self.files["results"] = str(p)
-        p.write_text(json.dumps(self.to_dict(), indent=2), encoding="utf-8")
+        write_text_atomic(p, json.dumps(self.to_dict(), indent=2))
         return p

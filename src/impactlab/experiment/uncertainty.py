@@ -18,7 +18,9 @@ import numpy as np
 
 @dataclass(frozen=True)
 class Estimate:
-    """A measured value with its standard uncertainty (1 sigma, same unit) and its unit."""
+    """A measured value with its standard uncertainty (1 sigma, same unit) and its unit; a
+    sigma of 0 means that none was computed (the pile-up height): it is shown without a ±, as
+    the command line shows it, never as an exact value."""
 
     value: float
     sigma: float
@@ -46,6 +48,8 @@ class Estimate:
     def __format__(self, spec: str) -> str:
         spec = spec or ".4g"
         u = f" {self.unit}" if self.unit else ""
+        if self.sigma == 0.0:
+            return f"{self.value:{spec}}{u}"
         return f"{self.value:{spec}} ± {self.sigma:.2g}{u}"
 
     def __str__(self) -> str:

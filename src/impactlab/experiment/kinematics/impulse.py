@@ -78,9 +78,18 @@ class ImpulseCheck:
     def spin_agrees(self) -> bool:
         """Whether the two spin changes agree within ``IMPULSE_SIGMAS`` and
         ``IMPULSE_TOLERANCE``."""
+        return not self.spin_differs(IMPULSE_SIGMAS, IMPULSE_TOLERANCE)
+
+    def spin_differs(self, sigmas: float, tolerance: float) -> bool:
+        """Whether the two spin changes differ by more than ``sigmas`` standard uncertainties
+        of their difference and by more than the fraction ``tolerance`` of the larger."""
         scale = max(abs(self.spin_change), abs(self.predicted))
-        allowed = max(IMPULSE_SIGMAS * self.sigma, IMPULSE_TOLERANCE * scale)
-        return abs(self.difference) <= allowed
+        return abs(self.difference) > max(sigmas * self.sigma, tolerance * scale)
+
+    @property
+    def sigmas(self) -> float:
+        """The difference in standard uncertainties of it (inf for a zero uncertainty)."""
+        return abs(self.difference) / self.sigma if self.sigma > 0 else math.inf
 
     @property
     def axis_agrees(self) -> bool:

@@ -30,7 +30,12 @@ from impactlab.experiment.kinematics.fits import SegmentFit, fit_segment, segmen
 from impactlab.experiment.kinematics.frame import G0, parse_up, rod_dimensions
 from impactlab.experiment.kinematics.gravity import fitted_gravity
 from impactlab.experiment.kinematics.impulse import gyration_squared
-from impactlab.experiment.kinematics.mirror import E_SIGMAS, checked_against_mirror
+from impactlab.experiment.kinematics.mirror import (
+    E_SIGMAS,
+    ESTIMATED_SIGMAS,
+    ESTIMATED_TOLERANCE,
+    checked_against_mirror,
+)
 from impactlab.experiment.kinematics.options import check_kinematics_options
 from impactlab.experiment.kinematics.result import ImpactKinematics
 from impactlab.experiment.markers import MarkerTracks
@@ -247,8 +252,9 @@ def measure_impact(
     rod : rod-like (``impactlab.bodies.Rod``): its length (L/2 from C to the tip-sphere centre)
         and ``tip_radius`` place the contact point.
     geometry : the markers' positions in the rod's body frame (:class:`MarkerGeometry`); None
-        estimates the axis (principal direction of the cluster: markers mounted along the rod) and
-        C (the ballistic body point; needs the rod to turn after the impact).
+        estimates the axis (principal direction of the cluster: markers mounted along the rod,
+        checked by the impulse relation) and C (the ballistic body point; needs the rod to turn
+        after the impact).
     up : the lab's upward direction ("+z" default, or a 3-vector), normal to the flat.
     g : gravity [m/s^2]. guard : frames on each side of the impact frame left out of the fits.
     window : frames per side for the impact detector. max_fit_frames, min_fit_frames : length
@@ -258,7 +264,8 @@ def measure_impact(
 
     Raises :class:`MarkerError` subclasses naming the problem (loose markers, no impact, too few
     free-flight frames, a free fall far from g, geometry that does not fit, a mirrored geometry,
-    e outside [0, 1]); TypeError or ValueError naming an option of the wrong kind or range.
+    an estimated one that breaks the impulse relation: markers not laid out along the rod, e
+    outside [0, 1]); TypeError or ValueError naming an option of the wrong kind or range.
     """
     check_instance(tracks, MarkerTracks, "tracks", "read them with read_markers()")
     opts = check_kinematics_options(
@@ -332,8 +339,11 @@ def _measure(
         )
         warnings.append(
             "geometry estimated: the rod's axis is taken as the markers' principal direction, "
-            "which holds only for markers laid out along the rod; the +- of e, mu and the "
-            "angle does not include that assumption (give the marker geometry to remove it)"
+            "which holds only for markers laid out along the rod (a tilt that breaks the "
+            f"impulse relation by more than {ESTIMATED_SIGMAS:g} sigma and "
+            f"{100 * ESTIMATED_TOLERANCE:g} % is refused, a smaller one is not seen); the +- of "
+            "e, mu and the angle does not include that assumption (give the "
+            "marker geometry to remove it)"
         )
     axes, origin = impact_frame(poses, int(pre_fr[-1]), body, upv, src)
     fm = _Frame(poses, axes, origin, t_ref, g, half, R_tip)

@@ -33,6 +33,8 @@ from impactlab.experiment.uncertainty import Estimate
 
 __all__ = [
     "CAUSE",
+    "ESTIMATED_SIGMAS",
+    "ESTIMATED_TOLERANCE",
     "E_SIGMAS",
     "E_WARN_SIGMAS",
     "check_not_mirrored_shape",
@@ -42,6 +44,15 @@ __all__ = [
     "mirrored_geometry_error",
 ]
 
+#: Without a given geometry (estimated: the axis along the markers' principal direction) the
+#: measured spin change and the one the impulse predicts must not differ by more than this many
+#: standard uncertainties of their difference (the estimated centre of mass's included) ...
+ESTIMATED_SIGMAS = 3.0
+#: ... and by more than this fraction of the larger: markers laid out along the rod stay within
+#: 2.8 sigma and 19 % (10-80 deg, 0.05-0.2 mm of noise, 250-1000 fps); the paper's layout
+#: (``testing.DEFAULT_MARKERS``), whose principal direction is not the rod's, differs by 5-86 sigma
+#: and 24-52 % (its angle read 20 deg off).
+ESTIMATED_TOLERANCE = 0.15
 #: e outside [0, 1] by more than this many of its sigmas is refused ...
 E_SIGMAS = 3.0
 #: ... and by more than this many (but not E_SIGMAS) draws a warning.
@@ -114,6 +125,21 @@ def mirrored_impulse_error(
     )
 
 
+def estimated_geometry_error(src: str, k: ImpactKinematics, check: ImpulseCheck) -> MarkerError:
+    """The error for an estimated geometry whose motion breaks the impulse relation: the
+    markers are not laid out along the rod, so the estimated axis is not the rod's."""
+    return MarkerError(
+        f"{src}: with the marker geometry estimated (the rod's axis taken as the markers' "
+        f"principal direction) the velocity changes break the rigid-body impulse relation "
+        f"(k^2 dw = b dv_Cx - a dv_Cy): spin change {check.spin_change:.3g} rad/s against "
+        f"{check.predicted:.3g} rad/s from the impulse, differing by "
+        f"{100.0 * check.relative:.2g} % and {check.sigmas:.2g} sigma: the markers are not laid "
+        f"out along the rod, so the estimated axis, and with it the angle ({_angle(k)}), "
+        f"e = {k.e:.4g} and mu = {k.mu:.4g}, are wrong; give the marker geometry "
+        f"(impactlab analyze --geometry markers.toml; geometry= in Python)"
+    )
+
+
 def _e_note(e: Estimate) -> str | None:
     """A warning for an e outside [0, 1] by more than ``E_WARN_SIGMAS`` (and not ``E_SIGMAS``)."""
     if not e_outside(e, E_WARN_SIGMAS):
@@ -164,7 +190,13 @@ def checked_against_mirror(
     the impulse; a warning for a turn off the perpendicular to the rod only (a rod that rolls
     about its axis at the impact breaks that relation too). Otherwise an e outside [0, 1] by
     more than ``E_SIGMAS`` is ``e_error()``, by more than ``E_WARN_SIGMAS`` a warning; ``k`` is
-    returned with the warnings."""
+    returned with the warnings. Without a ``geometry`` (estimated), a spin change that
+    disagrees with the impulse by more than ``ESTIMATED_SIGMAS`` and ``ESTIMATED_TOLERANCE``
+    is :func:`estimated_geometry_error`."""
+    if geometry is None and k2 is not None:
+        estimated = impulse_check(k, k2)
+        if estimated.spin_differs(ESTIMATED_SIGMAS, ESTIMATED_TOLERANCE):
+            raise estimated_geometry_error(src, k, estimated)
     bad_e = e_outside(k.e, E_SIGMAS)
     own = impulse_check(k, k2) if geometry is not None and k2 is not None else None
     notes: list[str] = []

@@ -19,7 +19,7 @@ from typing import Any
 import numpy as np
 
 from impactlab.experiment.errors import FileFormatError
-from impactlab.experiment.markers.tracks import MarkerTracks, length_factor
+from impactlab.experiment.markers.tracks import MarkerTracks, check_rate_agrees, length_factor
 
 __all__ = ["read_c3d"]
 
@@ -122,7 +122,13 @@ def _read_pyc3d(path: Path) -> dict[str, Any]:
     }
 
 
-def read_c3d(path: str | Path, *, units: str | None = None, backend: str = "auto") -> MarkerTracks:
+def read_c3d(
+    path: str | Path,
+    *,
+    units: str | None = None,
+    backend: str = "auto",
+    rate: float | None = None,
+) -> MarkerTracks:
     """Read the 3D points of a C3D file.
 
     Parameters
@@ -131,6 +137,8 @@ def read_c3d(path: str | Path, *, units: str | None = None, backend: str = "auto
     units : length unit of the stored coordinates; overrides ``POINT:UNITS`` (needed only when the
         file lacks it).
     backend : "auto" (ezc3d, then the pure-Python ``c3d`` package), "ezc3d" or "c3d".
+    rate : the frame rate [Hz] the caller expects: it must agree with the file's point rate
+        (within 1 %; the file's is used), a FileFormatError naming both otherwise.
 
     Returns :class:`MarkerTracks` in metres, time from 0 at the first frame. Raises
     :class:`FileFormatError` naming the file for a missing, corrupt, truncated or empty file.
@@ -161,9 +169,12 @@ def read_c3d(path: str | Path, *, units: str | None = None, backend: str = "auto
             p, f"the C3D file holds no 3D point data ({xyz.shape[0]} frames, {xyz.shape[1]} points)"
         )
     _c3d_header_check(p, xyz.shape[1], xyz.shape[0], data["scale"])
-    rate = data["rate"]
-    if not (math.isfinite(rate) and rate > 0):
-        raise FileFormatError(p, f"invalid point rate {rate!r} Hz in the C3D header")
+    file_rate = data["rate"]
+    if not (math.isfinite(file_rate) and file_rate > 0):
+        raise FileFormatError(p, f"invalid point rate {file_rate!r} Hz in the C3D header")
+    if rate is not None:
+        check_rate_agrees(p, rate, file_rate, "the point rate in its header")
+    rate = file_rate
     unit = units if units is not None else data["units"]
     if unit is None:
         raise FileFormatError(

@@ -23,7 +23,7 @@ import numpy as np
 from impactlab._validation import read_text_file
 from impactlab.experiment.checks import check_instance, check_path
 from impactlab.experiment.errors import FileFormatError
-from impactlab.experiment.markers.tracks import MarkerTracks, length_factor
+from impactlab.experiment.markers.tracks import MarkerTracks, check_rate_agrees, length_factor
 from impactlab.experiment.textfiles import split_commented
 from impactlab.units import to_si
 
@@ -170,8 +170,10 @@ def _time(
     the file line of each data row, for messages."""
     if is_frame:
         fr = rate
-        if fr is None and "rate" in meta:
+        if "rate" in meta:  # the file's rate, which a given one must agree with
             fr = frame_rate(p, meta["rate"])
+            if rate is not None:
+                check_rate_agrees(p, rate, fr, f"'# rate: {meta['rate']}'")
         if fr is None:
             raise FileFormatError(
                 p,

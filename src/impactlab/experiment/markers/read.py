@@ -16,14 +16,19 @@ __all__ = ["read_markers"]
 def read_markers(
     path: str | Path, *, units: str | None = None, rate: float | None = None
 ) -> MarkerTracks:
-    """Read marker tracks, choosing the reader by extension (.c3d, else CSV/text)."""
+    """Read marker tracks, choosing the reader by extension (.c3d, else CSV/text).
+
+    ``units``: the coordinates' length unit (a CSV's '# units:' line must agree with it; a C3D
+    file's POINT:UNITS is replaced by it). ``rate`` [Hz]: needed for a CSV 'frame' column
+    without a '# rate:' line; a rate the file states (a C3D header, a '# rate:' line, a 'time'
+    column) must agree with it within 1 %."""
     p = check_path(path, "path")
     if p.suffix.lower() == ".c3d":
-        return read_c3d(p, units=units)
+        return read_c3d(p, units=units, rate=rate)
     if p.suffix.lower() in (".csv", ".txt", ".tsv"):
         return read_csv_markers(p, units=units, rate=rate)
     if p.is_file():
         head = p.read_bytes()[:512]
         if len(head) >= 2 and head[1] == 0x50:
-            return read_c3d(p, units=units)
+            return read_c3d(p, units=units, rate=rate)
     raise FileFormatError(p, f"unknown marker file type {p.suffix!r}; expected .c3d or .csv")

@@ -2,14 +2,38 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 
+from impactlab.experiment.errors import FileFormatError
 from impactlab.units import registry
 
-__all__ = ["MarkerTracks", "length_factor"]
+__all__ = ["RATE_AGREEMENT", "MarkerTracks", "check_rate_agrees", "length_factor"]
+
+#: A frame rate the caller gives agrees with the one a file states when they differ by at most
+#: this fraction.
+RATE_AGREEMENT = 0.01
+
+
+def check_rate_agrees(path: Any, given: Any, stated: float, where: str) -> None:
+    """FileFormatError naming both when the frame rate ``given`` [Hz] (``rate=``) is not a
+    number > 0 or differs from the file's ``stated`` [Hz] (``where``: how the file states it)
+    by more than ``RATE_AGREEMENT``: the file's rate is the one used."""
+    try:
+        fr = float(given)
+    except (TypeError, ValueError):
+        fr = math.nan
+    if isinstance(given, bool) or not (math.isfinite(fr) and fr > 0):
+        raise FileFormatError(path, f"rate must be a frame rate in Hz (> 0), got {given!r}")
+    if abs(fr / stated - 1.0) > RATE_AGREEMENT:
+        raise FileFormatError(
+            path,
+            f"rate={given!r} Hz disagrees with the file's frame rate {stated:.6g} Hz ({where}): "
+            "leave rate= out (the file's own rate is used) or correct it",
+        )
 
 
 def length_factor(unit: str, *, name: str = "units") -> float:

@@ -7,8 +7,10 @@ Definitions (paper Sec. 5, doi:10.1007/s00419-015-1108-2; details in docs/experi
   ``edge_fraction`` x depth); its outline is the contour at -t_e, with sub-pixel interpolation);
 * ``delta_p`` = maximum depth below the levelled plane (a local paraboloid fitted around the deepest
   pixel, so the noise does not bias the minimum);
-* length = the maximum length of the deformed area (its largest Feret diameter, along the sliding
-  axis); width = its width at the deepest point, perpendicular to that axis;
+* length = the maximum length of the deformed area (its largest Feret diameter); the sliding axis
+  = the outline's long principal axis (second moments of area: the whole outline's noise
+  averages out, where the Feret direction, set by two points, tilts on a nearly round dent);
+  width = its width at the deepest point, perpendicular to that axis;
 * ``sliding_length`` (L_s) = length - width;
 * the sliding direction: along the sliding axis towards the *sharper* end, the end where the depth
   falls from 80 % to 20 % of delta_p over the shorter distance (the paper's Figs. 6-7: "wider at

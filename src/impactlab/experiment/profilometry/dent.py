@@ -20,7 +20,14 @@ from impactlab.experiment.errors import ScanError
 from impactlab.experiment.profilometry.bottom import bottom
 from impactlab.experiment.profilometry.heightmap import HeightMap
 from impactlab.experiment.profilometry.metrics import DentMetrics
-from impactlab.experiment.profilometry.outline import chord, fall_distance, feret, outline, sample
+from impactlab.experiment.profilometry.outline import (
+    chord,
+    fall_distance,
+    feret,
+    outline,
+    principal_axis,
+    sample,
+)
 from impactlab.experiment.profilometry.surface import (
     Surface,
     dent_region,
@@ -72,6 +79,8 @@ def _extent(sf: Surface, thr: float, depth: float, deepest: np.ndarray) -> _Exte
         if ol is None:
             return None
         L, ax = feret(ol)
+        principal = principal_axis(ol)  # the outline's long axis: far less noisy than Feret's
+        ax = ax if principal is None else principal
         perp = np.array([-ax[1], ax[0]])
         a, b = chord(ol, deepest, perp)
         return L, a + b, ax

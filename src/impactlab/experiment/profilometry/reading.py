@@ -29,7 +29,9 @@ def read_scan(
     y, comma, semicolon or blank separated, empty cells = no data) height maps are read directly
     and need ``pixel_size`` (e.g. "2 um", metres for a bare number, or a (dx, dy) pair) and
     ``height_unit`` (e.g. "um"), unless the CSV has '# pixel_size: 2 um' / '# height_unit: um'
-    lines. ``channel``: data channel of multi-channel instrument files.
+    lines. A pixel size or height unit that the file states (such lines, an instrument file's
+    own) is the file's: one given as well must agree with it (FileFormatError naming both
+    otherwise). ``channel``: data channel of multi-channel instrument files.
 
     Raises :class:`FileFormatError` naming the file for a missing, corrupt, truncated or
     unrecognised file, :class:`MissingDependencyError` when SurfaceTopography is needed but absent.
