@@ -57,6 +57,8 @@ def has_unit(value: Any) -> bool:
 _LEADING_NUMBER = re.compile(r"\s*[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?(.*)")
 #: A number standing on its own (not an exponent such as the 2 of ``m^2``).
 _LONE_NUMBER = re.compile(r"(?:^|[\s(])[+-]?\.?\d")
+#: The 1 of a reciprocal unit (``1/s``, ``(1/s)``): a unit, not a second number.
+_RECIPROCAL = re.compile(r"(^|[\s(])1\s*/")
 
 
 def _angle_power(items: Any) -> float:
@@ -70,10 +72,12 @@ def _one_number_one_unit(name: str, text: str, q: Any, unit: str) -> None:
     """ValueError naming ``name`` unless ``text`` is one quantity: pint multiplies what stands
     side by side, so ``"20 deg 3"`` would be 60 deg, ``"1.41 m/s 2"`` 2.82 m/s and
     ``"20 deg deg"`` (deg^2, dimensionless as deg is) 0.35 deg. Refused: a second number after
-    the leading one, and angle units (dimensionless in pint) to another power than that of
-    ``unit`` or 0 (1 for rad, deg and rad/s, where rpm has none; 0 for a length or a speed)."""
+    the leading one (the 1 of a reciprocal unit, ``"6500 1/s"``, is none), and angle units
+    (dimensionless in pint) to another power than that of ``unit`` or 0 (1 for rad, deg and
+    rad/s, where rpm has none; 0 for a length or a speed)."""
     lead = _LEADING_NUMBER.fullmatch(text)
-    if lead is not None and _LONE_NUMBER.search(lead.group(1)):
+    rest = "" if lead is None else _RECIPROCAL.sub(r"\1/", lead.group(1))  # "6500 1/s" holds one
+    if _LONE_NUMBER.search(rest):
         raise ValueError(
             f"{name}: {text!r} holds more than one number (pint would multiply them); write "
             f"one number and its unit, e.g. '1.0 {unit}'"

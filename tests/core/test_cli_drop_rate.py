@@ -120,6 +120,18 @@ def test_a_law_fitted_for_another_flat_says_the_command_line_way(cli_main, tmp_p
     assert code == 2 and err.startswith("error: --rate cowper-symonds: its constants are fitted")
 
 
+def test_simulate_flexible_says_the_command_line_way_too(cli_main) -> None:
+    """``simulate rod --flexible`` reads --rate as ``drop`` does: the same refusal, in the
+    command line's words, and a law of one's own constants runs."""
+    args = ("simulate", "rod", "--flexible", *ALU_20[1:])
+    code, _out, err = cli_main(*args, "--rate", "cowper-symonds")
+    assert code == 2 and len(err.strip().splitlines()) == 1
+    assert '--rate "cowper-symonds(D=... 1/s, q=...)"' in err and "RateLaw" not in err
+    assert _json(cli_main, *args, "--rate", OWN)["ok"] is not None
+    code, out, _err = cli_main("simulate", "rod", "--help")
+    assert code == 0 and "cowper-symonds(D=... 1/s, q=...)" in " ".join(out.split())
+
+
 def test_help_lists_each_law_with_its_constants_and_sources(cli_main) -> None:
     code, out, _err = cli_main("drop", "--help")
     assert code == 0

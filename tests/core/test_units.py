@@ -103,6 +103,7 @@ def test_magnitude_refuses_what_is_not_a_quantity_of_the_unit(value: object, mat
         ("angle", "20 deg 3", "rad", "holds more than one number"),  # pint: 60 deg
         ("vy", "1.41 m/s 2", "m/s", "holds more than one number"),  # pint: 2.82 m/s
         ("length", "1 000 m", "m", "holds more than one number"),
+        ("rate", "6500 2/s", "1/s", "holds more than one number"),  # pint: 13000 1/s
         ("angle", "20 deg deg", "rad", "dimensionless units .* to the power 2"),  # pint: deg^2
         ("length", "5 deg m", "m", "dimensionless units .* to the power 1"),
         ("angle", "20 percent", "rad", r"is a pure number \(20 %\).*'1.0 deg'"),
@@ -270,3 +271,10 @@ def test_laws_names_its_options_and_refuses_example_options_without_a_law(cli_ma
     assert code == 2 and "--radius without a law" in err
     code, _, err = cli_main("laws", "ghaednia", "--body", "aisi-20")
     assert code == 2 and "--body: unknown material 'aisi-20' (did you mean 'aisi-201'?)" in err
+
+
+@pytest.mark.parametrize("text", ["6500 1/s", "6500 /s", "6500 (1/s)", "6.5 1/ms", "6.5e3 1 / s"])
+def test_a_reciprocal_unit_is_one_unit(text: str) -> None:
+    """The 1 of ``1/s`` is a unit's, not a second number: the hint of the refusal above
+    (e.g. '1.0 1/s') is itself accepted."""
+    assert magnitude("rate", text, "1/s") == pytest.approx(6500.0)

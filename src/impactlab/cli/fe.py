@@ -49,7 +49,7 @@ def _material(name: str, E: str | None, nu: float | None, sy: str | None, label:
     given = [k for k, v in values.items() if v is not None]
     if not given:
         try:
-            return get_material(name, f"--{label}")
+            return get_material(name, "--body/--material" if label == "body" else f"--{label}")
         except ValueError as exc:
             raise UserError(str(exc)) from None
     if len(given) < 3:

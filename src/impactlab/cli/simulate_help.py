@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from impactlab.cli._common import KINEMATIC_HELP, RATE_CHOICES, STOP_HELP, length_help
+from impactlab.cli._common import KINEMATIC_HELP, STOP_HELP, length_help, rate_help
 from impactlab.cli.drop_body import MODES_HELP
 
 __all__ = ["HELP"]
@@ -29,7 +29,7 @@ HELP = {
     "(default aisi-1010).",
     **{k: f"Flexible rod: {v[0].lower()}{v[1:]}" for k, v in MODES_HELP.items()},
     "damping": "Flexible rod: modal damping ratio zeta of every mode, in [0, 1) (default 0).",
-    "rate": f"Flexible rod: rate-dependent flat, {', '.join(RATE_CHOICES)} (default none).",
+    "rate": f"Flexible rod only. {rate_help()}",
     "stop": f"Flexible rod: {STOP_HELP}",
     "t_max": "Flexible rod: longest simulated time after the first touch, e.g. '2 s' (default "
     "500 ms).",

@@ -31,8 +31,8 @@ MATERIAL_DATA: tuple[Reference, ...] = (
         "johnson-cook-1983",
         "G. R. Johnson, W. H. Cook, A constitutive model and data for metals subjected to "
         "large strains, high strain rates and high temperatures, Proc. 7th Int. Symp. on "
-        "Ballistics, The Hague (1983) 541-547; Table 1: 1006 steel, A = 350 MPa, B = 275 MPa, "
-        "n = 0.36, C = 0.022, m = 1.00",
+        "Ballistics, The Hague (1983) 541-547; their table of constants: 1006 steel, "
+        "A = 350 MPa, B = 275 MPa, n = 0.36, C = 0.022, m = 1.00",
         note="proceedings paper, no DOI; pages as commonly cited, not confirmed here; the "
         "1006-steel constants confirmed against a secondary source that reproduces their table "
         "(table number not confirmed); used for 1006's rate term and for the earlier stand-in "
