@@ -17,12 +17,12 @@ from impactlab.bodies.modal import modal_basis, rigid_modes
 from impactlab.bodies.residual import axial_residual_modes
 from impactlab.bodies.rod_section import EULER_BERNOULLI, TIMOSHENKO, RodSection
 from impactlab.bodies.timoshenko import (
-    _determinant,
-    _determinants,
     timoshenko_cutoff,
     timoshenko_frequencies,
     timoshenko_shape_fn,
 )
+from impactlab.bodies.timoshenko_solutions import determinant as _determinant
+from impactlab.bodies.timoshenko_solutions import determinants as _determinants
 from impactlab.dynamics.flex_fe import CorotationalRod
 from impactlab.materials import AISI_201
 

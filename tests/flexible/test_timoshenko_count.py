@@ -10,6 +10,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from impactlab.bodies import timoshenko as tim
+from impactlab.bodies import timoshenko_solutions as solutions
 from impactlab.bodies.rod_section import RodSection
 from impactlab.bodies.timoshenko_count import _member_stiffness, bending_modes_below
 
@@ -29,7 +30,7 @@ def steel_rod(length: float, diameter: float) -> RodSection:
 def test_the_members_stiffness_tends_to_the_static_timoshenko_element() -> None:
     """At a low frequency the exact dynamic stiffness is the static element's (shear
     parameter phi = 12 E I / (kappa G A l^2)), to O(omega^2)."""
-    _rho, A, I, E, kG = tim._consts(CLOSE_PAIR)
+    _rho, A, I, E, kG = solutions.section_constants(CLOSE_PAIR)
     l = 0.02
     phi = 12 * E * I / (kG * A * l * l)
     K0 = (E * I / ((1 + phi) * l**3)) * np.array(
@@ -59,7 +60,7 @@ def test_a_close_pair_between_grid_points_is_found() -> None:
     assert np.count_nonzero(np.abs(khz - 192.198) < 0.01) == 2  # 192.193 and 192.204 kHz
     assert bending_modes_below(CLOSE_PAIR, om[-1] * (1 + 1e-9)) == 69
     for r in om[57:61]:  # roots of the boundary determinant, refined as the scan's
-        assert abs(tim._determinant(float(r), CLOSE_PAIR)) < 1e-6
+        assert abs(solutions.determinant(float(r), CLOSE_PAIR)) < 1e-6
 
 
 def test_frequencies_do_not_depend_on_the_count_asked_for() -> None:

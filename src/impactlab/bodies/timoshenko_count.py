@@ -23,7 +23,7 @@ int f'^2 >= (pi / l)^2 int f^2 = x int f^2 for W and Psi and
 
 the shear beam's and, for a long member, half the Euler-Bernoulli beam's clamped bound; N
 makes omega_l > omega. The member's dynamic stiffness comes from the exact solutions of
-``timoshenko`` (end forces -Q(0), -M(0), Q(l), M(l) with Q = kappa G A (W' - Psi),
+``timoshenko_solutions`` (end forces -Q(0), -M(0), Q(l), M(l) with Q = kappa G A (W' - Psi),
 M = E I Psi', against the end displacements W(0), Psi(0), W(l), Psi(l)). SI units.
 """
 
@@ -34,7 +34,7 @@ import math
 
 import numpy as np
 
-from impactlab.bodies import timoshenko as tim
+from impactlab.bodies import timoshenko_solutions as tim
 from impactlab.bodies.rod_section import RodSection
 
 __all__ = ["bending_modes_below", "roots_between"]
@@ -49,7 +49,7 @@ _BRACKET = 1e-9
 def _member_length(sec: RodSection, om: float) -> float:
     """The longest member [m] none of whose clamped frequencies lies below ``om`` [rad/s]
     (omega_l = om, see module: x = (pi / l)^2 from the two bounds' quadratics)."""
-    rho, A, I, E, kG = tim._consts(sec)
+    rho, A, I, E, kG = tim.section_constants(sec)
     w2 = om * om
     a = E * I / (2.0 * kG * A)  # t = a x
     c = kG / rho
@@ -61,10 +61,10 @@ def _member_length(sec: RodSection, om: float) -> float:
 def _member_stiffness(sec: RodSection, length: float, om: float) -> np.ndarray:
     """The exact 4x4 dynamic stiffness [N/m, N, N m] of a member of ``length`` [m] of the rod
     at ``om`` [rad/s], symmetric (its two halves averaged: they agree to round-off)."""
-    _rho, A, I, E, kG = tim._consts(sec)
+    _rho, A, I, E, kG = tim.section_constants(sec)
     member = dataclasses.replace(sec, length=length, mass=sec.mass * length / sec.length)
-    W, P, dP, G = tim._basis(member, om, np.array([0.0, length]))
-    sig = float(tim._wavenumbers(member, np.array([om]))[3][0])
+    W, P, dP, G = tim.basis(member, om, np.array([0.0, length]))
+    sig = float(tim.wavenumbers(member, np.array([om]))[3][0])
     Q = kG * A * sig * G  # shear force per basis function at both ends
     M = E * I * dP
     ends = np.array([W[:, 0], P[:, 0], W[:, 1], P[:, 1]])
@@ -120,9 +120,9 @@ def _one_root(sec: RodSection, lo: float, hi: float, c_lo: int) -> float:
             hi = mid
         else:
             lo = mid
-    d_lo, d_hi = tim._determinant(lo, sec), tim._determinant(hi, sec)
+    d_lo, d_hi = tim.determinant(lo, sec), tim.determinant(hi, sec)
     if d_lo * d_hi < 0.0:
         return float(
-            brentq(tim._determinant, lo, hi, args=(sec,), xtol=1e-13 * lo, rtol=1e-15, maxiter=200)
+            brentq(tim.determinant, lo, hi, args=(sec,), xtol=1e-13 * lo, rtol=1e-15, maxiter=200)
         )
     return 0.5 * (lo + hi)
