@@ -132,7 +132,7 @@ def test_a_full_disk_leaves_the_measurements_file_whole(template, tmp_path, monk
 
 
 @pytest.fixture(scope="module")
-def one_drop():
+def one_drop_fit():
     """Two models on one drop (a tiny chain)."""
     one = Measurements.from_records(
         [{"label": "d20", "angle": "20 deg", "vy": -1.41, "mu": 0.2, "e": 0.45, "e_sigma": 0.02,
@@ -142,21 +142,21 @@ def one_drop():
                      n_ppc=0)  # fmt: skip
 
 
-def test_one_drop_ranks_no_model(one_drop):
+def test_one_drop_ranks_no_model(one_drop_fit):
     """dse 0 and weights 1 / 1e-16 declared a winner ('distinguishable: true')."""
     note = "not distinguishable (one drop: PSIS-LOO does not rank)"
-    assert [r["distinguishable"] for r in one_drop.ranking] == [False, False]
-    assert all(r["note"].startswith(note) for r in one_drop.ranking)
-    assert note in one_drop.best_caveats
+    assert [r["distinguishable"] for r in one_drop_fit.ranking] == [False, False]
+    assert all(r["note"].startswith(note) for r in one_drop_fit.ranking)
+    assert note in one_drop_fit.best_caveats
     text = "PSIS-LOO with one drop: leaving it out leaves no data, so elpd_loo does not rank"
-    assert any(w.startswith(text) for w in one_drop.warnings)
-    doc = calibration_json(one_drop)
+    assert any(w.startswith(text) for w in one_drop_fit.warnings)
+    doc = calibration_json(one_drop_fit)
     assert [r["distinguishable"] for r in doc["ranking"]] == [False, False]
     assert any(w.startswith(text) for w in doc["warnings"])
 
 
-def test_results_are_written_whole_with_readable_settings(one_drop, tmp_path, monkeypatch):
-    files = save(one_drop, tmp_path)
+def test_results_are_written_whole_with_readable_settings(one_drop_fit, tmp_path, monkeypatch):
+    files = save(one_drop_fit, tmp_path)
     html = files["report"].read_text()
     assert "<td>engine: gravity</td><td>9.80665 m/s^2</td>" in html
     assert "<td>engine: rtol</td><td>default</td>" in html
@@ -168,14 +168,14 @@ def test_results_are_written_whole_with_readable_settings(one_drop, tmp_path, mo
     before = {k: v.read_bytes() for k, v in files.items()}
     _no_space(monkeypatch)
     with pytest.raises(OSError, match="No space left"):
-        save(one_drop, tmp_path)
+        save(one_drop_fit, tmp_path)
     assert {k: v.read_bytes() for k, v in files.items()} == before
 
 
-def test_results_json_engine_settings_run_again(one_drop, tmp_path):
+def test_results_json_engine_settings_run_again(one_drop_fit, tmp_path):
     """Copied into a --config file's [engine] table, results.json's gravity was refused
     ("gravity must be a real number, got {'value': 9.80665, 'unit': 'm/s^2'}")."""
-    engine = calibration_json(one_drop)["settings"]["engine"]
+    engine = calibration_json(one_drop_fit)["settings"]["engine"]
     assert engine["gravity"] == {"value": 9.80665, "unit": "m/s^2"}
     cfg = tmp_path / "cal.toml"
     cfg.write_text(
