@@ -56,9 +56,10 @@ def has_unit(value: Any) -> bool:
 #: A leading number (sign, digits, decimal point, exponent) and what follows it.
 _LEADING_NUMBER = re.compile(r"\s*[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?(.*)")
 #: A number standing on its own (not an exponent such as the 2 of ``m^2``).
-_LONE_NUMBER = re.compile(r"(?:^|[\s(])[+-]?\.?\d")
-#: The 1 of a reciprocal unit (``1/s``, ``(1/s)``): a unit, not a second number.
-_RECIPROCAL = re.compile(r"(^|[\s(])1\s*/")
+_LONE_NUMBER = re.compile(r"(?:^|[\s(/])[+-]?\.?\d")
+#: The 1 of a reciprocal unit (``1/s``, ``(1/s)``, a unit's name or a bracket after the
+#: slash): a unit, not a second number (``1/2`` is one).
+_RECIPROCAL = re.compile(r"(^|[\s(])1\s*/(?=\s*[A-Za-z(])")
 
 
 def _angle_power(items: Any) -> float:

@@ -104,6 +104,10 @@ def test_magnitude_refuses_what_is_not_a_quantity_of_the_unit(value: object, mat
         ("vy", "1.41 m/s 2", "m/s", "holds more than one number"),  # pint: 2.82 m/s
         ("length", "1 000 m", "m", "holds more than one number"),
         ("rate", "6500 2/s", "1/s", "holds more than one number"),  # pint: 13000 1/s
+        ("rate", "6500 1/2/s", "1/s", "holds more than one number"),  # pint: 3250 1/s
+        ("radius", "5 1/2 mm", "m", "holds more than one number"),  # pint: 2.5 mm
+        ("angle", "20 deg 1/2", "rad", "holds more than one number"),  # pint: 10 deg
+        ("length", "6500 m/2", "m", "holds more than one number"),  # pint: 3250 m
         ("angle", "20 deg deg", "rad", "dimensionless units .* to the power 2"),  # pint: deg^2
         ("length", "5 deg m", "m", "dimensionless units .* to the power 1"),
         ("angle", "20 percent", "rad", r"is a pure number \(20 %\).*'1.0 deg'"),

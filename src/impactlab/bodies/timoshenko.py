@@ -65,37 +65,36 @@ def _frequencies(sec: RodSection, n: int) -> np.ndarray:
     grid = grid[np.abs(grid / cut - 1.0) > 1e-6]  # degenerate basis at the cut-off
     vals = determinants(sec, grid)
 
-    def refine(lo: float, hi: float) -> None:
+    def refine(lo: float, hi: float, scale: float) -> None:
         r = brentq(determinant, lo, hi, args=(sec,), xtol=1e-13 * lo, rtol=1e-15, maxiter=200)
-        if abs(determinant(r, sec)) < 1e-6:  # not a pole
-            roots.append(float(r))
+        if abs(determinant(r, sec)) < 1e-6 * scale:  # not a jump (relative: a thin rod's
+            roots.append(float(r))  # determinants are all of 1e-22 or less)
 
     for i in range(len(grid) - 1):
         if vals[i] == 0.0:
             roots.append(float(grid[i]))
         elif vals[i] * vals[i + 1] < 0.0 and not grid[i] < cut < grid[i + 1]:
-            refine(float(grid[i]), float(grid[i + 1]))
+            refine(float(grid[i]), float(grid[i + 1]), max(abs(vals[i]), abs(vals[i + 1])))
         elif i > 0 and grid[i] > cut and _dips(vals[i - 1], vals[i], vals[i + 1]):
             inner = _crossing(sec, float(grid[i - 1]), float(grid[i + 1]), float(vals[i]))
             if inner is not None:  # two roots between grid[i - 1] and grid[i + 1]
-                refine(float(grid[i - 1]), inner)
-                refine(inner, float(grid[i + 1]))
+                scale = max(abs(vals[i - 1]), abs(vals[i + 1]))
+                refine(float(grid[i - 1]), inner, scale)
+                refine(inner, float(grid[i + 1]), scale)
         if len(roots) >= n:
             break
-    if len(roots) < n:
-        raise RuntimeError(f"found only {len(roots)} Timoshenko roots below {grid[-1]:.4g} rad/s")
-    return np.array(_counted(sec, sorted(roots)[:n], float(grid[0])))
+    return np.array(_counted(sec, sorted(roots)[:n], n, float(grid[0]), float(grid[-1])))
 
 
-def _counted(sec: RodSection, roots: list[float], start: float) -> list[float]:
-    """``roots`` [rad/s] (the scan's first n, ascending) checked against the count of the
-    frequencies below the last (``timoshenko_count``): where the scan missed roots (two
-    within a grid step whose dip falls between grid points) or took a false one, the roots
-    of every interval between the midpoints of the scan's whose count differs from one are
-    found again from the count; the others are kept to the bit."""
-    n = len(roots)
-    top = roots[-1] * (1.0 + 1e-9)
-    if bending_modes_below(sec, top) == n:
+def _counted(sec: RodSection, roots: list[float], n: int, start: float, end: float) -> list[float]:
+    """The first ``n`` frequencies [rad/s]: ``roots`` (the scan's, ascending, at most n, found
+    between ``start`` and ``end``) checked against the count of the frequencies below the last
+    (``timoshenko_count``). Where the scan missed roots (two within a grid step whose dip falls
+    between grid points) or took a false one, the roots of every interval between the
+    midpoints of the scan's whose count differs from one are found again from the count (a
+    root the scan found among them kept to the bit), and the missing ones above the last."""
+    top = roots[-1] * (1.0 + 1e-9) if roots else end
+    if len(roots) == n and bending_modes_below(sec, top) == n:
         return roots
     edges = [start] + [0.5 * (a + b) for a, b in itertools.pairwise(roots)] + [top]
     counts = [bending_modes_below(sec, om) for om in edges]
@@ -104,9 +103,12 @@ def _counted(sec: RodSection, roots: list[float], start: float) -> list[float]:
         if counts[j + 1] - counts[j] == 1:
             out.append(root)
         else:
-            out += roots_between(sec, edges[j], edges[j + 1], counts[j], counts[j + 1])
+            found = roots_between(sec, edges[j], edges[j + 1], counts[j], counts[j + 1])
+            out += [root if abs(r - root) <= 1e-12 * root else r for r in found]
+    if not roots:
+        out += roots_between(sec, start, top, counts[0], counts[-1])
     hi = top
-    while len(out) < n:  # false roots taken out: the next ones above the scan's last
+    while len(out) < n:  # the next ones above the scan's last
         lo, hi = hi, hi * 1.05
         c_lo, c_hi = bending_modes_below(sec, lo), bending_modes_below(sec, hi)
         out += roots_between(sec, lo, hi, c_lo, c_hi)

@@ -30,6 +30,7 @@ M = E I Psi', against the end displacements W(0), Psi(0), W(l), Psi(l)). SI unit
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 
 import numpy as np
@@ -73,13 +74,37 @@ def _member_stiffness(sec: RodSection, length: float, om: float) -> np.ndarray:
     return 0.5 * (K + K.T)
 
 
+@functools.lru_cache(maxsize=128)
+def _unit_rod(sec: RodSection) -> tuple[RodSection, float]:
+    """The rod scaled to L = 1 m, E = 1 Pa, rho = 1 kg/m^3 (its L/d, nu and kappa kept: the
+    same frequencies, times L / sqrt(E / rho)), and that factor [s]: the count is made on it,
+    whatever the rod's size (a rod of 0.2 mm has determinants of 1e-22 and stiffnesses of
+    every magnitude)."""
+    rho, _a, _i, E, _kg = tim.section_constants(sec)
+    d = float(sec.diameter) / sec.length  # type: ignore[arg-type]
+    unit = RodSection(
+        length=1.0,
+        mass=math.pi * d * d / 4.0,
+        density=1.0,
+        E=1.0,
+        nu=sec.nu,
+        diameter=d,
+        shear_coefficient=sec.shear_coefficient,
+    )
+    return unit, sec.length / math.sqrt(E / rho)
+
+
 def bending_modes_below(sec: RodSection, om: float) -> int:
     """The number of free-free Timoshenko bending frequencies of ``sec`` below ``om`` [rad/s]
     (``om`` > 0; within 1e-6 of the cut-off, where the solutions' basis degenerates, counted
-    just above it): see module."""
-    om = _probe(sec, om)
-    n_members = max(1, math.ceil(sec.length / (_MARGIN * _member_length(sec, om))))
-    k = _member_stiffness(sec, sec.length / n_members, om)
+    just above it): see module. Counted on the rod scaled to unit size (``_unit_rod``), with
+    each rotation in units of the member length (a congruence: the same signs)."""
+    unit, factor = _unit_rod(sec)
+    om = _probe(unit, om * factor)
+    n_members = max(1, math.ceil(1.0 / (_MARGIN * _member_length(unit, om))))
+    length = 1.0 / n_members
+    scale = np.array([1.0, 1.0 / length, 1.0, 1.0 / length])
+    k = _member_stiffness(unit, length, om) * np.outer(scale, scale) * length**3
     K = np.zeros((2 * n_members + 2, 2 * n_members + 2))
     for j in range(n_members):
         K[2 * j : 2 * j + 4, 2 * j : 2 * j + 4] += k
