@@ -37,3 +37,25 @@ def test_a_failed_write_leaves_the_old_file_whole(
         write_bytes_atomic(target, b"label,e\nd1,0.4\nd2,0.")
     assert target.read_text() == "label,e\nd1,0.4\n"
     assert [p.name for p in tmp_path.iterdir()] == ["m.csv"]
+
+
+def test_a_read_only_file_is_refused_as_open_would(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """``os.replace`` would replace a write-protected file without asking; a file this user may
+    not write (``os.access``, as ``open`` decides) is refused and kept."""
+    target = tmp_path / "results.json"
+    target.write_text("{}\n")
+    monkeypatch.setattr("impactlab._files.os.access", lambda path, mode: False)
+    with pytest.raises(PermissionError):
+        write_text_atomic(target, '{"e": 1}\n')
+    assert target.read_text() == "{}\n"
+    assert [p.name for p in tmp_path.iterdir()] == ["results.json"]
+
+
+def test_the_replaced_file_keeps_its_permissions(tmp_path: Path) -> None:
+    target = tmp_path / "m.csv"
+    target.write_text("old\n")
+    target.chmod(0o640)
+    write_text_atomic(target, "new\n")
+    assert target.stat().st_mode & 0o777 == 0o640
