@@ -4,7 +4,8 @@ The text goes to a temporary file beside the target (same folder, so same file s
 then replaces the target in one step (``os.replace``): an interrupted write, a full disk or a
 crash leaves the old file as it was, and the temporary one is removed. A target that exists is
 replaced only where it could be written in place (a read-only file is refused as ``open`` would
-refuse it: ``os.replace`` would not ask), and the new file keeps its permission bits.
+refuse it: ``os.replace`` would not ask), the new file keeps its permission bits, and a symbolic
+link is written through (the file it names is replaced, the link kept).
 """
 
 from __future__ import annotations
@@ -19,6 +20,8 @@ def write_bytes_atomic(path: str | os.PathLike[str], data: bytes) -> None:
     """Write ``data`` to ``path`` whole, or leave ``path`` as it was (see module);
     PermissionError for an existing file that cannot be written."""
     target = Path(path)
+    if target.is_symlink():  # write the file the link names: the link stays a link
+        target = target.resolve()
     mode = None
     if target.exists():
         if not os.access(target, os.W_OK):

@@ -78,17 +78,37 @@ def _one_number_one_unit(name: str, text: str, q: Any, unit: str) -> None:
     rad/s, where rpm has none; 0 for a length or a speed)."""
     lead = _LEADING_NUMBER.fullmatch(text)
     rest = "" if lead is None else _RECIPROCAL.sub(r"\1/", lead.group(1))  # "6500 1/s" holds one
+    if _plain(unit) and rest.strip() == "1":  # "0.02 1": a pure number in the unit 1
+        rest = ""
     if _LONE_NUMBER.search(rest):
         raise ValueError(
-            f"{name}: {text!r} holds more than one number (pint would multiply them); write "
-            f"one number and its unit, e.g. '1.0 {unit}'"
+            f"{name}: {text!r} holds more than one number (pint would multiply them); "
+            f"{_write_one(unit)}"
         )
     power = _angle_power(q.unit_items())
     if power not in (0, _angle_power(registry().Unit(unit)._units.items())):
         raise ValueError(
             f"{name}: {text!r} has dimensionless units (angles such as deg, or percent) to the "
-            f"power {power:g}; write one number and one unit of {unit}, e.g. '1.0 {unit}'"
+            f"power {power:g}; "
+            + (
+                "write one plain number, e.g. '0.4' (a fraction, not a percentage)"
+                if _plain(unit)
+                else f"write one number and one unit of {unit}, e.g. '1.0 {unit}'"
+            )
         )
+
+
+def _plain(unit: str) -> bool:
+    """True for the unit of a pure number (``"1"`` or empty)."""
+    return unit.strip() in ("", "1")
+
+
+def _write_one(unit: str) -> str:
+    """The hint of a refused quantity text: one number with ``unit`` (a plain one for a pure
+    number: ``'1.0 1'`` would itself be refused)."""
+    if _plain(unit):
+        return "write one plain number, e.g. '0.4'"
+    return f"write one number and its unit, e.g. '1.0 {unit}'"
 
 
 def refuse_comma(name: str, text: str, unit: str) -> None:
@@ -112,7 +132,7 @@ def _parse(name: str, text: str, unit: str) -> Any:
     ``_one_number_one_unit``); ValueError naming ``name``."""
     text = text.strip()
     if not text:
-        raise ValueError(f"{name} is empty; expected a quantity in {unit}, e.g. '1.0 {unit}'")
+        raise ValueError(f"{name} is empty; {_write_one(unit)}")
     refuse_comma(name, text, unit)
     try:
         q: Any = registry().Quantity(text)
@@ -185,6 +205,8 @@ def magnitude(name: str, value: Any, unit: str) -> Any:
     if isinstance(value, str):
         q = _parse(name, value, unit)
         _check_finite(name, q, value)
+        if q.unitless and _plain(unit):  # a pure number asked for: "0.4"
+            return float(q.magnitude)
         if q.unitless:
             lead = _LEADING_NUMBER.fullmatch(value)
             bare = lead is not None and not lead.group(1).strip()

@@ -59,3 +59,18 @@ def test_the_replaced_file_keeps_its_permissions(tmp_path: Path) -> None:
     target.chmod(0o640)
     write_text_atomic(target, "new\n")
     assert target.stat().st_mode & 0o777 == 0o640
+
+
+def test_a_link_is_written_through(tmp_path: Path) -> None:
+    """A measurements file kept as a link into a shared data folder: the data file is written
+    and the link stays a link (``os.replace`` on the link would have split them)."""
+    data = tmp_path / "data"
+    data.mkdir()
+    real = data / "drops.csv"
+    real.write_text("label,e\nd1,0.4\n")
+    link = tmp_path / "drops.csv"
+    link.symlink_to(real)
+    write_text_atomic(link, "label,e\nd1,0.4\nd2,0.5\n")
+    assert link.is_symlink()
+    assert real.read_text() == "label,e\nd1,0.4\nd2,0.5\n"
+    assert sorted(p.name for p in data.iterdir()) == ["drops.csv"]

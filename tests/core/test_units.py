@@ -282,3 +282,16 @@ def test_a_reciprocal_unit_is_one_unit(text: str) -> None:
     """The 1 of ``1/s`` is a unit's, not a second number: the hint of the refusal above
     (e.g. '1.0 1/s') is itself accepted."""
     assert magnitude("rate", text, "1/s") == pytest.approx(6500.0)
+
+
+def test_a_pure_number_is_asked_for_as_one() -> None:
+    """The hint of a refused pure number is itself accepted (it said '1.0 1', refused as two
+    numbers), and a pure number written in the unit 1 (a CSV header's ``[1]``) is read."""
+    with pytest.raises(ValueError, match=r"e: '43 %' .*write one plain number, e.g. '0.4'"):
+        magnitude("e", "43 %", "1")
+    with pytest.raises(ValueError, match=r"holds more than one number.*e.g. '0.4'"):
+        magnitude("e", "0.4 2", "1")
+    assert magnitude("e", "0.4", "1") == pytest.approx(0.4)
+    assert magnitude("e_sigma", "0.02 1", "1") == pytest.approx(0.02)
+    with pytest.raises(ValueError, match="holds more than one number"):
+        magnitude("length", "5 1", "m")
