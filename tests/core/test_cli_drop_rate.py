@@ -114,6 +114,7 @@ def test_a_law_fitted_for_another_flat_says_the_command_line_way(cli_main, tmp_p
     code, _out, err = cli_main("drop", "--from", str(record), "--flat", "al-6061-t6")
     assert code == 2 and err.startswith("error: the recorded rate johnson-cook: its constants")
     assert '--rate "johnson-cook(C=..., rate0=... 1/s)"' in err and "RateLaw" not in err
+    assert 'e.g. "johnson-cook(C=0.03, rate0=1 1/s)"' in err and "cowper" not in err
     alu = tmp_path / "alu.json"
     alu.write_text(json.dumps(_json(cli_main, *ALU_20, "--rate", OWN)))
     code, _out, err = cli_main("drop", "--from", str(alu), "--rate", "cowper-symonds")
@@ -165,3 +166,36 @@ def test_a_rate_with_the_elastic_law_says_the_command_line_way(cli_main) -> None
     assert code == 2 and len(err.strip().splitlines()) == 1
     assert err.startswith("error: --rate johnson-cook: --law hertz is elastic")
     assert "leave out --rate" in err and "rate=None" not in err
+
+
+ELASTIC = "is elastic (no yield strength for the rate to raise); "
+
+
+def test_the_elastic_law_refusal_speaks_the_command_line_everywhere(cli_main, tmp_path) -> None:
+    """simulate --flexible and --from refuse a rate with the elastic law as plain drop does,
+    naming what the user gave (or the record) and never the Python keyword."""
+    kinematics = ("--angle", "20 deg", "--vy", "-1.41 m/s")
+    code, _out, err = cli_main(
+        "simulate", "rod", "--flexible", *kinematics, "--law", "hertz", "--rate", "cowper-symonds"
+    )
+    assert code == 2 and err.strip() == (
+        f"error: --rate cowper-symonds: --law hertz {ELASTIC}leave out --rate, or give an "
+        "elastic-plastic --law"
+    )
+    own = tmp_path / "own.json"
+    jc = _json(cli_main, "drop", *kinematics, "--rate", "johnson-cook(C=0.03, rate0=1 1/s)")
+    own.write_text(json.dumps(jc))
+    for command in ("drop", "simulate"):
+        code, _out, err = cli_main(command, "--from", str(own), "--law", "hertz")
+        assert code == 2 and err.strip() == (
+            f"error: the recorded rate johnson-cook (C = 0.03, rate0 = 1 1/s): --law hertz "
+            f"{ELASTIC}add --rate none, or give an elastic-plastic --law"
+        )
+    assert _json(cli_main, "drop", "--from", str(own), "--law", "hertz", "--rate", "none")["ok"]
+    hertz = tmp_path / "hertz.json"
+    hertz.write_text(json.dumps(_json(cli_main, "drop", *kinematics, "--law", "hertz")))
+    code, _out, err = cli_main("drop", "--from", str(hertz), "--rate", "johnson-cook")
+    assert code == 2 and err.strip() == (
+        f"error: --rate johnson-cook: the recorded law hertz {ELASTIC}leave out --rate, or give "
+        "an elastic-plastic --law"
+    )

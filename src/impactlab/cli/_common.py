@@ -7,6 +7,7 @@ import math
 import re
 import tomllib
 from collections.abc import Callable, Iterable, Mapping
+from itertools import accumulate
 from pathlib import Path
 from typing import Any
 
@@ -18,7 +19,7 @@ from rich.text import Text
 from impactlab._display import field_rows
 from impactlab._json import to_json
 from impactlab._validation import read_text_file
-from impactlab.contact.rate import RATE_LAWS, RateLaw
+from impactlab.contact.rate import RATE_CONSTANTS, RATE_LAWS, RateLaw, constants_text, rate_constant
 from impactlab.dynamics.kernels.inputs import angle_allowed, incidence_allowed
 from impactlab.materials import Material
 from impactlab.schema import FIELDS
@@ -32,13 +33,6 @@ class UserError(ValueError):
 #: ``--rate`` values of the drop ("none": a rate-independent flat).
 RATE_CHOICES = ("none", *RATE_LAWS)
 
-#: Each rate law's form and the SI unit of its constants ("1": a pure number).
-RATE_CONSTANTS = {
-    "cowper-symonds": ("1 + (eps_dot/D)^(1/q)", {"D": "1/s", "q": "1"}),
-    "johnson-cook": ("1 + C ln(eps_dot/rate0)", {"C": "1", "rate0": "1/s"}),
-}
-#: A rate law with one's own constants, as ``--rate`` takes it.
-RATE_EXAMPLE = "cowper-symonds(D=6500 1/s, q=4)"
 #: The sources of the library's rate laws, short (``impactlab.contact.rate``).
 _RATE_SOURCES = {
     "cowper-symonds-1957": "Cowper & Symonds 1957",
@@ -47,24 +41,27 @@ _RATE_SOURCES = {
 }
 
 
-def _constants(name: str, law: RateLaw | None = None) -> str:
-    """``D = 40.4 1/s, q = 5`` (``law``'s constants) or ``D=... 1/s, q=...`` (a template)."""
-    values = {} if law is None else dict(law.parameters)
-    return ", ".join(
-        (f"{k}=..." if law is None else f"{k} = {values[k]:g}") + ("" if u == "1" else f" {u}")
-        for k, u in RATE_CONSTANTS[name][1].items()
-    )
+def _form(name: str, example: bool = False) -> str:
+    """``--rate``'s form of the law ``name``: ``cowper-symonds(D=... 1/s, q=...)``, or with
+    ``example`` ``cowper-symonds(D=6500 1/s, q=4)``."""
+    values = None if example else dict.fromkeys(RATE_CONSTANTS[name][1], "...")
+    return f"{name}({constants_text(name, values, '=')})"
+
+
+#: A rate law with one's own constants, as ``--rate`` takes it.
+RATE_EXAMPLE = _form("cowper-symonds", example=True)
 
 
 def rate_help() -> str:
     """The help of ``--rate``: each library law's form, constants (with units), what they were
     fitted for and their sources, and how to give one's own constants."""
     laws = "; ".join(
-        f"{n}: k = {RATE_CONSTANTS[n][0]}, {_constants(n, law)} ({law.description.split(':')[0]}"
-        f"; {', '.join(_RATE_SOURCES.get(k, k) for k in law.reference_keys)})"
+        f"{n}: k = {RATE_CONSTANTS[n][0]}, {constants_text(n, dict(law.parameters))} "
+        f"({law.description.split(':')[0]}; "
+        f"{', '.join(_RATE_SOURCES.get(k, k) for k in law.reference_keys)})"
         for n, law in RATE_LAWS.items()
     )
-    own = " or ".join(f'"{n}({_constants(n)})"' for n in RATE_LAWS)
+    own = " or ".join(f'"{_form(n)}"' for n in RATE_LAWS)
     fitted = {law.fitted_for.name for law in RATE_LAWS.values() if law.fitted_for is not None}
     return (
         "Rate-dependent flat, its yield strength times k(eps_dot), eps_dot its strain rate "
@@ -87,22 +84,21 @@ def rate_name(rate: str, name: str = "--rate") -> str | RateLaw | None:
         )
     if key == "none" or match.group(2) is None:
         return None if key == "none" else key
-    units, values = RATE_CONSTANTS[key][1], {}
-    takes = (
-        f"{name} {rate.strip()!r}: {key} takes {', '.join(f'{k} [{u}]' for k, u in units.items())}"
-    )
+    units, values, shown = RATE_CONSTANTS[key][1], {}, f"{name} {rate.strip()!r}"
+    depth = list(accumulate((c == "(") - (c == ")") for c in match.group(2)))
+    if depth and (min(depth) < 0 or depth[-1] != 0):
+        raise UserError(f"{shown}: unbalanced brackets; write the constants in one pair, e.g. "
+                        f'"{_form(key, example=True)}"')  # fmt: skip
+    takes = f"{shown}: {key} takes {', '.join(f'{k} [{u}]' for k, u in units.items())}"
     for item in match.group(2).split(","):
         given, eq, text = (part.strip() for part in item.partition("="))
         known = {k.lower(): k for k in units}.get(given.lower())
-        if not eq or not text or known is None or known in values:
-            raise UserError(
-                f"{takes}, got {item.strip()!r}" + (" twice" if known in values else "")
-            )
-        text = re.sub(r"(\S)\s+1\s*/", r"\1 /", text)  # "6500 1/s", as a result prints it
-        try:
-            values[known] = to_si(text, units[known], name=f"{name} {known}")
-        except ValueError as exc:  # "--rate D: '6500 m' has the wrong dimension"
-            raise UserError(str(exc)) from None
+        if not eq or not text or "=" in text or known is None or known in values:
+            raise UserError(f"{takes}, got {item.strip()!r}{' twice' * (known in values)}")
+        try:  # "--rate D: '6500 m' has the wrong dimension", "--rate q must be a plain number"
+            values[known] = rate_constant(key, known, text, bare=True)
+        except ValueError as exc:
+            raise UserError(f"{name} {exc}") from None
     if set(values) != set(units):
         raise UserError(f"{takes}, missing {', '.join(k for k in units if k not in values)}")
     try:
@@ -121,8 +117,23 @@ def check_rate_flat(rate: str | RateLaw | None, flat: Material, name: str = "--r
         raise UserError(
             f"{name} {law.name}: its constants are fitted for {law.fitted_for.name}, but the flat "
             f"{flat.name!r} has {why}; give the flat's own constants, --rate "
-            f'"{law.name}({_constants(law.name)})" (e.g. "{RATE_EXAMPLE}"; --help lists them)'
+            f'"{_form(law.name)}" (e.g. "{_form(law.name, example=True)}"; --help '
+            "lists them)"
         )
+
+
+def check_rate_law(rate: str | RateLaw | None, law: object, name: str, law_name: str) -> None:
+    """UserError when a rate law ``rate`` comes with an elastic contact ``law`` (no yield
+    strength to raise), naming each as the user gave it: ``name`` "--rate" or "the recorded
+    rate", ``law_name`` "--law" or "the recorded law"."""
+    from impactlab.dynamics.drop import ELASTIC_LAWS  # lazy: a fast CLI start
+
+    if rate is None or not isinstance(law, str) or law.strip().lower() not in ELASTIC_LAWS:
+        return
+    fix = "add --rate none" if name.startswith("the recorded") else f"leave out {name}"
+    shown = rate.label if isinstance(rate, RateLaw) else rate
+    raise UserError(f"{name} {shown}: {law_name} {law.strip()} is elastic (no yield strength for "
+                    f"the rate to raise); {fix}, or give an elastic-plastic --law")  # fmt: skip
 
 
 class _CurrentConsole:

@@ -28,6 +28,7 @@ from impactlab.cli._common import (
     UserError,
     angle_quantity,
     check_rate_flat,
+    check_rate_law,
     emit,
     length_help,
     positive,
@@ -38,7 +39,7 @@ from impactlab.cli._common import (
 )
 from impactlab.cli.drop_body import MODES_HELP, drop_body
 from impactlab.cli.simulate_from import option_error, run_from
-from impactlab.dynamics.drop import DEFAULT_T_MAX, ELASTIC_LAWS, simulate_drop
+from impactlab.dynamics.drop import DEFAULT_T_MAX, simulate_drop
 from impactlab.dynamics.drop_result import UNITS, DropResult
 from impactlab.friction import DEFAULT_MU
 from impactlab.materials import AISI_1010, Material, get_material
@@ -264,11 +265,7 @@ def drop_cmd(
     body = drop_body(rigid, modes, sizes, rod_material, positive(inertia, "kg*m^2", "--inertia"))
     flat_material, rate_law = _material(flat, AISI_1010, "--flat"), rate_name(rate)
     check_rate_flat(rate_law, flat_material)  # the command line's way to other constants
-    if rate_law is not None and law.strip().lower() in ELASTIC_LAWS:
-        raise UserError(
-            f"--rate {rate.strip()}: --law {law} is elastic (no yield strength for the rate to "
-            "raise); leave out --rate, or give an elastic-plastic --law"
-        )
+    check_rate_law(rate_law, law, "--rate", "--law")
     try:
         result = simulate_drop(
             body,

@@ -24,6 +24,7 @@ from impactlab.cli._common import (
     angle_quantity,
     as_option,
     check_rate_flat,
+    check_rate_law,
     load_toml,
     positive,
     quantity,
@@ -228,6 +229,7 @@ def run_simulate(opt: _Options) -> ImpactResult | DropResult:
     if isinstance(body, FlexibleRod):  # the drop: a DropResult
         rate = rate_name(str(cfg.get("rate", "none")), opt.label("rate"))
         check_rate_flat(rate, common["flat"], opt.label("rate"))
+        check_rate_law(rate, common["law"], opt.label("rate"), opt.label("law"))
         stop = str(cfg.get("stop", "sequence"))
         t_max = positive(cfg.get("t_max"), "s", opt.label("t_max")) or DEFAULT_T_MAX
         return simulate(body, angle=rod_angle, rate=rate, stop=stop, t_max=t_max, history=False,

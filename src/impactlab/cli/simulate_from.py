@@ -24,6 +24,7 @@ from impactlab.cli._common import (
     angle_quantity,
     as_option,
     check_rate_flat,
+    check_rate_law,
     positive,
     quantity,
     rate_name,
@@ -267,6 +268,8 @@ def run_from(
         rate = changes.get("rate", recorded.get("rate"))
         blame = "--rate" if "rate" in changes else "the recorded rate"
         check_rate_flat(rate, changes.get("flat", recorded["flat"]), blame)
+        law_blame = "--law" if "law" in changes else "the recorded law"
+        check_rate_law(rate, changes.get("law", recorded.get("law")), blame, law_blame)
     try:
         return rerun(record, **changes)
     except ValueError as exc:  # the keyword it names (t_max) as the command's option

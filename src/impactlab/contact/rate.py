@@ -46,28 +46,36 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from collections.abc import Callable
+import numbers
+import re
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
 from impactlab._validation import check_nonnegative, check_positive
 from impactlab.materials import Material
 from impactlab.references import REFERENCES, Reference
+from impactlab.units import magnitude, to_si
 
 __all__ = [
     "COWPER_SYMONDS_MILD_STEEL",
     "JOHNSON_COOK_1006_STEEL",
     "LOW_CARBON_STEEL",
+    "RATE_CONSTANTS",
+    "RATE_EXAMPLES",
     "RATE_LAWS",
     "RATE_REFERENCES",
     "FittedFor",
     "RateFactor",
     "RateLaw",
     "check_rate_flat",
+    "constants_text",
     "cowper_symonds",
     "get_rate_law",
     "johnson_cook",
+    "rate_constant",
     "rate_materials",
     "self_consistent_factor",
+    "shortest",
     "tabor_strain_rate",
 ]
 
@@ -145,8 +153,61 @@ class FittedFor:
 LOW_CARBON_STEEL = FittedFor("low-carbon (mild) steel", (190e9, 215e9), (7750.0, 7950.0),
                              (150e6, 450e6))  # fmt: skip
 
-#: The forms of rate law and the parameters each takes (with their allowed ranges).
-_FORMS = {"cowper-symonds": ("D", "q"), "johnson-cook": ("C", "rate0")}
+#: Each form of rate law and the SI unit of its constants ("1": a plain number).
+RATE_CONSTANTS: dict[str, tuple[str, dict[str, str]]] = {
+    "cowper-symonds": ("1 + (eps_dot/D)^(1/q)", {"D": "1/s", "q": "1"}),
+    "johnson-cook": ("1 + C ln(eps_dot/rate0)", {"C": "1", "rate0": "1/s"}),
+}
+_FORMS = {name: tuple(units) for name, (_, units) in RATE_CONSTANTS.items()}
+#: An example number of each constant in its unit (D, q: aluminium alloys as quoted by Jones).
+RATE_EXAMPLES = {"D": "6500", "q": "4", "C": "0.03", "rate0": "1"}
+_PLAIN = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
+
+
+def shortest(x: float) -> str:
+    """The shortest text of ``x`` that reads back to the same float (``repr``, less a
+    trailing ``.0``: ``6500``, ``40.43217``, ``1e-20``)."""
+    return repr(float(x)).removesuffix(".0")
+
+
+def constants_text(form: str, values: Mapping[str, object] | None = None, eq: str = " = ") -> str:
+    """``D = 6500 1/s, q = 4``: the constants ``values`` of the law ``form`` (a float in its
+    :func:`shortest` text; None: ``RATE_EXAMPLES``), each with its unit, in the form's order."""
+    values = RATE_EXAMPLES if values is None else values
+    return ", ".join(
+        f"{k}{eq}{shortest(v) if isinstance(v := values[k], float) else v}"
+        + ("" if unit == "1" else f" {unit}")
+        for k, unit in RATE_CONSTANTS[form][1].items()
+    )
+
+
+def rate_constant(form: str, key: str, value: object, *, bare: bool = False) -> float:
+    """The constant ``key`` of the rate law ``form`` in SI (unit: ``RATE_CONSTANTS``): a number
+    in that unit, or text under the package's unit rules, ``units.magnitude`` (``"6500 1/s"``)
+    or, with ``bare``, the command line's ``units.to_si`` (a bare ``"6500"`` is in the unit); a
+    dimensionless constant is a plain number (``4``, ``"4"``). ValueError naming ``key``."""
+    unit, example = RATE_CONSTANTS[form][1][key], RATE_EXAMPLES[key]
+    if unit != "1" and not isinstance(value, bool):
+        value = to_si(value, unit, name=key) if bare else magnitude(key, value, unit)
+    elif isinstance(value, str) and _PLAIN.fullmatch(value.strip()):
+        value = float(value)
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        what = "a plain number" if unit == "1" else f"a number in {unit} or text with its unit"
+        example = example if unit == "1" else f"'{example} {unit}'"
+        raise ValueError(f"{key} must be {what}, e.g. {example}, got {value!r}")
+    return float(value)
+
+
+def _check_form(name: str, parameters: Mapping[str, object]) -> None:
+    """ValueError unless ``name`` is a form of rate law and ``parameters`` its constants."""
+    if name not in _FORMS:
+        raise ValueError(
+            f"RateLaw name must be one of {tuple(_FORMS)} (the law's form), got {name!r}"
+        )
+    if set(parameters) != set(_FORMS[name]):
+        raise ValueError(
+            f"a {name!r} RateLaw takes the parameters {_FORMS[name]}, got {tuple(parameters)}"
+        )
 
 
 @dataclass(frozen=True)
@@ -165,14 +226,8 @@ class RateLaw:
     fitted_for: FittedFor | None = None
 
     def __post_init__(self) -> None:
-        if self.name not in _FORMS:
-            raise ValueError(
-                f"RateLaw name must be one of {tuple(_FORMS)} (the law's form), got {self.name!r}"
-            )
         p = dict(self.parameters)
-        need = _FORMS[self.name]
-        if set(p) != set(need):
-            raise ValueError(f"a {self.name!r} RateLaw takes the parameters {need}, got {tuple(p)}")
+        _check_form(self.name, p)
         if self.name == "cowper-symonds":
             check_positive("D", p["D"], "1/s")
             check_positive("q", p["q"])
@@ -186,14 +241,14 @@ class RateLaw:
             )
 
     @classmethod
-    def custom(cls, name: str, description: str = "", **parameters: float) -> RateLaw:
-        """A rate law of form ``name`` with one's own constants (validated), e.g.
-        ``RateLaw.custom("cowper-symonds", D=6500.0, q=4.0)`` (aluminium alloys as quoted by
+    def custom(cls, name: str, description: str = "", **parameters: object) -> RateLaw:
+        """A rate law of form ``name`` with one's own constants (validated), each a number in
+        its unit or text with its unit (:func:`rate_constant`), e.g.
+        ``RateLaw.custom("cowper-symonds", D="6500 1/s", q=4)`` (aluminium alloys as quoted by
         Jones, Structural Impact); no material check: the constants are the flat's."""
-        values = tuple(sorted((k, float(v)) for k, v in parameters.items()))
-        text = description or f"{name}, user constants " + ", ".join(
-            f"{k} = {v:g}" for k, v in values
-        )
+        _check_form(name, parameters)
+        values = tuple(sorted((k, rate_constant(name, k, v)) for k, v in parameters.items()))
+        text = description or f"{name}, user constants {constants_text(name, dict(values))}"
         return cls(name, values, (), text, None)
 
     def factor(self, rate: float) -> float:
@@ -209,12 +264,7 @@ class RateLaw:
         constants (``"cowper-symonds (D = 6500 1/s, q = 4)"``): what a result shows."""
         if RATE_LAWS.get(self.name) == self:
             return self.name
-        units = {"D": " 1/s", "rate0": " 1/s"}
-        return (
-            f"{self.name} ("
-            + ", ".join(f"{k} = {v:g}{units.get(k, '')}" for k, v in self.parameters)
-            + ")"
-        )
+        return f"{self.name} ({constants_text(self.name, dict(self.parameters))})"
 
     @property
     def references(self) -> tuple[Reference, ...]:
