@@ -159,3 +159,60 @@ def test_results_json_is_written_whole_or_not_at_all(
     assert "No space left on device" in res.errors["results"]
     assert (tmp_path / "results.json").read_bytes() == before["results.json"]
     assert not [p.name for p in tmp_path.iterdir() if p.name not in before]  # nothing partial
+
+
+def _full_disk_for(monkeypatch: pytest.MonkeyPatch, names: tuple[str, ...]) -> None:
+    """Make every write of a file whose name holds one of ``names`` fail as on a full disk."""
+    from impactlab.experiment import saving
+
+    real = saving.write_bytes_atomic
+
+    def write(path: Path, data: bytes) -> None:
+        if any(n in Path(path).name for n in names):
+            raise OSError(28, "No space left on device")
+        real(path, data)
+
+    monkeypatch.setattr(saving, "write_bytes_atomic", write)
+
+
+def test_a_full_disk_leaves_the_folder_as_it_was(
+    tmp_path: Path, drops: dict, scans: dict, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The figures fitted on the disk and results.json did not: the folder held the new figures
+    beside the old results.json of another drop."""
+    before = _first_run(tmp_path, drops, scans)
+    _full_disk_for(monkeypatch, ("results.json",))
+    d = drops[45]
+    res = analyze(d.c3d, scans[45].files["x3p"], geometry=d.geometry, out_dir=tmp_path)
+    assert {p.name: p.read_bytes() for p in tmp_path.iterdir()} == before
+    assert "No space left on device" in res.errors["results"]
+    assert "nothing in the folder was written or removed" in res.errors["results"]
+    assert "could not be (see results)" in res.errors["figures"]
+    assert not res.figures and "results" not in res.files
+    assert res.kinematics is not None and res.dent is not None  # what was measured is kept
+
+
+def test_a_rerun_on_a_full_disk_removes_no_figure(
+    tmp_path: Path, drops: dict, scans: dict, junk: dict[str, Path], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """It deleted both earlier figures, saying 'this run drew no kinematics figure' of one it
+    drew but could not write."""
+    before = _first_run(tmp_path, drops, scans)
+    _full_disk_for(monkeypatch, ("kinematics.png",))
+    d = drops[20]
+    res = analyze(d.c3d, junk["x3p"], geometry=d.geometry, out_dir=tmp_path)
+    assert {p.name: p.read_bytes() for p in tmp_path.iterdir()} == before
+    assert "kinematics.png" in res.errors["results"] and "No space left" in res.errors["results"]
+    assert not [w for w in res.warnings if "removed" in w]
+
+
+def test_every_figure_error_is_kept(tmp_path: Path, drops: dict, scans: dict) -> None:
+    """Only the last figure's error was kept."""
+    (tmp_path / "dent.png").write_bytes(PHOTO)
+    (tmp_path / "kinematics.png").mkdir()
+    d = drops[20]
+    res = analyze(d.c3d, scans[20].files["x3p"], geometry=d.geometry, out_dir=tmp_path)
+    error = res.errors["figures"]
+    assert "dent.png" in error and "kinematics.png" in error and "a folder" in error
+    assert (tmp_path / "dent.png").read_bytes() == PHOTO and not res.figures
+    assert written_by_analyze(tmp_path / "results.json")

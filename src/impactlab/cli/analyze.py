@@ -149,6 +149,8 @@ def analyze_cmd(
     mean force F from the paper's Eqs. 12 and 29.
 
     Partial results are printed and saved even when a file is bad; the exit status is then 2.
+    A result in doubt (an estimated marker geometry that the impulse relation finds tilted or
+    cannot check) says so (a warning, "ok": false in --json) with exit status 0.
 
     Example: impactlab analyze drop.c3d dent.x3p --geometry markers.toml --out results/
     """
@@ -190,6 +192,8 @@ def _print_summary(res: ExperimentResult) -> None:
     rows = [field_row(k, est.value, est.unit or "1", est.sigma) for k, est in res.summary().items()]
     if res.kinematics is not None:
         rows.append(("geometry", res.kinematics.geometry_source, ""))
+        if not res.kinematics.ok:
+            rows.append(("ok", "no: the marker geometry is in doubt (see the warnings)", ""))
     if res.dent is not None:
         name, text, unit = field_row(
             "sliding_direction", math.radians(res.dent.sliding_angle), "rad"

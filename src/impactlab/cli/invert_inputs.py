@@ -13,7 +13,7 @@ import math
 import re
 from typing import Any
 
-from impactlab.cli._common import UserError, angle_quantity, any_angle, parse_rod_table, quantity
+from impactlab.cli._common import UserError, any_angle, parse_rod_table, quantity
 from impactlab.cli.config_values import check_booleans
 
 __all__ = [
@@ -56,17 +56,34 @@ def _inversion_angle(value: Any, name: str) -> float:
     (the range of ``impactlab.analytic.invert``: at 90 deg the tip cannot slide)."""
     th = any_angle(value, name)
     if not 0.0 < th < 0.5 * math.pi:
+        why = (
+            "at 90 deg it stands vertical and its tip cannot slide"
+            if th >= 0.5 * math.pi
+            else "at 0 deg it lies on the flat, and below 0 its tip points up"
+        )
         raise UserError(
-            f"{name} must lie in (0, 90) deg, open at both ends (the rod tilted: at 90 deg it "
-            f"stands vertical and its tip cannot slide), got {str(value).strip()}"
+            f"{name} must lie in (0, 90) deg, open at both ends (the rod tilted: {why}), "
+            f"got {str(value).strip()}"
         )
     return th
+
+
+def _angle_sigma(value: Any, name: str) -> float:
+    """The standard deviation of the rod's angle [rad]: with its unit, finite and >= 0 (0: the
+    angle taken as exact, as any other zero sigma)."""
+    sigma = any_angle(value, name)
+    if not (math.isfinite(sigma) and sigma >= 0.0):
+        raise UserError(
+            f"{name} must be a standard deviation >= 0 deg (0: the angle taken as exact), got "
+            f"{str(value).strip()}"
+        )
+    return sigma
 
 
 def parse_value(value: Any, unit: str, name: str) -> float:
     if unit == "degree":
         if name.startswith(("--sigma-", "sigma.")):  # a standard deviation, not the angle
-            return angle_quantity(value, name)
+            return _angle_sigma(value, name)
         return _inversion_angle(value, name)
     if unit:
         return quantity(value, unit, name)  # type: ignore[return-value]

@@ -16,7 +16,8 @@ never lost; an invalid argument raises a TypeError or ValueError naming it at on
    simulated impact's, or a T longer than the marker fits allow (``experiment.consistency``);
 5. ``figures`` and ``results`` (``results.json``) in ``out_dir``, figures an earlier run
    left there removed (``experiment.saving``: only files an analysis wrote are removed or
-   written over); a file that cannot be written is the stage's error, naming it.
+   written over; all are written, or, on a full disk, none and nothing removed); a file that
+   cannot be written is the stage's error, naming it.
 """
 
 from __future__ import annotations
@@ -46,12 +47,7 @@ from impactlab.experiment.profilometry import DentMetrics, measure_dent, read_sc
 from impactlab.experiment.profilometry.plausibility import PLAUSIBLE_DEPTH, check_dent
 from impactlab.experiment.result import ExperimentResult
 from impactlab.experiment.rigid import MarkerGeometry
-from impactlab.experiment.saving import (
-    check_folder,
-    remove_stale_figures,
-    save_results,
-    write_figures,
-)
+from impactlab.experiment.saving import check_folder, save_outputs
 from impactlab.experiment.sticking import sticking_message
 from impactlab.materials import Material
 
@@ -268,10 +264,7 @@ def analyze(
         _model_stage(res, run.rod, run.flat, law)
     _plausibility_stage(res, int(run.kinematics.get("guard", _GUARD)))
     if run.out is not None and check_folder(res, run.out, figures):
-        if figures:
-            write_figures(res, run.out)
-        remove_stale_figures(res, run.out)
-        save_results(res, run.out)
+        save_outputs(res, run.out, figures)
     if strict:
         res.raise_for_errors()
     return res

@@ -43,8 +43,10 @@ class ExperimentResult:
 
     @property
     def ok(self) -> bool:
-        """True when every stage succeeded."""
-        return not self.errors
+        """True when every stage succeeded and nothing makes a result doubtful (an estimated
+        marker geometry that the impulse relation finds tilted or cannot check:
+        ``kinematics.doubts``, also among the warnings)."""
+        return not self.errors and (self.kinematics is None or self.kinematics.ok)
 
     def summary(self) -> dict[str, Estimate]:
         """The headline results as estimates (SI), keyed by the paper's symbols (the table the
@@ -88,6 +90,7 @@ class ExperimentResult:
             "markers": self.markers_path,
             "scan": self.scan_path,
             "summary": {k: v.to_dict() for k, v in self.summary().items()},
+            "ok": self.ok,
             "errors": dict(self.errors),
             "warnings": list(self.warnings),
             "rod": dict(self.rod),

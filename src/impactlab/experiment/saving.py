@@ -12,16 +12,21 @@ or a ``results.json`` cut short that starts as an analysis writes it) is replace
 warning. ``results.json`` is the folder's record of the analysis: when it cannot be written (a
 user's file of that name, a folder in the way), which is checked before anything is written,
 nothing is written or removed there. Every file is written whole or not at all
-(``impactlab._files``). A file that cannot be written (no permission) is the ``figures`` or
-``results`` stage's error naming the file; what was measured is kept and still reported.
+(``impactlab._files``), and under a temporary name first: the figures and ``results.json`` are
+renamed into place together, and an earlier run's figures removed, only when all were written,
+so that a full disk leaves the folder as it was. A figure that cannot be written (no
+permission) is the ``figures`` stage's error naming the file (each such file named); what was
+measured is kept and still reported.
 """
 
 from __future__ import annotations
 
+import errno
 import io
 import json
 import os
 import re
+import stat
 import struct
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -39,9 +44,7 @@ __all__ = [
     "FIGURES",
     "MARK",
     "check_folder",
-    "remove_stale_figures",
-    "save_results",
-    "write_figures",
+    "save_outputs",
     "written_by_analyze",
 ]
 
@@ -168,66 +171,145 @@ def check_folder(res: ExperimentResult, out: Path, figures: bool = True) -> bool
     return False
 
 
-def write_figures(res: ExperimentResult, out: Path) -> None:
-    """Draw the figures of what ``res`` measured into ``out`` (``res.figures``), each written
-    whole or not at all."""
+def _add_error(res: ExperimentResult, stage: str, message: str) -> None:
+    """Record ``message`` as ``stage``'s error, after any it has already."""
+    before = res.errors.get(stage)
+    res.errors[stage] = f"{before}; {message}" if before else message
+
+
+def _drawn(res: ExperimentResult) -> dict[str, bytes]:
+    """The figures of what ``res`` measured, as PNG files in memory (name -> bytes)."""
     plt = pyplot()
     drawn: list[tuple[str, Figure]] = []
     if res.kinematics is not None:
         drawn.append(("kinematics", plot_kinematics(res.kinematics)))
     if res.dent is not None:
         drawn.append(("dent", plot_dent(res.dent)))
+    out: dict[str, bytes] = {}
     for name, fig in drawn:
-        path = out / FIGURES[name]
         try:
-            if path.is_file() and not _replaceable(path, res, "figures"):
-                res.errors["figures"] = f"not written: {_foreign(path)}"
-                continue
             png = io.BytesIO()
             fig.savefig(png, dpi=FIGURE_DPI, metadata={"Software": f"{MARK} {__version__}"})
-            write_bytes_atomic(path, png.getvalue())
-        except OSError as exc:
-            res.errors["figures"] = _cannot_write(path, exc)
-            continue
+            out[name] = png.getvalue()
         finally:
             plt.close(fig)
-        res.figures[name] = str(path)
+    return out
 
 
-def remove_stale_figures(res: ExperimentResult, out: Path) -> None:
-    """Remove the figures in ``out`` that this run did not draw (module docstring)."""
+def _blocked(path: Path, res: ExperimentResult) -> str | None:
+    """Why the figure ``path`` may not be written (a user's file, a folder in the way, a file
+    without write permission); None when it may."""
+    if path.is_dir():
+        return _cannot_write(path, OSError("a folder is in the way"))
+    if path.is_file():
+        if not _replaceable(path, res, "figures"):
+            return f"not written: {_foreign(path)}"
+        if not os.access(path, os.W_OK):
+            return f"cannot write {str(path)!r}: {os.strerror(errno.EACCES)}"
+    return None
+
+
+def _stale(res: ExperimentResult, out: Path, drawn: set[str]) -> list[tuple[str, Path]]:
+    """The figures in ``out`` that an earlier run left and this run did not draw (``drawn``:
+    the names it drew, written or not): (name, path) to remove; a user's file of that name is
+    left, with a warning (unless this run's error names it already)."""
+    stale = []
     for name, file in FIGURES.items():
         path = out / file
-        if name in res.figures or not path.is_file():
+        if name in drawn or not path.is_file():
             continue
         if not written_by_analyze(path) and damaged(path) is None:
-            if str(path) in res.errors.get("figures", ""):
-                continue  # refused by write_figures, said there
             res.warnings.append(f"figures: {_foreign(path)}; it does not show this run")
             continue
+        stale.append((name, path))
+    return stale
+
+
+class _WriteError(OSError):
+    """A file of the output folder that could not be written (``path``, the ``cause``)."""
+
+    def __init__(self, path: Path, cause: OSError) -> None:
+        super().__init__(str(cause))
+        self.path, self.cause = path, cause
+
+
+def _swap_in(files: dict[Path, bytes]) -> None:
+    """Write every file of ``files`` (path -> bytes) under a temporary name first, each whole
+    (``impactlab._files``), and rename them all into place only when all were written; a file
+    that cannot be written is a :class:`_WriteError` naming it, and the folder is left as it
+    was. A file written over keeps its permission bits."""
+    staged: list[tuple[Path, Path]] = []
+    try:
+        for path, data in files.items():
+            tmp = path.with_name(f".{path.name}.{os.getpid()}.new")
+            try:
+                write_bytes_atomic(tmp, data)
+                staged.append((tmp, path))
+                if path.is_file():
+                    os.chmod(tmp, stat.S_IMODE(path.stat().st_mode))
+            except OSError as exc:
+                raise _WriteError(path, exc) from None
+        for tmp, path in staged:
+            try:
+                os.replace(tmp, path)
+            except OSError as exc:
+                raise _WriteError(path, exc) from None
+    finally:
+        for tmp, _ in staged:
+            tmp.unlink(missing_ok=True)
+
+
+def save_outputs(res: ExperimentResult, out: Path, figures: bool = True) -> None:
+    """Write this run's figures (with ``figures``) and ``results.json`` into ``out`` together,
+    then remove the figures of an earlier run that this run did not draw (module docstring).
+    Every file is written under a temporary name first and renamed into place only when all
+    were written: when one cannot be (a full disk), nothing in the folder is written or
+    removed, and the ``results`` (and ``figures``) stage's error says so. A figure that may not
+    be written (:func:`_blocked`) is the ``figures`` stage's error, the others are written."""
+    drawn = _drawn(res) if figures else {}
+    files: dict[Path, bytes] = {}
+    for name, png in drawn.items():
+        path = out / FIGURES[name]
+        problem = _blocked(path, res)
+        if problem is not None:
+            _add_error(res, "figures", problem)
+            continue
+        files[path] = png
+        res.figures[name] = str(path)
+    stale = _stale(res, out, set(drawn))
+    removed = [
+        f"figures: removed {str(path)!r}, left by an earlier run (this run drew no {name} figure)"
+        for name, path in stale
+    ]
+    results = out / "results.json"
+    if results.is_file():
+        _replaceable(results, res, "results")  # (check_folder refused a user's file)
+    res.files["results"] = str(results)
+    res.warnings += removed
+    files[results] = json.dumps(res.to_dict(), indent=2).encode("utf-8")
+    try:
+        _swap_in(files)
+    except _WriteError as exc:
+        res.warnings = [w for w in res.warnings if w not in removed]
+        res.files.pop("results", None)
+        for name in [n for n in res.figures if Path(res.figures[n]) in files]:
+            del res.figures[name]
+        done = "nothing in the folder was written or removed"
+        res.errors["results"] = f"{_cannot_write(exc.path, exc.cause)}; {done}"
+        if drawn:
+            _add_error(
+                res,
+                "figures",
+                f"not written: the figures are written with {str(results)!r}, the record of "
+                f"the analysis, which could not be (see results); {done}",
+            )
+        return
+    for _name, path in stale:
         try:
             path.unlink()
         except OSError as exc:
+            res.warnings.remove(next(w for w in removed if str(path) in w))
             res.warnings.append(
                 f"figures: {str(path)!r} is left from an earlier run and could not be removed "
                 f"({exc.strerror or exc}): it does not show this run"
             )
-        else:
-            res.warnings.append(
-                f"figures: removed {str(path)!r}, left by an earlier run (this run drew no "
-                f"{name} figure)"
-            )
-
-
-def save_results(res: ExperimentResult, out: Path) -> None:
-    """Write ``results.json`` into ``out`` (whole or not at all); a failure is the ``results``
-    stage's error."""
-    path = out / "results.json"
-    if path.is_file() and not _replaceable(path, res, "results"):
-        res.errors["results"] = f"not written: {_foreign(path)}"
-        return
-    try:
-        res.save(out)
-    except OSError as exc:
-        res.files.pop("results", None)
-        res.errors["results"] = _cannot_write(path, exc)

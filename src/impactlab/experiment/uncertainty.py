@@ -88,4 +88,10 @@ def propagate(
     return y, J @ cov @ J.T
 
 
-__all__ = ["Estimate", "jacobian", "propagate"]
+def fixed(x: float) -> str:
+    """``x`` for a message in fixed point: two significant digits below 10, whole numbers from
+    there (110, not 1.1e+02)."""
+    return f"{x:.0f}" if math.isfinite(x) and abs(x) >= 10.0 else f"{x:.2g}"
+
+
+__all__ = ["Estimate", "fixed", "jacobian", "propagate"]

@@ -20,6 +20,7 @@ import numpy as np
 from impactlab.experiment.errors import MarkerError
 from impactlab.experiment.kinematics.fits import grow_segment
 from impactlab.experiment.rigid import Poses
+from impactlab.experiment.uncertainty import fixed
 
 __all__ = ["GRAVITY_SIGMAS", "GRAVITY_TOLERANCE", "TILT_WARN_DEG", "fitted_gravity", "suggested_up"]
 
@@ -122,7 +123,7 @@ def _weak(
     return (
         f"the time base is checked only roughly: the free fall before the impact ({used.size} "
         f"frames over {span * 1e3:.3g} ms) accelerates at {fitted:.3g} ± {sig:.2g} m/s^2, so a "
-        f"frame rate or time column off by up to about {off:.2g} % would pass unseen (a longer "
+        f"frame rate or time column off by up to about {fixed(off)} % would pass unseen (a longer "
         "record before the impact checks it closely); e, v_i and every velocity rest on it "
         "being right"
     )

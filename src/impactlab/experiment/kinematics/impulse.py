@@ -34,7 +34,7 @@ from scipy.spatial.transform import Rotation
 from impactlab.bodies import lever_arms
 from impactlab.experiment.kinematics.result import ImpactKinematics
 from impactlab.experiment.rigid import Poses
-from impactlab.experiment.uncertainty import propagate
+from impactlab.experiment.uncertainty import fixed, propagate
 
 __all__ = [
     "AXIS_TOLERANCE",
@@ -115,8 +115,8 @@ class ImpulseCheck:
     def text(self) -> str:
         return (
             f"spin change {self.spin_change:.3g} rad/s against {self.predicted:.3g} rad/s from "
-            f"the impulse (differing by {100.0 * self.relative:.2g} %), turning about an axis "
-            f"{self.axis_degrees:.2g} deg off the perpendicular to the rod"
+            f"the impulse (differing by {fixed(100.0 * self.relative)} %), turning about an axis "
+            f"{fixed(self.axis_degrees)} deg off the perpendicular to the rod"
         )
 
 

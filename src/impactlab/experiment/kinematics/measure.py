@@ -32,12 +32,11 @@ from impactlab.experiment.kinematics.gravity import fitted_gravity
 from impactlab.experiment.kinematics.impulse import gyration_squared
 from impactlab.experiment.kinematics.mirror import (
     E_SIGMAS,
-    ESTIMATED_SIGMAS,
-    ESTIMATED_TOLERANCE,
     checked_against_mirror,
 )
 from impactlab.experiment.kinematics.options import check_kinematics_options
 from impactlab.experiment.kinematics.result import ImpactKinematics
+from impactlab.experiment.kinematics.tilt import GROSS_TILT
 from impactlab.experiment.markers import MarkerTracks
 from impactlab.experiment.rigid import MarkerGeometry, Poses
 from impactlab.experiment.uncertainty import Estimate, propagate
@@ -339,9 +338,9 @@ def _measure(
         )
         warnings.append(
             "geometry estimated: the rod's axis is taken as the markers' principal direction, "
-            "which holds only for markers laid out along the rod (a tilt that breaks the "
-            f"impulse relation by more than {ESTIMATED_SIGMAS:g} sigma and "
-            f"{100 * ESTIMATED_TOLERANCE:g} % is refused, a smaller one is not seen); the +- of "
+            "which holds only for markers laid out along the rod (the tilt the impulse "
+            f"relation implies: beyond {math.degrees(GROSS_TILT):.0f} deg refused, a smaller one "
+            "or one it cannot tell marks the result not ok); the +- of "
             "e, mu and the angle does not include that assumption (give the "
             "marker geometry to remove it)"
         )

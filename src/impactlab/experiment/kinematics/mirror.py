@@ -28,13 +28,12 @@ import numpy as np
 from impactlab.experiment.errors import MarkerError
 from impactlab.experiment.kinematics.impulse import ImpulseCheck, impulse_check
 from impactlab.experiment.kinematics.result import ImpactKinematics
+from impactlab.experiment.kinematics.tilt import GROSS_TILT, TiltCheck, tilt_check
 from impactlab.experiment.rigid import MarkerGeometry, kabsch
-from impactlab.experiment.uncertainty import Estimate
+from impactlab.experiment.uncertainty import Estimate, fixed
 
 __all__ = [
     "CAUSE",
-    "ESTIMATED_SIGMAS",
-    "ESTIMATED_TOLERANCE",
     "E_SIGMAS",
     "E_WARN_SIGMAS",
     "check_not_mirrored_shape",
@@ -44,15 +43,6 @@ __all__ = [
     "mirrored_geometry_error",
 ]
 
-#: Without a given geometry (estimated: the axis along the markers' principal direction) the
-#: measured spin change and the one the impulse predicts must not differ by more than this many
-#: standard uncertainties of their difference (the estimated centre of mass's included) ...
-ESTIMATED_SIGMAS = 3.0
-#: ... and by more than this fraction of the larger: markers laid out along the rod stay within
-#: 2.8 sigma and 19 % (10-80 deg, 0.05-0.2 mm of noise, 250-1000 fps); the paper's layout
-#: (``testing.DEFAULT_MARKERS``), whose principal direction is not the rod's, differs by 5-86 sigma
-#: and 24-52 % (its angle read 20 deg off).
-ESTIMATED_TOLERANCE = 0.15
 #: e outside [0, 1] by more than this many of its sigmas is refused ...
 E_SIGMAS = 3.0
 #: ... and by more than this many (but not E_SIGMAS) draws a warning.
@@ -125,19 +115,58 @@ def mirrored_impulse_error(
     )
 
 
-def estimated_geometry_error(src: str, k: ImpactKinematics, check: ImpulseCheck) -> MarkerError:
-    """The error for an estimated geometry whose motion breaks the impulse relation: the
-    markers are not laid out along the rod, so the estimated axis is not the rod's."""
+def _read(k: ImpactKinematics) -> str:
+    return f"angle {_angle(k)}, e = {k.e:.4g}, mu = {k.mu:.4g}"
+
+
+def _tilt(k: ImpactKinematics, check: TiltCheck) -> str:
+    """The implied tilt, with the angle it implies."""
+    if math.isnan(check.tilt):
+        return check.text()
+    angle = math.degrees(k.angle_in.value + check.tilt)
+    return f"{check.text()} (a rod's angle of {angle:.1f} deg)"
+
+
+#: What to do about an estimated geometry in doubt.
+_GIVE_GEOMETRY = (
+    "give the marker geometry (impactlab analyze --geometry markers.toml; geometry= in Python)"
+)
+
+
+def estimated_geometry_error(src: str, k: ImpactKinematics, check: TiltCheck) -> MarkerError:
+    """The error for an estimated geometry whose motion implies a gross tilt of the rod's axis
+    (:mod:`.tilt`): the markers are not laid out along the rod."""
     return MarkerError(
         f"{src}: with the marker geometry estimated (the rod's axis taken as the markers' "
-        f"principal direction) the velocity changes break the rigid-body impulse relation "
-        f"(k^2 dw = b dv_Cx - a dv_Cy): spin change {check.spin_change:.3g} rad/s against "
-        f"{check.predicted:.3g} rad/s from the impulse, differing by "
-        f"{100.0 * check.relative:.2g} % and {check.sigmas:.2g} sigma: the markers are not laid "
-        f"out along the rod, so the estimated axis, and with it the angle ({_angle(k)}), "
-        f"e = {k.e:.4g} and mu = {k.mu:.4g}, are wrong; give the marker geometry "
-        f"(impactlab analyze --geometry markers.toml; geometry= in Python)"
+        f"principal direction) the rigid-body impulse relation (k^2 dw = b dv_Cx - a dv_Cy) "
+        f"holds only with the rod's axis tilted {_tilt(k, check)} from it (more than "
+        f"{math.degrees(GROSS_TILT):.0f} deg): the markers are not laid out along the rod, so "
+        f"what was read ({_read(k)}) is wrong; {_GIVE_GEOMETRY}"
     )
+
+
+def estimated_geometry_note(k: ImpactKinematics, check: TiltCheck) -> str | None:
+    """The warning that marks a result with an estimated geometry not ok: a small tilt of the
+    rod's axis that the impulse relation implies, or a check that cannot tell a gross one from
+    none; None when it passes."""
+    verdict = check.verdict
+    if verdict == "tilted":
+        return (
+            f"the marker geometry is in doubt: with it estimated (the rod's axis taken as the "
+            f"markers' principal direction) the impulse relation implies the rod's axis tilted "
+            f"{_tilt(k, check)} from it (markers off the rod's axis, or a rod's inertia k^2 = I/m "
+            f"that is off), which biases what was read ({_read(k)}) beyond its +-; "
+            f"{_GIVE_GEOMETRY}"
+        )
+    if verdict == "undecided":
+        return (
+            f"the marker geometry is in doubt: with it estimated (the rod's axis taken as the "
+            f"markers' principal direction) the impulse relation implies the rod's axis tilted "
+            f"{_tilt(k, check)} from it, too uncertain to tell a tilt of "
+            f"{math.degrees(GROSS_TILT):.0f} deg from none (a shallow angle, a slow camera or "
+            f"noisy markers), so what was read ({_read(k)}) is unchecked; {_GIVE_GEOMETRY}"
+        )
+    return None
 
 
 def _e_note(e: Estimate) -> str | None:
@@ -149,7 +178,7 @@ def _e_note(e: Estimate) -> str | None:
     where = "below 0" if below else "above 1"
     cannot = "keep moving into the flat" if below else "leave the flat faster than it came"
     return (
-        f"e = {e:.4g} lies {n:.2g} sigma {where} (the tip cannot {cannot}; accepted as noise "
+        f"e = {e:.4g} lies {fixed(n)} sigma {where} (the tip cannot {cannot}; accepted as noise "
         f"within {E_SIGMAS:g} sigma): check the marker geometry (a mirrored one), up= and the "
         "impact found"
     )
@@ -162,8 +191,8 @@ def _axis_note(
     removes, while the spin change agrees with the impulse either way."""
     return (
         f"with the given marker geometry the rod turns at the impact about an axis "
-        f"{own.axis_degrees:.2g} deg off the perpendicular to it, with the geometry mirrored "
-        f"(its third coordinate negated) {fl.axis_degrees:.2g} deg: the geometry may be "
+        f"{fixed(own.axis_degrees)} deg off the perpendicular to it, with the geometry mirrored "
+        f"(its third coordinate negated) {fixed(fl.axis_degrees)} deg: the geometry may be "
         f"mirrored (three markers keep every distance in the mirror image), or the rod rolled "
         f"about its axis at the impact (a tip sliding sideways); e = {k.e:.4g} and the angle "
         f"{_angle(k)} hold for the given geometry only, and the mirrored one gives e = "
@@ -190,13 +219,17 @@ def checked_against_mirror(
     the impulse; a warning for a turn off the perpendicular to the rod only (a rod that rolls
     about its axis at the impact breaks that relation too). Otherwise an e outside [0, 1] by
     more than ``E_SIGMAS`` is ``e_error()``, by more than ``E_WARN_SIGMAS`` a warning; ``k`` is
-    returned with the warnings. Without a ``geometry`` (estimated), a spin change that
-    disagrees with the impulse by more than ``ESTIMATED_SIGMAS`` and ``ESTIMATED_TOLERANCE``
-    is :func:`estimated_geometry_error`."""
+    returned with the warnings. Without a ``geometry`` (estimated), the tilt of the rod's axis
+    that the impulse relation implies (:mod:`.tilt`): a gross one is
+    :func:`estimated_geometry_error`, a small one or an undecided check marks ``k`` not ok
+    (:func:`estimated_geometry_note`, in ``k.doubts`` and the warnings)."""
+    doubts: list[str] = []
     if geometry is None and k2 is not None:
-        estimated = impulse_check(k, k2)
-        if estimated.spin_differs(ESTIMATED_SIGMAS, ESTIMATED_TOLERANCE):
+        estimated = tilt_check(k, k2)
+        if estimated.verdict == "gross":
             raise estimated_geometry_error(src, k, estimated)
+        doubt = estimated_geometry_note(k, estimated)
+        doubts += [doubt] if doubt else []
     bad_e = e_outside(k.e, E_SIGMAS)
     own = impulse_check(k, k2) if geometry is not None and k2 is not None else None
     notes: list[str] = []
@@ -218,4 +251,8 @@ def checked_against_mirror(
         raise e_error()
     note = _e_note(k.e)
     notes += [note] if note else []
-    return dataclasses.replace(k, warnings=(*k.warnings, *notes)) if notes else k
+    if not notes and not doubts:
+        return k
+    return dataclasses.replace(
+        k, warnings=(*k.warnings, *doubts, *notes), doubts=(*k.doubts, *doubts)
+    )

@@ -22,7 +22,7 @@ class ImpactKinematics:
 
     ``correlation``: correlation matrix of the derived quantities (names in
     ``derived_names``). Diagnostics: ``pre``/``post`` fits, ``rigidity``, ``fitted_gravity``
-    [m/s^2], ``tilt_out_of_plane`` [rad], ``warnings``.
+    [m/s^2], ``tilt_out_of_plane`` [rad], ``warnings``; ``ok`` False with ``doubts``.
     """
 
     t_impact: Estimate
@@ -70,6 +70,14 @@ class ImpactKinematics:
     tilt_out_of_plane: float = 0.0
     poses: Poses | None = field(default=None, repr=False)
     warnings: tuple[str, ...] = ()
+    doubts: tuple[str, ...] = ()
+    """What makes the result not ok (each one of the ``warnings`` too): an estimated marker
+    geometry that the impulse relation finds tilted, or cannot check."""
+
+    @property
+    def ok(self) -> bool:
+        """False when something makes the result doubtful (``doubts``)."""
+        return not self.doubts
 
     @property
     def v_i(self) -> Estimate:
@@ -136,6 +144,8 @@ class ImpactKinematics:
             "geometry": self.geometry_source,
             "fitted_gravity": self.fitted_gravity,
             "tilt_out_of_plane_deg": math.degrees(self.tilt_out_of_plane),
+            "ok": self.ok,
+            "doubts": list(self.doubts),
             "warnings": list(self.warnings),
         }
         if self.rigidity is not None:

@@ -19,7 +19,12 @@ from typing import Any
 import numpy as np
 
 from impactlab.experiment.errors import FileFormatError
-from impactlab.experiment.markers.tracks import MarkerTracks, check_rate_agrees, length_factor
+from impactlab.experiment.markers.tracks import (
+    MarkerTracks,
+    check_rate_agrees,
+    length_factor,
+    rate_argument,
+)
 
 __all__ = ["read_c3d"]
 
@@ -127,7 +132,7 @@ def read_c3d(
     *,
     units: str | None = None,
     backend: str = "auto",
-    rate: float | None = None,
+    rate: float | str | None = None,
 ) -> MarkerTracks:
     """Read the 3D points of a C3D file.
 
@@ -137,12 +142,14 @@ def read_c3d(
     units : length unit of the stored coordinates; overrides ``POINT:UNITS`` (needed only when the
         file lacks it).
     backend : "auto" (ezc3d, then the pure-Python ``c3d`` package), "ezc3d" or "c3d".
-    rate : the frame rate [Hz] the caller expects: it must agree with the file's point rate
-        (within 1 %; the file's is used), a FileFormatError naming both otherwise.
+    rate : the frame rate the caller expects (a number in Hz or a string such as "500 Hz"): it
+        must agree with the file's point rate (within 1 %; the file's is used), a
+        FileFormatError naming both otherwise.
 
     Returns :class:`MarkerTracks` in metres, time from 0 at the first frame. Raises
     :class:`FileFormatError` naming the file for a missing, corrupt, truncated or empty file.
     """
+    rate = rate_argument(rate)
     p = Path(path)
     if not p.is_file():
         raise FileFormatError(p, "file does not exist" if not p.exists() else "not a file")

@@ -23,9 +23,14 @@ import numpy as np
 from impactlab._validation import read_text_file
 from impactlab.experiment.checks import check_instance, check_path
 from impactlab.experiment.errors import FileFormatError
-from impactlab.experiment.markers.tracks import MarkerTracks, check_rate_agrees, length_factor
+from impactlab.experiment.markers.tracks import (
+    MarkerTracks,
+    check_rate_agrees,
+    length_factor,
+    parse_rate,
+    rate_argument,
+)
 from impactlab.experiment.textfiles import split_commented
-from impactlab.units import to_si
 
 __all__ = ["read_csv_markers", "write_csv_markers"]
 
@@ -126,36 +131,13 @@ def _unit(p: Path, units: str | None, meta: dict[str, str]) -> tuple[str, float]
         raise FileFormatError(p, str(exc)) from None
 
 
-#: Spellings of "per second" in a '# rate:' line that pint does not read as a frequency.
-_PER_SECOND = re.compile(
-    r"(?i)^(?P<number>[^a-z/]*?)\s*(?:fps|frames?\s*(?:/|per)\s*s(?:ec(?:ond)?)?|1\s*/\s*s)$"
-)
-
-
-#: Hz and kHz in any case (pint knows 'Hz' and 'kHz' only).
-_HERTZ = re.compile(r"(?i)(?<![a-z])(k?)hz(?![a-z])")
-
-
 def frame_rate(p: Path, text: str) -> float:
-    """The frame rate [Hz] of a '# rate:' line: a number with a unit (Hz, kHz in any case,
-    1/s, fps) or a bare number in Hz; FileFormatError naming the line otherwise (a unit is never
-    dropped)."""
-    value = text.strip()
-    m = _PER_SECOND.match(value)
-    if m is not None:
-        value = f"{m.group('number').strip()} Hz"
-    value = _HERTZ.sub(lambda h: "kHz" if h.group(1) else "Hz", value)  # hz, KHZ: any case
+    """The frame rate [Hz] of a '# rate:' line (:func:`parse_rate`); FileFormatError naming the
+    line otherwise (a unit is never dropped)."""
     try:
-        fr = to_si(value, "Hz", name="rate")
+        return parse_rate(text)
     except ValueError as exc:
-        raise FileFormatError(
-            p,
-            f"'# rate: {text}' is not a frame rate ({exc}); write e.g. '# rate: 500 Hz' (Hz, "
-            "kHz, 1/s or fps; a bare number is in Hz)",
-        ) from None
-    if not (math.isfinite(fr) and fr > 0):
-        raise FileFormatError(p, f"'# rate: {text}': the frame rate must be > 0 Hz")
-    return fr
+        raise FileFormatError(p, f"'# rate: {text}': {exc}") from None
 
 
 def _time(
@@ -180,8 +162,6 @@ def _time(
                 "a 'frame' column needs the frame rate: add a line '# rate: 500 Hz' above the "
                 "header (or, from Python, pass rate= to read_markers)",
             )
-        if not (math.isfinite(fr) and fr > 0):
-            raise FileFormatError(p, f"the frame rate must be a finite number > 0 Hz, got {fr!r}")
         tcol = (tcol - tcol[0]) / fr
     if np.any(np.diff(tcol) <= 0):
         row = int(np.flatnonzero(np.diff(tcol) <= 0)[0]) + 1
@@ -203,34 +183,37 @@ RATE_TOLERANCE = 0.01
 def _check_rate_against_times(
     p: Path, tcol: np.ndarray, rate: float | None, meta: dict[str, str]
 ) -> None:
-    """FileFormatError when a frame rate (``rate=`` or a '# rate:' line) contradicts the time
-    column: its typical step (the median, so that gaps do not count) differs from 1 / rate by
-    more than ``RATE_TOLERANCE``."""
-    stated = f"rate={rate!r} Hz" if rate is not None else f"'# rate: {meta.get('rate')}'"
-    if rate is None:
-        if "rate" not in meta:
-            return
-        rate = frame_rate(p, meta["rate"])
+    """FileFormatError when a frame rate (``rate=``, a '# rate:' line: each is checked)
+    contradicts the time column: its typical step (the median, so that gaps do not count)
+    differs from 1 / rate by more than ``RATE_TOLERANCE``."""
+    stated: list[tuple[str, float]] = []
+    if "rate" in meta:
+        stated.append((f"'# rate: {meta['rate']}'", frame_rate(p, meta["rate"])))
+    if rate is not None:
+        stated.append((f"rate={rate:g} Hz", rate))
     step = float(np.median(np.diff(tcol)))
-    if abs(step * rate - 1.0) > RATE_TOLERANCE:
-        raise FileFormatError(
-            p,
-            f"{stated} contradicts the time column, whose steps are {step:.6g} s "
-            f"({1.0 / step:.6g} frames per second): correct the rate or the times, or remove "
-            "the rate (a 'time' column needs none)",
-        )
+    for where, fr in stated:
+        if abs(step * fr - 1.0) > RATE_TOLERANCE:
+            raise FileFormatError(
+                p,
+                f"{where} contradicts the time column, whose steps are {step:.6g} s "
+                f"({1.0 / step:.6g} frames per second): correct the rate or the times, or "
+                "remove the rate (a 'time' column needs none)",
+            )
 
 
 def read_csv_markers(
-    path: str | Path, *, units: str | None = None, rate: float | None = None
+    path: str | Path, *, units: str | None = None, rate: float | str | None = None
 ) -> MarkerTracks:
     """Read marker tracks from a CSV file (layout in the module docstring and docs/experiment.md).
 
     ``units`` (length unit of the coordinates) is needed unless the file has a ``# units:`` line;
     if both are given they must agree. ``rate`` [Hz] is needed only for a ``frame`` column without
-    a ``# rate:`` line (``500``, ``500 Hz``, ``0.5 kHz``, ``500 fps``: its unit is read, never
-    dropped). Raises :class:`FileFormatError` naming the file and line for bad content.
+    a ``# rate:`` line (``500``, ``"500 Hz"``, ``"0.5 kHz"``, ``"500 fps"``: its unit is read,
+    never dropped); a rate given or stated must agree with a ``time`` column.
+    Raises :class:`FileFormatError` naming the file and line for bad content.
     """
+    rate = rate_argument(rate)
     p = Path(path)
     if not p.is_file():
         raise FileFormatError(p, "file does not exist" if not p.exists() else "not a file")

@@ -3,19 +3,74 @@
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 
 from impactlab.experiment.errors import FileFormatError
-from impactlab.units import registry
+from impactlab.units import registry, to_si
 
-__all__ = ["RATE_AGREEMENT", "MarkerTracks", "check_rate_agrees", "length_factor"]
+__all__ = [
+    "RATE_AGREEMENT",
+    "MarkerTracks",
+    "check_rate_agrees",
+    "length_factor",
+    "parse_rate",
+    "rate_argument",
+]
 
 #: A frame rate the caller gives agrees with the one a file states when they differ by at most
 #: this fraction.
 RATE_AGREEMENT = 0.01
+
+#: Spellings of "per second" in a frame rate that pint does not read as a frequency.
+_PER_SECOND = re.compile(
+    r"(?i)^(?P<number>[^a-z/]*?)\s*(?:fps|frames?\s*(?:/|per)\s*s(?:ec(?:ond)?)?|1\s*/\s*s)$"
+)
+#: Hz and kHz in any case (pint knows 'Hz' and 'kHz' only).
+_HERTZ = re.compile(r"(?i)(?<![a-z])(k?)hz(?![a-z])")
+#: How a frame rate is written.
+RATE_FORMS = "a number in Hz or a string with its unit: '500 Hz', '0.5 kHz', '500 fps', '500 1/s'"
+
+
+def parse_rate(text: str, name: str = "rate") -> float:
+    """The frame rate [Hz] written as ``text`` (Hz, kHz in any case, 1/s, fps, or a bare number
+    in Hz; a unit is never dropped); ValueError naming ``name`` for anything else or a rate that
+    is not finite and > 0."""
+    value = text.strip()
+    m = _PER_SECOND.match(value)
+    if m is not None:
+        value = f"{m.group('number').strip()} Hz"
+    value = _HERTZ.sub(lambda h: "kHz" if h.group(1) else "Hz", value)
+    try:
+        fr = to_si(value, "Hz", name=name)
+    except ValueError as exc:
+        raise ValueError(
+            f"{name} {text!r} is not a frame rate ({exc}); write {RATE_FORMS}"
+        ) from None
+    if not (math.isfinite(fr) and fr > 0):
+        raise ValueError(f"{name} must be > 0 Hz, got {text!r}")
+    return fr
+
+
+def rate_argument(value: Any, name: str = "rate") -> float | None:
+    """``rate=`` of the marker readers as a frame rate [Hz] (None stays None): a number in Hz or
+    a string as :func:`parse_rate` reads it; TypeError for another kind (a boolean included),
+    ValueError naming ``name`` and the value for one that is not finite and > 0."""
+    if value is None:
+        return None
+    if isinstance(value, str):
+        return parse_rate(value, name)
+    if isinstance(value, bool) or not isinstance(value, int | float | np.integer | np.floating):
+        raise TypeError(
+            f"{name} must be a frame rate ({RATE_FORMS}), got {type(value).__name__} {value!r}"
+        )
+    fr = float(value)
+    if not (math.isfinite(fr) and fr > 0):
+        raise ValueError(f"{name} must be a finite frame rate > 0 Hz, got {value!r}")
+    return fr
 
 
 def check_rate_agrees(path: Any, given: Any, stated: float, where: str) -> None:
@@ -31,7 +86,7 @@ def check_rate_agrees(path: Any, given: Any, stated: float, where: str) -> None:
     if abs(fr / stated - 1.0) > RATE_AGREEMENT:
         raise FileFormatError(
             path,
-            f"rate={given!r} Hz disagrees with the file's frame rate {stated:.6g} Hz ({where}): "
+            f"rate={fr:g} Hz disagrees with the file's frame rate {stated:.6g} Hz ({where}): "
             "leave rate= out (the file's own rate is used) or correct it",
         )
 

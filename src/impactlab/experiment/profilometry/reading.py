@@ -28,10 +28,11 @@ def read_scan(
     ``impactlab[profilometry]``, imported on use). Plain ``.npy`` (2D array) and ``.csv`` (rows =
     y, comma, semicolon or blank separated, empty cells = no data) height maps are read directly
     and need ``pixel_size`` (e.g. "2 um", metres for a bare number, or a (dx, dy) pair) and
-    ``height_unit`` (e.g. "um"), unless the CSV has '# pixel_size: 2 um' / '# height_unit: um'
-    lines. A pixel size or height unit that the file states (such lines, an instrument file's
-    own) is the file's: one given as well must agree with it (FileFormatError naming both
-    otherwise). ``channel``: data channel of multi-channel instrument files.
+    ``height_unit`` (e.g. "um"), unless the file has '# pixel_size: 2 um' / '# height_unit: um'
+    lines (a .txt or .asc file with such lines is such a map too). A pixel size or height unit
+    that the file states (such lines, an instrument file's own) is the file's: one given as well
+    must agree with it (FileFormatError naming both otherwise). ``channel``: data channel of
+    multi-channel instrument files.
 
     Raises :class:`FileFormatError` naming the file for a missing, corrupt, truncated or
     unrecognised file, :class:`MissingDependencyError` when SurfaceTopography is needed but absent.
@@ -42,7 +43,8 @@ def read_scan(
     if p.stat().st_size == 0:
         raise FileFormatError(p, "empty file")
     suffix = p.suffix.lower()
-    if suffix == ".npy" or (suffix in (".txt", ".asc") and pixel_size is not None):
+    plain_text = suffix in (".txt", ".asc") and (pixel_size is not None or has_pixel_header(p))
+    if suffix == ".npy" or plain_text:
         return read_plain(p, pixel_size, height_unit)
     if suffix == ".csv":
         if pixel_size is not None or has_pixel_header(p):
