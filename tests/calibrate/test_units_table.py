@@ -98,12 +98,23 @@ def test_a_measured_angle_needs_a_unit():
 
 
 def test_a_measured_angle_lies_in_0_to_180_deg():
-    with pytest.raises(ValueError, match=r"angle_out = 20 rad lies outside the possible range "
-                       r"\[0, 3.14159\] rad \(the rod's angle to the flat at separation, in "
+    """Its errors speak in degrees, as the file writes an angle (not in rad, nor bare)."""
+    with pytest.raises(ValueError, match=r"angle_out = 1145.92 deg lies outside the possible "
+                       r"range \[0, 180\] deg \(the rod's angle to the flat at separation, in "
                        r"\[0, 180\] deg"):  # fmt: skip
         _one(angle_out="20 rad", angle_out_sigma="1 deg")
-    with pytest.raises(ValueError, match=r"angle_out = -0.0872665 rad lies outside"):
+    with pytest.raises(ValueError, match=r": angle_out = 190 deg lies outside the possible "
+                       r"range \[0, 180\] deg \("):  # fmt: skip
+        _one(angle_out="190 deg", angle_out_sigma="1 deg")
+    with pytest.raises(ValueError, match=r"angle_out = -5 deg lies outside"):
         _one(angle_out="-5 deg", angle_out_sigma="1 deg")
+    with pytest.raises(ValueError, match=r": angle_out_sigma = 400 deg is wider than the whole "
+                       r"range of angle_out \[0, 180\] deg: an implausible"):  # fmt: skip
+        _one(angle_out="30 deg", angle_out_sigma="400 deg")
+    with pytest.raises(ValueError, match=r": angle_out_sigma must be finite and > 0, got 0 deg$"):
+        _one(angle_out="30 deg", angle_out_sigma="0 deg")
+    with pytest.raises(ValueError, match=r"got -1 deg$"):
+        _one(angle_out="30 deg", angle_out_sigma="-1 deg")
     assert _one(angle_out="100 deg", angle_out_sigma="1 deg").n_values == 1
 
 

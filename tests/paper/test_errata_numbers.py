@@ -73,6 +73,16 @@ def test_errata_key_numbers(page, run, sims):
     rod = Rod(length=L - 2 * R_, tip_radius=R_, mass=m, inertia=m * (L - 2 * R_) ** 2 / 12)
     for q, ang in zip(other, (20, 45), strict=True):
         check(q, invert_case(D.EXPERIMENTS[ang], rod=rod).duration * 1e3, f"other mixed {ang}")
+    spans = numbers(
+        rf"the two 45 deg values lie ({NUMBER}) % to ({NUMBER}) % and ({NUMBER}) % to "
+        rf"({NUMBER}) % from it, across the 5 % tolerance",
+        text,
+    )
+    consistent = readings[readings["self-consistent"]]
+    for q, (_, r) in zip((spans[:2], spans[2:]), consistent.iterrows(), strict=True):
+        check(q[0], 100 * r["T 45 deg rel. diff low"], "over the rounding, low")
+        check(q[1], 100 * r["T 45 deg rel. diff high"], "over the rounding, high")
+        assert r["T 45 deg verdict"] == "UNDECIDED"
     (moves,) = numbers(rf"The reading moves T by up to ({NUMBER}) %", text)
     spread = [
         abs(r[f"T {a} deg [ms]"] / exp.loc[a, "T [ms]"] - 1)
@@ -169,5 +179,14 @@ def test_tutorial_numbers(page, run):
     q1, q2 = numbers(
         rf"the 45 deg T lands at ({NUMBER}) % / ({NUMBER}) %", page.tutorial.replace("\n", " ")
     )
-    for q, (_, r) in zip((q1, q2), readings[readings["self-consistent"]].iterrows(), strict=True):
+    consistent = readings[readings["self-consistent"]]
+    for q, (_, r) in zip((q1, q2), consistent.iterrows(), strict=True):
         check(q, 100 * r["T 45 deg rel. diff"], r["reading"])
+    spans = numbers(
+        rf"that is ({NUMBER}) % to ({NUMBER}) % / ({NUMBER}) % to ({NUMBER}) %,",
+        page.tutorial.replace("\n", " "),
+    )
+    for q, (_, r) in zip((spans[:2], spans[2:]), consistent.iterrows(), strict=True):
+        check(q[0], 100 * r["T 45 deg rel. diff low"], "over the rounding, low")
+        check(q[1], 100 * r["T 45 deg rel. diff high"], "over the rounding, high")
+        assert r["T 45 deg verdict"] == "UNDECIDED"

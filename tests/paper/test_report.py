@@ -120,3 +120,26 @@ def test_section_5_without_misses() -> None:
     comp = _comparison()
     blocks = not_reproduced(comp[comp["reproduced"]])
     assert [b.text for b in blocks if isinstance(b, Para)] == ["None."]
+
+
+@pytest.mark.parametrize(
+    ("T_ms", "verdict"),
+    [
+        (1.382, "PASS"),
+        (1.46, "PASS"),
+        (1.466, "UNDECIDED"),
+        (1.470005, "UNDECIDED"),
+        (1.476, "FAIL"),
+        (1.32, "FAIL"),
+    ],
+)
+def test_a_duration_check_is_decided_over_the_published_rounding(T_ms, verdict) -> None:
+    """1.40 ms stands for 1.395-1.405 ms: a T within 5 % of some of it and not of the rest is
+    neither a PASS nor a FAIL."""
+    from impactlab.paper.quantities import DurationCheck
+
+    check = DurationCheck(45, T_ms, 1.40, T_ms / 1.40 - 1)
+    assert check.verdict == verdict and check.ok == (verdict == "PASS")
+    assert check.text().endswith(f"tolerance 5%): {verdict}")
+    if T_ms == 1.470005:  # the overall-length reading's 45 deg T
+        assert "(+5.0%, +4.6% to +5.4% over its rounding, tolerance 5%)" in check.text()

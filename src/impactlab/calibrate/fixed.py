@@ -11,7 +11,8 @@ from collections.abc import Mapping
 from typing import Any
 
 from impactlab.calibrate.input_magnitudes import check_magnitude
-from impactlab.calibrate.quantities import KINEMATICS, NUMERIC_INPUTS
+from impactlab.calibrate.measurement_columns import fraction
+from impactlab.calibrate.quantities import FRACTIONS, KINEMATICS, NUMERIC_INPUTS
 from impactlab.calibrate.values import did_you_mean, to_unit
 from impactlab.contact import get_law
 from impactlab.sweep.dimensions import check_allowed
@@ -35,7 +36,8 @@ def quantity_object(v: Any) -> Any:
 
 def fixed_values(model: str, fixed: Any) -> dict[str, float]:
     """``fixed`` (input name -> a number in the input's unit, a quantity string, ``"300
-    MPa"``, or a quantity object of results.json, ``{"value": 3e8, "unit": "Pa"}``) as numbers
+    MPa"``, a fraction in percent, ``"5 %"``, or a quantity object of results.json, ``{"value":
+    3e8, "unit": "Pa"}``) as numbers
     in each input's unit. ValueError naming the model and the key for an unknown name, an
     unreadable value, one outside the input's allowed range or an implausible magnitude (a unit
     left out)."""
@@ -57,7 +59,8 @@ def fixed_values(model: str, fixed: Any) -> dict[str, float]:
         if isinstance(v, bool) or not isinstance(v, int | float | str):
             raise ValueError(f"{where}: expected a number or a quantity string, got {v!r}")
         try:
-            x = to_unit(v, INPUTS[name].unit, name=name)
+            share = fraction(name, v, None) if name in FRACTIONS else None
+            x = share if share is not None else to_unit(v, INPUTS[name].unit, name=name)
         except ValueError as exc:
             raise ValueError(f"{where}: {exc}") from None
         check_allowed(name, [x], where)

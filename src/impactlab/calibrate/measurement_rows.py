@@ -52,6 +52,13 @@ def unit_text(unit: str) -> str:
     return "" if unit in ("1", "", "-") else f" {unit}"
 
 
+def _angle(q: str, x: float) -> tuple[float, str]:
+    """(``x`` of measured quantity ``q`` in the unit its errors speak, that unit as
+    ``unit_text`` writes it): an angle (stored in rad) in degrees, as a file gives it."""
+    unit = MEASURABLE[q].unit
+    return (math.degrees(x), " deg") if q in ANGLES else (x, unit_text(unit))
+
+
 def _is_nan(v: Any) -> bool:
     return isinstance(v, float) and math.isnan(v)
 
@@ -269,13 +276,14 @@ def _check_row(where: str, row: Row, nan: set[str]) -> None:
                 "(same unit), > 0"
             )
         if not (math.isfinite(s) and s > 0.0):
-            raise ValueError(f"{where}: {q}_sigma must be finite and > 0, got {s!r}")
+            got = f"{math.degrees(s):g} deg" if q in ANGLES else repr(s)
+            raise ValueError(f"{where}: {q}_sigma must be finite and > 0, got {got}")
         m = MEASURABLE[q]
         if (m.low is not None and x < m.low) or (m.high is not None and x > m.high):
+            (shown, u), low, high = _angle(q, x), _bound(m.low, -math.inf), _bound(m.high, math.inf)
             raise ValueError(
-                f"{where}: {q} = {x:g}{unit_text(m.unit)} lies outside the possible range "
-                f"[{_bound(m.low, -math.inf):g}, {_bound(m.high, math.inf):g}]"
-                f"{unit_text(m.unit)} ({m.description})"
+                f"{where}: {q} = {shown:g}{u} lies outside the possible range "
+                f"[{_angle(q, low)[0]:g}, {_angle(q, high)[0]:g}]{u} ({m.description})"
             )
         if q == "e_t" and row.inputs.get("vx", 0.0) == 0.0:
             raise ValueError(f"{where}: e_t needs a drop with vx != 0")
@@ -323,7 +331,8 @@ def _check_magnitudes(where: str, row: Row) -> None:
                 f"'2 {hint}' or a header '{q}_sigma [{hint}]')"
             )
         if m.low is not None and m.high is not None and s > m.high - m.low:
+            (shown, u), low, high = _angle(q, s), _angle(q, m.low)[0], _angle(q, m.high)[0]
             raise ValueError(
-                f"{where}: {q}_sigma = {s:g} is wider than the whole range of {q} "
-                f"[{m.low:g}, {m.high:g}]: an implausible uncertainty; check its unit and value"
+                f"{where}: {q}_sigma = {shown:g}{u} is wider than the whole range of {q} "
+                f"[{low:g}, {high:g}]{u}: an implausible uncertainty; check its unit and value"
             )

@@ -200,6 +200,12 @@ def _assemble(rows: Sequence[Row], source: str | None) -> Measurements:
     names = list(dict.fromkeys(q for r in rows for q in r.observed))
     if not names:
         raise ValueError(f"{source or 'measurements'}: no measured quantity in any drop")
+    for d, r in enumerate(rows):  # it would add nothing but zeros to the model ranking
+        if not r.observed:
+            raise ValueError(
+                f"drop {d + 1} ({r.label}) has no measured value: give {' or '.join(names)} "
+                "with its uncertainty where it was measured, or leave the drop out"
+            )
     observed = {q: np.array([r.observed.get(q, math.nan) for r in rows]) for q in names}
     sigma = {q: np.array([r.sigma.get(q, math.nan) for r in rows]) for q in names}
     return Measurements(labels, cats, inputs, observed, sigma, source)

@@ -9,7 +9,8 @@ every drop. Its prior is one of
   parameter's possible range; a bound may be ``inf`` or ``-inf``, an open end),
 
 with values in the input's unit (SI; the Brinell hardness in kgf/mm^2, as the sweep stores it) or
-as quantity strings (``"uniform(100 MPa, 1 GPa)"``; a Brinell hardness also ``"105 HB"``).
+as quantity strings (``"uniform(100 MPa, 1 GPa)"``; a Brinell hardness also ``"105 HB"``; a
+fraction, mu or damping, also in percent: ``"uniform(0, 60 %)"`` is ``uniform(0, 0.6)``).
 ``Parameter.describe`` writes a prior in this form (``parse_parameter`` reads it back to the same
 numbers). scipy.stats gives the densities and draws.
 """
@@ -27,7 +28,8 @@ from scipy import stats
 
 from impactlab._display import display_unit
 from impactlab.calibrate.input_magnitudes import PLAUSIBLE_INPUTS
-from impactlab.calibrate.quantities import KINEMATICS, NUMERIC_INPUTS
+from impactlab.calibrate.measurement_columns import fraction
+from impactlab.calibrate.quantities import FRACTIONS, KINEMATICS, NUMERIC_INPUTS
 from impactlab.calibrate.values import bare, did_you_mean, to_unit
 from impactlab.sweep.inputs import INPUTS
 
@@ -222,12 +224,16 @@ _NUMBERS = ("low", "high", "mean", "sd")
 _SPEC = re.compile(r"^\s*([a-z]+)\s*\((.*)\)\s*$")
 
 
-def _value(text: str, unit: str, name: str, *, bound: bool) -> float:
-    """A number of a prior text in ``unit``; a bound of a truncated normal may be ``inf`` or
-    ``-inf`` (an open end, as ``describe`` writes it)."""
-    if bound and text.lower().lstrip("+") in ("inf", "-inf"):
+def _value(text: Any, unit: str, name: str, *, bound: bool, key: str = "") -> float:
+    """A number of a prior (text or a number) in ``unit``; a bound of a truncated normal may be
+    ``inf`` or ``-inf`` (an open end, as ``describe`` writes it); a fraction (mu, damping) may
+    be in percent (``"60 %"``: 0.6). Errors name ``name`` or, given, ``name.key``."""
+    if bound and isinstance(text, str) and text.lower().lstrip("+") in ("inf", "-inf"):
         return -math.inf if text.startswith("-") else math.inf
-    return to_unit(text, unit, name=name)
+    share = fraction(name, text, None) if name in FRACTIONS else None
+    if share is not None:
+        return share
+    return to_unit(text, unit, name=f"{name}.{key}" if key else name)
 
 
 _LEADING_NUMBER = re.compile(r"^\s*[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?\s*(?P<unit>\S.*)$")
@@ -249,13 +255,26 @@ def _mixed_units(name: str, unit: str, spec: Any, args: list[Any]) -> None:
     for a in args:
         text = str(a).strip()
         if bare(a) and float(text) != 0.0 and math.isfinite(float(text)):
-            m = _LEADING_NUMBER.match(str(given[0]))
-            shown = m.group("unit") if m else "HB"
+            hint = f"{text} {_suggested(name, unit, text, given[0])}"
             raise ValueError(
                 f"prior of {name}: {spec!r}: {text} has no unit while {str(given[0]).strip()!r}"
-                f" has one: give its unit too (e.g. '{text} {shown}'); a number without a unit "
-                f"would be read in {unit}"
+                f" has one: give its unit too (e.g. '{hint}'); a number without a unit would be "
+                f"read in {unit}"
             )
+
+
+def _suggested(name: str, unit: str, text: str, other: Any) -> str:
+    """The unit to suggest for the bare number ``text`` of a prior whose number ``other`` has
+    one: ``other``'s unit where ``text`` in it stays within a factor 1000 of ``other``
+    (``normal(300 MPa, 50)``: MPa), else the input's own ``unit`` (``uniform(1e8, 1 GPa)``: Pa,
+    not 1e8 GPa)."""
+    m = _LEADING_NUMBER.match(str(other))
+    shown = m.group("unit") if m else "HB"
+    try:
+        x, ref = to_unit(f"{text} {shown}", unit, name=name), to_unit(other, unit, name=name)
+    except ValueError:
+        return unit
+    return shown if ref != 0 and 1e-3 <= abs(x / ref) <= 1e3 else unit
 
 
 def parse_parameter(name: str, spec: Any) -> Parameter:
@@ -268,7 +287,11 @@ def parse_parameter(name: str, spec: Any) -> Parameter:
     if isinstance(spec, dict):
         _mixed_units(name, unit, spec, [v for k, v in spec.items() if k in _NUMBERS])
         kind = str(spec.get("prior", "uniform"))
-        nums = {k: to_unit(v, unit, name=f"{name}.{k}") for k, v in spec.items() if k in _NUMBERS}
+        nums = {
+            k: _value(v, unit, name, bound=k in ("low", "high"), key=k)
+            for k, v in spec.items()
+            if k in _NUMBERS
+        }
         extra = set(spec) - {"prior", *_NUMBERS}
         if extra:
             raise ValueError(f"prior of {name}: unknown key(s) {sorted(extra)}")

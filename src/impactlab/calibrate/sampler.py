@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import hashlib
 import json
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import Any
 
@@ -27,11 +27,24 @@ import numpy as np
 
 from impactlab.calibrate.posterior import LogPosterior, initial_walkers
 from impactlab.calibrate.statelock import CalibrationInterrupted, SavedChainError, chain_in_use
+from impactlab.dynamics.input_checks import gravity_value
+from impactlab.materials import G0
 
 __all__ = ["ProgressFn", "run_chain"]
 
 #: progress(model name, steps done, steps in all)
 ProgressFn = Callable[[str, int, int], None]
+
+
+def _engine(engine: Mapping[str, Any]) -> list[Any]:
+    """The engine options as they act: the gravity [m/s^2] and the rtol as numbers, so that
+    ``gravity = true``, ``9.80665`` and ``{value = 9.80665, unit = "m/s^2"}`` are one setting;
+    the default ones (standard gravity, the engine's rtol) as ``[]``, the form of a chain saved
+    without engine options before these were normalised."""
+    g = gravity_value(engine.get("gravity", True))
+    rtol = engine.get("rtol")
+    acting = {"gravity": g, "rtol": None if rtol is None else float(rtol)}
+    return [] if acting == {"gravity": G0, "rtol": None} else sorted(acting.items())
 
 
 def _inputs(post: LogPosterior, walkers: int, seed: int) -> dict[str, Any]:
@@ -42,7 +55,7 @@ def _inputs(post: LogPosterior, walkers: int, seed: int) -> dict[str, Any]:
         "params": [repr(p) for p in post.params],
         "walkers": walkers,
         "seed": seed,
-        "engine": sorted((k, repr(v)) for k, v in post.engine.items()),
+        "engine": _engine(post.engine),
         "labels": list(m.labels),
         "cats": [sorted(c.items()) for c in m.categories],
         "inputs": {k: v.tolist() for k, v in m.inputs.items()},
@@ -96,21 +109,24 @@ def _unreadable(exc: BaseException) -> str:
 
 
 def _backend(
-    state: Path | None, key: str, parts: dict[str, str], restart: bool
+    state: Path | None, keys: tuple[str, str], parts: dict[str, str], restart: bool
 ) -> tuple[Any, bool]:
     """(backend, resumed): emcee's HDF backend at ``state`` (resumed when it holds a chain of
-    the same fingerprint ``key``), or the in-memory one. A saved chain of other inputs, or one
-    that cannot be read, is kept and refused (``SavedChainError``) unless ``restart``; one
-    without a step is replaced (it holds no work)."""
+    the fingerprint ``keys[0]``, or ``keys[1]``: the same inputs hashed with the engine options
+    as given, as chains were saved before; it is then stored as ``keys[0]``), or the in-memory
+    one. A saved chain of other inputs, or one that cannot be read, is kept and refused
+    (``SavedChainError``) unless ``restart``; one without a step (an empty file too) is
+    replaced (it holds no work)."""
     if state is None:
         return emcee.backends.Backend(), False
     state.parent.mkdir(parents=True, exist_ok=True)
-    if state.exists() and not restart:
+    empty = state.is_file() and state.stat().st_size == 0
+    if state.exists() and not empty and not restart:
         backend = emcee.backends.HDFBackend(str(state), name="chain")
         try:
             with backend.open() as f:
                 attrs = f["chain"].attrs
-                same = attrs.get("impactlab_fingerprint") == key
+                same = attrs.get("impactlab_fingerprint") in keys
                 saved_parts = attrs.get("impactlab_parts")
             steps = backend.iteration
         except BlockingIOError as exc:  # HDF5's lock: another program has the file open
@@ -118,12 +134,21 @@ def _backend(
         except (OSError, KeyError) as exc:
             raise SavedChainError(state, _unreadable(exc)) from None
         if same and steps > 0:
+            if saved_parts != json.dumps(parts):
+                _stamp(backend, keys[0], parts)
             return backend, True
         if steps > 0:
             raise SavedChainError(state, _changed(saved_parts, parts))
     if state.exists():
         state.unlink()
     return emcee.backends.HDFBackend(str(state), name="chain"), False
+
+
+def _stamp(backend: Any, key: str, parts: dict[str, str]) -> None:
+    """Store the fingerprint ``key`` and the hashes of the parts with the chain."""
+    with backend.open("a") as f:
+        f["chain"].attrs["impactlab_fingerprint"] = key
+        f["chain"].attrs["impactlab_parts"] = json.dumps(parts)
 
 
 def run_chain(
@@ -140,7 +165,8 @@ def run_chain(
     ndim = len(post.params)
     doc = _inputs(post, walkers, seed)
     key, parts = _hash(doc), {k: _hash(v) for k, v in doc.items()}
-    backend, resumed = _backend(state, key, parts, restart)
+    given = sorted((k, repr(v)) for k, v in post.engine.items())  # as chains were saved before
+    backend, resumed = _backend(state, (key, _hash({**doc, "engine": given})), parts, restart)
     sampler = emcee.EnsembleSampler(walkers, ndim, post, vectorize=True, backend=backend)
     # the log posterior itself, not emcee's wrapper: that prints a traceback of any exception
     # (Ctrl-C included) before passing it on
@@ -154,9 +180,7 @@ def run_chain(
         sampler.random_state = np.random.RandomState(seed).get_state()
         backend.reset(walkers, ndim)
         if state is not None:
-            with backend.open("a") as f:
-                f["chain"].attrs["impactlab_fingerprint"] = key
-                f["chain"].attrs["impactlab_parts"] = json.dumps(parts)
+            _stamp(backend, key, parts)
         done = 0
     if progress is not None:
         progress(post.model.name, done, steps)

@@ -48,6 +48,8 @@ def to_unit(value: Any, unit: str, *, name: str) -> float:
     written ``"105 HB"``). ValueError naming ``name`` for unparsable text, a wrong dimension or a
     value that is not finite."""
     value = _brinell(value, unit, name)
+    if isinstance(value, str) and unit.strip() in ("", "1"):  # a pure number: "0.4", "0.02 1"
+        return float(magnitude(name, value, unit))
     x = to_si(value, unit, name=name)  # parses and checks; the SI magnitude
     if _si_factor(unit) == 1.0:
         return x

@@ -14,7 +14,7 @@ from scipy.optimize import brentq
 import impactlab.analytic as an
 from impactlab.bodies import Rod
 from impactlab.paper import data as D
-from impactlab.paper.quantities import EQ12_REL, rel_diff, scaled
+from impactlab.paper.quantities import EQ12_REL, rel_diff, rounding_range, scaled, verdict
 
 #: I_C / (m L^2) values for the inertia sensitivity.
 INERTIA_RATIOS: tuple[float, ...] = (0.05, 1 / 15, 1 / 12, 0.1, 0.12, 0.15)
@@ -86,7 +86,9 @@ def length_readings() -> pd.DataFrame:
     L = 0.3048 m: impactlab's (Eq. 1's L between the tip centres, with I_C = m L^2/12 of a
     slender rod of length L: two readings mixed, the acceptance checks' reading), and the two
     self-consistent ones (L the overall length, tip centres at L/2 - R from the centre of mass;
-    L between the centres, I_C of the whole rod of length L + 2R). Display units (mm, ms)."""
+    L between the centres, I_C of the whole rod of length L + 2R). Display units (mm, ms); each
+    T's relative difference also at both ends of the published T's rounding (``low``,
+    ``high``) and the verdict over it (``quantities.verdict``: PASS, FAIL or UNDECIDED)."""
     m, L, R = D.PAPER_ROD.mass, D.PAPER_ROD.length, D.PAPER_ROD.tip_radius
     readings = (
         ("L between the tip centres, I_C = m L^2/12 (used: the two mixed)", L, L, False),
@@ -105,8 +107,13 @@ def length_readings() -> pd.DataFrame:
         for ang in (20, 45):
             T = invert_case(D.EXPERIMENTS[ang], rod=rod).duration
             pub = D.published_row(ang, "experiment")
+            assert pub is not None and pub.T is not None
+            low, high = rounding_range(T * 1e3, pub.T * 1e3)
             row[f"T {ang} deg [ms]"] = T * 1e3
-            row[f"T {ang} deg rel. diff"] = rel_diff(T, pub.T if pub else None)
+            row[f"T {ang} deg rel. diff"] = rel_diff(T, pub.T)
+            row[f"T {ang} deg rel. diff low"] = low
+            row[f"T {ang} deg rel. diff high"] = high
+            row[f"T {ang} deg verdict"] = verdict(low, high)
         rows.append(row)
     return pd.DataFrame(rows)
 

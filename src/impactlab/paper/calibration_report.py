@@ -14,6 +14,7 @@ the rigid rod as for the drops (``dynamics.derived.e_gravity_removed``).
 
 from __future__ import annotations
 
+import io
 from collections.abc import Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from pathlib import Path
@@ -21,6 +22,7 @@ from typing import Any
 
 import pandas as pd
 
+from impactlab._files import write_bytes_atomic, write_text_atomic
 from impactlab.calibrate import Calibration, CandidateModel, Measurements, calibrate
 from impactlab.calibrate import parse_parameter as _prior
 from impactlab.calibrate.sampler import ProgressFn
@@ -227,7 +229,7 @@ def write_shipped_calibration(path: str | Path = SHIPPED, **settings: Any) -> Pa
     out.parent.mkdir(parents=True, exist_ok=True)
     cal = calibrate_paper(**settings)
     summary = calibration_summary(cal, settings.get("n_ppc", SHIPPED_PPC))
-    out.write_text(json.dumps(summary, indent=1) + "\n")
+    write_text_atomic(out, json.dumps(summary, indent=1) + "\n")
     return out
 
 
@@ -346,8 +348,10 @@ def write_calibration_report(
     cal = cal if cal is not None else calibrate_paper(**settings)
     fig = ppc_figure(cal.posteriors)
     png = out / "calibration_ppc.png"
-    fig.savefig(png, dpi=100, bbox_inches="tight")
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=100, bbox_inches="tight")
     pyplot().close(fig)
+    write_bytes_atomic(png, buf.getvalue())
     blocks = [
         *calibration_section(cal, number),
         Figure(
@@ -358,8 +362,8 @@ def write_calibration_report(
     ]
     title = "Which physics explains the experiment? (calibrated)"
     files = {"markdown": out / "calibration.md", "html": out / "calibration.html", "figure": png}
-    files["markdown"].write_text(to_markdown(blocks, title))
-    files["html"].write_text(to_html(blocks, title, base=out))
+    write_text_atomic(files["markdown"], to_markdown(blocks, title))
+    write_text_atomic(files["html"], to_html(blocks, title, base=out))
     return files
 
 

@@ -5,6 +5,7 @@ writes one PNG and returns its path.
 
 from __future__ import annotations
 
+import io
 from collections.abc import Iterable
 from pathlib import Path
 from typing import Any
@@ -13,6 +14,7 @@ import numpy as np
 import pandas as pd
 
 import impactlab.analytic as an
+from impactlab._files import write_bytes_atomic
 from impactlab._mpl import pyplot
 from impactlab.paper import data as D
 from impactlab.paper.analytic_rows import invert_case, rod_with_inertia_ratio
@@ -124,7 +126,10 @@ def figure_dent(path: Path, res: Any) -> Path:
 
 
 def _save(plt: Any, fig: Any, path: Path) -> Path:
+    """Write ``fig`` to ``path`` as PNG, whole or not at all, and close it."""
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=110)
     plt.close(fig)
+    write_bytes_atomic(path, buf.getvalue())
     return path

@@ -8,6 +8,7 @@ from pathlib import Path
 from typing import Any
 
 from impactlab._mpl import pyplot
+from impactlab.paper.figures import _save
 
 __all__ = ["figure_drop"]
 
@@ -39,7 +40,4 @@ def figure_drop(path: Path, result: Any, title: str = "") -> Path:
     a3.set_xlabel("tip x from the first touch [um]")
     a3.set_ylabel("tip height [um]")
     a1.set_title(title or f"{result.n_contacts} contacts, e = {result.e:.3f}")
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    return path
+    return _save(plt, fig, path)

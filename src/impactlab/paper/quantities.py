@@ -14,6 +14,29 @@ from impactlab.contact.verified_ranges import tolerance_text
 TOL_SIMULATED = 0.15
 TOL_EXPERIMENT_T = 0.05
 
+#: The verdicts of the T check over the rounding of the published T: within the tolerance for
+#: every value the printed T stands for, outside it for every one, or neither (the printed
+#: digits cannot tell).
+PASS, FAIL, UNDECIDED = "PASS", "FAIL", "UNDECIDED"
+
+
+def rounding_range(T_ms: float, published_ms: float) -> tuple[float, float]:
+    """(lowest, highest) ours / published - 1 over the interval the published T stands for:
+    printed in ms with two decimals, 1.40 ms is 1.395-1.405 ms."""
+    half = 0.005
+    return T_ms / (published_ms + half) - 1.0, T_ms / (published_ms - half) - 1.0
+
+
+def verdict(low: float, high: float, tol: float = TOL_EXPERIMENT_T) -> str:
+    """PASS when [``low``, ``high``] lies within +- ``tol``, FAIL when wholly outside it, else
+    UNDECIDED."""
+    if -tol <= low and high <= tol:
+        return PASS
+    if high < -tol or low > tol:
+        return FAIL
+    return UNDECIDED
+
+
 #: The column of a dent depth in the paper's sign (negative, as its tables print it); impactlab
 #: reports delta_p as a positive depth everywhere else (``impactlab.schema``).
 PAPER_DEPTH = "delta_p, paper's sign [um]"
@@ -54,21 +77,23 @@ class DurationCheck:
 
     @property
     def ok(self) -> bool:
-        """Within ``TOL_EXPERIMENT_T``."""
-        return abs(self.rel_diff) <= TOL_EXPERIMENT_T
+        """Within ``TOL_EXPERIMENT_T`` for every value the published T stands for."""
+        return self.verdict == PASS
 
     @property
     def verdict(self) -> str:
-        """``PASS`` or ``FAIL``."""
-        return "PASS" if self.ok else "FAIL"
+        """``PASS``, ``FAIL`` or ``UNDECIDED`` over the rounding of the published T."""
+        return verdict(*rounding_range(self.T_ms, self.published_ms))
 
     def text(self) -> str:
         """``20 deg: T = 4.106 ms vs published 4.30 ms (-4.5%, tolerance 5%): PASS``, the one
         wording of the report and the reproduce command (T to the microsecond, the published
-        value as printed)."""
+        value as printed; an UNDECIDED verdict with the range over its rounding)."""
+        low, high = rounding_range(self.T_ms, self.published_ms)
+        over = f", {low:+.1%} to {high:+.1%} over its rounding" if self.verdict == UNDECIDED else ""
         return (
             f"{self.angle_deg} deg: T = {self.T_ms:.3f} ms vs published {self.published_ms:.2f} "
-            f"ms ({self.rel_diff:+.1%}, tolerance {TOL_EXPERIMENT_T:.0%}): {self.verdict}"
+            f"ms ({self.rel_diff:+.1%}{over}, tolerance {TOL_EXPERIMENT_T:.0%}): {self.verdict}"
         )
 
 

@@ -10,7 +10,9 @@ import pandas as pd
 
 from impactlab.paper import data as D
 from impactlab.paper.quantities import (
+    FAIL,
     PAPER_DEPTH,
+    PASS,
     TOL_EXPERIMENT_T,
     TOL_SIMULATED,
     duration_checks,
@@ -64,39 +66,50 @@ def acceptance(d: Any) -> list[Block]:
 
 
 def _readings_text(readings: pd.DataFrame) -> str:
-    """What the PASS above depends on: the reading of the rod's length (``length_readings``)."""
+    """What the PASS above depends on: the reading of the rod's length (``length_readings``),
+    each verdict over the rounding of the published T (``quantities.verdict``)."""
     used = readings[~readings["self-consistent"]].iloc[0]
-    others = readings[readings["self-consistent"]]
-
-    def ok(r: pd.Series, ang: int) -> bool:
-        return bool(abs(r[f"T {ang} deg rel. diff"]) <= TOL_EXPERIMENT_T)
-
-    def pct(x: float) -> str:  # enough digits to show on which side of the tolerance it lies
-        return f"{x:+.4%}" if abs(abs(x) - TOL_EXPERIMENT_T) < 5e-4 else fmt_pct(x)
+    others = [r for _, r in readings[readings["self-consistent"]].iterrows()]
 
     def values(r: pd.Series) -> str:
         return (
             f"T = {r['T 20 deg [ms]']:.3f} / {r['T 45 deg [ms]']:.3f} ms "
-            f"({pct(r['T 20 deg rel. diff'])} / {pct(r['T 45 deg rel. diff'])}: "
-            f"{'PASS' if ok(r, 20) else 'FAIL'} / {'PASS' if ok(r, 45) else 'FAIL'}) with "
-            f"{r['reading']}"
+            f"({fmt_pct(r['T 20 deg rel. diff'])} / {fmt_pct(r['T 45 deg rel. diff'])}: "
+            f"{r['T 20 deg verdict']} / {r['T 45 deg verdict']}) with {r['reading']}"
         )
 
-    failed = [a for a in (20, 45) if any(not ok(r, a) for _, r in others.iterrows())]
-    consequence = (
-        f": the {' and '.join(f'{a} deg' for a in failed)} check then fails the "
-        f"{TOL_EXPERIMENT_T:.0%} tolerance, so its PASS rests on the mixed reading. "
-        if failed
-        else ". "
-    )
+    notes = []
+    for ang in (20, 45):
+        short = [r for r in others if r[f"T {ang} deg verdict"] != PASS]
+        if not short:
+            continue
+        pub = D.published_row(ang, "experiment")
+        assert pub is not None and pub.T is not None
+        T = pub.T * 1e3
+        spans = " and ".join(
+            f"{fmt_pct(r[f'T {ang} deg rel. diff low'])} to "
+            f"{fmt_pct(r[f'T {ang} deg rel. diff high'])}"
+            for r in short
+        )
+        outcome = (
+            f"outside the {TOL_EXPERIMENT_T:.0%} tolerance: FAIL"
+            if all(r[f"T {ang} deg verdict"] == FAIL for r in short)
+            else f"across the {TOL_EXPERIMENT_T:.0%} tolerance: the printed digits cannot tell "
+            "whether that check passes (UNDECIDED)"
+        )
+        notes.append(
+            f"the published {T:.2f} ms stands for {T - 0.005:.3f}-{T + 0.005:.3f} ms (two "
+            f"decimals), so the {ang} deg T then lies {spans} from it, {outcome}, and its PASS "
+            "is certain only with the mixed reading"
+        )
     return (
         "What these verdicts depend on: Table 1's L = 0.3048 m is read two ways at once, as the "
         "distance between the tip centres in the kinematics (Eq. 1, as impactlab's Rod) and as "
         "the length of the slender rod in I_C = m L^2/12 "
         f"({used['T 20 deg [ms]']:.3f} / {used['T 45 deg [ms]']:.3f} ms at 20 / 45 deg). Read "
         "one way throughout: "
-        + "; or ".join(values(r) for _, r in others.iterrows())
-        + consequence
+        + "; or ".join(values(r) for r in others)
+        + (": " + "; ".join(notes) + ". " if notes else ". ")
         + "impactlab keeps the reading of the equations (errata.md, Table 1); I_C, which the "
         "paper does not give, moves T further (Section 8)."
     )

@@ -5,9 +5,10 @@ own Table 4 for 70 deg) with impactlab's numbers, Figs. 4 and 5, force-time and 
 plots, the sensitivity of the experimental T to the rod's inertia, the self-consistency checks of
 the published rows, and a report (Markdown and HTML) that explains every published number
 impactlab does not reproduce. It writes only into the folder it is given (see
-:func:`prepare_output`); a file an earlier run wrote there that this run does not write is
-removed, with a :class:`ReproductionWarning` naming it, so the folder holds one run. The physics
-is never adjusted to a published number.
+:func:`prepare_output`); a file of the reproduction (:data:`FILES`) that this run does not
+write is removed, with a :class:`ReproductionWarning` naming it, so the folder holds one run
+whatever became of the earlier one (killed, or its marker damaged). The physics is never
+adjusted to a published number.
 
 The parts: :mod:`~impactlab.paper.analytic_rows` (experimental rows, inertia, consistency),
 :mod:`~impactlab.paper.simulations`, :mod:`~impactlab.paper.comparison` (with
@@ -19,6 +20,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import time
 import warnings
 from collections.abc import Mapping
@@ -29,6 +31,7 @@ from typing import Any
 
 import pandas as pd
 
+from impactlab._files import write_text_atomic
 from impactlab._version import __version__
 from impactlab.experiment.checks import check_path, output_folder
 from impactlab.paper import data as D
@@ -53,6 +56,33 @@ from impactlab.paper.simulations import eq12_check, run_simulations, simulation_
 MARKER = ".impactlab-reproduction.json"
 
 _TABLE_NAMES = {20: "table2", 45: "table3", 70: "table4"}
+
+#: Every file a reproduction can write (besides :data:`MARKER`): one of these that a run does
+#: not write is an earlier run's, whatever the marker says, and is removed.
+FILES = frozenset(
+    {
+        "report.md",
+        "report.html",
+        *(f"{name}.csv" for name in _TABLE_NAMES.values()),
+        "comparison.csv",
+        "experimental_rows.csv",
+        "published_consistency.csv",
+        "simulations.csv",
+        "simulation_inputs.json",
+        "eq12_check.csv",
+        "fe_reference.csv",
+        "inertia_sensitivity.csv",
+        "inertia_sensitivity.png",
+        "fig5_alpha.png",
+        "fig4_dent.png",
+        *(f"forces_{ang}deg.png" for ang in D.ANGLES_DEG),
+        "physics_comparison.csv",
+        "physics_drop_20deg.png",
+    }
+)
+
+# the temporary file of a write cut short (impactlab._files: ".<name>.<pid>.partial")
+_PARTIAL = re.compile(r"\.(?P<name>.+)\.\d+\.partial")
 
 
 class ReproductionWarning(UserWarning):
@@ -108,7 +138,8 @@ def reproduce(
     only). Returns a :class:`ReproductionResult`; writes report.md, report.html, CSV tables and
     PNG figures, nothing outside ``out_dir``. The files of an earlier run that this one does not
     write (the simulations' after a run with them) are removed, each with a
-    :class:`ReproductionWarning` (``extras["removed"]``: their names)."""
+    :class:`ReproductionWarning` (``extras["removed"]``: their names), and so is any file of
+    :data:`FILES` this run does not write, left by a run that was killed."""
     if not isinstance(simulate, bool):
         raise TypeError(f"simulate must be True or False, got {simulate!r}")
     t0 = time.perf_counter()
@@ -120,11 +151,9 @@ def reproduce(
     except BaseException:  # the marker still lists every file of ours in the folder
         _write_marker(out, "failed", previous | {p.name for p in written.values()})
         raise
-    kept = _remove_stale(out, previous - {p.name for p in written.values()})
-    _write_marker(
-        out, "complete", {p.name for p in written.values()} | kept, time.perf_counter() - t0
-    )
-    removed = sorted(previous - {p.name for p in written.values()} - kept)
+    ours = {p.name for p in written.values()}
+    removed, kept = _remove_stale(out, (previous | FILES | _partials(out)) - ours)
+    _write_marker(out, "complete", ours | kept, time.perf_counter() - t0)
     return replace(res, extras=MappingProxyType({**res.extras, "removed": tuple(removed)}))
 
 
@@ -212,11 +241,11 @@ def _write_report(out: Path, data: ReportData, written: dict[str, Path]) -> tupl
     """report.md and report.html (recorded in ``written``)."""
     blocks = build_report(data)
     md = out / "report.md"
-    md.write_text(to_markdown(blocks, TITLE), encoding="utf-8")
+    write_text_atomic(md, to_markdown(blocks, TITLE))
     written["report_md"] = md
     html_path = out / "report.html"
     # one self-contained page: the figures (already written into ``out``) embedded
-    html_path.write_text(to_html(blocks, TITLE, base=out), encoding="utf-8")
+    write_text_atomic(html_path, to_html(blocks, TITLE, base=out))
     written["report_html"] = html_path
     return md, html_path
 
@@ -247,12 +276,19 @@ def _write_marker(out: Path, status: str, files: set[str], elapsed: float | None
     }
     if elapsed is not None:
         record["elapsed_s"] = elapsed
-    (out / MARKER).write_text(json.dumps(record, indent=2))
+    write_text_atomic(out / MARKER, json.dumps(record, indent=2))
 
 
-def _remove_stale(out: Path, stale: set[str]) -> set[str]:
+def _partials(out: Path) -> set[str]:
+    """The temporary files in ``out`` of a write of one of :data:`FILES` cut short."""
+    found = (_PARTIAL.fullmatch(p.name) for p in out.iterdir())
+    return {m.group(0) for m in found if m is not None and m.group("name") in FILES | {MARKER}}
+
+
+def _remove_stale(out: Path, stale: set[str]) -> tuple[list[str], set[str]]:
     """Remove the files ``stale`` (an earlier run's, not written by this one) from ``out``, one
-    ReproductionWarning each; returns those that could not be removed."""
+    ReproductionWarning each; returns the names removed and those that could not be."""
+    removed: list[str] = []
     kept: set[str] = set()
     for name in sorted(stale):
         path = out / name
@@ -269,19 +305,20 @@ def _remove_stale(out: Path, stale: set[str]) -> set[str]:
                 stacklevel=3,
             )
         else:
+            removed.append(name)
             warnings.warn(
                 f"removed {str(path)!r}, left by an earlier run (this run does not write it)",
                 ReproductionWarning,
                 stacklevel=3,
             )
-    return kept
+    return removed, kept
 
 
 def _write_inputs(path: Path, sims: Simulations) -> Path:
     """What each simulation simulated (``ImpactResult.input``: bodies, materials, law, friction,
     tolerances, impactlab version), keyed ``"20 deg, ghaednia, coulomb"``."""
     records = {f"{ang} deg, {law}, {fr}": r.input for (ang, law, fr), r in sims.items()}
-    path.write_text(json.dumps(records, indent=1) + "\n")
+    write_text_atomic(path, json.dumps(records, indent=1) + "\n")
     return path
 
 
@@ -294,7 +331,7 @@ def _write_tables(
         if df is None:
             continue
         p = out / f"{name}.csv"
-        df.to_csv(p, index=False)
+        write_text_atomic(p, df.to_csv(index=False))
         written[name] = p
 
 
