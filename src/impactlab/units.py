@@ -236,7 +236,7 @@ def to_si(value: Any, unit: str, *, name: str = "value") -> float:
         _check_finite(name, q, value)
         if q.unitless:
             lead = _LEADING_NUMBER.fullmatch(str(value))
-            if lead is None or lead.group(1).strip():
+            if not _plain(unit) and (lead is None or lead.group(1).strip()):
                 raise ValueError(
                     f"{name}: {value!r} is a pure number ({q:~}); give a number in {unit} or "
                     f"one with its unit, e.g. '1.0 {unit}'"

@@ -293,5 +293,6 @@ def test_a_pure_number_is_asked_for_as_one() -> None:
         magnitude("e", "0.4 2", "1")
     assert magnitude("e", "0.4", "1") == pytest.approx(0.4)
     assert magnitude("e_sigma", "0.02 1", "1") == pytest.approx(0.02)
+    assert to_si("0.02 1", "1", name="e_sigma") == pytest.approx(0.02)
     with pytest.raises(ValueError, match="holds more than one number"):
         magnitude("length", "5 1", "m")
