@@ -20,7 +20,7 @@ from impactlab.experiment import FileFormatError, read_markers, read_scan, write
 def files(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
     """The same 500 fps drop as a time-column CSV, a frame CSV with '# rate: 500 Hz', a frame
     CSV without a rate, and a C3D file."""
-    out = tmp_path_factory.mktemp("rates")
+    out = tmp_path_factory.mktemp("frame_rates")
     truth = S.rigid_impulse_impact(PAPER_ROD, math.radians(45), (0.0, -2.18), e=0.49, mu=0.13)
     tracks, _ = S.marker_tracks(PAPER_ROD, truth, rate=500.0, seed=4)
     time = write_csv_markers(tracks, out / "time.csv")
