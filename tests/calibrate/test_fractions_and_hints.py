@@ -17,12 +17,24 @@ from impactlab.calibrate.fixed import fixed_values
         ("mu", "uniform(0, 60%)", "uniform(0, 0.6)"),
         ("mu", "normal(20 %, 5 percent)", "normal(0.2, 0.05)"),
         ("damping", "loguniform(0.1 %, 20 %)", "loguniform(0.001, 0.2)"),
-        ("damping", {"prior": "uniform", "low": "1 %", "high": 0.2}, "uniform(0.01, 0.2)"),
+        ("damping", {"prior": "uniform", "low": "1 %", "high": "20 %"}, "uniform(0.01, 0.2)"),
     ],
 )
 def test_a_prior_of_a_fraction_may_be_in_percent(name, percent, fraction):
     assert parse_parameter(name, percent) == parse_parameter(name, fraction)
     assert parse_parameter(name, percent).describe() == fraction
+
+
+@pytest.mark.parametrize(
+    ("name", "spec"),
+    [("mu", "normal(30 %, 5)"), ("damping", "normal(5 %, 2)"), ("mu", "uniform(5 %, 60)")],
+)
+def test_a_prior_mixing_percent_and_a_bare_number_is_refused(name, spec):
+    """normal(30 %, 5) read the sd as 5 (500 %): as the measurements file, a percentage beside
+    a bare number is refused (a bare 0 stays allowed: it is 0 in both)."""
+    with pytest.raises(ValueError, match=r"has no unit while '.* %' is in percent"):
+        parse_parameter(name, spec)
+    assert parse_parameter("mu", "uniform(0, 60 %)").describe() == "uniform(0, 0.6)"
 
 
 def test_a_prior_in_percent_of_no_fraction_is_refused():

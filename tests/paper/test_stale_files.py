@@ -92,3 +92,33 @@ def test_the_page_lists_the_known_files():
     table = page.split("## What it writes")[1].split("Safety:")[0]
     listed = set(re.findall(r"`([\w.-]+\.(?:csv|png|json|md|html))`", table))
     assert listed == R.FILES | {R.MARKER}
+
+
+def test_after_a_complete_run_only_its_listed_files_are_its_own(tmp_path, recwarn):
+    """A file the user saved under a name of the reproduction in a folder whose last run
+    completed (and did not list it) is the user's: kept, no warning calls it an earlier run's."""
+    out = _folder(
+        tmp_path,
+        json.dumps({"tool": "impactlab reproduce", "status": "complete", "files": ["table3.csv"]}),
+    )
+    res = R.reproduce(out, simulate=False)
+    assert (out / "simulations.csv").read_text() == "from the earlier run"
+    assert "simulations.csv" not in res.extras["removed"]
+    assert not any("simulations.csv" in str(w.message) for w in recwarn)
+
+
+def test_a_link_in_the_folder_is_replaced_not_written_through(tmp_path):
+    """A link named as a file of the reproduction: this run writes its own file in the folder,
+    and the file the link named, outside it, is left as it was."""
+    out = tmp_path / "r"
+    R.reproduce(out, simulate=False)
+    mine = tmp_path / "userdata" / "table2.csv"
+    mine.parent.mkdir()
+    mine.write_text("my precious table")
+    (out / "table2.csv").unlink()
+    (out / "table2.csv").symlink_to(mine)
+    with pytest.warns(R.ReproductionWarning, match="was a link"):
+        R.reproduce(out, simulate=False)
+    assert mine.read_text() == "my precious table"
+    assert not (out / "table2.csv").is_symlink()
+    assert (out / "table2.csv").read_text().startswith("source,")

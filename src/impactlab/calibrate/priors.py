@@ -244,6 +244,7 @@ def _mixed_units(name: str, unit: str, spec: Any, args: list[Any]) -> None:
     input does not: ``normal(300 MPa, 50)`` would read the sd as 50 Pa. A bare 0, ``inf`` or
     ``-inf`` is the same in every unit."""
     if unit in ("", "1"):
+        _mixed_percent(name, spec, args)
         return
     given = [
         a
@@ -260,6 +261,24 @@ def _mixed_units(name: str, unit: str, spec: Any, args: list[Any]) -> None:
                 f"prior of {name}: {spec!r}: {text} has no unit while {str(given[0]).strip()!r}"
                 f" has one: give its unit too (e.g. '{hint}'); a number without a unit would be "
                 f"read in {unit}"
+            )
+
+
+def _mixed_percent(name: str, spec: Any, args: list[Any]) -> None:
+    """ValueError when a prior of a fraction gives one number in percent and another bare:
+    ``normal(30 %, 5)`` would read the sd as 5 (500 %), as the measurements file refuses a
+    percent uncertainty beside a bare value. A bare 0, ``inf`` or ``-inf`` is the same in both."""
+    percent = [a for a in args if (isinstance(a, str) and "%" in a) or "percent" in str(a)]
+    if not percent:
+        return
+    for a in args:
+        text = str(a).strip()
+        if bare(a) and float(text) != 0.0 and math.isfinite(float(text)):
+            raise ValueError(
+                f"prior of {name}: {spec!r}: {text} has no unit while "
+                f"{str(percent[0]).strip()!r} is in percent: give both in percent (e.g. "
+                f"'{text} %') or both as fractions (a bare number is a fraction: {text} is "
+                f"{float(text) * 100:g} %)"
             )
 
 

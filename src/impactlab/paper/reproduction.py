@@ -139,12 +139,15 @@ def reproduce(
     PNG figures, nothing outside ``out_dir``. The files of an earlier run that this one does not
     write (the simulations' after a run with them) are removed, each with a
     :class:`ReproductionWarning` (``extras["removed"]``: their names), and so is any file of
-    :data:`FILES` this run does not write, left by a run that was killed."""
+    :data:`FILES` this run does not write when the earlier run did not complete (killed, or its
+    marker damaged); a link named as one of :data:`FILES` is replaced by this run's file."""
     if not isinstance(simulate, bool):
         raise TypeError(f"simulate must be True or False, got {simulate!r}")
     t0 = time.perf_counter()
+    earlier = _marker_status(Path(out_dir).expanduser())  # before this run is marked running
     out = prepare_output(out_dir)
     previous = _marker_files(out)
+    _unlink_links(out)
     written: dict[str, Path] = {}
     try:
         res = _reproduce(out, simulate, written, t0)
@@ -152,7 +155,8 @@ def reproduce(
         _write_marker(out, "failed", previous | {p.name for p in written.values()})
         raise
     ours = {p.name for p in written.values()}
-    removed, kept = _remove_stale(out, (previous | FILES | _partials(out)) - ours)
+    unfinished = set() if earlier == "complete" else FILES  # a killed run's, or no marker
+    removed, kept = _remove_stale(out, (previous | unfinished | _partials(out)) - ours)
     _write_marker(out, "complete", ours | kept, time.perf_counter() - t0)
     return replace(res, extras=MappingProxyType({**res.extras, "removed": tuple(removed)}))
 
@@ -248,6 +252,33 @@ def _write_report(out: Path, data: ReportData, written: dict[str, Path]) -> tupl
     write_text_atomic(html_path, to_html(blocks, TITLE, base=out))
     written["report_html"] = html_path
     return md, html_path
+
+
+def _marker_status(out: Path) -> str | None:
+    """The status the marker in ``out`` records (None without a readable one): after a
+    ``complete`` run only the files its marker lists are the reproduction's; after one killed
+    (``running``), failed or with no readable marker, every name of :data:`FILES` is."""
+    try:
+        status = json.loads((out / MARKER).read_text()).get("status")
+    except (OSError, ValueError, AttributeError):
+        return None
+    return status if isinstance(status, str) else None
+
+
+def _unlink_links(out: Path) -> None:
+    """Remove the symbolic links in ``out`` named as a file of the reproduction, so that its
+    files are written in ``out`` and never through a link to a file elsewhere (the file a link
+    names is left as it is)."""
+    for name in sorted(FILES):
+        path = out / name
+        if path.is_symlink():
+            path.unlink()
+            warnings.warn(
+                f"{str(path)!r} was a link; this run writes its own file there (the file it "
+                "named is left as it was)",
+                ReproductionWarning,
+                stacklevel=3,
+            )
 
 
 def _marker_files(out: Path) -> set[str]:
