@@ -156,7 +156,8 @@ def test_results_json_is_written_whole_or_not_at_all(
     monkeypatch.setattr("impactlab._files.os.fsync", full_disk)
     d = drops[20]
     res = analyze(d.c3d, scans[20].files["x3p"], geometry=d.geometry, out_dir=tmp_path)
-    assert "No space left on device" in res.errors["results"]
+    assert "No space left on device" in res.errors["figures"]  # the first file staged
+    assert "see figures" in res.errors["results"]
     assert (tmp_path / "results.json").read_bytes() == before["results.json"]
     assert not [p.name for p in tmp_path.iterdir() if p.name not in before]  # nothing partial
 
@@ -202,7 +203,8 @@ def test_a_rerun_on_a_full_disk_removes_no_figure(
     d = drops[20]
     res = analyze(d.c3d, junk["x3p"], geometry=d.geometry, out_dir=tmp_path)
     assert {p.name: p.read_bytes() for p in tmp_path.iterdir()} == before
-    assert "kinematics.png" in res.errors["results"] and "No space left" in res.errors["results"]
+    assert "kinematics.png" in res.errors["figures"] and "No space left" in res.errors["figures"]
+    assert "see figures" in res.errors["results"]
     assert not [w for w in res.warnings if "removed" in w]
 
 

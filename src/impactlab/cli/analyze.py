@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import math
+import warnings
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -13,6 +14,7 @@ from rich.text import Text
 from impactlab._display import field_row
 from impactlab._json import quantity as quantity_json
 from impactlab._json import to_json
+from impactlab._validation import ImplausibleInputWarning
 from impactlab.bodies import PAPER_ROD, Rod
 from impactlab.cli._common import (
     SI_UNITS,
@@ -164,20 +166,22 @@ def analyze_cmd(
     check_input_file(markers, "MARKERS")  # a misspelt path: nothing read, --out untouched
     check_input_file(scan, "SCAN")
     folder = output_folder(out, "--out") if out is not None else None
-    res = analyze(
-        markers,
-        scan,
-        rod_obj,
-        flat=flat,
-        geometry=geo,
-        up=up,
-        marker_units=marker_units,
-        pixel_size=pixel_size,
-        height_unit=height_unit,
-        flip_heights=flip_heights,
-        out_dir=folder,
-        gravity=gravity,
-    )
+    with warnings.catch_warnings():  # the doubts: printed once, with the result's warnings
+        warnings.filterwarnings("ignore", message="not ok: ", category=ImplausibleInputWarning)
+        res = analyze(
+            markers,
+            scan,
+            rod_obj,
+            flat=flat,
+            geometry=geo,
+            up=up,
+            marker_units=marker_units,
+            pixel_size=pixel_size,
+            height_unit=height_unit,
+            flip_heights=flip_heights,
+            out_dir=folder,
+            gravity=gravity,
+        )
     if as_json:
         print(json.dumps(analysis_json(res), indent=2))
     else:

@@ -238,7 +238,9 @@ def analyze(
     A stage that fails on its data (a bad file, a failed fit, a sticking impact, an inversion
     outside its range, a dent the rod cannot make: :func:`check_dent`, a file that cannot be
     written) is recorded in ``result.errors``; an invalid
-    argument raises TypeError or ValueError naming it at once.
+    argument raises TypeError or ValueError naming it at once. A result that is not ok for a
+    doubt (``result.doubts``: an estimated marker geometry in doubt) issues each doubt as an
+    ``ImplausibleInputWarning`` too.
     """
     switches = {"flip_heights": flip_heights, "figures": figures, "gravity": gravity}
     check_scalars(n_samples, law, strict=strict, **switches)
@@ -267,6 +269,8 @@ def analyze(
         save_outputs(res, run.out, figures)
     if strict:
         res.raise_for_errors()
+    for doubt in res.doubts:  # seen where a notebook shows it, not only in res.ok
+        warnings.warn(f"not ok: {doubt}", ImplausibleInputWarning, stacklevel=2)
     return res
 
 

@@ -7,7 +7,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from impactlab._display import field_row, html_table
+from impactlab._display import field_row, html_table, text_table
 from impactlab._files import write_text_atomic
 from impactlab._json import jsonable
 from impactlab.experiment.errors import ExperimentError
@@ -79,10 +79,24 @@ class ExperimentResult:
         if self.errors:
             raise ExperimentError("; ".join(f"{k}: {v}" for k, v in self.errors.items()))
 
-    def _repr_html_(self) -> str:
+    @property
+    def doubts(self) -> tuple[str, ...]:
+        """What makes the result doubtful though every stage succeeded (``kinematics.doubts``:
+        an estimated marker geometry in doubt); empty when there is none."""
+        return () if self.kinematics is None else tuple(self.kinematics.doubts)
+
+    def _rows(self) -> list[tuple[str, str, str]]:
         rows = [field_row(k, v.value, v.unit or "1", v.sigma) for k, v in self.summary().items()]
+        rows.append(("ok", "yes" if self.ok else "no", ""))
+        rows += [("doubt", d, "") for d in self.doubts]
         rows += [(f"error ({k})", v, "") for k, v in self.errors.items()]
-        return html_table("ExperimentResult", rows)
+        return rows
+
+    def __str__(self) -> str:
+        return text_table("ExperimentResult", self._rows())
+
+    def _repr_html_(self) -> str:
+        return html_table("ExperimentResult", self._rows())
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready (SI units; ``summary`` holds value/sigma/unit per quantity)."""

@@ -14,7 +14,8 @@ user's file of that name, a folder in the way), which is checked before anything
 nothing is written or removed there. Every file is written whole or not at all
 (``impactlab._files``), and under a temporary name first: the figures and ``results.json`` are
 renamed into place together, and an earlier run's figures removed, only when all were written,
-so that a full disk leaves the folder as it was. A figure that cannot be written (no
+so that a full disk leaves the folder as it was; the files they replace are moved aside first
+and put back when a rename fails. A figure that cannot be written (no
 permission) is the ``figures`` stage's error naming the file (each such file named); what was
 measured is kept and still reported.
 """
@@ -226,19 +227,43 @@ def _stale(res: ExperimentResult, out: Path, drawn: set[str]) -> list[tuple[str,
 
 
 class _WriteError(OSError):
-    """A file of the output folder that could not be written (``path``, the ``cause``)."""
+    """A file of the output folder that could not be written (``path``, the ``cause``);
+    ``mixed``: the files this run left replaced because the earlier ones could not be put back
+    (empty: the folder is as it was)."""
 
-    def __init__(self, path: Path, cause: OSError) -> None:
+    def __init__(self, path: Path, cause: OSError, mixed: tuple[Path, ...] = ()) -> None:
         super().__init__(str(cause))
-        self.path, self.cause = path, cause
+        self.path, self.cause, self.mixed = path, cause, mixed
+
+
+def _put_back(aside: list[tuple[Path, Path]], placed: list[Path]) -> tuple[Path, ...]:
+    """Undo a rename phase: the files moved ``aside`` ((temporary, path)) renamed back, the
+    ``placed`` files that had no earlier one removed; the paths that could not be undone."""
+    mixed: list[Path] = []
+    earlier = {path for _, path in aside}
+    for path in placed:
+        if path not in earlier:
+            try:
+                path.unlink()
+            except OSError:
+                mixed.append(path)
+    for old, path in aside:
+        try:
+            os.replace(old, path)
+        except OSError:
+            mixed.append(path)
+    return tuple(mixed)
 
 
 def _swap_in(files: dict[Path, bytes]) -> None:
     """Write every file of ``files`` (path -> bytes) under a temporary name first, each whole
-    (``impactlab._files``), and rename them all into place only when all were written; a file
-    that cannot be written is a :class:`_WriteError` naming it, and the folder is left as it
-    was. A file written over keeps its permission bits."""
+    (``impactlab._files``), then move each existing file aside and rename them all into place;
+    a file that cannot be written or renamed is a :class:`_WriteError` naming it, and the files
+    moved aside are put back, so that the folder is left as it was (or the error names the
+    files that could not be put back). A file written over keeps its permission bits."""
     staged: list[tuple[Path, Path]] = []
+    aside: list[tuple[Path, Path]] = []
+    placed: list[Path] = []
     try:
         for path, data in files.items():
             tmp = path.with_name(f".{path.name}.{os.getpid()}.new")
@@ -249,11 +274,20 @@ def _swap_in(files: dict[Path, bytes]) -> None:
                     os.chmod(tmp, stat.S_IMODE(path.stat().st_mode))
             except OSError as exc:
                 raise _WriteError(path, exc) from None
-        for tmp, path in staged:
-            try:
+        path = staged[0][1] if staged else Path()
+        try:
+            for _, path in staged:
+                if path.is_file():
+                    old = path.with_name(f".{path.name}.{os.getpid()}.old")
+                    os.replace(path, old)
+                    aside.append((old, path))
+            for tmp, path in staged:
                 os.replace(tmp, path)
-            except OSError as exc:
-                raise _WriteError(path, exc) from None
+                placed.append(path)
+        except OSError as exc:
+            raise _WriteError(path, exc, _put_back(aside, placed)) from None
+        for old, _ in aside:
+            old.unlink(missing_ok=True)
     finally:
         for tmp, _ in staged:
             tmp.unlink(missing_ok=True)
@@ -295,7 +329,20 @@ def save_outputs(res: ExperimentResult, out: Path, figures: bool = True) -> None
         for name in [n for n in res.figures if Path(res.figures[n]) in files]:
             del res.figures[name]
         done = "nothing in the folder was written or removed"
-        res.errors["results"] = f"{_cannot_write(exc.path, exc.cause)}; {done}"
+        if exc.mixed:
+            done = (
+                f"the earlier {', '.join(repr(str(p)) for p in exc.mixed)} could not be put "
+                f"back (kept as '.NAME.{os.getpid()}.old' in the folder): replaced by this run's"
+            )
+        cannot = f"{_cannot_write(exc.path, exc.cause)}; {done}"
+        if exc.path != results:  # a figure: the record is not written without it
+            _add_error(res, "figures", cannot)
+            res.errors["results"] = (
+                f"not written: {str(results)!r}, the record of the analysis, is written with the "
+                f"figures, one of which could not be (see figures); {done}"
+            )
+            return
+        res.errors["results"] = cannot
         if drawn:
             _add_error(
                 res,

@@ -338,9 +338,10 @@ def _measure(
         )
         warnings.append(
             "geometry estimated: the rod's axis is taken as the markers' principal direction, "
-            "which holds only for markers laid out along the rod (the tilt the impulse "
-            f"relation implies: beyond {math.degrees(GROSS_TILT):.0f} deg refused, a smaller one "
-            "or one it cannot tell marks the result not ok); the +- of "
+            "which holds only for markers laid out along the rod (checked, for a rod with an "
+            f"inertia, by the tilt the impulse relation implies: beyond "
+            f"{math.degrees(GROSS_TILT):.0f} deg refused, a smaller one or one it cannot tell "
+            "marks the result not ok); the +- of "
             "e, mu and the angle does not include that assumption (give the "
             "marker geometry to remove it)"
         )

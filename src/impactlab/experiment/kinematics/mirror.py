@@ -28,7 +28,13 @@ import numpy as np
 from impactlab.experiment.errors import MarkerError
 from impactlab.experiment.kinematics.impulse import ImpulseCheck, impulse_check
 from impactlab.experiment.kinematics.result import ImpactKinematics
-from impactlab.experiment.kinematics.tilt import GROSS_TILT, TiltCheck, tilt_check
+from impactlab.experiment.kinematics.tilt import (
+    GROSS_TILT,
+    INERTIA_OFF,
+    K2_RELATIVE,
+    TiltCheck,
+    tilt_check,
+)
 from impactlab.experiment.rigid import MarkerGeometry, kabsch
 from impactlab.experiment.uncertainty import Estimate, fixed
 
@@ -36,6 +42,7 @@ __all__ = [
     "CAUSE",
     "E_SIGMAS",
     "E_WARN_SIGMAS",
+    "NO_INERTIA",
     "check_not_mirrored_shape",
     "checked_against_mirror",
     "e_outside",
@@ -140,9 +147,20 @@ def estimated_geometry_error(src: str, k: ImpactKinematics, check: TiltCheck) ->
         f"{src}: with the marker geometry estimated (the rod's axis taken as the markers' "
         f"principal direction) the rigid-body impulse relation (k^2 dw = b dv_Cx - a dv_Cy) "
         f"holds only with the rod's axis tilted {_tilt(k, check)} from it (more than "
-        f"{math.degrees(GROSS_TILT):.0f} deg): the markers are not laid out along the rod, so "
-        f"what was read ({_read(k)}) is wrong; {_GIVE_GEOMETRY}"
+        f"{math.degrees(GROSS_TILT):.0f} deg): either the markers are not laid out along the "
+        f"rod, and what was read ({_read(k)}) is then wrong, or the rod's inertia k^2 = I/m "
+        f"is off by far more than {100 * K2_RELATIVE:.0f} %; {_GIVE_GEOMETRY}, or check the "
+        f"rod's inertia (Rod.inertia, the marker mounts included)"
     )
+
+
+#: The doubt of an estimated geometry that the tilt check could not judge.
+NO_INERTIA = (
+    "the marker geometry is in doubt: the tilt check did not run: the rod has no inertia "
+    "(k^2 = I/m), so markers not laid out along the rod would go unseen; give the rod's inertia "
+    "(Rod.inertia) or the marker geometry (impactlab analyze --geometry markers.toml; geometry= "
+    "in Python)"
+)
 
 
 def estimated_geometry_note(k: ImpactKinematics, check: TiltCheck) -> str | None:
@@ -154,17 +172,27 @@ def estimated_geometry_note(k: ImpactKinematics, check: TiltCheck) -> str | None
         return (
             f"the marker geometry is in doubt: with it estimated (the rod's axis taken as the "
             f"markers' principal direction) the impulse relation implies the rod's axis tilted "
-            f"{_tilt(k, check)} from it (markers off the rod's axis, or a rod's inertia k^2 = I/m "
-            f"that is off), which biases what was read ({_read(k)}) beyond its +-; "
-            f"{_GIVE_GEOMETRY}"
+            f"{_tilt(k, check)} from it: markers off the rod's axis, which bias what was read "
+            f"({_read(k)}) beyond its +-, or the rod's inertia k^2 = I/m off by more than "
+            f"{100 * K2_RELATIVE:.0f} %; {_GIVE_GEOMETRY}"
+        )
+    if verdict == "inertia":
+        return (
+            f"the marker geometry is in doubt: with it estimated (the rod's axis taken as the "
+            f"markers' principal direction) the impulse relation implies the rod's axis tilted "
+            f"{_tilt(k, check)} from it, or holds with the rod's inertia k^2 = I/m "
+            f"{100 * INERTIA_OFF:.0f} % off: markers not laid out along the rod, which make what "
+            f"was read ({_read(k)}) wrong, or an inertia that is off; check the rod's inertia "
+            f"(Rod.inertia, the marker mounts included) or {_GIVE_GEOMETRY}"
         )
     if verdict == "undecided":
         return (
             f"the marker geometry is in doubt: with it estimated (the rod's axis taken as the "
             f"markers' principal direction) the impulse relation implies the rod's axis tilted "
             f"{_tilt(k, check)} from it, too uncertain to tell a tilt of "
-            f"{math.degrees(GROSS_TILT):.0f} deg from none (a shallow angle, a slow camera or "
-            f"noisy markers), so what was read ({_read(k)}) is unchecked; {_GIVE_GEOMETRY}"
+            f"{math.degrees(GROSS_TILT):.0f} deg from none (a shallow angle, where the rod's "
+            f"inertia k^2 = I/m, known to {100 * K2_RELATIVE:.0f} %, weighs most, a slow camera "
+            f"or noisy markers), so what was read ({_read(k)}) is unchecked; {_GIVE_GEOMETRY}"
         )
     return None
 
@@ -222,7 +250,8 @@ def checked_against_mirror(
     returned with the warnings. Without a ``geometry`` (estimated), the tilt of the rod's axis
     that the impulse relation implies (:mod:`.tilt`): a gross one is
     :func:`estimated_geometry_error`, a small one or an undecided check marks ``k`` not ok
-    (:func:`estimated_geometry_note`, in ``k.doubts`` and the warnings)."""
+    (:func:`estimated_geometry_note`, in ``k.doubts`` and the warnings); without ``k2`` the
+    check cannot run, which marks ``k`` not ok too (``NO_INERTIA``)."""
     doubts: list[str] = []
     if geometry is None and k2 is not None:
         estimated = tilt_check(k, k2)
@@ -230,6 +259,8 @@ def checked_against_mirror(
             raise estimated_geometry_error(src, k, estimated)
         doubt = estimated_geometry_note(k, estimated)
         doubts += [doubt] if doubt else []
+    elif geometry is None:
+        doubts.append(NO_INERTIA)
     bad_e = e_outside(k.e, E_SIGMAS)
     own = impulse_check(k, k2) if geometry is not None and k2 is not None else None
     notes: list[str] = []
