@@ -239,7 +239,7 @@ def analyze(
     outside its range, a dent the rod cannot make: :func:`check_dent`, a file that cannot be
     written) is recorded in ``result.errors``; an invalid
     argument raises TypeError or ValueError naming it at once. A result that is not ok for a
-    doubt (``result.doubts``: an estimated marker geometry in doubt) issues each doubt as an
+    doubt (``result.doubts``: an estimated marker geometry in doubt) warns of each one with an
     ``ImplausibleInputWarning`` too.
     """
     switches = {"flip_heights": flip_heights, "figures": figures, "gravity": gravity}
