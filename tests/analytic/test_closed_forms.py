@@ -273,7 +273,7 @@ def test_sticking_regime_errors():
         ({"v_i": 0.0}, "v_i"),
         ({"mu": -0.1}, "mu"),
         ({"e": 1.2}, "e"),
-        ({"sliding_length": 0.0}, "L_s"),
+        ({"sliding_length": 0.0}, "^sliding_length must be non-zero"),  # the keyword
         ({"delta_p": float("nan")}, "delta_p"),
         ({"mu": (0.2, -0.01)}, "mu"),
         ({"mu": (0.2, 0.01, 3)}, "mu"),

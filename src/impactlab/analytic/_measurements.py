@@ -43,11 +43,6 @@ _UNITS = {
 _MAGNITUDES = {"delta_p": "the permanent dent depth"}
 
 
-def _label(name: str) -> str:
-    """The name of an input in error messages (the sliding length with the paper's symbol)."""
-    return "sliding_length (L_s)" if name == "sliding_length" else name
-
-
 #: A nominal v_i or dv_cy above this [m/s] draws an ImplausibleInputWarning.
 PLAUSIBLE_SPEED = 100.0
 #: A dent deeper than this fraction of the tip radius draws an ImplausibleInputWarning.
@@ -71,7 +66,7 @@ SIGMA_RANGE_FRACTION = 0.25
 def measurements(values: Mapping[str, Any]) -> dict[str, Measured]:
     """The given inputs (None: not measured) as :class:`Measured` in SI, keyed by name, with
     ``v_i``, ``delta_p`` and ``sliding_length`` as magnitudes; ValueError naming a bad one."""
-    meas = {k: measured(_label(k), v, _UNITS[k]) for k, v in values.items() if v is not None}
+    meas = {k: measured(k, v, _UNITS[k]) for k, v in values.items() if v is not None}
     if "e" not in meas and "dv_cy" not in meas:
         raise ValueError(
             "e or dv_cy is required: F needs the restitution coefficient (rigid-body "
@@ -80,8 +75,7 @@ def measurements(values: Mapping[str, Any]) -> dict[str, Measured]:
     for k, what in _MAGNITUDES.items():
         if meas[k].value < 0.0:
             raise ValueError(
-                f"{_label(k)} must be >= 0 ({what}, a magnitude in m), got {meas[k].value!r}: "
-                f"{_CONVENTION}"
+                f"{k} must be >= 0 ({what}, a magnitude in m), got {meas[k].value!r}: {_CONVENTION}"
             )
     for k in ("v_i", "delta_p", "sliding_length"):  # the drop speed; -0.0 -> 0.0
         meas[k] = Measured(abs(meas[k].value), meas[k].sigma)
@@ -105,7 +99,7 @@ def _check_ranges(meas: Mapping[str, Measured]) -> None:
         raise ValueError(f"mu must be >= 0, got {meas['mu'].value!r}")
     if meas["sliding_length"].value == 0.0:
         raise ValueError(
-            "sliding_length (L_s) must be non-zero: in gross sliding any normal "
+            "sliding_length must be non-zero: in gross sliding any normal "
             "impulse makes the tip slide, so a zero sliding length cannot be inverted"
         )
     if "e" in meas and not 0.0 <= meas["e"].value <= 1.0:

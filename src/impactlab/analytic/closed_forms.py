@@ -127,7 +127,8 @@ def sliding_length(
     ignored, != 0, as everywhere in ``impactlab.analytic``; v_i = -|v_i| above), ``duration``
     T > 0 [s]. The result is the slip along +x, negative in gross sliding (the tip slides
     towards -x), as the engine's ``sliding_length``. ValueError in the sticking regime
-    (mu >= mu_c), where L_s = 0. ``measure="travel"`` gives the contact patch's travel instead
+    (mu >= mu_c), where L_s = 0, and for T < delta_p/|v_i| (a negative normal impulse).
+    ``measure="travel"`` gives the contact patch's travel instead
     of the slip (gravity neglected).
     """
     dp = magnitude("delta_p", delta_p, "the permanent dent depth")
@@ -140,7 +141,25 @@ def sliding_length(
     m, L, R, inertia = rod_values(rod)
     *_, al, mu_c = coefficients(th, mu_, m, L, R, inertia, _travel(measure))
     check_sliding(mu_, mu_c, th)
+    _check_impulse(dp, -vi, T)
     return out(al * (-dp - vi * T))
+
+
+def _check_impulse(dp: Any, vi: Any, T: Any) -> None:
+    """ValueError where the duration T [s] is shorter than delta_p/|v_i| (magnitudes ``dp``
+    [m], ``vi`` [m/s]): the tip would reach the dent's bottom only with a negative normal
+    impulse, Q = (|v_i| T - delta_p)/K_y < 0."""
+    least = dp / vi
+    short = np.asarray(T < least)
+    if short.any():
+        i = int(np.argmax(short.ravel()))
+        t = float(np.broadcast_to(T, short.shape).ravel()[i])
+        lo = float(np.broadcast_to(least, short.shape).ravel()[i])
+        raise ValueError(
+            f"duration must be >= delta_p/|v_i| = {lo:.4g} s (at |v_i| the tip needs that long "
+            f"to reach the dent's bottom; a shorter one implies a negative normal impulse), "
+            f"got {t!r} s"
+        )
 
 
 def impact_duration(
@@ -164,19 +183,19 @@ def impact_duration(
     sticks and raises ValueError.
     """
     dp = magnitude("delta_p", delta_p, "the permanent dent depth")
-    ls = np.abs(arr("sliding_length (L_s)", sliding_length, unit="m"))  # signed: along +x
+    ls = np.abs(arr("sliding_length", sliding_length, unit="m"))  # signed: along +x
     vi = np.abs(arr("v_i", v_i, unit="m/s"))
-    al = arr("alpha", alpha_)
+    al = arr("alpha_", alpha_)
     if (vi == 0).any():
         raise ValueError("v_i must be non-zero (the drop speed), got 0.0")
     if (ls == 0).any():
         raise ValueError(
-            "sliding_length (L_s) must be non-zero: in gross sliding any normal "
+            "sliding_length must be non-zero: in gross sliding any normal "
             "impulse makes the tip slide, so a zero sliding length cannot be inverted"
         )
     if (al >= 0).any():
         raise ValueError(
-            f"alpha must be < 0 (gross sliding), got {al.ravel()[np.argmax(al.ravel() >= 0)]!r}: "
+            f"alpha_ must be < 0 (gross sliding), got {al.ravel()[np.argmax(al.ravel() >= 0)]!r}: "
             "alpha >= 0 means mu >= mu_c, the tip sticks and Eq. 12 cannot give the duration"
         )
     g_ = check_nonnegative("g", g, "m/s^2")
@@ -195,17 +214,30 @@ def duration_from_dent(dp: Any, ls: Any, vi: Any, abs_alpha: Any, gravity: bool,
 def friction_from_velocities(dv_cx: Any, dv_cy: Any, *, duration: Any = None, g: float = G0) -> Any:
     """Friction coefficient from the centre-of-mass velocity changes (paper Eq. 28) [-].
 
-    mu = |dv_Cx| / |dv_Cy|. With ``duration`` T [s] the gravity impulse is removed from the
-    vertical change: mu = |dv_Cx| / (dv_Cy + g T) (``dv_cy`` upward positive, as measured).
+    mu = |dv_Cx| / dv_Cy. With ``duration`` T [s] the gravity impulse is removed from the
+    vertical change: mu = |dv_Cx| / (dv_Cy + g T). ``dv_cx`` [m/s] (sign ignored); ``dv_cy``
+    [m/s] the upward change, > 0 (ValueError otherwise: the normal impulse lifts the rod).
     """
     dx = arr("dv_cx", dv_cx, unit="m/s")
-    dy = arr("dv_cy", dv_cy, unit="m/s")
+    dy = _upward("dv_cy", dv_cy)
     if duration is not None:
         T = arr("duration", duration, unit="s", low=0.0)
         dy = dy + check_nonnegative("g", g, "m/s^2") * T
-    if (dy == 0).any():
-        raise ValueError("dv_cy must be non-zero (no normal impulse means no friction estimate)")
-    return out(np.abs(dx) / np.abs(dy))
+    return out(np.abs(dx) / dy)
+
+
+def _upward(name: str, value: Any) -> Any:
+    """The measured upward change of the centre-of-mass velocity [m/s] as a float array;
+    ValueError naming ``name`` unless it is > 0 (the contact's normal impulse lifts the rod, the
+    ``dv_cy`` of :func:`invert`)."""
+    dy = arr(name, value, unit="m/s")
+    bad = dy <= 0
+    if bad.any():
+        raise ValueError(
+            f"{name} must be > 0 (the upward change of the centre-of-mass velocity over the "
+            f"impact, m/s), got {float(dy.ravel()[np.argmax(bad.ravel())])!r} m/s"
+        )
+    return dy
 
 
 def mean_force_momentum(
@@ -215,10 +247,11 @@ def mean_force_momentum(
 
     F T = m dv_Cy (the paper), or F T = m dv_Cy + m g T with ``gravity=True`` (the measured change
     of the centre-of-mass velocity includes the gravity impulse, which the contact must overcome).
+    ``duration`` T > 0 [s], ``mass`` > 0 [kg], ``dv_cy`` [m/s] the upward change, > 0.
     """
     T = arr("duration", duration, unit="s", low=0.0, low_open=True)
     m = arr("mass", mass, unit="kg", low=0.0, low_open=True)
-    dv = arr("dv_cy", dv_cy, unit="m/s")
+    dv = _upward("dv_cy", dv_cy)
     g_ = check_nonnegative("g", g, "m/s^2")
     return out(m * dv / T + (m * g_ if gravity else 0.0))
 

@@ -26,15 +26,19 @@ from impactlab.analytic._measurements import (
     measurements,
 )
 from impactlab.analytic.closed_forms import G0, check_sliding, coefficients, duration_from_dent
-from impactlab.analytic.result import InversionResult, Measured
+from impactlab.analytic.result import MC_INTERVAL, InversionResult, Measured
 from impactlab.bodies import Rod
 
-__all__ = ["MC_REJECTED_WARNING", "invert"]
+__all__ = ["MC_REJECTED_WARNING", "SPREAD_ROUNDING", "invert"]
 
 #: A Monte Carlo that discards more than this share of its samples (sticking regime or out of
 #: range) draws an ImplausibleInputWarning: its mean and spread then describe a truncated
-#: distribution, not the measurement's.
+#: distribution, not the measurement's. Any sample in the sticking regime draws another (the
+#: heavy tail of T, ``_monte_carlo``).
 MC_REJECTED_WARNING = 0.05
+#: A Monte Carlo standard deviation below this fraction of its mean is rounding (T when only
+#: dv_cy is uncertain, which T does not depend on) and is reported as 0.
+SPREAD_ROUNDING = 1e-12
 
 Value = float | Measured | tuple[float, float]
 
@@ -48,14 +52,14 @@ def _core(
     gravity: bool,
     g: float,
     travel: bool = False,
-) -> tuple[Any, Any, Any]:
-    """(T, F, valid) for arrays of inputs (magnitudes; ``dv_cy`` may be absent)."""
+) -> tuple[Any, Any, Any, Any]:
+    """(T, F, valid, stuck) for arrays of inputs (magnitudes; ``dv_cy`` may be absent); ``stuck``
+    marks alpha >= 0: the sticking regime (mu >= mu_c), or a patch's travel that turns."""
     th, mu = x["angle"], x["mu"]
     *_, K_y, al, mu_c = coefficients(th, mu, m, L, R, inertia, travel)
     vi, dp, ls = x["v_i"], x["delta_p"], x["sliding_length"]
-    valid = (th >= 0) & (th <= HALF_PI) & (mu >= 0) & (mu < mu_c) & (vi > 0) & (dp >= 0) & (ls > 0)
-    if travel:  # the patch's travel must keep its (negative) direction
-        valid = valid & (al < 0)
+    stuck = (mu >= mu_c) | (al >= 0) if travel else mu >= mu_c
+    valid = (th >= 0) & (th <= HALF_PI) & (mu >= 0) & ~stuck & (vi > 0) & (dp >= 0) & (ls > 0)
     with np.errstate(all="ignore"):
         T = duration_from_dent(dp, ls, vi, np.abs(al), gravity, g)
         if "dv_cy" in x:
@@ -66,7 +70,7 @@ def _core(
             valid = valid & (e >= 0) & (e <= 1)
             F = ((1.0 + e) * vi + (g * T if gravity else 0.0)) / (K_y * T)
     valid = valid & np.isfinite(T) & np.isfinite(F) & (T > 0)
-    return T, F, valid
+    return T, F, valid, stuck
 
 
 def _sensitivities(
@@ -85,7 +89,7 @@ def _sensitivities(
             lo, hi = v - h, v + h
         xs: dict[str, Any] = dict(nominal)
         xs[k] = np.array([lo, hi])
-        Ts, Fs, _ = core(xs)
+        Ts, Fs, *_ = core(xs)
         Ts, Fs = np.broadcast_to(Ts, (2,)), np.broadcast_to(Fs, (2,))
         sens_T[k] = float((Ts[1] - Ts[0]) / (hi - lo))
         sens_F[k] = float((Fs[1] - Fs[0]) / (hi - lo))
@@ -95,15 +99,16 @@ def _sensitivities(
 def _monte_carlo(
     meas: Mapping[str, Measured], n: int, seed: int | None, core: Any, varied: bool
 ) -> dict[str, Any]:
-    """Means, standard deviations, 95 % intervals, the rejected fraction and the number of
-    samples kept of ``n`` samples; ImplausibleInputWarning when more than
-    ``MC_REJECTED_WARNING`` of them are discarded."""
+    """Means, standard deviations, medians, 95 % intervals (``MC_INTERVAL`` percentiles), the
+    rejected fraction and the number of samples kept of ``n`` samples; ImplausibleInputWarning
+    when more than ``MC_REJECTED_WARNING`` of them are discarded, and when any falls in the
+    sticking regime (the spread of T is then unreliable: :func:`_warn_heavy_tail`)."""
     rng = np.random.default_rng(seed)
     samples = {
         k: (v.value + v.sigma * rng.standard_normal(n)) if v.sigma > 0 else np.full(n, v.value)
         for k, v in meas.items()
     }
-    Ts, Fs, ok = (np.broadcast_to(v, (n,)) for v in core(samples))
+    Ts, Fs, ok, stuck = (np.broadcast_to(v, (n,)) for v in core(samples))
     rejected = 1.0 - float(np.mean(ok))
     Tv, Fv = Ts[ok], Fs[ok]
     if Tv.size < 2:
@@ -118,16 +123,44 @@ def _monte_carlo(
             f"rest on the {Tv.size} kept, a truncated distribution; the uncertainties given are "
             "too large for this inversion, check the sigmas"
         )
+    n_stuck = int(np.count_nonzero(stuck))
+    if n_stuck:
+        _warn_heavy_tail(n_stuck, n)
+    lo, hi = MC_INTERVAL
     return {
         "T_mc": float(np.mean(Tv)),
         "F_mc": float(np.mean(Fv)),
-        "sigma_T_mc": float(np.std(Tv, ddof=1)) if varied else 0.0,
-        "sigma_F_mc": float(np.std(Fv, ddof=1)) if varied else 0.0,
-        "T_interval_mc": (float(np.percentile(Tv, 2.5)), float(np.percentile(Tv, 97.5))),
-        "F_interval_mc": (float(np.percentile(Fv, 2.5)), float(np.percentile(Fv, 97.5))),
+        "sigma_T_mc": _spread(Tv) if varied else 0.0,
+        "sigma_F_mc": _spread(Fv) if varied else 0.0,
+        "T_median_mc": float(np.median(Tv)),
+        "F_median_mc": float(np.median(Fv)),
+        "T_interval_mc": (float(np.percentile(Tv, lo)), float(np.percentile(Tv, hi))),
+        "F_interval_mc": (float(np.percentile(Fv, lo)), float(np.percentile(Fv, hi))),
         "mc_rejected": rejected,
         "mc_used": int(Tv.size),
     }
+
+
+def _spread(x: Any) -> float:
+    """The sample standard deviation of ``x``, 0 where it is rounding (``SPREAD_ROUNDING``)."""
+    sigma = float(np.std(x, ddof=1))
+    return 0.0 if sigma <= SPREAD_ROUNDING * abs(float(np.mean(x))) else sigma
+
+
+def _warn_heavy_tail(n_stuck: int, n: int) -> None:
+    """ImplausibleInputWarning: ``n_stuck`` of ``n`` samples reached alpha >= 0. T ~ 1/|alpha|
+    and alpha passes 0 linearly at mu_c, so where the inputs' distribution reaches it the
+    density of T falls as 1/T^2: its variance (and its mean) diverge, and the sample's
+    standard deviation is set by its few largest draws, not by the measurement."""
+    lo, hi = MC_INTERVAL
+    warn_implausible(
+        f"{n_stuck} of the {n} Monte Carlo samples ({n_stuck / n:.2%}) reached alpha >= 0 (the "
+        "sticking regime) and were discarded: where the inputs' distribution reaches it, "
+        "alpha -> 0 and T ~ 1/|alpha| has a heavy tail without a finite variance, so sigma_T_mc "
+        "and T_mc depend on the seed and the spread is unreliable; read T_median_mc and "
+        f"T_interval_mc ({lo:g}-{hi:g} percentiles) instead, or narrow the sigmas of mu and "
+        "the angle"
+    )
 
 
 def _scalar_rod(rod: Rod | None) -> tuple[float, float, float, float]:
@@ -276,11 +309,13 @@ def invert(
     of e or the angle wider than a quarter of its range ([0, 1], (0, pi/2)): it spans the
     whole range. ImplausibleInputWarning for a dent shallower than 0.1 um or
     deeper than a tenth of the tip radius, |v_i| or dv_cy above 100 m/s, a nominal duration
-    above 0.1 s, or a Monte Carlo that discards more than 5 % of its samples
-    (``mc_rejected``; ``mc_used`` samples kept).
+    above 0.1 s, a Monte Carlo that discards more than 5 % of its samples (``mc_rejected``;
+    ``mc_used`` samples kept), or any sample in the sticking regime: T has a heavy tail there,
+    its Monte Carlo mean and standard deviation are unreliable, its median and interval are not.
 
     Returns an :class:`InversionResult` with ``duration`` and ``mean_force``, their first-order
-    and Monte Carlo uncertainties, alpha, K_x, K_y, mu_c and the inputs used.
+    and Monte Carlo uncertainties (mean, standard deviation, median, 95 % interval), alpha, K_x,
+    K_y, mu_c and the inputs used (magnitudes; the sensitivities are with respect to them).
 
     Example: ``invert(angle=math.radians(20), v_i=-1.41, e=0.5, mu=0.2, delta_p=22e-6,
     sliding_length=1400e-6).duration`` is about 4.11e-3 s.
@@ -315,7 +350,7 @@ def _result(
         travel=opt["travel"],
     )
     nominal = {k: np.float64(v.value) for k, v in meas.items()}
-    T0_a, F0_a, ok = core(nominal)
+    T0_a, F0_a, ok, _ = core(nominal)
     if not bool(ok):  # pragma: no cover - guarded by the checks above
         raise ValueError("the inputs give no valid inversion")
     T0 = float(T0_a)

@@ -9,14 +9,18 @@ from typing import Any
 from impactlab._display import field_row, format_number, html_table
 from impactlab._validation import check_finite, check_nonnegative
 
-__all__ = ["InversionResult", "Measured", "measured"]
+__all__ = ["MC_INTERVAL", "InversionResult", "Measured", "measured"]
 
+#: The percentiles [%] of the Monte Carlo's interval (``T_interval_mc``, ``F_interval_mc``): the
+#: central 95 %.
+MC_INTERVAL = (2.5, 97.5)
 #: Units of the scalar fields of :class:`InversionResult` (for the HTML table).
 _UNITS = {
     k: unit
     for unit, keys in (
-        ("s", ("duration", "sigma_T_linear", "T_mc", "sigma_T_mc")),
-        ("N", ("mean_force", "sigma_F_linear", "F_mc", "sigma_F_mc", "F_momentum", "F_rigid")),
+        ("s", ("duration", "sigma_T_linear", "T_mc", "sigma_T_mc", "T_median_mc")),
+        ("N", ("mean_force", "sigma_F_linear", "F_mc", "sigma_F_mc", "F_median_mc")),
+        ("N", ("F_momentum", "F_rigid")),
         ("1/kg", ("K_x", "K_y")),
     )
     for k in keys
@@ -67,8 +71,11 @@ class InversionResult:
     Attributes (SI): ``duration`` T [s], ``mean_force`` F [N] (nominal values);
     ``sigma_T_linear``, ``sigma_F_linear``
     (first-order propagation, numerical Jacobian); ``T_mc``, ``F_mc`` (Monte Carlo means),
-    ``sigma_T_mc``, ``sigma_F_mc`` (Monte Carlo standard deviations), ``T_interval_mc``,
-    ``F_interval_mc`` (2.5 and 97.5 percentiles), ``mc_rejected`` (fraction of samples that fell in
+    ``sigma_T_mc``, ``sigma_F_mc`` (Monte Carlo standard deviations; 0 where the spread is
+    rounding), ``T_median_mc``, ``F_median_mc`` (Monte Carlo medians), ``T_interval_mc``,
+    ``F_interval_mc`` (the central 95 %: 2.5 and 97.5 percentiles, :data:`MC_INTERVAL`; with
+    samples in the sticking regime T's mean and standard deviation are unreliable, its median
+    and interval are not), ``mc_rejected`` (fraction of samples that fell in
     the sticking regime or out of range and were discarded), ``mc_used`` (the number of samples
     kept), ``n_samples``, ``seed``; ``alpha``,
     ``K_x``, ``K_y`` [1/kg], ``mu_c``; ``force_method`` ("momentum" for Eq. 29 with dv_cy, else
@@ -87,6 +94,8 @@ class InversionResult:
     F_mc: float
     sigma_T_mc: float
     sigma_F_mc: float
+    T_median_mc: float
+    F_median_mc: float
     T_interval_mc: tuple[float, float]
     F_interval_mc: tuple[float, float]
     mc_rejected: float
@@ -136,14 +145,20 @@ class InversionResult:
             _n, text, unit = field_row(name, float(v), _INPUT_UNITS[name], s)
             return f"{label or name} = {text}" + (f" {unit}" if unit != "-" else "")
 
-        def out(label: str, value: float, sigma: float, mc: float, sigma_mc: float) -> str:
-            unit = "ms" if label == "T" else "N"
-            k = 1e3 if label == "T" else 1.0
+        def out(label: str) -> str:
+            unit, k = ("ms", 1e3) if label == "T" else ("N", 1.0)
+            value = self.duration if label == "T" else self.mean_force
             text = f"  {label} = {format_number(value * k)} {unit}"
-            if uncertain:
+            sigma = getattr(self, f"sigma_{label}_linear")
+            sigma_mc = getattr(self, f"sigma_{label}_mc")
+            if uncertain and (sigma > 0 or sigma_mc > 0):  # a sigma of 0: an exact output
+                lo, hi = (format_number(v * k) for v in getattr(self, f"{label}_interval_mc"))
+                mc = format_number(getattr(self, f"{label}_mc") * k)
+                median = format_number(getattr(self, f"{label}_median_mc") * k)
                 text += (
                     f"  ± {format_number(sigma * k, 2)} (first order)  ± "
-                    f"{format_number(sigma_mc * k, 2)} (Monte Carlo, mean {format_number(mc * k)})"
+                    f"{format_number(sigma_mc * k, 2)} (Monte Carlo, mean {mc}, median "
+                    f"{median}, 95 % in [{lo}, {hi}])"
                 )
             return text
 
@@ -165,9 +180,8 @@ class InversionResult:
             f"  {pm('delta_p', '|delta_p|')}, {pm('sliding_length', '|L_s|')}",
             f"  alpha = {format_number(self.alpha)}, mu_c = {format_number(self.mu_c)}, "
             f"K_x = {format_number(self.K_x)} 1/kg, K_y = {format_number(self.K_y)} 1/kg",
-            out("T", self.duration, self.sigma_T_linear, self.T_mc, self.sigma_T_mc),
-            out("F", self.mean_force, self.sigma_F_linear, self.F_mc, self.sigma_F_mc)
-            + f"  [{self.force_method}]",
+            out("T"),
+            out("F") + f"  [{self.force_method}]",
         ]
         if self.F_momentum is not None and self.F_rigid is not None:  # both inputs given
             rigid = format_number(self.F_rigid)

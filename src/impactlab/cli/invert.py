@@ -35,6 +35,8 @@ from impactlab.cli.invert_inputs import (
     EXAMPLE_SIGMAS,
     EXAMPLE_UNITS,
     FIELDS,
+    IN_FILE,
+    check_measure,
     from_file,
     parse_sigma,
     parse_value,
@@ -82,35 +84,74 @@ def run_invert(
     sigmas: dict[str, Any] | None = None,
     rod: dict[str, Any] | None = None,
     gravity: bool | None = None,
+    measure: str | None = None,
     samples: int | None = None,
     seed: int | None = None,
 ) -> tuple[InversionResult, dict[str, tuple[float, float]]]:
     """Merge case < file < command line and call :func:`impactlab.analytic.invert` (the paper
     case's negative dent depth and sliding length enter as magnitudes). Returns the result and
-    the inputs as given (SI, signs kept: the echo), as ``(value, sigma)`` by keyword."""
-    v, s, r, extra = from_file(load_toml(file, "--file"))
+    the inputs as given (SI, signs kept: the echo), as ``(value, sigma)`` by keyword. An error
+    of ``invert`` names each input as the user gave it (``--ls``, ``ls in the measurement
+    file``)."""
+    v, s, r, extra, keys = from_file(load_toml(file, "--file"))
     case = case or extra.get("case")
+    labels: dict[str, str] = {}
     if case is not None:
         from impactlab.paper.data import get_case  # lazy: a fast CLI start
 
         x = get_case(str(case))
         paper = {"angle": x.angle, "v_i": x.v_i, "e": x.e, "mu": x.mu}
         v = {**paper, "delta_p": abs(x.delta_p), "L_s": abs(x.L_s), **v}
+        labels |= {k: f"{FIELDS[k][2]} of --case {case}" for k in FIELDS}
+    labels |= {k: f"{key} {IN_FILE}" for k, key in keys.items()}
     cli_v = {k: val for k, val in (values or {}).items() if val is not None}
     cli_s = {k: val for k, val in (sigmas or {}).items() if val is not None}
+    labels |= {k: FIELDS[k][2] for k in cli_v}
+    labels |= {f"sigma.{k}": "--sigma-" + FIELDS[k][2][2:] for k in cli_s}
     _check_complete(set(v) | set(cli_v), set(s) | set(cli_s))
     v.update({k: parse_value(val, FIELDS[k][0], FIELDS[k][2]) for k, val in cli_v.items()})
     s.update({k: parse_sigma(k, val, cli_v.get(k)) for k, val in cli_s.items()})
     r.update(parse_rod_table({k: val for k, val in (rod or {}).items() if val is not None}, "--"))
     kwargs: dict[str, Any] = {ARGUMENTS.get(k, k): (val, s.get(k, 0.0)) for k, val in v.items()}
-    result = invert(
-        **kwargs,
-        rod=_rod(r),
-        gravity=gravity if gravity is not None else bool(extra.get("gravity", False)),
-        n_samples=samples if samples is not None else _file_count(extra, "samples", 20_000, 100),
-        seed=seed if seed is not None else _file_count(extra, "seed", 0, 0),
-    )
+    if measure is not None:
+        check_measure(measure, "--measure")
+    if seed is not None and seed < 0:
+        raise UserError(f"--seed must be an integer >= 0, got {seed}")
+    samples_key = "n_samples" if "n_samples" in extra else "samples"
+    try:
+        result = invert(
+            **kwargs,
+            rod=_rod(r),
+            gravity=gravity if gravity is not None else bool(extra.get("gravity", False)),
+            measure=measure or extra.get("measure", "slip"),
+            n_samples=samples
+            if samples is not None
+            else _file_count(extra, samples_key, 20_000, 100),
+            seed=seed if seed is not None else _file_count(extra, "seed", 0, 0),
+        )
+    except ValueError as exc:  # "mu must be finite": the input as the user gave it
+        raise UserError(_as_given(str(exc), labels)) from None
     return result, kwargs
+
+
+def _as_given(message: str, labels: dict[str, str]) -> str:
+    """An error of ``invert`` whose leading keyword (``sliding_length must ...``, ``the sigma of
+    e = ...``) is spelled as the user gave it (``labels``: input name or ``sigma.`` + name ->
+    its option or file key)."""
+    for k, text in labels.items():
+        name = k.removeprefix("sigma.")
+        head = ARGUMENTS.get(name, name) + " "
+        head = "the sigma of " + head if k.startswith("sigma.") else head
+        if message.startswith(head) and len(message) > len(head):
+            return _spelled(text, message.removeprefix(head))
+    return message
+
+
+def _spelled(label: str, rest: str) -> str:
+    """``label rest``; a file's key before a value as ``key (in the measurement file) = ...``."""
+    if label.endswith(IN_FILE) and rest.startswith("= "):
+        return f"{label.removesuffix(IN_FILE)}({IN_FILE}) {rest}"
+    return f"{label} {rest}"
 
 
 def _file_count(extra: dict[str, Any], key: str, default: int, least: int) -> int:
@@ -191,7 +232,8 @@ def invert_cmd(
     file: Path | None = typer.Option(
         None,
         "--file",
-        help="TOML file of measurements (keys as the options; [sigma], [rod]). A bare number "
+        help="TOML file of measurements (keys as the options or as Python's invert: ls or "
+        "sliding_length; [sigma], [rod]; measure, gravity, samples, seed). A bare number "
         "in [sigma] is in the unit of its value in the file (ls = '1400 um' and [sigma] ls = "
         "50: 50 um); without that value in the file it needs its unit.",
     ),
@@ -199,6 +241,12 @@ def invert_cmd(
         None,
         "--gravity/--no-gravity",
         help="Gravity during the contact (default: no, as in the paper).",
+    ),
+    measure: str | None = typer.Option(
+        None,
+        "--measure",
+        help="What --ls measures: 'slip' (default, the paper: the rod's material point at the "
+        "contact) or 'travel' (the contact patch, which a dent's length records).",
     ),
     samples: int | None = typer.Option(
         None, "--samples", min=100, help="Monte Carlo samples (default 20000; at least 100)."
@@ -232,6 +280,7 @@ def invert_cmd(
             sigmas=dict(zip(FIELDS, sigmas, strict=True)),
             rod={"mass": mass, "length": length, "tip_radius": tip_radius, "inertia": inertia},
             gravity=gravity,
+            measure=measure,
             samples=samples,
             seed=seed,
         )
@@ -241,7 +290,7 @@ def invert_cmd(
     model, compared = _compare_with_engine(res, flat) if flat is not None else ({}, [])
     found += compared
     if as_json:
-        data = inversion_json(res, given)
+        data = inversion_json(res)
         if model:
             data["model"] = to_json(model, SI_UNITS)
         print(json.dumps({**data, "warnings": found}, indent=2))
@@ -275,7 +324,7 @@ def _compare_with_engine(res: InversionResult, flat: str) -> tuple[dict[str, Any
     from impactlab.materials import get_material
 
     try:
-        material = get_material(flat.strip().lower())
+        material = get_material(flat.strip())
     except ValueError as exc:
         raise UserError(f"--flat: {exc}") from None
     rod = res.rod

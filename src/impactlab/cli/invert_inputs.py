@@ -23,26 +23,35 @@ __all__ = [
     "EXAMPLE_UNITS",
     "EXTRA",
     "FIELDS",
+    "IN_FILE",
+    "MEASURES",
+    "check_measure",
     "from_file",
     "parse_sigma",
     "parse_value",
 ]
 
-# input name -> (SI unit used for parsing, accepted TOML keys, command-line option)
+# input name -> (SI unit used for parsing, accepted TOML keys, command-line option); the keys
+# include the keyword of impactlab.analytic.invert (and of the JSON's inputs), so that a
+# result's inputs can be written back into a measurement file
 FIELDS: dict[str, tuple[str, tuple[str, ...], str]] = {
     "angle": ("degree", ("angle",), "--angle"),
     "v_i": ("m/s", ("vi", "v_i"), "--vi"),
     "e": ("", ("e",), "--e"),
     "mu": ("", ("mu",), "--mu"),
     "delta_p": ("m", ("delta_p", "delta-p"), "--delta-p"),
-    "L_s": ("m", ("ls", "L_s", "l_s"), "--ls"),
+    "L_s": ("m", ("ls", "L_s", "l_s", "sliding_length", "sliding-length"), "--ls"),
     "dv_cy": ("m/s", ("dv_cy", "dv-cy"), "--dv-cy"),
 }
 ALIAS = {k: name for name, (_, keys, _) in FIELDS.items() for k in keys}
 #: input name -> keyword of impactlab.analytic.invert, where they differ
 ARGUMENTS = {"L_s": "sliding_length"}
-#: the other keys of a measurement file
-EXTRA = ("case", "gravity", "samples", "seed")
+#: the other keys of a measurement file (``n_samples``: the JSON's and Python's ``samples``)
+EXTRA = ("case", "gravity", "measure", "samples", "n_samples", "seed")
+#: what ``measure`` (``--measure``) may be: what the sliding length measures
+MEASURES = ("slip", "travel")
+#: where a measurement file's value is named in an error
+IN_FILE = "in the measurement file"
 #: a number and what follows it (its unit) in a command-line value
 _NUMBER_AND_UNIT = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?\s*(.*)")
 #: a unit to show in the example of an error about a bare sigma
@@ -138,12 +147,32 @@ def _measured(
 ) -> dict[str, float]:
     """The measured values (or their sigmas) of a TOML table, by input name."""
     out: dict[str, float] = {}
+    seen: dict[str, str] = {}
     for key, val in table.items():
         if key not in ALIAS:
             allowed = ", ".join(sorted([*ALIAS, *more]))
             raise UserError(f"unknown key {key!r} in {where}; allowed: {allowed}")
+        _once(ALIAS[key], key, seen, where)
         out[ALIAS[key]] = parse_value(val, FIELDS[ALIAS[key]][0], prefix + key)
     return out
+
+
+def _once(name: str, key: str, seen: dict[str, str], where: str) -> None:
+    """UserError when two keys of one table (``ls`` and ``sliding_length``) give the same
+    input; else ``key`` is recorded in ``seen`` (input name -> key)."""
+    if name in seen:
+        raise UserError(
+            f"{seen[name]!r} and {key!r} in {where} give the same input ({FIELDS[name][2]}); "
+            "give it once"
+        )
+    seen[name] = key
+
+
+def check_measure(value: Any, name: str) -> str:
+    """``value`` as a measure (``"slip"`` or ``"travel"``); UserError naming ``name``."""
+    if value not in MEASURES:
+        raise UserError(f"{name} must be 'slip' or 'travel', got {value!r}")
+    return str(value)
 
 
 def _file_sigmas(table: dict[str, Any], values: dict[str, Any]) -> dict[str, float]:
@@ -153,10 +182,12 @@ def _file_sigmas(table: dict[str, Any], values: dict[str, Any]) -> dict[str, flo
     the file does not give that value (its unit would be a guess)."""
     raw = {ALIAS.get(k, k): v for k, v in values.items()}
     out = _measured({k: v for k, v in table.items() if k not in ALIAS}, "[sigma]", "sigma.")
+    seen: dict[str, str] = {}
     for key, sigma in table.items():
         if key not in ALIAS:
             continue
         name = ALIAS[key]
+        _once(name, key, seen, "[sigma]")
         unit = FIELDS[name][0]
         if not unit or unit == "degree" or not _is_bare(sigma):
             out[name] = parse_value(sigma, unit, f"sigma.{key}")
@@ -176,11 +207,17 @@ def _file_sigmas(table: dict[str, Any], values: dict[str, Any]) -> dict[str, flo
 
 def from_file(
     data: dict[str, Any],
-) -> tuple[dict[str, float], dict[str, float], dict[str, float], dict[str, Any]]:
-    """(values, sigmas, rod, extra: case, gravity, samples, seed) of a measurement file."""
+) -> tuple[dict[str, float], dict[str, float], dict[str, float], dict[str, Any], dict[str, str]]:
+    """(values, sigmas, rod, extra: case, gravity, measure, samples, seed, keys) of a measurement
+    file; ``keys``: each given value's key as written (input name -> key, and ``"sigma." + name``
+    -> ``"sigma." + key``), to name it in errors."""
     tables = {k: v for k, v in data.items() if k in ("sigma", "rod")}
     extra = {k: v for k, v in data.items() if k in EXTRA}
     check_booleans(extra, ("gravity",), "the measurement file")
+    if "measure" in extra:
+        check_measure(extra["measure"], f"measure {IN_FILE}")
+    if "samples" in extra and "n_samples" in extra:
+        raise UserError(f"'samples' and 'n_samples' {IN_FILE} are the same count; give one")
     values = {k: v for k, v in data.items() if k not in tables and k not in extra}
     for name, table in tables.items():
         if not isinstance(table, dict):
@@ -188,4 +225,6 @@ def from_file(
     file_values = _measured(values, "the measurement file", more=("sigma", "rod", *EXTRA))
     sigmas = _file_sigmas(tables.get("sigma", {}), values)
     rod = parse_rod_table(tables.get("rod", {}), "rod.")
-    return file_values, sigmas, rod, extra
+    keys = {ALIAS[k]: k for k in values}
+    keys |= {f"sigma.{ALIAS[k]}": f"sigma.{k}" for k in tables.get("sigma", {}) if k in ALIAS}
+    return file_values, sigmas, rod, extra, keys

@@ -13,6 +13,7 @@ from impactlab._json import quantity as quantity_json
 from impactlab._json import to_json
 from impactlab.analytic import InversionResult
 from impactlab.analytic.inversion import MC_REJECTED_WARNING
+from impactlab.analytic.result import MC_INTERVAL
 from impactlab.cli._common import SI_UNITS, print_rows
 
 #: SI units of the inversion's inputs, by keyword of ``impactlab.analytic.invert``.
@@ -32,37 +33,42 @@ _SIGMAS = {
     "T_mc": "sigma_T_mc",
     "F_mc": "sigma_F_mc",
 }
+#: SI units of the outputs that ``SI_UNITS`` does not hold.
+_UNITS = {**SI_UNITS, "T_median_mc": "s", "F_median_mc": "N"}
 
 
 def _per(unit: str, by: str) -> str:
-    return unit if by == "1" else f"{unit}/({by})"
+    """The unit of a derivative, ``unit`` per ``by``: ``s/m``, ``s/rad``, ``s/(m/s)``."""
+    if by == "1":
+        return unit
+    return f"{unit}/({by})" if any(c in by for c in "/* ") else f"{unit}/{by}"
 
 
-def inversion_json(
-    res: InversionResult, given: Mapping[str, tuple[float, float]] | None = None
-) -> dict[str, Any]:
+def inversion_json(res: InversionResult) -> dict[str, Any]:
     """The inversion as JSON (docs/json-schema.md): outputs with their sigma (first order for
-    ``duration``/``mean_force``, Monte Carlo for ``T_mc``/``F_mc``), the Monte Carlo's counts
-    (``n_samples``, ``mc_used``: integers; ``mc_rejected``: the share discarded), the inputs as
-    given (signs kept; ``res.inputs`` without ``given``), the rod and the sensitivities, each
-    with its unit."""
+    ``duration``/``mean_force``, Monte Carlo for ``T_mc``/``F_mc``), the Monte Carlo's medians
+    and 95 % intervals, its counts (``n_samples``, ``mc_used``: integers; ``mc_rejected``: the
+    share discarded), the inputs as the inversion used them (``res.inputs``: SI, magnitudes of
+    ``v_i``, ``delta_p`` and ``sliding_length``), the rod and the sensitivities, derivatives
+    with respect to those same inputs, each with its unit."""
     data = {k: v for k, v in res.to_dict().items() if k not in _SIGMAS.values()}
-    inputs = given or res.inputs
     sigmas = {k: getattr(res, name) for k, name in _SIGMAS.items()}
-    data["inputs"] = {k: quantity_json(float(v), INPUT_UNITS[k], s) for k, (v, s) in inputs.items()}
+    data["inputs"] = {
+        k: quantity_json(float(v), INPUT_UNITS[k], s) for k, (v, s) in res.inputs.items()
+    }
     for out, unit in (("T", "s"), ("F", "N")):
         sens = data.pop(f"sensitivity_{out}")
         data[f"sensitivity_{out}"] = {
             k: quantity_json(float(d), _per(unit, INPUT_UNITS[k])) for k, d in sens.items()
         }
-    return to_json(data, SI_UNITS, sigmas)  # type: ignore[no-any-return]
+    return to_json(data, _UNITS, sigmas)  # type: ignore[no-any-return]
 
 
 def print_inversion(res: InversionResult, given: Mapping[str, tuple[float, float]]) -> None:
-    """The inputs as given, then T and F (± first order; Monte Carlo rows, with the number of
-    samples drawn and used, only when an input has an uncertainty), in display units. A
-    discarded share up to ``MC_REJECTED_WARNING`` is noted under the table; above it the
-    inversion's warning (stderr) says so."""
+    """The inputs as given, then T and F (± first order; Monte Carlo rows, with their medians,
+    95 % intervals and the number of samples drawn and used, only when an input has an
+    uncertainty), in display units. A discarded share up to ``MC_REJECTED_WARNING`` is noted
+    under the table; above it the inversion's warning (stderr) says so."""
     uncertain = any(s > 0 for _v, s in given.values())
     rows = [field_row(k, float(v), INPUT_UNITS[k], s) for k, (v, s) in given.items()]
     outputs: dict[str, Any] = {
@@ -71,15 +77,23 @@ def print_inversion(res: InversionResult, given: Mapping[str, tuple[float, float
         "force_method": res.force_method,
     }
     if uncertain:
-        outputs.update({"T_mc": res.T_mc, "F_mc": res.F_mc})
+        outputs.update({"T_mc": res.T_mc, "T_median_mc": res.T_median_mc})
+        outputs["T_interval_mc"] = res.T_interval_mc
+        outputs.update({"F_mc": res.F_mc, "F_median_mc": res.F_median_mc})
+        outputs["F_interval_mc"] = res.F_interval_mc
         outputs.update({"n_samples": res.n_samples, "mc_used": res.mc_used})
     outputs.update({"alpha": res.alpha, "mu_c": res.mu_c, "K_x": res.K_x, "K_y": res.K_y})
     outputs["gravity"] = "included" if res.gravity else "neglected (paper)"
+    outputs["measure"] = res.measure
     sigmas = {k: getattr(res, name) for k, name in _SIGMAS.items()} if uncertain else {}
-    rows += field_rows(outputs, SI_UNITS, sigmas)
+    rows += field_rows(outputs, _UNITS, sigmas)
     title = "impactlab invert (paper Eqs. 12, 29)"
     if uncertain:
-        title += ": ± first order; T_mc, F_mc: Monte Carlo mean ± sigma"
+        lo, hi = MC_INTERVAL
+        title += (
+            ": ± first order; Monte Carlo: T_mc, F_mc mean ± sigma, *_median_mc median, "
+            f"*_interval_mc 95 % ({lo:g}-{hi:g} percentiles)"
+        )
     print_rows(rows, title)
     if uncertain and 0 < res.mc_rejected <= MC_REJECTED_WARNING:
         typer.echo(

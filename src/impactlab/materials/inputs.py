@@ -13,11 +13,13 @@ One reader for every input (the Python API's :func:`get_material`, every command
 
 A definition by values is complete or refused: it never borrows a library entry's other
 values (an aluminium flat never keeps a steel's hardness), and its name never names a library
-entry unless every value is that entry's.
+entry (its key, an alias or its display name) unless every value, the unset ones included, is
+that entry's: then it is that entry.
 """
 
 from __future__ import annotations
 
+import difflib
 import math
 import re
 import tomllib
@@ -25,7 +27,7 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
-from impactlab._validation import did_you_mean, read_text_file
+from impactlab._validation import did_you_mean, read_text_file, value_text
 from impactlab.materials.core import PLAUSIBLE, Material, brinell_to_pa
 from impactlab.materials.library import ALIASES, PRESETS
 from impactlab.units import to_si
@@ -152,17 +154,63 @@ def from_values(values: Mapping[str, Any], where: str = "material") -> Material:
             f"(e.g. '{EXAMPLE}'; or a library name: {library_names()})"
         )
     name = fields.pop("name", "") or _label(fields)
-    entry = from_library(name)
-    if entry is not None and any(
-        getattr(entry, f) != v for f, v in fields.items() if f != "condition"
-    ):
-        raise ValueError(
-            f"{where}: name {name!r} is a library material with other values; give another name"
-        )
     try:
-        return Material(name=name, **fields)
+        material = Material(name=name, **fields)
     except ValueError as exc:
         raise ValueError(f"{where}: {exc}") from None
+    entry = _named_entry(name)
+    if entry is None:
+        return material
+    differ = [f for f in _COMPARED if _differs(getattr(material, f), getattr(entry, f))]
+    if differ:
+        shown = ", ".join(
+            f"{f} ({_shown(material, f)}; the library's {_shown(entry, f)})" for f in differ
+        )
+        raise ValueError(
+            f"{where}: name {name!r} is a library material with other values: it names "
+            f"{library_key(entry)!r}, which differs in {shown}; a material by values may carry "
+            "a library name only with every value of that entry, the unset ones too: give "
+            "another name"
+        )
+    return entry
+
+
+#: The values a material by values must share with a library entry whose name it carries
+#: (value -> its unit in messages).
+_COMPARED = {
+    "E": "Pa",
+    "nu": "",
+    "yield_strength": "Pa",
+    "brinell_hardness": "kgf/mm^2",
+    "meyer_index": "",
+    "density": "kg/m^3",
+    "brittle": "",
+}
+
+
+def _differs(a: Any, b: Any) -> bool:
+    both_nan = isinstance(a, float) and isinstance(b, float) and math.isnan(a) and math.isnan(b)
+    return not (a == b or both_nan)
+
+
+def _shown(material: Material, field: str) -> str:
+    """A material's value in an error, with its unit; ``unset`` for a hardness not given."""
+    value = getattr(material, field)
+    if isinstance(value, bool):
+        return "yes" if value else "no"
+    if math.isnan(value):
+        return "unset"
+    return value_text(value, _COMPARED[field])
+
+
+def _named_entry(name: str) -> Material | None:
+    """The library entry whose key, alias or display name ``name`` is (case, ``_``, ``-`` and
+    spaces free); None for any other name."""
+    entry = from_library(name)
+    if entry is not None:
+        return entry
+    key = _key(name)
+    return next((m for m in PRESETS.values() if _key(m.name) == key), None)
 
 
 def _label(fields: Mapping[str, Any]) -> str:
@@ -238,11 +286,29 @@ def get_material(value: Any, where: str = "material") -> Material:
             raise ValueError(f"{where}: material file {text!r} does not exist")
         return from_file(path, where)
     prefix = "" if where == "material" else f"{where}: "
-    near = did_you_mean(_key(text), (*PRESETS, *ALIASES))
+    near = _nearest(_key(text))
     raise ValueError(
         f"{prefix}unknown material {text!r}{near}; known: {library_names()} (see 'impactlab "
         f"materials'), or give its properties: '{EXAMPLE}'"
     )
+
+
+def _nearest(key: str) -> str:
+    """`` (did you mean 'x'?)`` for the library name or alias nearest to ``key``: one that
+    holds it, or that it holds, (``-`` and ``.`` aside; the closest such), else the nearest
+    spelling (``impactlab._validation.did_you_mean``), else ``""``."""
+    names = (*PRESETS, *ALIASES)
+
+    def bare(text: str) -> str:
+        return re.sub(r"[-._]", "", text)
+
+    k = bare(key)
+    holding = [n for n in names if k and (k in bare(n) or (len(bare(n)) >= 3 and bare(n) in k))]
+    if holding:
+        best = difflib.get_close_matches(key, holding, n=1, cutoff=0.0)
+        name = best[0] if best else holding[0]
+        return f" (did you mean {ALIASES.get(name, name)!r}?)"
+    return did_you_mean(key, names)
 
 
 def library_key(material: Material) -> str | None:

@@ -217,6 +217,10 @@ PRESETS: dict[str, Material] = {
 
 #: Other spellings of the library's names.
 ALIASES: dict[str, str] = {
+    "201": "aisi-201",
+    "aisi201": "aisi-201",
+    "1010": "aisi-1010",
+    "aisi1010": "aisi-1010",
     "52100": "aisi-52100",
     "304": "aisi-304",
     "ss304": "aisi-304",
