@@ -134,7 +134,7 @@ def test_dent_map(paper: ImpactResult) -> None:
     assert d.length >= d.width * (1 - 1e-9)
     _x, z = d.profile()
     assert z.min() == pytest.approx(d.height.min())
-    with pytest.raises(ValueError, match="nx and ny"):
+    with pytest.raises(ValueError, match="nx must be an integer >= 3"):
         paper.dent(nx=2)
 
 

@@ -4,8 +4,9 @@ Bounds (SI). Refused, because impossible: a length, tip radius, radius, mass, in
 density that is not a finite number > 0, and a rod whose tip radius exceeds half its length.
 Warned with :class:`~impactlab._validation.ImplausibleInputWarning`, because most likely a unit
 mistake: a length outside :data:`PLAUSIBLE_LENGTH`, a tip radius or sphere radius outside
-:data:`PLAUSIBLE_RADIUS`, a mass outside :data:`PLAUSIBLE_MASS`, and a rigid rod's mass over
-:data:`HEAVY_ROD_FACTOR` times that of a uniform rod as wide as its tip.
+:data:`PLAUSIBLE_RADIUS`, a mass outside :data:`PLAUSIBLE_MASS`, a rigid rod's mass over
+:data:`HEAVY_ROD_FACTOR` times that of a uniform rod as wide as its tip, and a sphere's mass
+over :data:`DENSE_SPHERE_FACTOR` times that of a solid sphere of its material.
 """
 
 from __future__ import annotations
@@ -78,6 +79,30 @@ def heavy_rod_problem(L: float, R: float, m: float, material: Material) -> str |
         f"(rho = {material.density:.4g} kg/m^3) as wide as the tip (warned above "
         f"{HEAVY_ROD_FACTOR:g}: a unit mistake?); a Rod takes its mass as given: for one that "
         "is not a uniform section (a heavy head), give its inertia"
+    )
+
+
+#: A sphere's given mass above this multiple of a solid sphere of its material draws an
+#: ImplausibleInputWarning. Higher than :data:`HEAVY_ROD_FACTOR`: a sphere may stand in for a
+#: heavier body's effective mass, a rod of length L striking along its axis weighing 3 L / (4 R)
+#: solid spheres of its tip (the paper's rod on its 8.8 mm tip: 21 times; L/R up to 130 stays
+#: below), while a gram given as a kilogram is a thousand times.
+DENSE_SPHERE_FACTOR = 100.0
+
+
+def dense_sphere_problem(R: float, m: float, material: Material) -> str | None:
+    """Why a sphere's mass ``m`` [kg] is implausible for its radius ``R`` [m] (None when it is
+    not): over :data:`DENSE_SPHERE_FACTOR` times that of a solid sphere of the material."""
+    rho = m / (4.0 / 3.0 * math.pi * R**3)
+    ratio = rho / material.density
+    if not ratio > DENSE_SPHERE_FACTOR:
+        return None
+    return (
+        f"mass = {m!r} kg and radius = {R!r} m imply a density of {rho:.4g} kg/m^3: the mass is "
+        f"{ratio:.3g} times that of a solid sphere of the material (rho = "
+        f"{material.density:.4g} kg/m^3) of this radius (warned above {DENSE_SPHERE_FACTOR:g}: a "
+        "unit mistake?); a Sphere takes its mass as given: for one that stands in for a heavier "
+        "body's effective mass (a rod striking along its axis), the warning can be ignored"
     )
 
 

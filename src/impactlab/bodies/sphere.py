@@ -8,11 +8,12 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from impactlab._html import dataclass_html, dataclass_rows
-from impactlab._validation import check_positive
+from impactlab._validation import check_positive, warn_implausible
 from impactlab.bodies._checks import (
     PLAUSIBLE_MASS,
     PLAUSIBLE_RADIUS,
     check_material,
+    dense_sphere_problem,
     plausible,
 )
 from impactlab.bodies.layout import BP_GSTAR, BP_INERTIA, KIND_SPHERE
@@ -33,7 +34,11 @@ class Sphere:
     ImplausibleInputWarning for a radius outside [1 um, 0.5 m] or a mass outside
     [1 mg, 1000 kg]. The mass is free of the material's density (a hollow ball, or a sphere
     that stands in for a heavier body's effective mass: ``fe.impact_reference``'s rod-mass
-    case is 8.8 mm with the rod's 0.46 kg).
+    case is 8.8 mm with the rod's 0.46 kg); a given mass over a hundred times that of a
+    solid sphere of the material (``bodies._checks.DENSE_SPHERE_FACTOR``; a rod striking
+    along its axis is 3 L / (4 R) times, the rod-mass case 21) draws an
+    ImplausibleInputWarning: ``Sphere(radius="5 mm", mass=1.0)`` is 245 times steel's, 1 kg
+    where 1 g was meant.
     """
 
     radius: float
@@ -50,6 +55,9 @@ class Sphere:
         if self.mass is not None:
             m = check_positive("mass", self.mass, "kg")
             rho = m / (4.0 / 3.0 * math.pi * R**3)
+            problem = dense_sphere_problem(R, m, self.material)
+            if problem is not None:
+                warn_implausible(problem)
         else:
             rho = (
                 self.material.density

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -31,7 +32,8 @@ class BatchResult(BatchStatus):
 
     Fields are available by name (``batch["e"]`` or ``batch.e``); cases with a non-zero status
     hold NaN results (see ``messages``), except the incoming ``vn_in`` and ``vt_in``, which are
-    kept wherever the inputs define them (a case refused for ``vn_in >= 0`` shows why).
+    kept wherever the inputs define them (a case refused for ``vn_in >= 0`` shows why); a case
+    refused for its inputs names the input, its value and its rule in ``messages``.
     ``references`` are the sources the batch used (contact law, friction model if any mu > 0,
     the integrator); ``dois()`` their DOIs.
     """
@@ -48,6 +50,9 @@ class BatchResult(BatchStatus):
     #: the range the law is held to for the batch's pair, one line (``contact.range_note``:
     #: verified against FE up to ..., or unverified and why); None: not known
     law_range: str | None = field(default=None, repr=False)
+    #: why each case refused for its inputs (ST_BAD_INPUT) is refused, by case index (the input,
+    #: its value and its rule: ``messages``)
+    refusals: Mapping[int, str] = field(default_factory=dict, repr=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "out", readonly_copy(self.out))
@@ -77,6 +82,7 @@ class BatchResult(BatchStatus):
             "friction",
             "references",
             "law_range",
+            "refusals",
         ):
             raise AttributeError(name)
         try:

@@ -3,15 +3,31 @@
 One meaning for ``ok`` across the result family: a case is ok when it was computed (status 0)
 and carries no flag but the advisory ones (``impactlab.flags.ADVISORY_FLAGS``), as
 ``ImpactResult.ok`` and ``DropResult.ok`` say for one result. ``computed`` is the status mask
-alone. ``BatchResult`` (impacts) and ``DropBatchResult`` (flexible-rod drops) share it.
+alone. ``BatchResult`` (impacts) and ``DropBatchResult`` (flexible-rod drops) share it, with
+the words of a case refused for its inputs (``case_refusals``: the input, its value and its
+rule) and the notebook summary (``batch_summary_html``, ``BatchResult``'s for a drop batch).
 """
 
 from __future__ import annotations
 
+import math
+from collections.abc import Mapping
+from types import SimpleNamespace
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from impactlab.bodies import Rod, Sphere
+from impactlab.dynamics.export import batch_html
+from impactlab.dynamics.input_checks import contact_reach
+from impactlab.dynamics.kernels.inputs import (
+    IN_OK,
+    INPUT_RULES,
+    RTOL_MIN,
+    input_problem,
+    problem_text,
+)
+from impactlab.dynamics.kernels.layout import OUTPUT_FIELDS
 from impactlab.dynamics.kernels.status import STATUS_MESSAGES
 from impactlab.flags import ADVISORY_FLAGS
 
@@ -39,11 +55,66 @@ def integer_series(values: np.ndarray, computed: np.ndarray) -> Any:
     return pd.Series(pd.arrays.IntegerArray(ints, ~keep))
 
 
+def batch_summary_html(batch: Any, renamed: Mapping[str, str]) -> str:
+    """The notebook summary of a batch whose outputs are not ``BatchResult``'s columns (a
+    ``DropBatchResult``) through ``BatchResult``'s own (``export.batch_html``): each output
+    that ``batch_html`` reads by an impact's name (``OUTPUT_FIELDS``) taken from the batch's
+    field of that meaning, ``renamed[name]`` (a drop's sequence totals) or the same name
+    (NaN where it has none), shown under the batch's names and class."""
+    n = len(batch.status)
+    columns = []
+    for name in OUTPUT_FIELDS:
+        try:
+            columns.append(np.asarray(batch[renamed.get(name, name)], dtype=np.float64))
+        except KeyError:  # an output the batch has not: no row of the summary reads it
+            columns.append(np.full(n, np.nan))
+    view = SimpleNamespace(
+        status=batch.status,
+        flags=batch.flags,
+        out=np.stack(columns, axis=1) if n else np.empty((0, len(OUTPUT_FIELDS))),
+        law=batch.law,
+        friction=batch.friction,
+        law_range=batch.law_range,
+    )
+    return batch_html(view, title=type(batch).__name__, names=renamed)
+
+
+#: The inputs of each case of a batch, in the order a refusal names the first non-finite one.
+CASE_NAMES = ("angle", "vx", "vy", "spin", "mu")
+
+
+def case_refusals(
+    body: Rod | Sphere, cases: Mapping[str, np.ndarray], refused: np.ndarray
+) -> dict[int, str]:
+    """Why each case ``refused`` (indices) of a batch (``cases``: the columns of
+    :data:`CASE_NAMES`) is refused for its inputs, by index, as a batch of drops words it
+    (``drop_checks.case_problem``): the first non-finite input, else the first outside its
+    rule (``kernels.inputs.input_problem``, the rule the compiled core applies); a case whose
+    inputs break none is left out. The batch's gravity and rtol are checked before it runs
+    (ValueError), so allowed values stand in for them."""
+    why: dict[int, str] = {}
+    rod, reach = isinstance(body, Rod), contact_reach(body)
+    for i in np.asarray(refused, dtype=np.int64).tolist():
+        case = {name: float(cases[name][i]) for name in CASE_NAMES}
+        bad = next((n for n, v in case.items() if not math.isfinite(v)), None)
+        if bad is not None:
+            why[i] = f"{bad} = {case[bad]!r} is not finite"
+            continue
+        th, vx, vy, w, mu = case.values()
+        problem = input_problem(rod, th, vx, vy, w, reach, mu, 0.0, RTOL_MIN)
+        if problem != IN_OK:
+            why[i] = problem_text(problem, case[INPUT_RULES[problem][0]])
+    return why
+
+
 class BatchStatus:
     """``computed``, ``ok``, ``flagged`` and ``messages`` from the ``status`` (int, 0: computed)
     and ``flags`` (``ResultFlag`` bits) of each case, which the class provides."""
 
     status: np.ndarray
+    #: why each case refused for its inputs (ST_BAD_INPUT) is refused, by case index: the input
+    #: and its rule (``case_refusals``, ``drop_checks.case_problem``)
+    refusals: Mapping[int, str]
     if TYPE_CHECKING:  # each batch class has its own (a property, or a dataclass field)
 
         @property
@@ -69,5 +140,9 @@ class BatchStatus:
 
     @property
     def messages(self) -> list[str]:
-        """The status message of each case (``kernels.status.STATUS_MESSAGES``)."""
-        return [STATUS_MESSAGES.get(int(s), f"status {int(s)}") for s in self.status]
+        """The status message of each case (``kernels.status.STATUS_MESSAGES``); a case refused
+        for its inputs (ST_BAD_INPUT) names the input, its value and its rule (``refusals``)."""
+        texts = [STATUS_MESSAGES.get(int(s), f"status {int(s)}") for s in self.status]
+        for i, why in self.refusals.items():
+            texts[i] = f"invalid input: {why}"
+        return texts

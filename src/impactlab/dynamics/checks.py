@@ -12,6 +12,7 @@ from typing import Any
 from impactlab._validation import check_finite, check_flag
 from impactlab.bodies import Rod, Sphere, lever_arms
 from impactlab.contact import ContactModel
+from impactlab.contact.names import Law
 from impactlab.dynamics.input_checks import (
     check_angle,
     check_body,
@@ -29,7 +30,7 @@ from impactlab.dynamics.kernels.inputs import IN_OK, input_problem
 from impactlab.dynamics.kernels.layout import DEFAULT_RTOL, PARTIAL_SLIP_RTOL
 from impactlab.dynamics.models import contact_model
 from impactlab.friction import FrictionKind, FrictionModel, get_friction
-from impactlab.materials import G0, Material
+from impactlab.materials import G0, ContactPair, Material
 
 
 @dataclass(frozen=True)
@@ -112,6 +113,39 @@ def _plain_inputs(
     return th, vx, vy, w, m, g, r
 
 
+def check_brake_meyer(body: Rod | Sphere, flat: Material, law: Any, law_params: Any) -> None:
+    """ValueError, naming the material it comes from, for Brake's law (``law`` its name)
+    taking the Meyer index n of the pair's material that yields first (none in
+    ``law_params``) when n lies outside (2, 3): a Material allows n = 3, where the plastic term
+    of Brake's Eq. 24, weighted by 1 - sech((3 - n) x), vanishes and the loading force falls
+    back towards zero as the interference grows (the law refuses it when built; this says
+    whose n it is, before anything is built)."""
+    if not (isinstance(law, str) and law == Law.BRAKE):
+        return
+    if isinstance(law_params, Mapping) and "meyer_index" in law_params:
+        return  # the law's own check names the parameter given
+    weaker = ContactPair(body.material, flat).weaker
+    n = weaker.meyer_index
+    if not 2.0 < n < 3.0:
+        whose = "the flat" if weaker is flat else "the body's material"
+        raise ValueError(
+            f"meyer_index = {n!r} of {whose} {weaker.name!r} (the material that yields first, "
+            "whose index Brake's law takes) must lie in (2, 3) for Brake's Eq. 24: at n = 3 "
+            "its plastic term, weighted by 1 - sech((3 - n) x), vanishes; give the material a "
+            "meyer_index below 3, law_params={'meyer_index': ...}, or another law"
+        )
+
+
+def checked_model(
+    body: Rod | Sphere, flat: Material, law: Any, law_params: Mapping[str, Any] | None
+) -> ContactModel:
+    """The contact model of the checked body and flat (``models.contact_model``), after the
+    checks of a law's inputs that a material gives (:func:`check_brake_meyer`: the error names
+    the material)."""
+    check_brake_meyer(body, flat, law, law_params)
+    return contact_model(body, flat, law, law_params)
+
+
 def _is_partial_slip(friction: Any) -> bool:
     """True for the name of the partial-slip model (an unknown name: False, the checks below
     raise its error in their order)."""
@@ -148,7 +182,7 @@ def check_impact(
         return ImpactInputs(
             body=body,
             flat=flat,
-            model=contact_model(body, flat, law, law_params),
+            model=checked_model(body, flat, law, law_params),
             friction=get_friction(friction),
             mu=m,
             angle=th,
@@ -163,10 +197,11 @@ def check_impact(
     th = check_angle(angle, body)
     vx, vy = check_velocity(velocity)
     w = check_spin(check_finite("spin", spin, "rad/s"), contact_reach(body))
+    flat = check_flat(flat)
     return ImpactInputs(
         body=body,
-        flat=check_flat(flat),
-        model=contact_model(body, check_flat(flat), law, law_params),
+        flat=flat,
+        model=checked_model(body, flat, law, law_params),
         friction=get_friction(friction),
         mu=check_mu(mu),
         angle=th,
@@ -179,4 +214,4 @@ def check_impact(
     )
 
 
-__all__ = ["ImpactInputs", "check_impact"]
+__all__ = ["ImpactInputs", "check_brake_meyer", "check_impact", "checked_model"]

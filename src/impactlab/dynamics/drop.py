@@ -35,6 +35,7 @@ from impactlab.contact.rate import (
     rate_materials,
     self_consistent_factor,
 )
+from impactlab.dynamics.checks import check_brake_meyer
 from impactlab.dynamics.drop_body import BodyModel, body_model
 from impactlab.dynamics.drop_checks import (
     DROP_FRICTION,
@@ -275,7 +276,7 @@ def simulate_drop(
     law: str | ContactModel = "ghaednia",
     friction: str = "coulomb",
     mu: float = DEFAULT_MU,
-    angle: Any,
+    angle: Any = None,
     velocity: Any = None,
     spin: Any = 0.0,
     gravity: Any = True,
@@ -316,8 +317,8 @@ def simulate_drop(
     1e-5) or a failed integration (``DropError``); an ImplausibleInputWarning for an impact
     speed above 100 m/s.
     """
+    body = check_body(body)  # first: a sphere is refused before what a rod's drop needs
     velocity = velocity_from(velocity, speed, incidence)
-    body = check_body(body)
     bm = body_model(body)
     flat = check_flat(flat)
     fric, mu_v = check_friction(friction, mu)
@@ -366,6 +367,7 @@ def simulate_drop(
         return _run(bm, model, (th, vx, vy, w), (fid, mu_run, gstar, widths), g,
                     (*options, record), max_steps)  # fmt: skip
 
+    check_brake_meyer(bm.rigid, flat, law, law_params)
     model, factor = _rate_model(rate, law, bm.rigid, flat, law_params, run, vn0)
     r = run(model, record_history)
     if r.status != F.ST_OK:

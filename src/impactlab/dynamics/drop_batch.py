@@ -28,9 +28,11 @@ from impactlab.contact.ranges import delta_ratio, extrapolation_flags
 from impactlab.dynamics.batch_status import (
     INTEGER_FIELDS,
     BatchStatus,
+    batch_summary_html,
     flag_column,
     integer_series,
 )
+from impactlab.dynamics.checks import checked_model
 from impactlab.dynamics.derived import batch_derived
 from impactlab.dynamics.drop import DEFAULT_T_MAX
 from impactlab.dynamics.drop_body import body_model
@@ -59,7 +61,7 @@ from impactlab.dynamics.history import readonly_copy
 from impactlab.dynamics.input_checks import batch_velocity, check_flat, gravity_value
 from impactlab.dynamics.kernels import status as S
 from impactlab.dynamics.kernels.layout import MU_NEGLIGIBLE
-from impactlab.dynamics.models import body_params, contact_model, kernel_params, references_used
+from impactlab.dynamics.models import body_params, kernel_params, references_used
 from impactlab.dynamics.pint_fields import pint_unit
 from impactlab.dynamics.simulate_many import _batch_inputs
 from impactlab.friction import COULOMB, DEFAULT_MU, PARTIAL_SLIP
@@ -237,16 +239,6 @@ class DropBatchResult(BatchStatus):
         df["flags"] = integer_series(self.flags, self.computed)
         return df
 
-    @property
-    def messages(self) -> list[str]:
-        """The status message of each case (``kernels.status.STATUS_MESSAGES``); a case refused
-        for its inputs (ST_BAD_INPUT) names the input and its rule, or the smallest approach
-        speed the drop integrates (``drop_checks.case_problem``)."""
-        texts = super().messages
-        for i, why in self.refusals.items():
-            texts[i] = f"invalid input: {why}"
-        return texts
-
     def to_xarray(self) -> Any:
         """An ``xarray.Dataset`` over ``case``, as ``BatchResult.to_xarray``: the inputs and
         outputs (``PUBLIC_FIELDS``, ``initial_energy``, ``max_delta_ratio``; SI, ``units`` and
@@ -272,12 +264,15 @@ class DropBatchResult(BatchStatus):
         """DOIs of ``references``, in order, without repeats."""
         return doi_list(self.references)
 
+    def _repr_html_(self) -> str:  # BatchResult's notebook summary, the sequence totals' names
+        return batch_summary_html(self, schema.RENAMED_DROP_FIELDS)
+
 
 def simulate_drops(
     body: FlexibleRod | Rod,
     flat: Material = AISI_1010,
     *,
-    angle: Any,
+    angle: Any = None,
     vy: Any = None,
     vx: Any = None,
     spin: Any = 0.0,
@@ -291,14 +286,15 @@ def simulate_drops(
     t_max: Any = DEFAULT_T_MAX,
     speed: Any = None,
     incidence: Any = None,
+    velocity: Any = None,
 ) -> DropBatchResult:
     """Many drops of ``body`` (a FlexibleRod, or a rigid Rod: its rigid limit) on ``flat``, in
     parallel on all cores: each case as ``simulate_drop`` runs it, bit for bit.
 
     ``angle`` [rad, in (0, pi/2]], ``vx``, ``vy`` [m/s] of the centre of mass at first touch
-    (or instead ``speed`` [m/s] and ``incidence`` [rad]: vx = speed sin(incidence),
-    vy = -speed cos(incidence)), ``spin`` [rad/s] and ``mu`` are scalars or 1-D arrays,
-    broadcast against each other (the dimensional ones may carry units, as in
+    (or ``velocity=(vx, vy)``, or ``speed`` [m/s] and ``incidence`` [rad]: vx = speed
+    sin(incidence), vy = -speed cos(incidence)), ``spin`` [rad/s] and ``mu`` are scalars or
+    1-D arrays, broadcast against each other (the dimensional ones may carry units, as in
     ``simulate_batch``). law, friction (``"coulomb"``, ``"impulse_ratio"``, ``"mindlin"``,
     ``"partial_slip"``), law_params, gravity (True, False or [m/s^2]), rtol (default 1e-7),
     stop and t_max [s] as ``simulate_drop``, the same for every case; no rate-dependent flat
@@ -324,8 +320,8 @@ def simulate_drops(
     g = gravity_value(gravity)
     r = drop_rtol(rtol, fric)
     t_end, stop_mode = check_stop(stop, t_max)
-    model = contact_model(bm.rigid, flat, law, law_params)
-    vx, vy = batch_velocity(vx, vy, speed, incidence)
+    model = checked_model(bm.rigid, flat, law, law_params)
+    vx, vy = batch_velocity(vx, vy, speed, incidence, velocity)
     cols = _batch_inputs({"mu": mu, "angle": angle, "vx": vx, "vy": vy, "spin": spin})
     n = cols["angle"].shape[0]
     status, refusals = input_problems(bm.rigid, cols, g, r)

@@ -21,6 +21,7 @@ from impactlab.dynamics.derived import DerivedOutputs
 from impactlab.dynamics.drop_history import DROP_HISTORY_COLUMNS, DropHistory
 from impactlab.dynamics.drop_records import ContactRecord, DentRecord
 from impactlab.dynamics.history import DentMap
+from impactlab.dynamics.input_checks import check_dent_grid
 from impactlab.dynamics.pint_fields import pint_quantities
 from impactlab.dynamics.provenance import result_record
 from impactlab.dynamics.result_display import ResultDisplay
@@ -214,9 +215,11 @@ class DropResult(DerivedOutputs, ResultDisplay):
 
     def dent(self, *, nx: int = 241, ny: int = 121, margin: float = 0.15) -> DentMap:
         """The tip's predicted dent over all its contacts as a height map (SI;
-        ``dynamics.drop_dent``, the model of ``ImpactResult.dent``); needs the history."""
+        ``dynamics.drop_dent``, the model of ``ImpactResult.dent``); needs the history. nx, ny:
+        grid points (integers >= 3); margin: relative padding (>= 0)."""
         from impactlab.dynamics.drop_dent import drop_dent
 
+        nx, ny, margin = check_dent_grid(nx, ny, margin)
         return drop_dent(self, nx=nx, ny=ny, margin=margin)
 
     @property

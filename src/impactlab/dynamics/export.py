@@ -10,6 +10,7 @@ call these functions from one-line methods (``History.to_dataframe``, ``BatchRes
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
@@ -150,27 +151,31 @@ def batch_dataset(batch: Any) -> Any:
     return xr.Dataset(variables, coords={"case": np.arange(n)}, attrs=attrs)
 
 
-def _stats_row(name: str, values: np.ndarray) -> tuple[str, str, str, str, str]:
+def _stats_row(name: str, values: np.ndarray, shown: str) -> tuple[str, str, str, str, str]:
     d = display_unit(name, schema.unit(name))
     v = values[np.isfinite(values)] * d.scale
     if v.size == 0:
-        return name, "-", "-", "-", ""
+        return shown, "-", "-", "-", ""
     lo, mid, hi = (format_number(float(x)) for x in (v.min(), np.median(v), v.max()))
-    return name, lo, mid, hi, "" if d.unit == "-" else d.unit
+    return shown, lo, mid, hi, "" if d.unit == "-" else d.unit
 
 
-def batch_html(batch: Any) -> str:
+def batch_html(
+    batch: Any, title: str = "BatchResult", names: Mapping[str, str] | None = None
+) -> str:
     """The notebook summary of a ``BatchResult``: counts, then min / median / max of the main
-    outputs over the successful cases (display units)."""
+    outputs over the successful cases (display units). ``title`` heads it; ``names`` shows an
+    output under another name (a drop's sequence totals)."""
     ok = np.asarray(batch.status) == 0
     n, n_ok = int(ok.shape[0]), int(np.count_nonzero(ok))
     n_flagged = int(np.count_nonzero(np.asarray(batch.flags) != 0))
     out = np.asarray(batch.out)
-    rows = [_stats_row(o, out[ok, OUTPUT_FIELDS.index(o)]) for o in _SUMMARY]
+    shown = names or {}
+    rows = [_stats_row(o, out[ok, OUTPUT_FIELDS.index(o)], shown.get(o, o)) for o in _SUMMARY]
     caption = (
         f"{n} cases: {n_ok} ok, {n - n_ok} failed, {n_flagged} flagged; law {batch.law}, "
         f"friction {batch.friction}"
         + ("" if batch.law_range is None else f"; law range: {batch.law_range}")
     )
     header = ("output", "min", "median", "max", "unit")
-    return grid_html("BatchResult", header, rows, caption)
+    return grid_html(title, header, rows, caption)

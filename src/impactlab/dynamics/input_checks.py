@@ -253,12 +253,24 @@ def velocity_from(velocity: Any, speed: Any, incidence: Any) -> Any:
     return (v * math.sin(th), -v * math.cos(th))
 
 
-def batch_velocity(vx: Any, vy: Any, speed: Any, incidence: Any) -> tuple[Any, Any]:
-    """(vx, vy) of a batch: as given (vx None: 0), or from speed and incidence (scalars or
-    arrays, element by element). ValueError when both or neither are given."""
+def batch_velocity(
+    vx: Any, vy: Any, speed: Any, incidence: Any, velocity: Any = None
+) -> tuple[Any, Any]:
+    """(vx, vy) of a batch: as given (vx None: 0), the pair ``velocity`` = (vx, vy) (each a
+    scalar or an array, broadcast as vx= and vy= are), or from speed and incidence (scalars or
+    arrays, element by element). ValueError when more than one of these or none is given."""
+    if velocity is not None:
+        if vx is not None or vy is not None or speed is not None or incidence is not None:
+            given = [k for k, v in (("vx", vx), ("vy", vy), ("speed", speed)) if v is not None]
+            given += ["incidence"] if incidence is not None else []
+            raise ValueError(
+                f"give either velocity=(vx, vy), vx= and vy=, or speed= and incidence=, not "
+                f"velocity= with {'= and '.join(given)}= (they say the same thing)"
+            )
+        return _velocity_pair(velocity)
     if speed is None and incidence is None:
         if vy is None:
-            raise ValueError("vy is required (or speed= and incidence=)")
+            raise ValueError("vy is required (or velocity=(vx, vy), or speed= and incidence=)")
         return (0.0 if vx is None else vx), vy
     if vx is not None or vy is not None:
         raise ValueError("give either vx/vy or speed= and incidence=, not both")
@@ -268,6 +280,22 @@ def batch_velocity(vx: Any, vy: Any, speed: Any, incidence: Any) -> tuple[Any, A
     v = np.asarray(magnitude("speed", speed, "m/s"), dtype=np.float64)
     th = np.asarray(magnitude("incidence", incidence, "rad"), dtype=np.float64)
     return v * np.sin(th), -v * np.cos(th)
+
+
+def _velocity_pair(velocity: Any) -> tuple[Any, Any]:
+    """The two components of a batch's ``velocity=(vx, vy)``: a pair of scalars or arrays, or
+    one array or Quantity whose first axis has length 2; ValueError otherwise."""
+    if not isinstance(velocity, str | bytes | Mapping | set | frozenset):
+        try:
+            if len(velocity) == 2:
+                vx, vy = velocity
+                return vx, vy
+        except TypeError:  # no length: one number
+            pass
+    raise ValueError(
+        f"velocity must be a pair (vx, vy) in m/s, each a number or a 1-D array (or pass vx= "
+        f"and vy=), got {_velocity_given(velocity)}"
+    )
 
 
 #: How to build a body, for a class given where an instance is needed.
@@ -299,6 +327,16 @@ def check_body(body: Any) -> Rod | Sphere:
     return body
 
 
+def check_dent_grid(nx: Any, ny: Any, margin: Any) -> tuple[int, int, float]:
+    """The grid of a dent map: ``nx`` and ``ny`` as integers >= 3 (Python or numpy integers;
+    bools, floats and strings refused), ``margin`` a number >= 0 (relative padding);
+    ValueError naming the parameter otherwise."""
+    for name, n in (("nx", nx), ("ny", ny)):
+        if isinstance(n, bool | np.bool_) or not isinstance(n, int | np.integer) or n < 3:
+            raise ValueError(f"{name} must be an integer >= 3 (grid points), got {n!r}")
+    return int(nx), int(ny), check_nonnegative("margin", margin)
+
+
 def check_flat(flat: Any) -> Material:
     """The Material ``flat`` is or names (``bodies._checks.check_material``), else ValueError."""
     return flat if type(flat) is Material else check_material("flat", flat)
@@ -320,6 +358,7 @@ __all__ = [
     "check_angle",
     "check_body",
     "check_constant_angle",
+    "check_dent_grid",
     "check_flat",
     "check_mu",
     "check_partial_slip_rtol",

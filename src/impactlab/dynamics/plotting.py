@@ -19,6 +19,18 @@ from impactlab._mpl import pyplot
 from impactlab.dynamics.results import History, ImpactResult
 
 
+def _impact(result: Any, what: str) -> ImpactResult:
+    """``result`` if it is an ImpactResult; one-line ValueError naming its type otherwise (a
+    drop's ``DropResult`` has its contacts' forces per end, not one contact's)."""
+    if not isinstance(result, ImpactResult):
+        raise ValueError(
+            f"{what} takes an ImpactResult (simulate of a Rod or Sphere), got a "
+            f"{type(result).__name__}: plot_dent(result) draws its dent; its forces per end "
+            "are columns of result.history (t, normal_force_0, penetration_0, ...)"
+        )
+    return result
+
+
 def _history(result: ImpactResult) -> History:
     if result.history is None:
         raise ValueError("plots need the history: run simulate(..., history=True)")
@@ -40,7 +52,7 @@ def _title(result: ImpactResult) -> str:
 
 def plot_force_time(result: ImpactResult, ax: Any = None) -> Any:
     """Normal and tangential contact force [N] against time [ms]."""
-    h = _history(result)
+    h = _history(_impact(result, "plot_force_time"))
     fig, ax = _axes(ax)
     t = h.t * 1e3
     ax.plot(t, h.normal_force, label="normal force $F_n$")
@@ -55,7 +67,7 @@ def plot_force_time(result: ImpactResult, ax: Any = None) -> Any:
 
 def plot_force_penetration(result: ImpactResult, ax: Any = None) -> Any:
     """Normal force [N] against penetration [um], loading and unloading branches marked."""
-    h = _history(result)
+    h = _history(_impact(result, "plot_force_penetration"))
     fig, ax = _axes(ax)
     d = h.penetration * 1e6
     load = h.phase == 0.0
@@ -78,7 +90,7 @@ def plot_force_penetration(result: ImpactResult, ax: Any = None) -> Any:
 def plot_contact_path(result: ImpactResult, ax: Any = None, *, dent: bool = True) -> Any:
     """Contact point path on the flat: position along x [um] against penetration [um], with the
     centre-line profile of the predicted dent."""
-    h = _history(result)
+    h = _history(_impact(result, "plot_contact_path"))
     fig, ax = _axes(ax)
     ax.plot(h.contact_x * 1e6, -h.penetration * 1e6, "-", label="tip bottom (contact point)")
     stick = h.stick > 0.5
@@ -125,7 +137,9 @@ def save_figures(
     stem: str = "impact",
     formats: tuple[str, ...] = ("png", "pdf"),
 ) -> list[Path]:
-    """Save the force-time, force-penetration, contact-path and dent figures; returns paths."""
+    """Save the force-time, force-penetration, contact-path and dent figures; returns paths.
+    ValueError for a result other than an ImpactResult (a drop: ``plot_dent`` draws its dent)."""
+    _impact(result, "save_figures")
     plt = pyplot()
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)

@@ -25,6 +25,7 @@ from impactlab.contact.ranges import (
 from impactlab.dynamics.dent import dent_map
 from impactlab.dynamics.derived import DerivedOutputs
 from impactlab.dynamics.history import HISTORY_UNITS, DentMap, History, readonly_copy
+from impactlab.dynamics.input_checks import check_dent_grid
 from impactlab.dynamics.kernels.layout import HISTORY_FIELDS
 from impactlab.dynamics.pint_fields import pint_quantities
 from impactlab.dynamics.provenance import result_record
@@ -165,7 +166,7 @@ class ImpactResult(DerivedOutputs, ResultDisplay):
     def warnings(self) -> tuple[str, ...]:
         """One explanatory sentence per flag (``impactlab.flags.messages``); ``()`` if none."""
         how_far = extrapolation(self._law_id, self._law_params, self.delta_max)
-        status = range_status(self._law_id, self._law_params)
+        status = self.fitted_range_status
         reference = reference_name(self._law_id)
         return messages(self.flags, extrapolation=how_far, status=status, reference=reference)
 
@@ -181,6 +182,12 @@ class ImpactResult(DerivedOutputs, ResultDisplay):
         ``max_delta_ratio``; verified against FE, else its stand-in; inf: none), as
         ``DropResult.fitted_delta_ratio_max``."""
         return float(extrapolation(self._law_id, self._law_params, self.delta_max)[1])
+
+    @property
+    def fitted_range_status(self) -> str | None:
+        """How the law's range for the pair is known (``contact.ranges.range_status``: verified
+        against FE, or its stand-in; None: not known), as ``DropResult.fitted_range_status``."""
+        return range_status(self._law_id, self._law_params)
 
     def to_dict(self, *, include_history: bool = False) -> dict[str, Any]:
         """Scalar fields as a plain dict (with ``max_delta_ratio``, ``fitted_delta_ratio_max``,
@@ -198,7 +205,7 @@ class ImpactResult(DerivedOutputs, ResultDisplay):
             d[name] = list(v) if isinstance(v, tuple) else v
         d["max_delta_ratio"] = self.max_delta_ratio
         d["fitted_delta_ratio_max"] = self.fitted_delta_ratio_max
-        d["fitted_range_status"] = range_status(self._law_id, self._law_params)
+        d["fitted_range_status"] = self.fitted_range_status
         d["extrapolated"] = self.extrapolated
         d["law_range"] = self.law_range
         d["flags"] = int(self.flags)
@@ -214,8 +221,13 @@ class ImpactResult(DerivedOutputs, ResultDisplay):
     def to_pint(self, registry: Any = None) -> dict[str, Any]:
         """The scalar fields (and ``max_delta_ratio``) as pint Quantities in SI, e.g.
         ``r.to_pint()["delta_p"].to("um")``; ``registry``: your pint registry (default
-        ``impactlab.units.registry()``)."""
-        return pint_quantities(self, {**UNITS, "max_delta_ratio": "1"}, registry)
+        ``impactlab.units.registry()``). A sphere has no ``angle`` and ``angle_out`` (left
+        out, as by ``to_dict()``)."""
+        units = {**UNITS, "max_delta_ratio": "1"}
+        for name in ("angle", "angle_out"):
+            if math.isnan(getattr(self, name)):  # a sphere's
+                del units[name]
+        return pint_quantities(self, units, registry)
 
     @property
     def input(self) -> dict[str, Any] | None:
@@ -254,8 +266,10 @@ class ImpactResult(DerivedOutputs, ResultDisplay):
     def dent(self, *, nx: int = 241, ny: int = 121, margin: float = 0.15) -> DentMap:
         """The predicted permanent dent as a height map (model: docs/engine/index.md, "Dent").
 
-        nx, ny : grid points along and across the impact plane; margin : relative padding.
+        nx, ny : grid points along and across the impact plane (integers >= 3); margin :
+        relative padding (>= 0).
         """
+        nx, ny, margin = check_dent_grid(nx, ny, margin)
         if self.history is None or self._law_params is None:
             raise ValueError("dent() needs the history: run simulate(..., history=True)")
         h = self.history

@@ -13,6 +13,7 @@ about, goes through the full checks (``checks.check_impact``), with the same res
 from __future__ import annotations
 
 import math
+import os
 from collections.abc import Mapping
 from typing import Any, overload
 
@@ -125,8 +126,11 @@ def simulate(
     -------
     ImpactResult
         e, delta_p, sliding_length, duration, mean_force, histories, dent(), dois() and
-        ``flags``/``warnings``: an impact that gained energy or that gravity dominates (m g T
-        above a tenth of the normal impulse) is flagged, never refused nor plain success.
+        ``flags``/``warnings``: an impact that gained energy, or that gravity dominates (m g T
+        above a tenth of the normal impulse) and leaves the flat, is flagged, never plain
+        success; one that gravity brings to rest on the flat (a sphere or a vertical rod at
+        1e-9 m/s) is refused ("no separation within the step limit ... ends at rest on the
+        flat").
 
     ValueError names the parameter for a bad input; ``ImplausibleInputWarning`` (likely a unit
     mistake) for a speed of the centre of mass or contact point above 100 m/s.
@@ -313,11 +317,23 @@ def _run_one(x: ImpactInputs, history: bool) -> ImpactResult:
 
 def rerun(record: Mapping[str, Any], **changes: Any) -> ImpactResult | DropResult:
     """Run a recorded impact or drop again: ``record`` is a result's ``to_dict()`` (or its
-    ``input``, or the JSON of ``impactlab simulate --json`` or ``impactlab drop --json``), run
-    by the function it names (``simulate``, or ``simulate_drop`` for a drop of a rigid or
-    flexible rod); ``changes`` override its arguments (``rerun(r.to_dict(), mu=0.3)``; a new
-    ``velocity`` or ``speed`` and ``incidence`` replace the recorded velocity). ValueError when
-    the record is not one."""
+    ``input``, or the JSON of ``impactlab simulate --json`` or ``impactlab drop --json``, read
+    with ``json.load``), run by the function it names (``simulate``, or ``simulate_drop`` for a
+    drop of a rigid or flexible rod); ``changes`` override its arguments
+    (``rerun(r.to_dict(), mu=0.3)``; a new ``velocity`` or ``speed`` and ``incidence`` replace
+    the recorded velocity). ValueError when the record is not one, or is not a mapping (a file
+    name: ``rerun(json.load(open(path)))``; ``impactlab simulate --from FILE`` reads one)."""
+    if isinstance(record, str | os.PathLike):
+        raise ValueError(
+            f"record must be a result's to_dict() or its JSON read back, got the file name "
+            f"{os.fspath(record)!r}: load it first, rerun(json.load(open({os.fspath(record)!r})))"
+            ", or run 'impactlab simulate --from FILE'"
+        )
+    if not isinstance(record, Mapping):
+        raise ValueError(
+            "record must be a result's to_dict() or its JSON read back (a mapping), got "
+            f"{type(record).__name__}"
+        )
     args = from_record(record)
     if {"speed", "incidence"} & set(changes):
         args.pop("velocity", None)

@@ -17,6 +17,8 @@ from impactlab.contact.range_note import range_note
 from impactlab.contact.ranges import delta_ratio
 from impactlab.dynamics.batch import run_arrays
 from impactlab.dynamics.batch_result import BatchResult
+from impactlab.dynamics.batch_status import case_refusals
+from impactlab.dynamics.checks import checked_model
 from impactlab.dynamics.flex_simulate import FLEXIBLE_BATCH_ERROR
 from impactlab.dynamics.input_checks import (
     batch_velocity,
@@ -27,7 +29,8 @@ from impactlab.dynamics.input_checks import (
     warn_fast,
 )
 from impactlab.dynamics.kernels import layout as L
-from impactlab.dynamics.models import body_params, contact_model, references_used
+from impactlab.dynamics.kernels.status import ST_BAD_INPUT
+from impactlab.dynamics.models import body_params, references_used
 from impactlab.friction import DEFAULT_MU, get_friction
 from impactlab.materials import AISI_1010, Material
 
@@ -78,6 +81,7 @@ def simulate_batch(
     rtol: float | None = None,
     speed: Any = None,
     incidence: Any = None,
+    velocity: Any = None,
 ) -> BatchResult:
     """Many impacts of one body, law and friction model, in parallel on all cores.
 
@@ -85,26 +89,28 @@ def simulate_batch(
     (or ``constant_angle=True``) is refused, as by ``simulate``; one angle for every case is
     checked as ``simulate`` checks it], ``vx``, ``vy`` [m/s] and ``spin`` [rad/s] are scalars or
     1-D arrays, broadcast against each other; the dimensional ones may also be pint Quantities (any
-    registry) or strings with units, as in ``simulate``. ``vy`` (``vx`` default 0) or, instead,
+    registry) or strings with units, as in ``simulate``. ``vy`` (``vx`` default 0), or
+    ``velocity=(vx, vy)`` as ``simulate`` takes it (each a scalar or an array), or instead
     ``speed`` [m/s] and ``incidence`` [rad] (arrays too; vx = speed sin(incidence),
-    vy = -speed cos(incidence), ``checks.velocity_from``) are required. Invalid cases (NaN
-    input, an angle outside (0, pi/2], a receding contact point, the law's validity exceeded,
-    ...) are flagged in ``BatchResult.status`` and never stop the batch; a computed case that
-    gained energy or that gravity dominates is flagged in ``BatchResult.flags``. A speed above
-    100 m/s draws an ``ImplausibleInputWarning``.
+    vy = -speed cos(incidence), ``checks.velocity_from``) are required, one of the three.
+    Invalid cases (NaN input, an angle outside (0, pi/2], a receding contact point, the law's
+    validity exceeded, ...) are flagged in ``BatchResult.status`` (``messages``: a case refused
+    for its inputs names the input, its value and its rule) and never stop the batch; a
+    computed case that gained energy or that gravity dominates is flagged in
+    ``BatchResult.flags``. A speed above 100 m/s draws an ``ImplausibleInputWarning``.
     """
     if isinstance(body, FlexibleRod):
         raise ValueError(FLEXIBLE_BATCH_ERROR)
     body = check_body(body)
     flat = check_flat(flat)
     fric = get_friction(friction)
-    model = contact_model(body, flat, law, law_params)
+    model = checked_model(body, flat, law, law_params)
     if isinstance(body, Sphere):
         angle = check_angle(angle, body)  # pi/2; an angle given for a sphere is refused
         check_constant_angle(constant_angle, body)  # and constant_angle=True
     elif angle is None or np.ndim(getattr(angle, "magnitude", angle)) == 0:
         angle = check_angle(angle, body)  # one angle for every case: refused as by simulate
-    vx, vy = batch_velocity(vx, vy, speed, incidence)
+    vx, vy = batch_velocity(vx, vy, speed, incidence, velocity)
     x = _batch_inputs({"mu": mu, "angle": angle, "vx": vx, "vy": vy, "spin": spin})
     _refuse_degrees(x["angle"], isinstance(body, Sphere))
     out, status = run_arrays(
@@ -130,6 +136,7 @@ def simulate_batch(
             delta_ratio(model.law_id, model.params, out[:, L.OUTPUT_FIELDS.index("delta_max")])
         ),
         law_range=range_note(model.law_id, model.params),
+        refusals=case_refusals(body, x, np.flatnonzero(status == ST_BAD_INPUT)),
     )
 
 
