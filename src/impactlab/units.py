@@ -55,8 +55,21 @@ def has_unit(value: Any) -> bool:
 
 #: A leading number (sign, digits, decimal point, exponent) and what follows it.
 _LEADING_NUMBER = re.compile(r"\s*[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?(.*)")
-#: A number standing on its own (not an exponent such as the 2 of ``m^2``).
-_LONE_NUMBER = re.compile(r"(?:^|[\s(/])[+-]?\.?\d")
+#: A number not glued to a name or to another number (the 2 of ``m2`` is none).
+_NUMBER = re.compile(r"(?<![\w.])(?:\d+\.?\d*|\.\d+)")
+#: The same with its exponent (``1.41e-3``): the first number of a text that does not start
+#: with one (``"(2*3) m"``).
+_FIRST_NUMBER = re.compile(r"(?<![\w.])(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
+#: What precedes the exponent of a unit: the unit (or a bracket), then ``^`` or ``**`` and a
+#: sign (``m^2``, ``s**-1``); at the start of the text after the leading number, the same
+#: operator makes a power of that number (``2**2 m``).
+_POWER = re.compile(r"\S\s*(?:\^|\*\*)\s*[+-]?\s*$")
+#: Dashes that pint drops without a word (``"\u22120.3 m/s"`` would be +0.3 m/s): the minus
+#: sign, the figure, en and em dashes, the small and the full-width hyphen-minus.
+_DASHES = "\u2212\u2012\u2013\u2014\ufe63\uff0d"
+#: Such a dash right before a digit (or a decimal point and a digit) is a minus sign: the
+#: number's (``"\u22120.3 m/s"``), an exponent's (``"1.41e\u22123 m/s"``, ``"m^\u22122"``).
+_MINUS = re.compile(f"[{_DASHES}](?=\\.?\\d)")
 #: The 1 of a reciprocal unit (``1/s``, ``(1/s)``, a unit's name or a bracket after the
 #: slash): a unit, not a second number (``1/2`` is one).
 _RECIPROCAL = re.compile(r"(^|[\s(])1\s*/(?=\s*[A-Za-z(])")
@@ -69,26 +82,37 @@ def _angle_power(items: Any) -> float:
     return sum(e for u, e in items if u != "pi" and reg.Unit(u).dimensionless)
 
 
-def _one_number_one_unit(name: str, text: str, q: Any, unit: str) -> None:
-    """ValueError naming ``name`` unless ``text`` is one quantity: pint multiplies what stands
-    side by side, so ``"20 deg 3"`` would be 60 deg, ``"1.41 m/s 2"`` 2.82 m/s and
-    ``"20 deg deg"`` (deg^2, dimensionless as deg is) 0.35 deg. Refused: a second number after
-    the leading one (the 1 of a reciprocal unit, ``"6500 1/s"``, is none), and angle units
-    (dimensionless in pint) to another power than that of ``unit`` or 0 (1 for rad, deg and
-    rad/s, where rpm has none; 0 for a length or a speed)."""
+def _one_number(name: str, text: str, shown: str, unit: str) -> None:
+    """ValueError naming ``name`` unless ``text`` (the user's ``shown``) holds one number: pint
+    computes with numbers side by side or joined by arithmetic, so ``"20 deg 3"`` would be
+    60 deg, ``"1.41 m/s 2"`` and ``"2*1.41 m/s"`` 2.82 m/s, ``"1.41/2 m/s"`` 0.705 m/s and
+    ``"2**2 m"`` 4 m. The 1 of a reciprocal unit (``"6500 1/s"``) and the exponent of a unit
+    (``m^2``, ``s**-1``) are no second number."""
     lead = _LEADING_NUMBER.fullmatch(text)
-    rest = "" if lead is None else _RECIPROCAL.sub(r"\1/", lead.group(1))  # "6500 1/s" holds one
+    if lead is not None:
+        rest = lead.group(1)
+    else:  # "(2*3) m", "- 0.3 m/s": the first number, wherever it stands
+        first = _FIRST_NUMBER.search(text)
+        rest = text if first is None else f"{text[: first.start()]} {text[first.end() :]}"
+    rest = _RECIPROCAL.sub(r"\1/", rest)  # "6500 1/s" holds one number
     if _plain(unit) and rest.strip() == "1":  # "0.02 1": a pure number in the unit 1
         rest = ""
-    if _LONE_NUMBER.search(rest):
+    if any(not _POWER.search(rest[: m.start()]) for m in _NUMBER.finditer(rest)):
         raise ValueError(
-            f"{name}: {text!r} holds more than one number (pint would multiply them); "
+            f"{name}: {shown!r} holds more than one number (pint would compute with them); "
             f"{_write_one(unit)}"
         )
+
+
+def _angle_units(name: str, shown: str, q: Any, unit: str) -> None:
+    """ValueError naming ``name`` when the Quantity ``q`` (of the text ``shown``) has angle units
+    (dimensionless in pint) to another power than that of ``unit`` or 0 (1 for rad, deg and
+    rad/s, where rpm has none; 0 for a length or a speed): ``"20 deg deg"`` (deg^2,
+    dimensionless as deg is) would be 0.35 deg."""
     power = _angle_power(q.unit_items())
     if power not in (0, _angle_power(registry().Unit(unit)._units.items())):
         raise ValueError(
-            f"{name}: {text!r} has dimensionless units (angles such as deg, or percent) to the "
+            f"{name}: {shown!r} has dimensionless units (angles such as deg, or percent) to the "
             f"power {power:g}; "
             + (
                 "write one plain number, e.g. '0.4' (a fraction, not a percentage)"
@@ -96,6 +120,21 @@ def _one_number_one_unit(name: str, text: str, q: Any, unit: str) -> None:
                 else f"write one number and one unit of {unit}, e.g. '1.0 {unit}'"
             )
         )
+
+
+def _minus_signs(name: str, text: str, unit: str) -> str:
+    """``text`` with each dash that pint would drop (:data:`_DASHES`) written ``-`` where it is
+    a minus sign (right before a digit: ``"\u22120.3 m/s"``, ``"1.41e\u22123 m/s"``);
+    ValueError naming ``name`` for such a dash anywhere else (``"0.3 \u2013 m/s"``)."""
+    out = _MINUS.sub("-", text)
+    bad = next((c for c in out if c in _DASHES), None)
+    if bad is not None:
+        example = "-0.4" if _plain(unit) else f"-1.0 {unit}"
+        raise ValueError(
+            f"{name}: {text!r} holds a dash (U+{ord(bad):04X}) that is not a minus sign right "
+            f"before a number; write a negative value with '-', e.g. '{example}'"
+        )
+    return out
 
 
 def _plain(unit: str) -> bool:
@@ -128,22 +167,25 @@ def refuse_comma(name: str, text: str, unit: str) -> None:
 
 
 def _parse(name: str, text: str, unit: str) -> Any:
-    """``text`` as a Quantity of impactlab's registry (one number and its unit:
-    ``_one_number_one_unit``); ValueError naming ``name``."""
-    text = text.strip()
-    if not text:
+    """``text`` as a Quantity of impactlab's registry (its minus signs read, :func:`_minus_signs`;
+    one number, :func:`_one_number`; angle units as in ``unit``, :func:`_angle_units`; no
+    comma, no temperature); ValueError naming ``name``."""
+    shown = text.strip()
+    if not shown:
         raise ValueError(f"{name} is empty; {_write_one(unit)}")
+    text = _minus_signs(name, shown, unit)
     refuse_comma(name, text, unit)
+    _one_number(name, text, shown, unit)
     try:
         q: Any = registry().Quantity(text)
     except Exception as exc:  # pint's parser raises several unrelated types
         if type(exc).__name__ == "OffsetUnitCalculusError":  # "20 degC": a temperature
             raise ValueError(
-                f"{name}: {text!r} is a temperature (an offset unit such as degC or degF); "
+                f"{name}: {shown!r} is a temperature (an offset unit such as degC or degF); "
                 f"expected a quantity in {unit}, e.g. '20 deg' for an angle"
             ) from None
-        raise ValueError(f"{name}: cannot parse {text!r} as a quantity ({exc})") from None
-    _one_number_one_unit(name, text, q, unit)
+        raise ValueError(f"{name}: cannot parse {shown!r} as a quantity ({exc})") from None
+    _angle_units(name, shown, q, unit)
     return q
 
 
@@ -208,10 +250,10 @@ def magnitude(name: str, value: Any, unit: str) -> Any:
         if q.unitless and _plain(unit):  # a pure number asked for: "0.4"
             return float(q.magnitude)
         if q.unitless:
-            lead = _LEADING_NUMBER.fullmatch(value)
+            lead = _LEADING_NUMBER.fullmatch(_MINUS.sub("-", value))
             bare = lead is not None and not lead.group(1).strip()
             shown = "deg" if unit == "rad" else unit  # an angle is written in degrees
-            example = f"{value.strip()} {shown}" if bare else f"1.0 {shown}"
+            example = f"{_MINUS.sub('-', value).strip()} {shown}" if bare else f"1.0 {shown}"
             what = "has no unit" if bare else f"is a pure number ({q:~})"
             raise ValueError(
                 f"{name}: the string {value!r} {what}; pass a number in {unit} or a string "
@@ -235,7 +277,7 @@ def to_si(value: Any, unit: str, *, name: str = "value") -> float:
         q = _parse(name, str(value), unit)
         _check_finite(name, q, value)
         if q.unitless:
-            lead = _LEADING_NUMBER.fullmatch(str(value))
+            lead = _LEADING_NUMBER.fullmatch(_MINUS.sub("-", str(value)))
             if not _plain(unit) and (lead is None or lead.group(1).strip()):
                 raise ValueError(
                     f"{name}: {value!r} is a pure number ({q:~}); give a number in {unit} or "

@@ -1,7 +1,8 @@
 """The ``impactlab`` command line. Each command lives in its own module with a ``register(app)``.
 
 User errors (ValueError, FileNotFoundError, ...) exit with status 2 and one line naming the bad
-input, never a traceback. Set ``IMPACTLAB_DEBUG=1`` to see the traceback.
+input, never a traceback. Set ``IMPACTLAB_DEBUG=1`` to see the traceback. Ctrl-C exits with
+status 130 and one line (``interrupted``, or the command's own: ``sweep run``, ``calibrate``).
 """
 
 from __future__ import annotations
@@ -17,6 +18,7 @@ from pathlib import Path
 from typing import Any, TextIO
 
 import typer
+from typer.core import TyperGroup
 
 from impactlab._version import __version__
 from impactlab.cli import (
@@ -34,7 +36,31 @@ from impactlab.cli import (
 )
 from impactlab.cli._common import UserError
 
+
+class _Commands(TyperGroup):
+    """impactlab's commands: Ctrl-C during one prints one line on stderr and exits 130 (typer
+    itself would exit 130 without a word)."""
+
+    def invoke(self, ctx: Any) -> Any:
+        try:
+            return super().invoke(ctx)
+        except KeyboardInterrupt as exc:
+            interrupted(exc)
+            raise typer.Exit(130) from None
+
+
+def interrupted(exc: KeyboardInterrupt) -> None:
+    """Say on stderr that a command was interrupted: ``interrupted``, unless ``exc`` is a
+    sweep's (``SweepInterrupted``), which said so already (how many chunks are stored). A
+    command that prints its own line (``calibrate``) exits 130 itself, without reaching here."""
+    runner = sys.modules.get("impactlab.sweep.runner")  # not loaded: no sweep ran
+    if runner is not None and isinstance(exc, runner.SweepInterrupted):
+        return
+    print("interrupted", file=sys.stderr, flush=True)
+
+
 app = typer.Typer(
+    cls=_Commands,
     name="impactlab",
     help="Elastic-plastic oblique impacts with friction: simulate, invert, analyze, sweep, "
     "reproduce the paper.",
@@ -172,8 +198,8 @@ def main() -> None:
             raise
         print(f"error: {exc}", file=sys.stderr)
         sys.exit(2)
-    except KeyboardInterrupt:
-        print("interrupted", file=sys.stderr)
+    except KeyboardInterrupt as exc:  # outside a command (typer's set-up): no line yet
+        interrupted(exc)
         sys.exit(130)
     except Exception as exc:  # usage errors of typer's (vendored) click, and the like
         message = getattr(exc, "format_message", None)

@@ -151,7 +151,9 @@ def drop_cmd(
         help="Tip radius R of the rounded ends, e.g. '8.8 mm' (bare number: m; default 8.8 mm).",
     ),
     mass: str = typer.Option(
-        None, "--mass", help="Rod mass, e.g. '0.46 kg' (default: the paper's 0.4607 kg)."
+        None,
+        "--mass",
+        help="Rod mass, e.g. '0.46 kg' (bare number: kg; default the paper's 0.4607 kg).",
     ),
     diameter: str = typer.Option(
         None,
@@ -169,14 +171,19 @@ def drop_cmd(
         "--flat",
         help="Flat material (library name, properties, TOML file; default aisi-1010).",
     ),
-    mu: float = typer.Option(DEFAULT_MU, "--mu", help="Friction coefficient, >= 0 (default 0)."),
+    mu: float = typer.Option(
+        DEFAULT_MU, "--mu", show_default=False, help="Friction coefficient, >= 0 (default 0)."
+    ),
     friction: str = typer.Option(
         "coulomb",
         "--friction",
+        show_default=False,
         help="Friction model: impulse_ratio, coulomb (default), mindlin or partial_slip.",
     ),
-    law: str = typer.Option("ghaednia", "--law", help="Contact law (default ghaednia)."),
-    rate: str = typer.Option("none", "--rate", help=rate_help()),
+    law: str = typer.Option(
+        "ghaednia", "--law", show_default=False, help="Contact law (default ghaednia)."
+    ),
+    rate: str = typer.Option("none", "--rate", show_default=False, help=rate_help()),
     rigid: bool = typer.Option(False, "--rigid", help="The rigid rod (no modes) instead."),
     inertia: str = typer.Option(
         None,

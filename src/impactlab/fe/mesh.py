@@ -10,8 +10,14 @@ at every contact radius from microns to millimetres (a self-similar mesh). Meshe
 
 from __future__ import annotations
 
+import inspect
 import math
+import signal
+import threading
+from collections.abc import Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -157,7 +163,31 @@ def build_mesh(spec: MeshSpec) -> Mesh:
             "impactlab.fe needs the gmsh Python package: pip install 'impactlab[fe]' "
             f"(or pip install gmsh); import failed: {exc}"
         ) from None
-    gmsh.initialize(readConfigFiles=False)
+    with _sigint_kept():
+        return _build(gmsh, spec)
+
+
+@contextmanager
+def _sigint_kept() -> Iterator[None]:
+    """Keep Python's Ctrl-C handler as it was around gmsh's life: ``gmsh.initialize`` sets
+    SIGINT to the system default (4.15: unless ``interruptible=False``) and ``finalize`` does
+    not restore it, after which a Ctrl-C would end the interpreter instead of raising
+    KeyboardInterrupt. Only the main thread can set a handler: elsewhere nothing is put back."""
+    main = threading.current_thread() is threading.main_thread()
+    handler = signal.getsignal(signal.SIGINT) if main else None
+    try:
+        yield
+    finally:
+        if handler is not None and signal.getsignal(signal.SIGINT) is not handler:
+            signal.signal(signal.SIGINT, handler)
+
+
+def _build(gmsh: Any, spec: MeshSpec) -> Mesh:
+    """:func:`build_mesh` with gmsh imported."""
+    if "interruptible" in inspect.signature(gmsh.initialize).parameters:
+        gmsh.initialize(readConfigFiles=False, interruptible=False)
+    else:  # a gmsh without the keyword: _sigint_kept puts the handler back
+        gmsh.initialize(readConfigFiles=False)
     try:
         gmsh.option.setNumber("General.Terminal", 0)
         gmsh.option.setNumber("General.NumThreads", 1)

@@ -1,0 +1,115 @@
+"""Ctrl-C during a command: one line on stderr and exit status 130. ``interrupted`` for most
+commands; ``sweep run`` and ``calibrate`` say more in their own line, and nothing is added.
+
+The signal is sent when the command says it has started (a line it prints, read by the test) or
+by the command itself at a named stage (the sweep's test hook): no test depends on timing."""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+from pathlib import Path
+
+import pytest
+
+from impactlab.cli import interrupted, main
+from impactlab.sweep.hooks import KILL_AT, KILL_SIGNAL
+from impactlab.sweep.runner import SweepInterrupted
+
+#: ``impactlab drop`` in a child process whose simulation says "started" and then waits for the
+#: signal (the handler Python installs at start: a child of a background job inherits SIGINT
+#: ignored).
+_WAITING_DROP = textwrap.dedent("""
+    import signal, sys, time
+    signal.signal(signal.SIGINT, signal.default_int_handler)
+    import impactlab.cli.drop
+    from impactlab.cli import main
+
+    def wait(*args, **kwargs):
+        print("started", flush=True)
+        while True:
+            time.sleep(0.05)
+
+    impactlab.cli.drop.simulate_drop = wait
+    sys.argv = ["impactlab", "drop", "--angle", "20 deg", "--vy", "-1.41 m/s"]
+    main()
+""")
+
+#: ``impactlab ARGS`` (from argv) in a child process with Python's Ctrl-C handler.
+_MAIN = textwrap.dedent("""
+    import signal, sys
+    signal.signal(signal.SIGINT, signal.default_int_handler)
+    from impactlab.cli import main
+    sys.argv = ["impactlab", *sys.argv[1:]]
+    main()
+""")
+
+
+def _env() -> dict[str, str]:
+    env = dict(os.environ, MPLBACKEND="Agg")
+    env.pop("IMPACTLAB_DEBUG", None)
+    return env
+
+
+def test_ctrl_c_during_a_command_prints_interrupted_and_exits_130():
+    proc = subprocess.Popen(
+        [sys.executable, "-c", _WAITING_DROP],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        env=_env(),
+    )
+    try:
+        assert proc.stdout is not None
+        assert proc.stdout.readline() == "started\n"  # blocks until the command runs
+        proc.send_signal(signal.SIGINT)
+        out, err = proc.communicate(timeout=600)  # stops a hung child only
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+    assert (proc.returncode, out, err) == (130, "", "interrupted\n")
+
+
+def test_ctrl_c_during_a_sweep_prints_the_sweeps_line_only(tmp_path: Path):
+    study = tmp_path / "s.toml"
+    study.write_text(
+        "[study]\nchunk_size = 2\n[fixed]\nvy = '-1.41 m/s'\nmu = 0.2\n"
+        "[grid]\nangle = ['20 deg', '30 deg', '45 deg', '60 deg']\n"
+    )
+    store = tmp_path / "s.zarr"
+    env = _env() | {KILL_AT: "chunk:0:done", KILL_SIGNAL: "SIGINT"}
+    args = ["sweep", "run", str(study), "--out", str(store)]
+    r = subprocess.run(
+        [sys.executable, "-c", _MAIN, *args], capture_output=True, text=True, env=env, timeout=600
+    )
+    lines = r.stderr.splitlines()
+    assert r.returncode == 130, r.stderr
+    assert [x for x in lines if x.startswith("interrupted")] == [
+        f"interrupted: 1 of 2 chunks stored in {store}; run the same command again to continue"
+    ]
+
+
+def test_ctrl_c_during_calibrate_prints_its_own_line_only(tmp_path, monkeypatch, capsys):
+    def stop(**kwargs):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr("impactlab.calibrate.calibrate", stop)
+    data = tmp_path / "drops.csv"
+    args = ["calibrate", str(data), "-p", "mu=uniform(0, 0.6)", "--quiet"]
+    monkeypatch.setattr(sys, "argv", ["impactlab", *args])
+    with pytest.raises(SystemExit) as exc:
+        main()
+    assert exc.value.code == 130
+    assert capsys.readouterr().err == (
+        "interrupted (nothing was saved: give --out DIR to resume later)\n"
+    )
+
+
+def test_the_line_of_an_interrupt(capsys):
+    interrupted(KeyboardInterrupt())
+    assert capsys.readouterr().err == "interrupted\n"
+    interrupted(SweepInterrupted())  # the sweep printed its own line
+    assert capsys.readouterr().err == ""
