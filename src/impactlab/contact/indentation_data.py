@@ -44,8 +44,8 @@ FORMAT_VERSION = 1
 
 
 def _vector(name: str, value: Any, unit: str = "") -> np.ndarray:
-    """``value`` as a read-only float64 vector of finite numbers. A pint Quantity is converted
-    to ``unit`` (dimensionless without one); ValueError naming ``name`` otherwise."""
+    """``value`` as a read-only float64 vector (1-D) of finite numbers. A pint Quantity is
+    converted to ``unit`` (dimensionless without one); ValueError naming ``name`` otherwise."""
     if is_quantity(value):
         try:
             value = magnitude(name, value, unit or "dimensionless")
@@ -55,9 +55,14 @@ def _vector(name: str, value: Any, unit: str = "") -> np.ndarray:
     try:
         if isinstance(value, str | bytes):
             raise ValueError
-        a = np.array(value, dtype=np.float64).ravel()
+        a = np.array(value, dtype=np.float64)
     except (TypeError, ValueError):
         raise ValueError(f"{name} must be an array of numbers, got {value!r}") from None
+    if a.ndim != 1:
+        raise ValueError(
+            f"{name} must be 1-D (one value per point), got an array of shape {a.shape}"
+            + (": pass one column, e.g. table[:, 0]" if a.ndim == 2 else "")
+        )
     bad = ~np.isfinite(a)
     if bad.any():
         i = int(np.flatnonzero(bad)[0])

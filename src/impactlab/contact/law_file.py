@@ -8,7 +8,7 @@ A law file is TOML (SI numbers, or strings with units)::
     source = "lab notebook 12, p. 40"      # optional
     body_material = "AISI-201"             # as for --body-material: a name, values or a file
     flat_material = "AISI-1010"
-    radius = "8.8 mm"                      # the indenter's radius of the data
+    radius = "8.8 mm"                      # the indenter's radius of the data (bare: m)
     loading = "loading.csv"                # columns delta [m], F [N]; one header line
     unloading = "unloading.csv"            # columns delta_max [m], delta_r [m]
 

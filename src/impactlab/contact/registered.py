@@ -32,9 +32,15 @@ from typing import Any
 
 import numpy as np
 
-from impactlab._validation import check_positive, warn_implausible
+from impactlab._validation import check_finite, check_positive, warn_implausible
 from impactlab.contact._common import jg_critical
 from impactlab.contact.indentation_data import IndentationCurves, curves_from_record
+from impactlab.contact.table_input import (
+    HERTZ_TOLERANCE,
+    PLAUSIBLE_RADIUS,
+    hertz_offset,
+    radius_hint,
+)
 from impactlab.contact.tabulated import Tabulated, interpolation_error
 from impactlab.materials import ContactPair
 
@@ -47,10 +53,6 @@ DEFAULT_POINTS = 64
 CHECKS_PER_INTERVAL = 7
 #: The format of a registered law's record.
 RECORD_FORMAT = "impactlab registered law"
-#: Plausible sphere radius [m] of a sampled law; outside it an ImplausibleInputWarning (most
-#: likely a unit mistake). The bodies' bound (``impactlab.bodies._checks.PLAUSIBLE_RADIUS``),
-#: repeated: the contact layer does not import the bodies.
-PLAUSIBLE_RADIUS = (1e-6, 0.5)
 
 
 def check_law_name(name: Any) -> str:
@@ -164,15 +166,34 @@ def _values(what: str, fn: Callable[[float], Any], x: np.ndarray) -> np.ndarray:
     return out
 
 
+def _check_switch(
+    name: str, pair: ContactPair, radius: float, d0: float, f0: float, default: bool
+) -> None:
+    """ValueError unless the callable's force ``f0`` [N] at the switch ``d0`` [m], where the
+    sampled law leaves Hertz, lies within ``HERTZ_TOLERANCE`` of Hertz's (a force <= 0 is left
+    to the table's checks, which name it)."""
+    hertz, off = hertz_offset(pair, radius, d0, f0)
+    if not f0 > 0.0 or abs(off) <= HERTZ_TOLERANCE:
+        return
+    which = ", by default the pair's Jackson-Green delta_c" if default else ""
+    raise ValueError(
+        f"law {name!r}: F(switch_interference = {d0:.4g} m{which}) is {f0:.4g} N, "
+        f"{100 * off:+.1f} % from Hertz's {hertz:.4g} N for this pair and radius = "
+        f"{radius:.4g} m (the law is Hertz up to the switch: within "
+        f"{100 * HERTZ_TOLERANCE:g} % needed): give switch_interference=<where F leaves Hertz>"
+        + radius_hint(off, radius)
+    )
+
+
 def sample_law(
     name: str,
     loading: Callable[[float], Any],
     unloading: Callable[[float], Any],
     pair: ContactPair,
-    radius: float,
-    delta_max: float,
+    radius: Any,
+    delta_max: Any,
     *,
-    switch_interference: float | None = None,
+    switch_interference: Any = None,
     points: int = DEFAULT_POINTS,
     tolerance: float = DEFAULT_TOLERANCE,
     title: str = "",
@@ -182,7 +203,8 @@ def sample_law(
     after loading to delta_max [m]) of ``pair`` and a sphere of ``radius`` [m], sampled on
     ``points`` interferences from ``switch_interference`` [m] (default: the pair's Jackson-Green
     delta_c; Hertz below it, and ``loading`` must agree with Hertz there within 5 %) to
-    ``delta_max`` [m]. ValueError where the law built from the samples departs from the
+    ``delta_max`` [m] (the lengths in SI, or strings with units or pint Quantities, as every
+    length of the Python API). ValueError where the law built from the samples departs from the
     callables by more than ``tolerance`` (relative in force, absolute in delta_r/delta_max)
     anywhere on the check grid (the samples and ``CHECKS_PER_INTERVAL`` points between each
     two)."""
@@ -204,26 +226,27 @@ def sample_law(
             f"the units (impactlab takes SI: a bare number is in m{mm})"
         )
     dc, _fc = jg_critical(pair.E_star, radius, pair.yield_strength, pair.nu)
-    d0 = dc if switch_interference is None else float(switch_interference)
-    if not (math.isfinite(d0) and d0 > 0.0):
-        raise ValueError(f"switch_interference must be > 0 m, got {d0!r}")
-    if not (isinstance(delta_max, float | int) and math.isfinite(delta_max) and delta_max > d0):
+    default = switch_interference is None
+    d0 = dc if default else check_positive("switch_interference", switch_interference, "m")
+    top = check_finite("delta_max", delta_max, "m")
+    if not top > d0:
         limit = (
             f"the pair's delta_c at radius = {radius:g} m (Jackson & Green 2005)"
-            if switch_interference is None
+            if default
             else "switch_interference"
         )
-        got = float(delta_max) if isinstance(delta_max, float | int) else delta_max
         raise ValueError(
             f"delta_max must be a number of m above the elastic limit, {limit}: {d0:.4g} m; "
-            f"got {got!r}"
+            f"got {top!r}"
         )
-    grid = np.geomspace(d0, float(delta_max), points)
+    grid = np.geomspace(d0, top, points)
+    forces = _values("loading", loading, grid)
+    _check_switch(name, pair, radius, d0, float(forces[0]), default)
     curves = IndentationCurves.from_arrays(
         pair,
         radius,
         grid,
-        _values("loading", loading, grid),
+        forces,
         grid,
         _values("unloading", unloading, grid),
         name=name,

@@ -12,7 +12,7 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 from typing import Any
 
-from impactlab._validation import did_you_mean
+from impactlab._validation import check_positive, did_you_mean
 from impactlab.contact.base import ContactLaw
 from impactlab.contact.brake import Brake
 from impactlab.contact.ghaednia import Ghaednia
@@ -115,14 +115,14 @@ def register_law(
     loading: Callable[[float], Any] | None = None,
     unloading: Callable[[float], Any] | None = None,
     pair: ContactPair | None = None,
-    radius: float | None = None,
-    delta_max: float | None = None,
-    switch_interference: float | None = None,
+    radius: Any = None,
+    delta_max: Any = None,
+    switch_interference: Any = None,
     points: int = DEFAULT_POINTS,
     tolerance: float = DEFAULT_TOLERANCE,
     title: str = "",
     source: str = "",
-    elastic_limit: float | None = None,
+    elastic_limit: Any = None,
 ) -> RegisteredLaw:
     """Register a contact law of one's own under ``name``; afterwards ``name`` works wherever
     a law is asked for (``simulate``, ``simulate_batch``, ``simulate_drop``, sweeps and study
@@ -138,10 +138,15 @@ def register_law(
     name already registered with other data, bad tables or callables (naming the value).
     ``switch_interference`` [m]: where the sampled law leaves Hertz (default: the pair's
     Jackson-Green delta_c); ``elastic_limit`` is its name before 0.3 (a DeprecationWarning;
-    ``IndentationCurves.elastic_limit`` is the same point as delta/delta_c).
+    ``IndentationCurves.elastic_limit`` is the same point as delta/delta_c). The lengths
+    (``radius``, ``delta_max``, ``switch_interference``) are numbers in m, strings with units
+    (``"300 um"``) or pint Quantities, as every length of the Python API.
     """
     if elastic_limit is not None:
         warn_renamed("elastic_limit", "switch_interference", "register_law keyword")
+        elastic_limit = check_positive("elastic_limit", elastic_limit, "m")
+        if switch_interference is not None:
+            switch_interference = check_positive("switch_interference", switch_interference, "m")
         if switch_interference is not None and switch_interference != elastic_limit:
             raise ValueError(
                 f"switch_interference ({switch_interference!r} m) and its former name "

@@ -122,8 +122,7 @@ def check_loading(pair: ContactPair, R: float, d: np.ndarray, f: np.ndarray, row
             )
         )
     d0, f0 = float(d[0]), float(f[0])
-    hertz = 4.0 / 3.0 * pair.E_star * math.sqrt(R) * d0**1.5
-    off = f0 / hertz - 1.0
+    hertz, off = hertz_offset(pair, R, d0, f0)
     if not abs(off) <= HERTZ_TOLERANCE:
         raise ValueError(
             rows.at(
@@ -131,9 +130,46 @@ def check_loading(pair: ContactPair, R: float, d: np.ndarray, f: np.ndarray, row
                 f"{F} at the first loading point ({D} = {d0:.4g} m) is "
                 f"{f0:.4g} N, {100 * off:+.1f} % from Hertz's {hertz:.4g} N "
                 "for this pair and radius: the data must start in the "
-                f"elastic range (within {100 * HERTZ_TOLERANCE:g} %)",
+                f"elastic range (within {100 * HERTZ_TOLERANCE:g} %)" + radius_hint(off, R),
             )
         )
+
+
+#: Plausible sphere radius [m] (``impactlab.bodies._checks.PLAUSIBLE_RADIUS``, repeated: the
+#: contact layer does not import the bodies).
+PLAUSIBLE_RADIUS = (1e-6, 0.5)
+#: A force this many times Hertz's at the first loading point, or this many times smaller,
+#: is most likely a unit mistake (of the radius, or of the tables) rather than data.
+UNIT_MISMATCH = 3.0
+
+
+def hertz_offset(pair: ContactPair, R: float, d0: float, f0: float) -> tuple[float, float]:
+    """(Hertz's force [N] at ``d0`` [m] for ``pair`` and a sphere of radius ``R`` [m], and
+    ``f0`` [N] relative to it minus 1)."""
+    hertz = 4.0 / 3.0 * pair.E_star * math.sqrt(R) * d0**1.5
+    return hertz, f0 / hertz - 1.0
+
+
+def radius_hint(off: float, R: float) -> str:
+    """A hint that a unit is wrong where the force is off Hertz's by more than a factor
+    ``UNIT_MISMATCH`` (``off``: relative difference): the radius in mm or um where that puts
+    the force near Hertz's (Hertz's force grows as sqrt(R)), else every unit; empty when the
+    force is nearer."""
+    ratio = 1.0 + off
+    if not ratio > 0.0 or 1.0 / UNIT_MISMATCH <= ratio <= UNIT_MISMATCH:
+        return ""
+    factor = f"; a factor {max(ratio, 1.0 / ratio):.3g} from Hertz's is most likely a unit mistake"
+    for unit, size in (("mm", 1e-3), ("um", 1e-6)):
+        fits = ratio / math.sqrt(size)
+        if 1.0 / 1.5 <= fits <= 1.5 and PLAUSIBLE_RADIUS[0] <= R * size <= PLAUSIBLE_RADIUS[1]:
+            return (
+                f"{factor}: radius = {R:.4g} m is in metres (a bare number is metres); with "
+                f'radius = "{R:.4g} {unit}" the force is {100 * (fits - 1.0):+.1f} % from Hertz\'s'
+            )
+    return (
+        f"{factor}: check radius = {R:.4g} m (a bare number is metres), and that the "
+        "interferences are in m and the forces in N"
+    )
 
 
 def check_unloading(
@@ -235,7 +271,7 @@ def read_table(path: Path, where: str, names: str) -> tuple[np.ndarray, np.ndarr
         if len(cells) != 2:
             raise ValueError(
                 f"{where} line {number} has {len(cells)} column(s), must have 2 columns "
-                f"({names}); is the file truncated?"
+                f"({names}); " + _separator_hint(content)
             )
         x, y = (_number(c) for c in cells)
         if x is None or y is None or not (math.isfinite(x) and math.isfinite(y)):
@@ -247,6 +283,14 @@ def read_table(path: Path, where: str, names: str) -> tuple[np.ndarray, np.ndarr
         raise ValueError(f"{where}: no data rows after the header line (expected {names})")
     table = np.array(rows, dtype=np.float64)
     return table[:, 0], table[:, 1], np.array(numbers)
+
+
+def _separator_hint(content: str) -> str:
+    """Why a row may not have 2 comma-separated columns: another separator, or a cut file."""
+    for sep, what in ((";", "';'"), ("\t", "a tab")):
+        if sep in content:
+            return f"the line holds {what}: the file must be comma-separated"
+    return "is the file truncated?"
 
 
 def _number(text: str) -> float | None:
@@ -267,9 +311,13 @@ __all__ = [
     "HERTZ_TOLERANCE",
     "MIN_LOADING_POINTS",
     "MIN_RESIDUAL_POINTS",
+    "PLAUSIBLE_RADIUS",
+    "UNIT_MISMATCH",
     "Rows",
     "check_loading",
     "check_unloading",
+    "hertz_offset",
+    "radius_hint",
     "read_table",
     "read_two_columns",
     "two",

@@ -38,9 +38,11 @@ from impactlab.friction import BATCH_FRICTION_IDS, FRICTION_IDS, PARTIAL_SLIP, P
 __all__ = [
     "BATCH_FRICTION_IDS",
     "FRICTION_IDS",
+    "KEPT_WHEN_FAILED",
     "OUTPUT_FIELDS",
     "REGIME_NAMES",
     "STATUS_MESSAGES",
+    "blank_failed",
     "run_arrays",
 ]
 
@@ -89,7 +91,8 @@ def run_arrays(
     cases or per case; inf (default): none is brittle.
 
     Returns ``(out, status)``: out (N, len(OUTPUT_FIELDS)) float64, status (N,) int32
-    (0 = ok; ``STATUS_MESSAGES``). The ``regime`` column holds codes (``REGIME_NAMES``); the
+    (0 = ok; ``STATUS_MESSAGES``; a failed case's outputs are NaN but ``vn_in``, ``vt_in``:
+    ``blank_failed``). The ``regime`` column holds codes (``REGIME_NAMES``); the
     ``flags`` column the ``ResultFlag`` bits, LAW_EXTRAPOLATED added here from each case's
     delta_max / delta_ref (the law's own reference) and the law's range
     (``impactlab.contact.ranges``: verified against FE, else a stand-in), and BEYOND_TIP,
@@ -164,7 +167,24 @@ def run_arrays(
         )
         _mark_law_flags(lid, lp, out, brittle_limit)
         _mark_reach(bp, init, out)
+    blank_failed(out, status)
     return out, status
+
+
+#: The outputs a failed case keeps: its incoming velocities, wherever its inputs define them.
+KEPT_WHEN_FAILED = ("vn_in", "vt_in")
+_BLANKED = np.array([j for j, f in enumerate(OUTPUT_FIELDS) if f not in KEPT_WHEN_FAILED])
+
+
+def blank_failed(out: np.ndarray, status: np.ndarray) -> np.ndarray:
+    """Set every output of the cases with a non-zero ``status`` to NaN (in place; returns
+    ``out``), ``KEPT_WHEN_FAILED`` excepted: a failed case stops part-way, and what the engine
+    left in its row (the interference and force reached, the time run) is no result. ``regime``
+    and ``flags`` included: a failed case has neither (its status says why)."""
+    failed = np.flatnonzero(np.asarray(status) != 0)
+    if failed.size:
+        out[np.ix_(failed, _BLANKED)] = np.nan
+    return out
 
 
 _DMAX, _FLAGS = OUTPUT_FIELDS.index("delta_max"), OUTPUT_FIELDS.index("flags")

@@ -9,6 +9,7 @@ from typing import Any
 import numpy as np
 
 from impactlab import schema
+from impactlab.dynamics.batch import blank_failed
 from impactlab.dynamics.batch_status import (
     INTEGER_FIELDS,
     BatchStatus,
@@ -32,8 +33,15 @@ class BatchResult(BatchStatus):
 
     Fields are available by name (``batch["e"]`` or ``batch.e``); cases with a non-zero status
     hold NaN results (see ``messages``), except the incoming ``vn_in`` and ``vt_in``, which are
-    kept wherever the inputs define them (a case refused for ``vn_in >= 0`` shows why); a case
-    refused for its inputs names the input, its value and its rule in ``messages``.
+    kept wherever the inputs define them (a case refused for ``vn_in >= 0`` shows why): what a
+    failed case reached before it stopped (delta_max, max_force, ...) is no result, and reads
+    NaN in every output, derived output (``schema.register_output``), ``max_delta_ratio``,
+    ``to_dataframe``, ``to_xarray`` and ``to_pint``, as a sweep stores it and as
+    ``DropBatchResult`` has it. A failed case has no ``regime`` and no ``flags``: NaN in
+    ``batch["regime"]`` and ``batch["flags"]``, ``<NA>`` in ``to_dataframe``, -1 in
+    ``to_xarray``, and 0 in the ``flags`` bitmask (``computed``, ``flagged`` and ``ok`` are
+    False). A case refused for its inputs names the input, its value and its rule in
+    ``messages``.
     ``references`` are the sources the batch used (contact law, friction model if any mu > 0,
     the integrator); ``dois()`` their DOIs.
     """
@@ -55,8 +63,12 @@ class BatchResult(BatchStatus):
     refusals: Mapping[int, str] = field(default_factory=dict, repr=False)
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "out", readonly_copy(self.out))
-        object.__setattr__(self, "status", readonly_copy(self.status, np.int32))
+        status = readonly_copy(self.status, np.int32)
+        object.__setattr__(self, "status", status)
+        object.__setattr__(self, "out", readonly_copy(blank_failed(np.array(self.out), status)))
+        if self.max_delta_ratio is not None:
+            ratio = np.where(status == 0, self.max_delta_ratio, np.nan)
+            object.__setattr__(self, "max_delta_ratio", readonly_copy(ratio))
         object.__setattr__(self, "inputs", {k: readonly_copy(v) for k, v in self.inputs.items()})
 
     def __len__(self) -> int:
@@ -68,8 +80,8 @@ class BatchResult(BatchStatus):
         except ValueError:
             if name in self.inputs:
                 return self.inputs[name]
-            if name in schema.DERIVED_FIELDS:
-                return batch_derived(self.__getitem__, name)
+            if name in schema.DERIVED_FIELDS:  # NaN where a case failed, whatever compute does
+                return np.where(self.computed, batch_derived(self.__getitem__, name), np.nan)
             known = ", ".join((*OUTPUT_FIELDS, *schema.DERIVED_FIELDS))
             raise KeyError(f"unknown field {name!r}; known: {known}") from None
 
@@ -127,18 +139,21 @@ class BatchResult(BatchStatus):
         return batch_dataset(self)
 
     def to_pint(self, registry: Any = None) -> dict[str, Any]:
-        """Each output column with a unit (``impactlab.schema``) as a pint Quantity of an array
-        (SI; NaN where a case failed); ``registry``: your pint registry."""
+        """Each output column with a unit (``impactlab.schema``), every derived output
+        (``schema.register_output``) and ``max_delta_ratio`` as a pint Quantity of an array (SI;
+        NaN where a case failed); ``registry``: your pint registry."""
         from impactlab.units import registry as shared  # pint loads on first use
 
         ureg = shared() if registry is None else registry
         out: dict[str, Any] = {}
-        for j, name in enumerate(OUTPUT_FIELDS):
+        for name in (*OUTPUT_FIELDS, *schema.DERIVED_FIELDS):
             try:
                 unit = schema.unit(name)
             except KeyError:
                 continue
-            out[name] = ureg.Quantity(np.array(self.out[:, j]), pint_unit(unit))
+            out[name] = ureg.Quantity(np.array(self[name]), pint_unit(unit))
+        if self.max_delta_ratio is not None:
+            out["max_delta_ratio"] = ureg.Quantity(np.array(self.max_delta_ratio), "dimensionless")
         return out
 
     def _repr_html_(self) -> str:

@@ -6,6 +6,8 @@ from typing import Any
 
 import numpy as np
 
+from impactlab import schema
+
 __all__ = ["pint_quantities", "pint_unit"]
 
 
@@ -15,8 +17,9 @@ def pint_unit(unit: str) -> str:
 
 def pint_quantities(result: Any, units: dict[str, str], registry: Any = None) -> dict[str, Any]:
     """The fields of ``result`` that have a unit in ``units`` as pint Quantities (SI; a pair
-    such as ``velocity_out`` as one Quantity of an array); ``registry``: the caller's pint
-    registry (default ``impactlab.units.registry()``)."""
+    such as ``velocity_out`` as one Quantity of an array), then every derived output
+    (``schema.register_output``, in its unit); ``registry``: the caller's pint registry
+    (default ``impactlab.units.registry()``)."""
     from impactlab.units import registry as shared  # pint loads on first use
 
     ureg = shared() if registry is None else registry
@@ -28,4 +31,8 @@ def pint_quantities(result: Any, units: dict[str, str], registry: Any = None) ->
         elif not isinstance(value, float | int) or isinstance(value, bool):
             continue
         out[name] = ureg.Quantity(value, pint_unit(unit))
+    for name, derived in schema.DERIVED_FIELDS.items():
+        value = np.asarray(getattr(result, name), dtype=np.float64)
+        number = float(value) if value.ndim == 0 else value
+        out[name] = ureg.Quantity(number, pint_unit(derived.field.unit))
     return out

@@ -21,6 +21,8 @@ docs/architecture.md, "An output field").
 
 from __future__ import annotations
 
+import functools
+import math
 import warnings
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -124,12 +126,15 @@ def register_output(
     computed by ``compute(**{need: value})`` from the engine outputs ``needs``. It then shows
     in every result's ``to_dict`` and as an attribute (``ImpactResult``, ``DropResult``), as a
     column of ``BatchResult`` (``batch[name]``, ``to_xarray``, ``to_dataframe``) and as a sweep
-    output (a store variable). ValueError for a name already taken (any field), a need that is
-    no engine output, or a ``compute`` that is not callable."""
+    output (a store variable). ValueError for a name already taken (any field), a ``unit`` that
+    pint cannot parse or that is not SI (``"mm"``, ``"deg"``: give
+    the SI unit and compute in it), a need that is no engine output, or a ``compute`` that is
+    not callable."""
     if not (isinstance(name, str) and name.isidentifier() and not name.startswith("_")):
         raise ValueError(f"output name must be a Python identifier, got {name!r}")
     if name in FIELDS:
         raise ValueError(f"output name {name!r} is taken: {FIELDS[name].description}")
+    _check_unit(name, unit)
     outputs = {f.name for f in OUTPUT_FIELDS}
     bad = [n for n in needs if n not in outputs]
     if not needs or bad:
@@ -143,6 +148,37 @@ def register_output(
     DERIVED_FIELDS[name] = derived
     FIELDS[name] = derived.field
     return derived
+
+
+@functools.cache
+def _si_registry() -> Any:
+    """A plain pint registry, made on first use: enough to read an SI unit (this module is
+    engine source and imports nothing of the package's text reading, ``impactlab.units``)."""
+    import pint
+
+    return pint.UnitRegistry()
+
+
+def _check_unit(name: str, unit: Any) -> None:
+    """ValueError (one line, naming ``unit``) unless ``unit`` is an SI unit that pint parses,
+    ``"1"`` for dimensionless: every value of a result is SI, so a unit of another size
+    (``"mm"``, ``"furlongs"``) would mislabel them."""
+    want = 'an SI unit pint parses ("m", "N s", "J/m", "1" for dimensionless)'
+    if not isinstance(unit, str) or not unit.strip():
+        raise ValueError(f"unit of output {name!r} must be {want}, got {unit!r}")
+    try:
+        one = _si_registry().Quantity(1.0, "dimensionless" if unit == "1" else unit)
+        base = one.to_base_units()
+    except Exception as exc:  # pint raises several kinds for text it cannot read
+        why = str(exc).splitlines()[0] if str(exc) else "not a unit expression"
+        raise ValueError(f"unit of output {name!r} must be {want}, got {unit!r} ({why})") from None
+    if not math.isclose(float(base.magnitude), 1.0, rel_tol=1e-12):
+        si = f"{base.units:~}" or "1"
+        size = f"{float(base.magnitude):.6g}" + ("" if si == "1" else f" {si}")
+        raise ValueError(
+            f"unit of output {name!r} must be {want}, got {unit!r}, which is {size} (values "
+            f"are SI: give {si!r} and compute in it)"
+        )
 
 
 def unregister_output(name: str) -> None:
