@@ -75,10 +75,10 @@ class ResultFlag(enum.IntFlag):
     LAW_EXTRAPOLATED = FLAG_LAW_EXTRAPOLATED
     #: a drop (``simulate_drop``) whose sequence is not one bounce of the tip: the other end
     #: touched the flat within it (``stop="flight"``), or the tip still approaches the flat
-    #: after its last contact (e < 0: the other end lands first); e, the duration and the mean
-    #: force then mix or cut the impacts. An impact of a rigid rod (``simulate``, the tip's
-    #: contact alone): the other end may have reached the flat during the contact (L sin theta
-    #: <= delta_max at the smaller of the angles at first touch and at separation)
+    #: after its last contact (e < 0: the other end lands first); e, the duration, the mean
+    #: force and the scar then mix or cut the impacts. An impact of a rigid rod (``simulate``,
+    #: the tip's contact alone): the other end may have reached the flat during the contact
+    #: (L sin theta <= delta_max at the smaller of the angles at first touch and at separation)
     OTHER_END = FLAG_OTHER_END
     #: a rod's impact (or a contact of a drop) whose largest interference exceeds
     #: R (1 - |cos theta|), the depth at which the flat reaches the rim of the hemispherical
@@ -106,13 +106,15 @@ _MESSAGES: dict[ResultFlag, str] = {
         "meaningful (raise the impact velocity, or pass gravity=False)"
     ),
     ResultFlag.OTHER_END: (
-        "other end: the other end of the rod touched the flat within the sequence "
-        "(stop='flight'), or the tip still approaches the flat after its last contact (e < 0: "
-        "the other end lands before the tip leaves), so e, the duration and the mean force do "
-        "not describe one bounce of the tip; read the contacts one by one (an impact of a "
-        "rigid rod, which follows the tip alone: its other end came within the interference "
-        "of the flat, L sin(angle) <= delta_max, so it may have struck; simulate_drop follows "
-        "both ends)"
+        "other end: the other end of the rod touched the flat within the drop (stop='flight', "
+        "or a rod landing nearly flat), or the tip still approaches the flat after its last "
+        "contact (e < 0: the other end lands before the tip leaves), so e, the duration and "
+        "the mean force do not describe one bounce of the tip; read the contacts one by one "
+        "(dent_depth and scar_length stay the tip's: its deepest dent, and the x-extent of all "
+        "its marks, the flat between separate dents included; the other end's dents are in "
+        "dents). An impact of a rigid rod follows the tip alone: its other end came within the "
+        "interference of the flat, L sin(angle) <= delta_max, so it may have struck; "
+        "simulate_drop follows both ends"
     ),
     ResultFlag.BEYOND_TIP: (
         "beyond the tip: the largest interference exceeds R (1 - |cos(angle)|), the depth at "

@@ -164,13 +164,16 @@ def test_gravity_dominated_flag() -> None:
     """A slow drop (1 cm/s): gravity's impulse over the sequence exceeds a tenth of the normal
     impulse, flagged as the rigid engine flags its one impact (the law's range aside: the rod
     comes to rest on the flat over 95 contacts, deeper than its first impact; and lying on it,
-    its ends' contacts pass the rims of their hemispheres, BEYOND_TIP)."""
+    its ends' contacts pass the rims of their hemispheres, BEYOND_TIP; its other end touched,
+    OTHER_END)."""
     case = {"mu": 0.2, "angle": math.radians(20), "velocity": (0.0, -0.01)}
     r0 = simulate(Rod.paper(), **case)
     r = simulate_drop(Rod.paper(), **case)
     law = ResultFlag.LAW_EXTRAPOLATED
     assert r0.flags & ~law == ResultFlag.GRAVITY_DOMINATED
-    assert r.flags & ~law == ResultFlag.GRAVITY_DOMINATED | ResultFlag.BEYOND_TIP
+    assert r.flags & ~law == (
+        ResultFlag.GRAVITY_DOMINATED | ResultFlag.BEYOND_TIP | ResultFlag.OTHER_END
+    )
     assert r.n_contacts > 1 and not r.ok and any("gravity" in w for w in r.warnings)
 
 

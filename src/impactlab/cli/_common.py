@@ -4,10 +4,8 @@ from __future__ import annotations
 
 import json
 import math
-import re
 import tomllib
 from collections.abc import Callable, Iterable, Mapping
-from itertools import accumulate
 from pathlib import Path
 from typing import Any
 
@@ -19,7 +17,7 @@ from rich.text import Text
 from impactlab._display import field_rows
 from impactlab._json import to_json
 from impactlab._validation import read_text_file
-from impactlab.contact.rate import RATE_CONSTANTS, RATE_LAWS, RateLaw, constants_text, rate_constant
+from impactlab.contact.rate import RATE_CONSTANTS, RATE_LAWS, RateLaw, constants_text, get_rate_law
 from impactlab.dynamics.kernels.inputs import angle_allowed, incidence_allowed
 from impactlab.materials import Material
 from impactlab.schema import FIELDS
@@ -29,9 +27,6 @@ from impactlab.units import angle_to_rad, to_si
 class UserError(ValueError):
     """An error in the user's input: reported as one line, exit status 2."""
 
-
-#: ``--rate`` values of the drop ("none": a rate-independent flat).
-RATE_CHOICES = ("none", *RATE_LAWS)
 
 #: The sources of the library's rate laws, short (``impactlab.contact.rate``).
 _RATE_SOURCES = {
@@ -72,39 +67,14 @@ def rate_help() -> str:
 
 
 def rate_name(rate: str, name: str = "--rate") -> str | RateLaw | None:
-    """The rate law of ``--rate``: None for "none", a library law's name, or a law with one's
-    own constants, ``"cowper-symonds(D=6500 1/s, q=4)"`` (or as a result prints it,
-    ``"cowper-symonds (D = 6500 1/s, q = 4)"``); UserError naming ``name``."""
-    match = re.fullmatch(r"\s*([a-z_-]+)\s*(?:\((.*)\))?\s*", rate, re.DOTALL | re.IGNORECASE)
-    key = match.group(1).lower() if match else ""
-    if match is None or key not in RATE_CHOICES or (key == "none" and match.group(2) is not None):
-        raise UserError(
-            f"{name} must be one of {', '.join(RATE_CHOICES)}, or a law with its constants "
-            f'such as "{RATE_EXAMPLE}", got {rate!r}'
-        )
-    if key == "none" or match.group(2) is None:
-        return None if key == "none" else key
-    units, values, shown = RATE_CONSTANTS[key][1], {}, f"{name} {rate.strip()!r}"
-    depth = list(accumulate((c == "(") - (c == ")") for c in match.group(2)))
-    if depth and (min(depth) < 0 or depth[-1] != 0):
-        raise UserError(f"{shown}: unbalanced brackets; write the constants in one pair, e.g. "
-                        f'"{_form(key, example=True)}"')  # fmt: skip
-    takes = f"{shown}: {key} takes {', '.join(f'{k} [{u}]' for k, u in units.items())}"
-    for item in match.group(2).split(","):
-        given, eq, text = (part.strip() for part in item.partition("="))
-        known = {k.lower(): k for k in units}.get(given.lower())
-        if not eq or not text or "=" in text or known is None or known in values:
-            raise UserError(f"{takes}, got {item.strip()!r}{' twice' * (known in values)}")
-        try:  # "--rate D: '6500 m' has the wrong dimension", "--rate q must be a plain number"
-            values[known] = rate_constant(key, known, text, bare=True)
-        except ValueError as exc:
-            raise UserError(f"{name} {exc}") from None
-    if set(values) != set(units):
-        raise UserError(f"{takes}, missing {', '.join(k for k in units if k not in values)}")
+    """The rate law of ``--rate`` (``contact.rate.get_rate_law``): None for "none", a library
+    law's name, or a law with one's own constants, ``"cowper-symonds(D=6500 1/s, q=4)"`` (or as
+    a result prints it, ``"cowper-symonds (D = 6500 1/s, q = 4)"``); UserError naming ``name``."""
     try:
-        return RateLaw.custom(key, "", **values)
-    except ValueError as exc:  # "D must be > 0 1/s, got ..."
-        raise UserError(f"{name} {exc}") from None
+        law = get_rate_law(rate, name)
+    except ValueError as exc:
+        raise UserError(str(exc)) from None
+    return law.name if law is not None and RATE_LAWS.get(law.name) is law else law
 
 
 def check_rate_flat(rate: str | RateLaw | None, flat: Material, name: str = "--rate") -> None:

@@ -1,45 +1,36 @@
 """A rate-dependent flat: the flat's yield strength raised by a strain-rate factor (SI units).
 
-The simplest defensible variant, and only that: one multiplier k >= 1 on the flat's
-quasi-static yield strength S_y for the whole impact, k = f(eps_dot), with eps_dot one
-characteristic strain rate of the contact. Every contact law then runs unchanged with
-S_y -> k S_y (for the Jackson-Green family this moves delta_c, F_c, the loading curve and the
-residual depth). The time dependence of the rate within a contact (it falls to zero at the
-largest compression) and the strain dependence of the rate sensitivity are ignored.
+The simplest defensible variant, and only that: one multiplier k >= 1 on the flat's quasi-static
+yield strength S_y for the whole impact, k = f(eps_dot), with eps_dot one characteristic strain
+rate of the contact. Every contact law then runs unchanged with S_y -> k S_y (for the Jackson-Green
+family this moves delta_c, F_c, the loading curve and the residual depth). The time dependence of
+the rate within a contact (it falls to zero at the largest compression) and the strain dependence
+of the rate sensitivity are ignored.
 
 Rate laws and their parameters for low-carbon steel:
 
-* Cowper-Symonds: sigma_d / sigma_0 = 1 + (eps_dot / D)^(1/q), mild steel D = 40.4 1/s, q = 5.
-  Law: G. R. Cowper, P. S. Symonds, Strain-hardening and strain-rate effects in the impact
-  loading of cantilever beams, Technical Report No. 28, Division of Applied Mathematics, Brown
-  University, Providence RI (September 1957), ONR contract Nonr-562(10) (title, authors, report
-  number and date confirmed against a scan of the report). Constants for mild steel as quoted
-  by N. Jones, Structural Impact, Cambridge University Press (1989), in his chapter on
-  strain-rate sensitive behaviour; the table and equation numbers could not be confirmed here,
-  so none is cited. Jones stresses that these constants describe the initial (lower) yield
-  stress and overestimate the enhancement of the flow stress at larger strains: this is an
-  upper estimate for an indentation (representative strain about 0.1).
+* Cowper-Symonds: sigma_d / sigma_0 = 1 + (eps_dot / D)^(1/q), mild steel D = 40.4 1/s, q = 5
+  (law: Cowper & Symonds, Brown University Technical Report No. 28, 1957; constants for mild
+  steel as quoted by Jones, Structural Impact, 1989: ``RATE_REFERENCES``, with what was
+  confirmed). Jones stresses that these constants describe the initial (lower) yield stress
+  and overestimate the enhancement of the flow stress at larger strains: this is an upper
+  estimate for an indentation (representative strain about 0.1).
 * Johnson-Cook rate term: sigma_d / sigma_0 = 1 + C ln(eps_dot / eps_dot_0), C = 0.022,
-  eps_dot_0 = 1 1/s, for 1006 steel (a low-carbon steel close to the flat's AISI 1010).
-  G. R. Johnson, W. H. Cook, A constitutive model and data for metals subjected to large
-  strains, high strain rates and high temperatures, Proc. 7th Int. Symp. on Ballistics, The
-  Hague (1983), pp. 541-547 (pages as commonly cited, not confirmed). Their 1006-steel
-  constants (A = 350 MPa, B = 275 MPa, n = 0.36, C = 0.022, m = 1.00) were confirmed against a
-  secondary source that reproduces their table; the table number is not confirmed, so none is
-  cited. A lower estimate: the constants are fitted to large-strain flow stress.
+  eps_dot_0 = 1 1/s, for 1006 steel (a low-carbon steel close to the flat's AISI 1010):
+  Johnson & Cook, Proc. 7th Int. Symp. on Ballistics, The Hague (1983), pp. 541-547 (pages as
+  commonly cited, not confirmed); their 1006-steel constants (A = 350 MPa, B = 275 MPa,
+  n = 0.36, C = 0.022, m = 1.00) confirmed against a secondary source that reproduces their
+  table (its number not confirmed). A lower estimate: fitted to large-strain flow stress.
 
 The strain-rate estimate of the contact: Tabor's representative strain of a spherical
-indentation, eps_r = 0.2 a / R (D. Tabor, The Hardness of Metals, Clarendon Press, Oxford
-(1951); K. L. Johnson, Contact Mechanics, Cambridge University Press (1985),
-doi:10.1017/CBO9781139171731, its chapter on elastic-plastic indentation; chapter and
-section numbers not confirmed here), differentiated in time with the plastic (truncation)
-geometry a^2 = 2 R delta (a da/dt = R d delta/dt):
-
-    eps_dot = 0.2 (da/dt) / R = 0.2 (d delta/dt) / a  ~  0.2 |v_n0| / a_m,
-
-with v_n0 the tip's normal approach speed at first touch and a_m the contact radius at the
-largest interference of the first contact (the law's own radius). Since a_m depends on k, k is
-found by a fixed-point iteration (:func:`self_consistent_factor`).
+indentation, eps_r = 0.2 a / R (D. Tabor, The Hardness of Metals, Oxford 1951; K. L. Johnson,
+Contact Mechanics, 1985, doi:10.1017/CBO9781139171731, its chapter on elastic-plastic
+indentation, chapter and section numbers not confirmed here), differentiated in time with the
+plastic (truncation) geometry a^2 = 2 R delta (a da/dt = R d delta/dt):
+eps_dot = 0.2 (da/dt) / R = 0.2 (d delta/dt) / a ~ 0.2 |v_n0| / a_m, with v_n0 the tip's normal
+approach speed at first touch and a_m the contact radius at the largest interference of the
+first contact (the law's own radius). Since a_m depends on k, k is found by a fixed-point
+iteration (:func:`self_consistent_factor`).
 """
 
 from __future__ import annotations
@@ -50,6 +41,7 @@ import numbers
 import re
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
+from itertools import accumulate
 
 from impactlab._validation import check_nonnegative, check_positive
 from impactlab.materials import Material
@@ -57,27 +49,11 @@ from impactlab.references import REFERENCES, Reference
 from impactlab.units import magnitude, to_si
 
 __all__ = [
-    "COWPER_SYMONDS_MILD_STEEL",
-    "JOHNSON_COOK_1006_STEEL",
-    "LOW_CARBON_STEEL",
-    "RATE_CONSTANTS",
-    "RATE_EXAMPLES",
-    "RATE_LAWS",
-    "RATE_REFERENCES",
-    "FittedFor",
-    "RateFactor",
-    "RateLaw",
-    "check_rate_flat",
-    "constants_text",
-    "cowper_symonds",
-    "get_rate_law",
-    "johnson_cook",
-    "rate_constant",
-    "rate_materials",
-    "self_consistent_factor",
-    "shortest",
-    "tabor_strain_rate",
-]
+    "COWPER_SYMONDS_MILD_STEEL", "JOHNSON_COOK_1006_STEEL", "LOW_CARBON_STEEL", "RATE_CONSTANTS",
+    "RATE_EXAMPLES", "RATE_LAWS", "RATE_REFERENCES", "FittedFor", "RateFactor", "RateLaw",
+    "check_rate_flat", "constants_text", "cowper_symonds", "get_rate_law", "johnson_cook",
+    "rate_constant", "rate_materials", "self_consistent_factor", "shortest", "tabor_strain_rate",
+]  # fmt: skip
 
 #: The sources of the rate-dependent flat (to be merged into ``impactlab.references``).
 RATE_REFERENCES: dict[str, Reference] = {
@@ -294,15 +270,50 @@ RATE_LAWS: dict[str, RateLaw] = {
 }
 
 
-def get_rate_law(name: object) -> RateLaw:
-    """The rate law ``name`` (``"cowper-symonds"`` or ``"johnson-cook"``), or ``name`` itself
-    if it is a RateLaw; ValueError naming the known ones."""
-    if isinstance(name, RateLaw):
-        return name
-    law = RATE_LAWS.get(name) if isinstance(name, str) else None
-    if law is None:
-        raise ValueError(f"rate must be None or one of {tuple(RATE_LAWS)}, got {name!r}")
-    return law
+#: A ``rate`` text: a name, with its constants in brackets or without.
+_RATE_TEXT = re.compile(r"\s*([a-z_-]+)\s*(?:\((.*)\))?\s*", re.DOTALL | re.IGNORECASE)
+
+
+def get_rate_law(rate: object, name: str = "rate") -> RateLaw | None:
+    """The rate law ``rate``: None for None or ``"none"``; a RateLaw itself; a library law by
+    name (any case); or a form with its constants, ``RateLaw.custom`` of them, as ``--rate``
+    takes it and a result prints it (``"cowper-symonds(D=6500 1/s, q=4)"``, or with spaces,
+    ``"cowper-symonds (D = 6500 1/s, q = 4)"``; a bare number is in the constant's unit).
+    ValueError naming ``name`` as the user gave it (the Python keyword ``rate``, ``--rate``)."""
+    if rate is None or isinstance(rate, RateLaw):
+        return rate
+    match = _RATE_TEXT.fullmatch(rate) if isinstance(rate, str) else None
+    key, inner = (match.group(1).lower(), match.group(2)) if match else ("", None)
+    if key not in ("none", *RATE_LAWS) or (key == "none" and inner is not None):
+        api = "; or None, or a RateLaw (RateLaw.custom: one's own constants)" * (name == "rate")
+        example = f"cowper-symonds({constants_text('cowper-symonds', None, '=')})"
+        raise ValueError(
+            f"{name} must be one of {', '.join(('none', *RATE_LAWS))}, or a law with its "
+            f'constants such as "{example}"{api}, got {rate!r}'
+        )
+    if inner is None:
+        return None if key == "none" else RATE_LAWS[key]
+    units, values, shown = RATE_CONSTANTS[key][1], {}, f"{name} {str(rate).strip()!r}"
+    depth = list(accumulate((c == "(") - (c == ")") for c in inner))
+    if depth and (min(depth) < 0 or depth[-1] != 0):
+        raise ValueError(f"{shown}: unbalanced brackets; write the constants in one pair, e.g. "
+                         f'"{key}({constants_text(key, None, "=")})"')  # fmt: skip
+    takes = f"{shown}: {key} takes {', '.join(f'{k} [{u}]' for k, u in units.items())}"
+    for item in inner.split(","):
+        given, eq, text = (part.strip() for part in item.partition("="))
+        known = {k.lower(): k for k in units}.get(given.lower())
+        if not eq or not text or "=" in text or known is None or known in values:
+            raise ValueError(f"{takes}, got {item.strip()!r}{' twice' * (known in values)}")
+        try:  # "--rate D: '6500 m' has the wrong dimension", "--rate q must be a plain number"
+            values[known] = rate_constant(key, known, text, bare=True)
+        except ValueError as exc:
+            raise ValueError(f"{name} {exc}") from None
+    if set(values) != set(units):
+        raise ValueError(f"{takes}, missing {', '.join(k for k in units if k not in values)}")
+    try:
+        return RateLaw.custom(key, "", **values)
+    except ValueError as exc:  # "D must be > 0 1/s, got ..."
+        raise ValueError(f"{name} {exc}") from None
 
 
 def check_rate_flat(law: RateLaw, flat: Material) -> None:

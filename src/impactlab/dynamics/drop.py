@@ -30,6 +30,7 @@ from impactlab.contact.range_note import range_note
 from impactlab.contact.ranges import extrapolation, range_status
 from impactlab.contact.rate import (
     RateFactor,
+    RateLaw,
     check_rate_flat,
     get_rate_law,
     rate_materials,
@@ -165,7 +166,7 @@ def _first_contact_radius(run: _Run, model: ContactModel) -> float:
 
 
 def _rate_model(
-    rate: Any,
+    rate_law: RateLaw | None,
     law: str | ContactModel,
     body: Rod,
     flat: Material,
@@ -174,10 +175,9 @@ def _rate_model(
     vn0: float,
 ) -> tuple[ContactModel, RateFactor | None]:
     """The contact model, with the flat's yield strength raised by the self-consistent rate
-    factor when ``rate`` names a rate law (``impactlab.contact.rate``)."""
-    if rate is None:
+    factor when there is a rate law (``impactlab.contact.rate``)."""
+    if rate_law is None:
         return contact_model(body, flat, law, law_params), None
-    rate_law = get_rate_law(rate)
     if not isinstance(law, str):
         raise ValueError("rate needs the law as a name (the flat's yield strength is rebuilt)")
     if law.strip().lower() in ELASTIC_LAWS:
@@ -280,7 +280,7 @@ def simulate_drop(
     velocity: Any = None,
     spin: Any = 0.0,
     gravity: Any = True,
-    rate: str | None = None,
+    rate: str | RateLaw | None = None,
     rtol: float | None = None,
     history: bool = True,
     law_params: Mapping[str, float] | None = None,
@@ -300,12 +300,13 @@ def simulate_drop(
     instead ``speed`` [m/s] and ``incidence`` [rad], its angle to the flat's normal (vx = speed
     sin(incidence), vy = -speed cos(incidence); the rule and errors of ``impactlab.simulate``,
     ``checks.velocity_from``); spin [rad/s]; gravity: True, False or a value [m/s^2]; rate:
-    None, ``"cowper-symonds"`` or ``"johnson-cook"`` (the flat's yield strength raised by the
-    self-consistent rate factor, ``impactlab.contact.rate``); rtol: relative tolerance (default
-    1e-7); history: keep the time history (``DropResult.history``; default True, as
-    ``impactlab.simulate``: a result can draw its figures; pass False for many drops in a
-    loop: the paper's drops keep about 4,800 rows, 0.6 MB, and take about 1.5 times as long
-    with them, 12 ms against 7.5 ms); law_params: the law's parameters; stop:
+    None or ``"none"``, ``"cowper-symonds"``, ``"johnson-cook"``, a RateLaw
+    (``RateLaw.custom``) or the text a result's ``rate`` shows (``contact.rate.get_rate_law``;
+    the flat's yield strength raised by the self-consistent rate factor); rtol: relative
+    tolerance (default 1e-7); history: keep the time history (``DropResult.history``; default
+    True, as ``impactlab.simulate``: a result can draw its figures; pass False for many drops
+    in a loop: the paper's drops keep about 4,800 rows, 0.6 MB, and take about 1.5 times as
+    long with them, 12 ms against 7.5 ms); law_params: the law's parameters; stop:
     ``"sequence"`` (stop when the tip is clear until the other end could land: that is a new
     impact, ``next_end`` / ``next_time``) or ``"flight"`` (go on through the other end's
     impacts until the rod flies off); t_max [s]: the longest simulated time.
@@ -368,16 +369,16 @@ def simulate_drop(
                     (*options, record), max_steps)  # fmt: skip
 
     check_brake_meyer(bm.rigid, flat, law, law_params)
-    model, factor = _rate_model(rate, law, bm.rigid, flat, law_params, run, vn0)
+    rate_law = get_rate_law(rate)
+    model, factor = _rate_model(rate_law, law, bm.rigid, flat, law_params, run, vn0)
     r = run(model, record_history)
     if r.status != F.ST_OK:
         raise status_error(r.status, model, r.out)
     refs = references_used(model, fric, mu_run > 0.0) + bm.references
-    if factor is not None:
-        refs += get_rate_law(rate).references
+    if rate_law is not None:
+        refs += rate_law.references
     inputs = {"friction": fric.name, "mu": mu_v, "angle": th, "velocity_in": (vx, vy)}
     inputs |= {"spin_in": w, "gravity": g, "rtol": options[0]}
-    rate_law = get_rate_law(rate) if rate is not None else None
     name = rate_law.label if rate_law is not None else None
     limit = brittle_pressure(bm.rigid.material, flat)
     result = _result(r, bm, model, inputs, (name, factor), tuple(dict.fromkeys(refs)), limit)

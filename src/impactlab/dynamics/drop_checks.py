@@ -224,11 +224,12 @@ def drop_flags(
     vector ``out`` (``layout.DROP_FIELDS``) and its contact table: the rigid engine's criteria
     (``impactlab.dynamics.kernels.quality``) on the state after the last contact, the
     vibration energy counted with the kinetic energy, and on the duration and the normal
-    impulse of the tip's sequence (its contacts before the other end's first touch); the
-    law's (verified) range (``contact.ranges.law_extrapolated``) on the largest
-    interference of the sequence; OTHER_END, unless gravity dominates (the rod rests or rocks:
-    that flag says it), when the other end touched the flat or the tip still approaches it
-    after the last contact (e < 0); BEYOND_TIP when the flat reached the rim of an end's
+    impulse of the tip's sequence (its contacts before the other end's first touch and, with
+    ``stop="flight"``, before the tip's return after a clear flight); the law's (verified)
+    range (``contact.ranges.law_extrapolated``) on the largest interference of the sequence;
+    OTHER_END whenever the other end touched the flat, and, unless gravity dominates (the rod
+    rests or rocks: that flag says it), when the tip still approaches the flat after the last
+    contact (e < 0); BEYOND_TIP when the flat reached the rim of an end's
     hemisphere (``radius`` [m]) in a contact (``kernels.quality.beyond_rim``); BRITTLE when
     the largest mean contact pressure exceeds ``brittle_limit`` [Pa] (``contact.brittle``).
     The compiled part (``flexcore.batch.sequence_flags``) is the one ``simulate_drops`` runs."""

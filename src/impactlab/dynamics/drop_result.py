@@ -87,12 +87,15 @@ class DropResult(DerivedOutputs, ResultDisplay):
       before the first, with the gravity impulse of the sequence removed (as a ballistic fit
       of marker data would remove it; ``e_raw`` keeps it); one bounce of the tip only when
       the sequence holds the tip's contacts alone and e >= 0 (else OTHER_END, below);
-    - ``dent_depth``: the final dent depth (the deepest dent's permanent depth; an impact's
-      ``delta_p`` is that of one unloading);
+    - ``dent_depth``: the tip's final dent depth, the permanent depth of its deepest dent
+      (``dent().max_depth``; the other end's dents, when it touches, are in ``dents``; an
+      impact's ``delta_p`` is that of one unloading);
     - ``sequence_sliding_length``: the tip's total slip, the sum over its contacts of
       int v_t dt (signed, as ImpactResult's ``sliding_length`` of one contact);
-      ``scar_length``: the x-extent of the mark the tip left over all its contacts;
-      ``slip_path``: the sum of int |v_t| dt;
+      ``scar_length``: the x-extent of the mark the tip left over all its contacts (where the
+      tip lands twice on separate dents, ``stop="flight"``, from the first one's near edge to
+      the last one's far edge, the unmarked flat between them included; each dent's extent:
+      ``dents``, x_min to x_max); ``slip_path``: the sum of int |v_t| dt;
     - ``sequence_duration``: first touch to last separation (flights between contacts
       included; an impact's ``duration`` is one contact's);
     - ``sequence_mean_force``: total normal impulse / sequence_duration (the paper's
@@ -104,10 +107,11 @@ class DropResult(DerivedOutputs, ResultDisplay):
       (``impactlab.flags.ENERGY_GAIN_RTOL_FACTOR`` rtol + ``ENERGY_ROUNDOFF``, relative to
       E0 + the final kinetic, vibration and |potential| energy), GRAVITY_DOMINATED when
       m g sequence_duration exceeds ``GRAVITY_IMPULSE_RATIO`` of the total normal impulse,
-      OTHER_END when the other end touched the flat within the sequence (``stop="flight"``)
-      or e < 0 (the tip still approaches the flat after its last contact), unless gravity
-      dominates; GRAVITY_DOMINATED is judged on the tip's sequence (its contacts before the
-      other end's first touch);
+      OTHER_END when the other end touched the flat in the run (gravity-dominated or not) or,
+      unless gravity dominates, e < 0 (the tip still approaches the flat after its last
+      contact); GRAVITY_DOMINATED is judged on the tip's sequence (its contacts until
+      ``stop="sequence"`` would end: before the other end's first touch and before the tip's
+      return after a clear flight);
       LAW_EXTRAPOLATED when the largest interference of the sequence left the law's fitted
       range (``impactlab.contact.ranges``; ``max_delta_ratio`` = delta_max / delta_ref, the
       law's own reference interference, ``LawRange.reference``: Jackson-Green's delta_c, or

@@ -113,7 +113,7 @@ SEQUENCE_FIELDS: tuple[Field, ...] = (
     Field(
         "dent_depth",
         "m",
-        "permanent depth of the deepest dent a drop leaves on the flat (positive)",
+        "permanent depth of the deepest dent the tip leaves on the flat in a drop (positive)",
         r"\delta_{p,seq}",
     ),
     Field(

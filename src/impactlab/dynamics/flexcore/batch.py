@@ -68,22 +68,28 @@ def initial_energy(m, inertia, vx, vy, w):
 
 @njit_internal
 def tip_sequence(contacts, n_contacts, duration, normal_impulse):
-    """(duration [s], normal impulse [N s]) of the tip's sequence: its contacts before the
-    other end's first touch (``duration`` and ``normal_impulse``, the drop's totals, when the
-    other end never touched), and whether the other end touched."""
+    """(duration [s], normal impulse [N s]) of the tip's sequence, and whether the other end
+    touched in the run. The tip's sequence: its contacts until stop="sequence" would end,
+    before the other end's first touch and before the first contact that began after the end
+    test of stop="sequence" would have passed (``layout.CR_PAST``: the tip's return after a
+    clear flight, which ``stop="flight"`` follows on); ``duration`` and ``normal_impulse``,
+    the drop's totals, when neither came."""
     t1 = math.inf
+    other = False
     for j in range(n_contacts):
         if contacts[j, F.CR_END] == 1.0:
+            other = True
+        if contacts[j, F.CR_END] == 1.0 or contacts[j, F.CR_PAST] == 1.0:
             t1 = min(t1, contacts[j, F.CR_T0])
     if t1 == math.inf:
-        return duration, normal_impulse, False
+        return duration, normal_impulse, other
     end = -math.inf
     impulse = 0.0
     for j in range(n_contacts):
         if contacts[j, F.CR_END] == 0.0 and contacts[j, F.CR_T0] < t1:
             end = max(end, contacts[j, F.CR_T0] + contacts[j, F.CR_DUR])
             impulse += contacts[j, F.CR_PN]
-    return end, impulse, True
+    return end, impulse, other
 
 
 @njit(cache=True, error_model="numpy")
@@ -91,8 +97,9 @@ def sequence_flags(out, e0, m, g, rtol, contacts, n_contacts, radius):
     """The ``ResultFlag`` bits of a finished sequence but LAW_EXTRAPOLATED (docs/flexible.md,
     "Flags"): ENERGY_GAIN (the vibration energy counted with the kinetic; or friction that did
     positive work in a contact, ``friction_gained``), GRAVITY_DOMINATED on the tip's
-    sequence, else OTHER_END when the other end touched or e < 0 (or NaN); BEYOND_TIP when
-    the flat reached the rim of an end's hemisphere (``radius`` [m]) in one of the contacts."""
+    sequence (``tip_sequence``), OTHER_END when the other end touched in the run, or, unless
+    gravity dominates, when e < 0 (or NaN); BEYOND_TIP when the flat reached the rim of an
+    end's hemisphere (``radius`` [m]) in one of the contacts."""
     flags = 0
     for j in range(n_contacts):
         c = contacts[j]
@@ -106,9 +113,10 @@ def sequence_flags(out, e0, m, g, rtol, contacts, n_contacts, radius):
     duration, impulse, other = tip_sequence(
         contacts, n_contacts, out[F.O_DURATION], out[F.O_NORMAL_IMPULSE]
     )
-    if gravity_dominated(m * g * duration, impulse):
+    gravity = gravity_dominated(m * g * duration, impulse)
+    if gravity:
         flags |= FLAG_GRAVITY_DOMINATED
-    elif other or not out[F.O_E] >= 0.0:
+    if other or not (gravity or out[F.O_E] >= 0.0):
         flags |= FLAG_OTHER_END
     return flags
 

@@ -41,22 +41,26 @@ def jump_time(mdl, y, h, sv, ek):
 
 @njit_internal
 def out_of_contact(mdl, y, t, h, sv, stop_mode, yev, ek):
-    """No end in contact: the end-of-sequence test (every ``F.SV_CHECK_DT``), then a free-flight
-    jump if one is possible, its end state into ``yev``. Returns (code, tau): code 0 integrate a
+    """No end in contact: the end-of-sequence test (every ``F.SV_CHECK_DT``; with ``stop_mode``
+    1 also stop="sequence"'s, until it passes: ``F.SV_SEQ_PASSED``), then a free-flight jump if
+    one is possible, its end state into ``yev``. Returns (code, tau): code 0 integrate a
     step, 1 jump by tau [s] (``complete_jump``), 2 the sequence is over. It evaluates no
     right-hand side (which would be compiled into it once more: ``docs/engine/first-run.md``)."""
     if t - sv[F.SV_T_CHECK] >= sv[F.SV_CHECK_DT]:
         sv[F.SV_T_CHECK] = t
-        done, nx, tn = left_for_good(
-            mdl, y, int(sv[F.SV_LAST_END]), stop_mode, F.HORIZON_CAP, sv[F.SV_EPS_CLEAR],
-            F.NEW_IMPACT_CHECKS * sv[F.SV_CHECK_DT],
-        )  # fmt: skip
+        last = int(sv[F.SV_LAST_END])
+        flight_min = F.NEW_IMPACT_CHECKS * sv[F.SV_CHECK_DT]
+        eps = sv[F.SV_EPS_CLEAR]
+        done, nx, tn = left_for_good(mdl, y, last, stop_mode, F.HORIZON_CAP, eps, flight_min)
         if done:
             sv[F.SV_FINISHED] = 1.0
             sv[F.SV_NEXT_END] = nx
             sv[F.SV_NEXT_TIME] = tn
             sv[F.SV_STATUS] = F.ST_OK
             return 2, 0.0
+        follow = stop_mode == 1 and sv[F.SV_SEQ_PASSED] == 0.0  # stop="sequence" would end?
+        if follow and left_for_good(mdl, y, last, 0, F.HORIZON_CAP, eps, flight_min)[0]:
+            sv[F.SV_SEQ_PASSED] = 1.0
     tau = jump_time(mdl, y, h, sv, ek)
     if tau == 0.0:
         return 0, 0.0

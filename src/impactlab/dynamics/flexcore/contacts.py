@@ -144,6 +144,7 @@ def on_touch(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, ek, Jn, Jt):
     contacts[ci, F.CR_FMAX] = 0.0
     contacts[ci, F.CR_STICK] = 0.0
     contacts[ci, F.CR_TH0] = contacts[ci, F.CR_TH1] = c[F.FC_TH0] + y[2]
+    contacts[ci, F.CR_PAST] = sv[F.SV_SEQ_PASSED]
     if di >= 0:
         _reload_mode(mdl, md, dents, k, di)
         contacts[ci, F.CR_RELOAD] = 1.0

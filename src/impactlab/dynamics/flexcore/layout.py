@@ -134,7 +134,10 @@ CR_WT = 15  #: work of friction [J]
 CR_STICK = 16  #: time spent sticking [s]
 CR_TH0 = 17  #: the rod's angle to the flat at touch [rad] (the rim check; not a record field)
 CR_TH1 = 18  #: ... at separation (at touch until then) [rad]
-NCR = 19
+#: 1 if the contact began after the end test of stop="sequence" would have passed (a
+#: ``stop="flight"`` drop's contacts beyond the tip's sequence; not a record field)
+CR_PAST = 19
+NCR = 20
 MAX_CONTACTS = 4096
 
 # ---- run state (``SV_*``, a float vector shared by the driver's helpers) ----------------------
@@ -169,7 +172,9 @@ SV_DSTAR = 27  #: Hertzian interference scale [m] (error scale of Q_t as a displ
 #: Contact invariant: out of contact an end may lie below its touch threshold (the dent's
 #: surface, or the flat) by at most this much [m]: MISS_TOL_FACTOR max(1e-6, rtol) delta*.
 SV_TOL_MISS = 28
-NSV = 29
+#: 1 once the end test of stop="sequence" would have passed (``stop="flight"``: ``CR_PAST``)
+SV_SEQ_PASSED = 29
+NSV = 30
 #: The tolerance of the contact invariant in units of max(1e-6, rtol) times the Hertzian
 #: interference scale delta* (``SV_TOL_MISS``).
 MISS_TOL_FACTOR = 1.0
@@ -213,7 +218,7 @@ DROP_FIELDS: tuple[Field, ...] = (
     Field("spin_out", "rad/s", "angular velocity after the last contact"),
     Field("duration", "s", "first touch to last separation"),
     Field("n_contacts", "1", "number of contacts"),
-    Field("delta_p", "m", "permanent depth of the deepest dent"),
+    Field("delta_p", "m", "permanent depth of the tip's deepest dent"),
     Field("scar_length", "m", "x-extent of the tip's contact-point path over all its contacts"),
     Field("sliding_length", "m", "sum over the tip's contacts of int v_t dt (signed)"),
     Field("slip_path", "m", "sum over the tip's contacts of int |v_t| dt"),

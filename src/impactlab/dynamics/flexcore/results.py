@@ -98,7 +98,8 @@ def fill_outputs(mdl, sv, t, ye, vx0, vy0, out, contacts, dents):
     out[F.O_E] = -(vy + c[F.FC_G] * T - w * a) / vn0
     dp = 0.0
     for i in range(nd):
-        dp = max(dp, dents[i, F.DT_DR])
+        if dents[i, F.DT_END] == 0.0:  # the tip's dents (the other end's: ``dents``)
+            dp = max(dp, dents[i, F.DT_DR])
     out[F.O_DELTA_P] = dp
     scar, slip, aslip = _tip_path(contacts, ncon, dents, nd)
     out[F.O_SCAR_LENGTH] = scar
