@@ -12,15 +12,16 @@ Two rules, one parser:
   not, means "in the stated unit" -- except an angle (:func:`angle_to_rad`), which text must
   give with its unit (the angle rule, docs/glossary.md).
 
-The Python API applies :func:`magnitude` through ``impactlab._validation`` (``check_positive(
-"length", value, "m")`` and its siblings), which adds the rule for numbers (never a bool or a
-string) and the range checks.
+The Python API applies :func:`magnitude` through ``impactlab._validation`` (``check_positive``
+and its siblings: the rule for numbers, never a bool or a string, and the range checks).
 """
 
 from __future__ import annotations
 
 import math
+import numbers
 import re
+import unicodedata
 from functools import lru_cache
 from typing import TYPE_CHECKING, Any
 
@@ -55,23 +56,21 @@ def has_unit(value: Any) -> bool:
 
 #: A leading number (sign, digits, decimal point, exponent) and what follows it.
 _LEADING_NUMBER = re.compile(r"\s*[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?(.*)")
-#: A number not glued to a name or to another number (the 2 of ``m2`` is none).
+#: A number not glued to a name or to another number (the 2 of ``m2`` is none); the same with
+#: its exponent (``1.41e-3``): the first number of a text (``"(2*3) m"``).
 _NUMBER = re.compile(r"(?<![\w.])(?:\d+\.?\d*|\.\d+)")
-#: The same with its exponent (``1.41e-3``): the first number of a text that does not start
-#: with one (``"(2*3) m"``).
 _FIRST_NUMBER = re.compile(r"(?<![\w.])(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
-#: What precedes the exponent of a unit: the unit (or a bracket), then ``^`` or ``**`` and a
-#: sign (``m^2``, ``s**-1``); at the start of the text after the leading number, the same
-#: operator makes a power of that number (``2**2 m``).
+#: What precedes the exponent of a unit (``m^2``, ``s**-1``): a unit or a bracket, ``^`` or ``**``,
+#: a sign; right after the leading number it makes a power of that number (``2**2 m``).
 _POWER = re.compile(r"\S\s*(?:\^|\*\*)\s*[+-]?\s*$")
-#: Dashes that pint drops without a word (``"\u22120.3 m/s"`` would be +0.3 m/s): the minus
-#: sign, the figure, en and em dashes, the small and the full-width hyphen-minus.
-_DASHES = "\u2212\u2012\u2013\u2014\ufe63\uff0d"
-#: Such a dash right before a digit (or a decimal point and a digit) is a minus sign: the
-#: number's (``"\u22120.3 m/s"``), an exponent's (``"1.41e\u22123 m/s"``, ``"m^\u22122"``).
-_MINUS = re.compile(f"[{_DASHES}](?=\\.?\\d)")
-#: The 1 of a reciprocal unit (``1/s``, ``(1/s)``, a unit's name or a bracket after the
-#: slash): a unit, not a second number (``1/2`` is one).
+#: Minus signs besides '-' and Unicode's dashes (Pd), which pint drops without a word
+#: (``"\u22120.3 m/s"`` would be +0.3 m/s): minus, modifier, commercial, heavy; soft hyphen.
+_MINUS_SIGNS = "\u2212\u02d7\u2052\u2796\u00ad"
+_DIGIT_AHEAD = re.compile(r"\.?[0-9]")  # what makes a dash a minus sign: a number after it
+_TIMES = "\u00b7\u00d7\u22c5\u2219"  # multiplication signs (pint drops most): written ``*``
+_ASCII = ".+-*/^()_%,"  # the ASCII text holds besides letters, digits, spaces (a comma: refused)
+_SYMBOLS = "°‰⁰¹²³⁴⁵⁶⁷⁸⁹⁻"  # others pint reads: degree, per mille, superscript digits, minus
+#: The 1 of a reciprocal unit (``1/s``, ``(1/s)``): a unit, not a second number (``1/2`` is one).
 _RECIPROCAL = re.compile(r"(^|[\s(])1\s*/(?=\s*[A-Za-z(])")
 
 
@@ -122,19 +121,83 @@ def _angle_units(name: str, shown: str, q: Any, unit: str) -> None:
         )
 
 
+def _is_dash(c: str) -> bool:
+    """True for a dash or minus sign other than ``-`` (:data:`_MINUS_SIGNS`, Unicode's Pd)."""
+    return c != "-" and (c in _MINUS_SIGNS or unicodedata.category(c) == "Pd")
+
+
+def read_minus(text: str) -> str:
+    """``text`` with each dash or minus sign right before a number written ``-`` (``"\u22124"``
+    -> ``"-4"``, ``"1.41e\u20133 m/s"`` -> ``"1.41e-3 m/s"``); the rest unchanged."""
+    return "".join(
+        "-" if _is_dash(c) and _DIGIT_AHEAD.match(text, i + 1) else c for i, c in enumerate(text)
+    )
+
+
+def bare_number(value: Any) -> float | None:
+    """The number of ``value`` when it states no unit: a real number (not a bool), or text that
+    is only a number (as ``float`` reads it, any dash being ``-``: ``"\u22124"`` -> -4.0); None
+    for anything else (``"4 m/s"``, ``"fast"``)."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Real | str):
+        return None
+    text = "".join("-" if _is_dash(c) else c for c in value) if isinstance(value, str) else value
+    try:
+        return float(text)
+    except ValueError:
+        return None
+
+
+def bare_text(value: Any) -> Any:
+    """``value`` with ``-`` for its minus sign when it is text that is only a number
+    (``"\u22124"`` -> ``"-4"``, :func:`bare_number`); any other value unchanged."""
+    number = bare_number(value) if isinstance(value, str) else None
+    return value if number is None else "".join("-" if _is_dash(c) else c for c in value)
+
+
 def _minus_signs(name: str, text: str, unit: str) -> str:
-    """``text`` with each dash that pint would drop (:data:`_DASHES`) written ``-`` where it is
-    a minus sign (right before a digit: ``"\u22120.3 m/s"``, ``"1.41e\u22123 m/s"``);
-    ValueError naming ``name`` for such a dash anywhere else (``"0.3 \u2013 m/s"``)."""
-    out = _MINUS.sub("-", text)
-    bad = next((c for c in out if c in _DASHES), None)
+    """``text`` with its minus signs read (:func:`read_minus`), spaces ``" "``, multiplication
+    signs ``*``; ValueError naming ``name`` for a dash elsewhere (``"0.3 \u2013 m/s"``)."""
+    out = read_minus(text)
+    bad = next((c for c in out if _is_dash(c)), None)
     if bad is not None:
         example = "-0.4" if _plain(unit) else f"-1.0 {unit}"
         raise ValueError(
             f"{name}: {text!r} holds a dash (U+{ord(bad):04X}) that is not a minus sign right "
             f"before a number; write a negative value with '-', e.g. '{example}'"
         )
-    return out
+    return "".join(" " if c.isspace() else "*" if c in _TIMES else c for c in out)
+
+
+def _characters(name: str, text: str, shown: str, unit: str) -> None:
+    """ValueError naming ``name`` for a character of ``text`` (the user's ``shown``) that pint
+    would drop or misread (``"0.3 m # note"``, a zero-width space): text holds letters (``µm``,
+    ``Å``), ASCII digits, spaces, :data:`_ASCII` and :data:`_SYMBOLS` (``°``, ``s⁻¹``)."""
+    for c in text:
+        if c.isascii() and (c.isalnum() or c == " " or c in _ASCII):
+            continue
+        nfkc = unicodedata.normalize("NFKC", c)
+        letter = c.isalpha() and nfkc.isalpha() and f"a{c}".isidentifier()
+        if not c.isascii() and (letter or c in _SYMBOLS):  # not a mark pint drops: U+0E33
+            continue
+        what = f"U+{ord(c):04X} {unicodedata.name(c, '')}".rstrip()
+        raise ValueError(
+            f"{name}: {shown!r} holds {c!r} ({what}), which quantity text cannot hold (pint "
+            f"would drop or misread it); {_write_one(unit)}"
+        )
+
+
+def _written(name: str, text: str, shown: str, q: Any, unit: str) -> None:
+    """ValueError naming ``name`` unless pint read the number written in ``text`` (the user's
+    ``shown``; its reciprocal after a slash, ``"pi/4 rad"``): a power computes another
+    (``"(2)^2 m"`` is 4 m, ``"10\u207b\u00b3 m"`` 0.001 m)."""
+    first = _FIRST_NUMBER.search(text)
+    m, x = abs(float(q.magnitude)), float(first.group()) if first else 1.0
+    over = first is not None and text[: first.start()].rstrip().endswith("/")  # pi/4: 1/4
+    if first and not math.isclose(m, 1.0 / x if over and x else x, rel_tol=1e-12):
+        raise ValueError(
+            f"{name}: {shown!r} holds more than one number (pint would compute with them: "
+            f"{q:~}); {_write_one(unit)}"
+        )
 
 
 def _plain(unit: str) -> bool:
@@ -175,6 +238,7 @@ def _parse(name: str, text: str, unit: str) -> Any:
         raise ValueError(f"{name} is empty; {_write_one(unit)}")
     text = _minus_signs(name, shown, unit)
     refuse_comma(name, text, unit)
+    _characters(name, text, shown, unit)
     _one_number(name, text, shown, unit)
     try:
         q: Any = registry().Quantity(text)
@@ -185,6 +249,7 @@ def _parse(name: str, text: str, unit: str) -> Any:
                 f"expected a quantity in {unit}, e.g. '20 deg' for an angle"
             ) from None
         raise ValueError(f"{name}: cannot parse {shown!r} as a quantity ({exc})") from None
+    _written(name, text, shown, q, unit)
     _angle_units(name, shown, q, unit)
     return q
 
@@ -225,8 +290,7 @@ def _foreign(name: str, q: Any) -> Any:
 
 
 def _check_finite(name: str, q: Any, shown: Any) -> None:
-    """ValueError naming ``name`` when the number or Quantity ``q`` (of the text ``shown``) is
-    NaN or infinite: ``'nan'`` and ``'inf'`` are not values, with or without a unit."""
+    """ValueError naming ``name`` when the number or Quantity ``q`` (of ``shown``) is not finite."""
     m = getattr(q, "magnitude", q)
     if np.ndim(m) == 0 and not math.isfinite(float(m)):
         raise ValueError(f"{name} must be finite, got {shown!r}")
@@ -250,10 +314,9 @@ def magnitude(name: str, value: Any, unit: str) -> Any:
         if q.unitless and _plain(unit):  # a pure number asked for: "0.4"
             return float(q.magnitude)
         if q.unitless:
-            lead = _LEADING_NUMBER.fullmatch(_MINUS.sub("-", value))
-            bare = lead is not None and not lead.group(1).strip()
+            bare = bare_number(value) is not None
             shown = "deg" if unit == "rad" else unit  # an angle is written in degrees
-            example = f"{_MINUS.sub('-', value).strip()} {shown}" if bare else f"1.0 {shown}"
+            example = f"{bare_text(value).strip()} {shown}" if bare else f"1.0 {shown}"
             what = "has no unit" if bare else f"is a pure number ({q:~})"
             raise ValueError(
                 f"{name}: the string {value!r} {what}; pass a number in {unit} or a string "
@@ -277,8 +340,7 @@ def to_si(value: Any, unit: str, *, name: str = "value") -> float:
         q = _parse(name, str(value), unit)
         _check_finite(name, q, value)
         if q.unitless:
-            lead = _LEADING_NUMBER.fullmatch(_MINUS.sub("-", str(value)))
-            if not _plain(unit) and (lead is None or lead.group(1).strip()):
+            if not _plain(unit) and bare_number(str(value)) is None:
                 raise ValueError(
                     f"{name}: {value!r} is a pure number ({q:~}); give a number in {unit} or "
                     f"one with its unit, e.g. '1.0 {unit}'"
@@ -324,11 +386,14 @@ def angle_to_rad(value: Any, *, name: str = "angle") -> float:
 
 __all__ = [
     "angle_to_rad",
+    "bare_number",
+    "bare_text",
     "convert_quantity",
     "has_unit",
     "is_quantity",
     "magnitude",
     "parse_quantity",
+    "read_minus",
     "refuse_comma",
     "registry",
     "to_si",

@@ -12,6 +12,7 @@ import pytest
 from impactlab.analytic import (
     G0,
     friction_from_velocities,
+    impact_duration,
     mean_force_momentum,
     sliding_length,
 )
@@ -54,3 +55,9 @@ def test_sliding_length_refuses_a_negative_impulse() -> None:
     assert sliding_length(22e-6, -1.41, 4.106e-3, ANGLE, 0.2) == pytest.approx(-1400e-6, rel=1e-3)
     with pytest.raises(ValueError, match=r"got 2e-06 s$"):  # an array: the first short element
         sliding_length(22e-6, -1.41, np.array([4e-3, 2e-6, 1e-6]), ANGLE, 0.2)
+
+
+@pytest.mark.parametrize("alpha_", [0.1, [-0.3, 0.1], np.array([[-0.3], [0.1]])])
+def test_a_sticking_alpha_is_shown_as_a_plain_number(alpha_) -> None:
+    with pytest.raises(ValueError, match=r"^alpha_ must be < 0 \(gross sliding\), got 0\.1: "):
+        impact_duration(22e-6, 1.4e-3, -1.41, alpha_)

@@ -179,3 +179,39 @@ def test_errors_name_sigmas_and_file_keys(cli_main: CliMain, tmp_path: Path) -> 
     assert _error(cli_main, "invert", "--file", str(path)).startswith(
         "sigma.e (in the measurement file) = 0.3 does not fit its range"
     )
+
+
+# -- a value written with a Unicode minus sign keeps its unit for a bare sigma --------------------
+
+
+def test_a_bare_sigma_takes_the_unit_of_a_value_with_a_unicode_minus(cli_main: CliMain) -> None:
+    data = _json(cli_main, *_replaced("--vi", "\u2212141 cm/s"), "--sigma-vi", "2")
+    assert data["inputs"]["v_i"]["sigma"] == pytest.approx(0.02, rel=1e-12)  # 2 cm/s, not m/s
+    data = _json(cli_main, *_replaced("--ls", "\u20101400 um"), "--sigma-ls", "50")
+    assert data["inputs"]["sliding_length"]["sigma"] == pytest.approx(50e-6, rel=1e-12)
+
+
+def test_a_file_sigma_takes_the_unit_of_a_value_with_a_unicode_minus(
+    cli_main: CliMain, tmp_path: Path
+) -> None:
+    path = tmp_path / "m.toml"
+    path.write_text(
+        'angle = "20 deg"\nvi = "\u2212141 cm/s"\ne = 0.5\nmu = 0.2\ndelta_p = "22 um"\n'
+        'ls = "\u22121400 um"\nn_samples = 200\n[sigma]\nls = 50\nvi = 2\n',
+        encoding="utf-8",
+    )
+    data = _json(cli_main, "invert", "--file", str(path))
+    assert data["inputs"]["sliding_length"]["sigma"] == pytest.approx(50e-6, rel=1e-12)
+    assert data["inputs"]["v_i"]["sigma"] == pytest.approx(0.02, rel=1e-12)
+
+
+def test_a_file_value_error_says_it_is_in_the_file(cli_main: CliMain, tmp_path: Path) -> None:
+    path = tmp_path / "m.toml"
+    path.write_text('case = "paper-20"\nv_i = "fast"\n')
+    assert _error(cli_main, "invert", "--file", str(path)).startswith(
+        "v_i in the measurement file: cannot parse 'fast' as a quantity"
+    )
+    path.write_text('case = "paper-20"\nangle = 20\n')
+    assert _error(cli_main, "invert", "--file", str(path)) == (
+        "angle = 20 in the measurement file has no unit: give a unit, e.g. '20 deg' or '0.35 rad'"
+    )

@@ -93,3 +93,43 @@ def test_drop_batch_shows_a_notebook_summary() -> None:
     # the same table as BatchResult's (the rigid rod's drop is its impact, to the same digits)
     assert b._repr_html_().count("<tr>") == html.count("<tr>")
     assert "law ghaednia, friction coulomb" in html
+
+
+@pytest.mark.parametrize(
+    "velocity",
+    [
+        [(-0.5, -1.41), (-0.3, -2.0)],  # two cases' pairs: read as vx=[-0.5, -1.41] before
+        ((0.0, -1.41), (0.0, -2.0)),
+        np.array([[0.0, 0.0], [-1.41, -2.0]]),
+    ],
+)
+def test_two_by_two_velocity_is_refused_as_ambiguous(velocity: object) -> None:
+    with pytest.raises(
+        ValueError, match=r"^velocity: .* could be two cases' \(vx, vy\) pairs"
+    ) as err:
+        il.simulate_batch(ROD, angle=[0.35, 0.35], mu=0.2, velocity=velocity)
+    message = str(err.value)
+    assert "\n" not in message and "pass vx= and vy=" in message
+
+
+def test_velocity_components_are_numbers_or_1d_arrays() -> None:
+    pair = (np.array([-0.5, -0.3]), np.array([-1.41, -2.0]))  # stated as the arrays (vx, vy)
+    arrays = il.simulate_batch(ROD, angle=0.35, mu=0.2, velocity=pair)
+    split = il.simulate_batch(ROD, angle=0.35, mu=0.2, vx=[-0.5, -0.3], vy=[-1.41, -2.0])
+    np.testing.assert_array_equal(arrays.out, split.out)
+    assert arrays.inputs["vy"].tolist() == [-1.41, -2.0]
+    with pytest.raises(ValueError, match=r"^velocity must be a pair .* each a number or a 1-D"):
+        il.simulate_batch(ROD, angle=0.35, velocity=([[0.0, 0.1, 0.2]], [-1.0, -1.2, -1.4]))
+
+
+def test_angle_and_approach_refusals_name_the_value() -> None:
+    b = il.simulate_batch(ROD, angle=[0.35, 2.0, 0.35], vy=[-1.41, -1.41, 1.0], mu=0.2)
+    assert b.messages == [
+        "ok",
+        "angle outside (0, pi/2] radians: angle = 2.0 rad = 114.6 deg",
+        "the contact point does not approach the flat (normal velocity >= 0): vn = +1.0 m/s",
+    ]
+    d = il.simulate_drops(ROD, angle=[0.35, 2.0, 0.35], vy=[-1.41, -1.41, 1.0], mu=0.2)
+    assert d.messages[1] == b.messages[1]
+    assert d.messages[2].endswith("(normal velocity >= 0): vy = 1.0 m/s, spin = 0.0 rad/s, "
+                                  "angle = 0.35 rad")  # fmt: skip

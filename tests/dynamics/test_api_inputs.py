@@ -85,6 +85,11 @@ def test_brake_refuses_a_material_meyer_index_of_3_naming_it() -> None:
         with pytest.raises(ValueError, match=message) as err:
             run()
         assert "\n" not in str(err.value)
+        # the advice fits a material by values (the command line's n=) and Python alike
+        assert str(err.value).endswith(
+            "give the material an index below 3 (its n= key, e.g. 'n=2.2', or meyer_index), or "
+            "another law (in Python also law_params={'meyer_index': ...})"
+        )
 
 
 def test_brake_names_the_body_material_when_it_yields_first() -> None:

@@ -3,6 +3,7 @@ an attribute, the dent's grid checked, a sphere's angles left out of to_pint, re
 
 from __future__ import annotations
 
+import json
 import math
 import warnings
 from pathlib import Path
@@ -113,3 +114,21 @@ def test_rerun_of_a_record_still_runs(impact: il.ImpactResult) -> None:
         warnings.simplefilter("error")
         again = il.rerun(impact.to_dict())
     assert again.e == impact.e
+
+
+def test_rerun_of_json_text_says_to_read_it(impact: il.ImpactResult) -> None:
+    text = json.dumps(impact.to_dict(), indent=2)
+    with pytest.raises(
+        ValueError, match=r"got JSON text '\{ \"e\": .{20,40}\.\.\.': read it"
+    ) as err:
+        il.rerun(text)
+    message = str(err.value)
+    assert "\n" not in message and "rerun(json.loads(text))" in message and len(message) < 200
+    assert il.rerun(json.loads(text)).e == impact.e
+
+
+def test_rerun_takes_a_result(impact: il.ImpactResult, drop: il.DropResult) -> None:
+    assert il.rerun(impact).e == impact.e
+    assert il.rerun(impact, mu=0.3).e == il.simulate(ROD, il.AISI_1010, **(KW | {"mu": 0.3})).e
+    again = il.rerun(drop)
+    assert isinstance(again, il.DropResult) and again.e == drop.e

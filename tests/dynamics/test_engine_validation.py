@@ -163,7 +163,7 @@ def test_batch_flags_bad_cases_and_never_crashes() -> None:
     # a sphere takes no angle (refused when given: test_angle_rule_echo); a NaN is flagged
     assert list(b.status) == [0, 2, 0, 4, 4, 1]
     assert np.isnan(b.e[1:]).sum() >= 4 and np.isfinite(b.e[0])
-    assert b.messages[1] == STATUS_MESSAGES[2]
+    assert b.messages[1] == f"{STATUS_MESSAGES[2]}: vn = +1.0 m/s"
     # a refused case keeps its incoming velocities where the inputs define them, NaN elsewhere
     assert b.vn_in[1] == 1.0 and np.isnan(b.vn_in[3])
     failed = [f for f in OUTPUT_FIELDS if f not in ("vn_in", "vt_in")]

@@ -45,8 +45,9 @@ def test_refused_inputs_name_their_rule() -> None:
     assert spin.startswith("invalid input: spin = 1000000.0") and "10000 m/s" in spin
     assert mu == "invalid input: mu = -0.1: mu must lie in [0, 1000]"
     assert nan == "invalid input: mu = nan is not finite"
-    assert angle == S.STATUS_MESSAGES[S.ST_BAD_ANGLE]
-    assert receding == S.STATUS_MESSAGES[S.ST_NOT_APPROACHING]
+    assert angle == f"{S.STATUS_MESSAGES[S.ST_BAD_ANGLE]}: angle = 0.0 rad = 0 deg"
+    values = "vy = 1.0 m/s, spin = 0.0 rad/s, angle = 0.3 rad"
+    assert receding == f"{S.STATUS_MESSAGES[S.ST_NOT_APPROACHING]}: {values}"
     with pytest.raises(ValueError, match=r"approach speed .* is below 1e-09 m/s"):
         simulate_drop(ROD, angle=0.3, velocity=(0, -1e-12))  # the same limit, one drop
 

@@ -51,8 +51,9 @@ def magnitude(name: str, value: Any, what: str) -> Any:
     ``name`` and the convention (the paper's tables print these negative)."""
     x = arr(name, value, unit="m")
     if (x < 0).any():
+        bad = float(x.ravel()[np.argmax(x < 0)])
         raise ValueError(
-            f"{name} must be >= 0 ({what}, a magnitude in m), got {x.ravel()[np.argmax(x < 0)]!r}: "
+            f"{name} must be >= 0 ({what}, a magnitude in m), got {bad!r}: "
             "the paper's tables print it negative, impactlab takes the magnitude"
         )
     return x

@@ -195,7 +195,7 @@ def impact_duration(
         )
     if (al >= 0).any():
         raise ValueError(
-            f"alpha_ must be < 0 (gross sliding), got {al.ravel()[np.argmax(al.ravel() >= 0)]!r}: "
+            f"alpha_ must be < 0 (gross sliding), got {float(al.ravel()[np.argmax(al >= 0)])!r}: "
             "alpha >= 0 means mu >= mu_c, the tip sticks and Eq. 12 cannot give the duration"
         )
     g_ = check_nonnegative("g", g, "m/s^2")

@@ -83,7 +83,7 @@ def _value(
             return to_unit(f"{str(v).strip()} {column_unit}", unit, name=name)
         if column_unit:
             to_unit(f"1 {column_unit}", unit, name=f"{name} (column unit [{column_unit}])")
-        return to_unit(float(v) if bare(v) else v, unit, name=name)
+        return to_unit(v, unit, name=name)
     except ValueError as exc:
         raise ValueError(f"{where}: {exc}") from None
 

@@ -32,6 +32,7 @@ from impactlab.calibrate.measurement_columns import fraction
 from impactlab.calibrate.quantities import FRACTIONS, KINEMATICS, NUMERIC_INPUTS
 from impactlab.calibrate.values import bare, did_you_mean, to_unit
 from impactlab.sweep.inputs import INPUTS
+from impactlab.units import bare_text
 
 __all__ = ["PRIOR_KINDS", "Parameter", "parse_parameter"]
 
@@ -254,7 +255,7 @@ def _mixed_units(name: str, unit: str, spec: Any, args: list[Any]) -> None:
     if not given:
         return
     for a in args:
-        text = str(a).strip()
+        text = bare_text(str(a).strip())
         if bare(a) and float(text) != 0.0 and math.isfinite(float(text)):
             hint = f"{text} {_suggested(name, unit, text, given[0])}"
             raise ValueError(
@@ -272,7 +273,7 @@ def _mixed_percent(name: str, spec: Any, args: list[Any]) -> None:
     if not percent:
         return
     for a in args:
-        text = str(a).strip()
+        text = bare_text(str(a).strip())
         if bare(a) and float(text) != 0.0 and math.isfinite(float(text)):
             raise ValueError(
                 f"prior of {name}: {spec!r}: {text} has no unit while "

@@ -5,23 +5,21 @@ for a misspelt key (``impactlab._validation.did_you_mean``)."""
 
 from __future__ import annotations
 
-import re
 from functools import cache
 from typing import Any
 
 from impactlab._validation import did_you_mean
-from impactlab.units import magnitude, to_si
+from impactlab.materials.inputs import brinell_text
+from impactlab.units import bare_number, magnitude, to_si
 
 __all__ = ["BRINELL_UNIT", "bare", "did_you_mean", "is_number", "to_unit"]
 
 #: The unit of a Brinell hardness (``impactlab.sweep.inputs``): its number HB is in kgf/mm^2.
 BRINELL_UNIT = "kgf/mm^2"
-#: A Brinell hardness written with its symbol: ``105 HB``, ``105 HBW`` or ``HBW 105``.
-_HB = re.compile(r"^\s*(?:(?P<a>[^\sA-Za-z][^\s]*)\s*HBW?|HBW?\s+(?P<b>\S+))\s*$")
 
 
 def is_number(text: str) -> bool:
-    """True when ``text`` is a plain number (no unit)."""
+    """True when ``float`` reads ``text`` as a number (no unit; its minus sign ``-``)."""
     try:
         float(text)
     except ValueError:
@@ -30,10 +28,9 @@ def is_number(text: str) -> bool:
 
 
 def bare(v: Any) -> bool:
-    """A plain number, or text that is only a number (no unit)."""
-    return (isinstance(v, int | float) and not isinstance(v, bool)) or (
-        isinstance(v, str) and is_number(v)
-    )
+    """A plain number, or text that is only a number (no unit; its minus sign may be any dash,
+    as in quantity text: ``"\u2212141"``, :func:`impactlab.units.bare_number`)."""
+    return bare_number(v) is not None
 
 
 @cache
@@ -53,19 +50,16 @@ def to_unit(value: Any, unit: str, *, name: str) -> float:
     x = to_si(value, unit, name=name)  # parses and checks; the SI magnitude
     if _si_factor(unit) == 1.0:
         return x
-    if bare(value):
-        return float(value)
-    return float(magnitude(name, str(value), unit))
+    number = bare_number(value)
+    return number if number is not None else float(magnitude(name, str(value), unit))
 
 
 def _brinell(value: Any, unit: str, name: str) -> Any:
     """A Brinell hardness written with its symbol HB or HBW (``"105 HB"``, ``"HBW 105"``) as
     ``"105 kgf/mm^2"``; the symbol on another input is refused, naming the input."""
-    if not isinstance(value, str):
-        return value
-    m = _HB.match(value)
-    if m is None:
+    text = brinell_text(value)  # as a material's HB reads it (impactlab.materials.inputs)
+    if text is value:
         return value
     if unit != BRINELL_UNIT:
         raise ValueError(f"{name}: {value!r} is a Brinell hardness (HB), not a quantity of {unit}")
-    return f"{m.group('a') or m.group('b')} {BRINELL_UNIT}"
+    return text

@@ -15,6 +15,7 @@ from typing import Any
 
 from impactlab.cli._common import UserError, any_angle, parse_rod_table, quantity
 from impactlab.cli.config_values import check_booleans
+from impactlab.units import bare_number, read_minus
 
 __all__ = [
     "ALIAS",
@@ -91,16 +92,20 @@ def _angle_sigma(value: Any, name: str) -> float:
 
 def parse_value(value: Any, unit: str, name: str) -> float:
     if unit == "degree":
+        if name.endswith(IN_FILE) and _is_bare(value):  # "angle = 20": as the file writes it
+            raise UserError(
+                f"{name.removesuffix(IN_FILE).strip()} = {value!r} {IN_FILE} has no unit: give a "
+                "unit, e.g. '20 deg' or '0.35 rad'"
+            )
         if name.startswith(("--sigma-", "sigma.")):  # a standard deviation, not the angle
             return _angle_sigma(value, name)
         return _inversion_angle(value, name)
     if unit:
         return quantity(value, unit, name)  # type: ignore[return-value]
     if isinstance(value, str):
-        try:
-            return float(value)
-        except ValueError:
-            raise UserError(f"{name} must be a number, got {value!r}") from None
+        if (number := bare_number(value)) is None:
+            raise UserError(f"{name} must be a number, got {value!r}")
+        return number
     if isinstance(value, bool) or not isinstance(value, int | float):
         raise UserError(f"{name} must be a number, got {value!r}")
     return float(value)
@@ -111,17 +116,14 @@ def _unit_text(value: Any) -> str | None:
     a bare number (or a value that is not text)."""
     if not isinstance(value, str):
         return None
-    m = _NUMBER_AND_UNIT.fullmatch(value.strip())
+    m = _NUMBER_AND_UNIT.fullmatch(read_minus(value).strip())  # "\u2212141 cm/s": cm/s
     unit = m.group(1).strip() if m is not None else ""
     return unit or None
 
 
 def _is_bare(value: Any) -> bool:
-    try:
-        float(str(value).strip())
-    except ValueError:
-        return False
-    return True
+    """True for a number, or text that is only a number (``"50"``, ``"\u22120.5"``)."""
+    return bare_number(str(value)) is not None
 
 
 def parse_sigma(name: str, sigma: Any, value: Any) -> float:
@@ -145,7 +147,7 @@ def parse_sigma(name: str, sigma: Any, value: Any) -> float:
 def _measured(
     table: dict[str, Any], where: str, prefix: str = "", more: tuple[str, ...] = ()
 ) -> dict[str, float]:
-    """The measured values (or their sigmas) of a TOML table, by input name."""
+    """The measured values (or their sigmas) of a measurement file's table, by input name."""
     out: dict[str, float] = {}
     seen: dict[str, str] = {}
     for key, val in table.items():
@@ -153,7 +155,7 @@ def _measured(
             allowed = ", ".join(sorted([*ALIAS, *more]))
             raise UserError(f"unknown key {key!r} in {where}; allowed: {allowed}")
         _once(ALIAS[key], key, seen, where)
-        out[ALIAS[key]] = parse_value(val, FIELDS[ALIAS[key]][0], prefix + key)
+        out[ALIAS[key]] = parse_value(val, FIELDS[ALIAS[key]][0], f"{prefix}{key} {IN_FILE}")
     return out
 
 
@@ -190,7 +192,7 @@ def _file_sigmas(table: dict[str, Any], values: dict[str, Any]) -> dict[str, flo
         _once(name, key, seen, "[sigma]")
         unit = FIELDS[name][0]
         if not unit or unit == "degree" or not _is_bare(sigma):
-            out[name] = parse_value(sigma, unit, f"sigma.{key}")
+            out[name] = parse_value(sigma, unit, f"sigma.{key} {IN_FILE}")
             continue
         if name not in raw:
             value_keys = " or ".join(repr(k) for k in FIELDS[name][1][:2])
@@ -201,7 +203,7 @@ def _file_sigmas(table: dict[str, Any], values: dict[str, Any]) -> dict[str, flo
             )
         given = _unit_text(raw[name])
         text = f"{str(sigma).strip()} {given}" if given else sigma
-        out[name] = parse_value(text, unit, f"sigma.{key}")
+        out[name] = parse_value(text, unit, f"sigma.{key} {IN_FILE}")
     return out
 
 

@@ -28,7 +28,12 @@ from impactlab.dynamics.kernels.inputs import (
     problem_text,
 )
 from impactlab.dynamics.kernels.layout import OUTPUT_FIELDS
-from impactlab.dynamics.kernels.status import STATUS_MESSAGES
+from impactlab.dynamics.kernels.status import (
+    ST_BAD_ANGLE,
+    ST_BAD_INPUT,
+    ST_NOT_APPROACHING,
+    STATUS_MESSAGES,
+)
 from impactlab.flags import ADVISORY_FLAGS
 
 
@@ -141,8 +146,31 @@ class BatchStatus:
     @property
     def messages(self) -> list[str]:
         """The status message of each case (``kernels.status.STATUS_MESSAGES``); a case refused
-        for its inputs (ST_BAD_INPUT) names the input, its value and its rule (``refusals``)."""
+        for its inputs names the input, its value and its rule: ST_BAD_INPUT (``refusals``),
+        ST_BAD_ANGLE (the angle, in rad and deg) and ST_NOT_APPROACHING (the contact point's
+        normal velocity ``vn_in``, else vy and the spin)."""
         texts = [STATUS_MESSAGES.get(int(s), f"status {int(s)}") for s in self.status]
         for i, why in self.refusals.items():
-            texts[i] = f"invalid input: {why}"
+            bad_input = int(self.status[i]) == ST_BAD_INPUT
+            texts[i] = f"invalid input: {why}" if bad_input else f"{texts[i]}: {why}"
+        status = np.asarray(self.status)
+        for j in np.flatnonzero((status == ST_BAD_ANGLE) | (status == ST_NOT_APPROACHING)):
+            if int(j) not in self.refusals:
+                texts[j] = f"{texts[j]}: {self._refused_values(int(j))}"
         return texts
+
+    def _refused_values(self, i: int) -> str:
+        """The inputs of case ``i`` that its status (ST_BAD_ANGLE, ST_NOT_APPROACHING) reads."""
+        inputs: Mapping[str, np.ndarray] = getattr(self, "inputs", {})
+        th, vy, w = (
+            float(inputs[k][i]) if k in inputs else math.nan for k in ("angle", "vy", "spin")
+        )
+        if int(self.status[i]) == ST_BAD_ANGLE:
+            return f"angle = {th!r} rad = {math.degrees(th):.4g} deg"
+        try:
+            vn = float(self["vn_in"][i])  # type: ignore[index]
+        except KeyError:  # a batch without the contact point's velocity
+            vn = math.nan
+        if math.isfinite(vn):
+            return f"vn = {vn:+} m/s"
+        return f"vy = {vy!r} m/s, spin = {w!r} rad/s, angle = {th!r} rad"

@@ -131,8 +131,9 @@ def check_brake_meyer(body: Rod | Sphere, flat: Material, law: Any, law_params: 
         raise ValueError(
             f"meyer_index = {n!r} of {whose} {weaker.name!r} (the material that yields first, "
             "whose index Brake's law takes) must lie in (2, 3) for Brake's Eq. 24: at n = 3 "
-            "its plastic term, weighted by 1 - sech((3 - n) x), vanishes; give the material a "
-            "meyer_index below 3, law_params={'meyer_index': ...}, or another law"
+            "its plastic term, weighted by 1 - sech((3 - n) x), vanishes; give the material an "
+            "index below 3 (its n= key, e.g. 'n=2.2', or meyer_index), or another law (in "
+            "Python also law_params={'meyer_index': ...})"
         )
 
 

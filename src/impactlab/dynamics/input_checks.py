@@ -283,19 +283,44 @@ def batch_velocity(
 
 
 def _velocity_pair(velocity: Any) -> tuple[Any, Any]:
-    """The two components of a batch's ``velocity=(vx, vy)``: a pair of scalars or arrays, or
-    one array or Quantity whose first axis has length 2; ValueError otherwise."""
+    """The two components of a batch's ``velocity=(vx, vy)``, each a scalar or a 1-D array (or
+    one array or Quantity whose first axis has length 2); ValueError otherwise, and for a 2 x 2
+    input of lists or one array: two cases' (vx, vy) pairs would read as (vx, vy) arrays."""
     if not isinstance(velocity, str | bytes | Mapping | set | frozenset):
         try:
             if len(velocity) == 2:
                 vx, vy = velocity
-                return vx, vy
+                if _pairs(velocity, vx, vy):
+                    raise ValueError(
+                        f"velocity: {' '.join(_velocity_given(velocity).split())} could be two "
+                        "cases' (vx, vy) pairs or the arrays (vx, vy); pass vx= and vy= (each a "
+                        "number or a 1-D array), or velocity=(np.array(vx), np.array(vy))"
+                    )
+                if all(s is not None and len(s) <= 1 for s in map(_shape, (vx, vy))):
+                    return vx, vy
         except TypeError:  # no length: one number
             pass
     raise ValueError(
         f"velocity must be a pair (vx, vy) in m/s, each a number or a 1-D array (or pass vx= "
         f"and vy=), got {_velocity_given(velocity)}"
     )
+
+
+def _pairs(velocity: Any, vx: Any, vy: Any) -> bool:
+    """True for a 2 x 2 ``velocity=`` that could be two cases' (vx, vy) pairs: one 2 x 2 array,
+    or two lists of two (``velocity=(np.array(vx), np.array(vy))`` states its components)."""
+    arrays = [isinstance(v, np.ndarray) or hasattr(v, "magnitude") for v in (velocity, vx, vy)]
+    if arrays[0]:
+        return _shape(velocity) == (2, 2)
+    return _shape(vx) == _shape(vy) == (2,) and not (arrays[1] and arrays[2])
+
+
+def _shape(value: Any) -> tuple[int, ...] | None:
+    """The shape of a number, an array, a Quantity or nested lists (None: ragged lists)."""
+    try:
+        return tuple(np.shape(value))
+    except ValueError:
+        return None
 
 
 #: How to build a body, for a class given where an instance is needed.

@@ -315,14 +315,26 @@ def _run_one(x: ImpactInputs, history: bool) -> ImpactResult:
     return impact_result(x, out, hist[:nh] if history else None)
 
 
-def rerun(record: Mapping[str, Any], **changes: Any) -> ImpactResult | DropResult:
-    """Run a recorded impact or drop again: ``record`` is a result's ``to_dict()`` (or its
-    ``input``, or the JSON of ``impactlab simulate --json`` or ``impactlab drop --json``, read
-    with ``json.load``), run by the function it names (``simulate``, or ``simulate_drop`` for a
-    drop of a rigid or flexible rod); ``changes`` override its arguments
-    (``rerun(r.to_dict(), mu=0.3)``; a new ``velocity`` or ``speed`` and ``incidence`` replace
-    the recorded velocity). ValueError when the record is not one, or is not a mapping (a file
-    name: ``rerun(json.load(open(path)))``; ``impactlab simulate --from FILE`` reads one)."""
+def rerun(
+    record: Mapping[str, Any] | ImpactResult | DropResult, **changes: Any
+) -> ImpactResult | DropResult:
+    """Run a recorded impact or drop again: ``record`` is a result (an ``ImpactResult`` or a
+    ``DropResult``), its ``to_dict()`` (or its ``input``, or the JSON of ``impactlab simulate
+    --json`` or ``impactlab drop --json``, read with ``json.load``), run by the function it
+    names (``simulate``, or ``simulate_drop`` for a drop of a rigid or flexible rod);
+    ``changes`` override its arguments (``rerun(r, mu=0.3)``; a new ``velocity`` or ``speed``
+    and ``incidence`` replace the recorded velocity). ValueError when the record is not one,
+    or is not a mapping (a file name: ``rerun(json.load(open(path)))``; JSON text:
+    ``rerun(json.loads(text))``; ``impactlab simulate --from FILE`` reads a file)."""
+    if isinstance(record, ImpactResult | DropResult):  # its record: what to_dict() holds
+        record = record.to_dict()
+    if isinstance(record, str) and record.lstrip().startswith("{"):
+        text = " ".join(record.split())
+        shown = text if len(text) <= 40 else f"{text[:40]}..."
+        raise ValueError(
+            f"record must be a result's to_dict() or its JSON read back, got JSON text "
+            f"{shown!r}: read it first, rerun(json.loads(text))"
+        )
     if isinstance(record, str | os.PathLike):
         raise ValueError(
             f"record must be a result's to_dict() or its JSON read back, got the file name "

@@ -8,7 +8,9 @@ One reader for every input (the Python API's :func:`get_material`, every command
 - a definition by values, ``"E=69GPa, nu=0.33, Sy=276MPa, rho=2700kg/m^3"`` (a mapping with
   the same keys works too): E, nu, the yield strength and the density are **required**,
   the Brinell hardness (``HB``), the Meyer index (``n``), ``name`` and ``condition`` optional.
-  Quantities carry units; a bare number is in SI (Pa, kg/m^3; HB in kgf/mm^2);
+  Quantities carry units (``HB=95 HB``; ``{"value": 69, "unit": "GPa"}`` in a mapping, as
+  ``impactlab materials NAME --json`` writes them, whose descriptive keys are read past); a
+  bare number is in SI (Pa, kg/m^3; HB in kgf/mm^2);
 - the path of a TOML file holding such a table (top level or under ``[material]``).
 
 A definition by values is complete or refused: it never borrows a library entry's other
@@ -30,7 +32,7 @@ from typing import Any
 from impactlab._validation import did_you_mean, read_text_file, value_text
 from impactlab.materials.core import PLAUSIBLE, Material, brinell_to_pa
 from impactlab.materials.library import ALIASES, PRESETS
-from impactlab.units import to_si
+from impactlab.units import read_minus, to_si
 
 #: Keys of a definition by values -> (Material field, SI unit; "" for text, "1" for numbers).
 KEYS: dict[str, tuple[str, str]] = {
@@ -53,6 +55,20 @@ KEYS: dict[str, tuple[str, str]] = {
 REQUIRED: tuple[str, ...] = ("E", "nu", "yield_strength", "density")
 _SPELLED = {"E": "E", "nu": "nu", "yield_strength": "Sy", "density": "rho"}
 EXAMPLE = "E=69GPa, nu=0.33, Sy=276MPa, rho=2700kg/m^3"
+#: Keys of ``impactlab materials NAME --json`` that describe an entry (its library key, its
+#: source, the source's citation and address, a note): read past by a definition by values.
+DESCRIPTIVE: tuple[str, ...] = ("key", "source", "note", "citation", "url")
+#: A Brinell hardness written with its symbol: ``105 HB``, ``105 HBW`` or ``HBW 105``.
+_HB = re.compile(r"^\s*(?:(?P<a>[^\sA-Za-z][^\s]*)\s*HBW?|HBW?\s+(?P<b>\S+))\s*$")
+#: The number that leads a quantity text (its exponent's digits are no power of a unit).
+_LEAD = re.compile(r"\s*[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
+
+
+def brinell_text(value: Any) -> Any:
+    """A Brinell hardness written with its symbol HB or HBW (``"105 HB"``, ``"HBW 105"``) as
+    ``"105 kgf/mm^2"`` (a Brinell number is kgf/mm^2); any other value unchanged."""
+    m = _HB.match(value) if isinstance(value, str) else None
+    return value if m is None else f"{m.group('a') or m.group('b')} kgf/mm^2"
 
 
 def _key(name: str) -> str:
@@ -83,8 +99,11 @@ def _number(field: str, unit: str, value: Any, label: str) -> float:
         return x
     if isinstance(value, bool):
         raise ValueError(f"{label}: expected a quantity in {unit}, got {value!r}")
-    if isinstance(value, str):  # "kg/m3": a power written without "^"
-        value = re.sub(r"(?<=[A-Za-z])([23])\b", r"^\1", value)
+    if isinstance(value, str):  # "kg/m3": a power written without "^", after the number
+        value = brinell_text(value) if field == "brinell_hardness" else value
+        lead = _LEAD.match(read_minus(value))
+        cut = lead.end() if lead else 0
+        value = value[:cut] + re.sub(r"(?<=[A-Za-z])([23])\b", r"^\1", value[cut:])
     x = to_si(value, unit, name=label)  # SI: a hardness in Pa
     x = x / brinell_to_pa(1.0) if unit == "kgf/mm^2" else x
     _check_bare(field, value, x, label)
@@ -133,6 +152,8 @@ def from_values(values: Mapping[str, Any], where: str = "material") -> Material:
     fields: dict[str, Any] = {}
     for raw, value in values.items():
         key = str(raw).strip().lower()
+        if key in DESCRIPTIVE:
+            continue
         if key not in KEYS:
             raise ValueError(
                 f"{where}: unknown property {str(raw)!r}; allowed: E, nu, Sy (yield_strength), "
@@ -143,6 +164,10 @@ def from_values(values: Mapping[str, Any], where: str = "material") -> Material:
         if field in fields:
             raise ValueError(f"{where}: {field} is given twice")
         label = f"{where} {str(raw).strip()}"
+        if isinstance(value, Mapping):  # {"value": 95.0, "unit": "kgf/mm^2"}; null: unset
+            value = _object(value, unit, label)
+            if value is None:
+                continue
         if unit == "bool":
             fields[field] = _flag(value, label)
         else:
@@ -173,6 +198,19 @@ def from_values(values: Mapping[str, Any], where: str = "material") -> Material:
             "another name"
         )
     return entry
+
+
+def _object(value: Mapping[str, Any], unit: str, label: str) -> Any:
+    """A quantity written ``{"value": x, "unit": u}`` (``impactlab materials NAME --json``): x
+    itself when u is the key's own unit (a bare number is in it), else ``"x u"``; None for an
+    unset value (x null)."""
+    if set(value) != {"value", "unit"} or unit in ("", "bool"):
+        raise ValueError(
+            f"{label}: expected a number or a quantity ('69 GPa', or {{'value': 69, 'unit': "
+            f"'GPa'}} in a mapping), got {dict(value)!r}"
+        )
+    x, given = value["value"], str(value["unit"]).strip()
+    return x if x is None or given in (unit, "") else f"{x} {given}"
 
 
 #: The values a material by values must share with a library entry whose name it carries
@@ -280,12 +318,12 @@ def get_material(value: Any, where: str = "material") -> Material:
     entry = from_library(text)
     if entry is not None:
         return entry
+    prefix = "" if where == "material" else f"{where}: "  # a caller's wrapper names its input
     if text.lower().endswith(".toml"):
         path = Path(text)
         if not path.is_file():
-            raise ValueError(f"{where}: material file {text!r} does not exist")
+            raise ValueError(f"{prefix}material file {text!r} does not exist")
         return from_file(path, where)
-    prefix = "" if where == "material" else f"{where}: "
     near = _nearest(_key(text))
     raise ValueError(
         f"{prefix}unknown material {text!r}{near}; known: {library_names()} (see 'impactlab "
@@ -294,16 +332,20 @@ def get_material(value: Any, where: str = "material") -> Material:
 
 
 def _nearest(key: str) -> str:
-    """`` (did you mean 'x'?)`` for the library name or alias nearest to ``key``: one that
-    holds it, or that it holds, (``-`` and ``.`` aside; the closest such), else the nearest
-    spelling (``impactlab._validation.did_you_mean``), else ``""``."""
+    """`` (did you mean 'x'?)`` for the library name or alias nearest to ``key``: one whose
+    first word it is (``al``: al-6061-t6), else one that holds it, or that it holds, (``-``
+    and ``.`` aside; the closest such), else the nearest spelling (``impactlab._validation.
+    did_you_mean``); ``""`` for none, and for one character (``a``: nothing is near)."""
     names = (*PRESETS, *ALIASES)
 
     def bare(text: str) -> str:
         return re.sub(r"[-._]", "", text)
 
     k = bare(key)
-    holding = [n for n in names if k and (k in bare(n) or (len(bare(n)) >= 3 and bare(n) in k))]
+    if len(k) < 2:
+        return ""
+    holding = [n for n in names if k in bare(n) or (len(bare(n)) >= 3 and bare(n) in k)]
+    holding = [n for n in holding if n.split("-")[0] == key] or holding
     if holding:
         best = difflib.get_close_matches(key, holding, n=1, cutoff=0.0)
         name = best[0] if best else holding[0]

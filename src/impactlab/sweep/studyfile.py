@@ -16,8 +16,6 @@ from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import Any
 
-import numpy as np
-
 from impactlab._validation import read_text_file
 from impactlab.contact.law_file import read_law_file
 from impactlab.sweep.dimensions import Axis, Sample, Value
@@ -27,14 +25,15 @@ from impactlab.sweep.distributions import (
     distribution_from_dict,
 )
 from impactlab.sweep.inputs import INPUTS, UNIT_REQUIRED, get_input
-from impactlab.sweep.limits import DEFAULT_MAX_CASES, check_max_cases, too_many
+from impactlab.sweep.limits import DEFAULT_MAX_CASES, check_max_cases
 from impactlab.sweep.options import (
     DEFAULT_CHUNK_SIZE,
     STUDY_FORMAT,
     EngineOptions,
     UncertaintySpec,
 )
-from impactlab.units import convert_quantity, parse_quantity
+from impactlab.sweep.ranges import Limit, range_values
+from impactlab.units import bare_text, convert_quantity, parse_quantity
 from impactlab.units import registry as units_registry
 
 _TABLES = (
@@ -162,6 +161,7 @@ def _quantity(value: Any, unit: str, bare_unit: str | None, label: str) -> float
     so that a scale is kept (``unit = "percent"``: 20 is 0.2)."""
     if isinstance(value, bool) or not isinstance(value, int | float | str):
         raise ValueError(f"{label}: expected a number or a quantity string, got {value!r}")
+    value = bare_text(value)  # "\u22124": a bare number, its minus sign read as any text's is
     q: Any
     shown = value
     if _bare(value):
@@ -256,10 +256,6 @@ def _fixed(tab: Mapping[str, Any], si: bool) -> dict[str, Value]:
     return fixed
 
 
-#: (max_cases, kept outputs): what an axis's size is checked against before its values exist.
-Limit = tuple[int, tuple[str, ...] | None]
-
-
 def _grid(tab: Mapping[str, Any], order: Any, si: bool, limit: Limit) -> tuple[Axis, ...]:
     axes = []
     for name in order:
@@ -300,47 +296,7 @@ def _axis(name: str, spec: Any, si: bool, limit: Limit) -> Axis:
         raise ValueError(f"[grid] {name}: spacing must be 'linear' or 'log', got {spacing!r}")
     if ("num" in spec) == ("step" in spec):
         raise ValueError(f"[grid] {name}: give exactly one of 'num' and 'step'")
-    vals = _range(name, spec, start, stop, conv, spacing, limit)
-    return Axis(name, tuple(float(v) for v in vals))
-
-
-def _range(
-    name: str,
-    spec: Mapping[str, Any],
-    start: float,
-    stop: float,
-    conv: Converter,
-    spacing: str,
-    limit: Limit,
-) -> np.ndarray:
-    """The values of a start/stop/num (or step) grid axis (start, stop in SI); an axis of more
-    values than ``max_cases`` is refused before its values are made."""
-    if "num" in spec:
-        num = spec["num"]
-        if isinstance(num, bool) or not isinstance(num, int) or num < 1:
-            raise ValueError(f"[grid] {name}: num must be an integer >= 1, got {num!r}")
-        if num > limit[0]:
-            raise too_many(f"[grid] {name} (num = {num})", num, *limit)
-        if spacing == "log":
-            if start == 0 or stop == 0 or (start < 0) != (stop < 0):
-                raise ValueError(
-                    f"[grid] {name}: log spacing needs start and stop of one sign, neither 0 "
-                    f"(geomspace), got {spec['start']!r} and {spec['stop']!r}"
-                )
-            return np.geomspace(start, stop, num)
-        return np.linspace(start, stop, num)
-    if spacing == "log":
-        raise ValueError(f"[grid] {name}: log spacing takes 'num', not 'step'")
-    step = conv(spec["step"], "step")
-    if step == 0 or (stop - start) / step < 0:  # the values as written, not in SI
-        raise ValueError(
-            f"[grid] {name}: step {spec['step']!r} does not lead from start {spec['start']!r} "
-            f"to stop {spec['stop']!r}"
-        )
-    count = math.floor((stop - start) / step + 1e-9) + 1
-    if count > limit[0]:
-        raise too_many(f"[grid] {name} (start/stop/step)", count, *limit)
-    return start + step * np.arange(count)
+    return Axis(name, tuple(range_values(name, spec, start, stop, conv, spacing, limit)))
 
 
 def _sample(tab: Any, si: bool) -> Sample:
