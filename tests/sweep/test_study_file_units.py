@@ -9,7 +9,7 @@ import re
 
 import pytest
 
-from impactlab.sweep import Study
+from impactlab.sweep import EngineOptions, Study
 
 _BASE = {"angle": "20 deg", "vy": -1.41, "mu": 0.2}
 
@@ -128,3 +128,15 @@ def test_a_material_value_of_an_implausible_magnitude_is_refused(where: str, mes
     with pytest.raises(ValueError, match="^" + re.escape(message)):
         Study(name="soft", **values)
     Study(name="steel", fixed={**base, "flat_yield_strength": 276e6}, grid={"law": ["brake"]})
+
+
+@pytest.mark.parametrize(("gravity", "value"), [("9.81 m/s^2", 9.81), ("1 g0", 9.80665)])
+def test_engine_gravity_may_be_a_quantity(gravity, value) -> None:
+    """``[engine] gravity`` takes a quantity string as every other study value does: the
+    same study (and hash) as its number in m/s^2."""
+    text = _file("fixed", "mu", 0.2).to_dict()
+    quantity = Study.from_dict({**text, "engine": {"gravity": gravity}})
+    number = Study.from_dict({**text, "engine": {"gravity": value}})
+    assert quantity.engine.gravity == value and quantity.hash() == number.hash()
+    assert Study(grid={"mu": [0.1]}, fixed={"vy": -1.41, "angle": 0.35},
+                 engine=EngineOptions(gravity=gravity)).engine.gravity == value  # fmt: skip

@@ -157,16 +157,16 @@ def test_sweep_matches_direct_engine_calls(tmp_path, engine) -> None:
                 np.array([[math.radians(th), 0.0, -1.41, 0.0]]),
                 np.array([0.2]),
             )
-            # per-case parameters in the sweep: the closed forms
-            out, stt = run_arrays(*args, tabulate=False)
-            tab, _st = run_arrays(*args)
+            # a study of few law rows: each case with its row's table, as simulate
+            tab, stt = run_arrays(*args)
+            out, _st = run_arrays(*args, tabulate=False)
             assert stt[0] == 0
             for name in ("e", "delta_p", "sliding_length", "duration", "mean_force"):
-                assert ds[name].values[i, j] == out[0, OUTPUT_FIELDS.index(name)]
-                # the tabulated curve (within 1e-13 of the closed form) changes the last digits
                 k = OUTPUT_FIELDS.index(name)
-                assert tab[0, k] == pytest.approx(out[0, k], rel=1e-9, abs=1e-15)
-            assert ds["regime"].values[i, j] == int(out[0, OUTPUT_FIELDS.index("regime")])
+                assert ds[name].values[i, j] == tab[0, k]
+                # the closed form (within 1e-13 of the table) changes the last digits
+                assert out[0, k] == pytest.approx(tab[0, k], rel=1e-9, abs=1e-15)
+            assert ds["regime"].values[i, j] == int(tab[0, OUTPUT_FIELDS.index("regime")])
     assert ds["regime"].attrs["regimes"]["1"] == "slip"
 
 

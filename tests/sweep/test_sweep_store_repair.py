@@ -175,3 +175,14 @@ def test_a_damaged_root_and_record_still_needs_a_restart(stores) -> None:
     (store / ".sweep" / "study.json").write_bytes(b"{")
     with pytest.raises(CorruptStoreError, match="--restart"):
         run_sweep(_study(), store, evaluator=FakeEvaluator(), quiet=True)
+
+
+def test_a_deleted_markers_folder_is_made_again_and_its_chunks_recomputed(stores) -> None:
+    """``rm -rf STORE/.sweep/done``: no chunk counts as done, the resume computes them all and
+    writes their markers into a new folder."""
+    store, ref = stores
+    shutil.rmtree(store / ".sweep" / "done")
+    assert store_info(store)["chunks_done"] == "0 of 2"
+    again = run_sweep(_study(), store, evaluator=FakeEvaluator(), quiet=True)
+    assert again.complete and again.stats.chunks_computed == 2
+    assert store_files(store) == store_files(ref)

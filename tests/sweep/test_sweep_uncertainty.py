@@ -110,3 +110,32 @@ def test_one_report_per_grid_point_with_the_study_defaults(tmp_path, fake) -> No
     info = store_info(tmp_path / "mcg.zarr")
     assert info["chunks_done"] == f"{st.layout.n_chunks} of {st.layout.n_chunks}"
     assert info["dims"] == {"law": 2, "sample": 500} and info["status"] == {"0: ok": 1000}
+
+
+def test_grid_points_are_named_in_display_units(tmp_path, fake) -> None:
+    """An angle in degrees, a length in mm, a law by its name; values that five digits would
+    name alike get more digits (every point keeps its own report)."""
+    st = Study(
+        name="mcu",
+        chunk_size=1000,
+        grid={
+            "law": ["ghaednia", "hertz"],
+            "angle": ["20 deg", "40 deg"],
+            "tip_radius": ["8.8 mm", "8.800001 mm"],
+        },
+        sample=Sample(size=20, seed=3, inputs={"mu": Uniform(0.1, 0.3)}),
+        fixed={"vy": -1.41},
+    )
+    ds = run_sweep(st, tmp_path / "mcu.zarr", evaluator=fake, quiet=True).dataset
+    titles = list(uncertainty_reports(ds, outputs=["e"]))
+    assert len(titles) == 8 and titles[0] == ("law = ghaednia, angle = 20 deg, tip_radius = 8.8 mm")
+    assert titles[-1] == "law = hertz, angle = 40 deg, tip_radius = 8.800001 mm"
+    two = Study(
+        name="mcv",
+        chunk_size=1000,
+        grid={"angle": ["20 deg", "40 deg"]},
+        sample=Sample(size=20, seed=3, inputs={"mu": Uniform(0.1, 0.3)}),
+        fixed={"vy": -1.41},
+    )
+    ds = run_sweep(two, tmp_path / "mcv.zarr", evaluator=fake, quiet=True).dataset
+    assert list(uncertainty_reports(ds, outputs=["e"])) == ["angle = 20 deg", "angle = 40 deg"]

@@ -6,12 +6,11 @@ impactlab sweep STUDY.toml [--out store.zarr] [--scheduler tcp://host:port] [--w
 impactlab sweep uncertainty STUDY.toml|STORE [--json] [...]
 impactlab sweep info STORE
 impactlab sweep plot STORE --out DIR
-impactlab sweep export STORE OUT.nc
+impactlab sweep export STORE OUT.csv|OUT.nc
 """
 
 from __future__ import annotations
 
-import json
 import sys
 import warnings
 from dataclasses import dataclass
@@ -21,13 +20,15 @@ from typing import TYPE_CHECKING, Annotated, Any
 import typer
 from typer.core import TyperGroup
 
-from impactlab._display import field_row, format_number
-from impactlab._json import quantity as quantity_json
-from impactlab._json import to_json
-from impactlab.cli._common import UserError, emit, print_rows
+from impactlab._validation import did_you_mean
+from impactlab.cli._common import UserError, emit
 from impactlab.cli.output_paths import existing_store, output_file, output_store
-from impactlab.cli.sweep_summary import info_json, run_summary, warn_incomplete
-from impactlab.flags import invalidating_names
+from impactlab.cli.sweep_summary import (
+    info_json,
+    print_uncertainty,
+    run_summary,
+    warn_incomplete,
+)
 
 if TYPE_CHECKING:
     from impactlab.sweep import SweepResult
@@ -41,11 +42,18 @@ WORKER_TIMEOUT_HELP_DEFAULT = 60
 
 
 class _DefaultRun(TyperGroup):
-    """``impactlab sweep STUDY.toml ...`` means ``impactlab sweep run STUDY.toml ...``."""
+    """``impactlab sweep STUDY.toml ...`` means ``impactlab sweep run STUDY.toml ...``; a first
+    word that is no file but nearly a subcommand (``infoo``, ``rn``) is refused naming it."""
 
     def parse_args(self, ctx: Any, args: list[str]) -> list[str]:
         first = next((a for a in args if not a.startswith("-")), None)
         if first is not None and first not in self.commands:
+            near = "" if Path(first).exists() else did_you_mean(first, list(self.commands))
+            if near and not {".", "/", "\\"} & set(first):
+                raise UserError(
+                    f"no subcommand {first!r}{near} and no study file of that name; "
+                    f"subcommands: {', '.join(self.commands)} (impactlab sweep --help)"
+                )
             args = ["run", *args]
         return super().parse_args(ctx, args)
 
@@ -94,70 +102,6 @@ def _run(study_path: Path, where: _Where, quiet: bool, restart: bool) -> SweepRe
         raise
     except NoWorkersError as exc:  # one line, as docs/sweep.md says
         raise UserError(str(exc)) from None
-
-
-def _print_uncertainty(
-    ds: Any,
-    outputs: list[str] | None,
-    percentiles: list[float] | None,
-    as_json: bool,
-    include_flagged: bool = False,
-) -> None:
-    from impactlab.sweep import uncertainty_reports
-
-    reports = uncertainty_reports(ds, outputs, percentiles, include_flagged)
-    if as_json:
-        print(json.dumps({k: _uncertainty_json(r.to_dict()) for k, r in reports.items()}, indent=2))
-        return
-    for title, rep in reports.items():
-        _print_report(rep.to_dict(), f"uncertainty: {title}")
-
-
-def _print_report(report: dict[str, Any], title: str) -> None:
-    """One uncertainty report in display units: per output its mean ± standard deviation and
-    its percentiles, then the inputs ranked by their influence (squared rank correlation)."""
-    rows = []
-    for rec in report["summary"]:
-        out, unit = str(rec.get("output")), str(rec.get("unit") or "1")
-        rows.append(field_row(out, rec.get("mean"), unit, rec.get("std")))
-        for key, value in rec.items():
-            if key.startswith("p") and isinstance(value, float):
-                _n, text, shown = field_row(out, value, unit)
-                rows.append((f"{out} {key}", text, shown))
-    n = f"{report['n_cases']} cases, {report['n_invalid']} excluded (invalid: status > 0)"
-    if report.get("n_not_computed"):
-        n += f", {report['n_not_computed']} not computed (status -1)"
-    flagged = int(report.get("n_flagged", 0))
-    n += f", {flagged} flagged ({invalidating_names()}) " + (
-        "included" if report.get("flagged_included") else "excluded"
-    )
-    print_rows(rows, f"{title}: {n}; mean ± standard deviation, percentiles")
-    ranked: dict[str, list[str]] = {}
-    for r in report["sensitivity"]:
-        ranked.setdefault(str(r["output"]), []).append(
-            f"{r['input']} {format_number(r['rank_corr2'], 3)}"
-        )
-    if ranked:
-        print("sensitivity (squared Spearman rank correlation of each input with the output):")
-        for out, items in ranked.items():
-            print(f"  {out}: {', '.join(items)}")
-
-
-def _uncertainty_json(report: dict[str, Any]) -> dict[str, Any]:
-    """A report's JSON (docs/json-schema.md): per output, ``mean`` with the sample's standard
-    deviation as its sigma and each percentile as a quantity; the sensitivities (dimensionless)
-    as quantities of unit "1"."""
-    summary = []
-    for rec in report["summary"]:
-        unit = str(rec.get("unit") or "1")
-        row: dict[str, Any] = {"output": rec.get("output"), "n": rec.get("n")}
-        row["mean"] = quantity_json(rec.get("mean"), unit, rec.get("std"))
-        for key, value in rec.items():
-            if key not in ("output", "n", "mean", "std", "unit"):
-                row[key] = quantity_json(value, unit)
-        summary.append(row)
-    units = {"rank_corr2": "1", "src2": "1", "r2": "1"}
-    return {**to_json(report, units), "summary": summary}
 
 
 _Out = Annotated[
@@ -216,7 +160,9 @@ def run_cmd(
         ),
     ] = None,
     quiet: _Quiet = False,
-    netcdf: Annotated[Path | None, typer.Option("--netcdf", help="Also export to NetCDF.")] = None,
+    netcdf: Annotated[
+        Path | None, typer.Option("--netcdf", help="Also export to NetCDF-4 (.nc, .nc4).")
+    ] = None,
     plot: Annotated[
         Path | None, typer.Option("--plot", help="Write plots into this folder.")
     ] = None,
@@ -239,7 +185,7 @@ def run_cmd(
         export_netcdf(ds, netcdf)
     files = [str(f) for f in _plots(plot_sweep, ds, plot)] if plot is not None else []
     if res.study.uncertainty is not None and not quiet:
-        _print_uncertainty(ds, None, None, as_json=False)
+        print_uncertainty(ds, None, None, as_json=False)
     if quiet and not as_json:
         return
     emit(
@@ -250,11 +196,24 @@ def run_cmd(
 
 
 def _check_run_paths(out: Path | None, netcdf: Path | None) -> None:
-    """--out (a store) and --netcdf (a file) can be written, before the study runs."""
+    """--out (a store) and --netcdf (a NetCDF file: .nc, .nc4) can be written, before the study
+    runs."""
     if out is not None:
         output_store(out, "--out")
     if netcdf is not None:
+        csv = f"; for a CSV table: impactlab sweep export STORE {netcdf.with_suffix('.csv')}"
+        _suffix(netcdf, "--netcdf", ("NetCDF-4",), csv)
         output_file(netcdf, "--netcdf")
+
+
+def _suffix(path: Path, name: str, formats: tuple[str, ...], hint: str = "") -> str:
+    """The export format of ``path`` (``sweep.netcdf.check_suffix``) or a UserError."""
+    from impactlab.sweep.netcdf import check_suffix
+
+    try:
+        return check_suffix(path, name, formats)
+    except ValueError as exc:
+        raise UserError(f"{exc}{hint}") from None
 
 
 @sweep_app.command("uncertainty")
@@ -302,7 +261,7 @@ def uncertainty_cmd(
         res = _run(source, where, quiet or as_json, False)
         ds = res.dataset
         warn_incomplete(res.path)
-    _print_uncertainty(ds, outputs, percentiles, as_json, include_flagged)
+    print_uncertainty(ds, outputs, percentiles, as_json, include_flagged)
 
 
 def _check_uncertainty_study(path: Path, max_cases: int | None) -> None:
@@ -377,13 +336,17 @@ def _plots(plot_sweep: Any, ds: Any, folder: Path, skipped: list[str] | None = N
 @sweep_app.command("export")
 def export_cmd(
     store: _Store,
-    target: Annotated[Path, typer.Argument(help="NetCDF file to write.")],
+    target: Annotated[
+        Path, typer.Argument(help="File to write: .csv (a table, units in the header), .nc/.nc4.")
+    ],
 ) -> None:
-    """Export a store to NetCDF-4."""
-    from impactlab.sweep import export_netcdf, open_sweep
+    """Export a store to a CSV table (.csv: one row per case) or NetCDF-4 (.nc, .nc4)."""
+    from impactlab.sweep import export_file, open_sweep
 
-    ds = open_sweep(existing_store(store))
-    export_netcdf(ds, output_file(target, "the NetCDF file"))
+    if not target.is_dir():  # a folder: output_file says so
+        _suffix(target, "export file", ("CSV", "NetCDF-4"))
+    output_file(target, "the CSV file" if target.suffix.lower() == ".csv" else "the NetCDF file")
+    export_file(open_sweep(existing_store(store)), target)
     warn_incomplete(store)  # its cases not computed yet are in the file as status -1
     print(target, file=sys.stdout)
 

@@ -1,15 +1,22 @@
-"""The summaries of ``impactlab sweep run`` and ``impactlab sweep info``: the table's texts
-("63 case(s) (law extrapolated: 63)", "1 of 1") and the JSON's integer counts
-(docs/json-schema.md: ``"flagged": {"total": 63, "law_extrapolated": 63}``,
-``"chunks_done": 1, "chunks_total": 1``)."""
+"""The summaries of ``impactlab sweep run``, ``impactlab sweep info`` and ``impactlab sweep
+uncertainty``: the table's texts ("63 case(s) (law extrapolated: 63)", "1 of 1") and the JSON's
+integer counts (docs/json-schema.md: ``"flagged": {"total": 63, "law_extrapolated": 63}``,
+``"chunks_done": 1, "chunks_total": 1``), the uncertainty reports in display units."""
 
 from __future__ import annotations
 
+import json
 import re
 import sys
 from collections.abc import Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
+
+from impactlab._display import field_row, format_number
+from impactlab._json import quantity as quantity_json
+from impactlab._json import to_json
+from impactlab.cli._common import print_rows
+from impactlab.flags import invalidating_names
 
 if TYPE_CHECKING:
     from impactlab.sweep import SweepResult
@@ -112,3 +119,69 @@ def warn_incomplete(store: Path) -> None:
     note = incomplete_note(store)
     if note is not None:
         print(f"warning: {note}", file=sys.stderr)
+
+
+def print_uncertainty(
+    ds: Any,
+    outputs: list[str] | None,
+    percentiles: list[float] | None,
+    as_json: bool,
+    include_flagged: bool = False,
+) -> None:
+    """The uncertainty reports of the sweep ``ds`` (one per grid point), as tables or, with
+    ``as_json``, one JSON object keyed by the points' titles."""
+    from impactlab.sweep import uncertainty_reports
+
+    reports = uncertainty_reports(ds, outputs, percentiles, include_flagged)
+    if as_json:
+        print(json.dumps({k: _uncertainty_json(r.to_dict()) for k, r in reports.items()}, indent=2))
+        return
+    for title, rep in reports.items():
+        _print_report(rep.to_dict(), f"uncertainty: {title}")
+
+
+def _print_report(report: dict[str, Any], title: str) -> None:
+    """One uncertainty report in display units: per output its mean ± standard deviation and
+    its percentiles, then the inputs ranked by their influence (squared rank correlation)."""
+    rows = []
+    for rec in report["summary"]:
+        out, unit = str(rec.get("output")), str(rec.get("unit") or "1")
+        rows.append(field_row(out, rec.get("mean"), unit, rec.get("std")))
+        for key, value in rec.items():
+            if key.startswith("p") and isinstance(value, float):
+                _n, text, shown = field_row(out, value, unit)
+                rows.append((f"{out} {key}", text, shown))
+    n = f"{report['n_cases']} cases, {report['n_invalid']} excluded (invalid: status > 0)"
+    if report.get("n_not_computed"):
+        n += f", {report['n_not_computed']} not computed (status -1)"
+    flagged = int(report.get("n_flagged", 0))
+    n += f", {flagged} flagged ({invalidating_names()}) " + (
+        "included" if report.get("flagged_included") else "excluded"
+    )
+    print_rows(rows, f"{title}: {n}; mean ± standard deviation, percentiles")
+    ranked: dict[str, list[str]] = {}
+    for r in report["sensitivity"]:
+        ranked.setdefault(str(r["output"]), []).append(
+            f"{r['input']} {format_number(r['rank_corr2'], 3)}"
+        )
+    if ranked:
+        print("sensitivity (squared Spearman rank correlation of each input with the output):")
+        for out, items in ranked.items():
+            print(f"  {out}: {', '.join(items)}")
+
+
+def _uncertainty_json(report: dict[str, Any]) -> dict[str, Any]:
+    """A report's JSON (docs/json-schema.md): per output, ``mean`` with the sample's standard
+    deviation as its sigma and each percentile as a quantity; the sensitivities (dimensionless)
+    as quantities of unit "1"."""
+    summary = []
+    for rec in report["summary"]:
+        unit = str(rec.get("unit") or "1")
+        row: dict[str, Any] = {"output": rec.get("output"), "n": rec.get("n")}
+        row["mean"] = quantity_json(rec.get("mean"), unit, rec.get("std"))
+        for key, value in rec.items():
+            if key not in ("output", "n", "mean", "std", "unit"):
+                row[key] = quantity_json(value, unit)
+        summary.append(row)
+    units = {"rank_corr2": "1", "src2": "1", "r2": "1"}
+    return {**to_json(report, units), "summary": summary}

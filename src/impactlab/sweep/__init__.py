@@ -27,7 +27,7 @@ from impactlab.sweep.inputs import INPUTS, OUTPUT_ALIASES, OUTPUTS, InputSpec
 from impactlab.sweep.integrity import DamagedStoreError, RepairableStoreError
 from impactlab.sweep.limits import DEFAULT_MAX_CASES, SweepSizeWarning
 from impactlab.sweep.models import Statics
-from impactlab.sweep.netcdf import export_netcdf
+from impactlab.sweep.netcdf import export_csv, export_file, export_netcdf
 from impactlab.sweep.options import EngineOptions, UncertaintySpec
 from impactlab.sweep.plots import SliceWarning, plot_output_map, plot_regime_map
 from impactlab.sweep.plotsweep import PlotSkipped, plot_plan, plot_sweep
@@ -80,6 +80,8 @@ __all__ = [
     "UncertaintySpec",
     "Uniform",
     "compute_chunk",
+    "export_csv",
+    "export_file",
     "export_netcdf",
     "flag_counts",
     "format_report",

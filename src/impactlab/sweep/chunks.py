@@ -14,6 +14,7 @@ import numba
 import numpy as np
 
 from impactlab.sweep.engine import Evaluator, Statics, numba_cache_stats
+from impactlab.sweep.models import tabulates
 from impactlab.sweep.study import Study
 
 
@@ -67,7 +68,8 @@ def compute_chunk(
     before = numba_cache_stats()
     study.register_laws()  # a user's law travels with the study to every worker
     numeric, categories, bshape = study.chunk_cases(index)
-    statics = Statics(categories, study.law_params, study.engine.kwargs())
+    table = tabulates(study.axes, study.sample)  # the study's choice, never the chunk's
+    statics = Statics(categories, study.law_params, study.engine.kwargs(), table)
     t1 = time.perf_counter()
     outs, status = evaluator(numeric, statics, outputs)
     t2 = time.perf_counter()

@@ -139,13 +139,14 @@ def plot_unit(name: str, units: str) -> tuple[float, str]:
     return d.scale, "1" if d.unit == "-" else d.unit
 
 
-def value_text(ds: Any, dim: str, value: Any) -> str:
-    """``"vy = -1.41 m/s"``: a value of dimension ``dim`` in its display unit."""
+def value_text(ds: Any, dim: str, value: Any, digits: int = 5) -> str:
+    """``"vy = -1.41 m/s"``: a value of dimension ``dim`` in its display unit (``digits``
+    significant digits)."""
     if isinstance(value, str):
         return f"{dim} = {value}"
     scale, unit = plot_unit(dim, str(ds[dim].attrs.get("units", "")))
     unit = "" if unit in ("1", "-") else unit
-    return f"{dim} = {format_number(float(value) * scale)} {unit}".rstrip()
+    return f"{dim} = {format_number(float(value) * scale, digits)} {unit}".rstrip()
 
 
 def slice_note(ds: Any, hidden: Sequence[str]) -> str:

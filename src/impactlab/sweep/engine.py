@@ -7,7 +7,10 @@ the contact models and body vectors once per distinct combination of the numeric
 enter them (cached per process) with the same builder as ``simulate``
 (``impactlab.dynamics.models``; :mod:`impactlab.sweep.models`), rejects what the Python
 constructors reject with a status code instead of an exception, and calls
-``impactlab.dynamics.batch.run_arrays`` once for the chunk.
+``impactlab.dynamics.batch.run_arrays`` once for the chunk, or, where the study's cases use
+their law's table (``Statics.tabulate``, :func:`impactlab.sweep.models.tabulates`), once per
+distinct law row with that row's table, so that every case equals ``simulate`` bit for bit
+whatever its chunk holds.
 
 Any object with the ``Evaluator`` interface can stand in for the engine (tests use a cheap fake).
 """
@@ -34,7 +37,7 @@ from impactlab.schema import DERIVED_FIELDS, SEQUENCE_FIELDS
 from impactlab.sweep.flexible import FLEXIBLE_BODY, evaluate_flexible, validate_flexible
 from impactlab.sweep.inputs import INTEGER_OUTPUTS, KINEMATIC_INPUTS
 from impactlab.sweep.material_inputs import validate_material_names
-from impactlab.sweep.models import Statics, brittle_limit, build_models
+from impactlab.sweep.models import Statics, brittle_limit, build_models, law_table, model_rows
 from impactlab.sweep.status import (
     STATUS_BAD_BODY,
     STATUS_BAD_INPUT,
@@ -197,7 +200,8 @@ def _validate_categories(categories: Mapping[str, Sequence[str]], frictions: Seq
         except ValueError:
             raise ValueError(
                 f"unknown contact law {law!r}{did_you_mean(law, law_names())}; known laws: "
-                f"{', '.join(law_names())}"
+                f"{', '.join(law_names())}; a law of your own: impactlab --law-file FILE, or "
+                f"{law} = 'FILE' in the study's [laws] table"
             ) from None
     for fr in categories.get("friction", ()):
         if fr not in frictions:
@@ -219,54 +223,86 @@ def evaluate(
 
     cases : input name -> 1-D float64 array (all of ``inputs.INPUTS``' numeric names; NaN =
         preset value), SI units.
-    statics : category values, law parameters and engine options for the whole chunk.
+    statics : category values, law parameters, engine options and the choice of the law's
+        table (``Statics.tabulate``) for the whole chunk.
     outputs : the engine output fields to return.
 
     Returns ({output: (N,) array}, status (N,) int32). Cases rejected before the engine get the
     ``SWEEP_STATUS_MESSAGES`` codes and NaN outputs.
     """
-    fields = tuple(OUTPUT_FIELDS)
-    cols = [fields.index(o) for o in outputs]
     n = len(cases["angle"])
-    law_params, body_params, status = build_models(cases, statics)
+    law_rows, body_rows, row_status, inverse = model_rows(cases, statics)
+    status = row_status[inverse]
     initial = np.empty((n, 4))
     for j, name in enumerate(("angle", "vx", "vy", "spin")):
         initial[:, j] = cases[name]
     mu = np.ascontiguousarray(cases["mu"], dtype=np.float64)
     kin_bad = ~np.isfinite(initial).all(axis=1) | ~np.isfinite(mu)
     status[kin_bad & (status == 0)] = STATUS_BAD_INPUT
-    ok = status == 0
-    all_ok = bool(ok.all())
-    if not all_ok and not ok.any():
-        return {o: np.full(n, np.nan) for o in outputs}, status
+    ok = np.flatnonzero(status == 0)
+    res: dict[str, np.ndarray] = {}
+    diagnostics = not DIAGNOSTIC_OUTPUTS.isdisjoint(outputs)  # the others' bits unchanged
+    groups: list[tuple[int | None, np.ndarray]] = [(None, ok)] if ok.size else []
+    if statics.tabulate:  # each law row with its table, as simulate: one call per row
+        groups = list(_law_groups(law_rows, inverse, ok))
+    for row, idx in groups:
+        whole = idx.size == n  # every case in one call: no copies
+        out, st = run_arrays(
+            _law_id(statics.categories["law"]),
+            BATCH_FRICTION_IDS[statics.categories["friction"]],
+            _law_params(statics, row, law_rows, inverse[idx]),
+            _per_case(body_rows, inverse[idx]),
+            initial if whole else np.ascontiguousarray(initial[idx]),
+            mu if whole else np.ascontiguousarray(mu[idx]),
+            brittle_limit=brittle_limit(statics),
+            diagnostics=diagnostics,
+            tabulate=statics.tabulate is not False,
+            **dict(statics.engine),
+        )
+        status[idx] = np.asarray(st, dtype=np.int32)
+        for o in outputs:
+            col = out[:, OUTPUT_FIELDS.index(o)]
+            if whole:
+                res[o] = np.ascontiguousarray(col)
+            else:
+                res.setdefault(o, np.full(n, np.nan))[idx] = col
+    return {o: res[o] if o in res else np.full(n, np.nan) for o in outputs}, status
 
-    def sel(a: np.ndarray) -> np.ndarray:
-        if all_ok or a.ndim == 1:
-            return a
-        return np.ascontiguousarray(a[ok])
 
-    law_id = _law_id(statics.categories["law"])
-    out, st = run_arrays(
-        law_id,
-        BATCH_FRICTION_IDS[statics.categories["friction"]],
-        sel(law_params),
-        sel(body_params),
-        initial if all_ok else np.ascontiguousarray(initial[ok]),
-        mu if all_ok else np.ascontiguousarray(mu[ok]),
-        brittle_limit=brittle_limit(statics),
-        diagnostics=not DIAGNOSTIC_OUTPUTS.isdisjoint(outputs),  # the others' bits unchanged
-        **dict(statics.engine),
-    )
-    st = np.asarray(st, dtype=np.int32)
-    if all_ok:
-        status[:] = st
-        pairs = zip(outputs, cols, strict=True)
-        return {o: np.ascontiguousarray(out[:, c]) for o, c in pairs}, status
-    status[ok] = st
-    res = {o: np.full(n, np.nan) for o in outputs}
-    for o, c in zip(outputs, cols, strict=True):
-        res[o][ok] = out[:, c]
-    return res, status
+def _per_case(rows: np.ndarray, combos: np.ndarray) -> np.ndarray:
+    """The rows of the cases of combinations ``combos``: one (1-D) when they share it."""
+    if bool((combos == combos[0]).all()):
+        return rows[combos[0]]
+    return np.ascontiguousarray(rows[combos])
+
+
+def _law_params(
+    statics: Statics, row: int | None, law_rows: np.ndarray, combos: np.ndarray
+) -> np.ndarray:
+    """The law parameters of a group of cases (combinations ``combos``): law row ``row`` with
+    its table (``statics.tabulate`` True), else each case's row, shared (1-D) where the chunk
+    has one combination only (the engine's rule, None, then tabulates it; False never does)."""
+    if row is not None:
+        return law_table(_law_id(statics.categories["law"]), law_rows[row])
+    if law_rows.shape[0] == 1:
+        return law_rows[0]
+    return np.ascontiguousarray(law_rows[combos])
+
+
+def _law_groups(
+    law_rows: np.ndarray, inverse: np.ndarray, ok: np.ndarray
+) -> list[tuple[int, np.ndarray]]:
+    """The cases ``ok`` (their combinations: ``inverse``) grouped by their law parameters
+    (bitwise): (a combination of the group, its cases in order)."""
+    if law_rows.shape[0] == 1:
+        return [(0, ok)] if ok.size else []
+    rows = np.ascontiguousarray(law_rows)
+    view = rows.view(np.dtype((np.void, rows.itemsize * rows.shape[1]))).ravel()
+    _, first, same = np.unique(view, return_index=True, return_inverse=True)
+    group = first[same.ravel()][inverse[ok]]
+    order = np.argsort(group, kind="stable")
+    cuts = np.flatnonzero(np.diff(group[order])) + 1
+    return [(int(group[part[0]]), ok[part]) for part in np.split(order, cuts) if part.size]
 
 
 def _law_id(name: str) -> int:

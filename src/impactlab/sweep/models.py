@@ -1,7 +1,13 @@
 """The contact models and body vectors of a chunk's cases, built once per distinct combination
 of the numeric inputs that enter them (cached per process) with the same builder as
 ``simulate`` (``impactlab.dynamics.models``). What the Python constructors reject becomes a
-status code (``impactlab.sweep.status``), never an exception."""
+status code (``impactlab.sweep.status``), never an exception.
+
+Whether a study's cases use the tabulated loading curve of their law (``contact.tabulate``, as
+``simulate`` does) or its closed form is decided once per study (:func:`tabulates`), never by a
+chunk's neighbours: with at most :data:`MAX_TABLES` distinct law rows every case gets its row's
+table, and equals ``simulate`` bit for bit; beyond that (a table costs 10-20 impacts) the
+closed forms, within about 1e-13 of the table (docs/sweep.md, "Bit for bit")."""
 
 from __future__ import annotations
 
@@ -16,6 +22,7 @@ from impactlab.bodies import NB, PAPER_ROD, Rod, Sphere
 from impactlab.contact import get_law
 from impactlab.contact.brittle import first_yield_pressure
 from impactlab.contact.kernels import param_length
+from impactlab.contact.tabulate import with_table
 from impactlab.dynamics.models import body_params, build_contact_model
 from impactlab.materials import Material, get_material
 from impactlab.sweep.inputs import BODY_INPUTS, CATEGORY_INPUTS, LAW_INPUTS, MATERIAL_OVERRIDES
@@ -25,12 +32,15 @@ from impactlab.sweep.status import STATUS_BAD_BODY, STATUS_BAD_LAW, STATUS_BAD_M
 
 @dataclass(frozen=True)
 class Statics:
-    """What is constant over one engine call: the category inputs, the law parameters and the
-    engine options."""
+    """What is constant over one engine call: the category inputs, the law parameters, the
+    engine options, and whether each case uses its law row's table (True, a sweep's choice:
+    :func:`tabulates`), the closed forms (False) or, None, the engine's own rule (a table only
+    where every case shares one law row)."""
 
     categories: Mapping[str, str]
     law_params: Mapping[str, float] = field(default_factory=dict)
     engine: Mapping[str, Any] = field(default_factory=dict)
+    tabulate: bool | None = None
 
     def __getitem__(self, name: str) -> str:
         return self.categories[name]
@@ -101,6 +111,40 @@ def _unique_rows(cols: Sequence[np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
 
 
 _LAW_NUMERIC = tuple(n for n in LAW_INPUTS if n not in CATEGORY_INPUTS)
+#: The inputs whose values can change a case's law parameters (the body's density cannot).
+_TABLE_INPUTS = tuple(n for n in LAW_INPUTS if n != "body_density")
+#: The most distinct law rows a study may have for its cases to use the tables: each costs
+#: 10-20 impacts to build (once per process) and one engine call per chunk that has it.
+MAX_TABLES = 64
+_tables: dict[tuple[int, bytes], np.ndarray] = {}
+
+
+def law_rows(axes: Sequence[Any], sample: Any) -> int:
+    """The distinct law rows a study can have (an upper bound): the product of the sizes of
+    its grid axes among the law's inputs, times the sample size when it samples one."""
+    n = math.prod(len(a.values) for a in axes if a.name in _TABLE_INPUTS)
+    sampled = () if sample is None else sample.inputs
+    return n * (sample.size if any(i in _TABLE_INPUTS for i in sampled) else 1)
+
+
+def tabulates(axes: Sequence[Any], sample: Any) -> bool:
+    """True when every case of the study (``axes``, ``sample``) uses its law row's table: it
+    has at most :data:`MAX_TABLES` law rows (:func:`law_rows`)."""
+    return law_rows(axes, sample) <= MAX_TABLES
+
+
+def law_table(law_id: int, p: np.ndarray) -> np.ndarray:
+    """``p`` with its loading-curve table (``contact.tabulate.with_table``, as ``simulate``
+    builds it), cached per process."""
+    key = (law_id, p.tobytes())
+    hit = _tables.get(key)
+    if hit is None:
+        if len(_tables) >= 4 * MAX_TABLES:
+            _tables.clear()
+        hit = _tables[key] = with_table(law_id, p)
+    return hit
+
+
 _BODY_NUMERIC = tuple(n for n in BODY_INPUTS if n not in CATEGORY_INPUTS)
 
 
@@ -114,9 +158,19 @@ def build_models(
     ContactModels and bodies are built once per distinct combination of the inputs that enter
     them and cached for the life of the process.
     """
+    law_out, body_out, row_status, inverse = model_rows(cases, statics)
+    status = row_status[inverse]
+    if law_out.shape[0] == 1:
+        return law_out[0], body_out[0], status
+    return law_out[inverse], body_out[inverse], status
+
+
+def model_rows(
+    cases: Mapping[str, np.ndarray], statics: Statics
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """``build_models`` per distinct combination: (law params (R, P), body params (R, NB),
+    status (R,), the combination of each case (N,))."""
     cat = statics.categories
-    n = len(cases["angle"])
-    status = np.zeros(n, dtype=np.int32)
     names = sorted(set(_LAW_NUMERIC) | set(_BODY_NUMERIC))
     cols = [np.asarray(cases[k], dtype=np.float64) for k in names]
     rows, inverse = _unique_rows(cols)
@@ -149,10 +203,7 @@ def build_models(
             assert not isinstance(cached_b, int)
             law_out[r] = cached_l
             body_out[r] = cached_b
-    status[:] = row_status[inverse]
-    if rows.shape[0] == 1:
-        return law_out[0], body_out[0], status
-    return law_out[inverse], body_out[inverse], status
+    return law_out, body_out, row_status, inverse
 
 
 def _build_one(

@@ -1,8 +1,12 @@
-"""A sweep's Dataset as a NetCDF-4 file."""
+"""A sweep's Dataset as a file: NetCDF-4 (``.nc``, ``.nc4``: every variable and attribute) or a
+CSV table (``.csv``: one row per case, every input and output a column, its SI unit in the
+header, ``e_energy``, ``delta_p [m]``, ``angle [rad]``). ``export_file`` chooses by the suffix
+and refuses any other."""
 
 from __future__ import annotations
 
 import json
+import os
 from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
@@ -10,11 +14,40 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
-__all__ = ["export_netcdf"]
+__all__ = ["EXPORT_SUFFIXES", "export_csv", "export_file", "export_netcdf"]
+
+#: The suffixes of the files a sweep exports to, and their format.
+EXPORT_SUFFIXES = {".csv": "CSV", ".nc": "NetCDF-4", ".nc4": "NetCDF-4"}
+
+
+def check_suffix(
+    path: str | Path, name: str, formats: tuple[str, ...] = ("CSV", "NetCDF-4")
+) -> str:
+    """The format of ``path`` by its suffix (:data:`EXPORT_SUFFIXES`, among ``formats``);
+    ValueError naming ``name`` (how the user gave the path) and the suffixes allowed."""
+    p = Path(path)
+    kind = EXPORT_SUFFIXES.get(p.suffix.lower())
+    if kind not in formats:
+        allowed = ", ".join(
+            " or ".join(s for s, k in EXPORT_SUFFIXES.items() if k == f) + f" ({f})"
+            for f in formats
+        )
+        raise ValueError(f"{name} {str(p)!r} must end in {allowed}")
+    return str(kind)
+
+
+def export_file(ds: xr.Dataset, path: str | Path) -> Path:
+    """Write the Dataset to ``path``: a CSV table for ``.csv``, NetCDF-4 for ``.nc``/``.nc4``
+    (ValueError for any other suffix)."""
+    if check_suffix(path, "export file") == "CSV":
+        return export_csv(ds, path)
+    return export_netcdf(ds, path)
 
 
 def export_netcdf(ds: xr.Dataset, path: str | Path) -> Path:
-    """Write the Dataset to NetCDF-4 (strings kept; dictionary attributes become JSON text)."""
+    """Write the Dataset to NetCDF-4 (strings kept; dictionary attributes become JSON text);
+    ``path`` ends in ``.nc`` or ``.nc4``."""
+    check_suffix(path, "NetCDF file", ("NetCDF-4",))
     out = Path(path)
 
     def attrs(a: Mapping[str, Any]) -> dict[str, Any]:
@@ -31,3 +64,26 @@ def export_netcdf(ds: xr.Dataset, path: str | Path) -> Path:
     data = {str(k): plain(v.variable) for k, v in loaded.data_vars.items()}
     xr.Dataset(data, coords=coords, attrs=attrs(loaded.attrs)).to_netcdf(out, engine="netcdf4")
     return out
+
+
+def export_csv(ds: xr.Dataset, path: str | Path) -> Path:
+    """Write the Dataset as a CSV table (``ds.to_dataframe()``): one row per case, a column per
+    dimension, input and output, headed ``name [unit]`` (SI, the variable's ``units``; a
+    dimensionless one by its name alone). Written whole or not at all; ``path`` ends in
+    ``.csv``."""
+    check_suffix(path, "CSV file", ("CSV",))
+    out = Path(path)
+    table = ds.to_dataframe().reset_index()
+    table.columns = [_header(str(c), ds[c].attrs.get("units")) for c in table.columns]
+    tmp = out.with_name(f".{out.name}.{os.getpid()}.partial")
+    try:
+        table.to_csv(tmp, index=False)
+        os.replace(tmp, out)
+    except BaseException:
+        tmp.unlink(missing_ok=True)
+        raise
+    return out
+
+
+def _header(name: str, unit: Any) -> str:
+    return name if unit in (None, "", "1", "-") else f"{name} [{unit}]"

@@ -3,6 +3,7 @@ uncertainty report summarises."""
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Any
 
@@ -14,6 +15,7 @@ from impactlab.dynamics.kernels.inputs import (
     rtol_allowed,
 )
 from impactlab.sweep.inputs import OUTPUT_ALIASES
+from impactlab.units import is_quantity, magnitude
 
 #: Version of the study/store format; part of the study hash.
 STUDY_FORMAT = "impactlab-sweep/1"
@@ -30,13 +32,20 @@ def _number(value: Any) -> bool:
 
 @dataclass(frozen=True)
 class EngineOptions:
-    """Options passed to the impact engine unchanged (None: the engine's default)."""
+    """Options passed to the impact engine (None: the engine's default); ``gravity`` true,
+    false, a number in m/s^2 or a quantity (``"9.81 m/s^2"``, converted)."""
 
     gravity: bool | float | None = None
     constant_angle: bool | None = None
     rtol: float | None = None
 
     def __post_init__(self) -> None:
+        if isinstance(self.gravity, str) or is_quantity(self.gravity):  # "9.81 m/s^2"
+            try:
+                g = float(magnitude("engine gravity", self.gravity, "m/s^2"))
+            except ValueError:
+                g = math.nan  # refused below, with what is allowed
+            object.__setattr__(self, "gravity", g if math.isfinite(g) else self.gravity)
         if self.rtol is not None and not (_number(self.rtol) and rtol_allowed(float(self.rtol))):
             raise ValueError(
                 f"engine rtol must be a number in [{RTOL_MIN:g}, {RTOL_MAX:g}], got {self.rtol!r}"
@@ -45,8 +54,8 @@ class EngineOptions:
             g = self.gravity
             if not (_number(g) and gravity_allowed(float(g))):
                 raise ValueError(
-                    f"engine gravity must be true/false or a number in [0, {MAX_GRAVITY:g}] "
-                    f"(m/s^2), got {g!r}"
+                    f"engine gravity must be true/false, a number in [0, {MAX_GRAVITY:g}] "
+                    f"(m/s^2) or a quantity such as '9.81 m/s^2', got {g!r}"
                 )
         if self.constant_angle is not None and not isinstance(self.constant_angle, bool):
             raise ValueError(

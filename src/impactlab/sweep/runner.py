@@ -65,6 +65,7 @@ from impactlab.sweep.limits import usable_cores
 from impactlab.sweep.store import StoreMeta, SweepStore, open_sweep
 from impactlab.sweep.study import Study, load_study
 from impactlab.sweep.study_meta import category_values, store_meta
+from impactlab.sweep.study_record import with_recorded_laws
 
 
 @dataclass
@@ -245,6 +246,8 @@ def run_sweep(
         an error (the finished chunks stay stored).
     """
     st = load_study(study, max_cases=max_cases)
+    path = Path(store) if store is not None else Path(f"{st.name}.zarr")
+    st = with_recorded_laws(st, path)  # a store's own laws: its resume needs no --law-file
     ev: Evaluator = evaluator if evaluator is not None else ENGINE
     be = _backend(backend, workers, scheduler, client, max_in_flight, worker_timeout)
     ev.validate(category_values(st))
@@ -258,7 +261,6 @@ def run_sweep(
             f"{', '.join(meta.outputs)}); keep them in [outputs], or name the outputs to "
             f"report in [uncertainty] outputs"
         )
-    path = Path(store) if store is not None else Path(f"{st.name}.zarr")
     sstore = SweepStore(path)
     try:
         done = sstore.prepare(st, meta, restart=restart)

@@ -110,9 +110,11 @@ class SweepStore:
         return {int(p.name) for p in self._done_dir.iterdir() if p.name.isdigit()}
 
     def mark_done(self, index: int, text: str) -> None:
-        """Create chunk ``index``'s completion marker (content ``text``) atomically."""
+        """Create chunk ``index``'s completion marker (content ``text``) atomically (the markers'
+        folder made again where it was deleted: its chunks are computed again, not lost)."""
         final = self._done_dir / str(index)
         tmp = self._done_dir / f".{index}.{os.getpid()}.tmp"
+        self._done_dir.mkdir(exist_ok=True)
         tmp.write_text(text)
         os.replace(tmp, final)
 

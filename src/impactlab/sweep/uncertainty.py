@@ -30,6 +30,7 @@ from scipy import stats
 
 from impactlab.flags import ADVISORY_FLAGS, invalidating_names
 from impactlab.sweep.dimensions import SAMPLE_DIM
+from impactlab.sweep.display import value_text
 from impactlab.sweep.inputs import OUTPUT_ALIASES, output_spec
 from impactlab.sweep.options import (
     DEFAULT_PERCENTILES,
@@ -259,7 +260,8 @@ def uncertainty_reports(
     include_flagged: bool = False,
 ) -> dict[str, UncertaintyReport]:
     """One :func:`uncertainty_report` per grid point of a (grid+)sample sweep, keyed by a title
-    naming the point ("law = brake, ..."; the study's title for a pure sample). ``outputs`` and
+    naming the point in display units ("law = brake, angle = 20 deg"; the study's title for a
+    pure sample). ``outputs`` and
     ``percentiles`` default to the study's ``[uncertainty]`` table, else the defaults."""
     spec = study_uncertainty_spec(ds)
     outs = list(outputs) if outputs else (list(spec.outputs) if spec else None)
@@ -274,12 +276,31 @@ def uncertainty_reports(
     points: list[dict[str, int]] = [{}]
     for d in grid_dims:
         points = [{**p, d: i} for p in points for i in range(ds.sizes[d])]
-    reports = {}
-    for p in points:
-        sub = ds.isel(p) if p else ds
-        title = ", ".join(f"{d} = {sub[d].values!s}" for d in p) or str(ds.attrs.get("title"))
-        reports[title] = uncertainty_report(sub, outs, None, pcts, include_flagged)
-    return reports
+    titles = _point_titles(ds, points)
+    return {
+        title: uncertainty_report(ds.isel(p) if p else ds, outs, None, pcts, include_flagged)
+        for title, p in zip(titles, points, strict=True)
+    }
+
+
+def _point_titles(ds: Any, points: Sequence[dict[str, int]]) -> list[str]:
+    """Each grid point named by its values in their display units ("law = brake, angle =
+    20 deg"; more digits where five would name two points alike); the study's title for the
+    point of a pure sample."""
+    for digits in range(5, 18):
+        titles = [
+            ", ".join(value_text(ds, d, _plain(ds[d].values[i]), digits) for d, i in p.items())
+            or str(ds.attrs.get("title"))
+            for p in points
+        ]
+        if len(set(titles)) == len(titles):
+            break
+    return titles
+
+
+def _plain(value: Any) -> Any:
+    """A coordinate's value as Python's float or str."""
+    return value.item() if isinstance(value, np.generic) else value
 
 
 def format_report(rep: UncertaintyReport, title: str = "") -> str:
