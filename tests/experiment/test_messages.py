@@ -41,7 +41,7 @@ def test_an_angle_inside_the_range_is_inverted(cli_main: CliMain, tmp_path: Path
         'angle = "90 deg"\nvi = "-1.41 m/s"\ne = 0.5\nmu = 0.2\ndelta_p = "22 um"\nls = "1400 um"\n'
     )
     code, _, err = cli_main("invert", "--file", str(tmp_path / "m.toml"))
-    assert code == 2 and "angle must lie in (0, 90) deg, open at both ends" in err
+    assert code == 2 and "angle in the measurement file must lie in (0, 90) deg" in err
 
 
 def test_a_figure_of_the_wrong_object_is_a_type_error(scans: dict) -> None:
