@@ -41,6 +41,33 @@ def test_a_study_file_named_like_a_subcommand_still_runs(tmp_path, monkeypatch, 
     assert code == 2 and err == "error: study file 'study.toml' does not exist\n"
 
 
+STUDY = "[fixed]\nangle = '20 deg'\nvy = -1.41\n[grid]\nmu = [0.1]\n"
+
+
+def test_an_options_value_is_not_read_as_a_subcommand(tmp_path, monkeypatch, capsys) -> None:
+    """``--out runs``: ``runs`` (near ``run``) is the value of ``--out``, not a mistyped word."""
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "bad.toml").write_text(STUDY)
+    code, _, err = run_cli(monkeypatch, capsys, "sweep", "--out", "runs", "bad.toml", "-q")
+    assert code == 0, err
+    assert (tmp_path / "runs" / "zarr.json").is_file()
+    code, _, err = run_cli(monkeypatch, capsys, "sweep", "--netcdf", "exports", "bad.toml")
+    assert code == 2
+    assert err.startswith("error: --netcdf 'exports' must end in .nc or .nc4 (NetCDF-4)")
+    code, _, err = run_cli(
+        monkeypatch, capsys, "sweep", "-q", "--netcdf", "exports.nc", "-o", "x.zarr", "bad.toml"
+    )
+    assert code == 0, err
+    assert (tmp_path / "exports.nc").is_file()
+
+
+def test_a_mistyped_subcommand_after_options_is_named(tmp_path, monkeypatch, capsys) -> None:
+    monkeypatch.chdir(tmp_path)
+    code, out, err = run_cli(monkeypatch, capsys, "sweep", "--out", "x.zarr", "rn")
+    assert code == 2 and out == ""
+    assert err.startswith("error: no subcommand 'rn' (did you mean 'run'?)")
+
+
 NAME = "sweep-measured"
 
 

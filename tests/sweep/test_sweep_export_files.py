@@ -3,13 +3,27 @@ for ``.csv``, NetCDF-4 for ``.nc``/``.nc4``); any other suffix is refused in one
 
 from __future__ import annotations
 
+import os
+import subprocess
+import sys
+
 import numpy as np
 import pandas as pd
 import pytest
 import xarray as xr
 from sweep_fakes import FakeEvaluator, run_cli
 
-from impactlab.sweep import Study, export_csv, export_file, export_netcdf, run_sweep
+from impactlab.sweep import (
+    Normal,
+    Sample,
+    Study,
+    Uniform,
+    export_csv,
+    export_file,
+    export_netcdf,
+    run_sweep,
+)
+from impactlab.sweep.inputs import INPUTS
 
 
 @pytest.fixture
@@ -83,3 +97,49 @@ def test_python_exports_check_the_suffix(store, tmp_path):
         export_csv(ds, tmp_path / "x.nc")
     assert export_file(ds, tmp_path / "x.csv").read_text().startswith("angle [rad],mu,e,")
     assert not list(tmp_path.glob(".*partial"))
+
+
+@pytest.mark.parametrize("name", [".csv", ".nc", ".NC4"])
+def test_a_suffix_alone_is_refused_as_a_file_without_a_name(
+    store, tmp_path, monkeypatch, capsys, name
+):
+    target = tmp_path / name
+    code, out, err = run_cli(monkeypatch, capsys, "sweep", "export", str(store), str(target))
+    assert code == 2 and out == "" and not target.exists()
+    example = str(tmp_path / f"out{name}")
+    assert err == (
+        f"error: export file {str(target)!r} needs a name before its suffix, e.g. {example!r}\n"
+    )
+
+
+def _export_in_a_new_process(store, target, hash_seed: str) -> bytes:
+    """``impactlab sweep export`` in a fresh interpreter (its own string hashing)."""
+    env = {**os.environ, "PYTHONHASHSEED": hash_seed}
+    done = subprocess.run(
+        [sys.executable, "-m", "impactlab", "sweep", "export", str(store), str(target)],
+        env=env,
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert done.returncode == 0, done.stderr
+    return target.read_bytes()
+
+
+def test_the_csv_columns_come_in_a_fixed_order(tmp_path):
+    study = Study(
+        name="order",
+        grid={"angle": ["20 deg", "40 deg"], "mu": [0.1, 0.3]},
+        fixed={"vy": -1.41, "law": "hertz"},
+        sample=Sample(size=3, seed=1, inputs={"vx": Uniform(0.0, 0.5), "spin": Normal(0.0, 1.0)}),
+        outputs=["regime", "e", "delta_p"],
+    )
+    store = run_sweep(study, tmp_path / "o.zarr", evaluator=FakeEvaluator(), quiet=True).path
+    first = _export_in_a_new_process(store, tmp_path / "a.csv", "1")
+    for seed in ("2", "3", "4"):
+        assert _export_in_a_new_process(store, tmp_path / f"b{seed}.csv", seed) == first
+    header = first.decode().splitlines()[0].split(",")
+    assert header[:7] == ["angle [rad]", "mu", "sample", "regime", "e", "delta_p [m]", "status"]
+    inputs = [h.split(" [")[0] for h in header[7:]]
+    assert inputs == sorted(inputs, key=list(INPUTS).index)
+    assert {"vy [m/s]", "vx [m/s]", "spin [rad/s]", "law"} <= set(header[7:])

@@ -117,8 +117,19 @@ def test_tiny_chunks_warn() -> None:
             {"engine": {"rtol": "tight"}},
             r"engine rtol must be a number in \[1e-13, 0.001\], got 'tight'",
         ),
-        ({"engine": {"gravity": "yes"}}, r"engine gravity must be true/false, a number in"),
-        ({"engine": {"gravity": "9.81 m/s"}}, r"quantity such as '9.81 m/s\^2', got '9.81 m/s'"),
+        ({"engine": {"gravity": "yes"}}, r"cannot parse 'yes' .*; allowed: true/false, a numb"),
+        (
+            {"engine": {"gravity": "9.81 m/s"}},
+            r"^engine gravity: '9.81 m/s' has the wrong dimension; expected a quantity "
+            r"convertible to m/s\^2; allowed: true/false, a number in \[0, 1e\+07\] \(m/s\^2\) "
+            r"or a quantity such as '9.81 m/s\^2'$",
+        ),
+        (
+            {"engine": {"gravity": "9,81 m/s^2"}},
+            r"^engine gravity: '9,81 m/s\^2' holds a comma; write one quantity with a decimal "
+            r"point, .*; allowed: true/false, a number in \[0, 1e\+07\]",
+        ),
+        ({"engine": {"gravity": "-3 m/s^2"}}, r"^engine gravity must be true/false, .*, got -3.0$"),
         ({"engine": {"rtol": 0.01}}, r"engine rtol must be a number in \[1e-13, 0.001\], got 0.01"),
         (
             {"engine": {"gravity": 1e8}},

@@ -46,7 +46,7 @@ class _DefaultRun(TyperGroup):
     word that is no file but nearly a subcommand (``infoo``, ``rn``) is refused naming it."""
 
     def parse_args(self, ctx: Any, args: list[str]) -> list[str]:
-        first = next((a for a in args if not a.startswith("-")), None)
+        first = self._first_positional(args)
         if first is not None and first not in self.commands:
             near = "" if Path(first).exists() else did_you_mean(first, list(self.commands))
             if near and not {".", "/", "\\"} & set(first):
@@ -56,6 +56,27 @@ class _DefaultRun(TyperGroup):
                 )
             args = ["run", *args]
         return super().parse_args(ctx, args)
+
+    def _first_positional(self, args: list[str]) -> str | None:
+        """The first word of ``args`` that is no option and no option's value (``--out runs``:
+        ``runs`` is ``--out``'s value); which options take a value, click says (the group's
+        own and ``run``'s: the default subcommand)."""
+        params = [*self.params, *getattr(self.commands.get("run"), "params", [])]
+        takes_value = {
+            name
+            for p in params
+            if p.param_type_name == "option" and not (p.is_flag or p.count)
+            for name in (*p.opts, *p.secondary_opts)
+        }
+        words = iter(args)
+        for word in words:
+            if word == "--":
+                return next(words, None)
+            if not word.startswith("-"):
+                return word
+            if word in takes_value:  # "--out VALUE"; "--out=VALUE" carries its own
+                next(words, None)
+        return None
 
 
 @dataclass(frozen=True)
@@ -202,6 +223,8 @@ def _check_run_paths(out: Path | None, netcdf: Path | None) -> None:
         output_store(out, "--out")
     if netcdf is not None:
         csv = f"; for a CSV table: impactlab sweep export STORE {netcdf.with_suffix('.csv')}"
+        if netcdf.name.startswith(".") and not netcdf.suffix:  # ".nc": no name to keep
+            csv = ""
         _suffix(netcdf, "--netcdf", ("NetCDF-4",), csv)
         output_file(netcdf, "--netcdf")
 

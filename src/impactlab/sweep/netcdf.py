@@ -1,7 +1,7 @@
 """A sweep's Dataset as a file: NetCDF-4 (``.nc``, ``.nc4``: every variable and attribute) or a
-CSV table (``.csv``: one row per case, every input and output a column, its SI unit in the
-header, ``e_energy``, ``delta_p [m]``, ``angle [rad]``). ``export_file`` chooses by the suffix
-and refuses any other."""
+CSV table (``.csv``: one row per case, every input and output a column, its unit in the
+header, ``e_energy``, ``delta_p [m]``, ``angle [rad]``, in a fixed order). ``export_file``
+chooses by the suffix and refuses any other."""
 
 from __future__ import annotations
 
@@ -13,6 +13,8 @@ from typing import Any
 
 import numpy as np
 import xarray as xr
+
+from impactlab.sweep.inputs import INPUTS
 
 __all__ = ["EXPORT_SUFFIXES", "export_csv", "export_file", "export_netcdf"]
 
@@ -26,6 +28,11 @@ def check_suffix(
     """The format of ``path`` by its suffix (:data:`EXPORT_SUFFIXES`, among ``formats``);
     ValueError naming ``name`` (how the user gave the path) and the suffixes allowed."""
     p = Path(path)
+    if p.name.lower() in EXPORT_SUFFIXES:  # ".csv": a suffix only, which Path reads as a name
+        raise ValueError(
+            f"{name} {str(p)!r} needs a name before its suffix, e.g. "
+            f"{str(p.with_name('out' + p.name))!r}"
+        )
     kind = EXPORT_SUFFIXES.get(p.suffix.lower())
     if kind not in formats:
         allowed = ", ".join(
@@ -68,12 +75,14 @@ def export_netcdf(ds: xr.Dataset, path: str | Path) -> Path:
 
 def export_csv(ds: xr.Dataset, path: str | Path) -> Path:
     """Write the Dataset as a CSV table (``ds.to_dataframe()``): one row per case, a column per
-    dimension, input and output, headed ``name [unit]`` (SI, the variable's ``units``; a
-    dimensionless one by its name alone). Written whole or not at all; ``path`` ends in
-    ``.csv``."""
+    dimension, input and output, headed ``name [unit]`` (the variable's ``units``: SI but the
+    Brinell hardness in kgf/mm^2; a dimensionless one by its name alone), in the order of
+    :func:`_columns`. Written whole or not at all; ``path`` ends in ``.csv``."""
     check_suffix(path, "CSV file", ("CSV",))
     out = Path(path)
-    table = ds.to_dataframe().reset_index()
+    dims = [str(d) for d in (ds["status"].dims if "status" in ds else ds.dims)]
+    table = ds.to_dataframe(dim_order=dims).reset_index()
+    table = table[_columns(dims, ds.attrs.get("outputs", []), [str(c) for c in table.columns])]
     table.columns = [_header(str(c), ds[c].attrs.get("units")) for c in table.columns]
     tmp = out.with_name(f".{out.name}.{os.getpid()}.partial")
     try:
@@ -83,6 +92,18 @@ def export_csv(ds: xr.Dataset, path: str | Path) -> Path:
         tmp.unlink(missing_ok=True)
         raise
     return out
+
+
+def _columns(dims: list[str], outputs: Any, present: list[str]) -> list[str]:
+    """The columns of a CSV table in a fixed order, whatever order the store's variables come
+    in: dimensions, outputs (the study's order), ``flags``, ``status``, then the inputs
+    (``INPUTS`` order; any other name after them, sorted)."""
+    head = [
+        c for c in dict.fromkeys([*dims, *map(str, outputs), "flags", "status"]) if c in present
+    ]
+    rank = {name: i for i, name in enumerate(INPUTS)}
+    rest = sorted(set(present) - set(head), key=lambda c: (rank.get(c, len(rank)), c))
+    return [*head, *rest]
 
 
 def _header(name: str, unit: Any) -> str:

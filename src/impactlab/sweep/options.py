@@ -40,11 +40,15 @@ class EngineOptions:
     rtol: float | None = None
 
     def __post_init__(self) -> None:
+        allowed = (
+            f"true/false, a number in [0, {MAX_GRAVITY:g}] (m/s^2) or a quantity such as "
+            "'9.81 m/s^2'"
+        )
         if isinstance(self.gravity, str) or is_quantity(self.gravity):  # "9.81 m/s^2"
             try:
                 g = float(magnitude("engine gravity", self.gravity, "m/s^2"))
-            except ValueError:
-                g = math.nan  # refused below, with what is allowed
+            except ValueError as exc:  # its reason (a comma, the wrong dimension), then the rule
+                raise ValueError(f"{exc}; allowed: {allowed}") from None
             object.__setattr__(self, "gravity", g if math.isfinite(g) else self.gravity)
         if self.rtol is not None and not (_number(self.rtol) and rtol_allowed(float(self.rtol))):
             raise ValueError(
@@ -53,10 +57,7 @@ class EngineOptions:
         if self.gravity is not None and not isinstance(self.gravity, bool):
             g = self.gravity
             if not (_number(g) and gravity_allowed(float(g))):
-                raise ValueError(
-                    f"engine gravity must be true/false, a number in [0, {MAX_GRAVITY:g}] "
-                    f"(m/s^2) or a quantity such as '9.81 m/s^2', got {g!r}"
-                )
+                raise ValueError(f"engine gravity must be {allowed}, got {g!r}")
         if self.constant_angle is not None and not isinstance(self.constant_angle, bool):
             raise ValueError(
                 f"engine constant_angle must be true or false, got {self.constant_angle!r}"

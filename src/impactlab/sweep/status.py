@@ -1,10 +1,20 @@
 """Status codes the sweep itself assigns: cases the engine never sees (rejected inputs) and
 cases not computed yet. The engine's own codes are small non-negative integers
-(``impactlab.dynamics.kernels.status``); these are kept apart."""
+(``impactlab.dynamics.kernels.status``); these are kept apart.
+
+A chunk without its completion marker (``.sweep/done/<k>``: cut short before it, or the marker
+deleted) is computed again on resume; until then its cases read as not computed (status -1),
+whatever its files hold, in ``open_sweep``, an export, the uncertainty report and ``sweep info``
+alike (:func:`mask_undone`)."""
 
 from __future__ import annotations
 
 import enum
+from collections.abc import Iterable, Sequence
+from typing import Any
+
+import numpy as np
+import xarray as xr
 
 
 class SweepStatus(enum.IntEnum):
@@ -42,3 +52,45 @@ STATUS_BAD_INPUT = int(SweepStatus.BAD_INPUT)
 
 #: code -> message of every sweep status code.
 SWEEP_STATUS_MESSAGES: dict[int, str] = {int(s): s.message for s in SweepStatus}
+
+
+def undone_cases(
+    region: Sequence[slice], chunks: Sequence[int], shape: Sequence[int], done: Iterable[int]
+) -> np.ndarray:
+    """True for each case of ``region`` (a block of the case array of ``shape``, chunked by
+    ``chunks``, chunk indices in C order) whose chunk is not among ``done``."""
+    grid = tuple(-(-n // c) for n, c in zip(shape, chunks, strict=True))
+    per_dim = [np.arange(s.start, s.stop) // c for s, c in zip(region, chunks, strict=True)]
+    index = np.ravel_multi_index(tuple(np.ix_(*per_dim)), grid) if per_dim else np.zeros(())
+    return ~np.isin(index, np.fromiter(done, dtype=np.int64))
+
+
+def mask_undone(ds: xr.Dataset, done: Iterable[int]) -> xr.Dataset:
+    """``ds`` with the status of every case outside the chunks ``done`` (the store's chunking:
+    ``status``'s Zarr chunks) read as -1, lazily, block by block for a Dask-backed Dataset;
+    ``ds`` itself when every chunk is done."""
+    if "status" not in ds.data_vars:
+        return ds
+    status = ds["status"]
+    shape = tuple(int(n) for n in status.shape)
+    chunks = tuple(int(c) for c in status.encoding.get("chunks") or shape)
+    done = sorted(set(done))
+    grid = [-(-n // c) for n, c in zip(shape, chunks, strict=True)]
+    if len(done) >= int(np.prod(grid, dtype=np.int64)):
+        return ds
+
+    def masked(values: np.ndarray, region: Sequence[slice]) -> np.ndarray:
+        return np.where(undone_cases(region, chunks, shape, done), STATUS_NOT_RUN, values).astype(
+            values.dtype
+        )
+
+    def block(values: np.ndarray, block_info: Any = None) -> np.ndarray:
+        region = [slice(a, b) for a, b in block_info[0]["array-location"]]
+        return masked(values, region)
+
+    data = status.data
+    if hasattr(data, "map_blocks"):  # dask
+        new = data.map_blocks(block, dtype=data.dtype)
+    else:
+        new = masked(np.asarray(data), [slice(0, n) for n in shape])
+    return ds.assign(status=status.copy(data=new))

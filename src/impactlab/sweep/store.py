@@ -4,11 +4,11 @@ one writer at a time, and the study hash.
 - The store is built in a temporary sibling directory (``.<name>.creating-<host>-<pid>``) and
   renamed into place (:mod:`~impactlab.sweep.storebuild`), so a store exists complete or not at
   all; a killed creator leaves only its temporary sibling, removed by the next run.
-- ``.sweep/done/<k>``: the completion marker of chunk ``k``, created atomically (temporary name,
-  then rename) after all of the chunk's arrays are written; it records the size and CRC-32 of
-  each file of the chunk (:mod:`~impactlab.sweep.integrity`). A chunk without a marker is
-  computed again on resume; one whose files no longer match its marker is *damaged* and also
-  computed again; an intact one is never touched again.
+- ``.sweep/done/<k>``: chunk ``k``'s completion marker, made atomically (temporary name, then
+  rename) after all its arrays are written, with the size and CRC-32 of each of its files
+  (:mod:`~impactlab.sweep.integrity`). A chunk without a marker reads as not computed (status
+  -1, :mod:`~impactlab.sweep.status`) and is computed on resume, as is one whose files no
+  longer match its marker (*damaged*); an intact one is never touched again.
 - The root attributes hold the study hash; opening a store with a different study is refused
   unless the caller asks to start it fresh (the old store is moved aside atomically, then
   deleted).
@@ -54,6 +54,7 @@ from impactlab.sweep.repair import (
     restore_study_record,
     root_mismatch,
 )
+from impactlab.sweep.status import mask_undone
 from impactlab.sweep.storebuild import META, StoreMeta, build_store, rewrite_root
 from impactlab.sweep.study import Study
 
@@ -382,10 +383,9 @@ def open_sweep(path: str | Path, *, verify: bool = True) -> xr.Dataset:
     if not (p / "zarr.json").is_file() and not SweepStore(p).exists():
         raise ValueError(f"{str(p)!r} is not a sweep store (no zarr.json)")
     check_metadata(p)
-    if verify:
-        damaged = SweepStore(p).verify()
-        if damaged:
-            raise damaged_error(p, damaged)
+    damaged = SweepStore(p).verify() if verify else {}
+    if damaged:
+        raise damaged_error(p, damaged)
     broken = damaged_defined_arrays(p)  # no marker covers them: read NaN or not at all
     if broken:
         raise defined_arrays_error(p, broken)
@@ -397,4 +397,4 @@ def open_sweep(path: str | Path, *, verify: bool = True) -> xr.Dataset:
         ) from exc
     order = [*ds.attrs.get("outputs", []), "status"]
     names = [v for v in order if v in ds.data_vars] + [v for v in ds.data_vars if v not in order]
-    return ds[names]
+    return mask_undone(ds[names], SweepStore(p).done_chunks())

@@ -14,6 +14,7 @@ import zarr
 from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
 from impactlab.sweep.dimensions import Layout
 from impactlab.sweep.integrity import describe
+from impactlab.sweep.status import STATUS_NOT_RUN
 from impactlab.sweep.store import SweepStore, open_sweep
 
 
@@ -74,14 +75,25 @@ def format_flag_counts(counts: Mapping[str, int]) -> str:
     return f"{counts['flagged']:,} case(s) ({parts})"
 
 
-def _intact_values(path: Path, name: str, damaged: set[int]) -> np.ndarray:
+def _intact_values(path: Path, name: str, damaged: set[int], done: set[int]) -> np.ndarray:
     """The values of array ``name``, chunk by chunk, leaving out the damaged chunks (reading
-    them could fail)."""
+    them could fail); a chunk without its completion marker reads -1 (status: not computed;
+    an integer output: no result), as ``open_sweep`` reads it."""
     z = zarr.open_array(str(path / name), mode="r")
-    if not damaged:
-        return np.asarray(z[...]).ravel()
     lay = Layout(tuple(f"dim_{i}" for i in range(z.ndim)), tuple(z.shape), tuple(z.chunks))
-    parts = [np.asarray(z[lay.block(k)]).ravel() for k in range(lay.n_chunks) if k not in damaged]
+    undone = [k for k in range(lay.n_chunks) if k not in done]
+    if not damaged:
+        values = np.asarray(z[...])
+        for k in undone:
+            values[lay.block(k)] = STATUS_NOT_RUN
+        return values.ravel()
+    parts = [
+        np.full(lay.block_size(k), STATUS_NOT_RUN, dtype=z.dtype)
+        if k not in done
+        else np.asarray(z[lay.block(k)]).ravel()
+        for k in range(lay.n_chunks)
+        if k not in damaged
+    ]
     return np.concatenate(parts) if parts else np.empty(0, dtype=z.dtype)
 
 
@@ -108,9 +120,10 @@ def store_info(path: str | Path) -> dict[str, Any]:
         )
     info["outputs"] = list(ds.attrs.get("outputs", []))
     msgs = ds.attrs.get("status_messages", {})
-    info["status"] = _counts(_intact_values(p, "status", set(damaged)), msgs)
+    marked = store.done_chunks()
+    info["status"] = _counts(_intact_values(p, "status", set(damaged), marked), msgs)
     if "flags" in ds.data_vars:
-        flags = _intact_values(p, "flags", set(damaged))
+        flags = _intact_values(p, "flags", set(damaged), marked)
         info["flagged"] = format_flag_counts(flag_counts(flags, ds["flags"].attrs))
     return info
 
