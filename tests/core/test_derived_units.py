@@ -31,6 +31,15 @@ def dent_depth() -> Iterator[str]:
         ("mm", "'mm', which is 0.001 m"),
         ("deg", "'deg', which is 0.0174533 rad"),
         ("percent", "'percent', which is 0.01 (values are SI: give '1'"),
+        ("kgf/mm^2", "'kgf/mm^2', which is 9.80665e+06 kg / m / s ** 2 (values are SI: give 'Pa' "),
+        ("lbf", "(values are SI: give 'N' and compute in it)"),
+        ("kgf*cm", "(values are SI: give 'J' or 'N m' and compute in it)"),
+        ("MPa*s", "(values are SI: give 'Pa s' and compute in it)"),
+        (
+            "degC",
+            "'degC', a scale with an offset (0 degC is 273.15 K, not 0); values are SI: give 'K'",
+        ),
+        ("degF", "'degF', a scale with an offset (0 degF is 255.372 K, not 0)"),
         ("bananas", "'bananas' ('bananas' is not defined in the unit registry)"),
         ("m/", "'m/' (not a unit expression)"),
         ("", "got ''"),
@@ -45,7 +54,7 @@ def test_a_unit_that_is_not_si_is_refused_in_one_line(unit: object, said: str) -
     assert "zz_unit" not in schema.DERIVED_FIELDS and "zz_unit" not in schema.FIELDS
 
 
-@pytest.mark.parametrize("unit", ["1", "m", "N s", "J/m", "rad/s", "1/m", "kg m^2"])
+@pytest.mark.parametrize("unit", ["1", "m", "N s", "J/m", "rad/s", "1/m", "kg m^2", "Pa", "K"])
 def test_si_units_are_accepted(unit: str) -> None:
     schema.register_output("zz_si", unit, "d", ("e",), lambda e: e)
     try:

@@ -252,3 +252,44 @@ def test_bare_numbers_read_their_minus_sign():
     assert bare_text("\u22124") == "-4" and bare_text("\u22124 m/s") == "\u22124 m/s"
     assert bare_text(-4.0) == -4.0
     assert read_minus("\u22121.41e\u22123 m/s \u2013 x") == "-1.41e-3 m/s \u2013 x"
+
+
+@pytest.mark.parametrize(
+    ("text", "unit", "expected"),
+    [
+        ("1_000 m", "m", 1000.0),
+        ("1_000.000_5 mm", "m", 1.0000005),
+        ("2.5e1_0 Pa", "Pa", 2.5e10),
+        ("\u22121_000 mm", "m", -1.0),
+        ("(1_000) m", "m", 1000.0),
+        ("6_500 1/s", "1/s", 6500.0),
+    ],
+)
+def test_digit_groups_are_one_number(text, unit, expected):
+    assert to_si(text, unit) == pytest.approx(expected, rel=1e-12)
+    assert magnitude("x", text, unit) == pytest.approx(expected, rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    ("text", "unit"),
+    [
+        ("m^2", "m**2"),
+        ("kg m^2", "kg*m**2"),
+        ("kg*m**2", "kg*m**2"),
+        ("m/s^2", "m/s**2"),
+        ("s^-2", "1/s**2"),
+        ("m^1.5", "m**1.5"),
+        ("N/m^2", "Pa"),
+        ("1/s^2", "1/s**2"),
+    ],
+)
+def test_a_unit_alone_is_one_of_it(text, unit):
+    assert to_si(text, unit) == 1.0
+
+
+def test_the_exponent_of_a_unit_is_never_the_number():
+    assert to_si("3 kg m^2", "kg*m**2") == 3.0
+    assert to_si("m^2 3", "m**2") == 3.0  # pint reads 3 m^2: the number written
+    for text in ("1_000 m 2", "(2)^2 m^2", "2^2 m^2"):
+        with pytest.raises(ValueError, match=re.escape(f"x: {text!r} holds more than one number")):
+            to_si(text, "m" if text.endswith(" 2") else "m**2", name="x")

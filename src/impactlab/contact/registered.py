@@ -40,6 +40,7 @@ from impactlab.contact.table_input import (
     PLAUSIBLE_RADIUS,
     hertz_offset,
     radius_hint,
+    two,
 )
 from impactlab.contact.tabulated import Tabulated, interpolation_error
 from impactlab.materials import ContactPair
@@ -166,14 +167,68 @@ def _values(what: str, fn: Callable[[float], Any], x: np.ndarray) -> np.ndarray:
     return out
 
 
+#: Units a bare length may have been meant in, and their size in m.
+_MEANT_UNITS = (("mm", 1e-3), ("um", 1e-6))
+
+
+def _check_below_radius(given: Any, top: float, radius: float, d0: float) -> None:
+    """ValueError naming ``delta_max`` (as ``given``: ``top`` [m]) and ``radius`` [m] unless
+    ``top`` lies below the radius; for a bare number, the unit it may have been meant in."""
+    if top < radius:
+        return
+    shown = f"{top:.4g} m" if isinstance(given, int | float) else f"{given!r} ({top:.4g} m)"
+    meant = next((u for u, size in _MEANT_UNITS if d0 < top * size < radius), None)
+    hint = ""
+    if isinstance(given, int | float):
+        hint = " (a bare number is m" + (f": '{top:g} {meant}'?)" if meant else ")")
+    raise ValueError(f"delta_max = {shown} must be smaller than radius = {radius:.4g} m{hint}")
+
+
+def _check_samples(
+    name: str, grid: np.ndarray, forces: np.ndarray, residual: np.ndarray, default: bool
+) -> None:
+    """ValueError naming the callable, the value it returned and the interference [m] of the
+    sample where ``forces`` (``loading`` at ``grid``) are not > 0 or decrease, or where
+    ``residual`` (``unloading`` at ``grid``) is not in [0, delta_max) or not 0 at the first
+    sample (the elastic limit: ``switch_interference``, by default the pair's delta_c)."""
+    start = "the pair's delta_c" if default else "switch_interference"
+    d, f, r = grid, forces, residual
+    bad = np.flatnonzero(~(f > 0.0))
+    if bad.size:
+        i = int(bad[0])
+        raise ValueError(
+            f"law {name!r}: F = loading(delta) must be > 0 N from {start} to delta_max, got "
+            f"{f[i]:.4g} N at delta = {d[i]:.4g} m"
+        )
+    bad = np.flatnonzero(np.diff(f) < 0.0)
+    if bad.size:
+        i = int(bad[0]) + 1
+        raise ValueError(
+            f"law {name!r}: F = loading(delta) must not decrease with delta, got "
+            f"{two(f[i - 1], f[i], 'N')} at delta = {two(d[i - 1], d[i], 'm')}"
+        )
+    if r[0] != 0.0:
+        raise ValueError(
+            f"law {name!r}: delta_r = unloading(delta_max) must be 0 at the elastic limit "
+            f"({start}, {d[0]:.4g} m: Hertz, no residual depth), got {r[0]:.4g} m"
+        )
+    bad = np.flatnonzero(~((r >= 0.0) & (r < d)))
+    if bad.size:
+        i = int(bad[0])
+        raise ValueError(
+            f"law {name!r}: delta_r = unloading(delta_max) must lie in [0, delta_max), got "
+            f"{r[i]:.4g} m at delta_max = {d[i]:.4g} m"
+        )
+
+
 def _check_switch(
     name: str, pair: ContactPair, radius: float, d0: float, f0: float, default: bool
 ) -> None:
     """ValueError unless the callable's force ``f0`` [N] at the switch ``d0`` [m], where the
-    sampled law leaves Hertz, lies within ``HERTZ_TOLERANCE`` of Hertz's (a force <= 0 is left
-    to the table's checks, which name it)."""
+    sampled law leaves Hertz, lies within ``HERTZ_TOLERANCE`` of Hertz's (``f0`` > 0:
+    ``_check_samples``)."""
     hertz, off = hertz_offset(pair, radius, d0, f0)
-    if not f0 > 0.0 or abs(off) <= HERTZ_TOLERANCE:
+    if abs(off) <= HERTZ_TOLERANCE:
         return
     which = ", by default the pair's Jackson-Green delta_c" if default else ""
     raise ValueError(
@@ -229,6 +284,7 @@ def sample_law(
     default = switch_interference is None
     d0 = dc if default else check_positive("switch_interference", switch_interference, "m")
     top = check_finite("delta_max", delta_max, "m")
+    _check_below_radius(delta_max, top, radius, d0)
     if not top > d0:
         limit = (
             f"the pair's delta_c at radius = {radius:g} m (Jackson & Green 2005)"
@@ -241,6 +297,8 @@ def sample_law(
         )
     grid = np.geomspace(d0, top, points)
     forces = _values("loading", loading, grid)
+    residual = _values("unloading", unloading, grid)
+    _check_samples(name, grid, forces, residual, default)
     _check_switch(name, pair, radius, d0, float(forces[0]), default)
     curves = IndentationCurves.from_arrays(
         pair,
@@ -248,7 +306,7 @@ def sample_law(
         grid,
         forces,
         grid,
-        _values("unloading", unloading, grid),
+        residual,
         name=name,
         source=source or f"sampled from Python callables ({points} points)",
     )

@@ -159,25 +159,47 @@ def _si_registry() -> Any:
     return pint.UnitRegistry()
 
 
+#: Named SI units (and their usual products) offered for a unit of another size with the same
+#: base units: ``"kgf/mm^2"`` -> ``"Pa"``.
+_NAMED_SI = ("N", "Pa", "J", "N m", "W", "N s", "Pa s", "N/m", "C", "V", "ohm", "F", "T", "Wb", "H")
+
+
+def _named_si(base_units: Any) -> str:
+    """The named SI units of ``_NAMED_SI`` whose base units are ``base_units``, as a hint
+    (``'J' or 'N m'``); empty when none is."""
+    reg = _si_registry()
+    same = [u for u in _NAMED_SI if reg.Quantity(1.0, u).to_base_units().units == base_units]
+    return " or ".join(repr(u) for u in same)
+
+
 def _check_unit(name: str, unit: Any) -> None:
     """ValueError (one line, naming ``unit``) unless ``unit`` is an SI unit that pint parses,
     ``"1"`` for dimensionless: every value of a result is SI, so a unit of another size
-    (``"mm"``, ``"furlongs"``) would mislabel them."""
+    (``"mm"``, ``"furlongs"``) or with an offset (``"degC"``) would mislabel them. The hint
+    names the SI unit to give instead (``"kgf/mm^2"``: ``'Pa'``)."""
     want = 'an SI unit pint parses ("m", "N s", "J/m", "1" for dimensionless)'
     if not isinstance(unit, str) or not unit.strip():
         raise ValueError(f"unit of output {name!r} must be {want}, got {unit!r}")
     try:
-        one = _si_registry().Quantity(1.0, "dimensionless" if unit == "1" else unit)
-        base = one.to_base_units()
+        text = "dimensionless" if unit == "1" else unit
+        base = _si_registry().Quantity(1.0, text).to_base_units()
+        zero = _si_registry().Quantity(0.0, text).to_base_units()
     except Exception as exc:  # pint raises several kinds for text it cannot read
         why = str(exc).splitlines()[0] if str(exc) else "not a unit expression"
         raise ValueError(f"unit of output {name!r} must be {want}, got {unit!r} ({why})") from None
+    si = f"{base.units:~}" or "1"
+    if float(zero.magnitude) != 0.0:  # "degC": 0 degC is 273.15 K
+        raise ValueError(
+            f"unit of output {name!r} must be {want}, got {unit!r}, a scale with an offset "
+            f"(0 {unit} is {float(zero.magnitude):g} {si}, not 0); values are SI: give {si!r} "
+            "and compute in it"
+        )
     if not math.isclose(float(base.magnitude), 1.0, rel_tol=1e-12):
-        si = f"{base.units:~}" or "1"
         size = f"{float(base.magnitude):.6g}" + ("" if si == "1" else f" {si}")
+        give = _named_si(base.units) or repr(si)
         raise ValueError(
             f"unit of output {name!r} must be {want}, got {unit!r}, which is {size} (values "
-            f"are SI: give {si!r} and compute in it)"
+            f"are SI: give {give} and compute in it)"
         )
 
 
