@@ -73,7 +73,8 @@ def test_ctrl_c_during_a_command_prints_interrupted_and_exits_130():
     assert (proc.returncode, out, err) == (130, "", "interrupted\n")
 
 
-def test_ctrl_c_during_a_sweep_prints_the_sweeps_line_only(tmp_path: Path):
+@pytest.mark.parametrize("quiet", [[], ["--quiet"]], ids=["progress", "quiet"])
+def test_ctrl_c_during_a_sweep_prints_the_sweeps_line_only(tmp_path: Path, quiet: list[str]):
     study = tmp_path / "s.toml"
     study.write_text(
         "[study]\nchunk_size = 2\n[fixed]\nvy = '-1.41 m/s'\nmu = 0.2\n"
@@ -81,7 +82,7 @@ def test_ctrl_c_during_a_sweep_prints_the_sweeps_line_only(tmp_path: Path):
     )
     store = tmp_path / "s.zarr"
     env = _env() | {KILL_AT: "chunk:0:done", KILL_SIGNAL: "SIGINT"}
-    args = ["sweep", "run", str(study), "--out", str(store)]
+    args = ["sweep", "run", str(study), "--out", str(store), *quiet]
     r = subprocess.run(
         [sys.executable, "-c", _MAIN, *args], capture_output=True, text=True, env=env, timeout=600
     )
@@ -111,5 +112,7 @@ def test_ctrl_c_during_calibrate_prints_its_own_line_only(tmp_path, monkeypatch,
 def test_the_line_of_an_interrupt(capsys):
     interrupted(KeyboardInterrupt())
     assert capsys.readouterr().err == "interrupted\n"
-    interrupted(SweepInterrupted())  # the sweep printed its own line
+    interrupted(SweepInterrupted("interrupted: 1 of 2 chunks", said=True))  # printed already
     assert capsys.readouterr().err == ""
+    interrupted(SweepInterrupted("interrupted: 1 of 2 chunks", said=False))  # --quiet
+    assert capsys.readouterr().err == "interrupted: 1 of 2 chunks\n"

@@ -50,11 +50,14 @@ class _Commands(TyperGroup):
 
 
 def interrupted(exc: KeyboardInterrupt) -> None:
-    """Say on stderr that a command was interrupted: ``interrupted``, unless ``exc`` is a
-    sweep's (``SweepInterrupted``), which said so already (how many chunks are stored). A
-    command that prints its own line (``calibrate``) exits 130 itself, without reaching here."""
+    """Say on stderr that a command was interrupted: ``interrupted``, or a sweep's own line
+    (``SweepInterrupted``: how many chunks are stored), unless the sweep printed it already
+    (not ``--quiet``). A command that prints its own line (``calibrate``) exits 130 itself,
+    without reaching here."""
     runner = sys.modules.get("impactlab.sweep.runner")  # not loaded: no sweep ran
     if runner is not None and isinstance(exc, runner.SweepInterrupted):
+        if not exc.said:
+            print(exc.args[0] if exc.args else "interrupted", file=sys.stderr, flush=True)
         return
     print("interrupted", file=sys.stderr, flush=True)
 

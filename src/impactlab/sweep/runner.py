@@ -125,7 +125,12 @@ class SweepResult:
 
 
 class SweepInterrupted(KeyboardInterrupt):
-    """The sweep stopped early (Ctrl-C); the finished chunks are stored."""
+    """The sweep stopped early (Ctrl-C); the finished chunks are stored. ``args[0]``: the line
+    that says how many; ``said``: whether it was printed already (not when quiet)."""
+
+    def __init__(self, message: str = "interrupted", said: bool = False) -> None:
+        super().__init__(message)
+        self.said = said
 
 
 @contextmanager
@@ -350,12 +355,12 @@ def _run_store(
     except KeyboardInterrupt:
         stats.wall_s = time.perf_counter() - t0
         n_done = len(sstore.done_chunks())
-        _note(
+        line = (
             f"interrupted: {n_done} of {lay.n_chunks} chunks stored in {path}; run the same "
-            f"command again to continue",
-            quiet,
+            f"command again to continue"
         )
-        raise SweepInterrupted() from None
+        _note(line, quiet)
+        raise SweepInterrupted(line, said=not quiet) from None
     finally:
         writer.close()
     stats.wall_s = time.perf_counter() - t0
