@@ -15,8 +15,9 @@ $IMPACTLAB_EXAMPLE_OUT, else a new temporary folder)::
 
     python examples/sweep_study.py [OUT_DIR]
 
-The same from the shell: ``impactlab sweep examples/study-regime-map.toml --out
-OUT_DIR/regime-map.zarr --plot OUT_DIR/plots``. Tutorial: docs/tutorials/sweep.md.
+A finer study of the same map from the shell (81 x 61 cases, mu 0-0.6; a study of its own, so
+in a store of its own): ``impactlab sweep examples/study-regime-map.toml --out
+OUT_DIR/regime-map-fine.zarr --plot OUT_DIR/plots-fine``. Tutorial: docs/tutorials/sweep.md.
 """
 
 from __future__ import annotations
