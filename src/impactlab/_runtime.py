@@ -1,13 +1,45 @@
 """What ``import impactlab`` sets up before any compiled function is defined: numba's cache
 folder (``impactlab._compiled_cache``), the notice while the engine compiles
 (``impactlab._compile_notice``) and the garbage collector's pause during that compilation
-(``impactlab._compile_gc``)."""
+(``impactlab._compile_gc``); in the ``impactlab`` command, a quiet Ctrl-C while it imports."""
 
 from __future__ import annotations
+
+import contextlib
+import signal
+import sys
+from pathlib import Path
+from typing import Any
 
 from impactlab import _compile_gc, _compile_notice
 from impactlab._compiled_cache import use_cache_dir
 
+
+def _interrupted_at_start(signum: int, frame: Any) -> None:
+    print("interrupted", file=sys.stderr, flush=True)
+    raise SystemExit(130)
+
+
+def quiet_start_interrupt() -> None:
+    """In the ``impactlab`` command (``sys.argv[0]`` named ``impactlab``), Ctrl-C while it
+    imports its libraries (a few seconds, before the command line handles Ctrl-C itself)
+    prints ``interrupted`` and exits with status 130, as during a command, instead of a
+    traceback. Any other program that imports impactlab keeps Python's own handler."""
+    if Path(sys.argv[0] if sys.argv else "").stem != "impactlab":
+        return
+    if signal.getsignal(signal.SIGINT) is signal.default_int_handler:
+        with contextlib.suppress(ValueError):  # not the main thread: Python's handler stays
+            signal.signal(signal.SIGINT, _interrupted_at_start)
+
+
+def release_start_interrupt() -> None:
+    """Python's own Ctrl-C handler again (the command line turns its KeyboardInterrupt into
+    one line), where :func:`quiet_start_interrupt` set the start's."""
+    if signal.getsignal(signal.SIGINT) is _interrupted_at_start:
+        signal.signal(signal.SIGINT, signal.default_int_handler)
+
+
+quiet_start_interrupt()
 use_cache_dir()
 _compile_notice.install()
 _compile_gc.install()

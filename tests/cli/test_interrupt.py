@@ -116,3 +116,55 @@ def test_the_line_of_an_interrupt(capsys):
     assert capsys.readouterr().err == ""
     interrupted(SweepInterrupted("interrupted: 1 of 2 chunks", said=False))  # --quiet
     assert capsys.readouterr().err == "interrupted: 1 of 2 chunks\n"
+
+
+#: A process that imports impactlab as the ``impactlab`` command would (``sys.argv[0]`` from
+#: argv) and gets Ctrl-C before the command line starts: the libraries' import window.
+_AT_START = textwrap.dedent("""
+    import os, signal, sys, time
+    signal.signal(signal.SIGINT, signal.default_int_handler)
+    sys.argv = [sys.argv[1]]
+    import impactlab
+    os.kill(os.getpid(), signal.SIGINT)
+    time.sleep(60)
+    print("not interrupted", flush=True)
+""")
+
+
+@pytest.mark.parametrize(
+    ("argv0", "rc"),
+    [("/usr/local/bin/impactlab", 130), ("-c", -signal.SIGINT)],
+    ids=["command", "library"],
+)
+def test_ctrl_c_while_the_command_imports(argv0: str, rc: int):
+    """The ``impactlab`` command: one line and 130, no traceback; a program that imports
+    impactlab as a library keeps Python's KeyboardInterrupt."""
+    r = subprocess.run(
+        [sys.executable, "-c", _AT_START, argv0],
+        capture_output=True,
+        text=True,
+        env=_env(),
+        timeout=600,
+    )
+    assert r.returncode == rc and r.stdout == ""
+    if rc == 130:
+        assert r.stderr == "interrupted\n"
+    else:
+        assert r.stderr.rstrip().endswith("KeyboardInterrupt")
+
+
+def test_the_command_line_takes_ctrl_c_over_from_the_start(monkeypatch):
+    from impactlab import _runtime
+
+    monkeypatch.setattr(sys, "argv", ["impactlab"])
+    monkeypatch.setattr(signal, "getsignal", lambda s: signal.default_int_handler)
+    installed = []
+    monkeypatch.setattr(signal, "signal", lambda s, h: installed.append(h))
+    _runtime.quiet_start_interrupt()
+    assert len(installed) == 1
+    with pytest.raises(SystemExit) as exc:
+        installed[0](signal.SIGINT, None)
+    assert exc.value.code == 130
+    monkeypatch.setattr(signal, "getsignal", lambda s: installed[0])
+    _runtime.release_start_interrupt()
+    assert installed[-1] is signal.default_int_handler

@@ -20,6 +20,7 @@ from typing import Any, TextIO
 import typer
 from typer.core import TyperGroup
 
+from impactlab import _runtime
 from impactlab._version import __version__
 from impactlab.cli import (
     analyze,
@@ -182,6 +183,7 @@ def _usage_line(exc: Exception, message: str) -> str:
 def main() -> None:
     """Entry point: run the app and turn user errors into a one-line message with exit code 2;
     impactlab's own warnings print as one line ``warning: <message>``."""
+    _runtime.release_start_interrupt()  # from here a command's Ctrl-C: KeyboardInterrupt
     atexit.unregister(_freeze_at_exit)  # once, however often main() runs in one process
     atexit.register(_freeze_at_exit)
     try:

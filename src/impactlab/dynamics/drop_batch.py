@@ -192,7 +192,7 @@ class DropBatchResult(BatchStatus):
         if name in self.inputs:
             return self.inputs[name]
         if name in schema.DERIVED_FIELDS:  # schema.register_output, as DropResult reads it
-            return batch_derived(self._engine_output, name)
+            return np.where(self.computed, batch_derived(self._engine_output, name), np.nan)
         known = ", ".join((*PUBLIC_FIELDS, *self.inputs, *schema.DERIVED_FIELDS))
         raise KeyError(f"unknown field {name!r}; known: {known}")
 
