@@ -123,3 +123,18 @@ def test_file_counts_must_be_integers(
     code, out, err = cli_main("invert", "--file", str(path))
     assert code == 2 and out == ""
     assert err.strip() == f"error: {needle}"
+
+
+def test_exact_inputs_draw_no_samples(cli_main: CliMain) -> None:
+    """Without any sigma nothing is drawn: ``mc_used`` is 0 and the Monte Carlo values are the
+    nominal ones, bit for bit, in Python and in the JSON."""
+    res = _invert()
+    assert res.mc_used == 0 and res.n_samples == 2000 and res.mc_rejected == 0.0
+    assert res.T_mc == res.T_median_mc == res.duration
+    assert res.T_interval_mc == (res.duration, res.duration)
+    assert res.F_mc == res.F_median_mc == res.mean_force
+    assert res.sigma_T_mc == res.sigma_F_mc == 0.0
+    code, out, _ = cli_main(*PAPER_20_ARGS, "--json")
+    data = json.loads(out)
+    assert code == 0 and data["mc_used"] == 0
+    assert data["T_mc"]["value"] == data["duration"]["value"]

@@ -141,6 +141,23 @@ def _monte_carlo(
     }
 
 
+def _point_distribution(T: float, F: float) -> dict[str, Any]:
+    """The Monte Carlo outputs of inputs without any sigma: nothing is drawn (``mc_used`` 0),
+    the distribution is the point (``T`` [s], ``F`` [N]): mean, median and interval ends."""
+    return {
+        "T_mc": T,
+        "F_mc": F,
+        "sigma_T_mc": 0.0,
+        "sigma_F_mc": 0.0,
+        "T_median_mc": T,
+        "F_median_mc": F,
+        "T_interval_mc": (T, T),
+        "F_interval_mc": (F, F),
+        "mc_rejected": 0.0,
+        "mc_used": 0,
+    }
+
+
 def _spread(x: Any) -> float:
     """The sample standard deviation of ``x``, 0 where it is rounding (``SPREAD_ROUNDING``)."""
     sigma = float(np.std(x, ddof=1))
@@ -371,7 +388,11 @@ def _result(
         mean_force=float(F0_a),
         sigma_T_linear=sT_lin,
         sigma_F_linear=sF_lin,
-        **_monte_carlo(meas, opt["n_samples"], opt["seed"], core, varied),
+        **(
+            _monte_carlo(meas, opt["n_samples"], opt["seed"], core, varied)
+            if varied
+            else _point_distribution(T0, float(F0_a))
+        ),
         n_samples=opt["n_samples"],
         seed=opt["seed"],
         alpha=al,

@@ -77,7 +77,8 @@ class InversionResult:
     samples in the sticking regime T's mean and standard deviation are unreliable, its median
     and interval are not), ``mc_rejected`` (fraction of samples that fell in
     the sticking regime or out of range and were discarded), ``mc_used`` (the number of samples
-    kept), ``n_samples``, ``seed``; ``alpha``,
+    kept; 0 where no input has a sigma: nothing is drawn, and the Monte Carlo values are the
+    nominal ones), ``n_samples`` (the samples asked for), ``seed``; ``alpha``,
     ``K_x``, ``K_y`` [1/kg], ``mu_c``; ``force_method`` ("momentum" for Eq. 29 with dv_cy, else
     "rigid-body identity"); ``F_momentum``, ``F_rigid`` (each None when its input is missing);
     ``gravity``; ``measure`` ("slip" or "travel", what the sliding length measures); ``inputs``
