@@ -1,8 +1,12 @@
 """Compiled force and contact radius of a contact with its history (``impactlab.contact.kernels``
 holds the laws): the turning point where unloading starts, the force on the loading or unloading
-branch, and the contact radius a [m]: the law's own radius on the loading curve where it
-defines one (Jackson-Green family), else the Hertz radius sqrt(R delta); on unloading
-sqrt(R_r (delta - delta_r)); 0 out of contact. Pure functions, SI units."""
+branch, and the contact radius a [m] that the tangential models use (k_t = 8 G* a). On loading
+it is the Jackson-Green area fit for the JG family (ghaednia, jackson_green) beyond 1.9 delta_c
+and the Hertz radius sqrt(R delta) for every other law and range, including brake and
+kogut_komvopoulos: their loading force is their own, but their truncation radius is not the
+contact radius in the elastic range and their sources give none for the transition, so in
+plastic contact this radius is below the FE one (1.1-1.41 sqrt(R delta)) by up to about 29 %.
+On unloading sqrt(R_r (delta - delta_r)); 0 out of contact. Pure functions, SI units."""
 
 from __future__ import annotations
 
@@ -55,7 +59,8 @@ def contact_force(
 @njit(cache=True, error_model="numpy")
 def loading_contact_radius(law: int, p: np.ndarray, delta: float) -> float:
     """Contact radius on the loading curve [m]: Jackson-Green area fit for the JG family beyond
-    delta = 1.9 delta_c, Hertz sqrt(R delta) otherwise (and for the other laws)."""
+    delta = 1.9 delta_c, Hertz sqrt(R delta) otherwise and for every other law (brake and
+    kogut_komvopoulos included: a simplification, smaller than their plastic radius)."""
     if delta <= 0.0:
         return 0.0
     if (law == GHAEDNIA or law == JACKSON_GREEN) and delta > JG_AREA_SWITCH * p[P_JG_DC]:
