@@ -142,7 +142,10 @@ def print_uncertainty(
 
 def _print_report(report: dict[str, Any], title: str) -> None:
     """One uncertainty report in display units: per output its mean ± standard deviation and
-    its percentiles, then the inputs ranked by their influence (squared rank correlation)."""
+    its percentiles, the cases used whose law was extrapolated (when any), then the inputs
+    ranked by their influence (squared rank correlation)."""
+    from impactlab.sweep.uncertainty import extrapolated_note
+
     rows = []
     for rec in report["summary"]:
         out, unit = str(rec.get("output")), str(rec.get("unit") or "1")
@@ -159,6 +162,9 @@ def _print_report(report: dict[str, Any], title: str) -> None:
         "included" if report.get("flagged_included") else "excluded"
     )
     print_rows(rows, f"{title}: {n}; mean ± standard deviation, percentiles")
+    note = extrapolated_note(report)
+    if note is not None:
+        print(note)
     ranked: dict[str, list[str]] = {}
     for r in report["sensitivity"]:
         ranked.setdefault(str(r["output"]), []).append(

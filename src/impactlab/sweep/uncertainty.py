@@ -3,7 +3,8 @@
 For each output (valid cases only: ``status == 0`` and no result flag that says the case is not
 plain success, ``impactlab.flags``: energy gain, gravity-dominated, the other end; the advisory
 LAW_EXTRAPOLATED keeps a case): mean, standard deviation and percentiles. Flagged cases are
-counted (``n_flagged``) and left out unless ``include_flagged=True``.
+counted (``n_flagged``) and left out unless ``include_flagged=True``; the cases used that carry
+LAW_EXTRAPOLATED are counted too (``n_extrapolated``), and the text reports say so.
 For each (output, sampled input) pair two sensitivity measures:
 
 - ``rank_corr2``: the squared Spearman rank correlation rho_s^2 (Saltelli et al., Global
@@ -20,7 +21,7 @@ The sampled inputs of a study are drawn independently, which both measures assum
 from __future__ import annotations
 
 import json
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -28,7 +29,7 @@ import numpy as np
 import pandas as pd
 from scipy import stats
 
-from impactlab.flags import ADVISORY_FLAGS, invalidating_names
+from impactlab.flags import ADVISORY_FLAGS, FLAG_LAW_EXTRAPOLATED, invalidating_names
 from impactlab.sweep.dimensions import SAMPLE_DIM
 from impactlab.sweep.display import value_text
 from impactlab.sweep.inputs import OUTPUT_ALIASES, output_spec
@@ -54,6 +55,8 @@ class UncertaintyReport:
         gain, gravity-dominated, the other end; ``impactlab.flags``), excluded unless the
         report was asked to include them (``flagged_included``).
     n_not_computed : cases of an incomplete store not computed yet (status -1), excluded too.
+    n_extrapolated : cases used in the statistics whose law was extrapolated (the advisory
+        LAW_EXTRAPOLATED flag: kept, but the law is used beyond its range there).
     """
 
     summary: pd.DataFrame
@@ -63,6 +66,7 @@ class UncertaintyReport:
     n_flagged: int = 0
     flagged_included: bool = False
     n_not_computed: int = 0
+    n_extrapolated: int = 0
 
     def ranking(self, output: str) -> list[str]:
         """Inputs ordered by decreasing influence (rank_corr2) on ``output``."""
@@ -83,6 +87,7 @@ class UncertaintyReport:
             "n_not_computed": self.n_not_computed,
             "n_flagged": self.n_flagged,
             "flagged_included": self.flagged_included,
+            "n_extrapolated": self.n_extrapolated,
             "summary": self.summary.reset_index().to_dict(orient="records"),
             "sensitivity": self.sensitivity.to_dict(orient="records"),
         }
@@ -148,9 +153,11 @@ def uncertainty_report(
             raise ValueError(f"input(s) {bad} are not sampled; sampled inputs: {sampled}")
     status = np.asarray(ds["status"].values).ravel()
     valid = status == 0
-    flagged = valid & _not_ok(ds, status.size)
+    bits = _flag_bits(ds, status.size)
+    flagged = valid & ((bits & ~ADVISORY_FLAGS) != 0)  # not plain success (``ok`` False)
     if not include_flagged:
         valid = valid & ~flagged
+    extrapolated = valid & ((bits & FLAG_LAW_EXTRAPOLATED) != 0)  # advisory: kept
     X = (
         np.column_stack([np.asarray(ds[i].values, dtype=np.float64).ravel() for i in ins])
         if ins
@@ -190,17 +197,33 @@ def uncertainty_report(
         int(flagged.sum()),
         include_flagged,
         n_not_computed,
+        int(extrapolated.sum()),
     )
 
 
-def _not_ok(ds: Any, n: int) -> np.ndarray:
-    """(n,) True where the case's ``flags`` hold a bit that is not advisory (the result is not
-    plain success: ``ImpactResult.ok`` / ``DropResult.ok`` False); all False without flags."""
+def _flag_bits(ds: Any, n: int) -> np.ndarray:
+    """(n,) the cases' ``flags`` bitmasks (``impactlab.flags.ResultFlag``) as integers; 0 for
+    an uncomputed case (fill value -1, or NaN) and for every case of a sweep without flags."""
     if "flags" not in ds.data_vars:
-        return np.zeros(n, dtype=bool)
-    f = np.asarray(ds["flags"].values).ravel()
-    f = np.where(f < 0, 0, f).astype(np.int64)  # the fill value of uncomputed cases
-    return (f & ~ADVISORY_FLAGS) != 0
+        return np.zeros(n, dtype=np.int64)
+    f = np.asarray(ds["flags"].values, dtype=np.float64).ravel()
+    return np.where(np.isfinite(f) & (f > 0), f, 0.0).astype(np.int64)
+
+
+def extrapolated_note(report: Mapping[str, Any]) -> str | None:
+    """The text reports' line on the cases used whose law was extrapolated (``to_dict``'s
+    ``n_extrapolated``), worded as ``impactlab sweep run``'s flag counts: "law extrapolated
+    (advisory): 50 of the 50 cases used, ..."; None when there is none."""
+    n = int(report.get("n_extrapolated", 0))
+    if not n:
+        return None
+    used = int(report["n_cases"]) - int(report["n_invalid"]) - int(report.get("n_not_computed", 0))
+    if not report.get("flagged_included"):
+        used -= int(report.get("n_flagged", 0))
+    return (
+        f"law extrapolated (advisory): {n:,} of the {used:,} cases used, kept in the statistics "
+        "(beyond the law's range: `impactlab laws --accuracy`)"
+    )
 
 
 def _sensitivity(
@@ -316,6 +339,9 @@ def format_report(rep: UncertaintyReport, title: str = "") -> str:
         f"cases: {rep.n_cases}, excluded: {rep.n_invalid} invalid (status > 0), "
         f"{rep.n_not_computed} not computed (status -1); {flagged}"
     )
+    note = extrapolated_note(rep.to_dict())
+    if note is not None:
+        lines.append(note)
     lines.append("")
     lines.append(rep.summary.to_string(float_format=lambda v: f"{v:.4g}"))
     lines.append("")
