@@ -1,6 +1,6 @@
 """Values read from a TOML input file that TOML itself does not check: a switch must be a
 TOML boolean (``true``/``false``), since Python reads any non-empty string, ``"false"``
-included, as true."""
+included, as true; a number a number (``true`` is none); a name text."""
 
 from __future__ import annotations
 
@@ -20,3 +20,22 @@ def check_booleans(table: Mapping[str, Any], keys: Iterable[str], where: str) ->
                 f"{key} in {where} must be true or false (a TOML boolean, without quotes), "
                 f"got {value!r}"
             )
+
+
+def plain_number(value: Any, name: str) -> float:
+    """A plain number (an option's float, or a config file's number or numeric text), else a
+    UserError naming ``name``; a TOML boolean is no number."""
+    try:
+        if isinstance(value, bool):
+            raise TypeError(value)
+        return float(value)
+    except (TypeError, ValueError):
+        raise UserError(f"{name} must be a number, got {value!r}") from None
+
+
+def text(value: Any, name: str) -> str:
+    """A name (a law, a friction model, a stop rule): TOML text, else a UserError naming
+    ``name``."""
+    if not isinstance(value, str):
+        raise UserError(f"{name} must be text, a name in quotes, got {value!r}")
+    return value

@@ -5,7 +5,9 @@ Any rod (length L between the end-sphere centres, tip radius, mass and/or diamet
 material and any flat (``--material``/``--flat``: a library name, properties or a TOML file).
 Quantities carry units as in ``impactlab simulate``; the angle is required, with its unit; the
 velocity is --vy (and --vx) or --speed and --incidence. Options that do not apply (mode counts
-or damping with ``--rigid``, ``--inertia`` without it) are refused.
+or damping with ``--rigid``, ``--inertia`` without it) are refused. ``--config`` reads the
+options' keys from a TOML file (at the top level or in a ``[drop]`` table; the command line
+wins), with ``impactlab simulate``'s rules (``cli.config_file``).
 """
 
 from __future__ import annotations
@@ -27,22 +29,27 @@ from impactlab.cli._common import (
     STOP_HELP,
     UserError,
     angle_quantity,
+    as_option,
     check_rate_flat,
     check_rate_law,
     emit,
     length_help,
+    load_toml,
     positive,
     quantity,
     rate_help,
     rate_name,
     velocity_input,
 )
+from impactlab.cli.config_file import ConfigOptions, command_table, merge_config, option_material
+from impactlab.cli.config_values import plain_number, text
 from impactlab.cli.drop_body import MODES_HELP, drop_body
-from impactlab.cli.simulate_from import option_error, run_from
+from impactlab.cli.simulate_from import run_from
 from impactlab.dynamics.drop import DEFAULT_T_MAX, simulate_drop
+from impactlab.dynamics.drop_checks import DropError
 from impactlab.dynamics.drop_result import UNITS, DropResult
 from impactlab.friction import DEFAULT_MU
-from impactlab.materials import AISI_1010, Material, get_material
+from impactlab.materials import AISI_1010
 
 #: What the contact table's columns and the less obvious totals mean (printed under the table).
 LEGEND = (
@@ -64,15 +71,6 @@ _COLUMNS = (
     "slip",
     "reload",
 )
-
-
-def _material(value: str | None, default: Material, name: str) -> Material:
-    if value is None:
-        return default
-    try:
-        return get_material(value, name)
-    except ValueError as exc:
-        raise UserError(str(exc)) from None
 
 
 def _contact_rows(result: DropResult) -> tuple[list[str], list[list[str]]]:
@@ -127,6 +125,16 @@ def report_drop(result: DropResult, *, as_json: bool) -> None:
     print(_contact_table(result))
     print(textwrap.fill(LEGEND, width=100))
     emit(result.summary(), as_json=False, title="drop", units=result.display_units())
+
+
+#: The help of ``--config``: the file's form, and why a [simulate] table is not read.
+CONFIG_HELP = (
+    "TOML file of these options by key (--modes-axial 16: modes_axial = 16; --no-gravity: "
+    "gravity = false; --rigid: rigid = true; a material: a name or a table), at the top level "
+    "or in a [drop] table; options given here win. A file may hold a [drop] and a [simulate] "
+    "table, each command reading its own; a [simulate] table alone is refused: its keys are "
+    "simulate's (there a rod is rigid unless flexible = true)."
+)
 
 
 def _on_command_line(ctx: typer.Context, name: str) -> bool:
@@ -216,8 +224,9 @@ def drop_cmd(
         "--from",
         help="Drop again the drop recorded in a drop's JSON (drop --json), with the options "
         "given on top (--rtol and --t-max too): the rule of 'impactlab simulate --from' (the "
-        "body's options refused).",
+        "body's options and --config refused).",
     ),
+    config: Path = typer.Option(None, "--config", help=CONFIG_HELP),
     as_json: bool = typer.Option(False, "--json", help="Machine-readable output."),
 ) -> None:
     """Drop a rod (the paper's by default; flexible, or --rigid) on a flat (AISI 1010 by
@@ -249,58 +258,91 @@ def drop_cmd(
     \b
       impactlab drop --angle "20 deg" --vy "-1.41 m/s" --mu 0.2 --stop flight
     """
+    # the options named like the config file's keys, as given on the command line (else None)
+    cli = {k: v if _on_command_line(ctx, k) else None for k, v in locals().items() if k in KEYS}
+    cli |= {"gravity": False if no_gravity else None, "rigid": rigid or None}
     if from_file is not None:  # the recorded drop, with the options given on top
-        values = {k: v for k, v in locals().items() if k in _FROM_KEYS}
-        given = {k: v if _on_command_line(ctx, k) else None for k, v in values.items()}
-        given |= {"gravity": False if no_gravity else None, "rigid": rigid or None}
-        result = run_from(from_file, given, drop_only=True)
-        for text in result.warnings:
-            print(f"warning: {text}", file=sys.stderr)
-        report_drop(cast(DropResult, result), as_json=as_json)  # drop_only: a drop
-        return
-    if angle is None:
-        raise UserError('--angle is required, with a unit, e.g. --angle "20 deg"')
-    velocity = velocity_input(vx, vy, speed, incidence)
-    sizes = {
-        "length": positive(length, "m", "--length"),
-        "tip_radius": positive(radius, "m", "--radius"),
-        "mass": positive(mass, "kg", "--mass"),
-        "diameter": positive(diameter, "m", "--diameter"),
-    }
-    modes = {"modes_axial": modes_axial, "modes_bending": modes_bending, "damping": damping}
-    rod_material = _material(material, PAPER_ROD.material, "--material")
-    body = drop_body(rigid, modes, sizes, rod_material, positive(inertia, "kg*m^2", "--inertia"))
-    flat_material, rate_law = _material(flat, AISI_1010, "--flat"), rate_name(rate)
-    check_rate_flat(rate_law, flat_material)  # the command line's way to other constants
-    check_rate_law(rate_law, law, "--rate", "--law")
-    try:
-        result = simulate_drop(
-            body,
-            flat_material,
-            law=law,
-            friction=friction,
-            mu=mu,
-            angle=angle_quantity(angle, "--angle"),
-            velocity=velocity,
-            spin=quantity(spin, "rad/s", "--spin") or 0.0,
-            gravity=not no_gravity,
-            rate=rate_law,
-            history=False,
-            stop="sequence" if stop is None else stop,
-            rtol=rtol,
-            t_max=positive(t_max, "s", "--t-max") or DEFAULT_T_MAX,
+        if config is not None:
+            raise UserError(
+                "--config and --from: --from takes the recorded input, with options on top; "
+                "leave out --config"
+            )
+        result = run_from(from_file, cli, drop_only=True)
+    else:
+        section = command_table(load_toml(config, "--config"), "drop", "simulate", str(config))
+        result = run_drop(merge_config(section, cli, config, KEYS, _FLAGS, _NOTES))
+    for line in result.warnings:
+        print(f"warning: {line}", file=sys.stderr)
+    report_drop(cast(DropResult, result), as_json=as_json)  # drop_only: a drop
+
+
+def run_drop(opt: ConfigOptions) -> DropResult:
+    """The drop of the merged options (config file < command line; SI after parsing), its
+    errors naming each value as the user gave it (``opt.label``)."""
+    v = opt.values
+
+    def name(key: str) -> str:  # the API's keywords (t_max): the option's or the key's name
+        return opt.label(key) if key in KEYS else key
+
+    if not opt.given("angle"):
+        raise UserError(
+            '--angle is required, with a unit, e.g. --angle "20 deg" (or angle = "20 deg" in the '
+            "--config file)"
         )
-    except ValueError as exc:  # the API's message names its keyword (t_max): name the option
-        raise option_error(exc, _FROM_KEYS) from None
-    for text in result.warnings:
-        print(f"warning: {text}", file=sys.stderr)
-    report_drop(result, as_json=as_json)
+    velocity = velocity_input(v.get("vx"), v.get("vy"), v.get("speed"), v.get("incidence"), name)
+    sizes = {
+        "length": opt.size("length", "m"),
+        "tip_radius": opt.size("radius", "m"),
+        "mass": opt.size("mass", "kg"),
+        "diameter": opt.size("diameter", "m"),
+    }
+    modes = {k: v.get(k) for k in ("modes_axial", "modes_bending", "damping")}
+    rod_material = option_material(opt, "material", PAPER_ROD.material)
+    inertia = opt.size("inertia", "kg*m^2")
+    body = drop_body(opt.given("rigid"), modes, sizes, rod_material, inertia, name)
+    flat = option_material(opt, "flat", AISI_1010)
+    law = text(v.get("law", "ghaednia"), name("law"))
+    rate = rate_name(text(v.get("rate", "none"), name("rate")), name("rate"))
+    check_rate_flat(rate, flat, name("rate"))  # the command line's way to other constants
+    check_rate_law(rate, law, name("rate"), name("law"))
+    try:
+        return simulate_drop(
+            body,
+            flat,
+            law=law,
+            friction=text(v.get("friction", "coulomb"), name("friction")),
+            mu=plain_number(v.get("mu", DEFAULT_MU), name("mu")),
+            angle=angle_quantity(v["angle"], name("angle")),
+            velocity=velocity,
+            spin=quantity(v.get("spin"), "rad/s", name("spin")) or 0.0,
+            gravity=bool(v.get("gravity", True)),
+            rate=rate,
+            history=False,
+            stop=text(v.get("stop", "sequence"), name("stop")),
+            rtol=v.get("rtol"),
+            t_max=positive(v.get("t_max"), "s", name("t_max")) or DEFAULT_T_MAX,
+        )
+    except UserError:
+        raise
+    except DropError as exc:  # "raise {t_max}": the option's or the key's name
+        raise UserError(exc.worded(name)) from None
+    except ValueError as exc:  # the API's message names its keyword (mu): name the option
+        raise UserError(as_option(str(exc), KEYS, name)) from None
 
 
-#: The options of ``drop`` that ``--from`` reads as given (the keys of ``impactlab simulate``).
-_FROM_KEYS: tuple[str, ...] = ("angle", "vy", "vx", "speed", "incidence", "spin", "length")
-_FROM_KEYS += ("radius", "mass", "diameter", "inertia", "material", "flat", "mu", "friction")
-_FROM_KEYS += ("law", "rate", "modes_axial", "modes_bending", "damping", "stop", "rtol", "t_max")
+#: The options of ``drop`` a ``--config`` file gives by key (``--from`` reads them as given).
+KEYS: tuple[str, ...] = ("angle", "vy", "vx", "speed", "incidence", "spin", "length", "radius")
+KEYS += ("mass", "diameter", "inertia", "material", "flat", "mu", "friction", "law", "rate")
+KEYS += ("rigid", "modes_axial", "modes_bending", "damping", "gravity", "rtol", "stop", "t_max")
+#: Command-line spelling of the keys whose option is not ``--<key>``.
+_FLAGS = {"gravity": "--no-gravity", "rigid": "--rigid"}
+#: Keys of ``impactlab simulate``'s config file that are not the drop's: why.
+_NOTES = {
+    "body": "impactlab simulate's: a drop drops a rod",
+    "flexible": "impactlab simulate's: the drop's rod is flexible unless rigid = true",
+    "constant_angle": "impactlab simulate's: a drop's lever arms move",
+    "law_params": "impactlab simulate's only",
+}
 
 
 def register(app: typer.Typer) -> None:

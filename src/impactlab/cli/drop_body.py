@@ -4,7 +4,7 @@ errors named by the option."""
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from typing import Any, cast
 
 from impactlab.bodies import PAPER_ROD, FlexibleRod, Rod
@@ -35,7 +35,7 @@ def _count(value: Any, name: str) -> int | None:
     UserError naming ``name``; None (not given): FlexibleRod's default, by frequency."""
     if value is None:
         return None
-    if not isinstance(value, int):  # 2.5 or "x" from a config file
+    if isinstance(value, bool) or not isinstance(value, int):  # 2.5, "x" or true in a file
         raise UserError(f"{name} must be an integer >= 0, got {value!r}")
     try:
         return check_mode_count(name, value)
@@ -91,41 +91,50 @@ def drop_body(
     sizes: Mapping[str, float | None],
     material: Material,
     inertia: float | None = None,
+    label: Callable[[str], str] | None = None,
 ) -> FlexibleRod | Rod:
     """The rod: the paper's sizes unless given (``sizes``: length, tip_radius, mass, diameter;
     None: not given), flexible with the given mode counts and damping, or rigid (with its
-    moment of inertia ``inertia`` about the centre of mass, kg m^2; None: from its size)."""
+    moment of inertia ``inertia`` about the centre of mass, kg m^2; None: from its size).
+    ``label(key)`` spells an option in errors (``--mass``, or ``mass (in case.toml)`` for a
+    config file's key; default ``--key``)."""
+    name = label or _option
     length = sizes["length"] if sizes["length"] is not None else PAPER_ROD.length
     tip = sizes["tip_radius"] if sizes["tip_radius"] is not None else PAPER_ROD.tip_radius
     mass, diameter = sizes["mass"], sizes["diameter"]
     if mass is None and diameter is None:  # the paper's rod's mass, or from its diameter
         if material != PAPER_ROD.material or sizes["length"] is not None:
             raise UserError(
-                "--mass or --diameter: give one (or both) for a rod other than the paper's "
-                "(its mass follows from the diameter, the length and the material's density)"
+                f"{name('mass')} or {name('diameter')}: give one (or both) for a rod other than "
+                "the paper's (its mass follows from the diameter, the length and the material's "
+                "density)"
             )
         mass = PAPER_ROD.mass
     if rigid:
-        given = [f"--{k.replace('_', '-')}" for k, v in modes.items() if v is not None]
+        given = [name(k) for k, v in modes.items() if v is not None]
         if given:
-            raise UserError(f"{', '.join(given)}: a rigid rod has no modes; leave out --rigid")
+            raise UserError(
+                f"{', '.join(given)}: a rigid rod has no modes; leave out {name('rigid')}"
+            )
         try:
             return Rod(length=length, tip_radius=tip, mass=mass, material=material,  # type: ignore[arg-type]
                        diameter=diameter, inertia=inertia)  # fmt: skip
         except ValueError as exc:  # the Rod's words, named by the option that set the value
-            raise UserError(as_option(str(exc), _ROD_KEYS, _rod_option)) from None
+            rod_name = {"tip_radius": "radius"}
+            words = as_option(str(exc), _ROD_KEYS, lambda k: name(rod_name.get(k, k)))
+            raise UserError(words) from None
     if inertia is not None:
         raise UserError(
-            "--inertia: the flexible rod's inertia follows from its size and material; give "
-            "--rigid for a rigid rod of another inertia"
+            f"{name('inertia')}: the flexible rod's inertia follows from its size and material; "
+            f"give {name('rigid')} for a rigid rod of another inertia"
         )
     sizes_in = {"length": length, "tip_radius": tip, "mass": mass, "diameter": diameter}
-    return flexible_rod(modes, sizes_in, material)
+    return flexible_rod(modes, sizes_in, material, name)
 
 
 #: The rigid Rod's keywords that ``drop`` sets from an option of another spelling.
 _ROD_KEYS = ("length", "tip_radius", "mass", "diameter", "inertia")
 
 
-def _rod_option(key: str) -> str:
-    return "--radius" if key == "tip_radius" else f"--{key}"
+def _option(key: str) -> str:
+    return "--" + key.replace("_", "-")

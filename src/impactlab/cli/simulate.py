@@ -10,14 +10,12 @@ result's warnings (``impactlab.flags``) go to stderr, one line each, and into ``
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 import typer
 
 from impactlab._compile_gc import garbage_deferred
-from impactlab._validation import did_you_mean
 from impactlab.bodies import PAPER_ROD, FlexibleRod, Rod, Sphere
 from impactlab.cli._common import (
     UserError,
@@ -31,7 +29,14 @@ from impactlab.cli._common import (
     rate_name,
     velocity_input,
 )
-from impactlab.cli.config_values import check_booleans
+from impactlab.cli.config_file import (
+    ConfigOptions,
+    command_table,
+    merge_config,
+    option_material,
+    refuse_given,
+)
+from impactlab.cli.config_values import plain_number
 from impactlab.cli.drop_body import flexible_rod
 from impactlab.cli.simulate_from import FROM_RULE, run_from
 from impactlab.cli.simulate_help import HELP
@@ -41,7 +46,7 @@ from impactlab.dynamics.drop import DEFAULT_T_MAX
 from impactlab.dynamics.drop_checks import DropError
 from impactlab.dynamics.drop_result import DropResult
 from impactlab.friction import DEFAULT_MU
-from impactlab.materials import AISI_201, AISI_1010, Material, get_material
+from impactlab.materials import AISI_201, AISI_1010
 
 _KEYS = (
     "body",
@@ -91,91 +96,27 @@ _MISSING_ANGLE = (
 )
 
 
-@dataclass(frozen=True)
-class _Options:
-    """The merged options (config file < command line) and where each came from."""
-
-    values: dict[str, Any]
-    from_cli: frozenset[str]
-    config: str
-
-    def label(self, key: str) -> str:
-        """How the user wrote ``key``: "--mass" or "mass (in case.toml)"."""
-        if key in self.from_cli or key not in self.values:  # given here, or not at all
-            return _FLAGS.get(key, "--" + key.replace("_", "-"))
-        return f"{key} (in {self.config})"
-
-    def given(self, key: str) -> bool:
-        return self.values.get(key) not in (None, False)
-
-    def size(self, key: str, unit: str) -> float | None:
-        """The given positive quantity (None: not given)."""
-        return positive(self.values.get(key), unit, self.label(key))
-
-    def size_or(self, key: str, unit: str, default: float) -> float:
-        """The given positive quantity, else ``default``."""
-        value = self.size(key, unit)
-        return default if value is None else value
+def _merge(config: dict[str, Any], cli: dict[str, Any], config_path: Path | None) -> ConfigOptions:
+    section = command_table(config, "simulate", "drop", str(config_path))
+    return merge_config(section, cli, config_path, _KEYS, _FLAGS)
 
 
-def _merge(config: dict[str, Any], cli: dict[str, Any], config_path: Path | None) -> _Options:
-    section = config.get("simulate", config)
-    unknown = sorted(set(section) - set(_KEYS))
-    props = [k for k in unknown if k.startswith(("flat_", "material_", "body_"))]
-    if props:
-        raise UserError(
-            f"{props[0]} in the config file: give a material whole, as a table, e.g. "
-            'flat = { E = "69 GPa", nu = 0.33, Sy = "276 MPa", rho = "2700 kg/m^3" }, or a '
-            "library name, flat = \"al-6061-t6\" (see 'impactlab materials')"
-        )
-    if "tip_radius" in section:  # the rod's name for it elsewhere (study files, [rod] tables)
-        if "radius" in section:
-            raise UserError("radius and tip_radius in the config file: they are one; give one")
-        section = {**section, "radius": section["tip_radius"]}
-        section.pop("tip_radius")
-        unknown.remove("tip_radius")
-    if unknown:
-        hints = "".join(f"{k}{did_you_mean(k, _KEYS)}, " for k in unknown)[:-2]
-        raise UserError(f"unknown key(s) in the config file: {hints}; known: {', '.join(_KEYS)}")
-    check_booleans(section, _FLAGS, str(config_path))
-    given = {k: v for k, v in cli.items() if v is not None}
-    return _Options({**section, **given}, frozenset(given), str(config_path))
-
-
-def _refuse(opt: _Options, keys: tuple[str, ...], why: str) -> None:
-    """A UserError naming the given options among ``keys`` (they do not apply: ``why``)."""
-    extra = [opt.label(k) for k in keys if opt.given(k)]
-    if extra:
-        them = "it" if len(extra) == 1 else "them"
-        raise UserError(f"{', '.join(extra)}: {why}; leave {them} out")
-
-
-def _material(opt: _Options, key: str, default: Material) -> Material:
-    value = opt.values.get(key)
-    if value is None:
-        return default
-    try:
-        return get_material(value, opt.label(key))
-    except ValueError as exc:
-        raise UserError(str(exc)) from None
-
-
-def _body(opt: _Options) -> tuple[Rod | Sphere | FlexibleRod, float | None]:
+def _body(opt: ConfigOptions) -> tuple[Rod | Sphere | FlexibleRod, float | None]:
     """The body and the rod's angle [rad] (None for a sphere); defaults: the paper's rod."""
     kind = str(opt.values.get("body", "rod")).lower()
     if kind not in ("rod", "sphere"):
         raise UserError(f"body must be 'rod' or 'sphere', got {kind!r}")
-    material = _material(opt, "material", AISI_201)
+    material = option_material(opt, "material", AISI_201)
     flexible = opt.given("flexible")
     if not flexible:
-        _refuse(
+        refuse_given(
             opt,
             _FLEX_ONLY,
             "only a drop has modes, a rate-dependent flat, a stop rule or a time limit (add "
             "--flexible, or run the rigid rod's drop: impactlab drop --rigid)",
         )
     if kind == "sphere":
-        _refuse(
+        refuse_given(
             opt,
             (*_ROD_ONLY, "flexible"),
             "a sphere has no angle, length, inertia or modes (simulate a rod)",
@@ -197,7 +138,7 @@ def _body(opt: _Options) -> tuple[Rod | Sphere | FlexibleRod, float | None]:
         "diameter": diameter,
     }
     if flexible:
-        _refuse(
+        refuse_given(
             opt,
             _NOT_FLEX,
             "the flexible rod's inertia follows from its modes, and its lever arms move",
@@ -207,7 +148,7 @@ def _body(opt: _Options) -> tuple[Rod | Sphere | FlexibleRod, float | None]:
     return rod, angle
 
 
-def run_simulate(opt: _Options) -> ImpactResult | DropResult:
+def run_simulate(opt: ConfigOptions) -> ImpactResult | DropResult:
     """One impact (or, with ``--flexible``, the drop of the flexible rod) from the merged
     options (SI after parsing)."""
     body, rod_angle = _body(opt)
@@ -216,10 +157,10 @@ def run_simulate(opt: _Options) -> ImpactResult | DropResult:
         cfg.get("vx"), cfg.get("vy"), cfg.get("speed"), cfg.get("incidence"), opt.label
     )
     common: dict[str, Any] = {
-        "flat": _material(opt, "flat", AISI_1010),
+        "flat": option_material(opt, "flat", AISI_1010),
         "law": str(cfg.get("law", "ghaednia")),
         "friction": str(cfg.get("friction", "coulomb")),
-        "mu": _mu(cfg.get("mu", DEFAULT_MU), opt.label("mu")),
+        "mu": plain_number(cfg.get("mu", DEFAULT_MU), opt.label("mu")),
         "velocity": velocity,
         "spin": quantity(cfg.get("spin", 0.0), "rad/s", opt.label("spin")) or 0.0,
         "law_params": cfg.get("law_params"),
@@ -240,17 +181,6 @@ def run_simulate(opt: _Options) -> ImpactResult | DropResult:
         constant_angle=bool(cfg.get("constant_angle", False)),
         **common,
     )
-
-
-def _mu(value: Any, name: str) -> float:
-    """The friction coefficient: a plain number (``impactlab.friction.DEFAULT_MU`` if not
-    given); the library checks its range."""
-    try:
-        if isinstance(value, bool):
-            raise TypeError(value)
-        return float(value)
-    except (TypeError, ValueError):
-        raise UserError(f"{name} must be a number, got {value!r}") from None
 
 
 #: Other spellings of an option (the rod's tip radius is tip_radius elsewhere).

@@ -1,0 +1,133 @@
+"""A command's ``--config`` file (``impactlab simulate``, ``impactlab drop``): a TOML file of the
+command's option keys, checked (unknown keys with the nearest known one, a material given
+whole, switches that are TOML booleans) and merged under the options of the command line, which
+win; each value's errors name it as the user gave it, ``--mass`` or ``mass (in case.toml)``."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from impactlab._validation import did_you_mean
+from impactlab.cli._common import UserError, positive
+from impactlab.cli.config_values import check_booleans
+from impactlab.materials import Material, get_material
+
+__all__ = ["ConfigOptions", "command_table", "merge_config", "option_material", "refuse_given"]
+
+
+@dataclass(frozen=True)
+class ConfigOptions:
+    """The merged options (config file < command line) and where each came from.
+
+    values: by key, SI or as written (quantities are parsed where they are used); from_cli:
+    the keys given on the command line; config: the file, as given; flags: the command-line
+    spelling of the keys whose option is not ``--<key>`` (``gravity``: ``--no-gravity``)."""
+
+    values: dict[str, Any]
+    from_cli: frozenset[str]
+    config: str
+    flags: Mapping[str, str] = field(default_factory=dict)
+
+    def label(self, key: str) -> str:
+        """How the user wrote ``key``: "--mass" or "mass (in case.toml)"."""
+        if key in self.from_cli or key not in self.values:  # given here, or not at all
+            return self.flags.get(key, "--" + key.replace("_", "-"))
+        return f"{key} (in {self.config})"
+
+    def given(self, key: str) -> bool:
+        return self.values.get(key) not in (None, False)
+
+    def size(self, key: str, unit: str) -> float | None:
+        """The given positive quantity (None: not given)."""
+        return positive(self.values.get(key), unit, self.label(key))
+
+    def size_or(self, key: str, unit: str, default: float) -> float:
+        """The given positive quantity, else ``default``."""
+        value = self.size(key, unit)
+        return default if value is None else value
+
+
+def command_table(config: Mapping[str, Any], name: str, other: str, where: str) -> dict[str, Any]:
+    """The keys of the command ``name`` in a config file ``where``: its ``[name]`` table, else
+    the top level. A file may hold both commands' tables (``[drop]`` and ``[simulate]``), each
+    read by its own command; beside its table, other top-level keys are refused (never
+    silently left out), and the ``other`` command's table alone is refused, pointing to
+    ``[name]``: its keys describe that command's body."""
+    if name in config:
+        table = config[name]
+        if not isinstance(table, dict):
+            raise UserError(f"{name} in {where} must be a table, [{name}], got {table!r}")
+        rest = sorted(set(config) - {name, other})
+        if rest:
+            them = "it" if len(rest) == 1 else "them"
+            raise UserError(
+                f"{', '.join(rest)} in {where}: beside a [{name}] table the top level is not "
+                f"read; move {them} into [{name}]"
+            )
+        return table
+    if other in config:
+        raise UserError(
+            f"[{other}] in {where} is impactlab {other}'s table; give impactlab {name}'s keys "
+            f"in a [{name}] table (a file may hold both) or at the top level"
+        )
+    return dict(config)
+
+
+def merge_config(
+    section: Mapping[str, Any],
+    cli: Mapping[str, Any],
+    config_path: Path | None,
+    keys: tuple[str, ...],
+    flags: Mapping[str, str],
+    notes: Mapping[str, str] | None = None,
+) -> ConfigOptions:
+    """The options of the command line (``cli``: by key, None when not given) over the keys of
+    the config file's ``section``. Refused: a material in parts (``flat_E``), an unknown key
+    (with the nearest of ``keys``, or its ``notes``: why a key of another command is none of
+    this one's), a switch of ``flags`` that is no TOML boolean; ``tip_radius`` is read as
+    ``radius`` (the rod's name for it in study files and [rod] tables)."""
+    unknown = sorted(set(section) - set(keys))
+    props = [k for k in unknown if k.startswith(("flat_", "material_", "body_"))]
+    if props:
+        raise UserError(
+            f"{props[0]} in the config file: give a material whole, as a table, e.g. "
+            'flat = { E = "69 GPa", nu = 0.33, Sy = "276 MPa", rho = "2700 kg/m^3" }, or a '
+            "library name, flat = \"al-6061-t6\" (see 'impactlab materials')"
+        )
+    if "tip_radius" in section:  # the rod's name for it elsewhere (study files, [rod] tables)
+        if "radius" in section:
+            raise UserError("radius and tip_radius in the config file: they are one; give one")
+        section = {**section, "radius": section["tip_radius"]}
+        section.pop("tip_radius")
+        unknown.remove("tip_radius")
+    if unknown:
+        why = notes or {}
+        hints = ", ".join(f"{k} ({why[k]})" if k in why else k + did_you_mean(k, keys)
+                          for k in unknown)  # fmt: skip
+        raise UserError(f"unknown key(s) in the config file: {hints}; known: {', '.join(keys)}")
+    check_booleans(section, flags, str(config_path))
+    given = {k: v for k, v in cli.items() if v is not None}
+    return ConfigOptions({**section, **given}, frozenset(given), str(config_path), flags)
+
+
+def refuse_given(opt: ConfigOptions, keys: tuple[str, ...], why: str) -> None:
+    """A UserError naming the given options among ``keys`` (they do not apply: ``why``)."""
+    extra = [opt.label(k) for k in keys if opt.given(k)]
+    if extra:
+        them = "it" if len(extra) == 1 else "them"
+        raise UserError(f"{', '.join(extra)}: {why}; leave {them} out")
+
+
+def option_material(opt: ConfigOptions, key: str, default: Material) -> Material:
+    """The material of ``key`` (a library name, properties, a TOML file or a config file's
+    table; ``default`` if not given), its errors naming the option or the key."""
+    value = opt.values.get(key)
+    if value is None:
+        return default
+    try:
+        return get_material(value, opt.label(key))
+    except ValueError as exc:
+        raise UserError(str(exc)) from None
