@@ -72,6 +72,7 @@ def test_overflow_in_the_pareto_fit_is_not_a_note():
         warnings.simplefilter("always")
         az.loo(idata, pointwise=True)
     assert any("overflow" in str(w.message) for w in caught)  # the case: numpy overflows
-    loo, notes = _loo(idata)
+    loo, notes, pointwise = _loo(idata)
+    assert pointwise.shape == (2,) and pointwise.sum() == pytest.approx(loo["elpd"])
     assert math.isfinite(loo["elpd"])
     assert notes == ["PSIS-LOO: 2 drop(s) with Pareto k > 0.7"]

@@ -131,8 +131,8 @@ def test_an_unused_parameters_chain_is_not_a_convergence_problem(template):
     cal = calibrate(_data(template), [MU, sy], ["ghaednia/coulomb", "hertz/coulomb"],
                     walkers=8, steps=10, burn=8, n_ppc=0)  # fmt: skip
     hertz = cal.posteriors["hertz/coulomb"]
-    assert any(w.startswith("flat_yield_strength: R-hat and ESS not assessable")
-               for w in hertz.warnings)  # fmt: skip
+    # not a convergence problem, nor a warning of the model (its report, the paper's section)
+    assert not any(w.startswith("flat_yield_strength:") for w in hertz.warnings)
     assert not any(c.startswith("flat_yield_strength:") for c in hertz.convergence)
     assert any(c.startswith("mu:") for c in hertz.convergence)
     assert not any(w.startswith("hertz/coulomb: flat_yield_strength") for w in cal.warnings)

@@ -43,12 +43,14 @@ def _arviz_log_quiet() -> Iterator[None]:
 @contextmanager
 def quiet() -> Iterator[None]:
     """Hide ArviZ's advisory warnings and log records (few draws per chain, Pareto k, pandas
-    deprecations): the calibration reports what matters in its own warnings (Pareto k counts,
-    R-hat, and R-hat that cannot be assessed)."""
+    deprecations) and numpy's floating-point warnings raised in ArviZ's code (a constant
+    chain's R-hat): the calibration reports what matters in its own warnings (Pareto k counts,
+    R-hat, and R-hat that cannot be assessed, a result that is not a number)."""
     with _WARNING_STATE, warnings.catch_warnings(), _arviz_log_quiet():
         warnings.simplefilter("ignore", UserWarning)
         warnings.simplefilter("ignore", FutureWarning)
         warnings.simplefilter("ignore", DeprecationWarning)
+        warnings.filterwarnings("ignore", category=RuntimeWarning, module="arviz")
         warnings.filterwarnings("ignore", message=".*inplace.*")
         yield
 

@@ -12,7 +12,12 @@ from pathlib import Path
 from typing import Any
 
 from impactlab.calibrate.cluster import map_on_dask
-from impactlab.calibrate.diagnostics import edge_note, misfits
+from impactlab.calibrate.diagnostics import (
+    edge_note,
+    extrapolation_note,
+    failed_note,
+    misfits,
+)
 from impactlab.calibrate.input_checks import (
     check_calibration_inputs,
     engine_options,
@@ -47,8 +52,9 @@ REFERENCES = cite(
 class CalibrationWarning(UserWarning):
     """Something the calibration ran through but the user should know (a parameter a model
     does not use, a drop value replaced by a free parameter, a misfit, a chain that has not
-    converged, a posterior against its prior's bound, a best model the data do not single
-    out, a ranking over one drop)."""
+    converged, a posterior against its prior's bound, a contact law extrapolated in the
+    predicted impacts, a model that fails on more than 5 % of the parameter values it ran, a
+    best model the data do not single out, a ranking over one drop)."""
 
 
 @dataclass
@@ -112,6 +118,7 @@ class _Run:
     seed: int
     restart: bool
     n_ppc: int
+    unused: Mapping[str, tuple[str, ...]]
 
     def __call__(
         self, model: CandidateModel, state: Path | None, progress: ProgressFn | None
@@ -122,8 +129,9 @@ class _Run:
             restart=self.restart, progress=progress,
         )  # fmt: skip
         return summarise(
-            post, sampler, steps=self.steps, burn=self.burn, seed=self.seed, n_ppc=self.n_ppc
-        )
+            post, sampler, steps=self.steps, burn=self.burn, seed=self.seed, n_ppc=self.n_ppc,
+            unused=self.unused.get(model.name, ()),
+        )  # fmt: skip
 
 
 def _slug(name: str) -> str:
@@ -167,8 +175,11 @@ def calibrate(
     ValueError for a parameter no model uses, a prior in which a model cannot produce the
     measurements, and bad input in general; a CalibrationWarning for a parameter some models do
     not use, for values of the file that a free parameter replaces, for misfits, chains that
-    have not converged, posteriors against their prior's bound and a best model the data do
-    not single out (``Calibration.best_caveats``). Ctrl-C raises
+    have not converged, posteriors against their prior's bound, a contact law used beyond its
+    verified range in the predicted impacts (advisory: the cases still count), a model whose
+    prior reaches where it does not run (more than ``diagnostics.FAILED_SHARE_MAX`` of the
+    parameter values failed) and a best model the data do not single out
+    (``Calibration.best_caveats``). Ctrl-C raises
     ``statelock.CalibrationInterrupted`` (a KeyboardInterrupt naming the step reached);
     ``statelock.StateInUse`` (a ValueError) when another calibration uses ``state_dir``.
     """
@@ -243,7 +254,8 @@ def _calibrate(
     ]
     for text in notes:
         warnings.warn(text, CalibrationWarning, stacklevel=3)
-    run = _Run(meas, params, evaluator, eng, nw, steps, nburn, seed, restart, n_ppc)
+    unused = {n: tuple(p.name for j, p in enumerate(params) if not usage[n][j]) for n in names}
+    run = _Run(meas, params, evaluator, eng, nw, steps, nburn, seed, restart, n_ppc, unused)
     states = [
         Path(state_dir) / f"{_slug(c.name)}.h5" if state_dir is not None else None for c in cands
     ]
@@ -254,7 +266,7 @@ def _calibrate(
             scheduler, run, [(c, s, None) for c, s in zip(cands, states, strict=True)]
         )
     posteriors = {c.name: p for c, p in zip(cands, done, strict=True)}
-    found = misfits(posteriors) + _chain_warnings(posteriors, params, usage)
+    found = misfits(posteriors) + _chain_warnings(posteriors, params, usage, cands)
     ranking = rank_models(posteriors)
     found += [ONE_DROP] if meas.n_drops < 2 else []
     found += _best_warnings(ranking)
@@ -280,20 +292,26 @@ def _chain_warnings(
     posteriors: Mapping[str, ModelPosterior],
     params: Sequence[Parameter],
     usage: Mapping[str, Sequence[bool]],
+    cands: Sequence[CandidateModel],
 ) -> list[str]:
-    """Each model's convergence problems (of the parameters it uses: an unused one's chain is
-    its prior's, and says nothing of the model), and each used parameter whose posterior lies
-    against a bound of its prior (added to the model's own warnings too), as
-    ``"model: text"``."""
+    """Each model's convergence problems (of the parameters it uses: ``summarise`` notes none
+    for an unused one, whose chain is its prior's and says nothing of the model), each used
+    parameter whose posterior lies against a bound of its prior, a contact law extrapolated in
+    the predicted impacts and a share of failed parameter values above FAILED_SHARE_MAX (the
+    last three added to the model's own warnings too), as ``"model: text"``."""
     out = []
+    laws = {c.name: c.law for c in cands}
     for name, post in posteriors.items():
-        unused = [f"{p.name}: " for j, p in enumerate(params) if not usage[name][j]]
-        post.convergence = [c for c in post.convergence if not c.startswith(tuple(unused))]
         edges = [
             note
             for j, p in enumerate(params)
             if usage[name][j] and (note := edge_note(p, post.samples[:, j])) is not None
         ]
+        for note in (
+            extrapolation_note(laws[name], post.law_extrapolated),
+            failed_note(laws[name], post),
+        ):
+            edges += [] if note is None else [note]
         post.warnings.extend(edges)
         out += [f"{name}: {text}" for text in (*post.convergence, *edges)]
     return out

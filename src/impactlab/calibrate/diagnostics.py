@@ -1,26 +1,32 @@
 """What a calibration checks in its own chains: convergence (R-hat, the autocorrelation time,
-and whether they can be assessed at all), a posterior piled against a bound of its prior, and
-the texts of a measured value shown in its display unit."""
+and whether they can be assessed at all), a posterior piled against a bound of its prior, a
+contact law used beyond its verified range, a model that fails on much of its prior, and the
+texts of a measured value shown in its display unit."""
 
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Collection, Mapping
 from typing import Any
 
 import numpy as np
 
 from impactlab._display import display_unit, format_number
 from impactlab.calibrate.priors import Parameter, possible_range
+from impactlab.contact import get_law
+from impactlab.contact.tabulated import NU_TOLERANCE, RATIO_TOLERANCE, Tabulated
 
 __all__ = [
     "EDGE_MASS",
     "EDGE_SHARE",
+    "FAILED_SHARE_MAX",
     "MISFIT_SIGMAS",
     "RHAT_MAX",
     "TAU_MULTIPLE",
     "convergence_notes",
     "edge_note",
+    "extrapolation_note",
+    "failed_note",
     "misfit_text",
     "misfits",
     "shown",
@@ -52,15 +58,22 @@ def steps_needed(tau: float, burn: int) -> int:
 
 
 def convergence_notes(
-    summary: Mapping[str, Mapping[str, float]], kept: int, burn: int, draws: int
+    summary: Mapping[str, Mapping[str, float]],
+    kept: int,
+    burn: int,
+    draws: int,
+    skip: Collection[str] = (),
 ) -> list[str]:
     """One line per parameter whose chain has not converged (R-hat > RHAT_MAX; a chain of
     ``kept`` steps after a burn-in of ``burn`` shorter than TAU_MULTIPLE autocorrelation times,
     with the steps that would do) or cannot be assessed (too few draws per walker: R-hat, ESS
     or the autocorrelation time is not a number; an ESS is NaN too where ArviZ's estimate
-    exceeded the ``draws``, all walkers' kept steps)."""
+    exceeded the ``draws``, all walkers' kept steps). The parameters in ``skip`` (those the
+    model does not use: their chain samples the prior and says nothing of the model) get none."""
     notes = []
     for n, s in summary.items():
+        if n in skip:
+            continue
         if not math.isfinite(s["rhat"]):
             notes.append(
                 f"{n}: R-hat and ESS not assessable (too few draws per walker after burn-in; "
@@ -165,3 +178,56 @@ def misfits(posteriors: Mapping[str, Any]) -> list[str]:
             f"({name}: {best}{unit}) is {z:.1f} sigma away"
         )
     return lines
+
+
+#: A model whose failed parameter values (a likelihood of zero: a case it refused or whose
+#: result is not ``ok``) exceed this share of those it ran gets a warning: its prior reaches
+#: where it does not run, and its posterior is cut to where it does.
+FAILED_SHARE_MAX = 0.05
+
+
+def extrapolation_note(law: str, found: Mapping[str, Any]) -> str | None:
+    """A line when some of the predicted impacts (``found``: ``ModelPosterior.law_extrapolated``,
+    {share, impacts, basis}) used the contact ``law`` beyond its verified range, or None."""
+    share = float(found.get("share", math.nan))
+    if not (math.isfinite(share) and share > 0.0):
+        return None
+    return (
+        f"the contact law {law!r} is extrapolated in {format_number(100 * share, 2)} % of the "
+        f"{found['impacts']} predicted impacts at {found['basis']} (flag LAW_EXTRAPOLATED: used "
+        "beyond its verified range, impactlab.contact.ranges): the posterior rests on the law "
+        "where it is not validated (advisory: those cases still count)"
+    )
+
+
+def failed_note(law: str, post: Any) -> str | None:
+    """A line when more than FAILED_SHARE_MAX of the parameter values a model ran (``post``: a
+    ModelPosterior, its ``draws``, ``failed_draws`` and ``failures``) gave a likelihood of zero,
+    or None; for the tabulated ``law``, the E*/S_y of its curves, the windows it runs in."""
+    draws, failed = int(post.draws), int(post.failed_draws)
+    if not draws or failed <= FAILED_SHARE_MAX * draws:
+        return None
+    reason = max(post.failures.items(), key=lambda kv: kv[1])[0] if post.failures else "failed"
+    return (
+        f"{format_number(100 * failed / draws, 2)} % of the {draws} parameter values run ("
+        f"more than {100 * FAILED_SHARE_MAX:g} %) gave a likelihood of zero (most often: "
+        f"{reason}): the prior reaches where the model does not run or gives no prediction, "
+        "so the posterior is cut to where it runs, and a 90 % interval may span values where "
+        f"it does not{_windows(law)}"
+    )
+
+
+def _windows(law: str) -> str:
+    """Where a tabulated law runs: within its tolerances of one of its curves' E*/S_y and nu."""
+    try:
+        found = get_law(law)
+    except ValueError:
+        return ""
+    if not isinstance(found, Tabulated):
+        return ""
+    ratios = ", ".join(format_number(c.e_star_over_sy, 4) for c in found.candidates())
+    return (
+        f" (law {law!r} runs only where the pair's E*/S_y lies within "
+        f"{100 * RATIO_TOLERANCE:g} % of one of its curves', E*/S_y = {ratios or 'none'}, and nu "
+        f"within {NU_TOLERANCE:g}: its posterior lies in those windows)"
+    )

@@ -48,12 +48,22 @@ def _model(post: ModelPosterior) -> dict[str, Any]:
         "ppc": ppc,
         "failures": {k: int(v) for k, v in post.failures.items()},
         "evaluations": int(post.evaluations),
+        "draws": int(post.draws),
+        "failed_draws": int(post.failed_draws),
+        "law_extrapolated": _extrapolated(post.law_extrapolated),
         "acceptance": quantity(post.acceptance, _ONE),
         "steps": int(post.steps),
         "burn": int(post.burn),
         "converged": post.converged,
         "warnings": list(post.warnings),
     }
+
+
+def _extrapolated(found: Mapping[str, Any]) -> dict[str, Any]:
+    """``ModelPosterior.law_extrapolated`` with its share as a quantity ({} when not known)."""
+    if not found:
+        return {}
+    return {**found, "share": quantity(float(found["share"]), _ONE)}
 
 
 def _law_params(law: str, given: Mapping[str, Any]) -> dict[str, Any]:
@@ -98,6 +108,7 @@ def calibration_json(cal: Calibration) -> dict[str, Any]:
             "pareto_k_warning": bool(r["warning"]),
             "pareto_k_max": quantity(r["pareto_k_max"], _ONE),
             "converged": bool(r["converged"]),
+            "law_extrapolated": quantity(r["law_extrapolated"], _ONE),
             "distinguishable": r["distinguishable"],
             "note": r["note"],
         }

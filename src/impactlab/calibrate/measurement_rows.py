@@ -1,10 +1,12 @@
 """One drop of a measurements file: its columns read (units, aliases, the unit of an
 uncertainty) and checked, with one-line errors naming the drop and the column.
 
-Numbers are kept in each input's own unit (``impactlab.sweep.inputs``: SI, the Brinell hardness
-in kgf/mm^2) and measured values in SI. A ``<quantity>_sigma`` without a unit of its own takes
-its quantity's (the column header's or the ``[units]`` entry's). A drop's velocity is (vx, vy)
-or speed and incidence (converted to vx, vy as the sweep does), never both.
+A value is a number (a Python or numpy real scalar), a quantity string or blank (None, an
+empty string, NaN: not given). Numbers are kept in each input's own unit
+(``impactlab.sweep.inputs``: SI, the Brinell hardness in kgf/mm^2) and measured values in SI.
+A ``<quantity>_sigma`` without a unit of its own takes its quantity's (the column header's or
+the ``[units]`` entry's). A drop's velocity is (vx, vy) or speed and incidence (converted to
+vx, vy as the sweep does), never both.
 """
 
 from __future__ import annotations
@@ -14,6 +16,8 @@ import re
 from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
+
+import numpy as np
 
 from impactlab.bodies import PAPER_ROD
 from impactlab.calibrate.input_magnitudes import check_magnitude
@@ -57,6 +61,12 @@ def _angle(q: str, x: float) -> tuple[float, str]:
     ``unit_text`` writes it): an angle (stored in rad) in degrees, as a file gives it."""
     unit = MEASURABLE[q].unit
     return (math.degrees(x), " deg") if q in ANGLES else (x, unit_text(unit))
+
+
+def _plain(v: Any) -> Any:
+    """A numpy real scalar (``np.float32(0.4)``, ``np.int64(-2)``) as the Python number it
+    holds; anything else (a numpy bool too, refused as a value) as it is."""
+    return v.item() if isinstance(v, np.integer | np.floating) else v
 
 
 def _is_nan(v: Any) -> bool:
@@ -113,7 +123,8 @@ def parse_row(i: int, record: Mapping[str, Any], units: Mapping[str, Any]) -> Ro
     units = resolve_units(units)
     cols = []
     seen: dict[str, str] = {}
-    for key, v in record.items():
+    for key, given in record.items():
+        v = _plain(given)
         name, unit = split_header(str(key))
         kind, canon = column_kind(where, name)
         if canon in seen:

@@ -37,6 +37,7 @@ from impactlab.flags import (
     FLAG_BRITTLE,
     FLAG_ENERGY_GAIN,
     FLAG_GRAVITY_DOMINATED,
+    FLAG_LAW_EXTRAPOLATED,
     FLAG_OTHER_END,
 )
 from impactlab.friction import get_friction
@@ -143,11 +144,14 @@ class CandidateModel:
 
 @dataclass(frozen=True)
 class Prediction:
-    """W x D predictions: ``values`` quantity -> (W, D) (NaN where a case failed) and
-    ``status`` (W, D) (0: ok; ``status_message``)."""
+    """W x D predictions: ``values`` quantity -> (W, D) (NaN where a case failed),
+    ``status`` (W, D) (0: ok; ``status_message``) and ``extrapolated`` (W, D): True where an
+    ok case's contact law was used beyond its verified range (the advisory LAW_EXTRAPOLATED
+    flag, ``impactlab.flags``; None: not known)."""
 
     values: Mapping[str, np.ndarray]
     status: np.ndarray
+    extrapolated: np.ndarray | None = None
 
 
 def _drop_outputs(outputs: Sequence[str]) -> list[str]:
@@ -219,6 +223,7 @@ def predict(
     g = gravity_value(dict(engine or {}).get("gravity", True))
     values = {q: np.full((w, d_all), np.nan) for q in quantities}
     status = np.zeros((w, d_all), dtype=np.int32)
+    extrapolated = np.zeros((w, d_all), dtype=bool)
     for key, idx in _groups(meas, model).items():
         nd = len(idx)
         cases = {k: np.tile(v[idx], w) for k, v in meas.inputs.items()}
@@ -242,10 +247,12 @@ def predict(
         for flag, code in STATUS_FLAGGED.items():  # a case flagged twice: its lowest bit
             st[(st == 0) & ((flags & flag) != 0)] = code
         status[:, idx] = st.reshape(w, nd)
+        advisory = (st == 0) & ((flags & FLAG_LAW_EXTRAPOLATED) != 0)
+        extrapolated[:, idx] = advisory.reshape(w, nd)
         for q in quantities:
             got = _derived(q, res, cases)
             values[q][:, idx] = np.where(st == 0, got, np.nan).reshape(w, nd)
-    return Prediction(values, status)
+    return Prediction(values, status, extrapolated)
 
 
 def _whole_materials(cat: dict[str, str], cases: dict[str, np.ndarray]) -> dict[str, str]:

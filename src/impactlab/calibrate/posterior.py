@@ -50,7 +50,9 @@ class LogPosterior:
     """``log p(theta | data)`` up to a constant, for emcee's vectorised ensemble: called with
     (W, P) parameter vectors, it returns one (log posterior, pointwise log likelihood (D,))
     pair per walker. ``failures`` counts the failed cases by reason (status message);
-    ``evaluations`` the model evaluations (cases run)."""
+    ``evaluations`` the model evaluations (cases run); ``draws`` the parameter vectors run
+    (inside the prior's support) and ``failed_draws`` those of them with a failed case (a
+    likelihood of zero)."""
 
     model: CandidateModel
     meas: Measurements
@@ -59,6 +61,8 @@ class LogPosterior:
     engine: Mapping[str, Any] = field(default_factory=dict)
     failures: Counter[str] = field(default_factory=Counter)
     evaluations: int = 0
+    draws: int = 0
+    failed_draws: int = 0
 
     def log_prior(self, theta: np.ndarray) -> np.ndarray:
         """(W,) log prior density."""
@@ -85,6 +89,8 @@ class LogPosterior:
                 engine=self.engine,
             )
             self.evaluations += int(pred.status.size)
+            self.draws += int(pred.status.shape[0])
+            self.failed_draws += int(np.count_nonzero((pred.status != 0).any(axis=1)))
             codes, counts = np.unique(pred.status[pred.status != 0], return_counts=True)
             for c, k in zip(codes.tolist(), counts.tolist(), strict=True):
                 self.failures[status_message(c)] += k

@@ -1,13 +1,18 @@
 """The ranking of candidate models: PSIS-LOO, the expected log predictive density of each
 drop left out in turn (Vehtari, Gelman & Gabry 2017), estimated from the posterior's pointwise
-log likelihoods by Pareto-smoothed importance sampling, and compared with ``arviz.compare``
-(stacking weights). Why a cross-validated score rather than the evidence: it asks how well a
-model predicts a drop it was not fitted to, it does not depend on the width of a uniform prior
-that the evidence penalises, and it comes from the same chain. With few drops its standard
-errors are large: ``dse`` says whether a difference means anything (about 2 dse or more); each
-row says whether its model is distinguishable from the best and whether its chain converged.
-With one drop PSIS-LOO does not rank (leaving the drop out leaves no data; dse is 0): no model
-is distinguishable then, whatever the elpd_diff and the weights say."""
+log likelihoods by Pareto-smoothed importance sampling (``result.summarise``), and compared
+here as ``arviz.compare`` does (elpd_diff and its standard error dse from the pointwise
+differences), with stacking weights (Yao, Vehtari, Simpson & Gelman 2018,
+doi:10.1214/17-BA1091) computed in log space: ``arviz.compare`` exponentiates each drop's elpd
+as it is, so that a drop every model predicts poorly (elpd below about -745) underflows to 0,
+its log to -inf, and the optimiser stops at its start (equal weights). Why a cross-validated
+score rather than the evidence: it asks how well a model predicts a drop it was not fitted to,
+it does not depend on the width of a uniform prior that the evidence penalises, and it comes
+from the same chain. With few drops its standard errors are large: ``dse`` says whether a
+difference means anything (about 2 dse or more); each row says whether its model is
+distinguishable from the best and whether its chain converged. With one drop PSIS-LOO does
+not rank (leaving the drop out leaves no data; dse is 0): no model is distinguishable then,
+whatever the elpd_diff and the weights say."""
 
 from __future__ import annotations
 
@@ -15,55 +20,99 @@ import math
 from collections.abc import Mapping
 from typing import Any
 
-from impactlab.calibrate._arviz import az, quiet
+import numpy as np
+from scipy.optimize import minimize
+from scipy.special import logsumexp
+
 from impactlab.calibrate.result import ModelPosterior
 
-__all__ = ["annotate", "distinguishable", "rank_models"]
+__all__ = ["annotate", "distinguishable", "rank_models", "stacking_weights"]
+
+
+def stacking_weights(elpd: np.ndarray) -> np.ndarray:
+    """Stacking weights (Yao et al. 2018, doi:10.1214/17-BA1091) of K models from their
+    pointwise elpd (N drops x K models): the w on the simplex that maximise
+    sum_i log sum_k w_k exp(elpd_ik), computed as a log-sum-exp (no underflow however
+    negative the elpd), by SLSQP from equal weights. A non-finite elpd counts as -inf (that
+    model gives the drop no density); a drop with no finite elpd carries no information and is
+    left out; with none left, or one model, the weights are equal."""
+    e = np.asarray(elpd, dtype=np.float64)
+    if e.ndim != 2:
+        raise ValueError(f"elpd must be an (N drops, K models) array, got shape {e.shape}")
+    k = e.shape[1]
+    e = np.where(np.isfinite(e), e, -np.inf)
+    e = e[np.isfinite(e).any(axis=1)]
+    if k < 2 or e.shape[0] == 0:
+        return np.full(k, 1.0 / max(k, 1))
+    e = e - e.max(axis=1, keepdims=True)  # each drop's best model at 0: a constant per drop
+
+    def terms(w: np.ndarray) -> np.ndarray:
+        with np.errstate(divide="ignore"):
+            return np.asarray(logsumexp(e + np.log(np.clip(w, 0.0, None)), axis=1))
+
+    def loss(w: np.ndarray) -> float:
+        return -float(np.sum(terms(w)))
+
+    def grad(w: np.ndarray) -> np.ndarray:
+        with np.errstate(invalid="ignore", over="ignore"):
+            g = -np.exp(e - terms(w)[:, None]).sum(axis=0)
+        return np.nan_to_num(g, nan=0.0, neginf=-1e300)
+
+    res = minimize(
+        loss, np.full(k, 1.0 / k), jac=grad, method="SLSQP", bounds=[(0.0, 1.0)] * k,
+        constraints=[{"type": "eq", "fun": lambda w: np.sum(w) - 1.0, "jac": lambda w: np.ones(k)}],
+        options={"ftol": 1e-12, "maxiter": 500},
+    )  # fmt: skip
+    w = np.clip(np.asarray(res.x, dtype=np.float64), 0.0, None)
+    return w / w.sum() if w.sum() > 0 else np.full(k, 1.0 / k)
 
 
 def rank_models(posteriors: Mapping[str, ModelPosterior]) -> list[dict[str, Any]]:
     """Rows best first: model, rank, elpd_loo, se, elpd_diff (to the best), dse (its standard
-    error), p_loo, weight (stacking), warning (Pareto k > 0.7 somewhere), pareto_k_max,
-    converged (the model's chain: ``ModelPosterior.converged``), distinguishable and note
-    (``annotate``)."""
+    error: sqrt(N var) of the pointwise differences, as ``arviz.compare``), p_loo, weight
+    (stacking: ``stacking_weights``), warning (Pareto k > 0.7 somewhere), pareto_k_max,
+    converged (the model's chain: ``ModelPosterior.converged``), law_extrapolated (the share of
+    its predicted impacts that used its law beyond the verified range:
+    ``ModelPosterior.law_extrapolated``), distinguishable and note (``annotate``)."""
     usable = {k: v for k, v in posteriors.items() if v.loo}
     if not usable:
         return []
     drops = int(next(iter(usable.values())).log_lik.shape[-1])
-    if len(usable) == 1:
-        ((name, p),) = usable.items()
-        rows = [
-            {
-                "model": name,
-                "rank": 0,
-                "elpd_loo": p.loo["elpd"],
-                "se": p.loo["se"],
-                "elpd_diff": 0.0,
-                "dse": 0.0,
-                "p_loo": p.loo["p_loo"],
-                "weight": 1.0,
-                "warning": bool(p.loo["n_bad_k"]),
-            }
-        ]
-        return annotate(rows, posteriors, drops=drops)
-    with quiet():
-        table = az.compare({k: v.idata() for k, v in usable.items()}, ic="loo")
+    order = sorted(usable, key=lambda k: _sort_key(usable[k].loo["elpd"]))
+    best = usable[order[0]]
+    pointwise = np.column_stack([_pointwise(usable[k], drops) for k in order])
+    weights = stacking_weights(pointwise) if len(order) > 1 else np.ones(1)
     rows = []
-    for name, r in table.iterrows():
+    for i, name in enumerate(order):
+        p = usable[name]
+        diff = pointwise[:, 0] - pointwise[:, i]
+        with np.errstate(invalid="ignore"):
+            dse = math.sqrt(diff.size * float(np.var(diff))) if i else 0.0
         rows.append(
             {
-                "model": str(name),
-                "rank": int(r["rank"]),
-                "elpd_loo": float(r["elpd_loo"]),
-                "se": float(r["se"]),
-                "elpd_diff": float(r["elpd_diff"]),
-                "dse": float(r["dse"]),
-                "p_loo": float(r["p_loo"]),
-                "weight": float(r["weight"]),
-                "warning": bool(r["warning"]),
+                "model": name,
+                "rank": i,
+                "elpd_loo": float(p.loo["elpd"]),
+                "se": float(p.loo["se"]),
+                "elpd_diff": float(best.loo["elpd"] - p.loo["elpd"]) if i else 0.0,
+                "dse": dse,
+                "p_loo": float(p.loo["p_loo"]),
+                "weight": float(weights[i]),
+                "warning": bool(p.loo["n_bad_k"]),
             }
         )
     return annotate(rows, posteriors, drops=drops)
+
+
+def _sort_key(elpd: float) -> tuple[bool, float]:
+    """Best (highest elpd) first; an elpd that is not a number last."""
+    return (math.isnan(elpd), -elpd if not math.isnan(elpd) else 0.0)
+
+
+def _pointwise(post: ModelPosterior, drops: int) -> np.ndarray:
+    """A model's pointwise elpd (NaN where not known)."""
+    e = np.asarray(post.loo_pointwise, dtype=np.float64).ravel()
+    return e if e.size == drops else np.full(drops, np.nan)
 
 
 #: A difference of elpd smaller than this many of its standard errors does not tell two
@@ -91,16 +140,18 @@ def annotate(
     *,
     drops: int | None = None,
 ) -> list[dict[str, Any]]:
-    """``rows`` (best first) with pareto_k_max, converged, distinguishable (from the best; the
-    best's: from the runner-up; None for a single model, False for every row when there are
-    fewer than 2 ``drops``, None: not known) and note (what makes the row's place unsure:
-    ``NOT_DISTINGUISHABLE`` or, over one drop, ``NOT_RANKED``; ``NOT_CONVERGED``; joined by
-    "; ")."""
+    """``rows`` (best first) with pareto_k_max, converged, law_extrapolated, distinguishable
+    (from the best; the best's: from the runner-up; None for a single model, False for every
+    row when there are fewer than 2 ``drops``, None: not known) and note (what makes the row's
+    place unsure: ``NOT_DISTINGUISHABLE`` or, over one drop, ``NOT_RANKED``; ``NOT_CONVERGED``;
+    joined by "; ")."""
     one = drops is not None and drops < 2
     for i, r in enumerate(rows):
         post = posteriors[r["model"]]
         r["pareto_k_max"] = float(post.loo.get("pareto_k_max", math.nan))
         r["converged"] = post.converged
+        found = getattr(post, "law_extrapolated", None) or {}  # {}: not known
+        r["law_extrapolated"] = float(found.get("share", math.nan))
         other = rows[1] if i == 0 and len(rows) > 1 else r
         r["distinguishable"] = None if len(rows) == 1 else distinguishable(other, drops)
         why = NOT_RANKED if one else NOT_DISTINGUISHABLE

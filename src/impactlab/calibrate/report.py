@@ -94,9 +94,24 @@ def _model_section(post: ModelPosterior) -> str:
         f"<p>{'converged' if post.converged else 'not converged'}; "
         f"{post.evaluations} model evaluations; acceptance {post.acceptance:.2f}; "
         f"{post.steps} steps ({post.burn} discarded); failed cases (likelihood zero): "
-        f"{html.escape(fails)}</p>"
+        f"{html.escape(fails)}; {html.escape(_extrapolated_text(post.law_extrapolated))}</p>"
         + (f"<ul>{notes}</ul>" if notes else "")
         + f"<img alt='corner plot' src='data:image/png;base64,{_png(corner_figure(post))}'>"
+    )
+
+
+def _share(x: float) -> str:
+    """A share in percent, or "n/a" (not known)."""
+    return "n/a" if math.isnan(x) else f"{format_number(100 * x, 2)} %"
+
+
+def _extrapolated_text(found: Mapping[str, Any]) -> str:
+    """The law-extrapolated share of a model's predicted impacts, with what it counts."""
+    if not found:
+        return "law extrapolated: n/a"
+    return (
+        f"law extrapolated (beyond its verified range) in {_share(float(found['share']))} of "
+        f"the {found['impacts']} predicted impacts at {found['basis']}"
     )
 
 
@@ -140,7 +155,7 @@ def html_report(cal: Calibration, title: str = "impactlab calibration") -> str:
     rank = _table(
         [
             *("rank", "model", "elpd_loo", "se", "elpd_diff", "dse", "p_loo", "weight"),
-            *("Pareto k (max)", "converged", "note"),
+            *("Pareto k (max)", "converged", "law extrapolated", "note"),
         ],
         [
             [
@@ -154,6 +169,7 @@ def html_report(cal: Calibration, title: str = "impactlab calibration") -> str:
                 f"{r['weight']:.2f}",
                 f"{_number(r['pareto_k_max'], '.2f')}" + (" (> 0.7)" if r["warning"] else ""),
                 "yes" if r["converged"] else "no",
+                _share(r["law_extrapolated"]),
                 r["note"],
             ]
             for r in cal.ranking

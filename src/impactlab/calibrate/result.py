@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import logging
 import math
+from collections.abc import Collection
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -13,6 +14,7 @@ import numpy as np
 
 from impactlab.calibrate._arviz import az, quiet, recording
 from impactlab.calibrate.diagnostics import convergence_notes, misfit_text
+from impactlab.calibrate.models import Prediction
 from impactlab.calibrate.posterior import LogPosterior
 from impactlab.calibrate.priors import Parameter
 from impactlab.calibrate.quantities import MEASURABLE
@@ -41,10 +43,16 @@ class ModelPosterior:
     loo : {elpd, se, p_loo, pareto_k_max, n_bad_k} (PSIS-LOO over drops) or {} when it failed;
     ppc : one dict per measured value: drop, quantity, observed, sigma, best, median, q05, q95
         (the model's prediction) and pred_q05/q95 (with the measurement noise), z_best;
-    failures : failed cases by reason; evaluations : cases run; acceptance : mean acceptance
-    fraction; steps, burn : the chain's steps used and discarded (a saved chain longer than
-    ``steps``, from an earlier run, is used up to ``steps``); warnings : what the diagnostics
-    found (R-hat, autocorrelation time, Pareto k, misfits, a prior's bound);
+    failures : failed cases by reason; evaluations : cases run; draws, failed_draws : the
+    parameter vectors run in this run (starting draws, proposals, predictive check) and those
+    with a failed case; law_extrapolated : {share, impacts, basis}: the share of the ``impacts``
+    predicted at ``basis`` (the predictive check's posterior draws, or the best fit when it
+    re-ran none) whose contact law was used beyond its verified range (the advisory
+    LAW_EXTRAPOLATED flag; share NaN when none ran); loo_pointwise : (D,) each drop's PSIS-LOO
+    elpd (empty when PSIS-LOO failed); acceptance : mean acceptance fraction; steps, burn : the
+    chain's steps used and discarded (a saved chain longer than ``steps``, from an earlier run,
+    is used up to ``steps``); warnings : what the diagnostics found (R-hat, autocorrelation
+    time, Pareto k, misfits, a prior's bound, an extrapolated law, many failed values);
     convergence : those of the warnings that say the chain has not converged or cannot tell
     (``converged`` is True when there are none).
     """
@@ -66,6 +74,10 @@ class ModelPosterior:
     burn: int
     warnings: list[str] = field(default_factory=list)
     convergence: list[str] = field(default_factory=list)
+    draws: int = 0
+    failed_draws: int = 0
+    law_extrapolated: dict[str, Any] = field(default_factory=dict)
+    loo_pointwise: np.ndarray = field(default_factory=lambda: np.zeros(0))
 
     @property
     def converged(self) -> bool:
@@ -102,6 +114,9 @@ class ModelPosterior:
             "ppc": self.ppc,
             "failures": self.failures,
             "evaluations": self.evaluations,
+            "draws": self.draws,
+            "failed_draws": self.failed_draws,
+            "law_extrapolated": self.law_extrapolated,
             "acceptance": self.acceptance,
             "steps": self.steps,
             "burn": self.burn,
@@ -110,19 +125,19 @@ class ModelPosterior:
         }
 
 
-def _loo(idata: Any) -> tuple[dict[str, float], list[str]]:
-    """PSIS-LOO over drops, and the notes to show: drops with Pareto k > 0.7, one drop only,
-    a result that is not finite. numpy's overflow warnings from inside ArviZ's smoothing are
-    dropped: ``exp`` of the differences of the Pareto fit's log likelihoods over its grid (more
-    than 709) gives that grid point the weight 0, its right limit (the loo package computes the
-    same in log space), and ``expm1`` of a tail with a shape k far above 0.7 gives weights that
-    ArviZ truncates to the largest raw one; what they point at, a tail the smoothing cannot
-    tame, is the Pareto k note."""
+def _loo(idata: Any) -> tuple[dict[str, float], list[str], np.ndarray]:
+    """PSIS-LOO over drops, each drop's elpd, and the notes to show: drops with Pareto k > 0.7,
+    one drop only, a result that is not finite. numpy's overflow warnings from inside ArviZ's
+    smoothing are dropped: ``exp`` of the differences of the Pareto fit's log likelihoods over
+    its grid (more than 709) gives that grid point the weight 0, its right limit (the loo
+    package computes the same in log space), and ``expm1`` of a tail with a shape k far above
+    0.7 gives weights that ArviZ truncates to the largest raw one; what they point at, a tail
+    the smoothing cannot tame, is the Pareto k note."""
     with recording() as caught:
         try:
             r = az.loo(idata, pointwise=True)
         except (ValueError, TypeError, IndexError) as exc:
-            return {}, [f"PSIS-LOO failed: {exc}"]
+            return {}, [f"PSIS-LOO failed: {exc}"], np.zeros(0)
     k = np.asarray(r.pareto_k)
     out = {
         "elpd": float(r.elpd_loo),
@@ -147,16 +162,37 @@ def _loo(idata: Any) -> tuple[dict[str, float], list[str]]:
             text = ONE_DROP
         if text not in notes:
             notes.append(text)
-    return out, notes
+    return out, notes, np.asarray(r.loo_i, dtype=np.float64).ravel()
+
+
+def _rerun(
+    post: LogPosterior, samples: np.ndarray, best: np.ndarray, rng: np.random.Generator, n: int
+) -> Prediction | None:
+    """The best fit (row 0) and ``n`` posterior draws re-run in one batch."""
+    pick = samples[rng.choice(len(samples), size=min(n, len(samples)), replace=False)]
+    return post.evaluate(np.vstack([best[None, :], pick]))[2]
+
+
+def _extrapolated(pred: Prediction | None) -> dict[str, Any]:
+    """{share, impacts, basis}: the share of the ok predicted impacts whose law was used
+    beyond its verified range, over the re-run posterior draws (rows 1:), or the best fit (row
+    0) when there are none; {} when not known."""
+    if pred is None or pred.extrapolated is None:
+        return {}
+    n = pred.status.shape[0] - 1
+    rows = slice(1, None) if n else slice(0, 1)
+    ok = pred.status[rows] == 0
+    impacts = int(np.count_nonzero(ok))
+    share = float(np.count_nonzero(pred.extrapolated[rows] & ok)) / impacts if impacts else math.nan
+    basis = f"{n} posterior draw{'s' if n != 1 else ''}" if n else "the best fit"
+    return {"share": share, "impacts": impacts, "basis": basis}
 
 
 def _ppc(
-    post: LogPosterior, samples: np.ndarray, best: np.ndarray, rng: np.random.Generator, n: int
+    post: LogPosterior, pred: Prediction | None, rng: np.random.Generator
 ) -> list[dict[str, Any]]:
-    """Posterior predictive checks: ``n`` posterior draws (and the best fit) re-run in one
-    batch; per measured value the prediction's median and 90 % band, the band with noise."""
-    pick = samples[rng.choice(len(samples), size=min(n, len(samples)), replace=False)]
-    _, _, pred = post.evaluate(np.vstack([best[None, :], pick]))
+    """Posterior predictive checks from ``pred`` (``_rerun``: the best fit, then the posterior
+    draws); per measured value the prediction's median and 90 % band, the band with noise."""
     rows: list[dict[str, Any]] = []
     if pred is None:
         return rows
@@ -217,9 +253,11 @@ def summarise(
     burn: int,
     seed: int,
     n_ppc: int = 200,
+    unused: Collection[str] = (),
 ) -> ModelPosterior:
     """The ModelPosterior of a finished chain: its first ``steps`` steps (a saved chain may
-    hold more, from an earlier longer run), draws after ``burn``."""
+    hold more, from an earlier longer run), draws after ``burn``; the ``unused`` parameters
+    (those the model does not use) get no convergence notes."""
     saved = sampler.iteration
     chain = sampler.get_chain()[burn:steps]  # (S, W, P)
     blobs = np.asarray(sampler.get_blobs(), dtype=np.float64)[burn:steps]
@@ -253,15 +291,16 @@ def summarise(
     with quiet():
         idata = az.from_dict(log_likelihood={"drops": log_lik})
         idata.add_groups(posterior=post_idata.posterior)
-    loo, notes = _loo(idata)
-    unconverged = convergence_notes(summary, chain.shape[0], burn, samples.shape[0])
+    loo, notes, pointwise = _loo(idata)
+    unconverged = convergence_notes(summary, chain.shape[0], burn, samples.shape[0], unused)
     notes += unconverged
     if saved > steps:
         notes.append(
             f"the saved chain holds {saved} steps; the first {steps} are used (steps = {steps})"
         )
     rng = np.random.default_rng(seed + 1)
-    ppc = _ppc(post, samples, best, rng, n_ppc)
+    pred = _rerun(post, samples, best, rng, n_ppc)
+    ppc = _ppc(post, pred, rng)
     notes += [misfit_text(r) for r in ppc if abs(r["z_best"]) > 5]
     return ModelPosterior(
         model=post.model.name,
@@ -281,4 +320,8 @@ def summarise(
         burn=burn,
         warnings=notes,
         convergence=unconverged,
+        draws=post.draws,
+        failed_draws=post.failed_draws,
+        law_extrapolated=_extrapolated(pred),
+        loo_pointwise=pointwise,
     )

@@ -87,6 +87,11 @@ def _diag(x: float, spec: str) -> str:
     return "n/a" if math.isnan(x) else format(x, spec)
 
 
+def _share(x: float) -> str:
+    """A share in percent (``"100 %"``), or "n/a" where it is not known (NaN)."""
+    return "n/a" if math.isnan(x) else f"{format_number(100 * x, 2)} %"
+
+
 def _show(table: Any) -> None:
     """``table`` on stdout, every cell in full: on a terminal at its width (cells wrap, never
     cut with an ellipsis), elsewhere (a pipe, a file) as wide as the table needs: rich would
@@ -110,14 +115,15 @@ def _print(cal: Any) -> None:
 
     t = Table(title=Text("models ranked by PSIS-LOO (leave one drop out)"), header_style="bold")
     cols = ("rank", "model", "elpd_loo", "se", "elpd_diff", "dse", "weight", "Pareto k",
-            "converged", "note")  # fmt: skip
+            "converged", "law extrapolated", "note")  # fmt: skip
     for col in cols:
         t.add_column(col, justify="left" if col in ("model", "note") else "right", overflow="fold")
     for r in cal.ranking:
         t.add_row(
             str(r["rank"] + 1), Text(r["model"]), f"{r['elpd_loo']:.2f}", f"{r['se']:.2f}",
             f"{r['elpd_diff']:.2f}", f"{r['dse']:.2f}", f"{r['weight']:.2f}",
-            _diag(r["pareto_k_max"], ".2f"), "yes" if r["converged"] else "no", Text(r["note"]),
+            _diag(r["pareto_k_max"], ".2f"), "yes" if r["converged"] else "no",
+            _share(r.get("law_extrapolated", math.nan)), Text(r["note"]),
         )  # fmt: skip
     _show(t)
     shown = set(cal.warnings)  # printed as warnings already
