@@ -36,12 +36,14 @@ def test_a_dimensionless_angle_in_range_is_radians() -> None:
 
 
 def test_an_angle_with_a_unit_is_echoed_as_given() -> None:
-    with pytest.raises(ValueError, match=r"\(0, 90\] deg, got 95 deg$"):
+    with pytest.raises(ValueError, match=r"\(0, 90\] deg, got 95 deg: the rod leans past"):
         check_angle(Q_(95, "deg"), PAPER_ROD)
-    with pytest.raises(ValueError, match=r"got 2 rad$"):
+    with pytest.raises(ValueError, match=r"got 2 rad: the rod leans past .* 65.4084 deg with"):
         check_angle(Q_(2.0, "rad"), PAPER_ROD)
-    with pytest.raises(ValueError, match=r"got 100 deg$"):
+    with pytest.raises(ValueError, match=r"got 100 deg: .* at angle = 80 deg with"):
         check_angle("100 deg", PAPER_ROD)
+    with pytest.raises(ValueError, match=r"got 190 deg$"):
+        check_angle("190 deg", PAPER_ROD)
 
 
 def test_a_dimensionless_incidence_gets_the_radians_hint() -> None:

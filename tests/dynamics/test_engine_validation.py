@@ -74,7 +74,7 @@ def test_rod_defaults_and_paper_preset() -> None:
         ({"mu": math.nan}, "mu must be finite"),
         ({"angle": 20.0}, r"got 20.0 rad \(1145.92 deg\); if 20.0 is meant in degrees"),
         ({"angle": 90.0}, "if 90.0 is meant in degrees"),
-        ({"angle": 1.6}, r"got 1.6 rad \(91.6732 deg\); if 1.6 is meant in degrees"),
+        ({"angle": 1.6}, r"got 1.6 rad \(91.6732 deg\): the rod leans past the flat's normal"),
         ({"mu": 2e3}, r"mu must lie in \[0, 1000\]"),
         ({"velocity": {"vx": 0.0, "vy": -1.41}}, "velocity must be a pair .* got a dict"),
         ({"velocity": {0.0, -1.41}}, "velocity must be a pair .* got a set"),
@@ -351,7 +351,8 @@ def test_batch_cases_beyond_the_bounds_are_refused_per_case() -> None:
     assert list(b.status) == [4, 4, 4, 0]
     assert b.messages[:3] == [  # each names its input, value and rule, as a batch of drops
         "invalid input: vx = 1e+300: a velocity component must be finite and at most 10000 m/s",
-        "invalid input: mu = 1e+300: mu must lie in [0, 1000]",
+        "invalid input: mu must lie in [0, 1000] (dry friction stays below about 2; a larger "
+        "mu only sticks), got 1e+300",
         "invalid input: spin = 10000000000.0: the spin times the reach of the contact point "
         "(L/2 + R) must be finite and at most 10000 m/s",
     ]

@@ -19,8 +19,9 @@ import numpy as np
 
 from impactlab.bodies import Rod, Sphere
 from impactlab.dynamics.export import batch_html
-from impactlab.dynamics.input_checks import contact_reach
+from impactlab.dynamics.input_checks import contact_reach, mu_problem
 from impactlab.dynamics.kernels.inputs import (
+    IN_MU,
     IN_OK,
     INPUT_RULES,
     RTOL_MIN,
@@ -94,9 +95,10 @@ def case_refusals(
     """Why each case ``refused`` (indices) of a batch (``cases``: the columns of
     :data:`CASE_NAMES`) is refused for its inputs, by index, as a batch of drops words it
     (``drop_checks.case_problem``): the first non-finite input, else the first outside its
-    rule (``kernels.inputs.input_problem``, the rule the compiled core applies); a case whose
-    inputs break none is left out. The batch's gravity and rtol are checked before it runs
-    (ValueError), so allowed values stand in for them."""
+    rule (``kernels.inputs.input_problem``, the rule the compiled core applies; mu worded as
+    ``simulate`` words it, ``input_checks.mu_problem``); a case whose inputs break none is left
+    out. The batch's gravity and rtol are checked before it runs (ValueError), so allowed
+    values stand in for them."""
     why: dict[int, str] = {}
     rod, reach = isinstance(body, Rod), contact_reach(body)
     for i in np.asarray(refused, dtype=np.int64).tolist():
@@ -107,7 +109,9 @@ def case_refusals(
             continue
         th, vx, vy, w, mu = case.values()
         problem = input_problem(rod, th, vx, vy, w, reach, mu, 0.0, RTOL_MIN)
-        if problem != IN_OK:
+        if problem == IN_MU:  # in the words of simulate's ValueError
+            why[i] = mu_problem(mu)
+        elif problem != IN_OK:
             why[i] = problem_text(problem, case[INPUT_RULES[problem][0]])
     return why
 

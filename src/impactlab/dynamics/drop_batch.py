@@ -45,6 +45,7 @@ from impactlab.dynamics.drop_checks import (
     energy_balance_error,
     input_problems,
     input_status,
+    refuse_rate,
 )
 from impactlab.dynamics.export import flag_attrs, status_attrs
 from impactlab.dynamics.flexcore import layout as F
@@ -287,6 +288,7 @@ def simulate_drops(
     speed: Any = None,
     incidence: Any = None,
     velocity: Any = None,
+    rate: Any = None,
 ) -> DropBatchResult:
     """Many drops of ``body`` (a FlexibleRod, or a rigid Rod: its rigid limit) on ``flat``, in
     parallel on all cores: each case as ``simulate_drop`` runs it, bit for bit.
@@ -297,8 +299,9 @@ def simulate_drops(
     1-D arrays, broadcast against each other (the dimensional ones may carry units, as in
     ``simulate_batch``). law, friction (``"coulomb"``, ``"impulse_ratio"``, ``"mindlin"``,
     ``"partial_slip"``), law_params, gravity (True, False or [m/s^2]), rtol (default 1e-7),
-    stop and t_max [s] as ``simulate_drop``, the same for every case; no rate-dependent flat
-    (``simulate_drop``'s ``rate``: its self-consistent factor iterates per case).
+    stop and t_max [s] as ``simulate_drop``, the same for every case. ``rate`` (a
+    rate-dependent flat) is refused with a ValueError: its self-consistent factor iterates drop
+    by drop (``simulate_drop(..., rate=...)`` for each case).
 
     A case the drop refuses (a non-finite input, mu < 0, an angle outside (0, pi/2], a tip
     that does not approach the flat, or approaches it slower than ``MIN_APPROACH_SPEED``) or
@@ -308,6 +311,7 @@ def simulate_drops(
     flat, law, friction, gravity, rtol (with partial slip: up to 1e-5), stop or t_max (one
     message naming it).
     """
+    refuse_rate(rate, "simulate_drops")
     body = check_body(body)
     bm = body_model(body)
     flat = check_flat(flat)

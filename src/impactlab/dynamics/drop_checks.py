@@ -23,6 +23,7 @@ from impactlab.dynamics.input_checks import (
     check_mu,
     check_rtol,
     contact_reach,
+    mu_problem,
 )
 from impactlab.dynamics.kernels import status as S
 from impactlab.dynamics.kernels.inputs import (
@@ -67,6 +68,19 @@ def check_friction(friction: str, mu: float) -> tuple[FrictionModel, float]:
         names = ", ".join(repr(str(k)) for k in DROP_FRICTION)
         raise ValueError(f"friction: the drop integrator implements {names}, got {friction!r}")
     return fric, check_mu(mu)
+
+
+def refuse_rate(rate: Any, caller: str) -> None:
+    """ValueError for a ``rate`` law given to the batch ``caller`` (None passes): the flat's
+    self-consistent rate factor is iterated drop by drop, each case to its own, where a batch
+    runs every case in one compiled call (studies take no rate law either)."""
+    if rate is not None:
+        raise ValueError(
+            f"rate={rate!r}: {caller} takes no rate-dependent flat, since its self-consistent "
+            "rate factor is iterated drop by drop (each case its own) and the batch runs every "
+            f"case in one compiled call; run simulate_drop(body, flat, rate={rate!r}, ...) for "
+            "each case"
+        )
 
 
 def drop_rtol(rtol: Any, friction: FrictionModel | None = None) -> float:
@@ -130,6 +144,8 @@ def case_problem(
         values = {IN_ANGLE: th, IN_VX: vx, IN_VY: vy, IN_SPIN: w, IN_MU: mu}
         values |= {IN_GRAVITY: gravity, IN_RTOL: rtol}
         code = S.ST_BAD_ANGLE if problem == IN_ANGLE else S.ST_BAD_INPUT
+        if problem == IN_MU:  # in the words of simulate_drop's ValueError
+            return code, mu_problem(mu)
         return code, problem_text(problem, values[problem])
     vn = vy - w * half_length * math.cos(th)
     if not vn < 0.0:

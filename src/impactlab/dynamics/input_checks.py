@@ -21,6 +21,7 @@ from impactlab._validation import (
     check_flag,
     check_nonnegative,
     check_positive,
+    value_text,
     warn_implausible,
 )
 from impactlab.bodies import Rod, Sphere
@@ -63,15 +64,20 @@ def gravity_value(gravity: Any) -> float:
 
 
 def check_mu(mu: Any) -> float:
-    """The friction coefficient, in [0, MAX_MU] (dry contacts stay below about 2; beyond
-    MAX_MU every contact sticks alike)."""
-    m = check_nonnegative("mu", mu)
-    if not mu_allowed(m):
-        raise ValueError(
-            f"mu must lie in [0, {MAX_MU:g}] (dry friction stays below about 2; a larger mu "
-            f"only sticks), got {m!r}"
-        )
+    """The friction coefficient, in [0, MAX_MU]; a ValueError in ``mu_problem``'s words."""
+    if why := mu_problem(m := check_finite("mu", mu)):
+        raise ValueError(why)
     return m
+
+
+def mu_problem(mu: float) -> str:
+    """Why a finite ``mu`` is refused ("" if not), as one run and a batch's case say it."""
+    if mu < 0.0:
+        return f"mu must be >= 0, got {value_text(mu)}"
+    if mu_allowed(mu):
+        return ""
+    why = "dry friction stays below about 2; a larger mu only sticks"
+    return f"mu must lie in [0, {MAX_MU:g}] ({why}), got {mu!r}"
 
 
 def check_speed(name: str, speed: float) -> float:
@@ -151,15 +157,32 @@ def check_angle(angle: Any, body: Rod | Sphere) -> float:
     th = check_finite("angle", angle, "rad")
     if angle_allowed(th):
         return th
-    if has_unit(angle):  # the user gave a unit: answer in degrees
-        raise ValueError(f"angle must be in (0, 90] deg, got {_as_given(angle)}")
-    hint = ""
-    if 0.5 * math.pi < th <= 90.0 + 1e-9:
-        hint = (
-            f" ({math.degrees(th):.6g} deg); if {th!r} is meant in degrees, pass "
-            f"math.radians({th!r}) = {math.radians(th):.6g} rad or the string '{th:g} deg'"
+    unit = has_unit(angle)  # the user gave a unit: answer in degrees
+    hint = _past_normal(th, unit) if 0.5 * math.pi < th < math.pi else ""
+    if unit:
+        raise ValueError(f"angle must be in (0, 90] deg, got {_as_given(angle)}{hint}")
+    if 0.5 * math.pi + PAST_NORMAL < th <= 90.0 + 1e-9:
+        hint += (
+            f"; if {th!r} is meant in degrees, pass math.radians({th!r}) = "
+            f"{math.radians(th):.6g} rad or the string '{th:g} deg'"
         )
+    hint = f" ({math.degrees(th):.6g} deg){hint}" if hint else ""
     raise ValueError(f"angle must be in radians in (0, pi/2], got {th!r} rad{hint}")
+
+
+#: How far past pi/2 [rad] a bare angle reads as a rod past the normal (math.radians(91)), not as
+#: degrees; beyond it to 90 (may well be degrees) the degrees hint follows, alone from pi on.
+PAST_NORMAL = math.radians(10.0)
+
+
+def _past_normal(th: float, deg: bool) -> str:
+    """What a rod's angle ``th`` [rad] in (pi/2, pi) means (``deg``: said in degrees)."""
+    m = math.pi - th
+    mirror = f"{math.degrees(m):.6g} deg" if deg else f"{m:.6g} rad ({math.degrees(m):.6g} deg)"
+    return (
+        f": the rod leans past the flat's normal, the mirror of a drop at angle = {mirror} with "
+        "vx (or incidence) and spin negated (x runs from the tip towards the centre of mass)"
+    )
 
 
 def check_constant_angle(constant_angle: Any, body: Rod | Sphere) -> bool:
@@ -211,9 +234,8 @@ def check_velocity(velocity: Any) -> tuple[float, float]:
 
 def _velocity_given(value: Any) -> str:
     """A velocity as the user gave it: a string quoted, a Quantity with its unit."""
-    if hasattr(value, "magnitude") and hasattr(value, "units"):
-        return f"{value.magnitude!r} {value.units:~}"
-    return repr(value)
+    quantity = hasattr(value, "magnitude") and hasattr(value, "units")
+    return f"{value.magnitude!r} {value.units:~}" if quantity else repr(value)
 
 
 def velocity_from(velocity: Any, speed: Any, incidence: Any) -> Any:
@@ -241,14 +263,10 @@ def velocity_from(velocity: Any, speed: Any, incidence: Any) -> Any:
     v = check_positive("speed", speed, "m/s")
     th = check_finite("incidence", incidence, "rad")
     if not incidence_allowed(th):
-        hint = (
-            ""
-            if has_unit(incidence)
-            else f" (a bare incidence is radians; for degrees write '{th:g} deg')"
-        )
+        hint = f" (a bare incidence is radians; for degrees write '{th:g} deg')"
         raise ValueError(
             f"incidence must lie in (-90, 90) deg from the flat's normal, got "
-            f"{math.degrees(th):.6g} deg{hint}"
+            f"{math.degrees(th):.6g} deg{'' if has_unit(incidence) else hint}"
         )
     return (v * math.sin(th), -v * math.cos(th))
 
@@ -345,10 +363,8 @@ def given_body(body: Any) -> str:
 
 def check_body(body: Any) -> Rod | Sphere:
     """``body`` if it is a Rod or a Sphere, else ValueError."""
-    if body is None or isinstance(body, type):  # say what it is (a class: not an instance)
+    if not isinstance(body, Rod | Sphere):  # say what it is (a class: not an instance)
         raise ValueError(f"body must be an impactlab Rod or Sphere, {given_body(body)}")
-    if not isinstance(body, Rod | Sphere):
-        raise ValueError(f"body must be an impactlab Rod or Sphere, got {type(body).__name__}")
     return body
 
 
@@ -377,23 +393,8 @@ def warn_fast(what: str, speed: float) -> None:
 
 
 __all__ = [
-    "PARTIAL_SLIP_RTOL_MAX",
-    "PLAUSIBLE_SPEED",
-    "batch_velocity",
-    "check_angle",
-    "check_body",
-    "check_constant_angle",
-    "check_dent_grid",
-    "check_flat",
-    "check_mu",
-    "check_partial_slip_rtol",
-    "check_rtol",
-    "check_speed",
-    "check_spin",
-    "check_velocity",
-    "contact_reach",
-    "given_body",
-    "gravity_value",
-    "velocity_from",
-    "warn_fast",
-]
+    "PARTIAL_SLIP_RTOL_MAX", "PAST_NORMAL", "PLAUSIBLE_SPEED", "batch_velocity", "check_angle",
+    "check_body", "check_constant_angle", "check_dent_grid", "check_flat", "check_mu",
+    "check_partial_slip_rtol", "check_rtol", "check_speed", "check_spin", "check_velocity",
+    "contact_reach", "given_body", "gravity_value", "mu_problem", "velocity_from", "warn_fast",
+]  # fmt: skip

@@ -101,8 +101,9 @@ def simulate(
         Friction coefficient, >= 0 (default ``impactlab.friction.DEFAULT_MU``).
     angle : float or str
         Rod axis to the flat, in (0, pi/2] rad; tip lowest, centre of mass at +x of the tip.
-        A bare number above pi/2 is refused with a degrees hint; a sphere takes none (refused,
-        as is ``constant_angle=True`` for it).
+        A bare number above pi/2 is refused (up to 10 deg past it as a rod leaning past the
+        normal, the mirror of pi - angle; up to 90 with a degrees hint too; above pi with the
+        degrees hint); a sphere takes none (refused, as is ``constant_angle=True`` for it).
     velocity, spin : pair, float
         (vx, vy) of the centre of mass at first touch [m/s] (the contact point must approach);
         angular velocity [rad/s], counter-clockwise positive.

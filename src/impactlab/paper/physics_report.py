@@ -6,8 +6,10 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 
+import numpy as np
 import pandas as pd
 
+from impactlab.paper.calibration_report import PAPER_SIGMAS
 from impactlab.paper.physics import (
     CONFIGURATIONS,
     E_DEFINITION,
@@ -19,7 +21,7 @@ from impactlab.paper.physics import (
 )
 from impactlab.paper.report import Block, Bullets, Figure, Heading, Para, Table
 
-__all__ = ["physics_section"]
+__all__ = ["LARGE_EFFECT", "PILE_UP_ANGLE", "TOLERANCES", "physics_section"]
 
 
 def _values(table: pd.DataFrame, config: str, column: str) -> str:
@@ -43,42 +45,234 @@ def _shown(table: pd.DataFrame) -> pd.DataFrame:
     return shown
 
 
+#: Within how much of a measured value a simulated one explains it, by column (tolerance,
+#: relative): the standard uncertainties the calibration of the next section assumes
+#: (``PAPER_SIGMAS``: e absolute, delta_p and L_s relative) and, for T, which it does not use
+#: (the measured T is inferred from the dent), the lengths' relative one. Not tuned to the table.
+TOLERANCES: dict[str, tuple[float, bool]] = {
+    "delta_p [um]": (PAPER_SIGMAS["delta_p"], True),
+    "e": (PAPER_SIGMAS["e"], False),
+    "L_s [um]": (PAPER_SIGMAS["scar_length"], True),
+    "T [ms]": (PAPER_SIGMAS["scar_length"], True),
+}
+#: Each compared column in the sentences.
+NOUNS = {
+    "delta_p [um]": "the dent depth",
+    "e": "e",
+    "L_s [um]": "the scar",
+    "T [ms]": "the duration",
+}
+#: The smallest ratio of the rigid rod's dent to the flexible rod's on the rate-dependent flat
+#: (at every angle) for which the section calls flexibility and rate dependence large effects:
+#: five times the dent's assumed relative uncertainty beyond 1.
+LARGE_EFFECT = 1.0 + 5.0 * PAPER_SIGMAS["delta_p"]
+#: The drop the paper explains by a pile-up that no contact law models.
+PILE_UP_ANGLE = 70
+
+
+def _series(table: pd.DataFrame, config: str, column: str) -> np.ndarray:
+    """``column`` of ``config`` at the table's angles, in increasing angle."""
+    rows = table[table["configuration"] == config].sort_values("angle [deg]")
+    return rows[column].to_numpy(dtype=np.float64)
+
+
+def _angles(table: pd.DataFrame) -> list[int]:
+    """The table's angles [deg], increasing."""
+    return sorted(int(a) for a in table["angle [deg]"].unique())
+
+
+def _listed(items: list[str], last: str = "and") -> str:
+    """ "a", "a and b", "a, b and c" (``last``: the last joint)."""
+    return items[0] if len(items) == 1 else f"{', '.join(items[:-1])} {last} {items[-1]}"
+
+
+def _at(angles: list[int], every: int) -> str:
+    """ "at every angle" when ``angles`` holds all ``every`` of them, else "at 20 and 70 deg"."""
+    if len(angles) == every:
+        return "at every angle"
+    return f"at {_listed([str(a) for a in angles])} deg"
+
+
+def _closeness(table: pd.DataFrame, column: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Per angle the measured ``column``, the nearest value of the flexible rod on the plain
+    or the rate-dependent flat (``CONFIGURATIONS``) and whether it lies within its tolerance."""
+    tol, relative = TOLERANCES[column]
+    measured = _series(table, MEASURED, column)
+    values = np.stack([_series(table, c.name, column) for c in CONFIGURATIONS if c.flexible])
+    off = np.abs(values / measured - 1.0) if relative else np.abs(values - measured)
+    pick = (np.argmin(off, axis=0), np.arange(values.shape[1]))
+    return measured, values[pick], off[pick] <= tol * (1.0 + 1e-9)
+
+
+def _off(column: str, measured: np.ndarray, near: np.ndarray) -> str:
+    """How far ``near`` lies from ``measured``: "1.55 times the measured one" (a relative
+    tolerance) or "0.724 / 0.602 against 0.5 / 0.49"."""
+    if TOLERANCES[column][1]:
+        return f"{' / '.join(f'{r:.3g}' for r in near / measured)} times the measured one"
+    ours, theirs = (" / ".join(f"{v:.3g}" for v in x) for x in (near, measured))
+    return f"{ours} against the measured {theirs}"
+
+
+def _verdict(table: pd.DataFrame, column: str) -> tuple[list[int], list[int], str]:
+    """The angles at which flexibility and rate dependence explain ``column`` (within its
+    tolerance), those at which they do not, and how far the nearest value lies at the latter."""
+    measured, near, close = _closeness(table, column)
+    angles = _angles(table)
+    ok = [a for a, c in zip(angles, close, strict=True) if c]
+    bad = [a for a, c in zip(angles, close, strict=True) if not c]
+    return ok, bad, _off(column, measured[~close], near[~close])
+
+
+def _sentence(table: pd.DataFrame, column: str) -> tuple[str, bool]:
+    """Whether flexibility and rate dependence explain ``column``, in one sentence, and True
+    when they do at one angle at least."""
+    ok, bad, miss = _verdict(table, column)
+    every, what = len(ok) + len(bad), NOUNS[column]
+    within = f"within {_tol(column)}"
+    who = "Flexibility and rate dependence"
+    if not bad:
+        return f"{who} explain {what} {_at(ok, every)} ({within}).", True
+    if not ok:
+        return f"{who} do not explain {what} at any angle (none {within}; nearest: {miss}).", False
+    return (
+        f"{who} explain {what} {_at(ok, every)} ({within}), not {_at(bad, every)} ({miss}).",
+        True,
+    )
+
+
+def _direction(table: pd.DataFrame, column: str) -> str:
+    """Which way the flexible rod moves ``column`` from the rigid rod's, by angle: "raises e at
+    20 and 45 deg and lowers it at 70 deg"."""
+    rigid, flex = (c.name for c in CONFIGURATIONS[:2])
+    up = _series(table, flex, column) > _series(table, rigid, column)
+    angles = _angles(table)
+    parts: list[str] = []
+    for word, way in (("raises", True), ("lowers", False)):
+        at = [a for a, u in zip(angles, up, strict=True) if u == way]
+        if at:
+            parts.append(f"{word} {'it' if parts else NOUNS[column]} {_at(at, len(angles))}")
+    return " and ".join(parts)
+
+
 def _findings(table: pd.DataFrame) -> list[Block]:
     rigid, flex, rate = (c.name for c in CONFIGURATIONS)
 
     def v(config: str, column: str) -> str:
         return _values(table, config, column)
 
-    explains = (
-        f"The flexible rod rings and touches the flat again: {v(flex, 'contacts')} contacts "
-        f"over {v(flex, 'T [ms]')} ms instead of one contact of {v(rigid, 'T [ms]')} ms; the "
-        f"largest force falls from {v(rigid, 'F_max [N]')} N to {v(flex, 'F_max [N]')} N.",
-        f"Dent depths: on the rate-dependent flat (self-consistent factor "
-        f"{v(rate, 'rate factor')}) the flexible rod leaves {v(rate, 'delta_p [um]')} um "
-        f"against the measured {v(MEASURED, 'delta_p [um]')} um (rigid rod "
-        f"{v(rigid, 'delta_p [um]')} um): {_ratio(table, rate, 'delta_p [um]')} times the "
-        "measured depth. Flexibility and rate dependence explain the dent depths (closely at "
-        "20 and 70 deg, less so at 45 deg).",
-    )
-    not_explained = (
-        f"e: measured {v(MEASURED, 'e')}; rigid {v(rigid, 'e')}, flexible {v(flex, 'e')}, "
-        f"flexible + rate {v(rate, 'e')}. The flexible rod raises e at 20 and 45 deg, and no "
-        "configuration comes near the measured 0.05 at 70 deg.",
-        f"The 20 deg scar and duration: L_s {v(MEASURED, 'L_s [um]')} um measured against "
-        f"{v(flex, 'L_s [um]')} um (flexible); T {v(MEASURED, 'T [ms]')} ms (from the dent) "
-        f"against {v(flex, 'T [ms]')} ms. The scar grows tenfold with flexibility but stays "
-        "five times short at 20 deg.",
-        "The 70 deg case: the flexible rod makes the scar longer than the measured 200 um "
-        "and e is still far too high; the paper points at a pile-up that no contact law "
-        "models.",
-    )
-    return [
-        Para("What flexibility and rate dependence explain:"),
-        Bullets(explains),
-        Para("What they do not explain:"),
-        Bullets(not_explained),
-        *_fe_row(table),
+    again = (_series(table, flex, "contacts") > 1).all()
+    lower = (_series(table, flex, "F_max [N]") < _series(table, rigid, "F_max [N]")).all()
+    scar_growth = _series(table, flex, "L_s [um]") / _series(table, rigid, "L_s [um]")
+    bullets = [
+        (
+            f"The flexible rod rings{' and touches the flat again' if again else ''}: "
+            f"{v(flex, 'contacts')} contacts over {v(flex, 'T [ms]')} ms instead of one contact "
+            f"of {v(rigid, 'T [ms]')} ms; the largest force {'falls' if lower else 'goes'} from "
+            f"{v(rigid, 'F_max [N]')} N to {v(flex, 'F_max [N]')} N.",
+            True,
+        ),
+        _with(
+            f"Dent depths: on the rate-dependent flat (self-consistent factor "
+            f"{v(rate, 'rate factor')}) the flexible rod leaves {v(rate, 'delta_p [um]')} um "
+            f"against the measured {v(MEASURED, 'delta_p [um]')} um (rigid rod "
+            f"{v(rigid, 'delta_p [um]')} um): {_ratio(table, rate, 'delta_p [um]')} times the "
+            "measured depth.",
+            _sentence(table, "delta_p [um]"),
+        ),
+        _with(
+            f"e: measured {v(MEASURED, 'e')}; rigid {v(rigid, 'e')}, flexible {v(flex, 'e')}, "
+            f"flexible + rate {v(rate, 'e')}. The flexible rod {_direction(table, 'e')}.",
+            _sentence(table, "e"),
+        ),
+        _with(
+            f"Scar: L_s {v(MEASURED, 'L_s [um]')} um measured against {v(flex, 'L_s [um]')} um "
+            f"(flexible; {' / '.join(f'{r:.3g}' for r in scar_growth)} times the rigid rod's "
+            "scar).",
+            _sentence(table, "L_s [um]"),
+        ),
+        _with(
+            f"Duration: T {v(MEASURED, 'T [ms]')} ms (from the dent) against {v(flex, 'T [ms]')} "
+            "ms (flexible).",
+            _sentence(table, "T [ms]"),
+        ),
+        *_pile_up(table),
     ]
+    explained = tuple(text for text, ok in bullets if ok)
+    not_explained = tuple(text for text, ok in bullets if not ok)
+    blocks: list[Block] = [
+        Para(
+            "What flexibility and rate dependence explain (at an angle where the flexible rod, "
+            "on the plain or the rate-dependent flat, comes within the uncertainty the next "
+            f"section's calibration assumes: e +- {_tol('e')}, delta_p and L_s +- "
+            f"{_tol('delta_p [um]')}; T, which it does not use, +- {_tol('T [ms]')}):"
+        ),
+        Bullets(explained),
+    ]
+    if not_explained:
+        blocks += [Para("What they do not explain:"), Bullets(not_explained)]
+    return [*blocks, *_fe_row(table)]
+
+
+def _tol(column: str) -> str:
+    """The tolerance of ``column`` in words: "10 %" or "0.03"."""
+    tol, relative = TOLERANCES[column]
+    return f"{tol * 100:g} %" if relative else f"{tol:g}"
+
+
+def _with(text: str, verdict: tuple[str, bool]) -> tuple[str, bool]:
+    """A bullet's ``text`` followed by its verdict's sentence, and whether it explains."""
+    return f"{text} {verdict[0]}", verdict[1]
+
+
+def _pile_up(table: pd.DataFrame) -> list[tuple[str, bool]]:
+    """The bullet of the drop the paper explains by a pile-up (none without that drop): the
+    flexible rod's scar and e there, against the measured ones."""
+    at = table[table["angle [deg]"] == PILE_UP_ANGLE]
+    if at.empty:
+        return []
+    rigid, flex = (c.name for c in CONFIGURATIONS[:2])
+
+    def x(config: str, column: str) -> float:
+        return float(at.loc[at["configuration"] == config, column].iloc[0])
+
+    scar, e = x(MEASURED, "L_s [um]"), x(MEASURED, "e")
+    i = _angles(table).index(PILE_UP_ANGLE)
+    explained = all(_closeness(table, c)[2][i] for c in ("e", "L_s [um]"))
+    return [
+        (
+            f"The {PILE_UP_ANGLE} deg case: the flexible rod's scar is "
+            f"{x(flex, 'L_s [um]') / scar:.3g} times the measured {scar:.3g} um (the rigid "
+            f"rod's {x(rigid, 'L_s [um]') / scar:.3g} times) and its e {x(flex, 'e'):.3g} "
+            f"against the measured {e:.3g}; the paper points at a pile-up that no contact law "
+            "models.",
+            explained,
+        )
+    ]
+
+
+def _closing(table: pd.DataFrame) -> Para:
+    """The section's conclusion: how large the effects are, what they explain and where."""
+    rigid, rate = CONFIGURATIONS[0].name, CONFIGURATIONS[2].name
+    factor = _series(table, rigid, "delta_p [um]") / _series(table, rate, "delta_p [um]")
+    size = "real and large effects" if factor.min() >= LARGE_EFFECT else "real effects"
+    explained: list[str] = []
+    missed: list[str] = []
+    for column in TOLERANCES:
+        ok, bad, miss = _verdict(table, column)
+        every = len(ok) + len(bad)
+        if not ok:
+            missed.append(NOUNS[column])
+        else:
+            where = f" (not {_at(bad, every)}: {miss})" if bad else ""
+            explained.append(f"{NOUNS[column]} {_at(ok, every)}{where}")
+    said = [f"they explain {_listed(explained)}"] if explained else []
+    if missed:
+        said.append(f"they do not explain {_listed(missed, 'or')} at any angle")
+    return Para(
+        f"Rod flexibility and rate sensitivity are {size} (the rigid rod's dent is "
+        f"{' / '.join(f'{r:.3g}' for r in factor)} times the flexible rod's on the "
+        f"rate-dependent flat): {', but '.join(said)}."
+    )
 
 
 def _fe_row(table: pd.DataFrame) -> list[Block]:
@@ -135,11 +329,7 @@ def physics_section(
             digits=4,
         ),
         *_findings(table),
-        Para(
-            "Rod flexibility and rate sensitivity are real and large effects: they close the "
-            "dent-depth gap, but they do not explain e, the 20 deg scar and duration, nor the "
-            "70 deg case."
-        ),
+        _closing(table),
     ]
     if "physics_drop_20" in figures:
         B.append(
