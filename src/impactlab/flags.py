@@ -83,7 +83,8 @@ class ResultFlag(enum.IntFlag):
     #: a rod's impact (or a contact of a drop) whose largest interference exceeds
     #: R (1 - |cos theta|), the depth at which the flat reaches the rim of the hemispherical
     #: end (theta: the rod's angle to the flat, the one of touch or separation farther from
-    #: 90 deg): the contact is no longer a sphere's on a flat, which every contact law assumes
+    #: 90 deg; a flexible rod's drop: the angle of the end's section, the rod's plus its elastic
+    #: rotation): the contact is no longer a sphere's on a flat, which every contact law assumes
     BEYOND_TIP = FLAG_BEYOND_TIP
     #: a brittle member of the pair (``Material.brittle``: its yield strength holds its
     #: compressive strength) carried a mean contact pressure past its first yield, (2/3) C(nu)
@@ -119,9 +120,9 @@ _MESSAGES: dict[ResultFlag, str] = {
     ResultFlag.BEYOND_TIP: (
         "beyond the tip: the largest interference exceeds R (1 - |cos(angle)|), the depth at "
         "which the flat reaches the rim of the rod's hemispherical end at its angle to the "
-        "flat (in a drop: in one of its contacts), so the contact is no longer that of a "
-        "sphere on a flat, which the contact laws describe; the outputs do not hold (raise the "
-        "angle or lower the impact velocity)"
+        "flat (in a drop: in one of its contacts; a flexible rod's: its end section's), so the "
+        "contact is no longer that of a sphere on a flat, which the contact laws describe; the "
+        "outputs do not hold {beyond_advice}"
     ),
     ResultFlag.BRITTLE: (
         "brittle: the largest mean contact pressure passed the first yield of a brittle "
@@ -135,6 +136,16 @@ _MESSAGES: dict[ResultFlag, str] = {
         "`impactlab laws --accuracy` measures each law)"
     ),
 }
+
+#: The advice that ends the BEYOND_TIP sentence: alone, and with GRAVITY_DOMINATED (the rod
+#: rests on or falls onto the flat, its angle shrinking as it tips over: the impact's speed is
+#: not what takes the flat past the rim).
+_BEYOND_TIP_ADVICE = "(raise the angle or lower the impact velocity)"
+_BEYOND_TIP_GRAVITY_ADVICE = (
+    "(gravity dominates: the rod rests, rocks or falls over onto the flat rather than bounces, "
+    "so the rim meets the flat as it lies down and e and the other impact measures are not "
+    "meaningful; lowering the impact velocity does not help: raise it, or pass gravity=False)"
+)
 
 #: The LAW_EXTRAPOLATED sentence per range status (``impactlab.contact.ranges.STATUSES``):
 #: (what was exceeded, what the limit is called, the consequence).
@@ -199,7 +210,9 @@ def messages(
     (``impactlab.contact.ranges.extrapolation``), in the law's own ``reference``
     (``delta_c``, or ``delta_y`` for Kogut-Komvopoulos and Brake: ``LawRange.delta_ref``);
     ``status``, the range's status (``contact.ranges.range_status``: "verified",
-    "unverified", "provisional", "theory", ...), words that sentence."""
+    "unverified", "provisional", "theory", ...), words that sentence. The BEYOND_TIP sentence's
+    advice depends on GRAVITY_DOMINATED: with it, the rod falls onto the flat rather than
+    bounces, and a lower impact velocity would not help."""
     try:
         value = int(flags)
     except (TypeError, ValueError):
@@ -211,8 +224,10 @@ def messages(
         raise ValueError(f"flags {value!r} holds bits outside the known flags (mask {known})")
     what, limit_name, so = _EXTRAPOLATION_TEXT.get(status or "", _UNKNOWN_STATUS)
     how_far = _how_far(extrapolation, limit_name, reference)
+    gravity = value & ResultFlag.GRAVITY_DOMINATED
+    advice = _BEYOND_TIP_GRAVITY_ADVICE if gravity else _BEYOND_TIP_ADVICE
     return tuple(
-        text.format(how_far=how_far, what=what, so=so)
+        text.format(how_far=how_far, what=what, so=so, beyond_advice=advice)
         for flag, text in sorted(_MESSAGES.items())
         if value & flag
     )

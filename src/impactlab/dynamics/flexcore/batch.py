@@ -99,7 +99,8 @@ def sequence_flags(out, e0, m, g, rtol, contacts, n_contacts, radius):
     positive work in a contact, ``friction_gained``), GRAVITY_DOMINATED on the tip's
     sequence (``tip_sequence``), OTHER_END when the other end touched in the run, or, unless
     gravity dominates, when e < 0 (or NaN); BEYOND_TIP when the flat reached the rim of an
-    end's hemisphere (``radius`` [m]) in one of the contacts."""
+    end's hemisphere (``radius`` [m]) in one of the contacts, at the angle of the end's section
+    (the rod's plus its elastic rotation: ``layout.CR_TH0``)."""
     flags = 0
     for j in range(n_contacts):
         c = contacts[j]

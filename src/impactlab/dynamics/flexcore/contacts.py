@@ -34,6 +34,7 @@ from impactlab.dynamics.flexcore.friction import (
     mindlin_switch,
     radius_factor,
 )
+from impactlab.dynamics.flexcore.kinematics import section_angle
 from impactlab.dynamics.flexcore.rhs import evaluate_model
 from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.layout import FR_COULOMB, FR_MINDLIN
@@ -143,7 +144,7 @@ def on_touch(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, ek, Jn, Jt):
     contacts[ci, F.CR_DMAX] = ek[k, F.EK_DELTA]
     contacts[ci, F.CR_FMAX] = 0.0
     contacts[ci, F.CR_STICK] = 0.0
-    contacts[ci, F.CR_TH0] = contacts[ci, F.CR_TH1] = c[F.FC_TH0] + y[2]
+    contacts[ci, F.CR_TH0] = contacts[ci, F.CR_TH1] = section_angle(c, mdl[9], y, k)
     contacts[ci, F.CR_PAST] = sv[F.SV_SEQ_PASSED]
     if di >= 0:
         _reload_mode(mdl, md, dents, k, di)
@@ -224,7 +225,7 @@ def on_separation(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, y_end, e
     iw = y.shape[0] - F.N_END_WORKS + 2 * k
     contacts[ci, F.CR_WN] = y[iw] - snap[k, 4]
     contacts[ci, F.CR_WT] = y[iw + 1] - snap[k, 5]
-    contacts[ci, F.CR_TH1] = mdl[2][F.FC_TH0] + y[2]
+    contacts[ci, F.CR_TH1] = section_angle(mdl[2], mdl[9], y, k)
     cur_con[k] = -1
     md[k, F.MD_IN] = 0.0
     md[k, F.MD_FM] = 0.0

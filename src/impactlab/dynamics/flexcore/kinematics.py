@@ -84,6 +84,17 @@ def end_kinematics(c, Ue, We, Pe, y, k, Jn, Jt):
 
 
 @njit(cache=True, inline="always", error_model="numpy")
+def section_angle(c, Pe, y, k):
+    """The angle of end k's section to the flat [rad]: the rod's, angle + phi, plus the
+    section's elastic rotation psi(end) = sum Pe[k, j] q_j, with which its hemisphere turns
+    (the rotation whose rate ``end_kinematics`` adds to the slip velocity)."""
+    psi = 0.0
+    for j in range(Pe.shape[1]):
+        psi += Pe[k, j] * y[3 + j]
+    return c[F.FC_TH0] + y[2] + psi
+
+
+@njit(cache=True, inline="always", error_model="numpy")
 def normal_force(law, p, md, k, delta):
     """Normal force [N] of end k at interference delta in its mode (0 out of contact)."""
     if md[k, F.MD_IN] == 0.0:

@@ -132,7 +132,9 @@ CR_DR = 13  #: the dent's delta_r after the contact [m]
 CR_WN = 14  #: work of the normal force [J]
 CR_WT = 15  #: work of friction [J]
 CR_STICK = 16  #: time spent sticking [s]
-CR_TH0 = 17  #: the rod's angle to the flat at touch [rad] (the rim check; not a record field)
+#: the angle of the end's section to the flat at touch [rad]: the rod's plus the section's
+#: elastic rotation (``kinematics.section_angle``; the rim check; not a record field)
+CR_TH0 = 17
 CR_TH1 = 18  #: ... at separation (at touch until then) [rad]
 #: 1 if the contact began after the end test of stop="sequence" would have passed (a
 #: ``stop="flight"`` drop's contacts beyond the tip's sequence; not a record field)
