@@ -115,3 +115,11 @@ def test_simulate_drops_refuses_a_rate_law_with_its_reason() -> None:
     assert "simulate_drop(body, flat, rate='cowper-symonds', ...) for each case" in text
     b = il.simulate_drops(FlexibleRod.paper(), angle=[0.3], vy=-1.0, rate=None, mu=0.1)
     assert b.status.tolist() == [0] and np.isfinite(b.e).all()
+
+
+@pytest.mark.parametrize("command", [("simulate", "rod"), ("drop", "--rigid")])
+def test_the_command_line_says_the_same_of_an_angle_past_the_normal(cli_main, command) -> None:
+    code, out, err = cli_main(*command, "--angle", "95 deg", "--vy", "-1 m/s")
+    assert (code, out) == (2, "")
+    assert err.startswith("error: --angle must be in (0, 90] deg, got 95 deg: ")
+    assert f"{MIRROR}85 deg {NEGATED}" in err

@@ -18,6 +18,7 @@ from impactlab._display import field_rows
 from impactlab._json import to_json
 from impactlab._validation import read_text_file
 from impactlab.contact.rate import RATE_CONSTANTS, RATE_LAWS, RateLaw, constants_text, get_rate_law
+from impactlab.dynamics.input_checks import past_normal
 from impactlab.dynamics.kernels.inputs import angle_allowed, incidence_allowed
 from impactlab.materials import Material
 from impactlab.schema import FIELDS
@@ -160,7 +161,8 @@ def angle_quantity(value: Any, name: str) -> float:
     degrees otherwise). A bare number is refused: 0.35 could be degrees or radians."""
     th = any_angle(value, name)
     if not angle_allowed(th):
-        raise UserError(f"{name} must be in (0, 90] deg, got {str(value).strip()}")
+        hint = past_normal(th, True) if 0.5 * math.pi < th < math.pi else ""
+        raise UserError(f"{name} must be in (0, 90] deg, got {str(value).strip()}{hint}")
     return th
 
 

@@ -158,7 +158,7 @@ def check_angle(angle: Any, body: Rod | Sphere) -> float:
     if angle_allowed(th):
         return th
     unit = has_unit(angle)  # the user gave a unit: answer in degrees
-    hint = _past_normal(th, unit) if 0.5 * math.pi < th < math.pi else ""
+    hint = past_normal(th, unit) if 0.5 * math.pi < th < math.pi else ""
     if unit:
         raise ValueError(f"angle must be in (0, 90] deg, got {_as_given(angle)}{hint}")
     if 0.5 * math.pi + PAST_NORMAL < th <= 90.0 + 1e-9:
@@ -170,12 +170,11 @@ def check_angle(angle: Any, body: Rod | Sphere) -> float:
     raise ValueError(f"angle must be in radians in (0, pi/2], got {th!r} rad{hint}")
 
 
-#: How far past pi/2 [rad] a bare angle reads as a rod past the normal (math.radians(91)), not as
-#: degrees; beyond it to 90 (may well be degrees) the degrees hint follows, alone from pi on.
+#: Up to this far past pi/2 [rad] a bare angle reads as a rod past the normal, not degrees.
 PAST_NORMAL = math.radians(10.0)
 
 
-def _past_normal(th: float, deg: bool) -> str:
+def past_normal(th: float, deg: bool) -> str:
     """What a rod's angle ``th`` [rad] in (pi/2, pi) means (``deg``: said in degrees)."""
     m = math.pi - th
     mirror = f"{math.degrees(m):.6g} deg" if deg else f"{m:.6g} rad ({math.degrees(m):.6g} deg)"
@@ -396,5 +395,6 @@ __all__ = [
     "PARTIAL_SLIP_RTOL_MAX", "PAST_NORMAL", "PLAUSIBLE_SPEED", "batch_velocity", "check_angle",
     "check_body", "check_constant_angle", "check_dent_grid", "check_flat", "check_mu",
     "check_partial_slip_rtol", "check_rtol", "check_speed", "check_spin", "check_velocity",
-    "contact_reach", "given_body", "gravity_value", "mu_problem", "velocity_from", "warn_fast",
+    "contact_reach", "given_body", "gravity_value", "mu_problem", "past_normal", "velocity_from",
+    "warn_fast",
 ]  # fmt: skip
