@@ -192,11 +192,14 @@ class FlaggingEvaluator(FakeEvaluator):
     def integer_outputs(self) -> tuple[str, ...]:
         return ("regime", "flags")
 
+    def flags_for(self, cases) -> np.ndarray:
+        """The ``flags`` of ``cases`` (a subclass sets other bits)."""
+        return np.where(cases["mu"] > 0.4, 1, 0) | np.where(cases["vy"] > -0.5, 2, 0)
+
     def __call__(self, cases, statics, outputs):
         res, status = super().__call__(cases, statics, [o for o in outputs if o != "flags"])
         if "flags" in outputs:
-            flags = np.where(cases["mu"] > 0.4, 1, 0) | np.where(cases["vy"] > -0.5, 2, 0)
-            res["flags"] = np.where(status == 0, flags, np.nan)
+            res["flags"] = np.where(status == 0, self.flags_for(cases), np.nan)
         return res, status
 
 

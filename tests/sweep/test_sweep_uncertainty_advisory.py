@@ -8,7 +8,7 @@ from __future__ import annotations
 import json
 
 import numpy as np
-from sweep_fakes import FIELDS, FakeEvaluator, run_cli
+from sweep_fakes import FlaggingEvaluator, run_cli
 
 from impactlab._json import shape_problems
 from impactlab.flags import ResultFlag
@@ -19,26 +19,16 @@ EXTRAPOLATED_ABOVE = 0.2  # mu beyond which the fake law is extrapolated (adviso
 GAIN_ABOVE = 0.27  # mu beyond which the fake result gains energy (not plain success)
 
 
-class AdvisoryEvaluator(FakeEvaluator):
+class AdvisoryEvaluator(FlaggingEvaluator):
     """FakeEvaluator's numbers with the engine's ``flags``: LAW_EXTRAPOLATED where
     mu > EXTRAPOLATED_ABOVE, ENERGY_GAIN too where mu > GAIN_ABOVE."""
 
     identity = "fake-advisory-evaluator/1"
 
-    def output_fields(self) -> tuple[str, ...]:
-        return (*FIELDS, "flags")
-
-    def integer_outputs(self) -> tuple[str, ...]:
-        return ("regime", "flags")
-
-    def __call__(self, cases, statics, outputs):
-        res, status = super().__call__(cases, statics, [o for o in outputs if o != "flags"])
-        if "flags" in outputs:
-            mu = cases["mu"]
-            flags = np.where(mu > EXTRAPOLATED_ABOVE, int(ResultFlag.LAW_EXTRAPOLATED), 0)
-            flags |= np.where(mu > GAIN_ABOVE, int(ResultFlag.ENERGY_GAIN), 0)
-            res["flags"] = np.where(status == 0, flags, np.nan)
-        return res, status
+    def flags_for(self, cases) -> np.ndarray:
+        mu = cases["mu"]
+        flags = np.where(mu > EXTRAPOLATED_ABOVE, int(ResultFlag.LAW_EXTRAPOLATED), 0)
+        return flags | np.where(mu > GAIN_ABOVE, int(ResultFlag.ENERGY_GAIN), 0)
 
 
 def _store(tmp_path):
