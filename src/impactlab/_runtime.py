@@ -20,16 +20,26 @@ def _interrupted_at_start(signum: int, frame: Any) -> None:
     raise SystemExit(130)
 
 
+def _worker() -> bool:
+    """True in a process that multiprocessing started (a sweep's worker), whose
+    ``sys.argv`` is its parent's."""
+    mp = sys.modules.get("multiprocessing")
+    return mp is not None and mp.current_process().name != "MainProcess"
+
+
 def quiet_start_interrupt() -> None:
     """In the ``impactlab`` command (``sys.argv[0]`` named ``impactlab``), Ctrl-C while it
     imports its libraries (a few seconds, before the command line handles Ctrl-C itself)
     prints ``interrupted`` and exits with status 130, as during a command, instead of a
-    traceback. Any other program that imports impactlab keeps Python's own handler."""
+    traceback; the command's worker processes (``sweep run --backend processes``) ignore
+    Ctrl-C, which the command itself answers. Any other program that imports impactlab keeps
+    Python's own handler."""
     if Path(sys.argv[0] if sys.argv else "").stem != "impactlab":
         return
     if signal.getsignal(signal.SIGINT) is signal.default_int_handler:
+        handler = signal.SIG_IGN if _worker() else _interrupted_at_start
         with contextlib.suppress(ValueError):  # not the main thread: Python's handler stays
-            signal.signal(signal.SIGINT, _interrupted_at_start)
+            signal.signal(signal.SIGINT, handler)
 
 
 def release_start_interrupt() -> None:

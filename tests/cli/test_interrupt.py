@@ -168,3 +168,35 @@ def test_the_command_line_takes_ctrl_c_over_from_the_start(monkeypatch):
     monkeypatch.setattr(signal, "getsignal", lambda s: installed[0])
     _runtime.release_start_interrupt()
     assert installed[-1] is signal.default_int_handler
+
+
+#: A worker process of the ``impactlab`` command (multiprocessing names it; its argv is the
+#: parent's): its SIGINT handler after importing impactlab.
+_WORKER = textwrap.dedent("""
+    import multiprocessing, signal, sys
+    signal.signal(signal.SIGINT, signal.default_int_handler)
+    multiprocessing.current_process().name = "SpawnProcess-1"
+    sys.argv = ["/usr/local/bin/impactlab", "sweep", "run"]
+    import impactlab
+    print(signal.getsignal(signal.SIGINT) is signal.SIG_IGN)
+""")
+
+
+def test_the_commands_workers_leave_ctrl_c_to_the_command():
+    r = subprocess.run(
+        [sys.executable, "-c", _WORKER], capture_output=True, text=True, env=_env(), timeout=600
+    )
+    assert (r.returncode, r.stdout) == (0, "True\n"), r.stderr
+
+
+def test_a_sweeps_pool_workers_ignore_ctrl_c():
+    code = (
+        "import os, signal\n"
+        "from impactlab.sweep.backends import _pool_init\n"
+        "_pool_init(1, os.getppid())\n"
+        "print(signal.getsignal(signal.SIGINT) is signal.SIG_IGN)\n"
+    )
+    r = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, env=_env(), timeout=600
+    )
+    assert (r.returncode, r.stdout) == (0, "True\n"), r.stderr

@@ -93,6 +93,9 @@ def die_with_parent(parent: int) -> None:
 
 def _pool_init(threads: int, parent: int) -> None:
     die_with_parent(parent)
+    # Ctrl-C reaches the whole process group: the parent answers it (SweepInterrupted) and
+    # shuts the pool down; a worker interrupted mid-chunk would only add tracebacks
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
     # numba.set_num_threads only: changing NUMBA_NUM_THREADS after numba has been imported
     # (impactlab imports it) makes numba refuse to launch its threads
     set_numba_threads(threads)
