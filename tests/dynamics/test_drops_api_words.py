@@ -115,6 +115,10 @@ def test_simulate_drops_refuses_a_rate_law_with_its_reason() -> None:
     assert "simulate_drop(body, flat, rate='cowper-symonds', ...) for each case" in text
     b = il.simulate_drops(FlexibleRod.paper(), angle=[0.3], vy=-1.0, rate=None, mu=0.1)
     assert b.status.tolist() == [0] and np.isfinite(b.e).all()
+    none = il.simulate_drops(FlexibleRod.paper(), angle=[0.3], vy=-1.0, rate="none", mu=0.1)
+    assert np.array_equal(none.e, b.e)  # "none", as simulate_drop takes it: no law
+    with pytest.raises(ValueError, match="rate must be one of"):
+        il.simulate_drops(FlexibleRod.paper(), angle=[0.3], vy=-1.0, rate=False)
 
 
 @pytest.mark.parametrize("command", [("simulate", "rod"), ("drop", "--rigid")])

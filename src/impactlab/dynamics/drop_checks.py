@@ -16,6 +16,7 @@ from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.contact import ContactModel
 from impactlab.contact.brittle import brittle_flags
 from impactlab.contact.ranges import law_extrapolated
+from impactlab.contact.rate import get_rate_law
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.batch import sequence_flags
 from impactlab.dynamics.input_checks import (
@@ -71,10 +72,11 @@ def check_friction(friction: str, mu: float) -> tuple[FrictionModel, float]:
 
 
 def refuse_rate(rate: Any, caller: str) -> None:
-    """ValueError for a ``rate`` law given to the batch ``caller`` (None passes): the flat's
+    """ValueError for a ``rate`` law given to the batch ``caller`` (None and ``"none"``, no
+    law, pass; a ``rate`` that is no law gets ``get_rate_law``'s error): the flat's
     self-consistent rate factor is iterated drop by drop, each case to its own, where a batch
     runs every case in one compiled call (studies take no rate law either)."""
-    if rate is not None:
+    if get_rate_law(rate) is not None:
         raise ValueError(
             f"rate={rate!r}: {caller} takes no rate-dependent flat, since its self-consistent "
             "rate factor is iterated drop by drop (each case its own) and the batch runs every "
