@@ -127,3 +127,18 @@ def test_the_command_line_says_the_same_of_an_angle_past_the_normal(cli_main, co
     assert (code, out) == (2, "")
     assert err.startswith("error: --angle must be in (0, 90] deg, got 95 deg: ")
     assert f"{MIRROR}85 deg {NEGATED}" in err
+
+
+def test_batches_and_sweeps_say_the_same_of_an_angle_past_the_normal() -> None:
+    b = il.simulate_batch(il.Rod.paper(), angle=[1.7, 0.3], vy=-1.0)
+    d = il.simulate_drops(il.Rod.paper(), angle=[1.7, 0.3], vy=-1.0)
+    for messages in (b.messages, d.messages):
+        assert messages[0].startswith("angle outside (0, pi/2] radians: angle = 1.7 rad")
+        assert f"{MIRROR}1.44159 rad (82.5972 deg) {NEGATED}" in messages[0]
+    from impactlab.sweep import Study
+
+    with pytest.raises(ValueError, match="past the flat's normal") as info:
+        Study(name="s", grid={"angle": ["20 deg", "95 deg"]}, fixed={"vy": -1.0, "mu": 0.2})
+    assert str(info.value).startswith(
+        "grid dimension 'angle': angle must lie in (0, 90] deg, got 95 deg (1 of 2 values): "
+    )

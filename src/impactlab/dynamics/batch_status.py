@@ -19,7 +19,7 @@ import numpy as np
 
 from impactlab.bodies import Rod, Sphere
 from impactlab.dynamics.export import batch_html
-from impactlab.dynamics.input_checks import contact_reach, mu_problem
+from impactlab.dynamics.input_checks import contact_reach, mu_problem, past_normal
 from impactlab.dynamics.kernels.inputs import (
     IN_MU,
     IN_OK,
@@ -169,8 +169,9 @@ class BatchStatus:
         th, vy, w = (
             float(inputs[k][i]) if k in inputs else math.nan for k in ("angle", "vy", "spin")
         )
-        if int(self.status[i]) == ST_BAD_ANGLE:
-            return f"angle = {th!r} rad = {math.degrees(th):.4g} deg"
+        if int(self.status[i]) == ST_BAD_ANGLE:  # past the normal: what it means, as in simulate
+            beyond = past_normal(th, False) if 0.5 * math.pi < th < math.pi else ""
+            return f"angle = {th!r} rad = {math.degrees(th):.4g} deg{beyond}"
         try:
             vn = float(self["vn_in"][i])  # type: ignore[index]
         except KeyError:  # a batch without the contact point's velocity

@@ -111,17 +111,17 @@ def rule_text(name: str, rule: Interval) -> str:
 
 
 def _refuse(
-    where: str, name: str, values: Sequence[float], bad: Sequence[float], rule: str
+    where: str, name: str, values: Sequence[float], bad: Sequence[float], rule: str, note: str = ""
 ) -> None:
-    """ValueError ``"<where>: <rule>, got <bad values> (k of n values)"`` when ``bad`` is not
-    empty (values in display units, at most four named)."""
+    """ValueError ``"<where>: <rule>, got <bad values> (k of n values)<note>"`` when ``bad`` is
+    not empty (values in display units, at most four named)."""
     if not bad:
         return
     texts, unit = shown_values(name, list(bad[:4]))
     got = ", ".join(texts) + (", ..." if len(bad) > 4 else "")
     got += f" {unit}" if unit else ""
     count = f" ({len(bad)} of {len(values)} values)" if len(values) > 1 else ""
-    raise ValueError(f"{where}: {rule}, got {got}{count}")
+    raise ValueError(f"{where}: {rule}, got {got}{count}{note}")
 
 
 def check_allowed(name: str, values: Sequence[float], where: str) -> None:
@@ -138,7 +138,13 @@ def check_rod_angles(angles: Sequence[float], where: str, rule_suffix: str = "")
     """ValueError naming ``where``, the offending values and the interval unless every angle
     [rad] of a rod lies in :data:`ANGLE`, (0, 90] deg (``rule_suffix`` ends the rule's text)."""
     rule = rule_text("angle", ANGLE) + rule_suffix
-    _refuse(where, "angle", angles, [a for a in angles if not inside(a, ANGLE)], rule)
+    bad = [a for a in angles if not inside(a, ANGLE)]
+    past = any(0.5 * math.pi < a < math.pi for a in bad)  # as simulate says it of one angle
+    note = (
+        ": an angle past 90 deg leans the rod past the flat's normal, the mirror of a drop at "
+        "180 deg - angle with vx (or incidence) and spin negated"
+    )
+    _refuse(where, "angle", angles, bad, rule, note if past else "")
 
 
 def check_kinematics(
