@@ -126,6 +126,23 @@ def test_a_result_feeds_back_as_a_measurement_file(cli_main: CliMain, tmp_path: 
         assert again[k] == first[k], k
 
 
+def test_a_result_feeds_back_in_its_own_quantity_tables(cli_main: CliMain, tmp_path: Path) -> None:
+    """The JSON's ``{value, unit, sigma}`` of each input, written as TOML inline tables."""
+    first = _json(cli_main, *ARGS, "--sigma-ls", "50 um", "--measure", "travel")
+    lines = [
+        f"{k} = {{ {', '.join(f'{kk} = {json.dumps(v)}' for kk, v in q.items())} }}"
+        for k, q in first["inputs"].items()
+    ]
+    path = tmp_path / "tables.toml"
+    path.write_text("\n".join([*lines, 'measure = "travel"', "n_samples = 200"]) + "\n")
+    again = _json(cli_main, "invert", "--file", str(path))
+    for k in ("duration", "mean_force", "T_mc", "inputs", "sensitivity_T", "measure"):
+        assert again[k] == first[k], k
+    path.write_text('angle = { value = 0.35, units = "rad" }\n')
+    code, _, err = cli_main("invert", "--file", str(path))
+    assert code == 2 and "a quantity's table holds value, unit and sigma" in err
+
+
 def test_a_file_may_give_an_input_once(cli_main: CliMain, tmp_path: Path) -> None:
     path = tmp_path / "m.toml"
     path.write_text('case = "paper-20"\nls = "1400 um"\nsliding_length = "1300 um"\n')

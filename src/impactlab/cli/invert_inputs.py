@@ -207,6 +207,32 @@ def _file_sigmas(table: dict[str, Any], values: dict[str, Any]) -> dict[str, flo
     return out
 
 
+def _quantity_tables(values: dict[str, Any], tables: dict[str, Any]) -> dict[str, Any]:
+    """``values`` with each ``{value, unit, sigma}`` table (the JSON output's form of an input,
+    ``inputs``) written as the quantity text ``"0.349 rad"``; its ``sigma``, in the same unit,
+    moves into ``tables["sigma"]`` (given there too: refused)."""
+    out = dict(values)
+    for key, val in values.items():
+        if not isinstance(val, dict):
+            continue
+        if "value" not in val or set(val) - {"value", "unit", "sigma"}:
+            raise UserError(
+                f"{key} {IN_FILE} is a table with {sorted(val)}: a quantity's table holds "
+                "value, unit and sigma (as the JSON output writes it), e.g. "
+                f'{key} = {{ value = 0.35, unit = "rad" }}'
+            )
+        unit = str(val.get("unit", "1")).strip()
+        bare = unit in ("", "1", "-")
+        out[key] = val["value"] if bare else f"{val['value']!r} {unit}"
+        if "sigma" in val:
+            sigmas = tables.setdefault("sigma", {})
+            if key in sigmas:
+                raise UserError(f"{key}'s sigma {IN_FILE} is given twice, in its table and in "
+                                "[sigma]; give it once")  # fmt: skip
+            sigmas[key] = val["sigma"] if bare else f"{val['sigma']!r} {unit}"
+    return out
+
+
 def from_file(
     data: dict[str, Any],
 ) -> tuple[dict[str, float], dict[str, float], dict[str, float], dict[str, Any], dict[str, str]]:
@@ -224,6 +250,7 @@ def from_file(
     for name, table in tables.items():
         if not isinstance(table, dict):
             raise UserError(f"[{name}] must be a table")
+    values = _quantity_tables(values, tables)
     file_values = _measured(values, "the measurement file", more=("sigma", "rod", *EXTRA))
     sigmas = _file_sigmas(tables.get("sigma", {}), values)
     rod = parse_rod_table(tables.get("rod", {}), "rod.")
