@@ -19,7 +19,7 @@ from impactlab.paper.report import Bullets, Para
 RIGID, FLEX, RATE = (c.name for c in CONFIGURATIONS)
 COLUMNS = ("e", "delta_p [um]", "L_s [um]", "T [ms]", "contacts", "F_max [N]", "rate factor")
 #: The comparison of ``impactlab reproduce`` (physics_comparison.csv), 20 / 45 / 70 deg.
-CURRENT = {
+CURRENT: dict[str, list[tuple[float | None, ...]]] = {
     MEASURED: [
         (0.5, 22.0, 1400.0, 4.105951, None, None, None),
         (0.49, 26.0, 1650.0, 1.382249, None, None, None),
@@ -69,14 +69,18 @@ def _text(table: pd.DataFrame) -> tuple[str, list[str], list[str], str]:
     """The section's (intro of the findings, explained bullets, unexplained bullets, closing)."""
     blocks = physics_section(table, {}, 11)
     i = next(k for k, b in enumerate(blocks) if isinstance(b, Para) and b.text.startswith("What"))
-    explained = list(blocks[i + 1].items)  # type: ignore[union-attr]
-    rest = blocks[i + 2 :]
+    intro = blocks[i]
+    assert isinstance(intro, Para)
+    explained = list(getattr(blocks[i + 1], "items", ()))
+    assert bool(explained) != intro.text.endswith(": nothing at any angle.")
+    rest = blocks[i + 1 + bool(explained) :]
     missed: list[str] = []
     if isinstance(rest[0], Para) and rest[0].text == "What they do not explain:":
         missed = list(rest[1].items)  # type: ignore[union-attr]
     closing = [b for b in blocks if isinstance(b, Para)][-1].text
-    assert sum(isinstance(b, Bullets) for b in blocks) == 2 + bool(missed)  # configurations too
-    return blocks[i].text, explained, missed, closing  # type: ignore[union-attr]
+    bullets = 1 + bool(explained) + bool(missed)  # the configurations' list too
+    assert sum(isinstance(b, Bullets) for b in blocks) == bullets
+    return intro.text, explained, missed, closing
 
 
 def _bullet(items: list[str], start: str) -> str:
@@ -91,8 +95,9 @@ def test_the_current_numbers_read_truthfully() -> None:
     short", "closely at 20 and 70 deg") stands in for a number."""
     intro, explained, missed, closing = _text(_table())
     assert closing == (
-        "Rod flexibility and rate sensitivity are real and large effects (the rigid rod's dent "
-        "is 2.71 / 2.75 / 2.04 times the flexible rod's on the rate-dependent flat): they "
+        "Rod flexibility and rate sensitivity are real and large effects that make the dent "
+        "shallower at every angle (the rigid rod's dent is 2.71 / 2.75 / 2.04 times the flexible "
+        "rod's on the rate-dependent flat): they "
         "explain the dent depth at 20 and 70 deg (not at 45 deg: 1.55 times the measured one), "
         "but they do not explain e, the scar or the duration at any angle."
     )
@@ -112,6 +117,9 @@ def test_the_current_numbers_read_truthfully() -> None:
     pile_up = _bullet(missed, "The 70 deg case: ")
     assert "scar is 6.08 times the measured 200 um (the rigid rod's 0.956 times)" in pile_up
     assert "e +- 0.03, delta_p and L_s +- 10 %" in intro
+    assert pile_up.endswith("; the paper points at a pile-up that no contact law models.")
+    rings = _bullet(explained, "The flexible rod rings and touches the flat again: 4 / 4 / 2 ")
+    assert "instead of one contact of 0.122 / 0.142 / 0.184 ms; the largest force falls" in rings
     words = " ".join([intro, *explained, *missed, closing])
     for fixed in ("tenfold", "five times short", "closely at", "close the dent-depth gap,"):
         assert fixed not in words
@@ -160,7 +168,10 @@ def test_the_ratios_follow_the_numbers() -> None:
     changes = {(RIGID, a, "delta_p [um]"): 1.2 * v for a, v in ((20, 22.89), (45, 40.39))}
     changes |= {(RIGID, 20, "L_s [um]"): 130.0, (FLEX, 45, "e"): 0.3}
     _, _, missed, closing = _text(_table(changes))
-    assert closing.startswith("Rod flexibility and rate sensitivity are real effects (")
+    assert closing.startswith(
+        "Rod flexibility and rate sensitivity make the dent shallower at 20 and 45 deg and much "
+        "shallower at 70 deg (the rigid rod's dent is "
+    )
     assert re.search(r"the rigid rod's dent is 1\.2 / 1\.2 / 2\.04 times", closing)
     assert "(flexible; 2.01 / 9.96 / 6.36 times the rigid rod's scar)" in _bullet(missed, "Scar")
     assert "raises e at 20 deg and lowers it at 45 and 70 deg." in _bullet(missed, "e: ")
@@ -172,3 +183,146 @@ def test_the_closing_needs_every_number_it_states() -> None:
         closing = _text(_table({(RATE, 45, "delta_p [um]"): dent}))[3]
         ratio = min(dent, 57.3413) / 26.0
         assert f"(not at 45 deg: {ratio:.3g} times the measured one)" in closing
+
+
+RIGID_DENTS = {20: 62.0513, 45: 111.0656, 70: 225.5506}
+
+
+def _closing_with_dents(dents: dict[int, float]) -> str:
+    """The conclusion with the flexible rod's dents on the rate-dependent flat set."""
+    return _text(_table({(RATE, a, "delta_p [um]"): d for a, d in dents.items()}))[3]
+
+
+def test_no_change_of_the_dent_is_no_effect() -> None:
+    """The dent of the flexible rod on the rate-dependent flat equal to the rigid rod's: no
+    effect on the dent (it said "real effects ... 1 / 1 / 1 times")."""
+    closing = _closing_with_dents(RIGID_DENTS)
+    assert closing.startswith(
+        "Rod flexibility and rate sensitivity leave the dent depth within 10 % of the rigid rod's "
+        "at every angle (the rigid rod's dent is 1 / 1 / 1 times the flexible rod's on the "
+        "rate-dependent flat): they do not explain the dent depth, e,"
+    )
+    assert "real" not in closing and "large" not in closing
+    within = _closing_with_dents({a: d / 1.1 for a, d in RIGID_DENTS.items()})  # the tolerance
+    assert "leave the dent depth within 10 % of the rigid rod's at every angle (" in within
+
+
+def test_a_large_effect_the_other_way_is_large_and_deeper() -> None:
+    """Dents three times the rigid rod's: a large effect that deepens the dent (it said only
+    "real effects"), judged on the size of the ratio's logarithm."""
+    closing = _closing_with_dents({20: 200.0, 45: 300.0, 70: 600.0})
+    assert closing.startswith(
+        "Rod flexibility and rate sensitivity are real and large effects that make the dent "
+        "deeper at every angle (the rigid rod's dent is 0.31 / 0.37 / 0.376 times the flexible "
+        "rod's"
+    )
+    edge = _closing_with_dents({a: d * LARGE_EFFECT for a, d in RIGID_DENTS.items()})
+    assert "are real and large effects that make the dent deeper at every angle (" in edge
+    small = _closing_with_dents({a: d * 1.2 for a, d in RIGID_DENTS.items()})
+    assert "are real effects that make the dent deeper at every angle (" in small
+
+
+def test_a_mixed_effect_is_said_angle_by_angle() -> None:
+    closing = _closing_with_dents({20: 62.0513 / 1.2, 45: 111.0656, 70: 2.0 * 225.5506})
+    assert closing.startswith(
+        "Rod flexibility and rate sensitivity make the dent shallower at 20 deg and much deeper "
+        "at 70 deg, and leave it within 10 % of the rigid rod's at 45 deg (the rigid rod's dent "
+        "is 1.2 / 1 / 0.5 times"
+    )
+    both_ways = _closing_with_dents({20: 10.0, 45: 40.385, 70: 600.0})
+    assert both_ways.startswith(
+        "Rod flexibility and rate sensitivity make the dent much shallower at 20 and 45 deg and "
+        "much deeper at 70 deg (the rigid rod's"
+    )
+
+
+def test_a_pile_up_case_explained_moves_and_needs_no_pile_up() -> None:
+    """e and the scar of the 70 deg drop within their tolerances: the bullet is explained and
+    no longer ends "the paper points at a pile-up that no contact law models"."""
+    _, explained, missed, _ = _text(_table({(FLEX, 70, "e"): 0.06, (FLEX, 70, "L_s [um]"): 205.0}))
+    pile_up = _bullet(explained, "The 70 deg case: ")
+    assert not [b for b in missed if b.startswith("The 70 deg case")]
+    assert pile_up.endswith(
+        "and its e 0.06 against the measured 0.05; flexibility and rate dependence explain both "
+        "(e 0.06, within 0.03; the scar 1.02 times the measured one, within 10 %) with no pile-up."
+    )
+    assert "points at" not in pile_up
+
+
+@pytest.mark.parametrize(
+    ("changes", "said"),
+    [
+        (
+            {(RATE, 70, "e"): 0.07},
+            "explain e there (0.07, within 0.03) but not the scar, for which the paper points at "
+            "a pile-up that no contact law models.",
+        ),
+        (
+            {(FLEX, 70, "L_s [um]"): 205.0},
+            "explain the scar there (1.02 times the measured one, within 10 %) but not e, for "
+            "which the paper points at a pile-up that no contact law models.",
+        ),
+    ],
+)
+def test_a_pile_up_case_half_explained_says_which_half(
+    changes: dict[tuple[str, int, str], float], said: str
+) -> None:
+    _, explained, missed, _ = _text(_table(changes))
+    assert _bullet(missed, "The 70 deg case: ").endswith(f"flexibility and rate dependence {said}")
+    assert not [b for b in explained if b.startswith("The 70 deg case")]
+
+
+def test_a_flexible_rod_that_touches_once_does_not_ring() -> None:
+    """One contact at every angle: the bullet says so and moves to what is not explained (it
+    said "The flexible rod rings: 1 / 1 / 1 contacts ... instead of one contact", explained)."""
+    _, explained, missed, _ = _text(_table({(FLEX, a, "contacts"): 1 for a in (20, 45, 70)}))
+    once = _bullet(missed, "The flexible rod ")
+    assert once.startswith(
+        "The flexible rod does not touch the flat again: 1 / 1 / 1 contacts over 0.95 / 0.976 / "
+        "0.899 ms against the rigid rod's one contact of 0.122 / 0.142 / 0.184 ms; the largest "
+        "force falls"
+    )
+    assert not [b for b in explained if b.startswith("The flexible rod")]
+    assert "rings" not in " ".join([*explained, *missed])
+
+
+def test_the_contacts_bullet_follows_the_counts_and_forces() -> None:
+    changes: dict[tuple[str, int, str], float] = {
+        (FLEX, 70, "contacts"): 1,
+        (RIGID, 70, "contacts"): 2,
+    }
+    changes |= {(FLEX, a, "F_max [N]"): 20000.0 for a in (20, 45, 70)}
+    _, explained, _, _ = _text(_table(changes))
+    rings = _bullet(explained, "The flexible rod ")
+    assert rings.startswith(
+        "The flexible rod rings and touches the flat again at 20 and 45 deg (once at 70 deg): "
+        "4 / 4 / 1 contacts over 0.95 / 0.976 / 0.899 ms instead of the rigid rod's 1 / 1 / 2 "
+        "contacts over 0.122 / 0.142 / 0.184 ms; the largest force rises from 3809 / 7486 / "
+        "16593 N to 20000 / 20000 / 20000 N."
+    )
+
+
+def test_nothing_explained_is_said_so() -> None:
+    """One contact and every dent off: nothing is listed as explained, and the section says so
+    rather than showing an empty list."""
+    changes: dict[tuple[str, int, str], float] = {(FLEX, a, "contacts"): 1 for a in (20, 45, 70)}
+    changes |= {(c, a, "delta_p [um]"): 3.0 * 105.0 for c in (FLEX, RATE) for a in (20, 45, 70)}
+    intro, explained, missed, _ = _text(_table(changes))
+    assert not explained and intro.endswith(
+        "where it touches the flat again): nothing at any angle."
+    )
+    assert len(missed) == 6
+
+
+def test_a_missing_number_is_not_the_nearest() -> None:
+    """A drop of the rate-dependent flat without a dent (NaN): the flexible rod's dent on the
+    plain flat is the nearest one there, and the conclusion has nothing to compare there."""
+    table = _table({(RATE, 70, "delta_p [um]"): float("nan"), (FLEX, 70, "delta_p [um]"): 106.0})
+    _, explained, _, closing = _text(table)
+    assert "explain the dent depth at 20 and 70 deg (within 10 %), not at 45 deg (1.55 " in _bullet(
+        explained, "Dent depths:"
+    )
+    assert closing.startswith(
+        "Rod flexibility and rate sensitivity make the dent much shallower at 20 and 45 deg, and "
+        "have no dent to compare at 70 deg (the rigid rod's dent is 2.71 / 2.75 / nan times"
+    )

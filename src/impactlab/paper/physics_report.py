@@ -19,22 +19,16 @@ from impactlab.paper.physics import (
     MEASURED,
     ROWS,
 )
+from impactlab.paper.physics_words import angles as _angles
+from impactlab.paper.physics_words import at as _at
+from impactlab.paper.physics_words import dent_effect
+from impactlab.paper.physics_words import listed as _listed
+from impactlab.paper.physics_words import ratio as _ratio
+from impactlab.paper.physics_words import series as _series
+from impactlab.paper.physics_words import values as _values
 from impactlab.paper.report import Block, Bullets, Figure, Heading, Para, Table
 
 __all__ = ["LARGE_EFFECT", "PILE_UP_ANGLE", "TOLERANCES", "physics_section"]
-
-
-def _values(table: pd.DataFrame, config: str, column: str) -> str:
-    """``column`` of ``config`` at the three angles, "a / b / c"."""
-    rows = table[table["configuration"] == config].sort_values("angle [deg]")
-    return " / ".join(f"{v:.3g}" if abs(v) < 1000 else f"{v:.0f}" for v in rows[column])
-
-
-def _ratio(table: pd.DataFrame, config: str, column: str) -> str:
-    """``column`` of ``config`` over the measured one at the three angles, "a / b / c"."""
-    a = table[table["configuration"] == config].sort_values("angle [deg]")[column].to_numpy()
-    m = table[table["configuration"] == MEASURED].sort_values("angle [deg]")[column].to_numpy()
-    return " / ".join(f"{x:.2f}" for x in a / m)
 
 
 def _shown(table: pd.DataFrame) -> pd.DataFrame:
@@ -62,35 +56,13 @@ NOUNS = {
     "L_s [um]": "the scar",
     "T [ms]": "the duration",
 }
-#: The smallest ratio of the rigid rod's dent to the flexible rod's on the rate-dependent flat
-#: (at every angle) for which the section calls flexibility and rate dependence large effects:
-#: five times the dent's assumed relative uncertainty beyond 1.
+#: The smallest ratio of the rigid rod's dent to the flexible rod's on the rate-dependent flat,
+#: or of its inverse, for which the section calls the effect on the dent at an angle large
+#: (much shallower or much deeper): five times the dent's assumed relative uncertainty beyond
+#: 1. Within that uncertainty (``TOLERANCES``) of 1 it calls it none.
 LARGE_EFFECT = 1.0 + 5.0 * PAPER_SIGMAS["delta_p"]
 #: The drop the paper explains by a pile-up that no contact law models.
 PILE_UP_ANGLE = 70
-
-
-def _series(table: pd.DataFrame, config: str, column: str) -> np.ndarray:
-    """``column`` of ``config`` at the table's angles, in increasing angle."""
-    rows = table[table["configuration"] == config].sort_values("angle [deg]")
-    return rows[column].to_numpy(dtype=np.float64)
-
-
-def _angles(table: pd.DataFrame) -> list[int]:
-    """The table's angles [deg], increasing."""
-    return sorted(int(a) for a in table["angle [deg]"].unique())
-
-
-def _listed(items: list[str], last: str = "and") -> str:
-    """ "a", "a and b", "a, b and c" (``last``: the last joint)."""
-    return items[0] if len(items) == 1 else f"{', '.join(items[:-1])} {last} {items[-1]}"
-
-
-def _at(angles: list[int], every: int) -> str:
-    """ "at every angle" when ``angles`` holds all ``every`` of them, else "at 20 and 70 deg"."""
-    if len(angles) == every:
-        return "at every angle"
-    return f"at {_listed([str(a) for a in angles])} deg"
 
 
 def _closeness(table: pd.DataFrame, column: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -100,7 +72,7 @@ def _closeness(table: pd.DataFrame, column: str) -> tuple[np.ndarray, np.ndarray
     measured = _series(table, MEASURED, column)
     values = np.stack([_series(table, c.name, column) for c in CONFIGURATIONS if c.flexible])
     off = np.abs(values / measured - 1.0) if relative else np.abs(values - measured)
-    pick = (np.argmin(off, axis=0), np.arange(values.shape[1]))
+    pick = (np.argmin(np.where(np.isnan(off), np.inf, off), axis=0), np.arange(values.shape[1]))
     return measured, values[pick], off[pick] <= tol * (1.0 + 1e-9)
 
 
@@ -160,17 +132,9 @@ def _findings(table: pd.DataFrame) -> list[Block]:
     def v(config: str, column: str) -> str:
         return _values(table, config, column)
 
-    again = (_series(table, flex, "contacts") > 1).all()
-    lower = (_series(table, flex, "F_max [N]") < _series(table, rigid, "F_max [N]")).all()
     scar_growth = _series(table, flex, "L_s [um]") / _series(table, rigid, "L_s [um]")
     bullets = [
-        (
-            f"The flexible rod rings{' and touches the flat again' if again else ''}: "
-            f"{v(flex, 'contacts')} contacts over {v(flex, 'T [ms]')} ms instead of one contact "
-            f"of {v(rigid, 'T [ms]')} ms; the largest force {'falls' if lower else 'goes'} from "
-            f"{v(rigid, 'F_max [N]')} N to {v(flex, 'F_max [N]')} N.",
-            True,
-        ),
+        _rings(table),
         _with(
             f"Dent depths: on the rate-dependent flat (self-consistent factor "
             f"{v(rate, 'rate factor')}) the flexible rod leaves {v(rate, 'delta_p [um]')} um "
@@ -199,15 +163,16 @@ def _findings(table: pd.DataFrame) -> list[Block]:
     ]
     explained = tuple(text for text, ok in bullets if ok)
     not_explained = tuple(text for text, ok in bullets if not ok)
-    blocks: list[Block] = [
-        Para(
-            "What flexibility and rate dependence explain (at an angle where the flexible rod, "
-            "on the plain or the rate-dependent flat, comes within the uncertainty the next "
-            f"section's calibration assumes: e +- {_tol('e')}, delta_p and L_s +- "
-            f"{_tol('delta_p [um]')}; T, which it does not use, +- {_tol('T [ms]')}):"
-        ),
-        Bullets(explained),
-    ]
+    intro = (
+        "What flexibility and rate dependence explain (at an angle where the flexible rod, "
+        "on the plain or the rate-dependent flat, comes within the uncertainty the next "
+        f"section's calibration assumes: e +- {_tol('e')}, delta_p and L_s +- "
+        f"{_tol('delta_p [um]')}; T, which it does not use, +- {_tol('T [ms]')}; the contacts: "
+        "where it touches the flat again):"
+    )
+    blocks: list[Block] = [Para(f"{intro} nothing at any angle.")]
+    if explained:
+        blocks = [Para(intro), Bullets(explained)]
     if not_explained:
         blocks += [Para("What they do not explain:"), Bullets(not_explained)]
     return [*blocks, *_fe_row(table)]
@@ -226,7 +191,8 @@ def _with(text: str, verdict: tuple[str, bool]) -> tuple[str, bool]:
 
 def _pile_up(table: pd.DataFrame) -> list[tuple[str, bool]]:
     """The bullet of the drop the paper explains by a pile-up (none without that drop): the
-    flexible rod's scar and e there, against the measured ones."""
+    flexible rod's scar and e there, against the measured ones, and whether flexibility and
+    rate dependence explain both (then no pile-up is needed), one or neither there."""
     at = table[table["angle [deg]"] == PILE_UP_ANGLE]
     if at.empty:
         return []
@@ -237,24 +203,77 @@ def _pile_up(table: pd.DataFrame) -> list[tuple[str, bool]]:
 
     scar, e = x(MEASURED, "L_s [um]"), x(MEASURED, "e")
     i = _angles(table).index(PILE_UP_ANGLE)
-    explained = all(_closeness(table, c)[2][i] for c in ("e", "L_s [um]"))
+    near: dict[str, str] = {}  # the explained columns: the nearest value there, in words
+    for column in ("e", "L_s [um]"):
+        measured, nearest, close = _closeness(table, column)
+        if close[i]:
+            m, n = measured[i], nearest[i]
+            how = f"{n / m:.3g} times the measured one" if TOLERANCES[column][1] else f"{n:.3g}"
+            near[column] = f"{how}, within {_tol(column)}"
+    pile_up = "a pile-up that no contact law models"
+    if len(near) == 2:
+        both = "; ".join(f"{NOUNS[c]} {how}" for c, how in near.items())
+        verdict = f"flexibility and rate dependence explain both ({both}) with no pile-up"
+    elif near:
+        [(column, how)] = near.items()
+        other = "L_s [um]" if column == "e" else "e"
+        verdict = (
+            f"flexibility and rate dependence explain {NOUNS[column]} there ({how}) but not "
+            f"{NOUNS[other]}, for which the paper points at {pile_up}"
+        )
+    else:
+        verdict = f"the paper points at {pile_up}"
     return [
         (
             f"The {PILE_UP_ANGLE} deg case: the flexible rod's scar is "
             f"{x(flex, 'L_s [um]') / scar:.3g} times the measured {scar:.3g} um (the rigid "
             f"rod's {x(rigid, 'L_s [um]') / scar:.3g} times) and its e {x(flex, 'e'):.3g} "
-            f"against the measured {e:.3g}; the paper points at a pile-up that no contact law "
-            "models.",
-            explained,
+            f"against the measured {e:.3g}; {verdict}.",
+            len(near) == 2,
         )
     ]
+
+
+def _rings(table: pd.DataFrame) -> tuple[str, bool]:
+    """The bullet of the flexible rod's contacts against the rigid rod's, and whether it is
+    explained: the flexible rod touches the flat again (rings) at one angle at least."""
+    rigid, flex = (c.name for c in CONFIGURATIONS[:2])
+
+    def v(config: str, column: str) -> str:
+        return _values(table, config, column)
+
+    every, n = _angles(table), _series(table, flex, "contacts")
+    again = [a for a, k in zip(every, n > 1, strict=True) if k]
+    once = [a for a, k in zip(every, n == 1, strict=True) if k]
+    theirs = f"{v(rigid, 'contacts')} contacts over {v(rigid, 'T [ms]')} ms"
+    if (_series(table, rigid, "contacts") == 1).all():
+        theirs = f"one contact of {v(rigid, 'T [ms]')} ms"
+    ours = f"{v(flex, 'contacts')} contacts over {v(flex, 'T [ms]')} ms"
+    if not again:
+        head = f"The flexible rod does not touch the flat again: {ours} against the rigid rod's"
+    elif once:
+        head = (
+            f"The flexible rod rings and touches the flat again {_at(again, len(every))} (once "
+            f"{_at(once, len(every))}): {ours} instead of the rigid rod's"
+        )
+    else:  # the rigid rod's single contact: "instead of one contact of ..."
+        head = f"The flexible rod rings and touches the flat again: {ours} instead of"
+        head += "" if theirs.startswith("one") else " the rigid rod's"
+    f_flex, f_rigid = (_series(table, c, "F_max [N]") for c in (flex, rigid))
+    way = "falls" if (f_flex < f_rigid).all() else "rises" if (f_flex > f_rigid).all() else "goes"
+    return (
+        f"{head} {theirs}; the largest force {way} from {v(rigid, 'F_max [N]')} N to "
+        f"{v(flex, 'F_max [N]')} N.",
+        bool(again),
+    )
 
 
 def _closing(table: pd.DataFrame) -> Para:
     """The section's conclusion: how large the effects are, what they explain and where."""
     rigid, rate = CONFIGURATIONS[0].name, CONFIGURATIONS[2].name
     factor = _series(table, rigid, "delta_p [um]") / _series(table, rate, "delta_p [um]")
-    size = "real and large effects" if factor.min() >= LARGE_EFFECT else "real effects"
+    none = TOLERANCES["delta_p [um]"][0]
+    effect = dent_effect(factor, _angles(table), none, LARGE_EFFECT)
     explained: list[str] = []
     missed: list[str] = []
     for column in TOLERANCES:
@@ -269,7 +288,7 @@ def _closing(table: pd.DataFrame) -> Para:
     if missed:
         said.append(f"they do not explain {_listed(missed, 'or')} at any angle")
     return Para(
-        f"Rod flexibility and rate sensitivity are {size} (the rigid rod's dent is "
+        f"Rod flexibility and rate sensitivity {effect} (the rigid rod's dent is "
         f"{' / '.join(f'{r:.3g}' for r in factor)} times the flexible rod's on the "
         f"rate-dependent flat): {', but '.join(said)}."
     )
