@@ -176,9 +176,14 @@ def velocity_input(
     by_components = vx is not None or vy is not None
     by_speed = speed is not None or incidence is not None
     if by_components and by_speed:
+        given = {"vx": vx, "vy": vy, "speed": speed, "incidence": incidence}
+
+        def pair(keys: tuple[str, str]) -> str:  # the given keys of a form, as given
+            return "/".join(name(k) for k in keys if given[k] is not None)
+
         raise UserError(
-            f"{name('vx')}/{name('vy')} and {name('speed')}/{name('incidence')} both given: "
-            "they say the same thing; give one pair"
+            f"{pair(('vx', 'vy'))} and {pair(('speed', 'incidence'))} both given: they say the "
+            "same thing; give one pair"
         )
     if by_speed:
         if speed is None or incidence is None:

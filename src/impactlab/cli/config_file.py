@@ -1,7 +1,9 @@
 """A command's ``--config`` file (``impactlab simulate``, ``impactlab drop``): a TOML file of the
 command's option keys, checked (unknown keys with the nearest known one, a material given
 whole, switches that are TOML booleans) and merged under the options of the command line, which
-win; each value's errors name it as the user gave it, ``--mass`` or ``mass (in case.toml)``."""
+win (a velocity given there, either form, replaces the file's, either form); a material file it
+names is read relative to the file's folder; each value's errors name it as the user gave it,
+``--mass`` or ``mass (in case.toml)``."""
 
 from __future__ import annotations
 
@@ -11,11 +13,17 @@ from pathlib import Path
 from typing import Any
 
 from impactlab._validation import did_you_mean
-from impactlab.cli._common import UserError, positive
+from impactlab.cli._common import UserError, positive, velocity_input
 from impactlab.cli.config_values import check_booleans
 from impactlab.materials import Material, get_material
 
 __all__ = ["ConfigOptions", "command_table", "merge_config", "option_material", "refuse_given"]
+
+#: Keys that say one thing in two forms: given on the command line in one form, the file's
+#: keys of the other form are not read (the velocity: ``vx``/``vy`` or ``speed``/``incidence``).
+ALTERNATIVES: tuple[tuple[str, ...], ...] = (("vx", "vy"), ("speed", "incidence"))
+#: Keys that may name a file (a material's TOML file): in a config file, relative to its folder.
+FILE_KEYS = ("material", "flat")
 
 
 @dataclass(frozen=True)
@@ -31,11 +39,26 @@ class ConfigOptions:
     config: str
     flags: Mapping[str, str] = field(default_factory=dict)
 
-    def label(self, key: str) -> str:
-        """How the user wrote ``key``: "--mass" or "mass (in case.toml)"."""
-        if key in self.from_cli or key not in self.values:  # given here, or not at all
-            return self.flags.get(key, "--" + key.replace("_", "-"))
+    def label(self, key: str, like: str | None = None) -> str:
+        """How the user wrote ``key``: "--mass" or "mass (in case.toml)". A key not given is
+        spelt where ``like`` (the given key the error is about) was given: the option, or
+        the file's key, ``mass (in case.toml)``, ``rigid = true (in case.toml)`` for a switch."""
+        flag = self.flags.get(key, "--" + key.replace("_", "-"))
+        if key in self.from_cli:
+            return flag
+        if key not in self.values:  # not given: where the value it goes with was
+            if like is None or like in self.from_cli or like not in self.values:
+                return flag
+            if key in self.flags:
+                return f"{key} = {str(not flag.startswith('--no-')).lower()} (in {self.config})"
         return f"{key} (in {self.config})"
+
+    def velocity(self) -> tuple[float, float]:
+        """The velocity (vx, vy) [m/s] (``velocity_input``); a missing speed or incidence is
+        spelt where the other was given."""
+        v, partner = self.values, {"speed": "incidence", "incidence": "speed"}
+        return velocity_input(v.get("vx"), v.get("vy"), v.get("speed"), v.get("incidence"),
+                              lambda key: self.label(key, partner.get(key)))  # fmt: skip
 
     def given(self, key: str) -> bool:
         return self.values.get(key) not in (None, False)
@@ -88,7 +111,9 @@ def merge_config(
     the config file's ``section``. Refused: a material in parts (``flat_E``), an unknown key
     (with the nearest of ``keys``, or its ``notes``: why a key of another command is none of
     this one's), a switch of ``flags`` that is no TOML boolean; ``tip_radius`` is read as
-    ``radius`` (the rod's name for it in study files and [rod] tables)."""
+    ``radius`` (the rod's name for it in study files and [rod] tables). A velocity given on the
+    command line in one form leaves out the file's other form (``ALTERNATIVES``); a relative
+    material file's path (``FILE_KEYS``: text ending in .toml) is read from the file's folder."""
     unknown = sorted(set(section) - set(keys))
     props = [k for k in unknown if k.startswith(("flat_", "material_", "body_"))]
     if props:
@@ -110,7 +135,22 @@ def merge_config(
         raise UserError(f"unknown key(s) in the config file: {hints}; known: {', '.join(keys)}")
     check_booleans(section, flags, str(config_path))
     given = {k: v for k, v in cli.items() if v is not None}
+    for form in ALTERNATIVES:  # the command line's form replaces the file's other forms
+        if any(k in given for k in form):
+            others = {k for f in ALTERNATIVES if f != form for k in f}
+            section = {k: v for k, v in section.items() if k not in others}
+    if config_path is not None:
+        section = {k: _beside(v, config_path) if k in FILE_KEYS else v for k, v in section.items()}
     return ConfigOptions({**section, **given}, frozenset(given), str(config_path), flags)
+
+
+def _beside(value: Any, config_path: Path) -> Any:
+    """A material file's relative path (text ending in .toml, no ``=``) as the path of the
+    file beside the config file ``config_path``; any other value as it is."""
+    if not isinstance(value, str) or "=" in value or not value.strip().lower().endswith(".toml"):
+        return value
+    path = Path(value.strip())
+    return value if path.is_absolute() else str(config_path.parent / path)
 
 
 def refuse_given(opt: ConfigOptions, keys: tuple[str, ...], why: str) -> None:

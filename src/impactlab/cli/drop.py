@@ -39,7 +39,6 @@ from impactlab.cli._common import (
     quantity,
     rate_help,
     rate_name,
-    velocity_input,
 )
 from impactlab.cli.config_file import ConfigOptions, command_table, merge_config, option_material
 from impactlab.cli.config_values import plain_number, text
@@ -130,8 +129,9 @@ def report_drop(result: DropResult, *, as_json: bool) -> None:
 #: The help of ``--config``: the file's form, and why a [simulate] table is not read.
 CONFIG_HELP = (
     "TOML file of these options by key (--modes-axial 16: modes_axial = 16; --no-gravity: "
-    "gravity = false; --rigid: rigid = true; a material: a name or a table), at the top level "
-    "or in a [drop] table; options given here win. A file may hold a [drop] and a [simulate] "
+    "gravity = false; --rigid: rigid = true; a material: a name, a table or a TOML file, from "
+    "this file's folder), at the top level or in a [drop] table; options given here win (a "
+    "velocity, either form, replaces the file's). A file may hold a [drop] and a [simulate] "
     "table, each command reading its own; a [simulate] table alone is refused: its keys are "
     "simulate's (there a rod is rigid unless flexible = true)."
 )
@@ -281,15 +281,15 @@ def run_drop(opt: ConfigOptions) -> DropResult:
     errors naming each value as the user gave it (``opt.label``)."""
     v = opt.values
 
-    def name(key: str) -> str:  # the API's keywords (t_max): the option's or the key's name
-        return opt.label(key) if key in KEYS else key
+    def name(key: str, like: str | None = None) -> str:  # the API's keywords (t_max) too
+        return opt.label(key, like) if key in KEYS else key
 
     if not opt.given("angle"):
         raise UserError(
             '--angle is required, with a unit, e.g. --angle "20 deg" (or angle = "20 deg" in the '
             "--config file)"
         )
-    velocity = velocity_input(v.get("vx"), v.get("vy"), v.get("speed"), v.get("incidence"), name)
+    velocity = opt.velocity()
     sizes = {
         "length": opt.size("length", "m"),
         "tip_radius": opt.size("radius", "m"),
@@ -319,7 +319,7 @@ def run_drop(opt: ConfigOptions) -> DropResult:
             rate=rate,
             history=False,
             stop=text(v.get("stop", "sequence"), name("stop")),
-            rtol=v.get("rtol"),
+            rtol=None if v.get("rtol") is None else plain_number(v["rtol"], name("rtol")),
             t_max=positive(v.get("t_max"), "s", name("t_max")) or DEFAULT_T_MAX,
         )
     except UserError:

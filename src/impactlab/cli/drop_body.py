@@ -35,22 +35,31 @@ def _count(value: Any, name: str) -> int | None:
     UserError naming ``name``; None (not given): FlexibleRod's default, by frequency."""
     if value is None:
         return None
-    if isinstance(value, bool) or not isinstance(value, int):  # 2.5, "x" or true in a file
+    count = value
+    if isinstance(value, str):  # a config file's integer text, "16", as the number
+        try:
+            count = int(value.strip())
+        except ValueError:
+            count = None
+    if isinstance(count, bool) or not isinstance(count, int):  # 2.5, "x" or true in a file
         raise UserError(f"{name} must be an integer >= 0, got {value!r}")
     try:
-        return check_mode_count(name, value)
+        return check_mode_count(name, count)
     except ValueError as exc:
         raise UserError(str(exc)) from None
 
 
 def _ratio(value: Any, name: str) -> float:
-    """A damping ratio (an option or a config file's value): a number, else UserError naming
-    ``name`` (its range is FlexibleRod's to check)."""
+    """A damping ratio (an option or a config file's value): a number or numeric text, else
+    UserError naming ``name`` (its range is FlexibleRod's to check)."""
     if value is None:
         return 0.0
-    if isinstance(value, bool) or not isinstance(value, int | float):
-        raise UserError(f"{name} must be a number in [0, 1), got {value!r}")
-    return float(value)
+    try:
+        if isinstance(value, bool) or not isinstance(value, int | float | str):
+            raise TypeError(value)
+        return float(value)
+    except (TypeError, ValueError):
+        raise UserError(f"{name} must be a number in [0, 1), got {value!r}") from None
 
 
 def flexible_rod(
@@ -91,23 +100,24 @@ def drop_body(
     sizes: Mapping[str, float | None],
     material: Material,
     inertia: float | None = None,
-    label: Callable[[str], str] | None = None,
+    label: Callable[..., str] | None = None,
 ) -> FlexibleRod | Rod:
     """The rod: the paper's sizes unless given (``sizes``: length, tip_radius, mass, diameter;
     None: not given), flexible with the given mode counts and damping, or rigid (with its
     moment of inertia ``inertia`` about the centre of mass, kg m^2; None: from its size).
-    ``label(key)`` spells an option in errors (``--mass``, or ``mass (in case.toml)`` for a
-    config file's key; default ``--key``)."""
+    ``label(key, like)`` spells an option in errors (``--mass``, or ``mass (in case.toml)``
+    for a config file's key; a key not given where the key ``like`` was; default ``--key``)."""
     name = label or _option
     length = sizes["length"] if sizes["length"] is not None else PAPER_ROD.length
     tip = sizes["tip_radius"] if sizes["tip_radius"] is not None else PAPER_ROD.tip_radius
     mass, diameter = sizes["mass"], sizes["diameter"]
     if mass is None and diameter is None:  # the paper's rod's mass, or from its diameter
         if material != PAPER_ROD.material or sizes["length"] is not None:
+            like = "material" if sizes["length"] is None else "length"  # the other rod's
             raise UserError(
-                f"{name('mass')} or {name('diameter')}: give one (or both) for a rod other than "
-                "the paper's (its mass follows from the diameter, the length and the material's "
-                "density)"
+                f"{name('mass', like)} or {name('diameter', like)}: give one (or both) for a rod "
+                "other than the paper's (its mass follows from the diameter, the length and the "
+                "material's density)"
             )
         mass = PAPER_ROD.mass
     if rigid:
@@ -126,7 +136,7 @@ def drop_body(
     if inertia is not None:
         raise UserError(
             f"{name('inertia')}: the flexible rod's inertia follows from its size and material; "
-            f"give {name('rigid')} for a rigid rod of another inertia"
+            f"give {name('rigid', 'inertia')} for a rigid rod of another inertia"
         )
     sizes_in = {"length": length, "tip_radius": tip, "mass": mass, "diameter": diameter}
     return flexible_rod(modes, sizes_in, material, name)
@@ -136,5 +146,5 @@ def drop_body(
 _ROD_KEYS = ("length", "tip_radius", "mass", "diameter", "inertia")
 
 
-def _option(key: str) -> str:
+def _option(key: str, like: str | None = None) -> str:
     return "--" + key.replace("_", "-")

@@ -27,7 +27,6 @@ from impactlab.cli._common import (
     positive,
     quantity,
     rate_name,
-    velocity_input,
 )
 from impactlab.cli.config_file import (
     ConfigOptions,
@@ -36,7 +35,7 @@ from impactlab.cli.config_file import (
     option_material,
     refuse_given,
 )
-from impactlab.cli.config_values import plain_number
+from impactlab.cli.config_values import plain_number, text
 from impactlab.cli.drop_body import flexible_rod
 from impactlab.cli.simulate_from import FROM_RULE, run_from
 from impactlab.cli.simulate_help import HELP
@@ -90,6 +89,8 @@ _FLAGS = {
     "constant_angle": "--constant-angle",
     "flexible": "--flexible",
 }
+#: Keys of ``impactlab drop``'s config file that are not simulate's: why.
+_NOTES = {"rigid": "impactlab drop's: simulate's rod is rigid unless flexible = true"}
 _MISSING_ANGLE = (
     'a rod needs its angle to the flat: give --angle with a unit, e.g. --angle "20 deg" or '
     '--angle "0.35 rad" (or angle = "20 deg" in the --config file)'
@@ -98,12 +99,12 @@ _MISSING_ANGLE = (
 
 def _merge(config: dict[str, Any], cli: dict[str, Any], config_path: Path | None) -> ConfigOptions:
     section = command_table(config, "simulate", "drop", str(config_path))
-    return merge_config(section, cli, config_path, _KEYS, _FLAGS)
+    return merge_config(section, cli, config_path, _KEYS, _FLAGS, _NOTES)
 
 
 def _body(opt: ConfigOptions) -> tuple[Rod | Sphere | FlexibleRod, float | None]:
     """The body and the rod's angle [rad] (None for a sphere); defaults: the paper's rod."""
-    kind = str(opt.values.get("body", "rod")).lower()
+    kind = text(opt.values.get("body", "rod"), opt.label("body")).lower()
     if kind not in ("rod", "sphere"):
         raise UserError(f"body must be 'rod' or 'sphere', got {kind!r}")
     material = option_material(opt, "material", AISI_201)
@@ -153,25 +154,23 @@ def run_simulate(opt: ConfigOptions) -> ImpactResult | DropResult:
     options (SI after parsing)."""
     body, rod_angle = _body(opt)
     cfg = opt.values
-    velocity = velocity_input(
-        cfg.get("vx"), cfg.get("vy"), cfg.get("speed"), cfg.get("incidence"), opt.label
-    )
+    velocity = opt.velocity()
     common: dict[str, Any] = {
         "flat": option_material(opt, "flat", AISI_1010),
-        "law": str(cfg.get("law", "ghaednia")),
-        "friction": str(cfg.get("friction", "coulomb")),
+        "law": text(cfg.get("law", "ghaednia"), opt.label("law")),
+        "friction": text(cfg.get("friction", "coulomb"), opt.label("friction")),
         "mu": plain_number(cfg.get("mu", DEFAULT_MU), opt.label("mu")),
         "velocity": velocity,
         "spin": quantity(cfg.get("spin", 0.0), "rad/s", opt.label("spin")) or 0.0,
         "law_params": cfg.get("law_params"),
         "gravity": bool(cfg.get("gravity", True)),
-        "rtol": cfg.get("rtol"),
+        "rtol": None if cfg.get("rtol") is None else plain_number(cfg["rtol"], opt.label("rtol")),
     }
     if isinstance(body, FlexibleRod):  # the drop: a DropResult
-        rate = rate_name(str(cfg.get("rate", "none")), opt.label("rate"))
+        rate = rate_name(text(cfg.get("rate", "none"), opt.label("rate")), opt.label("rate"))
         check_rate_flat(rate, common["flat"], opt.label("rate"))
         check_rate_law(rate, common["law"], opt.label("rate"), opt.label("law"))
-        stop = str(cfg.get("stop", "sequence"))
+        stop = text(cfg.get("stop", "sequence"), opt.label("stop"))
         t_max = positive(cfg.get("t_max"), "s", opt.label("t_max")) or DEFAULT_T_MAX
         return simulate(body, angle=rod_angle, rate=rate, stop=stop, t_max=t_max, history=False,
                         **common)  # fmt: skip
