@@ -74,7 +74,8 @@ def test_info_json_counts_are_integers(cli_main: CliMain, finished: Any) -> None
 def test_run_summary_json_counts_are_integers(finished: Any) -> None:
     summary = run_summary(finished, finished.dataset, None, [], as_json=True)
     assert summary["flagged"] == {"total": 7, "energy_gain": 2, "law_extrapolated": 7}
-    assert summary["throughput"] is None  # one chunk: every case ran in a first task
+    assert summary["throughput"] == pytest.approx(7 / finished.stats.wall_s)
+    assert summary["cases_computed"] == 7
     text = run_summary(finished, finished.dataset, None, [], as_json=False)
     assert text["flagged"] == "7 case(s) (energy gain: 2, law extrapolated (advisory): 7)"
 

@@ -62,7 +62,7 @@ def test_steady_throughput_leaves_out_first_tasks(cube) -> None:
     s.first_task_cases = {"a": 600, "b": 400}
     assert steady_throughput(s) is None  # every chunk was a first task
     text = dict(_rows(SimpleNamespace(stats=s, path="s.zarr")))["throughput"]
-    assert text == "333.33 impacts/s, the engine's load included (every chunk was a first task)"
+    assert text == "333.33 impacts/s (cases computed / wall time)"
     stats = cube.stats
     assert sum(stats.first_task_cases.values()) == cube.dataset["e"].size  # one chunk
     html = cube._repr_html_()

@@ -79,13 +79,13 @@ def run_summary(
     res: SweepResult, ds: Any, netcdf: Path | None, files: list[str], *, as_json: bool
 ) -> dict[str, Any]:
     """The summary of a finished ``sweep run``: the store, the counts of cases and chunks, the
-    wall time [s], the throughput [1/s] after each worker's first task (None when every chunk
-    computed was a first task: a single-chunk run has no case after the engine's load to time),
-    the first task [s] (None when the run computed nothing: every chunk was stored), the status
-    counts and the flagged cases (text for the table, integer
-    counts with ``as_json``)."""
+    cases this run computed, its wall time [s], its throughput (``display.run_throughput``: the
+    cases computed over the wall time, the engine's load included; [1/s] with ``as_json``, None
+    when the run computed nothing; for the table a text that says so), the first task [s] (the
+    engine's load; None when the run computed nothing: every chunk was stored), the status
+    counts and the flagged cases (text for the table, integer counts with ``as_json``)."""
     from impactlab.sweep import flag_counts, status_counts
-    from impactlab.sweep.display import steady_throughput, warm_up_s
+    from impactlab.sweep.display import run_throughput, throughput_text, warm_up_s
     from impactlab.sweep.summary import format_flag_counts
 
     s = res.stats
@@ -95,8 +95,9 @@ def run_summary(
         "chunks": s.n_chunks,
         "chunks_resumed": s.chunks_before,
         "chunks_computed": s.chunks_computed,
+        "cases_computed": s.cases_computed,
         "wall_time": s.wall_s,
-        "throughput": steady_throughput(s),  # after each worker's first task (the compile)
+        "throughput": run_throughput(s) if as_json else throughput_text(s),
         "first_task": warm_up_s(s) if s.chunks_computed else None,  # None: nothing computed
         "backend": s.backend,
         "status": status_counts(ds),

@@ -33,7 +33,6 @@ RESULT_SOURCES = (
     "sweep/flexible.py",
     "sweep/models.py",
     "sweep/inputs.py",
-    "sweep/limits.py",
     "sweep/material_inputs.py",
     "sweep/material_record.py",
 )

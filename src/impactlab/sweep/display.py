@@ -1,10 +1,12 @@
 """How a study and a finished sweep show themselves: a one-line ``repr`` and a notebook table
 that summarise each dimension as name, size, range and unit (never every value), and the
-sweep's throughput without the one-time compile; the units of the plots' axes and the words for
-the slice of a study a figure shows.
+run's throughput; the units of the plots' axes and the words for the slice of a study a figure
+shows.
 
-The first task of each worker includes loading (or compiling) the engine's compiled functions
-once; ``steady_throughput`` leaves those tasks out, so it measures the engine, not numba.
+The throughput of a run (``run_throughput``: the notebook table, ``impactlab sweep run`` and its
+``--json``) is the cases this run computed over this run's wall time, the engine's load (its
+first task, reported beside it) included. The first task of each worker includes loading (or
+compiling) the engine's compiled functions once; ``steady_throughput`` leaves those tasks out.
 """
 
 from __future__ import annotations
@@ -23,11 +25,13 @@ from impactlab.sweep.inputs import MATERIAL_OVERRIDES, get_input
 __all__ = [
     "dimension_rows",
     "plot_unit",
+    "run_throughput",
     "slice_note",
     "steady_throughput",
     "study_html",
     "study_repr",
     "sweep_result_html",
+    "throughput_text",
     "value_text",
     "warm_up_s",
 ]
@@ -93,9 +97,25 @@ def steady_throughput(stats: Any) -> float | None:
     return float(cases / wall)
 
 
+def run_throughput(stats: Any) -> float | None:
+    """The cases this run computed per second of this run's wall time (the engine's load
+    included; chunks stored before the run are not counted); None when it computed nothing."""
+    if stats.cases_computed <= 0 or stats.wall_s <= 0.0:
+        return None
+    return float(stats.cases_computed / stats.wall_s)
+
+
+def throughput_text(stats: Any) -> str:
+    """``"59813 impacts/s (cases computed / wall time)"``: :func:`run_throughput`
+    and what it is; ``"- (nothing computed)"``."""
+    rate = run_throughput(stats)
+    if rate is None:
+        return "- (nothing computed)"
+    return f"{format_number(rate)} impacts/s (cases computed / wall time)"
+
+
 def _rows(result: Any) -> Sequence[tuple[str, str]]:
     s = result.stats
-    steady = steady_throughput(s)
     return (
         ("store", str(result.path)),
         ("chunks", f"{s.chunks_computed} computed, {s.chunks_before} already stored"),
@@ -105,19 +125,8 @@ def _rows(result: Any) -> Sequence[tuple[str, str]]:
             "first task (compile/load)",
             f"{format_number(warm_up_s(s))} s" if s.chunks_computed else "- (nothing computed)",
         ),
-        ("throughput", _throughput_text(s, steady)),
+        ("throughput", throughput_text(s)),
     )
-
-
-def _throughput_text(stats: Any, steady: float | None) -> str:
-    """The steady throughput, or, when every chunk was a worker's first task, the whole run's
-    (loading or compiling the engine included, and said)."""
-    if steady is not None:
-        return f"{format_number(steady)} impacts/s"
-    if stats.cases_computed <= 0 or stats.wall_s <= 0.0:
-        return "-"
-    overall = format_number(stats.cases_computed / stats.wall_s)
-    return f"{overall} impacts/s, the engine's load included (every chunk was a first task)"
 
 
 def sweep_result_html(result: Any) -> str:

@@ -1,13 +1,14 @@
 """A sweep's Dataset as a file: NetCDF-4 (``.nc``, ``.nc4``: every variable and attribute) or a
 CSV table (``.csv``: one row per case, every input and output a column, its unit in the
 header, ``e_energy``, ``delta_p [m]``, ``angle [rad]``, in a fixed order). ``export_file``
-chooses by the suffix and refuses any other."""
+chooses by the suffix and refuses any other. Both read a store a part at a time: their memory
+does not grow with the number of cases."""
 
 from __future__ import annotations
 
 import json
 import os
-from collections.abc import Mapping
+from collections.abc import Callable, Iterator, Mapping
 from pathlib import Path
 from typing import Any
 
@@ -16,10 +17,29 @@ import xarray as xr
 
 from impactlab.sweep.inputs import INPUTS
 
-__all__ = ["EXPORT_SUFFIXES", "export_csv", "export_file", "export_netcdf"]
+__all__ = [
+    "CSV_BLOCK_CASES",
+    "EXPORT_SUFFIXES",
+    "NETCDF_CHUNK_CACHE_BYTES",
+    "NETCDF_COMPLEVEL",
+    "export_csv",
+    "export_file",
+    "export_netcdf",
+]
 
 #: The suffixes of the files a sweep exports to, and their format.
 EXPORT_SUFFIXES = {".csv": "CSV", ".nc": "NetCDF-4", ".nc4": "NetCDF-4"}
+
+#: Cases per block of a CSV export: its memory holds one block's table (about 1.5 kB a case,
+#: so about 100 MB) whatever the size of the store.
+CSV_BLOCK_CASES = 65_536
+
+#: The zlib level (1-9) of a NetCDF export's numeric arrays.
+NETCDF_COMPLEVEL = 4
+
+#: The HDF5 chunk cache of each array a NetCDF export writes (bytes; the library's default,
+#: 64 MiB an array, would hold a store of a few million cases whole until the file closes).
+NETCDF_CHUNK_CACHE_BYTES = 4 * 2**20
 
 
 def check_suffix(
@@ -52,8 +72,10 @@ def export_file(ds: xr.Dataset, path: str | Path) -> Path:
 
 
 def export_netcdf(ds: xr.Dataset, path: str | Path) -> Path:
-    """Write the Dataset to NetCDF-4 (strings kept; dictionary attributes become JSON text);
-    ``path`` ends in ``.nc`` or ``.nc4``."""
+    """Write the Dataset to NetCDF-4 (strings kept; dictionary attributes become JSON text),
+    its numeric arrays compressed (zlib level :data:`NETCDF_COMPLEVEL`, shuffled) in chunks of
+    the store's; a store's arrays are read chunk by chunk, never whole. Written whole or not at
+    all; ``path`` ends in ``.nc`` or ``.nc4``."""
     check_suffix(path, "NetCDF file", ("NetCDF-4",))
     out = Path(path)
 
@@ -61,37 +83,126 @@ def export_netcdf(ds: xr.Dataset, path: str | Path) -> Path:
         return {k: json.dumps(v) if isinstance(v, dict) else v for k, v in a.items()}
 
     def plain(var: xr.Variable) -> xr.Variable:
-        values = var.values
-        if values.dtype.kind == "T":  # numpy StringDType -> fixed-width unicode
-            values = np.array(values.tolist(), dtype=str)
-        return xr.Variable(var.dims, values, attrs(var.attrs))
+        data = var.data
+        if var.dtype.kind == "T":  # numpy StringDType -> fixed-width unicode (small: labels)
+            data = np.array(var.values.tolist(), dtype=str)
+        return xr.Variable(var.dims, data, attrs(var.attrs))
 
-    loaded = ds.load()
-    coords = {str(k): plain(v.variable) for k, v in loaded.coords.items()}
-    data = {str(k): plain(v.variable) for k, v in loaded.data_vars.items()}
-    xr.Dataset(data, coords=coords, attrs=attrs(loaded.attrs)).to_netcdf(out, engine="netcdf4")
+    coords = {str(k): plain(v.variable) for k, v in ds.coords.items()}
+    data = {str(k): plain(v.variable) for k, v in ds.data_vars.items()}
+    plain_ds = xr.Dataset(data, coords=coords, attrs=attrs(ds.attrs))
+    encoding = _nc_encoding(plain_ds, _case_dims(ds), _store_chunks(ds))
+    _atomic(out, lambda tmp: _write_netcdf(plain_ds, tmp, encoding))
     return out
+
+
+def _write_netcdf(ds: xr.Dataset, path: Path, encoding: dict[str, dict[str, Any]]) -> None:
+    """``ds.to_netcdf`` with a chunk cache of :data:`NETCDF_CHUNK_CACHE_BYTES` per array (the
+    setting is the library's, restored after)."""
+    try:
+        import netCDF4
+    except ImportError:  # xarray says what is missing
+        ds.to_netcdf(path, engine="netcdf4", encoding=encoding)
+        return
+    size, slots, preemption = netCDF4.get_chunk_cache()
+    netCDF4.set_chunk_cache(NETCDF_CHUNK_CACHE_BYTES, slots, preemption)
+    try:
+        ds.to_netcdf(path, engine="netcdf4", encoding=encoding)
+    finally:
+        netCDF4.set_chunk_cache(size, slots, preemption)
+
+
+def _nc_encoding(
+    ds: xr.Dataset, dims: list[str], chunks: tuple[int, ...] | None
+) -> dict[str, dict[str, Any]]:
+    """The NetCDF-4 encoding of every numeric array of ``ds`` (zlib, shuffled; the case arrays
+    in ``chunks``); scalars and strings as they are."""
+    enc: dict[str, dict[str, Any]] = {}
+    for name, var in ds.variables.items():
+        if var.ndim == 0 or var.size == 0 or var.dtype.kind not in "biuf":
+            continue
+        e: dict[str, Any] = {"zlib": True, "complevel": NETCDF_COMPLEVEL, "shuffle": True}
+        if chunks is not None and list(var.dims) == dims:
+            e["chunksizes"] = tuple(min(c, n) for c, n in zip(chunks, var.shape, strict=True))
+        enc[str(name)] = e
+    return enc
 
 
 def export_csv(ds: xr.Dataset, path: str | Path) -> Path:
     """Write the Dataset as a CSV table (``ds.to_dataframe()``): one row per case, a column per
     dimension, input and output, headed ``name [unit]`` (the variable's ``units``: SI but the
     Brinell hardness in kgf/mm^2; a dimensionless one by its name alone), in the order of
-    :func:`_columns`. Written whole or not at all; ``path`` ends in ``.csv``."""
+    :func:`_columns`. Written block by block (at most :data:`CSV_BLOCK_CASES` cases in memory;
+    the file is that of the whole table at once), whole or not at all; ``path`` ends in
+    ``.csv``."""
     check_suffix(path, "CSV file", ("CSV",))
     out = Path(path)
-    dims = [str(d) for d in (ds["status"].dims if "status" in ds else ds.dims)]
-    table = ds.to_dataframe(dim_order=dims).reset_index()
-    table = table[_columns(dims, ds.attrs.get("outputs", []), [str(c) for c in table.columns])]
-    table.columns = [_header(str(c), ds[c].attrs.get("units")) for c in table.columns]
+    dims = _case_dims(ds)
+    # a dimension without coordinate counts 0, 1, ... in every block: its place in the whole
+    ds = ds.assign_coords({d: np.arange(ds.sizes[d]) for d in dims if d not in ds.coords})
+    shape = tuple(int(ds.sizes[d]) for d in dims)
+
+    def write(tmp: Path) -> None:
+        with tmp.open("w", encoding="utf-8", newline="") as fh:
+            names: list[str] = []
+            for i, slab in enumerate(_slabs(shape, CSV_BLOCK_CASES, _store_chunks(ds))):
+                block = ds.isel(dict(zip(dims, slab, strict=True))).load()
+                table = block.to_dataframe(dim_order=dims).reset_index()
+                if i == 0:
+                    names = _columns(dims, ds.attrs.get("outputs", []), list(map(str, table)))
+                table = table[names]
+                table.columns = [_header(c, ds[c].attrs.get("units")) for c in names]
+                table.to_csv(fh, index=False, header=i == 0)
+
+    _atomic(out, write)
+    return out
+
+
+def _case_dims(ds: xr.Dataset) -> list[str]:
+    """The dimensions of the case array (``status``'s; the Dataset's without one)."""
+    return [str(d) for d in (ds["status"].dims if "status" in ds else ds.dims)]
+
+
+def _store_chunks(ds: xr.Dataset) -> tuple[int, ...] | None:
+    """The store's chunk shape (``status``'s Zarr chunks), None for a Dataset not read from one."""
+    if "status" not in ds:
+        return None
+    chunks = ds["status"].encoding.get("chunks")
+    return tuple(int(c) for c in chunks) if chunks else None
+
+
+def _slabs(
+    shape: tuple[int, ...], limit: int, chunks: tuple[int, ...] | None = None
+) -> Iterator[tuple[slice, ...]]:
+    """Blocks of an array of ``shape`` that cover it in C order, one after the other, each of at
+    most ``limit`` cases (at least 1): whole trailing dimensions, a run along the next one (a
+    multiple of ``chunks`` along it where it fits) and single indices before it."""
+    n = len(shape)
+    if n == 0 or 0 in shape:
+        yield tuple(slice(0, s) for s in shape)
+        return
+    k = 0
+    while k < n - 1 and int(np.prod(shape[k + 1 :], dtype=np.int64)) > limit:
+        k += 1
+    step = max(1, limit // int(np.prod(shape[k + 1 :], dtype=np.int64)))
+    if chunks is not None and 0 < chunks[k] <= step:
+        step -= step % chunks[k]
+    tail = (slice(None),) * (n - k - 1)
+    for lead in np.ndindex(*shape[:k]):
+        head = tuple(slice(i, i + 1) for i in lead)
+        for a in range(0, shape[k], step):
+            yield (*head, slice(a, min(a + step, shape[k])), *tail)
+
+
+def _atomic(out: Path, write: Callable[[Path], None]) -> None:
+    """``write`` a temporary file beside ``out``, then put it in place (none left on error)."""
     tmp = out.with_name(f".{out.name}.{os.getpid()}.partial")
     try:
-        table.to_csv(tmp, index=False)
+        write(tmp)
         os.replace(tmp, out)
     except BaseException:
         tmp.unlink(missing_ok=True)
         raise
-    return out
 
 
 def _columns(dims: list[str], outputs: Any, present: list[str]) -> list[str]:

@@ -1,10 +1,14 @@
-"""Study-wide options: the study format, the default chunk size, the engine options and what the
-uncertainty report summarises."""
+"""Study-wide options: the study format, the default chunk size (and a store's, kept on
+resume), the engine options and what the uncertainty report summarises."""
 
 from __future__ import annotations
 
+import dataclasses
+import json
 import math
+import warnings
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any
 
 from impactlab.dynamics.kernels.inputs import (
@@ -15,15 +19,61 @@ from impactlab.dynamics.kernels.inputs import (
     rtol_allowed,
 )
 from impactlab.sweep.inputs import OUTPUT_ALIASES
+from impactlab.sweep.limits import TINY_CHUNK, study_cost
 from impactlab.units import is_quantity, magnitude
 
 #: Version of the study/store format; part of the study hash.
 STUDY_FORMAT = "impactlab-sweep/1"
-#: Default number of cases per chunk.
+#: Default number of cases per chunk of a study of rigid bodies, the largest default
+#: (:func:`default_chunk_size`); a study's ``chunk_size`` replaces it.
 DEFAULT_CHUNK_SIZE = 65536
+#: What a chunk of the default size costs on one core, at most [s]: a few seconds, so that the
+#: progress bar moves and Ctrl-C (which lands after the chunk in progress) acts soon.
+CHUNK_TARGET_S = 4.0
 #: What the uncertainty report summarises by default: outputs, and percentiles in [0, 100].
 DEFAULT_UNCERTAINTY_OUTPUTS = ("e", "delta_p", "sliding_length", "duration", "mean_force")
 DEFAULT_PERCENTILES = (2.5, 50.0, 97.5)
+
+
+def default_chunk_size(study: Any) -> int:
+    """Cases per chunk of a ``Study`` that sets no ``chunk_size``: the largest power of two
+    whose chunk costs at most ``CHUNK_TARGET_S`` on one core (``limits.study_cost``, estimated
+    from the benchmarks), within [``limits.TINY_CHUNK``, ``DEFAULT_CHUNK_SIZE``]: 65536 for
+    rigid bodies, 8192 for ``partial_slip``, 256 for a flexible rod's drops, 2048 for a Monte
+    Carlo over material properties (a contact model per case)."""
+    fit = CHUNK_TARGET_S / study_cost(study).chunk_case_s()
+    size = 2 ** math.floor(math.log2(fit)) if fit >= 1.0 else 1
+    return int(min(DEFAULT_CHUNK_SIZE, max(TINY_CHUNK, size)))
+
+
+def recorded_chunk_size(path: Path) -> int | None:
+    """The chunk size the store at ``path`` was built with (its study record
+    ``.sweep/study.json``, else its root attribute ``study``); None: no store, or none
+    readable."""
+    for read in (
+        lambda: json.loads((path / ".sweep" / "study.json").read_text()),
+        lambda: json.loads(json.loads((path / "zarr.json").read_text())["attributes"]["study"]),
+    ):
+        try:
+            size = read()["study"]["chunk_size"]
+        except (OSError, ValueError, KeyError, TypeError):
+            continue
+        if isinstance(size, int) and not isinstance(size, bool) and size >= 1:
+            return size
+    return None
+
+
+def with_recorded_chunk_size(study: Any, path: Path) -> Any:
+    """``study`` (a ``Study``) with the chunk size of the store at ``path`` when the study sets
+    no ``chunk_size`` and the store was built with another: a store keeps its chunking, so
+    that a change of :func:`default_chunk_size` does not make an unchanged study refuse to
+    resume its store. The study as it is otherwise."""
+    size = None if study.chunk_size is not None else recorded_chunk_size(path)
+    if size is None or size == study.cases_per_chunk:
+        return study
+    with warnings.catch_warnings():  # the study's warnings were given when it was built
+        warnings.simplefilter("ignore")
+        return dataclasses.replace(study, chunk_size=size)
 
 
 def _number(value: Any) -> bool:

@@ -62,6 +62,7 @@ from impactlab.sweep.engine import (
 )
 from impactlab.sweep.integrity import describe
 from impactlab.sweep.limits import usable_cores
+from impactlab.sweep.options import with_recorded_chunk_size
 from impactlab.sweep.store import StoreMeta, SweepStore, open_sweep
 from impactlab.sweep.study import Study, load_study
 from impactlab.sweep.study_meta import category_values, store_meta
@@ -253,6 +254,7 @@ def run_sweep(
     st = load_study(study, max_cases=max_cases)
     path = Path(store) if store is not None else Path(f"{st.name}.zarr")
     st = with_recorded_laws(st, path)  # a store's own laws: its resume needs no --law-file
+    st = st if restart else with_recorded_chunk_size(st, path)  # its chunking, unless set
     ev: Evaluator = evaluator if evaluator is not None else ENGINE
     be = _backend(backend, workers, scheduler, client, max_in_flight, worker_timeout)
     ev.validate(category_values(st))

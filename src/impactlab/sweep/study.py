@@ -42,13 +42,13 @@ from impactlab.sweep.dimensions import (
 from impactlab.sweep.display import study_html, study_repr
 from impactlab.sweep.flexible import check_flexible_study
 from impactlab.sweep.inputs import INPUTS, OUTPUT_ALIASES, get_input
-from impactlab.sweep.limits import DEFAULT_MAX_CASES, check_max_cases, too_many, warn_chunking
+from impactlab.sweep.limits import DEFAULT_MAX_CASES, check_max_cases, check_size
 from impactlab.sweep.material_inputs import check_material_inputs
 from impactlab.sweep.options import (
-    DEFAULT_CHUNK_SIZE,
     STUDY_FORMAT,
     EngineOptions,
     UncertaintySpec,
+    default_chunk_size,
 )
 from impactlab.sweep.study_rules import check_study_rules
 from impactlab.sweep.studyfile import read_study_file, study_arguments
@@ -175,7 +175,8 @@ class Study:
     laws : the user's laws (``impactlab.contact.register_law``) the study uses, name -> record;
         filled from the registry, and registered from it where the study runs (a worker
         process), so the law's data travel with the study and enter its hash.
-    chunk_size : target number of cases per chunk (the unit of work, storage and resumption).
+    chunk_size : target number of cases per chunk (the unit of work, storage and resumption);
+        None: ``options.default_chunk_size`` of what a case costs (``cases_per_chunk``).
     uncertainty : what ``impactlab sweep`` reports at the end of a Monte Carlo study.
     max_cases : the largest number of cases accepted (a bigger study is refused with an estimate
         of its time and disk); not part of the study hash.
@@ -189,7 +190,7 @@ class Study:
     engine: EngineOptions = field(default_factory=EngineOptions)
     law_params: Mapping[str, float] = field(default_factory=dict)
     laws: Mapping[str, Any] = field(default_factory=dict)
-    chunk_size: int = DEFAULT_CHUNK_SIZE
+    chunk_size: int | None = None
     description: str = ""
     uncertainty: UncertaintySpec | None = None
     max_cases: int = DEFAULT_MAX_CASES
@@ -224,18 +225,12 @@ class Study:
         laws = next((a.values for a in axes if a.name == "law"), (self.value_of("law"),))
         object.__setattr__(self, "laws", law_records(laws))
         object.__setattr__(self, "law_params", _check_law_params(self.law_params, laws))
-        if (
-            isinstance(self.chunk_size, bool)
-            or not isinstance(self.chunk_size, int)
-            or self.chunk_size < 1
-        ):
-            raise ValueError(f"chunk_size must be an integer >= 1, got {self.chunk_size!r}")
+        size = self.chunk_size
+        if size is not None and (isinstance(size, bool) or not isinstance(size, int) or size < 1):
+            raise ValueError(f"chunk_size must be an integer >= 1, got {size!r}")
         if self.uncertainty is not None and self.sample is None:
             raise ValueError("an [uncertainty] report needs a [sample]")
-        lay = self.layout
-        if lay.n_cases > self.max_cases:
-            raise too_many(f"study {self.name!r}", lay.n_cases, self.max_cases, self.outputs)
-        warn_chunking(self.name, self.chunk_size, lay.n_cases, lay.n_chunks)
+        check_size(self, default_chunk_size(self))  # max_cases; tiny chunks warn
 
     def __repr__(self) -> str:
         return study_repr(self)
@@ -249,9 +244,15 @@ class Study:
     def axes(self) -> tuple[Axis, ...]:
         return tuple(self.grid)
 
+    @property
+    def cases_per_chunk(self) -> int:
+        """Target cases per chunk: ``chunk_size``, or, unset, the default for what a case
+        costs (``options.default_chunk_size``: a few seconds of one core per chunk)."""
+        return self.chunk_size or default_chunk_size(self)
+
     @cached_property
     def layout(self) -> Layout:
-        return layout(self.axes, self.sample, self.chunk_size)
+        return layout(self.axes, self.sample, self.cases_per_chunk)
 
     @property
     def n_cases(self) -> int:
@@ -312,7 +313,7 @@ class Study:
             "study": {
                 "name": self.name,
                 "description": self.description,
-                "chunk_size": self.chunk_size,
+                "chunk_size": self.cases_per_chunk,
                 "units": "si",
                 **({"max_cases": self.max_cases} if self.max_cases != DEFAULT_MAX_CASES else {}),
             },

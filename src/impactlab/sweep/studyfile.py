@@ -26,12 +26,7 @@ from impactlab.sweep.distributions import (
 )
 from impactlab.sweep.inputs import INPUTS, UNIT_REQUIRED, get_input
 from impactlab.sweep.limits import DEFAULT_MAX_CASES, check_max_cases
-from impactlab.sweep.options import (
-    DEFAULT_CHUNK_SIZE,
-    STUDY_FORMAT,
-    EngineOptions,
-    UncertaintySpec,
-)
+from impactlab.sweep.options import STUDY_FORMAT, EngineOptions, UncertaintySpec
 from impactlab.sweep.ranges import Limit, range_values
 from impactlab.units import bare_text, convert_quantity, parse_quantity
 from impactlab.units import registry as units_registry
@@ -117,7 +112,7 @@ def study_arguments(
     return {
         "name": str(st.get("name", "study")),
         "description": str(st.get("description", "")),
-        "chunk_size": st.get("chunk_size", DEFAULT_CHUNK_SIZE),
+        "chunk_size": st.get("chunk_size"),  # None: the default for what a case costs
         "fixed": _fixed(table("fixed"), si),
         "grid": _grid(grid_tab, data.get("grid_order", list(grid_tab)), si, (limit, outputs)),
         "sample": _sample(data["sample"], si) if "sample" in data else None,

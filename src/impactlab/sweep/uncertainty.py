@@ -93,6 +93,12 @@ class UncertaintyReport:
         }
 
 
+def _check_sample(ds: Any) -> None:
+    """Refuse a sweep without a Monte Carlo sample (checked before anything is built)."""
+    if SAMPLE_DIM not in ds.dims:
+        raise ValueError("the uncertainty report needs a Monte Carlo sweep (a 'sample' dimension)")
+
+
 def _sampled_inputs(ds: Any) -> list[str]:
     names = []
     for name, var in ds.variables.items():
@@ -120,8 +126,7 @@ def uncertainty_report(
         excluded and counted in ``n_flagged``).
     """
     extra = [d for d in ds.dims if d != SAMPLE_DIM]
-    if SAMPLE_DIM not in ds.dims:
-        raise ValueError("the uncertainty report needs a Monte Carlo sweep (a 'sample' dimension)")
+    _check_sample(ds)
     if any(ds.sizes[d] > 1 for d in extra):
         raise ValueError(
             f"the Dataset has grid dimensions {extra} besides 'sample'; select one grid point "
@@ -285,7 +290,9 @@ def uncertainty_reports(
     """One :func:`uncertainty_report` per grid point of a (grid+)sample sweep, keyed by a title
     naming the point in display units ("law = brake, angle = 20 deg"; the study's title for a
     pure sample). ``outputs`` and
-    ``percentiles`` default to the study's ``[uncertainty]`` table, else the defaults."""
+    ``percentiles`` default to the study's ``[uncertainty]`` table, else the defaults. A sweep
+    without a sample is refused first, before its grid points are listed."""
+    _check_sample(ds)
     spec = study_uncertainty_spec(ds)
     outs = list(outputs) if outputs else (list(spec.outputs) if spec else None)
     pcts = (
