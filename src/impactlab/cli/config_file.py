@@ -32,7 +32,8 @@ class ConfigOptions:
 
     values: by key, SI or as written (quantities are parsed where they are used); from_cli:
     the keys given on the command line; config: the file, as given; flags: the command-line
-    spelling of the keys whose option is not ``--<key>`` (``gravity``: ``--no-gravity``)."""
+    switches of the keys whose option is not ``--<key>``, the one that leaves the default first
+    (``gravity``: ``--no-gravity/--gravity``; a label names that one)."""
 
     values: dict[str, Any]
     from_cli: frozenset[str]
@@ -43,7 +44,8 @@ class ConfigOptions:
         """How the user wrote ``key``: "--mass" or "mass (in case.toml)". A key not given is
         spelt where ``like`` (the given key the error is about) was given: the option, or
         the file's key, ``mass (in case.toml)``, ``rigid = true (in case.toml)`` for a switch."""
-        flag = self.flags.get(key, "--" + key.replace("_", "-"))
+        # a switch: the half that leaves the default (errors say "leave out" or "give" it)
+        flag = self.flags.get(key, "--" + key.replace("_", "-")).partition("/")[0]
         if key in self.from_cli:
             return flag
         if key not in self.values:  # not given: where the value it goes with was

@@ -131,7 +131,8 @@ CONFIG_HELP = (
     "TOML file of these options by key (--modes-axial 16: modes_axial = 16; --no-gravity: "
     "gravity = false; --rigid: rigid = true; a material: a name, a table or a TOML file, from "
     "this file's folder), at the top level or in a [drop] table; options given here win (a "
-    "velocity, either form, replaces the file's). A file may hold a [drop] and a [simulate] "
+    "velocity, either form, replaces the file's; --gravity and --flexible undo the file's "
+    "switches). A file may hold a [drop] and a [simulate] "
     "table, each command reading its own; a [simulate] table alone is refused: its keys are "
     "simulate's (there a rod is rigid unless flexible = true)."
 )
@@ -192,7 +193,13 @@ def drop_cmd(
         "ghaednia", "--law", show_default=False, help="Contact law (default ghaednia)."
     ),
     rate: str = typer.Option("none", "--rate", show_default=False, help=rate_help()),
-    rigid: bool = typer.Option(False, "--rigid", help="The rigid rod (no modes) instead."),
+    rigid: bool = typer.Option(
+        None,
+        "--rigid/--flexible",
+        show_default=False,
+        help="The rigid rod (no modes) instead, or the flexible one (default); either replaces "
+        "the --config file's rigid.",
+    ),
     inertia: str = typer.Option(
         None,
         "--inertia",
@@ -204,7 +211,12 @@ def drop_cmd(
     damping: float = typer.Option(
         None, "--damping", help="Modal damping ratio zeta of every mode, in [0, 1) (default 0)."
     ),
-    no_gravity: bool = typer.Option(False, "--no-gravity", help="Switch gravity off."),
+    gravity: bool = typer.Option(
+        None,
+        "--gravity/--no-gravity",
+        show_default=False,
+        help="Gravity on (default) or off; either replaces the --config file's gravity.",
+    ),
     rtol: float = typer.Option(
         None,
         "--rtol",
@@ -260,7 +272,6 @@ def drop_cmd(
     """
     # the options named like the config file's keys, as given on the command line (else None)
     cli = {k: v if _on_command_line(ctx, k) else None for k, v in locals().items() if k in KEYS}
-    cli |= {"gravity": False if no_gravity else None, "rigid": rigid or None}
     if from_file is not None:  # the recorded drop, with the options given on top
         if config is not None:
             raise UserError(
@@ -335,7 +346,7 @@ KEYS: tuple[str, ...] = ("angle", "vy", "vx", "speed", "incidence", "spin", "len
 KEYS += ("mass", "diameter", "inertia", "material", "flat", "mu", "friction", "law", "rate")
 KEYS += ("rigid", "modes_axial", "modes_bending", "damping", "gravity", "rtol", "stop", "t_max")
 #: Command-line spelling of the keys whose option is not ``--<key>``.
-_FLAGS = {"gravity": "--no-gravity", "rigid": "--rigid"}
+_FLAGS = {"gravity": "--no-gravity/--gravity", "rigid": "--rigid/--flexible"}
 #: Keys of ``impactlab simulate``'s config file that are not the drop's: why.
 _NOTES = {
     "body": "impactlab simulate's: a drop drops a rod",

@@ -85,9 +85,9 @@ _FLEX_ONLY = ("modes_axial", "modes_bending", "damping", "rate", "stop", "t_max"
 _NOT_FLEX = ("inertia", "constant_angle")
 #: Command-line spelling of the keys whose option is not ``--<key>``.
 _FLAGS = {
-    "gravity": "--no-gravity",
-    "constant_angle": "--constant-angle",
-    "flexible": "--flexible",
+    "gravity": "--no-gravity/--gravity",
+    "constant_angle": "--constant-angle/--no-constant-angle",
+    "flexible": "--flexible/--rigid",
 }
 #: Keys of ``impactlab drop``'s config file that are not simulate's: why.
 _NOTES = {"rigid": "impactlab drop's: simulate's rod is rigid unless flexible = true"}
@@ -212,12 +212,24 @@ def simulate_cmd(
     diameter: str = _option("diameter"),
     material: str = _option("material"),
     flat: str = _option("flat"),
-    no_gravity: bool = typer.Option(False, "--no-gravity", help="Switch gravity off."),
+    gravity: bool = typer.Option(
+        None,
+        "--gravity/--no-gravity",
+        show_default=False,
+        help="Gravity on (default) or off; either replaces the --config file's gravity.",
+    ),
     constant_angle: bool = typer.Option(
-        False, "--constant-angle", help="Freeze the lever arms (paper's assumption; rod only)."
+        None,
+        "--constant-angle/--no-constant-angle",
+        show_default=False,
+        help="Freeze the lever arms (paper's assumption; rod only) or not (default).",
     ),
     flexible: bool = typer.Option(
-        False, "--flexible", help="The flexible rod: its whole drop, every contact (rod only)."
+        None,
+        "--flexible/--rigid",
+        show_default=False,
+        help="The flexible rod: its whole drop, every contact (rod only); or the rigid rod "
+        "(default).",
     ),
     modes_axial: int = _option("modes_axial"),
     modes_bending: int = _option("modes_bending"),
@@ -262,10 +274,7 @@ def simulate_cmd(
       impactlab simulate rod --flexible --angle "20 deg" --vy "-1.41 m/s" --mu 0.2
     """
     # the options named like the config file's keys, as given (None: not given)
-    cli = {k: v for k, v in locals().items() if k in _KEYS}
-    cli["gravity"] = False if no_gravity else None
-    cli["constant_angle"] = True if constant_angle else None
-    cli["flexible"] = True if flexible else None
+    cli = {k: v for k, v in locals().items() if k in _KEYS}  # switches: True, False or None
     if out is not None and not plot:
         raise UserError("--out applies only with --plot (where to save the figures)")
     # one impact or drop, then the process ends: a first compile's garbage is left to the exit

@@ -5,8 +5,8 @@ The rule (``FROM_RULE``, said in ``--help`` and docs/tutorials/simulate.md): the
 is the default of every option; the options of the impact override it (the kinematics, mu, the
 law, the friction model, the flat, gravity, and ``--constant-angle`` for a rigid impact or
 ``--rate`` for a drop); the options that make the body (the body argument, its material, sizes,
-inertia, modes and damping, ``--flexible``) and ``--config`` are refused, since the body is the
-recorded one. ``--vx`` or ``--vy`` replaces that component of the recorded velocity,
+inertia, modes and damping, ``--flexible`` or ``--rigid``) and ``--config`` are refused, since
+the body is the recorded one. ``--vx`` or ``--vy`` replaces that component of the recorded velocity,
 ``--speed`` with ``--incidence`` replaces the velocity; a new ``--law`` drops the recorded law
 parameters (they are the recorded law's).
 """
@@ -50,9 +50,10 @@ FROM_RULE = (
     "or drop, or impact_result.json: its 'input'); the recorded input is the default of every "
     "option: the kinematics (--angle, --vx or --vy replace that component, --speed with "
     "--incidence the velocity), --spin, --mu, --law (a new law drops the recorded law "
-    "parameters), --friction, --flat, --no-gravity, --constant-angle (rigid impact) and --rate "
-    "(drop) override it; the body's options (body, --material, sizes, --inertia, modes, "
-    "--damping, --flexible) and --config are refused: the body is the recorded one."
+    "parameters), --friction, --flat, --gravity/--no-gravity, --constant-angle/"
+    "--no-constant-angle (rigid impact) and --rate (drop) override it; the body's options "
+    "(body, --material, sizes, --inertia, modes, --damping, --flexible/--rigid) and --config "
+    "are refused: the body is the recorded one."
 )
 
 #: Options (keys of ``impactlab simulate``, and ``drop``'s ``rigid``) that make the body:
@@ -155,8 +156,11 @@ def option_error(exc: ValueError, options: Iterable[str]) -> UserError:
 
 def _refuse_body_options(given: Mapping[str, Any]) -> None:
     """UserError naming the given options that make the body (``FROM_BODY_OPTIONS``)."""
+    switched = {("flexible", False): "--rigid", ("rigid", False): "--flexible"}
     body_options = [
-        "the body" if k == "body" else _label(k) for k in FROM_BODY_OPTIONS if given.get(k)
+        "the body" if k == "body" else switched.get((k, given[k]), _label(k))
+        for k in FROM_BODY_OPTIONS
+        if given.get(k) is not None
     ]
     if body_options:
         raise UserError(
@@ -186,13 +190,15 @@ def _kinematics(given: Mapping[str, Any], recorded: Mapping[str, Any]) -> dict[s
 def _options(given: Mapping[str, Any], drop: bool) -> dict[str, Any]:
     """The changed --constant-angle (a rigid impact), --rate or --stop (a drop)."""
     changes: dict[str, Any] = {}
-    if given.get("constant_angle"):
+    if given.get("constant_angle") is not None:  # --constant-angle or --no-constant-angle
         if drop:
-            raise UserError(
-                "--constant-angle: the recorded drop follows the rod's rotation (no frozen "
-                "lever arms); leave it out"
-            )
-        changes["constant_angle"] = True
+            if given["constant_angle"]:
+                raise UserError(
+                    "--constant-angle: the recorded drop follows the rod's rotation (no frozen "
+                    "lever arms); leave it out"
+                )
+        else:
+            changes["constant_angle"] = bool(given["constant_angle"])
     if given.get("rate") is not None:
         if not drop:
             raise UserError(
@@ -237,8 +243,8 @@ def from_changes(
             changes["flat"] = get_material(given["flat"], "--flat")
         except ValueError as exc:
             raise UserError(str(exc)) from None
-    if given.get("gravity") is False:
-        changes["gravity"] = False
+    if given.get("gravity") is not None:  # --gravity or --no-gravity
+        changes["gravity"] = bool(given["gravity"])
     if given.get("rtol") is not None:  # impactlab drop --rtol
         changes["rtol"] = float(given["rtol"])
     return changes | _options(given, function == SIMULATE_DROP)
