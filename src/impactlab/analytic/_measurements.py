@@ -88,6 +88,8 @@ def _check_ranges(meas: Mapping[str, Measured]) -> None:
     th = meas["angle"].value
     if not 0.0 < th < HALF_PI:
         hint = "; pass radians or a string such as '20 deg'" if 2.0 <= th <= 90.0 else ""
+        if HALF_PI < th <= HALF_PI + math.radians(10.0):  # a bare angle just past the normal
+            hint = past_normal_inversion(th)
         raise ValueError(
             f"angle must lie in (0, 90) deg, open at both ends (the rod tilted: at 90 deg it "
             f"stands vertical and its tip cannot slide), got {math.degrees(th):.4g} deg "
@@ -173,3 +175,13 @@ def check_plausible(meas: Mapping[str, Measured], length: float, tip_radius: flo
                 f"{k} = {meas[k].value!r} m/s exceeds {PLAUSIBLE_SPEED:g} m/s; check the units "
                 "(SI: m/s)"
             )
+
+
+def past_normal_inversion(th: float) -> str:
+    """What an inversion's rod angle ``th`` [rad] in (pi/2, pi) means: the mirror drop, whose
+    measured magnitudes are the same (the dent runs the other way)."""
+    mirror = math.degrees(math.pi - th)
+    return (
+        f"; the rod leans past the flat's normal: that drop is the mirror of one at {mirror:.6g} "
+        "deg, with the same magnitudes (the dent runs the other way): invert that angle"
+    )

@@ -13,6 +13,7 @@ import math
 import re
 from typing import Any
 
+from impactlab.analytic._measurements import past_normal_inversion
 from impactlab.cli._common import UserError, any_angle, parse_rod_table, quantity
 from impactlab.cli.config_values import check_booleans
 from impactlab.units import bare_number, read_minus
@@ -71,9 +72,10 @@ def _inversion_angle(value: Any, name: str) -> float:
             if th >= 0.5 * math.pi
             else "at 0 deg it lies on the flat, and below 0 its tip points up"
         )
+        hint = past_normal_inversion(th) if 0.5 * math.pi < th < math.pi else ""
         raise UserError(
             f"{name} must lie in (0, 90) deg, open at both ends (the rod tilted: {why}), "
-            f"got {str(value).strip()}"
+            f"got {str(value).strip()}{hint}"
         )
     return th
 
