@@ -19,6 +19,7 @@ from sweep_fakes import CrashingEvaluator, FakeEvaluator, FlaggingEvaluator
 
 import impactlab.sweep.netcdf as export
 from impactlab.sweep import Normal, Sample, Study, Uniform, open_sweep, run_sweep
+from impactlab.sweep.slabs import slabs
 
 
 def _reference_csv(ds: xr.Dataset, path: Path) -> None:
@@ -142,16 +143,16 @@ def test_the_csv_holds_one_block_at_a_time(tmp_path, monkeypatch) -> None:
 def test_the_blocks_cover_the_cases_in_order(shape, limit) -> None:
     cases = np.arange(int(np.prod(shape))).reshape(shape)
     for chunks in (None, tuple(max(1, n // 2) for n in shape)):
-        slabs = list(export._slabs(shape, limit, chunks))
-        parts = [cases[s].ravel() for s in slabs]
+        blocks = list(slabs(shape, limit, chunks))
+        parts = [cases[s].ravel() for s in blocks]
         assert np.array_equal(np.concatenate(parts), cases.ravel())
         assert max(len(p) for p in parts) <= limit
 
 
 def test_the_blocks_follow_the_store_chunks() -> None:
-    slabs = list(export._slabs((100, 100, 100), 65_536, (6, 100, 100)))
-    assert [s[0] for s in slabs[:2]] == [slice(0, 6), slice(6, 12)]  # one chunk each
-    assert len(slabs) == 17 and slabs[-1][0] == slice(96, 100)
+    blocks = list(slabs((100, 100, 100), 65_536, (6, 100, 100)))
+    assert [s[0] for s in blocks[:2]] == [slice(0, 6), slice(6, 12)]  # one chunk each
+    assert len(blocks) == 17 and blocks[-1][0] == slice(96, 100)
 
 
 def test_netcdf_reads_the_store_chunk_by_chunk(tmp_path) -> None:

@@ -84,9 +84,9 @@ def run_summary(
     when the run computed nothing; for the table a text that says so), the first task [s] (the
     engine's load; None when the run computed nothing: every chunk was stored), the status
     counts and the flagged cases (text for the table, integer counts with ``as_json``)."""
-    from impactlab.sweep import flag_counts, status_counts
+    from impactlab.sweep import status_counts
     from impactlab.sweep.display import run_throughput, throughput_text, warm_up_s
-    from impactlab.sweep.summary import format_flag_counts
+    from impactlab.sweep.summary import dataset_flag_counts, format_flag_counts
 
     s = res.stats
     summary: dict[str, Any] = {
@@ -103,7 +103,7 @@ def run_summary(
         "status": status_counts(ds),
     }
     if "flags" in ds.data_vars:
-        counts = flag_counts(ds["flags"].values, ds["flags"].attrs)
+        counts = dataset_flag_counts(ds)
         summary["flagged"] = flagged_json(counts) if as_json else format_flag_counts(counts)
     if netcdf is not None:
         summary["netcdf"] = str(netcdf)

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import json
 import os
-from collections.abc import Callable, Iterator, Mapping
+from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import Any
 
@@ -16,6 +16,7 @@ import numpy as np
 import xarray as xr
 
 from impactlab.sweep.inputs import INPUTS
+from impactlab.sweep.slabs import slabs, store_chunks
 
 __all__ = [
     "CSV_BLOCK_CASES",
@@ -91,7 +92,7 @@ def export_netcdf(ds: xr.Dataset, path: str | Path) -> Path:
     coords = {str(k): plain(v.variable) for k, v in ds.coords.items()}
     data = {str(k): plain(v.variable) for k, v in ds.data_vars.items()}
     plain_ds = xr.Dataset(data, coords=coords, attrs=attrs(ds.attrs))
-    encoding = _nc_encoding(plain_ds, _case_dims(ds), _store_chunks(ds))
+    encoding = _nc_encoding(plain_ds, _case_dims(ds), store_chunks(ds))
     _atomic(out, lambda tmp: _write_netcdf(plain_ds, tmp, encoding))
     return out
 
@@ -145,7 +146,7 @@ def export_csv(ds: xr.Dataset, path: str | Path) -> Path:
     def write(tmp: Path) -> None:
         with tmp.open("w", encoding="utf-8", newline="") as fh:
             names: list[str] = []
-            for i, slab in enumerate(_slabs(shape, CSV_BLOCK_CASES, _store_chunks(ds))):
+            for i, slab in enumerate(slabs(shape, CSV_BLOCK_CASES, store_chunks(ds))):
                 block = ds.isel(dict(zip(dims, slab, strict=True))).load()
                 table = block.to_dataframe(dim_order=dims).reset_index()
                 if i == 0:
@@ -161,37 +162,6 @@ def export_csv(ds: xr.Dataset, path: str | Path) -> Path:
 def _case_dims(ds: xr.Dataset) -> list[str]:
     """The dimensions of the case array (``status``'s; the Dataset's without one)."""
     return [str(d) for d in (ds["status"].dims if "status" in ds else ds.dims)]
-
-
-def _store_chunks(ds: xr.Dataset) -> tuple[int, ...] | None:
-    """The store's chunk shape (``status``'s Zarr chunks), None for a Dataset not read from one."""
-    if "status" not in ds:
-        return None
-    chunks = ds["status"].encoding.get("chunks")
-    return tuple(int(c) for c in chunks) if chunks else None
-
-
-def _slabs(
-    shape: tuple[int, ...], limit: int, chunks: tuple[int, ...] | None = None
-) -> Iterator[tuple[slice, ...]]:
-    """Blocks of an array of ``shape`` that cover it in C order, one after the other, each of at
-    most ``limit`` cases (at least 1): whole trailing dimensions, a run along the next one (a
-    multiple of ``chunks`` along it where it fits) and single indices before it."""
-    n = len(shape)
-    if n == 0 or 0 in shape:
-        yield tuple(slice(0, s) for s in shape)
-        return
-    k = 0
-    while k < n - 1 and int(np.prod(shape[k + 1 :], dtype=np.int64)) > limit:
-        k += 1
-    step = max(1, limit // int(np.prod(shape[k + 1 :], dtype=np.int64)))
-    if chunks is not None and 0 < chunks[k] <= step:
-        step -= step % chunks[k]
-    tail = (slice(None),) * (n - k - 1)
-    for lead in np.ndindex(*shape[:k]):
-        head = tuple(slice(i, i + 1) for i in lead)
-        for a in range(0, shape[k], step):
-            yield (*head, slice(a, min(a + step, shape[k])), *tail)
 
 
 def _atomic(out: Path, write: Callable[[Path], None]) -> None:

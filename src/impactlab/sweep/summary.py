@@ -4,7 +4,8 @@ longer match their checksums) are reported, and left out of the counts."""
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections import Counter
+from collections.abc import Iterable, Iterator, Mapping
 from pathlib import Path
 from typing import Any
 
@@ -14,21 +15,42 @@ import zarr
 from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
 from impactlab.sweep.dimensions import Layout
 from impactlab.sweep.integrity import describe
+from impactlab.sweep.slabs import slabs, store_chunks
 from impactlab.sweep.status import STATUS_NOT_RUN
 from impactlab.sweep.store import SweepStore, open_sweep
 
+#: At most this many cases of a store are in memory at a time while they are counted.
+COUNT_BLOCK_CASES = 1 << 20
 
-def _counts(values: np.ndarray, msgs: Mapping[str, str]) -> dict[str, int]:
-    codes, counts = np.unique(values, return_counts=True)
-    return {
-        f"{int(c)}: {msgs.get(str(int(c)), '?')}": int(n)
-        for c, n in zip(codes, counts, strict=True)
-    }
+
+def _blocks(ds: Any, name: str) -> Iterator[np.ndarray]:
+    """The values of ``ds[name]`` (the case array) a block at a time (``slabs``)."""
+    var = ds[name]
+    for slab in slabs(tuple(var.shape), COUNT_BLOCK_CASES, store_chunks(ds)):
+        yield np.asarray(var[slab].values).ravel()
+
+
+def _counts(blocks: Iterable[np.ndarray], msgs: Mapping[str, str]) -> dict[str, int]:
+    tally: Counter[int] = Counter()
+    for values in blocks:
+        codes, counts = np.unique(values, return_counts=True)
+        tally.update({int(c): int(n) for c, n in zip(codes, counts, strict=True)})
+    return {f"{c}: {msgs.get(str(c), '?')}": tally[c] for c in sorted(tally)}
 
 
 def status_counts(ds: Any) -> dict[str, int]:
-    """Number of cases per status, keyed "<code>: <message>" (code 0: ok)."""
-    return _counts(np.asarray(ds["status"].values), ds.attrs.get("status_messages", {}))
+    """Number of cases per status, keyed "<code>: <message>" (code 0: ok); a store is read a
+    block at a time (``COUNT_BLOCK_CASES``)."""
+    return _counts(_blocks(ds, "status"), ds.attrs.get("status_messages", {}))
+
+
+def dataset_flag_counts(ds: Any) -> dict[str, int]:
+    """``flag_counts`` of the sweep ``ds``'s ``flags``, a block at a time."""
+    attrs = ds["flags"].attrs
+    total: Counter[str] = Counter()
+    for values in _blocks(ds, "flags"):
+        total.update(flag_counts(values, attrs))
+    return {"flagged": total["flagged"]} | {name: total[name] for _, name in _flag_bits(attrs)}
 
 
 #: Each flag's label in the counts (its message's head: "gravity-dominated", "beyond the tip"),
@@ -76,17 +98,11 @@ def format_flag_counts(counts: Mapping[str, int]) -> str:
 
 
 def _intact_values(path: Path, name: str, damaged: set[int], done: set[int]) -> np.ndarray:
-    """The values of array ``name``, chunk by chunk, leaving out the damaged chunks (reading
-    them could fail); a chunk without its completion marker reads -1 (status: not computed;
-    an integer output: no result), as ``open_sweep`` reads it."""
+    """The values of array ``name`` of a store with damaged chunks, chunk by chunk, leaving
+    those out (reading them could fail); a chunk without its completion marker reads -1
+    (status: not computed; an integer output: no result), as ``open_sweep`` reads it."""
     z = zarr.open_array(str(path / name), mode="r")
     lay = Layout(tuple(f"dim_{i}" for i in range(z.ndim)), tuple(z.shape), tuple(z.chunks))
-    undone = [k for k in range(lay.n_chunks) if k not in done]
-    if not damaged:
-        values = np.asarray(z[...])
-        for k in undone:
-            values[lay.block(k)] = STATUS_NOT_RUN
-        return values.ravel()
     parts = [
         np.full(lay.block_size(k), STATUS_NOT_RUN, dtype=z.dtype)
         if k not in done
@@ -119,9 +135,14 @@ def store_info(path: str | Path) -> dict[str, Any]:
             f"again into this store to recompute them"
         )
     info["outputs"] = list(ds.attrs.get("outputs", []))
+    if not damaged:  # the lazy Dataset, a block at a time
+        info["status"] = status_counts(ds)
+        if "flags" in ds.data_vars:
+            info["flagged"] = format_flag_counts(dataset_flag_counts(ds))
+        return info
     msgs = ds.attrs.get("status_messages", {})
     marked = store.done_chunks()
-    info["status"] = _counts(_intact_values(p, "status", set(damaged), marked), msgs)
+    info["status"] = _counts([_intact_values(p, "status", set(damaged), marked)], msgs)
     if "flags" in ds.data_vars:
         flags = _intact_values(p, "flags", set(damaged), marked)
         info["flagged"] = format_flag_counts(flag_counts(flags, ds["flags"].attrs))
