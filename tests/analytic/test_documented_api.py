@@ -24,7 +24,7 @@ CliMain = Callable[..., tuple[int, str, str]]
 
 def _api_block() -> str:
     section = ANALYTIC.split("## 9. API", 1)[1]
-    return section.split("```python", 1)[1].split("```", 1)[0]
+    return section.split("```text", 1)[1].split("```", 1)[0]  # a listing, not Python
 
 
 def _documented_signatures() -> dict[str, list[str]]:

@@ -189,8 +189,9 @@ def test_batch_flags_and_flagged() -> None:
     np.testing.assert_array_equal(b.ok[:3], single)
     assert np.isnan(b["flags"][3])  # a failed case has no outputs, its status says why
     assert "3 computed, 1 ok, 3 flagged" in repr(b)
-    df = b.to_dataframe()  # integer codes stay integers; a failed case's are missing
-    assert [str(df[name].dtype) for name in ("flags", "regime", "n_steps")] == ["Int64"] * 3
+    df = b.to_dataframe()  # integer codes stay integers, regime by name; a failed case's missing
+    assert [str(df[name].dtype) for name in ("flags", "n_steps")] == ["Int64"] * 2
+    assert str(df["regime"].dtype) == "category" and df["regime"].isna().tolist()[3]
     assert df["flags"].tolist()[:3] == list(b.flags[:3]) and df["flags"].isna().tolist() == [
         False, False, False, True,
     ]  # fmt: skip

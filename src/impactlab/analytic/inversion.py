@@ -4,15 +4,18 @@ for F; first-order propagation (numerical Jacobian) and Monte Carlo."""
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import math
-from collections.abc import Mapping
+import warnings
+from collections.abc import Callable, Mapping
 from types import MappingProxyType
 from typing import Any
 
 import numpy as np
 
 from impactlab._validation import (
+    ImplausibleInputWarning,
     check_flag,
     check_nonnegative,
     check_seed,
@@ -245,19 +248,45 @@ def invert(
 
     Returns an :class:`InversionResult` with ``duration`` and ``mean_force``, their first-order
     and Monte Carlo uncertainties (mean, standard deviation, median, 95 % interval), alpha, K_x,
-    K_y, mu_c and the inputs used (magnitudes; the sensitivities are with respect to them).
+    K_y, mu_c, the inputs used (magnitudes; the sensitivities are with respect to them) and
+    ``warnings``, the texts of the ImplausibleInputWarnings it issued.
 
     Example: ``invert(angle=math.radians(20), v_i=-1.41, e=0.5, mu=0.2, delta_p=22e-6,
     sliding_length=1400e-6).duration`` is about 4.11e-3 s.
     """
     inputs = {"angle": angle, "v_i": v_i, "mu": mu, "delta_p": delta_p}
-    meas = measurements({**inputs, "sliding_length": sliding_length, "e": e, "dv_cy": dv_cy})
-    opt = _options(n_samples, seed, gravity, g, measure)
-    m, L, R, inertia = _scalar_rod(rod)
-    check_plausible(meas, L, R)
-    coef = _nominal_coefficients(meas, m, L, R, inertia, opt["travel"])
-    rod_ = {"mass": m, "length": L, "tip_radius": R, "inertia": inertia}
-    return _result(meas, opt, rod_, coef, measure)
+
+    def compute() -> InversionResult:
+        meas = measurements({**inputs, "sliding_length": sliding_length, "e": e, "dv_cy": dv_cy})
+        opt = _options(n_samples, seed, gravity, g, measure)
+        m, L, R, inertia = _scalar_rod(rod)
+        check_plausible(meas, L, R)
+        coef = _nominal_coefficients(meas, m, L, R, inertia, opt["travel"])
+        rod_ = {"mass": m, "length": L, "tip_radius": R, "inertia": inertia}
+        return _result(meas, opt, rod_, coef, measure)
+
+    return _recording(compute)
+
+
+def _recording(compute: Callable[[], InversionResult]) -> InversionResult:
+    """``compute()`` with the texts of its ImplausibleInputWarnings in the result's
+    ``warnings`` (what ``impactlab invert --json`` lists). Each is still issued, at the
+    caller's line and through the caller's filters, also when ``compute`` raises; any other
+    warning is shown as Python shows it."""
+    caught: list[warnings.WarningMessage] = []
+    texts: list[str] = []
+    try:
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always", ImplausibleInputWarning)
+            result = compute()
+    finally:
+        for w in caught:
+            if issubclass(w.category, ImplausibleInputWarning):
+                texts.append(str(w.message))
+                warn_implausible(texts[-1])
+            else:
+                warnings.showwarning(w.message, w.category, w.filename, w.lineno, w.file, w.line)
+    return dataclasses.replace(result, warnings=tuple(texts))
 
 
 def _result(

@@ -6,7 +6,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
-from impactlab._display import field_row, format_number, html_table
+from impactlab._display import field_row, field_rows, format_number, html_table
 from impactlab._validation import check_finite, check_nonnegative
 
 __all__ = ["MC_INTERVAL", "InversionResult", "Measured", "measured"]
@@ -14,12 +14,15 @@ __all__ = ["MC_INTERVAL", "InversionResult", "Measured", "measured"]
 #: The percentiles [%] of the Monte Carlo's interval (``T_interval_mc``, ``F_interval_mc``): the
 #: central 95 %.
 MC_INTERVAL = (2.5, 97.5)
-#: Units of the scalar fields of :class:`InversionResult` (for the HTML table).
+#: Units of the numeric fields of :class:`InversionResult` (for its tables).
 _UNITS = {
     k: unit
     for unit, keys in (
-        ("s", ("duration", "sigma_T_linear", "T_mc", "sigma_T_mc", "T_median_mc")),
-        ("N", ("mean_force", "sigma_F_linear", "F_mc", "sigma_F_mc", "F_median_mc")),
+        ("s", ("duration", "sigma_T_linear", "T_mc", "sigma_T_mc", "T_median_mc", "T_interval_mc")),
+        (
+            "N",
+            ("mean_force", "sigma_F_linear", "F_mc", "sigma_F_mc", "F_median_mc", "F_interval_mc"),
+        ),
         ("N", ("F_momentum", "F_rigid")),
         ("1/kg", ("K_x", "K_y")),
     )
@@ -84,7 +87,12 @@ class InversionResult:
     ``gravity``; ``measure`` ("slip" or "travel", what the sliding length measures); ``inputs``
     (name -> (value, sigma) in SI, magnitudes as used: ``angle``, ``v_i``, ``mu``, ``delta_p``,
     ``sliding_length``, ``e``, ``dv_cy``); ``rod`` (mass, length, tip_radius, inertia);
-    ``sensitivity_T``, ``sensitivity_F`` (partial derivatives with respect to each input, SI).
+    ``sensitivity_T``, ``sensitivity_F`` (partial derivatives with respect to each input, SI);
+    ``warnings``: the texts of the inversion's ImplausibleInputWarnings (as ``impactlab invert
+    --json`` lists them; ``()`` for none). ``print(result)`` and Jupyter's table show the
+    inputs, T and F with their uncertainties, the Monte Carlo's medians and 95 % intervals
+    (where an input has a sigma), the note on discarded samples and the warnings; ``repr`` is
+    one line.
     """
 
     duration: float
@@ -116,14 +124,75 @@ class InversionResult:
     rod: Mapping[str, float] = field(repr=False)
     sensitivity_T: Mapping[str, float] = field(repr=False)
     sensitivity_F: Mapping[str, float] = field(repr=False)
+    warnings: tuple[str, ...] = field(default=(), repr=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "warnings", tuple(str(w) for w in self.warnings))
+
+    def _uncertain(self) -> bool:
+        """Whether an input has a sigma (the Monte Carlo ran)."""
+        return any(s > 0 for _v, s in self.inputs.values())
+
+    def _note(self) -> str:
+        """The share of Monte Carlo samples discarded, one sentence (``""`` for none)."""
+        if not (self._uncertain() and self.mc_rejected > 0):
+            return ""
+        return (
+            f"{self.mc_rejected:.2%} of the {self.n_samples} Monte Carlo samples fell in the "
+            f"sticking regime or out of range and were discarded ({self.mc_used} used)"
+        )
+
+    def _rows(self) -> list[tuple[str, str, str]]:
+        """``(name, text, unit)`` rows in display units: the inputs, T and F (± first order),
+        the Monte Carlo's (where an input has a sigma), the coefficients, the note and the
+        warnings (the rows of ``impactlab invert``'s table)."""
+        uncertain = self._uncertain()
+        rows = [field_row(k, float(v), _INPUT_UNITS[k], s) for k, (v, s) in self.inputs.items()]
+        out: dict[str, Any] = {"duration": self.duration, "mean_force": self.mean_force}
+        out["force_method"] = self.force_method
+        if self.F_momentum is not None and self.F_rigid is not None:  # both inputs given
+            out["F_rigid"] = self.F_rigid
+        sigmas = {"duration": self.sigma_T_linear, "mean_force": self.sigma_F_linear}
+        if uncertain:
+            for q in ("T", "F"):
+                out |= {f"{q}_mc": getattr(self, f"{q}_mc")}
+                out |= {f"{q}_{k}_mc": getattr(self, f"{q}_{k}_mc") for k in ("median", "interval")}
+            sigmas |= {"T_mc": self.sigma_T_mc, "F_mc": self.sigma_F_mc}
+            out |= {"n_samples": self.n_samples, "mc_used": self.mc_used, "seed": self.seed}
+        out |= {"alpha": self.alpha, "mu_c": self.mu_c, "K_x": self.K_x, "K_y": self.K_y}
+        out["gravity"] = "included" if self.gravity else "neglected (paper)"
+        out["measure"] = self.measure
+        rows += field_rows(out, _UNITS, sigmas)
+        rows += [("note", self._note(), "")] if self._note() else []
+        return rows + [("warning", text, "") for text in self.warnings]
 
     def _repr_html_(self) -> str:
-        rows = [
-            field_row(k, v, _UNITS.get(k, "1"))
-            for k, v in self.to_dict().items()
-            if isinstance(v, int | float) and not isinstance(v, bool)
+        title = "InversionResult (paper Eqs. 12, 29)"
+        if self._uncertain():
+            lo, hi = MC_INTERVAL
+            title += (
+                ": ± first order; T_mc, F_mc: Monte Carlo mean ± sigma; *_median_mc: median; "
+                f"*_interval_mc: 95 % ({lo:g}-{hi:g} percentiles)"
+            )
+        return html_table(title, self._rows())
+
+    def __repr__(self) -> str:
+        """One line: T and F with their first-order sigma, the force method, the Monte Carlo's
+        samples used (where it ran) and the number of warnings."""
+
+        def pm(name: str, value: float, sigma: float, unit: str) -> str:
+            return f"{name}={value:.6g}" + (f" ± {sigma:.2g}" if sigma > 0 else "") + f" {unit}"
+
+        parts = [
+            pm("duration", self.duration, self.sigma_T_linear, "s"),
+            pm("mean_force", self.mean_force, self.sigma_F_linear, "N"),
+            f"force_method={self.force_method!r}",
         ]
-        return html_table("InversionResult", rows)
+        if self._uncertain():
+            parts.append(f"mc_used={self.mc_used} of {self.n_samples}")
+        if self.warnings:
+            parts.append(f"{len(self.warnings)} warning" + "s" * (len(self.warnings) > 1))
+        return f"InversionResult({', '.join(parts)})"
 
     def to_dict(self) -> dict[str, Any]:
         """Plain, JSON-ready dictionary (SI units; see the class docstring)."""
@@ -187,10 +256,7 @@ class InversionResult:
         if self.F_momentum is not None and self.F_rigid is not None:  # both inputs given
             rigid = format_number(self.F_rigid)
             lines.append(f"  F from the rigid-body identity (with e): {rigid} N")
-        if uncertain and self.mc_rejected > 0:
-            lines.append(
-                f"  note: {self.mc_rejected:.2%} of the {self.n_samples} Monte Carlo samples "
-                f"fell in the sticking regime or out of range and were discarded "
-                f"({self.mc_used} used)"
-            )
+        if self._note():
+            lines.append(f"  note: {self._note()}")
+        lines += [f"  warning: {text}" for text in self.warnings]
         return "\n".join(lines)

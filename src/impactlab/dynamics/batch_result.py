@@ -10,6 +10,13 @@ import numpy as np
 
 from impactlab import schema
 from impactlab.dynamics.batch import blank_failed
+from impactlab.dynamics.batch_fields import (
+    batch_counts,
+    field_dir,
+    no_field,
+    regime_series,
+    with_units,
+)
 from impactlab.dynamics.batch_status import (
     INTEGER_FIELDS,
     BatchStatus,
@@ -31,7 +38,8 @@ __all__ = ["BatchResult"]
 class BatchResult(BatchStatus):
     """Results of ``simulate_batch``: ``out`` (N, len(OUTPUT_FIELDS)) and ``status`` (N,).
 
-    Fields are available by name (``batch["e"]`` or ``batch.e``); cases with a non-zero status
+    Fields are available by name (``batch["e"]`` or ``batch.e``, listed by ``dir()``; another
+    name: AttributeError with the nearest field); cases with a non-zero status
     hold NaN results (see ``messages``), except the incoming ``vn_in`` and ``vt_in``, which are
     kept wherever the inputs define them (a case refused for ``vn_in >= 0`` shows why): what a
     failed case reached before it stopped (delta_max, max_force, ...) is no result, and reads
@@ -85,6 +93,13 @@ class BatchResult(BatchStatus):
             known = ", ".join((*OUTPUT_FIELDS, *schema.DERIVED_FIELDS))
             raise KeyError(f"unknown field {name!r}; known: {known}") from None
 
+    def _fields(self) -> tuple[str, ...]:
+        """The names read as ``batch[name]`` or ``batch.name``: inputs, outputs, derived."""
+        return (*self.inputs, *OUTPUT_FIELDS, *schema.DERIVED_FIELDS)
+
+    def __dir__(self) -> list[str]:
+        return field_dir(self, self._fields())
+
     def __getattr__(self, name: str) -> np.ndarray:
         if name.startswith("_") or name in (
             "out",
@@ -100,7 +115,7 @@ class BatchResult(BatchStatus):
         try:
             return self[name]
         except KeyError:
-            raise AttributeError(name) from None
+            raise no_field(self, name, self._fields()) from None
 
     def dois(self) -> tuple[str, ...]:
         """DOIs of ``references``, in order, without repeats."""
@@ -119,20 +134,24 @@ class BatchResult(BatchStatus):
         return self["vx_out"], self["vy_out"]
 
     def to_dataframe(self) -> Any:
-        """A pandas DataFrame: inputs, outputs and status per case (``regime``, ``flags`` and
-        ``n_steps`` as nullable integers, ``<NA>`` where a case failed)."""
+        """A pandas DataFrame: inputs, outputs and status per case, SI units in
+        ``df.attrs["units"]`` (column -> unit, ``impactlab.schema``); ``regime`` as a categorical
+        of the regime names (``"slip"``, as ``ImpactResult.regime``), ``flags`` and ``n_steps``
+        as nullable integers, each ``<NA>`` where a case failed."""
         import pandas as pd  # heavy, needed only here
 
         df = pd.DataFrame({k: np.array(v) for k, v in self.inputs.items()})
         for j, name in enumerate(OUTPUT_FIELDS):
-            if name in INTEGER_FIELDS:
+            if name == "regime":
+                df[name] = regime_series(self.out[:, j], self.computed)
+            elif name in INTEGER_FIELDS:
                 df[name] = integer_series(self.out[:, j], self.computed)
             else:
                 df[name] = np.array(self.out[:, j])
         for name in schema.DERIVED_FIELDS:
             df[name] = self[name]
         df["status"] = np.array(self.status)
-        return df
+        return with_units(df, schema.unit)
 
     def to_xarray(self) -> Any:
         """An ``xarray.Dataset`` over ``case`` (units in attributes; ``dynamics.export``)."""
@@ -160,9 +179,4 @@ class BatchResult(BatchStatus):
         return batch_html(self)
 
     def __repr__(self) -> str:
-        masks = (("computed", self.computed), ("ok", self.ok), ("flagged", self.flagged))
-        counts = ", ".join(f"{int(np.count_nonzero(mask))} {name}" for name, mask in masks)
-        return (
-            f"BatchResult({len(self)} cases, {counts}, law={self.law!r}, "
-            f"friction={self.friction!r})"
-        )
+        return f"BatchResult({batch_counts(self)}, law={self.law!r}, friction={self.friction!r})"

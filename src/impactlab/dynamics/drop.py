@@ -67,6 +67,7 @@ from impactlab.dynamics.input_checks import (
     warn_fast,
 )
 from impactlab.dynamics.kernels.layout import MU_NEGLIGIBLE
+from impactlab.dynamics.keyword_hints import split_velocity
 from impactlab.dynamics.models import (
     body_params,
     build_contact_model,
@@ -288,6 +289,8 @@ def simulate_drop(
     t_max: Any = DEFAULT_T_MAX,
     speed: Any = None,
     incidence: Any = None,
+    vx: Any = None,
+    vy: Any = None,
 ) -> DropResult:
     """Simulate the drop of ``body`` on ``flat`` from the first touch of its tip (end 0, at
     delta = 0, undeformed, modes at rest) until it leaves the flat for good (SI units).
@@ -299,7 +302,8 @@ def simulate_drop(
     angle [rad] in (0, pi/2]; velocity (vx, vy) of the centre of mass at first touch [m/s], or
     instead ``speed`` [m/s] and ``incidence`` [rad], its angle to the flat's normal (vx = speed
     sin(incidence), vy = -speed cos(incidence); the rule and errors of ``impactlab.simulate``,
-    ``checks.velocity_from``); spin [rad/s]; gravity: True, False or a value [m/s^2]; rate:
+    ``checks.velocity_from``; ``vx=``/``vy=``, ``simulate_drops``' arrays, are refused with a
+    ValueError that says so); spin [rad/s]; gravity: True, False or a value [m/s^2]; rate:
     None or ``"none"``, ``"cowper-symonds"``, ``"johnson-cook"``, a RateLaw
     (``RateLaw.custom``) or the text a result's ``rate`` shows (``contact.rate.get_rate_law``;
     the flat's yield strength raised by the self-consistent rate factor); rtol: relative
@@ -318,6 +322,9 @@ def simulate_drop(
     1e-5) or a failed integration (``DropError``); an ImplausibleInputWarning for an impact
     speed above 100 m/s.
     """
+    if vx is not None or vy is not None:  # simulate_drops' names: one drop takes a pair
+        given = [k for k, v in (("vx", vx), ("vy", vy)) if v is not None]
+        raise ValueError(split_velocity("simulate_drop", given, "simulate_drops"))
     body = check_body(body)  # first: a sphere is refused before what a rod's drop needs
     velocity = velocity_from(velocity, speed, incidence)
     bm = body_model(body)

@@ -25,16 +25,20 @@ from impactlab.contact import ContactModel
 from impactlab.contact.brittle import brittle_flags, brittle_pressure
 from impactlab.contact.range_note import range_note
 from impactlab.contact.ranges import delta_ratio, extrapolation_flags
-from impactlab.dynamics.batch_status import (
-    INTEGER_FIELDS,
-    BatchStatus,
-    batch_summary_html,
-    flag_column,
-    integer_series,
-)
+from impactlab.dynamics.batch_fields import batch_counts, field_dir, no_field
+from impactlab.dynamics.batch_status import BatchStatus, batch_summary_html, flag_column
 from impactlab.dynamics.checks import checked_model
 from impactlab.dynamics.derived import batch_derived
 from impactlab.dynamics.drop import DEFAULT_T_MAX
+from impactlab.dynamics.drop_batch_data import (
+    DATASET_OUTPUTS,
+    DROP_BATCH_FIELDS,
+    ENGINE_NAME,
+    PUBLIC_FIELDS,
+    drop_dataframe,
+    drop_dataset,
+    output_unit,
+)
 from impactlab.dynamics.drop_body import body_model
 from impactlab.dynamics.drop_checks import (
     check_body,
@@ -47,7 +51,6 @@ from impactlab.dynamics.drop_checks import (
     input_status,
     refuse_rate,
 )
-from impactlab.dynamics.export import flag_attrs, status_attrs
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.batch import (
     CK_E0,
@@ -72,67 +75,6 @@ from impactlab.references import dois as doi_list
 
 __all__ = ["DropBatchResult", "input_status", "simulate_drops"]
 
-#: The outputs of each case, in the columns of ``DropBatchResult.out`` (the engine's names).
-DROP_BATCH_FIELDS = F.DROP_OUTPUT_FIELDS
-#: The public name of each column, as ``DropResult`` has them (the sequence totals renamed,
-#: ``schema.RENAMED_DROP_FIELDS``), and the ratio ``sequence_mean_force``.
-PUBLIC_FIELDS = (
-    *(schema.RENAMED_DROP_FIELDS.get(n, n) for n in DROP_BATCH_FIELDS),
-    "sequence_mean_force",
-)
-_ENGINE_NAME = {new: old for old, new in schema.RENAMED_DROP_FIELDS.items()}
-#: The outputs of ``to_xarray`` and ``to_pint``.
-_DATASET_OUTPUTS = (*PUBLIC_FIELDS, "initial_energy", "max_delta_ratio")
-#: The engine's own unit and meaning of each column (``flexcore.layout.DROP_FIELDS``).
-_ENGINE_FIELDS = {f.name: f for f in F.DROP_FIELDS}
-
-
-def output_unit(name: str) -> tuple[str, str]:
-    """(SI unit, meaning) of an output of ``DropBatchResult`` (``impactlab.schema``, else the
-    engine's column: ``n_jumps``, ``n_dents``, ``t_final``)."""
-    try:
-        return schema.unit(name), schema.DROP_MEANINGS.get(name) or schema.description(name)
-    except KeyError:
-        f = _ENGINE_FIELDS[_ENGINE_NAME.get(name, name)]
-        return f.unit, f.description
-
-
-def drop_dataset(drops: DropBatchResult) -> Any:
-    """``DropBatchResult.to_xarray``: the conventions of ``export.batch_dataset``."""
-    import xarray as xr  # heavy, needed only here
-
-    status = np.asarray(drops.status)
-    failed = status != 0
-    variables: dict[str, Any] = {}
-    for name, v in drops.inputs.items():
-        unit, meaning = output_unit(name)
-        variables[name] = ("case", np.array(v), {"units": unit, "long_name": f"input: {meaning}"})
-    for name in (*_DATASET_OUTPUTS, *schema.DERIVED_FIELDS):  # schema.register_output
-        unit, meaning = output_unit(name)
-        attrs: dict[str, Any] = {"units": unit, "long_name": meaning}
-        values = np.array(drops[name], dtype=np.float64)
-        if name in INTEGER_FIELDS:  # counts, and next_end (-1: no end lands next)
-            attrs["comment"] = "-2: the case failed (see status)"
-            values = np.where(failed, -2, values).astype(np.int64)
-        variables[name] = ("case", values, attrs)
-    flags = np.where(failed, -1, np.asarray(drops.flags)).astype(np.int64)
-    unit, meaning = output_unit("flags")
-    flag_meta = {"units": unit, "long_name": meaning, **flag_attrs()}
-    variables["flags"] = (
-        "case",
-        flags,
-        flag_meta | {"comment": "-1: the case failed (see status)"},
-    )
-    variables["status"] = ("case", status.astype(np.int32), status_attrs())
-    attrs = {"body": drops.body, "law": drops.law, "friction": drops.friction}
-    attrs |= {"gravity": drops.gravity, "rtol": drops.rtol}
-    attrs |= {"references": [r.key for r in drops.references]}
-    attrs |= {"dois": [r.doi for r in drops.references if r.doi]}
-    attrs |= {"source": "impactlab.simulate_drops"}
-    if drops.law_range is not None:
-        attrs["law_range"] = drops.law_range
-    return xr.Dataset(variables, coords={"case": np.arange(status.shape[0])}, attrs=attrs)
-
 
 @dataclass(frozen=True)
 class DropBatchResult(BatchStatus):
@@ -141,7 +83,8 @@ class DropBatchResult(BatchStatus):
     ``flags`` (N,) the ``ResultFlag`` bits (int64), ``initial_energy`` [J] and ``max_delta_ratio``
     (delta_max / delta_ref) per case; NaN (flags 0) where a case failed.
 
-    Fields by name: ``drops["e"]`` or ``drops.e``, the inputs (``angle``, ``vx``, ``vy``,
+    Fields by name (listed by ``dir()``; another name: AttributeError with the nearest field):
+    ``drops["e"]`` or ``drops.e``, the inputs (``angle``, ``vx``, ``vy``,
     ``spin``, ``mu``), ``velocity_out`` (vx_out, vy_out), the sequence totals
     (``sequence_duration``, ``dent_depth``, ``sequence_sliding_length``,
     ``sequence_mean_force`` = P_n / sequence_duration) as ``DropResult`` has them; the names
@@ -179,7 +122,7 @@ class DropBatchResult(BatchStatus):
         return int(self.status.shape[0])
 
     def __getitem__(self, name: str) -> np.ndarray:
-        old = _ENGINE_NAME.get(name)
+        old = ENGINE_NAME.get(name)
         if old is not None:  # a sequence total: the engine's column under its own name
             return self.sequence_mean_force if old == "mean_force" else self._column(old)
         new = schema.RENAMED_DROP_FIELDS.get(name)
@@ -207,13 +150,21 @@ class DropBatchResult(BatchStatus):
         keep = name in DROP_BATCH_FIELDS and name not in schema.RENAMED_DROP_FIELDS
         return self._column(name) if keep else np.full(len(self), np.nan)  # NaN: a drop has none
 
+    def _fields(self) -> tuple[str, ...]:
+        """The names read as ``drops[name]`` or ``drops.name``: inputs, outputs, derived."""
+        extra = ("initial_energy", "max_delta_ratio")
+        return (*self.inputs, *PUBLIC_FIELDS, *extra, *schema.DERIVED_FIELDS)
+
+    def __dir__(self) -> list[str]:
+        return field_dir(self, self._fields())
+
     def __getattr__(self, name: str) -> np.ndarray:
         if name.startswith("_") or name in ("out", "status", "inputs"):
             raise AttributeError(name)
         try:
             return self[name]
         except KeyError:
-            raise AttributeError(name) from None
+            raise no_field(self, name, self._fields()) from None
 
     @property
     def velocity_out(self) -> tuple[np.ndarray, np.ndarray]:
@@ -226,19 +177,10 @@ class DropBatchResult(BatchStatus):
         return self._column("normal_impulse") / self._column("duration")
 
     def to_dataframe(self) -> Any:
-        """A pandas DataFrame: inputs, outputs (``PUBLIC_FIELDS``), status and flags per case
-        (counts, codes and ``flags`` as nullable integers, ``<NA>`` where a case failed)."""
-        import pandas as pd  # heavy, needed only here
-
-        df = pd.DataFrame({k: np.array(v) for k, v in self.inputs.items()})
-        for name in (*PUBLIC_FIELDS, *schema.DERIVED_FIELDS):  # schema.register_output too
-            if name in INTEGER_FIELDS:
-                df[name] = integer_series(self[name], self.computed)
-            else:
-                df[name] = np.array(self[name])
-        df["status"] = np.array(self.status)
-        df["flags"] = integer_series(self.flags, self.computed)
-        return df
+        """A pandas DataFrame: inputs, outputs (``PUBLIC_FIELDS``), status and flags per case,
+        SI units in ``df.attrs["units"]`` (column -> unit); counts, codes and ``flags`` as
+        nullable integers, ``<NA>`` where a case failed (``drop_batch_data.drop_dataframe``)."""
+        return drop_dataframe(self)
 
     def to_xarray(self) -> Any:
         """An ``xarray.Dataset`` over ``case``, as ``BatchResult.to_xarray``: the inputs and
@@ -258,7 +200,7 @@ class DropBatchResult(BatchStatus):
         ureg = shared() if registry is None else registry
         return {
             name: ureg.Quantity(np.array(self[name]), pint_unit(output_unit(name)[0]))
-            for name in (*_DATASET_OUTPUTS, *schema.DERIVED_FIELDS)
+            for name in (*DATASET_OUTPUTS, *schema.DERIVED_FIELDS)
         }
 
     def dois(self) -> tuple[str, ...]:
@@ -267,6 +209,13 @@ class DropBatchResult(BatchStatus):
 
     def _repr_html_(self) -> str:  # BatchResult's notebook summary, the sequence totals' names
         return batch_summary_html(self, schema.RENAMED_DROP_FIELDS)
+
+    def __repr__(self) -> str:
+        """One line: the counts (as ``BatchResult``'s), law, friction, body, gravity, rtol."""
+        return (
+            f"DropBatchResult({batch_counts(self)}, law={self.law!r}, friction={self.friction!r}"
+            f", body={self.body!r}, gravity={self.gravity:.6g} m/s^2, rtol={self.rtol:g})"
+        )
 
 
 def simulate_drops(

@@ -16,17 +16,48 @@ from typing import Any
 import numpy as np
 
 from impactlab._mpl import pyplot
+from impactlab.dynamics.drop_result import DropResult
 from impactlab.dynamics.results import History, ImpactResult
 
 
+class NotPlottableError(TypeError, ValueError):
+    """A result these figures do not draw: a TypeError (a ValueError too, as the refusal of a
+    drop's ``DropResult`` was before)."""
+
+
+def _what_it_is(result: Any) -> str:
+    """``"a BatchResult of 3 cases: ..."``: what was passed, and what to do instead."""
+    name = type(result).__name__
+    if name in ("BatchResult", "DropBatchResult"):  # a batch keeps no history
+        drop = name == "DropBatchResult"
+        return (
+            f"a {name} of {len(result)} cases (a batch keeps no history and no dent): simulate "
+            f"one case with history to plot it, impactlab.{'simulate_drop' if drop else 'simulate'}"
+            f"(body, flat, law={result.law!r}, friction={result.friction!r}, mu=batch.mu[i], "
+            "angle=batch.angle[i], velocity=(batch.vx[i], batch.vy[i]), spin=batch.spin[i])"
+            + ("; of its DropResult plot_dent draws the dent" if drop else "")
+        )
+    if name == "InversionResult":
+        return (
+            "an InversionResult (T and F inverted from a measured dent: no history to draw; "
+            "the measured dent's map: "
+            "impactlab.experiment.plot_dent(measure_dent(read_scan(path))))"
+        )
+    if name == "DropResult":
+        return (
+            "a DropResult: plot_dent(result) draws its dent; its forces per end are columns "
+            "of result.history (t, normal_force_0, penetration_0, ...)"
+        )
+    return f"a {name}"
+
+
 def _impact(result: Any, what: str) -> ImpactResult:
-    """``result`` if it is an ImpactResult; one-line ValueError naming its type otherwise (a
-    drop's ``DropResult`` has its contacts' forces per end, not one contact's)."""
+    """``result`` if it is an ImpactResult; else a one-line :class:`NotPlottableError` naming
+    what it is and what to do instead (a drop's ``DropResult`` has its contacts' forces per
+    end, not one contact's; a batch has no history)."""
     if not isinstance(result, ImpactResult):
-        raise ValueError(
-            f"{what} takes an ImpactResult (simulate of a Rod or Sphere), got a "
-            f"{type(result).__name__}: plot_dent(result) draws its dent; its forces per end "
-            "are columns of result.history (t, normal_force_0, penetration_0, ...)"
+        raise NotPlottableError(
+            f"{what} takes an ImpactResult (simulate of a Rod or Sphere), got {_what_it_is(result)}"
         )
     return result
 
@@ -117,8 +148,14 @@ def plot_contact_path(result: ImpactResult, ax: Any = None, *, dent: bool = True
     return fig
 
 
-def plot_dent(result: ImpactResult, ax: Any = None) -> Any:
-    """The predicted dent as a filled contour map [um]."""
+def plot_dent(result: ImpactResult | DropResult, ax: Any = None) -> Any:
+    """The predicted dent as a filled contour map [um], of an ImpactResult or a DropResult
+    (:class:`NotPlottableError`, a TypeError, for anything else)."""
+    if not isinstance(result, ImpactResult | DropResult):
+        raise NotPlottableError(
+            f"plot_dent takes an ImpactResult or a DropResult (simulate or simulate_drop, "
+            f"history kept), got {_what_it_is(result)}"
+        )
     dm = result.dent()
     fig, ax = _axes(ax)
     cs = ax.contourf(dm.x * 1e3, dm.y * 1e3, dm.height * 1e6, levels=20, cmap="viridis")
@@ -138,7 +175,8 @@ def save_figures(
     formats: tuple[str, ...] = ("png", "pdf"),
 ) -> list[Path]:
     """Save the force-time, force-penetration, contact-path and dent figures; returns paths.
-    ValueError for a result other than an ImpactResult (a drop: ``plot_dent`` draws its dent)."""
+    :class:`NotPlottableError` (a TypeError and a ValueError) for a result other than an
+    ImpactResult (a drop: ``plot_dent`` draws its dent), before anything is written."""
     _impact(result, "save_figures")
     plt = pyplot()
     out = Path(out_dir)

@@ -39,6 +39,7 @@ from impactlab.dynamics.input_checks import (
 from impactlab.dynamics.kernels import layout as L
 from impactlab.dynamics.kernels import status as S
 from impactlab.dynamics.kernels.inputs import IN_OK, input_problem
+from impactlab.dynamics.keyword_hints import split_velocity
 from impactlab.dynamics.models import (
     body_params,
     engine_setup,
@@ -146,10 +147,7 @@ def simulate(
     """
     split = [k for k in ("vx", "vy") if k in drop_options]
     if split and velocity is None and speed is None:  # simulate_batch's names, given here
-        raise ValueError(
-            f"simulate takes the velocity as one pair, velocity=(vx, vy) [m/s], not "
-            f"{' and '.join(f'{k}=' for k in split)} (the names of simulate_batch's arrays)"
-        )
+        raise ValueError(split_velocity("simulate", split))
     if velocity is None or speed is not None or incidence is not None:
         velocity = velocity_from(velocity, speed, incidence)
     if not isinstance(body, Rod | Sphere | FlexibleRod):
@@ -324,7 +322,8 @@ def rerun(
     --json`` or ``impactlab drop --json``, read with ``json.load``), run by the function it
     names (``simulate``, or ``simulate_drop`` for a drop of a rigid or flexible rod);
     ``changes`` override its arguments (``rerun(r, mu=0.3)``; a new ``velocity`` or ``speed``
-    and ``incidence`` replace the recorded velocity). ValueError when the record is not one,
+    and ``incidence`` replace the recorded velocity: ``vx=``/``vy=`` are refused, with the
+    recorded pair). ValueError when the record is not one,
     or is not a mapping (a file name: ``rerun(json.load(open(path)))``; JSON text:
     ``rerun(json.loads(text))``; ``impactlab simulate --from FILE`` reads a file)."""
     if isinstance(record, ImpactResult | DropResult):  # its record: what to_dict() holds
@@ -348,6 +347,15 @@ def rerun(
             f"{type(record).__name__}"
         )
     args = from_record(record)
+    split = [k for k in ("vx", "vy") if k in changes]
+    if split:  # simulate_batch's names: the recorded velocity is one pair
+        v = args.get("velocity")
+        recorded = "" if v is None else f" ({', '.join(f'{float(c):g}' for c in v)}) m/s"
+        batch = "simulate_drops" if record_function(record) == SIMULATE_DROP else "simulate_batch"
+        raise ValueError(
+            f"{split_velocity('rerun', split, batch)}: velocity=(vx, vy) replaces the recorded "
+            f"velocity{recorded}"
+        )
     if {"speed", "incidence"} & set(changes):
         args.pop("velocity", None)
     args |= changes

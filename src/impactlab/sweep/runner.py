@@ -43,6 +43,7 @@ from rich.progress import (
     TimeRemainingColumn,
 )
 
+from impactlab._display import format_number
 from impactlab.dynamics.input_checks import check_partial_slip_rtol
 from impactlab.sweep.backends import (
     BACKENDS,
@@ -103,6 +104,24 @@ class SweepStats:
         """Cases computed per second of wall time."""
         return self.cases_computed / self.wall_s if self.wall_s > 0 else 0.0
 
+    def __repr__(self) -> str:
+        """One line: the study's cases and chunks, what this run computed, its wall time and
+        throughput, the backend (the per-worker numbers: the attributes)."""
+        repaired = f", {self.chunks_repaired} repaired" if self.chunks_repaired else ""
+        rate = f", {format_number(self.throughput)} impacts/s" if self.cases_computed else ""
+        return (
+            f"SweepStats({_count(self.n_cases, 'case')} in {_count(self.n_chunks, 'chunk')}; "
+            f"this run: {_count(self.cases_computed, 'case')} in "
+            f"{_count(self.chunks_computed, 'chunk')} computed, {self.chunks_before} already "
+            f"stored{repaired}; wall {format_number(self.wall_s)} s{rate}; "
+            f"backend={self.backend!r}, workers={self.workers})"
+        )
+
+
+def _count(n: int, what: str) -> str:
+    """``"1 chunk"``, ``"33 chunks"``."""
+    return f"{n} {what}" + ("" if n == 1 else "s")
+
 
 @dataclass
 class SweepResult:
@@ -119,6 +138,16 @@ class SweepResult:
 
     def _repr_html_(self) -> str:
         return sweep_result_html(self)
+
+    def __repr__(self) -> str:
+        """One line: the store, the study, its size and what this run computed."""
+        st = self.stats
+        return (
+            f"SweepResult(path={str(self.path)!r}, study={self.study.name!r}, "
+            f"{_count(st.n_cases, 'case')} in {_count(st.n_chunks, 'chunk')}; this run: "
+            f"{_count(st.cases_computed, 'case')} computed in {format_number(st.wall_s)} s, "
+            f"backend={st.backend!r})"
+        )
 
     @property
     def complete(self) -> bool:

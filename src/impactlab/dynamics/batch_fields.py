@@ -1,0 +1,57 @@
+"""How a batch of results (``BatchResult``, ``DropBatchResult``) shows itself: its fields in
+``dir()`` and tab completion, the AttributeError of a name it has not (with the nearest field),
+the counts of its one-line ``repr``, and the conventions of its ``to_dataframe`` (SI units in
+``df.attrs["units"]`` and ``regime`` by name, as ``History.to_dataframe`` has them)."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable
+from typing import Any
+
+import numpy as np
+
+from impactlab._validation import did_you_mean
+from impactlab.dynamics.kernels.status import REGIME_NAMES
+
+__all__ = ["batch_counts", "field_dir", "no_field", "regime_series", "with_units"]
+
+
+def field_dir(obj: object, fields: Iterable[str]) -> list[str]:
+    """``dir(obj)`` with the batch's ``fields`` (read as attributes through ``__getattr__``)."""
+    return sorted({*object.__dir__(obj), *fields})
+
+
+def no_field(obj: object, name: str, fields: Iterable[str]) -> AttributeError:
+    """The AttributeError of ``obj.name`` for a name that is no field: the type, the nearest
+    field (``_validation.did_you_mean``) and the known fields."""
+    known = list(dict.fromkeys(fields))
+    return AttributeError(
+        f"{type(obj).__name__} has no field or attribute {name!r}{did_you_mean(name, known)}; "
+        f"its fields: {', '.join(known)}"
+    )
+
+
+def batch_counts(batch: Any) -> str:
+    """``"2 cases, 1 computed, 1 ok, 0 flagged"``: the counts of a batch's one-line ``repr``."""
+    masks = (("computed", batch.computed), ("ok", batch.ok), ("flagged", batch.flagged))
+    counts = ", ".join(f"{int(np.count_nonzero(mask))} {name}" for name, mask in masks)
+    return f"{len(batch)} cases, {counts}"
+
+
+def regime_series(values: np.ndarray, computed: np.ndarray) -> Any:
+    """The ``regime`` codes as a pandas categorical of the regime names (``REGIME_NAMES``, in
+    code order, as ``ImpactResult.regime`` reads them); ``<NA>`` where a case failed."""
+    import pandas as pd  # heavy, needed only here
+
+    f = np.asarray(values, dtype=np.float64)
+    keep = np.asarray(computed, dtype=bool) & np.isfinite(f)
+    codes = np.where(keep, f, -1.0).astype(np.int64)
+    names = [REGIME_NAMES[k] for k in sorted(REGIME_NAMES)]
+    return pd.Series(pd.Categorical.from_codes(codes, categories=names))
+
+
+def with_units(df: Any, unit_of: Callable[[str], str]) -> Any:
+    """``df`` with ``df.attrs["units"]``: column -> SI unit (``unit_of(column)``, from
+    ``impactlab.schema``; ``"1"`` for the ``status`` code)."""
+    df.attrs["units"] = {c: "1" if c == "status" else unit_of(c) for c in df.columns}
+    return df
