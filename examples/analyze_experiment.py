@@ -75,15 +75,15 @@ def main() -> None:
         "v_i": truth.v_tip_in[1],
         "dv_cy": truth.v_out[1] - truth.v_in[1],
         "delta_p": scan_truth.groove.depth,
-        "L_s": scan_truth.groove.sliding_length,
+        "sliding_length": scan_truth.groove.sliding_length,
     }
-    print(f"\n{'quantity':10s} {'measured':>26s} {'truth':>12s}")
+    print(f"\n{'quantity':14s} {'measured':>26s} {'truth':>12s}")
     for name, est in res.summary().items():
         t = f"{true[name]:.5g}" if name in true else ""
-        print(f"{name:10s} {est!s:>26s} {t:>12s}")
+        print(f"{name:14s} {est!s:>26s} {t:>12s}")
     print()
     print(res.inversion)
-    T, F = res.summary()["T"], res.summary()["F"]
+    T, F = res.summary()["duration"], res.summary()["mean_force"]
     print(
         f"\nT = {T.value * 1e3:.3f} ms ± {T.sigma * 1e3:.3f}, F = {F.value:.2f} N ± "
         f"{F.sigma:.2f} (paper's Table 2 for its 20 deg drop: 4.30 ms, 79 N)"

@@ -47,10 +47,10 @@ summary = res.summary()
 true = {"e": truth.e, "mu": truth.mu, "delta_p": scan_truth.groove.depth}
 for name, est in summary.items():
     t = f"truth {true[name]:.5g}" if name in true else ""
-    print(f"{name:8s} {est!s:>28s}  {t}".rstrip())
+    print(f"{name:14s} {est!s:>28s}  {t}".rstrip())
 res  # noqa: B018 (shown as a table in Jupyter)
 
 # %%
-T, F = summary["T"], summary["F"]
+T, F = summary["duration"], summary["mean_force"]
 print(f"T = {T.value * 1e3:.3f} ms ± {T.sigma * 1e3:.3f}, F = {F.value:.2f} N ± {F.sigma:.2f}")
 print("results:", ", ".join(sorted(p.name for p in Path("results").iterdir())))

@@ -222,7 +222,7 @@ def test_an_analysed_experiment_is_appended(tmp_path):
     summary = {
         "e": Estimate(0.5, 0.02, ""),
         "delta_p": Estimate(22e-6, 1e-6, "m"),
-        "L_s": Estimate(1.4e-3, 0.1e-3, "m"),
+        "sliding_length": Estimate(1.4e-3, 0.1e-3, "m"),
         "pileup": Estimate(1e-6, 0.0, "m"),
     }
     res = SimpleNamespace(kinematics=kin, summary=lambda: summary, rod={"mass": 0.4607},

@@ -48,7 +48,7 @@ def test_analyze_end_to_end(tmp_path: Path, drops: dict, scans: dict, rod: Any, 
     assert abs(s["mu"].value - d.truth.mu) < 0.02
     g = sc.truth.groove
     assert s["delta_p"].value == pytest.approx(g.depth, rel=0.02)
-    assert s["L_s"].value == pytest.approx(g.sliding_length, rel=0.05)
+    assert s["sliding_length"].value == pytest.approx(g.sliding_length, rel=0.05)
     # T and F agree with the inversion of the true values within the propagated uncertainty
     tr = d.truth
     ref = invert(
@@ -62,10 +62,11 @@ def test_analyze_end_to_end(tmp_path: Path, drops: dict, scans: dict, rod: Any, 
         rod=rod_properties(rod),
         n_samples=2000,
     )
-    assert abs(s["T"].value - ref.duration) < 3.0 * s["T"].sigma + 0.02 * ref.duration
-    assert abs(s["F"].value - ref.mean_force) < 3.0 * s["F"].sigma + 0.02 * ref.mean_force
+    T, F = s["duration"], s["mean_force"]
+    assert abs(T.value - ref.duration) < 3.0 * T.sigma + 0.02 * ref.duration
+    assert abs(F.value - ref.mean_force) < 3.0 * F.sigma + 0.02 * ref.mean_force
     saved = json.loads((tmp_path / "out" / "results.json").read_text())
-    assert saved["summary"]["T"]["value"] == pytest.approx(s["T"].value)
+    assert saved["summary"]["duration"]["value"] == pytest.approx(s["duration"].value)
     assert saved["errors"] == {}
     for name in ("dent.png", "kinematics.png"):
         assert (tmp_path / "out" / name).stat().st_size > 10_000
@@ -108,7 +109,7 @@ def test_inversion_failure_is_reported(
     res = analyze(d.c3d, scans[70].files["sdf"], rod, geometry=d.geometry)
     assert set(res.errors) == {"inversion"} and "sticking" in res.errors["inversion"]
     assert res.kinematics is not None and res.dent is not None
-    assert "T" not in res.summary() and "L_s" in res.summary()
+    assert "duration" not in res.summary() and "sliding_length" in res.summary()
 
 
 def test_cli_analyze(tmp_path: Path, drops: dict, scans: dict) -> None:
@@ -133,11 +134,11 @@ def test_cli_analyze(tmp_path: Path, drops: dict, scans: dict) -> None:
     assert r.exit_code == 0, r.output
     data = json.loads(r.stdout)
     assert abs(data["summary"]["e"]["value"] - d.truth.e) < 0.02
-    assert data["summary"]["F"]["unit"] == "N"
+    assert data["summary"]["mean_force"]["unit"] == "N"
     assert (out / "results.json").exists() and (out / "dent.png").exists()
     r2 = runner.invoke(app, ["analyze", str(d.c3d), str(sc.files["sdf"]), "--geometry", str(geo)])
     assert r2.exit_code == 0 and "delta_p" in r2.stdout
-    assert "│ T " in r2.stdout and "│ ms" in r2.stdout
+    assert "│ duration " in r2.stdout and "│ ms" in r2.stdout
 
 
 def test_cli_bad_scan_exits_with_one_line(

@@ -45,7 +45,8 @@ def test_a_sticking_impact_gives_no_duration(
     assert message.startswith("sticking regime: mu = 0.75")
     assert "mu_c = 0.76" in message and "zero within 3 sigma" in message
     summary = res.summary()
-    assert "T" not in summary and "F" not in summary and {"e", "mu", "L_s"} <= set(summary)
+    assert "duration" not in summary and "mean_force" not in summary
+    assert {"e", "mu", "sliding_length"} <= set(summary)
 
 
 def test_a_sliding_impact_is_still_inverted(drops: dict, scans: dict, rod: Any) -> None:

@@ -33,5 +33,5 @@ def test_analyze_json_shape_and_table(tmp_path: Path, drops: dict, scans: dict) 
         for c in ([x.strip() for x in ln.split("│")[1:-1]] for ln in table.splitlines())
         if len(c) == 3
     }
-    assert rows["delta_p"][1] == "um" and rows["T"][1] == "ms" and rows["angle"][1] == "deg"
+    assert rows["delta_p"][1] == "um" and rows["duration"][1] == "ms" and rows["angle"][1] == "deg"
     assert "± 0 " not in table and "e-0" not in table

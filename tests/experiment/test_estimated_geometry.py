@@ -185,11 +185,11 @@ def test_the_docs_quick_start_runs(
     assert code == 0, err
     data = json.loads(out)
     assert abs(data["summary"]["angle"]["value"] - math.radians(45)) < 0.01
-    assert data["summary"]["T"]["value"] > 0 and not data["errors"]
+    assert data["summary"]["duration"]["value"] > 0 and not data["errors"]
     code, out, err = cli_main(*args)
     assert code == 2
     assert "markers: " in err and "--geometry" in err and "not laid out along the rod" in err
-    assert "L_s" in json.loads(out)["summary"]
+    assert "sliding_length" in json.loads(out)["summary"]
 
 
 def test_a_result_in_doubt_is_not_ok_in_the_api_the_json_and_the_table(

@@ -99,7 +99,7 @@ def test_a_results_json_cut_short_by_an_earlier_run_is_replaced(
     res = analyze(d.c3d, scans[20].files["x3p"], geometry=d.geometry, out_dir=tmp_path)
     assert res.ok, res.errors
     saved = json.loads((tmp_path / "results.json").read_text())
-    assert saved["summary"]["L_s"]["value"] > 0
+    assert saved["summary"]["sliding_length"]["value"] > 0
     (note,) = [w for w in res.warnings if "results.json" in w]
     assert note.startswith("results: ") and "is replaced: it is cut short" in note
     (tmp_path / "results.json").write_bytes(b"")  # empty: nothing to lose either

@@ -14,6 +14,7 @@ from impactlab.analytic._inputs import HALF_PI
 from impactlab.analytic.result import Measured, measured
 
 __all__ = [
+    "E_NOISE_SIGMAS",
     "MIN_DENT_DEPTH",
     "PLAUSIBLE_DENT_DEPTH",
     "PLAUSIBLE_DENT_RATIO",
@@ -21,6 +22,7 @@ __all__ = [
     "PLAUSIBLE_SPEED",
     "SIGMA_RANGE_FRACTION",
     "check_plausible",
+    "check_restitution",
     "check_sigma_fits",
     "measurements",
 ]
@@ -56,6 +58,9 @@ MIN_DENT_DEPTH = 1e-9
 #: A dent shallower than this [m] draws an ImplausibleInputWarning (``analyze``'s
 #: ``PLAUSIBLE_DEPTH`` in ``impactlab.experiment.profilometry.plausibility``).
 PLAUSIBLE_DENT_DEPTH = 0.1e-6
+#: A measured e given with its sigma may lie this many sigmas outside [0, 1] (noise, with a
+#: warning); the experiment pipeline's markers stage accepts the same (``E_SIGMAS``).
+E_NOISE_SIGMAS = 3.0
 #: The largest standard deviation of an input of bounded range (e in [0, 1], the angle in
 #: (0, pi/2) rad), as a fraction of the range's width: at a quarter, the measurement's
 #: +-2 sigma band already spans the whole range. (mu has no upper bound of its own: a mu
@@ -80,6 +85,8 @@ def measurements(values: Mapping[str, Any]) -> dict[str, Measured]:
     for k in ("v_i", "delta_p", "sliding_length"):  # the drop speed; -0.0 -> 0.0
         meas[k] = Measured(abs(meas[k].value), meas[k].sigma)
     _check_ranges(meas)
+    if "e" in meas:
+        meas["e"] = check_restitution(meas["e"])
     return meas
 
 
@@ -104,8 +111,6 @@ def _check_ranges(meas: Mapping[str, Measured]) -> None:
             "sliding_length must be non-zero: in gross sliding any normal "
             "impulse makes the tip slide, so a zero sliding length cannot be inverted"
         )
-    if "e" in meas and not 0.0 <= meas["e"].value <= 1.0:
-        raise ValueError(f"e must lie in [0, 1], got {meas['e'].value!r}")
     check_sigma_fits("angle", meas["angle"].sigma, 0.0, HALF_PI, "rad")
     if "e" in meas:
         check_sigma_fits("e", meas["e"].sigma, 0.0, 1.0)
@@ -114,6 +119,38 @@ def _check_ranges(meas: Mapping[str, Measured]) -> None:
             f"dv_cy must be > 0 (upward change of the centre-of-mass velocity), got "
             f"{meas['dv_cy'].value!r}"
         )
+
+
+def check_restitution(e: Measured) -> Measured:
+    """The measured e as the inversion takes it: in [0, 1] as given; given with its sigma, up
+    to ``E_NOISE_SIGMAS`` sigmas outside [0, 1] (as ``impactlab.experiment`` accepts it) read as
+    measurement noise: taken at the nearer bound, 0 or 1, with its sigma, and an
+    ImplausibleInputWarning saying so. ValueError giving e, its sigma and the rule beyond (and
+    for any e outside [0, 1] given without a sigma)."""
+    v, s = e.value, e.sigma
+    if 0.0 <= v <= 1.0:
+        return e
+    side, bound = ("above 1", 1.0) if v > 1.0 else ("below 0", 0.0)
+    if s == 0.0:
+        raise ValueError(
+            f"e must lie in [0, 1], got {v!r} (a measured e {side} within "
+            f"{E_NOISE_SIGMAS:g} sigma is read as noise when given with its sigma: (value, sigma))"
+        )
+    n = abs(v - bound) / s
+    if n > E_NOISE_SIGMAS:
+        raise ValueError(
+            f"e must lie in [0, 1], or within {E_NOISE_SIGMAS:g} sigma of it as measurement "
+            f"noise ([{-E_NOISE_SIGMAS * s:.4g}, {1.0 + E_NOISE_SIGMAS * s:.4g}] for this "
+            f"sigma), got e = {v!r} +- {s!r}, {n:.3g} sigma {side}: no impact gives it; check "
+            "the measurement"
+        )
+    cannot = "leave the flat faster than it came" if v > 1.0 else "keep moving into the flat"
+    warn_implausible(
+        f"e = {v:.6g} +- {s:.2g} lies {side} ({n:.2g} sigma; the tip cannot {cannot}): read as "
+        f"measurement noise (accepted within {E_NOISE_SIGMAS:g} sigma) and taken as e = "
+        f"{bound:g} +- {s:.2g}"
+    )
+    return Measured(bound, s)
 
 
 def check_sigma_fits(name: str, sigma: float, low: float, high: float, unit: str = "") -> None:

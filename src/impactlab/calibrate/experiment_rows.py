@@ -13,13 +13,18 @@ from impactlab.experiment.result import ExperimentResult
 __all__ = ["append_experiment", "experiment_record"]
 
 #: ExperimentResult.summary() key -> measured quantity of the calibration.
-_MEASURED = {"e": "e", "spin_out": "spin_out", "delta_p": "delta_p", "L_s": "scar_length"}
+_MEASURED = {
+    "e": "e",
+    "spin_out": "spin_out",
+    "delta_p": "delta_p",
+    "sliding_length": "scar_length",
+}
 
 
 def experiment_record(result: ExperimentResult, label: str, **drop: Any) -> dict[str, Any]:
     """One drop (column -> SI value) from an analysed experiment: its angle, incoming velocity
     (v_c_in) and spin, its measured mu as the drop's mu, and the measured e, spin_out, delta_p
-    and L_s (as ``scar_length``, the mark's extent, a magnitude) with their standard
+    and sliding_length (as ``scar_length``, the mark's extent, a magnitude) with their standard
     uncertainties; ``drop``
     adds or replaces columns (``body_material``, ``flat_material``, ``mass``, ...). ValueError
     when the experiment has no kinematics."""

@@ -1,4 +1,5 @@
-"""``impactlab analyze``: marker tracks + dent scan -> e, mu, delta_p, L_s, T and F."""
+"""``impactlab analyze``: marker tracks + dent scan -> e, mu, delta_p, sliding_length,
+duration and mean_force."""
 
 from __future__ import annotations
 
@@ -121,8 +122,9 @@ def analyze_cmd(
     pixel_size: str | None = typer.Option(
         None,
         "--pixel-size",
-        help="Pixel size of a height map whose file does not state it ('2 um'; rectangular "
-        "pixels: '2 um, 3 um', x then y); a file that states it must agree.",
+        help="Pixel size of a height map whose file does not state it ('2.5 um', with a "
+        "decimal point; rectangular pixels: '2 um, 3 um', x then y, each with its unit); a file "
+        "that states it must agree.",
     ),
     height_unit: str | None = typer.Option(
         None,
@@ -158,9 +160,12 @@ def analyze_cmd(
     """
     from impactlab.experiment import analyze  # lazy: a fast CLI start
     from impactlab.experiment.checks import check_input_file, check_output_folder, output_folder
+    from impactlab.experiment.profilometry.heightmap import pixel_pair
 
     rod_obj, rod_data = _rod_from(rod)
     geo = _geometry_from(geometry, rod_data)
+    if pixel_size is not None:
+        pixel_pair(pixel_size, "pixel_size (--pixel-size)")  # before --out is made
     if out is not None:
         check_output_folder(out, "--out")
     check_input_file(markers, "MARKERS")  # a misspelt path: nothing read, --out untouched
@@ -193,7 +198,7 @@ def analyze_cmd(
 def _print_summary(res: ExperimentResult) -> None:
     """The measured quantities in display units (``impactlab._display``), then warnings and
     the files written."""
-    rows = [field_row(k, est.value, est.unit or "1", est.sigma) for k, est in res.summary().items()]
+    rows = [field_row(k, est.value, est.unit, est.sigma) for k, est in res.summary().items()]
     if res.kinematics is not None:
         rows.append(("geometry", res.kinematics.geometry_source, ""))
         if not res.kinematics.ok:
@@ -247,7 +252,7 @@ def _details(node: Any) -> Any:
             c0, c1, c2 = node["plane"]
             node = {**node, "plane": {"offset_m": c0, "slope_x": c1, "slope_y": c2}}
         if set(node) == {"value", "sigma", "unit"}:
-            return quantity_json(node["value"], node["unit"] or "1", node["sigma"])
+            return quantity_json(node["value"], node["unit"] or "1", node["sigma"])  # "": older
         units = {k: u for k in node if (u := _suffix_unit(str(k))) is not None}
         return to_json({k: _details(v) for k, v in node.items()}, units)
     if isinstance(node, list):
@@ -270,7 +275,7 @@ def analysis_json(res: ExperimentResult) -> dict[str, Any]:
     engine comparison) with the unit of every quantity."""
     data = res.to_dict()
     data["summary"] = {
-        k: quantity_json(est.value, est.unit or "1", est.sigma) for k, est in res.summary().items()
+        k: quantity_json(est.value, est.unit, est.sigma) for k, est in res.summary().items()
     }
     if res.inversion is not None:
         data["inversion"] = inversion_json(res.inversion)

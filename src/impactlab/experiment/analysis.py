@@ -54,13 +54,19 @@ from impactlab.materials import Material
 __all__ = ["ExperimentResult", "analyze", "default_rod", "rod_properties"]
 
 #: What a stage may fail with on bad data: the package's errors (ExperimentError is a ValueError),
-#: invalid values and unreadable or unwritable files. Anything else is a bug and propagates.
-_DATA_ERRORS = (ValueError, OSError)
+#: invalid values, unreadable or unwritable files, and data too large for the memory (a size or
+#: unit read wrong): the other stages' results are kept. Anything else is a bug and propagates.
+_DATA_ERRORS = (ValueError, OSError, MemoryError)
 #: ``warnings.catch_warnings`` swaps process-wide state: one inversion's record at a time.
 _RECORDING = threading.Lock()
 
 
 def _message(exc: BaseException) -> str:
+    if isinstance(exc, MemoryError):
+        return (
+            f"out of memory ({str(exc) or 'MemoryError'}): the data are larger than this machine "
+            "can analyse, or a size or unit was read wrong (the pixel size, the height unit)"
+        )
     return str(exc)
 
 

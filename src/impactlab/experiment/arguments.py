@@ -161,7 +161,7 @@ def checked_run(
     if geometry is not None:
         check_instance(geometry, MarkerGeometry, "geometry", "e.g. MarkerGeometry.from_mapping()")
     if dent["pixel_size"] is not None:
-        pixel_pair(dent["pixel_size"])  # ValueError naming pixel_size
+        pixel_pair(dent["pixel_size"], "pixel_size (--pixel-size)")  # ValueError naming it
     names = {"marker_units": kinematics["marker_units"], "height_unit": dent["height_unit"]}
     for name, opt in names.items():
         if opt is not None and not isinstance(opt, str):

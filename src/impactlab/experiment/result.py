@@ -49,9 +49,10 @@ class ExperimentResult:
         return not self.errors and (self.kinematics is None or self.kinematics.ok)
 
     def summary(self) -> dict[str, Estimate]:
-        """The headline results as estimates (SI), keyed by the paper's symbols (the table the
-        command line prints): e, mu, angle, v_i, v_c_in_x/y, v_c_out_x/y, spin_out, dv_cy,
-        delta_p, L_s (the sliding length), pileup, T, F (those available)."""
+        """The headline results as estimates (SI), keyed by the glossary's names (the table the
+        command line prints): e, mu, angle, v_i, v_cx_in, v_cy_in, v_cx_out, v_cy_out,
+        spin_out, dv_cy, delta_p, sliding_length (the scar's, a magnitude), pileup, duration,
+        mean_force (those available; duration and mean_force with the Monte Carlo sigma)."""
         out: dict[str, Estimate] = {}
         k = self.kinematics
         if k is not None:
@@ -59,19 +60,19 @@ class ExperimentResult:
             out["mu"] = k.mu
             out["angle"] = k.angle_in
             out["v_i"] = k.v_i
-            out["v_c_in_x"], out["v_c_in_y"] = k.v_c_in
-            out["v_c_out_x"], out["v_c_out_y"] = k.v_c_out
+            out["v_cx_in"], out["v_cy_in"] = k.v_c_in
+            out["v_cx_out"], out["v_cy_out"] = k.v_c_out
             out["spin_out"] = k.spin_out
             out["dv_cy"] = k.dv_cy
         d = self.dent
         if d is not None:
             out["delta_p"] = d.delta_p
-            out["L_s"] = d.sliding_length
+            out["sliding_length"] = d.sliding_length
             out["pileup"] = Estimate(d.pileup, 0.0, "m")
         inv = self.inversion
         if inv is not None:
-            out["T"] = Estimate(inv.duration, inv.sigma_T_mc, "s")
-            out["F"] = Estimate(inv.mean_force, inv.sigma_F_mc, "N")
+            out["duration"] = Estimate(inv.duration, inv.sigma_T_mc, "s")
+            out["mean_force"] = Estimate(inv.mean_force, inv.sigma_F_mc, "N")
         return out
 
     def raise_for_errors(self) -> None:
@@ -86,7 +87,7 @@ class ExperimentResult:
         return () if self.kinematics is None else tuple(self.kinematics.doubts)
 
     def _rows(self) -> list[tuple[str, str, str]]:
-        rows = [field_row(k, v.value, v.unit or "1", v.sigma) for k, v in self.summary().items()]
+        rows = [field_row(k, v.value, v.unit, v.sigma) for k, v in self.summary().items()]
         rows.append(("ok", "yes" if self.ok else "no", ""))
         rows += [("doubt", d, "") for d in self.doubts]
         rows += [(f"error ({k})", v, "") for k, v in self.errors.items()]

@@ -15,18 +15,23 @@ from typing import Any
 
 import numpy as np
 
+#: The unit of a dimensionless estimate (docs/json-schema.md); "" is read as it.
+DIMENSIONLESS = "1"
+
 
 @dataclass(frozen=True)
 class Estimate:
-    """A measured value with its standard uncertainty (1 sigma, same unit) and its unit; a
+    """A measured value with its standard uncertainty (1 sigma, same unit) and its unit
+    (``"1"`` for a plain number, as the JSON schema writes it; ``""`` is taken as ``"1"``); a
     sigma of 0 means that none was computed (the pile-up height): it is shown without a ±, as
     the command line shows it, never as an exact value."""
 
     value: float
     sigma: float
-    unit: str = ""
+    unit: str = DIMENSIONLESS
 
     def __post_init__(self) -> None:
+        object.__setattr__(self, "unit", str(self.unit).strip() or DIMENSIONLESS)
         object.__setattr__(self, "value", float(self.value))
         s = float(self.sigma)
         if not (math.isfinite(s) and s >= 0.0):
@@ -38,7 +43,7 @@ class Estimate:
         return (self.value, self.sigma)
 
     def to_dict(self) -> dict[str, Any]:
-        """JSON-ready: value, sigma, unit."""
+        """JSON-ready: value, sigma, unit ("1" for a plain number)."""
         return {"value": self.value, "sigma": self.sigma, "unit": self.unit}
 
     def scaled(self, factor: float, unit: str) -> Estimate:
@@ -47,7 +52,7 @@ class Estimate:
 
     def __format__(self, spec: str) -> str:
         spec = spec or ".4g"
-        u = f" {self.unit}" if self.unit else ""
+        u = f" {self.unit}" if self.unit != DIMENSIONLESS else ""
         if self.sigma == 0.0:
             return f"{self.value:{spec}}{u}"
         return f"{self.value:{spec}} ± {self.sigma:.2g}{u}"
@@ -94,4 +99,4 @@ def fixed(x: float) -> str:
     return f"{x:.0f}" if math.isfinite(x) and abs(x) >= 10.0 else f"{x:.2g}"
 
 
-__all__ = ["Estimate", "fixed", "jacobian", "propagate"]
+__all__ = ["DIMENSIONLESS", "Estimate", "fixed", "jacobian", "propagate"]

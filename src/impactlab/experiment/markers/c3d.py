@@ -22,6 +22,7 @@ from impactlab.experiment.errors import FileFormatError
 from impactlab.experiment.markers.tracks import (
     MarkerTracks,
     check_rate_agrees,
+    duplicate_labels,
     length_factor,
     rate_argument,
 )
@@ -29,15 +30,13 @@ from impactlab.experiment.markers.tracks import (
 __all__ = ["read_c3d"]
 
 
-def _c3d_header_check(path: Path, n_points: int, n_frames_read: int, scale: float) -> None:
-    """Refuse a C3D file whose data section is shorter than its header announces.
+def _header_words(path: Path, raw: bytes) -> tuple[tuple[int, ...], bool]:
+    """(the header's first 12 words, whether the data are floats) of the C3D file's bytes
+    ``raw``; FileFormatError for a file without a C3D header or parameter section.
 
-    Reads the 512-byte header directly (C3D spec: word 1 byte 2 = 0x50; words 2, 4, 5, 9, 10 =
-    points, first frame, last frame, data-start block, analog samples per frame); the byte order
-    comes from the processor type in the parameter section (84 Intel, 85 DEC: little endian;
-    86 MIPS: big).
-    """
-    raw = path.read_bytes()
+    The byte order comes from the processor type in the parameter section (84 Intel, 85 DEC:
+    little endian; 86 MIPS: big); the data are floats when the header's scale factor (words
+    7-8, a float in the processor's format) is negative."""
     if len(raw) < 512 or raw[1] != 0x50:
         raise FileFormatError(path, "not a C3D file (bad header: no 0x50 signature)")
     pblock = raw[0]
@@ -47,23 +46,59 @@ def _c3d_header_check(path: Path, n_points: int, n_frames_read: int, scale: floa
     proc = raw[off + 3]
     end = ">" if proc == 86 else "<"
     words = struct.unpack(end + "12H", raw[:24])
+    # the sign bit of the scale: IEEE little endian in byte 15, big endian in byte 12; a DEC
+    # (VAX) float has it in the top bit of its first 16-bit word, byte 13
+    sign_byte = {84: 15, 85: 13, 86: 12}.get(proc, 15)
+    return words, bool(raw[sign_byte] & 0x80)
+
+
+def _c3d_header_check(path: Path, n_frames_read: int, scale: float | None) -> None:
+    """Refuse a C3D file whose data section is shorter than its header announces.
+
+    Reads the 512-byte header directly (C3D spec, 1-based 16-bit words: word 1 byte 2 = 0x50;
+    2 = points; 3 = analog samples per 3D frame, all channels together (channels x samples per
+    channel); 4, 5 = first and last frame; 9 = the data section's first 512-byte block; word 10,
+    the samples per channel, is not needed). A frame holds 4 values per point (x, y, z and the
+    residual word) and word 3's analog values, each 4 bytes in a float file (``scale`` < 0, the
+    header's sign when the reader gave none) and 2 bytes in an integer one. ``n_frames_read``:
+    the frames a reader found (a file of more than 65535 frames counts them in a parameter, not
+    in its header; 0 when none was read).
+    """
+    raw = path.read_bytes()
+    words, float_header = _header_words(path, raw)
+    n_points, analog_per_frame = words[1], words[2]
     first, last = words[3], words[4]
-    data_start = words[8]
-    analog_per_frame = words[9]
+    data_start = max(int(words[8]), 1)
     header_frames = last - first + 1 if last >= first else 0
-    bytes_per = 4 if scale < 0 else 2
-    frame_bytes = n_points * 4 * bytes_per + analog_per_frame * bytes_per
-    # Files with more than 65535 frames store the count in a parameter (not in the header); the
-    # size check then compares against what the reader found.
+    is_float = scale < 0 if scale is not None else float_header
+    bytes_per = 4 if is_float else 2
+    frame_bytes = (n_points * 4 + analog_per_frame) * bytes_per
     frames = max(header_frames, n_frames_read)
     expected = (data_start - 1) * 512 + frames * frame_bytes
     if len(raw) < expected:
         have = max(0, (len(raw) - (data_start - 1) * 512) // max(frame_bytes, 1))
+        analog = f" and {analog_per_frame} analog values" if analog_per_frame else ""
+        held = (
+            f"about {have} complete frames"
+            if len(raw) > (data_start - 1) * 512
+            else f"it ends before its data section, which starts at byte {(data_start - 1) * 512}"
+        )
         raise FileFormatError(
             path,
-            f"truncated C3D file: the header announces {frames} frames "
-            f"({expected} bytes) but the file has {len(raw)} bytes (about {have} complete frames)",
+            f"truncated C3D file: the header announces {frames} frames of {n_points} points"
+            f"{analog} ({expected} bytes) but the file has {len(raw)} bytes ({held})",
         )
+
+
+def _check_header_first(path: Path) -> None:
+    """The truncation check for a file that no reader could read: its FileFormatError when the
+    header announces more data than the file holds; nothing when the header itself is not a
+    C3D one (the readers' errors say more)."""
+    try:
+        _c3d_header_check(path, 0, None)
+    except FileFormatError as exc:
+        if "truncated" in exc.problem:
+            raise
 
 
 def _read_ezc3d(path: Path) -> dict[str, Any]:
@@ -169,13 +204,15 @@ def read_c3d(
         except Exception as exc:  # both libraries raise assorted types on bad files
             problems.append(f"{name}: {type(exc).__name__}: {str(exc).strip()[:200]}")
     if data is None:
+        _check_header_first(p)  # a file cut short: say so, not that it cannot be read
         raise FileFormatError(p, "not a readable C3D file (" + "; ".join(problems) + ")")
     xyz = data["xyz"]
+    # before the count of frames and points: a file cut before its data holds none
+    _c3d_header_check(p, xyz.shape[0], data["scale"])
     if xyz.shape[0] == 0 or xyz.shape[1] == 0:
         raise FileFormatError(
             p, f"the C3D file holds no 3D point data ({xyz.shape[0]} frames, {xyz.shape[1]} points)"
         )
-    _c3d_header_check(p, xyz.shape[1], xyz.shape[0], data["scale"])
     file_rate = data["rate"]
     if not (math.isfinite(file_rate) and file_rate > 0):
         raise FileFormatError(p, f"invalid point rate {file_rate!r} Hz in the C3D header")
@@ -196,6 +233,9 @@ def read_c3d(
     labels = list(data["labels"])[: xyz.shape[1]]
     labels += [f"P{i + 1}" for i in range(len(labels), xyz.shape[1])]
     labels = [s.strip() or f"P{i + 1}" for i, s in enumerate(labels)]
+    twice = duplicate_labels(labels, lambda i: f"point {i + 1}")
+    if twice:
+        raise FileFormatError(p, f"the POINT:LABELS parameter names {twice}")
     t = np.arange(xyz.shape[0], dtype=np.float64) / rate
     return MarkerTracks(
         t,

@@ -26,6 +26,7 @@ from impactlab.experiment.errors import FileFormatError
 from impactlab.experiment.markers.tracks import (
     MarkerTracks,
     check_rate_agrees,
+    duplicate_labels,
     length_factor,
     parse_rate,
     rate_argument,
@@ -33,6 +34,9 @@ from impactlab.experiment.markers.tracks import (
 from impactlab.experiment.textfiles import split_commented
 
 __all__ = ["read_csv_markers", "write_csv_markers"]
+
+#: The separators' names, for messages.
+_SEPARATOR_NAMES = {",": "comma", ";": "semicolon", "\t": "tab"}
 
 _COORD = re.compile(r"^(?P<label>.+?)[\s_.:]+(?P<axis>[xyzXYZ])$")
 
@@ -56,10 +60,16 @@ def _header(p: Path, header_ln: int, header: str) -> tuple[str, list[str], list[
         )
     coord_cols = names[1:]
     if len(coord_cols) == 0 or len(coord_cols) % 3:
+        empty = (
+            f"; its last column has no name (a trailing {_SEPARATOR_NAMES[delim]} at the end "
+            "of the line): remove it from the header and the rows"
+            if coord_cols and coord_cols[-1] == ""
+            else ""
+        )
         raise FileFormatError(
             p,
             f"line {header_ln}: expected three columns (x, y, z) per marker "
-            f"after the time column, got {len(coord_cols)} columns",
+            f"after the time column, got {len(coord_cols)} columns{empty}",
         )
     labels: list[str] = []
     for i in range(0, len(coord_cols), 3):
@@ -78,6 +88,9 @@ def _header(p: Path, header_ln: int, header: str) -> tuple[str, list[str], list[
                 p, f"line {header_ln}: columns {coord_cols[i : i + 3]} do not name one marker"
             )
         labels.append(trip[0])
+    twice = duplicate_labels(labels, lambda i: f"columns {3 * i + 2}-{3 * i + 4}")
+    if twice:
+        raise FileFormatError(p, f"line {header_ln}: the header names {twice}")
     return delim, names, labels
 
 
@@ -87,10 +100,13 @@ def _data(p: Path, rows: list[tuple[int, str]], delim: str, ncol: int) -> np.nda
     for r, (ln, line) in enumerate(rows):
         cells = next(csv.reader([line], delimiter=delim))
         if len(cells) != ncol:
+            why = (
+                "its last field is empty: a trailing separator at the end of the line"
+                if len(cells) == ncol + 1 and not cells[-1].strip()
+                else "truncated or malformed row"
+            )
             raise FileFormatError(
-                p,
-                f"line {ln}: expected {ncol} fields, found {len(cells)} "
-                "(truncated or malformed row)",
+                p, f"line {ln}: expected {ncol} fields, found {len(cells)} ({why})"
             )
         for c, cell in enumerate(cells):
             cs = cell.strip()

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -16,6 +17,7 @@ __all__ = [
     "RATE_AGREEMENT",
     "MarkerTracks",
     "check_rate_agrees",
+    "duplicate_labels",
     "length_factor",
     "parse_rate",
     "rate_argument",
@@ -91,6 +93,25 @@ def check_rate_agrees(path: Any, given: Any, stated: float, where: str) -> None:
         )
 
 
+def duplicate_labels(
+    labels: list[str] | tuple[str, ...], at: Callable[[int], str] = lambda i: f"marker {i + 1}"
+) -> str:
+    """How ``labels`` repeat a marker's label (``'M1' 2 times (marker 1, marker 4): ...``, each
+    place as ``at(index)`` writes it); empty when each label is unique. Labels are compared as
+    written (``M1`` and ``m1`` are two markers)."""
+    seen: dict[str, list[int]] = {}
+    for i, lab in enumerate(labels):
+        seen.setdefault(str(lab), []).append(i)
+    twice = [
+        f"{lab!r} {len(idx)} times ({', '.join(at(i) for i in idx)})"
+        for lab, idx in seen.items()
+        if len(idx) > 1
+    ]
+    if not twice:
+        return ""
+    return "; ".join(twice) + ": each marker needs a label of its own (rename or drop the copy)"
+
+
 def length_factor(unit: str, *, name: str = "units") -> float:
     """Metres per ``unit`` (e.g. "mm" -> 1e-3). ValueError naming ``name`` for a unit that is not
     a length."""
@@ -153,8 +174,9 @@ class MarkerTracks:
         labels = tuple(str(s) for s in self.labels)
         if len(labels) != p.shape[1]:
             raise ValueError(f"{len(labels)} labels for {p.shape[1]} markers{where}")
-        if len(set(labels)) != len(labels):
-            raise ValueError(f"marker labels must be unique, got {labels}{where}")
+        twice = duplicate_labels(labels)
+        if twice:
+            raise ValueError(f"marker labels must be unique, got {twice}{where}")
         p = p.copy()
         bad = ~np.all(np.isfinite(p), axis=2)
         p[bad] = np.nan

@@ -37,7 +37,11 @@ from impactlab.experiment.profilometry.surface import (
 )
 from impactlab.experiment.uncertainty import Estimate
 
-__all__ = ["DentMetrics", "measure_dent"]
+__all__ = ["MAX_PROFILE_SAMPLES", "DentMetrics", "measure_dent"]
+
+#: The most samples the profiles along and across the dent may take (half a pixel apart): more
+#: means pixels far longer one way than the other, a pixel size read wrong.
+MAX_PROFILE_SAMPLES = 1_000_000
 
 
 @dataclass(frozen=True)
@@ -106,7 +110,14 @@ def _profiles(
     """(s, heights) along the axis and (s, heights) across it, through the deepest point [m]."""
     zs, dx, dy = sf.zs, sf.dx, sf.dy
     step = 0.5 * min(dx, dy)
-    half_len = length + 2 * width
+    half_len, half_cross = length + 2 * width, 1.5 * width
+    n = 2.0 * (half_len + half_cross) / step
+    if not n <= MAX_PROFILE_SAMPLES:  # pixels far longer one way than the other
+        raise ScanError(
+            f"{sf.src}: the dent measures {length:.4g} m by {width:.4g} m on pixels of "
+            f"{dx:.4g} m x {dy:.4g} m: its profiles, half the smaller pixel apart, would take "
+            f"{n:.3g} samples (at most {MAX_PROFILE_SAMPLES:.0e}); check the pixel size"
+        )
     s = np.arange(-half_len, half_len + step, step)
     line = deepest[None, :] + s[:, None] * axis[None, :]
     inside = (
@@ -118,7 +129,7 @@ def _profiles(
     s, line = s[inside], line[inside]
     prof = sample(zs, dx, dy, line)
     perp = np.array([-axis[1], axis[0]])
-    sc = np.arange(-width * 1.5, width * 1.5 + step, step)
+    sc = np.arange(-half_cross, half_cross + step, step)
     cl = deepest[None, :] + sc[:, None] * perp[None, :]
     okc = (
         (cl[:, 0] >= 0)
@@ -244,7 +255,7 @@ def measure_dent(
     check_instance(hm, HeightMap, "hm", "read one with read_scan()")
     sf = surface(hm, smooth)
     warnings: list[str] = []
-    i0, j0 = find_dent(sf, detect_sigma, min_pixels)
+    i0, j0 = find_dent(sf, detect_sigma, min_pixels, warnings)
     depth_rough = -float(sf.zs[i0, j0])
     thr = max(edge_sigma * sf.sig_s, edge_fraction * depth_rough)
     region = dent_region(sf, (i0, j0), thr)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -10,7 +11,7 @@ import numpy as np
 
 from impactlab.units import to_si
 
-__all__ = ["HeightMap", "pixel_pair"]
+__all__ = ["MAX_PIXEL_SIZE", "HeightMap", "pixel_pair"]
 
 
 @dataclass(frozen=True)
@@ -61,18 +62,59 @@ class HeightMap:
         return np.meshgrid(np.arange(nx) * self.dx, np.arange(ny) * self.dy)
 
 
-def pixel_pair(pixel_size: Any) -> tuple[float, float]:
+#: The largest pixel size [m] taken as a profilometer's: a drop's dent is a few mm long, and a
+#: scan needs many pixels across it (a bare number is metres: "12" is a pixel of 12 m). Pixels
+#: up to it that are still too large for the dent are left to ``check_dent`` (the pixel size).
+MAX_PIXEL_SIZE = 1e-2
+
+#: A number without a unit ("12", "0.5", "1e-6").
+_BARE_NUMBER = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$")
+
+
+def _check_unambiguous(parts: list[Any], given: Any, name: str) -> None:
+    """ValueError when one of two texts is a bare number and the other has a unit: a decimal
+    comma ("12,5 um") or a unit left off; neither reading is safe."""
+    texts = [p.strip() if isinstance(p, str) else None for p in parts]
+    bare = [t is not None and bool(_BARE_NUMBER.match(t)) for t in texts]
+    if None in texts or bare[0] == bare[1]:
+        return
+    a, b = texts
+    assert a is not None and b is not None
+    no_unit, with_unit = (a, b) if bare[0] else (b, a)
+    fix = "give each size its unit, '12.5 um, 12.5 um' (x then y), or one size once, '12.5 um'"
+    m = re.match(r"^(\d+)\s*([a-zA-Zµμ].*)$", b)
+    if bare[0] and a.lstrip("+-").isdigit() and m is not None:
+        one = f"{a}.{m.group(1)} {m.group(2).strip()}"
+        fix = f"write '{one}' (a decimal point) for one size, or '{one}, {one}' for x then y"
+    raise ValueError(
+        f"{name} {given!r} is ambiguous: {no_unit!r} has no unit while {with_unit!r} has one "
+        f"(a decimal comma, or a unit left off?): {fix}"
+    )
+
+
+def pixel_pair(pixel_size: Any, name: str = "pixel_size") -> tuple[float, float]:
     """(dx, dy) [m] from one pixel size or a (dx, dy) pair (quantity strings such as "2 um",
-    metres for bare numbers; a pair also as one text, "2 um, 3 um": the command line's form)."""
+    metres for bare numbers; a pair also as one text, "2 um, 3 um": the command line's form).
+
+    ValueError naming ``name`` for a pair of texts of which one has a unit and the other not
+    ("12,5 um": a decimal comma), a size that is not > 0, or one above ``MAX_PIXEL_SIZE``."""
+    given = pixel_size
     if isinstance(pixel_size, str) and "," in pixel_size:
         pixel_size = [p.strip() for p in pixel_size.strip().strip("()[]").split(",")]
     if isinstance(pixel_size, tuple | list):
         if len(pixel_size) != 2:
-            raise ValueError(f"pixel_size must be one size or (dx, dy), got {pixel_size!r}")
-        dx = to_si(pixel_size[0], "m", name="pixel_size")
-        dy = to_si(pixel_size[1], "m", name="pixel_size")
+            raise ValueError(f"{name} must be one size or (dx, dy), got {given!r}")
+        _check_unambiguous(list(pixel_size), given, name)
+        dx = to_si(pixel_size[0], "m", name=name)
+        dy = to_si(pixel_size[1], "m", name=name)
     else:
-        dx = dy = to_si(pixel_size, "m", name="pixel_size")
+        dx = dy = to_si(pixel_size, "m", name=name)
     if not (dx > 0 and dy > 0):
-        raise ValueError(f"pixel_size must be > 0, got {pixel_size!r}")
+        raise ValueError(f"{name} must be > 0 (a length such as '2 um'), got {given!r}")
+    if max(dx, dy) > MAX_PIXEL_SIZE:
+        raise ValueError(
+            f"{name} {given!r} is a pixel of {max(dx, dy):.4g} m, larger than "
+            f"{MAX_PIXEL_SIZE * 1e2:g} cm: no profilometer scan of a dent has such pixels "
+            "(a bare number is read in metres): give the unit, e.g. '12.5 um'"
+        )
     return dx, dy

@@ -140,7 +140,7 @@ def _topography_kwargs(
                 "pixel_size=, else the file is corrupt or in another format",
             )
         try:
-            dxy = pixel_pair(pixel_size)
+            dxy = pixel_pair(pixel_size, "pixel_size (--pixel-size)")
         except ValueError as exc:
             raise FileFormatError(p, str(exc)) from None
         n = ch.nb_grid_pts

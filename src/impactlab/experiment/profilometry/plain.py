@@ -20,7 +20,23 @@ from impactlab.experiment.textfiles import split_commented
 __all__ = ["has_pixel_header", "read_plain"]
 
 
+#: How a .npy file starts (numpy's format) and how an .npz (a zip archive) does.
+_NPY_MAGIC = b"\x93NUMPY"
+_ZIP_MAGIC = b"PK\x03\x04"
+
+
 def _load_npy(p: Path) -> np.ndarray:
+    try:
+        with p.open("rb") as fh:
+            head = fh.read(len(_NPY_MAGIC))
+    except OSError as exc:
+        raise FileFormatError(p, f"cannot be read ({exc.strerror or exc})") from None
+    if head != _NPY_MAGIC and not head.startswith(_ZIP_MAGIC):
+        raise FileFormatError(
+            p,
+            "not a .npy file: it does not start with the NPY signature (\\x93NUMPY); a damaged "
+            "file or another format (save the height map with np.save)",
+        )
     try:
         z = np.load(p, allow_pickle=False)
     except (ValueError, OSError, EOFError) as exc:
@@ -41,19 +57,38 @@ def _load_npy(p: Path) -> np.ndarray:
     return z.astype(np.float64)
 
 
+def _separator(lines: list[tuple[int, str]]) -> str | None:
+    """The cells' separator of a text matrix: a comma, else a semicolon, else a tab where any
+    line has one; None: blanks."""
+    for sep in (",", ";", "\t"):
+        if any(sep in line for _, line in lines):
+            return sep
+    return None
+
+
+def _cells(line: str, sep: str | None) -> list[str]:
+    """The cells of one line: one cell between two separators (an empty one is no data), the
+    leading and trailing ones kept; blanks: a run of them is one separator (no empty cells)."""
+    if sep is None:
+        return line.split()
+    if sep == "\t":
+        return line.split("\t")  # a blank around a cell is not a separator here
+    return line.strip().split(sep)
+
+
 def _load_text(p: Path) -> tuple[np.ndarray, dict[str, str]]:
     """(heights in the file's unit, the '# key: value' header) of a CSV/text matrix; comma,
-    semicolon or blank separated, empty cells (or nan, bad, na) are no data."""
+    semicolon, tab or blank separated, empty cells (or nan, bad, na) are no data (one cell
+    between two commas, semicolons or tabs; blanks cannot mark an empty cell)."""
     try:
         text = read_text_file(p, "CSV")
     except ValueError as exc:  # not UTF-8 text
         raise FileFormatError(p, str(exc)) from None
     rows: list[list[float]] = []
-    header, lines = split_commented(text)
+    header, lines = split_commented(text, keep_tab_lines=True)
+    sep = _separator(lines)
     for ln, line in lines:
-        s = line.strip()
-        delim = "," if "," in s else (";" if ";" in s else None)
-        cells = s.split(delim) if delim else s.split()
+        cells = _cells(line, sep)
         vals = []
         for c in cells:
             c = c.strip()
@@ -106,12 +141,15 @@ def _pixel_size(p: Path, pixel_size: Any, meta: dict[str, str]) -> tuple[float, 
                 "(e.g. '2 um'; --pixel-size) or add '# pixel_size: 2 um'",
             )
         stated: Any = pixel_size
+        name = "pixel_size (--pixel-size)"
     else:
         stated = meta["pixel_size"]
+        name = "the file's '# pixel_size:'"
         if "pixel_size_y" in meta:
             stated = (stated, meta["pixel_size_y"])
+            name = "the file's '# pixel_size:' and '# pixel_size_y:'"
     try:
-        dxy = pixel_pair(stated)
+        dxy = pixel_pair(stated, name)
     except ValueError as exc:
         raise FileFormatError(p, str(exc)) from None
     if pixel_size is not None and "pixel_size" in meta:

@@ -84,13 +84,60 @@ def _check_sign(
         )
 
 
-def find_dent(sf: Surface, detect_sigma: float, min_pixels: int) -> tuple[int, int]:
-    """(i, j) of the deepest pixel of the deepest depression below the detection threshold;
-    DentNotFoundError when there is none, ScanError when the scan looks sign-flipped."""
+def _depression_pixels(sf: Surface, lab: np.ndarray, index: np.ndarray, level: float) -> np.ndarray:
+    """Pixels of each component (labels ``lab``, ``index``) that the unsmoothed levelled scan
+    puts below ``level`` [m] (a dropout there counts, as the filled map holds it)."""
+    deep = np.where(sf.valid, sf.zl < level, sf.was_nan)
+    return np.asarray(ndimage.sum(deep, lab, index=index))
+
+
+def _candidates_note(
+    sf: Surface,
+    lab: np.ndarray,
+    index: np.ndarray,
+    good: list[int],
+    best: int,
+    depths: np.ndarray,
+    pixels: np.ndarray,
+    volumes: np.ndarray,
+) -> str:
+    """The warning for a scan with more than one depression that qualifies as a dent (the
+    measured one, ``best``, first)."""
+    where = []
+    for i in sorted(good, key=lambda i: -volumes[i])[:_NAMED]:
+        k = int(np.argmin(np.where(lab == index[i], sf.zs, np.inf)))
+        r, c = np.unravel_index(k, sf.zs.shape)
+        mark = " (measured)" if i == best else ""
+        where.append(
+            f"at x = {c * sf.dx * 1e3:.3g} mm, y = {r * sf.dy * 1e3:.3g} mm: "
+            f"{-depths[i] * 1e6:.3g} um deep, {int(pixels[i])} pixels{mark}"
+        )
+    more = f" and {len(good) - _NAMED} more" if len(good) > _NAMED else ""
+    return (
+        f"{len(good)} depressions qualify as a dent ({'; '.join(where)}{more}); the one of the "
+        "largest volume is measured (one dent per scan): crop the scan to the dent to measure "
+        "another"
+    )
+
+
+#: At most this many depressions are named in the warning of more than one.
+_NAMED = 4
+
+
+def find_dent(
+    sf: Surface, detect_sigma: float, min_pixels: int, warnings: list[str] | None = None
+) -> tuple[int, int]:
+    """(i, j) of the deepest pixel of the dent: of the depressions deeper than the detection
+    threshold on the smoothed map whose unsmoothed part below it covers ``min_pixels`` or more
+    (fewer: dust or noise), the one of the largest volume; a warning (into ``warnings``) names
+    each when more than one qualifies. DentNotFoundError when none does, ScanError when the
+    scan looks sign-flipped."""
     zs, sig_s, src = sf.zs, sf.sig_s, sf.src
-    lab, index, sizes = _components(zs < -detect_sigma * sig_s)
+    level = -detect_sigma * sig_s
+    lab, index, _ = _components(zs < level)
+    pixels = _depression_pixels(sf, lab, index, level)
     deepest_val = float(np.min(zs))
-    good = [i for i in range(index.size) if sizes[i] >= min_pixels]
+    good = [i for i in range(index.size) if pixels[i] >= min_pixels]
     if not good:
         _check_sign(sf, -deepest_val, 0.0, detect_sigma, min_pixels)
     if index.size == 0:
@@ -102,11 +149,14 @@ def find_dent(sf: Surface, detect_sigma: float, min_pixels: int) -> tuple[int, i
     if not good:
         raise DentNotFoundError(
             f"{src}: no dent found: the depressions below the detection threshold "
-            f"({detect_sigma * sig_s * 1e6:.3g} um) cover at most {int(max(sizes))} pixels "
+            f"({detect_sigma * sig_s * 1e6:.3g} um) cover at most {int(max(pixels))} pixels "
             f"(need {min_pixels}); dust or noise, not a dent"
         )
     depths = ndimage.minimum(zs, lab, index=index)
-    best = min(good, key=lambda i: depths[i])
+    volumes = -np.asarray(ndimage.sum(zs, lab, index=index)) * sf.dx * sf.dy
+    best = max(good, key=lambda i: volumes[i])
+    if len(good) > 1 and warnings is not None:
+        warnings.append(_candidates_note(sf, lab, index, good, best, depths, pixels, volumes))
     comp = lab == best + 1
     volume = -float(np.sum(zs[comp])) * sf.dx * sf.dy
     _check_sign(sf, -float(depths[best]), volume, detect_sigma, min_pixels)
