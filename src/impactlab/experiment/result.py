@@ -96,6 +96,23 @@ class ExperimentResult:
     def __str__(self) -> str:
         return text_table("ExperimentResult", self._rows())
 
+    def __repr__(self) -> str:
+        """One line: the files, the headline estimates (SI, with their sigma), whether it is
+        ok, and the numbers of errors and warnings (``str`` gives the whole table)."""
+        files = [Path(p).name for p in (self.markers_path, self.scan_path) if p]
+        parts = [" + ".join(files) or "no files"]
+        shown = ("e", "mu", "delta_p", "sliding_length", "duration", "mean_force")
+        for name, est in self.summary().items():
+            if name in shown:
+                sigma = f" ± {est.sigma:.2g}" if est.sigma > 0 else ""
+                unit = "" if est.unit in ("", "1") else f" {est.unit}"
+                parts.append(f"{name}={est.value:.6g}{sigma}{unit}")
+        parts.append(f"ok={self.ok}")
+        for what, items in (("error", self.errors), ("warning", self.warnings)):
+            if items:
+                parts.append(f"{len(items)} {what}" + "s" * (len(items) > 1))
+        return f"ExperimentResult({', '.join(parts)})"
+
     def _repr_html_(self) -> str:
         return html_table("ExperimentResult", self._rows())
 
