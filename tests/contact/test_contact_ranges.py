@@ -26,6 +26,7 @@ from impactlab.contact.ranges import (
     law_range,
     range_limit,
     range_status,
+    smallest_verified,
 )
 from impactlab.contact.verified_ranges import (
     e_star_over_sy_span,
@@ -52,11 +53,15 @@ def test_every_law_has_a_range_with_a_source() -> None:
 
 def test_no_range_is_claimed_confirmed_without_a_source_read() -> None:
     """What this project could read: no FEM range was found, so none is 'confirmed'; the FEM
-    laws carry the labelled 110 stand-in, the analytical laws their first yield."""
+    laws carry the labelled stand-in, their smallest verified range over the FE cases (read
+    from the verified-ranges data), the analytical laws their first yield."""
     for name in ("ghaednia", "jackson-green", "kogut-komvopoulos"):
         r = law_range(name)
-        assert r.status == "provisional" and r.delta_ratio_max == 110.0
+        least = min(c.upper for c in verified_cases(name))
+        assert r.status == "provisional" and r.delta_ratio_max == least == smallest_verified(name)
         assert "provisional" in r.text and "not" in r.source
+        assert f"delta <= {least:g} delta_c, the smallest verified range" in r.text
+        assert r.describe()["delta_ref"].startswith("delta_c")  # the unit of delta_ratio_max
     for name in ("brake", "thornton"):
         assert law_range(name).status == "analytical"
         assert law_range(name).delta_ratio_max == 1.0 and "first yield" in law_range(name).source
@@ -149,14 +154,42 @@ def _soft_pair_model(name: str) -> ContactModel:
 
 
 @pytest.mark.parametrize("name", ["ghaednia", "jackson-green", "kogut-komvopoulos"])
-def test_unverified_pair_keeps_the_provisional_stand_in(name: str) -> None:
-    m = _soft_pair_model(name)
+@pytest.mark.parametrize("sy", [50e6, 20e6, 10e9])
+def test_unverified_pair_is_trusted_no_further_than_every_measured_one(
+    name: str, sy: float
+) -> None:
+    """A pair outside the FE cases' E*/S_y span (soft flats above it, a very hard one below):
+    the limit is the law's smallest verified range over the FE cases (in delta_c; the law's own
+    delta_y for Kogut-Komvopoulos), not Kogut & Etsion's 110 delta_c: 45 delta_c is flagged."""
+    flat = Material("flat", 200e9, 0.3, sy, 30.0)
+    m = get_law(name).build(ContactPair(flat, flat), 8.8e-3)
     ratio = m.params[k.P_ESTAR] / m.params[k.P_SY]
-    assert ratio > e_star_over_sy_span()[1]
+    lo, hi = e_star_over_sy_span()
+    assert not lo <= ratio <= hi
     assert range_status(m.law_id, m.params) == "unverified"
-    assert range_limit(m.law_id, m.params) == 110.0
-    dc = m.critical_interference
-    assert not law_extrapolated(m, 100 * dc) and law_extrapolated(m, 120 * dc)
+    dc = (np.pi * 1.295 * np.exp(0.736 * 0.3) * sy / (2 * m.E_star)) ** 2 * m.params[k.P_R]
+    least = smallest_verified(name)
+    assert least <= 1.0
+    limit = range_limit(m.law_id, m.params)
+    assert limit * m.critical_interference == pytest.approx(least * dc, rel=1e-9)
+    assert not law_extrapolated(m, 0.99 * least * dc) and law_extrapolated(m, 1.01 * least * dc)
+    assert law_extrapolated(m, 45 * dc)
+    assert f"stand-in limit {limit:.3g} " in str(range_note(m.law_id, m.params))
+
+
+@pytest.mark.parametrize("name", ["hertz", "brake", "thornton"])
+def test_unverified_pair_of_an_analytical_law_stops_at_the_lower_of_yield_and_smallest(
+    name: str,
+) -> None:
+    """Hertz, Brake and Thornton outside the span: their first yield, or their smallest
+    verified range where that is lower (Brake's delta_y is just above delta_c at nu = 0.4)."""
+    for nu in (0.2, 0.3, 0.4):
+        flat = Material("soft", 200e9, nu, 50e6, 30.0)
+        m = get_law(name).build(ContactPair(AISI_201, flat), 8.8e-3)
+        own = smallest_verified(name) * critical_interference(k.HERTZ, m.params)
+        expected = min(1.0, own / m.critical_interference)
+        assert range_limit(m.law_id, m.params) == pytest.approx(expected, rel=1e-12)
+        assert range_limit(m.law_id, m.params) <= 1.0
 
 
 def test_between_cases_the_smaller_verified_range_holds() -> None:
@@ -204,10 +237,10 @@ def test_confirmation_status_of_the_law_sources() -> None:
 def test_range_note_names_the_status_the_span_and_the_limit() -> None:
     """``range_note``: the one line results show (``law_range``) for each kind of status."""
     lo, hi = e_star_over_sy_span()
-    soft = _soft_pair_model("ghaednia")
+    soft = _soft_pair_model("ghaednia")  # its smallest verified range over the FE cases
     assert range_note(soft.law_id, soft.params) == (
         f"unverified: E*/S_y = 2198 outside the FE cases' {lo:.0f}-{hi:.0f}; stand-in limit "
-        "110 delta_c"
+        "1 delta_c"
     )
     paper = get_law("ghaednia").build(ContactPair(AISI_201, AISI_1010), 8.8e-3)
     line = range_note(paper.law_id, paper.params)

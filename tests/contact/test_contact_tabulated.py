@@ -284,6 +284,7 @@ def test_hertzian_unloading_energy_against_fe(curves: IndentationCurves) -> None
         assert 0.91 <= ratio <= 1.005, (run.delta_max / case.delta_c, ratio)
 
 
+@pytest.mark.filterwarnings("ignore::impactlab.contact.indentation_data.ResidualRaisedWarning")
 @settings(max_examples=40, deadline=None)
 @given(
     steps=st.lists(st.floats(-0.08, 0.03), min_size=6, max_size=40),

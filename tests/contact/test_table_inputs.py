@@ -14,7 +14,7 @@ import pytest
 
 from impactlab.contact import IndentationCurves, get_law
 from impactlab.contact._common import jg_critical
-from impactlab.contact.indentation_data import shipped_curves
+from impactlab.contact.indentation_data import ResidualRaisedWarning, shipped_curves
 from impactlab.contact.table_input import read_table
 from impactlab.contact.tabulated import interpolation_error
 from impactlab.materials import AISI_201, AISI_1010, ContactPair
@@ -141,8 +141,9 @@ def test_a_bad_row_names_its_file_line_and_si_values(tmp_path: Path, edit, messa
     cols = {"d": d.copy(), "f": f.copy(), "dm": dm.copy(), "dr": dr.copy()}
     edit(cols)
     load, unload = _files(tmp_path, **cols)
-    if message is None:
-        IndentationCurves.from_csv(PAIR, R, load, unload)
+    if message is None:  # a first ratio of 0.1, then 0: raised onto 0.1, with a warning
+        with pytest.warns(ResidualRaisedWarning, match=r"unloading CSV '.*' line 3: 0 raised"):
+            IndentationCurves.from_csv(PAIR, R, load, unload)
         return
     with pytest.raises(ValueError, match=message) as err:
         IndentationCurves.from_csv(PAIR, R, load, unload)

@@ -14,6 +14,8 @@ from __future__ import annotations
 import functools
 import json
 import math
+import warnings
+from contextvars import ContextVar
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -35,6 +37,23 @@ from impactlab.contact.table_input import (
 )
 from impactlab.materials import ContactPair
 from impactlab.units import is_quantity, magnitude
+
+#: A delta_r/delta_max raised onto the largest before it (the tabulated law keeps the ratio
+#: non-decreasing) by more than this warns (:class:`ResidualRaisedWarning`): the accuracy
+#: tolerance of delta_r/delta_max (docs/laws/accuracy.md, ``impactlab.fe.accuracy``).
+RESIDUAL_RAISE_TOLERANCE = 0.05
+
+
+#: True while ``IndentationCurves._checked`` builds curves whose raised ratios it has named by
+#: their rows (a CSV line): the constructor then does not name them again.
+_ROWS_WARNED: ContextVar[bool] = ContextVar("_ROWS_WARNED", default=False)
+
+
+class ResidualRaisedWarning(UserWarning):
+    """A residual depth of the data falls so far below the ones before it that the tabulated
+    law, which raises it onto the largest before it, departs from it by more than
+    :data:`RESIDUAL_RAISE_TOLERANCE` in delta_r/delta_max."""
+
 
 #: Where the shipped curves are (``shipped_curves``).
 SHIPPED_PATH = Path(__file__).resolve().parent / "data" / "fe-curves.json"
@@ -146,6 +165,8 @@ class IndentationCurves:
             )
         for name, a in (("delta", d), ("force", f), ("delta_max", dm), ("residual_ratio", r)):
             object.__setattr__(self, name, a)
+        if not _ROWS_WARNED.get():  # ``_checked`` has named them by their rows
+            _warn_raised(self.name, dm, r)
 
     @property
     def max_delta(self) -> float:
@@ -224,17 +245,22 @@ class IndentationCurves:
         check_loading(pair, R, d, f, rows[0])
         check_unloading(R, dm, dr, (float(d[0]), float(d[-1])), rows[1])
         dc, fc = jg_critical(pair.E_star, R, pair.yield_strength, pair.nu)
-        return cls(
-            name,
-            source,
-            pair.E_star / pair.yield_strength,
-            pair.nu,
-            d / dc,
-            f / fc,
-            dm / dc,
-            dr / dm,
-            elastic_limit=float(d[0] / dc),
-        )
+        _warn_raised(name, dm / dc, dr / dm, rows[1], dm)
+        token = _ROWS_WARNED.set(True)
+        try:
+            return cls(
+                name,
+                source,
+                pair.E_star / pair.yield_strength,
+                pair.nu,
+                d / dc,
+                f / fc,
+                dm / dc,
+                dr / dm,
+                elastic_limit=float(d[0] / dc),
+            )
+        finally:
+            _ROWS_WARNED.reset(token)
 
     def record(self) -> dict[str, Any]:
         """JSON-ready content (``curves_from_record`` reads it back)."""
@@ -249,6 +275,35 @@ class IndentationCurves:
             "delta_max": self.delta_max.tolist(),
             "residual_ratio": self.residual_ratio.tolist(),
         }
+
+
+def _warn_raised(
+    name: str, dm: np.ndarray, r: np.ndarray, rows: Rows | None = None, dm_si: Any = None
+) -> None:
+    """A :class:`ResidualRaisedWarning` naming each ratio ``r`` (delta_r/delta_max at
+    ``dm`` = delta_max/delta_c) that the running maximum raises by more than
+    :data:`RESIDUAL_RAISE_TOLERANCE`: by its row of ``rows`` (a CSV file's line, an array's
+    index) and its delta_max ``dm_si`` [m] where given, else by index and delta_max/delta_c."""
+    top = np.maximum.accumulate(r)
+    big = np.flatnonzero(top - r > RESIDUAL_RAISE_TOLERANCE)
+    if not big.size:
+        return
+    texts = []
+    for i in big:
+        what = f"{r[i]:.4g} raised by {top[i] - r[i]:.3g} to {top[i]:.4g}"
+        if rows is None or dm_si is None:
+            texts.append(f"index {i} (delta_max/delta_c = {dm[i]:.4g}): {what}")
+        else:
+            texts.append(rows.at(int(i), f"{what} (delta_max = {float(dm_si[i]):.4g} m)"))
+    warnings.warn(
+        f"curves {name!r}: delta_r/delta_max falls below a value before it and is raised onto "
+        f"it (the tabulated law keeps it non-decreasing) by more than "
+        f"{RESIDUAL_RAISE_TOLERANCE:g}, the accuracy tolerance of delta_r/delta_max: "
+        f"{'; '.join(texts)}; the law's residual depth there is not the data's (check those "
+        "points)",
+        ResidualRaisedWarning,
+        stacklevel=4,
+    )
 
 
 def curves_from_record(d: dict[str, Any]) -> IndentationCurves:
@@ -277,14 +332,26 @@ def curves_file_record(curves: list[IndentationCurves]) -> dict[str, Any]:
 
 
 def read_curves(path: str | Path) -> tuple[IndentationCurves, ...]:
-    """Every curve set in the curves file ``path`` (ValueError for another format or a file
-    that is not UTF-8 text)."""
-    record = json.loads(read_text_file(path, "JSON", f"curves file {str(path)!r}"))
+    """Every curve set in the curves file ``path``; ValueError naming the file for another
+    format, a file that is not UTF-8 JSON text, or JSON that is not a curves record (not an
+    object, ``curves`` missing or not a list of curve sets)."""
+    text = read_text_file(path, "JSON", f"curves file {str(path)!r}")
+    what = f"{str(path)!r} is not an indentation curves file of version {FORMAT_VERSION}"
+    try:
+        record = json.loads(text)
+    except json.JSONDecodeError as exc:
+        raise ValueError(f"{what}: not valid JSON ({exc})") from None
+    if not isinstance(record, dict):
+        raise ValueError(f"{what}: its JSON is a {type(record).__name__}, not an object")
     if record.get("format") != FORMAT or record.get("version") != FORMAT_VERSION:
-        raise ValueError(
-            f"{str(path)!r} is not an indentation curves file of version {FORMAT_VERSION}"
-        )
-    return tuple(curves_from_record(c) for c in record["curves"])
+        raise ValueError(what)
+    sets = record.get("curves")
+    if not isinstance(sets, list):
+        raise ValueError(f"{what}: 'curves' is not a list")
+    try:
+        return tuple(curves_from_record(c) for c in sets)
+    except (KeyError, TypeError, AttributeError) as exc:
+        raise ValueError(f"{what}: a curve set lacks or mistypes {exc}") from None
 
 
 @functools.cache
@@ -295,7 +362,9 @@ def shipped_curves() -> tuple[IndentationCurves, ...]:
 
 __all__ = [
     "HERTZ_TOLERANCE",
+    "RESIDUAL_RAISE_TOLERANCE",
     "IndentationCurves",
+    "ResidualRaisedWarning",
     "curves_file_record",
     "curves_from_record",
     "read_curves",

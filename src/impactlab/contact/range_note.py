@@ -24,7 +24,7 @@ __all__ = ["range_note"]
 
 def range_note(law_id: int, params: Any) -> str | None:
     """``verified against FE up to 1 delta_c (E*/S_y = 360; FE cases 28-1731)``, or
-    ``unverified: E*/S_y = 2198 outside the FE cases' 28-1731; stand-in limit 110 delta_c``,
+    ``unverified: E*/S_y = 2198 outside the FE cases' 28-1731; stand-in limit 1 delta_c``,
     or the stand-in's status (``contact.ranges.STATUSES``) and limit for a law without a
     verified range (the tabulated law: its data's end); None for an unknown law or without
     parameters (SI parameters ``params`` of ``ContactModel.params``).

@@ -73,7 +73,7 @@ class LawRange:
 
     @property
     def stand_in_text(self) -> str:
-        """The stand-in in one line: ``delta <= 110 delta_c (provisional)``."""
+        """The stand-in in one line: ``delta <= 1 delta_y (analytical)``."""
         if math.isinf(self.delta_ratio_max):
             return f"no fitted range ({self.status}): never flagged as extrapolated"
         return f"delta <= {self.delta_ratio_max:g} {self.reference} ({self.status})"

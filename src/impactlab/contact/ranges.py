@@ -6,14 +6,22 @@ interference up to which it stays within 10 % of the FE loading force and 0.05 o
 delta_r / delta_max, for the pair's E*/S_y (the shipped cases' own value at their E*/S_y, the
 smaller of the two neighbouring cases' between them). That is the range the engine's
 LAW_EXTRAPOLATED flag uses wherever the pair's E*/S_y lies within the span of the FE cases
-(status ``"verified"``). Outside that span the range is ``"unverified"``: the law's former
-stand-in below is kept, and the flag's message says so.
+(status ``"verified"``). Outside that span the range is ``"unverified"`` and the flag's message
+says so.
 
-**Stand-in** (outside the verified span, and for the tabulated law). Each :class:`LawRange`
+**Outside the span** an unmeasured pair is trusted no further than every measured one: the
+limit is the law's **smallest verified range over its FE cases** (in Jackson-Green's delta_c,
+converted to the law's own reference per pair, :func:`smallest_verified`), and never more than
+its first yield for Hertz, Brake and Thornton (with their default parameters the two agree:
+Thornton's and Hertz's first yield is delta_c, Brake's delta_y lies within 0.3 % of it).
+
+**Stand-in** (the law's own record; the tabulated law's only range). Each :class:`LawRange`
 states
 
 - ``delta_ratio_max``: the upper end of the range as a ratio ``delta / delta_ref`` (``inf``: the
-  source states no fitted range);
+  source states no fitted range); for the FEM-fitted laws (``ghaednia``, ``jackson-green``,
+  ``kogut-komvopoulos``: no range found in their sources) it is the smallest verified range,
+  in Jackson-Green's delta_c (:class:`SmallestVerified`);
 - ``delta_ref``: the reference interference of that ratio. For every law it is the law's own
   critical (first-yield) interference, ``p[P_DY]`` (:func:`critical_interference`): Jackson-Green's
   ``delta_c = (pi C S_y / (2 E*))^2 R`` for ``ghaednia`` and ``jackson-green`` (paper Eq. 15),
@@ -36,6 +44,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
+from dataclasses import dataclass
 from types import MappingProxyType
 from typing import Any, Protocol
 
@@ -65,6 +74,7 @@ __all__ = [
     "RANGES",
     "STATUSES",
     "LawRange",
+    "SmallestVerified",
     "alias_range",
     "calibrated_max",
     "critical_interference",
@@ -76,21 +86,50 @@ __all__ = [
     "range_limit",
     "range_status",
     "reference_name",
+    "smallest_verified",
 ]
 
-#: The stand-in used where a FEM-fitted law's own range was not found: Kogut & Etsion (2002)
-#: fit their FEM results for 1 <= delta/delta_c <= 110 (as quoted in the literature on their
-#: model; the number was not re-read in the source; an independent implementation of their model,
-#: TaoYang1999/SCHC-framework asperity_f_cal.m, uses the same breakpoints 1, 6 and 110 delta_c).
-PROVISIONAL_FEM_RATIO = 110.0
+#: Kogut & Etsion's (2002) FEM range, 1 <= delta/delta_c <= 110 (as quoted in the literature
+#: on their model, not re-read in the source; an independent implementation of their model,
+#: TaoYang1999/SCHC-framework asperity_f_cal.m, uses the same breakpoints 1, 6 and 110
+#: delta_c): the FEM-fitted laws' former stand-in, kept for the record only (no limit uses it).
+KOGUT_ETSION_FEM_RATIO = 110.0
 
-_PROVISIONAL_SOURCE = (
-    "provisional stand-in: 110 x the law's critical interference, the FEM range of Kogut & "
-    "Etsion (2002, 1 <= delta/delta_c <= 110; not read in the paper here, corroborated "
-    "second-hand by a public digest of the paper and an independent implementation; their "
-    "omega_c equals the Jackson-Green delta_c within 0.1 % at nu = 0.3); the {who} range was "
-    "not found in the sources searched (publisher pages and full texts were not available)"
+_SMALLEST_SOURCE = (
+    "stand-in outside the FE cases' E*/S_y span: the smallest verified range over the FE "
+    "cases (contact/data/verified-ranges.json), so that a pair no FE case covers is trusted no "
+    "further than every measured one; the {who} range was not found in the sources searched "
+    "(publisher pages and full texts were not available); the former stand-in, Kogut & "
+    "Etsion's FEM range (2002, 1 <= delta/delta_c <= 110, second-hand), is not used: every "
+    "measured pair leaves 0.05 of FE's delta_r/delta_max far below it"
 )
+
+
+def smallest_verified(law: str | Law) -> float:
+    """The smallest verified upper end delta / delta_c of ``law`` over the shipped FE cases
+    (``contact/data/verified-ranges.json``); NaN for a law without a verified range."""
+    cases = verified_cases(str(law))
+    return min(c.upper for c in cases) if cases else math.nan
+
+
+@dataclass(frozen=True)
+class SmallestVerified(LawRange):
+    """The range of a FEM-fitted law whose source states none: outside the FE cases' span, its
+    smallest verified range over them. ``delta_ratio_max`` is in Jackson-Green's delta_c (the
+    unit of the verified ranges; a pair's limit in the law's own ``reference`` is
+    :func:`range_limit`)."""
+
+    @property
+    def stand_in_text(self) -> str:
+        """``delta <= 0.3 delta_c, the smallest verified range over the FE cases (provisional)``."""
+        return (
+            f"delta <= {self.delta_ratio_max:g} delta_c, the smallest verified range over the FE "
+            f"cases ({self.status})"
+        )
+
+    def describe(self) -> dict[str, Any]:
+        """``LawRange.describe`` with ``delta_ref`` the unit of ``delta_ratio_max``: delta_c."""
+        return {**super().describe(), "delta_ref": _JG_DC}
 
 
 _JG_DC = "delta_c (Jackson-Green, paper Eq. 15: (pi C S_y / (2 E*))^2 R)"
@@ -105,32 +144,32 @@ _ALL = (
         "and Hertz over-predicts the force (Johnson 1985; C(nu) of Green 2005)",
         ("johnson-1985", "green-2005"),
     ),
-    LawRange(
+    SmallestVerified(
         Law.GHAEDNIA,
-        PROVISIONAL_FEM_RATIO,
+        smallest_verified(Law.GHAEDNIA),
         _JG_DC,
         "provisional",
-        _PROVISIONAL_SOURCE.format(who="Ghaednia et al. (2016)"),
+        _SMALLEST_SOURCE.format(who="Ghaednia et al. (2016)"),
         ("ghaednia-2016-contact", "kogut-etsion-2002"),
     ),
-    LawRange(
+    SmallestVerified(
         Law.JACKSON_GREEN,
-        PROVISIONAL_FEM_RATIO,
+        smallest_verified(Law.JACKSON_GREEN),
         _JG_DC,
         "provisional",
-        _PROVISIONAL_SOURCE.format(who="Jackson & Green (2005) FEM")
+        _SMALLEST_SOURCE.format(who="Jackson & Green (2005) FEM")
         + "; the abstract (read) says only 'a wide range of interferences and materials'; "
         "second-hand (a public digest of the paper): FEM over delta/delta_c = 0 to 110+, hardness "
         "fit for a/R <= 0.412, E = 200 GPa, nu = 0.32 and five S_y (E/S_y = 124-952)",
         ("jackson-green-2005", "kogut-etsion-2002"),
         e_over_sy=(124.0, 952.0),
     ),
-    LawRange(
+    SmallestVerified(
         Law.KOGUT_KOMVOPOULOS,
-        PROVISIONAL_FEM_RATIO,
+        smallest_verified(Law.KOGUT_KOMVOPOULOS),
         "delta_y (Kogut-Komvopoulos yield, delta/r' = 1.78 S_y/E*)",
         "provisional",
-        _PROVISIONAL_SOURCE.format(who="Kogut & Komvopoulos (2004)")
+        _SMALLEST_SOURCE.format(who="Kogut & Komvopoulos (2004)")
         + "; their law fits the indentation of a half-space by a rigid sphere, so Kogut & "
         "Etsion's flattening range is not its own",
         ("kogut-komvopoulos-2004", "kogut-etsion-2002"),
@@ -142,7 +181,8 @@ _ALL = (
         "analytical",
         "analytical transition model, no fitted range; Brake (2015) validates it against impact "
         "experiments from the literature (abstract, OSTI 1146110, read); outside the FE cases' "
-        "E*/S_y its plastic part is not verified: the stand-in is its first yield",
+        "E*/S_y its plastic part is not verified: the stand-in is its first yield (or its "
+        "smallest verified range over the FE cases, where that is lower)",
         ("brake-2015",),
     ),
     LawRange(
@@ -152,7 +192,7 @@ _ALL = (
         "analytical",
         "analytical elastic-perfectly plastic model (limiting pressure p_y), no fitted range; "
         "outside the FE cases' E*/S_y its plastic part is not verified: the stand-in is its "
-        "first yield",
+        "first yield (or its smallest verified range over the FE cases, where that is lower)",
         ("thornton-1997",),
     ),
     LawRange(
@@ -174,6 +214,12 @@ _RATIO_BY_ID = np.full(k.N_LAWS, np.inf)
 for _r in _ALL:
     _RATIO_BY_ID[_r.law.law_id] = _r.delta_ratio_max
 _STATUS_BY_ID = {r.law.law_id: r.status for r in _ALL}
+#: Law id -> its smallest verified range over the FE cases (delta / delta_c; NaN: none).
+_SMALLEST_BY_ID = np.full(k.N_LAWS, np.nan)
+for _r in _ALL:
+    _SMALLEST_BY_ID[_r.law.law_id] = smallest_verified(_r.law)
+#: Laws whose own stand-in (their first yield) also caps the range outside the FE span.
+_FIRST_YIELD_CAP = frozenset(r.law.law_id for r in _ALL if r.status in ("theory", "analytical"))
 _NAME_BY_ID = {r.law.law_id: str(r.law) for r in _ALL}
 
 
@@ -248,13 +294,33 @@ def _measure_verified(law_id: int, p: np.ndarray) -> tuple[np.ndarray, bool]:
     return np.asarray(own, dtype=np.float64), True
 
 
+def _outside_span(law_id: int, p: np.ndarray) -> np.ndarray:
+    """The limit (delta / delta_ref) of law ``law_id`` for pairs ``p`` outside the FE span: its
+    smallest verified range over the FE cases in the pair's own ratio, capped at its first
+    yield for Hertz, Brake and Thornton; the stand-in ``LawRange.delta_ratio_max`` for a law
+    without a verified range (or where the pair's delta_ref is not a positive number)."""
+    stand_in = _RATIO_BY_ID[law_id]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        ref = np.asarray(critical_interference(law_id, p))
+        own = _SMALLEST_BY_ID[law_id] * _jg_delta_c(p) / ref
+    if law_id in _FIRST_YIELD_CAP:
+        own = np.minimum(own, stand_in)
+    return np.where(np.isfinite(own) & (own > 0.0), own, stand_in)
+
+
 def range_limit(law_id: int, params: Any) -> Any:
     """The upper end of law ``law_id``'s range as delta_max / delta_ref for pairs ``params``
-    (float or array): the verified range where the pair's E*/S_y is covered, else the
-    stand-in ``LawRange.delta_ratio_max``."""
+    (float or array): the verified range where the pair's E*/S_y is covered, else the smallest
+    verified range over the FE cases (at most the first yield of Hertz, Brake and Thornton;
+    :func:`_outside_span`), else the stand-in ``LawRange.delta_ratio_max``."""
     own, _ = _verified(law_id, params)
-    out = np.where(np.isfinite(own), own, _RATIO_BY_ID[int(law_id)])
-    return float(out) if out.ndim == 0 else out
+    inside = np.isfinite(own)
+    if np.all(inside):
+        out = own
+    else:
+        p = np.asarray(params, dtype=np.float64)[..., : k.NPARAM]
+        out = np.where(inside, own, _outside_span(int(law_id), p))
+    return float(out) if np.ndim(out) == 0 else np.asarray(out)
 
 
 def delta_ratio(law_id: int, params: Any, delta_max: Any) -> Any:

@@ -25,6 +25,7 @@ Curves of a pair with E*/S_y and nu apply to another pair only when both match w
 from __future__ import annotations
 
 import math
+import warnings
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
@@ -52,16 +53,28 @@ def curves_cache_dir() -> Path:
     return default_cache_root() / "tabulated"
 
 
+class DamagedCurvesWarning(UserWarning):
+    """A file of the curves cache that cannot be read as curves (cut short, not JSON, or JSON
+    that is not a curves record): skipped, as if missing; new FE curves of its pair are
+    written over it."""
+
+
 def cached_curves() -> tuple[IndentationCurves, ...]:
-    """Every curve set in ``curves_cache_dir()`` (unreadable files are skipped)."""
+    """Every curve set in ``curves_cache_dir()``; a damaged file is skipped with a
+    :class:`DamagedCurvesWarning` naming it."""
     out: list[IndentationCurves] = []
     folder = curves_cache_dir()
     if folder.is_dir():
         for path in sorted(folder.glob("*.json")):
             try:
                 out += read_curves(path)
-            except (OSError, ValueError, KeyError):
-                continue
+            except (OSError, ValueError, KeyError, TypeError, AttributeError) as exc:
+                warnings.warn(
+                    f"curves cache file {path} is damaged ({exc}): skipped, as if missing "
+                    "(new FE curves of its pair are written over it)",
+                    DamagedCurvesWarning,
+                    stacklevel=2,
+                )
     return tuple(out)
 
 
@@ -355,6 +368,7 @@ def tabulated_model(curves: IndentationCurves, pair: ContactPair, radius: float)
 __all__ = [
     "NU_TOLERANCE",
     "RATIO_TOLERANCE",
+    "DamagedCurvesWarning",
     "Tabulated",
     "cached_curves",
     "curve_tables",

@@ -14,12 +14,12 @@ them. Method and verification: docs/fe.md; the dynamic impact (``impact``): docs
 """
 
 from impactlab.fe.cache import SCHEMA_VERSION, default_cache_dir
-from impactlab.fe.ccx import INSTALL_HINT, find_ccx
+from impactlab.fe.ccx import INSTALL_HINT, DamagedOutputError, find_ccx
 from impactlab.fe.impact_result import ImpactResult
 from impactlab.fe.impact_run import impact
 from impactlab.fe.problem import MESH_GROWTH, SPHERE_KINDS, check_hardening, critical_interference
 from impactlab.fe.result import SECTOR_FACTOR, IndentationResult
-from impactlab.fe.run import NotConvergedWarning, indent, indent_one
+from impactlab.fe.run import DamagedRunsError, NotConvergedWarning, indent, indent_one
 from impactlab.fe.tabulated import tabulated_law
 
 __all__ = [
@@ -28,6 +28,8 @@ __all__ = [
     "SCHEMA_VERSION",
     "SECTOR_FACTOR",
     "SPHERE_KINDS",
+    "DamagedOutputError",
+    "DamagedRunsError",
     "ImpactResult",
     "IndentationResult",
     "NotConvergedWarning",

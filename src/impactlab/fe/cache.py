@@ -12,14 +12,19 @@ import hashlib
 import json
 import os
 import tempfile
+import warnings
+import zipfile
+from collections.abc import Callable
 from importlib import metadata
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
 import numpy as np
 
 from impactlab._compiled_cache import default_cache_root
 from impactlab.fe.result import IndentationResult
+
+T = TypeVar("T")
 
 #: Bumped whenever the model (mesh, deck, post-processing) or the stored format changes.
 SCHEMA_VERSION = 2
@@ -64,18 +69,44 @@ def cache_key(data: dict[str, Any], ccx_version: str) -> str:
     return hashlib.sha256(blob.encode()).hexdigest()
 
 
-def load(directory: Path, key: str) -> IndentationResult | None:
-    """The cached result for ``key``, or None (also for an unreadable file)."""
-    path = directory / f"{key}.npz"
+class DamagedCacheWarning(UserWarning):
+    """A cache file that cannot be read back (cut short, empty, or not a result): treated as
+    a cache miss; the run is made again and its result written over the file."""
+
+
+#: What reading a damaged ``.npz`` file raises: numpy's and zipfile's errors for a cut or
+#: empty file (``zipfile.BadZipFile``, ``EOFError``), ``KeyError`` for a missing array,
+#: ``TypeError`` for a header that does not make a result (a field missing or unknown).
+DAMAGED = (OSError, ValueError, KeyError, EOFError, TypeError, AttributeError, zipfile.BadZipFile)
+
+
+def read_npz(path: Path, arrays: tuple[str, ...], build: Callable[..., T]) -> T | None:
+    """``build(**header, **arrays)`` from the ``.npz`` file ``path``; None when there is none,
+    and, with a :class:`DamagedCacheWarning` naming the file, when it is damaged."""
     if not path.is_file():
         return None
     try:
-        with np.load(path, allow_pickle=False) as z:
+        with open(path, "rb") as fh, np.load(fh, allow_pickle=False) as z:  # closed if cut
             header = json.loads(str(z["header"]))
-            arrays: dict[str, Any] = {name: np.array(z[name]) for name in ARRAYS}
-    except (OSError, ValueError, KeyError):
+            if not isinstance(header, dict):
+                raise TypeError(f"its header is a {type(header).__name__}, not a record")
+            values: dict[str, Any] = {name: np.array(z[name]) for name in arrays}
+        return build(**header, **values)
+    except DAMAGED as exc:
+        warnings.warn(
+            f"FE cache file {path} is damaged ({type(exc).__name__}: {exc}): treated as missing; "
+            "the run is made again and its result written over the file",
+            DamagedCacheWarning,
+            stacklevel=3,
+        )
         return None
-    return IndentationResult(**header, **arrays)
+
+
+def load(directory: Path, key: str) -> IndentationResult | None:
+    """The cached result for ``key``, or None: none cached, or a damaged file (cut short,
+    empty, not a result: a :class:`DamagedCacheWarning` naming it; the caller runs again and
+    :func:`store` writes over it)."""
+    return read_npz(directory / f"{key}.npz", ARRAYS, IndentationResult)
 
 
 def store(directory: Path, key: str, result: IndentationResult) -> None:

@@ -75,10 +75,58 @@ class DatFile:
     )
 
 
-def parse_dat(text: str) -> DatFile:
+class DamagedOutputError(ValueError):
+    """A ccx output file that cannot be what ccx wrote: a row of the wrong width, a number cut
+    short, a file that ends inside a line or before the time its ``.sta`` file finished at.
+    The message names the file, the line and what is wrong."""
+
+
+#: A number as ccx prints it in a ``.dat`` row: a mantissa with a decimal point and a two- or
+#: three-digit exponent (``-2.359894E-02``), or nan / inf; a node id: digits.
+_NUMBER = re.compile(r"[-+]?(?:\d+\.\d*|\.\d+)[EeDd][-+]\d{2,3}|[-+]?(?:nan|inf)", re.IGNORECASE)
+_NODE = re.compile(r"\d+")
+
+
+def _width(what: str) -> int:
+    """The number of components the header ``what`` lists: ``displacements (vx,vy,vz)``: 3."""
+    m = re.search(r"\(([^)]*)\)", what)
+    return len(m.group(1).split(",")) if m else 3
+
+
+def _row(line: str, width: int, nodal: bool, name: str, number: int) -> list[float]:
+    """The numbers of one data row, after checking its width and each number's full form."""
+    parts = line.split()
+    expected = width + (1 if nodal else 0)
+    if len(parts) != expected:
+        raise DamagedOutputError(
+            f"{name}, line {number}: {len(parts)} values where its block has {expected} "
+            f"({line.strip()!r}); the file is damaged (cut short?)"
+        )
+    for j, part in enumerate(parts):
+        ok = _NODE.fullmatch(part) if nodal and j == 0 else _NUMBER.fullmatch(part)
+        if not ok:
+            kind = "node id" if nodal and j == 0 else "number"
+            raise DamagedOutputError(
+                f"{name}, line {number}: {part!r} is not a whole {kind} as ccx prints it "
+                f"({line.strip()!r}); the file is damaged (cut short?)"
+            )
+    return [float(v.replace("D", "E").replace("d", "e")) for v in parts]
+
+
+def parse_dat(text: str, name: str = "job.dat") -> DatFile:
     """Parse the ``*NODE PRINT`` blocks of a ``.dat`` file (the contact-stress blocks are
-    skipped: the contact radius is read from the surface displacements)."""
+    skipped: the contact radius is read from the surface displacements). ``name``: the file's
+    name in messages. DamagedOutputError (naming ``name``, the line and what is wrong) for a
+    row whose width differs from its header's components (plus the node id), a number not in
+    ccx's full form (``-2.359894E-02``: a number cut short would be read 100 times off), or a
+    text that ends inside a line."""
     out = DatFile()
+    if text and not text.endswith("\n"):
+        last = text.splitlines()[-1].strip()
+        raise DamagedOutputError(
+            f"{name}, line {text.count(chr(10)) + 1}: the file ends inside a line ({last!r}); "
+            "the file is damaged (cut short?)"
+        )
     lines = text.splitlines()
     i, n = 0, len(lines)
     while i < n:
@@ -87,6 +135,9 @@ def parse_dat(text: str) -> DatFile:
             i += 1
             continue
         what, nset, t = m.group(1).strip(), m.group(2), float(m.group(3))
+        header = i + 1
+        total = what.startswith("total")
+        width = _width(what)
         i += 1
         rows: list[list[float]] = []
         while i < n and not lines[i].strip():
@@ -94,10 +145,16 @@ def parse_dat(text: str) -> DatFile:
         while i < n and lines[i].strip() and not _HEADER.match(lines[i]):
             if _CONTACT.match(lines[i]):
                 break
-            rows.append([float(v) for v in lines[i].split()])
+            rows.append(_row(lines[i], width, not total, name, i + 1))
             i += 1
+        if not rows:
+            raise DamagedOutputError(
+                f"{name}, line {header}: the block {what!r} for set {nset} at time {t:g} has no "
+                "rows; "
+                "the file is damaged (cut short?)"
+            )
         arr = np.asarray(rows, dtype=np.float64)
-        if what.startswith("total"):
+        if total:
             out.totals.setdefault((what.split()[1], nset), []).append((t, arr[0]))
         else:
             ids = arr[:, 0].astype(np.int64)

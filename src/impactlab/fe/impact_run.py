@@ -208,17 +208,9 @@ def _solve(problem: ImpactProblem, mesh: Mesh, exe: str, keep: Path | None) -> I
 
 
 def load(directory: Path, key: str) -> ImpactResult | None:
-    """The cached impact for ``key``, or None."""
-    path = directory / f"impact-{key}.npz"
-    if not path.is_file():
-        return None
-    try:
-        with np.load(path, allow_pickle=False) as z:
-            header = json.loads(str(z["header"]))
-            arrays: dict[str, Any] = {name: np.array(z[name]) for name in IMPACT_ARRAYS}
-    except (OSError, ValueError, KeyError):
-        return None
-    return ImpactResult(**header, **arrays)
+    """The cached impact for ``key``, or None: none cached, or a damaged file (a
+    ``cache.DamagedCacheWarning`` naming it; the impact is run again and stored over it)."""
+    return cache.read_npz(directory / f"impact-{key}.npz", IMPACT_ARRAYS, ImpactResult)
 
 
 def store(directory: Path, key: str, result: ImpactResult) -> None:

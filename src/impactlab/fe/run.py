@@ -14,7 +14,15 @@ from typing import Any
 import numpy as np
 
 from impactlab.fe import cache
-from impactlab.fe.ccx import RunOutput, ccx_version, find_ccx, parse_dat, parse_sta, run_ccx
+from impactlab.fe.ccx import (
+    DamagedOutputError,
+    RunOutput,
+    ccx_version,
+    find_ccx,
+    parse_dat,
+    parse_sta,
+    run_ccx,
+)
 from impactlab.fe.deck import DeckSpec, write_deck
 from impactlab.fe.mesh import Mesh, build_mesh
 from impactlab.fe.problem import Problem, check_maxima, make_problem
@@ -39,16 +47,50 @@ class BeyondCheckedWarning(UserWarning):
     not known (the run goes on)."""
 
 
+class DamagedRunsError(DamagedOutputError):
+    """Runs of :func:`indent` whose ccx output is damaged (``ccx.DamagedOutputError``), in one
+    line naming each file, line and fault; ``results``: every run's result in the order asked
+    (None for a damaged one), the finished runs being cached as usual."""
+
+    def __init__(
+        self,
+        damaged: dict[int, DamagedOutputError],
+        results: Sequence[IndentationResult | None],
+        cached: bool = True,
+    ) -> None:
+        self.damaged = dict(sorted(damaged.items()))
+        self.results = list(results)
+        text = "; ".join(str(e) for e in self.damaged.values())
+        done = [r for r in self.results if r is not None]
+        if done:
+            kept = ": the converged ones are cached (run again to read them)" if cached else ""
+            text += (
+                f"; the other {len(done)} run(s) (delta_max = "
+                + ", ".join(f"{r.delta_max * 1e6:.4g} um" for r in done)
+                + f") ended{kept}"
+            )
+        super().__init__(text)
+
+
 class NotConvergedWarning(RuntimeWarning):
     """An indentation run that ccx could not finish: its result is marked ``converged=False``
     and holds the curve up to the last converged point."""
 
 
-def assemble(problem: Problem, mesh: Mesh, deck: DeckSpec, out: RunOutput) -> IndentationResult:
-    """The result of one run from ccx's printed output."""
-    dat = parse_dat(out.dat)
+def assemble(
+    problem: Problem, mesh: Mesh, deck: DeckSpec, out: RunOutput, name: str = "job.dat"
+) -> IndentationResult:
+    """The result of one run from ccx's printed output (``name``: the ``.dat`` file's name in
+    messages). DamagedOutputError when the ``.dat`` text is damaged (``ccx.parse_dat``), or
+    ends before the time at which the ``.sta`` file records the run finishing, ccx having
+    ended normally (a file cut at a line's end: not a run that stopped)."""
+    dat = parse_dat(out.dat, name)
     sta = parse_sta(out.sta)
     t, f_sphere, f_flat = reactions(dat)
+    unloads = deck.unloading is not None
+    end = 2.0 if unloads else 1.0
+    finished = out.returncode == 0 and t.size > 0 and math.isclose(t[-1], end, rel_tol=1e-9)
+    _check_complete(out, sta, end, float(t[-1]) if t.size else None, finished, name)
     dmax = problem.delta_max
     delta = delta_at(deck.loading, deck.unloading, t, dmax)
     peak = float(np.max(np.abs(f_sphere))) if t.size else 0.0
@@ -60,9 +102,6 @@ def assemble(problem: Problem, mesh: Mesh, deck: DeckSpec, out: RunOutput) -> In
     for ti, di in zip(t[load], delta[load], strict=True):
         r, _, gap = surface_gap(dat, float(ti), mesh.nodes, sph_xy, problem.radius, float(di))
         radii.append(contact_radius_from_gap(r, gap - gap_tolerance(mesh, r)))
-    unloads = deck.unloading is not None
-    end = 2.0 if unloads else 1.0
-    finished = out.returncode == 0 and t.size > 0 and math.isclose(t[-1], end, rel_tol=1e-9)
     dent_r = dent_z = final_gap = np.empty(0)
     if t.size and unloads:
         r, z, final_gap = surface_gap(dat, float(t[-1]), mesh.nodes, sph_xy, problem.radius, 0.0)
@@ -106,6 +145,24 @@ def assemble(problem: Problem, mesh: Mesh, deck: DeckSpec, out: RunOutput) -> In
     )
 
 
+def _check_complete(
+    out: RunOutput, sta: list[Any], end: float, last: float | None, finished: bool, name: str
+) -> None:
+    """DamagedOutputError when ccx ended normally and its ``.sta`` file lists a converged
+    increment at the run's end time ``end``, but the ``.dat`` text stops before it (at time
+    ``last``; None: no block at all)."""
+    if finished or out.returncode != 0:
+        return
+    done = [r.total_time for r in sta if r.converged]
+    if not done or not math.isclose(done[-1], end, rel_tol=1e-5):
+        return
+    where = "has no printed block" if last is None else f"stops at time {last:.7g}"
+    raise DamagedOutputError(
+        f"{name}, line {out.dat.count(chr(10))}: the file {where}, but ccx ended normally and "
+        f"job.sta records the run finishing at time {end:g}; the file is damaged (cut short?)"
+    )
+
+
 #: Depth of the dent at the axis, relative to delta_max, from which a final state whose
 #: surfaces still touch leaves delta_r unresolved (``residual_depth``).
 UNRESOLVED_DENT = 1e-3
@@ -129,12 +186,32 @@ def residual_depth(final_gap: np.ndarray, dent_z: np.ndarray, delta_max: float) 
 def _solve(problem: Problem, mesh: Mesh, exe: str, keep: Path | None) -> IndentationResult:
     deck = problem.deck_spec(problem.mesh_spec())
     text = write_deck(mesh, deck)
+    run = f"ccx's job.dat for delta_max = {problem.delta_max * 1e6:.4g} um"
     if keep is not None:
         out = run_ccx(text, keep, exe)
-        return assemble(problem, mesh, deck, out)
+        return assemble(problem, mesh, deck, out, f"{run} ({keep / 'job.dat'})")
     with tempfile.TemporaryDirectory(prefix="impactlab-fe-") as tmp:
         out = run_ccx(text, Path(tmp), exe)
-    return assemble(problem, mesh, deck, out)
+    return assemble(problem, mesh, deck, out, run)
+
+
+def _run_pending(
+    todo: list[int],
+    workers: int,
+    job: Callable[[int], tuple[int, IndentationResult | DamagedOutputError]],
+    done: Callable[[int, IndentationResult], None],
+) -> dict[int, DamagedOutputError]:
+    """Run ``job`` for each index of ``todo`` on ``workers`` threads, handing each result to
+    ``done`` as it ends; the runs whose output was damaged, by index."""
+    damaged: dict[int, DamagedOutputError] = {}
+    with ThreadPoolExecutor(max_workers=workers) as pool:
+        for future in as_completed([pool.submit(job, i) for i in todo]):
+            i, res = future.result()
+            if isinstance(res, DamagedOutputError):
+                damaged[i] = res
+            else:
+                done(i, res)
+    return damaged
 
 
 def indent(
@@ -176,8 +253,11 @@ def indent(
 
     Returns one :class:`IndentationResult` per maximum, in the order given. A run that ccx
     cannot finish comes back with ``converged=False`` (curve up to the last converged point)
-    and a :class:`NotConvergedWarning`. RuntimeError when ccx is not installed (with how to
-    install it), ImportError when gmsh is missing, ValueError for bad input.
+    and a :class:`NotConvergedWarning`. A run whose ccx output is damaged (a ``.dat`` file cut
+    short) raises :class:`DamagedRunsError` once every run has ended, naming the file, the
+    line and the fault; the runs that finished are cached and in its ``results``.
+    RuntimeError when ccx is not installed (with how to install it), ImportError when gmsh is
+    missing, ValueError for bad input.
     """
     sphere_material = flat if sphere_material is None else sphere_material
     problems = [
@@ -222,23 +302,27 @@ def indent(
     n = max(1, min(len(todo), int(workers) if workers else (os.cpu_count() or 1)))
     keep = Path(keep_files) if keep_files is not None else None
 
-    def job(i: int) -> tuple[int, IndentationResult]:
+    def job(i: int) -> tuple[int, IndentationResult | DamagedOutputError]:
         sub = keep / f"run{i}" if keep is not None else None
-        return i, _solve(problems[i], meshes[i], exe, sub)
+        try:
+            return i, _solve(problems[i], meshes[i], exe, sub)
+        except DamagedOutputError as exc:  # the other runs go on, and are kept
+            return i, exc
 
-    if todo:
-        with ThreadPoolExecutor(max_workers=n) as pool:
-            for future in as_completed([pool.submit(job, i) for i in todo]):
-                i, res = future.result()
-                results[i] = res
-                if res.converged and use_cache:
-                    cache.store(directory, keys[i], res)
-                if progress is not None:
-                    progress(i, res)
+    def done(i: int, res: IndentationResult) -> None:
+        results[i] = res
+        if res.converged and use_cache:
+            cache.store(directory, keys[i], res)
+        if progress is not None:
+            progress(i, res)
+
+    damaged = _run_pending(todo, n, job, done) if todo else {}
     final = [r for r in results if r is not None]
     for r in final:
         if not r.converged:
             warnings.warn(r.status(), NotConvergedWarning, stacklevel=2)
+    if damaged:
+        raise DamagedRunsError(damaged, results, cached=use_cache)
     return final
 
 

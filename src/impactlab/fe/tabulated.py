@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import json
 import math
+import os
 from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any, Protocol
@@ -179,7 +180,10 @@ def tabulated_law(
     curves = curves_from_runs(runs, pair, radius, name, source)
     folder = curves_cache_dir()
     folder.mkdir(parents=True, exist_ok=True)
-    (folder / f"{name}.json").write_text(json.dumps(curves_file_record([curves]), indent=1))
+    text = json.dumps(curves_file_record([curves]), indent=1)
+    tmp = folder / f".{name}.json.{os.getpid()}.tmp"  # whole, then renamed over a damaged one
+    tmp.write_text(text)
+    os.replace(tmp, folder / f"{name}.json")
     return Tabulated(curves).build(pair, radius)
 
 
