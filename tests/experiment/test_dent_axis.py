@@ -45,7 +45,7 @@ def test_a_short_wide_dent_is_measured_within_its_sigmas(angle: int) -> None:
         ls = d.sliding_length
         assert abs(ls.value - sliding) < 2.0 * ls.sigma, (seed, ls, sliding)
         assert abs(d.width.value - width) < 2.5e-6
-        tilt = (d.sliding_angle - angle + 90.0) % 180.0 - 90.0
+        tilt = (math.degrees(d.sliding_angle) - angle + 90.0) % 180.0 - 90.0
         assert abs(tilt) < 0.2
 
 

@@ -76,7 +76,7 @@ def test_recovers_the_dent(scans: dict, case: int, fmt: str) -> None:
     assert abs(d.sliding_length.value - g.sliding_length) < 3.0 * d.sliding_length.sigma
     assert abs(d.width.value - g.width) < 0.02 * g.width
     ang = math.degrees(sc.truth.direction)
-    diff = (d.sliding_angle - ang + 180.0) % 360.0 - 180.0
+    diff = (math.degrees(d.sliding_angle) - ang + 180.0) % 360.0 - 180.0
     assert abs(diff) < 5.0 and not d.direction_ambiguous
     assert d.pileup == pytest.approx(g.pileup, rel=0.25)
     assert d.outline.shape[1] == 2 and np.allclose(d.outline[0], d.outline[-1])

@@ -4,7 +4,6 @@ duration and mean_force."""
 from __future__ import annotations
 
 import json
-import math
 import warnings
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -204,9 +203,7 @@ def _print_summary(res: ExperimentResult) -> None:
         if not res.kinematics.ok:
             rows.append(("ok", "no: the marker geometry is in doubt (see the warnings)", ""))
     if res.dent is not None:
-        name, text, unit = field_row(
-            "sliding_direction", math.radians(res.dent.sliding_angle), "rad"
-        )
+        name, text, unit = field_row("sliding_direction", res.dent.sliding_angle, "rad")
         ambiguous = " (ambiguous)" if res.dent.direction_ambiguous else ""
         rows.append((name, text + ambiguous, unit + " (scan x)"))
     if res.model is not None:

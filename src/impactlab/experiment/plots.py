@@ -88,7 +88,7 @@ def plot_dent(
         title
         or f"δp = {dent.delta_p.value * um:.3g} µm, "
         f"Ls = {dent.sliding_length.value * um:.4g} µm; "
-        f"sliding {dent.sliding_angle:.0f}°{amb}",
+        f"sliding {math.degrees(dent.sliding_angle):.0f}°{amb}",
         fontsize=10,
     )
     ax_map.legend(loc="upper right", fontsize=8, framealpha=0.6)

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -103,7 +102,7 @@ class ImpactKinematics:
         return self.poses.time[fr], data
 
     def to_dict(self) -> dict[str, Any]:
-        """JSON-ready summary (SI units; angles also in degrees)."""
+        """JSON-ready summary (SI units: angles in rad)."""
 
         def est(x: Estimate) -> dict[str, Any]:
             return x.to_dict()
@@ -111,7 +110,6 @@ class ImpactKinematics:
         d: dict[str, Any] = {
             "t_impact": est(self.t_impact),
             "angle_in": est(self.angle_in),
-            "angle_in_deg": est(self.angle_in.scaled(180.0 / math.pi, "deg")),
             "angle_out": est(self.angle_out),
             "v_c_in": [est(v) for v in self.v_c_in],
             "v_c_out": [est(v) for v in self.v_c_out],
@@ -143,7 +141,7 @@ class ImpactKinematics:
             },
             "geometry": self.geometry_source,
             "fitted_gravity": self.fitted_gravity,
-            "tilt_out_of_plane_deg": math.degrees(self.tilt_out_of_plane),
+            "tilt_out_of_plane": self.tilt_out_of_plane,
             "ok": self.ok,
             "doubts": list(self.doubts),
             "warnings": list(self.warnings),

@@ -321,7 +321,7 @@ def _metrics(
         width=Estimate(width, sig_wid, "m"),
         deepest=_xy(deepest),
         axis=_xy(axis),
-        sliding_angle=math.degrees(math.atan2(axis[1], axis[0])),
+        sliding_angle=math.atan2(axis[1], axis[0]),
         direction_ambiguous=bool(ambiguous),
         end_sharpness=(float(d_minus), float(d_plus)),
         deepest_fraction=float(-s_start / (s_end - s_start) if s_end > s_start else 0.5),

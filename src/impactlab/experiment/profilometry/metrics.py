@@ -34,7 +34,7 @@ class DentMetrics:
     """Unit vector of the sliding axis (scan x, y; the outline's long principal axis), oriented
     along the sliding direction."""
     sliding_angle: float
-    """Angle [deg] of the sliding direction from the scan's +x axis."""
+    """Angle [rad] of the sliding direction from the scan's +x axis, in (-pi, pi]."""
     direction_ambiguous: bool
     """Both ends of the dent equally sharp (within 10 %): the direction is a guess."""
     end_sharpness: tuple[float, float]
@@ -67,7 +67,7 @@ class DentMetrics:
             "width": self.width.to_dict(),
             "deepest_xy_m": list(self.deepest),
             "sliding_axis": list(self.axis),
-            "sliding_angle_deg": self.sliding_angle,
+            "sliding_angle": self.sliding_angle,
             "direction_ambiguous": self.direction_ambiguous,
             "end_fall_distance_m": {"start": self.end_sharpness[0], "end": self.end_sharpness[1]},
             "deepest_fraction": self.deepest_fraction,

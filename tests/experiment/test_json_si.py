@@ -1,0 +1,58 @@
+"""An analysed experiment's JSON (``to_dict``, results.json, ``impactlab analyze --json``) is in
+SI, as docs/json-schema.md promises: angles in rad, no ``_deg`` keys, no ``"unit": "deg"``."""
+
+from __future__ import annotations
+
+import json
+import math
+import tomllib
+from collections.abc import Callable, Iterator
+from pathlib import Path
+from typing import Any
+
+from impactlab.experiment import MarkerGeometry, analyze
+
+DATA = Path(__file__).resolve().parents[2] / "examples" / "data"
+CliMain = Callable[..., tuple[int, str, str]]
+
+
+def _walk(node: Any, path: str = "") -> Iterator[tuple[str, Any]]:
+    if isinstance(node, dict):
+        for k, v in node.items():
+            yield f"{path}.{k}", v
+            yield from _walk(v, f"{path}.{k}")
+    elif isinstance(node, list):
+        for i, v in enumerate(node):
+            yield from _walk(v, f"{path}[{i}]")
+
+
+def _degrees(record: Any) -> list[str]:
+    return [
+        p for p, v in _walk(record) if p.endswith("_deg") or (p.endswith(".unit") and v == "deg")
+    ]
+
+
+def test_to_dict_is_si() -> None:
+    table = tomllib.loads((DATA / "markers.toml").read_text())["markers"]
+    res = analyze(
+        DATA / "drop.csv",
+        DATA / "dent.npy",
+        pixel_size=12e-6,
+        height_unit="um",
+        up="+y",
+        geometry=MarkerGeometry.from_mapping(table),
+    )
+    record = res.to_dict()
+    assert _degrees(record) == []
+    assert res.dent is not None
+    assert abs(res.dent.sliding_angle) <= math.pi  # rad
+    assert record["dent"]["sliding_angle"] == res.dent.sliding_angle
+
+
+def test_the_commands_json_is_si(cli_main: CliMain) -> None:
+    code, out, err = cli_main(
+        "analyze", str(DATA / "drop.csv"), str(DATA / "dent.npy"), "--pixel-size", "12 um",
+        "--height-unit", "um", "--up", "+y", "--geometry", str(DATA / "markers.toml"), "--json",
+    )  # fmt: skip
+    assert code == 0, err
+    assert _degrees(json.loads(out)) == []
