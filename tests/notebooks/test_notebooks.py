@@ -1,7 +1,8 @@
 """The notebook gallery: each notebook of ``notebooks/`` (jupytext percent format,
 kept as text) runs as a script in a fresh subprocess, in a temporary folder, with
 ``MPLBACKEND=Agg``, prints its key numbers and writes its outputs; each has a documentation page
-``docs/notebooks/NAME.md`` that shows its current code (``notebook_pages.py`` writes them)."""
+``docs/notebooks/NAME.md`` that shows its current code and the value each cell displays
+(``notebook_pages.py`` writes them)."""
 
 from __future__ import annotations
 
@@ -17,7 +18,7 @@ HERE = Path(__file__).resolve().parent
 if str(HERE) not in sys.path:
     sys.path.insert(0, str(HERE))
 
-from notebook_pages import GALLERY, NOTEBOOKS, PAGES, cells  # noqa: E402
+from notebook_pages import GALLERY, NOTEBOOKS, OUT, PAGES, cells  # noqa: E402
 
 ROOT = HERE.parents[1]
 
@@ -50,9 +51,24 @@ CASES: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
     ),
 }
 
+# notebook -> how each value its cells display starts on its page, in order (after OUT)
+SHOWN: dict[str, tuple[str, ...]] = {
+    "simulate_impact": (
+        "```text\nRod(",
+        "```text\nget_material('aisi-1010')",
+        "```text\n<contact law 'ghaednia'",
+        "```text\nImpactResult(",
+        "|  | t | penetration | normal\\_force |",  # df.head() as a Markdown table
+        "```text\nBatchResult(",
+    ),
+    "invert_dent": ("```text\nInversionResult(",),
+    "analyze_experiment": ("```text\nExperimentResult(",),
+    "sweep_study": ("```text\nStudy('regime-map', grid, 867 cases", "```text\nSweepResult("),
+}
+
 
 def test_the_gallery_is_complete() -> None:
-    assert set(CASES) == set(GALLERY)
+    assert set(CASES) == set(GALLERY) == set(SHOWN)
     assert {p.stem for p in NOTEBOOKS.glob("*.py")} == set(GALLERY)
 
 
@@ -92,3 +108,23 @@ def test_notebook_format_and_page(name: str) -> None:
     )
     for img in re.findall(r"\]\((img/[\w.-]+\.png)\)", page):
         assert (PAGES / img).is_file(), img
+
+
+@pytest.mark.parametrize("name", sorted(GALLERY))
+def test_each_page_shows_the_values_its_cells_display(name: str) -> None:
+    page = (PAGES / f"{name}.md").read_text()
+    blocks = page.split(f"\n\n{OUT}\n\n")[1:]
+    assert len(blocks) == len(SHOWN[name]), (
+        f"docs/notebooks/{name}.md shows {len(blocks)} displayed values, the notebook "
+        f"displays {len(SHOWN[name])}: run tests/notebooks/notebook_pages.py"
+    )
+    for block, start in zip(blocks, SHOWN[name], strict=True):
+        assert block.startswith(start), f"{start!r} is not the start of {block[:200]!r}"
+    assert not re.search(r"\b0x[0-9a-fA-F]{6,}\b", page), "a memory address on the page"
+
+
+def test_the_inversion_page_shows_its_uncertainties() -> None:
+    """The gallery promises the inversion "with uncertainties": the displayed result has them."""
+    page = (PAGES / "invert_dent.md").read_text()
+    shown = page.split(f"\n\n{OUT}\n\n")[1].split("\n```")[0]
+    assert re.search(r"±|sigma", shown), shown
