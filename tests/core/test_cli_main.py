@@ -132,7 +132,7 @@ def test_worker_timeout_help_states_the_sweeps_default(cli_main: CliMain) -> Non
 @pytest.mark.parametrize(
     ("args", "needle"),
     [
-        (("simulate", "rod", "--mu", "abc"), "Invalid value for '--mu'"),
+        (("simulate", "rod", "--modes-axial", "abc"), "Invalid value for '--modes-axial'"),
         (("materials", "--bogus"), "No such option: --bogus"),
         (("simulate", "--radus", "1 mm"), "Possible options: --radius"),
     ],

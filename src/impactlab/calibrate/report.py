@@ -14,12 +14,21 @@ from typing import Any
 
 from impactlab._display import display_unit, format_number
 from impactlab._files import write_text_atomic
+from impactlab._version import __version__
 from impactlab.calibrate.api import Calibration
 from impactlab.calibrate.jsonout import calibration_json
 from impactlab.calibrate.plots import corner_figure, ppc_figure
 from impactlab.calibrate.result import ModelPosterior
 
-__all__ = ["html_report", "save"]
+__all__ = ["FILES", "RESULT_KEYS", "html_report", "save"]
+
+#: The files ``save`` writes into its folder, by name.
+FILES = {"results": "results.json", "report": "report.html"}
+#: Keys that every results.json of a calibration holds (how the command line knows its own).
+RESULT_KEYS = ("measurements", "settings", "criterion", "ranking", "models")
+#: The mark of report.html: its ``<meta name="generator">``, as the command line's output
+#: folders mark their files (``impactlab.cli.output_paths.mark``).
+GENERATOR = f"impactlab calibrate {__version__}"
 
 _STYLE = (
     "body{font-family:sans-serif;max-width:60em;margin:2em auto;line-height:1.4}"
@@ -179,7 +188,8 @@ def html_report(cal: Calibration, title: str = "impactlab calibration") -> str:
     notes = "".join(f"<li class='warn'>{html.escape(w)}</li>" for w in cal.warnings)
     ppc = _png(ppc_figure(cal.posteriors))
     return (
-        f"<!DOCTYPE html><html><head><meta charset='utf-8'><title>{html.escape(title)}</title>"
+        f"<!DOCTYPE html><html><head><meta charset='utf-8'><meta name='generator' "
+        f"content='{GENERATOR}'><title>{html.escape(title)}</title>"
         f"<style>{_STYLE}</style></head><body><h1>{html.escape(title)}</h1>"
         f"<p>{m.n_drops} drops ({html.escape(str(m.source or 'in memory'))}), {m.n_values} "
         f"measured values: {html.escape(', '.join(m.quantities))}.</p>"
@@ -200,9 +210,9 @@ def save(cal: Calibration, out_dir: str | Path, *, report: bool = True) -> dict[
     returns name -> path."""
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
-    files = {"results": out / "results.json"}
+    files = {"results": out / FILES["results"]}
     write_text_atomic(files["results"], json.dumps(calibration_json(cal), indent=2))
     if report:
-        files["report"] = out / "report.html"
+        files["report"] = out / FILES["report"]
         write_text_atomic(files["report"], html_report(cal))
     return files

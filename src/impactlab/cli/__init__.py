@@ -207,6 +207,9 @@ def main() -> None:
         interrupted(exc)
         sys.exit(130)
     except Exception as exc:  # usage errors of typer's (vendored) click, and the like
+        if type(exc).__name__ == "NoArgsIsHelpError":  # a group without a command: its help
+            exc.show()  # type: ignore[attr-defined]  # as click shows it: on stderr, status 2
+            sys.exit(exc.exit_code)  # type: ignore[attr-defined]
         message = getattr(exc, "format_message", None)
         code = getattr(exc, "exit_code", None)
         if callable(message) and isinstance(code, int):  # one line, as every other error

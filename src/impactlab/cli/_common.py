@@ -16,7 +16,7 @@ from rich.text import Text
 
 from impactlab._display import field_rows
 from impactlab._json import to_json
-from impactlab._validation import read_text_file
+from impactlab._validation import did_you_mean, read_text_file
 from impactlab.contact.rate import RATE_CONSTANTS, RATE_LAWS, RateLaw, constants_text, get_rate_law
 from impactlab.dynamics.input_checks import past_normal
 from impactlab.dynamics.kernels.inputs import angle_allowed, incidence_allowed
@@ -73,8 +73,10 @@ def rate_name(rate: str, name: str = "--rate") -> str | RateLaw | None:
     a result prints it, ``"cowper-symonds (D = 6500 1/s, q = 4)"``); UserError naming ``name``."""
     try:
         law = get_rate_law(rate, name)
-    except ValueError as exc:
-        raise UserError(str(exc)) from None
+    except ValueError as exc:  # an unknown name: the nearest law's ('_' for '-' too)
+        head, known = rate.partition("(")[0].strip().lower(), ("none", *RATE_LAWS)
+        near = "" if head in known else did_you_mean(head, known)
+        raise UserError(f"{exc}{near}") from None
     return law.name if law is not None and RATE_LAWS.get(law.name) is law else law
 
 
@@ -123,7 +125,9 @@ def as_option(message: str, keys: Iterable[str], label: Callable[[str], str]) ->
     """``message`` with its leading parameter name among ``keys`` (``"mu must be >= 0"``, an API
     message) spelled as the user gave it, ``label(key)`` (``"--mu must be >= 0"``)."""
     head, _, rest = message.partition(" ")
-    return f"{label(head)} {rest}" if head in keys and rest else message
+    if head not in keys or not rest or message.startswith(f"{label(head)} "):
+        return message  # not a parameter's, or labelled already ("mass (in c.toml) must ...")
+    return f"{label(head)} {rest}"
 
 
 def quantity(value: str | float | None, unit: str, name: str) -> float | None:
@@ -248,14 +252,19 @@ def length_help(default: str) -> str:
 _ROD_HELP = {
     "mass": "Rod mass, e.g. '0.46 kg' (bare number: kg; default 0.4607 kg).",
     "length": length_help("0.3048 m"),
-    "tip_radius": "Tip radius, e.g. '8.8 mm' (bare number: m; default 8.8 mm).",
+    "tip_radius": "Tip radius (--radius too), e.g. '8.8 mm' (bare number: m; default 8.8 mm).",
     "inertia": "I_C about the centre of mass, e.g. '3.6e-3 kg*m^2' (default m L^2/12).",
 }
 
 
+#: Other spellings of a rod option: the tip radius is ``--radius`` in simulate, drop and laws.
+_ROD_ALIASES = {"tip_radius": ("--radius",)}
+
+
 def rod_option(key: str) -> Any:
-    """The command-line option of the rod property ``key`` (``--tip-radius``)."""
-    return typer.Option(None, "--" + key.replace("_", "-"), help=_ROD_HELP[key])
+    """The command-line option of the rod property ``key`` (``--tip-radius``, ``--radius``)."""
+    flags = ("--" + key.replace("_", "-"), *_ROD_ALIASES.get(key, ()))
+    return typer.Option(None, *flags, help=_ROD_HELP[key])
 
 
 def parse_rod_table(table: Mapping[str, Any], prefix: str) -> dict[str, float]:

@@ -26,6 +26,7 @@ from rich.text import Text
 from impactlab._display import display_unit, format_number
 from impactlab._json import jsonable
 from impactlab.cli._common import UserError, console
+from impactlab.cli.output_paths import check_replaceable
 
 _PARAM_HELP = (
     'A free parameter and its prior, "name=uniform(low, high)", "name=loguniform(low, high)" or '
@@ -179,7 +180,9 @@ def calibrate_cmd(
         str | None, typer.Option(help="Dask scheduler address: one task per model there.")
     ] = None,
     as_json: Annotated[bool, typer.Option("--json", help="Print the result as JSON.")] = False,
-    quiet: Annotated[bool, typer.Option(help="No progress display.")] = False,
+    quiet: Annotated[
+        bool, typer.Option("--quiet/--no-quiet", "-q", help="No progress display.")
+    ] = False,
 ) -> None:
     """Calibrate free parameters of candidate models on measured drops (emcee on the compiled
     batch engine) and rank the models (PSIS-LOO)."""
@@ -224,6 +227,8 @@ def calibrate_cmd(
         ) from None
     except KeyboardInterrupt as exc:
         _interrupted(exc, bar, out)
+    except ValueError as exc:  # the sampler's settings: named as the user gave them
+        raise _sampler_error(exc, sampler, config, kw.get("steps", 1000)) from None
     finally:
         if bar is not None and bar.live.is_started:  # stop() prints a line on its own
             bar.stop()
@@ -242,8 +247,10 @@ def calibrate_cmd(
 
 def _run_options(seed: int | None, out: Path | None, restart: bool) -> dict[str, Any]:
     """``state_dir`` and ``restart`` of ``--out``/``--restart``; UserError naming the option
-    for a seed outside [0, 2^32), ``--restart`` without ``--out``, an ``--out`` that is a file."""
+    for a seed outside [0, 2^32), ``--restart`` without ``--out``, an ``--out`` that is a file
+    or holds a user's results.json or report.html (``output_paths.check_replaceable``)."""
     from impactlab.calibrate.input_checks import MAX_SEED
+    from impactlab.calibrate.report import FILES, RESULT_KEYS
 
     if seed is not None and not 0 <= seed <= MAX_SEED:
         raise UserError(f"--seed must be an integer in [0, {MAX_SEED}], got {seed}")
@@ -253,7 +260,24 @@ def _run_options(seed: int | None, out: Path | None, restart: bool) -> dict[str,
         return {}
     if out.exists() and not out.is_dir():
         raise UserError(f"--out {str(out)!r} is a file; give a folder")
+    check_replaceable(out, FILES.values(), "calibrate", "--out", {FILES["results"]: RESULT_KEYS})
     return {"state_dir": out / "state", "restart": restart}
+
+
+def _sampler_error(
+    exc: ValueError, given: dict[str, int | None], config: Path | None, steps: int
+) -> ValueError:
+    """``exc`` (``calibrate``'s ValueError) with a sampler setting at its head ("steps must be
+    >= 10, got 5") named as the user gave it: ``--steps`` on the command line, ``[sampler]
+    steps`` in the --config file; "[0, steps)" with the number of steps. Any other error as
+    it is."""
+    head, _, rest = str(exc).partition(" ")
+    if head not in given or not rest:
+        return exc
+    rest = rest.replace("[0, steps)", f"[0, {steps})")
+    if given[head] is not None or config is None:
+        return UserError(f"--{head} {rest}")
+    return UserError(f"{config}: [sampler] {head} {rest}")
 
 
 def _interrupted(exc: KeyboardInterrupt, bar: Any, out: Path | None) -> NoReturn:

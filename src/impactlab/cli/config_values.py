@@ -39,3 +39,13 @@ def text(value: Any, name: str) -> str:
     if not isinstance(value, str):
         raise UserError(f"{name} must be text, a name in quotes, got {value!r}")
     return value
+
+
+def option_numbers(cli: Mapping[str, Any], keys: Iterable[str]) -> dict[str, Any]:
+    """The options ``cli`` (by key, None: not given) with each given one of ``keys`` read as a
+    plain number (:func:`plain_number`: ``--mu must be a number, got 'abc'``), before any use."""
+    wanted = set(keys)
+    return {
+        k: plain_number(v, "--" + k.replace("_", "-")) if k in wanted and v is not None else v
+        for k, v in cli.items()
+    }

@@ -41,7 +41,7 @@ from impactlab.cli._common import (
     rate_name,
 )
 from impactlab.cli.config_file import ConfigOptions, command_table, merge_config, option_material
-from impactlab.cli.config_values import plain_number, text
+from impactlab.cli.config_values import option_numbers, plain_number, text
 from impactlab.cli.drop_body import MODES_HELP, drop_body
 from impactlab.cli.simulate_from import run_from
 from impactlab.dynamics.drop import DEFAULT_T_MAX, simulate_drop
@@ -180,7 +180,7 @@ def drop_cmd(
         "--flat",
         help="Flat material (library name, properties, TOML file; default aisi-1010).",
     ),
-    mu: float = typer.Option(
+    mu: str = typer.Option(
         DEFAULT_MU, "--mu", show_default=False, help="Friction coefficient, >= 0 (default 0)."
     ),
     friction: str = typer.Option(
@@ -208,7 +208,7 @@ def drop_cmd(
     ),
     modes_axial: int = typer.Option(None, "--modes-axial", help=MODES_HELP["modes_axial"]),
     modes_bending: int = typer.Option(None, "--modes-bending", help=MODES_HELP["modes_bending"]),
-    damping: float = typer.Option(
+    damping: str = typer.Option(
         None, "--damping", help="Modal damping ratio zeta of every mode, in [0, 1) (default 0)."
     ),
     gravity: bool = typer.Option(
@@ -217,7 +217,7 @@ def drop_cmd(
         show_default=False,
         help="Gravity on (default) or off; either replaces the --config file's gravity.",
     ),
-    rtol: float = typer.Option(
+    rtol: str = typer.Option(
         None,
         "--rtol",
         help="Relative tolerance of the integration, in [1e-13, 1e-3] (default 1e-7). To check "
@@ -272,6 +272,7 @@ def drop_cmd(
     """
     # the options named like the config file's keys, as given on the command line (else None)
     cli = {k: v if _on_command_line(ctx, k) else None for k, v in locals().items() if k in KEYS}
+    cli = option_numbers(cli, ("mu", "damping", "rtol"))
     if from_file is not None:  # the recorded drop, with the options given on top
         if config is not None:
             raise UserError(

@@ -31,6 +31,8 @@ from impactlab.cli._common import (
     print_rows,
     quantity,
 )
+from impactlab.cli.config_values import plain_number
+from impactlab.cli.output_paths import check_replaceable, save_figure
 from impactlab.materials import Material, get_material
 
 fe_app = typer.Typer(
@@ -101,38 +103,24 @@ def read_hardening(path: Path) -> list[tuple[float, float]]:
 
 
 _UNITS = {
-    "delta_max": "m",
-    "delta_c": "m",
-    "max_force": "N",
-    "residual_depth": "m",
-    "contact_radius_at_max": "m",
-    "pile_up": "m",
-    "last_converged_delta": "m",
+    **dict.fromkeys(("delta_max", "delta_c", "residual_depth", "contact_radius_at_max"), "m"),
+    **dict.fromkeys(("pile_up", "last_converged_delta", "loading_delta", "unloading_delta"), "m"),
+    **dict.fromkeys(("contact_radius", "dent_r", "dent_z"), "m"),
+    **dict.fromkeys(("loading_force", "unloading_force", "max_force"), "N"),
+    **dict.fromkeys(("delta_max_over_delta_c", "residual_ratio", "force_balance"), "1"),
     "run_time": "s",
-    "delta_max_over_delta_c": "1",
-    "residual_ratio": "1",
-    "force_balance": "1",
-    "loading_delta": "m",
-    "loading_force": "N",
-    "unloading_delta": "m",
-    "unloading_force": "N",
-    "contact_radius": "m",
-    "dent_r": "m",
-    "dent_z": "m",
 }
 
 
 #: The options of ``make_problem``'s parameters, for its messages.
-_OPTIONS = {
-    "delta_max": "--max",
-    "radius": "--radius",
-    "sphere": "--sphere",
-    "mu": "--mu",
-    "mesh_level": "--mesh",
-    "flat_hardening": "--hardening",
-}
+_OPTIONS = {"delta_max": "--max", "radius": "--radius", "sphere": "--sphere", "mu": "--mu",
+            "mesh_level": "--mesh", "flat_hardening": "--hardening"}  # fmt: skip
 #: The unit hint of a length given as a bare number (taken in m).
 BARE_HINT = " (a bare number is in m: give a unit, e.g. '5 um')"
+#: The largest sphere radius [m] taken: a larger one is a unit mistake (--radius 5: 5 m).
+MAX_RADIUS = 1.0
+#: The figure of --plot, in --out.
+FIGURE = "fe_indent.png"
 
 
 def _bare(text: str) -> bool:
@@ -143,8 +131,12 @@ def _bare(text: str) -> bool:
     return True
 
 
-def _check_maxima(maxima: list[str], deltas: list[float], radius: str, R: float) -> None:
-    """Each --max below the sphere radius; the unit hint only for a bare number."""
+def _check_sizes(maxima: list[str], deltas: list[float], radius: str, R: float) -> None:
+    """The radius at most :data:`MAX_RADIUS`, each --max below it; a unit hint for bare ones."""
+    if R > MAX_RADIUS:
+        hint = " (a bare number is in m: give a unit, e.g. '5 mm')" if _bare(radius) else ""
+        raise UserError(f"--radius {radius!r} ({R:g} m) is larger than {MAX_RADIUS:g} m, the "
+                        f"largest sphere taken{hint}")  # fmt: skip
     for text, d in zip(maxima, deltas, strict=True):
         if d >= R:
             hint = BARE_HINT if _bare(text) or _bare(radius) else ""
@@ -231,10 +223,11 @@ def summary_rows(res: Any) -> list[tuple[str, str, str]]:
     return rows
 
 
-def _plot(results: list[Any], out: Path | None) -> Path:
+def _plot(results: list[Any], out: Path) -> Path:
     """The loading and unloading curves and, when some run unloaded, the residual dents
     (a loading-only run has no dent: one panel)."""
     from impactlab._mpl import pyplot
+    from impactlab.experiment.checks import output_folder
 
     plt = pyplot()
     dented = [r for r in results if r.dent_r.size]
@@ -257,12 +250,22 @@ def _plot(results: list[Any], out: Path | None) -> Path:
         ax2.set_xlim(0, max(3.0 * float(r.contact_radius[-1]) * 1e3 for r in dented))
     ax1.legend()
     fig.tight_layout()
-    folder = out or Path(".")
-    folder.mkdir(parents=True, exist_ok=True)
-    path = folder / "fe_indent.png"
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
-    return path
+    try:
+        return save_figure(fig, output_folder(out, "--out") / FIGURE, "fe indent", dpi=120)
+    finally:
+        plt.close(fig)
+
+
+def _check_run(workers: int | None, out: Path | None, mu: str) -> float:
+    """Before any run: --workers at least 1; the figure's folder ``out`` (with --plot) holds
+    no user's file of its name (``output_paths.check_replaceable``); --mu a number (returned)."""
+    from impactlab.experiment.checks import check_output_folder
+
+    if workers is not None and workers < 1:
+        raise UserError(f"--workers must be a positive integer, got {workers}")
+    if out is not None:
+        check_replaceable(check_output_folder(out, "--out"), [FIGURE], "fe indent", "--out")
+    return plain_number(mu, "--mu")
 
 
 @fe_app.command("indent")
@@ -270,7 +273,11 @@ def indent_cmd(
     maxima: list[str] = typer.Option(
         ..., "--max", help="Largest interference, with units ('20 um'); repeat for several."
     ),
-    radius: str = typer.Option("8.8 mm", "--radius", help="Sphere radius."),
+    radius: str = typer.Option(
+        "8.8 mm",
+        "--radius",
+        help=f"Sphere radius, e.g. '5 mm' (bare number: m; at most {MAX_RADIUS:g} m).",
+    ),
     sphere: str = typer.Option("elastic-plastic", help="rigid, elastic or elastic-plastic."),
     body: str = typer.Option(
         "aisi-201", "--body", "--material", help="The sphere's material preset (--material too)."
@@ -285,7 +292,7 @@ def indent_cmd(
     hardening: Path | None = typer.Option(
         None, help="CSV of the flat's true stress [Pa], true plastic strain (first strain 0)."
     ),
-    mu: float = typer.Option(0.0, help="Friction coefficient of the contact."),
+    mu_text: str = typer.Option("0", "--mu", help="Friction coefficient of the contact."),
     mesh: int = typer.Option(1, "--mesh", help="Mesh level 1-4 (each doubles the elements)."),
     loading_only: bool = typer.Option(
         False,
@@ -294,13 +301,18 @@ def indent_cmd(
     ),
     workers: int | None = typer.Option(None, help="Parallel ccx processes (default: CPUs)."),
     no_cache: bool = typer.Option(False, "--no-cache", help="Run even if cached."),
-    plot: bool = typer.Option(False, "--plot", help="Write a figure (fe_indent.png)."),
-    out: Path | None = typer.Option(None, "--out", help="Folder for the figure."),
+    plot: bool = typer.Option(False, "--plot", help=f"Write a figure ({FIGURE})."),
+    out: Path = typer.Option(
+        Path("."),
+        "--out",
+        show_default=False,
+        help="Folder for the figure (default: the current one).",
+    ),
     as_json: bool = typer.Option(False, "--json", help="Machine-readable output (with curves)."),
 ) -> None:
     """Indent a flat with a sphere to each --max and unload (CalculiX, axisymmetric; with
     --loading-only the run stops at each --max)."""
-    from impactlab.fe import find_ccx, indent
+    from impactlab.fe import DamagedRunsError, find_ccx, indent
     from impactlab.fe.problem import make_problem
 
     R = cast(float, positive(radius, "m", "--radius"))  # the option has a default
@@ -308,7 +320,8 @@ def indent_cmd(
     fm = _material(flat, flat_E, flat_nu, flat_sy, "flat")
     bm = _material(body, body_E, body_nu, body_sy, "body")
     table = read_hardening(hardening) if hardening is not None else None
-    _check_maxima(maxima, cast(list[float], deltas), radius, R)
+    mu = _check_run(workers, out if plot else None, mu_text)
+    _check_sizes(maxima, cast(list[float], deltas), radius, R)
     for d in deltas:  # bad input is refused before ccx is looked for (``indent`` checks again)
         try:
             make_problem(
@@ -334,22 +347,19 @@ def indent_cmd(
             )
 
     kwargs: dict[str, Any] = {
-        "radius": R,
-        "delta_max": deltas,
-        "sphere": sphere,
-        "flat_hardening": table,
-        "mu": mu,
-        "mesh_level": mesh,
-        "unload": not loading_only,
-        "workers": workers,
-        "use_cache": not no_cache,
-        "progress": progress,
-    }
-    if show:
-        with console.status(f"running {len(deltas)} CalculiX indentation(s) ..."):
+        "radius": R, "delta_max": deltas, "sphere": sphere, "flat_hardening": table, "mu": mu,
+        "mesh_level": mesh, "unload": not loading_only, "workers": workers,
+        "use_cache": not no_cache, "progress": progress,
+    }  # fmt: skip
+    damaged: DamagedRunsError | None = None
+    try:
+        if show:
+            with console.status(f"running {len(deltas)} CalculiX indentation(s) ..."):
+                results = indent(fm, bm, **kwargs)
+        else:
             results = indent(fm, bm, **kwargs)
-    else:
-        results = indent(fm, bm, **kwargs)
+    except DamagedRunsError as exc:  # the runs that ended are printed, then the error
+        damaged, results = exc, [r for r in exc.results if r is not None]
     case = _case(  # what was indented: the JSON's "case"
         bm, fm, table, sphere=sphere, radius=R, mu=mu, mesh_level=mesh, loading_only=loading_only
     )
@@ -357,21 +367,10 @@ def indent_cmd(
         from impactlab._json import to_json
         from impactlab.fe.cache import ARRAYS
 
-        payload = []
-        for r in results:
-            item = _summary(r)
-            for name in ARRAYS:
-                item[name] = getattr(r, name).tolist()
-            payload.append(item)
+        payload = [{**_summary(r), **{n: getattr(r, n).tolist() for n in ARRAYS}} for r in results]
         materials = ("E", "nu", "yield_strength", "brinell_hardness", "meyer_index", "density")
-        units = {
-            **_UNITS,
-            **{key: SI_UNITS[key] for key in materials},
-            "radius": "m",
-            "mu": "1",
-            "true_stress": "Pa",
-            "true_plastic_strain": "1",
-        }
+        units = {**_UNITS, **{key: SI_UNITS[key] for key in materials}, "radius": "m", "mu": "1",
+                 "true_stress": "Pa", "true_plastic_strain": "1"}  # fmt: skip
         print(json.dumps(to_json({"case": case, "runs": payload}, units), indent=2))
     else:
         console.print(
@@ -385,6 +384,8 @@ def indent_cmd(
         path = _plot(results, out)
         if not as_json:
             console.print(f"figure: {path}", markup=False)
+    if damaged is not None:
+        raise UserError(str(damaged))
     failed = [r for r in results if not r.converged]
     if failed:  # what converged is printed above; the status says that not all did
         raise UserError(

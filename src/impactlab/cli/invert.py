@@ -172,7 +172,8 @@ _HELP = {
     "refused; required unless --case or --file gives it).",
     "v_i": "Drop velocity of the tip ('-1.41 m/s'; bare number: m/s; the sign is ignored; "
     "required unless --case or --file gives it).",
-    "e": "Coefficient of restitution (tip, normal); required for F unless --dv-cy is given.",
+    "e": "Coefficient of restitution (tip, normal), for the mean force F; it or --dv-cy is "
+    "required (without either the command is refused, T too) unless --case or --file gives it.",
     "mu": "Friction coefficient (paper Eq. 28); required unless --case or --file gives it.",
     "delta_p": "Permanent dent depth, a magnitude ('22 um'; bare number: m; the paper prints "
     "-22 um; required unless --case or --file gives it).",

@@ -1,14 +1,24 @@
 """Paths the commands write to or read a store from, checked before any work starts: a
 UserError that names the option (or argument) and the path as the user gave it, never an
-``[Errno]`` text or a temporary path of the writer."""
+``[Errno]`` text or a temporary path of the writer; and the rule of the files in an output
+folder (``--out``): a file that an earlier run of the same command wrote is replaced, a user's
+file of the same name never (:func:`check_replaceable`)."""
 
 from __future__ import annotations
 
+import io
+import json
 import os
+import re
 import shutil
+import struct
 import tempfile
+from collections.abc import Collection, Iterable, Mapping
 from pathlib import Path
+from typing import Any
 
+from impactlab._files import write_bytes_atomic
+from impactlab._version import __version__
 from impactlab.cli._common import UserError
 
 
@@ -77,4 +87,116 @@ def existing_store(path: Path) -> Path:
         raise UserError(
             f"{str(path)!r} is a file, not a sweep store (a folder written by impactlab sweep)"
         )
+    return path
+
+
+# --- Files in an output folder: one rule for every command that writes into a folder --------
+# A file that a run of the same command wrote may be replaced; any other file of the same name
+# (a user's) is left alone, and the command stops before any work with one line naming it.
+# impactlab recognises its files by a mark in them, as ``impactlab analyze`` does
+# (``experiment.saving``): a figure's PNG "Software" text or PDF "Creator", an HTML page's
+# ``<meta name="generator">``, each "impactlab COMMAND VERSION"; a JSON file by its keys.
+
+_PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
+_GENERATOR = re.compile(rb"<meta\s+name=['\"]generator['\"]\s+content=['\"]([^'\"]*)['\"]")
+_PDF_CREATOR = re.compile(rb"/Creator\s*\(([^)]*)\)")
+
+
+def mark(command: str) -> str:
+    """The mark of a file written by ``impactlab COMMAND``: "impactlab COMMAND VERSION"."""
+    return f"impactlab {command} {__version__}"
+
+
+def _png_software(path: Path) -> str:
+    """The "Software" text of a PNG file (its text chunks before the image data), or ""."""
+    with path.open("rb") as fh:
+        if fh.read(8) != _PNG_SIGNATURE:
+            return ""
+        while True:
+            head = fh.read(8)
+            if len(head) < 8:
+                return ""
+            size, kind = struct.unpack(">I4s", head)
+            if kind in (b"IDAT", b"IEND") or size > 1 << 20:
+                return ""
+            data = fh.read(size + 4)[:size]  # the chunk and its CRC
+            key, _, value = data.partition(b"\0")
+            if kind == b"tEXt" and key == b"Software":
+                return value.decode("latin-1")
+
+
+def _tail_match(path: Path, pattern: re.Pattern[bytes], head: bool) -> str:
+    """The first group of ``pattern`` in the first (``head``) or last 64 KiB of ``path``."""
+    with path.open("rb") as fh:
+        if not head:
+            fh.seek(max(0, path.stat().st_size - (1 << 16)))
+        found = pattern.search(fh.read(1 << 16))
+    return found.group(1).decode("latin-1") if found else ""
+
+
+def written_by(path: Path, command: str, keys: Collection[str] = ()) -> bool:
+    """Whether the file ``path`` was written by ``impactlab COMMAND`` (see above; a JSON file:
+    an object holding every one of ``keys``). An empty file counts as one (nothing to lose:
+    left by an interrupted write); a file that cannot be read does not."""
+    try:
+        if path.stat().st_size == 0:
+            return True
+        suffix = path.suffix.lower()
+        if suffix == ".json":
+            data = json.loads(path.read_text(encoding="utf-8"))
+            return bool(keys) and isinstance(data, dict) and set(keys) <= data.keys()
+        if suffix == ".png":
+            text = _png_software(path)
+        elif suffix in (".html", ".pdf"):
+            pattern = _GENERATOR if suffix == ".html" else _PDF_CREATOR
+            text = _tail_match(path, pattern, head=suffix == ".html")
+        else:
+            return False
+    except (OSError, ValueError):
+        return False
+    return text.rpartition(" ")[0] == f"impactlab {command}"  # "impactlab COMMAND VERSION"
+
+
+def check_replaceable(
+    folder: Path,
+    names: Iterable[str],
+    command: str,
+    option: str = "--out",
+    keys: Mapping[str, Collection[str]] | None = None,
+) -> None:
+    """UserError, before anything is written, when a file ``command`` writes into ``folder``
+    (``names``) is in the way: a file of that name that it did not write (:func:`written_by`,
+    the JSON files by their ``keys``), or a folder of that name. Nothing is written or
+    removed; the message names each such file and ``option``, where to write instead."""
+    paths = [folder / name for name in names]
+    dirs = [p for p in paths if p.is_dir()]
+    if dirs:
+        raise UserError(
+            f"cannot write {str(dirs[0])!r}: a folder of that name is in the way (remove or "
+            f"rename it, or choose another {option})"
+        )
+    foreign = [
+        p for p in paths if p.is_file() and not written_by(p, command, (keys or {}).get(p.name, ()))
+    ]
+    if foreign:
+        one = len(foreign) == 1
+        named = ", ".join(repr(str(p)) for p in foreign[:3])
+        if len(foreign) > 3:
+            named += f" and {len(foreign) - 3} more"
+        raise UserError(
+            f"{named} {'is' if one else 'are'} in the output folder but {'was' if one else 'were'}"
+            f" not written by impactlab {command}: {'it is' if one else 'they are'} left as "
+            f"{'it is' if one else 'they are'} (move {'it' if one else 'them'}, or choose another "
+            f"{option})"
+        )
+
+
+def save_figure(fig: Any, path: Path, command: str, dpi: float) -> Path:
+    """Write the matplotlib figure ``fig`` to ``path`` (PNG or PDF by its suffix) whole
+    (``impactlab._files``), marked as written by ``impactlab COMMAND``; returns ``path``."""
+    fmt = path.suffix.lower().lstrip(".")
+    buf = io.BytesIO()
+    key = "Creator" if fmt == "pdf" else "Software"
+    fig.savefig(buf, format=fmt, dpi=dpi, metadata={key: mark(command)})
+    write_bytes_atomic(path, buf.getvalue())
     return path

@@ -35,11 +35,11 @@ from impactlab.cli.config_file import (
     option_material,
     refuse_given,
 )
-from impactlab.cli.config_values import plain_number, text
+from impactlab.cli.config_values import option_numbers, plain_number, text
 from impactlab.cli.drop_body import flexible_rod
 from impactlab.cli.simulate_from import FROM_RULE, run_from
 from impactlab.cli.simulate_help import HELP
-from impactlab.cli.simulate_output import report_result
+from impactlab.cli.simulate_output import check_plot_folder, report_result
 from impactlab.dynamics import ImpactResult, simulate
 from impactlab.dynamics.drop import DEFAULT_T_MAX
 from impactlab.dynamics.drop_checks import DropError
@@ -198,7 +198,7 @@ def simulate_cmd(
     speed: str = _option("speed"),
     incidence: str = _option("incidence"),
     spin: str = _option("spin"),
-    mu: float = typer.Option(
+    mu: str = typer.Option(
         None,
         "--mu",
         help=f"Friction coefficient (default {DEFAULT_MU:g}, as impactlab.simulate).",
@@ -233,11 +233,11 @@ def simulate_cmd(
     ),
     modes_axial: int = _option("modes_axial"),
     modes_bending: int = _option("modes_bending"),
-    damping: float = _option("damping"),
+    damping: str = _option("damping"),
     rate: str = _option("rate"),
     stop: str = _option("stop"),
     t_max: str = _option("t_max"),
-    rtol: float = typer.Option(None, "--rtol", help=HELP["rtol"]),
+    rtol: str = typer.Option(None, "--rtol", help=HELP["rtol"]),
     config: Path = typer.Option(
         None, "--config", help="TOML file of these keys (or a 'simulate' table); options win."
     ),
@@ -275,27 +275,29 @@ def simulate_cmd(
     """
     # the options named like the config file's keys, as given (None: not given)
     cli = {k: v for k, v in locals().items() if k in _KEYS}  # switches: True, False or None
+    cli = option_numbers(cli, ("mu", "damping", "rtol"))
     if out is not None and not plot:
         raise UserError("--out applies only with --plot (where to save the figures)")
+    if from_file is not None and config is not None:
+        raise UserError(
+            "--config and --from: --from takes the recorded input, with options on top; "
+            "leave out --config"
+        )
+    folder = None
+    if plot:  # checked before anything runs: the folder, and no user's file written over
+        from impactlab.experiment.checks import check_output_folder  # lazy: a fast CLI start
+
+        folder = check_output_folder(Path(".") if out is None else out, "--out")
+        check_plot_folder(folder)
     # one impact or drop, then the process ends: a first compile's garbage is left to the exit
     with garbage_deferred():
         if from_file is not None:
-            if config is not None:
-                raise UserError(
-                    "--config and --from: --from takes the recorded input, with options on top; "
-                    "leave out --config"
-                )
             result = run_from(from_file, cli)
             if plot and isinstance(result, DropResult):
                 raise UserError("--plot: the flexible rod's drop has no figures here; leave it out")
         opt = _merge(load_toml(config, "--config"), cli, config)
         if plot and opt.given("flexible"):
             raise UserError("--plot: the flexible rod's drop has no figures here; leave it out")
-        folder = None
-        if plot:
-            from impactlab.experiment.checks import output_folder  # lazy: a fast CLI start
-
-            folder = output_folder(Path(".") if out is None else out, "--out")
         if from_file is None:
             try:
                 result = run_simulate(opt)

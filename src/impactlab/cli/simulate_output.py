@@ -1,4 +1,9 @@
-"""What ``impactlab simulate`` prints and saves (``--from``: ``impactlab.cli.simulate_from``)."""
+"""What ``impactlab simulate`` prints and saves (``--from``: ``impactlab.cli.simulate_from``).
+
+With ``--plot`` the figures (``impactlab.dynamics.plotting``, each as PNG and PDF) and
+``impact_result.json`` go into ``--out`` (the current folder by default): files that an earlier
+``impactlab simulate`` wrote there are replaced, a user's file of the same name never
+(``impactlab.cli.output_paths``; checked before the impact is simulated)."""
 
 from __future__ import annotations
 
@@ -9,11 +14,55 @@ from pathlib import Path
 
 from rich.text import Text
 
+from impactlab._files import write_text_atomic
 from impactlab._json import to_json
 from impactlab.cli._common import SI_UNITS, console, emit
 from impactlab.cli.drop import report_drop
+from impactlab.cli.output_paths import check_replaceable, save_figure
 from impactlab.dynamics import ImpactResult
 from impactlab.dynamics.drop_result import DropResult
+
+#: The figures of ``--plot`` (the ``plot_*`` of ``impactlab.dynamics.plotting``), their formats
+#: and resolution [dpi], and the result saved with them.
+FIGURES = ("force_time", "force_penetration", "contact_path", "dent")
+FORMATS = ("png", "pdf")
+FIGURE_DPI = 150
+RESULT_FILE = "impact_result.json"
+#: Keys that every ``impact_result.json`` of ``impactlab simulate`` holds (how it is known).
+RESULT_KEYS = ("e", "delta_p", "duration", "mean_force", "impactlab_version", "input")
+
+
+def output_names() -> list[str]:
+    """The files ``--plot`` writes into its folder."""
+    return [f"impact_{name}.{ext}" for name in FIGURES for ext in FORMATS] + [RESULT_FILE]
+
+
+def check_plot_folder(folder: Path) -> None:
+    """UserError, before anything runs, when a file ``--plot`` writes into ``folder`` is a
+    user's (not written by ``impactlab simulate``) or a folder of that name."""
+    check_replaceable(folder, output_names(), "simulate", "--out", {RESULT_FILE: RESULT_KEYS})
+
+
+def _save(result: ImpactResult, data: dict[str, object], out: Path) -> list[str]:
+    """The figures and ``impact_result.json`` written into ``out`` (made with its parents),
+    each whole and marked as impactlab simulate's; the paths written."""
+    from impactlab._mpl import pyplot
+    from impactlab.dynamics import plotting
+    from impactlab.experiment.checks import output_folder
+
+    output_folder(out, "--out")
+    plt, files = pyplot(), []
+    for name in FIGURES:
+        fig = getattr(plotting, f"plot_{name}")(result)
+        try:
+            for ext in FORMATS:
+                path = save_figure(fig, out / f"impact_{name}.{ext}", "simulate", FIGURE_DPI)
+                files.append(str(path))
+        finally:
+            plt.close(fig)
+    saved = out / RESULT_FILE
+    write_text_atomic(saved, json.dumps(to_json(data, SI_UNITS), indent=2))
+    return [*files, str(saved)]
 
 
 def report_result(result: ImpactResult | DropResult, *, out: Path | None, as_json: bool) -> None:
@@ -27,14 +76,7 @@ def report_result(result: ImpactResult | DropResult, *, out: Path | None, as_jso
     sphere = not math.isfinite(result.angle)
     hidden = ("angle", "angle_out") if sphere else ()
     data = {k: v for k, v in result.to_dict().items() if k not in hidden}
-    files: list[str] = []
-    if out is not None:
-        from impactlab.dynamics.plotting import save_figures  # lazy: a fast CLI start
-
-        files = [str(p) for p in save_figures(result, out)]
-        saved = out / "impact_result.json"
-        saved.write_text(json.dumps(to_json(data, SI_UNITS), indent=2))
-        files.append(str(saved))
+    files = _save(result, data, out) if out is not None else []
     if as_json:
         emit({**data, "files": files}, as_json=True)
         return
@@ -43,4 +85,4 @@ def report_result(result: ImpactResult | DropResult, *, out: Path | None, as_jso
         console.print(Text(f"saved {f}"))
 
 
-__all__ = ["report_result"]
+__all__ = ["check_plot_folder", "output_names", "report_result"]

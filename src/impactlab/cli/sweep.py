@@ -11,6 +11,7 @@ impactlab sweep export STORE OUT.csv|OUT.nc
 
 from __future__ import annotations
 
+import json
 import sys
 import warnings
 from dataclasses import dataclass
@@ -20,13 +21,15 @@ from typing import TYPE_CHECKING, Annotated, Any
 import typer
 from typer.core import TyperGroup
 
+from impactlab._json import to_json
 from impactlab._validation import did_you_mean
-from impactlab.cli._common import UserError, emit
+from impactlab.cli._common import SI_UNITS, UserError, emit
 from impactlab.cli.output_paths import existing_store, output_file, output_store
 from impactlab.cli.sweep_summary import (
     info_json,
     print_uncertainty,
     run_summary,
+    uncertainty_json,
     warn_incomplete,
 )
 
@@ -205,15 +208,19 @@ def run_cmd(
     if netcdf is not None:
         export_netcdf(ds, netcdf)
     files = [str(f) for f in _plots(plot_sweep, ds, plot)] if plot is not None else []
-    if res.study.uncertainty is not None and not quiet:
-        print_uncertainty(ds, None, None, as_json=False)
-    if quiet and not as_json:
+    monte_carlo = res.study.uncertainty is not None
+    if as_json:  # one JSON document on stdout: a Monte Carlo study's report inside it
+        doc = to_json(run_summary(res, ds, netcdf, files, as_json=True), SI_UNITS)
+        if monte_carlo:
+            doc["uncertainty"] = uncertainty_json(ds)
+        print(json.dumps(doc, indent=2))
         return
-    emit(
-        run_summary(res, ds, netcdf, files, as_json=as_json),
-        as_json=as_json,
-        title=f"sweep {res.study.name}",
-    )
+    if quiet:
+        return
+    if monte_carlo:
+        print_uncertainty(ds, None, None, as_json=False)
+    summary = run_summary(res, ds, netcdf, files, as_json=False)
+    emit(summary, as_json=False, title=f"sweep {res.study.name}")
 
 
 def _check_run_paths(out: Path | None, netcdf: Path | None) -> None:

@@ -130,7 +130,7 @@ def print_uncertainty(
     include_flagged: bool = False,
 ) -> None:
     """The uncertainty reports of the sweep ``ds`` (one per grid point), as tables or, with
-    ``as_json``, one JSON object keyed by the points' titles."""
+    ``as_json``, one JSON object keyed by the points' titles (:func:`uncertainty_json`)."""
     from impactlab.sweep import uncertainty_reports
 
     reports = uncertainty_reports(ds, outputs, percentiles, include_flagged)
@@ -139,6 +139,16 @@ def print_uncertainty(
         return
     for title, rep in reports.items():
         _print_report(rep.to_dict(), f"uncertainty: {title}")
+
+
+def uncertainty_json(ds: Any) -> dict[str, Any]:
+    """The uncertainty reports of the sweep ``ds`` with the study's outputs and percentiles,
+    as ``sweep uncertainty --json`` prints them: one object per grid point, keyed by its
+    title (``sweep run --json`` holds it as ``uncertainty``)."""
+    from impactlab.sweep import uncertainty_reports
+
+    reports = uncertainty_reports(ds, None, None, False)
+    return {k: _uncertainty_json(r.to_dict()) for k, r in reports.items()}
 
 
 def _print_report(report: dict[str, Any], title: str) -> None:

@@ -19,7 +19,6 @@ def warm(
     jobs: int = typer.Option(
         None,
         "--jobs",
-        min=1,
         help="Processes compiling side by side (the rigid and the flexible engine); "
         "default: one per core, at most 2. 1: all in this process.",
     ),
@@ -36,6 +35,8 @@ def warm(
     """
     from impactlab.dynamics.warm import compiled_cache_dir, warm_in_processes
 
+    if jobs is not None and jobs < 1:
+        raise UserError(f"--jobs must be a positive integer, got {jobs}")
     try:
         done = warm_in_processes(tuple(part) if part else None, jobs)
     except (ValueError, RuntimeError) as exc:
