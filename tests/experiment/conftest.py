@@ -112,3 +112,25 @@ def junk(data_dir: Path) -> dict[str, Path]:
         path.write_bytes(b"not a measurement\n" * 8)
         out[ext] = path
     return out
+
+
+#: The example data of the docs (examples/data): a drop, its dent and the marker geometry.
+EXAMPLE_DATA = Path(__file__).resolve().parents[2] / "examples" / "data"
+
+
+@pytest.fixture(scope="session")
+def analysed_example() -> Any:
+    """``analyze`` of the docs' example drop and dent (12 um pixels, heights in um, +y up)."""
+    import tomllib
+
+    from impactlab.experiment import analyze
+
+    table = tomllib.loads((EXAMPLE_DATA / "markers.toml").read_text())["markers"]
+    return analyze(
+        EXAMPLE_DATA / "drop.csv",
+        EXAMPLE_DATA / "dent.npy",
+        pixel_size=12e-6,
+        height_unit="um",
+        up="+y",
+        geometry=MarkerGeometry.from_mapping(table),
+    )

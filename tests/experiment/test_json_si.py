@@ -5,14 +5,11 @@ from __future__ import annotations
 
 import json
 import math
-import tomllib
 from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any
 
-from impactlab.experiment import MarkerGeometry, analyze
-
-DATA = Path(__file__).resolve().parents[2] / "examples" / "data"
+DATA = Path(__file__).resolve().parents[2] / "examples" / "data"  # as conftest.EXAMPLE_DATA
 CliMain = Callable[..., tuple[int, str, str]]
 
 
@@ -32,16 +29,8 @@ def _degrees(record: Any) -> list[str]:
     ]
 
 
-def test_to_dict_is_si() -> None:
-    table = tomllib.loads((DATA / "markers.toml").read_text())["markers"]
-    res = analyze(
-        DATA / "drop.csv",
-        DATA / "dent.npy",
-        pixel_size=12e-6,
-        height_unit="um",
-        up="+y",
-        geometry=MarkerGeometry.from_mapping(table),
-    )
+def test_to_dict_is_si(analysed_example) -> None:
+    res = analysed_example
     record = res.to_dict()
     assert _degrees(record) == []
     assert res.dent is not None

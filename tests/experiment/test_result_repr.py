@@ -23,23 +23,8 @@ def test_errors_and_warnings_are_counted() -> None:
     assert "\n" not in text and len(text) < 200
 
 
-def test_the_analysed_example_shows_its_estimates(tmp_path) -> None:
-    import tomllib
-    from pathlib import Path
-
-    from impactlab.experiment import MarkerGeometry, analyze
-
-    data = Path(__file__).resolve().parents[2] / "examples" / "data"
-    table = tomllib.loads((data / "markers.toml").read_text())["markers"]
-    res = analyze(
-        data / "drop.csv",
-        data / "dent.npy",
-        pixel_size=12e-6,
-        height_unit="um",
-        up="+y",
-        geometry=MarkerGeometry.from_mapping(table),
-    )
-    text = repr(res)
+def test_the_analysed_example_shows_its_estimates(analysed_example) -> None:
+    text = repr(analysed_example)
     assert text.startswith("ExperimentResult(drop.csv + dent.npy, e=0.50")
     for part in (" ± ", "delta_p=", " m,", "duration=", " s,", "mean_force=", " N,", "ok=True)"):
         assert part in text

@@ -383,3 +383,13 @@ def emit(
         print(json.dumps(to_json(data, si, sigmas), indent=2))
         return
     print_rows(field_rows(data, si, sigmas), title)
+
+
+def gravity_option() -> Any:
+    """The ``--gravity/--no-gravity`` switch of simulate and drop (None: not given)."""
+    return typer.Option(
+        None,
+        "--gravity/--no-gravity",
+        show_default=False,
+        help="Gravity on (default) or off; either replaces the --config file's gravity.",
+    )

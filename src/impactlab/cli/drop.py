@@ -33,6 +33,7 @@ from impactlab.cli._common import (
     check_rate_flat,
     check_rate_law,
     emit,
+    gravity_option,
     length_help,
     load_toml,
     positive,
@@ -211,12 +212,7 @@ def drop_cmd(
     damping: str = typer.Option(
         None, "--damping", help="Modal damping ratio zeta of every mode, in [0, 1) (default 0)."
     ),
-    gravity: bool = typer.Option(
-        None,
-        "--gravity/--no-gravity",
-        show_default=False,
-        help="Gravity on (default) or off; either replaces the --config file's gravity.",
-    ),
+    gravity: bool = gravity_option(),
     rtol: str = typer.Option(
         None,
         "--rtol",

@@ -23,6 +23,7 @@ from impactlab.cli._common import (
     as_option,
     check_rate_flat,
     check_rate_law,
+    gravity_option,
     load_toml,
     positive,
     quantity,
@@ -212,12 +213,7 @@ def simulate_cmd(
     diameter: str = _option("diameter"),
     material: str = _option("material"),
     flat: str = _option("flat"),
-    gravity: bool = typer.Option(
-        None,
-        "--gravity/--no-gravity",
-        show_default=False,
-        help="Gravity on (default) or off; either replaces the --config file's gravity.",
-    ),
+    gravity: bool = gravity_option(),
     constant_angle: bool = typer.Option(
         None,
         "--constant-angle/--no-constant-angle",
