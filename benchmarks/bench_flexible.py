@@ -59,7 +59,7 @@ def one_angle(deg: int, repeats: int, n_elements: int) -> dict[str, float]:
         times.append(time.process_time() - t0)
     t0 = time.process_time()
     ref_kw = {k: v for k, v in kw.items() if k != "history"}
-    ref = drop_reference(rod, **ref_kw, t_stop=r.sequence_duration + 3e-4, n_elements=n_elements)
+    ref = drop_reference(rod, **ref_kw, t_stop=r.sequence_duration + 1e-3, n_elements=n_elements)
     t_fe = time.process_time() - t0
     flex_ms = 1e3 * statistics.median(times)
     return {

@@ -1,5 +1,5 @@
 """An inversion keeps the texts of its warnings (``InversionResult.warnings``), the same as
-``impactlab invert --json`` lists, and still issues each as an ImplausibleInputWarning."""
+``impactlab invert --json`` lists, and still warns each as an ImplausibleInputWarning."""
 
 from __future__ import annotations
 

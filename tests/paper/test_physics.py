@@ -15,9 +15,11 @@ from impactlab.paper import data as D
 from impactlab.paper.analytic_rows import experimental_rows
 from impactlab.paper.physics import (
     CONFIGURATIONS,
+    E_COLUMN,
     FE_TABULATED,
     MEASURED,
     ROWS,
+    SCAR_COLUMN,
     physics_inputs,
     physics_table,
     rigid_e_gravity_removed,
@@ -28,7 +30,7 @@ from impactlab.paper.physics_report import physics_section
 from impactlab.paper.quantities import flag_names
 from impactlab.paper.report import Figure, Heading, Table, to_markdown
 
-NUMERIC = ("e", "delta_p [um]", "L_s [um]", "T [ms]")
+NUMERIC = (E_COLUMN, "delta_p [um]", SCAR_COLUMN, "T [ms]")
 
 
 @pytest.fixture(scope="module")
@@ -56,9 +58,9 @@ def test_measured_rows_are_the_papers(table):
     exp = experimental_rows().set_index("angle [deg]")
     for ang, x in D.EXPERIMENTS.items():
         row = table[(table["configuration"] == MEASURED) & (table["angle [deg]"] == ang)].iloc[0]
-        assert row["e"] == x.e
+        assert row[E_COLUMN] == x.e
         assert row["delta_p [um]"] == pytest.approx(abs(x.delta_p) * 1e6, rel=1e-12)
-        assert row["L_s [um]"] == pytest.approx(abs(x.L_s) * 1e6, rel=1e-12)
+        assert row[SCAR_COLUMN] == pytest.approx(abs(x.L_s) * 1e6, rel=1e-12)
         assert row["T [ms]"] == exp.loc[ang, "T [ms]"]
 
 
@@ -80,8 +82,8 @@ def test_fe_tabulated_row_is_the_documented_one(table):
     (1.07 / 1.83 / 1.49 times the measured), e 0.71 / 0.61 / 0.37, 3 contacts each."""
     fe = table[table["configuration"] == FE_TABULATED.name].sort_values("angle [deg]")
     np.testing.assert_allclose(fe["delta_p [um]"], [23.6, 47.5, 156.7], rtol=0.01)
-    np.testing.assert_allclose(fe["e"], [0.710, 0.609, 0.370], atol=0.005)
-    np.testing.assert_allclose(fe["L_s [um]"], [267, 957, 1221], rtol=0.01)
+    np.testing.assert_allclose(fe[E_COLUMN], [0.710, 0.609, 0.370], atol=0.005)
+    np.testing.assert_allclose(fe[SCAR_COLUMN], [267, 957, 1221], rtol=0.01)
     assert list(fe["contacts"]) == [3, 3, 3]
     assert (fe["flags"] == "").all()  # inside the FE curves: nothing extrapolated
 
@@ -117,11 +119,11 @@ def test_table_values_are_the_results(runs, table):
             row = table[(table["configuration"] == cfg.name) & (table["angle [deg]"] == ang)]
             row = row.iloc[0]
             if cfg.flexible:
-                assert row["e"] == res.e  # DropResult.e: gravity impulse removed
+                assert row[E_COLUMN] == res.e  # DropResult.e: gravity impulse removed
             else:  # the same definition for the rigid engine's result
-                assert row["e"] == rigid_e_gravity_removed(res)
+                assert row[E_COLUMN] == rigid_e_gravity_removed(res)
                 g_T = 9.80665 * res.duration / abs(res.vn_in)
-                assert row["e"] == pytest.approx(res.e + g_T, rel=1e-12)
+                assert row[E_COLUMN] == pytest.approx(res.e + g_T, rel=1e-12)
             assert row["flags"] == flag_names(res)
             assert row["max_delta_ratio"] == pytest.approx(res.max_delta_ratio)
             dent, T = (
@@ -185,3 +187,35 @@ def test_calibrated_section_ranks_the_configurations() -> None:
     assert ("did not converge" in text) != ("converged (R-hat <= 1.05 over the walkers" in text)
     if "did not converge" in text:
         assert any("R-hat" in w for w in cal["warnings"])
+
+
+def test_columns_are_named_by_what_they_hold(runs, table):
+    """e with the gravity impulse removed and the extent of the mark: named so, not as
+    simulations.csv's impact e and signed slip L_s; the measured row's T named as the inversion
+    of the measured drop, not a measurement."""
+    assert (E_COLUMN, SCAR_COLUMN) == ("e_gravity_removed", "scar_length [um]")
+    assert not {"e", "L_s [um]"} & set(table.columns)
+    assert "inversion" in MEASURED and "Eq. 12" in MEASURED
+    rigid = runs[("rigid rod", 20)]
+    row = table[(table["configuration"] == "rigid rod") & (table["angle [deg]"] == 20)].iloc[0]
+    assert row[SCAR_COLUMN] == pytest.approx(abs(rigid.contact_travel) * 1e6, rel=1e-12)
+    assert row[SCAR_COLUMN] != pytest.approx(abs(rigid.sliding_length) * 1e6, rel=0.01)
+    assert row[E_COLUMN] != rigid.e  # the impact's e keeps the gravity impulse
+
+
+def test_the_drop_figure_marks_an_extrapolated_drop(runs, tmp_path, monkeypatch):
+    """physics_drop_20deg.png: the title says the drop left its law's verified range, and the
+    report's caption says so too."""
+    import impactlab.paper.physics_figures as PF
+
+    shown = {}
+    monkeypatch.setattr(PF, "_save", lambda plt, fig, path: shown.setdefault("fig", fig) and path)
+    res = runs[("flexible rod", 20)]
+    assert "LAW_EXTRAPOLATED" in flag_names(res)
+    figure_drop(tmp_path / "drop.png", res)
+    title = shown["fig"].axes[0].get_title()
+    assert title.endswith(f" (extrapolated: {res.max_delta_ratio:.0f} delta_c)")
+    table = physics_table(runs, experimental_rows())
+    blocks = physics_section(table, {"physics_drop_20": "drop.png"}, 11)
+    (fig,) = [b for b in blocks if isinstance(b, Figure)]
+    assert f"extrapolated: {res.max_delta_ratio:.0f} delta_c (LAW_EXTRAPOLATED)" in fig.caption

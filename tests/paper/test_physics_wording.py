@@ -12,12 +12,18 @@ import pandas as pd
 import pytest
 
 from impactlab.paper.calibration_report import PAPER_SIGMAS
-from impactlab.paper.physics import CONFIGURATIONS, FE_TABULATED, MEASURED
+from impactlab.paper.physics import (
+    CONFIGURATIONS,
+    E_COLUMN,
+    FE_TABULATED,
+    MEASURED,
+    SCAR_COLUMN,
+)
 from impactlab.paper.physics_report import LARGE_EFFECT, TOLERANCES, physics_section
 from impactlab.paper.report import Bullets, Para
 
 RIGID, FLEX, RATE = (c.name for c in CONFIGURATIONS)
-COLUMNS = ("e", "delta_p [um]", "L_s [um]", "T [ms]", "contacts", "F_max [N]", "rate factor")
+COLUMNS = (E_COLUMN, "delta_p [um]", SCAR_COLUMN, "T [ms]", "contacts", "F_max [N]", "rate factor")
 #: The comparison of ``impactlab reproduce`` (physics_comparison.csv), 20 / 45 / 70 deg.
 CURRENT: dict[str, list[tuple[float | None, ...]]] = {
     MEASURED: [
@@ -126,9 +132,9 @@ def test_the_current_numbers_read_truthfully() -> None:
 
 
 def test_the_tolerances_are_the_calibrations_assumptions() -> None:
-    assert TOLERANCES["e"] == (PAPER_SIGMAS["e"], False)
+    assert TOLERANCES[E_COLUMN] == (PAPER_SIGMAS["e"], False)
     assert TOLERANCES["delta_p [um]"] == (PAPER_SIGMAS["delta_p"], True)
-    assert TOLERANCES["L_s [um]"] == (PAPER_SIGMAS["scar_length"], True)
+    assert TOLERANCES[SCAR_COLUMN] == (PAPER_SIGMAS["scar_length"], True)
     assert LARGE_EFFECT == pytest.approx(1.5)
 
 
@@ -153,7 +159,7 @@ def test_a_dent_off_everywhere_moves_to_what_is_not_explained() -> None:
 
 
 def test_e_explained_at_one_angle_is_said_there() -> None:
-    _, explained, missed, closing = _text(_table({(RATE, 70, "e"): 0.07}))
+    _, explained, missed, closing = _text(_table({(RATE, 70, E_COLUMN): 0.07}))
     e = _bullet(explained, "e: ")
     assert "explain e at 70 deg (within 0.03), not at 20 and 45 deg (0.724 / 0.602 against " in e
     assert not [b for b in missed if b.startswith("e: ")]
@@ -166,7 +172,7 @@ def test_the_ratios_follow_the_numbers() -> None:
     """The scar's growth with flexibility, the effect's size and the direction of e move with
     the table."""
     changes = {(RIGID, a, "delta_p [um]"): 1.2 * v for a, v in ((20, 22.89), (45, 40.39))}
-    changes |= {(RIGID, 20, "L_s [um]"): 130.0, (FLEX, 45, "e"): 0.3}
+    changes |= {(RIGID, 20, SCAR_COLUMN): 130.0, (FLEX, 45, E_COLUMN): 0.3}
     _, _, missed, closing = _text(_table(changes))
     assert closing.startswith(
         "Rod flexibility and rate sensitivity make the dent shallower at 20 and 45 deg and much "
@@ -239,7 +245,8 @@ def test_a_mixed_effect_is_said_angle_by_angle() -> None:
 def test_a_pile_up_case_explained_moves_and_needs_no_pile_up() -> None:
     """e and the scar of the 70 deg drop within their tolerances: the bullet is explained and
     no longer ends "the paper points at a pile-up that no contact law models"."""
-    _, explained, missed, _ = _text(_table({(FLEX, 70, "e"): 0.06, (FLEX, 70, "L_s [um]"): 205.0}))
+    changes = {(FLEX, 70, E_COLUMN): 0.06, (FLEX, 70, SCAR_COLUMN): 205.0}
+    _, explained, missed, _ = _text(_table(changes))
     pile_up = _bullet(explained, "The 70 deg case: ")
     assert not [b for b in missed if b.startswith("The 70 deg case")]
     assert pile_up.endswith(
@@ -253,12 +260,12 @@ def test_a_pile_up_case_explained_moves_and_needs_no_pile_up() -> None:
     ("changes", "said"),
     [
         (
-            {(RATE, 70, "e"): 0.07},
+            {(RATE, 70, E_COLUMN): 0.07},
             "explain e there (0.07, within 0.03) but not the scar, for which the paper points at "
             "a pile-up that no contact law models.",
         ),
         (
-            {(FLEX, 70, "L_s [um]"): 205.0},
+            {(FLEX, 70, SCAR_COLUMN): 205.0},
             "explain the scar there (1.02 times the measured one, within 10 %) but not e, for "
             "which the paper points at a pile-up that no contact law models.",
         ),

@@ -5,12 +5,16 @@ table with each explanation written once."""
 from __future__ import annotations
 
 import base64
+import dataclasses
 import math
 import re
 
+import numpy as np
 import pandas as pd
 import pytest
 
+from impactlab.paper import data as D
+from impactlab.paper.analytic_rows import invert_case
 from impactlab.paper.report import Figure, Para, Table, fmt, fmt_number, to_html, to_markdown
 from impactlab.paper.report_reasons import not_reproduced
 
@@ -141,5 +145,36 @@ def test_a_duration_check_is_decided_over_the_published_rounding(T_ms, verdict) 
     check = DurationCheck(45, T_ms, 1.40, T_ms / 1.40 - 1)
     assert check.verdict == verdict and check.ok == (verdict == "PASS")
     assert check.text().endswith(f"tolerance 5%): {verdict}")
-    if T_ms == 1.470005:  # the overall-length reading's 45 deg T
-        assert "(+5.0%, +4.6% to +5.4% over its rounding, tolerance 5%)" in check.text()
+    if T_ms == 1.470005:  # the overall-length reading's 45 deg T, its inputs taken as exact
+        assert "(+5.0%; +4.6% to +5.4% over the printed digits, tolerance 5%)" in check.text()
+
+
+def test_the_inputs_rounding_decides_the_verdict_too() -> None:
+    """mu = 0.20 stands for 0.195-0.205 (and so on for every printed input): over that box the
+    20 deg T lies -5.7 % to -3.3 % from the published 4.30 ms, across the 5 % tolerance, so the
+    check is UNDECIDED, not PASS; the 45 deg one stays within it (PASS)."""
+    from impactlab.paper.analytic_rows import INPUT_ROUNDING, duration_range, experimental_rows
+    from impactlab.paper.quantities import duration_checks
+
+    assert INPUT_ROUNDING["mu"] == 0.005
+    c20, c45 = duration_checks(experimental_rows())
+    assert c20.range == pytest.approx((-0.0568, -0.0332), abs=5e-4)
+    assert c20.verdict == "UNDECIDED" and not c20.ok
+    assert c20.text() == (
+        "20 deg: T = 4.106 ms vs published 4.30 ms (-4.5%; -5.7% to -3.3% over the printed "
+        "digits, tolerance 5%): UNDECIDED"
+    )
+    assert c45.verdict == "PASS"
+    # the extremes lie at the corners: no T inside the box falls outside them
+    rng = np.random.default_rng(1)
+    x = D.EXPERIMENTS[20]
+    lo, hi = duration_range(x)
+    for _ in range(40):
+        moved = {k: getattr(x, k) + h * rng.uniform(-1, 1) for k, h in INPUT_ROUNDING.items()}
+        T = invert_case(dataclasses.replace(x, **moved)).duration
+        assert lo <= T <= hi
+    mu_only = [
+        invert_case(dataclasses.replace(x, mu=m)).duration / 4.30e-3 - 1 for m in (0.195, 0.205)
+    ]
+    assert min(mu_only) == pytest.approx(-0.052, abs=1e-3)  # the spread mu alone gives
+    assert max(mu_only) == pytest.approx(-0.038, abs=1e-3)

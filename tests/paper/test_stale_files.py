@@ -122,3 +122,26 @@ def test_a_link_in_the_folder_is_replaced_not_written_through(tmp_path):
     assert mine.read_text() == "my precious table"
     assert not (out / "table2.csv").is_symlink()
     assert (out / "table2.csv").read_text().startswith("source,")
+
+
+@pytest.mark.parametrize("status", ["complete", "running"])
+def test_a_marker_never_makes_a_file_of_the_users_removable(tmp_path, recwarn, status):
+    """Only names a reproduction can write are removed: a marker listing a file of the user's,
+    or a path outside the folder, removes neither."""
+    out = tmp_path / "t4"
+    out.mkdir()
+    (out / "thesis.tex").write_text("precious")
+    (tmp_path / "victim.txt").write_text("victim")
+    listed = ["thesis.tex", "../victim.txt", "report.md", ".thesis.tex.1.partial"]
+    (out / ".thesis.tex.1.partial").write_text("mine too")
+    (out / R.MARKER).write_text(
+        json.dumps({"tool": "impactlab reproduce", "status": status, "files": listed})
+    )
+    res = R.reproduce(out, simulate=False)
+    assert (out / "thesis.tex").read_text() == "precious"
+    assert (out / ".thesis.tex.1.partial").read_text() == "mine too"
+    assert (tmp_path / "victim.txt").read_text() == "victim"
+    assert not {"thesis.tex", ".thesis.tex.1.partial"} & set(res.extras["removed"])
+    assert not any("thesis" in str(w.message) for w in recwarn)
+    saved = json.loads((out / R.MARKER).read_text())
+    assert "thesis.tex" not in saved["files"]

@@ -22,7 +22,11 @@ def reproduce_cmd(
 
     Example: impactlab reproduce --out reproduction
     """
-    from impactlab.paper.quantities import duration_checks, extrapolation_line  # lazy: fast start
+    from impactlab.paper.quantities import (  # lazy: a fast start
+        duration_checks,
+        extrapolation_line,
+        not_reproduced_line,
+    )
     from impactlab.paper.reproduction import prepare_output, reproduce
 
     # the folder checked (and refused) under the option's name, before any computation
@@ -31,10 +35,7 @@ def reproduce_cmd(
         typer.echo(c.text())
     bad = res.comparison[res.comparison["reproduced"] == False]  # noqa: E712
     n_bad = len(bad.drop_duplicates(["source", "angle [deg]", "model", "quantity"]))
-    typer.echo(
-        f"{n_bad} published numbers not reproduced within the stated tolerances "
-        "(explained in Section 5 of the report)"
-    )
+    typer.echo(not_reproduced_line(n_bad))
     if not no_simulate:
         typer.echo(extrapolation_line(res.simulations))
     if no_simulate:

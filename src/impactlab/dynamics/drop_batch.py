@@ -45,8 +45,7 @@ from impactlab.dynamics.drop_checks import (
     check_friction,
     check_stop,
     drop_rtol,
-    energy_balance_bound,
-    energy_balance_error,
+    inaccurate_cases,
     input_problems,
     input_status,
     refuse_rate,
@@ -304,7 +303,7 @@ def simulate_drops(
                    np.ascontiguousarray(mu_run[run]), np.ascontiguousarray(fid[run]), r, t_end,
                    stop_mode, o, ck, st, drop_address())  # fmt: skip
         status[run], out[run], checks[run] = st, o, ck
-    _refuse_inaccurate(out, checks, status, r)
+    inaccurate = _refuse_inaccurate(out, checks, status, r)
     done = status == 0
     out[~done] = np.nan
     checks[~done] = np.nan
@@ -331,19 +330,21 @@ def simulate_drops(
         rtol=r,
         references=tuple(dict.fromkeys(refs)),
         law_range=range_note(model.law_id, model.params),
-        refusals={i: t for i, t in refusals.items() if status[i] == S.ST_BAD_INPUT},
+        refusals={i: t for i, t in refusals.items() if status[i] == S.ST_BAD_INPUT} | inaccurate,
     )
 
 
 def _refuse_inaccurate(
     out: np.ndarray, checks: np.ndarray, status: np.ndarray, rtol: float
-) -> None:
+) -> dict[int, str]:
     """ST_INACCURATE where a finished drop's energy balance closed worse than ``rtol`` promises
-    (``drop_checks.check_energy_balance``, on every case at once)."""
-    ok = status == 0
-    if not np.any(ok):
-        return
+    over its steps (``drop_checks.check_energy_balance``, on every case at once); returns why,
+    by case index (its numbers, as ``simulate_drop``'s error words them)."""
+    ok = np.flatnonzero(status == 0)
+    if ok.size == 0:
+        return {}
     columns = {name: out[ok, i] for i, name in enumerate(F.DROP_OUTPUT_FIELDS)}
-    error = energy_balance_error(columns, checks[ok, CK_E0])
-    bad = np.flatnonzero(ok)[~(error <= energy_balance_bound(rtol))]
-    status[bad] = S.ST_INACCURATE
+    found = inaccurate_cases(columns, checks[ok, CK_E0], rtol)
+    why = {int(ok[j]): text for j, text in found.items()}
+    status[list(why)] = S.ST_INACCURATE
+    return why

@@ -9,7 +9,8 @@ is a terminal event of ``solve_ivp`` (DOP853: Hairer, Norsett & Wanner, Solving 
 Differential Equations I, Springer (1993), doi:10.1007/978-3-540-78862-1) and the integration
 restarts after each. Stick: with lumped masses the stick force of an end node is
 F_t = -(f_x / m_0 + R f_th / J_0) / (1 / m_0 + R^2 / J_0) (f: the other forces on the node).
-The run stops at ``t_stop`` (give the modal model's duration plus a margin); the rigid-body
+The run stops at ``t_stop`` (give the modal model's duration plus a margin; a ``t_stop`` that
+ends before the sequence does warns, ``SequenceOpenWarning``: ``open_sequence``); the rigid-body
 velocities come from the total momentum and the angular momentum about the centre of mass, so
 e is comparable with the modal model's frame velocities. Used by the tests and the benchmark;
 a drop takes about a second at 80 elements.
@@ -19,6 +20,7 @@ from __future__ import annotations
 
 import math
 import time
+import warnings
 from dataclasses import dataclass
 from typing import Any
 
@@ -30,13 +32,20 @@ from impactlab.contact import ContactModel
 from impactlab.contact.kernels import (
     P_ESTAR,
 )
+from impactlab.dynamics.drop_body import body_model
 from impactlab.dynamics.flex_fe import CorotationalRod
 from impactlab.dynamics.flex_fe_drop import FEDrop, FEEnd, switch_interference
+from impactlab.dynamics.flexcore.layout import HORIZON_CAP, NEW_IMPACT_CHECKS
 from impactlab.dynamics.input_checks import gravity_value
 from impactlab.dynamics.models import contact_model, kernel_params
 from impactlab.materials import AISI_1010, Material
 
-__all__ = ["ReferenceDrop", "drop_reference"]
+__all__ = ["ReferenceDrop", "SequenceOpenWarning", "drop_reference", "open_sequence"]
+
+
+class SequenceOpenWarning(UserWarning):
+    """The reference stopped at ``t_stop`` before its sequence ended (``open_sequence``): its
+    e, velocities, duration and contacts are those of a sequence cut short."""
 
 
 @dataclass(frozen=True)
@@ -128,6 +137,80 @@ def _integrate(
     return eerr, t, y
 
 
+def _first_below(clear: Any, vy: float, w: float, g: float, t_max: float) -> float:
+    """First tau in [0, t_max] [s] at which the clearance ``clear(tau)`` [m] may reach 0
+    (conservative advancement with the speed bound |vy - g tau| + w [m/s], as the engine's
+    ``flight.first_below``); t_max + 1 if it stays above."""
+    tau = 0.0
+    for _ in range(100000):
+        h = clear(tau)
+        if h <= 0.0:
+            return tau
+        v0 = abs(vy - g * tau) + w
+        rhs = 0.9 * h
+        if g > 0.0:
+            dt = (-v0 + math.sqrt(v0 * v0 + 4.0 * g * rhs)) / (2.0 * g)
+        else:
+            dt = rhs / v0 if v0 > 0.0 else t_max + 1.0
+        tau += dt
+        if tau > t_max:
+            return t_max + 1.0
+    return tau
+
+
+def open_sequence(run: FEDrop, y: np.ndarray, body: FlexibleRod) -> str:
+    """Why the reference's sequence had not ended in the state ``y`` (at ``t_stop``), by the
+    engine's end-of-sequence rule (``flexcore.flight.left_for_good``, stop="sequence"); ""
+    when it had. Open: an end still in contact, or the end last in contact may come back to
+    the flat, in the rigid ballistic motion lowered by a bound on its elastic displacement,
+    sqrt(2 E_vib sum_j (U_j^2 + W_j^2) / omega_j^2) (the body's modes, E_vib the FE's
+    vibration energy), before the other end can touch (a new impact), the centre of mass is
+    back at its height, or ``HORIZON_CAP``, unless only after a clear flight of 10 periods of
+    the lowest mode (a new impact of that end)."""
+    fe = run.fe
+    for k in range(2):
+        if run.ends[k].inn:
+            return f"end {k} is still in contact"
+    if not run.contacts:
+        return ""
+    nd = run.nd
+    X, V = y[:nd], y[nd : 2 * nd]
+    vxc, vyc, w, Ic = fe.rigid_motion(X, V)
+    yc = float(np.sum(fe.mass * X[1::3]) / fe.m)
+    th = math.atan2(X[3 * (fe.nn - 1) + 1] - X[1], X[3 * (fe.nn - 1)] - X[0])
+    ek = 0.5 * fe.m * (vxc**2 + vyc**2) + 0.5 * Ic * w * w
+    vg = fe.g * np.sum(fe.mass * (X[1::3] - fe.X0[1::3]))
+    evib = max(fe.energy(y) - vg - ek, 0.0)
+    bm = body_model(body)
+    g, half = fe.g, 0.5 * fe.L
+    horizon = min(2.0 * vyc / g if (g > 0.0 and vyc > 0.0) else math.inf, HORIZON_CAP)
+    speed = abs(w) * half
+
+    def touch_time(k: int, t_max: float) -> float:
+        band = math.sqrt(2.0 * evib * float(np.sum((bm.U[k] ** 2 + bm.W[k] ** 2) / bm.omega**2)))
+        sk = -1.0 if k == 0 else 1.0
+
+        def clear(tau: float) -> float:
+            yk = yc + vyc * tau - 0.5 * g * tau * tau + sk * half * math.sin(th + w * tau)
+            return yk - fe.R - band
+
+        return _first_below(clear, vyc, speed, g, t_max)
+
+    last = int(run.contacts[-1]["end"])
+    t_other = touch_time(1 - last, horizon)
+    if t_other <= horizon:
+        horizon = t_other  # the other end's landing: a new impact
+    t_back = touch_time(last, horizon)
+    flight_min = NEW_IMPACT_CHECKS * 0.1 * 2.0 * math.pi / float(bm.omega[0])
+    if t_back <= horizon and t_back < flight_min:
+        when = f"within {t_back * 1e3:.3g} ms" if t_back > 0.0 else "now"
+        return (
+            f"end {last} may touch the flat again {when}, its rigid path lowered by a bound "
+            "on its elastic displacement"
+        )
+    return ""
+
+
 def _summary(run: FEDrop, y: np.ndarray, t: float, vn0: float) -> dict[str, Any]:
     fe = run.fe
     nd = run.nd
@@ -170,7 +253,8 @@ def drop_reference(
     """The drop of ``body`` (its length, mass, material, diameter; the modes are not used) by
     the corotational finite-element reference, from the first touch of the tip to ``t_stop``
     [s], with Coulomb friction mu; angle [rad], velocity [m/s], spin [rad/s] as in
-    ``simulate_drop``."""
+    ``simulate_drop``. Warns (``SequenceOpenWarning``) when the sequence has not ended at
+    ``t_stop`` (``open_sequence``)."""
     wall = time.perf_counter()
     g = gravity_value(gravity)
     fe = CorotationalRod.from_body(body, n_elements, angle, g)
@@ -184,6 +268,15 @@ def drop_reference(
     y = _initial_state(fe, vx0, vy0, spin)
     run.touch(y, 0.0, 0)
     eerr, t, y = _integrate(run, y, t_stop, rtol, _atol(fe, p, vn0, rtol))
+    why = open_sequence(run, y, body)
+    if why:
+        warnings.warn(
+            f"drop_reference: t_stop = {t_stop:g} s ends before the sequence does: {why}; "
+            "e, the velocities, the duration and the contacts are those of a sequence cut "
+            "short; raise t_stop",
+            SequenceOpenWarning,
+            stacklevel=2,
+        )
     s = _summary(run, y, t, vn0)
     ke0 = 0.5 * fe.m * (vx0**2 + vy0**2)
     return ReferenceDrop(

@@ -5,7 +5,9 @@ its length, and the self-consistency of the published simulated rows.
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Iterable
+from dataclasses import replace
 from typing import Any
 
 import pandas as pd
@@ -14,7 +16,15 @@ from scipy.optimize import brentq
 import impactlab.analytic as an
 from impactlab.bodies import Rod
 from impactlab.paper import data as D
-from impactlab.paper.quantities import EQ12_REL, rel_diff, rounding_range, scaled, verdict
+from impactlab.paper.quantities import (
+    EQ12_REL,
+    T_HIGH,
+    T_LOW,
+    rel_diff,
+    rounding_range,
+    scaled,
+    verdict,
+)
 
 #: I_C / (m L^2) values for the inertia sensitivity.
 INERTIA_RATIOS: tuple[float, ...] = (0.05, 1 / 15, 1 / 12, 0.1, 0.12, 0.15)
@@ -38,6 +48,31 @@ def invert_case(x: D.Experiment, **kw: Any) -> an.InversionResult:
     )
 
 
+#: Half a unit of the last printed digit of each input of the inversion (Sec. 5.1.3), SI: v_i,
+#: e and mu with two decimals (mu = 0.20 stands for 0.195-0.205), delta_p and L_s in whole
+#: micrometres (as the tables print them). The angle is the set angle, taken as exact.
+INPUT_ROUNDING: dict[str, float] = {
+    "v_i": 0.005,
+    "e": 0.005,
+    "mu": 0.005,
+    "delta_p": 0.5e-6,
+    "L_s": 0.5e-6,
+}
+
+
+def duration_range(x: D.Experiment, rod: Any = None) -> tuple[float, float]:
+    """(lowest, highest) T [s] of the paper's inversion of ``x`` over the rounding of its printed
+    inputs (:data:`INPUT_ROUNDING`). Eq. 12's T = (delta_p - L_s/alpha)/v_i is monotone in each
+    input (alpha in mu, of one sign over the box), so its extremes lie at the box's corners: the
+    2^5 corners are inverted, no first-order approximation."""
+    names, halves = zip(*INPUT_ROUNDING.items(), strict=True)
+    Ts = []
+    for signs in itertools.product((-1.0, 1.0), repeat=len(names)):
+        moved = {k: getattr(x, k) + s * h for k, s, h in zip(names, signs, halves, strict=True)}
+        Ts.append(invert_case(replace(x, **moved), rod=rod).duration)
+    return min(Ts), max(Ts)
+
+
 def rod_with_inertia_ratio(q: float) -> Rod:
     """The paper's rod with I_C = q m L^2."""
     m, L = D.PAPER_ROD.mass, D.PAPER_ROD.length
@@ -47,13 +82,16 @@ def rod_with_inertia_ratio(q: float) -> Rod:
 def experimental_rows(rod: Any = None) -> pd.DataFrame:
     """The experimental-analytic rows: T and F from the measurements (paper method: Eq. 12 with
     slip, gravity neglected, rigid-body identity for F), next to the published values, plus the
-    variants with gravity and with L_s read as the contact patch's travel."""
+    variants with gravity and with L_s read as the contact patch's travel; T's extremes over
+    the rounding of the printed inputs (``duration_range``) in the columns ``T_LOW``,
+    ``T_HIGH``."""
     rows = []
     for ang, x in D.EXPERIMENTS.items():
         pub = D.published_row(ang, "experiment")
         r = invert_case(x, rod=rod)
         rg = invert_case(x, rod=rod, gravity=True)
         rt = invert_case(x, rod=rod, measure="travel")
+        T_range = duration_range(x, rod)
         T_pub = pub.T if pub else None
         F_pub = pub.F if pub else None
         rows.append(
@@ -66,6 +104,8 @@ def experimental_rows(rod: Any = None) -> pd.DataFrame:
                 "T published [ms]": scaled(T_pub, 1e3),
                 "T [ms]": r.duration * 1e3,
                 "T rel. diff": rel_diff(r.duration, T_pub),
+                T_LOW: T_range[0] * 1e3,
+                T_HIGH: T_range[1] * 1e3,
                 "T with gravity [ms]": rg.duration * 1e3,
                 "T (L_s as travel) [ms]": rt.duration * 1e3,
                 "F published [N]": F_pub,
@@ -87,8 +127,10 @@ def length_readings() -> pd.DataFrame:
     slender rod of length L: two readings mixed, the acceptance checks' reading), and the two
     self-consistent ones (L the overall length, tip centres at L/2 - R from the centre of mass;
     L between the centres, I_C of the whole rod of length L + 2R). Display units (mm, ms); each
-    T's relative difference also at both ends of the published T's rounding (``low``,
-    ``high``) and the verdict over it (``quantities.verdict``: PASS, FAIL or UNDECIDED)."""
+    T's relative difference also at both ends of the range over the rounding of the printed
+    inputs and of the published T (``low``, ``high``; ``duration_range``,
+    ``quantities.rounding_range``) and the verdict over it (``quantities.verdict``: PASS, FAIL
+    or UNDECIDED)."""
     m, L, R = D.PAPER_ROD.mass, D.PAPER_ROD.length, D.PAPER_ROD.tip_radius
     readings = (
         ("L between the tip centres, I_C = m L^2/12 (used: the two mixed)", L, L, False),
@@ -106,9 +148,10 @@ def length_readings() -> pd.DataFrame:
         }
         for ang in (20, 45):
             T = invert_case(D.EXPERIMENTS[ang], rod=rod).duration
+            lo, hi = duration_range(D.EXPERIMENTS[ang], rod)
             pub = D.published_row(ang, "experiment")
             assert pub is not None and pub.T is not None
-            low, high = rounding_range(T * 1e3, pub.T * 1e3)
+            low, high = rounding_range(lo * 1e3, hi * 1e3, pub.T * 1e3)
             row[f"T {ang} deg [ms]"] = T * 1e3
             row[f"T {ang} deg rel. diff"] = rel_diff(T, pub.T)
             row[f"T {ang} deg rel. diff low"] = low

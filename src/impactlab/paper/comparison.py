@@ -13,6 +13,7 @@ import pandas as pd
 from impactlab.paper import data as D
 from impactlab.paper.quantities import (
     QUANTS,
+    TOL_EXPERIMENT_F,
     TOL_EXPERIMENT_T,
     TOL_SIMULATED,
     Simulations,
@@ -27,6 +28,18 @@ _TABLES = {20: "Table 2", 45: "Table 3", 70: "Table 4 (ours)"}
 _TEXT = "Sec. 5.2 text"
 #: The flag columns of a row without a simulation (the experiment, or not simulated).
 _NO_FLAGS: dict[str, Any] = {"flags": "", "max_delta_ratio": None}
+#: The reason of a measured input of the inversion (in ``published``; not compared).
+INPUT_NOTE = "measured input (Sec. 5.1.3), not compared"
+#: The ``diff`` cell of a measured input in the side-by-side tables.
+INPUT_DIFF = "input"
+#: The tolerance of each quantity of the experimental rows (the inputs: none, not compared).
+EXPERIMENT_TOL: dict[str, float | None] = {
+    "delta_p": None,
+    "L_s": None,
+    "e": None,
+    "T": TOL_EXPERIMENT_T,
+    "F": TOL_EXPERIMENT_F,
+}
 
 
 def comparison_table(
@@ -48,25 +61,22 @@ def comparison_table(
 
 
 def _experiment_rows(ang: int, experimental: pd.DataFrame, ctx: Reasons) -> list[dict[str, Any]]:
-    """The experimental row of one angle: measured inputs, T and F by the inversion."""
+    """The experimental row of one angle: the measured inputs (Sec. 5.1.3) as published values,
+    not compared; T and F by the inversion against the published ones."""
     key = RowKey(_TABLES[ang], ang, "experiment", "-")
     x = D.EXPERIMENTS[ang]
     exp = experimental.set_index("angle [deg]").loc[ang]
     pub = D.published_row(ang, "experiment")
-    ours = {
-        "delta_p": x.delta_p,
-        "L_s": x.L_s,
-        "e": x.e,
-        "T": exp["T [ms]"] * 1e-3,
-        "F": exp["F [N]"],
-    }
+    inverted = {"T": exp["T [ms]"] * 1e-3, "F": exp["F [N]"]}
     rows = []
     for q, label, scale in QUANTS:
+        tol = EXPERIMENT_TOL[q]
+        if tol is None:  # an input: the measured value, in the published column only
+            values = (getattr(x, q), None)
+            rows.append(_row(key, q, label, scale, values, 0.0, INPUT_NOTE, ctx) | _NO_FLAGS)
+            continue
         p = getattr(pub, q) if pub is not None else None
-        measured = q in ("delta_p", "L_s", "e")
-        tol = TOL_EXPERIMENT_T if q == "T" else (0.15 if q == "F" else 0.0)
-        note = "measured input" if measured else None
-        rows.append(_row(key, q, label, scale, (p, ours[q]), tol, note, ctx) | _NO_FLAGS)
+        rows.append(_row(key, q, label, scale, (p, inverted[q]), tol, None, ctx) | _NO_FLAGS)
     return rows
 
 
@@ -142,7 +152,8 @@ def _row(
 
 def side_by_side(comparison: pd.DataFrame, angle: int) -> pd.DataFrame:
     """Wide table for one angle: per model/friction the simulation's flags, then the published
-    value, impactlab's and the relative difference for each quantity."""
+    value, impactlab's and the relative difference for each quantity (one decimal of a percent;
+    ``input`` for a measured input of the experiment, not compared)."""
     sub = comparison[comparison["angle [deg]"] == angle]
     out = []
     for (src, model, fr), g in sub.groupby(["source", "model", "friction"], sort=False):
@@ -159,10 +170,12 @@ def side_by_side(comparison: pd.DataFrame, angle: int) -> pd.DataFrame:
             row[f"{label} pub."] = r["published"]
             row[f"{label} ours"] = r["impactlab"]
             row[f"{label} diff"] = (
-                None
+                INPUT_DIFF
+                if r["reason"] == INPUT_NOTE
+                else None
                 if r["rel. diff"] is None
                 or (isinstance(r["rel. diff"], float) and math.isnan(r["rel. diff"]))
-                else f"{r['rel. diff']:+.0%}"
+                else f"{r['rel. diff']:+.1%}"  # one decimal: read against a 5 % tolerance
             )
         out.append(row)
     return pd.DataFrame(out)

@@ -17,7 +17,7 @@ from typing import Any
 import pandas as pd
 
 from impactlab.paper import data as D
-from impactlab.paper.quantities import rel_diff
+from impactlab.paper.quantities import flag_columns, rel_diff
 from impactlab.paper.simulations import run_simulations
 
 __all__ = [
@@ -53,7 +53,8 @@ def run_fe_reference(angles: Iterable[int] = D.ANGLES_DEG) -> dict[int, Any]:
 
 
 def _row(ang: int, law: str, res: Any, fe: Any | None) -> dict[str, Any]:
-    """One row; ``fe`` None for the FE law's own (no difference to show)."""
+    """One row; ``fe`` None for the FE law's own (no difference to show); ``flags`` (e.g.
+    LAW_EXTRAPOLATED) and ``max_delta_ratio`` as the other tables carry them."""
 
     def vs(name: str) -> float | None:
         return None if fe is None else rel_diff(getattr(res, name), getattr(fe, name))
@@ -70,7 +71,7 @@ def _row(ang: int, law: str, res: Any, fe: Any | None) -> dict[str, Any]:
         "F [N]": res.mean_force,
         "F vs FE": vs("mean_force"),
         "F_max [N]": res.max_force,
-        "max_delta_ratio": res.max_delta_ratio,
+        **flag_columns(res),
     }
 
 

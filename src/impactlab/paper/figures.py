@@ -18,7 +18,7 @@ from impactlab._files import write_bytes_atomic
 from impactlab._mpl import pyplot
 from impactlab.paper import data as D
 from impactlab.paper.analytic_rows import invert_case, rod_with_inertia_ratio
-from impactlab.paper.quantities import Simulations
+from impactlab.paper.quantities import Simulations, extrapolation_label
 
 
 def figure_alpha(path: Path, mus: Iterable[float] = (0.0, 0.1, 0.13, 0.2, 0.3, 0.5)) -> Path:
@@ -87,7 +87,8 @@ def figure_inertia(path: Path, table: pd.DataFrame) -> Path:
 def figure_forces(
     path: Path, sims: Simulations, angle: int, friction: str = "impulse_ratio"
 ) -> Path:
-    """Force-time and force-penetration for the three laws at one angle."""
+    """Force-time and force-penetration for the three laws at one angle; a curve whose impact
+    left its law's verified range is marked in the legend (``extrapolation_label``)."""
     plt = pyplot()
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(10, 4))
     for law in D.PAPER_LAWS:
@@ -96,13 +97,14 @@ def figure_forces(
             continue
         h = res.history
         t, pen, fn = h.t, h.penetration, h.normal_force
-        a1.plot(t * 1e3, fn, label=law)
-        a2.plot(pen * 1e6, fn, label=law)
+        a1.plot(t * 1e3, fn, label=law + extrapolation_label(res))
+        a2.plot(pen * 1e6, fn, label=law + extrapolation_label(res))
     a1.set_xlabel("t [ms]")
     a1.set_ylabel("normal force [N]")
     a2.set_xlabel("penetration [um]")
     a2.set_ylabel("normal force [N]")
     a1.legend(fontsize=8)
+    a2.legend(fontsize=8)
     fig.suptitle(
         f"{angle} deg, v_i = {D.EXPERIMENTS[angle].v_i} m/s, "
         f"mu = {D.EXPERIMENTS[angle].mu}, friction: {friction}"
@@ -111,7 +113,8 @@ def figure_forces(
 
 
 def figure_dent(path: Path, res: Any) -> Path:
-    """Fig. 4: the simulated dent (20 deg, 1.41 m/s, Ghaednia) from ``result.dent()``."""
+    """Fig. 4: the simulated dent (20 deg, 1.41 m/s, Ghaednia) from ``result.dent()``; the
+    title says when the impact left the law's verified range (``extrapolation_label``)."""
     plt = pyplot()
     dent = res.dent()
     x, y, z = np.asarray(dent.x), np.asarray(dent.y), np.asarray(dent.height)  # z[y, x]
@@ -121,7 +124,9 @@ def figure_dent(path: Path, res: Any) -> Path:
     fig.colorbar(im, ax=ax, label="height [um]")
     ax.set_xlabel("x [um]")
     ax.set_ylabel("y, across the impact plane [um]")
-    ax.set_title("Fig. 4: simulated dent, 20 deg, 1.41 m/s, Ghaednia et al.")
+    ax.set_title(
+        "Fig. 4: simulated dent, 20 deg, 1.41 m/s, Ghaednia et al." + extrapolation_label(res)
+    )
     return _save(plt, fig, path)
 
 

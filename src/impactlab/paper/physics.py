@@ -33,12 +33,14 @@ from impactlab.paper.simulations import paper_angles
 
 __all__ = [
     "CONFIGURATIONS",
+    "E_COLUMN",
     "E_DEFINITION",
     "FE_TABULATED",
     "HARDENED_LAW",
     "LAW",
     "MEASURED",
     "ROWS",
+    "SCAR_COLUMN",
     "PhysicsConfig",
     "physics_inputs",
     "physics_table",
@@ -53,8 +55,17 @@ LAW = "ghaednia"
 HARDENED_LAW = "tabulated (FE, hardening flat)"
 #: The friction model of every configuration (mu: the measured one of each drop).
 FRICTION = "coulomb"
-#: The configuration name of the measured rows.
-MEASURED = "measured (paper)"
+#: The configuration name of the measured rows: e, delta_p and the scar as measured (Sec.
+#: 5.1.3), T not measured but inverted from the measured dent (Eq. 12, as the experimental rows).
+MEASURED = "measured (paper); T: Eq. 12 inversion of the measured dent"
+#: The column of e with the gravity impulse of the contact (sequence) removed, as a ballistic
+#: fit of a measured rebound removes it (:data:`E_DEFINITION`; a drop's ``e``, a rigid impact's
+#: ``dynamics.derived.e_gravity_removed``); not the impact's ``e`` of simulations.csv.
+E_COLUMN = "e_gravity_removed"
+#: The column of the extent of the mark the tip left, as a scan measures it: the rigid rod's
+#: |``contact_travel``|, the flexible rod's ``scar_length``, the measured L_s; not the signed
+#: slip (``sliding_length``) of simulations.csv's ``L_s [um]``.
+SCAR_COLUMN = "scar_length [um]"
 
 
 @dataclass(frozen=True)
@@ -167,9 +178,9 @@ def _measured_row(angle_deg: int, T_ms: float) -> dict[str, Any]:
     return {
         "configuration": MEASURED,
         "angle [deg]": angle_deg,
-        "e": x.e,
+        E_COLUMN: x.e,
         "delta_p [um]": abs(x.delta_p) * 1e6,
-        "L_s [um]": abs(x.L_s) * 1e6,
+        SCAR_COLUMN: abs(x.L_s) * 1e6,
         "T [ms]": T_ms,
         "contacts": None,
         "F_max [N]": None,
@@ -206,9 +217,9 @@ def _simulated_row(cfg: PhysicsConfig, angle_deg: int, res: Any) -> dict[str, An
     return {
         "configuration": cfg.name,
         "angle [deg]": angle_deg,
-        "e": res.e if flexible else rigid_e_gravity_removed(res),
+        E_COLUMN: res.e if flexible else rigid_e_gravity_removed(res),
         "delta_p [um]": abs(dent) * 1e6,
-        "L_s [um]": abs(res.scar_length if flexible else res.contact_travel) * 1e6,
+        SCAR_COLUMN: abs(res.scar_length if flexible else res.contact_travel) * 1e6,
         "T [ms]": duration * 1e3,
         "contacts": res.n_contacts if flexible else 1,
         "F_max [N]": res.max_force,
@@ -223,8 +234,9 @@ def physics_table(
     experimental: pd.DataFrame,
     configurations: Iterable[PhysicsConfig] = ROWS,
 ) -> pd.DataFrame:
-    """The comparison: per angle the measured row (T from the dent, Eq. 12, as in the
-    experimental rows) and one row per configuration; display units (um, ms, N, J)."""
+    """The comparison: per angle the measured row (:data:`MEASURED`: T from the dent, Eq. 12,
+    as in the experimental rows) and one row per configuration; display units (um, ms, N, J);
+    e in :data:`E_COLUMN`, the mark's extent in :data:`SCAR_COLUMN`."""
     T_exp = experimental.set_index("angle [deg]")["T [ms]"]
     cfgs = tuple(configurations)
     rows: list[dict[str, Any]] = []

@@ -9,6 +9,7 @@ from typing import Any
 
 from impactlab._mpl import pyplot
 from impactlab.paper.figures import _save
+from impactlab.paper.quantities import extrapolation_label
 
 __all__ = ["figure_drop"]
 
@@ -16,7 +17,8 @@ __all__ = ["figure_drop"]
 def figure_drop(path: Path, result: Any, title: str = "") -> Path:
     """Three panels of a DropResult with history: the normal and tangential force on the tip
     against time [N, ms], the tip's height above the undeformed flat against time [um, ms] and
-    the tip's trajectory (height against x) [um]."""
+    the tip's trajectory (height against x) [um]. The title (default: the contacts and e) ends
+    with the mark of a drop that left its law's verified range (``extrapolation_label``)."""
     h = result.history
     if h is None:
         raise ValueError("figure_drop needs a DropResult with history (history=True)")
@@ -39,5 +41,7 @@ def figure_drop(path: Path, result: Any, title: str = "") -> Path:
     a3.axhline(0.0, color="0.5", lw=0.8)
     a3.set_xlabel("tip x from the first touch [um]")
     a3.set_ylabel("tip height [um]")
-    a1.set_title(title or f"{result.n_contacts} contacts, e = {result.e:.3f}")
+    a1.set_title(
+        (title or f"{result.n_contacts} contacts, e = {result.e:.3f}") + extrapolation_label(result)
+    )
     return _save(plt, fig, path)

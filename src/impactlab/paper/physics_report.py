@@ -12,12 +12,14 @@ import pandas as pd
 from impactlab.paper.calibration_report import PAPER_SIGMAS
 from impactlab.paper.physics import (
     CONFIGURATIONS,
+    E_COLUMN,
     E_DEFINITION,
     FE_TABULATED,
     FRICTION,
     LAW,
     MEASURED,
     ROWS,
+    SCAR_COLUMN,
 )
 from impactlab.paper.physics_words import angles as _angles
 from impactlab.paper.physics_words import at as _at
@@ -26,7 +28,11 @@ from impactlab.paper.physics_words import listed as _listed
 from impactlab.paper.physics_words import ratio as _ratio
 from impactlab.paper.physics_words import series as _series
 from impactlab.paper.physics_words import values as _values
+from impactlab.paper.quantities import reference_of
 from impactlab.paper.report import Block, Bullets, Figure, Heading, Para, Table
+
+#: The compared columns of e and of the mark's extent (``physics.E_COLUMN``, ``SCAR_COLUMN``).
+E, SCAR = E_COLUMN, SCAR_COLUMN
 
 __all__ = ["LARGE_EFFECT", "PILE_UP_ANGLE", "TOLERANCES", "physics_section"]
 
@@ -45,15 +51,15 @@ def _shown(table: pd.DataFrame) -> pd.DataFrame:
 #: (the measured T is inferred from the dent), the lengths' relative one. Not tuned to the table.
 TOLERANCES: dict[str, tuple[float, bool]] = {
     "delta_p [um]": (PAPER_SIGMAS["delta_p"], True),
-    "e": (PAPER_SIGMAS["e"], False),
-    "L_s [um]": (PAPER_SIGMAS["scar_length"], True),
+    E: (PAPER_SIGMAS["e"], False),
+    SCAR: (PAPER_SIGMAS["scar_length"], True),
     "T [ms]": (PAPER_SIGMAS["scar_length"], True),
 }
 #: Each compared column in the sentences.
 NOUNS = {
     "delta_p [um]": "the dent depth",
-    "e": "e",
-    "L_s [um]": "the scar",
+    E: "e",
+    SCAR: "the scar",
     "T [ms]": "the duration",
 }
 #: The smallest ratio of the rigid rod's dent to the flexible rod's on the rate-dependent flat,
@@ -132,7 +138,7 @@ def _findings(table: pd.DataFrame) -> list[Block]:
     def v(config: str, column: str) -> str:
         return _values(table, config, column)
 
-    scar_growth = _series(table, flex, "L_s [um]") / _series(table, rigid, "L_s [um]")
+    scar_growth = _series(table, flex, SCAR) / _series(table, rigid, SCAR)
     bullets = [
         _rings(table),
         _with(
@@ -144,15 +150,15 @@ def _findings(table: pd.DataFrame) -> list[Block]:
             _sentence(table, "delta_p [um]"),
         ),
         _with(
-            f"e: measured {v(MEASURED, 'e')}; rigid {v(rigid, 'e')}, flexible {v(flex, 'e')}, "
-            f"flexible + rate {v(rate, 'e')}. The flexible rod {_direction(table, 'e')}.",
-            _sentence(table, "e"),
+            f"e: measured {v(MEASURED, E)}; rigid {v(rigid, E)}, flexible {v(flex, E)}, "
+            f"flexible + rate {v(rate, E)}. The flexible rod {_direction(table, E)}.",
+            _sentence(table, E),
         ),
         _with(
-            f"Scar: L_s {v(MEASURED, 'L_s [um]')} um measured against {v(flex, 'L_s [um]')} um "
+            f"Scar: L_s {v(MEASURED, SCAR)} um measured against {v(flex, SCAR)} um "
             f"(flexible; {' / '.join(f'{r:.3g}' for r in scar_growth)} times the rigid rod's "
             "scar).",
-            _sentence(table, "L_s [um]"),
+            _sentence(table, SCAR),
         ),
         _with(
             f"Duration: T {v(MEASURED, 'T [ms]')} ms (from the dent) against {v(flex, 'T [ms]')} "
@@ -166,7 +172,7 @@ def _findings(table: pd.DataFrame) -> list[Block]:
     intro = (
         "What flexibility and rate dependence explain (at an angle where the flexible rod, "
         "on the plain or the rate-dependent flat, comes within the uncertainty the next "
-        f"section's calibration assumes: e +- {_tol('e')}, delta_p and L_s +- "
+        f"section's calibration assumes: e +- {_tol(E)}, delta_p and L_s +- "
         f"{_tol('delta_p [um]')}; T, which it does not use, +- {_tol('T [ms]')}; the contacts: "
         "where it touches the flat again):"
     )
@@ -201,10 +207,10 @@ def _pile_up(table: pd.DataFrame) -> list[tuple[str, bool]]:
     def x(config: str, column: str) -> float:
         return float(at.loc[at["configuration"] == config, column].iloc[0])
 
-    scar, e = x(MEASURED, "L_s [um]"), x(MEASURED, "e")
+    scar, e = x(MEASURED, SCAR), x(MEASURED, E)
     i = _angles(table).index(PILE_UP_ANGLE)
     near: dict[str, str] = {}  # the explained columns: the nearest value there, in words
-    for column in ("e", "L_s [um]"):
+    for column in (E, SCAR):
         measured, nearest, close = _closeness(table, column)
         if close[i]:
             m, n = measured[i], nearest[i]
@@ -216,7 +222,7 @@ def _pile_up(table: pd.DataFrame) -> list[tuple[str, bool]]:
         verdict = f"flexibility and rate dependence explain both ({both}) with no pile-up"
     elif near:
         [(column, how)] = near.items()
-        other = "L_s [um]" if column == "e" else "e"
+        other = SCAR if column == E else E
         verdict = (
             f"flexibility and rate dependence explain {NOUNS[column]} there ({how}) but not "
             f"{NOUNS[other]}, for which the paper points at {pile_up}"
@@ -226,8 +232,8 @@ def _pile_up(table: pd.DataFrame) -> list[tuple[str, bool]]:
     return [
         (
             f"The {PILE_UP_ANGLE} deg case: the flexible rod's scar is "
-            f"{x(flex, 'L_s [um]') / scar:.3g} times the measured {scar:.3g} um (the rigid "
-            f"rod's {x(rigid, 'L_s [um]') / scar:.3g} times) and its e {x(flex, 'e'):.3g} "
+            f"{x(flex, SCAR) / scar:.3g} times the measured {scar:.3g} um (the rigid "
+            f"rod's {x(rigid, SCAR) / scar:.3g} times) and its e {x(flex, E):.3g} "
             f"against the measured {e:.3g}; {verdict}.",
             len(near) == 2,
         )
@@ -309,8 +315,8 @@ def _fe_row(table: pd.DataFrame) -> list[Block]:
             "own hardening, a Swift law derived from SAE J1397's cold-drawn yield and tensile "
             f"strength; nothing tuned, rate-independent): delta_p {v(fe, 'delta_p [um]')} um, "
             f"{_ratio(table, fe, 'delta_p [um]')} times the measured depth (flexible rod with "
-            f"the {LAW!r} law: {v(flex, 'delta_p [um]')} um); e {v(fe, 'e')} against the "
-            f"measured {v(MEASURED, 'e')}; L_s {v(fe, 'L_s [um]')} um; {v(fe, 'contacts')} "
+            f"the {LAW!r} law: {v(flex, 'delta_p [um]')} um); e {v(fe, E)} against the "
+            f"measured {v(MEASURED, E)}; L_s {v(fe, SCAR)} um; {v(fe, 'contacts')} "
             f"contacts; F_max {v(fe, 'F_max [N]')} N (20 / 45 / 70 deg)."
         )
     ]
@@ -332,13 +338,15 @@ def physics_section(
             f"{LAW!r} law with "
             "impactlab's defaults (the last row: the FE-tabulated law instead), gravity on and "
             "no structural damping (the next section "
-            "calibrates the damping). Measured T is the one "
-            "inferred from the dent (Eq. 12, Section 3). L_s is the extent of the mark the "
-            "tip left, as a scan measures it: the contact point's travel (contact_travel) for "
-            "the rigid rod, not the signed slip integral (sliding_length) of Section 4, and the "
-            "scar length (x-extent of the tip's contact path over all contacts) for the "
+            "calibrates the damping). The measured row's T is not measured: it is the "
+            "inversion of the measured drop (Eq. 12 from the dent, Section 3). "
+            f"{SCAR} is the extent of the mark the "
+            "tip left, as a scan measures it (the measured L_s): |contact_travel| for "
+            "the rigid rod, not the signed slip (sliding_length, Section 4's L_s [um]), and "
+            "scar_length (x-extent of the tip's contact path over all contacts) for the "
             "flexible rod; T is first touch to last separation; "
-            f"{E_DEFINITION}. The model and its verification: docs/flexible.md."
+            f"{E}: {E_DEFINITION} (not the impact's e of Section 4). The model and its "
+            "verification: docs/flexible.md."
         ),
         Bullets(configs),
         Table(
@@ -355,7 +363,17 @@ def physics_section(
             Figure(
                 figures["physics_drop_20"],
                 "Flexible rod, 20 deg: contact forces on the tip, tip height and tip trajectory "
-                "over the whole contact sequence (grey: contacts)",
+                "over the whole contact sequence (grey: contacts)" + _drop_flag(table),
             )
         )
     return B
+
+
+def _drop_flag(table: pd.DataFrame) -> str:
+    """The caption's mark when the figure's drop (flexible rod, 20 deg) left its law's verified
+    range: ``; extrapolated: 43 delta_c (LAW_EXTRAPOLATED)``; ``""`` otherwise."""
+    rows = table[(table["configuration"] == CONFIGURATIONS[1].name) & (table["angle [deg]"] == 20)]
+    if rows.empty or "LAW_EXTRAPOLATED" not in str(rows.iloc[0]["flags"]):
+        return ""
+    ratio = float(rows.iloc[0]["max_delta_ratio"])
+    return f"; extrapolated: {ratio:.0f} {reference_of(LAW)} (LAW_EXTRAPOLATED)"

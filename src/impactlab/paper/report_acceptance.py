@@ -10,7 +10,6 @@ import pandas as pd
 
 from impactlab.paper import data as D
 from impactlab.paper.quantities import (
-    FAIL,
     PAPER_DEPTH,
     PASS,
     TOL_EXPERIMENT_T,
@@ -37,7 +36,13 @@ def acceptance(d: Any) -> list[Block]:
             "Checked, pass/fail: the arithmetic of the inversion. The paper's Eq. 12 "
             "(corrected) with the measured e, mu, v_i, angle, delta_p and L_s gives its "
             "published T. This checks that impactlab evaluates the formula as the paper did; "
-            "it does not check that T is the duration of the impact."
+            "it does not check that T is the duration of the impact. Each verdict is taken "
+            "over the rounding of every printed number it uses (half a unit of the last printed "
+            "digit): the published T (two decimals) and the inputs (v_i, e and mu with two "
+            "decimals, delta_p and L_s in whole um; T's extremes over that box, at its corners, "
+            "since Eq. 12 is monotone in each input). PASS: within the "
+            f"{TOL_EXPERIMENT_T:.0%} tolerance for every value the printed numbers stand for; "
+            "UNDECIDED: the rounding straddles it; FAIL: outside it for every one."
         ),
         Bullets(tuple(c.text() for c in duration_checks(d.experimental))),
     ]
@@ -66,8 +71,8 @@ def acceptance(d: Any) -> list[Block]:
 
 
 def _readings_text(readings: pd.DataFrame) -> str:
-    """What the PASS above depends on: the reading of the rod's length (``length_readings``),
-    each verdict over the rounding of the published T (``quantities.verdict``)."""
+    """What the verdicts above depend on: the reading of the rod's length (``length_readings``),
+    each verdict over the rounding of the printed inputs and T (``quantities.verdict``)."""
     used = readings[~readings["self-consistent"]].iloc[0]
     others = [r for _, r in readings[readings["self-consistent"]].iterrows()]
 
@@ -78,38 +83,50 @@ def _readings_text(readings: pd.DataFrame) -> str:
             f"{r['T 20 deg verdict']} / {r['T 45 deg verdict']}) with {r['reading']}"
         )
 
+    def name(r: pd.Series) -> str:
+        if not r["self-consistent"]:
+            return "the mixed reading"
+        return "L the overall length" if "overall" in r["reading"] else "the whole rod's I_C"
+
     notes = []
     for ang in (20, 45):
-        short = [r for r in others if r[f"T {ang} deg verdict"] != PASS]
+        short = [r for _, r in readings.iterrows() if r[f"T {ang} deg verdict"] != PASS]
         if not short:
             continue
-        pub = D.published_row(ang, "experiment")
-        assert pub is not None and pub.T is not None
-        T = pub.T * 1e3
-        spans = " and ".join(
-            f"{fmt_pct(r[f'T {ang} deg rel. diff low'])} to "
-            f"{fmt_pct(r[f'T {ang} deg rel. diff high'])}"
+        sure = [name(r) for _, r in readings.iterrows() if r[f"T {ang} deg verdict"] == PASS]
+        spans = "; ".join(
+            f"{name(r)}: {fmt_pct(r[f'T {ang} deg rel. diff low'])} to "
+            f"{fmt_pct(r[f'T {ang} deg rel. diff high'])}, {r[f'T {ang} deg verdict']}"
             for r in short
         )
-        outcome = (
-            f"outside the {TOL_EXPERIMENT_T:.0%} tolerance: FAIL"
-            if all(r[f"T {ang} deg verdict"] == FAIL for r in short)
-            else f"across the {TOL_EXPERIMENT_T:.0%} tolerance: the printed digits cannot tell "
-            "whether that check passes (UNDECIDED)"
-        )
         notes.append(
-            f"the published {T:.2f} ms stands for {T - 0.005:.3f}-{T + 0.005:.3f} ms (two "
-            f"decimals), so the {ang} deg T then lies {spans} from it, {outcome}, and its PASS "
-            "is certain only with the mixed reading"
+            f"at {ang} deg, over the rounding of the printed inputs and T ({spans}), "
+            + (
+                f"the PASS is certain only with {' or '.join(sure)}"
+                if sure
+                else "no reading passes"
+            )
         )
+    both = [
+        name(r)
+        for _, r in readings.iterrows()
+        if all(r[f"T {a} deg verdict"] == PASS for a in (20, 45))
+    ]
     return (
         "What these verdicts depend on: Table 1's L = 0.3048 m is read two ways at once, as the "
         "distance between the tip centres in the kinematics (Eq. 1, as impactlab's Rod) and as "
         "the length of the slender rod in I_C = m L^2/12 "
-        f"({used['T 20 deg [ms]']:.3f} / {used['T 45 deg [ms]']:.3f} ms at 20 / 45 deg). Read "
-        "one way throughout: "
+        f"({used['T 20 deg [ms]']:.3f} / {used['T 45 deg [ms]']:.3f} ms at 20 / 45 deg: "
+        f"{used['T 20 deg verdict']} / {used['T 45 deg verdict']}). Read one way throughout: "
         + "; or ".join(values(r) for r in others)
         + (": " + "; ".join(notes) + ". " if notes else ". ")
+        + (
+            ""
+            if not notes
+            else "No reading passes at both angles for certain. "
+            if not both
+            else f"Both pass for certain only with {' or '.join(both)}. "
+        )
         + "impactlab keeps the reading of the equations (errata.md, Table 1); I_C, which the "
         "paper does not give, moves T further (Section 8)."
     )

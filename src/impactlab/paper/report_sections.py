@@ -20,7 +20,7 @@ from impactlab.paper.quantities import PAPER_DEPTH, PAPER_SIGN_NOTE
 from impactlab.paper.report import Block, Code, Figure, Heading, Para, Table
 from impactlab.paper.report_acceptance import acceptance
 from impactlab.paper.report_reasons import not_reproduced
-from impactlab.paper.report_simulated import simulated
+from impactlab.paper.report_simulated import _marked, simulated
 
 TITLE = "impactlab: reproduction of Ghaednia, Marghitu & Jackson (2016)"
 
@@ -171,7 +171,7 @@ def _eq12(d: ReportData) -> list[Block]:
             "the simulated duration. The engine includes gravity and lets the rod turn, "
             "which Eq. 12 neglects; the difference measures those neglected effects."
         ),
-        Table(d.eq12, "Eq. 12 against the full dynamics", digits=4),
+        Table(_marked(d.eq12, "law"), "Eq. 12 against the full dynamics", digits=4),
     ]
 
 

@@ -19,6 +19,7 @@ from impactlab.paper.quantities import (
     PAPER_DEPTH,
     TOL_SIMULATED,
     count_extrapolated,
+    reference_of,
 )
 from impactlab.paper.report import Block, Bullets, Heading, Para, Table, fmt_pct
 from impactlab.paper.simulations import FRICTIONS
@@ -58,7 +59,7 @@ def simulated(d: Any) -> list[Block]:
         B += [
             Para(FE_REFERENCE_TEXT),
             Table(
-                _percent(d.fe_reference, "vs FE"),
+                _marked(_percent(d.fe_reference, "vs FE"), "law"),
                 "The paper's laws against the FE reference",
                 digits=4,
             ),
@@ -94,7 +95,7 @@ def _extrapolation_note(simulations: pd.DataFrame) -> str:
     flagged = simulations[simulations["flags"].fillna("").str.contains("LAW_EXTRAPOLATED")]
     laws = sorted(set(flagged["law"]))
     ranges = "; ".join(
-        f"{law}: {_verified_words(law)}, max delta/delta_c here "
+        f"{law}: {_verified_words(law)}, max delta/{reference_of(law)} here "
         f"{flagged[flagged['law'] == law]['max_delta_ratio'].max():.3g}"
         for law in laws
         if law in RANGES
@@ -103,7 +104,8 @@ def _extrapolation_note(simulations: pd.DataFrame) -> str:
         f"{EXTRAPOLATED_MARK} LAW_EXTRAPOLATED: {n} of {m} simulated impacts push the "
         "interference beyond the upper end of their contact law's verified range "
         f"({tolerance_text()}, for the pair's E*/S_y; impactlab.contact.ranges; `flags` and "
-        "`max_delta_ratio` = delta_max/delta_c in the CSV tables), so the law is used where it "
+        "`max_delta_ratio` = delta_max/delta_ref in the CSV tables and the figures' legends: "
+        "delta_c, or delta_y for Brake and Kogut-Komvopoulos), so the law is used where it "
         "was not verified against the FE reference. "
         + (f"{ranges}. " if ranges else "")
         + "The verified ranges are measured from the shipped FE curves (docs/laws/index.md, "
@@ -143,11 +145,13 @@ def _sim_vs_experiment(simtab: pd.DataFrame, exp: pd.DataFrame) -> list[Block]:
             for law in D.PAPER_LAWS:
                 h = sim[(sim["angle [deg]"] == ang) & (sim["law"] == law)]
                 row[law] = None if h.empty else float(h.iloc[0][key])
+            row["flags"] = _flagged_laws(sim[sim["angle [deg]"] == ang])
             rows.append(row)
     out: list[Block] = [
         Heading("Simulations against the experiments (the paper's main claim)", 3),
         Para(
-            "Experiment: measured e, delta_p, L_s; T and F from the inversion (Section 3). "
+            "Experiment: measured e, delta_p, L_s; T and F from the inversion (Section 3); "
+            f"`flags`: the simulations of the angle marked {EXTRAPOLATED_MARK} above. "
             + _e_claim(sim)
             + " The dents differ: the simulations slide tens of micrometres, the experiments "
             "1.4-1.65 mm. At 70 deg the measured e is far below the simulated one."
@@ -179,6 +183,18 @@ def _sim_vs_experiment(simtab: pd.DataFrame, exp: pd.DataFrame) -> list[Block]:
         )
         out.append(Bullets(tuple(f"{t}: {'yes' if ok else 'no'}" for t, ok in checks)))
     return out
+
+
+def _flagged_laws(sim: pd.DataFrame) -> str:
+    """``LAW_EXTRAPOLATED: ghaednia 178 delta_c, ...`` for the simulations of ``sim`` (one
+    angle) flagged LAW_EXTRAPOLATED (``max_delta_ratio`` in the law's own reference); ``""``:
+    none."""
+    flagged = sim[sim["flags"].fillna("").str.contains("LAW_EXTRAPOLATED")]
+    laws = [
+        f"{r['law']} {float(r['max_delta_ratio']):.0f} {reference_of(str(r['law']))}"
+        for _, r in flagged.iterrows()
+    ]
+    return f"{EXTRAPOLATED_MARK} LAW_EXTRAPOLATED: " + ", ".join(laws) if laws else ""
 
 
 def _e_claim(sim: pd.DataFrame) -> str:

@@ -282,19 +282,26 @@ def _unlink_links(out: Path) -> None:
 
 
 def _marker_files(out: Path) -> set[str]:
-    """The files the marker in ``out`` lists (none without a readable one); only plain names
-    of files in ``out`` itself count, never a path elsewhere."""
+    """The files the marker in ``out`` lists (none without a readable one) that a reproduction
+    can write: names of :data:`FILES` (or the temporary file of a write of one cut short). Any
+    other name the marker lists (a file of the user's, a path elsewhere) is ignored, so it is
+    never removed whatever the marker says."""
     try:
         listed = json.loads((out / MARKER).read_text()).get("files", [])
     except (OSError, ValueError, AttributeError):
         return set()
     if not isinstance(listed, list):
         return set()
-    return {
-        f
-        for f in listed
-        if isinstance(f, str) and f not in ("", ".", "..", MARKER) and Path(f).name == f
-    }
+    return {f for f in listed if isinstance(f, str) and _is_ours(f)}
+
+
+def _is_ours(name: str) -> bool:
+    """Whether ``name`` is a file a reproduction can write: one of :data:`FILES`, or the
+    temporary file of a write of one of them (or of :data:`MARKER`) cut short."""
+    if name in FILES:
+        return True
+    m = _PARTIAL.fullmatch(name)
+    return m is not None and m.group("name") in FILES | {MARKER}
 
 
 def _write_marker(out: Path, status: str, files: set[str], elapsed: float | None = None) -> None:
@@ -312,8 +319,7 @@ def _write_marker(out: Path, status: str, files: set[str], elapsed: float | None
 
 def _partials(out: Path) -> set[str]:
     """The temporary files in ``out`` of a write of one of :data:`FILES` cut short."""
-    found = (_PARTIAL.fullmatch(p.name) for p in out.iterdir())
-    return {m.group(0) for m in found if m is not None and m.group("name") in FILES | {MARKER}}
+    return {p.name for p in out.iterdir() if p.name not in FILES and _is_ours(p.name)}
 
 
 def _remove_stale(out: Path, stale: set[str]) -> tuple[list[str], set[str]]:
@@ -321,7 +327,7 @@ def _remove_stale(out: Path, stale: set[str]) -> tuple[list[str], set[str]]:
     ReproductionWarning each; returns the names removed and those that could not be."""
     removed: list[str] = []
     kept: set[str] = set()
-    for name in sorted(stale):
+    for name in sorted(n for n in stale if _is_ours(n)):  # never a file the user made
         path = out / name
         if not path.is_file() or path.is_symlink():
             continue  # gone already, or not a file of ours

@@ -109,7 +109,8 @@ def simulation_table(sims: Simulations) -> pd.DataFrame:
 def eq12_check(sims: Simulations) -> pd.DataFrame:
     """The analytic inversion applied to impactlab's own simulations: T from the simulated dent
     (delta_p, L_s, e) vs the simulated duration. Tests Eq. 12 against the full dynamics (gravity,
-    turning rod) without any published number."""
+    turning rod) without any published number. ``flags`` and ``max_delta_ratio`` of each
+    simulation, as in ``simulation_table``."""
     rows = []
     for (ang, law, fr), res in sims.items():
         x = D.EXPERIMENTS[ang]
@@ -118,6 +119,7 @@ def eq12_check(sims: Simulations) -> pd.DataFrame:
             "law": law,
             "friction": fr,
             "T simulated [ms]": res.duration * 1e3,
+            **flag_columns(res),
         }
         dent = {"delta_p": abs(res.delta_p), "sliding_length": abs(res.sliding_length)}
         try:
