@@ -35,7 +35,7 @@ def test_to_dict_is_si(analysed_example) -> None:
     assert _degrees(record) == []
     assert res.dent is not None
     assert abs(res.dent.sliding_angle) <= math.pi  # rad
-    assert record["dent"]["sliding_angle"] == res.dent.sliding_angle
+    assert record["dent"]["sliding_angle"] == {"value": res.dent.sliding_angle, "unit": "rad"}
 
 
 def test_the_commands_json_is_si(cli_main: CliMain) -> None:

@@ -141,7 +141,7 @@ class ImpactKinematics:
             },
             "geometry": self.geometry_source,
             "fitted_gravity": self.fitted_gravity,
-            "tilt_out_of_plane": self.tilt_out_of_plane,
+            "tilt_out_of_plane": {"value": self.tilt_out_of_plane, "unit": "rad"},
             "ok": self.ok,
             "doubts": list(self.doubts),
             "warnings": list(self.warnings),

@@ -67,7 +67,7 @@ class DentMetrics:
             "width": self.width.to_dict(),
             "deepest_xy_m": list(self.deepest),
             "sliding_axis": list(self.axis),
-            "sliding_angle": self.sliding_angle,
+            "sliding_angle": {"value": self.sliding_angle, "unit": "rad"},
             "direction_ambiguous": self.direction_ambiguous,
             "end_fall_distance_m": {"start": self.end_sharpness[0], "end": self.end_sharpness[1]},
             "deepest_fraction": self.deepest_fraction,
