@@ -6,24 +6,13 @@ from __future__ import annotations
 
 import dataclasses
 import html
-import math
 import warnings
-from typing import Any
 
 import pytest
+from inversion_cases import WIDE
 
 import impactlab as il
 from impactlab.analytic import InversionResult
-
-#: The reviewer's inversion: mu's sigma reaches mu_c, so samples are discarded (a warning).
-WIDE: dict[str, Any] = dict(
-    angle=math.radians(20),
-    v_i=-1.41,
-    e=0.5,
-    mu=(0.70, 0.05),
-    delta_p=22e-6,
-    sliding_length=1400e-6,
-)
 
 
 @pytest.fixture(scope="module")

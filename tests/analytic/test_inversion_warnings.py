@@ -4,24 +4,16 @@
 from __future__ import annotations
 
 import json
-import math
 import warnings
 from collections.abc import Callable
 
 import pytest
+from inversion_cases import WIDE
 
 import impactlab as il
 
 CliMain = Callable[..., tuple[int, str, str]]
 
-WIDE = dict(
-    angle=math.radians(20),
-    v_i=-1.41,
-    e=0.5,
-    mu=(0.70, 0.05),
-    delta_p=22e-6,
-    sliding_length=1400e-6,
-)
 CLI = ["invert", "--angle", "20 deg", "--vi", "-1.41 m/s", "--e", "0.5", "--mu", "0.7",
        "--sigma-mu", "0.05", "--delta-p", "22 um", "--ls", "1400 um", "--json"]  # fmt: skip
 

@@ -6,23 +6,12 @@ then span the whole flight) and is not gravity-dominated (docs/flexible.md, "Res
 from __future__ import annotations
 
 import pytest
+from energy_balances import CLOSED
 
 import impactlab as il
 from impactlab.dynamics.drop import DropError
 from impactlab.dynamics.drop_checks import balance_residual, check_energy_balance
 from impactlab.flags import ENERGY_GAIN_RTOL_FACTOR, ENERGY_ROUNDOFF, ResultFlag
-
-#: A closed balance after the last contact [J]: 1 J in, 0.25 J lost to the contact, 0.05 J in
-#: vibration, 0.7 J of rigid kinetic energy left.
-CLOSED = {
-    "rigid_kinetic_energy": 0.7,
-    "vibration_energy": 0.05,
-    "potential_energy": 0.0,
-    "work_normal": -0.25,
-    "work_friction": 0.0,
-    "work_damping": 0.0,
-    "energy_error": 1e-9,
-}
 
 
 def test_a_closed_balance_passes() -> None:

@@ -11,6 +11,7 @@ from typing import Any
 
 import numpy as np
 import pytest
+from energy_balances import CLOSED
 
 from impactlab.bodies import FlexibleRod
 from impactlab.dynamics import drop as drop_module
@@ -33,16 +34,6 @@ THIN_DROP: dict[str, Any] = {
     "stop": "flight",
     "t_max": 2.0,
     "history": False,
-}
-
-CLOSED = {
-    "rigid_kinetic_energy": 0.7,
-    "vibration_energy": 0.05,
-    "potential_energy": 0.0,
-    "work_normal": -0.25,
-    "work_friction": 0.0,
-    "work_damping": 0.0,
-    "energy_error": 1e-9,
 }
 
 
