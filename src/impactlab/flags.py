@@ -97,7 +97,8 @@ _MESSAGES: dict[ResultFlag, str] = {
     ResultFlag.ENERGY_GAIN: (
         "energy gain: the total energy at separation exceeds the initial kinetic energy, or "
         "friction did positive work in one of a drop's contacts, beyond the integration "
-        "tolerance, so the friction model created energy (the paper's "
+        "tolerance, or the impulse_ratio contact point slid along its fixed friction force "
+        "(friction's power positive), so the friction model created energy (the paper's "
         "impulse_ratio does so once the slip stops; coulomb is its energy-consistent completion)"
     ),
     ResultFlag.GRAVITY_DOMINATED: (

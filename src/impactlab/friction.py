@@ -22,7 +22,7 @@ The equations are in ``docs/engine/index.md``; the compiled implementation is in
   (constant elastic displacement), the Mindlin-Deresiewicz-type scheme of Di Renzo & Di Maio
   (2004) doi:10.1016/j.ces.2003.09.037 and Thornton, Cummins & Cleary (2011, Powder Technol.
   210, 189); theory: Mindlin & Deresiewicz, J. Appl. Mech. 20 (1953) 327; oblique impact
-  behaviour: Maw, Barber & Fawcett, Wear 38 (1976) 101, doi:10.1016/0043-1648(76)90063-6.
+  behaviour: Maw, Barber & Fawcett, Wear 38 (1976) 101, doi:10.1016/0043-1648(76)90201-5.
 - ``partial_slip``: Mindlin-Deresiewicz partial slip with arbitrary normal and tangential load
   history (R. D. Mindlin, J. Appl. Mech. 16 (1949) 259, doi:10.1115/1.4009973; R. D. Mindlin,
   H. Deresiewicz, J. Appl. Mech. 20 (1953) 327, doi:10.1115/1.4010702), solved in its exact
@@ -65,6 +65,7 @@ class FrictionKind(enum.StrEnum):
             "mindlin-deresiewicz-1953",
             "di-renzo-di-maio-2004",
             "thornton-cummins-cleary-2011",
+            "thornton-cummins-cleary-2013",
             "maw-barber-fawcett-1976",
         ),
     )
@@ -76,6 +77,7 @@ class FrictionKind(enum.StrEnum):
             "mindlin-deresiewicz-1953",
             "popov-hess-2014",
             "maw-barber-fawcett-1976",
+            "thornton-cummins-cleary-2013",
         ),
     )
 

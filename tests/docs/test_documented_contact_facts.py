@@ -153,8 +153,10 @@ def test_jackson_green_switch_effect_on_e_is_as_stated() -> None:
 
 @pytest.mark.parametrize("friction", ["mindlin", "partial_slip"])
 def test_tangential_models_report_stick_for_any_friction(friction: str) -> None:
-    """The tangential force builds from zero, so the contact starts without gross slip: the
-    regime is `stick` at the smallest mu the engine keeps, where coulomb slides throughout."""
+    """Without initial slip the tangential force builds from zero, so the contact starts without
+    gross slip: the regime is `stick` at the smallest mu the engine keeps, where coulomb slides
+    throughout. A large initial slip, 4 G* |v_t| > mu E* |v_n|, starts in gross slip and is
+    `slip` where the contact never leaves it; a smaller one is not `slip`."""
     kw: dict[str, Any] = {
         "angle": math.radians(45.0),
         "velocity": (0.0, -1.41),
@@ -167,6 +169,17 @@ def test_tangential_models_report_stick_for_any_friction(friction: str) -> None:
     assert il.simulate(il.Rod.paper(), friction="coulomb", **kw).regime == "slip"
     row = next(ln for ln in (ROOT / "docs/engine/index.md").read_text().splitlines()
                if ln.startswith("| `regime` |"))  # fmt: skip
-    assert "every contact starts without gross slip" in row
+    assert "so every contact starts without gross slip" not in row
+    assert "every contact without initial slip" in row
+    assert "starts without gross slip and is never `slip`" in row
+    assert "is `slip` where the contact never leaves it" in row
+    assert "velocity (2.0, -1.41) m/s, mu = 0.1, `ghaednia`: stick time 0" in row
     assert "read `stick_time` / `duration`" in row
     assert f"0.03 us of {r.duration * 1e6:.0f} us" in row
+    start = 4.0 * PAIR.G_star / (0.1 * PAIR.E_star * 1.41)  # the start ratio per m/s of v_t
+    for vx, regime in ((2.0, "slip"), (0.1, "reversal")):
+        kw.update(velocity=(vx, -1.41), mu=0.1, law="ghaednia")
+        hit = il.simulate(il.Rod.paper(), friction=friction, **kw)
+        assert (start * abs(hit.vt_in) > 1.0) == (vx == 2.0)
+        assert hit.regime == regime
+        assert (hit.stick_time == 0.0) == (regime == "slip")

@@ -1,6 +1,6 @@
 """Mindlin-type tangential compliance: the oblique elastic impact of a sphere.
 
-Known behaviour (Maw, Barber & Fawcett, Wear 38 (1976) 101, doi:10.1016/0043-1648(76)90063-6;
+Known behaviour (Maw, Barber & Fawcett, Wear 38 (1976) 101, doi:10.1016/0043-1648(76)90201-5;
 Di Renzo & Di Maio, Chem. Eng. Sci. 59 (2004) 525, doi:10.1016/j.ces.2003.09.037): with
 psi1 = 2(1-nu)/(mu(2-nu)) v_t/v_n the normalised incidence and psi2 = -(same) v_t,out/v_n,out
 the normalised recoil angle, psi2 ~ -c psi1 for small psi1 (the contact point rebounds forward,

@@ -140,13 +140,29 @@ LITERATURE: tuple[Reference, ...] = (
     ),
     Reference(
         "thornton-cummins-cleary-2011",
-        "C. Thornton, S. J. Cummins, P. W. Cleary, Powder Technol. 210 (2011) 189",
+        "C. Thornton, S. J. Cummins, P. W. Cleary, An investigation of the comparative behaviour "
+        "of alternative contact force models during elastic collisions, Powder Technol. 210 "
+        "(2011) 189-197",
+        note="title, journal, volume (number 3) and pages confirmed (the University of "
+        "Birmingham's research portal record; the reference lists of the LIGGGHTS "
+        "documentation, gran tangential incremental_history, and of Biegert, Vowinckel & "
+        "Meiburg, arXiv:1608.03566); DOI not found in the sources searched",
+    ),
+    Reference(
+        "thornton-cummins-cleary-2013",
+        "C. Thornton, S. J. Cummins, P. W. Cleary, An investigation of the comparative behaviour "
+        "of alternative contact force models during inelastic collisions, Powder Technol. 233 "
+        "(2013) 30-46",
+        note="the tangential stiffness 8 G* a with the actual (plastic) contact radius; title, "
+        "journal, volume and pages confirmed (the reference lists of the LIGGGHTS "
+        "documentation, gran tangential incremental_history, and of Biegert, Vowinckel & "
+        "Meiburg, arXiv:1608.03566); DOI not found in the sources searched",
     ),
     Reference(
         "maw-barber-fawcett-1976",
         "N. Maw, J. R. Barber, J. N. Fawcett, The oblique impact of elastic spheres, Wear 38 "
         "(1976) 101-114",
-        "10.1016/0043-1648(76)90063-6",
+        "10.1016/0043-1648(76)90201-5",
     ),
     Reference(
         "fritsch-carlson-1980",
@@ -237,5 +253,17 @@ LITERATURE: tuple[Reference, ...] = (
         "folding, and localization: an improved R-hat for assessing convergence of MCMC, "
         "Bayesian Anal. 16 (2021) 667-718",
         "10.1214/20-BA1221",
+    ),
+    Reference(
+        "yao-2018-stacking",
+        "Y. Yao, A. Vehtari, D. Simpson, A. Gelman, Using stacking to average Bayesian "
+        "predictive distributions, Bayesian Anal. 13 (2018) 917-1007",
+        "10.1214/17-BA1091",
+    ),
+    Reference(
+        "sivula-2020-loo-uncertainty",
+        "T. Sivula, M. Magnusson, A. A. Matamoros, A. Vehtari, Uncertainty in Bayesian "
+        "leave-one-out cross-validation based model comparison, arXiv:2008.10296 (2020)",
+        "10.48550/arXiv.2008.10296",
     ),
 )

@@ -94,7 +94,7 @@ from impactlab.dynamics.kernels.layout import (
     S_Y,
 )
 from impactlab.dynamics.kernels.normal import geometry
-from impactlab.dynamics.kernels.quality import result_flags
+from impactlab.dynamics.kernels.quality import SLIP_VTOL, result_flags, slid_along_friction
 from impactlab.dynamics.kernels.rhs import evaluate_cold, rhs_events_cold
 from impactlab.dynamics.kernels.setup import check_inputs, constants, error_scales, initial_mode
 from impactlab.dynamics.kernels.status import (
@@ -111,6 +111,7 @@ from impactlab.dynamics.kernels.status import (
 )
 from impactlab.dynamics.kernels.step_control import growth_llvm
 from impactlab.dynamics.kernels.tuples import state_tuple
+from impactlab.flags import FLAG_ENERGY_GAIN
 
 #: Scratch of the step loop (``_integrate``): its arrays, a recomputation, a w-integration.
 INTEGRATE_WORK_LEN = (STEP_LEN + RECOMPUTE_LEN) * NS + W_WORK_LEN
@@ -265,12 +266,12 @@ def _regime(fric, md, acc, t, vn0):
     vs_pos = acc[A_VSPOS]
     vs_neg = acc[A_VSNEG]
     sir = md[M_SIR]
-    vtol = 1e-6 * abs(vn0)
+    vtol = SLIP_VTOL * abs(vn0)
     if fric == FR_NONE or (fric == FR_IMPULSE and sir == 0.0):  # no tangential force at all
         return REGIME_FRICTIONLESS
     if vs_pos > vtol and vs_neg < -vtol:
         return REGIME_REVERSAL
-    if fric == FR_IMPULSE and ((sir > 0.0 and vs_pos > vtol) or (sir < 0.0 and vs_neg < -vtol)):
+    if fric == FR_IMPULSE and slid_along_friction(sir, vs_pos, vs_neg, vtol):
         # the contact point slid along the constant friction force (friction doing work on the
         # body): the paper's Eq. 7 is outside its validity (mu beyond mu_c)
         return REGIME_REVERSAL
@@ -308,7 +309,13 @@ def _separation(out, fric, c, md, y, acc, t, vx0, vy0, vn0, th0, rod, e0, rtol, 
     e_kin = 0.5 * m * (vx * vx + vy * vy) + 0.5 * inertia * w * w
     e_pot = m * g * y[S_Y]
     out[O_ED] = e0 - (e_kin + e_pot)
-    out[O_FLAGS] = result_flags(e0, e_kin, e_pot, y[S_WORK], rtol, m * g * t, pn)
+    flags = result_flags(e0, e_kin, e_pot, y[S_WORK], rtol, m * g * t, pn)
+    vtol = SLIP_VTOL * abs(vn0)
+    if fric == FR_IMPULSE and slid_along_friction(md[M_SIR], acc[A_VSPOS], acc[A_VSNEG], vtol):
+        # Eq. 7's constant force pushed the contact point along its slip: it did positive work
+        # and created energy, which the normal contact's losses may hide from the net work
+        flags = float(int(flags) | FLAG_ENERGY_GAIN)
+    out[O_FLAGS] = flags
     out[O_STICK] = acc[A_STICK]
     out[O_REG] = _regime(fric, md, acc, t, vn0)
     out[O_VNOUT] = vn

@@ -42,7 +42,12 @@ from impactlab.dynamics.flexcore.setup import state_size
 from impactlab.dynamics.kernels._jit import njit_internal
 from impactlab.dynamics.kernels.address_call import compiled_addresses
 from impactlab.dynamics.kernels.cells import CP_DX, N_CELLS
-from impactlab.dynamics.kernels.quality import beyond_rim, energy_gained, gravity_dominated
+from impactlab.dynamics.kernels.quality import (
+    SLIP_VTOL,
+    beyond_rim,
+    energy_gained,
+    gravity_dominated,
+)
 from impactlab.flags import (
     ENERGY_GAIN_RTOL_FACTOR,
     ENERGY_ROUNDOFF,
@@ -124,16 +129,21 @@ def sequence_flags(out, e0, m, g, rtol, contacts, n_contacts, radius):
 
 @njit(cache=True, error_model="numpy")
 def friction_gained(contacts, n_contacts, scale, rtol):
-    """True when friction did positive work [J] in one of the ``n_contacts`` contacts beyond
-    the energy criterion's tolerance, (ENERGY_GAIN_RTOL_FACTOR rtol + ENERGY_ROUNDOFF) times
-    the balance's ``scale`` [J] (E0 + the final kinetic, vibration and |potential| energy):
-    energy created inside a contact (the impulse_ratio model's, once the slip reverses), which
-    the losses of the other contacts would hide from the sequence's total (a contact's works
-    are its end's own, also while the other end touches)."""
+    """True when friction created energy in one of the ``n_contacts`` contacts: its net work
+    [J] is positive beyond the energy criterion's tolerance, (ENERGY_GAIN_RTOL_FACTOR rtol +
+    ENERGY_ROUNDOFF) times the balance's ``scale`` [J] (E0 + the final kinetic, vibration and
+    |potential| energy), or (impulse_ratio) the contact point slid along the contact's fixed
+    friction force faster than SLIP_VTOL times its normal speed at touch, the rigid engine's
+    ``kernels.quality.slid_along_friction`` (positive work in part of the contact, whatever
+    the net). The losses of the other contacts, or of the same contact, would hide that
+    energy from the sequence's total (a contact's works are its end's own, also while the
+    other end touches)."""
     limit = (ENERGY_GAIN_RTOL_FACTOR * rtol + ENERGY_ROUNDOFF) * scale
     gained = False
     for j in range(n_contacts):
         if contacts[j, F.CR_WT] > limit:
+            gained = True
+        if contacts[j, F.CR_VALONG] > SLIP_VTOL * contacts[j, F.CR_VNIN]:
             gained = True
     return gained
 

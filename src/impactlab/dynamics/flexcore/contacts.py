@@ -146,6 +146,8 @@ def on_touch(mdl, md, y, t, k, sv, contacts, dents, cur_con, snap, ek, Jn, Jt):
     contacts[ci, F.CR_STICK] = 0.0
     contacts[ci, F.CR_TH0] = contacts[ci, F.CR_TH1] = section_angle(c, mdl[9], y, k)
     contacts[ci, F.CR_PAST] = sv[F.SV_SEQ_PASSED]
+    contacts[ci, F.CR_VALONG] = 0.0
+    contacts[ci, F.CR_VNIN] = abs(ek[k, F.EK_VN])
     if di >= 0:
         _reload_mode(mdl, md, dents, k, di)
         contacts[ci, F.CR_RELOAD] = 1.0

@@ -139,7 +139,12 @@ CR_TH1 = 18  #: ... at separation (at touch until then) [rad]
 #: 1 if the contact began after the end test of stop="sequence" would have passed (a
 #: ``stop="flight"`` drop's contacts beyond the tip's sequence; not a record field)
 CR_PAST = 19
-NCR = 20
+#: impulse_ratio: the largest slip velocity of the contact point along the contact's friction
+#: force, max(s v_t) [m/s] (0 for the other models; ``batch.friction_gained``; not a record
+#: field)
+CR_VALONG = 20
+CR_VNIN = 21  #: |v_n| of the end at touch [m/s] (the scale of CR_VALONG; not a record field)
+NCR = 22
 MAX_CONTACTS = 4096
 
 # ---- run state (``SV_*``, a float vector shared by the driver's helpers) ----------------------

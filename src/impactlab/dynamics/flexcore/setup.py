@@ -126,6 +126,8 @@ def first_touch(mdl, md, y, vx0, vy0, w0, sv, contacts, dents, cur_con):
     for f in (F.CR_END, F.CR_T0, F.CR_X0, F.CR_DENT, F.CR_RELOAD, F.CR_DMAX, F.CR_FMAX, F.CR_STICK):
         contacts[0, f] = 0.0
     contacts[0, F.CR_TH0] = contacts[0, F.CR_TH1] = c[F.FC_TH0]  # phi = q = 0 at first touch
+    contacts[0, F.CR_VALONG] = 0.0
+    contacts[0, F.CR_VNIN] = abs(sv[F.SV_VN0])  # set by ``scales``
     cur_con[0] = 0
     sv[F.SV_NCON] = 1
 

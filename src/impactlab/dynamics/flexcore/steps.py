@@ -102,8 +102,8 @@ def missed_contact(md, sv, ek, jev):
 
 @njit(cache=True, inline="always", error_model="numpy")
 def step_stats(mdl, md, t, tend, sv, contacts, dents, cur_con, ek):
-    """Per-contact and run maxima, stick time and dent extents after a step to ``tend``;
-    False on a non-finite force."""
+    """Per-contact and run maxima (impulse_ratio: the slip velocity along the friction force),
+    stick time and dent extents after a step to ``tend``; False on a non-finite force."""
     mu = mdl[2][F.FC_MU]
     sticks = mu > 0.0 and mdl[2][F.FC_FRIC] != FR_IMPULSE  # the models with a stick state
     partial = mdl[2][F.FC_FRIC] == F.FR_PARTIAL  # partial slip: a cell sticks
@@ -117,6 +117,9 @@ def step_stats(mdl, md, t, tend, sv, contacts, dents, cur_con, ek):
                 sv[F.SV_STICK] += tend - t
             contacts[ci, F.CR_DMAX] = max(contacts[ci, F.CR_DMAX], ek[k, F.EK_DELTA])
             contacts[ci, F.CR_FMAX] = max(contacts[ci, F.CR_FMAX], ek[k, F.EK_FN])
+            if mdl[2][F.FC_FRIC] == FR_IMPULSE:  # slip along the fixed force: positive work
+                along = md[k, F.MD_SIR] * ek[k, F.EK_VT]
+                contacts[ci, F.CR_VALONG] = max(contacts[ci, F.CR_VALONG], along)
             di = int(md[k, F.MD_DENT])
             dents[di, F.DT_XLO] = min(dents[di, F.DT_XLO], ek[k, F.EK_X])
             dents[di, F.DT_XHI] = max(dents[di, F.DT_XHI], ek[k, F.EK_X])

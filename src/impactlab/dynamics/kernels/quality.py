@@ -17,6 +17,10 @@ from impactlab.flags import (
     GRAVITY_IMPULSE_RATIO,
 )
 
+#: Slip-velocity tolerance of the regime and of ``slid_along_friction``, relative to the
+#: contact point's normal velocity at first touch |v_n,in|.
+SLIP_VTOL = 1e-6
+
 
 @njit_internal
 def energy_gained(e0, e_kin, e_pot, rtol):
@@ -51,6 +55,16 @@ def friction_work_gained(work, scale, rtol):
     criterion's tolerance, (ENERGY_GAIN_RTOL_FACTOR rtol + ENERGY_ROUNDOFF) ``scale`` [J]:
     friction created energy (which the normal contact's losses may hide from the total)."""
     return work > (ENERGY_GAIN_RTOL_FACTOR * rtol + ENERGY_ROUNDOFF) * scale
+
+
+@njit(cache=True, error_model="numpy")
+def slid_along_friction(sir, vs_pos, vs_neg, vtol):
+    """True when the contact point slid along a friction force of fixed sign ``sir`` (the
+    ``impulse_ratio`` model's F_t = sir mu F_n): the largest slip velocity along it, ``vs_pos``
+    (sir > 0) or -``vs_neg`` (sir < 0) [m/s], exceeds ``vtol`` [m/s]. Such a force does
+    positive work on the sliding body, so it created energy, whatever the net work that the
+    normal contact's losses leave (regime ``reversal``, flag ENERGY_GAIN)."""
+    return (sir > 0.0 and vs_pos > vtol) or (sir < 0.0 and vs_neg < -vtol)
 
 
 @njit_internal
