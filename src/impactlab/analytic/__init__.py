@@ -8,7 +8,9 @@ from the rigid-body impulse relations in ``docs/analytic.md`` (errata: ``docs/pa
 
 Conventions (SI throughout, angles in radians): origin at the first contact point O, x horizontal
 and positive towards the centre of mass C, y up; ``angle`` is the angle between the rod axis and the
-flat; the rod starts with no spin and no tangential velocity and drops with vertical speed ``v_i``.
+flat; the rod starts with no spin and no tangential velocity (the paper; :func:`invert` and Eq. 12's
+closed forms also take the tip's incoming tangential velocity ``vt_in``) and drops with vertical
+speed ``v_i``.
 Lever arms from O to C: ``a = (L/2) cos(angle)``, ``b = (L/2) sin(angle) + R``
 (:func:`lever_arms`, from ``impactlab.bodies``); ``k^2 = I_C/m``. P is the normal contact
 impulse. In gross sliding the tip slides towards -x and friction gives the tangential impulse
@@ -16,8 +18,9 @@ impulse. In gross sliding the tip slides towards -x and friction gives the tange
 ``delta_p`` and a measured sliding length are magnitudes >= 0 [m] (the paper prints them negative).
 
 Validity: rigid rod, constant angle during contact (the rod turns by about 1.6 deg at 20 deg and
-0.9 deg at 45 deg in the paper's impacts, see docs/analytic.md), initial tangential velocity and
-spin zero, impulse-ratio friction (paper Eq. 7), gross sliding (``mu < mu_c``). Gravity during the
+0.9 deg at 45 deg in the paper's impacts, see docs/analytic.md), the tip sliding towards -x
+throughout (an incoming tangential velocity ``vt_in`` <= 0: zero in the paper), impulse-ratio
+friction (paper Eq. 7), gross sliding (``mu < mu_c``). Gravity during the
 contact is neglected by the paper's equations; :func:`invert` can include it (``gravity=True``).
 
 Modules: :mod:`~impactlab.analytic.closed_forms` (K_x, K_y, alpha, mu_c, Eqs. 12, 28, 29),

@@ -10,6 +10,7 @@ import numpy as np
 
 from impactlab._validation import check_array_finite
 from impactlab.bodies import PAPER_ROD, Rod, Sphere
+from impactlab.units import has_unit
 
 HALF_PI = 0.5 * math.pi
 _MEASURES = ("slip", "travel")
@@ -66,8 +67,21 @@ def out(x: Any) -> Any:
 
 
 def angle(value: Any) -> Any:
-    """The angle [rad] as a float64 array, checked to lie in [0, pi/2]."""
-    return arr("angle", value, unit="rad", low=0.0, high=HALF_PI)
+    """The angle [rad] as a float64 array, checked to lie in [0, pi/2]. An angle given with
+    its unit (``"95 deg"``, a pint Quantity) out of range is echoed in degrees first, then in
+    the radians a bare number would be."""
+    if not has_unit(value):
+        return arr("angle", value, unit="rad", low=0.0, high=HALF_PI)
+    x = arr("angle", value, unit="rad")
+    bad = (x < 0.0) | (x > HALF_PI)
+    if bad.any():
+        got = float(x.ravel()[np.argmax(bad.ravel())])
+        op, deg, rad = (">=", 0, 0.0) if got < 0.0 else ("<=", 90, HALF_PI)
+        raise ValueError(
+            f"angle must be {op} {deg} deg, got {math.degrees(got):.6g} deg; in radians, as the "
+            f"closed forms take a bare number: {op} {rad:g} rad, got {got!r} rad"
+        )
+    return x
 
 
 def travel(measure: str) -> bool:

@@ -16,9 +16,11 @@ from impactlab.analytic.result import Measured, measured
 __all__ = [
     "E_NOISE_SIGMAS",
     "MIN_DENT_DEPTH",
+    "MIN_SPEED",
     "PLAUSIBLE_DENT_DEPTH",
     "PLAUSIBLE_DENT_RATIO",
     "PLAUSIBLE_DURATION",
+    "PLAUSIBLE_MIN_SPEED",
     "PLAUSIBLE_SPEED",
     "SIGMA_RANGE_FRACTION",
     "check_plausible",
@@ -38,6 +40,15 @@ _UNITS = {
     "sliding_length": "m",
     "e": "",
     "dv_cy": "m/s",
+    "vt_in": "m/s",
+}
+#: The inputs T needs, each with what it is (named when it is missing, None).
+_REQUIRED = {
+    "angle": "the rod-to-flat angle",
+    "v_i": "the tip's vertical velocity before the impact",
+    "mu": "the friction coefficient",
+    "delta_p": "the permanent dent depth",
+    "sliding_length": "the length of the sliding scar",
 }
 #: The inputs that are magnitudes although the paper prints them negative.
 #: Lengths given as magnitudes (the sliding length is signed in the engine, along +x: its
@@ -45,8 +56,15 @@ _UNITS = {
 _MAGNITUDES = {"delta_p": "the permanent dent depth"}
 
 
-#: A nominal v_i or dv_cy above this [m/s] draws an ImplausibleInputWarning.
+#: A nominal v_i, dv_cy or |vt_in| above this [m/s] draws an ImplausibleInputWarning.
 PLAUSIBLE_SPEED = 100.0
+#: A |v_i| below this [m/s] is refused: a fall from under 1e-13 m (v^2/2g), less than an atom's
+#: size, is no measured drop; Eq. 12's T grows as 1/|v_i|, and towards 0 T, F and their
+#: uncertainties under- or overflow.
+MIN_SPEED = 1e-6
+#: A |v_i| below this [m/s] (a fall of 0.05 um) draws an ImplausibleInputWarning: too slow for a
+#: steel drop to dent a metal flat; most likely a unit mistake (km/s taken as m/s).
+PLAUSIBLE_MIN_SPEED = 1e-3
 #: A dent deeper than this fraction of the tip radius draws an ImplausibleInputWarning.
 PLAUSIBLE_DENT_RATIO = 0.1
 #: A nominal impact duration above this [s] draws an ImplausibleInputWarning.
@@ -70,8 +88,15 @@ SIGMA_RANGE_FRACTION = 0.25
 
 def measurements(values: Mapping[str, Any]) -> dict[str, Measured]:
     """The given inputs (None: not measured) as :class:`Measured` in SI, keyed by name, with
-    ``v_i``, ``delta_p`` and ``sliding_length`` as magnitudes; ValueError naming a bad one."""
+    ``v_i``, ``delta_p`` and ``sliding_length`` as magnitudes (``vt_in`` keeps its sign, and is
+    left out where it is exactly 0, the paper's assumption); ValueError naming a bad one, and a
+    required one (``angle``, ``v_i``, ``mu``, ``delta_p``, ``sliding_length``) given as None."""
+    for k, what in _REQUIRED.items():
+        if values.get(k) is None:
+            raise ValueError(f"{k} is required ({what}), got None")
     meas = {k: measured(k, v, _UNITS[k]) for k, v in values.items() if v is not None}
+    if meas.get("vt_in") == Measured(0.0, 0.0):
+        del meas["vt_in"]
     if "e" not in meas and "dv_cy" not in meas:
         raise ValueError(
             "e or dv_cy is required: F needs the restitution coefficient (rigid-body "
@@ -102,8 +127,15 @@ def _check_ranges(meas: Mapping[str, Measured]) -> None:
             f"stands vertical and its tip cannot slide), got {math.degrees(th):.4g} deg "
             f"({th!r} rad){hint}"
         )
-    if meas["v_i"].value == 0.0:
+    vi = meas["v_i"].value
+    if vi == 0.0:
         raise ValueError("v_i must be non-zero (the drop speed), got 0.0")
+    if vi < MIN_SPEED:
+        raise ValueError(
+            f"v_i = {vi!r} m/s is below {MIN_SPEED:g} m/s in magnitude, a fall from under "
+            "1e-13 m (less than an atom's size): no measured drop, and T (~ 1/|v_i|) and its "
+            f"uncertainties overflow; allowed: |v_i| >= {MIN_SPEED:g} m/s (SI: m/s)"
+        )
     if meas["mu"].value < 0.0:
         raise ValueError(f"mu must be >= 0, got {meas['mu'].value!r}")
     if meas["sliding_length"].value == 0.0:
@@ -178,7 +210,8 @@ def check_plausible(meas: Mapping[str, Measured], length: float, tip_radius: flo
     """ValueError for what is impossible for this rod (a dent shallower than ``MIN_DENT_DEPTH``
     or deeper than the tip radius, a sliding length longer than the rod);
     ImplausibleInputWarning for a dent shallower than ``PLAUSIBLE_DENT_DEPTH`` or deeper than
-    ``PLAUSIBLE_DENT_RATIO`` R, or a speed above ``PLAUSIBLE_SPEED``."""
+    ``PLAUSIBLE_DENT_RATIO`` R, a |v_i| below ``PLAUSIBLE_MIN_SPEED``, or a speed (v_i, dv_cy,
+    |vt_in|) above ``PLAUSIBLE_SPEED``."""
     dp, ls = meas["delta_p"].value, meas["sliding_length"].value
     if dp < MIN_DENT_DEPTH:
         raise ValueError(
@@ -206,7 +239,12 @@ def check_plausible(meas: Mapping[str, Measured], length: float, tip_radius: flo
             f"delta_p = {dp!r} m is deeper than {PLAUSIBLE_DENT_RATIO:g} of the tip radius "
             f"({tip_radius!r} m), far beyond the contact laws' range; check the units (SI: m)"
         )
-    for k in ("v_i", "dv_cy"):
+    if meas["v_i"].value < PLAUSIBLE_MIN_SPEED:
+        warn_implausible(
+            f"|v_i| = {meas['v_i'].value!r} m/s is below {PLAUSIBLE_MIN_SPEED:g} m/s, a fall of "
+            "0.05 um, too slow to dent a metal flat; check the units (SI: m/s)"
+        )
+    for k in ("v_i", "dv_cy", "vt_in"):
         if k in meas and abs(meas[k].value) > PLAUSIBLE_SPEED:
             warn_implausible(
                 f"{k} = {meas[k].value!r} m/s exceeds {PLAUSIBLE_SPEED:g} m/s; check the units "

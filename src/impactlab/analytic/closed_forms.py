@@ -4,7 +4,8 @@ Source: H. Ghaednia, D. B. Marghitu, R. L. Jackson, Archive of Applied Mechanics
 121-134, doi:10.1007/s00419-015-1108-2, Eqs. 1-13, 28, 29 (the printed Eqs. 6, 10-13 contain
 errors; derivation in ``docs/analytic.md``). The impulse relations are those of
 :mod:`impactlab.bodies.impulse` (:func:`~impactlab.bodies.impulse_response`,
-:func:`~impactlab.bodies.critical_ratio`) with the rod at rest tangentially and no spin.
+:func:`~impactlab.bodies.critical_ratio`) with the rod at rest tangentially and no spin;
+Eq. 12's forms also take the tip's incoming tangential velocity ``vt_in`` (docs/analytic.md).
 
 Signs: ``angle`` [rad] in [0, pi/2]; ``v_i`` [m/s] the tip's vertical velocity before impact
 (negative, y up); ``delta_p`` [m] the permanent dent depth and a measured sliding length [m] are
@@ -15,13 +16,14 @@ magnitudes >= 0 (the paper prints both negative). The sliding length returned by
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
 
 from impactlab._validation import check_nonnegative
+from impactlab.analytic._inputs import HALF_PI, arr, magnitude, out, rod_values
 from impactlab.analytic._inputs import angle as _angle
-from impactlab.analytic._inputs import arr, magnitude, out, rod_values
 from impactlab.analytic._inputs import travel as _travel
 from impactlab.bodies import Rod, critical_ratio, impulse_response, lever_arms
 
@@ -31,7 +33,15 @@ G0 = 9.80665
 #: The paper's DOI.
 DOI = "10.1007/s00419-015-1108-2"
 
+#: An angle this close to pi/2 [rad] (4 units in the last place) is 90 deg: the lever arm
+#: a = (L/2) cos(angle) is taken as 0 there, not the 6e-17 L/2 of cos(pi/2) in floating point.
+VERTICAL_ROUNDOFF = 4.0 * float(np.spacing(HALF_PI))
+#: A |alpha| at or below this is zero within round-off (the closed forms give about 2e-16 at
+#: 90 deg without the rule above): ``impact_duration`` refuses it as it refuses alpha = 0.
+ALPHA_ROUNDOFF = 1e-12
+
 __all__ = [
+    "ALPHA_ROUNDOFF",
     "DOI",
     "G0",
     "alpha",
@@ -52,6 +62,8 @@ def coefficients(
     """Unvalidated core: a, b, k^2, K_x, K_y, alpha, mu_c (arrays). With ``travel`` K_x and alpha
     refer to the tip sphere's centre (the contact patch) instead of the material point O."""
     a, b = lever_arms(0.5 * L, R, th)
+    # at 90 deg within round-off, cos(angle) ~ 6e-17 is no lever arm: alpha and mu_c are 0
+    a = np.where(np.abs(th - HALF_PI) <= VERTICAL_ROUNDOFF, 0.0, a)
     k2 = inertia / m
     kx_num, ky_num = impulse_response(a, b, k2, mu)
     if travel:  # lever arm of the sphere centre S: b - R
@@ -119,16 +131,22 @@ def sliding_length(
     rod: Rod | None = None,
     *,
     measure: str = "slip",
+    vt_in: Any = 0.0,
 ) -> Any:
-    """Sliding length L_s = -alpha (delta_p + v_i T) [m] along +x (paper Eq. 12, sign fixed).
+    """Sliding length L_s = vt_in T - alpha (delta_p + v_i T) [m] along +x (paper Eq. 12, sign
+    fixed; the term vt_in T is not in the paper).
 
     ``delta_p`` >= 0 [m] is the dent depth (the paper's delta_p <= 0 is the final tip height, so
     its form reads L_s = alpha (delta_p - v_i T)), ``v_i`` the drop velocity [m/s] (sign
     ignored, != 0, as everywhere in ``impactlab.analytic``; v_i = -|v_i| above), ``duration``
-    T > 0 [s]. The result is the slip along +x, negative in gross sliding (the tip slides
-    towards -x), as the engine's ``sliding_length``. ValueError in the sticking regime
-    (mu >= mu_c), where L_s = 0, and for T < delta_p/|v_i| (a negative normal impulse).
-    ``measure="travel"`` gives the contact patch's travel instead
+    T > 0 [s]. ``vt_in`` [m/s] is the incoming tangential velocity (along +x, signed) of the
+    point whose displacement is measured: the contact point for the slip, v_Cx + b omega (spin
+    included), the tip sphere's centre for the travel, v_Cx + (b - R) omega; <= 0 (default 0,
+    the paper), so that the tip slides towards -x throughout (ValueError for > 0: the sliding
+    reverses during the contact, docs/analytic.md). The result is the slip along +x, negative
+    in gross sliding (the tip slides towards -x), as the engine's ``sliding_length``.
+    ValueError in the sticking regime (mu >= mu_c), where L_s = 0, and for T < delta_p/|v_i|
+    (a negative normal impulse). ``measure="travel"`` gives the contact patch's travel instead
     of the slip (gravity neglected).
     """
     dp = magnitude("delta_p", delta_p, "the permanent dent depth")
@@ -136,13 +154,39 @@ def sliding_length(
     if (vi == 0).any():
         raise ValueError("v_i must be non-zero (the drop speed), got 0.0")
     T = arr("duration", duration, unit="s", low=0.0, low_open=True)
+    vt = _one_direction(vt_in)
     th = _angle(angle)
     mu_ = arr("mu", mu, low=0.0)
     m, L, R, inertia = rod_values(rod)
     *_, al, mu_c = coefficients(th, mu_, m, L, R, inertia, _travel(measure))
     check_sliding(mu_, mu_c, th)
     _check_impulse(dp, -vi, T)
-    return out(al * (-dp - vi * T))
+    ls = al * (-dp - vi * T)
+    return out(ls + vt * T if (vt != 0).any() else ls)
+
+
+def _one_direction(vt_in: Any, bounds: Callable[[Any], tuple[Any, Any]] | None = None) -> Any:
+    """``vt_in`` [m/s] as a float array, checked <= 0: for vt_in > 0 the tip first slides
+    towards +x and reverses, which Eq. 12 (one sliding direction) does not describe. With
+    ``bounds`` (vt_in -> the arrays of T at vt_in = 0 and at vt_in [s]) the error gives the
+    bounds of T there (docs/analytic.md)."""
+    vt = arr("vt_in", vt_in, unit="m/s")
+    if (vt > 0).any():
+        i = int(np.argmax((vt > 0).ravel()))
+        got = float(vt.ravel()[i])
+        text = ""
+        if bounds is not None:
+            lo, hi = (float(np.broadcast_to(x, vt.shape).ravel()[i]) for x in bounds(vt))
+            if math.isfinite(hi) and hi > 0:
+                text = f"; T lies between {lo:.4g} s (the value for vt_in = 0) and {hi:.4g} s"
+            else:  # vt_in >= |alpha| |v_i|
+                text = "; this vt_in is so large that the tip may slide towards +x throughout"
+        raise ValueError(
+            f"vt_in must be <= 0 m/s (the tip sliding towards -x from the start), got {got!r} "
+            "m/s: the tip first slides towards +x and its sliding reverses during the contact, "
+            f"which Eq. 12 (one sliding direction) does not describe{text}"
+        )
+    return vt
 
 
 def _check_impulse(dp: Any, vi: Any, T: Any) -> None:
@@ -168,19 +212,24 @@ def impact_duration(
     v_i: Any,
     alpha_: Any,
     *,
+    vt_in: Any = 0.0,
     gravity: bool = False,
     g: float = G0,
 ) -> Any:
     """Impact duration T [s] from the measured dent: Eq. 12 solved for T.
 
-        T = (L_s / |alpha| + delta_p) / |v_i|                   (gravity neglected, the paper)
-        (g/2) T^2 + |v_i| T = L_s / |alpha| + delta_p           (gravity=True)
+        T = (L_s / |alpha| + delta_p) / (|v_i| - vt_in / |alpha|)             (gravity neglected)
+        (g/2) T^2 + (|v_i| - vt_in / |alpha|) T = L_s / |alpha| + delta_p      (gravity=True)
 
-    ``delta_p`` >= 0 [m] the dent depth (a negative value, the paper's sign, raises
-    ValueError); ``sliding_length`` [m] the length of the scar, or the engine's signed
-    ``sliding_length`` (its magnitude enters; != 0); ``v_i`` the drop velocity [m/s] (sign
-    ignored, != 0). ``alpha_`` must be negative (gross sliding); ``alpha_ >= 0`` means the tip
-    sticks and raises ValueError.
+    (the paper's form has vt_in = 0). ``delta_p`` >= 0 [m] the dent depth (a negative value,
+    the paper's sign, raises ValueError); ``sliding_length`` [m] the length of the scar, or the
+    engine's signed ``sliding_length`` (its magnitude enters; != 0); ``v_i`` the drop velocity
+    [m/s] (sign ignored, != 0). ``alpha_`` must be negative (gross sliding); ``alpha_ >= 0``
+    means the tip sticks and raises ValueError, as does a |alpha_| at round-off
+    (<= ``ALPHA_ROUNDOFF``: zero, the rod vertical or mu at mu_c). ``vt_in`` [m/s] is the
+    incoming tangential velocity (along +x, signed, spin included: see :func:`sliding_length`)
+    of the point whose displacement is measured, <= 0 (ValueError for > 0, giving the bounds
+    of T: the sliding reverses during the contact).
     """
     dp = magnitude("delta_p", delta_p, "the permanent dent depth")
     ls = np.abs(arr("sliding_length", sliding_length, unit="m"))  # signed: along +x
@@ -198,12 +247,29 @@ def impact_duration(
             f"alpha_ must be < 0 (gross sliding), got {float(al.ravel()[np.argmax(al >= 0)])!r}: "
             "alpha >= 0 means mu >= mu_c, the tip sticks and Eq. 12 cannot give the duration"
         )
+    zero = np.abs(al) <= ALPHA_ROUNDOFF
+    if zero.any():
+        raise ValueError(
+            f"alpha_ must be < 0 beyond round-off (|alpha_| > {ALPHA_ROUNDOFF:g}), got "
+            f"{float(al.ravel()[np.argmax(zero.ravel())])!r}: that is alpha = 0 (the rod "
+            "vertical, or mu at mu_c), where the tip does not slide and T = L_s/(|alpha| |v_i|) "
+            "is undefined"
+        )
     g_ = check_nonnegative("g", g, "m/s^2")
-    return out(duration_from_dent(dp, ls, vi, np.abs(al), gravity, g_))
+    ab = np.abs(al)
+
+    def bounds(vt: Any) -> tuple[Any, Any]:
+        with np.errstate(all="ignore"):
+            hi = duration_from_dent(dp, ls, vi - vt / ab, ab, gravity, g_)
+        return duration_from_dent(dp, ls, vi, ab, gravity, g_), hi
+
+    vt = _one_direction(vt_in, bounds)
+    return out(duration_from_dent(dp, ls, vi - vt / ab if (vt != 0).any() else vi, ab, gravity, g_))
 
 
 def duration_from_dent(dp: Any, ls: Any, vi: Any, abs_alpha: Any, gravity: bool, g: float) -> Any:
-    """Unvalidated Eq. 12 solved for T [s] from magnitudes (stable root with gravity)."""
+    """Unvalidated Eq. 12 solved for T [s] from magnitudes (stable root with gravity); ``vi``
+    [m/s] is |v_i| - vt_in/|alpha| with an incoming tangential velocity vt_in."""
     c = ls / abs_alpha + dp
     if not gravity or g == 0.0:
         return c / vi
@@ -281,8 +347,9 @@ def check_sliding(mu: Any, mu_c: Any, th: Any) -> None:
         mu_v = float(np.broadcast_to(mu, stick.shape).ravel()[i])
         mc = float(np.broadcast_to(mu_c, stick.shape).ravel()[i])
         ang = math.degrees(float(np.broadcast_to(th, stick.shape).ravel()[i]))
+        vertical = " (the rod stands vertical: no lever arm, mu_c = 0)" if mc == 0.0 else ""
         raise ValueError(
-            f"sticking regime: mu = {mu_v:.4g} >= mu_c = {mc:.4g} at angle = {ang:.4g} deg, so "
-            "alpha >= 0 and the tip does not slide; the inversion of Eq. 12 needs gross sliding "
-            "(mu < mu_c), it gives no duration here"
+            f"sticking regime: mu = {mu_v:.4g} >= mu_c = {mc:.4g} at angle = {ang:.4g} deg"
+            f"{vertical}, so alpha >= 0 and the tip does not slide; the inversion of Eq. 12 "
+            "needs gross sliding (mu < mu_c), it gives no duration here"
         )

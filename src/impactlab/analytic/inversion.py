@@ -21,13 +21,18 @@ from impactlab._validation import (
     check_seed,
     warn_implausible,
 )
+from impactlab.analytic._conditioning import (
+    CONDITION_LIMIT,
+    REVERSAL_SIGMAS,
+    check_coefficients,
+    check_conditioning,
+    check_direction,
+    check_duration,
+    check_finite_result,
+)
 from impactlab.analytic._inputs import HALF_PI, rod_values
 from impactlab.analytic._inputs import travel as _travel
-from impactlab.analytic._measurements import (
-    PLAUSIBLE_DURATION,
-    check_plausible,
-    measurements,
-)
+from impactlab.analytic._measurements import check_plausible, measurements
 from impactlab.analytic.closed_forms import G0, check_sliding, coefficients, duration_from_dent
 from impactlab.analytic.monte_carlo import (
     MC_REJECTED_WARNING,
@@ -38,9 +43,21 @@ from impactlab.analytic.monte_carlo import (
 from impactlab.analytic.result import InversionResult, Measured
 from impactlab.bodies import Rod
 
-__all__ = ["MC_REJECTED_WARNING", "SPREAD_ROUNDING", "invert"]
+__all__ = [
+    "CONDITION_LIMIT",
+    "MC_REJECTED_WARNING",
+    "MIN_STEP",
+    "REVERSAL_SIGMAS",
+    "SPREAD_ROUNDING",
+    "invert",
+]
 
 Value = float | Measured | tuple[float, float]
+
+#: The smallest step of the central differences, relative to the value: 1e-4 sigma below it
+#: would round away (``value + h == value``, a 0/0 derivative); at it the derivative keeps
+#: about 7 digits.
+MIN_STEP = 1e-9
 
 
 def _core(
@@ -53,15 +70,19 @@ def _core(
     g: float,
     travel: bool = False,
 ) -> tuple[Any, Any, Any, Any]:
-    """(T, F, valid, stuck) for arrays of inputs (magnitudes; ``dv_cy`` may be absent); ``stuck``
-    marks alpha >= 0: the sticking regime (mu >= mu_c), or a patch's travel that turns."""
+    """(T, F, valid, stuck) for arrays of inputs (magnitudes; ``dv_cy`` and ``vt_in`` may be
+    absent); ``stuck`` marks alpha >= 0: the sticking regime (mu >= mu_c), or a patch's travel
+    that turns."""
     th, mu = x["angle"], x["mu"]
     *_, K_y, al, mu_c = coefficients(th, mu, m, L, R, inertia, travel)
     vi, dp, ls = x["v_i"], x["delta_p"], x["sliding_length"]
     stuck = (mu >= mu_c) | (al >= 0) if travel else mu >= mu_c
     valid = (th >= 0) & (th <= HALF_PI) & (mu >= 0) & ~stuck & (vi > 0) & (dp >= 0) & (ls > 0)
     with np.errstate(all="ignore"):
-        T = duration_from_dent(dp, ls, vi, np.abs(al), gravity, g)
+        # the tip's incoming tangential velocity vt_in <= 0 (docs/analytic.md, Sec. 5)
+        vi_t = vi - x["vt_in"] / np.abs(al) if "vt_in" in x else vi
+        valid = valid & (vi_t > 0)
+        T = duration_from_dent(dp, ls, vi_t, np.abs(al), gravity, g)
         if "dv_cy" in x:
             valid = valid & (x["dv_cy"] > 0)
             F = m * x["dv_cy"] / T + (m * g if gravity else 0.0)
@@ -77,12 +98,14 @@ def _sensitivities(
     meas: Mapping[str, Measured], nominal: Mapping[str, Any], core: Any
 ) -> tuple[dict[str, float], dict[str, float]]:
     """dT/dx and dF/dx for every input: central differences with steps scaled to each sigma (or
-    value), one-sided at delta_p = 0."""
+    value), one-sided at delta_p = 0. The step is at least ``MIN_STEP`` of the value (or of 1e-9
+    where it is smaller): a sigma below the value's rounding moves nothing."""
     sens_T: dict[str, float] = {}
     sens_F: dict[str, float] = {}
     for k in meas:
-        v = meas[k].value
-        h = 1e-4 * meas[k].sigma if meas[k].sigma > 0 else 1e-6 * max(abs(v), 1e-9)
+        v, sigma = meas[k].value, meas[k].sigma
+        scale = max(abs(v), 1e-9)
+        h = max(1e-4 * sigma, MIN_STEP * scale) if sigma > 0 else 1e-6 * scale
         if k in ("delta_p",) and v - h < 0:  # one-sided at the boundary
             lo, hi = v, v + h
         else:
@@ -109,9 +132,11 @@ def _nominal_coefficients(
     """(K_x, K_y, alpha, mu_c) at the nominal angle and mu; ValueError in the sticking regime
     and where the contact patch's travel does not point towards -x."""
     th = meas["angle"].value
-    _, _, _, K_x, K_y, al, mu_c = (
-        float(v) for v in coefficients(th, meas["mu"].value, m, L, R, inertia, travel)
-    )
+    with np.errstate(all="ignore"):  # a rod's extreme values: refused below, not warned
+        _, _, _, K_x, K_y, al, mu_c = (
+            float(v) for v in coefficients(th, meas["mu"].value, m, L, R, inertia, travel)
+        )
+    check_coefficients(K_x, K_y, al, {"mass": m, "length": L, "tip_radius": R, "inertia": inertia})
     check_sliding(np.float64(meas["mu"].value), np.float64(mu_c), np.float64(th))
     if travel and al >= 0:
         raise ValueError(
@@ -202,6 +227,7 @@ def invert(
     sliding_length: Value,
     e: Value | None = None,
     dv_cy: Value | None = None,
+    vt_in: Value = 0.0,
     rod: Rod | None = None,
     gravity: bool = False,
     measure: str = "slip",
@@ -214,10 +240,12 @@ def invert(
     Each measured input is a number (exact) or a ``(value, sigma)`` pair / :class:`Measured`
     (sigma = standard deviation, same unit; inputs are treated as independent). A number is SI;
     a dimensional value may also be a string with units (``"22 um"``, ``"20 deg"``) or a pint
-    Quantity of any registry; mu and e are plain numbers.
+    Quantity of any registry, and then a bare sigma beside it is in its unit, as on the command
+    line (``("45 deg", 0.2)``: 0.2 deg; ``("22 um", 2)``: 2 um); mu and e are plain numbers.
 
     angle : rod-to-flat angle [rad], in (0, pi/2).
-    v_i : vertical tip velocity before the impact [m/s]; sign ignored (the paper writes -1.41).
+    v_i : vertical tip velocity before the impact [m/s]; sign ignored (the paper writes -1.41);
+        |v_i| >= 1e-6 m/s (``MIN_SPEED``).
     mu : friction coefficient over the impact (Eq. 28, e.g. from
         :func:`friction_from_velocities`), >= 0 and < mu_c(angle) (gross sliding).
     delta_p : permanent dent depth [m], a magnitude of at least 1 nm (the paper prints -22e-6;
@@ -228,6 +256,14 @@ def invert(
     dv_cy : measured change of the centre-of-mass vertical velocity over the impact [m/s], upward
         positive; when given, F comes from Eq. 29 (F T = m dv_Cy) and the rigid-body identity is
         reported alongside as ``F_rigid``.
+    vt_in : incoming tangential velocity [m/s], signed along +x (towards the centre of mass), of
+        the point whose displacement ``sliding_length`` is: the contact point, v_Cx + b omega
+        (spin included; ``analyze``'s ``v_tip_in[0]``), for ``"slip"``; the tip sphere's centre,
+        v_Cx + (b - R) omega, for ``"travel"``. Default 0 (the paper: no tangential velocity, no
+        spin; left out of ``inputs``). Eq. 12 then reads T = (delta_p + |L_s|/|alpha|) /
+        (|v_i| - vt_in/|alpha|), exact for vt_in <= 0 (docs/analytic.md); for vt_in > 0 the
+        sliding reverses, and beyond 3 sigma a warning gives the bounds of T; vt_in >=
+        |alpha| |v_i| is refused.
     rod : an ``impactlab.bodies.Rod``; default the paper's rod (``impactlab.bodies.PAPER_ROD``).
     gravity : include gravity during the contact (adds g T^2 / 2 to Eq. 12 and the gravity impulse
         to Eq. 29); False reproduces the paper's equations.
@@ -240,11 +276,15 @@ def invert(
     than the rod's tip radius, a sliding length longer than the rod (impossible: most likely a
     unit mistake), the sticking regime (mu >= mu_c), where the dent does not fix T, and a sigma
     of e or the angle wider than a quarter of its range ([0, 1], (0, pi/2)): it spans the
-    whole range. ImplausibleInputWarning for a dent shallower than 0.1 um or
-    deeper than a tenth of the tip radius, |v_i| or dv_cy above 100 m/s, a nominal duration
+    whole range; also a required input given as None, and a rod or inputs whose K_x, K_y, T, F
+    or uncertainties over- or underflow (named, never returned as inf, NaN or 0).
+    ImplausibleInputWarning for a dent shallower than 0.1 um or deeper than a tenth of the tip
+    radius, |v_i| below 1 mm/s, |v_i| or dv_cy above 100 m/s, a nominal duration
     above 0.1 s, a Monte Carlo that discards more than 5 % of its samples (``mc_rejected``;
     ``mc_used`` samples kept), or any sample in the sticking regime: T has a heavy tail there,
-    its Monte Carlo mean and standard deviation are unreliable, its median and interval are not.
+    its Monte Carlo mean and standard deviation are unreliable, its median and interval are not;
+    and for an ill-conditioned T: |d ln T/d ln mu| or |d ln T/d ln angle| above 10
+    (``CONDITION_LIMIT``), near mu_c or 90 deg, where alpha -> 0.
 
     Returns an :class:`InversionResult` with ``duration`` and ``mean_force``, their first-order
     and Monte Carlo uncertainties (mean, standard deviation, median, 95 % interval), alpha, K_x,
@@ -257,11 +297,13 @@ def invert(
     inputs = {"angle": angle, "v_i": v_i, "mu": mu, "delta_p": delta_p}
 
     def compute() -> InversionResult:
-        meas = measurements({**inputs, "sliding_length": sliding_length, "e": e, "dv_cy": dv_cy})
+        given = {**inputs, "sliding_length": sliding_length, "e": e, "dv_cy": dv_cy}
+        meas = measurements({**given, "vt_in": vt_in})
         opt = _options(n_samples, seed, gravity, g, measure)
         m, L, R, inertia = _scalar_rod(rod)
         check_plausible(meas, L, R)
         coef = _nominal_coefficients(meas, m, L, R, inertia, opt["travel"])
+        check_direction(meas, abs(coef[2]), opt["gravity"], opt["g"])
         rod_ = {"mass": m, "length": L, "tip_radius": R, "inertia": inertia}
         return _result(meas, opt, rod_, coef, measure)
 
@@ -310,31 +352,31 @@ def _result(
     )
     nominal = {k: np.float64(v.value) for k, v in meas.items()}
     T0_a, F0_a, ok, _ = core(nominal)
+    T0 = float(T0_a)
+    check_finite_result({"duration": T0, "mean_force": float(F0_a)}, meas, rod)
     if not bool(ok):  # pragma: no cover - guarded by the checks above
         raise ValueError("the inputs give no valid inversion")
-    T0 = float(T0_a)
-    if T0 > PLAUSIBLE_DURATION:
-        warn_implausible(
-            f"the inverted duration T = {T0:.4g} s exceeds {PLAUSIBLE_DURATION:g} s, far longer "
-            "than a rigid-body impact; check the units of the inputs (SI)"
-        )
     sens_T, sens_F = _sensitivities(meas, nominal, core)
     sT_lin, sF_lin = _linear_sigmas(meas, sens_T, sens_F)
+    check_finite_result({"sigma_T_linear": sT_lin, "sigma_F_linear": sF_lin}, meas, rod)
     varied = any(v.sigma > 0 for v in meas.values())
     K_x, K_y, al, mu_c = coef
+    check_duration(T0, check_conditioning(meas, sens_T, T0, al, mu_c))
     F_rig, F_mom = _forces(meas, m, K_y, T0, opt["gravity"], opt["g"])
     if "dv_cy" in meas:
         _check_momentum(meas, m, K_y, T0, opt["g"] if opt["gravity"] else 0.0)
+    mc = (
+        monte_carlo(meas, opt["n_samples"], opt["seed"], core)
+        if varied
+        else point_distribution(T0, float(F0_a))
+    )
+    check_finite_result(mc, meas, rod)
     return InversionResult(
         duration=T0,
         mean_force=float(F0_a),
         sigma_T_linear=sT_lin,
         sigma_F_linear=sF_lin,
-        **(
-            monte_carlo(meas, opt["n_samples"], opt["seed"], core)
-            if varied
-            else point_distribution(T0, float(F0_a))
-        ),
+        **mc,
         n_samples=opt["n_samples"],
         seed=opt["seed"],
         alpha=al,

@@ -6,8 +6,11 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
+import numpy as np
+
 from impactlab._display import field_row, field_rows, format_number, html_table
 from impactlab._validation import check_finite, check_nonnegative
+from impactlab.units import has_unit, parse_quantity
 
 __all__ = ["MC_INTERVAL", "InversionResult", "Measured", "measured"]
 
@@ -37,6 +40,7 @@ _INPUT_UNITS = {
     "delta_p": "m",
     "sliding_length": "m",
     "dv_cy": "m/s",
+    "vt_in": "m/s",
 }
 
 
@@ -55,7 +59,9 @@ class Measured:
 def measured(name: str, x: Any, unit: str = "") -> Measured:
     """``x`` (a number, a ``(value, sigma)`` pair or a :class:`Measured`) as :class:`Measured`;
     with a ``unit``, value and sigma may also be strings with units or pint Quantities
-    (``impactlab._validation``). ValueError naming ``name``."""
+    (``impactlab._validation``). A bare number is SI, except a bare sigma beside a value given
+    with its unit: that sigma is in the value's unit, as on the command line
+    (``("45 deg", 0.2)`` is 0.2 deg, ``("22 um", 2)`` 2 um). ValueError naming ``name``."""
     if isinstance(x, Measured):
         return x
     if isinstance(x, tuple | list):
@@ -64,7 +70,22 @@ def measured(name: str, x: Any, unit: str = "") -> Measured:
         v, s = x
     else:
         v, s = x, 0.0
-    return Measured(check_finite(name, v, unit), check_nonnegative(f"the sigma of {name}", s, unit))
+    value = check_finite(name, v, unit)
+    if unit and has_unit(v) and _bare_number(s):
+        s = float(s) * _unit_of(name, v, unit)  # in the value's unit
+    return Measured(value, check_nonnegative(f"the sigma of {name}", s, unit))
+
+
+def _bare_number(x: Any) -> bool:
+    """A real number without a unit (not a bool, a string or a Quantity)."""
+    return isinstance(x, int | float | np.integer | np.floating) and not isinstance(x, bool)
+
+
+def _unit_of(name: str, value: Any, unit: str) -> Any:
+    """The unit of ``value`` (a string with units, or a pint Quantity of any registry)."""
+    if isinstance(value, str):
+        return parse_quantity(name, value, unit).units
+    return value.units
 
 
 @dataclass(frozen=True)
@@ -86,7 +107,8 @@ class InversionResult:
     "rigid-body identity"); ``F_momentum``, ``F_rigid`` (each None when its input is missing);
     ``gravity``; ``measure`` ("slip" or "travel", what the sliding length measures); ``inputs``
     (name -> (value, sigma) in SI, magnitudes as used: ``angle``, ``v_i``, ``mu``, ``delta_p``,
-    ``sliding_length``, ``e``, ``dv_cy``); ``rod`` (mass, length, tip_radius, inertia);
+    ``sliding_length``, ``e``, ``dv_cy``, and ``vt_in``, signed, where not 0); ``rod`` (mass,
+    length, tip_radius, inertia);
     ``sensitivity_T``, ``sensitivity_F`` (partial derivatives with respect to each input, SI);
     ``warnings``: the texts of the inversion's ImplausibleInputWarnings (as ``impactlab invert
     --json`` lists them; ``()`` for none). ``print(result)`` and Jupyter's table show the
@@ -245,7 +267,7 @@ class InversionResult:
             "  "
             + ", ".join(
                 [pm("angle"), pm("v_i", "|v_i|"), pm("mu")]
-                + [pm(k) for k in ("e", "dv_cy") if k in ins]
+                + [pm(k) for k in ("e", "dv_cy", "vt_in") if k in ins]
             ),
             f"  {pm('delta_p', '|delta_p|')}, {pm('sliding_length', '|L_s|')}",
             f"  alpha = {format_number(self.alpha)}, mu_c = {format_number(self.mu_c)}, "

@@ -181,6 +181,9 @@ _HELP = {
     "-1400 um; required unless --case or --file gives it).",
     "dv_cy": "Change of the centre-of-mass vertical velocity ('0.62 m/s'; bare number: m/s; "
     "optional): F from Eq. 29.",
+    "vt_in": "Tangential velocity of the tip before the impact, along +x towards the centre of "
+    "mass, spin included ('-0.3 m/s'; bare number: m/s; default 0, the paper's assumption; the "
+    "sign matters).",
 }
 
 
@@ -216,6 +219,7 @@ def invert_cmd(
     delta_p: str | None = _measured_option("delta_p"),
     ls: str | None = _measured_option("L_s"),
     dv_cy: str | None = _measured_option("dv_cy"),
+    vt_in: str | None = _measured_option("vt_in"),
     sigma_angle: str | None = _measured_option("angle", sigma=True),
     sigma_vi: str | None = _measured_option("v_i", sigma=True),
     sigma_e: str | None = _measured_option("e", sigma=True),
@@ -223,6 +227,7 @@ def invert_cmd(
     sigma_delta_p: str | None = _measured_option("delta_p", sigma=True),
     sigma_ls: str | None = _measured_option("L_s", sigma=True),
     sigma_dv_cy: str | None = _measured_option("dv_cy", sigma=True),
+    sigma_vt_in: str | None = _measured_option("vt_in", sigma=True),
     mass: str | None = rod_option("mass"),
     length: str | None = rod_option("length"),
     tip_radius: str | None = rod_option("tip_radius"),
@@ -257,7 +262,8 @@ def invert_cmd(
         None,
         "--flat",
         help="Flat material preset (e.g. aisi-1010; with --case the paper's flat): also "
-        "simulate the impact (ghaednia law, the measured angle, v_i and mu) and warn when T "
+        "simulate the impact (ghaednia law, the measured angle, v_i, vt_in and mu; no spin) "
+        "and warn when T "
         "or F is more than 3 times off.",
     ),
     as_json: bool = typer.Option(False, "--json", help="Machine-readable output (SI)."),
@@ -270,8 +276,9 @@ def invert_cmd(
     Example: impactlab invert --angle "20 deg" --vi "-1.41 m/s" --e 0.5 --mu 0.2
     --delta-p "22 um" --ls "1400 um" --sigma-ls "50 um"
     """
-    inputs = (angle, vi, e, mu, delta_p, ls, dv_cy)
-    sigmas = (sigma_angle, sigma_vi, sigma_e, sigma_mu, sigma_delta_p, sigma_ls, sigma_dv_cy)
+    inputs = (angle, vi, e, mu, delta_p, ls, dv_cy, vt_in)
+    sigmas = (sigma_angle, sigma_vi, sigma_e, sigma_mu, sigma_delta_p, sigma_ls, sigma_dv_cy,
+              sigma_vt_in)  # fmt: skip
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", ImplausibleInputWarning)
         res, given = run_invert(
@@ -318,8 +325,9 @@ def _inversion_warnings(caught: list[warnings.WarningMessage]) -> list[str]:
 
 
 def _compare_with_engine(res: InversionResult, flat: str) -> tuple[dict[str, Any], list[str]]:
-    """The impact simulated with the measured angle, tip velocity v_i (no spin) and mu on
-    ``flat``, and the warnings of ``experiment.consistency`` on the inferred T and F."""
+    """The impact simulated with the measured angle, tip velocity (vt_in, v_i) (no spin: the
+    centre of mass moves with the tip) and mu on ``flat``, and the warnings of
+    ``experiment.consistency`` on the inferred T and F."""
     from impactlab.dynamics import simulate  # lazy: a fast CLI start
     from impactlab.experiment.consistency import check_against_model
     from impactlab.materials import get_material
@@ -334,8 +342,8 @@ def _compare_with_engine(res: InversionResult, flat: str) -> tuple[dict[str, Any
     law = "ghaednia"
     try:
         r = simulate(body, material, law=law, mu=res.inputs["mu"][0],
-                     angle=res.inputs["angle"][0], velocity=(0.0, -abs(res.inputs["v_i"][0])),
-                     history=False)  # fmt: skip
+                     angle=res.inputs["angle"][0], velocity=(res.inputs.get("vt_in", (0.0,))[0],
+                     -abs(res.inputs["v_i"][0])), history=False)  # fmt: skip
     except ValueError as exc:
         raise UserError(f"--flat: the simulated impact failed: {exc}") from None
     model: dict[str, Any] = {"law": law, "flat": material.name}

@@ -44,6 +44,7 @@ FIELDS: dict[str, tuple[str, tuple[str, ...], str]] = {
     "delta_p": ("m", ("delta_p", "delta-p"), "--delta-p"),
     "L_s": ("m", ("ls", "L_s", "l_s", "sliding_length", "sliding-length"), "--ls"),
     "dv_cy": ("m/s", ("dv_cy", "dv-cy"), "--dv-cy"),
+    "vt_in": ("m/s", ("vt_in", "vt-in"), "--vt-in"),
 }
 ALIAS = {k: name for name, (_, keys, _) in FIELDS.items() for k in keys}
 #: input name -> keyword of impactlab.analytic.invert, where they differ
@@ -57,9 +58,15 @@ IN_FILE = "in the measurement file"
 #: a number and what follows it (its unit) in a command-line value
 _NUMBER_AND_UNIT = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?\s*(.*)")
 #: a unit to show in the example of an error about a bare sigma
-EXAMPLE_UNITS = {"v_i": "m/s", "delta_p": "um", "L_s": "um", "dv_cy": "m/s"}
+EXAMPLE_UNITS = {"v_i": "m/s", "delta_p": "um", "L_s": "um", "dv_cy": "m/s", "vt_in": "m/s"}
 #: a sigma with its unit, for the help
-EXAMPLE_SIGMAS = {"v_i": "0.01 m/s", "delta_p": "0.5 um", "L_s": "50 um", "dv_cy": "0.005 m/s"}
+EXAMPLE_SIGMAS = {
+    "v_i": "0.01 m/s",
+    "delta_p": "0.5 um",
+    "L_s": "50 um",
+    "dv_cy": "0.005 m/s",
+    "vt_in": "0.005 m/s",
+}
 
 
 def _inversion_angle(value: Any, name: str) -> float:

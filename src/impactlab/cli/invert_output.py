@@ -3,6 +3,7 @@ JSON of docs/json-schema.md and the table in display units."""
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from typing import Any
 
@@ -11,6 +12,7 @@ import typer
 from impactlab._display import field_row, field_rows
 from impactlab._json import quantity as quantity_json
 from impactlab._json import to_json
+from impactlab._version import __version__
 from impactlab.analytic import InversionResult
 from impactlab.analytic.inversion import MC_REJECTED_WARNING
 from impactlab.analytic.result import MC_INTERVAL
@@ -25,6 +27,7 @@ INPUT_UNITS = {
     "delta_p": "m",
     "sliding_length": "m",
     "dv_cy": "m/s",
+    "vt_in": "m/s",
 }
 #: The sigma of each output: output -> its field in InversionResult.
 _SIGMAS = {
@@ -50,8 +53,11 @@ def inversion_json(res: InversionResult) -> dict[str, Any]:
     and 95 % intervals, its counts (``n_samples``, ``mc_used``: integers; ``mc_rejected``: the
     share discarded), the inputs as the inversion used them (``res.inputs``: SI, magnitudes of
     ``v_i``, ``delta_p`` and ``sliding_length``), the rod and the sensitivities, derivatives
-    with respect to those same inputs, each with its unit."""
+    with respect to those same inputs, each with its unit; a force that does not exist
+    (``F_momentum`` without a measured dv_cy) is a quantity of value null; the
+    ``impactlab_version``."""
     data = {k: v for k, v in res.to_dict().items() if k not in _SIGMAS.values()}
+    data |= {k: math.nan for k in ("F_momentum", "F_rigid") if data.get(k, 0.0) is None}
     sigmas = {k: getattr(res, name) for k, name in _SIGMAS.items()}
     data["inputs"] = {
         k: quantity_json(float(v), INPUT_UNITS[k], s) for k, (v, s) in res.inputs.items()
@@ -61,6 +67,7 @@ def inversion_json(res: InversionResult) -> dict[str, Any]:
         data[f"sensitivity_{out}"] = {
             k: quantity_json(float(d), _per(unit, INPUT_UNITS[k])) for k, d in sens.items()
         }
+    data["impactlab_version"] = __version__
     return to_json(data, _UNITS, sigmas)  # type: ignore[no-any-return]
 
 

@@ -7,10 +7,11 @@ never lost; an invalid argument raises a TypeError or ValueError naming it at on
 2. ``scan``: read the scan, measure the dent (:func:`measure_dent`) and check that the rod can
    make it (:func:`~impactlab.experiment.profilometry.plausibility.check_dent`);
 3. ``inversion``: T and F from both (``impactlab.analytic.invert``: paper Eq. 12 with the
-   measured e, mu, v_i, angle, delta_p, L_s; F from Eq. 29 with the measured centre-of-mass
-   velocity change); an impact that sticks within the measurement's uncertainty (mu within a
-   few sigma of mu_c, or no tangential exit velocity of the tip: ``experiment.sticking``) is
-   this stage's error instead;
+   measured e, mu, v_i, the tip's incoming tangential velocity ``vt_in``, angle, delta_p (the
+   dent's maximum depth), L_s; F from Eq. 29 with the measured centre-of-mass velocity
+   change); an impact that sticks within the measurement's uncertainty (mu within a few sigma
+   of mu_c, or no tangential exit velocity of the tip: ``experiment.sticking``) is this
+   stage's error instead;
 4. ``model`` (optional, with ``flat``): the impact engine run with the measured initial state, for
    comparison (the paper's Tables 2-3); then a warning for an inferred T or F far from the
    simulated impact's, or a T longer than the marker fits allow (``experiment.consistency``);
@@ -122,6 +123,7 @@ def _inversion_stage(
                 mu=k.mu.pair(),
                 e=k.e.pair(),
                 dv_cy=k.dv_cy.pair(),
+                vt_in=k.v_tip_in[0].pair(),  # the tip's incoming tangential velocity
                 delta_p=d.delta_p.pair(),
                 sliding_length=d.sliding_length.pair(),
                 rod=rod,
