@@ -277,6 +277,9 @@ PHYSICS_ROWS = {
     "rigid rod (`simulate`)": "rigid rod",
     "flexible rod (`FlexibleRod.paper()`, `simulate_drop`)": "flexible rod",
     "flexible + Cowper-Symonds flat": "flexible rod + rate-dependent flat",
+    "flexible + Johnson-Cook flat": (
+        "flexible rod + rate-dependent flat (Johnson-Cook, lower estimate)"
+    ),
     "flexible + FE-tabulated law, hardening flat (AISI 1010's own)": (
         "flexible rod + FE-tabulated law (hardening flat)"
     ),

@@ -30,7 +30,8 @@ plastic (truncation) geometry a^2 = 2 R delta (a da/dt = R d delta/dt):
 eps_dot = 0.2 (da/dt) / R = 0.2 (d delta/dt) / a ~ 0.2 |v_n0| / a_m, with v_n0 the tip's normal
 approach speed at first touch and a_m the contact radius at the largest interference of the
 first contact (the law's own radius). Since a_m depends on k, k is found by a fixed-point
-iteration (:func:`self_consistent_factor`).
+iteration (:func:`self_consistent_factor`, in :mod:`impactlab.contact.rate_factor`: it warns
+where it does not converge and refuses a factor that would raise a yield strength above E).
 """
 
 from __future__ import annotations
@@ -39,20 +40,30 @@ import dataclasses
 import math
 import numbers
 import re
-from collections.abc import Callable, Mapping
+import warnings
+from collections.abc import Mapping
 from dataclasses import dataclass
 from itertools import accumulate
 
-from impactlab._validation import check_nonnegative, check_positive
+from impactlab._validation import ImplausibleInputWarning, check_nonnegative, check_positive
+from impactlab.contact.rate_factor import (
+    BODY_MARGIN,
+    RateFactor,
+    RateFactorWarning,
+    RateLimit,
+    self_consistent_factor,
+    tabor_strain_rate,
+)
 from impactlab.materials import Material
 from impactlab.references import REFERENCES, Reference
 from impactlab.units import magnitude, to_si
 
 __all__ = [
     "COWPER_SYMONDS_MILD_STEEL", "JOHNSON_COOK_1006_STEEL", "LOW_CARBON_STEEL", "RATE_CONSTANTS",
-    "RATE_EXAMPLES", "RATE_LAWS", "RATE_REFERENCES", "FittedFor", "RateFactor", "RateLaw",
-    "check_rate_flat", "constants_text", "cowper_symonds", "get_rate_law", "johnson_cook",
-    "rate_constant", "rate_materials", "self_consistent_factor", "shortest", "tabor_strain_rate",
+    "RATE_EXAMPLES", "RATE_LAWS", "RATE_REFERENCES", "FittedFor", "RateFactor",
+    "RateFactorWarning", "RateLaw", "RateLimit", "check_rate_flat", "constants_text",
+    "cowper_symonds", "get_rate_law", "johnson_cook", "rate_constant", "rate_materials",
+    "self_consistent_factor", "shortest", "tabor_strain_rate",
 ]  # fmt: skip
 
 #: The sources of the rate-dependent flat (to be merged into ``impactlab.references``).
@@ -85,7 +96,10 @@ def cowper_symonds(rate: float, D: float = 40.4, q: float = 5.0) -> float:
     [1/s]; D [1/s], q [1]."""
     if rate <= 0.0:
         return 1.0
-    return 1.0 + (rate / D) ** (1.0 / q)
+    try:
+        return 1.0 + (rate / D) ** (1.0 / q)
+    except OverflowError:  # beyond any float: the caller refuses an infinite factor
+        return math.inf
 
 
 def johnson_cook(rate: float, C: float = 0.022, rate0: float = 1.0) -> float:
@@ -235,12 +249,15 @@ class RateLaw:
         return johnson_cook(rate, p["C"], p["rate0"])
 
     @property
+    def text(self) -> str:
+        """The law's name with its constants: ``"cowper-symonds (D = 40.4 1/s, q = 5)"``."""
+        return f"{self.name} ({constants_text(self.name, dict(self.parameters))})"
+
+    @property
     def label(self) -> str:
         """The law's name where it is the library's law of that name, else the name with its
         constants (``"cowper-symonds (D = 6500 1/s, q = 4)"``): what a result shows."""
-        if RATE_LAWS.get(self.name) == self:
-            return self.name
-        return f"{self.name} ({constants_text(self.name, dict(self.parameters))})"
+        return self.name if RATE_LAWS.get(self.name) == self else self.text
 
     @property
     def references(self) -> tuple[Reference, ...]:
@@ -330,71 +347,32 @@ def check_rate_flat(law: RateLaw, flat: Material) -> None:
         )
 
 
-def tabor_strain_rate(v: float, a: float, factor: float = 0.2) -> float:
-    """Characteristic contact strain rate ``factor`` |v| / a [1/s] for an approach speed v
-    [m/s] and a contact radius a [m] (``factor`` = 0.2: Tabor; 1 gives the cruder v / a)."""
-    check_positive("a", a, "m")
-    return check_nonnegative("factor", factor) * abs(v) / a
-
-
 def rate_materials(body: Material, flat: Material, k: float) -> tuple[Material, Material]:
     """(body, flat) with the flat's yield strength multiplied by k >= 1.
 
     impactlab's contact pair takes the smaller yield strength of the two bodies; a rate-raised
     flat can exceed the rod's static yield strength, but the rod is rate-sensitive too, so its
-    static value is no cap: the body's yield strength is raised to 1.5 times the flat's where
-    needed (only the flat yields, as the measured dents say). The Brinell hardness (Brake's
-    law) scales with the yield strength of the same material: hardness is a flow stress at
-    Tabor's representative strain (H ~ 2.8 sigma_r; D. Tabor, The Hardness of Metals, 1951), so
-    a rate factor on the flow stress is one on the hardness."""
+    static value is no cap: the body's yield strength is raised to ``BODY_MARGIN`` (1.5) times
+    the flat's where needed (only the flat yields, as the measured dents say). A yield strength
+    at or above its E is refused (ValueError; ``rate_factor.RateLimit`` gives the largest k);
+    the materials' plausibility warnings are not issued for these derived copies. The Brinell
+    hardness (Brake's law) scales with the yield strength of the same material: hardness is a
+    flow stress at Tabor's representative strain (H ~ 2.8 sigma_r; D. Tabor, The Hardness of
+    Metals, 1951), so a rate factor on the flow stress is one on the hardness."""
     k = check_positive("k", k)
-    flat_k = dataclasses.replace(
-        flat,
-        name=f"{flat.name} x{k:.4g} (rate)",
-        yield_strength=k * flat.yield_strength,
-        brinell_hardness=k * flat.brinell_hardness,
-    )
-    if body.yield_strength <= flat_k.yield_strength:
-        f = 1.5 * flat_k.yield_strength / body.yield_strength
-        body = dataclasses.replace(
-            body,
-            yield_strength=f * body.yield_strength,
-            brinell_hardness=f * body.brinell_hardness,
+    with warnings.catch_warnings():  # derived, not given: "check the units" would mislead
+        warnings.simplefilter("ignore", ImplausibleInputWarning)
+        flat_k = dataclasses.replace(
+            flat,
+            name=f"{flat.name} x{k:.4g} (rate)",
+            yield_strength=k * flat.yield_strength,
+            brinell_hardness=k * flat.brinell_hardness,
         )
+        if body.yield_strength <= flat_k.yield_strength:
+            f = BODY_MARGIN * flat_k.yield_strength / body.yield_strength
+            body = dataclasses.replace(
+                body,
+                yield_strength=f * body.yield_strength,
+                brinell_hardness=f * body.brinell_hardness,
+            )
     return body, flat_k
-
-
-@dataclass(frozen=True)
-class RateFactor:
-    """The self-consistent rate factor: ``k`` [1], the strain rate [1/s], the contact radius
-    a_m [m] it was computed from and the number of fixed-point iterations."""
-
-    k: float
-    strain_rate: float
-    contact_radius: float
-    iterations: int
-
-
-def self_consistent_factor(
-    run: Callable[[float], float],
-    law: RateLaw,
-    vn0: float,
-    strain_factor: float = 0.2,
-    tol: float = 1e-4,
-    max_iter: int = 12,
-) -> RateFactor:
-    """Fixed point k = law.factor(strain_factor |vn0| / a_m(k)).
-
-    ``run(k)`` simulates with the flat's yield strength multiplied by k and returns a_m [m],
-    the contact radius at the largest interference of the first contact; ``vn0`` [m/s] is the
-    normal approach speed. Stops when k changes by less than ``tol`` k."""
-    k = 1.0
-    rate = a_m = math.nan
-    for it in range(1, max_iter + 1):
-        a_m = run(k)
-        rate = tabor_strain_rate(vn0, a_m, strain_factor)
-        k_new = law.factor(rate)
-        if abs(k_new - k) <= tol * k:
-            return RateFactor(k_new, rate, a_m, it)
-        k = k_new
-    return RateFactor(k, rate, a_m, max_iter)

@@ -31,11 +31,13 @@ from impactlab.contact.ranges import extrapolation, range_status
 from impactlab.contact.rate import (
     RateFactor,
     RateLaw,
+    RateLimit,
     check_rate_flat,
     get_rate_law,
     rate_materials,
     self_consistent_factor,
 )
+from impactlab.contact.rate_factor import warn_no_dent
 from impactlab.dynamics.checks import check_brake_meyer
 from impactlab.dynamics.drop_body import BodyModel, body_model
 from impactlab.dynamics.drop_checks import (
@@ -176,7 +178,8 @@ def _rate_model(
     vn0: float,
 ) -> tuple[ContactModel, RateFactor | None]:
     """The contact model, with the flat's yield strength raised by the self-consistent rate
-    factor when there is a rate law (``impactlab.contact.rate``)."""
+    factor when there is a rate law (``impactlab.contact.rate``; a factor that would raise a
+    yield strength above its E is refused in one line, ``rate_factor.RateLimit``)."""
     if rate_law is None:
         return contact_model(body, flat, law, law_params), None
     if not isinstance(law, str):
@@ -194,7 +197,7 @@ def _rate_model(
             return build_contact_model(law, body_k, flat_k, body.tip_radius, law_params)
         except ValueError as exc:
             raise ValueError(
-                f"rate {rate_law.name!r}: with the flat's yield strength and hardness raised by "
+                f"rate {rate_law.label!r}: with the flat's yield strength and hardness raised by "
                 f"the rate factor k = {k:.4g}, the {law!r} law rejects the pair: {exc}"
             ) from None
 
@@ -202,7 +205,8 @@ def _rate_model(
         model = build(k)
         return _first_contact_radius(run(model), model)
 
-    factor = self_consistent_factor(contact_radius, rate_law, vn0)
+    limit = RateLimit.of(body.material, flat)
+    factor = self_consistent_factor(contact_radius, rate_law, vn0, limit=limit)
     return build(factor.k), factor
 
 
@@ -226,6 +230,8 @@ def _result(
     ratio, ratio_max = extrapolation(model.law_id, model.params, o["delta_max"])
     skip = {"vx_out", "vy_out", "n_contacts", "next_end", "n_steps", "n_jumps", "n_dents"}
     skip |= {"t_final"}
+    flags = drop_flags(r.out, e0, m, inputs["gravity"], rtol, model, r.contacts,
+                       bm.rigid.tip_radius, brittle_limit)  # fmt: skip
     return DropResult(
         contacts=tuple(ContactRecord.from_row(row) for row in r.contacts),
         dents=tuple(DentRecord.from_row(row) for row in r.dents),
@@ -241,17 +247,7 @@ def _result(
         rate_factor=rate[1].k if rate[1] is not None else 1.0,
         strain_rate=rate[1].strain_rate if rate[1] is not None else math.nan,
         history=DropHistory(r.history) if r.history is not None else None,
-        flags=drop_flags(
-            r.out,
-            e0,
-            m,
-            inputs["gravity"],
-            rtol,
-            model,
-            r.contacts,
-            bm.rigid.tip_radius,
-            brittle_limit,
-        ),
+        flags=flags,
         max_delta_ratio=ratio,
         fitted_delta_ratio_max=ratio_max,
         fitted_range_status=range_status(model.law_id, model.params),
@@ -339,10 +335,7 @@ def simulate_drop(
     vx, vy = check_velocity(velocity)
     w = check_spin(check_finite("spin", spin, "rad/s"), contact_reach(bm.rigid))
     g = gravity_value(gravity)
-    options = (
-        drop_rtol(rtol, fric),
-        *check_stop(stop, t_max),
-    )
+    options = (drop_rtol(rtol, fric), *check_stop(stop, t_max))
     record_history = check_flag("history", history)
     vn0 = vy - w * bm.rigid.half_length * math.cos(th)
     if not vn0 < 0.0:
@@ -389,6 +382,11 @@ def simulate_drop(
     name = rate_law.label if rate_law is not None else None
     limit = brittle_pressure(bm.rigid.material, flat)
     result = _result(r, bm, model, inputs, (name, factor), tuple(dict.fromkeys(refs)), limit)
+    if rate_law is not None and factor is not None:  # a rate law that removes the dent: say so
+        onsets = (contact_model(bm.rigid, flat, law, law_params).yield_onset[0],
+                  model.yield_onset[0])  # fmt: skip
+        warn_no_dent(rate_law, factor, flat.yield_strength, onsets, result.dent_depth,
+                     result.delta_max)  # fmt: skip
     # what was simulated, checked, for DropResult.input (``dynamics.provenance``)
     drop_options = {"rate": rate_law, "stop": stop, "t_max": options[1]}
     call = (body, flat, law, law_params, g, None, options[0], drop_options, SIMULATE_DROP)

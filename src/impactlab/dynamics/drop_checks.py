@@ -219,8 +219,8 @@ def status_error(status: int, model: ContactModel, out: np.ndarray | None = None
         F.ST_TMAX: f"{where}: raise {{t_max}}",
         F.ST_MAX_STEPS: f"{where} (the limit: {F.DROP_MAX_STEPS}; with partial slip "
         f"{F.PARTIAL_STEP_FACTOR} times the steps of its Mindlin pre-pass, at least "
-        f"{F.PARTIAL_MIN_STEPS}): a long, creeping contact (resting, rocking or rolling); try "
-        "{friction}='mindlin'",
+        f"{F.PARTIAL_MIN_STEPS}): a long, creeping contact (resting, rocking or rolling), or "
+        "modes too stiff for the step (a very stiff body: fewer modes); try {friction}='mindlin'",
         F.ST_MISSED_CONTACT: f"{where}: lower {{rtol}}",
         F.ST_STEP_UNDERFLOW: f"{where}: the integrator could not meet {{rtol}}",
     }

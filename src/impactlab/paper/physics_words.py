@@ -1,6 +1,8 @@
 """Wording helpers of the section "Can physics explain the experiment?"
 (:mod:`impactlab.paper.physics_report`): a configuration's numbers by angle, lists of angles,
-and the size and direction of the change in the dent depth."""
+the size and direction of the change in the dent depth, the verdicts (what the flexible rod
+explains, within which tolerance and under which rate law), the bullet of the contacts and the
+figure's mark of an extrapolated drop."""
 
 from __future__ import annotations
 
@@ -9,7 +11,31 @@ import math
 import numpy as np
 import pandas as pd
 
-from impactlab.paper.physics import MEASURED
+from impactlab.paper.calibration_report import PAPER_SIGMAS
+from impactlab.paper.physics import (
+    CONFIGURATIONS,
+    E_COLUMN,
+    LAW,
+    MEASURED,
+    RATE_LOWER,
+    SCAR_COLUMN,
+    SEQUENCE_COLUMN,
+    T_COLUMN,
+)
+from impactlab.paper.quantities import reference_of
+
+#: The compared columns of e, the mark's extent and Eq. 12's T (``physics.E_COLUMN``, ...).
+E, SCAR, T = E_COLUMN, SCAR_COLUMN, T_COLUMN
+#: The rigid rod, the flexible rod and the flexible rod on the Cowper-Symonds flat (upper
+#: estimate of the rate effect), and on the Johnson-Cook flat (lower estimate).
+RIGID, FLEX, RATE = (c.name for c in CONFIGURATIONS)
+LOWER = RATE_LOWER.name
+#: The rows whose verdicts the section draws, and how a verdict names each.
+WITH = {
+    FLEX: "without rate dependence",
+    RATE: "with the upper estimate of the rate constants (Cowper-Symonds)",
+    LOWER: "with the lower estimate of the rate constants (Johnson-Cook)",
+}
 
 
 def series(table: pd.DataFrame, config: str, column: str) -> np.ndarray:
@@ -80,3 +106,184 @@ def dent_effect(factor: np.ndarray, chosen: list[int], none: float, large: float
     if "unknown" in groups:
         clauses.append(f"have no dent to compare {at(groups['unknown'], every)}")
     return clauses[0] if len(clauses) == 1 else f"{', '.join(clauses[:-1])}, and {clauses[-1]}"
+
+
+#: Within how much of a measured value a simulated one explains it, by column (tolerance,
+#: relative): the standard uncertainties the calibration of the next section assumes
+#: (``PAPER_SIGMAS``: e absolute, delta_p and L_s relative) and, for T, which it does not use
+#: (Eq. 12's, from the dent and scar), the lengths' relative one. Not tuned to the table.
+TOLERANCES: dict[str, tuple[float, bool]] = {
+    "delta_p [um]": (PAPER_SIGMAS["delta_p"], True),
+    E: (PAPER_SIGMAS["e"], False),
+    SCAR: (PAPER_SIGMAS["scar_length"], True),
+    T: (PAPER_SIGMAS["scar_length"], True),
+}
+#: Each compared column in the sentences.
+NOUNS = {
+    "delta_p [um]": "the dent depth",
+    E: "e",
+    SCAR: "the scar",
+    T: "the duration",
+}
+
+
+def present(table: pd.DataFrame) -> tuple[str, ...]:
+    """The rows of :data:`WITH` that ``table`` holds, in that order."""
+    return tuple(n for n in WITH if (table["configuration"] == n).any())
+
+
+def distances(table: pd.DataFrame, column: str) -> tuple[np.ndarray, dict[str, np.ndarray]]:
+    """Per angle the measured ``column`` and, by row of :func:`present`, its distance from it
+    (relative or absolute, as its tolerance; NaN where the row has no number)."""
+    relative = TOLERANCES[column][1]
+    measured = series(table, MEASURED, column)
+    out: dict[str, np.ndarray] = {}
+    for name in present(table):
+        v = series(table, name, column)
+        out[name] = np.abs(v / measured - 1.0) if relative else np.abs(v - measured)
+    return measured, out
+
+
+def inside(off: np.ndarray, column: str) -> np.ndarray:
+    """Where a distance ``off`` lies within ``column``'s tolerance (NaN: not)."""
+    return np.asarray(off <= TOLERANCES[column][0] * (1.0 + 1e-9))
+
+
+def closeness(table: pd.DataFrame, column: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Per angle the measured ``column``, the nearest value of the flexible rod on the plain
+    flat or a rate-dependent one (either estimate; :data:`WITH`) and whether it lies within
+    its tolerance."""
+    measured, offs = distances(table, column)
+    values = np.stack([series(table, n, column) for n in offs])
+    off = np.stack(list(offs.values()))
+    pick = (np.argmin(np.where(np.isnan(off), np.inf, off), axis=0), np.arange(values.shape[1]))
+    return measured, values[pick], inside(off[pick], column)
+
+
+def only_with(rows: tuple[str, ...], shown: tuple[str, ...]) -> str:
+    """Which of the ``shown`` rows (of :data:`WITH`) explain, when not all: " only with the
+    upper estimate of the rate constants (Cowper-Symonds)"; ``""`` when each does."""
+    if set(rows) == set(shown):
+        return ""
+    if set(rows) == {RATE, LOWER}:
+        return " only with rate dependence (either estimate of its constants)"
+    return " only " + listed([WITH[r] for r in rows], "or")
+
+
+def which(table: pd.DataFrame, column: str, ok: list[int]) -> str:
+    """Under which rate law the flexible rod explains ``column`` at the angles ``ok``: ``""``
+    where each row of :data:`WITH` does, " only with ..." where some do, and angle by angle,
+    " (at 20 deg only ...; at 70 deg ...)", where that differs between them."""
+    _m, offs = distances(table, column)
+    every = angles(table)
+    groups: dict[tuple[str, ...], list[int]] = {}
+    for i, a in enumerate(every):
+        if a in ok:
+            rows = tuple(n for n, off in offs.items() if inside(off[i], column))
+            groups.setdefault(rows, []).append(a)
+    if len(groups) == 1:
+        return only_with(next(iter(groups)), tuple(offs))
+    parts = [
+        f"{at(a, len(every))}{only_with(r, tuple(offs)) or ' with each'}" for r, a in groups.items()
+    ]
+    return f" ({'; '.join(parts)})"
+
+
+def nowhere(table: pd.DataFrame, column: str) -> str:
+    """The sentences of the rate laws under which the flexible rod explains ``column`` at no
+    angle: " With the lower estimate of the rate constants (Johnson-Cook) they explain it at
+    no angle (1.43 / 2.11 / 1.48 times the measured one)."."""
+    measured, offs = distances(table, column)
+    out = ""
+    for name in (RATE, LOWER):
+        if name in offs and not inside(offs[name], column).any():
+            how = off_text(column, measured, series(table, name, column))
+            said = WITH[name][0].upper() + WITH[name][1:]
+            out += f" {said} they explain it at no angle ({how})."
+    return out
+
+
+def off_text(column: str, measured: np.ndarray, near: np.ndarray) -> str:
+    """How far ``near`` lies from ``measured``: "1.55 times the measured one" (a relative
+    tolerance) or "0.724 / 0.602 against 0.5 / 0.49"."""
+    if TOLERANCES[column][1]:
+        return f"{' / '.join(f'{r:.3g}' for r in near / measured)} times the measured one"
+    ours, theirs = (" / ".join(f"{v:.3g}" for v in x) for x in (near, measured))
+    return f"{ours} against the measured {theirs}"
+
+
+def verdict(table: pd.DataFrame, column: str) -> tuple[list[int], list[int], str]:
+    """The angles at which flexibility and rate dependence explain ``column`` (within its
+    tolerance), those at which they do not, and how far the nearest value lies at the latter."""
+    measured, near, close = closeness(table, column)
+    every = angles(table)
+    ok = [a for a, c in zip(every, close, strict=True) if c]
+    bad = [a for a, c in zip(every, close, strict=True) if not c]
+    return ok, bad, off_text(column, measured[~close], near[~close])
+
+
+def sentence(table: pd.DataFrame, column: str) -> tuple[str, bool]:
+    """Whether flexibility and rate dependence explain ``column`` and under which rate law, in
+    words, and True when they do at one angle at least."""
+    ok, bad, miss = verdict(table, column)
+    every, what = len(ok) + len(bad), NOUNS[column]
+    within = f"within {tol(column)}"
+    who = "Flexibility and rate dependence"
+    if not ok:
+        return f"{who} do not explain {what} at any angle (none {within}; nearest: {miss}).", False
+    head = f"{who} explain {what} {at(ok, every)} ({within}){which(table, column, ok)}"
+    if bad:
+        head += f", not {at(bad, every)} ({miss})"
+    return f"{head}.{nowhere(table, column)}", True
+
+
+def tol(column: str) -> str:
+    """The tolerance of ``column`` in words: "10 %" or "0.03"."""
+    tol, relative = TOLERANCES[column]
+    return f"{tol * 100:g} %" if relative else f"{tol:g}"
+
+
+def rings(table: pd.DataFrame) -> tuple[str, bool]:
+    """The bullet of the flexible rod's contacts against the rigid rod's (over the sequence's
+    duration, first touch to last separation), and whether it is explained: the flexible rod
+    touches the flat again (rings) at one angle at least."""
+    rigid, flex = (c.name for c in CONFIGURATIONS[:2])
+    seq = SEQUENCE_COLUMN
+
+    def v(config: str, column: str) -> str:
+        return values(table, config, column)
+
+    every, n = angles(table), series(table, flex, "contacts")
+    again = [a for a, k in zip(every, n > 1, strict=True) if k]
+    once = [a for a, k in zip(every, n == 1, strict=True) if k]
+    theirs = f"{v(rigid, 'contacts')} contacts over {v(rigid, seq)} ms"
+    if (series(table, rigid, "contacts") == 1).all():
+        theirs = f"one contact of {v(rigid, seq)} ms"
+    ours = f"{v(flex, 'contacts')} contacts over {v(flex, seq)} ms"
+    if not again:
+        head = f"The flexible rod does not touch the flat again: {ours} against the rigid rod's"
+    elif once:
+        head = (
+            f"The flexible rod rings and touches the flat again {at(again, len(every))} (once "
+            f"{at(once, len(every))}): {ours} instead of the rigid rod's"
+        )
+    else:  # the rigid rod's single contact: "instead of one contact of ..."
+        head = f"The flexible rod rings and touches the flat again: {ours} instead of"
+        head += "" if theirs.startswith("one") else " the rigid rod's"
+    f_flex, f_rigid = (series(table, c, "F_max [N]") for c in (flex, rigid))
+    way = "falls" if (f_flex < f_rigid).all() else "rises" if (f_flex > f_rigid).all() else "goes"
+    return (
+        f"{head} {theirs}; the largest force {way} from {v(rigid, 'F_max [N]')} N to "
+        f"{v(flex, 'F_max [N]')} N.",
+        bool(again),
+    )
+
+
+def drop_flag(table: pd.DataFrame) -> str:
+    """The caption's mark when the figure's drop (flexible rod, 20 deg) left its law's verified
+    range: ``; extrapolated: 43 delta_c (LAW_EXTRAPOLATED)``; ``""`` otherwise."""
+    rows = table[(table["configuration"] == CONFIGURATIONS[1].name) & (table["angle [deg]"] == 20)]
+    if rows.empty or "LAW_EXTRAPOLATED" not in str(rows.iloc[0]["flags"]):
+        return ""
+    ratio = float(rows.iloc[0]["max_delta_ratio"])
+    return f"; extrapolated: {ratio:.0f} {reference_of(LAW)} (LAW_EXTRAPOLATED)"

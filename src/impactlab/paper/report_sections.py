@@ -111,7 +111,10 @@ def _experimental(d: ReportData) -> list[Block]:
             "identity F T = (1 + e)|v_i| / K_y because the paper does not print the measured "
             "centre-of-mass velocities that Eq. 29 needs. Variants: with gravity "
             "((g/2) T^2 added to Eq. 12, g T to the impulse) and with L_s read as the "
-            "travel of the contact patch instead of the slip."
+            "travel of the contact patch instead of the slip. At 70 deg the paper reads the "
+            "profile (Fig. 8) as sliding at the beginning and sticking or rolling at the end, "
+            "while Eq. 12 assumes sliding throughout: that row is the method applied outside "
+            "its assumption, an estimate rather than a measured duration."
         ),
         Table(d.experimental, "Experimental rows", digits=4),
     ]

@@ -178,7 +178,9 @@ def _sim_vs_experiment(simtab: pd.DataFrame, exp: pd.DataFrame) -> list[Block]:
         out.append(
             Para(
                 "The paper's Sec. 5.2-5.3 statements about 70 deg (its Table 4 is "
-                "missing), checked with impactlab's Table 4:"
+                "missing), checked with impactlab's Table 4 (its experimental T is Eq. 12's, "
+                "which assumes sliding throughout; the paper reads this dent as sliding, then "
+                "sticking or rolling):"
             )
         )
         out.append(Bullets(tuple(f"{t}: {'yes' if ok else 'no'}" for t, ok in checks)))
