@@ -75,12 +75,12 @@ def _row(model, diff, dse):
 
 
 def test_the_ranking_says_what_is_not_distinguishable_or_not_converged():
-    posts = {"a": _post(False), "b": _post(True), "c": _post(True, 0.9)}
+    posts = {"a": _post(False), "b": _post(True), "c": _post(True, 0.6)}
     rows = annotate([_row("a", 0.0, 0.0), _row("b", 0.27, 1.98), _row("c", 9.0, 2.0)], posts)
     assert [r["distinguishable"] for r in rows] == [False, False, True]
     assert rows[0]["note"] == "not distinguishable (elpd_diff < 2 dse); not converged"
     assert rows[1]["note"] == "not distinguishable (elpd_diff < 2 dse)"
-    assert rows[2]["note"] == "" and rows[2]["pareto_k_max"] == 0.9
+    assert rows[2]["note"] == "" and rows[2]["pareto_k_max"] == 0.6
     assert [r["converged"] for r in rows] == [False, True, True]
     clear = annotate([_row("b", 0.0, 0.0), _row("c", 9.0, 2.0)], posts)
     assert clear[0]["distinguishable"] is True and clear[0]["note"] == ""

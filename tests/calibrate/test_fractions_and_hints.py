@@ -88,11 +88,11 @@ def test_a_drop_that_measures_nothing_is_refused(tmp_path):
     path.write_text(
         "label,angle [deg],vy [m/s],mu,e,e_sigma\na,20,-1.4,0.15,0.4,0.01\nb,45,-1.4,0.15,,\n"
     )
-    with pytest.raises(ValueError, match=r"^drop 2 \(b\)") as info:
+    with pytest.raises(ValueError, match=r": line 3: drop 2 \(b\)") as info:
         read_measurements(path)
     assert str(info.value) == (
-        "drop 2 (b) has no measured value: give e with its uncertainty where it was measured, "
-        "or leave the drop out"
+        f"{path}: line 3: drop 2 (b) has no measured value: give e with its uncertainty where "
+        "it was measured, or leave the drop out"
     )
     recs = [
         {"label": "a", "angle": "20 deg", "vy": -1.4, "e": 0.4, "e_sigma": 0.01},

@@ -80,7 +80,7 @@ def _rec(**kw):
     [
         ({"e_sigma": None}, "e = 0.3 has no standard uncertainty"),
         ({"e_sigma": 0}, "e_sigma must be finite and > 0"),
-        ({"e": 1.3}, r"e = 1.3 lies outside the possible range \[0, 1\]"),
+        ({"e": 1.3}, r"e = 1.3 lies outside the possible range \[0, 1.014\d*\] by more than 3"),
         ({"vy": 1.4}, "vy = 1.4 m/s must be < 0"),
         ({"vy": None}, "the drop needs 'vy'"),
         ({"law": "hertz"}, "'law' is not a property of a drop"),

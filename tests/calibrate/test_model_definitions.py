@@ -166,7 +166,7 @@ def test_the_settings_hold_the_engine_and_the_models(template):
     hb = {"flat_brinell_hardness": {"value": 105.0, "unit": "kgf/mm^2"}, "damping": {
         "value": 0.05, "unit": "1"}}  # fmt: skip
     assert parse_model({"fixed": hb}).fixed == {"flat_brinell_hardness": 105.0, "damping": 0.05}
-    assert doc["models"]["sy300"]["parameters"]["mu"]["tau"]["unit"] == "steps"
+    assert doc["models"]["sy300"]["parameters"]["mu"]["tau"]["unit"] == "1"
     saved = doc["settings"]["model_definitions"]["brake/coulomb"]
     assert saved["law_params"] == {"hardness": {"value": 105.0, "unit": "kgf/mm^2"},
                                    "meyer_index": {"value": 2.2, "unit": "1"}}  # fmt: skip

@@ -100,12 +100,14 @@ def test_a_measured_angle_needs_a_unit():
 def test_a_measured_angle_lies_in_0_to_180_deg():
     """Its errors speak in degrees, as the file writes an angle (not in rad, nor bare)."""
     with pytest.raises(ValueError, match=r"angle_out = 1145.92 deg lies outside the possible "
-                       r"range \[0, 180\] deg \(the rod's angle to the flat at separation, in "
+                       r"range \[0, 180\] deg by more than 3 sigma \(angle_out_sigma = 1 deg; "
+                       r".*\) \(the rod's angle to the flat at separation, in "
                        r"\[0, 180\] deg"):  # fmt: skip
         _one(angle_out="20 rad", angle_out_sigma="1 deg")
     with pytest.raises(ValueError, match=r": angle_out = 190 deg lies outside the possible "
-                       r"range \[0, 180\] deg \("):  # fmt: skip
+                       r"range \[0, 180\] deg by more than 3 sigma \("):  # fmt: skip
         _one(angle_out="190 deg", angle_out_sigma="1 deg")
+    assert _one(angle_out="182 deg", angle_out_sigma="1 deg").n_values == 1  # noise
     with pytest.raises(ValueError, match=r"angle_out = -5 deg lies outside"):
         _one(angle_out="-5 deg", angle_out_sigma="1 deg")
     with pytest.raises(ValueError, match=r": angle_out_sigma = 400 deg is wider than the whole "

@@ -32,7 +32,14 @@ from impactlab.calibrate.model_specs import model_definition, parse_model
 from impactlab.calibrate.models import CandidateModel
 from impactlab.calibrate.posterior import LogPosterior
 from impactlab.calibrate.priors import Parameter
-from impactlab.calibrate.ranking import NOT_CONVERGED, NOT_DISTINGUISHABLE, rank_models
+from impactlab.calibrate.ranking import (
+    ELPD_DIFF_MIN,
+    NOT_CONVERGED,
+    NOT_DISTINGUISHABLE,
+    SMALL_DIFFERENCE,
+    UNRELIABLE_LOO,
+    rank_models,
+)
 from impactlab.calibrate.result import ONE_DROP, ModelPosterior, summarise
 from impactlab.calibrate.sampler import ProgressFn, run_chain
 from impactlab.calibrate.statelock import state_lock
@@ -42,10 +49,11 @@ from impactlab.sweep.inputs import INPUTS
 
 __all__ = ["REFERENCES", "Calibration", "CalibrationWarning", "calibrate", "parse_model"]
 
-#: The methods' sources: the affine-invariant ensemble and emcee, PSIS-LOO, ArviZ and its R-hat.
+#: The methods' sources: the affine-invariant ensemble and emcee, PSIS-LOO, ArviZ and its R-hat,
+#: the ranking's stacking weights and its rule for small elpd differences.
 REFERENCES = cite(
     "goodman-weare-2010", "foreman-mackey-2013", "vehtari-2017", "kumar-2019-arviz",
-    "vehtari-2021-rhat",
+    "vehtari-2021-rhat", "yao-2018-stacking", "sivula-2020-loo-uncertainty",
 )  # fmt: skip
 
 
@@ -79,7 +87,9 @@ class Calibration:
     @property
     def best_caveats(self) -> list[str]:
         """Why ``best`` may not be the model the data single out: its elpd does not differ from
-        the runner-up's by 2 dse (``"not distinguishable (elpd_diff < 2 dse)"``), one drop
+        the runner-up's by 2 dse (``"not distinguishable (elpd_diff < 2 dse)"``) or by 4
+        (``"not distinguishable (elpd_diff < 4)"``), either model has a drop with Pareto
+        k > 0.7 (``"not distinguishable (Pareto k > 0.7: PSIS-LOO unreliable)"``), one drop
         cannot rank the models (``"not distinguishable (one drop: PSIS-LOO does not rank)"``),
         or its chain has not converged (``"not converged"``); empty when none."""
         if not self.ranking:
@@ -321,21 +331,40 @@ def _best_warnings(ranking: Sequence[Mapping[str, Any]]) -> list[str]:
     """Why the best-ranked model may not be the one the data single out."""
     if not ranking:
         return []
-    best, out = ranking[0], []
-    if NOT_DISTINGUISHABLE in best["note"]:
-        other = ranking[1]
-        why = (
-            f"elpd_diff {other['elpd_diff']:.2f} < 2 dse ({2 * other['dse']:.2f})"
-            if other["dse"] > 0
-            else f"elpd_diff {other['elpd_diff']:.2f} has no standard error (dse 0) to judge it"
-        )
-        out.append(
-            f"the best-ranked model {best['model']!r} is not distinguishable from "
-            f"{other['model']!r}: {why}; the data do not single out one model"
-        )
+    best = ranking[0]
+    out = _not_distinguishable(best, ranking[1]) if len(ranking) > 1 else []
     if NOT_CONVERGED in best["note"]:
         out.append(
             f"the best-ranked model {best['model']!r} has not converged: its rank and "
             "posterior may change with more steps"
         )
     return out
+
+
+def _not_distinguishable(best: Mapping[str, Any], other: Mapping[str, Any]) -> list[str]:
+    """The warning (or none) that ``best`` is not distinguishable from the runner-up
+    ``other``, with each reason its note names."""
+    why = []
+    if NOT_DISTINGUISHABLE in best["note"]:
+        why.append(
+            f"elpd_diff {other['elpd_diff']:.2f} < 2 dse ({2 * other['dse']:.2f})"
+            if other["dse"] > 0
+            else f"elpd_diff {other['elpd_diff']:.2f} has no standard error (dse 0) to judge it"
+        )
+    if SMALL_DIFFERENCE in best["note"]:
+        why.append(
+            f"elpd_diff {other['elpd_diff']:.2f} < {ELPD_DIFF_MIN:g}: too small for its dse to "
+            "be trusted (Sivula et al. 2020, arXiv:2008.10296)"
+        )
+    if UNRELIABLE_LOO in best["note"]:
+        ks = ", ".join(f"{r['model']!r} {r['pareto_k_max']:.2f}" for r in (best, other))
+        why.append(
+            f"PSIS-LOO is unreliable for a drop (Pareto k max {ks}; above 0.7 a drop's elpd "
+            "may be off by as much as the difference)"
+        )
+    if not why:
+        return []
+    return [
+        f"the best-ranked model {best['model']!r} is not distinguishable from "
+        f"{other['model']!r}: {'; '.join(why)}; the data do not single out one model"
+    ]

@@ -8,6 +8,7 @@ from collections.abc import Mapping
 from typing import Any
 
 from impactlab._json import jsonable, quantity
+from impactlab._version import __version__
 from impactlab.calibrate.api import Calibration
 from impactlab.calibrate.result import ModelPosterior
 from impactlab.contact import get_law
@@ -26,7 +27,7 @@ def _model(post: ModelPosterior) -> dict[str, Any]:
             "prior": p.describe(),
             **{k: quantity(s[k], p.unit) for k in ("median", "mean", "sd", "q05", "q95")},
             **{k: quantity(s[k], _ONE) for k in ("rhat", "ess_bulk")},
-            "tau": quantity(s["tau"], "steps"),
+            "tau": quantity(s["tau"], _ONE),  # in steps of the chain
             "best": quantity(post.best[p.name], p.unit),
         }
     loo: dict[str, Any] = {k: quantity(v, _ONE) for k, v in post.loo.items() if k != "n_bad_k"}
@@ -117,6 +118,7 @@ def calibration_json(cal: Calibration) -> dict[str, Any]:
     m = cal.measurements
     return jsonable(
         {
+            "impactlab_version": __version__,
             "measurements": {
                 "source": m.source,
                 "drops": list(m.labels),

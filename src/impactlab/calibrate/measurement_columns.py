@@ -56,7 +56,12 @@ def split_header(key: str) -> tuple[str, str | None]:
 
 def column_kind(where: str, name: str) -> tuple[str, str]:
     """(what the column is: "label", "category", "input", "sigma", "value", its canonical
-    name); ValueError for a column a drop does not take (with the nearest name)."""
+    name); ValueError for a column a drop does not take (with the nearest name) and for a
+    column without a name."""
+    if not name.strip():
+        raise ValueError(
+            f"{where}: a column has an empty name ({name!r}); name the column, or leave it out"
+        )
     if name in LABEL_KEYS:
         return "label", "label"
     if name in ("law", "friction"):

@@ -28,9 +28,15 @@ from impactlab.calibrate.measurement_columns import (
     resolve_units,
     split_header,
 )
-from impactlab.calibrate.quantities import ANGLES, MEASURABLE, PLAUSIBLE
+from impactlab.calibrate.quantities import (
+    ANGLES,
+    E_GRAVITY_DURATION,
+    MEASURABLE,
+    NOISE_SIGMAS,
+    PLAUSIBLE,
+)
 from impactlab.calibrate.values import bare, to_unit
-from impactlab.materials import PRESETS
+from impactlab.materials import G0, PRESETS
 from impactlab.sweep.dimensions import check_allowed, check_rod_angles
 from impactlab.sweep.inputs import INPUTS, UNIT_REQUIRED
 
@@ -289,13 +295,7 @@ def _check_row(where: str, row: Row, nan: set[str]) -> None:
         if not (math.isfinite(s) and s > 0.0):
             got = f"{math.degrees(s):g} deg" if q in ANGLES else repr(s)
             raise ValueError(f"{where}: {q}_sigma must be finite and > 0, got {got}")
-        m = MEASURABLE[q]
-        if (m.low is not None and x < m.low) or (m.high is not None and x > m.high):
-            (shown, u), low, high = _angle(q, x), _bound(m.low, -math.inf), _bound(m.high, math.inf)
-            raise ValueError(
-                f"{where}: {q} = {shown:g}{u} lies outside the possible range "
-                f"[{_angle(q, low)[0]:g}, {_angle(q, high)[0]:g}]{u} ({m.description})"
-            )
+        _check_range(where, row, q, x, s)
         if q == "e_t" and row.inputs.get("vx", 0.0) == 0.0:
             raise ValueError(f"{where}: e_t needs a drop with vx != 0")
     _check_magnitudes(where, row)
@@ -303,6 +303,32 @@ def _check_row(where: str, row: Row, nan: set[str]) -> None:
 
 def _bound(x: float | None, open_end: float) -> float:
     return open_end if x is None else x
+
+
+def _check_range(where: str, row: Row, q: str, x: float, s: float) -> None:
+    """A measured value ``x`` (uncertainty ``s``) more than NOISE_SIGMAS sigma outside its
+    quantity's possible range is refused; within, it is noise and used as measured. The
+    range of e ends at 1 + g T/|vy|: its gravity impulse (T: E_GRAVITY_DURATION, or the drop's
+    measured duration when longer)."""
+    m = MEASURABLE[q]
+    low, high, what = _bound(m.low, -math.inf), _bound(m.high, math.inf), m.description
+    if q == "e":
+        t = max(E_GRAVITY_DURATION, row.observed.get("duration", 0.0))
+        high += G0 * t / abs(row.inputs["vy"])
+        what = (
+            "e, the normal COR with the gravity impulse of the contact removed, (v_n,out + g T)"
+            f"/|v_n,in|, reaches 1 + g T/|vy|: g = {G0:g} m/s^2, T = {t * 1e3:g} ms (the longer "
+            f"of {E_GRAVITY_DURATION * 1e3:g} ms and the drop's measured duration)"
+        )
+    if low - NOISE_SIGMAS * s <= x <= high + NOISE_SIGMAS * s:
+        return
+    (shown, u), sd = _angle(q, x), _angle(q, s)[0]
+    raise ValueError(
+        f"{where}: {q} = {shown:g}{u} lies outside the possible range "
+        f"[{_angle(q, low)[0]:g}, {_angle(q, high)[0]:g}]{u} by more than {NOISE_SIGMAS:g} "
+        f"sigma ({q}_sigma = {sd:g}{u}; within {NOISE_SIGMAS:g} sigma a value is read as "
+        f"measurement noise) ({what})"
+    )
 
 
 def _check_inputs(where: str, row: Row) -> None:

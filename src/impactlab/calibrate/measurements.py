@@ -81,11 +81,7 @@ class Measurements:
     ) -> Measurements:
         """Measurements from rows (column -> value); ``units``: column -> unit of its bare
         numbers. ValueError naming the row and column for anything not understood."""
-        if not records:
-            raise ValueError(f"{source or 'measurements'}: no drops (rows) found")
-        table = resolve_units(units or {})
-        rows = [parse_row(i, r, table) for i, r in enumerate(records)]
-        return _assemble(rows, source)
+        return _from_records(records, units, source)
 
     def table(self) -> Any:
         """One row per drop (pandas DataFrame, the units of ``inputs``, ``observed``)."""
@@ -150,7 +146,8 @@ def read_measurements(path: str | Path) -> Measurements:
         raise FileNotFoundError(f"measurements file not found: {p}")
     suffix = p.suffix.lower()
     if suffix == ".csv":
-        return Measurements.from_records(csv_records(p), source=str(p))
+        numbered = csv_records(p)
+        return _from_records([r for _, r in numbered], None, str(p), lines=[n for n, _ in numbered])
     if suffix == ".toml":
         try:
             doc = tomllib.loads(read_text(p, "TOML"))
@@ -171,6 +168,28 @@ def read_measurements(path: str | Path) -> Measurements:
     raise ValueError(f"measurements file must end in .csv or .toml, got {p.name!r}")
 
 
+def _from_records(
+    records: Sequence[Mapping[str, Any]],
+    units: Mapping[str, str] | None,
+    source: str | None,
+    lines: Sequence[int] | None = None,
+) -> Measurements:
+    """``Measurements.from_records``; ``lines``: the file's line of each record, which an
+    error then names (``"m.csv: line 3: drop 2 (b): ..."``)."""
+    if not records:
+        raise ValueError(f"{source or 'measurements'}: no drops (rows) found")
+    table = resolve_units(units or {})
+    rows = []
+    for i, r in enumerate(records):
+        try:
+            rows.append(parse_row(i, r, table))
+        except ValueError as exc:
+            if lines is None:
+                raise
+            raise ValueError(f"{source}: line {lines[i]}: {exc}") from None
+    return _assemble(rows, source, lines)
+
+
 def _refuse_nan(path: Path, drops: Sequence[Any]) -> None:
     """A TOML drop leaves out what it did not measure: ``nan`` is refused, naming the key."""
     for i, drop in enumerate(drops):
@@ -184,7 +203,9 @@ def _refuse_nan(path: Path, drops: Sequence[Any]) -> None:
                 )
 
 
-def _assemble(rows: Sequence[Row], source: str | None) -> Measurements:
+def _assemble(
+    rows: Sequence[Row], source: str | None, lines: Sequence[int] | None = None
+) -> Measurements:
     labels = tuple(r.label for r in rows)
     dup = {x for x in labels if labels.count(x) > 1}
     if dup:
@@ -202,9 +223,11 @@ def _assemble(rows: Sequence[Row], source: str | None) -> Measurements:
         raise ValueError(f"{source or 'measurements'}: no measured quantity in any drop")
     for d, r in enumerate(rows):  # it would add nothing but zeros to the model ranking
         if not r.observed:
+            line = "" if lines is None else f"{source}: line {lines[d]}: "
             raise ValueError(
-                f"drop {d + 1} ({r.label}) has no measured value: give {' or '.join(names)} "
-                "with its uncertainty where it was measured, or leave the drop out"
+                f"{line}drop {d + 1} ({r.label}) has no measured value: give "
+                f"{' or '.join(names)} with its uncertainty where it was measured, or leave the "
+                "drop out"
             )
     observed = {q: np.array([r.observed.get(q, math.nan) for r in rows]) for q in names}
     sigma = {q: np.array([r.sigma.get(q, math.nan) for r in rows]) for q in names}

@@ -8,11 +8,13 @@ as it is, so that a drop every model predicts poorly (elpd below about -745) und
 its log to -inf, and the optimiser stops at its start (equal weights). Why a cross-validated
 score rather than the evidence: it asks how well a model predicts a drop it was not fitted to,
 it does not depend on the width of a uniform prior that the evidence penalises, and it comes
-from the same chain. With few drops its standard errors are large: ``dse`` says whether a
-difference means anything (about 2 dse or more); each row says whether its model is
-distinguishable from the best and whether its chain converged. With one drop PSIS-LOO does
-not rank (leaving the drop out leaves no data; dse is 0): no model is distinguishable then,
-whatever the elpd_diff and the weights say."""
+from the same chain. With few drops its standard errors are large: a difference means
+something when it is at least 2 dse and 4 nats (below 4, dse itself is unreliable: Sivula,
+Magnusson, Matamoros & Vehtari, arXiv:2008.10296, 2020), and only where both models' PSIS-LOO
+holds (every Pareto k <= 0.7); each row says whether its model is distinguishable from the
+best and whether its chain converged. With one drop PSIS-LOO does not rank (leaving the drop
+out leaves no data; dse is 0): no model is distinguishable then, whatever the elpd_diff and
+the weights say."""
 
 from __future__ import annotations
 
@@ -118,20 +120,45 @@ def _pointwise(post: ModelPosterior, drops: int) -> np.ndarray:
 #: A difference of elpd smaller than this many of its standard errors does not tell two
 #: models apart.
 DSE_MULTIPLE = 2.0
+#: A difference of elpd [nats] below which two models are not told apart whatever its standard
+#: error: their predictions differ little, and dse is then poorly estimated (Sivula et
+#: al. 2020, arXiv:2008.10296).
+ELPD_DIFF_MIN = 4.0
+#: The Pareto k above which a drop's PSIS-LOO elpd is unreliable (Vehtari, Gelman & Gabry
+#: 2017, doi:10.1007/s11222-016-9696-4): with such a drop in either model an elpd_diff is not
+#: trusted to tell them apart.
+PARETO_K_MAX = 0.7
 NOT_DISTINGUISHABLE = "not distinguishable (elpd_diff < 2 dse)"
+SMALL_DIFFERENCE = "not distinguishable (elpd_diff < 4)"
+UNRELIABLE_LOO = "not distinguishable (Pareto k > 0.7: PSIS-LOO unreliable)"
 #: The note of every row of a ranking over one drop.
 NOT_RANKED = "not distinguishable (one drop: PSIS-LOO does not rank)"
 NOT_CONVERGED = "not converged"
 
 
-def distinguishable(row: Mapping[str, Any], drops: int | None = None) -> bool:
-    """Whether a ranked model's elpd differs from the best's by at least DSE_MULTIPLE of its
-    standard error: never for a tie (elpd_diff 0), a standard error that is 0 or not a number
-    (nothing to judge the difference by), or fewer than 2 ``drops`` (None: not known)."""
+def _why_not(row: Mapping[str, Any], drops: int | None) -> str:
+    """Why a ranked row's elpd_diff does not tell it from the best (or ""): one ``drops``,
+    elpd_diff below DSE_MULTIPLE of its standard error (a tie, a dse that is 0 or not a number
+    too), or below ELPD_DIFF_MIN."""
     diff, dse = float(row["elpd_diff"]), float(row["dse"])
     if drops is not None and drops < 2:
-        return False
-    return diff > 0.0 and dse > 0.0 and diff >= DSE_MULTIPLE * dse
+        return NOT_RANKED
+    if not (diff > 0.0 and dse > 0.0 and diff >= DSE_MULTIPLE * dse):
+        return NOT_DISTINGUISHABLE
+    return SMALL_DIFFERENCE if diff < ELPD_DIFF_MIN else ""
+
+
+def distinguishable(row: Mapping[str, Any], drops: int | None = None) -> bool:
+    """Whether a ranked model's elpd differs from the best's by at least DSE_MULTIPLE of its
+    standard error and by ELPD_DIFF_MIN: never for a tie (elpd_diff 0), a standard error that
+    is 0 or not a number (nothing to judge the difference by), or fewer than 2 ``drops``
+    (None: not known). The Pareto k of the two models is ``annotate``'s."""
+    return not _why_not(row, drops)
+
+
+def _unreliable(post: Any) -> bool:
+    """Whether a model's PSIS-LOO has a drop with Pareto k > PARETO_K_MAX."""
+    return bool(float(post.loo.get("pareto_k_max", math.nan)) > PARETO_K_MAX)
 
 
 def annotate(
@@ -143,19 +170,25 @@ def annotate(
     """``rows`` (best first) with pareto_k_max, converged, law_extrapolated, distinguishable
     (from the best; the best's: from the runner-up; None for a single model, False for every
     row when there are fewer than 2 ``drops``, None: not known) and note (what makes the row's
-    place unsure: ``NOT_DISTINGUISHABLE`` or, over one drop, ``NOT_RANKED``; ``NOT_CONVERGED``;
+    place unsure: ``NOT_RANKED`` over one drop, ``NOT_DISTINGUISHABLE`` or
+    ``SMALL_DIFFERENCE``; ``UNRELIABLE_LOO`` when either model compared has a drop with
+    Pareto k > 0.7 (its elpd_diff is not trusted; ``distinguishable`` False); ``NOT_CONVERGED``;
     joined by "; ")."""
-    one = drops is not None and drops < 2
     for i, r in enumerate(rows):
         post = posteriors[r["model"]]
         r["pareto_k_max"] = float(post.loo.get("pareto_k_max", math.nan))
         r["converged"] = post.converged
         found = getattr(post, "law_extrapolated", None) or {}  # {}: not known
         r["law_extrapolated"] = float(found.get("share", math.nan))
-        other = rows[1] if i == 0 and len(rows) > 1 else r
-        r["distinguishable"] = None if len(rows) == 1 else distinguishable(other, drops)
-        why = NOT_RANKED if one else NOT_DISTINGUISHABLE
-        notes = [why] if r["distinguishable"] is False else []
+        notes = []
+        if len(rows) > 1:
+            other = rows[1] if i == 0 else r
+            why = _why_not(other, drops)
+            notes = [why] if why else []
+            pair = (rows[0]["model"], other["model"])
+            if why != NOT_RANKED and any(_unreliable(posteriors[n]) for n in pair):
+                notes.append(UNRELIABLE_LOO)
+        r["distinguishable"] = None if len(rows) == 1 else not notes
         notes += [] if post.converged else [NOT_CONVERGED]
         r["note"] = "; ".join(notes)
     return rows

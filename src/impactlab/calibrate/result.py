@@ -11,6 +11,7 @@ from typing import Any
 
 import emcee
 import numpy as np
+from scipy.special import logsumexp
 
 from impactlab.calibrate._arviz import az, quiet, recording
 from impactlab.calibrate.diagnostics import convergence_notes, misfit_text
@@ -127,25 +128,24 @@ class ModelPosterior:
 
 def _loo(idata: Any) -> tuple[dict[str, float], list[str], np.ndarray]:
     """PSIS-LOO over drops, each drop's elpd, and the notes to show: drops with Pareto k > 0.7,
-    one drop only, a result that is not finite. numpy's overflow warnings from inside ArviZ's
-    smoothing are dropped: ``exp`` of the differences of the Pareto fit's log likelihoods over
-    its grid (more than 709) gives that grid point the weight 0, its right limit (the loo
-    package computes the same in log space), and ``expm1`` of a tail with a shape k far above
-    0.7 gives weights that ArviZ truncates to the largest raw one; what they point at, a tail
-    the smoothing cannot tame, is the Pareto k note."""
+    one drop only, a result that is not finite. A drop whose log likelihood is the same at
+    every draw has its exact elpd and k = 0 (``_exact_drops``). numpy's overflow warnings
+    from inside ArviZ's smoothing are dropped: ``exp`` of the differences of the Pareto fit's
+    log likelihoods over its grid (more than 709) gives that grid point the weight 0, its
+    right limit (the loo package computes the same in log space), and ``expm1`` of a tail with
+    a shape k far above 0.7 gives weights that ArviZ truncates to the largest raw one; what
+    they point at, a tail the smoothing cannot tame, is the Pareto k note."""
     with recording() as caught:
         try:
             r = az.loo(idata, pointwise=True)
         except (ValueError, TypeError, IndexError) as exc:
             return {}, [f"PSIS-LOO failed: {exc}"], np.zeros(0)
-    k = np.asarray(r.pareto_k)
-    out = {
-        "elpd": float(r.elpd_loo),
-        "se": float(r.se),
-        "p_loo": float(r.p_loo),
-        "pareto_k_max": float(np.max(k)),
-        "n_bad_k": int(np.sum(k > 0.7)),
-    }
+    k = np.asarray(r.pareto_k, dtype=np.float64).ravel()
+    loo_i = np.asarray(r.loo_i, dtype=np.float64).ravel()
+    out = {"elpd": float(r.elpd_loo), "se": float(r.se), "p_loo": float(r.p_loo)}
+    _exact_drops(idata, k, loo_i, out)
+    out["pareto_k_max"] = float(np.max(k))
+    out["n_bad_k"] = int(np.sum(k > 0.7))
     notes = [f"PSIS-LOO: {out['n_bad_k']} drop(s) with Pareto k > 0.7"] if out["n_bad_k"] else []
     if not (math.isfinite(out["elpd"]) and math.isfinite(out["se"])):
         notes.append(
@@ -162,7 +162,31 @@ def _loo(idata: Any) -> tuple[dict[str, float], list[str], np.ndarray]:
             text = ONE_DROP
         if text not in notes:
             notes.append(text)
-    return out, notes, np.asarray(r.loo_i, dtype=np.float64).ravel()
+    return out, notes, loo_i
+
+
+#: A drop whose log likelihood spreads less than this over the draws [nats] has an exact
+#: leave-one-out density: its importance ratios are all 1 (within 1e-9).
+CONSTANT_LOG_LIK = 1e-9
+
+
+def _exact_drops(idata: Any, k: np.ndarray, loo_i: np.ndarray, out: dict[str, float]) -> None:
+    """The drops whose log likelihood is the same at every draw (a model with no free
+    parameter it uses: the rigid rod beside a free modal damping) have an exact leave-one-out
+    elpd, the log of that likelihood (p(y_i | y_-i) = p(y_i | theta) for every theta), where
+    ArviZ fits a Pareto tail to constant ratios and gives k = inf: set in ``k`` (to 0) and
+    ``loo_i`` in place, ``out``'s elpd, se and p_loo recomputed as ArviZ does."""
+    ll = np.asarray(idata.log_likelihood["drops"], dtype=np.float64)
+    ll = ll.reshape(-1, ll.shape[-1])
+    with np.errstate(invalid="ignore"):
+        flat = np.ptp(ll, axis=0) <= CONSTANT_LOG_LIK
+    if not flat.any() or ll.shape[1] != loo_i.size:
+        return
+    lppd = logsumexp(ll, axis=0) - math.log(ll.shape[0])
+    k[flat], loo_i[flat] = 0.0, lppd[flat]
+    out["elpd"] = float(loo_i.sum())
+    out["se"] = math.sqrt(loo_i.size * float(np.var(loo_i)))
+    out["p_loo"] = float(lppd.sum() - loo_i.sum())
 
 
 def _rerun(
