@@ -66,18 +66,21 @@ def test_info_json_counts_are_integers(cli_main: CliMain, finished: Any) -> None
     data = json.loads(out)
     assert shape_problems(data) == []
     assert data["chunks_done"] == 1 and data["chunks_total"] == 1
-    assert data["flagged"] == {"total": 7, "energy_gain": 2, "law_extrapolated": 7}
+    assert data["flagged"] == {"total": 7, "not_ok": 2, "energy_gain": 2, "law_extrapolated": 7}
     code, table, _ = cli_main("sweep", "info", str(finished.path))
-    assert code == 0 and "1 of 1" in table and "7 case(s)" in table
+    assert code == 0 and "1 of 1" in table and "2 case(s) not ok" in table
 
 
 def test_run_summary_json_counts_are_integers(finished: Any) -> None:
     summary = run_summary(finished, finished.dataset, None, [], as_json=True)
-    assert summary["flagged"] == {"total": 7, "energy_gain": 2, "law_extrapolated": 7}
+    assert summary["flagged"] == {"total": 7, "not_ok": 2, "energy_gain": 2, "law_extrapolated": 7}
     assert summary["throughput"] == pytest.approx(7 / finished.stats.wall_s)
     assert summary["cases_computed"] == 7
     text = run_summary(finished, finished.dataset, None, [], as_json=False)
-    assert text["flagged"] == "7 case(s) (energy gain: 2, law extrapolated (advisory): 7)"
+    assert text["flagged"] == (
+        "2 case(s) not ok (energy gain: 2); advisory (the result stays ok): "
+        "law extrapolated: 7; 7 flagged in all"
+    )
 
 
 @pytest.mark.parametrize(

@@ -41,7 +41,7 @@ def test_flags_are_stored_and_counted_although_not_kept(tmp_path) -> None:
     info = store_info(res.path)
     assert info["outputs"] == ["e", "flags"]
     # mu > 0.4: 2 of 7 values x 2 velocities; vy = -0.3: 7 cases; 2 cases have both
-    assert info["flagged"] == "9 case(s) (energy gain: 4, gravity-dominated: 7)"
+    assert info["flagged"] == "9 case(s) not ok (energy gain: 4, gravity-dominated: 7)"
 
 
 def test_run_summary_counts_flags(tmp_path, monkeypatch, capsys) -> None:
@@ -57,7 +57,7 @@ def test_run_summary_counts_flags(tmp_path, monkeypatch, capsys) -> None:
     main()
     summary = json.loads(capsys.readouterr().out)
     # hertz at 1.41 m/s is far beyond first yield: both cases extrapolate the law
-    assert summary["flagged"] == {"total": 2, "energy_gain": 1, "law_extrapolated": 2}
+    assert summary["flagged"] == {"total": 2, "not_ok": 1, "energy_gain": 1, "law_extrapolated": 2}
     ds = open_sweep(tmp_path / "ir.zarr").load()
     gained = int(ds["flags"].sel(friction="impulse_ratio"))
     assert gained & ResultFlag.ENERGY_GAIN and float(ds["e"].sel(friction="impulse_ratio")) > 1.0

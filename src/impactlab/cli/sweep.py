@@ -12,6 +12,7 @@ impactlab sweep export STORE OUT.csv|OUT.nc
 from __future__ import annotations
 
 import json
+import os
 import sys
 import warnings
 from dataclasses import dataclass
@@ -96,7 +97,7 @@ class _Where:
 
 def _run(study_path: Path, where: _Where, quiet: bool, restart: bool) -> SweepResult:
     from impactlab.sweep import Study, SweepSizeWarning, run_sweep
-    from impactlab.sweep.backends import DEFAULT_WORKER_TIMEOUT, NoWorkersError
+    from impactlab.sweep.backends import DEFAULT_WORKER_TIMEOUT, NoWorkersError, WorkerLostError
 
     timeout = where.worker_timeout
 
@@ -126,6 +127,9 @@ def _run(study_path: Path, where: _Where, quiet: bool, restart: bool) -> SweepRe
         raise
     except NoWorkersError as exc:  # one line, as docs/sweep.md says
         raise UserError(str(exc)) from None
+    except WorkerLostError as exc:  # one line, as an interrupt's; not the user's input: 1
+        print(f"error: {exc}", file=sys.stderr)
+        raise typer.Exit(1) from None
 
 
 _Out = Annotated[
@@ -207,20 +211,28 @@ def run_cmd(
     ds = res.dataset
     if netcdf is not None:
         export_netcdf(ds, netcdf)
-    files = [str(f) for f in _plots(plot_sweep, ds, plot)] if plot is not None else []
+    files: list[str] = []
+    failed = None  # the sweep is stored: a failed plot still lets the summary print
+    try:
+        files = [str(f) for f in _plots(plot_sweep, ds, plot)] if plot is not None else []
+    except Exception as exc:
+        if os.environ.get("IMPACTLAB_DEBUG"):
+            raise
+        failed = f"error: --plot {plot}: {exc} (the study's results are stored in {res.path})"
     monte_carlo = res.study.uncertainty is not None
     if as_json:  # one JSON document on stdout: a Monte Carlo study's report inside it
         doc = to_json(run_summary(res, ds, netcdf, files, as_json=True), SI_UNITS)
         if monte_carlo:
             doc["uncertainty"] = uncertainty_json(ds)
         print(json.dumps(doc, indent=2))
-        return
-    if quiet:
-        return
-    if monte_carlo:
-        print_uncertainty(ds, None, None, as_json=False)
-    summary = run_summary(res, ds, netcdf, files, as_json=False)
-    emit(summary, as_json=False, title=f"sweep {res.study.name}")
+    elif not quiet:
+        if monte_carlo:
+            print_uncertainty(ds, None, None, as_json=False)
+        summary = run_summary(res, ds, netcdf, files, as_json=False)
+        emit(summary, as_json=False, title=f"sweep {res.study.name}")
+    if failed is not None:
+        print(failed, file=sys.stderr)
+        raise typer.Exit(1)
 
 
 def _check_run_paths(out: Path | None, netcdf: Path | None) -> None:

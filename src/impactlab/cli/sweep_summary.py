@@ -1,6 +1,7 @@
 """The summaries of ``impactlab sweep run``, ``impactlab sweep info`` and ``impactlab sweep
-uncertainty``: the table's texts ("63 case(s) (law extrapolated: 63)", "1 of 1") and the JSON's
-integer counts (docs/json-schema.md: ``"flagged": {"total": 63, "law_extrapolated": 63}``,
+uncertainty``: the table's texts ("0 case(s) not ok; advisory (the result stays ok): law
+extrapolated: 63; 63 flagged in all", "1 of 1") and the JSON's integer counts
+(docs/json-schema.md: ``"flagged": {"total": 63, "not_ok": 0, "law_extrapolated": 63}``,
 ``"chunks_done": 1, "chunks_total": 1``), the uncertainty reports in display units."""
 
 from __future__ import annotations
@@ -21,41 +22,64 @@ from impactlab.flags import invalidating_names
 if TYPE_CHECKING:
     from impactlab.sweep import SweepResult
 
-#: ``impactlab.sweep.summary.format_flag_counts``' text: the total, then "name: count, ...".
+#: ``impactlab.sweep.summary.format_flag_counts``' text: the cases not ok and their flags
+#: ("name: count, ..."), then the advisory flags and the cases with any flag.
+_NOT_OK_TEXT = re.compile(
+    r"(?P<bad>[\d,]+) case\(s\) not ok(?: \((?P<parts>[^()]*)\))?"
+    r"(?:; advisory \(the result stays ok\): (?P<advisory>[^;]*); "
+    r"(?P<total>[\d,]+) flagged in all)?"
+)
+#: Its older form (counts without "not ok"): the total, then "name: count, ...".
 _FLAGGED_TEXT = re.compile(r"(?P<total>[\d,]+) case\(s\) \((?P<parts>.*)\)")
 #: ``impactlab.sweep.summary.store_info``'s progress text: "<done> of <total>".
 _CHUNKS_TEXT = re.compile(r"(?P<done>\d+) of (?P<total>\d+)")
 
 
 def flagged_json(counts: Mapping[str, int]) -> dict[str, int]:
-    """``impactlab.sweep.flag_counts``' counts as JSON: ``total`` (cases with any flag), then
-    each flag that marks a case, by its ``ResultFlag`` name in lower case (``law_extrapolated``,
-    ``beyond_tip``)."""
-    from impactlab.sweep.summary import FLAG_NAMES
+    """``impactlab.sweep.flag_counts``' counts as JSON: ``total`` (cases with any flag, the
+    advisory law extrapolated included), ``not_ok`` (cases with a flag that is not advisory:
+    not plain success), then each flag that marks a case, by its ``ResultFlag`` name in lower
+    case (``law_extrapolated``, ``beyond_tip``)."""
+    from impactlab.sweep.summary import FLAG_NAMES, TOTALS
 
-    out = {"total": int(counts.get("flagged", 0))}
+    total = int(counts.get("flagged", 0))
+    out = {"total": total}
+    if "not ok" in counts or not total:  # counts of an older form have no "not ok"
+        out["not_ok"] = int(counts.get("not ok", 0))
     out |= {
         FLAG_NAMES.get(k, k.replace(" ", "_")): int(v)
         for k, v in counts.items()
-        if k != "flagged" and v
+        if k not in TOTALS and v
     }
     return out
 
 
+def _number(text: str) -> int:
+    return int(text.replace(",", ""))
+
+
 def flagged_text_json(text: Any) -> Any:
-    """The counts of ``format_flag_counts``' text ("none", "63 case(s) (law extrapolated:
-    63)") as :func:`flagged_json` gives them; a text of another shape as it is."""
+    """The counts of ``format_flag_counts``' text ("none", "2 case(s) not ok (energy gain: 2);
+    advisory (the result stays ok): law extrapolated: 7; 7 flagged in all", or the older
+    "63 case(s) (law extrapolated (advisory): 63)") as :func:`flagged_json` gives them; a text
+    of another shape as it is."""
     if text == "none":
-        return {"total": 0}
-    match = _FLAGGED_TEXT.fullmatch(str(text))
-    if match is None:
+        return flagged_json({"flagged": 0})
+    new = _NOT_OK_TEXT.fullmatch(str(text))
+    old = None if new is not None else _FLAGGED_TEXT.fullmatch(str(text))
+    if new is not None:
+        bad = _number(new["bad"])
+        counts = {"flagged": _number(new["total"]) if new["total"] else bad, "not ok": bad}
+        parts = [p for g in ("parts", "advisory") if new[g] for p in new[g].split(", ")]
+    elif old is not None:
+        counts, parts = {"flagged": _number(old["total"])}, old["parts"].split(", ")
+    else:
         return text
-    counts = {"flagged": int(match["total"].replace(",", ""))}
-    for part in match["parts"].split(", "):
+    for part in parts:
         name, _, count = part.rpartition(": ")
         if not name or not count.replace(",", "").isdigit():
             return text
-        counts[name.removesuffix(" (advisory)")] = int(count.replace(",", ""))
+        counts[name.removesuffix(" (advisory)")] = _number(count)
     return flagged_json(counts)
 
 

@@ -25,6 +25,7 @@ from concurrent.futures import (
     ThreadPoolExecutor,
     wait,
 )
+from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass
 from typing import Any
 
@@ -101,9 +102,28 @@ def _pool_init(threads: int, parent: int) -> None:
     set_numba_threads(threads)
 
 
+class WorkerLostError(RuntimeError):
+    """A process of the ``processes`` pool died (killed: by hand, or by the system when memory
+    ran out); the finished chunks are stored, a run of the same study continues."""
+
+
+def _lost(job: Job, stored: int) -> WorkerLostError:
+    n = job.study.layout.n_chunks
+    return WorkerLostError(
+        f"a worker process of the processes backend died (killed by hand, or by the system "
+        f"when memory ran out; from a Python script, a run_sweep call not under "
+        f'`if __name__ == "__main__":`, which each worker runs again as it imports the '
+        f"script): {stored} of {n} chunks stored; run the same command again to continue (with "
+        f"fewer --workers if memory ran out)"
+    )
+
+
 def run_processes(job: Job, workers: int, max_in_flight: int | None) -> None:
+    """Chunks on a spawned pool of ``workers`` processes; a dead worker stops the sweep with a
+    :class:`WorkerLostError` once the chunks that finished are stored."""
     limit = max_in_flight or 2 * workers
     todo = list(job.pending)
+    stored = job.study.layout.n_chunks - len(todo)
     ex = ProcessPoolExecutor(
         max_workers=workers,
         mp_context=mp.get_context("spawn"),
@@ -117,8 +137,16 @@ def run_processes(job: Job, workers: int, max_in_flight: int | None) -> None:
                 k = todo.pop(0)
                 running.add(ex.submit(compute_chunk, job.study, k, job.evaluator, job.outputs, 1))
             finished, running = wait(running, return_when=FIRST_COMPLETED)
+            lost = [f for f in finished if isinstance(f.exception(), BrokenProcessPool)]
             for fut in finished:
-                job.deliver(fut.result())
+                if fut not in lost:
+                    job.deliver(fut.result())
+                    stored += 1
+            if lost:
+                raise BrokenProcessPool
+    except BrokenProcessPool:
+        ex.shutdown(wait=False, cancel_futures=True)
+        raise _lost(job, stored) from None
     except BaseException:
         ex.shutdown(wait=False, cancel_futures=True)
         raise

@@ -26,7 +26,7 @@ from typing import Any
 import numpy as np
 
 from impactlab._display import display_unit, format_number
-from impactlab.dynamics.input_checks import warn_fast
+from impactlab.dynamics.input_checks import PAST_NORMAL, degrees_hint, warn_fast
 from impactlab.dynamics.kernels.inputs import MAX_ANGLE, MAX_MU, MAX_SPEED
 from impactlab.sweep.distributions import Distribution
 from impactlab.sweep.inputs import MATERIAL_OVERRIDES, get_input
@@ -134,17 +134,28 @@ def check_allowed(name: str, values: Sequence[float], where: str) -> None:
         )
 
 
-def check_rod_angles(angles: Sequence[float], where: str, rule_suffix: str = "") -> None:
+def check_rod_angles(
+    angles: Sequence[float], where: str, rule_suffix: str = "", bare: Sequence[Any] = ()
+) -> None:
     """ValueError naming ``where``, the offending values and the interval unless every angle
-    [rad] of a rod lies in :data:`ANGLE`, (0, 90] deg (``rule_suffix`` ends the rule's text)."""
+    [rad] of a rod lies in :data:`ANGLE`, (0, 90] deg (``rule_suffix`` ends the rule's text);
+    with ``simulate``'s degrees hint for the first of the ``bare`` angles that reads so."""
     rule = rule_text("angle", ANGLE) + rule_suffix
     bad = [a for a in angles if not inside(a, ANGLE)]
     past = any(0.5 * math.pi < a < math.pi for a in bad)  # as simulate says it of one angle
     note = (
         ": an angle past 90 deg leans the rod past the flat's normal, the mirror of a drop at "
         "180 deg - angle with vx (or incidence) and spin negated"
-    )
-    _refuse(where, "angle", angles, bad, rule, note if past else "")
+    ) * past
+    th = next((float(a) for a in bare if _degrees(a)), None)
+    if th is not None:  # as impactlab.dynamics.input_checks.check_angle says it
+        note += degrees_hint(th)
+    _refuse(where, "angle", angles, bad, rule, note)
+
+
+def _degrees(angle: Any) -> bool:
+    """A bare number (radians) in (pi/2 + 10 deg, 90]: degrees meant? (refused where given)"""
+    return _is_number(angle) and 0.5 * math.pi + PAST_NORMAL < angle <= 90.0
 
 
 def check_kinematics(
@@ -220,6 +231,8 @@ def check_value(name: str, value: Any) -> Value:
     """A fixed value for input ``name`` (SI float or a category string), inside
     :data:`ALLOWED`."""
     x = _number(name, value)
+    if name == "angle" and isinstance(x, float) and _degrees(value):
+        check_rod_angles([x], f"input {name!r}", bare=[value])
     if isinstance(x, float):
         check_allowed(name, [x], f"input {name!r}")
         check_magnitudes(name, [x], f"input {name!r}")
@@ -238,17 +251,17 @@ class Axis:
         if self.name == SAMPLE_DIM:
             raise ValueError(f"{SAMPLE_DIM!r} is reserved")
         values: Any = self.values
-        if is_quantity(values) and not self.is_category:  # a pint array: to SI, then numbers
+        pint = is_quantity(values)
+        if pint and not self.is_category:  # a pint array: to SI, then numbers
             unit = get_input(self.name).unit
             values = np.atleast_1d(magnitude(f"grid axis {self.name!r}", values, unit))
-        vals = (
-            tuple(_number(self.name, v) for v in np.asarray(values, dtype=object).tolist())
-            if not isinstance(values, str)
-            else (_number(self.name, values),)
-        )
+        raw = np.asarray(values, dtype=object).tolist() if not isinstance(values, str) else [values]
+        vals = tuple(_number(self.name, v) for v in raw)
         if not vals:
             raise ValueError(f"grid axis {self.name!r} has no values")
         numbers = [v for v in vals if isinstance(v, float)]
+        if self.name == "angle" and not pint and any(map(_degrees, raw)):
+            check_rod_angles(numbers, f"grid dimension {self.name!r}", bare=raw)
         check_allowed(self.name, numbers, f"grid dimension {self.name!r}")
         check_magnitudes(self.name, numbers, f"grid dimension {self.name!r}")
         if len(set(vals)) != len(vals):
@@ -278,18 +291,9 @@ class Sample:
     inputs: Mapping[str, Distribution]
 
     def __post_init__(self) -> None:
-        if (
-            isinstance(self.size, bool)
-            or not isinstance(self.size, int | np.integer)
-            or self.size < 1
-        ):
-            raise ValueError(f"sample size must be an integer >= 1, got {self.size!r}")
-        if (
-            isinstance(self.seed, bool)
-            or not isinstance(self.seed, int | np.integer)
-            or self.seed < 0
-        ):
-            raise ValueError(f"sample seed must be an integer >= 0, got {self.seed!r}")
+        for what, n, least in (("size", self.size, 1), ("seed", self.seed, 0)):
+            if isinstance(n, bool) or not isinstance(n, int | np.integer) or n < least:
+                raise ValueError(f"sample {what} must be an integer >= {least}, got {n!r}")
         if not self.inputs:
             raise ValueError("a sample needs at least one input with a distribution")
         for name, dist in self.inputs.items():

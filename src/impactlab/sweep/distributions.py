@@ -200,9 +200,14 @@ class LogNormal(Distribution):
     def __post_init__(self) -> None:
         median, sigma = check_positive("median", self.median), check_positive("sigma", self.sigma)
         _settle(self, median=median, sigma=sigma)
-        _truncate(self, floor=0.0)
-        # the truncation check lives in the underlying normal
-        self._log_normal()
+        lo, hi = _truncate(self, floor=0.0)
+        try:  # the truncation check lives in the underlying normal (log values): said here
+            self._log_normal()
+        except ValueError:
+            raise ValueError(
+                f"lognormal distribution (median={median:.6g}, sigma={sigma:.6g}) has no "
+                f"probability in [low, high] = [{lo:.6g}, {hi:.6g}]"
+            ) from None
 
     @classmethod
     def from_mean_std(
@@ -303,9 +308,11 @@ def distribution_from_dict(d: dict[str, Any], convert: Any, name: str) -> Distri
 
 def _in_si(msg: str, name: str) -> str:
     """``msg`` with the SI unit that the input's values were converted to, where it quotes a
-    value (``got ...``) and the input has a unit."""
+    value (``got ...``, ``[low, high] = ...``) and the input has a unit; not for a lognormal's
+    sigma, which is dimensionless (the spread of the log)."""
     spec = INPUTS.get(name)
-    if spec is None or spec.unit in ("", "1") or "got" not in msg:
+    quotes = "got" in msg or "[low, high] =" in msg
+    if spec is None or spec.unit in ("", "1") or not quotes or msg.startswith("sigma "):
         return msg
     return f"{msg} (in {spec.unit}, the input's SI unit)"
 

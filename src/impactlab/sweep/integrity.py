@@ -135,7 +135,8 @@ def _read_json(f: Path) -> tuple[object, str | None]:
     except UnicodeDecodeError:
         return None, "is not text (binary junk)"
     except json.JSONDecodeError as exc:
-        return None, f"is not valid JSON ({exc.msg} at line {exc.lineno}, column {exc.colno})"
+        what = exc.msg.removesuffix(" at")  # "Invalid control character at": the position follows
+        return None, f"is not valid JSON ({what} at line {exc.lineno}, column {exc.colno})"
 
 
 def _node_problem(f: Path) -> str | None:

@@ -11,6 +11,7 @@ closed forms, within about 1e-13 of the table (docs/sweep.md, "Bit for bit")."""
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
@@ -19,13 +20,19 @@ from typing import Any
 import numpy as np
 
 from impactlab.bodies import NB, PAPER_ROD, Rod, Sphere
-from impactlab.contact import get_law
+from impactlab.contact import get_law, law_names
 from impactlab.contact.brittle import first_yield_pressure
 from impactlab.contact.kernels import param_length
 from impactlab.contact.tabulate import with_table
 from impactlab.dynamics.models import body_params, build_contact_model
 from impactlab.materials import Material, get_material
-from impactlab.sweep.inputs import BODY_INPUTS, CATEGORY_INPUTS, LAW_INPUTS, MATERIAL_OVERRIDES
+from impactlab.sweep.inputs import (
+    BODY_INPUTS,
+    CATEGORY_INPUTS,
+    INPUTS,
+    LAW_INPUTS,
+    MATERIAL_OVERRIDES,
+)
 from impactlab.sweep.material_inputs import CUSTOM, material_of
 from impactlab.sweep.status import STATUS_BAD_BODY, STATUS_BAD_LAW, STATUS_BAD_MATERIAL
 
@@ -204,6 +211,71 @@ def model_rows(
             law_out[r] = cached_l
             body_out[r] = cached_b
     return law_out, body_out, row_status, inverse
+
+
+def law_problem(
+    cat: Mapping[str, str], row: Mapping[str, float], law_params: Mapping[str, float]
+) -> str:
+    """The contact law's own words (its ValueError) for a combination of the inputs that it
+    refuses (status ``STATUS_BAD_LAW``); "" when it builds, when the law is unknown here, or
+    when a material or the radius is refused first (its own status)."""
+    if cat["law"] not in law_names():
+        return ""
+    try:
+        body_mat = material_for("body", cat["body_material"], row)
+        flat_mat = material_for("flat", cat["flat_material"], row)
+    except ValueError:
+        return ""
+    radius = row["radius" if cat["body"] == "sphere" else "tip_radius"]
+    radius = PAPER_ROD.tip_radius if math.isnan(radius) and cat["body"] != "sphere" else radius
+    if not radius > 0.0:  # unset for a sphere, or not a radius: the body's status
+        return ""
+    try:
+        build_contact_model(cat["law"], body_mat, flat_mat, radius, law_params)
+    except ValueError as exc:
+        return str(exc)
+    return ""
+
+
+#: The most combinations of the law's grid inputs the study check builds a law for.
+MAX_PROBES = MAX_TABLES
+
+
+def check_study_laws(
+    fixed: Mapping[str, Any], axes: Sequence[Any], sampled: Sequence[str], law_params: Any
+) -> None:
+    """ValueError, in the law's own words, when the contact law with the study's
+    ``law_params`` refuses every combination of the study's inputs that enter it
+    (``law_problem``) and accepts the first without them: the ``[law_params]`` would refuse
+    every case. Checked where the law's inputs take at most :data:`MAX_PROBES` combinations
+    over the grid and none is sampled; otherwise (or where only some combinations fail, or
+    the law refuses the pair whatever its parameters) each refused case gets
+    ``STATUS_BAD_LAW``, and the law's words for the first of them are in the sweep's summary
+    (``summary.status_counts``)."""
+    names = [*_LAW_NUMERIC, "law", "body", "body_material", "flat_material"]
+    if any(n in sampled for n in names):
+        return
+    grid = {a.name: a.values for a in axes if a.name in names}
+    if math.prod(len(v) for v in grid.values()) > MAX_PROBES:
+        return
+    if not law_params:
+        return
+    first: tuple[str, dict[str, str], dict[str, float]] | None = None
+    for combo in itertools.product(*grid.values()):
+        values = {n: fixed.get(n, INPUTS[n].default) for n in names}
+        values.update(zip(grid, combo, strict=True))
+        cat = {n: str(values[n]) for n in CATEGORY_INPUTS if n in names}
+        row = {n: math.nan if values[n] is None else float(values[n]) for n in _LAW_NUMERIC}
+        why = law_problem(cat, row, law_params)
+        if not why:
+            return
+        first = first or (why, cat, row)
+    if first is None or law_problem(first[1], first[2], {}):
+        return  # the law refuses the pair whatever its parameters: each case's status says so
+    raise ValueError(
+        f"[law_params]: {first[0]} (contact law {first[1]['law']!r}); the law refuses every "
+        "case of the study with these parameters (`impactlab laws` lists them and their ranges)"
+    )
 
 
 def _build_one(

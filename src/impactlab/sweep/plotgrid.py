@@ -52,20 +52,38 @@ class SliceWarning(UserWarning):
 
 
 def select(ds: Any, keep: Sequence[str], sel: Mapping[str, Any] | None) -> Any:
-    """Reduce ``ds`` to the dimensions ``keep``: ``sel`` picks values (nearest) of the others;
-    dimensions not in ``sel`` take their first index. The slice is named by ``where``."""
+    """Reduce ``ds`` to the dimensions ``keep``: ``sel`` picks values (nearest) of the others,
+    an index along a dimension without a coordinate (``sample``); dimensions not in ``sel`` take
+    their first index. The slice is named by ``where``."""
     sel = dict(sel or {})
     for d in list(ds.dims):
         if d in keep:
             continue
         if d in sel:
             v = sel.pop(d)
-            ds = ds.sel({d: v}) if isinstance(v, str) else ds.sel({d: v}, method="nearest")
+            if d not in ds.coords:
+                i = _index(d, v, ds.sizes[d])
+                ds = ds.isel({d: i}).assign_coords({d: i})  # the title names it: sample = 3
+            elif isinstance(v, str):
+                ds = ds.sel({d: v})
+            else:
+                ds = ds.sel({d: v}, method="nearest")
         else:
             ds = ds.isel({d: 0})
     if sel:
         raise ValueError(f"sel names {sorted(sel)}, which are not dimensions to select on")
     return ds
+
+
+def _index(dim: str, value: Any, size: int) -> int:
+    """``value`` as an index along ``dim`` (no coordinate: ``sel`` gives the index), or a
+    ValueError naming it and the allowed range."""
+    if isinstance(value, bool) or not isinstance(value, int | np.integer) or not 0 <= value < size:
+        raise ValueError(
+            f"sel[{dim!r}] must be an index in [0, {size - 1}] ({dim} has no coordinate), "
+            f"got {value!r}"
+        )
+    return int(value)
 
 
 class EmptyPanel(UserWarning):

@@ -24,7 +24,7 @@ import numpy as np
 from impactlab._mpl import pyplot
 from impactlab.sweep.dimensions import SAMPLE_DIM
 from impactlab.sweep.inputs import OUTPUT_ALIASES
-from impactlab.sweep.plotgrid import EmptyPanel, SliceWarning, select
+from impactlab.sweep.plotgrid import EmptyPanel, SliceWarning, select, where
 from impactlab.sweep.plots import (
     CATEGORY_OUTPUTS,
     plot_histograms,
@@ -92,8 +92,10 @@ def plot_plan(
         if "regime" not in ds.data_vars:
             plan.skipped.append("regime map: the study did not keep the output 'regime'")
         else:
-            x, y = ("angle", "mu") if "angle" in nums and "mu" in nums else (nums[0], nums[1])
-            plan.plots.append(("regime_map.png", lambda: plot_regime_map(ds, x=x, y=y, sel=msel)))
+            rx, ry = ("angle", "mu") if "angle" in nums and "mu" in nums else (nums[0], nums[1])
+            plan.plots.append(
+                ("regime_map.png", partial(plot_regime_map, ds, x=rx, y=ry, sel=msel))
+            )
         x, y = _map_axes(nums)
         plan.plots += [
             (f"{o}_{x}_{y}.png", partial(plot_output_map, ds, o, x=x, y=y, sel=msel))
@@ -117,8 +119,17 @@ def plot_plan(
         plan.skipped += [f"{o}: a category, no histogram" for o in present if o not in numbers]
         if numbers:
             sub = select(ds, (SAMPLE_DIM,), sel)
-            plan.plots.append(("histograms.png", lambda: plot_histograms(sub, numbers).axes))
+            plan.plots.append(("histograms.png", partial(_histograms, ds, sub, numbers)))
     return plan
+
+
+def _histograms(ds: Any, sub: Any, outputs: Sequence[str]) -> Any:
+    """The histograms of the sample ``sub`` of ``ds``, titled with its grid point (if any)."""
+    fig = plot_histograms(sub, outputs)
+    at = where(ds, sub)
+    if at:
+        fig.suptitle(at, fontsize="small", y=1.02)
+    return fig.axes
 
 
 def plot_sweep(
@@ -131,11 +142,12 @@ def plot_sweep(
     """Write every plot the sweep's dimensions allow into ``outdir`` (PNG); returns the files.
 
     The maps and lines follow the swept numeric inputs (module docstring); a 'sample'
-    dimension adds histograms. Two further dimensions are drawn as facets; maps of a
-    grid+sample study show the sample in ``sel`` (default: the first). Dimensions beyond those
-    take the value in ``sel``, else their first: one :class:`SliceWarning` per distinct slice
-    says which. Each plot it cannot draw is named, with the reason, in a :class:`PlotSkipped`
-    warning.
+    dimension adds histograms (of a grid+sample study: of one grid point, the first or the one
+    in ``sel``, named in the title). Two further dimensions are drawn as facets; maps of a
+    grid+sample study show the sample index in ``sel`` (``{"sample": 3}``; default: the
+    first). Dimensions beyond those take the value in ``sel``, else their first: one
+    :class:`SliceWarning` per distinct slice says which. Each plot it cannot draw is named, with
+    the reason, in a :class:`PlotSkipped` warning.
     """
     plan = plot_plan(ds, outputs, sel)
     plt = pyplot()

@@ -44,6 +44,7 @@ from impactlab.sweep.flexible import check_flexible_study
 from impactlab.sweep.inputs import INPUTS, OUTPUT_ALIASES, get_input
 from impactlab.sweep.limits import DEFAULT_MAX_CASES, check_max_cases, check_size
 from impactlab.sweep.material_inputs import check_material_inputs
+from impactlab.sweep.models import check_study_laws
 from impactlab.sweep.options import (
     STUDY_FORMAT,
     EngineOptions,
@@ -225,6 +226,8 @@ class Study:
         laws = next((a.values for a in axes if a.name == "law"), (self.value_of("law"),))
         object.__setattr__(self, "laws", law_records(laws))
         object.__setattr__(self, "law_params", _check_law_params(self.law_params, laws))
+        sampled = () if self.sample is None else tuple(self.sample.inputs)
+        check_study_laws(fixed, axes, sampled, self.law_params)  # every case refused: say so
         size = self.chunk_size
         if size is not None and (isinstance(size, bool) or not isinstance(size, int) or size < 1):
             raise ValueError(f"chunk_size must be an integer >= 1, got {size!r}")

@@ -4,6 +4,7 @@ longer match their checksums) are reported, and left out of the counts."""
 
 from __future__ import annotations
 
+import json
 from collections import Counter
 from collections.abc import Iterable, Iterator, Mapping
 from pathlib import Path
@@ -14,9 +15,10 @@ import zarr
 
 from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
 from impactlab.sweep.dimensions import Layout
+from impactlab.sweep.inputs import get_input
 from impactlab.sweep.integrity import describe
 from impactlab.sweep.slabs import slabs, store_chunks
-from impactlab.sweep.status import STATUS_NOT_RUN
+from impactlab.sweep.status import STATUS_BAD_LAW, STATUS_NOT_RUN
 from impactlab.sweep.store import SweepStore, open_sweep
 
 #: At most this many cases of a store are in memory at a time while they are counted.
@@ -40,8 +42,70 @@ def _counts(blocks: Iterable[np.ndarray], msgs: Mapping[str, str]) -> dict[str, 
 
 def status_counts(ds: Any) -> dict[str, int]:
     """Number of cases per status, keyed "<code>: <message>" (code 0: ok); a store is read a
-    block at a time (``COUNT_BLOCK_CASES``)."""
-    return _counts(_blocks(ds, "status"), ds.attrs.get("status_messages", {}))
+    block at a time (``COUNT_BLOCK_CASES``). The message of the cases the contact law refused
+    (``STATUS_BAD_LAW``) ends with the law's own words for the first of them
+    (:func:`law_words`)."""
+    msgs = dict(ds.attrs.get("status_messages", {}))
+    counts = _counts(_blocks(ds, "status"), msgs)
+    bad = str(STATUS_BAD_LAW)
+    if f"{bad}: {msgs.get(bad, '?')}" not in counts:
+        return counts
+    words = law_words(ds)
+    if not words:
+        return counts
+    return {(f"{k}; {words}" if k.startswith(f"{bad}:") else k): n for k, n in counts.items()}
+
+
+def law_words(ds: Any) -> str:
+    """What the contact law says of the first case of the sweep ``ds`` that it refused
+    (``STATUS_BAD_LAW``), with that case's grid coordinates: ``"first at flat_E = 1e+09 Pa:
+    the 'ghaednia' law gives ..."``; "" when there is none, or the study is not readable here
+    (a law of one's own that this process does not know)."""
+    where = _first_refused(ds)
+    if where is None or "study" not in ds.attrs:
+        return ""
+    from impactlab.sweep.models import law_problem
+    from impactlab.sweep.study_record import recorded_study
+
+    try:
+        study = recorded_study(json.loads(ds.attrs["study"]))
+        lay = study.layout
+        pos = tuple(where[d] for d in lay.dims)
+        chunk = tuple(p // c for p, c in zip(pos, lay.chunks, strict=True))
+        k = int(np.ravel_multi_index(chunk, lay.chunk_grid))
+        numeric, categories, shape = study.chunk_cases(k)
+        inside = tuple(p - b.start for p, b in zip(pos, lay.block(k), strict=True))
+        j = int(np.ravel_multi_index(inside, shape))
+        row = {n: float(v[j]) for n, v in numeric.items()}
+        why = law_problem(categories, row, study.law_params)
+    except (ValueError, KeyError, IndexError):
+        return ""
+    at = ", ".join(f"{a.name} = {_shown(a, where[a.name])}" for a in study.axes)
+    return f"first at {at}: {why}" if why and at else why
+
+
+def _first_refused(ds: Any) -> dict[str, int] | None:
+    """The index along each dimension of the first case of ``ds`` (C order) whose status is
+    ``STATUS_BAD_LAW``; None when there is none. Read a block at a time."""
+    var = ds["status"]
+    shape = tuple(int(n) for n in var.shape)
+    for slab in slabs(shape, COUNT_BLOCK_CASES, store_chunks(ds)):
+        values = np.asarray(var[slab].values)
+        hit = np.flatnonzero(values.ravel() == STATUS_BAD_LAW)
+        if hit.size:
+            pos = np.unravel_index(int(hit[0]), values.shape)
+            starts = [s.indices(n)[0] for s, n in zip(slab, shape, strict=True)]
+            at = (a + int(p) for a, p in zip(starts, pos, strict=True))
+            return dict(zip(var.dims, at, strict=True))
+    return None
+
+
+def _shown(axis: Any, i: int) -> str:
+    """Value ``i`` of a grid ``axis`` with its SI unit (``"5e+08 Pa"``, ``"aisi-1010"``)."""
+    value, unit = axis.values[i], get_input(axis.name).unit
+    if axis.is_category:
+        return str(value)
+    return f"{value:g}" + ("" if unit in ("", "1") else f" {unit}")
 
 
 def dataset_flag_counts(ds: Any) -> dict[str, int]:
@@ -50,7 +114,7 @@ def dataset_flag_counts(ds: Any) -> dict[str, int]:
     total: Counter[str] = Counter()
     for values in _blocks(ds, "flags"):
         total.update(flag_counts(values, attrs))
-    return {"flagged": total["flagged"]} | {name: total[name] for _, name in _flag_bits(attrs)}
+    return {k: total[k] for k in TOTALS} | {name: total[name] for _, name in _flag_bits(attrs)}
 
 
 #: Each flag's label in the counts (its message's head: "gravity-dominated", "beyond the tip"),
@@ -69,12 +133,19 @@ def _flag_bits(attrs: Mapping[str, Any]) -> list[tuple[int, str]]:
     ]
 
 
+#: The keys of ``flag_counts`` that count cases, not one flag: "flagged" (any flag) and
+#: "not ok" (a flag that is not advisory: not plain success).
+TOTALS = ("flagged", "not ok")
+
+
 def flag_counts(flags: np.ndarray, attrs: Mapping[str, Any]) -> dict[str, int]:
     """Number of cases carrying each result flag (``impactlab.flags.ResultFlag``), by name;
-    "flagged": cases with any flag. Cases without a result (-1) are not counted."""
+    "flagged": cases with any flag; "not ok": cases with a flag that is not advisory (not
+    plain success; ``ADVISORY_FLAGS`` such as law extrapolated leave a result ok). Cases
+    without a result (-1) are not counted."""
     f = np.asarray(flags).ravel()
     f = f[f > 0]
-    out = {"flagged": int(f.size)}
+    out = {"flagged": int(f.size), "not ok": int(np.count_nonzero(f & ~ADVISORY_FLAGS))}
     for mask, name in _flag_bits(attrs):
         out[name] = int(np.count_nonzero(f & mask))
     return out
@@ -85,16 +156,25 @@ _ADVISORY = {messages(f)[0].split(":")[0] for f in ResultFlag if f & ADVISORY_FL
 
 
 def format_flag_counts(counts: Mapping[str, int]) -> str:
-    """``"12 case(s) (energy gain: 10, law extrapolated (advisory): 2)"`` (``"none"`` when 0);
-    an advisory flag (the result stays ``ok``) is marked so."""
+    """``"58 case(s) not ok (energy gain: 15, gravity-dominated: 48); advisory (the result
+    stays ok): law extrapolated: 74; 80 flagged in all"``: the cases not ok first, with their
+    flags, then the advisory flags and the cases with any flag (only when an advisory flag
+    counts); ``"none"`` when no case is flagged. Counts without "not ok" (an older form):
+    ``"12 case(s) (energy gain: 10, law extrapolated (advisory): 2)"``."""
     if not counts.get("flagged"):
         return "none"
-    parts = ", ".join(
-        f"{k}{' (advisory)' if k in _ADVISORY else ''}: {v:,}"
-        for k, v in counts.items()
-        if k != "flagged" and v
-    )
-    return f"{counts['flagged']:,} case(s) ({parts})"
+    flags = {k: v for k, v in counts.items() if k not in TOTALS and v}
+    if "not ok" not in counts:
+        parts = ", ".join(f"{k}{' (advisory)' * (k in _ADVISORY)}: {v:,}" for k, v in flags.items())
+        return f"{counts['flagged']:,} case(s) ({parts})"
+    bad = ", ".join(f"{k}: {v:,}" for k, v in flags.items() if k not in _ADVISORY)
+    text = f"{counts['not ok']:,} case(s) not ok" + (f" ({bad})" if bad else "")
+    advisory = ", ".join(f"{k}: {v:,}" for k, v in flags.items() if k in _ADVISORY)
+    if advisory:
+        text += (
+            f"; advisory (the result stays ok): {advisory}; {counts['flagged']:,} flagged in all"
+        )
+    return text
 
 
 def _intact_values(path: Path, name: str, damaged: set[int], done: set[int]) -> np.ndarray:

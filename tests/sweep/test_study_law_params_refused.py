@@ -1,0 +1,69 @@
+"""A study whose ``[law_params]`` the contact law refuses for every case is refused when it is
+built, in the law's own words, as ``simulate`` words them; where only some cases are refused
+(or the law's inputs take too many combinations to check), each refused case keeps its status
+and the sweep's summary carries the law's words for the first of them."""
+
+from __future__ import annotations
+
+import pytest
+
+from impactlab.sweep import Study, run_sweep, status_counts
+from impactlab.sweep.models import MAX_PROBES
+
+BASE = {"vy": -1.41, "mu": 0.2}
+
+
+@pytest.mark.parametrize(
+    ("law", "params", "message"),
+    [
+        ("brake", {"hardness": -5.0}, r"hardness must be > 0 kgf/mm\^2, got -5\.0 kgf/mm\^2"),
+        ("ghaednia", {"published_switch": 2.0}, r"published_switch must be 0 .* got 2\.0"),
+        ("ghaednia", {"published_switch": float("nan")}, r"published_switch must be finite"),
+    ],
+)
+def test_law_params_refused_for_every_case_refuse_the_study(law, params, message) -> None:
+    with pytest.raises(ValueError, match=r"^\[law_params\]: " + message) as caught:
+        Study(name="bad", grid={"angle": [0.35]}, fixed={**BASE, "law": law}, law_params=params)
+    assert f"(contact law {law!r}); the law refuses every case" in str(caught.value)
+
+
+def test_law_params_refused_for_some_pairs_only_keep_the_case_status(tmp_path) -> None:
+    """Brake's law with hardness = 20 kgf/mm^2: refused for the flat of 1 GPa yield strength
+    (delta_p <= delta_y), accepted for 200 MPa. The study runs; the refused case has status
+    103, and the summary gives the law's words for it, at its grid coordinates."""
+    flat = {"flat_E": 2e11, "flat_nu": 0.29, "flat_brinell_hardness": 120.0,
+            "flat_meyer_index": 2.3}  # fmt: skip
+    study = Study(name="some", grid={"flat_yield_strength": [1e9, 2e8]},
+                  fixed={**BASE, **flat, "angle": 0.35, "law": "brake"},
+                  law_params={"hardness": 20.0})  # fmt: skip
+    ds = run_sweep(study, tmp_path / "some.zarr", quiet=True).dataset
+    assert ds["status"].values.tolist() == [103, 0]
+    refused = next(k for k in status_counts(ds) if k.startswith("103:"))
+    assert refused.endswith(
+        "; first at flat_yield_strength = 1e+09 Pa: hardness = 20.0 kgf/mm^2 gives P0 = "
+        "1.961e+08 Pa and delta_p = 6.266e-07 m <= delta_y = 2.719e-06 m; Brake's Eq. 24 needs "
+        "delta_p > delta_y, i.e. P0 > 4.086e+08 Pa"
+    )
+
+
+def test_a_pair_the_law_refuses_whatever_its_parameters_is_not_blamed_on_them() -> None:
+    """Brake's law on a flat by values without a hardness fails with or without a
+    meyer_index: not the [law_params]' fault; each case says so in its status."""
+    flat = {"flat_E": 69e9, "flat_nu": 0.33, "flat_yield_strength": 276e6}
+    Study(name="nohb", grid={"angle": [0.35]}, fixed={**BASE, **flat, "law": "brake"},
+          law_params={"meyer_index": 2.5})  # fmt: skip
+
+
+def test_the_summary_carries_the_law_s_words(tmp_path) -> None:
+    """Too many tip radii to check up front: every case is refused (status 103), and the status
+    counts end with the law's message for the first case, at its grid coordinates."""
+    radii = [0.005 + 1e-5 * i for i in range(MAX_PROBES + 1)]
+    study = Study(name="many", grid={"tip_radius": radii}, fixed={**BASE, "angle": 0.35,
+                  "law": "brake"}, law_params={"hardness": -5.0})  # fmt: skip
+    ds = run_sweep(study, tmp_path / "many.zarr", quiet=True).dataset
+    ((key, n),) = status_counts(ds).items()
+    assert n == len(radii)
+    assert key.startswith("103: contact law rejected its parameters")
+    assert key.endswith(
+        "; first at tip_radius = 0.005 m: hardness must be > 0 kgf/mm^2, got -5.0 kgf/mm^2"
+    )
