@@ -138,7 +138,10 @@ def written(name: str, text: str, shown: str, q: Any, unit: str) -> None:
     """ValueError naming ``name`` unless pint read the number written in ``text`` (the user's
     ``shown``; its reciprocal after a slash, ``"pi/4 rad"``): a power computes another
     (``"(2)^2 m"`` is 4 m, ``"10\u207b\u00b3 m"`` 0.001 m). A text with no number (a unit
-    alone, ``"m^2"``) is 1 of it: nothing to check."""
+    alone, ``"m^2"``) is 1 of it: nothing to check; a NaN or infinity is left to the caller's
+    finiteness check."""
+    if not math.isfinite(float(q.magnitude)):
+        return
     first = first_number(text)
     m, x = abs(float(q.magnitude)), float(first.group()) if first else 1.0
     over = first is not None and text[: first.start()].rstrip().endswith("/")  # pi/4: 1/4

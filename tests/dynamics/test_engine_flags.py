@@ -188,7 +188,7 @@ def test_batch_flags_and_flagged() -> None:
     single = [simulate(PAPER_ROD, angle=a, velocity=(0.0, v), **kw).ok for a, v in cases]
     np.testing.assert_array_equal(b.ok[:3], single)
     assert np.isnan(b["flags"][3])  # a failed case has no outputs, its status says why
-    assert "3 computed, 1 ok, 3 flagged" in repr(b)
+    assert "3 computed, 1 ok (1 marked: law extrapolated), 2 not ok" in repr(b)
     df = b.to_dataframe()  # integer codes stay integers, regime by name; a failed case's missing
     assert [str(df[name].dtype) for name in ("flags", "n_steps")] == ["Int64"] * 2
     assert str(df["regime"].dtype) == "category" and df["regime"].isna().tolist()[3]

@@ -1,7 +1,9 @@
 """Checks shared by the body constructors: materials, quantities and the plausibility bounds.
 
 Bounds (SI). Refused, because impossible: a length, tip radius, radius, mass, inertia or
-density that is not a finite number > 0, and a rod whose tip radius exceeds half its length.
+density that is not a finite number > 0, a rod whose tip radius exceeds half its length, and a
+size or mass outside the allowed ranges (:data:`SIZE_RANGE`, :data:`MASS_RANGE`,
+:data:`INERTIA_RANGE`: given, or derived from the others, as a sphere's mass from its radius).
 Warned with :class:`~impactlab._validation.ImplausibleInputWarning`, because most likely a unit
 mistake: a length outside :data:`PLAUSIBLE_LENGTH`, a tip radius or sphere radius outside
 :data:`PLAUSIBLE_RADIUS`, a mass outside :data:`PLAUSIBLE_MASS`, a rigid rod's mass over
@@ -15,7 +17,7 @@ import math
 from collections.abc import Mapping
 from pathlib import Path
 
-from impactlab._validation import warn_implausible
+from impactlab._validation import check_positive, warn_implausible
 from impactlab.materials import Material, get_material
 
 #: Plausible rod length [m]: 1 mm to 10 m.
@@ -24,6 +26,50 @@ PLAUSIBLE_LENGTH = (1e-3, 10.0)
 PLAUSIBLE_RADIUS = (1e-6, 0.5)
 #: Plausible mass [kg]: 1 mg to 1 t.
 PLAUSIBLE_MASS = (1e-6, 1e3)
+#: Allowed size [m] of a body, refused outside: a length, tip radius, sphere radius or
+#: diameter, given or derived (a rod's diameter from its mass), from 1 nm (a few atoms: no
+#: continuum contact) to 10 km (a thousand times the longest plausible rod). Within it the
+#: derived quantities stay normal floats (a sphere's R^3, Hertz's force at first yield, the
+#: frequencies of a flexible rod's modes); far outside it they under- or overflow. Every
+#: plausible value, and each one a thousand times off (mm given as m, or m as mm), lies inside.
+SIZE_RANGE = (1e-9, 1e4)
+#: Allowed mass [kg], refused outside: from 1e-24 kg (about ten atoms; a 1 nm steel sphere is
+#: 3e-23 kg) to 1e12 kg (a steel sphere of 300 m radius), for the same reasons.
+MASS_RANGE = (1e-24, 1e12)
+#: Allowed moment of inertia [kg m^2], refused outside: the least and the most mass at the
+#: least and the most size, MASS_RANGE x SIZE_RANGE^2, the lower end a hundred times lower to
+#: hold m L^2 / 12 and 2/5 m R^2 of the smallest bodies.
+INERTIA_RANGE = (1e-2 * MASS_RANGE[0] * SIZE_RANGE[0] ** 2, MASS_RANGE[1] * SIZE_RANGE[1] ** 2)
+
+
+def checked_size(name: str, value: object) -> float:
+    """``value`` [m] as a finite number > 0 within :data:`SIZE_RANGE`; ValueError naming
+    ``name`` otherwise."""
+    return check_allowed(name, check_positive(name, value, "m"), SIZE_RANGE, "m")
+
+
+def checked_mass(name: str, value: object) -> float:
+    """``value`` [kg] as a finite number > 0 within :data:`MASS_RANGE`; ValueError naming
+    ``name`` otherwise."""
+    return check_allowed(name, check_positive(name, value, "kg"), MASS_RANGE, "kg")
+
+
+def check_allowed(
+    name: str, value: float, bounds: tuple[float, float], unit: str, derived: str = ""
+) -> float:
+    """``value`` [``unit``], a finite number > 0 already; ValueError naming ``name`` (and
+    ``derived``, how it follows from the given values) when it lies outside ``bounds`` (by more
+    than the round-off of a unit conversion, 1e-9 relative: 1 um / 1000 is 1 nm)."""
+    lo, hi = bounds
+    if lo * (1.0 - 1e-9) <= value <= hi * (1.0 + 1e-9):
+        return value
+    how = f" ({derived})" if derived else ""
+    raise ValueError(
+        f"{name} = {value!r} {unit}{how} lies outside the allowed range [{lo:g}, {hi:g}] {unit}"
+        f" (far {'below' if value < lo else 'above'} any body impactlab models; beyond it the "
+        "derived quantities, a sphere's R^3 or the contact force, under- or overflow); check "
+        f"the value and its unit (SI: {unit})"
+    )
 
 
 def tip_width_problem(

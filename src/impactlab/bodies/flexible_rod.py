@@ -25,13 +25,18 @@ from typing import cast
 import numpy as np
 
 from impactlab._html import dataclass_html, dataclass_rows
-from impactlab._validation import check_positive, check_range, warn_implausible
+from impactlab._validation import check_range, warn_implausible
 from impactlab.bodies._checks import (
+    MASS_RANGE,
     PLAUSIBLE_LENGTH,
     PLAUSIBLE_MASS,
     PLAUSIBLE_RADIUS,
+    SIZE_RANGE,
+    check_allowed,
     check_material,
     check_tip_width,
+    checked_mass,
+    checked_size,
     plausible,
 )
 from impactlab.bodies.beam_modes import axial_frequencies, eb_frequencies
@@ -80,6 +85,11 @@ MAX_MODES = 128
 def check_mode_count(name: str, value: object) -> int:
     """``value`` as a mode count, an integer in [0, ``MAX_MODES``]; else ValueError naming
     ``name`` (the keyword, or the option as the user gave it)."""
+    if isinstance(value, float | np.floating) and float(value).is_integer():
+        raise ValueError(
+            f"{name} must be an integer (a mode count), not a float: got {value!r}; write "
+            f"{int(value)}"
+        )
     if isinstance(value, bool) or not isinstance(value, int | np.integer) or value < 0:
         raise ValueError(f"{name} must be an integer >= 0, got {value!r}")
     if value > MAX_MODES:
@@ -155,6 +165,7 @@ def _check_geometry(L: float, m: float, d: float | None, material: Material) -> 
             )
     else:
         d = math.sqrt(4.0 * m / (math.pi * rho * L))
+        check_allowed("diameter", d, SIZE_RANGE, "m", "sqrt(4 m / (pi rho L)), from the mass")
     if not L / d >= MIN_SLENDERNESS:
         raise ValueError(
             f"the rod (length {L!r} m, mass {m!r} kg, {material.name!r} at {rho:.4g} kg/m^3) has "
@@ -198,7 +209,9 @@ class FlexibleRod:
         not exceed 2R (else the end face's rim, not the tip, strikes the flat at shallow
         angles). Lengths, tip radii and
         masses outside the bounds of ``impactlab.bodies._checks`` give an
-        ImplausibleInputWarning, as for ``Rod``.
+        ImplausibleInputWarning, as for ``Rod``; outside its allowed ranges (sizes 1 nm to
+        10 km, the diameter given or implied by the mass; masses 1e-24 to 1e12 kg) a
+        ValueError.
     material : the rod's material (E, nu, density; the contact pair's elastic constants).
     n_axial, n_bending : numbers of axial and bending free-free modes (integers in
         [0, ``MAX_MODES``] = [0, 128]); None (default): per family the fewest whose highest
@@ -227,8 +240,8 @@ class FlexibleRod:
     geometric: bool = False
 
     def __post_init__(self) -> None:
-        L = plausible("length", check_positive("length", self.length, "m"), PLAUSIBLE_LENGTH, "m")
-        R = check_positive("tip_radius", self.tip_radius, "m")
+        L = plausible("length", checked_size("length", self.length), PLAUSIBLE_LENGTH, "m")
+        R = checked_size("tip_radius", self.tip_radius)
         if R > 0.5 * L:
             raise ValueError(
                 f"tip_radius ({R!r} m) must not exceed half the length (L/2 = {0.5 * L!r} m)"
@@ -238,11 +251,12 @@ class FlexibleRod:
         rho = self.material.density
         if self.mass is None and self.diameter is None:
             raise ValueError("give the mass [kg] or the diameter [m] of the rod (or both)")
-        d = None if self.diameter is None else check_positive("diameter", self.diameter, "m")
+        d = None if self.diameter is None else checked_size("diameter", self.diameter)
         if self.mass is None:
             m = rho * math.pi * cast(float, d) ** 2 / 4.0 * L
+            check_allowed("mass", m, MASS_RANGE, "kg", "rho pi d^2 / 4 L, from the diameter")
         else:
-            m = check_positive("mass", self.mass, "kg")
+            m = checked_mass("mass", self.mass)
         plausible("mass", m, PLAUSIBLE_MASS, "kg")
         _check_geometry(L, m, d, self.material)
         if d is None:  # the beam is a uniform circular rod of its material: d from the mass

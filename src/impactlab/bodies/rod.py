@@ -17,11 +17,16 @@ import numpy as np
 from impactlab._html import dataclass_html, dataclass_rows
 from impactlab._validation import check_positive, warn_implausible
 from impactlab.bodies._checks import (
+    INERTIA_RANGE,
+    MASS_RANGE,
     PLAUSIBLE_LENGTH,
     PLAUSIBLE_MASS,
     PLAUSIBLE_RADIUS,
+    check_allowed,
     check_material,
     check_tip_width,
+    checked_mass,
+    checked_size,
     heavy_rod_problem,
     plausible,
     rod_mass,
@@ -59,7 +64,10 @@ class Rod:
     Each quantity is a number in the SI unit above, a string with units (``"8.8 mm"``) or a
     pint Quantity of any registry; the fields hold SI floats.
 
-    Bounds: ValueError unless every quantity is finite and > 0, ``tip_radius <= length / 2``
+    Bounds: ValueError unless every quantity is finite and > 0, within the allowed ranges of
+    ``impactlab.bodies._checks`` (sizes 1 nm to 10 km, masses 1e-24 to 1e12 kg, given or
+    derived: beyond them the derived quantities leave the floats' range), ``tip_radius <=
+    length / 2``
     (a wider tip is not a rod), ``diameter <= 2 tip_radius`` (else the end face's rim, not the
     tip, strikes the flat at shallow angles); ImplausibleInputWarning (most likely a unit
     mistake) for a length outside [1 mm, 10 m], a tip radius outside [1 um, 0.5 m] or a mass outside
@@ -80,8 +88,8 @@ class Rod:
     _params: np.ndarray = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
-        L = plausible("length", check_positive("length", self.length, "m"), PLAUSIBLE_LENGTH, "m")
-        R = check_positive("tip_radius", self.tip_radius, "m")
+        L = plausible("length", checked_size("length", self.length), PLAUSIBLE_LENGTH, "m")
+        R = checked_size("tip_radius", self.tip_radius)
         if R > 0.5 * L:
             raise ValueError(
                 f"tip_radius = {R!r} m exceeds half the rod's length ({0.5 * L!r} m): the "
@@ -89,20 +97,23 @@ class Rod:
             )
         plausible("tip_radius", R, PLAUSIBLE_RADIUS, "m")
         object.__setattr__(self, "material", check_material("material", self.material))
-        d = None if self.diameter is None else check_positive("diameter", self.diameter, "m")
-        given = None if self.mass is None else check_positive("mass", self.mass, "kg")
-        m = plausible("mass", rod_mass(L, given, d, self.material), PLAUSIBLE_MASS, "kg")
+        d = None if self.diameter is None else checked_size("diameter", self.diameter)
+        given = None if self.mass is None else checked_mass("mass", self.mass)
+        m = rod_mass(L, given, d, self.material)
+        check_allowed("mass", m, MASS_RANGE, "kg", "rho pi d^2 / 4 L, from the diameter")
+        plausible("mass", m, PLAUSIBLE_MASS, "kg")
         check_tip_width(R, d)
         if d is None and self.inertia is None:  # a uniform rod as far as the model knows
             problem = heavy_rod_problem(L, R, m, self.material)
             if problem is not None:
                 warn_implausible(problem)
         object.__setattr__(self, "diameter", d)
-        inertia = (
-            m * L * L / 12.0
-            if self.inertia is None
-            else check_positive("inertia", self.inertia, "kg m^2")
-        )
+        if self.inertia is None:
+            inertia = m * L * L / 12.0
+            check_allowed("inertia", inertia, INERTIA_RANGE, "kg m^2", "m L^2 / 12")
+        else:
+            inertia = check_positive("inertia", self.inertia, "kg m^2")
+            check_allowed("inertia", inertia, INERTIA_RANGE, "kg m^2")
         reach = 0.5 * L + R  # no mass of the rod lies farther from its centre of mass
         if inertia > m * reach * reach * (1.0 + 1e-12):
             raise ValueError(

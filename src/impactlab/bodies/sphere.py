@@ -10,9 +10,13 @@ import numpy as np
 from impactlab._html import dataclass_html, dataclass_rows
 from impactlab._validation import check_positive, warn_implausible
 from impactlab.bodies._checks import (
+    MASS_RANGE,
     PLAUSIBLE_MASS,
     PLAUSIBLE_RADIUS,
+    check_allowed,
     check_material,
+    checked_mass,
+    checked_size,
     dense_sphere_problem,
     plausible,
 )
@@ -30,7 +34,9 @@ class Sphere:
     used (m = 4/3 pi R^3 rho). Each quantity is a number in that SI unit, a string with units
     (``"5 mm"``) or a pint Quantity of any registry.
 
-    Bounds: ValueError unless the radius, mass and density are finite and > 0;
+    Bounds: ValueError unless the radius, mass and density are finite and > 0, the radius in
+    [1 nm, 10 km] and the mass (given, or from the radius and density) in [1e-24, 1e12] kg
+    (``impactlab.bodies._checks``: beyond them the derived quantities leave the floats' range);
     ImplausibleInputWarning for a radius outside [1 um, 0.5 m] or a mass outside
     [1 mg, 1000 kg]. The mass is free of the material's density (a hollow ball, or a sphere
     that stands in for a heavier body's effective mass: ``fe.impact_reference``'s rod-mass
@@ -48,12 +54,12 @@ class Sphere:
     _params: np.ndarray = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
-        R = plausible("radius", check_positive("radius", self.radius, "m"), PLAUSIBLE_RADIUS, "m")
+        R = plausible("radius", checked_size("radius", self.radius), PLAUSIBLE_RADIUS, "m")
         object.__setattr__(self, "material", check_material("material", self.material))
         if self.mass is not None and self.density is not None:
             raise ValueError("give either mass or density for a Sphere, not both")
         if self.mass is not None:
-            m = check_positive("mass", self.mass, "kg")
+            m = checked_mass("mass", self.mass)
             rho = m / (4.0 / 3.0 * math.pi * R**3)
             problem = dense_sphere_problem(R, m, self.material)
             if problem is not None:
@@ -65,6 +71,7 @@ class Sphere:
                 else check_positive("density", self.density, "kg/m^3")
             )
             m = 4.0 / 3.0 * math.pi * R**3 * rho
+            check_allowed("mass", m, MASS_RANGE, "kg", "4/3 pi R^3 rho, from the radius")
         plausible("mass", m, PLAUSIBLE_MASS, "kg")
         object.__setattr__(self, "radius", R)
         object.__setattr__(self, "mass", m)

@@ -10,11 +10,31 @@ import numpy as np
 from impactlab.contact import kernel_arrays as ka
 from impactlab.contact import kernels as k
 
+#: The radius [m] a law is built for: the sizes ``impactlab.bodies`` allows (its
+#: ``SIZE_RANGE``, 1 nm to 10 km); beyond them a law's forces and interferences (Hertz's
+#: E* R^1/2 delta^3/2 at first yield, (R / E*)^2) under- or overflow.
+RADIUS_RANGE = (1e-9, 1e4)
+
+
+def check_radius(R: float) -> float:
+    """``R`` [m]; ValueError unless it lies within :data:`RADIUS_RANGE` (to 1e-9 relative, as
+    the bodies' sizes)."""
+    lo, hi = RADIUS_RANGE
+    if not lo * (1.0 - 1e-9) <= R <= hi * (1.0 + 1e-9):
+        raise ValueError(
+            f"radius = {R!r} m lies outside the allowed range [{lo:g}, {hi:g}] m (the sizes of "
+            "impactlab's bodies; beyond it the law's forces under- or overflow); check the value "
+            "and its unit (SI: m)"
+        )
+    return R
+
 
 def pair_constants(p: np.ndarray) -> tuple[float, float, float, float]:
     """(E* [Pa], R [m], S_y [Pa], nu) from a law's parameter vector ``p`` (``kernels.P_*``),
-    filled by ``ContactLaw.build`` from the contact pair and the radius."""
-    return float(p[k.P_ESTAR]), float(p[k.P_R]), float(p[k.P_SY]), float(p[k.P_NU])
+    filled by ``ContactLaw.build`` from the contact pair and the radius (ValueError for a
+    radius outside :data:`RADIUS_RANGE`)."""
+    R = check_radius(float(p[k.P_R]))
+    return float(p[k.P_ESTAR]), R, float(p[k.P_SY]), float(p[k.P_NU])
 
 
 def jg_C(nu: float) -> float:
@@ -31,6 +51,7 @@ def jg_critical(E_star: float, R: float, S_y: float, nu: float) -> tuple[float, 
     delta_c = (pi C S_y / (2 E*))^2 R, F_c = 4/3 (R/E*)^2 (pi C S_y / 2)^3 (= Hertz at delta_c).
     """
     C = jg_C(nu)
+    R = check_radius(R)
     dc = (math.pi * C * S_y / (2.0 * E_star)) ** 2 * R
     fc = 4.0 / 3.0 * (R / E_star) ** 2 * (math.pi * C * S_y / 2.0) ** 3
     return dc, fc

@@ -12,6 +12,7 @@ import numpy as np
 
 from impactlab._validation import did_you_mean
 from impactlab.dynamics.kernels.status import REGIME_NAMES
+from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
 
 __all__ = ["batch_counts", "field_dir", "no_field", "regime_series", "with_units"]
 
@@ -32,10 +33,24 @@ def no_field(obj: object, name: str, fields: Iterable[str]) -> AttributeError:
 
 
 def batch_counts(batch: Any) -> str:
-    """``"2 cases, 1 computed, 1 ok, 0 flagged"``: the counts of a batch's one-line ``repr``."""
-    masks = (("computed", batch.computed), ("ok", batch.ok), ("flagged", batch.flagged))
-    counts = ", ".join(f"{int(np.count_nonzero(mask))} {name}" for name, mask in masks)
-    return f"{len(batch)} cases, {counts}"
+    """``"3 cases, 3 computed, 2 ok (1 marked: law extrapolated), 1 not ok"``: the counts of a
+    batch's one-line ``repr``. As ``ok`` reads them, the advisory flags
+    (``impactlab.flags.ADVISORY_FLAGS``) leave a case ok, counted as marked; "not ok" counts
+    the computed cases with another flag (computed = ok + not ok), as a sweep's summary
+    does."""
+    computed, ok = np.asarray(batch.computed, dtype=bool), np.asarray(batch.ok, dtype=bool)
+    flags = np.where(ok, np.asarray(batch.flags, dtype=np.int64), 0)
+    marked = ""
+    if np.any(flags):
+        names = [_FLAG_NAME[f] for f in ResultFlag if f & ADVISORY_FLAGS and np.any(flags & f)]
+        marked = f" ({int(np.count_nonzero(flags))} marked: {', '.join(names)})"
+    n, n_ok, bad = (int(np.count_nonzero(m)) for m in (computed, ok, computed & ~ok))
+    cases = f"{len(batch)} case{'s' * (len(batch) != 1)}"
+    return f"{cases}, {n} computed, {n_ok} ok{marked}, {bad} not ok"
+
+
+#: Each flag's name as its message begins (``"law extrapolated"``).
+_FLAG_NAME = {f: messages(int(f))[0].split(":")[0] for f in ResultFlag if f.value}
 
 
 def regime_series(values: np.ndarray, computed: np.ndarray) -> Any:

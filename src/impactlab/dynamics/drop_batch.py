@@ -257,7 +257,8 @@ def simulate_drops(
     closed worse than rtol promises) gets its status in ``DropBatchResult.status`` (its reason
     in ``messages``) and NaN outputs; it never stops the batch. ValueError for a bad body,
     flat, law, friction, gravity, rtol (with partial slip: up to 1e-5), stop or t_max (one
-    message naming it).
+    message naming it), and for a bad ``speed`` or ``incidence`` (checked before any case
+    runs, as ``simulate_batch`` does: each offending case named by its index).
     """
     refuse_rate(rate, "simulate_drops")
     body = check_body(body)

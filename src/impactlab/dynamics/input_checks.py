@@ -40,6 +40,7 @@ from impactlab.dynamics.kernels.inputs import (
     spin_allowed,
 )
 from impactlab.dynamics.kernels.layout import DEFAULT_RTOL
+from impactlab.dynamics.velocity_inputs import batch_velocity, velocity_given
 from impactlab.materials import G0, Material
 from impactlab.units import has_unit, magnitude
 
@@ -49,10 +50,13 @@ PLAUSIBLE_SPEED = 100.0
 
 
 def gravity_value(gravity: Any) -> float:
-    """True -> standard gravity 9.80665 m/s^2, False (or None) -> 0, a value (>= 0; a number in
-    m/s^2, a string with units or a pint Quantity) -> that value [m/s^2]."""
+    """True -> standard gravity 9.80665 m/s^2, False -> 0, a value (>= 0; a number in m/s^2, a
+    string with units or a pint Quantity) -> that value [m/s^2]; None is refused (ValueError:
+    it could mean either)."""
     if gravity is None:
-        return 0.0
+        raise ValueError(
+            "gravity must be True (9.80665 m/s^2), False (none) or a value in m/s^2, got None"
+        )
     if isinstance(gravity, bool | np.bool_):
         return G0 if gravity else 0.0
     g = check_nonnegative("gravity", gravity, "m/s^2")
@@ -161,17 +165,24 @@ def check_angle(angle: Any, body: Rod | Sphere) -> float:
     hint = past_normal(th, unit) if 0.5 * math.pi < th < math.pi else ""
     if unit:
         raise ValueError(f"angle must be in (0, 90] deg, got {_as_given(angle)}{hint}")
-    if 0.5 * math.pi + PAST_NORMAL < th <= 90.0 + 1e-9:
-        hint += (
-            f"; if {th!r} is meant in degrees, pass math.radians({th!r}) = "
-            f"{math.radians(th):.6g} rad or the string '{th:g} deg'"
-        )
+    hint += degrees_hint(th)
     hint = f" ({math.degrees(th):.6g} deg){hint}" if hint else ""
     raise ValueError(f"angle must be in radians in (0, pi/2], got {th!r} rad{hint}")
 
 
 #: Up to this far past pi/2 [rad] a bare angle reads as a rod past the normal, not degrees.
 PAST_NORMAL = math.radians(10.0)
+
+
+def degrees_hint(th: float) -> str:
+    """``"; if 20.0 is meant in degrees, pass math.radians(20.0) = ..."`` for a bare angle
+    ``th`` [rad] in (pi/2 + PAST_NORMAL, 90], which reads as degrees; else ``""``."""
+    if not 0.5 * math.pi + PAST_NORMAL < th <= 90.0 + 1e-9:
+        return ""
+    return (
+        f"; if {th!r} is meant in degrees, pass math.radians({th!r}) = "
+        f"{math.radians(th):.6g} rad or the string '{th:g} deg'"
+    )
 
 
 def past_normal(th: float, deg: bool) -> str:
@@ -213,7 +224,7 @@ def check_velocity(velocity: Any) -> tuple[float, float]:
         isinstance(velocity, np.ndarray) and velocity.ndim == 0
     ):  # one number, not a pair: say it as the user wrote it
         raise ValueError(
-            f"velocity must be a pair (vx, vy) in m/s, got one number, {_velocity_given(given)} "
+            f"velocity must be a pair (vx, vy) in m/s, got one number, {velocity_given(given)} "
             f"(a vertical drop: velocity=(0.0, {-abs(float(velocity)):g}))"
         )
     if isinstance(velocity, Mapping | set | frozenset):  # no order, or keys for values
@@ -229,12 +240,6 @@ def check_velocity(velocity: Any) -> tuple[float, float]:
         check_speed(name, check_finite(name, v, "m/s"))
         for name, v in (("velocity[0] (vx)", vx), ("velocity[1] (vy)", vy))
     )
-
-
-def _velocity_given(value: Any) -> str:
-    """A velocity as the user gave it: a string quoted, a Quantity with its unit."""
-    quantity = hasattr(value, "magnitude") and hasattr(value, "units")
-    return f"{value.magnitude!r} {value.units:~}" if quantity else repr(value)
 
 
 def velocity_from(velocity: Any, speed: Any, incidence: Any) -> Any:
@@ -268,76 +273,6 @@ def velocity_from(velocity: Any, speed: Any, incidence: Any) -> Any:
             f"{math.degrees(th):.6g} deg{'' if has_unit(incidence) else hint}"
         )
     return (v * math.sin(th), -v * math.cos(th))
-
-
-def batch_velocity(
-    vx: Any, vy: Any, speed: Any, incidence: Any, velocity: Any = None
-) -> tuple[Any, Any]:
-    """(vx, vy) of a batch: as given (vx None: 0), the pair ``velocity`` = (vx, vy) (each a
-    scalar or an array, broadcast as vx= and vy= are), or from speed and incidence (scalars or
-    arrays, element by element). ValueError when more than one of these or none is given."""
-    if velocity is not None:
-        if vx is not None or vy is not None or speed is not None or incidence is not None:
-            given = [k for k, v in (("vx", vx), ("vy", vy), ("speed", speed)) if v is not None]
-            given += ["incidence"] if incidence is not None else []
-            raise ValueError(
-                f"give either velocity=(vx, vy), vx= and vy=, or speed= and incidence=, not "
-                f"velocity= with {'= and '.join(given)}= (they say the same thing)"
-            )
-        return _velocity_pair(velocity)
-    if speed is None and incidence is None:
-        if vy is None:
-            raise ValueError("vy is required (or velocity=(vx, vy), or speed= and incidence=)")
-        return (0.0 if vx is None else vx), vy
-    if vx is not None or vy is not None:
-        raise ValueError("give either vx/vy or speed= and incidence=, not both")
-    if speed is None or incidence is None:
-        missing = "speed" if speed is None else "incidence"
-        raise ValueError(f"speed and incidence go together: {missing} is missing")
-    v = np.asarray(magnitude("speed", speed, "m/s"), dtype=np.float64)
-    th = np.asarray(magnitude("incidence", incidence, "rad"), dtype=np.float64)
-    return v * np.sin(th), -v * np.cos(th)
-
-
-def _velocity_pair(velocity: Any) -> tuple[Any, Any]:
-    """The two components of a batch's ``velocity=(vx, vy)``, each a scalar or a 1-D array (or
-    one array or Quantity whose first axis has length 2); ValueError otherwise, and for a 2 x 2
-    input of lists or one array: two cases' (vx, vy) pairs would read as (vx, vy) arrays."""
-    if not isinstance(velocity, str | bytes | Mapping | set | frozenset):
-        try:
-            if len(velocity) == 2:
-                vx, vy = velocity
-                if _pairs(velocity, vx, vy):
-                    raise ValueError(
-                        f"velocity: {' '.join(_velocity_given(velocity).split())} could be two "
-                        "cases' (vx, vy) pairs or the arrays (vx, vy); pass vx= and vy= (each a "
-                        "number or a 1-D array), or velocity=(np.array(vx), np.array(vy))"
-                    )
-                if all(s is not None and len(s) <= 1 for s in map(_shape, (vx, vy))):
-                    return vx, vy
-        except TypeError:  # no length: one number
-            pass
-    raise ValueError(
-        f"velocity must be a pair (vx, vy) in m/s, each a number or a 1-D array (or pass vx= "
-        f"and vy=), got {_velocity_given(velocity)}"
-    )
-
-
-def _pairs(velocity: Any, vx: Any, vy: Any) -> bool:
-    """True for a 2 x 2 ``velocity=`` that could be two cases' (vx, vy) pairs: one 2 x 2 array,
-    or two lists of two (``velocity=(np.array(vx), np.array(vy))`` states its components)."""
-    arrays = [isinstance(v, np.ndarray) or hasattr(v, "magnitude") for v in (velocity, vx, vy)]
-    if arrays[0]:
-        return _shape(velocity) == (2, 2)
-    return _shape(vx) == _shape(vy) == (2,) and not (arrays[1] and arrays[2])
-
-
-def _shape(value: Any) -> tuple[int, ...] | None:
-    """The shape of a number, an array, a Quantity or nested lists (None: ragged lists)."""
-    try:
-        return tuple(np.shape(value))
-    except ValueError:
-        return None
 
 
 #: How to build a body, for a class given where an instance is needed.
@@ -395,6 +330,6 @@ __all__ = [
     "PARTIAL_SLIP_RTOL_MAX", "PAST_NORMAL", "PLAUSIBLE_SPEED", "batch_velocity", "check_angle",
     "check_body", "check_constant_angle", "check_dent_grid", "check_flat", "check_mu",
     "check_partial_slip_rtol", "check_rtol", "check_speed", "check_spin", "check_velocity",
-    "contact_reach", "given_body", "gravity_value", "mu_problem", "past_normal", "velocity_from",
-    "warn_fast",
+    "contact_reach", "degrees_hint", "given_body", "gravity_value", "mu_problem", "past_normal",
+    "velocity_from", "warn_fast",
 ]  # fmt: skip

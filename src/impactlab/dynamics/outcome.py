@@ -99,7 +99,8 @@ def status_error(
     jam: float | None = None,
 ) -> ValueError:
     """The ValueError of an impact that ended with engine ``status`` (not ``ST_OK``); ``vn``
-    [m/s] and ``gravity`` [m/s^2], where known, explain an impact that never separates; ``jam``
+    [m/s] and ``gravity`` [m/s^2], where known, explain an impact that never separates or
+    chatters under gravity (a slow grazing slide); ``jam``
     (``slip_jam``) one whose interference ran away under friction."""
     if status == S.ST_LAW_LIMIT and jam is not None:
         text = (
@@ -141,6 +142,13 @@ def status_error(
             )
         else:
             text += ": raise the approach speed (or rtol, for a contact this slow)"
+    elif status == S.ST_TOO_MANY_EVENTS and vn is not None and gravity:
+        text = (
+            f"{S.STATUS_MESSAGES[status]}: the contact point approached the flat at "
+            f"{-vn:.3g} m/s; a slow or grazing contact that gravity ({gravity:g} m/s^2) keeps "
+            f"pressing onto the flat can switch without end: raise the approach speed, or pass "
+            f"gravity=False"
+        )
     else:
         text = S.STATUS_MESSAGES.get(status, f"engine status {status}")
     return ValueError(prefix + text)
