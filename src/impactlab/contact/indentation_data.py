@@ -11,6 +11,7 @@ by ``impactlab.fe.tabulated``), an FE run of one's own, or measured data
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import json
 import math
@@ -259,6 +260,16 @@ class IndentationCurves:
                 dr / dm,
                 elastic_limit=float(d[0] / dc),
             )
+        finally:
+            _ROWS_WARNED.reset(token)
+
+    def with_source(self, source: str) -> IndentationCurves:
+        """The same curves with ``source`` (a non-empty string: where they come from)."""
+        if not isinstance(source, str) or not source.strip():
+            raise ValueError(f"source must be a non-empty string, got {source!r}")
+        token = _ROWS_WARNED.set(True)  # the same data: warned about once, when made
+        try:
+            return dataclasses.replace(self, source=source)
         finally:
             _ROWS_WARNED.reset(token)
 

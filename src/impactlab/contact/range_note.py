@@ -9,6 +9,7 @@ not say whether the law was ever checked against FE for the pair; ``ImpactResult
 
 from __future__ import annotations
 
+import hashlib
 import math
 from typing import Any
 
@@ -19,15 +20,44 @@ from impactlab.contact.names import Law
 from impactlab.contact.ranges import STATUSES, law_range, range_limit, range_status
 from impactlab.contact.verified_ranges import e_star_over_sy_span, verified_upper
 
-__all__ = ["range_note"]
+__all__ = ["note_source", "range_note"]
+
+#: The source of the curves behind each table of the tabulated law built in this process
+#: (``Tabulated.build``: ``note_source``), by the digest of the table.
+_SOURCES: dict[str, str] = {}
+
+
+def _digest(params: Any) -> str:
+    """SHA-256 of the curve table of a tabulated law's SI parameters ``params``."""
+    table = np.ascontiguousarray(np.asarray(params, dtype=np.float64)[k.NPARAM :])
+    return hashlib.sha256(table[: k.CURVE_LENGTH].tobytes()).hexdigest()
+
+
+def note_source(params: Any, source: str) -> None:
+    """Remember ``source`` (the curves' name and source) for the table of the tabulated law's
+    SI parameters ``params``: ``range_note`` names it."""
+    _SOURCES[_digest(params)] = source
+
+
+def _tabulated(p: np.ndarray) -> str:
+    """The tabulated law's line: its table's end (the hard limit) in m and delta_c, and the
+    source of its curves where a law of this process built them."""
+    end, dc = float(p[k.P_DLIM]), float(p[k.P_TB_DC])
+    source = _SOURCES.get(_digest(p), "")
+    source = f"; source: {source}" if source else ""
+    return (
+        f"tabulated: interpolated from its curves up to their end, {end:.4g} m "
+        f"({end / dc:.4g} delta_c), and refused beyond it{source}"
+    )
 
 
 def range_note(law_id: int, params: Any) -> str | None:
     """``verified against FE up to 1 delta_c (E*/S_y = 360; FE cases 28-1731)``, or
     ``unverified: E*/S_y = 2198 outside the FE cases' 28-1731; stand-in limit 1 delta_c``,
     or the stand-in's status (``contact.ranges.STATUSES``) and limit for a law without a
-    verified range (the tabulated law: its data's end); None for an unknown law or without
-    parameters (SI parameters ``params`` of ``ContactModel.params``).
+    verified range (the tabulated law: its data's end in m and delta_c, and the source of its
+    curves where this process built the law: ``note_source``); None for an unknown law or
+    without parameters (SI parameters ``params`` of ``ContactModel.params``).
 
     A verified upper end is in Jackson-Green's delta_c, as in the docs and ``impactlab laws
     --accuracy``; where the law's own reference interference differs (Kogut-Komvopoulos' and
@@ -60,10 +90,7 @@ def range_note(law_id: int, params: Any) -> str | None:
         )
     meaning = STATUSES.get(status, "")
     if status == "tabulated":  # its data are its range: FE curves, or a user's own
-        return (
-            "tabulated: interpolated from its curves (the FE indentations for 'tabulated', the "
-            "user's data for a registered law) and refused beyond their end"
-        )
+        return _tabulated(p)
     if math.isinf(limit):
         return f"{status}, not verified against FE: {meaning}"
     return f"{status}, not verified against FE ({meaning}): limit {upper}"

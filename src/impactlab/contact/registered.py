@@ -35,6 +35,7 @@ import numpy as np
 from impactlab._validation import check_finite, check_positive, warn_implausible
 from impactlab.contact._common import jg_critical
 from impactlab.contact.indentation_data import IndentationCurves, curves_from_record
+from impactlab.contact.names import Law
 from impactlab.contact.table_input import (
     HERTZ_TOLERANCE,
     PLAUSIBLE_RADIUS,
@@ -42,7 +43,12 @@ from impactlab.contact.table_input import (
     radius_hint,
     two,
 )
-from impactlab.contact.tabulated import Tabulated, interpolation_error
+from impactlab.contact.tabulated import (
+    Tabulated,
+    interpolation_error,
+    loading_fit,
+    loading_points,
+)
 from impactlab.materials import ContactPair
 
 #: Largest relative force error and largest delta_r/delta_max error allowed by default between
@@ -54,6 +60,9 @@ DEFAULT_POINTS = 64
 CHECKS_PER_INTERVAL = 7
 #: The format of a registered law's record.
 RECORD_FORMAT = "impactlab registered law"
+#: Largest relative difference allowed between a table's loading fit and any of its loading
+#: points past the first: the bound the tabulated law states for its fit (docs/laws/tabulated.md).
+TABLE_FIT_TOLERANCE = 0.025
 
 
 def check_law_name(name: Any) -> str:
@@ -66,7 +75,34 @@ def check_law_name(name: Any) -> str:
             f"law name must be lower-case letters, digits, '-' or '_', starting with a letter, "
             f"got {name!r}"
         )
+    builtin = next((str(law) for law in Law if law == name.replace("_", "-")), name)
+    if builtin != name:  # the built-in name itself: refused by the registry
+        raise ValueError(
+            f"law name {name!r} reads as the built-in law {builtin!r} ('_' for '-') and cannot "
+            f"be registered: choose another name"
+        )
     return str(name)
+
+
+def check_table_fit(name: str, curves: IndentationCurves) -> None:
+    """ValueError where the law's loading fit of ``curves`` departs from a loading point past
+    the first by more than ``TABLE_FIT_TOLERANCE`` in force, naming the largest departure,
+    the point (index, delta/delta_c, the data's F/F_Hertz) and what to check."""
+    x, z = loading_points(curves)
+    rel = np.expm1(1.5 * x[1:] - loading_fit(curves)(x[1:]) - z[1:])
+    j = int(np.argmax(np.abs(rel)))
+    if abs(rel[j]) <= TABLE_FIT_TOLERANCE:
+        return
+    i = int(np.flatnonzero(curves.delta > curves.elastic_limit)[j])
+    d, n = float(curves.delta[i]), curves.delta.size
+    raise ValueError(
+        f"law {name!r}: the law's loading fit departs from the data's force by "
+        f"{float(rel[j]):+.3g} (relative) at loading point index {i} (data row {i + 1} of "
+        f"{n}; delta/delta_c = {d:.4g}, the data's F/F_Hertz = {curves.force[i] / d**1.5:.4g}); "
+        f"the fit must stay within {100 * TABLE_FIT_TOLERANCE:g} % of every point: check that "
+        f"F/F_Hertz never rises past the first point (the tabulated law keeps it from rising, "
+        f"so that no impact gains energy) and that the forces hold no jump or kink"
+    )
 
 
 class RegisteredLaw(Tabulated):
@@ -90,6 +126,8 @@ class RegisteredLaw(Tabulated):
             raise ValueError(f"curves must be IndentationCurves, got {type(curves).__name__}")
         super().__init__(curves)
         self.name = check_law_name(name)  # type: ignore[misc]
+        if not sampled:  # a sampled law is checked against its callables (``sample_law``)
+            check_table_fit(name, curves)
         self.title = title or f"User law {name!r} ({curves.name})"  # type: ignore[misc]
         self.sampled = bool(sampled)
         if sampling_error is None:
@@ -338,8 +376,10 @@ __all__ = [
     "DEFAULT_TOLERANCE",
     "PLAUSIBLE_RADIUS",
     "RECORD_FORMAT",
+    "TABLE_FIT_TOLERANCE",
     "RegisteredLaw",
     "check_law_name",
+    "check_table_fit",
     "law_from_record",
     "sample_law",
 ]

@@ -118,8 +118,8 @@ def register_law(
     radius: Any = None,
     delta_max: Any = None,
     switch_interference: Any = None,
-    points: int = DEFAULT_POINTS,
-    tolerance: float = DEFAULT_TOLERANCE,
+    points: int | None = None,
+    tolerance: float | None = None,
     title: str = "",
     source: str = "",
     elastic_limit: Any = None,
@@ -131,11 +131,15 @@ def register_law(
     Give either ``curves`` (tables: ``IndentationCurves``, e.g. measured data through
     ``IndentationCurves.from_arrays`` or ``from_csv``) or the callables ``loading`` (F [N] at
     delta [m]) and ``unloading`` (delta_r [m] after loading to delta_max [m]) of ``pair`` and
-    a sphere of ``radius`` [m], sampled on ``points`` interferences up to ``delta_max`` [m]
-    and refused beyond ``tolerance`` (``contact.registered.sample_law``). The law is the
+    a sphere of ``radius`` [m], sampled on ``points`` interferences (default 64) up to
+    ``delta_max`` [m] and refused beyond ``tolerance`` (default 0.01;
+    ``contact.registered.sample_law``); with ``curves`` these sampling arguments are refused,
+    ``source`` replaces the curves' source, and a loading fit farther than 2.5 % from a point
+    of the tables is refused (``contact.registered.check_table_fit``). The law is the
     tabulated law of those curves (``law_id`` TABULATED): valid for pairs with the curves'
-    E*/S_y and nu, up to the last tabulated interference. ValueError for a built-in name, a
-    name already registered with other data, bad tables or callables (naming the value).
+    E*/S_y and nu, up to the last tabulated interference. ValueError for a built-in name (or
+    one with '_' for its '-'), a name already registered with other data, bad tables or
+    callables (naming the value).
     ``switch_interference`` [m]: where the sampled law leaves Hertz (default: the pair's
     Jackson-Green delta_c); ``elastic_limit`` is its name before 0.3 (a DeprecationWarning;
     ``IndentationCurves.elastic_limit`` is the same point as delta/delta_c). The lengths
@@ -168,8 +172,20 @@ def register_law(
                 "switch_interference applies to sampled callables; curves carry their own "
                 "elastic limit (IndentationCurves.elastic_limit, in delta/delta_c)"
             )
+        sampling = {"pair": pair, "radius": radius, "delta_max": delta_max}
+        sampling |= {"points": points, "tolerance": tolerance}
+        given = [key for key, value in sampling.items() if value is not None]
+        if given:
+            verb = "applies" if len(given) == 1 else "apply"
+            raise ValueError(
+                f"{', '.join(given)} {verb} to sampled callables; curves carry their own pair "
+                f"(E*/S_y, nu), range and fit: leave {', '.join(given)} out (source and title "
+                f"apply to both)"
+            )
         if not isinstance(curves, IndentationCurves):
             raise ValueError(f"curves must be IndentationCurves, got {type(curves).__name__}")
+        if source:
+            curves = curves.with_source(source)
         return add_law(RegisteredLaw(name, curves, title=title))
     if loading is None or unloading is None or pair is None or radius is None:
         raise ValueError(
@@ -186,8 +202,8 @@ def register_law(
         radius,
         delta_max,
         switch_interference=switch_interference,
-        points=points,
-        tolerance=tolerance,
+        points=DEFAULT_POINTS if points is None else points,
+        tolerance=DEFAULT_TOLERANCE if tolerance is None else tolerance,
         title=title,
         source=source,
     )

@@ -271,7 +271,7 @@ def read_table(path: Path, where: str, names: str) -> tuple[np.ndarray, np.ndarr
         if len(cells) != 2:
             raise ValueError(
                 f"{where} line {number} has {len(cells)} column(s), must have 2 columns "
-                f"({names}); " + _separator_hint(content)
+                f"({names}); " + _separator_hint(content, len(cells))
             )
         x, y = (_number(c) for c in cells)
         if x is None or y is None or not (math.isfinite(x) and math.isfinite(y)):
@@ -285,11 +285,14 @@ def read_table(path: Path, where: str, names: str) -> tuple[np.ndarray, np.ndarr
     return table[:, 0], table[:, 1], np.array(numbers)
 
 
-def _separator_hint(content: str) -> str:
-    """Why a row may not have 2 comma-separated columns: another separator, or a cut file."""
+def _separator_hint(content: str, columns: int) -> str:
+    """Why a row of ``columns`` comma-separated cells may not have 2: another separator, a
+    cut file (fewer), or columns the table does not take (more)."""
     for sep, what in ((";", "';'"), ("\t", "a tab")):
         if sep in content:
             return f"the line holds {what}: the file must be comma-separated"
+    if columns > 2:
+        return "the table takes exactly two: leave out the others (and write decimals with '.')"
     return "is the file truncated?"
 
 

@@ -41,6 +41,7 @@ from impactlab.contact.curve_table import CURVE_MAGIC, N_LOAD, N_RES
 from impactlab.contact.indentation_data import IndentationCurves, read_curves, shipped_curves
 from impactlab.contact.loading_fit import fit_loading, leave_one_out
 from impactlab.contact.names import Law
+from impactlab.contact.range_note import note_source
 from impactlab.materials import ContactPair
 
 #: Largest relative difference between the pair's E*/S_y and the curves', and of nu.
@@ -344,6 +345,7 @@ class Tabulated(ContactLaw):
             "residual_raised": residual_raised(c),
         }
         source = f"{c.name}: {c.source}"
+        note_source(full, source)  # for the law's range line (``range_note``)
         model = ContactModel(self.name, self.law_id, full, details, self.references, source)
         object.__setattr__(model, "pair", pair)
         return model
