@@ -268,13 +268,18 @@ def rod_option(key: str) -> Any:
 
 
 def parse_rod_table(table: Mapping[str, Any], prefix: str) -> dict[str, float]:
-    """The rod's properties in SI from a [rod] table (``prefix`` "rod.") or from the options
-    (``prefix`` "--"); an unknown key is an error listing the allowed ones."""
+    """The rod's properties in SI from a [rod] table (``prefix`` "rod."; quantity text or the
+    JSON's ``{value, unit}``) or the options (``prefix`` "--"); an unknown key is an error."""
     out: dict[str, float] = {}
     for key, value in table.items():
         if key not in ROD_FIELDS:
             raise UserError(f"unknown key {key!r} in [rod]; allowed: {', '.join(ROD_FIELDS)}")
         name = prefix + (key.replace("_", "-") if prefix == "--" else key)
+        if isinstance(value, Mapping) and set(value) != {"value", "unit"}:
+            raise UserError(f"{name} is a table of {sorted(value)}: give quantity text or "
+                            'a table of value and unit: { value = 0.46, unit = "kg" }')  # fmt: skip
+        if isinstance(value, Mapping):  # the JSON output's rod
+            value = f"{value['value']!r} {value['unit']}"
         out[key] = positive(value, ROD_FIELDS[key], name)  # type: ignore[assignment]
     return out
 

@@ -15,6 +15,7 @@ from impactlab._display import field_row
 from impactlab._json import quantity as quantity_json
 from impactlab._json import to_json
 from impactlab._validation import ImplausibleInputWarning
+from impactlab._version import __version__
 from impactlab.bodies import PAPER_ROD, Rod
 from impactlab.cli._common import (
     SI_UNITS,
@@ -187,7 +188,11 @@ def analyze_cmd(
             gravity=gravity,
         )
     if as_json:
-        print(json.dumps(analysis_json(res), indent=2))
+        options = {"rod": rod or "paper", "flat": flat, "geometry": geometry, "up": up,
+                   "marker_units": marker_units, "pixel_size": pixel_size,
+                   "height_unit": height_unit, "flip_heights": flip_heights,
+                   "gravity": gravity}  # fmt: skip
+        print(json.dumps(analysis_json(res, options), indent=2))
     else:
         _print_summary(res)
     if res.errors:
@@ -266,11 +271,16 @@ def _suffix_unit(key: str) -> str | None:
     return None
 
 
-def analysis_json(res: ExperimentResult) -> dict[str, Any]:
+def analysis_json(res: ExperimentResult, options: dict[str, Any] | None = None) -> dict[str, Any]:
     """The analysis as JSON (docs/json-schema.md): ``summary`` of quantities with their sigma,
     the inversion as ``impactlab invert --json`` writes it, the details (kinematics, dent,
-    engine comparison) with the unit of every quantity."""
+    engine comparison) with the unit of every quantity, the command's ``options`` as given
+    (what repeats the analysis; None and the default are written too) and the
+    ``impactlab_version``."""
     data = res.to_dict()
+    if options is not None:
+        data["options"] = dict(options)
+    data["impactlab_version"] = __version__
     data["summary"] = {
         k: quantity_json(est.value, est.unit, est.sigma) for k, est in res.summary().items()
     }

@@ -98,18 +98,18 @@ def _contact_table(result: DropResult) -> str:
     return "contacts\n" + "\n".join(lines)
 
 
-def _missing_as_nan(data: Any, units: Mapping[str, str]) -> Any:
+def missing_as_nan(data: Any, units: Mapping[str, str]) -> Any:
     """``data`` with each None (a value that does not exist, also in a pair) under a key with a
     unit made NaN: the JSON writes it as a quantity of value null (docs/json-schema.md)."""
     if isinstance(data, list) and any(isinstance(v, Mapping) for v in data):
-        return [_missing_as_nan(v, units) for v in data]
+        return [missing_as_nan(v, units) for v in data]
     if not isinstance(data, Mapping):
         return data
     out = {}
     for k, v in data.items():
         if k in units and (v is None or (isinstance(v, list) and None in v)):
             v = math.nan if v is None else [math.nan if x is None else x for x in v]
-        out[k] = _missing_as_nan(v, units)
+        out[k] = missing_as_nan(v, units)
     return out
 
 
@@ -120,7 +120,7 @@ def report_drop(result: DropResult, *, as_json: bool) -> None:
         units = {**SI_UNITS, **UNITS, **balance}
         data = result.to_dict()
         recorded = data.pop("input")  # the call as recorded: --from reads it back as it is
-        emit(_missing_as_nan(data, units) | {"input": recorded}, as_json=True, units=units)
+        emit(missing_as_nan(data, units) | {"input": recorded}, as_json=True, units=units)
         return
     print(_contact_table(result))
     print(textwrap.fill(LEGEND, width=100))

@@ -22,6 +22,7 @@ import typer
 
 from impactlab._display import field_row, format_value
 from impactlab._validation import read_text_file
+from impactlab._version import __version__
 from impactlab.cli._common import (
     SI_UNITS,
     UserError,
@@ -303,10 +304,7 @@ def indent_cmd(
     no_cache: bool = typer.Option(False, "--no-cache", help="Run even if cached."),
     plot: bool = typer.Option(False, "--plot", help=f"Write a figure ({FIGURE})."),
     out: Path = typer.Option(
-        Path("."),
-        "--out",
-        show_default=False,
-        help="Folder for the figure (default: the current one).",
+        Path("."), "--out", show_default=False, help="Folder for the figure (default: current)."
     ),
     as_json: bool = typer.Option(False, "--json", help="Machine-readable output (with curves)."),
 ) -> None:
@@ -371,7 +369,8 @@ def indent_cmd(
         materials = ("E", "nu", "yield_strength", "brinell_hardness", "meyer_index", "density")
         units = {**_UNITS, **{key: SI_UNITS[key] for key in materials}, "radius": "m", "mu": "1",
                  "true_stress": "Pa", "true_plastic_strain": "1"}  # fmt: skip
-        print(json.dumps(to_json({"case": case, "runs": payload}, units), indent=2))
+        doc = {"case": case, "runs": payload, "impactlab_version": __version__}
+        print(json.dumps(to_json(doc, units), indent=2))
     else:
         console.print(
             f"{_material_text(bm)} sphere ({sphere}, R = {R * 1e3:g} mm) on {_material_text(fm)}"

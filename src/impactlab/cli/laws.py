@@ -191,11 +191,13 @@ def register(app: typer.Typer) -> None:
 
 
 def _described(law: ContactLaw) -> dict[str, Any]:
-    """``law.describe()`` with each parameter's default as a quantity of its unit (JSON)."""
+    """``law.describe()`` with each parameter's default as a quantity of its unit (JSON), and
+    its ``unit`` as the JSON writes units (``"1"`` for a dimensionless one, not ``"-"``)."""
     info = law.describe()
     params = []
     for p in info.get("parameters", []):
         unit = p.get("unit") if p.get("unit") not in (None, "", "-") else "1"
+        p = {**p, "unit": unit}
         if isinstance(p.get("default"), float):
             p = {**p, "default": quantity_json(p["default"], unit)}
         params.append(p)

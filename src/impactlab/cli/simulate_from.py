@@ -14,6 +14,7 @@ parameters (they are the recorded law's).
 from __future__ import annotations
 
 import json
+import warnings
 from collections.abc import Callable, Iterable, Mapping
 from pathlib import Path
 from typing import Any
@@ -92,13 +93,16 @@ def load_record(path: Path) -> dict[str, Any]:
 
 
 def _recorded(record: Mapping[str, Any], path: Path) -> tuple[str, dict[str, Any]]:
-    """(the recorded function, its arguments) of ``record``; UserError when it is not one."""
-    from impactlab.dynamics.provenance import from_record, record_function
+    """(the recorded function, its arguments) of ``record``; UserError when it is not one. The
+    version's warning is left to the rerun (said once)."""
+    from impactlab.dynamics.provenance import RecordVersionWarning, from_record, record_function
 
     try:
         function = record_function(record)
         _check_recorded_keys(record)
-        return function, from_record(record)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", RecordVersionWarning)
+            return function, from_record(record)
     except (ValueError, TypeError) as exc:
         raise UserError(f"--from {str(path)!r}: {exc}") from None
 

@@ -17,7 +17,7 @@ from rich.text import Text
 from impactlab._files import write_text_atomic
 from impactlab._json import to_json
 from impactlab.cli._common import SI_UNITS, console, emit
-from impactlab.cli.drop import report_drop
+from impactlab.cli.drop import missing_as_nan, report_drop
 from impactlab.cli.output_paths import check_replaceable, save_figure
 from impactlab.dynamics import ImpactResult
 from impactlab.dynamics.drop_result import DropResult
@@ -76,6 +76,8 @@ def report_result(result: ImpactResult | DropResult, *, out: Path | None, as_jso
     sphere = not math.isfinite(result.angle)
     hidden = ("angle", "angle_out") if sphere else ()
     data = {k: v for k, v in result.to_dict().items() if k not in hidden}
+    recorded = data.pop("input")  # the record as written: its numbers are not result fields
+    data = missing_as_nan(data, SI_UNITS) | {"input": recorded}
     files = _save(result, data, out) if out is not None else []
     if as_json:
         emit({**data, "files": files}, as_json=True)

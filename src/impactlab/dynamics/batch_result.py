@@ -69,6 +69,9 @@ class BatchResult(BatchStatus):
     #: why each case refused for its inputs (ST_BAD_INPUT) is refused, by case index (the input,
     #: its value and its rule: ``messages``)
     refusals: Mapping[int, str] = field(default_factory=dict, repr=False)
+    #: what was simulated besides the per-case inputs (body, flat, gravity, rtol,
+    #: constant_angle, law_params), as ``to_xarray``'s attributes (``export.batch_setup``)
+    setup: Mapping[str, Any] = field(default_factory=dict, repr=False)
 
     def __post_init__(self) -> None:
         status = readonly_copy(self.status, np.int32)
@@ -110,6 +113,7 @@ class BatchResult(BatchStatus):
             "references",
             "law_range",
             "refusals",
+            "setup",
         ):
             raise AttributeError(name)
         try:
@@ -154,7 +158,8 @@ class BatchResult(BatchStatus):
         return with_units(df, schema.unit)
 
     def to_xarray(self) -> Any:
-        """An ``xarray.Dataset`` over ``case`` (units in attributes; ``dynamics.export``)."""
+        """An ``xarray.Dataset`` over ``case`` (units in attributes; what was simulated, the
+        sources and the impactlab version in the dataset's attributes; ``dynamics.export``)."""
         return batch_dataset(self)
 
     def to_pint(self, registry: Any = None) -> dict[str, Any]:

@@ -18,7 +18,13 @@ import numpy as np
 from impactlab import schema
 from impactlab._display import display_unit, format_number
 from impactlab._html import grid_html
-from impactlab.dynamics.kernels.layout import HISTORY_FIELDS, OUTPUT_FIELDS
+from impactlab._version import __version__
+from impactlab.dynamics.kernels.layout import (
+    DEFAULT_RTOL,
+    HISTORY_FIELDS,
+    OUTPUT_FIELDS,
+    PARTIAL_SLIP_RTOL,
+)
 from impactlab.dynamics.kernels.status import REGIME_NAMES, STATUS_MESSAGES
 from impactlab.flags import ResultFlag, messages
 from impactlab.references import Reference
@@ -27,6 +33,7 @@ __all__ = [
     "HISTORY_CATEGORIES",
     "batch_dataset",
     "batch_html",
+    "batch_setup",
     "flag_attrs",
     "history_dataframe",
     "history_units",
@@ -108,12 +115,51 @@ def _output_var(name: str, values: np.ndarray, ok: np.ndarray) -> tuple[Any, ...
     return ("case", codes, attrs)
 
 
+def batch_setup(
+    body: Any,
+    flat: Any,
+    *,
+    friction: str,
+    gravity: Any,
+    rtol: float | None,
+    constant_angle: bool,
+    law: Any = None,
+    law_params: Mapping[str, Any] | None = None,
+) -> dict[str, Any]:
+    """What a batch simulated besides its per-case inputs, as attributes that netCDF stores
+    (strings and numbers, as a sweep store's): ``body`` and ``flat`` (their descriptions),
+    ``body_record`` and ``flat_record`` (each as JSON text, the form of a result's ``input``:
+    ``impactlab.dynamics.provenance``), ``gravity`` [m/s^2], ``rtol`` (the tolerance used),
+    ``constant_angle`` (0 or 1) and, when given, ``law_params`` (JSON text, in the units of
+    ``law``'s parameters, as a result's ``input`` records them)."""
+    import json
+
+    from impactlab.dynamics.input_checks import gravity_value
+    from impactlab.dynamics.provenance import _law_params, encode
+
+    if rtol is None:
+        rtol = PARTIAL_SLIP_RTOL if friction == "partial_slip" else DEFAULT_RTOL
+    setup: dict[str, Any] = {
+        "body": str(body),
+        "body_record": json.dumps(encode(body)),
+        "flat": str(flat.name),
+        "flat_record": json.dumps(encode(flat)),
+        "gravity": gravity_value(gravity),
+        "rtol": float(rtol),
+        "constant_angle": int(bool(constant_angle)),
+    }
+    if law_params:
+        setup["law_params"] = json.dumps(_law_params(law, law_params))
+    return setup
+
+
 def batch_dataset(batch: Any) -> Any:
     """A ``BatchResult`` as an ``xarray.Dataset`` over the dimension ``case``: every input and
     output (SI, ``units`` and ``long_name`` attributes), ``max_delta_ratio``, ``status``, and
     ``regime``/``flags`` as integer codes whose meanings are in their attributes (-1 where the
-    case failed). Every attribute is a number, a string or a list of them:
-    ``ds.to_netcdf(path)`` writes it as it is."""
+    case failed); the dataset's attributes say what was simulated (law, friction, the batch's
+    ``setup``: :func:`batch_setup`), the sources and ``impactlab_version``. Every attribute is
+    a number, a string or a list of them: ``ds.to_netcdf(path)`` writes it as it is."""
     import xarray as xr  # heavy, needed only here
 
     status, out = np.asarray(batch.status), np.asarray(batch.out)
@@ -145,6 +191,8 @@ def batch_dataset(batch: Any) -> Any:
         "references": [r.key for r in refs],
         "dois": [r.doi for r in refs if r.doi],
         "source": "impactlab.simulate_batch",
+        "impactlab_version": __version__,
+        **getattr(batch, "setup", {}),
     }
     if batch.law_range is not None:
         attrs["law_range"] = batch.law_range

@@ -4,10 +4,11 @@
 with its material and sizes, the flat, the contact law and its parameters, the friction model and
 mu, angle, velocity, spin, gravity, the tolerance; for a drop its options ``rate``, ``stop``,
 ``t_max``), the function called (``function``) and the impactlab version; ``from_record`` reads
-such a record back into that function's arguments, and ``rerun`` runs it again (``impactlab
-simulate --from``). Every drop, of a rigid ``Rod`` or a ``FlexibleRod``, records
-``simulate_drop``: ``simulate`` takes no drop options for a rigid rod (its rigid engine is
-another model), so the drop's own function is the one that runs it again to the same numbers.
+such a record back into that function's arguments (a record that lacks a key is refused; one
+of another version warns), and ``rerun`` runs it again (``impactlab simulate --from``). Every
+drop, of a rigid ``Rod`` or a ``FlexibleRod``, records ``simulate_drop``: ``simulate`` takes no
+drop options for a rigid rod (its rigid engine is another model), so the drop's own function is
+the one that runs it again to the same numbers.
 
 Materials, bodies and contact models are written generically from their dataclass fields (the
 fields of ``__init__``), each as ``{"type": <class name>, <field>: <value>, ...}``, so a field added
@@ -20,13 +21,16 @@ as ``{"value": null, "unit": ..., "nonfinite": "nan"}``.
 from __future__ import annotations
 
 import dataclasses
+import json
 import math
+import warnings
 from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
 
 from impactlab._html import FIELD_UNITS
+from impactlab._validation import _caller_level
 from impactlab._version import __version__
 from impactlab.bodies import Rod, Sphere
 from impactlab.bodies.flexible_rod import FlexibleRod
@@ -38,18 +42,9 @@ from impactlab.dynamics.input_checks import gravity_value
 from impactlab.dynamics.kernels.layout import DEFAULT_RTOL, PARTIAL_SLIP_RTOL
 from impactlab.materials import ContactPair, Material
 
-__all__ = [
-    "FUNCTIONS",
-    "RECORD_FORMAT",
-    "SIMULATE",
-    "SIMULATE_DROP",
-    "decode",
-    "encode",
-    "from_record",
-    "input_record",
-    "record_function",
-    "result_record",
-]
+__all__ = ["FUNCTIONS", "KEYS", "RECORD_FORMAT", "SIMULATE", "SIMULATE_DROP",
+           "RecordVersionWarning", "check_version", "decode", "encode", "from_record",
+           "input_record", "record_function", "result_record"]  # fmt: skip
 
 #: The format of the record (raised when its layout changes).
 RECORD_FORMAT = 1
@@ -67,16 +62,9 @@ _TYPES: dict[str, type] = {
 
 #: SI units of ``simulate``'s scalar arguments (and of the body and material fields).
 UNITS: dict[str, str] = {
-    **FIELD_UNITS,
-    "angle": "rad",
-    "velocity": "m/s",
-    "spin": "rad/s",
-    "gravity": "m/s^2",
-    "mu": "1",
-    "rtol": "1",
-    "params": "1",
-    "t_max": "s",
-}
+    **FIELD_UNITS, "angle": "rad", "velocity": "m/s", "spin": "rad/s", "gravity": "m/s^2",
+    "mu": "1", "rtol": "1", "params": "1", "t_max": "s",
+}  # fmt: skip
 #: The unit written for a float field whose unit is not known here.
 _UNKNOWN_UNIT = "SI"
 
@@ -185,13 +173,18 @@ def _build(cls: type, values: dict[str, Any]) -> Any:
         values = {k: v for k, v in values.items() if k in ("name", "law_id", "params", "details")}
     if cls is Sphere and values.get("mass") is not None:
         values.pop("density", None)  # one of the two; the mass is what the dynamics use
-    known = {f.name for f in dataclasses.fields(cls) if f.init}
+    fields = [f for f in dataclasses.fields(cls) if f.init]
+    known = {f.name for f in fields}
     unknown = sorted(set(values) - known)
     if unknown:
         raise ValueError(
             f"the record's {cls.__name__} has field(s) {unknown} this impactlab does not know; "
             f"known: {sorted(known)}"
         )
+    required = [f.name for f in fields if f.default is f.default_factory is dataclasses.MISSING]
+    if lacking := [k for k in required if k not in values]:  # a field without a default
+        forms = ", ".join(_form(k) for k in lacking)
+        raise ValueError(f"the record's {cls.__name__} lacks {forms}: every record holds it")
     return cls(**values)
 
 
@@ -213,22 +206,11 @@ def _param_units(law: str) -> dict[str, str]:
 
 
 def input_record(
-    body: Any,
-    flat: Material,
-    *,
-    law: str | ContactModel,
-    law_params: Mapping[str, Any] | None,
-    friction: str,
-    mu: float,
-    angle: float | None,
-    velocity: tuple[float, float],
-    spin: float,
-    gravity: float,
-    constant_angle: bool | None,
-    rtol: float,
-    extra: Mapping[str, Any] | None = None,
-    function: str = SIMULATE,
-) -> dict[str, Any]:
+    body: Any, flat: Material, *, law: str | ContactModel, law_params: Mapping[str, Any] | None,
+    friction: str, mu: float, angle: float | None, velocity: tuple[float, float], spin: float,
+    gravity: float, constant_angle: bool | None, rtol: float,
+    extra: Mapping[str, Any] | None = None, function: str = SIMULATE,
+) -> dict[str, Any]:  # fmt: skip
     """The JSON-ready record of one call of ``function`` (``SIMULATE`` or ``SIMULATE_DROP``;
     SI, checked values; ``angle`` None for a sphere; ``constant_angle`` None: not an argument
     of ``function``; ``extra``: the drop's options ``rate``, ``stop``, ``t_max``)."""
@@ -295,6 +277,23 @@ def _rate_from_record(data: Any) -> Any:
 
 #: Keys of a record that are not arguments of ``simulate``.
 _META = ("impactlab_version", "format", "function")
+#: The keys every record of the format holds, by its function (``input_record`` writes them).
+_COMMON = ("format", "function", "body", "flat", "law", "law_params", "friction", "mu", "angle",
+           "velocity", "spin", "gravity", "rtol")  # fmt: skip
+KEYS = {SIMULATE: (*_COMMON, "constant_angle"), SIMULATE_DROP: (*_COMMON, "rate", "stop", "t_max")}
+
+
+def _form(key: str) -> str:
+    """``key`` named, with its quantity object's form (for the error that it is missing)."""
+    if key not in UNITS:
+        return repr(key)
+    value = "[vx, vy]" if key == "velocity" else "[...]" if key == "params" else "..."
+    return f'{key!r} ({{"value": {value}, "unit": "{UNITS[key]}"}})'
+
+
+class RecordVersionWarning(UserWarning):
+    """A record that another impactlab version wrote (or that names none) is run again: the
+    law defaults and the engine are this version's, so its numbers may differ."""
 
 
 def _input(record: Mapping[str, Any]) -> Mapping[str, Any]:
@@ -318,12 +317,29 @@ def record_function(record: Mapping[str, Any]) -> str:
     return str(function)
 
 
+def check_version(record: Mapping[str, Any]) -> None:
+    """RecordVersionWarning when ``record`` (or its ``input``) was written by another impactlab
+    than this one, or names no ``impactlab_version``."""
+    old = _input(record).get("impactlab_version", record.get("impactlab_version"))
+    if old == __version__:
+        return
+    said = "names no impactlab_version" if old is None else f"was written by impactlab {old}"
+    warnings.warn(
+        f"the record {said} and runs with impactlab {__version__}: the law defaults and the "
+        "engine are this version's, so its numbers may differ from the recorded result",
+        RecordVersionWarning,
+        stacklevel=_caller_level(),
+    )
+
+
 def from_record(record: Mapping[str, Any]) -> dict[str, Any]:
     """The keyword arguments of the record's function (:func:`record_function`) from a record
     of :func:`input_record` (or from a result's ``to_dict()`` / ``--json`` output, whose
-    ``input`` it reads). ValueError naming what is missing or unknown."""
-    record_function(record)
-    record = _input(record)
+    ``input`` it reads). ValueError naming what is missing (every key of the format:
+    ``KEYS``; a rerun never falls back on a default) or unknown; RecordVersionWarning
+    (:func:`check_version`)."""
+    function = record_function(record)
+    given, record = record, _input(record)
     missing = [k for k in ("body", "flat", "law", "velocity") if k not in record]
     if missing:
         raise ValueError(
@@ -333,6 +349,13 @@ def from_record(record: Mapping[str, Any]) -> dict[str, Any]:
     fmt = record.get("format", RECORD_FORMAT)
     if fmt != RECORD_FORMAT:
         raise ValueError(f"record format {fmt!r} is not supported (this impactlab reads 1)")
+    keys = KEYS[function] if "function" in record else ("function",)  # whose keys: unknown
+    if lacking := [_form(k) for k in keys if k not in record]:
+        raise ValueError(
+            f"the record lacks {', '.join(lacking)}: every record of the format holds each, and "
+            "a rerun without one would run on a default, not as recorded (docs/json-schema.md)"
+        )
+    check_version(given)
     if "law_data" in record:  # a user's law (register_law): registered here if need be
         # a --json output writes its numbers as quantity objects: back to numbers
         ensure_laws({str(record["law"]): decode(record["law_data"])})
@@ -345,7 +368,12 @@ def from_record(record: Mapping[str, Any]) -> dict[str, Any]:
     }
     if "rate" in record:
         args["rate"] = _rate_from_record(record["rate"])
-    args["velocity"] = tuple(args["velocity"])
+    v = args["velocity"]
+    if not isinstance(v, list | tuple) or not all(isinstance(x, float | int) for x in v):
+        shown = json.dumps(record["velocity"], default=str)
+        raise ValueError(f"the record's velocity {shown} is not a pair of numbers: write it as "
+                         '{"value": [vx, vy], "unit": "m/s"}')  # fmt: skip
+    args["velocity"] = tuple(v)
     return args
 
 
@@ -357,25 +385,14 @@ def result_record(result: Any) -> dict[str, Any] | None:
     if call is None:
         return None
     body, flat, law, law_params, gravity, constant_angle, rtol, drop_options, *function = call
-    if rtol is None:
-        if drop_options is not None:
-            rtol = DROP_RTOL
-        else:
-            rtol = PARTIAL_SLIP_RTOL if result.friction == "partial_slip" else DEFAULT_RTOL
+    if rtol is None and drop_options is not None:
+        rtol = DROP_RTOL
+    elif rtol is None:
+        rtol = PARTIAL_SLIP_RTOL if result.friction == "partial_slip" else DEFAULT_RTOL
     angle = result.angle if isinstance(body, Rod | FlexibleRod) else None
     return input_record(
-        body,
-        flat,
-        law=law,
-        law_params=law_params,
-        friction=result.friction,
-        mu=result.mu,
-        angle=angle,
-        velocity=result.velocity_in,
-        spin=result.spin_in,
-        gravity=gravity_value(gravity),
-        constant_angle=constant_angle,
-        rtol=rtol,
-        extra=drop_options,
-        function=function[0] if function else SIMULATE,
-    )
+        body, flat, law=law, law_params=law_params, friction=result.friction, mu=result.mu,
+        angle=angle, velocity=result.velocity_in, spin=result.spin_in,
+        gravity=gravity_value(gravity), constant_angle=constant_angle, rtol=rtol,
+        extra=drop_options, function=function[0] if function else SIMULATE,
+    )  # fmt: skip

@@ -14,6 +14,7 @@ import numpy as np
 
 from impactlab import schema
 from impactlab._display import flag_names
+from impactlab._json import jsonable
 from impactlab._version import __version__
 from impactlab.contact.range_note import range_note
 from impactlab.contact.ranges import (
@@ -194,7 +195,9 @@ class ImpactResult(DerivedOutputs, ResultDisplay):
         ``fitted_range_status`` and ``extrapolated``, as a drop's;
         ``flags`` as an int, ``warnings`` as a list; history as lists of columns if asked). A
         sphere has no ``angle`` and ``angle_out`` (left out, as by ``impactlab simulate --json``
-        and ``summary()``; its ``input`` records ``angle`` as None)."""
+        and ``summary()``; its ``input`` records ``angle`` as None). Strict JSON, as a drop's:
+        a value that is NaN or infinite (``fitted_delta_ratio_max`` of a law without a verified
+        range) is None."""
         d: dict[str, Any] = {}
         for name in self.__dataclass_fields__:
             if name.startswith("_") or name in ("history", "references"):
@@ -216,7 +219,7 @@ class ImpactResult(DerivedOutputs, ResultDisplay):
         d["input"] = self.input
         if include_history and self.history is not None:
             d["history"] = {k: self.history[k].tolist() for k in HISTORY_FIELDS}
-        return d
+        return jsonable(d)
 
     def to_pint(self, registry: Any = None) -> dict[str, Any]:
         """The scalar fields (and ``max_delta_ratio``) as pint Quantities in SI, e.g.

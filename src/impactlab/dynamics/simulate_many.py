@@ -19,6 +19,7 @@ from impactlab.dynamics.batch import run_arrays
 from impactlab.dynamics.batch_result import BatchResult
 from impactlab.dynamics.batch_status import case_refusals
 from impactlab.dynamics.checks import checked_model
+from impactlab.dynamics.export import batch_setup
 from impactlab.dynamics.flex_simulate import FLEXIBLE_BATCH_ERROR
 from impactlab.dynamics.input_checks import (
     batch_velocity,
@@ -98,6 +99,9 @@ def simulate_batch(
     for its inputs names the input, its value and its rule) and never stop the batch; a
     computed case that gained energy or that gravity dominates is flagged in
     ``BatchResult.flags``. A speed above 100 m/s draws an ``ImplausibleInputWarning``.
+    ``speed`` and ``incidence`` are checked before any case runs, with ``simulate``'s rules
+    (speed finite and > 0, incidence within +-90 deg): a bad one refuses the call, naming each
+    offending case by its index.
     """
     if isinstance(body, FlexibleRod):
         raise ValueError(FLEXIBLE_BATCH_ERROR)
@@ -137,6 +141,16 @@ def simulate_batch(
         ),
         law_range=range_note(model.law_id, model.params),
         refusals=case_refusals(body, x, np.flatnonzero(status == ST_BAD_INPUT)),
+        setup=batch_setup(
+            body,
+            flat,
+            friction=fric.name,
+            gravity=gravity,
+            rtol=rtol,
+            constant_angle=constant_angle,
+            law=law,
+            law_params=law_params,
+        ),
     )
 
 
