@@ -21,13 +21,17 @@ Each ``verify_*`` function runs one family of cases and returns a :class:`Verifi
 * :func:`verify_critical_friction`: the engine's slip/stick boundary against
   ``impactlab.analytic.critical_friction`` (mu_c = a b / (k^2 + b^2)).
 * :func:`verify_reference`: the compiled engine against the independent ``solve_ivp``
-  implementation ``impactlab.dynamics.reference`` for every law and friction model.
+  implementation ``impactlab.dynamics.reference`` at rtol = 1e-11, for every law and the
+  friction models ``impulse_ratio``, ``coulomb`` and ``mindlin`` (``partial_slip`` has no
+  ``solve_ivp`` reference: the page checks it against its converged Mindlin-Deresiewicz
+  solution, Maw-Barber-Fawcett's problem and Kharaz's measurements).
 * :func:`verify_paper_durations`: the corrected analytic inversion (``impactlab.analytic.invert``)
   against the paper's 4.30 ms and 1.40 ms (doi:10.1007/s00419-015-1108-2, Tables 2-3).
 * :func:`verify_invariants`: every law and friction model on random impacts: the total energy
   never rises, 0 <= e <= 1, 0 <= e* <= 1, 0 <= delta_p <= delta_max.
 
-:func:`main` runs them all and writes the page and the PNG figures into a folder. Modules:
+:func:`main` runs them all and writes the page and the PNG figures into a folder;
+:func:`page_markdown` returns the page's text without writing it. Modules:
 ``table`` (:class:`VerificationTable`, :data:`TOLERANCES`), one module per family (``hertz``,
 ``thornton``, ``rigid``, ``reference``, ``durations``, ``invariants``), ``plots`` and ``page``.
 """
@@ -42,7 +46,7 @@ from impactlab.verification.hertz import (
     verify_hertz,
 )
 from impactlab.verification.invariants import verify_invariants
-from impactlab.verification.page import anchor, main, render_page, run_all
+from impactlab.verification.page import anchor, main, page_markdown, render_page, run_all
 from impactlab.verification.plots import (
     plot_critical_friction,
     plot_hertz_convergence,
@@ -67,6 +71,7 @@ __all__ = [
     "hertz_closed_form",
     "hertz_convergence",
     "main",
+    "page_markdown",
     "plot_critical_friction",
     "plot_hertz_convergence",
     "plot_thornton",

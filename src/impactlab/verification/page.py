@@ -28,7 +28,7 @@ from impactlab.verification.rigid import verify_critical_friction, verify_rigid_
 from impactlab.verification.table import VerificationTable
 from impactlab.verification.thornton import verify_thornton
 
-__all__ = ["anchor", "main", "render_page", "run_all"]
+__all__ = ["CONVERGENCE_RTOLS", "anchor", "main", "page_markdown", "render_page", "run_all"]
 
 
 def run_all(*, fast: bool = False) -> list[VerificationTable]:
@@ -112,6 +112,41 @@ def anchor(title: str) -> str:
     return s.strip("-")
 
 
+#: The engine tolerances of the Hertz convergence table (fast: the tests' quick run).
+CONVERGENCE_RTOLS = (1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10)
+_CONVERGENCE_RTOLS_FAST = (1e-5, 1e-7, 1e-9)
+
+
+def _convergence_section(conv: dict[str, np.ndarray]) -> str:
+    """The Hertz convergence table (``hertz_convergence``'s output) as a Markdown section."""
+    rows = "\n".join(
+        f"| {rt:.0e} | {eT:.1e} | {eF:.1e} | {ed:.1e} |"
+        for rt, eT, eF, ed in zip(conv["rtol"], conv["T"], conv["F"], conv["delta"], strict=True)
+    )
+    return (
+        "## Convergence of the engine (Hertz)\n\n"
+        "The sphere of the first Hertz row (R = 10 mm, 1 m/s, AISI 1010) at tightening "
+        "engine tolerances: the errors against the closed forms fall with `rtol` "
+        "(the default is " + _default_rtol() + ").\n\n"
+        "| rtol | rel. error T | rel. error F_max | rel. error delta_max |\n"
+        "|---|---|---|---|\n" + rows + "\n\n"
+        "![Convergence of the Hertz impact](hertz_convergence.png)\n"
+    )
+
+
+def _build(fast: bool) -> tuple[list[VerificationTable], dict[str, np.ndarray], str]:
+    """Every family's table, the Hertz convergence data and the page's Markdown."""
+    tables = run_all(fast=fast)
+    conv = hertz_convergence(_CONVERGENCE_RTOLS_FAST if fast else CONVERGENCE_RTOLS)
+    return tables, conv, render_page(tables, extra_sections=[_convergence_section(conv)])
+
+
+def page_markdown(*, fast: bool = False) -> str:
+    """The page's Markdown exactly as :func:`main` writes it, without writing anything
+    (every family run; ``fast`` as in :func:`run_all`)."""
+    return _build(fast)[2]
+
+
 def main(
     out_dir: str | Path = "docs/verification",
     *,
@@ -119,13 +154,12 @@ def main(
     figures: bool = True,
     log: Callable[[str], None] | None = print,
 ) -> list[VerificationTable]:
-    """Run every verification, write ``index.md`` and the PNG figures into ``out_dir``
-    (created if needed; only these files are written) and return the tables."""
+    """Run every verification, write ``index.md`` and (``figures``) the PNG figures into
+    ``out_dir`` (created if needed; only these files are written) and return the tables."""
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     t0 = time.perf_counter()
-    tables = run_all(fast=fast)
-    extra: list[str] = []
+    tables, conv, text = _build(fast)
     if figures:
         for t in tables:
             if t.key == "thornton" and t.figure:
@@ -134,27 +168,9 @@ def main(
                 plot_critical_friction(t, out / t.figure, grid=(12, 10) if fast else (44, 37))
             elif t.key == "partial_slip":
                 plot_partial_slip(out, fast=fast)
-        conv = hertz_convergence(
-            (1e-5, 1e-7, 1e-9) if fast else (1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10)
-        )
         plot_hertz_convergence(conv, out / "hertz_convergence.png")
-        rows = "\n".join(
-            f"| {rt:.0e} | {eT:.1e} | {eF:.1e} | {ed:.1e} |"
-            for rt, eT, eF, ed in zip(
-                conv["rtol"], conv["T"], conv["F"], conv["delta"], strict=True
-            )
-        )
-        extra.append(
-            "## Convergence of the engine (Hertz)\n\n"
-            "The sphere of the first Hertz row (R = 10 mm, 1 m/s, AISI 1010) at tightening "
-            "engine tolerances: the errors against the closed forms fall with `rtol` "
-            "(the default is " + _default_rtol() + ").\n\n"
-            "| rtol | rel. error T | rel. error F_max | rel. error delta_max |\n"
-            "|---|---|---|---|\n" + rows + "\n\n"
-            "![Convergence of the Hertz impact](hertz_convergence.png)\n"
-        )
     elapsed = time.perf_counter() - t0
-    (out / "index.md").write_text(render_page(tables, extra_sections=extra), encoding="utf-8")
+    (out / "index.md").write_text(text, encoding="utf-8")
     if log is not None:
         for t in tables:
             log(

@@ -225,23 +225,28 @@ works; the rigid rod and the sphere are supported, one at a time and in the batc
 **Convergence and cost.** The error of N cells against the exact solution falls like N^-2
 (prototype: max |e_t - exact| 0.023, 0.0092, 0.0038, 7.8e-4, 1.8e-4 for N = 2, 4, 8, 16, 32;
 tests/dynamics/test_partial_slip_invariants.py checks the order); 16 cells give ~1e-3. An
-impact takes 30-70 events and 60-550 steps (median 103), about 0.26 ms (warm, in the batch):
-16-18 times the `mindlin` model (`benchmarks/bench_partial_slip.py`;
-docs/engine/partial-slip-steps.md).
+impact takes 30-70 events and 60-550 steps (median 103 over the 243 impacts of
+`tools/partial_slip_compare.py`) and about 0.17-0.18 ms of CPU (warm, in the batch, one
+thread): 13.3 and 13.9 times the `mindlin` model in two runs of
+`benchmarks/bench_partial_slip.py` (its 20 cases, 168-169 us per impact), 14.6 and 15.2 times
+in two runs over the 243 impacts (`benchmarks/bench_partial_slip_spread.py`, 182-183 us),
+as measured in docs/engine/partial-slip-steps.md ("Cost"; the last run of each in
+`benchmarks/results/partial_slip.json` and `partial_slip_spread.json`).
 
 **Validity.** Exact within the Cattaneo-Mindlin assumptions (half-spaces, no normal-tangential
 coupling: similar materials or small Dundurs beta, tangential load in one direction, local
 Coulomb friction with one mu) for the elastic laws and on every Hertzian unloading branch. On
 an elastic-plastic loading branch the Coulomb limit keeps the Hertzian shape scaled to the law's
 F_n and a, and the tangential compliance is elastic with the actual (plastic) radius
-(8 G* a, as in Thornton et al. 2013): an assumption, not verified against plastic contact
-mechanics. **Not modelled**: tangential plastic flow, the dent's own tangential compliance,
-pile-up, rate effects, normal-tangential coupling, a spin about the normal.
+(8 G* a, as in Thornton, Cummins & Cleary, Powder Technol. 233 (2013) 30): an assumption,
+not verified against plastic contact mechanics. **Not modelled**: tangential plastic flow, the
+dent's own tangential compliance, pile-up, rate effects, normal-tangential coupling, a spin
+about the normal.
 
 **References used here.** "Exact M-D" is the exact solution of the same impact by the
 prototype's fixed-step MDR reference (600 elements, converged to ~1e-5; values and provenance in
 `impactlab.verification.partial_slip`). Maw, Barber & Fawcett (Wear 38 (1976) 101,
-doi:10.1016/0043-1648(76)90063-6): no digitised curve was available, so their theory is this
+doi:10.1016/0043-1648(76)90201-5): no digitised curve was available, so their theory is this
 exact solution of their problem (features checked: forward rebound at small psi1, reversal for
 0.8 < psi1 < 5.8, gross slip psi2 = psi1 - 4 chi from psi1 ~ 4.75). Kharaz, Gorham & Salman
 (Powder Technol. 120 (2001) 281, doi:10.1016/S0032-5910(01)00283-2): second-hand digitised means
