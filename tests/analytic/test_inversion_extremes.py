@@ -11,21 +11,14 @@ import warnings
 from typing import Any
 
 import pytest
+from inversion_cases import PAPER_20
 
 from impactlab.analytic import invert
 from impactlab.analytic._conditioning import check_finite_result
 from impactlab.analytic._measurements import MIN_SPEED, PLAUSIBLE_MIN_SPEED
 from impactlab.analytic.result import Measured
 
-BASE: dict[str, Any] = {
-    "angle": math.radians(20),
-    "v_i": -1.41,
-    "e": 0.5,
-    "mu": 0.2,
-    "delta_p": 22e-6,
-    "sliding_length": 1400e-6,
-    "n_samples": 500,
-}
+BASE: dict[str, Any] = {**PAPER_20, "n_samples": 500}
 NUMBERS = ("duration", "mean_force", "sigma_T_linear", "sigma_F_linear", "T_mc", "F_mc",
            "sigma_T_mc", "sigma_F_mc")  # fmt: skip
 

@@ -6,13 +6,13 @@ and a measurement file's ``samples`` and ``seed`` are integers."""
 from __future__ import annotations
 
 import json
-import math
 import warnings
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
 import pytest
+from inversion_cases import PAPER_20
 
 import impactlab as il
 from impactlab.analytic import invert
@@ -21,15 +21,6 @@ from impactlab.analytic.inversion import MC_REJECTED_WARNING
 
 CliMain = Callable[..., tuple[int, str, str]]
 
-#: The paper's 20 deg drop (SI), the dent as magnitudes.
-PAPER_20: dict[str, Any] = {
-    "angle": math.radians(20),
-    "v_i": -1.41,
-    "e": 0.5,
-    "mu": 0.2,
-    "delta_p": 22e-6,
-    "sliding_length": 1400e-6,
-}
 #: The same drop on the command line.
 PAPER_20_ARGS = (
     "invert", "--angle", "20 deg", "--vi", "-1.41 m/s", "--e", "0.5", "--mu", "0.2",

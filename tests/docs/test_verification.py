@@ -10,7 +10,8 @@ import pytest
 
 from impactlab import verification as V
 from impactlab.analytic import critical_friction
-from impactlab.bodies import PAPER_ROD, Sphere, rigid_impulse
+from impactlab.bodies import PAPER_ROD, rigid_impulse
+from impactlab.verification.reference import case_inputs
 
 ROOT = Path(__file__).resolve().parents[2]
 PAGE = ROOT / "docs" / "verification" / "index.md"
@@ -126,14 +127,7 @@ def test_reference_is_converged_at_its_rtol() -> None:
 
     worst = 0.0
     for c in V.reference_cases():
-        body = PAPER_ROD if c["body"] == "rod" else Sphere(0.01)
-        kw = {
-            "law": c["law"],
-            "friction": c["friction"],
-            "mu": c["mu"],
-            "angle": math.radians(c["angle"]) if c["body"] == "rod" else None,
-            "velocity": (c["vx"], c["vy"]),
-        }
+        body, kw = case_inputs(c)
         a = simulate_reference(body, rtol=1e-11, **kw)
         b = simulate_reference(body, rtol=1e-12, **kw)
         scale = {

@@ -16,7 +16,7 @@ from impactlab.dynamics.reference import simulate_reference
 from impactlab.friction import FRICTION_IDS
 from impactlab.verification.table import TOLERANCES, VerificationTable, columns, worst_of
 
-__all__ = ["REFERENCE_RTOL", "reference_cases", "verify_reference"]
+__all__ = ["REFERENCE_RTOL", "case_inputs", "reference_cases", "verify_reference"]
 
 #: The reference's relative tolerance: that of the engine's accuracy contract
 #: (tests/dynamics/test_accuracy.py), so that the errors are the engine's, not the reference's.
@@ -117,9 +117,9 @@ against its converged solution, Maw-Barber-Fawcett's problem and Kharaz's data b
 """
 
 
-def _compare(c: Mapping[str, Any]) -> dict[str, Any]:
-    """One case (a record of :func:`reference_cases`): the engine against the reference, with
-    the scaled errors, the regimes and a status."""
+def case_inputs(c: Mapping[str, Any]) -> tuple[Any, dict[str, Any]]:
+    """The body and the keyword arguments of ``simulate`` for one case of
+    :func:`reference_cases`."""
     body = PAPER_ROD if c["body"] == "rod" else Sphere(0.01)
     kw = {
         "law": c["law"],
@@ -128,6 +128,13 @@ def _compare(c: Mapping[str, Any]) -> dict[str, Any]:
         "angle": math.radians(c["angle"]) if c["body"] == "rod" else None,
         "velocity": (c["vx"], c["vy"]),
     }
+    return body, kw
+
+
+def _compare(c: Mapping[str, Any]) -> dict[str, Any]:
+    """One case (a record of :func:`reference_cases`): the engine against the reference, with
+    the scaled errors, the regimes and a status."""
+    body, kw = case_inputs(c)
     rec: dict[str, Any] = {
         "case": f"{c['body']} {c['angle']:g} deg, v = "
         f"({c['vx']:g}, {c['vy']:g}) m/s, mu = {c['mu']:g}",
