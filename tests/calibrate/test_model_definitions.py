@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 from impactlab._json import shape_problems
+from impactlab._version import __version__
 from impactlab.calibrate import (
     CalibrationWarning,
     CandidateModel,
@@ -167,6 +168,7 @@ def test_the_settings_hold_the_engine_and_the_models(template):
         "value": 0.05, "unit": "1"}}  # fmt: skip
     assert parse_model({"fixed": hb}).fixed == {"flat_brinell_hardness": 105.0, "damping": 0.05}
     assert doc["models"]["sy300"]["parameters"]["mu"]["tau"]["unit"] == "1"
+    assert doc["impactlab_version"] == __version__  # also in results.json
     saved = doc["settings"]["model_definitions"]["brake/coulomb"]
     assert saved["law_params"] == {"hardness": {"value": 105.0, "unit": "kgf/mm^2"},
                                    "meyer_index": {"value": 2.2, "unit": "1"}}  # fmt: skip

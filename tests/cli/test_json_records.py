@@ -100,14 +100,15 @@ def test_fe_indent_json_names_its_version(
     assert data["impactlab_version"] == il.__version__ and data["runs"] == []
 
 
-def test_calibrate_json_names_its_version(
+def test_calibrate_json_is_the_calibration_document_with_its_files(
     cli_main: CliMain, monkeypatch: pytest.MonkeyPatch, tmp_path: Path
 ) -> None:
     import impactlab.calibrate
     import impactlab.calibrate.jsonout
 
     monkeypatch.setattr(impactlab.calibrate, "calibrate", lambda **kwargs: object())
-    monkeypatch.setattr(impactlab.calibrate.jsonout, "calibration_json", lambda cal: {})
+    doc = {"impactlab_version": il.__version__}  # calibration_json's own (tests/calibrate)
+    monkeypatch.setattr(impactlab.calibrate.jsonout, "calibration_json", lambda cal: doc)
     drops = tmp_path / "drops.csv"
     drops.write_text("e\n0.5\n")
     data = _json(cli_main, "calibrate", str(drops), "-p", "mu=uniform(0, 0.6)", "--quiet")

@@ -12,6 +12,7 @@ wins), with ``impactlab simulate``'s rules (``cli.config_file``).
 
 from __future__ import annotations
 
+import json
 import math
 import sys
 import textwrap
@@ -22,6 +23,7 @@ from typing import Any, cast
 import typer
 
 from impactlab._display import display_unit, field_row
+from impactlab._json import jsonable, to_json
 from impactlab.bodies import PAPER_ROD
 from impactlab.cli._common import (
     KINEMATIC_HELP,
@@ -120,7 +122,8 @@ def report_drop(result: DropResult, *, as_json: bool) -> None:
         units = {**SI_UNITS, **UNITS, **balance}
         data = result.to_dict()
         recorded = data.pop("input")  # the call as recorded: --from reads it back as it is
-        emit(missing_as_nan(data, units) | {"input": recorded}, as_json=True, units=units)
+        doc = to_json(missing_as_nan(data, units), units) | {"input": jsonable(recorded)}
+        print(json.dumps(doc, indent=2))
         return
     print(_contact_table(result))
     print(textwrap.fill(LEGEND, width=100))

@@ -15,7 +15,7 @@ from pathlib import Path
 from rich.text import Text
 
 from impactlab._files import write_text_atomic
-from impactlab._json import to_json
+from impactlab._json import jsonable, to_json
 from impactlab.cli._common import SI_UNITS, console, emit
 from impactlab.cli.drop import missing_as_nan, report_drop
 from impactlab.cli.output_paths import check_replaceable, save_figure
@@ -79,8 +79,9 @@ def report_result(result: ImpactResult | DropResult, *, out: Path | None, as_jso
     recorded = data.pop("input")  # the record as written: its numbers are not result fields
     data = missing_as_nan(data, SI_UNITS) | {"input": recorded}
     files = _save(result, data, out) if out is not None else []
-    if as_json:
-        emit({**data, "files": files}, as_json=True)
+    if as_json:  # the record as it is: a law's data holds numbers under result fields' names
+        doc = to_json({k: v for k, v in data.items() if k != "input"}, SI_UNITS)
+        print(json.dumps(doc | {"input": jsonable(recorded), "files": files}, indent=2))
         return
     emit(result.summary(), as_json=False, title="impact", units=result.display_units())
     for f in files:
