@@ -135,7 +135,7 @@ def batch_setup(
     import json
 
     from impactlab.dynamics.input_checks import gravity_value
-    from impactlab.dynamics.provenance import _law_params, encode
+    from impactlab.dynamics.provenance import encode, law_params_record
 
     if rtol is None:
         rtol = PARTIAL_SLIP_RTOL if friction == "partial_slip" else DEFAULT_RTOL
@@ -149,7 +149,7 @@ def batch_setup(
         "constant_angle": int(bool(constant_angle)),
     }
     if law_params:
-        setup["law_params"] = json.dumps(_law_params(law, law_params))
+        setup["law_params"] = json.dumps(law_params_record(law, law_params))
     return setup
 
 

@@ -44,7 +44,7 @@ from impactlab.materials import ContactPair, Material
 
 __all__ = ["FUNCTIONS", "KEYS", "RECORD_FORMAT", "SIMULATE", "SIMULATE_DROP",
            "RecordVersionWarning", "check_version", "decode", "encode", "from_record",
-           "input_record", "record_function", "result_record"]  # fmt: skip
+           "input_record", "law_params_record", "record_function", "result_record"]  # fmt: skip
 
 #: The format of the record (raised when its layout changes).
 RECORD_FORMAT = 1
@@ -188,7 +188,7 @@ def _build(cls: type, values: dict[str, Any]) -> Any:
     return cls(**values)
 
 
-def _law_params(law: Any, given: Mapping[str, Any] | None) -> dict[str, Any] | None:
+def law_params_record(law: Any, given: Mapping[str, Any] | None) -> dict[str, Any] | None:
     """The given law parameters as quantity objects in the parameters' units (strings with
     units and pint Quantities converted; the law's defaults are those of the version)."""
     if not given:
@@ -223,7 +223,7 @@ def input_record(
         "body": encode(body),
         "flat": encode(flat),
         "law": encode(law),
-        "law_params": _law_params(law, law_params),
+        "law_params": law_params_record(law, law_params),
         "friction": friction,
         "mu": encode(float(mu), "mu"),
         "angle": None if angle is None else encode(float(angle), "angle"),
