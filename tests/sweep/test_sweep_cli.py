@@ -8,6 +8,7 @@ from pathlib import Path
 import pytest
 from sweep_fakes import run_cli
 
+import impactlab
 from impactlab._json import shape_problems
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
@@ -104,6 +105,7 @@ def test_run_resume_export_plot_info(tmp_path, monkeypatch, capsys) -> None:
     assert shape_problems(json.loads(out)) == []
     counts = json.loads(out)
     assert code == 0 and counts["chunks_done"] == counts["chunks_total"] == summary["chunks"]
+    assert counts["store_version"] == impactlab.__version__  # who wrote the store
     code, out, err = run_cli(monkeypatch, capsys, "sweep", "info", str(store))
     assert code == 0 and "0: ok = 40" in out and "{'" not in out  # no raw Python reprs
     changed = tmp_path / "changed.toml"

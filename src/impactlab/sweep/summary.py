@@ -194,8 +194,9 @@ def _intact_values(path: Path, name: str, damaged: set[int], done: set[int]) -> 
 
 
 def store_info(path: str | Path) -> dict[str, Any]:
-    """Progress and contents of the store at ``path``: title, study hash, mode, dimensions,
-    cases, chunks done (intact), damaged chunks, outputs, status counts and flagged results."""
+    """Progress and contents of the store at ``path``: title, study hash, the impactlab version
+    that wrote the store (``store_version``), mode, dimensions, cases, chunks done (intact),
+    damaged chunks, outputs, status counts and flagged results."""
     p = Path(path)
     ds = open_sweep(p, verify=False)
     store = SweepStore(p)
@@ -204,6 +205,7 @@ def store_info(path: str | Path) -> dict[str, Any]:
     info: dict[str, Any] = {
         "title": ds.attrs.get("title"),
         "study_hash": ds.attrs.get("study_hash"),
+        "store_version": ds.attrs.get("impactlab_version"),
         "mode": ds.attrs.get("mode"),
         "dims": {str(k): int(v) for k, v in ds.sizes.items()},
         "cases": ds.attrs.get("n_cases"),
