@@ -45,3 +45,27 @@ def test_the_commands_json_is_si(cli_main: CliMain) -> None:
     )  # fmt: skip
     assert code == 0, err
     assert _degrees(json.loads(out)) == []
+
+
+def test_the_saved_record_names_its_options_and_version(tmp_path: Path) -> None:
+    """results.json is the folder's record of the analysis: with the settings as given and the
+    version that made it, what repeats it."""
+    import tomllib
+
+    import numpy as np
+
+    import impactlab
+    from impactlab.experiment import MarkerGeometry, analyze
+
+    table = tomllib.loads((DATA / "markers.toml").read_text())["markers"]
+    geometry = MarkerGeometry.from_mapping(table)
+    analyze(
+        DATA / "drop.csv", None, geometry=geometry, up="+y", out_dir=tmp_path, figures=False,
+        n_samples=500,
+    )  # fmt: skip
+    record = json.loads((tmp_path / "results.json").read_text())
+    assert record["impactlab_version"] == impactlab.__version__
+    options = record["options"]
+    assert options["up"] == "+y" and options["n_samples"] == 500 and options["gravity"] is False
+    assert np.allclose(options["geometry"]["markers"], geometry.markers)
+    assert options["geometry"]["labels"] == list(geometry.labels or ())

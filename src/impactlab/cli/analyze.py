@@ -278,8 +278,8 @@ def analysis_json(res: ExperimentResult, options: dict[str, Any] | None = None) 
     (what repeats the analysis; None and the default are written too) and the
     ``impactlab_version``."""
     data = res.to_dict()
-    if options is not None:
-        data["options"] = dict(options)
+    if options is not None:  # the command's words where they differ (a rod by name)
+        data["options"] = {**data.get("options", {}), **options}
     data["impactlab_version"] = __version__
     data["summary"] = {
         k: quantity_json(est.value, est.unit, est.sigma) for k, est in res.summary().items()

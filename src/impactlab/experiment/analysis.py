@@ -28,6 +28,8 @@ import warnings
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 from impactlab import analytic
 from impactlab._validation import ImplausibleInputWarning
 from impactlab.bodies import Rod
@@ -264,6 +266,12 @@ def analyze(
         | _dent_options(dent_options),
     )
     res = run.result()
+    res.options = _options_record(
+        flat=flat, geometry=geometry, up=up, marker_units=marker_units, pixel_size=pixel_size,
+        height_unit=height_unit, flip_heights=flip_heights, gravity=gravity,
+        n_samples=n_samples, law=law, kinematics_options=kinematics_options,
+        dent_options=dent_options,
+    )  # fmt: skip
     if run.markers is not None:
         _markers_stage(res, run.markers, run.rod, run.kinematics)
     if run.scan is not None:
@@ -280,6 +288,29 @@ def analyze(
     for doubt in res.doubts:  # seen where a notebook shows it, not only in res.ok
         warnings.warn(f"not ok: {doubt}", ImplausibleInputWarning, stacklevel=2)
     return res
+
+
+def _options_record(**options: Any) -> dict[str, Any]:
+    """The analysis's settings as given, JSON-ready (``ExperimentResult.options``): a material
+    by its name, a marker geometry by its markers [m] and labels, anything else JSON cannot
+    hold by its text."""
+
+    def plain(x: Any) -> Any:
+        if x is None or isinstance(x, bool | int | float | str):
+            return x
+        if isinstance(x, Material):
+            return x.name
+        if isinstance(x, MarkerGeometry):
+            return {"markers": plain(x.markers), "labels": plain(x.labels)}
+        if isinstance(x, dict):
+            return {str(k): plain(v) for k, v in x.items()}
+        if isinstance(x, list | tuple | np.ndarray):
+            return [plain(v) for v in np.asarray(x, dtype=object).tolist()]
+        if isinstance(x, np.generic):
+            return x.item()
+        return str(x)
+
+    return {k: plain(v) for k, v in options.items()}
 
 
 def _engine_comparison(rod: Rod, flat: Material, k: ImpactKinematics, law: str) -> dict[str, Any]:

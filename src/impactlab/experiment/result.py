@@ -10,6 +10,7 @@ from typing import Any
 from impactlab._display import field_row, html_table, text_table
 from impactlab._files import write_text_atomic
 from impactlab._json import jsonable
+from impactlab._version import __version__
 from impactlab.experiment.errors import ExperimentError
 from impactlab.experiment.kinematics import ImpactKinematics
 from impactlab.experiment.profilometry import DentMetrics
@@ -26,7 +27,8 @@ class ExperimentResult:
     ``inversion`` (``impactlab.analytic.InversionResult`` or None), ``model`` (engine comparison
     or None), ``errors`` (stage -> message, for each stage that failed on its data),
     ``warnings``, ``figures`` (name -> path), ``files`` (what was saved), ``rod`` (the rod's
-    properties used).
+    properties used), ``options`` (the analysis's settings as given, JSON-ready: what repeats
+    it).
     """
 
     markers_path: str | None
@@ -40,6 +42,7 @@ class ExperimentResult:
     figures: dict[str, str] = field(default_factory=dict)
     files: dict[str, str] = field(default_factory=dict)
     rod: dict[str, float] = field(default_factory=dict)
+    options: dict[str, Any] = field(default_factory=dict)
 
     @property
     def ok(self) -> bool:
@@ -117,7 +120,8 @@ class ExperimentResult:
         return html_table("ExperimentResult", self._rows())
 
     def to_dict(self) -> dict[str, Any]:
-        """JSON-ready (SI units; ``summary`` holds value/sigma/unit per quantity)."""
+        """JSON-ready (SI units; ``summary`` holds value/sigma/unit per quantity), with the
+        analysis's ``options`` and the ``impactlab_version`` that made it."""
         d: dict[str, Any] = {
             "markers": self.markers_path,
             "scan": self.scan_path,
@@ -136,6 +140,8 @@ class ExperimentResult:
             d["inversion"] = self.inversion.to_dict()
         if self.model is not None:
             d["model"] = self.model
+        d["options"] = dict(self.options)
+        d["impactlab_version"] = __version__
         return jsonable(d)
 
     def save(self, out_dir: str | Path) -> Path:
