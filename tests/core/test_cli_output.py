@@ -294,7 +294,10 @@ def test_simulate_flexible_takes_a_time_limit() -> None:
         ([*FLEX, "--stop", "landing"], "stop must be one of"),
         ([*ROD20, "--rate", "johnson-cook"], "--rate: only a drop has"),
         ([*ROD20, "--t-max", "1 s"], "--t-max: only a drop has"),
-        ([*FLEX, "--t-max", "1 ms"], "ms after the first touch: raise --t-max"),
+        (
+            [*FLEX, "--t-max", "1 ms"],
+            "ms after the first touch (its last step ended past --t-max): raise --t-max",
+        ),
         (["simulate", "sphere", "--vy", "-1 m/s", "--flexible"], "--flexible: a sphere has no"),
         ([*FLEX, "--inertia", "1 kg*m^2"], "--inertia: the flexible rod's inertia"),
         ([*FLEX, "--constant-angle"], "--constant-angle: the flexible rod's"),

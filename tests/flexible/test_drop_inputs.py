@@ -97,5 +97,6 @@ def test_a_failed_drop_names_the_keyword_to_change() -> None:
     err = exc.value
     assert err.status == F.ST_TMAX
     assert str(err).endswith(": raise t_max") and "{" not in str(err)
+    assert "ms after the first touch (its last step ended past t_max)" in str(err)  # not before
     assert err.worded(lambda k: "--" + k.replace("_", "-")).endswith(": raise --t-max")
     assert DropError("drop: {odd} text", 3).worded(str) == "drop: {odd} text"

@@ -211,12 +211,13 @@ def status_error(status: int, model: ContactModel, out: np.ndarray | None = None
     if out is not None:
         steps, t = int(out[F.O_N_STEPS]), float(out[F.O_T_FINAL])
         where = f" after {steps} steps, {t * 1e3:.4g} ms after the first touch"
+    past_t_max = " (its last step ended past {t_max})" if where else ""
     hints = {  # templates: {t_max}, {rtol}, {friction} name the keyword (DropError.worded)
         F.ST_LAW_LIMIT: f" ({model.max_interference:.6g} m for the {_literal(repr(model.name))} "
         f"law){where}: the contact force could not stop the rod within the law's range (too "
         "fast an impact, a jammed friction contact or too strong gravity); lower the impact "
         "velocity, mu or gravity, or choose another law",
-        F.ST_TMAX: f"{where}: raise {{t_max}}",
+        F.ST_TMAX: f"{where}{past_t_max}: raise {{t_max}}",
         F.ST_MAX_STEPS: f"{where} (the limit: {F.DROP_MAX_STEPS}; with partial slip "
         f"{F.PARTIAL_STEP_FACTOR} times the steps of its Mindlin pre-pass, at least "
         f"{F.PARTIAL_MIN_STEPS}): a long, creeping contact (resting, rocking or rolling), or "
