@@ -7,7 +7,8 @@ What it shows:
 * ``run_sweep``: the cases computed chunk by chunk into a resumable Zarr store, opened as a lazy
   ``xarray.Dataset`` with named dimensions and units; running it again computes nothing;
 * ``plot_regime_map``: slip / stick over (angle, mu) with the rigid-body boundary
-  mu_c(theta) = a b / (k^2 + b^2) drawn on top, and the sweep's own boundary compared with it;
+  mu_c(theta) = a b / (k^2 + b^2) drawn on top, and the sweep's own boundary compared with it
+  over the ok cases alone (status 0, no flag but the advisory ``ADVISORY_FLAGS``);
 * ``export_netcdf``: the same data as one NetCDF file.
 
 Run (the store and the figures go into the output folder: the first argument, else
@@ -35,6 +36,7 @@ import numpy as np
 
 from impactlab.analytic import critical_friction
 from impactlab.bodies import PAPER_ROD
+from impactlab.flags import ADVISORY_FLAGS
 from impactlab.sweep import Study, export_netcdf, plot_regime_map, run_sweep
 
 
@@ -75,20 +77,33 @@ def main() -> None:
         f"{again.stats.chunks_computed} computed"
     )
 
-    # the regime boundary of the sweep against the rigid-body mu_c(theta)
+    # the regime boundary of the sweep against the rigid-body mu_c(theta), over the ok cases:
+    # computed (status 0) and no flag but the advisory ones (law extrapolated), as
+    # BatchResult.ok reads them; "flags > 0" would be every case (each is law-extrapolated)
     names = {int(k): v for k, v in ds["regime"].attrs["regimes"].items()}
     stick = next(code for code, name in names.items() if name == "stick")
     regime = ds["regime"].transpose("angle", "mu").values
+    flags = ds["flags"].transpose("angle", "mu").values.astype(np.int64)
+    ok = (ds["status"].transpose("angle", "mu").values == 0) & ((flags & ~ADVISORY_FLAGS) == 0)
+    print(f"not ok: {int(np.count_nonzero(~ok))} of {ok.size} cases, left out below")
     mu = ds["mu"].values
+    partly = False  # an angle printed with some of its cases not ok
     print(f"\n{'angle [deg]':>11s} {'first stick mu':>15s} {'mu_c rigid':>11s}")
     for i, th in enumerate(ds["angle"].values):
         if i % 4:
             continue
-        sticking = np.flatnonzero(regime[i] == stick)
-        first = f"{mu[sticking[0]]:.3f}" if sticking.size else "-"
+        sticking = np.flatnonzero((regime[i] == stick) & ok[i])
+        if not ok[i].any():  # e.g. 5 deg: the flat passes the rim of the tip (beyond the tip)
+            first = f"all {ok[i].size} not ok"
+        else:
+            first = f"{mu[sticking[0]]:.3f}" if sticking.size else "-"
+            partly |= not ok[i].all()
+            first += "" if ok[i].all() else " *"
         print(
             f"{np.degrees(th):11.1f} {first:>15s} {float(critical_friction(th, PAPER_ROD)):11.3f}"
         )
+    if partly:
+        print("(*: some cases of the angle not ok, left out)")
 
     e20 = float(ds["e"].sel(angle=np.radians(20.0), mu=0.2, method="nearest"))
     print(f"\ne at 20 deg, mu = 0.2: {e20:.4f}")

@@ -87,7 +87,7 @@ def test_drop_batch_shows_a_notebook_summary() -> None:
     d = il.simulate_drops(ROD, il.AISI_1010, mu=[0.2, np.nan], angle=0.35, vy=-1.41)
     b = il.simulate_batch(ROD, il.AISI_1010, mu=[0.2, np.nan], angle=0.35, vy=-1.41)
     html = d._repr_html_()
-    assert html.startswith("<div><strong>DropBatchResult</strong><p>2 cases: 1 ok, 1 failed")
+    assert html.startswith("<div><strong>DropBatchResult</strong><p>2 cases, 1 computed, 1 ok")
     for name in ("dent_depth", "sequence_duration", "sequence_sliding_length", "max_force"):
         assert f"<tr><td>{name}</td>" in html
     assert "<tr><td>delta_p</td>" not in html

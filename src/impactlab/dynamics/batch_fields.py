@@ -14,7 +14,7 @@ from impactlab._validation import did_you_mean
 from impactlab.dynamics.kernels.status import REGIME_NAMES
 from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
 
-__all__ = ["batch_counts", "field_dir", "no_field", "regime_series", "with_units"]
+__all__ = ["BATCH_NAMES", "batch_counts", "field_dir", "no_field", "regime_series", "with_units"]
 
 
 def field_dir(obj: object, fields: Iterable[str]) -> list[str]:
@@ -22,12 +22,27 @@ def field_dir(obj: object, fields: Iterable[str]) -> list[str]:
     return sorted({*object.__dir__(obj), *fields})
 
 
+#: A one-impact result's field (``ImpactResult``, ``DropResult``) or ``simulate``'s keyword ->
+#: the batch's columns of the same quantity (a pair as two columns, under the inputs' names).
+BATCH_NAMES: dict[str, str] = {
+    "velocity_in": "vx, vy",
+    "spin_in": "spin",
+    "velocity": "vx, vy",
+}
+
+
 def no_field(obj: object, name: str, fields: Iterable[str]) -> AttributeError:
-    """The AttributeError of ``obj.name`` for a name that is no field: the type, the nearest
-    field (``_validation.did_you_mean``) and the known fields."""
+    """The AttributeError of a batch's ``obj.name`` for a name that is no field: the type, the
+    batch's name of a one-impact result's field (:data:`BATCH_NAMES`: ``velocity_in -> vx,
+    vy``), else the nearest field (``_validation.did_you_mean``), and the known fields."""
     known = list(dict.fromkeys(fields))
+    columns = BATCH_NAMES.get(name)
+    if columns is not None and set(columns.split(", ")) <= set(known):
+        hint = f" (a batch's columns: {name} -> {columns})"
+    else:
+        hint = did_you_mean(name, known)
     return AttributeError(
-        f"{type(obj).__name__} has no field or attribute {name!r}{did_you_mean(name, known)}; "
+        f"{type(obj).__name__} has no field or attribute {name!r}{hint}; "
         f"its fields: {', '.join(known)}"
     )
 

@@ -24,7 +24,7 @@ from impactlab.dynamics.batch_status import (
     integer_series,
 )
 from impactlab.dynamics.derived import batch_derived
-from impactlab.dynamics.export import batch_dataset, batch_html
+from impactlab.dynamics.export import BATCH_DIAGNOSTICS, batch_columns, batch_dataset, batch_html
 from impactlab.dynamics.history import readonly_copy
 from impactlab.dynamics.kernels.layout import OUTPUT_FIELDS
 from impactlab.dynamics.pint_fields import pint_unit
@@ -49,7 +49,9 @@ class BatchResult(BatchStatus):
     ``batch["regime"]`` and ``batch["flags"]``, ``<NA>`` in ``to_dataframe``, -1 in
     ``to_xarray``, and 0 in the ``flags`` bitmask (``computed``, ``flagged`` and ``ok`` are
     False). A case refused for its inputs names the input, its value and its rule in
-    ``messages``.
+    ``messages``. The engine's diagnostics ``energy_rise`` and ``friction_excess`` are not
+    computed here (NaN in ``batch[name]``; a sweep that keeps one computes it): ``dir()``,
+    ``to_dataframe``, ``to_xarray`` and ``to_pint`` leave them out.
     ``references`` are the sources the batch used (contact law, friction model if any mu > 0,
     the integrator); ``dois()`` their DOIs.
     """
@@ -97,8 +99,10 @@ class BatchResult(BatchStatus):
             raise KeyError(f"unknown field {name!r}; known: {known}") from None
 
     def _fields(self) -> tuple[str, ...]:
-        """The names read as ``batch[name]`` or ``batch.name``: inputs, outputs, derived."""
-        return (*self.inputs, *OUTPUT_FIELDS, *schema.DERIVED_FIELDS)
+        """The names read as ``batch.name`` and listed: inputs, outputs (the diagnostics that
+        are not computed aside), derived."""
+        outputs = (n for n in OUTPUT_FIELDS if n not in BATCH_DIAGNOSTICS)
+        return (*self.inputs, *outputs, *schema.DERIVED_FIELDS)
 
     def __dir__(self) -> list[str]:
         return field_dir(self, self._fields())
@@ -138,23 +142,25 @@ class BatchResult(BatchStatus):
         return self["vx_out"], self["vy_out"]
 
     def to_dataframe(self) -> Any:
-        """A pandas DataFrame: inputs, outputs and status per case, SI units in
+        """A pandas DataFrame: inputs, outputs, ``max_delta_ratio`` and status per case, the
+        columns of ``to_xarray`` in its order (``export.batch_columns``), SI units in
         ``df.attrs["units"]`` (column -> unit, ``impactlab.schema``); ``regime`` as a categorical
         of the regime names (``"slip"``, as ``ImpactResult.regime``), ``flags`` and ``n_steps``
         as nullable integers, each ``<NA>`` where a case failed."""
         import pandas as pd  # heavy, needed only here
 
         df = pd.DataFrame({k: np.array(v) for k, v in self.inputs.items()})
-        for j, name in enumerate(OUTPUT_FIELDS):
-            if name == "regime":
-                df[name] = regime_series(self.out[:, j], self.computed)
+        for name in batch_columns(self):
+            if name == "status":
+                df[name] = np.array(self.status)
+            elif name == "max_delta_ratio":
+                df[name] = np.array(self.max_delta_ratio, dtype=np.float64)
+            elif name == "regime":
+                df[name] = regime_series(self[name], self.computed)
             elif name in INTEGER_FIELDS:
-                df[name] = integer_series(self.out[:, j], self.computed)
+                df[name] = integer_series(self[name], self.computed)
             else:
-                df[name] = np.array(self.out[:, j])
-        for name in schema.DERIVED_FIELDS:
-            df[name] = self[name]
-        df["status"] = np.array(self.status)
+                df[name] = np.array(self[name])
         return with_units(df, schema.unit)
 
     def to_xarray(self) -> Any:
@@ -163,14 +169,17 @@ class BatchResult(BatchStatus):
         return batch_dataset(self)
 
     def to_pint(self, registry: Any = None) -> dict[str, Any]:
-        """Each output column with a unit (``impactlab.schema``), every derived output
-        (``schema.register_output``) and ``max_delta_ratio`` as a pint Quantity of an array (SI;
-        NaN where a case failed); ``registry``: your pint registry."""
+        """Each output column with a unit (``impactlab.schema``; the diagnostics that are not
+        computed aside), every derived output (``schema.register_output``) and
+        ``max_delta_ratio`` as a pint Quantity of an array (SI; NaN where a case failed);
+        ``registry``: your pint registry."""
         from impactlab.units import registry as shared  # pint loads on first use
 
         ureg = shared() if registry is None else registry
         out: dict[str, Any] = {}
         for name in (*OUTPUT_FIELDS, *schema.DERIVED_FIELDS):
+            if name in BATCH_DIAGNOSTICS:
+                continue
             try:
                 unit = schema.unit(name)
             except KeyError:

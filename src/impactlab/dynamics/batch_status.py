@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from types import SimpleNamespace
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -63,10 +62,11 @@ def integer_series(values: np.ndarray, computed: np.ndarray) -> Any:
 
 def batch_summary_html(batch: Any, renamed: Mapping[str, str]) -> str:
     """The notebook summary of a batch whose outputs are not ``BatchResult``'s columns (a
-    ``DropBatchResult``) through ``BatchResult``'s own (``export.batch_html``): each output
-    that ``batch_html`` reads by an impact's name (``OUTPUT_FIELDS``) taken from the batch's
-    field of that meaning, ``renamed[name]`` (a drop's sequence totals) or the same name
-    (NaN where it has none), shown under the batch's names and class."""
+    ``DropBatchResult``) through ``BatchResult``'s own (``export.batch_html``: the counts of
+    its ``repr``, statistics over its ok cases): each output that ``batch_html`` reads by an
+    impact's name (``OUTPUT_FIELDS``) taken from the batch's field of that meaning,
+    ``renamed[name]`` (a drop's sequence totals) or the same name (NaN where it has none),
+    shown under the batch's names and class."""
     n = len(batch.status)
     columns = []
     for name in OUTPUT_FIELDS:
@@ -74,15 +74,8 @@ def batch_summary_html(batch: Any, renamed: Mapping[str, str]) -> str:
             columns.append(np.asarray(batch[renamed.get(name, name)], dtype=np.float64))
         except KeyError:  # an output the batch has not: no row of the summary reads it
             columns.append(np.full(n, np.nan))
-    view = SimpleNamespace(
-        status=batch.status,
-        flags=batch.flags,
-        out=np.stack(columns, axis=1) if n else np.empty((0, len(OUTPUT_FIELDS))),
-        law=batch.law,
-        friction=batch.friction,
-        law_range=batch.law_range,
-    )
-    return batch_html(view, title=type(batch).__name__, names=renamed)
+    out = np.stack(columns, axis=1) if n else np.empty((0, len(OUTPUT_FIELDS)))
+    return batch_html(batch, title=type(batch).__name__, names=renamed, out=out)
 
 
 #: The inputs of each case of a batch, in the order a refusal names the first non-finite one.
@@ -122,7 +115,8 @@ class BatchStatus:
 
     status: np.ndarray
     #: why each case refused for its inputs (ST_BAD_INPUT) is refused, by case index: the input
-    #: and its rule (``case_refusals``, ``drop_checks.case_problem``)
+    #: and its rule (``case_refusals``, ``drop_checks.case_problem``); a text that opens with
+    #: the status's message is the case's whole message (a failed drop's)
     refusals: Mapping[int, str]
     if TYPE_CHECKING:  # each batch class has its own (a property, or a dataclass field)
 
@@ -149,14 +143,18 @@ class BatchStatus:
 
     @property
     def messages(self) -> list[str]:
-        """The status message of each case (``kernels.status.STATUS_MESSAGES``); a case refused
-        for its inputs names the input, its value and its rule: ST_BAD_INPUT (``refusals``),
-        ST_BAD_ANGLE (the angle, in rad and deg) and ST_NOT_APPROACHING (the contact point's
-        normal velocity ``vn_in``, else vy and the spin)."""
+        """The status message of each case (``kernels.status.STATUS_MESSAGES``), a failed drop's
+        as ``simulate_drop``'s error words it (its steps, its time, what to change:
+        ``refusals``); a case refused for its inputs names the input, its value and its rule:
+        ST_BAD_INPUT (``refusals``), ST_BAD_ANGLE (the angle, in rad and deg) and
+        ST_NOT_APPROACHING (the contact point's normal velocity ``vn_in``, else vy and the
+        spin)."""
         texts = [STATUS_MESSAGES.get(int(s), f"status {int(s)}") for s in self.status]
         for i, why in self.refusals.items():
-            bad_input = int(self.status[i]) == ST_BAD_INPUT
-            texts[i] = f"invalid input: {why}" if bad_input else f"{texts[i]}: {why}"
+            if int(self.status[i]) == ST_BAD_INPUT:
+                texts[i] = f"invalid input: {why}"
+            else:  # a why that opens with its status's message is the whole message
+                texts[i] = why if why.startswith(texts[i]) else f"{texts[i]}: {why}"
         status = np.asarray(self.status)
         for j in np.flatnonzero((status == ST_BAD_ANGLE) | (status == ST_NOT_APPROACHING)):
             if int(j) not in self.refusals:

@@ -49,7 +49,9 @@ from impactlab.dynamics.drop_checks import (
     input_problems,
     input_status,
     refuse_rate,
+    status_error,
 )
+from impactlab.dynamics.export import batch_setup
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.batch import (
     CK_E0,
@@ -91,7 +93,8 @@ class DropBatchResult(BatchStatus):
     ``messages`` per case as every batch has them (``batch_status.BatchStatus``; a refused
     input's message names the input and its rule). ``law_range``: the law's range for the
     pair in one line (``contact.range_note``), as ``BatchResult`` and ``DropResult`` have it;
-    ``to_dataframe``, ``to_xarray`` (NetCDF-ready) and ``to_pint`` as ``BatchResult``'s."""
+    ``to_dataframe`` and ``to_xarray`` (NetCDF-ready; the same columns, in the same order),
+    ``to_pint`` and ``setup`` as ``BatchResult``'s."""
 
     out: np.ndarray = field(repr=False)
     status: np.ndarray = field(repr=False)
@@ -107,8 +110,13 @@ class DropBatchResult(BatchStatus):
     references: tuple[Reference, ...] = field(default=(), repr=False)
     #: the range the law is held to for the batch's pair, one line (``contact.range_note``)
     law_range: str | None = field(default=None, repr=False)
-    #: why each case refused with ST_BAD_INPUT is refused, by case index (``case_problem``)
+    #: why each case refused with ST_BAD_INPUT is refused, by case index (``case_problem``);
+    #: a failed drop's whole message, as ``simulate_drop``'s error words it
     refusals: Mapping[int, str] = field(default_factory=dict, repr=False)
+    #: what was simulated besides the per-case inputs, as ``to_xarray``'s attributes, those of
+    #: ``BatchResult.setup`` (``export.batch_setup``: body_record, flat, flat_record, gravity,
+    #: rtol, law_params) with the drop's ``stop`` and ``t_max`` [s]
+    setup: Mapping[str, Any] = field(default_factory=dict, repr=False)
 
     def __post_init__(self) -> None:
         for name in ("out", "initial_energy", "max_delta_ratio"):
@@ -304,6 +312,7 @@ def simulate_drops(
                    np.ascontiguousarray(mu_run[run]), np.ascontiguousarray(fid[run]), r, t_end,
                    stop_mode, o, ck, st, drop_address())  # fmt: skip
         status[run], out[run], checks[run] = st, o, ck
+    failed = _failures(status, run, out, model)  # before the rows are blanked
     inaccurate = _refuse_inaccurate(out, checks, status, r)
     done = status == 0
     out[~done] = np.nan
@@ -317,6 +326,8 @@ def simulate_drops(
         brittle_flags(model.law_id, model.params, dmax[done], fmax[done], limit)
     )
     refs = references_used(model, fric, bool(np.any(mu_run > 0.0))) + bm.references
+    setup = batch_setup(body, flat, friction=fric.name, gravity=g, rtol=r, constant_angle=None,
+                        law=law, law_params=law_params)  # fmt: skip
     return DropBatchResult(
         out=out,
         status=status,
@@ -331,8 +342,24 @@ def simulate_drops(
         rtol=r,
         references=tuple(dict.fromkeys(refs)),
         law_range=range_note(model.law_id, model.params),
-        refusals={i: t for i, t in refusals.items() if status[i] == S.ST_BAD_INPUT} | inaccurate,
+        refusals={i: t for i, t in refusals.items() if status[i] == S.ST_BAD_INPUT}
+        | failed
+        | inaccurate,
+        setup=setup | {"body": bm.description, "stop": stop, "t_max": t_end},
     )
+
+
+def _failures(
+    status: np.ndarray, run: np.ndarray, out: np.ndarray, model: ContactModel
+) -> dict[int, str]:
+    """The message of each drop that ran and failed (``run`` and a status), by case index, as
+    ``simulate_drop``'s error words it from its output row (``drop_checks.status_error``: its
+    steps, its time, what to change)."""
+    why: dict[int, str] = {}
+    for i in np.flatnonzero(run & (status != 0)).tolist():
+        row = out[i] if np.all(np.isfinite(out[i, [F.O_N_STEPS, F.O_T_FINAL]])) else None
+        why[i] = str(status_error(int(status[i]), model, row)).removeprefix("drop: ")
+    return why
 
 
 def _refuse_inaccurate(

@@ -24,7 +24,7 @@ from impactlab.dynamics.history import DentMap
 from impactlab.dynamics.input_checks import check_dent_grid
 from impactlab.dynamics.pint_fields import pint_quantities
 from impactlab.dynamics.provenance import result_record
-from impactlab.dynamics.result_display import ResultDisplay
+from impactlab.dynamics.result_display import ResultDisplay, field_hint
 from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
 from impactlab.references import Reference
 from impactlab.references import dois as doi_list
@@ -77,7 +77,8 @@ class _RenamedKeys(dict[str, Any]):
 
 @dataclass(frozen=True, eq=False, repr=False)
 class DropResult(DerivedOutputs, ResultDisplay):
-    """The outcome of one drop (SI units; units of the fields in ``UNITS``). Immutable.
+    """The outcome of one drop (SI units: ``result.units``, each field's; ``print(result)``
+    shows display units, um and ms). Immutable.
 
     It carries the summary attributes of ``ImpactResult`` (``impactlab.simulate`` returns it
     for a FlexibleRod) read for the whole sequence of contacts, those that mean something
@@ -215,7 +216,10 @@ class DropResult(DerivedOutputs, ResultDisplay):
         if new is not None:
             schema.warn_renamed(name, new, "DropResult field")
             return getattr(self, new)
-        return super().__getattr__(name)
+        try:  # a derived output (schema.register_output), else no attribute
+            return super().__getattr__(name)
+        except AttributeError as error:  # a batch's column name: where this result holds it
+            raise field_hint(self, name, error) from None
 
     def dent(self, *, nx: int = 241, ny: int = 121, margin: float = 0.15) -> DentMap:
         """The tip's predicted dent over all its contacts as a height map (SI;
@@ -320,7 +324,8 @@ class DropResult(DerivedOutputs, ResultDisplay):
         return data
 
     def display_units(self) -> dict[str, str]:
-        """SI unit of each numeric field of ``summary()`` (``UNITS``)."""
+        """The SI unit of each numeric field of ``summary()`` (``UNITS``), from which
+        ``print(result)`` chooses its display units (um, ms); the units: ``units``."""
         return UNITS
 
     def detail_rows(self) -> list[tuple[str, str, str]]:

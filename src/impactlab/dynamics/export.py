@@ -19,6 +19,7 @@ from impactlab import schema
 from impactlab._display import display_unit, format_number
 from impactlab._html import grid_html
 from impactlab._version import __version__
+from impactlab.dynamics.batch_fields import batch_counts
 from impactlab.dynamics.kernels.layout import (
     DEFAULT_RTOL,
     HISTORY_FIELDS,
@@ -30,7 +31,9 @@ from impactlab.flags import ResultFlag, messages
 from impactlab.references import Reference
 
 __all__ = [
+    "BATCH_DIAGNOSTICS",
     "HISTORY_CATEGORIES",
+    "batch_columns",
     "batch_dataset",
     "batch_html",
     "batch_setup",
@@ -49,8 +52,13 @@ HISTORY_CATEGORIES: dict[str, tuple[str, str]] = {
 #: Outputs of a batch stored as integer codes (with their meanings in the attributes).
 _CODED = ("regime", "flags", "n_steps")
 
-#: Outputs a batch's notebook summary shows (min, median, max over the successful cases).
+#: Outputs a batch's notebook summary shows (min, median, max over the ok cases).
 _SUMMARY = ("e", "delta_p", "sliding_length", "duration", "mean_force", "max_force")
+
+#: The engine's diagnostic outputs, which ``simulate_batch`` does not compute (a sweep that
+#: keeps one does, ``run_arrays(diagnostics=True)``): NaN in every case of a ``BatchResult``,
+#: so its ``to_dataframe``, ``to_xarray`` and ``to_pint`` leave them out.
+BATCH_DIAGNOSTICS = ("energy_rise", "friction_excess")
 
 
 def history_units() -> dict[str, str]:
@@ -122,7 +130,7 @@ def batch_setup(
     friction: str,
     gravity: Any,
     rtol: float | None,
-    constant_angle: bool,
+    constant_angle: bool | None,
     law: Any = None,
     law_params: Mapping[str, Any] | None = None,
 ) -> dict[str, Any]:
@@ -130,8 +138,9 @@ def batch_setup(
     (strings and numbers, as a sweep store's): ``body`` and ``flat`` (their descriptions),
     ``body_record`` and ``flat_record`` (each as JSON text, the form of a result's ``input``:
     ``impactlab.dynamics.provenance``), ``gravity`` [m/s^2], ``rtol`` (the tolerance used),
-    ``constant_angle`` (0 or 1) and, when given, ``law_params`` (JSON text, in the units of
-    ``law``'s parameters, as a result's ``input`` records them)."""
+    ``constant_angle`` (0 or 1; None, a drop's batch: left out) and, when given,
+    ``law_params`` (JSON text, in the units of ``law``'s parameters, as a result's ``input``
+    records them)."""
     import json
 
     from impactlab.dynamics.input_checks import gravity_value
@@ -146,16 +155,27 @@ def batch_setup(
         "flat_record": json.dumps(encode(flat)),
         "gravity": gravity_value(gravity),
         "rtol": float(rtol),
-        "constant_angle": int(bool(constant_angle)),
     }
+    if constant_angle is not None:
+        setup["constant_angle"] = int(bool(constant_angle))
     if law_params:
         setup["law_params"] = json.dumps(law_params_record(law, law_params))
     return setup
 
 
+def batch_columns(batch: Any) -> tuple[str, ...]:
+    """The output columns of a ``BatchResult``'s ``to_dataframe`` and ``to_xarray``, in order:
+    the engine's outputs (``OUTPUT_FIELDS`` but :data:`BATCH_DIAGNOSTICS`), the derived ones
+    (``schema.register_output``), ``max_delta_ratio`` (when computed), ``status``."""
+    outputs = [n for n in OUTPUT_FIELDS if n not in BATCH_DIAGNOSTICS]
+    ratio = () if batch.max_delta_ratio is None else ("max_delta_ratio",)
+    return (*outputs, *schema.DERIVED_FIELDS, *ratio, "status")
+
+
 def batch_dataset(batch: Any) -> Any:
     """A ``BatchResult`` as an ``xarray.Dataset`` over the dimension ``case``: every input and
-    output (SI, ``units`` and ``long_name`` attributes), ``max_delta_ratio``, ``status``, and
+    output (:func:`batch_columns`, the columns of ``to_dataframe``; SI, ``units`` and
+    ``long_name`` attributes), ``max_delta_ratio``, ``status``, and
     ``regime``/``flags`` as integer codes whose meanings are in their attributes (-1 where the
     case failed); the dataset's attributes say what was simulated (law, friction, the batch's
     ``setup``: :func:`batch_setup`), the sources and ``impactlab_version``. Every attribute is
@@ -173,17 +193,19 @@ def batch_dataset(batch: Any) -> Any:
             np.array(column),
             {"units": schema.unit(name), "long_name": f"input: {schema.description(name)}"},
         )
-    for j, name in enumerate(OUTPUT_FIELDS):
-        variables[name] = _output_var(name, out[:, j], ok)
-    for name in schema.DERIVED_FIELDS:  # schema.register_output
-        variables[name] = _output_var(name, batch[name], ok)
-    if batch.max_delta_ratio is not None:
-        variables["max_delta_ratio"] = (
-            "case",
-            np.array(batch.max_delta_ratio, dtype=np.float64),
-            {"units": "1", "long_name": schema.description("max_delta_ratio")},
-        )
-    variables["status"] = ("case", status.astype(np.int32), status_attrs())
+    for name in batch_columns(batch):  # the columns of to_dataframe, in its order
+        if name == "status":
+            variables[name] = ("case", status.astype(np.int32), status_attrs())
+        elif name == "max_delta_ratio":
+            variables[name] = (
+                "case",
+                np.array(batch.max_delta_ratio, dtype=np.float64),
+                {"units": "1", "long_name": schema.description("max_delta_ratio")},
+            )
+        elif name in OUTPUT_FIELDS:
+            variables[name] = _output_var(name, out[:, OUTPUT_FIELDS.index(name)], ok)
+        else:  # schema.register_output
+            variables[name] = _output_var(name, batch[name], ok)
     refs: tuple[Reference, ...] = tuple(batch.references)
     attrs = {
         "law": batch.law,
@@ -209,20 +231,25 @@ def _stats_row(name: str, values: np.ndarray, shown: str) -> tuple[str, str, str
 
 
 def batch_html(
-    batch: Any, title: str = "BatchResult", names: Mapping[str, str] | None = None
+    batch: Any,
+    title: str = "BatchResult",
+    names: Mapping[str, str] | None = None,
+    out: np.ndarray | None = None,
 ) -> str:
-    """The notebook summary of a ``BatchResult``: counts, then min / median / max of the main
-    outputs over the successful cases (display units). ``title`` heads it; ``names`` shows an
-    output under another name (a drop's sequence totals)."""
-    ok = np.asarray(batch.status) == 0
-    n, n_ok = int(ok.shape[0]), int(np.count_nonzero(ok))
-    n_flagged = int(np.count_nonzero(np.asarray(batch.flags) != 0))
-    out = np.asarray(batch.out)
+    """The notebook summary of a batch (``BatchResult``, ``DropBatchResult``): the counts of
+    its one-line ``repr`` (``batch_fields.batch_counts``: computed, ok, the advisory flags
+    marked, not ok), then min / median / max of the main outputs over the ok cases alone
+    (``batch.ok``; display units). ``out``: the outputs in ``OUTPUT_FIELDS`` columns (default
+    ``batch.out``); ``title`` heads it; ``names`` shows an output under another name (a
+    drop's sequence totals)."""
+    ok = np.asarray(batch.ok, dtype=bool)
+    n_ok = int(np.count_nonzero(ok))
+    columns = np.asarray(batch.out if out is None else out)
     shown = names or {}
-    rows = [_stats_row(o, out[ok, OUTPUT_FIELDS.index(o)], shown.get(o, o)) for o in _SUMMARY]
+    rows = [_stats_row(o, columns[ok, OUTPUT_FIELDS.index(o)], shown.get(o, o)) for o in _SUMMARY]
     caption = (
-        f"{n} cases: {n_ok} ok, {n - n_ok} failed, {n_flagged} flagged; law {batch.law}, "
-        f"friction {batch.friction}"
+        f"{batch_counts(batch)}; min / median / max over the {n_ok} ok "
+        f"case{'s' * (n_ok != 1)}; law {batch.law}, friction {batch.friction}"
         + ("" if batch.law_range is None else f"; law range: {batch.law_range}")
     )
     header = ("output", "min", "median", "max", "unit")

@@ -11,23 +11,56 @@ from collections.abc import Mapping
 from typing import Any, ClassVar
 
 from impactlab._display import field_rows, html_table, text_table
+from impactlab.schema import DERIVED_FIELDS
 
-__all__ = ["ResultDisplay"]
+__all__ = ["RESULT_NAMES", "ResultDisplay", "field_hint"]
+
+#: A batch's column (``BatchResult``, ``DropBatchResult``) -> where a one-impact result holds
+#: the same quantity (a pair of velocities as one field).
+RESULT_NAMES: dict[str, str] = {
+    "vx": "velocity_in[0]",
+    "vy": "velocity_in[1]",
+    "spin": "spin_in",
+    "vx_out": "velocity_out[0]",
+    "vy_out": "velocity_out[1]",
+}
+
+
+def field_hint(result: object, name: str, error: AttributeError) -> AttributeError:
+    """``error`` (the AttributeError of ``result.name``) with the result's field of a batch's
+    column (:data:`RESULT_NAMES`: ``vx_out -> velocity_out[0]``); ``error`` for another name."""
+    where = RESULT_NAMES.get(name)
+    if where is None:
+        return error
+    return AttributeError(
+        f"{type(result).__name__!r} object has no attribute {name!r} (a batch's column; "
+        f"in one result: {name} -> {where})"
+    )
 
 
 class ResultDisplay:
     """Mixin of the result classes: ``__repr__`` (one line, ``REPR_FIELDS``), ``__str__`` (a
     text table), ``_repr_html_`` (the same rows as HTML) and ``_rows``, from the class's
-    ``summary()``, its ``display_units()`` (field -> SI unit), ``detail_rows()`` (rows after
-    the summary's) and ``warnings``."""
+    ``summary()``, its ``display_units()`` (field -> SI unit, which the display layer shows
+    in its display units: um, ms), ``detail_rows()`` (rows after the summary's) and
+    ``warnings``; ``units``: the SI unit of each field."""
 
     def summary(self) -> dict[str, Any]:
         """The fields a person reads first, by name (SI values; text for flags and names)."""
         raise NotImplementedError
 
     def display_units(self) -> Mapping[str, str]:
-        """SI unit of each numeric field of ``summary()``."""
+        """The SI unit of each numeric field of ``summary()``, from which ``print(result)``
+        and ``_repr_html_`` choose their display units (um, ms: ``impactlab._display``)."""
         raise NotImplementedError
+
+    @property
+    def units(self) -> dict[str, str]:
+        """The SI unit of each numeric field and derived output (``schema.register_output``)
+        by name, ``"1"`` for a plain number (as ``History.units``; the values of the fields
+        are SI, whatever ``print(result)`` shows)."""
+        derived = {name: d.field.unit for name, d in DERIVED_FIELDS.items()}
+        return {**self.display_units(), **derived}
 
     def detail_rows(self) -> list[tuple[str, str, str]]:
         """``(label, text, unit)`` rows shown after the summary (none by default)."""

@@ -30,7 +30,7 @@ from impactlab.dynamics.input_checks import check_dent_grid
 from impactlab.dynamics.kernels.layout import HISTORY_FIELDS
 from impactlab.dynamics.pint_fields import pint_quantities
 from impactlab.dynamics.provenance import result_record
-from impactlab.dynamics.result_display import ResultDisplay
+from impactlab.dynamics.result_display import ResultDisplay, field_hint
 from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
 from impactlab.references import Reference
 from impactlab.references import dois as doi_list
@@ -95,8 +95,11 @@ SUMMARY_FIELDS: tuple[str, ...] = (
 class ImpactResult(DerivedOutputs, ResultDisplay):
     """The outcome of one impact (SI units). Computed once; immutable.
 
-    Units and meanings of the fields: ``impactlab.dynamics.results.UNITS`` and
-    ``impactlab.schema.unit(name)`` / ``description(name)``. ``references`` are the
+    Every value is SI: the unit of each field is in ``result.units`` (the module's ``UNITS``
+    and the derived outputs' units), its meaning in ``impactlab.schema.description(name)``;
+    ``print(result)`` shows them in display units (um, ms). ``velocity_in`` and
+    ``velocity_out`` are pairs (vx, vy): a batch's ``vx_out`` is ``velocity_out[0]`` here, its
+    ``vx``, ``vy`` and ``spin`` are ``velocity_in`` and ``spin_in``. ``references`` are the
     sources the computation used; ``dois()`` their DOIs. ``print(result)``, ``_repr_html_``
     and ``impactlab simulate`` show ``summary()`` (``dynamics.result_display``, as a drop's).
 
@@ -143,6 +146,12 @@ class ImpactResult(DerivedOutputs, ResultDisplay):
     #: What ``simulate`` was given, checked (body, flat, law, law_params, gravity [m/s^2],
     #: constant_angle, rtol, drop options): the source of ``input`` (``dynamics.provenance``).
     _call: tuple[Any, ...] | None = field(default=None, repr=False, compare=False)
+
+    def __getattr__(self, name: str) -> Any:
+        try:  # a derived output (schema.register_output), else no attribute
+            return super().__getattr__(name)
+        except AttributeError as error:  # a batch's column name: where this result holds it
+            raise field_hint(self, name, error) from None
 
     def __post_init__(self) -> None:
         # the engine writes the bitmask as a float; LAW_EXTRAPOLATED from contact.ranges (C2)
@@ -263,7 +272,8 @@ class ImpactResult(DerivedOutputs, ResultDisplay):
     REPR_FIELDS = ("law", "friction", "e", "delta_p", "sliding_length", "duration")
 
     def display_units(self) -> dict[str, str]:
-        """SI unit of each numeric field of ``summary()`` (``UNITS``)."""
+        """The SI unit of each numeric field of ``summary()`` (``UNITS``), from which
+        ``print(result)`` chooses its display units (um, ms); the units: ``units``."""
         return UNITS
 
     def dent(self, *, nx: int = 241, ny: int = 121, margin: float = 0.15) -> DentMap:

@@ -86,12 +86,13 @@ def simulate_batch(
 ) -> BatchResult:
     """Many impacts of one body, law and friction model, in parallel on all cores.
 
+    ``body``: a ``Rod`` or a ``Sphere`` (a ``FlexibleRod``'s drops: ``simulate_drops``).
     ``mu``, ``angle`` [rad; a Rod's, required; a Sphere takes none and an angle given for it
     (or ``constant_angle=True``) is refused, as by ``simulate``; one angle for every case is
     checked as ``simulate`` checks it], ``vx``, ``vy`` [m/s] and ``spin`` [rad/s] are scalars or
     1-D arrays, broadcast against each other; the dimensional ones may also be pint Quantities (any
     registry) or strings with units, as in ``simulate``. ``vy`` (``vx`` default 0), or
-    ``velocity=(vx, vy)`` as ``simulate`` takes it (each a scalar or an array), or instead
+    ``velocity`` = (vx, vy) as ``simulate`` takes it (each a scalar or an array), or instead
     ``speed`` [m/s] and ``incidence`` [rad] (arrays too; vx = speed sin(incidence),
     vy = -speed cos(incidence), ``checks.velocity_from``) are required, one of the three.
     Invalid cases (NaN input, an angle outside (0, pi/2], a receding contact point, the law's
@@ -102,6 +103,20 @@ def simulate_batch(
     ``speed`` and ``incidence`` are checked before any case runs, with ``simulate``'s rules
     (speed finite and > 0, incidence within +-90 deg): a bad one refuses the call, naming each
     offending case by its index.
+
+    ``flat``: the flat's ``Material`` (default AISI 1010). ``law``: a law's name or a
+    ``ContactModel``; ``law_params``: the law's parameters (``impactlab laws``), as
+    ``simulate`` takes them, the same for every case. ``friction``: ``"coulomb"``,
+    ``"impulse_ratio"``, ``"mindlin"`` or ``"partial_slip"`` (``BATCH_FRICTION_IDS``).
+    ``gravity``: True (9.80665 m/s^2), False or a value [m/s^2]; ``constant_angle``: freeze
+    the lever arms at the initial angle. ``rtol``: the relative tolerance, in [1e-13, 1e-3]
+    (None: ``DEFAULT_RTOL`` = 2e-7; 3e-8 for ``partial_slip``, which takes at most 1e-5), as
+    in ``simulate``; a bad one is refused (ValueError) before any case runs.
+
+    Returns a ``BatchResult``: one row per case (the inputs broadcast), with its ``status``
+    (0: computed; ``messages`` says why not), ``flags``, ``ok`` (computed, and no flag but the
+    advisory ones), the outputs by name (``b.e``, ``b["delta_p"]``, SI), ``to_dataframe``,
+    ``to_xarray`` and ``to_pint``, and ``setup`` (what was simulated besides the cases).
     """
     if isinstance(body, FlexibleRod):
         raise ValueError(FLEXIBLE_BATCH_ERROR)

@@ -58,13 +58,19 @@ def _fixed_text(study: Any) -> list[str]:
     return out
 
 
+def _counts(layout: Any) -> str:
+    """``"1089 cases in 5 chunks"``, ``"1 case in 1 chunk"``."""
+    n, k = int(layout.n_cases), int(layout.n_chunks)
+    return f"{n} case{'s' * (n != 1)} in {k} chunk{'s' * (k != 1)}"
+
+
 def study_repr(study: Any) -> str:
     """``Study('map', grid, 1089 cases in 5 chunks; angle[33] 5 .. 85 deg, ...; fixed: ...)``."""
     dims = "; ".join(f"{n}[{s}] {r} {u}".rstrip() for n, s, r, u in dimension_rows(study))
     fixed = ", ".join(_fixed_text(study))
     lay = study.layout
     return (
-        f"Study({study.name!r}, {study.mode}, {lay.n_cases} cases in {lay.n_chunks} chunks; "
+        f"Study({study.name!r}, {study.mode}, {_counts(lay)}; "
         f"{dims}{'; fixed: ' + fixed if fixed else ''})"
     )
 
@@ -74,7 +80,7 @@ def study_html(study: Any) -> str:
     lay = study.layout
     outputs = ", ".join(study.outputs) if study.outputs is not None else "all"
     caption = (
-        f"{study.mode}: {lay.n_cases} cases in {lay.n_chunks} chunks; fixed: "
+        f"{study.mode}: {_counts(lay)}; fixed: "
         f"{', '.join(_fixed_text(study)) or 'none'}; outputs: {outputs}"
     )
     header = ("dimension", "size", "range", "unit")
