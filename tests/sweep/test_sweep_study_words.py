@@ -1,6 +1,7 @@
 """What a study and the sweep tutorial tell a reader: a study's counts in the singular where
-there is one case or one chunk, and the tutorial's (and the example's) filter of the cases not
-to read as plain success, which an advisory flag alone does not select."""
+there is one case or one chunk, an input spelt as ``simulate`` spells it, and the tutorial's
+(and the example's) filter of the cases not to read as plain success, which an advisory flag
+alone does not select."""
 
 from __future__ import annotations
 
@@ -9,6 +10,7 @@ from pathlib import Path
 
 import numpy as np
 import pandas as pd
+import pytest
 
 from impactlab.flags import ResultFlag
 from impactlab.sweep import Study
@@ -55,3 +57,13 @@ def test_the_example_leaves_the_cases_not_ok_out_of_its_boundary() -> None:
     text = (ROOT / "examples" / "sweep_study.py").read_text(encoding="utf-8")
     assert re.search(r"ok = .*status.* == 0\).*ADVISORY_FLAGS", text)
     assert "(regime[i] == stick) & ok[i]" in text and "not ok" in text
+
+
+@pytest.mark.parametrize(
+    ("name", "hint"),
+    [("velocity", "as vx and vy (or speed and incidence)"), ("spin_in", "name for it is spin")],
+)
+def test_an_input_spelt_as_simulate_spells_it_says_the_study_name(name, hint) -> None:
+    """simulate(velocity=...) is a study's vx and vy: the refusal says so, not only the list."""
+    with pytest.raises(ValueError, match=rf"unknown input '{name}': .*{re.escape(hint)}"):
+        Study(name="x", grid={"mu": [0.1]}, fixed={name: (0.0, -1.41), "vy": -1.41})

@@ -157,12 +157,29 @@ KINEMATIC_INPUTS: tuple[str, ...] = ("angle", "vx", "vy", "spin", "mu")
 CATEGORY_INPUTS: tuple[str, ...] = tuple(s.name for s in _SPECS if s.kind == "category")
 
 
+#: What a study calls an input that ``simulate`` and the results spell otherwise.
+_STUDY_SPELLING = {
+    "velocity": "a study takes the velocity as vx and vy (or speed and incidence)",
+    "velocity_in": "a study takes the velocity as vx and vy (or speed and incidence)",
+    "spin_in": "a study's name for it is spin",
+    "material": "a study names the materials body_material and flat_material",
+    "flat": "a study's name for it is flat_material",
+}
+
+
+def unknown_input(name: object) -> str:
+    """``"unknown input 'velocity': a study takes ...; known inputs: angle, vx, ..."``: what
+    to write instead where ``simulate`` spells it otherwise, and the known names."""
+    hint = _STUDY_SPELLING.get(name) if isinstance(name, str) else None
+    return f"unknown input {name!r}{': ' + hint if hint else ''}; known inputs: {', '.join(INPUTS)}"
+
+
 def get_input(name: str) -> InputSpec:
     """The input called ``name``; ValueError listing the known names otherwise."""
     try:
         return INPUTS[name]
     except (KeyError, TypeError):
-        raise ValueError(f"unknown input {name!r}; known inputs: {', '.join(INPUTS)}") from None
+        raise ValueError(unknown_input(name)) from None
 
 
 #: The engine's outputs by name: unit and meaning (``impactlab.schema``, the one table).

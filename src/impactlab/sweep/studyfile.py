@@ -24,7 +24,7 @@ from impactlab.sweep.distributions import (
     distribution_from_canonical,
     distribution_from_dict,
 )
-from impactlab.sweep.inputs import INPUTS, UNIT_REQUIRED, get_input
+from impactlab.sweep.inputs import INPUTS, UNIT_REQUIRED, get_input, unknown_input
 from impactlab.sweep.limits import DEFAULT_MAX_CASES, check_max_cases
 from impactlab.sweep.options import STUDY_FORMAT, EngineOptions, UncertaintySpec
 from impactlab.sweep.ranges import Limit, range_values
@@ -240,7 +240,7 @@ def _value(name: str, value: Any, si: bool, where: str, unit: str | None = None)
 
 def _known(name: str, where: str) -> None:
     if name not in INPUTS:
-        raise ValueError(f"{where} unknown input {name!r}; known inputs: {', '.join(INPUTS)}")
+        raise ValueError(f"{where} {unknown_input(name)}")
 
 
 def _fixed(tab: Mapping[str, Any], si: bool) -> dict[str, Value]:
@@ -305,10 +305,7 @@ def _sample(tab: Any, si: bool) -> Sample:
         if name in ("size", "seed"):
             continue
         if name not in INPUTS:
-            raise ValueError(
-                f"[sample] unknown input {name!r}; known inputs: {', '.join(INPUTS)} "
-                f"(and the keys size, seed)"
-            )
+            raise ValueError(f"[sample] {unknown_input(name)} (and the keys size, seed)")
         if not isinstance(spec, dict):
             raise ValueError(
                 f'[sample] {name}: expected a table such as {{ dist = "normal", mean = ..., '
