@@ -17,7 +17,7 @@ __all__ = ["MC_REJECTED_WARNING", "SPREAD_ROUNDING", "monte_carlo", "point_distr
 #: A Monte Carlo that discards more than this share of its samples (sticking regime or out of
 #: range) draws an ImplausibleInputWarning: its mean and spread then describe a truncated
 #: distribution, not the measurement's. Any sample in the sticking regime draws another (the
-#: heavy tail of T, ``_monte_carlo``).
+#: heavy tail of T, ``monte_carlo``).
 MC_REJECTED_WARNING = 0.05
 #: A Monte Carlo standard deviation below this fraction of its mean is rounding (T when only
 #: dv_cy is uncertain, which T does not depend on) and is reported as 0.

@@ -191,7 +191,7 @@ def calibrate(
     parameter values failed) and a best model the data do not single out
     (``Calibration.best_caveats``). Ctrl-C raises
     ``statelock.CalibrationInterrupted`` (a KeyboardInterrupt naming the step reached);
-    ``statelock.StateInUse`` (a ValueError) when another calibration uses ``state_dir``.
+    ``statelock.StateInUseError`` (a ValueError) when another calibration uses ``state_dir``.
     """
     lock = state_lock(Path(state_dir)) if state_dir is not None else contextlib.nullcontext()
     with lock:

@@ -11,7 +11,7 @@ continues from its last step when called again with the same inputs; a saved cha
 inputs, or one that cannot be read, is never replaced unasked: ``SavedChainError`` names the
 file and why (``restart`` discards it). Ctrl-C raises
 ``CalibrationInterrupted`` (the step reached, and whether it was saved); a chain file another
-program holds open is a ``StateInUse`` error, never HDF5's traceback.
+program holds open is a ``StateInUseError`` (``statelock.chain_in_use``), never HDF5's traceback.
 """
 
 from __future__ import annotations

@@ -370,13 +370,15 @@ def write_calibration_report(
 def main(argv: Sequence[str] | None = None) -> int:
     """``python -m impactlab.paper.calibration_report OUT_DIR [STEPS]``: run and write the
     section into OUT_DIR; ``--shipped [STEPS]``: run and write the shipped summary
-    (``SHIPPED``, what the reproduction report shows)."""
+    (``SHIPPED``, what the reproduction report shows); ``-h``, ``--help``: the usage, rc 0."""
     import sys
 
     args = list(sys.argv[1:] if argv is None else argv)
-    if not 1 <= len(args) <= 2:
-        print(main.__doc__, file=sys.stderr)
-        return 2
+    usage = "usage: python -m impactlab.paper.calibration_report OUT_DIR|--shipped [STEPS >= 10]"
+    asked = "-h" in args or "--help" in args
+    if asked or not 1 <= len(args) <= 2 or (args[0].startswith("-") and args[0] != "--shipped"):
+        print(usage, file=sys.stdout if asked else sys.stderr)
+        return 0 if asked else 2
     try:
         steps = int(args[1]) if len(args) == 2 else SHIPPED_STEPS
     except ValueError:

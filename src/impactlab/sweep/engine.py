@@ -33,6 +33,7 @@ from impactlab.dynamics.batch import (
     STATUS_MESSAGES,
     run_arrays,
 )
+from impactlab.friction import friction_names
 from impactlab.schema import DERIVED_FIELDS, SEQUENCE_FIELDS
 from impactlab.sweep.flexible import FLEXIBLE_BODY, evaluate_flexible, validate_flexible
 from impactlab.sweep.inputs import INTEGER_OUTPUTS, KINEMATIC_INPUTS
@@ -204,11 +205,17 @@ def _validate_categories(categories: Mapping[str, Sequence[str]], frictions: Seq
                 f"{law} = 'FILE' in the study's [laws] table"
             ) from None
     for fr in categories.get("friction", ()):
-        if fr not in frictions:
+        if fr in frictions:
+            continue
+        if fr in friction_names():  # a model, but not one of the batch engine
             raise ValueError(
-                f"unknown friction model {fr!r}{did_you_mean(fr, frictions)}; known: "
-                f"{', '.join(frictions)}"
+                f"friction model {fr!r} does not run in the batch engine that sweeps use; "
+                f"sweep models: {', '.join(frictions)} (impactlab.simulate runs {fr!r})"
             )
+        raise ValueError(
+            f"unknown friction model {fr!r}{did_you_mean(fr, friction_names())}; known: "
+            f"{', '.join(friction_names())}"
+        )
     for key in ("body_material", "flat_material"):
         validate_material_names(categories.get(key, ()), key)
     for b in categories.get("body", ()):
