@@ -1,8 +1,11 @@
 """Tangential (friction) models of the impact engine: names, compiled ids and references.
 
-The equations are in ``docs/engine/index.md``; the compiled implementation is in
-``impactlab.dynamics.core``. A name never stands in for another model. The registry is keyed by
-:class:`FrictionKind` members; plain strings (``"coulomb"``) work wherever a kind is asked for.
+The equations of ``impulse_ratio``, ``coulomb`` and ``mindlin`` are in ``docs/engine/index.md``
+("Friction models"); those of ``partial_slip``, with its measured accuracy, in
+``docs/verification/index.md`` (section "Partial slip"). The compiled implementation is in
+``impactlab.dynamics.core`` (``partial_slip``: ``impactlab.dynamics.slipcore``). A name never
+stands in for another model. The registry is keyed by :class:`FrictionKind` members; plain
+strings (``"coulomb"``) work wherever a kind is asked for.
 
 - ``impulse_ratio``: the paper's Eq. 7 (doi:10.1007/s00419-015-1108-2): F_t = mu F_n against the
   initial slip direction of the contact point, constant over the impact. When the initial
@@ -31,6 +34,15 @@ The equations are in ``docs/engine/index.md``; the compiled implementation is in
   stick/slip events: microslip spreading in from the contact edge, Masing unloading, births of
   unstressed annuli, the tangential stiffness 8 G* a of the actual (plastic) contact radius.
   Compiled in ``impactlab.dynamics.slipcore``; ``simulate``, the batch engine and sweeps.
+  Accuracy of the 16 cells against the exact solution (elastic spheres, nu = 0.1-0.45): each
+  cell sticks or slips as a whole, so a slip annulus thinner than a cell (a_max/16) is not
+  resolved. It is that thin near normal incidence, psi1 = 4 G* |v_t,in| / (mu E* |v_n|) below
+  about 0.2: there |e_t - exact| reaches 2.7e-3 (psi1 ~ 0.05) and falls more slowly than N^-2,
+  and the contact point's v_t,out/v_t,in is up to 0.0095 too far forward, so a ratio under 0.01
+  in size can have the wrong sign (nu = 0.45, psi1 = 0.03: exact -0.006, 16 cells +0.002).
+  From psi1 ~ 0.2 the error falls like N^-2: |e_t - exact| < 8e-4 (< 3e-4 from psi1 = 1).
+  psi2 = 4 G* v_t,out / (mu E* |v_n|) is within 1.5e-3 throughout, every error towards a more
+  forward rebound (tests/dynamics/test_partial_slip_accuracy.py).
 """
 
 from __future__ import annotations
@@ -49,8 +61,10 @@ COULOMB = 1
 MINDLIN = 2
 PARTIAL_SLIP = 3
 PARTIAL_SLIP_CELLS = 16
-"""Default number of cells of the ``partial_slip`` model over the largest contact radius (max
-|e_t - exact| ~ 1e-3 on the Kharaz and Thornton sweeps; the error falls like N^-2)."""
+"""Number of cells of the ``partial_slip`` model over the largest contact radius. Elastic
+spheres: max |e_t - exact| 2.7e-3 near normal incidence (psi1 < 0.2, where a slip annulus
+thinner than a cell is not resolved and the error falls more slowly than N^-2), 8e-4 from
+psi1 = 0.2 on (falling like N^-2); see the module docstring."""
 
 
 class FrictionKind(enum.StrEnum):
@@ -155,15 +169,6 @@ BATCH_FRICTION_IDS: dict[str, int] = {
 sweeps) runs: the core's ``FRICTION_IDS`` and ``partial_slip``."""
 
 
-def batch_friction_error(name: object) -> str:
-    """The message for a friction model the batch engine does not run."""
-    return (
-        f"friction model {name!r} is not available in the batch engine (run_arrays, "
-        f"simulate_batch, sweeps): use impactlab.simulate() for it; batch models: "
-        f"{', '.join(BATCH_FRICTION_IDS)}"
-    )
-
-
 def friction_names() -> tuple[str, ...]:
     """Names of the friction models."""
     return tuple(str(kind) for kind in FRICTION_MODELS)
@@ -192,7 +197,6 @@ __all__ = [
     "PARTIAL_SLIP_CELLS",
     "FrictionKind",
     "FrictionModel",
-    "batch_friction_error",
     "friction_names",
     "get_friction",
 ]

@@ -3,11 +3,11 @@ Mindlin-Deresiewicz solution on Maw-Barber-Fawcett's and Thornton's representati
 Kharaz-Gorham-Salman measurements.
 
 Reference values and their provenance: ``impactlab.verification.partial_slip`` (exact M-D by an
-independent fixed-step method-of-dimensionality-reduction solution, 600 elements; its program is
-in the git history, ``research/partial_slip/`` last in commit 98a4405). Tolerances: the
-discretisation error of 16 cells (max |e_t - exact| 2e-3 measured against that solution, 2nd
-order in the cell count) plus a margin; the Kharaz RMS tolerances are the figures of the same
-study (0.012, 20.5 rad/s) plus ~20 %.
+independent fixed-step method-of-dimensionality-reduction solution,
+``impactlab.verification.partial_slip_mdr``). Tolerances: the discretisation error of 16 cells
+(max |e_t - exact| 2.4e-3 on these tables, largest near psi1 = 0.05, where the error falls more
+slowly than N^-2: tests/dynamics/test_partial_slip_accuracy.py) plus a margin; the Kharaz RMS
+tolerances are the figures of the same study (0.012, 20.5 rad/s) plus ~20 %.
 """
 
 from __future__ import annotations
@@ -29,7 +29,7 @@ from impactlab.verification.partial_slip import (
     thornton_case,
 )
 
-ET_TOL = 3e-3  # |e_t - exact M-D| with 16 cells (prototype: <= 2e-3)
+ET_TOL = 3e-3  # |e_t - exact M-D| with 16 cells (measured: <= 2.4e-3)
 
 
 @pytest.mark.parametrize("row", KGS_EXACT.tolist(), ids=lambda r: f"{r[0]:g}deg")

@@ -17,19 +17,21 @@ from impactlab.verification.partial_slip import (
     KGS_EXACT,
     KGS_SPEED,
     MBF_EXACT,
+    NU_EXACT,
     THORNTON_EXACT,
     SphereCase,
     kharaz_case,
     kharaz_rms,
     kharaz_run,
     mbf_case,
+    nu_case,
     psi_velocity,
     rigid_coulomb,
     thornton_case,
 )
 from impactlab.verification.table import VerificationTable, columns
 
-__all__ = ["FIGURES", "plot_partial_slip", "verify_partial_slip"]
+__all__ = ["FIGURES", "accuracy_rows", "plot_partial_slip", "verify_partial_slip"]
 
 #: Tolerances: |e_t - exact M-D| with 16 cells; RMS of e_t against the Kharaz data.
 ET_TOL = 3e-3
@@ -45,7 +47,58 @@ def _et_errors(case: SphereCase, vts: list[float], exact: list[float]) -> tuple[
     return max(new), max(old)
 
 
-def _exact_rows(fast: bool) -> list[dict[str, Any]]:
+def _nu_points() -> list[dict[str, float]]:
+    """Every ``NU_EXACT`` point: the errors of 16 and 32 cells and of ``mindlin`` (e_t; psi2 and
+    the contact point's v_t,out / v_t,in = psi2 / psi1 for 16 cells), the exact ratio."""
+    pts = []
+    for nu, psi1, et, psi2 in NU_EXACT:
+        case = nu_case(float(nu))
+        vt = psi1 * case.mu * case.vn / case.eta
+        r16, r32 = case.run(vt), case.run(vt, n_cells=32)
+        p16 = case.eta * r16["vslip"] / (case.mu * case.vn)
+        pts.append({"nu": nu, "psi1": psi1, "ratio": psi2 / psi1, "et16": r16["et"] - et,
+                    "et32": r32["et"] - et, "psi2": p16 - psi2, "r16": p16 / psi1 - psi2 / psi1,
+                    "mindlin": case.run(vt, "mindlin")["et"] - et})  # fmt: skip
+    return pts
+
+
+def accuracy_rows(points: list[dict[str, float]] | None = None) -> list[dict[str, Any]]:
+    """The accuracy table by psi1 over ``NU_EXACT`` (nu = 0.1-0.45): the exact v_t,out / v_t,in
+    range, the largest |error| of e_t (16 and 32 cells), of psi2 and of v_t,out / v_t,in (16),
+    the smallest observed order log2(err16 / err32), the smallest signed error and the nu where
+    16 cells give the contact point's rebound the wrong sign."""
+    pts = _nu_points() if points is None else points
+    rows = []
+    for psi1 in sorted({p["psi1"] for p in pts}):
+        g = [p for p in pts if p["psi1"] == psi1]
+        wrong = [p["nu"] for p in g if p["ratio"] * (p["ratio"] + p["r16"]) < 0.0]
+        rows.append({
+            "psi1": psi1, "lo": min(p["ratio"] for p in g), "hi": max(p["ratio"] for p in g),
+            "et16": max(abs(p["et16"]) for p in g), "et32": max(abs(p["et32"]) for p in g),
+            "order": min(math.log2(abs(p["et16"] / p["et32"])) for p in g),
+            "psi2": max(abs(p["psi2"]) for p in g), "r16": max(abs(p["r16"]) for p in g),
+            "signed": min(min(p["et16"], p["psi2"]) for p in g),
+            "wrong": ", ".join(f"{n:g}" for n in wrong) or "-",
+        })  # fmt: skip
+    return rows
+
+
+def _accuracy_markdown(rows: list[dict[str, Any]]) -> str:
+    """The accuracy table (``accuracy_rows``) as Markdown."""
+    head = (
+        "| psi1 | exact v_t,out/v_t,in | e_t error, 16 cells | 32 cells | order 16-32 | "
+        "psi2 error, 16 cells | v_t,out/v_t,in error, 16 cells | wrong sign at nu |"
+    )
+    body = [
+        f"| {r['psi1']:g} | {r['lo']:+.3f} to {r['hi']:+.3f} | {r['et16']:.1e} | "
+        f"{r['et32']:.1e} | {r['order']:.1f} | {r['psi2']:.1e} | {r['r16']:.1e} | "
+        f"{r['wrong']} |"
+        for r in rows
+    ]
+    return "\n".join([head, "|---|---|---|---|---|---|---|---|", *body])
+
+
+def _exact_rows(fast: bool, nu_pts: list[dict[str, float]]) -> list[dict[str, Any]]:
     rows = []
     step = 3 if fast else 1
     mbf = mbf_case()
@@ -67,13 +120,17 @@ def _exact_rows(fast: bool) -> list[dict[str, Any]]:
     old = max(abs(kharaz_run(t, "mindlin")["et"] - x) for t, x, _w in pts)
     rows.append({"case": "Kharaz alumina on glass, 1-60 deg", "n": len(pts), "new": new,
                  "old": old})  # fmt: skip
+    rows.append({"case": "steel, nu = 0.1-0.45, psi1 = 0.01-4 (Hertz, mu = 0.3)",
+                 "n": len(nu_pts), "new": max(abs(p["et16"]) for p in nu_pts),
+                 "old": max(abs(p["mindlin"]) for p in nu_pts)})  # fmt: skip
     return rows
 
 
 def verify_partial_slip(*, fast: bool = False) -> VerificationTable:
     """The ``partial_slip`` model (16 cells) against the exact Mindlin-Deresiewicz solution
     (MBF, Thornton, Kharaz cases) and against the Kharaz-Gorham-Salman measurements."""
-    rows = _exact_rows(fast)
+    nu_pts = _nu_points()
+    rows = _exact_rows(fast, nu_pts)
     worst = max(r["new"] for r in rows)
     rms_new, w_new = kharaz_rms()
     rms_old, w_old = kharaz_rms("mindlin")
@@ -93,10 +150,10 @@ def verify_partial_slip(*, fast: bool = False) -> VerificationTable:
         "partial_slip",
         "Partial slip: Mindlin-Deresiewicz friction against its converged solution and "
         "Kharaz's data",
-        TEXT,
+        TEXT.replace("{accuracy_table}", _accuracy_markdown(accuracy_rows(nu_pts))),
         cols,
         tuple(rows),
-        "max abs(e_t - exact M-D) (rows 1-4: the worst column); also RMS of e_t vs the Kharaz "
+        "max abs(e_t - exact M-D) (rows 1-5: the worst column); also RMS of e_t vs the Kharaz "
         f"data (last row: {rms_new:.3g}, tolerance {KGS_RMS_TOL})",
         worst,
         ET_TOL,
@@ -222,9 +279,30 @@ Hertzian unloading branch with the engine's contact-radius continuity factor), s
 works; the rigid rod and the sphere are supported, one at a time and in the batch engine
 (the flexible rod's drop has its own cells).
 
-**Convergence and cost.** The error of N cells against the exact solution falls like N^-2
-(prototype: max |e_t - exact| 0.023, 0.0092, 0.0038, 7.8e-4, 1.8e-4 for N = 2, 4, 8, 16, 32;
-tests/dynamics/test_partial_slip_invariants.py checks the order); 16 cells give ~1e-3. An
+**Convergence and cost.** Each cell is in one mode, stick or slip, so a slip annulus thinner
+than about one cell (a_max/16 with the default 16 cells) is not resolved. Near normal incidence
+the annulus is that thin: at first touch |F_t| / (mu F_n) = psi1 = eta v_t,in / (mu |v_n|)
+(eta = 4 G*/E*), and the Cattaneo-Mindlin slip annulus is about psi1 a / 3 wide, less than one
+cell for psi1 below about 0.2. There the error is largest and falls more slowly than N^-2 (and
+does not vanish as psi1 -> 0); from psi1 ~ 0.2 on it falls like N^-2. The table (generated)
+gives, at each psi1, the worst of five steel spheres (`NU_EXACT`: nu = 0.1, 0.2, 0.3, 0.4,
+0.45, Hertz, mu = 0.3) against the exact M-D solution. psi2 = eta v_t,out / (mu |v_n|) with
+v_t,out the contact point's tangential velocity at separation, positive forward (the sign of
+the MBF figure below); v_t,out/v_t,in = psi2/psi1; the order is the smallest
+log2(error of 16 cells / error of 32 cells) over nu. Every error in it is positive: 16 cells
+put e_t and psi2 above the exact values (a rebound too far forward).
+
+{accuracy_table}
+
+So 16 cells give |e_t - exact| up to 2.7e-3 below psi1 = 0.2 (largest near psi1 = 0.05, still
+1.3e-3 at psi1 = 0.01), under 8e-4 from psi1 = 0.2 and under 3e-4 from psi1 = 1; |psi2 - exact|
+under 1.5e-3; and the contact point's v_t,out/v_t,in up to 0.0095 too far forward for
+psi1 <= 0.1. Where the exact ratio is smaller than that, **the direction of the contact point's
+tangential rebound can be wrong**: at nu = 0.45 and psi1 = 0.03 the exact ratio is -0.006
+(backwards) and 16 cells give +0.002 (forward); at nu = 0.4 they give +0.094 for the exact
++0.086. Near normal incidence (psi1 < 0.2) a v_t,out/v_t,in under 0.01 in size has no reliable
+sign. `tests/dynamics/test_partial_slip_accuracy.py` checks these figures against the exact
+tables (`MBF_EXACT`, `KGS_EXACT`, `NU_EXACT`). An
 impact takes 30-70 events and 60-550 steps (median 103 over the 243 impacts of
 `tools/partial_slip_compare.py`) and about 0.17-0.18 ms of CPU (warm, in the batch, one
 thread): 13.3 and 13.9 times the `mindlin` model in two runs of
@@ -245,7 +323,9 @@ about the normal.
 
 **References used here.** "Exact M-D" is the exact solution of the same impact by the
 prototype's fixed-step MDR reference (600 elements, converged to ~1e-5; values and provenance in
-`impactlab.verification.partial_slip`). Maw, Barber & Fawcett (Wear 38 (1976) 101,
+`impactlab.verification.partial_slip`); `NU_EXACT` by the same method in
+`impactlab.verification.partial_slip_mdr` (3200 elements; it reproduces the other tables to
+4e-5). Maw, Barber & Fawcett (Wear 38 (1976) 101,
 doi:10.1016/0043-1648(76)90201-5): no digitised curve was available, so their theory is this
 exact solution of their problem (features checked: forward rebound at small psi1, reversal for
 0.8 < psi1 < 5.8, gross slip psi2 = psi1 - 4 chi from psi1 ~ 4.75). Kharaz, Gorham & Salman
