@@ -14,6 +14,7 @@ from __future__ import annotations
 import json
 import warnings
 from pathlib import Path
+from types import SimpleNamespace
 from typing import Any, cast
 
 import numpy as np
@@ -88,6 +89,10 @@ def _sta(times: list[float]) -> str:
     return "\n".join(rows) + "\n"
 
 
+#: A stand-in mesh: the node sets ``assemble`` counts the printed rows against.
+MESH = cast(Any, SimpleNamespace(flat_surface_nodes=np.arange(2), sphere_surface_nodes=[]))
+
+
 def test_a_file_cut_at_a_line_end_is_not_a_run_that_stopped() -> None:
     """ccx ended normally and its .sta file reached the end time 2, but the .dat stops at 1.5:
     refused as damaged (before, reported as NOT CONVERGED although ccx finished)."""
@@ -95,15 +100,15 @@ def test_a_file_cut_at_a_line_end_is_not_a_run_that_stopped() -> None:
     deck = problem.deck_spec(problem.mesh_spec())
     out = RunOutput(_totals([0.5, 1.0, 1.5]), _sta([0.5, 1.0, 1.5, 2.0]), 0, "", 1.0)
     with pytest.raises(DamagedOutputError, match=r"^run 1's job\.dat, line 24: the file stops"):
-        assemble(problem, cast(Any, None), deck, out, "run 1's job.dat")
+        assemble(problem, MESH, deck, out, "run 1's job.dat")
     # a loading-only run's end is 1: its .dat to 0.5 with a .sta to 1.0 is damaged too
     short = _problem(unload=False)
     out = RunOutput(_totals([0.5]), _sta([0.5, 1.0]), 0, "", 1.0)
     with pytest.raises(DamagedOutputError, match=r"job\.sta records the run finishing at time 1;"):
-        assemble(short, cast(Any, None), short.deck_spec(short.mesh_spec()), out)
+        assemble(short, MESH, short.deck_spec(short.mesh_spec()), out)
     out = RunOutput("", _sta([0.5, 1.0]), 0, "", 1.0)
     with pytest.raises(DamagedOutputError, match="the file has no printed block"):
-        assemble(short, cast(Any, None), short.deck_spec(short.mesh_spec()), out)
+        assemble(short, MESH, short.deck_spec(short.mesh_spec()), out)
 
 
 def _result(problem: Problem, converged: bool = True) -> IndentationResult:

@@ -70,7 +70,7 @@ def test_beyond_the_checked_interference_warns_before_ccx_runs(monkeypatch, tmp_
 def test_a_run_that_does_not_converge_exits_with_status_2(cli_main, monkeypatch, tmp_path):
     """What was computed is printed; the exit status says that not every run converged."""
     fake = tmp_path / "ccx"
-    fake.write_text("#!/bin/sh\nexit 3\n")
+    fake.write_text('#!/bin/sh\nif [ "$1" = "-v" ]; then echo "This is Version 2.23"; fi\nexit 3\n')
     fake.chmod(0o755)
     monkeypatch.setenv("IMPACTLAB_CCX", str(fake))
     monkeypatch.setenv("IMPACTLAB_CACHE_DIR", str(tmp_path / "cache"))  # no cache entry kept

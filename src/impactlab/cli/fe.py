@@ -11,7 +11,6 @@ Examples::
 
 from __future__ import annotations
 
-import csv
 import json
 import sys
 import warnings
@@ -21,7 +20,6 @@ from typing import Any, cast
 import typer
 
 from impactlab._display import field_row, format_value
-from impactlab._validation import read_text_file
 from impactlab._version import __version__
 from impactlab.cli._common import (
     SI_UNITS,
@@ -33,6 +31,7 @@ from impactlab.cli._common import (
     quantity,
 )
 from impactlab.cli.config_values import plain_number
+from impactlab.cli.fe_hardening import read_hardening
 from impactlab.cli.output_paths import check_replaceable, save_figure
 from impactlab.materials import Material, get_material
 
@@ -76,31 +75,6 @@ def _material(name: str, E: str | None, nu: float | None, sy: str | None, label:
     for w in caught:
         warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
     return made
-
-
-def read_hardening(path: Path) -> list[tuple[float, float]]:
-    """A hardening CSV: two columns, true stress [Pa] and true plastic strain, one row each
-    (a header line is skipped)."""
-    if not path.is_file():
-        raise FileNotFoundError(f"--hardening file not found: {path}")
-    try:
-        text = read_text_file(path, "CSV", f"--hardening {str(path)!r}")
-    except ValueError as exc:  # not UTF-8 text
-        raise UserError(str(exc)) from None
-    rows: list[tuple[float, float]] = []
-    for i, row in enumerate(csv.reader(text.splitlines())):
-        if not row or not "".join(row).strip():
-            continue
-        try:
-            rows.append((float(row[0]), float(row[1])))
-        except (ValueError, IndexError):
-            if i == 0:
-                continue  # header
-            raise UserError(
-                f"--hardening {path}: line {i + 1} must be 'stress_Pa, plastic_strain', "
-                f"got {','.join(row)!r}"
-            ) from None
-    return rows
 
 
 _UNITS = {
@@ -291,7 +265,9 @@ def indent_cmd(
     body_nu: float | None = typer.Option(None, "--body-nu", help="Sphere's Poisson's ratio."),
     body_sy: str | None = typer.Option(None, "--body-sy", help="Sphere's yield strength."),
     hardening: Path | None = typer.Option(
-        None, help="CSV of the flat's true stress [Pa], true plastic strain (first strain 0)."
+        None,
+        help="CSV of the flat's true stress [Pa], true plastic strain (first strain 0); a "
+        "header line naming the columns (plastic_strain,stress_Pa) sets their order.",
     ),
     mu_text: str = typer.Option("0", "--mu", help="Friction coefficient of the contact."),
     mesh: int = typer.Option(1, "--mesh", help="Mesh level 1-4 (each doubles the elements)."),
@@ -310,7 +286,7 @@ def indent_cmd(
 ) -> None:
     """Indent a flat with a sphere to each --max and unload (CalculiX, axisymmetric; with
     --loading-only the run stops at each --max)."""
-    from impactlab.fe import DamagedRunsError, find_ccx, indent
+    from impactlab.fe import DamagedRunsError, NotCalculixError, find_ccx, indent
     from impactlab.fe.problem import make_problem
 
     R = cast(float, positive(radius, "m", "--radius"))  # the option has a default
@@ -358,6 +334,8 @@ def indent_cmd(
             results = indent(fm, bm, **kwargs)
     except DamagedRunsError as exc:  # the runs that ended are printed, then the error
         damaged, results = exc, [r for r in exc.results if r is not None]
+    except NotCalculixError as exc:  # IMPACTLAB_CCX=/bin/true: one line, before any run
+        raise UserError(str(exc)) from None
     case = _case(  # what was indented: the JSON's "case"
         bm, fm, table, sphere=sphere, radius=R, mu=mu, mesh_level=mesh, loading_only=loading_only
     )

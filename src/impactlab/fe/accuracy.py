@@ -286,10 +286,6 @@ class CaseAccuracy:
         """delta_max / delta_c of the case's converged FE runs."""
         return np.asarray(self.built[0].maxima_ratio) if self.built else np.array([])
 
-    def longest_verified(self) -> LawAccuracy:
-        """The law with the largest verified range (the closer one on a tie)."""
-        return max(self.built, key=lambda a: (a.verified.upper, -a.score()))
-
     def recommendation(self) -> str:
         """One line: which law is closest to FE for this pair (overall, in force alone, in
         delta_r / delta_max alone), how close, and how far the best one is verified."""

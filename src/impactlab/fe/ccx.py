@@ -14,6 +14,7 @@ import shutil
 import signal
 import subprocess
 import time
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -53,12 +54,30 @@ def find_ccx() -> str:
     return exe
 
 
+class NotCalculixError(RuntimeError):
+    """The ccx executable found (``IMPACTLAB_CCX`` or PATH) is not CalculiX: it prints no
+    version for ``ccx -v``."""
+
+
 @functools.lru_cache(maxsize=4)
 def ccx_version(exe: str) -> str:
-    """The version line ccx prints (``2.20``), part of every cache key."""
-    out = subprocess.run([exe, "-v"], capture_output=True, text=True, timeout=60, check=False)
-    m = re.search(r"Version\s+(\S+)", out.stdout + out.stderr)
-    return m.group(1) if m else "unknown"
+    """The version ccx prints for ``ccx -v`` (``This is Version 2.20``: ``2.20``), part of
+    every cache key. :class:`NotCalculixError` in one line when ``exe`` prints no version (not
+    CalculiX: ``IMPACTLAB_CCX=/bin/true``), cannot be started, or does not answer in 60 s."""
+    try:
+        out = subprocess.run([exe, "-v"], capture_output=True, text=True, timeout=60, check=False)
+        text, status = out.stdout + out.stderr, exit_text(out.returncode)
+    except (OSError, subprocess.TimeoutExpired) as exc:
+        text, status = "", f"{type(exc).__name__}: {exc}"
+    m = re.search(r"Version\s+(\d\S*)", text)
+    if m:
+        return m.group(1)
+    said = " ".join(text.split())[:120]
+    raise NotCalculixError(
+        f"{exe} is not CalculiX's ccx: `{exe} -v` printed no version line such as 'This is "
+        f"Version 2.20' ({status}; output: {said!r}); point IMPACTLAB_CCX at CalculiX's ccx, "
+        "or unset it to use the ccx on PATH"
+    )
 
 
 @dataclass
@@ -66,8 +85,8 @@ class DatFile:
     """The printed results of one run: for each (quantity, set) the times and rows.
 
     ``totals[(what, set)]`` is a list of (time, vector); ``nodal[(what, set)]`` a list of
-    (time, node ids (1-based), values (n, 3)); ``contact_times`` the times that printed contact
-    stresses. Times are total times (step 2 runs from 1 to 2)."""
+    (time, node ids (1-based), values (n, 3)). Times are total times (step 2 runs from 1 to
+    2)."""
 
     totals: dict[tuple[str, str], list[tuple[float, np.ndarray]]] = field(default_factory=dict)
     nodal: dict[tuple[str, str], list[tuple[float, np.ndarray, np.ndarray]]] = field(
@@ -82,9 +101,22 @@ class DamagedOutputError(ValueError):
 
 
 #: A number as ccx prints it in a ``.dat`` row: a mantissa with a decimal point and a two- or
-#: three-digit exponent (``-2.359894E-02``), or nan / inf; a node id: digits.
-_NUMBER = re.compile(r"[-+]?(?:\d+\.\d*|\.\d+)[EeDd][-+]\d{2,3}|[-+]?(?:nan|inf)", re.IGNORECASE)
+#: three-digit exponent (``-2.359894E-02``; Fortran's E format drops the letter of a
+#: three-digit one: ``4.286203-101``, ``1.0+100``), or nan / inf; a node id: digits.
+_NUMBER = re.compile(
+    r"[-+]?(?:\d+\.\d*|\.\d+)(?:[EeDd][-+]\d{2,3}|[-+]\d{3})|[-+]?(?:nan|inf)", re.IGNORECASE
+)
 _NODE = re.compile(r"\d+")
+#: Any number as Fortran prints it, for patterns that find numbers in text (``1.5``,
+#: ``-2.359894E-02``, ``4.286203-101``); read it with :func:`fortran_value`.
+FORTRAN_FLOAT = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[EeDd][-+]?\d+|[-+]\d{3})?(?![\d.EeDd+-])"
+#: The exponent of a number whose letter Fortran dropped (``4.286203-101``).
+_BARE_EXPONENT = re.compile(r"(?<=[\d.])([-+]\d{3})$")
+
+
+def fortran_value(text: str) -> float:
+    """A number as Fortran prints it as a float (``1.0D-05``, ``4.286203-101``: 4.3e-101)."""
+    return float(_BARE_EXPONENT.sub(r"E\1", text.replace("D", "E").replace("d", "e")))
 
 
 def _width(what: str) -> int:
@@ -110,16 +142,18 @@ def _row(line: str, width: int, nodal: bool, name: str, number: int) -> list[flo
                 f"{name}, line {number}: {part!r} is not a whole {kind} as ccx prints it "
                 f"({line.strip()!r}); the file is damaged (cut short?)"
             )
-    return [float(v.replace("D", "E").replace("d", "e")) for v in parts]
+    return [fortran_value(v) for v in parts]
 
 
-def parse_dat(text: str, name: str = "job.dat") -> DatFile:
+def parse_dat(text: str, name: str = "job.dat", sizes: Mapping[str, int] | None = None) -> DatFile:
     """Parse the ``*NODE PRINT`` blocks of a ``.dat`` file (the contact-stress blocks are
     skipped: the contact radius is read from the surface displacements). ``name``: the file's
-    name in messages. DamagedOutputError (naming ``name``, the line and what is wrong) for a
-    row whose width differs from its header's components (plus the node id), a number not in
-    ccx's full form (``-2.359894E-02``: a number cut short would be read 100 times off), or a
-    text that ends inside a line."""
+    name in messages; ``sizes``: the number of nodes of each printed node set, where known.
+    DamagedOutputError (naming ``name``, the line and what is wrong) for a row whose width
+    differs from its header's components (plus the node id), a number not in ccx's full form
+    (``-2.359894E-02``: a number cut short would be read 100 times off), a text that ends
+    inside a line, or a nodal block with other than its set's number of rows (``sizes``, else
+    the set's first block: a file cut at a line's end inside a block)."""
     out = DatFile()
     if text and not text.endswith("\n"):
         last = text.splitlines()[-1].strip()
@@ -158,8 +192,35 @@ def parse_dat(text: str, name: str = "job.dat") -> DatFile:
             out.totals.setdefault((what.split()[1], nset), []).append((t, arr[0]))
         else:
             ids = arr[:, 0].astype(np.int64)
-            out.nodal.setdefault((what.split()[0], nset), []).append((t, ids, arr[:, 1:]))
+            blocks = out.nodal.setdefault((what.split()[0], nset), [])
+            _check_rows(len(ids), sizes, blocks, (name, header, what, nset, t))
+            blocks.append((t, ids, arr[:, 1:]))
     return out
+
+
+def _check_rows(
+    found: int,
+    sizes: Mapping[str, int] | None,
+    earlier: list[tuple[float, np.ndarray, np.ndarray]],
+    where: tuple[str, int, str, str, float],
+) -> None:
+    """DamagedOutputError when a nodal block of ``found`` rows has fewer or more than its set's
+    nodes (``sizes``), or than the set's first block (``earlier``); ``where``: (file name,
+    header line, quantity, set, time)."""
+    name, line, what, nset, t = where
+    if sizes is not None and nset in sizes:
+        expected = int(sizes[nset])
+        basis = f"the set has {expected} nodes"
+    elif earlier:
+        expected = len(earlier[0][1])
+        basis = f"its block at time {earlier[0][0]:g} has {expected}"
+    else:
+        return
+    if found != expected:
+        raise DamagedOutputError(
+            f"{name}, line {line}: the block {what!r} for set {nset} at time {t:g} has {found} "
+            f"rows where {expected} are expected ({basis}); the file is damaged (cut short?)"
+        )
 
 
 @dataclass(frozen=True)

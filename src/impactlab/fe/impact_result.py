@@ -15,15 +15,14 @@ from typing import Any
 
 import numpy as np
 
-from impactlab.fe.ccx import DatFile
+from impactlab.fe.ccx import FORTRAN_FLOAT, DatFile, fortran_value
 from impactlab.fe.deck import FORCE_UNIT, LENGTH_UNIT
 from impactlab.fe.mesh import Mesh
 from impactlab.fe.result import SECTOR_FACTOR
 
-_FLOAT = r"[-+]?\d*\.?\d+(?:[eE][-+]?\d+)?"
 _CF = re.compile(
-    r"statistics for slave set \S+, master set \S+ and time\s+(" + _FLOAT + r")\s*\n"
-    r"\s*\n[^\n]*\n\s*\n\s*(" + _FLOAT + r")\s+(" + _FLOAT + r")"
+    r"statistics for slave set \S+, master set \S+ and time\s+(" + FORTRAN_FLOAT + r")\s*\n"
+    r"\s*\n[^\n]*\n\s*\n\s*(" + FORTRAN_FLOAT + r")\s+(" + FORTRAN_FLOAT + r")"
 )
 
 #: The contact counts as closed while F > CONTACT_THRESHOLD * F_max.
@@ -114,8 +113,8 @@ def contact_forces(text: str) -> tuple[np.ndarray, np.ndarray]:
     contact bands, from the ``*CONTACT PRINT ... CF`` blocks of a ``.dat`` file."""
     sums: dict[float, float] = {}
     for m in _CF.finditer(text):
-        key = float(m.group(1))
-        sums[key] = sums.get(key, 0.0) + float(m.group(3))
+        key = fortran_value(m.group(1))
+        sums[key] = sums.get(key, 0.0) + fortran_value(m.group(3))
     times = sorted(sums)
     fy = np.array([sums[k] for k in times], dtype=np.float64)
     return np.array(times, dtype=np.float64), -fy * SECTOR_FACTOR * FORCE_UNIT

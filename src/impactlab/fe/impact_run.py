@@ -117,8 +117,10 @@ def _is_sphere(mesh: Mesh) -> np.ndarray:
 
 
 def assemble(problem: ImpactProblem, mesh: Mesh, out: RunOutput) -> ImpactResult:
-    """The result of one impact run from ccx's printed output."""
-    dat = parse_dat(out.dat)
+    """The result of one impact run from ccx's printed output (DamagedOutputError for a
+    damaged ``.dat`` file: ``ccx.parse_dat``)."""
+    sizes = {"NSPH": len(mesh.sphere_nodes), "NFSURF": len(mesh.flat_surface_nodes)}
+    dat = parse_dat(out.dat, "ccx's job.dat of the impact", sizes)
     t_f, force = contact_forces(out.dat)
     weights = node_masses(mesh, mesh.sphere_elements, 1.0)
     t_u, u_cm = centre_of_mass(dat, "displacements", weights)

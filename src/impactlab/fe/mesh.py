@@ -69,11 +69,6 @@ class Mesh:
         """Number of elements of both bodies."""
         return int(self.elements.shape[0])
 
-    def face_size(self, faces: np.ndarray) -> np.ndarray:
-        """Length of each (element, face) [m]."""
-        a, b = self._face_nodes(faces)
-        return np.asarray(np.hypot(*(self.nodes[a] - self.nodes[b]).T))
-
     def face_distance(self, faces: np.ndarray) -> np.ndarray:
         """Distance of each face's midpoint from the contact point [m]."""
         a, b = self._face_nodes(faces)
@@ -87,11 +82,6 @@ class Mesh:
         ib = np.array([f[1] for f in _FACES])[k]
         rows = np.arange(len(faces))
         return el[rows, ia], el[rows, ib]
-
-
-def size_at(spec: MeshSpec, d: float) -> float:
-    """The target element size h0 + g d [m] at distance d [m] from the contact point."""
-    return spec.h0 + spec.growth * d
 
 
 def _mesh_body(gmsh: object, spec: MeshSpec, kind: str) -> tuple[np.ndarray, np.ndarray]:

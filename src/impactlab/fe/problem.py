@@ -77,9 +77,13 @@ def check_hardening(name: str, table: Any) -> tuple[tuple[float, float], ...]:
         )
     s, e = arr[:, 0], arr[:, 1]
     if e[0] != 0.0 or np.any(s <= 0.0):
+        k = 0 if e[0] != 0.0 or s[0] <= 0.0 else int(np.argmax(s <= 0.0))
+        swapped = np.all(s < 10.0) and np.any(e > 1.0e3)  # strains first, stresses in Pa next
         raise ValueError(
-            f"{name} must start at plastic strain 0 with positive stresses, got first row "
-            f"({float(s[0])!r}, {float(e[0])!r})"
+            f"{name} must start at plastic strain 0 with positive stresses: each row is (true "
+            f"stress [Pa], true plastic strain), so row {k + 1} reads as stress "
+            f"{float(s[k])!r} Pa and plastic strain {float(e[k])!r}"
+            + ("; the columns look swapped: give the stress first" if swapped else "")
         )
     if np.any(np.diff(e) <= 0.0) or np.any(np.diff(s) < 0.0):
         raise ValueError(
@@ -334,7 +338,7 @@ def make_problem(
     if estimated_contact_radius(R, d) >= 0.95 * R:
         raise ValueError(
             f"delta_max ({d!r} m) is too large for radius {R!r} m: the contact radius would "
-            f"reach the sphere's equator; allowed delta_max < {_largest_delta(R)!r} m"
+            f"reach the sphere's equator; allowed delta_max < {largest_delta_max(R)!r} m"
         )
     mu_v = check_nonnegative("mu", mu)
     if mu_v > 2.0:
@@ -363,7 +367,7 @@ def make_problem(
     return problem
 
 
-def _largest_delta(R: float) -> float:
+def largest_delta_max(R: float) -> float:
     """The largest delta_max [m] whose estimated contact radius stays below 0.95 R."""
     a = 0.95 * R / 1.2
     return R - math.sqrt(R * R - a * a)

@@ -16,6 +16,7 @@ import numpy as np
 from impactlab.fe import cache
 from impactlab.fe.ccx import (
     DamagedOutputError,
+    DatFile,
     RunOutput,
     ccx_version,
     find_ccx,
@@ -81,16 +82,22 @@ def assemble(
     problem: Problem, mesh: Mesh, deck: DeckSpec, out: RunOutput, name: str = "job.dat"
 ) -> IndentationResult:
     """The result of one run from ccx's printed output (``name``: the ``.dat`` file's name in
-    messages). DamagedOutputError when the ``.dat`` text is damaged (``ccx.parse_dat``), or
-    ends before the time at which the ``.sta`` file records the run finishing, ccx having
-    ended normally (a file cut at a line's end: not a run that stopped)."""
-    dat = parse_dat(out.dat, name)
+    messages). DamagedOutputError when the ``.dat`` text is damaged (``ccx.parse_dat``: a
+    block with fewer rows than its set has nodes among them), lacks a surface's block at a
+    time whose forces it prints, or ends before the time at which the ``.sta`` file records
+    the run finishing, ccx having ended normally (a file cut at a line's end: not a run that
+    stopped)."""
+    sets = {"NFSURF": mesh.flat_surface_nodes}
+    if deck.sphere is not None:
+        sets["NSSURF"] = mesh.sphere_surface_nodes
+    dat = parse_dat(out.dat, name, {k: len(v) for k, v in sets.items()})
     sta = parse_sta(out.sta)
     t, f_sphere, f_flat = reactions(dat)
     unloads = deck.unloading is not None
     end = 2.0 if unloads else 1.0
     finished = out.returncode == 0 and t.size > 0 and math.isclose(t[-1], end, rel_tol=1e-9)
     _check_complete(out, sta, end, float(t[-1]) if t.size else None, finished, name)
+    _check_surfaces(dat, t, tuple(sets), out, name)
     dmax = problem.delta_max
     delta = delta_at(deck.loading, deck.unloading, t, dmax)
     peak = float(np.max(np.abs(f_sphere))) if t.size else 0.0
@@ -161,6 +168,22 @@ def _check_complete(
         f"{name}, line {out.dat.count(chr(10))}: the file {where}, but ccx ended normally and "
         f"job.sta records the run finishing at time {end:g}; the file is damaged (cut short?)"
     )
+
+
+def _check_surfaces(
+    dat: DatFile, times: np.ndarray, sets: tuple[str, ...], out: RunOutput, name: str
+) -> None:
+    """DamagedOutputError when the ``.dat`` file prints the forces at a time but not the
+    displacements of each surface node set of ``sets`` (a file cut between two blocks)."""
+    for nset in sets:
+        printed = {b[0] for b in dat.nodal.get(("displacements", nset), [])}
+        missing = [float(t) for t in times if float(t) not in printed]
+        if missing:
+            raise DamagedOutputError(
+                f"{name}, line {out.dat.count(chr(10))}: no displacements of set {nset} at "
+                f"time {missing[0]:.7g}, whose forces the file prints; the file is damaged "
+                "(cut short?)"
+            )
 
 
 #: Depth of the dent at the axis, relative to delta_max, from which a final state whose

@@ -17,6 +17,7 @@
 
 from __future__ import annotations
 
+import hashlib
 import json
 import math
 import os
@@ -35,6 +36,7 @@ from impactlab.contact.indentation_data import (
 )
 from impactlab.contact.tabulated import Tabulated, curves_cache_dir, select_curves
 from impactlab.fe.curves import HARDENED_DIR, load_case, load_cases
+from impactlab.fe.problem import largest_delta_max
 from impactlab.fe.run import indent
 from impactlab.materials import ContactPair
 
@@ -138,6 +140,45 @@ def _slug(text: str) -> str:
     return "".join(ch if ch.isalnum() else "-" for ch in text.lower()).strip("-")[:60]
 
 
+#: Arguments of ``indent`` that do not change its results (left out of a curves file's key).
+_NOT_RESULTS = frozenset({"workers", "cache_dir", "use_cache", "keep_files", "progress"})
+
+
+def curves_file_name(
+    pair: ContactPair, radius: float, maxima: Sequence[float], indent_kwargs: dict[str, Any]
+) -> str:
+    """The name of the curves file of FE runs of ``pair``: a readable slug of the bodies'
+    names and a short SHA-256 of every value the runs depend on (E, nu, S_y of both bodies,
+    R [m], the maxima / delta_c, ``indent``'s other arguments: hardening, sphere, mu, mesh),
+    so that two pairs never share a file however alike their names."""
+    values = {
+        "bodies": [[m.E, m.nu, m.yield_strength] for m in (pair.body, pair.flat)],
+        "radius": radius,
+        "maxima": [float(m) for m in maxima],
+        "indent": {k: v for k, v in indent_kwargs.items() if k not in _NOT_RESULTS},
+    }
+    blob = json.dumps(values, sort_keys=True, default=repr).encode()
+    slug = _slug(f"fe-{pair.body.name}-on-{pair.flat.name}")[:48].strip("-")
+    return f"{slug}-{hashlib.sha256(blob).hexdigest()[:12]}"
+
+
+def _check_maxima(pair: ContactPair, radius: float, maxima: Sequence[float], dc: float) -> None:
+    """ValueError naming ``maxima_over_delta_c`` when its largest multiple of delta_c is more
+    than the sphere of ``radius`` [m] allows (a soft flat: delta_c is large)."""
+    largest = largest_delta_max(radius)
+    too_far = [m for m in maxima if m * dc >= largest]
+    if too_far:
+        default = tuple(maxima) == RUN_MAXIMA_OVER_DELTA_C
+        keep = [m for m in maxima if m * dc < largest]
+        raise ValueError(
+            f"maxima_over_delta_c{' (the default)' if default else ''} asks for "
+            f"{too_far[0]:g} delta_c = {too_far[0] * dc:.4g} m (delta_c = {dc:.4g} m for "
+            f"{pair.body.name} on {pair.flat.name}), too large for radius {radius:g} m: allowed "
+            f"delta_max < {largest:.4g} m = {largest / dc:.4g} delta_c; pass "
+            f"maxima_over_delta_c below that, e.g. {tuple(keep)}"
+        )
+
+
 def tabulated_law(
     pair: ContactPair,
     radius: float,
@@ -152,9 +193,11 @@ def tabulated_law(
     From the shipped or cached FE curves when one matches the pair (``contact.tabulated``'s
     tolerances); otherwise, with ``run_fe``, from new ``indent`` runs of the pair (an
     elastic-plastic sphere, frictionless; ``indent_kwargs`` go to ``indent``) loaded to
-    ``maxima_over_delta_c`` times delta_c, whose curves are stored in the curves cache.
-    Needs CalculiX ``ccx`` for the runs (RuntimeError with how to install it otherwise).
-    The model's ``source`` names the curves used.
+    ``maxima_over_delta_c`` times delta_c, whose curves are stored in the curves cache (a
+    file per pair and inputs: ``curves_file_name``). Needs CalculiX ``ccx`` for the runs
+    (RuntimeError with how to install it otherwise); ValueError, before any run, when a
+    maximum is too large for the radius (a soft flat's delta_c is large: pass smaller
+    ``maxima_over_delta_c``). The model's ``source`` names the curves used.
     """
     law = Tabulated()
     try:
@@ -165,6 +208,7 @@ def tabulated_law(
     else:
         return law.build(pair, radius)
     dc, _ = jg_critical(pair.E_star, radius, pair.yield_strength, pair.nu)
+    _check_maxima(pair, radius, maxima_over_delta_c, dc)
     runs = runner(
         pair.flat,
         pair.body,
@@ -172,7 +216,7 @@ def tabulated_law(
         delta_max=[m * dc for m in maxima_over_delta_c],
         **indent_kwargs,
     )
-    name = _slug(f"fe-{pair.body.name}-on-{pair.flat.name}")
+    name = curves_file_name(pair, radius, maxima_over_delta_c, indent_kwargs)
     source = (
         f"FE runs of impactlab.fe.indent: {pair.body.name} sphere on {pair.flat.name}, "
         f"R = {radius:g} m, maxima {', '.join(f'{m:g}' for m in maxima_over_delta_c)} delta_c"
@@ -187,14 +231,65 @@ def tabulated_law(
     return Tabulated(curves).build(pair, radius)
 
 
+#: How docs/laws/tabulated.md names the shipped FE cases.
+CASE_LABELS: dict[str, str] = {
+    "paper-aisi201-on-aisi1010": "paper's pair",
+    "aisi201-on-al6061t6": "aluminium",
+    "elastic-sphere-on-aisi4340": "hard steel",
+    "aisi201-on-pmma": "PMMA",
+    "elastic-52100-on-aisi304": "AISI 304",
+    "elastic-52100-on-copper-ofhc": "copper",
+}
+
+
+def unloading_energy_ratios() -> dict[str, dict[float, float]]:
+    """Energy returned on unloading, the shipped law's Hertzian branch over the FE's
+    (``W_u``: the trapezoid of the FE unloading curve), by case and delta_max / delta_c, for
+    every converged FE run the law reaches (``law="tabulated"`` built for the case's pair)."""
+    out: dict[str, dict[float, float]] = {}
+    for case in load_cases():
+        model = Tabulated().build(case.pair, case.radius)
+        row = out.setdefault(case.name, {})
+        for run in case.runs:
+            if not (run.converged and run.delta_max <= model.max_interference):
+                continue
+            d, f = np.asarray(run.unloading_delta), np.asarray(run.unloading_force)
+            order = np.argsort(d)
+            fe_work = float(np.trapezoid(f[order], d[order]))
+            ratio = model.unload(run.delta_max).energy_returned() / fe_work
+            row[round(run.delta_max / case.delta_c, 6)] = ratio
+    return out
+
+
+def unloading_energy_table() -> str:
+    """:func:`unloading_energy_ratios` as the Markdown table of docs/laws/tabulated.md
+    (3 decimals; a blank where a case has no run)."""
+    ratios = unloading_energy_ratios()
+    order = list(CASE_LABELS)
+    names = sorted(ratios, key=lambda n: (order.index(n) if n in order else len(order), n))
+    maxima = sorted({m for row in ratios.values() for m in row})
+    lines = [
+        "| `delta_max/delta_c` | " + " | ".join(CASE_LABELS.get(n, n) for n in names) + " |",
+        "| --- |" + " --- |" * len(names),
+    ]
+    for m in maxima:
+        cells = [f"{ratios[n][m]:.3f}" if m in ratios[n] else "" for n in names]
+        lines.append(f"| {m:g} | " + " | ".join(cells) + " |")
+    return "\n".join(lines) + "\n"
+
+
 __all__ = [
+    "CASE_LABELS",
     "HARDENED_PAPER_CASE",
     "RUN_MAXIMA_OVER_DELTA_C",
+    "curves_file_name",
     "curves_from_runs",
     "hardened_curves",
     "hardened_law",
     "shipped_curves_record",
     "shipped_fe_curves",
     "tabulated_law",
+    "unloading_energy_ratios",
+    "unloading_energy_table",
     "write_shipped_curves",
 ]
