@@ -30,11 +30,6 @@ from impactlab.cli.invert_output import inversion_json
 if TYPE_CHECKING:
     from impactlab.experiment import ExperimentResult, MarkerGeometry
 
-#: The engine comparison's fields (``res.model``) that the summary shows, as ``model <field>``.
-_MODEL = (
-    "e", "delta_p", "contact_travel", "sliding_length", "duration", "mean_force", "spin_out"
-)  # fmt: skip
-
 
 def _rod_from(spec: str | None) -> tuple[Rod, dict[str, Any]]:
     """(rod, the TOML data) from --rod: None/'paper' or a TOML file with a [rod] table."""
@@ -83,7 +78,9 @@ def _geometry_from(spec: str | None, rod_data: dict[str, Any]) -> MarkerGeometry
 
 
 def analyze_cmd(
-    markers: Path = typer.Argument(..., help="Marker tracks: C3D (.c3d) or CSV (.csv)."),
+    markers: Path = typer.Argument(
+        ..., help="Marker tracks: C3D (.c3d), or CSV text (.csv, .txt or .tsv)."
+    ),
     scan: Path = typer.Argument(
         ..., help="Dent scan (X3P, SUR, PLU, DATX, VK, OPD, GWY, SDF, NetCDF, ..., .npy/.csv)."
     ),
@@ -154,7 +151,9 @@ def analyze_cmd(
 
     Partial results are printed and saved even when a file is bad; the exit status is then 2.
     A result in doubt (an estimated marker geometry that the impulse relation finds tilted or
-    cannot check) says so (a warning, "ok": false in --json) with exit status 0.
+    cannot check; a rod whose mass and inertia do not fit; a velocity change that implies e
+    outside [0, 1]; a T or F that cannot be the impact's) says so (an "ok  no" row, a warning,
+    "ok": false in --json) with exit status 0.
 
     Example: impactlab analyze drop.c3d dent.x3p --geometry markers.toml --out results/
     """
@@ -202,25 +201,23 @@ def analyze_cmd(
 def _print_summary(res: ExperimentResult) -> None:
     """The measured quantities in display units (``impactlab._display``), then warnings and
     the files written."""
+    from impactlab.experiment.result import model_rows  # loaded with analyze already
+
     rows = [field_row(k, est.value, est.unit, est.sigma) for k, est in res.summary().items()]
     if res.kinematics is not None:
         rows.append(("geometry", res.kinematics.geometry_source, ""))
-        if not res.kinematics.ok:
-            rows.append(("ok", "no: the marker geometry is in doubt (see the warnings)", ""))
+    why = []
+    if res.kinematics is not None and not res.kinematics.ok:
+        why.append("the marker geometry is in doubt")
+    if getattr(res, "implausible", None):  # (a result's stand-in may lack it)
+        why.append("the result is implausible")
+    if why:
+        rows.append(("ok", f"no: {' and '.join(why)} (see the warnings)", ""))
     if res.dent is not None:
         name, text, unit = field_row("sliding_direction", res.dent.sliding_angle, "rad")
         ambiguous = " (ambiguous)" if res.dent.direction_ambiguous else ""
         rows.append((name, text + ambiguous, unit + " (scan x)"))
-    if res.model is not None:
-        law = res.model.get("law", "")
-        for k in _MODEL:
-            v = res.model.get(k)
-            if isinstance(v, float):
-                label = f"model {k} ({law})"
-                if k == "contact_travel":  # the mark's extent, as the scan's L_s: a magnitude
-                    v, label = abs(v), f"model L_s = |contact_travel| ({law})"
-                _n, text, unit = field_row(k, v, SI_UNITS.get(k, "1"))
-                rows.append((label, text, unit))
+    rows += model_rows(res.model)
     names = (Path(p).name if p else "-" for p in (res.markers_path, res.scan_path))
     print_rows(rows, "impactlab analyze: " + " + ".join(names))
     for w in res.warnings:  # on stderr, as every command's warnings

@@ -13,8 +13,9 @@ never lost; an invalid argument raises a TypeError or ValueError naming it at on
    of mu_c, or no tangential exit velocity of the tip: ``experiment.sticking``) is this
    stage's error instead;
 4. ``model`` (optional, with ``flat``): the impact engine run with the measured initial state, for
-   comparison (the paper's Tables 2-3); then a warning for an inferred T or F far from the
-   simulated impact's, or a T longer than the marker fits allow (``experiment.consistency``);
+   comparison (the paper's Tables 2-3); then a warning that marks the result not ok
+   (``result.doubts``) for an inferred T or F far from the simulated impact's, or a T longer
+   than the marker fits allow (``experiment.consistency``);
 5. ``figures`` and ``results`` (``results.json``) in ``out_dir``, figures an earlier run
    left there removed (``experiment.saving``: only files an analysis wrote are removed or
    written over; all are written, or, on a full disk, none and nothing removed); a file that
@@ -39,6 +40,7 @@ from impactlab.experiment.arguments import (
     check_scalars,
     checked_run,
     default_rod,
+    implausible_rod,
     rod_properties,
 )
 from impactlab.experiment.arguments import dent_options as _dent_options
@@ -62,6 +64,10 @@ __all__ = ["ExperimentResult", "analyze", "default_rod", "rod_properties"]
 _DATA_ERRORS = (ValueError, OSError, MemoryError)
 #: ``warnings.catch_warnings`` swaps process-wide state: one inversion's record at a time.
 _RECORDING = threading.Lock()
+#: The inversion's warnings (``impactlab.analytic``) that say the result is impossible: a
+#: velocity change no impact gives (e outside [0, 1]), a duration no rigid-body impact has;
+#: they mark the result not ok (``ExperimentResult.doubts``).
+_IMPOSSIBLE = ("no impact gives it", "far longer than a rigid-body impact")
 
 
 def _message(exc: BaseException) -> str:
@@ -79,6 +85,8 @@ def _markers_stage(res: ExperimentResult, path: Path, rod: Rod, opts: dict[str, 
         res.kinematics = measure_impact(tracks, rod, **opts)
     except _DATA_ERRORS as exc:
         res.errors["markers"] = _message(exc)
+        # what the measurement had found before it failed (frames left out, ...)
+        res.warnings += [f"markers: {w}" for w in getattr(exc, "warnings", ())]
         return
     res.warnings += [f"markers: {w}" for w in res.kinematics.warnings]
 
@@ -134,7 +142,11 @@ def _inversion_stage(
             )
         except ValueError as exc:
             res.errors["inversion"] = _message(exc)
-    res.warnings += _inversion_warnings(caught, d)
+    for text in _inversion_warnings(caught, d):
+        if any(phrase in text for phrase in _IMPOSSIBLE):
+            res.add_doubt(text)
+        else:
+            res.warnings.append(text)
 
 
 def _inversion_warnings(caught: list[warnings.WarningMessage], d: DentMetrics) -> list[str]:
@@ -172,8 +184,9 @@ _GUARD = int(KINEMATICS_DEFAULTS["guard"])
 
 
 def _plausibility_stage(res: ExperimentResult, guard: int) -> None:
-    """Warnings when the inferred T or F disagree with the simulated impact (``model``) or T
-    with the single-impact assumption of the marker fits (``experiment.consistency``)."""
+    """Doubts (warnings that mark the result not ok) when the inferred T or F disagree with
+    the simulated impact (``model``) or T with the single-impact assumption of the marker fits
+    (``experiment.consistency``)."""
     inv, k = res.inversion, res.kinematics
     if inv is None:
         return
@@ -191,7 +204,8 @@ def _plausibility_stage(res: ExperimentResult, guard: int) -> None:
         gap = float(min(k.post.tau)) - float(max(k.pre.tau))
         single = check_single_impact(inv.duration, gap, guard)
         found += [single] if single else []
-    res.warnings += [f"plausibility: {w}" for w in found]
+    for w in found:  # a T or F that cannot be the impact's: the result is not ok
+        res.add_doubt(f"plausibility: {w}")
 
 
 def analyze(
@@ -249,8 +263,9 @@ def analyze(
     outside its range, a dent the rod cannot make: :func:`check_dent`, a file that cannot be
     written) is recorded in ``result.errors``; an invalid
     argument raises TypeError or ValueError naming it at once. A result that is not ok for a
-    doubt (``result.doubts``: an estimated marker geometry in doubt) warns of each one with an
-    ``ImplausibleInputWarning`` too.
+    doubt (``result.doubts``: an estimated marker geometry in doubt, a rod whose mass and
+    inertia do not fit, a velocity change that implies e outside [0, 1], an implausible T or F)
+    warns of each one with an ``ImplausibleInputWarning`` too.
     """
     switches = {"flip_heights": flip_heights, "figures": figures, "gravity": gravity}
     check_scalars(n_samples, law, strict=strict, **switches)
@@ -266,6 +281,9 @@ def analyze(
         | _dent_options(dent_options),
     )
     res = run.result()
+    rod_note = implausible_rod(run.rod)
+    if rod_note is not None:
+        res.add_doubt(f"rod: {rod_note}")
     res.options = _options_record(
         flat=flat, geometry=geometry, up=up, marker_units=marker_units, pixel_size=pixel_size,
         height_unit=height_unit, flip_heights=flip_heights, gravity=gravity,

@@ -10,7 +10,13 @@ from pathlib import Path
 
 
 class ExperimentError(ValueError):
-    """A problem with the experimental data (a file, a fit, a measurement)."""
+    """A problem with the experimental data (a file, a fit, a measurement).
+
+    ``warnings``: what the failed step had found before it failed (``measure_impact``: frames
+    left out, a marker off the rigid cluster, ...), which ``analyze`` keeps among the result's
+    warnings."""
+
+    warnings: tuple[str, ...] = ()
 
 
 class FileFormatError(ExperimentError):

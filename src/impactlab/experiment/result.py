@@ -16,7 +16,37 @@ from impactlab.experiment.kinematics import ImpactKinematics
 from impactlab.experiment.profilometry import DentMetrics
 from impactlab.experiment.uncertainty import Estimate
 
-__all__ = ["ExperimentResult"]
+__all__ = ["ExperimentResult", "model_rows"]
+
+#: The engine comparison's fields (``ExperimentResult.model``) shown as ``model <field>``, and
+#: their SI units.
+_MODEL = {
+    "e": "1",
+    "delta_p": "m",
+    "contact_travel": "m",
+    "sliding_length": "m",
+    "duration": "s",
+    "mean_force": "N",
+    "spin_out": "rad/s",
+}
+
+
+def model_rows(model: dict[str, Any] | None) -> list[tuple[str, str, str]]:
+    """The table rows ``model <field> (<law>)`` of the engine comparison (display units); the
+    contact travel as the scan measures L_s, a magnitude (``model L_s = |contact_travel|``)."""
+    if model is None:
+        return []
+    law = model.get("law", "")
+    rows = []
+    for k, unit in _MODEL.items():
+        v = model.get(k)
+        if isinstance(v, float):
+            label = f"model {k} ({law})"
+            if k == "contact_travel":  # the mark's extent, as the scan's L_s: a magnitude
+                v, label = abs(v), f"model L_s = |contact_travel| ({law})"
+            _n, text, shown = field_row(k, v, unit)
+            rows.append((label, text, shown))
+    return rows
 
 
 @dataclass
@@ -28,7 +58,8 @@ class ExperimentResult:
     or None), ``errors`` (stage -> message, for each stage that failed on its data),
     ``warnings``, ``figures`` (name -> path), ``files`` (what was saved), ``rod`` (the rod's
     properties used), ``options`` (the analysis's settings as given, JSON-ready: what repeats
-    it).
+    it), ``implausible`` (what the analysis's checks find impossible or implausible in the
+    result, each one among the warnings too: part of ``doubts``).
     """
 
     markers_path: str | None
@@ -43,13 +74,18 @@ class ExperimentResult:
     files: dict[str, str] = field(default_factory=dict)
     rod: dict[str, float] = field(default_factory=dict)
     options: dict[str, Any] = field(default_factory=dict)
+    implausible: list[str] = field(default_factory=list)
 
     @property
     def ok(self) -> bool:
-        """True when every stage succeeded and nothing makes a result doubtful (an estimated
-        marker geometry that the impulse relation finds tilted or cannot check:
-        ``kinematics.doubts``, also among the warnings)."""
-        return not self.errors and (self.kinematics is None or self.kinematics.ok)
+        """True when every stage succeeded and nothing makes the result doubtful
+        (``doubts``)."""
+        return not self.errors and not self.doubts
+
+    def add_doubt(self, text: str) -> None:
+        """Record ``text`` as a warning that marks the result not ok (``implausible``)."""
+        self.warnings.append(text)
+        self.implausible.append(text)
 
     def summary(self) -> dict[str, Estimate]:
         """The headline results as estimates (SI), keyed by the glossary's names (the table the
@@ -85,16 +121,22 @@ class ExperimentResult:
 
     @property
     def doubts(self) -> tuple[str, ...]:
-        """What makes the result doubtful though every stage succeeded (``kinematics.doubts``:
-        an estimated marker geometry in doubt); empty when there is none."""
-        return () if self.kinematics is None else tuple(self.kinematics.doubts)
+        """What makes the result doubtful though every stage succeeded: an estimated marker
+        geometry in doubt (``kinematics.doubts``) and what the checks find impossible or
+        implausible (``implausible``: a rod whose mass and inertia do not fit, a velocity
+        change that implies e outside [0, 1], a T longer than 0.1 s, a T or F far from the
+        simulated impact's or longer than the marker fits allow); empty when there is none."""
+        geometry = () if self.kinematics is None else self.kinematics.doubts
+        return (*geometry, *self.implausible)
 
     def _rows(self) -> list[tuple[str, str, str]]:
         rows = [field_row(k, v.value, v.unit, v.sigma) for k, v in self.summary().items()]
+        rows += model_rows(self.model)
         rows.append(("ok", "yes" if self.ok else "no", ""))
         rows += [("doubt", d, "") for d in self.doubts]
         rows += [(f"error ({k})", v, "") for k, v in self.errors.items()]
-        return rows
+        shown = {*self.doubts, *(f"markers: {d}" for d in self.doubts)}  # each once
+        return rows + [("warning", w, "") for w in self.warnings if w not in shown]
 
     def __str__(self) -> str:
         return text_table("ExperimentResult", self._rows())
@@ -127,6 +169,7 @@ class ExperimentResult:
             "scan": self.scan_path,
             "summary": {k: v.to_dict() for k, v in self.summary().items()},
             "ok": self.ok,
+            "doubts": list(self.doubts),
             "errors": dict(self.errors),
             "warnings": list(self.warnings),
             "rod": dict(self.rod),

@@ -2,8 +2,19 @@
 
 from __future__ import annotations
 
+import re
+from pathlib import Path
+
+from impactlab._validation import read_text_file
+from impactlab.experiment.errors import FileFormatError
+
 #: What a spreadsheet pads a one-cell line with: field separators and blanks.
 _PADDING = " \t,;"
+#: A leading decimal number of a header value.
+_NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:e[-+]?\d+)?")
+#: The header keys that the readers use (marker CSVs, CSV height maps): stated twice, they must
+#: agree.
+READ_KEYS = frozenset({"units", "unit", "rate", "pixel_size", "pixel_size_y", "height_unit"})
 
 
 def split_commented(
@@ -15,8 +26,12 @@ def split_commented(
     (for error messages) and their original text. The field separators that a spreadsheet pads
     a one-cell line with (``# units: mm,,,,``) are stripped from both ends of a value. With
     ``keep_tab_lines`` a line of tabs only is a data line (a row of empty cells), not a blank.
+    A key that the readers use (``READ_KEYS``) stated twice with different values (``# units:
+    m`` then ``# units: mm``) is a ValueError naming both lines (the same value twice, in any
+    case or spacing, is fine).
     """
     meta: dict[str, str] = {}
+    where: dict[str, tuple[int, str]] = {}
     rows: list[tuple[int, str]] = []
     for ln, line in enumerate(text.splitlines(), start=1):
         s = line.strip()
@@ -28,7 +43,86 @@ def split_commented(
             body = s.lstrip("#").strip()
             if ":" in body:
                 key, value = body.split(":", 1)
-                meta[key.strip().lower()] = value.strip(_PADDING)
+                key, value = key.strip().lower(), value.strip(_PADDING)
+                if key in meta and key in READ_KEYS and _same(meta[key]) != _same(value):
+                    ln0, line0 = where[key]
+                    raise ValueError(
+                        f"lines {ln0} and {ln} state {key} twice, differently: "
+                        f"{line0.strip(_PADDING)!r} and {s.strip(_PADDING)!r}; keep the right one"
+                    )
+                meta[key] = value
+                where.setdefault(key, (ln, s))
             continue
         rows.append((ln, line))
     return meta, rows
+
+
+def _same(value: str) -> tuple[float | None, str]:
+    """A header value as compared for a key stated twice: its leading number as a number
+    (``2 um`` and ``2.0 um`` agree), case and blanks do not count."""
+    text = "".join(value.split()).lower()
+    m = _NUMBER.match(text)
+    if m is None:
+        return None, text
+    return float(m.group(0)), text[m.end() :]
+
+
+#: A number written with a decimal comma (``-0,25``, ``1,5e-3``).
+_DECIMAL_COMMA = re.compile(r"^[-+]?\d*,\d+(?:[eE][-+]?\d+)?$")
+
+
+def parse_number(cell: str, sep: str | None) -> float:
+    """The number in ``cell`` (stripped); a decimal comma (``0,25``) read as a decimal point
+    where the fields are not separated by commas (``sep``: ``;``, a tab, None for blanks).
+    ValueError otherwise."""
+    try:
+        return float(cell)
+    except ValueError:
+        if sep != "," and _DECIMAL_COMMA.match(cell):
+            return float(cell.replace(",", "."))
+        raise
+
+
+def not_a_number(cell: str) -> str:
+    """The message for a ``cell`` that is not a number, with a hint where it holds a comma."""
+    hint = ""
+    if "," in cell:
+        hint = (
+            " (decimal commas are read where semicolons or tabs separate the fields; with "
+            "commas between them write decimal points)"
+        )
+    return f"{cell!r} is not a number{hint}"
+
+
+def read_text(path: Path, kind: str) -> str:
+    """The UTF-8 text of the data file ``path`` (:func:`read_text_file`); FileFormatError
+    naming it otherwise: a file that reads as Windows-1252 text (a spreadsheet's export in a
+    Western European locale) is named as such, with how to save it as UTF-8."""
+    try:
+        return read_text_file(path, kind)
+    except ValueError as exc:  # not UTF-8 text
+        raise FileFormatError(path, _encoding_problem(path, kind, str(exc))) from None
+
+
+def _encoding_problem(path: Path, kind: str, problem: str) -> str:
+    """Why ``path`` is not UTF-8 text: Windows-1252 text named as such, else ``problem``."""
+    data = path.read_bytes()
+    try:
+        data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        at = exc.start
+    else:  # cannot happen: read_text_file failed on it
+        return problem
+    if b"\x00" in data:
+        return problem
+    try:
+        text = data.decode("cp1252")
+    except UnicodeDecodeError:
+        return problem
+    line = data[:at].count(b"\n") + 1
+    return (
+        f"not UTF-8 text ({kind} is read as UTF-8): line {line}, byte {at} is 0x{data[at]:02x}, "
+        f"{text[at]!r} in Windows-1252, the encoding of a "
+        "spreadsheet or editor set to a Western European language; save the file as UTF-8 "
+        "(Excel: 'CSV UTF-8'; an editor: encoding UTF-8)"
+    )

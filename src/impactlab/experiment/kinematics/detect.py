@@ -11,11 +11,13 @@ drop's impact, the others (a second bounce) bound the free flight.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
 from impactlab.experiment.errors import ImpactNotFoundError, TooFewFramesError
 from impactlab.experiment.kinematics.fits import robust_sigma, velocity_jumps
+from impactlab.experiment.markers import MarkerTracks
 from impactlab.experiment.rigid import Poses
 
 __all__ = [
@@ -199,12 +201,16 @@ def free_flight(
     poses: Poses,
     ok: np.ndarray,
     imp: Impact,
-    guard: int,
-    max_fit_frames: int,
-    min_fit_frames: int,
+    opts: dict[str, Any],
     src: str,
+    tracks: MarkerTracks | None = None,
 ) -> tuple[np.ndarray, np.ndarray]:
-    """The frames of the free flight before and after the impact (at most ``max_fit_frames``)."""
+    """The frames of the free flight before and after the impact; ``opts``: the options
+    ``guard``, ``max_fit_frames``, ``min_fit_frames`` and ``window`` of ``measure_impact``. Too
+    few after it where the record (or a marker of ``tracks``, the markers of the poses) ends:
+    the error says so (:func:`record_end_note`)."""
+    guard, max_fit_frames = opts["guard"], opts["max_fit_frames"]
+    min_fit_frames = opts["min_fit_frames"]
     k_star = imp.k_star
     pre_all = ok[(ok <= k_star - guard) & (ok >= ok[min(imp.lo_i, ok.size - 1)])]
     post_all = ok[(ok >= k_star + guard) & (ok <= ok[max(imp.hi_i, 0)])]
@@ -212,12 +218,52 @@ def free_flight(
     post_fr = post_all[:max_fit_frames]
     for name, fr in (("before", pre_fr), ("after", post_fr)):
         if fr.size < min_fit_frames:
+            ends = name == "after" and imp.hi_i >= ok.size - 1  # no later impact bounds it
             raise TooFewFramesError(
                 f"{src}: only {fr.size} free-flight frames with a pose {name} the impact at "
                 f"t = {imp.t_ref:.4f} s (frame {k_star}); need at least {min_fit_frames}"
+                + (record_end_note(poses, ok, imp, opts["window"], tracks) if ends else "")
                 + several_impacts_hint(imp)
             )
     return pre_fr, post_fr
+
+
+def record_end_note(
+    poses: Poses, ok: np.ndarray, imp: Impact, window: int, tracks: MarkerTracks | None
+) -> str:
+    """Why the free flight after the impact is short: where the record ends, where the poses
+    end before it (the markers missing from then on, from ``tracks``), and that an impact this
+    close to their end may lie later than found (the detector fits ``window`` frames after
+    each frame: a jump in the last ones it cannot see)."""
+    t, k_star, last = poses.time, imp.k_star, int(ok[-1])
+    n = t.size
+    if last == n - 1:
+        note = (
+            f": the record ends {n - 1 - k_star} frames after it (frame {n - 1}, t = {t[-1]:.4f} s)"
+        )
+        advice = "; record longer after the impact"
+    else:
+        note = (
+            f": the markers' poses end {last - k_star} frames after it (frame {last}, t = "
+            f"{t[last]:.4f} s; the record goes on to frame {n - 1})"
+        )
+        advice = "; the markers must be seen longer after the impact"
+        if tracks is not None:
+            seen = np.isfinite(tracks.positions[last + 1 :]).all(axis=2)
+            gone = [lab for j, lab in enumerate(tracks.labels) if not seen[:, j].any()]
+            if gone:
+                note += f": marker {', '.join(gone)} is missing from frame {last + 1} on"
+    between = int(np.count_nonzero(~poses.ok[k_star + 1 : last + 1]))
+    if between:  # frames left out (a warning names them) or without 3 markers
+        note += f"; {between} of the frames after it have no pose"
+        advice = ""
+    if last - k_star <= window + 1:
+        note += (
+            f"; an impact so close to the end of the poses is found from the frames before it "
+            f"and may lie up to {last - k_star} frames later (at t = {t[k_star]:.4f} to "
+            f"{t[last]:.4f} s)"
+        )
+    return note + advice
 
 
 def several_impacts_hint(imp: Impact) -> str:

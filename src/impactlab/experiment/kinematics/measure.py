@@ -14,7 +14,7 @@ from typing import Any
 import numpy as np
 
 from impactlab.experiment.checks import check_instance
-from impactlab.experiment.errors import MarkerError, TooFewFramesError
+from impactlab.experiment.errors import ExperimentError, MarkerError, TooFewFramesError
 from impactlab.experiment.kinematics.body import RodBody, estimated_body, impact_frame
 from impactlab.experiment.kinematics.cluster import marker_poses
 from impactlab.experiment.kinematics.com import estimate_com
@@ -55,26 +55,9 @@ _PAIRS = {
 
 #: Units of the derived quantities (order ``DERIVED``).
 _UNITS = (
-    "s",
-    "rad",
-    "rad",
-    "m/s",
-    "m/s",
-    "rad/s",
-    "m/s",
-    "m/s",
-    "rad/s",
-    "m/s",
-    "m/s",
-    "m/s",
-    "m/s",
-    "1",
-    "1",
-    "m/s",
-    "m/s",
-    "m/s",
-    "m/s",
-)
+    "s", "rad", "rad", "m/s", "m/s", "rad/s", "m/s", "m/s", "rad/s", "m/s", "m/s", "m/s", "m/s",
+    "1", "1", "m/s", "m/s", "m/s", "m/s",
+)  # fmt: skip
 
 
 def _check_markers(tracks: MarkerTracks, src: str) -> None:
@@ -286,14 +269,18 @@ def measure_impact(
     upv = parse_up(up)
     _check_markers(tracks, src)
     k, imp = _measure(tracks, (half, R_tip), geometry, upv, opts, src)
-    return checked_against_mirror(
-        k,
-        geometry,
-        gyration_squared(rod),
-        lambda geo: _measure(tracks, (half, R_tip), geo, upv, opts, src)[0],
-        src,
-        lambda: _e_error(src, k.e, imp),
-    )
+    try:
+        return checked_against_mirror(
+            k,
+            geometry,
+            gyration_squared(rod),
+            lambda geo: _measure(tracks, (half, R_tip), geo, upv, opts, src)[0],
+            src,
+            lambda: _e_error(src, k.e, imp),
+        )
+    except ExperimentError as exc:  # the warnings of the measurement it refuses are kept
+        exc.warnings = k.warnings
+        raise
 
 
 def _measure(
@@ -305,10 +292,28 @@ def _measure(
     src: str,
 ) -> tuple[ImpactKinematics, Impact]:
     """The steps of :func:`measure_impact` (``rod``: its half length and tip radius [m]; the
-    options checked) and the impact found."""
+    options checked) and the impact found; an :class:`ExperimentError` carries the warnings
+    found before it (``warnings``)."""
+    warnings: list[str] = []
+    try:
+        return _steps(tracks, rod, geometry, upv, opts, src, warnings)
+    except ExperimentError as exc:
+        exc.warnings = (*warnings, *exc.warnings)
+        raise
+
+
+def _steps(
+    tracks: MarkerTracks,
+    rod: tuple[float, float],
+    geometry: MarkerGeometry | None,
+    upv: np.ndarray,
+    opts: dict[str, Any],
+    src: str,
+    warnings: list[str],
+) -> tuple[ImpactKinematics, Impact]:
+    """:func:`_measure`'s steps, their warnings into ``warnings``."""
     half, R_tip = rod
     g, guard, min_fit = opts["g"], opts["guard"], opts["min_fit_frames"]
-    warnings: list[str] = []
     reference, rigidity, poses, ok = marker_poses(
         tracks,
         geometry,
@@ -329,7 +334,8 @@ def _measure(
     falling = ok[ok <= imp.k_star - guard]  # all the record holds: grown back from the impact
     lever = 0.0 if geometry is not None else half + float(np.ptp(reference, axis=0).max())
     fitted_g = fitted_gravity(poses, falling, t_ref, upv, g, src, warnings, lever)
-    pre_fr, post_fr = free_flight(poses, ok, imp, guard, opts["max_fit_frames"], min_fit, src)
+    used = tracks if geometry is None or geometry.labels is None else tracks.select(geometry.labels)
+    pre_fr, post_fr = free_flight(poses, ok, imp, opts, src, used)
     if geometry is not None:
         body = RodBody(np.zeros(3), np.array([1.0, 0.0, 0.0]), None, "given")
     else:  # (a free fall far from g, which spoils the fits, was refused by fitted_gravity)

@@ -20,7 +20,6 @@ from pathlib import Path
 
 import numpy as np
 
-from impactlab._validation import read_text_file
 from impactlab.experiment.checks import check_instance, check_path
 from impactlab.experiment.errors import FileFormatError
 from impactlab.experiment.markers.tracks import (
@@ -31,7 +30,12 @@ from impactlab.experiment.markers.tracks import (
     parse_rate,
     rate_argument,
 )
-from impactlab.experiment.textfiles import split_commented
+from impactlab.experiment.textfiles import (
+    not_a_number,
+    parse_number,
+    read_text,
+    split_commented,
+)
 
 __all__ = ["read_csv_markers", "write_csv_markers"]
 
@@ -105,6 +109,11 @@ def _data(p: Path, rows: list[tuple[int, str]], delim: str, ncol: int) -> np.nda
                 if len(cells) == ncol + 1 and not cells[-1].strip()
                 else "truncated or malformed row"
             )
+            if delim == "," and len(cells) > ncol:  # 0,002,352,76 for 0.002;352.76
+                why += (
+                    "; decimal commas? Where commas separate the fields, write decimal "
+                    "points, or separate the fields with semicolons"
+                )
             raise FileFormatError(
                 p, f"line {ln}: expected {ncol} fields, found {len(cells)} ({why})"
             )
@@ -115,17 +124,20 @@ def _data(p: Path, rows: list[tuple[int, str]], delim: str, ncol: int) -> np.nda
                     raise FileFormatError(p, f"line {ln}: the time/frame value is missing")
                 continue
             try:
-                data[r, c] = float(cs)
+                data[r, c] = parse_number(cs, delim)
             except ValueError:
-                raise FileFormatError(
-                    p, f"line {ln}, column {c + 1}: {cs!r} is not a number"
-                ) from None
+                raise FileFormatError(p, f"line {ln}, column {c + 1}: {not_a_number(cs)}") from None
     return data
 
 
 def _unit(p: Path, units: str | None, meta: dict[str, str]) -> tuple[str, float]:
     """(the coordinates' length unit, metres per unit) from ``units=`` and ``# units:``."""
     file_units = meta.get("units") or meta.get("unit")
+    if "units" in meta and "unit" in meta and not _same_unit(meta["units"], meta["unit"]):
+        raise FileFormatError(
+            p,
+            f"'# unit: {meta['unit']}' and '# units: {meta['units']}' disagree; keep the right one",
+        )
     if (
         units is not None
         and file_units is not None
@@ -145,6 +157,15 @@ def _unit(p: Path, units: str | None, meta: dict[str, str]) -> tuple[str, float]
         return unit, length_factor(unit, name="units")
     except ValueError as exc:
         raise FileFormatError(p, str(exc)) from None
+
+
+def _same_unit(a: str, b: str) -> bool:
+    """True when the length units ``a`` and ``b`` are the same (or one is not a unit: the
+    reader names it)."""
+    try:
+        return math.isclose(length_factor(a), length_factor(b))
+    except ValueError:
+        return a.strip().lower() == b.strip().lower()
 
 
 def frame_rate(p: Path, text: str) -> float:
@@ -233,11 +254,11 @@ def read_csv_markers(
     p = Path(path)
     if not p.is_file():
         raise FileFormatError(p, "file does not exist" if not p.exists() else "not a file")
+    text = read_text(p, "CSV")
     try:
-        text = read_text_file(p, "CSV")
-    except ValueError as exc:  # not UTF-8 text
+        meta, rows = split_commented(text)
+    except ValueError as exc:  # a key stated twice, differently
         raise FileFormatError(p, str(exc)) from None
-    meta, rows = split_commented(text)
     if not rows:
         raise FileFormatError(p, "no header and no data rows")
     header_ln, header = rows[0]

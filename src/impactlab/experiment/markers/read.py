@@ -34,4 +34,8 @@ def read_markers(
         head = p.read_bytes()[:512]
         if len(head) >= 2 and head[1] == 0x50:
             return read_c3d(p, units=units, rate=rate)
-    raise FileFormatError(p, f"unknown marker file type {p.suffix!r}; expected .c3d or .csv")
+    raise FileFormatError(
+        p,
+        f"unknown marker file type {p.suffix!r}; expected C3D (.c3d) or CSV text (.csv, .txt or "
+        ".tsv: the layout of docs/experiment.md, Marker tracks)",
+    )

@@ -18,6 +18,7 @@ from scipy import ndimage
 from impactlab.experiment.checks import check_instance
 from impactlab.experiment.errors import ScanError
 from impactlab.experiment.profilometry.bottom import bottom
+from impactlab.experiment.profilometry.gaps import GapSpread, gap_spread, outline_gaps
 from impactlab.experiment.profilometry.heightmap import HeightMap
 from impactlab.experiment.profilometry.metrics import DentMetrics
 from impactlab.experiment.profilometry.outline import (
@@ -48,7 +49,7 @@ MAX_PROFILE_SAMPLES = 1_000_000
 class _Extent:
     """Length, width [m] and the sliding axis (unit vector) of the deformed area; ``length_t``,
     ``width_t`` at the threshold itself; ``extrapolated`` when length and width were
-    extrapolated to the zero threshold."""
+    extrapolated to the zero threshold; ``outlines`` the outlines measured (x, y) [m]."""
 
     length: float
     width: float
@@ -56,6 +57,7 @@ class _Extent:
     length_t: float
     width_t: float
     extrapolated: bool
+    outlines: tuple[np.ndarray, ...] = ()
 
 
 def _deepest(
@@ -77,9 +79,15 @@ def _deepest(
     return float(sf.zs[i0, j0]), sf.lev.sigma, float(j0 * dx), float(i0 * dy)
 
 
-def _extent(sf: Surface, thr: float, depth: float, deepest: np.ndarray) -> _Extent:
-    def metrics_at(level: float) -> tuple[float, float, np.ndarray] | None:
-        ol = outline(sf.zs, sf.dx, sf.dy, -level, (float(deepest[0]), float(deepest[1])))
+def _extent(
+    sf: Surface, thr: float, depth: float, deepest: np.ndarray, zs: np.ndarray | None = None
+) -> _Extent | None:
+    """The extent on the smoothed map (``zs``, default the scan's); None when the outline at the
+    threshold ``thr`` [m] is lost or does not cross the line through ``deepest``."""
+    zmap = sf.zs if zs is None else zs
+
+    def metrics_at(level: float) -> tuple[float, float, np.ndarray, np.ndarray] | None:
+        ol = outline(zmap, sf.dx, sf.dy, -level, (float(deepest[0]), float(deepest[1])))
         if ol is None:
             return None
         L, ax = feret(ol)
@@ -87,13 +95,12 @@ def _extent(sf: Surface, thr: float, depth: float, deepest: np.ndarray) -> _Exte
         ax = ax if principal is None else principal
         perp = np.array([-ax[1], ax[0]])
         a, b = chord(ol, deepest, perp)
-        return L, a + b, ax
+        return L, a + b, ax, ol
 
     m1 = metrics_at(thr)
-    assert m1 is not None
-    length, width, axis = m1
-    if not math.isfinite(width):
-        raise ScanError(f"{sf.src}: the outline does not cross the line through the deepest point")
+    if m1 is None or not math.isfinite(m1[1]):
+        return None
+    length, width, axis, ol1 = m1
     m2 = metrics_at(2.0 * thr) if depth > 4.0 * thr else None
     length_t, width_t = length, width  # at the threshold
     if m2 is not None:
@@ -101,7 +108,24 @@ def _extent(sf: Surface, thr: float, depth: float, deepest: np.ndarray) -> _Exte
         # the length and the width to the threshold 0 (the deformed area's true edge)
         length = 2.0 * length_t - m2[0]
         width = 2.0 * width_t - m2[1]
-    return _Extent(length, width, axis, length_t, width_t, m2 is not None)
+    outlines = (ol1,) if m2 is None else (ol1, m2[3])
+    return _Extent(length, width, axis, length_t, width_t, m2 is not None, outlines)
+
+
+def _gaps(
+    sf: Surface, thr: float, depth: float, deepest: np.ndarray, ext: _Extent
+) -> GapSpread | None:
+    """What the large gaps without data that the outlines run through leave open (:mod:`.gaps`);
+    None when they run through none, or leave no more than a pixel open."""
+    gap = outline_gaps(sf, ext.outlines)
+    if gap is None:
+        return None
+
+    def measure(zs: np.ndarray) -> tuple[float, float] | None:
+        e = _extent(sf, thr, depth, deepest, zs)
+        return None if e is None else (e.length, e.width)
+
+    return gap_spread(sf, gap, thr, measure, (ext.length, ext.width))
 
 
 def _profiles(
@@ -300,6 +324,8 @@ def _metrics(
     point ``deepest`` (x, y) [m] and its outline ``polygon`` at the threshold ``thr`` [m]."""
     depth = delta_p.value
     ext = _extent(sf, thr, depth, deepest)
+    if ext is None:
+        raise ScanError(f"{sf.src}: the outline does not cross the line through the deepest point")
     length, width = ext.length, ext.width
     s, prof, sc, cprof = _profiles(sf, deepest, ext.axis, length, width)
     axis, s, prof, d_minus, d_plus, ambiguous = _orient(s, prof, ext.axis, depth)
@@ -308,6 +334,12 @@ def _metrics(
     s_start, s_end = float(proj.min()), float(proj.max())
     noise = _outline_noise(sf.sig_s, s, prof, (s_start, s_end), sc, cprof, width)
     sig_len, sig_wid, sig_ls = _sigmas(ext, thr, depth, noise)
+    gaps = _gaps(sf, thr, depth, deepest, ext)
+    if gaps is not None:
+        sig_len = math.hypot(sig_len, gaps.sigma_length)
+        sig_wid = math.hypot(sig_wid, gaps.sigma_width)
+        sig_ls = math.hypot(sig_ls, gaps.sigma_ls)
+        warnings.append(gaps.note())
     if not ext.extrapolated:
         warnings.append(
             "the dent is too shallow to extrapolate its outline to the zero "

@@ -90,9 +90,12 @@ def _st_problem(st: SimpleNamespace, p: Path, exc: BaseException) -> str:
     )
 
 
-def _open_reader(st: SimpleNamespace, p: Path) -> Any:
-    """The reader for ``p``: content detection, overruled by the extension's readers when they
-    disagree (e.g. any file of 2 n^2 bytes passes for a NASA SRTM tile)."""
+def _open_reader(st: SimpleNamespace, p: Path, fmt: str | None = None) -> Any:
+    """The reader for ``p``: the format ``fmt`` (SurfaceTopography's name) where given, else
+    content detection, overruled by the extension's readers when they disagree (e.g. any file
+    of 2 n^2 bytes passes for a NASA SRTM tile)."""
+    if fmt is not None:
+        return st.open(str(p), format=fmt)
     reader = st.open(str(p))
     ext_formats = _formats_for_extension(st, p)
     if not ext_formats or reader.format() in ext_formats:
@@ -171,10 +174,15 @@ def _to_m(st: SimpleNamespace, p: Path, unit: Any) -> float:
 
 
 def _read(
-    st: SimpleNamespace, p: Path, pixel_size: Any, height_unit: str | None, channel: int | None
+    st: SimpleNamespace,
+    p: Path,
+    pixel_size: Any,
+    height_unit: str | None,
+    channel: int | None,
+    fmt: str | None = None,
 ) -> tuple[Any, dict[str, Any]]:
     """(reader, the topography's heights, unit, sizes and grid) of one channel."""
-    reader = _open_reader(st, p)
+    reader = _open_reader(st, p, fmt)
     channels = reader.channels
     if channel is not None and not 0 <= channel < len(channels):
         raise FileFormatError(
@@ -203,14 +211,19 @@ def _read(
 
 
 def read_instrument(
-    p: Path, pixel_size: Any, height_unit: str | None, channel: int | None
+    p: Path,
+    pixel_size: Any,
+    height_unit: str | None,
+    channel: int | None,
+    fmt: str | None = None,
 ) -> HeightMap:
-    """Read an instrument scan with SurfaceTopography into a :class:`HeightMap` (SI)."""
+    """Read an instrument scan with SurfaceTopography into a :class:`HeightMap` (SI); ``fmt``:
+    SurfaceTopography's format name (``"xyz"``), default from the file."""
     st = _surface_topography(p)
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            reader, data = _read(st, p, pixel_size, height_unit, channel)
+            reader, data = _read(st, p, pixel_size, height_unit, channel, fmt)
     except FileFormatError:
         raise
     except ImportError as exc:  # a package that SurfaceTopography needs for this format

@@ -10,14 +10,18 @@ from typing import Any
 
 import numpy as np
 
-from impactlab._validation import read_text_file
 from impactlab.experiment.errors import FileFormatError
 from impactlab.experiment.markers import length_factor
 from impactlab.experiment.profilometry.heightmap import HeightMap, pixel_pair
 from impactlab.experiment.profilometry.stated import check_height_unit, check_pixel_size
-from impactlab.experiment.textfiles import split_commented
+from impactlab.experiment.textfiles import (
+    not_a_number,
+    parse_number,
+    read_text,
+    split_commented,
+)
 
-__all__ = ["has_pixel_header", "read_plain"]
+__all__ = ["has_pixel_header", "looks_like_xyz", "read_plain"]
 
 
 #: How a .npy file starts (numpy's format) and how an .npz (a zip archive) does.
@@ -58,9 +62,9 @@ def _load_npy(p: Path) -> np.ndarray:
 
 
 def _separator(lines: list[tuple[int, str]]) -> str | None:
-    """The cells' separator of a text matrix: a comma, else a semicolon, else a tab where any
-    line has one; None: blanks."""
-    for sep in (",", ";", "\t"):
+    """The cells' separator of a text matrix: a semicolon, else a tab, else a comma where any
+    line has one (a comma beside semicolons or tabs is a decimal comma); None: blanks."""
+    for sep in (";", "\t", ","):
         if any(sep in line for _, line in lines):
             return sep
     return None
@@ -78,14 +82,15 @@ def _cells(line: str, sep: str | None) -> list[str]:
 
 def _load_text(p: Path) -> tuple[np.ndarray, dict[str, str]]:
     """(heights in the file's unit, the '# key: value' header) of a CSV/text matrix; comma,
-    semicolon, tab or blank separated, empty cells (or nan, bad, na) are no data (one cell
-    between two commas, semicolons or tabs; blanks cannot mark an empty cell)."""
-    try:
-        text = read_text_file(p, "CSV")
-    except ValueError as exc:  # not UTF-8 text
-        raise FileFormatError(p, str(exc)) from None
+    semicolon, tab or blank separated (decimal commas read where the cells are not separated
+    by commas), empty cells (or nan, bad, na) are no data (one cell between two commas,
+    semicolons or tabs; blanks cannot mark an empty cell)."""
+    text = read_text(p, "CSV")
     rows: list[list[float]] = []
-    header, lines = split_commented(text, keep_tab_lines=True)
+    try:
+        header, lines = split_commented(text, keep_tab_lines=True)
+    except ValueError as exc:  # a key stated twice, differently
+        raise FileFormatError(p, str(exc)) from None
     sep = _separator(lines)
     for ln, line in lines:
         cells = _cells(line, sep)
@@ -96,9 +101,9 @@ def _load_text(p: Path) -> tuple[np.ndarray, dict[str, str]]:
                 vals.append(math.nan)
                 continue
             try:
-                vals.append(float(c))
+                vals.append(parse_number(c, sep))
             except ValueError:
-                raise FileFormatError(p, f"line {ln}: {c!r} is not a number") from None
+                raise FileFormatError(p, f"line {ln}: {not_a_number(c)}") from None
         if rows and len(vals) != len(rows[0]):
             raise FileFormatError(
                 p,
@@ -120,6 +125,7 @@ def read_plain(p: Path, pixel_size: Any, height_unit: str | None) -> HeightMap:
         z = _load_npy(p)
     else:
         z, meta = _load_text(p)
+    _check_not_xyz(p, z, pixel_size)
     dx, dy = _pixel_size(p, pixel_size, meta)
     fac, unit = _height_unit(p, height_unit, meta)
     try:
@@ -189,3 +195,48 @@ def has_pixel_header(p: Path) -> bool:
     except OSError:
         return False
     return False
+
+
+def _check_not_xyz(p: Path, z: np.ndarray, pixel_size: Any) -> None:
+    """FileFormatError for a matrix of three columns and many rows: an x,y,z point list, which
+    a height matrix (rows = y, at least 8 x 8) is not; says how to read it."""
+    if z.ndim != 2 or z.shape[1] != 3 or z.shape[0] < 8:
+        return
+    if p.suffix.lower() == ".npy":
+        how = "save it as text with the extension .xyz (np.savetxt), which is read as such"
+    elif pixel_size is not None:
+        how = "leave out pixel_size= (--pixel-size): a point list gives its own positions"
+        if p.suffix.lower() not in (".csv", ".txt", ".asc"):
+            how += ", and save it as .xyz"
+    else:  # its '# pixel_size:' line makes it a matrix
+        how = "remove its '# pixel_size:' line (a point list gives its own positions)"
+    raise FileFormatError(
+        p,
+        f"{z.shape[0]} rows of 3 values: it looks like an x,y,z point list, not a height "
+        f"matrix (rows = y, one column per x); to read it as a point list {how}",
+    )
+
+
+def looks_like_xyz(p: Path) -> bool:
+    """True when the first data lines of the text file ``p`` (up to 20, at least 3; '#' lines
+    skipped) each hold three numbers: an x,y,z point list."""
+    found = 0
+    try:
+        with p.open("r", encoding="utf-8-sig", errors="replace") as fh:
+            for line in fh:
+                s = line.strip()
+                if not s or s.startswith("#"):
+                    continue
+                cells = s.replace(",", " ").replace(";", " ").split()
+                try:
+                    [float(c) for c in cells]
+                except ValueError:
+                    return False
+                if len(cells) != 3:
+                    return False
+                found += 1
+                if found == 20:
+                    break
+    except OSError:
+        return False
+    return found >= 3

@@ -9,7 +9,7 @@ from impactlab.experiment.checks import check_path
 from impactlab.experiment.errors import FileFormatError, MissingDependencyError
 from impactlab.experiment.profilometry.heightmap import HeightMap
 from impactlab.experiment.profilometry.instrument import read_instrument
-from impactlab.experiment.profilometry.plain import has_pixel_header, read_plain
+from impactlab.experiment.profilometry.plain import has_pixel_header, looks_like_xyz, read_plain
 
 __all__ = ["read_scan"]
 
@@ -29,7 +29,8 @@ def read_scan(
     y, comma, semicolon or blank separated, empty cells = no data) height maps are read directly
     and need ``pixel_size`` (e.g. "2 um", metres for a bare number, or a (dx, dy) pair) and
     ``height_unit`` (e.g. "um"), unless the file has '# pixel_size: 2 um' / '# height_unit: um'
-    lines (a .txt or .asc file with such lines is such a map too). A pixel size or height unit
+    lines (a .txt or .asc file with such lines is such a map too; one without them whose lines
+    hold three numbers is read as an x,y,z point list, as .xyz). A pixel size or height unit
     that the file states (such lines, an instrument file's own) is the file's: one given as well
     must agree with it (FileFormatError naming both otherwise). ``channel``: data channel of
     multi-channel instrument files.
@@ -46,6 +47,8 @@ def read_scan(
     plain_text = suffix in (".txt", ".asc") and (pixel_size is not None or has_pixel_header(p))
     if suffix == ".npy" or plain_text:
         return read_plain(p, pixel_size, height_unit)
+    if suffix in (".txt", ".asc") and looks_like_xyz(p):  # an x,y,z point list saved as text
+        return read_instrument(p, None, height_unit, channel, fmt="xyz")
     if suffix == ".csv":
         if pixel_size is not None or has_pixel_header(p):
             return read_plain(p, pixel_size, height_unit)

@@ -85,9 +85,10 @@ def _check_sign(
 
 
 def _depression_pixels(sf: Surface, lab: np.ndarray, index: np.ndarray, level: float) -> np.ndarray:
-    """Pixels of each component (labels ``lab``, ``index``) that the unsmoothed levelled scan
-    puts below ``level`` [m] (a dropout there counts, as the filled map holds it)."""
-    deep = np.where(sf.valid, sf.zl < level, sf.was_nan)
+    """Measured pixels of each component (labels ``lab``, ``index``) that the unsmoothed
+    levelled scan puts below ``level`` [m]; a pixel without data never counts (the filled map
+    only continues its neighbours into it: no-data pixels cannot make a dent)."""
+    deep = sf.valid & (sf.zl < level)
     return np.asarray(ndimage.sum(deep, lab, index=index))
 
 
@@ -152,12 +153,13 @@ def find_dent(
             f"({detect_sigma * sig_s * 1e6:.3g} um) cover at most {int(max(pixels))} pixels "
             f"(need {min_pixels}); dust or noise, not a dent"
         )
-    depths = ndimage.minimum(zs, lab, index=index)
-    volumes = -np.asarray(ndimage.sum(zs, lab, index=index)) * sf.dx * sf.dy
+    measured = np.where(sf.valid, lab, 0)  # depth and volume on the measured pixels only
+    depths = np.asarray(ndimage.minimum(zs, measured, index=index))
+    volumes = -np.asarray(ndimage.sum(zs, measured, index=index)) * sf.dx * sf.dy
     best = max(good, key=lambda i: volumes[i])
     if len(good) > 1 and warnings is not None:
-        warnings.append(_candidates_note(sf, lab, index, good, best, depths, pixels, volumes))
-    comp = lab == best + 1
+        warnings.append(_candidates_note(sf, measured, index, good, best, depths, pixels, volumes))
+    comp = measured == best + 1
     volume = -float(np.sum(zs[comp])) * sf.dx * sf.dy
     _check_sign(sf, -float(depths[best]), volume, detect_sigma, min_pixels)
     idx = int(np.argmin(np.where(comp, zs, np.inf)))
@@ -167,15 +169,29 @@ def find_dent(
 
 def dent_region(sf: Surface, ij: tuple[int, int], thr: float) -> np.ndarray:
     """The deformed area: the connected region around ``ij`` deeper than ``thr`` (holes
-    filled); DentCutOffError when it reaches the scan's edge."""
+    filled); DentCutOffError when it reaches the scan's edge, or reaches it only through
+    pixels without data (the dent runs into a region without data)."""
     lab2, _ = ndimage.label(sf.zs < -thr, structure=np.ones((3, 3)))
     region = ndimage.binary_fill_holes(lab2 == lab2[ij])
-    edges = edges_touched(region)
+    edges = edges_touched(region & sf.valid)
     if edges:
         raise DentCutOffError(
             f"{sf.src}: the dent is cut off by the scan's {' and '.join(edges)} edge: its outline "
             f"(depth {thr * 1e6:.3g} um) reaches the edge, so its length cannot be measured; "
             "scan a larger area around the dent"
+        )
+    if edges_touched(region):  # through pixels without data only
+        gaps, _ = ndimage.label(region & sf.was_nan, structure=np.ones((3, 3)))
+        border = np.concatenate([gaps[0], gaps[-1], gaps[:, 0], gaps[:, -1]])
+        gap = np.isin(gaps, border[border > 0])  # the no-data pixels that reach the edge
+        rows, cols = np.nonzero(gap)
+        raise DentCutOffError(
+            f"{sf.src}: the dent runs into a region without data: at its outline's depth "
+            f"({thr * 1e6:.3g} um) it continues into {int(gap.sum())} pixels without data "
+            f"(x = {cols.min() * sf.dx * 1e3:.4g} to {cols.max() * sf.dx * 1e3:.4g} mm, "
+            f"y = {rows.min() * sf.dy * 1e3:.4g} to {rows.max() * sf.dy * 1e3:.4g} mm), where "
+            "only interpolation continues it, so its length cannot be measured; scan the dent "
+            "again with data all around it"
         )
     return np.asarray(region)
 
