@@ -9,6 +9,7 @@ import math
 import pytest
 
 import impactlab as il
+from impactlab.dynamics import drop_checks
 from impactlab.dynamics.drop import DropError, simulate_drop
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.flags import ResultFlag, messages
@@ -51,12 +52,17 @@ def test_flight_is_flagged_other_end_not_gravity_dominated() -> None:
     assert not flight.ok
 
 
-def test_energy_balance_beyond_the_tolerance_is_refused() -> None:
+def test_energy_balance_beyond_the_tolerance_is_refused(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A test double: the ceiling of the bound (``drop_checks.ENERGY_BALANCE_MAX``) lowered
+    below the drop's error (an rtol loose enough to break the bound is refused before it runs,
+    ``input_checks.DROP_RTOL_MAX``)."""
+    monkeypatch.setattr(drop_checks, "ENERGY_BALANCE_MAX", 1e-12)
     with pytest.raises(DropError, match=r"energy balance closed to .* lower rtol") as exc:
         il.simulate(il.FlexibleRod.paper(), angle="20 deg", velocity=(0, -1.41), mu=0.2,
-                    rtol=1e-3)  # fmt: skip
+                    rtol=1e-5)  # fmt: skip
     assert exc.value.status == F.ST_INACCURATE
     assert "\n" not in str(exc.value)
+    monkeypatch.undo()
     r = il.simulate(il.FlexibleRod.paper(), angle="20 deg", velocity=(0, -1.41), mu=0.2,
                     rtol=1e-5)  # fmt: skip
     assert r.ok and r.energy_error <= 100 * 1e-5

@@ -38,7 +38,9 @@ def test_partial_slip_tolerance_is_capped_as_in_the_rigid_engine() -> None:
             run()
     assert f"up to {PARTIAL_SLIP_RTOL_MAX:g}" in _message(1e-3)
     assert drop_rtol(PARTIAL_SLIP_RTOL_MAX, get_friction("partial_slip")) == PARTIAL_SLIP_RTOL_MAX
-    assert drop_rtol(1e-3, get_friction("mindlin")) == 1e-3  # the cap is partial slip's only
+    assert drop_rtol(1e-5, get_friction("mindlin")) == 1e-5  # every drop's cap, not beyond
+    with pytest.raises(ValueError, match=r"^rtol 0.001 is too loose for a drop"):
+        drop_rtol(1e-3, get_friction("mindlin"))
     assert drop_rtol(None, get_friction("partial_slip")) == F.DROP_DEFAULT_RTOL
 
 

@@ -31,3 +31,27 @@ def test_the_60_deg_drop_is_5_percent_off_with_the_default_modes() -> None:
 def test_docs_state_the_stiff_flat_mode_counts() -> None:
     assert "in the number of contacts in 20 of 100 random drops" in DOC
     assert "`FlexibleRod.paper(n_axial=24, n_bending=36)`" in DOC
+
+
+def test_docs_state_where_the_default_is_not_enough_and_the_check() -> None:
+    """The steep slow drops of slender rods, with the reviewed numbers, and a check that reads
+    twice against four times the counts (``mode_convergence``)."""
+    assert "**Where the default is not enough.**" in DOC
+    assert "gives 3 contacts and e 0.2502, `ok`; (32, 56) 4 contacts and e 0.2980" in DOC
+    assert "the default (8, 22) has 9 contacts and e 1.27 (GRAVITY_DOMINATED" in DOC
+    assert "`impactlab.dynamics.flex_simulate.mode_convergence(body, flat," in DOC
+    assert "Read the change from twice to four times the counts" in DOC
+    assert "modes (twice the default counts), not only with a tighter" not in DOC
+
+
+def test_docs_say_sweeps_run_partial_slip_for_flexible_rods() -> None:
+    """tests/sweep/test_sweep_partial_slip.py runs it; the page said that sweeps refuse it."""
+    assert "rods refuse `partial_slip`" not in DOC
+    assert "Sweeps run it for flexible rods too" in DOC
+
+
+def test_docs_do_not_present_a_loose_rtol_as_safe() -> None:
+    """The page said that the 20 deg drop at rtol 1e-4 'passes'; a drop's rtol is capped."""
+    assert "at 1e-4 to 1e-3 E0 with its 4 contacts, and passes" not in DOC
+    assert "**A loose rtol is refused, not trusted.**" in DOC
+    assert "So rtol is at most 1e-5 for every drop (`input_checks.DROP_RTOL_MAX`" in DOC

@@ -96,7 +96,8 @@ def check_mode_count(name: str, value: object) -> int:
         raise ValueError(
             f"{name} must be an integer in [0, {MAX_MODES}], got {int(value)} (higher modes "
             "resolve wavelengths below the rod's diameter, where beam theory does not hold, "
-            "and only slow the drop; to check convergence, double the default counts)"
+            "and only slow the drop; to check convergence, compare twice and four times the "
+            "default counts: impactlab.dynamics.mode_convergence)"
         )
     return int(value)
 

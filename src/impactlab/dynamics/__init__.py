@@ -20,6 +20,7 @@ from impactlab.dynamics.batch_result import BatchResult
 from impactlab.dynamics.drop import simulate_drop
 from impactlab.dynamics.drop_batch import DropBatchResult, simulate_drops
 from impactlab.dynamics.drop_result import ContactRecord, DropResult
+from impactlab.dynamics.flex_simulate import ModeConvergence, mode_convergence
 from impactlab.dynamics.kernels.layout import DEFAULT_RTOL, HISTORY_FIELDS
 from impactlab.dynamics.models import contact_model
 from impactlab.dynamics.results import DentMap, History, ImpactResult
@@ -41,7 +42,9 @@ __all__ = [
     "DropResult",
     "History",
     "ImpactResult",
+    "ModeConvergence",
     "contact_model",
+    "mode_convergence",
     "rerun",
     "run_arrays",
     "simulate",

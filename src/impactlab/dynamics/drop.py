@@ -314,9 +314,9 @@ def simulate_drop(
     Returns a DropResult: every contact, the dents, the totals, the energy balance, the
     history if asked, the references and ``input``, the record of this call
     (``dynamics.provenance``: ``impactlab.rerun`` runs it again). ValueError for invalid input
-    (the checks of ``impactlab.simulate``; history True or False; with partial slip rtol up to
-    1e-5) or a failed integration (``DropError``); an ImplausibleInputWarning for an impact
-    speed above 100 m/s.
+    (the checks of ``impactlab.simulate``; history True or False; rtol up to 1e-5,
+    ``input_checks.DROP_RTOL_MAX``) or a failed integration (``DropError``); an
+    ImplausibleInputWarning for an impact speed above 100 m/s.
     """
     if vx is not None or vy is not None:  # simulate_drops' names: one drop takes a pair
         given = [k for k, v in (("vx", vx), ("vy", vy)) if v is not None]

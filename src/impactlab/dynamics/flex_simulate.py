@@ -1,19 +1,30 @@
 """``impactlab.simulate`` with a FlexibleRod: the flexible drop
-(``impactlab.dynamics.drop.simulate_drop``) called with ``simulate``'s arguments, and the error
-of ``simulate_batch`` with a FlexibleRod."""
+(``impactlab.dynamics.drop.simulate_drop``) called with ``simulate``'s arguments, the error
+of ``simulate_batch`` with a FlexibleRod, and the check of a drop's mode count
+(``mode_convergence``)."""
 
 from __future__ import annotations
 
+import dataclasses
 import difflib
+import itertools
+import math
+from collections.abc import Sequence
 from typing import Any
 
 from impactlab._validation import check_flag
-from impactlab.bodies.flexible_rod import FlexibleRod
+from impactlab.bodies.flexible_rod import MAX_MODES, FlexibleRod
 from impactlab.dynamics.drop import simulate_drop
 from impactlab.dynamics.drop_result import DropResult
-from impactlab.materials import Material
+from impactlab.materials import AISI_1010, Material
 
-__all__ = ["DROP_OPTIONS", "FLEXIBLE_BATCH_ERROR", "simulate_flexible"]
+__all__ = [
+    "DROP_OPTIONS",
+    "FLEXIBLE_BATCH_ERROR",
+    "ModeConvergence",
+    "mode_convergence",
+    "simulate_flexible",
+]
 
 
 #: Options of ``impactlab.simulate`` that only the flexible drop takes.
@@ -70,3 +81,75 @@ FLEXIBLE_BATCH_ERROR = (
     "impactlab.simulate_drops(FlexibleRod(...), angle=..., vy=...), or a study file with "
     'body = "flexible_rod" (impactlab.sweep)'
 )
+
+
+@dataclasses.dataclass(frozen=True)
+class ModeConvergence:
+    """One drop at growing mode counts (``mode_convergence``): ``modes`` ((n_axial, n_bending)
+    of each run) and ``results`` (their DropResults, in that order)."""
+
+    modes: tuple[tuple[int, int], ...]
+    results: tuple[DropResult, ...]
+
+    def _change(self, name: str) -> float:
+        a, b = (float(getattr(r, name)) for r in self.results[-2:])
+        return abs(b - a) / abs(b) if b != 0.0 else (0.0 if a == b else math.inf)
+
+    @property
+    def e_change(self) -> float:
+        """|e of the last run - e of the one before| / |e of the last| [1]."""
+        return self._change("e")
+
+    @property
+    def dent_change(self) -> float:
+        """The same for the dent depth [1]."""
+        return self._change("dent_depth")
+
+    @property
+    def same_contacts(self) -> bool:
+        """Whether the last two runs have the same number of contacts."""
+        return self.results[-1].n_contacts == self.results[-2].n_contacts
+
+    def converged(self, tol: float = 0.01) -> bool:
+        """The last two runs agree: the same contacts, e and the dent within ``tol`` [1]."""
+        return self.same_contacts and self.e_change <= tol and self.dent_change <= tol
+
+
+def mode_convergence(
+    body: FlexibleRod,
+    flat: Material = AISI_1010,
+    *,
+    factors: Sequence[float] = (1, 2, 4),
+    **kwargs: Any,
+) -> ModeConvergence:
+    """``simulate_drop(body, flat, **kwargs)`` with ``body``'s mode counts times each of
+    ``factors`` (rounded, at most ``MAX_MODES`` = 128; ``history`` False unless given), to
+    check that the drop's e, dent and contacts converge in the modes: ``converged()`` when
+    the last two runs agree (docs/flexible.md, "Convergence and the default"). A tighter
+    rtol does not show a truncation of the modes. ValueError for a body that is no
+    FlexibleRod or fewer than two growing factors; a drop's own errors as ``simulate_drop``."""
+    if not isinstance(body, FlexibleRod):
+        raise ValueError(
+            f"body must be a FlexibleRod (its modes are refined), got {type(body).__name__}"
+        )
+    f = [float(x) for x in factors]
+    if len(f) < 2 or not all(0.0 < a < b for a, b in itertools.pairwise(f)):
+        raise ValueError(f"factors must be two or more growing numbers > 0, got {factors!r}")
+    counts = [(_scaled(body.n_axial, k), _scaled(body.n_bending, k)) for k in f]
+    for a, b in itertools.pairwise(counts):
+        if a == b:
+            raise ValueError(
+                f"factors {factors!r} give the mode counts (n_axial, n_bending) = {a} twice "
+                f"(the counts stop at {MAX_MODES}); give factors whose counts grow"
+            )
+    kwargs.setdefault("history", False)
+    results = tuple(
+        simulate_drop(dataclasses.replace(body, n_axial=na, n_bending=nb), flat, **kwargs)
+        for na, nb in counts
+    )
+    return ModeConvergence(tuple(counts), results)
+
+
+def _scaled(n: int | None, factor: float) -> int:
+    """The mode count ``n`` times ``factor``, rounded, in [1, MAX_MODES] (0 stays 0)."""
+    return min(MAX_MODES, max(1, round(n * factor))) if n else 0
