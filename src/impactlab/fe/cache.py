@@ -80,9 +80,16 @@ class DamagedCacheWarning(UserWarning):
 DAMAGED = (OSError, ValueError, KeyError, EOFError, TypeError, AttributeError, zipfile.BadZipFile)
 
 
-def read_npz(path: Path, arrays: tuple[str, ...], build: Callable[..., T]) -> T | None:
+def read_npz(
+    path: Path,
+    arrays: tuple[str, ...],
+    build: Callable[..., T],
+    upgrade: Callable[[dict[str, Any]], dict[str, Any]] | None = None,
+) -> T | None:
     """``build(**header, **arrays)`` from the ``.npz`` file ``path``; None when there is none,
-    and, with a :class:`DamagedCacheWarning` naming the file, when it is damaged."""
+    and, with a :class:`DamagedCacheWarning` naming the file, when it is damaged. ``upgrade``
+    maps a record in older names (the header and every array the file holds) to the current
+    ones before ``arrays`` are looked up in it."""
     if not path.is_file():
         return None
     try:
@@ -90,8 +97,15 @@ def read_npz(path: Path, arrays: tuple[str, ...], build: Callable[..., T]) -> T 
             header = json.loads(str(z["header"]))
             if not isinstance(header, dict):
                 raise TypeError(f"its header is a {type(header).__name__}, not a record")
-            values: dict[str, Any] = {name: np.array(z[name]) for name in arrays}
-        return build(**header, **values)
+            names = [n for n in z.files if n != "header"] if upgrade else list(arrays)
+            values: dict[str, Any] = {name: np.array(z[name]) for name in names}
+        if upgrade is None:
+            return build(**header, **values)
+        record = upgrade({**header, **values})
+        missing = [name for name in arrays if name not in record]
+        if missing:
+            raise KeyError(f"{missing[0]} is not a file in the archive")
+        return build(**record)
     except DAMAGED as exc:
         warnings.warn(
             f"FE cache file {path} is damaged ({type(exc).__name__}: {exc}): treated as missing; "

@@ -18,30 +18,42 @@ from typing import Any
 import numpy as np
 from scipy.integrate import solve_ivp
 
+from impactlab.fe.impact_result import renamed_field
 from impactlab.fe.result import IndentationResult
 from impactlab.fe.run import indent
 from impactlab.materials import Material
 
+_OWNER = "fe.impact_quasistatic.QuasiStaticImpact"
+
 
 @dataclass(frozen=True)
 class QuasiStaticImpact:
-    """A 1-DOF impact on quasi-static curves (SI): restitution e, rebound speed [m/s], peak
-    interference delta_m [m], peak force [N], permanent depth delta_r [m], contact duration
-    [s]; time, interference, force: the history; curve_maximum: the delta_max of the
-    unloading curve used [m] (delta_m to within the mismatch of the two FE runs)."""
+    """A 1-DOF impact on quasi-static curves (SI; the names of ``fe.ImpactResult``): e,
+    rebound_speed [m/s], delta_max: the peak interference delta_m [m], max_force [N], delta_p:
+    the permanent depth [m] (the unloading curve's delta_r from delta_m), duration: the
+    contact duration [s]; time, penetration, force: the history [s, m, N]; curve_maximum: the
+    delta_max of the unloading curve used [m] (delta_m to within the mismatch of the two FE
+    runs). The names before 0.3 (``restitution``, ``max_interference``, ``residual_depth``,
+    ``contact_duration``, ``interference``) read these with a DeprecationWarning."""
 
     speed: float
     mass: float
-    restitution: float
+    e: float
     rebound_speed: float
-    max_interference: float
+    delta_max: float
     max_force: float
-    residual_depth: float
-    contact_duration: float
+    delta_p: float
+    duration: float
     curve_maximum: float
     time: np.ndarray
-    interference: np.ndarray
+    penetration: np.ndarray
     force: np.ndarray
+
+    restitution = renamed_field("restitution", "e", _OWNER)
+    max_interference = renamed_field("max_interference", "delta_max", _OWNER)
+    residual_depth = renamed_field("residual_depth", "delta_p", _OWNER)
+    contact_duration = renamed_field("contact_duration", "duration", _OWNER)
+    interference = renamed_field("interference", "penetration", _OWNER)
 
 
 def _interp(x: np.ndarray, y: np.ndarray, origin: float = 0.0) -> Any:
@@ -148,15 +160,15 @@ def one_dof_impact(
     return QuasiStaticImpact(
         speed=speed,
         mass=mass,
-        restitution=-vr / speed,
+        e=-vr / speed,
         rebound_speed=-vr,
-        max_interference=dm,
+        delta_max=dm,
         max_force=f_load(dm),
-        residual_depth=dr,
-        contact_duration=t2,
+        delta_p=dr,
+        duration=t2,
         curve_maximum=curve_maximum,
         time=t,
-        interference=d,
+        penetration=d,
         force=f,
     )
 
@@ -186,7 +198,7 @@ def quasi_static_impact(
         speed=speed,
         curve_maximum=first.delta_max,
     )
-    run = indent(flat, sphere_material, radius=radius, delta_max=probe.max_interference,
+    run = indent(flat, sphere_material, radius=radius, delta_max=probe.delta_max,
                  **indent_options)[0]  # fmt: skip
     res = one_dof_impact(
         run.loading_delta,

@@ -4,8 +4,10 @@
 of :data:`IMPACT_CASES` at each of its speeds, dynamically (:func:`impactlab.fe.impact_run.
 impact`) and as the 1-DOF impact on the quasi-static FE curves of the same bodies
 (:func:`impactlab.fe.impact_quasistatic.quasi_static_impact`), and writes one small JSON table
-``impactlab/fe/data/impact/<case>.v1.json`` (read by :func:`load_impact_table`), so that docs
+``impactlab/fe/data/impact/<case>.v2.json`` (read by :func:`load_impact_table`), so that docs
 and tests compare without running CalculiX. Runs already in the FE cache are read from it.
+A table of version 1 (the names before 0.3: ``restitution``, ``max_interference``, ...) is
+read in the names of version 2 (``fe.impact_result.RENAMED_IMPACT_FIELDS``).
 """
 
 from __future__ import annotations
@@ -24,11 +26,15 @@ from impactlab.fe.ccx import ccx_version, find_ccx
 from impactlab.fe.curves import DATA_DIR, material_record
 from impactlab.fe.impact_problem import make_impact_problem
 from impactlab.fe.impact_quasistatic import quasi_static_impact
+from impactlab.fe.impact_result import RENAMED_IMPACT_FIELDS, RenamedKeys
 from impactlab.fe.impact_run import impact
 from impactlab.materials import AISI_201, AISI_1010, Material
 
 IMPACT_FORMAT = "impactlab-fe-impact"
-IMPACT_VERSION = 1
+#: The version written: 2, the glossary's names; 1 (the names before 0.3) is still read.
+IMPACT_VERSION = 2
+#: The versions :func:`load_impact_table` reads.
+READ_VERSIONS = (1, 2)
 RADIUS = 8.8e-3
 #: The impact tables' folder (apart from the indentation curves, which ``fe.curves`` globs).
 IMPACT_DIR = DATA_DIR / "impact"
@@ -85,9 +91,9 @@ IMPACT_CASES: dict[str, ImpactCase] = {
 }
 
 
-def impact_path(name: str, directory: Path = IMPACT_DIR) -> Path:
-    """The data file of a case."""
-    return directory / f"{name}.v{IMPACT_VERSION}.json"
+def impact_path(name: str, directory: Path = IMPACT_DIR, version: int = IMPACT_VERSION) -> Path:
+    """The data file of a case (of table version ``version``)."""
+    return directory / f"{name}.v{version}.json"
 
 
 def _num(x: float) -> float | None:
@@ -104,12 +110,12 @@ def _qs(qs: Any, run: Any) -> dict[str, Any]:
     """The quasi-static 1-DOF impact's entry of a row."""
     return {
         "status": run.status(),
-        "restitution": _num(qs.restitution),
+        "e": _num(qs.e),
         "rebound_speed": _num(qs.rebound_speed),
         "max_force": _num(qs.max_force),
-        "max_interference": _num(qs.max_interference),
-        "residual_depth": _num(qs.residual_depth),
-        "contact_duration": _num(qs.contact_duration),
+        "delta_max": _num(qs.delta_max),
+        "delta_p": _num(qs.delta_p),
+        "duration": _num(qs.duration),
         "curve_maximum": _num(qs.curve_maximum),
         "run_time": round(run.run_time, 1),
         "force": _series(qs.time, qs.force),
@@ -167,7 +173,7 @@ def run_case(name: str, *, workers: int | None = None) -> dict[str, Any]:
             radius=RADIUS,
             speed=d.speed,
             mass=d.mass,
-            delta_guess=d.max_interference,
+            delta_guess=d.delta_max,
             sphere=c.sphere,
             flat_hardening=c.flat_hardening,
             mesh_level=c.mesh_level,
@@ -179,19 +185,21 @@ def run_case(name: str, *, workers: int | None = None) -> dict[str, Any]:
                 "dynamic": {
                     "status": d.status(),
                     "procedure": d.inputs.get("procedure"),
-                    "restitution": _num(d.restitution),
+                    "e": _num(d.e),
                     "rebound_speed": _num(d.rebound_speed),
                     "max_force": _num(d.max_force),
-                    "max_interference": _num(d.max_interference),
-                    "residual_depth": _num(d.residual_depth),
-                    "contact_duration": _num(d.contact_duration),
+                    "delta_max": _num(d.delta_max),
+                    "delta_p": _num(d.delta_p),
+                    "flat_dent_depth": _num(d.flat_dent_depth),
+                    "sphere_flattening": _num(d.sphere_flattening),
+                    "duration": _num(d.duration),
                     "momentum_balance": _num(d.momentum_balance),
                     "increments": d.increments,
                     "cutbacks": d.cutbacks,
                     "run_time": round(d.run_time, 1),
                     "n_elements": d.n_elements,
                     "force": _series(d.time - d.contact_start, d.force),
-                    "interference": _series(d.time - d.contact_start, d.interference),
+                    "penetration": _series(d.time - d.contact_start, d.penetration),
                 },
                 "quasi_static": _qs(qs, run),
             }
@@ -234,14 +242,27 @@ def write_impact_tables(
 
 
 def load_impact_table(name: str, directory: Path = IMPACT_DIR) -> dict[str, Any]:
-    """A shipped case's record (ValueError naming the known cases for an unknown one)."""
-    path = impact_path(name, directory)
-    if not path.is_file():
+    """A case's record, the newest version found (ValueError naming the known cases for an
+    unknown one), in the names of version 2: a row's ``dynamic`` and ``quasi_static`` entries
+    are mappings whose names before 0.3 (``restitution``, ...) still read their values, with a
+    DeprecationWarning (``fe.impact_result.RenamedKeys``)."""
+    found = [impact_path(name, directory, v) for v in reversed(READ_VERSIONS)]
+    path = next((p for p in found if p.is_file()), None)
+    if path is None:
         known = sorted(p.name for p in directory.glob("*.json"))
         raise ValueError(f"no impact table {name!r}; shipped: {', '.join(known) or 'none'}")
     data: dict[str, Any] = json.loads(path.read_text())
-    if data.get("format") != IMPACT_FORMAT or data.get("version") != IMPACT_VERSION:
-        raise ValueError(f"{path.name}: not an impactlab impact table of version {IMPACT_VERSION}")
+    if data.get("format") != IMPACT_FORMAT or data.get("version") not in READ_VERSIONS:
+        raise ValueError(
+            f"{path.name}: not an impactlab impact table of version "
+            f"{' or '.join(map(str, READ_VERSIONS))}"
+        )
+    for row in data["rows"]:
+        for key in ("dynamic", "quasi_static"):
+            if row.get(key) is not None:
+                row[key] = RenamedKeys(
+                    {RENAMED_IMPACT_FIELDS.get(k, k): v for k, v in row[key].items()}
+                )
     return data
 
 

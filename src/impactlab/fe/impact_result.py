@@ -1,15 +1,18 @@
 """The result of one impact run and how it is read from ccx's printed output.
 
-Sign conventions (SI): the contact force F >= 0 pushes the bodies apart; the interference
-delta is the approach of the sphere's centre of mass past the position where it first touches
-the undeformed flat (the indentation model's delta: the flat is fixed at its bottom); the
-velocity is the sphere's centre-of-mass velocity, positive towards the flat.
+Names, units and signs are those of docs/glossary.md (SI): the contact force F >= 0 pushes the
+bodies apart; the interference delta (``penetration``) is the approach of the sphere's centre
+of mass past the position where it first touches the undeformed flat (the indentation model's
+delta: the flat is fixed at its bottom); ``vy`` is the sphere's centre-of-mass velocity along
+the flat's outward normal (up), negative towards the flat. The names before 0.3 read the new
+fields with a DeprecationWarning (:data:`RENAMED_IMPACT_FIELDS`; ``velocity`` is -vy).
 """
 
 from __future__ import annotations
 
 import math
 import re
+import warnings
 from dataclasses import dataclass, fields
 from typing import Any
 
@@ -19,6 +22,7 @@ from impactlab.fe.ccx import FORTRAN_FLOAT, DatFile, fortran_value
 from impactlab.fe.deck import FORCE_UNIT, LENGTH_UNIT
 from impactlab.fe.mesh import Mesh
 from impactlab.fe.result import SECTOR_FACTOR
+from impactlab.schema import warn_renamed
 
 _CF = re.compile(
     r"statistics for slave set \S+, master set \S+ and time\s+(" + FORTRAN_FLOAT + r")\s*\n"
@@ -33,42 +37,71 @@ CONTACT_THRESHOLD = 1.0e-3
 SEPARATION_FRACTION = 5.0e-3
 
 #: The array fields (stored as arrays in the cache; the rest is the header).
-IMPACT_ARRAYS = ("time", "force", "interference", "velocity", "dent_r", "dent_z")
+IMPACT_ARRAYS = ("time", "force", "penetration", "vy", "dent_r", "dent_z")
+
+#: The names before 0.3 of the impact's fields (attributes, cache files, the impact tables'
+#: keys) -> their glossary names, the same values. ``velocity`` (positive towards the flat)
+#: is ``vy`` with the glossary's sign: velocity = -vy.
+RENAMED_IMPACT_FIELDS: dict[str, str] = {
+    "restitution": "e",
+    "max_interference": "delta_max",
+    "contact_duration": "duration",
+    "residual_depth": "delta_p",
+    "interference": "penetration",
+}
+
+
+def renamed_field(old: str, new: str, owner: str = "fe.ImpactResult") -> Any:
+    """A read-only property ``old`` of ``owner`` that reads ``new`` with a DeprecationWarning."""
+
+    def get(self: Any) -> Any:
+        warn_renamed(old, new, f"{owner} field")
+        return getattr(self, new)
+
+    return property(get, doc=f"``{new}``, its name before 0.3 (a DeprecationWarning).")
 
 
 @dataclass(frozen=True)
 class ImpactResult:
-    """One impact (SI units: m, N, s, kg).
+    """One impact (SI units: m, N, s, kg; names and signs of docs/glossary.md).
 
     time [s] (0 at the start, the sphere a gap above the flat); force: the contact force F(t)
-    [N]; interference: delta(t) [m]; velocity: the sphere's centre-of-mass velocity [m/s],
-    positive towards the flat; speed, mass: v_in [m/s], m [kg]; rebound_speed: v_out [m/s] (away
-    from the flat, the mean after separation); restitution: e = v_out / v_in; max_force,
-    max_interference: peaks of F and delta; contact_duration [s] and contact_start [s];
-    residual_depth: delta_p [m], the flat's permanent dent depth at the axis plus the sphere's
-    permanent flattening, both from the final deformed surfaces (means over the last
-    increments); dent_r, dent_z: the flat's final surface (z > 0: pile-up) [m];
+    [N]; penetration: the interference delta(t) [m] (negative before first touch: the gap);
+    vy: the sphere's centre-of-mass velocity [m/s], up positive (negative towards the flat);
+    speed, mass: v_in [m/s] (> 0), m [kg]; rebound_speed: v_out [m/s] (> 0 away from the flat,
+    the mean after separation); e: v_out / v_in; max_force, delta_max: the peaks of F and
+    delta; contact_start [s] and duration [s]: first touch and how long the contact lasts;
+    delta_p [m]: the permanent depth, the interference left after the impact: the flat's
+    permanent dent depth at the axis (flat_dent_depth [m]) plus the sphere's permanent
+    flattening at its apex (sphere_flattening [m]), both from the final deformed surfaces
+    (means over the last increments): what the engine's delta_p (the law's delta_r at
+    separation) models; dent_r, dent_z: the flat's final surface (z > 0: pile-up) [m];
     momentum_balance: |m (v_in + v_out) - integral F dt| / (m v_in), the consistency of the
     force history with the velocities; separated: the sphere left the flat before the end;
     converged: ccx finished the run (a run with separated True and converged False stopped at
     separation: v_out and delta_p are read at its last increment, where F < SEPARATION_FRACTION
     F_max); message, increments, cutbacks, iterations, run_time,
     n_elements as for an indentation; delta_c [m]; inputs: every input (the cache key's data).
+    The names before 0.3 (``restitution``, ``max_interference``, ``contact_duration``,
+    ``residual_depth``, ``interference``, ``velocity`` = -vy) read these with a
+    DeprecationWarning.
     """
 
     time: np.ndarray
     force: np.ndarray
-    interference: np.ndarray
-    velocity: np.ndarray
+    penetration: np.ndarray
+    vy: np.ndarray
     speed: float
     mass: float
     rebound_speed: float
-    restitution: float
+    e: float
     max_force: float
-    max_interference: float
+    delta_max: float
     contact_start: float
-    contact_duration: float
-    residual_depth: float
+    duration: float
+    delta_p: float
+    flat_dent_depth: float
+    sphere_flattening: float
     dent_r: np.ndarray
     dent_z: np.ndarray
     momentum_balance: float
@@ -82,6 +115,25 @@ class ImpactResult:
     n_elements: int
     delta_c: float
     inputs: dict[str, Any]
+
+    restitution = renamed_field("restitution", "e")
+    max_interference = renamed_field("max_interference", "delta_max")
+    contact_duration = renamed_field("contact_duration", "duration")
+    residual_depth = renamed_field("residual_depth", "delta_p")
+    interference = renamed_field("interference", "penetration")
+
+    @property
+    def velocity(self) -> np.ndarray:
+        """-vy [m/s], positive towards the flat: the name and sign before 0.3 (a
+        DeprecationWarning)."""
+        warnings.warn(
+            "fe.ImpactResult field 'velocity' (positive towards the flat) is renamed 'vy', "
+            "with the glossary's sign: up positive, negative towards the flat (velocity = -vy; "
+            "impactlab 0.3); the old name goes in 0.4",
+            DeprecationWarning,
+            stacklevel=2,
+        )
+        return np.asarray(-self.vy)
 
     @property
     def stopped_at_separation(self) -> bool:
@@ -106,6 +158,36 @@ class ImpactResult:
     def arrays(self) -> dict[str, Any]:
         """Every field as a plain value (arrays stay numpy arrays), for storage."""
         return {f.name: getattr(self, f.name) for f in fields(self)}
+
+
+def upgrade_record(record: dict[str, Any]) -> dict[str, Any]:
+    """A stored impact (a cache file's header and arrays) in the names of 0.3: the names
+    before (:data:`RENAMED_IMPACT_FIELDS`) renamed, ``velocity`` as ``vy`` = -velocity, and,
+    where the record has no split of delta_p, flat_dent_depth read from the flat's final
+    surface at the axis (-dent_z there, at the last increment, not a mean; nan without a dent)
+    and sphere_flattening = delta_p - flat_dent_depth. A record of 0.3 is returned as is."""
+    out = {RENAMED_IMPACT_FIELDS.get(k, k): v for k, v in record.items() if k != "velocity"}
+    if "velocity" in record:
+        out["vy"] = -np.asarray(record["velocity"], dtype=np.float64)
+    if "flat_dent_depth" not in out and "delta_p" in out:
+        r, z = np.asarray(out.get("dent_r", [])), np.asarray(out.get("dent_z", []))
+        flat = -float(z[int(np.argmin(np.abs(r)))]) if z.size else math.nan
+        out["flat_dent_depth"] = flat
+        out["sphere_flattening"] = float(out["delta_p"]) - flat
+    return out
+
+
+class RenamedKeys(dict[str, Any]):
+    """A record (an impact table's row entry, a comparison's row) whose keys before 0.3
+    (:data:`RENAMED_IMPACT_FIELDS`) still read their value, with a DeprecationWarning; they
+    are not among its keys (nor in its JSON)."""
+
+    def __missing__(self, key: str) -> Any:
+        new = RENAMED_IMPACT_FIELDS.get(key)
+        if new is None or new not in self:
+            raise KeyError(key)
+        warn_renamed(key, new, "FE impact record key")
+        return self[new]
 
 
 def contact_forces(text: str) -> tuple[np.ndarray, np.ndarray]:

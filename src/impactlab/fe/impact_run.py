@@ -34,6 +34,7 @@ from impactlab.fe.impact_result import (
     contact_window,
     node_masses,
     trapezoid,
+    upgrade_record,
 )
 from impactlab.fe.mesh import Mesh, build_mesh
 from impactlab.fe.problem import check_maxima
@@ -130,41 +131,42 @@ def assemble(problem: ImpactProblem, mesh: Mesh, out: RunOutput) -> ImpactResult
     t = np.concatenate([[0.0], t])
     force = np.concatenate([[0.0], force])
     delta = np.concatenate([[-problem.gap], -u_cm - problem.gap])
-    velocity = np.concatenate([[problem.speed], -v_cm])
+    vy = np.concatenate([[-problem.speed], v_cm])  # up positive: negative towards the flat
     start, end, separated = contact_window(t, force) if n else (math.nan, math.nan, False)
     finished = out.returncode == 0 and n > 0 and math.isclose(t[-1], problem.end_time, rel_tol=1e-6)
     stopped = not finished and n > 1 and _separating(force)
     if stopped:  # ccx stopped as the sphere left the flat: read the rebound there
         end = end if separated else float(t[-1])  # F past the threshold, or still above it
         separated = True
-        rebound, points = float(-velocity[-1]), 1
+        rebound, points = float(vy[-1]), 1
     else:
         after = t > end if separated else np.zeros(t.size, dtype=bool)
-        rebound = float(-np.mean(velocity[after][-FINAL_POINTS:])) if after.any() else math.nan
+        rebound = float(np.mean(vy[after][-FINAL_POINTS:])) if after.any() else math.nan
         points = FINAL_POINTS
     impulse = trapezoid(force, t)
     m, v = problem.mass, problem.speed
     balance = abs(m * (v + rebound) - impulse) / (m * v) if math.isfinite(rebound) else math.nan
     dent_r = dent_z = np.empty(0)
-    residual = math.nan
+    depth = flattening = math.nan
     if (finished or stopped) and separated:
         dent_r, dent_z, depth, flattening = _final_surfaces(dat, mesh, points)
-        residual = depth + flattening
     incs, cuts, its = sta_counts(parse_sta(out.sta))
     return ImpactResult(
         time=t,
         force=force,
-        interference=delta,
-        velocity=velocity,
+        penetration=delta,
+        vy=vy,
         speed=v,
         mass=m,
         rebound_speed=rebound,
-        restitution=rebound / v,
+        e=rebound / v,
         max_force=float(np.max(force)),
-        max_interference=float(np.max(delta)),
+        delta_max=float(np.max(delta)),
         contact_start=start,
-        contact_duration=end - start,
-        residual_depth=residual,
+        duration=end - start,
+        delta_p=depth + flattening,
+        flat_dent_depth=depth,
+        sphere_flattening=flattening,
         dent_r=dent_r,
         dent_z=dent_z,
         momentum_balance=balance,
@@ -211,8 +213,10 @@ def _solve(problem: ImpactProblem, mesh: Mesh, exe: str, keep: Path | None) -> I
 
 def load(directory: Path, key: str) -> ImpactResult | None:
     """The cached impact for ``key``, or None: none cached, or a damaged file (a
-    ``cache.DamagedCacheWarning`` naming it; the impact is run again and stored over it)."""
-    return cache.read_npz(directory / f"impact-{key}.npz", IMPACT_ARRAYS, ImpactResult)
+    ``cache.DamagedCacheWarning`` naming it; the impact is run again and stored over it). A
+    file written before 0.3, in the names before, reads in the new ones (``upgrade_record``)."""
+    path = directory / f"impact-{key}.npz"
+    return cache.read_npz(path, IMPACT_ARRAYS, ImpactResult, upgrade=upgrade_record)
 
 
 def store(directory: Path, key: str, result: ImpactResult) -> None:

@@ -21,6 +21,7 @@ from impactlab.bodies import Sphere
 from impactlab.contact import law_names
 from impactlab.dynamics import simulate
 from impactlab.fe.impact_reference import IMPACT_CASES, RADIUS, ImpactCase, load_impact_table
+from impactlab.fe.impact_result import RenamedKeys
 from impactlab.fe.problem import critical_interference
 from impactlab.materials import ContactPair
 
@@ -33,20 +34,22 @@ __all__ = [
     "law_row",
 ]
 
-#: The quantities compared, with their labels and units.
+#: The quantities compared (the glossary's names: an FE impact's delta_p is the interference
+#: left after it, the flat's dent and the sphere's flattening, as the engine's delta_p is the
+#: law's residual depth at separation), with their labels and units.
 QUANTITIES: tuple[tuple[str, str], ...] = (
-    ("restitution", "e"),
-    ("residual_depth", "delta_p [um]"),
-    ("max_interference", "delta_max [um]"),
+    ("e", "e"),
+    ("delta_p", "delta_p [um]"),
+    ("delta_max", "delta_max [um]"),
     ("max_force", "F_max [N]"),
-    ("contact_duration", "T [us]"),
+    ("duration", "T [us]"),
 )
-_SCALE = {"residual_depth": 1e6, "max_interference": 1e6, "contact_duration": 1e6}
+_SCALE = {"delta_p": 1e6, "delta_max": 1e6, "duration": 1e6}
 #: Fixed decimals of e, whose deviation from 1 four significant digits would round away
-#: (1.0003 shown as 1); a residual depth: 4 significant digits, at most 4 decimals (its
+#: (1.0003 shown as 1); a permanent depth: 4 significant digits, at most 4 decimals (its
 #: deviation from 0: -0.0091 um); the others: 4 significant digits.
-_DECIMALS = {"restitution": 4}
-_NEAR_ZERO = ("residual_depth",)
+_DECIMALS = {"e": 4}
+_NEAR_ZERO = ("delta_p",)
 #: The last column: delta_max / delta_c, and a law's range in delta_c.
 RANGE_LABEL = "delta_max/delta_c (law's range)"
 
@@ -72,8 +75,10 @@ DEFAULT_LAWS: dict[str, tuple[str, ...]] = {
 
 @dataclass
 class ImpactComparison:
-    """One case's comparison: per speed, a column name -> quantities mapping. The columns
-    are "dynamic FE", "quasi-static FE 1-DOF" and one per law added."""
+    """One case's comparison: per speed, a column name -> quantities mapping (the names of
+    :data:`QUANTITIES`; those before 0.3, ``restitution``, ..., read them with a
+    DeprecationWarning). The columns are "dynamic FE", "quasi-static FE 1-DOF" and one per law
+    added."""
 
     case: str
     speeds: list[float]
@@ -139,22 +144,23 @@ def law_row(case: str, law: str, speed: float, mass: float) -> dict[str, float]:
         delta_ref = float(r.delta_max) / float(r.max_delta_ratio)
         limit = float(r.fitted_delta_ratio_max) * delta_ref / delta_c
         extrapolated = bool(r.extrapolated)
-    return {
-        "restitution": float(r.e),
-        "residual_depth": float(r.delta_p),
-        "max_interference": float(r.delta_max),
-        "max_force": float(r.max_force),
-        "contact_duration": float(r.duration),
-        "range_limit": limit,
-        "extrapolated": float(extrapolated),
-    }
+    return RenamedKeys(
+        e=float(r.e),
+        delta_p=float(r.delta_p),
+        delta_max=float(r.delta_max),
+        max_force=float(r.max_force),
+        duration=float(r.duration),
+        range_limit=limit,
+        extrapolated=float(extrapolated),
+    )
 
 
 def _fe_column(rows: list[dict[str, Any]], key: str) -> list[dict[str, float]]:
-    out = []
+    out: list[dict[str, float]] = []
     for row in rows:
         src = row[key] or {}  # None: not run (the rod-mass case's dynamic FE)
-        out.append({q: math.nan if src.get(q) is None else float(src[q]) for q, _ in QUANTITIES})
+        values = {q: math.nan if src.get(q) is None else float(src[q]) for q, _ in QUANTITIES}
+        out.append(RenamedKeys(values))
     return out
 
 
@@ -200,7 +206,7 @@ def _shown(q: str, x: float) -> str:
 def _range_cell(row: dict[str, float], delta_c: float) -> str:
     """``7.98 > 1: extrapolated``, ``0.8 <= 1``, or delta_max / delta_c alone (the FE rows, a
     law without a range, an elastic case)."""
-    ratio = row["max_interference"] / delta_c
+    ratio = row["delta_max"] / delta_c
     if not math.isfinite(ratio):
         return "n/a"
     limit = row.get("range_limit", math.nan)
