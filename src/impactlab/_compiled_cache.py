@@ -43,6 +43,7 @@ ENGINE_SOURCES = (
     "schema",
     "_floatbits.py",
     "flags.py",
+    "_input_limits.py",
 )
 #: Prefix of a compiled-engine folder; the folders kept (most recently used first).
 ENGINE_PREFIX = "engine-"

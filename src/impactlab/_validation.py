@@ -28,6 +28,7 @@ from typing import Any
 
 import numpy as np
 
+from impactlab._input_limits import MAX_GRAVITY
 from impactlab.units import magnitude
 
 
@@ -148,6 +149,18 @@ def check_nonnegative(name: str, value: Any, unit: str = "") -> float:
     x = check_finite(name, value, unit)
     if x < 0.0:
         raise ValueError(f"{name} must be >= 0{_suffix(unit)}, got {value_text(x, unit)}")
+    return x
+
+
+def check_gravity(name: str, value: Any) -> float:
+    """A gravitational acceleration [m/s^2]: finite, in [0, ``MAX_GRAVITY``] (a million g, the
+    engine's bound: ``impactlab._input_limits``)."""
+    x = check_nonnegative(name, value, "m/s^2")
+    if x > MAX_GRAVITY:
+        raise ValueError(
+            f"{name} must lie in [0, {MAX_GRAVITY:g}] m/s^2 (a million g), got "
+            f"{value_text(x, 'm/s^2')}"
+        )
     return x
 
 

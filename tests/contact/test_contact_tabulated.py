@@ -271,8 +271,9 @@ def test_a_given_law_instance_takes_only_indentation_curves() -> None:
 
 @pytest.mark.parametrize("curves", shipped_curves(), ids=lambda c: c.name)
 def test_hertzian_unloading_energy_against_fe(curves: IndentationCurves) -> None:
-    """Energy returned on unloading, law over FE: 0.98-0.99 below delta_c (the FE mesh's
-    stiffness), 0.91-1.00 past it (docs/laws/tabulated.md)."""
+    """Energy returned on unloading, law over FE: 0.98-0.99 up to delta_c (the FE mesh's
+    stiffness), 0.91-0.98 past it (docs/laws/tabulated.md; measured 0.981-0.988 and
+    0.912-0.976)."""
     case = _case(curves.name)
     model = get_law("tabulated").build(case.pair, case.radius)
     for run in case.runs:
@@ -281,7 +282,8 @@ def test_hertzian_unloading_energy_against_fe(curves: IndentationCurves) -> None
         d, f = np.asarray(run.unloading_delta), np.asarray(run.unloading_force)
         order = np.argsort(d)
         ratio = model.unload(run.delta_max).energy_returned() / np.trapezoid(f[order], d[order])
-        assert 0.91 <= ratio <= 1.005, (run.delta_max / case.delta_c, ratio)
+        low, high = (0.98, 0.99) if run.delta_max <= case.delta_c * (1 + 1e-9) else (0.91, 0.98)
+        assert low <= ratio <= high, (run.delta_max / case.delta_c, ratio)
 
 
 @pytest.mark.filterwarnings("ignore::impactlab.contact.indentation_data.ResidualRaisedWarning")

@@ -21,7 +21,7 @@ from typing import Any
 
 import numpy as np
 
-from impactlab._validation import check_nonnegative
+from impactlab._validation import check_gravity
 from impactlab.analytic._inputs import HALF_PI, arr, magnitude, out, rod_values
 from impactlab.analytic._inputs import angle as _angle
 from impactlab.analytic._inputs import travel as _travel
@@ -255,7 +255,7 @@ def impact_duration(
             "vertical, or mu at mu_c), where the tip does not slide and T = L_s/(|alpha| |v_i|) "
             "is undefined"
         )
-    g_ = check_nonnegative("g", g, "m/s^2")
+    g_ = check_gravity("g", g)
     ab = np.abs(al)
 
     def bounds(vt: Any) -> tuple[Any, Any]:
@@ -288,7 +288,7 @@ def friction_from_velocities(dv_cx: Any, dv_cy: Any, *, duration: Any = None, g:
     dy = _upward("dv_cy", dv_cy)
     if duration is not None:
         T = arr("duration", duration, unit="s", low=0.0)
-        dy = dy + check_nonnegative("g", g, "m/s^2") * T
+        dy = dy + check_gravity("g", g) * T
     return out(np.abs(dx) / dy)
 
 
@@ -318,7 +318,7 @@ def mean_force_momentum(
     T = arr("duration", duration, unit="s", low=0.0, low_open=True)
     m = arr("mass", mass, unit="kg", low=0.0, low_open=True)
     dv = _upward("dv_cy", dv_cy)
-    g_ = check_nonnegative("g", g, "m/s^2")
+    g_ = check_gravity("g", g)
     return out(m * dv / T + (m * g_ if gravity else 0.0))
 
 
@@ -335,7 +335,7 @@ def mean_force_rigid(
     e_ = arr("e", e, low=0.0, high=1.0)
     vi = np.abs(arr("v_i", v_i, unit="m/s"))
     Ky = arr("K_y", K_y, unit="1/kg", low=0.0, low_open=True)
-    g_ = check_nonnegative("g", g, "m/s^2")
+    g_ = check_gravity("g", g)
     return out(((1.0 + e_) * vi + (g_ * T if gravity else 0.0)) / (Ky * T))
 
 

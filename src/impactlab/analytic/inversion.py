@@ -17,7 +17,7 @@ import numpy as np
 from impactlab._validation import (
     ImplausibleInputWarning,
     check_flag,
-    check_nonnegative,
+    check_gravity,
     check_seed,
     warn_implausible,
 )
@@ -160,7 +160,7 @@ def _options(n_samples: Any, seed: Any, gravity: Any, g: Any, measure: str) -> d
         "n_samples": int(n_samples),
         "seed": check_seed("seed", seed),
         "gravity": check_flag("gravity", gravity),
-        "g": check_nonnegative("g", g, "m/s^2"),
+        "g": check_gravity("g", g),
         "travel": _travel(measure),
     }
 

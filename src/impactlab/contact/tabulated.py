@@ -294,7 +294,7 @@ class Tabulated(ContactLaw):
         "leave-one-out 3 %), delta_r/delta_max within 0.001 "
         "of the FE maxima (leave-one-out 0.015; 0.021 for PMMA's 6 maxima); unloading Hertzian "
         "(energy returned "
-        "0.91-1.00 of the FE's past delta_c)"
+        "0.91-0.98 of the FE's past delta_c)"
     )
 
     def __init__(self, curves: IndentationCurves | Sequence[IndentationCurves] | None = None):

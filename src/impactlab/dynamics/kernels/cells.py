@@ -34,8 +34,8 @@ CP_FTOL = 3  #: force hysteresis of the stick -> slip test [N]
 
 #: Relative hysteresis of the stick -> slip test.
 SLIP_HYST = 1e-9
-#: Cells over the estimated largest contact radius (max |e_t - exact| ~ 1e-3, 2nd order;
-#: ``friction.PARTIAL_SLIP_CELLS``).
+#: Cells over the estimated largest contact radius (``friction.PARTIAL_SLIP_CELLS``; its
+#: accuracy against the exact solution, by psi1, on the verification page).
 N_CELLS = 16
 #: A step ends this far past the predicted next cell boundary (a kink of the cell lengths).
 STEP_PAST = 1.05

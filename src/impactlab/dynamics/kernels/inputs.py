@@ -16,16 +16,11 @@ import math
 
 from numba.extending import register_jitable
 
+from impactlab._input_limits import GRAVITY_RULE, MAX_GRAVITY, MAX_MU, MAX_SPEED
+
 # --- bounds --------------------------------------------------------------------------------------
-#: Largest speed [m/s] of each velocity component of the centre of mass and of the contact
-#: point's circumferential speed from the spin: far beyond the impacts a contact law of rigid
-#: bodies describes; faster, the energy bookkeeping (kinetic energies of order m v^2) would
-#: lose the digits of the work it balances.
-MAX_SPEED = 1e4
-#: Largest friction coefficient [1]: dry contacts stay below about 2; a larger mu sticks.
-MAX_MU = 1e3
-#: Largest gravitational acceleration [m/s^2] (a million g).
-MAX_GRAVITY = 1e7
+# MAX_SPEED [m/s], MAX_MU [1] and MAX_GRAVITY [m/s^2]: ``impactlab._input_limits`` (the closed
+# forms of the inversion check gravity against the same bound).
 #: Largest angle of a rod to the flat [rad]: pi/2, plus 1e-12 for 90 deg converted from degrees.
 MAX_ANGLE = 0.5 * math.pi + 1e-12
 #: The relative tolerance's range [1].
@@ -54,7 +49,7 @@ INPUT_RULES: dict[int, tuple[str, str]] = {
         f"{MAX_SPEED:g} m/s",
     ),
     IN_MU: ("mu", f"mu must lie in [0, {MAX_MU:g}]"),
-    IN_GRAVITY: ("gravity", f"gravity must lie in [0, {MAX_GRAVITY:g}] m/s^2 (a million g)"),
+    IN_GRAVITY: ("gravity", GRAVITY_RULE),
     IN_RTOL: ("rtol", f"rtol must lie in [{RTOL_RANGE[0]:g}, {RTOL_RANGE[1]:g}]"),
 }
 

@@ -1,0 +1,19 @@
+"""The bounds of an impact's inputs that more than one layer checks: the compiled engine's input
+rules (``dynamics.kernels.inputs``) and the closed forms of the inversion (``analytic``) read
+them here, so one number holds everywhere (SI units)."""
+
+from __future__ import annotations
+
+#: Largest speed [m/s] of each velocity component of the centre of mass and of the contact
+#: point's circumferential speed from the spin: far beyond the impacts a contact law of rigid
+#: bodies describes; faster, the energy bookkeeping (kinetic energies of order m v^2) would
+#: lose the digits of the work it balances.
+MAX_SPEED = 1e4
+#: Largest friction coefficient [1]: dry contacts stay below about 2; a larger mu sticks.
+MAX_MU = 1e3
+#: Largest gravitational acceleration [m/s^2] (a million g).
+MAX_GRAVITY = 1e7
+#: The gravity rule in words, for the errors.
+GRAVITY_RULE = f"gravity must lie in [0, {MAX_GRAVITY:g}] m/s^2 (a million g)"
+
+__all__ = ["GRAVITY_RULE", "MAX_GRAVITY", "MAX_MU", "MAX_SPEED"]
