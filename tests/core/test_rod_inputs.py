@@ -186,4 +186,4 @@ def test_simulate_rod_from_its_diameter(monkeypatch, capsys) -> None:
     code, _, err = _cli(
         monkeypatch, capsys, "simulate", "sphere", "--vy", "-1 m/s", "--diameter", "1 mm"
     )
-    assert code == 2 and "--diameter: a sphere has no angle" in err
+    assert code == 2 and "--diameter is a rod's; a sphere's size is its radius, --radius" in err

@@ -69,7 +69,7 @@ def test_a_mixed_study_runs_every_body(tmp_path) -> None:
     mixed = Study(
         name="mixed",
         grid={"body": ["rod", "sphere"], "angle": [0.3, 0.9]},
-        fixed={**_KIN, "length": 0.25, "radius": 0.01},
+        fixed={**_KIN, "length": 0.3048, "radius": 0.01},  # another length needs the mass
     )
     ds = open_sweep(run_sweep(mixed, tmp_path / "m.zarr", quiet=True).path)
     assert (ds["status"].values == 0).all()

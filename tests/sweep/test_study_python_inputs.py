@@ -20,13 +20,14 @@ Q = pint.UnitRegistry().Quantity  # a registry of the user's, not impactlab's
 def test_quantities_are_converted_to_si() -> None:
     st = Study(name="q", grid={"angle": Q(np.array([20.0, 45.0]), "deg"),
                                "length": Q(np.array([300.0]), "mm")},
-               fixed={"vy": "-1.41 m/s", "mu": 0.1, "tip_radius": Q(8.8, "mm")})  # fmt: skip
+               fixed={"vy": "-1.41 m/s", "mu": 0.1, "tip_radius": Q(8.8, "mm"),
+                      "mass": Q(450.0, "g")})  # fmt: skip
     d = st.to_dict()
     assert d["grid"]["angle"] == pytest.approx([math.radians(20), math.radians(45)])
     assert d["grid"]["length"] == [pytest.approx(0.3)]
     assert d["fixed"]["vy"] == -1.41 and d["fixed"]["tip_radius"] == pytest.approx(0.0088)
     same = Study(name="q", grid={"angle": ["20 deg", "45 deg"], "length": [0.3]},
-                 fixed={"vy": -1.41, "mu": 0.1, "tip_radius": 0.0088})  # fmt: skip
+                 fixed={"vy": -1.41, "mu": 0.1, "tip_radius": 0.0088, "mass": 0.45})  # fmt: skip
     assert same.hash() == st.hash()
 
 

@@ -35,7 +35,7 @@ def test_a_grid_of_materials_and_a_body_by_values(tmp_path, fake) -> None:
     body = {"body_E": 97e9, "body_nu": 0.31, "body_yield_strength": 310e6, "body_density": 8500.0}
     st = Study(
         name="mixed",
-        fixed={**KINEMATICS, **body},
+        fixed={**KINEMATICS, **body, "mass": 0.5},  # a rod of another material: its mass
         grid={"vy": [-1.0, -2.0], "flat_material": ["al-6061-t6", "brass-c360"]},
     )
     ds = open_sweep(run_sweep(st, tmp_path / "mixed.zarr", evaluator=fake, quiet=True).path)

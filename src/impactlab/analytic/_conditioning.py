@@ -124,10 +124,19 @@ def _rod_text(rod: Mapping[str, float]) -> str:
 
 def check_coefficients(K_x: float, K_y: float, alpha: float, rod: Mapping[str, float]) -> None:
     """ValueError where the rod's impulse coefficients K_x, K_y [1/kg] or alpha are not finite,
-    or K_y <= 0 (1/(m k^2) over- or underflows for a rod's extreme mass or inertia), naming the
-    rod's values."""
-    if all(math.isfinite(v) for v in (K_x, K_y, alpha)) and K_y > 0.0:
+    or K_y = 0 (1/(m k^2) over- or underflows for a rod's extreme mass or inertia), naming the
+    rod's values; and, naming mu, where K_y < 0: mu a b > k^2 + a^2, a mu far above the
+    critical mu_c, where the tip sticks."""
+    finite = all(math.isfinite(v) for v in (K_x, K_y, alpha))
+    if finite and K_y > 0.0:
         return
+    if finite and K_y < 0.0:
+        raise ValueError(
+            f"mu lies far above the critical mu_c, where the tip sticks (K_y = {K_y:.4g} 1/kg "
+            "< 0: mu a b > k^2 + a^2); the inversion of Eq. 12 needs gross sliding, mu < mu_c "
+            "(impactlab.analytic.critical_friction); check mu, a friction coefficient (0.1-0.6 "
+            "for metals)"
+        )
     raise ValueError(
         f"the rod's impulse coefficients are not finite (K_x = {K_x!r}, K_y = {K_y!r} 1/kg, "
         f"alpha = {alpha!r}) for {_rod_text(rod)}: 1/(m k^2) over- or underflows, far outside "

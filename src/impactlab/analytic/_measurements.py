@@ -166,7 +166,8 @@ def check_restitution(e: Measured) -> Measured:
     if s == 0.0:
         raise ValueError(
             f"e must lie in [0, 1], got {v!r} (a measured e {side} within "
-            f"{E_NOISE_SIGMAS:g} sigma is read as noise when given with its sigma: (value, sigma))"
+            f"{E_NOISE_SIGMAS:g} sigma is read as noise when given with its sigma: --sigma-e on "
+            "the command line, [sigma] e in a measurement file, e=(value, sigma) in Python)"
         )
     n = abs(v - bound) / s
     if n > E_NOISE_SIGMAS:

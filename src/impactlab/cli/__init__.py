@@ -1,8 +1,9 @@
 """The ``impactlab`` command line. Each command lives in its own module with a ``register(app)``.
 
-User errors (ValueError, FileNotFoundError, ...) exit with status 2 and one line naming the bad
-input, never a traceback. Set ``IMPACTLAB_DEBUG=1`` to see the traceback. Ctrl-C exits with
-status 130 and one line (``interrupted``, or the command's own: ``sweep run``, ``calibrate``).
+User errors (ValueError, FileNotFoundError, ...) and running out of memory (an input that asks
+for too much) exit with status 2 and one line naming the bad input, never a traceback. Set
+``IMPACTLAB_DEBUG=1`` to see the traceback. Ctrl-C exits with status 130 and one line
+(``interrupted``, or the command's own: ``sweep run``, ``calibrate``).
 """
 
 from __future__ import annotations
@@ -173,10 +174,21 @@ def _freeze_at_exit() -> None:
 
 
 def _usage_line(exc: Exception, message: str) -> str:
-    """click's usage error in one line, with the command whose help says more."""
+    """click's usage error in one line, with the command whose help says more; an option of
+    ``impactlab`` itself given after a command (``--law-file``) says where it goes."""
     text = " ".join(message.split())
     ctx = getattr(exc, "ctx", None)
     path = getattr(ctx, "command_path", None)
+    if getattr(exc, "option_name", None) == "--law-file" and ctx is not None:
+        names = []  # the command's words below impactlab's own ("sweep run")
+        while ctx.parent is not None:
+            names.append(str(ctx.info_name))
+            ctx = ctx.parent
+        command = " ".join(reversed(names)) or "COMMAND"
+        return (
+            f"{text}; --law-file goes before the command: impactlab --law-file FILE.toml "
+            f"{command} ..."
+        )
     return f"{text} (see '{path} --help')" if isinstance(path, str) and path else text
 
 
@@ -202,6 +214,16 @@ def main() -> None:
         if os.environ.get("IMPACTLAB_DEBUG"):
             raise
         print(f"error: {exc}", file=sys.stderr)
+        sys.exit(2)
+    except MemoryError as exc:  # an input that asks for more than the machine has
+        if os.environ.get("IMPACTLAB_DEBUG"):
+            raise
+        said = f": {exc}" if str(exc) else ""
+        print(
+            f"error: out of memory{said}; an input asks for more than this machine has (a "
+            "sample count, a grid, a resolution): choose a smaller one",
+            file=sys.stderr,
+        )
         sys.exit(2)
     except KeyboardInterrupt as exc:  # outside a command (typer's set-up): no line yet
         interrupted(exc)

@@ -192,6 +192,8 @@ def analyze_cmd(
                    "height_unit": height_unit, "flip_heights": flip_heights,
                    "gravity": gravity}  # fmt: skip
         print(json.dumps(analysis_json(res, options), indent=2))
+        for w in res.warnings:  # on stderr too, as every command's with --json
+            typer.echo(f"warning: {w}", err=True)
     else:
         _print_summary(res)
     if res.errors:

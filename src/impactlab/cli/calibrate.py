@@ -174,7 +174,9 @@ def calibrate_cmd(
     ] = None,
     restart: Annotated[
         bool,
-        typer.Option(help="Discard the saved chains in --out (one of other inputs stops a run)."),
+        typer.Option(
+            help="Discard the saved chains in --out (a chain saved with other inputs stops a run)."
+        ),
     ] = False,
     scheduler: Annotated[
         str | None, typer.Option(help="Dask scheduler address: one task per model there.")

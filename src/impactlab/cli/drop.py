@@ -219,9 +219,10 @@ def drop_cmd(
     rtol: str = typer.Option(
         None,
         "--rtol",
-        help="Relative tolerance of the integration, in [1e-13, 1e-3] (default 1e-7). To check "
+        help="Relative tolerance of the integration, in [1e-13, 1e-5] (default 1e-7). To check "
         "the contacts and totals, run again with more modes (--modes-axial, --modes-bending: "
-        "twice the counts shown) as well as tighter.",
+        "twice and four times the counts shown: impactlab.dynamics.mode_convergence) as well as "
+        "tighter.",
     ),
     stop: str = typer.Option(None, "--stop", help=STOP_HELP[0].upper() + STOP_HELP[1:]),
     t_max: str = typer.Option(

@@ -18,7 +18,7 @@ from impactlab.bodies.flexible_rod import (
 from impactlab.cli._common import UserError, as_option
 from impactlab.materials import Material
 
-__all__ = ["MODES_HELP", "drop_body", "flexible_rod"]
+__all__ = ["MODES_HELP", "drop_body", "flexible_rod", "paper_mass"]
 
 
 #: The help of the mode counts (``impactlab simulate --flexible`` too).
@@ -94,6 +94,31 @@ def flexible_rod(
         raise UserError(as_option(str(exc), keys, lambda k: name(option.get(k, k)))) from None
 
 
+def paper_mass(
+    length_given: bool,
+    mass: float | None,
+    diameter: float | None,
+    material: Material,
+    label: Callable[..., str] | None = None,
+) -> float | None:
+    """The rod's mass [kg]: ``mass`` as given; None when only the ``diameter`` [m] is given (the
+    mass follows from it); the paper's rod's mass when neither is, for the paper's rod only.
+    UserError, naming ``label('mass', like)`` and ``label('diameter', like)``, for a rod of
+    another ``material`` or a given length without either: the paper's mass would be silently
+    wrong (``like``: the option that made the rod another, for a config file's spelling)."""
+    if mass is not None or diameter is not None:
+        return mass
+    if material == PAPER_ROD.material and not length_given:
+        return PAPER_ROD.mass
+    name = label or _option
+    like = "length" if length_given else "material"  # the other rod's
+    raise UserError(
+        f"{name('mass', like)} or {name('diameter', like)}: give one (or both) for a rod other "
+        "than the paper's (its mass follows from the diameter, the length and the material's "
+        "density)"
+    )
+
+
 def drop_body(
     rigid: bool,
     modes: Mapping[str, Any],
@@ -110,16 +135,8 @@ def drop_body(
     name = label or _option
     length = sizes["length"] if sizes["length"] is not None else PAPER_ROD.length
     tip = sizes["tip_radius"] if sizes["tip_radius"] is not None else PAPER_ROD.tip_radius
-    mass, diameter = sizes["mass"], sizes["diameter"]
-    if mass is None and diameter is None:  # the paper's rod's mass, or from its diameter
-        if material != PAPER_ROD.material or sizes["length"] is not None:
-            like = "material" if sizes["length"] is None else "length"  # the other rod's
-            raise UserError(
-                f"{name('mass', like)} or {name('diameter', like)}: give one (or both) for a rod "
-                "other than the paper's (its mass follows from the diameter, the length and the "
-                "material's density)"
-            )
-        mass = PAPER_ROD.mass
+    diameter = sizes["diameter"]
+    mass = paper_mass(sizes["length"] is not None, sizes["mass"], diameter, material, name)
     if rigid:
         given = [name(k) for k, v in modes.items() if v is not None]
         if given:

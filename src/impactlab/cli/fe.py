@@ -43,12 +43,18 @@ fe_app = typer.Typer(
 )
 
 
-def _material(name: str, E: str | None, nu: float | None, sy: str | None, label: str) -> Material:
+def _material(
+    name: str | None, E: str | None, nu: float | None, sy: str | None, label: str
+) -> Material:
     """The library material ``name`` (or a material by values, ``impactlab.materials``), or
     the one --LABEL-E, --LABEL-nu and --LABEL-sy define whole: all three or none (a library
-    material is never partly changed)."""
+    material is never partly changed); --flat given with them is refused (None: not given)."""
     values = {"E": E, "nu": nu, "sy": sy}
     given = [k for k, v in values.items() if v is not None]
+    if name is not None and given and label == "flat":  # one of them would be ignored
+        raise UserError("--flat and --flat-E/-nu/-sy both given: they name the flat's material; "
+                        "give one (a material, or its values)")  # fmt: skip
+    name = "aisi-1010" if name is None else name  # the paper's flat
     if not given:
         try:
             return get_material(name, "--body/--material" if label == "body" else f"--{label}")
@@ -257,10 +263,14 @@ def indent_cmd(
     body: str = typer.Option(
         "aisi-201", "--body", "--material", help="The sphere's material preset (--material too)."
     ),
-    flat: str = typer.Option("aisi-1010", help="The flat's material preset."),
-    flat_E: str | None = typer.Option(None, "--flat-E", help="Flat's Young's modulus."),
+    flat: str | None = typer.Option(None, help="The flat's material preset (default aisi-1010)."),
+    flat_E: str | None = typer.Option(
+        None, "--flat-E", help="Flat's Young's modulus, e.g. '69 GPa' (a bare number: Pa)."
+    ),
     flat_nu: float | None = typer.Option(None, "--flat-nu", help="Flat's Poisson's ratio."),
-    flat_sy: str | None = typer.Option(None, "--flat-sy", help="Flat's yield strength."),
+    flat_sy: str | None = typer.Option(
+        None, "--flat-sy", help="Flat's yield strength, e.g. '276 MPa' (a bare number: Pa)."
+    ),
     body_E: str | None = typer.Option(None, "--body-E", help="Sphere's Young's modulus."),
     body_nu: float | None = typer.Option(None, "--body-nu", help="Sphere's Poisson's ratio."),
     body_sy: str | None = typer.Option(None, "--body-sy", help="Sphere's yield strength."),

@@ -41,8 +41,10 @@ from impactlab.cli.invert_inputs import (
     parse_sigma,
     parse_value,
 )
-from impactlab.cli.invert_output import inversion_json, print_inversion
+from impactlab.cli.invert_output import inversion_doubts, inversion_json, print_inversion
 
+#: The most Monte Carlo samples taken (--samples, samples in a file): about 1.3 GB of arrays.
+MAX_SAMPLES = 10_000_000
 #: the inputs that T needs (F needs e or dv_cy besides)
 _REQUIRED = ("angle", "v_i", "mu", "delta_p", "L_s")
 
@@ -118,15 +120,24 @@ def run_invert(
     if seed is not None and seed < 0:
         raise UserError(f"--seed must be an integer >= 0, got {seed}")
     samples_key = "n_samples" if "n_samples" in extra else "samples"
+    if samples is None:
+        samples = _file_count(extra, samples_key, 20_000, 100)
+        samples_label = f"{samples_key} in the measurement file"
+    else:
+        samples_label = "--samples"
+    if samples > MAX_SAMPLES:  # about 125 bytes a sample: refused before any is drawn
+        raise UserError(
+            f"{samples_label} must be at most {MAX_SAMPLES:,} (about "
+            f"{MAX_SAMPLES * 125 / 1e9:.2g} GB of memory), got {samples:,}; the Monte Carlo's "
+            "mean and 95 % interval settle long before (default 20,000)"
+        )
     try:
         result = invert(
             **kwargs,
             rod=_rod(r),
             gravity=gravity if gravity is not None else bool(extra.get("gravity", False)),
             measure=measure or extra.get("measure", "slip"),
-            n_samples=samples
-            if samples is not None
-            else _file_count(extra, samples_key, 20_000, 100),
+            n_samples=samples,
             seed=seed if seed is not None else _file_count(extra, "seed", 0, 0),
         )
     except ValueError as exc:  # "mu must be finite": the input as the user gave it
@@ -255,7 +266,10 @@ def invert_cmd(
         "contact) or 'travel' (the contact patch, which a dent's length records).",
     ),
     samples: int | None = typer.Option(
-        None, "--samples", min=100, help="Monte Carlo samples (default 20000; at least 100)."
+        None,
+        "--samples",
+        min=100,
+        help=f"Monte Carlo samples (default 20000; at least 100, at most {MAX_SAMPLES:,}).",
     ),
     seed: int | None = typer.Option(None, "--seed", help="Monte Carlo seed (default 0)."),
     flat: str | None = typer.Option(
@@ -296,11 +310,13 @@ def invert_cmd(
     if flat is None and case is not None:
         flat = "aisi-1010"  # the paper's flat
     model, compared = _compare_with_engine(res, flat) if flat is not None else ({}, [])
+    doubts = inversion_doubts(found, compared)
     found += compared
     if as_json:
         data = inversion_json(res)
         if model:
             data["model"] = to_json(model, SI_UNITS)
+        data |= {"ok": not doubts, "doubts": doubts}
         print(json.dumps({**data, "warnings": found}, indent=2))
     else:
         print_inversion(res, given)

@@ -71,6 +71,17 @@ def inversion_json(res: InversionResult) -> dict[str, Any]:
     return to_json(data, _UNITS, sigmas)  # type: ignore[no-any-return]
 
 
+def inversion_doubts(inverted: list[str], compared: list[str]) -> list[str]:
+    """What makes the inversion not ok (``ok`` false in ``invert --json``), by the rule of
+    ``impactlab analyze`` (``experiment.analysis``): the inversion's warnings (``inverted``)
+    that say its result is impossible (a velocity change no impact gives, a duration no
+    rigid-body impact has), and every warning of the comparison with the simulated impact
+    (``compared``: a T or F more than 3 times off)."""
+    from impactlab.experiment.analysis import IMPOSSIBLE_PHRASES  # analyze's phrases: one rule
+
+    return [t for t in inverted if any(p in t for p in IMPOSSIBLE_PHRASES)] + list(compared)
+
+
 def print_inversion(res: InversionResult, given: Mapping[str, tuple[float, float]]) -> None:
     """The inputs as given, then T and F (± first order; Monte Carlo rows, with their medians,
     95 % intervals and the number of samples drawn and used, only when an input has an

@@ -37,7 +37,7 @@ from impactlab.cli.config_file import (
     refuse_given,
 )
 from impactlab.cli.config_values import option_numbers, plain_number, text
-from impactlab.cli.drop_body import flexible_rod
+from impactlab.cli.drop_body import flexible_rod, paper_mass
 from impactlab.cli.simulate_from import FROM_RULE, run_from
 from impactlab.cli.simulate_help import HELP
 from impactlab.cli.simulate_output import check_plot_folder, report_result
@@ -118,6 +118,11 @@ def _body(opt: ConfigOptions) -> tuple[Rod | Sphere | FlexibleRod, float | None]
             "--flexible, or run the rigid rod's drop: impactlab drop --rigid)",
         )
     if kind == "sphere":
+        if opt.given("diameter"):  # a sphere's size: its radius, where --diameter was given
+            raise UserError(
+                f"{opt.label('diameter')} is a rod's; a sphere's size is its radius, "
+                f'{opt.label("radius", "diameter")} (half the diameter, e.g. "5 mm")'
+            )
         refuse_given(
             opt,
             (*_ROD_ONLY, "flexible"),
@@ -133,10 +138,11 @@ def _body(opt: ConfigOptions) -> tuple[Rod | Sphere | FlexibleRod, float | None]
         raise UserError(_MISSING_ANGLE)
     angle = angle_quantity(opt.values["angle"], opt.label("angle"))
     diameter, mass = opt.size("diameter", "m"), opt.size("mass", "kg")
+    length = opt.size("length", "m")
     sizes: dict[str, float | None] = {
-        "length": opt.size_or("length", "m", PAPER_ROD.length),
+        "length": PAPER_ROD.length if length is None else length,
         "tip_radius": opt.size_or("radius", "m", PAPER_ROD.tip_radius),
-        "mass": PAPER_ROD.mass if mass is None and diameter is None else mass,
+        "mass": paper_mass(length is not None, mass, diameter, material, opt.label),
         "diameter": diameter,
     }
     if flexible:

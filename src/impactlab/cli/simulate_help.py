@@ -24,8 +24,9 @@ HELP = {
     "radius": "Tip / sphere radius (--tip-radius too), e.g. '8.8 mm' (bare number: m; default "
     "8.8 mm, the paper's).",
     "length": length_help("0.3048 m"),
-    "mass": "Mass, e.g. '0.46 kg' (bare number: kg; rod default 0.4607 kg, or from --diameter; "
-    "sphere default from the density).",
+    "mass": "Mass, e.g. '0.46 kg' (bare number: kg; rod default 0.4607 kg, the paper's rod's: "
+    "another --material or --length needs --mass or --diameter; sphere default from the "
+    "density).",
     "diameter": "Rod diameter d, e.g. '12 mm' (bare number: m; optional): the mass follows from "
     "d, L and the material's density (with --mass too: checked to 2 %).",
     "material": "Body material: a library name (see 'impactlab materials'), properties "
@@ -42,5 +43,5 @@ HELP = {
     f"number: s; default {DEFAULT_T_MAX * 1e3:g} ms).",
     "rtol": f"Integration tolerance, in [1e-13, 1e-3] (default {_n(DEFAULT_RTOL)}, "
     f"{_n(PARTIAL_SLIP_RTOL)} with partial_slip, {_n(DROP_DEFAULT_RTOL)} for the flexible rod; "
-    f"{_n(PARTIAL_SLIP_RTOL_MAX)} at most with partial_slip).",
+    f"{_n(PARTIAL_SLIP_RTOL_MAX)} at most for the flexible rod and with partial_slip).",
 }

@@ -25,7 +25,13 @@ from typer.core import TyperGroup
 from impactlab._json import to_json
 from impactlab._validation import did_you_mean
 from impactlab.cli._common import SI_UNITS, UserError, emit
-from impactlab.cli.output_paths import existing_store, output_file, output_store
+from impactlab.cli.output_paths import existing_store
+from impactlab.cli.sweep_paths import (
+    check_export_file,
+    check_run_paths,
+    export_suffix,
+    refuse_none_ok,
+)
 from impactlab.cli.sweep_summary import (
     info_json,
     print_uncertainty,
@@ -203,7 +209,7 @@ def run_cmd(
     from impactlab.experiment.checks import output_folder
     from impactlab.sweep import export_netcdf, plot_sweep
 
-    _check_run_paths(out, netcdf)
+    check_run_paths(out, netcdf)
     if plot is not None:
         plot = output_folder(plot, "--plot")
     where = _Where(out, scheduler, workers, max_cases, worker_timeout, backend)
@@ -233,36 +239,19 @@ def run_cmd(
     if failed is not None:
         print(failed, file=sys.stderr)
         raise typer.Exit(1)
-
-
-def _check_run_paths(out: Path | None, netcdf: Path | None) -> None:
-    """--out (a store) and --netcdf (a NetCDF file: .nc, .nc4) can be written, before the study
-    runs."""
-    if out is not None:
-        output_store(out, "--out")
-    if netcdf is not None:
-        csv = f"; for a CSV table: impactlab sweep export STORE {netcdf.with_suffix('.csv')}"
-        if netcdf.name.startswith(".") and not netcdf.suffix:  # ".nc": no name to keep
-            csv = ""
-        _suffix(netcdf, "--netcdf", ("NetCDF-4",), csv)
-        output_file(netcdf, "--netcdf")
-
-
-def _suffix(path: Path, name: str, formats: tuple[str, ...], hint: str = "") -> str:
-    """The export format of ``path`` (``sweep.netcdf.check_suffix``) or a UserError."""
-    from impactlab.sweep.netcdf import check_suffix
-
-    try:
-        return check_suffix(path, name, formats)
-    except ValueError as exc:
-        raise UserError(f"{exc}{hint}") from None
+    refuse_none_ok(res, ds)  # every case refused or failed: say so, exit status 2
 
 
 @sweep_app.command("uncertainty")
 def uncertainty_cmd(
     source: Annotated[Path, typer.Argument(help="A Monte Carlo study file, or its Zarr store.")],
     outputs: Annotated[
-        list[str] | None, typer.Option("--output", help="Output to report (repeatable).")
+        list[str] | None,
+        typer.Option(
+            "--output",
+            help="Output to report, a quantity (e, delta_p, L_s, T, F, ...; not the codes "
+            "regime and flags); repeatable.",
+        ),
     ] = None,
     percentiles: Annotated[
         list[float] | None, typer.Option("--percentile", help="Percentile (repeatable).")
@@ -297,7 +286,7 @@ def uncertainty_cmd(
                 f"sweep store {str(source)!r} does not exist: give a Monte Carlo study file "
                 "(TOML) or the Zarr store it ran into"
             )
-        _check_run_paths(out, None)
+        check_run_paths(out, None)
         _check_uncertainty_study(source, max_cases)  # before any case is computed
         where = _Where(out, scheduler, workers, max_cases)
         res = _run(source, where, quiet or as_json, False)
@@ -386,8 +375,9 @@ def export_cmd(
     from impactlab.sweep import export_file, open_sweep
 
     if not target.is_dir():  # a folder: output_file says so
-        _suffix(target, "export file", ("CSV", "NetCDF-4"))
-    output_file(target, "the CSV file" if target.suffix.lower() == ".csv" else "the NetCDF file")
+        export_suffix(target, "export file", ("CSV", "NetCDF-4"))
+    csv = target.suffix.lower() == ".csv"
+    check_export_file(target, "the CSV file" if csv else "the NetCDF file")
     export_file(open_sweep(existing_store(store)), target)
     warn_incomplete(store)  # its cases not computed yet are in the file as status -1
     print(target, file=sys.stdout)

@@ -67,7 +67,7 @@ _RECORDING = threading.Lock()
 #: The inversion's warnings (``impactlab.analytic``) that say the result is impossible: a
 #: velocity change no impact gives (e outside [0, 1]), a duration no rigid-body impact has;
 #: they mark the result not ok (``ExperimentResult.doubts``).
-_IMPOSSIBLE = ("no impact gives it", "far longer than a rigid-body impact")
+IMPOSSIBLE_PHRASES = ("no impact gives it", "far longer than a rigid-body impact")
 
 
 def _message(exc: BaseException) -> str:
@@ -143,7 +143,7 @@ def _inversion_stage(
         except ValueError as exc:
             res.errors["inversion"] = _message(exc)
     for text in _inversion_warnings(caught, d):
-        if any(phrase in text for phrase in _IMPOSSIBLE):
+        if any(phrase in text for phrase in IMPOSSIBLE_PHRASES):
             res.add_doubt(text)
         else:
             res.warnings.append(text)

@@ -81,7 +81,7 @@ def brittle_limit(statics: Statics) -> float:
     return min((first_yield_pressure(m) for m in mats if m.brittle), default=math.inf)
 
 
-def _body(cat: Mapping[str, str], row: Mapping[str, float], body_mat: Material) -> Rod | Sphere:
+def make_body(cat: Mapping[str, str], row: Mapping[str, float], body_mat: Material) -> Rod | Sphere:
     def given(name: str) -> float | None:
         v = row[name]
         return None if math.isnan(v) else float(v)
@@ -152,7 +152,7 @@ def law_table(law_id: int, p: np.ndarray) -> np.ndarray:
     return hit
 
 
-_BODY_NUMERIC = tuple(n for n in BODY_INPUTS if n not in CATEGORY_INPUTS)
+BODY_NUMERIC = tuple(n for n in BODY_INPUTS if n not in CATEGORY_INPUTS)
 
 
 def build_models(
@@ -178,7 +178,7 @@ def model_rows(
     """``build_models`` per distinct combination: (law params (R, P), body params (R, NB),
     status (R,), the combination of each case (N,))."""
     cat = statics.categories
-    names = sorted(set(_LAW_NUMERIC) | set(_BODY_NUMERIC))
+    names = sorted(set(_LAW_NUMERIC) | set(BODY_NUMERIC))
     cols = [np.asarray(cases[k], dtype=np.float64) for k in names]
     rows, inverse = _unique_rows(cols)
     lp = tuple(sorted(statics.law_params.items()))
@@ -246,12 +246,12 @@ def check_study_laws(
 ) -> None:
     """ValueError, in the law's own words, when the contact law with the study's
     ``law_params`` refuses every combination of the study's inputs that enter it
-    (``law_problem``) and accepts the first without them: the ``[law_params]`` would refuse
-    every case. Checked where the law's inputs take at most :data:`MAX_PROBES` combinations
-    over the grid and none is sampled; otherwise (or where only some combinations fail, or
-    the law refuses the pair whatever its parameters) each refused case gets
-    ``STATUS_BAD_LAW``, and the law's words for the first of them are in the sweep's summary
-    (``summary.status_counts``)."""
+    (``law_problem``) and accepts the first without them: the
+    ``[law_params]`` would refuse every case. Checked where the law's inputs take at most
+    :data:`MAX_PROBES` combinations over the grid and none is sampled; otherwise (or where only
+    some combinations fail, or the law refuses the pair whatever its parameters) each refused
+    case gets ``STATUS_BAD_LAW``, and the law's words for the first of them are in the sweep's
+    summary (``summary.status_counts``)."""
     names = [*_LAW_NUMERIC, "law", "body", "body_material", "flat_material"]
     if any(n in sampled for n in names):
         return
@@ -289,7 +289,7 @@ def _build_one(
     except ValueError:
         return STATUS_BAD_MATERIAL, STATUS_BAD_MATERIAL
     try:
-        body = _body(cat, row, body_mat)
+        body = make_body(cat, row, body_mat)
         bp = body_params(body, flat_mat)
     except ValueError:
         return STATUS_BAD_BODY, STATUS_BAD_BODY

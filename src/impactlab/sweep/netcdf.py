@@ -1,8 +1,9 @@
 """A sweep's Dataset as a file: NetCDF-4 (``.nc``, ``.nc4``: every variable and attribute) or a
 CSV table (``.csv``: one row per case, every input and output a column, its unit in the
 header, ``e_energy``, ``delta_p [m]``, ``angle [rad]``, in a fixed order). ``export_file``
-chooses by the suffix and refuses any other. Both read a store a part at a time: their memory
-does not grow with the number of cases."""
+chooses by the suffix and refuses any other. An existing file is replaced only when a sweep
+export wrote it (recognised by its header or attributes), never a user's. Both read a store a
+part at a time: their memory does not grow with the number of cases."""
 
 from __future__ import annotations
 
@@ -23,9 +24,11 @@ __all__ = [
     "EXPORT_SUFFIXES",
     "NETCDF_CHUNK_CACHE_BYTES",
     "NETCDF_COMPLEVEL",
+    "check_replaceable",
     "export_csv",
     "export_file",
     "export_netcdf",
+    "exported",
 ]
 
 #: The suffixes of the files a sweep exports to, and their format.
@@ -64,9 +67,47 @@ def check_suffix(
     return str(kind)
 
 
+#: The columns every CSV table of a sweep has (its category inputs and the status).
+_CSV_MARK = ("status", "body", "body_material", "flat_material", "law", "friction")
+#: The attributes every NetCDF file of a sweep has (a store's root attributes).
+_NETCDF_MARK = ("sweep_format", "study_hash")
+
+
+def exported(path: str | Path) -> bool:
+    """Whether the file ``path`` is one a sweep export wrote: a CSV table whose header holds the
+    columns :data:`_CSV_MARK`, a NetCDF file with the attributes :data:`_NETCDF_MARK`. An empty
+    file counts as one (nothing to lose); a file that cannot be read does not."""
+    p = Path(path)
+    try:
+        if p.stat().st_size == 0:
+            return True
+        if p.suffix.lower() == ".csv":
+            with p.open(encoding="utf-8", newline="") as fh:
+                head = fh.readline(1 << 16).rstrip("\r\n").split(",")
+            return set(_CSV_MARK) <= {c.partition(" [")[0] for c in head}
+        import netCDF4
+
+        with netCDF4.Dataset(p) as nc:
+            return set(_NETCDF_MARK) <= set(nc.ncattrs())
+    except (OSError, ValueError, ImportError):
+        return False
+
+
+def check_replaceable(path: str | Path, name: str) -> None:
+    """ValueError when ``path`` (given as ``name``) is an existing file that no sweep export
+    wrote (:func:`exported`): a user's file is never written over."""
+    p = Path(path)
+    if p.is_file() and not exported(p):
+        raise ValueError(
+            f"{name} {str(p)!r} exists and was not written by an impactlab sweep export: it is "
+            "left as it is (remove it, or choose another name)"
+        )
+
+
 def export_file(ds: xr.Dataset, path: str | Path) -> Path:
     """Write the Dataset to ``path``: a CSV table for ``.csv``, NetCDF-4 for ``.nc``/``.nc4``
-    (ValueError for any other suffix)."""
+    (ValueError for any other suffix, or for an existing file that no sweep export wrote:
+    :func:`check_replaceable`)."""
     if check_suffix(path, "export file") == "CSV":
         return export_csv(ds, path)
     return export_netcdf(ds, path)
@@ -76,8 +117,10 @@ def export_netcdf(ds: xr.Dataset, path: str | Path) -> Path:
     """Write the Dataset to NetCDF-4 (strings kept; dictionary attributes become JSON text),
     its numeric arrays compressed (zlib level :data:`NETCDF_COMPLEVEL`, shuffled) in chunks of
     the store's; a store's arrays are read chunk by chunk, never whole. Written whole or not at
-    all; ``path`` ends in ``.nc`` or ``.nc4``."""
+    all; ``path`` ends in ``.nc`` or ``.nc4``, and is no file that a sweep export did not write
+    (ValueError: :func:`check_replaceable`)."""
     check_suffix(path, "NetCDF file", ("NetCDF-4",))
+    check_replaceable(path, "NetCDF file")
     out = Path(path)
 
     def attrs(a: Mapping[str, Any]) -> dict[str, Any]:
@@ -135,8 +178,10 @@ def export_csv(ds: xr.Dataset, path: str | Path) -> Path:
     Brinell hardness in kgf/mm^2; a dimensionless one by its name alone), in the order of
     :func:`_columns`. Written block by block (at most :data:`CSV_BLOCK_CASES` cases in memory;
     the file is that of the whole table at once), whole or not at all; ``path`` ends in
-    ``.csv``."""
+    ``.csv``, and is no file that a sweep export did not write (ValueError:
+    :func:`check_replaceable`)."""
     check_suffix(path, "CSV file", ("CSV",))
+    check_replaceable(path, "CSV file")
     out = Path(path)
     dims = _case_dims(ds)
     # a dimension without coordinate counts 0, 1, ... in every block: its place in the whole

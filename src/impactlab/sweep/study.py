@@ -51,6 +51,7 @@ from impactlab.sweep.options import (
     UncertaintySpec,
     default_chunk_size,
 )
+from impactlab.sweep.study_bodies import check_study_bodies
 from impactlab.sweep.study_rules import check_study_rules
 from impactlab.sweep.studyfile import read_study_file, study_arguments
 from impactlab.units import is_quantity
@@ -227,7 +228,8 @@ class Study:
         object.__setattr__(self, "laws", law_records(laws))
         object.__setattr__(self, "law_params", _check_law_params(self.law_params, laws))
         sampled = () if self.sample is None else tuple(self.sample.inputs)
-        check_study_laws(fixed, axes, sampled, self.law_params)  # every case refused: say so
+        check_study_bodies(fixed, axes, sampled)  # every case refused: say so
+        check_study_laws(fixed, axes, sampled, self.law_params)
         size = self.chunk_size
         if size is not None and (isinstance(size, bool) or not isinstance(size, int) or size < 1):
             raise ValueError(f"chunk_size must be an integer >= 1, got {size!r}")

@@ -93,6 +93,19 @@ class UncertaintyReport:
         }
 
 
+#: Outputs whose values are codes, not quantities: the report refuses them (what they hold).
+NOT_SUMMARISED = {
+    "regime": "category codes (each case's regime: slip, stick, ...; count them instead)",
+    "flags": "bitmasks of result flags (the report counts the flagged cases: n_flagged)",
+}
+
+
+def summarised(ds: Any) -> list[str]:
+    """The outputs of the sweep ``ds`` that the report can summarise (quantities: not the
+    status, nor the codes of :data:`NOT_SUMMARISED`)."""
+    return [str(v) for v in ds.data_vars if v != "status" and v not in NOT_SUMMARISED]
+
+
 def _check_sample(ds: Any) -> None:
     """Refuse a sweep without a Monte Carlo sample (checked before anything is built)."""
     if SAMPLE_DIM not in ds.dims:
@@ -119,7 +132,8 @@ def uncertainty_report(
     ds : the sweep's Dataset (``run_sweep(...).dataset`` or ``open_sweep(path)``); select one
         grid point first for a grid+sample study (``ds.isel(law=0)``).
     outputs : outputs to summarise (default: e, delta_p, sliding_length, duration, mean_force,
-        those present); the paper's symbols L_s, T, F are accepted.
+        those present); the paper's symbols L_s, T, F are accepted; the codes of
+        :data:`NOT_SUMMARISED` (regime, flags) are refused (ValueError).
     inputs : sampled inputs to rank (default: all sampled inputs with a spread).
     percentiles : in [0, 100].
     include_flagged : keep the cases whose ``flags`` say they are not plain success (default:
@@ -140,11 +154,17 @@ def uncertainty_report(
         outs = [o for o in DEFAULT_UNCERTAINTY_OUTPUTS if o in ds.data_vars]
     else:
         outs = [OUTPUT_ALIASES.get(o, o) for o in outputs]
+        codes = next((o for o in outs if o in NOT_SUMMARISED), None)
+        if codes is not None:
+            raise ValueError(
+                f"output {codes!r} holds {NOT_SUMMARISED[codes]}, not a quantity: a mean, a "
+                "spread or a sensitivity of it means nothing; choose among "
+                f"{', '.join(summarised(ds))}"
+            )
         missing = [o for o in outs if o not in ds.data_vars]
         if missing:
             raise ValueError(
-                f"output(s) {missing} not in the sweep; it has: "
-                f"{', '.join(str(v) for v in ds.data_vars if v != 'status')}"
+                f"output(s) {missing} not in the sweep; it has: {', '.join(summarised(ds))}"
             )
     if not outs:
         raise ValueError("no outputs to summarise")

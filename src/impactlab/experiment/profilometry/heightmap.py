@@ -84,8 +84,12 @@ def _check_unambiguous(parts: list[Any], given: Any, name: str) -> None:
     fix = "give each size its unit, '12.5 um, 12.5 um' (x then y), or one size once, '12.5 um'"
     m = re.match(r"^(\d+)\s*([a-zA-Zµμ].*)$", b)
     if bare[0] and a.lstrip("+-").isdigit() and m is not None:
-        one = f"{a}.{m.group(1)} {m.group(2).strip()}"
-        fix = f"write '{one}' (a decimal point) for one size, or '{one}, {one}' for x then y"
+        unit = m.group(2).strip()
+        one, pair = f"{a}.{m.group(1)} {unit}", f"{a} {unit}, {m.group(1)} {unit}"
+        fix = (
+            f"write '{one}' (a decimal point) for one size or '{one}, {one}' for x then y; or, "
+            f"a unit left off, '{pair}' for x then y"
+        )
     raise ValueError(
         f"{name} {given!r} is ambiguous: {no_unit!r} has no unit while {with_unit!r} has one "
         f"(a decimal comma, or a unit left off?): {fix}"
