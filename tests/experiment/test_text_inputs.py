@@ -138,6 +138,19 @@ def test_a_height_map_with_semicolons_and_decimal_commas_is_read(
     assert np.allclose(read_scan(path).z, z, atol=1e-11)
 
 
+def test_a_comma_height_map_with_a_stray_tab_is_read(
+    heights: tuple[np.ndarray, float], tmp_path: Path
+) -> None:
+    """A tab or semicolon on one line of a comma file is not its separator (it made every
+    line 'not a number')."""
+    z, _ = heights
+    lines = [",".join(f"{v * 1e6:.5f}" for v in row) for row in z]
+    lines[3] += "\t"
+    path = tmp_path / "stray.csv"
+    path.write_text("# pixel_size: 8 um\n# height_unit: um\n" + "\n".join(lines) + "\n")
+    assert np.allclose(read_scan(path).z, z, atol=1e-11)
+
+
 def test_marker_csv_with_semicolons_and_decimal_commas_is_read(
     marker_csv: str, tracks: MarkerTracks, tmp_path: Path
 ) -> None:

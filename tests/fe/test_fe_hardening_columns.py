@@ -67,3 +67,21 @@ def test_swapped_columns_without_a_header_are_named(
     assert code == 2 and err.count("\n") == 1 and not seen
     assert "--hardening must start at plastic strain 0" in err
     assert "the columns look swapped" in err
+
+
+@pytest.mark.parametrize(
+    ("text", "why"),
+    [
+        ("Stress-strain curve of the flat\n305e6,0\n400e6,0.1\n", "a title, not a header"),
+        ("plastic_strain,stress_MPa\n0,305\n0.1,400\n", "the header's order and unit"),
+        ("stress_Pa;plastic_strain\n305e6,0\n400e6,0.1\n", "one cell: a title"),
+    ],
+)
+def test_only_a_two_cell_header_orders_the_columns_and_its_unit_applies(
+    tmp_path: Path, text: str, why: str
+) -> None:
+    from impactlab.cli.fe_hardening import read_hardening
+
+    path = tmp_path / "h.csv"
+    path.write_text(text)
+    assert read_hardening(path) == [(305e6, 0.0), (400e6, 0.1)], why

@@ -266,3 +266,8 @@ def test_a_comparison_row_reads_its_old_keys() -> None:
         assert row["contact_duration"] == row["duration"]
     with pytest.raises(KeyError):
         row["no-such-key"]
+    with pytest.warns(DeprecationWarning, match="'restitution' is renamed 'e'"):
+        assert row.get("restitution") == row["e"]  # .get and `in` read the old keys too
+    with pytest.warns(DeprecationWarning, match="'max_interference' is renamed 'delta_max'"):
+        assert "max_interference" in row
+    assert row.get("no-such-key", 7) == 7 and "no-such-key" not in row

@@ -45,8 +45,10 @@ def test_a_steep_slow_drop_of_a_slender_rod_has_not() -> None:
 
 def test_the_counts_stop_at_the_limit() -> None:
     """Twice and three times (64, 100) are both (128, 128): no check; refused before a run."""
-    with pytest.raises(ValueError, match=r"give the mode counts .* = \(128, 128\) twice"):
+    with pytest.raises(ValueError, match=r"= \(128, 128\) twice \(the counts stop at 128\)"):
         mode_convergence(FlexibleRod.paper(n_axial=64, n_bending=100), factors=(1, 2, 3))
+    with pytest.raises(ValueError, match=r"= \(8, 12\) twice; give factors"):  # rounding, no cap
+        mode_convergence(FlexibleRod.paper(), factors=(1, 1.01))
 
 
 @pytest.mark.parametrize(

@@ -121,3 +121,21 @@ def test_run_netcdf_refuses_a_users_file_before_the_study_runs(
     code, _, err = run_cli(monkeypatch, capsys, *args)
     assert code == 2 and err.startswith("error: --netcdf"), err
     assert not store.exists() and mine.read_text() == "my data\n"
+
+
+def test_a_flexible_study_with_a_loose_rtol_is_refused_when_built() -> None:
+    """A drop's rtol is at most 1e-5; a study of flexible rods asking for more is refused when
+    built, not run as cases that all fail with a status about their inputs."""
+    from impactlab.sweep.options import EngineOptions
+
+    with pytest.raises(ValueError, match=r"\[engine\] rtol 0\.0001 is too loose for a flexible"):
+        Study(
+            name="flex", grid={"angle": [0.8, 1.2]},
+            fixed={"vy": -1.0, "mu": 0.1, "body": "flexible_rod"},
+            engine=EngineOptions(rtol=1e-4), outputs=["e", "dent_depth"],
+        )  # fmt: skip
+    Study(
+        name="flex", grid={"angle": [0.8, 1.2]},
+        fixed={"vy": -1.0, "mu": 0.1, "body": "flexible_rod"},
+        engine=EngineOptions(rtol=1e-5), outputs=["e"],
+    )  # fmt: skip

@@ -9,9 +9,13 @@ from pathlib import Path
 from impactlab._validation import read_text_file
 from impactlab.cli._common import UserError
 
-#: Words of a header cell that name the stress column, and the plastic-strain column.
-_STRESS = re.compile(r"stress|sigma|\b[kmg]?pa\b", re.IGNORECASE)
+#: Words of a header cell that name the stress column (with its unit, if any), and the
+#: plastic-strain column.
+_STRESS = re.compile(r"stress|sigma|(?<![a-z])[kmg]?pa\b", re.IGNORECASE)
+_UNIT = re.compile(r"(?<![a-z])(?P<prefix>[kmg]?)pa\b", re.IGNORECASE)
 _STRAIN = re.compile(r"strain|eps", re.IGNORECASE)
+#: The stress unit a header may name, in Pa.
+_PREFIX = {"": 1.0, "k": 1e3, "m": 1e6, "g": 1e9}
 
 
 def _kind(cell: str) -> str | None:
@@ -21,22 +25,31 @@ def _kind(cell: str) -> str | None:
     return "stress" if _STRESS.search(cell) else None
 
 
-def _strain_first(header: list[str], path: Path) -> bool:
-    """Whether a header line names the columns (plastic strain, stress), in that order; a
-    UserError for a header that names both columns the same."""
-    kinds = [_kind(c) for c in header[:2]] + [None] * (2 - len(header[:2]))
+def _header(row: list[str], path: Path) -> tuple[bool, float] | None:
+    """(strain first, the stress unit in Pa) when ``row`` is a header of two cells that name
+    a column (``plastic_strain, stress_MPa``; one named cell names the other too); None for any
+    other first line (a title: the columns then are stress [Pa], plastic strain). A UserError
+    for a header that names both columns the same."""
+    if len(row) != 2:
+        return None
+    kinds = [_kind(c) for c in row]
     if kinds[0] is not None and kinds[0] == kinds[1]:
         raise UserError(
-            f"--hardening {path}: line 1 ({','.join(header)!r}) names both columns {kinds[0]}; "
+            f"--hardening {path}: line 1 ({','.join(row)!r}) names both columns {kinds[0]}; "
             "name them 'stress_Pa, plastic_strain' (or 'plastic_strain, stress_Pa')"
         )
-    return kinds[0] == "strain" or kinds[1] == "stress"
+    if kinds == [None, None]:
+        return None
+    strain_first = kinds[0] == "strain" or kinds[1] == "stress"
+    unit = _UNIT.search(row[1] if strain_first else row[0])
+    return strain_first, _PREFIX[unit["prefix"].lower()] if unit else 1.0
 
 
 def read_hardening(path: Path) -> list[tuple[float, float]]:
     """A hardening CSV as (true stress [Pa], true plastic strain) rows: two columns, stress
-    first, one row each; a header line that names the columns (``plastic_strain,
-    stress_Pa``) sets their order."""
+    [Pa] first, one row each; a first line of two cells that name the columns
+    (``plastic_strain, stress_MPa``) sets their order and the stress unit (Pa, kPa, MPa, GPa);
+    any other first line that is not numbers is a title."""
     if not path.is_file():
         raise FileNotFoundError(f"--hardening file not found: {path}")
     try:
@@ -44,7 +57,7 @@ def read_hardening(path: Path) -> list[tuple[float, float]]:
     except ValueError as exc:  # not UTF-8 text
         raise UserError(str(exc)) from None
     rows: list[tuple[float, float]] = []
-    swap = False
+    swap, scale = False, 1.0
     for i, row in enumerate(csv.reader(text.splitlines())):
         if not row or not "".join(row).strip():
             continue
@@ -52,7 +65,7 @@ def read_hardening(path: Path) -> list[tuple[float, float]]:
             a, b = float(row[0]), float(row[1])
         except (ValueError, IndexError):
             if i == 0:
-                swap = _strain_first(row, path)  # the header
+                swap, scale = _header(row, path) or (False, 1.0)  # a header or a title
                 continue
             order = (
                 "plastic_strain, stress_Pa' (the header's order)"
@@ -62,5 +75,6 @@ def read_hardening(path: Path) -> list[tuple[float, float]]:
             raise UserError(
                 f"--hardening {path}: line {i + 1} must be '{order}, got {','.join(row)!r}"
             ) from None
-        rows.append((b, a) if swap else (a, b))
+        stress, strain = (b, a) if swap else (a, b)
+        rows.append((stress * scale, strain))
     return rows

@@ -138,9 +138,10 @@ def mode_convergence(
     counts = [(_scaled(body.n_axial, k), _scaled(body.n_bending, k)) for k in f]
     for a, b in itertools.pairwise(counts):
         if a == b:
+            capped = f" (the counts stop at {MAX_MODES})" if MAX_MODES in a else ""
             raise ValueError(
-                f"factors {factors!r} give the mode counts (n_axial, n_bending) = {a} twice "
-                f"(the counts stop at {MAX_MODES}); give factors whose counts grow"
+                f"factors {factors!r} give the mode counts (n_axial, n_bending) = {a} twice"
+                f"{capped}; give factors whose counts grow"
             )
     kwargs.setdefault("history", False)
     results = tuple(

@@ -182,12 +182,29 @@ class RenamedKeys(dict[str, Any]):
     (:data:`RENAMED_IMPACT_FIELDS`) still read their value, with a DeprecationWarning; they
     are not among its keys (nor in its JSON)."""
 
+    def _renamed(self, key: object) -> str | None:
+        """The new name of an old key this record holds (with the DeprecationWarning), else
+        None."""
+        new = RENAMED_IMPACT_FIELDS.get(key) if isinstance(key, str) else None
+        if new is None or not dict.__contains__(self, new):
+            return None
+        warn_renamed(str(key), new, "FE impact record key")
+        return new
+
     def __missing__(self, key: str) -> Any:
-        new = RENAMED_IMPACT_FIELDS.get(key)
-        if new is None or new not in self:
+        new = self._renamed(key)
+        if new is None:
             raise KeyError(key)
-        warn_renamed(key, new, "FE impact record key")
-        return self[new]
+        return dict.__getitem__(self, new)
+
+    def get(self, key: str, default: Any = None) -> Any:  # type: ignore[override]
+        if dict.__contains__(self, key):
+            return dict.__getitem__(self, key)
+        new = self._renamed(key)
+        return default if new is None else dict.__getitem__(self, new)
+
+    def __contains__(self, key: object) -> bool:
+        return dict.__contains__(self, key) or self._renamed(key) is not None
 
 
 def contact_forces(text: str) -> tuple[np.ndarray, np.ndarray]:

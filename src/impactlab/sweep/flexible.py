@@ -44,7 +44,7 @@ from impactlab.contact import ContactModel
 from impactlab.dynamics.drop import DROP_FRICTION
 from impactlab.dynamics.drop_batch import DropBatchResult, input_status, simulate_drops
 from impactlab.dynamics.drop_checks import drop_rtol
-from impactlab.dynamics.input_checks import gravity_value
+from impactlab.dynamics.input_checks import DROP_RTOL_MAX, gravity_value
 from impactlab.dynamics.kernels import status as S
 from impactlab.dynamics.models import build_contact_model
 from impactlab.materials import Material
@@ -256,7 +256,8 @@ def check_flexible_study(args: Mapping[str, Any]) -> None:
     """The study-level checks of a flexible rod (``Study``'s fixed values, grid axes, sample and
     engine options):
     the flexible inputs need ``body = "flexible_rod"`` among the bodies, and a flexible rod
-    follows its rotation (no ``[engine] constant_angle = true``)."""
+    follows its rotation (no ``[engine] constant_angle = true``) and its ``rtol`` is at most
+    ``DROP_RTOL_MAX``."""
     bodies = {args["fixed"].get("body", "rod")}
     set_names = set(args["fixed"])
     for axis in args["grid"]:
@@ -270,6 +271,13 @@ def check_flexible_study(args: Mapping[str, Any]) -> None:
         raise ValueError(
             f"{', '.join(given)}: inputs of a flexible rod; set body = {FLEXIBLE_BODY!r} "
             f"(the study's bodies: {', '.join(sorted(bodies))})"
+        )
+    rtol = args["engine"].rtol
+    if FLEXIBLE_BODY in bodies and rtol is not None and float(rtol) > DROP_RTOL_MAX:
+        raise ValueError(
+            f"[engine] rtol {float(rtol):g} is too loose for a flexible rod's drop (allowed: up to "
+            f"{DROP_RTOL_MAX:g}; beyond it the integrator creates energy and contacts): lower it "
+            f"for body = {FLEXIBLE_BODY!r}"
         )
     if FLEXIBLE_BODY in bodies and args["engine"].constant_angle:
         raise ValueError(

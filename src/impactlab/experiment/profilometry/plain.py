@@ -62,12 +62,17 @@ def _load_npy(p: Path) -> np.ndarray:
 
 
 def _separator(lines: list[tuple[int, str]]) -> str | None:
-    """The cells' separator of a text matrix: a semicolon, else a tab, else a comma where any
-    line has one (a comma beside semicolons or tabs is a decimal comma); None: blanks."""
-    for sep in (";", "\t", ","):
-        if any(sep in line for _, line in lines):
+    """The cells' separator of a text matrix: a semicolon, else a tab, else a comma that every
+    line has (a comma beside semicolons or tabs is a decimal comma; a stray tab or semicolon on
+    a few lines of a comma file is not a separator); where none is on every line, the one on
+    most lines; None: blanks."""
+    seps = (";", "\t", ",")
+    counts = [sum(sep in line for _, line in lines) for sep in seps]
+    for sep, n in zip(seps, counts, strict=True):
+        if lines and n == len(lines):
             return sep
-    return None
+    best = max(range(len(seps)), key=lambda i: counts[i])  # ties: the order above
+    return seps[best] if counts[best] else None
 
 
 def _cells(line: str, sep: str | None) -> list[str]:
