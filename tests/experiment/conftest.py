@@ -118,9 +118,9 @@ def junk(data_dir: Path) -> dict[str, Path]:
 EXAMPLE_DATA = Path(__file__).resolve().parents[2] / "examples" / "data"
 
 
-@pytest.fixture(scope="session")
-def analysed_example() -> Any:
-    """``analyze`` of the docs' example drop and dent (12 um pixels, heights in um, +y up)."""
+def analyse_example(**kwargs: Any) -> Any:
+    """``analyze`` of the docs' example drop and dent (12 um pixels, heights in um, +y up), with
+    ``kwargs`` on top."""
     import tomllib
 
     from impactlab.experiment import analyze
@@ -133,4 +133,11 @@ def analysed_example() -> Any:
         height_unit="um",
         up="+y",
         geometry=MarkerGeometry.from_mapping(table),
+        **kwargs,
     )
+
+
+@pytest.fixture(scope="session")
+def analysed_example() -> Any:
+    """:func:`analyse_example` with the defaults."""
+    return analyse_example()

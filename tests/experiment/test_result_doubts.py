@@ -5,7 +5,6 @@ the warnings and the engine comparison."""
 from __future__ import annotations
 
 import json
-import tomllib
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -13,10 +12,9 @@ from typing import Any
 import pytest
 
 from impactlab.bodies import PAPER_ROD, Rod
-from impactlab.experiment import MarkerGeometry, analyze
 from impactlab.experiment.arguments import implausible_rod
 
-from .conftest import EXAMPLE_DATA
+from .conftest import EXAMPLE_DATA, analyse_example
 
 
 def _grams_as_kg() -> Rod:
@@ -25,17 +23,7 @@ def _grams_as_kg() -> Rod:
 
 
 def _example(**kwargs: Any) -> Any:
-    table = tomllib.loads((EXAMPLE_DATA / "markers.toml").read_text())["markers"]
-    return analyze(
-        EXAMPLE_DATA / "drop.csv",
-        EXAMPLE_DATA / "dent.npy",
-        pixel_size=12e-6,
-        height_unit="um",
-        up="+y",
-        geometry=MarkerGeometry.from_mapping(table),
-        n_samples=1000,
-        **kwargs,
-    )
+    return analyse_example(n_samples=1000, **kwargs)
 
 
 def test_a_rod_whose_mass_and_inertia_do_not_fit_is_named() -> None:
