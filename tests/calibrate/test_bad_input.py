@@ -275,3 +275,30 @@ def test_a_semicolon_separated_file_is_named(tmp_path) -> None:
     with pytest.raises(ValueError, match=r"line 1: the header is one column .*separates its "
                        r"columns with ';'; a measurements CSV"):  # fmt: skip
         read_measurements(path)
+
+
+def _rod_drop(tmp_path, extra_header="", extra_value=""):
+    path = tmp_path / "m.csv"
+    path.write_text(
+        f"label,body_material,angle [deg],vy [m/s],vx [m/s],mu,e,e_sigma{extra_header}\n"
+        f"d1,al-6061-t6,45,-1.4,0.0,0.2,0.6,0.05{extra_value}\n"
+    )
+    return path
+
+
+def test_rod_of_another_material_needs_its_mass(tmp_path):
+    params = {"flat_yield_strength": "loguniform(100 MPa, 1 GPa)"}
+    with pytest.raises(ValueError, match=r"drop 'd1': give the rod's mass .*al-6061-t6.*0.4607"):
+        calibrate(_rod_drop(tmp_path), params, steps=20, walkers=8, n_ppc=2)
+
+
+@pytest.mark.parametrize("how", ["column", "fixed"])
+def test_rod_mass_given_passes_the_check(tmp_path, how):
+    from impactlab.calibrate.input_checks import check_calibration_inputs
+    from impactlab.calibrate.measurements import read_measurements
+
+    path = _rod_drop(tmp_path, ",mass [kg]", ",0.16") if how == "column" else _rod_drop(tmp_path)
+    fixed = {} if how == "column" else {"mass": "0.16 kg"}
+    model = CandidateModel("ghaednia", "coulomb", fixed=fixed)
+    params = (parse_parameter("flat_yield_strength", "loguniform(100 MPa, 1 GPa)"),)
+    check_calibration_inputs(read_measurements(path), params, [model], [])

@@ -55,6 +55,15 @@ def test_fe_indent_refuses_a_flat_named_and_given_by_values(cli_main) -> None:
     assert "--flat and --flat-E/-nu/-sy both given" in err, err
 
 
+@pytest.mark.parametrize("option", ["--body", "--material"])
+def test_fe_indent_refuses_a_sphere_named_and_given_by_values(cli_main, option) -> None:
+    args = ("fe", "indent", "--max", "5 um", "--body-E", "200 GPa", "--body-nu", "0.3",
+            "--body-sy", "300 MPa")  # fmt: skip
+    code, _, err = cli_main(*args, option, "al-6061-t6")
+    assert code == 2
+    assert "--body/--material and --body-E/-nu/-sy both given" in err, err
+
+
 def test_fe_indent_help_says_a_bare_modulus_is_in_pa() -> None:
     cmd = typer.main.get_command(app).commands["fe"].commands["indent"]  # type: ignore[attr-defined]
     helps = {p.name: p.help or "" for p in cmd.params}

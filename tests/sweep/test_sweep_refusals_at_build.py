@@ -139,3 +139,19 @@ def test_a_flexible_study_with_a_loose_rtol_is_refused_when_built() -> None:
         fixed={"vy": -1.0, "mu": 0.1, "body": "flexible_rod"},
         engine=EngineOptions(rtol=1e-5), outputs=["e"],
     )  # fmt: skip
+
+
+@pytest.mark.parametrize("output", ["regime", "flags"])
+def test_a_study_file_asking_the_report_for_codes_is_refused_when_read(tmp_path, output) -> None:
+    from impactlab.sweep import UncertaintySpec, load_study
+
+    with pytest.raises(ValueError, match=f"uncertainty outputs: '{output}' holds .*not a quantity"):
+        UncertaintySpec(outputs=("e", output))
+    path = tmp_path / "mc.toml"
+    path.write_text(
+        '[study]\nname = "mc"\n[fixed]\nvy = "-1.41 m/s"\nmu = 0.2\n[sample]\nsize = 10\n'
+        'angle = { dist = "normal", mean = "20 deg", std = "1 deg" }\n'
+        f'[uncertainty]\noutputs = ["e", "{output}"]\n'
+    )
+    with pytest.raises(ValueError, match=f"'{output}' holds"):
+        load_study(path)

@@ -1,6 +1,7 @@
 """What ``calibrate`` checks before it samples: the free parameters, the sampler's settings,
 the drops' inputs against the parameters and models (mu given or free, one material property
-for drops on one material, an input not both fixed and free), which model uses which
+for drops on one material, an input not both fixed and free, a rod's mass where the paper's
+is not the rod's), which model uses which
 parameter and which fixed input changes none of a model's predictions."""
 
 from __future__ import annotations
@@ -13,15 +14,18 @@ from typing import Any
 
 import numpy as np
 
+from impactlab.bodies import PAPER_ROD
 from impactlab.calibrate.fixed import quantity_object
 from impactlab.calibrate.measurements import Measurements
 from impactlab.calibrate.models import CandidateModel, predict
 from impactlab.calibrate.priors import Parameter, parse_parameter
 from impactlab.calibrate.values import to_unit
 from impactlab.dynamics.input_checks import gravity_value
+from impactlab.materials import get_material
 from impactlab.sweep.dimensions import check_allowed
 from impactlab.sweep.engine import Evaluator
-from impactlab.sweep.inputs import MATERIAL_OVERRIDES
+from impactlab.sweep.inputs import INPUTS, MATERIAL_OVERRIDES
+from impactlab.sweep.material_inputs import CUSTOM
 from impactlab.sweep.options import EngineOptions
 
 __all__ = [
@@ -130,12 +134,46 @@ def check_calibration_inputs(
                 "in the measurements is not used"
             )
     _one_material(meas, params)
+    _rod_mass(meas, params, models)
     for m in models:
         both = sorted(free & set(m.fixed))
         if both:
             raise ValueError(
                 f"model {m.name!r} fixes {', '.join(both)}, which is also a free parameter: "
                 "remove it from the model's fixed inputs or from the parameters"
+            )
+
+
+def _rod_mass(
+    meas: Measurements, params: Sequence[Parameter], models: Sequence[CandidateModel]
+) -> None:
+    """ValueError for a rod drop of another material or length than the paper's whose mass no
+    one gives (the drop's ``mass``, a free ``mass`` or every model's fixed ``mass``): the
+    default mass is the paper's rod's (``Rod``, ``impactlab drop`` and sweeps refuse it too)."""
+    if "mass" in {p.name for p in params}:
+        return
+    unfixed = [m.name for m in models if "mass" not in m.fixed]
+    if not unfixed:
+        return
+    free_length = "length" in {p.name for p in params}
+    mass, length = meas.inputs.get("mass"), meas.inputs.get("length")
+    for i, (label, cat) in enumerate(zip(meas.labels, meas.categories, strict=True)):
+        if cat.get("body", "rod") == "sphere" or (mass is not None and np.isfinite(mass[i])):
+            continue
+        material = cat.get("body_material", INPUTS["body_material"].default)
+        why = ""
+        if free_length:
+            why = "length is a free parameter"
+        elif length is not None and np.isfinite(length[i]) and length[i] != PAPER_ROD.length:
+            why = f"length = {length[i]:g} m"
+        if material == CUSTOM or get_material(material) != PAPER_ROD.material:
+            why = f"body_material = {material!r}"
+        if why:
+            raise ValueError(
+                f"drop {label!r}: give the rod's mass (column 'mass', a free parameter mass or "
+                f"a model's fixed mass; missing for model(s) {', '.join(unfixed)}): {why}, and "
+                f"the default is the paper's rod's, {PAPER_ROD.mass:g} kg, that of its AISI 201 "
+                f"rod of length {PAPER_ROD.length:g} m"
             )
 
 

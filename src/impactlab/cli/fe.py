@@ -48,13 +48,16 @@ def _material(
 ) -> Material:
     """The library material ``name`` (or a material by values, ``impactlab.materials``), or
     the one --LABEL-E, --LABEL-nu and --LABEL-sy define whole: all three or none (a library
-    material is never partly changed); --flat given with them is refused (None: not given)."""
+    material is never partly changed); a name given with them is refused (None: not given,
+    the paper's: aisi-1010 for the flat, aisi-201 for the sphere)."""
     values = {"E": E, "nu": nu, "sy": sy}
     given = [k for k, v in values.items() if v is not None]
-    if name is not None and given and label == "flat":  # one of them would be ignored
-        raise UserError("--flat and --flat-E/-nu/-sy both given: they name the flat's material; "
-                        "give one (a material, or its values)")  # fmt: skip
-    name = "aisi-1010" if name is None else name  # the paper's flat
+    if name is not None and given:  # one of them would be ignored
+        named = "--body/--material" if label == "body" else f"--{label}"
+        raise UserError(f"{named} and --{label}-E/-nu/-sy both given: they name the {label}'s "
+                        "material; give one (a material, or its values)")  # fmt: skip
+    if name is None:  # the paper's flat and rod
+        name = "aisi-1010" if label == "flat" else "aisi-201"
     if not given:
         try:
             return get_material(name, "--body/--material" if label == "body" else f"--{label}")
@@ -260,8 +263,11 @@ def indent_cmd(
         help=f"Sphere radius, e.g. '5 mm' (bare number: m; at most {MAX_RADIUS:g} m).",
     ),
     sphere: str = typer.Option("elastic-plastic", help="rigid, elastic or elastic-plastic."),
-    body: str = typer.Option(
-        "aisi-201", "--body", "--material", help="The sphere's material preset (--material too)."
+    body: str | None = typer.Option(
+        None,
+        "--body",
+        "--material",
+        help="The sphere's material preset (--material too; default aisi-201).",
     ),
     flat: str | None = typer.Option(None, help="The flat's material preset (default aisi-1010)."),
     flat_E: str | None = typer.Option(

@@ -120,6 +120,13 @@ class EngineOptions:
         return {"gravity": self.gravity, "constant_angle": self.constant_angle, "rtol": self.rtol}
 
 
+#: Outputs whose values are codes, not quantities: the report refuses them (what they hold).
+NOT_SUMMARISED = {
+    "regime": "category codes (each case's regime: slip, stick, ...; count them instead)",
+    "flags": "bitmasks of result flags (the report counts the flagged cases: n_flagged)",
+}
+
+
 @dataclass(frozen=True)
 class UncertaintySpec:
     """What the uncertainty report summarises (see ``impactlab.sweep.uncertainty``)."""
@@ -131,6 +138,13 @@ class UncertaintySpec:
         outs = tuple(OUTPUT_ALIASES.get(o, o) for o in self.outputs)
         if not outs:
             raise ValueError("uncertainty outputs must not be empty")
+        codes = next((o for o in outs if o in NOT_SUMMARISED), None)
+        if codes is not None:
+            raise ValueError(
+                f"uncertainty outputs: {codes!r} holds {NOT_SUMMARISED[codes]}, not a quantity: "
+                "a mean, a spread or a sensitivity of it means nothing; summarise quantities "
+                "(e, delta_p, duration, ...)"
+            )
         object.__setattr__(self, "outputs", outs)
         ps = tuple(float(p) for p in self.percentiles)
         for p in ps:

@@ -36,6 +36,7 @@ from impactlab.sweep.inputs import OUTPUT_ALIASES, output_spec
 from impactlab.sweep.options import (
     DEFAULT_PERCENTILES,
     DEFAULT_UNCERTAINTY_OUTPUTS,
+    NOT_SUMMARISED,
     UncertaintySpec,
 )
 from impactlab.sweep.status import STATUS_NOT_RUN
@@ -91,13 +92,6 @@ class UncertaintyReport:
             "summary": self.summary.reset_index().to_dict(orient="records"),
             "sensitivity": self.sensitivity.to_dict(orient="records"),
         }
-
-
-#: Outputs whose values are codes, not quantities: the report refuses them (what they hold).
-NOT_SUMMARISED = {
-    "regime": "category codes (each case's regime: slip, stick, ...; count them instead)",
-    "flags": "bitmasks of result flags (the report counts the flagged cases: n_flagged)",
-}
 
 
 def summarised(ds: Any) -> list[str]:
