@@ -123,6 +123,14 @@ def test_random_sample_against_tight_engine() -> None:
     assert err < CONTRACT, (err, key, case)
 
 
+def test_partial_slip_sample_against_tight_engine() -> None:
+    """20 seeded random impacts with ``partial_slip`` (its own sample: the model is the costly
+    one) at the default tolerance against the engine at rtol = 1e-11."""
+    cases = [(b, {**kw, "friction": "partial_slip"}) for b, kw in sample_cases(20, seed=17)]
+    err, case, key = worst_error(cases)
+    assert 0.0 < err < CONTRACT, (err, key, case)
+
+
 @pytest.mark.parametrize("k", [0, 1, 2, 3])
 def test_sample_cases_against_solve_ivp(k: int) -> None:
     """A few cases of the sample against scipy at rtol = 1e-11: the tight engine is a valid

@@ -106,8 +106,9 @@ def verify_hertz(
         """
     )
     text = """
-A rigid steel sphere (AISI 201, radius R, I = 2/5 m R^2) hits a flat normally at speed v with
-the elastic `hertz` law, no gravity and no friction. Hertz theory gives the peak penetration
+An elastic steel sphere (AISI 201, radius R, I = 2/5 m R^2) hits a flat normally at speed v
+with the elastic `hertz` law, no gravity and no friction; both bodies deform (E* of the pair,
+1/E* = (1 - nu_s^2)/E_s + (1 - nu_f^2)/E_f). Hertz theory gives the peak penetration
 delta_m = (15 m v^2 / (16 E* sqrt(R)))^(2/5), the peak force F_m = 4/3 E* sqrt(R) delta_m^(3/2)
 and the duration T = (4/5) B(2/5, 1/2) delta_m / v = 2.9432 delta_m / v (Johnson, *Contact
 Mechanics* (1985) Sec. 11.4, doi:10.1017/CBO9781139171731); the impact is elastic, e = e* = 1.

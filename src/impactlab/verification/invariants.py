@@ -163,8 +163,8 @@ to turn) for every law and friction model. Checked:
 - 0 <= e* <= 1 + {tol:g} (energetic COR, Stronge) and 0 <= delta_p <= delta_max;
 - 0 <= e <= 1 + {tol:g} for the dissipative laws. For the elastic `hertz` law e* = 1 and the
   kinematic e exceeds 1 slightly because the rod turns during the contact and changes its lever
-  arms (with the lever arms frozen e = 1 within 1e-7, see the rigid-body limit above), so only
-  e >= 0 is checked there.
+  arms (with the lever arms frozen e = 1 within 1e-6, the rigid-body limit's tolerance above),
+  so only e >= 0 is checked there.
 
 With the paper's `impulse_ratio` friction (Eq. 7) a slip reversal (mu above mu_c) keeps
 F_t = mu F_n pushing after the tip has stopped and creates energy, a documented limitation of
