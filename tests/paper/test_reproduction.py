@@ -83,8 +83,13 @@ def analytic_run(tmp_path_factory):
 def test_analytic_part(analytic_run):
     res = analytic_run
     exp = res.experimental.set_index("angle [deg]")
-    assert abs(exp.loc[20, "T rel. diff"]) <= 0.05
-    assert abs(exp.loc[45, "T rel. diff"]) <= 0.05
+    # the T checks are decided over the rounding of the printed numbers, not at the point
+    # (-4.5 % lies within 5 %, yet -5.7 % to -3.3 % straddles it): the comparison says so
+    comp = res.comparison
+    checks = comp[(comp["model"] == "experiment") & (comp["quantity"] == "T [ms]")]
+    checks = checks[checks["published"].notna()].set_index("angle [deg]")
+    assert checks.loc[20, "verdict"] == "UNDECIDED" and checks.loc[20, "reproduced"] is None
+    assert checks.loc[45, "verdict"] == "PASS" and checks.loc[45, "reproduced"] is True
     assert res.report_md.is_file() and res.report_html.is_file()
     assert (res.out_dir / R.MARKER).is_file()
     # published rows are not self-consistent: F T is ~2.4 times the allowed impulse

@@ -40,9 +40,11 @@ def reproduce_cmd(
         typer.echo(extrapolation_line(res.simulations))
     if no_simulate:
         typer.echo("simulations skipped (--no-simulate): analytic part only")
+    # the analytic part compiles nothing: the engine's first compilation only with simulations
+    first = "" if no_simulate else "; a first run's includes compiling the engine"
     typer.echo(
         f"report: {res.report_md} and {res.report_html} (reproduced in "
-        f"{res.elapsed_s:.1f} s after the imports; a first run's includes compiling the engine)"
+        f"{res.elapsed_s:.1f} s after the imports{first})"
     )
 
 

@@ -1,6 +1,8 @@
 """The comparison: every published number (and impactlab's own Table 4 for 70 deg) next to
-impactlab's, with the relative difference, the tolerance, whether it is reproduced and, if not,
-why; and the wide side-by-side table of one angle.
+impactlab's, with the relative difference, the tolerance, the verdict of the pass/fail check
+(the experimental T: PASS, FAIL or UNDECIDED over the rounding of the printed numbers), whether
+it is reproduced and, if not, why, and the caveat of an estimate; and the wide side-by-side
+table of one angle.
 """
 
 from __future__ import annotations
@@ -13,10 +15,14 @@ import pandas as pd
 from impactlab.paper import data as D
 from impactlab.paper.quantities import (
     QUANTS,
+    REPRODUCED_BY_VERDICT,
     TOL_EXPERIMENT_F,
     TOL_EXPERIMENT_T,
     TOL_SIMULATED,
+    DurationCheck,
     Simulations,
+    caveat,
+    duration_checks,
     flag_columns,
     rel_diff,
     sim_value,
@@ -48,11 +54,16 @@ def comparison_table(
     consistency: pd.DataFrame,
 ) -> pd.DataFrame:
     """Long table: every published number (and our Table 4) next to impactlab's, with the
-    relative difference, the tolerance, whether it is reproduced and, if not, why."""
+    relative difference, the tolerance, the ``verdict`` of the pass/fail check (the
+    experimental T at 20 and 45 deg: PASS, FAIL or UNDECIDED, as the report's Section 1 and
+    the reproduce command print it; empty for a number compared, not checked), whether it is
+    reproduced (the check: True only for PASS, None for UNDECIDED; a compared number: within
+    its tolerance) and, if not, why, and the ``caveat`` of an estimate (the 70 deg T and F)."""
     rows: list[dict[str, Any]] = []
     ctx = Reasons(experimental, consistency, sims)
+    checks = {c.angle_deg: c for c in duration_checks(experimental)}
     for ang in D.ANGLES_DEG:
-        rows += _experiment_rows(ang, experimental, ctx)
+        rows += _experiment_rows(ang, experimental, ctx, checks.get(ang))
         for law in D.PAPER_LAWS:
             for fr in FRICTIONS:
                 res = sims.get((ang, law, fr)) if sims else None
@@ -60,9 +71,12 @@ def comparison_table(
     return pd.DataFrame(rows)
 
 
-def _experiment_rows(ang: int, experimental: pd.DataFrame, ctx: Reasons) -> list[dict[str, Any]]:
+def _experiment_rows(
+    ang: int, experimental: pd.DataFrame, ctx: Reasons, check: DurationCheck | None
+) -> list[dict[str, Any]]:
     """The experimental row of one angle: the measured inputs (Sec. 5.1.3) as published values,
-    not compared; T and F by the inversion against the published ones."""
+    not compared; T and F by the inversion against the published ones, T decided by ``check``
+    (its verdict over the rounding of the printed numbers; None: no published T)."""
     key = RowKey(_TABLES[ang], ang, "experiment", "-")
     x = D.EXPERIMENTS[ang]
     exp = experimental.set_index("angle [deg]").loc[ang]
@@ -76,8 +90,22 @@ def _experiment_rows(ang: int, experimental: pd.DataFrame, ctx: Reasons) -> list
             rows.append(_row(key, q, label, scale, values, 0.0, INPUT_NOTE, ctx) | _NO_FLAGS)
             continue
         p = getattr(pub, q) if pub is not None else None
-        rows.append(_row(key, q, label, scale, (p, inverted[q]), tol, None, ctx) | _NO_FLAGS)
+        row = _row(key, q, label, scale, (p, inverted[q]), tol, None, ctx) | _NO_FLAGS
+        if q == "T" and check is not None and row["rel. diff"] is not None:
+            row |= _checked(check, ctx.reason(key, q))
+        rows.append(row | {"caveat": caveat(ang, q)})
     return rows
+
+
+def _checked(check: DurationCheck, why: str) -> dict[str, Any]:
+    """The columns of the checked T: its verdict, reproduced only for PASS (None: UNDECIDED)
+    and the reason giving the range over the printed digits (``why`` added unless PASS)."""
+    reason = check.reason() + ("" if check.ok else f"; {why}")
+    return {
+        "verdict": check.verdict,
+        "reproduced": REPRODUCED_BY_VERDICT[check.verdict],
+        "reason": reason,
+    }
 
 
 def _simulated_rows(ang: int, law: str, fr: str, res: Any, ctx: Reasons) -> list[dict[str, Any]]:
@@ -145,15 +173,18 @@ def _row(
         "impactlab": o,
         "rel. diff": rd,
         "tolerance": tol if fixed_note is None else None,
+        "verdict": "",
         "reproduced": ok,
         "reason": reason,
+        "caveat": "",
     }
 
 
 def side_by_side(comparison: pd.DataFrame, angle: int) -> pd.DataFrame:
     """Wide table for one angle: per model/friction the simulation's flags, then the published
     value, impactlab's and the relative difference for each quantity (one decimal of a percent;
-    ``input`` for a measured input of the experiment, not compared)."""
+    ``input`` for a measured input of the experiment, not compared), and the ``caveat`` of
+    the row's estimates (``T [ms], F [N]: an estimate ...``; ``""``: none)."""
     sub = comparison[comparison["angle [deg]"] == angle]
     out = []
     for (src, model, fr), g in sub.groupby(["source", "model", "friction"], sort=False):
@@ -177,5 +208,17 @@ def side_by_side(comparison: pd.DataFrame, angle: int) -> pd.DataFrame:
                 or (isinstance(r["rel. diff"], float) and math.isnan(r["rel. diff"]))
                 else f"{r['rel. diff']:+.1%}"  # one decimal: read against a 5 % tolerance
             )
+        row["caveat"] = _caveats(g)
         out.append(row)
     return pd.DataFrame(out)
+
+
+def _caveats(g: pd.DataFrame) -> str:
+    """The caveats of one row of the wide table, each once, after the quantities it concerns."""
+    if "caveat" not in g:
+        return ""
+    words: dict[str, list[str]] = {}
+    for label, text in zip(g["quantity"], g["caveat"].fillna(""), strict=True):
+        if text:
+            words.setdefault(str(text), []).append(str(label))
+    return "; ".join(f"{', '.join(labels)}: {text}" for text, labels in words.items())

@@ -317,12 +317,20 @@ DISCREPANCIES: tuple[Discrepancy, ...] = (
         "unit vector typo: the drop is vertical (j)",
     ),
     Discrepancy(
+        "exp-45-e",
+        "Sec. 5.1.3",
+        "e (45 deg)",
+        MappingProxyType({"printed e": 0.49, "v_Of / |v_i|": 1.08 / 2.18}),
+        "1.08/2.18 = 0.4954 rounds to 0.50; over the rounding of v_Of and v_i it lies in 0.492 "
+        "to 0.499, meeting the printed 0.49 (0.485 to 0.495) only at its edge",
+    ),
+    Discrepancy(
         "exp-70-e",
         "Sec. 5.1.3",
         "e (70 deg)",
         MappingProxyType({"printed e": 0.05, "v_Of / |v_i|": 0.19 / 3.45}),
-        "0.19/3.45 = 0.055; consistent with the printed 0.05 only within the rounding of "
-        "v_Of (0.185 to 0.195 m/s gives 0.054 to 0.057)",
+        "0.19/3.45 = 0.055; over the rounding of v_Of and v_i it lies in 0.0535 to 0.0566, "
+        "meeting the printed 0.05 (0.045 to 0.055) only at its edge",
     ),
     Discrepancy(
         "table-headers",

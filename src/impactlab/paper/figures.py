@@ -114,7 +114,8 @@ def figure_forces(
 
 def figure_dent(path: Path, res: Any) -> Path:
     """Fig. 4: the simulated dent (20 deg, 1.41 m/s, Ghaednia) from ``result.dent()``; the
-    title says when the impact left the law's verified range (``extrapolation_label``)."""
+    title says, on a line of its own (the figure is narrow beside its colorbar), when the
+    impact left the law's verified range (``extrapolation_label``)."""
     plt = pyplot()
     dent = res.dent()
     x, y, z = np.asarray(dent.x), np.asarray(dent.y), np.asarray(dent.height)  # z[y, x]
@@ -124,8 +125,10 @@ def figure_dent(path: Path, res: Any) -> Path:
     fig.colorbar(im, ax=ax, label="height [um]")
     ax.set_xlabel("x [um]")
     ax.set_ylabel("y, across the impact plane [um]")
+    mark = extrapolation_label(res)
     ax.set_title(
-        "Fig. 4: simulated dent, 20 deg, 1.41 m/s, Ghaednia et al." + extrapolation_label(res)
+        "Fig. 4: simulated dent, 20 deg, 1.41 m/s, Ghaednia et al."
+        + (f"\nbeyond the law's verified range{mark}" if mark else "")
     )
     return _save(plt, fig, path)
 

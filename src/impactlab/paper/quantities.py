@@ -27,6 +27,16 @@ TOL_EXPERIMENT_F = 0.15
 #: cannot tell).
 PASS, FAIL, UNDECIDED = "PASS", "FAIL", "UNDECIDED"
 
+#: What each verdict says, after it in the ``reason`` of a checked row.
+VERDICT_WORDS = {
+    PASS: "within the tolerance for every value the printed numbers stand for",
+    FAIL: "outside the tolerance for every value the printed numbers stand for",
+    UNDECIDED: "the printed digits cannot tell whether it is within the tolerance",
+}
+#: ``reproduced`` of a checked row by its verdict: True only for PASS, None (neither) for
+#: UNDECIDED.
+REPRODUCED_BY_VERDICT: dict[str, bool | None] = {PASS: True, FAIL: False, UNDECIDED: None}
+
 #: Half a unit of the last printed digit of the published T [ms] (two decimals: 1.40 ms is
 #: 1.395-1.405 ms).
 T_ROUNDING_MS = 0.005
@@ -50,6 +60,37 @@ def verdict(low: float, high: float, tol: float = TOL_EXPERIMENT_T) -> str:
     if high < -tol or low > tol:
         return FAIL
     return UNDECIDED
+
+
+#: Half a unit of the last printed digit of the measured velocities [m/s] and of e (two
+#: decimals: v_Of = 1.08 m/s stands for 1.075-1.085 m/s).
+PRINTED_HALF_UNIT = 0.005
+
+
+def rebound_ratio_range(v_rebound: float, v_i: float) -> tuple[float, float]:
+    """(lowest, highest) v_Of / |v_i| over the rounding of the printed ``v_rebound`` (v_Of) and
+    ``v_i`` [m/s] (``PRINTED_HALF_UNIT`` each)."""
+    h = PRINTED_HALF_UNIT
+    return (v_rebound - h) / (abs(v_i) + h), (v_rebound + h) / (abs(v_i) - h)
+
+
+#: Caveats of impactlab's own numbers that rest on a method applied outside its assumption,
+#: by angle [deg]: (the quantities concerned, ``QUANTS`` keys; the words). At 70 deg Eq. 12
+#: assumes sliding throughout, while the paper reads the dent as sliding, then sticking.
+ESTIMATE_CAVEATS: Mapping[int, tuple[tuple[str, ...], str]] = {
+    70: (
+        ("T", "F"),
+        "an estimate outside Eq. 12's assumption: Eq. 12 assumes sliding throughout, the paper "
+        "reads this dent (Fig. 8) as sliding, then sticking or rolling; F follows from this T",
+    ),
+}
+
+
+def caveat(angle: int, q: str) -> str:
+    """The caveat of the experimental ``q`` (a ``QUANTS`` key) at ``angle`` [deg]; ``""``:
+    none."""
+    quantities, words = ESTIMATE_CAVEATS.get(angle, ((), ""))
+    return words if q in quantities else ""
 
 
 #: The column of a dent depth in the paper's sign (negative, as its tables print it); impactlab
@@ -124,6 +165,17 @@ class DurationCheck:
     def verdict(self) -> str:
         """``PASS``, ``FAIL`` or ``UNDECIDED`` over the rounding of the printed numbers."""
         return verdict(*self.range)
+
+    def reason(self) -> str:
+        """The check in words, as the ``reason`` of its row of the comparison: ``-5.7% to -3.3%
+        from the published T over the rounding of the printed inputs and of the published T
+        (tolerance 5%): UNDECIDED, ...``."""
+        low, high = self.range
+        return (
+            f"{low:+.1%} to {high:+.1%} from the published T over the rounding of the printed "
+            f"inputs and of the published T (tolerance {TOL_EXPERIMENT_T:.0%}): {self.verdict}, "
+            + VERDICT_WORDS[self.verdict]
+        )
 
     def text(self) -> str:
         """``20 deg: T = 4.106 ms vs published 4.30 ms (-4.5%; -5.7% to -3.3% over the printed

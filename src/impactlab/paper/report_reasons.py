@@ -8,7 +8,7 @@ from typing import Any
 
 import pandas as pd
 
-from impactlab.paper.quantities import EXTRAPOLATED_MARK
+from impactlab.paper.quantities import EXTRAPOLATED_MARK, UNDECIDED
 from impactlab.paper.report import Block, Bullets, Heading, Para, Table, fmt, fmt_pct
 
 __all__ = ["not_reproduced"]
@@ -67,7 +67,8 @@ def _explained(bad: pd.DataFrame) -> tuple[pd.DataFrame, list[str]]:
 
 def not_reproduced(comp: pd.DataFrame) -> list[Block]:
     """Section 5: the table of the published numbers not reproduced, each explanation once,
-    and the experimental forces within tolerance that still need a note."""
+    the experimental forces within tolerance that still need a note, and the checks the
+    printed digits leave UNDECIDED (neither reproduced nor not)."""
     B: list[Block] = [Heading("5. Every published number not reproduced, and why")]
     bad = comp[comp["reproduced"] == False]  # noqa: E712
     if bad.empty:
@@ -77,7 +78,8 @@ def not_reproduced(comp: pd.DataFrame) -> list[Block]:
         B += [
             Para(
                 "Tolerances: 15 % for the simulated rows (required for e and delta_p; "
-                "applied to L_s, T and F as well), 5 % for the experimental T, 15 % for "
+                "applied to L_s, T and F as well), 5 % for the experimental T (a check, "
+                "decided over the rounding of the printed numbers: Section 1), 15 % for "
                 "the experimental F. Identical numbers of the two friction models are "
                 "listed once. The column 'why' names the explanation below the table; "
                 "each row's own numbers are in the column 'reason' of comparison.csv."
@@ -96,6 +98,15 @@ def not_reproduced(comp: pd.DataFrame) -> list[Block]:
                 f"Within tolerance but worth a note: {r['angle [deg]']} deg experimental F, "
                 f"published {fmt(r['published'])} N, impactlab {fmt(r['impactlab'])} N "
                 f"({fmt_pct(r['rel. diff'])}): {r['reason']}."
+            )
+        )
+    undecided = comp[comp["verdict"] == UNDECIDED] if "verdict" in comp else comp.iloc[:0]
+    for _, r in undecided.iterrows():
+        B.append(
+            Para(
+                f"Neither reproduced nor not ({UNDECIDED}, Section 1): {r['angle [deg]']} deg "
+                f"experimental {r['quantity']}, published {fmt(r['published'])}, impactlab "
+                f"{fmt(r['impactlab'])} ({fmt_pct(r['rel. diff'])}): {r['reason']}."
             )
         )
     return B

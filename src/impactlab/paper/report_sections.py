@@ -16,9 +16,21 @@ from impactlab.paper import data as D
 from impactlab.paper.analytic_rows import EXCEEDS, WITHIN_ROUNDING
 from impactlab.paper.calibration_report import calibration_section, shipped_calibration
 from impactlab.paper.physics_report import physics_section
-from impactlab.paper.quantities import PAPER_DEPTH, PAPER_SIGN_NOTE
+from impactlab.paper.quantities import (
+    PAPER_DEPTH,
+    PAPER_SIGN_NOTE,
+    PRINTED_HALF_UNIT,
+    rebound_ratio_range,
+    reference_of,
+)
 from impactlab.paper.report import Block, Code, Figure, Heading, Para, Table
-from impactlab.paper.report_acceptance import acceptance
+from impactlab.paper.report_acceptance import (
+    CALIBRATION_SECTION,
+    EQ12_SECTION,
+    PHYSICS_SECTION,
+    RUN_SECTION,
+    acceptance,
+)
 from impactlab.paper.report_reasons import not_reproduced
 from impactlab.paper.report_simulated import _marked, simulated
 
@@ -51,7 +63,8 @@ class ReportData:
 
 
 def build_report(d: ReportData) -> list[Block]:
-    """Every section of the report, in order."""
+    """Every section of the report, in order; without the simulations those that need them
+    are left out and the others keep their numbers (Section 1 says which are skipped)."""
     return [
         *acceptance(d),
         *_inputs(),
@@ -63,8 +76,12 @@ def build_report(d: ReportData) -> list[Block]:
         *_inertia(d),
         *_figures(d),
         *_discrepancies(),
-        *physics_section(d.physics, d.figures, 11),
-        *([] if d.physics is None else calibration_section(shipped_calibration(), 12)),
+        *physics_section(d.physics, d.figures, PHYSICS_SECTION),
+        *(
+            []
+            if d.physics is None
+            else calibration_section(shipped_calibration(), CALIBRATION_SECTION)
+        ),
         *_run(d),
     ]
 
@@ -98,8 +115,54 @@ def _inputs() -> list[Block]:
         ),
         Table(table1, "Table 1 (corrected)"),
         Table(experiments, "Experiments (Sec. 5.1.3)"),
+        Para(_rebound_text()),
         Para(PAPER_SIGN_NOTE),
     ]
+
+
+def _rebound_text() -> str:
+    """v_Of/|v_i| of each experiment against its printed e, over the rounding of the printed
+    velocities and of e (``PRINTED_HALF_UNIT`` each)."""
+    h = PRINTED_HALF_UNIT
+    parts = []
+    for ang, x in D.EXPERIMENTS.items():
+        ratio = x.e_from_velocities
+        lo, hi = rebound_ratio_range(x.v_rebound, x.v_i)
+        e_lo, e_hi = x.e - h, x.e + h
+        head = f"{ang} deg: {x.v_rebound:.2f}/{abs(x.v_i):.2f} = {ratio:.4g}"
+        if round(ratio, 2) == round(x.e, 2):
+            parts.append(f"{head}, the printed {x.e:.2f}")
+            continue
+        head += f" (it rounds to {ratio:.2f}, not the printed {x.e:.2f})"
+        span = f"{lo:.3g}-{hi:.3g} over the rounding of v_Of and v_i"
+        if lo <= e_hi and hi >= e_lo:
+            parts.append(
+                f"{head}; {span}, agreeing with the printed {x.e:.2f} ({e_lo:.3f}-{e_hi:.3f}) "
+                f"only at its edge ({max(lo, e_lo):.3g}-{min(hi, e_hi):.3g})"
+            )
+        else:
+            parts.append(f"{head}; {span}, outside the printed {x.e:.2f} ({e_lo:.3f}-{e_hi:.3f})")
+    return (
+        "The column v_Of/|v_i| against the printed e (velocities and e printed with two "
+        f"decimals, each standing for +- {h:g}): " + "; ".join(parts) + ". impactlab uses "
+        "the printed e (docs/paper/errata.md)."
+    )
+
+
+def _dent_mark(simulations: pd.DataFrame | None) -> str:
+    """``; extrapolated: 178 delta_c (LAW_EXTRAPOLATED)`` when Fig. 4's impact (20 deg,
+    Ghaednia, impulse-ratio friction) left its law's verified range; ``""`` otherwise."""
+    if simulations is None or simulations.empty:
+        return ""
+    row = simulations[
+        (simulations["angle [deg]"] == 20)
+        & (simulations["law"] == "ghaednia")
+        & (simulations["friction"] == "impulse_ratio")
+    ]
+    if row.empty or "LAW_EXTRAPOLATED" not in str(row.iloc[0]["flags"]):
+        return ""
+    ratio = float(row.iloc[0]["max_delta_ratio"])
+    return f"; extrapolated: {ratio:.0f} {reference_of('ghaednia')} (LAW_EXTRAPOLATED)"
 
 
 def _experimental(d: ReportData) -> list[Block]:
@@ -168,7 +231,7 @@ def _eq12(d: ReportData) -> list[Block]:
     if d.eq12 is None:
         return []
     return [
-        Heading("7. The inversion applied to impactlab's own simulations"),
+        Heading(f"{EQ12_SECTION}. The inversion applied to impactlab's own simulations"),
         Para(
             "T recovered by Eq. 12 from each simulated dent (delta_p, L_s) and e, against "
             "the simulated duration. The engine includes gravity and lets the rod turn, "
@@ -206,7 +269,8 @@ def _figures(d: ReportData) -> list[Block]:
         B.append(
             Figure(
                 figs["dent"],
-                "Fig. 4 regenerated: simulated dent, 20 deg, 1.41 m/s, Ghaednia et al.",
+                "Fig. 4 regenerated: simulated dent, 20 deg, 1.41 m/s, Ghaednia et al."
+                + _dent_mark(d.simulations),
             )
         )
     B.extend(
@@ -237,7 +301,7 @@ def _discrepancies() -> list[Block]:
 
 def _run(d: ReportData) -> list[Block]:
     return [
-        Heading(f"{11 if d.physics is None else 13}. Run"),
+        Heading(f"{RUN_SECTION}. Run"),
         Code(
             f"impactlab {d.version}, Python {platform.python_version()}, "
             f"{platform.platform()}\nelapsed: {d.elapsed:.1f} s"
