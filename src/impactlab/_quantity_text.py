@@ -127,6 +127,10 @@ def characters(name: str, text: str, shown: str, unit: str) -> None:
         )
 
 
+#: The named number a quantity text may hold instead of digits (``"pi/4 rad"``).
+_PI = re.compile(r"(?<![A-Za-z_])pi(?![A-Za-z_])|\u03c0")
+
+
 def first_number(text: str) -> re.Match[str] | None:
     """The first number of ``text`` that is not the exponent of a unit (the 2 of ``m^2``, of
     ``kg m**2``, of ``s^-2``); None when it holds none (``"m/s^2"``, ``"pi rad"``)."""
@@ -137,12 +141,14 @@ def first_number(text: str) -> re.Match[str] | None:
 def written(name: str, text: str, shown: str, q: Any, unit: str) -> None:
     """ValueError naming ``name`` unless pint read the number written in ``text`` (the user's
     ``shown``; its reciprocal after a slash, ``"pi/4 rad"``): a power computes another
-    (``"(2)^2 m"`` is 4 m, ``"10\u207b\u00b3 m"`` 0.001 m). A text with no number (a unit
-    alone, ``"m^2"``) is 1 of it: nothing to check; a NaN or infinity is left to the caller's
-    finiteness check."""
+    (``"(2)^2 m"`` is 4 m, ``"10\u207b\u00b3 m"`` 0.001 m), and a text with no number (a unit
+    alone, ``" deg"``, ``"-m/s"``: pint reads 1 of it, a value left out) unless it names pi
+    (``"pi rad"``); a NaN or infinity is left to the caller's finiteness check."""
     if not math.isfinite(float(q.magnitude)):
         return
     first = first_number(text)
+    if first is None and not _PI.search(text):
+        raise ValueError(f"{name}: {shown!r} holds a unit but no number; {write_one(unit)}")
     m, x = abs(float(q.magnitude)), float(first.group()) if first else 1.0
     over = first is not None and text[: first.start()].rstrip().endswith("/")  # pi/4: 1/4
     if first and not math.isclose(m, 1.0 / x if over and x else x, rel_tol=1e-12):

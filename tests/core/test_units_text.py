@@ -280,11 +280,16 @@ def test_digit_groups_are_one_number(text, unit, expected):
         ("s^-2", "1/s**2"),
         ("m^1.5", "m**1.5"),
         ("N/m^2", "Pa"),
-        ("1/s^2", "1/s**2"),
     ],
 )
-def test_a_unit_alone_is_one_of_it(text, unit):
-    assert to_si(text, unit) == 1.0
+def test_a_unit_alone_is_refused_not_read_as_one(text, unit):
+    with pytest.raises(ValueError, match="holds a unit but no number"):
+        to_si(text, unit)
+    assert to_si(f"1 {text}", unit) == 1.0
+
+
+def test_a_one_over_a_unit_is_its_number():
+    assert to_si("1/s^2", "1/s**2") == 1.0
 
 
 def test_the_exponent_of_a_unit_is_never_the_number():
@@ -293,3 +298,20 @@ def test_the_exponent_of_a_unit_is_never_the_number():
     for text in ("1_000 m 2", "(2)^2 m^2", "2^2 m^2"):
         with pytest.raises(ValueError, match=re.escape(f"x: {text!r} holds more than one number")):
             to_si(text, "m" if text.endswith(" 2") else "m**2", name="x")
+
+
+@pytest.mark.parametrize(
+    ("text", "unit"),
+    [(" deg", "rad"), ("deg", "rad"), ("-m/s", "m/s"), ("mm", "m"), ("GPa", "Pa"), ("kg", "kg")],
+)
+def test_a_unit_without_its_number_is_refused(text, unit):
+    """pint reads a unit alone as 1 of it: an empty shell variable ("$A deg") would run at 1."""
+    with pytest.raises(ValueError, match="holds a unit but no number"):
+        to_si(text, unit)
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"), [("pi rad", math.pi), ("pi/4 rad", math.pi / 4), ("\u03c0 rad", math.pi)]
+)
+def test_pi_stands_for_a_number(text, expected):
+    assert to_si(text, "rad") == pytest.approx(expected, rel=1e-12)

@@ -208,11 +208,11 @@ def check_sigma_fits(name: str, sigma: float, low: float, high: float, unit: str
 
 
 def check_plausible(meas: Mapping[str, Measured], length: float, tip_radius: float) -> None:
-    """ValueError for what is impossible for this rod (a dent shallower than ``MIN_DENT_DEPTH``
-    or deeper than the tip radius, a sliding length longer than the rod);
-    ImplausibleInputWarning for a dent shallower than ``PLAUSIBLE_DENT_DEPTH`` or deeper than
-    ``PLAUSIBLE_DENT_RATIO`` R, a |v_i| below ``PLAUSIBLE_MIN_SPEED``, or a speed (v_i, dv_cy,
-    |vt_in|) above ``PLAUSIBLE_SPEED``."""
+    """ValueError for what is impossible for this rod (a dent or a sliding length shorter than
+    ``MIN_DENT_DEPTH``, a dent deeper than the tip radius, a sliding length longer than the
+    rod); ImplausibleInputWarning for a dent or a sliding length shorter than
+    ``PLAUSIBLE_DENT_DEPTH``, a dent deeper than ``PLAUSIBLE_DENT_RATIO`` R, a |v_i| below
+    ``PLAUSIBLE_MIN_SPEED``, or a speed (v_i, dv_cy, |vt_in|) above ``PLAUSIBLE_SPEED``."""
     dp, ls = meas["delta_p"].value, meas["sliding_length"].value
     if dp < MIN_DENT_DEPTH:
         raise ValueError(
@@ -229,6 +229,18 @@ def check_plausible(meas: Mapping[str, Measured], length: float, tip_radius: flo
         raise ValueError(
             f"delta_p = {dp!r} m is deeper than the rod's tip radius ({tip_radius!r} m): a dent "
             "cannot be deeper than the sphere that made it; check the units (SI: m)"
+        )
+    if ls < MIN_DENT_DEPTH:
+        raise ValueError(
+            f"sliding_length = {ls!r} m is below {MIN_DENT_DEPTH * 1e9:g} nm, finer than any "
+            "profilometer resolves: a slide that leaves no measurable mark cannot be inverted "
+            "(below about 1 um, T no longer depends on it); check the value and its unit (SI: m)"
+        )
+    if ls < PLAUSIBLE_DENT_DEPTH:
+        warn_implausible(
+            f"sliding_length = {ls * 1e9:.4g} nm is shorter than {PLAUSIBLE_DENT_DEPTH * 1e6:g} "
+            "um, implausible for the mark of a drop (below about 1 um T no longer depends on "
+            "it); check the value and its unit (SI: m)"
         )
     if ls > length:
         raise ValueError(
