@@ -16,8 +16,11 @@ from scipy.stats import norm
 
 from impactlab.paper.calibration_checks import (
     BAND,
+    CLIPPED,
     EXACT,
     MONTE_CARLO,
+    band_note,
+    band_text,
     checks_table,
     mixture_band,
     ppc_rows,
@@ -119,16 +122,47 @@ def section():
 
 def test_the_rigid_rods_band_is_exact(section):
     """The rigid rod has no free parameter: its band is best fit +- 1.645 sigma (the sampled
-    one of the 30 draws was [-166, 113] um for the 20 deg scar, [0.385, 0.469] for e)."""
+    one of the 30 draws was [-166, 113] um for the 20 deg scar, [0.385, 0.469] for e), a
+    length's clipped at 0 (the 20 and 45 deg scars: [-208, 252] and [-170, 372] um)."""
     _, checks = section
     rigid = checks[checks["configuration"] == "rigid rod"].set_index(["drop", "quantity"])
-    assert (rigid["band"] == EXACT).all()
-    assert rigid.loc[("20 deg", "scar_length [um]"), BAND] == "[-208, 252]"
+    assert rigid["band"].str.startswith(EXACT).all()
+    assert rigid.loc[("20 deg", "scar_length [um]"), BAND] == "[0, 252]"
+    assert rigid.loc[("45 deg", "scar_length [um]"), BAND] == "[0, 372]"
     assert rigid.loc[("20 deg", "e"), BAND] == "[0.373, 0.472]"
     for _, r in rigid.iterrows():
         lo, hi = (float(x) for x in r[BAND].strip("[]").split(", "))
-        assert lo == pytest.approx(r["best fit"] - Z95 * r["sigma"], rel=2e-3, abs=0.5)
+        low = r["best fit"] - Z95 * r["sigma"]
+        assert (r["band"] == f"{EXACT}, {CLIPPED}") is (low < 0)
+        assert lo == pytest.approx(max(low, 0.0), rel=2e-3, abs=0.5)
         assert hi == pytest.approx(r["best fit"] + Z95 * r["sigma"], rel=2e-3, abs=0.5)
+
+
+def test_no_band_of_a_length_reaches_below_zero(section):
+    """A scar length or a dent depth is >= 0: every band shown starts at 0 or above, the
+    clipped ones are marked and the note says why (the Gaussian measurement model's choice)."""
+    blocks, checks = section
+    lengths = checks[checks["quantity"].str.endswith("[um]")]
+    lows = [float(b.strip("[]").split(", ")[0]) for b in lengths[BAND]]
+    assert min(lows) >= 0.0
+    clipped = checks[checks["band"].str.endswith(CLIPPED)]
+    assert list(clipped["configuration"]) == ["rigid rod", "rigid rod"]
+    text = " ".join(to_markdown(blocks, "t").split())
+    assert "the Gaussian measurement model, the likelihood's choice" in text
+    assert "(rigid rod 20 deg scar_length [um], rigid rod 45 deg scar_length [um])" in text
+    assert "the band shown is that of the length a scan would read, max(0, x)" in text
+
+
+def test_a_clipped_band_is_said_only_where_there_is_one():
+    assert band_text(-208.3, 252.4, "scar_length [um]") == ("[0, 252]", True)
+    assert band_text(-0.02, 0.1, "e") == ("[-0.02, 0.1]", False)  # e is no length
+    assert band_text(1.0, 2.0, "delta_p") == ("[1, 2]", False)
+    sampled = _row("flexible rod", "delta_p [um]", 22.0, 5.0, "[-3.2, 9.1]")
+    out = checks_table([sampled], set(), PAPER_SIGMAS)
+    assert out.iloc[0][BAND] == "[0, 9.1]" and out.iloc[0]["band"] == f"{MONTE_CARLO}, {CLIPPED}"
+    assert "flexible rod 20 deg delta_p [um]" in band_note(out, 30)
+    kept = checks_table([_row("flexible rod", "e", 0.5, 0.45, "[0.4, 0.5]")], set(), PAPER_SIGMAS)
+    assert "cannot be negative" not in band_note(kept, 30)
 
 
 def test_the_flexible_bands_are_the_shipped_ones_and_said_so(section):

@@ -276,7 +276,9 @@ PHYSICS_ROWS = {
     "measured; T: Eq. 12 inversion of the measured dent": MEASURED,
     "rigid rod (`simulate`)": "rigid rod",
     "flexible rod (`FlexibleRod.paper()`, `simulate_drop`)": "flexible rod",
-    "flexible + Cowper-Symonds flat": "flexible rod + rate-dependent flat",
+    "flexible + Cowper-Symonds flat": (
+        "flexible rod + rate-dependent flat (Cowper-Symonds, upper estimate)"
+    ),
     "flexible + Johnson-Cook flat": (
         "flexible rod + rate-dependent flat (Johnson-Cook, lower estimate)"
     ),
@@ -318,7 +320,12 @@ def test_physics_text(page, run, sims):
 
     measured = depth(MEASURED)
     rate = [
-        a / m for a, m in zip(depth("flexible rod + rate-dependent flat"), measured, strict=True)
+        a / m
+        for a, m in zip(
+            depth("flexible rod + rate-dependent flat (Cowper-Symonds, upper estimate)"),
+            measured,
+            strict=True,
+        )
     ]
     hard = depth("flexible rod + FE-tabulated law (hardening flat)")
     text = page.reproduction.replace("\n", " ")

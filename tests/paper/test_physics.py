@@ -16,15 +16,18 @@ from impactlab.paper.analytic_rows import experimental_rows
 from impactlab.paper.physics import (
     CONFIGURATIONS,
     CONTACT_TIME_COLUMN,
+    DELTA_C_COLUMN,
     E_COLUMN,
     FE_TABULATED,
     MEASURED,
+    MU_COLUMN,
     RATE_LOWER,
     ROWS,
     SCAR_COLUMN,
     SEQUENCE_COLUMN,
     T_COLUMN,
     TABLE_ROWS,
+    apparent_mu,
     eq12_duration,
     physics_inputs,
     physics_table,
@@ -76,7 +79,7 @@ def test_flexible_rows_have_several_contacts(table):
     assert (flex["contacts"] > 1).all()
     rigid = table[table["configuration"] == "rigid rod"]
     assert (rigid["contacts"] == 1).all()
-    rated = table[table["configuration"] == "flexible rod + rate-dependent flat"]
+    rated = table[table["configuration"] == CONFIGURATIONS[2].name]
     assert (rated["rate factor"] > 1.0).all()
     lower = table[table["configuration"] == RATE_LOWER.name]
     assert (lower["contacts"] > 1).all() and (lower["rate factor"] > 1.0).all()
@@ -134,6 +137,12 @@ def test_table_values_are_the_results(runs, table):
                 assert row[E_COLUMN] == pytest.approx(res.e + g_T, rel=1e-12)
             assert row["flags"] == flag_names(res)
             assert row["max_delta_ratio"] == pytest.approx(res.max_delta_ratio)
+            delta_max = row[DELTA_C_COLUMN] * row["max_delta_ratio"]
+            assert delta_max == pytest.approx(res.delta_max * 1e6, rel=1e-9)
+            assert row[MU_COLUMN] == apparent_mu(res)
+            # Eq. 28: the tangential over the normal impulse (gravity removed)
+            mu = abs(res.tangential_impulse) / res.normal_impulse
+            assert row[MU_COLUMN] == pytest.approx(mu, rel=1e-6)
             dent, T = (
                 (res.dent_depth, res.sequence_duration)
                 if cfg.flexible

@@ -19,6 +19,7 @@ from impactlab.paper.physics import (
     E_COLUMN,
     FE_TABULATED,
     MEASURED,
+    MU_COLUMN,
     RATE_LOWER,
     SCAR_COLUMN,
     SEQUENCE_COLUMN,
@@ -68,11 +69,23 @@ CURRENT: dict[str, list[tuple[float | None, ...]]] = {
 }
 
 
+#: Eq. 28's mu of each row, 20 / 45 / 70 deg (the measured row: the measured mu).
+MU: dict[str, tuple[float, float, float]] = {
+    MEASURED: (0.2, 0.13, 0.1),
+    RIGID: (0.2, 0.13, 0.1),
+    FLEX: (0.1671, 0.1253, 0.0793),
+    RATE: (0.1659, 0.1184, 0.0923),
+    LOWER: (0.1663, 0.1241, 0.079),
+    FE_TABULATED.name: (0.1665, 0.1271, 0.0773),
+}
+
+
 def _table(changes: dict[tuple[str, int, str], float] | None = None) -> pd.DataFrame:
     """The comparison table of :data:`CURRENT`, with ``changes`` (configuration, angle, column:
     value) applied."""
     rows = [
         {"configuration": c, "angle [deg]": a, **dict(zip(COLUMNS, r, strict=True)), "flags": ""}
+        | {MU_COLUMN: MU[c][i]}
         for i, a in enumerate((20, 45, 70))
         for c, values in CURRENT.items()
         for r in [values[i]]

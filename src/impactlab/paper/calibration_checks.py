@@ -7,7 +7,10 @@ uncertainty sigma. It is computed exactly (no noise sampled) from the draws' pre
 that carries them (``draws``), or a configuration without a free parameter (the rigid rod), whose
 every draw predicts its best fit, so that its band is best fit +- 1.645 sigma. A row without
 them (the shipped summary keeps only quantiles) keeps the band the calibration sampled, one
-noise value per draw (Monte Carlo), and says so.
+noise value per draw (Monte Carlo), and says so. A length (the dent depth, the scar) cannot be
+negative, but the Gaussian measurement model gives it some probability below zero: the band
+shown is that of the length a scan would read, max(0, x), so a negative end is clipped at 0
+and the row says so (the summary keeps the quantiles as computed).
 """
 
 from __future__ import annotations
@@ -22,9 +25,12 @@ from scipy.optimize import brentq
 
 __all__ = [
     "BAND",
+    "CLIPPED",
     "EXACT",
+    "LENGTHS",
     "MONTE_CARLO",
     "band_note",
+    "band_text",
     "checks_table",
     "mixture_band",
     "ppc_rows",
@@ -34,6 +40,10 @@ __all__ = [
 BAND = "90 % band (with noise)"
 EXACT = "exact"
 MONTE_CARLO = "sampled (Monte Carlo)"
+#: How a band clipped at 0 is marked in column ``band``, after how it was obtained.
+CLIPPED = "clipped at 0"
+#: The quantities that cannot be negative (lengths): their band is that of max(0, x).
+LENGTHS = ("delta_p", "scar_length")
 
 #: The central interval [probability].
 _LEVELS = (0.05, 0.95)
@@ -55,6 +65,22 @@ def mixture_band(means: Sequence[float], sigma: float) -> tuple[float, float]:
 
     a, b = float(mu.min()) - 10 * sigma, float(mu.max()) + 10 * sigma
     lo, hi = (float(brentq(cdf, a, b, args=(p,), xtol=1e-12 * sigma)) for p in _LEVELS)
+    return lo, hi
+
+
+def band_text(lo: float, hi: float, quantity: str) -> tuple[str, bool]:
+    """The band ``[lo, hi]`` of ``quantity`` (its name, with or without the unit) as shown,
+    and whether it was clipped: a length's (:data:`LENGTHS`) is that of max(0, x), its
+    negative ends raised to 0."""
+    clip = str(quantity).split(" [")[0] in LENGTHS and lo < 0.0
+    if clip:
+        lo, hi = 0.0, max(hi, 0.0)
+    return f"[{lo:.3g}, {hi:.3g}]", clip
+
+
+def _ends(band: str) -> tuple[float, float]:
+    """The two ends of a band written ``[lo, hi]``."""
+    lo, hi = (float(x) for x in band.strip("[]").split(","))
     return lo, hi
 
 
@@ -100,15 +126,16 @@ def checks_table(
             sigma = sigmas[q] if q == "e" else sigmas[q] * abs(float(r["measured"]))
         if draws is None and r["configuration"] in fixed:
             draws = [r["best fit"]]
-        band = r[BAND]
-        if draws is not None:
-            lo, hi = mixture_band(draws, float(sigma))
-            band = f"[{lo:.3g}, {hi:.3g}]"
+        band, how = r[BAND], EXACT if draws is not None else MONTE_CARLO
+        lo, hi = mixture_band(draws, float(sigma)) if draws is not None else _ends(band)
+        text, clipped = band_text(lo, hi, r["quantity"])
+        if draws is not None or clipped:
+            band = text
         shown = {k: r[k] for k in ("configuration", "drop", "quantity", "measured")}
         out.append(
             shown
             | {"sigma": sigma, "best fit": r["best fit"], "predicted median": r["predicted median"]}
-            | {BAND: band, "band": EXACT if draws is not None else MONTE_CARLO}
+            | {BAND: band, "band": f"{how}, {CLIPPED}" if clipped else how}
             | {"z (best fit)": r["z (best fit)"]}
         )
     return pd.DataFrame(out)
@@ -117,8 +144,10 @@ def checks_table(
 def band_note(checks: pd.DataFrame, n_draws: int | None) -> str:
     """How the predictive band of each row was obtained."""
     draws = f"the {n_draws} posterior draws" if n_draws else "the posterior draws"
-    sampled = sorted(set(checks.loc[checks["band"] == MONTE_CARLO, "configuration"]))
-    exact = sorted(set(checks.loc[checks["band"] == EXACT, "configuration"]))
+    how = checks["band"].astype(str)
+    sampled = sorted(set(checks.loc[how.str.startswith(MONTE_CARLO), "configuration"]))
+    exact = sorted(set(checks.loc[how.str.startswith(EXACT), "configuration"]))
+    clipped = checks[how.str.endswith(CLIPPED)]
     text = (
         "90 % band (with noise): the 5 % and 95 % quantiles of the predictive distribution, "
         f"the mixture over {draws} of a normal around each draw's prediction with the "
@@ -134,6 +163,14 @@ def band_note(checks: pd.DataFrame, n_draws: int | None) -> str:
         text += (
             f"For {', '.join(sampled)}, the summary keeps only the band the calibration "
             f"sampled, one noise value for each of {draws} (Monte Carlo), not the draws' "
-            "predictions: those bands carry that sampling error."
+            "predictions: those bands carry that sampling error. "
         )
-    return text
+    if not clipped.empty:
+        which = ", ".join(f"{r.configuration} {r.drop} {r.quantity}" for r in clipped.itertuples())
+        text += (
+            "A length cannot be negative, but the Gaussian measurement model, the likelihood's "
+            "choice, gives it some probability below zero: where a band's end fell below 0 "
+            f"({which}), the band shown is that of the length a scan would read, max(0, x), "
+            f"its end raised to 0 (column 'band': '{CLIPPED}'); the likelihood is unchanged."
+        )
+    return text.rstrip()

@@ -4,11 +4,12 @@ this steel: Cowper-Symonds, an upper estimate, and Johnson-Cook, a lower one) an
 rod with the FE-tabulated law of a strain-hardening flat, side by side with the measurements.
 Every row's T is Eq. 12's inversion of its dent and scar, the measured rows' as the
 simulated ones' (like for like), beside the simulated sequence's duration. Nothing is
-tuned: the paper's rod, drop velocities and measured mu (as the Coulomb coefficient), the
-Ghaednia law with impactlab's defaults, the AISI 1010 flat, gravity on, no damping (the
-FE-tabulated row: the law tabulated from the FE indentation of the paper's pair with AISI
-1010's own strain hardening, ``impactlab.materials.hardening.AISI_1010_HARDENING``, derived
-from SAE J1397's cold-drawn tensile properties; ``impactlab.fe.tabulated.hardened_law``). The model:
+tuned: the paper's rod, drop velocities and measured mu (as the Coulomb coefficient; each
+row's own Eq. 28 mu, which a flexible rod does not return, beside it), the Ghaednia law with
+impactlab's defaults, the AISI 1010 flat, gravity on, no damping (the FE-tabulated row: the
+law tabulated from the FE indentation of the paper's pair with AISI 1010's own strain
+hardening, ``impactlab.materials.hardening.AISI_1010_HARDENING``, derived from SAE J1397's
+cold-drawn tensile properties; ``impactlab.fe.tabulated.hardened_law``). The model:
 docs/flexible.md. Which configuration explains the drops best, with the posterior of the rod's
 modal damping ratio, is the calibration of :mod:`impactlab.paper.calibration_report` (the
 report's next section; it ranks :data:`ROWS`, not the Johnson-Cook row).
@@ -23,6 +24,7 @@ from typing import Any
 
 import pandas as pd
 
+from impactlab.analytic.closed_forms import friction_from_velocities
 from impactlab.bodies import PAPER_ROD, FlexibleRod
 from impactlab.contact import ContactModel
 from impactlab.dynamics import simulate
@@ -38,12 +40,15 @@ from impactlab.paper.simulations import paper_angles
 __all__ = [
     "CONFIGURATIONS",
     "CONTACT_TIME_COLUMN",
+    "DELTA_C_COLUMN",
     "E_COLUMN",
     "E_DEFINITION",
     "FE_TABULATED",
     "HARDENED_LAW",
     "LAW",
+    "LIMIT_COLUMN",
     "MEASURED",
+    "MU_COLUMN",
     "RATE_LOWER",
     "ROWS",
     "SCAR_COLUMN",
@@ -51,6 +56,7 @@ __all__ = [
     "TABLE_ROWS",
     "T_COLUMN",
     "PhysicsConfig",
+    "apparent_mu",
     "eq12_duration",
     "physics_inputs",
     "physics_table",
@@ -85,6 +91,17 @@ T_COLUMN = "T [ms]"
 SEQUENCE_COLUMN = "sequence duration [ms]"
 #: The column of a simulation's time in contact: the sum of its contacts' durations.
 CONTACT_TIME_COLUMN = "time in contact [ms]"
+#: The column of the paper's Eq. 28 mu = |dv_x| / (dv_y + g T) on the rod's rigid-body
+#: velocities: the measured mu (the measured row) beside each simulated drop's own
+#: (:func:`apparent_mu`), whose input, the local Coulomb coefficient, is the measured one.
+MU_COLUMN = "mu_apparent (Eq. 28)"
+#: The column of the row's own reference interference of ``max_delta_ratio``: Jackson-Green's
+#: delta_c (paper Eq. 15) of its pair, the rate-dependent rows' with the rate-raised S_y [um].
+DELTA_C_COLUMN = "delta_c [um]"
+#: The column of the upper end of the row's law's range in ``max_delta_ratio``'s unit (the
+#: row's own delta_c): verified against FE (``fitted_delta_ratio_max``), for the FE-tabulated
+#: law the end of its curves, beyond which it is refused.
+LIMIT_COLUMN = "range limit [delta_c]"
 
 
 @dataclass(frozen=True)
@@ -116,7 +133,7 @@ CONFIGURATIONS: tuple[PhysicsConfig, ...] = (
         "modes, zeta = 0): the whole contact sequence",
     ),
     PhysicsConfig(
-        "flexible rod + rate-dependent flat",
+        "flexible rod + rate-dependent flat (Cowper-Symonds, upper estimate)",
         True,
         "cowper-symonds",
         "as 'flexible rod', the flat's yield strength raised by the self-consistent "
@@ -215,6 +232,7 @@ def _measured_row(angle_deg: int, T_ms: float) -> dict[str, Any]:
         "delta_p [um]": abs(x.delta_p) * 1e6,
         SCAR_COLUMN: abs(x.L_s) * 1e6,
         T_COLUMN: T_ms,
+        MU_COLUMN: x.mu,
         SEQUENCE_COLUMN: None,
         CONTACT_TIME_COLUMN: None,
         "contacts": None,
@@ -223,6 +241,8 @@ def _measured_row(angle_deg: int, T_ms: float) -> dict[str, Any]:
         "vibration energy [J]": None,
         "flags": "",
         "max_delta_ratio": None,
+        DELTA_C_COLUMN: None,
+        LIMIT_COLUMN: None,
     }
 
 
@@ -273,6 +293,7 @@ def _simulated_row(cfg: PhysicsConfig, angle_deg: int, res: Any) -> dict[str, An
         "delta_p [um]": abs(dent) * 1e6,
         SCAR_COLUMN: abs(scar) * 1e6,
         T_COLUMN: eq12_duration(angle_deg, e, dent, scar) * 1e3,
+        MU_COLUMN: apparent_mu(res),
         SEQUENCE_COLUMN: duration * 1e3,
         CONTACT_TIME_COLUMN: touching * 1e3,
         "contacts": res.n_contacts if flexible else 1,
@@ -280,7 +301,30 @@ def _simulated_row(cfg: PhysicsConfig, angle_deg: int, res: Any) -> dict[str, An
         "rate factor": res.rate_factor if flexible else 1.0,
         "vibration energy [J]": res.vibration_energy if flexible else 0.0,
         **flag_columns(res),
+        DELTA_C_COLUMN: res.delta_max / res.max_delta_ratio * 1e6,
+        LIMIT_COLUMN: _range_limit(cfg, res),
     }
+
+
+def apparent_mu(res: Any) -> float:
+    """The paper's Eq. 28 on a simulated drop's rigid-body velocities, gravity removed:
+    |dv_x| / (dv_y + g T), the tangential over the normal impulse (``DropResult.mu_apparent``;
+    a rigid impact's from its velocities and contact duration T [s])."""
+    if hasattr(res, "mu_apparent"):
+        return float(res.mu_apparent)
+    (vx0, vy0), (vx1, vy1) = res.velocity_in, res.velocity_out
+    return float(friction_from_velocities(vx1 - vx0, vy1 - vy0, duration=res.duration, g=G0))
+
+
+def _range_limit(cfg: PhysicsConfig, res: Any) -> float:
+    """The upper end of the row's law's range in delta_max / delta_c (the row's own delta_c):
+    ``fitted_delta_ratio_max``; the FE-tabulated law, which has no fitted range, is refused
+    beyond its curves' end: that end."""
+    limit = float(res.fitted_delta_ratio_max)
+    if cfg.law == HARDENED_LAW:
+        model = _hardened_model(FlexibleRod.paper().tip_radius)
+        limit = min(limit, model.max_interference / model.critical_interference)
+    return limit
 
 
 def physics_table(
@@ -291,7 +335,9 @@ def physics_table(
     """The comparison: per angle the measured row (:data:`MEASURED`: T from the dent, Eq. 12,
     as in the experimental rows) and one row per configuration; display units (um, ms, N, J);
     e in :data:`E_COLUMN`, the mark's extent in :data:`SCAR_COLUMN`, Eq. 12's T of every row
-    in :data:`T_COLUMN`, the simulated sequence's in :data:`SEQUENCE_COLUMN`."""
+    in :data:`T_COLUMN`, the simulated sequence's in :data:`SEQUENCE_COLUMN`, Eq. 28's mu in
+    :data:`MU_COLUMN`; ``max_delta_ratio`` beside its row's delta_c (:data:`DELTA_C_COLUMN`) and
+    its law's range in the same ratio (:data:`LIMIT_COLUMN`)."""
     T_exp = experimental.set_index("angle [deg]")["T [ms]"]  # Eq. 12 of the measured drop
     cfgs = tuple(configurations)
     rows: list[dict[str, Any]] = []

@@ -13,11 +13,14 @@ import pandas as pd
 from impactlab.paper.calibration_report import PAPER_SIGMAS
 from impactlab.paper.physics import (
     CONTACT_TIME_COLUMN,
+    DELTA_C_COLUMN,
     E_DEFINITION,
     FE_TABULATED,
     FRICTION,
     LAW,
+    LIMIT_COLUMN,
     MEASURED,
+    MU_COLUMN,
     SEQUENCE_COLUMN,
     TABLE_ROWS,
 )
@@ -34,6 +37,7 @@ from impactlab.paper.physics_words import (
     closeness,
     dent_effect,
     drop_flag,
+    friction,
     present,
     rings,
     sentence,
@@ -145,7 +149,7 @@ def _findings(table: pd.DataFrame) -> list[Block]:
         blocks = [Para(intro), Bullets(explained)]
     if not_explained:
         blocks += [Para("What they do not explain:"), Bullets(not_explained)]
-    return [*blocks, *_fe_row(table)]
+    return [*blocks, *_fe_row(table), Para(friction(table))]
 
 
 def _sticking(table: pd.DataFrame) -> str:
@@ -280,7 +284,8 @@ def physics_section(
         Heading(f"{number}. Can physics explain the experiment?"),
         Para(
             "Nothing tuned: every configuration uses the paper's rod, flat (AISI 1010), drop "
-            f"velocity and measured mu (as the local coefficient of the {FRICTION!r} model), the "
+            f"velocity and measured mu (as the local coefficient of the {FRICTION!r} model; "
+            f"{MU_COLUMN}: the measured mu beside each row's own, below), the "
             f"{LAW!r} law with "
             "impactlab's defaults (the last row: the FE-tabulated law instead), gravity on and "
             "no structural damping (the next section "
@@ -297,14 +302,21 @@ def physics_section(
             "tip left, as a scan measures it (the measured L_s): |contact_travel| for "
             "the rigid rod, not the signed slip (sliding_length, Section 4's L_s [um]), and "
             "scar_length (x-extent of the tip's contact path over all contacts) for the "
-            f"flexible rod; {E}: {E_DEFINITION} (not the impact's e of Section 4). The model "
-            "and its verification: docs/flexible.md."
+            f"flexible rod; {E}: {E_DEFINITION} (not the impact's e of Section 4). "
+            "max_delta_ratio is delta_max over the row's own delta_c (Jackson-Green's, Eq. 15, "
+            f"{DELTA_C_COLUMN}; on a rate-dependent flat that of the rate-raised S_y, larger as "
+            "S_y^2), so it does not compare across the rows; "
+            f"{LIMIT_COLUMN} is the upper end of the row's law's range in the same ratio (for "
+            f"the {LAW!r} law its range verified against FE at the pair's E*/S_y; for the "
+            "FE-tabulated law the end of its curves, beyond which it is refused), which "
+            "LAW_EXTRAPOLATED marks as exceeded. The model and its verification: "
+            "docs/flexible.md."
         ),
         Bullets(configs),
         Table(
             _shown(table),
-            "Measured vs rigid, flexible, flexible + rate-dependent (upper and lower estimate) "
-            "and flexible + FE-tabulated (hardening flat)",
+            "Measured vs rigid, flexible, flexible + rate-dependent (Cowper-Symonds, upper "
+            "estimate; Johnson-Cook, lower) and flexible + FE-tabulated (hardening flat)",
             digits=4,
         ),
         *_findings(table),
