@@ -9,8 +9,9 @@ The most used names are importable from the top level::
 
 Subpackages: ``contact`` (laws), ``dynamics`` (engine), ``analytic`` (the paper's inversion),
 ``experiment`` (raw files), ``sweep`` (studies), ``calibrate`` (parameters and models from
-measured drops), ``paper`` (data and reproduction), ``fe`` (the finite-element reference); the
-heavier ones are imported on first use (``il.sweep``), so ``import impactlab`` stays quick.
+measured drops), ``explain`` (which physics explains measured drops), ``paper`` (data and
+reproduction), ``fe`` (the finite-element reference); the heavier ones are imported on first
+use (``il.sweep``), so ``import impactlab`` stays quick.
 """
 
 # first: numba's cache folder and the compile notice, before any compiled function is defined
@@ -34,7 +35,15 @@ from impactlab.dynamics import (
 from impactlab.materials import AISI_201, AISI_1010, ContactPair, Material, get_material
 
 #: Subpackages imported on first use as attributes (``il.sweep``), not by ``import impactlab``.
-_LAZY_SUBPACKAGES = ("calibrate", "experiment", "fe", "paper", "sweep", "verification")
+_LAZY_SUBPACKAGES = (
+    "calibrate",
+    "experiment",
+    "explain",
+    "fe",
+    "paper",
+    "sweep",
+    "verification",
+)
 
 
 def __getattr__(name: str) -> object:

@@ -1,6 +1,6 @@
 """One name per quantity: every public parameter of the top-level API and of the contact laws'
 API (``impactlab.contact``: ``register_law``, ``IndentationCurves``, ...) and of the FE
-reference (``impactlab.fe``), every result field
+reference (``impactlab.fe``) and of ``impactlab.explain``, every result field
 (the ``to_dict`` keys of the result classes, a batch's columns) and every history column is a
 name of docs/glossary.md (first column of its tables) or of the schema (``impactlab.schema``:
 the impact's and the drop's fields and history columns)."""
@@ -18,6 +18,7 @@ import pytest
 
 import impactlab
 import impactlab.contact
+import impactlab.explain
 import impactlab.fe
 from impactlab import schema
 from impactlab.analytic.result import InversionResult
@@ -43,7 +44,7 @@ KNOWN = glossary_names() | set(schema.FIELDS)
 
 
 #: The public modules whose callables' parameters are checked.
-MODULES = (impactlab, impactlab.contact, impactlab.fe)
+MODULES = (impactlab, impactlab.contact, impactlab.explain, impactlab.fe)
 
 
 def _public_parameters() -> dict[str, str]:

@@ -1,0 +1,127 @@
+"""``explain``: which physics explains measured drops. Every drop of a measurements file runs
+in each configuration (the rigid rod, the flexible rod, the flexible rod on a rate-dependent
+flat; ``explain.configurations``) with nothing tuned, and each measured quantity is set beside
+its prediction, made as the calibration makes it (``explain.runs``)."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Iterable
+from pathlib import Path
+
+from impactlab.calibrate.measurements import Measurements, read_measurements
+from impactlab.contact import get_law
+from impactlab.explain.configurations import Configuration, configurations, rate_not_applicable
+from impactlab.explain.result import Explanation
+from impactlab.explain.runs import Outcome, drop_flat, one_drop, run_on_drop
+from impactlab.explain.tables import comparison_table, summary_table
+
+__all__ = ["FRICTION", "SPHERE_NOT_RUN", "explain"]
+
+#: The friction model of every configuration, with each drop's measured mu as its coefficient.
+FRICTION = "coulomb"
+#: Why a sphere's drop runs the rigid configuration only.
+SPHERE_NOT_RUN = (
+    "not run: the drop is a sphere's; the flexible rod and its rate-dependent flat model a "
+    "rod's drop (the rigid configuration is the sphere's impact)"
+)
+
+Progress = Callable[[str, int, int], None]
+
+
+def _measurements(measurements: str | Path | Measurements) -> Measurements:
+    if isinstance(measurements, Measurements):
+        meas = measurements
+    elif isinstance(measurements, str | Path):
+        meas = read_measurements(measurements)
+    else:
+        raise ValueError(
+            "measurements must be a measurements file (CSV or TOML, docs/calibrate.md) or a "
+            f"Measurements, got {type(measurements).__name__}"
+        )
+    mu = meas.inputs["mu"]
+    missing = [meas.labels[d] for d in range(meas.n_drops) if not math.isfinite(mu[d])]
+    if missing:
+        raise ValueError(
+            f"drop(s) {', '.join(map(repr, missing))} give no mu: explain runs every drop with "
+            "its measured mu as the Coulomb coefficient (nothing tuned); add a mu column"
+        )
+    if meas.n_values == 0:
+        raise ValueError("the measurements hold no measured value: nothing to explain")
+    return meas
+
+
+def _not_run(config: Configuration, meas: Measurements, d: int) -> str | None:
+    """Why ``config`` does not run on drop ``d`` (None: it runs)."""
+    if not config.flexible:
+        return None
+    if meas.categories[d]["body"] == "sphere":
+        return SPHERE_NOT_RUN
+    return rate_not_applicable(config, drop_flat(meas, d))
+
+
+def _notes(meas: Measurements, outcomes: dict[tuple[str, str], Outcome]) -> tuple[str, ...]:
+    """One line per reason a configuration did not run, naming its drops, and the runs'
+    warnings (each once, with the drops and configurations that gave it)."""
+    why: dict[str, list[str]] = {}
+    said: dict[str, list[str]] = {}
+    for (drop, name), out in outcomes.items():
+        if not out.ok:
+            why.setdefault(f"{name}: {out.status}", []).append(drop)
+        for w in out.warnings:
+            said.setdefault(w, []).append(f"{drop} / {name}")
+    lines = [f"{reason} (drops: {', '.join(drops)})" for reason, drops in why.items()]
+    ran = [out for out in outcomes.values() if out.ran]
+    beyond = sum(out.law_extrapolated for out in ran)
+    if beyond:
+        lines.append(
+            f"the contact law is used beyond its verified range in {beyond} of {len(ran)} runs "
+            "(flag law_extrapolated, advisory: the prediction is kept, its own error unknown)"
+        )
+    lines += [f"warning ({', '.join(where)}): {w}" for w, where in said.items()]
+    return tuple(lines)
+
+
+def explain(
+    measurements: str | Path | Measurements,
+    *,
+    law: str = "ghaednia",
+    rates: Iterable[object] | None = None,
+    progress: Progress | None = None,
+) -> Explanation:
+    """Which physics explains measured drops, nothing tuned: each drop of ``measurements`` (a
+    measurements file, CSV or TOML, docs/calibrate.md, or a ``Measurements``) with the rigid
+    rod, the flexible rod and the flexible rod on a rate-dependent flat, each with the contact
+    ``law`` and Coulomb friction of the drop's measured mu, every measured quantity beside its
+    prediction (z, within 2 sigma) and per drop and configuration a summary.
+
+    ``rates``: the rate-dependent rows' laws; None: the library's Cowper-Symonds (upper
+    estimate) and Johnson-Cook (lower) for a low-carbon steel flat, not run on another flat
+    (the result says why); else rate laws as ``simulate``'s ``rate`` takes them
+    (``"cowper-symonds(D=6500 1/s, q=4)"``, a ``RateLaw``), the flat's own constants, run on
+    every rod's drop; ``[]``: none. A sphere's drop runs the rigid configuration only.
+    ``progress(configuration, done, total)`` is called after each run. ValueError for a drop
+    without mu, a law or rate law not known, or a file the calibration's reader refuses."""
+    get_law(law)  # ValueError naming the known laws
+    meas = _measurements(measurements)
+    configs = configurations(rates)
+    outcomes: dict[tuple[str, str], Outcome] = {}
+    total, done = meas.n_drops * len(configs), 0
+    for config in configs:
+        for d, label in enumerate(meas.labels):
+            reason = _not_run(config, meas, d)
+            if reason is None:
+                outcomes[(label, config.name)] = run_on_drop(
+                    config, one_drop(meas, d), law, FRICTION
+                )
+            else:
+                outcomes[(label, config.name)] = Outcome(reason, False, {})
+            done += 1
+            if progress is not None:
+                progress(config.name, done, total)
+    comparison = comparison_table(meas, configs, outcomes)
+    summary = summary_table(meas, configs, outcomes, comparison)
+    return Explanation(
+        comparison, summary, configs, law, FRICTION, _notes(meas, outcomes), meas.source,
+        outcomes,
+    )  # fmt: skip

@@ -1,0 +1,120 @@
+"""The physical models ("configurations") a measured drop is compared with, nothing tuned:
+the rigid rod, the flexible rod and the flexible rod on a rate-dependent flat.
+
+The rate-dependent rows use the library's rate laws only where their constants hold: both
+(Cowper-Symonds, an upper estimate of the rate effect; Johnson-Cook, a lower one) are fitted
+for low-carbon (mild) steel (``impactlab.contact.rate``, ``RateLaw.fitted_for``), so a drop on
+another flat does not run them, and the result says why. Rate laws of one's own
+(``rates=["cowper-symonds(D=6500 1/s, q=4)"]``, ``RateLaw.custom``) replace them: the user's
+constants are the flat's, and no material check applies.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass
+
+from impactlab.contact.rate import (
+    COWPER_SYMONDS_MILD_STEEL,
+    JOHNSON_COOK_1006_STEEL,
+    RateLaw,
+    get_rate_law,
+)
+from impactlab.materials import Material
+
+__all__ = [
+    "FLEXIBLE",
+    "LIBRARY_RATES",
+    "RIGID",
+    "Configuration",
+    "configurations",
+    "rate_not_applicable",
+]
+
+
+@dataclass(frozen=True)
+class Configuration:
+    """One physical model of a drop: its ``name`` (the rows of an Explanation), whether the
+    rod is ``flexible`` (``FlexibleRod`` of the drop's rod: default modes, the drop's damping
+    or none), the flat's ``rate`` law (None: rate-independent) and a ``description``."""
+
+    name: str
+    flexible: bool
+    rate: RateLaw | None
+    description: str
+
+
+#: The rigid body of each drop (a rod: I_C as the file gives it or m L^2 / 12), one contact.
+RIGID = Configuration(
+    "rigid rod",
+    False,
+    None,
+    "the drop's own rigid body (simulate: one contact; a sphere is a rigid sphere)",
+)
+#: The drop's rod as a FlexibleRod: the whole contact sequence, re-contacts included.
+FLEXIBLE = Configuration(
+    "flexible rod",
+    True,
+    None,
+    "the drop's rod as a FlexibleRod (Timoshenko modes, FlexibleRod's default counts, the "
+    "drop's damping ratio or none): the whole contact sequence, re-contacts included",
+)
+
+
+def _rate_configuration(law: RateLaw, estimate: str = "") -> Configuration:
+    what = f"{law.label}{', ' + estimate if estimate else ''}"
+    return Configuration(
+        f"flexible rod + rate-dependent flat ({what})",
+        True,
+        law,
+        f"as 'flexible rod', the flat's yield strength raised by the self-consistent factor of "
+        f"{law.text} (impactlab.contact.rate)",
+    )
+
+
+#: The library's rate laws, both fitted for low-carbon steel: Cowper-Symonds (Jones's mild
+#: steel constants of the initial yield stress, an upper estimate of the rate effect) and the
+#: Johnson-Cook rate term (1006 steel, fitted to large-strain flow stress, a lower estimate).
+LIBRARY_RATES: tuple[Configuration, ...] = (
+    _rate_configuration(COWPER_SYMONDS_MILD_STEEL, "upper estimate"),
+    _rate_configuration(JOHNSON_COOK_1006_STEEL, "lower estimate"),
+)
+
+
+def configurations(rates: Iterable[object] | None = None) -> tuple[Configuration, ...]:
+    """The rigid rod, the flexible rod and one rate-dependent row per rate law: ``rates`` None
+    gives the library's (:data:`LIBRARY_RATES`), else each item is a rate law as ``simulate``'s
+    ``rate`` takes it (a library name, ``"cowper-symonds(D=6500 1/s, q=4)"``, a ``RateLaw``);
+    ``[]`` or ``["none"]``: no rate rows. ValueError naming ``rates`` for a law not understood
+    or given twice."""
+    if rates is None:
+        return (RIGID, FLEXIBLE, *LIBRARY_RATES)
+    items = [rates] if isinstance(rates, str | RateLaw) else list(rates)
+    if len(items) == 1 and isinstance(items[0], str) and items[0].strip().lower() == "none":
+        items = []  # "none" alone: no rate row, as --rate none
+    laws: list[RateLaw] = []
+    for item in items:
+        law = get_rate_law(item, "rates")
+        if law is None:
+            raise ValueError(
+                f"rates: {item!r} is no rate law; give it alone for no rate row, or leave it out"
+            )
+        if law in laws:
+            raise ValueError(f"rates: {law.text} is given twice; give each rate law once")
+        laws.append(law)
+    return (RIGID, FLEXIBLE, *(_rate_configuration(law) for law in laws))
+
+
+def rate_not_applicable(config: Configuration, flat: Material) -> str | None:
+    """Why ``config`` does not run on ``flat`` (None: it does): a library rate law's constants
+    are fitted for another material (``RateLaw.fitted_for``); never applied silently."""
+    law = config.rate
+    if law is None or law.fitted_for is None:
+        return None
+    why = law.fitted_for.mismatch(flat)
+    if why is None:
+        return None
+    return (
+        f"not run: the {law.name} constants are fitted for {law.fitted_for.name}, but the flat "
+        f"{flat.name!r} has {why}; give the flat's own constants (rates=[...], --rate)"
+    )

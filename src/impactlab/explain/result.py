@@ -1,0 +1,192 @@
+"""The result of ``explain``: which configuration's predictions meet the measured values of
+each drop, as tables (SI), a text table, a notebook table and JSON with units."""
+
+from __future__ import annotations
+
+import html
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+import pandas as pd
+
+from impactlab._display import display_unit, format_number
+from impactlab._json import jsonable, quantity
+from impactlab._version import __version__
+from impactlab.explain.configurations import Configuration
+from impactlab.explain.runs import Outcome
+
+__all__ = ["NOTHING_TUNED", "Z_DEFINITION", "Explanation"]
+
+#: What every explanation states: no parameter was fitted.
+NOTHING_TUNED = (
+    "nothing is tuned: every configuration runs each drop with its own body, materials, "
+    "incoming state and measured mu (the local Coulomb coefficient), the library's contact law "
+    "and constants, gravity on"
+)
+#: How z is formed, stated with every explanation.
+Z_DEFINITION = (
+    "z = (predicted - measured) / sigma with the measurement's sigma alone: a model's own error "
+    "(its law beyond the verified range, ...) is a flag, not part of sigma; within 2 sigma: "
+    "|z| <= 2; a configuration that did not run, was refused or is flagged invalidating "
+    "predicts nothing and agrees with nothing"
+)
+
+
+def _cell(name: str, value: Any, unit: str) -> str:
+    """``value`` of field ``name`` [``unit``, SI] as a number in its display unit, as text."""
+    if value is None or (isinstance(value, float) and math.isnan(value)):
+        return "-"
+    return format_number(float(value) * display_unit(name, unit).scale, 4)
+
+
+def _head(name: str, unit: str) -> str:
+    """A quantity's column head with its display unit: ``delta_p [um]``, ``e``."""
+    shown = display_unit(name, unit).unit
+    return name if shown in ("1", "", "-") else f"{name} [{shown}]"
+
+
+def _short(status: str) -> str:
+    """A status for a table cell: "ok", or its kind ("not run", "refused", "not ok") with a
+    pointer to the notes, which give the reason whole."""
+    return status if status == "ok" else f"{status.partition(':')[0]} (see notes)"
+
+
+def _prediction(name: str, row: Any, unit: str) -> str:
+    """A predicted value with its z (``0.7239 (z +7.5)``), or ``-`` where there is none."""
+    if math.isnan(row.predicted):
+        return "-"
+    return f"{_cell(name, row.predicted, unit)} (z {row.z:+.3g})"
+
+
+@dataclass(frozen=True)
+class Explanation:
+    """Which physics explains measured drops: ``comparison`` (one row per drop, configuration
+    and measured quantity: measured, sigma, predicted, z, within_2_sigma, unit (SI), status),
+    ``summary`` (per drop and configuration: values within 2 sigma, chi2 = sum of z^2, the
+    run's contacts, mu_apparent beside the measured mu, max_delta_ratio, flags), the
+    ``configurations`` compared, the contact ``law`` and ``friction``, ``notes`` (what was not
+    run and why, what the runs warned) and ``source`` (the measurements file, if any).
+    ``result(drop, configuration)`` is the simulation behind a row."""
+
+    comparison: pd.DataFrame
+    summary: pd.DataFrame
+    configurations: tuple[Configuration, ...]
+    law: str
+    friction: str
+    notes: tuple[str, ...]
+    source: str | None = None
+    outcomes: Mapping[tuple[str, str], Outcome] = field(default_factory=dict, repr=False)
+
+    def result(self, drop: str, configuration: str) -> Any:
+        """The ImpactResult or DropResult of ``configuration`` on ``drop`` (None where it did
+        not run or was refused); KeyError naming the known drops and configurations."""
+        key = (drop, configuration)
+        if key not in self.outcomes:
+            drops = sorted({k[0] for k in self.outcomes})
+            names = [c.name for c in self.configurations]
+            raise KeyError(f"no run {key!r}; drops: {drops}; configurations: {names}")
+        return self.outcomes[key].result
+
+    def best(self, drop: str) -> str | None:
+        """The configuration of ``drop`` with the most values within 2 sigma (then the lowest
+        chi2) among those whose result is ok; None when none is."""
+        s = self.summary[(self.summary["drop"] == drop) & self.summary["ok"]]
+        if s.empty:
+            return None
+        order = s.assign(key=-s["within_2_sigma"]).sort_values(["key", "chi2"], kind="stable")
+        return str(order["configuration"].iloc[0])
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready (docs/json-schema.md): every number a quantity with its unit (SI)."""
+        comparison = [
+            {
+                "drop": r.drop, "configuration": r.configuration, "quantity": r.quantity,
+                "measured": quantity(r.measured, r.unit, r.sigma),
+                "predicted": quantity(r.predicted, r.unit), "z": quantity(r.z, "1"),
+                "within_2_sigma": bool(r.within_2_sigma), "status": r.status,
+            }
+            for r in self.comparison.itertuples(index=False)
+        ]  # fmt: skip
+        summary = [
+            {
+                "drop": r.drop, "configuration": r.configuration, "status": r.status,
+                "ok": bool(r.ok), "within_2_sigma": int(r.within_2_sigma),
+                "compared": int(r.compared), "measured": int(r.measured),
+                "chi2": quantity(r.chi2, "1"),
+                "contacts": None if pd.isna(r.contacts) else int(r.contacts),
+                "mu": quantity(r.mu, "1"), "mu_apparent": quantity(r.mu_apparent, "1"),
+                "max_delta_ratio": quantity(r.max_delta_ratio, "1"),
+                "fitted_delta_ratio_max": quantity(r.fitted_delta_ratio_max, "1"),
+                "law_extrapolated": r.law_extrapolated, "rate_factor": quantity(r.rate_factor, "1"),
+                "flags": r.flags,
+            }
+            for r in self.summary.itertuples(index=False)
+        ]  # fmt: skip
+        return jsonable({
+            "source": self.source, "law": self.law, "friction": self.friction,
+            "nothing_tuned": NOTHING_TUNED, "z": Z_DEFINITION,
+            "configurations": [
+                {"name": c.name, "flexible": c.flexible,
+                 "rate": None if c.rate is None else c.rate.text, "description": c.description}
+                for c in self.configurations
+            ],
+            "comparison": comparison, "summary": summary, "notes": list(self.notes),
+            "impactlab_version": __version__,
+        })  # fmt: skip
+
+    def display_rows(self) -> tuple[tuple[str, ...], list[tuple[str, ...]]]:
+        """(header, rows) in display units: per drop its measured row (value +- sigma), then
+        one row per configuration: each quantity's prediction with its z, the values within
+        2 sigma of those measured, chi2, contacts, Eq. 28's mu (the measured row: the drop's
+        mu), the flags and the status."""
+        c = self.comparison
+        quantities = list(dict.fromkeys(c["quantity"]))
+        units = dict(zip(c["quantity"], c["unit"], strict=True))
+        head = ("drop", "configuration", *(_head(q, units[q]) for q in quantities),
+                "within 2 sigma", "chi2", "contacts", "mu_apparent", "flags", "status")  # fmt: skip
+        rows: list[tuple[str, ...]] = []
+        for drop, part in self.summary.groupby("drop", sort=False):
+            mine = c[c["drop"] == drop]
+            first = mine[mine["configuration"] == part["configuration"].iloc[0]]
+            got = {r.quantity: r for r in first.itertuples(index=False)}
+            rows.append((str(drop), "measured (+- sigma)", *(
+                f"{_cell(q, got[q].measured, units[q])} +- {_cell(q, got[q].sigma, units[q])}"
+                if q in got else "" for q in quantities
+            ), "", "", "", _cell("mu", part["mu"].iloc[0], "1"), "", ""))  # fmt: skip
+            for s in part.itertuples(index=False):
+                cfg = mine[mine["configuration"] == s.configuration]
+                pred = {r.quantity: r for r in cfg.itertuples(index=False)}
+                rows.append(("", str(s.configuration), *(
+                    _prediction(q, pred[q], units[q]) if q in pred else "" for q in quantities
+                ), f"{s.within_2_sigma}/{s.measured}" if s.ok else "-",
+                    _cell("chi2", s.chi2, "1"), "-" if pd.isna(s.contacts) else str(s.contacts),
+                    _cell("mu", s.mu_apparent, "1"), s.flags or "-", _short(s.status)))  # fmt: skip
+        return head, rows
+
+    def __repr__(self) -> str:
+        head, body = self.display_rows()
+        rows = [head, *body]
+        widths = [max(len(r[i]) for r in rows) for i in range(len(head))]
+        lines = [f"Explanation ({self.law}/{self.friction}; {len(self.configurations)} "
+                 "configurations)"]  # fmt: skip
+        lines += ["  ".join(c.ljust(w) for c, w in zip(r, widths, strict=True)).rstrip()
+                  for r in rows]  # fmt: skip
+        lines += [f"note: {n}" for n in (NOTHING_TUNED, Z_DEFINITION, *self.notes)]
+        return "\n".join(lines)
+
+    def _repr_html_(self) -> str:
+        names, rows = self.display_rows()
+        head = "".join(f"<th>{html.escape(h)}</th>" for h in names)
+        body = "".join(
+            "<tr>" + "".join(f"<td>{html.escape(c)}</td>" for c in r) + "</tr>" for r in rows
+        )
+        notes = "".join(
+            f"<li>{html.escape(n)}</li>" for n in (NOTHING_TUNED, Z_DEFINITION, *self.notes)
+        )
+        title = html.escape(f"Explanation ({self.law}/{self.friction})")
+        return (
+            f"<div><strong>{title}</strong><table><thead><tr>{head}</tr></thead>"
+            f"<tbody>{body}</tbody></table><ul>{notes}</ul></div>"
+        )

@@ -1,0 +1,218 @@
+"""One configuration run on one measured drop, through the calibration's own prediction.
+
+Each (drop, configuration) is one ``simulate`` call (a rigid impact, or a flexible rod's whole
+drop), made inside ``impactlab.calibrate.models.predict`` with no free parameter: predict builds
+the case (the drop's inputs, its materials as the calibration completes them, its body), reads
+every measured quantity from the result as the calibration reads it (a rigid impact's e with
+the gravity impulse of its contact removed, the scar as the mark's extent, a dent as the drop's
+final dent, ...) and gives a case whose result is flagged invalidating its status, so that
+explain and calibrate cannot disagree about what a model predicts. The evaluator handed to
+predict (:class:`_OneCase`) runs the case as the calibration runs its one-by-one cases and keeps
+the whole result, whose sequence (contacts, Eq. 28's mu, the law's range) the explanation shows.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from impactlab.analytic.closed_forms import friction_from_velocities
+from impactlab.calibrate.measurements import Measurements
+
+# the calibration's own case builder and output reader: one definition of a model's prediction
+from impactlab.calibrate.models import (
+    STATUS_REFUSED,
+    CandidateModel,
+    _body,
+    _value_of,
+    _whole_materials,
+    predict,
+    status_message,
+)
+from impactlab.contact.rate import RateLaw
+from impactlab.dynamics import simulate
+from impactlab.dynamics.drop_result import DropResult
+from impactlab.dynamics.input_checks import gravity_value
+from impactlab.explain.configurations import Configuration
+from impactlab.flags import FLAG_LAW_EXTRAPOLATED
+from impactlab.materials import Material
+from impactlab.sweep.flexible import FLEXIBLE_BODY
+from impactlab.sweep.models import Statics, material_for
+
+__all__ = ["Outcome", "drop_flat", "one_drop", "run_on_drop"]
+
+
+@dataclass(frozen=True)
+class Outcome:
+    """A configuration on one drop: ``status`` ("ok", or why not: refused, flagged, not run),
+    ``ok``, the predicted ``values`` (quantity -> SI value; NaN where not predicted),
+    ``unsupported`` quantities (the model defines none of them), the ``result`` (an
+    ImpactResult or DropResult; None when nothing ran), ``law_extrapolated`` and the
+    ``warnings`` the run emitted."""
+
+    status: str
+    ok: bool
+    values: Mapping[str, float]
+    unsupported: tuple[str, ...] = ()
+    result: Any = None
+    law_extrapolated: bool = False
+    warnings: tuple[str, ...] = ()
+
+    @property
+    def ran(self) -> bool:
+        """True when the configuration ran on the drop (refused or flagged included)."""
+        return not self.status.startswith("not run")
+
+
+class _OneCase:
+    """The Evaluator predict calls: each case through ``simulate``, as the calibration's
+    one-by-one cases (``calibrate.models``), keeping the result, the refusal and the warnings."""
+
+    identity = "explain"
+
+    def __init__(self, rate: RateLaw | None) -> None:
+        self.rate = rate
+        self.results: list[Any] = []
+        self.refusals: list[str] = []
+        self.warnings: list[str] = []
+
+    def output_fields(self) -> tuple[str, ...]:
+        return ()
+
+    def status_messages(self) -> dict[int, str]:
+        return {}
+
+    def regimes(self) -> dict[int, str]:
+        return {}
+
+    def integer_outputs(self) -> tuple[str, ...]:
+        return ()
+
+    def validate(self, categories: Mapping[str, Sequence[str]]) -> None:
+        return None
+
+    def __call__(
+        self, cases: Mapping[str, np.ndarray], statics: Statics, outputs: Sequence[str]
+    ) -> tuple[dict[str, np.ndarray], np.ndarray]:
+        n = len(cases["angle"])
+        res = {o: np.full(n, np.nan) for o in outputs}
+        status = np.zeros(n, dtype=np.int32)
+        for i in range(n):
+            row = {k: float(v[i]) for k, v in cases.items()}
+            result = self._run(statics, row)
+            self.results.append(result)
+            if result is None:
+                status[i] = STATUS_REFUSED
+                continue
+            for o in outputs:
+                res[o][i] = _value_of(result, o)
+        return res, status
+
+    def _run(self, statics: Statics, row: Mapping[str, float]) -> Any:
+        cat, engine = statics.categories, dict(statics.engine)
+        extra: dict[str, Any] = {"rate": self.rate} if self.rate is not None else {}
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            try:
+                return simulate(
+                    _body(cat, row),
+                    material_for("flat", cat["flat_material"], row),
+                    law=cat["law"],
+                    friction=cat["friction"],
+                    mu=row["mu"],
+                    angle=row["angle"] if cat["body"] != "sphere" else None,
+                    velocity=(row["vx"], row["vy"]),
+                    spin=row["spin"],
+                    gravity=engine.get("gravity", True),
+                    law_params=dict(statics.law_params) or None,
+                    history=False,
+                    **extra,
+                )
+            except (ValueError, ArithmeticError, np.linalg.LinAlgError) as exc:
+                self.refusals.append(str(exc))
+                return None
+            finally:
+                self.warnings += [str(w.message) for w in caught]
+
+
+def one_drop(meas: Measurements, d: int) -> Measurements:
+    """Drop ``d`` of ``meas`` alone, with only the quantities it measured."""
+    measured = [q for q in meas.quantities if math.isfinite(meas.observed[q][d])]
+    return Measurements(
+        (meas.labels[d],),
+        (meas.categories[d],),
+        {k: v[d : d + 1].copy() for k, v in meas.inputs.items()},
+        {q: meas.observed[q][d : d + 1].copy() for q in measured},
+        {q: meas.sigma[q][d : d + 1].copy() for q in measured},
+        meas.source,
+    )
+
+
+def drop_flat(meas: Measurements, d: int) -> Material:
+    """The flat of drop ``d`` as its cases get it: the library material, or one whose
+    properties the drop's columns set (``flat_yield_strength``, ...)."""
+    cases = {k: v[d : d + 1].copy() for k, v in meas.inputs.items()}
+    cat = _whole_materials(dict(meas.categories[d]), cases)
+    return material_for("flat", cat["flat_material"], {k: float(v[0]) for k, v in cases.items()})
+
+
+def run_on_drop(
+    config: Configuration, drop: Measurements, law: str, friction: str = "coulomb"
+) -> Outcome:
+    """``config`` with the contact ``law`` and ``friction`` on the one-drop ``drop``
+    (:func:`one_drop`): predict with no free parameter, through :class:`_OneCase`."""
+    body = FLEXIBLE_BODY if config.flexible else None
+    model = CandidateModel(law, friction, body)
+    unsupported = tuple(model.unsupported(drop.quantities))
+    case = _OneCase(config.rate)
+    pred = predict(model, drop, (), np.empty((1, 0)), evaluator=case)
+    values = {q: float(v[0, 0]) for q, v in pred.values.items()}
+    code = int(pred.status[0, 0])
+    result = case.results[0] if case.results else None
+    notes = tuple(dict.fromkeys(case.warnings))
+    if code == 0:
+        extrapolated = bool(pred.extrapolated is not None and pred.extrapolated[0, 0])
+        return Outcome("ok", True, values, unsupported, result, extrapolated, notes)
+    why = case.refusals[0] if code == STATUS_REFUSED and case.refusals else status_message(code)
+    word = "refused" if code == STATUS_REFUSED else "not ok"
+    extrapolated = result is not None and bool(int(result.flags) & FLAG_LAW_EXTRAPOLATED)
+    return Outcome(f"{word}: {why}", False, values, unsupported, result, extrapolated, notes)
+
+
+def sequence_values(result: Any, gravity: float | bool = True) -> dict[str, Any]:
+    """What the run's whole sequence says beside the predictions: ``contacts`` (the tip's and
+    the other end's, re-contacts of a ringing rod included; a rigid impact: 1), ``mu_apparent``
+    (the paper's Eq. 28 on the rigid-body velocities, the gravity impulse removed),
+    ``max_delta_ratio`` and the law's range ``fitted_delta_ratio_max`` (in the law's own
+    reference), ``rate_factor`` and the ``flags`` (names); None values when nothing ran."""
+    if result is None:
+        return dict.fromkeys(
+            ("contacts", "mu_apparent", "max_delta_ratio", "fitted_delta_ratio_max",
+             "rate_factor", "flags"),
+        )  # fmt: skip
+    drop = isinstance(result, DropResult)
+    return {
+        "contacts": int(result.n_contacts) if drop else 1,
+        "mu_apparent": float(result.mu_apparent) if drop else _rigid_mu(result, gravity),
+        "max_delta_ratio": float(result.max_delta_ratio),
+        "fitted_delta_ratio_max": float(result.fitted_delta_ratio_max),
+        "rate_factor": float(result.rate_factor) if drop else 1.0,
+        "flags": int(result.flags),
+    }
+
+
+def _rigid_mu(result: Any, gravity: float | bool) -> float:
+    """Eq. 28 of a rigid impact: |dv_x| / (dv_y + g T); NaN where the impulse does not lift."""
+    (vx0, vy0), (vx1, vy1) = result.velocity_in, result.velocity_out
+    try:
+        mu = friction_from_velocities(
+            vx1 - vx0, vy1 - vy0, duration=result.duration, g=gravity_value(gravity)
+        )
+    except ValueError:
+        return math.nan
+    return float(mu)

@@ -1,0 +1,114 @@
+"""The comparison as tables: one row per (drop, configuration, measured quantity), and one per
+(drop, configuration) that sums it up with what the run's sequence says.
+
+z = (predicted - measured) / sigma uses the measurement's standard uncertainty alone: a model's
+own error (its law beyond the verified range, ...) is a flag beside it, never part of sigma. A
+configuration that did not run, was refused or is flagged invalidating has no prediction: its
+rows carry the reason and count as no agreement.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+import pandas as pd
+
+from impactlab.calibrate.measurements import Measurements
+from impactlab.calibrate.quantities import MEASURABLE
+from impactlab.explain.configurations import Configuration
+from impactlab.explain.runs import Outcome, sequence_values
+from impactlab.flags import ResultFlag
+
+__all__ = ["COMPARISON_COLUMNS", "SUMMARY_COLUMNS", "WITHIN", "comparison_table", "summary_table"]
+
+#: A prediction agrees with a measurement when |z| is at most this many sigma.
+WITHIN = 2.0
+#: The columns of the comparison (one row per drop, configuration and measured quantity; SI).
+COMPARISON_COLUMNS = ("drop", "configuration", "quantity", "measured", "sigma", "predicted", "z",
+                      "within_2_sigma", "unit", "status")  # fmt: skip
+#: The columns of the summary (one row per drop and configuration).
+SUMMARY_COLUMNS = (
+    "drop", "configuration", "status", "ok", "within_2_sigma", "compared", "measured", "chi2",
+    "contacts", "mu", "mu_apparent", "max_delta_ratio", "fitted_delta_ratio_max",
+    "law_extrapolated", "rate_factor", "flags",
+)  # fmt: skip
+
+
+def _row_status(outcome: Outcome, quantity: str) -> str:
+    if not outcome.ok:
+        return outcome.status
+    if quantity in outcome.unsupported:
+        return "not predicted: this configuration does not define it"
+    return "ok"
+
+
+def comparison_table(
+    meas: Measurements,
+    configs: Sequence[Configuration],
+    outcomes: Mapping[tuple[str, str], Outcome],
+) -> pd.DataFrame:
+    """Every measured value beside each configuration's prediction (SI, in ``unit``)."""
+    rows: list[dict[str, Any]] = []
+    for d, label in enumerate(meas.labels):
+        for cfg in configs:
+            out = outcomes[(label, cfg.name)]
+            for q in meas.quantities:
+                measured = float(meas.observed[q][d])
+                if not math.isfinite(measured):
+                    continue
+                sigma = float(meas.sigma[q][d])
+                status = _row_status(out, q)
+                predicted = out.values.get(q, math.nan) if status == "ok" else math.nan
+                z = (predicted - measured) / sigma
+                rows.append({
+                    "drop": label, "configuration": cfg.name, "quantity": q,
+                    "measured": measured, "sigma": sigma, "predicted": predicted, "z": z,
+                    "within_2_sigma": bool(abs(z) <= WITHIN),  # NaN: False
+                    "unit": MEASURABLE[q].unit, "status": status,
+                })  # fmt: skip
+    return pd.DataFrame(rows, columns=list(COMPARISON_COLUMNS))
+
+
+def flag_text(flags: int | None) -> str:
+    """The names of the flags set (``"law_extrapolated, other_end"``), ``"none"``; "" for
+    a run that did not happen."""
+    if flags is None:
+        return ""
+    names = [str(f.name).lower() for f in ResultFlag if f.value and flags & f.value]
+    return ", ".join(names) or "none"
+
+
+def summary_table(
+    meas: Measurements,
+    configs: Sequence[Configuration],
+    outcomes: Mapping[tuple[str, str], Outcome],
+    comparison: pd.DataFrame,
+) -> pd.DataFrame:
+    """Per drop and configuration: the values within 2 sigma, of those ``compared`` (predicted)
+    and ``measured``; chi2 = sum of z^2 over the compared ones (NaN: no prediction); the run's
+    contacts, Eq. 28's ``mu_apparent`` beside the drop's measured ``mu``, ``max_delta_ratio``
+    and the law's verified range, the rate factor and the flags."""
+    rows: list[dict[str, Any]] = []
+    grouped = dict(tuple(comparison.groupby(["drop", "configuration"], sort=False)))
+    for d, label in enumerate(meas.labels):
+        for cfg in configs:
+            out = outcomes[(label, cfg.name)]
+            part = grouped[(label, cfg.name)]
+            compared = part[part["status"] == "ok"]
+            seq = sequence_values(out.result)
+            chi2 = float((compared["z"] ** 2).sum()) if out.ok and len(compared) else math.nan
+            rows.append({
+                "drop": label, "configuration": cfg.name, "status": out.status, "ok": out.ok,
+                "within_2_sigma": int(compared["within_2_sigma"].sum()),
+                "compared": len(compared), "measured": len(part), "chi2": chi2,
+                "contacts": seq["contacts"], "mu": float(meas.inputs["mu"][d]),
+                "mu_apparent": seq["mu_apparent"], "max_delta_ratio": seq["max_delta_ratio"],
+                "fitted_delta_ratio_max": seq["fitted_delta_ratio_max"],
+                "law_extrapolated": out.law_extrapolated if out.ran else None,
+                "rate_factor": seq["rate_factor"], "flags": flag_text(seq["flags"]),
+            })  # fmt: skip
+    table = pd.DataFrame(rows, columns=list(SUMMARY_COLUMNS))
+    table["contacts"] = table["contacts"].astype("Int64")  # blank where nothing ran
+    return table

@@ -1,0 +1,67 @@
+"""``impactlab explain``: JSON with units, the table, the output folder's rule (its own files
+replaced, a user's never), one-line errors."""
+
+from __future__ import annotations
+
+import json
+
+from impactlab._json import shape_problems
+
+
+def test_json_parses_and_names_units(cli_main, paper_file) -> None:
+    code, out, err = cli_main("explain", str(paper_file), "--json", "--quiet")
+    assert code == 0, err
+    doc = json.loads(out)
+    assert shape_problems(doc) == []  # docs/json-schema.md: every number a quantity
+    first = doc["comparison"][0]
+    assert first["measured"] == {"value": 0.5, "unit": "1", "sigma": 0.03}
+    dents = [r for r in doc["comparison"] if r["quantity"] == "delta_p"]
+    assert {r["predicted"]["unit"] for r in dents} == {"m"}
+    assert doc["summary"][1]["contacts"] == 4 and doc["summary"][1]["configuration"] == (
+        "flexible rod"
+    )
+    assert doc["nothing_tuned"].startswith("nothing is tuned")
+    assert "measurement's sigma alone" in doc["z"]
+    assert doc["files"] == {}
+
+
+def test_the_table_and_its_notes(cli_main, paper_file) -> None:
+    code, out, err = cli_main("explain", str(paper_file), "--rate", "none", "--quiet")
+    assert code == 0, err
+    assert "measured (+- sigma)" in out and "delta_p [um]" in out and "0.7239 (z +7.46)" in out
+    assert "rate-dependent" not in out
+    assert "note: nothing is tuned" in out and "note: z = (predicted - measured) / sigma" in out
+
+
+def test_out_replaces_its_own_files_and_refuses_a_users(cli_main, paper_file, tmp_path) -> None:
+    out = tmp_path / "explained"
+    args = ("explain", str(paper_file), "--rate", "none", "--quiet", "--out", str(out))
+    assert cli_main(*args)[0] == 0
+    csv = (out / "explain.csv").read_text()
+    assert csv.startswith("drop,configuration,quantity,measured,sigma,predicted,z,")
+    assert cli_main(*args)[0] == 0  # an earlier explanation's files: replaced
+    (out / "explain.csv").write_text("my,own\n1,2\n")
+    code, stdout, err = cli_main(*args)
+    assert code == 2 and stdout == ""
+    assert err.startswith(f"error: '{out / 'explain.csv'}' is in the output folder but was not "
+                          "written by impactlab explain")  # fmt: skip
+    assert err.count("\n") == 1 and "--out" in err
+    assert (out / "explain.csv").read_text() == "my,own\n1,2\n"  # left as it was
+
+
+def test_one_line_errors(cli_main, tmp_path, paper_file) -> None:
+    bad = tmp_path / "bad.csv"
+    bad.write_text("label,angle [deg],vy [m/s],mu,e\na,20,-1.41,0.2,0.5\n")
+    no_mu = tmp_path / "no_mu.csv"
+    no_mu.write_text("label,angle [deg],vy [m/s],e,e_sigma\na,20,-1.41,0.5,0.03\n")
+    cases = [
+        ((str(bad),), "sigma"),
+        ((str(no_mu),), "give no mu"),
+        ((str(tmp_path / "none.csv"),), "measurements file not found"),
+        ((str(paper_file), "--law", "ghaednya"), "ghaednia"),
+        ((str(paper_file), "--rate", "cowper"), "--rate must be one of"),
+    ]
+    for args, words in cases:
+        code, out, err = cli_main("explain", *args, "--quiet")
+        assert code == 2 and out == "", (args, err)
+        assert err.startswith("error: ") and err.count("\n") == 1 and words in err, (args, err)
