@@ -10,25 +10,32 @@ A fraction (``quantities.FRACTIONS``: e, e_energy, e_t, mu, damping) may be give
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Mapping
 from typing import Any
 
 from impactlab.calibrate.quantities import (
     AMBIGUOUS,
+    ANGLES,
     DROP_CATEGORIES,
     FRACTIONS,
+    KINEMATICS,
     MEASURABLE,
     NUMERIC_INPUTS,
     OUTPUT_ALIASES,
     canonical_output,
 )
-from impactlab.calibrate.values import did_you_mean, is_number
+from impactlab.calibrate.values import bare, did_you_mean, is_number
+from impactlab.units import parse_quantity, to_si
 
 __all__ = [
     "LABEL_KEYS",
     "column_kind",
     "fraction",
+    "given_unit",
+    "in_unit",
+    "input_sigma",
     "is_percent",
     "resolve_units",
     "split_header",
@@ -77,6 +84,8 @@ def column_kind(where: str, name: str) -> tuple[str, str]:
     if name in NUMERIC_INPUTS:
         return "input", name
     q = canonical_output(name.removesuffix("_sigma"))
+    if name.endswith("_sigma") and name.removesuffix("_sigma") in NUMERIC_INPUTS:
+        raise ValueError(f"{where}: column {name!r}: {input_sigma(name.removesuffix('_sigma'))}")
     if name.endswith("_sigma") and q:
         return "sigma", f"{q}_sigma"
     if canonical_output(name):
@@ -93,6 +102,23 @@ def column_kind(where: str, name: str) -> tuple[str, str]:
     )
 
 
+def input_sigma(name: str) -> str:
+    """Why the input ``name`` of a drop takes no uncertainty (a column ``<name>_sigma``), and
+    how an uncertain one is calibrated."""
+    exact = (
+        f"{name} is an input of the drop, taken as exact; only a measured quantity takes an "
+        "uncertainty (<quantity>_sigma)"
+    )
+    if name in KINEMATICS:
+        return f"{exact}: remove the column"
+    return (
+        f"{exact}. An uncertain {name} is calibrated as a free parameter with a normal prior "
+        f'of its value and uncertainty, e.g. -p "{name}=normal(mean, sd)" ([parameters] in a '
+        f"config file; one value for every drop, in place of the file's {name}): remove the "
+        "column"
+    )
+
+
 def resolve_units(units: Any) -> dict[str, str]:
     """The ``[units]`` table as canonical column -> unit text (``{"T": "ms"}`` ->
     ``{"duration": "ms"}``). ValueError naming the key for one that names no column (with
@@ -104,7 +130,8 @@ def resolve_units(units: Any) -> dict[str, str]:
     keys: dict[str, str] = {}
     for key, unit in units.items():
         name = str(key)
-        if name not in _COLUMNS and name.removesuffix("_sigma") not in AMBIGUOUS:
+        base = name.removesuffix("_sigma")
+        if name not in _COLUMNS and base not in AMBIGUOUS and base not in NUMERIC_INPUTS:
             raise ValueError(
                 f"[units]: unknown column {name!r}{did_you_mean(name, _COLUMNS)}; a key of "
                 "[units] is a column of the drops: a numeric input, a measured quantity or its "
@@ -160,3 +187,36 @@ def fraction(name: str, v: Any, column_unit: str | None) -> float | None:
 
 def _number(v: Any) -> bool:
     return isinstance(v, int | float) or (isinstance(v, str) and is_number(v))
+
+
+def given_unit(q: str, v: Any, column_unit: str | None) -> str | None:
+    """The unit the file gave the value ``v`` of the measured quantity ``q`` in: its column's
+    (``column_unit``: the header's or the ``[units]`` entry's) or a quantity string's own
+    (``"64 um"``: ``um``; ``"43 %"``: ``%``); None for a bare number in a column without one."""
+    if column_unit:
+        return column_unit
+    if not isinstance(v, str) or bare(v):
+        return None
+    if _PERCENT.match(v):
+        return "%"
+    try:
+        return f"{parse_quantity(q, v, MEASURABLE[q].unit).units:~}"
+    except ValueError:
+        return None
+
+
+def in_unit(q: str, x: float, unit: str | None = None) -> tuple[float, str]:
+    """(``x``, a value of the measured quantity ``q`` in SI, in ``unit``: the unit the file gave
+    it in, ``given_unit``; that unit as an error writes it after the number, `` um``): an angle
+    always in degrees (its range is in degrees), with no ``unit`` (or one of 1) SI."""
+    if q in ANGLES:
+        return math.degrees(x), " deg"
+    if unit and is_percent(unit):
+        return x * 100.0, " %"
+    if unit and unit.strip() not in ("1", "-"):
+        try:
+            return x / to_si(1.0, unit), f" {unit.strip()}"
+        except (ValueError, AttributeError):  # pint's unknown unit is an AttributeError
+            pass
+    si = MEASURABLE[q].unit
+    return x, "" if si in ("1", "", "-") else f" {si}"

@@ -14,7 +14,7 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
@@ -25,6 +25,8 @@ from impactlab.calibrate.measurement_columns import (
     LABEL_KEYS,
     column_kind,
     fraction,
+    given_unit,
+    in_unit,
     resolve_units,
     split_header,
 )
@@ -48,25 +50,20 @@ _ROD_ONLY = ("angle", "length", "tip_radius", "inertia")
 
 @dataclass
 class Row:
-    """One drop: label, categories, inputs (each in its own unit), observed and sigma (SI)."""
+    """One drop: label, categories, inputs (each in its own unit), observed and sigma (SI);
+    units: the unit each measured value was given in (``given_unit``), which its errors use."""
 
     label: str
     categories: dict[str, str]
     inputs: dict[str, float]
     observed: dict[str, float]
     sigma: dict[str, float]
+    units: dict[str, str] = field(default_factory=dict)
 
 
 def unit_text(unit: str) -> str:
     """`` unit``, or nothing for a pure number."""
     return "" if unit in ("1", "", "-") else f" {unit}"
-
-
-def _angle(q: str, x: float) -> tuple[float, str]:
-    """(``x`` of measured quantity ``q`` in the unit its errors speak, that unit as
-    ``unit_text`` writes it): an angle (stored in rad) in degrees, as a file gives it."""
-    unit = MEASURABLE[q].unit
-    return (math.degrees(x), " deg") if q in ANGLES else (x, unit_text(unit))
 
 
 def _plain(v: Any) -> Any:
@@ -148,7 +145,7 @@ def parse_row(i: int, record: Mapping[str, Any], units: Mapping[str, Any]) -> Ro
     # the unit of each measured value's column: its uncertainty's unless that has its own
     value_units = {c: u for k, c, _, u, _ in cols if k == "value"}
     texts = {c: v for k, c, _, _, v in cols if k == "value"}
-    label, cats, inputs, obs, sig = f"drop {i + 1}", {}, {}, {}, {}
+    label, cats, inputs, obs, sig, given = f"drop {i + 1}", {}, {}, {}, {}, {}
     nan: set[str] = set()
     for kind, canon, name, unit, v in cols:
         if kind == "label":
@@ -177,7 +174,8 @@ def parse_row(i: int, record: Mapping[str, Any], units: Mapping[str, Any]) -> Ro
             if canon in ANGLES:
                 _angle_unit(where, name, v, unit, canon)
             obs[canon] = _value(where, name, v, unit, MEASURABLE[canon].unit, canon)
-    row = Row(label, cats, inputs, obs, sig)
+            given[canon] = given_unit(canon, v, unit)
+    row = Row(label, cats, inputs, obs, sig, {q: u for q, u in given.items() if u})
     _velocity(f"{where} ({label})", row)
     _body(f"{where} ({label})", row)
     _check_row(where, row, nan)
@@ -322,10 +320,12 @@ def _check_range(where: str, row: Row, q: str, x: float, s: float) -> None:
         )
     if low - NOISE_SIGMAS * s <= x <= high + NOISE_SIGMAS * s:
         return
-    (shown, u), sd = _angle(q, x), _angle(q, s)[0]
+    unit = row.units.get(q)  # the unit the file gave the value in
+    (shown, u), sd = in_unit(q, x, unit), in_unit(q, s, unit)[0]
+    lo, hi = in_unit(q, low, unit)[0], in_unit(q, high, unit)[0]
     raise ValueError(
         f"{where}: {q} = {shown:g}{u} lies outside the possible range "
-        f"[{_angle(q, low)[0]:g}, {_angle(q, high)[0]:g}]{u} by more than {NOISE_SIGMAS:g} "
+        f"[{lo:g}, {hi:g}]{u} by more than {NOISE_SIGMAS:g} "
         f"sigma ({q}_sigma = {sd:g}{u}; within {NOISE_SIGMAS:g} sigma a value is read as "
         f"measurement noise) ({what})"
     )
@@ -368,7 +368,9 @@ def _check_magnitudes(where: str, row: Row) -> None:
                 f"'2 {hint}' or a header '{q}_sigma [{hint}]')"
             )
         if m.low is not None and m.high is not None and s > m.high - m.low:
-            (shown, u), low, high = _angle(q, s), _angle(q, m.low)[0], _angle(q, m.high)[0]
+            unit = row.units.get(q)
+            (shown, u), low = in_unit(q, s, unit), in_unit(q, m.low, unit)[0]
+            high = in_unit(q, m.high, unit)[0]
             raise ValueError(
                 f"{where}: {q}_sigma = {shown:g}{u} is wider than the whole range of {q} "
                 f"[{low:g}, {high:g}]{u}: an implausible uncertainty; check its unit and value"

@@ -162,9 +162,10 @@ def read_measurements(path: str | Path) -> Measurements:
         _refuse_nan(p, drops)
         try:
             units = resolve_units(doc.get("units", {}))
-        except ValueError as exc:
-            raise ValueError(f"{p}: {exc}") from None
-        return Measurements.from_records(drops, units, source=str(p))
+            return Measurements.from_records(drops, units, source=str(p))
+        except ValueError as exc:  # each error names the file
+            text = str(exc)
+            raise ValueError(text if text.startswith(f"{p}: ") else f"{p}: {text}") from None
     raise ValueError(f"measurements file must end in .csv or .toml, got {p.name!r}")
 
 
@@ -207,9 +208,7 @@ def _assemble(
     rows: Sequence[Row], source: str | None, lines: Sequence[int] | None = None
 ) -> Measurements:
     labels = tuple(r.label for r in rows)
-    dup = {x for x in labels if labels.count(x) > 1}
-    if dup:
-        raise ValueError(f"duplicate drop labels: {sorted(dup)}")
+    _refuse_duplicates(labels, source, lines)
     cats = tuple(
         {c: r.categories.get(c, str(INPUTS[c].default)) for c in DROP_CATEGORIES} for r in rows
     )
@@ -232,6 +231,29 @@ def _assemble(
     observed = {q: np.array([r.observed.get(q, math.nan) for r in rows]) for q in names}
     sigma = {q: np.array([r.sigma.get(q, math.nan) for r in rows]) for q in names}
     return Measurements(labels, cats, inputs, observed, sigma, source)
+
+
+def _refuse_duplicates(
+    labels: Sequence[str], source: str | None, lines: Sequence[int] | None
+) -> None:
+    """Drops of one label refused, naming each such label with its drops (and, with
+    ``lines``, the lines of the file ``source``)."""
+    where = []
+    for label in sorted({x for x in labels if labels.count(x) > 1}):
+        at = [d for d, x in enumerate(labels) if x == label]
+        drops = f"(drops {_and([d + 1 for d in at])})"
+        rows = "" if lines is None else f" on lines {_and([lines[d] for d in at])}"
+        where.append(f"{label!r}{rows} {drops}")
+    if where:
+        file = "" if lines is None else f"{source}: "
+        raise ValueError(
+            f"{file}duplicate drop labels: {'; '.join(where)}: give each drop its own label"
+        )
+
+
+def _and(numbers: Sequence[int]) -> str:
+    """``[2, 3, 5]`` -> ``"2, 3 and 5"``."""
+    return " and ".join([", ".join(map(str, numbers[:-1])), str(numbers[-1])])
 
 
 def _rows_of(m: Measurements) -> list[Row]:

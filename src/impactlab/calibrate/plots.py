@@ -3,6 +3,7 @@ posterior predictive check, predicted against measured with 90 % bands."""
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import numpy as np
@@ -11,7 +12,7 @@ from impactlab._display import display_unit
 from impactlab._mpl import pyplot
 from impactlab.calibrate.result import ModelPosterior
 
-__all__ = ["corner_figure", "ppc_figure"]
+__all__ = ["corner_figure", "interval_title", "ppc_figure"]
 
 
 def corner_figure(post: ModelPosterior) -> Any:
@@ -36,10 +37,26 @@ def corner_figure(post: ModelPosterior) -> Any:
         ax.set_title(post.model)
         return fig
     fig = corner.corner(  # quiet: corner's "too few points" goes to the root logger
-        x, labels=labels, truths=best, quantiles=[0.05, 0.5, 0.95], show_titles=True, quiet=True
+        x, labels=labels, truths=best, quantiles=[0.05, 0.5, 0.95], quiet=True
     )
+    axes = np.asarray(fig.axes).reshape(x.shape[1], x.shape[1])
+    for j, label in enumerate(labels):  # corner's titles have one format for all (".2f")
+        axes[j, j].set_title(f"{label} = {interval_title(x[:, j])}")
     fig.suptitle(post.model, y=1.02)
     return fig
+
+
+def interval_title(x: np.ndarray) -> str:
+    """The median of the draws ``x`` with the distances to the ends of its 90 % interval, as
+    mathtext (``$0.2004_{-0.0043}^{+0.0047}$``), to the decimal that gives the shorter distance
+    two significant digits (the same number of decimals for all three; 4 significant digits
+    when the draws do not spread)."""
+    lo, mid, hi = np.quantile(x, [0.05, 0.5, 0.95])
+    minus, plus = mid - lo, hi - mid
+    widths = [d for d in (minus, plus) if 0 < d < math.inf]
+    spec = f".{min(max(1 - math.floor(math.log10(min(widths))), 0), 12)}f" if widths else ".4g"
+    f = f"{{:{spec}}}".format
+    return rf"${f(mid)}_{{-{f(minus)}}}^{{+{f(plus)}}}$"
 
 
 def ppc_figure(posteriors: dict[str, ModelPosterior]) -> Any:

@@ -50,12 +50,13 @@ class ModelPosterior:
     predicted at ``basis`` (the predictive check's posterior draws, or the best fit when it
     re-ran none) whose contact law was used beyond its verified range (the advisory
     LAW_EXTRAPOLATED flag; share NaN when none ran); loo_pointwise : (D,) each drop's PSIS-LOO
-    elpd (empty when PSIS-LOO failed); acceptance : mean acceptance fraction; steps, burn : the
-    chain's steps used and discarded (a saved chain longer than ``steps``, from an earlier run,
-    is used up to ``steps``); warnings : what the diagnostics found (R-hat, autocorrelation
-    time, Pareto k, misfits, a prior's bound, an extrapolated law, many failed values);
-    convergence : those of the warnings that say the chain has not converged or cannot tell
-    (``converged`` is True when there are none).
+    elpd (empty when PSIS-LOO failed); acceptance : the walkers' mean acceptance fraction over
+    the ``steps`` used (``_acceptance``); steps, burn : the chain's steps used and discarded
+    (a saved chain longer than ``steps``, from an earlier run, is used up to ``steps``);
+    warnings : what the diagnostics found (R-hat, autocorrelation time, Pareto k, misfits, a
+    prior's bound, an extrapolated law, many failed values); convergence : those of the
+    warnings that say the chain has not converged or cannot tell (``converged`` is True when
+    there are none).
     """
 
     model: str
@@ -262,6 +263,20 @@ def _autocorr_time(chain: np.ndarray) -> np.ndarray:
         logger.setLevel(level)
 
 
+def _acceptance(sampler: emcee.EnsembleSampler, steps: int) -> float:
+    """The walkers' mean acceptance fraction over the chain's first ``steps`` steps: emcee's
+    (its count of accepted proposals per walker over the steps run) when the chain holds no
+    more; of a longer saved chain, emcee's count less the steps after ``steps`` at which a
+    walker moved (a stretch move's accepted proposal moves it; a rejected one keeps it where
+    it was), over ``steps``."""
+    accepted = np.asarray(sampler.backend.accepted, dtype=np.float64)
+    saved = sampler.iteration
+    if saved > steps:
+        tail = sampler.get_chain()[steps - 1 :]  # (saved - steps + 1, W, P)
+        accepted = accepted - np.any(tail[1:] != tail[:-1], axis=2).sum(axis=0)
+    return float(np.mean(accepted / min(saved, steps)))
+
+
 def _assessable_ess(ess: float, draws: int) -> float:
     """ArviZ's bulk ESS, or NaN (not assessable) where it exceeds the number of ``draws``: the
     draws of an ensemble are positively correlated, and ArviZ reports up to N log10 N (80.7
@@ -339,7 +354,7 @@ def summarise(
         ppc=ppc,
         failures=dict(post.failures),
         evaluations=post.evaluations,
-        acceptance=float(np.mean(sampler.acceptance_fraction)),
+        acceptance=_acceptance(sampler, steps),
         steps=steps,
         burn=burn,
         warnings=notes,
