@@ -34,7 +34,7 @@ def test_near_90_deg_the_angle_is_named():
     r = _warnings(angle="89.5 deg", mu=0.0)
     assert r.duration == pytest.approx(35.88e-3, rel=1e-3)
     (cond,) = r.warnings
-    assert "a 1 % error in the angle moves T by about 179 %" in cond
+    assert "an error of 0.1 deg in the angle moves T by about 20 %" in cond
     assert "0.5 deg from vertical" in cond
 
 

@@ -5,7 +5,6 @@ today's numbers where it is absent."""
 from __future__ import annotations
 
 import math
-import warnings
 
 import pytest
 
@@ -70,10 +69,10 @@ def test_a_reversing_slip_is_bounded_and_warned():
     text = str(rec[0].message)
     assert f"T lies between {low:.4g} s" in text and f"and {res.duration:.4g} s" in text
     assert res.warnings == (text,)
-    # within 3 sigma of 0 the sign is not measured: no warning
-    with warnings.catch_warnings():
-        warnings.simplefilter("error")
-        _invert(r, deg, sliding_length=r.sliding_length, vt_in=(r.vt_in, 0.2))
+    # within 3 sigma of 0: no bounds of the nominal T, but the Monte Carlo's samples above 0
+    with pytest.warns(il.ImplausibleInputWarning, match=r"Monte Carlo samples have vt_in > 0"):
+        within = _invert(r, deg, sliding_length=r.sliding_length, vt_in=(r.vt_in, 0.2))
+    assert not any("T lies between" in w for w in within.warnings)
 
 
 def test_vt_in_at_or_beyond_alpha_vi_is_refused():

@@ -134,10 +134,10 @@ def test_a_bare_value_of_an_implausible_magnitude_is_refused(text: str, message:
 def test_a_material_of_implausible_values_warns() -> None:
     """Material(E=200, ...) in Pa (GPa meant) warns naming each value; plausible ones do not."""
     with pytest.warns(ImplausibleInputWarning) as record:
-        Material("x", E=200, nu=0.3, yield_strength=0.3)
+        Material("x", E=200, nu=0.3, yield_strength=30.0)
     texts = [str(w.message) for w in record]
     assert any("E = 200.0 Pa lies outside the plausible range" in t for t in texts)
-    assert any("yield_strength = 0.3 Pa" in t for t in texts)
+    assert any("yield_strength = 30.0 Pa" in t for t in texts)
     with warnings.catch_warnings():
         warnings.simplefilter("error", ImplausibleInputWarning)
         Material("y", E=69e9, nu=0.33, yield_strength=276e6, density=2700.0)

@@ -16,6 +16,7 @@ from impactlab.analytic.closed_forms import duration_from_dent
 from impactlab.analytic.result import Measured
 
 __all__ = [
+    "ANGLE_STEP_DEG",
     "CONDITION_LIMIT",
     "REVERSAL_SIGMAS",
     "check_coefficients",
@@ -30,8 +31,13 @@ __all__ = [
 #: paper's three drops give at most 2.8 (the angle at 70 deg).
 CONDITION_LIMIT = 10.0
 #: A positive vt_in more than this many sigmas above 0 draws the warning of a reversing slip
-#: (within it, the sign of vt_in is not measured).
+#: with T's bounds (within it, the Monte Carlo's samples with vt_in > 0 are weighed instead:
+#: ``monte_carlo.REVERSAL_LEAN``).
 REVERSAL_SIGMAS = 3.0
+#: The angle error [deg] whose effect on T the warning of an ill-conditioned T quotes (an
+#: angle's error is absolute: 1 % of 89.9 deg would pass 90 deg); within twice it of 90 deg
+#: the warning says that it reaches towards 90 deg instead.
+ANGLE_STEP_DEG = 0.1
 
 
 def check_direction(
@@ -74,7 +80,8 @@ def check_conditioning(
 ) -> bool:
     """ImplausibleInputWarning, and True, where T [s] is ill-conditioned: |d ln T / d ln mu| or
     |d ln T / d ln angle| (from the sensitivities ``sens_T``) above ``CONDITION_LIMIT``. The
-    text names alpha, mu_c and how close mu lies to it, and the angle's distance from 90 deg
+    text quotes what a 1 % error in mu, or an error of ``ANGLE_STEP_DEG`` in the angle, does
+    to T, names alpha, mu_c and how close mu lies to it, and the angle's distance from 90 deg
     where that is under 10 deg."""
     mu, th = meas["mu"].value, meas["angle"].value
     rel = {
@@ -90,10 +97,22 @@ def check_conditioning(
     where = f"mu = {mu:.4g} lies {near} mu_c = {mu_c:.4g} at angle = {deg:.4g} deg"
     if deg > 80.0:
         where += f" (the rod {90.0 - deg:.3g} deg from vertical, where alpha and mu_c -> 0)"
+    if worst == "mu":
+        moves = f"a 1 % error in mu moves T by about {rel['mu']:.3g} %"
+    elif 90.0 - deg > 2.0 * ANGLE_STEP_DEG:  # an absolute step, well short of 90 deg
+        moves = (
+            f"an error of {ANGLE_STEP_DEG:g} deg in the angle moves T by about "
+            f"{rel[worst] * ANGLE_STEP_DEG / deg * 100.0:.3g} %"
+        )
+    else:  # a first-order change means nothing where the step reaches 90 deg
+        moves = (
+            f"an error of {ANGLE_STEP_DEG:g} deg in the angle is over half its distance to "
+            f"90 deg ({90.0 - deg:.2g} deg), where T diverges"
+        )
     warn_implausible(
-        f"T is ill-conditioned here: a 1 % error in {worst} moves T by about "
-        f"{rel[worst]:.3g} % (|d ln T/d ln mu| = {rel['mu']:.3g}, |d ln T/d ln angle| = "
-        f"{rel['the angle']:.3g}, above {CONDITION_LIMIT:g}): T ~ 1/|alpha|, and "
+        f"T is ill-conditioned here: {moves} (|d ln T/d ln mu| = {rel['mu']:.3g}, "
+        f"|d ln T/d ln angle| = {rel['the angle']:.3g}, above {CONDITION_LIMIT:g}): "
+        "T ~ 1/|alpha|, and "
         f"alpha = {alpha:.3g} changes fast towards 0 at mu_c; {where}. T is only as good as mu "
         "and the angle are known"
     )

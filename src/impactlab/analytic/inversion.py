@@ -36,6 +36,7 @@ from impactlab.analytic._measurements import check_plausible, measurements
 from impactlab.analytic.closed_forms import G0, check_sliding, coefficients, duration_from_dent
 from impactlab.analytic.monte_carlo import (
     MC_REJECTED_WARNING,
+    REVERSAL_LEAN,
     SPREAD_ROUNDING,
     monte_carlo,
     point_distribution,
@@ -47,6 +48,7 @@ __all__ = [
     "CONDITION_LIMIT",
     "MC_REJECTED_WARNING",
     "MIN_STEP",
+    "REVERSAL_LEAN",
     "REVERSAL_SIGMAS",
     "SPREAD_ROUNDING",
     "invert",
@@ -69,10 +71,11 @@ def _core(
     gravity: bool,
     g: float,
     travel: bool = False,
-) -> tuple[Any, Any, Any, Any]:
-    """(T, F, valid, stuck) for arrays of inputs (magnitudes; ``dv_cy`` and ``vt_in`` may be
-    absent); ``stuck`` marks alpha >= 0: the sticking regime (mu >= mu_c), or a patch's travel
-    that turns."""
+) -> tuple[Any, Any, Any, Any, Any]:
+    """(T, F, valid, stuck, past) for arrays of inputs (magnitudes; ``dv_cy`` and ``vt_in`` may
+    be absent); ``stuck`` marks alpha >= 0: the sticking regime (mu >= mu_c), or a patch's
+    travel that turns; ``past`` marks vt_in >= |alpha| |v_i| outside it: the pole of Eq. 12,
+    where the tip need not slide towards -x."""
     th, mu = x["angle"], x["mu"]
     *_, K_y, al, mu_c = coefficients(th, mu, m, L, R, inertia, travel)
     vi, dp, ls = x["v_i"], x["delta_p"], x["sliding_length"]
@@ -80,7 +83,11 @@ def _core(
     valid = (th >= 0) & (th <= HALF_PI) & (mu >= 0) & ~stuck & (vi > 0) & (dp >= 0) & (ls > 0)
     with np.errstate(all="ignore"):
         # the tip's incoming tangential velocity vt_in <= 0 (docs/analytic.md, Sec. 5)
-        vi_t = vi - x["vt_in"] / np.abs(al) if "vt_in" in x else vi
+        if "vt_in" in x:
+            vi_t = vi - x["vt_in"] / np.abs(al)
+            past = ~stuck & (vi > 0) & (vi_t <= 0)
+        else:
+            vi_t, past = vi, np.zeros_like(stuck)
         valid = valid & (vi_t > 0)
         T = duration_from_dent(dp, ls, vi_t, np.abs(al), gravity, g)
         if "dv_cy" in x:
@@ -91,7 +98,7 @@ def _core(
             valid = valid & (e >= 0) & (e <= 1)
             F = ((1.0 + e) * vi + (g * T if gravity else 0.0)) / (K_y * T)
     valid = valid & np.isfinite(T) & np.isfinite(F) & (T > 0)
-    return T, F, valid, stuck
+    return T, F, valid, stuck, past
 
 
 def _sensitivities(
@@ -172,10 +179,8 @@ def _forces(
     and Eq. 29 (with dv_cy), each None without its input."""
     F_rig = F_mom = None
     if "e" in meas:  # the rigid-body identity
-        F_rig = float(
-            ((1.0 + meas["e"].value) * meas["v_i"].value + (g * T0 if gravity else 0.0))
-            / (K_y * T0)
-        )
+        e, v = meas["e"].value, meas["v_i"].value
+        F_rig = float(((1.0 + e) * v + (g * T0 if gravity else 0.0)) / (K_y * T0))
     if "dv_cy" in meas:  # Eq. 29
         F_mom = float(m * meas["dv_cy"].value / T0 + (m * g if gravity else 0.0))
     return F_rig, F_mom
@@ -262,8 +267,8 @@ def invert(
         v_Cx + (b - R) omega, for ``"travel"``. Default 0 (the paper: no tangential velocity, no
         spin; left out of ``inputs``). Eq. 12 then reads T = (delta_p + |L_s|/|alpha|) /
         (|v_i| - vt_in/|alpha|), exact for vt_in <= 0 (docs/analytic.md); for vt_in > 0 the
-        sliding reverses, and beyond 3 sigma a warning gives the bounds of T; vt_in >=
-        |alpha| |v_i| is refused.
+        sliding reverses and T is an upper bound (warned: see below); vt_in >= |alpha| |v_i|
+        is refused.
     rod : an ``impactlab.bodies.Rod``; default the paper's rod (``impactlab.bodies.PAPER_ROD``).
     gravity : include gravity during the contact (adds g T^2 / 2 to Eq. 12 and the gravity impulse
         to Eq. 29); False reproduces the paper's equations.
@@ -281,9 +286,11 @@ def invert(
     ImplausibleInputWarning for a dent shallower than 0.1 um or deeper than a tenth of the tip
     radius, |v_i| below 1 mm/s, |v_i| or dv_cy above 100 m/s, a nominal duration
     above 0.1 s, a Monte Carlo that discards more than 5 % of its samples (``mc_rejected``;
-    ``mc_used`` samples kept), or any sample in the sticking regime: T has a heavy tail there,
-    its Monte Carlo mean and standard deviation are unreliable, its median and interval are not;
-    and for an ill-conditioned T: |d ln T/d ln mu| or |d ln T/d ln angle| above 10
+    ``mc_used`` samples kept), or any sample in the sticking regime or at vt_in >= |alpha| |v_i|:
+    T has a heavy tail there, its Monte Carlo mean and standard deviation are unreliable, its
+    median and interval are not; a vt_in more than 3 sigma above 0 (with T's bounds), or more
+    than 5 % of the samples above 0 that move T's median or interval (``REVERSAL_LEAN``); and
+    for an ill-conditioned T: |d ln T/d ln mu| or |d ln T/d ln angle| above 10
     (``CONDITION_LIMIT``), near mu_c or 90 deg, where alpha -> 0.
 
     Returns an :class:`InversionResult` with ``duration`` and ``mean_force``, their first-order
@@ -351,7 +358,7 @@ def _result(
         travel=opt["travel"],
     )
     nominal = {k: np.float64(v.value) for k, v in meas.items()}
-    T0_a, F0_a, ok, _ = core(nominal)
+    T0_a, F0_a, ok, *_ = core(nominal)
     T0 = float(T0_a)
     check_finite_result({"duration": T0, "mean_force": float(F0_a)}, meas, rod)
     if not bool(ok):  # pragma: no cover - guarded by the checks above
@@ -365,11 +372,8 @@ def _result(
     F_rig, F_mom = _forces(meas, m, K_y, T0, opt["gravity"], opt["g"])
     if "dv_cy" in meas:
         _check_momentum(meas, m, K_y, T0, opt["g"] if opt["gravity"] else 0.0)
-    mc = (
-        monte_carlo(meas, opt["n_samples"], opt["seed"], core)
-        if varied
-        else point_distribution(T0, float(F0_a))
-    )
+    mc_args = (meas, opt["n_samples"], opt["seed"], core, abs(al), opt["gravity"])
+    mc = monte_carlo(*mc_args) if varied else point_distribution(T0, float(F0_a))
     check_finite_result(mc, meas, rod)
     return InversionResult(
         duration=T0,

@@ -1,18 +1,27 @@
 """The inversion's Monte Carlo: T and F of samples of the measured inputs (normal draws), their
 means, spreads, medians and 95 % intervals, and the warnings when the samples reach the
-sticking regime or are discarded; the point distribution of inputs without any sigma."""
+sticking regime or the pole of Eq. 12 in vt_in, are discarded, or reverse their sliding
+(vt_in > 0); the point distribution of inputs without any sigma."""
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
 
 from impactlab._validation import warn_implausible
+from impactlab.analytic._conditioning import REVERSAL_SIGMAS
 from impactlab.analytic.result import MC_INTERVAL, Measured
 
-__all__ = ["MC_REJECTED_WARNING", "SPREAD_ROUNDING", "monte_carlo", "point_distribution"]
+__all__ = [
+    "MC_REJECTED_WARNING",
+    "REVERSAL_LEAN",
+    "SPREAD_ROUNDING",
+    "monte_carlo",
+    "point_distribution",
+]
 
 #: A Monte Carlo that discards more than this share of its samples (sticking regime or out of
 #: range) draws an ImplausibleInputWarning: its mean and spread then describe a truncated
@@ -22,22 +31,34 @@ MC_REJECTED_WARNING = 0.05
 #: A Monte Carlo standard deviation below this fraction of its mean is rounding (T when only
 #: dv_cy is uncertain, which T does not depend on) and is reported as 0.
 SPREAD_ROUNDING = 1e-12
+#: Where more than ``MC_REJECTED_WARNING`` of the kept samples have vt_in > 0 (their T from
+#: Eq. 12 only an upper bound), an ImplausibleInputWarning gives T's median and interval with
+#: vt_in > 0 taken as 0 (the lower bound) when one of the three moves by more than this share
+#: of the interval's width (about one standard deviation of a normal T).
+REVERSAL_LEAN = 0.25
 
 
 def monte_carlo(
-    meas: Mapping[str, Measured], n: int, seed: int | None, core: Any
+    meas: Mapping[str, Measured],
+    n: int,
+    seed: int | None,
+    core: Any,
+    abs_alpha: float = math.nan,
+    gravity: bool = False,
 ) -> dict[str, Any]:
     """Means, standard deviations, medians, 95 % intervals (``MC_INTERVAL`` percentiles), the
     rejected fraction and the number of samples kept of ``n`` samples of the inputs ``meas``
     (at least one with a sigma), T and F from ``core``; ImplausibleInputWarning
-    when more than ``MC_REJECTED_WARNING`` of them are discarded, and when any falls in the
-    sticking regime (the spread of T is then unreliable: :func:`_warn_heavy_tail`)."""
+    when more than ``MC_REJECTED_WARNING`` of them are discarded, when any falls in the
+    sticking regime or reaches vt_in >= |alpha| |v_i| (``abs_alpha`` = |alpha| at the nominal
+    inputs; the spread of T is then unreliable: :func:`_warn_heavy_tail`, :func:`_warn_pole`),
+    and where samples with vt_in > 0 move T's median or interval (:func:`_check_reversal`)."""
     rng = np.random.default_rng(seed)
     samples = {
         k: (v.value + v.sigma * rng.standard_normal(n)) if v.sigma > 0 else np.full(n, v.value)
         for k, v in meas.items()
     }
-    Ts, Fs, ok, stuck = (np.broadcast_to(v, (n,)) for v in core(samples))
+    Ts, Fs, ok, stuck, past = (np.broadcast_to(v, (n,)) for v in core(samples))
     rejected = 1.0 - float(np.mean(ok))
     Tv, Fv = Ts[ok], Fs[ok]
     if Tv.size < 2:
@@ -55,6 +76,12 @@ def monte_carlo(
     n_stuck = int(np.count_nonzero(stuck))
     if n_stuck:
         _warn_heavy_tail(n_stuck, n)
+    n_past = int(np.count_nonzero(past))
+    if n_past:
+        _warn_pole(n_past, n, meas, abs_alpha, gravity)
+    vt = meas.get("vt_in")
+    if vt is not None and vt.sigma > 0.0 and not vt.value > REVERSAL_SIGMAS * vt.sigma:
+        _check_reversal(meas, samples, Tv, ok, core)
     lo, hi = MC_INTERVAL
     return {
         "T_mc": float(np.mean(Tv)),
@@ -106,4 +133,63 @@ def _warn_heavy_tail(n_stuck: int, n: int) -> None:
         "and T_mc depend on the seed and the spread is unreliable; read T_median_mc and "
         f"T_interval_mc ({lo:g}-{hi:g} percentiles) instead, or narrow the sigmas of mu and "
         "the angle"
+    )
+
+
+def _warn_pole(
+    n_past: int, n: int, meas: Mapping[str, Measured], abs_alpha: float, gravity: bool
+) -> None:
+    """ImplausibleInputWarning: ``n_past`` of ``n`` samples reached vt_in >= |alpha| |v_i|, the
+    pole of Eq. 12, T = (|delta_p| + |L_s|/|alpha|) / (|v_i| - vt_in/|alpha|): vt_in passes it
+    linearly, so (without gravity) the density of T falls as 1/T^2 as at alpha -> 0."""
+    vt = meas["vt_in"]
+    lo, hi = MC_INTERVAL
+    given = f"{vt.value:.4g} +- {vt.sigma:.2g} m/s" if vt.sigma > 0 else f"{vt.value:.4g} m/s"
+    grows = (
+        "grows steeply (to sqrt(2 (|delta_p| + |L_s|/|alpha|)/g) at it, with gravity)"
+        if gravity
+        else "grows without limit: a heavy tail without a finite variance"
+    )
+    warn_implausible(
+        f"{n_past} of the {n} Monte Carlo samples ({n_past / n:.2%}) reached vt_in >= |alpha| "
+        f"|v_i|, the pole of Eq. 12 ({abs_alpha * meas['v_i'].value:.4g} m/s at the nominal "
+        f"inputs; vt_in = {given} was given): there the tip need not slide towards -x and "
+        "Eq. 12 gives no T, so they were discarded, and towards the pole Eq. 12's T "
+        f"(for vt_in > 0 only an upper bound) {grows}, so sigma_T_mc and T_mc (and F's) depend "
+        f"on the seed and the spread is unreliable; read T_median_mc and T_interval_mc "
+        f"({lo:g}-{hi:g} percentiles) instead, and narrow the sigma of vt_in (or of mu, the "
+        "angle and v_i) or check its sign (along +x, towards the centre of mass)"
+    )
+
+
+def _check_reversal(
+    meas: Mapping[str, Measured], samples: Mapping[str, Any], Tv: Any, ok: Any, core: Any
+) -> None:
+    """ImplausibleInputWarning where more than ``MC_REJECTED_WARNING`` of the kept samples
+    (``ok``, their T ``Tv``) have vt_in > 0, whose T from Eq. 12 is only an upper bound (the
+    sliding reverses; docs/analytic.md, Sec. 5), and taking their vt_in as 0 (the lower bound)
+    moves T's median or an end of its interval by more than ``REVERSAL_LEAN`` of the
+    interval's width: the warning gives both."""
+    n_pos = int(np.count_nonzero(ok & (samples["vt_in"] > 0.0)))
+    if n_pos <= MC_REJECTED_WARNING * Tv.size:
+        return
+    low = dict(samples)
+    low["vt_in"] = np.minimum(samples["vt_in"], 0.0)
+    T_low = np.broadcast_to(core(low)[0], ok.shape)[ok]
+    q = (50.0, *MC_INTERVAL)
+    upper, lower = np.percentile(Tv, q), np.percentile(T_low, q)
+    if not np.max(np.abs(upper - lower)) > REVERSAL_LEAN * (upper[2] - upper[1]):
+        return
+    vt = meas["vt_in"]
+    nominal = f" (the duration given, at vt_in = {vt.value:.4g} m/s, is an upper bound too)"
+    nominal = nominal if vt.value > 0.0 else ""
+    warn_implausible(
+        f"{n_pos / Tv.size:.1%} of the Monte Carlo samples have vt_in > 0 (vt_in = "
+        f"{vt.value:.4g} +- {vt.sigma:.2g} m/s): there the tip first slides towards +x and its "
+        "sliding reverses, which Eq. 12 does not describe, and their T is only an upper bound "
+        f"(docs/analytic.md, Sec. 5); T_median_mc = {upper[0]:.4g} s and T_interval_mc "
+        f"({upper[1]:.4g}, {upper[2]:.4g}) s take the upper bounds, with vt_in > 0 taken as 0 "
+        f"(the lower bound) they are {lower[0]:.4g} s and ({lower[1]:.4g}, {lower[2]:.4g}) s, "
+        f"and T (and F) lie between{nominal}; measure vt_in more precisely, or check its sign "
+        "(along +x, towards the centre of mass)"
     )

@@ -114,15 +114,18 @@ def heavy_rod_problem(L: float, R: float, m: float, material: Material) -> str |
     ``R`` [m] (None when it is not): the diameter a uniform rod of the material's density
     would have, sqrt(4 m / (pi rho L)), exceeds 2R (:func:`tip_width_problem`, the text
     ``FlexibleRod`` refuses with) and the mass is over :data:`HEAVY_ROD_FACTOR` times that of
-    a uniform rod as wide as the tip."""
-    ratio = m / (material.density * math.pi * R * R * L)
+    a uniform rod as wide as the tip; None without the material's density."""
+    rho = material.density
+    if rho is None:
+        return None
+    ratio = m / (rho * math.pi * R * R * L)
     if not ratio > HEAVY_ROD_FACTOR:
         return None
-    d = math.sqrt(4.0 * m / (math.pi * material.density * L))
+    d = math.sqrt(4.0 * m / (math.pi * rho * L))
     problem = tip_width_problem(R, d, IMPLIED_DIAMETER)
     return (
         f"{problem}; the mass is {ratio:.3g} times that of a uniform rod of the material "
-        f"(rho = {material.density:.4g} kg/m^3) as wide as the tip (warned above "
+        f"(rho = {rho:.4g} kg/m^3) as wide as the tip (warned above "
         f"{HEAVY_ROD_FACTOR:g}: a unit mistake?); a Rod takes its mass as given: for one that "
         "is not a uniform section (a heavy head), give its inertia"
     )
@@ -138,7 +141,10 @@ DENSE_SPHERE_FACTOR = 100.0
 
 def dense_sphere_problem(R: float, m: float, material: Material) -> str | None:
     """Why a sphere's mass ``m`` [kg] is implausible for its radius ``R`` [m] (None when it is
-    not): over :data:`DENSE_SPHERE_FACTOR` times that of a solid sphere of the material."""
+    not): over :data:`DENSE_SPHERE_FACTOR` times that of a solid sphere of the material; None
+    without the material's density."""
+    if material.density is None:
+        return None
     rho = m / (4.0 / 3.0 * math.pi * R**3)
     ratio = rho / material.density
     if not ratio > DENSE_SPHERE_FACTOR:
@@ -161,13 +167,15 @@ def rod_mass(L: float, m: float | None, d: float | None, material: Material) -> 
     """The mass [kg] of a uniform rod of circular section: ``m`` as given, or (None) from the
     diameter ``d``, the length ``L`` between the end-sphere centres and the material's density,
     rho pi d^2 / 4 L. ValueError when neither is given, or when both are and the density they
-    imply differs from the material's by more than :data:`DENSITY_TOLERANCE`."""
+    imply differs from the material's by more than :data:`DENSITY_TOLERANCE` (not checked
+    without the material's density; the mass from the diameter needs it)."""
     rho = material.density
     if m is None and d is None:
         raise ValueError("give the mass [kg] or the diameter [m] of the rod (or both)")
     if m is None:
+        rho = material.require_density("a rod's mass from its diameter", "give its mass=")
         return rho * math.pi * d * d / 4.0 * L  # type: ignore[operator]
-    if d is not None:
+    if d is not None and rho is not None:
         implied = m / (math.pi * d * d / 4.0 * L)
         if not abs(implied / rho - 1.0) <= DENSITY_TOLERANCE:
             raise ValueError(

@@ -146,6 +146,8 @@ def default_mode_count(sec: RodSection, theory: str, family: str) -> int:
 #: Largest relative difference between the density that mass, diameter and length imply
 #: (m / (pi d^2 / 4 L)) and the material's density when both mass and diameter are given.
 DENSITY_TOLERANCE = 0.02
+#: What needs a FlexibleRod's material density (``Material.require_density``'s words).
+FLEX_NEEDS = "a FlexibleRod (its mass, section and wave speeds)"
 #: Smallest slenderness L/d of a flexible rod: the beam modes describe a rod, not a block.
 MIN_SLENDERNESS = 2.0
 
@@ -154,7 +156,7 @@ def _check_geometry(L: float, m: float, d: float | None, material: Material) -> 
     """ValueError when the mass, the diameter (if given), the length and the material's density
     disagree by more than DENSITY_TOLERANCE, or when the rod is thicker than L / MIN_SLENDERNESS
     (the diameter from the mass if not given)."""
-    rho = material.density
+    rho = material.require_density(FLEX_NEEDS)
     if d is not None:
         implied = m / (math.pi * d * d / 4.0 * L)
         if not abs(implied / rho - 1.0) <= DENSITY_TOLERANCE:
@@ -249,7 +251,7 @@ class FlexibleRod:
             )
         plausible("tip_radius", R, PLAUSIBLE_RADIUS, "m")
         object.__setattr__(self, "material", check_material("material", self.material))
-        rho = self.material.density
+        rho = self.material.require_density(FLEX_NEEDS)
         if self.mass is None and self.diameter is None:
             raise ValueError("give the mass [kg] or the diameter [m] of the rod (or both)")
         d = None if self.diameter is None else checked_size("diameter", self.diameter)
@@ -308,7 +310,7 @@ class FlexibleRod:
         return RodSection(
             length=self.length,
             mass=cast(float, self.mass),  # a float after __post_init__
-            density=self.material.density,
+            density=self.material.require_density(FLEX_NEEDS),
             E=self.material.E,
             nu=self.material.nu,
             diameter=self.diameter,

@@ -66,7 +66,9 @@ class Sphere:
                 warn_implausible(problem)
         else:
             rho = (
-                self.material.density
+                self.material.require_density(
+                    "a Sphere's mass from its radius", "give the Sphere mass= or density="
+                )
                 if self.density is None
                 else check_positive("density", self.density, "kg/m^3")
             )

@@ -60,7 +60,7 @@ def materials(
             f"{m.nu:g}",
             f"{m.yield_strength / 1e6:.4g}",
             _hb(m.brinell_hardness),
-            f"{m.density:.0f}",
+            "-" if m.density is None else f"{m.density:.0f}",
             Text(m.condition or "paper, Table 1"),
         )
     console.print(table)

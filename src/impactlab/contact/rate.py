@@ -129,6 +129,8 @@ class FittedFor:
             ("yield strength", flat.yield_strength, self.yield_strength, 1e-6, "MPa"),
         )
         for what, value, (lo, hi), scale, unit in checks:
+            if value is None:  # a density not given: E and S_y identify the material
+                continue
             if not lo <= value <= hi:
                 return (
                     f"{what} = {value * scale:.4g} {unit} outside {lo * scale:.4g} to "

@@ -141,7 +141,7 @@ class Spread:
 
 
 def _material(d: dict[str, Any]) -> Material:
-    hb = d.get("brinell_hardness")
+    hb, rho = d.get("brinell_hardness"), d.get("density")
     return Material(
         d["name"],
         float(d["E"]),
@@ -149,7 +149,7 @@ def _material(d: dict[str, Any]) -> Material:
         float(d["yield_strength"]),
         math.nan if hb is None else float(hb),
         float(d.get("meyer_index", 2.2)),
-        float(d.get("density", 7850.0)),
+        None if rho is None else float(rho),
     )
 
 

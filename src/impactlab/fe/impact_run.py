@@ -71,10 +71,10 @@ def check_ccx_release(version: str, exe: str, problems: list[ImpactProblem]) -> 
 
 def deck_spec(problem: ImpactProblem, mesh: Mesh) -> ImpactDeckSpec:
     """The deck's inputs for ``problem`` on ``mesh``."""
-    flat_rho = problem.indentation.flat.density
+    flat = problem.indentation.flat
     return ImpactDeckSpec(
         base=problem.deck_spec(mesh.spec),
-        flat_density=float(flat_rho) if flat_rho else 7850.0,
+        flat_density=flat.require_density("the FE impact deck's flat (its inertia)"),
         sphere_density=problem.sphere_density,
         speed=problem.speed,
         gap=problem.gap,

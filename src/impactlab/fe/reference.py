@@ -46,7 +46,9 @@ RADIUS = 8.8e-3
 AL_6061_T6 = Material("6061-T6 aluminium", 68.9e9, 0.33, 276e6, 95.0, density=2700.0)
 #: A hard steel: AISI 4340 oil-quenched and tempered at 427 C (800 F): S_y 1379 MPa (200 ksi),
 #: Brinell 415 (vendor data sheet, 1 in round); E 205 GPa and nu 0.29 (ASM typical for 4340).
-AISI_4340_QT = Material("AISI 4340 Q&T 427 C (hard steel)", 205e9, 0.29, 1379e6, 415.0)
+AISI_4340_QT = Material(
+    "AISI 4340 Q&T 427 C (hard steel)", 205e9, 0.29, 1379e6, 415.0, density=7850.0
+)
 
 #: name -> (flat, sphere material, sphere kind). The flat is the body that yields in every case:
 #: the paper's pair (AISI 201 sphere, S_y 760 MPa, on AISI 1010, 305 MPa; both elastic-plastic),

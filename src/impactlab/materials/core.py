@@ -56,12 +56,38 @@ PLAUSIBLE: dict[str, tuple[float, float, str, str]] = {
     "brinell_hardness": (0.1, 1e4, _HB, "Pa"),
 }
 
+#: How far below :data:`PLAUSIBLE` a value is refused rather than warned about (a factor): no
+#: solid has it, and the contact laws' closed forms overflow or divide by zero long before (a
+#: yield strength of 1e-100 Pa). Above, only the warning: a stand-in for a rigid body is a
+#: material 10^9 times stiffer than steel on purpose.
+BEYOND_PLAUSIBLE = 1e3
+
 #: The fields that hold a material's values (what a library entry's source gives).
 _VALUES = ("E", "nu", "yield_strength", "brinell_hardness", "meyer_index", "density")
 
 
-def _differs(a: float, b: float) -> bool:
-    return not (a == b or (math.isnan(a) and math.isnan(b)))
+def _differs(a: float | None, b: float | None) -> bool:
+    both_nan = isinstance(a, float) and isinstance(b, float) and math.isnan(a) and math.isnan(b)
+    return not (a == b or both_nan)
+
+
+def hardness_below_yield(material: Material) -> str:
+    """Why ``material``'s Brinell hardness cannot be right ("" when it can): its pressure (HB
+    in kgf/mm^2, :func:`brinell_to_pa`) lies below the yield strength, while a hardness is about
+    3 S_y (Tabor): a unit slip. Checked where a user gives the values (``get_material``), not on
+    every Material: a copy with a changed yield strength (a sweep, a calibration) keeps the
+    library's hardness, which only Brake's law reads (and refuses in its own words)."""
+    if not material.has_hardness:
+        return ""
+    h = brinell_to_pa(material.brinell_hardness)
+    if h >= material.yield_strength:
+        return ""
+    return (
+        f"material {material.name!r}: brinell_hardness HB = {material.brinell_hardness:.4g} "
+        f"{_HB} ({h / 1e6:.4g} MPa) lies below the yield strength S_y = "
+        f"{material.yield_strength / 1e6:.4g} MPa, while a hardness is about 3 S_y; HB is in "
+        f"{_HB} (a Brinell number: HB 95 is 932 MPa), check its unit"
+    )
 
 
 @dataclass(frozen=True)
@@ -76,7 +102,9 @@ class Material:
     yield_strength : uniaxial yield strength S_y [Pa].
     brinell_hardness : Brinell hardness number HB [kgf/mm^2] (used by Brake's law).
     meyer_index : Meyer's strain-hardening index n (Brake's law), typically 2 to 2.5; must be > 2.
-    density : mass density [kg/m^3].
+    density : mass density [kg/m^3]; None (the default): not given, and whatever needs it (a
+        Sphere's or a Rod's mass from it, a FlexibleRod) refuses the material
+        (:meth:`require_density`). A flat's density plays no part in a rigid-body impact.
     condition : temper or condition the values belong to ("T6", "annealed", ...; text).
     source : key of the reference the values come from (``impactlab.references``; "" for
         values given by the user).
@@ -90,7 +118,10 @@ class Material:
     with units (``"200 GPa"``) or pint Quantities of any registry; nu and meyer_index are plain
     numbers. ValueError unless E, yield_strength, density and brinell_hardness (when given) are
     finite and > 0, nu lies in (-1, 0.5), meyer_index in (2, 3] and yield_strength < E; an
-    ImplausibleInputWarning for a value outside :data:`PLAUSIBLE` (most likely a unit left out).
+    ImplausibleInputWarning for a value outside :data:`PLAUSIBLE` (most likely a unit left out),
+    a ValueError for one :data:`BEYOND_PLAUSIBLE` times below it. A material by values
+    (``impactlab.get_material``'s text, mapping or TOML form) is also refused when its hardness
+    lies below its yield strength (:func:`hardness_below_yield`).
     """
 
     name: str
@@ -99,7 +130,7 @@ class Material:
     yield_strength: float
     brinell_hardness: float = math.nan
     meyer_index: float = 2.2
-    density: float = 7850.0
+    density: float | None = None
     condition: str = ""
     source: str = ""
     note: str = field(default="", compare=False, repr=False)
@@ -115,6 +146,8 @@ class Material:
             raise ValueError(f"brittle must be True or False, got {self.brittle!r}")
         object.__setattr__(self, "brittle", bool(self.brittle))
         for name, unit in (("E", "Pa"), ("yield_strength", "Pa"), ("density", "kg/m^3")):
+            if name == "density" and self.density is None:
+                continue
             value = check_positive(name, getattr(self, name), unit)
             object.__setattr__(self, name, value)
         object.__setattr__(
@@ -132,7 +165,14 @@ class Material:
         object.__setattr__(self, "meyer_index", n)
         for name, (low, high, unit, _) in PLAUSIBLE.items():
             value = getattr(self, name)
-            if not (low <= value <= high or math.isnan(value)):
+            if value is not None and value < low / BEYOND_PLAUSIBLE:
+                raise ValueError(
+                    f"material {self.name!r}: {name} = {value!r} {unit} lies below "
+                    f"{low / BEYOND_PLAUSIBLE:g} {unit}, {BEYOND_PLAUSIBLE:g} times below the "
+                    f"plausible [{low:g}, {high:g}] {unit}: a unit left out or a typo "
+                    f"(impactlab reads SI: {unit})"
+                )
+            if value is not None and not (low <= value <= high or math.isnan(value)):
                 warn_implausible(
                     f"material {self.name!r}: {name} = {value!r} {unit} lies outside the "
                     f"plausible range [{low:g}, {high:g}] {unit}; check the units (impactlab "
@@ -144,6 +184,19 @@ class Material:
                 f"E ({value_text(self.E, 'Pa')}); check the units"
             )
         self._relabel_if_changed()
+
+    def require_density(self, needed_for: str, instead: str = "") -> float:
+        """The density [kg/m^3]; ValueError where it was not given, naming the material,
+        ``needed_for`` (what needs it, e.g. "a Sphere's mass from its radius") and ``instead``
+        (another way, e.g. "give the Sphere mass= or density=")."""
+        if self.density is None:
+            other = f"; or {instead}" if instead else ""
+            raise ValueError(
+                f"material {self.name!r} has no density, which {needed_for} needs: give it "
+                "density= (kg/m^3; rho in the text form, e.g. 'E=69GPa, nu=0.33, Sy=276MPa, "
+                f"rho=2700kg/m^3'){other}"
+            )
+        return self.density
 
     def _relabel_if_changed(self) -> None:
         """A library entry changed in part (``dataclasses.replace(AISI_1010, E=69e9)``) keeps

@@ -30,7 +30,7 @@ from pathlib import Path
 from typing import Any
 
 from impactlab._validation import did_you_mean, read_text_file, value_text
-from impactlab.materials.core import PLAUSIBLE, Material, brinell_to_pa
+from impactlab.materials.core import PLAUSIBLE, Material, brinell_to_pa, hardness_below_yield
 from impactlab.materials.library import ALIASES, PRESETS
 from impactlab.units import read_minus, to_si
 
@@ -183,6 +183,9 @@ def from_values(values: Mapping[str, Any], where: str = "material") -> Material:
         material = Material(name=name, **fields)
     except ValueError as exc:
         raise ValueError(f"{where}: {exc}") from None
+    slip = hardness_below_yield(material)
+    if slip:
+        raise ValueError(f"{where}: {slip}")
     entry = _named_entry(name)
     if entry is None:
         return material
