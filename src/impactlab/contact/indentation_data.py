@@ -309,9 +309,9 @@ def _warn_raised(
     warnings.warn(
         f"curves {name!r}: delta_r/delta_max falls below a value before it and is raised onto "
         f"it (the tabulated law keeps it non-decreasing) by more than "
-        f"{RESIDUAL_RAISE_TOLERANCE:g}, the accuracy tolerance of delta_r/delta_max: "
-        f"{'; '.join(texts)}; the law's residual depth there is not the data's (check those "
-        "points)",
+        f"{RESIDUAL_RAISE_TOLERANCE:g} (the accuracy tolerance of delta_r/delta_max) at "
+        f"{len(texts)} point(s), each the data's ratio raised to the law's: {'; '.join(texts)}; "
+        "the law's residual depth there is not the data's (check those points)",
         ResidualRaisedWarning,
         stacklevel=4,
     )

@@ -8,7 +8,7 @@ delta_r(delta_max), given
 - as tables: ``IndentationCurves`` (measured data: ``IndentationCurves.from_arrays``,
   ``from_csv``; or FE curves), fitted and interpolated as the tabulated law does (loading: a
   constrained least-squares spline, ``contact.loading_fit``; residual depths: PCHIP, Fritsch &
-  Carlson 1980; leave-one-out error stated), or
+  Carlson 1980; cross-validated error stated: leave-one-out, 10-fold past 100 points), or
 - as Python callables ``loading(delta) -> F`` [m -> N] and ``unloading(delta_max) -> delta_r``
   [m -> m] of one pair and radius, sampled on ``points`` interferences spaced evenly in
   log(delta) from the elastic limit to ``delta_max``; the law built from the samples is
@@ -35,6 +35,7 @@ import numpy as np
 from impactlab._validation import check_finite, check_positive, warn_implausible
 from impactlab.contact._common import jg_critical
 from impactlab.contact.indentation_data import IndentationCurves, curves_from_record
+from impactlab.contact.loading_fit import held_out_method, scatter_note
 from impactlab.contact.names import Law
 from impactlab.contact.table_input import (
     HERTZ_TOLERANCE,
@@ -48,6 +49,7 @@ from impactlab.contact.tabulated import (
     interpolation_error,
     loading_fit,
     loading_points,
+    residual_points,
 )
 from impactlab.materials import ContactPair
 
@@ -87,7 +89,8 @@ def check_law_name(name: Any) -> str:
 def check_table_fit(name: str, curves: IndentationCurves) -> None:
     """ValueError where the law's loading fit of ``curves`` departs from a loading point past
     the first by more than ``TABLE_FIT_TOLERANCE`` in force, naming the largest departure,
-    the point (index, delta/delta_c, the data's F/F_Hertz) and what to check."""
+    the point (index, delta/delta_c, the data's F/F_Hertz) and what to check: scatter where
+    the departures look like it (``scatter_note``), else a rise of F/F_Hertz or a kink."""
     x, z = loading_points(curves)
     rel = np.expm1(1.5 * x[1:] - loading_fit(curves)(x[1:]) - z[1:])
     j = int(np.argmax(np.abs(rel)))
@@ -95,13 +98,16 @@ def check_table_fit(name: str, curves: IndentationCurves) -> None:
         return
     i = int(np.flatnonzero(curves.delta > curves.elastic_limit)[j])
     d, n = float(curves.delta[i]), curves.delta.size
+    scatter = scatter_note(rel)
+    what = scatter or (
+        ": check that F/F_Hertz never rises past the first point (the tabulated law keeps it "
+        "from rising, so that no impact gains energy) and that the forces hold no jump or kink"
+    )
     raise ValueError(
         f"law {name!r}: the law's loading fit departs from the data's force by "
         f"{float(rel[j]):+.3g} (relative) at loading point index {i} (data row {i + 1} of "
         f"{n}; delta/delta_c = {d:.4g}, the data's F/F_Hertz = {curves.force[i] / d**1.5:.4g}); "
-        f"the fit must stay within {100 * TABLE_FIT_TOLERANCE:g} % of every point: check that "
-        f"F/F_Hertz never rises past the first point (the tabulated law keeps it from rising, "
-        f"so that no impact gains energy) and that the forces hold no jump or kink"
+        f"the fit must stay within {100 * TABLE_FIT_TOLERANCE:g} % of every point{what}"
     )
 
 
@@ -109,8 +115,8 @@ class RegisteredLaw(Tabulated):
     """A user's contact law: the tabulated law of its ``curves`` under its own ``name``.
 
     ``sampling_error`` is (largest relative force error, largest delta_r/delta_max error):
-    against the callables for a sampled law, the leave-one-out error of the fit and the
-    interpolation for tables.
+    against the callables for a sampled law, the cross-validated error of the fit and the
+    interpolation for tables (``tabulated.interpolation_error``).
     """
 
     def __init__(
@@ -133,7 +139,11 @@ class RegisteredLaw(Tabulated):
         if sampling_error is None:
             sampling_error = interpolation_error(curves)
         self.sampling_error = (float(sampling_error[0]), float(sampling_error[1]))
-        how = "sampled from callables; error against them" if sampled else "leave-one-out error"
+        how = "sampled from callables; error against them"
+        if not sampled:
+            load = held_out_method(loading_points(curves)[0].size)
+            res = held_out_method(residual_points(curves)[0].size)
+            how = f"{load} error" if load == res else f"error by {load} (residual depths: {res})"
         self.validity = (  # type: ignore[misc]
             f"{curves.source}: the pair of the curves (E*/S_y = {curves.e_star_over_sy:.4g} "
             f"within 5 %, nu = {curves.nu:g} within 0.03); delta up to the last tabulated point "
@@ -274,7 +284,7 @@ def _check_switch(
         f"{100 * off:+.1f} % from Hertz's {hertz:.4g} N for this pair and radius = "
         f"{radius:.4g} m (the law is Hertz up to the switch: within "
         f"{100 * HERTZ_TOLERANCE:g} % needed): give switch_interference=<where F leaves Hertz>"
-        + radius_hint(off, radius)
+        + radius_hint(off, radius, pair)
     )
 
 
@@ -358,12 +368,12 @@ def sample_law(
     r_model = np.array([model.unload(float(d)).delta_r for d in check])
     r_err = (r_model - _values("unloading", unloading, check)) / check
     worst = (float(np.max(np.abs(f_err))), float(np.max(np.abs(r_err))))
-    for label, err, unit in (("force", f_err, "relative"), ("delta_r/delta_max", r_err, "")):
+    for label, err, unit in (("force", f_err, " (relative)"), ("delta_r/delta_max", r_err, "")):
         i = int(np.argmax(np.abs(err)))
         if abs(err[i]) > tolerance:
             raise ValueError(
                 f"law {name!r}: the law sampled on {points} points departs from the callable's "
-                f"{label} by {float(err[i]):+.3g} {unit} at delta = {float(check[i]):.4g} m "
+                f"{label} by {float(err[i]):+.3g}{unit} at delta = {float(check[i]):.4g} m "
                 f"(tolerance {tolerance:g}): give more points, or check that F/F_Hertz never "
                 f"rises and delta_r/delta_max never falls (the tabulated law enforces both)"
             )

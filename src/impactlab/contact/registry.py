@@ -82,6 +82,18 @@ def get_law(name: str | Law) -> ContactLaw:
         ) from None
 
 
+def _check_twin(name: str) -> None:
+    """ValueError where a registered user law's name reads as ``name`` with '_' for '-' (or
+    '-' for '_'): two such names would read as one law (built-in names: ``check_law_name``)."""
+    key = name.replace("_", "-")
+    twin = next((n for n in _USER if n != name and n.replace("_", "-") == key), None)
+    if twin is not None:
+        raise ValueError(
+            f"law name {name!r} reads as the registered law {twin!r} ('_' for '-') and cannot be "
+            f"registered: choose another name (or use {twin!r}, to mean that law)"
+        )
+
+
 def add_law(law: RegisteredLaw) -> RegisteredLaw:
     """Register the built law ``law`` under its name (see ``register_law``); returns the law
     registered under that name (the one given, or the equal one already there)."""
@@ -93,6 +105,7 @@ def add_law(law: RegisteredLaw) -> RegisteredLaw:
             f"law name {name!r} is a built-in law's and cannot be registered again; "
             f"built-in: {', '.join(builtin_law_names())}"
         )
+    _check_twin(name)
     fingerprint = law.fingerprint()
     taken = _TAKEN.get(name)
     if taken is not None and taken != fingerprint:
@@ -139,7 +152,8 @@ def register_law(
     tabulated law of those curves (``law_id`` TABULATED): valid for pairs with the curves'
     E*/S_y and nu, up to the last tabulated interference. ValueError for a built-in name (or
     one with '_' for its '-'), a name already registered with other data, bad tables or
-    callables (naming the value).
+    callables (naming the value), and a name that reads as a registered one's with '_' for
+    '-' (``ok_law`` beside ``ok-law``).
     ``switch_interference`` [m]: where the sampled law leaves Hertz (default: the pair's
     Jackson-Green delta_c); ``elastic_limit`` is its name before 0.3 (a DeprecationWarning;
     ``IndentationCurves.elastic_limit`` is the same point as delta/delta_c). The lengths
@@ -163,6 +177,7 @@ def register_law(
             f"law name {name!r} is a built-in law's and cannot be registered again; "
             f"built-in: {', '.join(builtin_law_names())}"
         )
+    _check_twin(name)
     sampled = loading is not None or unloading is not None
     if curves is not None and sampled:
         raise ValueError("give either curves or loading and unloading callables, not both")

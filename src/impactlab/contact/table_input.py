@@ -24,6 +24,8 @@ MIN_RESIDUAL_POINTS = 2
 END_RTOL = 1e-6
 #: Largest relative difference from Hertz allowed at the first point of measured data.
 HERTZ_TOLERANCE = 0.05
+#: A loading force that falls by less than this (relative) is most likely the rows' scatter.
+SCATTER_DROP = 0.03
 
 
 def two(a: float, b: float, unit: str = "") -> str:
@@ -67,6 +69,45 @@ def _unit_hint(values: np.ndarray, radius: float, span: tuple[float, float] | No
     return " (lengths in m)"
 
 
+def _drop_hint(before: float, after: float) -> str:
+    """For a force that falls from ``before`` to ``after`` [N] by less than ``SCATTER_DROP``
+    (relative): a hint that the rows' scatter is the likely cause, and what to do."""
+    drop = 1.0 - after / before
+    if not drop < SCATTER_DROP:
+        return ""
+    return (
+        f"; a drop of {100 * drop:.2g} %, the size of measured scatter between close rows: "
+        "average repeated indentations or smooth the forces (docs/laws/user.md, 'Scattered "
+        "data')"
+    )
+
+
+def _near_hertz(off: float) -> bool:
+    """Whether a force ``off`` (relative) from Hertz's is within a factor ``NEAR_HERTZ``."""
+    return 1.0 / NEAR_HERTZ <= 1.0 + off <= NEAR_HERTZ
+
+
+def _loading_hint(pair: ContactPair, R: float, d: np.ndarray, f: np.ndarray) -> str:
+    """Why the loading table's ``d`` [m] reach the radius ``R`` [m], judged by Hertz's force at
+    the first point (``f`` [N]): a radius 1000 (or 10^6) times too small where that puts every
+    delta below it and the first force near Hertz's; else a unit of the table that does; else
+    a reminder that both are in m."""
+    d0, f0 = float(d[0]), float(f[0])
+    for factor, meant in ((1e3, "'um' for 'mm'"), (1e6, "'um' for 'm'")):
+        big = R * factor
+        off = hertz_offset(pair, big, d0, f0)[1]
+        if d.max() < big <= PLAUSIBLE_RADIUS[1] and _near_hertz(off):
+            return (
+                f" (the radius looks {factor:g} times too small, not the data: with radius = "
+                f'{big:.4g} m, "{big * 1e3:.4g} mm", every delta lies below it and the first '
+                f"force is {100 * off:+.1f} % from Hertz's: {meant}?)"
+            )
+    for unit, size in _WRONG_UNITS:
+        if d.max() * size < R and _near_hertz(hertz_offset(pair, R, d0 * size, f0)[1]):
+            return f" (written in {unit}? give them in m)"
+    return f" (lengths in m: check the unit of the radius, {R:.4g} m, and of the table)"
+
+
 def check_loading(pair: ContactPair, R: float, d: np.ndarray, f: np.ndarray, rows: Rows) -> None:
     """The loading table (delta [m], F [N]) of ``pair`` with a sphere of radius ``R`` [m]:
     delta, F > 0 (its first point is the elastic limit, where the law leaves Hertz), delta
@@ -100,7 +141,7 @@ def check_loading(pair: ContactPair, R: float, d: np.ndarray, f: np.ndarray, row
             rows.at(
                 i,
                 f"{F} must not decrease along the loading curve, got "
-                f"{two(f[i - 1], f[i], 'N')} ({D} = {d[i]:.4g} m)",
+                f"{two(f[i - 1], f[i], 'N')} ({D} = {d[i]:.4g} m)" + _drop_hint(f[i - 1], f[i]),
             )
         )
     if d.size and d[-1] >= R:
@@ -109,7 +150,7 @@ def check_loading(pair: ContactPair, R: float, d: np.ndarray, f: np.ndarray, row
             rows.at(
                 i,
                 f"{D} = {d[i]:.4g} m is not smaller than the sphere radius "
-                f"{R:.4g} m" + _unit_hint(d, R, None),
+                f"{R:.4g} m" + _loading_hint(pair, R, d, f),
             )
         )
     if d.size - 1 < MIN_LOADING_POINTS:
@@ -130,7 +171,7 @@ def check_loading(pair: ContactPair, R: float, d: np.ndarray, f: np.ndarray, row
                 f"{F} at the first loading point ({D} = {d0:.4g} m) is "
                 f"{f0:.4g} N, {100 * off:+.1f} % from Hertz's {hertz:.4g} N "
                 "for this pair and radius: the data must start in the "
-                f"elastic range (within {100 * HERTZ_TOLERANCE:g} %)" + radius_hint(off, R),
+                f"elastic range (within {100 * HERTZ_TOLERANCE:g} %)" + radius_hint(off, R, pair),
             )
         )
 
@@ -139,8 +180,12 @@ def check_loading(pair: ContactPair, R: float, d: np.ndarray, f: np.ndarray, row
 #: contact layer does not import the bodies).
 PLAUSIBLE_RADIUS = (1e-6, 0.5)
 #: A force this many times Hertz's at the first loading point, or this many times smaller,
-#: is most likely a unit mistake (of the radius, or of the tables) rather than data.
+#: is most likely a unit mistake (of the radius, or of the tables) or a wrong material rather
+#: than data.
 UNIT_MISMATCH = 3.0
+#: A unit that puts the first loading force within this factor of Hertz's is the one a hint
+#: suggests.
+NEAR_HERTZ = 1.5
 
 
 def hertz_offset(pair: ContactPair, R: float, d0: float, f0: float) -> tuple[float, float]:
@@ -150,25 +195,34 @@ def hertz_offset(pair: ContactPair, R: float, d0: float, f0: float) -> tuple[flo
     return hertz, f0 / hertz - 1.0
 
 
-def radius_hint(off: float, R: float) -> str:
-    """A hint that a unit is wrong where the force is off Hertz's by more than a factor
-    ``UNIT_MISMATCH`` (``off``: relative difference): the radius in mm or um where that puts
-    the force near Hertz's (Hertz's force grows as sqrt(R)), else every unit; empty when the
-    force is nearer."""
+def radius_hint(off: float, R: float, pair: ContactPair | None = None) -> str:
+    """A hint that a unit or the materials are wrong where the force is off Hertz's by more
+    than a factor ``UNIT_MISMATCH`` (``off``: relative difference): the radius in mm or um
+    where that puts the force near Hertz's (Hertz's force grows as sqrt(R)), else every unit
+    and ``pair``'s E* (Hertz's force grows as E*) with the E* the force would fit; empty when
+    the force is nearer."""
     ratio = 1.0 + off
     if not ratio > 0.0 or 1.0 / UNIT_MISMATCH <= ratio <= UNIT_MISMATCH:
         return ""
     factor = f"; a factor {max(ratio, 1.0 / ratio):.3g} from Hertz's is most likely a unit mistake"
     for unit, size in (("mm", 1e-3), ("um", 1e-6)):
         fits = ratio / math.sqrt(size)
-        if 1.0 / 1.5 <= fits <= 1.5 and PLAUSIBLE_RADIUS[0] <= R * size <= PLAUSIBLE_RADIUS[1]:
+        if _near_hertz(fits - 1.0) and PLAUSIBLE_RADIUS[0] <= R * size <= PLAUSIBLE_RADIUS[1]:
             return (
                 f"{factor}: radius = {R:.4g} m is in metres (a bare number is metres); with "
                 f'radius = "{R:.4g} {unit}" the force is {100 * (fits - 1.0):+.1f} % from Hertz\'s'
             )
+    if pair is None:
+        return (
+            f"{factor}: check radius = {R:.4g} m (a bare number is metres), and that the "
+            "interferences are in m and the forces in N"
+        )
     return (
-        f"{factor}: check radius = {R:.4g} m (a bare number is metres), and that the "
-        "interferences are in m and the forces in N"
+        f"{factor} or a wrong pair of materials: the pair's E* is {pair.E_star / 1e9:.4g} GPa "
+        f"({pair.body.name} on {pair.flat.name}) and the force would fit E* = "
+        f"{ratio * pair.E_star / 1e9:.4g} GPa (Hertz's force grows as E*); check radius = "
+        f"{R:.4g} m (a bare number is metres), the materials, and that the interferences are in "
+        "m and the forces in N"
     )
 
 
@@ -314,7 +368,9 @@ __all__ = [
     "HERTZ_TOLERANCE",
     "MIN_LOADING_POINTS",
     "MIN_RESIDUAL_POINTS",
+    "NEAR_HERTZ",
     "PLAUSIBLE_RADIUS",
+    "SCATTER_DROP",
     "UNIT_MISMATCH",
     "Rows",
     "check_loading",

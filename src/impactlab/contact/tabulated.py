@@ -39,7 +39,11 @@ from impactlab.contact._common import jg_critical
 from impactlab.contact.base import ContactLaw, ContactModel
 from impactlab.contact.curve_table import CURVE_MAGIC, N_LOAD, N_RES
 from impactlab.contact.indentation_data import IndentationCurves, read_curves, shipped_curves
-from impactlab.contact.loading_fit import fit_loading, leave_one_out
+from impactlab.contact.loading_fit import (
+    cross_validated,
+    fit_loading,
+    held_out_sets,
+)
 from impactlab.contact.names import Law
 from impactlab.contact.range_note import note_source
 from impactlab.materials import ContactPair
@@ -222,23 +226,25 @@ def table_values(tables: np.ndarray, x: Any, residual: bool = False) -> np.ndarr
 
 
 def _loo(x: np.ndarray, y: np.ndarray, n: int, first_slope: float | None) -> np.ndarray:
-    """Leave-one-out errors of the PCHIP table: without each interior point, minus it."""
-    out = []
-    for i in range(1, x.size - 1):
-        keep = np.arange(x.size) != i
+    """Cross-validated errors of the PCHIP table (``held_out_sets``: leave-one-out, or k-fold
+    past ``LOO_MAX_POINTS`` interior points): each interior point predicted without it, minus
+    it."""
+    out = np.empty(max(x.size - 2, 0))
+    for held in held_out_sets(x.size):
+        keep = np.ones(x.size, dtype=bool)
+        keep[held] = False
         t = _resample(x[keep], y[keep], n, first_slope)
-        got = _hermite(t[:n], t[n:], x[0], (n - 1) / (x[-1] - x[0]), x[i])
-        out.append(float(got) - y[i])
-    return np.asarray(out)
+        out[held - 1] = _hermite(t[:n], t[n:], x[0], (n - 1) / (x[-1] - x[0]), x[held]) - y[held]
+    return out
 
 
 def interpolation_error(c: IndentationCurves) -> tuple[float, float]:
-    """Leave-one-out error: (largest relative force error of the loading fit, largest
+    """Cross-validated error: (largest relative force error of the loading fit, largest
     absolute error of the delta_r/delta_max interpolation) at the interior data points, each
-    predicted from the others."""
+    predicted from the others (leave-one-out; ``LOO_MAX_POINTS``: k-fold for more points)."""
     x, z = loading_points(c)
     xr, rr = residual_points(c)
-    ef = -leave_one_out(x, 1.5 * x - z)
+    ef = -cross_validated(x, 1.5 * x - z)
     er = _loo(xr, rr, N_RES, None)
     worst_f = float(np.max(np.abs(np.expm1(ef)))) if ef.size else 0.0
     worst_r = float(np.max(np.abs(er))) if er.size else 0.0

@@ -20,7 +20,7 @@ from __future__ import annotations
 import json
 import warnings
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -52,6 +52,8 @@ class StoreMeta:
     status_messages: Mapping[int, str]
     regimes: Mapping[int, str]
     engine: str
+    #: Each law of the study -> its ``range`` and ``source`` (``study_meta.law_ranges``).
+    law_ranges: Mapping[str, Mapping[str, str]] = field(default_factory=dict)
 
 
 #: Chunk files named ``<array>/c.<i>.<j>...`` (Zarr v3's default chunk-key encoding with the
@@ -279,6 +281,7 @@ def _root_attrs(
         "engine": meta.engine,
         "outputs": list(meta.outputs),
         "status_messages": {str(k): v for k, v in sorted(messages.items())},
+        "law_ranges": {k: dict(v) for k, v in meta.law_ranges.items()},
         "coordinates": " ".join(coords),
     }
 

@@ -5,6 +5,9 @@ identity and the study's hash)."""
 from __future__ import annotations
 
 from impactlab._version import __version__
+from impactlab.contact.ranges import law_range
+from impactlab.contact.registered import RegisteredLaw
+from impactlab.contact.registry import get_law
 from impactlab.sweep.code_identity import results_code_hash
 from impactlab.sweep.engine import SEQUENCE_OUTPUTS, Evaluator
 from impactlab.sweep.flexible import FLEXIBLE_BODY
@@ -12,7 +15,7 @@ from impactlab.sweep.inputs import ALWAYS_STORED, CATEGORY_INPUTS, OUTPUT_ALIASE
 from impactlab.sweep.store import StoreMeta
 from impactlab.sweep.study import Study
 
-__all__ = ["category_values", "engine_identity", "resolve_outputs", "store_meta"]
+__all__ = ["category_values", "engine_identity", "law_ranges", "resolve_outputs", "store_meta"]
 
 
 def resolve_outputs(study: Study, evaluator: Evaluator) -> tuple[str, ...]:
@@ -58,6 +61,33 @@ def engine_identity(evaluator: Evaluator) -> str:
     return f"{evaluator.identity}|impactlab {__version__}|code {results_code_hash()}"
 
 
+def law_ranges(study: Study) -> dict[str, dict[str, str]]:
+    """The range and source of each law of ``study`` (law name -> ``range``, ``source``), as a
+    store records them: a user's law (``register_law``) its curves' end in delta_c (of each
+    case's pair and radius: a case past it has status 1) and their name and source; a built-in
+    law its stand-in range (``contact.ranges``) and where that comes from."""
+    out: dict[str, dict[str, str]] = {}
+    for name in category_values(study)["law"]:
+        law = get_law(name)
+        if isinstance(law, RegisteredLaw):
+            c = law.own_curves
+            out[name] = {
+                "range": f"tabulated: interpolated from its curves up to their end, "
+                f"{c.max_delta:.4g} delta_c (each case's Jackson-Green delta_c), and refused "
+                f"beyond it (status 1); pairs with E*/S_y = "
+                f"{c.e_star_over_sy:.4g} (within 5 %) and nu = {c.nu:g} (within 0.03)",
+                "source": f"{c.name}: {c.source}",
+            }
+        else:
+            rec = law_range(name)
+            verified = "; the verified range of the case's pair where FE covers its E*/S_y"
+            out[name] = {
+                "range": rec.stand_in_text + (verified if rec.verified else ""),
+                "source": rec.source,
+            }
+    return out
+
+
 def store_meta(study: Study, evaluator: Evaluator) -> StoreMeta:
     """The store metadata for ``study`` run by ``evaluator`` (hash includes the engine, the
     impactlab version and the hash of the code that computes results)."""
@@ -70,4 +100,5 @@ def store_meta(study: Study, evaluator: Evaluator) -> StoreMeta:
         status_messages=evaluator.status_messages(),
         regimes=evaluator.regimes(),
         engine=ident,
+        law_ranges=law_ranges(study),
     )
