@@ -42,7 +42,10 @@ strings (``"coulomb"``) work wherever a kind is asked for.
   in size can have the wrong sign (nu = 0.45, psi1 = 0.03: exact -0.006, 16 cells +0.002).
   From psi1 ~ 0.2 the error falls like N^-2: |e_t - exact| < 8e-4 (< 3e-4 from psi1 = 1).
   psi2 = 4 G* v_t,out / (mu E* |v_n|) is within 1.5e-3 throughout, every error towards a more
-  forward rebound (tests/dynamics/test_partial_slip_accuracy.py).
+  forward rebound (tests/dynamics/test_partial_slip_accuracy.py). More cells converge it:
+  ``partial_slip_cells`` (4 to 64; ``simulate``, ``simulate_batch``, a sweep's ``[engine]``,
+  ``--partial-slip-cells``) takes psi1 = 0.05 from 2.4e-3 (16) to 7.8e-4 (32) and 1.7e-4 (64)
+  for 2 to 5 times the cost.
 """
 
 from __future__ import annotations
@@ -61,10 +64,17 @@ COULOMB = 1
 MINDLIN = 2
 PARTIAL_SLIP = 3
 PARTIAL_SLIP_CELLS = 16
-"""Number of cells of the ``partial_slip`` model over the largest contact radius. Elastic
-spheres: max |e_t - exact| 2.7e-3 near normal incidence (psi1 < 0.2, where a slip annulus
-thinner than a cell is not resolved and the error falls more slowly than N^-2), 8e-4 from
-psi1 = 0.2 on (falling like N^-2); see the module docstring."""
+"""Default number of cells of the ``partial_slip`` model over the largest contact radius (the
+``partial_slip_cells`` option of ``simulate``, ``simulate_batch`` and sweeps). Elastic spheres:
+max |e_t - exact| 2.7e-3 near normal incidence (psi1 < 0.2, where a slip annulus thinner than a
+cell is not resolved and the error falls more slowly than N^-2), 8e-4 from psi1 = 0.2 on
+(falling like N^-2); see the module docstring."""
+PARTIAL_SLIP_CELLS_MIN = 4
+"""Fewest ``partial_slip_cells`` allowed (4 cells: |e_t - exact| 3.6e-3 at psi1 = 1.4)."""
+PARTIAL_SLIP_CELLS_MAX = 64
+"""Most ``partial_slip_cells`` allowed: 64 cells bring psi1 = 0.05 from 2.4e-3 (16 cells) to
+1.7e-4 and cost 4 to 5 times as much per impact (a rigid rod's batch on one core: 0.28 ms at
+16, 0.65 ms at 32, 1.5 ms at 64); the flexible rod's drop keeps its compiled 16 cells per end."""
 
 
 class FrictionKind(enum.StrEnum):
@@ -195,6 +205,8 @@ __all__ = [
     "MINDLIN",
     "PARTIAL_SLIP",
     "PARTIAL_SLIP_CELLS",
+    "PARTIAL_SLIP_CELLS_MAX",
+    "PARTIAL_SLIP_CELLS_MIN",
     "FrictionKind",
     "FrictionModel",
     "friction_names",

@@ -67,6 +67,7 @@ _KEYS = (
     "gravity",
     "constant_angle",
     "rtol",
+    "partial_slip_cells",
     "law_params",
     "material",
     "flat",
@@ -173,6 +174,8 @@ def run_simulate(opt: ConfigOptions) -> ImpactResult | DropResult:
         "gravity": bool(cfg.get("gravity", True)),
         "rtol": None if cfg.get("rtol") is None else plain_number(cfg["rtol"], opt.label("rtol")),
     }
+    if cfg.get("partial_slip_cells") is not None:  # checked by simulate (an integer, 4 to 64)
+        common["partial_slip_cells"] = cfg["partial_slip_cells"]
     if isinstance(body, FlexibleRod):  # the drop: a DropResult
         rate = rate_name(text(cfg.get("rate", "none"), opt.label("rate")), opt.label("rate"))
         check_rate_flat(rate, common["flat"], opt.label("rate"))
@@ -240,6 +243,7 @@ def simulate_cmd(
     stop: str = _option("stop"),
     t_max: str = _option("t_max"),
     rtol: str = typer.Option(None, "--rtol", help=HELP["rtol"]),
+    partial_slip_cells: int = _option("partial_slip_cells"),
     config: Path = typer.Option(
         None, "--config", help="TOML file of these keys (or a 'simulate' table); options win."
     ),

@@ -52,7 +52,8 @@ FROM_RULE = (
     "option: the kinematics (--angle, --vx or --vy replace that component, --speed with "
     "--incidence the velocity), --spin, --mu, --law (a new law drops the recorded law "
     "parameters), --friction, --flat, --gravity/--no-gravity, --constant-angle/"
-    "--no-constant-angle (rigid impact) and --rate (drop) override it; the body's options "
+    "--no-constant-angle and --partial-slip-cells (rigid impact) and --rate (drop) override "
+    "it; the body's options "
     "(body, --material, sizes, --inertia, modes, --damping, --flexible/--rigid) and --config "
     "are refused: the body is the recorded one."
 )
@@ -251,6 +252,14 @@ def from_changes(
         changes["gravity"] = bool(given["gravity"])
     if given.get("rtol") is not None:  # impactlab drop --rtol
         changes["rtol"] = float(given["rtol"])
+    cells = given.get("partial_slip_cells")
+    if cells is not None and function == SIMULATE_DROP and cells != 16:
+        raise UserError(
+            f"--partial-slip-cells {cells}: the recorded drop has its compiled cells (16 per "
+            "end); leave it out"
+        )
+    if cells is not None and function != SIMULATE_DROP:  # checked by simulate
+        changes["partial_slip_cells"] = cells
     return changes | _options(given, function == SIMULATE_DROP)
 
 

@@ -27,7 +27,12 @@ from impactlab.contact.kernels import N_LAWS, NPARAM, param_length
 from impactlab.contact.ranges import extrapolation_flags
 from impactlab.contact.tabulate import has_table, with_table
 from impactlab.dynamics.core.batch import impact_batch
-from impactlab.dynamics.input_checks import check_partial_slip_rtol, check_rtol, gravity_value
+from impactlab.dynamics.input_checks import (
+    check_partial_slip_cells,
+    check_partial_slip_rtol,
+    check_rtol,
+    gravity_value,
+)
 from impactlab.dynamics.kernels.layout import N_OUT, OUTPUT_FIELDS, PARTIAL_SLIP_RTOL
 from impactlab.dynamics.kernels.status import REGIME_NAMES, STATUS_MESSAGES
 from impactlab.dynamics.rod_reach import rod_reach_flags
@@ -72,6 +77,7 @@ def run_arrays(
     diagnostics: bool = False,
     tabulate: bool = True,
     brittle_limit: Any = math.inf,
+    partial_slip_cells: int = PARTIAL_SLIP_CELLS,
 ) -> tuple[np.ndarray, np.ndarray]:
     """Run N impacts in parallel.
 
@@ -88,7 +94,9 @@ def run_arrays(
     where one parameter vector is shared by every case; per-case parameters (N, NPARAM) always
     use the closed forms, as ``tabulate=False`` does for shared ones. brittle_limit : the mean
     contact pressure [Pa] a brittle member of the pair stands (``contact.brittle``), for all
-    cases or per case; inf (default): none is brittle.
+    cases or per case; inf (default): none is brittle. partial_slip_cells : the cells of
+    ``partial_slip`` over the largest contact radius, one for the call, in [4, 64] (default
+    ``PARTIAL_SLIP_CELLS``; another value is refused for the other friction models).
 
     Returns ``(out, status)``: out (N, len(OUTPUT_FIELDS)) float64, status (N,) int32
     (0 = ok; ``STATUS_MESSAGES``; a failed case's outputs are NaN but ``vn_in``, ``vt_in``:
@@ -138,13 +146,15 @@ def run_arrays(
     r = PARTIAL_SLIP_RTOL if rtol is None and fid == PARTIAL_SLIP else check_rtol(rtol)
     if fid == PARTIAL_SLIP:
         check_partial_slip_rtol(r)
+    name = next(k for k, v in BATCH_FRICTION_IDS.items() if v == fid)
+    cells = check_partial_slip_cells(partial_slip_cells, name)
     out = np.empty((n, N_OUT))
     status = np.empty(n, dtype=np.int32)
     if n and fid == PARTIAL_SLIP:
         with one_line():  # a first batch compiles the addresses' functions, then the batch
             slip_batch(
                 numba.get_num_threads(), lid, lp, bp, init, mu_a, g, bool(constant_angle), r,
-                bool(diagnostics), PARTIAL_SLIP_CELLS, out, status, slip_addresses(),
+                bool(diagnostics), cells, out, status, slip_addresses(),
                 prepass_address(),
             )  # fmt: skip
         _mark_law_flags(lid, lp, out, brittle_limit)

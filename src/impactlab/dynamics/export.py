@@ -133,14 +133,15 @@ def batch_setup(
     constant_angle: bool | None,
     law: Any = None,
     law_params: Mapping[str, Any] | None = None,
+    partial_slip_cells: int | None = None,
 ) -> dict[str, Any]:
     """What a batch simulated besides its per-case inputs, as attributes that netCDF stores
     (strings and numbers, as a sweep store's): ``body`` and ``flat`` (their descriptions),
     ``body_record`` and ``flat_record`` (each as JSON text, the form of a result's ``input``:
     ``impactlab.dynamics.provenance``), ``gravity`` [m/s^2], ``rtol`` (the tolerance used),
-    ``constant_angle`` (0 or 1; None, a drop's batch: left out) and, when given,
-    ``law_params`` (JSON text, in the units of ``law``'s parameters, as a result's ``input``
-    records them)."""
+    ``constant_angle`` (0 or 1; None, a drop's batch: left out), ``partial_slip_cells`` (the
+    cells used, for ``friction="partial_slip"`` when given) and, when given, ``law_params``
+    (JSON text, in the units of ``law``'s parameters, as a result's ``input`` records them)."""
     import json
 
     from impactlab.dynamics.input_checks import gravity_value
@@ -158,6 +159,8 @@ def batch_setup(
     }
     if constant_angle is not None:
         setup["constant_angle"] = int(bool(constant_angle))
+    if partial_slip_cells is not None and friction == "partial_slip":
+        setup["partial_slip_cells"] = int(partial_slip_cells)
     if law_params:
         setup["law_params"] = json.dumps(law_params_record(law, law_params))
     return setup

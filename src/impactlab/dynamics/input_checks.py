@@ -41,6 +41,7 @@ from impactlab.dynamics.kernels.inputs import (
 )
 from impactlab.dynamics.kernels.layout import DEFAULT_RTOL
 from impactlab.dynamics.velocity_inputs import batch_velocity, velocity_given
+from impactlab.friction import PARTIAL_SLIP_CELLS, PARTIAL_SLIP_CELLS_MAX, PARTIAL_SLIP_CELLS_MIN
 from impactlab.materials import G0, Material
 from impactlab.units import has_unit, magnitude
 
@@ -141,6 +142,30 @@ def check_partial_slip_rtol(rtol: float) -> float:
             f"cells' events outrun the steps and e moves by percents"
         )
     return rtol
+
+
+def check_partial_slip_cells(cells: Any, friction: str | None = None) -> int:
+    """``partial_slip_cells`` as an int: an integer (not a bool, float or string) in
+    [``PARTIAL_SLIP_CELLS_MIN``, ``PARTIAL_SLIP_CELLS_MAX``]; any value but the default
+    ``PARTIAL_SLIP_CELLS`` is refused when ``friction`` (a model's name; None: not known here)
+    is not ``partial_slip``, whose cells it sets. ValueError, one line, naming the option."""
+    if (
+        isinstance(cells, bool)
+        or not isinstance(cells, int | np.integer)
+        or not PARTIAL_SLIP_CELLS_MIN <= cells <= PARTIAL_SLIP_CELLS_MAX
+    ):
+        raise ValueError(
+            f"partial_slip_cells must be an integer in [{PARTIAL_SLIP_CELLS_MIN}, "
+            f"{PARTIAL_SLIP_CELLS_MAX}] (the cells of friction 'partial_slip' over the largest "
+            f"contact radius; default {PARTIAL_SLIP_CELLS}), got {cells!r}"
+        )
+    n = int(cells)
+    if n != PARTIAL_SLIP_CELLS and friction is not None and friction != "partial_slip":
+        raise ValueError(
+            f"partial_slip_cells = {n} sets the cells of friction 'partial_slip' only, and the "
+            f"friction is {friction!r}: leave it out, or choose friction 'partial_slip'"
+        )
+    return n
 
 
 #: Largest rtol of a drop (``simulate_drop``, ``simulate_drops``, a flexible rod's sweep), of a
@@ -337,7 +362,7 @@ def warn_fast(what: str, speed: float) -> None:
 __all__ = [
     "DROP_RTOL_MAX", "PARTIAL_SLIP_RTOL_MAX", "PAST_NORMAL", "PLAUSIBLE_SPEED", "batch_velocity",
     "check_angle", "check_body", "check_constant_angle", "check_dent_grid", "check_flat",
-    "check_mu",
+    "check_mu", "check_partial_slip_cells",
     "check_partial_slip_rtol", "check_rtol", "check_speed", "check_spin", "check_velocity",
     "contact_reach", "degrees_hint", "given_body", "gravity_value", "mu_problem", "past_normal",
     "velocity_from", "warn_fast",

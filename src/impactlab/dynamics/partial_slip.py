@@ -13,6 +13,7 @@ with ``mindlin`` friction for a rod); a contact that outgrows the estimate takes
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 
@@ -20,6 +21,7 @@ from impactlab._compile_notice import one_line
 from impactlab.contact.history_kernels import loading_contact_radius
 from impactlab.dynamics.checks import ImpactInputs
 from impactlab.dynamics.core.driver import impact
+from impactlab.dynamics.input_checks import check_partial_slip_cells
 from impactlab.dynamics.kernels import layout as L
 from impactlab.dynamics.kernels import status as S
 from impactlab.dynamics.models import body_params, kernel_params
@@ -27,9 +29,26 @@ from impactlab.dynamics.outcome import impact_result, status_error
 from impactlab.dynamics.results import ImpactResult
 from impactlab.dynamics.slip_batch import RADIUS_MARGIN, prepass_friction
 from impactlab.dynamics.slipcore import impact_slip, slip_addresses
-from impactlab.friction import COULOMB, PARTIAL_SLIP_CELLS
+from impactlab.friction import COULOMB, PARTIAL_SLIP_CELLS, get_friction
 
-__all__ = ["run_partial_slip"]
+__all__ = ["checked_cells", "run_partial_slip"]
+
+
+def checked_cells(cells: Any, friction: Any, drop: bool) -> int:
+    """``simulate``'s ``partial_slip_cells`` checked (``input_checks.check_partial_slip_cells``)
+    for ``friction`` (an unknown name is left to the friction's own check) and, ``drop``, a
+    drop (a FlexibleRod, or drop options), whose compiled cells are fixed: ValueError."""
+    try:
+        name: str | None = get_friction(friction).name
+    except ValueError:
+        name = None
+    n = check_partial_slip_cells(cells, name)
+    if drop and n != PARTIAL_SLIP_CELLS:
+        raise ValueError(
+            f"partial_slip_cells = {n}: a drop (a FlexibleRod, or the drop options) has its "
+            f"compiled {PARTIAL_SLIP_CELLS} cells per end, which cannot be changed; leave it out"
+        )
+    return n
 
 
 def largest_radius(x: ImpactInputs) -> tuple[int, float]:

@@ -2,13 +2,13 @@
 
 ``input_record`` writes the arguments of one ``simulate`` or ``simulate_drop`` call (the body
 with its material and sizes, the flat, the contact law and its parameters, the friction model and
-mu, angle, velocity, spin, gravity, the tolerance; for a drop its options ``rate``, ``stop``,
-``t_max``), the function called (``function``) and the impactlab version; ``from_record`` reads
-such a record back into that function's arguments (a record that lacks a key is refused; one
-of another version warns), and ``rerun`` runs it again (``impactlab simulate --from``). Every
-drop, of a rigid ``Rod`` or a ``FlexibleRod``, records ``simulate_drop``: ``simulate`` takes no
-drop options for a rigid rod (its rigid engine is another model), so the drop's own function is
-the one that runs it again to the same numbers.
+mu, angle, velocity, spin, gravity, the tolerance; ``partial_slip_cells`` for ``partial_slip``;
+for a drop ``rate``, ``stop``, ``t_max``), the function called (``function``) and the impactlab
+version; ``from_record`` reads such a record back into that function's arguments (a record that
+lacks a key is refused; one of another version warns), and ``rerun`` runs it again (``impactlab
+simulate --from``). Every drop, of a rigid ``Rod`` or a ``FlexibleRod``, records
+``simulate_drop``: ``simulate`` takes no drop options for a rigid rod (its rigid engine is
+another model), so the drop's own function is the one that runs it again to the same numbers.
 
 Materials, bodies and contact models are written generically from their dataclass fields (the
 fields of ``__init__``), each as ``{"type": <class name>, <field>: <value>, ...}``, so a field added
@@ -213,7 +213,8 @@ def input_record(
 ) -> dict[str, Any]:  # fmt: skip
     """The JSON-ready record of one call of ``function`` (``SIMULATE`` or ``SIMULATE_DROP``;
     SI, checked values; ``angle`` None for a sphere; ``constant_angle`` None: not an argument
-    of ``function``; ``extra``: the drop's options ``rate``, ``stop``, ``t_max``)."""
+    of ``function``; ``extra``: the drop's options ``rate``, ``stop``, ``t_max``, or an
+    impact's ``partial_slip_cells``)."""
     if function not in FUNCTIONS:
         raise ValueError(f"function must be one of {FUNCTIONS}, got {function!r}")
     record: dict[str, Any] = {

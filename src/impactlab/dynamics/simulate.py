@@ -46,10 +46,10 @@ from impactlab.dynamics.models import (
     kernel_params,
 )
 from impactlab.dynamics.outcome import engine_result, impact_result, slip_jam, status_error
-from impactlab.dynamics.partial_slip import simulate_partial_slip
+from impactlab.dynamics.partial_slip import checked_cells, simulate_partial_slip
 from impactlab.dynamics.provenance import SIMULATE_DROP, from_record, record_function
 from impactlab.dynamics.results import ImpactResult
-from impactlab.friction import DEFAULT_MU, FrictionKind
+from impactlab.friction import DEFAULT_MU, PARTIAL_SLIP_CELLS, FrictionKind
 from impactlab.materials import AISI_1010, G0, Material
 
 
@@ -77,6 +77,7 @@ def simulate(
     rtol: float | None = None,
     history: bool = True,
     speed: Any = None,
+    partial_slip_cells: int = PARTIAL_SLIP_CELLS,
     incidence: Any = None,
     **drop_options: Any,
 ) -> ImpactResult | DropResult:
@@ -123,6 +124,11 @@ def simulate(
     rtol : float, optional
         Relative tolerance in [1e-13, 1e-3] (default ``DEFAULT_RTOL`` = 2e-7; 3e-8 for
         ``friction="partial_slip"``, which takes at most 1e-5).
+    partial_slip_cells : int
+        Cells of ``friction="partial_slip"`` over the largest contact radius, in [4, 64]
+        (default ``PARTIAL_SLIP_CELLS`` = 16; more converge e_t near normal incidence, at a
+        cost about proportional); another value is refused for other friction models and
+        for a drop (a FlexibleRod's cells are compiled, 16 per end).
 
     Returns
     -------
@@ -154,6 +160,9 @@ def simulate(
         raise ValueError(
             f"body must be an impactlab Rod, Sphere or FlexibleRod, {given_body(body)}"
         )
+    cells = partial_slip_cells
+    if not (type(cells) is int and cells == PARTIAL_SLIP_CELLS):  # checked unless the default
+        cells = checked_cells(cells, friction, isinstance(body, FlexibleRod) or bool(drop_options))
     if isinstance(body, FlexibleRod) or drop_options:  # the flexible drop: a DropResult
         args = {"law": law, "friction": friction, "mu": mu, "angle": angle, "velocity": velocity}
         args |= {"spin": spin, "law_params": law_params, "gravity": gravity, "rtol": rtol}
@@ -181,12 +190,13 @@ def simulate(
         rtol=rtol,
     )
     if x.friction.kind is FrictionKind.PARTIAL_SLIP:  # the partial-slip engine (slipcore)
-        r = simulate_partial_slip(x, check_flag("history", history))
+        r = simulate_partial_slip(x, check_flag("history", history), cells)
+        extra = {"partial_slip_cells": cells}  # in the record (``input``), for ``rerun``
     else:
-        r = _run_one(x, check_flag("history", history))
+        r, extra = _run_one(x, check_flag("history", history)), None
     # what was simulated, checked, for ImpactResult.input (the fast path records the same)
     r.__dict__["_call"] = (x.body, x.flat, law, law_params, x.gravity, x.constant_angle, x.rtol,
-                           None)  # fmt: skip
+                           extra)  # fmt: skip
     return r
 
 
@@ -358,6 +368,8 @@ def rerun(
         )
     if {"speed", "incidence"} & set(changes):
         args.pop("velocity", None)
+    if str(changes.get("friction", "partial_slip")) != "partial_slip":
+        args.pop("partial_slip_cells", None)  # the recorded partial_slip's, not the new model's
     args |= changes
     if record_function(record) == SIMULATE_DROP:
         return simulate_drop(args.pop("body"), **args)

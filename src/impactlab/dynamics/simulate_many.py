@@ -27,12 +27,13 @@ from impactlab.dynamics.input_checks import (
     check_body,
     check_constant_angle,
     check_flat,
+    check_partial_slip_cells,
     warn_fast,
 )
 from impactlab.dynamics.kernels import layout as L
 from impactlab.dynamics.kernels.status import ST_BAD_INPUT
 from impactlab.dynamics.models import body_params, references_used
-from impactlab.friction import DEFAULT_MU, get_friction
+from impactlab.friction import DEFAULT_MU, PARTIAL_SLIP_CELLS, get_friction
 from impactlab.materials import AISI_1010, Material
 
 #: simulate_batch's array inputs and their units ("1": a plain number).
@@ -83,6 +84,7 @@ def simulate_batch(
     speed: Any = None,
     incidence: Any = None,
     velocity: Any = None,
+    partial_slip_cells: int = PARTIAL_SLIP_CELLS,
 ) -> BatchResult:
     """Many impacts of one body, law and friction model, in parallel on all cores.
 
@@ -112,6 +114,9 @@ def simulate_batch(
     the lever arms at the initial angle. ``rtol``: the relative tolerance, in [1e-13, 1e-3]
     (None: ``DEFAULT_RTOL`` = 2e-7; 3e-8 for ``partial_slip``, which takes at most 1e-5), as
     in ``simulate``; a bad one is refused (ValueError) before any case runs.
+    ``partial_slip_cells``: the cells of ``partial_slip`` over the largest contact radius, in
+    [4, 64] (default ``PARTIAL_SLIP_CELLS`` = 16), one for every case of the call, as in
+    ``simulate``; another value is refused for the other friction models.
 
     Returns a ``BatchResult``: one row per case (the inputs broadcast), with its ``status``
     (0: computed; ``messages`` says why not), ``flags``, ``ok`` (computed, and no flag but the
@@ -123,6 +128,7 @@ def simulate_batch(
     body = check_body(body)
     flat = check_flat(flat)
     fric = get_friction(friction)
+    cells = check_partial_slip_cells(partial_slip_cells, fric.name)
     model = checked_model(body, flat, law, law_params)
     if isinstance(body, Sphere):
         angle = check_angle(angle, body)  # pi/2; an angle given for a sphere is refused
@@ -143,6 +149,7 @@ def simulate_batch(
         constant_angle=check_flag("constant_angle", constant_angle),
         rtol=rtol,
         brittle_limit=brittle_pressure(body.material, flat),
+        partial_slip_cells=cells,
     )
     return BatchResult(
         out=out,
@@ -165,6 +172,7 @@ def simulate_batch(
             constant_angle=constant_angle,
             law=law,
             law_params=law_params,
+            partial_slip_cells=cells,
         ),
     )
 

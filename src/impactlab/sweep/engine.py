@@ -249,6 +249,9 @@ def evaluate(
     ok = np.flatnonzero(status == 0)
     res: dict[str, np.ndarray] = {}
     diagnostics = not DIAGNOSTIC_OUTPUTS.isdisjoint(outputs)  # the others' bits unchanged
+    engine = dict(statics.engine)
+    if statics.categories["friction"] != "partial_slip":  # the cells of partial_slip only
+        engine.pop("partial_slip_cells", None)
     groups: list[tuple[int | None, np.ndarray]] = [(None, ok)] if ok.size else []
     if statics.tabulate:  # each law row with its table, as simulate: one call per row
         groups = list(_law_groups(law_rows, inverse, ok))
@@ -264,7 +267,7 @@ def evaluate(
             brittle_limit=brittle_limit(statics),
             diagnostics=diagnostics,
             tabulate=statics.tabulate is not False,
-            **dict(statics.engine),
+            **engine,
         )
         status[idx] = np.asarray(st, dtype=np.int32)
         for o in outputs:

@@ -49,7 +49,9 @@ from impactlab.dynamics.kernels import status as S
 from impactlab.dynamics.models import build_contact_model
 from impactlab.materials import Material
 from impactlab.schema import RENAMED_DROP_FIELDS
+from impactlab.sweep.inputs import get_input
 from impactlab.sweep.models import Statics, material_for
+from impactlab.sweep.options import check_cells_study
 from impactlab.sweep.status import (
     STATUS_BAD_BODY,
     STATUS_BAD_INPUT,
@@ -257,13 +259,17 @@ def check_flexible_study(args: Mapping[str, Any]) -> None:
     engine options):
     the flexible inputs need ``body = "flexible_rod"`` among the bodies, and a flexible rod
     follows its rotation (no ``[engine] constant_angle = true``) and its ``rtol`` is at most
-    ``DROP_RTOL_MAX``."""
+    ``DROP_RTOL_MAX``; ``[engine] partial_slip_cells`` (``options.check_cells_study``)."""
     bodies = {args["fixed"].get("body", "rod")}
+    frictions = {str(args["fixed"].get("friction", get_input("friction").default))}
     set_names = set(args["fixed"])
     for axis in args["grid"]:
         set_names.add(axis.name)
         if axis.name == "body":
             bodies = {str(v) for v in axis.values}
+        if axis.name == "friction":
+            frictions = {str(v) for v in axis.values}
+    check_cells_study(args["engine"], bodies, frictions)
     if args.get("sample") is not None:
         set_names |= set(args["sample"].inputs)
     given = sorted(set_names & set(FLEXIBLE_INPUTS))

@@ -11,6 +11,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from impactlab.dynamics.input_checks import check_partial_slip_cells
 from impactlab.dynamics.kernels.inputs import (
     MAX_GRAVITY,
     RTOL_MAX,
@@ -18,6 +19,7 @@ from impactlab.dynamics.kernels.inputs import (
     gravity_allowed,
     rtol_allowed,
 )
+from impactlab.friction import PARTIAL_SLIP_CELLS
 from impactlab.sweep.inputs import OUTPUT_ALIASES
 from impactlab.sweep.limits import TINY_CHUNK, study_cost
 from impactlab.units import is_quantity, magnitude
@@ -83,11 +85,14 @@ def _number(value: Any) -> bool:
 @dataclass(frozen=True)
 class EngineOptions:
     """Options passed to the impact engine (None: the engine's default); ``gravity`` true,
-    false, a number in m/s^2 or a quantity (``"9.81 m/s^2"``, converted)."""
+    false, a number in m/s^2 or a quantity (``"9.81 m/s^2"``, converted);
+    ``partial_slip_cells`` the cells of ``partial_slip`` (an integer in [4, 64], default 16),
+    for the study's ``partial_slip`` cases (:func:`check_cells_study`)."""
 
     gravity: bool | float | None = None
     constant_angle: bool | None = None
     rtol: float | None = None
+    partial_slip_cells: int | None = None
 
     def __post_init__(self) -> None:
         allowed = (
@@ -112,12 +117,42 @@ class EngineOptions:
             raise ValueError(
                 f"engine constant_angle must be true or false, got {self.constant_angle!r}"
             )
+        if self.partial_slip_cells is not None:
+            try:
+                cells = check_partial_slip_cells(self.partial_slip_cells)
+            except ValueError as exc:
+                raise ValueError(f"engine {exc}") from None
+            object.__setattr__(self, "partial_slip_cells", cells)
 
     def kwargs(self) -> dict[str, Any]:
         return {k: v for k, v in self.to_dict().items() if v is not None}
 
     def to_dict(self) -> dict[str, Any]:
-        return {"gravity": self.gravity, "constant_angle": self.constant_angle, "rtol": self.rtol}
+        """The options by name (None: not set; a study's record leaves those out, so that an
+        option added later leaves the hash of a study without it as it was)."""
+        return {"gravity": self.gravity, "constant_angle": self.constant_angle, "rtol": self.rtol,
+                "partial_slip_cells": self.partial_slip_cells}  # fmt: skip
+
+
+def check_cells_study(engine: EngineOptions, bodies: set[str], frictions: set[str]) -> None:
+    """ValueError when ``[engine] partial_slip_cells`` is set to another value than the default
+    and the study has no ``partial_slip`` case (``frictions``), or has a flexible rod's drops
+    (``bodies``), whose compiled cells are fixed. With several friction models it applies to
+    the ``partial_slip`` cases."""
+    n = engine.partial_slip_cells
+    if n is None or n == PARTIAL_SLIP_CELLS:
+        return
+    if "partial_slip" not in frictions:
+        raise ValueError(
+            f"[engine] partial_slip_cells = {n} sets the cells of friction 'partial_slip' only, "
+            f"and the study's friction is {', '.join(sorted(frictions))}: leave it out"
+        )
+    if "flexible_rod" in bodies:
+        raise ValueError(
+            f"[engine] partial_slip_cells = {n}: a flexible rod's drop has its compiled "
+            f"{PARTIAL_SLIP_CELLS} cells per end, which cannot be changed; leave it out for "
+            "body = 'flexible_rod'"
+        )
 
 
 #: Outputs whose values are codes, not quantities: the report refuses them (what they hold).

@@ -328,9 +328,12 @@ def _outputs(tab: Mapping[str, Any]) -> tuple[str, ...]:
 
 
 def _engine(tab: Mapping[str, Any]) -> EngineOptions:
-    bad = sorted(set(tab) - {"gravity", "constant_angle", "rtol"})
+    bad = sorted(set(tab) - {"gravity", "constant_angle", "rtol", "partial_slip_cells"})
     if bad:
-        raise ValueError(f"[engine] unknown key(s) {bad}; allowed: gravity, constant_angle, rtol")
+        raise ValueError(
+            f"[engine] unknown key(s) {bad}; allowed: gravity, constant_angle, rtol, "
+            "partial_slip_cells"
+        )
     return EngineOptions(**tab)
 
 
