@@ -44,8 +44,8 @@ strings (``"coulomb"``) work wherever a kind is asked for.
   psi2 = 4 G* v_t,out / (mu E* |v_n|) is within 1.5e-3 throughout, every error towards a more
   forward rebound (tests/dynamics/test_partial_slip_accuracy.py). More cells converge it:
   ``partial_slip_cells`` (4 to 64; ``simulate``, ``simulate_batch``, a sweep's ``[engine]``,
-  ``--partial-slip-cells``) takes psi1 = 0.05 from 2.4e-3 (16) to 7.8e-4 (32) and 1.7e-4 (64)
-  for 2 to 5 times the cost.
+  ``--partial-slip-cells``) takes the error in e_t at psi1 = 0.05 (nu = 0.45) from 2.7e-3
+  (16) to 8.0e-4 (32) and 1.7e-4 (64) for 2 to 5 times the cost.
 """
 
 from __future__ import annotations
@@ -72,9 +72,10 @@ cell is not resolved and the error falls more slowly than N^-2), 8e-4 from psi1 
 PARTIAL_SLIP_CELLS_MIN = 4
 """Fewest ``partial_slip_cells`` allowed (4 cells: |e_t - exact| 3.6e-3 at psi1 = 1.4)."""
 PARTIAL_SLIP_CELLS_MAX = 64
-"""Most ``partial_slip_cells`` allowed: 64 cells bring psi1 = 0.05 from 2.4e-3 (16 cells) to
-1.7e-4 and cost 4 to 5 times as much per impact (a rigid rod's batch on one core: 0.28 ms at
-16, 0.65 ms at 32, 1.5 ms at 64); the flexible rod's drop keeps its compiled 16 cells per end."""
+"""Most ``partial_slip_cells`` allowed: 64 cells bring the error in e_t at psi1 = 0.05 (nu =
+0.45) from 2.7e-3 (16 cells) to 1.7e-4 and cost 4 to 5 times as much per impact (a rigid
+rod's batch on one core: 0.28 ms at 16, 0.65 ms at 32, 1.5 ms at 64); the flexible rod's drop
+keeps its compiled 16 cells per end."""
 
 
 class FrictionKind(enum.StrEnum):

@@ -302,3 +302,16 @@ def test_rod_mass_given_passes_the_check(tmp_path, how):
     model = CandidateModel("ghaednia", "coulomb", fixed=fixed)
     params = (parse_parameter("flat_yield_strength", "loguniform(100 MPa, 1 GPa)"),)
     check_calibration_inputs(read_measurements(path), params, [model], [])
+
+
+def test_the_papers_rod_in_inches_needs_no_mass(tmp_path):
+    from impactlab.calibrate.input_checks import check_calibration_inputs
+    from impactlab.calibrate.measurements import read_measurements
+
+    path = tmp_path / "m.csv"
+    path.write_text(
+        "label,length [in],angle [deg],vy [m/s],vx [m/s],mu,e,e_sigma\n"
+        "d1,12,45,-1.4,0.0,0.2,0.6,0.05\n"
+    )
+    params = (parse_parameter("flat_yield_strength", "loguniform(100 MPa, 1 GPa)"),)
+    check_calibration_inputs(read_measurements(path), params, [CandidateModel("ghaednia")], [])

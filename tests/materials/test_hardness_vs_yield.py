@@ -25,7 +25,7 @@ SLIP = (
 
 def test_a_hardness_below_the_yield_strength_is_named() -> None:
     slip = hardness_below_yield(Material("al", 69e9, 0.33, 276e6, 9.5, density=2700.0))
-    assert re.match(r"^material 'al': " + SLIP, slip), slip
+    assert re.match("^" + SLIP, slip), slip
     # at the yield strength and above (a hardness of 3 S_y and more): nothing to say
     assert hardness_below_yield(Material("al", 69e9, 0.33, 276e6, 95.0, density=2700.0)) == ""
     assert hardness_below_yield(Material("x", 69e9, 0.33, 276e6, 276e6 / 9.80665e6)) == ""
@@ -40,7 +40,7 @@ def test_a_copy_with_a_raised_yield_strength_is_still_made() -> None:
 
 
 def test_the_text_form_names_where() -> None:
-    with pytest.raises(ValueError, match=r"^--flat: material 'custom .*': " + SLIP):
+    with pytest.raises(ValueError, match=r"^--flat: " + SLIP):
         get_material("E=69GPa, nu=0.33, Sy=276MPa, rho=2700kg/m^3, HB=9.5", "--flat")
 
 

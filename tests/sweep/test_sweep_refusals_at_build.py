@@ -155,3 +155,16 @@ def test_a_study_file_asking_the_report_for_codes_is_refused_when_read(tmp_path,
     )
     with pytest.raises(ValueError, match=f"'{output}' holds"):
         load_study(path)
+
+
+def test_the_papers_rod_in_inches_needs_no_mass() -> None:
+    Study(name="s", fixed={**KIN, "length": "12 in"}, grid={"mu": [0.1, 0.2]})
+
+
+def test_a_flat_by_values_with_a_hardness_below_its_yield_is_refused() -> None:
+    flat = {"flat_E": "69 GPa", "flat_nu": 0.33, "flat_yield_strength": "276 MPa"}
+    with pytest.raises(ValueError, match=r"\[fixed\] flat_\*: brinell_hardness HB = 9.5"):
+        Study(name="s", fixed={**KIN, **flat, "flat_brinell_hardness": 9.5, "law": "brake"},
+              grid={"mu": [0.1, 0.2]})  # fmt: skip
+    Study(name="s", fixed={**KIN, **flat, "flat_brinell_hardness": 95, "law": "brake"},
+          grid={"mu": [0.1, 0.2]})  # fmt: skip

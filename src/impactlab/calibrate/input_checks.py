@@ -164,7 +164,11 @@ def _rod_mass(
         why = ""
         if free_length:
             why = "length is a free parameter"
-        elif length is not None and np.isfinite(length[i]) and length[i] != PAPER_ROD.length:
+        elif (
+            length is not None
+            and np.isfinite(length[i])
+            and not math.isclose(length[i], PAPER_ROD.length, rel_tol=1e-9)  # "12 in"
+        ):
             why = f"length = {length[i]:g} m"
         if material == CUSTOM or get_material(material) != PAPER_ROD.material:
             why = f"body_material = {material!r}"

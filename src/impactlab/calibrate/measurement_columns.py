@@ -111,6 +111,8 @@ def input_sigma(name: str) -> str:
     )
     if name in KINEMATICS:
         return f"{exact}: remove the column"
+    if name in ("n_axial", "n_bending"):  # integer mode counts: nothing to measure
+        return f"{exact} (a count of the flexible rod's modes): remove the column"
     return (
         f"{exact}. An uncertain {name} is calibrated as a free parameter with a normal prior "
         f'of its value and uncertainty, e.g. -p "{name}=normal(mean, sd)" ([parameters] in a '

@@ -83,7 +83,7 @@ def hardness_below_yield(material: Material) -> str:
     if h >= material.yield_strength:
         return ""
     return (
-        f"material {material.name!r}: brinell_hardness HB = {material.brinell_hardness:.4g} "
+        f"brinell_hardness HB = {material.brinell_hardness:.4g} "
         f"{_HB} ({h / 1e6:.4g} MPa) lies below the yield strength S_y = "
         f"{material.yield_strength / 1e6:.4g} MPa, while a hardness is about 3 S_y; HB is in "
         f"{_HB} (a Brinell number: HB 95 is 932 MPa), check its unit"

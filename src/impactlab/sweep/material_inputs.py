@@ -20,6 +20,7 @@ from typing import Any
 
 from impactlab._validation import ImplausibleInputWarning
 from impactlab.materials import Material, get_material
+from impactlab.materials.core import hardness_below_yield
 from impactlab.sweep.inputs import MATERIAL_OVERRIDES
 
 #: The category value of a material defined by its property inputs.
@@ -40,7 +41,8 @@ def check_material_inputs(
     ``varied``: the inputs on the grid or in the sample; ``categories``: the values of the
     category inputs set in [fixed] or on the grid. ValueError for a partial definition, for
     a library name beside property inputs, or for a material fixed by values that is not one
-    (S_y >= E, nu out of range: every case would fail)."""
+    (S_y >= E, nu out of range: every case would fail; a hardness below the yield strength, a
+    unit slip, as in a material by values)."""
     given = set(fixed) | set(varied)
     out = dict(fixed)
     for side, fields in MATERIAL_OVERRIDES.items():
@@ -73,9 +75,11 @@ def check_material_inputs(
         if not set(props) & set(varied):  # one material for every case: checked now, not
             values = {f: float(fixed[n]) for n, f in fields.items() if n in fixed}  # per case
             try:
-                custom_material(side, values)
+                slip = hardness_below_yield(custom_material(side, values))
             except ValueError as exc:
                 raise ValueError(f"[fixed] {side}_*: {exc}") from None
+            if slip:  # given by the user, as in a material by values (get_material)
+                raise ValueError(f"[fixed] {side}_*: {slip}")
     return out
 
 

@@ -38,7 +38,7 @@ def _check_rod_mass(
     materials = [str(m) for m in grid.get("body_material", (fixed.get("body_material", default),))]
     other = [m for m in materials if m == CUSTOM or get_material(m) != PAPER_ROD.material]
     lengths = [float(v) for v in grid.get("length", (fixed.get("length", PAPER_ROD.length),))]
-    longer = [v for v in lengths if v != PAPER_ROD.length]
+    longer = [v for v in lengths if not math.isclose(v, PAPER_ROD.length, rel_tol=1e-9)]
     if not other and not longer and "length" not in sampled:
         return
     why = f"length = {longer[0]:g} m" if longer else "a sampled length"
