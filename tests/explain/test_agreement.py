@@ -1,5 +1,6 @@
 """z = (predicted - measured) / sigma and within 2 sigma on a hand-made case; a configuration
-that is not ok (refused, flagged, not run) predicts nothing and agrees with nothing."""
+that is not ok (refused, flagged, not run) predicts nothing and agrees with nothing; chi2 and
+``best`` compare like with like."""
 
 from __future__ import annotations
 
@@ -8,6 +9,7 @@ import math
 import pytest
 
 from impactlab.calibrate.measurements import Measurements
+from impactlab.explain import Explanation
 from impactlab.explain.configurations import FLEXIBLE, LIBRARY_RATES, RIGID
 from impactlab.explain.runs import Outcome
 from impactlab.explain.tables import comparison_table, summary_table
@@ -62,5 +64,45 @@ def test_a_quantity_the_model_does_not_define_is_not_compared() -> None:
     assert flex.loc["spin_out", "status"].startswith("not predicted")
     assert not flex.loc["spin_out", "within_2_sigma"]
     s = summary.set_index("configuration").loc[FLEXIBLE.name]
-    assert (s["within_2_sigma"], s["compared"], s["measured"]) == (2, 2, 3)
-    assert s["chi2"] == pytest.approx(0.0, abs=1e-20)
+    assert (s["within_2_sigma"], s["compared"], s["n_measured"]) == (2, 2, 3)
+    # a sum over fewer quantities is no chi2 of the drop: never lower for leaving one out
+    assert math.isnan(s["chi2"])
+
+
+def _explained(outcomes) -> Explanation:
+    comparison, summary = _tables(outcomes)
+    return Explanation(comparison, summary, CONFIGS, "ghaednia", "coulomb", (), None, outcomes)
+
+
+def test_best_never_prefers_a_configuration_for_predicting_less() -> None:
+    """The flexible rows predict e alone, closer than the rigid rod's e, but leave spin_out
+    unpredicted: the rigid rod, which predicts every value, is the best (a sum over fewer
+    terms is not a lower chi2)."""
+    outcomes = {
+        ("d", RIGID.name): Outcome("ok", True, {"e": 0.6, "delta_p": 40e-6, "spin_out": -10.0}),
+        ("d", FLEXIBLE.name): Outcome("ok", True, {"e": 0.55, "delta_p": 40e-6},
+                                      unsupported=("spin_out",)),
+        ("d", LIBRARY_RATES[0].name): Outcome("ok", True, {"e": 0.52, "delta_p": 40e-6},
+                                              unsupported=("spin_out",)),
+    }  # fmt: skip
+    x = _explained(outcomes)
+    s = x.summary.set_index("configuration")
+    assert s.loc[RIGID.name, "chi2"] == pytest.approx((0.1 / 0.03) ** 2)
+    assert math.isnan(s.loc[FLEXIBLE.name, "chi2"])
+    assert x.best("d") == RIGID.name
+    # with the rigid rod not ok, the others are ranked over the quantities both predict
+    outcomes[("d", RIGID.name)] = Outcome("refused: mu must be >= 0", False, {})
+    assert _explained(outcomes).best("d") == LIBRARY_RATES[0].name  # e: 0.52 beats 0.55
+
+
+def test_best_names_the_known_drops_for_an_unknown_one() -> None:
+    outcomes = {
+        ("d", RIGID.name): Outcome("ok", True, {"e": 0.5, "delta_p": 40e-6, "spin_out": -10.0}),
+        ("d", FLEXIBLE.name): Outcome("not run: a sphere", False, {}),
+        ("d", LIBRARY_RATES[0].name): Outcome("not run: a sphere", False, {}),
+    }  # fmt: skip
+    x = _explained(outcomes)
+    with pytest.raises(KeyError, match=r"no drop 'D'; drops: \['d'\]"):
+        x.best("D")
+    outcomes[("d", RIGID.name)] = Outcome("refused: mu must be >= 0", False, {})
+    assert _explained(outcomes).best("d") is None  # a known drop, nothing ok: None

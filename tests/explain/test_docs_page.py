@@ -44,7 +44,7 @@ def test_the_numbers_it_states(paper_explained) -> None:
     assert c.loc[(cs, "e"), "predicted"] == pytest.approx(0.74, abs=0.005)
     assert c.loc[(cs, "e"), "z"] == pytest.approx(8, abs=0.5)
     s = paper_explained.summary
-    assert not (s["within_2_sigma"] == s["measured"]).any()  # none explains all three
+    assert not (s["within_2_sigma"] == s["n_measured"]).any()  # none explains all three
     assert paper_explained.result("20 deg", "flexible rod").n_contacts == 4
     for phrase in ("dent of 62 um", "scar of 22 um", "touches the flat 4 times",
                    "dent of 32 um", "scar of 261 um", "22.9 um (z = +0.4)", "0.74"):  # fmt: skip

@@ -4,6 +4,7 @@ replaced, a user's never), one-line errors."""
 from __future__ import annotations
 
 import json
+import sys
 
 from impactlab._json import shape_problems
 
@@ -20,6 +21,10 @@ def test_json_parses_and_names_units(cli_main, paper_file) -> None:
     assert doc["summary"][1]["contacts"] == 4 and doc["summary"][1]["configuration"] == (
         "flexible rod"
     )
+    # the summary's flags are the bitmask, as everywhere; their names and the count beside them
+    first = doc["summary"][0]
+    assert first["flags"] == 4 and first["flag_names"] == "law_extrapolated"
+    assert first["n_measured"] == 3 and "measured" not in first
     assert doc["nothing_tuned"].startswith("nothing is tuned")
     assert "measurement's sigma alone" in doc["z"]
     assert doc["files"] == {}
@@ -60,8 +65,41 @@ def test_one_line_errors(cli_main, tmp_path, paper_file) -> None:
         ((str(tmp_path / "none.csv"),), "measurements file not found"),
         ((str(paper_file), "--law", "ghaednya"), "ghaednia"),
         ((str(paper_file), "--rate", "cowper"), "--rate must be one of"),
+        ((str(paper_file), "--rate", "cowper-symonds(D=-1 1/s, q=4)"), "--rate D must be > 0"),
+        ((str(paper_file), "--rate", "cowper-symonds(D=1 m, q=4)"), "--rate D: '1 m' has the"),
+        ((str(paper_file), "--rate", "cowper-symonds(D=1 1/s)"), "--rate 'cowper-symonds(D="),
+        ((str(paper_file), "--rate", "none", "--rate", "none"), "--rate: 'none' is no rate"),
     ]
     for args, words in cases:
         code, out, err = cli_main("explain", *args, "--quiet")
         assert code == 2 and out == "", (args, err)
         assert err.startswith("error: ") and err.count("\n") == 1 and words in err, (args, err)
+        assert "rate_laws" not in err, err  # the option, never the Python keyword
+
+
+def test_the_bar_leaves_stderr_alone_and_gives_way_to_a_compile(monkeypatch) -> None:
+    """On a terminal the bar does not take stderr over (the compile notice of a first run
+    updates its one line there with carriage returns), and a compilation takes the bar off the
+    screen until the next report."""
+    import numba
+    from numba.core import event
+
+    from impactlab._compile_notice import register
+    from impactlab.cli.explain import _PauseOnCompile, _progress
+
+    monkeypatch.setenv("FORCE_COLOR", "1")  # rich: a terminal
+    report, bar = _progress(quiet=False)
+    stderr = sys.stderr
+    try:
+        report("rigid rod", 1, 4)
+        assert bar.live.is_started and sys.stderr is stderr
+        handle = register(_PauseOnCompile(bar))
+        try:
+            assert numba.njit(lambda x: x + 1)(1) == 2  # a compilation
+        finally:
+            event.unregister("numba:compile", handle)
+        assert not bar.live.is_started
+        report("flexible rod", 2, 4)
+        assert bar.live.is_started
+    finally:
+        bar.stop()

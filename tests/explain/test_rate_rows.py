@@ -38,7 +38,7 @@ def test_an_aluminium_flat_runs_no_library_rate_row_and_says_why() -> None:
 
 
 def test_a_rate_law_of_ones_own_forms_the_rate_rows() -> None:
-    x = explain(Measurements.from_records([AL_DROP]), rates=[OWN])
+    x = explain(Measurements.from_records([AL_DROP]), rate_laws=[OWN])
     s = _rows(x, "al")
     name = "flexible rod + rate-dependent flat (cowper-symonds (D = 6500 1/s, q = 4))"
     assert list(s.index) == ["rigid rod", "flexible rod", name]
@@ -51,7 +51,7 @@ def test_a_rate_law_of_ones_own_forms_the_rate_rows() -> None:
 def test_rate_laws_are_read_or_refused_by_name() -> None:
     assert len(configurations(None)) == 4 and len(configurations([])) == 2
     assert len(configurations(["none"])) == 2
-    with pytest.raises(ValueError, match="rates must be one of"):
+    with pytest.raises(ValueError, match="rate_laws must be one of"):
         configurations(["cowper"])
     with pytest.raises(ValueError, match="given twice"):
         configurations([OWN, "cowper-symonds (D = 6500 1/s, q = 4)"])

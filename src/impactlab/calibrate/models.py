@@ -85,6 +85,12 @@ def status_message(code: int) -> str:
     )
 
 
+#: Measured quantities a drop does not predict though their engine output has a drop column:
+#: a signed ``contact_travel`` (the drop's scar_length, read for it, is the mark's unsigned
+#: extent; it predicts the measured ``scar_length``, a magnitude).
+DROP_UNPREDICTED = ("contact_travel",)
+
+
 @dataclass(frozen=True)
 class CandidateModel:
     """One physical model: ``law`` (a registered contact law), ``friction`` (a friction
@@ -128,12 +134,18 @@ class CandidateModel:
         )
 
     def unsupported(self, quantities: Sequence[str]) -> list[str]:
-        """The measured ``quantities`` this model does not predict (the flexible drop defines
-        fewer outputs than the rigid engine: ``sweep.flexible.DROP_OUTPUTS``)."""
+        """The measured ``quantities`` this model does not predict: the flexible drop defines
+        fewer outputs than the rigid engine (``sweep.flexible.DROP_OUTPUTS``), a measured
+        duration or mean force is one contact's (``MEASURED_AS``), and a signed contact_travel
+        has no counterpart in a drop (:data:`DROP_UNPREDICTED`)."""
         if self.body != FLEXIBLE_BODY:
             return []
         drop = set(DROP_OUTPUTS)
-        return [q for q in quantities if not set(_drop_outputs(MEASURABLE[q].outputs)) <= drop]
+        return [
+            q
+            for q in quantities
+            if q in DROP_UNPREDICTED or not set(_drop_outputs(MEASURABLE[q].outputs)) <= drop
+        ]
 
     @property
     def batched(self) -> bool:

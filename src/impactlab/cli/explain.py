@@ -30,23 +30,43 @@ _RATE_HELP = (
 
 
 def _progress(quiet: bool) -> tuple[Any, Any]:
-    """(progress callback, the rich Progress to stop) on stderr, or (None, None)."""
+    """(progress callback, the rich Progress to stop) on stderr, or (None, None). The bar
+    starts with a report and leaves stderr as it is (no redirection): while impactlab
+    compiles, :class:`_PauseOnCompile` takes it off the terminal, so the compile notice keeps
+    one line, its counter updated in place, and the next report brings the bar back."""
     if quiet:
         return None, None
     from rich.console import Console
     from rich.progress import BarColumn, MofNCompleteColumn, Progress
 
     bar = Progress("{task.description}", BarColumn(), MofNCompleteColumn(),
-                   console=Console(stderr=True), transient=True)  # fmt: skip
+                   console=Console(stderr=True), transient=True,
+                   redirect_stderr=False)  # fmt: skip
     task: list[Any] = []
 
     def report(configuration: str, done: int, total: int) -> None:
-        if not task:
+        if not bar.live.is_started:
             bar.start()
+        if not task:
             task.append(bar.add_task("explain", total=total))
         bar.update(task[0], completed=done, description=configuration)
 
     return report, bar
+
+
+class _PauseOnCompile:
+    """A listener of numba's ``numba:compile`` events that stops the progress ``bar`` when a
+    compilation starts (the first run of an engine: ``impactlab._compile_notice``)."""
+
+    def __init__(self, bar: Any) -> None:
+        self.bar = bar
+
+    def on_start(self, event: Any) -> None:
+        if self.bar.live.is_started:
+            self.bar.stop()
+
+    def on_end(self, event: Any) -> None:
+        return None
 
 
 def _show(explanation: Any) -> None:
@@ -88,7 +108,10 @@ def explain_cmd(
 
     Example: impactlab explain drops.csv --out explained
     """
-    from impactlab.explain import explain, save_explanation
+    from numba.core import event
+
+    from impactlab._compile_notice import register
+    from impactlab.explain import configurations, explain, save_explanation
     from impactlab.explain.saving import check_folder
 
     if out is not None:
@@ -97,11 +120,15 @@ def explain_cmd(
         except (FileExistsError, NotADirectoryError) as exc:
             raise UserError(str(exc)) from None
     report, bar = _progress(quiet)
+    pause = None if bar is None else register(_PauseOnCompile(bar))
     try:
-        result = explain(measurements, law=law, rates=rate, progress=report)
+        configurations(rate, "--rate")  # its errors name the option
+        result = explain(measurements, law=law, rate_laws=rate, progress=report)
     except ValueError as exc:
-        raise UserError(_as_options(str(exc))) from None
+        raise UserError(str(exc)) from None
     finally:
+        if pause is not None:
+            event.unregister("numba:compile", pause)
         if bar is not None and bar.live.is_started:
             bar.stop()
     files = save_explanation(result, out, "--out") if out is not None else {}
@@ -122,11 +149,6 @@ def _stated() -> tuple[str, str]:
     from impactlab.explain.result import NOTHING_TUNED, Z_DEFINITION
 
     return NOTHING_TUNED, Z_DEFINITION
-
-
-def _as_options(message: str) -> str:
-    """An API message with its keywords spelled as the command's options."""
-    return message.replace("rates:", "--rate:").replace("rates must", "--rate must")
 
 
 def register(app: typer.Typer) -> None:

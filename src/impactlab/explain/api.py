@@ -9,11 +9,13 @@ import math
 from collections.abc import Callable, Iterable
 from pathlib import Path
 
+import pandas as pd
+
 from impactlab.calibrate.measurements import Measurements, read_measurements
 from impactlab.contact import get_law
 from impactlab.explain.configurations import Configuration, configurations, rate_not_applicable
 from impactlab.explain.result import Explanation
-from impactlab.explain.runs import Outcome, drop_flat, one_drop, run_on_drop
+from impactlab.explain.runs import Outcome, drop_alone, drop_flat, run_on_drop
 from impactlab.explain.tables import comparison_table, summary_table
 
 __all__ = ["FRICTION", "SPHERE_NOT_RUN", "explain"]
@@ -60,9 +62,10 @@ def _not_run(config: Configuration, meas: Measurements, d: int) -> str | None:
     return rate_not_applicable(config, drop_flat(meas, d))
 
 
-def _notes(meas: Measurements, outcomes: dict[tuple[str, str], Outcome]) -> tuple[str, ...]:
-    """One line per reason a configuration did not run, naming its drops, and the runs'
-    warnings (each once, with the drops and configurations that gave it)."""
+def _notes(outcomes: dict[tuple[str, str], Outcome], summary: pd.DataFrame) -> tuple[str, ...]:
+    """One line per reason a configuration did not run and per caveat of an ok row, naming
+    its drops, how many runs used the law beyond its range, and the runs' warnings (each once,
+    with the drops and configurations that gave it)."""
     why: dict[str, list[str]] = {}
     said: dict[str, list[str]] = {}
     for (drop, name), out in outcomes.items():
@@ -70,8 +73,10 @@ def _notes(meas: Measurements, outcomes: dict[tuple[str, str], Outcome]) -> tupl
             why.setdefault(f"{name}: {out.status}", []).append(drop)
         for w in out.warnings:
             said.setdefault(w, []).append(f"{drop} / {name}")
+    for r in summary[summary["caveat"] != ""].itertuples(index=False):
+        why.setdefault(f"{r.configuration}: {r.caveat}", []).append(str(r.drop))
     lines = [f"{reason} (drops: {', '.join(drops)})" for reason, drops in why.items()]
-    ran = [out for out in outcomes.values() if out.ran]
+    ran = [out for out in outcomes.values() if out.ran]  # the runs that gave a result
     beyond = sum(out.law_extrapolated for out in ran)
     if beyond:
         lines.append(
@@ -86,7 +91,7 @@ def explain(
     measurements: str | Path | Measurements,
     *,
     law: str = "ghaednia",
-    rates: Iterable[object] | None = None,
+    rate_laws: Iterable[object] | None = None,
     progress: Progress | None = None,
 ) -> Explanation:
     """Which physics explains measured drops, nothing tuned: each drop of ``measurements`` (a
@@ -95,7 +100,7 @@ def explain(
     ``law`` and Coulomb friction of the drop's measured mu, every measured quantity beside its
     prediction (z, within 2 sigma) and per drop and configuration a summary.
 
-    ``rates``: the rate-dependent rows' laws; None: the library's Cowper-Symonds (upper
+    ``rate_laws``: the rate-dependent rows' laws; None: the library's Cowper-Symonds (upper
     estimate) and Johnson-Cook (lower) for a low-carbon steel flat, not run on another flat
     (the result says why); else rate laws as ``simulate``'s ``rate`` takes them
     (``"cowper-symonds(D=6500 1/s, q=4)"``, a ``RateLaw``), the flat's own constants, run on
@@ -104,7 +109,7 @@ def explain(
     without mu, a law or rate law not known, or a file the calibration's reader refuses."""
     get_law(law)  # ValueError naming the known laws
     meas = _measurements(measurements)
-    configs = configurations(rates)
+    configs = configurations(rate_laws)
     outcomes: dict[tuple[str, str], Outcome] = {}
     total, done = meas.n_drops * len(configs), 0
     for config in configs:
@@ -112,7 +117,7 @@ def explain(
             reason = _not_run(config, meas, d)
             if reason is None:
                 outcomes[(label, config.name)] = run_on_drop(
-                    config, one_drop(meas, d), law, FRICTION
+                    config, drop_alone(meas, d), law, FRICTION
                 )
             else:
                 outcomes[(label, config.name)] = Outcome(reason, False, {})
@@ -122,6 +127,6 @@ def explain(
     comparison = comparison_table(meas, configs, outcomes)
     summary = summary_table(meas, configs, outcomes, comparison)
     return Explanation(
-        comparison, summary, configs, law, FRICTION, _notes(meas, outcomes), meas.source,
+        comparison, summary, configs, law, FRICTION, _notes(outcomes, summary), meas.source,
         outcomes,
     )  # fmt: skip

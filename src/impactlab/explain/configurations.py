@@ -5,7 +5,7 @@ The rate-dependent rows use the library's rate laws only where their constants h
 (Cowper-Symonds, an upper estimate of the rate effect; Johnson-Cook, a lower one) are fitted
 for low-carbon (mild) steel (``impactlab.contact.rate``, ``RateLaw.fitted_for``), so a drop on
 another flat does not run them, and the result says why. Rate laws of one's own
-(``rates=["cowper-symonds(D=6500 1/s, q=4)"]``, ``RateLaw.custom``) replace them: the user's
+(``rate_laws=["cowper-symonds(D=6500 1/s, q=4)"]``, ``RateLaw.custom``) replace them: the user's
 constants are the flat's, and no material check applies.
 """
 
@@ -81,26 +81,28 @@ LIBRARY_RATES: tuple[Configuration, ...] = (
 )
 
 
-def configurations(rates: Iterable[object] | None = None) -> tuple[Configuration, ...]:
-    """The rigid rod, the flexible rod and one rate-dependent row per rate law: ``rates`` None
-    gives the library's (:data:`LIBRARY_RATES`), else each item is a rate law as ``simulate``'s
-    ``rate`` takes it (a library name, ``"cowper-symonds(D=6500 1/s, q=4)"``, a ``RateLaw``);
-    ``[]`` or ``["none"]``: no rate rows. ValueError naming ``rates`` for a law not understood
-    or given twice."""
-    if rates is None:
+def configurations(
+    rate_laws: Iterable[object] | None = None, option: str = "rate_laws"
+) -> tuple[Configuration, ...]:
+    """The rigid rod, the flexible rod and one rate-dependent row per rate law: ``rate_laws``
+    None gives the library's (:data:`LIBRARY_RATES`), else each item is a rate law as
+    ``simulate``'s ``rate`` takes it (a library name, ``"cowper-symonds(D=6500 1/s, q=4)"``, a
+    ``RateLaw``); ``[]`` or ``["none"]``: no rate rows. ValueError naming ``option`` (the rate
+    laws as the caller took them: ``--rate``) for a law not understood or given twice."""
+    if rate_laws is None:
         return (RIGID, FLEXIBLE, *LIBRARY_RATES)
-    items = [rates] if isinstance(rates, str | RateLaw) else list(rates)
+    items = [rate_laws] if isinstance(rate_laws, str | RateLaw) else list(rate_laws)
     if len(items) == 1 and isinstance(items[0], str) and items[0].strip().lower() == "none":
         items = []  # "none" alone: no rate row, as --rate none
     laws: list[RateLaw] = []
     for item in items:
-        law = get_rate_law(item, "rates")
+        law = get_rate_law(item, option)
         if law is None:
             raise ValueError(
-                f"rates: {item!r} is no rate law; give it alone for no rate row, or leave it out"
+                f"{option}: {item!r} is no rate law; give it alone for no rate row, or leave it out"
             )
         if law in laws:
-            raise ValueError(f"rates: {law.text} is given twice; give each rate law once")
+            raise ValueError(f"{option}: {law.text} is given twice; give each rate law once")
         laws.append(law)
     return (RIGID, FLEXIBLE, *(_rate_configuration(law) for law in laws))
 
@@ -116,5 +118,5 @@ def rate_not_applicable(config: Configuration, flat: Material) -> str | None:
         return None
     return (
         f"not run: the {law.name} constants are fitted for {law.fitted_for.name}, but the flat "
-        f"{flat.name!r} has {why}; give the flat's own constants (rates=[...], --rate)"
+        f"{flat.name!r} has {why}; give the flat's own constants (rate_laws=[...], --rate)"
     )

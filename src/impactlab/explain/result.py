@@ -47,10 +47,12 @@ def _head(name: str, unit: str) -> str:
     return name if shown in ("1", "", "-") else f"{name} [{shown}]"
 
 
-def _short(status: str) -> str:
-    """A status for a table cell: "ok", or its kind ("not run", "refused", "not ok") with a
-    pointer to the notes, which give the reason whole."""
-    return status if status == "ok" else f"{status.partition(':')[0]} (see notes)"
+def _short(status: str, caveat: str = "") -> str:
+    """A status for a table cell: "ok", or its kind ("not run", "refused", "not ok", or "ok"
+    with a caveat) with a pointer to the notes, which give the reason whole."""
+    if status == "ok" and not caveat:
+        return status
+    return f"{status.partition(':')[0]} (see notes)"
 
 
 def _prediction(name: str, row: Any, unit: str) -> str:
@@ -64,10 +66,11 @@ def _prediction(name: str, row: Any, unit: str) -> str:
 class Explanation:
     """Which physics explains measured drops: ``comparison`` (one row per drop, configuration
     and measured quantity: measured, sigma, predicted, z, within_2_sigma, unit (SI), status),
-    ``summary`` (per drop and configuration: values within 2 sigma, chi2 = sum of z^2, the
-    run's contacts, mu_apparent beside the measured mu, max_delta_ratio, flags), the
+    ``summary`` (per drop and configuration: values within 2 sigma, chi2 = sum of z^2 over
+    the measured values (NaN when one has no prediction), the run's contacts, mu_apparent
+    beside the measured mu, max_delta_ratio, flags, a caveat), the
     ``configurations`` compared, the contact ``law`` and ``friction``, ``notes`` (what was not
-    run and why, what the runs warned) and ``source`` (the measurements file, if any).
+    run and why, the caveats, what the runs warned) and ``source`` (the measurements file, if any).
     ``result(drop, configuration)`` is the simulation behind a row."""
 
     comparison: pd.DataFrame
@@ -90,13 +93,36 @@ class Explanation:
         return self.outcomes[key].result
 
     def best(self, drop: str) -> str | None:
-        """The configuration of ``drop`` with the most values within 2 sigma (then the lowest
-        chi2) among those whose result is ok; None when none is."""
-        s = self.summary[(self.summary["drop"] == drop) & self.summary["ok"]]
-        if s.empty:
+        """The configuration that explains ``drop`` best: of those whose result is ok, the one
+        with the most values within 2 sigma, then the lowest chi2, like with like: the ones that
+        predict every measured value are ranked among themselves (one that leaves a value
+        unpredicted is never preferred for its fewer terms); when none does, the ok ones are
+        ranked over the quantities all of them predict. None when no configuration is ok (or
+        they predict no quantity in common); KeyError naming the known drops for another."""
+        if drop not in set(self.summary["drop"]):
+            known = list(dict.fromkeys(self.summary["drop"]))
+            raise KeyError(f"no drop {drop!r}; drops: {known}")
+        ok = self.summary[(self.summary["drop"] == drop) & self.summary["ok"]]
+        mine = self.comparison[self.comparison["drop"] == drop]
+        measured = set(mine["quantity"])
+        predicted = mine[mine["status"] == "ok"]
+        predicts = {
+            str(n): set(predicted.loc[predicted["configuration"] == n, "quantity"])
+            for n in ok["configuration"]
+        }
+        ranked = [n for n, got in predicts.items() if got == measured] or list(predicts)
+        common = set.intersection(*(predicts[n] for n in ranked)) if ranked else set()
+        if not common:
             return None
-        order = s.assign(key=-s["within_2_sigma"]).sort_values(["key", "chi2"], kind="stable")
-        return str(order["configuration"].iloc[0])
+        rows = predicted[
+            predicted["configuration"].isin(ranked) & predicted["quantity"].isin(common)
+        ]
+        score = rows.assign(chi2=rows["z"] ** 2).groupby("configuration", sort=False)
+        total = score[["within_2_sigma", "chi2"]].sum()
+        order = total.assign(key=-total["within_2_sigma"]).sort_values(
+            ["key", "chi2"], kind="stable"
+        )
+        return str(order.index[0])
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready (docs/json-schema.md): every number a quantity with its unit (SI)."""
@@ -113,14 +139,15 @@ class Explanation:
             {
                 "drop": r.drop, "configuration": r.configuration, "status": r.status,
                 "ok": bool(r.ok), "within_2_sigma": int(r.within_2_sigma),
-                "compared": int(r.compared), "measured": int(r.measured),
+                "compared": int(r.compared), "n_measured": int(r.n_measured),
                 "chi2": quantity(r.chi2, "1"),
                 "contacts": None if pd.isna(r.contacts) else int(r.contacts),
                 "mu": quantity(r.mu, "1"), "mu_apparent": quantity(r.mu_apparent, "1"),
                 "max_delta_ratio": quantity(r.max_delta_ratio, "1"),
                 "fitted_delta_ratio_max": quantity(r.fitted_delta_ratio_max, "1"),
                 "law_extrapolated": r.law_extrapolated, "rate_factor": quantity(r.rate_factor, "1"),
-                "flags": r.flags,
+                "flags": None if pd.isna(r.flags) else int(r.flags),
+                "flag_names": r.flag_names, "caveat": r.caveat or None,
             }
             for r in self.summary.itertuples(index=False)
         ]  # fmt: skip
@@ -160,9 +187,10 @@ class Explanation:
                 pred = {r.quantity: r for r in cfg.itertuples(index=False)}
                 rows.append(("", str(s.configuration), *(
                     _prediction(q, pred[q], units[q]) if q in pred else "" for q in quantities
-                ), f"{s.within_2_sigma}/{s.measured}" if s.ok else "-",
+                ), f"{s.within_2_sigma}/{s.n_measured}" if s.ok else "-",
                     _cell("chi2", s.chi2, "1"), "-" if pd.isna(s.contacts) else str(s.contacts),
-                    _cell("mu", s.mu_apparent, "1"), s.flags or "-", _short(s.status)))  # fmt: skip
+                    _cell("mu", s.mu_apparent, "1"), s.flag_names or "-",
+                    _short(s.status, s.caveat)))  # fmt: skip
         return head, rows
 
     def __repr__(self) -> str:

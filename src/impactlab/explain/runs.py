@@ -44,7 +44,7 @@ from impactlab.materials import Material
 from impactlab.sweep.flexible import FLEXIBLE_BODY
 from impactlab.sweep.models import Statics, material_for
 
-__all__ = ["Outcome", "drop_flat", "one_drop", "run_on_drop"]
+__all__ = ["Outcome", "drop_alone", "drop_flat", "run_on_drop"]
 
 
 @dataclass(frozen=True)
@@ -52,8 +52,9 @@ class Outcome:
     """A configuration on one drop: ``status`` ("ok", or why not: refused, flagged, not run),
     ``ok``, the predicted ``values`` (quantity -> SI value; NaN where not predicted),
     ``unsupported`` quantities (the model defines none of them), the ``result`` (an
-    ImpactResult or DropResult; None when nothing ran), ``law_extrapolated`` and the
-    ``warnings`` the run emitted."""
+    ImpactResult or DropResult; None when nothing ran), ``law_extrapolated``, the
+    ``warnings`` the run emitted and ``body_refused`` (the drop's body was refused before the
+    run: a rod the flexible rod does not accept)."""
 
     status: str
     ok: bool
@@ -62,11 +63,13 @@ class Outcome:
     result: Any = None
     law_extrapolated: bool = False
     warnings: tuple[str, ...] = ()
+    body_refused: bool = False
 
     @property
     def ran(self) -> bool:
-        """True when the configuration ran on the drop (refused or flagged included)."""
-        return not self.status.startswith("not run")
+        """True when the run produced a result (ok or flagged; not a refused run or one that
+        did not run)."""
+        return self.result is not None
 
 
 class _OneCase:
@@ -80,6 +83,7 @@ class _OneCase:
         self.results: list[Any] = []
         self.refusals: list[str] = []
         self.warnings: list[str] = []
+        self.body_refused = False
 
     def output_fields(self) -> tuple[str, ...]:
         return ()
@@ -119,8 +123,15 @@ class _OneCase:
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always")
             try:
+                body = _body(cat, row)
+            except (ValueError, ArithmeticError, np.linalg.LinAlgError) as exc:
+                self.refusals.append(str(exc))
+                self.body_refused = True
+                self.warnings += [str(w.message) for w in caught]
+                return None
+            try:
                 return simulate(
-                    _body(cat, row),
+                    body,
                     material_for("flat", cat["flat_material"], row),
                     law=cat["law"],
                     friction=cat["friction"],
@@ -140,7 +151,7 @@ class _OneCase:
                 self.warnings += [str(w.message) for w in caught]
 
 
-def one_drop(meas: Measurements, d: int) -> Measurements:
+def drop_alone(meas: Measurements, d: int) -> Measurements:
     """Drop ``d`` of ``meas`` alone, with only the quantities it measured."""
     measured = [q for q in meas.quantities if math.isfinite(meas.observed[q][d])]
     return Measurements(
@@ -165,7 +176,7 @@ def run_on_drop(
     config: Configuration, drop: Measurements, law: str, friction: str = "coulomb"
 ) -> Outcome:
     """``config`` with the contact ``law`` and ``friction`` on the one-drop ``drop``
-    (:func:`one_drop`): predict with no free parameter, through :class:`_OneCase`."""
+    (:func:`drop_alone`): predict with no free parameter, through :class:`_OneCase`."""
     body = FLEXIBLE_BODY if config.flexible else None
     model = CandidateModel(law, friction, body)
     unsupported = tuple(model.unsupported(drop.quantities))
@@ -177,11 +188,13 @@ def run_on_drop(
     notes = tuple(dict.fromkeys(case.warnings))
     if code == 0:
         extrapolated = bool(pred.extrapolated is not None and pred.extrapolated[0, 0])
-        return Outcome("ok", True, values, unsupported, result, extrapolated, notes)
+        return Outcome("ok", True, values, unsupported, result, extrapolated, notes,
+                       case.body_refused)  # fmt: skip
     why = case.refusals[0] if code == STATUS_REFUSED and case.refusals else status_message(code)
     word = "refused" if code == STATUS_REFUSED else "not ok"
     extrapolated = result is not None and bool(int(result.flags) & FLAG_LAW_EXTRAPOLATED)
-    return Outcome(f"{word}: {why}", False, values, unsupported, result, extrapolated, notes)
+    return Outcome(f"{word}: {why}", False, values, unsupported, result, extrapolated, notes,
+                   case.body_refused)  # fmt: skip
 
 
 def sequence_values(result: Any, gravity: float | bool = True) -> dict[str, Any]:

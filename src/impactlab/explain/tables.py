@@ -4,7 +4,9 @@
 z = (predicted - measured) / sigma uses the measurement's standard uncertainty alone: a model's
 own error (its law beyond the verified range, ...) is a flag beside it, never part of sigma. A
 configuration that did not run, was refused or is flagged invalidating has no prediction: its
-rows carry the reason and count as no agreement.
+rows carry the reason and count as no agreement. chi2 sums z^2 over every measured value of a
+drop: a configuration that leaves one unpredicted has none (NaN), so that configurations are
+never ranked by sums over different quantities.
 """
 
 from __future__ import annotations
@@ -21,7 +23,14 @@ from impactlab.explain.configurations import Configuration
 from impactlab.explain.runs import Outcome, sequence_values
 from impactlab.flags import ResultFlag
 
-__all__ = ["COMPARISON_COLUMNS", "SUMMARY_COLUMNS", "WITHIN", "comparison_table", "summary_table"]
+__all__ = [
+    "BODY_CAVEAT",
+    "COMPARISON_COLUMNS",
+    "SUMMARY_COLUMNS",
+    "WITHIN",
+    "comparison_table",
+    "summary_table",
+]
 
 #: A prediction agrees with a measurement when |z| is at most this many sigma.
 WITHIN = 2.0
@@ -30,10 +39,15 @@ COMPARISON_COLUMNS = ("drop", "configuration", "quantity", "measured", "sigma", 
                       "within_2_sigma", "unit", "status")  # fmt: skip
 #: The columns of the summary (one row per drop and configuration).
 SUMMARY_COLUMNS = (
-    "drop", "configuration", "status", "ok", "within_2_sigma", "compared", "measured", "chi2",
+    "drop", "configuration", "status", "ok", "within_2_sigma", "compared", "n_measured", "chi2",
     "contacts", "mu", "mu_apparent", "max_delta_ratio", "fitted_delta_ratio_max",
-    "law_extrapolated", "rate_factor", "flags",
+    "law_extrapolated", "rate_factor", "flags", "flag_names", "caveat",
 )  # fmt: skip
+#: The caveat of an ok rigid row whose drop's rod the flexible rows refuse as a body.
+BODY_CAVEAT = (
+    "the flexible rows refuse this drop's rod as a body (their status says why); the rigid rod "
+    "runs the same rod without that check, so its agreement does not vouch for the rod"
+)
 
 
 def _row_status(outcome: Outcome, quantity: str) -> str:
@@ -87,28 +101,36 @@ def summary_table(
     comparison: pd.DataFrame,
 ) -> pd.DataFrame:
     """Per drop and configuration: the values within 2 sigma, of those ``compared`` (predicted)
-    and ``measured``; chi2 = sum of z^2 over the compared ones (NaN: no prediction); the run's
-    contacts, Eq. 28's ``mu_apparent`` beside the drop's measured ``mu``, ``max_delta_ratio``
-    and the law's verified range, the rate factor and the flags."""
+    and ``n_measured``; chi2 = sum of z^2 over the measured ones (NaN when one has no
+    prediction); the run's contacts, Eq. 28's ``mu_apparent`` beside the drop's measured
+    ``mu``, ``max_delta_ratio`` and the law's verified range, ``law_extrapolated`` (None where
+    no result came), the rate factor, the ``flags`` (bitmask) and their ``flag_names``, and a
+    ``caveat`` ("" for none): :data:`BODY_CAVEAT` on an ok rigid row whose rod the flexible
+    rows refuse."""
     rows: list[dict[str, Any]] = []
     grouped = dict(tuple(comparison.groupby(["drop", "configuration"], sort=False)))
     for d, label in enumerate(meas.labels):
+        refused = any(outcomes[(label, c.name)].body_refused for c in configs if c.flexible)
         for cfg in configs:
             out = outcomes[(label, cfg.name)]
             part = grouped[(label, cfg.name)]
             compared = part[part["status"] == "ok"]
             seq = sequence_values(out.result)
-            chi2 = float((compared["z"] ** 2).sum()) if out.ok and len(compared) else math.nan
+            whole = out.ok and len(compared) == len(part) > 0
+            chi2 = float((compared["z"] ** 2).sum()) if whole else math.nan
             rows.append({
                 "drop": label, "configuration": cfg.name, "status": out.status, "ok": out.ok,
                 "within_2_sigma": int(compared["within_2_sigma"].sum()),
-                "compared": len(compared), "measured": len(part), "chi2": chi2,
+                "compared": len(compared), "n_measured": len(part), "chi2": chi2,
                 "contacts": seq["contacts"], "mu": float(meas.inputs["mu"][d]),
                 "mu_apparent": seq["mu_apparent"], "max_delta_ratio": seq["max_delta_ratio"],
                 "fitted_delta_ratio_max": seq["fitted_delta_ratio_max"],
                 "law_extrapolated": out.law_extrapolated if out.ran else None,
-                "rate_factor": seq["rate_factor"], "flags": flag_text(seq["flags"]),
+                "rate_factor": seq["rate_factor"], "flags": seq["flags"],
+                "flag_names": flag_text(seq["flags"]),
+                "caveat": BODY_CAVEAT if refused and out.ok and not cfg.flexible else "",
             })  # fmt: skip
     table = pd.DataFrame(rows, columns=list(SUMMARY_COLUMNS))
-    table["contacts"] = table["contacts"].astype("Int64")  # blank where nothing ran
+    for name in ("contacts", "flags"):  # blank where nothing ran
+        table[name] = table[name].astype("Int64")
     return table

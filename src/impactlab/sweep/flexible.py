@@ -48,7 +48,6 @@ from impactlab.dynamics.input_checks import DROP_RTOL_MAX, gravity_value
 from impactlab.dynamics.kernels import status as S
 from impactlab.dynamics.models import build_contact_model
 from impactlab.materials import Material
-from impactlab.schema import RENAMED_DROP_FIELDS
 from impactlab.sweep.inputs import get_input
 from impactlab.sweep.models import Statics, material_for
 from impactlab.sweep.options import check_cells_study
@@ -98,9 +97,16 @@ DROP_OUTPUTS: dict[str, Callable[[Any], Any]] = {
 }
 
 #: What an experiment that drops a rod measures as the impact output (key) is the drop's
-#: sequence total (value): the dent left, the total slip, first touch to last separation, the
-#: mark's extent over all contacts (``impactlab.calibrate`` compares them).
-MEASURED_AS: dict[str, str] = {**RENAMED_DROP_FIELDS, "contact_travel": "scar_length"}
+#: sequence total (value): the dent left, the total slip, and the mark's extent over all
+#: contacts, read for a measured ``scar_length`` (an impact's |contact_travel|; a signed
+#: contact_travel has no drop counterpart: ``calibrate.models.DROP_UNPREDICTED``). A measured
+#: duration or mean force is one contact's, not the sequence's (flights included): a drop
+#: predicts neither. ``impactlab.calibrate`` and ``impactlab.explain`` compare them.
+MEASURED_AS: dict[str, str] = {
+    "delta_p": "dent_depth",
+    "sliding_length": "sequence_sliding_length",
+    "contact_travel": "scar_length",
+}
 
 
 def _given(row: Mapping[str, float], name: str) -> float | None:
