@@ -219,7 +219,7 @@ def _result(
 
 def _simulate_defaults() -> dict[str, Any]:
     """``simulate``'s keyword defaults (the reference takes the same arguments)."""
-    skip = ("body", "flat", "history")
+    skip = ("body", "flat", "history", "partial_slip_cells")  # partial slip: no reference
     return {
         n: p.default
         for n, p in inspect.signature(simulate).parameters.items()
