@@ -11,7 +11,7 @@ compiles on the way to an engine, which then announces itself) print nothing.
 ``IMPACTLAB_QUIET_COMPILE=1`` silences it. A part
 compiled in several pieces, one after the other (the flexible drop: its right-hand side, step
 and event handler, then the drop), runs them inside ``one_line()``: one line and one counter
-for all of them.
+for all of them. A progress display on the terminal gives way to the notice (``gives_way``).
 """
 
 from __future__ import annotations
@@ -54,6 +54,33 @@ def describe(module: str) -> tuple[str, int]:
     return "impactlab's compiled code", 10
 
 
+#: Progress displays (rich ``Progress``) on the terminal while impactlab may compile: taken off
+#: it just before a notice is shown (:func:`gives_way`), so that the notice keeps its one line;
+#: their owner starts them again with its next update.
+_DISPLAYS: list[Any] = []
+
+
+@contextmanager
+def gives_way(display: Any) -> Iterator[None]:
+    """Within the block, ``display`` (a rich ``Progress`` that does not redirect stderr) is
+    stopped when a compile notice is about to be shown; its owner restarts it (``start()``
+    where ``display.live.is_started`` is false) at its next update."""
+    _DISPLAYS.append(display)
+    try:
+        yield
+    finally:
+        _DISPLAYS.remove(display)
+
+
+def _clear_displays() -> None:
+    for display in tuple(_DISPLAYS):  # a copy: the owner's block may end meanwhile
+        try:
+            if display.live.is_started:
+                display.stop()
+        except Exception:  # a display that cannot stop is not worth a crash
+            pass
+
+
 class _Notice:
     """The state of one announced compilation (a timer thread prints and refreshes the line)."""
 
@@ -79,6 +106,7 @@ class _Notice:
             return  # several pieces (the flexible drop's addresses, then the drop) says it once
         self.announced.add(what)
         self.shown = True
+        _clear_displays()
         tty = _isatty(self.stream)
         line = (
             f"impactlab: compiling {what} (first run after installing or updating impactlab; "

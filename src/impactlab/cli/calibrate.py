@@ -14,6 +14,7 @@ with one line naming the step reached.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import math
 import sys
@@ -23,6 +24,7 @@ from typing import Annotated, Any, NoReturn
 import typer
 from rich.text import Text
 
+from impactlab._compile_notice import gives_way
 from impactlab._display import display_unit, format_number
 from impactlab._json import jsonable
 from impactlab.cli._common import UserError, console
@@ -70,11 +72,12 @@ def _progress(quiet: bool) -> tuple[Any, Any]:
         TimeRemainingColumn(),
         console=Console(stderr=True),
         transient=True,
+        redirect_stderr=False,  # a compile notice: the bar gives way to it (gives_way)
     )
     tasks: dict[str, Any] = {}
 
     def report(model: str, done: int, total: int) -> None:
-        if not tasks:
+        if not bar.live.is_started:  # first report, or after a compile notice
             bar.start()
         if model not in tasks:
             tasks[model] = bar.add_task(model, total=total)
@@ -213,7 +216,8 @@ def calibrate_cmd(
         quiet = True  # the workers cannot report progress here
     report, bar = _progress(quiet)
     try:
-        cal = calibrate(progress=report, **kw)
+        with gives_way(bar) if bar is not None else contextlib.nullcontext():
+            cal = calibrate(progress=report, **kw)
     except StateInUseError as exc:
         if out is None or exc.folder != out / "state":
             raise

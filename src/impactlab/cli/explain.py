@@ -11,6 +11,7 @@ impactlab explain did not write stops the command before any work).
 
 from __future__ import annotations
 
+import contextlib
 import json
 import sys
 from pathlib import Path
@@ -31,9 +32,9 @@ _RATE_HELP = (
 
 def _progress(quiet: bool) -> tuple[Any, Any]:
     """(progress callback, the rich Progress to stop) on stderr, or (None, None). The bar
-    starts with a report and leaves stderr as it is (no redirection): while impactlab
-    compiles, :class:`_PauseOnCompile` takes it off the terminal, so the compile notice keeps
-    one line, its counter updated in place, and the next report brings the bar back."""
+    starts with a report and leaves stderr as it is (no redirection): before a compile notice
+    is shown it gives way (``impactlab._compile_notice.gives_way``), so the notice keeps one
+    line, its counter updated in place, and the next report brings the bar back."""
     if quiet:
         return None, None
     from rich.console import Console
@@ -52,21 +53,6 @@ def _progress(quiet: bool) -> tuple[Any, Any]:
         bar.update(task[0], completed=done, description=configuration)
 
     return report, bar
-
-
-class _PauseOnCompile:
-    """A listener of numba's ``numba:compile`` events that stops the progress ``bar`` when a
-    compilation starts (the first run of an engine: ``impactlab._compile_notice``)."""
-
-    def __init__(self, bar: Any) -> None:
-        self.bar = bar
-
-    def on_start(self, event: Any) -> None:
-        if self.bar.live.is_started:
-            self.bar.stop()
-
-    def on_end(self, event: Any) -> None:
-        return None
 
 
 def _show(explanation: Any) -> None:
@@ -108,9 +94,7 @@ def explain_cmd(
 
     Example: impactlab explain drops.csv --out explained
     """
-    from numba.core import event
-
-    from impactlab._compile_notice import register
+    from impactlab._compile_notice import gives_way
     from impactlab.explain import configurations, explain, save_explanation
     from impactlab.explain.saving import check_folder
 
@@ -120,15 +104,13 @@ def explain_cmd(
         except (FileExistsError, NotADirectoryError) as exc:
             raise UserError(str(exc)) from None
     report, bar = _progress(quiet)
-    pause = None if bar is None else register(_PauseOnCompile(bar))
     try:
         configurations(rate, "--rate")  # its errors name the option
-        result = explain(measurements, law=law, rate_laws=rate, progress=report)
+        with gives_way(bar) if bar is not None else contextlib.nullcontext():
+            result = explain(measurements, law=law, rate_laws=rate, progress=report)
     except ValueError as exc:
         raise UserError(str(exc)) from None
     finally:
-        if pause is not None:
-            event.unregister("numba:compile", pause)
         if bar is not None and bar.live.is_started:
             bar.stop()
     files = save_explanation(result, out, "--out") if out is not None else {}

@@ -27,21 +27,10 @@ from __future__ import annotations
 import dataclasses
 import sys
 import time
-from collections.abc import Callable, Iterator
-from contextlib import contextmanager
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
-
-from rich.console import Console
-from rich.progress import (
-    BarColumn,
-    MofNCompleteColumn,
-    Progress,
-    TextColumn,
-    TimeElapsedColumn,
-    TimeRemainingColumn,
-)
 
 from impactlab._display import format_number
 from impactlab.dynamics.input_checks import check_partial_slip_rtol
@@ -64,6 +53,7 @@ from impactlab.sweep.engine import (
 from impactlab.sweep.integrity import describe
 from impactlab.sweep.limits import usable_cores
 from impactlab.sweep.options import with_recorded_chunk_size
+from impactlab.sweep.progress_bar import progress_bar
 from impactlab.sweep.store import StoreMeta, SweepStore, open_sweep
 from impactlab.sweep.study import Study, load_study
 from impactlab.sweep.study_meta import category_values, store_meta
@@ -161,44 +151,6 @@ class SweepInterrupted(KeyboardInterrupt):
     def __init__(self, message: str = "interrupted", said: bool = False) -> None:
         super().__init__(message)
         self.said = said
-
-
-@contextmanager
-def _progress(
-    total: int, done: int, label: str, mode: bool | None
-) -> Iterator[Callable[[int], None]]:
-    """A rich progress bar on stderr (count, rate, elapsed, ETA). ``mode``: None = when stderr is
-    a terminal, True = always, False = never."""
-    if mode is False:
-        yield lambda n: None
-        return
-    console = Console(stderr=True, force_terminal=True if mode else None)
-    if not console.is_terminal:
-        yield lambda n: None
-        return
-    with Progress(
-        TextColumn("[bold]{task.description}"),
-        BarColumn(),
-        MofNCompleteColumn(),
-        TextColumn("impacts"),
-        TextColumn("{task.fields[rate]}"),
-        TimeElapsedColumn(),
-        TextColumn("ETA"),
-        TimeRemainingColumn(),
-        console=console,
-        transient=False,
-    ) as prog:
-        task = prog.add_task(label, total=total, completed=done, rate="")
-        t0 = time.perf_counter()
-        count = [0]
-
-        def advance(n: int) -> None:
-            count[0] += n
-            dt = time.perf_counter() - t0
-            rate = f"{count[0] / dt:,.0f}/s" if dt > 0 else ""
-            prog.update(task, advance=n, rate=rate)
-
-        yield advance
 
 
 def _note(msg: str, quiet: bool) -> None:
@@ -373,7 +325,7 @@ def _run_store(
         advance(res.n_cases)
 
     try:
-        with _progress(lay.n_cases, done_cases, st.name, show) as advance:
+        with progress_bar(lay.n_cases, done_cases, st.name, show) as advance:
             job = Job(st, pending, ev, computed_outputs(meta.outputs), sink, advance)
             if be.name == "threads":
                 run_threads(job, be.workers)
