@@ -49,7 +49,15 @@ from impactlab.sweep.material_inputs import CUSTOM
 from impactlab.sweep.models import Statics, material_for
 from impactlab.sweep.status import SWEEP_STATUS_MESSAGES
 
-__all__ = ["CandidateModel", "Prediction", "predict"]
+__all__ = [
+    "CandidateModel",
+    "Prediction",
+    "case_body",
+    "output_value",
+    "predict",
+    "simulate_row",
+    "whole_materials",
+]
 
 #: Status of a case that ran but broke physics (energy gain): a likelihood of zero.
 STATUS_ENERGY_GAIN = 301
@@ -243,7 +251,7 @@ def predict(
             cases[k] = np.full(w * nd, float(v))
         for j, p in enumerate(params):
             cases[p.name] = np.repeat(theta[:, j], nd)
-        categories = _whole_materials(dict(key), cases)
+        categories = whole_materials(dict(key), cases)
         statics = Statics(categories, dict(model.law_params), dict(engine or {}))
         asked = _drop_outputs(outputs) if flexible else outputs
         if model.batched:
@@ -267,7 +275,7 @@ def predict(
     return Prediction(values, status, extrapolated)
 
 
-def _whole_materials(cat: dict[str, str], cases: dict[str, np.ndarray]) -> dict[str, str]:
+def whole_materials(cat: dict[str, str], cases: dict[str, np.ndarray]) -> dict[str, str]:
     """A calibrated material property (``flat_yield_strength``, ...) of a library material: the
     cases get every property of that material as columns, the free one replaced, and the side's
     material is ``"custom"`` (a library material is never partly changed,
@@ -299,7 +307,9 @@ def _derived(q: str, res: Mapping[str, np.ndarray], cases: Mapping[str, np.ndarr
     return res[MEASURABLE[q].outputs[0]]
 
 
-def _body(cat: Mapping[str, str], row: Mapping[str, float]) -> Rod | Sphere | FlexibleRod:
+def case_body(cat: Mapping[str, str], row: Mapping[str, float]) -> Rod | Sphere | FlexibleRod:
+    """The body of the case ``row`` (SI inputs; NaN: not given) with the categories ``cat``:
+    a FlexibleRod, a Sphere, or a Rod (the paper's geometry and mass where not given)."""
     mat = material_for("body", cat["body_material"], row)
 
     def given(name: str, default: Any = None) -> Any:
@@ -319,6 +329,27 @@ def _body(cat: Mapping[str, str], row: Mapping[str, float]) -> Rod | Sphere | Fl
     )
 
 
+def simulate_row(body: Any, statics: Statics, row: Mapping[str, float], rate: Any = None) -> Any:
+    """``simulate`` of the case ``row`` (its flat, kinematics and mu; the categories' law and
+    friction, the study's gravity and law parameters) on ``body``, without its history; the
+    flat's ``rate`` law (a name or a RateLaw) for a flexible rod. Its errors propagate."""
+    cat = statics.categories
+    return simulate(
+        body,
+        material_for("flat", cat["flat_material"], row),
+        law=cat["law"],
+        friction=cat["friction"],
+        mu=row["mu"],
+        angle=row["angle"] if cat["body"] != "sphere" else None,
+        velocity=(row["vx"], row["vy"]),
+        spin=row["spin"],
+        gravity=dict(statics.engine).get("gravity", True),
+        law_params=dict(statics.law_params) or None,
+        history=False,
+        **({"rate": rate} if rate is not None else {}),
+    )
+
+
 def _one_by_one(
     cases: Mapping[str, np.ndarray], statics: Statics, outputs: Sequence[str], rate: str | None
 ) -> tuple[dict[str, np.ndarray], np.ndarray]:
@@ -328,37 +359,19 @@ def _one_by_one(
     n = len(cases["angle"])
     res = {o: np.full(n, np.nan) for o in outputs}
     status = np.zeros(n, dtype=np.int32)
-    cat = statics.categories
-    engine = dict(statics.engine)
-    extra: dict[str, Any] = {"rate": rate} if rate else {}
     for i in range(n):
         row = {k: float(v[i]) for k, v in cases.items()}
         try:
-            body = _body(cat, row)
-            flat = material_for("flat", cat["flat_material"], row)
-            r = simulate(
-                body,
-                flat,
-                law=cat["law"],
-                friction=cat["friction"],
-                mu=row["mu"],
-                angle=row["angle"] if cat["body"] != "sphere" else None,
-                velocity=(row["vx"], row["vy"]),
-                spin=row["spin"],
-                gravity=engine.get("gravity", True),
-                law_params=dict(statics.law_params) or None,
-                history=False,
-                **extra,
-            )
+            r = simulate_row(case_body(statics.categories, row), statics, row, rate or None)
         except (ValueError, ArithmeticError, np.linalg.LinAlgError):
             status[i] = STATUS_REFUSED
             continue
         for o in outputs:
-            res[o][i] = _value_of(r, o)
+            res[o][i] = output_value(r, o)
     return res, status
 
 
-def _value_of(result: Any, output: str) -> float:
+def output_value(result: Any, output: str) -> float:
     """An engine output field of an ImpactResult or a DropResult (``DROP_OUTPUTS``)."""
     if isinstance(result, DropResult):
         read = DROP_OUTPUTS.get(output)

@@ -28,14 +28,14 @@ from impactlab.calibrate.measurements import Measurements
 from impactlab.calibrate.models import (
     STATUS_REFUSED,
     CandidateModel,
-    _body,
-    _value_of,
-    _whole_materials,
+    case_body,
+    output_value,
     predict,
+    simulate_row,
     status_message,
+    whole_materials,
 )
 from impactlab.contact.rate import RateLaw
-from impactlab.dynamics import simulate
 from impactlab.dynamics.drop_result import DropResult
 from impactlab.dynamics.input_checks import gravity_value
 from impactlab.explain.configurations import Configuration
@@ -114,36 +114,22 @@ class _OneCase:
                 status[i] = STATUS_REFUSED
                 continue
             for o in outputs:
-                res[o][i] = _value_of(result, o)
+                res[o][i] = output_value(result, o)
         return res, status
 
     def _run(self, statics: Statics, row: Mapping[str, float]) -> Any:
-        cat, engine = statics.categories, dict(statics.engine)
-        extra: dict[str, Any] = {"rate": self.rate} if self.rate is not None else {}
+        cat = statics.categories
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always")
             try:
-                body = _body(cat, row)
+                body = case_body(cat, row)
             except (ValueError, ArithmeticError, np.linalg.LinAlgError) as exc:
                 self.refusals.append(str(exc))
                 self.body_refused = True
                 self.warnings += [str(w.message) for w in caught]
                 return None
             try:
-                return simulate(
-                    body,
-                    material_for("flat", cat["flat_material"], row),
-                    law=cat["law"],
-                    friction=cat["friction"],
-                    mu=row["mu"],
-                    angle=row["angle"] if cat["body"] != "sphere" else None,
-                    velocity=(row["vx"], row["vy"]),
-                    spin=row["spin"],
-                    gravity=engine.get("gravity", True),
-                    law_params=dict(statics.law_params) or None,
-                    history=False,
-                    **extra,
-                )
+                return simulate_row(body, statics, row, self.rate)
             except (ValueError, ArithmeticError, np.linalg.LinAlgError) as exc:
                 self.refusals.append(str(exc))
                 return None
@@ -168,7 +154,7 @@ def drop_flat(meas: Measurements, d: int) -> Material:
     """The flat of drop ``d`` as its cases get it: the library material, or one whose
     properties the drop's columns set (``flat_yield_strength``, ...)."""
     cases = {k: v[d : d + 1].copy() for k, v in meas.inputs.items()}
-    cat = _whole_materials(dict(meas.categories[d]), cases)
+    cat = whole_materials(dict(meas.categories[d]), cases)
     return material_for("flat", cat["flat_material"], {k: float(v[0]) for k, v in cases.items()})
 
 
