@@ -23,6 +23,7 @@ __all__ = [
     "PLAUSIBLE_MIN_SPEED",
     "PLAUSIBLE_SPEED",
     "SIGMA_RANGE_FRACTION",
+    "check_momentum",
     "check_plausible",
     "check_restitution",
     "check_sigma_fits",
@@ -273,3 +274,28 @@ def past_normal_inversion(th: float) -> str:
         f"; the rod leans past the flat's normal: that drop is the mirror of one at {mirror:.6g} "
         "deg, with the same magnitudes (the dent runs the other way): invert that angle"
     )
+
+
+def check_momentum(meas: Mapping[str, Measured], m: float, K_y: float, T0: float, g: float) -> None:
+    """ImplausibleInputWarning when the measured dv_cy [m/s] implies a coefficient of
+    restitution outside [0, 1], or one that disagrees with the measured ``e`` beyond three
+    combined standard uncertainties (and 0.05): F T = m (dv_cy + g T) (Eq. 29) and
+    F T = ((1 + e)|v_i| + g T) / K_y (the rigid-body identity) give
+    e = (K_y m (dv_cy + g T) - g T) / |v_i| - 1."""
+    v = abs(meas["v_i"].value)
+    dv = meas["dv_cy"]
+    implied = (K_y * m * (dv.value + g * T0) - g * T0) / v - 1.0
+    sigma = K_y * m * dv.sigma / v
+    text = (
+        f"dv_cy = {dv.value:.4g} +- {dv.sigma:.2g} m/s implies e = {implied:.4g} (Eq. 29, "
+        "rigid-body identity)"
+    )
+    if not -3.0 * sigma <= implied <= 1.0 + 3.0 * sigma:
+        warn_implausible(f"{text}, outside [0, 1]: no impact gives it; check dv_cy and its sign")
+    elif "e" in meas:
+        e = meas["e"]
+        if abs(implied - e.value) > max(0.05, 3.0 * math.hypot(sigma, e.sigma)):
+            warn_implausible(
+                f"{text}, but e = {e.value:.4g} +- {e.sigma:.2g} was measured: the force from "
+                "dv_cy (F_momentum) and from e (F_rigid) disagree; check both"
+            )

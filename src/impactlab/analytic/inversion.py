@@ -30,9 +30,10 @@ from impactlab.analytic._conditioning import (
     check_duration,
     check_finite_result,
 )
+from impactlab.analytic._correlation import check_correlation, linear_sigmas, sign_flipped
 from impactlab.analytic._inputs import HALF_PI, rod_values
 from impactlab.analytic._inputs import travel as _travel
-from impactlab.analytic._measurements import check_plausible, measurements
+from impactlab.analytic._measurements import check_momentum, check_plausible, measurements
 from impactlab.analytic.closed_forms import G0, check_sliding, coefficients, duration_from_dent
 from impactlab.analytic.monte_carlo import (
     MC_REJECTED_WARNING,
@@ -186,43 +187,6 @@ def _forces(
     return F_rig, F_mom
 
 
-def _check_momentum(
-    meas: Mapping[str, Measured], m: float, K_y: float, T0: float, g: float
-) -> None:
-    """ImplausibleInputWarning when the measured dv_cy [m/s] implies a coefficient of
-    restitution outside [0, 1], or one that disagrees with the measured ``e`` beyond three
-    combined standard uncertainties (and 0.05): F T = m (dv_cy + g T) (Eq. 29) and
-    F T = ((1 + e)|v_i| + g T) / K_y (the rigid-body identity) give
-    e = (K_y m (dv_cy + g T) - g T) / |v_i| - 1."""
-    v = abs(meas["v_i"].value)
-    dv = meas["dv_cy"]
-    implied = (K_y * m * (dv.value + g * T0) - g * T0) / v - 1.0
-    sigma = K_y * m * dv.sigma / v
-    text = (
-        f"dv_cy = {dv.value:.4g} +- {dv.sigma:.2g} m/s implies e = {implied:.4g} (Eq. 29, "
-        "rigid-body identity)"
-    )
-    if not -3.0 * sigma <= implied <= 1.0 + 3.0 * sigma:
-        warn_implausible(f"{text}, outside [0, 1]: no impact gives it; check dv_cy and its sign")
-    elif "e" in meas:
-        e = meas["e"]
-        if abs(implied - e.value) > max(0.05, 3.0 * math.hypot(sigma, e.sigma)):
-            warn_implausible(
-                f"{text}, but e = {e.value:.4g} +- {e.sigma:.2g} was measured: the force from "
-                "dv_cy (F_momentum) and from e (F_rigid) disagree; check both"
-            )
-
-
-def _linear_sigmas(
-    meas: Mapping[str, Measured], sens_T: Mapping[str, float], sens_F: Mapping[str, float]
-) -> tuple[float, float]:
-    """First-order standard deviations of T and F from the sensitivities."""
-    names = [k for k in meas if meas[k].sigma > 0]
-    sT = math.sqrt(sum((sens_T[k] * meas[k].sigma) ** 2 for k in names))
-    sF = math.sqrt(sum((sens_F[k] * meas[k].sigma) ** 2 for k in names))
-    return sT, sF
-
-
 def invert(
     *,
     angle: Value,
@@ -233,6 +197,7 @@ def invert(
     e: Value | None = None,
     dv_cy: Value | None = None,
     vt_in: Value = 0.0,
+    correlation: Mapping[tuple[str, str], float] | None = None,
     rod: Rod | None = None,
     gravity: bool = False,
     measure: str = "slip",
@@ -243,10 +208,10 @@ def invert(
     """Impact duration T and mean normal force F from a measured oblique impact (paper Sec. 5.2).
 
     Each measured input is a number (exact) or a ``(value, sigma)`` pair / :class:`Measured`
-    (sigma = standard deviation, same unit; inputs are treated as independent). A number is SI;
-    a dimensional value may also be a string with units (``"22 um"``, ``"20 deg"``) or a pint
-    Quantity of any registry, and then a bare sigma beside it is in its unit, as on the command
-    line (``("45 deg", 0.2)``: 0.2 deg; ``("22 um", 2)``: 2 um); mu and e are plain numbers.
+    (sigma = standard deviation, same unit; independent unless ``correlation`` says). A number
+    is SI; a dimensional value may also be a string with units (``"22 um"``, ``"20 deg"``) or a
+    pint Quantity of any registry, and then a bare sigma beside it is in its unit, as on the
+    command line (``("45 deg", 0.2)``: 0.2 deg; ``("22 um", 2)``: 2 um); mu and e are plain numbers.
 
     angle : rod-to-flat angle [rad], in (0, pi/2).
     v_i : vertical tip velocity before the impact [m/s]; sign ignored (the paper writes -1.41);
@@ -269,6 +234,11 @@ def invert(
         (|v_i| - vt_in/|alpha|), exact for vt_in <= 0 (docs/analytic.md); for vt_in > 0 the
         sliding reverses and T is an upper bound (warned: see below); vt_in >= |alpha| |v_i|
         is refused.
+    correlation : correlation coefficients of inputs measured together, (name, name) ->
+        coefficient in [-1, 1] by these keywords (``{("e", "dv_cy"): 0.94}``), each an input
+        given with a sigma, the matrix positive semi-definite; used in the first-order
+        propagation (J C J^T) and the Monte Carlo (correlated draws). Default None: independent.
+        A v_i or sliding_length given negative: its magnitude's coefficients change sign.
     rod : an ``impactlab.bodies.Rod``; default the paper's rod (``impactlab.bodies.PAPER_ROD``).
     gravity : include gravity during the contact (adds g T^2 / 2 to Eq. 12 and the gravity impulse
         to Eq. 29); False reproduces the paper's equations.
@@ -307,6 +277,8 @@ def invert(
         given = {**inputs, "sliding_length": sliding_length, "e": e, "dv_cy": dv_cy}
         meas = measurements({**given, "vt_in": vt_in})
         opt = _options(n_samples, seed, gravity, g, measure)
+        flipped = sign_flipped(given) if correlation is not None else frozenset()
+        opt["correlation"] = check_correlation(correlation, meas, flipped)
         m, L, R, inertia = _scalar_rod(rod)
         check_plausible(meas, L, R)
         coef = _nominal_coefficients(meas, m, L, R, inertia, opt["travel"])
@@ -364,15 +336,16 @@ def _result(
     if not bool(ok):  # pragma: no cover - guarded by the checks above
         raise ValueError("the inputs give no valid inversion")
     sens_T, sens_F = _sensitivities(meas, nominal, core)
-    sT_lin, sF_lin = _linear_sigmas(meas, sens_T, sens_F)
+    corr = opt["correlation"]
+    sT_lin, sF_lin = linear_sigmas(meas, sens_T, sens_F, corr)
     check_finite_result({"sigma_T_linear": sT_lin, "sigma_F_linear": sF_lin}, meas, rod)
     varied = any(v.sigma > 0 for v in meas.values())
     K_x, K_y, al, mu_c = coef
     check_duration(T0, check_conditioning(meas, sens_T, T0, al, mu_c))
     F_rig, F_mom = _forces(meas, m, K_y, T0, opt["gravity"], opt["g"])
     if "dv_cy" in meas:
-        _check_momentum(meas, m, K_y, T0, opt["g"] if opt["gravity"] else 0.0)
-    mc_args = (meas, opt["n_samples"], opt["seed"], core, abs(al), opt["gravity"])
+        check_momentum(meas, m, K_y, T0, opt["g"] if opt["gravity"] else 0.0)
+    mc_args = (meas, opt["n_samples"], opt["seed"], core, abs(al), opt["gravity"], corr)
     mc = monte_carlo(*mc_args) if varied else point_distribution(T0, float(F0_a))
     check_finite_result(mc, meas, rod)
     return InversionResult(
@@ -393,6 +366,7 @@ def _result(
         gravity=opt["gravity"],
         measure=measure,
         inputs=MappingProxyType({k: (v.value, v.sigma) for k, v in meas.items()}),
+        correlation=MappingProxyType(dict(corr)),
         rod=MappingProxyType(dict(rod)),
         sensitivity_T=MappingProxyType(sens_T),
         sensitivity_F=MappingProxyType(sens_F),

@@ -13,6 +13,7 @@ import numpy as np
 
 from impactlab._validation import warn_implausible
 from impactlab.analytic._conditioning import REVERSAL_SIGMAS
+from impactlab.analytic._correlation import Correlation, correlate
 from impactlab.analytic.result import MC_INTERVAL, Measured
 
 __all__ = [
@@ -45,6 +46,7 @@ def monte_carlo(
     core: Any,
     abs_alpha: float = math.nan,
     gravity: bool = False,
+    corr: Correlation | None = None,
 ) -> dict[str, Any]:
     """Means, standard deviations, medians, 95 % intervals (``MC_INTERVAL`` percentiles), the
     rejected fraction and the number of samples kept of ``n`` samples of the inputs ``meas``
@@ -52,10 +54,15 @@ def monte_carlo(
     when more than ``MC_REJECTED_WARNING`` of them are discarded, when any falls in the
     sticking regime or reaches vt_in >= |alpha| |v_i| (``abs_alpha`` = |alpha| at the nominal
     inputs; the spread of T is then unreliable: :func:`_warn_heavy_tail`, :func:`_warn_pole`),
-    and where samples with vt_in > 0 move T's median or interval (:func:`_check_reversal`)."""
+    and where samples with vt_in > 0 move T's median or interval (:func:`_check_reversal`).
+    The inputs are drawn independently, or correlated as ``corr`` says (the same standard
+    normals, mixed: :func:`correlate`)."""
     rng = np.random.default_rng(seed)
+    z = {k: rng.standard_normal(n) for k, v in meas.items() if v.sigma > 0}
+    if corr:
+        correlate(z, meas, corr)
     samples = {
-        k: (v.value + v.sigma * rng.standard_normal(n)) if v.sigma > 0 else np.full(n, v.value)
+        k: (v.value + v.sigma * z[k]) if v.sigma > 0 else np.full(n, v.value)
         for k, v in meas.items()
     }
     Ts, Fs, ok, stuck, past = (np.broadcast_to(v, (n,)) for v in core(samples))

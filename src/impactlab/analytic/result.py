@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from types import MappingProxyType
 from typing import Any
 
 import numpy as np
@@ -110,11 +111,13 @@ class InversionResult:
     ``sliding_length``, ``e``, ``dv_cy``, and ``vt_in``, signed, where not 0); ``rod`` (mass,
     length, tip_radius, inertia);
     ``sensitivity_T``, ``sensitivity_F`` (partial derivatives with respect to each input, SI);
-    ``warnings``: the texts of the inversion's ImplausibleInputWarnings (as ``impactlab invert
-    --json`` lists them; ``()`` for none). ``print(result)`` and Jupyter's table show the
-    inputs, T and F with their uncertainties, the Monte Carlo's medians and 95 % intervals
-    (where an input has a sigma), the note on discarded samples and the warnings; ``repr`` is
-    one line.
+    ``correlation`` ((name, name) -> coefficient of the inputs as used, as in ``inputs``;
+    empty: independent; ``to_dict()``: a list of ``{"inputs": [a, b], "coefficient":
+    {"value", "unit"}}``); ``warnings``: the texts of the inversion's ImplausibleInputWarnings
+    (as ``impactlab invert --json`` lists them; ``()`` for none). ``print(result)`` and
+    Jupyter's table show the inputs (and their correlations), T and F with their
+    uncertainties, the Monte Carlo's medians and 95 % intervals (where an input has a sigma),
+    the note on discarded samples and the warnings; ``repr`` is one line.
     """
 
     duration: float
@@ -147,6 +150,9 @@ class InversionResult:
     sensitivity_T: Mapping[str, float] = field(repr=False)
     sensitivity_F: Mapping[str, float] = field(repr=False)
     warnings: tuple[str, ...] = field(default=(), repr=False)
+    correlation: Mapping[tuple[str, str], float] = field(
+        default_factory=lambda: MappingProxyType({}), repr=False
+    )
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "warnings", tuple(str(w) for w in self.warnings))
@@ -154,6 +160,10 @@ class InversionResult:
     def _uncertain(self) -> bool:
         """Whether an input has a sigma (the Monte Carlo ran)."""
         return any(s > 0 for _v, s in self.inputs.values())
+
+    def _correlations(self) -> str:
+        """The inputs' correlations in one line (``"(e, dv_cy) 0.94, ..."``)."""
+        return ", ".join(f"({a}, {b}) {rho:.2g}" for (a, b), rho in self.correlation.items())
 
     def _note(self) -> str:
         """The share of Monte Carlo samples discarded, one sentence (``""`` for none)."""
@@ -170,6 +180,7 @@ class InversionResult:
         warnings (the rows of ``impactlab invert``'s table)."""
         uncertain = self._uncertain()
         rows = [field_row(k, float(v), _INPUT_UNITS[k], s) for k, (v, s) in self.inputs.items()]
+        rows += [("correlation", self._correlations(), "")] if self.correlation else []
         out: dict[str, Any] = {"duration": self.duration, "mean_force": self.mean_force}
         out["force_method"] = self.force_method
         if self.F_momentum is not None and self.F_rigid is not None:  # both inputs given
@@ -221,7 +232,12 @@ class InversionResult:
         out: dict[str, Any] = {}
         for k in self.__dataclass_fields__:
             v = getattr(self, k)
-            if isinstance(v, Mapping):
+            if k == "correlation":  # pairs: JSON keys are texts, a coefficient a quantity
+                v = [
+                    {"inputs": list(pair), "coefficient": {"value": rho, "unit": "1"}}
+                    for pair, rho in v.items()
+                ]
+            elif isinstance(v, Mapping):
                 v = {kk: (list(vv) if isinstance(vv, tuple) else vv) for kk, vv in v.items()}
             elif isinstance(v, tuple):
                 v = list(v)
@@ -270,6 +286,7 @@ class InversionResult:
                 + [pm(k) for k in ("e", "dv_cy", "vt_in") if k in ins]
             ),
             f"  {pm('delta_p', '|delta_p|')}, {pm('sliding_length', '|L_s|')}",
+            *([f"  correlation: {self._correlations()}"] if self.correlation else []),
             f"  alpha = {format_number(self.alpha)}, mu_c = {format_number(self.mu_c)}, "
             f"K_x = {format_number(self.K_x)} 1/kg, K_y = {format_number(self.K_y)} 1/kg",
             out("T"),

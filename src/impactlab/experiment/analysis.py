@@ -9,9 +9,10 @@ never lost; an invalid argument raises a TypeError or ValueError naming it at on
 3. ``inversion``: T and F from both (``impactlab.analytic.invert``: paper Eq. 12 with the
    measured e, mu, v_i, the tip's incoming tangential velocity ``vt_in``, angle, delta_p (the
    dent's maximum depth), L_s; F from Eq. 29 with the measured centre-of-mass velocity
-   change); an impact that sticks within the measurement's uncertainty (mu within a few sigma
-   of mu_c, or no tangential exit velocity of the tip: ``experiment.sticking``) is this
-   stage's error instead;
+   change; the inputs from the marker tracks correlated as their covariance says:
+   :func:`kinematic_correlation`); an impact that sticks within the measurement's
+   uncertainty (mu within a few sigma of mu_c, or no tangential exit velocity of the tip:
+   ``experiment.sticking``) is this stage's error instead;
 4. ``model`` (optional, with ``flat``): the impact engine run with the measured initial state, for
    comparison (the paper's Tables 2-3); then a warning that marks the result not ok
    (``result.doubts``) for an inferred T or F far from the simulated impact's, or a T longer
@@ -134,6 +135,7 @@ def _inversion_stage(
                 e=k.e.pair(),
                 dv_cy=k.dv_cy.pair(),
                 vt_in=k.v_tip_in[0].pair(),  # the tip's incoming tangential velocity
+                correlation=kinematic_correlation(k),
                 delta_p=d.delta_p.pair(),
                 sliding_length=d.sliding_length.pair(),
                 rod=rod,
@@ -147,6 +149,31 @@ def _inversion_stage(
             res.add_doubt(text)
         else:
             res.warnings.append(text)
+
+
+#: The inversion's inputs from the marker tracks: keyword of ``invert`` -> derived quantity of
+#: the kinematics (``ImpactKinematics.derived_names``), each passed as that quantity's value.
+KINEMATIC_INPUTS = {
+    "angle": "angle_in",
+    "v_i": "v_tip_y_in",
+    "mu": "mu",
+    "e": "e",
+    "dv_cy": "dv_cy",
+    "vt_in": "v_tip_x_in",
+}
+
+
+def kinematic_correlation(k: ImpactKinematics) -> dict[tuple[str, str], float]:
+    """The correlation coefficients of the inversion's inputs measured from the same marker
+    tracks (``KINEMATIC_INPUTS``), from the kinematics' covariance (``k.derived_cov``), for
+    ``invert``'s ``correlation``: every pair of them with a sigma > 0 (the dent's delta_p and
+    L_s are measured apart, independent of them)."""
+    names = list(k.derived_names)
+    idx = {key: names.index(name) for key, name in KINEMATIC_INPUTS.items()}
+    sigma = np.sqrt(np.clip(np.diag(np.asarray(k.derived_cov, dtype=np.float64)), 0.0, None))
+    corr = np.clip(k.correlation, -1.0, 1.0)
+    keys = [key for key in KINEMATIC_INPUTS if sigma[idx[key]] > 0]
+    return {(a, b): float(corr[idx[a], idx[b]]) for i, a in enumerate(keys) for b in keys[i + 1 :]}
 
 
 def _inversion_warnings(caught: list[warnings.WarningMessage], d: DentMetrics) -> list[str]:
