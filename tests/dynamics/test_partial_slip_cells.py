@@ -10,14 +10,12 @@ from __future__ import annotations
 
 import json
 import math
-import sys
 from typing import Any
 
 import numpy as np
 import pytest
 
 import impactlab as il
-from impactlab.cli import main
 from impactlab.dynamics import BATCH_FRICTION_IDS, contact_model, run_arrays
 from impactlab.friction import PARTIAL_SLIP_CELLS
 from impactlab.verification.partial_slip import NU_EXACT, nu_case
@@ -166,21 +164,10 @@ def test_another_friction_model_or_a_drop_is_refused() -> None:
     assert il.simulate(ROD, angle=0.5, velocity=(0.0, -1.41), partial_slip_cells=16).e > 0.0
 
 
-def _cli(monkeypatch, capsys, *args: str) -> tuple[int, str, str]:  # type: ignore[no-untyped-def]
-    monkeypatch.setattr(sys, "argv", ["impactlab", *args])
-    try:
-        main()
-        code = 0
-    except SystemExit as exc:
-        code = int(exc.code or 0)
-    out = capsys.readouterr()
-    return code, out.out, out.err
-
-
-def test_the_command_line_option(monkeypatch, capsys, tmp_path) -> None:  # type: ignore[no-untyped-def]
+def test_the_command_line_option(cli_main, tmp_path) -> None:  # type: ignore[no-untyped-def]
     args = ("simulate", "sphere", "--radius", "5 mm", "--vy", "-1 m/s", "--vx", "0.05 m/s",
             "--law", "hertz", "--mu", "0.3", "--friction", "partial_slip")  # fmt: skip
-    code, out, err = _cli(monkeypatch, capsys, *args, "--partial-slip-cells", "64", "--json")
+    code, out, err = cli_main(*args, "--partial-slip-cells", "64", "--json")
     assert code == 0, err
     data = json.loads(out)
     assert data["input"]["partial_slip_cells"] == 64
@@ -188,16 +175,16 @@ def test_the_command_line_option(monkeypatch, capsys, tmp_path) -> None:  # type
     assert data["e"]["value"] == want.e
     saved = tmp_path / "r.json"
     saved.write_text(out)
-    code, again, err = _cli(monkeypatch, capsys, "simulate", "--from", str(saved), "--json")
+    code, again, err = cli_main("simulate", "--from", str(saved), "--json")
     assert code == 0, err
     assert json.loads(again)["e"] == data["e"]
-    code, _, err = _cli(monkeypatch, capsys, *args[:-2], "--partial-slip-cells", "64")
+    code, _, err = cli_main(*args[:-2], "--partial-slip-cells", "64")
     assert code != 0 and err.count("\n") == 1 and "--partial-slip-cells = 64" in err
-    code, _, err = _cli(monkeypatch, capsys, *args, "--partial-slip-cells", "3")
+    code, _, err = cli_main(*args, "--partial-slip-cells", "3")
     assert code != 0 and err.count("\n") == 1 and "--partial-slip-cells must be" in err
     drop = il.simulate_drop(ROD, angle="20 deg", velocity=(0.0, -1.41), mu=0.3,
                             friction="partial_slip")  # fmt: skip
     saved.write_text(json.dumps(drop.to_dict()))
-    code, _, err = _cli(monkeypatch, capsys, "simulate", "--from", str(saved),
+    code, _, err = cli_main("simulate", "--from", str(saved),
                         "--partial-slip-cells", "32")  # fmt: skip
     assert code != 0 and err.count("\n") == 1 and "compiled cells" in err
