@@ -4,9 +4,9 @@ A candidate model is a contact law x a friction model x a body model (each drop'
 body, or the flexible rod). ``predict`` evaluates W parameter vectors on D drops as one batch of
 W x D cases through the sweep's engine adapter (``impactlab.sweep.engine.ENGINE``: the compiled
 batch engine on every core for rigid bodies, one compiled batch of drops per body for the
-flexible rod, ``sweep.flexible``);
-the flexible rod on a rate-dependent flat, which the batch engines do not run, goes through
-``simulate`` one case at a time (measured in benchmarks/bench_calibrate.py).
+flexible rod, ``sweep.flexible``); the flexible rod on a rate-dependent flat, which the batch
+engines do not run, goes through ``simulate`` one case at a time with the same engine options
+(measured in benchmarks/bench_calibrate.py).
 """
 
 from __future__ import annotations
@@ -329,10 +329,29 @@ def case_body(cat: Mapping[str, str], row: Mapping[str, float]) -> Rod | Sphere 
     )
 
 
+#: The engine options (``Statics.engine``) ``simulate`` takes, by body, as the batch engines
+#: take them: a rigid body's (``sweep.engine.evaluate``), a drop's (``sweep.flexible``).
+_RIGID_OPTIONS = ("gravity", "rtol", "constant_angle", "partial_slip_cells")
+SIMULATE_OPTIONS = {"rigid": _RIGID_OPTIONS, FLEXIBLE_BODY: ("gravity", "rtol")}
+
+
+def simulate_options(statics: Statics) -> dict[str, Any]:
+    """The keyword arguments of ``simulate`` from the engine options of ``statics`` (gravity on
+    when not given; the cells for friction ``partial_slip`` only), so that a case run one by
+    one has the numerics of the batch."""
+    cat, engine = statics.categories, dict(statics.engine)
+    keys = SIMULATE_OPTIONS[FLEXIBLE_BODY if cat["body"] == FLEXIBLE_BODY else "rigid"]
+    out = {k: engine[k] for k in keys if engine.get(k) is not None}
+    if cat["friction"] != "partial_slip":
+        out.pop("partial_slip_cells", None)
+    return {"gravity": True} | out
+
+
 def simulate_row(body: Any, statics: Statics, row: Mapping[str, float], rate: Any = None) -> Any:
     """``simulate`` of the case ``row`` (its flat, kinematics and mu; the categories' law and
-    friction, the study's gravity and law parameters) on ``body``, without its history; the
-    flat's ``rate`` law (a name or a RateLaw) for a flexible rod. Its errors propagate."""
+    friction, the study's engine options: gravity, rtol, ... (:func:`simulate_options`), and
+    law parameters) on ``body``, without its history; the flat's ``rate`` law (a name or a
+    RateLaw) for a flexible rod. Its errors propagate."""
     cat = statics.categories
     return simulate(
         body,
@@ -343,9 +362,9 @@ def simulate_row(body: Any, statics: Statics, row: Mapping[str, float], rate: An
         angle=row["angle"] if cat["body"] != "sphere" else None,
         velocity=(row["vx"], row["vy"]),
         spin=row["spin"],
-        gravity=dict(statics.engine).get("gravity", True),
         law_params=dict(statics.law_params) or None,
         history=False,
+        **simulate_options(statics),
         **({"rate": rate} if rate is not None else {}),
     )
 
@@ -353,8 +372,8 @@ def simulate_row(body: Any, statics: Statics, row: Mapping[str, float], rate: An
 def _one_by_one(
     cases: Mapping[str, np.ndarray], statics: Statics, outputs: Sequence[str], rate: str | None
 ) -> tuple[dict[str, np.ndarray], np.ndarray]:
-    """One ``simulate`` call per case, for partial slip and the flexible rod on a
-    rate-dependent flat. A refused case or a failed drop gets
+    """One ``simulate`` call per case (:func:`simulate_row`, the engine options of the batch),
+    for the flexible rod on a rate-dependent flat. A refused case or a failed drop gets
     STATUS_REFUSED, never an exception."""
     n = len(cases["angle"])
     res = {o: np.full(n, np.nan) for o in outputs}

@@ -1,5 +1,6 @@
 """Figures of a calibration: the corner plot of each model's posterior (``corner``) and the
-posterior predictive check, predicted against measured with 90 % bands."""
+posterior predictive check, predicted against measured with 90 % bands (the band with the noise
+drawn within the quantity's possible range: ``quantities.MEASURABLE``)."""
 
 from __future__ import annotations
 
@@ -10,9 +11,10 @@ import numpy as np
 
 from impactlab._display import display_unit
 from impactlab._mpl import pyplot
+from impactlab.calibrate.quantities import MEASURABLE
 from impactlab.calibrate.result import ModelPosterior
 
-__all__ = ["corner_figure", "interval_title", "ppc_figure"]
+__all__ = ["corner_figure", "in_range", "interval_title", "ppc_figure"]
 
 
 def corner_figure(post: ModelPosterior) -> Any:
@@ -59,10 +61,30 @@ def interval_title(x: np.ndarray) -> str:
     return rf"${f(mid)}_{{-{f(minus)}}}^{{+{f(plus)}}}$"
 
 
+def in_range(
+    quantity: str, lo: np.ndarray, hi: np.ndarray, model_lo: np.ndarray, model_hi: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """The band [``lo``, ``hi``] of a new measurement of ``quantity`` (SI) as a measurement reads
+    it: within the quantity's possible range (``MEASURABLE``: a length, a duration, a force or e
+    at least 0, e at most 1, e_t in [-1, 1]), so that the Gaussian noise does not draw a length
+    below 0. The
+    model's own band [``model_lo``, ``model_hi``] is never cut (a model's e above 1: gravity's
+    impulse removed, ``MEASURABLE["e"]``)."""
+    m = MEASURABLE.get(quantity)
+    if m is None:
+        return lo, hi
+    low = -math.inf if m.low is None else m.low
+    high = math.inf if m.high is None else m.high
+    with np.errstate(invalid="ignore"):  # NaN: a value not predicted stays NaN
+        lo = np.where(lo < low, np.fmin(low, model_lo), lo)
+        hi = np.where(hi > high, np.fmax(high, model_hi), hi)
+    return lo, hi
+
+
 def ppc_figure(posteriors: dict[str, ModelPosterior]) -> Any:
     """Per measured quantity: the measured values (+- sigma) by drop and each model's
     predicted median with its 90 % band (model only) and the band with the measurement
-    noise."""
+    noise, within the quantity's possible range (:func:`in_range`)."""
     plt = pyplot()
     first = next(iter(posteriors.values()))
     quantities = list(dict.fromkeys(r["quantity"] for r in first.ppc))
@@ -78,17 +100,18 @@ def ppc_figure(posteriors: dict[str, ModelPosterior]) -> Any:
         for i, (name, post) in enumerate(posteriors.items()):
             mine = [r for r in post.ppc if r["quantity"] == q]
             off = xs + 0.15 * (i + 1 - (n_models + 1) / 2)
-            med = np.array([r["median"] for r in mine]) * d.scale
-            lo = np.array([r["q05"] for r in mine]) * d.scale
-            hi = np.array([r["q95"] for r in mine]) * d.scale
-            plo = np.array([r["pred_q05"] for r in mine]) * d.scale
-            phi = np.array([r["pred_q95"] for r in mine]) * d.scale
+            med, lo, hi, plo, phi = (
+                np.array([r[k] for r in mine], dtype=float)
+                for k in ("median", "q05", "q95", "pred_q05", "pred_q95")
+            )
+            plo, phi = in_range(q, plo, phi, lo, hi)
+            med, lo, hi, plo, phi = (x * d.scale for x in (med, lo, hi, plo, phi))
             (line,) = ax.plot(off, med, "s", label=name)
             ax.vlines(off, plo, phi, color=line.get_color(), alpha=0.35, lw=6)
             ax.vlines(off, lo, hi, color=line.get_color(), lw=2)
         ax.set_xticks(xs, [r["drop"] for r in rows])
         ax.set_ylabel(f"{q} [{d.unit}]" if d.unit not in ("", "1") else q)
     axes[0, 0].legend(fontsize=8)
-    axes[0, 0].set_title("measured and predicted (model 90 % band; wide: with the noise)")
+    axes[0, 0].set_title("measured and predicted (model 90 % band; wide: with the noise, in range)")
     fig.tight_layout()
     return fig
