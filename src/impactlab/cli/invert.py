@@ -37,7 +37,9 @@ from impactlab.cli.invert_inputs import (
     FIELDS,
     IN_FILE,
     check_measure,
+    correlation_label,
     from_file,
+    parse_correlations,
     parse_sigma,
     parse_value,
 )
@@ -89,12 +91,14 @@ def run_invert(
     measure: str | None = None,
     samples: int | None = None,
     seed: int | None = None,
+    correlation: list[str] | None = None,
 ) -> tuple[InversionResult, dict[str, tuple[float, float]]]:
     """Merge case < file < command line and call :func:`impactlab.analytic.invert` (the paper
-    case's negative dent depth and sliding length enter as magnitudes). Returns the result and
-    the inputs as given (SI, signs kept: the echo), as ``(value, sigma)`` by keyword. An error
-    of ``invert`` names each input as the user gave it (``--ls``, ``ls in the measurement
-    file``)."""
+    case's negative dent depth and sliding length enter as magnitudes; ``correlation``: the
+    ``--correlation`` texts, each pair replacing the file's coefficient of that pair). Returns
+    the result and the inputs as given (SI, signs kept: the echo), as ``(value, sigma)`` by
+    keyword. An error of ``invert`` names each input as the user gave it (``--ls``, ``ls in the
+    measurement file``; ``--correlation``)."""
     v, s, r, extra, keys = from_file(load_toml(file, "--file"))
     case = case or extra.get("case")
     labels: dict[str, str] = {}
@@ -110,6 +114,8 @@ def run_invert(
     cli_s = {k: val for k, val in (sigmas or {}).items() if val is not None}
     labels |= {k: FIELDS[k][2] for k in cli_v}
     labels |= {f"sigma.{k}": "--sigma-" + FIELDS[k][2][2:] for k in cli_s}
+    cli_c, file_c = parse_correlations(correlation), extra.get("correlation", {})
+    labels["correlation:"] = correlation_label(bool(cli_c), bool(file_c))
     _check_complete(set(v) | set(cli_v), set(s) | set(cli_s))
     v.update({k: parse_value(val, FIELDS[k][0], FIELDS[k][2]) for k, val in cli_v.items()})
     s.update({k: parse_sigma(k, val, cli_v.get(k)) for k, val in cli_s.items()})
@@ -139,6 +145,7 @@ def run_invert(
             measure=measure or extra.get("measure", "slip"),
             n_samples=samples,
             seed=seed if seed is not None else _file_count(extra, "seed", 0, 0),
+            correlation={**file_c, **cli_c} or None,
         )
     except ValueError as exc:  # "mu must be finite": the input as the user gave it
         raise UserError(_as_given(str(exc), labels)) from None
@@ -148,7 +155,9 @@ def run_invert(
 def _as_given(message: str, labels: dict[str, str]) -> str:
     """An error of ``invert`` whose leading keyword (``sliding_length must ...``, ``the sigma of
     e = ...``) is spelled as the user gave it (``labels``: input name or ``sigma.`` + name ->
-    its option or file key)."""
+    its option or file key; ``correlation:``: where the correlations came from)."""
+    if message.startswith("correlation: "):
+        return labels["correlation:"] + message.removeprefix("correlation")
     for k, text in labels.items():
         name = k.removeprefix("sigma.")
         head = ARGUMENTS.get(name, name) + " "
@@ -239,6 +248,14 @@ def invert_cmd(
     sigma_ls: str | None = _measured_option("L_s", sigma=True),
     sigma_dv_cy: str | None = _measured_option("dv_cy", sigma=True),
     sigma_vt_in: str | None = _measured_option("vt_in", sigma=True),
+    correlation: list[str] | None = typer.Option(
+        None,
+        "--correlation",
+        help="Correlation of two inputs measured together, NAME,NAME=COEFFICIENT (e.g. "
+        "e,dv_cy=0.94; repeatable; names as Python's invert or the options: v_i or vi, "
+        "sliding_length or ls); each input needs its sigma; a pair replaces a --file "
+        "correlation of the same pair. Default: independent.",
+    ),
     mass: str | None = rod_option("mass"),
     length: str | None = rod_option("length"),
     tip_radius: str | None = rod_option("tip_radius"),
@@ -250,9 +267,9 @@ def invert_cmd(
         None,
         "--file",
         help="TOML file of measurements (keys as the options or as Python's invert: ls or "
-        "sliding_length; [sigma], [rod]; measure, gravity, samples, seed). A bare number "
-        "in [sigma] is in the unit of its value in the file (ls = '1400 um' and [sigma] ls = "
-        "50: 50 um); without that value in the file it needs its unit.",
+        "sliding_length; [sigma], [rod], [correlation]; measure, gravity, samples, seed). A "
+        "bare number in [sigma] is in the unit of its value in the file (ls = '1400 um' and "
+        "[sigma] ls = 50: 50 um); without that value in the file it needs its unit.",
     ),
     gravity: bool | None = typer.Option(
         None,
@@ -305,6 +322,7 @@ def invert_cmd(
             measure=measure,
             samples=samples,
             seed=seed,
+            correlation=correlation,
         )
     found = _inversion_warnings(caught)
     if flat is None and case is not None:

@@ -28,7 +28,10 @@ __all__ = [
     "IN_FILE",
     "MEASURES",
     "check_measure",
+    "correlation_label",
+    "file_correlations",
     "from_file",
+    "parse_correlations",
     "parse_sigma",
     "parse_value",
 ]
@@ -50,7 +53,11 @@ ALIAS = {k: name for name, (_, keys, _) in FIELDS.items() for k in keys}
 #: input name -> keyword of impactlab.analytic.invert, where they differ
 ARGUMENTS = {"L_s": "sliding_length"}
 #: the other keys of a measurement file (``n_samples``: the JSON's and Python's ``samples``)
-EXTRA = ("case", "gravity", "measure", "samples", "n_samples", "seed")
+EXTRA = ("case", "gravity", "measure", "samples", "n_samples", "seed", "correlation")
+#: the inputs a correlation may pair, by keyword of impactlab.analytic.invert (in this order)
+CORRELATED = tuple(ARGUMENTS.get(k, k) for k in FIELDS)
+#: a pair of correlated inputs (keywords of impactlab.analytic.invert, in CORRELATED's order)
+Pair = tuple[str, str]
 #: what ``measure`` (``--measure``) may be: what the sliding length measures
 MEASURES = ("slip", "travel")
 #: where a measurement file's value is named in an error
@@ -245,9 +252,10 @@ def _quantity_tables(values: dict[str, Any], tables: dict[str, Any]) -> dict[str
 def from_file(
     data: dict[str, Any],
 ) -> tuple[dict[str, float], dict[str, float], dict[str, float], dict[str, Any], dict[str, str]]:
-    """(values, sigmas, rod, extra: case, gravity, measure, samples, seed, keys) of a measurement
-    file; ``keys``: each given value's key as written (input name -> key, and ``"sigma." + name``
-    -> ``"sigma." + key``), to name it in errors."""
+    """(values, sigmas, rod, extra: case, gravity, measure, samples, seed, correlation (as
+    :func:`file_correlations` reads it), keys) of a measurement file; ``keys``: each given
+    value's key as written (input name -> key, and ``"sigma." + name`` -> ``"sigma." + key``),
+    to name it in errors."""
     tables = {k: v for k, v in data.items() if k in ("sigma", "rod")}
     extra = {k: v for k, v in data.items() if k in EXTRA}
     check_booleans(extra, ("gravity",), "the measurement file")
@@ -255,6 +263,8 @@ def from_file(
         check_measure(extra["measure"], f"measure {IN_FILE}")
     if "samples" in extra and "n_samples" in extra:
         raise UserError(f"'samples' and 'n_samples' {IN_FILE} are the same count; give one")
+    if "correlation" in extra:
+        extra["correlation"] = file_correlations(extra["correlation"])
     values = {k: v for k, v in data.items() if k not in tables and k not in extra}
     for name, table in tables.items():
         if not isinstance(table, dict):
@@ -266,3 +276,95 @@ def from_file(
     keys = {ALIAS[k]: k for k in values}
     keys |= {f"sigma.{ALIAS[k]}": f"sigma.{k}" for k in tables.get("sigma", {}) if k in ALIAS}
     return file_values, sigmas, rod, extra, keys
+
+
+def _input_name(name: Any, where: str) -> str:
+    """``name`` (an option's name or a key of a measurement file: ``ls``, ``sliding_length``)
+    as the keyword of ``impactlab.analytic.invert``; UserError naming ``where`` otherwise."""
+    key = name.strip() if isinstance(name, str) else name
+    if not isinstance(key, str) or key not in ALIAS:
+        raise UserError(
+            f"{where}: unknown input {name!r}; allowed: {', '.join(CORRELATED)} (or their "
+            "option names: vi, ls, delta-p, ...)"
+        )
+    return ARGUMENTS.get(ALIAS[key], ALIAS[key])
+
+
+def _coefficient(rho: Any, where: str) -> float:
+    """``rho`` (a number or its text) as a correlation coefficient in [-1, 1]."""
+    if isinstance(rho, str):
+        number = bare_number(rho)
+    elif isinstance(rho, int | float) and not isinstance(rho, bool):
+        number = float(rho)
+    else:
+        number = None
+    if number is None or not -1.0 <= number <= 1.0:  # NaN is refused too
+        raise UserError(f"{where}: the coefficient must be a number in [-1, 1], got {rho!r}")
+    return number
+
+
+def _add_pair(out: dict[Pair, float], names: Any, rho: Any, where: str) -> None:
+    """Add the pair ``names`` (two input names) with the coefficient ``rho`` to ``out``; a pair
+    of one input with itself, or a pair already in ``out`` (either order), is refused."""
+    if not isinstance(names, list | tuple) or len(names) != 2:
+        raise UserError(f"{where}: a correlation pairs two inputs, got {names!r}")
+    a, b = (_input_name(n, where) for n in names)
+    if a == b:
+        raise UserError(f"{where} pairs {a} with itself (its coefficient is always 1): give two "
+                        "different inputs")  # fmt: skip
+    pair = (a, b) if CORRELATED.index(a) < CORRELATED.index(b) else (b, a)
+    if pair in out:
+        raise UserError(f"{where}: the pair ({a}, {b}) is given twice; give it once")
+    out[pair] = _coefficient(rho, where)
+
+
+def parse_correlations(items: list[str] | None) -> dict[Pair, float]:
+    """The ``--correlation NAME,NAME=COEFFICIENT`` options (``e,mu=-0.3``), by pair of keywords
+    of ``impactlab.analytic.invert``: the coefficients of the inputs as given."""
+    out: dict[Pair, float] = {}
+    for item in items or []:
+        names, eq, rho = str(item).partition("=")
+        if not eq or names.count(",") != 1:
+            raise UserError(
+                f"--correlation must be NAME,NAME=COEFFICIENT (e.g. --correlation e,mu=-0.3), "
+                f"got {item!r}"
+            )
+        _add_pair(out, names.split(","), rho.strip(), f"--correlation {item!r}")
+    return out
+
+
+def file_correlations(value: Any) -> dict[Pair, float]:
+    """A measurement file's ``correlation``: a table of ``"NAME,NAME" = COEFFICIENT``
+    (``[correlation]`` with ``"e,dv_cy" = 0.94``) or the JSON's list of ``{inputs = [a, b],
+    coefficient = {value, unit = "1"}}`` (the coefficient also a plain number), by pair of
+    keywords of ``impactlab.analytic.invert``."""
+    where = f"correlation {IN_FILE}"
+    out: dict[Pair, float] = {}
+    if isinstance(value, dict):
+        for key, rho in value.items():
+            _add_pair(out, str(key).split(","), rho, f"correlation {key!r} {IN_FILE}")
+        return out
+    if not isinstance(value, list):
+        raise UserError(
+            f"{where} must be a table ('\"e,dv_cy\" = 0.94' under [correlation]) or the JSON's "
+            f"list of {{inputs, coefficient}}, got {value!r}"
+        )
+    for i, entry in enumerate(value):
+        at = f"correlation[{i}] {IN_FILE}"
+        if not isinstance(entry, dict) or set(entry) != {"inputs", "coefficient"}:
+            raise UserError(f"{at} must hold inputs and coefficient (as the JSON writes "
+                            f"them), got {entry!r}")  # fmt: skip
+        rho = entry["coefficient"]
+        if isinstance(rho, dict):
+            if "value" not in rho or set(rho) - {"value", "unit"} or rho.get("unit", "1") != "1":
+                raise UserError(f"{at}: the coefficient's table holds value and unit \"1\", "
+                                f"got {rho!r}")  # fmt: skip
+            rho = rho["value"]
+        _add_pair(out, entry["inputs"], rho, at)
+    return out
+
+
+def correlation_label(cli: bool, file: bool) -> str:
+    """Where the correlations came from, to name them in an error of ``invert``."""
+    given = ["--correlation"] * cli + [f"correlation {IN_FILE}"] * file
+    return " and ".join(given) or "correlation"

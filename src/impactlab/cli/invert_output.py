@@ -36,6 +36,9 @@ _SIGMAS = {
     "T_mc": "sigma_T_mc",
     "F_mc": "sigma_F_mc",
 }
+#: The inputs ``invert`` takes the magnitude of: a correlation of one given negative is echoed
+#: with the other sign (the result holds those of the magnitudes).
+_MAGNITUDES = ("v_i", "delta_p", "sliding_length")
 #: SI units of the outputs that ``SI_UNITS`` does not hold.
 _UNITS = {**SI_UNITS, "T_median_mc": "s", "F_median_mc": "N"}
 
@@ -82,13 +85,28 @@ def inversion_doubts(inverted: list[str], compared: list[str]) -> list[str]:
     return [t for t in inverted if any(p in t for p in IMPOSSIBLE_PHRASES)] + list(compared)
 
 
+def _correlation_row(
+    res: InversionResult, given: Mapping[str, tuple[float, float]]
+) -> list[tuple[str, str, str]]:
+    """The row of the inputs' correlations (none when independent), as given: the result's
+    coefficient of the magnitudes with the other sign for each input of a pair given negative
+    (``--vi "-1.41 m/s"``), as the inputs' echo keeps their signs."""
+    texts = []
+    for (a, b), rho in res.correlation.items():
+        flips = sum(k in _MAGNITUDES and given.get(k, (0.0,))[0] < 0 for k in (a, b))
+        texts.append(f"({a}, {b}) {(-rho if flips % 2 else rho):.4g}")
+    return [("correlation", ", ".join(texts), "")] if texts else []
+
+
 def print_inversion(res: InversionResult, given: Mapping[str, tuple[float, float]]) -> None:
-    """The inputs as given, then T and F (± first order; Monte Carlo rows, with their medians,
-    95 % intervals and the number of samples drawn and used, only when an input has an
-    uncertainty), in display units. A discarded share up to ``MC_REJECTED_WARNING`` is noted
-    under the table; above it the inversion's warning (stderr) says so."""
+    """The inputs as given and their correlations, then T and F (± first order; Monte Carlo
+    rows, with their medians, 95 % intervals and the number of samples drawn and used, only when
+    an input has an uncertainty), in display units. A discarded share up to
+    ``MC_REJECTED_WARNING`` is noted under the table; above it the inversion's warning (stderr)
+    says so."""
     uncertain = any(s > 0 for _v, s in given.values())
     rows = [field_row(k, float(v), INPUT_UNITS[k], s) for k, (v, s) in given.items()]
+    rows += _correlation_row(res, given)
     outputs: dict[str, Any] = {
         "duration": res.duration,
         "mean_force": res.mean_force,

@@ -38,6 +38,7 @@ from impactlab.cli.sweep_summary import (
     run_summary,
     uncertainty_json,
     warn_incomplete,
+    with_law_ranges,
 )
 
 if TYPE_CHECKING:
@@ -315,10 +316,11 @@ def info_cmd(
     store: _Store,
     as_json: _Json = False,
 ) -> None:
-    """Progress and contents of a store (chunks done, status counts)."""
+    """Progress and contents of a store (chunks done, status counts, each law's range)."""
     from impactlab.sweep import store_info
 
-    info = store_info(existing_store(store))
+    path = existing_store(store)
+    info = with_law_ranges(store_info(path), path, as_json=as_json)
     emit(info_json(info) if as_json else info, as_json=as_json, title=str(store))
 
 

@@ -99,6 +99,25 @@ def info_json(info: Mapping[str, Any]) -> dict[str, Any]:
     return out
 
 
+def with_law_ranges(info: Mapping[str, Any], store: Path, *, as_json: bool) -> dict[str, Any]:
+    """``info`` with the store's ``law_ranges`` attribute (each law of the study -> its verified
+    or stand-in ``range`` and its ``source``): with ``as_json`` as the store records it (null
+    for a store that records none); for the table one row per law, ``law range: NAME`` -> its
+    range (the sources are long: ``--json`` and the store's attributes hold them)."""
+    from impactlab.sweep.store import SweepStore
+
+    ranges = SweepStore(store).attrs().get("law_ranges")
+    if as_json:
+        return {**info, "law_ranges": ranges}
+    if not isinstance(ranges, Mapping) or not ranges:
+        return {**info, "law ranges": "not recorded in this store"}
+    rows = {
+        f"law range: {law}": rec.get("range", rec) if isinstance(rec, Mapping) else rec
+        for law, rec in ranges.items()
+    }
+    return {**info, **rows}
+
+
 def run_summary(
     res: SweepResult, ds: Any, netcdf: Path | None, files: list[str], *, as_json: bool
 ) -> dict[str, Any]:
