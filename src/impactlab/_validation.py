@@ -18,18 +18,20 @@ naming the file and the first byte that is not UTF-8 text.
 
 from __future__ import annotations
 
+import functools
+import inspect
 import math
 import os
 import sys
 import warnings
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable, Mapping
 from pathlib import Path
-from typing import Any
+from typing import Any, ParamSpec, TypeVar
 
 import numpy as np
 
 from impactlab._input_limits import MAX_GRAVITY
-from impactlab.units import magnitude
+from impactlab.units import is_quantity, magnitude
 
 
 class ImplausibleInputWarning(UserWarning):
@@ -49,6 +51,49 @@ def did_you_mean(name: Any, known: Iterable[str]) -> str:
     swapped = [k for k in names if k.replace("-", "_") == name.replace("-", "_")]
     near = swapped or difflib.get_close_matches(name, names, n=1, cutoff=0.6)
     return f" (did you mean {near[0]!r}?)" if near else ""
+
+
+def unexpected_keywords(
+    function: str, given: Iterable[str], known: Iterable[str], notes: Mapping[str, str]
+) -> str:
+    """The TypeError text of ``function`` called with keywords it does not take (``given``):
+    each with its note (``notes``: what to use instead) or the nearest known name
+    (:func:`did_you_mean`), then the keywords it takes, as ``simulate`` words it."""
+    names = sorted(known)
+    hints = [f"{k} ({notes[k]})" if k in notes else f"{k}{did_you_mean(k, names)}" for k in given]
+    return (
+        f"{function}() got unexpected keyword argument(s) {', '.join(hints)}; it takes "
+        f"{', '.join(names)}"
+    )
+
+
+_P = ParamSpec("_P")
+_R = TypeVar("_R")
+
+
+def refuse_unknown_keywords(
+    notes: Mapping[str, str] | None = None,
+) -> Callable[[Callable[_P, _R]], Callable[_P, _R]]:
+    """Decorate a public function so that a keyword it does not take raises a TypeError in the
+    words of :func:`unexpected_keywords` (``notes``: keyword -> what to use instead) rather
+    than Python's bare one; the signature and docstring stay the function's."""
+
+    def decorate(function: Callable[_P, _R]) -> Callable[_P, _R]:
+        kinds = (inspect.Parameter.POSITIONAL_OR_KEYWORD, inspect.Parameter.KEYWORD_ONLY)
+        params = inspect.signature(function).parameters
+        known = frozenset(k for k, p in params.items() if p.kind in kinds)
+        name = getattr(function, "__name__", "function")
+
+        @functools.wraps(function)
+        def checked(*args: _P.args, **kwargs: _P.kwargs) -> _R:
+            extra = [k for k in kwargs if k not in known]
+            if extra:
+                raise TypeError(unexpected_keywords(name, extra, known, notes or {}))
+            return function(*args, **kwargs)
+
+        return checked
+
+    return decorate
 
 
 def _caller_level() -> int:
@@ -100,6 +145,8 @@ def check_finite(name: str, value: Any, unit: str = "") -> float:
     (``"0.2"`` and ``True`` are refused)."""
     if unit:
         value = magnitude(name, value, unit)
+    else:
+        _refuse_dimension(name, value)
     err = _not_a_number(name, value)
     if err is not None:
         raise err
@@ -206,12 +253,34 @@ def check_seed(name: str, value: Any) -> int | None:
     return int(value)
 
 
+def _refuse_dimension(name: str, value: Any) -> None:
+    """ValueError naming ``name`` when ``value``, given for a dimensionless parameter, is a pint
+    Quantity with a dimension (``mu = 0.2 m/s``); a dimensionless one passes (percent reads as
+    a fraction, as ``float()`` of it does)."""
+    if is_quantity(value) and not getattr(value, "dimensionless", False):
+        raise ValueError(
+            f"{name} is a pure number: pass a plain number or a dimensionless Quantity (a "
+            f"fraction, or percent), got {value!r} (dimension {value.dimensionality})"
+        )
+
+
+def _plain(name: str, value: Any) -> Any:
+    """A dimensionless pint Quantity (any registry, scalar or array) as its pure number (20
+    percent -> 0.2, as ``float()`` of it reads); anything else unchanged."""
+    _refuse_dimension(name, value)
+    if not is_quantity(value):
+        return value
+    m = value.to("dimensionless").magnitude
+    return float(m) if np.ndim(m) == 0 else np.asarray(m, dtype=np.float64)
+
+
 def check_array(name: str, values: Any, unit: str = "") -> np.ndarray:
     """The rule applied to an array: a float64 array of ``values`` (NaN allowed; with a
-    ``unit``, a pint Quantity array or a string with units is converted); ValueError naming
-    ``name`` for None, bools, strings or anything that is not numeric."""
-    if unit:
-        values = magnitude(name, values, unit)
+    ``unit``, a pint Quantity array or a string with units is converted; without one, a
+    dimensionless Quantity is read as its pure number, percent as a fraction, and one with a
+    dimension is refused, as :func:`check_finite` reads a scalar); ValueError naming ``name``
+    for None, bools, strings or anything that is not numeric."""
+    values = magnitude(name, values, unit) if unit else _plain(name, values)
     err = _not_a_number(name, values)
     if err is not None:
         raise err

@@ -177,8 +177,9 @@ def calibrate(
     interrupted calibration resumes (``restart`` discards it; one calibration at a time uses
     a folder; a saved chain of other inputs, or unreadable, is refused:
     ``statelock.SavedChainError``); progress(model, done, total); evaluator, engine : the engine
-    adapter and its options (gravity, rtol: a value, or results.json's quantity object; default:
-    the compiled engine, gravity on); scheduler : a Dask
+    adapter and its options (gravity, rtol: a value, or results.json's quantity object;
+    partial_slip_cells: friction partial_slip's cells; default: the compiled engine, gravity
+    on); scheduler : a Dask
     ``distributed.Client`` or scheduler address: each model's chain runs as one task there
     (no progress display; ``state_dir`` must be a folder the workers share).
 
@@ -291,7 +292,8 @@ def _calibrate(
         "parameters": {p.name: p.describe() for p in params},
         "models": names,
         "model_definitions": {c.name: model_definition(c) for c in cands},
-        "engine": {"gravity": g, "rtol": eng.get("rtol")},
+        "engine": {"gravity": g, "rtol": eng.get("rtol")}
+        | {k: v for k, v in eng.items() if k == "partial_slip_cells" and v is not None},
         "likelihood": "independent Gaussian errors with the stated standard uncertainties",
         "references": [str(r) for r in REFERENCES],
     }

@@ -11,7 +11,8 @@
     burn = 1000
     seed = 0
     [engine]
-    gravity = true                      # or a value in m/s^2; rtol = 1e-7
+    gravity = true                      # or a value in m/s^2; rtol = 1e-7;
+                                        # partial_slip_cells = 32 (friction partial_slip)
                                         # (or results.json's { value = 9.81, unit = "m/s^2" })
 
 ``[[model]]`` tables (``law``, ``friction``, ``body``, ``rate``, ``name``, ``fixed``,
@@ -27,14 +28,14 @@ from typing import Any
 
 from impactlab._validation import read_text_file
 from impactlab.calibrate.api import parse_model
-from impactlab.calibrate.input_checks import engine_options
+from impactlab.calibrate.input_checks import ENGINE_OPTIONS, engine_options
 from impactlab.calibrate.priors import parse_parameter
 
 __all__ = ["load_config"]
 
 _TOP = {"measurements", "models", "model", "parameters", "sampler", "engine"}
 _SAMPLER = {"walkers", "steps", "burn", "seed"}
-_ENGINE = {"gravity", "rtol"}
+_ENGINE = set(ENGINE_OPTIONS)
 
 
 def load_config(path: str | Path) -> dict[str, Any]:

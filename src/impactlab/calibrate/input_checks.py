@@ -20,7 +20,7 @@ from impactlab.calibrate.measurements import Measurements
 from impactlab.calibrate.models import CandidateModel, predict
 from impactlab.calibrate.priors import Parameter, parse_parameter
 from impactlab.calibrate.values import to_unit
-from impactlab.dynamics.input_checks import gravity_value
+from impactlab.dynamics.input_checks import check_partial_slip_cells, gravity_value
 from impactlab.materials import get_material
 from impactlab.sweep.dimensions import check_allowed
 from impactlab.sweep.engine import Evaluator
@@ -59,15 +59,22 @@ def parameters(given: Sequence[Parameter] | Mapping[str, Any]) -> tuple[Paramete
     return out
 
 
+#: The options of a calibration's ``[engine]`` table (``engine=`` of ``calibrate``).
+ENGINE_OPTIONS = ("gravity", "rtol", "partial_slip_cells")
+
+
 def engine_options(engine: Mapping[str, Any] | None) -> tuple[dict[str, Any], float]:
-    """(the engine options, the gravity in m/s^2): ``gravity`` and ``rtol`` as given, a
-    quantity object of results.json (``{"value": 9.80665, "unit": "m/s^2"}``) read as its
-    number in the option's unit. ValueError for an unknown option, and a gravity or an rtol
-    that the engine refuses."""
+    """(the engine options, the gravity in m/s^2): ``gravity``, ``rtol`` and
+    ``partial_slip_cells`` (friction ``partial_slip``'s cells) as given, a quantity object of
+    results.json (``{"value": 9.80665, "unit": "m/s^2"}``) read as its number in the option's
+    unit. ValueError for an unknown option, and a gravity, an rtol or a cell count that the
+    engine refuses."""
     eng = dict(engine or {})
-    unknown = sorted(set(eng) - {"gravity", "rtol"})
+    unknown = sorted(set(eng) - set(ENGINE_OPTIONS))
     if unknown:
-        raise ValueError(f"unknown engine option(s) {unknown}; known: gravity, rtol")
+        raise ValueError(f"unknown engine option(s) {unknown}; known: {', '.join(ENGINE_OPTIONS)}")
+    if eng.get("partial_slip_cells") is not None:
+        eng["partial_slip_cells"] = check_partial_slip_cells(eng["partial_slip_cells"])
     if isinstance(eng.get("gravity"), Mapping):
         eng["gravity"] = gravity_value(quantity_object(eng["gravity"]))
     if isinstance(eng.get("rtol"), Mapping):

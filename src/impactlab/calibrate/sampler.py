@@ -28,6 +28,7 @@ import numpy as np
 from impactlab.calibrate.posterior import LogPosterior, initial_walkers
 from impactlab.calibrate.statelock import CalibrationInterrupted, SavedChainError, chain_in_use
 from impactlab.dynamics.input_checks import gravity_value
+from impactlab.friction import PARTIAL_SLIP_CELLS
 from impactlab.materials import G0
 
 __all__ = ["ProgressFn", "run_chain"]
@@ -37,13 +38,17 @@ ProgressFn = Callable[[str, int, int], None]
 
 
 def _engine(engine: Mapping[str, Any]) -> list[Any]:
-    """The engine options as they act: the gravity [m/s^2] and the rtol as numbers, so that
+    """The engine options as they act: the gravity [m/s^2], the rtol and a partial-slip cell
+    count other than the default as numbers, so that
     ``gravity = true``, ``9.80665`` and ``{value = 9.80665, unit = "m/s^2"}`` are one setting;
     the default ones (standard gravity, the engine's rtol) as ``[]``, the form of a chain saved
     without engine options before these were normalised."""
     g = gravity_value(engine.get("gravity", True))
     rtol = engine.get("rtol")
     acting = {"gravity": g, "rtol": None if rtol is None else float(rtol)}
+    cells = engine.get("partial_slip_cells")
+    if cells is not None and int(cells) != PARTIAL_SLIP_CELLS:  # the default: as not given
+        acting["partial_slip_cells"] = int(cells)
     return [] if acting == {"gravity": G0, "rtol": None} else sorted(acting.items())
 
 

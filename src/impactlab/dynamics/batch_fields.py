@@ -11,10 +11,18 @@ from typing import Any
 import numpy as np
 
 from impactlab._validation import did_you_mean
-from impactlab.dynamics.kernels.status import REGIME_NAMES
+from impactlab.dynamics.kernels.status import REGIME_NAMES, ST_OK, STATUS_MESSAGES
 from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
 
-__all__ = ["BATCH_NAMES", "batch_counts", "field_dir", "no_field", "regime_series", "with_units"]
+__all__ = [
+    "BATCH_NAMES",
+    "batch_counts",
+    "field_dir",
+    "flagged_messages",
+    "no_field",
+    "regime_series",
+    "with_units",
+]
 
 
 def field_dir(obj: object, fields: Iterable[str]) -> list[str]:
@@ -68,15 +76,30 @@ def batch_counts(batch: Any) -> str:
 _FLAG_NAME = {f: messages(int(f))[0].split(":")[0] for f in ResultFlag if f.value}
 
 
+def flagged_messages(texts: list[str], flags: np.ndarray, ok: np.ndarray) -> list[str]:
+    """A batch's ``messages`` (``texts``, one per case) with that of each computed case that is
+    not ``ok`` naming its flags by the names their messages begin with (``impactlab.flags``),
+    ``"computed, not ok (flags 17): energy gain, beyond the tip"``, instead of the status's
+    ``"ok"``; an ok case (no flag, or advisory ones only) keeps its text."""
+    out = list(texts)
+    f = np.asarray(flags, dtype=np.int64)
+    for i in np.flatnonzero((f & ~ADVISORY_FLAGS) != 0):
+        if not bool(ok[i]) and out[i] == STATUS_MESSAGES[ST_OK]:
+            names = ", ".join(_FLAG_NAME[b] for b in ResultFlag if b.value and f[i] & b)
+            out[i] = f"computed, not ok (flags {int(f[i])}): {names}"
+    return out
+
+
 def regime_series(values: np.ndarray, computed: np.ndarray) -> Any:
     """The ``regime`` codes as a pandas categorical of the regime names (``REGIME_NAMES``, in
-    code order, as ``ImpactResult.regime`` reads them); ``<NA>`` where a case failed."""
+    code order, as ``ImpactResult.regime`` reads them; string categories, so that a failed
+    case shows ``<NA>`` as the nullable integer columns do)."""
     import pandas as pd  # heavy, needed only here
 
     f = np.asarray(values, dtype=np.float64)
     keep = np.asarray(computed, dtype=bool) & np.isfinite(f)
     codes = np.where(keep, f, -1.0).astype(np.int64)
-    names = [REGIME_NAMES[k] for k in sorted(REGIME_NAMES)]
+    names = pd.Index([REGIME_NAMES[k] for k in sorted(REGIME_NAMES)], dtype="string")
     return pd.Series(pd.Categorical.from_codes(codes, categories=names))
 
 

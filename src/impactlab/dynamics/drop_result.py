@@ -312,10 +312,16 @@ class DropResult(DerivedOutputs, ResultDisplay):
         return _RenamedKeys(jsonable(d))
 
     def summary(self) -> dict[str, Any]:
-        """The set-up (body, law, friction, mu, rate), the totals (``SUMMARY_FIELDS``, SI) and
-        the names of the flags."""
-        data: dict[str, Any] = {"body": self.body, "law": self.law, "friction": self.friction}
-        data["mu"] = self.mu
+        """The set-up, as an impact's summary begins (``body``: the body with its sizes and
+        material, and ``flat``, when ``simulate`` or ``simulate_drop`` made the result, else
+        the body's model; law, friction, mu, ``angle``, ``velocity_in``, ``spin_in``, rate),
+        the totals (``SUMMARY_FIELDS``, SI) and the names of the flags."""
+        call = self._call  # what the drop was given (provenance)
+        data: dict[str, Any] = {"body": self.body if call is None else str(call[0])}
+        if call is not None:
+            data["flat"] = call[1].name
+        data |= {"law": self.law, "friction": self.friction, "mu": self.mu}
+        data |= {"angle": self.angle, "velocity_in": self.velocity_in, "spin_in": self.spin_in}
         data["rate"] = self.rate or "none"
         data |= {k: getattr(self, k) for k in SUMMARY_FIELDS}
         if self.law_range is not None:

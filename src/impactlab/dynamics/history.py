@@ -11,6 +11,7 @@ from typing import Any
 import numpy as np
 
 from impactlab import schema
+from impactlab._validation import did_you_mean
 from impactlab.dynamics.export import history_dataframe
 from impactlab.dynamics.kernels.layout import HISTORY_FIELDS
 
@@ -50,9 +51,14 @@ class History:
             j = HISTORY_FIELDS.index(name)
         except ValueError:
             raise AttributeError(
-                f"'History' object has no attribute {name!r}; columns: {', '.join(HISTORY_FIELDS)}"
+                f"'History' object has no attribute {name!r}{did_you_mean(name, HISTORY_FIELDS)}"
+                f"; columns: {', '.join(HISTORY_FIELDS)}"
             ) from None
         return self.data[:, j]
+
+    def __dir__(self) -> list[str]:
+        """The attributes with the columns (``history.normal_force``: tab completion)."""
+        return sorted({*object.__dir__(self), *HISTORY_FIELDS})
 
     def __getitem__(self, name: str) -> np.ndarray:
         return self.__getattr__(name)

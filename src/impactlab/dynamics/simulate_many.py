@@ -8,7 +8,7 @@ from typing import Any
 
 import numpy as np
 
-from impactlab._validation import check_array, check_flag
+from impactlab._validation import check_array, check_flag, refuse_unknown_keywords
 from impactlab.bodies import Rod, Sphere
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.contact import ContactModel
@@ -35,17 +35,33 @@ from impactlab.dynamics.kernels.status import ST_BAD_INPUT
 from impactlab.dynamics.models import body_params, references_used
 from impactlab.friction import DEFAULT_MU, PARTIAL_SLIP_CELLS, get_friction
 from impactlab.materials import AISI_1010, Material
+from impactlab.units import is_quantity
 
 #: simulate_batch's array inputs and their units ("1": a plain number).
 _BATCH_UNITS = {"mu": "1", "angle": "rad", "vx": "m/s", "vy": "m/s", "spin": "rad/s"}
 
+#: What simulate_batch says of a keyword of ``simulate`` it does not take.
+BATCH_KEYWORD_NOTES = {
+    "history": (
+        "a batch keeps no history, each case's outputs only; one case's time history: "
+        "impactlab.simulate(body, flat, angle=..., velocity=(vx, vy), mu=...), history=True "
+        "by default"
+    ),
+    "theta": "the rod's angle to the flat is angle= [rad]",
+}
+
 
 def _batch_column(name: str, value: Any) -> np.ndarray:
-    """One input of simulate_batch as a 1-D float array (NaN allowed: flagged per case)."""
+    """One input of simulate_batch as a 1-D float array (NaN allowed: flagged per case): a
+    number, an array, a pint Quantity (dimensionless ones: percent read as a fraction), a
+    string with units, or a list of numbers that holds Quantities (each element read so,
+    named ``name[i]``; numpy would drop their units)."""
     if value is None:
         raise ValueError(f"{name} is required: a number or a 1-D array [{_BATCH_UNITS[name]}]")
-    unit = _BATCH_UNITS[name]
-    a = np.atleast_1d(check_array(name, value, "" if unit == "1" else unit))
+    unit = "" if _BATCH_UNITS[name] == "1" else _BATCH_UNITS[name]
+    if isinstance(value, list | tuple) and any(is_quantity(v) for v in value):
+        value = np.array([check_array(f"{name}[{i}]", v, unit) for i, v in enumerate(value)])
+    a = np.atleast_1d(check_array(name, value, unit))
     if a.ndim > 1:
         raise ValueError(f"{name} must be a scalar or a 1-D array, got shape {a.shape}")
     return a
@@ -66,6 +82,7 @@ def _batch_inputs(inputs: dict[str, Any]) -> dict[str, np.ndarray]:
     return cols
 
 
+@refuse_unknown_keywords(BATCH_KEYWORD_NOTES)
 def simulate_batch(
     body: Rod | Sphere,
     flat: Material = AISI_1010,
@@ -92,8 +109,10 @@ def simulate_batch(
     ``mu``, ``angle`` [rad; a Rod's, required; a Sphere takes none and an angle given for it
     (or ``constant_angle=True``) is refused, as by ``simulate``; one angle for every case is
     checked as ``simulate`` checks it], ``vx``, ``vy`` [m/s] and ``spin`` [rad/s] are scalars or
-    1-D arrays, broadcast against each other; the dimensional ones may also be pint Quantities (any
-    registry) or strings with units, as in ``simulate``. ``vy`` (``vx`` default 0), or
+    1-D arrays, broadcast against each other; each may also be a pint Quantity (any registry,
+    scalar, array or in a list: converted to SI, ``mu`` in percent read as a fraction, a wrong
+    dimension refused naming the input), and a dimensional one a string with units, as in
+    ``simulate``. ``vy`` (``vx`` default 0), or
     ``velocity`` = (vx, vy) as ``simulate`` takes it (each a scalar or an array), or instead
     ``speed`` [m/s] and ``incidence`` [rad] (arrays too; vx = speed sin(incidence),
     vy = -speed cos(incidence), ``checks.velocity_from``) are required, one of the three.
@@ -116,7 +135,9 @@ def simulate_batch(
     in ``simulate``; a bad one is refused (ValueError) before any case runs.
     ``partial_slip_cells``: the cells of ``partial_slip`` over the largest contact radius, in
     [4, 64] (default ``PARTIAL_SLIP_CELLS`` = 16), one for every case of the call, as in
-    ``simulate``; another value is refused for the other friction models.
+    ``simulate``; another value is refused for the other friction models. Another keyword
+    (``history``: a batch keeps none) is refused with a TypeError naming the nearest one and
+    what the batch takes.
 
     Returns a ``BatchResult``: one row per case (the inputs broadcast), with its ``status``
     (0: computed; ``messages`` says why not), ``flags``, ``ok`` (computed, and no flag but the
@@ -133,7 +154,7 @@ def simulate_batch(
     if isinstance(body, Sphere):
         angle = check_angle(angle, body)  # pi/2; an angle given for a sphere is refused
         check_constant_angle(constant_angle, body)  # and constant_angle=True
-    elif angle is None or np.ndim(getattr(angle, "magnitude", angle)) == 0:
+    elif angle is None or _one_value(angle):
         angle = check_angle(angle, body)  # one angle for every case: refused as by simulate
     vx, vy = batch_velocity(vx, vy, speed, incidence, velocity)
     x = _batch_inputs({"mu": mu, "angle": angle, "vx": vx, "vy": vy, "spin": spin})
@@ -175,6 +196,14 @@ def simulate_batch(
             partial_slip_cells=cells,
         ),
     )
+
+
+def _one_value(value: Any) -> bool:
+    """Whether ``value`` is one number (a scalar, a 0-d array or Quantity, a string), not a
+    list or an array of the cases' values."""
+    if isinstance(value, list | tuple):
+        return False
+    return np.ndim(getattr(value, "magnitude", value)) == 0
 
 
 def _refuse_degrees(angle: np.ndarray, sphere: bool) -> None:
