@@ -218,7 +218,8 @@ def failed_note(law: str, post: Any) -> str | None:
 
 
 def _windows(law: str) -> str:
-    """Where a tabulated law runs: within its tolerances of one of its curves' E*/S_y and nu."""
+    """Where a tabulated law runs: within its tolerances of one of its curves' E*/S_y and nu,
+    the same body yielding."""
     try:
         found = get_law(law)
     except ValueError:
@@ -229,5 +230,5 @@ def _windows(law: str) -> str:
     return (
         f" (law {law!r} runs only where the pair's E*/S_y lies within "
         f"{100 * RATIO_TOLERANCE:g} % of one of its curves', E*/S_y = {ratios or 'none'}, and nu "
-        f"within {NU_TOLERANCE:g}: its posterior lies in those windows)"
+        f"within {NU_TOLERANCE:g}, the same body yielding: its posterior lies in those windows)"
     )

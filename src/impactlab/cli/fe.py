@@ -318,8 +318,10 @@ def indent_cmd(
                 fm, bm, radius=R, delta_max=d, sphere=sphere, flat_hardening=table, mu=mu,
                 mesh_level=mesh, unload=not loading_only,
             )  # fmt: skip
-        except ValueError as exc:  # named by the option that set it
-            raise UserError(as_option(str(exc), _OPTIONS, _OPTIONS.__getitem__)) from None
+        except ValueError as exc:  # named by the option that set it: "NAME must", "NAME: ..."
+            head, colon, rest = str(exc).partition(": ")
+            text = f"{_OPTIONS[head]}: {rest}" if colon and head in _OPTIONS else str(exc)
+            raise UserError(as_option(text, _OPTIONS, _OPTIONS.__getitem__)) from None
     try:
         find_ccx()
     except RuntimeError as exc:  # not installed: one line saying how to install it

@@ -77,4 +77,9 @@ def read_hardening(path: Path) -> list[tuple[float, float]]:
             ) from None
         stress, strain = (b, a) if swap else (a, b)
         rows.append((stress * scale, strain))
+    if not rows:  # empty, blank or a header alone
+        raise UserError(
+            f"--hardening {path}: the file has no data rows; give rows of 'stress_Pa, "
+            "plastic_strain', the first at plastic strain 0"
+        )
     return rows

@@ -2,8 +2,9 @@
 delta_r(delta_max), dimensionless in the Jackson-Green critical values of their pair
 (delta / delta_c, F / F_c, delta_r / delta_max), with the pair's E*/S_y and nu.
 
-Dimensionless curves of an elastic-perfectly plastic pair depend only on E*/S_y and nu, so
-one set serves every pair of the same two numbers and any radius. Sources: the FE reference
+Dimensionless curves of an elastic-perfectly plastic pair depend only on E*/S_y, nu and which
+body yields (``yielding``: the flat, or a sphere softer than the flat), so one set serves every
+pair of the same three and any radius. Sources: the FE reference
 curves shipped with impactlab (``shipped_curves``; made from ``impactlab.fe``'s data files
 by ``impactlab.fe.tabulated``), an FE run of one's own, or measured data
 (``IndentationCurves.from_arrays``, ``from_csv``).
@@ -61,6 +62,14 @@ SHIPPED_PATH = Path(__file__).resolve().parent / "data" / "fe-curves.json"
 #: The ``format`` field of a curves file.
 FORMAT = "impactlab indentation curves"
 FORMAT_VERSION = 1
+#: The bodies that may yield in a set of curves (``IndentationCurves.yielding``).
+YIELDING = ("flat", "sphere")
+
+
+def yielding_body(pair: ContactPair) -> str:
+    """Which body of ``pair`` yields first: "sphere" where its S_y is strictly below the flat's
+    (``ContactPair.weaker``), else "flat"."""
+    return "sphere" if pair.body.yield_strength < pair.flat.yield_strength else "flat"
 
 
 def _vector(name: str, value: Any, unit: str = "") -> np.ndarray:
@@ -109,8 +118,9 @@ class IndentationCurves:
     increasing) and ``residual_ratio`` (delta_r/delta_max in [0, 1)): the unloading family.
     ``elastic_limit`` (delta/delta_c): the law is Hertz up to it and the tabulated curve starts
     there, at the Hertz force (points at or below it are left out). ``e_star_over_sy`` and
-    ``nu``: the pair the curves belong to. ``name`` and ``source``: what the curves are and
-    where they come from (shown with every model built from them).
+    ``nu``: the pair the curves belong to; ``yielding``: its body that yields, "flat" or
+    "sphere" (``yielding_body``). ``name`` and ``source``: what the curves are and where they
+    come from (shown with every model built from them).
     """
 
     name: str
@@ -122,8 +132,11 @@ class IndentationCurves:
     delta_max: np.ndarray = field(repr=False)
     residual_ratio: np.ndarray = field(repr=False)
     elastic_limit: float = 1.0
+    yielding: str = "flat"
 
     def __post_init__(self) -> None:
+        if not isinstance(self.yielding, str) or self.yielding not in YIELDING:
+            raise ValueError(f"yielding must be 'flat' or 'sphere', got {self.yielding!r}")
         check_positive("e_star_over_sy", self.e_star_over_sy)
         if not (math.isfinite(self.nu) and -1.0 < self.nu < 0.5):
             raise ValueError(f"nu must lie in (-1, 0.5), got {self.nu!r}")
@@ -189,17 +202,19 @@ class IndentationCurves:
         *,
         name: str = "measured",
         source: str = "measured indentation data",
+        yielding: str | None = None,
     ) -> IndentationCurves:
         """Curves from dimensional data of ``pair`` with a sphere of ``radius`` [m]: the
         loading curve ``delta`` [m], ``force`` [N] and the (``delta_max`` [m], ``delta_r`` [m])
         pairs (numbers in SI, or pint Quantities, converted). The law is Hertz up to the first
         loading point, whose force must lie within ``HERTZ_TOLERANCE`` of Hertz's; every
         interference must be below ``radius``, and at least 2 delta_max within the loading
-        curve's range (ValueError otherwise: ``contact.table_input``)."""
+        curve's range (ValueError otherwise: ``contact.table_input``). ``yielding``: the body
+        that yields in the data, "flat" or "sphere" (default: ``pair``'s, ``yielding_body``)."""
         d, f = _vector("delta", delta, "m"), _vector("force", force, "N")
         dm, dr = _vector("delta_max", delta_max, "m"), _vector("delta_r", delta_r, "m")
         rows = (Rows(("delta", "force")), Rows(("delta_max", "delta_r")))
-        return cls._checked(pair, radius, (d, f, dm, dr), rows, name, source)
+        return cls._checked(pair, radius, (d, f, dm, dr), rows, (name, source, yielding))
 
     @classmethod
     def from_csv(
@@ -211,6 +226,7 @@ class IndentationCurves:
         *,
         name: str = "measured",
         source: str = "measured indentation data",
+        yielding: str | None = None,
     ) -> IndentationCurves:
         """Curves from two CSV files (SI units, comma-separated, an optional header line:
         ``read_table``): ``loading`` with columns delta [m], F [N]; ``unloading`` with
@@ -225,7 +241,7 @@ class IndentationCurves:
             x, y, lines = read_table(Path(path), where, header)
             cols += [x, y]
             rows.append(Rows(names, where, lines))
-        return cls._checked(pair, radius, tuple(cols), (rows[0], rows[1]), name, source)
+        return cls._checked(pair, radius, tuple(cols), (rows[0], rows[1]), (name, source, yielding))
 
     @classmethod
     def _checked(
@@ -234,32 +250,26 @@ class IndentationCurves:
         radius: float,
         cols: tuple[np.ndarray, ...],
         rows: tuple[Rows, Rows],
-        name: str,
-        source: str,
+        labels: tuple[str, str, str | None],
     ) -> IndentationCurves:
         """The curves of SI tables ``cols`` (delta, F, delta_max, delta_r) after the checks of
-        ``table_input`` (``check_loading``, ``check_unloading``; ``rows`` name their rows)."""
+        ``table_input`` (``check_loading``, ``check_unloading``; ``rows`` name their rows),
+        ``labels`` their name, source and yielding body (None: the pair's)."""
         if not isinstance(pair, ContactPair):
             raise ValueError(f"pair must be a ContactPair, got {type(pair).__name__}")
         R = check_positive("radius", radius, "m")
         d, f, dm, dr = cols
+        name, source, yielding = labels
         check_loading(pair, R, d, f, rows[0])
         check_unloading(R, dm, dr, (float(d[0]), float(d[-1])), rows[1])
         dc, fc = jg_critical(pair.E_star, R, pair.yield_strength, pair.nu)
         _warn_raised(name, dm / dc, dr / dm, rows[1], dm)
         token = _ROWS_WARNED.set(True)
         try:
-            return cls(
-                name,
-                source,
-                pair.E_star / pair.yield_strength,
-                pair.nu,
-                d / dc,
-                f / fc,
-                dm / dc,
-                dr / dm,
-                elastic_limit=float(d[0] / dc),
-            )
+            ratio, lim = pair.E_star / pair.yield_strength, float(d[0] / dc)
+            side = yielding_body(pair) if yielding is None else yielding
+            dims = (d / dc, f / fc, dm / dc, dr / dm)
+            return cls(name, source, ratio, pair.nu, *dims, elastic_limit=lim, yielding=side)
         finally:
             _ROWS_WARNED.reset(token)
 
@@ -274,7 +284,9 @@ class IndentationCurves:
             _ROWS_WARNED.reset(token)
 
     def record(self) -> dict[str, Any]:
-        """JSON-ready content (``curves_from_record`` reads it back)."""
+        """JSON-ready content (``curves_from_record`` reads it back); ``yielding`` only where
+        it is "sphere" (a record without it, as every file before it, is of a yielding flat)."""
+        side = {} if self.yielding == "flat" else {"yielding": self.yielding}
         return {
             "name": self.name,
             "source": self.source,
@@ -285,6 +297,7 @@ class IndentationCurves:
             "force": self.force.tolist(),
             "delta_max": self.delta_max.tolist(),
             "residual_ratio": self.residual_ratio.tolist(),
+            **side,
         }
 
 
@@ -318,18 +331,13 @@ def _warn_raised(
 
 
 def curves_from_record(d: dict[str, Any]) -> IndentationCurves:
-    """Curves from ``IndentationCurves.record`` output."""
-    return IndentationCurves(
-        str(d["name"]),
-        str(d["source"]),
-        float(d["e_star_over_sy"]),
-        float(d["nu"]),
-        d["delta"],
-        d["force"],
-        d["delta_max"],
-        d["residual_ratio"],
-        elastic_limit=float(d["elastic_limit"]),
-    )
+    """Curves from ``IndentationCurves.record`` output; without ``yielding``, of a yielding
+    flat (the shipped curves, and FE curves cached before the field: their records name no
+    materials to tell otherwise)."""
+    kw: dict[str, Any] = {k: str(d[k]) for k in ("name", "source")}
+    kw |= {k: float(d[k]) for k in ("e_star_over_sy", "nu", "elastic_limit")}
+    kw |= {k: d[k] for k in ("delta", "force", "delta_max", "residual_ratio")}
+    return IndentationCurves(**kw, yielding=d.get("yielding", "flat"))
 
 
 def curves_file_record(curves: list[IndentationCurves]) -> dict[str, Any]:
@@ -374,10 +382,12 @@ def shipped_curves() -> tuple[IndentationCurves, ...]:
 __all__ = [
     "HERTZ_TOLERANCE",
     "RESIDUAL_RAISE_TOLERANCE",
+    "YIELDING",
     "IndentationCurves",
     "ResidualRaisedWarning",
     "curves_file_record",
     "curves_from_record",
     "read_curves",
     "shipped_curves",
+    "yielding_body",
 ]

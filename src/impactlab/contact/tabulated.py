@@ -19,7 +19,8 @@ x = log(delta / delta_c), z = log(F / F_c):
 - hard limit ``p[P_DLIM]``: the last interference covered by both data sets (or R).
 
 Curves of a pair with E*/S_y and nu apply to another pair only when both match within
-``RATIO_TOLERANCE`` and ``NU_TOLERANCE`` (refused otherwise: no interpolation between pairs).
+``RATIO_TOLERANCE`` and ``NU_TOLERANCE`` and the same body yields in both (the flat, or a sphere
+softer than it: ``IndentationCurves.yielding``); refused otherwise (no interpolation).
 """
 
 from __future__ import annotations
@@ -38,12 +39,13 @@ from impactlab.contact import kernels as k
 from impactlab.contact._common import jg_critical
 from impactlab.contact.base import ContactLaw, ContactModel
 from impactlab.contact.curve_table import CURVE_MAGIC, N_LOAD, N_RES
-from impactlab.contact.indentation_data import IndentationCurves, read_curves, shipped_curves
-from impactlab.contact.loading_fit import (
-    cross_validated,
-    fit_loading,
-    held_out_sets,
+from impactlab.contact.indentation_data import (
+    IndentationCurves,
+    read_curves,
+    shipped_curves,
+    yielding_body,
 )
+from impactlab.contact.loading_fit import cross_validated, fit_loading, held_out_sets
 from impactlab.contact.names import Law
 from impactlab.contact.range_note import note_source
 from impactlab.materials import ContactPair
@@ -121,7 +123,9 @@ def _resample(x: np.ndarray, y: np.ndarray, n: int, first_slope: float | None) -
     return np.concatenate((yg, _monotone(xg, yg, spline.derivative()(xg)) * (xg[1] - xg[0])))
 
 
-def _raw_loading(c: IndentationCurves) -> tuple[np.ndarray, np.ndarray]:
+def loading_points(c: IndentationCurves) -> tuple[np.ndarray, np.ndarray]:
+    """(x, z) the loading fit is made to: the Hertz point at the elastic limit, then the data
+    past it. ValueError where the data starts below the Hertz force at the limit."""
     keep = c.delta > c.elastic_limit
     x = np.log(np.concatenate(([c.elastic_limit], c.delta[keep])))
     z = np.concatenate(([1.5 * x[0]], np.log(c.force[keep])))
@@ -132,12 +136,6 @@ def _raw_loading(c: IndentationCurves) -> tuple[np.ndarray, np.ndarray]:
             f"delta/delta_c = {c.elastic_limit:.4g}: the loading curve would decrease"
         )
     return x, z
-
-
-def loading_points(c: IndentationCurves) -> tuple[np.ndarray, np.ndarray]:
-    """(x, z) the loading fit is made to: the Hertz point at the elastic limit, then the data
-    past it. ValueError where the data starts below the Hertz force at the limit."""
-    return _raw_loading(c)
 
 
 def loading_fit(c: IndentationCurves) -> Any:
@@ -254,30 +252,40 @@ def interpolation_error(c: IndentationCurves) -> tuple[float, float]:
 def select_curves(
     pair: ContactPair, candidates: Sequence[IndentationCurves], law: str = "tabulated"
 ) -> IndentationCurves:
-    """The curves whose E*/S_y and nu match ``pair``'s (the closest in E*/S_y, within
-    ``RATIO_TOLERANCE`` and ``NU_TOLERANCE``); ValueError naming the law ``law`` and the
-    nearest curves otherwise."""
-    ratio = pair.E_star / pair.yield_strength
+    """The curves whose yielding body (``IndentationCurves.yielding``, ``yielding_body``),
+    E*/S_y and nu match ``pair``'s (the closest in E*/S_y, within ``RATIO_TOLERANCE`` and
+    ``NU_TOLERANCE``); ValueError naming the law ``law`` and the nearest curves otherwise."""
+    ratio, side, nu = pair.E_star / pair.yield_strength, yielding_body(pair), pair.nu
     if not candidates:
         raise ValueError(f"law {law!r}: no indentation curves to choose from")
 
     def off(c: IndentationCurves) -> float:
         return abs(math.log(ratio / c.e_star_over_sy))
 
-    fits = [
-        c
-        for c in candidates
-        if off(c) <= math.log1p(RATIO_TOLERANCE) and abs(c.nu - pair.nu) <= NU_TOLERANCE
-    ]
-    if fits:
-        return min(fits, key=off)
-    near = min(candidates, key=off)
+    tol = math.log1p(RATIO_TOLERANCE)
+    fits = [c for c in candidates if off(c) <= tol and abs(c.nu - nu) <= NU_TOLERANCE]
+    if mine := [c for c in fits if c.yielding == side]:
+        return min(mine, key=off)
+    make = (
+        "make curves for this pair with impactlab.fe.tabulated_law(pair, radius) (runs "
+        "CalculiX, the sphere elastic-plastic) or from measured data (IndentationCurves."
+        f"from_arrays{', yielding=' + repr(side) if side != 'flat' else ''})"
+    )
+    if fits:  # the numbers match, the body that yields does not
+        sy = [f"{m.yield_strength / 1e6:.4g} MPa" for m in (pair.body, pair.flat)]
+        raise ValueError(
+            f"law {law!r}: the {side} yields first in this pair (S_y {sy[0]} for the sphere, "
+            f"{sy[1]} for the flat), but the indentation curves for its E*/S_y = {ratio:.4g}, "
+            f"nu = {nu:g} ({min(fits, key=off).name!r}) are for a yielding {fits[0].yielding}: "
+            f"curves differ once the other body yields (docs/laws/tabulated.md); {make}"
+        )
+    near = min([c for c in candidates if c.yielding == side] or candidates, key=off)
+    of = " of a yielding sphere" if side == "sphere" else ""
+    other = "" if near.yielding == side else f", a yielding {near.yielding}"
     raise ValueError(
-        f"law {law!r}: no indentation curves for E*/S_y = {ratio:.4g}, nu = {pair.nu:g} "
-        f"(within {100 * RATIO_TOLERANCE:g} % and {NU_TOLERANCE:g}); nearest: {near.name!r} "
-        f"(E*/S_y = {near.e_star_over_sy:.4g}, nu = {near.nu:g}); make curves for this pair "
-        f"with impactlab.fe.tabulated_law(pair, radius) (runs CalculiX) or from measured data "
-        f"(IndentationCurves.from_arrays)"
+        f"law {law!r}: no indentation curves for E*/S_y = {ratio:.4g}, nu = {nu:g} (within "
+        f"{100 * RATIO_TOLERANCE:g} % and {NU_TOLERANCE:g}){of}; nearest: {near.name!r} (E*/S_y "
+        f"= {near.e_star_over_sy:.4g}, nu = {near.nu:g}{other}); {make}"
     )
 
 
@@ -294,8 +302,9 @@ class Tabulated(ContactLaw):
         "Craven & Wahba 1979), residual depths PCHIP (Fritsch & Carlson 1980)"
     )
     validity = (
-        "the pair of the curves: E*/S_y within 5 % and nu within 0.03; delta up to the last "
-        "tabulated point (hard limit, never extrapolated); loading within 2.5 % of every FE "
+        "the pair of the curves: E*/S_y within 5 % and nu within 0.03, the same body yielding "
+        "(flat, or a softer sphere); delta up to the last tabulated point (hard limit, never "
+        "extrapolated); loading within 2.5 % of every FE "
         "point past delta_c it was fitted to (2.3 % largest, 1.0 % rms for the shipped curves; "
         "leave-one-out 3 %), delta_r/delta_max within 0.001 "
         "of the FE maxima (leave-one-out 0.015; 0.021 for PMMA's 6 maxima); unloading Hertzian "
@@ -361,10 +370,8 @@ class Tabulated(ContactLaw):
 
     def describe(self) -> dict[str, Any]:
         out = super().describe()
-        out["curves"] = [
-            {"name": c.name, "source": c.source, "e_star_over_sy": c.e_star_over_sy, "nu": c.nu}
-            for c in self.candidates()
-        ]
+        keys = ("name", "source", "e_star_over_sy", "nu", "yielding")
+        out["curves"] = [{k: getattr(c, k) for k in keys} for c in self.candidates()]
         return out
 
 

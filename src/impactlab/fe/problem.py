@@ -64,6 +64,10 @@ def check_hardening(name: str, table: Any) -> tuple[tuple[float, float], ...]:
         arr = np.asarray(table, dtype=np.float64)
     except (TypeError, ValueError):
         raise ValueError(f"{name} must be rows of (true stress [Pa], plastic strain)") from None
+    if arr.size == 0:
+        raise ValueError(
+            f"{name} must hold at least one row of (true stress [Pa], plastic strain), got none"
+        )
     if arr.ndim != 2 or arr.shape[1] != 2 or len(arr) < 1:
         raise ValueError(
             f"{name} must be rows of (true stress [Pa], plastic strain), got shape {arr.shape}"

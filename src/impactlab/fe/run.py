@@ -298,8 +298,13 @@ def indent(
         )
         for d in check_maxima(delta_max)
     ]
-    if workers is not None and (isinstance(workers, bool) or int(workers) < 1):
-        raise ValueError(f"workers must be a positive integer, got {workers!r}")
+    if workers is not None and (
+        isinstance(workers, bool) or not isinstance(workers, int | np.integer) or workers < 1
+    ):  # 1.5 or "2" is no count of processes (int() made them 1 and 2)
+        raise ValueError(
+            f"workers must be a positive integer (a count of ccx processes) or None, got "
+            f"{workers!r}"
+        )
     for p in problems:  # before minutes of ccx: where the mesh is known to hold
         if p.delta_max > CHECKED_RATIO * p.delta_c * (1.0 + 1e-9):
             warnings.warn(

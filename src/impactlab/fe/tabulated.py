@@ -10,8 +10,9 @@
   with a strain-hardening flat (``fe/data/hardening``; not among the default candidates of
   ``law="tabulated"``, which would otherwise find two curves for one E*/S_y).
 - ``tabulated_law(pair, radius)``: the law for any pair: from the shipped or cached curves
-  when one matches the pair's E*/S_y and nu, else from new ``indent`` runs (CalculiX ``ccx``
-  needed; RuntimeError saying how to install it), whose curves are kept in
+  when one matches the pair (E*/S_y, nu and the body that yields), else from new ``indent``
+  runs of the pair itself, sphere elastic-plastic (CalculiX ``ccx`` needed; RuntimeError
+  saying how to install it), whose curves, labelled with the body that yields, are kept in
   ``contact.tabulated.curves_cache_dir()`` so that ``law="tabulated"`` then finds them too.
 """
 
@@ -33,6 +34,7 @@ from impactlab.contact.indentation_data import (
     SHIPPED_PATH,
     IndentationCurves,
     curves_file_record,
+    yielding_body,
 )
 from impactlab.contact.tabulated import Tabulated, curves_cache_dir, select_curves
 from impactlab.fe.curves import HARDENED_DIR, load_case, load_cases
@@ -61,11 +63,17 @@ class _Run(Protocol):
 
 
 def curves_from_runs(
-    runs: Sequence[_Run], pair: ContactPair, radius: float, name: str, source: str
+    runs: Sequence[_Run],
+    pair: ContactPair,
+    radius: float,
+    name: str,
+    source: str,
+    yielding: str = "flat",
 ) -> IndentationCurves:
     """Dimensionless curves of FE ``runs`` of ``pair`` with a sphere of ``radius`` [m]:
     the loading curve that reaches farthest and every converged run's delta_r (ValueError
-    when fewer than two runs converged)."""
+    when fewer than two runs converged). ``yielding``: the body that yields in the runs,
+    "flat" (an elastic or a harder sphere) or "sphere"."""
     done = [r for r in runs if r.converged and math.isfinite(r.residual_depth)]
     if len(done) < 2:
         raise ValueError(f"{name}: {len(done)} converged FE runs, at least 2 are needed")
@@ -85,7 +93,19 @@ def curves_from_runs(
         dm / dc,
         dr / dm,
         elastic_limit=1.0,
+        yielding=yielding,
     )
+
+
+def _fe_yielding(pair: ContactPair, sphere: str, flat_hardening: Any = None) -> str:
+    """The body that yields first in an FE run of ``pair`` whose sphere is ``sphere``
+    ("rigid", "elastic", "elastic-plastic"): the flat unless the sphere is elastic-plastic
+    and softer (``yielding_body``) or the flat is kept elastic (``flat_hardening="elastic"``)."""
+    if sphere in ("rigid", "elastic"):
+        return "flat"
+    if isinstance(flat_hardening, str) and flat_hardening == "elastic":
+        return "sphere"
+    return yielding_body(pair)
 
 
 def shipped_fe_curves() -> list[IndentationCurves]:
@@ -97,7 +117,8 @@ def shipped_fe_curves() -> list[IndentationCurves]:
             f"R = {case.radius:g} m, {case.sphere} sphere, mu = {case.mu:g}, mesh level "
             f"{case.mesh_level})"
         )
-        out.append(curves_from_runs(case.runs, case.pair, case.radius, case.name, source))
+        side = _fe_yielding(case.pair, case.sphere)
+        out.append(curves_from_runs(case.runs, case.pair, case.radius, case.name, source, side))
     return out
 
 
@@ -127,7 +148,8 @@ def hardened_curves(name: str = HARDENED_PAPER_CASE) -> IndentationCurves:
         f"R = {case.radius:g} m, {case.sphere} sphere, mu = {case.mu:g}, mesh level "
         f"{case.mesh_level})"
     )
-    return curves_from_runs(case.runs, case.pair, case.radius, case.name, source)
+    side = _fe_yielding(case.pair, case.sphere)
+    return curves_from_runs(case.runs, case.pair, case.radius, case.name, source, side)
 
 
 def hardened_law(pair: ContactPair, radius: float, name: str = HARDENED_PAPER_CASE) -> ContactModel:
@@ -191,13 +213,15 @@ def tabulated_law(
     """The tabulated law for ``pair`` and a sphere of ``radius`` [m].
 
     From the shipped or cached FE curves when one matches the pair (``contact.tabulated``'s
-    tolerances); otherwise, with ``run_fe``, from new ``indent`` runs of the pair (an
-    elastic-plastic sphere, frictionless; ``indent_kwargs`` go to ``indent``) loaded to
+    tolerances, the same body yielding); otherwise, with ``run_fe``, from new ``indent`` runs
+    of the pair (an elastic-plastic sphere, frictionless; ``indent_kwargs`` go to ``indent``;
+    the curves labelled with the body that yields in them, ``yielding_body``) loaded to
     ``maxima_over_delta_c`` times delta_c, whose curves are stored in the curves cache (a
     file per pair and inputs: ``curves_file_name``). Needs CalculiX ``ccx`` for the runs
     (RuntimeError with how to install it otherwise); ValueError, before any run, when a
     maximum is too large for the radius (a soft flat's delta_c is large: pass smaller
-    ``maxima_over_delta_c``). The model's ``source`` names the curves used.
+    ``maxima_over_delta_c``), or when ``sphere`` or ``flat_hardening`` would make the other
+    body yield than in the pair. The model's ``source`` names the curves used.
     """
     law = Tabulated()
     try:
@@ -209,6 +233,15 @@ def tabulated_law(
         return law.build(pair, radius)
     dc, _ = jg_critical(pair.E_star, radius, pair.yield_strength, pair.nu)
     _check_maxima(pair, radius, maxima_over_delta_c, dc)
+    sphere = indent_kwargs.get("sphere", "elastic-plastic")
+    side = _fe_yielding(pair, sphere, indent_kwargs.get("flat_hardening"))
+    if side != yielding_body(pair):  # curves that would not fit the pair: minutes for nothing
+        what = f"sphere={sphere!r}" if side == "flat" else "flat_hardening='elastic'"
+        raise ValueError(
+            f"{what} makes FE curves whose {side} yields, but the {yielding_body(pair)} yields "
+            f"first in {pair.body.name} on {pair.flat.name}: the law would refuse them; leave "
+            "sphere='elastic-plastic' and the flat plastic, so that the FE models the pair"
+        )
     runs = runner(
         pair.flat,
         pair.body,
@@ -221,7 +254,7 @@ def tabulated_law(
         f"FE runs of impactlab.fe.indent: {pair.body.name} sphere on {pair.flat.name}, "
         f"R = {radius:g} m, maxima {', '.join(f'{m:g}' for m in maxima_over_delta_c)} delta_c"
     )
-    curves = curves_from_runs(runs, pair, radius, name, source)
+    curves = curves_from_runs(runs, pair, radius, name, source, side)
     folder = curves_cache_dir()
     folder.mkdir(parents=True, exist_ok=True)
     text = json.dumps(curves_file_record([curves]), indent=1)

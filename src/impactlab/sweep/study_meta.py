@@ -75,7 +75,8 @@ def law_ranges(study: Study) -> dict[str, dict[str, str]]:
                 "range": f"tabulated: interpolated from its curves up to their end, "
                 f"{c.max_delta:.4g} delta_c (each case's Jackson-Green delta_c), and refused "
                 f"beyond it (status 1); pairs with E*/S_y = "
-                f"{c.e_star_over_sy:.4g} (within 5 %) and nu = {c.nu:g} (within 0.03)",
+                f"{c.e_star_over_sy:.4g} (within 5 %) and nu = {c.nu:g} (within 0.03) "
+                f"whose {c.yielding} yields",
                 "source": f"{c.name}: {c.source}",
             }
         else:
