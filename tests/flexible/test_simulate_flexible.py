@@ -59,7 +59,7 @@ def test_bad_combinations() -> None:
     with pytest.raises(TypeError, match="n_modes; it takes angle"):
         impactlab.simulate(BODY, angle=0.3, n_modes=3, **KW)
     for body in (Rod.paper(), BODY):  # a typo is named with the keyword it resembles
-        with pytest.raises(TypeError, match=r"mue \(did you mean mu\?\)"):
+        with pytest.raises(TypeError, match=r"mue \(did you mean 'mu'\?\)"):
             impactlab.simulate(body, angle=0.3, mue=0.2, velocity=(0.0, -1.41))
     for body in (Rod.paper(), BODY):  # simulate_batch's velocity names: simulate's is named
         with pytest.raises(ValueError, match=r"velocity=\(vx, vy\) \[m/s\], not vy="):

@@ -13,7 +13,6 @@ from impactlab.dynamics.batch import blank_failed
 from impactlab.dynamics.batch_fields import (
     batch_counts,
     field_dir,
-    flagged_messages,
     no_field,
     regime_series,
     with_units,
@@ -135,14 +134,6 @@ class BatchResult(BatchStatus):
         """The ``ResultFlag`` bitmask of each case (int64; 0 for failed cases, whose status
         says why)."""
         return flag_column(self.out[:, OUTPUT_FIELDS.index("flags")])
-
-    @property
-    def messages(self) -> list[str]:
-        """Each case's message (``BatchStatus.messages``: ``"ok"``, or why it failed); a
-        computed case that is not ``ok`` names its flags instead of ``"ok"``
-        (``batch_fields.flagged_messages``: ``"computed, not ok (flags 17): energy gain, beyond
-        the tip"``)."""
-        return flagged_messages(super().messages, self.flags, self.ok)
 
     @property
     def velocity_out(self) -> tuple[np.ndarray, np.ndarray]:

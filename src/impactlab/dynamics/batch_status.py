@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from impactlab.bodies import Rod, Sphere
+from impactlab.dynamics.batch_fields import flagged_messages
 from impactlab.dynamics.export import batch_html
 from impactlab.dynamics.input_checks import contact_reach, mu_problem, past_normal
 from impactlab.dynamics.kernels.inputs import (
@@ -148,7 +149,9 @@ class BatchStatus:
         ``refusals``); a case refused for its inputs names the input, its value and its rule:
         ST_BAD_INPUT (``refusals``), ST_BAD_ANGLE (the angle, in rad and deg) and
         ST_NOT_APPROACHING (the contact point's normal velocity ``vn_in``, else vy and the
-        spin)."""
+        spin); a computed case that is not ``ok`` names its flags instead of ``"ok"``
+        (``batch_fields.flagged_messages``: ``"computed, not ok (flags 17): energy gain, beyond
+        the tip"``), in ``BatchResult`` and ``DropBatchResult`` alike."""
         texts = [STATUS_MESSAGES.get(int(s), f"status {int(s)}") for s in self.status]
         for i, why in self.refusals.items():
             if int(self.status[i]) == ST_BAD_INPUT:
@@ -159,7 +162,7 @@ class BatchStatus:
         for j in np.flatnonzero((status == ST_BAD_ANGLE) | (status == ST_NOT_APPROACHING)):
             if int(j) not in self.refusals:
                 texts[j] = f"{texts[j]}: {self._refused_values(int(j))}"
-        return texts
+        return flagged_messages(texts, self.flags, self.ok)
 
     def _refused_values(self, i: int) -> str:
         """The inputs of case ``i`` that its status (ST_BAD_ANGLE, ST_NOT_APPROACHING) reads."""

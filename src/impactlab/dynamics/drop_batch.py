@@ -18,6 +18,7 @@ import numba
 import numpy as np
 
 from impactlab import schema
+from impactlab._validation import refuse_unknown_keywords
 from impactlab.bodies import Rod
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.bodies.layout import BP_GSTAR
@@ -69,7 +70,7 @@ from impactlab.dynamics.kernels.layout import MU_NEGLIGIBLE
 from impactlab.dynamics.models import body_params, kernel_params, references_used
 from impactlab.dynamics.pint_fields import pint_unit
 from impactlab.dynamics.simulate_many import _batch_inputs
-from impactlab.friction import COULOMB, DEFAULT_MU, PARTIAL_SLIP
+from impactlab.friction import COULOMB, DEFAULT_MU, PARTIAL_SLIP, PARTIAL_SLIP_CELLS
 from impactlab.materials import AISI_1010, Material
 from impactlab.references import Reference
 from impactlab.references import dois as doi_list
@@ -225,6 +226,18 @@ class DropBatchResult(BatchStatus):
         )
 
 
+#: What simulate_drops says of a keyword of ``simulate`` or ``simulate_batch`` it does not take.
+DROPS_KEYWORD_NOTES = {
+    "history": "a drop batch keeps no history, each case's totals only; one drop's time history:"
+    " impactlab.simulate_drop(body, flat, angle=..., velocity=(vx, vy), mu=...) or "
+    "impactlab.simulate(FlexibleRod(...), ...), history=True by default",
+    "constant_angle": "a drop follows the rod's rotation; fixed lever arms: simulate_batch",
+    "partial_slip_cells": f"a drop's partial slip has {PARTIAL_SLIP_CELLS} compiled cells per end",
+    "theta": "the rod's angle to the flat is angle= [rad]",
+}
+
+
+@refuse_unknown_keywords(DROPS_KEYWORD_NOTES)
 def simulate_drops(
     body: FlexibleRod | Rod,
     flat: Material = AISI_1010,
@@ -266,7 +279,9 @@ def simulate_drops(
     in ``messages``) and NaN outputs; it never stops the batch. ValueError for a bad body,
     flat, law, friction, gravity, rtol (with partial slip: up to 1e-5), stop or t_max (one
     message naming it), and for a bad ``speed`` or ``incidence`` (checked before any case
-    runs, as ``simulate_batch`` does: each offending case named by its index).
+    runs, as ``simulate_batch`` does: each offending case named by its index). TypeError for a
+    keyword it does not take, with the nearest name or what to use instead
+    (``DROPS_KEYWORD_NOTES``: ``history=``, a drop batch keeps none).
     """
     refuse_rate(rate, "simulate_drops")
     body = check_body(body)

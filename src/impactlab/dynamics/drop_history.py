@@ -8,7 +8,9 @@ from typing import Any
 import numpy as np
 
 from impactlab import schema
+from impactlab._validation import did_you_mean
 from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.history import ColumnAttributes
 
 __all__ = ["DROP_HISTORY_COLUMNS", "DROP_HISTORY_UNITS", "DropHistory"]
 
@@ -21,17 +23,19 @@ if len(DROP_HISTORY_COLUMNS) != F.N_DROP_HISTORY:  # the schema names every engi
 
 
 @dataclass(frozen=True, eq=False)
-class DropHistory:
+class DropHistory(ColumnAttributes):
     """The time history of a drop (rows: accepted steps and dense points; SI units).
 
     Columns: ``impactlab.schema.DROP_HISTORY_FIELDS``, by name (``history["normal_force_0"]``)
     or as attributes (``history.normal_force_0``); a quantity of one end of the rod carries
     the end's suffix (``_0`` the tip, ``_1`` the other end: ``schema.end_column``). The names
     before 0.3 (``"fn0"``, ...: ``schema.RENAMED_DROP_HISTORY``) read the same column with a
-    DeprecationWarning.
+    DeprecationWarning. ``dir()`` lists the columns; a misspelt one gets the nearest
+    (``history.ColumnAttributes``, as ``History`` has it).
     """
 
     data: np.ndarray = field(repr=False)
+    _COLUMNS = DROP_HISTORY_COLUMNS
 
     def __post_init__(self) -> None:
         a = np.array(self.data, dtype=np.float64, copy=True)
@@ -50,7 +54,8 @@ class DropHistory:
             return self.data[:, DROP_HISTORY_COLUMNS.index(name)]
         except ValueError:
             known = ", ".join(DROP_HISTORY_COLUMNS)
-            raise KeyError(f"unknown history column {name!r}; known: {known}") from None
+            near = did_you_mean(name, DROP_HISTORY_COLUMNS)
+            raise KeyError(f"unknown history column {name!r}{near}; known: {known}") from None
 
     def __getattr__(self, name: str) -> np.ndarray:
         if name.startswith("_") or name == "data":
@@ -58,10 +63,7 @@ class DropHistory:
         try:
             return self[name]
         except KeyError:
-            raise AttributeError(
-                f"'DropHistory' object has no attribute {name!r}; columns: "
-                f"{', '.join(DROP_HISTORY_COLUMNS)}"
-            ) from None
+            raise self._no_column(name) from None
 
     @property
     def fields(self) -> tuple[str, ...]:

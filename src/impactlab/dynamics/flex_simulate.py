@@ -6,13 +6,12 @@ of ``simulate_batch`` with a FlexibleRod, and the check of a drop's mode count
 from __future__ import annotations
 
 import dataclasses
-import difflib
 import itertools
 import math
 from collections.abc import Sequence
 from typing import Any
 
-from impactlab._validation import check_flag
+from impactlab._validation import check_flag, unexpected_keywords
 from impactlab.bodies.flexible_rod import MAX_MODES, FlexibleRod
 from impactlab.dynamics.drop import simulate_drop
 from impactlab.dynamics.drop_result import DropResult
@@ -49,16 +48,9 @@ def simulate_flexible(
     or an unknown keyword."""
     known = (*_SIMULATE_ARGS, "constant_angle", "history", "speed", "incidence", *DROP_OPTIONS)
     extra = sorted(set(kwargs) - set(known))
-    if extra:
-        hints = [
-            f"{k} (did you mean {close[0]}?)" if close else k
-            for k in extra
-            for close in [difflib.get_close_matches(k, known, n=1)]
-        ]
-        raise TypeError(
-            f"simulate() got unexpected keyword argument(s) {', '.join(hints)}; it takes "
-            f"{', '.join(sorted(known))} ({', '.join(DROP_OPTIONS)}: a FlexibleRod's drop)"
-        )
+    if extra:  # in simulate_batch's words (the nearest name), with the drop's options named
+        text = unexpected_keywords("simulate", extra, known, {})
+        raise TypeError(f"{text} ({', '.join(DROP_OPTIONS)}: a FlexibleRod's drop)")
     if not isinstance(body, FlexibleRod):
         given = sorted(set(kwargs) & set(DROP_OPTIONS))
         raise TypeError(

@@ -6,7 +6,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 
@@ -15,7 +15,7 @@ from impactlab._validation import did_you_mean
 from impactlab.dynamics.export import history_dataframe
 from impactlab.dynamics.kernels.layout import HISTORY_FIELDS
 
-__all__ = ["HISTORY_UNITS", "DentMap", "History", "readonly_copy"]
+__all__ = ["HISTORY_UNITS", "ColumnAttributes", "DentMap", "History", "readonly_copy"]
 
 
 def readonly_copy(a: Any, dtype: Any = np.float64) -> np.ndarray:
@@ -29,8 +29,30 @@ def readonly_copy(a: Any, dtype: Any = np.float64) -> np.ndarray:
 HISTORY_UNITS: dict[str, str] = {f.name: f.unit for f in schema.HISTORY_FIELDS}
 
 
+class ColumnAttributes:
+    """A history's columns (``_COLUMNS``, set by each history class) as attributes: ``dir()``
+    lists them (tab completion), and a name that is no attribute gets the nearest column
+    (``_validation.did_you_mean``) in its AttributeError, in ``History`` and ``DropHistory``
+    alike."""
+
+    _COLUMNS: ClassVar[tuple[str, ...]] = ()
+
+    def __dir__(self) -> list[str]:
+        """The attributes with the columns (``history.normal_force``: tab completion)."""
+        return sorted({*object.__dir__(self), *self._COLUMNS})
+
+    def _no_column(self, name: str) -> AttributeError:
+        """The AttributeError of ``history.name`` for a name that is no column: the nearest
+        column, then the columns."""
+        near = did_you_mean(name, self._COLUMNS)
+        return AttributeError(
+            f"'{type(self).__name__}' object has no attribute {name!r}{near}; columns: "
+            f"{', '.join(self._COLUMNS)}"
+        )
+
+
 @dataclass(frozen=True, eq=False)
-class History:
+class History(ColumnAttributes):
     """Time history of one impact (rows: accepted steps, dense-output points and events).
 
     Columns (SI): see ``HISTORY_FIELDS``; each is also an attribute (``history.t``, ...).
@@ -39,6 +61,7 @@ class History:
     """
 
     data: np.ndarray = field(repr=False)
+    _COLUMNS = HISTORY_FIELDS
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "data", readonly_copy(self.data))
@@ -50,15 +73,8 @@ class History:
         try:
             j = HISTORY_FIELDS.index(name)
         except ValueError:
-            raise AttributeError(
-                f"'History' object has no attribute {name!r}{did_you_mean(name, HISTORY_FIELDS)}"
-                f"; columns: {', '.join(HISTORY_FIELDS)}"
-            ) from None
+            raise self._no_column(name) from None
         return self.data[:, j]
-
-    def __dir__(self) -> list[str]:
-        """The attributes with the columns (``history.normal_force``: tab completion)."""
-        return sorted({*object.__dir__(self), *HISTORY_FIELDS})
 
     def __getitem__(self, name: str) -> np.ndarray:
         return self.__getattr__(name)
