@@ -89,8 +89,9 @@ class DropResult(DerivedOutputs, ResultDisplay):
       of marker data would remove it; ``e_raw`` keeps it); one bounce of the tip only when
       the sequence holds the tip's contacts alone and e >= 0 (else OTHER_END, below);
     - ``dent_depth``: the tip's final dent depth, the permanent depth of its deepest dent
-      (``dent().max_depth``; the other end's dents, when it touches, are in ``dents``; an
-      impact's ``delta_p`` is that of one unloading);
+      (equal to ``dent().max_depth``, whatever bounds the caps' widths: ``DentMap.note``; the
+      other end's dents, when it touches, are in ``dents``; an impact's ``delta_p`` is that
+      of one unloading);
     - ``sequence_sliding_length``: the tip's total slip, the sum over its contacts of
       int v_t dt (signed, as ImpactResult's ``sliding_length`` of one contact);
       ``scar_length``: the x-extent of the mark the tip left over all its contacts (where the

@@ -1,0 +1,198 @@
+"""The dent map keeps every cap's depth: a cap whose law unloads with R_r <= R (no concave
+solution of 1/R_r = 1/R - 1/R_d) is drawn at the tip's radius, one whose relation puts its rim
+beyond the contact is brought to the contact radius, and the DentMap says so; the depth of the
+dent is the law's (``delta_p`` of one loading, a drop's ``dent_depth``)."""
+
+from __future__ import annotations
+
+import math
+
+import matplotlib
+
+matplotlib.use("Agg")
+import numpy as np
+import pytest
+
+import impactlab as il
+from impactlab.bodies import PAPER_ROD
+from impactlab.contact.kernel_arrays import loading_contact_radius_array
+from impactlab.contact.kernels import P_R
+from impactlab.dynamics import plotting
+from impactlab.dynamics.core.batch import residual_caps
+from impactlab.dynamics.dent import (
+    AT_CONTACT_RADIUS,
+    AT_TIP_RADIUS,
+    BY_RELATION,
+    residual_cap_geometry,
+)
+
+JG_COPPER = {"law": "jackson-green", "angle": 0.6, "velocity": (0.0, -5.0)}
+SPHERE_PMMA = {"law": "ghaednia", "velocity": (0.0, -1.0)}
+
+
+@pytest.fixture(scope="module")
+def jg_copper() -> il.ImpactResult:
+    return il.simulate(il.Rod.paper(), "copper-ofhc", **JG_COPPER)
+
+
+@pytest.fixture(scope="module")
+def sphere_pmma() -> il.ImpactResult:
+    return il.simulate(il.Sphere(radius=0.005, material="aisi-52100"), "pmma", **SPHERE_PMMA)
+
+
+@pytest.mark.parametrize("name", ["jg_copper", "sphere_pmma"])
+def test_deepest_cap_with_no_concave_solution_keeps_its_depth(name, request) -> None:
+    r = request.getfixturevalue(name)
+    d = r.dent()
+    assert r.ok and r.delta_p > 0
+    assert d.max_depth == pytest.approx(r.delta_p, rel=1e-12)
+    assert -d.height.min() == pytest.approx(r.delta_p, rel=1e-2)
+    # drawn at the tip's radius: a rim sqrt(2 R delta_p), the narrowest of that depth
+    R = float(r._law_params[P_R])
+    assert d.width == pytest.approx(2.0 * math.sqrt(2.0 * R * r.delta_p), rel=1e-9)
+    assert d.caps_at_tip_radius >= 1 and "deepest among them" in d.note
+    assert "tip's radius" in d.note and "caps_at_tip_radius" in repr(d)
+
+
+@pytest.mark.parametrize(
+    ("flat", "law", "v", "at_tip"),
+    [
+        ("copper-ofhc", "jackson-green", 5.0, True),
+        ("pmma", "ghaednia", 1.0, False),
+        ("aisi-52100", "ghaednia", 1.0, False),
+    ],
+)
+def test_drop_dent_depth_is_its_dent_map_depth(flat, law, v, at_tip) -> None:
+    d = il.simulate_drop(il.FlexibleRod.paper(), flat, law=law, angle=0.6, velocity=(0.0, -v))
+    dm = d.dent()
+    assert d.ok and d.dent_depth > 0
+    assert dm.max_depth == pytest.approx(d.dent_depth, rel=1e-12)
+    assert (dm.caps_at_tip_radius >= 1) == at_tip
+    assert bool(dm.note) == bool(dm.caps_at_tip_radius or dm.caps_at_contact_radius)
+
+
+def test_cap_geometry_bounds(jg_copper: il.ImpactResult) -> None:
+    p = np.asarray(jg_copper._law_params, dtype=np.float64)
+    law, R = int(jg_copper._law_id), float(p[P_R])
+    # R_r crosses R near delta = 0.1 mm: sample it finely there
+    delta = np.sort(np.r_[np.geomspace(1e-7, 1e-3, 400), np.linspace(9e-5, 1.1e-4, 2001)])
+    dr, rr = residual_caps(law, p, delta)
+    caps = residual_cap_geometry(law, p, delta)
+    assert np.array_equal(caps.delta_r, dr)
+    dent = dr > 0
+    assert np.all(caps.R_d[dent] >= R * (1 - 1e-12)) and np.all(caps.a_d[dent] > 0)
+    # R_r <= R: the tip's radius
+    tip = dent & (rr <= R)
+    assert tip.any() and np.all(caps.bound[tip] == AT_TIP_RADIUS) and np.all(caps.R_d[tip] == R)
+    # the rim never passes the widest circle the tip touched
+    a_c = np.maximum.reduce(
+        [
+            loading_contact_radius_array(law, p, delta),
+            np.sqrt(rr * (delta - dr)),
+            np.sqrt(2 * R * delta),
+        ]
+    )
+    assert np.all(caps.a_d[dent] <= a_c[dent] * (1 + 1e-6))
+    # R_r just above R: the relation's R_d -> inf, the cap brought to the contact radius
+    near = dent & (rr > R) & (rr < 1.01 * R)
+    assert near.any() and np.all(caps.bound[near] == AT_CONTACT_RADIUS)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        a_rel = np.sqrt(2 * R * rr / (rr - R) * dr)
+    assert np.all(a_rel[near] > 5 * a_c[near])  # the relation's rim: far beyond the contact
+    assert np.all(caps.a_d[near] == a_c[near])
+    # elsewhere the relation itself, unchanged
+    kept = dent & (rr > R) & (a_rel <= a_c)
+    assert kept.any() and np.all(caps.bound[kept] == BY_RELATION)
+    assert np.array_equal(caps.R_d[kept], R * rr[kept] / (rr[kept] - R))
+
+
+def test_no_recovery_takes_the_tip_radius() -> None:
+    r = il.simulate(il.Rod.paper(), "copper-ofhc", **JG_COPPER)
+    p = np.asarray(r._law_params, dtype=np.float64)
+    caps = residual_cap_geometry(int(r._law_id), p, np.array([0.0, 2e-4]))
+    assert caps.a_d[0] == 0.0 and caps.R_d[0] == math.inf and caps.bound[0] == BY_RELATION
+    assert np.isfinite(caps.R_d[1]) and caps.a_d[1] > 0
+
+
+def _cases():
+    bodies = [
+        ("rod", il.Rod.paper()),
+        ("sphere 5 mm", il.Sphere(radius=0.005, material="aisi-52100")),
+        ("sphere 25 mm", il.Sphere(radius=0.025, material="brass-c360")),
+    ]
+    for law in il.law_names():
+        for label, body in bodies:
+            for flat in ("copper-ofhc", "pmma", "aisi-201", "ti-6al-4v", "alumina-99.5"):
+                for v in (0.1, 1.0, 5.0):
+                    yield law, label, body, flat, v
+
+
+def test_max_depth_is_delta_p_for_every_law() -> None:
+    plastic: set[str] = set()
+    for law, label, body, flat, v in _cases():
+        kw = {"law": law, "velocity": (0.0, -v)}
+        if isinstance(body, il.Rod):
+            kw["angle"] = 0.6
+        try:
+            r = il.simulate(body, flat, **kw)
+        except ValueError:
+            continue  # a law that does not take this pair
+        if r.delta_p <= 0.0:
+            continue
+        plastic.add(law)
+        d = r.dent()
+        where = f"{law}, {label} on {flat} at {v} m/s"
+        # the history's recorded peak may pass delta_max by a few 1e-8 of it
+        assert d.max_depth == pytest.approx(r.delta_p, rel=1e-5), where
+        assert d.width >= 2 * math.sqrt(2 * float(r._law_params[P_R]) * d.max_depth) * (1 - 1e-9)
+        assert np.all(d.height <= 0.0) and d.height.min() < 0.0, where
+        assert bool(d.note) == bool(d.caps_at_tip_radius or d.caps_at_contact_radius), where
+    assert {"ghaednia", "jackson-green", "thornton", "brake", "kogut-komvopoulos"} <= plastic
+
+
+def _hertzian_envelope(r: il.ImpactResult, nx: int, ny: int) -> np.ndarray:
+    """The dent of the relation alone (no bound), on the same grid: the map before the bounds."""
+    p = np.asarray(r._law_params, dtype=np.float64)
+    R = float(p[P_R])
+    pen = np.ascontiguousarray(r.history.penetration)
+    dr, rr = residual_caps(int(r._law_id), p, pen)
+    keep = (dr > 0) & (rr > R * (1 + 1e-12))
+    dr, rr, xc = dr[keep], rr[keep], r.history.contact_x[keep]
+    rd = R * rr / (rr - R)
+    ad = np.sqrt(2 * rd * dr)
+    x_lo, x_hi, a_max = np.min(xc - ad), np.max(xc + ad), ad.max()
+    pad = 0.15 * max(x_hi - x_lo, 2 * a_max)
+    x = np.linspace(x_lo - pad, x_hi + pad, nx)
+    y = np.linspace(-(a_max + pad), a_max + pad, ny)
+    h = np.zeros((ny, nx))
+    for i in range(dr.shape[0]):
+        cap = -dr[i] + ((x[None, :] - xc[i]) ** 2 + (y * y)[:, None]) / (2 * rd[i])
+        inside = np.abs(x - xc[i]) <= ad[i]
+        h[:, inside] = np.minimum(h[:, inside], cap[:, inside])
+    return h
+
+
+def test_paper_dent_is_unchanged() -> None:
+    r = il.simulate(
+        PAPER_ROD,
+        law="ghaednia",
+        friction="coulomb",
+        mu=0.2,
+        angle=math.radians(20),
+        velocity=(0.0, -1.41),
+    )
+    d = r.dent(nx=121, ny=61)
+    assert d.max_depth == pytest.approx(62e-6, abs=0.5e-6)
+    assert d.width == pytest.approx(2.14e-3, abs=0.005e-3)
+    assert d.caps_at_tip_radius == 0 and d.caps_at_contact_radius == 0 and d.note == ""
+    caps = residual_cap_geometry(r._law_id, r._law_params, r.history.penetration)
+    assert np.all(caps.bound == BY_RELATION)
+    assert caps.R_d[np.argmax(caps.delta_r)] == pytest.approx(9.3e-3, abs=0.05e-3)
+    np.testing.assert_allclose(d.height, _hertzian_envelope(r, 121, 61), rtol=0, atol=1e-15)
+    assert "caps_at" not in repr(d)
+
+
+def test_plot_dent_names_the_bounded_caps(jg_copper: il.ImpactResult) -> None:
+    fig = plotting.plot_dent(jg_copper)
+    title = fig.axes[0].get_title()
+    assert "dent: depth 559 um" in title and "at the tip's radius" in title
