@@ -107,7 +107,7 @@ def test_run_resume_export_plot_info(tmp_path, monkeypatch, capsys) -> None:
     assert code == 0 and counts["chunks_done"] == counts["chunks_total"] == summary["chunks"]
     assert counts["store_version"] == impactlab.__version__  # who wrote the store
     code, out, err = run_cli(monkeypatch, capsys, "sweep", "info", str(store))
-    assert code == 0 and "0: ok = 40" in out and "{'" not in out  # no raw Python reprs
+    assert code == 0 and "0: finished = 40" in out and "{'" not in out  # no raw Python reprs
     changed = tmp_path / "changed.toml"
     changed.write_text(study.read_text().replace("-1.41 m/s", "-2 m/s"))
     code, _, err = run_cli(monkeypatch, capsys, "sweep", str(changed), "--out", str(store))

@@ -106,10 +106,10 @@ def test_one_report_per_grid_point_with_the_study_defaults(tmp_path, fake) -> No
     assert list(uncertainty_reports(ds, outputs=["delta_p"])["law = hertz"].summary.index) == [
         "delta_p"
     ]
-    assert status_counts(ds) == {"0: ok": 1000}
+    assert status_counts(ds) == {"0: finished": 1000}
     info = store_info(tmp_path / "mcg.zarr")
     assert info["chunks_done"] == f"{st.layout.n_chunks} of {st.layout.n_chunks}"
-    assert info["dims"] == {"law": 2, "sample": 500} and info["status"] == {"0: ok": 1000}
+    assert info["dims"] == {"law": 2, "sample": 500} and info["status"] == {"0: finished": 1000}
 
 
 def test_grid_points_are_named_in_display_units(tmp_path, fake) -> None:

@@ -66,7 +66,7 @@ def test_a_chunk_without_its_marker_or_its_files(store, monkeypatch, capsys) -> 
     assert (rep.n_not_computed, rep.n_invalid, rep.summary.loc["e", "n"]) == (20, 0, 30)
     info = _info(monkeypatch, capsys, store)
     assert (info["chunks_done"], info["chunks_total"]) == (3, 5)
-    assert info["status"] == {NOT_RUN: 20, "0: ok": 30}
+    assert info["status"] == {NOT_RUN: 20, "0: finished": 30}
 
 
 def test_the_cases_masked_are_those_of_the_chunk_on_a_2d_grid(tmp_path) -> None:

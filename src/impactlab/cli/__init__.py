@@ -1,7 +1,8 @@
 """The ``impactlab`` command line. Each command lives in its own module with a ``register(app)``.
 
 User errors (ValueError, FileNotFoundError, ...) and running out of memory (an input that asks
-for too much) exit with status 2 and one line naming the bad input, never a traceback. Set
+for too much) exit with status 2 and one line naming the bad input, never a traceback; an
+error of the system (a full disk, a read-only file system) with status 1 and one line. Set
 ``IMPACTLAB_DEBUG=1`` to see the traceback. Ctrl-C exits with status 130 and one line
 (``interrupted``, or the command's own: ``sweep run``, ``calibrate``).
 """
@@ -9,6 +10,7 @@ for too much) exit with status 2 and one line naming the bad input, never a trac
 from __future__ import annotations
 
 import atexit
+import errno
 import gc
 import os
 import sys
@@ -194,6 +196,27 @@ def _usage_line(exc: Exception, message: str) -> str:
     return f"{text} (see '{path} --help')" if isinstance(path, str) and path else text
 
 
+#: errno -> what it says of the file it names, and what to do.
+_SYSTEM_ERRORS = {
+    errno.ENOSPC: "no space left on the device writing {}: free space and run the command again",
+    errno.EDQUOT: "disk quota exceeded writing {}: free space and run the command again",
+    errno.EROFS: "{} is on a read-only file system: choose a writable place",
+}
+
+
+def _system_error_line(exc: OSError) -> str:
+    """An OSError of the system in one line: its own message where it has no errno text (a
+    sweep's ``StoreWriteError`` says what is stored), else what its errno means for its file
+    (a full disk, a quota, a read-only file system), else its text and file."""
+    if exc.strerror is None:
+        return str(exc) or type(exc).__name__
+    where = repr(str(exc.filename)) if exc.filename is not None else "a file"
+    text = _SYSTEM_ERRORS.get(exc.errno or 0)
+    if text is not None:
+        return text.format(where)
+    return f"{exc.strerror}: {where}" if exc.filename is not None else exc.strerror
+
+
 def main() -> None:
     """Entry point: run the app and turn user errors into a one-line message with exit code 2;
     impactlab's own warnings print as one line ``warning: <message>``."""
@@ -217,6 +240,11 @@ def main() -> None:
             raise
         print(f"error: {exc}", file=sys.stderr)
         sys.exit(2)
+    except OSError as exc:  # the system's (a full disk, a read-only file system): not the input
+        if os.environ.get("IMPACTLAB_DEBUG"):
+            raise
+        print(f"error: {_system_error_line(exc)}", file=sys.stderr)
+        sys.exit(1)
     except MemoryError as exc:  # an input that asks for more than the machine has
         if os.environ.get("IMPACTLAB_DEBUG"):
             raise

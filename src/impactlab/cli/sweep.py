@@ -52,15 +52,22 @@ if TYPE_CHECKING:
 WORKER_TIMEOUT_HELP_DEFAULT = 60
 
 
+#: Words for a subcommand that is spelled otherwise: the one meant.
+_MEANT = {"summary": "info", "status": "info", "show": "info", "csv": "export", "plots": "plot"}
+
+
 class _DefaultRun(TyperGroup):
     """``impactlab sweep STUDY.toml ...`` means ``impactlab sweep run STUDY.toml ...``; a first
-    word that is no file but nearly a subcommand (``infoo``, ``rn``) is refused naming it."""
+    word that is no file and no path (``infoo``, ``summary``) is refused with the subcommands
+    (and the one it nearly is); a path that is no file (``study.toml``) is the run's to refuse."""
 
     def parse_args(self, ctx: Any, args: list[str]) -> list[str]:
         first = self._first_positional(args)
         if first is not None and first not in self.commands:
-            near = "" if Path(first).exists() else did_you_mean(first, list(self.commands))
-            if near and not {".", "/", "\\"} & set(first):
+            if not Path(first).exists() and not {".", "/", "\\"} & set(first):
+                meant = _MEANT.get(first.lower())
+                near = f" (did you mean {meant!r}?)" if meant else ""
+                near = near or did_you_mean(first, list(self.commands))
                 raise UserError(
                     f"no subcommand {first!r}{near} and no study file of that name; "
                     f"subcommands: {', '.join(self.commands)} (impactlab sweep --help)"
@@ -103,8 +110,8 @@ class _Where:
 
 
 def _run(study_path: Path, where: _Where, quiet: bool, restart: bool) -> SweepResult:
-    from impactlab.sweep import Study, SweepSizeWarning, run_sweep
-    from impactlab.sweep.backends import DEFAULT_WORKER_TIMEOUT, NoWorkersError, WorkerLostError
+    from impactlab.sweep import Study, SweepSizeWarning, backends, run_sweep
+    from impactlab.sweep.runner import FlaggedCasesWarning
 
     timeout = where.worker_timeout
 
@@ -114,27 +121,29 @@ def _run(study_path: Path, where: _Where, quiet: bool, restart: bool) -> SweepRe
     for w in caught:
         print(f"warning: {w.message}", file=sys.stderr)
     try:
-        return run_sweep(
-            study,
-            where.out,
-            scheduler=where.scheduler,
-            workers=where.workers,
-            backend=where.backend,
-            quiet=quiet,
-            restart=restart,
-            worker_timeout=DEFAULT_WORKER_TIMEOUT if timeout is None else timeout,
-        )
+        with warnings.catch_warnings():  # the summary counts them (--quiet: no summary)
+            warnings.simplefilter("ignore", FlaggedCasesWarning)
+            return run_sweep(
+                study,
+                where.out,
+                scheduler=where.scheduler,
+                workers=where.workers,
+                backend=where.backend,
+                quiet=quiet,
+                restart=restart,
+                worker_timeout=backends.DEFAULT_WORKER_TIMEOUT if timeout is None else timeout,
+            )
     except (OSError, TimeoutError) as exc:
-        if where.scheduler is not None:
+        if where.scheduler is not None and not isinstance(exc, backends.StoreWriteError):
             raise UserError(
                 f"cannot use the Dask scheduler {where.scheduler!r}: {exc}; the store "
                 f"{where.out} keeps what it holds (run again to resume, with a scheduler that "
                 "answers or without --scheduler)"
             ) from None
         raise
-    except NoWorkersError as exc:  # one line, as docs/sweep.md says
+    except backends.NoWorkersError as exc:  # one line, as docs/sweep.md says
         raise UserError(str(exc)) from None
-    except WorkerLostError as exc:  # one line, as an interrupt's; not the user's input: 1
+    except backends.WorkerLostError as exc:  # one line, as an interrupt's; not the user's input: 1
         print(f"error: {exc}", file=sys.stderr)
         raise typer.Exit(1) from None
 

@@ -114,14 +114,16 @@ class Brake(ContactLaw):
         hb = values["hardness"]
         if math.isnan(hb):
             if not (pair.body.has_hardness and pair.flat.has_hardness):
-                missing = " and ".join(
-                    repr(m.name) for m in (pair.body, pair.flat) if not m.has_hardness
-                )
+                sides = ((pair.body, "body"), (pair.flat, "flat"))
+                lacking = [(m, side) for m, side in sides if not m.has_hardness]
+                missing = " and ".join(repr(m.name) for m, _ in lacking)
+                keys = " and ".join(f"{side}_brinell_hardness" for _, side in lacking)
                 raise ValueError(
                     f"hardness: Brake's law needs the Brinell hardness of both materials, and "
-                    f"{missing} has none; give the material a brinell_hardness, or the "
-                    "combined value as a law parameter: law_params={'hardness': ...} in "
-                    "kgf/mm^2 (a [law_params] table in a --config file on the command line)"
+                    f"{missing} has none; give it a brinell_hardness in kgf/mm^2 (HB=...; in "
+                    f"a sweep study: {keys}), or the combined value as a law parameter, "
+                    "law_params={'hardness': ...} in kgf/mm^2 (a [law_params] table in a "
+                    "--config file on the command line, or in a study whose only law is brake)"
                 )
             hb = 1.0 / (2.0 / pair.body.brinell_hardness + 2.0 / pair.flat.brinell_hardness)
         hb = check_positive("hardness", hb, "kgf/mm^2")

@@ -301,9 +301,33 @@ def from_file(path: Path, where: str = "material") -> Material:
 
 
 def get_material(value: Any, where: str = "material") -> Material:
-    """The material ``value`` names or defines (module docstring): a Material as it is, a
-    library name, a definition by values (text or mapping) or a TOML file's path.
-    ValueError naming ``where`` otherwise, listing the library's names."""
+    """The material ``value`` names or defines; ValueError naming ``where`` otherwise (it lists
+    the library's names).
+
+    ``value`` is one of:
+
+    - a :class:`Material`, returned as it is;
+    - a library name, case and ``_``/``-`` free, or an alias (``"al-6061-t6"``, ``"6061-t6"``,
+      ``"AISI_1010"``); ``list(impactlab.materials.PRESETS)`` (or ``impactlab materials`` on
+      the command line) lists them, ``impactlab.materials.ALIASES`` the aliases;
+    - a definition by values, as text ``"E=69GPa, nu=0.33, Sy=276MPa, rho=2700kg/m^3"`` or as a
+      mapping with the same keys (case free). Required: ``E`` (Young's modulus, Pa), ``nu``
+      (Poisson's ratio), ``Sy`` or ``S_y`` or ``yield_strength`` (Pa), ``rho`` or ``density``
+      (kg/m^3). Optional: ``HB`` or ``brinell_hardness`` (kgf/mm^2; ``"95 HB"``), ``n`` or
+      ``meyer_index``, ``name``, ``condition``, ``brittle`` (true/false). A quantity carries
+      its unit (``"69 GPa"``, or ``{"value": 69, "unit": "GPa"}`` in a mapping); a bare number
+      is in SI (Pa, kg/m^3; HB in kgf/mm^2);
+    - the path of a TOML file (a ``Path``, or text ending in ``.toml``) holding such a table,
+      at its top level or under ``[material]``.
+
+    Example::
+
+        >>> from impactlab import get_material
+        >>> get_material("6061-t6").name
+        'aluminium 6061-T6'
+        >>> get_material({"E": "69 GPa", "nu": 0.33, "Sy": "276 MPa", "rho": 2700}).E
+        69000000000.0
+    """
     if isinstance(value, Material):
         return value
     if isinstance(value, Mapping):

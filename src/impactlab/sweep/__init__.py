@@ -14,6 +14,7 @@ Quick start::
 See docs/sweep.md for the study-file format, resume semantics and Dask usage.
 """
 
+from impactlab.sweep.backends import StoreWriteError
 from impactlab.sweep.chunks import compute_chunk
 from impactlab.sweep.dimensions import Axis, Layout, Sample
 from impactlab.sweep.distributions import Distribution, LogNormal, Normal, Uniform
@@ -31,7 +32,13 @@ from impactlab.sweep.netcdf import export_csv, export_file, export_netcdf
 from impactlab.sweep.options import EngineOptions, UncertaintySpec
 from impactlab.sweep.plots import SliceWarning, plot_output_map, plot_regime_map
 from impactlab.sweep.plotsweep import PlotSkipped, plot_plan, plot_sweep
-from impactlab.sweep.runner import SweepInterrupted, SweepResult, SweepStats, run_sweep
+from impactlab.sweep.runner import (
+    FlaggedCasesWarning,
+    SweepInterrupted,
+    SweepResult,
+    SweepStats,
+    run_sweep,
+)
 from impactlab.sweep.store import (
     CorruptStoreError,
     StudyMismatchError,
@@ -60,6 +67,7 @@ __all__ = [
     "EngineEvaluator",
     "EngineOptions",
     "Evaluator",
+    "FlaggedCasesWarning",
     "InputSpec",
     "Layout",
     "LogNormal",
@@ -69,6 +77,7 @@ __all__ = [
     "Sample",
     "SliceWarning",
     "Statics",
+    "StoreWriteError",
     "Study",
     "StudyMismatchError",
     "SweepInterrupted",

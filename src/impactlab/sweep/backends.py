@@ -10,6 +10,7 @@ waiting for ever.
 from __future__ import annotations
 
 import ctypes
+import errno
 import multiprocessing as mp
 import os
 import queue
@@ -27,6 +28,7 @@ from concurrent.futures import (
 )
 from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any
 
 from impactlab.sweep.chunks import ChunkResult, compute_chunk, set_numba_threads
@@ -235,3 +237,40 @@ def run_dask(
     finally:
         if own:
             cl.close()
+
+
+class StoreWriteError(OSError):
+    """Writing the store failed (disk full, quota, read-only, ...): the chunks stored before are
+    kept, and the same run again continues. ``str()``: one line saying so; ``errno``: the
+    cause's; ``__cause__``: the error itself (with its file)."""
+
+    def __init__(self, message: str, cause: OSError) -> None:
+        super().__init__(message)
+        self.errno = cause.errno
+
+    def __str__(self) -> str:
+        return str(self.args[0])
+
+
+#: errno -> (what happened, what to do) for a store that cannot be written.
+WRITE_ERRORS = {
+    errno.ENOSPC: ("no space left", "free space"),
+    errno.EDQUOT: ("disk quota exceeded", "free space (or raise the quota)"),
+    errno.EROFS: ("read-only file system", "make it writable (or choose another --out)"),
+}
+
+
+def write_error(exc: OSError, path: Path, stored: int | None, n_chunks: int) -> StoreWriteError:
+    """``exc`` while writing the store at ``path`` (``stored`` of ``n_chunks`` chunks stored;
+    None: while creating it) as one line that says what is kept and what to do."""
+    what, todo = WRITE_ERRORS.get(
+        exc.errno or 0, (exc.strerror or type(exc).__name__, "fix its cause")
+    )
+    kept = (
+        "while creating it: nothing stored yet"
+        if stored is None
+        else f"{stored} of {n_chunks} chunks stored; nothing stored is lost"
+    )
+    return StoreWriteError(
+        f"{what} writing {str(path)!r} ({kept}): {todo} and run the same command again", exc
+    )

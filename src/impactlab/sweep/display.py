@@ -24,7 +24,9 @@ from impactlab.sweep.inputs import MATERIAL_OVERRIDES, get_input
 
 __all__ = [
     "dimension_rows",
+    "no_result",
     "plot_unit",
+    "results_text",
     "run_throughput",
     "slice_note",
     "steady_throughput",
@@ -121,6 +123,8 @@ def throughput_text(stats: Any) -> str:
 
 
 def _rows(result: Any) -> Sequence[tuple[str, str]]:
+    from impactlab.sweep.summary import not_ok_text
+
     s = result.stats
     return (
         ("store", str(result.path)),
@@ -132,6 +136,8 @@ def _rows(result: Any) -> Sequence[tuple[str, str]]:
             f"{format_number(warm_up_s(s))} s" if s.chunks_computed else "- (nothing computed)",
         ),
         ("throughput", throughput_text(s)),
+        ("not ok (flags)", not_ok_text(s.flagged) if s.flagged else "- (no flags stored)"),
+        ("without a result", f"{no_result(s):,} case(s) (status > 0)"),
     )
 
 
@@ -139,6 +145,22 @@ def sweep_result_html(result: Any) -> str:
     """A finished sweep as a notebook table: its run numbers, then its study."""
     run = grid_html("SweepResult", ("", ""), _rows(result))
     return run + study_html(result.study)
+
+
+def results_text(stats: Any) -> str:
+    """``"; 183 case(s) not ok (beyond the tip: 183)"``, then ``"; 3 case(s) without a result
+    (status > 0)"`` where there are such cases; "" otherwise."""
+    from impactlab.sweep.summary import not_ok_text  # summary -> store -> study -> here
+
+    parts = [not_ok_text(stats.flagged)] if stats.not_ok else []
+    if no_result(stats):
+        parts.append(f"{no_result(stats):,} case(s) without a result (status > 0)")
+    return "".join(f"; {p}" for p in parts)
+
+
+def no_result(stats: Any) -> int:
+    """Cases of a run's store computed without a result (``stats.status``: a code > 0)."""
+    return sum(n for k, n in stats.status.items() if int(k.partition(":")[0]) > 0)
 
 
 # -- plots: units and the slice a figure shows -----------------------------------------------

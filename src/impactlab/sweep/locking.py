@@ -5,10 +5,13 @@ live process, or of another host, refuses a second writer. A lock whose text nam
 (empty or damaged: a writer killed between creating the file and writing its line) is stale
 once it is :data:`UNREADABLE_GRACE_S` old; younger, it may be a writer's that is writing its
 line right now, and is refused (as is a lock that cannot be read at all), with the file named.
+A store whose lock cannot be created (a read-only file system, no permission) is refused
+naming the store: it can still be read.
 """
 
 from __future__ import annotations
 
+import errno
 import os
 import socket
 import time
@@ -94,24 +97,43 @@ def acquire_lock(lock: Path, store: Path) -> None:
             write_lock(lock)
             return
         except FileExistsError:
-            host, pid = _holder(lock)
-            if f"{host} {pid}" == owner():
-                return  # already ours
-            if not host:  # empty, damaged or unreadable
-                st = _unreadable(lock, store)
-                if st is not None and _same_file(lock, st):
-                    lock.unlink(missing_ok=True)
-                continue
-            if stale(host, pid):
+            pass  # held, or left behind: below
+        except OSError as exc:
+            if exc.errno not in (errno.EROFS, errno.EACCES, errno.EPERM):
+                raise
+            raise ValueError(_unwritable(store, lock, exc)) from None
+        host, pid = _holder(lock)
+        if f"{host} {pid}" == owner():
+            return  # already ours
+        if not host:  # empty, damaged or unreadable
+            st = _unreadable(lock, store)
+            if st is not None and _same_file(lock, st):
                 lock.unlink(missing_ok=True)
-                continue
-            raise ValueError(
-                f"store {str(store)!r} is being written by process {pid} on {host!r}; "
-                f"wait for it, or delete {str(lock)!r} if that process is gone"
-            ) from None
+            continue
+        if stale(host, pid):
+            lock.unlink(missing_ok=True)
+            continue
+        raise ValueError(
+            f"store {str(store)!r} is being written by process {pid} on {host!r}; "
+            f"wait for it, or delete {str(lock)!r} if that process is gone"
+        ) from None
     raise ValueError(
         f"store {str(store)!r}: another process keeps taking its lock {str(lock)!r}; wait for "
         "it, or delete the file if no process is writing the store"
+    )
+
+
+def _unwritable(store: Path, lock: Path, exc: OSError) -> str:
+    """Why a run cannot write the store ``store`` whose ``lock`` it cannot create."""
+    why = (
+        "is on a read-only file system"
+        if exc.errno == errno.EROFS
+        else f"cannot be written by this user ({exc.strerror or exc})"
+    )
+    return (
+        f"store {str(store)!r} {why}: a run cannot write it (not even its lock file "
+        f"{str(lock)!r}); impactlab sweep info, export and plot read it as it is (open_sweep in "
+        f"Python); to compute more, copy it to a writable place and run the study there"
     )
 
 

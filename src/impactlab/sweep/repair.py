@@ -13,7 +13,9 @@ from __future__ import annotations
 
 import json
 import shutil
+from collections.abc import Mapping
 from pathlib import Path
+from typing import Any
 
 import zarr
 
@@ -32,7 +34,18 @@ from impactlab.sweep.storebuild import (
 from impactlab.sweep.study import Study
 from impactlab.sweep.study_record import recorded_study
 
-__all__ = ["mismatch_message", "repair_metadata", "restore_study_record", "root_mismatch"]
+__all__ = [
+    "mismatch_message",
+    "repair_metadata",
+    "restore_study_record",
+    "root_mismatch",
+    "study_differences",
+]
+
+#: At most this many differences of two studies are named (then "and N more").
+SHOWN_DIFFERENCES = 5
+#: Keys of a study's ``[study]`` table that are no part of its hash (they change no result).
+_UNHASHED = ("description", "max_cases")
 
 
 def mismatch_message(
@@ -49,11 +62,89 @@ def mismatch_message(
             f"results of two versions; finish it with the impactlab that began it, run with "
             f"--restart to discard it and start fresh, or choose another --out (another store path)"
         )
-    return (
-        f"store {str(path)!r} holds a different study (hash {old}, this study "
-        f"{meta.study_hash}); run with --restart (restart=True in Python) to discard it and "
-        f"start fresh, or choose another --out (another store path)"
+    try:
+        record = json.loads((path / META / "study.json").read_text())
+        diff = study_differences(record, json.loads(json.dumps(study.to_dict())))
+    except (OSError, ValueError, TypeError, AttributeError):  # no readable record
+        diff = []
+    if len(diff) > SHOWN_DIFFERENCES:
+        more = len(diff) - SHOWN_DIFFERENCES + 1
+        diff = [*diff[: SHOWN_DIFFERENCES - 1], f"and {more} more"]
+    what = (
+        f"({'; '.join(diff)}; the store's -> this study's, in SI units): its chunks cannot "
+        "serve this study; undo the changes to resume it, "
+        if diff
+        else f"(hash {old}, this study {meta.study_hash}); "
     )
+    return (
+        f"store {str(path)!r} holds a different study {what}run with --restart (restart=True "
+        f"in Python) to discard it and start fresh, or choose another --out (another store path)"
+    )
+
+
+def study_differences(old: Mapping[str, Any], new: Mapping[str, Any]) -> list[str]:
+    """What differs between two studies' canonical forms (``Study.to_dict()``, as JSON reads
+    it), ``"old -> new"``: ``"chunk_size: 65536 -> 32768"``, ``"grid.mu stop: 0.6 -> 0.7"``,
+    ``"fixed.vy: -1.41 -> not set"``; the description and ``max_cases`` (no part of the
+    study's hash) left out."""
+    a, b = _flat(old), _flat(new)
+    for key in (*_UNHASHED, "grid_order"):
+        a.pop(key, None)
+        b.pop(key, None)
+    out = [_change(k, a.get(k), b.get(k)) for k in sorted({*a, *b}, key=_order) if _differ(a, b, k)]
+    order_a, order_b = list(old.get("grid_order", ())), list(new.get("grid_order", ()))
+    if order_a != order_b and sorted(order_a) == sorted(order_b):  # only reordered
+        out.append(f"grid order: {', '.join(order_a)} -> {', '.join(order_b)}")
+    return out
+
+
+def _flat(d: Mapping[str, Any], prefix: str = "") -> dict[str, Any]:
+    """``d`` as dotted keys (``grid.mu``, ``sample.mu.low``); the ``[study]`` table's keys bare."""
+    out: dict[str, Any] = {}
+    for k, v in d.items():
+        key = f"{prefix}{k}" if prefix or k != "study" else ""
+        if isinstance(v, Mapping):
+            out |= _flat(v, f"{key}." if key else "")
+        else:
+            out[key] = v
+    return out
+
+
+#: The order the differences are named in: the ``[study]`` table's keys, then these tables.
+_GROUPS = ("", "grid", "fixed", "sample", "engine", "law_params")
+
+
+def _order(key: str) -> tuple[int, str]:
+    head = key.partition(".")[0] if "." in key else ""
+    return (_GROUPS.index(head) if head in _GROUPS else len(_GROUPS), key)
+
+
+def _differ(a: Mapping[str, Any], b: Mapping[str, Any], key: str) -> bool:
+    return key not in a or key not in b or a[key] != b[key]
+
+
+def _text(v: Any) -> str:
+    if v is None:
+        return "not set"
+    if isinstance(v, float):
+        return f"{v:g}"
+    if isinstance(v, list):
+        return ", ".join(_text(x) for x in v) if len(v) <= 4 else f"{len(v)} values"
+    return str(v)
+
+
+def _change(key: str, old: Any, new: Any) -> str:
+    """One difference: a grid axis by its start, stop or number of values."""
+    if isinstance(old, list) and isinstance(new, list) and len(old) > 4 and len(new) > 4:
+        if len(old) != len(new):
+            return f"{key}: {len(old)} -> {len(new)} values"
+        ends = [
+            f"{key} {which}: {_text(old[i])} -> {_text(new[i])}"
+            for which, i in (("start", 0), ("stop", -1))
+            if old[i] != new[i]
+        ]
+        return "; ".join(ends) or f"{key}: values between {_text(old[0])} and {_text(old[-1])}"
+    return f"{key}: {_text(old)} -> {_text(new)}"
 
 
 def root_mismatch(path: Path, study: Study, meta: StoreMeta) -> str | None:

@@ -27,6 +27,7 @@ from __future__ import annotations
 import dataclasses
 import sys
 import time
+import warnings
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -37,13 +38,15 @@ from impactlab.dynamics.input_checks import check_partial_slip_rtol
 from impactlab.sweep.backends import (
     BACKENDS,
     DEFAULT_WORKER_TIMEOUT,
+    WRITE_ERRORS,
     Job,
     run_dask,
     run_processes,
     run_threads,
+    write_error,
 )
 from impactlab.sweep.chunks import ChunkResult
-from impactlab.sweep.display import sweep_result_html
+from impactlab.sweep.display import results_text, sweep_result_html
 from impactlab.sweep.engine import (
     ENGINE,
     Evaluator,
@@ -58,6 +61,7 @@ from impactlab.sweep.store import StoreMeta, SweepStore, open_sweep
 from impactlab.sweep.study import Study, load_study
 from impactlab.sweep.study_meta import category_values, store_meta
 from impactlab.sweep.study_record import with_recorded_laws
+from impactlab.sweep.summary import not_ok_text, result_counts
 
 
 @dataclass
@@ -88,6 +92,18 @@ class SweepStats:
     first_task_s: dict[str, float] = field(default_factory=dict)
     #: per worker: cases of its first task (``sweep.display.steady_throughput`` leaves them out)
     first_task_cases: dict[str, int] = field(default_factory=dict)
+    #: the store's cases per status once the run ended, keyed "<code>: <message>"
+    #: (``summary.status_counts``: ``"0: finished"``, the engine ran the case to its end)
+    status: dict[str, int] = field(default_factory=dict)
+    #: the store's cases per result flag once the run ended, with "flagged" (any flag) and
+    #: "not ok" (a flag that is not advisory) (``summary.flag_counts``); {} without ``flags``
+    flagged: dict[str, int] = field(default_factory=dict)
+
+    @property
+    def not_ok(self) -> int:
+        """Cases of the store whose result is not ok: a flag that is not advisory (energy gain,
+        beyond the tip, ...; ``flagged`` names them)."""
+        return int(self.flagged.get("not ok", 0))
 
     @property
     def throughput(self) -> float:
@@ -104,7 +120,7 @@ class SweepStats:
             f"this run: {_count(self.cases_computed, 'case')} in "
             f"{_count(self.chunks_computed, 'chunk')} computed, {self.chunks_before} already "
             f"stored{repaired}; wall {format_number(self.wall_s)} s{rate}; "
-            f"backend={self.backend!r}, workers={self.workers})"
+            f"backend={self.backend!r}, workers={self.workers}{results_text(self)})"
         )
 
 
@@ -136,12 +152,17 @@ class SweepResult:
             f"SweepResult(path={str(self.path)!r}, study={self.study.name!r}, "
             f"{_count(st.n_cases, 'case')} in {_count(st.n_chunks, 'chunk')}; this run: "
             f"{_count(st.cases_computed, 'case')} computed in {format_number(st.wall_s)} s, "
-            f"backend={st.backend!r})"
+            f"backend={st.backend!r}{results_text(st)})"
         )
 
     @property
     def complete(self) -> bool:
         return len(SweepStore(self.path).done_chunks()) == self.study.layout.n_chunks
+
+
+class FlaggedCasesWarning(UserWarning):
+    """A sweep left cases whose result is not ok (a flag that is not advisory): stored, but not
+    plain success (``SweepStats.flagged`` counts them)."""
 
 
 class SweepInterrupted(KeyboardInterrupt):
@@ -231,6 +252,10 @@ def run_sweep(
     max_cases : refuse a study of more cases than this (default: the study's ``max_cases``).
     worker_timeout : Dask: seconds without any worker on the cluster before the sweep stops with
         an error (the finished chunks stay stored).
+
+    Warns once (``FlaggedCasesWarning``) when the store holds cases not ok (``stats.flagged``).
+    A store that cannot be written (a full disk) raises ``backends.StoreWriteError`` (an
+    OSError) saying how many chunks are stored; the same call then continues.
     """
     st = load_study(study, max_cases=max_cases)
     path = Path(store) if store is not None else Path(f"{st.name}.zarr")
@@ -251,7 +276,13 @@ def run_sweep(
         )
     sstore = SweepStore(path)
     try:
-        done = sstore.prepare(st, meta, restart=restart)
+        try:
+            done = sstore.prepare(st, meta, restart=restart)
+        except OSError as exc:
+            if exc.errno not in WRITE_ERRORS:
+                raise
+            done_now = len(sstore.done_chunks()) if sstore.exists() else None
+            raise write_error(exc, path, done_now, st.layout.n_chunks) from exc
         damaged = sstore.verify(done)
         if damaged:
             _note(f"{path}: damaged, computing again: {describe(damaged)}", quiet)
@@ -265,11 +296,22 @@ def run_sweep(
             chunks_repaired=len(damaged),
         )
         intact = done - set(damaged)
-        return _run_store(
+        res = _run_store(
             st, ev, _stored_meta(sstore, meta), sstore, intact, be, stats, quiet, progress
         )
+        stats.status, stats.flagged = result_counts(path)  # the store's, after the run
     finally:
         sstore.release()
+    if stats.not_ok:
+        warnings.warn(
+            FlaggedCasesWarning(
+                f"sweep {st.name!r} in {str(path)!r}: {not_ok_text(stats.flagged)}: stored, but "
+                f"not plain success (impactlab.flags.ResultFlag); the ok cases: (ds.status == 0) "
+                f"& ((ds.flags & ~ADVISORY_FLAGS) == 0); impactlab sweep info {path} counts them"
+            ),
+            stacklevel=2,
+        )
+    return res
 
 
 def _stored_meta(sstore: SweepStore, meta: StoreMeta) -> StoreMeta:
@@ -310,7 +352,10 @@ def _run_store(
     def sink(res: ChunkResult, advance: Callable[[int], None]) -> None:
         tw = time.perf_counter()
         outputs = with_derived(res.outputs, meta.outputs)  # derived outputs: computed here
-        sstore.write_chunk(writer, st, res.index, outputs, res.status)
+        try:
+            sstore.write_chunk(writer, st, res.index, outputs, res.status)
+        except OSError as exc:  # a full disk: one line, the chunks stored are kept
+            raise write_error(exc, path, len(sstore.done_chunks()), lay.n_chunks) from exc
         stats.write_s += time.perf_counter() - tw
         stats.chunks_computed += 1
         stats.cases_computed += res.n_cases

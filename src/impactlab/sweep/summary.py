@@ -11,6 +11,7 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+import xarray as xr
 import zarr
 
 from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
@@ -18,7 +19,7 @@ from impactlab.sweep.dimensions import Layout
 from impactlab.sweep.inputs import get_input
 from impactlab.sweep.integrity import describe
 from impactlab.sweep.slabs import slabs, store_chunks
-from impactlab.sweep.status import STATUS_BAD_LAW, STATUS_NOT_RUN
+from impactlab.sweep.status import STATUS_BAD_LAW, STATUS_NOT_RUN, mask_undone
 from impactlab.sweep.store import SweepStore, open_sweep
 
 #: At most this many cases of a store are in memory at a time while they are counted.
@@ -32,16 +33,23 @@ def _blocks(ds: Any, name: str) -> Iterator[np.ndarray]:
         yield np.asarray(var[slab].values).ravel()
 
 
+#: The label of status 0 in the counts: the engine ran the case to its end (whether its result
+#: is ok, the flags say: the engine's own message "ok" would read as that).
+FINISHED = "finished"
+
+
 def _counts(blocks: Iterable[np.ndarray], msgs: Mapping[str, str]) -> dict[str, int]:
     tally: Counter[int] = Counter()
     for values in blocks:
         codes, counts = np.unique(values, return_counts=True)
         tally.update({int(c): int(n) for c, n in zip(codes, counts, strict=True)})
-    return {f"{c}: {msgs.get(str(c), '?')}": tally[c] for c in sorted(tally)}
+    labels = {**msgs, "0": FINISHED}
+    return {f"{c}: {labels.get(str(c), '?')}": tally[c] for c in sorted(tally)}
 
 
 def status_counts(ds: Any) -> dict[str, int]:
-    """Number of cases per status, keyed "<code>: <message>" (code 0: ok); a store is read a
+    """Number of cases per status, keyed "<code>: <message>" (``"0: finished"``: the engine ran
+    the case to its end; the flags say whether its result is ok); a store is read a
     block at a time (``COUNT_BLOCK_CASES``). The message of the cases the contact law refused
     (``STATUS_BAD_LAW``) ends with the law's own words for the first of them
     (:func:`law_words`)."""
@@ -167,14 +175,22 @@ def format_flag_counts(counts: Mapping[str, int]) -> str:
     if "not ok" not in counts:
         parts = ", ".join(f"{k}{' (advisory)' * (k in _ADVISORY)}: {v:,}" for k, v in flags.items())
         return f"{counts['flagged']:,} case(s) ({parts})"
-    bad = ", ".join(f"{k}: {v:,}" for k, v in flags.items() if k not in _ADVISORY)
-    text = f"{counts['not ok']:,} case(s) not ok" + (f" ({bad})" if bad else "")
+    text = not_ok_text(counts)
     advisory = ", ".join(f"{k}: {v:,}" for k, v in flags.items() if k in _ADVISORY)
     if advisory:
         text += (
             f"; advisory (the result stays ok): {advisory}; {counts['flagged']:,} flagged in all"
         )
     return text
+
+
+def not_ok_text(counts: Mapping[str, int]) -> str:
+    """``"58 case(s) not ok (energy gain: 15, gravity-dominated: 48)"``: the cases of
+    :func:`flag_counts`' ``counts`` with a flag that is not advisory, and those flags."""
+    bad = ", ".join(
+        f"{k}: {v:,}" for k, v in counts.items() if k not in TOTALS and v and k not in _ADVISORY
+    )
+    return f"{counts.get('not ok', 0):,} case(s) not ok" + (f" ({bad})" if bad else "")
 
 
 def _intact_values(path: Path, name: str, damaged: set[int], done: set[int]) -> np.ndarray:
@@ -229,6 +245,16 @@ def store_info(path: str | Path) -> dict[str, Any]:
         flags = _intact_values(p, "flags", set(damaged), marked)
         info["flagged"] = format_flag_counts(flag_counts(flags, ds["flags"].attrs))
     return info
+
+
+def result_counts(path: str | Path) -> tuple[dict[str, int], dict[str, int]]:
+    """:func:`status_counts` and :func:`dataset_flag_counts` ({} for a store without ``flags``)
+    of the store at ``path``, a block at a time, for the run that has just written (or
+    checked) it: neither its metadata nor its chunks are checked again."""
+    ds = xr.open_zarr(str(path), consolidated=False)
+    ds = mask_undone(ds, SweepStore(Path(path)).done_chunks())
+    flagged = dataset_flag_counts(ds) if "flags" in ds.data_vars else {}
+    return status_counts(ds), flagged
 
 
 def incomplete_note(path: str | Path) -> str | None:
