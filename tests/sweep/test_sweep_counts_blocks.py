@@ -69,4 +69,7 @@ def test_an_incomplete_store_counts_its_undone_cases(tmp_path, monkeypatch) -> N
     monkeypatch.setattr(summary, "COUNT_BLOCK_CASES", 4)
     status = store_info(store)["status"]
     assert sum(status.values()) == 97
-    assert status["0: finished"] == 30 and sum(n for k, n in status.items() if k.startswith("-1:")) == 67
+    assert (
+        status["0: finished"] == 30
+        and sum(n for k, n in status.items() if k.startswith("-1:")) == 67
+    )

@@ -12,13 +12,14 @@ compiling) the engine's compiled functions once; ``steady_throughput`` leaves th
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from typing import Any
 
 import numpy as np
 
 from impactlab._display import display_unit, format_number, format_value
 from impactlab._html import axis_row, grid_html, value_range
+from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
 from impactlab.sweep.dimensions import SAMPLE_DIM
 from impactlab.sweep.inputs import MATERIAL_OVERRIDES, get_input
 
@@ -113,6 +114,26 @@ def run_throughput(stats: Any) -> float | None:
     return float(stats.cases_computed / stats.wall_s)
 
 
+#: The keys of ``summary.flag_counts`` that count cases, not one flag: "flagged" (any flag) and
+#: "not ok" (a flag that is not advisory: not plain success).
+TOTALS = ("flagged", "not ok")
+
+
+#: The names of the advisory flags (``ADVISORY_FLAGS``: the result stays ``ok``), as counted.
+ADVISORY_NAMES = {messages(f)[0].split(":")[0] for f in ResultFlag if f & ADVISORY_FLAGS}
+
+
+def not_ok_text(counts: Mapping[str, int]) -> str:
+    """``"58 case(s) not ok (energy gain: 15, gravity-dominated: 48)"``: the cases of
+    :func:`summary.flag_counts`' ``counts`` with a flag that is not advisory, and those flags."""
+    bad = ", ".join(
+        f"{k}: {v:,}"
+        for k, v in counts.items()
+        if k not in TOTALS and v and k not in ADVISORY_NAMES
+    )
+    return f"{counts.get('not ok', 0):,} case(s) not ok" + (f" ({bad})" if bad else "")
+
+
 def throughput_text(stats: Any) -> str:
     """``"59813 impacts/s (cases computed / wall time)"``: :func:`run_throughput`
     and what it is; ``"- (nothing computed)"``."""
@@ -123,8 +144,6 @@ def throughput_text(stats: Any) -> str:
 
 
 def _rows(result: Any) -> Sequence[tuple[str, str]]:
-    from impactlab.sweep.summary import not_ok_text
-
     s = result.stats
     return (
         ("store", str(result.path)),
@@ -150,8 +169,6 @@ def sweep_result_html(result: Any) -> str:
 def results_text(stats: Any) -> str:
     """``"; 183 case(s) not ok (beyond the tip: 183)"``, then ``"; 3 case(s) without a result
     (status > 0)"`` where there are such cases; "" otherwise."""
-    from impactlab.sweep.summary import not_ok_text  # summary -> store -> study -> here
-
     parts = [not_ok_text(stats.flagged)] if stats.not_ok else []
     if no_result(stats):
         parts.append(f"{no_result(stats):,} case(s) without a result (status > 0)")

@@ -16,6 +16,7 @@ import zarr
 
 from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
 from impactlab.sweep.dimensions import Layout
+from impactlab.sweep.display import ADVISORY_NAMES, TOTALS, not_ok_text
 from impactlab.sweep.inputs import get_input
 from impactlab.sweep.integrity import describe
 from impactlab.sweep.slabs import slabs, store_chunks
@@ -141,11 +142,6 @@ def _flag_bits(attrs: Mapping[str, Any]) -> list[tuple[int, str]]:
     ]
 
 
-#: The keys of ``flag_counts`` that count cases, not one flag: "flagged" (any flag) and
-#: "not ok" (a flag that is not advisory: not plain success).
-TOTALS = ("flagged", "not ok")
-
-
 def flag_counts(flags: np.ndarray, attrs: Mapping[str, Any]) -> dict[str, int]:
     """Number of cases carrying each result flag (``impactlab.flags.ResultFlag``), by name;
     "flagged": cases with any flag; "not ok": cases with a flag that is not advisory (not
@@ -159,10 +155,6 @@ def flag_counts(flags: np.ndarray, attrs: Mapping[str, Any]) -> dict[str, int]:
     return out
 
 
-#: The names of the advisory flags (``ADVISORY_FLAGS``: the result stays ``ok``), as counted.
-_ADVISORY = {messages(f)[0].split(":")[0] for f in ResultFlag if f & ADVISORY_FLAGS}
-
-
 def format_flag_counts(counts: Mapping[str, int]) -> str:
     """``"58 case(s) not ok (energy gain: 15, gravity-dominated: 48); advisory (the result
     stays ok): law extrapolated: 74; 80 flagged in all"``: the cases not ok first, with their
@@ -173,24 +165,17 @@ def format_flag_counts(counts: Mapping[str, int]) -> str:
         return "none"
     flags = {k: v for k, v in counts.items() if k not in TOTALS and v}
     if "not ok" not in counts:
-        parts = ", ".join(f"{k}{' (advisory)' * (k in _ADVISORY)}: {v:,}" for k, v in flags.items())
+        parts = ", ".join(
+            f"{k}{' (advisory)' * (k in ADVISORY_NAMES)}: {v:,}" for k, v in flags.items()
+        )
         return f"{counts['flagged']:,} case(s) ({parts})"
     text = not_ok_text(counts)
-    advisory = ", ".join(f"{k}: {v:,}" for k, v in flags.items() if k in _ADVISORY)
+    advisory = ", ".join(f"{k}: {v:,}" for k, v in flags.items() if k in ADVISORY_NAMES)
     if advisory:
         text += (
             f"; advisory (the result stays ok): {advisory}; {counts['flagged']:,} flagged in all"
         )
     return text
-
-
-def not_ok_text(counts: Mapping[str, int]) -> str:
-    """``"58 case(s) not ok (energy gain: 15, gravity-dominated: 48)"``: the cases of
-    :func:`flag_counts`' ``counts`` with a flag that is not advisory, and those flags."""
-    bad = ", ".join(
-        f"{k}: {v:,}" for k, v in counts.items() if k not in TOTALS and v and k not in _ADVISORY
-    )
-    return f"{counts.get('not ok', 0):,} case(s) not ok" + (f" ({bad})" if bad else "")
 
 
 def _intact_values(path: Path, name: str, damaged: set[int], done: set[int]) -> np.ndarray:
