@@ -1,7 +1,8 @@
 """The dent map keeps every cap's depth: a cap whose law unloads with R_r <= R (no concave
-solution of 1/R_r = 1/R - 1/R_d) is drawn at the tip's radius, one whose relation puts its rim
-beyond the contact is brought to the contact radius, and the DentMap says so; the depth of the
-dent is the law's (``delta_p`` of one loading, a drop's ``dent_depth``)."""
+solution of 1/R_r = 1/R - 1/R_d) or whose relation puts its rim beyond the contact is drawn with
+the widest contact radius as rim (the relation's limit R_r -> R+, continuous across R_r = R),
+and the DentMap says so; the depth of the dent is the law's (``delta_p`` of one loading, a
+drop's ``dent_depth``)."""
 
 from __future__ import annotations
 
@@ -19,12 +20,7 @@ from impactlab.contact.kernel_arrays import loading_contact_radius_array
 from impactlab.contact.kernels import P_R
 from impactlab.dynamics import plotting
 from impactlab.dynamics.core.batch import residual_caps
-from impactlab.dynamics.dent import (
-    AT_CONTACT_RADIUS,
-    AT_TIP_RADIUS,
-    BY_RELATION,
-    residual_cap_geometry,
-)
+from impactlab.dynamics.dent import AT_CONTACT_RADIUS, BY_RELATION, residual_cap_geometry
 
 JG_COPPER = {"law": "jackson-green", "angle": 0.6, "velocity": (0.0, -5.0)}
 SPHERE_PMMA = {"law": "ghaednia", "velocity": (0.0, -1.0)}
@@ -40,6 +36,18 @@ def sphere_pmma() -> il.ImpactResult:
     return il.simulate(il.Sphere(radius=0.005, material="aisi-52100"), "pmma", **SPHERE_PMMA)
 
 
+def _contact_radius(law: int, p: np.ndarray, delta: np.ndarray) -> np.ndarray:
+    """a_c [m]: the widest of the loading, unloading and undeformed-flat crossing radii."""
+    dr, rr = residual_caps(law, p, delta)
+    with np.errstate(invalid="ignore"):
+        a_unl = np.sqrt(rr * (delta - dr))
+    a_unl = np.where(np.isfinite(a_unl), a_unl, 0.0)
+    R = float(p[P_R])
+    return np.maximum.reduce(
+        [loading_contact_radius_array(law, p, delta), a_unl, np.sqrt(2 * R * delta)]
+    )
+
+
 @pytest.mark.parametrize("name", ["jg_copper", "sphere_pmma"])
 def test_deepest_cap_with_no_concave_solution_keeps_its_depth(name, request) -> None:
     r = request.getfixturevalue(name)
@@ -47,28 +55,33 @@ def test_deepest_cap_with_no_concave_solution_keeps_its_depth(name, request) -> 
     assert r.ok and r.delta_p > 0
     assert d.max_depth == pytest.approx(r.delta_p, rel=1e-12)
     assert -d.height.min() == pytest.approx(r.delta_p, rel=1e-2)
-    # drawn at the tip's radius: a rim sqrt(2 R delta_p), the narrowest of that depth
-    R = float(r._law_params[P_R])
-    assert d.width == pytest.approx(2.0 * math.sqrt(2.0 * R * r.delta_p), rel=1e-9)
-    assert d.caps_at_tip_radius >= 1 and "deepest among them" in d.note
-    assert "tip's radius" in d.note and "caps_at_tip_radius" in repr(d)
+    # drawn at the contact radius of its peak: the relation's limit R_r -> R+
+    p = np.asarray(r._law_params, dtype=np.float64)
+    law, R = int(r._law_id), float(p[P_R])
+    peak = np.array([float(np.max(r.history.penetration))])
+    _, rr = residual_caps(law, p, peak)
+    assert rr[0] <= R
+    assert d.width == pytest.approx(2.0 * _contact_radius(law, p, peak)[0], rel=1e-9)
+    assert d.width > 2.0 * math.sqrt(2.0 * R * r.delta_p)
+    assert d.caps_at_contact_radius >= 1 and "deepest among them" in d.note
+    assert "contact radius" in d.note and "caps_at_contact_radius" in repr(d)
 
 
 @pytest.mark.parametrize(
-    ("flat", "law", "v", "at_tip"),
+    ("flat", "law", "v", "deepest_bounded"),
     [
         ("copper-ofhc", "jackson-green", 5.0, True),
         ("pmma", "ghaednia", 1.0, False),
         ("aisi-52100", "ghaednia", 1.0, False),
     ],
 )
-def test_drop_dent_depth_is_its_dent_map_depth(flat, law, v, at_tip) -> None:
+def test_drop_dent_depth_is_its_dent_map_depth(flat, law, v, deepest_bounded) -> None:
     d = il.simulate_drop(il.FlexibleRod.paper(), flat, law=law, angle=0.6, velocity=(0.0, -v))
     dm = d.dent()
     assert d.ok and d.dent_depth > 0
     assert dm.max_depth == pytest.approx(d.dent_depth, rel=1e-12)
-    assert (dm.caps_at_tip_radius >= 1) == at_tip
-    assert bool(dm.note) == bool(dm.caps_at_tip_radius or dm.caps_at_contact_radius)
+    assert ("deepest among them" in dm.note) == deepest_bounded
+    assert bool(dm.note) == bool(dm.caps_at_contact_radius)
 
 
 def test_cap_geometry_bounds(jg_copper: il.ImpactResult) -> None:
@@ -80,33 +93,53 @@ def test_cap_geometry_bounds(jg_copper: il.ImpactResult) -> None:
     caps = residual_cap_geometry(law, p, delta)
     assert np.array_equal(caps.delta_r, dr)
     dent = dr > 0
-    assert np.all(caps.R_d[dent] >= R * (1 - 1e-12)) and np.all(caps.a_d[dent] > 0)
-    # R_r <= R: the tip's radius
-    tip = dent & (rr <= R)
-    assert tip.any() and np.all(caps.bound[tip] == AT_TIP_RADIUS) and np.all(caps.R_d[tip] == R)
+    assert np.all(caps.R_d[dent] >= R) and np.all(caps.a_d[dent] > 0)
+    a_c = _contact_radius(law, p, delta)
     # the rim never passes the widest circle the tip touched
-    a_c = np.maximum.reduce(
-        [
-            loading_contact_radius_array(law, p, delta),
-            np.sqrt(rr * (delta - dr)),
-            np.sqrt(2 * R * delta),
-        ]
-    )
     assert np.all(caps.a_d[dent] <= a_c[dent] * (1 + 1e-6))
-    # R_r just above R: the relation's R_d -> inf, the cap brought to the contact radius
-    near = dent & (rr > R) & (rr < 1.01 * R)
-    assert near.any() and np.all(caps.bound[near] == AT_CONTACT_RADIUS)
+    # R_r <= R (no concave solution) and R_r just above R (the relation's R_d -> inf): a_c
     with np.errstate(divide="ignore", invalid="ignore"):
         a_rel = np.sqrt(2 * R * rr / (rr - R) * dr)
-    assert np.all(a_rel[near] > 5 * a_c[near])  # the relation's rim: far beyond the contact
-    assert np.all(caps.a_d[near] == a_c[near])
+    near = dent & (rr > R) & (rr < 1.01 * R)
+    assert near.any() and np.all(a_rel[near] > 5 * a_c[near])  # the relation's rim: far out
+    below = dent & (rr <= R)
+    for sel in (near, below):
+        assert sel.any() and np.all(caps.bound[sel] == AT_CONTACT_RADIUS)
+        assert np.all(caps.a_d[sel] == a_c[sel])
+        np.testing.assert_allclose(caps.R_d[sel], a_c[sel] ** 2 / (2 * dr[sel]), rtol=1e-15)
     # elsewhere the relation itself, unchanged
     kept = dent & (rr > R) & (a_rel <= a_c)
     assert kept.any() and np.all(caps.bound[kept] == BY_RELATION)
     assert np.array_equal(caps.R_d[kept], R * rr[kept] / (rr[kept] - R))
 
 
-def test_no_recovery_takes_the_tip_radius() -> None:
+def test_rim_is_continuous_where_r_r_crosses_r(jg_copper: il.ImpactResult) -> None:
+    p = np.asarray(jg_copper._law_params, dtype=np.float64)
+    law, R = int(jg_copper._law_id), float(p[P_R])
+    delta = np.linspace(100.40e-6, 100.48e-6, 8001)  # steps of 1e-11 m
+    _, rr = residual_caps(law, p, delta)
+    assert rr[0] > R and rr[-1] < R  # R_r crosses R inside
+    caps = residual_cap_geometry(law, p, delta)
+    assert np.max(np.abs(np.diff(caps.a_d)) / caps.a_d[1:]) < 1e-6
+    assert np.max(np.abs(np.diff(caps.R_d)) / caps.R_d[1:]) < 1e-6
+    # over the whole range the rim grows with the interference (no jump at R_r = R)
+    wide = np.linspace(2e-5, 4e-4, 20001)
+    a_d = residual_cap_geometry(law, p, wide).a_d
+    assert np.all(np.diff(a_d) >= -1e-6 * a_d[1:])
+
+
+def test_width_grows_with_impact_speed() -> None:
+    speeds = (0.6, 0.7, 0.8, 0.9, 1.0, 1.1, 1.3, 1.4, 1.6)
+    widths = []
+    for v in speeds:
+        r = il.simulate(
+            il.Rod.paper(), "copper-ofhc", law="jackson-green", angle=0.6, velocity=(0.0, -v)
+        )
+        widths.append(r.dent().width)
+    assert np.all(np.diff(widths) > 0), dict(zip(speeds, widths, strict=True))
+
+
+def test_cap_without_loading_is_empty() -> None:
     r = il.simulate(il.Rod.paper(), "copper-ofhc", **JG_COPPER)
     p = np.asarray(r._law_params, dtype=np.float64)
     caps = residual_cap_geometry(int(r._law_id), p, np.array([0.0, 2e-4]))
@@ -144,9 +177,13 @@ def test_max_depth_is_delta_p_for_every_law() -> None:
         where = f"{law}, {label} on {flat} at {v} m/s"
         # the history's recorded peak may pass delta_max by a few 1e-8 of it
         assert d.max_depth == pytest.approx(r.delta_p, rel=1e-5), where
-        assert d.width >= 2 * math.sqrt(2 * float(r._law_params[P_R]) * d.max_depth) * (1 - 1e-9)
+        R = float(r._law_params[P_R])
+        assert d.width >= 2 * math.sqrt(2 * R * d.max_depth) * (1 - 1e-9)
+        # no cap narrower than the tip: R_d >= R, at the contact radius too (a_c^2 >= 2 R delta)
+        caps = residual_cap_geometry(r._law_id, r._law_params, r.history.penetration)
+        assert np.all(caps.R_d[caps.delta_r > 0] >= R), where
         assert np.all(d.height <= 0.0) and d.height.min() < 0.0, where
-        assert bool(d.note) == bool(d.caps_at_tip_radius or d.caps_at_contact_radius), where
+        assert bool(d.note) == bool(d.caps_at_contact_radius), where
     assert {"ghaednia", "jackson-green", "thornton", "brake", "kogut-komvopoulos"} <= plastic
 
 
@@ -184,7 +221,7 @@ def test_paper_dent_is_unchanged() -> None:
     d = r.dent(nx=121, ny=61)
     assert d.max_depth == pytest.approx(62e-6, abs=0.5e-6)
     assert d.width == pytest.approx(2.14e-3, abs=0.005e-3)
-    assert d.caps_at_tip_radius == 0 and d.caps_at_contact_radius == 0 and d.note == ""
+    assert d.caps_at_contact_radius == 0 and d.note == ""
     caps = residual_cap_geometry(r._law_id, r._law_params, r.history.penetration)
     assert np.all(caps.bound == BY_RELATION)
     assert caps.R_d[np.argmax(caps.delta_r)] == pytest.approx(9.3e-3, abs=0.05e-3)
@@ -195,4 +232,4 @@ def test_paper_dent_is_unchanged() -> None:
 def test_plot_dent_names_the_bounded_caps(jg_copper: il.ImpactResult) -> None:
     fig = plotting.plot_dent(jg_copper)
     title = fig.axes[0].get_title()
-    assert "dent: depth 559 um" in title and "at the tip's radius" in title
+    assert "dent: depth 559 um" in title and "at the contact radius" in title

@@ -9,17 +9,15 @@ the sphere R and the residual dent of radius R_d unload with the relative radius
     1 / R_r = 1 / R - 1 / R_d   ->   R_d = R R_r / (R_r - R)   (R_r > R).
 
 The residual cap is approximated by its paraboloid, h_t(x, y) = -delta_r + ((x - x_c)^2 +
-y^2) / (2 R_d), over its rim radius a_d = sqrt(2 R_d delta_r). Two bounds keep every cap
-(with its depth delta_r) on the flat:
-
-- elastic recovery only flattens the tip's imprint, so R_d >= R; where the law's R_r <= R
-  the relation has no concave solution and the cap takes the tip's own radius, R_d = R: the
-  narrowest cap of that depth (``AT_TIP_RADIUS``);
-- the relation gives the residual surface inside the contact only; a rim beyond the widest
-  circle the tip touched, a_c = max(a(delta), sqrt(R_r (delta - delta_r)), sqrt(2 R delta))
-  (loading and unloading contact radii, the tip's crossing of the undeformed flat), as when
-  R_r is just above R (R_d -> inf), is brought to a_c: R_d = a_c^2 / (2 delta_r) >= R
-  (``AT_CONTACT_RADIUS``).
+y^2) / (2 R_d), over its rim radius a_d = sqrt(2 R_d delta_r). The relation gives the
+residual surface inside the contact only, and the model has no pile-up, so no rim passes the
+widest circle the tip touched, a_c = max(a(delta), sqrt(R_r (delta - delta_r)), sqrt(2 R
+delta)) (loading and unloading contact radii, the tip's crossing of the undeformed flat). As
+R_r -> R+ the relation's R_d -> inf and its rim passes a_c; for R_r <= R (some laws'
+unloading stiffness) it has no concave solution, and its limit R_r -> R+ is kept. Such a cap
+keeps its depth delta_r and is drawn with a_d = a_c, R_d = a_c^2 / (2 delta_r)
+(``AT_CONTACT_RADIUS``), continuous in delta across R_r = R; R_d >= R since a_c^2 >= 2 R
+delta > 2 R delta_r (``residual_depth``: delta_r < delta).
 
 Plastic deformation is irreversible and deeper imprints overwrite shallower ones, so the dent
 is the lower envelope h(x, y) = min(0, min_t h_t(x, y)). Elastic interaction between
@@ -39,8 +37,8 @@ from impactlab.contact.kernels import P_R
 from impactlab.dynamics.core.batch import residual_caps
 
 #: How a cap's shape was found (``ResidualCaps.bound``): by the Hertzian unloading relation,
-#: at the tip's radius (R_d = R), at the widest contact radius (a_d = a_c).
-BY_RELATION, AT_TIP_RADIUS, AT_CONTACT_RADIUS = 0, 1, 2
+#: or at the widest contact radius (a_d = a_c).
+BY_RELATION, AT_CONTACT_RADIUS = 0, 1
 
 #: Relative margin by which the relation's rim must pass a_c to be brought to it (rounding:
 #: Thornton's caps lie on sqrt(2 R delta) itself).
@@ -56,7 +54,6 @@ class DentSurface(NamedTuple):
     max_depth: float
     length: float
     width: float
-    caps_at_tip_radius: int = 0
     caps_at_contact_radius: int = 0
     note: str = ""
 
@@ -64,7 +61,7 @@ class DentSurface(NamedTuple):
 class ResidualCaps(NamedTuple):
     """The residual caps after loading to each interference: depth ``delta_r`` [m], radius
     ``R_d`` [m] (inf without a dent), rim radius ``a_d`` [m] (0 without a dent) and ``bound``
-    (``BY_RELATION``, ``AT_TIP_RADIUS`` or ``AT_CONTACT_RADIUS``)."""
+    (``BY_RELATION`` or ``AT_CONTACT_RADIUS``)."""
 
     delta_r: np.ndarray
     R_d: np.ndarray
@@ -88,35 +85,27 @@ def residual_cap_geometry(law_id: int, law_params: np.ndarray, delta: np.ndarray
     a_load = loading_contact_radius_array(int(law_id), p, d)
     a_c = np.maximum(np.maximum(a_load, a_unl), np.sqrt(2.0 * R * np.maximum(d, 0.0)))
     bound = np.full(d.shape, BY_RELATION, dtype=np.int8)
-    bound[dent & ~concave] = AT_TIP_RADIUS
-    bound[concave & ~(a_rel <= a_c * (1.0 + RIM_RTOL))] = AT_CONTACT_RADIUS
+    # R_r <= R (no concave solution) and a rim beyond a_c: the relation's limit R_r -> R+
+    bound[dent & ~(concave & (a_rel <= a_c * (1.0 + RIM_RTOL)))] = AT_CONTACT_RADIUS
     with np.errstate(divide="ignore", invalid="ignore"):
         rd = np.where(bound == AT_CONTACT_RADIUS, a_c * a_c / (2.0 * dr), rd_rel)
-        rd = np.where(bound == AT_TIP_RADIUS, R, rd)
-        ad = np.where(bound == AT_CONTACT_RADIUS, a_c, np.sqrt(2.0 * rd * dr))
+        ad = np.where(bound == AT_CONTACT_RADIUS, a_c, a_rel)
     rd = np.where(dent, rd, np.inf)
     ad = np.where(dent & np.isfinite(ad), ad, 0.0)
     return ResidualCaps(dr, rd, ad, bound)
 
 
-def bound_note(tip: int, contact: int, deepest: int) -> str:
-    """What a ``DentMap``'s ``note`` says of its bounded caps: ``tip`` and ``contact`` caps of
-    its surface at the tip's or the contact radius, the deepest cap's ``bound``."""
-    parts = []
-    if tip:
-        deep = ", the deepest among them," if deepest == AT_TIP_RADIUS else ""
-        parts.append(
-            f"{tip} residual cap(s) of the surface{deep} drawn at the tip's radius R_d = R "
-            "(the law's unloading radius R_r <= R gives no concave dent): width a lower bound"
-        )
-    if contact:
-        deep = ", the deepest among them," if deepest == AT_CONTACT_RADIUS else ""
-        parts.append(
-            f"{contact} residual cap(s) of the surface{deep} narrowed to the contact radius "
-            "(R_r just above R puts the unloading relation's rim beyond the contact): width "
-            "an upper bound"
-        )
-    return "; ".join(parts) + ("; depths are the law's" if parts else "")
+def bound_note(contact: int, deepest: int) -> str:
+    """What a ``DentMap``'s ``note`` says of its bounded caps: ``contact`` caps of its surface
+    at the contact radius, the deepest cap's ``bound``."""
+    if not contact:
+        return ""
+    deep = ", the deepest among them," if deepest == AT_CONTACT_RADIUS else ""
+    return (
+        f"{contact} residual cap(s) of the surface{deep} drawn at the contact radius (R_r <= "
+        "R or just above R: the unloading relation gives no concave dent within the contact): "
+        "width an upper bound; depths are the law's"
+    )
 
 
 def dent_map(
@@ -172,7 +161,6 @@ def dent_map(
     shown = np.zeros(dr.shape[0], dtype=bool)
     shown[owner[owner >= 0]] = True
     shown[deepest] = True
-    tip = int(np.count_nonzero(shown & (bound == AT_TIP_RADIUS)))
     contact = int(np.count_nonzero(shown & (bound == AT_CONTACT_RADIUS)))
     return DentSurface(
         x=x,
@@ -181,7 +169,6 @@ def dent_map(
         max_depth=float(dr.max()),
         length=x_hi - x_lo,
         width=2.0 * a_max,
-        caps_at_tip_radius=tip,
         caps_at_contact_radius=contact,
-        note=bound_note(tip, contact, int(bound[deepest])),
+        note=bound_note(contact, int(bound[deepest])),
     )

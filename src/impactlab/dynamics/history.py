@@ -106,11 +106,10 @@ class DentMap:
     height : (len(y), len(x)) surface height after the impact [m] (<= 0 inside the dent).
     max_depth : deepest point [m] (equals ``delta_p`` for a single loading).
     length : extent of the dent along x [m]; width : extent across (along y) [m].
-    caps_at_tip_radius : residual caps of the surface drawn at the tip's radius (the law's
-        unloading gives no concave dent there: their depth is the law's, their width a lower
-        bound).
-    caps_at_contact_radius : residual caps narrowed to the widest contact radius (the unloading
-        relation put their rim beyond the contact: their width is an upper bound).
+    caps_at_contact_radius : residual caps of the surface drawn with the widest contact
+        radius as rim (the unloading relation has no concave dent for R_r <= R and puts the rim
+        beyond the contact for R_r just above R): their depth is the law's, their width an
+        upper bound.
     note : what those bounds mean for this dent ("" when every cap follows the relation).
     """
 
@@ -120,7 +119,6 @@ class DentMap:
     max_depth: float
     length: float
     width: float
-    caps_at_tip_radius: int = 0
     caps_at_contact_radius: int = 0
     note: str = ""
 
@@ -135,11 +133,8 @@ class DentMap:
 
     def __repr__(self) -> str:
         bounded = ""
-        if self.caps_at_tip_radius or self.caps_at_contact_radius:
-            bounded = (
-                f", caps_at_tip_radius={self.caps_at_tip_radius}, "
-                f"caps_at_contact_radius={self.caps_at_contact_radius}, note={self.note!r}"
-            )
+        if self.caps_at_contact_radius:
+            bounded = f", caps_at_contact_radius={self.caps_at_contact_radius}, note={self.note!r}"
         return (
             f"DentMap(max_depth={self.max_depth:.4g} m, length={self.length:.4g} m, "
             f"width={self.width:.4g} m, grid={self.height.shape[1]}x{self.height.shape[0]}"

@@ -151,7 +151,7 @@ def plot_contact_path(result: ImpactResult, ax: Any = None, *, dent: bool = True
 def plot_dent(result: ImpactResult | DropResult, ax: Any = None) -> Any:
     """The predicted dent as a filled contour map [um], of an ImpactResult or a DropResult
     (:class:`NotPlottableError`, a TypeError, for anything else); the title names the caps
-    whose shape is bounded (``DentMap.caps_at_tip_radius``, ``caps_at_contact_radius``)."""
+    drawn at the contact radius (``DentMap.caps_at_contact_radius``)."""
     if not isinstance(result, ImpactResult | DropResult):
         raise NotPlottableError(
             f"plot_dent takes an ImpactResult or a DropResult (simulate or simulate_drop, "
@@ -166,8 +166,6 @@ def plot_dent(result: ImpactResult | DropResult, ax: Any = None) -> Any:
     ax.set_ylabel("y, across the impact plane [mm]")
     title = f"dent: depth {dm.max_depth * 1e6:.3g} um, length {dm.length * 1e3:.3g} mm"
     bounded = []
-    if dm.caps_at_tip_radius:
-        bounded.append(f"{dm.caps_at_tip_radius} cap(s) at the tip's radius: width a lower bound")
     if dm.caps_at_contact_radius:
         bounded.append(
             f"{dm.caps_at_contact_radius} cap(s) at the contact radius: width an upper bound"
