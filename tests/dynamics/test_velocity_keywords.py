@@ -24,7 +24,7 @@ def test_simulate_drop_explains_as_simulate_does() -> None:
     assert str(rigid.value) == split_velocity("simulate", ["vy"])
     with pytest.raises(ValueError, match=re.escape(f"{PAIR}vx= and vy= ")):
         il.simulate_drop(il.Rod.paper(), angle=0.35, vx=0.1, vy=-1.41)
-    with pytest.raises(TypeError, match="unexpected keyword argument 'vz'"):
+    with pytest.raises(TypeError, match=r"unexpected keyword argument\(s\) vz; it takes "):
         il.simulate_drop(il.Rod.paper(), angle=0.35, vz=-1.41)  # type: ignore[call-arg]
 
 

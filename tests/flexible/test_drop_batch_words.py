@@ -25,8 +25,11 @@ ROD = il.Rod.paper()
 
 def _named(flags: int) -> str:
     """The message of a computed case that is not ok with these flags, as a batch words it."""
-    names = [messages(f)[0].split(":")[0] for f in ResultFlag if f.value and flags & f]
-    return f"computed, not ok (flags {flags}): {', '.join(names)}"
+    bits = [f for f in ResultFlag if f.value and flags & f]
+    names = [messages(f)[0].split(":")[0] for f in bits if not f & ADVISORY_FLAGS]
+    advisory = [messages(f)[0].split(":")[0] for f in bits if f & ADVISORY_FLAGS]
+    more = f"; advisory: {', '.join(advisory)}" if advisory else ""
+    return f"computed, not ok (flags {flags}): {', '.join(names)}{more}"
 
 
 def _words(batch: Any) -> None:

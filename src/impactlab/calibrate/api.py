@@ -20,6 +20,7 @@ from impactlab.calibrate.diagnostics import (
 )
 from impactlab.calibrate.input_checks import (
     check_calibration_inputs,
+    check_engine_cells,
     engine_options,
     parameter_usage,
     sampler_settings,
@@ -241,6 +242,7 @@ def _calibrate(
         raise ValueError(f"two candidate models have the same name: {names}")
     nw, steps, nburn, seed = sampler_settings(len(params), walkers, steps, burn, seed)
     eng, g = engine_options(engine)
+    check_engine_cells(eng, cands)
     notes: list[str] = []
     check_calibration_inputs(meas, params, cands, notes)
     usage = {c.name: parameter_usage(c, meas, params, evaluator, eng) for c in cands}

@@ -21,15 +21,17 @@ from impactlab.calibrate.models import CandidateModel, predict
 from impactlab.calibrate.priors import Parameter, parse_parameter
 from impactlab.calibrate.values import to_unit
 from impactlab.dynamics.input_checks import check_partial_slip_cells, gravity_value
+from impactlab.friction import PARTIAL_SLIP_CELLS, get_friction
 from impactlab.materials import get_material
 from impactlab.sweep.dimensions import check_allowed
 from impactlab.sweep.engine import Evaluator
 from impactlab.sweep.inputs import INPUTS, MATERIAL_OVERRIDES
 from impactlab.sweep.material_inputs import CUSTOM
-from impactlab.sweep.options import EngineOptions
+from impactlab.sweep.options import EngineOptions, check_cells_study
 
 __all__ = [
     "check_calibration_inputs",
+    "check_engine_cells",
     "engine_options",
     "parameter_usage",
     "parameters",
@@ -83,6 +85,27 @@ def engine_options(engine: Mapping[str, Any] | None) -> tuple[dict[str, Any], fl
     g = gravity_value(eng.get("gravity", True))
     EngineOptions(rtol=eng.get("rtol"))  # ValueError for an rtol the engine refuses
     return eng, g
+
+
+def check_engine_cells(eng: Mapping[str, Any], models: Sequence[CandidateModel]) -> None:
+    """ValueError, in the words of a sweep (``sweep.options.check_cells_study``), when ``[engine]
+    partial_slip_cells`` (``eng``, checked by :func:`engine_options`) sets another count than
+    the default and no candidate model is a rigid body with friction ``partial_slip``: the
+    others never use it (a flexible rod's drop has its compiled cells). With such a model among
+    others it applies to that model's impacts."""
+    n = eng.get("partial_slip_cells")
+    if n is None or n == PARTIAL_SLIP_CELLS:
+        return
+    kinds = [(get_friction(c.friction).name, c.body) for c in models]
+    if ("partial_slip", None) in kinds:  # a rigid body's partial slip uses them
+        return
+    frictions = {f for f, _ in kinds}
+    if "partial_slip" in frictions:  # only flexible rods' partial slip
+        check_cells_study(EngineOptions(partial_slip_cells=n), {"flexible_rod"}, frictions)
+    raise ValueError(
+        f"[engine] partial_slip_cells = {n} sets the cells of friction 'partial_slip' only, "
+        f"and the candidate models' friction is {', '.join(sorted(frictions))}: leave it out"
+    )
 
 
 def _integer(name: str, value: Any) -> int:

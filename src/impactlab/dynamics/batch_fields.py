@@ -80,13 +80,19 @@ def flagged_messages(texts: list[str], flags: np.ndarray, ok: np.ndarray) -> lis
     """A batch's ``messages`` (``texts``, one per case) with that of each computed case that is
     not ``ok`` naming its flags by the names their messages begin with (``impactlab.flags``),
     ``"computed, not ok (flags 17): energy gain, beyond the tip"``, instead of the status's
-    ``"ok"``; an ok case (no flag, or advisory ones only) keeps its text."""
+    ``"ok"``: first the flags that make it not ok, then any advisory one
+    (``impactlab.flags.ADVISORY_FLAGS``, which leave a case ok) after ``"; advisory: "``,
+    ``"computed, not ok (flags 20): beyond the tip; advisory: law extrapolated"``; an ok case
+    (no flag, or advisory ones only) keeps its text."""
     out = list(texts)
     f = np.asarray(flags, dtype=np.int64)
     for i in np.flatnonzero((f & ~ADVISORY_FLAGS) != 0):
         if not bool(ok[i]) and out[i] == STATUS_MESSAGES[ST_OK]:
-            names = ", ".join(_FLAG_NAME[b] for b in ResultFlag if b.value and f[i] & b)
-            out[i] = f"computed, not ok (flags {int(f[i])}): {names}"
+            bits = [b for b in ResultFlag if b.value and f[i] & b]
+            names = ", ".join(_FLAG_NAME[b] for b in bits if not b & ADVISORY_FLAGS)
+            advisory = ", ".join(_FLAG_NAME[b] for b in bits if b & ADVISORY_FLAGS)
+            more = f"; advisory: {advisory}" if advisory else ""
+            out[i] = f"computed, not ok (flags {int(f[i])}): {names}{more}"
     return out
 
 

@@ -19,7 +19,7 @@ import numpy as np
 
 from impactlab import schema
 from impactlab._compile_notice import one_line
-from impactlab._validation import check_finite, check_flag
+from impactlab._validation import check_finite, check_flag, refuse_unknown_keywords
 from impactlab.bodies import Rod, lever_arms
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.bodies.layout import BP_GSTAR
@@ -265,7 +265,12 @@ _RENAMED_OUTPUTS: dict[str, str] = {
     k: v for k, v in schema.RENAMED_DROP_FIELDS.items() if k in F.DROP_OUTPUT_FIELDS
 }
 
+#: What simulate_drop says of a keyword of ``simulate`` it does not take (others: the nearest).
+_NOTES = {"partial_slip_cells": f"a drop's partial slip has {PARTIAL_SLIP_CELLS} compiled cells"
+          " per end", "constant_angle": "a drop follows the rod's rotation"}  # fmt: skip
 
+
+@refuse_unknown_keywords(_NOTES)
 def simulate_drop(
     body: FlexibleRod | Rod,
     flat: Material = AISI_1010,

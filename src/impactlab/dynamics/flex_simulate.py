@@ -47,6 +47,7 @@ def simulate_flexible(
     False (the drop follows the rod's rotation). TypeError for a drop option with another body
     or an unknown keyword."""
     known = (*_SIMULATE_ARGS, "constant_angle", "history", "speed", "incidence", *DROP_OPTIONS)
+    known += ("partial_slip_cells",)  # simulate's own (checked there), not passed on here
     extra = sorted(set(kwargs) - set(known))
     if extra:  # in simulate_batch's words (the nearest name), with the drop's options named
         text = unexpected_keywords("simulate", extra, known, {})

@@ -16,9 +16,9 @@ from typing import Any
 
 import numpy as np
 
-from impactlab._validation import value_text
+from impactlab._validation import check_array, value_text
 from impactlab.dynamics.kernels.inputs import incidence_allowed
-from impactlab.units import has_unit, magnitude
+from impactlab.units import has_unit, is_quantity
 
 __all__ = ["batch_velocity", "speed_incidence", "velocity_given"]
 
@@ -63,9 +63,9 @@ def batch_velocity(
 def speed_incidence(speed: Any, incidence: Any) -> tuple[np.ndarray, np.ndarray]:
     """(vx, vy) = (speed sin(incidence), -speed cos(incidence)) [m/s], element by element;
     ValueError naming the refused cases by index, with the rule, unless every speed is finite
-    and > 0 m/s and every incidence in (-90, 90) deg (a bare incidence is radians)."""
-    v = np.asarray(magnitude("speed", speed, "m/s"), dtype=np.float64)
-    th = np.asarray(magnitude("incidence", incidence, "rad"), dtype=np.float64)
+    and > 0 m/s and every incidence in (-90, 90) deg (a bare incidence is radians); each read
+    as :func:`_column` reads it."""
+    v, th = _column("speed", speed, "m/s"), _column("incidence", incidence, "rad")
     with np.errstate(invalid="ignore"):
         _refuse("speed", v, ~(v > 0.0) | ~np.isfinite(v), "must be finite and > 0 m/s", "m/s")
         bad = ~np.vectorize(incidence_allowed, otypes=[bool])(th)
@@ -73,11 +73,28 @@ def speed_incidence(speed: Any, incidence: Any) -> tuple[np.ndarray, np.ndarray]
         finite = th[bad & np.isfinite(th)]
         degrees = finite.size and bool(np.all((np.abs(finite) > 0.5 * math.pi) & (finite <= 90)))
         hint = ""
-        if degrees and not has_unit(incidence):
+        if degrees and not _has_unit(incidence):
             hint = "; a bare incidence is radians: for degrees pass np.radians(...) or '... deg'"
         rule = "must lie in (-90, 90) deg from the flat's normal"
         _refuse("incidence", np.degrees(th), bad, rule, "deg", hint)
     return v * np.sin(th), -v * np.cos(th)
+
+
+def _column(name: str, value: Any, unit: str) -> np.ndarray:
+    """``speed`` [m/s] or ``incidence`` [rad] as a float array, read as ``simulate_batch``
+    reads its columns: a number, an array, a pint Quantity, a string with units, or a list that
+    holds Quantities (each element read so, named ``name[i]``; numpy would drop their units);
+    ValueError naming ``name`` for what is not a number (``_validation.check_array``)."""
+    if isinstance(value, list | tuple) and any(is_quantity(v) for v in value):
+        items = [check_array(f"{name}[{i}]", v, unit) for i, v in enumerate(value)]
+        return np.array(items, dtype=np.float64)
+    return check_array(name, value, unit)
+
+
+def _has_unit(value: Any) -> bool:
+    """Whether ``value``, or an element of a list of them, states its unit."""
+    items = value if isinstance(value, list | tuple) else [value]
+    return any(has_unit(v) for v in items)
 
 
 def _refuse(
