@@ -39,6 +39,7 @@ def test_samples_in_the_sticking_regime_warn_that_the_spread_is_unreliable() -> 
         text = " ".join(str(w.message) for w in rec)
         assert "reached alpha >= 0 (the sticking regime)" in text
         assert "sigma_T_mc and T_mc depend on the seed" in text and "T_median_mc" in text
+        assert "the first-order sigma_T (a linearisation) does not describe" in text
         assert results[-1].mc_rejected < 0.05  # below the share that warned before
     sigmas = [r.sigma_T_mc for r in results]
     assert max(sigmas) > 3 * min(sigmas)  # the spread follows the seed: what the warning says

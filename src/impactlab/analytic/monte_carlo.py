@@ -137,9 +137,10 @@ def _warn_heavy_tail(n_stuck: int, n: int) -> None:
         f"{n_stuck} of the {n} Monte Carlo samples ({n_stuck / n:.2%}) reached alpha >= 0 (the "
         "sticking regime) and were discarded: where the inputs' distribution reaches it, "
         "alpha -> 0 and T ~ 1/|alpha| has a heavy tail without a finite variance, so sigma_T_mc "
-        "and T_mc depend on the seed and the spread is unreliable; read T_median_mc and "
-        f"T_interval_mc ({lo:g}-{hi:g} percentiles) instead, or narrow the sigmas of mu and "
-        "the angle"
+        "and T_mc depend on the seed and the spread is unreliable, and the first-order "
+        "sigma_T (a linearisation) does not describe T's skewed spread either; read "
+        f"T_median_mc and T_interval_mc ({lo:g}-{hi:g} percentiles) instead, or narrow the "
+        "sigmas of mu and the angle"
     )
 
 
