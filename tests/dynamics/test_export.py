@@ -40,6 +40,7 @@ def test_to_xarray(batch: BatchResult) -> None:
     assert ds["status"].values.tolist() == [0, 0, 0, ST_BAD_ANGLE]
     st = ds["status"].attrs
     assert st["status_messages"][st["flag_values"].index(ST_BAD_ANGLE)].startswith("angle")
+    assert st["status_messages"][st["flag_values"].index(0)] == "finished"  # as a sweep store's
     reg = ds["regime"]
     assert reg.dtype.kind == "i" and reg.values.tolist() == [1, 1, 2, -1]
     names = dict(zip(reg.attrs["flag_values"], reg.attrs["flag_meanings"].split(), strict=True))

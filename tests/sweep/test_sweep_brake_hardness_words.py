@@ -35,6 +35,20 @@ def test_the_message_names_the_study_key_of_the_side_that_lacks_it() -> None:
         get_law("brake").build(ContactPair(flat, flat), 8.8e-3)
 
 
+def test_two_materials_without_one_are_named_in_the_plural() -> None:
+    body = get_material(NO_HB.replace("name=plain", "name=other"))
+    flat = get_material(NO_HB)
+    with pytest.raises(ValueError, match="Brinell hardness of both") as caught:
+        get_law("brake").build(ContactPair(body, flat), 8.8e-3)
+    assert (
+        "and 'other' and 'plain' have none; give them a brinell_hardness in kgf/mm^2 (HB=...; "
+        "in a sweep study: body_brinell_hardness and flat_brinell_hardness)" in str(caught.value)
+    )
+    with pytest.raises(ValueError, match="Brinell") as same:  # one material, both sides: once
+        get_law("brake").build(ContactPair(flat, flat), 8.8e-3)
+    assert "and 'plain' has none; give it a brinell_hardness" in str(same.value)
+
+
 def test_a_study_case_gets_the_same_words() -> None:
     """What ``sweep info`` shows for the first refused case (status 103)."""
     cat = {"law": "brake", "body": "rod", "body_material": "aisi-201",

@@ -51,8 +51,8 @@ def test_a_full_disk_mid_sweep_is_one_line_and_the_run_resumes(
     code, out, err = run_cli(monkeypatch, capsys, *args)
     assert code == 1 and out == ""
     assert err == (
-        "error: no space left writing 'b.zarr' (2 of 5 chunks stored; nothing stored is "
-        "lost): free space and run the same command again\n"
+        "error: no space left on the device writing 'b.zarr' (2 of 5 chunks stored; nothing "
+        "stored is lost): free space and run the same command again\n"
     )
     monkeypatch.undo()  # space freed: the same command continues
     monkeypatch.chdir(tmp_path)
@@ -88,8 +88,8 @@ def test_a_full_disk_while_the_store_is_created_is_one_line(tmp_path, monkeypatc
     code, out, err = run_cli(monkeypatch, capsys, "sweep", "b.toml", "--out", "b.zarr", "-q")
     assert code == 1 and out == ""
     assert err == (
-        "error: no space left writing 'b.zarr' (while creating it: nothing stored yet): free "
-        "space and run the same command again\n"
+        "error: no space left on the device writing 'b.zarr' (while creating it: nothing "
+        "stored yet): free space and run the same command again\n"
     )
 
 
@@ -117,8 +117,16 @@ def test_a_programming_error_keeps_its_traceback(tmp_path, monkeypatch, capsys) 
             errno.ENOSPC,
             "no space left on the device writing 'x.csv': free space and run the command again",
         ),
-        (errno.EDQUOT, "disk quota exceeded writing 'x.csv': free space and run the command again"),
-        (errno.EROFS, "'x.csv' is on a read-only file system: choose a writable place"),
+        (
+            errno.EDQUOT,
+            "disk quota exceeded writing 'x.csv': free space (or raise the quota) and run the "
+            "command again",
+        ),
+        (
+            errno.EROFS,
+            "read-only file system writing 'x.csv': make it writable (or write elsewhere) and "
+            "run the command again",
+        ),
         (errno.EIO, f"{os.strerror(errno.EIO)}: 'x.csv'"),
     ],
 )

@@ -165,7 +165,7 @@ class CandidateModel:
 @dataclass(frozen=True)
 class Prediction:
     """W x D predictions: ``values`` quantity -> (W, D) (NaN where a case failed),
-    ``status`` (W, D) (0: ok; ``status_message``) and ``extrapolated`` (W, D): True where an
+    ``status`` (W, D) (0: finished; ``status_message``) and ``extrapolated`` (W, D): True where an
     ok case's contact law was used beyond its verified range (the advisory LAW_EXTRAPOLATED
     flag, ``impactlab.flags``; None: not known)."""
 

@@ -10,7 +10,6 @@ error of the system (a full disk, a read-only file system) with status 1 and one
 from __future__ import annotations
 
 import atexit
-import errno
 import gc
 import os
 import sys
@@ -24,6 +23,7 @@ import typer
 from typer.core import TyperGroup
 
 from impactlab import _runtime
+from impactlab._oserror import oserror_words
 from impactlab._version import __version__
 from impactlab.cli import (
     analyze,
@@ -196,14 +196,6 @@ def _usage_line(exc: Exception, message: str) -> str:
     return f"{text} (see '{path} --help')" if isinstance(path, str) and path else text
 
 
-#: errno -> what it says of the file it names, and what to do.
-_SYSTEM_ERRORS = {
-    errno.ENOSPC: "no space left on the device writing {}: free space and run the command again",
-    errno.EDQUOT: "disk quota exceeded writing {}: free space and run the command again",
-    errno.EROFS: "{} is on a read-only file system: choose a writable place",
-}
-
-
 def _system_error_line(exc: OSError) -> str:
     """An OSError of the system in one line: its own message where it has no errno text (a
     sweep's ``StoreWriteError`` says what is stored), else what its errno means for its file
@@ -211,9 +203,9 @@ def _system_error_line(exc: OSError) -> str:
     if exc.strerror is None:
         return str(exc) or type(exc).__name__
     where = repr(str(exc.filename)) if exc.filename is not None else "a file"
-    text = _SYSTEM_ERRORS.get(exc.errno or 0)
-    if text is not None:
-        return text.format(where)
+    words = oserror_words(exc)
+    if words is not None:
+        return f"{words[0]} writing {where}: {words[1]} and run the command again"
     return f"{exc.strerror}: {where}" if exc.filename is not None else exc.strerror
 
 

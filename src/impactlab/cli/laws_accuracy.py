@@ -4,6 +4,7 @@ does not fit the terminal: a number is never broken across lines."""
 
 from __future__ import annotations
 
+import math
 import textwrap
 from collections.abc import Sequence
 from typing import Any
@@ -80,13 +81,42 @@ def _results(only: str | None) -> list[Any]:
         r for r in acc.accuracy((*measured, only)) if any(a.law == only and a.built for a in r.laws)
     ]
     if not results:
-        spans = ", ".join(f"{r.case.e_star_over_sy:.0f}" for r in acc.accuracy(()))
-        raise ValueError(
-            f"law {only!r} holds for its own pair only (its E*/S_y and nu), and none of the "
-            f"shipped FE cases has that pair (their E*/S_y: {spans}): nothing to measure it "
-            "against"
-        )
+        raise ValueError(_no_case(only, [r.case for r in acc.accuracy(())]))
     return results
+
+
+def _no_case(only: str, cases: Sequence[Any]) -> str:
+    """Why no shipped FE case (``cases``) measures the registered law ``only``: none has its
+    E*/S_y and nu, or those that have them yield on the other body."""
+    from impactlab.contact import registered_laws
+    from impactlab.contact.indentation_data import yielding_body
+    from impactlab.contact.tabulated import NU_TOLERANCE, RATIO_TOLERANCE
+
+    mine = registered_laws()[only].own_curves
+    ratio, side = mine.e_star_over_sy, mine.yielding
+    pair = f"E*/S_y = {ratio:.4g}, nu = {mine.nu:g}, a yielding {side}"
+    same = [
+        c
+        for c in cases
+        if abs(math.log(c.e_star_over_sy / ratio)) <= math.log1p(RATIO_TOLERANCE)
+        and abs(c.pair.nu - mine.nu) <= NU_TOLERANCE
+    ]
+    other = [c for c in same if yielding_body(c.pair) != side]
+    if other:
+        names = ", ".join(repr(c.name) for c in other)
+        return (
+            f"law {only!r} holds for its own pair only ({pair}): the shipped FE case(s) of "
+            f"that E*/S_y and nu ({names}) are of a yielding {yielding_body(other[0].pair)}, "
+            "and curves differ once the other body yields: nothing to measure it against"
+        )
+    spans = ", ".join(f"{c.e_star_over_sy:.0f}" for c in cases)
+    sides = sorted({yielding_body(c.pair) for c in cases})
+    of = f"; all of a yielding {sides[0]}" if len(sides) == 1 else ""
+    return (
+        f"law {only!r} holds for its own pair only ({pair}), and none of the shipped FE cases "
+        f"has that pair (their E*/S_y, matched within {100 * RATIO_TOLERANCE:g} %: {spans}{of}): "
+        "nothing to measure it against"
+    )
 
 
 def print_accuracy(name: str | None, as_json: bool) -> None:

@@ -116,11 +116,13 @@ class Brake(ContactLaw):
             if not (pair.body.has_hardness and pair.flat.has_hardness):
                 sides = ((pair.body, "body"), (pair.flat, "flat"))
                 lacking = [(m, side) for m, side in sides if not m.has_hardness]
-                missing = " and ".join(repr(m.name) for m, _ in lacking)
+                names = list(dict.fromkeys(repr(m.name) for m, _ in lacking))
+                missing = " and ".join(names)
+                has, it = ("have", "them") if len(names) > 1 else ("has", "it")
                 keys = " and ".join(f"{side}_brinell_hardness" for _, side in lacking)
                 raise ValueError(
                     f"hardness: Brake's law needs the Brinell hardness of both materials, and "
-                    f"{missing} has none; give it a brinell_hardness in kgf/mm^2 (HB=...; in "
+                    f"{missing} {has} none; give {it} a brinell_hardness in kgf/mm^2 (HB=...; in "
                     f"a sweep study: {keys}), or the combined value as a law parameter, "
                     "law_params={'hardness': ...} in kgf/mm^2 (a [law_params] table in a "
                     "--config file on the command line, or in a study whose only law is brake)"

@@ -17,9 +17,9 @@ delta_r(delta_max), given
 
 Like the tabulated law, the curves are kept dimensionless (Jackson & Green 2005's delta_c and
 F_c of their pair), so the law serves every pair with the same E*/S_y (within 5 %) and nu
-(within 0.03), any radius, and refuses other pairs. Its data travel as a plain record
-(``RegisteredLaw.record``, ``law_from_record``): sweeps carry it to their worker processes in
-the study.
+(within 0.03) in which the same body yields first, any radius, and refuses other pairs. Its
+data travel as a plain record (``RegisteredLaw.record``, ``law_from_record``): sweeps carry it
+to their worker processes in the study.
 """
 
 from __future__ import annotations
@@ -146,7 +146,8 @@ class RegisteredLaw(Tabulated):
             how = f"{load} error" if load == res else f"error by {load} (residual depths: {res})"
         self.validity = (  # type: ignore[misc]
             f"{curves.source}: the pair of the curves (E*/S_y = {curves.e_star_over_sy:.4g} "
-            f"within 5 %, nu = {curves.nu:g} within 0.03); delta up to the last tabulated point "
+            f"within 5 %, nu = {curves.nu:g} within 0.03, a yielding {curves.yielding}); delta up "
+            f"to the last tabulated point "
             f"({curves.max_delta:.4g} delta_c, hard limit); {how}: "
             f"{100 * self.sampling_error[0]:.2g} % in force, {self.sampling_error[1]:.2g} in "
             f"delta_r/delta_max; unloading Hertzian"

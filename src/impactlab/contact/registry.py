@@ -150,7 +150,8 @@ def register_law(
     ``source`` replaces the curves' source, and a loading fit farther than 2.5 % from a point
     of the tables is refused (``contact.registered.check_table_fit``). The law is the
     tabulated law of those curves (``law_id`` TABULATED): valid for pairs with the curves'
-    E*/S_y and nu, up to the last tabulated interference. ValueError for a built-in name (or
+    E*/S_y and nu in which the same body yields first (``IndentationCurves.yielding``), up to
+    the last tabulated interference. ValueError for a built-in name (or
     one with '_' for its '-'), a name already registered with other data, bad tables or
     callables (naming the value), and a name that reads as a registered one's with '_' for
     '-' (``ok_law`` beside ``ok-law``).

@@ -81,7 +81,7 @@ __all__ = ["DropBatchResult", "input_status", "simulate_drops"]
 @dataclass(frozen=True)
 class DropBatchResult(BatchStatus):
     """Results of ``simulate_drops`` (SI units): ``out`` (N, len(DROP_OUTPUT_FIELDS)) in the
-    order of ``flexcore.layout.DROP_FIELDS``, ``status`` (N,) (0: ok; ``STATUS_MESSAGES``),
+    order of ``flexcore.layout.DROP_FIELDS``, ``status`` (N,) (0: finished; ``STATUS_MESSAGES``),
     ``flags`` (N,) the ``ResultFlag`` bits (int64), ``initial_energy`` [J] and ``max_delta_ratio``
     (delta_max / delta_ref) per case; NaN (flags 0) where a case failed.
 

@@ -103,10 +103,12 @@ def status_attrs() -> dict[str, Any]:
     ``flag_values``/``flag_meanings``)."""
     codes = sorted(STATUS_MESSAGES)
     return {
-        "long_name": "engine status of the case (0: ok; other codes: no result, NaN outputs)",
+        "long_name": "engine status of the case (0: finished, the flags say if ok; "
+        "other codes: no result, NaN outputs)",
         "flag_values": codes,
         "flag_meanings": " ".join(f"status_{c}" for c in codes),
-        "status_messages": [STATUS_MESSAGES[c] for c in codes],
+        # status 0 reads "finished", as in a sweep store: whether a result is ok is the flags'
+        "status_messages": ["finished" if c == 0 else STATUS_MESSAGES[c] for c in codes],
     }
 
 

@@ -31,6 +31,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from impactlab._oserror import oserror_words
 from impactlab.sweep.chunks import ChunkResult, compute_chunk, set_numba_threads
 from impactlab.sweep.engine import Evaluator
 from impactlab.sweep.study import Study
@@ -252,19 +253,17 @@ class StoreWriteError(OSError):
         return str(self.args[0])
 
 
-#: errno -> (what happened, what to do) for a store that cannot be written.
-WRITE_ERRORS = {
-    errno.ENOSPC: ("no space left", "free space"),
-    errno.EDQUOT: ("disk quota exceeded", "free space (or raise the quota)"),
-    errno.EROFS: ("read-only file system", "make it writable (or choose another --out)"),
-}
+#: The errnos that stop a sweep with ``write_error``'s line while its store is made ready (a
+#: full disk, a quota, a read-only file system; their words: ``impactlab._oserror``).
+WRITE_ERRORS = frozenset({errno.ENOSPC, errno.EDQUOT, errno.EROFS})
 
 
 def write_error(exc: OSError, path: Path, stored: int | None, n_chunks: int) -> StoreWriteError:
     """``exc`` while writing the store at ``path`` (``stored`` of ``n_chunks`` chunks stored;
     None: while creating it) as one line that says what is kept and what to do."""
-    what, todo = WRITE_ERRORS.get(
-        exc.errno or 0, (exc.strerror or type(exc).__name__, "fix its cause")
+    what, todo = oserror_words(exc, elsewhere="choose another --out") or (
+        exc.strerror or type(exc).__name__,
+        "fix its cause",
     )
     kept = (
         "while creating it: nothing stored yet"

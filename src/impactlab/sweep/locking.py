@@ -11,11 +11,12 @@ naming the store: it can still be read.
 
 from __future__ import annotations
 
-import errno
 import os
 import socket
 import time
 from pathlib import Path
+
+from impactlab._oserror import UNWRITABLE, oserror_words
 
 #: Seconds after which a lock naming no holder is taken for a killed writer's: a live writer
 #: writes its line within microseconds of creating the file.
@@ -99,7 +100,7 @@ def acquire_lock(lock: Path, store: Path) -> None:
         except FileExistsError:
             pass  # held, or left behind: below
         except OSError as exc:
-            if exc.errno not in (errno.EROFS, errno.EACCES, errno.EPERM):
+            if exc.errno not in UNWRITABLE:
                 raise
             raise ValueError(_unwritable(store, lock, exc)) from None
         host, pid = _holder(lock)
@@ -125,13 +126,9 @@ def acquire_lock(lock: Path, store: Path) -> None:
 
 def _unwritable(store: Path, lock: Path, exc: OSError) -> str:
     """Why a run cannot write the store ``store`` whose ``lock`` it cannot create."""
-    why = (
-        "is on a read-only file system"
-        if exc.errno == errno.EROFS
-        else f"cannot be written by this user ({exc.strerror or exc})"
-    )
+    why = (oserror_words(exc) or (exc.strerror or str(exc), ""))[0]
     return (
-        f"store {str(store)!r} {why}: a run cannot write it (not even its lock file "
+        f"store {str(store)!r}: {why}, so a run cannot write it (not even its lock file "
         f"{str(lock)!r}); impactlab sweep info, export and plot read it as it is (open_sweep in "
         f"Python); to compute more, copy it to a writable place and run the study there"
     )

@@ -123,14 +123,27 @@ def _differ(a: Mapping[str, Any], b: Mapping[str, Any], key: str) -> bool:
     return key not in a or key not in b or a[key] != b[key]
 
 
-def _text(v: Any) -> str:
+def _text(v: Any, digits: int = 6) -> str:
+    """``v`` as the message shows it: floats to ``digits`` significant digits, or fewer (not
+    under 6) where those give the float exactly."""
     if v is None:
         return "not set"
     if isinstance(v, float):
-        return f"{v:g}"
+        exact = (f"{v:.{d}g}" for d in range(6, digits) if float(f"{v:.{d}g}") == v)
+        return next(exact, f"{v:.{digits}g}")
     if isinstance(v, list):
-        return ", ".join(_text(x) for x in v) if len(v) <= 4 else f"{len(v)} values"
+        return ", ".join(_text(x, digits) for x in v) if len(v) <= 4 else f"{len(v)} values"
     return str(v)
+
+
+def _arrow(old: Any, new: Any) -> str:
+    """``"old -> new"`` with as many significant digits (6 to 17) as it takes for two different
+    values to read differently (0.13 -> 0.1300001, not 0.13 -> 0.13)."""
+    for digits in range(6, 18):
+        a, b = _text(old, digits), _text(new, digits)
+        if a != b:
+            break
+    return f"{a} -> {b}"
 
 
 def _change(key: str, old: Any, new: Any) -> str:
@@ -139,12 +152,12 @@ def _change(key: str, old: Any, new: Any) -> str:
         if len(old) != len(new):
             return f"{key}: {len(old)} -> {len(new)} values"
         ends = [
-            f"{key} {which}: {_text(old[i])} -> {_text(new[i])}"
+            f"{key} {which}: {_arrow(old[i], new[i])}"
             for which, i in (("start", 0), ("stop", -1))
             if old[i] != new[i]
         ]
         return "; ".join(ends) or f"{key}: values between {_text(old[0])} and {_text(old[-1])}"
-    return f"{key}: {_text(old)} -> {_text(new)}"
+    return f"{key}: {_arrow(old, new)}"
 
 
 def root_mismatch(path: Path, study: Study, meta: StoreMeta) -> str | None:

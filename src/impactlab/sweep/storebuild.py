@@ -218,9 +218,15 @@ def _create_output(g: Any, name: str, meta: StoreMeta, study: Study) -> None:
     _chunked(g, name, study, dtype, fill, attrs)
 
 
+#: The stored word for status 0: the engine ran the case to its end (whether its result is ok,
+#: the flags say); ``summary.FINISHED`` labels it so in the counts of any store.
+FINISHED = "finished"
+
+
 def _status_messages(meta: StoreMeta) -> dict[int, str]:
     """The status codes of the engine and of the sweep's own refusals, with their meaning."""
-    return {**{int(k): v for k, v in meta.status_messages.items()}, **SWEEP_STATUS_MESSAGES}
+    engine = {int(k): v for k, v in meta.status_messages.items()}
+    return {**engine, 0: FINISHED, **SWEEP_STATUS_MESSAGES}
 
 
 def create_result_array(g: Any, name: str, meta: StoreMeta, study: Study) -> None:
@@ -230,7 +236,7 @@ def create_result_array(g: Any, name: str, meta: StoreMeta, study: Study) -> Non
         _create_output(g, name, meta, study)
         return
     status_attrs = {
-        "long_name": "case status (0: ok; see 'messages')",
+        "long_name": "case status (0: finished, the flags say if ok; see 'messages')",
         "units": "1",
         "messages": {str(k): v for k, v in sorted(_status_messages(meta).items())},
     }
