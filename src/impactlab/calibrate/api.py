@@ -13,6 +13,7 @@ from typing import Any
 
 from impactlab.calibrate.cluster import map_on_dask
 from impactlab.calibrate.diagnostics import (
+    MISFIT_SIGMAS,
     edge_note,
     extrapolation_note,
     failed_note,
@@ -35,6 +36,7 @@ from impactlab.calibrate.posterior import LogPosterior
 from impactlab.calibrate.priors import Parameter
 from impactlab.calibrate.ranking import (
     ELPD_DIFF_MIN,
+    MISFIT,
     NOT_CONVERGED,
     NOT_DISTINGUISHABLE,
     SMALL_DIFFERENCE,
@@ -92,7 +94,9 @@ class Calibration:
         (``"not distinguishable (elpd_diff < 4)"``), either model has a drop with Pareto
         k > 0.7 (``"not distinguishable (Pareto k > 0.7: PSIS-LOO unreliable)"``), one drop
         cannot rank the models (``"not distinguishable (one drop: PSIS-LOO does not rank)"``),
-        or its chain has not converged (``"not converged"``); empty when none."""
+        its chain has not converged (``"not converged"``), or its best fit lies more than 5
+        standard uncertainties from a measured value (``"misfit (best fit > 5 sigma from a
+        measured value)"``); empty when none."""
         if not self.ranking:
             return [] if self.best.converged else [NOT_CONVERGED]
         return [n for n in self.ranking[0]["note"].split("; ") if n]
@@ -342,6 +346,12 @@ def _best_warnings(ranking: Sequence[Mapping[str, Any]]) -> list[str]:
             f"the best-ranked model {best['model']!r} has not converged: its rank and "
             "posterior may change with more steps"
         )
+    if MISFIT in best["note"]:
+        out.append(
+            f"the best-ranked model {best['model']!r} misses a measured value by "
+            f"{best['misfit_max']:.1f} sigma at its best fit (its notes name it): it does not "
+            "describe every measurement"
+        )
     return out
 
 
@@ -368,7 +378,14 @@ def _not_distinguishable(best: Mapping[str, Any], other: Mapping[str, Any]) -> l
         )
     if not why:
         return []
+    apart = (
+        f"; yet {other['model']!r} misses a measured value by {other['misfit_max']:.1f} sigma "
+        f"at its best fit and {best['model']!r} comes within {MISFIT_SIGMAS:g} (each model's "
+        "notes name the values): the fit, not PSIS-LOO, tells them apart"
+        if MISFIT in other["note"] and MISFIT not in best["note"]
+        else "; the data do not single out one model"
+    )
     return [
         f"the best-ranked model {best['model']!r} is not distinguishable from "
-        f"{other['model']!r}: {'; '.join(why)}; the data do not single out one model"
+        f"{other['model']!r}: {'; '.join(why)}{apart}"
     ]

@@ -4,6 +4,7 @@ Brinell hardness in kgf/mm^2, an autocorrelation time in steps); counts stay int
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from typing import Any
 
@@ -110,6 +111,7 @@ def calibration_json(cal: Calibration) -> dict[str, Any]:
             "pareto_k_max": quantity(r["pareto_k_max"], _ONE),
             "converged": bool(r["converged"]),
             "law_extrapolated": quantity(r["law_extrapolated"], _ONE),
+            "misfit_max": quantity(r.get("misfit_max", math.nan), _ONE),
             "distinguishable": r["distinguishable"],
             "note": r["note"],
         }

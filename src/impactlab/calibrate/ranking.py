@@ -26,9 +26,10 @@ import numpy as np
 from scipy.optimize import minimize
 from scipy.special import logsumexp
 
+from impactlab.calibrate.diagnostics import MISFIT_SIGMAS
 from impactlab.calibrate.result import ModelPosterior
 
-__all__ = ["annotate", "distinguishable", "rank_models", "stacking_weights"]
+__all__ = ["annotate", "distinguishable", "misfit_max", "rank_models", "stacking_weights"]
 
 
 def stacking_weights(elpd: np.ndarray) -> np.ndarray:
@@ -75,7 +76,8 @@ def rank_models(posteriors: Mapping[str, ModelPosterior]) -> list[dict[str, Any]
     (stacking: ``stacking_weights``), warning (Pareto k > 0.7 somewhere), pareto_k_max,
     converged (the model's chain: ``ModelPosterior.converged``), law_extrapolated (the share of
     its predicted impacts that used its law beyond the verified range:
-    ``ModelPosterior.law_extrapolated``), distinguishable and note (``annotate``)."""
+    ``ModelPosterior.law_extrapolated``), misfit_max (the largest |z| of its best fit),
+    distinguishable and note (``annotate``)."""
     usable = {k: v for k, v in posteriors.items() if v.loo}
     if not usable:
         return []
@@ -134,6 +136,18 @@ UNRELIABLE_LOO = "not distinguishable (Pareto k > 0.7: PSIS-LOO unreliable)"
 #: The note of every row of a ranking over one drop.
 NOT_RANKED = "not distinguishable (one drop: PSIS-LOO does not rank)"
 NOT_CONVERGED = "not converged"
+#: The note of a row whose model's best fit lies more than MISFIT_SIGMAS standard uncertainties
+#: from a measured value (``misfit_max``): PSIS-LOO may still not tell it from the best (few
+#: drops, large dse), but the model does not describe that value.
+MISFIT = f"misfit (best fit > {MISFIT_SIGMAS:g} sigma from a measured value)"
+
+
+def misfit_max(post: Any) -> float:
+    """The largest |z| of a model's best fit over the measured values (``ModelPosterior.ppc``'s
+    ``z_best``: (best - observed) / sigma) [1]; infinite where a best fit is not a number, NaN
+    where nothing was predicted."""
+    zs = [abs(float(r["z_best"])) for r in getattr(post, "ppc", None) or ()]
+    return max((z if math.isfinite(z) else math.inf for z in zs), default=math.nan)
 
 
 def _why_not(row: Mapping[str, Any], drops: int | None) -> str:
@@ -167,12 +181,14 @@ def annotate(
     *,
     drops: int | None = None,
 ) -> list[dict[str, Any]]:
-    """``rows`` (best first) with pareto_k_max, converged, law_extrapolated, distinguishable
+    """``rows`` (best first) with pareto_k_max, converged, law_extrapolated, misfit_max
+    (``misfit_max``), distinguishable
     (from the best; the best's: from the runner-up; None for a single model, False for every
     row when there are fewer than 2 ``drops``, None: not known) and note (what makes the row's
     place unsure: ``NOT_RANKED`` over one drop, ``NOT_DISTINGUISHABLE`` or
     ``SMALL_DIFFERENCE``; ``UNRELIABLE_LOO`` when either model compared has a drop with
     Pareto k > 0.7 (its elpd_diff is not trusted; ``distinguishable`` False); ``NOT_CONVERGED``;
+    ``MISFIT`` when misfit_max exceeds MISFIT_SIGMAS (``distinguishable`` is PSIS-LOO's alone);
     joined by "; ")."""
     for i, r in enumerate(rows):
         post = posteriors[r["model"]]
@@ -180,6 +196,7 @@ def annotate(
         r["converged"] = post.converged
         found = getattr(post, "law_extrapolated", None) or {}  # {}: not known
         r["law_extrapolated"] = float(found.get("share", math.nan))
+        r["misfit_max"] = misfit_max(post)
         notes = []
         if len(rows) > 1:
             other = rows[1] if i == 0 else r
@@ -190,5 +207,6 @@ def annotate(
                 notes.append(UNRELIABLE_LOO)
         r["distinguishable"] = None if len(rows) == 1 else not notes
         notes += [] if post.converged else [NOT_CONVERGED]
+        notes += [MISFIT] if r["misfit_max"] > MISFIT_SIGMAS else []
         r["note"] = "; ".join(notes)
     return rows

@@ -14,7 +14,7 @@ import numpy as np
 from scipy.special import logsumexp
 
 from impactlab.calibrate._arviz import az, quiet, recording
-from impactlab.calibrate.diagnostics import convergence_notes, misfit_text
+from impactlab.calibrate.diagnostics import MISFIT_SIGMAS, convergence_notes, misfit_text
 from impactlab.calibrate.models import Prediction
 from impactlab.calibrate.posterior import LogPosterior
 from impactlab.calibrate.priors import Parameter
@@ -340,7 +340,7 @@ def summarise(
     rng = np.random.default_rng(seed + 1)
     pred = _rerun(post, samples, best, rng, n_ppc)
     ppc = _ppc(post, pred, rng)
-    notes += [misfit_text(r) for r in ppc if abs(r["z_best"]) > 5]
+    notes += [misfit_text(r) for r in ppc if abs(r["z_best"]) > MISFIT_SIGMAS]
     return ModelPosterior(
         model=post.model.name,
         params=tuple(post.params),
