@@ -188,3 +188,16 @@ def test_a_faulty_correlation_in_a_file_is_named(cli_main: CliMain, tmp_path: Pa
     assert _error(cli_main, "invert", "--file", str(path)).startswith(
         "correlation in the measurement file must be a table"
     )
+
+
+def test_the_help_says_a_negative_vi_flips_a_correlation_with_it(cli_main: CliMain) -> None:
+    """Formerly the help said only that v_i's sign is ignored, yet --correlation vi,e=0.9 with
+    --vi -1.41 m/s gives other sigmas than with +1.41 m/s."""
+    code, out, _ = cli_main("invert", "--help")
+    assert code == 0
+    text = " ".join(out.replace("│", " ").split())
+    assert "a negative v_i flips its sign" in text
+    neg = _json(cli_main, *ARGS, "--correlation", "vi,e=0.9")
+    pos = _json(cli_main, *[("1.41 m/s" if a == "-1.41 m/s" else a) for a in ARGS],
+                "--correlation", "vi,e=0.9")  # fmt: skip
+    assert neg["mean_force"]["sigma"] != pos["mean_force"]["sigma"]

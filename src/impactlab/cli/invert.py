@@ -190,7 +190,8 @@ def _file_count(extra: dict[str, Any], key: str, default: int, least: int) -> in
 _HELP = {
     "angle": "Rod-to-flat angle with its unit: '20 deg' or '0.35 rad' (a bare number is "
     "refused; required unless --case or --file gives it).",
-    "v_i": "Drop velocity of the tip ('-1.41 m/s'; bare number: m/s; the sign is ignored; "
+    "v_i": "Drop velocity of the tip ('-1.41 m/s'; bare number: m/s; T and F use its magnitude, "
+    "but a --correlation naming vi is of the value as given: a negative v_i flips its sign; "
     "required unless --case or --file gives it).",
     "e": "Coefficient of restitution (tip, normal), for the mean force F; it or --dv-cy is "
     "required (without either the command is refused, T too) unless --case or --file gives it.",
