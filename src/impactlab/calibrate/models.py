@@ -6,12 +6,11 @@ W x D cases through the sweep's engine adapter (``impactlab.sweep.engine.ENGINE`
 batch engine on every core for rigid bodies, one compiled batch of drops per body for the
 flexible rod, ``sweep.flexible``); the flexible rod on a rate-dependent flat, which the batch
 engines do not run, goes through ``simulate`` one case at a time with the same engine options
-(measured in benchmarks/bench_calibrate.py).
+(``calibrate.one_by_one``; measured in benchmarks/bench_calibrate.py).
 """
 
 from __future__ import annotations
 
-import math
 from collections.abc import Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from dataclasses import dataclass, field
@@ -20,34 +19,36 @@ from typing import Any
 import numba
 import numpy as np
 
-from impactlab.bodies import PAPER_ROD, FlexibleRod, Rod, Sphere
+from impactlab.calibrate.case_status import (  # noqa: F401  (re-exported: the old home)
+    STATUS_ENERGY_GAIN,
+    STATUS_FLAGGED,
+    STATUS_REFUSED,
+    status_message,
+)
 from impactlab.calibrate.fixed import fixed_values, law_param_values
 from impactlab.calibrate.measurements import Measurements
+from impactlab.calibrate.one_by_one import (  # noqa: F401  (re-exported: the old home)
+    SIMULATE_OPTIONS,
+    case_body,
+    output_value,
+    simulate_options,
+    simulate_row,
+)
+from impactlab.calibrate.one_by_one import one_by_one as _one_by_one
 from impactlab.calibrate.priors import Parameter
 from impactlab.calibrate.quantities import MEASURABLE
 from impactlab.contact import get_law
 from impactlab.contact.rate import RATE_LAWS
-from impactlab.dynamics import simulate
 from impactlab.dynamics.derived import e_gravity_removed
-from impactlab.dynamics.drop_result import DropResult
 from impactlab.dynamics.input_checks import gravity_value
-from impactlab.dynamics.kernels.status import STATUS_MESSAGES
-from impactlab.flags import (
-    FLAG_BEYOND_TIP,
-    FLAG_BRITTLE,
-    FLAG_ENERGY_GAIN,
-    FLAG_GRAVITY_DOMINATED,
-    FLAG_LAW_EXTRAPOLATED,
-    FLAG_OTHER_END,
-)
+from impactlab.flags import FLAG_LAW_EXTRAPOLATED
 from impactlab.friction import get_friction
 from impactlab.materials import get_material
 from impactlab.sweep.engine import ENGINE, Evaluator
-from impactlab.sweep.flexible import DROP_OUTPUTS, FLEXIBLE_BODY, MEASURED_AS, flexible_body
+from impactlab.sweep.flexible import DROP_OUTPUTS, FLEXIBLE_BODY, MEASURED_AS
 from impactlab.sweep.inputs import MATERIAL_OVERRIDES
 from impactlab.sweep.material_inputs import CUSTOM
-from impactlab.sweep.models import Statics, material_for
-from impactlab.sweep.status import SWEEP_STATUS_MESSAGES
+from impactlab.sweep.models import Statics
 
 __all__ = [
     "CandidateModel",
@@ -58,39 +59,6 @@ __all__ = [
     "simulate_row",
     "whole_materials",
 ]
-
-#: Status of a case that ran but broke physics (energy gain): a likelihood of zero.
-STATUS_ENERGY_GAIN = 301
-#: Status of a partial-slip case that ``simulate`` refused.
-STATUS_REFUSED = 302
-#: Status of a case flagged by another invalidating flag (``impactlab.flags``: not ``ok``), by
-#: flag, in bit order: its outputs are not a prediction of the drop, a likelihood of zero.
-STATUS_FLAGGED = {
-    FLAG_ENERGY_GAIN: STATUS_ENERGY_GAIN,
-    FLAG_GRAVITY_DOMINATED: 303,
-    FLAG_OTHER_END: 304,
-    FLAG_BEYOND_TIP: 305,
-    FLAG_BRITTLE: 306,
-}
-_OWN_MESSAGES = {
-    STATUS_ENERGY_GAIN: "result flagged ENERGY_GAIN (breaks energy conservation)",
-    STATUS_REFUSED: "simulate refused the case (or the drop failed)",
-    303: "result flagged GRAVITY_DOMINATED (e and the impact measures not meaningful)",
-    304: "result flagged OTHER_END (the other end landed: not one bounce of the tip)",
-    305: "result flagged BEYOND_TIP (the flat reached the rim of the tip)",
-    306: "result flagged BRITTLE (a brittle member past first yield)",
-}
-
-
-def status_message(code: int) -> str:
-    """What a case status means (engine, sweep and calibration codes)."""
-    code = int(code)
-    return (
-        _OWN_MESSAGES.get(code)
-        or SWEEP_STATUS_MESSAGES.get(code)
-        or STATUS_MESSAGES.get(code)
-        or f"status {code}"
-    )
 
 
 #: Measured quantities a drop does not predict though their engine output has a drop column:
@@ -305,96 +273,3 @@ def _derived(q: str, res: Mapping[str, np.ndarray], cases: Mapping[str, np.ndarr
     if q == "scar_length":  # an impact's travel; a drop's scar_length (MEASURED_AS), >= 0
         return np.abs(res["contact_travel"])
     return res[MEASURABLE[q].outputs[0]]
-
-
-def case_body(cat: Mapping[str, str], row: Mapping[str, float]) -> Rod | Sphere | FlexibleRod:
-    """The body of the case ``row`` (SI inputs; NaN: not given) with the categories ``cat``:
-    a FlexibleRod, a Sphere, or a Rod (the paper's geometry and mass where not given)."""
-    mat = material_for("body", cat["body_material"], row)
-
-    def given(name: str, default: Any = None) -> Any:
-        v = row.get(name, np.nan)
-        return default if np.isnan(v) else float(v)
-
-    if cat["body"] == FLEXIBLE_BODY:
-        return flexible_body(row, mat)
-    if cat["body"] == "sphere":
-        return Sphere(radius=given("radius"), mass=given("mass"), material=mat)
-    return Rod(
-        length=given("length", PAPER_ROD.length),
-        tip_radius=given("tip_radius", PAPER_ROD.tip_radius),
-        mass=given("mass", PAPER_ROD.mass),
-        material=mat,
-        inertia=given("inertia"),
-    )
-
-
-#: The engine options (``Statics.engine``) ``simulate`` takes, by body, as the batch engines
-#: take them: a rigid body's (``sweep.engine.evaluate``), a drop's (``sweep.flexible``).
-_RIGID_OPTIONS = ("gravity", "rtol", "constant_angle", "partial_slip_cells")
-SIMULATE_OPTIONS = {"rigid": _RIGID_OPTIONS, FLEXIBLE_BODY: ("gravity", "rtol")}
-
-
-def simulate_options(statics: Statics) -> dict[str, Any]:
-    """The keyword arguments of ``simulate`` from the engine options of ``statics`` (gravity on
-    when not given; the cells for friction ``partial_slip`` only), so that a case run one by
-    one has the numerics of the batch."""
-    cat, engine = statics.categories, dict(statics.engine)
-    keys = SIMULATE_OPTIONS[FLEXIBLE_BODY if cat["body"] == FLEXIBLE_BODY else "rigid"]
-    out = {k: engine[k] for k in keys if engine.get(k) is not None}
-    if cat["friction"] != "partial_slip":
-        out.pop("partial_slip_cells", None)
-    return {"gravity": True} | out
-
-
-def simulate_row(body: Any, statics: Statics, row: Mapping[str, float], rate: Any = None) -> Any:
-    """``simulate`` of the case ``row`` (its flat, kinematics and mu; the categories' law and
-    friction, the study's engine options: gravity, rtol, ... (:func:`simulate_options`), and
-    law parameters) on ``body``, without its history; the flat's ``rate`` law (a name or a
-    RateLaw) for a flexible rod. Its errors propagate."""
-    cat = statics.categories
-    return simulate(
-        body,
-        material_for("flat", cat["flat_material"], row),
-        law=cat["law"],
-        friction=cat["friction"],
-        mu=row["mu"],
-        angle=row["angle"] if cat["body"] != "sphere" else None,
-        velocity=(row["vx"], row["vy"]),
-        spin=row["spin"],
-        law_params=dict(statics.law_params) or None,
-        history=False,
-        **simulate_options(statics),
-        **({"rate": rate} if rate is not None else {}),
-    )
-
-
-def _one_by_one(
-    cases: Mapping[str, np.ndarray], statics: Statics, outputs: Sequence[str], rate: str | None
-) -> tuple[dict[str, np.ndarray], np.ndarray]:
-    """One ``simulate`` call per case (:func:`simulate_row`, the engine options of the batch),
-    for the flexible rod on a rate-dependent flat. A refused case or a failed drop gets
-    STATUS_REFUSED, never an exception."""
-    n = len(cases["angle"])
-    res = {o: np.full(n, np.nan) for o in outputs}
-    status = np.zeros(n, dtype=np.int32)
-    for i in range(n):
-        row = {k: float(v[i]) for k, v in cases.items()}
-        try:
-            r = simulate_row(case_body(statics.categories, row), statics, row, rate or None)
-        except (ValueError, ArithmeticError, np.linalg.LinAlgError):
-            status[i] = STATUS_REFUSED
-            continue
-        for o in outputs:
-            res[o][i] = output_value(r, o)
-    return res, status
-
-
-def output_value(result: Any, output: str) -> float:
-    """An engine output field of an ImpactResult or a DropResult (``DROP_OUTPUTS``)."""
-    if isinstance(result, DropResult):
-        read = DROP_OUTPUTS.get(output)
-        return math.nan if read is None else float(read(result))
-    if output in ("vx_out", "vy_out"):
-        return float(result.velocity_out[0 if output == "vx_out" else 1])
-    return float(getattr(result, output))

@@ -1,8 +1,8 @@
-"""Shared helpers for the command modules: unit-aware options, TOML inputs, JSON/table output."""
+"""Shared helpers for the command modules: unit-aware options, TOML inputs; the console and the
+JSON/table output (``cli.printing``) re-exported."""
 
 from __future__ import annotations
 
-import json
 import math
 import tomllib
 from collections.abc import Callable, Iterable, Mapping
@@ -10,18 +10,19 @@ from pathlib import Path
 from typing import Any
 
 import typer
-from rich.console import Console
-from rich.table import Table
-from rich.text import Text
 
-from impactlab._display import field_rows
-from impactlab._json import to_json
 from impactlab._validation import did_you_mean, read_text_file
+from impactlab.cli.printing import (  # noqa: F401  (re-exported: the commands import them here)
+    EXTRA_UNITS,
+    SI_UNITS,
+    console,
+    emit,
+    print_rows,
+)
 from impactlab.contact.rate import RATE_CONSTANTS, RATE_LAWS, RateLaw, constants_text, get_rate_law
 from impactlab.dynamics.input_checks import past_normal
 from impactlab.dynamics.kernels.inputs import angle_allowed, incidence_allowed
 from impactlab.materials import Material
-from impactlab.schema import FIELDS
 from impactlab.units import angle_to_rad, to_si
 
 
@@ -107,18 +108,6 @@ def check_rate_law(rate: str | RateLaw | None, law: object, name: str, law_name:
     shown = rate.label if isinstance(rate, RateLaw) else rate
     raise UserError(f"{name} {shown}: {law_name} {law.strip()} is elastic (no yield strength for "
                     f"the rate to raise); {fix}, or give an elastic-plastic --law")  # fmt: skip
-
-
-class _CurrentConsole:
-    """The command's console, made when it is used: rich's ``Console`` reads ``COLUMNS`` (and
-    the terminal's size) when it is created, so one made at import would keep the width of
-    whatever environment first imported this module."""
-
-    def __getattr__(self, name: str) -> Any:
-        return getattr(Console(), name)
-
-
-console = _CurrentConsole()
 
 
 def as_option(message: str, keys: Iterable[str], label: Callable[[str], str]) -> str:
@@ -302,92 +291,6 @@ def load_toml(path: Path | None, option: str = "input file") -> dict[str, Any]:
         raise UserError(str(exc)) from None
     except OSError as exc:
         raise UserError(f"{shown} cannot be read ({exc.strerror or exc})") from None
-
-
-#: SI units of the fields the commands print that are not in ``impactlab.schema``.
-EXTRA_UNITS: dict[str, str] = {
-    # inversion (impactlab invert, analyze)
-    "T": "s",
-    "F": "N",
-    "T_mc": "s",
-    "F_mc": "N",
-    "T_interval_mc": "s",
-    "F_interval_mc": "N",
-    "F_momentum": "N",
-    "F_rigid": "N",
-    "K_x": "1/kg",
-    "K_y": "1/kg",
-    "alpha": "1",
-    "mu_c": "1",
-    "mc_rejected": "1",
-    "v_i": "m/s",
-    "dv_cy": "m/s",
-    "L_s": "m",
-    "pileup": "m",
-    "v_c_in_x": "m/s",
-    "v_c_in_y": "m/s",
-    "v_c_out_x": "m/s",
-    "v_c_out_y": "m/s",
-    # bodies and materials
-    "mass": "kg",
-    "length": "m",
-    "radius": "m",
-    "tip_radius": "m",
-    "inertia": "kg*m^2",
-    "E": "Pa",
-    "nu": "1",
-    "yield_strength": "Pa",
-    "brinell_hardness": "kgf/mm^2",
-    "meyer_index": "1",
-    "density": "kg/m^3",
-    # drop (impactlab drop / simulate rod --flexible)
-    "slip": "m",
-    "start": "s",
-    "x_start": "m",
-    "x_end": "m",
-    "x_min": "m",
-    "x_max": "m",
-    "contact_radius": "m",
-    "unloading_radius": "m",
-    "delta_r": "m",
-    # sweep
-    "wall_time": "s",
-    "first_task": "s",
-    "throughput": "1/s",
-}
-
-#: SI unit of every field a command prints, by name: ``impactlab.schema`` and the above.
-SI_UNITS: dict[str, str] = {name: f.unit for name, f in FIELDS.items()} | EXTRA_UNITS
-
-
-def print_rows(rows: list[tuple[str, str, str]], title: str = "") -> None:
-    """A (quantity, value, unit) table on stdout (cells are text, never rich markup)."""
-    table = Table(title=Text(title) if title else None, show_header=True, header_style="bold")
-    table.add_column("quantity")
-    table.add_column("value", justify="right")
-    table.add_column("unit")
-    for name, text, unit in rows:
-        value = Text(text, justify="right" if unit else "left")  # numbers right, texts left
-        table.add_row(Text(name), value, Text(unit))
-    console.print(table)
-
-
-def emit(
-    data: Mapping[str, Any],
-    *,
-    as_json: bool,
-    title: str = "",
-    units: Mapping[str, str] | None = None,
-    sigmas: Mapping[str, Any] | None = None,
-) -> None:
-    """Print ``data`` (SI values) as JSON (``--json``: quantities as ``{"value", "unit",
-    "sigma"}``, docs/json-schema.md) or as a table in display units (``impactlab._display``).
-    ``units``: SI units of fields that are not in :data:`SI_UNITS` (or differ there)."""
-    si = {**SI_UNITS, **(units or {})}
-    if as_json:
-        print(json.dumps(to_json(data, si, sigmas), indent=2))
-        return
-    print_rows(field_rows(data, si, sigmas), title)
 
 
 def gravity_option() -> Any:

@@ -10,7 +10,7 @@ from collections.abc import Mapping
 
 import pandas as pd
 
-from impactlab.paper.calibration_report import PAPER_SIGMAS
+from impactlab.paper.calibration_run import PAPER_SIGMAS
 from impactlab.paper.physics import (
     CONTACT_TIME_COLUMN,
     DELTA_C_COLUMN,

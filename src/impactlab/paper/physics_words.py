@@ -11,7 +11,7 @@ import math
 import numpy as np
 import pandas as pd
 
-from impactlab.paper.calibration_report import PAPER_SIGMAS
+from impactlab.paper.calibration_run import PAPER_SIGMAS
 from impactlab.paper.physics import (
     CONFIGURATIONS,
     E_COLUMN,

@@ -24,9 +24,9 @@ Pipeline (details and the uncertainty model in docs/experiment.md):
 7. the impact instant: where the extrapolated tip heights of the two fits cross (``.derive``);
 8. at that instant: v_C, the spin and the angle before and after, the tip velocities, e and mu;
    all with first-order uncertainties propagated from the two fits (numerical Jacobian), the
-   impact instant included (``.measure``, result in ``.result``); an e outside [0, 1] is refused
-   and a given geometry is checked against the rigid-body impulse relations (``.impulse``), a
-   mirrored one named as such (``.mirror``).
+   impact instant included (``.estimates``, run by ``.measure``; result in ``.result``); an e
+   outside [0, 1] is refused and a given geometry is checked against the rigid-body impulse
+   relations (``.impulse``), a mirrored one named as such (``.mirror``).
 
 Frame of the results (the paper's, Fig. 1): y up (``up``), x horizontal in the vertical plane of
 the rod axis at impact, positive from the tip towards C; z = x cross y. The angle is that of the

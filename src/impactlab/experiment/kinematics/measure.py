@@ -1,24 +1,23 @@
 """Measure the impact from marker tracks: :func:`measure_impact` (steps in the package docstring).
 
-``measure_impact`` runs the steps in order; each step is one function here: the marker cluster
-and its poses, the impact detection, the free-flight segments, the gravity check, the centre of
-mass and axis, the impact frame, the ballistic fits and the propagated uncertainties.
+``measure_impact`` runs the steps in order; each step is one function here or in ``.estimates``:
+the marker cluster and its poses, the impact detection, the free-flight segments, the gravity
+check, the centre of mass and axis, the impact frame, then the ballistic fits and the propagated
+uncertainties (``.estimates``).
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
 from impactlab.experiment.checks import check_instance
-from impactlab.experiment.errors import ExperimentError, MarkerError, TooFewFramesError
+from impactlab.experiment.errors import ExperimentError, MarkerError
 from impactlab.experiment.kinematics.body import RodBody, estimated_body, impact_frame
 from impactlab.experiment.kinematics.cluster import marker_poses
-from impactlab.experiment.kinematics.com import estimate_com
-from impactlab.experiment.kinematics.derive import DERIVED, derive
+from impactlab.experiment.kinematics.derive import DERIVED
 from impactlab.experiment.kinematics.detect import (
     Impact,
     detect_impact,
@@ -26,7 +25,14 @@ from impactlab.experiment.kinematics.detect import (
     later_impact_note,
     several_impacts_hint,
 )
-from impactlab.experiment.kinematics.fits import SegmentFit, fit_segment, segment_data, trimmed_fit
+from impactlab.experiment.kinematics.estimates import (
+    DERIVED_UNITS,
+    FitFrame,
+    check_derived,
+    impact_fits,
+    plausibility,
+    propagated,
+)
 from impactlab.experiment.kinematics.frame import G0, parse_up, rod_dimensions
 from impactlab.experiment.kinematics.gravity import fitted_gravity
 from impactlab.experiment.kinematics.impulse import gyration_squared
@@ -38,8 +44,8 @@ from impactlab.experiment.kinematics.options import check_kinematics_options
 from impactlab.experiment.kinematics.result import ImpactKinematics
 from impactlab.experiment.kinematics.tilt import GROSS_TILT
 from impactlab.experiment.markers import MarkerTracks
-from impactlab.experiment.rigid import MarkerGeometry, Poses
-from impactlab.experiment.uncertainty import Estimate, propagate
+from impactlab.experiment.rigid import MarkerGeometry
+from impactlab.experiment.uncertainty import Estimate
 
 __all__ = ["measure_impact"]
 
@@ -53,31 +59,11 @@ _PAIRS = {
     "v_tip_out": ("v_tip_x_out", "v_tip_y_out"),
 }
 
-#: Units of the derived quantities (order ``DERIVED``).
-_UNITS = (
-    "s", "rad", "rad", "m/s", "m/s", "rad/s", "m/s", "m/s", "rad/s", "m/s", "m/s", "m/s", "m/s",
-    "1", "1", "m/s", "m/s", "m/s", "m/s",
-)  # fmt: skip
-
 
 def _check_markers(tracks: MarkerTracks, src: str) -> None:
     if tracks.n_markers < 3:
         raise MarkerError(
             f"{src}: {tracks.n_markers} markers; at least 3 are needed for the rod's pose"
-        )
-
-
-def _check_derived(y: np.ndarray, src: str) -> None:
-    """The derived quantities must be finite, with the tip approaching the flat."""
-    if not np.all(np.isfinite(y)):
-        raise MarkerError(
-            f"{src}: the fits give no finite impact velocities (tip velocity "
-            "before the impact is zero?)"
-        )
-    if y[10] >= 0:
-        raise MarkerError(
-            f"{src}: the tip is not moving towards the flat before the impact "
-            f"(v_tip,y = {y[10]:.3g} m/s); check up="
         )
 
 
@@ -90,125 +76,6 @@ def _e_error(src: str, e: Estimate, imp: Impact) -> MarkerError:
         f"geometry, up= and the impact found at t = {imp.t_ref:.4f} s)"
         f"{several_impacts_hint(imp)}"
     )
-
-
-@dataclass(frozen=True)
-class _Frame:
-    """What the fits need: the poses, the impact frame (``axes``, ``origin``), ``t_ref`` [s],
-    gravity ``g`` [m/s^2], the rod's ``half`` length and ``R_tip`` [m]."""
-
-    poses: Poses
-    axes: np.ndarray
-    origin: np.ndarray
-    t_ref: float
-    g: float
-    half: float
-    R_tip: float
-
-
-def _fits(
-    fm: _Frame,
-    pre_fr: np.ndarray,
-    post_fr: np.ndarray,
-    body: RodBody,
-    upv: np.ndarray,
-    min_fit_frames: int,
-    src: str,
-    warnings: list[str],
-) -> tuple[SegmentFit, SegmentFit, RodBody]:
-    """The ballistic fits before and after the impact, trimmed at their far ends; an estimated
-    centre of mass is re-estimated on the trimmed segments."""
-
-    def fit(fr: np.ndarray, far_end: str, b: RodBody) -> SegmentFit:
-        return trimmed_fit(
-            fm.poses, fr, far_end, fm.t_ref, b.com, b.axis, fm.axes, fm.origin, fm.g, min_fit_frames
-        )
-
-    pre, post = fit(pre_fr, "start", body), fit(post_fr, "end", body)
-    for name, seg in (("before", pre), ("after", post)):
-        if seg.n < min_fit_frames:
-            raise TooFewFramesError(
-                f"{src}: only {seg.n} ballistic free-flight frames {name} the impact at "
-                f"t = {fm.t_ref:.4f} s; need at least {min_fit_frames}"
-            )
-        if seg.trimmed:
-            warnings.append(
-                f"{seg.trimmed} non-ballistic frames dropped at the far end of the "
-                f"fit {name} the impact"
-            )
-    if body.com_cov is not None and (pre.trimmed or post.trimmed):
-        com, com_cov = estimate_com(fm.poses, [pre.frames, post.frames], fm.t_ref, upv, fm.g)
-        body = RodBody(com, body.axis, com_cov, body.source)
-        pre, post = fit(pre.frames, "start", body), fit(post.frames, "end", body)
-    return pre, post, body
-
-
-def _propagated(
-    fm: _Frame, pre: SegmentFit, post: SegmentFit, body: RodBody
-) -> tuple[np.ndarray, np.ndarray, list[str]]:
-    """The derived quantities (order ``DERIVED``), their covariance (the fits' and, for an
-    estimated centre of mass, its own, by refitting with C moved) and the crossing notes."""
-    tau_lo = float(fm.poses.time[pre.frames[-1]] - fm.t_ref)
-    tau_hi = float(fm.poses.time[post.frames[0]] - fm.t_ref)
-    notes: list[str] = []
-
-    def derived(x: np.ndarray) -> np.ndarray:
-        return derive(x, fm.t_ref, tau_lo, tau_hi, fm.g, fm.half, fm.R_tip, notes)
-
-    x0 = np.concatenate([pre.coef.T.ravel(), post.coef.T.ravel()])
-    cov0 = np.zeros((16, 16))
-    cov0[:8, :8] = pre.cov
-    cov0[8:, 8:] = post.cov
-    y, cov_y = propagate(derived, x0, cov0)
-    if body.com_cov is not None:
-        sig_p = np.sqrt(np.clip(np.diag(body.com_cov), 0.0, None))
-        Jp = np.zeros((y.size, 3))
-        for j in range(3):
-            h = max(sig_p[j], 1e-6)
-            ys = []
-            for sgn in (1.0, -1.0):
-                cb = body.com.copy()
-                cb[j] += sgn * h
-                xs = []
-                for seg in (pre, post):
-                    tau = fm.poses.time[seg.frames] - fm.t_ref
-                    data = segment_data(fm.poses, seg.frames, cb, body.axis, fm.axes, fm.origin)
-                    xs.append(fit_segment(tau, data, fm.g)[0].T.ravel())
-                ys.append(derived(np.concatenate(xs)))
-            Jp[:, j] = (ys[0] - ys[1]) / (2.0 * h)
-        cov_y = cov_y + Jp @ body.com_cov @ Jp.T
-    return y, cov_y, notes
-
-
-def _plausibility(
-    E_: dict[str, Estimate],
-    poses: Poses,
-    pre: SegmentFit,
-    axis_body: np.ndarray,
-    zh: np.ndarray,
-    warnings: list[str],
-) -> float:
-    """Warnings for an angle outside (0, 90) deg, an out-of-plane rod or motion; returns the
-    rod axis's median out-of-plane tilt before the impact [rad]."""
-    if not 0.0 < E_["angle_in"].value < 0.5 * math.pi:
-        warnings.append(
-            f"rod angle at impact {math.degrees(E_['angle_in'].value):.1f} deg is "
-            "outside (0, 90) deg"
-        )
-    u_pre = -np.einsum("nij,j->ni", poses.rotation[pre.frames], axis_body)
-    tilt = float(np.median(np.arcsin(np.clip(u_pre @ zh, -1, 1))))
-    if abs(tilt) > math.radians(5):
-        warnings.append(
-            f"the rod axis leaves the vertical impact plane by "
-            f"{math.degrees(tilt):.1f} deg before the impact"
-        )
-    vz_max = max(abs(E_["v_cz_in"].value), abs(E_["v_cz_out"].value))
-    if vz_max > 0.1 * abs(E_["v_tip_y_in"].value):
-        warnings.append(
-            f"out-of-plane centre-of-mass velocity up to {vz_max:.3g} m/s: the "
-            "motion is not planar, the planar analysis is approximate"
-        )
-    return tilt
 
 
 def measure_impact(
@@ -352,14 +219,14 @@ def _steps(
             "marker geometry to remove it)"
         )
     axes, origin = impact_frame(poses, int(pre_fr[-1]), body, upv, src)
-    fm = _Frame(poses, axes, origin, t_ref, g, half, R_tip)
-    pre, post, body = _fits(fm, pre_fr, post_fr, body, upv, min_fit, src, warnings)
-    y, cov_y, notes = _propagated(fm, pre, post, body)
+    fm = FitFrame(poses, axes, origin, t_ref, g, half, R_tip)
+    pre, post, body = impact_fits(fm, pre_fr, post_fr, body, upv, min_fit, src, warnings)
+    y, cov_y, notes = propagated(fm, pre, post, body)
     warnings += notes
-    _check_derived(y, src)
+    check_derived(y, src)
     sig = np.sqrt(np.clip(np.diag(cov_y), 0.0, None))
-    E_ = {n: Estimate(v, s, u_) for n, v, s, u_ in zip(DERIVED, y, sig, _UNITS, strict=True)}
-    tilt = _plausibility(E_, poses, pre, body.axis, axes[2], warnings)
+    E_ = {n: Estimate(v, s, u_) for n, v, s, u_ in zip(DERIVED, y, sig, DERIVED_UNITS, strict=True)}
+    tilt = plausibility(E_, poses, pre, body.axis, axes[2], warnings)
     estimates: dict[str, Any] = {name: E_[name] for name in _SCALARS}
     estimates.update({name: (E_[a], E_[b]) for name, (a, b) in _PAIRS.items()})
     kin = ImpactKinematics(
@@ -382,7 +249,7 @@ def _steps(
     return kin, imp
 
 
-def _geometry(fm: _Frame, body: RodBody) -> dict[str, Any]:
+def _geometry(fm: FitFrame, body: RodBody) -> dict[str, Any]:
     """The fields of :class:`ImpactKinematics` that place the rod and the impact frame."""
     return {
         "t_ref": fm.t_ref,

@@ -1,0 +1,117 @@
+"""What the commands print through: the console (made when it is used), the SI unit of every
+printed field, the (quantity, value, unit) table and ``--json``'s JSON or that table."""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Mapping
+from typing import Any
+
+from rich.console import Console
+from rich.table import Table
+from rich.text import Text
+
+from impactlab._display import field_rows
+from impactlab._json import to_json
+from impactlab.schema import FIELDS
+
+__all__ = ["EXTRA_UNITS", "SI_UNITS", "console", "emit", "print_rows"]
+
+
+class _CurrentConsole:
+    """The command's console, made when it is used: rich's ``Console`` reads ``COLUMNS`` (and
+    the terminal's size) when it is created, so one made at import would keep the width of
+    whatever environment first imported this module."""
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(Console(), name)
+
+
+console = _CurrentConsole()
+
+
+#: SI units of the fields the commands print that are not in ``impactlab.schema``.
+EXTRA_UNITS: dict[str, str] = {
+    # inversion (impactlab invert, analyze)
+    "T": "s",
+    "F": "N",
+    "T_mc": "s",
+    "F_mc": "N",
+    "T_interval_mc": "s",
+    "F_interval_mc": "N",
+    "F_momentum": "N",
+    "F_rigid": "N",
+    "K_x": "1/kg",
+    "K_y": "1/kg",
+    "alpha": "1",
+    "mu_c": "1",
+    "mc_rejected": "1",
+    "v_i": "m/s",
+    "dv_cy": "m/s",
+    "L_s": "m",
+    "pileup": "m",
+    "v_c_in_x": "m/s",
+    "v_c_in_y": "m/s",
+    "v_c_out_x": "m/s",
+    "v_c_out_y": "m/s",
+    # bodies and materials
+    "mass": "kg",
+    "length": "m",
+    "radius": "m",
+    "tip_radius": "m",
+    "inertia": "kg*m^2",
+    "E": "Pa",
+    "nu": "1",
+    "yield_strength": "Pa",
+    "brinell_hardness": "kgf/mm^2",
+    "meyer_index": "1",
+    "density": "kg/m^3",
+    # drop (impactlab drop / simulate rod --flexible)
+    "slip": "m",
+    "start": "s",
+    "x_start": "m",
+    "x_end": "m",
+    "x_min": "m",
+    "x_max": "m",
+    "contact_radius": "m",
+    "unloading_radius": "m",
+    "delta_r": "m",
+    # sweep
+    "wall_time": "s",
+    "first_task": "s",
+    "throughput": "1/s",
+}
+
+#: SI unit of every field a command prints, by name: ``impactlab.schema`` and the above.
+SI_UNITS: dict[str, str] = {name: f.unit for name, f in FIELDS.items()} | EXTRA_UNITS
+
+
+def print_rows(rows: list[tuple[str, str, str]], title: str = "") -> None:
+    """A (quantity, value, unit) table on stdout (cells are text, never rich markup)."""
+    table = Table(title=Text(title) if title else None, show_header=True, header_style="bold")
+    table.add_column("quantity", overflow="fold")
+    # fold, never cut: a word longer than the column (a source's address) is shown in full
+    table.add_column("value", justify="right", overflow="fold")
+    table.add_column("unit")
+    for name, text, unit in rows:
+        value = Text(text, justify="right" if unit else "left")  # numbers right, texts left
+        table.add_row(Text(name), value, Text(unit))
+    console.print(table)
+
+
+def emit(
+    data: Mapping[str, Any],
+    *,
+    as_json: bool,
+    title: str = "",
+    units: Mapping[str, str] | None = None,
+    sigmas: Mapping[str, Any] | None = None,
+) -> None:
+    """Print ``data`` (SI values) as JSON (``--json``: quantities as ``{"value", "unit",
+    "sigma"}``, docs/json-schema.md) or as a table in display units (``impactlab._display``).
+    ``units``: SI units of fields that are not in :data:`SI_UNITS` (or differ there)."""
+    si = {**SI_UNITS, **(units or {})}
+    if as_json:
+        print(json.dumps(to_json(data, si, sigmas), indent=2))
+        return
+    print_rows(field_rows(data, si, sigmas), title)
