@@ -116,3 +116,11 @@ def test_the_rule_is_in_the_help(monkeypatch, capsys) -> None:
     flat = " ".join(out.replace("│", " ").split())
     assert "the recorded input is the default of every option" in flat
     assert "the body is the recorded one" in FROM_RULE
+
+
+def test_the_rule_names_every_drop_override() -> None:
+    """Formerly the help named only --rate among a drop's overrides, while --stop, --t-max and
+    --rtol are taken too."""
+    flat = " ".join(FROM_RULE.split())
+    for option in ("--rtol", "--rate", "--stop", "--t-max"):
+        assert option in flat, option

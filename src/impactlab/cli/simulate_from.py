@@ -51,9 +51,9 @@ FROM_RULE = (
     "or drop, or impact_result.json: its 'input'); the recorded input is the default of every "
     "option: the kinematics (--angle, --vx or --vy replace that component, --speed with "
     "--incidence the velocity), --spin, --mu, --law (a new law drops the recorded law "
-    "parameters), --friction, --flat, --gravity/--no-gravity, --constant-angle/"
-    "--no-constant-angle and --partial-slip-cells (rigid impact) and --rate (drop) override "
-    "it; the body's options "
+    "parameters), --friction, --flat, --gravity/--no-gravity, --rtol, --constant-angle/"
+    "--no-constant-angle and --partial-slip-cells (rigid impact), and --rate, --stop and "
+    "--t-max (drop) override it; the body's options "
     "(body, --material, sizes, --inertia, modes, --damping, --flexible/--rigid) and --config "
     "are refused: the body is the recorded one."
 )
