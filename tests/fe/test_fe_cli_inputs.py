@@ -163,3 +163,12 @@ def test_verification_help_runs_nothing_and_out_names_the_folder(
     with pytest.raises(SystemExit) as stop:
         verification.cli(["a", "--out", "b"])
     assert stop.value.code == 2 and len(calls) == 3
+
+
+def test_every_modulus_and_strength_option_says_its_unit(cli_main) -> None:
+    """Formerly --body-E and --body-sy gave no unit or example, while the flat's did."""
+    code, out, _ = cli_main("fe", "indent", "--help")
+    assert code == 0
+    text = " ".join(out.replace("│", " ").split())
+    for example in ("'69 GPa'", "'276 MPa'", "'210 GPa'", "'1.5 GPa'"):
+        assert f"e.g. {example} (a bare number: Pa)" in text, example

@@ -164,9 +164,13 @@ def indent_cmd(
     flat_sy: str | None = typer.Option(
         None, "--flat-sy", help="Flat's yield strength, e.g. '276 MPa' (a bare number: Pa)."
     ),
-    body_E: str | None = typer.Option(None, "--body-E", help="Sphere's Young's modulus."),
+    body_E: str | None = typer.Option(
+        None, "--body-E", help="Sphere's Young's modulus, e.g. '210 GPa' (a bare number: Pa)."
+    ),
     body_nu: float | None = typer.Option(None, "--body-nu", help="Sphere's Poisson's ratio."),
-    body_sy: str | None = typer.Option(None, "--body-sy", help="Sphere's yield strength."),
+    body_sy: str | None = typer.Option(
+        None, "--body-sy", help="Sphere's yield strength, e.g. '1.5 GPa' (a bare number: Pa)."
+    ),
     hardening: Path | None = typer.Option(
         None,
         help="CSV of the flat's true stress [Pa], true plastic strain (first strain 0); a "
