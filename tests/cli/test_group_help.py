@@ -33,3 +33,14 @@ def test_a_usage_error_is_still_one_line(cli_main: Any) -> None:
     code, out, err = cli_main("simulate", "--no-such-option")
     assert code == 2 and out == ""
     assert err.startswith("error: No such option: --no-such-option") and err.count("\n") == 1
+
+
+def test_include_flagged_help_names_every_flag_it_keeps(cli_main) -> None:
+    """Formerly the help named three of the five flags the report excludes."""
+    from impactlab.flags import invalidating_names
+
+    code, out, _ = cli_main("sweep", "uncertainty", "--help")
+    assert code == 0
+    text = " ".join(out.replace("│", " ").split())
+    assert f"({invalidating_names()})" in text
+    assert "beyond the tip, brittle" in invalidating_names()

@@ -15,23 +15,22 @@ import json
 import os
 import sys
 import warnings
-from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Annotated, Any
+from typing import Annotated, Any
 
 import typer
-from typer.core import TyperGroup
 
 from impactlab._json import to_json
-from impactlab._validation import did_you_mean
 from impactlab.cli._common import SI_UNITS, UserError, emit
 from impactlab.cli.output_paths import existing_store
+from impactlab.cli.sweep_group import DefaultRun
 from impactlab.cli.sweep_paths import (
     check_export_file,
     check_run_paths,
     export_suffix,
     refuse_none_ok,
 )
+from impactlab.cli.sweep_run import Where, check_uncertainty_study, run_study
 from impactlab.cli.sweep_summary import (
     info_json,
     print_uncertainty,
@@ -40,9 +39,7 @@ from impactlab.cli.sweep_summary import (
     warn_incomplete,
     with_law_ranges,
 )
-
-if TYPE_CHECKING:
-    from impactlab.sweep import SweepResult
+from impactlab.flags import invalidating_names
 
 # impactlab.sweep (Zarr, xarray, pandas, scipy.stats: about 1 s) is imported inside the commands
 # that use it, so that ``impactlab --help`` and the other commands start without it.
@@ -50,102 +47,6 @@ if TYPE_CHECKING:
 #: ``--worker-timeout``'s default as its help states it; equal to
 #: ``impactlab.sweep.backends.DEFAULT_WORKER_TIMEOUT`` (tests/core/test_cli_main.py).
 WORKER_TIMEOUT_HELP_DEFAULT = 60
-
-
-#: Words for a subcommand that is spelled otherwise: the one meant.
-_MEANT = {"summary": "info", "status": "info", "show": "info", "csv": "export", "plots": "plot"}
-
-
-class _DefaultRun(TyperGroup):
-    """``impactlab sweep STUDY.toml ...`` means ``impactlab sweep run STUDY.toml ...``; a first
-    word that is no file and no path (``infoo``, ``summary``) is refused with the subcommands
-    (and the one it nearly is); a path that is no file (``study.toml``) is the run's to refuse."""
-
-    def parse_args(self, ctx: Any, args: list[str]) -> list[str]:
-        first = self._first_positional(args)
-        if first is not None and first not in self.commands:
-            if not Path(first).exists() and not {".", "/", "\\"} & set(first):
-                meant = _MEANT.get(first.lower())
-                near = f" (did you mean {meant!r}?)" if meant else ""
-                near = near or did_you_mean(first, list(self.commands))
-                raise UserError(
-                    f"no subcommand {first!r}{near} and no study file of that name; "
-                    f"subcommands: {', '.join(self.commands)} (impactlab sweep --help)"
-                )
-            args = ["run", *args]
-        return super().parse_args(ctx, args)
-
-    def _first_positional(self, args: list[str]) -> str | None:
-        """The first word of ``args`` that is no option and no option's value (``--out runs``:
-        ``runs`` is ``--out``'s value); which options take a value, click says (the group's
-        own and ``run``'s: the default subcommand)."""
-        params = [*self.params, *getattr(self.commands.get("run"), "params", [])]
-        takes_value = {
-            name
-            for p in params
-            if p.param_type_name == "option" and not (p.is_flag or p.count)
-            for name in (*p.opts, *p.secondary_opts)
-        }
-        words = iter(args)
-        for word in words:
-            if word == "--":
-                return next(words, None)
-            if not word.startswith("-"):
-                return word
-            if word in takes_value:  # "--out VALUE"; "--out=VALUE" carries its own
-                next(words, None)
-        return None
-
-
-@dataclass(frozen=True)
-class _Where:
-    """Where and how a study runs (the options shared by ``run`` and ``uncertainty``)."""
-
-    out: Path | None
-    scheduler: str | None
-    workers: int | None
-    max_cases: int | None
-    worker_timeout: float | None = None  # None: run_sweep's default
-    backend: str | None = None
-
-
-def _run(study_path: Path, where: _Where, quiet: bool, restart: bool) -> SweepResult:
-    from impactlab.sweep import Study, SweepSizeWarning, backends, run_sweep
-    from impactlab.sweep.runner import FlaggedCasesWarning
-
-    timeout = where.worker_timeout
-
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always", SweepSizeWarning)
-        study = Study.from_toml(study_path, max_cases=where.max_cases)
-    for w in caught:
-        print(f"warning: {w.message}", file=sys.stderr)
-    try:
-        with warnings.catch_warnings():  # the summary counts them (--quiet: no summary)
-            warnings.simplefilter("ignore", FlaggedCasesWarning)
-            return run_sweep(
-                study,
-                where.out,
-                scheduler=where.scheduler,
-                workers=where.workers,
-                backend=where.backend,
-                quiet=quiet,
-                restart=restart,
-                worker_timeout=backends.DEFAULT_WORKER_TIMEOUT if timeout is None else timeout,
-            )
-    except (OSError, TimeoutError) as exc:
-        if where.scheduler is not None and not isinstance(exc, backends.StoreWriteError):
-            raise UserError(
-                f"cannot use the Dask scheduler {where.scheduler!r}: {exc}; the store "
-                f"{where.out} keeps what it holds (run again to resume, with a scheduler that "
-                "answers or without --scheduler)"
-            ) from None
-        raise
-    except backends.NoWorkersError as exc:  # one line, as docs/sweep.md says
-        raise UserError(str(exc)) from None
-    except backends.WorkerLostError as exc:  # one line, as an interrupt's; not the user's input: 1
-        print(f"error: {exc}", file=sys.stderr)
-        raise typer.Exit(1) from None
 
 
 _Out = Annotated[
@@ -174,7 +75,7 @@ _Store = Annotated[Path, typer.Argument(help="A sweep's Zarr store.")]
 
 
 sweep_app = typer.Typer(
-    cls=_DefaultRun,
+    cls=DefaultRun,
     help="Grids and Monte Carlo studies of many impacts into a resumable Zarr store "
     "(impactlab sweep STUDY.toml; see docs/sweep.md).",
     no_args_is_help=True,
@@ -222,8 +123,8 @@ def run_cmd(
     check_run_paths(out, netcdf)
     if plot is not None:
         plot = output_folder(plot, "--plot")
-    where = _Where(out, scheduler, workers, max_cases, worker_timeout, backend)
-    res = _run(study, where, quiet, restart)
+    where = Where(out, scheduler, workers, max_cases, worker_timeout, backend)
+    res = run_study(study, where, quiet, restart)
     ds = res.dataset
     if netcdf is not None:
         export_netcdf(ds, netcdf)
@@ -276,8 +177,8 @@ def uncertainty_cmd(
         bool,
         typer.Option(
             "--include-flagged",
-            help="Keep the cases flagged as not plain success (energy gain, gravity-dominated, "
-            "other end); by default they are excluded and counted.",
+            help=f"Keep the cases flagged as not plain success ({invalidating_names()}); by "
+            "default they are excluded and counted.",
         ),
     ] = False,
 ) -> None:
@@ -297,27 +198,12 @@ def uncertainty_cmd(
                 "(TOML) or the Zarr store it ran into"
             )
         check_run_paths(out, None)
-        _check_uncertainty_study(source, max_cases)  # before any case is computed
-        where = _Where(out, scheduler, workers, max_cases)
-        res = _run(source, where, quiet or as_json, False)
+        check_uncertainty_study(source, max_cases)  # before any case is computed
+        where = Where(out, scheduler, workers, max_cases)
+        res = run_study(source, where, quiet or as_json, False)
         ds = res.dataset
         warn_incomplete(res.path)
     print_uncertainty(ds, outputs, percentiles, as_json, include_flagged)
-
-
-def _check_uncertainty_study(path: Path, max_cases: int | None) -> None:
-    """UserError, before the sweep runs, for a study without a Monte Carlo sample, which the
-    uncertainty report cannot summarise (its warnings are given when the sweep builds it)."""
-    from impactlab.sweep import Study
-
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        study = Study.from_toml(path, max_cases=max_cases)
-    if study.sample is None:
-        raise UserError(
-            f"{path}: the uncertainty report needs a Monte Carlo sample ([sample]); this study "
-            "is a grid only: run it with `impactlab sweep` instead"
-        )
 
 
 @sweep_app.command("info")

@@ -12,14 +12,15 @@ one writer at a time, and the study hash.
 - The root attributes hold the study hash; opening a store with a different study is refused
   unless the caller asks to start it fresh (the old store is moved aside atomically, then
   deleted).
+
+The markers' files: :mod:`~impactlab.sweep.store_markers`; the temporary siblings and what
+says a directory is a store: :mod:`~impactlab.sweep.store_siblings`.
 """
 
 from __future__ import annotations
 
-import json
 import os
 import shutil
-import socket
 from collections.abc import Iterable, Mapping, Sequence
 from pathlib import Path
 from typing import Any
@@ -28,6 +29,7 @@ import numpy as np
 import xarray as xr
 import zarr
 
+from impactlab.sweep import store_markers as markers
 from impactlab.sweep.chunkfiles import ChunkWriter, no_result_where_failed
 from impactlab.sweep.defined_arrays import (
     damaged_defined_arrays,
@@ -35,19 +37,16 @@ from impactlab.sweep.defined_arrays import (
     rewrite_defined_arrays,
 )
 from impactlab.sweep.hooks import checkpoint
-from impactlab.sweep.inputs import INPUTS, OUTPUTS
 from impactlab.sweep.integrity import (
     CorruptStoreError,
     DamagedStoreError,
     RepairableStoreError,
-    check_marker,
     check_metadata,
     damaged_error,
     marker_text,
     recorded_engine,
 )
-from impactlab.sweep.locking import acquire_lock, release_lock, stale, write_lock
-from impactlab.sweep.options import STUDY_FORMAT
+from impactlab.sweep.locking import acquire_lock, release_lock, write_lock
 from impactlab.sweep.repair import (
     mismatch_message,
     repair_metadata,
@@ -55,6 +54,7 @@ from impactlab.sweep.repair import (
     root_mismatch,
 )
 from impactlab.sweep.status import mask_undone
+from impactlab.sweep.store_siblings import clean_siblings, evidence, occupied, sibling
 from impactlab.sweep.storebuild import META, StoreMeta, build_store, rewrite_root
 from impactlab.sweep.study import Study
 
@@ -91,10 +91,6 @@ class SweepStore:
         return self.path / META
 
     @property
-    def _done_dir(self) -> Path:
-        return self._meta / "done"
-
-    @property
     def _lock(self) -> Path:
         return self._meta / "lock"
 
@@ -106,37 +102,21 @@ class SweepStore:
 
     def done_chunks(self) -> set[int]:
         """Indices of the chunks whose completion marker exists (intact or not: ``verify``)."""
-        if not self._done_dir.is_dir():
-            return set()
-        return {int(p.name) for p in self._done_dir.iterdir() if p.name.isdigit()}
+        return markers.done_chunks(self.path)
 
     def mark_done(self, index: int, text: str) -> None:
         """Create chunk ``index``'s completion marker (content ``text``) atomically (the markers'
         folder made again where it was deleted: its chunks are computed again, not lost)."""
-        final = self._done_dir / str(index)
-        tmp = self._done_dir / f".{index}.{os.getpid()}.tmp"
-        self._done_dir.mkdir(exist_ok=True)
-        tmp.write_text(text)
-        os.replace(tmp, final)
+        markers.mark_done(self.path, index, text)
 
     def verify(self, indices: Iterable[int] | None = None) -> dict[int, str]:
         """The damaged chunks among ``indices`` (default: every chunk marked done), each with
         what is wrong with it (e.g. ``"e/c.3.0: missing"``)."""
-        damaged = {}
-        for k in sorted(self.done_chunks() if indices is None else indices):
-            try:
-                text = (self._done_dir / str(k)).read_text()
-            except (OSError, UnicodeDecodeError):
-                text = ""
-            why = check_marker(self.path, text)
-            if why is not None:
-                damaged[k] = why
-        return damaged
+        return markers.damaged_chunks(self.path, self.done_chunks() if indices is None else indices)
 
     def discard(self, indices: Iterable[int]) -> None:
         """Forget chunks (remove their markers): the next run computes them again."""
-        for k in indices:
-            (self._done_dir / str(k)).unlink(missing_ok=True)
+        markers.discard(self.path, indices)
 
     def attrs(self) -> dict[str, Any]:
         """The root attributes; CorruptStoreError where the metadata is damaged (checked at the
@@ -154,37 +134,14 @@ class SweepStore:
 
     def clean_partial(self) -> int:
         """Remove temporary files left by a killed writer (Zarr's ``*.partial``, our ``*.tmp``)."""
-        count = 0
-        for root, _, files in os.walk(self.path):
-            for f in files:
-                if f.endswith(".partial") or (f.endswith(".tmp") and f.startswith(".")):
-                    os.unlink(os.path.join(root, f))
-                    count += 1
-        return count
+        return markers.clean_partial(self.path)
 
     # -- creation and removal --------------------------------------------------------------------
-
-    def _sibling(self, kind: str) -> Path:
-        """This process's temporary sibling: ``.<name>.<kind>-<host>-<pid>``."""
-        return self.path.parent / f".{self.path.name}.{kind}-{socket.gethostname()}-{os.getpid()}"
-
-    def _clean_siblings(self) -> None:
-        """Remove the temporary siblings (creating, removing) left by killed processes."""
-        for kind in ("creating", "removing"):
-            prefix = f".{self.path.name}.{kind}-"
-            if not self.path.parent.is_dir():
-                return
-            for p in self.path.parent.iterdir():
-                if not p.name.startswith(prefix):
-                    continue
-                host, _, pid = p.name[len(prefix) :].rpartition("-")
-                if pid.isdigit() and stale(host, int(pid)):
-                    shutil.rmtree(p, ignore_errors=True)
 
     def create(self, study: Study, meta: StoreMeta) -> bool:
         """Build the store for ``study`` in a temporary sibling, locked by this process, and
         rename it into place. False when another process put a store there first."""
-        tmp = self._sibling("creating")
+        tmp = sibling(self.path, "creating")
         shutil.rmtree(tmp, ignore_errors=True)
         tmp.mkdir(parents=True)
         checkpoint("create:tempdir")
@@ -194,7 +151,7 @@ class SweepStore:
         try:
             os.rename(tmp, self.path)  # replaces an empty directory, never a full one
         except OSError:
-            if not self._occupied():
+            if not occupied(self.path):
                 raise
             shutil.rmtree(tmp, ignore_errors=True)
             return False
@@ -202,37 +159,14 @@ class SweepStore:
         self._metadata_checked = True  # built here, under this process's lock
         return True
 
-    def _occupied(self) -> bool:
-        return self.path.exists() and (not self.path.is_dir() or any(self.path.iterdir()))
-
-    def _evidence(self) -> str:
-        """What says that impactlab made this directory: ``"store"`` (a ``.sweep`` folder or the
-        root attributes of a sweep: a store, possibly cut short by an older impactlab),
-        ``"group"`` (a Zarr group holding nothing but arrays named like a sweep's: an older
-        impactlab killed before it wrote the attributes), or ``""`` (nothing: not ours)."""
-        if self._meta.is_dir():
-            return "store"
-        try:
-            root = json.loads((self.path / "zarr.json").read_text())
-        except (OSError, ValueError):
-            return ""
-        if not isinstance(root, dict) or root.get("node_type") not in (None, "group"):
-            return ""
-        attrs = root.get("attributes")
-        if isinstance(attrs, dict) and attrs.get("sweep_format") == STUDY_FORMAT:
-            return "store"
-        names = {*INPUTS, *OUTPUTS, "status", "zarr.json"}
-        ours = all(p.name in names for p in self.path.iterdir())
-        return "group" if ours and root.get("node_type") == "group" else ""
-
     def remove(self) -> None:
         """Delete the store (to start a changed study fresh, on explicit request): moved aside
         atomically, then deleted, so a kill midway leaves no half-deleted store."""
         if not self.path.exists():
             return
-        if self._occupied() and not self._evidence():
+        if occupied(self.path) and not evidence(self.path):
             raise ValueError(f"refusing to remove {str(self.path)!r}: not a sweep store")
-        trash = self._sibling("removing")
+        trash = sibling(self.path, "removing")
         shutil.rmtree(trash, ignore_errors=True)
         self._metadata_checked = False
         os.rename(self.path, trash)
@@ -247,14 +181,14 @@ class SweepStore:
         unless ``restart=True``, which deletes it and starts fresh. A store whose creation was
         interrupted holds no results and is started afresh.
         """
-        self._clean_siblings()
+        clean_siblings(self.path)
         if not self.exists():
             restore_study_record(self.path, study, meta)
-        if self._occupied() and not self.exists():
-            evidence = self._evidence()
-            if not evidence:
+        if occupied(self.path) and not self.exists():
+            found = evidence(self.path)
+            if not found:
                 raise ValueError(f"{str(self.path)!r} is not a sweep store; choose another --out")
-            if (evidence == "group" or self.done_chunks()) and not restart:
+            if (found == "group" or self.done_chunks()) and not restart:
                 raise ValueError(
                     f"store {str(self.path)!r} lacks its study record (.sweep/study.json): its "
                     f"creation was cut short; run with --restart (restart=True in Python) to "

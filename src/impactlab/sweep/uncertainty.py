@@ -53,7 +53,8 @@ class UncertaintyReport:
     n_cases, n_invalid : sample size and cases excluded as invalid (status > 0: the engine's
         failures, the sweep's refusals).
     n_flagged : computed cases carrying a flag that says they are not plain success (energy
-        gain, gravity-dominated, the other end; ``impactlab.flags``), excluded unless the
+        gain, gravity-dominated, other end, beyond the tip, brittle:
+        ``impactlab.flags.invalidating_names``), excluded unless the
         report was asked to include them (``flagged_included``).
     n_not_computed : cases of an incomplete store not computed yet (status -1), excluded too.
     n_extrapolated : cases used in the statistics whose law was extrapolated (the advisory
