@@ -26,7 +26,6 @@ from __future__ import annotations
 
 import hashlib
 import json
-import math
 from collections.abc import Callable
 from typing import Any
 
@@ -37,13 +36,11 @@ from impactlab.contact._common import jg_critical
 from impactlab.contact.indentation_data import IndentationCurves, curves_from_record
 from impactlab.contact.loading_fit import held_out_method, scatter_note
 from impactlab.contact.names import Law
-from impactlab.contact.table_input import (
-    HERTZ_TOLERANCE,
-    PLAUSIBLE_RADIUS,
-    hertz_offset,
-    radius_hint,
-    two,
-)
+from impactlab.contact.sample_checks import check_below_radius as _check_below_radius
+from impactlab.contact.sample_checks import check_hertz_switch as _check_switch
+from impactlab.contact.sample_checks import check_samples as _check_samples
+from impactlab.contact.sample_checks import sample_values as _values
+from impactlab.contact.table_input import PLAUSIBLE_RADIUS
 from impactlab.contact.tabulated import (
     Tabulated,
     interpolation_error,
@@ -200,93 +197,6 @@ def law_from_record(record: Any) -> RegisteredLaw:
         )
     except (KeyError, TypeError, IndexError) as exc:
         raise ValueError(f"registered contact law's record: missing or bad entry {exc}") from None
-
-
-def _values(what: str, fn: Callable[[float], Any], x: np.ndarray) -> np.ndarray:
-    """``fn`` at every point of ``x`` (floats in, one finite float out each)."""
-    out = np.empty(x.size)
-    for i, xi in enumerate(x):
-        try:
-            v = float(fn(float(xi)))
-        except Exception as exc:  # a user's function: say which call failed
-            raise ValueError(f"{what}({float(xi)!r}) raised {type(exc).__name__}: {exc}") from None
-        if not math.isfinite(v):
-            raise ValueError(f"{what}({float(xi)!r}) returned {v!r}; it must be finite")
-        out[i] = v
-    return out
-
-
-#: Units a bare length may have been meant in, and their size in m.
-_MEANT_UNITS = (("mm", 1e-3), ("um", 1e-6))
-
-
-def _check_below_radius(given: Any, top: float, radius: float, d0: float) -> None:
-    """ValueError naming ``delta_max`` (as ``given``: ``top`` [m]) and ``radius`` [m] unless
-    ``top`` lies below the radius; for a bare number, the unit it may have been meant in."""
-    if top < radius:
-        return
-    shown = f"{top:.4g} m" if isinstance(given, int | float) else f"{given!r} ({top:.4g} m)"
-    meant = next((u for u, size in _MEANT_UNITS if d0 < top * size < radius), None)
-    hint = ""
-    if isinstance(given, int | float):
-        hint = " (a bare number is m" + (f": '{top:g} {meant}'?)" if meant else ")")
-    raise ValueError(f"delta_max = {shown} must be smaller than radius = {radius:.4g} m{hint}")
-
-
-def _check_samples(
-    name: str, grid: np.ndarray, forces: np.ndarray, residual: np.ndarray, default: bool
-) -> None:
-    """ValueError naming the callable, the value it returned and the interference [m] of the
-    sample where ``forces`` (``loading`` at ``grid``) are not > 0 or decrease, or where
-    ``residual`` (``unloading`` at ``grid``) is not in [0, delta_max) or not 0 at the first
-    sample (the elastic limit: ``switch_interference``, by default the pair's delta_c)."""
-    start = "the pair's delta_c" if default else "switch_interference"
-    d, f, r = grid, forces, residual
-    bad = np.flatnonzero(~(f > 0.0))
-    if bad.size:
-        i = int(bad[0])
-        raise ValueError(
-            f"law {name!r}: F = loading(delta) must be > 0 N from {start} to delta_max, got "
-            f"{f[i]:.4g} N at delta = {d[i]:.4g} m"
-        )
-    bad = np.flatnonzero(np.diff(f) < 0.0)
-    if bad.size:
-        i = int(bad[0]) + 1
-        raise ValueError(
-            f"law {name!r}: F = loading(delta) must not decrease with delta, got "
-            f"{two(f[i - 1], f[i], 'N')} at delta = {two(d[i - 1], d[i], 'm')}"
-        )
-    if r[0] != 0.0:
-        raise ValueError(
-            f"law {name!r}: delta_r = unloading(delta_max) must be 0 at the elastic limit "
-            f"({start}, {d[0]:.4g} m: Hertz, no residual depth), got {r[0]:.4g} m"
-        )
-    bad = np.flatnonzero(~((r >= 0.0) & (r < d)))
-    if bad.size:
-        i = int(bad[0])
-        raise ValueError(
-            f"law {name!r}: delta_r = unloading(delta_max) must lie in [0, delta_max), got "
-            f"{r[i]:.4g} m at delta_max = {d[i]:.4g} m"
-        )
-
-
-def _check_switch(
-    name: str, pair: ContactPair, radius: float, d0: float, f0: float, default: bool
-) -> None:
-    """ValueError unless the callable's force ``f0`` [N] at the switch ``d0`` [m], where the
-    sampled law leaves Hertz, lies within ``HERTZ_TOLERANCE`` of Hertz's (``f0`` > 0:
-    ``_check_samples``)."""
-    hertz, off = hertz_offset(pair, radius, d0, f0)
-    if abs(off) <= HERTZ_TOLERANCE:
-        return
-    which = ", by default the pair's Jackson-Green delta_c" if default else ""
-    raise ValueError(
-        f"law {name!r}: F(switch_interference = {d0:.4g} m{which}) is {f0:.4g} N, "
-        f"{100 * off:+.1f} % from Hertz's {hertz:.4g} N for this pair and radius = "
-        f"{radius:.4g} m (the law is Hertz up to the switch: within "
-        f"{100 * HERTZ_TOLERANCE:g} % needed): give switch_interference=<where F leaves Hertz>"
-        + radius_hint(off, radius, pair)
-    )
 
 
 def sample_law(

@@ -1,0 +1,162 @@
+"""A record's values as JSON-ready data and back: dataclasses as ``{"type": ..., <field>: ...}``,
+floats as quantity objects ``{"value": v, "unit": "..."}`` in SI (``UNITS``), read back in any
+unit pint converts (``encode``, ``decode``).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+
+from impactlab._html import FIELD_UNITS
+from impactlab.bodies import Rod, Sphere
+from impactlab.bodies.flexible_rod import FlexibleRod
+from impactlab.contact import ContactModel
+from impactlab.materials import ContactPair, Material
+
+__all__ = ["UNITS", "decode", "encode", "key_form", "quantity"]
+
+#: The classes a record may name, by ``type``.
+_TYPES: dict[str, type] = {
+    cls.__name__: cls for cls in (Material, ContactPair, Rod, Sphere, FlexibleRod, ContactModel)
+}
+
+#: SI units of ``simulate``'s scalar arguments (and of the body and material fields).
+UNITS: dict[str, str] = {
+    **FIELD_UNITS, "angle": "rad", "velocity": "m/s", "spin": "rad/s", "gravity": "m/s^2",
+    "mu": "1", "rtol": "1", "params": "1", "t_max": "s",
+}  # fmt: skip
+#: The unit written for a float field whose unit is not known here.
+_UNKNOWN_UNIT = "SI"
+
+
+def quantity(value: float, unit: str) -> dict[str, Any]:
+    """``value`` [``unit``] as a quantity object (a non-finite one as ``nonfinite``)."""
+    if math.isfinite(value):
+        return {"value": value, "unit": unit}
+    return {"value": None, "unit": unit, "nonfinite": repr(value)}
+
+
+def encode(value: Any, key: str = "") -> Any:
+    """``value`` as JSON-ready data: a dataclass as ``{"type", fields...}``, a float as a
+    quantity object (unit by ``key``), a pint Quantity or a numpy value as SI numbers, tuples
+    and arrays as lists."""
+    if dataclasses.is_dataclass(value) and not isinstance(value, type):
+        out: dict[str, Any] = {"type": type(value).__name__}
+        for f in dataclasses.fields(value):
+            if f.init and not f.name.startswith("_"):
+                out[f.name] = encode(getattr(value, f.name), f.name)
+        if isinstance(value, ContactModel):  # the compiled parameters define the model
+            out["params"] = encode([float(p) for p in value.params], "params")
+            out["details"] = {k: encode(float(v), "") for k, v in value.details.items()}
+            out.pop("references", None)
+        return out
+    if hasattr(value, "to_base_units") and hasattr(value, "magnitude"):  # pint, any registry
+        return encode(float(value.to_base_units().magnitude), key)
+    if isinstance(value, bool | np.bool_):
+        return bool(value)
+    if isinstance(value, int | np.integer):
+        return int(value)
+    if isinstance(value, float | np.floating):
+        return quantity(float(value), UNITS.get(key, _UNKNOWN_UNIT))
+    if isinstance(value, np.ndarray):
+        value = value.tolist()
+    if isinstance(value, list | tuple):
+        unit = UNITS.get(key, _UNKNOWN_UNIT)
+        if value and all(isinstance(v, float | int) and not isinstance(v, bool) for v in value):
+            if all(math.isfinite(v) for v in value):
+                return {"value": [float(v) for v in value], "unit": unit}
+            return [quantity(float(v), unit) for v in value]  # inf/NaN kept, one by one
+        return [encode(v, key) for v in value]
+    if isinstance(value, Mapping):
+        return {str(k): encode(v, str(k)) for k, v in value.items()}
+    return value
+
+
+def decode(data: Any, key: str = "", units: Mapping[str, str] | None = None) -> Any:
+    """The Python values of :func:`encode`'s data: quantity objects to numbers (or lists) in
+    the unit :func:`encode` writes for their key (``units``, default ``UNITS``; a field of
+    unknown unit in SI), converted from the unit the object names (a record edited by hand
+    may say ``{"value": 5, "unit": "mm"}``); ``{"type": ...}`` to the named class.
+    ValueError for an unknown type, an unknown unit or a unit of the wrong dimension."""
+    units = UNITS if units is None else units
+    if isinstance(data, Mapping):
+        if "value" in data and "unit" in data:
+            return _quantity_value(data, key, units)
+        if "type" in data:
+            name = data["type"]
+            cls = _TYPES.get(name)
+            if cls is None:
+                raise ValueError(f"unknown type {name!r} in the record; known: {sorted(_TYPES)}")
+            fields = {k: decode(v, k) for k, v in data.items() if k != "type"}
+            return _build(cls, fields)
+        return {k: decode(v, k, units) for k, v in data.items()}
+    if isinstance(data, list):
+        return [decode(v, key, units) for v in data]
+    return data
+
+
+def _quantity_value(data: Mapping[str, Any], key: str, units: Mapping[str, str]) -> Any:
+    """The number (or list) of a quantity object in the unit written for ``key``."""
+    if "nonfinite" in data:
+        return float(data["nonfinite"])
+    v = data["value"]
+    value = [float(x) for x in v] if isinstance(v, list) else v
+    unit, want = data["unit"], units.get(key, _UNKNOWN_UNIT)
+    if value is None or unit in (want, _UNKNOWN_UNIT):
+        return value
+    return _converted(value, unit, want, key)
+
+
+def _converted(value: Any, unit: Any, want: str, key: str) -> Any:
+    """``value`` [``unit``] in ``want`` (SI base units where ``want`` is not known)."""
+    import pint
+
+    from impactlab.units import registry
+
+    name = f"the record's {key!r}" if key else "a quantity of the record"
+    reg = registry()
+    try:
+        q = reg.Quantity(np.asarray(value, dtype=float), str(unit))
+        out = q.to_base_units() if want == _UNKNOWN_UNIT else q.to(want)
+    except pint.DimensionalityError:
+        raise ValueError(
+            f"{name}: the unit {unit!r} is not a unit of {want} (the value {value!r})"
+        ) from None
+    except Exception as exc:  # an unknown unit name: pint raises several types
+        raise ValueError(f"{name}: cannot read the unit {unit!r} ({exc})") from None
+    m = np.asarray(out.magnitude, dtype=float)
+    return [float(x) for x in m] if isinstance(value, list) else float(m)
+
+
+def _build(cls: type, values: dict[str, Any]) -> Any:
+    """``cls(**values)`` of a record (a Sphere takes its mass; the density follows)."""
+    if cls is ContactModel:
+        values = {k: v for k, v in values.items() if k in ("name", "law_id", "params", "details")}
+    if cls is Sphere and values.get("mass") is not None:
+        values.pop("density", None)  # one of the two; the mass is what the dynamics use
+    fields = [f for f in dataclasses.fields(cls) if f.init]
+    known = {f.name for f in fields}
+    unknown = sorted(set(values) - known)
+    if unknown:
+        raise ValueError(
+            f"the record's {cls.__name__} has field(s) {unknown} this impactlab does not know; "
+            f"known: {sorted(known)}"
+        )
+    required = [f.name for f in fields if f.default is f.default_factory is dataclasses.MISSING]
+    if lacking := [k for k in required if k not in values]:  # a field without a default
+        forms = ", ".join(key_form(k) for k in lacking)
+        raise ValueError(f"the record's {cls.__name__} lacks {forms}: every record holds it")
+    return cls(**values)
+
+
+def key_form(key: str) -> str:
+    """``key`` named, with its quantity object's form (for the error that it is missing)."""
+    if key not in UNITS:
+        return repr(key)
+    value = "[vx, vy]" if key == "velocity" else "[...]" if key == "params" else "..."
+    return f'{key!r} ({{"value": {value}, "unit": "{UNITS[key]}"}})'
