@@ -42,7 +42,7 @@ from impactlab.contact.rate import RATE_LAWS
 from impactlab.dynamics.derived import e_gravity_removed
 from impactlab.dynamics.input_checks import gravity_value
 from impactlab.flags import FLAG_LAW_EXTRAPOLATED
-from impactlab.friction import get_friction
+from impactlab.friction import PARTIAL_SLIP_CELLS, get_friction
 from impactlab.materials import get_material
 from impactlab.sweep.engine import ENGINE, Evaluator
 from impactlab.sweep.flexible import DROP_OUTPUTS, FLEXIBLE_BODY, MEASURED_AS
@@ -200,6 +200,7 @@ def predict(
 ) -> Prediction:
     """Predict every measured quantity of every drop at each row of ``theta`` (W, P), the
     values of ``params`` (SI). One evaluator call per group of drops sharing their categories."""
+    _check_cells(model, engine)
     theta = np.atleast_2d(np.asarray(theta, dtype=np.float64))
     w, d_all = theta.shape[0], meas.n_drops
     quantities = meas.quantities
@@ -241,6 +242,26 @@ def predict(
             got = _derived(q, res, cases)
             values[q][:, idx] = np.where(st == 0, got, np.nan).reshape(w, nd)
     return Prediction(values, status, extrapolated)
+
+
+def _check_cells(model: CandidateModel, engine: Mapping[str, Any] | None) -> None:
+    """ValueError when ``engine`` sets ``partial_slip_cells`` to another count than the default
+    for a model that never uses it (only a rigid body with friction ``partial_slip`` does; a
+    flexible rod's drop has its compiled cells), as ``calibrate`` refuses it."""
+    n = dict(engine or {}).get("partial_slip_cells")
+    if n is None or n == PARTIAL_SLIP_CELLS:
+        return
+    friction = get_friction(model.friction).name
+    if friction != "partial_slip" or model.body is not None:
+        kind = (
+            "a flexible rod's drop (its cells are compiled)"
+            if model.body
+            else (f"friction {friction!r}")
+        )
+        raise ValueError(
+            f"engine partial_slip_cells = {n} sets the cells of friction 'partial_slip' on a "
+            f"rigid body only, and model {model.name!r} is {kind}: leave it out"
+        )
 
 
 def whole_materials(cat: dict[str, str], cases: dict[str, np.ndarray]) -> dict[str, str]:
