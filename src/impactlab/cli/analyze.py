@@ -79,7 +79,9 @@ def _geometry_from(spec: str | None, rod_data: dict[str, Any]) -> MarkerGeometry
 
 def analyze_cmd(
     markers: Path = typer.Argument(
-        ..., help="Marker tracks: C3D (.c3d), or CSV text (.csv, .txt or .tsv)."
+        ...,
+        help="Marker tracks: C3D (.c3d), or text (.csv, .txt or .tsv): impactlab's marker CSV, "
+        "a Qualisys QTM TSV export or a Vicon Nexus CSV export (Trajectories).",
     ),
     scan: Path = typer.Argument(
         ..., help="Dent scan (X3P, SUR, PLU, DATX, VK, OPD, GWY, SDF, NetCDF, ..., .npy/.csv)."

@@ -1,6 +1,11 @@
 """The marker cluster of the rod and its pose in every frame (the first steps of
 :func:`~impactlab.experiment.kinematics.measure_impact`).
 
+With a marker geometry that names its markers only those are used; the file's other markers (a
+ghost reflection, a marker on the table) are left out, and a warning names them. Without one,
+every marker is taken as the rod's, and one that lies far from or moves against the others is
+named in the error, with the way to leave it out.
+
 Wrong samples are left out before any fit: a coordinate absurdly far from its marker's track
 (garbage bytes) is masked, and a frame whose pose leaves a marker far off the rigid cluster
 (Kabsch residual above ``OUTLIER_TOLERANCES`` times the rigidity tolerance: a glitch, labels
@@ -15,7 +20,12 @@ from typing import Any
 import numpy as np
 
 from impactlab.experiment.errors import MarkerError, RigidityError, TooFewFramesError
-from impactlab.experiment.kinematics.marker_scale import check_marker_spread, free_fall_units_hint
+from impactlab.experiment.kinematics.marker_scale import (
+    check_marker_spread,
+    free_fall_units_hint,
+    not_on_rod_hint,
+    odd_markers,
+)
 from impactlab.experiment.kinematics.mirror import check_not_mirrored_shape
 from impactlab.experiment.markers import MarkerTracks
 from impactlab.experiment.rigid import (
@@ -39,26 +49,70 @@ ABSURD_SPANS = 1.0e3
 _NAMED = 5
 
 
+def _geometry_markers(
+    tracks: MarkerTracks, geometry: MarkerGeometry | None, src: str, warnings: list[str]
+) -> MarkerTracks:
+    """The tracks of the markers the geometry names (all without a geometry or its labels),
+    with a warning in ``warnings`` naming the file's other markers."""
+    if geometry is None:
+        return tracks
+    if geometry.labels is None:
+        if geometry.markers.shape[0] != tracks.n_markers:
+            raise MarkerError(
+                f"{src}: the marker geometry has {geometry.markers.shape[0]} "
+                f"markers but the file has {tracks.n_markers} {list(tracks.labels)}; name "
+                "each marker of the geometry by its label (a [markers] table: the file's other "
+                "markers are then left out)"
+            )
+        return tracks
+    missing = [lab for lab in geometry.labels if lab not in tracks.labels]
+    if missing:
+        prefixed = [lab for lab in tracks.labels if lab.rpartition(":")[2] in missing]
+        hint = (
+            f"; the file's labels carry a prefix (a subject name): write them as in the file "
+            f"({', '.join(repr(lab) for lab in prefixed)}) in the geometry"
+            if prefixed
+            else ""
+        )
+        raise MarkerError(
+            f"{src}: the marker geometry names markers {missing} that the "
+            f"file does not have (it has {list(tracks.labels)}){hint}"
+        )
+    others = [lab for lab in tracks.labels if lab not in geometry.labels]
+    if others:
+        warnings.append(
+            f"marker{'s' if len(others) > 1 else ''} {', '.join(others)} in the file "
+            f"{'are' if len(others) > 1 else 'is'} not in the marker geometry and left out "
+            f"(the rod's markers: {', '.join(geometry.labels)})"
+        )
+    return tracks.select(list(geometry.labels))
+
+
+def _loose_hint(tracks: MarkerTracks, tolerance: float, window: int) -> str:
+    """Without a geometry: the markers that move against three or more others that move as
+    one body, and how to leave them out ("" when there are none)."""
+    report = check_rigidity(tracks, tolerance=tolerance, window=window, raise_error=False)
+    index = {lab: i for i, lab in enumerate(tracks.labels)}
+    drift = np.zeros((tracks.n_markers, tracks.n_markers))
+    for (a, b), (_med, d) in report.pairs.items():
+        drift[index[a], index[b]] = drift[index[b], index[a]] = d
+    odd = odd_markers(tracks.labels, drift > tolerance, drift)
+    if not odd:
+        return ""
+    rod = [lab for lab in tracks.labels if lab not in odd]
+    return (
+        f"; {', '.join(odd)} move{'' if len(odd) > 1 else 's'} against the other markers "
+        f"({', '.join(rod)}), which move as one body{not_on_rod_hint(odd, tracks.labels)}"
+    )
+
+
 def _cluster(
-    tracks: MarkerTracks, geometry: MarkerGeometry | None, src: str
+    tracks: MarkerTracks, geometry: MarkerGeometry | None
 ) -> tuple[MarkerTracks, np.ndarray]:
-    """(the tracks of the geometry's markers, the reference cluster in the body frame)."""
+    """(the tracks of the geometry's markers, from :func:`_geometry_markers`; the reference
+    cluster in the body frame)."""
     if geometry is None:
         return tracks, reference_cluster(tracks)
-    if geometry.labels is not None:
-        missing = [lab for lab in geometry.labels if lab not in tracks.labels]
-        if missing:
-            raise MarkerError(
-                f"{src}: the marker geometry names markers {missing} that the "
-                f"file does not have (it has {list(tracks.labels)})"
-            )
-        tracks = tracks.select(list(geometry.labels))
-    elif geometry.markers.shape[0] != tracks.n_markers:
-        raise MarkerError(
-            f"{src}: the marker geometry has {geometry.markers.shape[0]} "
-            f"markers {list(geometry.labels or [])} but the file has "
-            f"{tracks.n_markers} {list(tracks.labels)}"
-        )
     return tracks, np.asarray(geometry.markers, dtype=np.float64)
 
 
@@ -148,15 +202,19 @@ def marker_poses(
     """(reference cluster, rigidity report, poses, frames with a pose). Coordinates in a wrong
     length unit (markers farther apart than the rod is long, or a rigidity failure with a fall
     far from ``g`` [m/s^2]) are named as such before any loose marker; wrong samples are left
-    out (module docstring) with a warning in ``warnings``."""
-    check_marker_spread(tracks, rod_length, src)
-    tracks, reference = _cluster(tracks, geometry, src)
+    out (module docstring) with a warning in ``warnings``, and so are markers the geometry
+    does not name."""
+    tracks = _geometry_markers(tracks, geometry, src, warnings)
+    check_marker_spread(tracks, rod_length, src, all_on_rod=geometry is not None, upv=upv, g=g)
+    tracks, reference = _cluster(tracks, geometry)
     span = ABSURD_SPANS * max(rod_length, float(np.ptp(reference, axis=0).max()))
     tracks, absurd = _mask_absurd(tracks, span)
     try:
         rigidity = check_rigidity(tracks, tolerance=rigidity_tolerance, window=rigidity_window)
     except RigidityError as exc:
         hint = free_fall_units_hint(tracks, upv, g)
+        if not hint and geometry is None:
+            hint = _loose_hint(tracks, rigidity_tolerance, rigidity_window)
         if not hint:
             raise
         raise RigidityError(f"{exc}{hint}") from None

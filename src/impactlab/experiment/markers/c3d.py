@@ -3,9 +3,10 @@
 The file is read with ``ezc3d``; when ezc3d is missing or fails on the file, the pure-Python
 ``c3d`` package is tried. Point units come from the ``POINT:UNITS`` parameter (e.g. "mm") unless
 ``units=`` overrides them; samples with a negative residual (the C3D convention for an invalid
-point) or non-finite coordinates are masked (NaN), never used. A file whose data section is
-shorter than its header announces (a truncated file) is refused: both readers would otherwise
-silently return the frames that happen to be there.
+point), non-finite coordinates or all three coordinates exactly zero (how BTK and several
+exporters write a missing marker, whatever its residual) are masked (NaN), never used. A file
+whose data section is shorter than its header announces (a truncated file) is refused: both
+readers would otherwise silently return the frames that happen to be there.
 """
 
 from __future__ import annotations
@@ -101,6 +102,16 @@ def _check_header_first(path: Path) -> None:
             raise
 
 
+def _mask_invalid(xyz: np.ndarray, residual: np.ndarray | None) -> None:
+    """Mask (NaN, in place) the points of ``xyz`` (..., 3) that are missing: a negative or
+    non-finite ``residual`` (same shape without the last axis; None: no residuals), or all three
+    coordinates exactly zero (a gap written as the origin)."""
+    bad = np.all(xyz == 0.0, axis=-1)
+    if residual is not None:
+        bad |= ~(np.isfinite(residual) & (residual >= 0.0))
+    xyz[bad] = np.nan
+
+
 def _read_ezc3d(path: Path) -> dict[str, Any]:
     import ezc3d  # the backends are imported on use: read_c3d falls back when one is missing
 
@@ -111,9 +122,8 @@ def _read_ezc3d(path: Path) -> dict[str, Any]:
         raise ValueError(f"unexpected point array shape {pts.shape}")
     xyz = np.transpose(pts[:3], (2, 1, 0)).copy()  # (n, m, 3)
     res = c["data"]["meta_points"].get("residuals") if "meta_points" in c["data"] else None
-    if res is not None and np.size(res):
-        r = np.asarray(res, dtype=np.float64)[0].T  # (n, m)
-        xyz[~(np.isfinite(r) & (r >= 0.0))] = np.nan
+    r = np.asarray(res, dtype=np.float64)[0].T if res is not None and np.size(res) else None
+    _mask_invalid(xyz, r)  # r: (n, m)
     labels = list(params["LABELS"]["value"]) if "LABELS" in params else []
     units = None
     if "UNITS" in params and params["UNITS"]["value"]:
@@ -140,9 +150,7 @@ def _read_pyc3d(path: Path) -> dict[str, Any]:
         for _i, points, _analog in r.read_frames(copy=True):
             p = np.asarray(points, dtype=np.float64)
             xyz = p[:, :3].copy()
-            if p.shape[1] > 3:
-                resid = p[:, 3]
-                xyz[~(np.isfinite(resid) & (resid >= 0.0))] = np.nan
+            _mask_invalid(xyz, p[:, 3] if p.shape[1] > 3 else None)
             frames.append(xyz)
         labels = [str(s).strip() for s in r.point_labels]
         try:

@@ -6,9 +6,10 @@
     0.000,12.31,45.60,301.2,...
     0.002,,,,...                <- empty cells (or NaN) mark an occluded marker
 
-The first column is ``time`` [s] (or ``frame``, a frame number, with a rate); then three columns
-per marker named ``<label>_x``, ``<label>_y``, ``<label>_z`` (separators ``_ . :`` or a space,
-any case). Commas, semicolons or tabs separate the fields.
+The first column is ``time`` [s] (``t``; a unit in brackets or after an underscore is read:
+``Time (s)``, ``time [ms]``, ``time_ms``) or ``frame`` (a frame number, with a rate); then three
+columns per marker named ``<label>_x``, ``<label>_y``, ``<label>_z`` (separators ``_ . :`` or a
+space, any case). Commas, semicolons or tabs separate the fields.
 """
 
 from __future__ import annotations
@@ -36,13 +37,53 @@ from impactlab.experiment.textfiles import (
     read_text,
     split_commented,
 )
+from impactlab.units import to_si
 
-__all__ = ["read_csv_markers", "write_csv_markers"]
+__all__ = ["TEXT_LAYOUTS", "read_csv_markers", "write_csv_markers"]
+
+#: The marker text layouts read (by :func:`~impactlab.experiment.markers.read_markers`), for
+#: messages.
+TEXT_LAYOUTS = (
+    "the text layouts read are impactlab's marker CSV ('time,<label>_x,<label>_y,<label>_z,...' "
+    "under a '# units: mm' line: docs/experiment.md, Marker tracks), a Qualisys QTM TSV export "
+    "of 3D data (header lines NO_OF_FRAMES, FREQUENCY, ..., MARKER_NAMES) and a Vicon Nexus CSV "
+    "export of 'Trajectories'; from other software, export C3D (.c3d)"
+)
+
+#: A time column's name: ``time`` or ``t``, its unit in brackets or after an underscore.
+_TIME = re.compile(
+    r"(?i)^(?:time|t)(?:\s*[\[(]\s*(?P<unit>[^\])]*?)\s*[\])]|_(?P<bare>[a-zµμ]+))?$"
+)
 
 #: The separators' names, for messages.
 _SEPARATOR_NAMES = {",": "comma", ";": "semicolon", "\t": "tab"}
 
 _COORD = re.compile(r"^(?P<label>.+?)[\s_.:]+(?P<axis>[xyzXYZ])$")
+
+
+def time_unit(p: Path, header_ln: int, name: str) -> float | None:
+    """Seconds per unit of the first column named ``name`` (``time``, ``t``, ``Time (s)``, ``time
+    [ms]``, ``time_ms``: 1 without a unit); None for ``frame``; FileFormatError otherwise."""
+    if name.lower() == "frame":
+        return None
+    m = _TIME.match(name)
+    if m is None:
+        raise FileFormatError(
+            p,
+            f"line {header_ln}: the first column must be 'time' (seconds; 'Time (s)', 'time "
+            f"(ms)' with its unit) or 'frame', got {name!r}; {TEXT_LAYOUTS}",
+        )
+    unit = m.group("unit") or m.group("bare")
+    if unit is None:
+        return 1.0
+    try:
+        return to_si(f"1 {unit}", "s", name=f"the time column {name!r}")
+    except ValueError:
+        raise FileFormatError(
+            p,
+            f"line {header_ln}: the first column {name!r} is not in a unit of time ({unit!r}); "
+            "write 'time' (seconds), 'time (ms)' or 'frame'",
+        ) from None
 
 
 def _header(p: Path, header_ln: int, header: str) -> tuple[str, list[str], list[str]]:
@@ -52,16 +93,10 @@ def _header(p: Path, header_ln: int, header: str) -> tuple[str, list[str], list[
         raise FileFormatError(
             p,
             f"line {header_ln}: the header has a single column; expected "
-            "'time,<label>_x,<label>_y,<label>_z,...' separated by commas",
+            f"'time,<label>_x,<label>_y,<label>_z,...' separated by commas; {TEXT_LAYOUTS}",
         )
     names = [c.strip() for c in next(csv.reader([header], delimiter=delim))]
-    first = names[0].lower()
-    if first not in ("time", "t", "time_s", "time [s]", "frame"):
-        raise FileFormatError(
-            p,
-            f"line {header_ln}: the first column must be 'time' (seconds) "
-            f"or 'frame', got {names[0]!r}",
-        )
+    time_unit(p, header_ln, names[0])
     coord_cols = names[1:]
     if len(coord_cols) == 0 or len(coord_cols) % 3:
         empty = (
@@ -268,7 +303,9 @@ def read_csv_markers(
         raise FileFormatError(p, f"only {data.shape[0]} data rows; need at least 2 frames")
     unit, fac = _unit(p, units, meta)
     lines = [ln for ln, _ in rows[1:]]
-    tcol = _time(p, data[:, 0], names[0].lower() == "frame", rate, meta, lines)
+    seconds = time_unit(p, header_ln, names[0])
+    first = data[:, 0] if seconds is None else data[:, 0] * seconds
+    tcol = _time(p, first, seconds is None, rate, meta, lines)
     xyz = data[:, 1:].reshape(data.shape[0], len(labels), 3) * fac
     return MarkerTracks(tcol, xyz, tuple(labels), str(p), {"format": "csv", "units": unit})
 
