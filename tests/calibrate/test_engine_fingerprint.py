@@ -99,3 +99,18 @@ def test_the_stored_parts_name_the_engine(data, tmp_path):
     with h5py.File(tmp_path / CHAIN, "r") as f:
         parts = json.loads(f["chain"].attrs["impactlab_parts"])
     assert parts["engine"] == S._hash([("gravity", 9.81), ("rtol", None)])
+
+
+def test_a_chain_saved_without_correlations_is_not_resumed_with_them(data, tmp_path):
+    """The correlations change the likelihood: a chain saved without them is refused, naming
+    them, and one saved with them resumes with the same ones."""
+    import dataclasses
+
+    _run(data, state_dir=tmp_path)
+    rho = {("e", "spin_out"): np.full(data.n_drops, -0.9)}
+    correlated = dataclasses.replace(data, correlation=rho)
+    with pytest.raises(SavedChainError, match=r"the drops' correlation coefficients changed"):
+        _run(correlated, state_dir=tmp_path)
+    other = tmp_path / "correlated"
+    _run(correlated, state_dir=other)
+    assert _resumed(correlated, other, None)

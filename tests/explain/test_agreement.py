@@ -74,10 +74,10 @@ def _explained(outcomes) -> Explanation:
     return Explanation(comparison, summary, CONFIGS, "ghaednia", "coulomb", (), None, outcomes)
 
 
-def test_best_never_prefers_a_configuration_for_predicting_less() -> None:
-    """The flexible rows predict e alone, closer than the rigid rod's e, but leave spin_out
-    unpredicted: the rigid rod, which predicts every value, is the best (a sum over fewer
-    terms is not a lower chi2)."""
+def test_best_ranks_over_the_quantities_every_ok_configuration_predicts() -> None:
+    """The flexible rows leave spin_out unpredicted: the ok configurations are ranked over e
+    and delta_p, which all of them predict, never over sums of different quantities (the
+    rigid rod's chi2 alone is a sum over all three; the others' is NaN)."""
     outcomes = {
         ("d", RIGID.name): Outcome("ok", True, {"e": 0.6, "delta_p": 40e-6, "spin_out": -10.0}),
         ("d", FLEXIBLE.name): Outcome("ok", True, {"e": 0.55, "delta_p": 40e-6},
@@ -89,10 +89,13 @@ def test_best_never_prefers_a_configuration_for_predicting_less() -> None:
     s = x.summary.set_index("configuration")
     assert s.loc[RIGID.name, "chi2"] == pytest.approx((0.1 / 0.03) ** 2)
     assert math.isnan(s.loc[FLEXIBLE.name, "chi2"])
-    assert x.best("d") == RIGID.name
+    v = x.verdict("d")
+    assert x.best("d") == v.configuration == LIBRARY_RATES[0].name  # e: 0.52 beats 0.55, 0.6
+    assert v.quantities == ("e", "delta_p") and v.left_out == ("spin_out",)
+    assert f"spin_out (not predicted by {FLEXIBLE.name}, {LIBRARY_RATES[0].name})" in v.reason
     # with the rigid rod not ok, the others are ranked over the quantities both predict
     outcomes[("d", RIGID.name)] = Outcome("refused: mu must be >= 0", False, {})
-    assert _explained(outcomes).best("d") == LIBRARY_RATES[0].name  # e: 0.52 beats 0.55
+    assert _explained(outcomes).best("d") == LIBRARY_RATES[0].name
 
 
 def test_best_names_the_known_drops_for_an_unknown_one() -> None:

@@ -12,6 +12,7 @@ from pathlib import Path
 from typing import Any
 
 from impactlab.calibrate.cluster import map_on_dask
+from impactlab.calibrate.correlations import correlation_rows, likelihood_text
 from impactlab.calibrate.diagnostics import (
     MISFIT_SIGMAS,
     edge_note,
@@ -109,6 +110,7 @@ class Calibration:
                 "drops": list(self.measurements.labels),
                 "quantities": list(self.measurements.quantities),
                 "values": self.measurements.n_values,
+                "correlation": correlation_rows(self.measurements),
             },
             "settings": self.settings,
             "ranking": self.ranking,
@@ -300,7 +302,7 @@ def _calibrate(
         "model_definitions": {c.name: model_definition(c) for c in cands},
         "engine": {"gravity": g, "rtol": eng.get("rtol")}
         | {k: v for k, v in eng.items() if k == "partial_slip_cells" and v is not None},
-        "likelihood": "independent Gaussian errors with the stated standard uncertainties",
+        "likelihood": likelihood_text(meas),
         "references": [str(r) for r in REFERENCES],
     }
     return Calibration(posteriors, ranking, meas, settings, notes + found)

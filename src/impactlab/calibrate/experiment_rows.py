@@ -1,5 +1,6 @@
 """Drops from ``impactlab.experiment.analyze``: an ExperimentResult as one row of a
-measurements file, so that analysed experiment files can be appended to it directly."""
+measurements file, so that analysed experiment files can be appended to it directly, with the
+correlation coefficients of the values one marker fit gives together (e and spin_out)."""
 
 from __future__ import annotations
 
@@ -7,6 +8,9 @@ import math
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
+from impactlab.calibrate.correlations import correlation_column
 from impactlab.calibrate.measurements import Measurements, read_measurements
 from impactlab.experiment.result import ExperimentResult
 
@@ -19,15 +23,20 @@ _MEASURED = {
     "delta_p": "delta_p",
     "sliding_length": "scar_length",
 }
+#: Measured quantity of the calibration -> its name in the marker fit's covariance
+#: (``ImpactKinematics.derived_names``): the values whose errors are correlated.
+_KINEMATIC = {"e": "e", "spin_out": "spin_out"}
 
 
 def experiment_record(result: ExperimentResult, label: str, **drop: Any) -> dict[str, Any]:
     """One drop (column -> SI value) from an analysed experiment: its angle, incoming velocity
     (v_c_in) and spin, its measured mu as the drop's mu, and the measured e, spin_out, delta_p
     and sliding_length (as ``scar_length``, the mark's extent, a magnitude) with their standard
-    uncertainties; ``drop``
-    adds or replaces columns (``body_material``, ``flat_material``, ``mass``, ...). ValueError
-    when the experiment has no kinematics."""
+    uncertainties, and the correlation coefficient of e and spin_out (``correlation_e_spin_out``,
+    from the marker fit's covariance; delta_p and scar_length come from the scan, independent);
+    ``drop`` adds or replaces columns (``body_material``, ``flat_material``, ``mass``, ...;
+    ``correlation_e_spin_out=None`` leaves the coefficient out). ValueError when the experiment
+    has no kinematics."""
     k = result.kinematics
     if k is None:
         raise ValueError(
@@ -51,8 +60,24 @@ def experiment_record(result: ExperimentResult, label: str, **drop: Any) -> dict
             continue
         value = abs(est.value) if quantity == "scar_length" else est.value
         rec[quantity], rec[f"{quantity}_sigma"] = value, est.sigma
+    rec.update(_correlations(k, [q for q in _KINEMATIC if q in rec]))
     rec.update(drop)
     return rec
+
+
+def _correlations(k: Any, measured: list[str]) -> dict[str, float]:
+    """``correlation_<a>_<b>`` -> coefficient of each pair of ``measured`` (quantities of
+    ``_KINEMATIC``) from the kinematics' covariance; none where it holds no covariance."""
+    names = list(getattr(k, "derived_names", ()))
+    if not all(_KINEMATIC[q] in names for q in measured):
+        return {}
+    corr = np.clip(np.asarray(k.correlation, dtype=np.float64), -1.0, 1.0)
+    at = [names.index(_KINEMATIC[q]) for q in measured]
+    return {
+        correlation_column(a, b): float(corr[at[i], at[j]])
+        for i, a in enumerate(measured)
+        for j, b in enumerate(measured[i + 1 :], start=i + 1)
+    }
 
 
 def append_experiment(

@@ -11,6 +11,7 @@ from typing import Any
 from impactlab._json import jsonable, quantity
 from impactlab._version import __version__
 from impactlab.calibrate.api import Calibration
+from impactlab.calibrate.correlations import correlation_rows
 from impactlab.calibrate.result import ModelPosterior
 from impactlab.contact import get_law
 from impactlab.sweep.inputs import INPUTS
@@ -126,6 +127,10 @@ def calibration_json(cal: Calibration) -> dict[str, Any]:
                 "drops": list(m.labels),
                 "quantities": list(m.quantities),
                 "values": m.n_values,
+                "correlation": [
+                    {**r, "coefficient": quantity(r["coefficient"], _ONE)}
+                    for r in correlation_rows(m)
+                ],
             },
             "settings": _settings(cal.settings),
             "criterion": "PSIS-LOO elpd over drops (higher is better)",

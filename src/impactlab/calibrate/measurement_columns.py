@@ -5,7 +5,8 @@ A ``[units]`` key is a column's name as a drop's column would be written (``T`` 
 ``duration``, ``F_sigma`` is ``mean_force_sigma``); a key that names no column, or a column
 that is not a quantity (``label``, ``body``), is refused, so that no unit is dropped silently.
 A fraction (``quantities.FRACTIONS``: e, e_energy, e_t, mu, damping) may be given in percent,
-1 % = 0.01 of 1 (``"43 %"``, a header ``e [%]``, ``[units] e = "%"``).
+1 % = 0.01 of 1 (``"43 %"``, a header ``e [%]``, ``[units] e = "%"``). A correlation coefficient
+(``correlation_e_spin_out``, ``impactlab.calibrate.correlations``) is a plain number: no unit.
 """
 
 from __future__ import annotations
@@ -15,6 +16,7 @@ import re
 from collections.abc import Mapping
 from typing import Any
 
+from impactlab.calibrate.correlations import PREFIX, correlation_column, correlation_pair
 from impactlab.calibrate.quantities import (
     AMBIGUOUS,
     ANGLES,
@@ -62,9 +64,9 @@ def split_header(key: str) -> tuple[str, str | None]:
 
 
 def column_kind(where: str, name: str) -> tuple[str, str]:
-    """(what the column is: "label", "category", "input", "sigma", "value", its canonical
-    name); ValueError for a column a drop does not take (with the nearest name) and for a
-    column without a name."""
+    """(what the column is: "label", "category", "input", "sigma", "value", "correlation", its
+    canonical name: ``correlation_<a>_<b>`` in the order of ``MEASURABLE``); ValueError for a
+    column a drop does not take (with the nearest name) and for a column without a name."""
     if not name.strip():
         raise ValueError(
             f"{where}: a column has an empty name ({name!r}); name the column, or leave it out"
@@ -90,6 +92,8 @@ def column_kind(where: str, name: str) -> tuple[str, str]:
         return "sigma", f"{q}_sigma"
     if canonical_output(name):
         return "value", str(canonical_output(name))
+    if name.startswith(PREFIX):
+        return "correlation", correlation_column(*correlation_pair(where, name))
     if ";" in name or "\t" in name:
         raise ValueError(
             f"{where}: the header is one column {name!r}: the file separates its columns "
@@ -98,7 +102,8 @@ def column_kind(where: str, name: str) -> tuple[str, str]:
     raise ValueError(
         f"{where}: unknown column {name!r}{did_you_mean(name, _COLUMNS)}; a drop takes label, "
         f"{', '.join(DROP_CATEGORIES)}, the numeric inputs ({', '.join(NUMERIC_INPUTS)}) "
-        f"and measured quantities ({', '.join(MEASURABLE)}) with <name>_sigma"
+        f"and measured quantities ({', '.join(MEASURABLE)}) with <name>_sigma (and "
+        "correlation_<a>_<b>)"
     )
 
 
@@ -133,6 +138,11 @@ def resolve_units(units: Any) -> dict[str, str]:
     for key, unit in units.items():
         name = str(key)
         base = name.removesuffix("_sigma")
+        if name.startswith(PREFIX):
+            raise ValueError(
+                f"[units] {name} = {unit!r}: a correlation coefficient is a plain number in "
+                "[-1, 1] and takes no unit; remove the key"
+            )
         if name not in _COLUMNS and base not in AMBIGUOUS and base not in NUMERIC_INPUTS:
             raise ValueError(
                 f"[units]: unknown column {name!r}{did_you_mean(name, _COLUMNS)}; a key of "

@@ -20,6 +20,7 @@ from typing import Any
 import numpy as np
 
 from impactlab.bodies import PAPER_ROD
+from impactlab.calibrate.correlations import check_drop, coefficient, correlation_pair
 from impactlab.calibrate.input_magnitudes import check_magnitude
 from impactlab.calibrate.measurement_columns import (
     LABEL_KEYS,
@@ -51,7 +52,8 @@ _ROD_ONLY = ("angle", "length", "tip_radius", "inertia")
 @dataclass
 class Row:
     """One drop: label, categories, inputs (each in its own unit), observed and sigma (SI);
-    units: the unit each measured value was given in (``given_unit``), which its errors use."""
+    units: the unit each measured value was given in (``given_unit``), which its errors use;
+    correlation: (a, b) -> the correlation coefficient of the values of a and b."""
 
     label: str
     categories: dict[str, str]
@@ -59,6 +61,7 @@ class Row:
     observed: dict[str, float]
     sigma: dict[str, float]
     units: dict[str, str] = field(default_factory=dict)
+    correlation: dict[tuple[str, str], float] = field(default_factory=dict)
 
 
 def unit_text(unit: str) -> str:
@@ -145,7 +148,7 @@ def parse_row(i: int, record: Mapping[str, Any], units: Mapping[str, Any]) -> Ro
     # the unit of each measured value's column: its uncertainty's unless that has its own
     value_units = {c: u for k, c, _, u, _ in cols if k == "value"}
     texts = {c: v for k, c, _, _, v in cols if k == "value"}
-    label, cats, inputs, obs, sig, given = f"drop {i + 1}", {}, {}, {}, {}, {}
+    label, cats, inputs, obs, sig, given, corr = f"drop {i + 1}", {}, {}, {}, {}, {}, {}
     nan: set[str] = set()
     for kind, canon, name, unit, v in cols:
         if kind == "label":
@@ -155,7 +158,9 @@ def parse_row(i: int, record: Mapping[str, Any], units: Mapping[str, Any]) -> Ro
             if _is_nan(v):
                 nan.add(canon)
             continue
-        if kind == "category":
+        if kind == "correlation":
+            corr[correlation_pair(where, canon)] = coefficient(where, name, v, unit)
+        elif kind == "category":
             cats[canon] = _category(where, canon, str(v).strip())
         elif kind == "input":
             if canon in UNIT_REQUIRED:
@@ -175,10 +180,11 @@ def parse_row(i: int, record: Mapping[str, Any], units: Mapping[str, Any]) -> Ro
                 _angle_unit(where, name, v, unit, canon)
             obs[canon] = _value(where, name, v, unit, MEASURABLE[canon].unit, canon)
             given[canon] = given_unit(canon, v, unit)
-    row = Row(label, cats, inputs, obs, sig, {q: u for q, u in given.items() if u})
+    row = Row(label, cats, inputs, obs, sig, {q: u for q, u in given.items() if u}, corr)
     _velocity(f"{where} ({label})", row)
     _body(f"{where} ({label})", row)
     _check_row(where, row, nan)
+    check_drop(f"{where} ({label})", corr, list(obs))
     return row
 
 

@@ -12,8 +12,10 @@ aliases too: ``T = "ms"``; an unknown key, or one that is not a quantity, is ref
 may be a string with units (``"12 um"``); a bare number is otherwise in the input's unit (SI; a
 Brinell hardness in kgf/mm^2, as in the sweep), an angle (``angle``, ``incidence``,
 ``angle_out``) is refused bare (``"20 deg"``, or ``angle [deg]`` as the column header), as in
-study files and on the command line, and a fraction (e, e_t, mu, ...) may be in percent. Rows
-are read and checked by ``impactlab.calibrate.measurement_rows``.
+study files and on the command line, and a fraction (e, e_t, mu, ...) may be in percent. A
+drop's correlated values take ``correlation_<a>_<b>``, the coefficient of the pair (a plain number
+in [-1, 1]; ``impactlab.calibrate.correlations``). Rows are read and checked by
+``impactlab.calibrate.measurement_rows``.
 """
 
 from __future__ import annotations
@@ -23,13 +25,14 @@ import io
 import math
 import tomllib
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from impactlab._files import write_text_atomic
+from impactlab.calibrate.correlations import correlation_column, normalised
 from impactlab.calibrate.measurement_columns import resolve_units
 from impactlab.calibrate.measurement_files import csv_records, read_text
 from impactlab.calibrate.measurement_rows import Row, parse_row
@@ -47,7 +50,11 @@ class Measurements:
     ``body_material``, ``flat_material``); inputs : numeric input -> (D,) array in the input's
     unit (SI; the Brinell hardness in kgf/mm^2, as the sweep stores it; NaN: the preset's
     value); observed / sigma : measurable -> (D,) values and standard uncertainties
-    (NaN where that drop did not measure it); source : the file read, if any.
+    (NaN where that drop did not measure it); source : the file read, if any; correlation :
+    (a, b) pair of measured quantities -> (D,) correlation coefficients of the drops' values
+    of a and b (NaN, or a pair left out: 0, independent; ``impactlab.calibrate.correlations``;
+    ValueError naming the drop and the pair for one outside [-1, 1], of a quantity the drop
+    does not measure, given twice, or coefficients that form no positive-definite matrix).
     """
 
     labels: tuple[str, ...]
@@ -56,6 +63,11 @@ class Measurements:
     observed: Mapping[str, np.ndarray]
     sigma: Mapping[str, np.ndarray]
     source: str | None = None
+    correlation: Mapping[tuple[str, str], np.ndarray] = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        pairs = normalised(self.correlation, self.labels, self.observed, self.sigma)
+        object.__setattr__(self, "correlation", pairs)
 
     @property
     def n_drops(self) -> int:
@@ -93,6 +105,7 @@ class Measurements:
         data.update({k: v for k, v in self.inputs.items() if np.isfinite(v).any()})
         for q in self.quantities:
             data[q], data[f"{q}_sigma"] = self.observed[q], self.sigma[q]
+        data.update({correlation_column(*p): x for p, x in self.correlation.items()})
         return pd.DataFrame(data)
 
     def records(self) -> list[dict[str, Any]]:
@@ -110,6 +123,9 @@ class Measurements:
                     unit = MEASURABLE[q].unit
                     row[_header(q, unit)] = float(self.observed[q][d])
                     row[_header(f"{q}_sigma", unit)] = float(self.sigma[q][d])
+            for p, x in self.correlation.items():
+                if math.isfinite(x[d]):
+                    row[correlation_column(*p)] = float(x[d])
             out.append(row)
         return out
 
@@ -230,7 +246,9 @@ def _assemble(
             )
     observed = {q: np.array([r.observed.get(q, math.nan) for r in rows]) for q in names}
     sigma = {q: np.array([r.sigma.get(q, math.nan) for r in rows]) for q in names}
-    return Measurements(labels, cats, inputs, observed, sigma, source)
+    pairs = list(dict.fromkeys(p for r in rows for p in r.correlation))
+    corr = {p: np.array([r.correlation.get(p, math.nan) for r in rows]) for p in pairs}
+    return Measurements(labels, cats, inputs, observed, sigma, source, corr)
 
 
 def _refuse_duplicates(
@@ -262,5 +280,6 @@ def _rows_of(m: Measurements) -> list[Row]:
         inputs = {k: float(v[d]) for k, v in m.inputs.items() if math.isfinite(v[d])}
         obs = {q: float(v[d]) for q, v in m.observed.items() if math.isfinite(v[d])}
         sig = {q: float(m.sigma[q][d]) for q in obs}
-        rows.append(Row(label, dict(m.categories[d]), inputs, obs, sig))
+        corr = {p: float(x[d]) for p, x in m.correlation.items() if math.isfinite(x[d])}
+        rows.append(Row(label, dict(m.categories[d]), inputs, obs, sig, correlation=corr))
     return rows

@@ -2,7 +2,10 @@
 
 Likelihood: each measured value is the model's prediction plus independent Gaussian noise of
 its stated standard uncertainty, ``log N(y | f(theta), sigma^2)``; a drop contributes the sum
-over its measured quantities. A case the model cannot run (a law's limit, a refused input) or
+over its measured quantities. A drop with correlation coefficients other than 0
+(``Measurements.correlation``) contributes instead the multivariate normal density of its
+measured values, covariance D R D (D = diag(sigma), R its correlation matrix;
+``correlations.correlated_loglik``). A case the model cannot run (a law's limit, a refused input) or
 whose result is not ``ok`` (an invalidating flag: ``models.STATUS_FLAGGED``) has a likelihood
 of zero (log -inf); it is counted by reason in ``failures``, never raised. One call evaluates
 every walker on every drop in one batch (``models.predict``).
@@ -18,6 +21,7 @@ from typing import Any
 
 import numpy as np
 
+from impactlab.calibrate.correlations import correlated_loglik
 from impactlab.calibrate.measurements import Measurements
 from impactlab.calibrate.models import CandidateModel, Prediction, predict, status_message
 from impactlab.calibrate.priors import Parameter
@@ -29,7 +33,9 @@ _LOG_2PI = math.log(2.0 * math.pi)
 
 
 def pointwise_loglik(pred: Prediction, meas: Measurements) -> np.ndarray:
-    """(W, D) log likelihood of each drop's measured values; -inf where the case failed."""
+    """(W, D) log likelihood of each drop's measured values (a drop with correlated values:
+    their multivariate normal density); -inf where the case failed or a prediction is not
+    finite."""
     w = pred.status.shape[0]
     ll = np.zeros((w, meas.n_drops))
     for q in meas.quantities:
@@ -41,6 +47,8 @@ def pointwise_loglik(pred: Prediction, meas: Measurements) -> np.ndarray:
         r = (f - y[have]) / s[have]
         term = -0.5 * (r * r + _LOG_2PI) - np.log(s[have])
         ll[:, have] += np.where(np.isfinite(term), term, -np.inf)
+    if meas.correlation:
+        correlated_loglik(pred.values, meas, ll)
     ll[pred.status != 0] = -np.inf
     return ll
 

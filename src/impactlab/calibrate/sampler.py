@@ -55,7 +55,7 @@ def _engine(engine: Mapping[str, Any]) -> list[Any]:
 def _inputs(post: LogPosterior, walkers: int, seed: int) -> dict[str, Any]:
     """Everything that determines the chain (data, model, priors, walkers, seed), by part."""
     m = post.meas
-    return {
+    doc: dict[str, Any] = {
         "model": repr(post.model),
         "params": [repr(p) for p in post.params],
         "walkers": walkers,
@@ -67,6 +67,9 @@ def _inputs(post: LogPosterior, walkers: int, seed: int) -> dict[str, Any]:
         "observed": {k: v.tolist() for k, v in m.observed.items()},
         "sigma": {k: v.tolist() for k, v in m.sigma.items()},
     }
+    if m.correlation:  # only when given: the fingerprints of chains without them stay valid
+        doc["correlation"] = {f"{a},{b}": x.tolist() for (a, b), x in m.correlation.items()}
+    return doc
 
 
 def _hash(doc: Any) -> str:
@@ -91,6 +94,7 @@ _PARTS = {
     "inputs": "the drops' inputs",
     "observed": "the measured values",
     "sigma": "the measured values' uncertainties",
+    "correlation": "the drops' correlation coefficients",
 }
 
 
@@ -99,7 +103,7 @@ def _changed(saved: Any, parts: dict[str, str]) -> str:
     (the hashes stored with it), or all of them in general for a file without them."""
     try:
         old = json.loads(saved)
-        differ = [_PARTS[k] for k in _PARTS if old.get(k) != parts[k]]
+        differ = [_PARTS[k] for k in _PARTS if old.get(k) != parts.get(k)]
     except (TypeError, ValueError, AttributeError):
         differ = []
     what = ", ".join(differ) or "the measurements, priors, model, walkers, seed or engine options"

@@ -5,20 +5,22 @@ its prediction, made as the calibration makes it (``explain.runs``)."""
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Callable, Iterable
 from pathlib import Path
 
-import pandas as pd
-
 from impactlab.calibrate.measurements import Measurements, read_measurements
 from impactlab.contact import get_law
 from impactlab.explain.configurations import Configuration, configurations, rate_not_applicable
+from impactlab.explain.modes import check_modes
+from impactlab.explain.notes import explanation_notes
 from impactlab.explain.result import Explanation
 from impactlab.explain.runs import Outcome, drop_alone, drop_flat, run_on_drop
 from impactlab.explain.tables import comparison_table, summary_table
+from impactlab.explain.verdict import verdict
 
-__all__ = ["FRICTION", "SPHERE_NOT_RUN", "explain"]
+__all__ = ["FRICTION", "INERTIA_NOT_RUN", "SPHERE_NOT_RUN", "explain"]
 
 #: The friction model of every configuration, with each drop's measured mu as its coefficient.
 FRICTION = "coulomb"
@@ -26,6 +28,12 @@ FRICTION = "coulomb"
 SPHERE_NOT_RUN = (
     "not run: the drop is a sphere's; the flexible rod and its rate-dependent flat model a "
     "rod's drop (the rigid configuration is the sphere's impact)"
+)
+#: Why a rod's drop that gives its moment of inertia runs the rigid configuration only.
+INERTIA_NOT_RUN = (
+    "not run: the drop gives the rod's moment of inertia (its 'inertia' column), an input the "
+    "flexible rod does not have: its inertia follows from its length, mass and material as a "
+    "beam's; leave the column out to run the flexible rows (the rigid rod uses it as given)"
 )
 
 Progress = Callable[[str, int, int], None]
@@ -59,32 +67,10 @@ def _not_run(config: Configuration, meas: Measurements, d: int) -> str | None:
         return None
     if meas.categories[d]["body"] == "sphere":
         return SPHERE_NOT_RUN
+    inertia = meas.inputs.get("inertia")
+    if inertia is not None and math.isfinite(inertia[d]):
+        return INERTIA_NOT_RUN
     return rate_not_applicable(config, drop_flat(meas, d))
-
-
-def _notes(outcomes: dict[tuple[str, str], Outcome], summary: pd.DataFrame) -> tuple[str, ...]:
-    """One line per reason a configuration did not run and per caveat of an ok row, naming
-    its drops, how many runs used the law beyond its range, and the runs' warnings (each once,
-    with the drops and configurations that gave it)."""
-    why: dict[str, list[str]] = {}
-    said: dict[str, list[str]] = {}
-    for (drop, name), out in outcomes.items():
-        if not out.ok:
-            why.setdefault(f"{name}: {out.status}", []).append(drop)
-        for w in out.warnings:
-            said.setdefault(w, []).append(f"{drop} / {name}")
-    for r in summary[summary["caveat"] != ""].itertuples(index=False):
-        why.setdefault(f"{r.configuration}: {r.caveat}", []).append(str(r.drop))
-    lines = [f"{reason} (drops: {', '.join(drops)})" for reason, drops in why.items()]
-    ran = [out for out in outcomes.values() if out.ran]  # the runs that gave a result
-    beyond = sum(out.law_extrapolated for out in ran)
-    if beyond:
-        lines.append(
-            f"the contact law is used beyond its verified range in {beyond} of {len(ran)} runs "
-            "(flag law_extrapolated, advisory: the prediction is kept, its own error unknown)"
-        )
-    lines += [f"warning ({', '.join(where)}): {w}" for w, where in said.items()]
-    return tuple(lines)
 
 
 def explain(
@@ -104,7 +90,10 @@ def explain(
     estimate) and Johnson-Cook (lower) for a low-carbon steel flat, not run on another flat
     (the result says why); else rate laws as ``simulate``'s ``rate`` takes them
     (``"cowper-symonds(D=6500 1/s, q=4)"``, a ``RateLaw``), the flat's own constants, run on
-    every rod's drop; ``[]``: none. A sphere's drop runs the rigid configuration only.
+    every rod's drop; ``[]``: none. A sphere's drop, and a rod's drop that gives its
+    ``inertia`` (an input the flexible rod does not have), run the rigid configuration only.
+    Each ok flexible run is checked in its modes with twice its mode counts
+    (``explain.modes``: a row they move by more than half a sigma is marked, its numbers kept).
     ``progress(configuration, done, total)`` is called after each run. ValueError for a drop
     without mu, a law or rate law not known, or a file the calibration's reader refuses."""
     get_law(law)  # ValueError naming the known laws
@@ -116,9 +105,10 @@ def explain(
         for d, label in enumerate(meas.labels):
             reason = _not_run(config, meas, d)
             if reason is None:
-                outcomes[(label, config.name)] = run_on_drop(
-                    config, drop_alone(meas, d), law, FRICTION
-                )
+                alone = drop_alone(meas, d)
+                out = run_on_drop(config, alone, law, FRICTION)
+                check = check_modes(config, alone, law, FRICTION, out)
+                outcomes[(label, config.name)] = dataclasses.replace(out, modes=check)
             else:
                 outcomes[(label, config.name)] = Outcome(reason, False, {})
             done += 1
@@ -126,7 +116,8 @@ def explain(
                 progress(config.name, done, total)
     comparison = comparison_table(meas, configs, outcomes)
     summary = summary_table(meas, configs, outcomes, comparison)
+    verdicts = [verdict(summary, comparison, label) for label in meas.labels]
+    notes = explanation_notes(outcomes, summary, verdicts)
     return Explanation(
-        comparison, summary, configs, law, FRICTION, _notes(outcomes, summary), meas.source,
-        outcomes,
+        comparison, summary, configs, law, FRICTION, notes, meas.source, outcomes
     )  # fmt: skip

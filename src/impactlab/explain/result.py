@@ -15,7 +15,9 @@ from impactlab._display import display_unit, format_number
 from impactlab._json import jsonable, quantity
 from impactlab._version import __version__
 from impactlab.explain.configurations import Configuration
+from impactlab.explain.modes import MODES_CAVEAT
 from impactlab.explain.runs import Outcome
+from impactlab.explain.verdict import Verdict, verdict
 
 __all__ = ["NOTHING_TUNED", "Z_DEFINITION", "Explanation"]
 
@@ -49,10 +51,14 @@ def _head(name: str, unit: str) -> str:
 
 def _short(status: str, caveat: str = "") -> str:
     """A status for a table cell: "ok", or its kind ("not run", "refused", "not ok", or "ok"
-    with a caveat) with a pointer to the notes, which give the reason whole."""
+    with a caveat; "ok, not converged in modes") with a pointer to the notes, which give the
+    reason whole."""
     if status == "ok" and not caveat:
         return status
-    return f"{status.partition(':')[0]} (see notes)"
+    kind = status.partition(":")[0]
+    if status == "ok" and caveat.startswith(MODES_CAVEAT):
+        kind = f"ok, {MODES_CAVEAT}"
+    return f"{kind} (see notes)"
 
 
 def _prediction(name: str, row: Any, unit: str) -> str:
@@ -68,10 +74,11 @@ class Explanation:
     and measured quantity: measured, sigma, predicted, z, within_2_sigma, unit (SI), status),
     ``summary`` (per drop and configuration: values within 2 sigma, chi2 = sum of z^2 over
     the measured values (NaN when one has no prediction), the run's contacts, mu_apparent
-    beside the measured mu, max_delta_ratio, flags, a caveat), the
+    beside the measured mu, max_delta_ratio, flags, modes_converged, a caveat), the
     ``configurations`` compared, the contact ``law`` and ``friction``, ``notes`` (what was not
     run and why, the caveats, what the runs warned) and ``source`` (the measurements file, if any).
-    ``result(drop, configuration)`` is the simulation behind a row."""
+    ``result(drop, configuration)`` is the simulation behind a row, ``verdict(drop)`` and
+    ``best(drop)`` which configuration explains a drop best."""
 
     comparison: pd.DataFrame
     summary: pd.DataFrame
@@ -92,37 +99,20 @@ class Explanation:
             raise KeyError(f"no run {key!r}; drops: {drops}; configurations: {names}")
         return self.outcomes[key].result
 
+    def verdict(self, drop: str) -> Verdict:
+        """Which configuration explains ``drop`` best, over which measured quantities and why
+        (``explain.verdict``: the ok configurations ranked over the quantities all of them
+        predict); KeyError naming the known drops for another."""
+        return verdict(self.summary, self.comparison, drop)
+
     def best(self, drop: str) -> str | None:
-        """The configuration that explains ``drop`` best: of those whose result is ok, the one
-        with the most values within 2 sigma, then the lowest chi2, like with like: the ones that
-        predict every measured value are ranked among themselves (one that leaves a value
-        unpredicted is never preferred for its fewer terms); when none does, the ok ones are
-        ranked over the quantities all of them predict. None when no configuration is ok (or
-        they predict no quantity in common); KeyError naming the known drops for another."""
-        if drop not in set(self.summary["drop"]):
-            known = list(dict.fromkeys(self.summary["drop"]))
-            raise KeyError(f"no drop {drop!r}; drops: {known}")
-        ok = self.summary[(self.summary["drop"] == drop) & self.summary["ok"]]
-        mine = self.comparison[self.comparison["drop"] == drop]
-        measured = set(mine["quantity"])
-        predicted = mine[mine["status"] == "ok"]
-        predicts = {
-            str(n): set(predicted.loc[predicted["configuration"] == n, "quantity"])
-            for n in ok["configuration"]
-        }
-        ranked = [n for n, got in predicts.items() if got == measured] or list(predicts)
-        common = set.intersection(*(predicts[n] for n in ranked)) if ranked else set()
-        if not common:
-            return None
-        rows = predicted[
-            predicted["configuration"].isin(ranked) & predicted["quantity"].isin(common)
-        ]
-        score = rows.assign(chi2=rows["z"] ** 2).groupby("configuration", sort=False)
-        total = score[["within_2_sigma", "chi2"]].sum()
-        order = total.assign(key=-total["within_2_sigma"]).sort_values(
-            ["key", "chi2"], kind="stable"
-        )
-        return str(order.index[0])
+        """The configuration that explains ``drop`` best (``verdict(drop).configuration``): of
+        those whose result is ok, the one with the most values within 2 sigma, then the lowest
+        chi2, over the measured quantities that all of them predict. None when no configuration
+        is ok, they predict no quantity in common, or another ok configuration agrees with more
+        of the drop's measured values than the first (``verdict(drop).reason`` says which);
+        KeyError naming the known drops for another."""
+        return self.verdict(drop).configuration
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready (docs/json-schema.md): every number a quantity with its unit (SI)."""
@@ -147,9 +137,16 @@ class Explanation:
                 "fitted_delta_ratio_max": quantity(r.fitted_delta_ratio_max, "1"),
                 "law_extrapolated": r.law_extrapolated, "rate_factor": quantity(r.rate_factor, "1"),
                 "flags": None if pd.isna(r.flags) else int(r.flags),
-                "flag_names": r.flag_names, "caveat": r.caveat or None,
+                "flag_names": r.flag_names,
+                "modes_converged": None if r.modes_converged is None else bool(r.modes_converged),
+                "caveat": r.caveat or None,
             }
             for r in self.summary.itertuples(index=False)
+        ]  # fmt: skip
+        best = [
+            {"drop": v.drop, "configuration": v.configuration, "ranked_over": list(v.quantities),
+             "left_out": list(v.left_out), "reason": v.reason}
+            for v in (self.verdict(d) for d in dict.fromkeys(self.summary["drop"]))
         ]  # fmt: skip
         return jsonable({
             "source": self.source, "law": self.law, "friction": self.friction,
@@ -159,7 +156,8 @@ class Explanation:
                  "rate": None if c.rate is None else c.rate.text, "description": c.description}
                 for c in self.configurations
             ],
-            "comparison": comparison, "summary": summary, "notes": list(self.notes),
+            "comparison": comparison, "summary": summary, "best": best,
+            "notes": list(self.notes),
             "impactlab_version": __version__,
         })  # fmt: skip
 

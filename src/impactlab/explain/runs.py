@@ -13,6 +13,7 @@ the whole result, whose sequence (contacts, Eq. 28's mu, the law's range) the ex
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import warnings
 from collections.abc import Mapping, Sequence
@@ -22,6 +23,7 @@ from typing import Any
 import numpy as np
 
 from impactlab.analytic.closed_forms import friction_from_velocities
+from impactlab.bodies.flexible_rod import MAX_MODES, FlexibleRod
 from impactlab.calibrate.measurements import Measurements
 
 # the calibration's own case builder and output reader: one definition of a model's prediction
@@ -44,7 +46,7 @@ from impactlab.materials import Material
 from impactlab.sweep.flexible import FLEXIBLE_BODY
 from impactlab.sweep.models import Statics, material_for
 
-__all__ = ["Outcome", "drop_alone", "drop_flat", "run_on_drop"]
+__all__ = ["Outcome", "drop_alone", "drop_flat", "run_on_drop", "scaled_modes"]
 
 
 @dataclass(frozen=True)
@@ -53,8 +55,10 @@ class Outcome:
     ``ok``, the predicted ``values`` (quantity -> SI value; NaN where not predicted),
     ``unsupported`` quantities (the model defines none of them), the ``result`` (an
     ImpactResult or DropResult; None when nothing ran), ``law_extrapolated``, the
-    ``warnings`` the run emitted and ``body_refused`` (the drop's body was refused before the
-    run: a rod the flexible rod does not accept)."""
+    ``warnings`` the run emitted, ``body_refused`` (the drop's body was refused before the
+    run: a rod the flexible rod does not accept), a flexible rod's ``mode_counts`` (n_axial,
+    n_bending; None for a rigid body or a body not built) and ``modes``, the check of those
+    counts (``explain.modes.ModeCheck``; None: not checked)."""
 
     status: str
     ok: bool
@@ -64,6 +68,8 @@ class Outcome:
     law_extrapolated: bool = False
     warnings: tuple[str, ...] = ()
     body_refused: bool = False
+    mode_counts: tuple[int, int] | None = None
+    modes: Any = None
 
     @property
     def ran(self) -> bool:
@@ -72,18 +78,28 @@ class Outcome:
         return self.result is not None
 
 
+def scaled_modes(counts: tuple[int, int], factor: int) -> tuple[int, int]:
+    """The mode ``counts`` (n_axial, n_bending) times ``factor``, each at most ``MAX_MODES``."""
+    axial, bending = counts
+    return min(MAX_MODES, axial * factor), min(MAX_MODES, bending * factor)
+
+
 class _OneCase:
     """The Evaluator predict calls: each case through ``simulate``, as the calibration's
-    one-by-one cases (``calibrate.models``), keeping the result, the refusal and the warnings."""
+    one-by-one cases (``calibrate.models``), keeping the result, the refusal and the warnings;
+    a FlexibleRod with its mode counts times ``refine`` (1: as built), the (n_axial,
+    n_bending) of each run in ``modes``."""
 
     identity = "explain"
 
-    def __init__(self, rate: RateLaw | None) -> None:
+    def __init__(self, rate: RateLaw | None, refine: int = 1) -> None:
         self.rate = rate
+        self.refine = refine
         self.results: list[Any] = []
         self.refusals: list[str] = []
         self.warnings: list[str] = []
         self.body_refused = False
+        self.modes: list[tuple[int, int]] = []
 
     def output_fields(self) -> tuple[str, ...]:
         return ()
@@ -128,6 +144,12 @@ class _OneCase:
                 self.body_refused = True
                 self.warnings += [str(w.message) for w in caught]
                 return None
+            if isinstance(body, FlexibleRod):
+                built = (int(body.n_axial or 0), int(body.n_bending or 0))
+                na, nb = scaled_modes(built, self.refine)
+                if self.refine != 1:
+                    body = dataclasses.replace(body, n_axial=na, n_bending=nb)
+                self.modes.append((na, nb))
             try:
                 return simulate_row(body, statics, row, self.rate)
             except (ValueError, ArithmeticError, np.linalg.LinAlgError) as exc:
@@ -159,28 +181,33 @@ def drop_flat(meas: Measurements, d: int) -> Material:
 
 
 def run_on_drop(
-    config: Configuration, drop: Measurements, law: str, friction: str = "coulomb"
+    config: Configuration,
+    drop: Measurements,
+    law: str,
+    friction: str = "coulomb",
+    refine: int = 1,
 ) -> Outcome:
     """``config`` with the contact ``law`` and ``friction`` on the one-drop ``drop``
-    (:func:`drop_alone`): predict with no free parameter, through :class:`_OneCase`."""
-    body = FLEXIBLE_BODY if config.flexible else None
-    model = CandidateModel(law, friction, body)
-    unsupported = tuple(model.unsupported(drop.quantities))
-    case = _OneCase(config.rate)
+    (:func:`drop_alone`): predict with no free parameter, through :class:`_OneCase`; a
+    flexible rod with its mode counts times ``refine`` (1: as FlexibleRod builds them)."""
+    model = CandidateModel(law, friction, FLEXIBLE_BODY if config.flexible else None)
+    case = _OneCase(config.rate, refine)
     pred = predict(model, drop, (), np.empty((1, 0)), evaluator=case)
+    unsupported = tuple(model.unsupported(drop.quantities))
     values = {q: float(v[0, 0]) for q, v in pred.values.items()}
     code = int(pred.status[0, 0])
     result = case.results[0] if case.results else None
     notes = tuple(dict.fromkeys(case.warnings))
+    counts = case.modes[0] if case.modes else None
     if code == 0:
         extrapolated = bool(pred.extrapolated is not None and pred.extrapolated[0, 0])
         return Outcome("ok", True, values, unsupported, result, extrapolated, notes,
-                       case.body_refused)  # fmt: skip
+                       case.body_refused, counts)  # fmt: skip
     why = case.refusals[0] if code == STATUS_REFUSED and case.refusals else status_message(code)
     word = "refused" if code == STATUS_REFUSED else "not ok"
     extrapolated = result is not None and bool(int(result.flags) & FLAG_LAW_EXTRAPOLATED)
     return Outcome(f"{word}: {why}", False, values, unsupported, result, extrapolated, notes,
-                   case.body_refused)  # fmt: skip
+                   case.body_refused, counts)  # fmt: skip
 
 
 def sequence_values(result: Any, gravity: float | bool = True) -> dict[str, Any]:

@@ -41,7 +41,7 @@ COMPARISON_COLUMNS = ("drop", "configuration", "quantity", "measured", "sigma", 
 SUMMARY_COLUMNS = (
     "drop", "configuration", "status", "ok", "within_2_sigma", "compared", "n_measured", "chi2",
     "contacts", "mu", "mu_apparent", "max_delta_ratio", "fitted_delta_ratio_max",
-    "law_extrapolated", "rate_factor", "flags", "flag_names", "caveat",
+    "law_extrapolated", "rate_factor", "flags", "flag_names", "modes_converged", "caveat",
 )  # fmt: skip
 #: The caveat of an ok rigid row whose drop's rod the flexible rows refuse as a body.
 BODY_CAVEAT = (
@@ -94,6 +94,15 @@ def flag_text(flags: int | None) -> str:
     return ", ".join(names) or "none"
 
 
+def _caveat(config: Configuration, outcome: Outcome, body_refused: bool) -> str:
+    """What stands against an ok row ("" for none)."""
+    if not outcome.ok:
+        return ""
+    if not config.flexible:
+        return BODY_CAVEAT if body_refused else ""
+    return "" if outcome.modes is None else str(outcome.modes.caveat())
+
+
 def summary_table(
     meas: Measurements,
     configs: Sequence[Configuration],
@@ -104,9 +113,11 @@ def summary_table(
     and ``n_measured``; chi2 = sum of z^2 over the measured ones (NaN when one has no
     prediction); the run's contacts, Eq. 28's ``mu_apparent`` beside the drop's measured
     ``mu``, ``max_delta_ratio`` and the law's verified range, ``law_extrapolated`` (None where
-    no result came), the rate factor, the ``flags`` (bitmask) and their ``flag_names``, and a
-    ``caveat`` ("" for none): :data:`BODY_CAVEAT` on an ok rigid row whose rod the flexible
-    rows refuse."""
+    no result came), the rate factor, the ``flags`` (bitmask) and their ``flag_names``,
+    ``modes_converged`` (an ok flexible row checked with twice its modes, ``explain.modes``;
+    None where not checked) and a ``caveat`` ("" for none): :data:`BODY_CAVEAT` on an ok
+    rigid row whose rod the flexible rows refuse, what twice the modes change on a flexible
+    row not converged in them."""
     rows: list[dict[str, Any]] = []
     grouped = dict(tuple(comparison.groupby(["drop", "configuration"], sort=False)))
     for d, label in enumerate(meas.labels):
@@ -128,7 +139,8 @@ def summary_table(
                 "law_extrapolated": out.law_extrapolated if out.ran else None,
                 "rate_factor": seq["rate_factor"], "flags": seq["flags"],
                 "flag_names": flag_text(seq["flags"]),
-                "caveat": BODY_CAVEAT if refused and out.ok and not cfg.flexible else "",
+                "modes_converged": None if out.modes is None else out.modes.converged,
+                "caveat": _caveat(cfg, out, refused),
             })  # fmt: skip
     table = pd.DataFrame(rows, columns=list(SUMMARY_COLUMNS))
     for name in ("contacts", "flags"):  # blank where nothing ran
