@@ -9,6 +9,7 @@ import numpy as np
 
 from impactlab.contact import kernel_arrays as ka
 from impactlab.contact import kernels as k
+from impactlab.materials.pair import first_yield_factor
 
 #: The radius [m] a law is built for: the sizes ``impactlab.bodies`` allows (its
 #: ``SIZE_RANGE``, 1 nm to 10 km); beyond them a law's forces and interferences (Hertz's
@@ -40,9 +41,10 @@ def pair_constants(p: np.ndarray) -> tuple[float, float, float, float]:
 def jg_C(nu: float) -> float:
     """Green's critical-pressure factor C(nu) = 1.295 exp(0.736 nu) (Green 2005; paper Eq. 15).
 
-    It is the Hertz peak pressure at first yield divided by S_y (von Mises).
+    It is the Hertz peak pressure at first yield divided by S_y (von Mises;
+    ``materials.first_yield_factor``, which also picks the body that yields first).
     """
-    return 1.295 * math.exp(0.736 * nu)
+    return first_yield_factor(nu)
 
 
 def jg_critical(E_star: float, R: float, S_y: float, nu: float) -> tuple[float, float]:

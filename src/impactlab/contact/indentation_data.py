@@ -3,8 +3,8 @@ delta_r(delta_max), dimensionless in the Jackson-Green critical values of their 
 (delta / delta_c, F / F_c, delta_r / delta_max), with the pair's E*/S_y and nu.
 
 Dimensionless curves of an elastic-perfectly plastic pair depend only on E*/S_y, nu and which
-body yields (``yielding``: the flat, or a sphere softer than the flat), so one set serves every
-pair of the same three and any radius. Sources: the FE reference
+body yields (``yielding``: the flat, or a sphere that yields first, ``yielding_body``), so one
+set serves every pair of the same three and any radius. Sources: the FE reference
 curves shipped with impactlab (``shipped_curves``; made from ``impactlab.fe``'s data files
 by ``impactlab.fe.tabulated``), an FE run of one's own, or measured data
 (``IndentationCurves.from_arrays``, ``from_csv``).
@@ -37,7 +37,7 @@ from impactlab.contact.table_input import (
     read_table,
     two,
 )
-from impactlab.materials import ContactPair
+from impactlab.materials import ContactPair, body_yields_first
 from impactlab.units import is_quantity, magnitude
 
 #: A delta_r/delta_max raised onto the largest before it (the tabulated law keeps the ratio
@@ -67,9 +67,9 @@ YIELDING = ("flat", "sphere")
 
 
 def yielding_body(pair: ContactPair) -> str:
-    """Which body of ``pair`` yields first: "sphere" where its S_y is strictly below the flat's
-    (``ContactPair.weaker``), else "flat"."""
-    return "sphere" if pair.body.yield_strength < pair.flat.yield_strength else "flat"
+    """Which body of ``pair`` yields first, "sphere" or "flat": the smaller C(nu) S_y
+    (``materials.body_yields_first``, as ``ContactPair.weaker``)."""
+    return "sphere" if body_yields_first(pair.body, pair.flat) else "flat"
 
 
 def _vector(name: str, value: Any, unit: str = "") -> np.ndarray:

@@ -47,14 +47,14 @@ from itertools import accumulate
 
 from impactlab._validation import ImplausibleInputWarning, check_nonnegative, check_positive
 from impactlab.contact.rate_factor import (
-    BODY_MARGIN,
     RateFactor,
     RateFactorWarning,
     RateLimit,
+    body_margin,
     self_consistent_factor,
     tabor_strain_rate,
 )
-from impactlab.materials import Material
+from impactlab.materials import Material, body_yields_first
 from impactlab.references import REFERENCES, Reference
 from impactlab.units import magnitude, to_si
 
@@ -352,10 +352,12 @@ def check_rate_flat(law: RateLaw, flat: Material) -> None:
 def rate_materials(body: Material, flat: Material, k: float) -> tuple[Material, Material]:
     """(body, flat) with the flat's yield strength multiplied by k >= 1.
 
-    impactlab's contact pair takes the smaller yield strength of the two bodies; a rate-raised
-    flat can exceed the rod's static yield strength, but the rod is rate-sensitive too, so its
-    static value is no cap: the body's yield strength is raised to ``BODY_MARGIN`` (1.5) times
-    the flat's where needed (only the flat yields, as the measured dents say). A yield strength
+    impactlab's contact pair takes the yield strength of the body that yields first
+    (``materials.body_yields_first``: the smaller C(nu) S_y); a rate-raised flat can exceed the
+    rod's static yield strength, but the rod is rate-sensitive too, so its static value is no
+    cap: where the body's S_y is not above the flat's or the body would yield first, its yield
+    strength is raised to ``rate_factor.body_margin`` (1.5 for equal Poisson's ratios) times the
+    flat's (only the flat yields, as the measured dents say). A yield strength
     at or above its E is refused (ValueError; ``rate_factor.RateLimit`` gives the largest k);
     the materials' plausibility warnings are not issued for these derived copies. The Brinell
     hardness (Brake's law) scales with the yield strength of the same material: hardness is a
@@ -370,8 +372,8 @@ def rate_materials(body: Material, flat: Material, k: float) -> tuple[Material, 
             yield_strength=k * flat.yield_strength,
             brinell_hardness=k * flat.brinell_hardness,
         )
-        if body.yield_strength <= flat_k.yield_strength:
-            f = BODY_MARGIN * flat_k.yield_strength / body.yield_strength
+        if body.yield_strength <= flat_k.yield_strength or body_yields_first(body, flat_k):
+            f = body_margin(body, flat) * flat_k.yield_strength / body.yield_strength
             body = dataclasses.replace(
                 body,
                 yield_strength=f * body.yield_strength,

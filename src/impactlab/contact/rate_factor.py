@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from typing import Protocol
 
 from impactlab._validation import _caller_level, check_nonnegative, check_positive
-from impactlab.materials import Material
+from impactlab.materials import Material, first_yield_factor
 
 __all__ = [
     "BODY_MARGIN",
@@ -27,6 +27,7 @@ __all__ = [
     "RateFactor",
     "RateFactorWarning",
     "RateLimit",
+    "body_margin",
     "self_consistent_factor",
     "tabor_strain_rate",
     "warn_no_dent",
@@ -54,6 +55,15 @@ BODY_MARGIN = 1.5
 PLAIN_STEP_SLOPE = 0.5
 
 
+def body_margin(body: Material, flat: Material) -> float:
+    """The body's raised yield strength over the rate-raised flat's [1] (``contact.rate.
+    rate_materials``): ``BODY_MARGIN``, times C(nu_flat) / C(nu_body) where that exceeds 1
+    (``materials.first_yield_factor``), so that the body's first-yield pressure C(nu) S_y, which
+    decides the body that yields first (``materials.body_yields_first``), is at least
+    ``BODY_MARGIN`` times the flat's too."""
+    return BODY_MARGIN * max(1.0, first_yield_factor(flat.nu) / first_yield_factor(body.nu))
+
+
 class RateFactorWarning(RuntimeWarning):
     """A rate-dependent flat's factor is doubtful: its fixed point did not converge, or it
     leaves the drop without a dent although the rate-independent flat yields."""
@@ -75,7 +85,7 @@ def _stress(x: float) -> str:
 class RateLimit:
     """The largest rate factor a pair takes, ``k_max`` [1]: the contact laws need each yield
     strength below its body's E, and a rate factor raises the flat's to k S_y and the body's,
-    where it would not exceed that, to ``BODY_MARGIN`` k S_y. ``yield_strength``: the flat's
+    where it would not exceed that, to ``body_margin`` k S_y. ``yield_strength``: the flat's
     quasi-static S_y [Pa]; ``bound``: which modulus sets ``k_max``, in words."""
 
     k_max: float
@@ -85,14 +95,14 @@ class RateLimit:
     @classmethod
     def of(cls, body: Material, flat: Material) -> RateLimit:
         """The limit of the pair (``body`` on ``flat``)."""
-        sy = flat.yield_strength
-        flat_k, body_k = flat.E / sy, body.E / (BODY_MARGIN * sy)
+        sy, margin = flat.yield_strength, body_margin(body, flat)
+        flat_k, body_k = flat.E / sy, body.E / (margin * sy)
         if flat_k <= body_k:
             return cls(flat_k, sy, f"the flat's yield strength below its E = {_stress(flat.E)}")
         return cls(
             body_k,
             sy,
-            f"the rod's yield strength, raised to {BODY_MARGIN:g} times the flat's, below its "
+            f"the rod's yield strength, raised to {margin:.4g} times the flat's, below its "
             f"E = {_stress(body.E)}",
         )
 

@@ -20,7 +20,7 @@ Construction (``curve_tables``, in ``contact.tabulated_fit``), from dimensionles
 
 Curves of a pair with E*/S_y and nu apply to another pair only when both match within
 ``RATIO_TOLERANCE`` and ``NU_TOLERANCE`` and the same body yields in both (the flat, or a sphere
-softer than it: ``IndentationCurves.yielding``); refused otherwise (no interpolation).
+with the smaller C(nu) S_y: ``IndentationCurves.yielding``); refused otherwise (no interpolation).
 """
 
 from __future__ import annotations
@@ -56,7 +56,7 @@ from impactlab.contact.tabulated_fit import (
     table_values,
 )
 from impactlab.contact.tabulated_fit import residual_points as residual_points
-from impactlab.materials import ContactPair
+from impactlab.materials import ContactPair, first_yield_factor
 
 #: Largest relative difference between the pair's E*/S_y and the curves', and of nu.
 RATIO_TOLERANCE = 0.05
@@ -117,9 +117,17 @@ def select_curves(
     )
     if fits:  # the numbers match, the body that yields does not
         sy = [f"{m.yield_strength / 1e6:.4g} MPa" for m in (pair.body, pair.flat)]
+        why = ""  # where nu, not S_y, decides: the first-yield pressures (materials.pair)
+        if (pair.body.yield_strength < pair.flat.yield_strength) != (side == "sphere"):
+            b, f = (
+                first_yield_factor(m.nu) * m.yield_strength / 1e6 for m in (pair.body, pair.flat)
+            )
+            nus = f"nu {pair.body.nu:g} and {pair.flat.nu:g}"
+            why = f"; with {nus}, C(nu) S_y {b:.4g} and {f:.4g} MPa"
         raise ValueError(
             f"law {law!r}: the {side} yields first in this pair (S_y {sy[0]} for the sphere, "
-            f"{sy[1]} for the flat), but the indentation curves for its E*/S_y = {ratio:.4g}, "
+            f"{sy[1]} for the flat{why}), but the indentation curves for its E*/S_y = "
+            f"{ratio:.4g}, "
             f"nu = {nu:g} ({min(fits, key=off).name!r}) are for a yielding {fits[0].yielding}: "
             f"curves differ once the other body yields (docs/laws/tabulated.md); {make}"
         )

@@ -1,7 +1,8 @@
 """Materials, contact pairs and the material library (SI units throughout).
 
 - :class:`Material` (``impactlab.materials.core``), :class:`ContactPair`
-  (``impactlab.materials.pair``), the reduced moduli;
+  (``impactlab.materials.pair``, with the rule of which body yields first,
+  :func:`body_yields_first`), the reduced moduli;
 - the library of common impact materials with cited properties (``impactlab.materials.library``):
   :data:`PRESETS` by name, the paper's :data:`AISI_201` and :data:`AISI_1010` and the others;
 - :func:`get_material`: a material from a library name, a definition by values
@@ -38,7 +39,7 @@ from impactlab.materials.library import (
     TUNGSTEN_CARBIDE,
     dynamic_poisson_ratio,
 )
-from impactlab.materials.pair import ContactPair
+from impactlab.materials.pair import ContactPair, body_yields_first, first_yield_factor
 
 __all__ = [
     "AISI_201",
@@ -59,8 +60,10 @@ __all__ = [
     "TUNGSTEN_CARBIDE",
     "ContactPair",
     "Material",
+    "body_yields_first",
     "brinell_to_pa",
     "dynamic_poisson_ratio",
+    "first_yield_factor",
     "get_material",
     "library_key",
     "reduced_modulus",

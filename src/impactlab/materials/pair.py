@@ -2,13 +2,32 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 from impactlab._html import dataclass_html, dataclass_rows
 from impactlab.materials.core import Material, reduced_modulus, reduced_shear_modulus, summary_line
 from impactlab.materials.inputs import get_material
 
-__all__ = ["ContactPair"]
+__all__ = ["ContactPair", "body_yields_first", "first_yield_factor"]
+
+
+def first_yield_factor(nu: float) -> float:
+    """Green's C(nu) = 1.295 exp(0.736 nu) [1]: the Hertz peak pressure at a material's first
+    yield over its S_y (von Mises; Jackson & Green 2005, doi:10.1115/1.1866166, Eq. 15)."""
+    return 1.295 * math.exp(0.736 * nu)
+
+
+def body_yields_first(body: Material, flat: Material) -> bool:
+    """Whether ``body`` yields before ``flat``: both carry the same Hertz pressure, so the one
+    whose first-yield peak pressure C(nu) S_y (:func:`first_yield_factor`) is the smaller yields
+    first. On a tie the smaller S_y yields first, the flat where the S_y are equal too. The one
+    rule of impactlab for which body's S_y and nu a contact law takes."""
+    p_body = first_yield_factor(body.nu) * body.yield_strength
+    p_flat = first_yield_factor(flat.nu) * flat.yield_strength
+    if p_body != p_flat:
+        return p_body < p_flat
+    return body.yield_strength < flat.yield_strength
 
 
 @dataclass(frozen=True)
@@ -18,9 +37,10 @@ class ContactPair:
     The quantities each contact law takes from the pair (documented per law in ``docs/laws``):
 
     - ``E_star``: reduced modulus, all laws.
-    - ``yield_strength``: the smaller S_y of the two (the material that yields first; for the
-      paper's pair this is the flat's, 305 MPa), used by Ghaednia, Jackson-Green,
-      Kogut-Komvopoulos and Brake. Thornton takes its limiting pressure p_y as a parameter.
+    - ``yield_strength``: S_y of the material that yields first, the one with the smaller
+      C(nu) S_y (:func:`body_yields_first`; for the paper's pair the flat's, 305 MPa), used by
+      Ghaednia, Jackson-Green, Kogut-Komvopoulos and Brake. Thornton takes its limiting
+      pressure p_y as a parameter (default C(nu) S_y of the same material).
     - ``nu``: Poisson's ratio of the material that yields first (Jackson-Green's C(nu), Brake's
       yield function).
     - Brinell hardness of both bodies: Brake combines them (Eq. 25, see its law page).
@@ -47,8 +67,8 @@ class ContactPair:
 
     @property
     def weaker(self) -> Material:
-        """The material with the smaller yield strength (the flat if equal)."""
-        return self.body if self.body.yield_strength < self.flat.yield_strength else self.flat
+        """The material that yields first: the smaller C(nu) S_y (:func:`body_yields_first`)."""
+        return self.body if body_yields_first(self.body, self.flat) else self.flat
 
     @property
     def yield_strength(self) -> float:
