@@ -98,8 +98,55 @@ def check_tip_width(tip_radius: float, diameter: float | None, what: str = "diam
         raise ValueError(problem)
 
 
-#: How the message of :func:`tip_width_problem` names a diameter implied by the mass.
-IMPLIED_DIAMETER = "the diameter that the mass, length and density imply, sqrt(4 m / (pi rho L))"
+#: Largest relative difference allowed between the material's density and the density that a
+#: rod's mass and diameter imply (:func:`density_problem`): given both, or the mass alone with
+#: the rod as wide as its tip (:func:`tip_mass_problem`).
+DENSITY_TOLERANCE = 0.02
+#: How the message of :func:`tip_width_problem` names the diameter a mass implies: the
+#: narrowest reading of the mass convention (:func:`rod_mass`), both ends full hemispheres.
+IMPLIED_DIAMETER = (
+    "the diameter that the mass, length and density imply with both hemispherical ends "
+    "counted, sqrt(4 (m / rho - 4/3 pi R^3) / (pi L))"
+)
+#: The mass convention of a rod of uniform section, as the messages state it.
+MASS_CONVENTION = (
+    "the mass convention: the cylinder of length L between the end-sphere centres and "
+    "diameter d, plus up to two hemispherical ends of radius R (ends of the rod's own radius: "
+    "m = rho pi d^2 (L + 2 d / 3) / 4); from the mass alone d = sqrt(4 m / (pi rho L)), at "
+    "most 2R"
+)
+
+
+def ends_volume(tip_radius: float) -> float:
+    """Volume [m^3] of two hemispherical ends of radius ``tip_radius`` [m], 4/3 pi R^3: the
+    most that a rod's ends beyond its end-sphere centres hold (its section is at most 2R)."""
+    return 4.0 / 3.0 * math.pi * tip_radius**3
+
+
+def mass_diameter(L: float, R: float, m: float, rho: float) -> float | None:
+    """The diameter [m] of a uniform rod of density ``rho`` [kg/m^3], length ``L`` between
+    the end-sphere centres and tip radius ``R`` [m] from its mass ``m`` [kg] alone: None when
+    the cylinder of that mass over L, sqrt(4 m / (pi rho L)), is at most 2R (to 1e-9; the
+    caller takes that one), else 2R, the rest of the mass being its ends (:data:`MASS_CONVENTION`;
+    :func:`tip_mass_problem` says whether they can hold it)."""
+    d = math.sqrt(4.0 * m / (math.pi * rho * L))
+    return None if tip_width_problem(R, d) is None else 2.0 * R
+
+
+def tip_mass_problem(L: float, R: float, m: float, rho: float) -> str | None:
+    """Why the mass ``m`` [kg] of a uniform rod of density ``rho`` [kg/m^3] (length ``L``
+    between the end-sphere centres, tip radius ``R`` [m]) makes it wider than 2R (None when it
+    does not): it exceeds, by more than :data:`DENSITY_TOLERANCE`, the mass of a rod as wide
+    as its tip with both hemispherical ends, rho pi R^2 (L + 4 R / 3)."""
+    most = rho * (math.pi * R * R * L + ends_volume(R))
+    if not m > (1.0 + DENSITY_TOLERANCE) * most:
+        return None
+    d = math.sqrt(4.0 * (m / rho - ends_volume(R)) / (math.pi * L))
+    return (
+        f"{tip_width_problem(R, d, IMPLIED_DIAMETER)}; at rho = {rho:.4g} kg/m^3 a rod as "
+        f"wide as its tip with both hemispherical ends weighs {most:.4g} kg, and the mass "
+        f"({m!r} kg) may exceed that by {DENSITY_TOLERANCE:.0%} at most ({MASS_CONVENTION})"
+    )
 
 
 #: A rigid rod's mass (given with neither its diameter nor its inertia) above this multiple of
@@ -111,17 +158,17 @@ HEAVY_ROD_FACTOR = 10.0
 
 def heavy_rod_problem(L: float, R: float, m: float, material: Material) -> str | None:
     """Why a rigid rod's mass ``m`` [kg] is implausible for its length ``L`` and tip radius
-    ``R`` [m] (None when it is not): the diameter a uniform rod of the material's density
-    would have, sqrt(4 m / (pi rho L)), exceeds 2R (:func:`tip_width_problem`, the text
-    ``FlexibleRod`` refuses with) and the mass is over :data:`HEAVY_ROD_FACTOR` times that of
-    a uniform rod as wide as the tip; None without the material's density."""
+    ``R`` [m] (None when it is not): the mass is over :data:`HEAVY_ROD_FACTOR` times that of
+    a uniform rod of the material as wide as the tip, so the diameter it implies even with
+    both hemispherical ends counted exceeds 2R (:func:`tip_width_problem`, the text
+    ``FlexibleRod`` refuses with, :func:`tip_mass_problem`); None without the density."""
     rho = material.density
     if rho is None:
         return None
     ratio = m / (rho * math.pi * R * R * L)
     if not ratio > HEAVY_ROD_FACTOR:
         return None
-    d = math.sqrt(4.0 * m / (math.pi * rho * L))
+    d = math.sqrt(4.0 * (m / rho - ends_volume(R)) / (math.pi * L))
     problem = tip_width_problem(R, d, IMPLIED_DIAMETER)
     return (
         f"{problem}; the mass is {ratio:.3g} times that of a uniform rod of the material "
@@ -158,32 +205,45 @@ def dense_sphere_problem(R: float, m: float, material: Material) -> str | None:
     )
 
 
-#: Largest relative difference between the density that mass, diameter and length imply
-#: (m / (pi d^2 / 4 L)) and the material's density when both mass and diameter are given.
-DENSITY_TOLERANCE = 0.02
-
-
-def rod_mass(L: float, m: float | None, d: float | None, material: Material) -> float:
-    """The mass [kg] of a uniform rod of circular section: ``m`` as given, or (None) from the
-    diameter ``d``, the length ``L`` between the end-sphere centres and the material's density,
-    rho pi d^2 / 4 L. ValueError when neither is given, or when both are and the density they
-    imply differs from the material's by more than :data:`DENSITY_TOLERANCE` (not checked
-    without the material's density; the mass from the diameter needs it)."""
+def density_problem(L: float, R: float, m: float, d: float, material: Material) -> str | None:
+    """Why a rod's mass ``m`` [kg] and diameter ``d`` [m] (length ``L`` between the end-sphere
+    centres, tip radius ``R`` [m]) do not fit the material's density (None when they do, or
+    without it). By :data:`MASS_CONVENTION` they imply a density from m / (pi d^2 / 4 L) (the
+    ends weightless) down to m / (pi d^2 / 4 L + 4/3 pi R^3) (two full hemispherical ends);
+    the material's must lie in that range widened by :data:`DENSITY_TOLERANCE`."""
     rho = material.density
+    if rho is None:
+        return None
+    cylinder = math.pi * d * d / 4.0 * L
+    high, low = m / cylinder, m / (cylinder + ends_volume(R))
+    if high / rho - 1.0 >= -DENSITY_TOLERANCE and low / rho - 1.0 <= DENSITY_TOLERANCE:
+        return None
+    return (
+        f"mass ({m!r} kg), diameter ({d!r} m) and length ({L!r} m) imply a density of "
+        f"{high:.4g} kg/m^3 (all the mass in the cylinder of length L between the end-sphere "
+        f"centres) to {low:.4g} kg/m^3 (two hemispherical ends of radius {R!r} m besides), but "
+        f"the material {material.name!r} has {rho:.4g} kg/m^3 (allowed: within "
+        f"{DENSITY_TOLERANCE:.0%} of that range; {MASS_CONVENTION}); give the mass or the "
+        "diameter, not both, or the material they belong to"
+    )
+
+
+def rod_mass(L: float, R: float, m: float | None, d: float | None, material: Material) -> float:
+    """The mass [kg] of a rod of circular section: ``m`` as given, or (None) from the diameter
+    ``d``, the length ``L`` between the end-sphere centres and the material's density,
+    rho pi d^2 / 4 L (its ends weightless, the lower end of :data:`MASS_CONVENTION`).
+    ValueError when neither is given, or when both are and do not fit the material's density
+    (:func:`density_problem`, with the tip radius ``R``; not checked without the density; the
+    mass from the diameter needs it)."""
     if m is None and d is None:
         raise ValueError("give the mass [kg] or the diameter [m] of the rod (or both)")
     if m is None:
         rho = material.require_density("a rod's mass from its diameter", "give its mass=")
         return rho * math.pi * d * d / 4.0 * L  # type: ignore[operator]
-    if d is not None and rho is not None:
-        implied = m / (math.pi * d * d / 4.0 * L)
-        if not abs(implied / rho - 1.0) <= DENSITY_TOLERANCE:
-            raise ValueError(
-                f"mass ({m!r} kg), diameter ({d!r} m) and length ({L!r} m) imply a density of "
-                f"{implied:.4g} kg/m^3, but the material {material.name!r} has {rho:.4g} kg/m^3 "
-                f"(allowed: within {DENSITY_TOLERANCE:.0%}); give the mass or the diameter, not "
-                "both, or the material they belong to"
-            )
+    if d is not None:
+        problem = density_problem(L, R, m, d, material)
+        if problem is not None:
+            raise ValueError(problem)
     return m
 
 

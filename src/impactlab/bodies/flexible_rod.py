@@ -26,6 +26,7 @@ import numpy as np
 
 from impactlab._html import dataclass_html, dataclass_rows
 from impactlab._validation import check_range, warn_implausible
+from impactlab.bodies._checks import DENSITY_TOLERANCE as DENSITY_TOLERANCE  # re-export
 from impactlab.bodies._checks import (
     MASS_RANGE,
     PLAUSIBLE_LENGTH,
@@ -37,7 +38,10 @@ from impactlab.bodies._checks import (
     check_tip_width,
     checked_mass,
     checked_size,
+    density_problem,
+    mass_diameter,
     plausible,
+    tip_mass_problem,
 )
 from impactlab.bodies.beam_modes import axial_frequencies, eb_frequencies
 from impactlab.bodies.geometric import geometric_tensor
@@ -143,38 +147,38 @@ def default_mode_count(sec: RodSection, theory: str, family: str) -> int:
     return n
 
 
-#: Largest relative difference between the density that mass, diameter and length imply
-#: (m / (pi d^2 / 4 L)) and the material's density when both mass and diameter are given.
-DENSITY_TOLERANCE = 0.02
 #: What needs a FlexibleRod's material density (``Material.require_density``'s words).
 FLEX_NEEDS = "a FlexibleRod (its mass, section and wave speeds)"
 #: Smallest slenderness L/d of a flexible rod: the beam modes describe a rod, not a block.
 MIN_SLENDERNESS = 2.0
 
 
-def _check_geometry(L: float, m: float, d: float | None, material: Material) -> None:
+def _check_geometry(L: float, R: float, m: float, d: float | None, material: Material) -> None:
     """ValueError when the mass, the diameter (if given), the length and the material's density
-    disagree by more than DENSITY_TOLERANCE, or when the rod is thicker than L / MIN_SLENDERNESS
-    (the diameter from the mass if not given)."""
+    disagree (``_checks.density_problem``), when the mass alone makes the rod wider than 2R
+    (``_checks.tip_mass_problem``), when a given diameter exceeds 2R, or when the rod is
+    thicker than L / MIN_SLENDERNESS (the diameter from the mass if not given)."""
     rho = material.require_density(FLEX_NEEDS)
+    problem = None
     if d is not None:
-        implied = m / (math.pi * d * d / 4.0 * L)
-        if not abs(implied / rho - 1.0) <= DENSITY_TOLERANCE:
-            raise ValueError(
-                f"mass ({m!r} kg), diameter ({d!r} m) and length ({L!r} m) imply a density of "
-                f"{implied:.4g} kg/m^3, but the material {material.name!r} has {rho:.4g} kg/m^3 "
-                f"(allowed: within {DENSITY_TOLERANCE:.0%}); give the mass or the diameter, not "
-                "both, or the material they belong to"
-            )
+        problem = density_problem(L, R, m, d, material)
+        if problem is not None:
+            raise ValueError(problem)
     else:
         d = math.sqrt(4.0 * m / (math.pi * rho * L))
         check_allowed("diameter", d, SIZE_RANGE, "m", "sqrt(4 m / (pi rho L)), from the mass")
+        problem = tip_mass_problem(L, R, m, rho)
+        if problem is None:  # the mass fits a rod at most as wide as its tip
+            d = mass_diameter(L, R, m, rho) or d
     if not L / d >= MIN_SLENDERNESS:
         raise ValueError(
             f"the rod (length {L!r} m, mass {m!r} kg, {material.name!r} at {rho:.4g} kg/m^3) has "
             f"a diameter of {d:.4g} m, L/d = {L / d:.3g} < {MIN_SLENDERNESS:g}: not a rod (check "
             "the mass and the length and their units)"
         )
+    if problem is not None:
+        raise ValueError(problem)
+    check_tip_width(R, d)
 
 
 @functools.lru_cache(maxsize=64)
@@ -204,13 +208,19 @@ class FlexibleRod:
         sections, L/2 from the centre of mass); the overall length, tip to tip, is L + 2R
         (``overall_length``), as for ``Rod``.
     tip_radius : radius R of the hemispherical ends [m].
-    mass : mass m [kg]; None: from the diameter, the length and the material's density.
-    diameter : diameter d [m]; None: from the mass, the length and the material's density.
-        At least one of ``mass`` and ``diameter`` is required; given both, the density they
-        imply must match the material's within ``DENSITY_TOLERANCE`` (2 %), and L/d must be
-        at least ``MIN_SLENDERNESS`` (2). The diameter, given or implied by the mass, must
-        not exceed 2R (else the end face's rim, not the tip, strikes the flat at shallow
-        angles). Lengths, tip radii and
+    mass : mass m [kg], the weighed one: the cylinder between the end-sphere centres and up
+        to two hemispherical ends of radius R (``_checks.MASS_CONVENTION``); None: from the
+        diameter, the length and the material's density, rho pi d^2 / 4 L (ends weightless).
+    diameter : diameter d [m]; None: from the mass, the length and the material's density,
+        sqrt(4 m / (pi rho L)), at most 2R: a heavier mass is the ends' (the paper's rod:
+        15.71 mm; a 10 mm brass rod 200 mm long with 5 mm hemispherical ends, 0.1379 kg: 10 mm;
+        the field stays None, ``section.d`` holds it).
+        At least one of ``mass`` and ``diameter`` is required; given both, the mass must lie
+        between rho pi d^2 / 4 L and rho (pi d^2 / 4 L + 4/3 pi R^3) to within
+        ``DENSITY_TOLERANCE`` (2 %), the mass alone at most 2 % above rho pi R^2 (L + 4 R / 3);
+        the beam carries the whole mass along L (its density m / (A L)). L/d must be at least
+        ``MIN_SLENDERNESS`` (2); a given diameter must not exceed 2R (else the end face's rim,
+        not the tip, strikes the flat at shallow angles). Lengths, tip radii and
         masses outside the bounds of ``impactlab.bodies._checks`` give an
         ImplausibleInputWarning, as for ``Rod``; outside its allowed ranges (sizes 1 nm to
         10 km, the diameter given or implied by the mass; masses 1e-24 to 1e12 kg) a
@@ -261,13 +271,7 @@ class FlexibleRod:
         else:
             m = checked_mass("mass", self.mass)
         plausible("mass", m, PLAUSIBLE_MASS, "kg")
-        _check_geometry(L, m, d, self.material)
-        if d is None:  # the beam is a uniform circular rod of its material: d from the mass
-            implied = math.sqrt(4.0 * m / (math.pi * rho * L))
-            what = "the diameter that the mass, length and density imply, sqrt(4 m / (pi rho L))"
-            check_tip_width(R, implied, what)
-        else:
-            check_tip_width(R, d)
+        _check_geometry(L, R, m, d, self.material)
         for name, value in (("length", L), ("tip_radius", R), ("mass", m), ("diameter", d)):
             object.__setattr__(self, name, value)
         z = check_range("damping", self.damping, 0.0, 1.0, high_inclusive=False)
@@ -306,14 +310,19 @@ class FlexibleRod:
 
     @property
     def section(self) -> RodSection:
-        """The rod's cross-section data (``impactlab.bodies.rod_section.RodSection``)."""
+        """The rod's cross-section data (``impactlab.bodies.rod_section.RodSection``); without
+        a diameter, its diameter is sqrt(4 m / (pi rho L)), at most 2R (the mass convention)."""
+        m, rho = cast(float, self.mass), self.material.require_density(FLEX_NEEDS)
+        d = self.diameter
+        if d is None:
+            d = mass_diameter(self.length, self.tip_radius, m, rho)
         return RodSection(
             length=self.length,
-            mass=cast(float, self.mass),  # a float after __post_init__
-            density=self.material.require_density(FLEX_NEEDS),
+            mass=m,
+            density=rho,
             E=self.material.E,
             nu=self.material.nu,
-            diameter=self.diameter,
+            diameter=d,
         )
 
     @property

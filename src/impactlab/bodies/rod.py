@@ -52,14 +52,16 @@ class Rod:
         same value.
     tip_radius : radius R of the hemispherical tip [m].
     mass : mass m [kg]; None: from the diameter, L and the material's density,
-        rho pi d^2 / 4 L (a uniform section over L, as ``FlexibleRod``).
+        rho pi d^2 / 4 L (a uniform section over L, its ends weightless, as ``FlexibleRod``).
     material : the rod's material (elastic constants for the contact pair; its density).
     inertia : moment of inertia about the centre of mass I_C [kg m^2]; default m L^2 / 12
         (the paper does not give I_C; m L^2/12 reproduces its impact durations best); at most
         m (L/2 + R)^2, all the mass at the tips (ValueError beyond).
     diameter : the rod's diameter d [m] (optional). Give the mass, the diameter or both; given
-        both, the density they imply must match the material's within 2 %
-        (``impactlab.bodies._checks.DENSITY_TOLERANCE``).
+        both, the mass must lie between that of the cylinder of length L and diameter d and
+        that of the cylinder with two hemispherical ends of radius R, rho pi d^2 / 4 L to
+        rho (pi d^2 / 4 L + 4/3 pi R^3), at the material's density within 2 %
+        (``impactlab.bodies._checks.DENSITY_TOLERANCE``, ``MASS_CONVENTION``).
 
     Each quantity is a number in the SI unit above, a string with units (``"8.8 mm"``) or a
     pint Quantity of any registry; the fields hold SI floats.
@@ -73,7 +75,8 @@ class Rod:
     mistake) for a length outside [1 mm, 10 m], a tip radius outside [1 um, 0.5 m] or a mass outside
     [1 mg, 1000 kg]. A mass given without the diameter is the rigid body's own (a rod need not
     be a uniform section of its material: a heavy head, a hollow tube; ``FlexibleRod``, a
-    uniform beam, refuses a mass whose diameter sqrt(4 m / (pi rho L)) exceeds 2 tip_radius);
+    uniform beam, refuses a mass above that of a rod as wide as its tip with two hemispherical
+    ends, rho pi R^2 (L + 4 R / 3), by more than 2 %);
     given with neither the diameter nor the inertia, a mass over ten times that of a uniform
     rod as wide as the tip (``bodies._checks.HEAVY_ROD_FACTOR``) draws an
     ImplausibleInputWarning.
@@ -99,7 +102,7 @@ class Rod:
         object.__setattr__(self, "material", check_material("material", self.material))
         d = None if self.diameter is None else checked_size("diameter", self.diameter)
         given = None if self.mass is None else checked_mass("mass", self.mass)
-        m = rod_mass(L, given, d, self.material)
+        m = rod_mass(L, R, given, d, self.material)
         check_allowed("mass", m, MASS_RANGE, "kg", "rho pi d^2 / 4 L, from the diameter")
         plausible("mass", m, PLAUSIBLE_MASS, "kg")
         check_tip_width(R, d)

@@ -172,7 +172,8 @@ def drop_cmd(
         None,
         "--diameter",
         help="Rod diameter d, e.g. '12 mm': the mass follows from d, L and the density "
-        "(with --mass too: checked against the density to 2 %).",
+        "(with --mass too: the mass, up to two hemispherical ends of radius R included, is "
+        "checked against the density to 2 %).",
     ),
     material: str = typer.Option(
         None,

@@ -100,7 +100,8 @@ def curves_from_runs(
 def _fe_yielding(pair: ContactPair, sphere: str, flat_hardening: Any = None) -> str:
     """The body that yields first in an FE run of ``pair`` whose sphere is ``sphere``
     ("rigid", "elastic", "elastic-plastic"): the flat unless the sphere is elastic-plastic
-    and yields first, its C(nu) S_y the smaller (``yielding_body``), or the flat is kept elastic (``flat_hardening="elastic"``)."""
+    and yields first, its C(nu) S_y the smaller (``yielding_body``), or the flat is kept
+    elastic (``flat_hardening="elastic"``)."""
     if sphere in ("rigid", "elastic"):
         return "flat"
     if isinstance(flat_hardening, str) and flat_hardening == "elastic":
