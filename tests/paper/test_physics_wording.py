@@ -45,7 +45,8 @@ def test_the_current_numbers_read_truthfully() -> None:
         "shallower at every angle with the upper estimate of the rate constants, and make the "
         "dent much shallower at 20 and 45 deg and shallower at 70 deg with the lower (the rigid "
         "rod's dent is 2.71 / 2.75 / 2.04 times the flexible rod's on the rate-dependent flat "
-        "with the upper estimate, 1.97 / 2.03 / 1.45 with the lower): they explain the dent "
+        "with the upper estimate, 1.97 / 2.03 / 1.45 with the lower): without damping (zeta = 0 "
+        "in every row), they explain the dent "
         "depth at 20 and 70 deg (not at 45 deg: 1.55 times the measured one) only with the "
         "upper estimate of the rate constants (Cowper-Symonds), but they do not explain e, the "
         "scar or the duration at any angle."
@@ -141,8 +142,8 @@ def test_a_dent_off_everywhere_moves_to_what_is_not_explained() -> None:
     dent = _bullet(missed, "Dent depths:")
     assert "do not explain the dent depth at any angle (none within 10 %; nearest: 1.3 / " in dent
     assert closing.endswith(
-        "with the lower): they do not explain the dent depth, e, the scar or the duration at any "
-        "angle."
+        "with the lower): without damping (zeta = 0 in every row), they do not explain the dent "
+        "depth, e, the scar or the duration at any angle."
     )
 
 

@@ -268,7 +268,7 @@ def test_end_to_end(full_run):
     assert f"{g20['e']:.4g}" in text and f"{g20[PAPER_DEPTH]:.4g}" in text
     # every simulation's input, rerun to the same numbers
     records = json.loads(res.files["simulation_inputs"].read_text())
-    assert len(records) == 18 and "simulation_inputs.json" in text
+    assert len(records) == 36 and "simulation_inputs.json" in text  # 18 + 3 FE + 15 drops
     again = il.rerun(records["20 deg, ghaednia, impulse_ratio"])
     assert f"{again.e:.4g}" == f"{g20['e']:.4g}"
     # the headline names the simulated durations' disagreement with a factor

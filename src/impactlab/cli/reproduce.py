@@ -23,6 +23,7 @@ def reproduce_cmd(
     Example: impactlab reproduce --out reproduction
     """
     from impactlab.paper.quantities import (  # lazy: a fast start
+        comparison_counts,
         duration_checks,
         extrapolation_line,
         not_reproduced_line,
@@ -33,9 +34,8 @@ def reproduce_cmd(
     res = reproduce(prepare_output(out, "--out"), simulate=not no_simulate)
     for c in duration_checks(res.experimental):
         typer.echo(c.text())
-    bad = res.comparison[res.comparison["reproduced"] == False]  # noqa: E712
-    n_bad = len(bad.drop_duplicates(["source", "angle [deg]", "model", "quantity"]))
-    typer.echo(not_reproduced_line(n_bad))
+    # the numbers not reproduced, and (--no-simulate) those not compared
+    typer.echo(not_reproduced_line(*comparison_counts(res.comparison)))
     if not no_simulate:
         typer.echo(extrapolation_line(res.simulations))
     if no_simulate:

@@ -14,6 +14,7 @@ import pandas as pd
 
 from impactlab.paper import data as D
 from impactlab.paper.quantities import (
+    NOT_SIMULATED,
     QUANTS,
     REPRODUCED_BY_VERDICT,
     TOL_EXPERIMENT_F,
@@ -157,7 +158,7 @@ def _row(
         reason = fixed_note
     elif rd is None:
         ok = None
-        reason = "no published value (impactlab's own number)" if p is None else "not simulated"
+        reason = "no published value (impactlab's own number)" if p is None else NOT_SIMULATED
     else:
         ok = abs(rd) <= tol
         # the experiment's F: context even when within tolerance

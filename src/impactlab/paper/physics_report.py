@@ -7,6 +7,7 @@ estimate of the rate constants (Cowper-Symonds) or with the lower (Johnson-Cook)
 from __future__ import annotations
 
 from collections.abc import Mapping
+from typing import Any
 
 import pandas as pd
 
@@ -35,6 +36,7 @@ from impactlab.paper.physics_words import (
     E,
     T,
     closeness,
+    damped,
     dent_effect,
     drop_flag,
     friction,
@@ -138,7 +140,8 @@ def _findings(table: pd.DataFrame) -> list[Block]:
     explained = tuple(text for text, ok in bullets if ok)
     not_explained = tuple(text for text, ok in bullets if not ok)
     intro = (
-        "What flexibility and rate dependence explain (at an angle where the flexible rod, "
+        "What flexibility and rate dependence explain (at an angle where the undamped "
+        "flexible rod, zeta = 0, "
         "on the plain flat or a rate-dependent one, with either estimate of the rate constants, "
         "comes within the uncertainty the next section's calibration assumes: e +- "
         f"{tol(E)}, delta_p and L_s +- {tol('delta_p [um]')}; T, which it does not use, +- "
@@ -214,9 +217,11 @@ def _pile_up(table: pd.DataFrame) -> list[tuple[str, bool]]:
     ]
 
 
-def _closing(table: pd.DataFrame) -> Para:
-    """The section's conclusion: how large the effects are (with each estimate of the rate
-    constants), what they explain, where and under which rate law."""
+def _closing(table: pd.DataFrame, calibration: Mapping[str, Any] | None = None) -> Para:
+    """The section's conclusion, without damping (every row's zeta = 0): how large the effects
+    are (with each estimate of the rate constants), what they explain, where and under which
+    rate law; with ``calibration`` (the next section's summary), where its fitted damping
+    brings what they explain at no angle within the same tolerance."""
     angles, dp = _angles(table), "delta_p [um]"
     rated = [n for n in (RATE, LOWER) if n in present(table)]
     factors = {n: _series(table, RIGID, dp) / _series(table, n, dp) for n in rated}
@@ -232,20 +237,25 @@ def _closing(table: pd.DataFrame) -> Para:
         how += f" with the upper estimate, {ratios[1]} with the lower"
     explained: list[str] = []
     missed: list[str] = []
+    missed_columns: list[str] = []
     for column in TOLERANCES:
         ok, bad, miss = verdict(table, column)
         every = len(ok) + len(bad)
         if not ok:
             missed.append(NOUNS[column])
+            missed_columns.append(column)
         else:
             where = f" (not {_at(bad, every)}: {miss})" if bad else ""
             explained.append(f"{NOUNS[column]} {_at(ok, every)}{where}{which(table, column, ok)}")
     said = [f"they explain {_listed(explained)}"] if explained else []
     if missed:
         said.append(f"they do not explain {_listed(missed, 'or')} at any angle")
+    after = ""
+    if calibration is not None and missed_columns:
+        after = " " + damped(calibration, missed_columns, len(angles))
     return Para(
         f"Rod flexibility and rate sensitivity {effect} (the rigid rod's dent is {how}): "
-        f"{', but '.join(said)}."
+        f"without damping (zeta = 0 in every row), {', but '.join(said)}.{after}"
     )
 
 
@@ -272,10 +282,14 @@ def _fe_row(table: pd.DataFrame) -> list[Block]:
 
 
 def physics_section(
-    table: pd.DataFrame | None, figures: Mapping[str, str], number: int
+    table: pd.DataFrame | None,
+    figures: Mapping[str, str],
+    number: int,
+    calibration: Mapping[str, Any] | None = None,
 ) -> list[Block]:
     """The section's blocks, headed ``number``; none when the simulations were not run
-    (``table`` None)."""
+    (``table`` None). ``calibration``: the next section's summary (``calibration_report.
+    shipped_calibration``), whose fitted damping the conclusion sets beside its undamped rows."""
     if table is None:
         return []
     shown = set(table["configuration"])
@@ -320,7 +334,7 @@ def physics_section(
             digits=4,
         ),
         *_findings(table),
-        _closing(table),
+        _closing(table, calibration),
     ]
     if "physics_drop_20" in figures:
         B.append(

@@ -7,6 +7,8 @@ paragraph on friction (each row's Eq. 28 mu) and the figure's mark of an extrapo
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
+from typing import Any
 
 import numpy as np
 import pandas as pd
@@ -319,3 +321,60 @@ def drop_flag(table: pd.DataFrame) -> str:
         return ""
     ratio = float(rows.iloc[0]["max_delta_ratio"])
     return f"; extrapolated: {ratio:.0f} {reference_of(LAW)} (LAW_EXTRAPOLATED)"
+
+
+#: Each compared column's quantity in the calibration's predictive check (its ``checks``).
+CALIBRATED = {"delta_p [um]": "delta_p [um]", E: "e", SCAR: "scar_length [um]"}
+
+
+def damped(calibration: Mapping[str, Any], columns: list[str], every: int) -> str:
+    """What the next section's calibration (``calibration``: its shipped summary) says of the
+    ``columns`` that the undamped rows explain at no angle: where a configuration with a
+    fitted damping ratio comes, at its best fit (highest-posterior zeta), within the same
+    tolerance (``TOLERANCES``); ``every``: how many angles the section compares."""
+    fitted = {
+        str(r["configuration"])
+        for r in calibration.get("ranking", ())
+        if r.get("zeta median") is not None
+    }
+    parts = []
+    for column in columns:
+        if column not in CALIBRATED:
+            parts.append(f"{NOUNS[column]} is not among its measurements")
+            continue
+        tol_, relative = TOLERANCES[column]
+        near: dict[int, tuple[float, str, float]] = {}  # angle -> (off, configuration, best)
+        measured: dict[int, float] = {}
+        for r in calibration.get("checks", ()):
+            if r["quantity"] != CALIBRATED[column] or r["configuration"] not in fitted:
+                continue
+            ang, m, best = int(str(r["drop"]).split()[0]), float(r["measured"]), r["best fit"]
+            if best is None or not math.isfinite(float(best)):
+                continue
+            off = abs(float(best) / m - 1.0) if relative else abs(float(best) - m)
+            measured[ang] = m
+            if ang not in near or off < near[ang][0]:
+                near[ang] = (off, str(r["configuration"]), float(best))
+        ok = sorted(a for a, (off, _c, _b) in near.items() if off <= tol_ * (1.0 + 1e-9))
+        if not ok:
+            parts.append(f"{NOUNS[column]} comes within {tol(column)} at no angle")
+            continue
+        best = "; ".join(
+            f"{near[a][1]}: {_shown(near[a][2])} against the measured {_shown(measured[a])}"
+            for a in ok
+        )
+        bad = sorted(set(near) - set(ok))
+        parts.append(
+            f"{NOUNS[column]} comes within {tol(column)} {at(ok, every)} ({best})"
+            + (f", not {at(bad, every)}" if bad else "")
+        )
+    return (
+        "With the damping ratio the next section fits (its best fits, column 'best fit'): "
+        + "; ".join(parts)
+        + "."
+    )
+
+
+def _shown(v: float) -> str:
+    """A value as the section prints it: 3 significant digits, whole numbers from 1000 on."""
+    return f"{v:.3g}" if abs(v) < 1000 else f"{v:.0f}"

@@ -6,9 +6,12 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from impactlab.contact.verified_ranges import tolerance_text
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 #: Tolerances of the comparison (relative), each stated with its reason in
 #: docs/paper/reproduction.md. The experimental T (pass/fail): a check of the inversion's
@@ -109,13 +112,36 @@ PAPER_SIGN_NOTE = (
 )
 
 
-def not_reproduced_line(n: int) -> str:
+#: The ``reason`` of a published simulated number that was not compared: the simulations were
+#: skipped (``reproduce(simulate=False)``, ``--no-simulate``).
+NOT_SIMULATED = "not simulated"
+#: The columns that name one published number (its two friction models' rows count once).
+PUBLISHED_KEY = ["source", "angle [deg]", "model", "quantity"]
+
+
+def comparison_counts(comparison: pd.DataFrame) -> tuple[int, int]:
+    """(published numbers not reproduced, published numbers not compared because the
+    simulations were skipped) in a comparison table (``comparison.comparison_table``), each
+    number once whichever friction model it is compared with."""
+    bad = comparison[comparison["reproduced"] == False]  # noqa: E712
+    skipped = comparison.iloc[:0]  # a table without reasons: every number was compared
+    if {"reason", "published"} <= set(comparison.columns):
+        not_run = comparison["reason"] == NOT_SIMULATED
+        skipped = comparison[not_run & comparison["published"].notna()]
+    return len(bad.drop_duplicates(PUBLISHED_KEY)), len(skipped.drop_duplicates(PUBLISHED_KEY))
+
+
+def not_reproduced_line(n: int, not_compared: int = 0) -> str:
     """The reproduce command's line on the published numbers not reproduced (``n`` of them),
-    singular or plural as ``n`` asks."""
+    singular or plural as ``n`` asks, and on the ``not_compared`` ones (simulations skipped)
+    when there are any (``comparison_counts`` gives both)."""
     what = "published number" if n == 1 else "published numbers"
+    line = f"{n} {what} not reproduced within the stated tolerances"
+    if not not_compared:
+        return f"{line} (explained in Section 5 of the report)"
     return (
-        f"{n} {what} not reproduced within the stated tolerances "
-        "(explained in Section 5 of the report)"
+        f"{line}, and {not_compared} not compared: the simulations were skipped "
+        "(--no-simulate; Section 5 of the report lists both)"
     )
 
 

@@ -8,7 +8,13 @@ from typing import Any
 
 import pandas as pd
 
-from impactlab.paper.quantities import EXTRAPOLATED_MARK, UNDECIDED
+from impactlab.paper.quantities import (
+    EXTRAPOLATED_MARK,
+    NOT_SIMULATED,
+    PUBLISHED_KEY,
+    UNDECIDED,
+    comparison_counts,
+)
 from impactlab.paper.report import Block, Bullets, Heading, Para, Table, fmt, fmt_pct
 
 __all__ = ["not_reproduced"]
@@ -67,12 +73,14 @@ def _explained(bad: pd.DataFrame) -> tuple[pd.DataFrame, list[str]]:
 
 def not_reproduced(comp: pd.DataFrame) -> list[Block]:
     """Section 5: the table of the published numbers not reproduced, each explanation once,
-    the experimental forces within tolerance that still need a note, and the checks the
-    printed digits leave UNDECIDED (neither reproduced nor not)."""
+    the published numbers not compared (the simulations skipped), the experimental forces
+    within tolerance that still need a note, and the checks the printed digits leave
+    UNDECIDED (neither reproduced nor not)."""
     B: list[Block] = [Heading("5. Every published number not reproduced, and why")]
     bad = comp[comp["reproduced"] == False]  # noqa: E712
+    skipped = _not_compared(comp)
     if bad.empty:
-        B.append(Para("None."))
+        B.append(Para("None not reproduced." if skipped else "None."))
     else:
         table, notes = _explained(bad)
         B += [
@@ -87,6 +95,8 @@ def not_reproduced(comp: pd.DataFrame) -> list[Block]:
             Table(table, "Published numbers not reproduced", digits=4),
             Bullets(tuple(notes)),
         ]
+    if skipped:
+        B.append(Para(skipped))
     ok_f = comp[
         (comp["model"] == "experiment")
         & (comp["quantity"] == "F [N]")
@@ -110,3 +120,27 @@ def not_reproduced(comp: pd.DataFrame) -> list[Block]:
             )
         )
     return B
+
+
+def _short(quantity: str) -> str:
+    """A quantity's column label without its unit and sign note: ``delta_p``, ``T``."""
+    return quantity.split(" [")[0].split(",")[0]
+
+
+def _not_compared(comp: pd.DataFrame) -> str:
+    """The paragraph on the published numbers not compared because the simulations were
+    skipped, by source with their quantities; ``""`` when every one was compared."""
+    _n_bad, n = comparison_counts(comp)
+    if not n:
+        return ""
+    rows = comp[(comp["reason"] == NOT_SIMULATED) & comp["published"].notna()]
+    by_source = [
+        f"{source}: {len(g)} ({', '.join(dict.fromkeys(_short(str(q)) for q in g['quantity']))})"
+        for source, g in rows.drop_duplicates(PUBLISHED_KEY).groupby("source", sort=False)
+    ]
+    return (
+        f"Not compared: {n} published number{'' if n == 1 else 's'} of the paper's simulations "
+        f"({'; '.join(by_source)}), because the simulations were skipped (`--no-simulate`): "
+        f"neither reproduced nor not, and not counted above (comparison.csv: reason "
+        f"'{NOT_SIMULATED}'). A run with the simulations compares them."
+    )

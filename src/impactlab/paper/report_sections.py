@@ -56,6 +56,8 @@ class ReportData:
     physics: pd.DataFrame | None = None
     #: the file of every simulation's full input (None: not simulated)
     inputs_file: str | None = None
+    #: the keys of its records by kind (``reproduction.simulation_records``; None: not simulated)
+    inputs: Mapping[str, tuple[str, ...]] | None = None
     #: the paper's laws against the FE law (``paper.fe_reference_rows``; None: not simulated)
     fe_reference: pd.DataFrame | None = None
     #: T under the readings of the rod's length (``analytic_rows.length_readings``)
@@ -65,6 +67,7 @@ class ReportData:
 def build_report(d: ReportData) -> list[Block]:
     """Every section of the report, in order; without the simulations those that need them
     are left out and the others keep their numbers (Section 1 says which are skipped)."""
+    calibration = None if d.physics is None else shipped_calibration()
     return [
         *acceptance(d),
         *_inputs(),
@@ -76,12 +79,8 @@ def build_report(d: ReportData) -> list[Block]:
         *_inertia(d),
         *_figures(d),
         *_discrepancies(),
-        *physics_section(d.physics, d.figures, PHYSICS_SECTION),
-        *(
-            []
-            if d.physics is None
-            else calibration_section(shipped_calibration(), CALIBRATION_SECTION)
-        ),
+        *physics_section(d.physics, d.figures, PHYSICS_SECTION, calibration),
+        *([] if calibration is None else calibration_section(calibration, CALIBRATION_SECTION)),
         *_run(d),
     ]
 
@@ -306,16 +305,28 @@ def _run(d: ReportData) -> list[Block]:
             f"impactlab {d.version}, Python {platform.python_version()}, "
             f"{platform.platform()}\nelapsed: {d.elapsed:.1f} s"
         ),
-        *(
-            [
-                Para(
-                    f"What each simulation simulated (the rod, both materials, the law and its "
-                    f"parameters, friction, mu, angle, velocity, gravity, tolerance, the impactlab "
-                    f"version): `{d.inputs_file}`, one record per row of the tables; "
-                    f'`impactlab.rerun(records["20 deg, ghaednia, coulomb"])` runs one again.'
-                )
-            ]
-            if d.inputs_file
-            else []
-        ),
+        *([Para(_inputs_text(d.inputs_file, d.inputs))] if d.inputs_file else []),
     ]
+
+
+#: Where each kind of record of the inputs file comes from, as the sentence names it.
+_INPUT_KINDS = {
+    "simulations": f"the rows of Sections 4, 5 and {EQ12_SECTION}",
+    "fe_reference": "the FE-reference impacts of Section 4 (law 'tabulated')",
+    "physics": f"the rows of Section {PHYSICS_SECTION} (keyed by configuration)",
+}
+
+
+def _inputs_text(file: str, inputs: Mapping[str, tuple[str, ...]] | None) -> str:
+    """The sentence on the inputs file: what a record holds, how many of each kind (with a key
+    of each, as the file names them) and how one is run again."""
+    kinds = [(k, keys) for k, keys in (inputs or {}).items() if keys]
+    parts = [f'{len(keys)} for {_INPUT_KINDS.get(k, k)}, e.g. "{keys[0]}"' for k, keys in kinds]
+    held = f", {sum(len(keys) for _, keys in kinds)} in all: " + "; ".join(parts) if parts else ""
+    example = kinds[0][1][0] if kinds else "20 deg, ghaednia, coulomb"
+    return (
+        f"What each simulation behind this report simulated (the body, both materials, the law "
+        f"and its parameters, friction, mu, angle, velocity, gravity, tolerance, the impactlab "
+        f"version): `{file}`, one record per simulation{held}. "
+        f'`impactlab.rerun(records["{example}"])` runs one again, to the same numbers.'
+    )

@@ -12,17 +12,16 @@ adjusted to a published number.
 
 The parts: :mod:`~impactlab.paper.analytic_rows` (experimental rows, inertia, consistency),
 :mod:`~impactlab.paper.simulations`, :mod:`~impactlab.paper.comparison` (with
-:mod:`~impactlab.paper.reasons`), :mod:`~impactlab.paper.figures` and
-:mod:`~impactlab.paper.report_sections`.
+:mod:`~impactlab.paper.reasons`), :mod:`~impactlab.paper.figures`,
+:mod:`~impactlab.paper.report_sections` and :mod:`~impactlab.paper.reproduction_folder` (the
+folder's marker and stale files).
 """
 
 from __future__ import annotations
 
 import json
 import os
-import re
 import time
-import warnings
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -33,7 +32,6 @@ import pandas as pd
 
 from impactlab._files import write_text_atomic
 from impactlab._version import __version__
-from impactlab.experiment.checks import check_path, output_folder
 from impactlab.paper import data as D
 from impactlab.paper.analytic_rows import (
     experimental_rows,
@@ -42,51 +40,42 @@ from impactlab.paper.analytic_rows import (
     published_consistency,
 )
 from impactlab.paper.comparison import comparison_table, side_by_side
-from impactlab.paper.fe_reference_rows import fe_reference_table, run_fe_reference
+from impactlab.paper.fe_reference_rows import FE_LAW, fe_reference_table, run_fe_reference
+from impactlab.paper.fe_reference_rows import FRICTION as FE_FRICTION
 from impactlab.paper.figures import figure_alpha, figure_dent, figure_forces, figure_inertia
 from impactlab.paper.physics import physics_table, run_physics
 from impactlab.paper.physics_figures import figure_drop
 from impactlab.paper.quantities import Simulations
 from impactlab.paper.report import to_html, to_markdown
 from impactlab.paper.report_sections import TITLE, ReportData, build_report
+from impactlab.paper.reproduction_folder import (
+    FILES,
+    MARKER,
+    TABLE_NAMES,
+    ReproductionWarning,
+    _marker_files,
+    _marker_status,
+    _partials,
+    _remove_stale,
+    _unlink_links,
+    _write_marker,
+    prepare_output,
+)
 from impactlab.paper.simulations import eq12_check, run_simulations, simulation_table
 
-#: Marker file that identifies a folder written by :func:`reproduce`; it lists the files of the
-#: reproduction in the folder (``"files"``), which the next run reads to remove the stale ones.
-MARKER = ".impactlab-reproduction.json"
+__all__ = [
+    "FILES",
+    "INPUTS_FILE",
+    "MARKER",
+    "ReproductionResult",
+    "ReproductionWarning",
+    "prepare_output",
+    "reproduce",
+    "simulation_records",
+]
 
-_TABLE_NAMES = {20: "table2", 45: "table3", 70: "table4"}
-
-#: Every file a reproduction can write (besides :data:`MARKER`): one of these that a run does
-#: not write is an earlier run's, whatever the marker says, and is removed.
-FILES = frozenset(
-    {
-        "report.md",
-        "report.html",
-        *(f"{name}.csv" for name in _TABLE_NAMES.values()),
-        "comparison.csv",
-        "experimental_rows.csv",
-        "published_consistency.csv",
-        "simulations.csv",
-        "simulation_inputs.json",
-        "eq12_check.csv",
-        "fe_reference.csv",
-        "inertia_sensitivity.csv",
-        "inertia_sensitivity.png",
-        "fig5_alpha.png",
-        "fig4_dent.png",
-        *(f"forces_{ang}deg.png" for ang in D.ANGLES_DEG),
-        "physics_comparison.csv",
-        "physics_drop_20deg.png",
-    }
-)
-
-# the temporary file of a write cut short (impactlab._files: ".<name>.<pid>.partial")
-_PARTIAL = re.compile(r"\.(?P<name>.+)\.\d+\.partial")
-
-
-class ReproductionWarning(UserWarning):
-    """A file an earlier reproduction left in the folder was removed (or could not be)."""
+#: The file of every simulation's input (``simulation_records``), in the reproduction's folder.
+INPUTS_FILE = "simulation_inputs.json"
 
 
 @dataclass(frozen=True)
@@ -107,25 +96,6 @@ class ReproductionResult:
     report_html: Path
     elapsed_s: float
     extras: Mapping[str, Any] = field(default_factory=dict)
-
-
-def prepare_output(out_dir: str | os.PathLike[str], name: str = "out_dir") -> Path:
-    """Create ``out_dir`` or accept it if it is empty or holds a previous reproduction (marker
-    file). Refuses (ValueError naming ``name``, the folder as the user gave it: the command
-    line's ``--out``) a non-empty folder without the marker and a path that is a file. Nothing
-    outside ``out_dir`` is touched; inside it only the reproduction's own files are (re)written,
-    and the marker keeps the earlier run's list of files until this run completes."""
-    out = check_path(out_dir, name).expanduser()
-    if out.is_dir():
-        entries = list(out.iterdir())
-        if entries and not (out / MARKER).is_file():
-            raise ValueError(
-                f"{name} {str(out)!r} is not empty and was not written by 'impactlab "
-                f"reproduce' (no {MARKER}); refusing to write there: choose a new or empty folder"
-            )
-    out = output_folder(out, name)  # refuses a file, or a file among its parents
-    _write_marker(out, "running", _marker_files(out))
-    return out
 
 
 def reproduce(
@@ -175,8 +145,10 @@ def _reproduce(
     tables = {ang: side_by_side(comparison, ang) for ang in D.ANGLES_DEG}
     simtab = simulation_table(sims) if sims else None
     eq12 = eq12_check(sims) if sims else None
-    fe_ref = fe_reference_table(sims, run_fe_reference()) if sims else None
+    fe_runs = run_fe_reference() if sims else None
+    fe_ref = fe_reference_table(sims, fe_runs) if sims and fe_runs else None
     physics = run_physics() if simulate else None
+    records = simulation_records(sims, fe_runs, physics) if sims else None
     phystab = physics_table(physics, experimental) if physics else None
 
     _write_tables(
@@ -184,7 +156,7 @@ def _reproduce(
         {
             "experimental_rows": experimental,
             "comparison": comparison,
-            **{name: tables[ang] for ang, name in _TABLE_NAMES.items()},
+            **{name: tables[ang] for ang, name in TABLE_NAMES.items()},
             "published_consistency": consistency,
             "inertia_sensitivity": inertia,
             "simulations": simtab,
@@ -195,8 +167,8 @@ def _reproduce(
         written,
     )
     figs = _write_figures(out, inertia, sims, written)
-    if sims:
-        written["simulation_inputs"] = _write_inputs(out / "simulation_inputs.json", sims)
+    if records:
+        written["simulation_inputs"] = _write_inputs(out / INPUTS_FILE, records)
     if physics:
         p = figure_drop(out / "physics_drop_20deg.png", physics[("flexible rod", 20)])
         written["physics_drop_20"] = p
@@ -216,7 +188,8 @@ def _reproduce(
             elapsed=time.perf_counter() - t0,
             version=__version__,
             physics=phystab,
-            inputs_file="simulation_inputs.json" if sims else None,
+            inputs_file=INPUTS_FILE if records else None,
+            inputs={kind: tuple(r) for kind, r in records.items()} if records else None,
             fe_reference=fe_ref,
             readings=readings,
         ),
@@ -226,7 +199,7 @@ def _reproduce(
         out_dir=out,
         experimental=experimental,
         comparison=comparison,
-        tables=MappingProxyType({_TABLE_NAMES[a]: t for a, t in tables.items()}),
+        tables=MappingProxyType({TABLE_NAMES[a]: t for a, t in tables.items()}),
         consistency=consistency,
         inertia=inertia,
         eq12_check=eq12 if eq12 is not None else pd.DataFrame(),
@@ -254,108 +227,34 @@ def _write_report(out: Path, data: ReportData, written: dict[str, Path]) -> tupl
     return md, html_path
 
 
-def _marker_status(out: Path) -> str | None:
-    """The status the marker in ``out`` records (None without a readable one): after a
-    ``complete`` run only the files its marker lists are the reproduction's; after one killed
-    (``running``), failed or with no readable marker, every name of :data:`FILES` is."""
-    try:
-        status = json.loads((out / MARKER).read_text()).get("status")
-    except (OSError, ValueError, AttributeError):
-        return None
-    return status if isinstance(status, str) else None
-
-
-def _unlink_links(out: Path) -> None:
-    """Remove the symbolic links in ``out`` named as a file of the reproduction, so that its
-    files are written in ``out`` and never through a link to a file elsewhere (the file a link
-    names is left as it is)."""
-    for name in sorted(FILES):
-        path = out / name
-        if path.is_symlink():
-            path.unlink()
-            warnings.warn(
-                f"{str(path)!r} was a link; this run writes its own file there (the file it "
-                "named is left as it was)",
-                ReproductionWarning,
-                stacklevel=3,
-            )
-
-
-def _marker_files(out: Path) -> set[str]:
-    """The files the marker in ``out`` lists (none without a readable one) that a reproduction
-    can write: names of :data:`FILES` (or the temporary file of a write of one cut short). Any
-    other name the marker lists (a file of the user's, a path elsewhere) is ignored, so it is
-    never removed whatever the marker says."""
-    try:
-        listed = json.loads((out / MARKER).read_text()).get("files", [])
-    except (OSError, ValueError, AttributeError):
-        return set()
-    if not isinstance(listed, list):
-        return set()
-    return {f for f in listed if isinstance(f, str) and _is_ours(f)}
-
-
-def _is_ours(name: str) -> bool:
-    """Whether ``name`` is a file a reproduction can write: one of :data:`FILES`, or the
-    temporary file of a write of one of them (or of :data:`MARKER`) cut short."""
-    if name in FILES:
-        return True
-    m = _PARTIAL.fullmatch(name)
-    return m is not None and m.group("name") in FILES | {MARKER}
-
-
-def _write_marker(out: Path, status: str, files: set[str], elapsed: float | None = None) -> None:
-    """The marker: the tool, the run's ``status``, the version and the reproduction's files."""
-    record: dict[str, Any] = {
-        "tool": "impactlab reproduce",
-        "status": status,
-        "version": __version__,
-        "files": sorted(files),
+def simulation_records(
+    sims: Simulations,
+    fe: Mapping[int, Any] | None = None,
+    physics: Mapping[tuple[str, int], Any] | None = None,
+) -> dict[str, dict[str, Any]]:
+    """Every simulation behind the report, by kind, each ``{key: result.input}`` (what it
+    simulated: body, materials, law and its parameters, friction, tolerances, impactlab
+    version; ``impactlab.rerun`` runs one again): ``"simulations"``, the (angle, law, friction)
+    impacts of Sections 4, 5 and 7 keyed ``"20 deg, ghaednia, coulomb"``; ``"fe_reference"``,
+    the FE law's impacts (``fe``, by angle [deg]) keyed ``"20 deg, tabulated, coulomb"``;
+    ``"physics"``, the drops of "Can physics explain the experiment?" (``physics``, keyed
+    (configuration, angle)) keyed ``"20 deg, flexible rod"``."""
+    return {
+        "simulations": {f"{a} deg, {law}, {fr}": r.input for (a, law, fr), r in sims.items()},
+        "fe_reference": {
+            f"{a} deg, {FE_LAW}, {FE_FRICTION}": r.input for a, r in (fe or {}).items()
+        },
+        "physics": {f"{a} deg, {name}": r.input for (name, a), r in (physics or {}).items()},
     }
-    if elapsed is not None:
-        record["elapsed_s"] = elapsed
-    write_text_atomic(out / MARKER, json.dumps(record, indent=2))
 
 
-def _partials(out: Path) -> set[str]:
-    """The temporary files in ``out`` of a write of one of :data:`FILES` cut short."""
-    return {p.name for p in out.iterdir() if p.name not in FILES and _is_ours(p.name)}
-
-
-def _remove_stale(out: Path, stale: set[str]) -> tuple[list[str], set[str]]:
-    """Remove the files ``stale`` (an earlier run's, not written by this one) from ``out``, one
-    ReproductionWarning each; returns the names removed and those that could not be."""
-    removed: list[str] = []
-    kept: set[str] = set()
-    for name in sorted(n for n in stale if _is_ours(n)):  # never a file the user made
-        path = out / name
-        if not path.is_file() or path.is_symlink():
-            continue  # gone already, or not a file of ours
-        try:
-            path.unlink()
-        except OSError as exc:
-            kept.add(name)
-            warnings.warn(
-                f"{str(path)!r} is left from an earlier run and could not be removed "
-                f"({exc.strerror or exc}): it does not show this run",
-                ReproductionWarning,
-                stacklevel=3,
-            )
-        else:
-            removed.append(name)
-            warnings.warn(
-                f"removed {str(path)!r}, left by an earlier run (this run does not write it)",
-                ReproductionWarning,
-                stacklevel=3,
-            )
-    return removed, kept
-
-
-def _write_inputs(path: Path, sims: Simulations) -> Path:
-    """What each simulation simulated (``ImpactResult.input``: bodies, materials, law, friction,
-    tolerances, impactlab version), keyed ``"20 deg, ghaednia, coulomb"``."""
-    records = {f"{ang} deg, {law}, {fr}": r.input for (ang, law, fr), r in sims.items()}
-    write_text_atomic(path, json.dumps(records, indent=1) + "\n")
+def _write_inputs(path: Path, records: Mapping[str, Mapping[str, Any]]) -> Path:
+    """The records of :func:`simulation_records`, one JSON object keyed by each record's key
+    (the keys of the kinds do not collide)."""
+    flat = {key: rec for kind in records.values() for key, rec in kind.items()}
+    if len(flat) != sum(len(kind) for kind in records.values()):
+        raise ValueError("simulation records: two simulations share a key")
+    write_text_atomic(path, json.dumps(flat, indent=1) + "\n")
     return path
 
 
