@@ -9,7 +9,7 @@ from dataclasses import replace
 import numpy as np
 
 from impactlab.calibrate import CandidateModel, Measurements, calibrate, parse_parameter
-from impactlab.calibrate.correlations import correlated_loglik
+from impactlab.calibrate.correlated_likelihood import correlated_loglik
 from impactlab.calibrate.jsonout import calibration_json
 from impactlab.calibrate.models import Prediction, predict
 from impactlab.calibrate.posterior import pointwise_loglik

@@ -12,7 +12,7 @@ from pathlib import Path
 from typing import Any
 
 from impactlab.calibrate.cluster import map_on_dask
-from impactlab.calibrate.correlations import correlation_rows, likelihood_text
+from impactlab.calibrate.correlated_likelihood import correlation_rows, likelihood_text
 from impactlab.calibrate.diagnostics import (
     MISFIT_SIGMAS,
     edge_note,

@@ -11,7 +11,7 @@ from typing import Any
 from impactlab._json import jsonable, quantity
 from impactlab._version import __version__
 from impactlab.calibrate.api import Calibration
-from impactlab.calibrate.correlations import correlation_rows
+from impactlab.calibrate.correlated_likelihood import correlation_rows
 from impactlab.calibrate.result import ModelPosterior
 from impactlab.contact import get_law
 from impactlab.sweep.inputs import INPUTS

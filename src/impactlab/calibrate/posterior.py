@@ -5,10 +5,10 @@ its stated standard uncertainty, ``log N(y | f(theta), sigma^2)``; a drop contri
 over its measured quantities. A drop with correlation coefficients other than 0
 (``Measurements.correlation``) contributes instead the multivariate normal density of its
 measured values, covariance D R D (D = diag(sigma), R its correlation matrix;
-``correlations.correlated_loglik``). A case the model cannot run (a law's limit, a refused input) or
-whose result is not ``ok`` (an invalidating flag: ``models.STATUS_FLAGGED``) has a likelihood
-of zero (log -inf); it is counted by reason in ``failures``, never raised. One call evaluates
-every walker on every drop in one batch (``models.predict``).
+``correlated_likelihood.correlated_loglik``). A case the model cannot run (a law's limit, a
+refused input) or whose result is not ``ok`` (an invalidating flag: ``models.STATUS_FLAGGED``)
+has a likelihood of zero (log -inf); it is counted by reason in ``failures``, never raised.
+One call evaluates every walker on every drop in one batch (``models.predict``).
 """
 
 from __future__ import annotations
@@ -21,7 +21,7 @@ from typing import Any
 
 import numpy as np
 
-from impactlab.calibrate.correlations import correlated_loglik
+from impactlab.calibrate.correlated_likelihood import correlated_loglik
 from impactlab.calibrate.measurements import Measurements
 from impactlab.calibrate.models import CandidateModel, Prediction, predict, status_message
 from impactlab.calibrate.priors import Parameter
