@@ -15,7 +15,7 @@ import pytest
 from energy_balances import CLOSED
 
 from impactlab.bodies import FlexibleRod
-from impactlab.dynamics import drop as drop_module
+from impactlab.dynamics import drop_run as drop_module
 from impactlab.dynamics.drop import DropError, simulate_drop
 from impactlab.dynamics.drop_checks import (
     ENERGY_STEP_FACTOR,

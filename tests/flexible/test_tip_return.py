@@ -32,4 +32,4 @@ def test_a_return_after_a_clear_flight_is_a_new_impact() -> None:
 def test_ringing_re_contacts_stay_in_the_sequence() -> None:
     r = il.simulate_drop(ROD, il.AISI_1010, angle=math.radians(20), velocity=(0.0, -1.41), **KW)
     assert r.n_contacts == 4 and r.next_end == 1  # the other end lands next, 38 ms later
-    assert F.NEW_IMPACT_CHECKS == 100.0  # 10 periods of the lowest mode (0.1 T_1 each)
+    assert F.NEW_IMPACT_CHECKS == 100.0  # 10 periods of the basis's first mode (0.1 each)

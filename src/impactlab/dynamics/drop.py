@@ -31,6 +31,7 @@ from impactlab.contact.rate import (
     self_consistent_factor,
 )
 from impactlab.contact.rate_factor import warn_no_dent
+from impactlab.contact.registry import get_law
 from impactlab.dynamics.checks import check_brake_meyer
 from impactlab.dynamics.drop_body import body_model
 from impactlab.dynamics.drop_checks import (
@@ -110,6 +111,8 @@ def _rate_model(
         return contact_model(body, flat, law, law_params), None
     if not isinstance(law, str):
         raise ValueError("rate needs the law as a name (the flat's yield strength is rebuilt)")
+    # the law's name and parameters first: their errors do not depend on the rate factor
+    get_law(law).parameter_values({} if law_params is None else law_params)
     if law.strip().lower() in ELASTIC_LAWS:
         raise ValueError(
             f"rate {rate_law.name!r}: the {law!r} law is elastic (no yield strength for the rate "

@@ -173,7 +173,9 @@ def open_sequence(run: FEDrop, y: np.ndarray, body: FlexibleRod) -> str:
     sqrt(2 E_vib sum_j (U_j^2 + W_j^2) / omega_j^2) (the body's modes, E_vib the FE's
     vibration energy), before the other end can touch (a new impact), the centre of mass is
     back at its height, or ``HORIZON_CAP``, unless only after a clear flight of 10 periods of
-    the lowest mode (a new impact of that end)."""
+    the basis's first mode (``omega[0]``; a new impact of that end). The engine's third case,
+    the rigid path that rose and falls back (``flexcore.flight.falling_back``), is not
+    mirrored here: it changes only this warning's wording."""
     fe = run.fe
     for k in range(2):
         if run.ends[k].inn:

@@ -51,7 +51,10 @@ def out_of_contact(mdl, y, t, h, sv, stop_mode, yev, ek):
         last = int(sv[F.SV_LAST_END])
         flight_min = F.NEW_IMPACT_CHECKS * sv[F.SV_CHECK_DT]
         eps = sv[F.SV_EPS_CLEAR]
-        done, nx, tn = left_for_good(mdl, y, last, stop_mode, F.HORIZON_CAP, eps, flight_min)
+        since = t - sv[F.SV_T_LAST_SEP]
+        ring = sv[F.SV_T_RING]
+        done, nx, tn = left_for_good(mdl, y, last, stop_mode, F.HORIZON_CAP, eps, flight_min,
+                                     since, ring)  # fmt: skip
         if done:
             sv[F.SV_FINISHED] = 1.0
             sv[F.SV_NEXT_END] = nx
@@ -59,7 +62,8 @@ def out_of_contact(mdl, y, t, h, sv, stop_mode, yev, ek):
             sv[F.SV_STATUS] = F.ST_OK
             return 2, 0.0
         follow = stop_mode == 1 and sv[F.SV_SEQ_PASSED] == 0.0  # stop="sequence" would end?
-        if follow and left_for_good(mdl, y, last, 0, F.HORIZON_CAP, eps, flight_min)[0]:
+        if follow and left_for_good(mdl, y, last, 0, F.HORIZON_CAP, eps, flight_min, since,
+                                    ring)[0]:  # fmt: skip
             sv[F.SV_SEQ_PASSED] = 1.0
     tau = jump_time(mdl, y, h, sv, ek)
     if tau == 0.0:

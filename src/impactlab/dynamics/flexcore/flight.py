@@ -11,9 +11,12 @@ of end k (A_j = sqrt(q_j^2 + (q_j'/omega_j)^2); modal energy does not grow in fr
 lower bound y_S,k(rigid, tau) - R - B_k of the end that was in contact stays > 0 for all
 tau in (0, tau_h], tau_h = min(2 v_Cy / g (C back at its height: a new drop), the time at
 which another end can first reach the flat (a new impact, ``next_end``), ``HORIZON_CAP``); or
-when that lower bound stays > 0 for at least ``flight_min`` (10 periods of the lowest mode) and
-then may reach the flat within tau_h: the end flies clear and comes back after the rod turned,
-a new impact of the same end (``next_end`` that end, ``next_time`` the earliest it can touch).
+when that lower bound stays > 0 for at least ``flight_min`` (10 periods of the basis's first
+mode) and then may reach the flat within tau_h: the end flies clear and comes back after the rod
+turned, a new impact of the same end (``next_end`` that end, ``next_time`` the earliest it can
+touch); or when, a period of the lowest mode or more after the separation, the end's rigid path
+has risen above the flat and comes down (``falling_back``): its return is the rigid motion's,
+a new impact too, even where the bound on the vibration hides the arc.
 With ``stop_mode`` 1 ("flight") the other ends are no horizon: every end must stay clear.
 """
 
@@ -93,6 +96,21 @@ def rigid_clearance(c, y, M, k, tau):
     return d * c[F.FC_S0] + Y + sk * math.sin(th)
 
 
+@njit(cache=True, inline="always", error_model="numpy")
+def falling_back(c, y, M, k, since, ring, eps):
+    """True when end k, out of contact for ``since`` [s] >= ``ring`` [s], is on the way down
+    of a rigid ballistic arc: its rigid clearance (``rigid_clearance``) is above ``eps`` [m]
+    and above its value at the separation, and decreases. Its next touch is a return of the
+    rod's rigid motion (a new impact), not a re-contact of the ringing, whatever the bound on
+    the elastic displacement (docs/flexible.md)."""
+    if since < ring:
+        return False
+    h = rigid_clearance(c, y, M, k, 0.0)
+    sk = -c[F.FC_D] if k == 0 else c[F.FC_D]
+    rate = y[3 + M + 1] + sk * math.cos(c[F.FC_TH0] + y[2]) * y[3 + M + 2]
+    return h > eps and h > rigid_clearance(c, y, M, k, -since) and rate < 0.0
+
+
 @njit(cache=True, error_model="numpy")
 def first_below(c, y, M, k, band, tau_max, eps):
     """First tau in [0, tau_max] where the rigid clearance of end k minus ``band`` may drop to
@@ -120,8 +138,9 @@ def first_below(c, y, M, k, band, tau_max, eps):
 
 
 @njit(cache=True, inline="always", error_model="numpy")
-def left_for_good(mdl, y, last_end, stop_mode, cap, eps, flight_min):
-    """The end-of-sequence test (module docstring): (done, next_end, next_time [s])."""
+def left_for_good(mdl, y, last_end, stop_mode, cap, eps, flight_min, since, ring):
+    """The end-of-sequence test (module docstring), ``since`` [s] after the last separation,
+    ``ring`` [s] the period of the lowest mode: (done, next_end, next_time [s])."""
     c, om, Ue, We = mdl[2], mdl[3], mdl[7], mdl[8]
     M = om.shape[0]
     g = c[F.FC_G]
@@ -147,7 +166,9 @@ def left_for_good(mdl, y, last_end, stop_mode, cap, eps, flight_min):
             continue
         t_touch = first_below(c, y, M, k, bands[k], tau_h, eps)
         if t_touch <= tau_h:
-            if stop_mode == 0 and t_touch >= flight_min:  # back after a clear flight: anew
+            if stop_mode == 0 and (
+                t_touch >= flight_min or falling_back(c, y, M, k, since, ring, eps)
+            ):  # back after a clear flight, or a rigid arc: a new impact
                 return True, k, t_touch
             return False, -1, math.inf
     if tau_h == math.inf:

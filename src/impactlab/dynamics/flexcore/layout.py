@@ -181,7 +181,11 @@ SV_DSTAR = 27  #: Hertzian interference scale [m] (error scale of Q_t as a displ
 SV_TOL_MISS = 28
 #: 1 once the end test of stop="sequence" would have passed (``stop="flight"``: ``CR_PAST``)
 SV_SEQ_PASSED = 29
-NSV = 30
+#: the period of the body's lowest mode [s] (a rigid Rod, without modes: the clear flight's
+#: NEW_IMPACT_CHECKS intervals): the shortest flight after which a rigid arc of the end last in
+#: contact, risen above the flat and coming down, ends the sequence (``flight.falling_back``)
+SV_T_RING = 30
+NSV = 31
 #: The tolerance of the contact invariant in units of max(1e-6, rtol) times the Hertzian
 #: interference scale delta* (``SV_TOL_MISS``).
 MISS_TOL_FACTOR = 1.0
@@ -209,10 +213,11 @@ PARTIAL_MIN_STEPS = 50_000
 DROP_MAX_EVENTS = 200_000
 HORIZON_CAP = 0.5  #: longest look-ahead of the end-of-sequence test [s]
 #: A flight of the end that was in contact clear of the flat for at least this many of the
-#: end-of-sequence test's intervals (0.1 T_1 each: 10 periods of the lowest mode) ends the
-#: sequence even if that end's path comes back down: its return, after the rod turned in free
-#: flight, is a new impact of that end (``next_end``), not a re-contact of a ringing rod,
-#: whose re-contacts come within a few periods.
+#: end-of-sequence test's intervals (``SV_CHECK_DT``: 0.1 period of the basis's first mode, its
+#: first axial mode when it has one; 1.2 ms in all for the paper's rod) ends the sequence even
+#: if that end's path comes back down: its return, after the rod turned in free flight, is a
+#: new impact of that end (``next_end``), not a re-contact of a ringing rod, whose re-contacts
+#: come within a few periods (a return the bound on the vibration hides: ``SV_T_RING``).
 NEW_IMPACT_CHECKS = 100.0
 
 #: The integrator's outputs, in the order of its ``out`` vector. "After the last contact" means

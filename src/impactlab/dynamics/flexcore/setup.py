@@ -96,6 +96,8 @@ def scales(mdl, vx0, vy0, w0, sc, sv):
     sv[F.SV_VN0] = vn0
     sv[F.SV_CHECK_DT] = 2.0 * math.pi / om[0] * 0.1 if M > 0 else 10.0 * tstar
     sv[F.SV_EPS_CLEAR] = 1e-3 * dstar
+    sv[F.SV_T_RING] = (2.0 * math.pi / om.min() if M > 0
+                       else F.NEW_IMPACT_CHECKS * sv[F.SV_CHECK_DT])  # fmt: skip
 
 
 @njit_internal
