@@ -159,6 +159,7 @@ def test_qtm_tsv_gives_the_same_impact_as_the_tracks(tmp_path: Path) -> None:
             r"\(a truncated file\)",
         ),
         ({"frequency": "250"}, r"FREQUENCY 250 Hz contradicts the Time column"),
+        ({"announced": "5.7"}, r"the NO_OF_FRAMES line holds '5.7', not a whole number >= 0"),
     ],
 )
 def test_qtm_tsv_header_that_contradicts_the_data_is_refused(

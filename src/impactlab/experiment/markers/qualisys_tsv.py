@@ -80,6 +80,15 @@ def _number(p: Path, head: dict[str, list[str]], key: str) -> float:
         raise FileFormatError(p, f"the {key} line holds {head[key]!r}, not a number") from None
 
 
+def _count(p: Path, head: dict[str, list[str]], key: str) -> int:
+    """The whole number of a count line (NO_OF_FRAMES, NO_OF_MARKERS); FileFormatError for a
+    fraction or a negative number (a corrupt header)."""
+    x = _number(p, head, key)
+    if not (x >= 0 and x == int(x)):
+        raise FileFormatError(p, f"the {key} line holds {head[key][0]!r}, not a whole number >= 0")
+    return int(x)
+
+
 def _columns(
     p: Path, ln: int, names: list[str], labels: list[str]
 ) -> tuple[int | None, int | None, list[int]]:
@@ -135,7 +144,7 @@ def _meta(p: Path, head: dict[str, list[str]], rate: float | None) -> tuple[list
     twice = duplicate_labels(labels, lambda i: f"name {i + 1}")
     if twice:
         raise FileFormatError(p, f"MARKER_NAMES names {twice}")
-    if "NO_OF_MARKERS" in head and int(_number(p, head, "NO_OF_MARKERS")) != len(labels):
+    if "NO_OF_MARKERS" in head and _count(p, head, "NO_OF_MARKERS") != len(labels):
         raise FileFormatError(
             p, f"NO_OF_MARKERS is {head['NO_OF_MARKERS'][0]} but MARKER_NAMES names {len(labels)}"
         )
@@ -186,7 +195,7 @@ def read_qtm_tsv(
     rows = _rows(p, lines, k)
     frame_col, time_col, starts, has_header = _layout(p, rows, labels)
     rows = rows[1:] if has_header else rows
-    n_announced = int(_number(p, head, "NO_OF_FRAMES"))
+    n_announced = _count(p, head, "NO_OF_FRAMES")
     if len(rows) != n_announced:
         cut = " (a truncated file)" if len(rows) < n_announced else ""
         raise FileFormatError(
