@@ -1,8 +1,8 @@
 """Which body yields first: the one whose first-yield pressure C(nu) S_y is the smaller
-(C(nu) = 1.295 exp(0.736 nu), Jackson & Green 2005; the paper's Eq. 15), not the one with the smaller S_y.
-A ball (S_y 310 MPa, nu 0.2) on a flat (S_y 300 MPa, nu 0.45) yields first (C S_y 465 against
-541 MPa): the laws take the ball's S_y and nu, and an impact past the ball's first yield dents
-it (or is marked)."""
+(C(nu) = 1.295 exp(0.736 nu), Jackson & Green 2005; the paper's Eq. 15), not the one with the
+smaller S_y. A ball (S_y 310 MPa, nu 0.2) on a flat (S_y 300 MPa, nu 0.45) yields first
+(C S_y 465 against 541 MPa): the laws take the ball's S_y and nu, and an impact past the ball's
+first yield dents it (or is marked)."""
 
 from __future__ import annotations
 

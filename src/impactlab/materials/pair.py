@@ -14,7 +14,8 @@ __all__ = ["ContactPair", "body_yields_first", "first_yield_factor"]
 
 def first_yield_factor(nu: float) -> float:
     """Green's C(nu) = 1.295 exp(0.736 nu) [1]: the Hertz peak pressure at a material's first
-    yield over its S_y (von Mises; Jackson & Green 2005, doi:10.1115/1.1866166; the paper's Eq. 15)."""
+    yield over its S_y (von Mises; Jackson & Green 2005, doi:10.1115/1.1866166; the paper's
+    Eq. 15)."""
     return 1.295 * math.exp(0.736 * nu)
 
 
