@@ -13,6 +13,7 @@ from pathlib import Path
 from impactlab.calibrate.measurements import Measurements, read_measurements
 from impactlab.contact import get_law
 from impactlab.explain.configurations import Configuration, configurations, rate_not_applicable
+from impactlab.explain.correlated import drop_pairs
 from impactlab.explain.modes import check_modes
 from impactlab.explain.notes import explanation_notes
 from impactlab.explain.result import Explanation
@@ -94,6 +95,7 @@ def explain(
     ``inertia`` (an input the flexible rod does not have), run the rigid configuration only.
     Each ok flexible run is checked in its modes with twice its mode counts
     (``explain.modes``: a row they move by more than half a sigma is marked, its numbers kept).
+    A drop's correlation coefficients make its chi2 z^T R^-1 z (``explain.correlated``).
     ``progress(configuration, done, total)`` is called after each run. ValueError for a drop
     without mu, a law or rate law not known, or a file the calibration's reader refuses."""
     get_law(law)  # ValueError naming the known laws
@@ -116,8 +118,9 @@ def explain(
                 progress(config.name, done, total)
     comparison = comparison_table(meas, configs, outcomes)
     summary = summary_table(meas, configs, outcomes, comparison)
-    verdicts = [verdict(summary, comparison, label) for label in meas.labels]
-    notes = explanation_notes(outcomes, summary, verdicts)
+    pairs = {label: drop_pairs(meas, d) for d, label in enumerate(meas.labels)}
+    verdicts = [verdict(summary, comparison, label, pairs[label]) for label in meas.labels]
+    notes = explanation_notes(outcomes, summary, verdicts, pairs)
     return Explanation(
-        comparison, summary, configs, law, FRICTION, notes, meas.source, outcomes
+        comparison, summary, configs, law, FRICTION, notes, meas.source, outcomes, pairs
     )  # fmt: skip

@@ -15,6 +15,7 @@ from impactlab._display import display_unit, format_number
 from impactlab._json import jsonable, quantity
 from impactlab._version import __version__
 from impactlab.explain.configurations import Configuration
+from impactlab.explain.correlated import Pairs
 from impactlab.explain.modes import MODES_CAVEAT
 from impactlab.explain.runs import Outcome
 from impactlab.explain.verdict import Verdict, verdict
@@ -73,10 +74,12 @@ class Explanation:
     """Which physics explains measured drops: ``comparison`` (one row per drop, configuration
     and measured quantity: measured, sigma, predicted, z, within_2_sigma, unit (SI), status),
     ``summary`` (per drop and configuration: values within 2 sigma, chi2 = sum of z^2 over
-    the measured values (NaN when one has no prediction), the run's contacts, mu_apparent
+    the measured values, z^T R^-1 z for a drop with correlation coefficients (NaN when one
+    has no prediction), the run's contacts, mu_apparent
     beside the measured mu, max_delta_ratio, flags, modes_converged, a caveat), the
     ``configurations`` compared, the contact ``law`` and ``friction``, ``notes`` (what was not
-    run and why, the caveats, what the runs warned) and ``source`` (the measurements file, if any).
+    run and why, the caveats, what the runs warned), ``source`` (the measurements file, if any)
+    and ``correlation`` (drop -> its correlation coefficients, pair -> coefficient).
     ``result(drop, configuration)`` is the simulation behind a row, ``verdict(drop)`` and
     ``best(drop)`` which configuration explains a drop best."""
 
@@ -88,6 +91,7 @@ class Explanation:
     notes: tuple[str, ...]
     source: str | None = None
     outcomes: Mapping[tuple[str, str], Outcome] = field(default_factory=dict, repr=False)
+    correlation: Mapping[str, Pairs] = field(default_factory=dict, repr=False)
 
     def result(self, drop: str, configuration: str) -> Any:
         """The ImpactResult or DropResult of ``configuration`` on ``drop`` (None where it did
@@ -103,7 +107,7 @@ class Explanation:
         """Which configuration explains ``drop`` best, over which measured quantities and why
         (``explain.verdict``: the ok configurations ranked over the quantities all of them
         predict); KeyError naming the known drops for another."""
-        return verdict(self.summary, self.comparison, drop)
+        return verdict(self.summary, self.comparison, drop, self.correlation.get(drop))
 
     def best(self, drop: str) -> str | None:
         """The configuration that explains ``drop`` best (``verdict(drop).configuration``): of

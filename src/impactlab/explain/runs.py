@@ -160,7 +160,8 @@ class _OneCase:
 
 
 def drop_alone(meas: Measurements, d: int) -> Measurements:
-    """Drop ``d`` of ``meas`` alone, with only the quantities it measured."""
+    """Drop ``d`` of ``meas`` alone, with only the quantities it measured and its correlation
+    coefficients."""
     measured = [q for q in meas.quantities if math.isfinite(meas.observed[q][d])]
     return Measurements(
         (meas.labels[d],),
@@ -169,6 +170,11 @@ def drop_alone(meas: Measurements, d: int) -> Measurements:
         {q: meas.observed[q][d : d + 1].copy() for q in measured},
         {q: meas.sigma[q][d : d + 1].copy() for q in measured},
         meas.source,
+        {
+            (a, b): x[d : d + 1].copy()
+            for (a, b), x in meas.correlation.items()
+            if a in measured and b in measured and not math.isnan(x[d])
+        },
     )
 
 

@@ -5,8 +5,9 @@ z = (predicted - measured) / sigma uses the measurement's standard uncertainty a
 own error (its law beyond the verified range, ...) is a flag beside it, never part of sigma. A
 configuration that did not run, was refused or is flagged invalidating has no prediction: its
 rows carry the reason and count as no agreement. chi2 sums z^2 over every measured value of a
-drop: a configuration that leaves one unpredicted has none (NaN), so that configurations are
-never ranked by sums over different quantities.
+drop (for a drop with correlation coefficients, z^T R^-1 z: ``explain.correlated``): a
+configuration that leaves one unpredicted has none (NaN), so that configurations are never
+ranked by sums over different quantities.
 """
 
 from __future__ import annotations
@@ -20,6 +21,7 @@ import pandas as pd
 from impactlab.calibrate.measurements import Measurements
 from impactlab.calibrate.quantities import MEASURABLE
 from impactlab.explain.configurations import Configuration
+from impactlab.explain.correlated import correlated_chi2, drop_pairs
 from impactlab.explain.runs import Outcome, sequence_values
 from impactlab.flags import ResultFlag
 
@@ -110,10 +112,11 @@ def summary_table(
     comparison: pd.DataFrame,
 ) -> pd.DataFrame:
     """Per drop and configuration: the values within 2 sigma, of those ``compared`` (predicted)
-    and ``n_measured``; chi2 = sum of z^2 over the measured ones (NaN when one has no
-    prediction); the run's contacts, Eq. 28's ``mu_apparent`` beside the drop's measured
-    ``mu``, ``max_delta_ratio`` and the law's verified range, ``law_extrapolated`` (None where
-    no result came), the rate factor, the ``flags`` (bitmask) and their ``flag_names``,
+    and ``n_measured``; chi2 = sum of z^2 over the measured ones, z^T R^-1 z where the drop
+    gives correlation coefficients (NaN when one has no prediction); the run's contacts,
+    Eq. 28's ``mu_apparent`` beside the drop's measured ``mu``, ``max_delta_ratio`` and the
+    law's verified range, ``law_extrapolated`` (None where no result came), the rate factor,
+    the ``flags`` (bitmask) and their ``flag_names``,
     ``modes_converged`` (an ok flexible row checked with twice its modes, ``explain.modes``;
     None where not checked) and a ``caveat`` ("" for none): :data:`BODY_CAVEAT` on an ok
     rigid row whose rod the flexible rows refuse, what twice the modes change on a flexible
@@ -122,6 +125,7 @@ def summary_table(
     grouped = dict(tuple(comparison.groupby(["drop", "configuration"], sort=False)))
     for d, label in enumerate(meas.labels):
         refused = any(outcomes[(label, c.name)].body_refused for c in configs if c.flexible)
+        pairs = drop_pairs(meas, d)
         for cfg in configs:
             out = outcomes[(label, cfg.name)]
             part = grouped[(label, cfg.name)]
@@ -129,6 +133,9 @@ def summary_table(
             seq = sequence_values(out.result)
             whole = out.ok and len(compared) == len(part) > 0
             chi2 = float((compared["z"] ** 2).sum()) if whole else math.nan
+            joint = correlated_chi2(dict(zip(compared["quantity"], compared["z"], strict=True)),
+                                    pairs) if whole else None  # fmt: skip
+            chi2 = chi2 if joint is None else joint
             rows.append({
                 "drop": label, "configuration": cfg.name, "status": out.status, "ok": out.ok,
                 "within_2_sigma": int(compared["within_2_sigma"].sum()),

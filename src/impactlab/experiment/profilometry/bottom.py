@@ -2,7 +2,9 @@
 
 The fit's disc is as wide as the bottom's curvature allows (radius R_c ~ width^2 / (8 depth), a
 spherical cap, rising ~10 noise sigmas above the noise), so the noise does not bias the minimum;
-the fit is recentred when its minimum falls outside the disc.
+the fit is recentred when its minimum falls outside the disc. The disc is a disc in metres: on
+pixels longer one way than the other it spans fewer pixels along the longer side (an ellipse
+in pixel indices), so it never reaches past the bottom along the coarse axis.
 """
 
 from __future__ import annotations
@@ -16,6 +18,10 @@ from impactlab.experiment.uncertainty import propagate
 
 __all__ = ["bottom", "quadric_min"]
 
+#: The bottom counts as flat along one direction (a trough) when the paraboloid's smaller
+#: curvature lies within this many of its sigmas of zero.
+_FLAT_SIGMAS = 3.0
+
 
 def quadric_min(
     zl: np.ndarray,
@@ -24,22 +30,29 @@ def quadric_min(
     j0: int,
     dx: float,
     dy: float,
-    radius: int,
+    radius: float,
     recentre: bool = False,
 ) -> tuple[float, float, float, float, bool] | None:
-    """Minimum of a paraboloid fitted to the valid pixels within ``radius`` of (i0, j0): returns
+    """Minimum of a paraboloid fitted to the valid pixels within ``radius`` [m] of the pixel
+    (i0, j0) (a disc in metres: an ellipse in pixel indices when dx != dy): returns
     (z_min, sigma, x_min, y_min, inside) or None when the fit has no minimum (not convex);
     ``inside`` is False when the minimum lies outside the fitted disc (then, with ``recentre``,
     the caller may refit there)."""
     ny, nx = zl.shape
-    i_lo, i_hi = max(0, i0 - radius), min(ny, i0 + radius + 1)
-    j_lo, j_hi = max(0, j0 - radius), min(nx, j0 + radius + 1)
+    unit = min(dx, dy)  # the disc in units of the smaller pixel: exact integers on square ones
+    ay, ax, rad = dy / unit, dx / unit, radius / unit
+    ri, rj = math.floor(rad / ay + 1e-9), math.floor(rad / ax + 1e-9)
+    i_lo, i_hi = max(0, i0 - ri), min(ny, i0 + ri + 1)
+    j_lo, j_hi = max(0, j0 - rj), min(nx, j0 + rj + 1)
     ii, jj = np.mgrid[i_lo:i_hi, j_lo:j_hi]
-    sel = valid[i_lo:i_hi, j_lo:j_hi] & ((ii - i0) ** 2 + (jj - j0) ** 2 <= radius * radius)
+    dist2 = ((ii - i0) * ay) ** 2 + ((jj - j0) * ax) ** 2
+    sel = valid[i_lo:i_hi, j_lo:j_hi] & (dist2 <= rad * rad * (1.0 + 1e-9))
     if sel.sum() < 10:
         return None
-    u = (jj[sel] - j0) * dx
-    v = (ii[sel] - i0) * dy
+    # coordinates in units of the radius: a well-conditioned fit and covariance (in metres,
+    # the columns 1, u, u^2 span 8 orders of magnitude and A^T A loses the covariance)
+    u = (jj[sel] - j0) * (dx / radius)
+    v = (ii[sel] - i0) * (dy / radius)
     zz = zl[i_lo:i_hi, j_lo:j_hi][sel]
     A = np.column_stack([np.ones_like(u), u, v, u * u, u * v, v * v])
     coef, *_ = np.linalg.lstsq(A, zz, rcond=None)
@@ -47,24 +60,37 @@ def quadric_min(
     s2 = float(res @ res) / max(zz.size - 6, 1)
     cov = s2 * np.linalg.pinv(A.T @ A)
 
+    def hessian(c: np.ndarray) -> np.ndarray:
+        return np.array([[2 * c[3], c[4]], [c[4], 2 * c[5]]])
+
     def zmin(c: np.ndarray) -> np.ndarray:
-        H = np.array([[2 * c[3], c[4]], [c[4], 2 * c[5]]])
-        xy = np.linalg.solve(H, -c[1:3])
+        xy = np.linalg.solve(hessian(c), -c[1:3])
         return np.array([c[0] + 0.5 * c[1:3] @ xy, xy[0], xy[1]])
 
-    H = np.array([[2 * coef[3], coef[4]], [coef[4], 2 * coef[5]]])
-    if np.any(np.linalg.eigvalsh(H) <= 0):
+    def zmin_across(c: np.ndarray) -> np.ndarray:
+        # a trough: the minimum across it (the curved direction) through the disc's centre
+        lam, vec = np.linalg.eigh(hessian(c))
+        t = -float(c[1:3] @ vec[:, 1]) / lam[1]
+        return np.array([c[0] + 0.5 * t * float(c[1:3] @ vec[:, 1]), t * vec[0, 1], t * vec[1, 1]])
+
+    lam = np.linalg.eigvalsh(hessian(coef))
+    if lam[1] <= 0:
         return None
-    y0, cy = propagate(zmin, coef, cov)
-    r_max = radius * min(dx, dy)
-    inside = math.hypot(y0[1], y0[2]) <= r_max
+    _, c_lam = propagate(lambda c: np.linalg.eigvalsh(hessian(c))[:1], coef, cov)
+    sig_lam = math.sqrt(max(float(c_lam[0, 0]), 0.0))
+    if lam[0] <= -_FLAT_SIGMAS * sig_lam:
+        return None  # a saddle
+    # flat along the bottom within the noise (a groove dragged at a constant depth): the
+    # minimum along it is noise, and a paraboloid's minimum there would run deep
+    y0, cy = propagate(zmin if lam[0] >= _FLAT_SIGMAS * sig_lam else zmin_across, coef, cov)
+    inside = math.hypot(y0[1], y0[2]) <= 1.0
     if not inside and not recentre:
         return None
     return (
         float(y0[0]),
         float(math.sqrt(max(cy[0, 0], 0.0))),
-        j0 * dx + float(y0[1]),
-        i0 * dy + float(y0[2]),
+        j0 * dx + float(y0[1]) * radius,
+        i0 * dy + float(y0[2]) * radius,
         inside,
     )
 
@@ -82,7 +108,8 @@ def bottom(
 ) -> tuple[float, float, float, float] | None:
     """(z_min [m], its sigma [m], x, y [m]) of the paraboloid at the deepest pixel ``ij`` of the
     levelled map ``zl`` (``valid`` pixels; ``noise`` its sigma [m]) inside the outline
-    ``polygon``; None when no disc gives a paraboloid with its minimum inside."""
+    ``polygon``, on pixels ``dx`` x ``dy`` [m]; the disc's radius is at least ``quad_radius``
+    pixels of the longer side; None when no disc gives a paraboloid with its minimum inside."""
     i0, j0 = ij
     p_rough = (float(j0 * dx), float(i0 * dy))
     _, ax0 = feret(polygon)
@@ -90,7 +117,11 @@ def bottom(
     w0 = (a0 + b0) if math.isfinite(a0 + b0) else 0.0
     r_c = w0 * w0 / (8.0 * max(depth_rough, 1e-12)) if w0 > 0 else 0.0
     rad_phys = math.sqrt(20.0 * r_c * noise) if r_c > 0 else 0.0
-    rad0 = int(min(max(quad_radius, math.ceil(rad_phys / min(dx, dy))), 40))
+    # at least quad_radius pixels along the longer pixel side, at most a disc of as many pixels
+    # as one of 40 square pixels' radius; on square pixels a whole number of pixels
+    unit = min(dx, dy)
+    rad0 = max(quad_radius * max(dx, dy), math.ceil(rad_phys / unit) * unit)
+    rad0 = min(rad0, 40.0 * math.sqrt(dx * dy))
     q = None
     for rad in (rad0, 2 * rad0, 3 * rad0):
         ic, jc = int(i0), int(j0)

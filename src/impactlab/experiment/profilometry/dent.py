@@ -3,14 +3,14 @@
 Definitions in the package docstring (:mod:`impactlab.experiment.profilometry`); the steps of
 :func:`measure_dent`: level the scan, fill dropouts, find the deepest depression above the
 detection threshold, outline it, fit its bottom (delta_p), measure length and width at the edge
-threshold (extrapolated to the zero threshold when the dent is deep enough), orient the sliding
-axis towards the sharper end, estimate the uncertainties, find the pile-up.
+threshold (extrapolated to the zero threshold when the dent is deep enough, from levels clear of
+the smoothing's reach: :func:`~.outline.extent`), orient the sliding axis towards the sharper
+end, estimate the uncertainties, find the pile-up.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
 from scipy import ndimage
@@ -21,14 +21,7 @@ from impactlab.experiment.profilometry.bottom import bottom
 from impactlab.experiment.profilometry.gaps import GapSpread, gap_spread, outline_gaps
 from impactlab.experiment.profilometry.heightmap import HeightMap
 from impactlab.experiment.profilometry.metrics import DentMetrics
-from impactlab.experiment.profilometry.outline import (
-    chord,
-    fall_distance,
-    feret,
-    outline,
-    principal_axis,
-    sample,
-)
+from impactlab.experiment.profilometry.outline import Extent, extent, fall_distance, outline, sample
 from impactlab.experiment.profilometry.surface import (
     Surface,
     dent_region,
@@ -43,21 +36,6 @@ __all__ = ["MAX_PROFILE_SAMPLES", "DentMetrics", "measure_dent"]
 #: The most samples the profiles along and across the dent may take (half a pixel apart): more
 #: means pixels far longer one way than the other, a pixel size read wrong.
 MAX_PROFILE_SAMPLES = 1_000_000
-
-
-@dataclass(frozen=True)
-class _Extent:
-    """Length, width [m] and the sliding axis (unit vector) of the deformed area; ``length_t``,
-    ``width_t`` at the threshold itself; ``extrapolated`` when length and width were
-    extrapolated to the zero threshold; ``outlines`` the outlines measured (x, y) [m]."""
-
-    length: float
-    width: float
-    axis: np.ndarray
-    length_t: float
-    width_t: float
-    extrapolated: bool
-    outlines: tuple[np.ndarray, ...] = ()
 
 
 def _deepest(
@@ -80,52 +58,58 @@ def _deepest(
 
 
 def _extent(
-    sf: Surface, thr: float, depth: float, deepest: np.ndarray, zs: np.ndarray | None = None
-) -> _Extent | None:
-    """The extent on the smoothed map (``zs``, default the scan's); None when the outline at the
-    threshold ``thr`` [m] is lost or does not cross the line through ``deepest``."""
+    sf: Surface,
+    thr: float,
+    depth: float,
+    deepest: np.ndarray,
+    smooth: float,
+    zs: np.ndarray | None = None,
+    levels: tuple[float, float] | None = None,
+) -> Extent | None:
+    """The extent (:func:`~.outline.extent`) on the smoothed map (``zs``, default the scan's);
+    None when the outline at the threshold ``thr`` [m] is lost or does not cross the line
+    through ``deepest``."""
     zmap = sf.zs if zs is None else zs
-
-    def metrics_at(level: float) -> tuple[float, float, np.ndarray, np.ndarray] | None:
-        ol = outline(zmap, sf.dx, sf.dy, -level, (float(deepest[0]), float(deepest[1])))
-        if ol is None:
-            return None
-        L, ax = feret(ol)
-        principal = principal_axis(ol)  # the outline's long axis: far less noisy than Feret's
-        ax = ax if principal is None else principal
-        perp = np.array([-ax[1], ax[0]])
-        a, b = chord(ol, deepest, perp)
-        return L, a + b, ax, ol
-
-    m1 = metrics_at(thr)
-    if m1 is None or not math.isfinite(m1[1]):
-        return None
-    length, width, axis, ol1 = m1
-    m2 = metrics_at(2.0 * thr) if depth > 4.0 * thr else None
-    length_t, width_t = length, width  # at the threshold
-    if m2 is not None:
-        # the outline shrinks about linearly with the threshold near the dent's edge: extrapolate
-        # the length and the width to the threshold 0 (the deformed area's true edge)
-        length = 2.0 * length_t - m2[0]
-        width = 2.0 * width_t - m2[1]
-    outlines = (ol1,) if m2 is None else (ol1, m2[3])
-    return _Extent(length, width, axis, length_t, width_t, m2 is not None, outlines)
+    return extent(zmap, sf.dx, sf.dy, thr, depth, deepest, smooth, levels)
 
 
 def _gaps(
-    sf: Surface, thr: float, depth: float, deepest: np.ndarray, ext: _Extent
+    sf: Surface, thr: float, depth: float, deepest: np.ndarray, ext: Extent, smooth: float
 ) -> GapSpread | None:
     """What the large gaps without data that the outlines run through leave open (:mod:`.gaps`);
     None when they run through none, or leave no more than a pixel open."""
-    gap = outline_gaps(sf, ext.outlines)
+    gap = outline_gaps(sf, ext.outlines[:2])  # the outlines at thr and 2 thr
     if gap is None:
         return None
 
     def measure(zs: np.ndarray) -> tuple[float, float] | None:
-        e = _extent(sf, thr, depth, deepest, zs)
+        e = _extent(sf, thr, depth, deepest, smooth, zs, ext.levels)
         return None if e is None else (e.length, e.width)
 
     return gap_spread(sf, gap, thr, measure, (ext.length, ext.width))
+
+
+def _clear_of_gaps(
+    sf: Surface, thr: float, depth: float, deepest: np.ndarray, smooth: float, ext: Extent
+) -> Extent:
+    """``ext`` with the length's or the width's levels back at thr and 2 thr where a gap that
+    the outline runs through moves it by more than a pixel (no edge there to place the levels
+    inside the edge by; :func:`_gaps` then measures its spread at thr and 2 thr)."""
+    gap = None if ext.levels == (thr, thr) else outline_gaps(sf, ext.outlines[:2])
+    if gap is None:
+        return ext
+
+    def measure(zs: np.ndarray) -> tuple[float, float] | None:
+        e = _extent(sf, thr, depth, deepest, smooth, zs, ext.levels)
+        return None if e is None else (e.length, e.width)
+
+    spread = gap_spread(sf, gap, thr, measure, (ext.length, ext.width))
+    if spread is None:
+        return ext
+    pixel = min(sf.dx, sf.dy) / math.sqrt(3.0)  # spreads are stated as sigmas of a uniform one
+    moved = (spread.sigma_length > pixel, spread.sigma_width > pixel)
+    levels = (thr if moved[0] else ext.levels[0], thr if moved[1] else ext.levels[1])
+    return _extent(sf, thr, depth, deepest, smooth, levels=levels) or ext
 
 
 def _profiles(
@@ -210,25 +194,21 @@ def _outline_noise(
 
 
 def _sigmas(
-    ext: _Extent, thr: float, depth: float, noise: tuple[float, float]
+    ext: Extent, thr: float, depth: float, noise: tuple[float, float]
 ) -> tuple[float, float, float]:
     """Standard uncertainties of length, width and L_s [m]: the threshold sensitivity and the
     outline noise."""
     noise_len, noise_wid = noise
-    length, width = ext.length, ext.width
     if ext.extrapolated:
-        # a quarter of the extrapolation's correction (its non-linearity) and the outline noise,
-        # amplified by the extrapolation (2 x1 - x2: about sqrt(5))
-        d_len = 0.25 * abs(length - ext.length_t)
-        d_wid = 0.25 * abs(width - ext.width_t)
-        d_ls = 0.25 * abs((length - width) - (ext.length_t - ext.width_t))
-        amp = math.sqrt(5.0)
+        # the extrapolation's model error and the outline noise, amplified by the extrapolation
+        d_len, d_wid, d_ls = ext.model
+        g_len, g_wid = ext.noise_gain
     else:
-        d_len, d_wid, d_ls = abs(0.5 * thr / max(depth, 1e-30) * length), 0.0, 0.0
-        amp = 1.0
-    sig_len = math.hypot(d_len, amp * noise_len)
-    sig_wid = math.hypot(d_wid, amp * noise_wid)
-    sig_ls = math.sqrt(d_ls**2 + amp**2 * (noise_len**2 + noise_wid**2))
+        d_len, d_wid, d_ls = abs(0.5 * thr / max(depth, 1e-30) * ext.length), 0.0, 0.0
+        g_len, g_wid = 1.0, 1.0
+    sig_len = math.hypot(d_len, g_len * noise_len)
+    sig_wid = math.hypot(d_wid, g_wid * noise_wid)
+    sig_ls = math.sqrt(d_ls**2 + (g_len * noise_len) ** 2 + (g_wid * noise_wid) ** 2)
     return sig_len, sig_wid, sig_ls
 
 
@@ -269,7 +249,8 @@ def measure_dent(
         edge_fraction x depth).
     smooth : Gaussian smoothing [pixels] for the outline and the profiles (not for delta_p).
     min_pixels : smallest dent area [pixels] (smaller depressions are dust or noise).
-    quad_radius : radius [pixels] of the paraboloid fit at the deepest point.
+    quad_radius : smallest radius of the paraboloid fit at the deepest point, in pixels of the
+        longer side (the fit's disc is a disc in metres).
     pileup_band : width of the band around the outline searched for pile-up, x the dent width.
     max_filled : largest fraction of the dent area that may be dropouts (filled by interpolation).
 
@@ -300,7 +281,16 @@ def measure_dent(
             f"times the scan's noise ({sf.lev.sigma * 1e6:.2g} um): the dent is barely resolved"
         )
     return _metrics(
-        hm, sf, delta_p, np.array([xm, ym]), polygon, thr, region, filled, pileup_band, warnings
+        hm,
+        sf,
+        delta_p,
+        np.array([xm, ym]),
+        polygon,
+        thr,
+        region,
+        filled,
+        (pileup_band, smooth),
+        warnings,
     )
 
 
@@ -317,15 +307,18 @@ def _metrics(
     thr: float,
     region: np.ndarray,
     filled: float,
-    pileup_band: float,
+    options: tuple[float, float],
     warnings: list[str],
 ) -> DentMetrics:
     """The dent's extent, sliding axis, profiles, uncertainties and pile-up around its deepest
-    point ``deepest`` (x, y) [m] and its outline ``polygon`` at the threshold ``thr`` [m]."""
+    point ``deepest`` (x, y) [m] and its outline ``polygon`` at the threshold ``thr`` [m];
+    ``options`` (pileup_band, smooth) of :func:`measure_dent`."""
+    pileup_band, smooth = options
     depth = delta_p.value
-    ext = _extent(sf, thr, depth, deepest)
+    ext = _extent(sf, thr, depth, deepest, smooth)
     if ext is None:
         raise ScanError(f"{sf.src}: the outline does not cross the line through the deepest point")
+    ext = _clear_of_gaps(sf, thr, depth, deepest, smooth, ext)
     length, width = ext.length, ext.width
     s, prof, sc, cprof = _profiles(sf, deepest, ext.axis, length, width)
     axis, s, prof, d_minus, d_plus, ambiguous = _orient(s, prof, ext.axis, depth)
@@ -334,7 +327,7 @@ def _metrics(
     s_start, s_end = float(proj.min()), float(proj.max())
     noise = _outline_noise(sf.sig_s, s, prof, (s_start, s_end), sc, cprof, width)
     sig_len, sig_wid, sig_ls = _sigmas(ext, thr, depth, noise)
-    gaps = _gaps(sf, thr, depth, deepest, ext)
+    gaps = _gaps(sf, thr, depth, deepest, ext, smooth)
     if gaps is not None:
         sig_len = math.hypot(sig_len, gaps.sigma_length)
         sig_wid = math.hypot(sig_wid, gaps.sigma_width)
