@@ -42,14 +42,21 @@ class ImplausibleInputWarning(UserWarning):
 
 def did_you_mean(name: Any, known: Iterable[str]) -> str:
     """`` (did you mean 'x'?)`` for the known name nearest to ``name`` (a mistyped or
-    ``-``/``_``-swapped name), or ``""``."""
+    ``-``/``_``-swapped or differently cased name), or ``""``."""
     import difflib
 
     if not isinstance(name, str):
         return ""
     names = list(known)
-    swapped = [k for k in names if k.replace("-", "_") == name.replace("-", "_")]
-    near = swapped or difflib.get_close_matches(name, names, n=1, cutoff=0.6)
+
+    def key(text: str) -> str:  # "HERTZ", "Kogut_Komvopoulos": the same name
+        return text.replace("-", "_").lower()
+
+    swapped = [k for k in names if key(k) == key(name)]
+    near = swapped or [
+        names[[key(k) for k in names].index(m)]
+        for m in difflib.get_close_matches(key(name), [key(k) for k in names], n=1, cutoff=0.6)
+    ]
     return f" (did you mean {near[0]!r}?)" if near else ""
 
 
