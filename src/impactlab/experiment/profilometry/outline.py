@@ -349,7 +349,7 @@ def extent(
         # one from inside, one not, under the same smoothing (square pixels): both at thr and
         # 2 thr, where their biases are alike and cancel in L_s = length - width (a noisy edge
         # can make one look shallow and the other not)
-        rows = [_linear(float(m1[k]), float(m2[k]), levels[k] != thr, sig[k]) for k in (0, 1)]
+        rows = [_linear(float(m1[k]), float(m2[k]), False, sig[k]) for k in (0, 1)]
     (L0, d_len, in_len, k_len), (W0, d_wid, in_wid, k_wid) = rows
     # L_s: the threshold's non-linearity where length and width share it (a quarter of the
     # difference of their corrections at thr), the model errors of those from inside, and the
