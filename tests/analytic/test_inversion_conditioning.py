@@ -23,7 +23,8 @@ def _warnings(**kw):
 def test_near_mu_c_the_warning_names_mu_c_and_the_long_t_is_not_a_units_problem():
     r = _warnings(angle="20 deg", mu=0.75)
     assert r.duration == pytest.approx(0.1601, rel=1e-3)
-    cond, long_t = r.warnings
+    compliance, cond, long_t = r.warnings
+    assert "tangentially compliant" in compliance  # mu = 0.98 mu_c
     assert cond.startswith("T is ill-conditioned here: a 1 % error in mu moves T by about 63.5 %")
     assert "mu = 0.75 lies 1.54 % below mu_c = 0.7618 at angle = 20 deg" in cond
     assert long_t.startswith("the inverted duration T = 0.1601 s exceeds 0.1 s")

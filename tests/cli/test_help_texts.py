@@ -71,5 +71,6 @@ def test_invert_e_says_what_happens_without_it(cli_main: Any) -> None:
                             "--delta-p", "22 um", "--ls", "1400 um")  # fmt: skip
     assert (code, err) == (
         2,
-        "error: missing input: --e (or --dv-cy) is needed for the mean force\n",
+        "error: missing input(s): --e (or --dv-cy) (or use --case paper-20|paper-45|paper-70 or"
+        " --file)\n",
     )

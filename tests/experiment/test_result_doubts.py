@@ -53,6 +53,12 @@ def test_an_impossible_result_is_not_ok(heavy: Any) -> None:
     assert "  ok " in text and "  doubt " in text and "no impact gives it" in text
 
 
+def test_the_rods_note_is_listed_once(heavy: Any) -> None:
+    """The inversion checks the rod too: its ``inversion: rod: ...`` repeated the doubt."""
+    (rod,) = [w for w in heavy.warnings if "the mass and the inertia do not fit" in w]
+    assert rod == heavy.doubts[0] and rod.startswith("rod: ")
+
+
 def test_an_implausible_duration_is_not_ok_and_the_table_shows_the_model() -> None:
     """With --flat the inferred T is 34 times the simulated one: warned, yet ok before; the
     table showed neither the warnings nor the engine's numbers."""

@@ -24,6 +24,7 @@ __all__ = [
     "check_direction",
     "check_duration",
     "check_finite_result",
+    "check_mc_duration",
 ]
 
 #: A relative sensitivity |d ln T / d ln mu| or |d ln T / d ln angle| above this draws an
@@ -132,6 +133,32 @@ def check_duration(T: float, conditioned: bool) -> None:
     warn_implausible(
         f"the inverted duration T = {T:.4g} s exceeds {PLAUSIBLE_DURATION:g} s, far longer "
         f"than a rigid-body impact; {why}"
+    )
+
+
+def check_mc_duration(
+    T: float, mc: Mapping[str, Any], meas: Mapping[str, Measured], sens_T: Mapping[str, float]
+) -> None:
+    """ImplausibleInputWarning where the nominal T [s] is plausible but the Monte Carlo's median
+    ``T_median_mc`` or the upper end of ``T_interval_mc`` lies above ``PLAUSIBLE_DURATION``: the
+    sigmas spread T to durations no rigid-body impact has (the nominal's rule, ``check_duration``,
+    applied to the distribution); the text names the input whose sigma moves T most (first
+    order, ``sens_T``)."""
+    median, upper = mc["T_median_mc"], mc["T_interval_mc"][1]
+    if T > PLAUSIBLE_DURATION or max(median, upper) <= PLAUSIBLE_DURATION:
+        return
+    share = {k: abs(sens_T.get(k, 0.0)) * m.sigma for k, m in meas.items()}
+    top = max(share, key=lambda k: share[k])
+    what = (
+        f"the Monte Carlo's median T_median_mc = {median:.4g} s"
+        if median > PLAUSIBLE_DURATION
+        else f"the upper end of the Monte Carlo's 95 % interval of T, {upper:.4g} s,"
+    )
+    warn_implausible(
+        f"{what} exceeds {PLAUSIBLE_DURATION:g} s (the nominal T = {T:.4g} s), far longer "
+        "than a rigid-body impact: the sigmas given spread T beyond any impact (the largest "
+        f"share from the sigma of {top} = {meas[top].sigma:.4g}); check the sigmas and their "
+        "units (SI)"
     )
 
 

@@ -12,6 +12,7 @@ from typing import Any
 from impactlab._validation import warn_implausible
 from impactlab.analytic._inputs import HALF_PI
 from impactlab.analytic.result import Measured, measured
+from impactlab.bodies._checks import inertia_ratio_problem
 
 __all__ = [
     "E_NOISE_SIGMAS",
@@ -26,6 +27,7 @@ __all__ = [
     "check_momentum",
     "check_plausible",
     "check_restitution",
+    "check_rod",
     "check_sigma_fits",
     "measurements",
 ]
@@ -187,10 +189,13 @@ def check_restitution(e: Measured) -> Measured:
     return Measured(bound, s)
 
 
-def check_sigma_fits(name: str, sigma: float, low: float, high: float, unit: str = "") -> None:
+def check_sigma_fits(
+    name: str, sigma: float, low: float, high: float, unit: str = "", why: str = ""
+) -> None:
     """ValueError when the standard deviation ``sigma`` of input ``name`` (same unit as the
     input, ``unit``: "rad" for the angle) exceeds ``SIGMA_RANGE_FRACTION`` of the width of its
-    range [low, high]: such a sigma spans the whole range and carries no measurement."""
+    range [low, high] (``why``: what sets the range, named in the error): such a sigma spans the
+    whole range and carries no measurement."""
     limit = SIGMA_RANGE_FRACTION * (high - low)
     if sigma <= limit:
         return
@@ -201,6 +206,8 @@ def check_sigma_fits(name: str, sigma: float, low: float, high: float, unit: str
         u = f" {unit}" if unit else ""
         given = f"{sigma!r}{u}"
         bound = f"[{low:g}, {high:.4g}]{u}, at most {limit:.4g}{u}"
+    if why:
+        bound += f"; {why}"
     raise ValueError(
         f"the sigma of {name} = {given} does not fit its range: a standard deviation may be "
         f"at most {SIGMA_RANGE_FRACTION:g} of the range's width ({name} in {bound}); a wider "
@@ -211,9 +218,11 @@ def check_sigma_fits(name: str, sigma: float, low: float, high: float, unit: str
 def check_plausible(meas: Mapping[str, Measured], length: float, tip_radius: float) -> None:
     """ValueError for what is impossible for this rod (a dent or a sliding length shorter than
     ``MIN_DENT_DEPTH``, a dent deeper than the tip radius, a sliding length longer than the
-    rod); ImplausibleInputWarning for a dent or a sliding length shorter than
-    ``PLAUSIBLE_DENT_DEPTH``, a dent deeper than ``PLAUSIBLE_DENT_RATIO`` R, a |v_i| below
-    ``PLAUSIBLE_MIN_SPEED``, or a speed (v_i, dv_cy, |vt_in|) above ``PLAUSIBLE_SPEED``."""
+    rod, a sigma of the dent or of the sliding length wider than ``SIGMA_RANGE_FRACTION`` of
+    the tip radius or of the rod's length); ImplausibleInputWarning for a dent or a sliding
+    length shorter than ``PLAUSIBLE_DENT_DEPTH``, a dent deeper than ``PLAUSIBLE_DENT_RATIO``
+    R, a |v_i| below ``PLAUSIBLE_MIN_SPEED``, or a speed (v_i, dv_cy, |vt_in|) above
+    ``PLAUSIBLE_SPEED``."""
     dp, ls = meas["delta_p"].value, meas["sliding_length"].value
     if dp < MIN_DENT_DEPTH:
         raise ValueError(
@@ -248,6 +257,22 @@ def check_plausible(meas: Mapping[str, Measured], length: float, tip_radius: flo
             f"sliding_length = {ls!r} m is longer than the rod ({length!r} m); check the units "
             "(SI: m)"
         )
+    check_sigma_fits(
+        "delta_p",
+        meas["delta_p"].sigma,
+        0.0,
+        tip_radius,
+        "m",
+        "no dent is deeper than the rod's tip radius",
+    )
+    check_sigma_fits(
+        "sliding_length",
+        meas["sliding_length"].sigma,
+        0.0,
+        length,
+        "m",
+        "no scar is longer than the rod",
+    )
     if dp > PLAUSIBLE_DENT_RATIO * tip_radius:
         warn_implausible(
             f"delta_p = {dp!r} m is deeper than {PLAUSIBLE_DENT_RATIO:g} of the tip radius "
@@ -264,6 +289,15 @@ def check_plausible(meas: Mapping[str, Measured], length: float, tip_radius: flo
                 f"{k} = {meas[k].value!r} m/s exceeds {PLAUSIBLE_SPEED:g} m/s; check the units "
                 "(SI: m/s)"
             )
+
+
+def check_rod(mass: float, length: float, inertia: float) -> None:
+    """ImplausibleInputWarning (``rod: ...``) where the rod's mass [kg] and inertia [kg m^2] do
+    not fit its length [m]: I_C / (m L^2) below ``bodies._checks.INERTIA_RATIO_FLOOR``, the
+    check ``impactlab analyze`` makes (a mass in grams given as kilograms)."""
+    note = inertia_ratio_problem(mass, inertia, length)
+    if note is not None:
+        warn_implausible(f"rod: {note}")
 
 
 def past_normal_inversion(th: float) -> str:

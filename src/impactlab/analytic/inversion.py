@@ -21,6 +21,7 @@ from impactlab._validation import (
     check_seed,
     warn_implausible,
 )
+from impactlab.analytic._compliance import check_compliance
 from impactlab.analytic._conditioning import (
     CONDITION_LIMIT,
     REVERSAL_SIGMAS,
@@ -29,11 +30,17 @@ from impactlab.analytic._conditioning import (
     check_direction,
     check_duration,
     check_finite_result,
+    check_mc_duration,
 )
 from impactlab.analytic._correlation import check_correlation, linear_sigmas, sign_flipped
 from impactlab.analytic._inputs import HALF_PI, rod_values
 from impactlab.analytic._inputs import travel as _travel
-from impactlab.analytic._measurements import check_momentum, check_plausible, measurements
+from impactlab.analytic._measurements import (
+    check_momentum,
+    check_plausible,
+    check_rod,
+    measurements,
+)
 from impactlab.analytic.closed_forms import G0, check_sliding, coefficients, duration_from_dent
 from impactlab.analytic.monte_carlo import (
     MC_REJECTED_WARNING,
@@ -251,17 +258,23 @@ def invert(
     than the rod's tip radius, a sliding length longer than the rod (impossible: most likely a
     unit mistake), the sticking regime (mu >= mu_c), where the dent does not fix T, and a sigma
     of e or the angle wider than a quarter of its range ([0, 1], (0, pi/2)): it spans the
-    whole range; also a required input given as None, and a rod or inputs whose K_x, K_y, T, F
+    whole range, or a sigma of delta_p or sliding_length wider than a quarter of the tip radius
+    or of the rod's length; the sticking regime is named before a sliding length below 1 nm;
+    also a required input given as None, and a rod or inputs whose K_x, K_y, T, F
     or uncertainties over- or underflow (named, never returned as inf, NaN or 0).
     ImplausibleInputWarning for a dent shallower than 0.1 um or deeper than a tenth of the tip
     radius, |v_i| below 1 mm/s, |v_i| or dv_cy above 100 m/s, a nominal duration
-    above 0.1 s, a Monte Carlo that discards more than 5 % of its samples (``mc_rejected``;
-    ``mc_used`` samples kept), or any sample in the sticking regime or at vt_in >= |alpha| |v_i|:
-    T has a heavy tail there, its Monte Carlo mean and standard deviation are unreliable, its
-    median and interval are not; a vt_in more than 3 sigma above 0 (with T's bounds), or more
-    than 5 % of the samples above 0 that move T's median or interval (``REVERSAL_LEAN``); and
-    for an ill-conditioned T: |d ln T/d ln mu| or |d ln T/d ln angle| above 10
-    (``CONDITION_LIMIT``), near mu_c or 90 deg, where alpha -> 0.
+    above 0.1 s, or a Monte Carlo median or 95 % interval reaching above it, a rod whose
+    I_C / (m L^2) is below 1/240 (``rod: ...``, as ``analyze``), a mu/mu_c at which a
+    tangentially compliant contact makes T 10 % or more too long (docs/analytic.md, Sec. 7;
+    ``_compliance.COMPLIANCE_THRESHOLD``; advice only), a Monte Carlo that discards more than
+    5 % of its samples (``mc_rejected``; ``mc_used`` samples kept), or any sample in the
+    sticking regime or at vt_in >= |alpha| |v_i|: T has a heavy tail there, its Monte Carlo
+    mean and standard deviation are unreliable, its median and interval are not; a vt_in more
+    than 3 sigma above 0 (with T's bounds), or more than 5 % of the samples above 0 that move
+    T's median or interval (``REVERSAL_LEAN``); and for an ill-conditioned T: |d ln T/d ln mu|
+    or |d ln T/d ln angle| above 10 (``CONDITION_LIMIT``), near mu_c or 90 deg, where
+    alpha -> 0.
 
     Returns an :class:`InversionResult` with ``duration`` and ``mean_force``, their first-order
     and Monte Carlo uncertainties (mean, standard deviation, median, 95 % interval), alpha, K_x,
@@ -280,8 +293,11 @@ def invert(
         flipped = sign_flipped(given) if correlation is not None else frozenset()
         opt["correlation"] = check_correlation(correlation, meas, flipped)
         m, L, R, inertia = _scalar_rod(rod)
-        check_plausible(meas, L, R)
+        check_rod(m, L, inertia)
+        # the sticking regime first: there a sliding length near 0 is what it leaves
         coef = _nominal_coefficients(meas, m, L, R, inertia, opt["travel"])
+        check_plausible(meas, L, R)
+        check_compliance(meas["mu"].value, coef[3], meas["angle"].value, meas["v_i"].value)
         check_direction(meas, abs(coef[2]), opt["gravity"], opt["g"])
         rod_ = {"mass": m, "length": L, "tip_radius": R, "inertia": inertia}
         return _result(meas, opt, rod_, coef, measure)
@@ -348,6 +364,7 @@ def _result(
     mc_args = (meas, opt["n_samples"], opt["seed"], core, abs(al), opt["gravity"], corr)
     mc = monte_carlo(*mc_args) if varied else point_distribution(T0, float(F0_a))
     check_finite_result(mc, meas, rod)
+    check_mc_duration(T0, mc, meas, sens_T)
     return InversionResult(
         duration=T0,
         mean_force=float(F0_a),

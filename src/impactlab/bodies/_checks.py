@@ -270,3 +270,34 @@ def plausible(name: str, value: float, bounds: tuple[float, float], unit: str) -
             f"; check the units (impactlab takes SI: a bare number is in {unit})"
         )
     return value
+
+
+#: A rod's I_C / (m L^2) below this, 20 times below a uniform rod's 1/12, is implausible (a
+#: mass in grams given in kilograms gives 1000 times below).
+INERTIA_RATIO_FLOOR = 1.0 / 240.0
+#: The words that open :func:`inertia_ratio_problem`'s text (``impactlab invert`` finds its
+#: doubt by them).
+INERTIA_MISFIT = "the mass and the inertia do not fit"
+
+
+def inertia_ratio_problem(mass: float, inertia: float, length: float) -> str | None:
+    """Why a rod's mass [kg] and inertia I_C [kg m^2] do not fit its length [m] (None when they
+    do): I_C / (m L^2) below :data:`INERTIA_RATIO_FLOOR`, with the likely unit mistake (the most
+    a rod can have, all its mass at its ends, is refused by ``Rod`` itself). Shared by
+    ``impactlab.experiment.analyze`` and ``impactlab.analytic.invert``."""
+    k = inertia / (mass * length * length)
+    if k >= INERTIA_RATIO_FLOOR:
+        return None
+    hint = ""
+    if INERTIA_RATIO_FLOOR <= 1e3 * k <= 0.25:
+        hint = (
+            f": a mass in grams given as kilograms? (mass = {mass * 1e-3:.4g} kg gives "
+            f"{1e3 * k:.3g})"
+        )
+    return (
+        f"{INERTIA_MISFIT}: I_C / (m L^2) = {k:.2g} (mass = "
+        f"{mass:.4g} kg, inertia = "
+        f"{inertia:.4g} kg m^2, L = {length:.4g} m), {1.0 / (12.0 * k):.3g} times below "
+        f"a uniform rod's 1/12 (below {INERTIA_RATIO_FLOOR:.2g} no rod is plausible); the mass "
+        f"or the inertia is in a wrong unit{hint}; check the rod (SI: kg, kg m^2)"
+    )

@@ -21,7 +21,6 @@ from impactlab._display import field_row
 from impactlab._json import to_json
 from impactlab._validation import ImplausibleInputWarning
 from impactlab.analytic import InversionResult, invert
-from impactlab.bodies import PAPER_ROD, Rod
 from impactlab.cli._common import (
     SI_UNITS,
     UserError,
@@ -29,6 +28,12 @@ from impactlab.cli._common import (
     parse_rod_table,
     print_rows,
     rod_option,
+)
+from impactlab.cli.invert_checks import (
+    check_complete,
+    compare_with_engine,
+    inversion_rod,
+    inversion_warnings,
 )
 from impactlab.cli.invert_inputs import (
     ARGUMENTS,
@@ -47,37 +52,6 @@ from impactlab.cli.invert_output import inversion_doubts, inversion_json, print_
 
 #: The most Monte Carlo samples taken (--samples, samples in a file): about 1.3 GB of arrays.
 MAX_SAMPLES = 10_000_000
-#: the inputs that T needs (F needs e or dv_cy besides)
-_REQUIRED = ("angle", "v_i", "mu", "delta_p", "L_s")
-
-
-def _rod(r: dict[str, float]) -> Rod:
-    """The paper's rod with the given properties replaced (without an explicit inertia the
-    slender-rod m L^2 / 12 of the new mass and length)."""
-    if not r:
-        return PAPER_ROD
-    return Rod(
-        mass=r.get("mass", PAPER_ROD.mass),
-        length=r.get("length", PAPER_ROD.length),
-        tip_radius=r.get("tip_radius", PAPER_ROD.tip_radius),
-        inertia=r.get("inertia"),
-    )
-
-
-def _check_complete(have: set[str], sigmas: set[str]) -> None:
-    """Every input T and F need is there (checked before any value is parsed)."""
-    missing = [n for n in _REQUIRED if n not in have]
-    if missing:
-        raise UserError(
-            "missing input(s): "
-            + ", ".join(FIELDS[m][2] for m in missing)
-            + " (or use --case paper-20|paper-45|paper-70 or --file)"
-        )
-    if "e" not in have and "dv_cy" not in have:
-        raise UserError("missing input: --e (or --dv-cy) is needed for the mean force")
-    alone = sorted(sigmas - have)
-    if alone:
-        raise UserError(f"an uncertainty is given for {', '.join(alone)} but not its value")
 
 
 def run_invert(
@@ -116,10 +90,12 @@ def run_invert(
     labels |= {f"sigma.{k}": "--sigma-" + FIELDS[k][2][2:] for k in cli_s}
     cli_c, file_c = parse_correlations(correlation), extra.get("correlation", {})
     labels["correlation:"] = correlation_label(bool(cli_c), bool(file_c))
-    _check_complete(set(v) | set(cli_v), set(s) | set(cli_s))
+    check_complete(set(v) | set(cli_v), set(s) | set(cli_s))
     v.update({k: parse_value(val, FIELDS[k][0], FIELDS[k][2]) for k, val in cli_v.items()})
     s.update({k: parse_sigma(k, val, cli_v.get(k)) for k, val in cli_s.items()})
-    r.update(parse_rod_table({k: val for k, val in (rod or {}).items() if val is not None}, "--"))
+    cli_r = {k: val for k, val in (rod or {}).items() if val is not None}
+    r.update(parse_rod_table(cli_r, "--"))
+    body = inversion_rod(r, cli_r)
     kwargs: dict[str, Any] = {ARGUMENTS.get(k, k): (val, s.get(k, 0.0)) for k, val in v.items()}
     if measure is not None:
         check_measure(measure, "--measure")
@@ -140,7 +116,7 @@ def run_invert(
     try:
         result = invert(
             **kwargs,
-            rod=_rod(r),
+            rod=body,
             gravity=gravity if gravity is not None else bool(extra.get("gravity", False)),
             measure=measure or extra.get("measure", "slip"),
             n_samples=samples,
@@ -325,10 +301,10 @@ def invert_cmd(
             seed=seed,
             correlation=correlation,
         )
-    found = _inversion_warnings(caught)
+    found = inversion_warnings(caught)
     if flat is None and case is not None:
         flat = "aisi-1010"  # the paper's flat
-    model, compared = _compare_with_engine(res, flat) if flat is not None else ({}, [])
+    model, compared = compare_with_engine(res, flat) if flat is not None else ({}, [])
     doubts = inversion_doubts(found, compared)
     found += compared
     if as_json:
@@ -345,49 +321,6 @@ def invert_cmd(
             print_rows(rows, f"simulated impact on {model['flat']}")
     for text in found:
         typer.echo(f"warning: {text}", err=True)
-
-
-def _inversion_warnings(caught: list[warnings.WarningMessage]) -> list[str]:
-    """The texts of the inversion's ImplausibleInputWarnings (for the JSON's ``warnings`` and
-    stderr); any other warning is shown again as Python shows it."""
-    texts = []
-    for w in caught:
-        if issubclass(w.category, ImplausibleInputWarning):
-            texts.append(str(w.message))
-        else:
-            warnings.showwarning(w.message, w.category, w.filename, w.lineno)
-    return texts
-
-
-def _compare_with_engine(res: InversionResult, flat: str) -> tuple[dict[str, Any], list[str]]:
-    """The impact simulated with the measured angle, tip velocity (vt_in, v_i) (no spin: the
-    centre of mass moves with the tip) and mu on ``flat``, and the warnings of
-    ``experiment.consistency`` on the inferred T and F."""
-    from impactlab.dynamics import simulate  # lazy: a fast CLI start
-    from impactlab.experiment.consistency import check_against_model
-    from impactlab.materials import get_material
-
-    try:
-        material = get_material(flat.strip())
-    except ValueError as exc:
-        raise UserError(f"--flat: {exc}") from None
-    rod = res.rod
-    body = Rod(length=rod["length"], tip_radius=rod["tip_radius"], mass=rod["mass"],
-               inertia=rod.get("inertia"))  # fmt: skip
-    law = "ghaednia"
-    try:
-        r = simulate(body, material, law=law, mu=res.inputs["mu"][0],
-                     angle=res.inputs["angle"][0], velocity=(res.inputs.get("vt_in", (0.0,))[0],
-                     -abs(res.inputs["v_i"][0])), history=False)  # fmt: skip
-    except ValueError as exc:
-        raise UserError(f"--flat: the simulated impact failed: {exc}") from None
-    model: dict[str, Any] = {"law": law, "flat": material.name}
-    model |= {"duration": r.duration, "mean_force": r.mean_force, "e": r.e, "delta_p": r.delta_p}
-    warnings = check_against_model(
-        res.duration, res.mean_force, model_duration=r.duration, model_force=r.mean_force,
-        law=law, sigma_duration=res.sigma_T_linear,
-    )  # fmt: skip
-    return model, warnings
 
 
 def register(app: typer.Typer) -> None:

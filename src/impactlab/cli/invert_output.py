@@ -16,6 +16,7 @@ from impactlab._version import __version__
 from impactlab.analytic import InversionResult
 from impactlab.analytic.inversion import MC_REJECTED_WARNING
 from impactlab.analytic.result import MC_INTERVAL
+from impactlab.bodies._checks import INERTIA_MISFIT
 from impactlab.cli._common import SI_UNITS, print_rows
 
 #: SI units of the inversion's inputs, by keyword of ``impactlab.analytic.invert``.
@@ -78,11 +79,13 @@ def inversion_doubts(inverted: list[str], compared: list[str]) -> list[str]:
     """What makes the inversion not ok (``ok`` false in ``invert --json``), by the rule of
     ``impactlab analyze`` (``experiment.analysis``): the inversion's warnings (``inverted``)
     that say its result is impossible (a velocity change no impact gives, a duration no
-    rigid-body impact has), and every warning of the comparison with the simulated impact
-    (``compared``: a T or F more than 3 times off)."""
+    rigid-body impact has, a Monte Carlo spread to such durations) or that the rod's mass and
+    inertia do not fit (``analyze``'s doubt of the rod), and every warning of the comparison with
+    the simulated impact (``compared``: a T or F more than 3 times off)."""
     from impactlab.experiment.analysis import IMPOSSIBLE_PHRASES  # analyze's phrases: one rule
 
-    return [t for t in inverted if any(p in t for p in IMPOSSIBLE_PHRASES)] + list(compared)
+    phrases = (*IMPOSSIBLE_PHRASES, INERTIA_MISFIT)
+    return [t for t in inverted if any(p in t for p in phrases)] + list(compared)
 
 
 def _correlation_row(

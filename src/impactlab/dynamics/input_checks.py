@@ -60,7 +60,15 @@ def gravity_value(gravity: Any) -> float:
         )
     if isinstance(gravity, bool | np.bool_):
         return G0 if gravity else 0.0
-    g = check_nonnegative("gravity", gravity, "m/s^2")
+    try:
+        g = check_nonnegative("gravity", gravity, "m/s^2")
+    except ValueError as exc:
+        if not isinstance(gravity, str) or "cannot parse" not in str(exc):
+            raise
+        raise ValueError(
+            f"{exc}; gravity must be True (9.80665 m/s^2), False (none) or a value in m/s^2 "
+            "(for example '9.81 m/s^2')"
+        ) from None
     if not gravity_allowed(g):
         raise ValueError(
             f"gravity must lie in [0, {MAX_GRAVITY:g}] m/s^2 (a million g), got {g!r} m/s^2"

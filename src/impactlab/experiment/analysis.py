@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import threading
 import warnings
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
@@ -144,7 +145,7 @@ def _inversion_stage(
             )
         except ValueError as exc:
             res.errors["inversion"] = _message(exc)
-    for text in _inversion_warnings(caught, d):
+    for text in _inversion_warnings(caught, d, res.doubts):
         if any(phrase in text for phrase in IMPOSSIBLE_PHRASES):
             res.add_doubt(text)
         else:
@@ -176,18 +177,21 @@ def kinematic_correlation(k: ImpactKinematics) -> dict[tuple[str, str], float]:
     return {(a, b): float(corr[idx[a], idx[b]]) for i, a in enumerate(keys) for b in keys[i + 1 :]}
 
 
-def _inversion_warnings(caught: list[warnings.WarningMessage], d: DentMetrics) -> list[str]:
+def _inversion_warnings(
+    caught: list[warnings.WarningMessage], d: DentMetrics, doubts: Sequence[str] = ()
+) -> list[str]:
     """The inversion's ImplausibleInputWarnings as the result's warnings (``inversion: ...``),
     less its warning of a dent shallower than 0.1 um, which the scan stage gave already (the
-    same bound, ``PLAUSIBLE_DEPTH``, with the scan's likely cause: the height unit); any other
-    warning is issued again as Python issues it."""
+    same bound, ``PLAUSIBLE_DEPTH``, with the scan's likely cause: the height unit), and less
+    one that is already among the result's ``doubts`` word for word (the rod's ``rod: ...``,
+    which ``analyze`` checks first); any other warning is issued again as Python issues it."""
     out = []
     for w in caught:
         if not issubclass(w.category, ImplausibleInputWarning):
             warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
             continue
         text = str(w.message)
-        if (
+        if text in doubts or (
             d.delta_p.value < PLAUSIBLE_DEPTH
             and text.startswith("delta_p = ")
             and "shallower" in text

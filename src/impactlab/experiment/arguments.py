@@ -10,6 +10,7 @@ from pathlib import Path
 from typing import Any
 
 from impactlab.bodies import PAPER_ROD, Rod, Sphere
+from impactlab.bodies._checks import INERTIA_RATIO_FLOOR, inertia_ratio_problem
 from impactlab.contact.registry import get_law
 from impactlab.experiment.checks import (
     check_input_file,
@@ -89,31 +90,12 @@ def rod_properties(rod: Any) -> Rod:
         raise ValueError(f"rod must have mass and tip_radius: {exc}") from None
 
 
-#: A rod's I_C / (m L^2) below this, 20 times below a uniform rod's 1/12, is implausible (a
-#: mass in grams given in kilograms gives 1000 times below).
-INERTIA_RATIO_FLOOR = 1.0 / 240.0
-
-
 def implausible_rod(rod: Rod) -> str | None:
     """Why the rod's mass and inertia do not fit each other (None when they do): I_C / (m L^2)
-    below ``INERTIA_RATIO_FLOOR``, with the likely unit mistake (the most a rod can have, all
-    its mass at its ends, is refused by ``Rod`` itself)."""
-    k = rod.inertia_ratio
-    if k >= INERTIA_RATIO_FLOOR:
-        return None
-    hint = ""
-    if INERTIA_RATIO_FLOOR <= 1e3 * k <= 0.25:
-        hint = (
-            f": a mass in grams given as kilograms? (mass = {rod.mass * 1e-3:.4g} kg gives "
-            f"{1e3 * k:.3g})"
-        )
-    return (
-        f"the mass and the inertia do not fit: I_C / (m L^2) = {k:.2g} (mass = "
-        f"{rod.mass:.4g} kg, inertia = "
-        f"{rod.inertia:.4g} kg m^2, L = {rod.length:.4g} m), {1.0 / (12.0 * k):.3g} times below "
-        f"a uniform rod's 1/12 (below {INERTIA_RATIO_FLOOR:.2g} no rod is plausible); the mass "
-        f"or the inertia is in a wrong unit{hint}; check the rod (SI: kg, kg m^2)"
-    )
+    below ``INERTIA_RATIO_FLOOR`` (``impactlab.bodies._checks.inertia_ratio_problem``, the
+    check ``impactlab.analytic.invert`` makes too)."""
+    inertia = rod.inertia_ratio * rod.mass * rod.length**2  # given, or m L^2 / 12
+    return inertia_ratio_problem(rod.mass, inertia, rod.length)
 
 
 def _flat_material(flat: Any) -> Material:
