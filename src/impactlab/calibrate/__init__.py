@@ -7,6 +7,7 @@ every measured value and ranks the models by PSIS-LOO.
 """
 
 from impactlab.calibrate.api import Calibration, CalibrationWarning, calibrate, parse_model
+from impactlab.calibrate.drop_predictions import DropPredictions
 from impactlab.calibrate.measurements import Measurements, read_measurements
 from impactlab.calibrate.models import CandidateModel, Prediction, predict
 from impactlab.calibrate.priors import Parameter, parse_parameter
@@ -18,6 +19,7 @@ __all__ = [
     "Calibration",
     "CalibrationWarning",
     "CandidateModel",
+    "DropPredictions",
     "Measurements",
     "ModelPosterior",
     "Parameter",

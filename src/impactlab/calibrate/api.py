@@ -13,13 +13,8 @@ from typing import Any
 
 from impactlab.calibrate.cluster import map_on_dask
 from impactlab.calibrate.correlated_likelihood import correlation_rows, likelihood_text
-from impactlab.calibrate.diagnostics import (
-    MISFIT_SIGMAS,
-    edge_note,
-    extrapolation_note,
-    failed_note,
-    misfits,
-)
+from impactlab.calibrate.diagnostics import misfits
+from impactlab.calibrate.drop_predictions import DropPredictions, predict_drops
 from impactlab.calibrate.input_checks import (
     check_calibration_inputs,
     check_engine_cells,
@@ -35,16 +30,10 @@ from impactlab.calibrate.model_specs import model_definition, parse_model
 from impactlab.calibrate.models import CandidateModel
 from impactlab.calibrate.posterior import LogPosterior
 from impactlab.calibrate.priors import Parameter
-from impactlab.calibrate.ranking import (
-    ELPD_DIFF_MIN,
-    MISFIT,
-    NOT_CONVERGED,
-    NOT_DISTINGUISHABLE,
-    SMALL_DIFFERENCE,
-    UNRELIABLE_LOO,
-    rank_models,
-)
+from impactlab.calibrate.ranking import NOT_CONVERGED, rank_models
 from impactlab.calibrate.result import ONE_DROP, ModelPosterior, summarise
+from impactlab.calibrate.run_warnings import best_warnings as _best_warnings
+from impactlab.calibrate.run_warnings import chain_warnings as _chain_warnings
 from impactlab.calibrate.sampler import ProgressFn, run_chain
 from impactlab.calibrate.statelock import state_lock
 from impactlab.references import cite
@@ -101,6 +90,30 @@ class Calibration:
         if not self.ranking:
             return [] if self.best.converged else [NOT_CONVERGED]
         return [n for n in self.ranking[0]["note"].split("; ") if n]
+
+    def predict(
+        self,
+        conditions: Measurements | Sequence[Mapping[str, Any]] | str | Path,
+        quantities: Sequence[str] | None = None,
+        *,
+        model: str | None = None,
+        draws: int = 200,
+        seed: int = 0,
+        evaluator: Evaluator = ENGINE,
+    ) -> DropPredictions:
+        """What ``model`` (default: the best-ranked) predicts for drops that were not
+        measured: ``conditions`` gives their inputs only (records such as ``{"label": "new",
+        "angle": "30 deg", "vy": -2.0}``, a file, or ``Measurements.conditions``);
+        ``quantities`` (default: those measured in the calibration) are any measurable ones
+        (``e``, ``delta_p``, ``max_force``, ...), predicted at ``draws`` posterior draws
+        (``seed``); ``DropPredictions.summary()`` gives each one's median and 90 % interval.
+        ``evaluator`` should be the one the calibration ran."""
+        order = {r["model"]: r["rank"] for r in self.ranking}
+        ranked = dict(sorted(self.posteriors.items(), key=lambda kv: order.get(kv[0], 0)))
+        return predict_drops(
+            ranked, self.settings, conditions, quantities or self.measurements.quantities,
+            model=model, draws=draws, seed=seed, evaluator=evaluator,
+        )  # fmt: skip
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready (the units of ``Measurements`` and ``Parameter.unit``)."""
@@ -306,88 +319,3 @@ def _calibrate(
         "references": [str(r) for r in REFERENCES],
     }
     return Calibration(posteriors, ranking, meas, settings, notes + found)
-
-
-def _chain_warnings(
-    posteriors: Mapping[str, ModelPosterior],
-    params: Sequence[Parameter],
-    usage: Mapping[str, Sequence[bool]],
-    cands: Sequence[CandidateModel],
-) -> list[str]:
-    """Each model's convergence problems (of the parameters it uses: ``summarise`` notes none
-    for an unused one, whose chain is its prior's and says nothing of the model), each used
-    parameter whose posterior lies against a bound of its prior, a contact law extrapolated in
-    the predicted impacts and a share of failed parameter values above FAILED_SHARE_MAX (the
-    last three added to the model's own warnings too), as ``"model: text"``."""
-    out = []
-    laws = {c.name: c.law for c in cands}
-    for name, post in posteriors.items():
-        edges = [
-            note
-            for j, p in enumerate(params)
-            if usage[name][j] and (note := edge_note(p, post.samples[:, j])) is not None
-        ]
-        for note in (
-            extrapolation_note(laws[name], post.law_extrapolated),
-            failed_note(laws[name], post),
-        ):
-            edges += [] if note is None else [note]
-        post.warnings.extend(edges)
-        out += [f"{name}: {text}" for text in (*post.convergence, *edges)]
-    return out
-
-
-def _best_warnings(ranking: Sequence[Mapping[str, Any]]) -> list[str]:
-    """Why the best-ranked model may not be the one the data single out."""
-    if not ranking:
-        return []
-    best = ranking[0]
-    out = _not_distinguishable(best, ranking[1]) if len(ranking) > 1 else []
-    if NOT_CONVERGED in best["note"]:
-        out.append(
-            f"the best-ranked model {best['model']!r} has not converged: its rank and "
-            "posterior may change with more steps"
-        )
-    if MISFIT in best["note"]:
-        out.append(
-            f"the best-ranked model {best['model']!r} misses a measured value by "
-            f"{best['misfit_max']:.1f} sigma at its best fit (its notes name it): it does not "
-            "describe every measurement"
-        )
-    return out
-
-
-def _not_distinguishable(best: Mapping[str, Any], other: Mapping[str, Any]) -> list[str]:
-    """The warning (or none) that ``best`` is not distinguishable from the runner-up
-    ``other``, with each reason its note names."""
-    why = []
-    if NOT_DISTINGUISHABLE in best["note"]:
-        why.append(
-            f"elpd_diff {other['elpd_diff']:.2f} < 2 dse ({2 * other['dse']:.2f})"
-            if other["dse"] > 0
-            else f"elpd_diff {other['elpd_diff']:.2f} has no standard error (dse 0) to judge it"
-        )
-    if SMALL_DIFFERENCE in best["note"]:
-        why.append(
-            f"elpd_diff {other['elpd_diff']:.2f} < {ELPD_DIFF_MIN:g}: too small for its dse to "
-            "be trusted (Sivula et al. 2020, arXiv:2008.10296)"
-        )
-    if UNRELIABLE_LOO in best["note"]:
-        ks = ", ".join(f"{r['model']!r} {r['pareto_k_max']:.2f}" for r in (best, other))
-        why.append(
-            f"PSIS-LOO is unreliable for a drop (Pareto k max {ks}; above 0.7 a drop's elpd "
-            "may be off by as much as the difference)"
-        )
-    if not why:
-        return []
-    apart = (
-        f"; yet {other['model']!r} misses a measured value by {other['misfit_max']:.1f} sigma "
-        f"at its best fit and {best['model']!r} comes within {MISFIT_SIGMAS:g} (each model's "
-        "notes name the values): the fit, not PSIS-LOO, tells them apart"
-        if MISFIT in other["note"] and MISFIT not in best["note"]
-        else "; the data do not single out one model"
-    )
-    return [
-        f"the best-ranked model {best['model']!r} is not distinguishable from "
-        f"{other['model']!r}: {'; '.join(why)}{apart}"
-    ]

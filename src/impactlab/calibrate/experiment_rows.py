@@ -1,20 +1,26 @@
 """Drops from ``impactlab.experiment.analyze``: an ExperimentResult as one row of a
 measurements file, so that analysed experiment files can be appended to it directly, with the
-correlation coefficients of the values one marker fit gives together (e and spin_out)."""
+rod the analysis used and the correlation coefficients of the values one marker fit gives
+together (e and spin_out). A result that is not ok (a doubt, a failed stage) is refused unless
+asked for, and then marked."""
 
 from __future__ import annotations
 
 import math
+import warnings
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
+from impactlab.calibrate.api import CalibrationWarning
 from impactlab.calibrate.correlations import correlation_column
-from impactlab.calibrate.measurements import Measurements, read_measurements
+from impactlab.calibrate.measurement_append import append_record
+from impactlab.calibrate.measurements import Measurements
 from impactlab.experiment.result import ExperimentResult
+from impactlab.materials import PRESETS
 
-__all__ = ["append_experiment", "experiment_record"]
+__all__ = ["append_experiment", "experiment_record", "not_ok"]
 
 #: ExperimentResult.summary() key -> measured quantity of the calibration.
 _MEASURED = {
@@ -30,7 +36,9 @@ _KINEMATIC = {"e": "e", "spin_out": "spin_out"}
 
 def experiment_record(result: ExperimentResult, label: str, **drop: Any) -> dict[str, Any]:
     """One drop (column -> SI value) from an analysed experiment: its angle, incoming velocity
-    (v_c_in) and spin, its measured mu as the drop's mu, and the measured e, spin_out, delta_p
+    (v_c_in) and spin, its measured mu as the drop's mu, the rod it used (mass, length,
+    tip_radius; inertia where it is not the uniform rod's m L^2/12), the flat's material when
+    the analysis named a library one (``flat=``), and the measured e, spin_out, delta_p
     and sliding_length (as ``scar_length``, the mark's extent, a magnitude) with their standard
     uncertainties, and the correlation coefficient of e and spin_out (``correlation_e_spin_out``,
     from the marker fit's covariance; delta_p and scar_length come from the scan, independent);
@@ -51,8 +59,7 @@ def experiment_record(result: ExperimentResult, label: str, **drop: Any) -> dict
         "spin": k.spin_in.value,
         "mu": k.mu.value,
     }
-    rec.update({name: result.rod[name] for name in ("mass", "length", "tip_radius")
-                if name in result.rod})  # fmt: skip
+    rec.update(_rod(result))
     summary = result.summary()
     for key, quantity in _MEASURED.items():
         est = summary.get(key)
@@ -63,6 +70,24 @@ def experiment_record(result: ExperimentResult, label: str, **drop: Any) -> dict
     rec.update(_correlations(k, [q for q in _KINEMATIC if q in rec]))
     rec.update(drop)
     return rec
+
+
+def _rod(result: Any) -> dict[str, Any]:
+    """The rod the analysis used (``result.rod``, SI) and its flat's library material: mass,
+    length, tip_radius; inertia when it differs from m L^2/12 (a blank inertia is that);
+    flat_material when ``result.options["flat"]`` names a preset."""
+    rod = dict(getattr(result, "rod", {}) or {})
+    out: dict[str, Any] = {k: rod[k] for k in ("mass", "length", "tip_radius") if k in rod}
+    inertia = rod.get("inertia")
+    if inertia is not None and {"mass", "length"} <= set(rod):
+        uniform = rod["mass"] * rod["length"] ** 2 / 12.0
+        if not math.isclose(inertia, uniform, rel_tol=1e-9):
+            out["inertia"] = inertia
+    flat = (getattr(result, "options", None) or {}).get("flat")
+    names = {k: k for k in PRESETS} | {m.name: k for k, m in PRESETS.items()}
+    if isinstance(flat, str) and flat in names:  # a preset by its key or a Material's name
+        out["flat_material"] = names[flat]
+    return out
 
 
 def _correlations(k: Any, measured: list[str]) -> dict[str, float]:
@@ -81,12 +106,43 @@ def _correlations(k: Any, measured: list[str]) -> dict[str, float]:
 
 
 def append_experiment(
-    path: str | Path, result: ExperimentResult, label: str, **drop: Any
+    path: str | Path,
+    result: ExperimentResult,
+    label: str,
+    *,
+    include_doubtful: bool = False,
+    **drop: Any,
 ) -> Measurements:
-    """Append the drop of ``result`` to the CSV measurements file ``path`` (created if missing;
-    rewritten in SI units with the units in its header); returns the whole set."""
-    p = Path(path)
-    new = Measurements.from_records([experiment_record(result, label, **drop)], source=str(p))
-    both = read_measurements(p).extended(new) if p.exists() else new
-    both.to_csv(p)
-    return both
+    """Append the drop of ``result`` (:func:`experiment_record`) to the CSV measurements file
+    ``path`` (created if missing) as one line in the file's units, the rest of the file left as
+    written (``measurement_append``); returns the file's drops. A result that is not ok (its
+    ``doubts``, a stage's ``errors``) is refused, naming why: its values would be taken as
+    exact measurements; with ``include_doubtful`` it is appended after a ``#`` comment line
+    that names the doubts, with a CalibrationWarning. ValueError also for a label the file has
+    already and a file that is not CSV."""
+    rec = experiment_record(result, label, **drop)
+    why = not_ok(result)
+    if why and not include_doubtful:
+        raise ValueError(
+            f"experiment {label!r}: its analysis is not ok ({'; '.join(why)}): its values would "
+            "be taken as exact measurements; check the files, or append it anyway, marked, "
+            "with include_doubtful=True (impactlab analyze --include-doubtful)"
+        )
+    note = f"doubtful drop {label!r} (its analysis is not ok): {'; '.join(why)}" if why else None
+    meas = append_record(path, rec, comment=note)
+    if why:
+        warnings.warn(
+            f"{path}: drop {label!r} appended though its analysis is not ok ({'; '.join(why)}); "
+            "a comment line above it says so",
+            CalibrationWarning,
+            stacklevel=2,
+        )
+    return meas
+
+
+def not_ok(result: Any) -> list[str]:
+    """Why an analysed experiment is not ok: its stages' errors (``stage failed: text``) and
+    its doubts; empty when it is ok."""
+    errors = dict(getattr(result, "errors", None) or {})
+    doubts = tuple(getattr(result, "doubts", ()) or ())
+    return [f"{k} failed: {v}" for k, v in errors.items()] + [str(d) for d in doubts]

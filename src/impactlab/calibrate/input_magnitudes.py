@@ -15,13 +15,17 @@ __all__ = ["PLAUSIBLE_INPUTS", "check_magnitude"]
 #: material values of a study (``sweep.magnitudes.MATERIAL_MAGNITUDES``: a modulus or stress
 #: below 10 kPa, a density below 5 kg/m^3, a Brinell hardness above 10^4 kgf/mm^2), a rod
 #: longer than 10 m, a tip or a sphere over 1 m in radius, a body over 100 kg (mm or g read as
-#: m or kg).
+#: m or kg), a velocity above 100 m/s (a drop from 500 m: cm/s or mm/s read as m/s) and a spin
+#: above 1000 rad/s (deg/s or rpm read as rad/s).
 PLAUSIBLE_INPUTS: dict[str, tuple[float, float, str]] = {
     **MATERIAL_MAGNITUDES,
     "length": (0.0, 10.0, "mm"),
     "tip_radius": (0.0, 1.0, "mm"),
     "radius": (0.0, 1.0, "mm"),
     "mass": (0.0, 100.0, "g"),
+    "vx": (-100.0, 100.0, "cm/s"),
+    "vy": (-100.0, 100.0, "cm/s"),
+    "spin": (-1000.0, 1000.0, "deg/s"),
 }
 
 

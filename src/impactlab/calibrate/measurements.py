@@ -95,6 +95,17 @@ class Measurements:
         numbers. ValueError naming the row and column for anything not understood."""
         return _from_records(records, units, source)
 
+    @classmethod
+    def conditions(
+        cls,
+        records: Sequence[Mapping[str, Any]],
+        units: Mapping[str, str] | None = None,
+        source: str | None = None,
+    ) -> Measurements:
+        """Drops to predict (``Calibration.predict``): rows as ``from_records`` reads them,
+        each with its inputs only (measured values, if any, are read and checked too)."""
+        return _from_records(records, units, source, measured=False)
+
     def table(self) -> Any:
         """One row per drop (pandas DataFrame, the units of ``inputs``, ``observed``)."""
         import pandas as pd
@@ -153,8 +164,9 @@ def _header(name: str, unit: str) -> str:
     return name if unit in ("1", "") else f"{name} [{unit}]"
 
 
-def read_measurements(path: str | Path) -> Measurements:
-    """Read a measurements file (``.csv`` or ``.toml``; schema in the module docstring)."""
+def read_measurements(path: str | Path, *, measured: bool = True) -> Measurements:
+    """Read a measurements file (``.csv`` or ``.toml``; schema in the module docstring);
+    ``measured=False``: drops without measured values are taken (``Measurements.conditions``)."""
     p = Path(path)
     if p.is_dir():
         raise IsADirectoryError(f"measurements file {str(p)!r} is a directory; give the file")
@@ -163,7 +175,9 @@ def read_measurements(path: str | Path) -> Measurements:
     suffix = p.suffix.lower()
     if suffix == ".csv":
         numbered = csv_records(p)
-        return _from_records([r for _, r in numbered], None, str(p), lines=[n for n, _ in numbered])
+        return _from_records(
+            [r for _, r in numbered], None, str(p), [n for n, _ in numbered], measured
+        )
     if suffix == ".toml":
         try:
             doc = tomllib.loads(read_text(p, "TOML"))
@@ -178,11 +192,18 @@ def read_measurements(path: str | Path) -> Measurements:
         _refuse_nan(p, drops)
         try:
             units = resolve_units(doc.get("units", {}))
-            return Measurements.from_records(drops, units, source=str(p))
+            return _from_records(drops, units, str(p), measured=measured)
         except ValueError as exc:  # each error names the file
             text = str(exc)
             raise ValueError(text if text.startswith(f"{p}: ") else f"{p}: {text}") from None
-    raise ValueError(f"measurements file must end in .csv or .toml, got {p.name!r}")
+    hint = (
+        ": an analysis's results.json is one drop's analysis, not a measurements file; append "
+        "the drop to a CSV file with impactlab analyze MARKERS SCAN --measurements drops.csv "
+        "--label NAME (or calibrate.experiment_rows.append_experiment) and calibrate that"
+        if suffix == ".json"
+        else ""
+    )
+    raise ValueError(f"measurements file must end in .csv or .toml, got {p.name!r}{hint}")
 
 
 def _from_records(
@@ -190,9 +211,11 @@ def _from_records(
     units: Mapping[str, str] | None,
     source: str | None,
     lines: Sequence[int] | None = None,
+    measured: bool = True,
 ) -> Measurements:
     """``Measurements.from_records``; ``lines``: the file's line of each record, which an
-    error then names (``"m.csv: line 3: drop 2 (b): ..."``)."""
+    error then names (``"m.csv: line 3: drop 2 (b): ..."``); ``measured=False``: drops
+    without measured values are taken."""
     if not records:
         raise ValueError(f"{source or 'measurements'}: no drops (rows) found")
     table = resolve_units(units or {})
@@ -204,7 +227,7 @@ def _from_records(
             if lines is None:
                 raise
             raise ValueError(f"{source}: line {lines[i]}: {exc}") from None
-    return _assemble(rows, source, lines)
+    return _assemble(rows, source, lines, measured)
 
 
 def _refuse_nan(path: Path, drops: Sequence[Any]) -> None:
@@ -221,7 +244,10 @@ def _refuse_nan(path: Path, drops: Sequence[Any]) -> None:
 
 
 def _assemble(
-    rows: Sequence[Row], source: str | None, lines: Sequence[int] | None = None
+    rows: Sequence[Row],
+    source: str | None,
+    lines: Sequence[int] | None = None,
+    measured: bool = True,
 ) -> Measurements:
     labels = tuple(r.label for r in rows)
     _refuse_duplicates(labels, source, lines)
@@ -234,10 +260,13 @@ def _assemble(
         fill = math.nan if default is None else float(default)
         inputs[name] = np.array([r.inputs.get(name, fill) for r in rows], dtype=np.float64)
     names = list(dict.fromkeys(q for r in rows for q in r.observed))
-    if not names:
-        raise ValueError(f"{source or 'measurements'}: no measured quantity in any drop")
+    if not names and measured:
+        raise ValueError(
+            f"{source or 'measurements'}: no measured quantity in any drop (drops to predict, "
+            "without measurements, are Measurements.conditions)"
+        )
     for d, r in enumerate(rows):  # it would add nothing but zeros to the model ranking
-        if not r.observed:
+        if not r.observed and measured:
             line = "" if lines is None else f"{source}: line {lines[d]}: "
             raise ValueError(
                 f"{line}drop {d + 1} ({r.label}) has no measured value: give "

@@ -36,7 +36,7 @@ from impactlab.calibrate.one_by_one import (  # noqa: F401  (re-exported: the ol
 )
 from impactlab.calibrate.one_by_one import one_by_one as _one_by_one
 from impactlab.calibrate.priors import Parameter
-from impactlab.calibrate.quantities import MEASURABLE
+from impactlab.calibrate.quantities import MEASURABLE, canonical_output
 from impactlab.contact import get_law
 from impactlab.contact.rate import RATE_LAWS
 from impactlab.dynamics.derived import e_gravity_removed
@@ -135,11 +135,14 @@ class Prediction:
     """W x D predictions: ``values`` quantity -> (W, D) (NaN where a case failed),
     ``status`` (W, D) (0: finished; ``status_message``) and ``extrapolated`` (W, D): True where an
     ok case's contact law was used beyond its verified range (the advisory LAW_EXTRAPOLATED
-    flag, ``impactlab.flags``; None: not known)."""
+    flag, ``impactlab.flags``; None: not known); ``refused``: why ``simulate`` refused the cases
+    of status STATUS_REFUSED (``one_by_one.refusal_key`` -> (cases, the first error's text)).
+    """
 
     values: Mapping[str, np.ndarray]
     status: np.ndarray
     extrapolated: np.ndarray | None = None
+    refused: Mapping[str, tuple[int, str]] = field(default_factory=dict)
 
 
 def _drop_outputs(outputs: Sequence[str]) -> list[str]:
@@ -197,13 +200,17 @@ def predict(
     *,
     evaluator: Evaluator = ENGINE,
     engine: Mapping[str, Any] | None = None,
+    quantities: Sequence[str] | None = None,
 ) -> Prediction:
-    """Predict every measured quantity of every drop at each row of ``theta`` (W, P), the
-    values of ``params`` (SI). One evaluator call per group of drops sharing their categories."""
+    """Predict every measured quantity of every drop (or the measurable ``quantities``, aliases
+    too: drops without measurements, ``Measurements.conditions``) at each row of ``theta``
+    (W, P), the values of ``params`` (SI). One evaluator call per group of drops sharing their
+    categories. ValueError naming a quantity that is not measurable or that ``model`` does not
+    predict."""
     _check_cells(model, engine)
     theta = np.atleast_2d(np.asarray(theta, dtype=np.float64))
     w, d_all = theta.shape[0], meas.n_drops
-    quantities = meas.quantities
+    quantities = meas.quantities if quantities is None else _quantities(model, quantities)
     flexible = model.body == FLEXIBLE_BODY
     # a rigid impact's e without the gravity impulse of its contact, as a drop's e
     e_parts = ("vn_in", "vn_out", "duration") if "e" in quantities and not flexible else ()
@@ -213,6 +220,7 @@ def predict(
     values = {q: np.full((w, d_all), np.nan) for q in quantities}
     status = np.zeros((w, d_all), dtype=np.int32)
     extrapolated = np.zeros((w, d_all), dtype=bool)
+    refusals: dict[str, list[Any]] = {}
     for key, idx in _groups(meas, model).items():
         nd = len(idx)
         cases = {k: np.tile(v[idx], w) for k, v in meas.inputs.items()}
@@ -227,7 +235,7 @@ def predict(
             with _threads_for(w * nd):
                 res, st = evaluator(cases, statics, asked)
         else:
-            res, st = _one_by_one(cases, statics, asked, model.rate)
+            res, st = _one_by_one(cases, statics, asked, model.rate, refusals)
         res = {o: res[a] for o, a in zip(outputs, asked, strict=True)}
         if e_parts:
             res["e"] = e_gravity_removed(res["vn_in"], res["vn_out"], res["duration"], g)
@@ -241,7 +249,25 @@ def predict(
         for q in quantities:
             got = _derived(q, res, cases)
             values[q][:, idx] = np.where(st == 0, got, np.nan).reshape(w, nd)
-    return Prediction(values, status, extrapolated)
+    refused = {k: (int(n), str(text)) for k, (n, text) in refusals.items()}
+    return Prediction(values, status, extrapolated, refused)
+
+
+def _quantities(model: CandidateModel, names: Sequence[str]) -> tuple[str, ...]:
+    """``names`` as measurable quantities (aliases resolved); ValueError for one that is not
+    measurable or that ``model`` does not predict."""
+    out = []
+    for name in [names] if isinstance(names, str) else names:
+        q = canonical_output(str(name))
+        if q is None:
+            raise ValueError(
+                f"quantity {name!r} is not a measurable quantity; known: {', '.join(MEASURABLE)}"
+            )
+        out.append(q)
+    missing = model.unsupported(out)
+    if missing:
+        raise ValueError(f"model {model.name!r} does not predict {', '.join(missing)}")
+    return tuple(dict.fromkeys(out))
 
 
 def _check_cells(model: CandidateModel, engine: Mapping[str, Any] | None) -> None:

@@ -5,6 +5,7 @@ call and an engine output read from its result (SI)."""
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Mapping, Sequence
 from typing import Any
 
@@ -22,6 +23,7 @@ __all__ = [
     "case_body",
     "one_by_one",
     "output_value",
+    "refusal_key",
     "simulate_options",
     "simulate_row",
 ]
@@ -89,12 +91,26 @@ def simulate_row(body: Any, statics: Statics, row: Mapping[str, float], rate: An
     )
 
 
+_NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
+
+
+def refusal_key(text: str) -> str:
+    """The reason of a refusal without its numbers: the refusals of one rule at different
+    values (``yield strength = 110 MPa outside 150 to 450 MPa``, ``= 520 MPa ...``) are one."""
+    return _NUMBER.sub("#", text)
+
+
 def one_by_one(
-    cases: Mapping[str, np.ndarray], statics: Statics, outputs: Sequence[str], rate: str | None
+    cases: Mapping[str, np.ndarray],
+    statics: Statics,
+    outputs: Sequence[str],
+    rate: str | None,
+    refusals: dict[str, list[Any]] | None = None,
 ) -> tuple[dict[str, np.ndarray], np.ndarray]:
     """One ``simulate`` call per case (:func:`simulate_row`, the engine options of the batch),
     for the flexible rod on a rate-dependent flat. A refused case or a failed drop gets
-    STATUS_REFUSED, never an exception."""
+    STATUS_REFUSED, never an exception; ``refusals`` (when given) collects why: the reason's
+    :func:`refusal_key` -> [cases, the first error's text] (a rate law's material range, ...)."""
     n = len(cases["angle"])
     res = {o: np.full(n, np.nan) for o in outputs}
     status = np.zeros(n, dtype=np.int32)
@@ -102,8 +118,11 @@ def one_by_one(
         row = {k: float(v[i]) for k, v in cases.items()}
         try:
             r = simulate_row(case_body(statics.categories, row), statics, row, rate or None)
-        except (ValueError, ArithmeticError, np.linalg.LinAlgError):
+        except (ValueError, ArithmeticError, np.linalg.LinAlgError) as exc:
             status[i] = STATUS_REFUSED
+            if refusals is not None:
+                text = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
+                refusals.setdefault(refusal_key(text), [0, text])[0] += 1
             continue
         for o in outputs:
             res[o][i] = output_value(r, o)

@@ -67,9 +67,22 @@ def _inputs(post: LogPosterior, walkers: int, seed: int) -> dict[str, Any]:
         "observed": {k: v.tolist() for k, v in m.observed.items()},
         "sigma": {k: v.tolist() for k, v in m.sigma.items()},
     }
-    if m.correlation:  # only when given: the fingerprints of chains without them stay valid
-        doc["correlation"] = {f"{a},{b}": x.tolist() for (a, b), x in m.correlation.items()}
+    acting = _acting_correlations(m.correlation)
+    if acting:  # only when one acts: the fingerprints of chains without them stay valid
+        doc["correlation"] = acting
     return doc
+
+
+def _acting_correlations(correlation: Mapping[tuple[str, str], np.ndarray]) -> dict[str, Any]:
+    """The correlation coefficients as the likelihood uses them: a blank one (NaN) as 0, and
+    a pair that is 0 in every drop left out, so that a column absent, blank or of zeros is one
+    input (the same chain)."""
+    out = {}
+    for (a, b), x in correlation.items():
+        values = np.nan_to_num(np.asarray(x, dtype=np.float64), nan=0.0)
+        if np.any(values != 0.0):
+            out[f"{a},{b}"] = (values + 0.0).tolist()  # + 0.0: -0.0 as 0.0
+    return out
 
 
 def _hash(doc: Any) -> str:
@@ -118,11 +131,12 @@ def _unreadable(exc: BaseException) -> str:
 
 
 def _backend(
-    state: Path | None, keys: tuple[str, str], parts: dict[str, str], restart: bool
+    state: Path | None, keys: tuple[str, ...], parts: dict[str, str], restart: bool
 ) -> tuple[Any, bool]:
     """(backend, resumed): emcee's HDF backend at ``state`` (resumed when it holds a chain of
-    the fingerprint ``keys[0]``, or ``keys[1]``: the same inputs hashed with the engine options
-    as given, as chains were saved before; it is then stored as ``keys[0]``), or the in-memory
+    the fingerprint ``keys[0]``, or of a later key: the same inputs hashed as chains were saved
+    before, the engine options as given or the correlation coefficients as written; it is then
+    stored as ``keys[0]``), or the in-memory
     one. A saved chain of other inputs, or one that cannot be read, is kept and refused
     (``SavedChainError``) unless ``restart``; one without a step (an empty file too) is
     replaced (it holds no work)."""
@@ -175,7 +189,12 @@ def run_chain(
     doc = _inputs(post, walkers, seed)
     key, parts = _hash(doc), {k: _hash(v) for k, v in doc.items()}
     given = sorted((k, repr(v)) for k, v in post.engine.items())  # as chains were saved before
-    backend, resumed = _backend(state, (key, _hash({**doc, "engine": given})), parts, restart)
+    written = {f"{a},{b}": x.tolist() for (a, b), x in post.meas.correlation.items()}
+    earlier = (
+        _hash({**doc, "engine": given}),
+        _hash({**doc, "correlation": written}),  # coefficients as written, as saved before
+    )
+    backend, resumed = _backend(state, (key, *earlier), parts, restart)
     sampler = emcee.EnsembleSampler(walkers, ndim, post, vectorize=True, backend=backend)
     # the log posterior itself, not emcee's wrapper: that prints a traceback of any exception
     # (Ctrl-C included) before passing it on

@@ -25,6 +25,7 @@ from impactlab.cli._common import (
     parse_rod_table,
     print_rows,
 )
+from impactlab.cli.analyze_measurements import append_drop, check_measurements
 from impactlab.cli.invert_output import inversion_json
 
 if TYPE_CHECKING:
@@ -145,6 +146,25 @@ def analyze_cmd(
         "--gravity/--no-gravity",
         help="Gravity during the contact in the inversion (default: no, as the paper).",
     ),
+    measurements: Path | None = typer.Option(
+        None,
+        "--measurements",
+        help="Append this drop to a CSV measurements file for impactlab calibrate (created if "
+        "missing): one line in the file's units, the rest of the file left as written "
+        "(docs/calibrate.md). A result that is not ok is refused unless --include-doubtful.",
+    ),
+    label: str | None = typer.Option(
+        None,
+        "--label",
+        help="The drop's label in --measurements (default: the marker file's name without "
+        "its extension); a label the file has already is refused.",
+    ),
+    include_doubtful: bool = typer.Option(
+        False,
+        "--include-doubtful",
+        help="Append a result that is not ok (a doubt, a failed stage) to --measurements "
+        "anyway, after a '#' comment line naming why, with a warning.",
+    ),
     as_json: bool = typer.Option(False, "--json", help="Machine-readable output (SI)."),
 ) -> None:
     """Analyse one drop: velocities before/after the impact from the marker tracks (e, mu,
@@ -157,7 +177,19 @@ def analyze_cmd(
     outside [0, 1]; a T or F that cannot be the impact's) says so (an "ok  no" row, a warning,
     "ok": false in --json) with exit status 0.
 
-    Example: impactlab analyze drop.c3d dent.x3p --geometry markers.toml --out results/
+    With --measurements FILE.csv the drop is appended to that file as one row (its angle,
+    incoming velocity and spin, mu, the rod, and e, spin_out, delta_p and the scar's length with
+    their uncertainties), ready for impactlab calibrate.
+
+    Examples:
+
+    \b
+      impactlab analyze drop.c3d dent.x3p --geometry markers.toml --out results/
+
+    \b
+      impactlab analyze drop20.c3d dent20.x3p --geometry markers.toml \\
+        --measurements drops.csv --label d20
+      impactlab calibrate drops.csv -p "flat_yield_strength=uniform(100 MPa, 1 GPa)"
     """
     from impactlab.experiment import analyze  # lazy: a fast CLI start
     from impactlab.experiment.checks import check_input_file, check_output_folder, output_folder
@@ -165,6 +197,15 @@ def analyze_cmd(
 
     rod_obj, rod_data = _rod_from(rod)
     geo = _geometry_from(geometry, rod_data)
+    if label is not None and measurements is None:
+        raise UserError("--label names the drop in --measurements: give --measurements FILE.csv")
+    if include_doubtful and measurements is None:
+        raise UserError(
+            "--include-doubtful applies to --measurements: give --measurements FILE.csv"
+        )
+    name = label if label is not None else markers.stem
+    if measurements is not None:
+        check_measurements(measurements, name)
     if pixel_size is not None:
         pixel_pair(pixel_size, "pixel_size (--pixel-size)")  # before --out is made
     if out is not None:
@@ -188,6 +229,9 @@ def analyze_cmd(
             out_dir=folder,
             gravity=gravity,
         )
+    appended = (
+        append_drop(measurements, res, name, include_doubtful) if measurements is not None else None
+    )
     if as_json:
         options = {"rod": rod or "paper", "flat": flat, "geometry": geometry, "up": up,
                    "marker_units": marker_units, "pixel_size": pixel_size,
@@ -198,6 +242,12 @@ def analyze_cmd(
             typer.echo(f"warning: {w}", err=True)
     else:
         _print_summary(res)
+    if isinstance(appended, UserError):
+        raise appended
+    if appended is not None:
+        for w in appended[1]:
+            typer.echo(f"warning: {w}", err=True)
+        typer.echo(f"appended drop {name!r} to {measurements} ({appended[0]} drops)", err=True)
     if res.errors:
         raise UserError("; ".join(f"{k}: {v}" for k, v in res.errors.items()))
 

@@ -190,7 +190,29 @@ def calibrate_cmd(
     ] = False,
 ) -> None:
     """Calibrate free parameters of candidate models on measured drops (emcee on the compiled
-    batch engine) and rank the models (PSIS-LOO)."""
+    batch engine) and rank the models (PSIS-LOO).
+
+    The measurements file has one row per drop (docs/calibrate.md); impactlab analyze
+    --measurements FILE.csv --label NAME appends an analysed drop to it.
+
+    Examples:
+
+    \b
+      impactlab calibrate examples/data/drops.csv -p "flat_yield_strength=uniform(100 MPa, 1 GPa)"
+
+    \b
+      impactlab calibrate drops.csv -p "mu=uniform(0, 0.6)" \\
+        -p "flat_yield_strength=loguniform(100 MPa, 1 GPa)" \\
+        -m ghaednia/coulomb -m jackson-green/coulomb --steps 2000 --out cal
+
+    \b
+      impactlab analyze drop20.c3d dent20.x3p --geometry markers.toml \\
+        --measurements drops.csv --label d20
+      impactlab calibrate drops.csv -p "flat_yield_strength=uniform(100 MPa, 1 GPa)" --json
+
+    \b
+      impactlab calibrate --config cal.toml --out cal
+    """
     from impactlab.calibrate import calibrate
     from impactlab.calibrate.config import load_config
     from impactlab.calibrate.report import save

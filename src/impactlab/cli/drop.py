@@ -58,7 +58,8 @@ LEGEND = (
     "end: the end that touched (0 the tip, 1 the other end); start: from the first touch; "
     "slip: int v_t dt over the contact; reload: True if the contact began on an existing dent. "
     "e_raw: e with the gravity impulse of the sequence kept (e removes it, as a ballistic fit "
-    "of marker data would); mu_apparent: the paper's Eq. 28 on the simulated velocities."
+    "of marker data would, so a nearly lossless drop's e can exceed 1: flagged "
+    "gravity-dominated); mu_apparent: the paper's Eq. 28 on the simulated velocities."
 )
 
 #: Columns of the contact table: ContactRecord fields (display units: ``impactlab._display``).

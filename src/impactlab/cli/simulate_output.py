@@ -1,7 +1,9 @@
 """What ``impactlab simulate`` prints and saves (``--from``: ``impactlab.cli.simulate_from``).
 
 With ``--plot`` the figures (``impactlab.dynamics.plotting``, each as PNG and PDF) and
-``impact_result.json`` go into ``--out`` (the current folder by default): files that an earlier
+``impact_result.json`` go into ``--out`` (the current folder by default; where the impacting
+body yields first, ``ImpactResult.body_yields_first``, the flat has no dent: no dent figure, and
+the contact path without one): files that an earlier
 ``impactlab simulate`` wrote there are replaced, a user's file of the same name never
 (``impactlab.cli.output_paths``; checked before the impact is simulated)."""
 
@@ -52,8 +54,14 @@ def _save(result: ImpactResult, data: dict[str, object], out: Path) -> list[str]
 
     output_folder(out, "--out")
     plt, files = pyplot(), []
+    flattened = bool(result.delta_p > 0.0 and result.body_yields_first)  # no dent in the flat
     for name in FIGURES:
-        fig = getattr(plotting, f"plot_{name}")(result)
+        if flattened and name == "dent":  # an earlier run's (checked replaceable) would mislead
+            for ext in FORMATS:
+                (out / f"impact_{name}.{ext}").unlink(missing_ok=True)
+            continue
+        plot = getattr(plotting, f"plot_{name}")
+        fig = plot(result, dent=False) if flattened and name == "contact_path" else plot(result)
         try:
             for ext in FORMATS:
                 path = save_figure(fig, out / f"impact_{name}.{ext}", "simulate", FIGURE_DPI)

@@ -35,6 +35,7 @@ import numpy as np
 from impactlab.contact.kernel_arrays import loading_contact_radius_array
 from impactlab.contact.kernels import P_R
 from impactlab.dynamics.core.batch import residual_caps
+from impactlab.materials import Material, body_yields_first, first_yield_factor
 
 #: How a cap's shape was found (``ResidualCaps.bound``): by the Hertzian unloading relation,
 #: or at the widest contact radius (a_d = a_c).
@@ -93,6 +94,41 @@ def residual_cap_geometry(law_id: int, law_params: np.ndarray, delta: np.ndarray
     rd = np.where(dent, rd, np.inf)
     ad = np.where(dent & np.isfinite(ad), ad, 0.0)
     return ResidualCaps(dr, rd, ad, bound)
+
+
+def body_flattening(body: Material, flat: Material, depth: float, what: str) -> str:
+    """Why a permanent interference is no dent in the flat, or ``""``: when the impacting body's
+    material ``body`` yields before ``flat`` (``materials.body_yields_first``: the smaller
+    first-yield pressure C(nu) S_y), the contact law takes the body's S_y and the permanent
+    interference ``depth`` [m] (> 0; ``what``: its name, e.g. ``delta_p``) is the body's
+    flattening, while the flat stays elastic to the law's approximation."""
+    if not (depth > 0.0 and body_yields_first(body, flat)):
+        return ""
+    p_body = first_yield_factor(body.nu) * body.yield_strength
+    p_flat = first_yield_factor(flat.nu) * flat.yield_strength
+    return (
+        f"the impacting body's material {body.name!r} yields before the flat {flat.name!r} "
+        f"(first-yield pressure C(nu) S_y {p_body / 1e6:.4g} MPa against {p_flat / 1e6:.4g} "
+        f"MPa: materials.body_yields_first), so the law takes the body's S_y and {what} = "
+        f"{depth * 1e6:.4g} um is the body's permanent flattening, not a dent in the flat, "
+        "which stays elastic to the law's approximation"
+    )
+
+
+def flattening_warning(clause: str) -> str:
+    """The result's warning for a ``body_flattening`` clause (advisory: ``ok`` unchanged)."""
+    return (
+        f"body yields first: {clause}; dent() maps no dent in the flat (advisory: the value, "
+        "the pair's permanent interference, and the other impact measures hold)"
+    )
+
+
+def flattening_error(clause: str) -> ValueError:
+    """The error of ``dent()`` for a ``body_flattening`` clause."""
+    return ValueError(
+        f"dent(): there is no dent in the flat to map: {clause} (plot_contact_path draws the "
+        "path without a dent with dent=False)"
+    )
 
 
 def bound_note(contact: int, deepest: int) -> str:

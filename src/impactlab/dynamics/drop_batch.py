@@ -40,6 +40,7 @@ from impactlab.dynamics.drop_checks import (
     refuse_rate,
     status_error,
 )
+from impactlab.dynamics.drop_gravity import e_lifted_by_gravity
 from impactlab.dynamics.export import batch_setup
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.batch import (
@@ -56,6 +57,7 @@ from impactlab.dynamics.kernels import status as S
 from impactlab.dynamics.kernels.layout import MU_NEGLIGIBLE
 from impactlab.dynamics.models import body_params, kernel_params, references_used
 from impactlab.dynamics.simulate_many import _batch_inputs
+from impactlab.flags import FLAG_GRAVITY_DOMINATED
 from impactlab.friction import COULOMB, DEFAULT_MU, PARTIAL_SLIP, PARTIAL_SLIP_CELLS
 from impactlab.materials import AISI_1010, Material
 
@@ -170,6 +172,8 @@ def simulate_drops(
     checks[~done] = np.nan
     dmax = out[:, F.O_DELTA_MAX]
     flags = np.where(done, np.nan_to_num(checks[:, CK_FLAGS]).astype(np.int64), 0)
+    lifted = e_lifted_by_gravity(out[:, F.O_E], out[:, F.O_E_RAW], flags, r)  # drop_flags'
+    flags[lifted] |= FLAG_GRAVITY_DOMINATED
     flags[done] |= np.asarray(extrapolation_flags(model.law_id, model.params, dmax[done]))
     limit = brittle_pressure(bm.rigid.material, flat)
     fmax = out[:, F.O_MAX_FORCE]

@@ -17,6 +17,7 @@ from impactlab.contact import ContactModel
 from impactlab.contact.brittle import brittle_flags
 from impactlab.contact.ranges import law_extrapolated
 from impactlab.contact.rate import get_rate_law
+from impactlab.dynamics.drop_gravity import e_lifted_by_gravity
 from impactlab.dynamics.flexcore import layout as F
 from impactlab.dynamics.flexcore.batch import sequence_flags
 from impactlab.dynamics.input_checks import (
@@ -248,7 +249,7 @@ def drop_flags(
     contacts: np.ndarray,
     radius: float,
     brittle_limit: float = math.inf,
-) -> ResultFlag:
+) -> tuple[ResultFlag, bool]:
     """The result flags of a finished sequence (docs/flexible.md, "Flags") from its output
     vector ``out`` (``layout.DROP_FIELDS``) and its contact table: the rigid engine's criteria
     (``impactlab.dynamics.kernels.quality``) on the state after the last contact, the
@@ -260,16 +261,23 @@ def drop_flags(
     rests or rocks: that flag says it), when the tip still approaches the flat after the last
     contact (e < 0); BEYOND_TIP when the flat reached the rim of an end's
     hemisphere (``radius`` [m]) in a contact (``kernels.quality.beyond_rim``); BRITTLE when
-    the largest mean contact pressure exceeds ``brittle_limit`` [Pa] (``contact.brittle``).
-    The compiled part (``flexcore.batch.sequence_flags``) is the one ``simulate_drops`` runs."""
+    the largest mean contact pressure exceeds ``brittle_limit`` [Pa] (``contact.brittle``);
+    GRAVITY_DOMINATED also where the gravity impulse removed from e alone lifts it above 1
+    (``drop_gravity.e_lifted_by_gravity``). Returns the flags and whether that rule alone set
+    GRAVITY_DOMINATED. The compiled part (``flexcore.batch.sequence_flags``) and that rule
+    are those ``simulate_drops`` runs."""
     bits = sequence_flags(out, e0, m, g, rtol, contacts, contacts.shape[0], radius)
     flags = ResultFlag(int(bits))
+    lifted = bool(e_lifted_by_gravity(out[F.O_E], out[F.O_E_RAW], int(bits), rtol))
+    lifted_alone = lifted and ResultFlag.GRAVITY_DOMINATED not in flags
+    if lifted:
+        flags |= ResultFlag.GRAVITY_DOMINATED
     if law_extrapolated(model, float(out[F.O_DELTA_MAX])):
         flags |= ResultFlag.LAW_EXTRAPOLATED
     if brittle_limit < math.inf:
         dmax, fmax = float(out[F.O_DELTA_MAX]), float(out[F.O_MAX_FORCE])
         flags |= brittle_flags(model.law_id, model.params, dmax, fmax, brittle_limit)
-    return flags
+    return flags, lifted_alone
 
 
 def balance_residual(o: Mapping[str, Any], e0: Any) -> Any:

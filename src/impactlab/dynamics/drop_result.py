@@ -17,7 +17,9 @@ from impactlab._display import flag_names
 from impactlab._json import jsonable
 from impactlab._version import __version__
 from impactlab.contact.ranges import law_range
+from impactlab.dynamics.dent import body_flattening, flattening_error, flattening_warning
 from impactlab.dynamics.derived import DerivedOutputs
+from impactlab.dynamics.drop_gravity import lifted_e_warning
 from impactlab.dynamics.drop_history import DROP_HISTORY_COLUMNS, DropHistory
 from impactlab.dynamics.drop_records import ContactRecord, DentRecord
 from impactlab.dynamics.history import DentMap
@@ -26,6 +28,7 @@ from impactlab.dynamics.pint_fields import pint_quantities
 from impactlab.dynamics.provenance import result_record
 from impactlab.dynamics.result_display import ResultDisplay, field_hint
 from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
+from impactlab.materials import body_yields_first
 from impactlab.references import Reference
 from impactlab.references import dois as doi_list
 
@@ -108,7 +111,9 @@ class DropResult(DerivedOutputs, ResultDisplay):
       the initial one beyond the tolerance of the rigid engine's criterion
       (``impactlab.flags.ENERGY_GAIN_RTOL_FACTOR`` rtol + ``ENERGY_ROUNDOFF``, relative to
       E0 + the final kinetic, vibration and |potential| energy), GRAVITY_DOMINATED when
-      m g sequence_duration exceeds ``GRAVITY_IMPULSE_RATIO`` of the total normal impulse,
+      m g sequence_duration exceeds ``GRAVITY_IMPULSE_RATIO`` of the total normal impulse, or
+      when the gravity impulse removed from e alone lifts it above 1 (e_raw not above 1, no
+      energy gained: ``drop_gravity.e_lifted_by_gravity``; its warning says so),
       OTHER_END when the other end touched the flat in the run (gravity-dominated or not) or,
       unless gravity dominates, e < 0 (the tip still approaches the flat after its last
       contact); GRAVITY_DOMINATED is judged on the tip's sequence (its contacts until
@@ -202,6 +207,9 @@ class DropResult(DerivedOutputs, ResultDisplay):
     _call: tuple[Any, ...] | None = field(default=None, repr=False, compare=False)
     #: the contact law the drop ran (law id, SI parameters, its rate factor included)
     _law: tuple[int, Any] | None = field(default=None, repr=False, compare=False)
+    #: GRAVITY_DOMINATED set by e > 1 through the removed gravity impulse alone
+    #: (``drop_gravity.e_lifted_by_gravity``; m g T within 0.1 of the normal impulse)
+    _e_lifted: bool = field(default=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "flags", ResultFlag(int(self.flags)))
@@ -229,7 +237,29 @@ class DropResult(DerivedOutputs, ResultDisplay):
         from impactlab.dynamics.drop_dent import drop_dent
 
         nx, ny, margin = check_dent_grid(nx, ny, margin)
+        clause = self._flattening()
+        if clause and self.history is not None:
+            raise flattening_error(clause)
         return drop_dent(self, nx=nx, ny=ny, margin=margin)
+
+    @property
+    def body_yields_first(self) -> bool | None:
+        """True when the rod's material yields before the flat's
+        (``materials.body_yields_first``; never with a rate law, which raises the rod's S_y:
+        ``contact.rate.rate_materials``): ``dent_depth`` and the ``dents`` are then the rod's
+        permanent flattening and the flat stays elastic (``warnings`` says so; ``dent()``
+        refuses); None for a drop that ``simulate`` did not return."""
+        if self._call is None:
+            return None
+        return self.rate is None and body_yields_first(self._call[0].material, self._call[1])
+
+    def _flattening(self) -> str:
+        """``dynamics.dent.body_flattening`` of this drop (``""``: the flat yields first)."""
+        if self._call is None or not self.body_yields_first:
+            return ""
+        depth = max([self.dent_depth, *(d.delta_p for d in self.dents)])
+        what = "dent_depth (and each of dents' delta_p)" if self.dents else "dent_depth"
+        return body_flattening(self._call[0].material, self._call[1], depth, what)
 
     @property
     def extrapolated(self) -> bool:
@@ -239,7 +269,10 @@ class DropResult(DerivedOutputs, ResultDisplay):
 
     @property
     def warnings(self) -> tuple[str, ...]:
-        """One explanatory sentence per flag (``impactlab.flags.messages``); ``()`` if none."""
+        """One explanatory sentence per flag (``impactlab.flags.messages``; GRAVITY_DOMINATED
+        set by e > 1 alone: ``drop_gravity.lifted_e_warning``), then, when the rod yields first
+        and left a permanent interference, the advisory one that it is the rod's flattening
+        (``dynamics.dent.body_flattening``); ``()`` if none."""
         how_far = (self.max_delta_ratio, self.fitted_delta_ratio_max)
         status, reference = self.fitted_range_status, "delta_c"
         try:
@@ -247,7 +280,12 @@ class DropResult(DerivedOutputs, ResultDisplay):
             status, reference = status or record.status, record.reference
         except ValueError:  # a custom law
             pass
-        return messages(self.flags, extrapolation=how_far, status=status, reference=reference)
+        flags = self.flags & ~ResultFlag.GRAVITY_DOMINATED if self._e_lifted else self.flags
+        said = messages(flags, extrapolation=how_far, status=status, reference=reference)
+        if self._e_lifted:  # in bit order: ENERGY_GAIN (1) is never set with it
+            said = (lifted_e_warning(self.e, self.e_raw), *said)
+        clause = self._flattening()
+        return (*said, flattening_warning(clause)) if clause else said
 
     @property
     def ok(self) -> bool:
@@ -288,14 +326,16 @@ class DropResult(DerivedOutputs, ResultDisplay):
         return result_record(self)
 
     def to_dict(self, *, include_history: bool = False) -> dict[str, Any]:
-        """JSON-ready values: scalars, ``contacts`` and ``dents`` as lists of dicts, the energy
-        balance, the references' citations; the history as lists of columns if asked. A key
-        before 0.3 (``"duration"``, ...) reads its new one with a DeprecationWarning."""
+        """JSON-ready values: scalars (``body_yields_first`` too), ``contacts`` and ``dents`` as
+        lists of dicts, the energy balance, the references' citations; the history as lists of
+        columns if asked. A key before 0.3 (``"duration"``, ...) reads its new one with a
+        DeprecationWarning."""
         d: dict[str, Any] = {}
         for f in fields(self):
-            if f.name in ("history", "references", "contacts", "dents", "_call", "_law"):
+            if f.name in ("history", "references", "contacts", "dents") or f.name[0] == "_":
                 continue
             d[f.name] = getattr(self, f.name)
+        d["body_yields_first"] = self.body_yields_first
         d["contacts"] = [c.__dict__ for c in self.contacts]
         d["dents"] = [x.__dict__ for x in self.dents]
         d["extrapolated"] = self.extrapolated

@@ -127,8 +127,8 @@ def assemble_drop_result(
     ratio, ratio_max = extrapolation(model.law_id, model.params, o["delta_max"])
     skip = {"vx_out", "vy_out", "n_contacts", "next_end", "n_steps", "n_jumps", "n_dents"}
     skip |= {"t_final"}
-    flags = drop_flags(r.out, e0, m, inputs["gravity"], rtol, model, r.contacts,
-                       bm.rigid.tip_radius, brittle_limit)  # fmt: skip
+    flags, lifted = drop_flags(r.out, e0, m, inputs["gravity"], rtol, model, r.contacts,
+                               bm.rigid.tip_radius, brittle_limit)  # fmt: skip
     return DropResult(
         contacts=tuple(ContactRecord.from_row(row) for row in r.contacts),
         dents=tuple(DentRecord.from_row(row) for row in r.dents),
@@ -151,6 +151,7 @@ def assemble_drop_result(
         law_range=range_note(model.law_id, model.params),
         references=references,
         _law=(model.law_id, np.asarray(model.params)),
+        _e_lifted=lifted,
         **inputs,
         **{_RENAMED_OUTPUTS.get(k, k): v for k, v in o.items() if k not in skip},
     )

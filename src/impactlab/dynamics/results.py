@@ -23,7 +23,12 @@ from impactlab.contact.ranges import (
     range_status,
     reference_name,
 )
-from impactlab.dynamics.dent import dent_map
+from impactlab.dynamics.dent import (
+    body_flattening,
+    dent_map,
+    flattening_error,
+    flattening_warning,
+)
 from impactlab.dynamics.derived import DerivedOutputs
 from impactlab.dynamics.history import HISTORY_UNITS, DentMap, History, readonly_copy
 from impactlab.dynamics.input_checks import check_dent_grid
@@ -32,6 +37,7 @@ from impactlab.dynamics.pint_fields import pint_quantities
 from impactlab.dynamics.provenance import result_record
 from impactlab.dynamics.result_display import ResultDisplay, field_hint
 from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
+from impactlab.materials import body_yields_first
 from impactlab.references import Reference
 from impactlab.references import dois as doi_list
 
@@ -174,11 +180,32 @@ class ImpactResult(DerivedOutputs, ResultDisplay):
 
     @property
     def warnings(self) -> tuple[str, ...]:
-        """One explanatory sentence per flag (``impactlab.flags.messages``); ``()`` if none."""
+        """One explanatory sentence per flag (``impactlab.flags.messages``), then, when the
+        impacting body yields first and delta_p > 0, the advisory one that delta_p is the
+        body's flattening (``dynamics.dent.body_flattening``); ``()`` if none."""
         how_far = extrapolation(self._law_id, self._law_params, self.delta_max)
         status = self.fitted_range_status
         reference = reference_name(self._law_id)
-        return messages(self.flags, extrapolation=how_far, status=status, reference=reference)
+        said = messages(self.flags, extrapolation=how_far, status=status, reference=reference)
+        clause = self._flattening()
+        return (*said, flattening_warning(clause)) if clause else said
+
+    @property
+    def body_yields_first(self) -> bool | None:
+        """True when the impacting body's material yields before the flat's
+        (``materials.body_yields_first``): delta_p is then the body's permanent flattening and
+        the flat stays elastic (``warnings`` says so; ``dent()`` refuses); None for a result
+        that ``simulate`` did not return."""
+        call = getattr(self, "_call", None)
+        return None if call is None else body_yields_first(call[0].material, call[1])
+
+    def _flattening(self) -> str:
+        """``dynamics.dent.body_flattening`` of this impact (``""``: the flat yields first)."""
+        if not self.body_yields_first:
+            return ""
+        call = self._call
+        assert call is not None  # body_yields_first is None without it
+        return body_flattening(call[0].material, call[1], self.delta_p, "delta_p")
 
     @property
     def ok(self) -> bool:
@@ -201,7 +228,7 @@ class ImpactResult(DerivedOutputs, ResultDisplay):
 
     def to_dict(self, *, include_history: bool = False) -> dict[str, Any]:
         """Scalar fields as a plain dict (with ``max_delta_ratio``, ``fitted_delta_ratio_max``,
-        ``fitted_range_status`` and ``extrapolated``, as a drop's;
+        ``fitted_range_status``, ``extrapolated`` and ``body_yields_first``, as a drop's;
         ``flags`` as an int, ``warnings`` as a list; history as lists of columns if asked). A
         sphere has no ``angle`` and ``angle_out`` (left out, as by ``impactlab simulate --json``
         and ``summary()``; its ``input`` records ``angle`` as None). Strict JSON, as a drop's:
@@ -220,6 +247,7 @@ class ImpactResult(DerivedOutputs, ResultDisplay):
         d["fitted_range_status"] = self.fitted_range_status
         d["extrapolated"] = self.extrapolated
         d["law_range"] = self.law_range
+        d["body_yields_first"] = self.body_yields_first
         d["flags"] = int(self.flags)
         d["ok"] = bool(self.ok)
         d["warnings"] = list(self.warnings)
@@ -280,11 +308,15 @@ class ImpactResult(DerivedOutputs, ResultDisplay):
         """The predicted permanent dent as a height map (model: docs/engine/index.md, "Dent").
 
         nx, ny : grid points along and across the impact plane (integers >= 3); margin :
-        relative padding (>= 0).
+        relative padding (>= 0). ValueError when the impacting body yields first and delta_p
+        > 0 (``body_yields_first``): delta_p is the body's flattening, the flat has no dent.
         """
         nx, ny, margin = check_dent_grid(nx, ny, margin)
         if self.history is None or self._law_params is None:
             raise ValueError("dent() needs the history: run simulate(..., history=True)")
+        clause = self._flattening()
+        if clause:
+            raise flattening_error(clause)
         h = self.history
         surface = dent_map(
             self._law_id, self._law_params, h.penetration, h.contact_x, nx=nx, ny=ny, margin=margin

@@ -1,0 +1,171 @@
+"""One drop appended to a CSV measurements file as one line, the rest of the file left as
+written (its ``#`` comments, its rows, their units and digits).
+
+The new line's values are written in the units of the file's header: a header ``angle [deg]``
+gets degrees, ``delta_p [um]`` micrometres, ``e [%]`` percent; a column without a unit gets the
+input's unit (SI; a Brinell hardness in kgf/mm^2) or, for an uncertainty, its quantity's column
+unit, and an angle in a column without a unit is written with its unit (``"20 deg"``). A column
+the file lacks is added at the end of the header, with its unit (``[deg]`` for an angle, SI
+otherwise), and every earlier row gets an empty field there (blank: not given, as before). A new
+file gets a header in SI units (angles in degrees). Each number is written with 12 significant
+digits. The file is written whole or not at all.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+from collections.abc import Mapping
+from pathlib import Path
+from typing import Any
+
+from impactlab._files import write_bytes_atomic
+from impactlab.calibrate.correlations import correlation_column
+from impactlab.calibrate.measurement_columns import column_kind, is_percent, split_header
+from impactlab.calibrate.measurement_files import read_text
+from impactlab.calibrate.measurement_rows import Row, parse_row
+from impactlab.calibrate.measurements import Measurements, read_measurements
+from impactlab.calibrate.quantities import ANGLES, DROP_CATEGORIES, MEASURABLE
+from impactlab.sweep.inputs import INPUTS, UNIT_REQUIRED
+from impactlab.units import to_si
+
+__all__ = ["append_record"]
+
+_BOM = b"\xef\xbb\xbf"
+
+
+def append_record(
+    path: str | Path, record: Mapping[str, Any], comment: str | None = None
+) -> Measurements:
+    """Append the drop ``record`` (column -> value, as ``Measurements.from_records`` takes it)
+    to the CSV measurements file ``path`` (created if missing) as one line in the file's units,
+    after a ``# comment`` line when ``comment`` is given; returns the file's drops. ValueError
+    naming the file for one that is not CSV, a file that cannot be read as measurements, a
+    label the file has already, and a drop it cannot take."""
+    p = Path(path)
+    if p.suffix.lower() != ".csv":
+        raise ValueError(
+            f"measurements file {str(p)!r}: a drop is appended to a CSV file (.csv); for a TOML "
+            "file, add a [[drop]] table of experiment_record's columns"
+        )
+    row = parse_row(0, record, {})
+    data = p.read_bytes() if p.exists() else b""
+    text = read_text(p, "CSV") if data.strip() else ""
+    lines = text.splitlines(keepends=True)
+    at = next((i for i, x in enumerate(lines) if x.strip() and not x.startswith("#")), None)
+    if at is not None and any(x.strip() and not x.startswith("#") for x in lines[at + 1 :]):
+        old = read_measurements(p)
+        if row.label in old.labels:
+            raise ValueError(
+                f"{p}: a drop labelled {row.label!r} is there already (drop "
+                f"{old.labels.index(row.label) + 1}): give the new drop another label"
+            )
+    header = next(csv.reader([lines[at]])) if at is not None else []
+    newline = "\r\n" if at is not None and lines[at].endswith("\r\n") else "\n"
+    fields, added = _fields(str(p), header, row)
+    out = io.StringIO(newline="")
+    csv.writer(out, lineterminator=newline).writerow(fields)
+    if at is None:  # a new file, or one of comments only: a header of the row's columns
+        head = io.StringIO(newline="")
+        csv.writer(head, lineterminator=newline).writerow(added)
+        lines += [head.getvalue()]
+    elif added:  # columns the file lacks: at the end of the header, empty in earlier rows
+        extra = io.StringIO(newline="")
+        csv.writer(extra, lineterminator="").writerow(["", *added])
+        lines = [
+            _extended(x, extra.getvalue() if i == at else "," * len(added)) if i >= at else x
+            for i, x in enumerate(lines)
+        ]
+    if lines and not lines[-1].endswith(("\n", "\r")):
+        lines[-1] += newline
+    lines += [f"# {_one_line(comment)}{newline}"] if comment else []
+    lines.append(out.getvalue())
+    bom = _BOM if data.startswith(_BOM) else b""
+    new = "".join(lines)
+    Measurements.from_records(_records(new), source=str(p))  # refused before it is written
+    write_bytes_atomic(p, bom + new.encode("utf-8"))
+    return read_measurements(p)
+
+
+def _records(text: str) -> list[dict[str, str]]:
+    """The rows of the CSV ``text`` as ``measurement_files.csv_records`` reads them."""
+    kept = [x for x in text.splitlines() if x.strip() and not x.startswith("#")]
+    rows = list(csv.reader(kept))
+    return [
+        {h: f for h, f in zip(rows[0], r, strict=False) if h.strip()}
+        for r in rows[1:]
+        if any(f.strip() for f in r)
+    ]
+
+
+def _one_line(text: str) -> str:
+    return " ".join(text.split())
+
+
+def _extended(line: str, tail: str) -> str:
+    """A data line (or the header) with ``tail`` added before its line ending; a blank or a
+    comment line as it is."""
+    if not line.strip() or line.startswith("#"):
+        return line
+    body = line.rstrip("\r\n")
+    return body + tail + line[len(body) :]
+
+
+def _fields(where: str, header: list[str], row: Row) -> tuple[list[str], list[str]]:
+    """(the new line's fields: the file's columns then the added ones, the added columns'
+    headers): each value in its column's unit (module docstring)."""
+    values = _values(row)
+    canon: dict[str, int] = {}
+    units: dict[str, str | None] = {}
+    for j, h in enumerate(header):
+        name, unit = split_header(h)
+        if name.strip():
+            c = column_kind(where, name)[1]
+            canon.setdefault(c, j)
+            units[c] = unit
+    fields = [""] * len(header)
+    added: list[str] = []
+    for c, (x, si) in values.items():
+        base = c.removesuffix("_sigma") if c.endswith("_sigma") else c
+        if c in canon:
+            unit = units[c] or (units.get(base) if c != base else None)
+            fields[canon[c]] = _text(c, base, x, si, unit)
+            continue
+        unit = "deg" if base in (*ANGLES, *UNIT_REQUIRED) else (None if si in ("1", "") else si)
+        if c != base and units.get(base):  # an uncertainty beside a file's column of a unit
+            unit = units[base]
+        added.append(c if unit is None or isinstance(x, str) else f"{c} [{unit}]")
+        fields.append(_text(c, base, x, si, unit))
+    return fields, added
+
+
+def _values(row: Row) -> dict[str, tuple[Any, str]]:
+    """Canonical column -> (value, its unit: the input's or SI; "" for text) of ``row``."""
+    out: dict[str, tuple[Any, str]] = {"label": (row.label, "")}
+    out |= {c: (row.categories[c], "") for c in DROP_CATEGORIES if c in row.categories}
+    out |= {k: (x, INPUTS[k].unit) for k, x in row.inputs.items()}
+    for q, x in row.observed.items():
+        out[q], out[f"{q}_sigma"] = (x, MEASURABLE[q].unit), (row.sigma[q], MEASURABLE[q].unit)
+    out |= {correlation_column(*pair): (x, "1") for pair, x in row.correlation.items()}
+    return out
+
+
+def _text(column: str, base: str, x: Any, si: str, unit: str | None) -> str:
+    """``x`` (in ``si``) as the text of a field of a column of ``unit`` (None: bare)."""
+    if isinstance(x, str):
+        return x
+    spec = INPUTS.get(column)
+    if unit is None and spec is not None and spec.parse_unit != spec.unit:
+        unit = spec.parse_unit  # a bare hardness is read in kgf/mm^2
+    if unit is None and base in (*ANGLES, *UNIT_REQUIRED):
+        return f"{_number(math.degrees(x))} deg"  # an angle is never bare
+    if unit is None or unit.strip() in ("1", "-", si):
+        return _number(x)
+    if is_percent(unit):
+        return _number(100.0 * x)
+    return _number(x * to_si(1.0, si) / to_si(1.0, unit))
+
+
+def _number(x: float) -> str:
+    return f"{float(x):.12g}"
