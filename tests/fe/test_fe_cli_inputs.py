@@ -100,6 +100,28 @@ def test_the_radius_error_names_max_and_hints_only_for_a_bare_number(
     assert ("a bare number is in m" in err) is hint
 
 
+def test_a_max_past_the_equator_is_named_as_typed_with_the_radius(cli_main: CliMain) -> None:
+    """Before: "--max (0.005 m) is too large for radius 0.0088 m: ...; allowed delta_max <
+    0.0034236112905077663 m", the value not as typed, --radius not named, 17 digits."""
+    code, _, err = cli_main("fe", "indent", "--max", "5 mm")
+    assert code == 2 and err == (
+        "error: --max '5 mm' (0.005 m) is too large for the sphere radius (--radius '8.8 mm', "
+        "0.0088 m): the contact radius would reach the sphere's equator; allowed --max < "
+        "0.003423 m\n"
+    )
+    code, _, err = cli_main("fe", "indent", "--max", "0.003", "--radius", "6 mm")
+    assert code == 2 and "(--radius '6 mm', 0.006 m)" in err and "allowed --max < 0.002334 m" in err
+    assert err.rstrip().endswith("(a bare number is in m: give a unit, e.g. '5 um')")
+    with pytest.raises(ValueError, match=r"^delta_max \(0\.005 m\)") as info:
+        make_problem(AISI_1010, AISI_201, radius="8.8 mm", delta_max="5 mm")
+    assert str(info.value) == (
+        "delta_max (0.005 m) is too large for radius 0.0088 m: the contact radius would reach "
+        "the sphere's equator; allowed delta_max < 0.003423 m"
+    )
+    # every value below the bound shown is taken
+    make_problem(AISI_1010, AISI_201, radius="8.8 mm", delta_max="3.4229 mm")
+
+
 def test_the_python_radius_error_hints_only_for_a_number() -> None:
     with pytest.raises(ValueError, match=r"\(0\.0088 m\)$"):
         make_problem(AISI_1010, AISI_201, radius="8.8 mm", delta_max="20 mm")
@@ -165,7 +187,7 @@ def test_verification_help_runs_nothing_and_out_names_the_folder(
     assert stop.value.code == 2 and len(calls) == 3
 
 
-def test_every_modulus_and_strength_option_says_its_unit(cli_main) -> None:
+def test_every_modulus_and_strength_option_says_its_unit(cli_main: CliMain) -> None:
     """Formerly --body-E and --body-sy gave no unit or example, while the flat's did."""
     code, out, _ = cli_main("fe", "indent", "--help")
     assert code == 0

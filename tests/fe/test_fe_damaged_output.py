@@ -164,7 +164,7 @@ def test_the_runs_that_ended_are_kept_and_the_damaged_one_named(
         indent(AISI_1010, delta_max=[1e-6, 2e-6, 3e-6], **kwargs)
     message = str(err.value)
     assert message.startswith("ccx's job.dat for delta_max = 2 um, line 9: cut; the other 2 ")
-    assert "(delta_max = 1 um, 3 um) ended: the converged ones are cached" in message
+    assert "(delta_max = 1 um, 3 um) ended: they are cached" in message
     assert "\n" not in message and isinstance(err.value, ValueError)
     assert [r is None for r in err.value.results] == [False, True, False]
     assert len(list(tmp_path.glob("*.npz"))) == 2  # the finished runs are cached

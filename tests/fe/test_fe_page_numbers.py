@@ -50,3 +50,27 @@ def test_the_perfectly_plastic_run_at_1_5_delta_c_is_unresolved() -> None:
     text = _text()
     assert re.search(r"is 0\.020, where the perfectly plastic run's is unresolved \(n/a", text)
     assert "0.020 against 0" not in text
+
+
+def test_the_unloading_bracket_is_the_shipped_datas_largest() -> None:
+    """The unloading increments bracket delta_r by up to 21.2 % of delta_max in the shipped
+    data (the page said 20 %): the last increment of ``unloading_path``, 0.212 delta_max to 0."""
+    import numpy as np
+
+    from impactlab.fe.curves import load_cases
+    from impactlab.fe.problem import unloading_path
+
+    widest = 0.0
+    for case in [*load_cases(), load_case("paper-aisi201-on-aisi1010-hardening", HARDENED_DIR)]:
+        for run in case.runs:
+            if not run.converged or math.isnan(run.residual_depth):
+                continue
+            f = np.asarray(run.unloading_force)
+            k = int(np.argmin(f > 1e-6 * np.max(np.abs(f))))
+            d = np.asarray(run.unloading_delta)
+            widest = max(widest, float(d[k - 1] - d[k]) / run.delta_max)
+    path = np.asarray(unloading_path().path)
+    last = float(path[-2, 1] - path[-1, 1])  # delta / delta_max of the last increment
+    assert round(widest, 3) == round(last, 3) == round(1.0 - 1000.0 ** (-1 / 29), 3) == 0.212
+    text = _text()
+    assert "by up to 21.2 % of $\\delta_{max}$" in text and "by up to 20 %" not in text

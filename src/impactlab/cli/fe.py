@@ -35,8 +35,8 @@ from impactlab.cli.fe_output import (
     FIGURE,
     STOPPED_AT,  # noqa: F401  (re-exported: the old home)
     UNITS,
+    case_line,
     case_record,
-    material_text,
     plot_runs,
     run_summary,
     summary_rows,
@@ -113,17 +113,26 @@ def _bare(text: str) -> bool:
 
 
 def _check_sizes(maxima: list[str], deltas: list[float], radius: str, R: float) -> None:
-    """The radius at most :data:`MAX_RADIUS`, each --max below it; a unit hint for bare ones."""
+    """The radius at most :data:`MAX_RADIUS`, each --max below it and below the largest the
+    radius allows (``fe.problem.largest_delta_max``); a unit hint for bare ones."""
+    from impactlab.fe.problem import largest_delta_max, rounded_down
+
     if R > MAX_RADIUS:
         hint = " (a bare number is in m: give a unit, e.g. '5 mm')" if _bare(radius) else ""
         raise UserError(f"--radius {radius!r} ({R:g} m) is larger than {MAX_RADIUS:g} m, the "
                         f"largest sphere taken{hint}")  # fmt: skip
     for text, d in zip(maxima, deltas, strict=True):
+        hint = BARE_HINT if _bare(text) or _bare(radius) else ""
         if d >= R:
-            hint = BARE_HINT if _bare(text) or _bare(radius) else ""
             raise UserError(
                 f"--max {text!r} ({d:g} m) must be smaller than the sphere radius (--radius "
                 f"{radius!r}, {R:g} m){hint}"
+            )
+        if d >= largest_delta_max(R):
+            raise UserError(
+                f"--max {text!r} ({d:g} m) is too large for the sphere radius (--radius "
+                f"{radius!r}, {R:g} m): the contact radius would reach the sphere's equator; "
+                f"allowed --max < {rounded_down(largest_delta_max(R))} m{hint}"
             )
 
 
@@ -149,7 +158,9 @@ def indent_cmd(
         "--radius",
         help=f"Sphere radius, e.g. '5 mm' (bare number: m; at most {MAX_RADIUS:g} m).",
     ),
-    sphere: str = typer.Option("elastic-plastic", help="rigid, elastic or elastic-plastic."),
+    sphere: str = typer.Option(
+        "elastic-plastic", help="rigid (its material not used), elastic or elastic-plastic."
+    ),
     body: str | None = typer.Option(
         None,
         "--body",
@@ -245,9 +256,10 @@ def indent_cmd(
         damaged, results = exc, [r for r in exc.results if r is not None]
     except NotCalculixError as exc:  # IMPACTLAB_CCX=/bin/true: one line, before any run
         raise UserError(str(exc)) from None
-    case = case_record(  # what was indented: the JSON's "case"
-        bm, fm, table, sphere=sphere, radius=R, mu=mu, mesh_level=mesh, loading_only=loading_only
-    )
+    case = case_record(  # what was indented: the JSON's "case"; a rigid sphere's material unused
+        bm, fm, table, sphere=sphere, sphere_material_used=sphere != "rigid", radius=R, mu=mu,
+        mesh_level=mesh, loading_only=loading_only,
+    )  # fmt: skip
     if as_json:
         from impactlab._json import to_json
         from impactlab.fe.cache import ARRAYS
@@ -261,11 +273,7 @@ def indent_cmd(
         doc = {"case": case, "runs": payload, "impactlab_version": __version__}
         print(json.dumps(to_json(doc, units), indent=2))
     else:
-        console.print(
-            f"{material_text(bm)} sphere ({sphere}, R = {R * 1e3:g} mm) on {material_text(fm)}"
-            f"{' (hardening table)' if table is not None else ''}, mu = {mu:g}, mesh level {mesh}",
-            markup=False,
-        )
+        console.print(case_line(bm, fm, table, sphere, R, mu, mesh), markup=False)
         for r in results:
             print_rows(summary_rows(r), f"FE indentation to {r.delta_max * 1e6:.4g} um")
     if plot:

@@ -16,6 +16,7 @@ __all__ = [
     "FIGURE",
     "STOPPED_AT",
     "UNITS",
+    "case_line",
     "case_record",
     "material_text",
     "plot_runs",
@@ -40,7 +41,8 @@ FIGURE = "fe_indent.png"
 def case_record(bm: Material, fm: Material, table: Any, **inputs: Any) -> dict[str, Any]:
     """What was indented, every input (the form of the reference files' ``inputs``:
     ``fe.curves``): both materials' values (of one given by values only those given, the rest
-    None), the hardening table's rows (None without one) and ``inputs``."""
+    None), the hardening table's rows (None without one) and ``inputs`` (with
+    ``sphere_material_used``: False for a rigid sphere, whose material is recorded only)."""
     from impactlab.fe.curves import material_record
 
     rows = None
@@ -55,6 +57,21 @@ def case_record(bm: Material, fm: Material, table: Any, **inputs: Any) -> dict[s
         "flat_hardening": rows,
         **inputs,
     }
+
+
+def case_line(
+    bm: Material, fm: Material, table: Any, sphere: str, R: float, mu: float, mesh: int
+) -> str:
+    """The line above the tables: what was indented (R [m]). A rigid sphere's material is
+    not used (delta_c is the flat's against a rigid sphere), and the line says so."""
+    ball = f"{material_text(bm)} sphere ({sphere}, R = {R * 1e3:g} mm)"
+    if sphere == "rigid":
+        ball = (
+            f"rigid sphere (R = {R * 1e3:g} mm; its material {material_text(bm)} not used: "
+            "delta_c is the flat's against a rigid sphere)"
+        )
+    hardening = " (hardening table)" if table is not None else ""
+    return f"{ball} on {material_text(fm)}{hardening}, mu = {mu:g}, mesh level {mesh}"
 
 
 def material_text(m: Material) -> str:

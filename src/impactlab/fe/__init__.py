@@ -14,7 +14,13 @@ them. Method and verification: docs/fe.md; the dynamic impact (``impact``): docs
 """
 
 from impactlab.fe.cache import SCHEMA_VERSION, default_cache_dir
-from impactlab.fe.ccx import INSTALL_HINT, DamagedOutputError, NotCalculixError, find_ccx
+from impactlab.fe.ccx import (
+    INSTALL_HINT,
+    DamagedOutputError,
+    NonFiniteOutputError,
+    NotCalculixError,
+    find_ccx,
+)
 from impactlab.fe.impact_result import ImpactResult
 from impactlab.fe.impact_run import impact
 from impactlab.fe.problem import MESH_GROWTH, SPHERE_KINDS, check_hardening, critical_interference
@@ -32,6 +38,7 @@ __all__ = [
     "DamagedRunsError",
     "ImpactResult",
     "IndentationResult",
+    "NonFiniteOutputError",
     "NotCalculixError",
     "NotConvergedWarning",
     "check_hardening",

@@ -119,8 +119,17 @@ def read_npz(
 def load(directory: Path, key: str) -> IndentationResult | None:
     """The cached result for ``key``, or None: none cached, or a damaged file (cut short,
     empty, not a result: a :class:`DamagedCacheWarning` naming it; the caller runs again and
-    :func:`store` writes over it)."""
+    :func:`store` writes over it). A run that did not converge is cached too (ccx stops there
+    again on the same inputs), read back as it was stored."""
     return read_npz(directory / f"{key}.npz", ARRAYS, IndentationResult)
+
+
+def from_cache_note(directory: Path, key: str) -> str:
+    """What the warning of a cached run that did not converge adds: where it was read."""
+    return (
+        f"read from the FE cache ({directory / f'{key}.npz'}), not run again: ccx stops there "
+        "again on the same inputs; use_cache=False (impactlab fe indent --no-cache) runs it again"
+    )
 
 
 def store(directory: Path, key: str, result: IndentationResult) -> None:

@@ -8,6 +8,7 @@ parallel instead). Nothing here computes mechanics: it writes, runs and reads.
 from __future__ import annotations
 
 import functools
+import math
 import os
 import re
 import shutil
@@ -17,8 +18,11 @@ import time
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
+from subprocess import PIPE
 
 import numpy as np
+
+from impactlab.fe import interrupt
 
 #: The one-line message when ccx is missing.
 INSTALL_HINT = (
@@ -100,9 +104,15 @@ class DamagedOutputError(ValueError):
     The message names the file, the line and what is wrong."""
 
 
+class NonFiniteOutputError(DamagedOutputError):
+    """A ccx output file with a nan or inf where ccx prints a number: ccx's solution diverged;
+    the message names the file, the line and the value (no result is made of it)."""
+
+
 #: A number as ccx prints it in a ``.dat`` row: a mantissa with a decimal point and a two- or
 #: three-digit exponent (``-2.359894E-02``; Fortran's E format drops the letter of a
-#: three-digit one: ``4.286203-101``, ``1.0+100``), or nan / inf; a node id: digits.
+#: three-digit one: ``4.286203-101``, ``1.0+100``), or nan / inf (read, then
+#: refused: ``NonFiniteOutputError``); a node id: digits.
 _NUMBER = re.compile(
     r"[-+]?(?:\d+\.\d*|\.\d+)(?:[EeDd][-+]\d{2,3}|[-+]\d{3})|[-+]?(?:nan|inf)", re.IGNORECASE
 )
@@ -142,7 +152,15 @@ def _row(line: str, width: int, nodal: bool, name: str, number: int) -> list[flo
                 f"{name}, line {number}: {part!r} is not a whole {kind} as ccx prints it "
                 f"({line.strip()!r}); the file is damaged (cut short?)"
             )
-    return [fortran_value(v) for v in parts]
+    values = [fortran_value(v) for v in parts]
+    bad = [part for part, v in zip(parts, values, strict=True) if not math.isfinite(v)]
+    if bad:
+        raise NonFiniteOutputError(
+            f"{name}, line {number}: {bad[0]!r} where ccx prints a finite number "
+            f"({line.strip()!r}): ccx's solution is not finite there (it diverged); the run "
+            "cannot be read, and nothing of it is kept or cached"
+        )
+    return values
 
 
 def parse_dat(text: str, name: str = "job.dat", sizes: Mapping[str, int] | None = None) -> DatFile:
@@ -151,7 +169,8 @@ def parse_dat(text: str, name: str = "job.dat", sizes: Mapping[str, int] | None 
     name in messages; ``sizes``: the number of nodes of each printed node set, where known.
     DamagedOutputError (naming ``name``, the line and what is wrong) for a row whose width
     differs from its header's components (plus the node id), a number not in ccx's full form
-    (``-2.359894E-02``: a number cut short would be read 100 times off), a text that ends
+    (``-2.359894E-02``: a number cut short would be read 100 times off), a nan or inf
+    (:class:`NonFiniteOutputError`: ccx diverged), a text that ends
     inside a line, or a nodal block with other than its set's number of rows (``sizes``, else
     the set's first block: a file cut at a line's end inside a block)."""
     out = DatFile()
@@ -276,20 +295,21 @@ def run_ccx(deck: str, workdir: Path, exe: str, timeout: float | None = None) ->
     env["OMP_NUM_THREADS"] = "1"
     env["CCX_NPROC_EQUATION_SOLVER"] = "1"
     t0 = time.perf_counter()
+    # tracked, so that Ctrl-C or SIGTERM ends it and its folder is removed (``fe.interrupt``)
+    proc = interrupt.popen([exe, "-i", "job"], cwd=workdir, env=env, stdout=PIPE, stderr=PIPE)
     try:
-        proc = subprocess.run(
-            [exe, "-i", "job"],
-            cwd=workdir,
-            env=env,
-            capture_output=True,
-            text=True,
-            timeout=timeout,
-            check=False,
-        )
-        rc, tail = proc.returncode, _error_lines(proc.stdout + proc.stderr, proc.returncode)
-    except subprocess.TimeoutExpired as exc:
-        partial = exc.stdout.decode(errors="replace") if isinstance(exc.stdout, bytes) else ""
-        rc, tail = -9, f"ccx stopped after the time limit of {timeout} s; {_error_lines(partial)}"
+        stdout, stderr = proc.communicate(timeout=timeout)
+        rc, tail = proc.returncode, _error_lines(stdout + stderr, proc.returncode)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        stdout, stderr = proc.communicate()
+        rc = -9
+        tail = f"ccx stopped after the time limit of {timeout} s; {_error_lines(stdout + stderr)}"
+    finally:
+        if proc.poll() is None:  # an exception in this thread: ccx does not outlive it
+            proc.kill()
+            proc.wait()
+        interrupt.release(proc)
     seconds = time.perf_counter() - t0
     dat = workdir / "job.dat"
     sta = workdir / "job.sta"

@@ -14,7 +14,6 @@ import re
 import tempfile
 import warnings
 from collections.abc import Callable
-from concurrent.futures import ThreadPoolExecutor, as_completed
 from pathlib import Path
 from typing import Any
 
@@ -36,6 +35,7 @@ from impactlab.fe.impact_result import (
     trapezoid,
     upgrade_record,
 )
+from impactlab.fe.interrupt import run_parallel
 from impactlab.fe.mesh import Mesh, build_mesh
 from impactlab.fe.problem import check_maxima
 from impactlab.fe.run import NotConvergedWarning
@@ -307,15 +307,16 @@ def impact(
         sub = keep / f"impact{i}" if keep is not None else None
         return i, _solve(problems[i], meshes[i], exe, sub)
 
-    if todo:
-        with ThreadPoolExecutor(max_workers=n) as pool:
-            for future in as_completed([pool.submit(job, i) for i in todo]):
-                i, res = future.result()
-                results[i] = res
-                if (res.converged or res.stopped_at_separation) and use_cache:
-                    store(directory, keys[i], res)
-                if progress is not None:
-                    progress(i, res)
+    def handle(out: tuple[int, ImpactResult]) -> None:
+        i, res = out
+        results[i] = res
+        if (res.converged or res.stopped_at_separation) and use_cache:
+            store(directory, keys[i], res)
+        if progress is not None:
+            progress(i, res)
+
+    if todo:  # Ctrl-C or SIGTERM ends every ccx and removes its folder (``fe.interrupt``)
+        run_parallel(todo, n, job, handle)
     final = [r for r in results if r is not None]
     for r in final:
         if r.status() != "converged":

@@ -4,7 +4,8 @@ A sphere of radius R presses a flat to the interference delta_max and is withdra
 force is zero (SI units: m, Pa, N). The critical interference delta_c is the pair's
 Jackson-Green first-yield interference as the contact laws compute it
 (``impactlab.contact``: ``ContactModel.critical_interference``; Jackson & Green 2005,
-doi:10.1115/1.1866166).
+doi:10.1115/1.1866166); with a rigid sphere, the flat's against a rigid sphere
+(``Problem.pair``), the sphere material then not used.
 """
 
 from __future__ import annotations
@@ -299,7 +300,8 @@ def check_resolution(spec: MeshSpec, delta: float) -> None:
     n = contact_elements(spec, delta)
     if n < MIN_CONTACT_ELEMENTS:
         raise ValueError(
-            f"the mesh is too coarse for delta_max = {delta!r} m: {n:.1f} elements across the "
+            f"the mesh is too coarse for delta_max = {value_text(delta, 'm')}: {n:.1f} elements "
+            "across the "
             f"contact radius sqrt(R delta_max) = {math.sqrt(spec.radius * delta):.4g} m, at "
             f"least {MIN_CONTACT_ELEMENTS} needed; use a finer mesh_level"
         )
@@ -336,13 +338,15 @@ def make_problem(
     if d >= R:
         bare = not isinstance(delta_max, str) and not is_quantity(delta_max)
         raise ValueError(
-            f"delta_max ({d!r} m) must be smaller than the sphere radius ({R!r} m)"
+            f"delta_max ({value_text(d, 'm')}) must be smaller than the sphere radius "
+            f"({value_text(R, 'm')})"
             + (" (a bare number is in m: give a unit, e.g. '5 um')" if bare else "")
         )
     if estimated_contact_radius(R, d) >= 0.95 * R:
         raise ValueError(
-            f"delta_max ({d!r} m) is too large for radius {R!r} m: the contact radius would "
-            f"reach the sphere's equator; allowed delta_max < {largest_delta_max(R)!r} m"
+            f"delta_max ({value_text(d, 'm')}) is too large for radius {value_text(R, 'm')}: "
+            f"the contact radius would reach the sphere's equator; allowed delta_max < "
+            f"{rounded_down(largest_delta_max(R))} m"
         )
     mu_v = check_nonnegative("mu", mu)
     if mu_v > 2.0:
@@ -369,6 +373,13 @@ def make_problem(
     )
     check_resolution(problem.mesh_spec(), d)
     return problem
+
+
+def rounded_down(x: float, digits: int = 4) -> str:
+    """``x`` > 0 rounded down to ``digits`` significant digits, as text: a bound shown so
+    that every value below it is below ``x`` too ("allowed < 0.003423 m" for 0.0034236)."""
+    e = math.floor(math.log10(x)) - (digits - 1)
+    return f"{math.floor(x / 10.0**e) * 10.0**e:.{digits}g}"
 
 
 def largest_delta_max(R: float) -> float:

@@ -29,7 +29,8 @@ class IndentationResult:
     ``fe.run.residual_depth``); dent_r, dent_z: the flat's surface after unloading,
     radius [m] and height [m] (> 0: pile-up above the undeformed surface); a loading-only run
     (``unload=False``) has empty unloading and dent arrays and a nan residual_depth;
-    delta_c: the pair's critical interference [m]; converged: True when ccx finished every
+    delta_c: the pair's critical interference [m] (of a rigid sphere: the flat's against a
+    rigid sphere); converged: True when ccx finished every
     step of the run; last_converged_delta: the interference of the last converged increment
     [m]; message: ccx's error when it stopped, else ""; increments, cutbacks, iterations: of
     all steps; run_time: ccx's wall time [s]; n_elements: of the mesh; force_balance: the largest

@@ -7,7 +7,6 @@ import os
 import tempfile
 import warnings
 from collections.abc import Callable, Sequence
-from concurrent.futures import ThreadPoolExecutor, as_completed
 from pathlib import Path
 from typing import Any
 
@@ -25,6 +24,7 @@ from impactlab.fe.ccx import (
     run_ccx,
 )
 from impactlab.fe.deck import DeckSpec, write_deck
+from impactlab.fe.interrupt import run_parallel
 from impactlab.fe.mesh import Mesh, build_mesh
 from impactlab.fe.problem import Problem, check_maxima, make_problem
 from impactlab.fe.result import (
@@ -64,7 +64,7 @@ class DamagedRunsError(DamagedOutputError):
         text = "; ".join(str(e) for e in self.damaged.values())
         done = [r for r in self.results if r is not None]
         if done:
-            kept = ": the converged ones are cached (run again to read them)" if cached else ""
+            kept = ": they are cached (run again to read them)" if cached else ""
             text += (
                 f"; the other {len(done)} run(s) (delta_max = "
                 + ", ".join(f"{r.delta_max * 1e6:.4g} um" for r in done)
@@ -225,15 +225,18 @@ def _run_pending(
     done: Callable[[int, IndentationResult], None],
 ) -> dict[int, DamagedOutputError]:
     """Run ``job`` for each index of ``todo`` on ``workers`` threads, handing each result to
-    ``done`` as it ends; the runs whose output was damaged, by index."""
+    ``done`` as it ends; the runs whose output was damaged, by index. Ctrl-C or SIGTERM ends
+    every ccx and removes its folder first (``fe.interrupt.run_parallel``)."""
     damaged: dict[int, DamagedOutputError] = {}
-    with ThreadPoolExecutor(max_workers=workers) as pool:
-        for future in as_completed([pool.submit(job, i) for i in todo]):
-            i, res = future.result()
-            if isinstance(res, DamagedOutputError):
-                damaged[i] = res
-            else:
-                done(i, res)
+
+    def handle(out: tuple[int, IndentationResult | DamagedOutputError]) -> None:
+        i, res = out
+        if isinstance(res, DamagedOutputError):
+            damaged[i] = res
+        else:
+            done(i, res)
+
+    run_parallel(todo, workers, job, handle)
     return damaged
 
 
@@ -258,10 +261,11 @@ def indent(
     """Quasi-static indentation of a flat by a sphere, loaded to each ``delta_max`` and
     unloaded to zero force, by CalculiX (one ``ccx`` process per maximum, in parallel).
 
-    flat, sphere_material: the materials (``sphere_material`` defaults to the flat's; unused
-    for a rigid sphere except in delta_c). radius: R [m]. delta_max: one interference [m] or a
-    sequence (numbers in m, strings with units or pint quantities). sphere: "rigid",
-    "elastic" or "elastic-plastic". flat_hardening, sphere_hardening: rows of (true stress
+    flat, sphere_material: the materials (``sphere_material`` defaults to the flat's; not
+    used for a rigid sphere: delta_c is then the flat's against a rigid sphere). radius: R
+    [m]. delta_max: one interference [m] or a sequence (numbers in m, strings with units or
+    pint quantities). sphere: "rigid", "elastic" or "elastic-plastic". flat_hardening,
+    sphere_hardening: rows of (true stress
     [Pa], true plastic strain), the first at strain 0 (default: elastic-perfectly plastic at
     S_y); ``flat_hardening="elastic"`` keeps the flat elastic. mu: Coulomb friction
     coefficient of the contact (0: frictionless). mesh_level: 1-4, each doubling the number
@@ -276,9 +280,13 @@ def indent(
 
     Returns one :class:`IndentationResult` per maximum, in the order given. A run that ccx
     cannot finish comes back with ``converged=False`` (curve up to the last converged point)
-    and a :class:`NotConvergedWarning`. A run whose ccx output is damaged (a ``.dat`` file cut
-    short) raises :class:`DamagedRunsError` once every run has ended, naming the file, the
-    line and the fault; the runs that finished are cached and in its ``results``.
+    and a :class:`NotConvergedWarning`; it is cached as well, read back as it was, its
+    warning then saying where it was read (``cache.from_cache_note``). A run whose ccx output
+    is damaged (a ``.dat`` file cut short, or a nan or inf printed:
+    ``ccx.NonFiniteOutputError``) raises :class:`DamagedRunsError` once every run has
+    ended, naming the file, the line and the fault; it is not cached, the runs that ended
+    are, and are in its ``results``. Ctrl-C or SIGTERM ends every ccx and removes its
+    temporary folder (``fe.interrupt``).
     RuntimeError when ccx is not installed (with how to install it), ImportError when gmsh is
     missing, ValueError for bad input.
     """
@@ -326,6 +334,7 @@ def indent(
         if res is not None and progress is not None:
             progress(i, res)
     todo = [i for i, r in enumerate(results) if r is None]
+    read = {i for i, r in enumerate(results) if r is not None}  # from the cache
     meshes = {i: build_mesh(problems[i].mesh_spec()) for i in todo}  # gmsh: one thread
     n = max(1, min(len(todo), int(workers) if workers else (os.cpu_count() or 1)))
     keep = Path(keep_files) if keep_files is not None else None
@@ -339,16 +348,17 @@ def indent(
 
     def done(i: int, res: IndentationResult) -> None:
         results[i] = res
-        if res.converged and use_cache:
+        if use_cache:  # a run that did not converge too: ccx stops there again on its inputs
             cache.store(directory, keys[i], res)
         if progress is not None:
             progress(i, res)
 
     damaged = _run_pending(todo, n, job, done) if todo else {}
     final = [r for r in results if r is not None]
-    for r in final:
-        if not r.converged:
-            warnings.warn(r.status(), NotConvergedWarning, stacklevel=2)
+    for i, r in enumerate(results):  # a cached one says where it was read
+        if r is not None and not r.converged:
+            note = f"; {cache.from_cache_note(directory, keys[i])}" if i in read else ""
+            warnings.warn(r.status() + note, NotConvergedWarning, stacklevel=2)
     if damaged:
         raise DamagedRunsError(damaged, results, cached=use_cache)
     return final

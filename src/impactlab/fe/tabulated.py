@@ -10,7 +10,8 @@
   with a strain-hardening flat (``fe/data/hardening``; not among the default candidates of
   ``law="tabulated"``, which would otherwise find two curves for one E*/S_y).
 - ``tabulated_law(pair, radius)``: the law for any pair: from the shipped or cached curves
-  when one matches the pair (E*/S_y, nu and the body that yields), else from new ``indent``
+  when one matches the pair (E*/S_y, nu and the body that yields) and every FE option asked
+  (``fe.tabulated_options``), else from new ``indent``
   runs of the pair itself, sphere elastic-plastic (CalculiX ``ccx`` needed; RuntimeError
   saying how to install it), whose curves, labelled with the body that yields, are kept in
   ``contact.tabulated.curves_cache_dir()`` so that ``law="tabulated"`` then finds them too.
@@ -40,6 +41,13 @@ from impactlab.contact.tabulated import Tabulated, curves_cache_dir, select_curv
 from impactlab.fe.curves import HARDENED_DIR, load_case, load_cases
 from impactlab.fe.problem import largest_delta_max
 from impactlab.fe.run import indent
+from impactlab.fe.tabulated_options import (
+    RECORD_KEY,
+    file_record,
+    mismatches,
+    run_options,
+    stored_curves,
+)
 from impactlab.materials import ContactPair
 
 #: The maxima of new FE runs, in multiples of delta_c: where delta_r starts (1.5, 2) and about
@@ -185,13 +193,15 @@ def curves_file_name(
     return f"{slug}-{hashlib.sha256(blob).hexdigest()[:12]}"
 
 
-def _check_maxima(pair: ContactPair, radius: float, maxima: Sequence[float], dc: float) -> None:
-    """ValueError naming ``maxima_over_delta_c`` when its largest multiple of delta_c is more
-    than the sphere of ``radius`` [m] allows (a soft flat: delta_c is large)."""
+def _check_maxima(
+    pair: ContactPair, radius: float, maxima: Sequence[float], dc: float, default: bool
+) -> None:
+    """ValueError naming ``maxima_over_delta_c`` (``default``: not given) when its largest
+    multiple of delta_c is more than the sphere of ``radius`` [m] allows (a soft flat:
+    delta_c is large)."""
     largest = largest_delta_max(radius)
     too_far = [m for m in maxima if m * dc >= largest]
     if too_far:
-        default = tuple(maxima) == RUN_MAXIMA_OVER_DELTA_C
         keep = [m for m in maxima if m * dc < largest]
         raise ValueError(
             f"maxima_over_delta_c{' (the default)' if default else ''} asks for "
@@ -202,38 +212,67 @@ def _check_maxima(pair: ContactPair, radius: float, maxima: Sequence[float], dc:
         )
 
 
+def _stored_law(
+    pair: ContactPair, radius: float, asked: dict[str, Any], given: set[str], reach: float | None
+) -> tuple[ContactModel | None, str]:
+    """The law of ``pair`` from the stored curves whose options match the ``asked`` ones
+    (``tabulated_options.mismatches``), or None and why none serves (ValueError of
+    ``select_curves`` when no stored curves fit the pair at all)."""
+    stored = stored_curves()
+    fits = [c for c, o in stored if not mismatches(o, asked, given, reach)]
+    try:
+        return Tabulated(select_curves(pair, fits)).build(pair, radius), ""
+    except ValueError:
+        near = select_curves(pair, [c for c, _ in stored])  # none for the pair: its message
+    options = next(o for c, o in stored if c is near)
+    return None, (
+        f"the stored curves that fit the pair ({near.name!r}) do not match the options "
+        f"asked: {'; '.join(mismatches(options, asked, given, reach))}"
+    )
+
+
 def tabulated_law(
     pair: ContactPair,
     radius: float,
     *,
     run_fe: bool = True,
-    maxima_over_delta_c: Sequence[float] = RUN_MAXIMA_OVER_DELTA_C,
+    maxima_over_delta_c: Sequence[float] | None = None,
     runner: Callable[..., Sequence[_Run]] = indent,
     **indent_kwargs: Any,
 ) -> ContactModel:
     """The tabulated law for ``pair`` and a sphere of ``radius`` [m].
 
     From the shipped or cached FE curves when one matches the pair (``contact.tabulated``'s
-    tolerances, the same body yielding); otherwise, with ``run_fe``, from new ``indent`` runs
-    of the pair (an elastic-plastic sphere, frictionless; ``indent_kwargs`` go to ``indent``;
-    the curves labelled with the body that yields in them, ``yielding_body``) loaded to
-    ``maxima_over_delta_c`` times delta_c, whose curves are stored in the curves cache (a
-    file per pair and inputs: ``curves_file_name``). Needs CalculiX ``ccx`` for the runs
-    (RuntimeError with how to install it otherwise); ValueError, before any run, when a
-    maximum is too large for the radius (a soft flat's delta_c is large: pass smaller
-    ``maxima_over_delta_c``), or when ``sphere`` or ``flat_hardening`` would make the other
-    body yield than in the pair. The model's ``source`` names the curves used.
+    tolerances, the same body yielding) and every option asked (``fe.tabulated_options``:
+    ``flat_hardening``, ``sphere_hardening``, ``mu`` and ``mesh_level``, given or their
+    defaults; ``sphere`` and the reach of ``maxima_over_delta_c`` where given); otherwise,
+    with ``run_fe``, from new ``indent`` runs of the pair (default: an elastic-plastic
+    sphere, frictionless; ``indent_kwargs`` go to ``indent``; the curves labelled with the
+    body that yields in them, ``yielding_body``) loaded to ``maxima_over_delta_c`` times
+    delta_c (default ``RUN_MAXIMA_OVER_DELTA_C``), whose curves and options are stored in the
+    curves cache (a file per pair and inputs: ``curves_file_name``). Without ``run_fe``,
+    ValueError naming each option the stored curves of the pair do not match. Needs
+    CalculiX ``ccx`` for the runs (RuntimeError with how to install it otherwise);
+    ValueError, before any run, when a maximum is too large for the radius (a soft flat's
+    delta_c is large: pass smaller ``maxima_over_delta_c``), or when ``sphere`` or
+    ``flat_hardening`` would make the other body yield than in the pair. The model's
+    ``source`` names the curves used.
     """
-    law = Tabulated()
+    maxima = RUN_MAXIMA_OVER_DELTA_C if maxima_over_delta_c is None else maxima_over_delta_c
+    reach = None if maxima_over_delta_c is None else max(float(m) for m in maxima)
+    dc, _ = jg_critical(pair.E_star, radius, pair.yield_strength, pair.nu)
+    asked = run_options(pair, radius, indent_kwargs, dc)
     try:
-        select_curves(pair, law.candidates())
+        law, why = _stored_law(pair, radius, asked, set(indent_kwargs), reach)
     except ValueError:
         if not run_fe:
             raise
-    else:
-        return law.build(pair, radius)
-    dc, _ = jg_critical(pair.E_star, radius, pair.yield_strength, pair.nu)
-    _check_maxima(pair, radius, maxima_over_delta_c, dc)
+        law, why = None, ""
+    if law is not None:
+        return law
+    if not run_fe:
+        raise ValueError(f"{why}; run_fe=True makes curves with these options (FE runs: CalculiX)")
+    _check_maxima(pair, radius, maxima, dc, maxima_over_delta_c is None)
     sphere = indent_kwargs.get("sphere", "elastic-plastic")
     side = _fe_yielding(pair, sphere, indent_kwargs.get("flat_hardening"))
     if side != yielding_body(pair):  # curves that would not fit the pair: minutes for nothing
@@ -244,23 +283,19 @@ def tabulated_law(
             "sphere='elastic-plastic' and the flat plastic, so that the FE models the pair"
         )
     runs = runner(
-        pair.flat,
-        pair.body,
-        radius=radius,
-        delta_max=[m * dc for m in maxima_over_delta_c],
-        **indent_kwargs,
+        pair.flat, pair.body, radius=radius, delta_max=[m * dc for m in maxima], **indent_kwargs
     )
-    name = curves_file_name(pair, radius, maxima_over_delta_c, indent_kwargs)
+    name = curves_file_name(pair, radius, maxima, indent_kwargs)
     source = (
         f"FE runs of impactlab.fe.indent: {pair.body.name} sphere on {pair.flat.name}, "
-        f"R = {radius:g} m, maxima {', '.join(f'{m:g}' for m in maxima_over_delta_c)} delta_c"
+        f"R = {radius:g} m, maxima {', '.join(f'{m:g}' for m in maxima)} delta_c"
     )
     curves = curves_from_runs(runs, pair, radius, name, source, side)
     folder = curves_cache_dir()
     folder.mkdir(parents=True, exist_ok=True)
-    text = json.dumps(curves_file_record([curves]), indent=1)
+    record = {**curves_file_record([curves]), RECORD_KEY: file_record(asked, maxima)}
     tmp = folder / f".{name}.json.{os.getpid()}.tmp"  # whole, then renamed over a damaged one
-    tmp.write_text(text)
+    tmp.write_text(json.dumps(record, indent=1))
     os.replace(tmp, folder / f"{name}.json")
     return Tabulated(curves).build(pair, radius)
 
