@@ -51,18 +51,37 @@ SAME_WORKER = {
     "tests/docs/test_browser.py": "docs site",
 }
 
+#: The same for whole folders: folder (with its trailing slash) -> the name of the group.
+SAME_WORKER_FOLDERS = {
+    # the synthetic drops and dents and the analysed example (tests/experiment/conftest.py)
+    "tests/experiment/": "experiment data",
+    # ``reproduce`` with its simulations (tests/paper/conftest.py: ``full_reproduction``)
+    "tests/paper/": "paper reproduction",
+}
+
+
+def same_worker_group(path: str) -> str:
+    """The group that the test file ``path`` (relative to the root, '/'-separated) runs in:
+    its ``SAME_WORKER`` or ``SAME_WORKER_FOLDERS`` group, else the file itself."""
+    if path in SAME_WORKER:
+        return SAME_WORKER[path]
+    for folder, group in SAME_WORKER_FOLDERS.items():
+        if path.startswith(folder):
+            return group
+    return path
+
 
 @pytest.hookimpl(optionalhook=True)
 def pytest_xdist_make_scheduler(config: pytest.Config, log: Any) -> Any:
-    """``--dist loadfile`` with the files of ``SAME_WORKER`` grouped; other modes as xdist's."""
+    """``--dist loadfile`` with the files of ``SAME_WORKER`` and ``SAME_WORKER_FOLDERS``
+    grouped; other modes as xdist's."""
     if config.getvalue("dist") != "loadfile":
         return None
     from xdist.scheduler import LoadFileScheduling
 
     class SharedFixtureFileScheduling(LoadFileScheduling):
         def _split_scope(self, nodeid: str) -> str:
-            path = super()._split_scope(nodeid)
-            return SAME_WORKER.get(path, path)
+            return same_worker_group(super()._split_scope(nodeid))
 
     return SharedFixtureFileScheduling(config, log)
 

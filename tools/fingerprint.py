@@ -170,14 +170,18 @@ def simulate_digests() -> dict[str, str]:
 
 
 def _numbers(r: object) -> np.ndarray:
-    """The float fields of a result (an ImpactResult or a DropResult), in name order (a
+    """The public float fields of a result (an ImpactResult or a DropResult), in name order (a
     drop's renamed totals in the order of their names before 0.3, so digests compare across
     the renaming: ``impactlab.schema.RENAMED_DROP_FIELDS``)."""
     from impactlab.schema import RENAMED_DROP_FIELDS
 
     before = {new: old for old, new in RENAMED_DROP_FIELDS.items()}
     names = sorted(
-        (k for k, v in vars(r).items() if isinstance(v, float | int) and k != "status"),
+        (
+            k
+            for k, v in vars(r).items()
+            if isinstance(v, float | int) and k != "status" and not k.startswith("_")
+        ),
         key=lambda k: before.get(k, k),
     )
     return np.array([float(getattr(r, k)) for k in names], dtype=float)

@@ -6,6 +6,7 @@ import json
 import re
 import shutil
 import sys
+from pathlib import Path
 
 import pandas as pd
 import pytest
@@ -146,6 +147,19 @@ def test_rerun_into_previous_reproduction_keeps_other_files(analytic_run):
     res = R.reproduce(out, simulate=False)
     assert (out / "my_notes.txt").read_text() == "mine"
     assert res.report_md.is_file()
+
+
+def test_the_files_that_share_the_full_run_are_run_by_one_worker(request) -> None:
+    """``pytest -n N --dist loadfile`` hands each group of files to one worker: every test file
+    of this folder is in one group, so the package's ``full_reproduction`` (``reproduce`` with
+    the simulations) is computed once per test run, not once per worker."""
+    root = Path(__file__).resolve().parents[2]
+    conftest = request.config.pluginmanager.get_plugin(str(root / "conftest.py"))
+    groups = {
+        conftest.same_worker_group(p.relative_to(root).as_posix())
+        for p in Path(__file__).parent.glob("test_*.py")
+    }
+    assert groups == {"paper reproduction"}
 
 
 @pytest.fixture(scope="module")

@@ -214,3 +214,28 @@ def kill_study(seed: int = 5) -> Study:
             size=300, seed=seed, inputs={"vy": Normal(-1.41, 0.05), "mu": Uniform(0.1, 0.3)}
         ),
     )
+
+
+def run_kill_study(
+    log: str, env: dict[str, str], seed: int, store: str, pid_dir: str, backend: str, restart: bool
+) -> None:
+    """The body of a kill test's child process: ``run_sweep`` of ``kill_study(seed)`` into
+    ``store`` (2 workers of ``backend``; the evaluator leaves its process ids in ``pid_dir``),
+    with ``env`` added to the environment (the kill hook's variables) and stderr written to the
+    file ``log``. Run in a process forked from a server that imported this module and the sweep
+    package once (``multiprocessing``'s forkserver): no child pays the package import (2-3 s)."""
+    import signal
+
+    from impactlab.sweep import run_sweep
+
+    # as an interactive command: Ctrl-C raises KeyboardInterrupt (a process started from a
+    # non-interactive background job inherits SIGINT ignored)
+    signal.signal(signal.SIGINT, signal.default_int_handler)
+    fd = os.open(log, os.O_WRONLY | os.O_CREAT | os.O_TRUNC)
+    os.dup2(fd, 2)
+    os.close(fd)
+    os.environ.update(env)
+    evaluator = FakeEvaluator(pid_dir=pid_dir)
+    run_sweep(
+        kill_study(seed), store, evaluator=evaluator, backend=backend, workers=2, restart=restart
+    )

@@ -1,22 +1,20 @@
 """A sweep killed at any moment, store creation included, resumes to the store of an
 uninterrupted run; a killed sweep leaves no worker processes behind.
 
-The sweep runs in a subprocess that kills itself at a named stage (the test hook
+The sweep runs in a child process that kills itself at a named stage (the test hook
 ``impactlab.sweep.hooks``: ``IMPACTLAB_SWEEP_KILL_AT``), so every kill happens at an exact,
 chosen point and no test depends on timing.
 """
 
 from __future__ import annotations
 
+import multiprocessing
 import os
 import signal
-import subprocess
-import sys
-import textwrap
 from pathlib import Path
 
 import pytest
-from sweep_fakes import FakeEvaluator, kill_study, store_files, wait_for
+from sweep_fakes import FakeEvaluator, kill_study, run_kill_study, store_files, wait_for
 
 from impactlab.sweep import SweepStore, run_sweep
 from impactlab.sweep.hooks import KILL_AT, KILL_SIGNAL
@@ -24,20 +22,11 @@ from impactlab.sweep.locking import pid_alive
 
 pytestmark = pytest.mark.slow  # end to end: sweeps in child processes, killed and resumed
 
-HERE = Path(__file__).resolve().parent
-
-_SCRIPT = textwrap.dedent("""
-    import signal
-    import sys
-    # a process started from a non-interactive background job inherits SIGINT ignored (and
-    # Python then installs no KeyboardInterrupt handler): restore the interactive default
-    signal.signal(signal.SIGINT, signal.default_int_handler)
-    sys.path.insert(0, {here!r})
-    from sweep_fakes import FakeEvaluator, kill_study
-    from impactlab.sweep import run_sweep
-    run_sweep(kill_study({seed}), {store!r}, evaluator=FakeEvaluator(pid_dir={pids!r}),
-              backend={backend!r}, workers=2, restart={restart!r})
-""")
+#: Children forked from a server that imported the sweep package once (a fresh interpreter per
+#: kill would import it again, 2-3 s each); each child is still a process of its own, killed
+#: by the hook's real signal.
+_CTX = multiprocessing.get_context("forkserver")
+_CTX.set_forkserver_preload(["sweep_fakes", "impactlab.sweep"])
 
 
 def run_killed(
@@ -50,24 +39,21 @@ def run_killed(
     restart: bool = False,
     pids: Path | None = None,
 ) -> tuple[int, bytes, int]:
-    """Run the kill study into ``store`` in a subprocess that sends itself ``sig`` at ``stage``;
-    returns its exit status, its stderr and its process id."""
+    """Run the kill study into ``store`` in a child process that sends itself ``sig`` at
+    ``stage``; returns its exit status (-signal number when killed), its stderr and its
+    process id."""
     pid_dir = pids or store.parent / "pids"
     pid_dir.mkdir(exist_ok=True)
-    script = _SCRIPT.format(
-        here=str(HERE),
-        seed=seed,
-        store=str(store),
-        pids=str(pid_dir),
-        backend=backend,
-        restart=restart,
-    )
-    env = {**os.environ, KILL_AT: stage, KILL_SIGNAL: sig}
+    env = {KILL_AT: stage, KILL_SIGNAL: sig}
     log = store.parent / f"{stage.replace(':', '-')}.log"
-    with log.open("wb") as fh:  # a file, not a pipe: leftover processes cannot hold it open
-        proc = subprocess.Popen([sys.executable, "-c", script], env=env, stderr=fh)
-        proc.wait(timeout=600)
-    return proc.returncode, log.read_bytes(), proc.pid
+    # stderr into a file, not a pipe: leftover processes cannot hold it open
+    args = (str(log), env, seed, str(store), str(pid_dir), backend, restart)
+    proc = _CTX.Process(target=run_kill_study, args=args)
+    proc.start()
+    proc.join(timeout=600)
+    assert proc.exitcode is not None, "the killed sweep still runs after 600 s"
+    assert proc.pid is not None
+    return proc.exitcode, log.read_bytes(), proc.pid
 
 
 @pytest.fixture(scope="module")

@@ -53,7 +53,7 @@ def chain_warnings(
     last three added to the model's own warnings too), as ``"model: text"``."""
     out = []
     laws = {c.name: c.law for c in cands}
-    rates = {c.name: c.rate for c in cands}
+    rate_laws = {c.name: c.rate for c in cands}
     for name, post in posteriors.items():
         edges = [
             note
@@ -61,7 +61,7 @@ def chain_warnings(
             if usage[name][j]
             and (
                 (note := edge_note(p, post.samples[:, j])) is not None
-                or (note := fitted_range_note(p, post.samples[:, j], rates[name])) is not None
+                or (note := fitted_range_note(p, post.samples[:, j], rate_laws[name])) is not None
             )
         ]
         for note in (

@@ -77,7 +77,8 @@ _Store = Annotated[Path, typer.Argument(help="A sweep's Zarr store.")]
 sweep_app = typer.Typer(
     cls=DefaultRun,
     help="Grids and Monte Carlo studies of many impacts into a resumable Zarr store "
-    "(impactlab sweep STUDY.toml; see docs/sweep.md).",
+    "(impactlab sweep STUDY.toml; see docs/sweep.md).\n\n"
+    "Example: impactlab sweep examples/study-regime-map.toml --out map.zarr",
     no_args_is_help=True,
 )
 
@@ -211,7 +212,10 @@ def info_cmd(
     store: _Store,
     as_json: _Json = False,
 ) -> None:
-    """Progress and contents of a store (chunks done, status counts, each law's range)."""
+    """Progress and contents of a store (chunks done, status counts, each law's range).
+
+    Example: impactlab sweep info map.zarr
+    """
     from impactlab.sweep import store_info
 
     path = existing_store(store)
@@ -226,7 +230,10 @@ def plot_cmd(
 ) -> None:
     """Regime map (with mu_c on angle x mu), maps of e, delta_p, L_s, T over the swept inputs
     (angle, mu, velocities; sphere studies too), histograms of samples; names what it cannot
-    draw and why."""
+    draw and why.
+
+    Example: impactlab sweep plot map.zarr --out plots/
+    """
     from impactlab.experiment.checks import output_folder
     from impactlab.sweep import open_sweep, plot_sweep
 
@@ -268,7 +275,10 @@ def export_cmd(
         Path, typer.Argument(help="File to write: .csv (a table, units in the header), .nc/.nc4.")
     ],
 ) -> None:
-    """Export a store to a CSV table (.csv: one row per case) or NetCDF-4 (.nc, .nc4)."""
+    """Export a store to a CSV table (.csv: one row per case) or NetCDF-4 (.nc, .nc4).
+
+    Example: impactlab sweep export map.zarr map.csv
+    """
     from impactlab.sweep import export_file, open_sweep
 
     if not target.is_dir():  # a folder: output_file says so

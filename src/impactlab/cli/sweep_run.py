@@ -67,6 +67,14 @@ def run_study(study_path: Path, where: Where, quiet: bool, restart: bool) -> Swe
                 "answers or without --scheduler)"
             ) from None
         raise
+    except KeyboardInterrupt as exc:  # SIGTERM (kill PID): Ctrl-C's line, then status 143
+        from impactlab.sweep.termination import TERMINATED_EXIT, terminated
+
+        if not terminated(exc):
+            raise
+        if not getattr(exc, "said", False):
+            print(exc.args[0] if exc.args else "terminated", file=sys.stderr, flush=True)
+        raise typer.Exit(TERMINATED_EXIT) from None
     except backends.NoWorkersError as exc:  # one line, as docs/sweep.md says
         raise UserError(str(exc)) from None
     except backends.WorkerLostError as exc:  # one line, as an interrupt's; not the user's input: 1

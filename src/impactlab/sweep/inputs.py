@@ -167,9 +167,22 @@ _STUDY_SPELLING = {
 }
 
 
+#: Options of a single drop or impact that a study cannot take, and why (with what to do).
+_NOT_IN_A_STUDY = {
+    "rate": "a study takes no rate-dependent flat: its self-consistent rate factor is iterated "
+    "drop by drop, each case to its own, while a sweep runs a chunk's cases in one compiled "
+    "call (simulate_drops refuses it for the same reason); run impactlab.simulate_drop(body, "
+    "flat, rate=..., ...) for each case instead (a Rod or a FlexibleRod; impactlab drop --rate "
+    "on the command line), or sweep without it (a rate-independent flat)",
+}
+
+
 def unknown_input(name: object) -> str:
     """``"unknown input 'velocity': a study takes ...; known inputs: angle, vx, ..."``: what
-    to write instead where ``simulate`` spells it otherwise, and the known names."""
+    to write instead where ``simulate`` spells it otherwise, and the known names; for an
+    option no study takes (``rate``), why and what to do instead."""
+    if isinstance(name, str) and name in _NOT_IN_A_STUDY:
+        return f"input {name!r} cannot be swept: {_NOT_IN_A_STUDY[name]}"
     hint = _STUDY_SPELLING.get(name) if isinstance(name, str) else None
     return f"unknown input {name!r}{': ' + hint if hint else ''}; known inputs: {', '.join(INPUTS)}"
 

@@ -24,6 +24,8 @@ from typing import Any
 
 import zarr
 
+from impactlab.sweep.node_meta import mismatch, root_attrs_problem
+
 #: How many damaged chunks an error message names before "and N more".
 _NAMED = 5
 
@@ -38,12 +40,13 @@ class CorruptStoreError(ValueError):
 
 
 class RepairableStoreError(CorruptStoreError):
-    """Metadata that a resume of the same study rewrites: arrays whose ``zarr.json`` is gone or
-    unreadable (``missing_arrays``: a kept output, ``status``, or an array the store was built
-    with, named in the root's consolidated metadata: a coordinate, an input, the ``.sweep``
-    group; their metadata follows from the study), a ``.sweep/study.json``
-    that is not a JSON object (``study_record``: what is wrong with it, or None), or the root's
-    ``zarr.json`` (``root``: what is wrong with it, or None; rewritten from the study record and
+    """Metadata that a resume of the same study rewrites: arrays whose ``zarr.json`` is gone,
+    unreadable or no longer matches the study (``node_meta.mismatch``) (``missing_arrays``: a
+    kept output, ``status``, or an array the store was built with, named in the root's
+    consolidated metadata: a coordinate, an input, the ``.sweep`` group; their metadata follows
+    from the study), a ``.sweep/study.json`` that is not a JSON object (``study_record``: what
+    is wrong with it, or None), or the root's ``zarr.json``, also one without the study's
+    attributes (``root``: what is wrong with it, or None; rewritten from the study record and
     the engine identity kept in ``.sweep/zarr.json``). The intact chunks are kept; those whose
     files are gone are computed again."""
 
@@ -139,6 +142,12 @@ def _read_json(f: Path) -> tuple[object, str | None]:
         return None, f"is not valid JSON ({what} at line {exc.lineno}, column {exc.colno})"
 
 
+def _json_object(f: Path) -> dict[str, Any]:
+    """The JSON object of the file ``f`` ({} where it is not one)."""
+    value = _read_json(f)[0]
+    return value if isinstance(value, dict) else {}
+
+
 def _node_problem(f: Path) -> str | None:
     """What is wrong with the Zarr metadata file ``f``, or None when Zarr reads it."""
     meta, problem = _read_json(f)
@@ -198,12 +207,13 @@ def _corrupt(root: Path, node: Path, why: str) -> CorruptStoreError:
     )
 
 
-def _built_nodes(root: Path) -> set[str]:
-    """The nodes the store at ``root`` was built with: the names its root ``zarr.json``
-    (already checked) lists in its consolidated metadata (none without it)."""
+def _built_nodes(root: Path) -> dict[str, Any]:
+    """The nodes the store at ``root`` was built with: their names and metadata as its root
+    ``zarr.json`` (already checked) lists them in its consolidated metadata (none without it)."""
     meta = json.loads((root / "zarr.json").read_bytes()).get("consolidated_metadata")
     nodes = meta.get("metadata") if isinstance(meta, dict) else None
-    return {str(k) for k in nodes if "/" not in str(k)} if isinstance(nodes, dict) else set()
+    items = nodes.items() if isinstance(nodes, dict) else ()
+    return {str(k): v for k, v in items if "/" not in str(k)}
 
 
 def _array_problem(name: str, why: str, results: tuple[str, ...]) -> str:
@@ -221,12 +231,15 @@ def check_metadata(path: str | Path) -> None:
     """CorruptStoreError unless the root and every sub-folder (an array, ``.sweep``) of the
     store at ``path`` have a ``zarr.json`` that reads as Zarr v3 metadata (the chunks' data is
     checked by ``SweepStore.verify``). RepairableStoreError (a CorruptStoreError) when only
-    metadata that follows from the study is gone or unreadable (that of a result array, or of
-    an array or group the store was built with) or ``.sweep/study.json`` is not JSON: a resume
-    repairs those, keeping the chunks."""
+    metadata that follows from the study is gone, unreadable or no longer matches the study
+    (that of a result array, or of an array or group the store was built with: its data type,
+    shape, chunks, fill value, dimension names, ...; a root without the study's attributes) or
+    ``.sweep/study.json`` is not JSON: a resume repairs those, keeping the chunks."""
     root = Path(path)
     f = root / "zarr.json"
     why = _node_problem(f) if f.exists() else "is missing"
+    if why is None and (root / ".sweep").is_dir():  # a sweep store's root: its attributes
+        why = root_attrs_problem(_json_object(f))
     if why is not None and recorded_engine(root) is not None:
         raise RepairableStoreError(
             f"sweep store {str(root)!r} is damaged: zarr.json {why}; run the same study into it "
@@ -239,11 +252,14 @@ def check_metadata(path: str | Path) -> None:
     if why is not None:
         raise _corrupt(root, f, why)
     results = _result_arrays(root)
-    built = _built_nodes(root) if results else set()
+    built = _built_nodes(root) if results else {}
+    attrs = _json_object(root / "zarr.json").get("attributes") or {}
     damaged = {n: "is missing" for n in results if not (root / n / "zarr.json").exists()}
     for node in sorted(d for d in root.iterdir() if d.is_dir() and d.name not in damaged):
         f = node / "zarr.json"
         why = _node_problem(f) if f.exists() else "is missing"
+        if why is None and (node.name in results or node.name in built):
+            why = mismatch(node.name, _json_object(f), built.get(node.name), attrs, results)
         if why is not None and (node.name in results or node.name in built):
             damaged[node.name] = why  # follows from the study: written again by a resume
         elif why is not None:

@@ -103,7 +103,7 @@ def make_body(cat: Mapping[str, str], row: Mapping[str, float], body_mat: Materi
         if given("inertia") is not None or given("length") is not None:
             raise ValueError("a sphere takes radius and mass (or density), not length/inertia")
         return Sphere(radius=radius, mass=given("mass"), material=body_mat)
-    raise ValueError(f"unknown body {kind!r}; known: rod, sphere")
+    raise ValueError(f"unknown body {kind!r}; known: rod, sphere, flexible_rod")
 
 
 def _unique_rows(cols: Sequence[np.ndarray]) -> tuple[np.ndarray, np.ndarray]:

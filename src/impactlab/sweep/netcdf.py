@@ -8,14 +8,14 @@ part at a time: their memory does not grow with the number of cases."""
 from __future__ import annotations
 
 import json
-import os
-from collections.abc import Callable, Mapping
+from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 import xarray as xr
 
+from impactlab.sweep.filewrite import library_write_error, write_atomic
 from impactlab.sweep.inputs import INPUTS
 from impactlab.sweep.slabs import slabs, store_chunks
 
@@ -136,13 +136,14 @@ def export_netcdf(ds: xr.Dataset, path: str | Path) -> Path:
     data = {str(k): plain(v.variable) for k, v in ds.data_vars.items()}
     plain_ds = xr.Dataset(data, coords=coords, attrs=attrs(ds.attrs))
     encoding = _nc_encoding(plain_ds, _case_dims(ds), store_chunks(ds))
-    _atomic(out, lambda tmp: _write_netcdf(plain_ds, tmp, encoding))
+    write_atomic(out, lambda tmp: _write_netcdf(plain_ds, tmp, encoding))
     return out
 
 
 def _write_netcdf(ds: xr.Dataset, path: Path, encoding: dict[str, dict[str, Any]]) -> None:
     """``ds.to_netcdf`` with a chunk cache of :data:`NETCDF_CHUNK_CACHE_BYTES` per array (the
-    setting is the library's, restored after)."""
+    setting is the library's, restored after); the library's failure to write (a full disk)
+    as an OSError (:func:`~impactlab.sweep.filewrite.library_write_error`)."""
     try:
         import netCDF4
     except ImportError:  # xarray says what is missing
@@ -152,6 +153,10 @@ def _write_netcdf(ds: xr.Dataset, path: Path, encoding: dict[str, dict[str, Any]
     netCDF4.set_chunk_cache(NETCDF_CHUNK_CACHE_BYTES, slots, preemption)
     try:
         ds.to_netcdf(path, engine="netcdf4", encoding=encoding)
+    except RuntimeError as exc:  # "NetCDF: HDF error" (a full disk): no errno of its own
+        if not str(exc).startswith("NetCDF:"):
+            raise
+        raise library_write_error(exc, path, "the NetCDF library") from exc
     finally:
         netCDF4.set_chunk_cache(size, slots, preemption)
 
@@ -200,24 +205,13 @@ def export_csv(ds: xr.Dataset, path: str | Path) -> Path:
                 table.columns = [_header(c, ds[c].attrs.get("units")) for c in names]
                 table.to_csv(fh, index=False, header=i == 0)
 
-    _atomic(out, write)
+    write_atomic(out, write)
     return out
 
 
 def _case_dims(ds: xr.Dataset) -> list[str]:
     """The dimensions of the case array (``status``'s; the Dataset's without one)."""
     return [str(d) for d in (ds["status"].dims if "status" in ds else ds.dims)]
-
-
-def _atomic(out: Path, write: Callable[[Path], None]) -> None:
-    """``write`` a temporary file beside ``out``, then put it in place (none left on error)."""
-    tmp = out.with_name(f".{out.name}.{os.getpid()}.partial")
-    try:
-        write(tmp)
-        os.replace(tmp, out)
-    except BaseException:
-        tmp.unlink(missing_ok=True)
-        raise
 
 
 def _columns(dims: list[str], outputs: Any, present: list[str]) -> list[str]:

@@ -132,9 +132,22 @@ def where(full: Any, sub: Any) -> str:
     return ", ".join(parts)
 
 
+#: Characters of a panel title per inch of its panel's width (matplotlib's "medium" size).
+TITLE_CHARS_PER_INCH = 11
+
+
 def title(ax: Any, what: str, full: Any, sub: Any) -> None:
-    at = where(full, sub)
-    ax.set_title(f"{what}\n{at}" if at else what, fontsize="medium")
+    """``what`` over the slice ``sub`` of ``full`` is (``where``), its ``name = value`` items
+    broken into lines as wide as the panel, so that the titles of facets never overlap."""
+    fig = ax.figure
+    width = ax.get_position().width * fig.get_figwidth() * TITLE_CHARS_PER_INCH
+    lines: list[str] = []
+    for item in where(full, sub).split(", ") if where(full, sub) else []:
+        if lines and len(lines[-1]) + 2 + len(item) <= max(width, 20):
+            lines[-1] += f", {item}"
+        else:
+            lines.append(item)
+    ax.set_title("\n".join([what, *lines]), fontsize="medium")
 
 
 def _free_dims(ds: Any, keep: Sequence[str], sel: Mapping[str, Any] | None) -> list[str]:

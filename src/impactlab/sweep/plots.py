@@ -150,8 +150,7 @@ def _regime_panel(
     if bad.any():
         iy, ix = np.nonzero(bad)
         ax.plot(xv[ix], yv[iy], "kx", ms=5)
-    ax.set_xlim(xv.min(), xv.max())
-    ax.set_ylim(yv.min(), yv.max())
+    data_limits(ax, xv, yv)
     ax.set_xlabel(xl)
     ax.set_ylabel(yl)
     title(ax, "friction regime" + _flag_note(int(bad.sum())), ds, sub)
@@ -203,6 +202,15 @@ def _category_line(ds: Any, out: str, x: str, sel: Mapping[str, Any], ax: Any) -
     empty_panel(ax, ds, sub, out, np.where(codes >= 0, codes, np.nan))
 
 
+def data_limits(ax: Any, xv: np.ndarray, yv: np.ndarray) -> None:
+    """The map's axes end at the grid's first and last values (an axis of one value keeps
+    matplotlib's limits)."""
+    if xv.min() < xv.max():
+        ax.set_xlim(xv.min(), xv.max())
+    if yv.min() < yv.max():
+        ax.set_ylim(yv.min(), yv.max())
+
+
 def _flagged(sub: Any) -> np.ndarray:
     """True where a computed case carries a flag that says it is not plain success (energy
     gain, gravity-dominated, the other end, beyond the tip; the advisory LAW_EXTRAPOLATED
@@ -251,6 +259,7 @@ def _output_panel(
         yv = np.asarray(sub[y].values, dtype=float) * ys
         mesh = ax.pcolormesh(xv, yv, vals * vs, shading="nearest")
         ax.figure.colorbar(mesh, ax=ax, label=vlabel)
+        data_limits(ax, xv, yv)  # "nearest" cells reach half a step beyond: not past 90 deg
         if bad.any():
             iy, ix = np.nonzero(bad)
             ax.plot(xv[ix], yv[iy], "kx", ms=5)

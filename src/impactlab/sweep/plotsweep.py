@@ -23,6 +23,7 @@ import numpy as np
 
 from impactlab._mpl import pyplot
 from impactlab.sweep.dimensions import SAMPLE_DIM
+from impactlab.sweep.filewrite import write_atomic
 from impactlab.sweep.inputs import OUTPUT_ALIASES
 from impactlab.sweep.plotgrid import EmptyPanel, SliceWarning, select, where
 from impactlab.sweep.plots import (
@@ -162,8 +163,11 @@ def plot_sweep(
             before = len(caught)
             fig = np.ravel(draw())[0].figure
             path = out / name
-            fig.savefig(path, dpi=120, bbox_inches="tight")
-            plt.close(fig)
+            save = partial(fig.savefig, dpi=120, bbox_inches="tight", format="png")
+            try:  # under a temporary name, then renamed: no half-written PNG on a full disk
+                write_atomic(path, save)
+            finally:
+                plt.close(fig)
             files.append(path)
             empty += _empty_notes(name, [w for w in caught[before:] if w.category is EmptyPanel])
     for note in dict.fromkeys(str(w.message) for w in caught if w.category is SliceWarning):

@@ -61,6 +61,7 @@ from impactlab.sweep.study import Study, load_study
 from impactlab.sweep.study_meta import category_values, store_meta
 from impactlab.sweep.study_record import with_recorded_laws
 from impactlab.sweep.summary import not_ok_text, result_counts
+from impactlab.sweep.termination import sigterm_as_interrupt, terminated
 
 
 class FlaggedCasesWarning(UserWarning):
@@ -69,12 +70,17 @@ class FlaggedCasesWarning(UserWarning):
 
 
 class SweepInterrupted(KeyboardInterrupt):
-    """The sweep stopped early (Ctrl-C); the finished chunks are stored. ``args[0]``: the line
-    that says how many; ``said``: whether it was printed already (not when quiet)."""
+    """The sweep stopped early (Ctrl-C, or SIGTERM: ``terminated``); the finished chunks are
+    stored. ``args[0]``: the line that says how many; ``said``: whether it was printed already
+    (not when quiet)."""
 
-    def __init__(self, message: str = "interrupted", said: bool = False) -> None:
+    def __init__(
+        self, message: str = "interrupted", said: bool = False, terminated: bool = False
+    ) -> None:
         super().__init__(message)
         self.said = said
+        #: stopped by SIGTERM, not Ctrl-C (``sweep.termination``: the command exits 143)
+        self.terminated = terminated
 
 
 def _note(msg: str, quiet: bool) -> None:
@@ -178,33 +184,34 @@ def run_sweep(
             f"report in [uncertainty] outputs"
         )
     sstore = SweepStore(path)
-    try:
+    with sigterm_as_interrupt():  # kill PID: as Ctrl-C (the lock released, a line)
         try:
-            done = sstore.prepare(st, meta, restart=restart)
-        except OSError as exc:
-            if exc.errno not in WRITE_ERRORS:
-                raise
-            done_now = len(sstore.done_chunks()) if sstore.exists() else None
-            raise write_error(exc, path, done_now, st.layout.n_chunks) from exc
-        damaged = sstore.verify(done)
-        if damaged:
-            _note(f"{path}: damaged, computing again: {describe(damaged)}", quiet)
-            sstore.discard(damaged)
-        stats = SweepStats(
-            n_chunks=st.layout.n_chunks,
-            n_cases=st.layout.n_cases,
-            chunks_before=len(done) - len(damaged),
-            backend=be.name,
-            workers=be.workers,
-            chunks_repaired=len(damaged),
-        )
-        intact = done - set(damaged)
-        res = _run_store(
-            st, ev, _stored_meta(sstore, meta), sstore, intact, be, stats, quiet, progress
-        )
-        stats.status, stats.flagged = result_counts(path)  # the store's, after the run
-    finally:
-        sstore.release()
+            try:
+                done = sstore.prepare(st, meta, restart=restart)
+            except OSError as exc:
+                if exc.errno not in WRITE_ERRORS:
+                    raise
+                done_now = len(sstore.done_chunks()) if sstore.exists() else None
+                raise write_error(exc, path, done_now, st.layout.n_chunks) from exc
+            damaged = sstore.verify(done)
+            if damaged:
+                _note(f"{path}: damaged, computing again: {describe(damaged)}", quiet)
+                sstore.discard(damaged)
+            stats = SweepStats(
+                n_chunks=st.layout.n_chunks,
+                n_cases=st.layout.n_cases,
+                chunks_before=len(done) - len(damaged),
+                backend=be.name,
+                workers=be.workers,
+                chunks_repaired=len(damaged),
+            )
+            intact = done - set(damaged)
+            res = _run_store(
+                st, ev, _stored_meta(sstore, meta), sstore, intact, be, stats, quiet, progress
+            )
+            stats.status, stats.flagged = result_counts(path)  # the store's, after the run
+        finally:
+            sstore.release()
     if stats.not_ok:
         warnings.warn(
             FlaggedCasesWarning(
@@ -283,7 +290,7 @@ def _run_store(
                 stats.workers = run_dask(
                     job, be.scheduler, be.client, be.max_in_flight, be.worker_timeout
                 )
-    except KeyboardInterrupt:
+    except KeyboardInterrupt as exc:
         stats.wall_s = time.perf_counter() - t0
         n_done = len(sstore.done_chunks())
         line = (
@@ -291,7 +298,7 @@ def _run_store(
             f"command again to continue"
         )
         _note(line, quiet)
-        raise SweepInterrupted(line, said=not quiet) from None
+        raise SweepInterrupted(line, said=not quiet, terminated=terminated(exc)) from None
     finally:
         writer.close()
     stats.wall_s = time.perf_counter() - t0
