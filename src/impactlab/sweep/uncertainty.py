@@ -27,7 +27,6 @@ from typing import Any
 
 import numpy as np
 import pandas as pd
-from scipy import stats
 
 from impactlab.flags import ADVISORY_FLAGS, FLAG_LAW_EXTRAPOLATED, invalidating_names
 from impactlab.sweep.dimensions import SAMPLE_DIM
@@ -269,6 +268,8 @@ def _sensitivity(
     coef, *_ = np.linalg.lstsq(Z, zy, rcond=None)
     resid = zy - Z @ coef
     r2 = float(1.0 - resid @ resid / (zy @ zy))
+    from scipy import stats  # here: scipy.stats costs about 0.5 s at `import impactlab.sweep`
+
     ry = stats.rankdata(y)
     ry = (ry - ry.mean()) / ry.std()
     for j, name in enumerate(kept):
