@@ -121,3 +121,29 @@ def test_the_command_line_lists_it_and_stays_ok(cli_main: CliMain) -> None:
     data = json.loads(out)
     assert data["ok"] is True and data["doubts"] == []
     assert [w for w in data["warnings"] if _NOTE in w]
+
+
+def test_hidden_advice_is_not_shown_but_still_listed() -> None:
+    """compliance_advice_hidden: no warning shown, the result's warnings still hold the note."""
+    from impactlab.analytic import compliance_advice_hidden
+
+    th = math.radians(10)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", ImplausibleInputWarning)
+        with compliance_advice_hidden():
+            res = invert(angle=th, v_i=-1.41, mu=0.353, **_DENT)
+    assert len(_notes(res)) == 1
+
+
+def test_the_paper_reproduction_shows_no_advice() -> None:
+    """The reproduction's inversions over inputs no drop measured (curves over e, the
+    simulations' own e) do not flood the report's command with the advice."""
+    from impactlab.paper.analytic_rows import invert_case
+    from impactlab.paper.physics import eq12_duration
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", ImplausibleInputWarning)
+        for e in (0.1, 0.3, 0.5):
+            assert eq12_duration(20, e, 22e-6, 1400e-6) > 0.0
+        x = EXPERIMENTS[20]
+        assert invert_case(x.__class__(**{**x.__dict__, "mu": 0.6})).duration > 0.0

@@ -30,6 +30,7 @@ Modules: :mod:`~impactlab.analytic.closed_forms` (K_x, K_y, alpha, mu_c, Eqs. 12
 
 from __future__ import annotations
 
+from impactlab.analytic._compliance import compliance_advice_hidden
 from impactlab.analytic.closed_forms import (
     DOI,
     G0,
@@ -52,6 +53,7 @@ __all__ = [
     "InversionResult",
     "Measured",
     "alpha",
+    "compliance_advice_hidden",
     "critical_friction",
     "friction_from_velocities",
     "impact_duration",

@@ -10,18 +10,24 @@ threshold below comes from impactlab's own simulations (docs/analytic.md, Sec. 7
 
 from __future__ import annotations
 
+import contextlib
 import math
+import re
+import warnings
+from collections.abc import Iterator
 
 import numpy as np
 
-from impactlab._validation import warn_implausible
+from impactlab._validation import ImplausibleInputWarning, warn_implausible
 
 __all__ = [
+    "COMPLIANCE_ADVICE",
     "COMPLIANCE_ANGLES",
     "COMPLIANCE_LEVEL",
     "COMPLIANCE_SPEEDS",
     "COMPLIANCE_THRESHOLD",
     "check_compliance",
+    "compliance_advice_hidden",
     "compliance_threshold",
 ]
 
@@ -68,7 +74,7 @@ def check_compliance(mu: float, mu_c: float, angle: float, speed: float) -> None
         return
     warn_implausible(
         f"mu = {mu:.4g} is {ratio:.3g} mu_c (mu_c = {mu_c:.4g} at {math.degrees(angle):.4g} "
-        "deg): a tangentially compliant contact (Mindlin's; every real contact is) sticks at "
+        f"deg): {COMPLIANCE_ADVICE} sticks at "
         "first and where its slip reverses, which Eq. 12 (Coulomb friction on a rigid contact, "
         "the tip sliding throughout) does not describe; on impactlab's simulations of such "
         f"contacts T comes out {COMPLIANCE_LEVEL:g} % or more too long, and F too small, from "
@@ -76,3 +82,18 @@ def check_compliance(mu: float, mu_c: float, angle: float, speed: float) -> None
         "(less with mu from Eq. 28, the impulse ratio, than with the contact's Coulomb "
         "coefficient); see docs/analytic.md, Sec. 7"
     )
+
+
+#: The words of ``check_compliance``'s advice that a filter names (``compliance_advice_hidden``).
+COMPLIANCE_ADVICE = "a tangentially compliant contact (Mindlin's; every real contact is)"
+
+
+@contextlib.contextmanager
+def compliance_advice_hidden() -> Iterator[None]:
+    """Within: ``check_compliance``'s advice is not shown (an inversion's result still lists
+    it in ``warnings``); for inversions of hypothetical inputs, such as a curve over e."""
+    with warnings.catch_warnings():
+        warnings.filterwarnings(
+            "ignore", message=".*" + re.escape(COMPLIANCE_ADVICE), category=ImplausibleInputWarning
+        )
+        yield
