@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 import sys
 import textwrap
 from collections.abc import Mapping
@@ -56,7 +57,8 @@ from impactlab.materials import AISI_1010
 #: What the contact table's columns and the less obvious totals mean (printed under the table).
 LEGEND = (
     "end: the end that touched (0 the tip, 1 the other end); start: from the first touch; "
-    "slip: int v_t dt over the contact; reload: True if the contact began on an existing dent. "
+    "sliding_length: int v_t dt over the contact (signed along +x, as an impact's); reload: "
+    "True if the contact began on an existing dent. "
     "e_raw: e with the gravity impulse of the sequence kept (e removes it, as a ballistic fit "
     "of marker data would, so a nearly lossless drop's e can exceed 1: flagged "
     "gravity-dominated); mu_apparent: the paper's Eq. 28 on the simulated velocities."
@@ -71,7 +73,7 @@ _COLUMNS = (
     "max_force",
     "normal_impulse",
     "tangential_impulse",
-    "slip",
+    "sliding_length",
     "reload",
 )
 
@@ -341,7 +343,31 @@ def run_drop(opt: ConfigOptions) -> DropResult:
     except DropError as exc:  # "raise {t_max}": the option's or the key's name
         raise UserError(exc.worded(name)) from None
     except ValueError as exc:  # the API's message names its keyword (mu): name the option
-        raise UserError(as_option(str(exc), KEYS, name)) from None
+        raise UserError(as_option(approach_worded(str(exc), opt), KEYS, name)) from None
+
+
+#: The API's refusal of a rod that does not approach the flat (``dynamics.checks``, ``.drop``).
+_APPROACH = re.compile(
+    r"velocity: the (?P<what>contact point|tip) does not approach the flat \(its normal "
+    r"velocity vy - spin \* \(L/2\) cos\(angle\) = (?P<vn>\S+) m/s must be < 0\)"
+)
+
+
+def approach_worded(message: str, opt: ConfigOptions) -> str:
+    """The API's refusal of a rod that does not approach the flat naming the velocity options
+    as typed (``--vy "1.41 m/s"``; a rod's ``--spin`` where given, with its term of the normal
+    velocity); any other message as it is (``simulate`` and ``drop`` alike)."""
+    found = _APPROACH.fullmatch(message)
+    if found is None:
+        return message
+    spin = opt.given("spin") and opt.given("angle")  # a rod's: a sphere's spins in place
+    keys = [k for k in ("vy", "speed", "incidence") if opt.given(k)] + ["spin"] * spin
+    typed = ", ".join(f'{opt.label(k)} "{opt.values[k]}"' for k in keys)
+    formula = "vy - spin * (L/2) cos(angle)" if spin else "vy"
+    return (
+        f"{typed}: the {found['what']} does not approach the flat (its normal velocity "
+        f"{formula} = {float(found['vn']):.4g} m/s must be < 0, towards the flat)"
+    )
 
 
 #: The options of ``drop`` a ``--config`` file gives by key (``--from`` reads them as given).

@@ -18,6 +18,7 @@ from impactlab.analytic.inversion import MC_REJECTED_WARNING
 from impactlab.analytic.result import MC_INTERVAL
 from impactlab.bodies._checks import INERTIA_MISFIT
 from impactlab.cli._common import SI_UNITS, print_rows
+from impactlab.cli.invert_inputs import CORRELATED
 
 #: SI units of the inversion's inputs, by keyword of ``impactlab.analytic.invert``.
 INPUT_UNITS = {
@@ -93,11 +94,16 @@ def _correlation_row(
 ) -> list[tuple[str, str, str]]:
     """The row of the inputs' correlations (none when independent), as given: the result's
     coefficient of the magnitudes with the other sign for each input of a pair given negative
-    (``--vi "-1.41 m/s"``), as the inputs' echo keeps their signs."""
+    (``--vi "-1.41 m/s"``), as the inputs' echo keeps their signs; each pair in the order of
+    the command's inputs (``CORRELATED``: angle, v_i, e, mu, delta_p, sliding_length, dv_cy,
+    vt_in, the rows above it), as ``--correlation e,mu=-0.3`` or ``mu,e=-0.3`` reads it:
+    ``(e, mu) -0.3`` (``InversionResult.correlation`` and the JSON hold a pair in the order
+    of ``invert``'s keywords)."""
     texts = []
     for (a, b), rho in res.correlation.items():
         flips = sum(k in _MAGNITUDES and given.get(k, (0.0,))[0] < 0 for k in (a, b))
-        texts.append(f"({a}, {b}) {(-rho if flips % 2 else rho):.4g}")
+        first, second = sorted((a, b), key=CORRELATED.index)
+        texts.append(f"({first}, {second}) {(-rho if flips % 2 else rho):.4g}")
     return [("correlation", ", ".join(texts), "")] if texts else []
 
 

@@ -37,6 +37,7 @@ from impactlab.cli.config_file import (
     refuse_given,
 )
 from impactlab.cli.config_values import option_numbers, plain_number, text
+from impactlab.cli.drop import approach_worded
 from impactlab.cli.drop_body import flexible_rod, paper_mass
 from impactlab.cli.simulate_from import FROM_RULE, run_from
 from impactlab.cli.simulate_help import HELP
@@ -312,7 +313,8 @@ def simulate_cmd(
             except ValueError as exc:  # the API's message names its parameter: name the option
                 if isinstance(exc, DropError):  # "raise t_max": the option's spelling
                     raise UserError(exc.worded(opt.label)) from None
-                raise UserError(as_option(str(exc), _KEYS, opt.label)) from None
+                message = approach_worded(str(exc), opt)  # --vy, --spin as typed
+                raise UserError(as_option(message, _KEYS, opt.label)) from None
         report_result(result, out=folder, as_json=as_json)
 
 

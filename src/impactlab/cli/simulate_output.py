@@ -60,8 +60,7 @@ def _save(result: ImpactResult, data: dict[str, object], out: Path) -> list[str]
             for ext in FORMATS:
                 (out / f"impact_{name}.{ext}").unlink(missing_ok=True)
             continue
-        plot = getattr(plotting, f"plot_{name}")
-        fig = plot(result, dent=False) if flattened and name == "contact_path" else plot(result)
+        fig = getattr(plotting, f"plot_{name}")(result)  # the contact path: no dent there
         try:
             for ext in FORMATS:
                 path = save_figure(fig, out / f"impact_{name}.{ext}", "simulate", FIGURE_DPI)

@@ -57,7 +57,7 @@ def _approach(body: Rod | Sphere, th: float, vx: float, vy: float, w: float) -> 
     """The contact point's normal velocity (ValueError unless < 0); warns on a fast impact."""
     a, b = lever_arms(body.half_length, body.tip_radius, th)
     vn = vy - w * a
-    if not vn < 0.0:
+    if not vn < 0.0:  # the command line names its options in it: cli.drop.approach_worded
         raise ValueError(
             f"velocity: the contact point does not approach the flat (its normal velocity "
             f"vy - spin * (L/2) cos(angle) = {float(vn)!r} m/s must be < 0)"

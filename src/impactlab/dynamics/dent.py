@@ -126,8 +126,8 @@ def flattening_warning(clause: str) -> str:
 def flattening_error(clause: str) -> ValueError:
     """The error of ``dent()`` for a ``body_flattening`` clause."""
     return ValueError(
-        f"dent(): there is no dent in the flat to map: {clause} (plot_contact_path draws the "
-        "path without a dent with dent=False)"
+        f"dent(): there is no dent in the flat to map: {clause} (plot_contact_path leaves the "
+        "dent out by itself)"
     )
 
 

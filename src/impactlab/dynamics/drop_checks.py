@@ -10,7 +10,7 @@ from typing import Any
 
 import numpy as np
 
-from impactlab._validation import check_positive
+from impactlab._validation import check_positive, did_you_mean
 from impactlab.bodies import Rod
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.contact import ContactModel
@@ -117,7 +117,8 @@ def drop_rtol(rtol: Any, friction: FrictionModel | None = None) -> float:
 def check_stop(stop: Any, t_max: Any) -> tuple[float, int]:
     """(t_max [s], the compiled stop mode)."""
     if stop not in STOP_MODES:
-        raise ValueError(f"stop must be one of {', '.join(STOP_MODES)}, got {stop!r}")
+        hint = did_you_mean(stop, STOP_MODES)
+        raise ValueError(f"stop must be one of {', '.join(STOP_MODES)}, got {stop!r}{hint}")
     return check_positive("t_max", t_max, "s"), STOP_MODES.index(stop)
 
 

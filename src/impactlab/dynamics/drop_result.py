@@ -21,7 +21,7 @@ from impactlab.dynamics.dent import body_flattening, flattening_error, flattenin
 from impactlab.dynamics.derived import DerivedOutputs
 from impactlab.dynamics.drop_gravity import lifted_e_warning
 from impactlab.dynamics.drop_history import DROP_HISTORY_COLUMNS, DropHistory
-from impactlab.dynamics.drop_records import ContactRecord, DentRecord
+from impactlab.dynamics.drop_records import ContactDict, ContactRecord, DentRecord
 from impactlab.dynamics.history import DentMap
 from impactlab.dynamics.input_checks import check_dent_grid
 from impactlab.dynamics.pint_fields import pint_quantities
@@ -60,9 +60,11 @@ SUMMARY_FIELDS: tuple[str, ...] = (
 
 
 def _contact_text(c: ContactRecord) -> str:
+    """One contact's row of ``print(result)``, its values named as ``ContactRecord``'s fields
+    (the columns of ``impactlab drop`` and the keys of ``--json``), in display units."""
     return (
-        f"t0 {c.start * 1e3:.4g} ms, {c.duration * 1e3:.3g} ms, delta_max "
-        f"{c.delta_max * 1e6:.4g} um, P_n {c.normal_impulse:.4g} N s"
+        f"start {c.start * 1e3:.4g} ms, duration {c.duration * 1e3:.3g} ms, delta_max "
+        f"{c.delta_max * 1e6:.4g} um, normal_impulse {c.normal_impulse:.4g} N s"
     )
 
 
@@ -95,8 +97,9 @@ class DropResult(DerivedOutputs, ResultDisplay):
       (equal to ``dent().max_depth``, whatever bounds the caps' widths: ``DentMap.note``; the
       other end's dents, when it touches, are in ``dents``; an impact's ``delta_p`` is that
       of one unloading);
-    - ``sequence_sliding_length``: the tip's total slip, the sum over its contacts of
-      int v_t dt (signed, as ImpactResult's ``sliding_length`` of one contact);
+    - ``sequence_sliding_length``: the tip's total slip, the sum over its contacts of their
+      ``sliding_length``, int v_t dt (signed, as ImpactResult's ``sliding_length`` of one
+      contact; ``contacts[i].sliding_length`` is that of contact i);
       ``scar_length``: the x-extent of the mark the tip left over all its contacts (where the
       tip lands twice on separate dents, ``stop="flight"``, from the first one's near edge to
       the last one's far edge, the unmarked flat between them included; each dent's extent:
@@ -328,8 +331,8 @@ class DropResult(DerivedOutputs, ResultDisplay):
     def to_dict(self, *, include_history: bool = False) -> dict[str, Any]:
         """JSON-ready values: scalars (``body_yields_first`` too), ``contacts`` and ``dents`` as
         lists of dicts, the energy balance, the references' citations; the history as lists of
-        columns if asked. A key before 0.3 (``"duration"``, ...) reads its new one with a
-        DeprecationWarning."""
+        columns if asked. A key before 0.3 (``"duration"``, ...; a contact's ``"slip"``) reads
+        its new one with a DeprecationWarning."""
         d: dict[str, Any] = {}
         for f in fields(self):
             if f.name in ("history", "references", "contacts", "dents") or f.name[0] == "_":
@@ -350,7 +353,9 @@ class DropResult(DerivedOutputs, ResultDisplay):
         d["input"] = self.input
         if include_history and self.history is not None:
             d["history"] = {k: self.history[k].tolist() for k in DROP_HISTORY_COLUMNS}
-        return _RenamedKeys(jsonable(d))
+        out = _RenamedKeys(jsonable(d))
+        out["contacts"] = [ContactDict(c) for c in out["contacts"]]  # "slip": sliding_length
+        return out
 
     def summary(self) -> dict[str, Any]:
         """The set-up, as an impact's summary begins (``body``: the body with its sizes and

@@ -118,9 +118,16 @@ def plot_force_penetration(result: ImpactResult, ax: Any = None) -> Any:
     return fig
 
 
+def _flattened(result: ImpactResult) -> bool:
+    """True where the impacting body yields first and left a permanent interference
+    (``body_yields_first``, delta_p > 0): the body's flattening, no dent in the flat."""
+    return bool(result.delta_p > 0.0 and result.body_yields_first)
+
+
 def plot_contact_path(result: ImpactResult, ax: Any = None, *, dent: bool = True) -> Any:
     """Contact point path on the flat: position along x [um] against penetration [um], with the
-    centre-line profile of the predicted dent."""
+    centre-line profile of the predicted dent (``dent``; left out by itself where the impacting
+    body yields first, ``body_yields_first``: the flat has no dent, the legend says so)."""
     h = _history(_impact(result, "plot_contact_path"))
     fig, ax = _axes(ax)
     ax.plot(h.contact_x * 1e6, -h.penetration * 1e6, "-", label="tip bottom (contact point)")
@@ -133,7 +140,9 @@ def plot_contact_path(result: ImpactResult, ax: Any = None, *, dent: bool = True
             ms=3,
             label="stick / no gross slip",
         )
-    if dent:
+    if dent and _flattened(result):
+        ax.plot([], [], " ", label="no dent in the flat: the body yields first")
+    elif dent:
         dm = result.dent(ny=41)
         x, z = dm.profile()
         ax.plot(x * 1e6, z * 1e6, "k-", lw=1.0, label="predicted dent (y = 0)")
@@ -183,7 +192,8 @@ def save_figures(
 ) -> list[Path]:
     """Save the force-time, force-penetration, contact-path and dent figures; returns paths.
     :class:`NotPlottableError` (a TypeError and a ValueError) for a result other than an
-    ImpactResult (a drop: ``plot_dent`` draws its dent), before anything is written."""
+    ImpactResult (a drop: ``plot_dent`` draws its dent), before anything is written. No dent
+    figure where the impacting body yields first (``body_yields_first``: no dent in the flat)."""
     _impact(result, "save_figures")
     plt = pyplot()
     out = Path(out_dir)
@@ -195,6 +205,8 @@ def save_figures(
         ("contact_path", plot_contact_path),
         ("dent", plot_dent),
     ):
+        if name == "dent" and _flattened(result):
+            continue
         fig = fn(result)
         for ext in formats:
             p = out / f"{stem}_{name}.{ext}"
