@@ -103,12 +103,18 @@ def with_law_ranges(info: Mapping[str, Any], store: Path, *, as_json: bool) -> d
     """``info`` with the store's ``law_ranges`` attribute (each law of the study -> its verified
     or stand-in ``range`` and its ``source``): with ``as_json`` as the store records it (null
     for a store that records none); for the table one row per law, ``law range: NAME`` -> its
-    range (the sources are long: ``--json`` and the store's attributes hold them)."""
+    range (the sources are long: ``--json`` and the store's attributes hold them), and its
+    ``body_yields_first`` pairs one row each (``sweep.summary.flattening_rows``)."""
     from impactlab.sweep.store import SweepStore
+    from impactlab.sweep.summary import flattening_rows
 
     ranges = SweepStore(store).attrs().get("law_ranges")
     if as_json:
         return {**info, "law_ranges": ranges}
+    if "body_yields_first" in info:  # the table: one row per pair
+        info = {k: v for k, v in info.items() if k != "body_yields_first"} | flattening_rows(
+            info["body_yields_first"]
+        )
     if not isinstance(ranges, Mapping) or not ranges:
         return {**info, "law ranges": "not recorded in this store"}
     rows = {
@@ -126,10 +132,17 @@ def run_summary(
     cases computed over the wall time, the engine's load included; [1/s] with ``as_json``, None
     when the run computed nothing; for the table a text that says so), the first task [s] (the
     engine's load; None when the run computed nothing: every chunk was stored), the status
-    counts and the flagged cases (text for the table, integer counts with ``as_json``)."""
+    counts, the flagged cases (text for the table, integer counts with ``as_json``) and, when a
+    material pair's body yields first, those pairs (``sweep.summary.body_yields_first_pairs``:
+    ``body_yields_first`` with ``as_json``, one row each for the table)."""
     from impactlab.sweep import status_counts
     from impactlab.sweep.display import run_throughput, throughput_text, warm_up_s
-    from impactlab.sweep.summary import dataset_flag_counts, format_flag_counts
+    from impactlab.sweep.summary import (
+        body_yields_first_pairs,
+        dataset_flag_counts,
+        flattening_rows,
+        format_flag_counts,
+    )
 
     s = res.stats
     summary: dict[str, Any] = {
@@ -148,6 +161,9 @@ def run_summary(
     if "flags" in ds.data_vars:
         counts = dataset_flag_counts(ds)
         summary["flagged"] = flagged_json(counts) if as_json else format_flag_counts(counts)
+    pairs = body_yields_first_pairs(ds)
+    if pairs:
+        summary |= {"body_yields_first": pairs} if as_json else flattening_rows(pairs)
     if netcdf is not None:
         summary["netcdf"] = str(netcdf)
     if files:

@@ -74,6 +74,13 @@ class BatchResult(BatchStatus):
     #: what was simulated besides the per-case inputs (body, flat, gravity, rtol,
     #: constant_angle, law_params), as ``to_xarray``'s attributes (``export.batch_setup``)
     setup: Mapping[str, Any] = field(default_factory=dict, repr=False)
+    #: whether the body's material yields before the flat's (``materials.body_yields_first``;
+    #: one pair per call): delta_p is then the body's flattening, not a dent in the flat;
+    #: None: not known
+    body_yields_first: bool | None = None
+    #: the batch's advisory sentences, each once per call (``dynamics.dent.flattening_warning``
+    #: for the largest delta_p when the body yields first); ``()`` if none
+    warnings: tuple[str, ...] = ()
 
     def __post_init__(self) -> None:
         status = readonly_copy(self.status, np.int32)
@@ -118,6 +125,8 @@ class BatchResult(BatchStatus):
             "law_range",
             "refusals",
             "setup",
+            "body_yields_first",
+            "warnings",
         ):
             raise AttributeError(name)
         try:

@@ -27,6 +27,7 @@ from impactlab.contact.range_note import range_note
 from impactlab.contact.ranges import delta_ratio, extrapolation_flags
 from impactlab.dynamics.checks import checked_model
 from impactlab.dynamics.drop import DEFAULT_T_MAX
+from impactlab.dynamics.drop_batch_data import ENGINE_NAME
 from impactlab.dynamics.drop_batch_result import DropBatchResult
 from impactlab.dynamics.drop_body import body_model
 from impactlab.dynamics.drop_checks import (
@@ -56,7 +57,7 @@ from impactlab.dynamics.input_checks import batch_velocity, check_flat, gravity_
 from impactlab.dynamics.kernels import status as S
 from impactlab.dynamics.kernels.layout import MU_NEGLIGIBLE
 from impactlab.dynamics.models import body_params, kernel_params, references_used
-from impactlab.dynamics.simulate_many import _batch_inputs
+from impactlab.dynamics.simulate_many import _batch_inputs, flattening_words
 from impactlab.flags import FLAG_GRAVITY_DOMINATED
 from impactlab.friction import COULOMB, DEFAULT_MU, PARTIAL_SLIP, PARTIAL_SLIP_CELLS
 from impactlab.materials import AISI_1010, Material
@@ -119,7 +120,10 @@ def simulate_drops(
     message naming it), and for a bad ``speed`` or ``incidence`` (checked before any case
     runs, as ``simulate_batch`` does: each offending case named by its index). TypeError for a
     keyword it does not take, with the nearest name or what to use instead
-    (``DROPS_KEYWORD_NOTES``: ``history=``, a drop batch keeps none).
+    (``DROPS_KEYWORD_NOTES``: ``history=``, a drop batch keeps none). When the rod's material
+    yields before the flat's (``materials.body_yields_first``, one pair per call),
+    ``body_yields_first`` is True and ``warnings`` says once that dent_depth is the rod's
+    flattening, not a dent in the flat (advisory: no value changes).
     """
     refuse_rate(rate, "simulate_drops")
     body = check_body(body)
@@ -183,6 +187,8 @@ def simulate_drops(
     refs = references_used(model, fric, bool(np.any(mu_run > 0.0))) + bm.references
     setup = batch_setup(body, flat, friction=fric.name, gravity=g, rtol=r, constant_angle=None,
                         law=law, law_params=law_params)  # fmt: skip
+    depths = out[:, F.DROP_OUTPUT_FIELDS.index(ENGINE_NAME["dent_depth"])][status == 0]
+    yields, said = flattening_words(bm.rigid.material, flat, depths, "dent_depth")
     return DropBatchResult(
         out=out,
         status=status,
@@ -200,7 +206,10 @@ def simulate_drops(
         refusals={i: t for i, t in refusals.items() if status[i] == S.ST_BAD_INPUT}
         | failed
         | inaccurate,
-        setup=setup | {"body": bm.description, "stop": stop, "t_max": t_end},
+        setup=setup
+        | {"body": bm.description, "stop": stop, "t_max": t_end, "body_yields_first": int(yields)},
+        body_yields_first=yields,
+        warnings=said,
     )
 
 

@@ -71,6 +71,13 @@ class DropBatchResult(BatchStatus):
     #: ``BatchResult.setup`` (``export.batch_setup``: body_record, flat, flat_record, gravity,
     #: rtol, law_params) with the drop's ``stop`` and ``t_max`` [s]
     setup: Mapping[str, Any] = field(default_factory=dict, repr=False)
+    #: whether the rod's material yields before the flat's (``materials.body_yields_first``;
+    #: one pair per call): dent_depth is then the rod's flattening, not a dent in the flat;
+    #: None: not known
+    body_yields_first: bool | None = None
+    #: the batch's advisory sentences, each once per call (``dynamics.dent.flattening_warning``
+    #: for the largest dent_depth when the rod yields first); ``()`` if none
+    warnings: tuple[str, ...] = ()
 
     def __post_init__(self) -> None:
         for name in ("out", "initial_energy", "max_delta_ratio"):
@@ -120,7 +127,7 @@ class DropBatchResult(BatchStatus):
         return field_dir(self, self._fields())
 
     def __getattr__(self, name: str) -> np.ndarray:
-        if name.startswith("_") or name in ("out", "status", "inputs"):
+        if name.startswith("_") or name in ("out", "status", "inputs", "warnings"):
             raise AttributeError(name)
         try:
             return self[name]

@@ -19,6 +19,7 @@ from impactlab.dynamics.batch import run_arrays
 from impactlab.dynamics.batch_result import BatchResult
 from impactlab.dynamics.batch_status import case_refusals
 from impactlab.dynamics.checks import checked_model
+from impactlab.dynamics.dent import body_flattening, flattening_warning
 from impactlab.dynamics.export import batch_setup
 from impactlab.dynamics.flex_simulate import FLEXIBLE_BATCH_ERROR
 from impactlab.dynamics.input_checks import (
@@ -34,7 +35,7 @@ from impactlab.dynamics.kernels import layout as L
 from impactlab.dynamics.kernels.status import ST_BAD_INPUT
 from impactlab.dynamics.models import body_params, references_used
 from impactlab.friction import DEFAULT_MU, PARTIAL_SLIP_CELLS, get_friction
-from impactlab.materials import AISI_1010, Material
+from impactlab.materials import AISI_1010, Material, body_yields_first
 from impactlab.units import is_quantity
 
 #: simulate_batch's array inputs and their units ("1": a plain number).
@@ -143,6 +144,9 @@ def simulate_batch(
     (0: computed; ``messages`` says why not), ``flags``, ``ok`` (computed, and no flag but the
     advisory ones), the outputs by name (``b.e``, ``b["delta_p"]``, SI), ``to_dataframe``,
     ``to_xarray`` and ``to_pint``, and ``setup`` (what was simulated besides the cases).
+    When the body's material yields before the flat's (``materials.body_yields_first``, one
+    pair per call), ``body_yields_first`` is True and ``warnings`` says once that delta_p is
+    the body's flattening, not a dent in the flat (advisory: no value changes).
     """
     if isinstance(body, FlexibleRod):
         raise ValueError(FLEXIBLE_BATCH_ERROR)
@@ -172,6 +176,9 @@ def simulate_batch(
         brittle_limit=brittle_pressure(body.material, flat),
         partial_slip_cells=cells,
     )
+    yields, said = flattening_words(
+        body.material, flat, out[:, L.OUTPUT_FIELDS.index("delta_p")][status == 0], "delta_p"
+    )
     return BatchResult(
         out=out,
         status=status,
@@ -194,8 +201,26 @@ def simulate_batch(
             law=law,
             law_params=law_params,
             partial_slip_cells=cells,
-        ),
+        )
+        | {"body_yields_first": int(yields)},
+        body_yields_first=yields,
+        warnings=said,
     )
+
+
+def flattening_words(
+    body: Material, flat: Material, depths: np.ndarray, what: str
+) -> tuple[bool, tuple[str, ...]]:
+    """A batch's ``body_yields_first`` (its one pair: ``materials.body_yields_first``) and its
+    ``warnings``: once per call, the advisory ``dynamics.dent.flattening_warning`` for the
+    largest permanent interference ``depths`` [m] of its computed cases (the output
+    ``what``); ``()`` when the flat yields first or no case left one."""
+    yields = body_yields_first(body, flat)
+    finite = depths[np.isfinite(depths)]
+    if not yields or finite.size == 0:
+        return yields, ()
+    clause = body_flattening(body, flat, float(finite.max()), f"the batch's largest {what}")
+    return yields, (flattening_warning(clause),) if clause else ()
 
 
 def _one_value(value: Any) -> bool:
@@ -218,4 +243,4 @@ def _refuse_degrees(angle: np.ndarray, sphere: bool) -> None:
         )
 
 
-__all__ = ["simulate_batch"]
+__all__ = ["flattening_words", "simulate_batch"]

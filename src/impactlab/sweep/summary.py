@@ -197,7 +197,8 @@ def _intact_values(path: Path, name: str, damaged: set[int], done: set[int]) -> 
 def store_info(path: str | Path) -> dict[str, Any]:
     """Progress and contents of the store at ``path``: title, study hash, the impactlab version
     that wrote the store (``store_version``), mode, dimensions, cases, chunks done (intact),
-    damaged chunks, outputs, status counts and flagged results."""
+    damaged chunks, outputs, status counts, flagged results and, when a material pair's body
+    yields first, ``body_yields_first`` (:func:`body_yields_first_pairs`)."""
     p = Path(path)
     ds = open_sweep(p, verify=False)
     store = SweepStore(p)
@@ -222,14 +223,72 @@ def store_info(path: str | Path) -> dict[str, Any]:
         info["status"] = status_counts(ds)
         if "flags" in ds.data_vars:
             info["flagged"] = format_flag_counts(dataset_flag_counts(ds))
-        return info
+        return _with_flattening(info, ds)
     msgs = ds.attrs.get("status_messages", {})
     marked = store.done_chunks()
     info["status"] = _counts([_intact_values(p, "status", set(damaged), marked)], msgs)
     if "flags" in ds.data_vars:
         flags = _intact_values(p, "flags", set(damaged), marked)
         info["flagged"] = format_flag_counts(flag_counts(flags, ds["flags"].attrs))
-    return info
+    return _with_flattening(info, ds)
+
+
+def _with_flattening(info: dict[str, Any], ds: Any) -> dict[str, Any]:
+    """``info`` with ``body_yields_first`` (:func:`body_yields_first_pairs`) when a pair's
+    body yields first."""
+    pairs = body_yields_first_pairs(ds)
+    return {**info, "body_yields_first": pairs} if pairs else info
+
+
+def body_yields_first_pairs(ds: Any) -> list[dict[str, Any]]:
+    """The library material pairs of the sweep ``ds``'s study whose impacting body yields first
+    (``materials.body_yields_first``): their delta_p is the body's flattening, not a dent in the
+    flat. Each as ``body_material``, ``flat_material``, ``cases`` (of the store) and ``warning``
+    (``dynamics.dent.flattening_warning`` for the largest stored delta_p of their finished
+    cases; None when none left one or delta_p is not kept). A material by values (``custom``)
+    is not checked here; ``[]`` when the study is not readable here."""
+    from impactlab.dynamics.dent import body_flattening, flattening_warning
+    from impactlab.materials import body_yields_first, get_material
+    from impactlab.sweep.material_inputs import CUSTOM
+    from impactlab.sweep.study_meta import category_values
+    from impactlab.sweep.study_record import recorded_study
+
+    try:
+        values = category_values(recorded_study(json.loads(ds.attrs["study"])))
+        pairs = [
+            (b, f, get_material(b, "body_material"), get_material(f, "flat_material"))
+            for b in values["body_material"]
+            for f in values["flat_material"]
+            if CUSTOM not in (b, f)
+        ]
+    except (ValueError, KeyError, TypeError):
+        return []
+    out: list[dict[str, Any]] = []
+    for b, f, body, flat in pairs:
+        if not body_yields_first(body, flat):
+            continue
+        sub = ds
+        for dim, value in (("body_material", b), ("flat_material", f)):
+            if dim in ds.dims:
+                sub = sub.sel({dim: value})
+        clause = ""
+        if "delta_p" in sub.data_vars:
+            depth = float(sub["delta_p"].where(sub["status"] == 0).max())
+            what = "the largest delta_p of these cases"
+            clause = body_flattening(body, flat, depth, what) if depth > 0.0 else ""
+        out.append({"body_material": b, "flat_material": f, "cases": int(sub["status"].size),
+                    "warning": flattening_warning(clause) if clause else None})  # fmt: skip
+    return out
+
+
+def flattening_rows(pairs: list[dict[str, Any]]) -> dict[str, str]:
+    """The table rows of :func:`body_yields_first_pairs`: ``"body yields first: <body> on
+    <flat>"`` -> its cases and warning; ``{}`` when no pair's body yields first."""
+    return {
+        f"body yields first: {p['body_material']} on {p['flat_material']}": f"{p['cases']:,} "
+        "case(s) (materials.body_yields_first)" + (f": {p['warning']}" if p["warning"] else "")
+        for p in pairs
+    }
 
 
 def result_counts(path: str | Path) -> tuple[dict[str, int], dict[str, int]]:
