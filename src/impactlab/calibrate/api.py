@@ -11,6 +11,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from impactlab.calibrate.calibration_warning import CalibrationWarning
 from impactlab.calibrate.cluster import map_on_dask
 from impactlab.calibrate.correlated_likelihood import correlation_rows, likelihood_text
 from impactlab.calibrate.diagnostics import misfits
@@ -48,14 +49,6 @@ REFERENCES = cite(
     "goodman-weare-2010", "foreman-mackey-2013", "vehtari-2017", "kumar-2019-arviz",
     "vehtari-2021-rhat", "yao-2018-stacking", "sivula-2020-loo-uncertainty",
 )  # fmt: skip
-
-
-class CalibrationWarning(UserWarning):
-    """Something the calibration ran through but the user should know (a parameter a model
-    does not use, a drop value replaced by a free parameter, a misfit, a chain that has not
-    converged, a posterior against its prior's bound, a contact law extrapolated in the
-    predicted impacts, a model that fails on more than 5 % of the parameter values it ran, a
-    best model the data do not single out, a ranking over one drop)."""
 
 
 @dataclass
@@ -113,6 +106,7 @@ class Calibration:
         return predict_drops(
             ranked, self.settings, conditions, quantities or self.measurements.quantities,
             model=model, draws=draws, seed=seed, evaluator=evaluator,
+            calibrated=self.measurements,
         )  # fmt: skip
 
     def to_dict(self) -> dict[str, Any]:

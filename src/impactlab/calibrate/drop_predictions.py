@@ -5,6 +5,7 @@ outputs (e, delta_p, max_force, ...) at posterior draws, for drops given by thei
 from __future__ import annotations
 
 import math
+import warnings
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -12,9 +13,11 @@ from typing import Any
 
 import numpy as np
 
+from impactlab.calibrate.calibration_warning import CalibrationWarning
+from impactlab.calibrate.input_checks import _one_material, check_calibration_inputs
 from impactlab.calibrate.measurements import Measurements, read_measurements
 from impactlab.calibrate.model_specs import parse_model
-from impactlab.calibrate.models import predict, status_message
+from impactlab.calibrate.models import CandidateModel, predict, status_message
 from impactlab.calibrate.quantities import MEASURABLE
 from impactlab.calibrate.result import INTERVAL, ModelPosterior
 from impactlab.sweep.engine import ENGINE, Evaluator
@@ -67,6 +70,7 @@ def predict_drops(
     draws: int = 200,
     seed: int = 0,
     evaluator: Evaluator = ENGINE,
+    calibrated: Measurements | None = None,
 ) -> DropPredictions:
     """``Calibration.predict``: the ``quantities`` of the drops ``conditions`` (Measurements,
     records or a file, read by ``Measurements.conditions``) under ``model`` (a calibrated
@@ -74,7 +78,11 @@ def predict_drops(
     draws chosen at random (``seed``; all of them when there are fewer), with the calibration's
     ``settings`` (each model's definition, the engine options). ValueError naming a model that
     was not calibrated, a quantity the model does not predict, a draws count below 1 and drops
-    without mu where mu was not calibrated."""
+    without mu where mu was not calibrated; as ``calibrate`` (``input_checks``), ValueError for
+    a drop on another material than the ``calibrated`` drops (the calibration's measurements)
+    where a property of that material was calibrated, and for a rod of another material or
+    length without its mass, and a CalibrationWarning for a drop's value of a calibrated
+    parameter (the posterior draws replace it)."""
     name = model if model is not None else next(iter(posteriors))
     if name not in posteriors:
         raise ValueError(f"model {name!r} was not calibrated; calibrated: {', '.join(posteriors)}")
@@ -90,6 +98,7 @@ def predict_drops(
         )
     definition = dict(settings["model_definitions"][name])
     cand = parse_model({**definition, "name": name})
+    _check_conditions(name, cand, post, meas, calibrated)
     engine = {k: v for k, v in dict(settings.get("engine", {})).items() if v is not None}
     rng = np.random.default_rng(seed)
     n = len(post.samples)
@@ -98,6 +107,35 @@ def predict_drops(
     pred = predict(cand, meas, post.params, theta, evaluator=evaluator, engine=engine,
                    quantities=quantities)  # fmt: skip
     return DropPredictions(name, meas.labels, dict(pred.values), pred.status, theta)
+
+
+def _check_conditions(
+    name: str,
+    cand: CandidateModel,
+    post: ModelPosterior,
+    meas: Measurements,
+    calibrated: Measurements | None,
+) -> None:
+    """``calibrate``'s checks of the drops' inputs, applied to the drops to predict: one
+    material per calibrated material property over the calibrated drops and these, a rod's
+    mass; a warning for each drop value a calibrated parameter replaces."""
+    if calibrated is not None:
+        labels = tuple(f"{x} (calibrated)" for x in calibrated.labels) + meas.labels
+        both = Measurements(labels, calibrated.categories + meas.categories, {}, {}, {})
+        try:
+            _one_material(both, post.params)
+        except ValueError as err:
+            raise ValueError(f"model {name!r} cannot predict these drops: {err}") from None
+    notes: list[str] = []
+    check_calibration_inputs(meas, post.params, [cand], notes)
+    if notes:
+        for text in notes:
+            text = text.replace("in the measurements", "to predict")
+            warnings.warn(
+                f"{text}: model {name!r} predicts with its posterior draws",
+                CalibrationWarning,
+                stacklevel=4,
+            )
 
 
 def _conditions(given: Any) -> Measurements:

@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from impactlab.calibrate.api import CalibrationWarning
+from impactlab.calibrate.calibration_warning import CalibrationWarning
 from impactlab.calibrate.correlations import correlation_column
 from impactlab.calibrate.measurement_append import append_record
 from impactlab.calibrate.measurements import Measurements

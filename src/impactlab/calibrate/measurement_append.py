@@ -8,7 +8,8 @@ unit, and an angle in a column without a unit is written with its unit (``"20 de
 the file lacks is added at the end of the header, with its unit (``[deg]`` for an angle, SI
 otherwise), and every earlier row gets an empty field there (blank: not given, as before). A new
 file gets a header in SI units (angles in degrees). Each number is written with 12 significant
-digits. The file is written whole or not at all.
+digits. The file is written whole or not at all. The drop's label must read back as written
+(:func:`check_label`).
 """
 
 from __future__ import annotations
@@ -22,7 +23,12 @@ from typing import Any
 
 from impactlab._files import write_bytes_atomic
 from impactlab.calibrate.correlations import correlation_column
-from impactlab.calibrate.measurement_columns import column_kind, is_percent, split_header
+from impactlab.calibrate.measurement_columns import (
+    LABEL_KEYS,
+    column_kind,
+    is_percent,
+    split_header,
+)
 from impactlab.calibrate.measurement_files import read_text
 from impactlab.calibrate.measurement_rows import Row, parse_row
 from impactlab.calibrate.measurements import Measurements, read_measurements
@@ -30,7 +36,7 @@ from impactlab.calibrate.quantities import ANGLES, DROP_CATEGORIES, MEASURABLE
 from impactlab.sweep.inputs import INPUTS, UNIT_REQUIRED
 from impactlab.units import to_si
 
-__all__ = ["append_record"]
+__all__ = ["append_record", "check_label"]
 
 _BOM = b"\xef\xbb\xbf"
 
@@ -42,13 +48,21 @@ def append_record(
     to the CSV measurements file ``path`` (created if missing) as one line in the file's units,
     after a ``# comment`` line when ``comment`` is given; returns the file's drops. ValueError
     naming the file for one that is not CSV, a file that cannot be read as measurements, a
-    label the file has already, and a drop it cannot take."""
+    label the file has already, a label that would not read back as written
+    (:func:`check_label`; a record without one too) and a drop it cannot take."""
     p = Path(path)
     if p.suffix.lower() != ".csv":
         raise ValueError(
             f"measurements file {str(p)!r}: a drop is appended to a CSV file (.csv); for a TOML "
             "file, add a [[drop]] table of experiment_record's columns"
         )
+    label = next((record[k] for k in LABEL_KEYS if k in record), None)
+    if label is None or (isinstance(label, float) and math.isnan(label)):
+        raise ValueError(
+            f"{p}: the drop has no label (column 'label'): give it one, so that the file names "
+            "it by its label, not by its place"
+        )
+    check_label(str(label), f"{p}: label")
     row = parse_row(0, record, {})
     data = p.read_bytes() if p.exists() else b""
     text = read_text(p, "CSV") if data.strip() else ""
@@ -86,6 +100,27 @@ def append_record(
     Measurements.from_records(_records(new), source=str(p))  # refused before it is written
     write_bytes_atomic(p, bom + new.encode("utf-8"))
     return read_measurements(p)
+
+
+def check_label(label: str, name: str = "label") -> None:
+    """ValueError naming ``name`` for a drop label that a CSV measurements file would not read
+    back as written: empty, with spaces or tabs at either end (the reader strips them), holding
+    a line break (a newline, a carriage return, or any that ``str.splitlines`` splits on) or
+    starting with ``#`` (its line would be a comment)."""
+    why = ""
+    if not label.strip():
+        why = "is empty"
+    elif label.splitlines() != [label]:
+        why = "holds a line break: it would split the drop's line"
+    elif label != label.strip():
+        why = "has spaces at an end, which the file's reader strips"
+    elif label.startswith("#"):
+        why = "starts with '#': its line would be read as a comment, and the drop lost"
+    if why:
+        raise ValueError(
+            f"{name} {label!r} {why}; a drop label is text of one line, without spaces at its "
+            "ends, that does not start with '#'"
+        )
 
 
 def _records(text: str) -> list[dict[str, str]]:

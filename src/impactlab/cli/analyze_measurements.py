@@ -1,6 +1,7 @@
 """``impactlab analyze --measurements FILE.csv``: the analysed drop appended to a measurements
 file for ``impactlab calibrate`` (``calibrate.experiment_rows.append_experiment``), checked
-before the analysis runs (a file that is not CSV, a label it has already)."""
+before the analysis runs (a file that is not CSV, a label it has already or that it would not
+read back as written)."""
 
 from __future__ import annotations
 
@@ -18,8 +19,16 @@ __all__ = ["append_drop", "check_measurements"]
 
 def check_measurements(path: Path, label: str) -> None:
     """Before the analysis: UserError for a --measurements file that is not CSV, in a folder
-    that does not exist, that cannot be read as measurements or that has the drop ``label``."""
+    that does not exist, that cannot be read as measurements or that has the drop ``label``,
+    and for a ``label`` the file would not read back as written
+    (``measurement_append.check_label``: empty, a line break, a leading '#', end spaces)."""
+    from impactlab.calibrate.measurement_append import check_label
     from impactlab.calibrate.measurements import read_measurements
+
+    try:
+        check_label(label, "--label (default: the marker file's name)")
+    except ValueError as exc:
+        raise UserError(f"--measurements: {exc}") from None
 
     if path.suffix.lower() != ".csv":
         raise UserError(
