@@ -15,8 +15,12 @@ from pathlib import Path
 
 import pytest
 
+# The program as a terminal starts it: Ctrl-C raises KeyboardInterrupt (a process started in
+# the background by a shell without job control inherits SIGINT ignored).
 SCRIPT = """
+import signal
 import sys
+signal.signal(signal.SIGINT, signal.default_int_handler)
 from impactlab.fe import run as fe_run
 from impactlab.materials import AISI_1010
 
