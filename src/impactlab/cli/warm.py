@@ -14,7 +14,8 @@ def warm(
         None,
         "--part",
         help="Only this part (repeatable): 'contact laws', 'rigid impact', 'batch', "
-        "'partial slip', 'flexible rod', 'flexible batch'. Default: all.",
+        "'partial slip', 'flexible rod', 'flexible partial slip', 'flexible batch'. "
+        "Default: all.",
     ),
     jobs: int = typer.Option(
         None,

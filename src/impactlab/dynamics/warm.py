@@ -1,7 +1,8 @@
 """Compile (or load from the disk cache) every compiled part of impactlab ahead of its first use.
 
 ``warm()`` runs one small case through each part: the rigid impact with each friction model,
-the parallel batch, the partial-slip impact, the flexible-rod drop and its parallel batch. The
+the parallel batch, the partial-slip impact, the flexible-rod drop (with and without partial
+slip) and its parallel batch. The
 first run after installing or updating impactlab compiles them (announced on stderr, see
 ``impactlab._compile_notice``); later runs load them from the cache in a second or two.
 ``impactlab warm`` and ``python3 tasks.py warm`` call it.
@@ -103,6 +104,20 @@ def _flexible() -> None:
     )
 
 
+def _flexible_partial_slip() -> None:
+    from impactlab.bodies import FlexibleRod
+    from impactlab.dynamics.simulate import simulate
+
+    simulate(  # the cells of Mindlin-Deresiewicz friction at each end (the batch shares them)
+        FlexibleRod.paper(),
+        law="ghaednia",
+        friction="partial_slip",
+        mu=0.2,
+        angle=math.radians(20),
+        velocity=(0.0, -1.41),
+    )
+
+
 def _flexible_batch() -> None:
     from impactlab.bodies import FlexibleRod
     from impactlab.dynamics.drop_batch import simulate_drops
@@ -137,6 +152,7 @@ PARTS: dict[str, Callable[[], None]] = {
     "batch": _batch,
     "partial slip": _partial_slip,
     "flexible rod": _flexible,
+    "flexible partial slip": _flexible_partial_slip,
     "flexible batch": _flexible_batch,
 }
 
@@ -145,7 +161,7 @@ PARTS: dict[str, Callable[[], None]] = {
 #: rigid engine with its batch and partial slip, and the flexible rod with its batch.
 PROCESS_GROUPS: tuple[tuple[str, ...], ...] = (
     ("contact laws", "rigid impact", "batch", "partial slip"),
-    ("flexible rod", "flexible batch"),
+    ("flexible rod", "flexible partial slip", "flexible batch"),
 )
 
 
