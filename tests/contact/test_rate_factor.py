@@ -92,9 +92,10 @@ def test_max_iter_must_be_a_count() -> None:
 
 
 def test_the_papers_factors_are_unchanged() -> None:
-    """The flat map of the paper's drops takes plain steps: k as before, bit for bit."""
-    assert _drop("cowper-symonds").rate_factor == 2.6445015516165498
-    assert _drop("johnson-cook").rate_factor == 1.1316113343361407
+    """The flat map of the paper's drops takes plain steps: k as before, to round-off (the
+    compiled drop's bits differ between processors by about 1e-13)."""
+    assert _drop("cowper-symonds").rate_factor == pytest.approx(2.6445015516165498, rel=1e-11)
+    assert _drop("johnson-cook").rate_factor == pytest.approx(1.1316113343361407, rel=1e-11)
 
 
 def test_the_limit_of_the_papers_pair() -> None:

@@ -62,12 +62,14 @@ def test_the_sequence_is_continuous_in_the_angle(vy: float, first: float) -> Non
 
 def test_the_paper_rod_at_60_7_deg_is_unchanged() -> None:
     """The documented return of the paper's rod (docs/flexible.md): 3 contacts in 0.91 ms,
-    e 0.398, the tip back 154 ms later (the values before the rigid-arc rule, to the bit)."""
+    e 0.398, the tip back 154 ms later (the values before the rigid-arc rule, to round-off:
+    the compiled code's bits differ between processors, by its vector width and fused
+    multiply-adds, and the 154 ms of free flight carry a difference of 1e-13 to about 1e-11)."""
     rod = il.FlexibleRod.paper()
     case: dict[str, Any] = {"angle": math.radians(60.7), "velocity": (0.0, -1.09), **KW}
     r = il.simulate_drop(rod, il.AISI_1010, **case)
     assert r.n_contacts == 3 and r.sequence_duration == pytest.approx(9.095495693081991e-4)
-    assert r.e == pytest.approx(0.39755209602388186, rel=1e-12) and r.next_end == 0
-    assert r.next_time == pytest.approx(0.15393477063840325, rel=1e-12)
+    assert r.e == pytest.approx(0.39755209602388186, rel=1e-10) and r.next_end == 0
+    assert r.next_time == pytest.approx(0.15393477063840325, rel=1e-9)
     followed = il.simulate_drop(rod, il.AISI_1010, stop="flight", **case)
     assert followed.contacts[3].start == pytest.approx(0.155248, abs=1e-6)
