@@ -53,11 +53,11 @@ def test_chi2_and_the_ranking_take_the_correlation() -> None:
     plain = _explained(None, rigid, flexible)
     chi2 = plain.summary.set_index("configuration")["chi2"]
     assert chi2.tolist() == pytest.approx([2 * 1.5**2, 2 * 1.9**2], rel=1e-12)
-    assert plain.best("d") == "rigid rod"
+    assert plain.best("d") == "rigid body"
     assert not any("correlation" in n for n in plain.notes)
     x = _explained(RHO, rigid, flexible)
     chi2 = x.summary.set_index("configuration")["chi2"]
-    assert chi2["rigid rod"] == pytest.approx(_mahalanobis(*rigid, RHO), rel=1e-12)
+    assert chi2["rigid body"] == pytest.approx(_mahalanobis(*rigid, RHO), rel=1e-12)
     assert chi2["flexible rod"] == pytest.approx(_mahalanobis(*flexible, RHO), rel=1e-12)
     np.testing.assert_allclose(x.comparison["z"], [*rigid, *flexible], atol=1e-12)  # marginal
     assert x.best("d") == "flexible rod"
@@ -80,11 +80,11 @@ def test_explain_reads_the_coefficients_of_a_drop() -> None:
     x = explain(meas, rate_laws=[])
     z = x.comparison.set_index(["configuration", "quantity"])["z"]
     chi2 = x.summary.set_index("configuration")["chi2"]
-    for name in ("rigid rod", "flexible rod"):
+    for name in ("rigid body", "flexible rod"):
         assert chi2[name] == pytest.approx(_mahalanobis(z[(name, "e")], z[(name, "spin_out")],
                                                         RHO), rel=1e-12)  # fmt: skip
     assert (
-        30 < chi2["rigid rod"] < 45
-        and z[("rigid rod", "e")] ** 2 + z[("rigid rod", "spin_out")] ** 2 < 9
+        30 < chi2["rigid body"] < 45
+        and z[("rigid body", "e")] ** 2 + z[("rigid body", "spin_out")] ** 2 < 9
     )
     assert any(n.startswith("chi2 takes the drop's correlation coefficients") for n in x.notes)

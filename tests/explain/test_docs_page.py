@@ -35,8 +35,8 @@ def test_the_numbers_it_states(paper_explained) -> None:
     c = paper_explained.comparison
     c = c[c["drop"] == "20 deg"].set_index(["configuration", "quantity"])
     cs = "flexible rod + rate-dependent flat (cowper-symonds, upper estimate)"
-    assert round(c.loc[("rigid rod", "delta_p"), "predicted"] * 1e6) == 62
-    assert round(c.loc[("rigid rod", "scar_length"), "predicted"] * 1e6) == 22
+    assert round(c.loc[("rigid body", "delta_p"), "predicted"] * 1e6) == 62
+    assert round(c.loc[("rigid body", "scar_length"), "predicted"] * 1e6) == 22
     assert round(c.loc[("flexible rod", "delta_p"), "predicted"] * 1e6) == 32
     assert round(c.loc[("flexible rod", "scar_length"), "predicted"] * 1e6) == 261
     assert c.loc[(cs, "delta_p"), "predicted"] * 1e6 == pytest.approx(22.9, abs=0.05)

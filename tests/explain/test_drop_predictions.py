@@ -36,11 +36,11 @@ def test_a_drop_does_not_predict_one_contacts_duration_nor_a_signed_travel() -> 
     for q in NOT_A_DROPS:
         assert c.loc[("flexible rod", q), "status"].startswith("not predicted")
         assert math.isnan(c.loc[("flexible rod", q), "predicted"])
-        assert c.loc[("rigid rod", q), "status"] == "ok"
+        assert c.loc[("rigid body", q), "status"] == "ok"
     # the scar: the extent over all contacts (the rigid rod's one contact: |contact_travel|)
     assert c.loc[("flexible rod", "scar_length"), "predicted"] == pytest.approx(261e-6, abs=1e-6)
-    rigid = c.loc[("rigid rod", "scar_length"), "predicted"]
-    assert rigid == pytest.approx(-c.loc[("rigid rod", "contact_travel"), "predicted"])
+    rigid = c.loc[("rigid body", "scar_length"), "predicted"]
+    assert rigid == pytest.approx(-c.loc[("rigid body", "contact_travel"), "predicted"])
     s = x.summary.set_index("configuration")
     assert (s.loc["flexible rod", "compared"], s.loc["flexible rod", "n_measured"]) == (1, 4)
     assert math.isnan(s.loc["flexible rod", "chi2"])
@@ -49,7 +49,7 @@ def test_a_drop_does_not_predict_one_contacts_duration_nor_a_signed_travel() -> 
     v = x.verdict("a")
     assert x.best("a") is None and v.quantities == ("scar_length",)
     assert v.left_out == ("contact_travel", "duration", "mean_force")
-    assert "but rigid rod agrees with more of the measured values" in v.reason
+    assert "but rigid body agrees with more of the measured values" in v.reason
 
 
 def test_the_calibration_refuses_them_for_the_flexible_rod() -> None:
@@ -70,16 +70,16 @@ def test_a_rod_the_flexible_rows_refuse_puts_a_caveat_on_the_rigid_row() -> None
     x = explain(Measurements.from_records([WIDE_ROD]), rate_laws=[])
     s = x.summary.set_index("configuration")
     assert s.loc["flexible rod", "status"].startswith("refused: the diameter that the mass")
-    assert s.loc["rigid rod", "ok"] and s.loc["rigid rod", "caveat"] == BODY_CAVEAT
+    assert s.loc["rigid body", "ok"] and s.loc["rigid body", "caveat"] == BODY_CAVEAT
     assert s.loc["flexible rod", "caveat"] == ""
-    assert f"rigid rod: {BODY_CAVEAT} (drops: wide)" in x.notes
+    assert f"rigid body: {BODY_CAVEAT} (drops: wide)" in x.notes
     _, rows = x.display_rows()
     status = {r[1]: r[-1] for r in rows}
-    assert status["rigid rod"] == "ok (see notes)"
+    assert status["rigid body"] == "ok (see notes)"
     assert x.to_dict()["summary"][0]["caveat"] == BODY_CAVEAT
     # a refused run gave no result: no law_extrapolated, and it is not counted as a run
     assert s.loc["flexible rod", "law_extrapolated"] is None
-    assert s.loc["rigid rod", "law_extrapolated"] is True
+    assert s.loc["rigid body", "law_extrapolated"] is True
     assert any("beyond its verified range in 1 of 1 runs" in n for n in x.notes)
 
 

@@ -18,7 +18,7 @@ def test_json_parses_and_names_units(cli_main, paper_file) -> None:
     assert first["measured"] == {"value": 0.5, "unit": "1", "sigma": 0.03}
     dents = [r for r in doc["comparison"] if r["quantity"] == "delta_p"]
     assert {r["predicted"]["unit"] for r in dents} == {"m"}
-    assert doc["summary"][1]["contacts"] == 4 and doc["summary"][1]["configuration"] == (
+    assert doc["summary"][1]["n_contacts"] == 4 and doc["summary"][1]["configuration"] == (
         "flexible rod"
     )
     # the summary's flags are the bitmask, as everywhere; their names and the count beside them
@@ -88,7 +88,7 @@ def test_the_bar_leaves_stderr_alone_and_gives_way_to_a_compile(monkeypatch) -> 
     report, bar = _progress(quiet=False)
     stderr = sys.stderr
     try:
-        report("rigid rod", 1, 4)
+        report("rigid body", 1, 4)
         assert bar.live.is_started and sys.stderr is stderr
         with _compile_notice.gives_way(bar):
             _compile_notice._clear_displays()  # what a notice does before its line

@@ -36,21 +36,21 @@ def test_a_slender_rod_not_converged_in_modes_is_marked(slender: Explanation) ->
     assert e["predicted"] == pytest.approx(0.3518, abs=5e-5) and e["status"] == "ok"
     check = slender.outcomes[("s70", "flexible rod")].modes
     assert isinstance(check, ModeCheck) and check.shifts["e"] > MODE_SHIFT_MAX
-    assert s.loc["rigid rod", "modes_converged"] is None and s.loc["rigid rod", "caveat"] == ""
+    assert s.loc["rigid body", "modes_converged"] is None and s.loc["rigid body", "caveat"] == ""
     _, rows = slender.display_rows()
     assert {r[1]: r[-1] for r in rows}["flexible rod"] == (f"ok, {MODES_CAVEAT} (see notes)")
     assert f"flexible rod: {flex['caveat']} (drops: s70)" in slender.notes
     doc = {r["configuration"]: r for r in slender.to_dict()["summary"]}
     assert doc["flexible rod"]["modes_converged"] is False
     assert doc["flexible rod"]["caveat"] == flex["caveat"]
-    assert doc["rigid rod"]["modes_converged"] is None
+    assert doc["rigid body"]["modes_converged"] is None
 
 
 def test_the_paper_drops_are_converged_in_modes(paper_explained: Explanation) -> None:
     s = paper_explained.summary
-    flexible = s[s["configuration"] != "rigid rod"]
+    flexible = s[s["configuration"] != "rigid body"]
     assert len(flexible) == 9 and (flexible["modes_converged"] == True).all()  # noqa: E712
-    assert s.loc[s["configuration"] == "rigid rod", "modes_converged"].isna().all()
+    assert s.loc[s["configuration"] == "rigid body", "modes_converged"].isna().all()
     shifts = [max(o.modes.shifts.values()) for o in paper_explained.outcomes.values() if o.modes]
     assert len(shifts) == 9 and max(shifts) < 0.2  # docs/explain.md: at most 0.17 sigma
     assert all(o.modes.refined == (16, 24) for o in paper_explained.outcomes.values() if o.modes)

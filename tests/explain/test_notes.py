@@ -54,9 +54,9 @@ def test_an_inertia_column_runs_the_rigid_rod_alone_without_a_caveat() -> None:
             "e_sigma": 0.03, "inertia": "0.0008 kg*m^2"}  # fmt: skip
     x = explain(Measurements.from_records([drop]))
     s = x.summary.set_index("configuration")
-    rigid = s.loc["rigid rod"]
+    rigid = s.loc["rigid body"]
     assert rigid["ok"] and rigid["status"] == "ok" and rigid["caveat"] == ""
-    flexible = s.drop(index="rigid rod")
+    flexible = s.drop(index="rigid body")
     assert len(flexible) == 3 and (flexible["status"] == INERTIA_NOT_RUN).all()
     assert not flexible["ok"].any()
     assert "'inertia' column" in INERTIA_NOT_RUN and "does not have" in INERTIA_NOT_RUN
@@ -65,4 +65,4 @@ def test_an_inertia_column_runs_the_rigid_rod_alone_without_a_caveat() -> None:
     assert f"{names}: {INERTIA_NOT_RUN} (drops: i)" in x.notes
     assert not any("refuse" in n for n in x.notes)
     _, rows = x.display_rows()
-    assert {r[1]: r[-1] for r in rows}["rigid rod"] == "ok"
+    assert {r[1]: r[-1] for r in rows}["rigid body"] == "ok"

@@ -21,7 +21,7 @@ from impactlab.paper.physics import (
 
 #: explain's configuration -> the reproduction's row of the same physics.
 SAME = {
-    "rigid rod": CONFIGURATIONS[0],
+    "rigid body": CONFIGURATIONS[0],
     "flexible rod": CONFIGURATIONS[1],
     "flexible rod + rate-dependent flat (cowper-symonds, upper estimate)": CONFIGURATIONS[2],
     "flexible rod + rate-dependent flat (johnson-cook, lower estimate)": RATE_LOWER,
@@ -37,9 +37,9 @@ def reproduction():
 def _reproduced(cfg, res) -> dict[str, float]:
     if not cfg.flexible:
         return {"e": rigid_e_gravity_removed(res), "delta_p": res.delta_p,
-                "scar_length": abs(res.contact_travel), "contacts": 1}  # fmt: skip
+                "scar_length": abs(res.contact_travel), "n_contacts": 1}  # fmt: skip
     return {"e": res.e, "delta_p": res.dent_depth, "scar_length": res.scar_length,
-            "contacts": res.n_contacts}  # fmt: skip
+            "n_contacts": res.n_contacts}  # fmt: skip
 
 
 def test_every_row_is_the_reproductions(paper_explained, reproduction) -> None:
@@ -55,7 +55,7 @@ def test_every_row_is_the_reproductions(paper_explained, reproduction) -> None:
             for q in ("e", "delta_p", "scar_length"):
                 assert got[q] == pytest.approx(want[q], rel=1e-12), (name, ang, q)
             s = x.summary[(x.summary["drop"] == label) & (x.summary["configuration"] == name)]
-            assert int(s["contacts"].iloc[0]) == want["contacts"]
+            assert int(s["n_contacts"].iloc[0]) == want["n_contacts"]
             assert s["mu"].iloc[0] == D.EXPERIMENTS[ang].mu  # measured mu beside Eq. 28's
             assert s["mu_apparent"].iloc[0] == pytest.approx(apparent_mu(res), rel=1e-12)
             assert bool(s["ok"].iloc[0]) and s["law_extrapolated"].iloc[0]
@@ -65,7 +65,7 @@ def test_the_flexible_rod_touches_again(paper_explained) -> None:
     """The ringing rod's re-contacts are counted (the paper's drops: 4, 4 and 2)."""
     s = paper_explained.summary
     flexible = s[s["configuration"] == "flexible rod"]
-    assert list(flexible["contacts"]) == [4, 4, 2]
+    assert list(flexible["n_contacts"]) == [4, 4, 2]
 
 
 @pytest.mark.parametrize(

@@ -34,14 +34,14 @@ def test_an_aluminium_flat_runs_no_library_rate_row_and_says_why() -> None:
         assert s.loc[name, "within_2_sigma"] == 0 and s.loc[name, "compared"] == 0
         assert x.result("al", name) is None
     assert any("not run" in n and "(drops: al)" in n for n in x.notes)
-    assert s.loc["flexible rod", "ok"] and s.loc["rigid rod", "ok"]
+    assert s.loc["flexible rod", "ok"] and s.loc["rigid body", "ok"]
 
 
 def test_a_rate_law_of_ones_own_forms_the_rate_rows() -> None:
     x = explain(Measurements.from_records([AL_DROP]), rate_laws=[OWN])
     s = _rows(x, "al")
     name = "flexible rod + rate-dependent flat (cowper-symonds (D = 6500 1/s, q = 4))"
-    assert list(s.index) == ["rigid rod", "flexible rod", name]
+    assert list(s.index) == ["rigid body", "flexible rod", name]
     assert s.loc[name, "ok"] and s.loc[name, "rate_factor"] > 1.0
     assert x.result("al", name).rate == "cowper-symonds (D = 6500 1/s, q = 4)"
     law = RateLaw.custom("cowper-symonds", D="6500 1/s", q=4)
@@ -55,7 +55,7 @@ def test_rate_laws_are_read_or_refused_by_name() -> None:
         configurations(["cowper"])
     with pytest.raises(ValueError, match="given twice"):
         configurations([OWN, "cowper-symonds (D = 6500 1/s, q = 4)"])
-    with pytest.raises(ValueError, match="give it alone"):
+    with pytest.raises(ValueError, match="give 'none' alone"):
         configurations(["none", OWN])
 
 
@@ -64,7 +64,7 @@ def test_a_sphere_runs_the_rigid_configuration_only() -> None:
               "e": 0.9, "e_sigma": 0.03}  # fmt: skip
     x = explain(Measurements.from_records([sphere, AL_DROP]))
     s = _rows(x, "s")
-    assert s.loc["rigid rod", "ok"] and s.loc["rigid rod", "compared"] == 1
+    assert s.loc["rigid body", "ok"] and s.loc["rigid body", "compared"] == 1
     for name in s.index[1:]:
         assert s.loc[name, "status"].startswith("not run: the drop is a sphere's")
     assert _rows(x, "al").loc["flexible rod", "ok"]  # the rod beside it still runs

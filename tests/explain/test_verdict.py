@@ -47,10 +47,10 @@ def test_a_quantity_only_the_rigid_rod_predicts_does_not_make_it_best(
 ) -> None:
     x, without = with_duration
     s = x.summary.set_index("configuration")
-    assert s.loc["rigid rod", "within_2_sigma"] == 0 and s.loc["rigid rod", "compared"] == 3
+    assert s.loc["rigid body", "within_2_sigma"] == 0 and s.loc["rigid body", "compared"] == 3
     assert s.loc["flexible rod", "within_2_sigma"] == 2
     z = x.comparison.set_index(["configuration", "quantity"])["z"]  # as docs/explain.md states
-    rigid = [round(z[("rigid rod", q)], 1) for q in ("e", "delta_p", "duration")]
+    rigid = [round(z[("rigid body", q)], 1) for q in ("e", "delta_p", "duration")]
     assert rigid == [-9.9, 13.7, -8.3]
     assert [round(z[("flexible rod", q)], 2) for q in ("e", "delta_p")] == [0.13, 0.21]
     v = x.verdict("20 deg")
@@ -64,9 +64,12 @@ def test_a_quantity_only_the_rigid_rod_predicts_does_not_make_it_best(
     assert without.verdict("20 deg").quantities == v.quantities
     assert not any(n.startswith("best: ") for n in without.notes)  # nothing left out
     best = x.to_dict()["best"]
-    assert best == [{"drop": "20 deg", "configuration": "flexible rod",
+    assert best == [{"drop": "20 deg", "configuration": "flexible rod", "agrees": True,
+                     "least_disagreeing": None, "undecided": [],
                      "ranked_over": ["e", "delta_p"], "left_out": ["duration"],
-                     "reason": v.reason}]  # fmt: skip
+                     "within_2_sigma": 2, "chi2": {"value": v.chi2, "unit": "1"},
+                     "provisional": False, "caveat": None, "reason": v.reason}]  # fmt: skip
+    assert "(2 of 2 within 2 sigma, chi2 0.06259)" in v.reason
 
 
 def test_none_is_named_best_that_agrees_with_fewer_values_than_another() -> None:
@@ -82,10 +85,12 @@ def test_none_is_named_best_that_agrees_with_fewer_values_than_another() -> None
     assert x.best("d") is None and v.configuration is None
     assert v.quantities == ("e",) and v.left_out == ("duration",)
     assert v.reason.startswith("none is named: flexible rod ranks first over e, the quantities")
-    assert "but rigid rod agrees with more of the measured values (1 against 0)" in v.reason
-    # with every ok configuration agreeing with nothing, the lowest chi2 is named
+    assert "but rigid body agrees with more of the measured values (1 against 0)" in v.reason
+    # with every ok configuration agreeing with nothing, none is named best: the lowest chi2
+    # is the least disagreeing one
     outcomes[("d", RIGID.name)] = Outcome("ok", True, {"e": 0.8, "duration": 2.0e-3})
-    assert _explained(DROP, outcomes).best("d") == FLEXIBLE.name
+    v = _explained(DROP, outcomes).verdict("d")
+    assert v.configuration is None and v.least_disagreeing == FLEXIBLE.name
 
 
 def test_configurations_that_share_no_quantity_name_none() -> None:
@@ -112,4 +117,4 @@ def test_the_rigid_rod_stays_best_where_it_agrees_over_the_shared_quantities() -
     }
     x = _explained(DROP, outcomes)
     assert x.best("d") == RIGID.name
-    assert x.verdict("d").reason.startswith("rigid rod: the most values within 2 sigma")
+    assert x.verdict("d").reason.startswith("rigid body: the most values within 2 sigma")

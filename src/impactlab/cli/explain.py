@@ -3,10 +3,12 @@
 impactlab explain DROPS.csv|DROPS.toml [--law NAME] [--rate LAW ...] [--json] [--out DIR]
                   [--quiet]
 
-Each drop runs with the rigid rod, the flexible rod and the flexible rod on a rate-dependent
+Each drop runs with the rigid body, the flexible rod and the flexible rod on a rate-dependent
 flat (docs/explain.md); the table sets every measured value beside each prediction (z, within
-2 sigma). ``--out DIR`` writes explain.csv and explain.json there (a file of that name that
-impactlab explain did not write stops the command before any work).
+2 sigma), and a verdict line per drop says which configuration explains it best, or that none
+agrees. ``--out DIR`` writes explain.csv and explain.json there (a file of that name that
+impactlab explain did not write, or a folder that cannot be made or written, stops the command
+before any work).
 """
 
 from __future__ import annotations
@@ -89,7 +91,7 @@ def explain_cmd(
         bool, typer.Option("--quiet/--no-quiet", "-q", help="No progress display.")
     ] = False,
 ) -> None:
-    """Which physics explains measured drops: the rigid rod, the flexible rod and the flexible
+    """Which physics explains measured drops: the rigid body, the flexible rod and the flexible
     rod on a rate-dependent flat, nothing tuned, beside every measured value.
 
     Example: impactlab explain drops.csv --out explained
@@ -101,7 +103,7 @@ def explain_cmd(
     if out is not None:
         try:
             check_folder(out, "--out")  # before any work
-        except (FileExistsError, NotADirectoryError) as exc:
+        except (FileExistsError, NotADirectoryError, PermissionError) as exc:
             raise UserError(str(exc)) from None
     report, bar = _progress(quiet)
     try:
@@ -120,7 +122,9 @@ def explain_cmd(
         print(json.dumps(doc, indent=2))
         return
     _show(result)
-    for note in (*_stated(), *result.notes):
+    for drop in dict.fromkeys(result.summary["drop"]):  # the verdicts say the "best: " notes
+        console.print(Text(f"verdict ({drop}): {result.verdict(drop).reason}"), soft_wrap=True)
+    for note in (*_stated(), *(n for n in result.notes if not n.startswith("best: "))):
         console.print(Text(f"note: {note}"), soft_wrap=True)
     for k, v in files.items():
         console.print(Text(f"{k}: {v}"), soft_wrap=True)

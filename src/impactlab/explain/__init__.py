@@ -1,4 +1,4 @@
-"""Which physics explains measured drops: each drop of a measurements file with the rigid rod,
+"""Which physics explains measured drops: each drop of a measurements file with the rigid body,
 the flexible rod (re-contacts of a ringing rod) and the flexible rod on a rate-dependent flat,
 nothing tuned, every measured quantity beside its prediction (docs/explain.md)."""
 

@@ -1,5 +1,5 @@
 """``explain``: which physics explains measured drops. Every drop of a measurements file runs
-in each configuration (the rigid rod, the flexible rod, the flexible rod on a rate-dependent
+in each configuration (the rigid body, the flexible rod, the flexible rod on a rate-dependent
 flat; ``explain.configurations``) with nothing tuned, and each measured quantity is set beside
 its prediction, made as the calibration makes it (``explain.runs``)."""
 
@@ -12,6 +12,7 @@ from pathlib import Path
 
 from impactlab.calibrate.measurements import Measurements, read_measurements
 from impactlab.contact import get_law
+from impactlab.dynamics.drop import ELASTIC_LAWS
 from impactlab.explain.configurations import Configuration, configurations, rate_not_applicable
 from impactlab.explain.correlated import drop_pairs
 from impactlab.explain.modes import check_modes
@@ -21,7 +22,7 @@ from impactlab.explain.runs import Outcome, drop_alone, drop_flat, run_on_drop
 from impactlab.explain.tables import comparison_table, summary_table
 from impactlab.explain.verdict import verdict
 
-__all__ = ["FRICTION", "INERTIA_NOT_RUN", "SPHERE_NOT_RUN", "explain"]
+__all__ = ["ELASTIC_NOT_RUN", "FRICTION", "INERTIA_NOT_RUN", "SPHERE_NOT_RUN", "explain"]
 
 #: The friction model of every configuration, with each drop's measured mu as its coefficient.
 FRICTION = "coulomb"
@@ -35,6 +36,12 @@ INERTIA_NOT_RUN = (
     "not run: the drop gives the rod's moment of inertia (its 'inertia' column), an input the "
     "flexible rod does not have: its inertia follows from its length, mass and material as a "
     "beam's; leave the column out to run the flexible rows (the rigid rod uses it as given)"
+)
+
+#: Why a rate row does not run with an elastic contact law (``{law}``: its name).
+ELASTIC_NOT_RUN = (
+    "not run: the {law!r} law is elastic (no yield strength for the rate to raise); give no "
+    "rate row (--rate none; rate_laws=[]), or an elastic-plastic law (--law; law=)"
 )
 
 Progress = Callable[[str, int, int], None]
@@ -53,19 +60,24 @@ def _measurements(measurements: str | Path | Measurements) -> Measurements:
     mu = meas.inputs["mu"]
     missing = [meas.labels[d] for d in range(meas.n_drops) if not math.isfinite(mu[d])]
     if missing:
+        some = len(missing) < meas.n_drops  # the column is there, a cell of it empty
         raise ValueError(
-            f"drop(s) {', '.join(map(repr, missing))} give no mu: explain runs every drop with "
-            "its measured mu as the Coulomb coefficient (nothing tuned); add a mu column"
+            f"drop(s) {', '.join(map(repr, missing))} give no mu"
+            f"{' (an empty mu cell)' if some else ''}: explain runs every drop with its "
+            "measured mu as the Coulomb coefficient (nothing tuned); "
+            f"{'give a mu for each drop' if some else 'add a mu column'}"
         )
     if meas.n_values == 0:
         raise ValueError("the measurements hold no measured value: nothing to explain")
     return meas
 
 
-def _not_run(config: Configuration, meas: Measurements, d: int) -> str | None:
-    """Why ``config`` does not run on drop ``d`` (None: it runs)."""
+def _not_run(config: Configuration, meas: Measurements, d: int, law: str) -> str | None:
+    """Why ``config`` with the contact ``law`` does not run on drop ``d`` (None: it runs)."""
     if not config.flexible:
         return None
+    if config.rate is not None and law.strip().lower() in ELASTIC_LAWS:
+        return ELASTIC_NOT_RUN.format(law=law)
     if meas.categories[d]["body"] == "sphere":
         return SPHERE_NOT_RUN
     inertia = meas.inputs.get("inertia")
@@ -83,7 +95,7 @@ def explain(
 ) -> Explanation:
     """Which physics explains measured drops, nothing tuned: each drop of ``measurements`` (a
     measurements file, CSV or TOML, docs/calibrate.md, or a ``Measurements``) with the rigid
-    rod, the flexible rod and the flexible rod on a rate-dependent flat, each with the contact
+    body, the flexible rod and the flexible rod on a rate-dependent flat, each with the contact
     ``law`` and Coulomb friction of the drop's measured mu, every measured quantity beside its
     prediction (z, within 2 sigma) and per drop and configuration a summary.
 
@@ -91,10 +103,12 @@ def explain(
     estimate) and Johnson-Cook (lower) for a low-carbon steel flat, not run on another flat
     (the result says why); else rate laws as ``simulate``'s ``rate`` takes them
     (``"cowper-symonds(D=6500 1/s, q=4)"``, a ``RateLaw``), the flat's own constants, run on
-    every rod's drop; ``[]``: none. A sphere's drop, and a rod's drop that gives its
+    every rod's drop; ``[]`` (or ``["none"]``, ``[None]``): none; with an elastic ``law``
+    (Hertz) the rate rows do not run. A sphere's drop, and a rod's drop that gives its
     ``inertia`` (an input the flexible rod does not have), run the rigid configuration only.
-    Each ok flexible run is checked in its modes with twice its mode counts
-    (``explain.modes``: a row they move by more than half a sigma is marked, its numbers kept).
+    Each ok flexible run is checked in its modes with twice its mode counts, at most 128
+    (``explain.modes``: a row they move by more than half a sigma is marked, its numbers kept;
+    a row at the limit is not checked, and says so).
     A drop's correlation coefficients make its chi2 z^T R^-1 z (``explain.correlated``).
     ``progress(configuration, done, total)`` is called after each run. ValueError for a drop
     without mu, a law or rate law not known, or a file the calibration's reader refuses."""
@@ -105,7 +119,7 @@ def explain(
     total, done = meas.n_drops * len(configs), 0
     for config in configs:
         for d, label in enumerate(meas.labels):
-            reason = _not_run(config, meas, d)
+            reason = _not_run(config, meas, d, law)
             if reason is None:
                 alone = drop_alone(meas, d)
                 out = run_on_drop(config, alone, law, FRICTION)

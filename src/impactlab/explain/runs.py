@@ -37,12 +37,13 @@ from impactlab.calibrate.models import (
     status_message,
     whole_materials,
 )
+from impactlab.contact.kernels import P_ESTAR, P_NU, P_R, P_SY
 from impactlab.contact.rate import RateLaw
 from impactlab.dynamics.drop_result import DropResult
 from impactlab.dynamics.input_checks import gravity_value
 from impactlab.explain.configurations import Configuration
 from impactlab.flags import FLAG_LAW_EXTRAPOLATED
-from impactlab.materials import Material
+from impactlab.materials import Material, first_yield_factor
 from impactlab.sweep.flexible import FLEXIBLE_BODY
 from impactlab.sweep.models import Statics, material_for
 
@@ -78,10 +79,12 @@ class Outcome:
         return self.result is not None
 
 
-def scaled_modes(counts: tuple[int, int], factor: int) -> tuple[int, int]:
-    """The mode ``counts`` (n_axial, n_bending) times ``factor``, each at most ``MAX_MODES``."""
+def scaled_modes(counts: tuple[int, int], factor: float) -> tuple[int, int]:
+    """The mode ``counts`` (n_axial, n_bending) times ``factor`` (rounded up), each at most
+    ``MAX_MODES``."""
     axial, bending = counts
-    return min(MAX_MODES, axial * factor), min(MAX_MODES, bending * factor)
+    return (min(MAX_MODES, math.ceil(axial * factor)),
+            min(MAX_MODES, math.ceil(bending * factor)))  # fmt: skip
 
 
 class _OneCase:
@@ -92,7 +95,7 @@ class _OneCase:
 
     identity = "explain"
 
-    def __init__(self, rate: RateLaw | None, refine: int = 1) -> None:
+    def __init__(self, rate: RateLaw | None, refine: float = 1) -> None:
         self.rate = rate
         self.refine = refine
         self.results: list[Any] = []
@@ -191,11 +194,12 @@ def run_on_drop(
     drop: Measurements,
     law: str,
     friction: str = "coulomb",
-    refine: int = 1,
+    refine: float = 1,
 ) -> Outcome:
     """``config`` with the contact ``law`` and ``friction`` on the one-drop ``drop``
     (:func:`drop_alone`): predict with no free parameter, through :class:`_OneCase`; a
-    flexible rod with its mode counts times ``refine`` (1: as FlexibleRod builds them)."""
+    flexible rod with its mode counts times ``refine`` (1: as FlexibleRod builds them; 1/2:
+    half of them, rounded up)."""
     model = CandidateModel(law, friction, FLEXIBLE_BODY if config.flexible else None)
     case = _OneCase(config.rate, refine)
     pred = predict(model, drop, (), np.empty((1, 0)), evaluator=case)
@@ -217,25 +221,44 @@ def run_on_drop(
 
 
 def sequence_values(result: Any, gravity: float | bool = True) -> dict[str, Any]:
-    """What the run's whole sequence says beside the predictions: ``contacts`` (the tip's and
-    the other end's, re-contacts of a ringing rod included; a rigid impact: 1), ``mu_apparent``
-    (the paper's Eq. 28 on the rigid-body velocities, the gravity impulse removed),
-    ``max_delta_ratio`` and the law's range ``fitted_delta_ratio_max`` (in the law's own
-    reference), ``rate_factor`` and the ``flags`` (names); None values when nothing ran."""
+    """What the run's whole sequence says beside the predictions: ``n_contacts`` (the number
+    of contacts, the tip's and the other end's, re-contacts of a ringing rod included; a rigid
+    impact: 1), ``mu_apparent`` (the paper's Eq. 28 on the rigid-body velocities, the gravity
+    impulse removed), ``max_delta_ratio`` and the law's range ``fitted_delta_ratio_max`` (in
+    the law's own reference), ``law_range`` (that range in words: verified against FE or its
+    stand-in), ``delta_c`` (Jackson-Green's critical interference of the pair the law ran
+    with, a rate row's with its rate-raised S_y [m]), ``rate_factor``, ``strain_rate`` (a rate
+    row's [1/s]; NaN for another) and the ``flags``; None values when nothing ran."""
     if result is None:
         return dict.fromkeys(
-            ("contacts", "mu_apparent", "max_delta_ratio", "fitted_delta_ratio_max",
-             "rate_factor", "flags"),
+            ("n_contacts", "mu_apparent", "max_delta_ratio", "fitted_delta_ratio_max",
+             "law_range", "delta_c", "rate_factor", "strain_rate", "flags"),
         )  # fmt: skip
     drop = isinstance(result, DropResult)
     return {
-        "contacts": int(result.n_contacts) if drop else 1,
+        "n_contacts": int(result.n_contacts) if drop else 1,
         "mu_apparent": float(result.mu_apparent) if drop else _rigid_mu(result, gravity),
         "max_delta_ratio": float(result.max_delta_ratio),
         "fitted_delta_ratio_max": float(result.fitted_delta_ratio_max),
+        "law_range": result.law_range,
+        "delta_c": _delta_c(result),
         "rate_factor": float(result.rate_factor) if drop else 1.0,
+        "strain_rate": float(result.strain_rate) if drop and result.rate else math.nan,
         "flags": int(result.flags),
     }
+
+
+def _delta_c(result: Any) -> float:
+    """Jackson-Green's delta_c = (pi C(nu) S_y / (2 E*))^2 R [m] (the paper's Eq. 15) of the
+    pair the result's law ran with (E*, tip radius, the S_y and nu of the body that yields
+    first; a rate row's flat rate-raised); NaN where the law's parameters are not known."""
+    law = getattr(result, "_law", None)
+    params = law[1] if law is not None else getattr(result, "_law_params", None)
+    if params is None:
+        return math.nan
+    p = np.asarray(params, dtype=np.float64)
+    c = first_yield_factor(float(p[P_NU]))
+    return float((math.pi * c * p[P_SY] / (2.0 * p[P_ESTAR])) ** 2 * p[P_R])
 
 
 def _rigid_mu(result: Any, gravity: float | bool) -> float:

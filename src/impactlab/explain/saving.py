@@ -12,6 +12,7 @@ all.
 from __future__ import annotations
 
 import json
+import os
 from pathlib import Path
 
 from impactlab._files import write_text_atomic
@@ -46,11 +47,24 @@ def written_by_explain(path: Path) -> bool:
 
 
 def check_folder(folder: Path, option: str = "folder") -> None:
-    """FileExistsError (NotADirectoryError for a file given as the folder) before anything is
-    written when a file of the explanation is in the way; ``option`` names the folder as the
-    caller took it (``--out``)."""
+    """FileExistsError (NotADirectoryError for a file given as the folder or standing where a
+    folder above it would be made; PermissionError for a folder that cannot be made or written
+    to) before anything is written or run when a file of the explanation is in the way;
+    ``option`` names the folder as the caller took it (``--out``)."""
     if folder.exists() and not folder.is_dir():
         raise NotADirectoryError(f"{option} {str(folder)!r} is a file; give a folder")
+    above = next((p for p in (folder, *folder.absolute().parents) if p.exists()), None)
+    if above is not None and not above.is_dir():
+        raise NotADirectoryError(
+            f"{option} {str(folder)!r}: {str(above)!r} is a file, so the folder cannot be made "
+            "under it; give a folder"
+        )
+    if above is not None and not os.access(above, os.W_OK | os.X_OK):
+        what = "written to" if above == folder else f"made in {str(above)!r}"
+        raise PermissionError(
+            f"{option} {str(folder)!r} cannot be {what} (no write permission); give a folder "
+            "you can write to"
+        )
     paths = [folder / CSV_NAME, folder / JSON_NAME]
     for p in paths:
         if p.is_dir():

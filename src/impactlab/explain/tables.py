@@ -42,8 +42,9 @@ COMPARISON_COLUMNS = ("drop", "configuration", "quantity", "measured", "sigma", 
 #: The columns of the summary (one row per drop and configuration).
 SUMMARY_COLUMNS = (
     "drop", "configuration", "status", "ok", "within_2_sigma", "compared", "n_measured", "chi2",
-    "contacts", "mu", "mu_apparent", "max_delta_ratio", "fitted_delta_ratio_max",
-    "law_extrapolated", "rate_factor", "flags", "flag_names", "modes_converged", "caveat",
+    "n_contacts", "mu", "mu_apparent", "max_delta_ratio", "fitted_delta_ratio_max", "delta_c",
+    "law_range", "law_extrapolated", "rate_factor", "strain_rate", "flags", "flag_names",
+    "modes_converged", "caveat",
 )  # fmt: skip
 #: The caveat of an ok rigid row whose drop's rod the flexible rows refuse as a body.
 BODY_CAVEAT = (
@@ -113,14 +114,15 @@ def summary_table(
 ) -> pd.DataFrame:
     """Per drop and configuration: the values within 2 sigma, of those ``compared`` (predicted)
     and ``n_measured``; chi2 = sum of z^2 over the measured ones, z^T R^-1 z where the drop
-    gives correlation coefficients (NaN when one has no prediction); the run's contacts,
-    Eq. 28's ``mu_apparent`` beside the drop's measured ``mu``, ``max_delta_ratio`` and the
-    law's verified range, ``law_extrapolated`` (None where no result came), the rate factor,
-    the ``flags`` (bitmask) and their ``flag_names``,
+    gives correlation coefficients (NaN when one has no prediction); the run's number of
+    contacts ``n_contacts``, Eq. 28's ``mu_apparent`` beside the drop's measured ``mu``,
+    ``max_delta_ratio`` and the law's verified range, the pair's ``delta_c``, the ``law_range``
+    in words, ``law_extrapolated`` (None where no result came), the rate factor and a rate
+    row's ``strain_rate``, the ``flags`` (bitmask) and their ``flag_names``,
     ``modes_converged`` (an ok flexible row checked with twice its modes, ``explain.modes``;
     None where not checked) and a ``caveat`` ("" for none): :data:`BODY_CAVEAT` on an ok
     rigid row whose rod the flexible rows refuse, what twice the modes change on a flexible
-    row not converged in them."""
+    row not converged in them, that a row at the mode limit is not checked."""
     rows: list[dict[str, Any]] = []
     grouped = dict(tuple(comparison.groupby(["drop", "configuration"], sort=False)))
     for d, label in enumerate(meas.labels):
@@ -140,16 +142,18 @@ def summary_table(
                 "drop": label, "configuration": cfg.name, "status": out.status, "ok": out.ok,
                 "within_2_sigma": int(compared["within_2_sigma"].sum()),
                 "compared": len(compared), "n_measured": len(part), "chi2": chi2,
-                "contacts": seq["contacts"], "mu": float(meas.inputs["mu"][d]),
+                "n_contacts": seq["n_contacts"], "mu": float(meas.inputs["mu"][d]),
                 "mu_apparent": seq["mu_apparent"], "max_delta_ratio": seq["max_delta_ratio"],
                 "fitted_delta_ratio_max": seq["fitted_delta_ratio_max"],
+                "delta_c": seq["delta_c"], "law_range": seq["law_range"],
                 "law_extrapolated": out.law_extrapolated if out.ran else None,
-                "rate_factor": seq["rate_factor"], "flags": seq["flags"],
+                "rate_factor": seq["rate_factor"], "strain_rate": seq["strain_rate"],
+                "flags": seq["flags"],
                 "flag_names": flag_text(seq["flags"]),
                 "modes_converged": None if out.modes is None else out.modes.converged,
                 "caveat": _caveat(cfg, out, refused),
             })  # fmt: skip
     table = pd.DataFrame(rows, columns=list(SUMMARY_COLUMNS))
-    for name in ("contacts", "flags"):  # blank where nothing ran
+    for name in ("n_contacts", "flags"):  # blank where nothing ran
         table[name] = table[name].astype("Int64")
     return table

@@ -1,0 +1,91 @@
+"""Each row states its law's range, delta_c and (a rate row) its strain rate, the JSON its
+sources; the summary counts contacts as ``n_contacts``; an ``--out`` that cannot be made is
+refused before any run; error texts fit their situation; a library rate law keeps its label
+however asked for; the rigid configuration is the drop's rigid body, a sphere's too."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+import impactlab.explain
+from impactlab.calibrate.measurements import Measurements
+from impactlab.explain import configurations, explain
+from impactlab.explain.api import ELASTIC_NOT_RUN
+from impactlab.explain.configurations import LIBRARY_RATES, RIGID
+from impactlab.explain.result import NOTHING_TUNED
+
+CS, JC = (c.name for c in LIBRARY_RATES)
+DROP = {"label": "a", "angle": "20 deg", "vy": -1.41, "mu": 0.2, "e": 0.5, "e_sigma": 0.03}
+
+
+def test_rows_state_their_range_delta_c_and_strain_rate(paper_explained) -> None:
+    s = paper_explained.summary.set_index(["drop", "configuration"])
+    assert "contacts" not in s.columns and list(s.xs("20 deg")["n_contacts"]) == [1, 4, 4, 4]
+    cs = s.loc[("20 deg", CS)]
+    assert cs["strain_rate"] == pytest.approx(485.9, abs=0.1)
+    assert "E*/S_y = 136.2" in cs["law_range"] and cs["law_range"].startswith("verified")
+    flexible = s.loc[("20 deg", "flexible rod")]
+    assert math.isnan(flexible["strain_rate"]) and "E*/S_y = 360.3" in flexible["law_range"]
+    for name in ("flexible rod", CS, JC, RIGID.name):  # the ghaednia law's reference: delta_c
+        res = paper_explained.result("20 deg", name)
+        ref = res.delta_max / res.max_delta_ratio
+        assert s.loc[("20 deg", name), "delta_c"] == pytest.approx(ref, rel=1e-9)
+    assert cs["delta_c"] / flexible["delta_c"] == pytest.approx(7.0, abs=0.1)  # S_y raised
+    doc = paper_explained.to_dict()
+    row = next(r for r in doc["summary"] if r["configuration"] == CS)
+    assert row["strain_rate"]["unit"] == "1/s" and row["delta_c"]["unit"] == "m"
+    assert row["n_contacts"] == 4 and "contacts" not in row and row["law_range"]
+    refs = doc["references"]
+    assert len(refs) == len(set(refs)) and any("doi:10.1007/s00419-015-1108-2" in r for r in refs)
+    assert any("Cowper" in r for r in refs)
+
+
+def test_out_under_a_file_is_refused_before_any_run(cli_main, paper_file, tmp_path,
+                                                    monkeypatch) -> None:  # fmt: skip
+    def never(*args: object, **kwargs: object) -> None:
+        raise AssertionError("ran")
+
+    monkeypatch.setattr(impactlab.explain, "explain", never)
+    (tmp_path / "afile").write_text("")
+    for out in (tmp_path / "afile" / "sub", tmp_path / "afile" / "sub" / "deeper"):
+        code, stdout, err = cli_main("explain", str(paper_file), "-q", "--out", str(out))
+        assert code == 2 and stdout == "" and err.count("\n") == 1, err
+        assert err.startswith(f"error: --out {str(out)!r}: ") and "is a file" in err
+
+
+def test_error_texts_fit_the_situation() -> None:
+    partial = [DROP, {**DROP, "label": "b", "mu": math.nan}]
+    with pytest.raises(ValueError, match=r"'b' give no mu \(an empty mu cell\).*give a mu for"):
+        explain(Measurements.from_records(partial))
+    assert len(configurations([None])) == len(configurations(["none"])) == 2
+    with pytest.raises(ValueError, match="give 'none' alone for no rate row"):
+        configurations([None, "cowper-symonds"])
+    x = explain(Measurements.from_records([DROP]), law="hertz")
+    status = x.summary.set_index("configuration")["status"]
+    for name in (CS, JC):
+        assert status[name] == ELASTIC_NOT_RUN.format(law="hertz")
+    assert "--rate none" in ELASTIC_NOT_RUN and "rate=None" not in ELASTIC_NOT_RUN
+
+
+def test_a_library_law_keeps_its_label_and_is_run_once() -> None:
+    assert [c.name for c in configurations(["cowper-symonds", "johnson-cook"])[2:]] == [CS, JC]
+    with pytest.raises(ValueError, match=r"the same law .* given twice"):
+        configurations(["cowper-symonds", "cowper-symonds(D=40.4 1/s, q=5)"])
+    own = configurations(["cowper-symonds(D=40.4 1/s, q=5)"])[2]
+    assert own.rate is not None and own.rate.fitted_for is None and "estimate" not in own.name
+
+
+def test_the_rigid_configuration_is_the_drops_rigid_body() -> None:
+    assert RIGID.name == "rigid body" and "rigid sphere" in RIGID.description
+    sphere = {"label": "s", "body": "sphere", "radius": "5 mm", "vy": -1.0, "mu": 0.2,
+              "e": 0.9, "e_sigma": 0.03}  # fmt: skip
+    x = explain(Measurements.from_records([sphere]))
+    assert x.verdict("s").configuration in (RIGID.name, None)
+    assert "rigid rod" not in x.verdict("s").reason
+
+
+def test_the_rate_rows_say_the_rod_is_raised_so_that_the_flat_yields_first() -> None:
+    for text in (LIBRARY_RATES[0].description, NOTHING_TUNED):
+        assert "1.5 times the raised flat's" in text and "only the flat yields" in text
