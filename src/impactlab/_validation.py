@@ -319,8 +319,15 @@ def read_text_file(path: str | os.PathLike[str], kind: str, what: str = "") -> s
     format (``"TOML"``, ``"JSON"``, ``"CSV"``), ``what`` how a message names it (``"--config
     'a.toml'"``). ValueError, one line, when it is not UTF-8 text: ``"--config 'a.toml' is not a
     text file (TOML is UTF-8 text; byte 1 is 0xff)"`` (``"not a text file (...)"`` without
-    ``what``). OSError (a missing or unreadable file) passes through."""
+    ``what``); UTF-16 text (a byte order mark FF FE or FE FF) is named as such. OSError (a
+    missing or unreadable file) passes through."""
     data = Path(path).read_bytes()
+    if data.startswith((b"\xff\xfe", b"\xfe\xff")):  # Excel's "Unicode Text", Notepad's "Unicode"
+        problem = (
+            f"UTF-16 text: save the file as UTF-8 ({kind} is read as UTF-8; Excel: 'CSV UTF-8'; "
+            "an editor: encoding UTF-8)"
+        )
+        raise ValueError(f"{what} is {problem}" if what else problem)
     skip = 3 if data.startswith(b"\xef\xbb\xbf") else 0
     try:
         return data[skip:].decode("utf-8")

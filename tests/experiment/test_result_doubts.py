@@ -42,10 +42,11 @@ def heavy() -> Any:
 def test_an_impossible_result_is_not_ok(heavy: Any) -> None:
     """It was ok although its warnings said e = 1065, 'no impact gives it'."""
     assert not heavy.errors and not heavy.ok
-    rod, e = heavy.doubts
+    geometry, rod, e = heavy.doubts
     assert rod.startswith("rod: the mass and the inertia do not fit")
+    assert geometry.startswith("the marker geometry is in doubt") and "k^2 = I/m is off" in geometry
     assert e.startswith("inversion: dv_cy") and "no impact gives it" in e
-    assert set(heavy.doubts) <= set(heavy.warnings)
+    assert {rod, e} <= set(heavy.warnings) and f"markers: {geometry}" in heavy.warnings
     data = heavy.to_dict()
     assert data["ok"] is False and data["doubts"] == list(heavy.doubts)
     assert "ok=False" in repr(heavy)
@@ -56,7 +57,7 @@ def test_an_impossible_result_is_not_ok(heavy: Any) -> None:
 def test_the_rods_note_is_listed_once(heavy: Any) -> None:
     """The inversion checks the rod too: its ``inversion: rod: ...`` repeated the doubt."""
     (rod,) = [w for w in heavy.warnings if "the mass and the inertia do not fit" in w]
-    assert rod == heavy.doubts[0] and rod.startswith("rod: ")
+    assert rod == heavy.doubts[1] and rod.startswith("rod: ")
 
 
 def test_an_implausible_duration_is_not_ok_and_the_table_shows_the_model() -> None:
@@ -92,7 +93,8 @@ def test_the_command_line_marks_it_not_ok_with_exit_status_0(
             "--rod", str(rod))  # fmt: skip
     code, out, err = cli_main(*args, "--json")
     data = json.loads(out)
-    assert code == 0 and data["ok"] is False and len(data["doubts"]) == 2
+    assert code == 0 and data["ok"] is False and len(data["doubts"]) == 3
     code, out, err = cli_main(*args)
-    assert code == 0 and "no: the result is implausible" in out
+    assert code == 0 and "no: the marker geometry is in doubt and" in out
+    assert "the result is implausible (see the" in out
     assert "warning: rod: the mass and the inertia do not fit" in err

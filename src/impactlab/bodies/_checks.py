@@ -83,7 +83,7 @@ def tip_width_problem(
         return None
     rim = math.degrees(math.acos(2.0 * tip_radius / diameter))
     return (
-        f"{what} ({diameter!r} m) exceeds twice the tip radius ({2.0 * tip_radius!r} m): "
+        f"{what} ({diameter:.4g} m) exceeds twice the tip radius ({2.0 * tip_radius:.4g} m): "
         "the rod's end face would stand out beside its hemispherical tip, and below "
         f"{rim:.3g} deg to the flat its rim would strike before the tip (allowed: "
         "diameter <= 2 tip_radius; the tip as wide as the rod or wider)"

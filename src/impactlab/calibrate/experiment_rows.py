@@ -130,6 +130,8 @@ def append_experiment(
         )
     note = f"doubtful drop {label!r} (its analysis is not ok): {'; '.join(why)}" if why else None
     meas = append_record(path, rec, comment=note)
+    for text in _default_materials(meas, rec, label):
+        warnings.warn(f"{path}: {text}", CalibrationWarning, stacklevel=2)
     if why:
         warnings.warn(
             f"{path}: drop {label!r} appended though its analysis is not ok ({'; '.join(why)}); "
@@ -138,6 +140,31 @@ def append_experiment(
             stacklevel=2,
         )
     return meas
+
+
+#: The material columns a drop without them takes by default, and how to name them.
+_MATERIALS = {
+    "flat_material": ("the flat", "--flat NAME (flat= in Python)"),
+    "body_material": ("the rod", "body_material= in Python"),
+}
+
+
+def _default_materials(meas: Measurements, rec: dict[str, Any], label: str) -> list[str]:
+    """The warnings for a drop ``rec`` (the last of ``meas``) that names no material of a
+    column whose earlier drops name another one: it takes the calibration's default."""
+    out = []
+    for column, (what, how) in _MATERIALS.items():
+        if column in rec or meas.n_drops < 2:
+            continue
+        taken = meas.categories[-1].get(column)
+        others = sorted({str(c[column]) for c in meas.categories[:-1] if c.get(column)} - {taken})
+        if others:
+            out.append(
+                f"drop {label!r} names no material of {what} and takes the default {taken}, "
+                f"while earlier drops name {', '.join(others)}: give {how}, or edit "
+                f"its {column} field"
+            )
+    return out
 
 
 def not_ok(result: Any) -> list[str]:

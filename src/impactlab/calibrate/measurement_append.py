@@ -8,16 +8,19 @@ unit, and an angle in a column without a unit is written with its unit (``"20 de
 the file lacks is added at the end of the header, with its unit (``[deg]`` for an angle, SI
 otherwise), and every earlier row gets an empty field there (blank: not given, as before). A new
 file gets a header in SI units (angles in degrees). Each number is written with 12 significant
-digits. The file is written whole or not at all. The drop's label must read back as written
-(:func:`check_label`).
+digits. The file is written whole or not at all, under an exclusive lock on its folder, so that
+concurrent appends (a batch of analyses run in parallel) keep every drop. The drop's label must
+read back as written (:func:`check_label`).
 """
 
 from __future__ import annotations
 
+import contextlib
 import csv
 import io
 import math
-from collections.abc import Mapping
+import os
+from collections.abc import Iterator, Mapping
 from pathlib import Path
 from typing import Any
 
@@ -64,6 +67,13 @@ def append_record(
         )
     check_label(str(label), f"{p}: label")
     row = parse_row(0, record, {})
+    with _locked(p):  # read, check and replace as one step for concurrent appends
+        _append(p, row, comment)
+    return read_measurements(p)
+
+
+def _append(p: Path, row: Row, comment: str | None) -> None:
+    """:func:`append_record`'s read, check and replace of ``p`` (under its lock)."""
     data = p.read_bytes() if p.exists() else b""
     text = read_text(p, "CSV") if data.strip() else ""
     lines = text.splitlines(keepends=True)
@@ -99,7 +109,34 @@ def append_record(
     new = "".join(lines)
     Measurements.from_records(_records(new), source=str(p))  # refused before it is written
     write_bytes_atomic(p, bom + new.encode("utf-8"))
-    return read_measurements(p)
+
+
+@contextlib.contextmanager
+def _locked(p: Path) -> Iterator[None]:
+    """An exclusive lock (``fcntl.flock``) on the folder that holds ``p`` (the file a symbolic
+    link names), held while the block runs, so that appends from several processes each see
+    the drops of the others; the folder, not the file, since the write replaces the file, and
+    no lock file is left beside it. Without ``fcntl`` (Windows), or where the folder cannot be
+    opened (then the write fails on its own), the block runs unlocked."""
+    target = p.resolve() if p.is_symlink() else p
+    try:
+        import fcntl
+    except ImportError:  # pragma: no cover - not on POSIX
+        yield
+        return
+    try:
+        fd = os.open(target.parent, os.O_RDONLY)
+    except OSError:
+        yield
+        return
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX)
+        try:
+            yield
+        finally:
+            fcntl.flock(fd, fcntl.LOCK_UN)
+    finally:
+        os.close(fd)
 
 
 def check_label(label: str, name: str = "label") -> None:

@@ -60,7 +60,8 @@ def append_drop(
     path: Path, res: ExperimentResult, label: str, include_doubtful: bool
 ) -> tuple[int, list[str]] | UserError:
     """(drops in the file, the warnings given) after appending the drop of ``res`` to ``path``,
-    or the UserError saying why it was not (reported after the analysis is shown)."""
+    or the UserError saying why it was not (reported after the analysis is shown): a drop the
+    file cannot take, or a file that cannot be written (named, not its temporary file)."""
     from impactlab.calibrate.experiment_rows import append_experiment
 
     if res.kinematics is None:
@@ -76,4 +77,12 @@ def append_drop(
             text = str(exc).replace("include_doubtful=True (impactlab analyze --include-doubtful)",
                                     "--include-doubtful")  # fmt: skip
             return UserError(f"--measurements: nothing appended to {path}: {text}")
+        except OSError as exc:  # a read-only or full disk, a folder without write permission
+            return UserError(f"--measurements: nothing appended to {path}: {_os_reason(exc)}")
     return meas.n_drops, [str(w.message) for w in caught]
+
+
+def _os_reason(exc: OSError) -> str:
+    """Why a write failed, without the temporary file's name (``exc.strerror``, lower case)."""
+    reason = exc.strerror or type(exc).__name__
+    return reason[:1].lower() + reason[1:]

@@ -10,7 +10,11 @@ from pathlib import Path
 from typing import Any
 
 from impactlab.bodies import PAPER_ROD, Rod, Sphere
-from impactlab.bodies._checks import INERTIA_RATIO_FLOOR, inertia_ratio_problem
+from impactlab.bodies._checks import (
+    INERTIA_RATIO_FLOOR,
+    heavy_rod_problem,
+    inertia_ratio_problem,
+)
 from impactlab.contact.registry import get_law
 from impactlab.experiment.checks import (
     check_input_file,
@@ -93,9 +97,27 @@ def rod_properties(rod: Any) -> Rod:
 def implausible_rod(rod: Rod) -> str | None:
     """Why the rod's mass and inertia do not fit each other (None when they do): I_C / (m L^2)
     below ``INERTIA_RATIO_FLOOR`` (``impactlab.bodies._checks.inertia_ratio_problem``, the
-    check ``impactlab.analytic.invert`` makes too)."""
+    check ``impactlab.analytic.invert`` makes too); or, for a rod of uniform section (no
+    diameter, I_C = m L^2 / 12), a mass that makes it far wider than its tip
+    (``heavy_rod_problem``, which ``Rod`` only warns of), with the grams hint. The inertia's
+    check is blind to that one: m L^2 / 12 scales with the mass."""
     inertia = rod.inertia_ratio * rod.mass * rod.length**2  # given, or m L^2 / 12
-    return inertia_ratio_problem(rod.mass, inertia, rod.length)
+    problem = inertia_ratio_problem(rod.mass, inertia, rod.length)
+    if problem is not None or rod.diameter is not None:
+        return problem
+    if abs(12.0 * rod.inertia_ratio - 1.0) > 1e-9:  # an inertia given: not a uniform rod
+        return None
+    L, R, m = rod.length, rod.tip_radius, rod.mass
+    heavy = heavy_rod_problem(L, R, m, rod.material)
+    if heavy is None:
+        return None
+    hint = ""
+    if heavy_rod_problem(L, R, 1e-3 * m, rod.material) is None:
+        hint = f"; a mass in grams given as kilograms? (mass = {1e-3 * m:.4g} kg fits)"
+    return (
+        f"the mass does not fit the rod's size: {heavy}{hint}; its inertia, m L^2 / 12, "
+        "scales with the mass, so the force F and the inertia's checks would be off by as much"
+    )
 
 
 def _flat_material(flat: Any) -> Material:

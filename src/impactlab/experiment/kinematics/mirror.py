@@ -26,7 +26,12 @@ from collections.abc import Callable
 import numpy as np
 
 from impactlab.experiment.errors import MarkerError
-from impactlab.experiment.kinematics.impulse import ImpulseCheck, impulse_check
+from impactlab.experiment.kinematics.impulse import (
+    IMPULSE_SIGMAS,
+    IMPULSE_TOLERANCE,
+    ImpulseCheck,
+    impulse_check,
+)
 from impactlab.experiment.kinematics.result import ImpactKinematics
 from impactlab.experiment.kinematics.tilt import (
     GROSS_TILT,
@@ -46,6 +51,7 @@ __all__ = [
     "check_not_mirrored_shape",
     "checked_against_mirror",
     "e_outside",
+    "given_geometry_note",
     "mirrored",
     "mirrored_geometry_error",
 ]
@@ -197,6 +203,22 @@ def estimated_geometry_note(k: ImpactKinematics, check: TiltCheck) -> str | None
     return None
 
 
+def given_geometry_note(k: ImpactKinematics, own: ImpulseCheck) -> str:
+    """The doubt of a given geometry that breaks the impulse relation while its mirror image
+    does not help: C or the rod's axis misplaced in it, or an inertia that is off."""
+    rolled = "" if own.axis_agrees else ", or the rod rolled about its axis at the impact"
+    return (
+        f"the marker geometry is in doubt: with it the velocity changes break the rigid-body "
+        f"impulse relation (k^2 dw = b dv_Cx - a dv_Cy, a turn perpendicular to the rod): "
+        f"{own.text()}, beyond {IMPULSE_SIGMAS:g} sigma and {100 * IMPULSE_TOLERANCE:g} %; "
+        f"what was read ({_read(k)}) is then biased: the centre of mass C or the rod's axis is "
+        f"misplaced in the geometry (marker positions measured from another origin or in a "
+        f"rotated frame: a shift along the rod or a turn keeps every distance), the rod's "
+        f"inertia k^2 = I/m is off by more than {100 * IMPULSE_TOLERANCE:g} % (Rod.inertia, the "
+        f"marker mounts included){rolled}; check the geometry's origin and axes"
+    )
+
+
 def _e_note(e: Estimate) -> str | None:
     """A warning for an e outside [0, 1] by more than ``E_WARN_SIGMAS`` (and not ``E_SIGMAS``)."""
     if not e_outside(e, E_WARN_SIGMAS):
@@ -246,12 +268,13 @@ def checked_against_mirror(
     within [0, 1]: the mirrored-geometry error for a bad e or a spin change that disagrees with
     the impulse; a warning for a turn off the perpendicular to the rod only (a rod that rolls
     about its axis at the impact breaks that relation too). Otherwise an e outside [0, 1] by
-    more than ``E_SIGMAS`` is ``e_error()``, by more than ``E_WARN_SIGMAS`` a warning; ``k`` is
-    returned with the warnings. Without a ``geometry`` (estimated), the tilt of the rod's axis
-    that the impulse relation implies (:mod:`.tilt`): a gross one is
-    :func:`estimated_geometry_error`, a small one or an undecided check marks ``k`` not ok
-    (:func:`estimated_geometry_note`, in ``k.doubts`` and the warnings); without ``k2`` the
-    check cannot run, which marks ``k`` not ok too (``NO_INERTIA``)."""
+    more than ``E_SIGMAS`` is ``e_error()``, by more than ``E_WARN_SIGMAS`` a warning; a given
+    geometry that breaks an impulse relation with no mirror to explain it marks ``k`` not ok
+    (:func:`given_geometry_note`); ``k`` is returned with the warnings. Without a ``geometry``
+    (estimated), the tilt of the rod's axis that the impulse relation implies (:mod:`.tilt`): a
+    gross one is :func:`estimated_geometry_error`, a small one or an undecided check marks
+    ``k`` not ok (:func:`estimated_geometry_note`, in ``k.doubts`` and the warnings); without
+    ``k2`` the check cannot run, which marks ``k`` not ok too (``NO_INERTIA``)."""
     doubts: list[str] = []
     if geometry is None and k2 is not None:
         estimated = tilt_check(k, k2)
@@ -280,6 +303,8 @@ def checked_against_mirror(
                     notes.append(_axis_note(k, own, flipped, fl))
     if bad_e:
         raise e_error()
+    if own is not None and not own.consistent and not notes:
+        doubts.append(given_geometry_note(k, own))
     note = _e_note(k.e)
     notes += [note] if note else []
     if not notes and not doubts:

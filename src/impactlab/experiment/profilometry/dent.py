@@ -18,9 +18,16 @@ from scipy import ndimage
 from impactlab.experiment.checks import check_instance
 from impactlab.experiment.errors import ScanError
 from impactlab.experiment.profilometry.bottom import bottom
-from impactlab.experiment.profilometry.gaps import GapSpread, gap_spread, outline_gaps
+from impactlab.experiment.profilometry.gaps import (
+    GapSpread,
+    check_crossings,
+    gap_spread,
+    measured_samples,
+    outline_gaps,
+)
 from impactlab.experiment.profilometry.heightmap import HeightMap
-from impactlab.experiment.profilometry.metrics import DentMetrics
+from impactlab.experiment.profilometry.levelling import levelling_note
+from impactlab.experiment.profilometry.metrics import DentMetrics, unmeasured_notes
 from impactlab.experiment.profilometry.outline import Extent, extent, fall_distance, outline, sample
 from impactlab.experiment.profilometry.surface import (
     Surface,
@@ -177,14 +184,20 @@ def _outline_noise(
     sc: np.ndarray,
     cprof: np.ndarray,
     width: float,
+    measured: tuple[np.ndarray, np.ndarray],
 ) -> tuple[float, float]:
     """Position noise [m] of the outline's crossings along (length) and across (width): the
-    height noise over the profiles' slopes there."""
+    height noise over the profiles' slopes there, at the sample nearest each crossing whose
+    pixel has data (``measured``, of ``s`` and ``sc``: a filled pixel's slope is the fill's)."""
     slope_terms = []
-    for sv, pv, targets in ((s, prof, ends), (sc, cprof, (-0.5 * width, 0.5 * width))):
+    for sv, pv, targets, ok in (
+        (s, prof, ends, measured[0]),
+        (sc, cprof, (-0.5 * width, 0.5 * width), measured[1]),
+    ):
         g = np.gradient(pv, sv)
         for target in targets:
-            k = int(np.argmin(np.abs(sv - target)))
+            far = np.abs(sv - target)
+            k = int(np.argmin(np.where(ok, far, np.inf) if ok.any() else far))
             sl = abs(float(g[k]))
             if sl > 0:
                 slope_terms.append((sig_s / sl) ** 2)
@@ -259,7 +272,8 @@ def measure_dent(
     """
     check_instance(hm, HeightMap, "hm", "read one with read_scan()")
     sf = surface(hm, smooth)
-    warnings: list[str] = []
+    level_note = levelling_note(sf.lev)
+    warnings: list[str] = [level_note] if level_note else []
     i0, j0 = find_dent(sf, detect_sigma, min_pixels, warnings)
     depth_rough = -float(sf.zs[i0, j0])
     thr = max(edge_sigma * sf.sig_s, edge_fraction * depth_rough)
@@ -325,7 +339,10 @@ def _metrics(
     # extent along the axis from the outline, for the deepest point's position
     proj = (polygon - deepest) @ axis
     s_start, s_end = float(proj.min()), float(proj.max())
-    noise = _outline_noise(sf.sig_s, s, prof, (s_start, s_end), sc, cprof, width)
+    perp = np.array([-ext.axis[1], ext.axis[0]])  # the cross profile's direction
+    in_gaps = check_crossings(sf, deepest, (s_start * axis, s_end * axis, 0.5 * width * perp))
+    measured = (measured_samples(sf, deepest, axis, s), measured_samples(sf, deepest, perp, sc))
+    noise = _outline_noise(sf.sig_s, s, prof, (s_start, s_end), sc, cprof, width, measured)
     sig_len, sig_wid, sig_ls = _sigmas(ext, thr, depth, noise)
     gaps = _gaps(sf, thr, depth, deepest, ext, smooth)
     if gaps is not None:
@@ -333,11 +350,22 @@ def _metrics(
         sig_wid = math.hypot(sig_wid, gaps.sigma_width)
         sig_ls = math.hypot(sig_ls, gaps.sigma_ls)
         warnings.append(gaps.note())
+    if in_gaps and gaps is None:  # the gap's spread names it otherwise
+        warnings.append(
+            f"the dent's edge ({', '.join(in_gaps)}) lies in pixels without data, filled by "
+            "interpolation: its place there is the fill's; scan the dent again for data there"
+        )
     if not ext.extrapolated:
         warnings.append(
             "the dent is too shallow to extrapolate its outline to the zero "
             "threshold; length and width are taken at the threshold"
         )
+    warnings += unmeasured_notes(
+        delta_p=(delta_p.value, delta_p.sigma),
+        length=(length, sig_len),
+        width=(width, sig_wid),
+        sliding_length=(length - width, sig_ls),
+    )
     pileup, pile_at = _pileup(sf, region, width, pileup_band)
     return DentMetrics(
         delta_p=delta_p,

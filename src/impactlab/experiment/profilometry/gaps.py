@@ -19,9 +19,18 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import ndimage
 
+from impactlab.experiment.errors import DentCutOffError
+from impactlab.experiment.profilometry.outline import edges_touched
 from impactlab.experiment.profilometry.surface import Surface
 
-__all__ = ["MIN_GAP_PIXELS", "GapSpread", "gap_spread", "outline_gaps"]
+__all__ = [
+    "MIN_GAP_PIXELS",
+    "GapSpread",
+    "check_crossings",
+    "gap_spread",
+    "measured_samples",
+    "outline_gaps",
+]
 
 #: A gap (8-connected pixels without data) of at least this many pixels that the outline runs
 #: through widens the ± of length, width and L_s; a smaller one is interpolated from all sides.
@@ -137,3 +146,59 @@ def gap_spread(
         sigma_width=far[1] / math.sqrt(3.0),
         sigma_ls=far[2] / math.sqrt(3.0),
     )
+
+
+def _pixel(sf: Surface, xy: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(rows, columns) of the pixels nearest the points ``xy`` ((k, 2) (x, y) [m])."""
+    ny, nx = sf.was_nan.shape
+    i = np.clip(np.rint(xy[:, 1] / sf.dy).astype(int), 0, ny - 1)
+    j = np.clip(np.rint(xy[:, 0] / sf.dx).astype(int), 0, nx - 1)
+    return i, j
+
+
+def measured_samples(
+    sf: Surface, origin: np.ndarray, direction: np.ndarray, s: np.ndarray
+) -> np.ndarray:
+    """Whether the nearest pixel of each profile sample ``origin + s direction`` [m] has data."""
+    i, j = _pixel(sf, origin[None, :] + s[:, None] * direction[None, :])
+    return ~sf.was_nan[i, j]
+
+
+def check_crossings(
+    sf: Surface, deepest: np.ndarray, offsets: tuple[np.ndarray, np.ndarray, np.ndarray]
+) -> list[str]:
+    """The names of the outline's crossings that lie in a gap without data of
+    ``MIN_GAP_PIXELS`` or more pixels inside the scan (a warning's text); ``offsets`` (x, y) [m]
+    from ``deepest``: the start and the end of the length, half the width across (both sides).
+    DentCutOffError for one that lies in pixels without data that reach the scan's edge: the
+    dent runs into a region without data, where only interpolation continues it (a no-data
+    frame around the scan that the dent's edge, extrapolated to zero depth, reaches)."""
+    lab, n = ndimage.label(sf.was_nan, structure=np.ones((3, 3)))
+    if n == 0:
+        return []
+    start, end, side = offsets
+    points = {
+        "the start of its length": deepest + start,
+        "the end of its length": deepest + end,
+        "one side of its width": deepest - side,
+        "the other side of its width": deepest + side,
+    }
+    names = list(points)
+    i, j = _pixel(sf, np.array([points[k] for k in names], dtype=np.float64))
+    sizes = np.bincount(lab.ravel())
+    inside: list[str] = []
+    for name, k in zip(names, lab[i, j], strict=True):
+        if k == 0 or sizes[k] < MIN_GAP_PIXELS:
+            continue
+        gap = lab == k
+        if not edges_touched(gap):
+            inside.append(name)
+            continue
+        x, y = points[name]
+        raise DentCutOffError(
+            f"{sf.src}: the dent runs into a region without data: its edge ({name}, at x = "
+            f"{x * 1e3:.4g} mm, y = {y * 1e3:.4g} mm) lies in {int(sizes[k])} pixels without "
+            "data that reach the scan's edge, where only interpolation continues it, so its "
+            "length and width cannot be measured; scan the dent again with data all around it"
+        )
+    return inside

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -10,24 +11,39 @@ from scipy import ndimage
 from impactlab.experiment.checks import check_instance
 from impactlab.experiment.profilometry.heightmap import HeightMap
 
-__all__ = ["BORDER", "K_SIGMA", "Levelled", "level_plane"]
+__all__ = [
+    "BORDER",
+    "K_SIGMA",
+    "LEVELLING_RATIO",
+    "Levelled",
+    "level_plane",
+    "levelling_note",
+    "pixel_noise",
+]
 
 
 @dataclass(frozen=True)
 class Levelled:
     """A levelled height map: ``z`` (ny, nx) [m] (NaN = no data) after subtracting the plane
     ``plane`` = (a, b, c) [m, -, -] (z_plane = a + b x + c y), the ``inliers`` used for the plane,
-    the robust noise ``sigma`` [m] of the inliers, ``iterations``."""
+    the robust noise ``sigma`` [m] of the inliers, ``iterations``; ``pixel_sigma`` [m]: the
+    scan's pixel-to-pixel noise (:func:`pixel_noise`), which no plane changes."""
 
     z: np.ndarray
     plane: tuple[float, float, float]
     inliers: np.ndarray
     sigma: float
     iterations: int
+    pixel_sigma: float = math.nan
 
 
 #: Outlier threshold [noise sigmas] of the levelling plane's inliers.
 K_SIGMA = 3.0
+#: The plane's inliers scatter more than this many times the pixel-to-pixel noise: the plane
+#: leans on the dent (too little undeformed surface around it) or the surface is not flat. On
+#: the example and the synthetic scans with enough margin the ratio is 0.98-1.05; with 5 pixels
+#: or fewer of surface beyond the dent's outline 4.4-6 (delta_p then 2 % deep, about 4 sigma).
+LEVELLING_RATIO = 2.5
 #: Width of the border frame the first plane is fitted to, as a fraction of the scan's size.
 BORDER = 0.12
 
@@ -82,4 +98,34 @@ def level_plane(
         inl = new
     zl = z - (coef[0] + coef[1] * X + coef[2] * Y)
     zl.setflags(write=False)
-    return Levelled(zl, (float(coef[0]), float(coef[1]), float(coef[2])), inl, sigma, it)
+    plane = (float(coef[0]), float(coef[1]), float(coef[2]))
+    return Levelled(zl, plane, inl, sigma, it, pixel_noise(z))
+
+
+def pixel_noise(z: np.ndarray) -> float:
+    """The height noise [m] from second differences along rows and columns (1.4826 MAD / sqrt 6
+    for white noise): blind to a plane, a tilt and a dent's gentle curvature; NaN without
+    three valid pixels in a row."""
+    d = np.concatenate(
+        [(z[:, 2:] - 2 * z[:, 1:-1] + z[:, :-2]).ravel(), (z[2:] - 2 * z[1:-1] + z[:-2]).ravel()]
+    )
+    d = d[np.isfinite(d)]
+    if d.size == 0:
+        return math.nan
+    return float(1.4826 * np.median(np.abs(d - np.median(d))) / math.sqrt(6.0))
+
+
+def levelling_note(lev: Levelled) -> str | None:
+    """The warning for a plane whose inliers scatter more than ``LEVELLING_RATIO`` times the
+    pixel-to-pixel noise (None otherwise)."""
+    ratio = lev.sigma / lev.pixel_sigma if lev.pixel_sigma > 0 else math.nan
+    if not ratio > LEVELLING_RATIO:
+        return None
+    return (
+        f"the levelling is in doubt: the plane's inliers scatter {lev.sigma * 1e6:.3g} um, "
+        f"{ratio:.3g} times the scan's pixel-to-pixel noise ({lev.pixel_sigma * 1e6:.3g} um): "
+        "too little undeformed surface around the dent, so that the plane leans on its flanks "
+        "and pile-up (biasing delta_p and L_s beyond their +-), or a surface that is not flat "
+        "(curved, a step, roughness longer than a pixel); scan a larger area around the dent, "
+        "with undeformed surface on every side"
+    )

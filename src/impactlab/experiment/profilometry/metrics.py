@@ -10,7 +10,19 @@ import numpy as np
 from impactlab.experiment.profilometry.heightmap import HeightMap
 from impactlab.experiment.uncertainty import Estimate
 
-__all__ = ["DentMetrics"]
+__all__ = ["DentMetrics", "unmeasured_notes"]
+
+
+def unmeasured_notes(**estimates: tuple[float, float]) -> list[str]:
+    """A warning for each length (name -> (value, standard uncertainty) [m]) whose uncertainty
+    exceeds its magnitude: not measured, whatever the value says."""
+    return [
+        f"{name} = {value * 1e6:.4g} um has an uncertainty of {sigma * 1e6:.3g} um, larger "
+        "than itself: it is not measured (an outline's crossing on a flat profile, a dent at "
+        "the noise); check the scan and its dent plot"
+        for name, (value, sigma) in estimates.items()
+        if sigma > abs(value)
+    ]
 
 
 @dataclass(frozen=True)

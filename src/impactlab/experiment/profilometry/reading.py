@@ -10,6 +10,7 @@ from impactlab.experiment.errors import FileFormatError, MissingDependencyError
 from impactlab.experiment.profilometry.heightmap import HeightMap
 from impactlab.experiment.profilometry.instrument import read_instrument
 from impactlab.experiment.profilometry.plain import has_pixel_header, looks_like_xyz, read_plain
+from impactlab.experiment.textfiles import read_text
 
 __all__ = ["read_scan"]
 
@@ -44,6 +45,10 @@ def read_scan(
     if p.stat().st_size == 0:
         raise FileFormatError(p, "empty file")
     suffix = p.suffix.lower()
+    if suffix in (".csv", ".txt", ".asc"):
+        with open(p, "rb") as f:
+            if f.read(2) in (b"\xff\xfe", b"\xfe\xff"):  # UTF-16: named before any reader
+                read_text(p, "CSV" if suffix == ".csv" else "text")
     plain_text = suffix in (".txt", ".asc") and (pixel_size is not None or has_pixel_header(p))
     if suffix == ".npy" or plain_text:
         return read_plain(p, pixel_size, height_unit)

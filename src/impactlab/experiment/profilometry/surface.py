@@ -15,7 +15,7 @@ from scipy import ndimage
 from impactlab.experiment.errors import DentCutOffError, DentNotFoundError, ScanError
 from impactlab.experiment.profilometry.height_values import check_height_values
 from impactlab.experiment.profilometry.heightmap import HeightMap
-from impactlab.experiment.profilometry.levelling import Levelled, level_plane
+from impactlab.experiment.profilometry.levelling import Levelled, level_plane, levelling_note
 from impactlab.experiment.profilometry.outline import edges_touched, fill_nan
 
 __all__ = ["Surface", "dent_region", "filled_fraction", "find_dent", "surface"]
@@ -125,6 +125,24 @@ def _candidates_note(
 _NAMED = 4
 
 
+def _shallow(sf: Surface, deepest: float, detect_sigma: float) -> str:
+    """Why no point lies below the detection threshold: a flat scan, a levelling that failed
+    (the deepest point far below the surface by the pixel-to-pixel noise), or no dent."""
+    if not float(np.ptp(sf.zl[sf.valid])) > 0:
+        return "the scan is flat (every height the same: no variation)"
+    text = (
+        f"the deepest point is {-deepest * 1e6:.3g} um below the levelled surface, less than "
+        f"the detection threshold {detect_sigma:g} x noise = {detect_sigma * sf.sig_s * 1e6:.3g} um"
+    )
+    note = levelling_note(sf.lev)
+    if note is None or not -deepest > detect_sigma * sf.lev.pixel_sigma:
+        return text
+    return (
+        f"the levelling failed: {text}, but {-deepest / sf.lev.pixel_sigma:.3g} times the "
+        f"pixel-to-pixel noise; {note.removeprefix('the levelling is in doubt: ')}"
+    )
+
+
 def find_dent(
     sf: Surface, detect_sigma: float, min_pixels: int, warnings: list[str] | None = None
 ) -> tuple[int, int]:
@@ -142,11 +160,7 @@ def find_dent(
     if not good:
         _check_sign(sf, -deepest_val, 0.0, detect_sigma, min_pixels)
     if index.size == 0:
-        raise DentNotFoundError(
-            f"{src}: no dent found: the deepest point is {-deepest_val * 1e6:.3g} um below the "
-            f"levelled surface, less than the detection threshold {detect_sigma:g} x noise = "
-            f"{detect_sigma * sig_s * 1e6:.3g} um"
-        )
+        raise DentNotFoundError(f"{src}: no dent found: {_shallow(sf, deepest_val, detect_sigma)}")
     if not good:
         raise DentNotFoundError(
             f"{src}: no dent found: the depressions below the detection threshold "
