@@ -86,21 +86,25 @@ class Calibration:
 
     def predict(
         self,
-        conditions: Measurements | Sequence[Mapping[str, Any]] | str | Path,
+        conditions: Measurements | Sequence[Mapping[str, Any]] | Mapping[str, Any] | str | Path,
         quantities: Sequence[str] | None = None,
         *,
         model: str | None = None,
         draws: int = 200,
-        seed: int = 0,
+        seed: int | None = 0,
         evaluator: Evaluator = ENGINE,
     ) -> DropPredictions:
         """What ``model`` (default: the best-ranked) predicts for drops that were not
         measured: ``conditions`` gives their inputs only (records such as ``{"label": "new",
-        "angle": "30 deg", "vy": -2.0}``, a file, or ``Measurements.conditions``);
+        "angle": "30 deg", "vy": -2.0}``, one such record alone, a file, or
+        ``Measurements.conditions``);
         ``quantities`` (default: those measured in the calibration) are any measurable ones
         (``e``, ``delta_p``, ``max_force``, ...), predicted at ``draws`` posterior draws
-        (``seed``); ``DropPredictions.summary()`` gives each one's median and 90 % interval.
-        ``evaluator`` should be the one the calibration ran."""
+        (``seed``: an integer in [0, 2**32), or None for fresh draws);
+        ``DropPredictions.summary()`` gives each one's median and 90 % interval and the share of
+        draws beyond the contact law's verified range (``extrapolated``, with a
+        ``CalibrationWarning``); a drop whose every draw failed is warned about and named with its
+        reason (``DropPredictions.reason``). ``evaluator`` should be the one the calibration ran."""
         order = {r["model"]: r["rank"] for r in self.ranking}
         ranked = dict(sorted(self.posteriors.items(), key=lambda kv: order.get(kv[0], 0)))
         return predict_drops(

@@ -1,8 +1,9 @@
 """One drop of a measurements file: its columns read (units, aliases, the unit of an
 uncertainty) and checked, with one-line errors naming the drop and the column.
 
-A value is a number (a Python or numpy real scalar), a quantity string or blank (None, an
-empty string, NaN: not given). Numbers are kept in each input's own unit
+A value is a number (a Python or numpy real scalar), a quantity string, a pint Quantity of any
+registry (read as the string of its value and unit) or blank (None, an empty string, NaN: not
+given). Numbers are kept in each input's own unit
 (``impactlab.sweep.inputs``: SI, the Brinell hardness in kgf/mm^2) and measured values in SI.
 A ``<quantity>_sigma`` without a unit of its own takes its quantity's (the column header's or
 the ``[units]`` entry's). A drop's velocity is (vx, vy) or speed and incidence (converted to
@@ -42,6 +43,7 @@ from impactlab.calibrate.values import bare, to_unit
 from impactlab.materials import G0, PRESETS
 from impactlab.sweep.dimensions import check_allowed, check_rod_angles
 from impactlab.sweep.inputs import INPUTS, UNIT_REQUIRED
+from impactlab.units import is_quantity
 
 __all__ = ["LABEL_KEYS", "Row", "parse_row", "split_header", "unit_text"]
 
@@ -69,9 +71,19 @@ def unit_text(unit: str) -> str:
     return "" if unit in ("1", "", "-") else f" {unit}"
 
 
-def _plain(v: Any) -> Any:
+def _plain(where: str, key: str, v: Any) -> Any:
     """A numpy real scalar (``np.float32(0.4)``, ``np.int64(-2)``) as the Python number it
-    holds; anything else (a numpy bool too, refused as a value) as it is."""
+    holds; a scalar pint Quantity of any registry as the string of its value and unit
+    (``"-2.0 m / s"``, read as a quantity string is; ValueError naming the column for an
+    array); anything else (a numpy bool too, refused as a value) as it is."""
+    if is_quantity(v):
+        m = v.magnitude
+        m = m.item() if isinstance(m, np.ndarray) and m.ndim == 0 else _plain(where, key, m)
+        if isinstance(m, bool) or not isinstance(m, int | float):
+            raise ValueError(
+                f"{where}: {key} must be one number with its unit, got the Quantity {v!r}"
+            )
+        return f"{float(m)!r} {v.units:~}".strip()
     return v.item() if isinstance(v, np.integer | np.floating) else v
 
 
@@ -130,7 +142,7 @@ def parse_row(i: int, record: Mapping[str, Any], units: Mapping[str, Any]) -> Ro
     cols = []
     seen: dict[str, str] = {}
     for key, given in record.items():
-        v = _plain(given)
+        v = _plain(where, str(key), given)
         name, unit = split_header(str(key))
         kind, canon = column_kind(where, name)
         if canon in seen:

@@ -164,6 +164,14 @@ _STUDY_SPELLING = {
     "spin_in": "a study's name for it is spin",
     "material": "a study names the materials body_material and flat_material",
     "flat": "a study's name for it is flat_material",
+    **{
+        option: f"{option} is an engine option of the whole study, not an input: "
+        f"Study(engine=EngineOptions({option}=...)) in Python, {option} under [engine] in a "
+        "study file"
+        for option in ("gravity", "rtol", "constant_angle", "partial_slip_cells")
+    },
+    "law_params": "a study takes the contact law's parameters as Study(law_params={...}) in "
+    "Python, the [law_params] table in a study file",
 }
 
 

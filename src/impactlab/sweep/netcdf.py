@@ -1,7 +1,8 @@
 """A sweep's Dataset as a file: NetCDF-4 (``.nc``, ``.nc4``: every variable and attribute) or a
 CSV table (``.csv``: one row per case, every input and output a column, its unit in the
 header, ``e_energy``, ``delta_p [m]``, ``angle [rad]``, in a fixed order). ``export_file``
-chooses by the suffix and refuses any other. An existing file is replaced only when a sweep
+chooses by the suffix and refuses any other. Each takes the Dataset, a store's path (opened with
+``open_sweep``) or ``run_sweep``'s result. An existing file is replaced only when a sweep
 export wrote it (recognised by its header or attributes), never a user's. Both read a store a
 part at a time: their memory does not grow with the number of cases."""
 
@@ -10,7 +11,7 @@ from __future__ import annotations
 import json
 from collections.abc import Mapping
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import xarray as xr
@@ -19,11 +20,15 @@ from impactlab.sweep.filewrite import library_write_error, write_atomic
 from impactlab.sweep.inputs import INPUTS
 from impactlab.sweep.slabs import slabs, store_chunks
 
+if TYPE_CHECKING:
+    from impactlab.sweep.run_result import SweepResult
+
 __all__ = [
     "CSV_BLOCK_CASES",
     "EXPORT_SUFFIXES",
     "NETCDF_CHUNK_CACHE_BYTES",
     "NETCDF_COMPLEVEL",
+    "as_dataset",
     "check_replaceable",
     "export_csv",
     "export_file",
@@ -104,21 +109,43 @@ def check_replaceable(path: str | Path, name: str) -> None:
         )
 
 
-def export_file(ds: xr.Dataset, path: str | Path) -> Path:
-    """Write the Dataset to ``path``: a CSV table for ``.csv``, NetCDF-4 for ``.nc``/``.nc4``
-    (ValueError for any other suffix, or for an existing file that no sweep export wrote:
-    :func:`check_replaceable`)."""
+def as_dataset(ds: Any, name: str = "ds") -> xr.Dataset:
+    """``ds`` as a sweep's Dataset: a Dataset as it is, a store's path (str or Path) opened
+    with ``open_sweep`` (verified), ``run_sweep``'s result by its ``dataset``; ValueError naming
+    ``name`` for anything else."""
+    if isinstance(ds, xr.Dataset):
+        return ds
+    if isinstance(ds, str | Path):
+        from impactlab.sweep.store import open_sweep  # the store module writes; read on demand
+
+        return open_sweep(ds)
+    inner = getattr(ds, "dataset", None) if hasattr(type(ds), "dataset") else None
+    if isinstance(inner, xr.Dataset):
+        return inner
+    raise ValueError(
+        f"{name} must be an xarray.Dataset (open a store with open_sweep(path)) or a sweep "
+        f"store's path, got the {type(ds).__name__} {ds!r}"
+    )
+
+
+def export_file(ds: xr.Dataset | str | Path | SweepResult, path: str | Path) -> Path:
+    """Write the Dataset (or the store at a path: :func:`as_dataset`) to ``path``: a CSV table
+    for ``.csv``, NetCDF-4 for ``.nc``/``.nc4`` (ValueError for any other suffix, or for an
+    existing file that no sweep export wrote: :func:`check_replaceable`)."""
+    ds = as_dataset(ds)
     if check_suffix(path, "export file") == "CSV":
         return export_csv(ds, path)
     return export_netcdf(ds, path)
 
 
-def export_netcdf(ds: xr.Dataset, path: str | Path) -> Path:
-    """Write the Dataset to NetCDF-4 (strings kept; dictionary attributes become JSON text),
-    its numeric arrays compressed (zlib level :data:`NETCDF_COMPLEVEL`, shuffled) in chunks of
-    the store's; a store's arrays are read chunk by chunk, never whole. Written whole or not at
-    all; ``path`` ends in ``.nc`` or ``.nc4``, and is no file that a sweep export did not write
-    (ValueError: :func:`check_replaceable`)."""
+def export_netcdf(ds: xr.Dataset | str | Path | SweepResult, path: str | Path) -> Path:
+    """Write the Dataset (or the store at a path: :func:`as_dataset`) to NetCDF-4 (strings
+    kept; dictionary attributes become JSON text), its numeric arrays compressed (zlib level
+    :data:`NETCDF_COMPLEVEL`, shuffled) in chunks of the store's; a store's arrays are read
+    chunk by chunk, never whole. Written whole or not at all; ``path`` ends in ``.nc`` or
+    ``.nc4``, and is no file that a sweep export did not write (ValueError:
+    :func:`check_replaceable`)."""
+    ds = as_dataset(ds)
     check_suffix(path, "NetCDF file", ("NetCDF-4",))
     check_replaceable(path, "NetCDF file")
     out = Path(path)
@@ -177,14 +204,15 @@ def _nc_encoding(
     return enc
 
 
-def export_csv(ds: xr.Dataset, path: str | Path) -> Path:
-    """Write the Dataset as a CSV table (``ds.to_dataframe()``): one row per case, a column per
-    dimension, input and output, headed ``name [unit]`` (the variable's ``units``: SI but the
-    Brinell hardness in kgf/mm^2; a dimensionless one by its name alone), in the order of
-    :func:`_columns`. Written block by block (at most :data:`CSV_BLOCK_CASES` cases in memory;
-    the file is that of the whole table at once), whole or not at all; ``path`` ends in
-    ``.csv``, and is no file that a sweep export did not write (ValueError:
-    :func:`check_replaceable`)."""
+def export_csv(ds: xr.Dataset | str | Path | SweepResult, path: str | Path) -> Path:
+    """Write the Dataset (or the store at a path: :func:`as_dataset`) as a CSV table
+    (``ds.to_dataframe()``): one row per case, a column per dimension, input and output, headed
+    ``name [unit]`` (the variable's ``units``: SI but the Brinell hardness in kgf/mm^2; a
+    dimensionless one by its name alone), in the order of :func:`_columns`. Written block by
+    block (at most :data:`CSV_BLOCK_CASES` cases in memory; the file is that of the whole table
+    at once), whole or not at all; ``path`` ends in ``.csv``, and is no file that a sweep
+    export did not write (ValueError: :func:`check_replaceable`)."""
+    ds = as_dataset(ds)
     check_suffix(path, "CSV file", ("CSV",))
     check_replaceable(path, "CSV file")
     out = Path(path)

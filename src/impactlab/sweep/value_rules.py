@@ -151,7 +151,8 @@ def input_value(name: str, value: Any) -> Value:
     elif isinstance(value, str) or is_quantity(value):
         value = magnitude(f"input {name!r}", value, spec.unit)
     if isinstance(value, bool) or not isinstance(value, int | float | np.integer | np.floating):
-        raise ValueError(f"input {name!r} must be a number in {spec.unit}, got {value!r}")
+        kind = "a plain number" if spec.unit in ("1", "") else f"a number in {spec.unit}"
+        raise ValueError(f"input {name!r} must be {kind}, got {value!r}")
     x = float(value)
     if not math.isfinite(x):
         raise ValueError(f"input {name!r} must be finite, got {x!r}")
