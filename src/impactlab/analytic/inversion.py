@@ -225,9 +225,11 @@ def invert(
         |v_i| >= 1e-6 m/s (``MIN_SPEED``).
     mu : friction coefficient over the impact (Eq. 28, e.g. from
         :func:`friction_from_velocities`), >= 0 and < mu_c(angle) (gross sliding).
-    delta_p : permanent dent depth [m], a magnitude of at least 1 nm (the paper prints -22e-6;
-        impactlab takes 22e-6).
-    sliding_length : length L_s of the sliding scar [m], > 0 (the paper prints -1400e-6).
+    delta_p : permanent dent depth [m], a magnitude of at least 1 nm: a negative value is
+        refused (the paper prints -22e-6; give 22e-6).
+    sliding_length : length L_s of the sliding scar [m], non-zero; sign ignored, as for v_i:
+        the magnitude is taken (the paper prints -1400e-6; -1400e-6 and 1400e-6 give the same
+        T and F).
     e : coefficient of restitution of the tip's normal velocity, in [0, 1]. Needed for F when
         ``dv_cy`` is not given (rigid-body identity F T = (1 + e)|v_i| / K_y).
     dv_cy : measured change of the centre-of-mass vertical velocity over the impact [m/s], upward

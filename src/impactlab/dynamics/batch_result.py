@@ -39,7 +39,8 @@ class BatchResult(BatchStatus):
     """Results of ``simulate_batch``: ``out`` (N, len(OUTPUT_FIELDS)) and ``status`` (N,).
 
     Fields are available by name (``batch["e"]`` or ``batch.e``, listed by ``dir()``; another
-    name: AttributeError with the nearest field); cases with a non-zero status
+    name: AttributeError with the nearest field), every column of ``to_dataframe`` among them
+    (``batch["status"]``, ``batch["max_delta_ratio"]``); cases with a non-zero status
     hold NaN results (see ``messages``), except the incoming ``vn_in`` and ``vt_in``, which are
     kept wherever the inputs define them (a case refused for ``vn_in >= 0`` shows why): what a
     failed case reached before it stopped (delta_max, max_force, ...) is no result, and reads
@@ -69,7 +70,8 @@ class BatchResult(BatchStatus):
     #: verified against FE up to ..., or unverified and why); None: not known
     law_range: str | None = field(default=None, repr=False)
     #: why each case refused for its inputs (ST_BAD_INPUT) is refused, by case index (the input,
-    #: its value and its rule: ``messages``)
+    #: its value and its rule: ``messages``); a case the engine stopped: its whole message, in
+    #: the words of ``simulate``'s ValueError (``simulate_many.engine_failures``)
     refusals: Mapping[int, str] = field(default_factory=dict, repr=False)
     #: what was simulated besides the per-case inputs (body, flat, gravity, rtol,
     #: constant_angle, law_params), as ``to_xarray``'s attributes (``export.batch_setup``)
@@ -100,6 +102,8 @@ class BatchResult(BatchStatus):
         except ValueError:
             if name in self.inputs:
                 return self.inputs[name]
+            if name == "status" or (name == "max_delta_ratio" and self.max_delta_ratio is not None):
+                return np.asarray(getattr(self, name))  # to_dataframe's columns, by name too
             if name in schema.DERIVED_FIELDS:  # NaN where a case failed, whatever compute does
                 return np.where(self.computed, batch_derived(self.__getitem__, name), np.nan)
             known = ", ".join((*OUTPUT_FIELDS, *schema.DERIVED_FIELDS))

@@ -116,8 +116,9 @@ class BatchStatus:
 
     status: np.ndarray
     #: why each case refused for its inputs (ST_BAD_INPUT) is refused, by case index: the input
-    #: and its rule (``case_refusals``, ``drop_checks.case_problem``); a text that opens with
-    #: the status's message is the case's whole message (a failed drop's)
+    #: and its rule (``case_refusals``, ``drop_checks.case_problem``); for another status the
+    #: case's whole message (an engine failure in the words of ``simulate``'s or
+    #: ``simulate_drop``'s ValueError)
     refusals: Mapping[int, str]
     if TYPE_CHECKING:  # each batch class has its own (a property, or a dataclass field)
 
@@ -144,9 +145,11 @@ class BatchStatus:
 
     @property
     def messages(self) -> list[str]:
-        """The status message of each case (``kernels.status.STATUS_MESSAGES``), a failed drop's
-        as ``simulate_drop``'s error words it (its steps, its time, what to change:
-        ``refusals``); a case refused for its inputs names the input, its value and its rule:
+        """The status message of each case (``kernels.status.STATUS_MESSAGES``); a case the
+        engine stopped (status 1, 3, 5, 6, 9; a drop's 11-15) as ``simulate``'s or
+        ``simulate_drop``'s error words it, with the case's own values (the law's limit, the
+        approach speed, the gravity; a drop's steps and time) and what to change
+        (``refusals``); a case refused for its inputs names the input, its value and its rule:
         ST_BAD_INPUT (``refusals``), ST_BAD_ANGLE (the angle, in rad and deg) and
         ST_NOT_APPROACHING (the contact point's normal velocity ``vn_in``, else vy and the
         spin); a computed case that is not ``ok`` names its flags instead of ``"ok"``
@@ -154,10 +157,7 @@ class BatchStatus:
         the tip"``), in ``BatchResult`` and ``DropBatchResult`` alike."""
         texts = [STATUS_MESSAGES.get(int(s), f"status {int(s)}") for s in self.status]
         for i, why in self.refusals.items():
-            if int(self.status[i]) == ST_BAD_INPUT:
-                texts[i] = f"invalid input: {why}"
-            else:  # a why that opens with its status's message is the whole message
-                texts[i] = why if why.startswith(texts[i]) else f"{texts[i]}: {why}"
+            texts[i] = f"invalid input: {why}" if int(self.status[i]) == ST_BAD_INPUT else why
         status = np.asarray(self.status)
         for j in np.flatnonzero((status == ST_BAD_ANGLE) | (status == ST_NOT_APPROACHING)):
             if int(j) not in self.refusals:

@@ -140,7 +140,7 @@ def simulate_drops(
     t_end, stop_mode = check_stop(stop, t_max)
     model = checked_model(bm.rigid, flat, law, law_params)
     vx, vy = batch_velocity(vx, vy, speed, incidence, velocity)
-    cols = _batch_inputs({"mu": mu, "angle": angle, "vx": vx, "vy": vy, "spin": spin})
+    cols = _batch_inputs({"mu": mu, "angle": angle, "vx": vx, "vy": vy, "spin": spin}, bm.rigid)
     n = cols["angle"].shape[0]
     status, refusals = input_problems(bm.rigid, cols, g, r)
     run = status == 0
@@ -231,12 +231,13 @@ def _refuse_inaccurate(
 ) -> dict[int, str]:
     """ST_INACCURATE where a finished drop's energy balance closed worse than ``rtol`` promises
     over its steps (``drop_checks.check_energy_balance``, on every case at once); returns why,
-    by case index (its numbers, as ``simulate_drop``'s error words them)."""
+    by case index: the whole message, its numbers as ``simulate_drop``'s error words them."""
     ok = np.flatnonzero(status == 0)
     if ok.size == 0:
         return {}
     columns = {name: out[ok, i] for i, name in enumerate(F.DROP_OUTPUT_FIELDS)}
     found = inaccurate_cases(columns, checks[ok, CK_E0], rtol)
-    why = {int(ok[j]): text for j, text in found.items()}
+    head = S.STATUS_MESSAGES[S.ST_INACCURATE]
+    why = {int(ok[j]): f"{head}: {text}" for j, text in found.items()}
     status[list(why)] = S.ST_INACCURATE
     return why

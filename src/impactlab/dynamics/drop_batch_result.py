@@ -31,15 +31,19 @@ from impactlab.references import dois as doi_list
 __all__ = ["DropBatchResult"]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class DropBatchResult(BatchStatus):
     """Results of ``simulate_drops`` (SI units): ``out`` (N, len(DROP_OUTPUT_FIELDS)) in the
     order of ``flexcore.layout.DROP_FIELDS``, ``status`` (N,) (0: finished; ``STATUS_MESSAGES``),
     ``flags`` (N,) the ``ResultFlag`` bits (int64), ``initial_energy`` [J] and ``max_delta_ratio``
     (delta_max / delta_ref) per case; NaN (flags 0) where a case failed.
 
+    Compared and hashed by identity, as ``BatchResult`` is (``==`` never compares arrays).
+
     Fields by name (listed by ``dir()``; another name: AttributeError with the nearest field):
-    ``drops["e"]`` or ``drops.e``, the inputs (``angle``, ``vx``, ``vy``,
+    ``drops["e"]`` or ``drops.e``, every column of ``to_dataframe`` (``drops["status"]``;
+    ``drops["flags"]`` as ``BatchResult``'s, float, NaN where a case failed, where the
+    ``flags`` attribute is the int bitmask, 0 there), the inputs (``angle``, ``vx``, ``vy``,
     ``spin``, ``mu``), ``velocity_out`` (vx_out, vy_out), the sequence totals
     (``sequence_duration``, ``dent_depth``, ``sequence_sliding_length``,
     ``sequence_mean_force`` = P_n / sequence_duration) as ``DropResult`` has them; the names
@@ -99,8 +103,10 @@ class DropBatchResult(BatchStatus):
             return self[new]
         if name in DROP_BATCH_FIELDS:
             return self._column(name)
-        if name in ("initial_energy", "max_delta_ratio"):
+        if name in ("initial_energy", "max_delta_ratio", "status"):
             return np.asarray(getattr(self, name))
+        if name == "flags":  # as BatchResult["flags"] reads: NaN where the case failed
+            return np.where(self.computed, self.flags, np.nan)
         if name in self.inputs:
             return self.inputs[name]
         if name in schema.DERIVED_FIELDS:  # schema.register_output, as DropResult reads it

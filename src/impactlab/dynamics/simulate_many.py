@@ -11,6 +11,7 @@ import numpy as np
 from impactlab._validation import check_array, check_flag, refuse_unknown_keywords
 from impactlab.bodies import Rod, Sphere
 from impactlab.bodies.flexible_rod import FlexibleRod
+from impactlab.bodies.geometry import lever_arms
 from impactlab.contact import ContactModel
 from impactlab.contact.brittle import brittle_pressure
 from impactlab.contact.range_note import range_note
@@ -29,12 +30,19 @@ from impactlab.dynamics.input_checks import (
     check_constant_angle,
     check_flat,
     check_partial_slip_cells,
+    gravity_value,
     warn_fast,
 )
 from impactlab.dynamics.kernels import layout as L
-from impactlab.dynamics.kernels.status import ST_BAD_INPUT
+from impactlab.dynamics.kernels.status import (
+    ST_BAD_ANGLE,
+    ST_BAD_INPUT,
+    ST_NOT_APPROACHING,
+    ST_OK,
+)
 from impactlab.dynamics.models import body_params, references_used
-from impactlab.friction import DEFAULT_MU, PARTIAL_SLIP_CELLS, get_friction
+from impactlab.dynamics.outcome import slip_jam, status_error
+from impactlab.friction import DEFAULT_MU, PARTIAL_SLIP_CELLS, FrictionModel, get_friction
 from impactlab.materials import AISI_1010, Material, body_yields_first
 from impactlab.units import is_quantity
 
@@ -68,8 +76,10 @@ def _batch_column(name: str, value: Any) -> np.ndarray:
     return a
 
 
-def _batch_inputs(inputs: dict[str, Any]) -> dict[str, np.ndarray]:
-    """The batch's inputs broadcast against each other (C-contiguous float64 arrays)."""
+def _batch_inputs(inputs: dict[str, Any], body: Rod | Sphere) -> dict[str, np.ndarray]:
+    """The batch's inputs broadcast against each other (C-contiguous float64 arrays); an
+    ImplausibleInputWarning, as ``simulate`` warns, when the largest speed of the centre of
+    mass or of the contact point (``_fastest``) exceeds 100 m/s."""
     arrays = {n: _batch_column(n, v) for n, v in inputs.items()}
     try:
         b = np.broadcast_arrays(*arrays.values())
@@ -77,10 +87,21 @@ def _batch_inputs(inputs: dict[str, Any]) -> dict[str, np.ndarray]:
         shapes = ", ".join(f"{n}: {a.shape}" for n, a in arrays.items())
         raise ValueError(f"mu, angle, vx, vy and spin do not broadcast ({shapes})") from None
     cols = {n: np.ascontiguousarray(x, dtype=np.float64) for n, x in zip(arrays, b, strict=True)}
-    with np.errstate(invalid="ignore"):
-        fastest = np.nanmax(np.hypot(cols["vx"], cols["vy"]), initial=0.0)
-    warn_fast("the largest impact speed of the batch", float(fastest))
+    warn_fast("the largest impact speed of the batch", _fastest(cols, body))
     return cols
+
+
+def _fastest(cols: Mapping[str, np.ndarray], body: Rod | Sphere) -> float:
+    """The largest speed [m/s] over the cases whose inputs are finite: of the centre of mass,
+    hypot(vx, vy), or of the contact point, hypot(vx + spin b, vy - spin a) with the body's
+    lever arms at each case's angle (``bodies.geometry.lever_arms``; a sphere's a = 0, b = R),
+    as ``simulate`` takes it for one impact; 0 when no case is finite."""
+    vx, vy, w, th = cols["vx"], cols["vy"], cols["spin"], cols["angle"]
+    with np.errstate(invalid="ignore", over="ignore"):
+        a, b = lever_arms(body.half_length, body.tip_radius, th)
+        speed = np.maximum(np.hypot(vx, vy), np.hypot(vx + w * b, vy - w * a))
+    finite = np.isfinite(vx) & np.isfinite(vy) & np.isfinite(w) & np.isfinite(th)
+    return float(np.max(speed[finite & np.isfinite(speed)], initial=0.0))
 
 
 @refuse_unknown_keywords(BATCH_KEYWORD_NOTES)
@@ -161,7 +182,7 @@ def simulate_batch(
     elif angle is None or _one_value(angle):
         angle = check_angle(angle, body)  # one angle for every case: refused as by simulate
     vx, vy = batch_velocity(vx, vy, speed, incidence, velocity)
-    x = _batch_inputs({"mu": mu, "angle": angle, "vx": vx, "vy": vy, "spin": spin})
+    x = _batch_inputs({"mu": mu, "angle": angle, "vx": vx, "vy": vy, "spin": spin}, body)
     _refuse_degrees(x["angle"], isinstance(body, Sphere))
     out, status = run_arrays(
         model.law_id,
@@ -190,7 +211,8 @@ def simulate_batch(
             delta_ratio(model.law_id, model.params, out[:, L.OUTPUT_FIELDS.index("delta_max")])
         ),
         law_range=range_note(model.law_id, model.params),
-        refusals=case_refusals(body, x, np.flatnonzero(status == ST_BAD_INPUT)),
+        refusals=case_refusals(body, x, np.flatnonzero(status == ST_BAD_INPUT))
+        | engine_failures(body, x, status, model, fric, gravity),
         setup=batch_setup(
             body,
             flat,
@@ -223,6 +245,33 @@ def flattening_words(
     return yields, (flattening_warning(clause),) if clause else ()
 
 
+def engine_failures(
+    body: Rod | Sphere,
+    cases: Mapping[str, np.ndarray],
+    status: np.ndarray,
+    model: ContactModel,
+    friction: FrictionModel,
+    gravity: Any,
+) -> dict[int, str]:
+    """The whole message of each case the engine ran and stopped (a status other than ok and
+    the input refusals ST_BAD_INPUT, ST_BAD_ANGLE, ST_NOT_APPROACHING), by case index, in the
+    words of ``simulate``'s ValueError (``outcome.status_error``) for the case's own values:
+    the law's limit, the contact point's approach speed vn = vy - spin a [m/s], the gravity
+    [m/s^2], what to change."""
+    refused = (ST_OK, ST_BAD_INPUT, ST_BAD_ANGLE, ST_NOT_APPROACHING)
+    failed = np.flatnonzero(~np.isin(status, refused))
+    if failed.size == 0:
+        return {}
+    g = gravity_value(gravity)
+    why: dict[int, str] = {}
+    for i in failed.tolist():
+        th, vx, vy, w, mu = (float(cases[k][i]) for k in ("angle", "vx", "vy", "spin", "mu"))
+        a = float(lever_arms(body.half_length, body.tip_radius, th)[0])
+        jam = slip_jam(body, th, friction, mu, (vx, vy), w)
+        why[i] = str(status_error(int(status[i]), model, vn=vy - w * a, gravity=g, jam=jam))
+    return why
+
+
 def _one_value(value: Any) -> bool:
     """Whether ``value`` is one number (a scalar, a 0-d array or Quantity, a string), not a
     list or an array of the cases' values."""
@@ -243,4 +292,4 @@ def _refuse_degrees(angle: np.ndarray, sphere: bool) -> None:
         )
 
 
-__all__ = ["flattening_words", "simulate_batch"]
+__all__ = ["engine_failures", "flattening_words", "simulate_batch"]

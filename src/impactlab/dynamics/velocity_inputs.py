@@ -63,9 +63,16 @@ def batch_velocity(
 def speed_incidence(speed: Any, incidence: Any) -> tuple[np.ndarray, np.ndarray]:
     """(vx, vy) = (speed sin(incidence), -speed cos(incidence)) [m/s], element by element;
     ValueError naming the refused cases by index, with the rule, unless every speed is finite
-    and > 0 m/s and every incidence in (-90, 90) deg (a bare incidence is radians); each read
-    as :func:`_column` reads it."""
+    and > 0 m/s and every incidence in (-90, 90) deg (a bare incidence is radians), and one
+    naming both shapes when they do not broadcast; each read as :func:`_column` reads it."""
     v, th = _column("speed", speed, "m/s"), _column("incidence", incidence, "rad")
+    try:
+        np.broadcast_shapes(v.shape, th.shape)
+    except ValueError:
+        raise ValueError(
+            f"speed and incidence do not broadcast (speed: {v.shape}, incidence: {th.shape}): "
+            "give arrays of one length, or a number for either"
+        ) from None
     with np.errstate(invalid="ignore"):
         _refuse("speed", v, ~(v > 0.0) | ~np.isfinite(v), "must be finite and > 0 m/s", "m/s")
         bad = ~np.vectorize(incidence_allowed, otypes=[bool])(th)
