@@ -19,11 +19,14 @@ from impactlab.paper.calibration_checks import (
     CLIPPED,
     EXACT,
     MONTE_CARLO,
+    _ends,
     band_note,
     band_text,
     checks_table,
+    interval_text,
     mixture_band,
     ppc_rows,
+    reformat_interval,
 )
 from impactlab.paper.calibration_report import (
     PAPER_SIGMAS,
@@ -174,8 +177,12 @@ def test_the_flexible_bands_are_the_shipped_ones_and_said_so(section):
     flexible = checks[checks["configuration"] != "rigid rod"]
     assert (flexible["band"] == MONTE_CARLO).all()
     for _, r in flexible.iterrows():
-        assert r[BAND] == shipped[(r["configuration"], r["drop"], r["quantity"])]
+        stored = shipped[(r["configuration"], r["drop"], r["quantity"])]
+        lo, hi = (float(x) for x in stored.strip("[]").split(","))
+        # the shipped ends, written in the report's number format (the summary stores .3g)
+        assert r[BAND] == interval_text(lo, hi)
     text = to_markdown(blocks, "t")
+    assert "e+0" not in text and "[691, 1080]" in text  # 1080 um, not 1.08e+03
     assert "the mixture over the 30 posterior draws of a normal" in text
     assert "best fit +- 1.645 sigma" in text
     assert "not the draws' predictions" in text
@@ -190,3 +197,25 @@ def test_the_damping_ratio_is_set_beside_steels(section):
     assert said in text
     assert "steel's material damping (1e-4 to 1e-3; docs/flexible.md)" in text
     assert "it is not a property of the rod" in text
+
+
+@settings(deadline=None)
+@given(
+    st.floats(min_value=-1e9, max_value=1e9, allow_nan=False).filter(lambda x: abs(x) > 1e-9),
+    st.floats(min_value=-1e9, max_value=1e9, allow_nan=False).filter(lambda x: abs(x) > 1e-9),
+)
+def test_an_interval_is_in_the_reports_number_format(lo, hi):
+    """No Python exponent (``1.08e+03``) in a band or the zeta interval; the text reads back to
+    its ends within the 3 digits shown."""
+    text = interval_text(lo, hi)
+    assert "e+" not in text and "e-" not in text
+    back = _ends(text)
+    assert back == pytest.approx((lo, hi), rel=5e-3)
+
+
+def test_the_zeta_interval_and_a_stored_exponent_band():
+    assert interval_text(691.0, 1083.0) == "[691, 1080]"
+    assert interval_text(1.234e-4, 5.0e-3) == "[1.23\u00d710\u207b\u2074, 0.005]"
+    assert _ends("[691, 1.08e+03]") == (691.0, 1080.0)  # as older summaries stored it
+    assert reformat_interval("[1.2e-05, 0.3]") == "[1.2\u00d710\u207b\u2075, 0.3]"
+    assert reformat_interval("-") == "-" and reformat_interval(None) is None

@@ -77,9 +77,17 @@ def test_report_marks_flagged_rows_and_explains(sims20):
     note = _extrapolation_note(tab)
     assert note.startswith(f"{EXTRAPOLATED_MARK} LAW_EXTRAPOLATED: 6 of 6")
     assert "FE, 10 % force / 0.05 delta_r/delta_max" in note
-    assert "ghaednia: verified up to 1 delta_c at E*/S_y = 360" in note
-    assert "kogut-komvopoulos: verified up to 0.3 delta_c" in note
-    assert "brake: verified up to 2 delta_c" in note
+    # each law's range in the result's own words (law_range: the limit in Jackson-Green's
+    # delta_c and in the law's own reference), beside the ratio in that own reference
+    for (_, law, _), res in sims20.items():
+        assert f"{law}: {res.law_range}, max delta/" in note, law
+    assert "verified against FE up to 1 delta_c (E*/S_y = 360.3" in note
+    assert "up to 0.3 delta_c (Jackson-Green's; = 0.305 delta_y, the law's own;" in note
+    assert "), max delta/delta_y here " in note
+    assert "brake: verified against FE up to 2 delta_c (Jackson-Green's; = 2.01 delta_y" in note
+    # outside the FE cases: the smallest verified range, not Kogut & Etsion's former 110 delta_c
+    assert "former" not in note
+    assert "keeps the stand-in, the law's smallest verified range over the FE cases" in note
 
 
 def _fake_result(tmp_path, simulations):

@@ -23,6 +23,8 @@ import numpy as np
 import pandas as pd
 from scipy.optimize import brentq
 
+from impactlab.paper.report import fmt_number
+
 __all__ = [
     "BAND",
     "CLIPPED",
@@ -32,8 +34,10 @@ __all__ = [
     "band_note",
     "band_text",
     "checks_table",
+    "interval_text",
     "mixture_band",
     "ppc_rows",
+    "reformat_interval",
 ]
 
 #: The band's column, and how each row's band was obtained (column ``band``).
@@ -68,20 +72,53 @@ def mixture_band(means: Sequence[float], sigma: float) -> tuple[float, float]:
     return lo, hi
 
 
+#: Significant digits of a band's ends (the quantiles of a sampled distribution).
+BAND_DIGITS = 3
+
+_FROM_SUPERSCRIPT = str.maketrans(
+    "\u207b\u2070\u00b9\u00b2\u00b3\u2074\u2075\u2076\u2077\u2078\u2079", "-0123456789"
+)
+
+
+def interval_text(lo: float, hi: float) -> str:
+    """``[691, 1080]``: the two ends with :data:`BAND_DIGITS` significant digits, in the report's
+    number format (``impactlab.paper.report.fmt_number``: positional from 0.001 to below 1e6,
+    else a mantissa, U+00D7 and a superscript power of ten; never ``1.08e+03``)."""
+    return f"[{fmt_number(lo, BAND_DIGITS)}, {fmt_number(hi, BAND_DIGITS)}]"
+
+
 def band_text(lo: float, hi: float, quantity: str) -> tuple[str, bool]:
-    """The band ``[lo, hi]`` of ``quantity`` (its name, with or without the unit) as shown,
-    and whether it was clipped: a length's (:data:`LENGTHS`) is that of max(0, x), its
-    negative ends raised to 0."""
+    """The band ``[lo, hi]`` of ``quantity`` (its name, with or without the unit) as shown
+    (:func:`interval_text`), and whether it was clipped: a length's (:data:`LENGTHS`) is that
+    of max(0, x), its negative ends raised to 0."""
     clip = str(quantity).split(" [")[0] in LENGTHS and lo < 0.0
     if clip:
         lo, hi = 0.0, max(hi, 0.0)
-    return f"[{lo:.3g}, {hi:.3g}]", clip
+    return interval_text(lo, hi), clip
+
+
+def _number(text: str) -> float:
+    """A number as a band writes it: Python's (``1.08e+03``, as older summaries stored it) or
+    the report's (``1.23``, U+00D7, ``10`` and a superscript power)."""
+    text = text.strip()
+    if "\u00d710" in text:
+        mantissa, power = text.split("\u00d710")
+        return float(f"{mantissa}e{power.translate(_FROM_SUPERSCRIPT)}")
+    return float(text)
 
 
 def _ends(band: str) -> tuple[float, float]:
     """The two ends of a band written ``[lo, hi]``."""
-    lo, hi = (float(x) for x in band.strip("[]").split(","))
+    lo, hi = (_number(x) for x in band.strip("[]").split(","))
     return lo, hi
+
+
+def reformat_interval(text: Any) -> Any:
+    """A stored interval ``[lo, hi]`` written again by :func:`interval_text` (a summary may
+    hold Python's ``1.08e+03``); anything else (``-``, None) unchanged."""
+    if isinstance(text, str) and text.startswith("[") and text.endswith("]"):
+        return interval_text(*_ends(text))
+    return text
 
 
 def ppc_rows(posteriors: Mapping[str, Any]) -> list[dict[str, Any]]:
@@ -100,7 +137,7 @@ def ppc_rows(posteriors: Mapping[str, Any]) -> list[dict[str, Any]]:
                     "sigma": r["sigma"] * scale,
                     "best fit": r["best"] * scale,
                     "predicted median": r["median"] * scale,
-                    BAND: f"[{r['pred_q05'] * scale:.3g}, {r['pred_q95'] * scale:.3g}]",
+                    BAND: interval_text(r["pred_q05"] * scale, r["pred_q95"] * scale),
                     "z (best fit)": r["z_best"],
                 }
             )
@@ -126,11 +163,11 @@ def checks_table(
             sigma = sigmas[q] if q == "e" else sigmas[q] * abs(float(r["measured"]))
         if draws is None and r["configuration"] in fixed:
             draws = [r["best fit"]]
-        band, how = r[BAND], EXACT if draws is not None else MONTE_CARLO
-        lo, hi = mixture_band(draws, float(sigma)) if draws is not None else _ends(band)
-        text, clipped = band_text(lo, hi, r["quantity"])
-        if draws is not None or clipped:
-            band = text
+        how = EXACT if draws is not None else MONTE_CARLO
+        lo, hi = mixture_band(draws, float(sigma)) if draws is not None else _ends(r[BAND])
+        # a stored band is written again in the report's number format (older summaries
+        # stored Python's 1.08e+03)
+        band, clipped = band_text(lo, hi, r["quantity"])
         shown = {k: r[k] for k in ("configuration", "drop", "quantity", "measured")}
         out.append(
             shown

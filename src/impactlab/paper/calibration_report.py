@@ -20,7 +20,13 @@ import pandas as pd
 
 from impactlab._files import write_bytes_atomic, write_text_atomic
 from impactlab.calibrate import Calibration
-from impactlab.paper.calibration_checks import band_note, checks_table, ppc_rows
+from impactlab.paper.calibration_checks import (
+    band_note,
+    checks_table,
+    interval_text,
+    ppc_rows,
+    reformat_interval,
+)
 from impactlab.paper.calibration_run import (  # noqa: F401  (re-exported: the old home)
     HARDENED_LAW_NAME,
     PAPER_SIGMAS,
@@ -60,6 +66,10 @@ SHIPPED = Path(__file__).resolve().parent / "data" / "calibration.json"
 STEEL_DAMPING = (1e-4, 1e-3)
 
 
+#: The ranking's column of the posterior interval of zeta.
+ZETA_INTERVAL = "zeta 90 % interval"
+
+
 def _ranking(cal: Calibration) -> pd.DataFrame:
     rows = []
     for r in cal.ranking:
@@ -75,13 +85,22 @@ def _ranking(cal: Calibration) -> pd.DataFrame:
                 "elpd_diff": r["elpd_diff"],
                 "dse": r["dse"],
                 "zeta median": s["median"] if used else None,
-                "zeta 90 % interval": f"[{s['q05']:.3g}, {s['q95']:.3g}]" if used else "-",
+                ZETA_INTERVAL: interval_text(s["q05"], s["q95"]) if used else "-",
                 "Pareto k > 0.7": "yes" if r["warning"] else "no",
                 "converged": _yes_no(r.get("converged")),
                 "note": r.get("note", ""),
             }
         )
     return pd.DataFrame(rows)
+
+
+def _ranking_shown(ranking: Sequence[Mapping[str, Any]]) -> pd.DataFrame:
+    """The ranking as the report shows it: a stored zeta interval in the report's number
+    format (``calibration_checks.reformat_interval``)."""
+    table = pd.DataFrame(list(ranking))
+    if ZETA_INTERVAL in table:
+        table[ZETA_INTERVAL] = [reformat_interval(v) for v in table[ZETA_INTERVAL]]
+    return table
 
 
 def _yes_no(flag: Any) -> str:
@@ -194,7 +213,7 @@ def calibration_section(cal: Calibration | Mapping[str, Any], number: int) -> li
             + origin
         ),
         Table(
-            pd.DataFrame(summary["ranking"]),
+            _ranking_shown(summary["ranking"]),
             "Configurations ranked by PSIS-LOO, with the posterior of zeta",
         ),
         *_damping_note(ranked),

@@ -88,9 +88,10 @@ def figure_forces(
     path: Path, sims: Simulations, angle: int, friction: str = "impulse_ratio"
 ) -> Path:
     """Force-time and force-penetration for the three laws at one angle; a curve whose impact
-    left its law's verified range is marked in the legend (``extrapolation_label``)."""
+    left its law's verified range is marked in the legend (``extrapolation_label``), which
+    lies below each panel, clear of the curves."""
     plt = pyplot()
-    fig, (a1, a2) = plt.subplots(1, 2, figsize=(10, 4))
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(10, 5))
     for law in D.PAPER_LAWS:
         res = sims.get((angle, law, friction))
         if res is None or res.history is None:
@@ -103,8 +104,8 @@ def figure_forces(
     a1.set_ylabel("normal force [N]")
     a2.set_xlabel("penetration [um]")
     a2.set_ylabel("normal force [N]")
-    a1.legend(fontsize=8)
-    a2.legend(fontsize=8)
+    for ax in (a1, a2):  # below the axes: inside, it hid the peaks of the curves
+        ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.16), frameon=False)
     fig.suptitle(
         f"{angle} deg, v_i = {D.EXPERIMENTS[angle].v_i} m/s, "
         f"mu = {D.EXPERIMENTS[angle].mu}, friction: {friction}"

@@ -9,6 +9,8 @@ from typing import Any
 
 import pandas as pd
 
+from impactlab.contact import get_law
+from impactlab.contact.range_note import range_note
 from impactlab.contact.ranges import RANGES, law_range
 from impactlab.contact.verified_ranges import tolerance_text
 from impactlab.materials import ContactPair
@@ -103,7 +105,10 @@ def _marked(table: pd.DataFrame, column: str) -> pd.DataFrame:
 
 
 def _extrapolation_note(simulations: pd.DataFrame) -> str:
-    """The paragraph on the LAW_EXTRAPOLATED flag of the simulated rows."""
+    """The paragraph on the LAW_EXTRAPOLATED flag of the simulated rows: per flagged law, its
+    range for the paper's pair in the result's own words (``ImpactResult.law_range``: the limit
+    in Jackson-Green's delta_c and in the law's own reference) and the largest delta_max in
+    that same own reference."""
     n, m = count_extrapolated(simulations)
     flagged = simulations[simulations["flags"].fillna("").str.contains("LAW_EXTRAPOLATED")]
     laws = sorted(set(flagged["law"]))
@@ -122,8 +127,9 @@ def _extrapolation_note(simulations: pd.DataFrame) -> str:
         "was not verified against the FE reference. "
         + (f"{ranges}. " if ranges else "")
         + "The verified ranges are measured from the shipped FE curves (docs/laws/index.md, "
-        '"Verified ranges"); a pair whose E*/S_y lies outside the FE cases keeps the former '
-        "stand-in, marked unverified; the flag is advisory and changes no number."
+        '"Verified ranges"); a pair whose E*/S_y lies outside the FE cases keeps the stand-in, '
+        "the law's smallest verified range over the FE cases (never beyond first yield for "
+        "Brake and Thornton), marked unverified; the flag is advisory and changes no number."
     )
 
 
@@ -133,12 +139,13 @@ _PAPER_RATIO = _PAPER_PAIR.E_star / _PAPER_PAIR.yield_strength
 
 
 def _verified_words(law: str) -> str:
-    """``verified up to 1 delta_c at E*/S_y = 360`` (the paper's pair), or the stand-in."""
-    cases = [c for c in law_range(law).verified if abs(c.e_star_over_sy / _PAPER_RATIO - 1) < 1e-3]
-    if cases:
-        c = cases[0]
-        return f"verified up to {c.upper:.3g} delta_c at E*/S_y = {c.e_star_over_sy:.0f}"
-    return f"{law_range(law).stand_in_text} (unverified)"
+    """``law``'s range for the paper's pair as a result states it (``ImpactResult.law_range``,
+    ``impactlab.contact.range_note``): ``verified against FE up to 0.3 delta_c (Jackson-Green's;
+    = 0.305 delta_y, the law's own; E*/S_y = 360.3; FE cases 28-1731)``, or ``unverified: ...;
+    stand-in limit ...``."""
+    model = get_law(law).build(_PAPER_PAIR, D.PAPER_ROD.tip_radius)
+    note = range_note(model.law_id, model.params)
+    return note if note is not None else f"{law_range(law).stand_in_text} (unverified)"
 
 
 def _sim_vs_experiment(simtab: pd.DataFrame, exp: pd.DataFrame) -> list[Block]:

@@ -32,6 +32,7 @@ import pandas as pd
 
 from impactlab._files import write_text_atomic
 from impactlab._version import __version__
+from impactlab.experiment.checks import check_path
 from impactlab.paper import data as D
 from impactlab.paper.analytic_rows import (
     experimental_rows,
@@ -113,6 +114,7 @@ def reproduce(
     marker damaged); a link named as one of :data:`FILES` is replaced by this run's file."""
     if not isinstance(simulate, bool):
         raise TypeError(f"simulate must be True or False, got {simulate!r}")
+    check_path(out_dir, "out_dir")  # one line naming out_dir (None, a number, "")
     t0 = time.perf_counter()
     earlier = _marker_status(Path(out_dir).expanduser())  # before this run is marked running
     out = prepare_output(out_dir)

@@ -57,10 +57,18 @@ def verify_hertz(
     cases: Sequence[tuple[float, float, str]] = HERTZ_CASES, rtol: float | None = None
 ) -> VerificationTable:
     """Hertz normal impact of a steel sphere (AISI 201), no gravity, no friction, against the
-    closed forms of :func:`hertz_closed_form` (relative errors; e and e* must equal 1)."""
+    closed forms of :func:`hertz_closed_form` (relative errors; e and e* must equal 1). Each
+    case's flat is ``"aisi-1010"`` or ``"soft"`` (ValueError naming them otherwise)."""
+    flats = {"aisi-1010": AISI_1010, "soft": _soft_flat()}
+    for case in cases:
+        if case[2] not in flats:
+            raise ValueError(
+                f"flat: {case[2]!r} in case {tuple(case)!r} is not one of the Hertz cases' "
+                f"flats; allowed: {', '.join(map(repr, flats))}"
+            )
     records: list[dict[str, Any]] = []
     for radius, v, flat_name in cases:
-        flat = AISI_1010 if flat_name == "aisi-1010" else _soft_flat()
+        flat = flats[flat_name]
         s = Sphere(radius)
         r = simulate(
             s,

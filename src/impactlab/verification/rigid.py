@@ -135,12 +135,35 @@ def engine_boundary(angles: np.ndarray, *, iterations: int = 30, v: float = 1.0)
     return 0.5 * (lo + hi)
 
 
+def _angles_deg(angles_deg: Any) -> np.ndarray:
+    """``angles_deg`` as a 1-D float array [deg], every angle in (0, 90) deg; a one-line
+    ValueError in degrees otherwise (they are degrees already: no radians advice)."""
+    try:
+        a = np.atleast_1d(np.asarray(angles_deg, dtype=float))
+    except (TypeError, ValueError):
+        raise ValueError(
+            f"angles_deg must be numbers in degrees, each in (0, 90), got {angles_deg!r}"
+        ) from None
+    if a.ndim != 1 or a.size == 0:
+        raise ValueError(f"angles_deg: give one or more angles in (0, 90) deg, got {angles_deg!r}")
+    bad = a[~((a > 0.0) & (a < 90.0))]  # NaN too
+    if bad.size:
+        raise ValueError(
+            "angles_deg: every angle must lie in (0, 90) deg, got "
+            + ", ".join(f"{x:g}" for x in bad)
+            + " deg"
+        )
+    return a
+
+
 def verify_critical_friction(
     angles_deg: Sequence[float] = (5, 10, 20, 30, 45, 60, 70, 80, 85), *, iterations: int = 30
 ) -> VerificationTable:
     """The engine's slip/stick boundary (bisection, :func:`engine_boundary`) against
-    ``impactlab.analytic.critical_friction`` at each angle (relative difference)."""
-    ang = np.radians(np.asarray(angles_deg, dtype=float))
+    ``impactlab.analytic.critical_friction`` at each angle (relative difference); ``angles_deg``
+    in degrees, each in (0, 90) (ValueError otherwise, in degrees)."""
+    deg = _angles_deg(angles_deg)
+    ang = np.radians(deg)
     found = engine_boundary(ang, iterations=iterations)
     mu_c = np.asarray(critical_friction(ang, PAPER_ROD), dtype=float)
     resolution = 2.0 ** -(iterations + 1)
@@ -151,7 +174,7 @@ def verify_critical_friction(
             "engine": float(f),
             "err": abs(float(f) / float(m) - 1.0),
         }
-        for d, m, f in zip(angles_deg, mu_c, found, strict=True)
+        for d, m, f in zip(deg, mu_c, found, strict=True)
     ]
     worst = worst_of([r["err"] for r in records])
     tol = max(TOLERANCES["critical_friction"], 4.0 * resolution / float(np.min(mu_c)))
