@@ -5,15 +5,41 @@ then replaces the target in one step (``os.replace``): an interrupted write, a f
 crash leaves the old file as it was, and the temporary one is removed. A target that exists is
 replaced only where it could be written in place (a read-only file is refused as ``open`` would
 refuse it: ``os.replace`` would not ask), the new file keeps its permission bits, and a symbolic
-link is written through (the file it names is replaced, the link kept).
+link is written through (the file it names is replaced, the link kept). An error of the
+system names the target, never the temporary file. ``folder_refusal`` says, before any work,
+why no file can be made in a folder.
 """
 
 from __future__ import annotations
 
 import errno
 import os
+import shutil
 import stat
+import tempfile
 from pathlib import Path
+
+from impactlab._oserror import oserror_words
+
+
+def folder_refusal(path: str | os.PathLike[str], name: str) -> str | None:
+    """Why the folder ``path`` (of the option or argument ``name``) cannot take new files, as
+    one line naming ``name`` and ``path`` as given, or None when it can: the folder, or the
+    nearest existing one above it where it is still to be made, must let a probe (a temporary
+    folder, removed at once) be created. A file in the way is left to the caller's check."""
+    given = Path(path)
+    existing = next((p for p in (given, *given.parents) if p.exists()), Path("."))
+    if not existing.is_dir():
+        return None
+    try:
+        probe = tempfile.mkdtemp(prefix=".impactlab-probe-", dir=existing)
+    except OSError as exc:
+        words = oserror_words(exc)
+        why = words[0] if words is not None else (exc.strerror or str(exc))
+        where = "the folder" if existing == given else f"its folder {str(existing)!r}"
+        return f"{name} {str(path)!r}: {where} is not writable ({why}); choose another {name}"
+    shutil.rmtree(probe, ignore_errors=True)
+    return None
 
 
 def write_bytes_atomic(path: str | os.PathLike[str], data: bytes) -> None:
@@ -36,8 +62,10 @@ def write_bytes_atomic(path: str | os.PathLike[str], data: bytes) -> None:
         if mode is not None:
             os.chmod(tmp, mode)
         os.replace(tmp, target)
-    except BaseException:
+    except BaseException as exc:
         tmp.unlink(missing_ok=True)
+        if isinstance(exc, OSError) and exc.filename is not None:
+            exc.filename = os.fspath(path)  # the file the user named, not the temporary one
         raise
 
 

@@ -10,6 +10,8 @@ from typing import Any
 
 import pytest
 
+from impactlab._version import __version__
+
 SWEEP_TESTS = Path(__file__).resolve().parents[1] / "sweep"
 
 MC_STUDY = """
@@ -74,7 +76,13 @@ def test_monte_carlo_json_is_one_document_with_the_report(
     assert code == 0, err
     # as sweep uncertainty --json writes it (numpy's sums may differ in the last bits with the
     # arrays' alignment in memory: the statistics agree to round-off, the rest exactly)
-    assert _close(doc["uncertainty"], json.loads(alone))
+    alone_doc = json.loads(alone)
+    assert doc["impactlab_version"] == alone_doc.pop("impactlab_version") == __version__
+    assert "impactlab_version" not in doc["uncertainty"]  # once, at the top of the document
+    assert _close(doc["uncertainty"], alone_doc)
+    code, info, err = cli_main("sweep", "info", str(tmp_path / "mc.zarr"), "--json")
+    assert code == 0, err
+    assert json.loads(info)["impactlab_version"] == __version__
     assert [row["output"] for row in report["summary"]] == ["e", "delta_p"]
     assert report["summary"][1]["mean"]["unit"] == "m"
 

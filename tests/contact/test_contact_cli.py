@@ -28,7 +28,7 @@ def test_list_json(app: typer.Typer) -> None:
     res = CliRunner().invoke(app, ["laws", "--json"])
     assert res.exit_code == 0, res.output
     data = json.loads(res.stdout)
-    assert list(data) == list(law_names())
+    assert list(data) == [*law_names(), "impactlab_version"]
     brake = data["brake"]
     assert brake["doi"] == "10.1016/j.ijsolstr.2015.02.019"
     assert {p["name"] for p in brake["parameters"]} == {"hardness", "meyer_index"}

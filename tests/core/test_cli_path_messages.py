@@ -66,7 +66,8 @@ def test_export_to_a_folder(cli_main: CliMain, store: Path, tmp_path: Path) -> N
     code, _, err = cli_main("sweep", "export", str(store), str(tmp_path))
     assert code == 2
     assert _one_error(err) == (
-        f"error: the NetCDF file {str(tmp_path)!r} is a folder: give the name of the file to write"
+        f"error: target {str(tmp_path)!r} is a folder: give the name of the file to write, "
+        "ending in .csv (CSV), .nc or .nc4 (NetCDF-4)"
     )
     code, _, err = cli_main("sweep", "export", str(store), str(tmp_path / "no" / "x.nc"))
     assert code == 2 and "the folder" in _one_error(err) and "does not exist" in err

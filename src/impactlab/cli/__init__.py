@@ -1,8 +1,10 @@
 """The ``impactlab`` command line. Each command lives in its own module with a ``register(app)``.
 
-User errors (ValueError, FileNotFoundError, ...) and running out of memory (an input that asks
-for too much) exit with status 2 and one line naming the bad input, never a traceback; an
-error of the system (a full disk, a read-only file system) with status 1 and one line. Set
+User errors (a ValueError; an OSError impactlab raised with its own message, such as a file
+not found) and running out of memory (an input that asks for too much) exit with status 2 and
+one line naming the bad input, never a traceback; an error of the system on a file, whatever
+its errno (no permission, a read-only file system, a full disk), with status 1 and one line in
+the words of ``impactlab._oserror`` naming the file (never a writer's temporary file). Set
 ``IMPACTLAB_DEBUG=1`` to see the traceback. Ctrl-C exits with status 130 and one line
 (``interrupted``, or the command's own: ``sweep run``, ``calibrate``).
 """
@@ -23,7 +25,7 @@ import typer
 from typer.core import TyperGroup
 
 from impactlab import _runtime
-from impactlab._oserror import oserror_words
+from impactlab._oserror import system_error_line as _system_error_line
 from impactlab._version import __version__
 from impactlab.cli import (
     analyze,
@@ -39,7 +41,6 @@ from impactlab.cli import (
     sweep,
     warm,
 )
-from impactlab.cli._common import UserError
 
 
 class _Commands(TyperGroup):
@@ -71,7 +72,10 @@ app = typer.Typer(
     cls=_Commands,
     name="impactlab",
     help="Elastic-plastic oblique impacts with friction: simulate, invert, analyze, sweep, "
-    "reproduce the paper.",
+    "reproduce the paper.\n\nExit status: 0 done (flagged results too); 2 an input refused, "
+    "before any work where it can be checked (an output folder that cannot be written too); 1 "
+    "an error of the system on a file while working (no permission, a read-only file system, a "
+    "full disk); 130 interrupted (README: Exit status).",
     no_args_is_help=True,
     add_completion=False,
     context_settings={"help_option_names": ["-h", "--help"]},
@@ -196,17 +200,12 @@ def _usage_line(exc: Exception, message: str) -> str:
     return f"{text} (see '{path} --help')" if isinstance(path, str) and path else text
 
 
-def _system_error_line(exc: OSError) -> str:
-    """An OSError of the system in one line: its own message where it has no errno text (a
-    sweep's ``StoreWriteError`` says what is stored), else what its errno means for its file
-    (a full disk, a quota, a read-only file system), else its text and file."""
-    if exc.strerror is None:
-        return str(exc) or type(exc).__name__
-    where = repr(str(exc.filename)) if exc.filename is not None else "a file"
-    words = oserror_words(exc)
-    if words is not None:
-        return f"{words[0]} writing {where}: {words[1]} and run the command again"
-    return f"{exc.strerror}: {where}" if exc.filename is not None else exc.strerror
+def _refused_input(exc: OSError) -> bool:
+    """Whether ``exc`` is a refusal of the user's input (exit status 2, as a ValueError): an
+    OSError impactlab raised with a message of its own and no errno
+    (``FileNotFoundError("calibration file not found: x")``). An OSError of the system, with
+    its errno (no permission, a read-only file system, a full disk), is not: status 1."""
+    return exc.errno is None and exc.strerror is None
 
 
 def main() -> None:
@@ -219,22 +218,14 @@ def main() -> None:
         rc = _run()
     except SystemExit:
         raise
-    except (
-        UserError,
-        ValueError,
-        FileNotFoundError,
-        FileExistsError,
-        IsADirectoryError,
-        NotADirectoryError,
-        PermissionError,
-    ) as exc:
+    except (ValueError, OSError) as exc:
         if os.environ.get("IMPACTLAB_DEBUG"):
             raise
-        print(f"error: {exc}", file=sys.stderr)
-        sys.exit(2)
-    except OSError as exc:  # the system's (a full disk, a read-only file system): not the input
-        if os.environ.get("IMPACTLAB_DEBUG"):
-            raise
+        if not isinstance(exc, OSError) or _refused_input(exc):  # the input refused: status 2
+            print(f"error: {exc}", file=sys.stderr)
+            sys.exit(2)
+        # the system's, whatever its errno (no permission, a read-only file system, a full
+        # disk, a file where a folder should be): its words and the file named, status 1
         print(f"error: {_system_error_line(exc)}", file=sys.stderr)
         sys.exit(1)
     except MemoryError as exc:  # an input that asks for more than the machine has

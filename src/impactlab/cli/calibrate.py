@@ -28,7 +28,7 @@ from impactlab._compile_notice import gives_way
 from impactlab._display import display_unit, format_number
 from impactlab._json import jsonable
 from impactlab.cli._common import UserError, console
-from impactlab.cli.output_paths import check_replaceable
+from impactlab.cli.output_paths import check_replaceable, output_dir
 
 _PARAM_HELP = (
     'A free parameter and its prior, "name=uniform(low, high)", "name=loguniform(low, high)" or '
@@ -198,7 +198,8 @@ def calibrate_cmd(
     Examples:
 
     \b
-      impactlab calibrate examples/data/drops.csv -p "flat_yield_strength=uniform(100 MPa, 1 GPa)"
+      impactlab calibrate examples/data/drops.csv -p "mu=uniform(0, 0.6)" \\
+        -p "flat_yield_strength=uniform(100 MPa, 1 GPa)"
 
     \b
       impactlab calibrate drops.csv -p "mu=uniform(0, 0.6)" \\
@@ -288,6 +289,7 @@ def _run_options(seed: int | None, out: Path | None, restart: bool) -> dict[str,
         return {}
     if out.exists() and not out.is_dir():
         raise UserError(f"--out {str(out)!r} is a file; give a folder")
+    output_dir(out, "--out")  # a file above it, or a folder no file can be made in
     check_replaceable(out, FILES.values(), "calibrate", "--out", {FILES["results"]: RESULT_KEYS})
     return {"state_dir": out / "state", "restart": restart}
 

@@ -3,10 +3,12 @@ command's option keys, checked (unknown keys with the nearest known one, a mater
 whole, switches that are TOML booleans) and merged under the options of the command line, which
 win (a velocity given there, either form, replaces the file's, either form); a material file it
 names is read relative to the file's folder; each value's errors name it as the user gave it,
-``--mass`` or ``mass (in case.toml)``."""
+``--mass`` or ``mass (in case.toml)``, the API's refusals of a velocity or a rod's mass too
+(``approach_worded``)."""
 
 from __future__ import annotations
 
+import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -173,3 +175,76 @@ def option_material(opt: ConfigOptions, key: str, default: Material) -> Material
         return get_material(value, opt.label(key))
     except ValueError as exc:
         raise UserError(str(exc)) from None
+
+
+#: The API's refusal of a rod that does not approach the flat (``dynamics.checks``, ``.drop``).
+_APPROACH = re.compile(
+    r"velocity: the (?P<what>contact point|tip) does not approach the flat \(its normal "
+    r"velocity vy - spin \* \(L/2\) cos\(angle\) = (?P<vn>\S+) m/s must be < 0\)"
+)
+
+
+#: The API's refusal of a velocity component beyond its range (``dynamics.input_checks``).
+_RANGE = re.compile(
+    r"velocity\[\d\] \((?P<comp>vx|vy)\) = (?P<v>\S+) m/s (?P<rest>exceeds .*)", re.DOTALL
+)
+
+
+def _range_worded(found: re.Match[str], opt: ConfigOptions) -> str:
+    """A velocity component beyond its range named as typed: ``--vx "2e4 m/s" exceeds ...``,
+    or the options that gave it (``--speed "2e4 m/s", --incidence "10 deg" give vy = -1.97e4
+    m/s, which exceeds ...``)."""
+    comp, rest = found["comp"], found["rest"]
+    if opt.given(comp):
+        return f'{opt.label(comp)} "{opt.values[comp]}" {rest}'
+    keys = [k for k in ("speed", "incidence") if opt.given(k)]
+    typed = ", ".join(f'{opt.label(k)} "{opt.values[k]}"' for k in keys)
+    return f"{typed} give {comp} = {float(found['v']):.4g} m/s, which {rest}"
+
+
+#: The API's refusal of a rod's mass and diameter that do not fit its material (``bodies``;
+#: its head "mass" may be named already: "--mass", "mass (in case.toml)").
+_DENSITY = re.compile(
+    r"(?:.*? )?\((?P<mass>[^)]*) kg\), diameter \((?P<diameter>[^)]*) m\) and length "
+    r"\((?P<length>[^)]*) m\) (?P<rest>imply .*)",
+    re.DOTALL,
+)
+
+
+def _density_worded(found: re.Match[str], opt: ConfigOptions) -> str:
+    """The rod's mass, diameter and length that imply another density, each named as typed
+    (``--diameter "12 mm"``), or with its value rounded where it was not given (``length
+    304.8 mm``)."""
+    units = {"mass": ("kg", 1.0), "diameter": ("mm", 1e3), "length": ("mm", 1e3)}
+    parts = []
+    for key, (unit, scale) in units.items():
+        if opt.given(key):
+            parts.append(f'{opt.label(key)} "{opt.values[key]}"')
+        else:
+            parts.append(f"{key} {float(found[key]) * scale:.4g} {unit}")
+    return f"{parts[0]}, {parts[1]} and {parts[2]} {found['rest']}"
+
+
+def approach_worded(message: str, opt: ConfigOptions) -> str:
+    """The API's refusal of a rod that does not approach the flat naming the velocity options
+    as typed (``--vy "1.41 m/s"``; a rod's ``--spin`` where given, with its term of the normal
+    velocity), of a velocity component beyond its range (``_range_worded``) and of a mass and
+    diameter that do not fit the rod's material (``_density_worded``); any other
+    message as it is (``simulate`` and ``drop`` alike)."""
+    ranged = _RANGE.fullmatch(message)
+    if ranged is not None:
+        return _range_worded(ranged, opt)
+    density = _DENSITY.fullmatch(message)
+    if density is not None:
+        return _density_worded(density, opt)
+    found = _APPROACH.fullmatch(message)
+    if found is None:
+        return message
+    spin = opt.given("spin") and opt.given("angle")  # a rod's: a sphere's spins in place
+    keys = [k for k in ("vy", "speed", "incidence") if opt.given(k)] + ["spin"] * spin
+    typed = ", ".join(f'{opt.label(k)} "{opt.values[k]}"' for k in keys)
+    formula = "vy - spin * (L/2) cos(angle)" if spin else "vy"
+    return (
+        f"{typed}: the {found['what']} does not approach the flat (its normal velocity "
+        f"{formula} = {float(found['vn']):.4g} m/s must be < 0, towards the flat)"
+    )

@@ -14,7 +14,6 @@ from __future__ import annotations
 
 import json
 import math
-import re
 import sys
 import textwrap
 from collections.abc import Mapping
@@ -44,7 +43,13 @@ from impactlab.cli._common import (
     rate_help,
     rate_name,
 )
-from impactlab.cli.config_file import ConfigOptions, command_table, merge_config, option_material
+from impactlab.cli.config_file import (
+    ConfigOptions,
+    approach_worded,
+    command_table,
+    merge_config,
+    option_material,
+)
 from impactlab.cli.config_values import option_numbers, plain_number, text
 from impactlab.cli.drop_body import MODES_HELP, drop_body
 from impactlab.cli.simulate_from import run_from
@@ -315,12 +320,15 @@ def run_drop(opt: ConfigOptions) -> DropResult:
     modes = {k: v.get(k) for k in ("modes_axial", "modes_bending", "damping")}
     rod_material = option_material(opt, "material", PAPER_ROD.material)
     inertia = opt.size("inertia", "kg*m^2")
-    body = drop_body(opt.given("rigid"), modes, sizes, rod_material, inertia, name)
     flat = option_material(opt, "flat", AISI_1010)
     law = text(v.get("law", "ghaednia"), name("law"))
     rate = rate_name(text(v.get("rate", "none"), name("rate")), name("rate"))
     check_rate_flat(rate, flat, name("rate"))  # the command line's way to other constants
     check_rate_law(rate, law, name("rate"), name("law"))
+    try:  # the rod's refusals name each option; a mass that does not fit, as typed
+        body = drop_body(opt.given("rigid"), modes, sizes, rod_material, inertia, name)
+    except UserError as exc:
+        raise UserError(approach_worded(str(exc), opt)) from None
     try:
         return simulate_drop(
             body,
@@ -344,30 +352,6 @@ def run_drop(opt: ConfigOptions) -> DropResult:
         raise UserError(exc.worded(name)) from None
     except ValueError as exc:  # the API's message names its keyword (mu): name the option
         raise UserError(as_option(approach_worded(str(exc), opt), KEYS, name)) from None
-
-
-#: The API's refusal of a rod that does not approach the flat (``dynamics.checks``, ``.drop``).
-_APPROACH = re.compile(
-    r"velocity: the (?P<what>contact point|tip) does not approach the flat \(its normal "
-    r"velocity vy - spin \* \(L/2\) cos\(angle\) = (?P<vn>\S+) m/s must be < 0\)"
-)
-
-
-def approach_worded(message: str, opt: ConfigOptions) -> str:
-    """The API's refusal of a rod that does not approach the flat naming the velocity options
-    as typed (``--vy "1.41 m/s"``; a rod's ``--spin`` where given, with its term of the normal
-    velocity); any other message as it is (``simulate`` and ``drop`` alike)."""
-    found = _APPROACH.fullmatch(message)
-    if found is None:
-        return message
-    spin = opt.given("spin") and opt.given("angle")  # a rod's: a sphere's spins in place
-    keys = [k for k in ("vy", "speed", "incidence") if opt.given(k)] + ["spin"] * spin
-    typed = ", ".join(f'{opt.label(k)} "{opt.values[k]}"' for k in keys)
-    formula = "vy - spin * (L/2) cos(angle)" if spin else "vy"
-    return (
-        f"{typed}: the {found['what']} does not approach the flat (its normal velocity "
-        f"{formula} = {float(found['vn']):.4g} m/s must be < 0, towards the flat)"
-    )
 
 
 #: The options of ``drop`` a ``--config`` file gives by key (``--from`` reads them as given).

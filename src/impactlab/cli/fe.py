@@ -139,12 +139,12 @@ def _check_sizes(maxima: list[str], deltas: list[float], radius: str, R: float) 
 def _check_run(workers: int | None, out: Path | None, mu: str) -> float:
     """Before any run: --workers at least 1; the figure's folder ``out`` (with --plot) holds
     no user's file of its name (``output_paths.check_replaceable``); --mu a number (returned)."""
-    from impactlab.experiment.checks import check_output_folder
+    from impactlab.cli.output_paths import output_dir
 
     if workers is not None and workers < 1:
         raise UserError(f"--workers must be a positive integer, got {workers}")
     if out is not None:
-        check_replaceable(check_output_folder(out, "--out"), [FIGURE], "fe indent", "--out")
+        check_replaceable(output_dir(out, "--out"), [FIGURE], "fe indent", "--out")
     return plain_number(mu, "--mu")
 
 
@@ -203,7 +203,17 @@ def indent_cmd(
     as_json: bool = typer.Option(False, "--json", help="Machine-readable output (with curves)."),
 ) -> None:
     """Indent a flat with a sphere to each --max and unload (CalculiX, axisymmetric; with
-    --loading-only the run stops at each --max)."""
+    --loading-only the run stops at each --max).
+
+    Examples:
+
+    \b
+      impactlab fe indent --max "10 um" --max "100 um"
+      impactlab fe indent --max "5 um" --flat-E "69 GPa" --flat-nu 0.33 --flat-sy "276 MPa"
+      impactlab fe indent --max "20 um" --sphere rigid --hardening flat.csv --json
+      impactlab fe indent --max "50 um" --mesh 2 --plot --out fe-out/
+      impactlab fe indent --max "5 um" --mu 0.3 --loading-only
+    """
     from impactlab.fe import DamagedRunsError, NotCalculixError, find_ccx, indent
     from impactlab.fe.problem import make_problem
 

@@ -281,8 +281,11 @@ def invert_cmd(
     Inverts the paper's Eq. 12 (corrected) for T and Eq. 29 (or the rigid-body identity
     F T = (1 + e)|v_i| / K_y) for F, with first-order and Monte Carlo uncertainties.
 
-    Example: impactlab invert --angle "20 deg" --vi "-1.41 m/s" --e 0.5 --mu 0.2
-    --delta-p "22 um" --ls "1400 um" --sigma-ls "50 um"
+    Example:
+
+    \b
+      impactlab invert --angle "20 deg" --vi "-1.41 m/s" --e 0.5 --mu 0.2 \\
+        --delta-p "22 um" --ls "1400 um" --sigma-ls "50 um"
     """
     inputs = (angle, vi, e, mu, delta_p, ls, dv_cy, vt_in)
     sigmas = (sigma_angle, sigma_vi, sigma_e, sigma_mu, sigma_delta_p, sigma_ls, sigma_dv_cy,

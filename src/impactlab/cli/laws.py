@@ -24,6 +24,7 @@ from impactlab._display import field_row
 from impactlab._json import quantity as quantity_json
 from impactlab.cli._common import console, emit, positive
 from impactlab.cli.laws_accuracy import print_accuracy
+from impactlab.cli.printing import versioned
 from impactlab.contact import get_law, law_names
 from impactlab.contact.base import ContactLaw
 from impactlab.materials import ContactPair, get_material
@@ -245,7 +246,7 @@ def _laws(
     if name is None:
         data = {n: _described(get_law(n)) for n in law_names()}
         if as_json:
-            emit(data, as_json=True, units=_UNITS)
+            emit(versioned(data), as_json=True, units=_UNITS)
             return
         if console.width < WIDE_TABLE:
             _law_blocks(console.width)
@@ -269,7 +270,7 @@ def _laws(
     info = _described(law)
     info["example"] = {"body": body, "flat": flat, **_numbers(law, pair, R)}
     if as_json:
-        emit(info, as_json=True, units=_UNITS)
+        emit(versioned(info), as_json=True, units=_UNITS)
         return
     head = {k: v for k, v in info.items() if k not in ("parameters", "example", "law_id")}
     if isinstance(head.get("references"), list):  # the citations, not their records

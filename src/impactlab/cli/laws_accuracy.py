@@ -13,6 +13,7 @@ from rich.table import Table
 from rich.text import Text
 
 from impactlab.cli._common import console, emit
+from impactlab.cli.printing import versioned
 from impactlab.contact import builtin_law_names, get_law
 
 #: The narrowest last column [characters] of the table (the verified range, text that wraps).
@@ -128,7 +129,7 @@ def print_accuracy(name: str | None, as_json: bool) -> None:
     only = str(get_law(name).name) if name else None
     results = _results(only)
     if as_json:
-        emit(acc.report(results, only), as_json=True, units=acc.UNITS)
+        emit(versioned(acc.report(results, only)), as_json=True, units=acc.UNITS)
         return
     if not results:
         raise ValueError("no FE reference curves are shipped (impactlab/fe/data/)")

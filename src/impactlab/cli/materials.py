@@ -10,6 +10,7 @@ from rich.table import Table
 from rich.text import Text
 
 from impactlab.cli._common import UserError, console, emit
+from impactlab.cli.printing import versioned
 from impactlab.materials import BRITTLE, PRESETS, get_material
 from impactlab.materials.inputs import EXAMPLE, library_key
 from impactlab.references import REFERENCES
@@ -48,7 +49,7 @@ def materials(
                 "citation": ref.citation,
                 "url": ref.url,
             }
-        emit(data, as_json=True)
+        emit(versioned(data), as_json=True)
         return
     table = Table(show_header=True, header_style="bold", title="material library")
     for col in ("name", "E GPa", "nu", "Sy MPa", "HB", "rho", "condition"):
@@ -76,7 +77,10 @@ def materials(
 
 def _one(name: str, as_json: bool) -> None:
     """One library material in full: its values (SI in --json), condition, source and note."""
-    key = library_key(get_material(name, "NAME"))  # a library name or alias, else one line
+    try:
+        key = library_key(get_material(name, "NAME"))  # a library name or alias, else one line
+    except ValueError as exc:  # shown here is a library entry: not "or give its properties"
+        raise UserError(str(exc).split(", or give its properties")[0]) from None
     if key is None:  # a definition by values or a file: not a library entry
         raise UserError(f"NAME: {name!r} is not a library name (see 'impactlab materials')")
     m = PRESETS[key]
@@ -88,7 +92,8 @@ def _one(name: str, as_json: bool) -> None:
         "citation": ref.citation,
         "url": ref.url,
     }
-    emit(data, as_json=as_json, title=f"material {key!r}")
+    # no impactlab_version: the entry's JSON is read back as a material (get_material)
+    emit(versioned(data) if as_json else data, as_json=as_json, title=f"material {key!r}")
 
 
 def register(app: typer.Typer) -> None:

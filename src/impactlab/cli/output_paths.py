@@ -17,7 +17,8 @@ from collections.abc import Collection, Iterable, Mapping
 from pathlib import Path
 from typing import Any
 
-from impactlab._files import write_bytes_atomic
+from impactlab._files import folder_refusal, write_bytes_atomic
+from impactlab._oserror import oserror_words
 from impactlab._version import __version__
 from impactlab.cli._common import UserError
 
@@ -36,9 +37,9 @@ def _check_can_create_in(folder: Path, shown: str, what: str) -> None:
     try:
         probe = tempfile.mkdtemp(prefix=".impactlab-probe-", dir=folder)
     except OSError as exc:
-        raise UserError(
-            f"{shown}: cannot create {what} in {str(folder)!r} ({exc.strerror or exc})"
-        ) from None
+        words = oserror_words(exc)
+        why = words[0] if words is not None else (exc.strerror or str(exc))
+        raise UserError(f"{shown}: cannot create {what} in {str(folder)!r} ({why})") from None
     shutil.rmtree(probe, ignore_errors=True)
 
 
@@ -59,6 +60,22 @@ def output_file(path: Path, name: str) -> Path:
         raise UserError(f"{shown}: the folder {str(folder)!r} is not writable")
     _check_can_create_in(folder, shown, "a file")
     return path
+
+
+def output_dir(path: Path, name: str) -> Path:
+    """The folder ``path`` that ``name`` (``--out``, ``--plot``) asks to write into, checked
+    before any work and not yet made: UserError when it or a folder above it is a file, or when
+    no file can be created in it (or, still to be made, in the nearest existing folder above)."""
+    from impactlab.experiment.checks import check_output_folder
+
+    try:
+        folder = check_output_folder(path, name)
+    except ValueError as exc:
+        raise UserError(str(exc)) from None
+    refusal = folder_refusal(path, name)
+    if refusal is not None:
+        raise UserError(refusal)
+    return folder
 
 
 def output_store(path: Path, name: str) -> Path:

@@ -13,9 +13,16 @@ from rich.text import Text
 
 from impactlab._display import field_rows
 from impactlab._json import to_json
+from impactlab._version import __version__
 from impactlab.schema import FIELDS
 
-__all__ = ["EXTRA_UNITS", "SI_UNITS", "console", "emit", "print_rows"]
+__all__ = ["EXTRA_UNITS", "SI_UNITS", "console", "emit", "print_rows", "versioned"]
+
+
+def versioned(data: Mapping[str, Any]) -> dict[str, Any]:
+    """``data`` with ``impactlab_version`` at its top level, as every ``--json`` document has
+    it (a listing keyed by name too: the key sits beside the names)."""
+    return {**data, "impactlab_version": __version__}
 
 
 class _CurrentConsole:

@@ -31,13 +31,13 @@ from impactlab.cli._common import (
 )
 from impactlab.cli.config_file import (
     ConfigOptions,
+    approach_worded,
     command_table,
     merge_config,
     option_material,
     refuse_given,
 )
 from impactlab.cli.config_values import option_numbers, plain_number, text
-from impactlab.cli.drop import approach_worded
 from impactlab.cli.drop_body import flexible_rod, paper_mass
 from impactlab.cli.simulate_from import FROM_RULE, run_from
 from impactlab.cli.simulate_help import HELP
@@ -292,9 +292,9 @@ def simulate_cmd(
         )
     folder = None
     if plot:  # checked before anything runs: the folder, and no user's file written over
-        from impactlab.experiment.checks import check_output_folder  # lazy: a fast CLI start
+        from impactlab.cli.output_paths import output_dir
 
-        folder = check_output_folder(Path(".") if out is None else out, "--out")
+        folder = output_dir(Path(".") if out is None else out, "--out")
         check_plot_folder(folder)
     # one impact or drop, then the process ends: a first compile's garbage is left to the exit
     with garbage_deferred():
@@ -308,8 +308,8 @@ def simulate_cmd(
         if from_file is None:
             try:
                 result = run_simulate(opt)
-            except UserError:
-                raise
+            except UserError as exc:  # named already; a mass that does not fit: as typed
+                raise UserError(approach_worded(str(exc), opt)) from None
             except ValueError as exc:  # the API's message names its parameter: name the option
                 if isinstance(exc, DropError):  # "raise t_max": the option's spelling
                     raise UserError(exc.worded(opt.label)) from None

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import sys
 import warnings
 from pathlib import Path
@@ -21,8 +22,10 @@ from typing import Annotated, Any
 import typer
 
 from impactlab._json import to_json
+from impactlab._oserror import system_error_line as _system_error_line
 from impactlab.cli._common import SI_UNITS, UserError, emit
-from impactlab.cli.output_paths import existing_store
+from impactlab.cli.output_paths import existing_store, output_dir
+from impactlab.cli.printing import versioned
 from impactlab.cli.sweep_group import DefaultRun
 from impactlab.cli.sweep_paths import (
     check_export_file,
@@ -116,14 +119,17 @@ def run_cmd(
 ) -> None:
     """Run (or resume) the sweep of a study file.
 
-    Example: impactlab sweep examples/study-regime-map.toml --out map.zarr --plot plots/
+    Example:
+
+    \b
+      impactlab sweep examples/study-regime-map.toml --out map.zarr --plot plots/
     """
     from impactlab.experiment.checks import output_folder
     from impactlab.sweep import export_netcdf, plot_sweep
 
     check_run_paths(out, netcdf)
-    if plot is not None:
-        plot = output_folder(plot, "--plot")
+    if plot is not None:  # before the sweep: a folder no file can be made in is refused now
+        plot = output_folder(output_dir(plot, "--plot"), "--plot")
     where = Where(out, scheduler, workers, max_cases, worker_timeout, backend)
     res = run_study(study, where, quiet, restart)
     ds = res.dataset
@@ -136,13 +142,14 @@ def run_cmd(
     except Exception as exc:
         if os.environ.get("IMPACTLAB_DEBUG"):
             raise
-        failed = f"error: --plot {plot}: {exc} (the study's results are stored in {res.path})"
+        why = _system_error_line(exc) if isinstance(exc, OSError) else str(exc)
+        failed = f"error: --plot {plot}: {why} (the study's results are stored in {res.path})"
     monte_carlo = res.study.uncertainty is not None
     if as_json:  # one JSON document on stdout: a Monte Carlo study's report inside it
         doc = to_json(run_summary(res, ds, netcdf, files, as_json=True), SI_UNITS)
         if monte_carlo:
             doc["uncertainty"] = uncertainty_json(ds)
-        print(json.dumps(doc, indent=2))
+        print(json.dumps(versioned(doc), indent=2))
     elif not quiet:
         if monte_carlo:
             print_uncertainty(ds, None, None, as_json=False)
@@ -189,6 +196,9 @@ def uncertainty_cmd(
     """
     from impactlab.sweep import open_sweep
 
+    for p in percentiles or ():  # before any case is computed
+        if not 0 <= p <= 100:
+            raise UserError(f"--percentile {p:g}: a percentile lies in [0, 100]")
     if source.is_dir():
         ds = open_sweep(source)
         warn_incomplete(source)
@@ -204,7 +214,25 @@ def uncertainty_cmd(
         res = run_study(source, where, quiet or as_json, False)
         ds = res.dataset
         warn_incomplete(res.path)
-    print_uncertainty(ds, outputs, percentiles, as_json, include_flagged)
+    try:
+        print_uncertainty(ds, outputs, percentiles, as_json, include_flagged)
+    except UserError:
+        raise
+    except ValueError as exc:  # the API's words for an output: named as --output
+        raise UserError(_output_worded(str(exc))) from None
+
+
+#: ``uncertainty_reports``' refusals of the outputs asked for (``impactlab.sweep.uncertainty``).
+_OUTPUTS = re.compile(r"output\(s\) \[(?P<names>.*)\] not in the sweep(?P<rest>; .*)", re.DOTALL)
+
+
+def _output_worded(message: str) -> str:
+    """``output(s) ['foo'] not in the sweep; ...`` as ``--output 'foo': not in the sweep;
+    ...``; ``output 'flags' holds ...`` as ``--output 'flags' holds ...``; others as they are."""
+    found = _OUTPUTS.fullmatch(message)
+    if found is not None:
+        return f"--output {found['names']}: not in the sweep{found['rest']}"
+    return "--" + message if message.startswith("output '") else message
 
 
 @sweep_app.command("info")
@@ -220,7 +248,7 @@ def info_cmd(
 
     path = existing_store(store)
     info = with_law_ranges(store_info(path), path, as_json=as_json)
-    emit(info_json(info) if as_json else info, as_json=as_json, title=str(store))
+    emit(versioned(info_json(info)) if as_json else info, as_json=as_json, title=str(store))
 
 
 @sweep_app.command("plot")
@@ -237,10 +265,11 @@ def plot_cmd(
     from impactlab.experiment.checks import output_folder
     from impactlab.sweep import open_sweep, plot_sweep
 
+    folder = output_dir(out, "--out")  # before the store is read: refused at once
     ds = open_sweep(existing_store(store))
     warn_incomplete(store)
     skipped: list[str] = []
-    files = _plots(plot_sweep, ds, output_folder(out, "--out"), skipped)
+    files = _plots(plot_sweep, ds, output_folder(folder, "--out"), skipped)
     if not files:
         raise UserError("nothing to plot: " + "; ".join(skipped))
     for f in files:
@@ -281,8 +310,12 @@ def export_cmd(
     """
     from impactlab.sweep import export_file, open_sweep
 
-    if not target.is_dir():  # a folder: output_file says so
-        export_suffix(target, "export file", ("CSV", "NetCDF-4"))
+    if target.is_dir():  # a folder is no file of either kind: named as the target
+        raise UserError(
+            f"target {str(target)!r} is a folder: give the name of the file to write, ending "
+            "in .csv (CSV), .nc or .nc4 (NetCDF-4)"
+        )
+    export_suffix(target, "export file", ("CSV", "NetCDF-4"))
     csv = target.suffix.lower() == ".csv"
     check_export_file(target, "the CSV file" if csv else "the NetCDF file")
     export_file(open_sweep(existing_store(store)), target)

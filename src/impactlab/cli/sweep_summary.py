@@ -17,6 +17,7 @@ from impactlab._display import field_row, format_number
 from impactlab._json import quantity as quantity_json
 from impactlab._json import to_json
 from impactlab.cli._common import print_rows
+from impactlab.cli.printing import versioned
 from impactlab.flags import invalidating_names
 
 if TYPE_CHECKING:
@@ -194,7 +195,8 @@ def print_uncertainty(
 
     reports = uncertainty_reports(ds, outputs, percentiles, include_flagged)
     if as_json:
-        print(json.dumps({k: _uncertainty_json(r.to_dict()) for k, r in reports.items()}, indent=2))
+        doc = {k: _uncertainty_json(r.to_dict()) for k, r in reports.items()}
+        print(json.dumps(versioned(doc), indent=2))  # the version beside the points' titles
         return
     for title, rep in reports.items():
         _print_report(rep.to_dict(), f"uncertainty: {title}")

@@ -7,6 +7,7 @@ import json
 import typer
 
 from impactlab.cli._common import UserError, console
+from impactlab.cli.printing import versioned
 
 
 def warm(
@@ -52,7 +53,7 @@ def warm(
             }
             for p in done
         ]
-        print(json.dumps({"cache_dir": cache_dir, "parts": parts}, indent=2))
+        print(json.dumps(versioned({"cache_dir": cache_dir, "parts": parts}), indent=2))
         return
     for p in done:
         console.print(f"{p.name:<14} {p.wall_s:7.1f} s wall, {p.cpu_s:7.1f} s CPU")

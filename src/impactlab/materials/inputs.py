@@ -56,8 +56,9 @@ REQUIRED: tuple[str, ...] = ("E", "nu", "yield_strength", "density")
 _SPELLED = {"E": "E", "nu": "nu", "yield_strength": "Sy", "density": "rho"}
 EXAMPLE = "E=69GPa, nu=0.33, Sy=276MPa, rho=2700kg/m^3"
 #: Keys of ``impactlab materials NAME --json`` that describe an entry (its library key, its
-#: source, the source's citation and address, a note): read past by a definition by values.
-DESCRIPTIVE: tuple[str, ...] = ("key", "source", "note", "citation", "url")
+#: source, the source's citation and address, a note, the writing version): read past by a
+#: definition by values.
+DESCRIPTIVE: tuple[str, ...] = ("key", "source", "note", "citation", "url", "impactlab_version")
 #: A Brinell hardness written with its symbol: ``105 HB``, ``105 HBW`` or ``HBW 105``.
 _HB = re.compile(r"^\s*(?:(?P<a>[^\sA-Za-z][^\s]*)\s*HBW?|HBW?\s+(?P<b>\S+))\s*$")
 #: The number that leads a quantity text (its exponent's digits are no power of a unit).

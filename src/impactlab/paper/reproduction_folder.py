@@ -14,7 +14,7 @@ import warnings
 from pathlib import Path
 from typing import Any
 
-from impactlab._files import write_text_atomic
+from impactlab._files import folder_refusal, write_text_atomic
 from impactlab._version import __version__
 from impactlab.experiment.checks import check_path, output_folder
 from impactlab.paper import data as D
@@ -62,11 +62,15 @@ class ReproductionWarning(UserWarning):
 
 def prepare_output(out_dir: str | os.PathLike[str], name: str = "out_dir") -> Path:
     """Create ``out_dir`` or accept it if it is empty or holds a previous reproduction (marker
-    file). Refuses (ValueError naming ``name``, the folder as the user gave it: the command
-    line's ``--out``) a non-empty folder without the marker and a path that is a file. Nothing
-    outside ``out_dir`` is touched; inside it only the reproduction's own files are (re)written,
-    and the marker keeps the earlier run's list of files until this run completes."""
+        file). Refuses (ValueError naming ``name``, the folder as the user gave it: the command
+        line's ``--out``) a non-empty folder without the marker, a path that is a file and a folder
+    no file can be made in (no permission, a read-only file system). Nothing
+        outside ``out_dir`` is touched; inside it only the reproduction's own files are (re)written,
+        and the marker keeps the earlier run's list of files until this run completes."""
     out = check_path(out_dir, name).expanduser()
+    refusal = folder_refusal(out, name)  # nothing can be written there: refused before any work
+    if refusal is not None:
+        raise ValueError(refusal)
     if out.is_dir():
         entries = list(out.iterdir())
         if entries and not (out / MARKER).is_file():
