@@ -194,6 +194,11 @@ def checked_run(
     if geometry is not None:
         check_instance(geometry, MarkerGeometry, "geometry", "e.g. MarkerGeometry.from_mapping()")
     if dent["pixel_size"] is not None:
+        if isinstance(dent["pixel_size"], str) and not dent["pixel_size"].strip():
+            raise ValueError(  # the general hint, '1.0 m', is above the largest pixel allowed
+                f"pixel_size (--pixel-size) is empty ({dent['pixel_size']!r}); write one length "
+                "and its unit, e.g. '12.5 um', or leave it out where the scan states it"
+            )
         pixel_pair(dent["pixel_size"], "pixel_size (--pixel-size)")  # ValueError naming it
     names = {"marker_units": kinematics["marker_units"], "height_unit": dent["height_unit"]}
     for name, opt in names.items():

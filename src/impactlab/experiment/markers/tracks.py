@@ -114,20 +114,47 @@ def duplicate_labels(
 
 def length_factor(unit: str, *, name: str = "units") -> float:
     """Metres per ``unit`` (e.g. "mm" -> 1e-3). ValueError naming ``name`` for a unit that is not
-    a length."""
+    a length, and for one whose lower-case spelling is another length ('MM' is megamolar, 'Mm'
+    megametres, 'CM' unknown: each refused with the lower-case unit suggested, not guessed)."""
     text = str(unit).strip().replace("µ", "u").replace("μ", "u")
     if not text:
         raise ValueError(f"{name} is empty; expected a length unit such as 'mm' or 'm'")
+    fac, called = _metres(text)
+    lower = text.lower()
+    if lower != text:
+        meant, lower_called = _metres(lower)
+        if meant is not None and meant != fac:  # 'MM' (megamolar), 'Mm' (megametres), 'CM'
+            reads = (
+                "is not a known unit"
+                if not called
+                else f"is {called}, not a length"
+                if fac is None
+                else f"is {called} ({fac:g} m)"
+            )
+            raise ValueError(
+                f"{name}: {unit!r} {reads}; unit names are case-sensitive and not read in "
+                f"another case: write {lower!r} ({lower_called})"
+            )
+    if not called:
+        raise ValueError(
+            f"{name}: {unit!r} is not a known unit; expected a length unit such as 'mm' or 'm'"
+        )
+    if fac is None:
+        raise ValueError(f"{name}: {unit!r} is not a length unit; expected e.g. 'mm' or 'm'")
+    return fac
+
+
+def _metres(text: str) -> tuple[float | None, str]:
+    """(metres per the unit ``text``, None where it is not a length; its pint name, empty
+    where pint does not know it)."""
     ureg = registry()
     try:
         u = ureg.Unit(text)
     except Exception:  # pint's parser raises assorted types (TokenError, AssertionError, ...)
-        raise ValueError(
-            f"{name}: {unit!r} is not a known unit; expected a length unit such as 'mm' or 'm'"
-        ) from None
+        return None, ""
     if u.dimensionality != ureg.Unit("m").dimensionality:
-        raise ValueError(f"{name}: {unit!r} is not a length unit; expected e.g. 'mm' or 'm'")
-    return float((1.0 * u).to("m").magnitude)
+        return None, str(u)
+    return float((1.0 * u).to("m").magnitude), str(u)
 
 
 @dataclass(frozen=True)

@@ -103,6 +103,8 @@ def pixel_pair(pixel_size: Any, name: str = "pixel_size") -> tuple[float, float]
     ValueError naming ``name`` for a pair of texts of which one has a unit and the other not
     ("12,5 um": a decimal comma), a size that is not > 0, or one above ``MAX_PIXEL_SIZE``."""
     given = pixel_size
+    if isinstance(pixel_size, str) and not pixel_size.strip():
+        raise ValueError(f"{name} is empty; write one length and its unit, e.g. '12.5 um'")
     if isinstance(pixel_size, str) and "," in pixel_size:
         pixel_size = [p.strip() for p in pixel_size.strip().strip("()[]").split(",")]
     if isinstance(pixel_size, tuple | list):

@@ -58,6 +58,12 @@ def _load_npy(p: Path) -> np.ndarray:
         raise FileFormatError(
             p, f"expected a 2D numeric array, got shape {z.shape}, dtype {z.dtype}"
         )
+    if np.iscomplexobj(z):  # a cast would drop the imaginary part silently
+        raise FileFormatError(
+            p,
+            f"not a real height map: dtype {z.dtype} is complex; save the real heights "
+            "(np.save(path, z.real) where the imaginary part is zero)",
+        )
     return z.astype(np.float64)
 
 
@@ -159,6 +165,11 @@ def _pixel_size(p: Path, pixel_size: Any, meta: dict[str, str]) -> tuple[float, 
         if "pixel_size_y" in meta:
             stated = (stated, meta["pixel_size_y"])
             name = "the file's '# pixel_size:' and '# pixel_size_y:'"
+    for value, named in ((pixel_size, "pixel_size (--pixel-size)"), (stated, name)):
+        if isinstance(value, str) and not value.strip():  # the general hint, '1.0 m', is too big
+            raise FileFormatError(
+                p, f"{named} is empty; write one length and its unit, e.g. '12.5 um'"
+            )
     try:
         dxy = pixel_pair(stated, name)
     except ValueError as exc:
