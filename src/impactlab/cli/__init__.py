@@ -102,8 +102,10 @@ def _root(
     law_file: list[Path] = typer.Option(
         [],
         "--law-file",
+        metavar="FILE",
         help="A contact law of one's own from measured indentation data (TOML, see "
-        "docs/laws/user.md); its name then works as --law NAME. Repeatable.",
+        "docs/laws/user.md); its name then works as --law NAME. Repeatable: --law-file A.toml "
+        "--law-file B.toml.",
     ),
 ) -> None:
     """Elastic-plastic oblique impacts with friction: simulate, invert, analyze, sweep,
@@ -131,6 +133,27 @@ for _module in (
     warm,
 ):
     _module.register(app)
+
+#: Each command's line in ``impactlab --help``: whole (click would cut the help's first sentence
+#: at 45 characters, mid-phrase), within the 80-column screen.
+SHORT_HELP = {
+    "laws": "List the contact laws, or show one (DOI, validity).",
+    "materials": "List the material library, or show one material.",
+    "simulate": "Simulate one impact of a rod or a sphere on a flat.",
+    "drop": "Drop a rod on a flat through its whole contact sequence.",
+    "invert": "Impact duration T and mean force F from a measured impact.",
+    "analyze": "Analyse one drop: marker tracks, dent scan, T and F.",
+    "calibrate": "Calibrate models on measured drops and rank them.",
+    "explain": "Which physics explains measured drops (nothing tuned).",
+    "reproduce": "Reproduce the paper's tables and figures, with a report.",
+    "warm": "Compile the engine into the cache, so later runs start at once.",
+    "sweep": "Grids and Monte Carlo studies of many impacts (Zarr store).",
+    "fe": "Sphere-on-flat indentation by finite elements (CalculiX).",
+}
+for _command in app.registered_commands:
+    _command.short_help = SHORT_HELP[str(_command.name)]
+for _group in app.registered_groups:
+    _group.short_help = SHORT_HELP[str(_group.name)]
 
 
 def _own(category: type[Warning]) -> bool:

@@ -33,12 +33,12 @@ from impactlab.cli.output_paths import check_replaceable, output_dir
 _PARAM_HELP = (
     'A free parameter and its prior, "name=uniform(low, high)", "name=loguniform(low, high)" or '
     '"name=normal(mean, sd)" ("normal(mean, sd, low, high)": truncated); values with units '
-    '("flat_yield_strength=uniform(100 MPa, 1 GPa)"). Repeat for several.'
+    '("flat_yield_strength=uniform(100 MPa, 1 GPa)"); repeatable, one parameter each.'
 )
 _MODEL_HELP = (
     'A candidate model "law/friction[/flexible_rod[/rate]]" (default ghaednia/coulomb; rate: '
-    "cowper-symonds or johnson-cook, the flexible rod's flat). Repeat for several; they are "
-    "ranked by PSIS-LOO."
+    "cowper-symonds or johnson-cook, the flexible rod's flat); repeatable, one model each; "
+    "they are ranked by PSIS-LOO."
 )
 
 
@@ -163,8 +163,12 @@ def calibrate_cmd(
     measurements: Annotated[
         Path | None, typer.Argument(help="Measurements file (CSV or TOML, docs/calibrate.md).")
     ] = None,
-    param: Annotated[list[str] | None, typer.Option("--param", "-p", help=_PARAM_HELP)] = None,
-    model: Annotated[list[str] | None, typer.Option("--model", "-m", help=_MODEL_HELP)] = None,
+    param: Annotated[
+        list[str] | None, typer.Option("--param", "-p", metavar="PARAM", help=_PARAM_HELP)
+    ] = None,
+    model: Annotated[
+        list[str] | None, typer.Option("--model", "-m", metavar="MODEL", help=_MODEL_HELP)
+    ] = None,
     config: Annotated[
         Path | None, typer.Option(help="Calibration file (TOML): measurements, parameters, ...")
     ] = None,

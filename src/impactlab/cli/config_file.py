@@ -26,6 +26,9 @@ __all__ = ["ConfigOptions", "command_table", "merge_config", "option_material", 
 ALTERNATIVES: tuple[tuple[str, ...], ...] = (("vx", "vy"), ("speed", "incidence"))
 #: Keys that may name a file (a material's TOML file): in a config file, relative to its folder.
 FILE_KEYS = ("material", "flat")
+#: Other names of a key, read as it (their names elsewhere: study files, [rod] tables,
+#: ``FlexibleRod``'s keywords): an alias by the key it gives.
+KEY_ALIASES = {"tip_radius": "radius", "n_axial": "modes_axial", "n_bending": "modes_bending"}
 
 
 @dataclass(frozen=True)
@@ -35,12 +38,14 @@ class ConfigOptions:
     values: by key, SI or as written (quantities are parsed where they are used); from_cli:
     the keys given on the command line; config: the file, as given; flags: the command-line
     switches of the keys whose option is not ``--<key>``, the one that leaves the default first
-    (``gravity``: ``--no-gravity/--gravity``; a label names that one)."""
+    (``gravity``: ``--no-gravity/--gravity``; a label names that one); spelt: the file's
+    name of a key given under an alias (``modes_axial``: ``n_axial``, ``KEY_ALIASES``)."""
 
     values: dict[str, Any]
     from_cli: frozenset[str]
     config: str
     flags: Mapping[str, str] = field(default_factory=dict)
+    spelt: Mapping[str, str] = field(default_factory=dict)
 
     def label(self, key: str, like: str | None = None) -> str:
         """How the user wrote ``key``: "--mass" or "mass (in case.toml)". A key not given is
@@ -55,7 +60,7 @@ class ConfigOptions:
                 return flag
             if key in self.flags:
                 return f"{key} = {str(not flag.startswith('--no-')).lower()} (in {self.config})"
-        return f"{key} (in {self.config})"
+        return f"{self.spelt.get(key, key)} (in {self.config})"
 
     def velocity(self) -> tuple[float, float]:
         """The velocity (vx, vy) [m/s] (``velocity_input``); a missing speed or incidence is
@@ -114,10 +119,11 @@ def merge_config(
     """The options of the command line (``cli``: by key, None when not given) over the keys of
     the config file's ``section``. Refused: a material in parts (``flat_E``), an unknown key
     (with the nearest of ``keys``, or its ``notes``: why a key of another command is none of
-    this one's), a switch of ``flags`` that is no TOML boolean; ``tip_radius`` is read as
-    ``radius`` (the rod's name for it in study files and [rod] tables). A velocity given on the
+    this one's), a switch of ``flags`` that is no TOML boolean; an alias (``KEY_ALIASES``:
+    ``tip_radius``, ``n_axial``, ``n_bending``) is read as its key. A velocity given on the
     command line in one form leaves out the file's other form (``ALTERNATIVES``); a relative
     material file's path (``FILE_KEYS``: text ending in .toml) is read from the file's folder."""
+    section, spelt = _unaliased(section, keys, config_path)
     unknown = sorted(set(section) - set(keys))
     props = [k for k in unknown if k.startswith(("flat_", "material_", "body_"))]
     if props:
@@ -126,12 +132,6 @@ def merge_config(
             'flat = { E = "69 GPa", nu = 0.33, Sy = "276 MPa", rho = "2700 kg/m^3" }, or a '
             "library name, flat = \"al-6061-t6\" (see 'impactlab materials')"
         )
-    if "tip_radius" in section:  # the rod's name for it elsewhere (study files, [rod] tables)
-        if "radius" in section:
-            raise UserError("radius and tip_radius in the config file: they are one; give one")
-        section = {**section, "radius": section["tip_radius"]}
-        section.pop("tip_radius")
-        unknown.remove("tip_radius")
     if unknown:
         why = notes or {}
         hints = ", ".join(f"{k} ({why[k]})" if k in why else k + did_you_mean(k, keys)
@@ -145,7 +145,27 @@ def merge_config(
             section = {k: v for k, v in section.items() if k not in others}
     if config_path is not None:
         section = {k: _beside(v, config_path) if k in FILE_KEYS else v for k, v in section.items()}
-    return ConfigOptions({**section, **given}, frozenset(given), str(config_path), flags)
+    return ConfigOptions({**section, **given}, frozenset(given), str(config_path), flags, spelt)
+
+
+def _unaliased(
+    section: Mapping[str, Any], keys: tuple[str, ...], config_path: Path | None
+) -> tuple[dict[str, Any], dict[str, str]]:
+    """``section`` with each alias of a key among ``keys`` (``KEY_ALIASES``: ``n_axial``,
+    ``tip_radius``) read as that key, and the file's name of each key so given; UserError for
+    a key given under both names."""
+    out, spelt = dict(section), {}
+    for alias, key in KEY_ALIASES.items():
+        if alias not in out or key not in keys:
+            continue
+        if key in out:
+            raise UserError(
+                f"{key} and {alias} in {config_path or 'the config file'}: they are one "
+                f"({alias} is the other name of {key}); give one"
+            )
+        out[key] = out.pop(alias)
+        spelt[key] = alias
+    return out, spelt
 
 
 def _beside(value: Any, config_path: Path) -> Any:

@@ -51,7 +51,7 @@ from impactlab.cli.config_file import (
     option_material,
 )
 from impactlab.cli.config_values import option_numbers, plain_number, text
-from impactlab.cli.drop_body import MODES_HELP, drop_body
+from impactlab.cli.drop_body import MODES_ALIASES, MODES_HELP, drop_body
 from impactlab.cli.simulate_from import run_from
 from impactlab.dynamics.drop import DEFAULT_T_MAX, simulate_drop
 from impactlab.dynamics.drop_checks import DropError
@@ -140,11 +140,11 @@ def report_drop(result: DropResult, *, as_json: bool) -> None:
 
 #: The help of ``--config``: the file's form, and why a [simulate] table is not read.
 CONFIG_HELP = (
-    "TOML file of these options by key (--modes-axial 16: modes_axial = 16; --no-gravity: "
-    "gravity = false; --rigid: rigid = true; a material: a name, a table or a TOML file, from "
-    "this file's folder), at the top level or in a [drop] table; options given here win (a "
-    "velocity, either form, replaces the file's; --gravity and --flexible undo the file's "
-    "switches). A file may hold a [drop] and a [simulate] "
+    "TOML file of these options by key (--modes-axial 16: modes_axial = 16, or n_axial = 16; "
+    "--no-gravity: gravity = false; --rigid: rigid = true; a material: a name, a table or a "
+    "TOML file, from this file's folder), at the top level or in a [drop] table; options given "
+    "here win (a velocity, either form, replaces the file's; --gravity and --flexible undo the "
+    "file's switches). A file may hold a [drop] and a [simulate] "
     "table, each command reading its own; a [simulate] table alone is refused: its keys are "
     "simulate's (there a rod is rigid unless flexible = true)."
 )
@@ -219,8 +219,12 @@ def drop_cmd(
         help='With --rigid: the rod\'s I_C, e.g. "0.0036 kg*m^2" (bare number: kg*m^2; default '
         "from its size).",
     ),
-    modes_axial: int = typer.Option(None, "--modes-axial", help=MODES_HELP["modes_axial"]),
-    modes_bending: int = typer.Option(None, "--modes-bending", help=MODES_HELP["modes_bending"]),
+    modes_axial: int = typer.Option(
+        None, "--modes-axial", *MODES_ALIASES["modes_axial"], help=MODES_HELP["modes_axial"]
+    ),
+    modes_bending: int = typer.Option(
+        None, "--modes-bending", *MODES_ALIASES["modes_bending"], help=MODES_HELP["modes_bending"]
+    ),
     damping: str = typer.Option(
         None, "--damping", help="Modal damping ratio zeta of every mode, in [0, 1) (default 0)."
     ),

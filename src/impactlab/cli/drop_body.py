@@ -18,16 +18,19 @@ from impactlab.bodies.flexible_rod import (
 from impactlab.cli._common import UserError, as_option
 from impactlab.materials import Material
 
-__all__ = ["MODES_HELP", "drop_body", "flexible_rod", "paper_mass"]
+__all__ = ["MODES_ALIASES", "MODES_HELP", "drop_body", "flexible_rod", "paper_mass"]
 
 
-#: The help of the mode counts (``impactlab simulate --flexible`` too).
+#: The help of the mode counts (``impactlab simulate --flexible`` too), naming their other
+#: spelling, FlexibleRod's keyword (``n_axial``: ``--n-axial``, a --config file's key too).
 MODES_HELP = {
-    "modes_axial": f"Axial modes (default: the fewest that reach {AXIAL_CUTOFF_HZ / 1e3:g} kHz, "
-    f"at least {DEFAULT_N_AXIAL}; + 2 residual).",
-    "modes_bending": "Bending modes (default: the fewest that reach "
+    "modes_axial": "Axial modes, n_axial (default: the fewest that reach "
+    f"{AXIAL_CUTOFF_HZ / 1e3:g} kHz, at least {DEFAULT_N_AXIAL}; + 2 residual).",
+    "modes_bending": "Bending modes, n_bending (default: the fewest that reach "
     f"{BENDING_CUTOFF_HZ / 1e3:g} kHz, at least {DEFAULT_N_BENDING}).",
 }
+#: The other spelling of each mode count's option (FlexibleRod's keyword).
+MODES_ALIASES = {"modes_axial": ("--n-axial",), "modes_bending": ("--n-bending",)}
 
 
 def _count(value: Any, name: str) -> int | None:

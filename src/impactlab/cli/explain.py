@@ -26,8 +26,8 @@ from impactlab.cli._common import UserError, console
 
 _RATE_HELP = (
     "The rate-dependent rows' law, the flat's own constants, e.g. "
-    '"cowper-symonds(D=6500 1/s, q=4)" or "johnson-cook(C=0.03, rate0=1 1/s)"; repeat for '
-    "several; 'none': no rate row. Default: the library's Cowper-Symonds (upper estimate) and "
+    '"cowper-symonds(D=6500 1/s, q=4)" or "johnson-cook(C=0.03, rate0=1 1/s)"; repeatable, '
+    "for several; 'none': no rate row. Default: the library's Cowper-Symonds (upper estimate) and "
     "Johnson-Cook (lower) on a low-carbon steel flat only."
 )
 
@@ -79,10 +79,15 @@ def _show(explanation: Any) -> None:
 
 def explain_cmd(
     measurements: Annotated[
-        Path, typer.Argument(help="Measurements file (CSV or TOML, docs/calibrate.md).")
+        Path,
+        typer.Argument(
+            metavar="MEASUREMENTS", help="Measurements file (CSV or TOML, docs/calibrate.md)."
+        ),
     ],
     law: Annotated[str, typer.Option(help="Contact law of every configuration.")] = "ghaednia",
-    rate: Annotated[list[str] | None, typer.Option("--rate", help=_RATE_HELP)] = None,
+    rate: Annotated[
+        list[str] | None, typer.Option("--rate", metavar="RATE", help=_RATE_HELP)
+    ] = None,
     out: Annotated[
         Path | None, typer.Option(help="Folder for explain.csv and explain.json.")
     ] = None,

@@ -148,10 +148,14 @@ def _check_run(workers: int | None, out: Path | None, mu: str) -> float:
     return plain_number(mu, "--mu")
 
 
-@fe_app.command("indent")
+@fe_app.command("indent", short_help="Indent a flat with a sphere and unload it (CalculiX).")
 def indent_cmd(
     maxima: list[str] = typer.Option(
-        ..., "--max", help="Largest interference, with units ('20 um'); repeat for several."
+        ...,
+        "--max",
+        metavar="DEPTH",
+        help="Largest interference, with units ('20 um'); repeatable: --max '10 um' --max "
+        "'100 um'.",
     ),
     radius: str = typer.Option(
         "8.8 mm",
@@ -165,9 +169,15 @@ def indent_cmd(
         None,
         "--body",
         "--material",
-        help="The sphere's material preset (--material too; default aisi-201).",
+        help="The sphere's material: a library name (see 'impactlab materials'), properties "
+        "'E=200GPa, nu=0.3, Sy=760MPa, rho=7800kg/m^3' or a TOML file (default aisi-201; or "
+        "--body-E/-nu/-sy).",
     ),
-    flat: str | None = typer.Option(None, help="The flat's material preset (default aisi-1010)."),
+    flat: str | None = typer.Option(
+        None,
+        help="The flat's material: a library name, properties 'E=69GPa, nu=0.33, Sy=276MPa, "
+        "rho=2700kg/m^3' or a TOML file (default aisi-1010; or --flat-E/-nu/-sy).",
+    ),
     flat_E: str | None = typer.Option(
         None, "--flat-E", help="Flat's Young's modulus, e.g. '69 GPa' (a bare number: Pa)."
     ),

@@ -228,10 +228,11 @@ def invert_cmd(
     correlation: list[str] | None = typer.Option(
         None,
         "--correlation",
+        metavar="PAIR",
         help="Correlation of two inputs measured together, NAME,NAME=COEFFICIENT (e.g. "
-        "e,dv_cy=0.94; repeatable; names as Python's invert or the options: v_i or vi, "
-        "sliding_length or ls); each input needs its sigma; a pair replaces a --file "
-        "correlation of the same pair. Default: independent.",
+        "e,dv_cy=0.94; repeatable, one pair each; names as Python's invert or the options: "
+        "v_i or vi, sliding_length or ls); each input needs its sigma; a pair replaces a "
+        "--file correlation of the same pair. Default: independent.",
     ),
     mass: str | None = rod_option("mass"),
     length: str | None = rod_option("length"),
@@ -263,16 +264,18 @@ def invert_cmd(
         None,
         "--samples",
         min=100,
+        metavar="N",
         help=f"Monte Carlo samples (default 20000; at least 100, at most {MAX_SAMPLES:,}).",
     ),
     seed: int | None = typer.Option(None, "--seed", help="Monte Carlo seed (default 0)."),
     flat: str | None = typer.Option(
         None,
         "--flat",
-        help="Flat material preset (e.g. aisi-1010; with --case the paper's flat): also "
-        "simulate the impact (ghaednia law, the measured angle, v_i, vt_in and mu; no spin) "
-        "and warn when T "
-        "or F is more than 3 times off.",
+        help="Flat material: a library name (see 'impactlab materials'), properties "
+        "'E=69GPa, nu=0.33, Sy=276MPa, rho=2700kg/m^3' (HB=, n=, brittle=yes optional) or a "
+        "TOML file (with --case: the paper's, aisi-1010): also simulate the impact (ghaednia "
+        "law, the measured angle, v_i, vt_in and mu; no spin) and warn when T or F is more "
+        "than 3 times off.",
     ),
     as_json: bool = typer.Option(False, "--json", help="Machine-readable output (SI)."),
 ) -> None:

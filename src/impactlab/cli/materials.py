@@ -31,8 +31,8 @@ def materials(
     SI, with each source's citation and address).
 
     Any command's --material/--flat takes one of these names, or a material by values
-    ("E=69GPa, nu=0.33, Sy=276MPa, rho=2700kg/m^3"; HB=... and n=... optional), or a TOML
-    file of the same keys.
+    ("E=69GPa, nu=0.33, Sy=276MPa, rho=2700kg/m^3"; HB=, n=, brittle=yes optional), or a
+    TOML file of the same keys.
 
     Example: impactlab materials --json; impactlab materials 6061-t6
     """

@@ -38,7 +38,7 @@ from impactlab.cli.config_file import (
     refuse_given,
 )
 from impactlab.cli.config_values import option_numbers, plain_number, text
-from impactlab.cli.drop_body import flexible_rod, paper_mass
+from impactlab.cli.drop_body import MODES_ALIASES, flexible_rod, paper_mass
 from impactlab.cli.simulate_from import FROM_RULE, run_from
 from impactlab.cli.simulate_help import HELP
 from impactlab.cli.simulate_output import check_plot_folder, report_result
@@ -82,7 +82,8 @@ _KEYS = (
 )
 #: Options of a rod that a sphere does not have.
 _ROD_ONLY = ("angle", "length", "inertia", "constant_angle", "diameter")
-#: Options of the flexible rod (``--flexible``) only.
+#: Options of the flexible rod (``--flexible``) only: its modes and their damping (no rigid
+#: rod's), then those of any drop (``impactlab drop --rigid`` takes them).
 _FLEX_ONLY = ("modes_axial", "modes_bending", "damping", "rate", "stop", "t_max")
 #: Options the flexible rod's drop does not have.
 _NOT_FLEX = ("inertia", "constant_angle")
@@ -112,23 +113,18 @@ def _body(opt: ConfigOptions) -> tuple[Rod | Sphere | FlexibleRod, float | None]
         raise UserError(f"body must be 'rod' or 'sphere', got {kind!r}")
     material = option_material(opt, "material", AISI_201)
     flexible = opt.given("flexible")
-    if not flexible:
-        refuse_given(
-            opt,
-            _FLEX_ONLY,
-            "only a drop has modes, a rate-dependent flat, a stop rule or a time limit (add "
-            "--flexible, or run the rigid rod's drop: impactlab drop --rigid)",
-        )
-    if kind == "sphere":
+    if kind == "sphere":  # first: a hint to add --flexible would be refused for a sphere
         if opt.given("diameter"):  # a sphere's size: its radius, where --diameter was given
             raise UserError(
                 f"{opt.label('diameter')} is a rod's; a sphere's size is its radius, "
                 f'{opt.label("radius", "diameter")} (half the diameter, e.g. "5 mm")'
             )
+        refuse_given(opt, _ROD_ONLY, "a sphere has no angle, length or inertia (simulate a rod)")
         refuse_given(
             opt,
-            (*_ROD_ONLY, "flexible"),
-            "a sphere has no angle, length, inertia or modes (simulate a rod)",
+            ("flexible", *_FLEX_ONLY),
+            "a sphere has no drop options (modes, damping, rate, stop rule, time limit: a rod's "
+            "drop, impactlab drop or impactlab simulate rod --flexible)",
         )
         sphere = Sphere(
             radius=opt.size_or("radius", "m", PAPER_ROD.tip_radius),
@@ -136,6 +132,8 @@ def _body(opt: ConfigOptions) -> tuple[Rod | Sphere | FlexibleRod, float | None]
             material=material,
         )
         return sphere, None
+    if not flexible:
+        _refuse_drop_options(opt)
     if not opt.given("angle"):
         raise UserError(_MISSING_ANGLE)
     angle = angle_quantity(opt.values["angle"], opt.label("angle"))
@@ -156,6 +154,29 @@ def _body(opt: ConfigOptions) -> tuple[Rod | Sphere | FlexibleRod, float | None]
         return flexible_rod(opt.values, sizes, material, opt.label), angle
     rod = Rod(**sizes, material=material, inertia=opt.size("inertia", "kg*m^2"))  # type: ignore[arg-type]
     return rod, angle
+
+
+def _refuse_drop_options(opt: ConfigOptions) -> None:
+    """The rigid rod's refusal of the flexible rod's options, each pointing to what takes it:
+    the modes and their damping to ``--flexible`` only (``drop --rigid`` has none), the rate,
+    stop rule and time limit to ``--flexible`` or ``impactlab drop --rigid``."""
+    groups = (
+        (_FLEX_ONLY[:3], "only a drop has modes and modal damping, the flexible rod's: add {}"),
+        (
+            _FLEX_ONLY[3:],
+            "only a drop has a rate-dependent flat, a stop rule or a time limit: add {}, "
+            "run the rigid rod's drop (impactlab drop --rigid)",
+        ),
+    )
+    for keys, why in groups:
+        given = [k for k in keys if opt.given(k)]
+        if given:
+            them = "it" if len(given) == 1 else "them"
+            flexible = opt.label("flexible", given[0])  # --flexible, or the file's key
+            raise UserError(
+                f"{', '.join(opt.label(k) for k in given)}: {why.format(flexible)} or leave "
+                f"{them} out"
+            )
 
 
 def run_simulate(opt: ConfigOptions) -> ImpactResult | DropResult:
@@ -193,8 +214,9 @@ def run_simulate(opt: ConfigOptions) -> ImpactResult | DropResult:
     )
 
 
-#: Other spellings of an option (the rod's tip radius is tip_radius elsewhere).
-_ALIASES = {"radius": ("--tip-radius",)}
+#: Other spellings of an option (the rod's tip radius is tip_radius elsewhere, the mode counts
+#: FlexibleRod's n_axial and n_bending).
+_ALIASES = {"radius": ("--tip-radius",), **MODES_ALIASES}
 
 
 def _option(key: str) -> Any:

@@ -62,19 +62,21 @@ _Scheduler = Annotated[
     str | None, typer.Option("--scheduler", help="Dask scheduler address, tcp://host:port.")
 ]
 _Workers = Annotated[
-    int | None, typer.Option("--workers", "-w", min=1, help="Local cores to use (default: all).")
+    int | None,
+    typer.Option("--workers", "-w", min=1, metavar="N", help="Local cores to use (default: all)."),
 ]
 _MaxCases = Annotated[
     int | None,
     typer.Option(
         "--max-cases",
         min=1,
+        metavar="N",
         help="Largest number of cases accepted (default: the study's max_cases, 100 million).",
     ),
 ]
 _Quiet = Annotated[bool, typer.Option("--quiet", "-q", help="No progress bar, no summary.")]
 _Json = Annotated[bool, typer.Option("--json", help="Machine-readable output.")]
-_Store = Annotated[Path, typer.Argument(help="A sweep's Zarr store.")]
+_Store = Annotated[Path, typer.Argument(metavar="STORE", help="A sweep's Zarr store.")]
 
 
 sweep_app = typer.Typer(
@@ -86,9 +88,11 @@ sweep_app = typer.Typer(
 )
 
 
-@sweep_app.command("run")
+@sweep_app.command("run", short_help="Run (or resume) the sweep of a study file.")
 def run_cmd(
-    study: Annotated[Path, typer.Argument(help="Study file (TOML), see examples/.")],
+    study: Annotated[
+        Path, typer.Argument(metavar="STUDY", help="Study file (TOML), see examples/.")
+    ],
     out: _Out = None,
     scheduler: _Scheduler = None,
     workers: _Workers = None,
@@ -104,6 +108,7 @@ def run_cmd(
         typer.Option(
             "--worker-timeout",
             min=0.001,
+            metavar="SECONDS",
             help="Dask: seconds without any worker before the sweep stops with an error "
             f"(default: {WORKER_TIMEOUT_HELP_DEFAULT}).",
         ),
@@ -161,19 +166,30 @@ def run_cmd(
     refuse_none_ok(res, ds)  # every case refused or failed: say so, exit status 2
 
 
-@sweep_app.command("uncertainty")
+@sweep_app.command(
+    "uncertainty", short_help="Spread of e, delta_p, L_s, T, F over a Monte Carlo sample."
+)
 def uncertainty_cmd(
-    source: Annotated[Path, typer.Argument(help="A Monte Carlo study file, or its Zarr store.")],
+    source: Annotated[
+        Path,
+        typer.Argument(metavar="SOURCE", help="A Monte Carlo study file, or its Zarr store."),
+    ],
     outputs: Annotated[
         list[str] | None,
         typer.Option(
             "--output",
+            metavar="OUTPUT",
             help="Output to report, a quantity (e, delta_p, L_s, T, F, ...; not the codes "
-            "regime and flags); repeatable.",
+            "regime and flags); repeatable: --output e --output T.",
         ),
     ] = None,
     percentiles: Annotated[
-        list[float] | None, typer.Option("--percentile", help="Percentile (repeatable).")
+        list[float] | None,
+        typer.Option(
+            "--percentile",
+            metavar="PCT",
+            help="Percentile to report, in [0, 100]; repeatable: --percentile 5 --percentile 95.",
+        ),
     ] = None,
     out: _Out = None,
     scheduler: _Scheduler = None,
@@ -235,7 +251,7 @@ def _output_worded(message: str) -> str:
     return "--" + message if message.startswith("output '") else message
 
 
-@sweep_app.command("info")
+@sweep_app.command("info", short_help="Progress and contents of a store.")
 def info_cmd(
     store: _Store,
     as_json: _Json = False,
@@ -251,7 +267,7 @@ def info_cmd(
     emit(versioned(info_json(info)) if as_json else info, as_json=as_json, title=str(store))
 
 
-@sweep_app.command("plot")
+@sweep_app.command("plot", short_help="Regime map, maps and histograms of a store (PNG).")
 def plot_cmd(
     store: _Store,
     out: Annotated[Path, typer.Option("--out", "-o", help="Folder for the PNG files.")],
@@ -297,11 +313,15 @@ def _plots(plot_sweep: Any, ds: Any, folder: Path, skipped: list[str] | None = N
     return list(files)
 
 
-@sweep_app.command("export")
+@sweep_app.command("export", short_help="Export a store to a CSV table or NetCDF-4 file.")
 def export_cmd(
     store: _Store,
     target: Annotated[
-        Path, typer.Argument(help="File to write: .csv (a table, units in the header), .nc/.nc4.")
+        Path,
+        typer.Argument(
+            metavar="TARGET",
+            help="File to write: .csv (a table, units in the header), .nc/.nc4.",
+        ),
     ],
 ) -> None:
     """Export a store to a CSV table (.csv: one row per case) or NetCDF-4 (.nc, .nc4).

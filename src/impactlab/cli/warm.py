@@ -14,9 +14,10 @@ def warm(
     part: list[str] = typer.Option(
         None,
         "--part",
-        help="Only this part (repeatable): 'contact laws', 'rigid impact', 'batch', "
-        "'partial slip', 'flexible rod', 'flexible partial slip', 'flexible batch'. "
-        "Default: all.",
+        metavar="PART",
+        help="Only this part (repeatable: --part batch --part 'flexible rod'): 'contact laws', "
+        "'rigid impact', 'batch', 'partial slip', 'flexible rod', 'flexible partial slip', "
+        "'flexible batch'. Default: all.",
     ),
     jobs: int = typer.Option(
         None,
