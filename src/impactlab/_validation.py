@@ -323,9 +323,9 @@ def read_text_file(path: str | os.PathLike[str], kind: str, what: str = "") -> s
     missing or unreadable file) passes through."""
     data = Path(path).read_bytes()
     if data.startswith((b"\xff\xfe", b"\xfe\xff")):  # Excel's "Unicode Text", Notepad's "Unicode"
+        how = "Excel: 'CSV UTF-8'; an editor" if kind == "CSV" else "an editor"
         problem = (
-            f"UTF-16 text: save the file as UTF-8 ({kind} is read as UTF-8; Excel: 'CSV UTF-8'; "
-            "an editor: encoding UTF-8)"
+            f"UTF-16 text: save the file as UTF-8 ({kind} is read as UTF-8; {how}: encoding UTF-8)"
         )
         raise ValueError(f"{what} is {problem}" if what else problem)
     skip = 3 if data.startswith(b"\xef\xbb\xbf") else 0

@@ -86,6 +86,7 @@ def test_none_is_named_best_that_agrees_with_fewer_values_than_another() -> None
     assert v.quantities == ("e",) and v.left_out == ("duration",)
     assert v.reason.startswith("none is named: flexible rod ranks first over e, the quantities")
     assert "but rigid body agrees with more of the measured values (1 against 0)" in v.reason
+    assert v.agrees is False and v.to_dict()["agrees"] is False  # the first agrees with nothing
     # with every ok configuration agreeing with nothing, none is named best: the lowest chi2
     # is the least disagreeing one
     outcomes[("d", RIGID.name)] = Outcome("ok", True, {"e": 0.8, "duration": 2.0e-3})
@@ -118,3 +119,17 @@ def test_the_rigid_rod_stays_best_where_it_agrees_over_the_shared_quantities() -
     x = _explained(DROP, outcomes)
     assert x.best("d") == RIGID.name
     assert x.verdict("d").reason.startswith("rigid body: the most values within 2 sigma")
+
+
+def test_a_first_that_agrees_only_with_a_quantity_left_out_says_so() -> None:
+    """The rigid body is first over e (closer, neither within 2 sigma) and agrees with the
+    duration, which the flexible rod does not predict: named, and the reason says where its
+    agreement lies rather than claiming "the most values within 2 sigma" at 0."""
+    outcomes = {
+        ("d", RIGID.name): Outcome("ok", True, {"e": 0.7, "duration": 1.0e-3}),
+        ("d", FLEXIBLE.name): Outcome("ok", True, {"e": 0.8}, unsupported=("duration",)),
+    }
+    v = _explained(DROP, outcomes).verdict("d")
+    assert v.configuration == RIGID.name and v.agrees is True and v.within_2_sigma == 0
+    assert "the most values within 2 sigma" not in v.reason
+    assert "agrees within 2 sigma only with duration" in v.reason

@@ -55,7 +55,7 @@ def magnitude(name: str, value: Any, what: str) -> Any:
         bad = float(x.ravel()[np.argmax(x < 0)])
         raise ValueError(
             f"{name} must be >= 0 ({what}, a magnitude in m), got {bad!r}: "
-            "the paper's tables print it negative, impactlab takes the magnitude"
+            "the paper's tables print it negative: give its magnitude"
         )
     return x
 

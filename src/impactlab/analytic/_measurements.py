@@ -32,7 +32,7 @@ __all__ = [
     "measurements",
 ]
 
-_CONVENTION = "the paper's tables print it negative, impactlab takes the magnitude"
+_CONVENTION = "the paper's tables print it negative: give its magnitude"
 
 #: Units of the measured inputs ("": a plain number).
 _UNITS = {

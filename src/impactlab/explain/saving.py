@@ -12,10 +12,9 @@ all.
 from __future__ import annotations
 
 import json
-import os
 from pathlib import Path
 
-from impactlab._files import write_text_atomic
+from impactlab._files import folder_refusal, write_text_atomic
 from impactlab.explain.result import Explanation
 from impactlab.explain.tables import COMPARISON_COLUMNS
 
@@ -59,12 +58,9 @@ def check_folder(folder: Path, option: str = "folder") -> None:
             f"{option} {str(folder)!r}: {str(above)!r} is a file, so the folder cannot be made "
             "under it; give a folder"
         )
-    if above is not None and not os.access(above, os.W_OK | os.X_OK):
-        what = "written to" if above == folder else f"made in {str(above)!r}"
-        raise PermissionError(
-            f"{option} {str(folder)!r} cannot be {what} (no write permission); give a folder "
-            "you can write to"
-        )
+    refused = folder_refusal(folder, option)  # a probe, as every command's output folder
+    if refused is not None:
+        raise PermissionError(refused)
     paths = [folder / CSV_NAME, folder / JSON_NAME]
     for p in paths:
         if p.is_dir():

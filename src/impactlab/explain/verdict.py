@@ -48,7 +48,8 @@ class Verdict:
     caveat), the ``least_disagreeing`` configuration where none agrees with any measured
     value within 2 sigma, the configurations it is ``undecided`` between (near the 2-sigma
     line), and of the row the reason names (the first of the ranking) its count
-    ``within_2_sigma`` and ``chi2`` over ``quantities`` and its ``caveat``."""
+    ``within_2_sigma`` and ``chi2`` over ``quantities``, its ``caveat`` and its
+    ``agreements`` within 2 sigma over all the drop's measured quantities."""
 
     drop: str
     configuration: str | None
@@ -61,14 +62,16 @@ class Verdict:
     within_2_sigma: int | None = None
     chi2: float = math.nan
     caveat: str = ""
+    agreements: int | None = None
 
     @property
     def agrees(self) -> bool | None:
-        """Whether the first of the ranking agrees with a measured value within 2 sigma (None:
-        nothing was ranked)."""
-        if self.within_2_sigma is None:
+        """Whether the first of the ranking agrees with a measured value within 2 sigma, any of
+        the drop's, ranked over or left out (``agreements`` of them; None: nothing was
+        ranked)."""
+        if self.agreements is None:
             return None
-        return self.least_disagreeing is None
+        return self.agreements > 0
 
     @property
     def note(self) -> str:
@@ -197,8 +200,9 @@ def verdict(
                f"({max(agrees[n] for n in more)} against {agrees[first]}), with ones {first} "
                f"does not predict{out}{extra}")  # fmt: skip
         return Verdict(
-            drop, None, common, left, why, bool(extra), within_2_sigma=k, chi2=chi2, caveat=caveat
-        )
+            drop, None, common, left, why, bool(extra), within_2_sigma=k, chi2=chi2, caveat=caveat,
+            agreements=agrees[first],
+        )  # fmt: skip
     if agrees[first] == 0:
         extra = _provisional(ok, names, [first])
         why = (f"no configuration agrees with any measured value within 2 sigma: {first} "
@@ -214,6 +218,7 @@ def verdict(
             within_2_sigma=k,
             chi2=chi2,
             caveat=caveat,
+            agreements=0,
         )
     rivals = _undecided(first, names, total, rows)
     if rivals:
@@ -238,10 +243,19 @@ def verdict(
             within_2_sigma=k,
             chi2=chi2,
             caveat=caveat,
+            agreements=agrees[first],
         )
     extra = _provisional(ok, names, [first])
-    why = (f"{first}: the most values within 2 sigma, then the lowest chi2, over {shared} "
-           f"({scored}){out}{extra}")  # fmt: skip
+    if k == 0:  # its agreement lies in quantities left out, which the others do not predict
+        own = got[got["configuration"] == first]
+        alone = [q for q in left if bool(own.loc[own["quantity"] == q, "within_2_sigma"].any())]
+        why = (f"{first}: ranks first by the lowest chi2 over {shared} ({scored}); it agrees "
+               f"within 2 sigma only with {_names(alone)}, which the others do not predict"
+               f"{out}{extra}")  # fmt: skip
+    else:
+        why = (f"{first}: the most values within 2 sigma, then the lowest chi2, over {shared} "
+               f"({scored}){out}{extra}")  # fmt: skip
     return Verdict(
-        drop, first, common, left, why, bool(extra), within_2_sigma=k, chi2=chi2, caveat=caveat
-    )
+        drop, first, common, left, why, bool(extra), within_2_sigma=k, chi2=chi2, caveat=caveat,
+        agreements=agrees[first],
+    )  # fmt: skip
