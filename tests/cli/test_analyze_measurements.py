@@ -1,11 +1,18 @@
 """``impactlab analyze ... --measurements FILE.csv --label NAME``: the analysed drop appended to
-a measurements file for ``impactlab calibrate`` (there was no route from one to the other)."""
+a measurements file for ``impactlab calibrate``; a drop without --flat in a file whose drops name
+another flat is warned about; a file that cannot be written gets the analysis printed first, then
+one error naming the measurements file (not its temporary file)."""
 
 from __future__ import annotations
 
+import errno
+import json
 from collections.abc import Callable
 from pathlib import Path
 
+import pytest
+
+import impactlab.calibrate.measurement_append as append_module
 from impactlab.calibrate import read_measurements
 
 DATA = Path(__file__).resolve().parents[2] / "examples" / "data"
@@ -65,3 +72,57 @@ def test_the_help_shows_the_route_to_calibrate(tmp_path: Path, cli_main: CliMain
     (tmp_path / "results.json").write_text("{}")
     code, _, err = cli_main("calibrate", str(tmp_path / "results.json"), "-p", "mu=uniform(0, 1)")
     assert code != 0 and "impactlab analyze MARKERS SCAN --measurements" in err
+
+
+def test_the_default_flat_is_named(tmp_path: Path, cli_main: CliMain) -> None:
+    path = tmp_path / "drops.csv"
+    path.write_text(
+        "label,angle [deg],vy [m/s],mu,e,e_sigma,flat_material\nd1,45,-2,0.2,0.4,0.02,aisi-304\n"
+    )
+    code, _, err = cli_main(*ARGS, "--measurements", str(path), "--label", "d2")
+    assert code == 0, err
+    assert (
+        "drop 'd2' names no material of the flat and takes the default aisi-1010, while earlier "
+        "drops name aisi-304: give --flat NAME (flat= in Python), or edit its flat_material field"
+    ) in " ".join(err.split())
+    assert [c["flat_material"] for c in read_measurements(path).categories] == [
+        "aisi-304",
+        "aisi-1010",
+    ]
+
+
+def test_no_warning_where_the_materials_agree(tmp_path: Path, cli_main: CliMain) -> None:
+    path = tmp_path / "drops.csv"
+    path.write_text("label,angle [deg],vy [m/s],mu,e,e_sigma\nd1,45,-2,0.2,0.4,0.02\n")
+    code, _, err = cli_main(*ARGS, "--measurements", str(path), "--label", "d2")
+    assert code == 0 and "names no material" not in err
+
+
+@pytest.fixture
+def read_only(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Every write fails as on a read-only file system, naming the temporary file."""
+
+    def refuse(path: object, data: bytes) -> None:
+        partial = Path(str(path)).with_name(f".{Path(str(path)).name}.123.partial")
+        raise OSError(errno.EROFS, "Read-only file system", str(partial))
+
+    monkeypatch.setattr(append_module, "write_bytes_atomic", refuse)
+
+
+@pytest.mark.parametrize("as_json", [False, True])
+def test_the_analysis_is_shown_and_the_file_named(
+    tmp_path: Path, cli_main: CliMain, read_only: None, as_json: bool
+) -> None:
+    """It printed nothing (the analysis lost) and named '.drops.csv.17816.partial'."""
+    path = tmp_path / "drops.csv"
+    code, out, err = cli_main(*ARGS, "--measurements", str(path), *(["--json"] * as_json))
+    assert code != 0
+    if as_json:
+        assert json.loads(out)["ok"] is True
+    else:
+        assert "mean_force" in out and "sliding_length" in out
+    lines = [x for x in err.splitlines() if x.startswith("error:")]
+    assert lines == [f"error: --measurements: nothing appended to {path}: read-only file system"], (
+        err
+    )
+    assert ".partial" not in err and not path.exists()
