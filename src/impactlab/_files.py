@@ -7,7 +7,7 @@ replaced only where it could be written in place (a read-only file is refused as
 refuse it: ``os.replace`` would not ask), the new file keeps its permission bits, and a symbolic
 link is written through (the file it names is replaced, the link kept). An error of the
 system names the target, never the temporary file. ``folder_refusal`` says, before any work,
-why no file can be made in a folder.
+why no file can be made in a folder (``missing_link`` for a symbolic link to nothing on its way).
 """
 
 from __future__ import annotations
@@ -22,11 +22,37 @@ from pathlib import Path
 from impactlab._oserror import oserror_words
 
 
+def missing_link(path: str | os.PathLike[str], name: str) -> str | None:
+    """One line naming ``name`` and ``path`` as given when ``path``, or the folder above it
+    where it would be made, is a symbolic link to something missing (the folder could not be
+    made through it); None otherwise."""
+    given = Path(path)
+    for p in (given, *given.parents):
+        if p.is_symlink() and not p.exists():
+            try:
+                to = f" ({os.readlink(p)!r})"
+            except OSError:  # pragma: no cover - a link that vanished meanwhile
+                to = ""
+            where = "is" if p == given else f"is inside {str(p)!r},"
+            return (
+                f"{name} {str(path)!r} {where} a symbolic link to a missing folder{to}: make "
+                f"that folder, or choose another {name}"
+            )
+        if p.exists():
+            break
+    return None
+
+
 def folder_refusal(path: str | os.PathLike[str], name: str) -> str | None:
     """Why the folder ``path`` (of the option or argument ``name``) cannot take new files, as
-    one line naming ``name`` and ``path`` as given, or None when it can: the folder, or the
-    nearest existing one above it where it is still to be made, must let a probe (a temporary
-    folder, removed at once) be created. A file in the way is left to the caller's check."""
+    one line naming ``name`` and ``path`` as given, or None when it can: it, or a folder above
+    it, is a symbolic link to something missing (:func:`missing_link`), or the folder, or the
+    nearest existing one above it where it is still to be made, does not let a probe (a
+    temporary folder, removed at once) be created. A file in the way is left to the caller's
+    check."""
+    link = missing_link(path, name)
+    if link is not None:
+        return link
     given = Path(path)
     existing = next((p for p in (given, *given.parents) if p.exists()), Path("."))
     if not existing.is_dir():

@@ -219,3 +219,18 @@ def test_the_zeta_interval_and_a_stored_exponent_band():
     assert _ends("[691, 1.08e+03]") == (691.0, 1080.0)  # as older summaries stored it
     assert reformat_interval("[1.2e-05, 0.3]") == "[1.2\u00d710\u207b\u2075, 0.3]"
     assert reformat_interval("-") == "-" and reformat_interval(None) is None
+
+
+def test_a_nan_band_reads_back_as_nan() -> None:
+    """A check whose every draw failed has a NaN band, written ``[-, -]``: it reads back as NaN
+    (the report's table is built, its band shown as written), as Python's ``[nan, nan]`` of
+    older summaries does."""
+    text = interval_text(np.nan, np.nan)
+    assert text == "[-, -]"
+    assert all(np.isnan(x) for x in (*_ends(text), *_ends("[nan, nan]")))
+    assert reformat_interval(text) == text
+    row = _row("flexible rod", "e", 0.5, np.nan, text) | {"sigma": 0.02}
+    out = checks_table([row], set(), PAPER_SIGMAS).iloc[0]
+    assert out[BAND] == "[-, -]" and out["band"] == MONTE_CARLO
+    row = _row("flexible rod", "scar_length [um]", 1400.0, np.nan, "[nan, nan]")
+    assert checks_table([row], set(), PAPER_SIGMAS).iloc[0][BAND] == "[-, -]"

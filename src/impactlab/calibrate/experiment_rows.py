@@ -150,14 +150,17 @@ _MATERIALS = {
 
 
 def _default_materials(meas: Measurements, rec: dict[str, Any], label: str) -> list[str]:
-    """The warnings for a drop ``rec`` (the last of ``meas``) that names no material of a
-    column whose earlier drops name another one: it takes the calibration's default."""
+    """The warnings for a drop ``rec`` (the drop ``label`` of ``meas``, found by its label)
+    that names no material of a column whose other drops name another one: it takes the
+    calibration's default."""
     out = []
+    new = meas.labels.index(str(label))
+    rest = [c for i, c in enumerate(meas.categories) if i != new]
     for column, (what, how) in _MATERIALS.items():
-        if column in rec or meas.n_drops < 2:
+        if column in rec or not rest:
             continue
-        taken = meas.categories[-1].get(column)
-        others = sorted({str(c[column]) for c in meas.categories[:-1] if c.get(column)} - {taken})
+        taken = meas.categories[new].get(column)
+        others = sorted({str(c[column]) for c in rest if c.get(column)} - {taken})
         if others:
             out.append(
                 f"drop {label!r} names no material of {what} and takes the default {taken}, "

@@ -9,8 +9,9 @@ the file lacks is added at the end of the header, with its unit (``[deg]`` for a
 otherwise), and every earlier row gets an empty field there (blank: not given, as before). A new
 file gets a header in SI units (angles in degrees). Each number is written with 12 significant
 digits. The file is written whole or not at all, under an exclusive lock on its folder, so that
-concurrent appends (a batch of analyses run in parallel) keep every drop. The drop's label must
-read back as written (:func:`check_label`).
+concurrent appends (a batch of analyses run in parallel) keep every drop; where the folder cannot
+be locked (a network file system without locks), the drop is appended unlocked with a
+CalibrationWarning. The drop's label must read back as written (:func:`check_label`).
 """
 
 from __future__ import annotations
@@ -20,11 +21,13 @@ import csv
 import io
 import math
 import os
+import warnings
 from collections.abc import Iterator, Mapping
 from pathlib import Path
 from typing import Any
 
 from impactlab._files import write_bytes_atomic
+from impactlab.calibrate.calibration_warning import CalibrationWarning
 from impactlab.calibrate.correlations import correlation_column
 from impactlab.calibrate.measurement_columns import (
     LABEL_KEYS,
@@ -49,10 +52,11 @@ def append_record(
 ) -> Measurements:
     """Append the drop ``record`` (column -> value, as ``Measurements.from_records`` takes it)
     to the CSV measurements file ``path`` (created if missing) as one line in the file's units,
-    after a ``# comment`` line when ``comment`` is given; returns the file's drops. ValueError
-    naming the file for one that is not CSV, a file that cannot be read as measurements, a
-    label the file has already, a label that would not read back as written
-    (:func:`check_label`; a record without one too) and a drop it cannot take."""
+    after a ``# comment`` line when ``comment`` is given; returns the file's drops, read under
+    the lock (the new drop last). ValueError naming the file for one that is not CSV, a file
+    that cannot be read as measurements, a label the file has already, a label that would not
+    read back as written (:func:`check_label`; a record without one too) and a drop it cannot
+    take; a CalibrationWarning when the drop was appended unlocked (:func:`_locked`)."""
     p = Path(path)
     if p.suffix.lower() != ".csv":
         raise ValueError(
@@ -67,9 +71,18 @@ def append_record(
         )
     check_label(str(label), f"{p}: label")
     row = parse_row(0, record, {})
-    with _locked(p):  # read, check and replace as one step for concurrent appends
+    with _locked(p) as unlocked:  # read, check, replace and read back as one step
         _append(p, row, comment)
-    return read_measurements(p)
+        meas = read_measurements(p)  # the file with this drop last, as it was appended
+    if unlocked:
+        warnings.warn(
+            f"{p}: drop {row.label!r} appended without a lock on its folder ({unlocked}): "
+            "appends to this file from other processes at the same time are not safe (a drop "
+            "may be lost); append one at a time there",
+            CalibrationWarning,
+            stacklevel=2,
+        )
+    return meas
 
 
 def _append(p: Path, row: Row, comment: str | None) -> None:
@@ -112,29 +125,39 @@ def _append(p: Path, row: Row, comment: str | None) -> None:
 
 
 @contextlib.contextmanager
-def _locked(p: Path) -> Iterator[None]:
+def _locked(p: Path) -> Iterator[str]:
     """An exclusive lock (``fcntl.flock``) on the folder that holds ``p`` (the file a symbolic
     link names), held while the block runs, so that appends from several processes each see
     the drops of the others; the folder, not the file, since the write replaces the file, and
-    no lock file is left beside it. Without ``fcntl`` (Windows), or where the folder cannot be
-    opened (then the write fails on its own), the block runs unlocked."""
+    no lock file is left beside it. Yields "" when locked; otherwise, the block running
+    unlocked, why not: the folder cannot be opened (where it is missing the write fails on its
+    own) or locked (``flock`` refused, as on some network file systems). Without ``fcntl``
+    (Windows) the block runs unlocked and "" is yielded (module docstring)."""
     target = p.resolve() if p.is_symlink() else p
     try:
         import fcntl
     except ImportError:  # pragma: no cover - not on POSIX
-        yield
+        yield ""
         return
     try:
         fd = os.open(target.parent, os.O_RDONLY)
-    except OSError:
-        yield
+    except OSError as exc:
+        fd, why = -1, f"the folder cannot be opened: {exc.strerror or exc}"
+    if fd < 0:  # outside the handler: an error of the block is not chained to this one
+        yield why
         return
     try:
-        fcntl.flock(fd, fcntl.LOCK_EX)
+        why = ""
         try:
-            yield
+            fcntl.flock(fd, fcntl.LOCK_EX)
+        except OSError as exc:  # ENOLCK, EBADF: NFS without a lock service, for example
+            why = f"the folder cannot be locked: {exc.strerror or exc}"
+        try:
+            yield why
         finally:
-            fcntl.flock(fd, fcntl.LOCK_UN)
+            if not why:
+                with contextlib.suppress(OSError):  # closing the folder unlocks it anyway
+                    fcntl.flock(fd, fcntl.LOCK_UN)
     finally:
         os.close(fd)
 

@@ -17,7 +17,7 @@ from collections.abc import Collection, Iterable, Mapping
 from pathlib import Path
 from typing import Any
 
-from impactlab._files import folder_refusal, write_bytes_atomic
+from impactlab._files import folder_refusal, missing_link, write_bytes_atomic
 from impactlab._oserror import oserror_words
 from impactlab._version import __version__
 from impactlab.cli._common import UserError
@@ -80,9 +80,12 @@ def output_dir(path: Path, name: str) -> Path:
 
 def output_store(path: Path, name: str) -> Path:
     """The sweep store (a folder, made with its parents) that ``name`` asks to write: UserError
-    when it is an existing file or lies inside one, or when nothing can be created where it
-    would go."""
+    when it is an existing file or lies inside one, a symbolic link to something missing (or
+    inside one), or when nothing can be created where it would go."""
     shown = f"{name} {str(path)!r}"
+    link = missing_link(path, name)
+    if link is not None:
+        raise UserError(link)
     if path.exists() and not path.is_dir():
         raise UserError(f"{shown} exists and is a file, not a sweep store (a folder): choose "
                         "another path")  # fmt: skip

@@ -13,6 +13,7 @@ from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import Any
 
+from impactlab._files import missing_link
 from impactlab.experiment.errors import FileFormatError
 
 __all__ = [
@@ -98,8 +99,12 @@ def output_folder(path: Any, name: str = "out_dir") -> Path:
 
 def check_output_folder(path: Any, name: str = "out_dir") -> Path:
     """The folder ``path``, checked as :func:`output_folder` checks it but not created: nothing
-    is touched (the inputs are checked next, before the folder is made)."""
+    is touched (the inputs are checked next, before the folder is made). ValueError also for a
+    symbolic link to something missing as the folder or in the way of its making."""
     out = check_path(path, name).expanduser()
+    link = missing_link(out, name)
+    if link is not None:
+        raise ValueError(link)
     for p in (out, *out.parents):
         if p.exists():
             if not p.is_dir():

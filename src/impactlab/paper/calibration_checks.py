@@ -15,6 +15,7 @@ and the row says so (the summary keeps the quantiles as computed).
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping, Sequence
 from statistics import NormalDist
 from typing import Any
@@ -98,9 +99,12 @@ def band_text(lo: float, hi: float, quantity: str) -> tuple[str, bool]:
 
 
 def _number(text: str) -> float:
-    """A number as a band writes it: Python's (``1.08e+03``, as older summaries stored it) or
-    the report's (``1.23``, U+00D7, ``10`` and a superscript power)."""
+    """A number as a band writes it: Python's (``1.08e+03``, ``nan``, as older summaries stored
+    it) or the report's (``1.23``, U+00D7, ``10`` and a superscript power; ``-`` for NaN, a band
+    whose every draw failed)."""
     text = text.strip()
+    if text == "-":
+        return math.nan
     if "\u00d710" in text:
         mantissa, power = text.split("\u00d710")
         return float(f"{mantissa}e{power.translate(_FROM_SUPERSCRIPT)}")

@@ -27,7 +27,11 @@ from impactlab.experiment.profilometry.gaps import (
 )
 from impactlab.experiment.profilometry.heightmap import HeightMap
 from impactlab.experiment.profilometry.levelling import levelling_note
-from impactlab.experiment.profilometry.metrics import DentMetrics, unmeasured_notes
+from impactlab.experiment.profilometry.metrics import (
+    DentMetrics,
+    sliding_length_note,
+    unmeasured_notes,
+)
 from impactlab.experiment.profilometry.outline import Extent, extent, fall_distance, outline, sample
 from impactlab.experiment.profilometry.surface import (
     Surface,
@@ -364,8 +368,7 @@ def _metrics(
         delta_p=(delta_p.value, delta_p.sigma),
         length=(length, sig_len),
         width=(width, sig_wid),
-        sliding_length=(length - width, sig_ls),
-    )
+    ) + sliding_length_note(length - width, sig_ls, width)
     pileup, pile_at = _pileup(sf, region, width, pileup_band)
     return DentMetrics(
         delta_p=delta_p,

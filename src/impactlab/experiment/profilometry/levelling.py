@@ -15,10 +15,11 @@ __all__ = [
     "BORDER",
     "K_SIGMA",
     "LEVELLING_RATIO",
+    "NOISE_LAG",
     "Levelled",
+    "lagged_noise",
     "level_plane",
     "levelling_note",
-    "pixel_noise",
 ]
 
 
@@ -26,24 +27,30 @@ __all__ = [
 class Levelled:
     """A levelled height map: ``z`` (ny, nx) [m] (NaN = no data) after subtracting the plane
     ``plane`` = (a, b, c) [m, -, -] (z_plane = a + b x + c y), the ``inliers`` used for the plane,
-    the robust noise ``sigma`` [m] of the inliers, ``iterations``; ``pixel_sigma`` [m]: the
-    scan's pixel-to-pixel noise (:func:`pixel_noise`), which no plane changes."""
+    the robust noise ``sigma`` [m] of the inliers, ``iterations``; ``lag_sigma`` [m]: the
+    inliers' noise from second differences ``NOISE_LAG`` pixels apart (:func:`lagged_noise`),
+    which no plane changes."""
 
     z: np.ndarray
     plane: tuple[float, float, float]
     inliers: np.ndarray
     sigma: float
     iterations: int
-    pixel_sigma: float = math.nan
+    lag_sigma: float = math.nan
 
 
 #: Outlier threshold [noise sigmas] of the levelling plane's inliers.
 K_SIGMA = 3.0
-#: The plane's inliers scatter more than this many times the pixel-to-pixel noise: the plane
-#: leans on the dent (too little undeformed surface around it) or the surface is not flat. On
-#: the example and the synthetic scans with enough margin the ratio is 0.98-1.05; with 5 pixels
-#: or fewer of surface beyond the dent's outline 4.4-6 (delta_p then 2 % deep, about 4 sigma).
+#: The plane's inliers scatter more than this many times their lagged noise (:func:`lagged_noise`):
+#: the plane leans on the dent (too little undeformed surface around it) or the surface is not
+#: flat. On the example and the synthetic scans with enough margin the ratio is 0.98-1.06 (white
+#: noise), up to 1.2 (noise Gaussian-correlated over 3 pixels); with 5 pixels or fewer of surface
+#: beyond the dent's outline 3.0-3.8 (delta_p then 2 % deep, about 4 sigma).
 LEVELLING_RATIO = 2.5
+#: Lag [pixels] of the second differences of :func:`lagged_noise`: longer than the correlation of
+#: the noise of an optical profilometer that samples finer than its lateral resolution (second
+#: differences of neighbours see 1/3 to 1/11 of noise correlated over 1 to 2 pixels).
+NOISE_LAG = 8
 #: Width of the border frame the first plane is fitted to, as a fraction of the scan's size.
 BORDER = 0.12
 
@@ -99,33 +106,42 @@ def level_plane(
     zl = z - (coef[0] + coef[1] * X + coef[2] * Y)
     zl.setflags(write=False)
     plane = (float(coef[0]), float(coef[1]), float(coef[2]))
-    return Levelled(zl, plane, inl, sigma, it, pixel_noise(z))
+    return Levelled(zl, plane, inl, sigma, it, lagged_noise(z, inl))
 
 
-def pixel_noise(z: np.ndarray) -> float:
-    """The height noise [m] from second differences along rows and columns (1.4826 MAD / sqrt 6
-    for white noise): blind to a plane, a tilt and a dent's gentle curvature; NaN without
-    three valid pixels in a row."""
-    d = np.concatenate(
-        [(z[:, 2:] - 2 * z[:, 1:-1] + z[:, :-2]).ravel(), (z[2:] - 2 * z[1:-1] + z[:-2]).ravel()]
-    )
-    d = d[np.isfinite(d)]
+def lagged_noise(z: np.ndarray, mask: np.ndarray | None = None, lag: int = NOISE_LAG) -> float:
+    """The height noise [m] from second differences ``lag`` pixels apart along rows and columns
+    (1.4826 MAD / sqrt 6), over the triples of pixels all in ``mask`` (all pixels when None):
+    blind to a plane and a tilt, and, ``lag`` pixels apart, to noise correlated over fewer
+    pixels; the dent's curvature is left out with it when ``mask`` is the plane's inliers. NaN
+    without a valid triple."""
+    if isinstance(lag, bool) or not isinstance(lag, int | np.integer) or lag < 1:
+        raise ValueError(f"lag must be a whole number of pixels >= 1, got {lag!r}")
+    m = np.isfinite(z) if mask is None else np.asarray(mask, bool) & np.isfinite(z)
+    L = int(lag)
+    parts = []
+    for a, ma in ((z, m), (z.T, m.T)):
+        if a.shape[1] > 2 * L:
+            d = a[:, 2 * L :] - 2 * a[:, L:-L] + a[:, : -2 * L]
+            parts.append(d[ma[:, 2 * L :] & ma[:, L:-L] & ma[:, : -2 * L]])
+    d = np.concatenate(parts) if parts else np.zeros(0)
     if d.size == 0:
         return math.nan
     return float(1.4826 * np.median(np.abs(d - np.median(d))) / math.sqrt(6.0))
 
 
 def levelling_note(lev: Levelled) -> str | None:
-    """The warning for a plane whose inliers scatter more than ``LEVELLING_RATIO`` times the
-    pixel-to-pixel noise (None otherwise)."""
-    ratio = lev.sigma / lev.pixel_sigma if lev.pixel_sigma > 0 else math.nan
+    """The warning for a plane whose inliers scatter more than ``LEVELLING_RATIO`` times their
+    lagged noise (None otherwise)."""
+    ratio = lev.sigma / lev.lag_sigma if lev.lag_sigma > 0 else math.nan
     if not ratio > LEVELLING_RATIO:
         return None
     return (
         f"the levelling is in doubt: the plane's inliers scatter {lev.sigma * 1e6:.3g} um, "
-        f"{ratio:.3g} times the scan's pixel-to-pixel noise ({lev.pixel_sigma * 1e6:.3g} um): "
+        f"{ratio:.3g} times their noise from second differences {NOISE_LAG} pixels apart "
+        f"({lev.lag_sigma * 1e6:.3g} um): "
         "too little undeformed surface around the dent, so that the plane leans on its flanks "
         "and pile-up (biasing delta_p and L_s beyond their +-), or a surface that is not flat "
-        "(curved, a step, roughness longer than a pixel); scan a larger area around the dent, "
-        "with undeformed surface on every side"
+        "(curved, a step, waviness over more than a few pixels); scan a larger area around the "
+        "dent, with undeformed surface on every side"
     )

@@ -10,7 +10,11 @@ import numpy as np
 from impactlab.experiment.profilometry.heightmap import HeightMap
 from impactlab.experiment.uncertainty import Estimate
 
-__all__ = ["DentMetrics", "unmeasured_notes"]
+__all__ = ["LS_SCALE", "DentMetrics", "sliding_length_note", "unmeasured_notes"]
+
+#: L_s is not measured when its uncertainty exceeds this fraction of the width (as well as its
+#: magnitude): L_s near 0 (a round dent, no sliding) is a measurement when its +- is small.
+LS_SCALE = 0.1
 
 
 def unmeasured_notes(**estimates: tuple[float, float]) -> list[str]:
@@ -22,6 +26,20 @@ def unmeasured_notes(**estimates: tuple[float, float]) -> list[str]:
         "the noise); check the scan and its dent plot"
         for name, (value, sigma) in estimates.items()
         if sigma > abs(value)
+    ]
+
+
+def sliding_length_note(value: float, sigma: float, width: float) -> list[str]:
+    """The warning for L_s = ``value`` +- ``sigma`` [m] whose uncertainty exceeds both its
+    magnitude and ``LS_SCALE`` x the ``width`` [m] (a round dent's L_s near 0, +- a few um, is
+    measured: no sliding)."""
+    if not (sigma > abs(value) and sigma > LS_SCALE * width):
+        return []
+    return [
+        f"sliding_length = {value * 1e6:.4g} um has an uncertainty of {sigma * 1e6:.3g} um, "
+        f"larger than itself and than {LS_SCALE:.0%} of the width ({width * 1e6:.4g} um): it is "
+        "not measured (an outline's crossing on a flat profile, a dent at the noise); check the "
+        "scan and its dent plot"
     ]
 
 

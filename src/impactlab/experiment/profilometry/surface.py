@@ -127,7 +127,8 @@ _NAMED = 4
 
 def _shallow(sf: Surface, deepest: float, detect_sigma: float) -> str:
     """Why no point lies below the detection threshold: a flat scan, a levelling that failed
-    (the deepest point far below the surface by the pixel-to-pixel noise), or no dent."""
+    (the plane's inliers scatter far more than their lagged noise, and the deepest point lies far
+    below the surface by that noise), or no dent."""
     if not float(np.ptp(sf.zl[sf.valid])) > 0:
         return "the scan is flat (every height the same: no variation)"
     text = (
@@ -135,11 +136,11 @@ def _shallow(sf: Surface, deepest: float, detect_sigma: float) -> str:
         f"the detection threshold {detect_sigma:g} x noise = {detect_sigma * sf.sig_s * 1e6:.3g} um"
     )
     note = levelling_note(sf.lev)
-    if note is None or not -deepest > detect_sigma * sf.lev.pixel_sigma:
+    if note is None or not -deepest > detect_sigma * sf.lev.lag_sigma:
         return text
     return (
-        f"the levelling failed: {text}, but {-deepest / sf.lev.pixel_sigma:.3g} times the "
-        f"pixel-to-pixel noise; {note.removeprefix('the levelling is in doubt: ')}"
+        f"the levelling failed: {text}, but {-deepest / sf.lev.lag_sigma:.3g} times the "
+        f"inliers' lagged noise; {note.removeprefix('the levelling is in doubt: ')}"
     )
 
 
