@@ -16,8 +16,7 @@ def test_batch_messages_name_the_refused_input_and_value() -> None:
     mu = [0.2, np.nan, 2000.0, 0.2, 0.2]
     angle = [0.35, 0.35, 0.35, np.nan, 0.35]
     vy = [-1.41, -1.41, -1.41, -1.41, -2.0e4]
-    with pytest.warns(il.ImplausibleInputWarning):  # the 2e4 m/s case
-        b = il.simulate_batch(ROD, il.AISI_1010, mu=mu, angle=angle, vy=vy)
+    b = il.simulate_batch(ROD, il.AISI_1010, mu=mu, angle=angle, vy=vy)  # 2e4 m/s: refused
     assert b.status.tolist() == [ST_OK] + [ST_BAD_INPUT] * 4
     assert b.messages == [
         "ok",

@@ -43,6 +43,7 @@ from impactlab.bodies._checks import (
     plausible,
     tip_mass_problem,
 )
+from impactlab.bodies._keywords import FLEXIBLE_ROD_NOTES, refuse_unknown_fields
 from impactlab.bodies.beam_modes import axial_frequencies, eb_frequencies
 from impactlab.bodies.geometric import geometric_tensor
 from impactlab.bodies.modal import ModalBasis, modal_basis
@@ -198,6 +199,7 @@ def _tensor(
     return arrays
 
 
+@refuse_unknown_fields(FLEXIBLE_ROD_NOTES)
 @dataclass(frozen=True)
 class FlexibleRod:
     """A uniform flexible rod of circular cross-section with hemispherical ends.

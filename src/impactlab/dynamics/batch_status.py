@@ -19,7 +19,7 @@ import numpy as np
 from impactlab.bodies import Rod, Sphere
 from impactlab.dynamics.batch_fields import flagged_messages
 from impactlab.dynamics.export import batch_html
-from impactlab.dynamics.input_checks import contact_reach, mu_problem, past_normal
+from impactlab.dynamics.input_checks import contact_reach, degrees_hint, mu_problem, past_normal
 from impactlab.dynamics.kernels.inputs import (
     IN_MU,
     IN_OK,
@@ -172,7 +172,7 @@ class BatchStatus:
         )
         if int(self.status[i]) == ST_BAD_ANGLE:  # past the normal: what it means, as in simulate
             beyond = past_normal(th, False) if 0.5 * math.pi < th < math.pi else ""
-            return f"angle = {th!r} rad = {math.degrees(th):.4g} deg{beyond}"
+            return f"angle = {th!r} rad = {math.degrees(th):.4g} deg{beyond}{degrees_hint(th)}"
         try:
             vn = float(self["vn_in"][i])  # type: ignore[index]
         except KeyError:  # a batch without the contact point's velocity

@@ -12,6 +12,7 @@ from impactlab import schema
 from impactlab._version import __version__
 from impactlab.dynamics.batch_fields import with_units
 from impactlab.dynamics.batch_status import INTEGER_FIELDS, integer_series
+from impactlab.dynamics.drop_checks import DROP_STATUS_MESSAGES
 from impactlab.dynamics.export import flag_attrs, status_attrs
 from impactlab.dynamics.flexcore import layout as F
 
@@ -77,7 +78,7 @@ def drop_dataset(drops: Any) -> Any:
         variables[name] = ("case", np.array(v), {"units": unit, "long_name": f"input: {meaning}"})
     for name in drop_columns():
         if name == "status":
-            variables[name] = ("case", status.astype(np.int32), status_attrs())
+            variables[name] = ("case", status.astype(np.int32), status_attrs(DROP_STATUS_MESSAGES))
             continue
         unit, meaning = output_unit(name)
         attrs: dict[str, Any] = {"units": unit, "long_name": meaning}

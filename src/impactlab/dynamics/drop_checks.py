@@ -10,7 +10,7 @@ from typing import Any
 
 import numpy as np
 
-from impactlab._validation import check_positive, did_you_mean
+from impactlab._validation import check_finite, check_positive, did_you_mean
 from impactlab.bodies import Rod
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.contact import ContactModel
@@ -24,9 +24,10 @@ from impactlab.dynamics.input_checks import (
     DROP_RTOL_MAX,
     PARTIAL_SLIP_RTOL_MAX,
     check_mu,
-    check_rtol,
     contact_reach,
+    degrees_hint,
     mu_problem,
+    warn_degrees,
 )
 from impactlab.dynamics.kernels import status as S
 from impactlab.dynamics.kernels.inputs import (
@@ -38,6 +39,8 @@ from impactlab.dynamics.kernels.inputs import (
     IN_SPIN,
     IN_VX,
     IN_VY,
+    RTOL_MAX,
+    RTOL_MIN,
     input_problem,
     problem_text,
 )
@@ -89,29 +92,44 @@ def refuse_rate(rate: Any, caller: str) -> None:
 
 def drop_rtol(rtol: Any, friction: FrictionModel | None = None) -> float:
     """The relative tolerance of a drop: ``rtol``, checked, or ``DROP_DEFAULT_RTOL`` for None;
-    at most ``DROP_RTOL_MAX`` (``input_checks``: beyond it the integrator creates energy and
-    contacts; the reviewed 70 deg drop of the paper's rod at rtol 5e-4 had 6 contacts instead
+    in [``RTOL_MIN``, ``DROP_RTOL_MAX``] = [1e-13, 1e-5], the drop's own range (the rigid
+    engine's reaches 1e-3; ``input_checks``: beyond 1e-5 the integrator creates energy and
+    contacts; the 70 deg drop of the paper's rod at rtol 5e-4 had 6 contacts instead
     of 2 and 4.8 % of E0 created), with ``friction`` partial slip ``PARTIAL_SLIP_RTOL_MAX``,
     the rigid engine's cap: the paper's drops at rtol 1e-5 keep the contacts of rtol 1e-9
     and e, the dent and the slip within 0.04 %, at 1e-3 the 20 deg one has 8 contacts
-    instead of 5 and an energy error of 9 %."""
-    r = check_rtol(rtol if rtol is not None else F.DROP_DEFAULT_RTOL)
+    instead of 5 and an energy error of 9 %. Every refusal names the drop's range (outside the
+    rigid engine's range too: "must lie in"; within it, above 1e-5: "too loose")."""
+    r = check_finite("rtol", rtol if rtol is not None else F.DROP_DEFAULT_RTOL)
+    allowed = f"[{RTOL_MIN:g}, {DROP_RTOL_MAX:g}]"
+    default = f"the drop's default is {F.DROP_DEFAULT_RTOL:g}"
+    if not RTOL_MIN <= r <= RTOL_MAX:  # outside every engine's range too
+        raise ValueError(f"rtol must lie in {allowed} for a drop ({default}), got {float(r)!r}")
     partial_slip = friction is not None and friction.kind is FrictionKind.PARTIAL_SLIP
     if partial_slip and r > PARTIAL_SLIP_RTOL_MAX:
         raise ValueError(
             f"rtol {r:g} is too loose for friction 'partial_slip' (allowed: up to "
-            f"{PARTIAL_SLIP_RTOL_MAX:g}, as in the rigid engine; the drop's default is "
-            f"{F.DROP_DEFAULT_RTOL:g}): beyond it the Mindlin-Deresiewicz cells' events "
-            "outrun the steps and the contacts and the energy balance go wrong"
+            f"{PARTIAL_SLIP_RTOL_MAX:g}, as in the rigid engine; {default}): beyond it the "
+            "Mindlin-Deresiewicz cells' events outrun the steps and the contacts and the energy "
+            "balance go wrong"
         )
     if r > DROP_RTOL_MAX:
         raise ValueError(
-            f"rtol {r:g} is too loose for a drop (allowed: up to {DROP_RTOL_MAX:g}; the "
-            f"drop's default is {F.DROP_DEFAULT_RTOL:g}): beyond it the integrator's error no "
-            "longer shrinks with rtol, it creates energy and contacts that a tighter rtol "
-            "does not have"
+            f"rtol {r:g} is too loose for a drop (allowed: up to {DROP_RTOL_MAX:g}, a drop's "
+            f"rtol in {allowed}; {default}): beyond it the integrator's error no longer "
+            "shrinks with rtol, it creates energy and contacts that a tighter rtol does not have"
         )
     return r
+
+
+#: The status messages of a drop (``kernels.status.STATUS_MESSAGES``), ST_BAD_INPUT's with the
+#: drop's own rtol range, [1e-13, 1e-5] (the table gives every engine's, up to 1e-3): the
+#: meanings of a drop batch's status codes.
+DROP_STATUS_MESSAGES: dict[int, str] = S.STATUS_MESSAGES | {
+    S.ST_BAD_INPUT: S.STATUS_MESSAGES[S.ST_BAD_INPUT].replace(
+        "rtol in [1e-13, 1e-3]", "rtol in [1e-13, 1e-5] for a drop"
+    )
+}
 
 
 def check_stop(stop: Any, t_max: Any) -> tuple[float, int]:
@@ -160,7 +178,8 @@ def case_problem(
         code = S.ST_BAD_ANGLE if problem == IN_ANGLE else S.ST_BAD_INPUT
         if problem == IN_MU:  # in the words of simulate_drop's ValueError
             return code, mu_problem(mu)
-        return code, problem_text(problem, values[problem])
+        hint = degrees_hint(th) if problem == IN_ANGLE else ""  # 20 meant as 20 deg
+        return code, problem_text(problem, values[problem]) + hint
     vn = vy - w * half_length * math.cos(th)
     if not vn < 0.0:
         return S.ST_NOT_APPROACHING, (
@@ -176,10 +195,12 @@ def case_problem(
 
 
 def input_problems(
-    rod: Rod, cols: Mapping[str, np.ndarray], gravity: float, rtol: float
+    rod: Rod, cols: Mapping[str, np.ndarray], gravity: float, rtol: float, *, warn: bool = True
 ) -> tuple[np.ndarray, dict[int, str]]:
     """The status of each case's inputs (``cols``: the columns of ``CASE_INPUTS``; 0: runs) and,
-    by case index, why each refused one is refused (``case_problem``)."""
+    by case index, why each refused one is refused (``case_problem``); ``warn``: an
+    ImplausibleInputWarning when every angle refused (ST_BAD_ANGLE) reads as degrees
+    (``input_checks.warn_degrees``)."""
     reach = contact_reach(rod)
     columns = (np.asarray(cols[k], dtype=np.float64).tolist() for k in CASE_INPUTS)
     status = []
@@ -189,15 +210,18 @@ def input_problems(
         status.append(code)
         if code != S.ST_OK:
             why[i] = text
-    return np.array(status, dtype=np.int32), why
+    codes = np.array(status, dtype=np.int32)
+    if warn:
+        warn_degrees(np.asarray(cols["angle"], dtype=np.float64)[codes == S.ST_BAD_ANGLE])
+    return codes, why
 
 
 def input_status(
     rod: Rod, cols: Mapping[str, np.ndarray], gravity: float, rtol: float
 ) -> np.ndarray:
     """The status of each case's inputs as ``simulate_drop`` refuses them (0: runs;
-    ``case_problem``)."""
-    return input_problems(rod, cols, gravity, rtol)[0]
+    ``case_problem``; no warning: the caller words its refusals)."""
+    return input_problems(rod, cols, gravity, rtol, warn=False)[0]
 
 
 class DropError(ValueError):

@@ -9,6 +9,7 @@ one table of impacts and drops: ``schema.unit(name)``, ``schema.description(name
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass, field, fields
 from typing import Any, ClassVar
 
@@ -26,7 +27,7 @@ from impactlab.dynamics.history import DentMap
 from impactlab.dynamics.input_checks import check_dent_grid
 from impactlab.dynamics.pint_fields import pint_quantities
 from impactlab.dynamics.provenance import result_record
-from impactlab.dynamics.result_display import ResultDisplay, field_hint
+from impactlab.dynamics.result_display import BATCH_ONLY_NAMES, ResultDisplay, field_hint
 from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
 from impactlab.materials import body_yields_first
 from impactlab.references import Reference
@@ -47,7 +48,7 @@ UNITS: dict[str, str] = {
         "rate_factor", "strain_rate", "sequence_mean_force", "flags", "max_delta_ratio",
         "fitted_delta_ratio_max",
     )
-}  # fmt: skip
+} | {"n_dents": "1"}  # fmt: skip
 
 #: The totals of a drop's summary, in order: ``print(result)``, ``_repr_html_`` and
 #: ``impactlab drop`` show these (display units: ``impactlab._display``).
@@ -155,6 +156,7 @@ class DropResult(DerivedOutputs, ResultDisplay):
     REPR_FIELDS: ClassVar[tuple[str, ...]] = (
         "body", "law", "friction", "n_contacts", "e", "dent_depth", "sequence_duration",
     )  # fmt: skip
+    BATCH_ONLY: ClassVar[Mapping[str, str]] = BATCH_ONLY_NAMES
 
     contacts: tuple[ContactRecord, ...]
     dents: tuple[DentRecord, ...]
@@ -216,6 +218,12 @@ class DropResult(DerivedOutputs, ResultDisplay):
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "flags", ResultFlag(int(self.flags)))
+
+    @property
+    def n_dents(self) -> int:
+        """The number of dents the drop left on the flat, ``len(dents)`` (a contact on a dent
+        already made adds none; ``simulate_drops``' column of the same name)."""
+        return len(self.dents)
 
     @property
     def sequence_mean_force(self) -> float:
@@ -341,6 +349,7 @@ class DropResult(DerivedOutputs, ResultDisplay):
         d["body_yields_first"] = self.body_yields_first
         d["contacts"] = [c.__dict__ for c in self.contacts]
         d["dents"] = [x.__dict__ for x in self.dents]
+        d["n_dents"] = self.n_dents
         d["extrapolated"] = self.extrapolated
         d["flags"] = int(self.flags)
         d["ok"] = bool(self.ok)

@@ -98,17 +98,17 @@ def flag_attrs() -> dict[str, Any]:
     }
 
 
-def status_attrs() -> dict[str, Any]:
-    """The attributes of a ``status`` variable: the codes and their messages (CF
-    ``flag_values``/``flag_meanings``)."""
-    codes = sorted(STATUS_MESSAGES)
+def status_attrs(texts: Mapping[int, str] = STATUS_MESSAGES) -> dict[str, Any]:
+    """The attributes of a ``status`` variable: the codes and their ``texts`` (CF
+    ``flag_values``/``flag_meanings``; a drop's name its own rtol range)."""
+    codes = sorted(texts)
     return {
         "long_name": "engine status of the case (0: finished, the flags say if ok; "
         "other codes: no result, NaN outputs)",
         "flag_values": codes,
         "flag_meanings": " ".join(f"status_{c}" for c in codes),
         # status 0 reads "finished", as in a sweep store: whether a result is ok is the flags'
-        "status_messages": ["finished" if c == 0 else STATUS_MESSAGES[c] for c in codes],
+        "status_messages": ["finished" if c == 0 else texts[c] for c in codes],
     }
 
 

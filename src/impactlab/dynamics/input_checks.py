@@ -226,6 +226,20 @@ def degrees_hint(th: float) -> str:
     )
 
 
+def warn_degrees(refused: np.ndarray) -> None:
+    """An ImplausibleInputWarning, once per batch, when every angle it refused (``refused``
+    [rad], outside (0, pi/2]) lies in (pi/2 + ``PAST_NORMAL``, 90]: bare numbers in degrees
+    (:func:`degrees_hint`), which fail case by case (status 7) otherwise."""
+    if refused.size == 0 or not all(degrees_hint(float(th)) for th in refused):
+        return
+    warn_implausible(
+        f"angle: every refused angle ({refused.size} case(s), {float(refused.min()):g} to "
+        f"{float(refused.max()):g}) lies in (pi/2 + {math.degrees(PAST_NORMAL):g} deg, 90]: "
+        "degrees? a bare angle is radians, as every bare number of the Python API is SI; pass "
+        "np.radians(...), a Quantity or strings such as '20 deg'"
+    )
+
+
 def past_normal(th: float, deg: bool) -> str:
     """What a rod's angle ``th`` [rad] in (pi/2, pi) means (``deg``: said in degrees)."""
     m = math.pi - th
@@ -373,5 +387,5 @@ __all__ = [
     "check_mu", "check_partial_slip_cells",
     "check_partial_slip_rtol", "check_rtol", "check_speed", "check_spin", "check_velocity",
     "contact_reach", "degrees_hint", "given_body", "gravity_value", "mu_problem", "past_normal",
-    "velocity_from", "warn_fast",
+    "velocity_from", "warn_degrees", "warn_fast",
 ]  # fmt: skip

@@ -18,7 +18,7 @@ from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.contact import ContactModel
 from impactlab.materials import ContactPair, Material
 
-__all__ = ["UNITS", "decode", "encode", "key_form", "quantity"]
+__all__ = ["OPTIONAL_FIELDS", "UNITS", "decode", "encode", "key_form", "quantity"]
 
 #: The classes a record may name, by ``type``.
 _TYPES: dict[str, type] = {
@@ -81,9 +81,14 @@ def decode(data: Any, key: str = "", units: Mapping[str, str] | None = None) -> 
     """The Python values of :func:`encode`'s data: quantity objects to numbers (or lists) in
     the unit :func:`encode` writes for their key (``units``, default ``UNITS``; a field of
     unknown unit in SI), converted from the unit the object names (a record edited by hand
-    may say ``{"value": 5, "unit": "mm"}``); ``{"type": ...}`` to the named class.
-    ValueError for an unknown type, an unknown unit or a unit of the wrong dimension."""
-    units = UNITS if units is None else units
+    may say ``{"value": 5, "unit": "mm"}``); ``{"type": ...}`` to the named class, which must
+    hold every field :func:`encode` writes for it (``OPTIONAL_FIELDS`` aside). ValueError for
+    an unknown type, a missing field, an unknown unit or a unit of the wrong dimension."""
+    return _decode(data, key, UNITS if units is None else units, key)
+
+
+def _decode(data: Any, key: str, units: Mapping[str, str], path: str) -> Any:
+    """:func:`decode`; ``path``: where ``data`` lies in the record (``body.material``)."""
     if isinstance(data, Mapping):
         if "value" in data and "unit" in data:
             return _quantity_value(data, key, units)
@@ -92,11 +97,15 @@ def decode(data: Any, key: str = "", units: Mapping[str, str] | None = None) -> 
             cls = _TYPES.get(name)
             if cls is None:
                 raise ValueError(f"unknown type {name!r} in the record; known: {sorted(_TYPES)}")
-            fields = {k: decode(v, k) for k, v in data.items() if k != "type"}
-            return _build(cls, fields)
-        return {k: decode(v, k, units) for k, v in data.items()}
+            fields = {
+                k: _decode(v, k, UNITS, f"{path}.{k}" if path else k)
+                for k, v in data.items()
+                if k != "type"
+            }
+            return _build(cls, fields, path)
+        return {k: _decode(v, k, units, f"{path}.{k}" if path else k) for k, v in data.items()}
     if isinstance(data, list):
-        return [decode(v, key, units) for v in data]
+        return [_decode(v, key, units, path) for v in data]
     return data
 
 
@@ -133,24 +142,41 @@ def _converted(value: Any, unit: Any, want: str, key: str) -> Any:
     return [float(x) for x in m] if isinstance(value, list) else float(m)
 
 
-def _build(cls: type, values: dict[str, Any]) -> Any:
-    """``cls(**values)`` of a record (a Sphere takes its mass; the density follows)."""
+#: The fields a record's object may leave out, by class; every other field of ``__init__`` that
+#: :func:`encode` writes is required, so that a rerun never runs on a default (a body's
+#: ``damping``, ``n_bending`` or ``material`` left out would run another rod). A
+#: ``ContactModel`` is rebuilt from its compiled parameters (``name``, ``law_id``, ``params``):
+#: its ``details``, ``source`` and ``references`` only describe it. Records began with format 1
+#: (no released version wrote an earlier one), and each holds every field of its classes; a
+#: field added later belongs here only for the records whose version predates it.
+OPTIONAL_FIELDS: dict[type, frozenset[str]] = {
+    ContactModel: frozenset({"details", "source", "references"}),
+}
+
+
+def _build(cls: type, values: dict[str, Any], path: str = "") -> Any:
+    """``cls(**values)`` of a record (a Sphere takes its mass; the density follows); ``path``:
+    where the object lies in the record (``body``, ``body.material``), for the errors."""
+    fields = [f for f in dataclasses.fields(cls) if f.init]
+    known = {f.name for f in fields}
+    unknown = sorted(set(values) - known)
+    where = f"the record's {path} {cls.__name__}" if path else f"the record's {cls.__name__}"
+    if unknown:
+        raise ValueError(
+            f"{where} has field(s) {unknown} this impactlab does not know; known: {sorted(known)}"
+        )
+    optional = OPTIONAL_FIELDS.get(cls, frozenset())
+    written = [f.name for f in fields if not f.name.startswith("_") and f.name not in optional]
+    if lacking := [k for k in written if k not in values]:
+        forms = ", ".join(key_form(k) for k in lacking)
+        raise ValueError(
+            f"{where} lacks {forms}: every record of the format holds each, and a rerun "
+            "without one would run on a default, not as recorded (docs/json-schema.md)"
+        )
     if cls is ContactModel:
         values = {k: v for k, v in values.items() if k in ("name", "law_id", "params", "details")}
     if cls is Sphere and values.get("mass") is not None:
         values.pop("density", None)  # one of the two; the mass is what the dynamics use
-    fields = [f for f in dataclasses.fields(cls) if f.init]
-    known = {f.name for f in fields}
-    unknown = sorted(set(values) - known)
-    if unknown:
-        raise ValueError(
-            f"the record's {cls.__name__} has field(s) {unknown} this impactlab does not know; "
-            f"known: {sorted(known)}"
-        )
-    required = [f.name for f in fields if f.default is f.default_factory is dataclasses.MISSING]
-    if lacking := [k for k in required if k not in values]:  # a field without a default
-        forms = ", ".join(key_form(k) for k in lacking)
-        raise ValueError(f"the record's {cls.__name__} lacks {forms}: every record holds it")
     return cls(**values)
 
 

@@ -13,7 +13,7 @@ from typing import Any, ClassVar
 from impactlab._display import field_rows, html_table, text_table
 from impactlab.schema import DERIVED_FIELDS
 
-__all__ = ["RESULT_NAMES", "ResultDisplay", "field_hint"]
+__all__ = ["BATCH_ONLY_NAMES", "RESULT_NAMES", "ResultDisplay", "field_hint"]
 
 #: A batch's column (``BatchResult``, ``DropBatchResult``) -> where a one-impact result holds
 #: the same quantity (a pair of velocities as one field).
@@ -25,17 +25,29 @@ RESULT_NAMES: dict[str, str] = {
     "vy_out": "velocity_out[1]",
 }
 
+#: A drop batch's column that one ``DropResult`` does not hold -> where to read it instead
+#: (``DropResult.BATCH_ONLY``).
+BATCH_ONLY_NAMES: dict[str, str] = {
+    "t_final": "history.t[-1] of a drop run with its history (sequence_duration ends at the "
+    "last separation); per case: simulate_drops(...).t_final",
+    "n_jumps": "a cost counter of the integrator beside n_steps; per case: "
+    "simulate_drops(...).n_jumps",
+}
+
 
 def field_hint(result: object, name: str, error: AttributeError) -> AttributeError:
     """``error`` (the AttributeError of ``result.name``) with the result's field of a batch's
-    column (:data:`RESULT_NAMES`: ``vx_out -> velocity_out[0]``); ``error`` for another name."""
+    column (:data:`RESULT_NAMES`: ``vx_out -> velocity_out[0]``), or where to read a batch's
+    column that the result does not hold (its class's ``BATCH_ONLY``: a drop's ``t_final``);
+    ``error`` for another name."""
+    head = f"{type(result).__name__!r} object has no attribute {name!r} (a batch's column; "
     where = RESULT_NAMES.get(name)
-    if where is None:
-        return error
-    return AttributeError(
-        f"{type(result).__name__!r} object has no attribute {name!r} (a batch's column; "
-        f"in one result: {name} -> {where})"
-    )
+    if where is not None:
+        return AttributeError(f"{head}in one result: {name} -> {where})")
+    instead = getattr(type(result), "BATCH_ONLY", {}).get(name)
+    if instead is not None:
+        return AttributeError(f"{head}one result does not hold it: {instead})")
+    return error
 
 
 class ResultDisplay:
@@ -65,6 +77,9 @@ class ResultDisplay:
     def detail_rows(self) -> list[tuple[str, str, str]]:
         """``(label, text, unit)`` rows shown after the summary (none by default)."""
         return []
+
+    #: A batch's column that one result does not hold -> where to read it (``field_hint``).
+    BATCH_ONLY: ClassVar[Mapping[str, str]] = {}
 
     #: The fields of the one-line ``repr``, in order (each class names its own).
     REPR_FIELDS: ClassVar[tuple[str, ...]] = ()

@@ -30,10 +30,12 @@ from impactlab.dynamics.input_checks import (
     check_constant_angle,
     check_flat,
     check_partial_slip_cells,
+    contact_reach,
     gravity_value,
     warn_fast,
 )
 from impactlab.dynamics.kernels import layout as L
+from impactlab.dynamics.kernels.inputs import MAX_ANGLE, MAX_MU, MAX_SPEED
 from impactlab.dynamics.kernels.status import (
     ST_BAD_ANGLE,
     ST_BAD_INPUT,
@@ -92,16 +94,26 @@ def _batch_inputs(inputs: dict[str, Any], body: Rod | Sphere) -> dict[str, np.nd
 
 
 def _fastest(cols: Mapping[str, np.ndarray], body: Rod | Sphere) -> float:
-    """The largest speed [m/s] over the cases whose inputs are finite: of the centre of mass,
+    """The largest speed [m/s] over the cases that run, those whose inputs keep every
+    per-case rule (``kernels.inputs``: finite, velocity components and the spin's contact
+    point speed up to ``MAX_SPEED``, mu in [0, ``MAX_MU``], a rod's angle in (0, pi/2]; a
+    refused case is said in its status, not in this warning): of the centre of mass,
     hypot(vx, vy), or of the contact point, hypot(vx + spin b, vy - spin a) with the body's
     lever arms at each case's angle (``bodies.geometry.lever_arms``; a sphere's a = 0, b = R),
-    as ``simulate`` takes it for one impact; 0 when no case is finite."""
-    vx, vy, w, th = cols["vx"], cols["vy"], cols["spin"], cols["angle"]
+    as ``simulate`` takes it for one impact; 0 when no case runs."""
+    vx, vy, w, th = (cols[k] for k in ("vx", "vy", "spin", "angle"))
     with np.errstate(invalid="ignore", over="ignore"):
         a, b = lever_arms(body.half_length, body.tip_radius, th)
         speed = np.maximum(np.hypot(vx, vy), np.hypot(vx + w * b, vy - w * a))
-    finite = np.isfinite(vx) & np.isfinite(vy) & np.isfinite(w) & np.isfinite(th)
-    return float(np.max(speed[finite & np.isfinite(speed)], initial=0.0))
+        # kernels.inputs.speed_allowed and spin_allowed, elementwise
+        reach = contact_reach(body)
+        runs = (np.abs(vx) <= MAX_SPEED) & (np.abs(vy) <= MAX_SPEED)
+        runs &= np.abs(w) * reach <= MAX_SPEED
+        if "mu" in cols:  # kernels.inputs.mu_allowed, elementwise
+            runs &= (cols["mu"] >= 0.0) & (cols["mu"] <= MAX_MU)
+        if isinstance(body, Rod):
+            runs &= (th > 0.0) & (th <= MAX_ANGLE)  # kernels.inputs.angle_allowed, elementwise
+    return float(np.max(speed[runs & np.isfinite(speed)], initial=0.0))
 
 
 @refuse_unknown_keywords(BATCH_KEYWORD_NOTES)
