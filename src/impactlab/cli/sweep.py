@@ -224,6 +224,11 @@ def uncertainty_cmd(
                 f"sweep store {str(source)!r} does not exist: give a Monte Carlo study file "
                 "(TOML) or the Zarr store it ran into"
             )
+        if source.is_file() and source.suffix.lower() in _EXPORTS:
+            raise UserError(
+                f"{str(source)!r} is a file, not a sweep store (a folder written by impactlab "
+                "sweep): give a Monte Carlo study file (TOML) or the Zarr store it ran into"
+            )
         check_run_paths(out, None)
         check_uncertainty_study(source, max_cases)  # before any case is computed
         where = Where(out, scheduler, workers, max_cases)
@@ -236,6 +241,10 @@ def uncertainty_cmd(
         raise
     except ValueError as exc:  # the API's words for an output: named as --output
         raise UserError(_output_worded(str(exc))) from None
+
+
+#: The suffixes of a sweep's exports (NetCDF, CSV): files that are neither a study nor a store.
+_EXPORTS = (".nc", ".nc4", ".csv")
 
 
 #: ``uncertainty_reports``' refusals of the outputs asked for (``impactlab.sweep.uncertainty``).

@@ -19,7 +19,8 @@ Files are atomic: a ``*.partial`` name first, then a rename (a writer killed mid
 from __future__ import annotations
 
 import os
-from collections.abc import Sequence
+import shutil
+from collections.abc import Callable, Sequence
 from contextlib import suppress
 from pathlib import Path
 from typing import Any, cast
@@ -129,6 +130,19 @@ def _write_file(path: str, data: Any) -> None:
         raise
 
 
+def _unless_folder(path: str, action: Callable[..., None], *args: Any) -> None:
+    """``action(*args)`` on the chunk file ``path``; where a folder stands in its place (made
+    there by hand: the chunk reads as damaged), the folder is removed first and it is done
+    again."""
+    try:
+        action(*args)
+    except OSError:
+        if not os.path.isdir(path):
+            raise
+        shutil.rmtree(path)
+        action(*args)
+
+
 class ChunkWriter:
     """Arrays ``names`` of the store at ``path`` opened for ``SweepStore.write_chunk``."""
 
@@ -158,13 +172,13 @@ class ChunkWriter:
         data = a.encode(a.chunk(selection, values))
         if data is None:
             with suppress(FileNotFoundError):
-                os.unlink(path)
+                _unless_folder(path, os.unlink, path)
             return key, None
         folder = os.path.dirname(path)
         if folder not in self._dirs:
             os.makedirs(folder, exist_ok=True)
             self._dirs.add(folder)
-        _write_file(path, data)
+        _unless_folder(path, _write_file, path, data)
         return key, digest(data)
 
     def close(self) -> None:

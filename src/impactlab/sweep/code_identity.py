@@ -7,7 +7,10 @@ store's engine identity therefore carries ``results_code_hash``: the SHA-256 of 
 engine's sources (``ENGINE_SOURCES``), of the Python code around it that turns inputs into a
 case's outputs and flags (dynamics, bodies, materials, friction, the sweep's evaluators), and of
 the data the laws read (the FE curves of the tabulated laws, the laws' verified ranges).
-Presentation (plots, display, the CLI, the docs) is not part of it.
+Presentation is not part of it: the CLI, the docs, the sweep's plots and reports, and the
+modules of those folders that only show a result (``PRESENTATION``: no code of theirs runs
+while a sweep computes its cases, tests/sweep/test_code_identity_scope.py), so editing them
+leaves every store resumable.
 """
 
 from __future__ import annotations
@@ -17,9 +20,10 @@ from pathlib import Path
 
 from impactlab._compiled_cache import ENGINE_SOURCES, source_hash
 
-__all__ = ["RESULT_SOURCES", "results_code_hash"]
+__all__ = ["PRESENTATION", "RESULT_SOURCES", "result_files", "results_code_hash"]
 
-#: Everything, relative to the package, whose change can change a stored case's outputs.
+#: Everything, relative to the package, whose change can change a stored case's outputs (a
+#: folder: its ``.py`` files, less ``PRESENTATION``).
 RESULT_SOURCES = (
     *ENGINE_SOURCES,
     "dynamics",
@@ -37,8 +41,28 @@ RESULT_SOURCES = (
     "sweep/material_record.py",
 )
 
+#: The modules inside ``RESULT_SOURCES``' folders that only present a result: left out.
+PRESENTATION = (
+    "dynamics/result_display.py",  # repr, print and HTML of a result
+    "dynamics/plotting.py",  # figures of one impact
+    "dynamics/keyword_hints.py",  # the words of an error about a velocity's keywords
+    "dynamics/pint_fields.py",  # a result's fields as pint Quantities
+)
+
+
+def result_files(package: Path) -> tuple[str, ...]:
+    """The files of ``RESULT_SOURCES`` under ``package`` (relative, a folder's ``.py`` files
+    sorted), less ``PRESENTATION``."""
+    names: list[str] = []
+    for name in RESULT_SOURCES:
+        path = package / name
+        found = sorted(path.rglob("*.py")) if path.is_dir() else [path]
+        names.extend(f.relative_to(package).as_posix() for f in found)
+    return tuple(n for n in names if n not in PRESENTATION)
+
 
 @cache
 def results_code_hash() -> str:
-    """``source_hash`` (16 hex digits) of ``RESULT_SOURCES`` as installed, computed once."""
-    return source_hash(Path(__file__).resolve().parent.parent, RESULT_SOURCES)
+    """``source_hash`` (16 hex digits) of ``result_files`` as installed, computed once."""
+    package = Path(__file__).resolve().parent.parent
+    return source_hash(package, result_files(package))

@@ -104,7 +104,10 @@ def check_marker(root: Path, text: str) -> str | None:
     if not isinstance(files, dict):
         return "unreadable completion marker"
     for key, want in sorted(files.items()):
-        got = file_digest(root / key)
+        try:
+            got = file_digest(root / key)
+        except IsADirectoryError:
+            return f"{key}: a folder, not a file"
         if got == want:
             continue
         if got is None:
@@ -230,7 +233,9 @@ def _array_problem(name: str, why: str, results: tuple[str, ...]) -> str:
 def check_metadata(path: str | Path) -> None:
     """CorruptStoreError unless the root and every sub-folder (an array, ``.sweep``) of the
     store at ``path`` have a ``zarr.json`` that reads as Zarr v3 metadata (the chunks' data is
-    checked by ``SweepStore.verify``). RepairableStoreError (a CorruptStoreError) when only
+    checked by ``SweepStore.verify``; a folder that is none of the store's nodes and holds no
+    ``zarr.json``, such as ``.ipynb_checkpoints``, is ignored, as a plain file is).
+    RepairableStoreError (a CorruptStoreError) when only
     metadata that follows from the study is gone, unreadable or no longer matches the study
     (that of a result array, or of an array or group the store was built with: its data type,
     shape, chunks, fill value, dimension names, ...; a root without the study's attributes) or
@@ -257,6 +262,9 @@ def check_metadata(path: str | Path) -> None:
     damaged = {n: "is missing" for n in results if not (root / n / "zarr.json").exists()}
     for node in sorted(d for d in root.iterdir() if d.is_dir() and d.name not in damaged):
         f = node / "zarr.json"
+        part = node.name in results or node.name in built or node.name == ".sweep"
+        if not part and not f.exists():
+            continue  # not a Zarr node of the store (.ipynb_checkpoints, plots/): ignored
         why = _node_problem(f) if f.exists() else "is missing"
         if why is None and (node.name in results or node.name in built):
             why = mismatch(node.name, _json_object(f), built.get(node.name), attrs, results)

@@ -4,8 +4,9 @@ cases not computed yet. The engine's own codes are small non-negative integers
 
 A chunk without its completion marker (``.sweep/done/<k>``: cut short before it, or the marker
 deleted) is computed again on resume; until then its cases read as not computed (status -1),
-whatever its files hold, in ``open_sweep``, an export, the uncertainty report and ``sweep info``
-alike (:func:`mask_undone`)."""
+whatever its files hold, and its outputs read as no result (NaN; -1 for an integer output), in
+``open_sweep``, an export, the uncertainty report and ``sweep info`` alike
+(:func:`mask_undone`)."""
 
 from __future__ import annotations
 
@@ -66,31 +67,42 @@ def undone_cases(
 
 
 def mask_undone(ds: xr.Dataset, done: Iterable[int]) -> xr.Dataset:
-    """``ds`` with the status of every case outside the chunks ``done`` (the store's chunking:
-    ``status``'s Zarr chunks) read as -1, lazily, block by block for a Dask-backed Dataset;
-    ``ds`` itself when every chunk is done."""
+    """``ds`` with every case outside the chunks ``done`` (the store's chunking: ``status``'s
+    Zarr chunks; indices outside the chunk grid are ignored) read as not computed, lazily,
+    block by block for a Dask-backed Dataset: ``status`` -1, and every other variable over the
+    cases NaN (-1 for an integer one: ``regime``, ``n_steps``, ``flags``); ``ds`` itself when
+    every chunk is done."""
     if "status" not in ds.data_vars:
         return ds
     status = ds["status"]
     shape = tuple(int(n) for n in status.shape)
     chunks = tuple(int(c) for c in status.encoding.get("chunks") or shape)
-    done = sorted(set(done))
     grid = [-(-n // c) for n, c in zip(shape, chunks, strict=True)]
-    if len(done) >= int(np.prod(grid, dtype=np.int64)):
+    n_chunks = int(np.prod(grid, dtype=np.int64))
+    done = sorted(k for k in set(done) if 0 <= k < n_chunks)
+    if len(done) >= n_chunks:
         return ds
+    masked = {
+        str(name): var.copy(data=_masked_data(var.data, chunks, shape, done))
+        for name, var in ds.data_vars.items()
+        if var.dims == status.dims and var.dtype.kind in "fci"
+    }
+    return ds.assign(masked)
+
+
+def _masked_data(data: Any, chunks: Sequence[int], shape: Sequence[int], done: list[int]) -> Any:
+    """``data`` (a NumPy or Dask array over the cases) with the cases outside the chunks
+    ``done`` set to NaN (floats) or -1 (integers)."""
+    fill = np.nan if np.dtype(data.dtype).kind in "fc" else STATUS_NOT_RUN
 
     def masked(values: np.ndarray, region: Sequence[slice]) -> np.ndarray:
-        return np.where(undone_cases(region, chunks, shape, done), STATUS_NOT_RUN, values).astype(
-            values.dtype
-        )
+        undone = undone_cases(region, chunks, shape, done)
+        return np.where(undone, fill, values).astype(values.dtype)
 
     def block(values: np.ndarray, block_info: Any = None) -> np.ndarray:
         region = [slice(a, b) for a, b in block_info[0]["array-location"]]
         return masked(values, region)
 
-    data = status.data
     if hasattr(data, "map_blocks"):  # dask
-        new = data.map_blocks(block, dtype=data.dtype)
-    else:
-        new = masked(np.asarray(data), [slice(0, n) for n in shape])
-    return ds.assign(status=status.copy(data=new))
+        return data.map_blocks(block, dtype=data.dtype)
+    return masked(np.asarray(data), [slice(0, n) for n in shape])

@@ -19,8 +19,10 @@ says a directory is a store: :mod:`~impactlab.sweep.store_siblings`.
 
 from __future__ import annotations
 
+import json
 import os
 import shutil
+import warnings
 from collections.abc import Iterable, Mapping, Sequence
 from pathlib import Path
 from typing import Any
@@ -101,8 +103,20 @@ class SweepStore:
         )
 
     def done_chunks(self) -> set[int]:
-        """Indices of the chunks whose completion marker exists (intact or not: ``verify``)."""
-        return markers.done_chunks(self.path)
+        """Indices of the chunks whose completion marker exists (intact or not: ``verify``),
+        among the store's chunks (a stray marker such as ``done/99`` of a 3-chunk store is
+        not one of them)."""
+        marked = markers.done_chunks(self.path)
+        total = self._n_chunks()
+        return marked if total is None else {k for k in marked if k < total}
+
+    def _n_chunks(self) -> int | None:
+        """The number of chunks the root attributes give (None where they cannot be read)."""
+        try:
+            total = json.loads((self.path / "zarr.json").read_bytes())["attributes"]["n_chunks"]
+        except (OSError, ValueError, KeyError, TypeError):
+            return None
+        return total if isinstance(total, int) and not isinstance(total, bool) else None
 
     def mark_done(self, index: int, text: str) -> None:
         """Create chunk ``index``'s completion marker (content ``text``) atomically (the markers'
@@ -307,6 +321,14 @@ class SweepStore:
         return open_sweep(self.path)
 
 
+def open_dataset(path: Path) -> xr.Dataset:
+    """The store at ``path`` as xarray opens it, unchecked and unmasked; a folder that is not a
+    Zarr node (``check_metadata`` ignores it) is passed over without Zarr's warning."""
+    with warnings.catch_warnings():
+        warnings.filterwarnings("ignore", "Object at .* is not recognized as a component")
+        return xr.open_zarr(str(path), consolidated=False)
+
+
 def open_sweep(path: str | Path, *, verify: bool = True) -> xr.Dataset:
     """Open a sweep store (lazy, dask-backed). Status messages: ``ds.attrs['status_messages']``.
 
@@ -324,7 +346,7 @@ def open_sweep(path: str | Path, *, verify: bool = True) -> xr.Dataset:
     if broken:
         raise defined_arrays_error(p, broken)
     try:
-        ds = xr.open_zarr(str(p), consolidated=False)
+        ds = open_dataset(p)
     except Exception as exc:  # what check_metadata cannot see; named, not a deep traceback
         raise CorruptStoreError(
             f"cannot open sweep store {str(p)!r}: {type(exc).__name__}: {exc}"

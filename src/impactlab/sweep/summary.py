@@ -11,7 +11,6 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
-import xarray as xr
 import zarr
 
 from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
@@ -21,7 +20,7 @@ from impactlab.sweep.inputs import get_input
 from impactlab.sweep.integrity import describe
 from impactlab.sweep.slabs import slabs, store_chunks
 from impactlab.sweep.status import STATUS_BAD_LAW, STATUS_NOT_RUN, mask_undone
-from impactlab.sweep.store import SweepStore, open_sweep
+from impactlab.sweep.store import SweepStore, open_dataset, open_sweep
 
 #: At most this many cases of a store are in memory at a time while they are counted.
 COUNT_BLOCK_CASES = 1 << 20
@@ -295,7 +294,7 @@ def result_counts(path: str | Path) -> tuple[dict[str, int], dict[str, int]]:
     """:func:`status_counts` and :func:`dataset_flag_counts` ({} for a store without ``flags``)
     of the store at ``path``, a block at a time, for the run that has just written (or
     checked) it: neither its metadata nor its chunks are checked again."""
-    ds = xr.open_zarr(str(path), consolidated=False)
+    ds = open_dataset(Path(path))
     ds = mask_undone(ds, SweepStore(Path(path)).done_chunks())
     flagged = dataset_flag_counts(ds) if "flags" in ds.data_vars else {}
     return status_counts(ds), flagged
