@@ -100,7 +100,8 @@ class Calibration:
         ``Measurements.conditions``);
         ``quantities`` (default: those measured in the calibration) are any measurable ones
         (``e``, ``delta_p``, ``max_force``, ...), predicted at ``draws`` posterior draws
-        (``seed``: an integer in [0, 2**32), or None for fresh draws);
+        (``seed``: an integer in [0, 2**32), or None for fresh draws; all the posterior holds,
+        with a ``CalibrationWarning``, when it holds fewer: ``summary()``'s ``n_draws``);
         ``DropPredictions.summary()`` gives each one's median and 90 % interval and the share of
         draws beyond the contact law's verified range (``extrapolated``, with a
         ``CalibrationWarning``); a drop whose every draw failed is warned about and named with its

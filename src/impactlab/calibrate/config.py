@@ -15,8 +15,9 @@
                                         # partial_slip_cells = 32 (friction partial_slip)
                                         # (or results.json's { value = 9.81, unit = "m/s^2" })
 
-``[[model]]`` tables (``law``, ``friction``, ``body``, ``rate``, ``name``, ``fixed``,
-``law_params``) may replace ``models`` where a model needs more than its law and friction; a
+``models`` may be one text (``models = "ghaednia/coulomb"``). ``[[model]]`` tables (``law``,
+``friction``, ``body``, ``rate``, ``name``, ``fixed``, ``law_params``; one ``[model]`` table
+is one model) may replace ``models`` where a model needs more than its law and friction; a
 misspelt key, or a ``fixed`` input that is unknown or out of range, is refused naming it.
 """
 
@@ -41,8 +42,9 @@ _ENGINE = set(ENGINE_OPTIONS)
 def load_config(path: str | Path) -> dict[str, Any]:
     """The keyword arguments of ``calibrate`` from a calibration file: measurements (a path),
     parameters, models and the sampler's and engine's settings. ValueError naming the file and
-    an unknown key, a sampler setting that is not an integer, a bad model table, or the file
-    when it is not UTF-8 text or not TOML."""
+    an unknown key, a sampler setting that is not an integer, models that are neither a list,
+    a text nor a table, a bad model table, or the file when it is not UTF-8 text or not
+    TOML."""
     p = Path(path)
     if p.is_dir():
         raise IsADirectoryError(f"calibration file {str(p)!r} is a directory; give the file")
@@ -63,7 +65,8 @@ def load_config(path: str | Path) -> dict[str, Any]:
     if not isinstance(params, dict):
         raise ValueError(f"{p}: [parameters] must be a table of name = prior")
     out["parameters"] = [parse_parameter(k, v) for k, v in params.items()]
-    models: list[Any] = list(doc.get("models", [])) + list(doc.get("model", []))
+    models = _listed(p, doc, "models", 'a list of model texts, e.g. ["ghaednia/coulomb"]')
+    models += _listed(p, doc, "model", '[[model]] tables (law = "ghaednia", friction = ...)')
     if models:
         try:
             out["models"] = [parse_model(m) for m in models]
@@ -77,6 +80,18 @@ def load_config(path: str | Path) -> dict[str, Any]:
         except ValueError as exc:
             raise ValueError(f"{p}: [engine] {exc}") from None
     return out
+
+
+def _listed(p: Path, doc: dict[str, Any], key: str, allowed: str) -> list[Any]:
+    """The models under ``key`` as a list: a list as it is, one model text or table alone
+    (``models = "ghaednia/coulomb"``, a single ``[model]`` table) as a list of it; ValueError
+    naming the key, its value and what is ``allowed`` for anything else."""
+    given = doc.get(key, [])
+    if isinstance(given, str | dict):
+        return [given]
+    if not isinstance(given, list):
+        raise ValueError(f"{p}: {key} must be {allowed}, got {given!r}")
+    return given
 
 
 def _table(p: Path, doc: dict[str, Any], name: str, keys: set[str]) -> dict[str, Any]:

@@ -50,10 +50,11 @@ class DropPredictions:
 
     def summary(self) -> list[dict[str, Any]]:
         """One row per drop and quantity: drop, quantity, unit (SI), median, q05, q95 (the 90 %
-        interval of the predictions over the draws that ran), failed (the share of draws whose
-        case failed), extrapolated (the share of the draws that ran whose contact law was used
-        beyond its verified range; NaN when none ran or not known) and, when some failed,
-        reason (the commonest; a refused case's names the refusal)."""
+        interval of the predictions over the draws that ran), n_draws (the posterior draws
+        predicted: ``draws``, or all the posterior holds when it holds fewer), failed (the
+        share of draws whose case failed), extrapolated (the share of the draws that ran
+        whose contact law was used beyond its verified range; NaN when none ran or not known)
+        and, when some failed, reason (the commonest; a refused case's names the refusal)."""
         rows = []
         for d, label in enumerate(self.labels):
             st = self.status[:, d]
@@ -66,7 +67,8 @@ class DropPredictions:
                 )
                 row = {"drop": label, "quantity": q, "unit": MEASURABLE[q].unit,
                        "median": float(med), "q05": float(q05), "q95": float(q95),
-                       "failed": failed, "extrapolated": extrapolated}  # fmt: skip
+                       "n_draws": int(st.size), "failed": failed,
+                       "extrapolated": extrapolated}  # fmt: skip
                 if failed > 0:
                     row["reason"] = self.reason(d)
                 rows.append(row)
@@ -106,16 +108,16 @@ def predict_drops(
     records or a file, read by ``Measurements.conditions``; one record alone is one drop) under
     ``model`` (a calibrated model's name; None: the first of ``posteriors``, the best-ranked) at
     ``draws`` posterior draws chosen at random (``seed``: an integer in [0, 2^32), or None for
-    fresh entropy; all of them when there are fewer), with the calibration's ``settings`` (each
-    model's definition, the engine options). ValueError naming a model that was not
-    calibrated, a quantity the model does not predict, a draws count below 1, a seed that is
-    not such an integer, conditions that are no records, and drops without mu where mu was not
-    calibrated; as ``calibrate`` (``input_checks``), ValueError for a drop on another material
-    than the ``calibrated`` drops (the calibration's measurements) where a property of that
-    material was calibrated, and for a rod of another material or length without its mass,
-    and a CalibrationWarning for a drop's value of a calibrated parameter (the posterior draws
-    replace it), for ok cases whose contact law was extrapolated (advisory, kept) and for a
-    drop whose every draw failed."""
+    fresh entropy; all of them, with a CalibrationWarning, when there are fewer), with the
+    calibration's ``settings`` (each model's definition, the engine options). ValueError
+    naming a model that was not calibrated, a quantity the model does not predict, a draws
+    count below 1, a seed that is not such an integer, conditions that are no records, and
+    drops without mu where mu was not calibrated; as ``calibrate`` (``input_checks``),
+    ValueError for a drop on another material than the ``calibrated`` drops (the
+    calibration's measurements) where a property of that material was calibrated, and for a
+    rod of another material or length without its mass, and a CalibrationWarning for a drop's
+    value of a calibrated parameter (the posterior draws replace it), for ok cases whose
+    contact law was extrapolated (advisory, kept) and for a drop whose every draw failed."""
     name = model if model is not None else next(iter(posteriors))
     if name not in posteriors:
         raise ValueError(f"model {name!r} was not calibrated; calibrated: {', '.join(posteriors)}")
@@ -136,6 +138,14 @@ def predict_drops(
     engine = {k: v for k, v in dict(settings.get("engine", {})).items() if v is not None}
     rng = np.random.default_rng(seed)
     n = len(post.samples)
+    if n < draws:
+        warnings.warn(
+            f"model {name!r}: {draws} draws asked, the posterior holds {n}: all {n} used "
+            f"(summary()'s n_draws; its q05 and q95 rest on {n} draws; more walkers or steps "
+            "give more)",
+            CalibrationWarning,
+            stacklevel=3,  # the caller of Calibration.predict
+        )
     pick = rng.choice(n, size=min(draws, n), replace=False) if n else np.zeros(0, dtype=int)
     theta = post.samples[np.sort(pick)]
     run: dict[str, Any] = {"evaluator": evaluator, "engine": engine, "quantities": quantities}

@@ -14,6 +14,7 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Mapping
+from functools import cache
 from typing import Any
 
 from impactlab.calibrate.correlations import PREFIX, correlation_column, correlation_pair
@@ -28,11 +29,13 @@ from impactlab.calibrate.quantities import (
     OUTPUT_ALIASES,
     canonical_output,
 )
-from impactlab.calibrate.values import bare, did_you_mean, is_number
+from impactlab.calibrate.values import bare, did_you_mean, is_number, to_unit
+from impactlab.sweep.inputs import INPUTS
 from impactlab.units import parse_quantity, to_si
 
 __all__ = [
     "LABEL_KEYS",
+    "check_column_unit",
     "column_kind",
     "fraction",
     "given_unit",
@@ -52,6 +55,11 @@ _COLUMNS: tuple[str, ...] = (
     *(n for q in (*MEASURABLE, *OUTPUT_ALIASES) for n in (q, f"{q}_sigma")),
 )
 _PERCENT = re.compile(r"^\s*(?P<x>\S+?)\s*(?:%|percent)\s*$", re.IGNORECASE)
+#: A number standing alone in a unit's text (``10 um``, ``1e-6 m``; not the 2 of ``m^2``).
+_NUMBER = re.compile(r"(?:^|\s)[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?(?=\s|$)")
+#: A unit to show for each SI unit (or a Brinell hardness's kgf/mm^2) in an example.
+_EXAMPLE = {"m": "um", "s": "ms", "Pa": "MPa", "kg": "g", "J": "mJ", "rad": "deg",
+            "kgf/mm^2": "HB"}  # fmt: skip
 
 
 def split_header(key: str) -> tuple[str, str | None]:
@@ -107,6 +115,91 @@ def column_kind(where: str, name: str) -> tuple[str, str]:
     )
 
 
+def check_column_unit(where: str, key: str) -> None:
+    """ValueError naming ``where`` and the column ``key`` (a header, ``"delta_p [10 um]"``)
+    when its unit is not one of its column: text that is no unit (a number in it, a bracket,
+    an unknown name), a unit of another dimension, percent on a quantity that is no fraction,
+    any unit on the label, a category or a correlation coefficient. A column that is not known
+    is left to the rows' reading, which names it."""
+    problem = _header_problem(key)
+    if problem:
+        raise ValueError(f"{where}: column {key!r}: {problem}")
+
+
+@cache
+def _header_problem(key: str) -> str | None:
+    """What is wrong with the unit of the header ``key`` (``check_column_unit``), or None."""
+    name, unit = split_header(key)
+    if unit is None:
+        return None
+    try:
+        kind, canon = column_kind("", name)
+    except ValueError:
+        return None
+    if kind in ("label", "category"):  # even an empty "[]"
+        return f"{name} is not a quantity, so it takes no unit; write the header {name!r}"
+    if not unit or (kind == "correlation" and unit in ("1", "-")):
+        return None
+    if kind == "correlation":
+        return (
+            "a correlation coefficient is a plain number in [-1, 1] and takes no unit; write "
+            f"the header {name!r}"
+        )
+    found = unit_problem(canon, unit)
+    if found is None:
+        return None
+    takes = _valid_units(name, canon, "{name} [{unit}]", f"the header {name!r}")
+    return f"{found}; {name} takes {takes}"
+
+
+def unit_problem(canon: str, unit: str) -> str | None:
+    """Why the text ``unit`` is no unit of the numeric column ``canon`` (a canonical input,
+    measured quantity or ``<quantity>_sigma``): ``"'10 um' is not a unit: ..."``; None when it
+    is one (the ``_value`` reading of a row then takes it)."""
+    base = canon.removesuffix("_sigma")
+    if is_percent(unit):
+        if base in FRACTIONS:
+            return None
+        return f"{unit!r} is percent, and only a fraction ({', '.join(FRACTIONS)}) may be"
+    target = INPUTS[canon].unit if canon in INPUTS else MEASURABLE[base].unit
+    try:
+        to_unit(f"1 {unit}", target, name=canon)
+    except ValueError as exc:
+        if "Brinell" in str(exc):  # HB on another input than a Brinell hardness
+            return f"{unit!r} is a Brinell hardness's unit, not one of {target}"
+    else:
+        return None
+    if "[" in unit or "]" in unit:
+        return f"{unit!r} is not a unit: it holds a bracket (a header gives one [unit])"
+    if _NUMBER.search(unit):
+        return (
+            f"{unit!r} is not a unit: it holds a number (a column's unit is written alone; "
+            "each drop gives its number)"
+        )
+    try:
+        to_si(1.0, unit)
+    except Exception as exc:  # pint raises many kinds for text that is no unit
+        detail = str(exc).strip()
+        return f"{unit!r} is not a unit" + (f" ({detail})" if detail else "")
+    if target in ("1", ""):
+        return f"{unit!r} is a unit, where a plain number is expected"
+    return f"{unit!r} has the wrong dimension"
+
+
+def _valid_units(name: str, canon: str, form: str, plain: str) -> str:
+    """What units the column ``name`` (canonical ``canon``) takes, with an example written
+    as ``form`` (``"{name} [{unit}]"``); ``plain``: how it is written without one."""
+    base = canon.removesuffix("_sigma")
+    target = INPUTS[canon].unit if canon in INPUTS else MEASURABLE[base].unit
+    if target in ("1", ""):
+        if base in FRACTIONS:
+            percent = form.format(name=name, unit="%")
+            return f"no unit (a fraction of 1: {plain}) or percent, e.g. {percent!r}"
+        return f"no unit (a plain number: {plain})"
+    example = form.format(name=name, unit=_EXAMPLE.get(target, target))
+    return f"a unit convertible to {target}, e.g. {example!r}"
+
+
 def input_sigma(name: str) -> str:
     """Why the input ``name`` of a drop takes no uncertainty (a column ``<name>_sigma``), and
     how an uncertain one is calibrated."""
@@ -160,6 +253,10 @@ def resolve_units(units: Any) -> dict[str, str]:
                 f'[units] {name} = {unit!r}: a unit is text, e.g. {name} = "um" (a number '
                 'with its unit belongs in the drop: "22 um")'
             )
+        found = unit_problem(canon, unit.strip())
+        if found:
+            takes = _valid_units(name, canon, '{name} = "{unit}"', "no [units] entry")
+            raise ValueError(f"[units] {name} = {unit!r}: {found}; {name} takes {takes}")
         if canon in keys:
             raise ValueError(
                 f"[units]: {canon} is given twice (keys {keys[canon]!r} and {name!r}); keep one"

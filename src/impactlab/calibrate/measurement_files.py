@@ -8,6 +8,7 @@ import csv
 from pathlib import Path
 
 from impactlab._validation import read_text_file
+from impactlab.calibrate.measurement_columns import check_column_unit
 
 __all__ = ["csv_records", "read_text"]
 
@@ -22,7 +23,8 @@ def csv_records(path: Path) -> list[tuple[int, dict[str, str]]]:
     """The rows of a CSV file as (line number, header -> text), without blank lines, rows of
     empty fields only (``,,,,``: a spreadsheet's empty row) and ``#`` comment lines; a column
     without a name and without a value in any row (a trailing comma on every line) is left out.
-    ValueError naming the file and the line for a header that names a column twice, a header
+    ValueError naming the file and the line for a header that names a column twice or gives
+    a column a unit that is not one of it (``measurement_columns.check_column_unit``), a header
     of one column holding ';' or tabs (a file that separates its columns with them, before its
     rows are counted: their decimal commas would split them), a row whose number of fields
     differs from the header's (a truncated or ragged row) and a value in a column without a
@@ -48,6 +50,8 @@ def csv_records(path: Path) -> list[tuple[int, dict[str, str]]]:
         raise ValueError(
             f"{path}: line {first}: the header names the column(s) {twice} twice; keep one of each"
         )
+    for h in named:  # a header's unit, checked once here (not glued to each row's number)
+        check_column_unit(f"{path}: line {first}", h)
     records = []
     for number, line in numbered[1:]:
         fields = next(csv.reader([line]))

@@ -25,6 +25,7 @@ from impactlab.calibrate.correlations import check_drop, coefficient, correlatio
 from impactlab.calibrate.input_magnitudes import check_magnitude
 from impactlab.calibrate.measurement_columns import (
     LABEL_KEYS,
+    check_column_unit,
     column_kind,
     fraction,
     given_unit,
@@ -39,7 +40,7 @@ from impactlab.calibrate.quantities import (
     NOISE_SIGMAS,
     PLAUSIBLE,
 )
-from impactlab.calibrate.values import bare, to_unit
+from impactlab.calibrate.values import bare, did_you_mean, to_unit
 from impactlab.materials import G0, PRESETS
 from impactlab.sweep.dimensions import check_allowed, check_rod_angles
 from impactlab.sweep.inputs import INPUTS, UNIT_REQUIRED
@@ -129,7 +130,10 @@ def _angle_unit(where: str, name: str, v: Any, unit: str | None, header: str) ->
 def _category(where: str, name: str, value: str) -> str:
     known = ("rod", "sphere") if name == "body" else tuple(PRESETS)
     if value not in known:
-        raise ValueError(f"{where}: unknown {name} {value!r}; known: {', '.join(known)}")
+        raise ValueError(
+            f"{where}: unknown {name} {value!r}{did_you_mean(value, known)}; known: "
+            f"{', '.join(known)}"
+        )
     return value
 
 
@@ -150,11 +154,7 @@ def parse_row(i: int, record: Mapping[str, Any], units: Mapping[str, Any]) -> Ro
                 f"{where}: {canon} is given twice (columns {seen[canon]!r} and {str(key)!r}); "
                 "keep one"
             )
-        if unit is not None and kind in ("label", "category"):
-            raise ValueError(
-                f"{where}: column {str(key)!r}: {name} is not a quantity, so it takes no unit; "
-                f"write the header {name!r}"
-            )
+        check_column_unit(where, str(key))
         seen[canon] = str(key)
         cols.append((kind, canon, name, unit or units.get(canon), v))
     # the unit of each measured value's column: its uncertainty's unless that has its own
