@@ -152,7 +152,9 @@ def test_column_unit_of_the_wrong_dimension_is_refused(tmp_path, value):
     path.write_text(
         "label,angle [deg],vy [m/s],mu,delta_p [kg],delta_p_sigma [kg]\na,20,-1.41,0.2,12 um,1 um\n"
     )
-    with pytest.raises(ValueError, match=r"line 1: column 'delta_p \[kg\]': 'kg' has the wrong dim"):
+    with pytest.raises(
+        ValueError, match=r"line 1: column 'delta_p \[kg\]': 'kg' has the wrong dim"
+    ):
         read_measurements(path)
 
 
