@@ -53,7 +53,7 @@ def test_block_counts_equal_the_whole_arrays(flagged_store, monkeypatch, block) 
     assert max(sizes) <= block and sum(sizes) == 2 * ds["status"].size
     info = store_info(flagged_store)
     assert info["status"] == whole_status
-    assert info["flagged"] == summary.format_flag_counts(whole_flags)
+    assert info["flagged"] == summary.flagged_values(whole_flags)
 
 
 def test_an_incomplete_store_counts_its_undone_cases(tmp_path, monkeypatch) -> None:

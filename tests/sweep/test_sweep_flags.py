@@ -41,7 +41,7 @@ def test_flags_are_stored_and_counted_although_not_kept(tmp_path) -> None:
     info = store_info(res.path)
     assert info["outputs"] == ["e", "flags"]
     # mu > 0.4: 2 of 7 values x 2 velocities; vy = -0.3: 7 cases; 2 cases have both
-    assert info["flagged"] == "9 case(s) not ok (energy gain: 4, gravity-dominated: 7)"
+    assert info["flagged"] == {"total": 9, "not_ok": 9, "energy_gain": 4, "gravity_dominated": 7}
 
 
 def test_run_summary_counts_flags(tmp_path, monkeypatch, capsys) -> None:

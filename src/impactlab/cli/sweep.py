@@ -35,12 +35,11 @@ from impactlab.cli.sweep_paths import (
 )
 from impactlab.cli.sweep_run import Where, check_uncertainty_study, run_study
 from impactlab.cli.sweep_summary import (
-    info_json,
+    info_table,
     print_uncertainty,
     run_summary,
     uncertainty_json,
     warn_incomplete,
-    with_law_ranges,
 )
 from impactlab.flags import invalidating_names
 
@@ -272,8 +271,8 @@ def info_cmd(
     from impactlab.sweep import store_info
 
     path = existing_store(store)
-    info = with_law_ranges(store_info(path), path, as_json=as_json)
-    emit(versioned(info_json(info)) if as_json else info, as_json=as_json, title=str(store))
+    info = store_info(path)  # the --json values; the table formats them
+    emit(versioned(info) if as_json else info_table(info), as_json=as_json, title=str(store))
 
 
 @sweep_app.command("plot", short_help="Regime map, maps and histograms of a store (PNG).")

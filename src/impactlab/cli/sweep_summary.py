@@ -7,7 +7,6 @@ extrapolated: 63; 63 flagged in all", "1 of 1") and the JSON's integer counts
 from __future__ import annotations
 
 import json
-import re
 import sys
 from collections.abc import Mapping
 from pathlib import Path
@@ -23,106 +22,48 @@ from impactlab.flags import invalidating_names
 if TYPE_CHECKING:
     from impactlab.sweep import SweepResult
 
-#: ``impactlab.sweep.summary.format_flag_counts``' text: the cases not ok and their flags
-#: ("name: count, ..."), then the advisory flags and the cases with any flag.
-_NOT_OK_TEXT = re.compile(
-    r"(?P<bad>[\d,]+) case\(s\) not ok(?: \((?P<parts>[^()]*)\))?"
-    r"(?:; advisory \(the result stays ok\): (?P<advisory>[^;]*); "
-    r"(?P<total>[\d,]+) flagged in all)?"
-)
-#: Its older form (counts without "not ok"): the total, then "name: count, ...".
-_FLAGGED_TEXT = re.compile(r"(?P<total>[\d,]+) case\(s\) \((?P<parts>.*)\)")
-#: ``impactlab.sweep.summary.store_info``'s progress text: "<done> of <total>".
-_CHUNKS_TEXT = re.compile(r"(?P<done>\d+) of (?P<total>\d+)")
-
 
 def flagged_json(counts: Mapping[str, int]) -> dict[str, int]:
-    """``impactlab.sweep.flag_counts``' counts as JSON: ``total`` (cases with any flag, the
-    advisory law extrapolated included), ``not_ok`` (cases with a flag that is not advisory:
-    not plain success), then each flag that marks a case, by its ``ResultFlag`` name in lower
-    case (``law_extrapolated``, ``beyond_tip``)."""
-    from impactlab.sweep.summary import FLAG_NAMES, TOTALS
+    """``impactlab.sweep.flag_counts``' counts as JSON (``impactlab.sweep.summary.
+    flagged_values``): ``total``, ``not_ok``, then each flag that marks a case, by its
+    ``ResultFlag`` name in lower case (``law_extrapolated``, ``beyond_tip``)."""
+    from impactlab.sweep.summary import flagged_values
 
-    total = int(counts.get("flagged", 0))
-    out = {"total": total}
-    if "not ok" in counts or not total:  # counts of an older form have no "not ok"
-        out["not_ok"] = int(counts.get("not ok", 0))
-    out |= {
-        FLAG_NAMES.get(k, k.replace(" ", "_")): int(v)
-        for k, v in counts.items()
-        if k not in TOTALS and v
-    }
-    return out
+    return flagged_values(counts)
 
 
-def _number(text: str) -> int:
-    return int(text.replace(",", ""))
+def info_table(info: Mapping[str, Any]) -> dict[str, Any]:
+    """The table rows of ``impactlab.sweep.store_info``'s values (``impactlab sweep info``):
+    ``chunks_done`` as "7 of 8", ``flagged`` as ``sweep.summary.flagged_text``, one row per
+    ``body_yields_first`` pair (``sweep.summary.flattening_rows``), one row per law of
+    ``law_ranges``, ``law range: NAME`` -> its range (the sources are long: ``--json`` and the
+    store's attributes hold them; a ``law ranges`` row says when the store records none); no
+    ``impactlab_version``."""
+    from impactlab.sweep.summary import flagged_text, flattening_rows
 
-
-def flagged_text_json(text: Any) -> Any:
-    """The counts of ``format_flag_counts``' text ("none", "2 case(s) not ok (energy gain: 2);
-    advisory (the result stays ok): law extrapolated: 7; 7 flagged in all", or the older
-    "63 case(s) (law extrapolated (advisory): 63)") as :func:`flagged_json` gives them; a text
-    of another shape as it is."""
-    if text == "none":
-        return flagged_json({"flagged": 0})
-    new = _NOT_OK_TEXT.fullmatch(str(text))
-    old = None if new is not None else _FLAGGED_TEXT.fullmatch(str(text))
-    if new is not None:
-        bad = _number(new["bad"])
-        counts = {"flagged": _number(new["total"]) if new["total"] else bad, "not ok": bad}
-        parts = [p for g in ("parts", "advisory") if new[g] for p in new[g].split(", ")]
-    elif old is not None:
-        counts, parts = {"flagged": _number(old["total"])}, old["parts"].split(", ")
-    else:
-        return text
-    for part in parts:
-        name, _, count = part.rpartition(": ")
-        if not name or not count.replace(",", "").isdigit():
-            return text
-        counts[name.removesuffix(" (advisory)")] = _number(count)
-    return flagged_json(counts)
-
-
-def info_json(info: Mapping[str, Any]) -> dict[str, Any]:
-    """``impactlab.sweep.store_info``'s summary with integer counts: ``chunks_done`` and
-    ``chunks_total`` instead of "1 of 1", ``flagged`` as :func:`flagged_json`."""
-    out: dict[str, Any] = {}
+    rows: dict[str, Any] = {}
     for key, value in info.items():
-        match = _CHUNKS_TEXT.fullmatch(str(value)) if key == "chunks_done" else None
-        if match is not None:
-            out["chunks_done"] = int(match["done"])
-            out["chunks_total"] = int(match["total"])
-        elif key == "flagged":
-            out[key] = flagged_text_json(value)
-        else:
-            out[key] = value
-    return out
+        if key == "chunks_done":
+            rows[key] = f"{value} of {info.get('chunks_total')}"
+        elif key == "flagged" and isinstance(value, Mapping):
+            rows[key] = flagged_text(value)
+        elif key == "body_yields_first":
+            rows |= flattening_rows(value)
+        elif key == "law_ranges":
+            rows |= _law_rows(value)
+        elif key not in ("chunks_total", "impactlab_version"):
+            rows[key] = value
+    return rows
 
 
-def with_law_ranges(info: Mapping[str, Any], store: Path, *, as_json: bool) -> dict[str, Any]:
-    """``info`` with the store's ``law_ranges`` attribute (each law of the study -> its verified
-    or stand-in ``range`` and its ``source``): with ``as_json`` as the store records it (null
-    for a store that records none); for the table one row per law, ``law range: NAME`` -> its
-    range (the sources are long: ``--json`` and the store's attributes hold them), and its
-    ``body_yields_first`` pairs one row each (``sweep.summary.flattening_rows``)."""
-    from impactlab.sweep.store import SweepStore
-    from impactlab.sweep.summary import flattening_rows
-
-    ranges = SweepStore(store).attrs().get("law_ranges")
-    if as_json:
-        return {**info, "law_ranges": ranges}
-    if "body_yields_first" in info:  # the table: one row per pair
-        info = {k: v for k, v in info.items() if k != "body_yields_first"} | flattening_rows(
-            info["body_yields_first"]
-        )
+def _law_rows(ranges: Any) -> dict[str, Any]:
+    """``law range: NAME`` -> its range, per law of a store's ``law_ranges``."""
     if not isinstance(ranges, Mapping) or not ranges:
-        return {**info, "law ranges": "not recorded in this store"}
-    rows = {
+        return {"law ranges": "not recorded in this store"}
+    return {
         f"law range: {law}": rec.get("range", rec) if isinstance(rec, Mapping) else rec
         for law, rec in ranges.items()
     }
-    return {**info, **rows}
 
 
 def run_summary(

@@ -13,6 +13,7 @@ from typing import Any
 import numpy as np
 import zarr
 
+from impactlab._version import __version__
 from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
 from impactlab.sweep.dimensions import Layout
 from impactlab.sweep.display import ADVISORY_NAMES, TOTALS, not_ok_text
@@ -177,6 +178,36 @@ def format_flag_counts(counts: Mapping[str, int]) -> str:
     return text
 
 
+def flagged_values(counts: Mapping[str, int]) -> dict[str, int]:
+    """:func:`flag_counts`' ``counts`` as ``store_info`` and ``--json`` give them: ``total``
+    (cases with any flag, the advisory law extrapolated included), ``not_ok`` (cases with a
+    flag that is not advisory), then each flag that marks a case, by its ``ResultFlag`` name in
+    lower case (``law_extrapolated``, ``beyond_tip``; the stored ``flag_meanings``)."""
+    total = int(counts.get("flagged", 0))
+    out = {"total": total}
+    if "not ok" in counts or not total:  # counts of an older form have no "not ok"
+        out["not_ok"] = int(counts.get("not ok", 0))
+    out |= {
+        FLAG_NAMES.get(k, k.replace(" ", "_")): int(v)
+        for k, v in counts.items()
+        if k not in TOTALS and v
+    }
+    return out
+
+
+def flagged_text(values: Mapping[str, int]) -> str:
+    """:func:`format_flag_counts`' text of :func:`flagged_values`' ``values`` (the table's
+    ``flagged`` row of ``impactlab sweep info``)."""
+    labels = {name: label for label, name in FLAG_NAMES.items()}
+    counts = {"flagged": int(values.get("total", 0))}
+    if "not_ok" in values:
+        counts["not ok"] = int(values["not_ok"])
+    for name, n in values.items():
+        if name not in ("total", "not_ok"):
+            counts[labels.get(name, name.replace("_", " "))] = int(n)
+    return format_flag_counts(counts)
+
+
 def _intact_values(path: Path, name: str, damaged: set[int], done: set[int]) -> np.ndarray:
     """The values of array ``name`` of a store with damaged chunks, chunk by chunk, leaving
     those out (reading them could fail); a chunk without its completion marker reads -1
@@ -194,15 +225,18 @@ def _intact_values(path: Path, name: str, damaged: set[int], done: set[int]) -> 
 
 
 def store_info(path: str | Path) -> dict[str, Any]:
-    """Progress and contents of the store at ``path``: title, study hash, the impactlab version
-    that wrote the store (``store_version``), mode, dimensions, cases, chunks done (intact),
-    damaged chunks, outputs, status counts, flagged results and, when a material pair's body
-    yields first, ``body_yields_first`` (:func:`body_yields_first_pairs`)."""
+    """Progress and contents of the store at ``path``, the values ``impactlab sweep info
+    --json`` prints: ``title``, ``study_hash``, ``store_version`` (the impactlab version that
+    wrote the store), ``mode``, ``dims``, ``cases``, ``chunks_done`` (intact chunks) and
+    ``chunks_total`` (integers), ``damaged`` (a text, only when chunks are damaged; they are
+    left out of the counts), ``outputs``, ``status`` (:func:`status_counts`), ``flagged``
+    (:func:`flagged_values`; only with a ``flags`` output), ``body_yields_first`` (only when a
+    material pair's body yields first: :func:`body_yields_first_pairs`), ``law_ranges`` (the
+    store's attribute; None when it records none) and ``impactlab_version`` (this one)."""
     p = Path(path)
     ds = open_sweep(p, verify=False)
     store = SweepStore(p)
     damaged = store.verify()
-    done = len(store.done_chunks()) - len(damaged)
     info: dict[str, Any] = {
         "title": ds.attrs.get("title"),
         "study_hash": ds.attrs.get("study_hash"),
@@ -210,7 +244,8 @@ def store_info(path: str | Path) -> dict[str, Any]:
         "mode": ds.attrs.get("mode"),
         "dims": {str(k): int(v) for k, v in ds.sizes.items()},
         "cases": ds.attrs.get("n_cases"),
-        "chunks_done": f"{done} of {ds.attrs.get('n_chunks')}",
+        "chunks_done": len(store.done_chunks()) - len(damaged),
+        "chunks_total": ds.attrs.get("n_chunks"),
     }
     if damaged:
         info["damaged"] = (
@@ -221,22 +256,18 @@ def store_info(path: str | Path) -> dict[str, Any]:
     if not damaged:  # the lazy Dataset, a block at a time
         info["status"] = status_counts(ds)
         if "flags" in ds.data_vars:
-            info["flagged"] = format_flag_counts(dataset_flag_counts(ds))
-        return _with_flattening(info, ds)
-    msgs = ds.attrs.get("status_messages", {})
-    marked = store.done_chunks()
-    info["status"] = _counts([_intact_values(p, "status", set(damaged), marked)], msgs)
-    if "flags" in ds.data_vars:
-        flags = _intact_values(p, "flags", set(damaged), marked)
-        info["flagged"] = format_flag_counts(flag_counts(flags, ds["flags"].attrs))
-    return _with_flattening(info, ds)
-
-
-def _with_flattening(info: dict[str, Any], ds: Any) -> dict[str, Any]:
-    """``info`` with ``body_yields_first`` (:func:`body_yields_first_pairs`) when a pair's
-    body yields first."""
+            info["flagged"] = flagged_values(dataset_flag_counts(ds))
+    else:
+        msgs = ds.attrs.get("status_messages", {})
+        marked = store.done_chunks()
+        info["status"] = _counts([_intact_values(p, "status", set(damaged), marked)], msgs)
+        if "flags" in ds.data_vars:
+            flags = _intact_values(p, "flags", set(damaged), marked)
+            info["flagged"] = flagged_values(flag_counts(flags, ds["flags"].attrs))
     pairs = body_yields_first_pairs(ds)
-    return {**info, "body_yields_first": pairs} if pairs else info
+    if pairs:
+        info["body_yields_first"] = pairs
+    return info | {"law_ranges": store.attrs().get("law_ranges"), "impactlab_version": __version__}
 
 
 def body_yields_first_pairs(ds: Any) -> list[dict[str, Any]]:
