@@ -104,3 +104,10 @@ def test_a_batch_s_messages_and_stored_status_say_the_drop_s_range_and_degrees()
     said = b.to_xarray()["status"].attrs["status_messages"]
     assert any("rtol in [1e-13, 1e-5] for a drop" in m for m in said)
     assert not any("1e-3" in m for m in said)
+
+
+def test_one_refused_angle_is_named_once() -> None:
+    with pytest.warns(
+        ImplausibleInputWarning, match=r"every refused angle \(1 case\(s\), 30\) lies"
+    ):
+        il.simulate_drops(ROD, angle=[30.0, 0.35], vy=-1.41, mu=0.2)

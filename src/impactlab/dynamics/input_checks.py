@@ -232,9 +232,11 @@ def warn_degrees(refused: np.ndarray) -> None:
     (:func:`degrees_hint`), which fail case by case (status 7) otherwise."""
     if refused.size == 0 or not all(degrees_hint(float(th)) for th in refused):
         return
+    lo, hi = float(refused.min()), float(refused.max())
+    span = f"{lo:g}" if lo == hi else f"{lo:g} to {hi:g}"
     warn_implausible(
-        f"angle: every refused angle ({refused.size} case(s), {float(refused.min()):g} to "
-        f"{float(refused.max()):g}) lies in (pi/2 + {math.degrees(PAST_NORMAL):g} deg, 90]: "
+        f"angle: every refused angle ({refused.size} case(s), {span}) lies in (pi/2 + "
+        f"{math.degrees(PAST_NORMAL):g} deg, 90]: "
         "degrees? a bare angle is radians, as every bare number of the Python API is SI; pass "
         "np.radians(...), a Quantity or strings such as '20 deg'"
     )
