@@ -14,15 +14,13 @@ import numpy as np
 import pint
 import pytest
 
-from impactlab.calibrate import Calibration, CalibrationWarning, Measurements, calibrate
+from impactlab.calibrate import Calibration, CalibrationWarning
 from impactlab.calibrate import parse_parameter as parameter
 from impactlab.calibrate.drop_predictions import predict_drops
 from impactlab.flags import FLAG_LAW_EXTRAPOLATED
 from impactlab.sweep.engine import ENGINE
 
-MU = parameter("mu", "uniform(0, 0.6)")
 SY = parameter("flat_yield_strength", "uniform(100 MPa, 1 GPa)")
-DROP = {"angle": "20 deg", "vy": -1.41, "e": 0.45, "e_sigma": 0.02}
 NEW = {"label": "new", "angle": "30 deg", "vy": -2.0}
 EXTRAPOLATED = (
     r"model 'ghaednia/coulomb': the contact law 'ghaednia' is extrapolated in 100 % of the 6 "
@@ -42,24 +40,16 @@ class _WithinRange:
         return {**res, "flags": flags.astype(np.float64)}, status
 
 
-@pytest.fixture(scope="module")
-def cal() -> Calibration:
-    drops = [{**DROP, "label": "a"}, {**DROP, "label": "b", "angle": "45 deg", "vy": -2.18}]
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        return calibrate(Measurements.from_records(drops), [MU], walkers=6, steps=12, n_ppc=0)
-
-
 def _quiet(fn: Any, *args: Any, **kw: Any) -> Any:
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         return fn(*args, **kw)
 
 
-def test_an_extrapolated_law_is_marked_and_warned_about(cal: Calibration) -> None:
+def test_an_extrapolated_law_is_marked_and_warned_about(mu_calibration: Calibration) -> None:
     """The paper's rod presses Ghaednia's law far past its verified range."""
     with pytest.warns(CalibrationWarning, match=EXTRAPOLATED):
-        got = cal.predict([NEW, {**NEW, "label": "slow", "vy": -1.0}], ["e"], draws=3)
+        got = mu_calibration.predict([NEW, {**NEW, "label": "slow", "vy": -1.0}], ["e"], draws=3)
     assert got.extrapolated is not None and got.extrapolated.shape == (3, 2)
     assert got.extrapolated.all()
     rows = got.summary()
@@ -67,33 +57,34 @@ def test_an_extrapolated_law_is_marked_and_warned_about(cal: Calibration) -> Non
     assert all(r["failed"] == 0.0 and "reason" not in r for r in rows)
 
 
-def test_a_law_within_its_range_is_not_warned_about(cal: Calibration) -> None:
+def test_a_law_within_its_range_is_not_warned_about(mu_calibration: Calibration) -> None:
     with warnings.catch_warnings(record=True) as seen:
         warnings.simplefilter("always")
-        got = cal.predict([NEW], ["e"], draws=3, evaluator=_WithinRange())
+        got = mu_calibration.predict([NEW], ["e"], draws=3, evaluator=_WithinRange())
     assert not [w for w in seen if "extrapolated" in str(w.message)]
     assert got.extrapolated is not None and not got.extrapolated.any()
     assert got.summary()[0]["extrapolated"] == 0.0
 
 
-def test_a_drop_whose_every_draw_failed_is_warned_about(cal: Calibration) -> None:
+def test_a_drop_whose_every_draw_failed_is_warned_about(mu_calibration: Calibration) -> None:
     with pytest.warns(CalibrationWarning, match=(
         r"model 'ghaednia/coulomb' predicts nothing for 1 drop\(s\): every one of the 3 posterior "
         r"draws failed \('t': result flagged GRAVITY_DOMINATED .*\); their values are NaN"
     )):  # fmt: skip
-        got = cal.predict([NEW, {**NEW, "label": "t", "vy": -1e-5}], ["e"], draws=3)
+        got = mu_calibration.predict([NEW, {**NEW, "label": "t", "vy": -1e-5}], ["e"], draws=3)
     row = got.summary()[1]
     assert row["failed"] == 1.0 and np.isnan(row["median"]) and np.isnan(row["extrapolated"])
     assert row["reason"].startswith("result flagged GRAVITY_DOMINATED")
 
 
-def test_a_refused_drop_names_its_own_reason(cal: Calibration) -> None:
+def test_a_refused_drop_names_its_own_reason(mu_calibration: Calibration) -> None:
     """A rate law refuses a flat yield strength outside its fitted 150-450 MPa: the reason was
     'simulate refused the case (or the drop failed)'."""
     name = "ghaednia/coulomb/flexible_rod/cowper-symonds"
     definition = {"law": "ghaednia", "friction": "coulomb", "body": "flexible_rod",
                   "rate": "cowper-symonds", "fixed": {}, "law_params": {}}  # fmt: skip
-    post = dataclasses.replace(next(iter(cal.posteriors.values())), model=name, params=(SY,),
+    first = next(iter(mu_calibration.posteriors.values()))
+    post = dataclasses.replace(first, model=name, params=(SY,),
                                samples=np.array([[110e6], [900e6]]))  # fmt: skip
     settings = {"model_definitions": {name: definition}, "engine": {}}
     cond = [{**NEW, "mu": 0.2}, {**NEW, "label": "other", "mu": 0.3}]
@@ -106,9 +97,9 @@ def test_a_refused_drop_names_its_own_reason(cal: Calibration) -> None:
     assert "outside 150 to 450 MPa" in reason
 
 
-def test_one_record_is_one_drop(cal: Calibration) -> None:
-    one = _quiet(cal.predict, NEW, ["e"], draws=3)
-    listed = _quiet(cal.predict, [NEW], ["e"], draws=3)
+def test_one_record_is_one_drop(mu_calibration: Calibration) -> None:
+    one = _quiet(mu_calibration.predict, NEW, ["e"], draws=3)
+    listed = _quiet(mu_calibration.predict, [NEW], ["e"], draws=3)
     assert one.labels == ("new",)
     np.testing.assert_array_equal(one.values["e"], listed.values["e"])
 
@@ -122,33 +113,33 @@ def test_one_record_is_one_drop(cal: Calibration) -> None:
     ],
 )
 def test_conditions_that_are_no_records_are_refused(
-    cal: Calibration, conditions: Any, match: str
+    mu_calibration: Calibration, conditions: Any, match: str
 ) -> None:
     with pytest.raises(ValueError, match=match):
-        cal.predict(conditions, ["e"], draws=3)
+        mu_calibration.predict(conditions, ["e"], draws=3)
 
 
-def test_a_dataframe_is_pointed_to_its_records(cal: Calibration) -> None:
+def test_a_dataframe_is_pointed_to_its_records(mu_calibration: Calibration) -> None:
     pandas = pytest.importorskip("pandas")
     with pytest.raises(ValueError, match=r"got a DataFrame: pass df.to_dict\('records'\)"):
-        cal.predict(pandas.DataFrame([NEW]), ["e"], draws=3)
+        mu_calibration.predict(pandas.DataFrame([NEW]), ["e"], draws=3)
 
 
 @pytest.mark.parametrize("seed", [-1, 1.5, "a", True, 2**32, np.float64(3.0)])
-def test_a_bad_seed_is_refused_by_name(cal: Calibration, seed: Any) -> None:
+def test_a_bad_seed_is_refused_by_name(mu_calibration: Calibration, seed: Any) -> None:
     with pytest.raises(ValueError, match=r"seed must be an integer in \[0, 4294967295\] \(or None"):
-        cal.predict([NEW], ["e"], draws=3, seed=seed)
+        mu_calibration.predict([NEW], ["e"], draws=3, seed=seed)
 
 
 @pytest.mark.parametrize("seed", [None, 0, np.int64(7), 2**32 - 1])
-def test_a_good_seed_is_taken(cal: Calibration, seed: Any) -> None:
-    assert _quiet(cal.predict, [NEW], ["e"], draws=3, seed=seed).draws.shape == (3, 1)
+def test_a_good_seed_is_taken(mu_calibration: Calibration, seed: Any) -> None:
+    assert _quiet(mu_calibration.predict, [NEW], ["e"], draws=3, seed=seed).draws.shape == (3, 1)
 
 
-def test_a_pint_quantity_reads_as_its_value_with_unit(cal: Calibration) -> None:
+def test_a_pint_quantity_reads_as_its_value_with_unit(mu_calibration: Calibration) -> None:
     """Every other entry point takes a Quantity of any registry; a record refused it."""
     ureg: Any = pint.UnitRegistry()
     given = {"label": "new", "angle": ureg("30 deg"), "vy": ureg("-200 cm/s")}
-    got = _quiet(cal.predict, [given], ["e"], draws=3)
-    want = _quiet(cal.predict, [NEW], ["e"], draws=3)
+    got = _quiet(mu_calibration.predict, [given], ["e"], draws=3)
+    want = _quiet(mu_calibration.predict, [NEW], ["e"], draws=3)
     np.testing.assert_array_equal(got.values["e"], want.values["e"])
