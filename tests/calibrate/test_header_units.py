@@ -37,6 +37,10 @@ def _csv(tmp_path: Path, column: str, comment: str = "") -> Path:
          r"convertible to m, e.g. 'delta_p \[um\]'"),
         ("delta_p [%]",
          r"line 1: column 'delta_p \[%\]': '%' is percent, and only a fraction \(e, .*\) may be"),
+        ("delta_p [-]",
+         r"line 1: column 'delta_p \[-\]': '-' marks a plain number, without a unit; delta_p "
+         r"takes a unit convertible to m, e.g. 'delta_p \[um\]'$"),
+        ("delta_p [1]", r"column 'delta_p \[1\]': '1' marks a plain number, without a unit; "),
         ("e [deg]",
          r"line 1: column 'e \[deg\]': 'deg' is a unit, where a plain number is expected; e takes "
          r"no unit \(a fraction of 1: the header 'e'\) or percent, e.g. 'e \[%\]'"),
@@ -65,7 +69,8 @@ def test_the_header_line_is_the_file_line(tmp_path: Path) -> None:
 @pytest.mark.parametrize(
     ("column", "value", "si"),
     [("delta_p [um]", "60", 60e-6), ("delta_p [ mm ]", "0.06", 60e-6), ("delta_p []", "6e-5", 6e-5),
-     ("e [%]", "45", 0.45), ("e [1]", "0.45", 0.45), ("spin_out [rpm]", "-60", -2 * math.pi),
+     ("e [%]", "45", 0.45), ("e [1]", "0.45", 0.45), ("e [-]", "0.45", 0.45),
+     ("spin_out [rpm]", "-60", -2 * math.pi),
      ("duration [ms]", "0.2", 2e-4)],
 )  # fmt: skip
 def test_good_header_units_read_as_before(tmp_path: Path, column: str, value: str, si: float):
@@ -99,3 +104,18 @@ def test_a_toml_key_and_a_units_entry_are_checked_too(tmp_path: Path) -> None:
     with pytest.raises(ValueError, match=r"drop 1: column 'e \[deg\]': 'deg' is a unit"):
         Measurements.from_records([{"label": "a", "angle": "20 deg", "vy": -1.41,
                                     "e [deg]": 0.4, "e_sigma": 0.02}])  # fmt: skip
+
+
+def test_a_plain_number_mark_in_the_units_table_reads_as_no_unit(tmp_path: Path) -> None:
+    """``[units] e = "-"`` is the header ``e [-]``: a plain number (engineering's mark)."""
+    path = tmp_path / "m.toml"
+    drop = '[[drop]]\nlabel = "a"\nangle = "20 deg"\nvy = -1.41\ne = 0.45\ne_sigma = 0.02\n'
+    path.write_text(drop + '[units]\ne = "-"\ne_sigma = "1"\n')
+    m = read_measurements(path)
+    assert (m.observed["e"][0], m.sigma["e"][0]) == (0.45, 0.02)
+    csv = tmp_path / "m.csv"
+    csv.write_text("label,angle [deg],vy [m/s],flat_nu [-],e,e_sigma\na,20,-1.41,0.3,0.45,0.02\n")
+    assert read_measurements(csv).inputs["flat_nu"][0] == 0.3
+    path.write_text(drop.replace("e = 0.45", "delta_p = 60") + '[units]\ndelta_p = "-"\n')
+    with pytest.raises(ValueError, match=r"\[units\] delta_p = '-': '-' marks a plain number"):
+        read_measurements(path)

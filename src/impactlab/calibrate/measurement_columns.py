@@ -5,8 +5,10 @@ A ``[units]`` key is a column's name as a drop's column would be written (``T`` 
 ``duration``, ``F_sigma`` is ``mean_force_sigma``); a key that names no column, or a column
 that is not a quantity (``label``, ``body``), is refused, so that no unit is dropped silently.
 A fraction (``quantities.FRACTIONS``: e, e_energy, e_t, mu, damping) may be given in percent,
-1 % = 0.01 of 1 (``"43 %"``, a header ``e [%]``, ``[units] e = "%"``). A correlation coefficient
-(``correlation_e_spin_out``, ``impactlab.calibrate.correlations``) is a plain number: no unit.
+1 % = 0.01 of 1 (``"43 %"``, a header ``e [%]``, ``[units] e = "%"``); a plain number's column
+may say so (``e [-]``, ``e [1]``: ``PLAIN_MARKS``), which a quantity with a unit refuses. A
+correlation coefficient (``correlation_e_spin_out``, ``impactlab.calibrate.correlations``) is a
+plain number: no unit.
 """
 
 from __future__ import annotations
@@ -62,12 +64,18 @@ _EXAMPLE = {"m": "um", "s": "ms", "Pa": "MPa", "kg": "g", "J": "mJ", "rad": "deg
             "kgf/mm^2": "HB"}  # fmt: skip
 
 
+#: Unit texts that mark a plain number (a header ``e [-]`` or ``e [1]``): read as unit "1".
+PLAIN_MARKS = ("-", "1")
+
+
 def split_header(key: str) -> tuple[str, str | None]:
-    """``"delta_p [um]"`` -> ("delta_p", "um")."""
+    """``"delta_p [um]"`` -> ("delta_p", "um"); a plain-number mark (``"e [-]"``,
+    ``PLAIN_MARKS``) -> ("e", "1")."""
     key = key.strip()
     if key.endswith("]") and "[" in key:
         name, unit = key[:-1].split("[", 1)
-        return name.strip(), unit.strip()
+        unit = unit.strip()
+        return name.strip(), "1" if unit in PLAIN_MARKS else unit
     return key, None
 
 
@@ -132,13 +140,14 @@ def _header_problem(key: str) -> str | None:
     name, unit = split_header(key)
     if unit is None:
         return None
+    unit = key.strip()[:-1].split("[", 1)[1].strip()  # as written, for the message
     try:
         kind, canon = column_kind("", name)
     except ValueError:
         return None
     if kind in ("label", "category"):  # even an empty "[]"
         return f"{name} is not a quantity, so it takes no unit; write the header {name!r}"
-    if not unit or (kind == "correlation" and unit in ("1", "-")):
+    if not unit or (kind == "correlation" and unit in PLAIN_MARKS):
         return None
     if kind == "correlation":
         return (
@@ -162,6 +171,8 @@ def unit_problem(canon: str, unit: str) -> str | None:
             return None
         return f"{unit!r} is percent, and only a fraction ({', '.join(FRACTIONS)}) may be"
     target = INPUTS[canon].unit if canon in INPUTS else MEASURABLE[base].unit
+    if unit in PLAIN_MARKS:
+        return None if target in ("1", "") else f"{unit!r} marks a plain number, without a unit"
     try:
         to_unit(f"1 {unit}", target, name=canon)
     except ValueError as exc:
@@ -261,7 +272,8 @@ def resolve_units(units: Any) -> dict[str, str]:
             raise ValueError(
                 f"[units]: {canon} is given twice (keys {keys[canon]!r} and {name!r}); keep one"
             )
-        keys[canon], out[canon] = name, unit.strip()
+        text = unit.strip()
+        keys[canon], out[canon] = name, "1" if text in PLAIN_MARKS else text
     return out
 
 
