@@ -115,7 +115,7 @@ def test_an_unknown_key_gets_the_nearest_or_why(tmp_path: Path, cli_main: CliMai
         ("law = 3", "law (in {cfg}) must be text, a name in quotes, got 3"),
         ('mu = "x"', "mu (in {cfg}) must be a number, got 'x'"),
         ("mu = -1.0", "mu (in {cfg}) must be >= 0"),  # the engine's words, the key's name
-        ('t_max = "1 us"', "raise t_max (in {cfg})"),  # a drop's error: the key's name
+        ('time_limit = "1 us"', "raise time_limit (in {cfg})"),  # a drop's error: the key's name
         (
             'rate = "cowper-symonds"\nflat = "al-6061-t6"',
             "rate (in {cfg}) cowper-symonds: its constants are fitted for",

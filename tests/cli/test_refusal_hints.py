@@ -33,7 +33,7 @@ def _error(cli_main: CliMain, *args: str) -> str:
         ("--damping", "0.01"),
         ("--rate", "cowper-symonds"),
         ("--stop", "flight"),
-        ("--t-max", "1 s"),
+        ("--time-limit", "1 s"),
     ],
 )
 def test_a_spheres_drop_option_is_refused_as_a_spheres(
@@ -62,7 +62,7 @@ def test_modes_point_to_flexible_only_and_it_takes_them(
 
 
 @pytest.mark.parametrize(
-    "option", [("--rate", "cowper-symonds"), ("--stop", "flight"), ("--t-max", "1 s")]
+    "option", [("--rate", "cowper-symonds"), ("--stop", "flight"), ("--time-limit", "1 s")]
 )
 def test_a_drops_options_point_to_both_and_both_take_them(
     cli_main: CliMain, option: tuple[str, ...]

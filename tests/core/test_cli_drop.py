@@ -237,25 +237,27 @@ def test_every_drop_quantity_is_an_object(monkeypatch, capsys, args):
         assert data["next_time"] == {"value": None, "unit": "s"} and data["next_end"] == -1
 
 
-def test_t_max_is_an_option_and_its_error_names_it(monkeypatch, capsys, tmp_path):
-    """``--t-max`` with its unit (recorded in the JSON input; on top of ``--from``); the error
-    of a drop that runs out of time says to raise ``--t-max``."""
-    code, _out, err = _cli(monkeypatch, capsys, *PAPER_20, "--t-max", "0.01 ms")
+def test_time_limit_is_an_option_and_its_error_names_it(monkeypatch, capsys, tmp_path):
+    """``--time-limit`` with its unit (recorded in the JSON input; on top of ``--from``); the error
+    of a drop that runs out of time says to raise ``--time-limit``."""
+    code, _out, err = _cli(monkeypatch, capsys, *PAPER_20, "--time-limit", "0.01 ms")
     assert code == 2 and len(err.strip().splitlines()) == 1
-    assert "t_max reached" in err and err.strip().endswith("raise --t-max")
-    code, out, err = _cli(monkeypatch, capsys, *PAPER_20, "--t-max", "2 s", "--json")
+    assert "time_limit reached" in err and err.strip().endswith("raise --time-limit")
+    code, out, err = _cli(monkeypatch, capsys, *PAPER_20, "--time-limit", "2 s", "--json")
     assert code == 0, err
     data = json.loads(out)
-    assert data["input"]["t_max"] == {"value": 2.0, "unit": "s"}
+    assert data["input"]["time_limit"] == {"value": 2.0, "unit": "s"}
     ref = simulate_drop(FlexibleRod.paper(), mu=0.2, angle=math.radians(20), velocity=(0.0, -1.41))
-    assert data["e"]["value"] == ref.e  # the sequence ends long before either t_max
+    assert data["e"]["value"] == ref.e  # the sequence ends long before either time_limit
     record = tmp_path / "drop.json"
     record.write_text(out)
-    code, out, err = _cli(monkeypatch, capsys, "--from", str(record), "--t-max", "1 s", "--json")
+    code, out, err = _cli(
+        monkeypatch, capsys, "--from", str(record), "--time-limit", "1 s", "--json"
+    )
     assert code == 0, err
-    assert json.loads(out)["input"]["t_max"] == {"value": 1.0, "unit": "s"}
-    code, _out, err = _cli(monkeypatch, capsys, "--from", str(record), "--t-max", "10 us")
-    assert code == 2 and err.startswith(f"error: --from {str(record)!r}: drop: t_max reached")
-    assert err.strip().endswith("raise --t-max")
-    code, _out, err = _cli(monkeypatch, capsys, *PAPER_20, "--t-max", "0 s")
-    assert code == 2 and "--t-max must be > 0" in err
+    assert json.loads(out)["input"]["time_limit"] == {"value": 1.0, "unit": "s"}
+    code, _out, err = _cli(monkeypatch, capsys, "--from", str(record), "--time-limit", "10 us")
+    assert code == 2 and err.startswith(f"error: --from {str(record)!r}: drop: time_limit reached")
+    assert err.strip().endswith("raise --time-limit")
+    code, _out, err = _cli(monkeypatch, capsys, *PAPER_20, "--time-limit", "0 s")
+    assert code == 2 and "--time-limit must be > 0" in err

@@ -112,15 +112,15 @@ def test_tables_show_no_python_reprs() -> None:
             assert raw not in out, (args, raw)
 
 
-def test_invert_prints_no_zero_sigmas_and_keeps_the_signs() -> None:
-    """Without uncertainties: no "± 0" columns nor Monte Carlo rows; the echo keeps the sign
-    of v_i as given (it once printed 1.41 for --vi -1.41)."""
+def test_invert_prints_no_zero_sigmas_and_labels_the_magnitudes() -> None:
+    """Without uncertainties: no "± 0" columns nor Monte Carlo rows; v_i shows as the JSON's
+    magnitude, labelled |v_i| (a bare "v_i 1.41" once read as a lost sign for --vi -1.41)."""
     rows = _table(_ok(INVERT))
-    assert rows["v_i"] == ("-1.41", "m/s") and rows["angle"] == ("20", "deg")
+    assert rows["|v_i|"] == ("1.41", "m/s") and rows["angle"] == ("20", "deg")
     assert rows["duration"] == ("4.106", "ms") and "T_mc" not in rows
     assert all("±" not in v for v, _u in rows.values())
     rows = _table(_ok([*INVERT, "--sigma-ls", "50 um"]))
-    assert rows["sliding_length"] == ("1400 ± 50", "um")
+    assert rows["|sliding_length|"] == ("1400 ± 50", "um")
     assert "±" in rows["duration"][0] and "±" in rows["T_mc"][0]
     r = il.invert(angle="20 deg", v_i=-1.41, e=0.5, mu=0.2, delta_p=22e-6, sliding_length=1.4e-3)
     assert "± 0" not in str(r) and "|v_i| = 1.41 m/s" in str(r)
@@ -278,12 +278,12 @@ def test_simulate_flexible_rod_stop() -> None:
 
 
 def test_simulate_flexible_takes_a_time_limit() -> None:
-    """``--t-max`` is ``simulate(..., t_max=)`` for the flexible rod's drop."""
+    """``--time-limit`` is ``simulate(..., time_limit=)`` for the flexible rod's drop."""
     body = FlexibleRod.paper(n_axial=1, n_bending=2)
     ref = il.simulate(body, angle="20 deg", velocity=(0.0, -1.41), mu=0.2, history=False,
-                      t_max=2.0)  # fmt: skip
-    data = _json([*FLEX, "--t-max", "2 s"])
-    assert data["e"]["value"] == ref.e and data["input"]["t_max"]["value"] == 2.0
+                      time_limit=2.0)  # fmt: skip
+    data = _json([*FLEX, "--time-limit", "2 s"])
+    assert data["e"]["value"] == ref.e and data["input"]["time_limit"]["value"] == 2.0
 
 
 @pytest.mark.parametrize(
@@ -293,10 +293,10 @@ def test_simulate_flexible_takes_a_time_limit() -> None:
         ([*ROD20, "--stop", "flight"], "--stop: only a drop has"),
         ([*FLEX, "--stop", "landing"], "stop must be one of"),
         ([*ROD20, "--rate", "johnson-cook"], "--rate: only a drop has"),
-        ([*ROD20, "--t-max", "1 s"], "--t-max: only a drop has"),
+        ([*ROD20, "--time-limit", "1 s"], "--time-limit: only a drop has"),
         (
-            [*FLEX, "--t-max", "1 ms"],
-            "ms after the first touch (its last step ended past --t-max): raise --t-max",
+            [*FLEX, "--time-limit", "1 ms"],
+            "ms after the first touch (its last step ended past --time-limit): raise --time-limit",
         ),
         (["simulate", "sphere", "--vy", "-1 m/s", "--flexible"], "--flexible: a sphere has no"),
         ([*FLEX, "--inertia", "1 kg*m^2"], "--inertia: the flexible rod's inertia"),

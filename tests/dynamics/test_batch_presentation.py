@@ -31,8 +31,8 @@ def gain() -> BatchResult:
 
 @pytest.fixture(scope="module")
 def drops() -> DropBatchResult:
-    """One drop stopped by t_max (it leaves the flat too slowly), one computed."""
-    return il.simulate_drops(ROD, angle=0.35, vy=[-0.001, -1.41], t_max=0.01)
+    """One drop stopped by time_limit (it leaves the flat too slowly), one computed."""
+    return il.simulate_drops(ROD, angle=0.35, vy=[-0.001, -1.41], time_limit=0.01)
 
 
 def test_the_notebook_summary_counts_as_the_repr_and_ok(gain: BatchResult) -> None:
@@ -61,7 +61,7 @@ def test_a_drop_batch_records_what_it_simulated(gain: BatchResult, drops: DropBa
     assert body["type"] == "Rod" and body["mass"]["value"] == ROD.mass
     assert body["tip_radius"]["value"] == ROD.tip_radius and "material" in body
     assert json.loads(attrs["flat_record"])["name"] == il.AISI_1010.name
-    assert (attrs["stop"], attrs["t_max"]) == ("sequence", 0.01)
+    assert (attrs["stop"], attrs["time_limit"]) == ("sequence", 0.01)
     assert attrs["rtol"] == drops.rtol and attrs["gravity"] == drops.gravity
     rigid = set(gain.to_xarray().attrs) - {"constant_angle", "source"}
     assert rigid <= set(attrs)  # the set-up attributes of BatchResult's
@@ -72,9 +72,9 @@ def test_a_failed_drop_of_a_batch_is_worded_as_simulate_drop_words_it(
     drops: DropBatchResult,
 ) -> None:
     with pytest.raises(DropError) as err:
-        il.simulate_drop(ROD, angle=0.35, velocity=(0.0, -0.001), t_max=0.01)
+        il.simulate_drop(ROD, angle=0.35, velocity=(0.0, -0.001), time_limit=0.01)
     single = str(err.value).removeprefix("drop: ")
-    assert "steps" in single and "raise t_max" in single
+    assert "steps" in single and "raise time_limit" in single
     assert drops.messages == [single, "ok"]
 
 

@@ -119,8 +119,8 @@ def test_the_rule_is_in_the_help(monkeypatch, capsys) -> None:
 
 
 def test_the_rule_names_every_drop_override() -> None:
-    """Formerly the help named only --rate among a drop's overrides, while --stop, --t-max and
+    """Formerly the help named only --rate among a drop's overrides, while --stop, --time-limit and
     --rtol are taken too."""
     flat = " ".join(FROM_RULE.split())
-    for option in ("--rtol", "--rate", "--stop", "--t-max"):
+    for option in ("--rtol", "--rate", "--stop", "--time-limit"):
         assert option in flat, option

@@ -55,7 +55,7 @@ def test_an_impact_record_without_a_key_is_refused_naming_it(
     assert "default" in str(err.value)
 
 
-@pytest.mark.parametrize("key", ["rate", "stop", "t_max", "gravity", "rtol", "mu"])
+@pytest.mark.parametrize("key", ["rate", "stop", "time_limit", "gravity", "rtol", "mu"])
 def test_a_drop_record_without_a_key_is_refused_naming_it(drop: dict[str, Any], key: str) -> None:
     assert key in KEYS[SIMULATE_DROP]
     with pytest.raises(ValueError, match=f"lacks '{key}'"):

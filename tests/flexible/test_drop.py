@@ -289,7 +289,7 @@ def test_bad_input() -> None:
         ({"velocity": (0.0, 1.0)}, "approach"),
         ({"rate": "zerilli"}, "rate"),
         ({"stop": "never"}, "stop"),
-        ({"t_max": 0.0}, "t_max"),
+        ({"time_limit": 0.0}, "time_limit"),
         ({"rtol": 1.0}, "rtol"),
     ]
     for kw, word in cases:
@@ -297,5 +297,5 @@ def test_bad_input() -> None:
         body = args.pop("body")
         with pytest.raises(ValueError, match=word):
             simulate_drop(body, **args)
-    with pytest.raises(ValueError, match="t_max"):
-        simulate_drop(rod, **ok, t_max=1e-5)
+    with pytest.raises(ValueError, match="time_limit"):
+        simulate_drop(rod, **ok, time_limit=1e-5)

@@ -112,7 +112,7 @@ def test_recontacts_and_a_failed_drop() -> None:
     drops = simulate_drops(ROD, **kwargs, **cases)
     assert (status == 0).all() and drops["n_contacts"].max() > 1
     assert (drops["n_contacts"] > 1).any()
-    short = _check_equal(ROD, {**kwargs, "t_max": 1e-6}, cases)
+    short = _check_equal(ROD, {**kwargs, "time_limit": 1e-6}, cases)
     assert (short == S.ST_TMAX).all()
 
 
@@ -182,5 +182,5 @@ def test_batch_equals_drop_property(angle, speed, incidence, spin, mu, friction)
         "spin": np.array([spin, 0.0]),
         "mu": np.array([mu, mu]),
     }
-    # t_max bounds the time of a drawn drop that rocks (ST_TMAX, alike in both)
-    _check_equal(ROD, {"law": "ghaednia", "friction": friction, "t_max": 0.02}, cases)
+    # time_limit bounds the time of a drawn drop that rocks (ST_TMAX, alike in both)
+    _check_equal(ROD, {"law": "ghaednia", "friction": friction, "time_limit": 0.02}, cases)

@@ -88,7 +88,7 @@ def test_a_keyword_simulate_drops_does_not_take_is_explained(keyword: str, words
 
 def test_simulate_drops_keeps_its_signature_and_docstring() -> None:
     params = inspect.signature(il.simulate_drops).parameters
-    assert "stop" in params and "t_max" in params and "history" not in params
+    assert "stop" in params and "time_limit" in params and "history" not in params
     assert (il.simulate_drops.__doc__ or "").startswith("Many drops of ``body``")
 
 
@@ -99,7 +99,7 @@ def test_simulate_names_the_nearest_keyword_as_a_batch_does() -> None:
         text = str(info.value)
         assert text.startswith("simulate() got unexpected keyword argument(s) mue (did you mean")
         assert "'mu'?); it takes angle, " in text
-        assert text.endswith("(rate, stop, t_max: a FlexibleRod's drop)")
+        assert text.endswith("(rate, stop, time_limit: a FlexibleRod's drop)")
 
 
 def test_dir_of_a_drops_history_lists_its_columns() -> None:

@@ -93,12 +93,13 @@ def test_history_must_be_a_bool(history: object) -> None:
 
 
 def test_a_failed_drop_names_the_keyword_to_change() -> None:
-    """t_max reached: 'raise t_max' in Python, the option where a command words it."""
+    """time_limit reached: 'raise time_limit' in Python, the option where a command words it."""
     with pytest.raises(DropError) as exc:
-        simulate_drop(ROD, angle=0.35, velocity=(0, -1.41), t_max=1e-5, history=False)
+        simulate_drop(ROD, angle=0.35, velocity=(0, -1.41), time_limit=1e-5, history=False)
     err = exc.value
     assert err.status == F.ST_TMAX
-    assert str(err).endswith(": raise t_max") and "{" not in str(err)
-    assert "ms after the first touch (its last step ended past t_max)" in str(err)  # not before
-    assert err.worded(lambda k: "--" + k.replace("_", "-")).endswith(": raise --t-max")
+    assert str(err).endswith(": raise time_limit") and "{" not in str(err)
+    # after the time, not before it
+    assert "ms after the first touch (its last step ended past time_limit)" in str(err)
+    assert err.worded(lambda k: "--" + k.replace("_", "-")).endswith(": raise --time-limit")
     assert DropError("drop: {odd} text", 3).worded(str) == "drop: {odd} text"

@@ -46,7 +46,7 @@ def _cli(monkeypatch, capsys, *args: str) -> tuple[int, str, str]:
 @pytest.mark.parametrize("body", [PAPER_ROD, FLEX], ids=["rigid", "flexible"])
 def test_a_drop_records_everything_and_reruns_identically(body) -> None:
     r = simulate_drop(body, AL_6061_T6, angle="45 deg", velocity=(0.1, -1.0), mu=0.1,
-                      law_params=None, stop="flight", t_max=0.4)  # fmt: skip
+                      law_params=None, stop="flight", time_limit=0.4)  # fmt: skip
     d = json.loads(json.dumps(r.to_dict()))
     rec = d["input"]
     assert rec is not None and shape_problems(rec) == []
@@ -56,7 +56,7 @@ def test_a_drop_records_everything_and_reruns_identically(body) -> None:
     assert rec["flat"]["E"] == {"value": AL_6061_T6.E, "unit": "Pa"}
     assert rec["angle"] == {"value": math.radians(45), "unit": "rad"}
     assert rec["velocity"] == {"value": [0.1, -1.0], "unit": "m/s"}
-    assert rec["stop"] == "flight" and rec["t_max"] == {"value": 0.4, "unit": "s"}
+    assert rec["stop"] == "flight" and rec["time_limit"] == {"value": 0.4, "unit": "s"}
     assert rec["rate"] is None and rec["rtol"]["value"] > 0 and "constant_angle" not in rec
     _same(il.rerun(d), r)
     _same(il.rerun(rec), r)
@@ -70,7 +70,8 @@ def test_simulate_of_a_flexible_rod_records_the_drop_in_full() -> None:
     r = il.simulate(FLEX, angle=0.5, velocity=(0.0, -1.0), mu=0.1, history=False)
     rec = r.input
     assert rec["function"] == SIMULATE_DROP
-    assert rec["stop"] == "sequence" and rec["t_max"]["value"] == il.dynamics.drop.DEFAULT_T_MAX
+    assert rec["stop"] == "sequence"
+    assert rec["time_limit"]["value"] == il.dynamics.drop.DEFAULT_TIME_LIMIT
     _same(il.rerun(r.to_dict()), r)
 
 

@@ -83,7 +83,7 @@ def test_the_sample_closes_far_inside_the_bound(stop: str) -> None:
         cases = {k: v[:10] for k, v in cases.items()}
     runs = {}
     for rtol in (F.DROP_DEFAULT_RTOL, DROP_RTOL_MAX):
-        b = simulate_drops(FlexibleRod.paper(), rtol=rtol, stop=stop, t_max=2.0, **cases)
+        b = simulate_drops(FlexibleRod.paper(), rtol=rtol, stop=stop, time_limit=2.0, **cases)
         assert np.all(b.status == 0)
         cols = {k: np.asarray(b[k]) for k in BALANCE}
         e0 = np.asarray(b["initial_energy"])

@@ -72,7 +72,7 @@ def test_a_flight_s_dent_depth_and_scar_are_the_tip_s() -> None:
     (69.9 um); the tip's two dents, 11.8 mm apart, give dent_depth (63.9 um) and the scar,
     which spans both and the flat between them."""
     r = simulate_drop(ROD, mu=0.13, angle=math.radians(45), velocity=(0.0, -2.18),
-                      stop="flight", t_max=1.0, history=False)  # fmt: skip
+                      stop="flight", time_limit=1.0, history=False)  # fmt: skip
     tips = [d for d in r.dents if d.end == 0]
     assert len(tips) == 2
     assert max(d.delta_p for d in r.dents) > r.dent_depth == max(d.delta_p for d in tips)

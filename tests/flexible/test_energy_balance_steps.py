@@ -33,7 +33,7 @@ THIN_DROP: dict[str, Any] = {
     "velocity": (0.14, -1.725),
     "mu": 0.276,
     "stop": "flight",
-    "t_max": 2.0,
+    "time_limit": 2.0,
     "history": False,
 }
 

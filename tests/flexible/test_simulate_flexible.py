@@ -41,12 +41,12 @@ def test_simulate_dispatches_to_the_drop() -> None:
 
 
 def test_drop_options_pass_through() -> None:
-    """rate, stop and t_max reach the drop."""
-    a = impactlab.simulate(BODY, angle=0.6, stop="flight", t_max=0.3, history=False, **KW)
-    b = simulate_drop(BODY, angle=0.6, stop="flight", t_max=0.3, **KW)
+    """rate, stop and time_limit reach the drop."""
+    a = impactlab.simulate(BODY, angle=0.6, stop="flight", time_limit=0.3, history=False, **KW)
+    b = simulate_drop(BODY, angle=0.6, stop="flight", time_limit=0.3, **KW)
     assert a.n_contacts == b.n_contacts and a.e == b.e
-    with pytest.raises(ValueError, match="t_max"):
-        impactlab.simulate(BODY, angle=0.6, t_max=1e-6, **KW)
+    with pytest.raises(ValueError, match="time_limit"):
+        impactlab.simulate(BODY, angle=0.6, time_limit=1e-6, **KW)
     r = impactlab.simulate(BODY, angle=0.6, rate="cowper-symonds", history=False, **KW)
     assert r.rate == "cowper-symonds" and r.rate_factor > 1.0
 
@@ -54,8 +54,8 @@ def test_drop_options_pass_through() -> None:
 def test_bad_combinations() -> None:
     """A drop option with a rigid body or an unknown keyword: TypeError naming it;
     constant_angle or a missing angle with a FlexibleRod: ValueError."""
-    with pytest.raises(TypeError, match="got t_max: options of a FlexibleRod's drop"):
-        impactlab.simulate(Rod.paper(), angle=0.3, t_max=0.1, **KW)
+    with pytest.raises(TypeError, match="got time_limit: options of a FlexibleRod's drop"):
+        impactlab.simulate(Rod.paper(), angle=0.3, time_limit=0.1, **KW)
     with pytest.raises(TypeError, match="n_modes; it takes angle"):
         impactlab.simulate(BODY, angle=0.3, n_modes=3, **KW)
     for body in (Rod.paper(), BODY):  # a typo is named with the keyword it resembles

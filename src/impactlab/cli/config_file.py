@@ -9,6 +9,7 @@ names is read relative to the file's folder; each value's errors name it as the 
 from __future__ import annotations
 
 import re
+import sys
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -19,7 +20,15 @@ from impactlab.cli._common import UserError, positive, velocity_input
 from impactlab.cli.config_values import check_booleans
 from impactlab.materials import Material, get_material
 
-__all__ = ["ConfigOptions", "command_table", "merge_config", "option_material", "refuse_given"]
+__all__ = [
+    "RENAMED_KEYS",
+    "ConfigOptions",
+    "command_table",
+    "merge_config",
+    "option_material",
+    "refuse_given",
+    "renamed_options",
+]
 
 #: Keys that say one thing in two forms: given on the command line in one form, the file's
 #: keys of the other form are not read (the velocity: ``vx``/``vy`` or ``speed``/``incidence``).
@@ -29,6 +38,9 @@ FILE_KEYS = ("material", "flat")
 #: Other names of a key, read as it (their names elsewhere: study files, [rod] tables,
 #: ``FlexibleRod``'s keywords): an alias by the key it gives.
 KEY_ALIASES = {"tip_radius": "radius", "n_axial": "modes_axial", "n_bending": "modes_bending"}
+#: Keys renamed in 0.3, read under their old name until 0.4 with a deprecation line on stderr
+#: (a config file's ``t_max``, the option ``--t-max``): old key -> key.
+RENAMED_KEYS = {"t_max": "time_limit"}
 
 
 @dataclass(frozen=True)
@@ -120,7 +132,8 @@ def merge_config(
     the config file's ``section``. Refused: a material in parts (``flat_E``), an unknown key
     (with the nearest of ``keys``, or its ``notes``: why a key of another command is none of
     this one's), a switch of ``flags`` that is no TOML boolean; an alias (``KEY_ALIASES``:
-    ``tip_radius``, ``n_axial``, ``n_bending``) is read as its key. A velocity given on the
+    ``tip_radius``, ``n_axial``, ``n_bending``) is read as its key, as is a key's name before
+    0.3 (``RENAMED_KEYS``: ``t_max``, with a line on stderr). A velocity given on the
     command line in one form leaves out the file's other form (``ALTERNATIVES``); a relative
     material file's path (``FILE_KEYS``: text ending in .toml) is read from the file's folder."""
     section, spelt = _unaliased(section, keys, config_path)
@@ -152,9 +165,22 @@ def _unaliased(
     section: Mapping[str, Any], keys: tuple[str, ...], config_path: Path | None
 ) -> tuple[dict[str, Any], dict[str, str]]:
     """``section`` with each alias of a key among ``keys`` (``KEY_ALIASES``: ``n_axial``,
-    ``tip_radius``) read as that key, and the file's name of each key so given; UserError for
-    a key given under both names."""
+    ``tip_radius``) or its name before 0.3 (``RENAMED_KEYS``: ``t_max``, said on stderr) read
+    as that key, and the file's name of each key so given; UserError for a key given under
+    both names."""
     out, spelt = dict(section), {}
+    where = config_path or "the config file"
+    for old, key in RENAMED_KEYS.items():
+        if old not in out or key not in keys:
+            continue
+        if key in out:
+            raise UserError(
+                f"{key} and {old} in {where}: {old} is the name of {key} before impactlab 0.3; "
+                f"give {key} only"
+            )
+        _say_renamed(f"{old} (in {where})", key)
+        out[key] = out.pop(old)
+        spelt[key] = old
     for alias, key in KEY_ALIASES.items():
         if alias not in out or key not in keys:
             continue
@@ -166,6 +192,35 @@ def _unaliased(
         out[key] = out.pop(alias)
         spelt[key] = alias
     return out, spelt
+
+
+def _say_renamed(old: str, new: str) -> None:
+    """The one line on stderr of an option or key given under its name before 0.3."""
+    print(
+        f"warning: {old} is renamed {new} (impactlab 0.3); the old name goes in 0.4",
+        file=sys.stderr,
+    )
+
+
+def renamed_options(cli: Mapping[str, Any], former: Mapping[str, Any]) -> dict[str, Any]:
+    """The command line's options ``cli`` (by key, None: not given) with each option given
+    under its name before 0.3 (``former``: by old key of ``RENAMED_KEYS``, None: not given;
+    ``--t-max``) as its key (``time_limit``), said on stderr in one line; UserError when both
+    are given."""
+    out = dict(cli)
+    for old, value in former.items():
+        if value is None:
+            continue
+        key = RENAMED_KEYS[old]
+        flag, old_flag = (f"--{k.replace('_', '-')}" for k in (key, old))
+        if out.get(key) is not None:
+            raise UserError(
+                f"{flag} and {old_flag}: {old_flag} is the name of {flag} before impactlab 0.3; "
+                f"give {flag} only"
+            )
+        _say_renamed(old_flag, flag)
+        out[key] = value
+    return out
 
 
 def _beside(value: Any, config_path: Path) -> Any:

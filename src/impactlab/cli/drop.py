@@ -49,11 +49,12 @@ from impactlab.cli.config_file import (
     command_table,
     merge_config,
     option_material,
+    renamed_options,
 )
 from impactlab.cli.config_values import option_numbers, plain_number, text
 from impactlab.cli.drop_body import MODES_ALIASES, MODES_HELP, drop_body
 from impactlab.cli.simulate_from import run_from
-from impactlab.dynamics.drop import DEFAULT_T_MAX, simulate_drop
+from impactlab.dynamics.drop import DEFAULT_TIME_LIMIT, simulate_drop
 from impactlab.dynamics.drop_checks import DropError
 from impactlab.dynamics.drop_result import UNITS, DropResult
 from impactlab.friction import DEFAULT_MU
@@ -238,17 +239,18 @@ def drop_cmd(
         "tighter.",
     ),
     stop: str = typer.Option(None, "--stop", help=STOP_HELP[0].upper() + STOP_HELP[1:]),
-    t_max: str = typer.Option(
+    time_limit: str = typer.Option(
         None,
-        "--t-max",
+        "--time-limit",
         help="Longest simulated time after the first touch, e.g. '2 s' (bare number: s; "
-        "default 500 ms): a long or slow rod may need more.",
+        f"default {DEFAULT_TIME_LIMIT * 1e3:g} ms): a long or slow rod may need more.",
     ),
+    t_max: str = typer.Option(None, "--t-max", hidden=True),  # --time-limit before 0.3
     from_file: Path = typer.Option(
         None,
         "--from",
         help="Drop again the drop recorded in a drop's JSON (drop --json), with the options "
-        "given on top (--rtol and --t-max too): the rule of 'impactlab simulate --from' (the "
+        "given on top (--rtol and --time-limit too): the rule of 'impactlab simulate --from' (the "
         "body's options and --config refused).",
     ),
     config: Path = typer.Option(None, "--config", help=CONFIG_HELP),
@@ -286,6 +288,7 @@ def drop_cmd(
     # the options named like the config file's keys, as given on the command line (else None)
     cli = {k: v if _on_command_line(ctx, k) else None for k, v in locals().items() if k in KEYS}
     cli = option_numbers(cli, ("mu", "damping", "rtol"))
+    cli = renamed_options(cli, {"t_max": t_max if _on_command_line(ctx, "t_max") else None})
     if from_file is not None:  # the recorded drop, with the options given on top
         if config is not None:
             raise UserError(
@@ -306,7 +309,7 @@ def run_drop(opt: ConfigOptions) -> DropResult:
     errors naming each value as the user gave it (``opt.label``)."""
     v = opt.values
 
-    def name(key: str, like: str | None = None) -> str:  # the API's keywords (t_max) too
+    def name(key: str, like: str | None = None) -> str:  # the API's keywords (time_limit) too
         return opt.label(key, like) if key in KEYS else key
 
     if not opt.given("angle"):
@@ -348,11 +351,11 @@ def run_drop(opt: ConfigOptions) -> DropResult:
             history=False,
             stop=text(v.get("stop", "sequence"), name("stop")),
             rtol=None if v.get("rtol") is None else plain_number(v["rtol"], name("rtol")),
-            t_max=positive(v.get("t_max"), "s", name("t_max")) or DEFAULT_T_MAX,
+            time_limit=positive(v.get("time_limit"), "s", name("time_limit")) or DEFAULT_TIME_LIMIT,
         )
     except UserError:
         raise
-    except DropError as exc:  # "raise {t_max}": the option's or the key's name
+    except DropError as exc:  # "raise {time_limit}": the option's or the key's name
         raise UserError(exc.worded(name)) from None
     except ValueError as exc:  # the API's message names its keyword (mu): name the option
         raise UserError(as_option(approach_worded(str(exc), opt), KEYS, name)) from None
@@ -361,7 +364,8 @@ def run_drop(opt: ConfigOptions) -> DropResult:
 #: The options of ``drop`` a ``--config`` file gives by key (``--from`` reads them as given).
 KEYS: tuple[str, ...] = ("angle", "vy", "vx", "speed", "incidence", "spin", "length", "radius")
 KEYS += ("mass", "diameter", "inertia", "material", "flat", "mu", "friction", "law", "rate")
-KEYS += ("rigid", "modes_axial", "modes_bending", "damping", "gravity", "rtol", "stop", "t_max")
+KEYS += ("rigid", "modes_axial", "modes_bending", "damping", "gravity", "rtol", "stop")
+KEYS += ("time_limit",)
 #: Command-line spelling of the keys whose option is not ``--<key>``.
 _FLAGS = {"gravity": "--no-gravity/--gravity", "rigid": "--rigid/--flexible"}
 #: Keys of ``impactlab simulate``'s config file that are not the drop's: why.

@@ -36,6 +36,7 @@ from impactlab.cli.config_file import (
     merge_config,
     option_material,
     refuse_given,
+    renamed_options,
 )
 from impactlab.cli.config_values import option_numbers, plain_number, text
 from impactlab.cli.drop_body import MODES_ALIASES, flexible_rod, paper_mass
@@ -43,7 +44,7 @@ from impactlab.cli.simulate_from import FROM_RULE, run_from
 from impactlab.cli.simulate_help import HELP
 from impactlab.cli.simulate_output import check_plot_folder, report_result
 from impactlab.dynamics import ImpactResult, simulate
-from impactlab.dynamics.drop import DEFAULT_T_MAX
+from impactlab.dynamics.drop import DEFAULT_TIME_LIMIT
 from impactlab.dynamics.drop_checks import DropError
 from impactlab.dynamics.drop_result import DropResult
 from impactlab.friction import DEFAULT_MU
@@ -78,13 +79,13 @@ _KEYS = (
     "damping",
     "rate",
     "stop",
-    "t_max",
+    "time_limit",
 )
 #: Options of a rod that a sphere does not have.
 _ROD_ONLY = ("angle", "length", "inertia", "constant_angle", "diameter")
 #: Options of the flexible rod (``--flexible``) only: its modes and their damping (no rigid
 #: rod's), then those of any drop (``impactlab drop --rigid`` takes them).
-_FLEX_ONLY = ("modes_axial", "modes_bending", "damping", "rate", "stop", "t_max")
+_FLEX_ONLY = ("modes_axial", "modes_bending", "damping", "rate", "stop", "time_limit")
 #: Options the flexible rod's drop does not have.
 _NOT_FLEX = ("inertia", "constant_angle")
 #: Command-line spelling of the keys whose option is not ``--<key>``.
@@ -203,8 +204,9 @@ def run_simulate(opt: ConfigOptions) -> ImpactResult | DropResult:
         check_rate_flat(rate, common["flat"], opt.label("rate"))
         check_rate_law(rate, common["law"], opt.label("rate"), opt.label("law"))
         stop = text(cfg.get("stop", "sequence"), opt.label("stop"))
-        t_max = positive(cfg.get("t_max"), "s", opt.label("t_max")) or DEFAULT_T_MAX
-        return simulate(body, angle=rod_angle, rate=rate, stop=stop, t_max=t_max, history=False,
+        limit = positive(cfg.get("time_limit"), "s", opt.label("time_limit"))
+        return simulate(body, angle=rod_angle, rate=rate, stop=stop, history=False,
+                        time_limit=DEFAULT_TIME_LIMIT if limit is None else limit,
                         **common)  # fmt: skip
     return simulate(
         body,
@@ -264,7 +266,8 @@ def simulate_cmd(
     damping: str = _option("damping"),
     rate: str = _option("rate"),
     stop: str = _option("stop"),
-    t_max: str = _option("t_max"),
+    time_limit: str = _option("time_limit"),
+    t_max: str = typer.Option(None, "--t-max", hidden=True),  # --time-limit before 0.3
     rtol: str = typer.Option(None, "--rtol", help=HELP["rtol"]),
     partial_slip_cells: int = _option("partial_slip_cells"),
     config: Path = typer.Option(
@@ -305,6 +308,7 @@ def simulate_cmd(
     # the options named like the config file's keys, as given (None: not given)
     cli = {k: v for k, v in locals().items() if k in _KEYS}  # switches: True, False or None
     cli = option_numbers(cli, ("mu", "damping", "rtol"))
+    cli = renamed_options(cli, {"t_max": t_max})
     if out is not None and not plot:
         raise UserError("--out applies only with --plot (where to save the figures)")
     if from_file is not None and config is not None:
@@ -333,7 +337,7 @@ def simulate_cmd(
             except UserError as exc:  # named already; a mass that does not fit: as typed
                 raise UserError(approach_worded(str(exc), opt)) from None
             except ValueError as exc:  # the API's message names its parameter: name the option
-                if isinstance(exc, DropError):  # "raise t_max": the option's spelling
+                if isinstance(exc, DropError):  # "raise time_limit": the option's spelling
                     raise UserError(exc.worded(opt.label)) from None
                 message = approach_worded(str(exc), opt)  # --vy, --spin as typed
                 raise UserError(as_option(message, _KEYS, opt.label)) from None

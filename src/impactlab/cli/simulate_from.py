@@ -53,7 +53,7 @@ FROM_RULE = (
     "--incidence the velocity), --spin, --mu, --law (a new law drops the recorded law "
     "parameters), --friction, --flat, --gravity/--no-gravity, --rtol, --constant-angle/"
     "--no-constant-angle and --partial-slip-cells (rigid impact), and --rate, --stop and "
-    "--t-max (drop) override it; the body's options "
+    "--time-limit (drop) override it; the body's options "
     "(body, --material, sizes, --inertia, modes, --damping, --flexible/--rigid) and --config "
     "are refused: the body is the recorded one."
 )
@@ -144,9 +144,9 @@ def _label(key: str) -> str:
 
 
 def option_error(exc: ValueError, options: Iterable[str]) -> UserError:
-    """The API's error ``exc`` for the command line: a keyword it names (``t_max``, ``rtol``,
-    its leading parameter) spelled as the option (``--t-max``) where the command's ``options``
-    (its keys) have it (``DropError.worded``, ``_common.as_option``)."""
+    """The API's error ``exc`` for the command line: a keyword it names (``time_limit``,
+    ``rtol``, its leading parameter) spelled as the option (``--time-limit``) where the
+    command's ``options`` (its keys) have it (``DropError.worded``, ``_common.as_option``)."""
     if isinstance(exc, UserError):
         return exc
     keys = frozenset(options)
@@ -218,10 +218,10 @@ def _options(given: Mapping[str, Any], drop: bool) -> dict[str, Any]:
                 "impacts to follow); leave it out"
             )
         changes["stop"] = str(given["stop"])
-    if given.get("t_max") is not None:  # impactlab drop --t-max
+    if given.get("time_limit") is not None:  # impactlab drop --time-limit
         if not drop:
-            raise UserError("--t-max: the recorded impact is not a drop; leave it out")
-        changes["t_max"] = positive(given["t_max"], "s", "--t-max")
+            raise UserError("--time-limit: the recorded impact is not a drop; leave it out")
+        changes["time_limit"] = positive(given["time_limit"], "s", "--time-limit")
     return changes
 
 
@@ -291,7 +291,7 @@ def run_from(
         check_rate_law(rate, changes.get("law", recorded.get("law")), blame, law_blame)
     try:
         return rerun(record, **changes)
-    except ValueError as exc:  # the keyword it names (t_max) as the command's option
+    except ValueError as exc:  # the keyword it names (time_limit) as the command's option
         raise UserError(f"--from {str(path)!r}: {option_error(exc, given or {})}") from None
     except TypeError as exc:
         raise UserError(f"--from {str(path)!r}: {exc}") from None

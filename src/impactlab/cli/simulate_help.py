@@ -5,7 +5,7 @@ from __future__ import annotations
 from impactlab._display import format_number
 from impactlab.cli._common import KINEMATIC_HELP, STOP_HELP, length_help, rate_help
 from impactlab.cli.drop_body import MODES_HELP
-from impactlab.dynamics.drop import DEFAULT_T_MAX
+from impactlab.dynamics.drop import DEFAULT_TIME_LIMIT
 from impactlab.dynamics.flexcore.layout import DROP_DEFAULT_RTOL
 from impactlab.dynamics.input_checks import PARTIAL_SLIP_RTOL_MAX
 from impactlab.dynamics.kernels.layout import DEFAULT_RTOL, PARTIAL_SLIP_RTOL
@@ -40,8 +40,8 @@ HELP = {
     "damping": "Flexible rod: modal damping ratio zeta of every mode, in [0, 1) (default 0).",
     "rate": f"Flexible rod only. {rate_help()}",
     "stop": f"Flexible rod: {STOP_HELP}",
-    "t_max": "Flexible rod: longest simulated time after the first touch, e.g. '2 s' (bare "
-    f"number: s; default {DEFAULT_T_MAX * 1e3:g} ms).",
+    "time_limit": "Flexible rod: longest simulated time after the first touch, e.g. '2 s' "
+    f"(bare number: s; default {DEFAULT_TIME_LIMIT * 1e3:g} ms).",
     "rtol": f"Integration tolerance, in [1e-13, 1e-3] (default {_n(DEFAULT_RTOL)}, "
     f"{_n(PARTIAL_SLIP_RTOL)} with partial_slip, {_n(DROP_DEFAULT_RTOL)} for the flexible rod; "
     f"{_n(PARTIAL_SLIP_RTOL_MAX)} at most for the flexible rod and with partial_slip).",

@@ -15,6 +15,7 @@ import math
 from collections.abc import Mapping
 from typing import Any
 
+from impactlab import schema
 from impactlab._validation import check_finite, check_flag, refuse_unknown_keywords
 from impactlab.bodies import Rod, lever_arms
 from impactlab.bodies.flexible_rod import FlexibleRod
@@ -71,6 +72,7 @@ from impactlab.dynamics.models import (
     references_used,
 )
 from impactlab.dynamics.provenance import SIMULATE_DROP
+from impactlab.dynamics.time_limit import DEFAULT_TIME_LIMIT, takes_renamed
 from impactlab.friction import (
     COULOMB,
     DEFAULT_MU,
@@ -81,7 +83,7 @@ from impactlab.friction import (
 from impactlab.materials import AISI_1010, Material
 
 __all__ = [
-    "DEFAULT_T_MAX",
+    "DEFAULT_TIME_LIMIT",
     "DROP_FRICTION",
     "MIN_APPROACH_SPEED",
     "STOP_MODES",
@@ -89,8 +91,6 @@ __all__ = [
     "simulate_drop",
 ]
 
-#: Longest simulated time after the first touch [s] (a sequence still going is an error).
-DEFAULT_T_MAX = 0.5
 #: Contact laws without plasticity: a rate-dependent flat is refused with them.
 ELASTIC_LAWS = frozenset({"hertz"})
 
@@ -144,6 +144,7 @@ _NOTES = {"partial_slip_cells": f"a drop's partial slip has {PARTIAL_SLIP_CELLS}
           " per end", "constant_angle": "a drop follows the rod's rotation"}  # fmt: skip
 
 
+@takes_renamed  # t_max=, time_limit's name before 0.3 (a DeprecationWarning)
 @refuse_unknown_keywords(_NOTES)
 def simulate_drop(
     body: FlexibleRod | Rod,
@@ -161,7 +162,7 @@ def simulate_drop(
     history: bool = True,
     law_params: Mapping[str, float] | None = None,
     stop: str = "sequence",
-    t_max: Any = DEFAULT_T_MAX,
+    time_limit: Any = DEFAULT_TIME_LIMIT,
     speed: Any = None,
     incidence: Any = None,
     vx: Any = None,
@@ -188,7 +189,9 @@ def simulate_drop(
     long with them, 12 ms against 7.5 ms); law_params: the law's parameters; stop:
     ``"sequence"`` (stop when the tip is clear until the other end could land: that is a new
     impact, ``next_end`` / ``next_time``) or ``"flight"`` (go on through the other end's
-    impacts until the rod flies off); t_max [s]: the longest simulated time.
+    impacts until the rod flies off); time_limit [s]: the longest simulated time after the first
+    touch (default ``DEFAULT_TIME_LIMIT``, 0.5 s; ``t_max=``, its name before 0.3, is read as
+    it with a DeprecationWarning until 0.4).
 
     Returns a DropResult: every contact, the dents, the totals, the energy balance, the
     history if asked, the references and ``input``, the record of this call
@@ -214,7 +217,7 @@ def simulate_drop(
     vx, vy = check_velocity(velocity)
     w = check_spin(check_finite("spin", spin, "rad/s"), contact_reach(bm.rigid))
     g = gravity_value(gravity)
-    options = (drop_rtol(rtol, fric), *check_stop(stop, t_max))
+    options = (drop_rtol(rtol, fric), *check_stop(stop, time_limit))
     record_history = check_flag("history", history)
     vn0 = vy - w * bm.rigid.half_length * math.cos(th)
     if not vn0 < 0.0:
@@ -267,7 +270,15 @@ def simulate_drop(
         warn_no_dent(rate_law, factor, flat.yield_strength, onsets, result.dent_depth,
                      result.delta_max)  # fmt: skip
     # what was simulated, checked, for DropResult.input (``dynamics.provenance``)
-    drop_options = {"rate": rate_law, "stop": stop, "t_max": options[1]}
+    drop_options = {"rate": rate_law, "stop": stop, "time_limit": options[1]}
     call = (body, flat, law, law_params, g, None, options[0], drop_options, SIMULATE_DROP)
     object.__setattr__(result, "_call", call)
     return result
+
+
+def __getattr__(name: str) -> Any:
+    """``DEFAULT_T_MAX``, ``DEFAULT_TIME_LIMIT``'s name before 0.3 (a DeprecationWarning)."""
+    if name == "DEFAULT_T_MAX":
+        schema.warn_renamed("DEFAULT_T_MAX", "DEFAULT_TIME_LIMIT", "constant")
+        return DEFAULT_TIME_LIMIT
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

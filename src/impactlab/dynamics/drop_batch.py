@@ -26,9 +26,8 @@ from impactlab.contact.brittle import brittle_flags, brittle_pressure
 from impactlab.contact.range_note import range_note
 from impactlab.contact.ranges import delta_ratio, extrapolation_flags
 from impactlab.dynamics.checks import checked_model
-from impactlab.dynamics.drop import DEFAULT_T_MAX
 from impactlab.dynamics.drop_batch_data import ENGINE_NAME
-from impactlab.dynamics.drop_batch_result import DropBatchResult
+from impactlab.dynamics.drop_batch_result import DropBatchResult, DropSetup
 from impactlab.dynamics.drop_body import body_model
 from impactlab.dynamics.drop_checks import (
     check_body,
@@ -58,6 +57,7 @@ from impactlab.dynamics.kernels import status as S
 from impactlab.dynamics.kernels.layout import MU_NEGLIGIBLE
 from impactlab.dynamics.models import body_params, kernel_params, references_used
 from impactlab.dynamics.simulate_many import _batch_inputs, flattening_words
+from impactlab.dynamics.time_limit import DEFAULT_TIME_LIMIT, takes_renamed
 from impactlab.flags import FLAG_GRAVITY_DOMINATED
 from impactlab.friction import COULOMB, DEFAULT_MU, PARTIAL_SLIP, PARTIAL_SLIP_CELLS
 from impactlab.materials import AISI_1010, Material
@@ -76,6 +76,7 @@ DROPS_KEYWORD_NOTES = {
 }
 
 
+@takes_renamed  # t_max=, time_limit's name before 0.3 (a DeprecationWarning)
 @refuse_unknown_keywords(DROPS_KEYWORD_NOTES)
 def simulate_drops(
     body: FlexibleRod | Rod,
@@ -92,7 +93,7 @@ def simulate_drops(
     gravity: Any = True,
     rtol: float | None = None,
     stop: str = "sequence",
-    t_max: Any = DEFAULT_T_MAX,
+    time_limit: Any = DEFAULT_TIME_LIMIT,
     speed: Any = None,
     incidence: Any = None,
     velocity: Any = None,
@@ -107,7 +108,8 @@ def simulate_drops(
     1-D arrays, broadcast against each other (the dimensional ones may carry units, as in
     ``simulate_batch``). law, friction (``"coulomb"``, ``"impulse_ratio"``, ``"mindlin"``,
     ``"partial_slip"``), law_params, gravity (True, False or [m/s^2]), rtol (default 1e-7),
-    stop and t_max [s] as ``simulate_drop``, the same for every case. ``rate`` (a
+    stop and time_limit [s] as ``simulate_drop`` (``t_max=``, its name before 0.3, read as
+    it with a DeprecationWarning), the same for every case. ``rate`` (a
     rate-dependent flat) is refused with a ValueError: its self-consistent factor iterates drop
     by drop (``simulate_drop(..., rate=...)`` for each case).
 
@@ -116,7 +118,7 @@ def simulate_drops(
     whose drop fails (its status, e.g. ST_TMAX, or ST_INACCURATE when the energy balance
     closed worse than rtol promises) gets its status in ``DropBatchResult.status`` (its reason
     in ``messages``) and NaN outputs; it never stops the batch. ValueError for a bad body,
-    flat, law, friction, gravity, rtol (with partial slip: up to 1e-5), stop or t_max (one
+    flat, law, friction, gravity, rtol (with partial slip: up to 1e-5), stop or time_limit (one
     message naming it), and for a bad ``speed`` or ``incidence`` (checked before any case
     runs, as ``simulate_batch`` does: each offending case named by its index). TypeError for a
     keyword it does not take, with the nearest name or what to use instead
@@ -137,7 +139,7 @@ def simulate_drops(
         )
     g = gravity_value(gravity)
     r = drop_rtol(rtol, fric)
-    t_end, stop_mode = check_stop(stop, t_max)
+    t_end, stop_mode = check_stop(stop, time_limit)
     model = checked_model(bm.rigid, flat, law, law_params)
     vx, vy = batch_velocity(vx, vy, speed, incidence, velocity)
     cols = _batch_inputs({"mu": mu, "angle": angle, "vx": vx, "vy": vy, "spin": spin}, bm.rigid)
@@ -189,6 +191,8 @@ def simulate_drops(
                         law=law, law_params=law_params)  # fmt: skip
     depths = out[:, F.DROP_OUTPUT_FIELDS.index(ENGINE_NAME["dent_depth"])][status == 0]
     yields, said = flattening_words(bm.rigid.material, flat, depths, "dent_depth")
+    drop_setup: dict[str, Any] = {"body": bm.description, "stop": stop, "time_limit": t_end}
+    drop_setup["body_yields_first"] = int(yields)
     return DropBatchResult(
         out=out,
         status=status,
@@ -206,8 +210,7 @@ def simulate_drops(
         refusals={i: t for i, t in refusals.items() if status[i] == S.ST_BAD_INPUT}
         | failed
         | inaccurate,
-        setup=setup
-        | {"body": bm.description, "stop": stop, "t_max": t_end, "body_yields_first": int(yields)},
+        setup=DropSetup(setup | drop_setup),
         body_yields_first=yields,
         warnings=said,
     )

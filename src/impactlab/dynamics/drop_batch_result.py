@@ -28,7 +28,19 @@ from impactlab.dynamics.pint_fields import pint_unit
 from impactlab.references import Reference
 from impactlab.references import dois as doi_list
 
-__all__ = ["DropBatchResult"]
+__all__ = ["DropBatchResult", "DropSetup"]
+
+
+class DropSetup(dict[str, Any]):
+    """``DropBatchResult.setup``: its key before 0.3, ``"t_max"``, still reads
+    ``"time_limit"`` with a DeprecationWarning; it is not among its keys (nor the attributes
+    of ``to_xarray``)."""
+
+    def __missing__(self, key: str) -> Any:
+        if key != "t_max":
+            raise KeyError(key)
+        schema.warn_renamed("t_max", "time_limit", "DropBatchResult.setup key")
+        return self["time_limit"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -73,7 +85,7 @@ class DropBatchResult(BatchStatus):
     refusals: Mapping[int, str] = field(default_factory=dict, repr=False)
     #: what was simulated besides the per-case inputs, as ``to_xarray``'s attributes, those of
     #: ``BatchResult.setup`` (``export.batch_setup``: body_record, flat, flat_record, gravity,
-    #: rtol, law_params) with the drop's ``stop`` and ``t_max`` [s]
+    #: rtol, law_params) with the drop's ``stop`` and ``time_limit`` [s] (``DropSetup``)
     setup: Mapping[str, Any] = field(default_factory=dict, repr=False)
     #: whether the rod's material yields before the flat's (``materials.body_yields_first``;
     #: one pair per call): dent_depth is then the rod's flattening, not a dent in the flat;

@@ -132,16 +132,17 @@ DROP_STATUS_MESSAGES: dict[int, str] = S.STATUS_MESSAGES | {
 }
 
 
-def check_stop(stop: Any, t_max: Any) -> tuple[float, int]:
-    """(t_max [s], the compiled stop mode)."""
+def check_stop(stop: Any, time_limit: Any) -> tuple[float, int]:
+    """(time_limit [s], the compiled stop mode)."""
     if stop not in STOP_MODES:
         hint = did_you_mean(stop, STOP_MODES)
         raise ValueError(f"stop must be one of {', '.join(STOP_MODES)}, got {stop!r}{hint}")
-    return check_positive("t_max", t_max, "s"), STOP_MODES.index(stop)
+    return check_positive("time_limit", time_limit, "s"), STOP_MODES.index(stop)
 
 
-#: The keywords a drop's error tells the user to change: ``{t_max}`` in a message's template.
-DROP_KEYWORDS = ("t_max", "rtol", "friction")
+#: The keywords a drop's error tells the user to change: ``{time_limit}`` in a message's
+#: template.
+DROP_KEYWORDS = ("time_limit", "rtol", "friction")
 
 
 def _literal(text: str) -> str:
@@ -226,9 +227,9 @@ def input_status(
 
 class DropError(ValueError):
     """A drop whose integration failed; ``status`` is its code (``flexcore.layout.ST_*``).
-    ``template``: the message with the keywords it asks to change as ``{t_max}``, ``{rtol}``,
-    ``{friction}`` (``DROP_KEYWORDS``); ``str(error)`` names the Python keywords,
-    ``worded(label)`` the caller's spelling (``impactlab drop``: ``--t-max``)."""
+    ``template``: the message with the keywords it asks to change as ``{time_limit}``,
+    ``{rtol}``, ``{friction}`` (``DROP_KEYWORDS``); ``str(error)`` names the Python keywords,
+    ``worded(label)`` the caller's spelling (``impactlab drop``: ``--time-limit``)."""
 
     def __init__(self, message: str, status: int, *, template: str | None = None) -> None:
         self.template = _literal(message) if template is None else template
@@ -247,13 +248,13 @@ def status_error(status: int, model: ContactModel, out: np.ndarray | None = None
     if out is not None:
         steps, t = int(out[F.O_N_STEPS]), float(out[F.O_T_FINAL])
         where = f" after {steps} steps, {t * 1e3:.4g} ms after the first touch"
-    past_t_max = " (its last step ended past {t_max})" if where else ""
-    hints = {  # templates: {t_max}, {rtol}, {friction} name the keyword (DropError.worded)
+    past_limit = " (its last step ended past {time_limit})" if where else ""
+    hints = {  # templates: {time_limit}, {rtol}, {friction} name the keyword (DropError.worded)
         F.ST_LAW_LIMIT: f" ({model.max_interference:.6g} m for the {_literal(repr(model.name))} "
         f"law){where}: the contact force could not stop the rod within the law's range (too "
         "fast an impact, a jammed friction contact or too strong gravity); lower the impact "
         "velocity, mu or gravity, or choose another law",
-        F.ST_TMAX: f"{where}{past_t_max}: raise {{t_max}}",
+        F.ST_TMAX: f"{where}{past_limit}: raise {{time_limit}}",
         F.ST_MAX_STEPS: f"{where} (the limit: {F.DROP_MAX_STEPS}; with partial slip "
         f"{F.PARTIAL_STEP_FACTOR} times the steps of its Mindlin pre-pass, at least "
         f"{F.PARTIAL_MIN_STEPS}): a long, creeping contact (resting, rocking or rolling), or "

@@ -59,11 +59,11 @@ def run_drop(
     max_steps: int = F.DROP_MAX_STEPS,
 ) -> DropRun:
     """One compiled drop. state = (angle, vx, vy, spin); friction = (id, mu, G* [Pa], the cell
-    widths of the ends [m] (partial slip)); options = (rtol, t_max, stop, history); the step
-    limit."""
+    widths of the ends [m] (partial slip)); options = (rtol, time_limit [s], stop, history);
+    the step limit."""
     angle, vx, vy, w = state
     fid, mu, gstar, widths = friction
-    rtol, t_max, stop, history = options
+    rtol, time_limit, stop, history = options
     rod = bm.rigid
     p = kernel_params(model)
     c = constants(
@@ -77,7 +77,7 @@ def run_drop(
     with one_line():  # a first drop compiles the addresses' functions, then the drop
         mdl = model_tuple(model.law_id, p, c, bm.omega, bm.zeta, bm.U, bm.W, bm.Psi, bm.geometric)
         st, ncon, nd, hist, _nh = drop(
-            mdl, vx, vy, w, rtol, t_max, stop, history, out, contacts, dents, yfinal
+            mdl, vx, vy, w, rtol, time_limit, stop, history, out, contacts, dents, yfinal
         )
     return DropRun(
         int(st), out, contacts[:ncon].copy(), dents[:nd].copy(), hist if history else None

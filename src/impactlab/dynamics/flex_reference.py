@@ -144,10 +144,10 @@ def _integrate(
     return eerr, t, y
 
 
-def _first_below(clear: Any, vy: float, w: float, g: float, t_max: float) -> float:
-    """First tau in [0, t_max] [s] at which the clearance ``clear(tau)`` [m] may reach 0
+def _first_below(clear: Any, vy: float, w: float, g: float, horizon: float) -> float:
+    """First tau in [0, horizon] [s] at which the clearance ``clear(tau)`` [m] may reach 0
     (conservative advancement with the speed bound |vy - g tau| + w [m/s], as the engine's
-    ``flight.first_below``); t_max + 1 if it stays above."""
+    ``flight.first_below``); horizon + 1 if it stays above."""
     tau = 0.0
     for _ in range(100000):
         h = clear(tau)
@@ -158,10 +158,10 @@ def _first_below(clear: Any, vy: float, w: float, g: float, t_max: float) -> flo
         if g > 0.0:
             dt = (-v0 + math.sqrt(v0 * v0 + 4.0 * g * rhs)) / (2.0 * g)
         else:
-            dt = rhs / v0 if v0 > 0.0 else t_max + 1.0
+            dt = rhs / v0 if v0 > 0.0 else horizon + 1.0
         tau += dt
-        if tau > t_max:
-            return t_max + 1.0
+        if tau > horizon:
+            return horizon + 1.0
     return tau
 
 
@@ -195,7 +195,7 @@ def open_sequence(run: FEDrop, y: np.ndarray, body: FlexibleRod) -> str:
     horizon = min(2.0 * vyc / g if (g > 0.0 and vyc > 0.0) else math.inf, HORIZON_CAP)
     speed = abs(w) * half
 
-    def touch_time(k: int, t_max: float) -> float:
+    def touch_time(k: int, until: float) -> float:
         band = math.sqrt(2.0 * evib * float(np.sum((bm.U[k] ** 2 + bm.W[k] ** 2) / bm.omega**2)))
         sk = -1.0 if k == 0 else 1.0
 
@@ -203,7 +203,7 @@ def open_sequence(run: FEDrop, y: np.ndarray, body: FlexibleRod) -> str:
             yk = yc + vyc * tau - 0.5 * g * tau * tau + sk * half * math.sin(th + w * tau)
             return yk - fe.R - band
 
-        return _first_below(clear, vyc, speed, g, t_max)
+        return _first_below(clear, vyc, speed, g, until)
 
     last = int(run.contacts[-1]["end"])
     t_other = touch_time(1 - last, horizon)

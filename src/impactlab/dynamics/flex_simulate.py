@@ -15,6 +15,7 @@ from impactlab._validation import check_flag, unexpected_keywords
 from impactlab.bodies.flexible_rod import MAX_MODES, FlexibleRod
 from impactlab.dynamics.drop import simulate_drop
 from impactlab.dynamics.drop_result import DropResult
+from impactlab.dynamics.time_limit import RENAMED_KEYWORDS, renamed_keywords
 from impactlab.materials import AISI_1010, Material
 
 __all__ = [
@@ -27,7 +28,7 @@ __all__ = [
 
 
 #: Options of ``impactlab.simulate`` that only the flexible drop takes.
-DROP_OPTIONS = ("rate", "stop", "t_max")
+DROP_OPTIONS = ("rate", "stop", "time_limit")
 #: simulate's arguments that ``simulate_drop`` takes under the same name.
 _SIMULATE_ARGS: tuple[str, ...] = ("law", "friction", "mu", "angle", "velocity", "spin")
 _SIMULATE_ARGS += ("law_params", "gravity", "rtol")
@@ -43,17 +44,17 @@ def simulate_flexible(
 ) -> DropResult:
     """``impactlab.simulate`` for a FlexibleRod: the flexible drop (``simulate_drop``) with
     simulate's arguments (law, friction, mu, angle, velocity, spin, law_params, gravity, rtol,
-    history) and the drop's options ``rate``, ``stop``, ``t_max``. ``constant_angle`` must be
-    False (the drop follows the rod's rotation). TypeError for a drop option with another body
-    or an unknown keyword."""
+    history) and the drop's options ``rate``, ``stop``, ``time_limit`` (``t_max``, its name
+    before 0.3: a DeprecationWarning). ``constant_angle`` must be False (the drop follows the
+    rod's rotation). TypeError for a drop option with another body or an unknown keyword."""
     known = (*_SIMULATE_ARGS, "constant_angle", "history", "speed", "incidence", *DROP_OPTIONS)
     known += ("partial_slip_cells",)  # simulate's own (checked there), not passed on here
-    extra = sorted(set(kwargs) - set(known))
+    extra = sorted(set(kwargs) - set(known) - set(RENAMED_KEYWORDS))  # old names: read as new
     if extra:  # in simulate_batch's words (the nearest name), with the drop's options named
         text = unexpected_keywords("simulate", extra, known, {})
         raise TypeError(f"{text} ({', '.join(DROP_OPTIONS)}: a FlexibleRod's drop)")
     if not isinstance(body, FlexibleRod):
-        given = sorted(set(kwargs) & set(DROP_OPTIONS))
+        given = sorted(set(kwargs) & {*DROP_OPTIONS, *RENAMED_KEYWORDS})
         raise TypeError(
             f"simulate() got {', '.join(given)}: options of a FlexibleRod's drop (got body "
             f"{type(body).__name__}; a rigid rod's drop: impactlab.simulate_drop)"
@@ -65,6 +66,7 @@ def simulate_flexible(
         )
     if kwargs.get("angle") is None:
         raise ValueError("angle is required for a FlexibleRod (radians, in (0, pi/2])")
+    kwargs = renamed_keywords("simulate", kwargs)
     return simulate_drop(body, flat, history=check_flag("history", history), **kwargs)
 
 

@@ -3,10 +3,12 @@
 ``input_record`` writes the arguments of one ``simulate`` or ``simulate_drop`` call (the body
 with its material and sizes, the flat, the contact law and its parameters, the friction model and
 mu, angle, velocity, spin, gravity, the tolerance; ``partial_slip_cells`` for ``partial_slip``;
-for a drop ``rate``, ``stop``, ``t_max``), the function called (``function``) and the impactlab
-version; ``from_record`` reads such a record back into that function's arguments (a record that
-lacks a key is refused; one of another version warns), and ``rerun`` runs it again (``impactlab
-simulate --from``). Every drop, of a rigid ``Rod`` or a ``FlexibleRod``, records
+for a drop ``rate``, ``stop``, ``time_limit``), the function called (``function``) and the
+impactlab version; ``from_record`` reads such a record back into that function's arguments (a
+record that lacks a key is refused; one of another version warns; a drop's time limit recorded
+as ``t_max``, its name before 0.3, is read as ``time_limit``, without a word: the record was
+written by impactlab, not by its user), and ``rerun`` runs it again (``impactlab simulate
+--from``). Every drop, of a rigid ``Rod`` or a ``FlexibleRod``, records
 ``simulate_drop``: ``simulate`` takes no drop options for a rigid rod (its rigid engine is
 another model), so the drop's own function is the one that runs it again to the same numbers.
 
@@ -40,6 +42,7 @@ from impactlab.dynamics.record_codec import UNITS as UNITS
 from impactlab.dynamics.record_codec import decode, encode
 from impactlab.dynamics.record_codec import key_form as _form
 from impactlab.dynamics.record_codec import quantity as _float
+from impactlab.dynamics.time_limit import RENAMED_KEYWORDS
 from impactlab.materials import Material
 
 __all__ = ["FUNCTIONS", "KEYS", "RECORD_FORMAT", "SIMULATE", "SIMULATE_DROP",
@@ -81,7 +84,7 @@ def input_record(
 ) -> dict[str, Any]:  # fmt: skip
     """The JSON-ready record of one call of ``function`` (``SIMULATE`` or ``SIMULATE_DROP``;
     SI, checked values; ``angle`` None for a sphere; ``constant_angle`` None: not an argument
-    of ``function``; ``extra``: the drop's options ``rate``, ``stop``, ``t_max``, or an
+    of ``function``; ``extra``: the drop's options ``rate``, ``stop``, ``time_limit``, or an
     impact's ``partial_slip_cells``)."""
     if function not in FUNCTIONS:
         raise ValueError(f"function must be one of {FUNCTIONS}, got {function!r}")
@@ -149,7 +152,10 @@ _META = ("impactlab_version", "format", "function")
 #: The keys every record of the format holds, by its function (``input_record`` writes them).
 _COMMON = ("format", "function", "body", "flat", "law", "law_params", "friction", "mu", "angle",
            "velocity", "spin", "gravity", "rtol")  # fmt: skip
-KEYS = {SIMULATE: (*_COMMON, "constant_angle"), SIMULATE_DROP: (*_COMMON, "rate", "stop", "t_max")}
+KEYS = {
+    SIMULATE: (*_COMMON, "constant_angle"),
+    SIMULATE_DROP: (*_COMMON, "rate", "stop", "time_limit"),
+}
 
 
 class RecordVersionWarning(UserWarning):
@@ -200,7 +206,7 @@ def from_record(record: Mapping[str, Any]) -> dict[str, Any]:
     ``KEYS``; a rerun never falls back on a default) or unknown; RecordVersionWarning
     (:func:`check_version`)."""
     function = record_function(record)
-    given, record = record, _input(record)
+    given, record = record, _renamed(_input(record))
     missing = [k for k in ("body", "flat", "law", "velocity") if k not in record]
     if missing:
         raise ValueError(
@@ -236,6 +242,20 @@ def from_record(record: Mapping[str, Any]) -> dict[str, Any]:
                          '{"value": [vx, vy], "unit": "m/s"}')  # fmt: skip
     args["velocity"] = tuple(v)
     return args
+
+
+def _renamed(record: Mapping[str, Any]) -> Mapping[str, Any]:
+    """``record`` with each key written before 0.3 (``RENAMED_KEYWORDS``: ``t_max``) under its
+    new name (``time_limit``); ValueError for a record that holds both."""
+    for old, new in RENAMED_KEYWORDS.items():
+        if old in record and new in record:
+            raise ValueError(
+                f"the record holds {new!r} and {old!r}, its name before 0.3: they are one; "
+                f"keep {new!r}"
+            )
+    if not RENAMED_KEYWORDS.keys() & record.keys():
+        return record
+    return {RENAMED_KEYWORDS.get(k, k): v for k, v in record.items()}
 
 
 def result_record(result: Any) -> dict[str, Any] | None:

@@ -25,10 +25,11 @@ _TYPES: dict[str, type] = {
     cls.__name__: cls for cls in (Material, ContactPair, Rod, Sphere, FlexibleRod, ContactModel)
 }
 
-#: SI units of ``simulate``'s scalar arguments (and of the body and material fields).
+#: SI units of ``simulate``'s scalar arguments (and of the body and material fields; ``t_max``:
+#: a drop's ``time_limit`` in a record written before 0.3).
 UNITS: dict[str, str] = {
     **FIELD_UNITS, "angle": "rad", "velocity": "m/s", "spin": "rad/s", "gravity": "m/s^2",
-    "mu": "1", "rtol": "1", "params": "1", "t_max": "s",
+    "mu": "1", "rtol": "1", "params": "1", "time_limit": "s", "t_max": "s",
 }  # fmt: skip
 #: The unit written for a float field whose unit is not known here.
 _UNKNOWN_UNIT = "SI"

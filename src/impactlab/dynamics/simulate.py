@@ -49,6 +49,7 @@ from impactlab.dynamics.outcome import engine_result, impact_result, slip_jam, s
 from impactlab.dynamics.partial_slip import checked_cells, simulate_partial_slip
 from impactlab.dynamics.provenance import SIMULATE_DROP, from_record, record_function
 from impactlab.dynamics.results import ImpactResult
+from impactlab.dynamics.time_limit import renamed_keywords
 from impactlab.friction import DEFAULT_MU, PARTIAL_SLIP_CELLS, FrictionKind
 from impactlab.materials import AISI_1010, G0, Material
 
@@ -83,7 +84,8 @@ def simulate(
 ) -> ImpactResult | DropResult:
     """Simulate one impact from first touch (delta = 0) to separation (SI units); for a
     FlexibleRod the whole drop, a ``DropResult`` (``impactlab.dynamics.drop``; its options
-    ``rate``, ``stop``, ``t_max`` pass through).
+    ``rate``, ``stop``, ``time_limit`` pass through; ``t_max``, ``time_limit``'s name before
+    0.3, is read as it with a DeprecationWarning).
 
     A quantity (angle, velocity, spin, gravity, a law parameter with a unit) is a number in SI
     (a bare angle is radians), a string with units (``"20 deg"``, ``"1.41 m/s"``) or a pint
@@ -357,6 +359,7 @@ def rerun(
             f"{type(record).__name__}"
         )
     args = from_record(record)
+    changes = renamed_keywords("rerun", changes)  # t_max=: time_limit (a DeprecationWarning)
     split = [k for k in ("vx", "vy") if k in changes]
     if split:  # simulate_batch's names: the recorded velocity is one pair
         v = args.get("velocity")

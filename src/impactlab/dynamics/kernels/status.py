@@ -37,7 +37,7 @@ STATUS_MESSAGES: dict[int, str] = {
     ST_RADIUS_MISMATCH: "the law's radius P_R differs from the body's tip radius",
     ST_TOO_MANY_EVENTS: "too many phase or stick/slip switches (chattering)",
     ST_BAD_FRICTION: "unknown friction id, or the Mindlin model without G* in the body vector",
-    ST_TMAX: "t_max reached before the rod left the flat for good",
+    ST_TMAX: "time_limit reached before the rod left the flat for good",
     ST_TOO_MANY_CONTACTS: "too many contacts or dents",
     ST_MAX_STEPS: "step limit reached",
     ST_MISSED_CONTACT: "missed contact: an end lay below its dent's surface (or the flat) with "
