@@ -303,3 +303,23 @@ def test_a_run_stopped_as_the_sphere_leaves_is_recognised():
     assert not _separating(np.array([0.0, 400.0, peak, 300.0, 2.0 * SEPARATION_FRACTION * peak]))
     assert not _separating(np.array([0.0, 0.1, peak]))
     assert not _separating(np.zeros(4))
+
+
+@pytest.mark.parametrize("workers", [1.5, "2", "abc", True, 2.0, 0])
+def test_impact_checks_workers_as_indent_does(workers):
+    """Before: "abc" gave "invalid literal for int()", 1.5 and "2" were taken (int()-ed)."""
+    from impactlab import fe
+
+    for run, kw in ((fe.impact, {"speed": 1.0}), (fe.indent, {"delta_max": 1e-6})):
+        with pytest.raises(ValueError, match=r"^workers must be a positive integer .*got"):
+            run(AISI_1010, AISI_201, radius=R, workers=workers, **kw)
+
+
+def test_an_empty_speed_is_named():
+    """Before: "delta_max must hold at least one interference"."""
+    from impactlab import fe
+
+    with pytest.raises(ValueError, match=r"^speed must hold at least one impact speed, got an "):
+        fe.impact(AISI_1010, AISI_201, radius=R, speed=[], sphere="elastic")
+    with pytest.raises(ValueError, match=r"^delta_max must hold at least one interference"):
+        fe.indent(AISI_1010, AISI_201, radius=R, delta_max=[])

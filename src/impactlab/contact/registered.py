@@ -34,7 +34,7 @@ import numpy as np
 from impactlab._validation import check_finite, check_positive, warn_implausible
 from impactlab.contact._common import jg_critical
 from impactlab.contact.indentation_data import IndentationCurves, curves_from_record
-from impactlab.contact.loading_fit import held_out_method, scatter_note
+from impactlab.contact.loading_fit import held_out_method
 from impactlab.contact.names import Law
 from impactlab.contact.sample_checks import check_below_radius as _check_below_radius
 from impactlab.contact.sample_checks import check_hertz_switch as _check_switch
@@ -44,10 +44,10 @@ from impactlab.contact.table_input import PLAUSIBLE_RADIUS
 from impactlab.contact.tabulated import (
     Tabulated,
     interpolation_error,
-    loading_fit,
     loading_points,
     residual_points,
 )
+from impactlab.contact.tabulated_fit import TABLE_FIT_TOLERANCE, check_table_fit
 from impactlab.materials import ContactPair
 
 #: Largest relative force error and largest delta_r/delta_max error allowed by default between
@@ -59,9 +59,6 @@ DEFAULT_POINTS = 64
 CHECKS_PER_INTERVAL = 7
 #: The format of a registered law's record.
 RECORD_FORMAT = "impactlab registered law"
-#: Largest relative difference allowed between a table's loading fit and any of its loading
-#: points past the first: the bound the tabulated law states for its fit (docs/laws/tabulated.md).
-TABLE_FIT_TOLERANCE = 0.025
 
 
 def check_law_name(name: Any) -> str:
@@ -81,31 +78,6 @@ def check_law_name(name: Any) -> str:
             f"be registered: choose another name"
         )
     return str(name)
-
-
-def check_table_fit(name: str, curves: IndentationCurves) -> None:
-    """ValueError where the law's loading fit of ``curves`` departs from a loading point past
-    the first by more than ``TABLE_FIT_TOLERANCE`` in force, naming the largest departure,
-    the point (index, delta/delta_c, the data's F/F_Hertz) and what to check: scatter where
-    the departures look like it (``scatter_note``), else a rise of F/F_Hertz or a kink."""
-    x, z = loading_points(curves)
-    rel = np.expm1(1.5 * x[1:] - loading_fit(curves)(x[1:]) - z[1:])
-    j = int(np.argmax(np.abs(rel)))
-    if abs(rel[j]) <= TABLE_FIT_TOLERANCE:
-        return
-    i = int(np.flatnonzero(curves.delta > curves.elastic_limit)[j])
-    d, n = float(curves.delta[i]), curves.delta.size
-    scatter = scatter_note(rel)
-    what = scatter or (
-        ": check that F/F_Hertz never rises past the first point (the tabulated law keeps it "
-        "from rising, so that no impact gains energy) and that the forces hold no jump or kink"
-    )
-    raise ValueError(
-        f"law {name!r}: the law's loading fit departs from the data's force by "
-        f"{float(rel[j]):+.3g} (relative) at loading point index {i} (data row {i + 1} of "
-        f"{n}; delta/delta_c = {d:.4g}, the data's F/F_Hertz = {curves.force[i] / d**1.5:.4g}); "
-        f"the fit must stay within {100 * TABLE_FIT_TOLERANCE:g} % of every point{what}"
-    )
 
 
 class RegisteredLaw(Tabulated):

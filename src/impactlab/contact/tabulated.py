@@ -14,9 +14,12 @@ Construction (``curve_tables``, in ``contact.tabulated_fit``), from dimensionles
   (``contact.curve_table``: one log, one exp and a cubic) is the spline itself (C2);
 - unloading: delta_r / delta_max as PCHIP (Fritsch & Carlson 1980) of log(delta_max /
   delta_c), resampled with its slopes onto ``N_RES`` uniform nodes (Fritsch-Carlson-limited,
-  so still monotone), 0 below its first data point; unloading itself is the engine's
-  Hertzian branch through (delta_m, F_m) with that delta_r;
-- hard limit ``p[P_DLIM]``: the last interference covered by both data sets (or R).
+  so still monotone), 0 below its zero: the data's last zero, or first yield (delta_c) where
+  the data's first residual depth lies past it (``residual_points``); unloading itself is the
+  engine's Hertzian branch through (delta_m, F_m) with that delta_r;
+- hard limit ``p[P_DLIM]``: the last interference covered by both data sets (or R);
+- a loading fit that departs from the data by more than ``TABLE_FIT_TOLERANCE`` (the bound
+  the law states) is refused (``check_table_fit``), as ``register_law`` refuses it.
 
 Curves of a pair with E*/S_y and nu apply to another pair only when both match within
 ``RATIO_TOLERANCE`` and ``NU_TOLERANCE`` and the same body yields in both (the flat, or a sphere
@@ -47,6 +50,8 @@ from impactlab.contact.indentation_data import (
 from impactlab.contact.names import Law
 from impactlab.contact.range_note import note_source
 from impactlab.contact.tabulated_fit import (
+    TABLE_FIT_TOLERANCE,
+    check_table_fit,
     curve_tables,
     interpolation_error,
     loading_fit,
@@ -164,6 +169,10 @@ class Tabulated(ContactLaw):
         "0.91-0.98 of the FE's past delta_c)"
     )
 
+    #: A law sampled from callables (``contact.registered.sample_law``) is checked against
+    #: them; any other is refused where its loading fit passes ``TABLE_FIT_TOLERANCE``.
+    sampled: bool = False
+
     def __init__(self, curves: IndentationCurves | Sequence[IndentationCurves] | None = None):
         if isinstance(curves, IndentationCurves):
             curves = (curves,)
@@ -181,7 +190,9 @@ class Tabulated(ContactLaw):
         return shipped_curves() + cached_curves()
 
     def build(self, pair: ContactPair, radius: float, **params: float) -> ContactModel:
-        """The model of ``pair`` with a sphere of ``radius`` [m] (no law parameters)."""
+        """The model of ``pair`` with a sphere of ``radius`` [m] (no law parameters).
+        ValueError where the loading fit departs from a point of the curves by more than
+        ``TABLE_FIT_TOLERANCE`` (``check_table_fit``: the bound the law states)."""
         if not isinstance(pair, ContactPair):
             raise ValueError(f"pair must be a ContactPair, got {type(pair).__name__}")
         R = check_positive("radius", radius, "m")
@@ -198,6 +209,8 @@ class Tabulated(ContactLaw):
         p[k.P_TB_RATIO], p[k.P_TB_NU] = c.e_star_over_sy, c.nu
         full = np.concatenate((p, curve_tables(c)))
         fit_max, fit_rms = loading_fit_error(c)
+        if fit_max > TABLE_FIT_TOLERANCE and not self.sampled:  # the law states that bound
+            check_table_fit(self.name, c, f"law {self.name!r}, curves {c.name!r}")
         self._check_loading_curve(full, pair, published=False)
         details = {
             "delta_c": dc,
@@ -228,16 +241,19 @@ class Tabulated(ContactLaw):
 
 
 def tabulated_model(curves: IndentationCurves, pair: ContactPair, radius: float) -> ContactModel:
-    """The tabulated law of ``curves`` for ``pair`` and a sphere of ``radius`` [m]."""
+    """The tabulated law of ``curves`` for ``pair`` and a sphere of ``radius`` [m]; ValueError
+    where its loading fit departs from the curves by more than ``TABLE_FIT_TOLERANCE``."""
     return Tabulated(curves).build(pair, radius)
 
 
 __all__ = [
     "NU_TOLERANCE",
     "RATIO_TOLERANCE",
+    "TABLE_FIT_TOLERANCE",
     "DamagedCurvesWarning",
     "Tabulated",
     "cached_curves",
+    "check_table_fit",
     "curve_tables",
     "curves_cache_dir",
     "interpolation_error",

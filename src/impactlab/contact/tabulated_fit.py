@@ -13,9 +13,17 @@ import numpy as np
 
 from impactlab.contact.curve_table import CURVE_MAGIC, N_LOAD, N_RES
 from impactlab.contact.indentation_data import IndentationCurves
-from impactlab.contact.loading_fit import cross_validated, fit_loading, held_out_sets
+from impactlab.contact.loading_fit import (
+    cross_validated,
+    fit_loading,
+    held_out_sets,
+    scatter_note,
+)
 
 __all__ = [
+    "FIRST_YIELD",
+    "TABLE_FIT_TOLERANCE",
+    "check_table_fit",
     "curve_tables",
     "interpolation_error",
     "loading_fit",
@@ -25,6 +33,13 @@ __all__ = [
     "residual_raised",
     "table_values",
 ]
+
+#: First yield in the curves' units (delta/delta_c: they are dimensionless in their pair's
+#: Jackson-Green delta_c): no residual depth is interpolated below it (``residual_points``).
+FIRST_YIELD = 1.0
+#: Largest relative difference allowed between a table's loading fit and any of its loading
+#: points past the first: the bound the tabulated law states for its fit (docs/laws/tabulated.md).
+TABLE_FIT_TOLERANCE = 0.025
 
 
 def _monotone(x: np.ndarray, y: np.ndarray, m: np.ndarray) -> np.ndarray:
@@ -95,27 +110,59 @@ def loading_fit_error(c: IndentationCurves) -> tuple[float, float]:
     return float(np.max(np.abs(rel))), float(np.sqrt(np.mean(rel**2)))
 
 
+def check_table_fit(name: str, curves: IndentationCurves, label: str = "") -> None:
+    """ValueError where the law's loading fit of ``curves`` departs from a loading point past
+    the first by more than ``TABLE_FIT_TOLERANCE`` in force, naming the largest departure,
+    the point (index, delta/delta_c, the data's F/F_Hertz) and what to check: scatter where
+    the departures look like it (``scatter_note``), else a rise of F/F_Hertz or a kink.
+    The message starts with ``label`` (default: ``law 'name'``)."""
+    x, z = loading_points(curves)
+    rel = np.expm1(1.5 * x[1:] - loading_fit(curves)(x[1:]) - z[1:])
+    j = int(np.argmax(np.abs(rel)))
+    if abs(rel[j]) <= TABLE_FIT_TOLERANCE:
+        return
+    i = int(np.flatnonzero(curves.delta > curves.elastic_limit)[j])
+    d, n = float(curves.delta[i]), curves.delta.size
+    scatter = scatter_note(rel)
+    what = scatter or (
+        ": check that F/F_Hertz never rises past the first point (the tabulated law keeps it "
+        "from rising, so that no impact gains energy) and that the forces hold no jump or kink"
+    )
+    raise ValueError(
+        f"{label or f'law {name!r}'}: the law's loading fit departs from the data's force by "
+        f"{float(rel[j]):+.3g} (relative) at loading point index {i} (data row {i + 1} of "
+        f"{n}; delta/delta_c = {d:.4g}, the data's F/F_Hertz = {curves.force[i] / d**1.5:.4g}); "
+        f"the fit must stay within {100 * TABLE_FIT_TOLERANCE:g} % of every point{what}"
+    )
+
+
 def residual_raised(c: IndentationCurves) -> float:
     """Largest rise of a delta_r/delta_max of ``c`` made by ``residual_points``."""
     return float(np.max(np.maximum.accumulate(c.residual_ratio) - c.residual_ratio))
 
 
 def residual_points(c: IndentationCurves) -> tuple[np.ndarray, np.ndarray]:
-    """(x, delta_r/delta_max) the residual table interpolates: from the last of the leading
-    zero ratios (or the elastic limit, with ratio 0), then the data, each ratio raised to the
-    largest before it (non-decreasing: see ``loading_points``)."""
+    """(x, delta_r/delta_max) the residual table interpolates: from a zero ratio, then the
+    data from its first positive ratio on, each ratio raised to the largest before it
+    (non-decreasing: see ``loading_points``). The zero is the data's last leading zero ratio
+    (or the elastic limit, where the first ratio is positive), moved up to first yield,
+    delta_c (``FIRST_YIELD``), where it lies below it and the first positive ratio above it:
+    the law is Hertz and leaves no dent below first yield, so no residual depth is
+    interpolated there (measured data whose first point lies in the elastic range)."""
     dm, r = c.delta_max, np.maximum.accumulate(c.residual_ratio)
-    if r[0] > 0.0:
-        if not c.elastic_limit < dm[0]:
-            raise ValueError(
-                f"delta_r > 0 at delta_max/delta_c = {dm[0]:.4g}, at or below the elastic limit "
-                f"({c.elastic_limit:.4g}): the first residual depth must lie past it"
-            )
-        dm, r = np.concatenate(([c.elastic_limit], dm)), np.concatenate(([0.0], r))
     nz = np.flatnonzero(r > 0.0)
-    i0 = max(int(nz[0]) - 1, 0) if nz.size else dm.size - 2
-    i0 = min(i0, dm.size - 2)
-    return np.log(dm[i0:]), r[i0:]
+    if not nz.size:
+        return np.log(dm[-2:]), r[-2:]
+    first = int(nz[0])
+    zero = float(dm[first - 1]) if first else c.elastic_limit
+    if zero < FIRST_YIELD < dm[first]:
+        zero = FIRST_YIELD
+    if not zero < dm[first]:
+        raise ValueError(
+            f"delta_r > 0 at delta_max/delta_c = {dm[0]:.4g}, at or below the elastic limit "
+            f"({c.elastic_limit:.4g}): the first residual depth must lie past it"
+        )
+    return np.log(np.concatenate(([zero], dm[first:]))), np.concatenate(([0.0], r[first:]))
 
 
 def curve_tables(c: IndentationCurves) -> np.ndarray:

@@ -38,7 +38,7 @@ from impactlab.fe.impact_result import (
 from impactlab.fe.interrupt import run_parallel
 from impactlab.fe.mesh import Mesh, build_mesh
 from impactlab.fe.problem import check_maxima
-from impactlab.fe.run import NotConvergedWarning
+from impactlab.fe.run import NotConvergedWarning, check_workers
 from impactlab.materials import Material
 
 #: delta_p and the rebound speed are means over the last FINAL_POINTS increments.
@@ -288,10 +288,9 @@ def impact(
             mesh_level=mesh_level,
             time_level=time_level,
         )
-        for v in check_maxima(speed)
+        for v in check_maxima(speed, "speed", "impact speed")
     ]
-    if workers is not None and (isinstance(workers, bool) or int(workers) < 1):
-        raise ValueError(f"workers must be a positive integer, got {workers!r}")
+    check_workers(workers)
     exe = find_ccx()
     version = ccx_version(exe)
     check_ccx_release(version, exe, problems)

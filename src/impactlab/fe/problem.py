@@ -4,15 +4,15 @@ A sphere of radius R presses a flat to the interference delta_max and is withdra
 force is zero (SI units: m, Pa, N). The critical interference delta_c is the pair's
 Jackson-Green first-yield interference as the contact laws compute it
 (``impactlab.contact``: ``ContactModel.critical_interference``; Jackson & Green 2005,
-doi:10.1115/1.1866166); with a rigid sphere, the flat's against a rigid sphere
-(``Problem.pair``), the sphere material then not used.
+doi:10.1115/1.1866166); with a rigid sphere, the flat's against a rigid sphere, the sphere
+material then not used; with an elastic sphere, the flat's S_y and nu, only the flat yielding
+in the FE (``Problem.pair``, ``fe.problem_pair``).
 """
 
 from __future__ import annotations
 
 import itertools
 import math
-import warnings
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any, Literal
@@ -20,7 +20,6 @@ from typing import Any, Literal
 import numpy as np
 
 from impactlab._validation import (
-    ImplausibleInputWarning,
     check_finite,
     check_nonnegative,
     check_positive,
@@ -28,6 +27,7 @@ from impactlab._validation import (
 )
 from impactlab.fe.deck import DeckSpec, MaterialCard, StepControl
 from impactlab.fe.mesh import MeshSpec
+from impactlab.fe.problem_pair import problem_pair
 from impactlab.materials import ContactPair, Material
 from impactlab.units import is_quantity
 
@@ -158,20 +158,11 @@ class Problem:
 
     @property
     def pair(self) -> ContactPair:
-        """The contact pair (the sphere's material first). A rigid sphere is a material
-        10^9 times stiffer than the flat, so that E* is the flat's E / (1 - nu^2) to 1e-9, and
-        never the one that yields: its yield strength is the larger of the sphere material's
-        and the flat's (its Brinell hardness and Meyer index are the sphere material's)."""
-        if self.sphere == "rigid":
-            m = self.sphere_material
-            sy = max(m.yield_strength, self.flat.yield_strength)
-            with warnings.catch_warnings():  # 10^9 times the flat's E on purpose
-                warnings.simplefilter("ignore", ImplausibleInputWarning)
-                rigid = Material(
-                    "rigid", self.flat.E * 1e9, self.flat.nu, sy, m.brinell_hardness, m.meyer_index
-                )
-            return ContactPair(rigid, self.flat)
-        return ContactPair(self.sphere_material, self.flat)
+        """The contact pair the problem stands for (the sphere's material first;
+        ``fe.problem_pair``): a rigid sphere as a body 10^9 times stiffer than the flat, and a
+        rigid or elastic sphere never the body that yields (the flat's S_y and nu, which only
+        the flat can yield in the FE)."""
+        return problem_pair(self.flat, self.sphere_material, self.sphere)
 
     @property
     def E_star(self) -> float:
@@ -388,11 +379,14 @@ def largest_delta_max(R: float) -> float:
     return R - math.sqrt(R * R - a * a)
 
 
-def check_maxima(values: Sequence[Any] | Any) -> list[Any]:
-    """delta_max as a list (one value or a sequence; ValueError if empty)."""
+def check_maxima(
+    values: Sequence[Any] | Any, name: str = "delta_max", what: str = "interference"
+) -> list[Any]:
+    """``values`` (the parameter ``name``: one ``what`` or a sequence) as a list; ValueError
+    naming ``name`` if empty."""
     if isinstance(values, str) or not isinstance(values, Sequence | np.ndarray):
         return [values]
     out = list(values)
     if not out:
-        raise ValueError("delta_max must hold at least one interference, got an empty sequence")
+        raise ValueError(f"{name} must hold at least one {what}, got an empty sequence")
     return out

@@ -240,6 +240,19 @@ def _run_pending(
     return damaged
 
 
+def check_workers(workers: Any) -> None:
+    """ValueError unless ``workers`` (parallel ccx processes, of ``indent`` and ``impact``)
+    is None or a positive integer: 1.5 or "2" is no count of processes (int() made them 1
+    and 2), and True is no number."""
+    if workers is not None and (
+        isinstance(workers, bool) or not isinstance(workers, int | np.integer) or workers < 1
+    ):
+        raise ValueError(
+            f"workers must be a positive integer (a count of ccx processes) or None, got "
+            f"{workers!r}"
+        )
+
+
 def indent(
     flat: Material,
     sphere_material: Material | None = None,
@@ -306,13 +319,7 @@ def indent(
         )
         for d in check_maxima(delta_max)
     ]
-    if workers is not None and (
-        isinstance(workers, bool) or not isinstance(workers, int | np.integer) or workers < 1
-    ):  # 1.5 or "2" is no count of processes (int() made them 1 and 2)
-        raise ValueError(
-            f"workers must be a positive integer (a count of ccx processes) or None, got "
-            f"{workers!r}"
-        )
+    check_workers(workers)
     for p in problems:  # before minutes of ccx: where the mesh is known to hold
         if p.delta_max > CHECKED_RATIO * p.delta_c * (1.0 + 1e-9):
             warnings.warn(

@@ -13,8 +13,10 @@
   when one matches the pair (E*/S_y, nu and the body that yields) and every FE option asked
   (``fe.tabulated_options``), else from new ``indent``
   runs of the pair itself, sphere elastic-plastic (CalculiX ``ccx`` needed; RuntimeError
-  saying how to install it), whose curves, labelled with the body that yields, are kept in
-  ``contact.tabulated.curves_cache_dir()`` so that ``law="tabulated"`` then finds them too.
+  saying how to install it), whose curves, dimensionless in the FE problem's own delta_c and
+  F_c and labelled with its E*/S_y and the body that yields, are kept in
+  ``contact.tabulated.curves_cache_dir()`` (once the law built from them passed its checks)
+  so that ``law="tabulated"`` then finds them too.
 """
 
 from __future__ import annotations
@@ -39,8 +41,8 @@ from impactlab.contact.indentation_data import (
 )
 from impactlab.contact.tabulated import Tabulated, curves_cache_dir, select_curves
 from impactlab.fe.curves import HARDENED_DIR, load_case, load_cases
-from impactlab.fe.problem import largest_delta_max
 from impactlab.fe.run import indent
+from impactlab.fe.tabulated_checks import check_reach, check_unload, fe_pair, fe_yielding
 from impactlab.fe.tabulated_options import (
     RECORD_KEY,
     file_record,
@@ -105,18 +107,6 @@ def curves_from_runs(
     )
 
 
-def _fe_yielding(pair: ContactPair, sphere: str, flat_hardening: Any = None) -> str:
-    """The body that yields first in an FE run of ``pair`` whose sphere is ``sphere``
-    ("rigid", "elastic", "elastic-plastic"): the flat unless the sphere is elastic-plastic
-    and yields first, its C(nu) S_y the smaller (``yielding_body``), or the flat is kept
-    elastic (``flat_hardening="elastic"``)."""
-    if sphere in ("rigid", "elastic"):
-        return "flat"
-    if isinstance(flat_hardening, str) and flat_hardening == "elastic":
-        return "sphere"
-    return yielding_body(pair)
-
-
 def shipped_fe_curves() -> list[IndentationCurves]:
     """The curves of every shipped FE case (``fe.curves.load_cases``)."""
     out = []
@@ -126,7 +116,7 @@ def shipped_fe_curves() -> list[IndentationCurves]:
             f"R = {case.radius:g} m, {case.sphere} sphere, mu = {case.mu:g}, mesh level "
             f"{case.mesh_level})"
         )
-        side = _fe_yielding(case.pair, case.sphere)
+        side = fe_yielding(case.pair, case.sphere)
         out.append(curves_from_runs(case.runs, case.pair, case.radius, case.name, source, side))
     return out
 
@@ -157,7 +147,7 @@ def hardened_curves(name: str = HARDENED_PAPER_CASE) -> IndentationCurves:
         f"R = {case.radius:g} m, {case.sphere} sphere, mu = {case.mu:g}, mesh level "
         f"{case.mesh_level})"
     )
-    side = _fe_yielding(case.pair, case.sphere)
+    side = fe_yielding(case.pair, case.sphere)
     return curves_from_runs(case.runs, case.pair, case.radius, case.name, source, side)
 
 
@@ -193,25 +183,6 @@ def curves_file_name(
     return f"{slug}-{hashlib.sha256(blob).hexdigest()[:12]}"
 
 
-def _check_maxima(
-    pair: ContactPair, radius: float, maxima: Sequence[float], dc: float, default: bool
-) -> None:
-    """ValueError naming ``maxima_over_delta_c`` (``default``: not given) when its largest
-    multiple of delta_c is more than the sphere of ``radius`` [m] allows (a soft flat:
-    delta_c is large)."""
-    largest = largest_delta_max(radius)
-    too_far = [m for m in maxima if m * dc >= largest]
-    if too_far:
-        keep = [m for m in maxima if m * dc < largest]
-        raise ValueError(
-            f"maxima_over_delta_c{' (the default)' if default else ''} asks for "
-            f"{too_far[0]:g} delta_c = {too_far[0] * dc:.4g} m (delta_c = {dc:.4g} m for "
-            f"{pair.body.name} on {pair.flat.name}), too large for radius {radius:g} m: allowed "
-            f"delta_max < {largest:.4g} m = {largest / dc:.4g} delta_c; pass "
-            f"maxima_over_delta_c below that, e.g. {tuple(keep)}"
-        )
-
-
 def _stored_law(
     pair: ContactPair, radius: float, asked: dict[str, Any], given: set[str], reach: float | None
 ) -> tuple[ContactModel | None, str]:
@@ -221,9 +192,11 @@ def _stored_law(
     stored = stored_curves()
     fits = [c for c, o in stored if not mismatches(o, asked, given, reach)]
     try:
-        return Tabulated(select_curves(pair, fits)).build(pair, radius), ""
+        chosen = select_curves(pair, fits)
     except ValueError:
         near = select_curves(pair, [c for c, _ in stored])  # none for the pair: its message
+    else:  # a law that fails its own checks says why (not "no curves")
+        return Tabulated(chosen).build(pair, radius), ""
     options = next(o for c, o in stored if c is near)
     return None, (
         f"the stored curves that fit the pair ({near.name!r}) do not match the options "
@@ -249,15 +222,20 @@ def tabulated_law(
     with ``run_fe``, from new ``indent`` runs of the pair (default: an elastic-plastic
     sphere, frictionless; ``indent_kwargs`` go to ``indent``; the curves labelled with the
     body that yields in them, ``yielding_body``) loaded to ``maxima_over_delta_c`` times
-    delta_c (default ``RUN_MAXIMA_OVER_DELTA_C``), whose curves and options are stored in the
-    curves cache (a file per pair and inputs: ``curves_file_name``). Without ``run_fe``,
+    delta_c (default ``RUN_MAXIMA_OVER_DELTA_C``; delta_c, F_c and E*/S_y those of the FE
+    problem, ``Problem.pair``), whose curves and options are stored in the curves cache (a
+    file per pair and inputs: ``curves_file_name``) once the law built from them passed its
+    checks (``Tabulated.build``: a law that fails them is never stored). Without ``run_fe``,
     ValueError naming each option the stored curves of the pair do not match. Needs
     CalculiX ``ccx`` for the runs (RuntimeError with how to install it otherwise);
     ValueError, before any run, when a maximum is too large for the radius (a soft flat's
-    delta_c is large: pass smaller ``maxima_over_delta_c``), or when ``sphere`` or
-    ``flat_hardening`` would make the other body yield than in the pair. The model's
-    ``source`` names the curves used.
+    delta_c is large: pass smaller ``maxima_over_delta_c``), when ``sphere`` or
+    ``flat_hardening`` would make the other body yield than in the pair, when
+    ``sphere="rigid"`` makes a problem whose E*/S_y is not the pair's (the flat's E* alone:
+    ``fe_pair``), or when ``unload`` is not True (a loading-only run has no residual depth).
+    The model's ``source`` names the curves used.
     """
+    check_unload(indent_kwargs.get("unload", True))
     maxima = RUN_MAXIMA_OVER_DELTA_C if maxima_over_delta_c is None else maxima_over_delta_c
     reach = None if maxima_over_delta_c is None else max(float(m) for m in maxima)
     dc, _ = jg_critical(pair.E_star, radius, pair.yield_strength, pair.nu)
@@ -272,9 +250,8 @@ def tabulated_law(
         return law
     if not run_fe:
         raise ValueError(f"{why}; run_fe=True makes curves with these options (FE runs: CalculiX)")
-    _check_maxima(pair, radius, maxima, dc, maxima_over_delta_c is None)
     sphere = indent_kwargs.get("sphere", "elastic-plastic")
-    side = _fe_yielding(pair, sphere, indent_kwargs.get("flat_hardening"))
+    side = fe_yielding(pair, sphere, indent_kwargs.get("flat_hardening"))
     if side != yielding_body(pair):  # curves that would not fit the pair: minutes for nothing
         what = f"sphere={sphere!r}" if side == "flat" else "flat_hardening='elastic'"
         raise ValueError(
@@ -282,6 +259,9 @@ def tabulated_law(
             f"first in {pair.body.name} on {pair.flat.name}: the law would refuse them; leave "
             "sphere='elastic-plastic' and the flat plastic, so that the FE models the pair"
         )
+    fe = fe_pair(pair, sphere)
+    dc, _ = jg_critical(fe.E_star, radius, fe.yield_strength, fe.nu)
+    check_reach(pair, radius, maxima, dc, maxima_over_delta_c is None)
     runs = runner(
         pair.flat, pair.body, radius=radius, delta_max=[m * dc for m in maxima], **indent_kwargs
     )
@@ -290,14 +270,15 @@ def tabulated_law(
         f"FE runs of impactlab.fe.indent: {pair.body.name} sphere on {pair.flat.name}, "
         f"R = {radius:g} m, maxima {', '.join(f'{m:g}' for m in maxima)} delta_c"
     )
-    curves = curves_from_runs(runs, pair, radius, name, source, side)
+    curves = curves_from_runs(runs, fe, radius, name, source, side)
+    law = Tabulated(curves).build(pair, radius)  # before the cache: a bad law is never kept
     folder = curves_cache_dir()
     folder.mkdir(parents=True, exist_ok=True)
     record = {**curves_file_record([curves]), RECORD_KEY: file_record(asked, maxima)}
     tmp = folder / f".{name}.json.{os.getpid()}.tmp"  # whole, then renamed over a damaged one
     tmp.write_text(json.dumps(record, indent=1))
     os.replace(tmp, folder / f"{name}.json")
-    return Tabulated(curves).build(pair, radius)
+    return law
 
 
 #: How docs/laws/tabulated.md names the shipped FE cases.
