@@ -88,10 +88,13 @@ def test_the_commands_sigmas_are_the_python_apis(cli_main: CliMain) -> None:
     assert same["duration"] == data["duration"] and same["mean_force"] == data["mean_force"]
 
 
-def test_the_table_echoes_the_coefficients_as_given(cli_main: CliMain) -> None:
+def test_the_table_shows_the_coefficients_of_the_magnitudes_as_the_json(
+    cli_main: CliMain,
+) -> None:
+    """--vi "-1.41 m/s": the table shows |v_i| and its coefficient, as the JSON's."""
     code, out, err = cli_main(*ARGS, "--correlation", "vi,ls=0.5")
     assert code == 0, err
-    assert "(v_i, sliding_length) 0.5 " in " ".join(out.split()) + " "
+    assert "(|v_i|, |sliding_length|) -0.5 " in " ".join(out.split()) + " "
     code, out, err = cli_main(*ARGS)
     assert code == 0 and "correlation" not in out
 

@@ -12,9 +12,10 @@ flat; the rod starts with no spin and no tangential velocity (the paper; :func:`
 closed forms also take the tip's incoming tangential velocity ``vt_in``) and drops with vertical
 speed ``v_i``.
 Lever arms from O to C: ``a = (L/2) cos(angle)``, ``b = (L/2) sin(angle) + R``
-(:func:`lever_arms`, from ``impactlab.bodies``); ``k^2 = I_C/m``. P is the normal contact
-impulse. In gross sliding the tip slides towards -x and friction gives the tangential impulse
-``P_x = mu P``; then the tip velocity is ``v_O = (K_x P, v_i + K_y P)``. The dent depth
+(:func:`lever_arms`, with its inputs checked; ``impactlab.bodies.lever_arms`` is the unchecked
+core); ``k^2 = I_C/m``. P is the normal contact impulse. In gross sliding the tip slides
+towards -x and friction gives the tangential impulse ``P_x = mu P``; then the tip velocity is
+``v_O = (K_x P, v_i + K_y P)``. The dent depth
 ``delta_p`` and a measured sliding length are magnitudes >= 0 [m] (the paper prints them negative).
 
 Validity: rigid rod, constant angle during contact (the rod turns by about 1.6 deg at 20 deg and

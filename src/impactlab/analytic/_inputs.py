@@ -4,6 +4,7 @@ the rod's values, and the magnitudes the library takes where the paper prints ne
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
@@ -14,6 +15,10 @@ from impactlab.units import has_unit
 
 HALF_PI = 0.5 * math.pi
 _MEASURES = ("slip", "travel")
+#: A |v_i| below this [m/s] is refused (by :func:`drop_speed`: ``invert`` and the closed forms
+#: alike): a fall from under 1e-13 m (v^2/2g), less than an atom's size, is no measured drop;
+#: Eq. 12's T grows as 1/|v_i|, and towards 0 T, F and their uncertainties under- or overflow.
+MIN_SPEED = 1e-6
 
 
 def arr(
@@ -44,6 +49,46 @@ def arr(
             op = "<" if high_open else "<="
             got = float(x.ravel()[np.argmax(out)])
             raise ValueError(f"{name} must be {op} {high:g}{u}, got {got!r}{u}")
+    return x
+
+
+def drop_speed(value: Any) -> Any:
+    """The drop speed |v_i| [m/s] of ``v_i`` (sign ignored) as a float64 array; ValueError
+    naming v_i, its value and the bound where a |v_i| is below ``MIN_SPEED`` (0 included)."""
+    vi = np.abs(arr("v_i", value, unit="m/s"))
+    slow = vi < MIN_SPEED
+    if slow.any():
+        got = float(vi.ravel()[np.argmax(slow.ravel())])
+        allowed = f"allowed: |v_i| >= {MIN_SPEED:g} m/s (SI: m/s)"
+        if got == 0.0:
+            raise ValueError(f"v_i must be non-zero (the drop speed), got 0.0; {allowed}")
+        raise ValueError(
+            f"v_i = {got!r} m/s is below {MIN_SPEED:g} m/s in magnitude, a fall from under "
+            "1e-13 m (less than an atom's size): no measured drop, and T (~ 1/|v_i|) and its "
+            f"uncertainties overflow; {allowed}"
+        )
+    return vi
+
+
+def finite(
+    output: str, x: Any, unit: str, inputs: Mapping[str, tuple[Any, str]], allowed: str
+) -> Any:
+    """``x``, the ``output`` [``unit``] of a closed form (computed without numpy's warnings),
+    where each entry is finite and > 0; else ValueError naming the ``inputs`` (name -> (array,
+    unit)) at the first bad entry, the output that over- or underflows and what is
+    ``allowed``: never an inf or a 0 returned."""
+    x = np.asarray(x)
+    bad = ~np.isfinite(x) | (x <= 0)
+    if bad.any():
+        i = int(np.argmax(bad.ravel()))
+        given = ", ".join(
+            f"{k} = {float(np.broadcast_to(v, x.shape).ravel()[i])!r}" + (f" {u}" if u else "")
+            for k, (v, u) in inputs.items()
+        )
+        raise ValueError(
+            f"{given} gives {output} = {float(x.ravel()[i])!r} {unit} (it over- or "
+            f"underflows); allowed: {allowed}"
+        )
     return x
 
 

@@ -10,7 +10,7 @@ from collections.abc import Mapping
 from typing import Any
 
 from impactlab._validation import warn_implausible
-from impactlab.analytic._inputs import HALF_PI
+from impactlab.analytic._inputs import HALF_PI, MIN_SPEED, drop_speed
 from impactlab.analytic.result import Measured, measured
 from impactlab.bodies._checks import inertia_ratio_problem
 
@@ -61,10 +61,6 @@ _MAGNITUDES = {"delta_p": "the permanent dent depth"}
 
 #: A nominal v_i, dv_cy or |vt_in| above this [m/s] draws an ImplausibleInputWarning.
 PLAUSIBLE_SPEED = 100.0
-#: A |v_i| below this [m/s] is refused: a fall from under 1e-13 m (v^2/2g), less than an atom's
-#: size, is no measured drop; Eq. 12's T grows as 1/|v_i|, and towards 0 T, F and their
-#: uncertainties under- or overflow.
-MIN_SPEED = 1e-6
 #: A |v_i| below this [m/s] (a fall of 0.05 um) draws an ImplausibleInputWarning: too slow for a
 #: steel drop to dent a metal flat; most likely a unit mistake (km/s taken as m/s).
 PLAUSIBLE_MIN_SPEED = 1e-3
@@ -130,15 +126,7 @@ def _check_ranges(meas: Mapping[str, Measured]) -> None:
             f"stands vertical and its tip cannot slide), got {math.degrees(th):.4g} deg "
             f"({th!r} rad){hint}"
         )
-    vi = meas["v_i"].value
-    if vi == 0.0:
-        raise ValueError("v_i must be non-zero (the drop speed), got 0.0")
-    if vi < MIN_SPEED:
-        raise ValueError(
-            f"v_i = {vi!r} m/s is below {MIN_SPEED:g} m/s in magnitude, a fall from under "
-            "1e-13 m (less than an atom's size): no measured drop, and T (~ 1/|v_i|) and its "
-            f"uncertainties overflow; allowed: |v_i| >= {MIN_SPEED:g} m/s (SI: m/s)"
-        )
+    drop_speed(meas["v_i"].value)  # |v_i| >= MIN_SPEED, as the closed forms take it
     if meas["mu"].value < 0.0:
         raise ValueError(f"mu must be >= 0, got {meas['mu'].value!r}")
     if meas["sliding_length"].value == 0.0:

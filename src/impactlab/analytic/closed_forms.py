@@ -22,10 +22,19 @@ from typing import Any
 import numpy as np
 
 from impactlab._validation import check_gravity
-from impactlab.analytic._inputs import HALF_PI, arr, magnitude, out, rod_values
+from impactlab.analytic._inputs import (
+    HALF_PI,
+    arr,
+    drop_speed,
+    finite,
+    magnitude,
+    out,
+    rod_values,
+)
 from impactlab.analytic._inputs import angle as _angle
 from impactlab.analytic._inputs import travel as _travel
-from impactlab.bodies import Rod, critical_ratio, impulse_response, lever_arms
+from impactlab.bodies import Rod, critical_ratio, impulse_response
+from impactlab.bodies import lever_arms as _lever_arms
 
 #: Standard gravity [m/s^2].
 G0 = 9.80665
@@ -39,6 +48,8 @@ VERTICAL_ROUNDOFF = 4.0 * float(np.spacing(HALF_PI))
 #: A |alpha| at or below this is zero within round-off (the closed forms give about 2e-16 at
 #: 90 deg without the rule above): ``impact_duration`` refuses it as it refuses alpha = 0.
 ALPHA_ROUNDOFF = 1e-12
+#: What a mean force's closed form allows where F over- or underflows (never inf or 0).
+_FORCE_ALLOWED = "a duration > 0 s at which F is finite and > 0; check the units (SI: s)"
 
 __all__ = [
     "ALPHA_ROUNDOFF",
@@ -61,9 +72,7 @@ def coefficients(
 ) -> tuple[Any, ...]:
     """Unvalidated core: a, b, k^2, K_x, K_y, alpha, mu_c (arrays). With ``travel`` K_x and alpha
     refer to the tip sphere's centre (the contact patch) instead of the material point O."""
-    a, b = lever_arms(0.5 * L, R, th)
-    # at 90 deg within round-off, cos(angle) ~ 6e-17 is no lever arm: alpha and mu_c are 0
-    a = np.where(np.abs(th - HALF_PI) <= VERTICAL_ROUNDOFF, 0.0, a)
+    a, b = _arms(0.5 * L, R, th)
     k2 = inertia / m
     kx_num, ky_num = impulse_response(a, b, k2, mu)
     if travel:  # lever arm of the sphere centre S: b - R
@@ -74,6 +83,29 @@ def coefficients(
     alpha_ = kx_num / ky_num
     mu_c = critical_ratio(a, b, k2)
     return a, b, k2, K_x, K_y, alpha_, mu_c
+
+
+def _arms(half_length: Any, tip_radius: Any, th: Any) -> tuple[Any, Any]:
+    """Unvalidated lever arms (a, b) [m]; at 90 deg within round-off cos(angle) ~ 6e-17 is no
+    lever arm: a = 0 there (alpha and mu_c are 0)."""
+    a, b = _lever_arms(half_length, tip_radius, th)
+    return np.where(np.abs(th - HALF_PI) <= VERTICAL_ROUNDOFF, 0.0, a), b
+
+
+def lever_arms(half_length: Any, tip_radius: Any, angle: Any) -> tuple[Any, Any]:
+    """Lever arms (a, b) [m] from the first contact point O to the centre of mass C (paper
+    Eq. 1): a = half_length cos(angle), b = half_length sin(angle) + tip_radius.
+
+    ``half_length`` >= 0 [m] (L/2 for a rod, 0 for a sphere), ``tip_radius`` > 0 [m],
+    ``angle`` [rad] in [0, pi/2]; each under the input rule of the other closed forms (a
+    string with units, ``"20 deg"``, a pint Quantity; a bare angle is radians), ValueError
+    naming the parameter otherwise; broadcasts. Within 4 units in the last place of pi/2
+    the angle is 90 deg and a = 0. (``impactlab.bodies.lever_arms`` is the unchecked core.)
+    """
+    h = arr("half_length", half_length, unit="m", low=0.0)
+    R = arr("tip_radius", tip_radius, unit="m", low=0.0, low_open=True)
+    a, b = _arms(h, R, _angle(angle))
+    return out(a), out(b)
 
 
 def impulse_coefficients(
@@ -138,7 +170,8 @@ def sliding_length(
 
     ``delta_p`` >= 0 [m] is the dent depth (the paper's delta_p <= 0 is the final tip height, so
     its form reads L_s = alpha (delta_p - v_i T)), ``v_i`` the drop velocity [m/s] (sign
-    ignored, != 0, as everywhere in ``impactlab.analytic``; v_i = -|v_i| above), ``duration``
+    ignored, |v_i| >= 1e-6 m/s, ``MIN_SPEED``, as everywhere in ``impactlab.analytic``;
+    v_i = -|v_i| above), ``duration``
     T > 0 [s]. ``vt_in`` [m/s] is the incoming tangential velocity (along +x, signed) of the
     point whose displacement is measured: the contact point for the slip, v_Cx + b omega (spin
     included), the tip sphere's centre for the travel, v_Cx + (b - R) omega; <= 0 (default 0,
@@ -150,9 +183,7 @@ def sliding_length(
     of the slip (gravity neglected).
     """
     dp = magnitude("delta_p", delta_p, "the permanent dent depth")
-    vi = -np.abs(arr("v_i", v_i, unit="m/s"))
-    if (vi == 0).any():
-        raise ValueError("v_i must be non-zero (the drop speed), got 0.0")
+    vi = -drop_speed(v_i)
     T = arr("duration", duration, unit="s", low=0.0, low_open=True)
     vt = _one_direction(vt_in)
     th = _angle(angle)
@@ -224,19 +255,19 @@ def impact_duration(
     (the paper's form has vt_in = 0). ``delta_p`` >= 0 [m] the dent depth (a negative value,
     the paper's sign, raises ValueError); ``sliding_length`` [m] the length of the scar, or the
     engine's signed ``sliding_length`` (its magnitude enters; != 0); ``v_i`` the drop velocity
-    [m/s] (sign ignored, != 0). ``alpha_`` must be negative (gross sliding); ``alpha_ >= 0``
-    means the tip sticks and raises ValueError, as does a |alpha_| at round-off
-    (<= ``ALPHA_ROUNDOFF``: zero, the rod vertical or mu at mu_c). ``vt_in`` [m/s] is the
+    [m/s] (sign ignored, |v_i| >= 1e-6 m/s, ``MIN_SPEED``, as in :func:`invert`). ``alpha_``
+    must be negative (gross sliding); ``alpha_ >= 0`` means the tip sticks and raises
+    ValueError, as does a |alpha_| at round-off (<= ``ALPHA_ROUNDOFF``: zero, the rod vertical
+    or mu at mu_c). ``vt_in`` [m/s] is the
     incoming tangential velocity (along +x, signed, spin included: see :func:`sliding_length`)
     of the point whose displacement is measured, <= 0 (ValueError for > 0, giving the bounds
-    of T: the sliding reverses during the contact).
+    of T: the sliding reverses during the contact). A T that over- or underflows (inf, 0) is
+    refused, naming the inputs.
     """
     dp = magnitude("delta_p", delta_p, "the permanent dent depth")
     ls = np.abs(arr("sliding_length", sliding_length, unit="m"))  # signed: along +x
-    vi = np.abs(arr("v_i", v_i, unit="m/s"))
+    vi = drop_speed(v_i)
     al = arr("alpha_", alpha_)
-    if (vi == 0).any():
-        raise ValueError("v_i must be non-zero (the drop speed), got 0.0")
     if (ls == 0).any():
         raise ValueError(
             "sliding_length must be non-zero: in gross sliding any normal "
@@ -264,7 +295,11 @@ def impact_duration(
         return duration_from_dent(dp, ls, vi, ab, gravity, g_), hi
 
     vt = _one_direction(vt_in, bounds)
-    return out(duration_from_dent(dp, ls, vi - vt / ab if (vt != 0).any() else vi, ab, gravity, g_))
+    with np.errstate(all="ignore"):
+        T = duration_from_dent(dp, ls, vi - vt / ab if (vt != 0).any() else vi, ab, gravity, g_)
+    given = {"delta_p": (dp, "m"), "sliding_length": (ls, "m"), "v_i": (vi, "m/s")}
+    given |= {"alpha_": (al, ""), "vt_in": (vt, "m/s")}
+    return out(finite("the duration T", T, "s", given, "a finite T > 0 s; check the units (SI)"))
 
 
 def duration_from_dent(dp: Any, ls: Any, vi: Any, abs_alpha: Any, gravity: bool, g: float) -> Any:
@@ -313,13 +348,17 @@ def mean_force_momentum(
 
     F T = m dv_Cy (the paper), or F T = m dv_Cy + m g T with ``gravity=True`` (the measured change
     of the centre-of-mass velocity includes the gravity impulse, which the contact must overcome).
-    ``duration`` T > 0 [s], ``mass`` > 0 [kg], ``dv_cy`` [m/s] the upward change, > 0.
+    ``duration`` T > 0 [s], ``mass`` > 0 [kg], ``dv_cy`` [m/s] the upward change, > 0; a
+    force that over- or underflows (a duration of 1e-320 s: inf) is refused.
     """
     T = arr("duration", duration, unit="s", low=0.0, low_open=True)
     m = arr("mass", mass, unit="kg", low=0.0, low_open=True)
     dv = _upward("dv_cy", dv_cy)
     g_ = check_gravity("g", g)
-    return out(m * dv / T + (m * g_ if gravity else 0.0))
+    with np.errstate(all="ignore"):
+        F = m * dv / T + (m * g_ if gravity else 0.0)
+    given = {"duration": (T, "s"), "mass": (m, "kg"), "dv_cy": (dv, "m/s")}
+    return out(finite("the mean force F", F, "N", given, _FORCE_ALLOWED))
 
 
 def mean_force_rigid(
@@ -329,14 +368,19 @@ def mean_force_rigid(
 
     The tip's normal velocity goes from v_i to -e v_i: (1 + e)|v_i| = K_y P (- g T with gravity,
     which acts on C only and does not turn the rod), so F = (1 + e)|v_i| / (K_y T), or
-    F = [(1 + e)|v_i| + g T] / (K_y T) with ``gravity=True``. ``e`` in [0, 1], ``K_y`` > 0 [1/kg].
+    F = [(1 + e)|v_i| + g T] / (K_y T) with ``gravity=True``. ``e`` in [0, 1], ``K_y`` > 0 [1/kg],
+    ``v_i`` [m/s] sign ignored, |v_i| >= 1e-6 m/s (``MIN_SPEED``, as :func:`invert`); a force
+    that over- or underflows (a duration of 1e-320 s: inf) is refused.
     """
     T = arr("duration", duration, unit="s", low=0.0, low_open=True)
     e_ = arr("e", e, low=0.0, high=1.0)
-    vi = np.abs(arr("v_i", v_i, unit="m/s"))
+    vi = drop_speed(v_i)
     Ky = arr("K_y", K_y, unit="1/kg", low=0.0, low_open=True)
     g_ = check_gravity("g", g)
-    return out(((1.0 + e_) * vi + (g_ * T if gravity else 0.0)) / (Ky * T))
+    with np.errstate(all="ignore"):
+        F = ((1.0 + e_) * vi + (g_ * T if gravity else 0.0)) / (Ky * T)
+    given = {"duration": (T, "s"), "e": (e_, ""), "v_i": (vi, "m/s"), "K_y": (Ky, "1/kg")}
+    return out(finite("the mean force F", F, "N", given, _FORCE_ALLOWED))
 
 
 def check_sliding(mu: Any, mu_c: Any, th: Any) -> None:

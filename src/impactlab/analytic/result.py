@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import Any
@@ -11,13 +11,20 @@ import numpy as np
 
 from impactlab._display import field_row, field_rows, format_number, html_table
 from impactlab._validation import check_finite, check_nonnegative
+from impactlab.bodies._checks import INERTIA_MISFIT
 from impactlab.units import has_unit, parse_quantity
 
-__all__ = ["MC_INTERVAL", "InversionResult", "Measured", "measured"]
+__all__ = ["DOUBT_PHRASES", "MC_INTERVAL", "InversionResult", "Measured", "doubting", "measured"]
 
 #: The percentiles [%] of the Monte Carlo's interval (``T_interval_mc``, ``F_interval_mc``): the
 #: central 95 %.
 MC_INTERVAL = (2.5, 97.5)
+#: The words of the inversion's warnings that doubt its result (``InversionResult.doubts``,
+#: ``ok``; ``impactlab invert --json``'s ``doubts``): a velocity change that no impact gives
+#: (dv_cy implying e outside [0, 1]), a duration no rigid-body impact has (the two that
+#: ``impactlab analyze`` holds as ``experiment.analysis.IMPOSSIBLE_PHRASES``), and a rod whose
+#: mass and inertia do not fit (``analyze``'s doubt of the rod).
+DOUBT_PHRASES = ("no impact gives it", "far longer than a rigid-body impact", INERTIA_MISFIT)
 #: Units of the numeric fields of :class:`InversionResult` (for its tables).
 _UNITS = {
     k: unit
@@ -58,14 +65,22 @@ class Measured:
 
 
 def measured(name: str, x: Any, unit: str = "") -> Measured:
-    """``x`` (a number, a ``(value, sigma)`` pair or a :class:`Measured`) as :class:`Measured`;
-    with a ``unit``, value and sigma may also be strings with units or pint Quantities
-    (``impactlab._validation``). A bare number is SI, except a bare sigma beside a value given
-    with its unit: that sigma is in the value's unit, as on the command line
-    (``("45 deg", 0.2)`` is 0.2 deg, ``("22 um", 2)`` 2 um). ValueError naming ``name``."""
+    """``x`` (a number, a ``(value, sigma)`` tuple or a :class:`Measured`) as
+    :class:`Measured`; with a ``unit``, value and sigma may also be strings with units or pint
+    Quantities (``impactlab._validation``). A bare number is SI, except a bare sigma beside a
+    value given with its unit: that sigma is in the value's unit, as on the command line
+    (``("45 deg", 0.2)`` is 0.2 deg, ``("22 um", 2)`` 2 um). ValueError naming ``name``, also
+    for a list (neither a pair nor several drops: one drop at a time)."""
     if isinstance(x, Measured):
         return x
-    if isinstance(x, tuple | list):
+    if isinstance(x, list):  # one drop: a list is neither a pair nor several drops here
+        raise ValueError(
+            f"{name} = {x!r} is a list: a (value, sigma) pair is written as a tuple (value, "
+            "sigma) or Measured(value, sigma); invert takes one drop, one value per input (for "
+            "several drops call it once per drop, or use the closed forms, which broadcast over "
+            "arrays: impact_duration, mean_force_rigid, mean_force_momentum)"
+        )
+    if isinstance(x, tuple):
         if len(x) != 2:
             raise ValueError(f"{name} must be a number or a (value, sigma) pair, got {x!r}")
         v, s = x
@@ -75,6 +90,11 @@ def measured(name: str, x: Any, unit: str = "") -> Measured:
     if unit and has_unit(v) and _bare_number(s):
         s = float(s) * _unit_of(name, v, unit)  # in the value's unit
     return Measured(value, check_nonnegative(f"the sigma of {name}", s, unit))
+
+
+def doubting(texts: Iterable[str]) -> tuple[str, ...]:
+    """The warnings among ``texts`` that doubt the result (``DOUBT_PHRASES``), in order."""
+    return tuple(t for t in texts if any(p in t for p in DOUBT_PHRASES))
 
 
 def _bare_number(x: Any) -> bool:
@@ -114,10 +134,15 @@ class InversionResult:
     ``correlation`` ((name, name) -> coefficient of the inputs as used, as in ``inputs``;
     empty: independent; ``to_dict()``: a list of ``{"inputs": [a, b], "coefficient":
     {"value", "unit"}}``); ``warnings``: the texts of the inversion's ImplausibleInputWarnings
-    (as ``impactlab invert --json`` lists them; ``()`` for none). ``print(result)`` and
-    Jupyter's table show the inputs (and their correlations), T and F with their
-    uncertainties, the Monte Carlo's medians and 95 % intervals (where an input has a sigma),
-    the note on discarded samples and the warnings; ``repr`` is one line.
+    (as ``impactlab invert --json`` lists them; ``()`` for none); ``doubts``: those of the
+    warnings that say no impact gives this result (a dv_cy implying e outside [0, 1], a
+    duration no rigid-body impact has) or that the rod's mass and inertia do not fit
+    (:data:`DOUBT_PHRASES`, the rule of ``impactlab invert --json`` and ``analyze``); ``ok``
+    (property, and in ``to_dict()``): False when there is a doubt: read T and F as numbers no
+    measured impact gives. ``print(result)`` and Jupyter's table show the inputs (and their
+    correlations), T and F with their uncertainties, the Monte Carlo's medians and 95 %
+    intervals (where an input has a sigma), the note on discarded samples, ``ok`` and the
+    doubts (where there is one) and the warnings; ``repr`` is one line.
     """
 
     duration: float
@@ -153,9 +178,16 @@ class InversionResult:
     correlation: Mapping[tuple[str, str], float] = field(
         default_factory=lambda: MappingProxyType({}), repr=False
     )
+    doubts: tuple[str, ...] = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "warnings", tuple(str(w) for w in self.warnings))
+        object.__setattr__(self, "doubts", doubting(self.warnings))
+
+    @property
+    def ok(self) -> bool:
+        """False when a warning doubts the result (``doubts``): no impact gives it."""
+        return not self.doubts
 
     def _uncertain(self) -> bool:
         """Whether an input has a sigma (the Monte Carlo ran)."""
@@ -197,7 +229,8 @@ class InversionResult:
         out["measure"] = self.measure
         rows += field_rows(out, _UNITS, sigmas)
         rows += [("note", self._note(), "")] if self._note() else []
-        return rows + [("warning", text, "") for text in self.warnings]
+        rows += [("ok", "no", ""), *(("doubt", d, "") for d in self.doubts)] if self.doubts else []
+        return rows + [("warning", w, "") for w in self.warnings if w not in self.doubts]
 
     def _repr_html_(self) -> str:
         title = "InversionResult (paper Eqs. 12, 29)"
@@ -223,6 +256,8 @@ class InversionResult:
         ]
         if self._uncertain():
             parts.append(f"mc_used={self.mc_used} of {self.n_samples}")
+        if self.doubts:
+            parts.append("ok=False")
         if self.warnings:
             parts.append(f"{len(self.warnings)} warning" + "s" * (len(self.warnings) > 1))
         return f"InversionResult({', '.join(parts)})"
@@ -242,7 +277,7 @@ class InversionResult:
             elif isinstance(v, tuple):
                 v = list(v)
             out[k] = v
-        return out
+        return out | {"ok": self.ok}
 
     def __str__(self) -> str:
         ins = self.inputs
@@ -297,5 +332,7 @@ class InversionResult:
             lines.append(f"  F from the rigid-body identity (with e): {rigid} N")
         if self._note():
             lines.append(f"  note: {self._note()}")
-        lines += [f"  warning: {text}" for text in self.warnings]
+        if self.doubts:
+            lines += ["  ok: no", *(f"  doubt: {d}" for d in self.doubts)]
+        lines += [f"  warning: {w}" for w in self.warnings if w not in self.doubts]
         return "\n".join(lines)

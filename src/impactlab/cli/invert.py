@@ -166,9 +166,9 @@ def _file_count(extra: dict[str, Any], key: str, default: int, least: int) -> in
 _HELP = {
     "angle": "Rod-to-flat angle with its unit: '20 deg' or '0.35 rad' (a bare number is "
     "refused; required unless --case or --file gives it).",
-    "v_i": "Drop velocity of the tip ('-1.41 m/s'; bare number: m/s; T and F use its magnitude, "
-    "but a --correlation naming vi is of the value as given: a negative v_i flips its sign; "
-    "required unless --case or --file gives it).",
+    "v_i": "Drop velocity of the tip ('-1.41 m/s'; bare number: m/s; its sign is ignored: T and "
+    "F use, and the output shows, its magnitude |v_i|, but a --correlation naming vi is of the "
+    "value as given: a negative v_i flips its sign; required unless --case or --file gives it).",
     "e": "Coefficient of restitution (tip, normal), for the mean force F; it or --dv-cy is "
     "required (without either the command is refused, T too) unless --case or --file gives it.",
     "mu": "Friction coefficient (paper Eq. 28); required unless --case or --file gives it.",
@@ -295,7 +295,7 @@ def invert_cmd(
               sigma_vt_in)  # fmt: skip
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", ImplausibleInputWarning)
-        res, given = run_invert(
+        res, _given = run_invert(
             case=case,
             file=file,
             values=dict(zip(FIELDS, inputs, strict=True)),
@@ -320,7 +320,7 @@ def invert_cmd(
         data |= {"ok": not doubts, "doubts": doubts}
         print(json.dumps({**data, "warnings": found}, indent=2))
     else:
-        print_inversion(res, given)
+        print_inversion(res, doubts)
         if model:
             rows = [(f"model {k} ({model['law']})", *field_row(k, v, SI_UNITS[k])[1:])
                     for k, v in model.items() if isinstance(v, float)]  # fmt: skip

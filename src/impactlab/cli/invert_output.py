@@ -4,7 +4,7 @@ JSON of docs/json-schema.md and the table in display units."""
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Sequence
 from typing import Any
 
 import typer
@@ -15,8 +15,7 @@ from impactlab._json import to_json
 from impactlab._version import __version__
 from impactlab.analytic import InversionResult
 from impactlab.analytic.inversion import MC_REJECTED_WARNING
-from impactlab.analytic.result import MC_INTERVAL
-from impactlab.bodies._checks import INERTIA_MISFIT
+from impactlab.analytic.result import MC_INTERVAL, doubting
 from impactlab.cli._common import SI_UNITS, print_rows
 from impactlab.cli.invert_inputs import CORRELATED
 
@@ -38,9 +37,9 @@ _SIGMAS = {
     "T_mc": "sigma_T_mc",
     "F_mc": "sigma_F_mc",
 }
-#: The inputs ``invert`` takes the magnitude of: a correlation of one given negative is echoed
-#: with the other sign (the result holds those of the magnitudes).
-_MAGNITUDES = ("v_i", "delta_p", "sliding_length")
+#: The inputs whose sign ``invert`` ignores, shown in the table as the magnitudes it uses (and
+#: the JSON's ``inputs`` holds): labelled ``|v_i|``, ``|sliding_length|``.
+_MAGNITUDES = ("v_i", "sliding_length")
 #: SI units of the outputs that ``SI_UNITS`` does not hold.
 _UNITS = {**SI_UNITS, "T_median_mc": "s", "F_median_mc": "N"}
 
@@ -77,45 +76,50 @@ def inversion_json(res: InversionResult) -> dict[str, Any]:
 
 
 def inversion_doubts(inverted: list[str], compared: list[str]) -> list[str]:
-    """What makes the inversion not ok (``ok`` false in ``invert --json``), by the rule of
-    ``impactlab analyze`` (``experiment.analysis``): the inversion's warnings (``inverted``)
-    that say its result is impossible (a velocity change no impact gives, a duration no
-    rigid-body impact has, a Monte Carlo spread to such durations) or that the rod's mass and
-    inertia do not fit (``analyze``'s doubt of the rod), and every warning of the comparison with
-    the simulated impact (``compared``: a T or F more than 3 times off)."""
-    from impactlab.experiment.analysis import IMPOSSIBLE_PHRASES  # analyze's phrases: one rule
-
-    phrases = (*IMPOSSIBLE_PHRASES, INERTIA_MISFIT)
-    return [t for t in inverted if any(p in t for p in phrases)] + list(compared)
+    """What makes the inversion not ok (``ok`` false in ``invert --json``): the inversion's
+    warnings (``inverted``) that doubt it, as its ``InversionResult.doubts`` (by the rule of
+    ``impactlab analyze``: a velocity change no impact gives, a duration no rigid-body impact
+    has, a Monte Carlo spread to such durations, a rod whose mass and inertia do not fit;
+    ``analytic.result.DOUBT_PHRASES``), and every warning of the comparison with the simulated
+    impact (``compared``: a T or F more than 3 times off)."""
+    return [*doubting(inverted), *compared]
 
 
-def _correlation_row(
-    res: InversionResult, given: Mapping[str, tuple[float, float]]
-) -> list[tuple[str, str, str]]:
-    """The row of the inputs' correlations (none when independent), as given: the result's
-    coefficient of the magnitudes with the other sign for each input of a pair given negative
-    (``--vi "-1.41 m/s"``), as the inputs' echo keeps their signs; each pair in the order of
-    the command's inputs (``CORRELATED``: angle, v_i, e, mu, delta_p, sliding_length, dv_cy,
-    vt_in, the rows above it), as ``--correlation e,mu=-0.3`` or ``mu,e=-0.3`` reads it:
-    ``(e, mu) -0.3`` (``InversionResult.correlation`` and the JSON hold a pair in the order
-    of ``invert``'s keywords)."""
+def _label(name: str) -> str:
+    """An input's label in the table: ``|v_i|`` for an input whose magnitude is used."""
+    return f"|{name}|" if name in _MAGNITUDES else name
+
+
+def _correlation_row(res: InversionResult) -> list[tuple[str, str, str]]:
+    """The row of the inputs' correlations (none when independent): the coefficients of the
+    inputs as used, as the JSON's ``correlation`` (those of the magnitudes: ``--vi "-1.41
+    m/s" --correlation vi,ls=0.5`` shows ``(|v_i|, |sliding_length|) -0.5``); each pair in the
+    order of the command's inputs (``CORRELATED``: angle, v_i, e, mu, delta_p, sliding_length,
+    dv_cy, vt_in, the rows above it), as ``--correlation e,mu=-0.3`` or ``mu,e=-0.3`` reads
+    it: ``(e, mu) -0.3`` (``InversionResult.correlation`` and the JSON hold a pair in the
+    order of ``invert``'s keywords)."""
     texts = []
     for (a, b), rho in res.correlation.items():
-        flips = sum(k in _MAGNITUDES and given.get(k, (0.0,))[0] < 0 for k in (a, b))
         first, second = sorted((a, b), key=CORRELATED.index)
-        texts.append(f"({first}, {second}) {(-rho if flips % 2 else rho):.4g}")
+        texts.append(f"({_label(first)}, {_label(second)}) {rho:.4g}")
     return [("correlation", ", ".join(texts), "")] if texts else []
 
 
-def print_inversion(res: InversionResult, given: Mapping[str, tuple[float, float]]) -> None:
-    """The inputs as given and their correlations, then T and F (± first order; Monte Carlo
-    rows, with their medians, 95 % intervals and the number of samples drawn and used, only when
-    an input has an uncertainty), in display units. A discarded share up to
-    ``MC_REJECTED_WARNING`` is noted under the table; above it the inversion's warning (stderr)
-    says so."""
-    uncertain = any(s > 0 for _v, s in given.values())
-    rows = [field_row(k, float(v), INPUT_UNITS[k], s) for k, (v, s) in given.items()]
-    rows += _correlation_row(res, given)
+def print_inversion(res: InversionResult, doubts: Sequence[str] = ()) -> None:
+    """The inputs as the inversion used them, as the JSON's ``inputs`` (SI values in display
+    units; the magnitudes of v_i and sliding_length, labelled ``|v_i|``, ``|sliding_length|``:
+    ``--vi "-1.41 m/s"`` and ``--vi "1.41 m/s"`` show 1.41) and their correlations, then T and
+    F (± first order; Monte Carlo rows, with their medians, 95 % intervals and the number of
+    samples drawn and used, only when an input has an uncertainty), in display units, and
+    ``ok`` no with each of the ``doubts`` where there is one (as the JSON's ``ok`` and
+    ``doubts``). A discarded share up to ``MC_REJECTED_WARNING`` is noted under the table;
+    above it the inversion's warning (stderr) says so."""
+    uncertain = any(s > 0 for _v, s in res.inputs.values())
+    rows = [
+        (_label(k), *field_row(k, float(v), INPUT_UNITS[k], s)[1:])
+        for k, (v, s) in res.inputs.items()
+    ]
+    rows += _correlation_row(res)
     outputs: dict[str, Any] = {
         "duration": res.duration,
         "mean_force": res.mean_force,
@@ -132,6 +136,7 @@ def print_inversion(res: InversionResult, given: Mapping[str, tuple[float, float
     outputs["measure"] = res.measure
     sigmas = {k: getattr(res, name) for k, name in _SIGMAS.items()} if uncertain else {}
     rows += field_rows(outputs, _UNITS, sigmas)
+    rows += [("ok", "no", ""), *(("doubt", d, "") for d in doubts)] if doubts else []
     title = "impactlab invert (paper Eqs. 12, 29)"
     if uncertain:
         lo, hi = MC_INTERVAL
