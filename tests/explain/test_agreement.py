@@ -91,7 +91,7 @@ def test_best_ranks_over_the_quantities_every_ok_configuration_predicts() -> Non
     assert math.isnan(s.loc[FLEXIBLE.name, "chi2"])
     v = x.verdict("d")
     assert x.best("d") == v.configuration == LIBRARY_RATES[0].name  # e: 0.52 beats 0.55, 0.6
-    assert v.quantities == ("e", "delta_p") and v.left_out == ("spin_out",)
+    assert v.ranked_over == ("e", "delta_p") and v.left_out == ("spin_out",)
     assert f"spin_out (not predicted by {FLEXIBLE.name}, {LIBRARY_RATES[0].name})" in v.reason
     # with the rigid rod not ok, the others are ranked over the quantities both predict
     outcomes[("d", RIGID.name)] = Outcome("refused: mu must be >= 0", False, {})

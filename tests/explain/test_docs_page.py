@@ -49,3 +49,15 @@ def test_the_numbers_it_states(paper_explained) -> None:
     for phrase in ("dent of 62 um", "scar of 22 um", "touches the flat 4 times",
                    "dent of 32 um", "scar of 261 um", "22.9 um (z = +0.4)", "0.74"):  # fmt: skip
         assert phrase in " ".join(TEXT.split()), phrase
+
+
+def test_the_quoted_verdict_line_is_the_commands(cli_main, paper_file, paper_explained) -> None:
+    """The page's 70 deg verdict line is the command's, character for character, and the
+    p-values it states are the verdicts'."""
+    code, out, err = cli_main("explain", str(paper_file), "--quiet")
+    assert code == 0, err
+    line = next(x for x in out.splitlines() if x.startswith("verdict (70 deg): "))
+    quoted = [x for x in TEXT.splitlines() if x.startswith("verdict (70 deg): ")]
+    assert quoted == [line]
+    p20, p70 = (paper_explained.verdict(d).p_value for d in ("20 deg", "70 deg"))
+    assert f"(p = {p20:.2g} and {p70:.2g}, below 0.01:" in " ".join(TEXT.split())

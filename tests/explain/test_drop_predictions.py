@@ -47,7 +47,7 @@ def test_a_drop_does_not_predict_one_contacts_duration_nor_a_signed_travel() -> 
     # over the scar, which both predict, the flexible rod is first, but the rigid rod agrees
     # with more values (ones the drop does not predict): no configuration is named
     v = x.verdict("a")
-    assert x.best("a") is None and v.quantities == ("scar_length",)
+    assert x.best("a") is None and v.ranked_over == ("scar_length",)
     assert v.left_out == ("contact_travel", "duration", "mean_force")
     assert "but rigid body agrees with more of the measured values" in v.reason
 

@@ -61,7 +61,7 @@ def test_one_line_errors(cli_main, tmp_path, paper_file) -> None:
     no_mu.write_text("label,angle [deg],vy [m/s],e,e_sigma\na,20,-1.41,0.5,0.03\n")
     cases = [
         ((str(bad),), "sigma"),
-        ((str(no_mu),), "give no mu"),
+        ((str(no_mu),), "no_mu.csv: drop 1 (a) gives no mu: "),
         ((str(tmp_path / "none.csv"),), "measurements file not found"),
         ((str(paper_file), "--law", "ghaednya"), "ghaednia"),
         ((str(paper_file), "--rate", "cowper"), "--rate must be one of"),

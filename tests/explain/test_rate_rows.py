@@ -37,6 +37,19 @@ def test_an_aluminium_flat_runs_no_library_rate_row_and_says_why() -> None:
     assert s.loc["flexible rod", "ok"] and s.loc["rigid body", "ok"]
 
 
+def test_the_library_law_by_its_own_constants_does_not_run_on_aluminium() -> None:
+    """cowper-symonds(D=40.4 1/s, q=5) is the library's mild-steel law: its row keeps the label
+    and is not run on aluminium, as the law by its name."""
+    x = explain(Measurements.from_records([AL_DROP]), rate_laws=["cowper-symonds(D=40.4 1/s, q=5)"])
+    s = _rows(x, "al")
+    name = "flexible rod + rate-dependent flat (cowper-symonds, upper estimate)"
+    assert list(s.index) == ["rigid body", "flexible rod", name]
+    assert not s.loc[name, "ok"] and x.result("al", name) is None
+    assert s.loc[name, "status"].startswith(
+        "not run: the cowper-symonds constants are fitted for low-carbon (mild) steel"
+    )
+
+
 def test_a_rate_law_of_ones_own_forms_the_rate_rows() -> None:
     x = explain(Measurements.from_records([AL_DROP]), rate_laws=[OWN])
     s = _rows(x, "al")
@@ -72,5 +85,7 @@ def test_a_sphere_runs_the_rigid_configuration_only() -> None:
 
 def test_a_drop_without_mu_is_refused() -> None:
     no_mu = {k: v for k, v in AL_DROP.items() if k != "mu"}
-    with pytest.raises(ValueError, match=r"'al' give no mu: explain runs every drop with its"):
+    with pytest.raises(
+        ValueError, match=r"^drop 1 \(al\) gives no mu: explain runs every drop with its"
+    ):
         explain(Measurements.from_records([no_mu]))

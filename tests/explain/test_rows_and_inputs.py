@@ -11,6 +11,7 @@ import pytest
 
 import impactlab.explain
 from impactlab.calibrate.measurements import Measurements
+from impactlab.contact.rate import RateLaw
 from impactlab.explain import configurations, explain
 from impactlab.explain.api import ELASTIC_NOT_RUN
 from impactlab.explain.configurations import LIBRARY_RATES, RIGID
@@ -55,9 +56,36 @@ def test_out_under_a_file_is_refused_before_any_run(cli_main, paper_file, tmp_pa
         assert err.startswith(f"error: --out {str(out)!r}: ") and "is a file" in err
 
 
+def test_rate_laws_of_the_wrong_kind_are_refused_by_name() -> None:
+    for bad, kind in ((5, "int"), (3.5, "float"), (b"none", "bytes"), ({"a": 1}, "dict")):
+        words = r"^rate_laws must be None \(the library's rate laws\), a rate law or a list of "
+        with pytest.raises(ValueError, match=rf"{words}rate laws .*; got .* \({kind}\)$"):
+            explain(Measurements.from_records([DROP]), rate_laws=bad)  # type: ignore[arg-type]
+    with pytest.raises(ValueError, match=r"^--rate must be None"):
+        configurations(5, "--rate")  # type: ignore[arg-type]
+
+
+def test_a_toml_drop_without_mu_is_named_with_its_file_and_place(tmp_path) -> None:
+    toml = tmp_path / "m.toml"
+    drop = 'angle = "20 deg"\nvy = "-1.41 m/s"\ne = 0.5\ne_sigma = 0.03\n'
+    toml.write_text(f'[[drop]]\nlabel = "a"\nmu = 0.2\n{drop}[[drop]]\nlabel = "b"\n{drop}')
+    with pytest.raises(ValueError, match="gives no mu") as err:
+        explain(toml)
+    assert str(err.value) == (
+        f"{toml}: drop 2 (b) gives no mu: explain runs every drop with its measured mu as the "
+        "Coulomb coefficient (nothing tuned); give each [[drop]] its mu key"
+    )
+    csv = tmp_path / "m.csv"
+    csv.write_text("label,angle [deg],vy [m/s],mu,e,e_sigma\na,20,-1.41,,0.5,0.03\n"
+                   "b,20,-1.41,0.2,0.5,0.03\nc,20,-1.41,,0.5,0.03\n")  # fmt: skip
+    with pytest.raises(ValueError, match=rf"^{csv}: drops 1 \(a\), 3 \(c\) give no mu: .*; "
+                       "fill in each drop's mu cell$"):  # fmt: skip
+        explain(csv)
+
+
 def test_error_texts_fit_the_situation() -> None:
     partial = [DROP, {**DROP, "label": "b", "mu": math.nan}]
-    with pytest.raises(ValueError, match=r"'b' give no mu \(an empty mu cell\).*give a mu for"):
+    with pytest.raises(ValueError, match=r"^drop 2 \(b\) gives no mu: .*give each drop its mu$"):
         explain(Measurements.from_records(partial))
     assert len(configurations([None])) == len(configurations(["none"])) == 2
     with pytest.raises(ValueError, match="give 'none' alone for no rate row"):
@@ -71,9 +99,18 @@ def test_error_texts_fit_the_situation() -> None:
 
 def test_a_library_law_keeps_its_label_and_is_run_once() -> None:
     assert [c.name for c in configurations(["cowper-symonds", "johnson-cook"])[2:]] == [CS, JC]
-    with pytest.raises(ValueError, match=r"the same law .* given twice"):
-        configurations(["cowper-symonds", "cowper-symonds(D=40.4 1/s, q=5)"])
-    own = configurations(["cowper-symonds(D=40.4 1/s, q=5)"])[2]
+    with pytest.raises(ValueError, match=r"--rate: cowper-symonds and cowper-symonds\(D=40.4 1/s, "
+                       r"q=5\) are the same law .* given twice"):  # fmt: skip
+        configurations(["cowper-symonds", "cowper-symonds(D=40.4 1/s, q=5)"], "--rate")
+    # given by its own constants, in any form, it is the library's law: label, material check
+    for given in ("cowper-symonds(D=40.4 1/s, q=5)", "cowper-symonds (D = 0.0404 1/ms, q = 5)",
+                  RateLaw.custom("cowper-symonds", D="40.4 1/s", q=5)):  # fmt: skip
+        same = configurations([given])[2]
+        assert same == LIBRARY_RATES[0] and same.name == CS
+        assert same.rate is not None and same.rate.fitted_for is not None
+    assert configurations(["johnson-cook(C=0.022, rate0=1 1/s)"])[2] == LIBRARY_RATES[1]
+    # other constants are one's own law: its constants in the name, no material check
+    own = configurations(["cowper-symonds(D=40 1/s, q=5)"])[2]
     assert own.rate is not None and own.rate.fitted_for is None and "estimate" not in own.name
 
 

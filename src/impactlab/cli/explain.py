@@ -4,12 +4,11 @@ impactlab explain DROPS.csv|DROPS.toml [--law NAME] [--rate LAW ...] [--json] [-
                   [--quiet]
 
 Each drop runs with the rigid body, the flexible rod and the flexible rod on a rate-dependent
-flat (docs/explain.md); the table sets every measured value beside each prediction (z, within
-2 sigma), and a verdict line per drop says which configuration explains it best, or that none
-agrees. ``--out DIR`` writes explain.csv and explain.json there (a file of that name that
-impactlab explain did not write, or a folder that cannot be made or written, stops the command
-before any work).
-"""
+flat (docs/explain.md); the table sets every measured value beside each prediction (z, within 2
+sigma), and a verdict line per drop says which configuration explains it best, that the one
+ranked first is itself inconsistent with the measurements, or that none agrees. ``--out DIR``
+writes explain.csv and explain.json there (a file of that name that impactlab explain did not
+write, or a folder that cannot be made or written, stops the command before any work)."""
 
 from __future__ import annotations
 

@@ -20,7 +20,7 @@ from impactlab.explain.notes import explanation_notes
 from impactlab.explain.result import Explanation
 from impactlab.explain.runs import Outcome, drop_alone, drop_flat, run_on_drop
 from impactlab.explain.tables import comparison_table, summary_table
-from impactlab.explain.verdict import verdict
+from impactlab.explain.verdict import drop_modes, verdict
 
 __all__ = ["ELASTIC_NOT_RUN", "FRICTION", "INERTIA_NOT_RUN", "SPHERE_NOT_RUN", "explain"]
 
@@ -57,19 +57,33 @@ def _measurements(measurements: str | Path | Measurements) -> Measurements:
             "measurements must be a measurements file (CSV or TOML, docs/calibrate.md) or a "
             f"Measurements, got {type(measurements).__name__}"
         )
-    mu = meas.inputs["mu"]
-    missing = [meas.labels[d] for d in range(meas.n_drops) if not math.isfinite(mu[d])]
-    if missing:
-        some = len(missing) < meas.n_drops  # the column is there, a cell of it empty
-        raise ValueError(
-            f"drop(s) {', '.join(map(repr, missing))} give no mu"
-            f"{' (an empty mu cell)' if some else ''}: explain runs every drop with its "
-            "measured mu as the Coulomb coefficient (nothing tuned); "
-            f"{'give a mu for each drop' if some else 'add a mu column'}"
-        )
+    _refuse_missing_mu(meas)
     if meas.n_values == 0:
         raise ValueError("the measurements hold no measured value: nothing to explain")
     return meas
+
+
+def _refuse_missing_mu(meas: Measurements) -> None:
+    """ValueError naming the drops without a measured mu (position and label, after the file
+    they were read from: ``m.toml: drop 2 (b) gives no mu: ...``)."""
+    mu = meas.inputs["mu"]
+    missing = [d for d in range(meas.n_drops) if not math.isfinite(mu[d])]
+    if not missing:
+        return
+    some = len(missing) < meas.n_drops  # the column is there, a cell of it empty
+    suffix = Path(meas.source).suffix.lower() if meas.source else ""
+    drops = ", ".join(f"{d + 1} ({meas.labels[d]})" for d in missing)
+    where = f"drop {drops} gives" if len(missing) == 1 else f"drops {drops} give"
+    if suffix == ".toml":
+        how = "give each [[drop]] its mu key"
+    elif suffix == ".csv":
+        how = "fill in each drop's mu cell" if some else "add a mu column"
+    else:
+        how = "give each drop its mu"
+    raise ValueError(
+        f"{meas.source + ': ' if meas.source else ''}{where} no mu: explain runs every drop "
+        f"with its measured mu as the Coulomb coefficient (nothing tuned); {how}"
+    )
 
 
 def _not_run(config: Configuration, meas: Measurements, d: int, law: str) -> str | None:
@@ -133,7 +147,8 @@ def explain(
     comparison = comparison_table(meas, configs, outcomes)
     summary = summary_table(meas, configs, outcomes, comparison)
     pairs = {label: drop_pairs(meas, d) for d, label in enumerate(meas.labels)}
-    verdicts = [verdict(summary, comparison, label, pairs[label]) for label in meas.labels]
+    verdicts = [verdict(summary, comparison, label, pairs[label], drop_modes(outcomes, label))
+                for label in meas.labels]  # fmt: skip
     notes = explanation_notes(outcomes, summary, verdicts, pairs)
     return Explanation(
         comparison, summary, configs, law, FRICTION, notes, meas.source, outcomes, pairs

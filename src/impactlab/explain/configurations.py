@@ -5,13 +5,17 @@ rate-dependent flat.
 The rate-dependent rows use the library's rate laws only where their constants hold: both
 (Cowper-Symonds, an upper estimate of the rate effect; Johnson-Cook, a lower one) are fitted
 for low-carbon (mild) steel (``impactlab.contact.rate``, ``RateLaw.fitted_for``), so a drop on
-another flat does not run them, and the result says why. Rate laws of one's own
-(``rate_laws=["cowper-symonds(D=6500 1/s, q=4)"]``, ``RateLaw.custom``) replace them: the user's
+another flat does not run them, and the result says why. A library law is the library's
+however it is given: by its name, by its form with its own constants
+(``"cowper-symonds(D=40.4 1/s, q=5)"``) or as a ``RateLaw`` with them; it keeps its estimate
+label and its material check. Rate laws of one's own, a form with other constants
+(``rate_laws=["cowper-symonds(D=6500 1/s, q=4)"]``, ``RateLaw.custom``), replace them: the user's
 constants are the flat's, and no material check applies.
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterable
 from dataclasses import dataclass
 
@@ -30,6 +34,7 @@ __all__ = [
     "RIGID",
     "Configuration",
     "configurations",
+    "library_law",
     "rate_not_applicable",
 ]
 
@@ -73,9 +78,26 @@ ESTIMATES: dict[RateLaw, str] = {
 }
 
 
+def _same_law(a: RateLaw, b: RateLaw) -> bool:
+    """Whether ``a`` and ``b`` are one law: the same form and the same constants (to 1e-12,
+    relative, as a unit conversion leaves them)."""
+    if a.name != b.name or [k for k, _ in a.parameters] != [k for k, _ in b.parameters]:
+        return False
+    return all(math.isclose(x, y, rel_tol=1e-12)
+               for (_, x), (_, y) in zip(a.parameters, b.parameters, strict=True))  # fmt: skip
+
+
+def library_law(law: RateLaw) -> RateLaw:
+    """The library's law (:data:`ESTIMATES`) that ``law`` is, by its form and constants, with
+    its estimate label and the material its constants are fitted for; else ``law`` itself
+    (one's own constants)."""
+    return next((known for known in ESTIMATES if _same_law(known, law)), law)
+
+
 def _rate_configuration(law: RateLaw) -> Configuration:
     """The flexible rod on a flat whose yield strength ``law`` raises; a library law (however
-    it was asked for) with its estimate label."""
+    it was asked for: :func:`library_law`) with its estimate label."""
+    law = library_law(law)
     estimate = ESTIMATES.get(law, "")
     what = f"{law.label}{', ' + estimate if estimate else ''}"
     return Configuration(
@@ -99,32 +121,50 @@ def configurations(
     """The rigid body, the flexible rod and one rate-dependent row per rate law: ``rate_laws``
     None gives the library's (:data:`LIBRARY_RATES`), else each item is a rate law as
     ``simulate``'s ``rate`` takes it (a library name, ``"cowper-symonds(D=6500 1/s, q=4)"``, a
-    ``RateLaw``); ``[]``, ``["none"]`` or ``[None]``: no rate rows. ValueError naming
-    ``option`` (the rate laws as the caller took them: ``--rate``) for a law not understood,
-    "none" beside a law, or a law given twice (by name and by the same constants, too)."""
+    ``RateLaw``); ``[]``, ``["none"]`` or ``[None]``: no rate rows. A law with the constants of
+    a library law is that law (:func:`library_law`: its label, its material check). ValueError
+    naming ``option`` (the rate laws as the caller took them: ``--rate``) for ``rate_laws``
+    that are no rate law nor a list of them, a law not understood, "none" beside a law, or a
+    law given twice (by name and by the same constants, too)."""
     if rate_laws is None:
         return (RIGID, FLEXIBLE, *LIBRARY_RATES)
-    items = [rate_laws] if isinstance(rate_laws, str | RateLaw) else list(rate_laws)
+    if isinstance(rate_laws, str | RateLaw):
+        items: list[object] = [rate_laws]
+    elif isinstance(rate_laws, Iterable) and not isinstance(rate_laws, bytes | dict):
+        items = list(rate_laws)
+    else:
+        raise ValueError(
+            f"{option} must be None (the library's rate laws), a rate law or a list of rate laws "
+            "(each a library name, cowper-symonds or johnson-cook, a law with its constants such "
+            "as 'cowper-symonds(D=6500 1/s, q=4)', or a RateLaw), or [] for no rate row; got "
+            f"{rate_laws!r} ({type(rate_laws).__name__})"
+        )
     if len(items) == 1 and get_rate_law(items[0], option) is None:
         items = []  # "none" (or None) alone: no rate row, as --rate none
-    laws: list[RateLaw] = []
+    laws: list[tuple[object, RateLaw]] = []
     for item in items:
-        law = get_rate_law(item, option)
-        if law is None:
+        given = get_rate_law(item, option)
+        if given is None:
             raise ValueError(
                 f"{option}: {item!r} is no rate law; give 'none' alone for no rate row, or "
                 "leave it out beside the rate laws"
             )
-        same = next((w for w in laws if (w.name, w.parameters) == (law.name, law.parameters)),
-                    None)  # fmt: skip
+        law = library_law(given)
+        same = next((it for it, w in laws if _same_law(w, law)), None)
         if same is not None:
-            twice = law.text if same.text == law.text else f"{same.label} and {law.label}"
+            first, again = _shown(same), _shown(item)
+            twice = first if first == again else f"{first} and {again}"
             raise ValueError(
-                f"{option}: {twice} {'is' if same.text == law.text else 'are'} the same law "
+                f"{option}: {twice} {'is' if first == again else 'are'} the same law "
                 "(the same form and constants) given twice; give each rate law once"
             )
-        laws.append(law)
-    return (RIGID, FLEXIBLE, *(_rate_configuration(law) for law in laws))
+        laws.append((item, law))
+    return (RIGID, FLEXIBLE, *(_rate_configuration(law) for _, law in laws))
+
+
+def _shown(item: object) -> str:
+    """A rate law as it was given (its text; a RateLaw: its name and constants)."""
+    return item.text if isinstance(item, RateLaw) else str(item)
 
 
 def rate_not_applicable(config: Configuration, flat: Material) -> str | None:

@@ -18,33 +18,68 @@ value across the 2-sigma line. Twice the counts shows that the counts are off, n
 (docs/flexible.md, "Convergence and the default": twice the counts can itself be 6-25 % from
 four times), so the bound is set well below the 2-sigma band. The second run costs about 1.7
 times the first (measured on the paper's three drops: docs/explain.md).
+
+How far a row not converged could still move (:meth:`ModeCheck.least_z`, which the verdict
+asks before it is called provisional for such a row: :func:`provisional_text`): its
+converged value is taken to lie within :data:`MODE_REACH` = 4 times the measured shift of its
+finer run's value. If each doubling of the modes shrinks the truncation error by at least a
+fifth (a ratio r <= 0.8 of successive shifts), the error left after the finer run is at most
+r / (1 - r) <= 4 shifts. The slender rod of docs/explain.md, the slowest measured, shrinks it
+by 23 % (e 0.3518, 0.3254, 0.3052 at 1, 2 and 4 times its counts: shifts 0.0264 and
+0.0202, r = 0.77, 3.3 shifts left).
+
+When a verdict is provisional (:func:`provisional_text`): a ranked flexible row not converged in
+its modes, or at the mode limit with a last step that moved a value, makes it so only where
+more modes could change it, and a named row with another caveat (a rigid rod whose rod the
+flexible rows refuse) always does. A row not converged changes the verdict only through its own
+values. The rows that decide the verdict (the first of the ranking, the rows it is undecided
+between, those that agree with more values than the first) count whenever they are not
+converged. Another such row counts only where it is within reach (:class:`Standing`): with each
+of its values moved as far towards the measured one as :meth:`ModeCheck.least_z` allows (where
+the check gives no bound, all the way), it would have more values within 2 sigma than the first
+over the quantities ranked, or a chi2 over them no higher than the first's (for correlated
+values a lower bound of it, ``explain.correlated.chi2_floor``), or agree with more of the
+drop's measured values than the first. A row out of reach in all three can neither rank above
+the first nor make the verdict undecided or withheld, however its modes settle: its caveat
+stays in the notes, and the verdict stays plain.
 """
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+import math
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
+
+import pandas as pd
 
 from impactlab._display import display_unit, format_number
 from impactlab.bodies.flexible_rod import MAX_MODES
 from impactlab.calibrate.measurements import Measurements
 from impactlab.calibrate.quantities import MEASURABLE
 from impactlab.explain.configurations import Configuration
+from impactlab.explain.correlated import Pairs, chi2_floor
 from impactlab.explain.runs import Outcome, run_on_drop, scaled_modes
+from impactlab.explain.tables import WITHIN
 
 __all__ = [
     "MODES_CAVEAT",
     "MODES_UNCHECKED",
     "MODES_UNSETTLED",
+    "MODE_REACH",
     "MODE_SHIFT_MAX",
     "REFINE",
     "ModeCheck",
+    "Standing",
     "check_modes",
+    "provisional_text",
 ]
 
 #: A flexible row is not converged in modes when twice its mode counts move a predicted value
 #: by more than this many of the measurement's sigma [1].
 MODE_SHIFT_MAX = 0.5
+#: A row's converged value lies within this many of its measured shifts of its finer run's
+#: value [1] (module docstring: a doubling of the modes shrinks the error by a fifth or more).
+MODE_REACH = 4.0
 #: The factor of the mode counts of the check's second run.
 REFINE = 2
 #: The words that begin the caveat of a row not converged in modes.
@@ -79,6 +114,19 @@ class ModeCheck:
         if self.capped:
             return None
         return self.status == "ok" and all(s <= MODE_SHIFT_MAX for s in self.shifts.values())
+
+    def least_z(self, quantity: str, z: float) -> float | None:
+        """The least |z| that ``quantity``, at ``z`` with the run's counts, can reach once
+        converged: |z| of the finer run's value (the refined one; a row at the limit: its own)
+        less :data:`MODE_REACH` times the shift, at least 0. None where the check gives no
+        bound (its second run is not ok, or it did not check the quantity)."""
+        if self.status != "ok" or quantity not in self.shifts:
+            return None
+        shift = self.shifts[quantity]
+        fine = z
+        if not self.capped:
+            fine = z + math.copysign(shift, self.refined_values[quantity] - self.values[quantity])
+        return max(0.0, abs(fine) - MODE_REACH * shift)
 
     def _moved(self) -> list[str]:
         return [
@@ -159,3 +207,86 @@ def check_modes(
     moved = {q: again.values[q] for q in values}
     shifts = {q: abs(moved[q] - v) / float(drop.sigma[q][0]) for q, v in values.items()}
     return ModeCheck(counts, refined, "ok", values, moved, shifts, capped)
+
+
+@dataclass(frozen=True)
+class Standing:
+    """What a row out of reach must not attain: the first's count ``within`` over the ranked
+    ``common`` quantities, its ``chi2`` over them, its ``agreements`` over all the drop's
+    measured values; ``got`` the ok predictions (the comparison's rows), ``modes`` each row's
+    mode check (None: no bound known) and ``pairs`` the drop's correlation coefficients."""
+
+    common: tuple[str, ...]
+    within: int
+    chi2: float
+    agreements: int
+    got: pd.DataFrame
+    modes: Mapping[str, ModeCheck | None] | None
+    pairs: Pairs
+
+    def in_reach(self, name: str) -> bool:
+        """Whether the row ``name``, its values moved as its mode check allows, could change
+        the verdict (module docstring)."""
+        check = None if self.modes is None else self.modes.get(name)
+        if check is None:
+            return True
+        own = self.got[self.got["configuration"] == name]
+        least = {}
+        for q, z in zip(own["quantity"], own["z"], strict=True):
+            bound = check.least_z(str(q), float(z))
+            least[str(q)] = 0.0 if bound is None or math.isnan(bound) else bound
+        ranked = {q: least[q] for q in self.common if q in least}
+        count = sum(v <= WITHIN for v in ranked.values())
+        agreements = sum(v <= WITHIN for v in least.values())
+        return (
+            count > self.within
+            or chi2_floor(ranked, self.pairs) <= self.chi2
+            or agreements > self.agreements
+        )
+
+
+def _names(items: Sequence[str]) -> str:
+    return ", ".join(items)
+
+
+def _is(rows: Sequence[str]) -> str:
+    return "is" if len(rows) == 1 else "are"
+
+
+def provisional_text(
+    ok: pd.DataFrame,
+    ranked: Sequence[str],
+    deciding: Sequence[str],
+    named: Sequence[str],
+    standing: Standing,
+) -> str:
+    """What the reason adds ("" for nothing): the ``ranked`` rows not converged in modes (or at
+    the limit and unsettled) that are ``deciding`` or within reach of ``standing``, and the
+    other caveat of a ``named`` row."""
+    caveats = {str(n): str(c) for n, c in zip(ok["configuration"], ok["caveat"], strict=True)}
+    flagged = {str(n) for n, v in zip(ok["configuration"], ok["modes_converged"], strict=True)
+               if not pd.isna(v) and not v}  # fmt: skip
+
+    def counts(n: str) -> bool:
+        return n in deciding or standing.in_reach(n)
+
+    parts = []
+    rows = [n for n in ranked if n in flagged and counts(n)]
+    if rows:
+        parts.append(
+            f"{_names(rows)} {_is(rows)} {MODES_CAVEAT} (its mode check moves a value by more "
+            f"than {MODE_SHIFT_MAX} sigma: see the caveat), and more modes (the drop's n_axial, "
+            "n_bending) can change this verdict"
+        )
+    rows = [n for n in ranked if caveats.get(n, "").startswith(MODES_UNSETTLED) and counts(n)]
+    if rows:
+        parts.append(
+            f"{_names(rows)} {_is(rows)} {MODES_UNCHECKED} (at the mode limit), and the last "
+            f"doubling of the modes moved a value by more than {MODE_SHIFT_MAX} sigma (see the "
+            "caveat)"
+        )
+    for n in named:
+        c = caveats.get(n, "")
+        if c and n not in flagged and not c.startswith(MODES_UNCHECKED):
+            parts.append(f"{n} carries a caveat: {c}")
+    return f"; provisional: {'; '.join(parts)}" if parts else ""

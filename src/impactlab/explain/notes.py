@@ -1,12 +1,12 @@
-"""An explanation's notes: one line per reason a configuration did not run and per caveat of
-an ok row (naming the configurations that give it), per verdict that leaves a quantity out,
-names no configuration or is provisional, per drop whose chi2 takes its correlation
-coefficients, and per warning of the runs, each naming its drops. Lines that differ only in
-their numbers (a rate factor, a ratio, a mode count per drop) are one line: a number that
-differs between them is given as its range (``k = 2.659 to 2.692``); each row's own numbers
-are in its status or caveat (``summary``, JSON). Lines whose differing numbers include one in
-a "from A to B" phrase (a mode caveat's "e moves from 0.3518 to 0.3254") stay apart: a range
-there would read as a chain of values ("from 0.3518 to 0.3611 to 0.3254")."""
+"""An explanation's notes: one line per reason a configuration did not run and per caveat of an ok
+row (naming the configurations that give it), per verdict that leaves a quantity out, names no
+configuration, names one inconsistent with the measurements or is provisional, per drop whose
+chi2 takes its correlation coefficients, and per warning of the runs, each naming its drops.
+Lines that differ only in their numbers (a rate factor, a ratio, a mode count per drop) are one
+line: a number that differs between them is given as its range (``k = 2.659 to 2.692``); each
+row's own numbers are in its status or caveat (``summary``, JSON). Lines whose differing numbers
+include one in a "from A to B" phrase (a mode caveat's "e moves from 0.3518 to 0.3254") stay
+apart: a range there would read as a chain of values ("from 0.3518 to 0.3611 to 0.3254")."""
 
 from __future__ import annotations
 
@@ -102,7 +102,8 @@ def explanation_notes(
     correlation: Mapping[str, Pairs] | None = None,
 ) -> tuple[str, ...]:
     """The notes (module docstring): why a configuration did not run, the caveats of ok rows,
-    the verdicts with a quantity left out, no configuration named or provisional, the drops
+    the verdicts with a quantity left out, no configuration named, an inconsistent one named or
+    provisional, the drops
     whose chi2 takes their ``correlation`` coefficients (drop -> pair -> coefficient), how
     many runs used the law beyond its range, and the runs' warnings (with the drops and
     configurations)."""

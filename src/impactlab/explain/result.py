@@ -19,7 +19,7 @@ from impactlab.explain.correlated import Pairs
 from impactlab.explain.modes import MODES_CAVEAT, MODES_UNCHECKED
 from impactlab.explain.runs import Outcome
 from impactlab.explain.tables import WITHIN
-from impactlab.explain.verdict import Verdict, verdict
+from impactlab.explain.verdict import Verdict, drop_modes, verdict
 
 __all__ = ["NOTHING_TUNED", "Z_DEFINITION", "Explanation"]
 
@@ -88,10 +88,11 @@ def _prediction(name: str, row: Any, unit: str) -> str:
 
 def _verdict_cell(v: Verdict, configuration: str) -> str:
     """What the verdict says of a configuration's row: ``best`` (``best, provisional``),
-    ``least disagreeing (none agrees)``, ``undecided``, or ""."""
+    ``first, inconsistent`` (named, but inconsistent with the measurements), ``least
+    disagreeing (none agrees)``, ``undecided``, or ""."""
     mark = ""
     if configuration == v.configuration:
-        mark = "best"
+        mark = "best" if v.consistent is not False else "first, inconsistent"
     elif configuration == v.least_disagreeing:
         mark = "least disagreeing (none agrees)"
     elif configuration in v.undecided:
@@ -138,17 +139,21 @@ class Explanation:
         """Which configuration explains ``drop`` best, over which measured quantities and why
         (``explain.verdict``: the ok configurations ranked over the quantities all of them
         predict); KeyError naming the known drops for another."""
-        return verdict(self.summary, self.comparison, drop, self.correlation.get(drop))
+        return verdict(self.summary, self.comparison, drop, self.correlation.get(drop),
+                       drop_modes(self.outcomes, drop))  # fmt: skip
 
     def best(self, drop: str) -> str | None:
         """The configuration that explains ``drop`` best (``verdict(drop).configuration``): of
         those whose result is ok, the one with the most values within 2 sigma, then the lowest
         chi2, over the measured quantities that all of them predict. None when no configuration
-        is ok, they predict no quantity in common, the first agrees with no measured value
-        (``verdict(drop).least_disagreeing`` names it), another ok configuration agrees with
-        more of the drop's measured values than the first, or the verdict is undecided near
-        the 2-sigma line (``verdict(drop).undecided``); ``verdict(drop).reason`` says which.
-        KeyError naming the known drops for another."""
+        is ok, they predict no quantity in common, the first agrees with none of the values it
+        was ranked over (``verdict(drop).least_disagreeing`` names it), another ok
+        configuration agrees with more of the drop's measured values than the first, or the
+        verdict is undecided near the 2-sigma line (``verdict(drop).undecided``);
+        ``verdict(drop).reason`` says which. Ranking first is not explaining the drop:
+        ``verdict(drop).consistent`` is False where the measurements reject the row named
+        (its chi2's p-value below 0.01, ``explain.verdict``). KeyError naming the known drops
+        for another."""
         return self.verdict(drop).configuration
 
     def references(self) -> tuple[str, ...]:
@@ -190,7 +195,7 @@ class Explanation:
             for r in self.summary.itertuples(index=False)
         ]  # fmt: skip
         best = [
-            v.to_dict() | {"chi2": quantity(v.chi2, "1")}
+            v.to_dict() | {"chi2": quantity(v.chi2, "1"), "p_value": quantity(v.p_value, "1")}
             for v in (self.verdict(d) for d in dict.fromkeys(self.summary["drop"]))
         ]
         return jsonable({
@@ -209,9 +214,9 @@ class Explanation:
     def display_rows(self) -> tuple[tuple[str, ...], list[tuple[str, ...]]]:
         """(header, rows) in display units: per drop its measured row (value +- sigma), then
         one row per configuration: each quantity's prediction with its z, the values within
-        2 sigma of those measured, chi2, what the verdict says of the row (``best``, ``least
-        disagreeing (none agrees)``, ``undecided``), the number of contacts, Eq. 28's mu (the
-        measured row: the drop's mu), the flags and the status."""
+        2 sigma of those measured, chi2, what the verdict says of the row (``best``, ``first,
+        inconsistent``, ``least disagreeing (none agrees)``, ``undecided``), the number of
+        contacts, Eq. 28's mu (the measured row: the drop's mu), the flags and the status."""
         c = self.comparison
         quantities = list(dict.fromkeys(c["quantity"]))
         units = dict(zip(c["quantity"], c["unit"], strict=True))

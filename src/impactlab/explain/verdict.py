@@ -2,11 +2,27 @@
 is ok are ranked over the measured quantities that all of them predict (the most values within
 2 sigma, then the lowest sum of z^2 over those quantities), never over different ones; a
 quantity that one of them does not predict (a flexible rod's duration) is left out, and the
-verdict says so. The first of that ranking is named best only if it agrees within 2 sigma
-with at least one of the drop's measured values and no other ok configuration agrees with
-more of them (it can then only be with quantities left out). A first that agrees with none is
-never named: the verdict says that no configuration agrees and names it as the least
-disagreeing one. None is named when the ok configurations share no measured quantity.
+verdict says so. The first of that ranking is named only if it agrees within 2 sigma with at
+least one of the values it was ranked over and no other ok configuration agrees with more of
+the drop's measured values (it can then only be with quantities left out). A first that
+agrees with none of the values ranked over is never named, whatever it agrees with among the
+values left out: the verdict says that no configuration agrees and names it as the least
+disagreeing one, as it would without the values left out, so that measuring a quantity only
+one configuration predicts never turns the verdict to it. None is named when the ok
+configurations share no measured quantity.
+
+Named is not consistent: the first of the ranking can still be rejected by the measurements.
+Its chi2 over the n values ranked over (z^T R^-1 z for correlated values) is set against the
+chi-square distribution with n degrees of freedom, nothing being fitted (Pearson's
+goodness-of-fit test: K. Pearson, Phil. Mag. 50, 157-175 (1900),
+doi:10.1080/14786440009463897; Particle Data Group, "Statistics",
+Prog. Theor. Exp. Phys. 2022, 083C01, doi:10.1093/ptep/ptac097): where its p-value, the
+probability of a chi2 at least as large, is below :data:`LEVEL` = 0.01 (chi2 above the 99 %
+quantile: 6.63 for one value, 11.34 for three), the row is inconsistent with the measurements
+(``Verdict.consistent`` False). A named row that is inconsistent is worded as ranking first,
+"but is itself inconsistent with the measurements (chi2 X over n values, p = ...)", and the
+table marks it ``first, inconsistent``, not ``best``. A named row whose contact law is used
+beyond its verified range (law_extrapolated) says so in its reason too.
 
 Near the 2-sigma line the verdict does not turn on a hair: where the first ranks above
 another by its count within 2 sigma alone, the other's chi2 is lower, and the counts could
@@ -15,45 +31,64 @@ them (and names neither).
 
 For a drop with correlation coefficients the sum of z^2 is z^T R^-1 z over those quantities
 (``explain.correlated``). A flexible row not converged in its modes (``explain.modes``) stays in
-the ranking with its numbers and may be named; the verdict is then provisional, and its
-reason (and a note) says so: leaving the row out would hand the verdict to another
-configuration for a numerical shortfall of this one, whose refined values may agree better
-still. A named row with another caveat (a rigid rod whose rod the flexible rows refuse, a
-flexible row at the mode limit whose last doubling moved a value) makes it provisional too,
+the ranking with its numbers and may be named; the verdict is then provisional where more
+modes could change it (``explain.modes``: the row decides the verdict, or its values,
+moved as far as its mode check allows, could bring it level with the first), and its reason
+(and a note) says so: leaving the row out would hand the verdict to another configuration for
+a numerical shortfall of this one, whose refined values may agree better still. A named row
+with another caveat (a rigid rod whose rod the flexible rows refuse) makes it provisional too,
 and the reason names the caveat."""
 
 from __future__ import annotations
 
 import math
+import warnings
+from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import Any
 
 import pandas as pd
+from scipy.special import chdtrc
 
 from impactlab.explain.correlated import Pairs, correlated_chi2
-from impactlab.explain.modes import MODE_SHIFT_MAX, MODES_CAVEAT, MODES_UNCHECKED, MODES_UNSETTLED
+from impactlab.explain.modes import ModeCheck, Standing, provisional_text
 from impactlab.explain.tables import WITHIN
 
-__all__ = ["NEAR", "Verdict", "verdict"]
+__all__ = ["LEVEL", "NEAR", "Verdict", "drop_modes", "p_value", "verdict"]
 
 #: Values within this many sigma of |z| = 2 do not decide a verdict against chi2 [1].
 NEAR = 0.05
+#: A first of the ranking whose chi2 has a p-value below this is inconsistent with the
+#: measurements [1] (module docstring).
+LEVEL = 0.01
+
+
+def p_value(chi2: float, n: int) -> float:
+    """The probability of a chi2 at least ``chi2`` with ``n`` degrees of freedom [1]."""
+    return float(chdtrc(n, chi2))
+
+
+def _p_text(p: float) -> str:
+    return "p < 1e-300" if p < 1e-300 else f"p = {p:.2g}"
 
 
 @dataclass(frozen=True)
 class Verdict:
     """Which configuration explains ``drop`` best: its name (``configuration``; None: none is
-    named, ``reason`` says why), the measured ``quantities`` it was ranked over, those
-    ``left_out`` (not predicted by every ok configuration), the ``reason`` in words, whether
-    it is ``provisional`` (a ranked flexible row not converged in modes, or a named row with a
-    caveat), the ``least_disagreeing`` configuration where none agrees with any measured
-    value within 2 sigma, the configurations it is ``undecided`` between (near the 2-sigma
-    line), and of the row the reason names (the first of the ranking) its count
-    ``within_2_sigma`` and ``chi2`` over ``quantities``, its ``caveat`` and its
+    named, ``reason`` says why), the measured quantities it was ranked over (``ranked_over``),
+    those ``left_out`` (not predicted by every ok configuration), the ``reason`` in words,
+    whether it is ``provisional`` (a ranked flexible row not converged in modes that more modes
+    could move level with the first, or a named row with a caveat), the
+    ``least_disagreeing`` configuration where none agrees with a value ranked over within 2
+    sigma, the configurations it is ``undecided`` between (near the 2-sigma line), and of the
+    row the reason names (the first of the ranking) its count ``within_2_sigma`` and ``chi2``
+    over ``ranked_over``, the ``p_value`` of that chi2 and whether it is ``consistent`` with
+    the measurements (p >= :data:`LEVEL`; None: nothing was ranked), its ``caveat`` and its
     ``agreements`` within 2 sigma over all the drop's measured quantities."""
 
     drop: str
     configuration: str | None
-    quantities: tuple[str, ...]
+    ranked_over: tuple[str, ...]
     left_out: tuple[str, ...]
     reason: str
     provisional: bool = False
@@ -63,6 +98,18 @@ class Verdict:
     chi2: float = math.nan
     caveat: str = ""
     agreements: int | None = None
+    p_value: float = math.nan
+    consistent: bool | None = None
+
+    @property
+    def quantities(self) -> tuple[str, ...]:
+        """Deprecated: :attr:`ranked_over` (this name is removed in the next release)."""
+        warnings.warn(
+            "Verdict.quantities is deprecated: use Verdict.ranked_over",
+            DeprecationWarning,
+            stacklevel=2,
+        )
+        return self.ranked_over
 
     @property
     def agrees(self) -> bool | None:
@@ -75,21 +122,24 @@ class Verdict:
 
     @property
     def note(self) -> str:
-        """The line ``notes`` gives the verdict ("" when a configuration is named, ranked over
-        every measured quantity, and not provisional)."""
-        if self.configuration is not None and not self.left_out and not self.provisional:
+        """The line ``notes`` gives the verdict ("" when a configuration is named, consistent
+        with the measurements, ranked over every measured quantity, and not provisional)."""
+        plain = self.configuration is not None and self.consistent is not False
+        if plain and not self.left_out and not self.provisional:
             return ""
         return f"best: {self.reason}"
 
     def to_dict(self) -> dict[str, object]:
-        """JSON ``best``'s entry (numbers plain; ``Explanation.to_dict`` gives chi2 its unit)."""
+        """JSON ``best``'s entry (numbers plain; ``Explanation.to_dict`` gives chi2 and p_value
+        their unit)."""
         return {
-            "drop": self.drop, "configuration": self.configuration, "agrees": self.agrees,
-            "least_disagreeing": self.least_disagreeing, "undecided": list(self.undecided),
-            "ranked_over": list(self.quantities), "left_out": list(self.left_out),
-            "within_2_sigma": self.within_2_sigma, "chi2": self.chi2,
-            "provisional": self.provisional, "caveat": self.caveat or None,
-            "reason": self.reason,
+            "drop": self.drop, "configuration": self.configuration,
+            "consistent": self.consistent, "agrees": self.agrees,
+            "agreements": self.agreements, "least_disagreeing": self.least_disagreeing,
+            "undecided": list(self.undecided), "ranked_over": list(self.ranked_over),
+            "left_out": list(self.left_out), "within_2_sigma": self.within_2_sigma,
+            "chi2": self.chi2, "p_value": self.p_value, "provisional": self.provisional,
+            "caveat": self.caveat or None, "reason": self.reason,
         }  # fmt: skip
 
 
@@ -97,36 +147,17 @@ def _names(items: list[str]) -> str:
     return ", ".join(items)
 
 
-def _is(rows: list[str]) -> str:
-    return "is" if len(rows) == 1 else "are"
-
-
-def _provisional(ok: pd.DataFrame, ranked: list[str], named: list[str]) -> str:
-    """What the reason adds when a ranked row is not converged in modes, a ranked row at the
-    mode limit may not be, or a ``named`` row carries another caveat ("" for none)."""
-    caveats = {str(n): str(c) for n, c in zip(ok["configuration"], ok["caveat"], strict=True)}
-    flagged = {str(n) for n, v in zip(ok["configuration"], ok["modes_converged"], strict=True)
-               if not pd.isna(v) and not v}  # fmt: skip
-    parts = []
-    rows = [n for n in ranked if n in flagged]
-    if rows:
-        parts.append(
-            f"{_names(rows)} {_is(rows)} {MODES_CAVEAT} (its mode check moves a value by more "
-            f"than {MODE_SHIFT_MAX} sigma: see the caveat), and more modes (the drop's n_axial, "
-            "n_bending) can change this verdict"
-        )
-    rows = [n for n in ranked if caveats.get(n, "").startswith(MODES_UNSETTLED)]
-    if rows:
-        parts.append(
-            f"{_names(rows)} {_is(rows)} {MODES_UNCHECKED} (at the mode limit), and the last "
-            f"doubling of the modes moved a value by more than {MODE_SHIFT_MAX} sigma (see the "
-            "caveat)"
-        )
-    for n in named:
-        c = caveats.get(n, "")
-        if c and n not in flagged and not c.startswith(MODES_UNCHECKED):
-            parts.append(f"{n} carries a caveat: {c}")
-    return f"; provisional: {'; '.join(parts)}" if parts else ""
+def _law_text(row: pd.Series) -> str:
+    """What the reason adds for a named row whose contact law is used beyond its verified
+    range ("" for none)."""
+    flag = row["law_extrapolated"]
+    if flag is None or pd.isna(flag) or not bool(flag):
+        return ""
+    ratio, verified = float(row["max_delta_ratio"]), float(row["fitted_delta_ratio_max"])
+    numbers = (f": max_delta_ratio {ratio:.4g}, verified up to {verified:.4g}"
+               if math.isfinite(ratio) and math.isfinite(verified) else "")  # fmt: skip
+    return ("; it uses the contact law beyond its verified range "
+            f"(law_extrapolated{numbers}), its own error unknown")  # fmt: skip
 
 
 def _score(within: int, n: int, chi2: float) -> str:
@@ -150,12 +181,24 @@ def _undecided(first: str, names: list[str], total: pd.DataFrame, rows: pd.DataF
     return out
 
 
+def drop_modes(outcomes: Mapping[tuple[str, str], Any], drop: str) -> dict[str, ModeCheck | None]:
+    """Each configuration's mode check on ``drop`` (``Outcome.modes``), as ``verdict`` takes
+    them."""
+    return {name: out.modes for (d, name), out in outcomes.items() if d == drop}
+
+
 def verdict(
-    summary: pd.DataFrame, comparison: pd.DataFrame, drop: str, correlation: Pairs | None = None
+    summary: pd.DataFrame,
+    comparison: pd.DataFrame,
+    drop: str,
+    correlation: Pairs | None = None,
+    modes: Mapping[str, ModeCheck | None] | None = None,
 ) -> Verdict:
     """The verdict on ``drop`` from an explanation's ``summary`` and ``comparison`` (module
-    docstring), ``correlation`` the drop's coefficients (None: none). KeyError naming the
-    known drops for a drop not in them."""
+    docstring), ``correlation`` the drop's coefficients (None: none), ``modes`` each
+    configuration's mode check on the drop (None: not known; a row not converged in modes then
+    always makes the verdict provisional). KeyError naming the known drops for a drop not in
+    them."""
     if drop not in set(summary["drop"]):
         known = list(dict.fromkeys(summary["drop"]))
         raise KeyError(f"no drop {drop!r}; drops: {known}")
@@ -185,77 +228,68 @@ def verdict(
     first = min(names, key=lambda n: (-int(total.loc[n, "within_2_sigma"]), total.loc[n, "chi2"]))
     agrees = {n: int(got.loc[got["configuration"] == n, "within_2_sigma"].sum()) for n in names}
     k, chi2 = int(total.loc[first, "within_2_sigma"]), float(total.loc[first, "chi2"])
-    caveat = str(ok.loc[ok["configuration"] == first, "caveat"].iloc[0])
+    row = ok[ok["configuration"] == first].iloc[0]
+    p = p_value(chi2, len(common))
     scored = _score(k, len(common), chi2)
     left = tuple(q for q in measured if q not in common)
     lacking = [f"{q} (not predicted by {_names([n for n in names if q not in predicts[n]])})"
                for q in left]  # fmt: skip
     shared = _names(list(common)) + (", the quantities all ok ones predict" if left else "")
     out = f"; left out: {'; '.join(lacking)}" if left else ""
+    standing = Standing(common, k, chi2, agrees[first], got, modes, correlation or {})
+
+    def made(
+        named: str | None, why: str, tail: str, least: str | None = None,
+        undecided: tuple[str, ...] = (),
+    ) -> Verdict:  # fmt: skip
+        return Verdict(
+            drop, named, common, left, why, bool(tail), least, undecided, within_2_sigma=k,
+            chi2=chi2, caveat=str(row["caveat"]), agreements=agrees[first], p_value=p,
+            consistent=p >= LEVEL,
+        )  # fmt: skip
+
+    def extra(deciding: list[str], named: list[str]) -> str:
+        return provisional_text(ok, names, deciding, named, standing)
+
+    if k == 0:  # none agrees with a value ranked over: as without the values left out
+        tail = extra([first], [first])
+        within = got[got["within_2_sigma"].astype(bool)]
+        agreeing = {n: list(within.loc[within["configuration"] == n, "quantity"]) for n in names}
+        elsewhere = [f"{n} with {_names(qs)}" for n, qs in agreeing.items() if qs]
+        if elsewhere:
+            why = (f"no configuration agrees within 2 sigma with a value ranked over: {first} "
+                   f"disagrees least, over {shared} ({scored}); within 2 sigma only with values "
+                   f"left out, which not every ok configuration predicts: "
+                   f"{'; '.join(elsewhere)}{out}{tail}")  # fmt: skip
+        else:
+            why = (f"no configuration agrees with any measured value within 2 sigma: {first} "
+                   f"disagrees least, over {shared} ({scored}){out}{tail}")  # fmt: skip
+        return made(None, why, tail, first)
     more = [n for n in names if agrees[n] > agrees[first]]
     if more:
-        extra = _provisional(ok, names, [])
+        tail = extra([first, *more], [])
         why = (f"none is named: {first} ranks first over {shared} ({scored}), but "
                f"{_names(more)} agrees with more of the measured values "
                f"({max(agrees[n] for n in more)} against {agrees[first]}), with ones {first} "
-               f"does not predict{out}{extra}")  # fmt: skip
-        return Verdict(
-            drop, None, common, left, why, bool(extra), within_2_sigma=k, chi2=chi2, caveat=caveat,
-            agreements=agrees[first],
-        )  # fmt: skip
-    if agrees[first] == 0:
-        extra = _provisional(ok, names, [first])
-        why = (f"no configuration agrees with any measured value within 2 sigma: {first} "
-               f"disagrees least, over {shared} ({scored}){out}{extra}")  # fmt: skip
-        return Verdict(
-            drop,
-            None,
-            common,
-            left,
-            why,
-            bool(extra),
-            first,
-            within_2_sigma=k,
-            chi2=chi2,
-            caveat=caveat,
-            agreements=0,
-        )
+               f"does not predict{out}{tail}")  # fmt: skip
+        return made(None, why, tail)
     rivals = _undecided(first, names, total, rows)
     if rivals:
         both = [first, *rivals]
-        extra = _provisional(ok, names, both)
+        tail = extra(both, both)
         theirs = "; ".join(
             f"{n}: {_score(int(total.loc[n, 'within_2_sigma']), len(common), total.loc[n, 'chi2'])}"
             for n in both
         )
         why = (f"undecided between {_names(both)}: {first} has more values within 2 sigma over "
                f"{shared}, but only by values within {NEAR} sigma of the 2-sigma line, and the "
-               f"chi2 ranks them the other way ({theirs}){out}{extra}")  # fmt: skip
-        return Verdict(
-            drop,
-            None,
-            common,
-            left,
-            why,
-            bool(extra),
-            None,
-            tuple(both),
-            within_2_sigma=k,
-            chi2=chi2,
-            caveat=caveat,
-            agreements=agrees[first],
-        )
-    extra = _provisional(ok, names, [first])
-    if k == 0:  # its agreement lies in quantities left out, which the others do not predict
-        own = got[got["configuration"] == first]
-        alone = [q for q in left if bool(own.loc[own["quantity"] == q, "within_2_sigma"].any())]
-        why = (f"{first}: ranks first by the lowest chi2 over {shared} ({scored}); it agrees "
-               f"within 2 sigma only with {_names(alone)}, which the others do not predict"
-               f"{out}{extra}")  # fmt: skip
-    else:
-        why = (f"{first}: the most values within 2 sigma, then the lowest chi2, over {shared} "
-               f"({scored}){out}{extra}")  # fmt: skip
-    return Verdict(
-        drop, first, common, left, why, bool(extra), within_2_sigma=k, chi2=chi2, caveat=caveat,
-        agreements=agrees[first],
-    )  # fmt: skip
+               f"chi2 ranks them the other way ({theirs}){out}{tail}")  # fmt: skip
+        return made(None, why, tail, undecided=tuple(both))
+    tail = extra([first], [first])
+    ranks = f"the most values within 2 sigma, then the lowest chi2, over {shared} ({scored})"
+    if p < LEVEL:
+        ranks = (f"ranks first by {ranks}, but is itself inconsistent with the measurements "
+                 f"(chi2 {chi2:.4g} over {len(common)} value{'s' * (len(common) > 1)}, "
+                 f"{_p_text(p)}, below {LEVEL})")  # fmt: skip
+    why = f"{first}: {ranks}{out}{_law_text(row)}{tail}"
+    return made(first, why, tail)
