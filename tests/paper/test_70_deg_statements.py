@@ -23,7 +23,8 @@ def ratios(sims):
     for ang in (20, 45, 70):
         x, s = D.EXPERIMENTS[ang], sims.loc[ang]
         out[("delta_p", ang)] = s[PAPER_DEPTH].abs() / (abs(x.delta_p) * 1e6)
-        out[("L_s", ang)] = s["L_s [um]"].abs() / (abs(x.L_s) * 1e6)
+        # the scar against the contact patch's travel, as the report compares it
+        out[("L_s", ang)] = s["contact travel [um]"].abs() / (abs(x.L_s) * 1e6)
         out[("T", ang)] = s["T [ms]"] / exp.loc[ang, "T [ms]"]
         out[("F", ang)] = s["F [N]"] / exp.loc[ang, "F [N]"]
     return out
@@ -35,14 +36,16 @@ def test_the_reason_given_is_no_longer_the_unprinted_numbers(page):
     assert "against impactlab's own Table 4, since the paper's has a caption and no rows" in text
 
 
-def test_the_comparative_statements_numbers(page, ratios):
+def test_the_comparative_statements_numbers(page, ratios, sims):
     text = " ".join(page.reproduction.split())
     n = NUMBER
     found = page.numbers(
         rf"delta_p is closer at 70 deg \(({n})-({n})\) than at 20 deg \(({n})-({n})\) and 45 deg "
-        rf"\(({n})-({n})\), and still different; L_s \(({n})-({n}), against ({n})-({n}) and "
-        rf"({n})-({n})\) is closer, but no longer different: within 15 % except Brake's, at "
-        rf"({n}) %; T \(({n})-({n}), against ({n})-({n}) and ({n})-({n})\) and F \(({n})-({n}), "
+        rf"\(({n})-({n})\), and still different; L_s, the scar set against the simulations' "
+        rf"contact travel \(({n})-({n}), against ({n})-({n}) and ({n})-({n})\), is closer, but "
+        rf"no longer different: within 15 % for all three laws \(the slip, which the scar does "
+        rf"not measure, would put Brake's at \+({n}) %\); T \(({n})-({n}), against "
+        rf"({n})-({n}) and ({n})-({n})\) and F \(({n})-({n}), "
         rf"against ({n})-({n}) and ({n})-({n})\) are closer as well",
         text,
     )
@@ -56,7 +59,8 @@ def test_the_comparative_statements_numbers(page, ratios):
         page.check(lo, ratios[key].min(), f"{key} low")
         page.check(hi, ratios[key].max(), f"{key} high")
     brake = quoted.pop(0)
-    page.check(brake, 100 * (ratios[("L_s", 70)]["brake"] - 1), "Brake's L_s at 70 deg")
+    slip = sims.loc[70]["L_s [um]"]["brake"] / D.EXPERIMENTS[70].L_s / 1e6
+    page.check(brake, 100 * (abs(slip) - 1), "Brake's slip at 70 deg")
     for key in [("T", 70), ("T", 20), ("T", 45), ("F", 70), ("F", 20), ("F", 45)]:
         lo, hi = quoted.pop(0), quoted.pop(0)
         page.check(lo, ratios[key].min(), f"{key} low")
@@ -69,4 +73,4 @@ def test_the_comparative_statements_hold_as_written(ratios):
         assert (far[(q, 70)] < far[(q, 20)]).all() and (far[(q, 70)] < far[(q, 45)]).all(), q
     assert (abs(ratios[("delta_p", 70)] - 1) > TOL_SIMULATED).all()  # still different
     off = abs(ratios[("L_s", 70)] - 1)
-    assert [law for law, d in off.items() if d > TOL_SIMULATED] == ["brake"]
+    assert not [law for law, d in off.items() if d > TOL_SIMULATED]  # the slip: Brake's beyond

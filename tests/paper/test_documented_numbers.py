@@ -77,7 +77,8 @@ def test_results_text(page, run, sims):
         rf"duration; the Sec. 5.2 text's 0.256 ms, which it prints for both Ghaednia and Brake "
         rf"at 20 deg, is ({NUMBER}) and ({NUMBER}) times it .*? F of Tables 2 and 3: (\d+)-(\d+) "
         rf"% above impactlab's mean force \(the text's 2153 N for Ghaednia, Brake's Table 2 "
-        rf"force, (\d+) % below it\)",
+        rf"force, (\d+) % below it: most likely a coincidence of that probable copy error, not a "
+        rf"reproduction",
         page.reproduction.replace("\n", " "),
     )
     text_rows = {r.model: r for r in D.TEXT_ROWS}
@@ -189,12 +190,14 @@ def test_experimental_rows_and_readings(page, run):
 def test_simulated_e_against_the_measured(page, sims):
     check, numbers = page.check, page.numbers
     rel = {
-        (ang, law): sims.loc[(ang, law), "e"] / D.EXPERIMENTS[ang].e - 1
+        (ang, law): sims.loc[(ang, law), "e_gravity_removed"] / D.EXPERIMENTS[ang].e - 1
         for ang in (20, 45)
         for law in D.PAPER_LAWS
     }
     found = numbers(
-        r"the simulated e lie (\d+)-(\d+) % below it: four of the six within 15 % \(Brake and "
+        r"the simulated e \(with the gravity impulse of the contact removed, as the ballistic "
+        r"fit behind the measured e removes it: `e_gravity_removed`\) lie (\d+)-(\d+) % below "
+        r"it: four of the six within 15 % \(Brake and "
         rf"Kogut-Komvopoulos at 20 deg, ({NUMBER}) % and ({NUMBER}) %, Ghaednia and "
         rf"Kogut-Komvopoulos at 45 deg, ({NUMBER}) % and ({NUMBER}) %\) and two beyond it "
         rf"\(Ghaednia at 20 deg, ({NUMBER}) %, and Brake at 45 deg, ({NUMBER}) %\); the paper's "
@@ -246,13 +249,17 @@ def test_fe_table(page, fe):
     rows = {cells[0]: cells[1:] for cells in table(page.reproduction, "| law | e vs FE |")}
     ref = fe[fe["law"].str.startswith("tabulated")].sort_values("angle [deg]")
     cells = rows["FE reference (20 / 45 / 70 deg)"]
-    for cell, column in zip(cells, ("e", "delta_p [um]", "F [N]"), strict=True):
+    scale = {"e vs FE curves": 100.0}
+    for cell, column in zip(cells, ("e", "e vs FE curves", "delta_p [um]", "F [N]"), strict=True):
         quoted = re.findall(NUMBER, cell)
         for q, v in zip(quoted, ref[column], strict=True):
-            check(q, v, f"FE reference {column}")
+            check(q, scale.get(column, 1.0) * v, f"FE reference {column}")
     for name, law in LAWS.items():
-        rel = fe[fe["law"] == law]
-        for cell, column in zip(rows[name], ("e vs FE", "delta_p vs FE", "F vs FE"), strict=True):
+        rel = fe[fe["law"] == law].sort_values("angle [deg]")
+        cell, *others = rows[name][1:2] + rows[name][:1] + rows[name][2:]
+        for q, v in zip(re.findall(NUMBER, cell), rel["e vs FE curves"], strict=True):
+            check(q, 100 * v, f"{law} e vs FE curves")  # the bias taken out with its sign
+        for cell, column in zip(others, ("e vs FE", "delta_p vs FE", "F vs FE"), strict=True):
             quoted = [int(x) for x in re.findall(r"[-+]\d+", cell)]
             span = sorted({round(100 * rel[column].min()), round(100 * rel[column].max())})
             assert quoted == span, f"{law} {column}: the page says {cell}, the code {span}"

@@ -116,7 +116,11 @@ def test_section_5_is_a_table_with_each_explanation_once() -> None:
     assert list(df["rel. diff"]) == ["-51.0%", "-52.5%", "+65.8%"]
     text = to_markdown(blocks, "t")
     assert text.count("not self-consistent") == 1 and text.count("copy error") == 1
-    assert "A (2 rows; the numbers of Table 2, 20 deg, ghaednia, T [ms])" in text
+    assert (
+        "A (2 rows: Table 2, 20 deg, ghaednia, T [ms]; Table 2, 45 deg, ghaednia, T [ms]; the "
+        "numbers quoted are those of the first, each row's own are in comparison.csv)"
+    ) in text  # it names every row it covers, not the first alone
+    assert "B (1 row): " in text
     assert "2.39 times" in text
 
 

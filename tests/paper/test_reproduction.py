@@ -341,7 +341,7 @@ def test_report_says_what_its_verdicts_rest_on(full_run):
     assert "FAIL" not in text.split("What these verdicts depend on")[1].split("\n")[0]
     assert "As the paper says" not in text
     assert (
-        "impactlab's simulated e lie -20.1% to -4.4% from the measured e there (2 of 6 beyond "
+        "impactlab's simulated e lie -20.0% to -4.2% from the measured e there (2 of 6 beyond "
         "15%), the paper's own -16.3% to -8.0%: all below the measured e"
     ) in text
     assert (

@@ -127,7 +127,9 @@ def test_the_70_deg_estimates_carry_their_caveat(full_reproduction, page):
     res = full_reproduction
     words = Q.ESTIMATE_CAVEATS[70][1]
     comp = pd.read_csv(res.files["comparison"], keep_default_na=False)
-    marked = comp[comp["caveat"] != ""]
+    copy = comp["reason"].str.startswith(Q.COINCIDENCE)  # the text's copied force: its own
+    assert comp[copy]["caveat"].astype(bool).all() and len(comp[copy]) == 2
+    marked = comp[(comp["caveat"] != "") & ~copy]
     keys = zip(marked["angle [deg]"], marked["model"], marked["quantity"], strict=True)
     assert sorted(keys) == [
         (70, "experiment", "F [N]"),
@@ -137,8 +139,9 @@ def test_the_70_deg_estimates_carry_their_caveat(full_reproduction, page):
     t4 = pd.read_csv(res.files["table4"], keep_default_na=False).set_index("model")
     assert t4.loc["experiment", "caveat"] == f"T [ms], F [N]: {words}"
     assert (t4.drop(index="experiment")["caveat"] == "").all()
-    for name in ("table2", "table3"):
-        assert (pd.read_csv(res.files[name], keep_default_na=False)["caveat"] == "").all()
+    t2 = pd.read_csv(res.files["table2"], keep_default_na=False)
+    assert set(t2[t2["caveat"] != ""]["source"]) == {"Sec. 5.2 text"}  # the copied force
+    assert (pd.read_csv(res.files["table3"], keep_default_na=False)["caveat"] == "").all()
     rows = page.table(res.report_md.read_text(), "| angle [deg] | quantity | experiment |")
     caveats = {(r[0], r[1]): r[-1] for r in rows}
     assert caveats[("70", "T [ms]")] == caveats[("70", "F [N]")] == words
@@ -171,8 +174,11 @@ def test_fig4_shows_its_mark_whole_and_the_caption_has_it(full_reproduction, tmp
 def test_section_4_words_follow_the_numbers(full_reproduction, sims):
     text = full_reproduction.report_md.read_text()
     s = sims.loc[[20, 45]]
-    slip = s["L_s [um]"].abs()
-    assert f"the simulations slide {slip.min():.0f}-{slip.max():.0f} um" in text
+    slip, scar = s["L_s [um]"].abs(), s["contact travel [um]"].abs()
+    assert (
+        f"the simulations leave scars {scar.min():.0f}-{scar.max():.0f} um long (contact "
+        f"travel; the tip slides {slip.min():.0f}-{slip.max():.0f} um)"
+    ) in text
     assert slip.max() > 100  # the 45 deg slips: not "tens of micrometres"
     assert "tens of micrometres" not in text
 

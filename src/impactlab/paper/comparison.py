@@ -33,6 +33,12 @@ from impactlab.paper.simulations import FRICTIONS
 
 _TABLES = {20: "Table 2", 45: "Table 3", 70: "Table 4 (ours)"}
 _TEXT = "Sec. 5.2 text"
+#: The ``caveat`` of a published number within tolerance that is a probable copy of another
+#: row's (``Reasons.coincidence``; its reason gives the numbers).
+CHANCE_CAVEAT = (
+    "a probable copy of another law's table value: the agreement is most likely a "
+    "coincidence, not a reproduction"
+)
 #: The flag columns of a row without a simulation (the experiment, or not simulated).
 _NO_FLAGS: dict[str, Any] = {"flags": "", "max_delta_ratio": None}
 #: The reason of a measured input of the inversion (in ``published``; not compared).
@@ -59,7 +65,9 @@ def comparison_table(
     experimental T at 20 and 45 deg: PASS, FAIL or UNDECIDED, as the report's Section 1 and
     the reproduce command print it; empty for a number compared, not checked), whether it is
     reproduced (the check: True only for PASS, None for UNDECIDED; a compared number: within
-    its tolerance) and, if not, why, and the ``caveat`` of an estimate (the 70 deg T and F)."""
+    its tolerance, None for a probable copy of another row's value, whose agreement is most
+    likely chance) and, if not, why, and the ``caveat`` of an estimate (the 70 deg T and F)
+    or of such a copy."""
     rows: list[dict[str, Any]] = []
     ctx = Reasons(experimental, consistency, sims)
     checks = {c.angle_deg: c for c in duration_checks(experimental)}
@@ -128,6 +136,9 @@ def _simulated_rows(ang: int, law: str, fr: str, res: Any, ctx: Reasons) -> list
             ours = None if res is None else sim_value(res, q)
             key = RowKey(src, ang, law, fr)
             row = _row(key, q, label, scale, (pub, ours), TOL_SIMULATED, None, ctx)
+            chance = ctx.coincidence(key, q, row["rel. diff"]) if row["reproduced"] else None
+            if chance is not None:  # within tolerance, but a probable copy: not counted
+                row |= {"reproduced": None, "reason": chance, "caveat": CHANCE_CAVEAT}
             rows.append(row | (flag_columns(res) if res is not None else _NO_FLAGS))
     return rows
 

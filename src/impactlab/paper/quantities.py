@@ -104,14 +104,19 @@ PAPER_SIGN_NOTE = (
     'Signs: the columns marked "paper\'s sign" print the dent depth as the paper does '
     "(negative); impactlab's delta_p is a positive depth (as in every other output). L_s is "
     "the signed slip: negative when the tip slides towards -x, as in the paper's tables and "
-    "impactlab's sliding_length; only the section that sets the drops beside the rigid and "
-    "the flexible rod (written when the simulations run) compares the extent of the mark "
-    "instead (its column scar_length, a positive length, as a scan measures it). A relative "
+    "impactlab's sliding_length; where the simulations are set against the measured scar "
+    "(the simulated rows' experiment-vs-simulation table, the contact patch's travel; the "
+    "section that sets the drops beside the rigid and the flexible rod, its column "
+    "scar_length, a positive length), the extent of the mark is compared instead, as a "
+    "scan measures it. A relative "
     "difference is ours / published - 1, except where a column says otherwise (published / "
     "Eq. 12 - 1)."
 )
 
 
+#: The start of the ``reason`` of a published number within its tolerance that is not counted
+#: as reproduced: a probable copy of another row's value, so the agreement is most likely chance.
+COINCIDENCE = "most likely a coincidence, not a reproduction"
 #: The ``reason`` of a published simulated number that was not compared: the simulations were
 #: skipped (``reproduce(simulate=False)``, ``--no-simulate``).
 NOT_SIMULATED = "not simulated"

@@ -12,6 +12,7 @@ import pandas as pd
 from impactlab.paper import data as D
 from impactlab.paper.analytic_rows import EXCEEDS, WITHIN_ROUNDING
 from impactlab.paper.quantities import (
+    COINCIDENCE,
     EQ12_REL,
     TOL_SIMULATED,
     Simulations,
@@ -122,6 +123,38 @@ class Reasons:
                 )
             parts.append(txt)
         return parts
+
+    def coincidence(self, key: RowKey, q: str, rd: float) -> str | None:
+        """Why a Sec. 5.2 text value within tolerance is no reproduction, or None: it equals
+        another law's table value of the same quantity and angle (a probable copy error,
+        ``data.DISCREPANCIES``), so the agreement is most likely chance; with the text row's
+        F T against the impulse its e allows (Section 6) for T and F."""
+        source, ang, model, _ = key
+        row = self._pub_row(source, ang, model)
+        if source != "Sec. 5.2 text" or row is None or getattr(row, q) is None:
+            return None
+        value = getattr(row, q)
+        copied = [
+            r
+            for r in D.TABLE_ROWS
+            if r.angle_deg == ang
+            and r.model not in (model, "experiment")
+            and getattr(r, q) == value
+        ]
+        if not copied:
+            return None
+        c = self._cons(source, ang, model)
+        impulse = (
+            f"; the text row's F T = {c['F T [N s]']:.3g} N s is {c['ratio']:.2f} times the "
+            f"normal impulse its own e allows (Section 6)"
+            if q in ("T", "F") and c is not None
+            else ""
+        )
+        return (
+            f"{COINCIDENCE}: {rd:+.1%} from impactlab's, but the text's value ({value:g}) equals "
+            f"{copied[0].model}'s {copied[0].table} value, a probable copy error (data."
+            f"DISCREPANCIES){impulse}; neither reproduced nor not"
+        )
 
     def _reason_experiment(self, ang: int, q: str) -> str:
         e = self.exp.loc[ang]

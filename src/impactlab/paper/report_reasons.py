@@ -9,6 +9,7 @@ from typing import Any
 import pandas as pd
 
 from impactlab.paper.quantities import (
+    COINCIDENCE,
     EXTRAPOLATED_MARK,
     NOT_SIMULATED,
     PUBLISHED_KEY,
@@ -64,11 +65,20 @@ def _explained(bad: pd.DataFrame) -> tuple[pd.DataFrame, list[str]]:
             }
         )
     notes = [
-        f"{letter} ({len(labels)} row{'s' if len(labels) > 1 else ''}; the numbers of "
-        f"{labels[0]}): {texts[kind]}."
-        for kind, (letter, labels) in kinds.items()
+        f"{letter} ({_covers(labels)}): {texts[kind]}." for kind, (letter, labels) in kinds.items()
     ]
     return pd.DataFrame(rows), notes
+
+
+def _covers(labels: list[str]) -> str:
+    """What one explanation covers: ``1 row`` for one; for several, every row it covers and
+    whose numbers its text quotes (the first's; each row's own are in comparison.csv)."""
+    if len(labels) == 1:
+        return "1 row"
+    return (
+        f"{len(labels)} rows: {'; '.join(labels)}; the numbers quoted are those of the first, "
+        "each row's own are in comparison.csv"
+    )
 
 
 def not_reproduced(comp: pd.DataFrame) -> list[Block]:
@@ -108,6 +118,15 @@ def not_reproduced(comp: pd.DataFrame) -> list[Block]:
                 f"Within tolerance but worth a note: {r['angle [deg]']} deg experimental F, "
                 f"published {fmt(r['published'])} N, impactlab {fmt(r['impactlab'])} N "
                 f"({fmt_pct(r['rel. diff'])}): {r['reason']}."
+            )
+        )
+    chance = comp[comp["reason"].fillna("").astype(str).str.startswith(COINCIDENCE)]
+    for _, r in chance.drop_duplicates(PUBLISHED_KEY).iterrows():
+        B.append(
+            Para(
+                f"Within tolerance but not counted as reproduced: {r['source']}, "
+                f"{r['angle [deg]']} deg, {_model(r)}, {r['quantity']}, published "
+                f"{fmt(r['published'])}, impactlab {fmt(r['impactlab'])}: {r['reason']}."
             )
         )
     undecided = comp[comp["verdict"] == UNDECIDED] if "verdict" in comp else comp.iloc[:0]

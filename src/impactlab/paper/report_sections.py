@@ -13,7 +13,7 @@ from typing import Any
 import pandas as pd
 
 from impactlab.paper import data as D
-from impactlab.paper.analytic_rows import EXCEEDS, WITHIN_ROUNDING
+from impactlab.paper.analytic_rows import EXCEEDS, WITHIN_ROUNDING, invert_case
 from impactlab.paper.calibration_report import calibration_section, shipped_calibration
 from impactlab.paper.physics_report import physics_section
 from impactlab.paper.quantities import (
@@ -172,7 +172,9 @@ def _experimental(d: ReportData) -> list[Block]:
             "of the tip, gravity neglected: the paper's method), F from the rigid-body "
             "identity F T = (1 + e)|v_i| / K_y because the paper does not print the measured "
             "centre-of-mass velocities that Eq. 29 needs. Variants: with gravity "
-            "((g/2) T^2 added to Eq. 12, g T to the impulse) and with L_s read as the "
+            "((g/2) T^2 added to Eq. 12, g T to the impulse"
+            + _gravity_mu_words(d.experimental)
+            + ") and with L_s read as the "
             "travel of the contact patch instead of the slip. At 70 deg the paper reads the "
             "profile (Fig. 8) as sliding at the beginning and sticking or rolling at the end, "
             "while Eq. 12 assumes sliding throughout: that row is the method applied outside "
@@ -180,6 +182,27 @@ def _experimental(d: ReportData) -> list[Block]:
         ),
         Table(d.experimental, "Experimental rows", digits=4),
     ]
+
+
+def _gravity_mu_words(exp: pd.DataFrame) -> str:
+    """How the gravity variant treats mu, with its numbers: ``, and the measured mu corrected
+    ...``; the T that keeping the measured mu would give, at the first angle."""
+    e = exp.set_index("angle [deg]")
+    if "mu with gravity (Eq. 28)" not in e:
+        return ""
+    ang = int(e.index[0])
+    x = D.EXPERIMENTS[ang]
+    mus = " / ".join(f"{v:.4g}" for v in e["mu with gravity (Eq. 28)"])
+    half = invert_case(x, gravity=True).duration * 1e3
+    T_pub, T_g = e.loc[ang, "T published [ms]"], e.loc[ang, "T with gravity [ms]"]
+    return (
+        ", and the measured mu corrected for gravity as the Eq. 28 erratum derives: the "
+        "printed Eq. 28 reads mu from dv_Cy = (P - m g T)/m, so the coefficient is "
+        f"mu (1 - m g T/P): {mus} at the three angles, column 'mu with gravity (Eq. 28)'; "
+        f"at {ang} deg T with gravity is {T_g:.4g} ms ({T_g / T_pub - 1:+.1%} from the "
+        f"published {T_pub:.3g} ms), against {half:.4g} ms ({half / T_pub - 1:+.1%}) with "
+        f"gravity in Eq. 12 and the impulse only, mu kept at {x.mu:g}"
+    )
 
 
 def _consistency(d: ReportData) -> list[Block]:
