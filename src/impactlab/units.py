@@ -232,14 +232,16 @@ def angle_to_rad(value: Any, *, name: str = "angle") -> float:
     docs/glossary.md; the Python API's bare numbers are radians, ``magnitude``)."""
     q = None if isinstance(value, int | float) else _parse(name, str(value), "deg")
     _check_finite(name, value if q is None else q, value)
-    if q is None or q.unitless:
+    if q is None or not dict(q.unit_items()):  # "20 %" has a unit, a ratio's: not an angle
         raise ValueError(
             f"{name} {str(value).strip()} has no unit: give a unit, e.g. '20 deg' or '0.35 rad'"
         )
-    if dict(q.to_base_units().unit_items()) != {"radian": 1}:  # pint: sr, count are numbers
+    base = dict(q.to_base_units().unit_items())
+    if base != {"radian": 1}:  # pint: sr, count are numbers
+        ratio = ", a ratio's, not an angle's" if not base else ""  # %, ppm
         raise ValueError(
-            f"{name}: {str(value).strip()!r} is not an angle (its unit is {q.units:~}); give "
-            f"deg, rad, turn or arcmin, e.g. '20 deg'"
+            f"{name}: {str(value).strip()!r} is not an angle (its unit is {q.units:~}{ratio}); "
+            "give deg, rad, turn or arcmin, e.g. '20 deg'"
         )
     return to_si(value, "degree", name=name)
 

@@ -7,8 +7,12 @@ Every quantity is SI except the Brinell hardness, which is kept in its customary
 from __future__ import annotations
 
 import math
+import re
 import sys
+from collections.abc import Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -66,9 +70,35 @@ BEYOND_PLAUSIBLE = 1e3
 _VALUES = ("E", "nu", "yield_strength", "brinell_hardness", "meyer_index", "density")
 
 
-def _differs(a: float | None, b: float | None) -> bool:
-    both_nan = isinstance(a, float) and isinstance(b, float) and math.isnan(a) and math.isnan(b)
-    return not (a == b or both_nan)
+#: A Brinell hardness written with its symbol: ``105 HB``, ``105 HBW`` or ``HBW 105``.
+_HB_TEXT = re.compile(r"^\s*(?:(?P<a>[^\sA-Za-z][^\s]*)\s*HBW?|HBW?\s+(?P<b>\S+))\s*$")
+
+
+def brinell_text(value: Any) -> Any:
+    """A Brinell hardness written with its symbol HB or HBW (``"105 HB"``, ``"HBW 105"``) as
+    ``"105 kgf/mm^2"`` (a Brinell number is kgf/mm^2); any other value unchanged."""
+    m = _HB_TEXT.match(value) if isinstance(value, str) else None
+    return value if m is None else f"{m.group('a') or m.group('b')} kgf/mm^2"
+
+
+def _is_nan(value: Any) -> bool:
+    """True for a NaN float of any precision (``math.nan``, ``np.float32("nan")``)."""
+    return isinstance(value, float | np.floating) and math.isnan(value)
+
+
+@contextmanager
+def _float_range(name: str, value: Any, unit: str = "") -> Iterator[None]:
+    """ValueError naming ``name`` for a number beyond a float's range (``10**400``), which
+    ``float()`` refuses with an OverflowError."""
+    try:
+        yield
+    except OverflowError:
+        text = repr(value)
+        text = text if len(text) <= 24 else f"{text[:12]}... ({len(text)} characters)"
+        raise ValueError(
+            f"{name} must be a finite number{f' in {unit}' if unit else ''}, got {text}: beyond "
+            "the largest float, about 1.8e308"
+        ) from None
 
 
 def hardness_below_yield(material: Material) -> str:
@@ -100,7 +130,9 @@ class Material:
     E : Young's modulus [Pa].
     nu : Poisson's ratio, in (-1, 0.5).
     yield_strength : uniaxial yield strength S_y [Pa].
-    brinell_hardness : Brinell hardness number HB [kgf/mm^2] (used by Brake's law).
+    brinell_hardness : Brinell hardness number HB [kgf/mm^2] (used by Brake's law); text may
+        carry its symbol (``"95 HB"``, ``"95 HBW"``); NaN of any float type (the default): not
+        given.
     meyer_index : Meyer's strain-hardening index n (Brake's law), typically 2 to 2.5; must be > 2.
     density : mass density [kg/m^3]; None (the default): not given, and whatever needs it (a
         Sphere's or a Rod's mass from it, a FlexibleRod) refuses the material
@@ -119,7 +151,10 @@ class Material:
     numbers. ValueError unless E, yield_strength, density and brinell_hardness (when given) are
     finite and > 0, nu lies in (-1, 0.5), meyer_index in (2, 3] and yield_strength < E; an
     ImplausibleInputWarning for a value outside :data:`PLAUSIBLE` (most likely a unit left out),
-    a ValueError for one :data:`BEYOND_PLAUSIBLE` times below it. A material by values
+    a ValueError for one :data:`BEYOND_PLAUSIBLE` times below it, and for a number beyond a
+    float's range (``10**400``). A name of the library (its key, an alias or its display name)
+    with other values is refused (``impactlab.materials.naming``), except on a library entry
+    changed in part (``dataclasses.replace``), which is renamed. A material by values
     (``impactlab.get_material``'s text, mapping or TOML form) is also refused when its hardness
     lies below its yield strength (:func:`hardness_below_yield`).
     """
@@ -148,18 +183,21 @@ class Material:
         for name, unit in (("E", "Pa"), ("yield_strength", "Pa"), ("density", "kg/m^3")):
             if name == "density" and self.density is None:
                 continue
-            value = check_positive(name, getattr(self, name), unit)
+            with _float_range(name, getattr(self, name), unit):
+                value = check_positive(name, getattr(self, name), unit)
             object.__setattr__(self, name, value)
-        object.__setattr__(
-            self,
-            "nu",
-            check_range("nu", self.nu, -1.0, 0.5, low_inclusive=False, high_inclusive=False),
-        )
-        hb = self.brinell_hardness
-        if not (isinstance(hb, float) and math.isnan(hb)):
-            hb = check_positive("brinell_hardness", hb, _HB)
+        with _float_range("nu", self.nu):
+            nu = check_range("nu", self.nu, -1.0, 0.5, low_inclusive=False, high_inclusive=False)
+        object.__setattr__(self, "nu", nu)
+        hb = self.brinell_hardness  # NaN (any float precision): not given
+        if _is_nan(hb):
+            hb = math.nan
+        else:
+            with _float_range("brinell_hardness", hb, _HB):
+                hb = check_positive("brinell_hardness", brinell_text(hb), _HB)
         object.__setattr__(self, "brinell_hardness", hb)
-        n = check_finite("meyer_index", self.meyer_index)
+        with _float_range("meyer_index", self.meyer_index):
+            n = check_finite("meyer_index", self.meyer_index)
         if not 2.0 < n <= 3.0:
             raise ValueError(f"meyer_index must lie in (2, 3], got {n!r}")
         object.__setattr__(self, "meyer_index", n)
@@ -199,18 +237,24 @@ class Material:
         return self.density
 
     def _relabel_if_changed(self) -> None:
-        """A library entry changed in part (``dataclasses.replace(AISI_1010, E=69e9)``) keeps
-        no library label: its name says what changed and its source is cleared, so that no
-        result names a library material it did not use."""
-        library = sys.modules.get("impactlab.materials.library")
-        presets = getattr(library, "PRESETS", None)  # None while the library is being built
-        if not presets or not self.source:
-            return
-        entry = next((m for m in presets.values() if m.name == self.name), None)
+        """A library entry changed in part (``dataclasses.replace(AISI_1010, E=69e9)``: its
+        display name and a source) keeps no library label: its name says what changed and its
+        source is cleared, so that no result names a library material it did not use. Any other
+        material named as a library entry (its key, an alias or its display name) with other
+        values is refused (``impactlab.materials.naming.library_name_clash``), as
+        ``get_material`` refuses it."""
+        from impactlab.materials import naming  # imports the library's names lazily
+
+        entry = naming.library_entry(self.name)
         if entry is None:
             return
-        changed = [f for f in _VALUES if _differs(getattr(self, f), getattr(entry, f))]
-        changed += ["brittle"] if self.brittle != entry.brittle else []
+        if not (self.source and self.name == entry.name):
+            clash = naming.library_name_clash(self)
+            if clash:
+                raise ValueError(clash)
+            return
+        differ = naming.values_differ  # exactly: a copy that changed anything is another material
+        changed = [f for f in naming.COMPARED if differ(getattr(self, f), getattr(entry, f))]
         if changed:
             object.__setattr__(self, "name", f"{self.name}, modified ({', '.join(changed)})")
             object.__setattr__(self, "source", "")

@@ -21,7 +21,6 @@ that entry's: then it is that entry.
 
 from __future__ import annotations
 
-import difflib
 import math
 import re
 import tomllib
@@ -29,9 +28,16 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
-from impactlab._validation import did_you_mean, read_text_file, value_text
-from impactlab.materials.core import PLAUSIBLE, Material, brinell_to_pa, hardness_below_yield
+from impactlab._validation import read_text_file
+from impactlab.materials.core import (
+    PLAUSIBLE,
+    Material,
+    brinell_to_pa,
+    hardness_below_yield,
+)
+from impactlab.materials.core import brinell_text as brinell_text  # also the priors' reader
 from impactlab.materials.library import ALIASES, PRESETS
+from impactlab.materials.naming import library_entry, name_key, nearest
 from impactlab.units import read_minus, to_si
 
 #: Keys of a definition by values -> (Material field, SI unit; "" for text, "1" for numbers).
@@ -59,21 +65,8 @@ EXAMPLE = "E=69GPa, nu=0.33, Sy=276MPa, rho=2700kg/m^3"
 #: source, the source's citation and address, a note, the writing version): read past by a
 #: definition by values.
 DESCRIPTIVE: tuple[str, ...] = ("key", "source", "note", "citation", "url", "impactlab_version")
-#: A Brinell hardness written with its symbol: ``105 HB``, ``105 HBW`` or ``HBW 105``.
-_HB = re.compile(r"^\s*(?:(?P<a>[^\sA-Za-z][^\s]*)\s*HBW?|HBW?\s+(?P<b>\S+))\s*$")
 #: The number that leads a quantity text (its exponent's digits are no power of a unit).
 _LEAD = re.compile(r"\s*[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
-
-
-def brinell_text(value: Any) -> Any:
-    """A Brinell hardness written with its symbol HB or HBW (``"105 HB"``, ``"HBW 105"``) as
-    ``"105 kgf/mm^2"`` (a Brinell number is kgf/mm^2); any other value unchanged."""
-    m = _HB.match(value) if isinstance(value, str) else None
-    return value if m is None else f"{m.group('a') or m.group('b')} kgf/mm^2"
-
-
-def _key(name: str) -> str:
-    return name.strip().lower().replace("_", "-").replace(" ", "-")
 
 
 def library_names() -> str:
@@ -83,7 +76,7 @@ def library_names() -> str:
 
 def from_library(name: str) -> Material | None:
     """The library entry called ``name`` (or an alias); None if there is none."""
-    key = _key(name)
+    key = name_key(name)
     return PRESETS.get(ALIASES.get(key, key))
 
 
@@ -187,21 +180,8 @@ def from_values(values: Mapping[str, Any], where: str = "material") -> Material:
     slip = hardness_below_yield(material)
     if slip:
         raise ValueError(f"{where}: {slip}")
-    entry = _named_entry(name)
-    if entry is None:
-        return material
-    differ = [f for f in _COMPARED if _differs(getattr(material, f), getattr(entry, f))]
-    if differ:
-        shown = ", ".join(
-            f"{f} ({_shown(material, f)}; the library's {_shown(entry, f)})" for f in differ
-        )
-        raise ValueError(
-            f"{where}: name {name!r} is a library material with other values: it names "
-            f"{library_key(entry)!r}, which differs in {shown}; a material by values may carry "
-            "a library name only with every value of that entry, the unset ones too: give "
-            "another name"
-        )
-    return entry
+    # named as a library entry: that entry (Material refuses the name with other values)
+    return library_entry(name) or material
 
 
 def _object(value: Mapping[str, Any], unit: str, label: str) -> Any:
@@ -215,44 +195,6 @@ def _object(value: Mapping[str, Any], unit: str, label: str) -> Any:
         )
     x, given = value["value"], str(value["unit"]).strip()
     return x if x is None or given in (unit, "") else f"{x} {given}"
-
-
-#: The values a material by values must share with a library entry whose name it carries
-#: (value -> its unit in messages).
-_COMPARED = {
-    "E": "Pa",
-    "nu": "",
-    "yield_strength": "Pa",
-    "brinell_hardness": "kgf/mm^2",
-    "meyer_index": "",
-    "density": "kg/m^3",
-    "brittle": "",
-}
-
-
-def _differs(a: Any, b: Any) -> bool:
-    both_nan = isinstance(a, float) and isinstance(b, float) and math.isnan(a) and math.isnan(b)
-    return not (a == b or both_nan)
-
-
-def _shown(material: Material, field: str) -> str:
-    """A material's value in an error, with its unit; ``unset`` for a hardness not given."""
-    value = getattr(material, field)
-    if isinstance(value, bool):
-        return "yes" if value else "no"
-    if math.isnan(value):
-        return "unset"
-    return value_text(value, _COMPARED[field])
-
-
-def _named_entry(name: str) -> Material | None:
-    """The library entry whose key, alias or display name ``name`` is (case, ``_``, ``-`` and
-    spaces free); None for any other name."""
-    entry = from_library(name)
-    if entry is not None:
-        return entry
-    key = _key(name)
-    return next((m for m in PRESETS.values() if _key(m.name) == key), None)
 
 
 def _label(fields: Mapping[str, Any]) -> str:
@@ -352,33 +294,11 @@ def get_material(value: Any, where: str = "material") -> Material:
         if not path.is_file():
             raise ValueError(f"{prefix}material file {text!r} does not exist")
         return from_file(path, where)
-    near = _nearest(_key(text))
+    near = nearest(name_key(text))
     raise ValueError(
         f"{prefix}unknown material {text!r}{near}; known: {library_names()} (see 'impactlab "
         f"materials'), or give its properties: '{EXAMPLE}'"
     )
-
-
-def _nearest(key: str) -> str:
-    """`` (did you mean 'x'?)`` for the library name or alias nearest to ``key``: one whose
-    first word it is (``al``: al-6061-t6), else one that holds it, or that it holds, (``-``
-    and ``.`` aside; the closest such), else the nearest spelling (``impactlab._validation.
-    did_you_mean``); ``""`` for none, and for one character (``a``: nothing is near)."""
-    names = (*PRESETS, *ALIASES)
-
-    def bare(text: str) -> str:
-        return re.sub(r"[-._]", "", text)
-
-    k = bare(key)
-    if len(k) < 2:
-        return ""
-    holding = [n for n in names if k in bare(n) or (len(bare(n)) >= 3 and bare(n) in k)]
-    holding = [n for n in holding if n.split("-")[0] == key] or holding
-    if holding:
-        best = difflib.get_close_matches(key, holding, n=1, cutoff=0.0)
-        name = best[0] if best else holding[0]
-        return f" (did you mean {ALIASES.get(name, name)!r}?)"
-    return did_you_mean(key, names)
 
 
 def library_key(material: Material) -> str | None:

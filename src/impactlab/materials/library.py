@@ -28,9 +28,11 @@ from __future__ import annotations
 from impactlab.materials.core import Material
 from impactlab.references import PAPER
 
-#: Pounds per cubic inch in kg/m^3 and ksi in Pa (the US sources' units).
-_LB_PER_IN3 = 27679.9047
-_KSI = 6.894757e6
+#: Pounds per cubic inch in kg/m^3 and ksi in Pa (the US sources' units), exact: 1 lb =
+#: 0.45359237 kg, 1 in = 0.0254 m, 1 lbf = 4.4482216152605 N (as pint converts them, so that a
+#: value written in the source's unit is the entry's).
+_LB_PER_IN3 = 0.45359237 / 0.0254**3
+_KSI = 1000.0 * 4.4482216152605 / 0.0254**2
 
 
 def _steel(name: str, yield_strength: float, brinell_hardness: float, density: float) -> Material:

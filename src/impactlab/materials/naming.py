@@ -1,0 +1,184 @@
+"""The library's names on materials: which entry a name names, the rule that a material by
+values carries a library name only with that entry's values, and the nearest name to an unknown
+one.
+
+A name names a library entry when it is the entry's key, an alias or its display name (case,
+``_``, ``-`` and spaces free). A material whose values are that entry's, each to
+:data:`SAME_VALUE_RTOL` (the round-off of a unit conversion: ``rho=7.87 g/cm^3`` is
+7869.999999999999 kg/m^3), may carry the name; with any other value it is refused
+(:func:`library_name_clash`), in ``Material(...)`` as in ``get_material``'s text, mapping and
+TOML forms.
+"""
+
+from __future__ import annotations
+
+import difflib
+import math
+import re
+import sys
+from typing import TYPE_CHECKING, Any
+
+from impactlab._validation import value_text
+
+if TYPE_CHECKING:
+    from impactlab.materials.core import Material
+
+#: Two values of a material are the same when they agree to this relative tolerance
+#: (``math.isclose``): 1 part in 10^7, far below any source's precision (3 or 4 significant
+#: digits) and above the round-off of a unit conversion: a value in g/cm^3 (1e-16), or in the
+#: sources' psi, ksi and lb/in^3 converted with a 7-digit ksi (4e-8, the finite-element
+#: reference's stored AISI 52100 values).
+SAME_VALUE_RTOL = 1e-7
+
+#: The values a material with a library entry's name must share with it (value -> its unit in
+#: messages).
+COMPARED: dict[str, str] = {
+    "E": "Pa",
+    "nu": "",
+    "yield_strength": "Pa",
+    "brinell_hardness": "kgf/mm^2",
+    "meyer_index": "",
+    "density": "kg/m^3",
+    "brittle": "",
+}
+
+
+def name_key(name: str) -> str:
+    """``name`` as the library compares names: lower case, ``_`` and spaces as ``-``."""
+    return name.strip().lower().replace("_", "-").replace(" ", "-")
+
+
+def _library() -> tuple[dict[str, Material], dict[str, str]]:
+    """The library's entries and aliases; empty while the library is being built."""
+    library = sys.modules.get("impactlab.materials.library")
+    return getattr(library, "PRESETS", None) or {}, getattr(library, "ALIASES", None) or {}
+
+
+def library_entry(name: str) -> Material | None:
+    """The library entry whose key, alias or display name ``name`` is (case, ``_``, ``-`` and
+    spaces free); None for any other name."""
+    presets, aliases = _library()
+    key = name_key(name)
+    entry = presets.get(aliases.get(key, key))
+    if entry is not None:
+        return entry
+    return next((m for m in presets.values() if name_key(m.name) == key), None)
+
+
+def values_differ(a: Any, b: Any, rel_tol: float = 0.0) -> bool:
+    """True unless ``a`` and ``b`` are the same value: both unset (None, or both NaN), the
+    same flag, or numbers equal to ``rel_tol`` (``math.isclose``; 0: exactly equal)."""
+    if a is None or b is None or isinstance(a, bool) or isinstance(b, bool):
+        return bool(a != b)
+    x, y = float(a), float(b)
+    if math.isnan(x) or math.isnan(y):
+        return not (math.isnan(x) and math.isnan(y))
+    return not math.isclose(x, y, rel_tol=rel_tol, abs_tol=0.0)
+
+
+def _shown(value: Any, unit: str, digits: int) -> str:
+    if isinstance(value, bool):
+        return "yes" if value else "no"
+    if value is None or math.isnan(value):
+        return "unset"
+    return f"{value:.{digits}g}{f' {unit}' if unit else ''}" if digits else value_text(value, unit)
+
+
+def shown(field: str, given: Any, library: Any) -> str:
+    """``"given unit; the library's value unit"`` for an error (``unset`` for a value not
+    given): each the shortest text that reads back as it, both to 12 significant digits where
+    either needs as many (the round-off of a unit conversion), so that two values that differ
+    by more than :data:`SAME_VALUE_RTOL` read apart in the same notation."""
+    unit = COMPARED[field]
+    numbers = [x for x in (given, library) if isinstance(x, float) and math.isfinite(x)]
+    long = any(next(n for n in range(17) if float(f"{x:.{n}e}") == x) >= 11 for x in numbers)
+    digits = 12 if long else 0  # value_text's own rule for one such value
+    return f"{_shown(given, unit, digits)}; the library's {_shown(library, unit, digits)}"
+
+
+def library_name_clash(material: Material) -> str:
+    """Why ``material`` may not carry its name ("" when it may): the name is a library entry's
+    (:func:`library_entry`) and a value differs from the entry's by more than
+    :data:`SAME_VALUE_RTOL`."""
+    entry = library_entry(material.name)
+    if entry is None:
+        return ""
+    differ = [
+        f
+        for f in COMPARED
+        if values_differ(getattr(material, f), getattr(entry, f), SAME_VALUE_RTOL)
+    ]
+    if not differ:
+        return ""
+    key = next(k for k, m in _library()[0].items() if m is entry)
+    values = ", ".join(f"{f} ({shown(f, getattr(material, f), getattr(entry, f))})" for f in differ)
+    return (
+        f"name {material.name!r} is a library material with other values: it names {key!r}, "
+        f"which differs in {values}; a material by values may carry a library name only with "
+        f"every value of that entry, the unset ones too: give another name, or "
+        f"get_material({key!r}) for the library's entry"
+    )
+
+
+def _bare(text: str) -> str:
+    return re.sub(r"[-._]", "", text)
+
+
+def _names(display: bool = True) -> dict[str, str]:
+    """The library's names -> their entry's key: keys, aliases and (``display``) the display
+    names (:func:`name_key`)."""
+    presets, aliases = _library()
+    names = {k: k for k in presets} | dict(aliases)
+    return names | ({name_key(m.name): k for k, m in presets.items()} if display else {})
+
+
+def _words() -> dict[str, str]:
+    """The first word of each of the library's names (``aluminium``, ``alumina``, ``soda``) ->
+    its entry's key, where that word names one entry alone."""
+    owners: dict[str, set[str]] = {}
+    for name, key in _names().items():
+        word = re.split(r"[-(,%]", name)[0]
+        if len(word) >= 3:
+            owners.setdefault(word, set()).add(key)
+    return {w: next(iter(k)) for w, k in owners.items() if len(k) == 1}
+
+
+def _ratio(a: str, b: str) -> float:
+    return difflib.SequenceMatcher(None, a.replace("_", "-"), b.replace("_", "-")).ratio()
+
+
+def _listed(keys: list[str]) -> str:
+    """`` (did you mean 'x'?)``; for several entries each with its display name, in the
+    library's order."""
+    presets = _library()[0]
+    keys = sorted(keys, key=list(presets).index)
+    items = [f"{k!r} ({presets[k].name})" for k in keys] if len(keys) > 1 else [repr(keys[0])]
+    text = items[0] if len(items) == 1 else f"{', '.join(items[:-1])} or {items[-1]}"
+    return f" (did you mean {text}?)"
+
+
+def nearest(key: str) -> str:
+    """`` (did you mean 'x'?)`` for the library entry nearest to ``key`` (:func:`name_key`):
+
+    - the entry one of whose keys or aliases has ``key`` as its first word (``al``:
+      al-6061-t6), else one whose key or alias holds ``key`` or is held by it (``-``, ``.`` and
+      ``_`` aside; ``soda``: soda-lime-glass, the closest such); where ``key`` begins the names
+      of several entries, each of them (``alu``: ``'al-6061-t6' (aluminium 6061-T6) or
+      'alumina-99.5' (alumina 99.5 %)``);
+    - else the nearest spelling of a key, an alias, a display name or the first word of one
+      (``alumnium``: al-6061-t6, whose display name and aliases say aluminium);
+    - ``""`` for none, and for one character (``a``: nothing is near)."""
+    names = _names(display=False)
+    k = _bare(key)
+    if len(k) < 2:
+        return ""
+    holding = [n for n in names if k in _bare(n) or (len(_bare(n)) >= 3 and _bare(n) in k)]
+    holding = [n for n in holding if n.split("-")[0] == key] or holding
+    if not holding:
+        names, words = _names(), _words()  # a first word: a closer spelling (0.75)
+        score = {n: _ratio(key, n) for n in names} | {w: _ratio(key, w) - 0.15 for w in words}
+        best = max(score, key=lambda n: score[n])
+        return _listed([names.get(best) or words[best]]) if score[best] >= 0.6 else ""
+    ranked = difflib.get_close_matches(key, holding, n=len(holding), cutoff=0.0) or holding
+    starting = list(dict.fromkeys(names[n] for n in ranked if _bare(n).startswith(k)))
+    return _listed(starting[:4] if len(starting) > 1 else [names[ranked[0]]])
