@@ -20,7 +20,7 @@ import pytest
 from impactlab import testing as S
 from impactlab.experiment import HeightMap, measure_dent, read_scan
 from impactlab.experiment.profilometry.bottom import quadric_min
-from impactlab.experiment.profilometry.outline import extent
+from impactlab.experiment.profilometry.extent import extent
 from impactlab.experiment.profilometry.surface import surface
 
 #: The tip's radius, the dent's depth and its sliding length [m].

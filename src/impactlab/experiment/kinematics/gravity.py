@@ -22,7 +22,15 @@ from impactlab.experiment.kinematics.fits import grow_segment
 from impactlab.experiment.rigid import Poses
 from impactlab.experiment.uncertainty import fixed
 
-__all__ = ["GRAVITY_SIGMAS", "GRAVITY_TOLERANCE", "TILT_WARN_DEG", "fitted_gravity", "suggested_up"]
+__all__ = [
+    "FALL_DOUBT",
+    "GRAVITY_SIGMAS",
+    "GRAVITY_TOLERANCE",
+    "LOCAL_G",
+    "TILT_WARN_DEG",
+    "fitted_gravity",
+    "suggested_up",
+]
 
 #: A tilt of the camera's vertical from the fitted gravity [deg] beyond which a warning says so.
 TILT_WARN_DEG = 2.0
@@ -30,6 +38,13 @@ TILT_WARN_DEG = 2.0
 GRAVITY_TOLERANCE = 0.10
 #: ... and by more than this many of its standard uncertainties is refused.
 GRAVITY_SIGMAS = 4.0
+#: A free fall within the refusal's bounds whose acceleration still differs from g by more than
+#: ``GRAVITY_SIGMAS`` of its uncertainty plus this fraction of g (and the centripetal allowance)
+#: marks the result not ok: g varies by 0.5 % over the Earth (9.78-9.83 m/s^2 with latitude and
+#: height), where a frame rate 2 % off moves the fitted fall by 4 % (and mu by about 4 %).
+LOCAL_G = 0.005
+#: How the doubt of a free fall off g begins (:func:`fitted_gravity`).
+FALL_DOUBT = "the time base or the length unit is in doubt"
 #: The free-fall fit starts from the ``FALL_START`` frames nearest the impact and grows backwards
 #: over the free flight; fewer than ``MIN_FALL_FRAMES`` in all give no check (a warning).
 FALL_START = 12
@@ -104,6 +119,24 @@ def _time_base_error(src: str, fitted: float, sig: float, g: float) -> MarkerErr
     )
 
 
+def _off_g(fitted: float, sig: float, g: float, bound: float, centripetal: float) -> str:
+    """The doubt of a free fall that differs from ``g`` by more than ``bound`` [m/s^2] (within
+    the refusal's)."""
+    rate = math.sqrt(g / fitted) if fitted > 0 else math.inf  # times read s too long: g / s^2
+    turn = f" and {centripetal:.2g} m/s^2 for the rod's turn" if centripetal > 0 else ""
+    return (
+        f"{FALL_DOUBT}: the free fall before the impact accelerates at {fitted:.4g} ± "
+        f"{sig:.2g} m/s^2, {(fitted - g) / g:+.1%} from g = {g:.4g} m/s^2, beyond "
+        f"{GRAVITY_SIGMAS:g} sigma plus {LOCAL_G:.1%} of g (g's variation over the Earth){turn} "
+        f"= {bound:.2g} m/s^2: as if the camera's frame rate were {rate:.4g} times the one read "
+        "(a C3D's POINT:RATE, a CSV's '# rate:' line or its time column), or the marker "
+        f"lengths were read {fitted / g:.4g} times their size (the length unit); the "
+        "velocities, e, mu and the fits that take g are biased by it "
+        "(a frame rate 2 % off moves mu by about 4 %); check the camera's frame rate and the "
+        "marker units"
+    )
+
+
 def _unchecked(why: str) -> str:
     """The warning for a time base that the free fall cannot check."""
     return (
@@ -138,6 +171,7 @@ def fitted_gravity(
     src: str,
     warnings: list[str],
     lever: float = 0.0,
+    doubts: list[str] | None = None,
 ) -> float | None:
     """The free fall before the impact (the frames ``fr`` before it, in time order) fitted
     with a free acceleration: its magnitude [m/s^2] (None, with a warning, for a fall too short
@@ -148,7 +182,9 @@ def fitted_gravity(
     points more than 25 deg away from -``up``; a warning for a smaller tilt beyond its noise.
     ``lever`` [m]: the largest distance of the fitted point (the cluster origin) from the centre
     of mass, 0 when it is the centre of mass (a given geometry): a turning rod's centripetal
-    acceleration there is allowed for."""
+    acceleration there is allowed for. A fall that passes but differs from ``g`` by more than
+    ``GRAVITY_SIGMAS`` of its uncertainty plus ``LOCAL_G`` of g (and that allowance) is a doubt
+    (into ``doubts`` and ``warnings``): a frame rate or length unit a few percent off."""
     if fr.size < MIN_FALL_FRAMES:
         span = float(poses.time[fr[-1]] - poses.time[fr[0]]) if fr.size > 1 else 0.0
         warnings.append(
@@ -186,6 +222,11 @@ def fitted_gravity(
         raise _time_base_error(src, fitted_g, sig_a, g)
     if allowed > GRAVITY_TOLERANCE * g and GRAVITY_SIGMAS * sig_a >= centripetal:
         warnings.append(_weak(used, poses, fitted_g, sig_a, allowed, g))
+    bound = GRAVITY_SIGMAS * sig_a + LOCAL_G * g + centripetal
+    if abs(fitted_g - g) > bound and doubts is not None:
+        doubt = _off_g(fitted_g, sig_a, g, bound, centripetal)
+        doubts.append(doubt)
+        warnings.append(doubt)
     tilt = math.degrees(math.acos(max(-1.0, min(1.0, float(-(down @ upv))))))
     dirn = ", ".join(f"{v:+.2f}" for v in down)
     # the fitted direction's own uncertainty (all the components', conservatively)

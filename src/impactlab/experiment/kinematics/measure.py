@@ -200,7 +200,8 @@ def _steps(
     # the time base, the length unit and up= first, from a free fall fitted without g
     falling = ok[ok <= imp.k_star - guard]  # all the record holds: grown back from the impact
     lever = 0.0 if geometry is not None else half + float(np.ptp(reference, axis=0).max())
-    fitted_g = fitted_gravity(poses, falling, t_ref, upv, g, src, warnings, lever)
+    doubts: list[str] = []
+    fitted_g = fitted_gravity(poses, falling, t_ref, upv, g, src, warnings, lever, doubts)
     used = tracks if geometry is None or geometry.labels is None else tracks.select(geometry.labels)
     pre_fr, post_fr = free_flight(poses, ok, imp, opts, src, used)
     if geometry is not None:
@@ -245,6 +246,7 @@ def _steps(
         tilt_out_of_plane=tilt,
         poses=poses,
         warnings=tuple(warnings),
+        doubts=tuple(doubts),
     )
     return kin, imp
 

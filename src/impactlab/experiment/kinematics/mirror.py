@@ -26,6 +26,7 @@ from collections.abc import Callable
 import numpy as np
 
 from impactlab.experiment.errors import MarkerError
+from impactlab.experiment.kinematics.gravity import FALL_DOUBT
 from impactlab.experiment.kinematics.impulse import (
     IMPULSE_SIGMAS,
     IMPULSE_TOLERANCE,
@@ -207,6 +208,17 @@ def given_geometry_note(k: ImpactKinematics, own: ImpulseCheck) -> str:
     """The doubt of a given geometry that breaks the impulse relation while its mirror image
     does not help: C or the rod's axis misplaced in it, or an inertia that is off."""
     rolled = "" if own.axis_agrees else ", or the rod rolled about its axis at the impact"
+    check = "check the geometry's origin and axes"
+    if any(d.startswith(FALL_DOUBT) for d in k.doubts) and k.fitted_gravity is not None:
+        # the free fall is off g too: the fits that take g break the relation as well
+        rolled += (
+            f", or the time base (the frame rate) or the length unit is off (the free fall "
+            f"before the impact accelerates at {k.fitted_gravity:.4g} m/s^2, not "
+            f"g = {k.gravity:.4g} m/s^2, and the fits that take g then break the relation)"
+        )
+        check = (
+            "check the frame rate and the marker units first, then the geometry's origin and axes"
+        )
     return (
         f"the marker geometry is in doubt: with it the velocity changes break the rigid-body "
         f"impulse relation (k^2 dw = b dv_Cx - a dv_Cy, a turn perpendicular to the rod): "
@@ -215,7 +227,7 @@ def given_geometry_note(k: ImpactKinematics, own: ImpulseCheck) -> str:
         f"misplaced in the geometry (marker positions measured from another origin or in a "
         f"rotated frame: a shift along the rod or a turn keeps every distance), the rod's "
         f"inertia k^2 = I/m is off by more than {100 * IMPULSE_TOLERANCE:g} % (Rod.inertia, the "
-        f"marker mounts included){rolled}; check the geometry's origin and axes"
+        f"marker mounts included){rolled}; {check}"
     )
 
 

@@ -25,9 +25,9 @@ uncertainty); the paper prints them negative (y up). The sliding direction is ``
 
 Modules: ``heightmap`` (:class:`HeightMap`), ``reading`` (:func:`read_scan`; ``plain`` for
 .npy/.csv maps, ``instrument`` for SurfaceTopography's formats), ``levelling``
-(:func:`level_plane`), ``dent`` (:func:`measure_dent`; ``outline``, ``bottom`` its geometry),
-``metrics`` (:class:`DentMetrics`), ``surface`` (levelled surface, detection, the sign check),
-``plausibility`` (:func:`check_dent`: can the rod make this dent?).
+(:func:`level_plane`), ``dent`` (:func:`measure_dent`; ``outline``, ``extent``, ``profiles``,
+``bottom`` its geometry), ``metrics`` (:class:`DentMetrics`), ``surface`` (levelled surface,
+detection, the sign check), ``plausibility`` (:func:`check_dent`: can the rod make this dent?).
 """
 
 from impactlab.experiment.profilometry.dent import measure_dent

@@ -4,7 +4,7 @@ Definitions in the package docstring (:mod:`impactlab.experiment.profilometry`);
 :func:`measure_dent`: level the scan, fill dropouts, find the deepest depression above the
 detection threshold, outline it, fit its bottom (delta_p), measure length and width at the edge
 threshold (extrapolated to the zero threshold when the dent is deep enough, from levels clear of
-the smoothing's reach: :func:`~.outline.extent`), orient the sliding axis towards the sharper
+the smoothing's reach: :func:`~.extent.extent`), orient the sliding axis towards the sharper
 end, estimate the uncertainties, find the pile-up.
 """
 
@@ -18,6 +18,7 @@ from scipy import ndimage
 from impactlab.experiment.checks import check_instance
 from impactlab.experiment.errors import ScanError
 from impactlab.experiment.profilometry.bottom import bottom
+from impactlab.experiment.profilometry.extent import Extent, extent, smoothing_note
 from impactlab.experiment.profilometry.gaps import (
     GapSpread,
     check_crossings,
@@ -26,13 +27,14 @@ from impactlab.experiment.profilometry.gaps import (
     outline_gaps,
 )
 from impactlab.experiment.profilometry.heightmap import HeightMap
-from impactlab.experiment.profilometry.levelling import levelling_note
+from impactlab.experiment.profilometry.levelling import levelling_note, step_note
 from impactlab.experiment.profilometry.metrics import (
     DentMetrics,
     sliding_length_note,
     unmeasured_notes,
 )
-from impactlab.experiment.profilometry.outline import Extent, extent, fall_distance, outline, sample
+from impactlab.experiment.profilometry.outline import outline
+from impactlab.experiment.profilometry.profiles import MAX_PROFILE_SAMPLES, orient, profiles
 from impactlab.experiment.profilometry.surface import (
     Surface,
     dent_region,
@@ -43,10 +45,6 @@ from impactlab.experiment.profilometry.surface import (
 from impactlab.experiment.uncertainty import Estimate
 
 __all__ = ["MAX_PROFILE_SAMPLES", "DentMetrics", "measure_dent"]
-
-#: The most samples the profiles along and across the dent may take (half a pixel apart): more
-#: means pixels far longer one way than the other, a pixel size read wrong.
-MAX_PROFILE_SAMPLES = 1_000_000
 
 
 def _deepest(
@@ -77,7 +75,7 @@ def _extent(
     zs: np.ndarray | None = None,
     levels: tuple[float, float] | None = None,
 ) -> Extent | None:
-    """The extent (:func:`~.outline.extent`) on the smoothed map (``zs``, default the scan's);
+    """The extent (:func:`~.extent.extent`) on the smoothed map (``zs``, default the scan's);
     None when the outline at the threshold ``thr`` [m] is lost or does not cross the line
     through ``deepest``."""
     zmap = sf.zs if zs is None else zs
@@ -119,65 +117,13 @@ def _clear_of_gaps(
         return ext
     pixel = min(sf.dx, sf.dy) / math.sqrt(3.0)  # spreads are stated as sigmas of a uniform one
     moved = (spread.sigma_length > pixel, spread.sigma_width > pixel)
-    levels = (thr if moved[0] else ext.levels[0], thr if moved[1] else ext.levels[1])
+    # a level moved back from inside the edge to thr, where the smoothing shifts the outline:
+    # inf, so that the extrapolation from thr and 2 thr carries that shift in its +-
+    levels = (
+        math.inf if moved[0] and ext.levels[0] > thr else ext.levels[0],
+        math.inf if moved[1] and ext.levels[1] > thr else ext.levels[1],
+    )
     return _extent(sf, thr, depth, deepest, smooth, levels=levels) or ext
-
-
-def _profiles(
-    sf: Surface, deepest: np.ndarray, axis: np.ndarray, length: float, width: float
-) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """(s, heights) along the axis and (s, heights) across it, through the deepest point [m]."""
-    zs, dx, dy = sf.zs, sf.dx, sf.dy
-    step = 0.5 * min(dx, dy)
-    half_len, half_cross = length + 2 * width, 1.5 * width
-    n = 2.0 * (half_len + half_cross) / step
-    if not n <= MAX_PROFILE_SAMPLES:  # pixels far longer one way than the other
-        raise ScanError(
-            f"{sf.src}: the dent measures {length:.4g} m by {width:.4g} m on pixels of "
-            f"{dx:.4g} m x {dy:.4g} m: its profiles, half the smaller pixel apart, would take "
-            f"{n:.3g} samples (at most {MAX_PROFILE_SAMPLES:.0e}); check the pixel size"
-        )
-    s = np.arange(-half_len, half_len + step, step)
-    line = deepest[None, :] + s[:, None] * axis[None, :]
-    inside = (
-        (line[:, 0] >= 0)
-        & (line[:, 0] <= (zs.shape[1] - 1) * dx)
-        & (line[:, 1] >= 0)
-        & (line[:, 1] <= (zs.shape[0] - 1) * dy)
-    )
-    s, line = s[inside], line[inside]
-    prof = sample(zs, dx, dy, line)
-    perp = np.array([-axis[1], axis[0]])
-    sc = np.arange(-half_cross, half_cross + step, step)
-    cl = deepest[None, :] + sc[:, None] * perp[None, :]
-    okc = (
-        (cl[:, 0] >= 0)
-        & (cl[:, 0] <= (zs.shape[1] - 1) * dx)
-        & (cl[:, 1] >= 0)
-        & (cl[:, 1] <= (zs.shape[0] - 1) * dy)
-    )
-    sc, cl = sc[okc], cl[okc]
-    return s, prof, sc, sample(zs, dx, dy, cl)
-
-
-def _orient(
-    s: np.ndarray, prof: np.ndarray, axis: np.ndarray, depth: float
-) -> tuple[np.ndarray, np.ndarray, np.ndarray, float, float, bool]:
-    """Point the axis towards the sharper end (the end of the sliding): (axis, s, profile,
-    fall distance at the start, at the end, ambiguous)."""
-    fwd = s >= 0
-    bwd = s <= 0
-    d_plus = fall_distance(s[fwd], prof[fwd], depth)
-    d_minus = fall_distance(-s[bwd][::-1], prof[bwd][::-1], depth)
-    if math.isfinite(d_plus) and math.isfinite(d_minus) and d_plus > d_minus:
-        axis = -axis  # the sharper end lies on the minus side
-        s = -s[::-1]
-        prof = prof[::-1]
-        d_plus, d_minus = d_minus, d_plus
-    ambiguous = not (math.isfinite(d_plus) and math.isfinite(d_minus)) or abs(
-        d_minus - d_plus
-    ) < 0.1 * max(d_minus, d_plus)
-    return axis, s, prof, d_minus, d_plus, ambiguous
 
 
 def _outline_noise(
@@ -276,8 +222,8 @@ def measure_dent(
     """
     check_instance(hm, HeightMap, "hm", "read one with read_scan()")
     sf = surface(hm, smooth)
-    level_note = levelling_note(sf.lev)
-    warnings: list[str] = [level_note] if level_note else []
+    notes = (levelling_note(sf.lev), step_note(sf.lev))
+    warnings: list[str] = [note for note in notes if note]
     i0, j0 = find_dent(sf, detect_sigma, min_pixels, warnings)
     depth_rough = -float(sf.zs[i0, j0])
     thr = max(edge_sigma * sf.sig_s, edge_fraction * depth_rough)
@@ -291,8 +237,10 @@ def measure_dent(
         )
     zmin, zsig, xm, ym = _deepest(sf, polygon, (i0, j0), depth_rough, quad_radius, warnings)
     # fit noise, plus an allowance of a quarter of the noise sigma for the levelling plane and the
-    # paraboloid's model error (validated on the synthetic grooves of the tests)
-    delta_p = Estimate(-zmin, math.sqrt(zsig**2 + (0.25 * sf.lev.sigma) ** 2), "m")
+    # paraboloid's model error (validated on the synthetic grooves of the tests), and the heights'
+    # rounding to their step, which the fit does not average out (its pixels round alike)
+    rounding = sf.lev.step / math.sqrt(12.0)
+    delta_p = Estimate(-zmin, math.sqrt(zsig**2 + (0.25 * sf.lev.sigma) ** 2 + rounding**2), "m")
     if delta_p.value < 5.0 * sf.lev.sigma:
         warnings.append(
             f"delta_p = {delta_p.value * 1e6:.3g} um is only {delta_p.value / sf.lev.sigma:.2g} "
@@ -309,6 +257,28 @@ def measure_dent(
         filled,
         (pileup_band, smooth),
         warnings,
+    )
+
+
+def _uncrossed(sf: Surface, thr: float, deepest: np.ndarray) -> str:
+    """The message for an outline (at ``thr`` [m]) that the line through the deepest point
+    (x, y) [m] across its long axis does not cross: its likely cause and what to do."""
+    head = (
+        f"{sf.src}: the dent's outline at {thr * 1e6:.3g} um deep does not cross the line "
+        f"across it through its deepest point (x = {deepest[0] * 1e3:.4g} mm, "
+        f"y = {deepest[1] * 1e3:.4g} mm), so its width cannot be measured: "
+    )
+    if sf.lev.step > 0.1 * thr:
+        return head + (
+            f"the heights come in steps of {sf.lev.step * 1e6:.3g} um, "
+            f"{sf.lev.step / thr:.2g} times the outline's depth, so the outline follows the "
+            "steps' edges (likely cause: a coarse height step, an integer format with a Z "
+            "increment or a sensor's resolution); export the scan with a finer height step, or "
+            "its heights as floating point"
+        )
+    return head + (
+        "the deepest point lies off the dent's middle (dust or a pit in it, or a dent at the "
+        "noise); check the scan and its dent plot, and clean or crop it"
     )
 
 
@@ -335,11 +305,11 @@ def _metrics(
     depth = delta_p.value
     ext = _extent(sf, thr, depth, deepest, smooth)
     if ext is None:
-        raise ScanError(f"{sf.src}: the outline does not cross the line through the deepest point")
+        raise ScanError(_uncrossed(sf, thr, deepest))
     ext = _clear_of_gaps(sf, thr, depth, deepest, smooth, ext)
     length, width = ext.length, ext.width
-    s, prof, sc, cprof = _profiles(sf, deepest, ext.axis, length, width)
-    axis, s, prof, d_minus, d_plus, ambiguous = _orient(s, prof, ext.axis, depth)
+    s, prof, sc, cprof = profiles(sf, deepest, ext.axis, length, width)
+    axis, s, prof, d_minus, d_plus, ambiguous = orient(s, prof, ext.axis, depth)
     # extent along the axis from the outline, for the deepest point's position
     proj = (polygon - deepest) @ axis
     s_start, s_end = float(proj.min()), float(proj.max())
@@ -359,6 +329,7 @@ def _metrics(
             f"the dent's edge ({', '.join(in_gaps)}) lies in pixels without data, filled by "
             "interpolation: its place there is the fill's; scan the dent again for data there"
         )
+    warnings += smoothing_note(ext, sf.dx, sf.dy, smooth, depth)
     if not ext.extrapolated:
         warnings.append(
             "the dent is too shallow to extrapolate its outline to the zero "

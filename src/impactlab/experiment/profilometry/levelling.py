@@ -17,9 +17,11 @@ __all__ = [
     "LEVELLING_RATIO",
     "NOISE_LAG",
     "Levelled",
+    "height_step",
     "lagged_noise",
     "level_plane",
     "levelling_note",
+    "step_note",
 ]
 
 
@@ -29,7 +31,9 @@ class Levelled:
     ``plane`` = (a, b, c) [m, -, -] (z_plane = a + b x + c y), the ``inliers`` used for the plane,
     the robust noise ``sigma`` [m] of the inliers, ``iterations``; ``lag_sigma`` [m]: the
     inliers' noise from second differences ``NOISE_LAG`` pixels apart (:func:`lagged_noise`),
-    which no plane changes."""
+    which no plane changes; ``step`` [m]: the heights' quantum (:func:`height_step`), whose
+    rounding error step / sqrt(12) floors both noises (``rounding``: the robust noise was
+    below it)."""
 
     z: np.ndarray
     plane: tuple[float, float, float]
@@ -37,6 +41,8 @@ class Levelled:
     sigma: float
     iterations: int
     lag_sigma: float = math.nan
+    step: float = 0.0
+    rounding: bool = False
 
 
 #: Outlier threshold [noise sigmas] of the levelling plane's inliers.
@@ -81,6 +87,8 @@ def level_plane(
     frame[:by, :] = frame[-by:, :] = True
     frame[:, :bx] = frame[:, -bx:] = True
     inl = valid & frame
+    step = height_step(z)
+    floor = step / math.sqrt(12.0)  # the rounding error of heights read in steps
     if inl.sum() < 20:
         inl = valid.copy()
     coef = np.zeros(3)
@@ -91,9 +99,9 @@ def level_plane(
         coef, *_ = np.linalg.lstsq(A, z[inl], rcond=None)
         res = z - (coef[0] + coef[1] * X + coef[2] * Y)
         r_in = res[inl]
-        sigma = float(1.4826 * np.median(np.abs(r_in - np.median(r_in))))
-        if sigma == 0.0:
-            sigma = float(np.std(r_in)) or 1e-15
+        robust = float(1.4826 * np.median(np.abs(r_in - np.median(r_in))))
+        # heights in steps coarser than their noise: the MAD is 0 or below the rounding error
+        sigma = max(robust, floor) or float(np.std(r_in)) or 1e-15
         out = valid & (np.abs(np.nan_to_num(res)) > k * sigma)
         if exclude_dilation > 0:
             out = ndimage.binary_dilation(out, iterations=exclude_dilation)
@@ -106,7 +114,50 @@ def level_plane(
     zl = z - (coef[0] + coef[1] * X + coef[2] * Y)
     zl.setflags(write=False)
     plane = (float(coef[0]), float(coef[1]), float(coef[2]))
-    return Levelled(zl, plane, inl, sigma, it, lagged_noise(z, inl))
+    rounding = floor > 0 and not robust > floor
+    lag = lagged_noise(z, inl)
+    lag = max(lag, floor) if math.isfinite(lag) else lag
+    return Levelled(zl, plane, inl, sigma, it, lag, step, rounding)
+
+
+def height_step(z: np.ndarray) -> float:
+    """The quantum [m] of the heights ``z``, for heights that are whole numbers of a Z increment
+    (an integer X3P, a sensor's resolution): the smallest difference between two distinct
+    finite heights (differences under 1e-9 of their range taken as float rounding), where the
+    range holds at most ``_LEVELS_PER_VALUE`` times as many such steps as there are distinct
+    heights; 0 otherwise (heights as measured: n values spaced about range / n^2 at the
+    closest) and for fewer than two."""
+    v = np.unique(z[np.isfinite(z)])
+    if v.size < 2:
+        return 0.0
+    span = float(v[-1] - v[0])
+    d = np.diff(v)
+    d = d[d > 1e-9 * span]
+    if not d.size:
+        return 0.0
+    step = float(d.min())
+    return step if span / step <= _LEVELS_PER_VALUE * v.size else 0.0
+
+
+#: Heights are taken to come in steps (:func:`height_step`) where their range holds at most this
+#: many steps per distinct height: a quantised scan fills most of its levels (a level per value),
+#: a measured one has n values whose closest two lie about range / n^2 apart (n steps a value).
+_LEVELS_PER_VALUE = 10
+
+
+def step_note(lev: Levelled) -> str | None:
+    """The warning for heights in steps coarser than their noise (``lev.rounding``; None
+    otherwise)."""
+    if not lev.rounding:
+        return None
+    return (
+        f"the heights come in steps of {lev.step * 1e6:.3g} um, coarser than their noise (an "
+        "integer format with a Z increment, or a sensor's height resolution): the noise is "
+        f"taken as the rounding error, step / sqrt(12) = {lev.step / math.sqrt(12.0) * 1e6:.3g} "
+        "um, in the +- of delta_p (the bottom's height is read to within a step) and of the "
+        "outline; a scan with a finer height step (or heights stored as floating point) "
+        "measures the dent better"
+    )
 
 
 def lagged_noise(z: np.ndarray, mask: np.ndarray | None = None, lag: int = NOISE_LAG) -> float:

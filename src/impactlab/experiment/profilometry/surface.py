@@ -7,6 +7,7 @@ heights (sign-flipped), refused with the option that reads it the other way up.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -49,7 +50,9 @@ def surface(hm: HeightMap, smooth: float) -> Surface:
     # noise of the smoothed map on the plane's inliers
     r = zs[lev.inliers]
     sig_s = float(1.4826 * np.median(np.abs(r - np.median(r)))) if r.size else lev.sigma
-    sig_s = max(sig_s, 1e-15)
+    # heights in steps coarser than their noise: the smoothing does not average the rounding
+    # out where every pixel around rounds alike (a flat surface, a dent's bottom)
+    sig_s = max(sig_s, lev.step / math.sqrt(12.0), 1e-15)
     return Surface(zl, valid, zs, was_nan, sig_s, lev, hm.dx, hm.dy, hm.source or "scan")
 
 
