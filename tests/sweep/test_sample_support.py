@@ -85,3 +85,61 @@ def test_a_study_file_names_the_bound_too(tmp_path) -> None:
     f.write_text(f.read_text().replace("std = 0.1 }", "std = 0.1, low = 0 }"))
     study = Study.from_toml(f)
     assert study.sample is not None and (study.sample.draw("mu", 0, 10) >= 0).all()
+
+
+@pytest.mark.parametrize(
+    ("inputs", "message"),
+    [
+        (  # the upper limit broken: named, with the truncation that keeps below it
+            {"mu": Normal(500.0, 100.0)},
+            r"mu must lie in \[0, 1000\], but its normal distribution draws values down to "
+            r"-329\.\d*; truncate it: low = 0$",
+        ),
+        (
+            {"mu": Normal(900.0, 20.0)},
+            r"draws values up to 1064\.\d*; truncate it: high = 1000$",
+        ),
+        (  # every draw past the upper limit: no truncation can help
+            {"mu": Normal(2000.0, 1.0)},
+            r"draws values from 1991\.7 to 2008\.\d*; move it inside: every value it draws lies "
+            r"above 1000$",
+        ),
+        (
+            {"vy": Uniform(1.0, 5.0)},
+            r"vy < 0 m/s with spin = 0\), but its uniform distribution draws values from 1 to "
+            r"5 m/s; keep low and high below 0 m/s$",
+        ),
+        ({"vy": Uniform(-1.0, 5.0)}, r"draws values up to 5 m/s; keep high below 0 m/s$"),
+        (
+            {"angle": Uniform(-0.1, 1.0)},
+            r"draws values down to -5\.7\d* deg; keep low above 0 deg$",
+        ),
+        (  # degrees given as radians: the hint a grid or fixed angle gets
+            {"angle": Uniform(20.0, 30.0)},
+            r"angle must lie in \(0, 90\] deg, but its uniform distribution draws values from "
+            r"1145\.9 to 1718\.9 deg; keep low and high at most 90 deg; if 20\.0 is meant in "
+            r"degrees, pass math\.radians\(20\.0\) = 0\.349066 rad or the string '20 deg'$",
+        ),
+        (
+            {"angle": Normal(45.0, 1.0)},
+            r"every value it draws lies above 90 deg; if 45\.0 is meant in degrees, pass "
+            r"math\.radians\(45\.0\) = 0\.785398 rad or the string '45 deg'$",
+        ),
+    ],
+)
+def test_the_message_names_the_bound_the_draws_break(inputs, message) -> None:
+    with pytest.raises(ValueError, match=message) as caught:
+        _study(**inputs)
+    assert "\n" not in str(caught.value)
+
+
+def test_a_study_file_angle_in_degrees_gets_the_hint(tmp_path) -> None:
+    """An angle distribution written with unit = "rad" but meant in degrees: the hint a grid
+    value gets, the same as in Python."""
+    f = tmp_path / "deg.toml"
+    f.write_text(
+        "[fixed]\nvy = -1.41\nmu = 0.3\n[sample]\nsize = 5\nseed = 1\n"
+        "angle = { dist = 'uniform', low = 20, high = 30, unit = 'rad' }\n"
+    )
+    with pytest.raises(ValueError, match=r"keep low and high at most 90 deg; if 20\.0 is meant"):
+        Study.from_toml(f)

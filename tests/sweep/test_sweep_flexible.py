@@ -14,6 +14,7 @@ import pytest
 import impactlab
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.dynamics.kernels import status as S
+from impactlab.schema import FIELDS
 from impactlab.sweep import Study, run_sweep
 
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "study-flexible.toml"
@@ -28,7 +29,7 @@ TABLE = {
     "outputs": {
         "keep": [
             *("e", "delta_p", "duration", "dent_depth", "sequence_sliding_length"),
-            *("sequence_duration", "sequence_mean_force", "regime"),
+            *("sequence_duration", "sequence_mean_force", "scar_length", "regime"),
         ]
     },
 }
@@ -54,11 +55,15 @@ def test_tiny_flexible_study(tmp_path: Path) -> None:
             assert float(case["sequence_mean_force"]) == r.sequence_mean_force
             assert float(case["sequence_duration"]) == r.sequence_duration
             assert float(case["sequence_sliding_length"]) == r.sequence_sliding_length
+            assert float(case["scar_length"]) == r.scar_length > 0
             assert math.isnan(float(case["delta_p"])) and math.isnan(float(case["duration"]))
             assert int(case["flags"]) == int(r.flags) and int(case["regime"]) == -1
             rigid = ds.sel(body="rod", friction=fr, angle=math.radians(th))
             assert float(rigid["e"]) != r.e and int(rigid["regime"]) >= 0
             assert float(rigid["delta_p"]) > 0 and math.isnan(float(rigid["dent_depth"]))
+            assert math.isnan(float(rigid["scar_length"]))  # its mark: |contact_travel|
+    spec = FIELDS["scar_length"]  # unit and meaning from the schema
+    assert ds["scar_length"].attrs == {"units": spec.unit, "long_name": spec.description}
 
 
 def test_rejected_cases_have_status(tmp_path: Path) -> None:
@@ -115,6 +120,32 @@ def test_a_sequence_total_without_a_drop_is_refused_by_name(tmp_path: Path) -> N
          "outputs": {"keep": ["e", "sequence_duration"]}}
     )  # fmt: skip
     with pytest.raises(ValueError, match=r"\['sequence_duration'\] are totals of a drop's"):
+        run_sweep(rigid, tmp_path / "r.zarr", quiet=True)
+
+
+def test_a_drop_study_keeps_the_mark_extent(tmp_path: Path) -> None:
+    """``scar_length`` (the x-extent of the tip's path over all its contacts) is an output a
+    study with a flexible rod keeps, by name, as its drop gives it; a rigid study asking for it
+    is told it is a drop's."""
+    table = {
+        "fixed": {"body": "flexible_rod", "mu": 0.2, "n_axial": 2, "n_bending": 4},
+        "grid": {"angle": ["20 deg", "45 deg"]},
+        "outputs": {"keep": ["e", "scar_length"]},
+    }
+    table["fixed"]["vy"] = -1.41
+    ds = run_sweep(Study.from_dict(table), tmp_path / "s.zarr", quiet=True).dataset.load()
+    assert [v for v in ds.data_vars if v in ("e", "scar_length")] == ["e", "scar_length"]
+    body = FlexibleRod.paper(n_axial=2, n_bending=4, axial_residual=True)
+    r = impactlab.simulate(
+        body, friction="coulomb", mu=0.2, angle=math.radians(45.0), velocity=(0.0, -1.41),
+        history=False,
+    )  # fmt: skip
+    assert float(ds["scar_length"].sel(angle=math.radians(45.0))) == r.scar_length > 0
+    rigid = Study.from_dict(
+        {"fixed": {"angle": "20 deg", "mu": 0.1}, "grid": {"vy": [-1.0, -2.0]},
+         "outputs": {"keep": ["e", "scar_length"]}}
+    )  # fmt: skip
+    with pytest.raises(ValueError, match=r"\['scar_length'\] are totals of a drop's"):
         run_sweep(rigid, tmp_path / "r.zarr", quiet=True)
 
 

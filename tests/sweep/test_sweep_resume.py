@@ -229,3 +229,25 @@ def test_store_cut_short_by_an_older_impactlab_is_recovered(tmp_path, fake) -> N
     assert (tmp_path / "other.zarr" / "mine").is_dir()
     names = ["bare.zarr", "half.zarr", "other.zarr", "partial.zarr", "ref.zarr"]
     assert sorted(p.name for p in tmp_path.iterdir()) == names
+
+
+def test_a_resume_records_the_edited_description(tmp_path) -> None:
+    """The description (and max_cases) is no part of the study's hash: a resume with another
+    writes it, and the store is the one an uninterrupted run of the edited study makes."""
+    edited = grid_study(description="changed words", max_cases=10_000)
+    ref = run_sweep(edited, tmp_path / "ref.zarr", evaluator=FakeEvaluator(), quiet=True)
+    store = tmp_path / "b.zarr"
+    with pytest.raises(RuntimeError, match="simulated crash"):
+        run_sweep(grid_study(), store, evaluator=CrashingEvaluator(after=4), quiet=True)
+    again = run_sweep(edited, store, evaluator=FakeEvaluator(), quiet=True)
+    assert again.stats.chunks_before == 4
+    assert open_sweep(store).attrs["description"] == "changed words"
+    assert store_files(store) == store_files(ref.path)
+    # a finished store resumed with another description records it too, and nothing else
+    done = run_sweep(grid_study(description="third"), store, evaluator=FakeEvaluator(),
+                     quiet=True)  # fmt: skip
+    assert done.stats.chunks_computed == 0
+    assert store_files(store) == store_files(
+        run_sweep(grid_study(description="third"), tmp_path / "r3.zarr",
+                  evaluator=FakeEvaluator(), quiet=True).path
+    )  # fmt: skip

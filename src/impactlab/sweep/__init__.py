@@ -33,6 +33,7 @@ from impactlab.sweep.options import EngineOptions, UncertaintySpec
 from impactlab.sweep.plots import SliceWarning, plot_output_map, plot_regime_map
 from impactlab.sweep.plotsweep import PlotSkipped, plot_plan, plot_sweep
 from impactlab.sweep.runner import (
+    FailedCasesWarning,
     FlaggedCasesWarning,
     SweepInterrupted,
     SweepResult,
@@ -67,6 +68,7 @@ __all__ = [
     "EngineEvaluator",
     "EngineOptions",
     "Evaluator",
+    "FailedCasesWarning",
     "FlaggedCasesWarning",
     "InputSpec",
     "Layout",

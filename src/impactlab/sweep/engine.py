@@ -130,9 +130,12 @@ def numba_cache_stats() -> dict[str, int]:
 #: one of them.
 DIAGNOSTIC_OUTPUTS = frozenset({"energy_rise", "friction_excess"})
 
-#: Store columns of a flexible drop's sequence totals (``impactlab.schema.SEQUENCE_FIELDS``):
-#: NaN for the rigid bodies' cases.
-SEQUENCE_OUTPUTS: tuple[str, ...] = tuple(f.name for f in SEQUENCE_FIELDS)
+#: Store columns of a flexible drop's sequence totals (``impactlab.schema.SEQUENCE_FIELDS``)
+#: and of the extent of its mark over all its contacts (``scar_length``, a ``DropResult`` field:
+#: ``schema.DROP_FIELDS``, whose unit and meaning the store takes): NaN for the rigid bodies'
+#: cases (the mark of one impact: its ``contact_travel``'s magnitude, as
+#: ``calibrate.models.predict`` reads it for a measured scar_length).
+SEQUENCE_OUTPUTS: tuple[str, ...] = (*(f.name for f in SEQUENCE_FIELDS), "scar_length")
 
 
 class EngineEvaluator:

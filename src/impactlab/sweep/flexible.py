@@ -15,12 +15,14 @@ refused when it is built, and in a study of several bodies the flexible rod leav
 (and a sphere's ``radius``) unset; a case that still gives them gets the status BAD_BODY.
 
 Outputs: the store keeps the engine's output fields and, for a study with a flexible rod, the
-drop's sequence totals (``impactlab.schema.SEQUENCE_FIELDS``); a flexible case fills those that
-the drop defines (``DROP_OUTPUTS``, each read for the whole sequence as ``DropResult``
-documents: e, dent_depth = final dent depth, sequence_sliding_length = the tip's total slip,
-sequence_duration = first touch to last separation, sequence_mean_force = P_n /
-sequence_duration, ...) and leaves the others NaN (-1 for integer outputs): a flexible case
-has no ``duration``, ``delta_p``, ``sliding_length`` or ``mean_force`` of one contact.
+drop's sequence totals (``impactlab.schema.SEQUENCE_FIELDS``) and scar_length
+(``engine.SEQUENCE_OUTPUTS``); a flexible case fills those that the drop defines
+(``DROP_OUTPUTS``, each read for the whole sequence as ``DropResult`` documents: e, dent_depth
+= final dent depth, sequence_sliding_length = the tip's total slip, sequence_duration = first
+touch to last separation, sequence_mean_force = P_n / sequence_duration, scar_length = the
+x-extent of the tip's contact-point path over all its contacts, ...) and leaves the others NaN
+(-1 for integer outputs): a flexible case has no ``duration``, ``delta_p``, ``sliding_length``
+or ``mean_force`` of one contact.
 Status: the sweep's rejection codes (``impactlab.sweep.status``) before the drop (a body whose
 modes cannot be built: BAD_BODY; an input the drop refuses, e.g. an approach speed below
 ``MIN_APPROACH_SPEED``: BAD_INPUT), and a failed drop with its own code from the one

@@ -6,8 +6,12 @@ vy, vx, spin, then the study's others: two or more give a regime map (over angle
 both are swept, with mu_c; else over the first two) and one map per output over the angle and
 a velocity, the angle and mu, or else the first two; one gives lines; a ``sample`` dimension
 gives histograms. Category dimensions (law, friction, ...) and further numeric ones are drawn as
-facets or sliced (``impactlab.sweep.plotgrid``). Nothing is skipped silently: a plot that cannot
-be drawn is named with its reason in a :class:`PlotSkipped` warning (and ``plot_plan``).
+facets or sliced (``impactlab.sweep.plotgrid``). The outputs drawn by default are one impact's
+(:data:`DEFAULT_PLOT_OUTPUTS`) and, where the store keeps them, a flexible rod's drop's
+(:data:`DROP_PLOT_OUTPUTS`); an output (or the regime) that no case of the store has a value
+of, such as the one-contact outputs of a study of flexible rods only, is not drawn. Nothing is
+skipped silently: a plot that cannot be drawn is named with its reason in a
+:class:`PlotSkipped` warning (and ``plot_plan``).
 """
 
 from __future__ import annotations
@@ -22,8 +26,10 @@ from typing import Any
 import numpy as np
 
 from impactlab._mpl import pyplot
+from impactlab.schema import RENAMED_DROP_FIELDS
 from impactlab.sweep.dimensions import SAMPLE_DIM
 from impactlab.sweep.filewrite import write_atomic
+from impactlab.sweep.flexible import MEASURED_AS
 from impactlab.sweep.inputs import OUTPUT_ALIASES
 from impactlab.sweep.plotgrid import EmptyPanel, SliceWarning, select, where
 from impactlab.sweep.plots import (
@@ -32,11 +38,28 @@ from impactlab.sweep.plots import (
     plot_output_map,
     plot_regime_map,
 )
+from impactlab.sweep.slabs import slabs, store_chunks
 
-__all__ = ["DEFAULT_PLOT_OUTPUTS", "PlotPlan", "PlotSkipped", "plot_plan", "plot_sweep"]
+__all__ = [
+    "DEFAULT_PLOT_OUTPUTS",
+    "DROP_PLOT_OUTPUTS",
+    "PlotPlan",
+    "PlotSkipped",
+    "plot_plan",
+    "plot_sweep",
+]
 
 #: The outputs ``plot_sweep`` maps unless told otherwise.
 DEFAULT_PLOT_OUTPUTS = ("e", "delta_p", "sliding_length", "duration")
+#: The outputs of a flexible rod's drop it maps as well unless told otherwise, where the store
+#: keeps them: its dent, its slip and the extent of its mark over all its contacts, and the
+#: duration of its sequence.
+DROP_PLOT_OUTPUTS = ("dent_depth", "sequence_sliding_length", "scar_length", "sequence_duration")
+#: A drop's output of the meaning of an impact's (``schema.RENAMED_DROP_FIELDS``,
+#: ``flexible.MEASURED_AS``): named where the impact's has no value.
+_DROP_COUNTERPART = {**RENAMED_DROP_FIELDS, **MEASURED_AS}
+#: At most this many cases of a store are read at a time to find whether an output has a value.
+_BLOCK_CASES = 1 << 20
 #: The order in which numeric grid dimensions become a map's axes.
 _AXIS_ORDER = ("angle", "mu", "vy", "vx", "spin")
 _VELOCITY_DIMS = ("vy", "vx", "spin")
@@ -76,22 +99,54 @@ def _map_axes(dims: list[str]) -> tuple[str, str]:
     return dims[0], dims[1]
 
 
+def has_value(ds: Any, name: str) -> bool:
+    """True when some case of ``ds`` has a value of ``name``: not NaN, or >= 0 for an integer
+    output (-1: no value); read a block at a time, up to the first value found."""
+    var = ds[name]
+    integer = np.issubdtype(var.dtype, np.integer)
+    for slab in slabs(tuple(var.shape), _BLOCK_CASES, store_chunks(ds)):
+        v = np.asarray(var[slab].values)
+        if (v >= 0).any() if integer else (~np.isnan(v)).any():
+            return True
+    return False
+
+
+def _no_value(ds: Any, name: str) -> str:
+    """Why output ``name`` of ``ds`` is not drawn: no case has a value of it."""
+    drop = _DROP_COUNTERPART.get(name)
+    instead = f"; a flexible rod's drop gives {drop}" if drop in ds.data_vars else ""
+    return f"{name}: no case of the store has a value of it{instead}"
+
+
 def plot_plan(
     ds: Any,
-    outputs: Sequence[str] = DEFAULT_PLOT_OUTPUTS,
+    outputs: Sequence[str] | None = None,
     sel: Mapping[str, Any] | None = None,
 ) -> PlotPlan:
-    """What :func:`plot_sweep` draws for ``ds`` and what it cannot, with the reasons."""
+    """What :func:`plot_sweep` draws for ``ds`` and what it cannot, with the reasons.
+
+    outputs : the outputs to map; default :data:`DEFAULT_PLOT_OUTPUTS` and those of
+        :data:`DROP_PLOT_OUTPUTS` the store keeps. An output no case has a value of is named
+        in ``skipped``, not drawn.
+    """
     plan = PlotPlan()
-    wanted = [OUTPUT_ALIASES.get(o, o) for o in outputs]
-    present = [o for o in wanted if o in ds.data_vars]
-    plan.skipped += [f"{o}: the study did not keep this output" for o in wanted if o not in present]
+    if outputs is None:
+        outputs = (*DEFAULT_PLOT_OUTPUTS, *(o for o in DROP_PLOT_OUTPUTS if o in ds.data_vars))
+    wanted = list(dict.fromkeys(OUTPUT_ALIASES.get(o, o) for o in outputs))
+    kept = [o for o in wanted if o in ds.data_vars]
+    plan.skipped += [f"{o}: the study did not keep this output" for o in wanted if o not in kept]
+    present = [o for o in kept if has_value(ds, o)]
+    plan.skipped += [_no_value(ds, o) for o in kept if o not in present]
     nums = _numeric_dims(ds)
     has_sample = SAMPLE_DIM in ds.dims
     msel = {SAMPLE_DIM: 0, **dict(sel or {})} if has_sample else sel
     if len(nums) >= 2:
         if "regime" not in ds.data_vars:
             plan.skipped.append("regime map: the study did not keep the output 'regime'")
+        elif not has_value(ds, "regime"):
+            plan.skipped.append(
+                "regime map: no case of the store has a regime (a flexible rod's drop has none)"
+            )
         else:
             rx, ry = ("angle", "mu") if "angle" in nums and "mu" in nums else (nums[0], nums[1])
             plan.plots.append(
@@ -137,12 +192,14 @@ def plot_sweep(
     ds: Any,
     outdir: str | Path,
     *,
-    outputs: Sequence[str] = DEFAULT_PLOT_OUTPUTS,
+    outputs: Sequence[str] | None = None,
     sel: Mapping[str, Any] | None = None,
 ) -> list[Path]:
     """Write every plot the sweep's dimensions allow into ``outdir`` (PNG); returns the files.
 
-    The maps and lines follow the swept numeric inputs (module docstring); a 'sample'
+    The maps and lines follow the swept numeric inputs (module docstring), of ``outputs``
+    (default: :func:`plot_plan`'s, a flexible rod's drop's included where the store keeps
+    them; an output no case has a value of is not drawn); a 'sample'
     dimension adds histograms (of a grid+sample study: of one grid point, the first or the one
     in ``sel``, named in the title). Two further dimensions are drawn as facets; maps of a
     grid+sample study show the sample index in ``sel`` (``{"sample": 3}``; default: the

@@ -36,6 +36,7 @@ from impactlab.sweep.study_record import recorded_study
 
 __all__ = [
     "mismatch_message",
+    "record_presentation",
     "repair_metadata",
     "restore_study_record",
     "root_mismatch",
@@ -226,3 +227,21 @@ def restore_study_record(path: Path, study: Study, meta: StoreMeta) -> None:
         return
     if isinstance(attrs, dict) and attrs.get("study_hash") == meta.study_hash:
         write_study_record(path, study)
+
+
+def record_presentation(path: Path, study: Study) -> None:
+    """Record ``study`` in the store at ``path`` that holds it (same hash) where its record
+    differs in what is no part of the hash (the description, ``max_cases``): the root's
+    attributes ``description`` and ``study``, ``.sweep/study.json`` and the consolidated
+    metadata written as a fresh store of ``study`` has them, so that a resumed store is the
+    store of an uninterrupted run of the study that finished it. The caller holds the lock."""
+    text = json.dumps(study.to_dict(), indent=1, sort_keys=True) + "\n"
+    try:
+        if (path / META / "study.json").read_text() == text:
+            return
+    except (OSError, UnicodeDecodeError):
+        pass  # gone or unreadable: written again below
+    group = zarr.open_group(str(path), mode="r+")
+    group.attrs.update({"description": study.description, "study": study.to_json()})
+    write_study_record(path, study)
+    consolidate(path)

@@ -9,7 +9,7 @@ from pathlib import Path
 from typing import Any
 
 from impactlab._display import format_number
-from impactlab.sweep.display import results_text, sweep_result_html
+from impactlab.sweep.display import no_result, results_text, sweep_result_html
 from impactlab.sweep.store import SweepStore, open_sweep
 from impactlab.sweep.study import Study
 
@@ -54,6 +54,19 @@ class SweepStats:
         """Cases of the store whose result is not ok: a flag that is not advisory (energy gain,
         beyond the tip, ...; ``flagged`` names them)."""
         return int(self.flagged.get("not ok", 0))
+
+    @property
+    def failed(self) -> int:
+        """Cases of the store without a result: refused or failed (a status > 0; ``status``
+        names why). A run none of whose cases succeeded (``succeeded == 0``) warns
+        (``FailedCasesWarning``), as the command line exits with status 2."""
+        return no_result(self)
+
+    @property
+    def succeeded(self) -> int:
+        """Cases of the store the engine ran to their end (status 0, ``"0: finished"``; whether
+        their result is ok, ``not_ok`` says)."""
+        return sum(n for k, n in self.status.items() if k.partition(":")[0].strip() == "0")
 
     @property
     def throughput(self) -> float:

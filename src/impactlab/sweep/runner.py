@@ -69,6 +69,13 @@ class FlaggedCasesWarning(UserWarning):
     plain success (``SweepStats.flagged`` counts them)."""
 
 
+class FailedCasesWarning(FlaggedCasesWarning):
+    """No case of a sweep succeeded: every case was refused or failed (no status 0;
+    ``SweepStats.failed`` counts them, ``SweepStats.status`` names why). A
+    :class:`FlaggedCasesWarning`, so that a filter of those covers it (the command line says it
+    in its own line and exits with status 2)."""
+
+
 class SweepInterrupted(KeyboardInterrupt):
     """The sweep stopped early (Ctrl-C, or SIGTERM: ``terminated``); the finished chunks are
     stored. ``args[0]``: the line that says how many; ``said``: whether it was printed already
@@ -162,7 +169,9 @@ def run_sweep(
     worker_timeout : Dask: seconds without any worker on the cluster before the sweep stops with
         an error (the finished chunks stay stored).
 
-    Warns once (``FlaggedCasesWarning``) when the store holds cases not ok (``stats.flagged``).
+    Warns once (``FlaggedCasesWarning``) when the store holds cases not ok (``stats.flagged``),
+    and once (``FailedCasesWarning``) when no case succeeded (``stats.succeeded == 0``: every
+    case refused or failed, ``stats.failed`` of them).
     A store that cannot be written (a full disk) raises ``backends.StoreWriteError`` (an
     OSError) saying how many chunks are stored; the same call then continues.
     """
@@ -218,6 +227,16 @@ def run_sweep(
                 f"sweep {st.name!r} in {str(path)!r}: {not_ok_text(stats.flagged)}: stored, but "
                 f"not plain success (impactlab.flags.ResultFlag); the ok cases: (ds.status == 0) "
                 f"& ((ds.flags & ~ADVISORY_FLAGS) == 0); impactlab sweep info {path} counts them"
+            ),
+            stacklevel=2,
+        )
+    if stats.failed and not stats.succeeded:
+        parts = "; ".join(f"{n} with status {key}" for key, n in stats.status.items() if n)
+        warnings.warn(
+            FailedCasesWarning(
+                f"sweep {st.name!r} in {str(path)!r}: no case succeeded: {stats.failed} case(s) "
+                f"refused or failed ({parts}); the store keeps their status, whose meaning is "
+                f"in ds.attrs['status_messages']; impactlab sweep info {path} counts them"
             ),
             stacklevel=2,
         )

@@ -51,6 +51,7 @@ from impactlab.sweep.integrity import (
 from impactlab.sweep.locking import acquire_lock, release_lock, write_lock
 from impactlab.sweep.repair import (
     mismatch_message,
+    record_presentation,
     repair_metadata,
     restore_study_record,
     root_mismatch,
@@ -223,6 +224,7 @@ class SweepStore:
             if old == meta.study_hash and not restart:
                 self.clean_partial()
                 rewrite_defined_arrays(self.path, study)  # a coordinate's file gone or cut
+                record_presentation(self.path, study)  # an edited description: this one's
                 return self.done_chunks()
             if not restart:
                 self.release()

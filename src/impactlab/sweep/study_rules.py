@@ -20,6 +20,7 @@ from collections.abc import Mapping, Sequence
 
 import numpy as np
 
+from impactlab.dynamics.input_checks import degrees_hint
 from impactlab.sweep.dimensions import (
     ALLOWED,
     ANGLE,
@@ -27,12 +28,12 @@ from impactlab.sweep.dimensions import (
     Interval,
     Sample,
     Value,
-    inside,
     rule_text,
     shown_values,
 )
 from impactlab.sweep.distributions import Distribution, Uniform
 from impactlab.sweep.flexible import FLEXIBLE_BODY
+from impactlab.sweep.value_rules import looks_like_degrees
 
 __all__ = ["IGNORED_BY", "UNIFORM_EXTREMES", "check_study_rules", "unset_ignored"]
 
@@ -91,7 +92,9 @@ def check_study_rules(
 
 
 def _check_draws(name: str, dist: Distribution, rule: Interval) -> None:
-    """ValueError unless every value ``dist`` can draw for input ``name`` lies in ``rule``."""
+    """ValueError unless every value ``dist`` can draw for input ``name`` lies in ``rule``: it
+    names the bound the draws break (low or high, and its value) and how to keep the
+    distribution inside it, with the degrees hint a grid or fixed angle gets (``_degrees``)."""
     what = (
         "the contact point must approach the flat (vy < 0 m/s with spin = 0)"
         if rule is _APPROACH
@@ -103,24 +106,52 @@ def _check_draws(name: str, dist: Distribution, rule: Interval) -> None:
             "put it on the [grid]"
         )
     low, high = (float(v) for v in dist.ppf(UNIFORM_EXTREMES))
-    for x, lower in ((low, True), (high, False)):
-        if inside(x, rule):
+    for lower in (True, False):
+        x, other = (low, high) if lower else (high, low)
+        if not _past(x, rule, lower):
             continue
-        key = "low" if lower else "high"
-        (text, bound), unit = shown_values(name, [x, rule[0] if lower else rule[1]])
+        (low_t, high_t, bound), unit = shown_values(name, [low, high, rule[0 if lower else 1]])
         u = f" {unit}" if unit else ""
+        key = "low" if lower else "high"
         closed = rule[2] if lower else rule[3]  # the bound itself is allowed
-        if isinstance(dist, Uniform):
-            fix = f"keep {key} {'at least' if lower else 'at most'} {bound}{u}"
-            fix = fix if closed else f"keep {key} {'above' if lower else 'below'} {bound}{u}"
-        else:
-            side = "above" if lower else "below"
+        side = ("at least" if lower else "at most") if closed else ("above" if lower else "below")
+        if _past(other, rule, lower):  # every value it draws lies past the bound
+            drawn = f"from {low_t} to {high_t}{u}"
             fix = (
-                f"truncate it: {key} = {bound}{u}"
+                f"keep low and high {side} {bound}{u}"
+                if isinstance(dist, Uniform)
+                else f"move it inside: every value it draws lies {'below' if lower else 'above'} "
+                f"{bound}{u}"
+            )
+        else:
+            drawn = f"{'down' if lower else 'up'} to {low_t if lower else high_t}{u}"
+            fix = (
+                f"keep {key} {side} {bound}{u}"
+                if isinstance(dist, Uniform)
+                else f"truncate it: {key} = {bound}{u}"
                 if closed
                 else f"truncate it: {key} {side} {bound}{u}"
             )
         raise ValueError(
             f"sample input {name!r}: {what}, but its {dist.kind} distribution draws values "
-            f"{'down' if lower else 'up'} to {text}{u}; {fix}"
+            f"{drawn}; {fix}{_degrees(name, dist, lower)}"
         )
+
+
+def _past(x: float, rule: Interval, lower: bool) -> bool:
+    """True when ``x`` lies past the low (``lower``) or the high bound of ``rule``."""
+    lo, hi, lo_in, hi_in, _ = rule
+    if lower:
+        return not (x >= lo if lo_in else x > lo)
+    return not (x <= hi if hi_in else x < hi)
+
+
+def _degrees(name: str, dist: Distribution, lower: bool) -> str:
+    """The degrees hint of a grid or fixed angle (``value_rules.check_rod_angles``) for an
+    angle distribution whose draws pass 90 deg: its first parameter that reads as degrees (a
+    uniform's low, a normal's mean); "" otherwise."""
+    if name != "angle" or lower:
+        return ""
+    params = [v for k, v in dist.to_dict().items() if k != "dist"]
+    th = next((float(v) for v in params if looks_like_degrees(v)), None)
+    return "" if th is None else degrees_hint(th)
