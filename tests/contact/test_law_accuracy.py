@@ -95,6 +95,7 @@ def _synthetic_case(law: str, maxima_ratio: list[float]) -> dict:
             "yield_strength": m.yield_strength,
             "brinell_hardness": m.brinell_hardness,
             "meyer_index": m.meyer_index,
+            "density": m.density,
         }
 
     runs = []

@@ -16,12 +16,13 @@ import difflib
 import math
 import re
 import sys
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 from impactlab._validation import value_text
 
-if TYPE_CHECKING:
-    from impactlab.materials.core import Material
+#: A material (``impactlab.materials.core.Material``), typed loosely here: ``core`` imports this
+#: module, so this module does not import ``core``.
+Material = Any
 
 #: Two values of a material are the same when they agree to this relative tolerance
 #: (``math.isclose``): 1 part in 10^7, far below any source's precision (3 or 4 significant
