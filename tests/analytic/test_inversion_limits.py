@@ -62,6 +62,29 @@ def test_many_rejected_samples_warn_with_the_count_used() -> None:
     assert "mc_used" in res.to_dict() and f"({res.mc_used} used)" in str(res)
 
 
+def test_samples_discarded_for_e_above_1_are_named_as_such(cli_main: CliMain) -> None:
+    # e = 1.02 +- 0.01 is read as 1 +- 0.01: half of e's samples lie above 1, none sticks
+    code, _, err = cli_main(*PAPER_20_ARGS, "--e", "1.02", "--sigma-e", "0.01")
+    assert code == 0
+    rejected = [w for w in err.splitlines() if "Monte Carlo samples were discarded" in w]
+    assert len(rejected) == 1, err
+    assert "(more than 5%): 48.3% drew e > 1 (e = 1 +- 0.01 lies at the physical limit" in err
+    assert "truncated to [0, 1]" in err and "sticking" not in rejected[0]
+    assert "check the sigmas" not in err
+
+
+def test_each_cause_of_discarded_samples_has_its_share() -> None:
+    with pytest.warns(il.ImplausibleInputWarning) as rec:
+        res = _invert(mu=(0.2, 0.3), e=(0.95, 0.2))
+    text = next(str(w.message) for w in rec if "samples were discarded" in str(w.message))
+    causes = text.split(": ", 1)[1].split(". ")[0]
+    shares = [float(part.split("%")[0]) for part in causes.split("; ")]
+    assert len(shares) == 3 and "drew e > 1 (e = 0.95 +- 0.2 lies 0.25 sigma inside" in text
+    assert "fell in the sticking regime" in text and "drew mu < 0" in text
+    assert sum(shares) == pytest.approx(100 * res.mc_rejected, abs=0.2)  # each counted once
+    assert "check the sigmas" in text
+
+
 def test_zero_dent_is_refused_and_a_shallow_one_warned() -> None:
     with pytest.raises(ValueError, match="below 1 nm"):
         _invert(delta_p=0.0)
@@ -88,12 +111,13 @@ def test_cli_rejected_samples_warn_in_text_and_json(cli_main: CliMain) -> None:
     code, out, err = cli_main(*PAPER_20_ARGS, "--sigma-mu", "0.19")
     assert code == 0
     assert "mc_used" in out and "note:" not in out  # the warning says it, on stderr
-    assert err.startswith("warning: ") and "Monte Carlo samples fell in the sticking" in err
+    assert err.startswith("warning: ") and "Monte Carlo samples were discarded" in err
+    assert "fell in the sticking regime (alpha >= 0)" in err and "check the sigmas" in err
     code, out, err = cli_main(*PAPER_20_ARGS, "--sigma-mu", "0.19", "--json")
     data = json.loads(out)
     assert code == 0 and data["n_samples"] == 2000 and isinstance(data["mc_used"], int)
     assert data["mc_used"] == round(2000 * (1.0 - data["mc_rejected"]["value"]))
-    assert any("Monte Carlo samples fell in the sticking" in w for w in data["warnings"])
+    assert any("% fell in the sticking regime" in w for w in data["warnings"])
     assert "Monte Carlo samples" in err
 
 

@@ -40,3 +40,26 @@ def test_every_named_attribute_exists() -> None:
             else:
                 obj = getattr(obj, part)
     assert not missing, f"README names what impactlab does not have: {missing}"
+
+
+def test_the_help_lists_every_exit_status_of_the_readme() -> None:
+    """The README's "Exit status" table says ``impactlab --help`` lists the same: every status
+    it names (143 too) and every case it adds to one (a sweep in which no case succeeded, a
+    ``sweep run --plot`` that failed after the sweep was stored) is in the help."""
+    from typer.testing import CliRunner
+
+    from impactlab.cli import app
+
+    text = README.read_text()
+    section = text[text.index("## Exit status") :].split("\n## ", 1)[0]
+    assert "`impactlab --help` lists the same" in section
+    statuses = set(re.findall(r"^\| (\d+) \|", section, re.M)) | set(
+        re.findall(r"exits (\d+)", section)
+    )
+    assert statuses == {"0", "1", "2", "130", "143"}
+    result = CliRunner().invoke(app, ["--help"], terminal_width=200)
+    help_ = " ".join(result.output.split()).split("Exit status: ", 1)[1].split("Options:")[0]
+    for status in statuses:
+        assert re.search(rf"(?:^|; ){status} ", help_), (status, help_)
+    for case in ("no case succeeded", "sweep run --plot", "stored", "SIGTERM", "Ctrl-C"):
+        assert case in help_ and case in " ".join(section.split()), case

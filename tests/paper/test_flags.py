@@ -123,8 +123,8 @@ def test_cli_prints_flag_count_and_wording(tmp_path, monkeypatch, capsys, simula
     cli_reproduce.reproduce_cmd(out=str(tmp_path / "o"), no_simulate=not simulate)
     out = capsys.readouterr().out
     assert (
-        "1 published number not reproduced within the stated tolerances "
-        "(explained in Section 5 of the report)"
+        "0 published numbers reproduced within the stated tolerances, 0 undecided (the "
+        "printed digits allow either), 1 not reproduced (explained in Section 5 of the report)"
     ) in out
     assert "(within the tolerances)" not in out
     line = (

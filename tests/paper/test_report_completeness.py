@@ -9,6 +9,7 @@ beside the calibration's fitted damping."""
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 import pandas as pd
 import pytest
@@ -20,6 +21,8 @@ from impactlab.paper import reproduction as R
 from impactlab.paper.physics import E_COLUMN, SCAR_COLUMN
 from impactlab.paper.physics_words import damped
 
+#: the repository root (the tutorials quote the command's lines)
+ROOT = Path(__file__).resolve().parents[2]
 CS = "flexible rod + rate-dependent flat (Cowper-Symonds, upper estimate)"
 FE_HARD = "flexible rod + FE-tabulated law (hardening flat)"
 
@@ -99,6 +102,13 @@ def test_without_the_simulations_the_numbers_not_compared_are_counted(analytic):
     assert Q.not_reproduced_line(19) == (
         "19 published numbers not reproduced within the stated tolerances (explained in "
         "Section 5 of the report)"
+    )
+    # the command's line counts the UNDECIDED 20 deg T apart: neither reproduced nor not
+    assert Q.verdict_counts(analytic.comparison) == (2, 1)
+    assert Q.summary_line(analytic.comparison) == (
+        "2 published numbers reproduced within the stated tolerances, 1 undecided (the printed "
+        "digits allow either), 1 not reproduced, and 34 not compared: the simulations were "
+        "skipped (--no-simulate; Section 5 of the report lists them)"
     )
     text = analytic.report_md.read_text()
     one = _section(text, 1)
@@ -215,10 +225,27 @@ def test_the_damped_sentence_follows_the_calibration():
 
 
 def test_the_command_counts_the_numbers_not_compared(analytic, tmp_path, monkeypatch, capsys):
-    """``impactlab reproduce --no-simulate`` prints both counts (it printed only "1 published
-    number not reproduced ...")."""
+    """``impactlab reproduce --no-simulate`` prints every count: reproduced, UNDECIDED, not
+    reproduced and not compared (it printed only "1 published number not reproduced ...")."""
     import impactlab.cli.reproduce as cli_reproduce
 
     monkeypatch.setattr(R, "reproduce", lambda out, simulate: analytic)
     cli_reproduce.reproduce_cmd(out=str(tmp_path / "o"), no_simulate=True)
-    assert Q.not_reproduced_line(1, 34) in capsys.readouterr().out.splitlines()
+    assert Q.not_reproduced_line(1, 34, 2, 1) in capsys.readouterr().out.splitlines()
+
+
+def test_the_full_runs_summary_counts_each_verdict(full_reproduction):
+    """With the simulations every published number compared is counted once, under one of
+    reproduced, UNDECIDED (the 20 deg experimental T) and not reproduced."""
+    assert Q.summary_line(full_reproduction.comparison) == (
+        "17 published numbers reproduced within the stated tolerances, 1 undecided (the "
+        "printed digits allow either), 19 not reproduced (explained in Section 5 of the report)"
+    )
+
+
+def test_the_tutorial_quotes_the_commands_summary_line(analytic, full_reproduction):
+    """docs/tutorials/reproduce.md quotes the command's count line of both runs."""
+    page = " ".join((ROOT / "docs" / "tutorials" / "reproduce.md").read_text().split())
+    assert f"`{Q.summary_line(full_reproduction.comparison)}`" in page
+    quiet = Q.summary_line(analytic.comparison)
+    assert f"`{quiet.split(': the simulations')[0]}: ...`" in page

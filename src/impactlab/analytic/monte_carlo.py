@@ -25,9 +25,10 @@ __all__ = [
 ]
 
 #: A Monte Carlo that discards more than this share of its samples (sticking regime or out of
-#: range) draws an ImplausibleInputWarning: its mean and spread then describe a truncated
-#: distribution, not the measurement's. Any sample in the sticking regime draws another (the
-#: heavy tail of T, ``monte_carlo``).
+#: range) draws an ImplausibleInputWarning naming each cause with its share: its mean and
+#: spread then describe a truncated distribution, not the measurement's (for e drawn outside
+#: [0, 1] alone: e's distribution truncated to its physical range). Any sample in the
+#: sticking regime draws another (the heavy tail of T, ``monte_carlo``).
 MC_REJECTED_WARNING = 0.05
 #: A Monte Carlo standard deviation below this fraction of its mean is rounding (T when only
 #: dv_cy is uncertain, which T does not depend on) and is reported as 0.
@@ -51,7 +52,8 @@ def monte_carlo(
     """Means, standard deviations, medians, 95 % intervals (``MC_INTERVAL`` percentiles), the
     rejected fraction and the number of samples kept of ``n`` samples of the inputs ``meas``
     (at least one with a sigma), T and F from ``core``; ImplausibleInputWarning
-    when more than ``MC_REJECTED_WARNING`` of them are discarded, when any falls in the
+    when more than ``MC_REJECTED_WARNING`` of them are discarded (each cause with its share:
+    :func:`_causes`; which samples are discarded is ``core``'s rule), when any falls in the
     sticking regime or reaches vt_in >= |alpha| |v_i| (``abs_alpha`` = |alpha| at the nominal
     inputs; the spread of T is then unreliable: :func:`_warn_heavy_tail`, :func:`_warn_pole`),
     and where samples with vt_in > 0 move T's median or interval (:func:`_check_reversal`).
@@ -74,12 +76,7 @@ def monte_carlo(
             "range: the uncertainties are too large for this inversion"
         )
     if rejected > MC_REJECTED_WARNING:
-        warn_implausible(
-            f"{rejected:.1%} of the {n} Monte Carlo samples fell in the sticking regime or out "
-            f"of range and were discarded (more than {MC_REJECTED_WARNING:.0%}): T_mc and F_mc "
-            f"rest on the {Tv.size} kept, a truncated distribution; the uncertainties given are "
-            "too large for this inversion, check the sigmas"
-        )
+        _warn_rejected(rejected, n, int(Tv.size), _causes(meas, samples, ok, stuck, past))
     n_stuck = int(np.count_nonzero(stuck))
     if n_stuck:
         _warn_heavy_tail(n_stuck, n)
@@ -125,6 +122,72 @@ def _spread(x: Any) -> float:
     """The sample standard deviation of ``x``, 0 where it is rounding (``SPREAD_ROUNDING``)."""
     sigma = float(np.std(x, ddof=1))
     return 0.0 if sigma <= SPREAD_ROUNDING * abs(float(np.mean(x))) else sigma
+
+
+def _causes(
+    meas: Mapping[str, Measured], samples: Mapping[str, Any], ok: Any, stuck: Any, past: Any
+) -> list[tuple[int, str]]:
+    """``(count, why)`` for the discarded samples (not ``ok``), each counted under the first
+    of its causes: the sticking regime, the pole of Eq. 12 in vt_in, an input drawn outside
+    its range (e outside [0, 1] where F comes from e, dv_cy <= 0, a magnitude <= 0, ...), and
+    what remains (no finite T or F). The rule that discards them is ``_core``'s; this only
+    names it."""
+    left = ~np.asarray(ok)
+    found: list[tuple[int, str]] = []
+
+    def take(mask: Any, why: str) -> None:
+        nonlocal left
+        hit = left & np.broadcast_to(mask, left.shape)
+        if hit.any():
+            found.append((int(np.count_nonzero(hit)), why))
+            left = left & ~hit
+
+    take(stuck, "fell in the sticking regime (alpha >= 0)")
+    take(past, "reached the pole of Eq. 12 (vt_in >= |alpha| |v_i|)")
+    e = meas.get("e")
+    if e is not None and e.sigma > 0.0 and "dv_cy" not in samples:  # F from e
+        take(samples["e"] > 1.0, f"drew e > 1 ({_at_limit('e', e, 1.0)})")
+        take(samples["e"] < 0.0, f"drew e < 0 ({_at_limit('e', e, 0.0)})")
+    if "dv_cy" in samples:
+        take(samples["dv_cy"] <= 0.0, "drew dv_cy <= 0 (the rod not pushed up)")
+    take(samples["mu"] < 0.0, "drew mu < 0")
+    take(samples["v_i"] <= 0.0, "drew |v_i| <= 0")
+    take(samples["delta_p"] < 0.0, "drew |delta_p| < 0")
+    take(samples["sliding_length"] <= 0.0, "drew |sliding_length| <= 0")
+    angle = samples["angle"]
+    take((angle < 0.0) | (angle > 0.5 * math.pi), "drew an angle outside [0, 90] deg")
+    take(True, "gave no finite, positive T or F")
+    return found
+
+
+def _at_limit(name: str, x: Measured, limit: float) -> str:
+    """``"e = 1 +- 0.01 lies at the physical limit e <= 1"`` or ``"... 2 sigma inside ..."``."""
+    side = "<=" if limit >= x.value else ">="
+    k = abs(limit - x.value) / x.sigma
+    where = "at" if k < 0.05 else f"{k:.2g} sigma inside"
+    given = f"{name} = {x.value:.4g} +- {x.sigma:.2g}"
+    return f"{given} lies {where} the physical limit {name} {side} {limit:g}"
+
+
+def _warn_rejected(rejected: float, n: int, kept: int, causes: list[tuple[int, str]]) -> None:
+    """ImplausibleInputWarning: more than ``MC_REJECTED_WARNING`` of the ``n`` samples were
+    discarded, with the share of each cause (:func:`_causes`). Where all of them drew e outside
+    [0, 1] the kept samples are e's distribution truncated to its physical range (what F_mc
+    then describes); otherwise the sigmas given are too wide for this inversion."""
+    shares = "; ".join(f"{c / n:.1%} {why}" for c, why in causes)
+    only_e = all(why.startswith(("drew e > 1", "drew e < 0")) for _, why in causes)
+    advice = (
+        f"T_mc and F_mc rest on the {kept} kept: e's distribution truncated to [0, 1], its "
+        "physical range (the first-order sigma of F does not truncate it); the sigmas are not "
+        "too wide, e lies near its limit"
+        if only_e
+        else f"T_mc and F_mc rest on the {kept} kept, a truncated distribution; the "
+        "uncertainties given are too large for this inversion, check the sigmas"
+    )
+    warn_implausible(
+        f"{rejected:.1%} of the {n} Monte Carlo samples were discarded (more than "
+        f"{MC_REJECTED_WARNING:.0%}): {shares}. {advice}"
+    )
 
 
 def _warn_heavy_tail(n_stuck: int, n: int) -> None:

@@ -121,7 +121,8 @@ class InversionResult:
     ``F_interval_mc`` (the central 95 %: 2.5 and 97.5 percentiles, :data:`MC_INTERVAL`; with
     samples in the sticking regime T's mean and standard deviation are unreliable, its median
     and interval are not), ``mc_rejected`` (fraction of samples that fell in
-    the sticking regime or out of range and were discarded), ``mc_used`` (the number of samples
+    the sticking regime or out of range, e.g. e outside [0, 1], and were discarded; above 5 %
+    a warning names each cause with its share), ``mc_used`` (the number of samples
     kept; 0 where no input has a sigma: nothing is drawn, and the Monte Carlo values are the
     nominal ones), ``n_samples`` (the samples asked for), ``seed``; ``alpha``,
     ``K_x``, ``K_y`` [1/kg], ``mu_c``; ``force_method`` ("momentum" for Eq. 29 with dv_cy, else
@@ -203,7 +204,8 @@ class InversionResult:
             return ""
         return (
             f"{self.mc_rejected:.2%} of the {self.n_samples} Monte Carlo samples fell in the "
-            f"sticking regime or out of range and were discarded ({self.mc_used} used)"
+            "sticking regime or out of range (e.g. e outside [0, 1]) and were discarded "
+            f"({self.mc_used} used)"
         )
 
     def _rows(self) -> list[tuple[str, str, str]]:

@@ -148,5 +148,6 @@ def print_inversion(res: InversionResult, doubts: Sequence[str] = ()) -> None:
     if uncertain and 0 < res.mc_rejected <= MC_REJECTED_WARNING:
         typer.echo(
             f"note: {res.mc_rejected:.2%} of the {res.n_samples} Monte Carlo samples fell in the "
-            f"sticking regime or out of range and were discarded ({res.mc_used} used)"
+            "sticking regime or out of range (e.g. e outside [0, 1]) and were discarded "
+            f"({res.mc_used} used)"
         )

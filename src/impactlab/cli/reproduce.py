@@ -23,10 +23,9 @@ def reproduce_cmd(
     Example: impactlab reproduce --out reproduction
     """
     from impactlab.paper.quantities import (  # lazy: a fast start
-        comparison_counts,
         duration_checks,
         extrapolation_line,
-        not_reproduced_line,
+        summary_line,
     )
     from impactlab.paper.reproduction import prepare_output, reproduce
 
@@ -34,8 +33,8 @@ def reproduce_cmd(
     res = reproduce(prepare_output(out, "--out"), simulate=not no_simulate)
     for c in duration_checks(res.experimental):
         typer.echo(c.text())
-    # the numbers not reproduced, and (--no-simulate) those not compared
-    typer.echo(not_reproduced_line(*comparison_counts(res.comparison)))
+    # the numbers reproduced, undecided, not reproduced and (--no-simulate) not compared
+    typer.echo(summary_line(res.comparison))
     if not no_simulate:
         typer.echo(extrapolation_line(res.simulations))
     if no_simulate:

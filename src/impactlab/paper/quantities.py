@@ -136,18 +136,47 @@ def comparison_counts(comparison: pd.DataFrame) -> tuple[int, int]:
     return len(bad.drop_duplicates(PUBLISHED_KEY)), len(skipped.drop_duplicates(PUBLISHED_KEY))
 
 
-def not_reproduced_line(n: int, not_compared: int = 0) -> str:
-    """The reproduce command's line on the published numbers not reproduced (``n`` of them),
-    singular or plural as ``n`` asks, and on the ``not_compared`` ones (simulations skipped)
-    when there are any (``comparison_counts`` gives both)."""
-    what = "published number" if n == 1 else "published numbers"
-    line = f"{n} {what} not reproduced within the stated tolerances"
+def verdict_counts(comparison: pd.DataFrame) -> tuple[int, int]:
+    """(published numbers reproduced, published numbers UNDECIDED: the printed digits allow
+    either) in a comparison table, each number once as in ``comparison_counts``; a number
+    within its tolerance but not counted as reproduced (``COINCIDENCE``) is neither."""
+    good = comparison[comparison["reproduced"] == True]  # noqa: E712
+    undecided = comparison.iloc[:0]
+    if "verdict" in comparison.columns:
+        undecided = comparison[comparison["verdict"] == UNDECIDED]
+    return len(good.drop_duplicates(PUBLISHED_KEY)), len(undecided.drop_duplicates(PUBLISHED_KEY))
+
+
+def not_reproduced_line(
+    n: int, not_compared: int = 0, reproduced: int | None = None, undecided: int = 0
+) -> str:
+    """The reproduce command's line on the published numbers: ``reproduced`` (where given)
+    and ``undecided`` ones first, then those not reproduced (``n``), singular or plural as the
+    first count asks, and the ``not_compared`` ones (simulations skipped) when there are any
+    (``comparison_counts`` and ``verdict_counts`` give them)."""
+    if reproduced is None:
+        what = "published number" if n == 1 else "published numbers"
+        line = f"{n} {what} not reproduced within the stated tolerances"
+    else:
+        what = "published number" if reproduced == 1 else "published numbers"
+        line = (
+            f"{reproduced} {what} reproduced within the stated tolerances, {undecided} "
+            f"undecided (the printed digits allow either), {n} not reproduced"
+        )
     if not not_compared:
         return f"{line} (explained in Section 5 of the report)"
     return (
         f"{line}, and {not_compared} not compared: the simulations were skipped "
-        "(--no-simulate; Section 5 of the report lists both)"
+        "(--no-simulate; Section 5 of the report lists them)"
     )
+
+
+def summary_line(comparison: pd.DataFrame) -> str:
+    """The reproduce command's line: how many published numbers ``comparison`` reproduces,
+    leaves UNDECIDED, does not reproduce and does not compare (``not_reproduced_line``)."""
+    n_bad, n_skipped = comparison_counts(comparison)
+    good, undecided = verdict_counts(comparison)
+    return not_reproduced_line(n_bad, n_skipped, good, undecided)
 
 
 #: The column of a published L_s relative to Eq. 12 on its own row (published / Eq. 12 - 1).
