@@ -148,7 +148,10 @@ def run_processes(job: Job, workers: int, max_in_flight: int | None) -> None:
             if lost:
                 raise BrokenProcessPool
     except BrokenProcessPool:
-        ex.shutdown(wait=False, cancel_futures=True)
+        # a broken pool has its workers terminated already: wait for them, so that what they
+        # print as they die (a script without the main guard: its traceback) comes before the
+        # error, which is then the last line on stderr
+        ex.shutdown(wait=True, cancel_futures=True)
         raise _lost(job, stored) from None
     except BaseException:
         ex.shutdown(wait=False, cancel_futures=True)
