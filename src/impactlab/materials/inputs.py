@@ -210,21 +210,49 @@ def _label(fields: Mapping[str, Any]) -> str:
     return f"custom ({', '.join(parts)})"
 
 
+def _items(text: str, where: str) -> list[str]:
+    """``text`` split at each ``,`` or ``;`` outside quotes (``'...'`` or ``"..."``)."""
+    items, start, quote = [], 0, ""
+    for i, ch in enumerate(text):
+        if quote:
+            quote = "" if ch == quote else quote
+        elif ch in "'\"":
+            quote = ch
+        elif ch in ",;":
+            items.append(text[start:i])
+            start = i + 1
+    if quote:
+        raise ValueError(f"{where}: a {quote} opened in {text!r} is not closed")
+    return [*items, text[start:]]
+
+
+def _unquoted(value: str) -> str:
+    """``value`` without one pair of enclosing quotes (``'Al, 6061'`` -> ``Al, 6061``)."""
+    if len(value) >= 2 and value[0] == value[-1] and value[0] in "'\"":
+        return value[1:-1].strip()
+    return value
+
+
 def parse_values(text: str, where: str = "material") -> dict[str, str]:
-    """``"E=69GPa, nu=0.33"`` as ``{"E": "69GPa", "nu": "0.33"}`` (``,`` or ``;`` between)."""
+    """``"E=69GPa, nu=0.33"`` as ``{"E": "69GPa", "nu": "0.33"}`` (``,`` or ``;`` between; a
+    value holding either is quoted: ``name="Al 6061, aged"``)."""
     out: dict[str, str] = {}
-    for item in text.replace(";", ",").split(","):
+    for item in _items(text, where):
         if not item.strip():
             continue
         key, eq, value = item.partition("=")
-        if not eq or not key.strip() or not value.strip():
-            raise ValueError(f"{where}: expected key=value pairs such as '{EXAMPLE}', got {item!r}")
+        value = _unquoted(value.strip())
+        if not eq or not key.strip() or not value:
+            raise ValueError(
+                f"{where}: expected key=value pairs such as '{EXAMPLE}' (quote a value that "
+                f'holds a comma: name="Al 6061, aged"), got {item.strip()!r}'
+            )
         if key.strip() in out:
             raise ValueError(
                 f"{where}: {key.strip()} is given twice ({out[key.strip()]!r} and "
-                f"{value.strip()!r}); give each property once"
+                f"{value!r}); give each property once"
             )
-        out[key.strip()] = value.strip()
+        out[key.strip()] = value
     return out
 
 

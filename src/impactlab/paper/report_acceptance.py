@@ -16,6 +16,7 @@ from impactlab.paper.quantities import (
     TOL_SIMULATED,
     comparison_counts,
     duration_checks,
+    verdict_counts,
 )
 from impactlab.paper.report import Block, Bullets, Heading, Para, fmt_pct
 
@@ -100,16 +101,20 @@ def _skipped_text(comp: pd.DataFrame) -> str:
     """What a report without the simulations leaves out (every section, part and file) and
     how many published numbers it therefore does not compare."""
     n_bad, n_skipped = comparison_counts(comp)
+    n_good, n_undecided = verdict_counts(comp)
     sections = [f"Section {n} ({what})" for n, what in _SKIPPED.items()]
-    bad = f"{n_bad} published number{'' if n_bad == 1 else 's'}"
+    bad = (
+        f"of the others, {n_good} reproduced, {n_undecided} undecided (the printed digits allow "
+        f"either) and {n_bad} not reproduced"
+    )
     return (
         "Simulations not run (`--no-simulate`): the analytic part only. The sections keep the "
         "numbers of the full report; what needs the simulations is not written here: "
         f"{', '.join(sections[:-1])} and {sections[-1]}; {'; '.join(_SKIPPED_PARTS)}; and the "
         f"files {', '.join(_SKIPPED_FILES[:-1])} and {_SKIPPED_FILES[-1]}. Not compared: "
         f"{n_skipped} published numbers of the paper's simulations (Tables 2 and 3, and the "
-        f"Sec. 5.2 text), neither reproduced nor not; {bad} not reproduced (Section 5 lists "
-        "both)."
+        f"Sec. 5.2 text), neither reproduced nor not; {bad} (Section 5 lists the not compared "
+        "and the not reproduced)."
     )
 
 
