@@ -34,3 +34,12 @@ def test_an_unclosed_quote_is_refused() -> None:
 def test_an_empty_quoted_value_is_refused() -> None:
     with pytest.raises(ValueError, match="expected key=value pairs"):
         parse_values('E=69GPa, name=""')
+
+
+def test_an_apostrophe_inside_a_value_is_text() -> None:
+    values = parse_values("E=69GPa, name=AISI 1010 (paper's flat), rho=2700")
+    assert values == {"E": "69GPa", "name": "AISI 1010 (paper's flat)", "rho": "2700"}
+
+
+def test_a_quoted_value_may_hold_the_other_quote() -> None:
+    assert parse_values("""name="the paper's flat, aged" """) == {"name": "the paper's flat, aged"}

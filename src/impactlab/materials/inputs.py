@@ -211,12 +211,13 @@ def _label(fields: Mapping[str, Any]) -> str:
 
 
 def _items(text: str, where: str) -> list[str]:
-    """``text`` split at each ``,`` or ``;`` outside quotes (``'...'`` or ``"..."``)."""
+    """``text`` split at each ``,`` or ``;`` outside quotes (``'...'`` or ``"..."``); a quote
+    opens only where a value starts, so an apostrophe inside one (``paper's flat``) is text."""
     items, start, quote = [], 0, ""
     for i, ch in enumerate(text):
         if quote:
             quote = "" if ch == quote else quote
-        elif ch in "'\"":
+        elif ch in "'\"" and _starts_value(text[start:i]):
             quote = ch
         elif ch in ",;":
             items.append(text[start:i])
@@ -224,6 +225,13 @@ def _items(text: str, where: str) -> list[str]:
     if quote:
         raise ValueError(f"{where}: a {quote} opened in {text!r} is not closed")
     return [*items, text[start:]]
+
+
+def _starts_value(item: str) -> bool:
+    """Whether the item read so far ends with ``=`` and blanks only: the next character starts
+    its value."""
+    key, eq, value = item.partition("=")
+    return bool(eq) and not value.strip()
 
 
 def _unquoted(value: str) -> str:
