@@ -40,7 +40,7 @@ print(repr(study))
 study  # noqa: B018 (shown as a table in Jupyter)
 
 # %%
-result = run_sweep(study, "regime-map.zarr", quiet=True)
+result = run_sweep(study, "regime-map-notebook.zarr", quiet=True)
 ds = result.dataset
 print(f"{result.stats.cases_computed} cases in {result.stats.chunks_computed} chunks")
 result  # noqa: B018
@@ -49,7 +49,7 @@ result  # noqa: B018
 # Running the same study again finds every chunk stored and computes nothing.
 
 # %%
-again = run_sweep(study, "regime-map.zarr", quiet=True)
+again = run_sweep(study, "regime-map-notebook.zarr", quiet=True)
 print(f"resume: {again.stats.chunks_before} chunks stored, {again.stats.chunks_computed} computed")
 
 # %%

@@ -65,6 +65,8 @@ def test_site_builds(site: Path) -> None:
         ("api/experiment", ("impactlab.experiment.analyze", "impactlab.experiment.read_scan")),
         ("api/sweep", ("impactlab.sweep.Study", "impactlab.sweep.run_sweep")),
         ("api/paper", ("impactlab.paper.reproduce",)),
+        ("api/fe", ("impactlab.fe.indent", "impactlab.fe.impact", "impactlab.fe.tabulated_law")),
+        ("api/flags", ("impactlab.flags.ResultFlag", "impactlab.flags.messages")),
         (
             "api/verification",
             ("impactlab.verification.verify_hertz", "impactlab.verification.main"),

@@ -47,7 +47,7 @@ CASES: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
             r"'friction regime( \(\d+ flagged cases blank, marked x\))?: vy = -1\.41 m/s'",
             r"e at 20 deg, mu = 0\.2, vy = -1\.41 m/s: 0\.42\d\d",
         ),
-        ("regime-map.zarr", "regime_map.png", "e_angle_mu.png"),
+        ("regime-map-notebook.zarr", "regime_map.png", "e_angle_mu.png"),
     ),
 }
 
