@@ -47,7 +47,7 @@ def main() -> None:
     truth = S.rigid_impulse_impact(PAPER_ROD, math.radians(20.0), (0.0, -1.41), e=0.5, mu=0.2)
     tracks, info = S.marker_tracks(PAPER_ROD, truth, noise=0.15e-3, seed=2)
     c3d = S.write_c3d(tracks, out / "drop.c3d")  # millimetres, 500 fps, occlusions
-    z, dx, dy, scan_truth = S.synthetic_scan(depth=22e-6, sliding_length=1400e-6, seed=1)
+    z, dx, dy, scan_truth = S.synthetic_scan(delta_p=22e-6, sliding_length=1400e-6, seed=1)
     scan = S.write_scan(z, dx, dy, out / "dent.x3p")  # ISO 5436-2 X3P
     # where the markers sit on the rod (body frame: origin C, first axis towards the tip), as
     # the command line reads it with --geometry

@@ -29,7 +29,7 @@ from impactlab.experiment import MarkerGeometry, analyze
 truth = S.rigid_impulse_impact(PAPER_ROD, math.radians(20.0), (0.0, -1.41), e=0.5, mu=0.2)
 tracks, info = S.marker_tracks(PAPER_ROD, truth, noise=0.15e-3, seed=2)
 c3d = S.write_c3d(tracks, Path("drop.c3d"))  # millimetres, 500 fps, with occlusions
-z, dx, dy, scan_truth = S.synthetic_scan(depth=22e-6, sliding_length=1400e-6, seed=1)
+z, dx, dy, scan_truth = S.synthetic_scan(delta_p=22e-6, sliding_length=1400e-6, seed=1)
 scan = S.write_scan(z, dx, dy, Path("dent.x3p"))  # ISO 5436-2 X3P
 print(f"{tracks.n_frames} frames at {tracks.rate:g} Hz; scan {z.shape[1]} x {z.shape[0]} px")
 

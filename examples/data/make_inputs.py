@@ -90,7 +90,7 @@ def write_plain_drop(folder: Path) -> None:
     tracks, info = S.marker_tracks(PAPER_ROD, truth, noise=0.15e-3, up="+y", seed=3)
     write_csv_markers(tracks, folder / "drop.csv", units="mm")
     z, _, _, _ = S.synthetic_scan(
-        depth=22e-6, sliding_length=1400e-6, pixel=PIXEL, margin=0.3e-3, direction=0.0, seed=4
+        delta_p=22e-6, sliding_length=1400e-6, pixel=PIXEL, margin=0.3e-3, direction=0.0, seed=4
     )
     np.save(folder / "dent.npy", (z * 1e6).astype(np.float32))
     rows = "\n".join(

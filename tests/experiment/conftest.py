@@ -94,7 +94,9 @@ def scans(data_dir: Path) -> dict[int, Scan]:
     X3P, Gwyddion and ISO 25178-71 SDF."""
     out: dict[int, Scan] = {}
     for key, (*_, dp, ls) in CASES.items():
-        z, dx, _, truth = S.synthetic_scan(depth=dp, sliding_length=ls, noise=SCAN_NOISE, seed=key)
+        z, dx, _, truth = S.synthetic_scan(
+            delta_p=dp, sliding_length=ls, noise=SCAN_NOISE, seed=key
+        )
         files = {}
         for fmt, ext in (("x3p", "x3p"), ("gwy", "gwy"), ("sdf", "sdf")):
             files[fmt] = S.write_scan(z, dx, dx, data_dir / f"dent_{key}.{ext}", fmt=fmt)

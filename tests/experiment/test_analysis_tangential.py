@@ -19,7 +19,7 @@ def test_analyze_inverts_a_drop_that_moves_along_the_flat(tmp_path: Path) -> Non
     tracks, info = S.marker_tracks(PAPER_ROD, truth, noise=0.15e-3, seed=1)
     c3d = S.write_c3d(tracks, tmp_path / "drop.c3d")
     z, dx, _, _ = S.synthetic_scan(
-        depth=truth.delta_p,
+        delta_p=truth.delta_p,
         sliding_length=abs(truth.sliding_length),
         noise=0.05e-6,
         seed=1,

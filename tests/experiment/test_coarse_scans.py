@@ -22,7 +22,7 @@ from impactlab.experiment.profilometry.levelling import height_step
 
 def _scan(pixel: float, depth: float = 22e-6, slide: float = 1400e-6, seed: int = 1) -> HeightMap:
     z, dx, dy, _ = S.synthetic_scan(
-        depth=depth, sliding_length=slide, seed=seed, pixel=pixel, margin=1.2e-3
+        delta_p=depth, sliding_length=slide, seed=seed, pixel=pixel, margin=1.2e-3
     )
     return HeightMap(z, dx, dy)
 
@@ -66,7 +66,7 @@ def test_levels_kept_at_the_threshold_by_a_gap_carry_the_smoothing_in_their_sigm
 
 def _stepped(step: float, depth: float = 22.4e-6, offset: float = 0.0) -> HeightMap:
     z, dx, dy, _ = S.synthetic_scan(
-        depth=depth,
+        delta_p=depth,
         sliding_length=1400e-6,
         seed=1,
         noise=5e-8 if step >= 0.5e-6 else 2e-8,

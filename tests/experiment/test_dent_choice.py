@@ -16,7 +16,7 @@ from impactlab.experiment import DentNotFoundError, HeightMap, analyze, measure_
 
 @pytest.fixture(scope="module")
 def groove() -> tuple[np.ndarray, float, S.ScanTruth]:
-    z, dx, _, truth = S.synthetic_scan(depth=22e-6, sliding_length=1400e-6, seed=1)
+    z, dx, _, truth = S.synthetic_scan(delta_p=22e-6, sliding_length=1400e-6, seed=1)
     return z, dx, truth
 
 
@@ -65,3 +65,11 @@ def test_the_papers_dents_have_one_candidate(scans: dict) -> None:
     for sc in scans.values():
         d = measure_dent(HeightMap(sc.z, sc.dx, sc.dx))
         assert not any("qualify as a dent" in w for w in d.warnings)
+
+
+def test_the_old_name_of_delta_p_still_works_with_a_deprecation_warning() -> None:
+    with pytest.warns(DeprecationWarning, match="'depth' is renamed 'delta_p'"):
+        old = S.synthetic_scan(depth=10e-6, sliding_length=300e-6, pixel=10e-6, seed=2)
+    new = S.synthetic_scan(delta_p=10e-6, sliding_length=300e-6, pixel=10e-6, seed=2)
+    np.testing.assert_array_equal(old[0], new[0])
+    assert old[3].groove.depth == new[3].groove.depth == pytest.approx(10e-6, rel=1e-9)

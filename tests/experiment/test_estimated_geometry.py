@@ -176,7 +176,7 @@ def test_the_docs_quick_start_runs(
     one (exit status 2, the scan still measured)."""
     tracks, _ = _tracks(rod, 45, S.DEFAULT_MARKERS, 3, up="+y")
     write_csv_markers(tracks, tmp_path / "drop.csv")
-    z, *_ = S.synthetic_scan(depth=5e-6, sliding_length=300e-6, pixel=2e-6, seed=1)
+    z, *_ = S.synthetic_scan(delta_p=5e-6, sliding_length=300e-6, pixel=2e-6, seed=1)
     np.save(tmp_path / "dent.npy", z * 1e6)  # um
     (tmp_path / "markers.toml").write_text(GEOMETRY_TOML)
     args = ("analyze", str(tmp_path / "drop.csv"), str(tmp_path / "dent.npy"), "--pixel-size",
@@ -207,7 +207,7 @@ def test_a_result_in_doubt_is_not_ok_in_the_api_the_json_and_the_table(
     assert any("marker geometry is in doubt" in w for w in res.warnings)
     saved = json.loads((tmp_path / "out" / "results.json").read_text())
     assert saved["ok"] is False and saved["kinematics"]["ok"] is False
-    z, *_ = S.synthetic_scan(depth=5e-6, sliding_length=300e-6, pixel=2e-6, seed=1)
+    z, *_ = S.synthetic_scan(delta_p=5e-6, sliding_length=300e-6, pixel=2e-6, seed=1)
     np.save(tmp_path / "dent.npy", z * 1e6)
     args = ("analyze", str(markers), str(tmp_path / "dent.npy"), "--pixel-size", "2 um",
             "--height-unit", "um")  # fmt: skip

@@ -44,7 +44,7 @@ def test_pixel_sizes_written_right_still_read() -> None:
 def test_the_command_lines_decimal_comma_is_one_line_naming_the_option(
     cli_main: Callable[..., tuple[int, str, str]], tmp_path: Path
 ) -> None:
-    z, *_ = S.synthetic_scan(depth=22e-6, sliding_length=400e-6, pixel=10e-6, seed=1)
+    z, *_ = S.synthetic_scan(delta_p=22e-6, sliding_length=400e-6, pixel=10e-6, seed=1)
     np.save(tmp_path / "dent.npy", z * 1e6)
     out = tmp_path / "out"
     code, _, err = cli_main(
@@ -59,7 +59,7 @@ def test_the_command_lines_decimal_comma_is_one_line_naming_the_option(
 
 def test_pixels_far_longer_one_way_are_the_scans_error_not_a_memory_error() -> None:
     """12 m x 5 um pixels: the profiles would take 3e9 samples."""
-    z, *_ = S.synthetic_scan(depth=22e-6, sliding_length=400e-6, pixel=10e-6, seed=1)
+    z, *_ = S.synthetic_scan(delta_p=22e-6, sliding_length=400e-6, pixel=10e-6, seed=1)
     with pytest.raises(ScanError, match="check the pixel size") as err:
         measure_dent(HeightMap(z, 12.0, 5e-6))
     assert "samples (at most 1e+06)" in str(err.value)

@@ -22,7 +22,7 @@ def _write(path: Path, z: np.ndarray, sep: str) -> Path:
 
 @pytest.fixture(scope="module")
 def scan() -> np.ndarray:
-    z, *_ = S.synthetic_scan(depth=22e-6, sliding_length=400e-6, pixel=10e-6, seed=1, dropouts=0)
+    z, *_ = S.synthetic_scan(delta_p=22e-6, sliding_length=400e-6, pixel=10e-6, seed=1, dropouts=0)
     return z
 
 

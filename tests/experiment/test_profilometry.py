@@ -35,7 +35,7 @@ FORMATS = ["x3p", "gwy", "nc", "sdf", "sdf-binary", "npy", "csv"]
 
 @pytest.fixture(scope="module")
 def small() -> tuple[np.ndarray, float, float, S.ScanTruth]:
-    return S.synthetic_scan(depth=22e-6, sliding_length=400e-6, pixel=10e-6, seed=1)
+    return S.synthetic_scan(delta_p=22e-6, sliding_length=400e-6, pixel=10e-6, seed=1)
 
 
 @pytest.mark.parametrize("fmt", FORMATS)
@@ -221,7 +221,7 @@ def test_engine_dent_map() -> None:
 def test_a_dent_near_the_noise_floor_is_warned() -> None:
     """A dent only a few times deeper than the scan's noise is measured with a warning."""
     z, dx, dy, _ = S.synthetic_scan(
-        depth=0.6e-6, sliding_length=300e-6, noise=0.15e-6, pileup=0.0, seed=3
+        delta_p=0.6e-6, sliding_length=300e-6, noise=0.15e-6, pileup=0.0, seed=3
     )
     d = measure_dent(HeightMap(z, dx, dy, "shallow.x3p"))
     assert any("times the scan's noise" in w and "barely resolved" in w for w in d.warnings)

@@ -17,7 +17,7 @@ from impactlab.experiment.profilometry.heightmap import HeightMap
 def scan() -> tuple[np.ndarray, float, float]:
     """The 20 deg dent (delta_p 22 um, L_s 1400 um; 8 um pixels, its start at x = 1.04 mm,
     y = 1.4 mm) and the true L_s [m]."""
-    z, dx, _, truth = S.synthetic_scan(depth=22e-6, sliding_length=1400e-6, seed=1)
+    z, dx, _, truth = S.synthetic_scan(delta_p=22e-6, sliding_length=1400e-6, seed=1)
     return z, dx, truth.groove.sliding_length
 
 

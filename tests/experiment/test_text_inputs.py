@@ -36,7 +36,7 @@ def marker_csv(tracks: MarkerTracks, tmp_path_factory: pytest.TempPathFactory) -
 
 @pytest.fixture(scope="module")
 def heights() -> tuple[np.ndarray, float]:
-    z, dx, *_ = S.synthetic_scan(depth=22e-6, sliding_length=1400e-6, seed=1, dropouts=0.0)
+    z, dx, *_ = S.synthetic_scan(delta_p=22e-6, sliding_length=1400e-6, seed=1, dropouts=0.0)
     return z[:60, :80], dx  # a corner: text files stay small
 
 

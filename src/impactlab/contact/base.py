@@ -204,16 +204,19 @@ class ContactModel:
             )
         return d
 
-    def force(self, delta: Any) -> np.ndarray:
-        """Loading force [N] at interferences ``delta`` [m]."""
-        d = self.check_interference(delta)
-        return ka.loading_force_array(self.law_id, self.params, np.atleast_1d(d)).reshape(d.shape)
-
-    def contact_radius(self, delta: Any) -> np.ndarray:
-        """Contact radius [m] on the loading curve at interferences ``delta`` [m]."""
+    def force(self, delta: Any) -> Any:
+        """Loading force [N] at interferences ``delta`` [m]: a float (``numpy.float64``) for a
+        scalar ``delta``, an array of its shape for an array."""
         d = self.check_interference(delta)
         flat = np.atleast_1d(d)
-        return ka.loading_contact_radius_array(self.law_id, self.params, flat).reshape(d.shape)
+        return ka.loading_force_array(self.law_id, self.params, flat).reshape(d.shape)[()]
+
+    def contact_radius(self, delta: Any) -> Any:
+        """Contact radius [m] on the loading curve at interferences ``delta`` [m]: a float for a
+        scalar ``delta``, an array of its shape for an array."""
+        d = self.check_interference(delta)
+        flat = np.atleast_1d(d)
+        return ka.loading_contact_radius_array(self.law_id, self.params, flat).reshape(d.shape)[()]
 
     def unload(self, delta_m: float) -> UnloadingBranch:
         """The unloading branch after loading to ``delta_m`` [m]."""

@@ -230,7 +230,7 @@ def _items(text: str, where: str) -> list[str]:
 def _starts_value(item: str) -> bool:
     """Whether the item read so far ends with ``=`` and blanks only: the next character starts
     its value."""
-    key, eq, value = item.partition("=")
+    _key, eq, value = item.partition("=")
     return bool(eq) and not value.strip()
 
 

@@ -163,7 +163,9 @@ def run_sweep(
     workers : local cores (threads: numba threads; processes: pool size); default all cores.
     scheduler : Dask scheduler address ("tcp://host:port"); ``client``: a ``distributed.Client``.
     quiet : no progress bar and no notes; ``progress``: True/False forces the bar on/off
-        (default: shown when stderr is a terminal and not quiet).
+        (default: shown when stderr is a terminal and not quiet). The warnings below stay:
+        they mark the store's result, also on a resume that computes nothing (silence them
+        with ``warnings.catch_warnings``; ``stats.flagged`` and ``stats.failed`` count them).
     evaluator : stand-in for the engine (tests); default ``engine.ENGINE``.
     max_cases : refuse a study of more cases than this (default: the study's ``max_cases``).
     worker_timeout : Dask: seconds without any worker on the cluster before the sweep stops with

@@ -21,6 +21,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 from impactlab.experiment.errors import MissingDependencyError
+from impactlab.schema import warn_renamed
 
 __all__ = ["GrooveTruth", "ScanTruth", "groove_surface", "synthetic_scan", "write_scan"]
 
@@ -142,7 +143,7 @@ def _path_for(
 
 def synthetic_scan(
     *,
-    depth: float = 22e-6,
+    delta_p: float = 22e-6,
     sliding_length: float = 1400e-6,
     tip_radius: float = 8.8e-3,
     pixel: float = 8e-6,
@@ -156,10 +157,16 @@ def synthetic_scan(
     offset: float = 3e-6,
     dropouts: float = 0.01,
     seed: int = 0,
+    depth: float | None = None,
 ) -> tuple[np.ndarray, float, float, ScanTruth]:
     """A levelled-then-tilted, noisy height map (ny, nx) [m] with a groove whose paper metrics are
-    ``depth`` (delta_p) and ``sliding_length`` (L_s = length - width), NaN dropouts (random pixels
-    plus one cluster inside the dent); returns (heights, dx, dy, truth)."""
+    ``delta_p`` (the permanent depth [m]) and ``sliding_length`` (L_s = length - width [m]), NaN
+    dropouts (random pixels plus one cluster inside the dent); returns (heights, dx, dy, truth).
+    ``depth`` is the old name of ``delta_p`` (a DeprecationWarning; it goes in 0.4)."""
+    if depth is not None:
+        warn_renamed("depth", "delta_p", "synthetic_scan argument")
+        delta_p = depth
+    depth = delta_p
     rng = np.random.default_rng(seed)
     path = _path_for(sliding_length, depth, tip_radius, peak_at, end_depth)
     width = 2.0 * math.sqrt(2.0 * tip_radius * depth)
