@@ -136,7 +136,8 @@ def check_rtol(rtol: Any) -> float:
 #: Largest rtol of the rigid partial-slip engine. Beyond it the cells' events outrun the steps
 #: and the results leave the tolerance: over five rods and spheres, the largest relative error
 #: of e, e_energy and vt_out against rtol 1e-10 was 5e-6 at 1e-6, 1.1e-4 at 1e-5, 1e-3 at 3e-5
-#: and 4e-2 at 1e-4 (11 % at 3e-4; `mindlin` stays within 0.3 % at 1e-3).
+#: and 4e-2 at 1e-4 (11 % at 3e-4). The other models keep the whole range; `mindlin`'s errors
+#: there reach 9 % at 1e-4 and 100 % (vt_out) at 1e-3 (docs/engine/index.md, `rtol`).
 PARTIAL_SLIP_RTOL_MAX = 1e-5
 
 
