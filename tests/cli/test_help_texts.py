@@ -36,7 +36,7 @@ def test_simulate_states_the_bare_unit_and_the_defaults() -> None:
     assert "e.g. '2 s' (bare number: s; default 500 ms)" in text
     assert (
         "(default 2e-7, 3e-8 with partial_slip, 1e-7 for the flexible rod; 1e-5 at most for the "
-        "flexible rod and with partial_slip)" in text
+        "flexible rod and with partial_slip, 1e-4 with mindlin)" in text
     )
 
 

@@ -7,7 +7,7 @@ from impactlab.cli._common import KINEMATIC_HELP, STOP_HELP, length_help, rate_h
 from impactlab.cli.drop_body import MODES_HELP
 from impactlab.dynamics.drop import DEFAULT_TIME_LIMIT
 from impactlab.dynamics.flexcore.layout import DROP_DEFAULT_RTOL
-from impactlab.dynamics.input_checks import PARTIAL_SLIP_RTOL_MAX
+from impactlab.dynamics.input_checks import MINDLIN_RTOL_MAX, PARTIAL_SLIP_RTOL_MAX
 from impactlab.dynamics.kernels.layout import DEFAULT_RTOL, PARTIAL_SLIP_RTOL
 from impactlab.friction import PARTIAL_SLIP_CELLS, PARTIAL_SLIP_CELLS_MAX, PARTIAL_SLIP_CELLS_MIN
 
@@ -44,7 +44,8 @@ HELP = {
     f"(bare number: s; default {DEFAULT_TIME_LIMIT * 1e3:g} ms).",
     "rtol": f"Integration tolerance, in [1e-13, 1e-3] (default {_n(DEFAULT_RTOL)}, "
     f"{_n(PARTIAL_SLIP_RTOL)} with partial_slip, {_n(DROP_DEFAULT_RTOL)} for the flexible rod; "
-    f"{_n(PARTIAL_SLIP_RTOL_MAX)} at most for the flexible rod and with partial_slip).",
+    f"{_n(PARTIAL_SLIP_RTOL_MAX)} at most for the flexible rod and with partial_slip, "
+    f"{MINDLIN_RTOL_MAX:.0e} with mindlin).".replace("e-0", "e-"),
     "partial_slip_cells": f"With --friction partial_slip: its cells over the largest contact "
     f"radius, an integer in [{PARTIAL_SLIP_CELLS_MIN}, {PARTIAL_SLIP_CELLS_MAX}] (default "
     f"{PARTIAL_SLIP_CELLS}; 64 converge e_t near normal incidence, at 4 to 5 times the cost; "

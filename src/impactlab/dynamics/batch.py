@@ -28,8 +28,8 @@ from impactlab.contact.ranges import extrapolation_flags
 from impactlab.contact.tabulate import has_table, with_table
 from impactlab.dynamics.core.batch import impact_batch
 from impactlab.dynamics.input_checks import (
+    check_friction_rtol,
     check_partial_slip_cells,
-    check_partial_slip_rtol,
     check_rtol,
     gravity_value,
 )
@@ -144,9 +144,8 @@ def run_arrays(
     bp = _rows("body_params", body_params, NB, n)
     g = gravity_value(gravity)
     r = PARTIAL_SLIP_RTOL if rtol is None and fid == PARTIAL_SLIP else check_rtol(rtol)
-    if fid == PARTIAL_SLIP:
-        check_partial_slip_rtol(r)
     name = next(k for k, v in BATCH_FRICTION_IDS.items() if v == fid)
+    check_friction_rtol(r, name)
     cells = check_partial_slip_cells(partial_slip_cells, name)
     out = np.empty((n, N_OUT))
     status = np.empty(n, dtype=np.int32)

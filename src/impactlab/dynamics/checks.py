@@ -17,8 +17,8 @@ from impactlab.dynamics.input_checks import (
     check_angle,
     check_body,
     check_flat,
+    check_friction_rtol,
     check_mu,
-    check_partial_slip_rtol,
     check_rtol,
     check_spin,
     check_velocity,
@@ -156,6 +156,15 @@ def _is_partial_slip(friction: Any) -> bool:
         return False
 
 
+def _friction_name(friction: Any) -> str:
+    """The registered name of ``friction`` ("" for an unknown one: the checks below raise its
+    error in their order)."""
+    try:
+        return str(get_friction(friction).kind.value)
+    except (TypeError, ValueError, KeyError):
+        return ""
+
+
 def check_impact(
     body: Any,
     flat: Any,
@@ -176,8 +185,8 @@ def check_impact(
     if rtol is None and _is_partial_slip(friction):
         rtol = PARTIAL_SLIP_RTOL
     fast = _plain_inputs(body, flat, angle, velocity, spin, mu, gravity, rtol, constant_angle)
-    if rtol is not None and _is_partial_slip(friction):
-        check_partial_slip_rtol(check_rtol(rtol))
+    if rtol is not None:
+        check_friction_rtol(check_rtol(rtol), _friction_name(friction))
     if fast is not None:
         th, vx, vy, w, m, g, r = fast
         return ImpactInputs(

@@ -30,16 +30,22 @@ from impactlab.dynamics.kernels.inputs import (
     MAX_GRAVITY,
     MAX_MU,
     MAX_SPEED,
-    RTOL_RANGE,
     angle_allowed,
     gravity_allowed,
     incidence_allowed,
     mu_allowed,
-    rtol_allowed,
     speed_allowed,
     spin_allowed,
 )
-from impactlab.dynamics.kernels.layout import DEFAULT_RTOL
+from impactlab.dynamics.rtol_checks import (
+    DROP_RTOL_MAX,
+    MINDLIN_RTOL_MAX,
+    PARTIAL_SLIP_RTOL_MAX,
+    check_friction_rtol,
+    check_partial_slip_rtol,
+    check_rtol,
+    friction_rtol_max,
+)
 from impactlab.dynamics.velocity_inputs import batch_velocity, velocity_given
 from impactlab.friction import PARTIAL_SLIP_CELLS, PARTIAL_SLIP_CELLS_MAX, PARTIAL_SLIP_CELLS_MIN
 from impactlab.materials import G0, Material
@@ -121,38 +127,6 @@ def contact_reach(body: Rod | Sphere) -> float:
     return body.half_length + body.tip_radius
 
 
-def check_rtol(rtol: Any) -> float:
-    """The relative tolerance (None: ``DEFAULT_RTOL``), in [1e-13, 1e-3]."""
-    if rtol is None:
-        return DEFAULT_RTOL
-    r = check_finite("rtol", rtol)
-    if not rtol_allowed(r):
-        raise ValueError(
-            f"rtol must lie in [{RTOL_RANGE[0]:g}, {RTOL_RANGE[1]:g}], got {float(r)!r}"
-        )
-    return r
-
-
-#: Largest rtol of the rigid partial-slip engine. Beyond it the cells' events outrun the steps
-#: and the results leave the tolerance: over five rods and spheres, the largest relative error
-#: of e, e_energy and vt_out against rtol 1e-10 was 5e-6 at 1e-6, 1.1e-4 at 1e-5, 1e-3 at 3e-5
-#: and 4e-2 at 1e-4 (11 % at 3e-4). The other models keep the whole range; `mindlin`'s errors
-#: there reach 9 % at 1e-4 and 100 % (vt_out) at 1e-3 (docs/engine/index.md, `rtol`).
-PARTIAL_SLIP_RTOL_MAX = 1e-5
-
-
-def check_partial_slip_rtol(rtol: float) -> float:
-    """``rtol`` (checked by ``check_rtol``), refused above ``PARTIAL_SLIP_RTOL_MAX`` for the
-    rigid partial-slip engine."""
-    if rtol > PARTIAL_SLIP_RTOL_MAX:
-        raise ValueError(
-            f"rtol {rtol:g} is too loose for friction 'partial_slip' (allowed: up to "
-            f"{PARTIAL_SLIP_RTOL_MAX:g}; its default is 3e-8): beyond it the Mindlin-Deresiewicz "
-            f"cells' events outrun the steps and e moves by percents"
-        )
-    return rtol
-
-
 def check_partial_slip_cells(cells: Any, friction: str | None = None) -> int:
     """``partial_slip_cells`` as an int: an integer (not a bool, float or string) in
     [``PARTIAL_SLIP_CELLS_MIN``, ``PARTIAL_SLIP_CELLS_MAX``]; any value but the default
@@ -175,14 +149,6 @@ def check_partial_slip_cells(cells: Any, friction: str | None = None) -> int:
             f"friction is {friction!r}: leave it out, or choose friction 'partial_slip'"
         )
     return n
-
-
-#: Largest rtol of a drop (``simulate_drop``, ``simulate_drops``, a flexible rod's sweep), of a
-#: flexible rod and of a rigid one: up to it the drop's error shrinks with rtol, beyond it the
-#: integrator leaves that regime. Over 24 random drops of each of five rods against rtol 1e-10
-#: (docs/flexible.md, "Refused results"), the largest energy created grew from 1.1e-4 E0 at
-#: 1e-5 to 1e-3 at 3e-5 and 1.2e-2 at 1e-4, and e moved by up to 3.4 % at 3e-5 (the rigid rod).
-DROP_RTOL_MAX = 1e-5
 
 
 def check_angle(angle: Any, body: Rod | Sphere) -> float:
@@ -385,10 +351,10 @@ def warn_fast(what: str, speed: float) -> None:
 
 
 __all__ = [
-    "DROP_RTOL_MAX", "PARTIAL_SLIP_RTOL_MAX", "PAST_NORMAL", "PLAUSIBLE_SPEED", "batch_velocity",
-    "check_angle", "check_body", "check_constant_angle", "check_dent_grid", "check_flat",
-    "check_mu", "check_partial_slip_cells",
+    "DROP_RTOL_MAX", "MINDLIN_RTOL_MAX", "PARTIAL_SLIP_RTOL_MAX", "PAST_NORMAL", "PLAUSIBLE_SPEED",
+    "batch_velocity", "check_angle", "check_body", "check_constant_angle", "check_dent_grid",
+    "check_flat", "check_friction_rtol", "check_mu", "check_partial_slip_cells",
     "check_partial_slip_rtol", "check_rtol", "check_speed", "check_spin", "check_velocity",
-    "contact_reach", "degrees_hint", "given_body", "gravity_value", "mu_problem", "past_normal",
-    "velocity_from", "warn_degrees", "warn_fast",
+    "contact_reach", "degrees_hint", "friction_rtol_max", "given_body", "gravity_value",
+    "mu_problem", "past_normal", "velocity_from", "warn_degrees", "warn_fast",
 ]  # fmt: skip

@@ -33,6 +33,7 @@ from impactlab.dynamics.input_checks import (
     PLAUSIBLE_SPEED,
     check_constant_angle,
     contact_reach,
+    friction_rtol_max,
     given_body,
     velocity_from,
 )
@@ -125,7 +126,7 @@ def simulate(
         history (needed for ``dent()`` and the plots).
     rtol : float, optional
         Relative tolerance in [1e-13, 1e-3] (default ``DEFAULT_RTOL`` = 2e-7; 3e-8 for
-        ``friction="partial_slip"``, which takes at most 1e-5).
+        ``friction="partial_slip"``, which takes at most 1e-5; ``"mindlin"`` at most 1e-4).
     partial_slip_cells : int
         Cells of ``friction="partial_slip"`` over the largest contact radius, in [4, 64]
         (default ``PARTIAL_SLIP_CELLS`` = 16; more converge e_t near normal incidence, at a
@@ -260,6 +261,8 @@ def _fast(
     tol = L.DEFAULT_RTOL if rtol is None else _plain_number(rtol)
     vx, vy, w, m = (_plain_number(v) for v in (*velocity, spin, mu))
     if th is None or g is None or tol is None or vx is None or vy is None or w is None:
+        return None
+    if tol > friction_rtol_max(friction):  # the full path refuses it, naming the model
         return None
     if m is None or not (abs(vx) <= PLAUSIBLE_SPEED and abs(vy) <= PLAUSIBLE_SPEED):
         return None

@@ -165,7 +165,8 @@ def simulate_batch(
     ``"impulse_ratio"``, ``"mindlin"`` or ``"partial_slip"`` (``BATCH_FRICTION_IDS``).
     ``gravity``: True (9.80665 m/s^2), False or a value [m/s^2]; ``constant_angle``: freeze
     the lever arms at the initial angle. ``rtol``: the relative tolerance, in [1e-13, 1e-3]
-    (None: ``DEFAULT_RTOL`` = 2e-7; 3e-8 for ``partial_slip``, which takes at most 1e-5), as
+    (None: ``DEFAULT_RTOL`` = 2e-7; 3e-8 for ``partial_slip``, which takes at most 1e-5;
+    ``mindlin`` at most 1e-4), as
     in ``simulate``; a bad one is refused (ValueError) before any case runs.
     ``partial_slip_cells``: the cells of ``partial_slip`` over the largest contact radius, in
     [4, 64] (default ``PARTIAL_SLIP_CELLS`` = 16), one for every case of the call, as in

@@ -33,7 +33,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from impactlab.dynamics.input_checks import check_partial_slip_rtol
+from impactlab.dynamics.input_checks import check_friction_rtol
 from impactlab.sweep.backends import (
     BACKENDS,
     DEFAULT_WORKER_TIMEOUT,
@@ -184,8 +184,9 @@ def run_sweep(
     ev: Evaluator = evaluator if evaluator is not None else ENGINE
     be = _backend(backend, workers, scheduler, client, max_in_flight, worker_timeout)
     ev.validate(category_values(st))
-    if "partial_slip" in category_values(st)["friction"] and st.engine.rtol is not None:
-        check_partial_slip_rtol(float(st.engine.rtol))
+    if st.engine.rtol is not None:  # a model's own cap (partial slip, mindlin)
+        for friction in category_values(st)["friction"]:
+            check_friction_rtol(float(st.engine.rtol), str(friction))
     meta = store_meta(st, ev)
     unkept = [o for o in st.uncertainty.outputs if o not in meta.outputs] if st.uncertainty else []
     if unkept:  # found before the sweep, not by its report after it
