@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import errno
 import json
+import os
 from collections.abc import Callable
 from pathlib import Path
 
@@ -113,16 +114,39 @@ def read_only(monkeypatch: pytest.MonkeyPatch) -> None:
 def test_the_analysis_is_shown_and_the_file_named(
     tmp_path: Path, cli_main: CliMain, read_only: None, as_json: bool
 ) -> None:
-    """It printed nothing (the analysis lost) and named '.drops.csv.17816.partial'."""
+    """It printed nothing (the analysis lost) and named '.drops.csv.17816.partial'; a write
+    that fails while the command works is the system's error, status 1."""
     path = tmp_path / "drops.csv"
     code, out, err = cli_main(*ARGS, "--measurements", str(path), *(["--json"] * as_json))
-    assert code != 0
+    assert code == 1  # the system's error while the command worked
     if as_json:
         assert json.loads(out)["ok"] is True
     else:
         assert "mean_force" in out and "sliding_length" in out
     lines = [x for x in err.splitlines() if x.startswith("error:")]
-    assert lines == [f"error: --measurements: nothing appended to {path}: read-only file system"], (
-        err
-    )
+    assert lines == [
+        f"error: read-only file system writing {str(path)!r}: make it writable (or write "
+        "elsewhere) and run the command again"
+    ], err
     assert ".partial" not in err and not path.exists()
+
+
+def test_a_file_that_is_not_regular_is_refused_before_the_analysis(
+    tmp_path: Path, cli_main: CliMain
+) -> None:
+    fifo = tmp_path / "drops.csv"
+    os.mkfifo(fifo)
+    code, out, err = cli_main(*ARGS, "--measurements", str(fifo))
+    assert code == 2 and out == ""
+    assert f"error: --measurements {str(fifo)!r} is not a regular file; give a CSV file" in err
+    with pytest.raises(ValueError, match="is not a regular file"):  # before it reads
+        append_module._append(fifo, None, None)  # type: ignore[arg-type]
+
+
+def test_a_folder_that_cannot_be_written_is_refused_before_the_analysis(
+    tmp_path: Path, cli_main: CliMain, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr(os, "access", lambda path, mode: Path(path) != tmp_path)
+    code, out, err = cli_main(*ARGS, "--measurements", str(tmp_path / "drops.csv"))
+    assert code == 2 and out == ""
+    assert "cannot be written (no permission for this user): choose another file" in err

@@ -87,6 +87,8 @@ def append_record(
 
 def _append(p: Path, row: Row, comment: str | None) -> None:
     """:func:`append_record`'s read, check and replace of ``p`` (under its lock)."""
+    if p.exists() and not p.is_file():  # a device or a FIFO would be read without end
+        raise ValueError(f"measurements file {str(p)!r} is not a regular file")
     data = p.read_bytes() if p.exists() else b""
     text = read_text(p, "CSV") if data.strip() else ""
     lines = text.splitlines(keepends=True)

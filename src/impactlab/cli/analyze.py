@@ -247,7 +247,7 @@ def analyze_cmd(
             typer.echo(f"warning: {w}", err=True)
     else:
         _print_summary(res)
-    if isinstance(appended, UserError):
+    if isinstance(appended, UserError | OSError):
         raise appended
     if appended is not None:
         for w in appended[1]:

@@ -5,6 +5,7 @@ read back as written)."""
 
 from __future__ import annotations
 
+import os
 import warnings
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -41,6 +42,13 @@ def check_measurements(path: Path, label: str) -> None:
         )
     if path.is_dir():
         raise UserError(f"--measurements {str(path)!r} is a folder; give a CSV file")
+    if path.exists() and not path.is_file():  # a device, a FIFO, a socket: never read whole
+        raise UserError(f"--measurements {str(path)!r} is not a regular file; give a CSV file")
+    if not os.access(path.parent, os.W_OK | os.X_OK):  # the file is replaced in its folder
+        raise UserError(
+            f"--measurements {str(path)!r}: the folder {str(path.parent)!r} cannot be written "
+            "(no permission for this user): choose another file"
+        )
     if not path.is_file():
         return
     try:
@@ -58,10 +66,11 @@ def check_measurements(path: Path, label: str) -> None:
 
 def append_drop(
     path: Path, res: ExperimentResult, label: str, include_doubtful: bool
-) -> tuple[int, list[str]] | UserError:
+) -> tuple[int, list[str]] | UserError | OSError:
     """(drops in the file, the warnings given) after appending the drop of ``res`` to ``path``,
-    or the UserError saying why it was not (reported after the analysis is shown): a drop the
-    file cannot take, or a file that cannot be written (named, not its temporary file)."""
+    or the error saying why it was not (raised after the analysis is shown): a UserError for a
+    drop the file cannot take (status 2), the system's OSError for a file that could not be
+    written (status 1; the file named, not its temporary file)."""
     from impactlab.calibrate.experiment_rows import append_experiment
 
     if res.kinematics is None:
@@ -78,11 +87,9 @@ def append_drop(
                                     "--include-doubtful")  # fmt: skip
             return UserError(f"--measurements: nothing appended to {path}: {text}")
         except OSError as exc:  # a read-only or full disk, a folder without write permission
-            return UserError(f"--measurements: nothing appended to {path}: {_os_reason(exc)}")
+            if exc.errno is None:  # impactlab's own refusal (a lock it cannot take)
+                return UserError(f"--measurements: nothing appended to {path}: {exc}")
+            # the system's, while the command worked: status 1, the file named (not the
+            # temporary one)
+            return OSError(exc.errno, exc.strerror or type(exc).__name__, str(path))
     return meas.n_drops, [str(w.message) for w in caught]
-
-
-def _os_reason(exc: OSError) -> str:
-    """Why a write failed, without the temporary file's name (``exc.strerror``, lower case)."""
-    reason = exc.strerror or type(exc).__name__
-    return reason[:1].lower() + reason[1:]
