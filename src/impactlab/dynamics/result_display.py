@@ -10,7 +10,8 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any, ClassVar
 
-from impactlab._display import field_rows, html_table, text_table
+from impactlab._display import field_rows, flag_names, html_table, text_table
+from impactlab.flags import ADVISORY_FLAGS
 from impactlab.schema import DERIVED_FIELDS
 
 __all__ = ["BATCH_ONLY_NAMES", "RESULT_NAMES", "ResultDisplay", "field_hint"]
@@ -48,6 +49,17 @@ def field_hint(result: object, name: str, error: AttributeError) -> AttributeErr
     if instead is not None:
         return AttributeError(f"{head}one result does not hold it: {instead})")
     return error
+
+
+def flag_rows(flags: Any) -> dict[str, str]:
+    """The summary's last rows for the result flags ``flags`` (a ``ResultFlag``): ``ok`` = "no:
+    <the flags that make it so> (see the warnings)" for a result that is not ok (none for one
+    that is, as ``invert`` and ``analyze`` show it), then ``flags``, every flag's name."""
+    rows = {}
+    invalid = flags & ~ADVISORY_FLAGS
+    if invalid:
+        rows["ok"] = f"no: {flag_names(invalid)} (see the warnings)"
+    return rows | {"flags": flag_names(flags)}
 
 
 class ResultDisplay:
