@@ -61,5 +61,5 @@ def test_the_help_lists_every_exit_status_of_the_readme() -> None:
     help_ = " ".join(result.output.split()).split("Exit status: ", 1)[1].split("Options:")[0]
     for status in statuses:
         assert re.search(rf"(?:^|; ){status} ", help_), (status, help_)
-    for case in ("no case succeeded", "sweep run --plot", "stored", "SIGTERM", "Ctrl-C"):
+    for case in ("no case succeeded", "sweep run --plot", "stored", "SIGTERM", "Ctrl-C", "worker"):
         assert case in help_ and case in " ".join(section.split()), case

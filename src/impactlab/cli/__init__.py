@@ -75,9 +75,9 @@ app = typer.Typer(
     "reproduce the paper.\n\nExit status: 0 done (flagged results too); 2 an input refused, "
     "before any work where it can be checked (an output folder that cannot be written too), or "
     "a sweep in which no case succeeded; 1 an error of the system on a file while working (no "
-    "permission, a read-only file system, a full disk), or a sweep run --plot whose plot failed "
-    "after the sweep was stored; 130 interrupted (Ctrl-C); 143 a sweep stopped by SIGTERM "
-    "(README: Exit status).",
+    "permission, a read-only file system, a full disk), a sweep run --plot whose plot failed "
+    "after the sweep was stored, or a sweep whose worker process died; 130 interrupted "
+    "(Ctrl-C); 143 a sweep stopped by SIGTERM (README: Exit status).",
     no_args_is_help=True,
     add_completion=False,
     context_settings={"help_option_names": ["-h", "--help"]},

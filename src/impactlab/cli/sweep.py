@@ -133,7 +133,7 @@ def run_cmd(
 
     check_run_paths(out, netcdf)
     if plot is not None:  # before the sweep: a folder no file can be made in is refused now
-        plot = output_folder(output_dir(plot, "--plot"), "--plot")
+        plot = output_dir(plot, "--plot")  # made once the sweep ran (none for a refused one)
     where = Where(out, scheduler, workers, max_cases, worker_timeout, backend)
     res = run_study(study, where, quiet, restart)
     ds = res.dataset
@@ -142,7 +142,8 @@ def run_cmd(
     files: list[str] = []
     failed = None  # the sweep is stored: a failed plot still lets the summary print
     try:
-        files = [str(f) for f in _plots(plot_sweep, ds, plot)] if plot is not None else []
+        if plot is not None:
+            files = [str(f) for f in _plots(plot_sweep, ds, output_folder(plot, "--plot"))]
     except Exception as exc:
         if os.environ.get("IMPACTLAB_DEBUG"):
             raise

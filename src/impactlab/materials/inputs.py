@@ -330,6 +330,12 @@ def get_material(value: Any, where: str = "material") -> Material:
         if not path.is_file():
             raise ValueError(f"{prefix}material file {text!r} does not exist")
         return from_file(path, where)
+    if ("/" in text or "\\" in text) and Path(text).exists():  # a path, not a name
+        what = "a folder" if Path(text).is_dir() else "a file whose name does not end in .toml"
+        raise ValueError(
+            f"{prefix}{text!r} is {what}; give a material's name, its properties "
+            f"('{EXAMPLE}') or a TOML file (.toml)"
+        )
     near = nearest(name_key(text))
     raise ValueError(
         f"{prefix}unknown material {text!r}{near}; known: {library_names()} (see 'impactlab "

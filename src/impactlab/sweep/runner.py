@@ -25,6 +25,7 @@ One chunk's computation is in :mod:`~impactlab.sweep.chunks`, the backends in
 from __future__ import annotations
 
 import dataclasses
+import re
 import sys
 import time
 import warnings
@@ -107,6 +108,27 @@ class _Backend:
     worker_timeout: float = DEFAULT_WORKER_TIMEOUT
 
 
+#: A scheduler's address: an optional scheme, then, for the network schemes (and none), a host
+#: (a name, an IPv4 or a bracketed IPv6 address) and a port.
+_ADDRESS = re.compile(r"(?:(?P<scheme>[A-Za-z][A-Za-z0-9+.-]*)://)?(?P<rest>\S+)")
+_HOST_PORT = re.compile(r"(?:\[[0-9A-Fa-f:.]+\]|[^\s:/\[\]]+):\d{1,5}")
+
+
+def _check_scheduler(scheduler: Any) -> None:
+    """ValueError, naming ``scheduler``, for what is not a Dask scheduler's address
+    (``tcp://host:8786``, ``host:8786``, ``tls://[::1]:8786``, ``inproc://...``), before the
+    store is made."""
+    found = _ADDRESS.fullmatch(scheduler) if isinstance(scheduler, str) else None
+    scheme = (found["scheme"] or "tcp").lower() if found else ""
+    if found is None or (
+        scheme in ("tcp", "tls", "ws", "wss") and not _HOST_PORT.fullmatch(found["rest"])
+    ):
+        raise ValueError(
+            f"scheduler {scheduler!r}: expected a Dask scheduler's address, a host and its "
+            "port, such as 'tcp://10.0.0.5:8786' or 'localhost:8786'"
+        )
+
+
 def _backend(
     backend: str | None,
     workers: int | None,
@@ -124,6 +146,8 @@ def _backend(
         raise ValueError(f"unknown backend {backend!r}; known: {', '.join(BACKENDS)}")
     if backend == "dask" and scheduler is None and client is None:
         raise ValueError("backend 'dask' needs scheduler='tcp://host:port' or a client")
+    if scheduler is not None:
+        _check_scheduler(scheduler)
     if workers is not None and (
         isinstance(workers, bool) or not isinstance(workers, int) or workers < 1
     ):

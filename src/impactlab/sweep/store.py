@@ -331,6 +331,15 @@ def open_dataset(path: Path) -> xr.Dataset:
         return xr.open_zarr(str(path), consolidated=False)
 
 
+def _node_type(path: Path) -> str | None:
+    """The ``node_type`` of the Zarr node at ``path`` ("group", "array"; None when unreadable)."""
+    try:
+        meta = json.loads((path / "zarr.json").read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+    return meta.get("node_type") if isinstance(meta, dict) else None
+
+
 def open_sweep(path: str | Path, *, verify: bool = True) -> xr.Dataset:
     """Open a sweep store (lazy, dask-backed). Status messages: ``ds.attrs['status_messages']``.
 
@@ -340,6 +349,11 @@ def open_sweep(path: str | Path, *, verify: bool = True) -> xr.Dataset:
     p = Path(path)
     if not (p / "zarr.json").is_file() and not SweepStore(p).exists():
         raise ValueError(f"{str(p)!r} is not a sweep store (no zarr.json)")
+    if (p.parent / "zarr.json").is_file() and _node_type(p) == "array":
+        raise ValueError(
+            f"{str(p)!r} is an array inside the sweep store {str(p.parent)!r}: give the store's "
+            "folder"
+        )
     check_metadata(p)
     damaged = SweepStore(p).verify() if verify else {}
     if damaged:
