@@ -114,7 +114,7 @@ def as_option(message: str, keys: Iterable[str], label: Callable[[str], str]) ->
     """``message`` with its leading parameter name among ``keys`` (``"mu must be >= 0"``, an API
     message) spelled as the user gave it, ``label(key)`` (``"--mu must be >= 0"``)."""
     head, _, rest = message.partition(" ")
-    if head not in keys or not rest or message.startswith(f"{label(head)} "):
+    if head not in keys or not rest or message.startswith(label(head)):
         return message  # not a parameter's, or labelled already ("mass (in c.toml) must ...")
     return f"{label(head)} {rest}"
 

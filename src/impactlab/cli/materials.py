@@ -27,8 +27,8 @@ def materials(
     as_json: bool = typer.Option(False, "--json", help="Machine-readable output (SI)."),
 ) -> None:
     """List the material library: E [GPa], nu, yield strength S_y [MPa], Brinell hardness HB
-    [kgf/mm^2; '-': not in the source], density [kg/m^3], the condition and the source (--json:
-    SI, with each source's citation and address).
+    [kgf/mm^2; '-': not in the source], density [kg/m^3] and the condition (the sources:
+    --json, in SI with each source's citation and address, and docs/materials.md).
 
     Any command's --material/--flat takes one of these names, or a material by values
     ("E=69GPa, nu=0.33, Sy=276MPa, rho=2700kg/m^3"; HB=, n=, brittle=yes optional), or a

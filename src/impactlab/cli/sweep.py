@@ -212,6 +212,7 @@ def uncertainty_cmd(
     """
     from impactlab.sweep import open_sweep
 
+    outputs = list(dict.fromkeys(outputs)) if outputs else outputs  # each once, in order
     for p in percentiles or ():  # before any case is computed
         if not 0 <= p <= 100:
             raise UserError(f"--percentile {p:g}: a percentile lies in [0, 100]")

@@ -116,7 +116,8 @@ def check_spin(spin: float, reach: float) -> float:
     if not spin_allowed(spin, reach):
         raise ValueError(
             f"spin = {spin!r} rad/s moves the contact point ({reach:.4g} m from the centre of "
-            f"mass, L/2 + R) at {abs(spin) * reach:.4g} m/s, beyond {MAX_SPEED:g} m/s; allowed: "
+            f"mass: L/2 + R for a rod, R for a sphere) at {abs(spin) * reach:.4g} m/s, beyond "
+            f"{MAX_SPEED:g} m/s; allowed: "
             f"|spin| <= {MAX_SPEED / reach:.4g} rad/s"
         )
     return spin
