@@ -26,12 +26,7 @@ from impactlab.dynamics.history import DentMap
 from impactlab.dynamics.input_checks import check_dent_grid
 from impactlab.dynamics.pint_fields import pint_quantities
 from impactlab.dynamics.provenance import result_record
-from impactlab.dynamics.result_display import (
-    BATCH_ONLY_NAMES,
-    ResultDisplay,
-    field_hint,
-    flag_rows,
-)
+from impactlab.dynamics.result_display import BATCH_ONLY_NAMES, ResultDisplay, field_hint
 from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
 from impactlab.materials import body_yields_first
 from impactlab.references import Reference
@@ -385,7 +380,7 @@ class DropResult(DerivedOutputs, ResultDisplay):
         data |= {k: getattr(self, k) for k in SUMMARY_FIELDS}
         if self.law_range is not None:
             data["law_range"] = self.law_range
-        data |= flag_rows(self.flags)
+        data |= self.flag_rows(self.flags)
         return data
 
     def display_units(self) -> dict[str, str]:

@@ -51,17 +51,6 @@ def field_hint(result: object, name: str, error: AttributeError) -> AttributeErr
     return error
 
 
-def flag_rows(flags: Any) -> dict[str, str]:
-    """The summary's last rows for the result flags ``flags`` (a ``ResultFlag``): ``ok`` = "no:
-    <the flags that make it so> (see the warnings)" for a result that is not ok (none for one
-    that is, as ``invert`` and ``analyze`` show it), then ``flags``, every flag's name."""
-    rows = {}
-    invalid = flags & ~ADVISORY_FLAGS
-    if invalid:
-        rows["ok"] = f"no: {flag_names(invalid)} (see the warnings)"
-    return rows | {"flags": flag_names(flags)}
-
-
 class ResultDisplay:
     """Mixin of the result classes: ``__repr__`` (one line, ``REPR_FIELDS``), ``__str__`` (a
     text table), ``_repr_html_`` (the same rows as HTML) and ``_rows``, from the class's
@@ -89,6 +78,17 @@ class ResultDisplay:
     def detail_rows(self) -> list[tuple[str, str, str]]:
         """``(label, text, unit)`` rows shown after the summary (none by default)."""
         return []
+
+    @staticmethod
+    def flag_rows(flags: Any) -> dict[str, str]:
+        """The summary's last rows for the result flags ``flags`` (a ``ResultFlag``): ``ok`` = "no:
+        <the flags that make it so> (see the warnings)" for a result that is not ok (none for one
+        that is, as ``invert`` and ``analyze`` show it), then ``flags``, every flag's name."""
+        rows = {}
+        invalid = flags & ~ADVISORY_FLAGS
+        if invalid:
+            rows["ok"] = f"no: {flag_names(invalid)} (see the warnings)"
+        return rows | {"flags": flag_names(flags)}
 
     #: A batch's column that one result does not hold -> where to read it (``field_hint``).
     BATCH_ONLY: ClassVar[Mapping[str, str]] = {}

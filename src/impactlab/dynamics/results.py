@@ -34,7 +34,7 @@ from impactlab.dynamics.input_checks import check_dent_grid
 from impactlab.dynamics.kernels.layout import HISTORY_FIELDS
 from impactlab.dynamics.pint_fields import pint_quantities
 from impactlab.dynamics.provenance import result_record
-from impactlab.dynamics.result_display import ResultDisplay, field_hint, flag_rows
+from impactlab.dynamics.result_display import ResultDisplay, field_hint
 from impactlab.flags import ADVISORY_FLAGS, ResultFlag, messages
 from impactlab.materials import body_yields_first
 from impactlab.references import Reference
@@ -293,7 +293,7 @@ class ImpactResult(DerivedOutputs, ResultDisplay):
                 del data[k]  # a sphere
         if self.law_range is not None:
             data["law_range"] = self.law_range
-        data |= flag_rows(self.flags)
+        data |= self.flag_rows(self.flags)
         return data
 
     REPR_FIELDS = ("law", "friction", "e", "delta_p", "sliding_length", "duration")
