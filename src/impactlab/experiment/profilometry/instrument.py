@@ -146,8 +146,14 @@ def _topography_kwargs(
             dxy = pixel_pair(pixel_size, "pixel_size (--pixel-size)")
         except ValueError as exc:
             raise FileFormatError(p, str(exc)) from None
+        # SurfaceTopography takes the sizes in the heights' unit (the file's, else the given
+        # one), which the reader then turns into m with the heights
+        try:
+            fac = _to_m(st, p, ch.unit) if ch.unit else length_factor(str(height_unit))
+        except ValueError as exc:
+            raise FileFormatError(p, str(exc)) from None
         n = ch.nb_grid_pts
-        kwargs["physical_sizes"] = (n[0] * dxy[0], n[1] * dxy[1])
+        kwargs["physical_sizes"] = (n[0] * dxy[0] / fac, n[1] * dxy[1] / fac)
     elif pixel_size is not None and len(ch.nb_grid_pts) == 2:
         # the sizes are in the file's unit, else in the given one (an x,y,z list has none)
         try:
