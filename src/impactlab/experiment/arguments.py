@@ -25,6 +25,7 @@ from impactlab.experiment.checks import (
 )
 from impactlab.experiment.kinematics import measure_impact
 from impactlab.experiment.kinematics.options import check_kinematics_options
+from impactlab.experiment.markers import length_factor
 from impactlab.experiment.profilometry import measure_dent
 from impactlab.experiment.profilometry.heightmap import pixel_pair
 from impactlab.experiment.result import ExperimentResult
@@ -176,6 +177,23 @@ class AnalysisRun:
         return ExperimentResult(*self.names, rod=rod)
 
 
+#: The length units a marker file or a height map may be in [m]: picometres to metres.
+UNIT_RANGE = (1e-12, 1.0)
+
+
+def _check_length_unit(name: str, unit: str) -> None:
+    """ValueError naming ``name`` (and its option) for a unit that is not a length, or one
+    outside ``UNIT_RANGE`` ('km', 'ly': no scan or marker file is written in them)."""
+    option = "--" + name.replace("_", "-")
+    factor = length_factor(unit, name=f"{name} ({option})")
+    if not UNIT_RANGE[0] <= factor <= UNIT_RANGE[1]:
+        raise ValueError(
+            f"{name} ({option}): {unit!r} is {factor:g} m, outside the units a measurement "
+            f"file is written in ({UNIT_RANGE[0]:g} m to {UNIT_RANGE[1]:g} m: 'nm', 'um', 'mm', "
+            "'m')"
+        )
+
+
 def checked_run(
     markers_path: Any,
     scan_path: Any,
@@ -204,6 +222,8 @@ def checked_run(
     for name, opt in names.items():
         if opt is not None and not isinstance(opt, str):
             raise TypeError(f"{name} must be a unit name such as 'mm' or None, got {opt!r}")
+        if opt is not None:
+            _check_length_unit(name, opt)
     return AnalysisRun(
         None if markers_path is None else check_input_file(markers_path, "markers_path"),
         None if scan_path is None else check_input_file(scan_path, "scan_path"),
