@@ -23,6 +23,19 @@ __all__ = ["bottom", "quadric_min"]
 _FLAT_SIGMAS = 3.0
 
 
+#: A pixel whose residual from the fitted paraboloid exceeds this many robust sigmas is a
+#: spike, left out of the fit (Gaussian noise reaches it once in 10^15 pixels).
+_SPIKE_SIGMAS = 8.0
+
+
+def _not_spikes(res: np.ndarray) -> np.ndarray:
+    """The residuals ``res`` [m] of a fit that are not spikes: within ``_SPIKE_SIGMAS`` robust
+    sigmas (1.4826 MAD, at least 0.3 of the RMS, for heights in coarse steps) of zero."""
+    mad = 1.4826 * float(np.median(np.abs(res - np.median(res))))
+    rms = float(np.sqrt(np.mean(res * res)))
+    return np.abs(res) <= _SPIKE_SIGMAS * max(mad, 0.3 * rms, 1e-15)
+
+
 def quadric_min(
     zl: np.ndarray,
     valid: np.ndarray,
@@ -57,6 +70,11 @@ def quadric_min(
     A = np.column_stack([np.ones_like(u), u, v, u * u, u * v, v * v])
     coef, *_ = np.linalg.lstsq(A, zz, rcond=None)
     res = zz - A @ coef
+    keep = _not_spikes(res)
+    if not keep.all() and keep.sum() >= 10:  # a spike (dust, a dropout): fitted without it
+        A, zz = A[keep], zz[keep]
+        coef, *_ = np.linalg.lstsq(A, zz, rcond=None)
+        res = zz - A @ coef
     s2 = float(res @ res) / max(zz.size - 6, 1)
     cov = s2 * np.linalg.pinv(A.T @ A)
 

@@ -182,7 +182,37 @@ def find_dent(
     _check_sign(sf, -float(depths[best]), volume, detect_sigma, min_pixels)
     idx = int(np.argmin(np.where(comp, zs, np.inf)))
     i0, j0 = np.unravel_index(idx, zs.shape)
-    return int(i0), int(j0)
+    return _spike_free(sf, comp, (int(i0), int(j0)), warnings)
+
+
+#: The median filter's window [pixels] that sets a spike apart from the dent's bottom: a
+#: depression of fewer than half its 25 pixels is a spike (dust, a flank's dropout), not a dent.
+SPIKE_WINDOW = 5
+#: A pixel is a spike when the smoothed map lies this many noise sigmas below the median-filtered
+#: map there (at a dent's bottom the two agree within the noise: its curvature over two pixels
+#: is far below it).
+SPIKE_SIGMAS = 20.0
+
+
+def _spike_free(
+    sf: Surface, comp: np.ndarray, ij: tuple[int, int], warnings: list[str] | None
+) -> tuple[int, int]:
+    """``ij``, the smoothed map's deepest pixel of the dent ``comp``, unless it is a spike (one
+    pixel, or a few, far below its neighbours): then the deepest pixel of ``comp`` on the map
+    median-filtered over ``SPIKE_WINDOW`` pixels, with a warning into ``warnings``."""
+    zm = ndimage.median_filter(fill_nan(sf.zl)[0], size=SPIKE_WINDOW, mode="nearest")
+    if zm[ij] - sf.zs[ij] <= SPIKE_SIGMAS * max(sf.lev.sigma, sf.sig_s):
+        return ij
+    i1, j1 = np.unravel_index(int(np.argmin(np.where(comp, zm, np.inf))), zm.shape)
+    if warnings is not None:
+        warnings.append(
+            f"a spike at x = {ij[1] * sf.dx * 1e3:.4g} mm, y = {ij[0] * sf.dy * 1e3:.4g} mm "
+            f"({(sf.zl[ij] if sf.valid[ij] else sf.zs[ij]) * 1e6:.4g} um deep, the median of "
+            f"its neighbours {zm[ij] * 1e6:.4g} um) was the deepest pixel; the bottom is taken "
+            f"at x = {j1 * sf.dx * 1e3:.4g} mm, y = {i1 * sf.dy * 1e3:.4g} mm, and the bottom's "
+            "fit leaves such pixels out"
+        )
+    return int(i1), int(j1)
 
 
 def dent_region(sf: Surface, ij: tuple[int, int], thr: float) -> np.ndarray:
