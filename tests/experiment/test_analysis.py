@@ -240,36 +240,40 @@ def test_impossible_dents_are_refused(
         assert needle in res.errors["scan"]
 
 
-def test_implausible_dents_are_warned(plain_scan: tuple[Path, float, Any]) -> None:
-    """A scan in metres read as mm: a dent of 22 nm, measured but with warnings naming the unit."""
+def test_implausible_dents_are_doubted(plain_scan: tuple[Path, float, Any]) -> None:
+    """A scan in metres read as mm: a dent of 22 nm, measured, but not ok: the doubt names the
+    unit (the plain warnings it sums up are not repeated)."""
     path, dx, truth = plain_scan
-    res = analyze(None, path, pixel_size=dx, height_unit="mm")
-    assert res.ok and res.dent is not None
+    with pytest.warns(ImplausibleInputWarning, match="a height unit 1000 times too small"):
+        res = analyze(None, path, pixel_size=dx, height_unit="mm")
+    assert not res.ok and res.dent is not None
     assert res.dent.delta_p.value == pytest.approx(truth.groove.depth * 1e-3, rel=0.02)
-    text = " ".join(res.warnings)
-    assert "shallower than 0.1 um" in text and "height unit (read as 'mm')" in text
-    assert "times shallower than a tip of radius R = 8.8 mm" in text
+    text = " ".join(res.doubts)
+    assert "times shallower than the tip's cap there" in text
+    assert "height unit (read as 'mm')" in text
+    assert not any("shallower than 0.1 um" in w for w in res.warnings)
     good = analyze(None, path, pixel_size=dx, height_unit="m")
     assert good.ok and not good.warnings
 
 
-def test_a_shallow_dent_is_warned_once(
+def test_a_shallow_dent_is_said_once(
     plain_scan: tuple[Path, float, Any], drops: dict, rod: Any
 ) -> None:
-    """A 22 nm dent with the markers: the scan stage's warning names the height unit, and the
-    inversion's warnings join the result's (``inversion: ...``) without repeating it; none
-    leaks as a Python warning."""
+    """A 22 nm dent with the markers: the scan stage's doubt names the height unit, and the
+    inversion's warnings join the result's (``inversion: ...``) without repeating the shallow
+    dent; the doubt is the one Python warning."""
     path, dx, _ = plain_scan
     d = drops[20]
-    with warnings.catch_warnings():
-        warnings.simplefilter("error", ImplausibleInputWarning)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
         res = analyze(
             d.c3d, path, rod, geometry=d.geometry, pixel_size=dx, height_unit="mm", n_samples=500
         )
     assert res.inversion is not None, res.errors
-    shallow = [w for w in res.warnings if "shallower than 0.1 um" in w]
-    assert len(shallow) == 1 and shallow[0].startswith("scan: ")
-    assert "height unit (read as 'mm')" in shallow[0]
+    unit = [w for w in caught if "a height unit 1000 times too small" in str(w.message)]
+    assert len(unit) == 1
+    assert not any("shallower than 0.1 um" in w for w in res.warnings)
+    assert sum("height unit (read as 'mm')" in x for x in res.doubts) == 1
 
 
 def test_sign_flipped_scan_is_refused_then_read_over(

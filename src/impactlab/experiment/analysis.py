@@ -51,7 +51,11 @@ from impactlab.experiment.consistency import check_against_model, check_single_i
 from impactlab.experiment.kinematics import ImpactKinematics, measure_impact, parse_up
 from impactlab.experiment.markers import read_markers
 from impactlab.experiment.profilometry import DentMetrics, measure_dent, read_scan
-from impactlab.experiment.profilometry.plausibility import PLAUSIBLE_DEPTH, check_dent
+from impactlab.experiment.profilometry.plausibility import (
+    PLAUSIBLE_DEPTH,
+    check_dent,
+    height_unit_doubt,
+)
 from impactlab.experiment.result import ExperimentResult
 from impactlab.experiment.rigid import MarkerGeometry
 from impactlab.experiment.saving import check_folder, save_outputs
@@ -106,7 +110,10 @@ def _scan_stage(res: ExperimentResult, path: Path, rod: Rod, opts: dict[str, Any
         res.errors["scan"] = _message(exc)
         return
     res.dent = dent
-    res.warnings += [f"scan: {w}" for w in (*dent.warnings, *plausible)]
+    unit_doubt = height_unit_doubt(dent, tip_radius=rod.tip_radius, scan=hm)
+    res.warnings += [f"scan: {w}" for w in (*dent.warnings, *(() if unit_doubt else plausible))]
+    if unit_doubt:  # read in nm for um: not a result to take as measured (says the warnings')
+        res.add_doubt(f"scan: {unit_doubt}")
     if dent.direction_ambiguous:
         res.warnings.append(
             "scan: the sliding direction is ambiguous (both ends of the dent equally sharp)"

@@ -24,12 +24,16 @@ from impactlab.experiment.markers import length_factor
 from impactlab.experiment.profilometry.heightmap import HeightMap
 from impactlab.experiment.profilometry.metrics import DentMetrics
 
-__all__ = ["check_dent"]
+__all__ = ["check_dent", "height_unit_doubt"]
 
 #: Shallowest dent [m] a profilometer resolves; below it the height unit is wrong.
 MIN_DEPTH = 1e-9
 #: Shallowest plausible dent [m] of a drop test; below it a warning names the height unit.
 PLAUSIBLE_DEPTH = 0.1e-6
+#: A dent shallower than PLAUSIBLE_DEPTH and this many times shallower than the tip's cap at its
+#: width is read in a height unit 1000 times too small (um heights read as nm: the ratio of a
+#: residual dent to the cap lies near 1, R over the residual crater's radius of curvature).
+UNIT_DOUBT_RATIO = 300.0
 
 
 def _length(x: float) -> str:
@@ -128,3 +132,21 @@ def check_dent(
             f"R = {_length(R)} at the dent's width {_length(width)}: check {heights} and {pixels}"
         )
     return tuple(warnings)
+
+
+def height_unit_doubt(
+    dent: DentMetrics, *, tip_radius: float, scan: HeightMap | None = None
+) -> str:
+    """The doubt (a result not ok) of a dent both shallower than 0.1 um and more than
+    ``UNIT_DOUBT_RATIO`` times shallower than the tip's cap at its width: heights read in a unit
+    1000 times too small; "" otherwise."""
+    depth, width = dent.delta_p.value, dent.width.value
+    cap = _cap_depth(width, float(tip_radius))
+    if not (depth < PLAUSIBLE_DEPTH and depth * UNIT_DOUBT_RATIO < cap):
+        return ""
+    heights, _ = _units(scan)
+    return (
+        f"delta_p = {_length(depth)} in a dent {_length(width)} wide, {cap / depth:.3g} times "
+        f"shallower than the tip's cap there ({_length(cap)}): a height unit 1000 times too "
+        f"small? check {heights}"
+    )
