@@ -270,8 +270,12 @@ def _print_summary(res: ExperimentResult) -> None:
         why.append("the marker geometry is in doubt")
     if getattr(res, "implausible", None):  # (a result's stand-in may lack it)
         why.append("the result is implausible")
+    see = ["the warnings"] if why else []
+    if getattr(res, "errors", None):  # a stage failed: its error ends the output
+        why.append(f"the {' and '.join(res.errors)} stage failed")
+        see.append("the error")
     if why:
-        rows.append(("ok", f"no: {' and '.join(why)} (see the warnings)", ""))
+        rows.append(("ok", f"no: {' and '.join(why)} (see {' and '.join(see)})", ""))
     if res.dent is not None:
         name, text, unit = field_row("sliding_direction", res.dent.sliding_angle, "rad")
         ambiguous = " (ambiguous)" if res.dent.direction_ambiguous else ""
