@@ -281,12 +281,25 @@ def _plain(name: str, value: Any) -> Any:
     return float(m) if np.ndim(m) == 0 else np.asarray(m, dtype=np.float64)
 
 
+def _holds_quantities(values: Any) -> bool:
+    """Whether ``values`` is a list, a tuple or a 1-D array of strings that holds a string or a
+    pint Quantity among its elements (each one a quantity with its own unit)."""
+    if isinstance(values, np.ndarray):
+        return values.ndim == 1 and values.dtype.kind == "U"
+    return isinstance(values, list | tuple) and any(
+        isinstance(v, str) or is_quantity(v) for v in values
+    )
+
+
 def check_array(name: str, values: Any, unit: str = "") -> np.ndarray:
     """The rule applied to an array: a float64 array of ``values`` (NaN allowed; with a
-    ``unit``, a pint Quantity array or a string with units is converted; without one, a
+    ``unit``, a pint Quantity array, a string with units, or a list of them, each element in
+    its own unit (``["20 deg", 0.5]``: a bare number in ``unit``), is converted; without one, a
     dimensionless Quantity is read as its pure number, percent as a fraction, and one with a
     dimension is refused, as :func:`check_finite` reads a scalar); ValueError naming ``name``
     for None, bools, strings or anything that is not numeric."""
+    if unit and _holds_quantities(values):  # ["20 deg", "45 deg"]: each read in its unit
+        values = [magnitude(f"{name}[{i}]", v, unit) for i, v in enumerate(values)]
     values = magnitude(name, values, unit) if unit else _plain(name, values)
     err = _not_a_number(name, values)
     if err is not None:

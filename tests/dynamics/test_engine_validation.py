@@ -264,8 +264,10 @@ def test_simulate_batch_refuses_bad_arrays_with_the_parameter_named() -> None:
         simulate_batch(PAPER_ROD, mu="abc", angle=0.3, vy=-1.0)
     with pytest.raises(ValueError, match="vy is required"):
         simulate_batch(PAPER_ROD, angle=0.3, vy=None)
-    with pytest.raises(ValueError, match="vy must hold real numbers, got an array of strings"):
+    with pytest.raises(ValueError, match=r"vy\[1\]: the string '-2' has no unit; pass a number"):
         simulate_batch(PAPER_ROD, angle=0.3, vy=[-1.0, "-2"])
+    with pytest.raises(ValueError, match="vy must hold real numbers, got an array of bytes"):
+        simulate_batch(PAPER_ROD, angle=0.3, vy=np.array([b"-1", b"-2"]))
     with pytest.raises(ValueError, match="mu must hold real numbers, got an array of bools"):
         simulate_batch(PAPER_ROD, angle=0.3, vy=-1.0, mu=[True, False])
     with pytest.raises(ValueError, match="constant_angle must be True or False"):

@@ -22,9 +22,17 @@ MC_INTERVAL = (2.5, 97.5)
 #: The words of the inversion's warnings that doubt its result (``InversionResult.doubts``,
 #: ``ok``; ``impactlab invert --json``'s ``doubts``): a velocity change that no impact gives
 #: (dv_cy implying e outside [0, 1]), a duration no rigid-body impact has (the two that
-#: ``impactlab analyze`` holds as ``experiment.analysis.IMPOSSIBLE_PHRASES``), and a rod whose
-#: mass and inertia do not fit (``analyze``'s doubt of the rod).
-DOUBT_PHRASES = ("no impact gives it", "far longer than a rigid-body impact", INERTIA_MISFIT)
+#: ``impactlab analyze`` holds as ``experiment.analysis.IMPOSSIBLE_PHRASES``), a Monte Carlo that
+#: discarded more than 5 % of its samples for a dent measure at or below zero (an L_s or delta_p
+#: within about 1.6 sigma of zero: T, which rests on it, is not resolved; ``analyze`` too), and a
+#: rod whose mass and inertia do not fit (``analyze``'s doubt of the rod).
+DOUBT_PHRASES = (
+    "no impact gives it",
+    "far longer than a rigid-body impact",
+    "drew |sliding_length| <= 0",
+    "drew |delta_p| < 0",
+    INERTIA_MISFIT,
+)
 #: Units of the numeric fields of :class:`InversionResult` (for its tables).
 _UNITS = {
     k: unit
