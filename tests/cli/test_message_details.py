@@ -32,3 +32,9 @@ def test_an_analysis_whose_stage_failed_has_an_ok_row(tmp_path: Path, cli_main) 
                               "--geometry", str(data / "markers.toml"))  # fmt: skip
     assert code == 2 and "error: scan: " in err
     assert "no: the scan stage failed (see the error)" in " ".join(out.split())
+
+
+def test_a_drop_too_slow_to_integrate_names_the_option(cli_main) -> None:
+    code, _, err = cli_main("drop", "--angle", "20 deg", "--vy", "-1e-12 m/s")
+    assert code == 2
+    assert err.startswith('error: --vy "-1e-12 m/s": the tip\'s normal approach speed')

@@ -300,6 +300,10 @@ def _density_worded(found: re.Match[str], opt: ConfigOptions) -> str:
     return f"{parts[0]}, {parts[1]} and {parts[2]} {found['rest']}"
 
 
+#: The start of a drop's refusal of an approach too slow to integrate (``dynamics.drop``).
+_SLOW = "velocity: the tip's normal approach speed"
+
+
 def approach_worded(message: str, opt: ConfigOptions) -> str:
     """The API's refusal of a rod that does not approach the flat naming the velocity options
     as typed (``--vy "1.41 m/s"``; a rod's ``--spin`` where given, with its term of the normal
@@ -312,12 +316,14 @@ def approach_worded(message: str, opt: ConfigOptions) -> str:
     density = _DENSITY.fullmatch(message)
     if density is not None:
         return _density_worded(density, opt)
-    found = _APPROACH.fullmatch(message)
-    if found is None:
-        return message
     spin = opt.given("spin") and opt.given("angle")  # a rod's: a sphere's spins in place
     keys = [k for k in ("vy", "speed", "incidence") if opt.given(k)] + ["spin"] * spin
     typed = ", ".join(f'{opt.label(k)} "{opt.values[k]}"' for k in keys)
+    if message.startswith(_SLOW) and typed:  # a drop's approach too slow to integrate
+        return f"{typed}: {message.removeprefix('velocity: ')}"
+    found = _APPROACH.fullmatch(message)
+    if found is None:
+        return message
     formula = "vy - spin * (L/2) cos(angle)" if spin else "vy"
     return (
         f"{typed}: the {found['what']} does not approach the flat (its normal velocity "
