@@ -21,7 +21,14 @@ _SNIFF = 8192
 def _read_text_markers(p: Path, units: str | None, rate: float | None) -> MarkerTracks:
     """A marker text file in the layout its first lines show: a QTM TSV export, a Vicon Nexus
     CSV export, else impactlab's marker CSV."""
-    head = p.read_bytes()[:_SNIFF].decode("utf-8", errors="replace") if p.is_file() else ""
+    raw = p.read_bytes()[:_SNIFF] if p.is_file() else b""
+    if len(raw) >= 512 and raw[1] == 0x50 and b"\x00" in raw:  # a C3D file named as text
+        raise FileFormatError(
+            p,
+            f"a C3D file (the 0x50 signature of its header), not {p.suffix} text: rename it to "
+            ".c3d",
+        )
+    head = raw.decode("utf-8", errors="replace")
     if looks_like_qtm(head):
         return read_qtm_tsv(p, units=units, rate=rate)
     if looks_like_vicon(head):

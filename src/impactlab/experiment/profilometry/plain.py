@@ -112,9 +112,16 @@ def _load_text(p: Path) -> tuple[np.ndarray, dict[str, str]]:
                 vals.append(math.nan)
                 continue
             try:
-                vals.append(parse_number(c, sep))
+                value = parse_number(c, sep)
             except ValueError:
                 raise FileFormatError(p, f"line {ln}: {not_a_number(c)}") from None
+            if not math.isfinite(value):  # 'inf', '1e400': not a height, nor a mark of none
+                raise FileFormatError(
+                    p,
+                    f"line {ln}: the cell {c!r} is not a finite height; mark a pixel without "
+                    "data by an empty cell, nan, bad or na",
+                )
+            vals.append(value)
         if rows and len(vals) != len(rows[0]):
             raise FileFormatError(
                 p,
