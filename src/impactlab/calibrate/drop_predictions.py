@@ -54,7 +54,8 @@ class DropPredictions:
         predicted: ``draws``, or all the posterior holds when it holds fewer), failed (the
         share of draws whose case failed), extrapolated (the share of the draws that ran
         whose contact law was used beyond its verified range; NaN when none ran or not known)
-        and, when some failed, reason (the commonest; a refused case's names the refusal)."""
+        and reason (the commonest failure; a refused case's names the refusal; "" when none
+        failed)."""
         rows = []
         for d, label in enumerate(self.labels):
             st = self.status[:, d]
@@ -68,9 +69,7 @@ class DropPredictions:
                 row = {"drop": label, "quantity": q, "unit": MEASURABLE[q].unit,
                        "median": float(med), "q05": float(q05), "q95": float(q95),
                        "n_draws": int(st.size), "failed": failed,
-                       "extrapolated": extrapolated}  # fmt: skip
-                if failed > 0:
-                    row["reason"] = self.reason(d)
+                       "extrapolated": extrapolated, "reason": self.reason(d)}  # fmt: skip
                 rows.append(row)
         return rows
 

@@ -185,7 +185,16 @@ def read_measurements(path: str | Path, *, measured: bool = True) -> Measurement
             raise ValueError(f"{p}: not valid TOML ({exc})") from None
         unknown = set(doc) - {"drop", "units"}
         if unknown:
-            raise ValueError(f"{p}: unknown table(s) {sorted(unknown)}; expected [[drop]], [units]")
+            what = "key(s)" if any(not isinstance(doc[k], dict) for k in unknown) else "table(s)"
+            invert = (
+                " (it looks like an input file of impactlab invert --file, one impact's values; "
+                "a measurements file holds a [[drop]] table per drop)"
+                if "drop" not in doc and {"angle", "mu"} & set(doc)
+                else ""
+            )
+            raise ValueError(
+                f"{p}: unknown {what} {sorted(unknown)}; expected [[drop]], [units]{invert}"
+            )
         drops = doc.get("drop", [])
         if not isinstance(drops, list):
             raise ValueError(f"{p}: 'drop' must be an array of tables ([[drop]])")

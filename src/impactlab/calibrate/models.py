@@ -192,6 +192,27 @@ def _threads_for(n_cases: int) -> Iterator[None]:
         numba.set_num_threads(before)
 
 
+def _checked_theta(theta: Any, params: Sequence[Parameter]) -> np.ndarray:
+    """``theta`` as a (W, P) float array, P the number of ``params``; ValueError for another
+    shape and for a value that is not finite, naming the parameter (a NaN would be read as
+    "unset" downstream, the preset's value)."""
+    arr = np.atleast_2d(np.asarray(theta, dtype=np.float64))
+    names = ", ".join(p.name for p in params)
+    if arr.ndim != 2 or arr.shape[1] != len(params):
+        raise ValueError(
+            f"theta must have shape (W, {len(params)}), a row of ({names}) per draw, got "
+            f"{arr.shape}"
+        )
+    bad = ~np.isfinite(arr)
+    if bad.any():
+        row, col = (int(i) for i in np.argwhere(bad)[0])
+        raise ValueError(
+            f"theta[{row}, {col}] ({params[col].name}) is {float(arr[row, col])!r}; every value of "
+            f"({names}) must be finite"
+        )
+    return arr
+
+
 def predict(
     model: CandidateModel,
     meas: Measurements,
@@ -208,7 +229,7 @@ def predict(
     categories. ValueError naming a quantity that is not measurable or that ``model`` does not
     predict."""
     _check_cells(model, engine)
-    theta = np.atleast_2d(np.asarray(theta, dtype=np.float64))
+    theta = _checked_theta(theta, params)
     w, d_all = theta.shape[0], meas.n_drops
     quantities = meas.quantities if quantities is None else _quantities(model, quantities)
     flexible = model.body == FLEXIBLE_BODY

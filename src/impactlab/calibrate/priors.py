@@ -70,12 +70,7 @@ class Parameter:
     sd: float = math.nan
 
     def __post_init__(self) -> None:
-        allowed = tuple(n for n in NUMERIC_INPUTS if n not in KINEMATICS)
-        if self.name not in allowed:
-            raise ValueError(
-                f"unknown free parameter {self.name!r}{did_you_mean(self.name, allowed)}; a "
-                f"parameter is one of {', '.join(allowed)}"
-            )
+        check_parameter_name(self.name)
         if self.kind not in PRIOR_KINDS:
             raise ValueError(
                 f"prior of {self.name}: unknown kind {self.kind!r}; known: {', '.join(PRIOR_KINDS)}"
@@ -297,13 +292,25 @@ def _suggested(name: str, unit: str, text: str, other: Any) -> str:
     return shown if ref != 0 and 1e-3 <= abs(x / ref) <= 1e3 else unit
 
 
+def check_parameter_name(name: str) -> None:
+    """ValueError, with the nearest name, for what is not a free parameter (a numeric input
+    that is not one of the measured drop's kinematics)."""
+    allowed = tuple(n for n in NUMERIC_INPUTS if n not in KINEMATICS)
+    if name not in allowed:
+        raise ValueError(
+            f"unknown free parameter {name!r}{did_you_mean(name, allowed)}; a "
+            f"parameter is one of {', '.join(allowed)}"
+        )
+
+
 def parse_parameter(name: str, spec: Any) -> Parameter:
     """A Parameter from a prior text, ``"uniform(100 MPa, 1 GPa)"`` (what
     ``Parameter.describe`` writes), or a mapping ``{"prior": "normal", "mean": ..., "sd": ...,
     "low": ..., "high": ...}``; bare numbers are in the input's unit (``Parameter.unit``),
     unless another number of the prior carries a unit: then a bare one (other than 0 or an
-    infinite bound) is refused."""
-    unit = INPUTS[name].unit if name in INPUTS else "1"
+    infinite bound) is refused. The name is checked first (its unit reads the numbers)."""
+    check_parameter_name(name)
+    unit = INPUTS[name].unit
     if isinstance(spec, dict):
         _mixed_units(name, unit, spec, [v for k, v in spec.items() if k in _NUMBERS])
         kind = str(spec.get("prior", "uniform"))
