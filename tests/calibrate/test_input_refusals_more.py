@@ -43,3 +43,10 @@ def test_predict_refuses_a_theta_it_cannot_read(theta: list, message: str) -> No
 def test_an_invert_file_is_named_as_such() -> None:
     with pytest.raises(ValueError, match=r"unknown key\(s\) .*an input file of impactlab invert"):
         read_measurements(DATA / "measurements.toml")
+
+
+def test_a_subnormal_sigma_is_refused(tmp_path: Path) -> None:
+    path = tmp_path / "tiny.csv"
+    path.write_text("label,angle [deg],vy,e,e_sigma\na,20,-1.41,0.42,1e-320\n", encoding="utf-8")
+    with pytest.raises(ValueError, match=r"drop 1 \(a\): e_sigma = 1e-320 is below 2\.23e-308"):
+        read_measurements(path)

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import math
 import re
+import sys
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
@@ -311,6 +312,10 @@ def _check_row(where: str, row: Row, nan: set[str]) -> None:
         if not (math.isfinite(s) and s > 0.0):
             got = f"{math.degrees(s):g} deg" if q in ANGLES else repr(s)
             raise ValueError(f"{where}: {q}_sigma must be finite and > 0, got {got}")
+        if s < sys.float_info.min:  # subnormal: 1/sigma^2 overflows the likelihood
+            raise ValueError(
+                f"{where}: {q}_sigma = {s!r} is below {sys.float_info.min:.3g} in SI: too small"
+            )
         _check_range(where, row, q, x, s)
         if q == "e_t" and row.inputs.get("vx", 0.0) == 0.0:
             raise ValueError(f"{where}: e_t needs a drop with vx != 0")

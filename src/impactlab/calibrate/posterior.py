@@ -50,8 +50,9 @@ def pointwise_loglik(pred: Prediction, meas: Measurements) -> np.ndarray:
         if not have.any():
             continue
         f = pred.values[q][:, have]
-        r = (f - y[have]) / s[have]
-        term = -0.5 * (r * r + _LOG_2PI) - np.log(s[have])
+        with np.errstate(over="ignore"):  # a residual of many sigmas: a likelihood of zero
+            r = (f - y[have]) / s[have]
+            term = -0.5 * (r * r + _LOG_2PI) - np.log(s[have])
         ll[:, have] += np.where(np.isfinite(term), term, -np.inf)
     if meas.correlation:
         correlated_loglik(pred.values, meas, ll)
