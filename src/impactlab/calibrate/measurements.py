@@ -303,7 +303,8 @@ def _refuse_duplicates(
     if where:
         file = "" if lines is None else f"{source}: "
         raise ValueError(
-            f"{file}duplicate drop labels: {'; '.join(where)}: give each drop its own label"
+            f"{file}duplicate drop labels: {'; '.join(where)}: give each drop its own label "
+            "(a drop without one is named 'drop N', N its place in the file)"
         )
 
 
