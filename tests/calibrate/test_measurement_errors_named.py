@@ -50,7 +50,7 @@ def test_duplicate_labels_name_the_file_and_its_lines(tmp_path):
         read_measurements(path)
     assert str(info.value) == (
         f"{path}: duplicate drop labels: 'a' on lines 2 and 5 (drops 1 and 3): give each drop "
-        "its own label"
+        "its own label (a drop without one is named 'drop N', N its place in the file)"
     )
     toml = tmp_path / "m.toml"
     drop = '[[drop]]\nlabel = "a"\nangle = "20 deg"\nvy = -1.41\nmu = 0.2\ne = 0.4\n'
