@@ -14,7 +14,15 @@ from impactlab._validation import check_finite, check_nonnegative
 from impactlab.bodies._checks import INERTIA_MISFIT
 from impactlab.units import has_unit, parse_quantity
 
-__all__ = ["DOUBT_PHRASES", "MC_INTERVAL", "InversionResult", "Measured", "doubting", "measured"]
+__all__ = [
+    "DOUBT_PHRASES",
+    "MC_INTERVAL",
+    "UNRESOLVED_DENT_PHRASES",
+    "InversionResult",
+    "Measured",
+    "doubting",
+    "measured",
+]
 
 #: The percentiles [%] of the Monte Carlo's interval (``T_interval_mc``, ``F_interval_mc``): the
 #: central 95 %.
@@ -26,11 +34,12 @@ MC_INTERVAL = (2.5, 97.5)
 #: discarded more than 5 % of its samples for a dent measure at or below zero (an L_s or delta_p
 #: within about 1.6 sigma of zero: T, which rests on it, is not resolved; ``analyze`` too), and a
 #: rod whose mass and inertia do not fit (``analyze``'s doubt of the rod).
+#: The Monte Carlo's words for samples discarded for a dent measure at or below zero.
+UNRESOLVED_DENT_PHRASES = ("drew |sliding_length| <= 0", "drew |delta_p| < 0")
 DOUBT_PHRASES = (
     "no impact gives it",
     "far longer than a rigid-body impact",
-    "drew |sliding_length| <= 0",
-    "drew |delta_p| < 0",
+    *UNRESOLVED_DENT_PHRASES,
     INERTIA_MISFIT,
 )
 #: Units of the numeric fields of :class:`InversionResult` (for its tables).

@@ -147,15 +147,6 @@ def checked_model(
     return contact_model(body, flat, law, law_params)
 
 
-def _is_partial_slip(friction: Any) -> bool:
-    """True for the name of the partial-slip model (an unknown name: False, the checks below
-    raise its error in their order)."""
-    try:
-        return get_friction(friction).kind is FrictionKind.PARTIAL_SLIP
-    except (TypeError, ValueError, KeyError):
-        return False
-
-
 def _friction_name(friction: Any) -> str:
     """The registered name of ``friction`` ("" for an unknown one: the checks below raise its
     error in their order)."""
@@ -182,7 +173,7 @@ def check_impact(
 ) -> ImpactInputs:
     """All the inputs of one impact (``simulate``'s arguments) checked and in SI. The default
     tolerance is ``DEFAULT_RTOL``, ``PARTIAL_SLIP_RTOL`` for the partial-slip engine."""
-    if rtol is None and _is_partial_slip(friction):
+    if rtol is None and _friction_name(friction) == FrictionKind.PARTIAL_SLIP.value:
         rtol = PARTIAL_SLIP_RTOL
     fast = _plain_inputs(body, flat, angle, velocity, spin, mu, gravity, rtol, constant_angle)
     if rtol is not None:

@@ -68,11 +68,10 @@ def check_friction_rtol(rtol: float, friction: str) -> float:
     """``rtol`` (checked by ``check_rtol``), refused above the friction model's own cap:
     ``PARTIAL_SLIP_RTOL_MAX`` for ``partial_slip``, ``MINDLIN_RTOL_MAX`` for ``mindlin`` (the
     other models: the whole range). ValueError, one line, naming the model and its cap."""
-    cap = _FRICTION_RTOL_MAX.get(friction)
-    if cap is not None and rtol > cap[0]:
+    if rtol > friction_rtol_max(friction):
+        cap, why = _FRICTION_RTOL_MAX[friction]
         raise ValueError(
-            f"rtol {rtol:g} is too loose for friction {friction!r} (allowed: up to {cap[0]:g}; "
-            f"{cap[1]}"
+            f"rtol {rtol:g} is too loose for friction {friction!r} (allowed: up to {cap:g}; {why}"
         )
     return rtol
 

@@ -200,9 +200,13 @@ def _spike_free(
     """``ij``, the smoothed map's deepest pixel of the dent ``comp``, unless it is a spike (one
     pixel, or a few, far below its neighbours): then the deepest pixel of ``comp`` on the map
     median-filtered over ``SPIKE_WINDOW`` pixels, with a warning into ``warnings``."""
-    zm = ndimage.median_filter(fill_nan(sf.zl)[0], size=SPIKE_WINDOW, mode="nearest")
-    if zm[ij] - sf.zs[ij] <= SPIKE_SIGMAS * max(sf.lev.sigma, sf.sig_s):
+    zf = fill_nan(sf.zl)[0]
+    h = SPIKE_WINDOW // 2  # the window's median at ij first: the whole map only for a spike
+    i, j = ij
+    local = float(np.median(zf[max(i - h, 0) : i + h + 1, max(j - h, 0) : j + h + 1]))
+    if local - sf.zs[ij] <= SPIKE_SIGMAS * max(sf.lev.sigma, sf.sig_s):
         return ij
+    zm = ndimage.median_filter(zf, size=SPIKE_WINDOW, mode="nearest")
     i1, j1 = np.unravel_index(int(np.argmin(np.where(comp, zm, np.inf))), zm.shape)
     if warnings is not None:
         warnings.append(
