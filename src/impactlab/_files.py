@@ -62,6 +62,8 @@ def folder_refusal(path: str | os.PathLike[str], name: str) -> str | None:
     except OSError as exc:
         words = oserror_words(exc)
         why = words[0] if words is not None else (exc.strerror or str(exc))
+        if exc.errno == errno.ENOENT:  # the folder exists: a file system that makes no files
+            why = "it takes no new files, as in /proc or /sys"
         where = "the folder" if existing == given else f"its folder {str(existing)!r}"
         return f"{name} {str(path)!r}: {where} is not writable ({why}); choose another {name}"
     shutil.rmtree(probe, ignore_errors=True)

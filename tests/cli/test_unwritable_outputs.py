@@ -65,6 +65,20 @@ def test_folder_refusal_names_the_option_and_the_path_as_typed(
     assert folder_refusal(tmp_path, "--out") is None
 
 
+def test_a_folder_that_takes_no_files_is_not_called_missing(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
+    """A folder of a virtual file system (/proc) exists but refuses new entries with ENOENT:
+    the reason given is not "No such file or directory"."""
+    virtual = tmp_path / "virtual"
+    virtual.mkdir()
+    _deny(monkeypatch, virtual, errno.ENOENT)
+    assert folder_refusal(virtual, "--out") == (
+        f"--out {str(virtual)!r}: the folder is not writable (it takes no new files, as in "
+        "/proc or /sys); choose another --out"
+    )
+
+
 def test_simulate_plot_refuses_an_unwritable_out_before_running(
     cli_main: Any, monkeypatch: pytest.MonkeyPatch, tmp_path: Path
 ) -> None:

@@ -240,11 +240,17 @@ def test_the_command_counts_the_numbers_not_compared(analytic, tmp_path, monkeyp
 
 def test_the_full_runs_summary_counts_each_verdict(full_reproduction):
     """With the simulations every published number compared is counted once, under one of
-    reproduced, UNDECIDED (the 20 deg experimental T) and not reproduced."""
+    reproduced, UNDECIDED (the 20 deg experimental T), not reproduced and within tolerance by
+    coincidence (the Sec. 5.2 text's Ghaednia F)."""
     assert Q.summary_line(full_reproduction.comparison) == (
         "17 published numbers reproduced within the stated tolerances, 1 undecided (the "
-        "printed digits allow either), 19 not reproduced (explained in Section 5 of the report)"
+        "printed digits allow either), 19 not reproduced, 1 within its tolerance but not "
+        "counted as reproduced (most likely a coincidence) (explained in Section 5 of the report)"
     )
+    # every published number compared is counted once: the four counts add up to the 38
+    rows = full_reproduction.comparison.drop_duplicates(Q.PUBLISHED_KEY)
+    inputs = rows["reason"].fillna("").astype(str).str.startswith("measured input")
+    assert 17 + 1 + 19 + 1 == len(rows[rows["published"].notna() & ~inputs]) == 38
 
 
 def test_the_tutorial_quotes_the_commands_summary_line(analytic, full_reproduction):
@@ -253,3 +259,15 @@ def test_the_tutorial_quotes_the_commands_summary_line(analytic, full_reproducti
     assert f"`{Q.summary_line(full_reproduction.comparison)}`" in page
     quiet = Q.summary_line(analytic.comparison)
     assert f"`{quiet.split(': the simulations')[0]}: ...`" in page
+
+
+def test_the_consistency_ratio_and_the_recorded_values_are_the_tables(full_reproduction):
+    """Section 6 states the range of F T / P its table shows (it said "about 2.4" over
+    1.99-2.44), and Section 10 prints its numbers with the report's 4 significant digits."""
+    text = full_reproduction.report_md.read_text()
+    six = " ".join(_section(text, 6).split())
+    assert "their F T is 1.99-2.44 times P (Table 2: 2.25-2.39; Table 3: 2.30-2.44;" in six
+    ten = _section(text, 10)
+    assert "v_Of / \\|v_i\\|: 0.4954 |" in ten
+    assert "0.4954128" not in ten
+    assert "Table 2: 2571; Sec. 5.2 text: 2153" in ten

@@ -85,7 +85,7 @@ TABLE1: tuple[Table1Entry, ...] = (
         "327 (kgf/m^2)",
         327.0,
         "kgf/mm^2",
-        "Brinell number HB 327 in kgf/mm^2 (printed kgf/m^2, off by 1e6)",
+        "Brinell number HB 327 in kgf/mm^2, 3.21 GPa (printed kgf/m^2, off by 1e6)",
     ),
     Table1Entry("rod", "nu_r", "0.3", 0.3, "-"),
     Table1Entry("flat", "rho", "7870 (kg/m^3)", 7870.0, "kg/m^3"),
@@ -97,7 +97,7 @@ TABLE1: tuple[Table1Entry, ...] = (
         "105 (kgf/m^2)",
         105.0,
         "kgf/mm^2",
-        "Brinell number HB 105 in kgf/mm^2 (printed kgf/m^2)",
+        "Brinell number HB 105 in kgf/mm^2, 1.03 GPa (printed kgf/m^2)",
     ),
     Table1Entry("flat", "nu_f", "0.3", 0.3, "-"),
 )

@@ -147,13 +147,27 @@ def verdict_counts(comparison: pd.DataFrame) -> tuple[int, int]:
     return len(good.drop_duplicates(PUBLISHED_KEY)), len(undecided.drop_duplicates(PUBLISHED_KEY))
 
 
+def coincidence_count(comparison: pd.DataFrame) -> int:
+    """Published numbers within their tolerance but not counted as reproduced (a ``reason``
+    starting with ``COINCIDENCE``), each number once as in ``comparison_counts``."""
+    if "reason" not in comparison.columns:
+        return 0
+    chance = comparison["reason"].fillna("").astype(str).str.startswith(COINCIDENCE)
+    return len(comparison[chance].drop_duplicates(PUBLISHED_KEY))
+
+
 def not_reproduced_line(
-    n: int, not_compared: int = 0, reproduced: int | None = None, undecided: int = 0
+    n: int,
+    not_compared: int = 0,
+    reproduced: int | None = None,
+    undecided: int = 0,
+    coincidences: int = 0,
 ) -> str:
     """The reproduce command's line on the published numbers: ``reproduced`` (where given)
     and ``undecided`` ones first, then those not reproduced (``n``), singular or plural as the
-    first count asks, and the ``not_compared`` ones (simulations skipped) when there are any
-    (``comparison_counts`` and ``verdict_counts`` give them)."""
+    first count asks, the ``coincidences`` (within tolerance, not counted as reproduced) and
+    the ``not_compared`` ones (simulations skipped) when there are any (``comparison_counts``,
+    ``verdict_counts`` and ``coincidence_count`` give them)."""
     if reproduced is None:
         what = "published number" if n == 1 else "published numbers"
         line = f"{n} {what} not reproduced within the stated tolerances"
@@ -162,6 +176,12 @@ def not_reproduced_line(
         line = (
             f"{reproduced} {what} reproduced within the stated tolerances, {undecided} "
             f"undecided (the printed digits allow either), {n} not reproduced"
+        )
+    if coincidences:
+        its = "its tolerance" if coincidences == 1 else "their tolerances"
+        line += (
+            f", {coincidences} within {its} but not counted as reproduced (most likely a "
+            "coincidence)"
         )
     if not not_compared:
         return f"{line} (explained in Section 5 of the report)"
@@ -173,10 +193,11 @@ def not_reproduced_line(
 
 def summary_line(comparison: pd.DataFrame) -> str:
     """The reproduce command's line: how many published numbers ``comparison`` reproduces,
-    leaves UNDECIDED, does not reproduce and does not compare (``not_reproduced_line``)."""
+    leaves UNDECIDED, does not reproduce, finds within tolerance by coincidence and does not
+    compare (``not_reproduced_line``)."""
     n_bad, n_skipped = comparison_counts(comparison)
     good, undecided = verdict_counts(comparison)
-    return not_reproduced_line(n_bad, n_skipped, good, undecided)
+    return not_reproduced_line(n_bad, n_skipped, good, undecided, coincidence_count(comparison))
 
 
 #: The column of a published L_s relative to Eq. 12 on its own row (published / Eq. 12 - 1).

@@ -23,7 +23,7 @@ from impactlab.paper.quantities import (
     rebound_ratio_range,
     reference_of,
 )
-from impactlab.paper.report import Block, Code, Figure, Heading, Para, Table
+from impactlab.paper.report import Block, Code, Figure, Heading, Para, Table, fmt
 from impactlab.paper.report_acceptance import (
     CALIBRATION_SECTION,
     EQ12_SECTION,
@@ -93,7 +93,7 @@ def _frame(items: Iterable[Any], *columns: str | tuple[str, Callable[[Any], Any]
 
 
 def _inputs() -> list[Block]:
-    columns = ("body", "symbol", "printed", ("value (SI)", attrgetter("value")), "unit")
+    columns = ("body", "symbol", "printed", ("value", attrgetter("value")), "unit")
     table1 = _frame(D.TABLE1, *columns, "correction")
     experiments = _frame(
         D.EXPERIMENTS.values(),
@@ -214,7 +214,8 @@ def _consistency(d: ReportData) -> list[Block]:
             "K_y = [k^2 + a^2 - mu a b]/(m k^2). K_y >= 1/m whenever mu b <= a, hence "
             "P <= (1 + e) m |v_i| for every rigid body of mass m. A simulation's mean force "
             "is its impulse over its duration, so F T must equal P. The paper's rows break "
-            f"the first: their F T is about 2.4 times P. {_bound_text(d.consistency)} Eq. 12 "
+            f"the first: their F T is {_ratio_range(d.consistency)}. "
+            f"{_bound_text(d.consistency)} Eq. 12 "
             "(exact for the paper's model) must also link each row's L_s to its own "
             "delta_p and T."
         ),
@@ -224,6 +225,19 @@ def _consistency(d: ReportData) -> list[Block]:
             digits=3,
         ),
     ]
+
+
+def _ratio_range(consistency: pd.DataFrame) -> str:
+    """How many times P the published rows' F T is: its range, overall and per source."""
+
+    def span(r: pd.Series) -> str:
+        lo, hi = float(r.min()), float(r.max())
+        return f"{lo:.2f}" if f"{lo:.2f}" == f"{hi:.2f}" else f"{lo:.2f}-{hi:.2f}"
+
+    per = "; ".join(
+        f"{src}: {span(g['ratio'])}" for src, g in consistency.groupby("source", sort=False)
+    )
+    return f"{span(consistency['ratio'])} times P ({per})"
 
 
 def _bound_text(consistency: pd.DataFrame) -> str:
@@ -276,7 +290,8 @@ def _inertia(d: ReportData) -> list[Block]:
         B.append(
             Figure(
                 d.figures["inertia"],
-                "Experimental T relative to the published value vs I_C/(m L^2); grey band: 5 %",
+                "Experimental T relative to the published value (70 deg, which has none: to its "
+                "own value at I_C = m L^2/12) vs I_C/(m L^2); grey band: 5 %",
             )
         )
     return B
@@ -312,7 +327,7 @@ def _discrepancies() -> list[Block]:
         "key",
         "where",
         "quantity",
-        ("values", lambda d: "; ".join(f"{k}: {v}" for k, v in d.values.items())),
+        ("values", lambda d: "; ".join(f"{k}: {fmt(v)}" for k, v in d.values.items())),
         "note",
     )
     return [
