@@ -53,3 +53,32 @@ def test_sigterm_stops_a_sweep_like_ctrl_c(tmp_path, monkeypatch, capsys) -> Non
     code, _out, _err = run_cli(monkeypatch, capsys, "sweep", "run", str(study), "--out", str(store))
     assert code == 0
     assert int((open_sweep(store)["status"] == 0).sum()) == 20
+
+
+_EXPORT = textwrap.dedent("""
+    import sys
+    sys.argv = ["impactlab", "sweep", "export", {store!r}, {out!r}]
+    from impactlab.cli import main
+    main()
+""")
+
+
+def test_sigterm_during_an_export_leaves_no_partial_file(tmp_path, monkeypatch, capsys) -> None:
+    """SIGTERM while ``sweep export`` writes (the file under its temporary name): one line,
+    status 143, neither the file nor its temporary one left (it ended at the signal's default
+    action: no word, status 143 and a ``.NAME.PID.partial`` file for good)."""
+    study, store = tmp_path / "t.toml", tmp_path / "t.zarr"
+    study.write_text(STUDY)
+    monkeypatch.setattr("impactlab.sweep.runner.ENGINE", FakeEvaluator())
+    code, _out, _err = run_cli(monkeypatch, capsys, "sweep", "run", str(study), "--out", str(store))
+    assert code == 0
+    out = tmp_path / "t.csv"
+    script = _EXPORT.format(store=str(store), out=str(out))
+    env = {**os.environ, KILL_AT: "write:partial", KILL_SIGNAL: "SIGTERM"}
+    proc = subprocess.run(
+        [sys.executable, "-c", script], env=env, capture_output=True, text=True, timeout=300
+    )
+    assert proc.returncode == 143, proc.stderr
+    assert proc.stderr.strip().splitlines()[-1] == "terminated"
+    assert "Traceback" not in proc.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["t.toml", "t.zarr"]

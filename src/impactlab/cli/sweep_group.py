@@ -1,12 +1,14 @@
 """``impactlab sweep``'s command group: ``impactlab sweep STUDY.toml ...`` read as ``sweep run
 STUDY.toml ...``, and a first word that is neither a subcommand nor a path refused with the
-subcommands."""
+subcommands; SIGTERM during any of its commands ends it as Ctrl-C does."""
 
 from __future__ import annotations
 
+import sys
 from pathlib import Path
 from typing import Any
 
+import typer
 from typer.core import TyperGroup
 
 from impactlab._validation import did_you_mean
@@ -19,7 +21,23 @@ _MEANT = {"summary": "info", "status": "info", "show": "info", "csv": "export", 
 class DefaultRun(TyperGroup):
     """``impactlab sweep STUDY.toml ...`` means ``impactlab sweep run STUDY.toml ...``; a first
     word that is no file and no path (``infoo``, ``summary``) is refused with the subcommands
-    (and the one it nearly is); a path that is no file (``study.toml``) is the run's to refuse."""
+    (and the one it nearly is); a path that is no file (``study.toml``) is the run's to refuse.
+    SIGTERM (``kill``, ``timeout``, a batch system's time limit) during any subcommand, an
+    export or a plot included, ends it as Ctrl-C does: the file being written is removed, one
+    line on stderr, exit status 143."""
+
+    def invoke(self, ctx: Any) -> Any:
+        from impactlab.sweep.termination import TERMINATED_EXIT, sigterm_as_interrupt, terminated
+
+        try:
+            with sigterm_as_interrupt():
+                return super().invoke(ctx)
+        except KeyboardInterrupt as exc:
+            if not terminated(exc):
+                raise
+            if not getattr(exc, "said", False):
+                print(exc.args[0] if exc.args else "terminated", file=sys.stderr, flush=True)
+            raise typer.Exit(TERMINATED_EXIT) from None
 
     def parse_args(self, ctx: Any, args: list[str]) -> list[str]:
         first = self._first_positional(args)

@@ -18,6 +18,8 @@ import shutil
 from collections.abc import Callable
 from pathlib import Path
 
+from impactlab.sweep.hooks import checkpoint
+
 __all__ = ["LOW_SPACE_BYTES", "library_write_error", "write_atomic"]
 
 #: Free bytes under which a write that failed without an errno is taken as a full disk.
@@ -30,6 +32,7 @@ def write_atomic(out: Path, write: Callable[[Path], None]) -> None:
     tmp = out.with_name(f".{out.name}.{os.getpid()}.partial")
     try:
         write(tmp)
+        checkpoint("write:partial")
         os.replace(tmp, out)
     except OSError as exc:
         tmp.unlink(missing_ok=True)

@@ -5,7 +5,9 @@ With ``IMPACTLAB_SWEEP_KILL_AT=<stage>`` in the environment, the process sends i
 ``IMPACTLAB_SWEEP_KILL_SIGNAL`` (default ``SIGKILL``; ``SIGINT`` for Ctrl-C) when it reaches
 ``<stage>``. Stages (see :data:`STAGES`): store creation (``create:tempdir``, ``create:arrays``,
 ``create:built``, ``create:renamed``), a restart (``restart:moved``), and per chunk *k*
-``chunk:<k>:data`` (its arrays written, marker not yet) and ``chunk:<k>:done`` (marker written).
+``chunk:<k>:data`` (its arrays written, marker not yet) and ``chunk:<k>:done`` (marker written),
+and an exported file or plot written under its temporary name, not yet renamed
+(``write:partial``).
 Without the variable the hook does nothing.
 """
 
@@ -25,6 +27,7 @@ STAGES = (
     "create:built",  # complete, not yet renamed into place
     "create:renamed",  # the store is in place, no chunk computed
     "restart:moved",  # --restart: the old store moved aside, the new one not yet created
+    "write:partial",  # an export or a plot written under its temporary name, not yet renamed
 )
 
 

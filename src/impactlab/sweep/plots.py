@@ -27,6 +27,7 @@ from impactlab.bodies import PAPER_ROD, Rod
 from impactlab.flags import ADVISORY_FLAGS
 from impactlab.sweep.display import plot_unit
 from impactlab.sweep.inputs import OUTPUT_ALIASES, output_spec
+from impactlab.sweep.netcdf import as_dataset
 from impactlab.sweep.plotgrid import (
     MAX_FACETS,
     MAX_FACETS_SIDE,
@@ -101,7 +102,8 @@ def plot_regime_map(
 
     Other dimensions: ``sel`` picks their values; without ``ax``, a free third dimension is
     drawn as facets (one panel per value). Titles name the slice. Returns the Axes (an array of
-    Axes for facets)."""
+    Axes for facets). ``ds``: the Dataset, a store's path or ``run_sweep``'s result."""
+    ds = as_dataset(ds)
     if "regime" not in ds.data_vars:
         raise ValueError("the sweep did not keep the output 'regime'")
     for d in (x, y):
@@ -149,7 +151,7 @@ def _regime_panel(
             handles.append(line)
     if bad.any():
         iy, ix = np.nonzero(bad)
-        ax.plot(xv[ix], yv[iy], "kx", ms=5)
+        ax.plot(xv[ix], yv[iy], "kx", ms=5, clip_on=False)  # whole on the grid's edge
     data_limits(ax, xv, yv)
     ax.set_xlabel(xl)
     ax.set_ylabel(yl)
@@ -172,7 +174,8 @@ def plot_output_map(
     (status != 0) are blank, and so are flagged ones (not plain success: energy gain,
     gravity-dominated, the other end, beyond the tip), marked x and counted in the title. Other
     dimensions as in ``plot_regime_map`` (facets without ``ax``, the slice in the titles);
-    returns the Axes (an array of Axes for facets)."""
+    returns the Axes (an array of Axes for facets). ``ds`` as in ``plot_regime_map``."""
+    ds = as_dataset(ds)
     out = OUTPUT_ALIASES.get(output, output)
     if out not in ds.data_vars:
         raise ValueError(f"the sweep has no output {output!r}")
@@ -262,7 +265,7 @@ def _output_panel(
         data_limits(ax, xv, yv)  # "nearest" cells reach half a step beyond: not past 90 deg
         if bad.any():
             iy, ix = np.nonzero(bad)
-            ax.plot(xv[ix], yv[iy], "kx", ms=5)
+            ax.plot(xv[ix], yv[iy], "kx", ms=5, clip_on=False)
         ax.set_ylabel(yl)
     ax.set_xlabel(xl)
     title(ax, out + _flag_note(int(bad.sum())), ds, sub)

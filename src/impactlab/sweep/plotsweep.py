@@ -31,6 +31,7 @@ from impactlab.sweep.dimensions import SAMPLE_DIM
 from impactlab.sweep.filewrite import write_atomic
 from impactlab.sweep.flexible import MEASURED_AS
 from impactlab.sweep.inputs import OUTPUT_ALIASES
+from impactlab.sweep.netcdf import as_dataset
 from impactlab.sweep.plotgrid import EmptyPanel, SliceWarning, select, where
 from impactlab.sweep.plots import (
     CATEGORY_OUTPUTS,
@@ -205,8 +206,10 @@ def plot_sweep(
     grid+sample study show the sample index in ``sel`` (``{"sample": 3}``; default: the
     first). Dimensions beyond those take the value in ``sel``, else their first: one
     :class:`SliceWarning` per distinct slice says which. Each plot it cannot draw is named, with
-    the reason, in a :class:`PlotSkipped` warning.
+    the reason, in a :class:`PlotSkipped` warning. ``ds``: the Dataset, a store's path or
+    ``run_sweep``'s result.
     """
+    ds = as_dataset(ds)
     plan = plot_plan(ds, outputs, sel)
     plt = pyplot()
     out = Path(outdir)

@@ -32,6 +32,7 @@ from impactlab.flags import ADVISORY_FLAGS, FLAG_LAW_EXTRAPOLATED, invalidating_
 from impactlab.sweep.dimensions import SAMPLE_DIM
 from impactlab.sweep.display import value_text
 from impactlab.sweep.inputs import OUTPUT_ALIASES, output_spec
+from impactlab.sweep.netcdf import as_dataset
 from impactlab.sweep.options import (
     DEFAULT_PERCENTILES,
     DEFAULT_UNCERTAINTY_OUTPUTS,
@@ -123,8 +124,9 @@ def uncertainty_report(
 ) -> UncertaintyReport:
     """Summarise a Monte Carlo sweep (Dataset with the single dimension ``sample``).
 
-    ds : the sweep's Dataset (``run_sweep(...).dataset`` or ``open_sweep(path)``); select one
-        grid point first for a grid+sample study (``ds.isel(law=0)``).
+    ds : the sweep's Dataset (``run_sweep(...).dataset`` or ``open_sweep(path)``), a store's
+        path or ``run_sweep``'s result; select one grid point first for a grid+sample study
+        (``ds.isel(law=0)``).
     outputs : outputs to summarise (default: e, delta_p, sliding_length, duration, mean_force,
         those present); the paper's symbols L_s, T, F are accepted; the codes of
         :data:`NOT_SUMMARISED` (regime, flags) are refused (ValueError).
@@ -133,6 +135,7 @@ def uncertainty_report(
     include_flagged : keep the cases whose ``flags`` say they are not plain success (default:
         excluded and counted in ``n_flagged``).
     """
+    ds = as_dataset(ds)
     extra = [d for d in ds.dims if d != SAMPLE_DIM]
     _check_sample(ds)
     if any(ds.sizes[d] > 1 for d in extra):
@@ -307,7 +310,9 @@ def uncertainty_reports(
     naming the point in display units ("law = brake, angle = 20 deg"; the study's title for a
     pure sample). ``outputs`` and
     ``percentiles`` default to the study's ``[uncertainty]`` table, else the defaults. A sweep
-    without a sample is refused first, before its grid points are listed."""
+    without a sample is refused first, before its grid points are listed. ``ds`` as in
+    ``uncertainty_report``."""
+    ds = as_dataset(ds)
     _check_sample(ds)
     spec = study_uncertainty_spec(ds)
     outs = list(outputs) if outputs else (list(spec.outputs) if spec else None)
