@@ -17,22 +17,23 @@ from impactlab.cli.fe import STOPPED_AT
 CliMain = Callable[..., tuple[int, str, str]]
 
 
-def _run(converged: bool) -> fe.IndentationResult:
-    """A run to 1 um: residual depth 0.0745 um, contact radius 97.8 um, pile-up 3.1 nm, 53 s."""
-    d = np.array([0.0, 0.5e-6, 1e-6])
+def _run(converged: bool, balance: float = 1e-7, reached: float = 1e-6) -> fe.IndentationResult:
+    """A run to 1 um: residual depth 0.0745 um, contact radius 97.8 um, pile-up 3.1 nm, 53 s
+    (``balance``: its force balance; ``reached``: where its loading ended)."""
+    d = np.array([0.0, 0.5e-6, reached])
     end = 0.0 if converged else 0.8e-6  # a converged run's last increment ends the unloading
     return fe.IndentationResult(
         1e-6, d, 10.0 * d / 1e-6, np.array([0.0, 60e-6, 97.832e-6]), d[::-1], 10.0 * d[::-1],
         7.4526e-8, np.array([0.0, 1e-4]), np.array([-7.4526e-8, 3.0951e-9]), 0.43624e-6,
-        converged, end, "", 20, 0, 60, 53.041, 2128, 1e-7, {},
+        converged, end, "", 20, 0, 60, 53.041, 2128, balance, {},
     )  # fmt: skip
 
 
 @pytest.fixture
 def fake_runs(monkeypatch: pytest.MonkeyPatch) -> Callable[[bool], None]:
-    def use(converged: bool) -> None:
+    def use(converged: bool, **run: Any) -> None:
         def fake_indent(flat: Any, body: Any, **kwargs: Any) -> list[fe.IndentationResult]:
-            return [_run(converged)]
+            return [_run(converged, **run)]
 
         monkeypatch.setattr(fe, "indent", fake_indent)
         monkeypatch.setattr(fe, "find_ccx", lambda: "ccx")
@@ -125,3 +126,28 @@ def test_plot_draws_a_dent_panel_only_for_a_dent(
     code, _, err = cli_main("fe", "indent", "--max", "1 um", "--plot", "--out", str(tmp_path))
     assert code == 0, err
     assert saved == [panels]
+
+
+def test_an_unbalanced_run_is_not_a_plain_success(cli_main: CliMain, fake_runs: Any) -> None:
+    """A run whose forces on the sphere and on the flat differ by 147 % of the peak (a
+    delta_max far below what the mesh resolves) finished, but it is no reference: its status
+    says so and the command exits 2 (it printed "converged", exit 0)."""
+    fake_runs(True, balance=1.4748)
+    code, out, err = cli_main("fe", "indent", "--max", "1 um")
+    assert code == 2
+    assert "1 of 1 FE run(s) did not converge or do not balance their forces" in err
+    assert "UNBALANCED" in out
+    code, out, err = cli_main("fe", "indent", "--max", "1 um", "--json")
+    status = json.loads(out)["runs"][0]["status"]
+    assert status.startswith("UNBALANCED: the forces on the sphere and on the flat differ by 1.47 ")
+    assert not _run(True, balance=1.4748).usable and _run(True).usable
+
+
+def test_a_run_that_stopped_has_no_radius_at_the_maximum(cli_main: CliMain, fake_runs: Any) -> None:
+    """Loading stopped at 0.8 um of 1 um: the contact radius there is not that at delta_max."""
+    fake_runs(False, reached=0.8e-6)
+    code, out, _err = cli_main("fe", "indent", "--max", "1 um", "--json")
+    assert code == 2
+    run = json.loads(out)["runs"][0]
+    assert run["max_force"]["value"] is None
+    assert run["contact_radius_at_max"]["value"] is None

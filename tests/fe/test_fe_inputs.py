@@ -47,10 +47,10 @@ def test_missing_ccx_message(monkeypatch, tmp_path):
 
 def test_beyond_the_checked_interference_warns_before_ccx_runs(monkeypatch, tmp_path):
     """An indentation past 1000 delta_c (where the shipped cases end and the mesh was checked)
-    warns before any ccx run; up to 1000 delta_c it does not."""
+    or below 0.3 delta_c (where they start) warns before any ccx run; between them it does not."""
     import warnings
 
-    from impactlab.fe.run import CHECKED_RATIO, BeyondCheckedWarning
+    from impactlab.fe.run import CHECKED_RATIO, SMALLEST_CHECKED_RATIO, BeyondCheckedWarning
 
     monkeypatch.setenv("PATH", str(tmp_path))  # no ccx: the call stops after the checks
     monkeypatch.delenv("IMPACTLAB_CCX", raising=False)
@@ -61,10 +61,12 @@ def test_beyond_the_checked_interference_warns_before_ccx_runs(monkeypatch, tmp_
         fe.indent(AISI_1010, AISI_201, radius=R, delta_max=2000 * dc, cache_dir=tmp_path)
     with warnings.catch_warnings():
         warnings.simplefilter("error", BeyondCheckedWarning)
-        with pytest.raises(RuntimeError, match="apt-get install calculix-ccx"):
-            fe.indent(
-                AISI_1010, AISI_201, radius=R, delta_max=CHECKED_RATIO * dc, cache_dir=tmp_path
-            )
+        for ratio in (CHECKED_RATIO, SMALLEST_CHECKED_RATIO):
+            with pytest.raises(RuntimeError, match="apt-get install calculix-ccx"):
+                fe.indent(AISI_1010, AISI_201, radius=R, delta_max=ratio * dc, cache_dir=tmp_path)
+    below = pytest.warns(BeyondCheckedWarning, match=r"delta_max = 0.001 delta_c is below 0.3 ")
+    with below, pytest.raises(RuntimeError, match="apt-get install calculix-ccx"):
+        fe.indent(AISI_1010, AISI_201, radius=R, delta_max=1e-3 * dc, cache_dir=tmp_path)
 
 
 def test_a_run_that_does_not_converge_exits_with_status_2(cli_main, monkeypatch, tmp_path):

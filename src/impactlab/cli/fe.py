@@ -302,10 +302,12 @@ def indent_cmd(
             console.print(f"figure: {path}", markup=False)
     if damaged is not None:
         raise UserError(str(damaged))
-    failed = [r for r in results if not r.converged]
+    failed = [r for r in results if not r.usable]
     if failed:  # what converged is printed above; the status says that not all did
         raise UserError(
-            f"{len(failed)} of {len(results)} FE run(s) did not converge (delta_max = "
+            f"{len(failed)} of {len(results)} FE run(s) did not converge"
+            + ("" if all(not r.converged for r in failed) else " or do not balance their forces")
+            + " (delta_max = "
             + ", ".join(f"{r.delta_max * 1e6:.4g} um" for r in failed)
             + "): their curves stop at the last converged point; see each run's status"
         )

@@ -89,7 +89,7 @@ def run_summary(res: Any) -> dict[str, Any]:
         "max_force": res.max_force,
         "residual_depth": res.residual_depth,
         "residual_ratio": res.residual_ratio,
-        "contact_radius_at_max": float(res.contact_radius[-1]) if res.contact_radius.size else 0.0,
+        "contact_radius_at_max": res.contact_radius_at_max,
         "pile_up": res.pile_up,
         "converged": res.converged,
         "status": res.status(),

@@ -206,7 +206,7 @@ def law_accuracy(law: str, case: ReferenceCase) -> LawAccuracy:
     d, f = case.loading_curve()
     keep = (d >= LOWEST_RATIO * dc) & (f > 0.0)
     d, f = np.asarray(d[keep]), np.asarray(f[keep])
-    runs = [r for r in case.runs if r.converged]  # delta_r nan: below the FE's resolution
+    runs = [r for r in case.runs if r.usable]  # delta_r nan: below the FE's resolution
     maxima = np.array([r.delta_max for r in runs])
     fe_res = np.array([r.residual_ratio for r in runs])
     try:

@@ -19,6 +19,7 @@ from typing import Any
 import numpy as np
 
 from impactlab.fe.problem import make_problem
+from impactlab.fe.result import FORCE_BALANCE_MAX
 from impactlab.materials import ContactPair, Material
 
 DATA_DIR = Path(__file__).resolve().parent / "data"
@@ -59,6 +60,12 @@ class ReferenceRun:
     def residual_ratio(self) -> float:
         """delta_r / delta_max (nan when the run did not converge)."""
         return self.residual_depth / self.delta_max
+
+    @property
+    def usable(self) -> bool:
+        """Converged, with the forces on the sphere and on the flat balanced to
+        FORCE_BALANCE_MAX of the peak (``IndentationResult.usable``)."""
+        return self.converged and self.force_balance <= FORCE_BALANCE_MAX
 
 
 @dataclass(frozen=True)

@@ -41,11 +41,14 @@ from impactlab.materials import Material
 #: The largest delta_max / delta_c the shipped FE cases reach and the mesh was checked at
 #: (level 1 within 1.4 % of level 2 there, docs/fe.md).
 CHECKED_RATIO = 1000.0
+#: The smallest delta_max / delta_c of the shipped FE cases (their first maximum).
+SMALLEST_CHECKED_RATIO = 0.3
 
 
 class BeyondCheckedWarning(UserWarning):
-    """An indentation asked beyond :data:`CHECKED_RATIO` delta_c, where the mesh's accuracy is
-    not known (the run goes on)."""
+    """An indentation asked beyond :data:`CHECKED_RATIO` delta_c, or below
+    :data:`SMALLEST_CHECKED_RATIO` delta_c, where the mesh's accuracy is not known (the run
+    goes on)."""
 
 
 class DamagedRunsError(DamagedOutputError):
@@ -330,6 +333,15 @@ def indent(
                 BeyondCheckedWarning,
                 stacklevel=2,
             )
+        elif p.delta_max < SMALLEST_CHECKED_RATIO * p.delta_c * (1.0 - 1e-9):
+            warnings.warn(
+                f"delta_max = {p.delta_max / p.delta_c:.4g} delta_c is below "
+                f"{SMALLEST_CHECKED_RATIO:g} delta_c, the smallest maximum of the shipped FE "
+                "cases (docs/fe.md): its accuracy there is not known (below delta_c Hertz is "
+                "exact: impactlab.contact's hertz law needs no FE run)",
+                BeyondCheckedWarning,
+                stacklevel=2,
+            )
     exe = find_ccx()
     version = ccx_version(exe)
     directory = Path(cache_dir) if cache_dir is not None else cache.default_cache_dir()
@@ -363,7 +375,7 @@ def indent(
     damaged = _run_pending(todo, n, job, done) if todo else {}
     final = [r for r in results if r is not None]
     for i, r in enumerate(results):  # a cached one says where it was read
-        if r is not None and not r.converged:
+        if r is not None and not r.usable:
             note = f"; {cache.from_cache_note(directory, keys[i])}" if i in read else ""
             warnings.warn(r.status() + note, NotConvergedWarning, stacklevel=2)
     if damaged:
