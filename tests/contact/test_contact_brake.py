@@ -122,6 +122,11 @@ def test_invalid_inputs_name_the_parameter(paper_pair: ContactPair) -> None:
         law.build(paper_pair, R, hardness=-3.0)
     with pytest.raises(ValueError, match="hardness"):
         law.build(paper_pair, R, hardness=5.0)  # P0 too small: delta_p < delta_y
+    # P0 so large that delta_p passes the hard limit R/2 (1e300: an OverflowError before)
+    for hb in (1e300, 1e12, 1700.0):
+        with pytest.raises(ValueError, match=r"beyond the law's hard limit R/2.*hardness < 16"):
+            law.build(paper_pair, R, hardness=hb)
+    assert law.build(paper_pair, R, hardness=1600.0).params[k.P_BR_DP] < 0.5 * R
     soft = Material("no hardness", 200e9, 0.3, 305e6)
     with pytest.raises(ValueError, match="hardness"):
         law.build(ContactPair(soft, soft), R)

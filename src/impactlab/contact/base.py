@@ -17,6 +17,7 @@ from impactlab.contact import history_kernels as hk
 from impactlab.contact import kernel_arrays as ka
 from impactlab.contact import kernels as k
 from impactlab.contact.curve_table import has_curves
+from impactlab.contact.custom_parameters import note_custom
 from impactlab.contact.names import Law
 from impactlab.contact.ranges import (
     LawRange,
@@ -272,6 +273,7 @@ class ContactLaw(ABC):
         details = self._fill(p, pair, values) or {}
         self._check_loading_curve(p, pair, published=values.get("published_switch", 0.0) == 1.0)
         model = ContactModel(self.name, self.law_id, p, details, self.references)
+        note_custom(model.params, given, {q.name: float(q.default) for q in self.parameters})
         object.__setattr__(model, "pair", pair)
         return model
 

@@ -137,6 +137,15 @@ class Brake(ContactLaw):
         fnu, z_over_a = brake_yield_function(nu)
         dy = R * (math.pi * Sy / (2.0 * E)) ** 2 / fnu
         P0 = 1.0e6 * hb * G0
+        # delta_p must lie below the hard limit R/2, or the plastic branch is never reached
+        p0_max = 2.0 * E * math.sqrt(0.5) / (3.0 * math.pi)
+        if not P0 < p0_max:
+            raise ValueError(
+                f"hardness = {hb!r} kgf/mm^2 gives P0 = {P0:.4g} Pa, whose delta_p = R (3 pi P0 "
+                f"/ (2 E*))^2 lies beyond the law's hard limit R/2: Brake's plastic branch would "
+                f"never be reached; allowed hardness < {p0_max / (1.0e6 * G0):.4g} kgf/mm^2 "
+                "(a Brinell number HB, in kgf/mm^2: check the unit)"
+            )
         dp = brake_plastic_interference(E, R, P0)
         if not dp > dy:
             raise ValueError(

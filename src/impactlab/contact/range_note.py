@@ -16,6 +16,7 @@ from typing import Any
 import numpy as np
 
 from impactlab.contact import kernels as k
+from impactlab.contact.custom_parameters import custom_parameters
 from impactlab.contact.names import Law
 from impactlab.contact.ranges import STATUSES, law_range, range_limit, range_status
 from impactlab.contact.verified_ranges import e_star_over_sy_span, verified_upper
@@ -83,6 +84,15 @@ def range_note(law_id: int, params: Any) -> str | None:
             f"verified against FE up to {jg:.3g} delta_c ({own}E*/S_y = {ratio:.4g}; FE cases "
             f"{lo:.0f}-{hi:.0f})"
         )
+    custom = custom_parameters(params)
+    if status == "unverified" and custom is not None and np.isfinite(limit):
+        jg = float(verified_upper(name, ratio))
+        if math.isfinite(jg):
+            return (
+                f"unverified: the law parameters {custom} are not the defaults the FE comparison "
+                f"used; with the defaults it is verified up to {jg:.3g} delta_c (E*/S_y = "
+                f"{ratio:.4g})"
+            )
     if status == "unverified":
         return (
             f"unverified: E*/S_y = {ratio:.4g} outside the FE cases' {lo:.0f}-{hi:.0f}; "

@@ -51,6 +51,7 @@ from typing import Any, Protocol
 import numpy as np
 
 from impactlab.contact import kernels as k
+from impactlab.contact.custom_parameters import custom_parameters
 from impactlab.contact.names import Law
 from impactlab.contact.range_record import STATUSES, LawRange
 from impactlab.contact.verified_ranges import (
@@ -354,8 +355,9 @@ def range_status(law_id: int, params: Any = None) -> str | None:
         return None
     if params is not None:
         own, has = _verified(law_id, params)
-        if has and np.ndim(own) == 0:
-            return "verified" if math.isfinite(float(own)) else "unverified"
+        if has and np.ndim(own) == 0:  # parameters other than the FE comparison's: not verified
+            ok = math.isfinite(float(own)) and custom_parameters(params) is None
+            return "verified" if ok else "unverified"
     return _STATUS_BY_ID.get(int(law_id))
 
 
