@@ -24,7 +24,8 @@ CLI = ["invert", "--angle", "20 deg", "--vi", "-1.41 m/s", "--e", "0.5", "--mu",
 
 
 def test_the_rod_check_is_one_shared_by_analyze_and_invert() -> None:
-    grams = Rod(length=0.3048, tip_radius=0.0088, mass=460.7, inertia=3.5667e-3)
+    with pytest.warns(il.ImplausibleInputWarning, match="^rod: the mass and the inertia"):
+        grams = Rod(length=0.3048, tip_radius=0.0088, mass=460.7, inertia=3.5667e-3)
     assert implausible_rod(grams) == inertia_ratio_problem(460.7, 3.5667e-3, 0.3048)
     assert inertia_ratio_problem(PAPER_ROD.mass, PAPER_ROD.mass * 0.3048**2 / 12, 0.3048) is None
     with pytest.warns(il.ImplausibleInputWarning, match="mass and the inertia do not fit"):

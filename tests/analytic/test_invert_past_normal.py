@@ -37,3 +37,18 @@ def test_cli_names_the_mirror_angle(cli_main: CliMain, angle: str, mirror: str) 
     assert code == 2 and out == ""
     assert f"got {angle}; the rod leans past the flat's normal" in err
     assert f"mirror of one at {mirror}" in err
+
+
+@pytest.mark.parametrize("angle", [0.0, -0.1])
+def test_api_explains_the_lying_end_for_an_angle_at_or_below_zero(angle: float) -> None:
+    """At or below 0 the reason is the rod lying on the flat, as on the command line (it gave
+    the reason for 90 deg)."""
+    with pytest.raises(ValueError, match="at 0 deg it lies on the flat") as exc:
+        invert(angle=angle, **MEASURED)
+    assert "vertical" not in str(exc.value)
+
+
+def test_api_refuses_a_sample_count_that_would_not_fit_in_memory() -> None:
+    """The command line's bound, in the API (10**9 samples got the process killed)."""
+    with pytest.raises(ValueError, match=r"^n_samples must be at most 10,000,000 \(about 1.2 GB"):
+        invert(angle=math.radians(20), **MEASURED, n_samples=10**9)

@@ -192,3 +192,17 @@ def test_simulate_rod_from_its_diameter(monkeypatch, capsys) -> None:
         monkeypatch, capsys, "simulate", "sphere", "--vy", "-1 m/s", "--diameter", "1 mm"
     )
     assert code == 2 and "--diameter is a rod's; a sphere's size is its radius, --radius" in err
+
+
+def test_a_rod_whose_inertia_does_not_fit_its_mass_warns() -> None:
+    """An inertia 20 times below a uniform rod's m L^2/12 warns as analyze and invert do (1e-30
+    kg m^2 gave a plain-success elastic bounce); a plausible one does not."""
+    import warnings
+
+    from impactlab import ImplausibleInputWarning
+
+    with pytest.warns(ImplausibleInputWarning, match=r"^rod: the mass and the inertia do not fit"):
+        Rod(length=0.3048, tip_radius=0.0088, mass=0.4607, inertia=1e-30)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", ImplausibleInputWarning)
+        Rod(length=0.3048, tip_radius=0.0088, mass=0.4607, inertia=0.4607 * 0.3048**2 / 100)

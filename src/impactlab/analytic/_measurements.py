@@ -121,10 +121,14 @@ def _check_ranges(meas: Mapping[str, Measured]) -> None:
         hint = "; pass radians or a string such as '20 deg'" if 2.0 <= th <= 90.0 else ""
         if HALF_PI < th <= HALF_PI + math.radians(10.0):  # a bare angle just past the normal
             hint = past_normal_inversion(th)
+        why = (
+            "at 90 deg it stands vertical and its tip cannot slide"
+            if th >= HALF_PI
+            else "at 0 deg it lies on the flat, and below 0 its tip points up"
+        )
         raise ValueError(
-            f"angle must lie in (0, 90) deg, open at both ends (the rod tilted: at 90 deg it "
-            f"stands vertical and its tip cannot slide), got {math.degrees(th):.4g} deg "
-            f"({th!r} rad){hint}"
+            f"angle must lie in (0, 90) deg, open at both ends (the rod tilted: {why}), got "
+            f"{math.degrees(th):.4g} deg ({th!r} rad){hint}"
         )
     drop_speed(meas["v_i"].value)  # |v_i| >= MIN_SPEED, as the closed forms take it
     if meas["mu"].value < 0.0:

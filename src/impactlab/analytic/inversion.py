@@ -162,15 +162,25 @@ def _nominal_coefficients(
     return K_x, K_y, al, mu_c
 
 
+#: The most Monte Carlo samples taken: about 125 bytes a sample, 1.3 GB of arrays.
+MAX_SAMPLES = 10_000_000
+
+
 def _options(n_samples: Any, seed: Any, gravity: Any, g: Any, measure: str) -> dict[str, Any]:
-    """The inversion's options checked: n_samples (an int >= 100), seed (None or an int >= 0),
-    gravity (a bool), g [m/s^2] and measure ("slip" or "travel")."""
+    """The inversion's options checked: n_samples (an int in [100, MAX_SAMPLES]), seed (None
+    or an int >= 0), gravity (a bool), g [m/s^2] and measure ("slip" or "travel")."""
     if (
         isinstance(n_samples, bool)
         or not isinstance(n_samples, int | np.integer)
         or n_samples < 100
     ):
         raise ValueError(f"n_samples must be an integer >= 100, got {n_samples!r}")
+    if n_samples > MAX_SAMPLES:  # refused before any is drawn
+        raise ValueError(
+            f"n_samples must be at most {MAX_SAMPLES:,} (about {MAX_SAMPLES * 125 / 1e9:.2g} "
+            f"GB of memory), got {int(n_samples):,}; the Monte Carlo's mean and 95 % interval "
+            "settle long before (default 20,000)"
+        )
     return {
         "n_samples": int(n_samples),
         "seed": check_seed("seed", seed),

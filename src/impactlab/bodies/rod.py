@@ -28,6 +28,7 @@ from impactlab.bodies._checks import (
     checked_mass,
     checked_size,
     heavy_rod_problem,
+    inertia_ratio_problem,
     plausible,
     rod_mass,
 )
@@ -117,6 +118,9 @@ class Rod:
         else:
             inertia = check_positive("inertia", self.inertia, "kg m^2")
             check_allowed("inertia", inertia, INERTIA_RANGE, "kg m^2")
+            problem = inertia_ratio_problem(m, inertia, L)  # as analyze and invert warn
+            if problem is not None:
+                warn_implausible(f"rod: {problem}")
         reach = 0.5 * L + R  # no mass of the rod lies farther from its centre of mass
         if inertia > m * reach * reach * (1.0 + 1e-12):
             raise ValueError(

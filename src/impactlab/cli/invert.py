@@ -21,6 +21,7 @@ from impactlab._display import field_row
 from impactlab._json import to_json
 from impactlab._validation import ImplausibleInputWarning
 from impactlab.analytic import InversionResult, invert
+from impactlab.analytic.inversion import MAX_SAMPLES
 from impactlab.cli._common import (
     SI_UNITS,
     UserError,
@@ -49,9 +50,6 @@ from impactlab.cli.invert_inputs import (
     parse_value,
 )
 from impactlab.cli.invert_output import inversion_doubts, inversion_json, print_inversion
-
-#: The most Monte Carlo samples taken (--samples, samples in a file): about 1.3 GB of arrays.
-MAX_SAMPLES = 10_000_000
 
 
 def run_invert(
