@@ -135,9 +135,10 @@ def _not_a_number(name: str, value: Any) -> ValueError | None:
         return ValueError(f"{name} must be a real number, got the bool {value!r}")
     if isinstance(value, str | bytes):
         try:
-            hint = f": write {name}={float(value)!r}, not {value!r}"
+            number = float(value)
         except ValueError:
-            hint = ""
+            number = math.nan
+        hint = f": write {name}={number!r}, not {value!r}" if math.isfinite(number) else ""
         return ValueError(f"{name} must be a real number, got the string {value!r}{hint}")
     if isinstance(value, np.ndarray) and value.dtype.kind not in "iuf":
         what = _KINDS.get(value.dtype.kind, f"dtype {value.dtype}")

@@ -56,6 +56,7 @@ from impactlab.experiment.profilometry.plausibility import (
     PLAUSIBLE_DEPTH,
     check_dent,
     height_unit_doubt,
+    narrow_dent_doubt,
 )
 from impactlab.experiment.result import ExperimentResult
 from impactlab.experiment.rigid import MarkerGeometry
@@ -121,6 +122,9 @@ def _scan_stage(res: ExperimentResult, path: Path, rod: Rod, opts: dict[str, Any
     res.warnings += [f"scan: {w}" for w in (*dent.warnings, *(() if unit_doubt else plausible))]
     if unit_doubt:  # read in nm for um: not a result to take as measured (says the warnings')
         res.add_doubt(f"scan: {unit_doubt}")
+    narrow = narrow_dent_doubt(dent, tip_radius=rod.tip_radius, scan=hm)
+    if narrow:  # a pixel size too small: L_s, T and F follow it
+        res.add_doubt(f"scan: {narrow}")
     if dent.direction_ambiguous:
         res.warnings.append(
             "scan: the sliding direction is ambiguous (both ends of the dent equally sharp)"

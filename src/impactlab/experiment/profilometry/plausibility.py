@@ -24,7 +24,7 @@ from impactlab.experiment.markers import length_factor
 from impactlab.experiment.profilometry.heightmap import HeightMap
 from impactlab.experiment.profilometry.metrics import DentMetrics
 
-__all__ = ["check_dent", "height_unit_doubt"]
+__all__ = ["NARROW_DOUBT_RATIO", "check_dent", "height_unit_doubt", "narrow_dent_doubt"]
 
 #: Shallowest dent [m] a profilometer resolves; below it the height unit is wrong.
 MIN_DEPTH = 1e-9
@@ -132,6 +132,31 @@ def check_dent(
             f"R = {_length(R)} at the dent's width {_length(width)}: check {heights} and {pixels}"
         )
     return tuple(warnings)
+
+
+#: A dent deeper than this many times the tip's cap at its width is a doubt (a result not ok):
+#: a residual dent is no deeper than the tip that made it at that width (the shipped example:
+#: 1.0), so a pixel size too small (or heights too large) by 1.4 times or more shows here;
+#: beyond 10 times ``check_dent`` refuses it.
+NARROW_DOUBT_RATIO = 2.0
+
+
+def narrow_dent_doubt(
+    dent: DentMetrics, *, tip_radius: float, scan: HeightMap | None = None
+) -> str:
+    """The doubt of a dent deeper than ``NARROW_DOUBT_RATIO`` times the tip's cap at its width
+    (``check_dent`` refuses one beyond 10 times); "" otherwise."""
+    depth, width = dent.delta_p.value, dent.width.value
+    cap = _cap_depth(width, float(tip_radius))
+    if not depth > NARROW_DOUBT_RATIO * cap:
+        return ""
+    heights, pixels = _units(scan)
+    return (
+        f"delta_p = {_length(depth)} in a dent only {_length(width)} wide, {depth / cap:.3g} "
+        f"times deeper than a tip of radius R = {_length(float(tip_radius))} reaches at that "
+        f"width ({_length(cap)}), and a residual dent is never deeper: check {pixels} (too "
+        f"small?) or {heights}"
+    )
 
 
 def height_unit_doubt(
