@@ -39,3 +39,25 @@ def test_the_right_pixel_size_is_ok(tmp_path: Path) -> None:
     res = _analyze(tmp_path, "12 um")
     assert res.ok and not res.doubts
     assert NARROW_DOUBT_RATIO >= 2.0  # the example dent: 1.0 times its tip's cap
+
+
+def test_a_levelling_in_doubt_is_not_ok(tmp_path: Path) -> None:
+    """The example dent on a domed specimen (radius 0.2 m, 8.7 um sag at the scan's corners)
+    gave delta_p 5 sigma off and L_s 35 % short, ok and appended to a calibration file; its
+    warning said the bias lay beyond the +-. It is a doubt now."""
+    import numpy as np
+
+    z = np.load(DATA / "dent.npy").astype(np.float64)  # um on 12 um pixels
+    ny, nx = z.shape
+    y, x = np.mgrid[0:ny, 0:nx] * 12e-6
+    z += ((x - x.mean()) ** 2 + (y - y.mean()) ** 2) / (2 * 0.2) * 1e6
+    np.save(tmp_path / "domed.npy", z)
+    geometry = MarkerGeometry.from_mapping(
+        {"units": "mm", "M1": [-30, 18, 0], "M2": [-90, 0, 22], "M3": [-130, -20, 4]}
+    )
+    with pytest.warns(UserWarning, match="the levelling is in doubt"):
+        res = analyze(DATA / "drop.csv", tmp_path / "domed.npy", PAPER_ROD, geometry=geometry,
+                      up="+y", pixel_size="12 um", height_unit="um",
+                      out_dir=tmp_path / "o")  # fmt: skip
+    assert not res.ok
+    assert any(d.startswith("scan: the levelling is in doubt") for d in res.doubts)

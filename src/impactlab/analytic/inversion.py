@@ -164,6 +164,7 @@ def _nominal_coefficients(
 
 #: The most Monte Carlo samples taken: about 125 bytes a sample, 1.3 GB of arrays.
 MAX_SAMPLES = 10_000_000
+_MEMORY = "(about 1.2 GB of memory; the mean and 95 % interval settle long before: default 20,000)"
 
 
 def _options(n_samples: Any, seed: Any, gravity: Any, g: Any, measure: str) -> dict[str, Any]:
@@ -176,11 +177,7 @@ def _options(n_samples: Any, seed: Any, gravity: Any, g: Any, measure: str) -> d
     ):
         raise ValueError(f"n_samples must be an integer >= 100, got {n_samples!r}")
     if n_samples > MAX_SAMPLES:  # refused before any is drawn
-        raise ValueError(
-            f"n_samples must be at most {MAX_SAMPLES:,} (about {MAX_SAMPLES * 125 / 1e9:.2g} "
-            f"GB of memory), got {int(n_samples):,}; the Monte Carlo's mean and 95 % interval "
-            "settle long before (default 20,000)"
-        )
+        raise ValueError(f"n_samples must be at most {MAX_SAMPLES:,} {_MEMORY}, got {n_samples:,}")
     return {
         "n_samples": int(n_samples),
         "seed": check_seed("seed", seed),

@@ -55,8 +55,7 @@ from impactlab.experiment.profilometry import DentMetrics, measure_dent, read_sc
 from impactlab.experiment.profilometry.plausibility import (
     PLAUSIBLE_DEPTH,
     check_dent,
-    height_unit_doubt,
-    narrow_dent_doubt,
+    dent_findings,
 )
 from impactlab.experiment.result import ExperimentResult
 from impactlab.experiment.rigid import MarkerGeometry
@@ -118,13 +117,10 @@ def _scan_stage(res: ExperimentResult, path: Path, rod: Rod, opts: dict[str, Any
         res.errors["scan"] = _message(exc)
         return
     res.dent = dent
-    unit_doubt = height_unit_doubt(dent, tip_radius=rod.tip_radius, scan=hm)
-    res.warnings += [f"scan: {w}" for w in (*dent.warnings, *(() if unit_doubt else plausible))]
-    if unit_doubt:  # read in nm for um: not a result to take as measured (says the warnings')
-        res.add_doubt(f"scan: {unit_doubt}")
-    narrow = narrow_dent_doubt(dent, tip_radius=rod.tip_radius, scan=hm)
-    if narrow:  # a pixel size too small: L_s, T and F follow it
-        res.add_doubt(f"scan: {narrow}")
+    said, doubts = dent_findings(dent, plausible, tip_radius=rod.tip_radius, scan=hm)
+    res.warnings += [f"scan: {w}" for w in said]
+    for doubt in doubts:  # not a result to take as measured
+        res.add_doubt(f"scan: {doubt}")
     if dent.direction_ambiguous:
         res.warnings.append(
             "scan: the sliding direction is ambiguous (both ends of the dent equally sharp)"

@@ -70,8 +70,12 @@ class _Run(Protocol):
     def residual_depth(self) -> float: ...
     @property
     def converged(self) -> bool: ...
-    @property
-    def usable(self) -> bool: ...
+
+
+def _usable(run: _Run) -> bool:
+    """Converged, and balanced where the run says (``IndentationResult.usable``; a runner's
+    own run objects may have no ``usable``)."""
+    return bool(getattr(run, "usable", run.converged))
 
 
 def curves_from_runs(
@@ -86,7 +90,7 @@ def curves_from_runs(
     the loading curve that reaches farthest and every converged run's delta_r (ValueError
     when fewer than two runs converged). ``yielding``: the body that yields in the runs,
     "flat" (an elastic or a harder sphere) or "sphere"."""
-    done = [r for r in runs if r.usable and math.isfinite(r.residual_depth)]
+    done = [r for r in runs if _usable(r) and math.isfinite(r.residual_depth)]
     if len(done) < 2:
         raise ValueError(f"{name}: {len(done)} converged FE runs, at least 2 are needed")
     dc, fc = jg_critical(pair.E_star, radius, pair.yield_strength, pair.nu)
@@ -303,7 +307,7 @@ def unloading_energy_ratios() -> dict[str, dict[float, float]]:
         model = Tabulated().build(case.pair, case.radius)
         row = out.setdefault(case.name, {})
         for run in case.runs:
-            if not (run.usable and run.delta_max <= model.max_interference):
+            if not (_usable(run) and run.delta_max <= model.max_interference):
                 continue
             d, f = np.asarray(run.unloading_delta), np.asarray(run.unloading_force)
             order = np.argsort(d)

@@ -14,6 +14,7 @@ from impactlab.experiment.profilometry.heightmap import HeightMap
 __all__ = [
     "BORDER",
     "K_SIGMA",
+    "LEVELLING_DOUBT",
     "LEVELLING_RATIO",
     "NOISE_LAG",
     "Levelled",
@@ -53,6 +54,8 @@ K_SIGMA = 3.0
 #: noise), up to 1.2 (noise Gaussian-correlated over 3 pixels); with 5 pixels or fewer of surface
 #: beyond the dent's outline 3.0-3.8 (delta_p then 2 % deep, about 4 sigma).
 LEVELLING_RATIO = 2.5
+#: The words that open :func:`levelling_note`: an analysis takes such a dent as a doubt.
+LEVELLING_DOUBT = "the levelling is in doubt"
 #: Lag [pixels] of the second differences of :func:`lagged_noise`: longer than the correlation of
 #: the noise of an optical profilometer that samples finer than its lateral resolution (second
 #: differences of neighbours see 1/3 to 1/11 of noise correlated over 1 to 2 pixels).
@@ -188,7 +191,7 @@ def levelling_note(lev: Levelled) -> str | None:
     if not ratio > LEVELLING_RATIO:
         return None
     return (
-        f"the levelling is in doubt: the plane's inliers scatter {lev.sigma * 1e6:.3g} um, "
+        f"{LEVELLING_DOUBT}: the plane's inliers scatter {lev.sigma * 1e6:.3g} um, "
         f"{ratio:.3g} times their noise from second differences {NOISE_LAG} pixels apart "
         f"({lev.lag_sigma * 1e6:.3g} um): "
         "too little undeformed surface around the dent, so that the plane leans on its flanks "

@@ -22,9 +22,16 @@ import math
 from impactlab.experiment.errors import ScanError
 from impactlab.experiment.markers import length_factor
 from impactlab.experiment.profilometry.heightmap import HeightMap
+from impactlab.experiment.profilometry.levelling import LEVELLING_DOUBT
 from impactlab.experiment.profilometry.metrics import DentMetrics
 
-__all__ = ["NARROW_DOUBT_RATIO", "check_dent", "height_unit_doubt", "narrow_dent_doubt"]
+__all__ = [
+    "NARROW_DOUBT_RATIO",
+    "check_dent",
+    "dent_findings",
+    "height_unit_doubt",
+    "narrow_dent_doubt",
+]
 
 #: Shallowest dent [m] a profilometer resolves; below it the height unit is wrong.
 MIN_DEPTH = 1e-9
@@ -175,3 +182,22 @@ def height_unit_doubt(
         f"shallower than the tip's cap there ({_length(cap)}): a height unit 1000 times too "
         f"small? check {heights}"
     )
+
+
+def dent_findings(
+    dent: DentMetrics,
+    plausible: tuple[str, ...],
+    *,
+    tip_radius: float,
+    scan: HeightMap | None = None,
+) -> tuple[list[str], list[str]]:
+    """(warnings, doubts) of a measured dent: its own warnings and ``plausible`` (``check_dent``'s)
+    as warnings; as doubts (a result not ok) a levelling in doubt (it biases delta_p and L_s
+    beyond their +-, in its own words), a height unit 1000 times too small (in place of the two
+    warnings it also raises) and a dent narrower than the tip could make."""
+    unit = height_unit_doubt(dent, tip_radius=tip_radius, scan=scan)
+    levelling = [w for w in dent.warnings if w.startswith(LEVELLING_DOUBT)]
+    said = [w for w in dent.warnings if w not in levelling]
+    said += [] if unit else list(plausible)
+    narrow = narrow_dent_doubt(dent, tip_radius=tip_radius, scan=scan)
+    return said, [*levelling, *(d for d in (unit, narrow) if d)]
