@@ -223,6 +223,7 @@ def test_failing_cases_count_as_zero_likelihood(template):
 def test_bad_sampler_settings(template):
     for kw, match in (
         ({"steps": 5}, "steps must be >= 10"),
+        ({"steps": 10**12}, r"steps must be at most [\d,]+ with \d+ walkers .* 1.6 GB\), got 1,0"),
         ({"walkers": 1}, "walkers must be >= 4"),
         ({"burn": 50, "steps": 20}, r"burn must lie in \[0, steps\)"),
     ):

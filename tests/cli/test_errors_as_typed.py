@@ -79,3 +79,16 @@ def test_sweep_export_to_a_folder_names_the_target(cli_main: Any, tmp_path: Path
         f"error: target {str(tmp_path)!r} is a folder: give the name of the file to write, "
         "ending in .csv (CSV), .nc or .nc4 (NetCDF-4)\n",
     )
+
+
+@pytest.mark.parametrize("given", ["", "E=69GPa, nu=0.33", "steel.toml", "."])
+def test_materials_name_refuses_values_and_files_as_no_library_name(
+    cli_main: Any, given: str
+) -> None:
+    """It answered "expected a material name, 'key=value' properties or a TOML file", or asked
+    for the missing properties, which the command then refuses."""
+    code, _, err = cli_main("materials", given)
+    assert code == 2
+    start = f"error: NAME: {given!r} is not a library name (see 'impactlab materials')"
+    assert err.startswith(start)
+    assert "missing" not in err and "expected a material name" not in err

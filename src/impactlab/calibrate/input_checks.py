@@ -118,6 +118,10 @@ def _integer(name: str, value: Any) -> int:
         raise ValueError(f"{name} must be an integer, got {value!r}") from None
 
 
+#: The most values the chain holds (walkers x steps x parameters, float64: 1.6 GB).
+MAX_CHAIN_VALUES = 200_000_000
+
+
 def sampler_settings(
     n_params: int, walkers: int | None, steps: int, burn: int | None, seed: int
 ) -> tuple[int, int, int, int]:
@@ -130,6 +134,12 @@ def sampler_settings(
     nw += nw % 2
     if _integer("steps", steps) < 10:
         raise ValueError(f"steps must be >= 10, got {steps}")
+    most = MAX_CHAIN_VALUES // (nw * max(1, n_params))
+    if steps > most:  # refused before the chain's arrays are made
+        raise ValueError(
+            f"steps must be at most {most:,} with {nw} walkers and {n_params} parameter(s) (the "
+            f"chain holds at most {MAX_CHAIN_VALUES:.0e} values, 1.6 GB), got {steps:,}"
+        )
     nburn = steps // 2 if burn is None else _integer("burn", burn)
     if not 0 <= nburn < steps:
         raise ValueError(f"burn must lie in [0, steps), got {burn}")

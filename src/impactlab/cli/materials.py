@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import asdict
+from pathlib import Path
 
 import typer
 from rich.table import Table
@@ -77,6 +78,11 @@ def materials(
 
 def _one(name: str, as_json: bool) -> None:
     """One library material in full: its values (SI in --json), condition, source and note."""
+    if not name.strip() or "=" in name or name.strip().endswith(".toml") or Path(name).exists():
+        raise UserError(  # values or a file define a material for --flat, not a library entry
+            f"NAME: {name!r} is not a library name (see 'impactlab materials'); a material by "
+            "values or a TOML file is given to --flat or --material of the other commands"
+        )
     try:
         key = library_key(get_material(name, "NAME"))  # a library name or alias, else one line
     except ValueError as exc:  # shown here is a library entry: not "or give its properties"
