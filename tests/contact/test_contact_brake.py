@@ -132,4 +132,7 @@ def test_invalid_inputs_name_the_parameter(paper_pair: ContactPair) -> None:
         law.build(ContactPair(soft, soft), R)
     ok = law.build(ContactPair(soft, soft), R, hardness=105.0, meyer_index=2.3)
     assert ok.details["hardness_HB"] == 105.0
+    for text in ("105 HB", "HBW 105", "105 kgf/mm^2"):  # as a material takes it
+        built = law.build(ContactPair(soft, soft), R, hardness=text, meyer_index=2.3)
+        assert built.details["hardness_HB"] == 105.0
     assert k.brake_eq24_force(ok.params, 2 * ok.yield_onset[0]) > 0.0

@@ -27,6 +27,7 @@ from impactlab.contact.ranges import (
     range_limit,
 )
 from impactlab.materials import ContactPair
+from impactlab.materials.core import brinell_text
 from impactlab.references import Reference
 from impactlab.units import is_quantity
 
@@ -305,6 +306,8 @@ class ContactLaw(ABC):
             if isinstance(v, bool | np.bool_) and name.endswith("_switch"):
                 values[name] = float(v)  # a 0/1 switch: True and False say it best
                 continue
+            if unit == "kgf/mm^2":  # a Brinell number, as a material takes it: "105 HB"
+                v = brinell_text(v)
             values[name] = check_finite(name, v, "" if unit == "-" else unit)
         return values
 
