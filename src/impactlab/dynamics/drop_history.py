@@ -81,6 +81,12 @@ class DropHistory(ColumnAttributes):
         return self["normal_force_0"]
 
     @property
+    def penetration(self) -> np.ndarray:
+        """Interference delta of the tip (end 0) [m], as an impact's history names it
+        (``penetration_0``)."""
+        return self["penetration_0"]
+
+    @property
     def tangential_force(self) -> np.ndarray:
         """Tangential contact force on the tip [N] (+x) (``tangential_force_0``)."""
         return self["tangential_force_0"]

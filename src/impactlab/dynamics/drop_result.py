@@ -68,18 +68,6 @@ def _contact_text(c: ContactRecord) -> str:
     )
 
 
-class _RenamedKeys(dict[str, Any]):
-    """A ``to_dict`` whose keys before 0.3 (``schema.RENAMED_DROP_FIELDS``) still read their
-    value, with a DeprecationWarning; they are not among its keys (nor in its JSON)."""
-
-    def __missing__(self, key: str) -> Any:
-        new = schema.RENAMED_DROP_FIELDS.get(key)
-        if new is None:
-            raise KeyError(key)
-        schema.warn_renamed(key, new, "DropResult.to_dict key")
-        return self[new]
-
-
 @dataclass(frozen=True, eq=False, repr=False)
 class DropResult(DerivedOutputs, ResultDisplay):
     """The outcome of one drop (SI units: ``result.units``, each field's; ``print(result)``
@@ -361,7 +349,7 @@ class DropResult(DerivedOutputs, ResultDisplay):
         d["input"] = self.input
         if include_history and self.history is not None:
             d["history"] = {k: self.history[k].tolist() for k in DROP_HISTORY_COLUMNS}
-        out = _RenamedKeys(jsonable(d))
+        out = schema.RenamedDropKeys(jsonable(d))
         out["contacts"] = [ContactDict(c) for c in out["contacts"]]  # "slip": sliding_length
         return out
 

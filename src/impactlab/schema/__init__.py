@@ -56,6 +56,7 @@ __all__ = [
     "SEQUENCE_FIELDS",
     "DerivedField",
     "Field",
+    "RenamedDropKeys",
     "derived_values",
     "description",
     "end_column",
@@ -80,6 +81,26 @@ def warn_renamed(old: str, new: str, what: str, stacklevel: int = 3) -> None:
         DeprecationWarning,
         stacklevel=stacklevel,
     )
+
+
+class RenamedDropKeys(dict[str, Any]):
+    """A drop's ``to_dict`` whose keys before 0.3 (``RENAMED_DROP_FIELDS``) still read their
+    value, with a DeprecationWarning (``d[key]``, ``d.get(key)``, ``key in d``); they are not
+    among its keys (nor in its JSON)."""
+
+    def __missing__(self, key: str) -> Any:
+        new = RENAMED_DROP_FIELDS.get(key)
+        if new is None:
+            raise KeyError(key)
+        warn_renamed(key, new, "DropResult.to_dict key")
+        return self[new]
+
+    def get(self, key: str, default: Any = None) -> Any:  # type: ignore[override]
+        return self[key] if key in self else default  # noqa: SIM401 (the old keys too)
+
+    def __contains__(self, key: object) -> bool:
+        new = RENAMED_DROP_FIELDS.get(key) if isinstance(key, str) else None
+        return super().__contains__(key) or (new is not None and super().__contains__(new))
 
 
 def unit(name: str) -> str:
