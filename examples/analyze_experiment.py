@@ -34,6 +34,9 @@ from impactlab.experiment import MarkerGeometry, analyze
 
 def output_dir() -> Path:
     """argv[1], else $IMPACTLAB_EXAMPLE_OUT, else a fresh temporary folder."""
+    if {"-h", "--help"} & set(sys.argv[1:]):  # how to run it: the docstring
+        print(__doc__)
+        raise SystemExit(0)
     target = sys.argv[1] if len(sys.argv) > 1 else os.environ.get("IMPACTLAB_EXAMPLE_OUT")
     out = Path(target) if target else Path(tempfile.mkdtemp(prefix="impactlab-analyze-"))
     out.mkdir(parents=True, exist_ok=True)

@@ -38,6 +38,9 @@ def output_dir(args: list[str]) -> Path:
 
 
 def main() -> None:
+    if {"-h", "--help"} & set(sys.argv[1:]):  # how to run it: the docstring
+        print(__doc__)
+        raise SystemExit(0)
     args = [a for a in sys.argv[1:] if not a.startswith("--")]
     simulate = "--no-simulate" not in sys.argv[1:]
     out = output_dir(args)
