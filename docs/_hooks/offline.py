@@ -9,6 +9,8 @@
   be converted fails the build instead of showing raw TeX to the reader.
 - **DOIs are links.** Every ``doi:10.xxxx/...`` (or bare ``10.xxxx/...``) in the text of a page,
   the docstrings rendered by mkdocstrings included, becomes a link to https://doi.org/.
+- **Sphinx roles read as names.** A docstring's ``:func:`name``` shows as ``name`` in code:
+  mkdocstrings leaves the role's marker as text.
 - **A star after a symbol is a star.** ``E*^4``, ``delta*^1.5``, ``e* - 1`` outside code: the
   markdown extension :class:`LiteralStars` escapes a lone ``*`` that directly follows a letter,
   digit or closing bracket, so that two of them on a line no longer make the text between them
@@ -27,7 +29,14 @@ from markdown import Extension, Markdown
 from markdown.preprocessors import Preprocessor
 from mkdocs.plugins import event_priority
 
-__all__ = ["LiteralStars", "escape_stars", "link_dois", "relative_root_links", "typeset_math"]
+__all__ = [
+    "LiteralStars",
+    "drop_roles",
+    "escape_stars",
+    "link_dois",
+    "relative_root_links",
+    "typeset_math",
+]
 
 # --- math -----------------------------------------------------------------------------------
 
@@ -184,8 +193,20 @@ def on_config(config: Any) -> Any:
     return config
 
 
+# --- Sphinx roles -----------------------------------------------------------------------------
+
+_ROLE_BACKTICKS = re.compile(r":(?:func|class|data|meth|mod|attr|exc|obj):`([^`<>]+)`")
+_ROLE_CODE = re.compile(r":(?:func|class|data|meth|mod|attr|exc|obj):(?=<code>)")
+
+
+def drop_roles(page_html: str) -> str:
+    """A docstring's Sphinx role (``:func:`name```) as its name in code: mkdocstrings renders
+    the role's marker as text (``:func:<code>name</code>``), or, inside code, the whole role."""
+    return _ROLE_CODE.sub("", _ROLE_BACKTICKS.sub(r"\1", page_html))
+
+
 def on_page_content(html_text: str, **_: Any) -> str:
-    return link_dois(typeset_math(html_text))
+    return link_dois(typeset_math(drop_roles(html_text)))
 
 
 _ROOT_URL = re.compile(r'(?P<attr>\b(?:href|src)=")/(?!/)')

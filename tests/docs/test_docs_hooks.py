@@ -98,3 +98,15 @@ def test_stars_in_indented_code_are_kept(hook: ModuleType) -> None:
 def test_404_links_become_relative(hook: ModuleType) -> None:
     out = hook.relative_root_links('<a href="/engine/index.html"><img src="/a.png"><a href="//x">')
     assert out == '<a href="engine/index.html"><img src="a.png"><a href="//x">'
+
+
+def test_sphinx_roles_read_as_names(hook: ModuleType) -> None:
+    """mkdocstrings left ``:func:`` before the name (197 places in the API pages)."""
+    page = (
+        "<p>the form :func:<code>impactlab.analytic.invert</code> takes; :class:<code>Rod</code>"
+        "</p><code>from :func:`impactlab.experiment.read_markers`.</code><p>ratio: 2</p>"
+    )
+    assert hook.drop_roles(page) == (
+        "<p>the form <code>impactlab.analytic.invert</code> takes; <code>Rod</code></p>"
+        "<code>from impactlab.experiment.read_markers.</code><p>ratio: 2</p>"
+    )
