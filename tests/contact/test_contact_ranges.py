@@ -282,3 +282,16 @@ def test_a_law_with_other_parameters_than_the_fe_comparisons_is_not_verified() -
     assert range_status(jg.law_id, jg.params) == "verified"
     jg = get_law("jackson-green").build(pair, 8.8e-3, elastic_decay=0.3)
     assert "elastic_decay = 0.3 are not the defaults" in str(range_note(jg.law_id, jg.params))
+
+
+def test_a_parameter_given_at_its_computed_default_leaves_the_default_verified() -> None:
+    """Brake's hardness given as the value its default computes from the materials builds the
+    default's parameters: neither model is taken as non-default (a default model built later
+    in the process read "unverified" when the record was keyed by its parameters alone)."""
+    pair = ContactPair(AISI_201, AISI_1010)
+    default = get_law("brake").build(pair, 8.8e-3)
+    hb = 1.0 / (2.0 / AISI_201.brinell_hardness + 2.0 / AISI_1010.brinell_hardness)
+    same = get_law("brake").build(pair, 8.8e-3, hardness=hb)
+    assert np.array_equal(same.params, default.params, equal_nan=True)
+    assert range_status(default.law_id, default.params) == range_status(same.law_id, same.params)
+    assert "not the defaults" not in str(range_note(same.law_id, same.params))

@@ -1,6 +1,6 @@
 """A drop's history and ``to_dict`` read as an impact's where the names carry over: the tip's
 ``penetration`` (it suggested the other end's ``penetration_1``), and the keys before 0.3
-through ``get`` and ``in`` as through ``d[key]`` (``get`` gave None without a word)."""
+through ``get`` as through ``d[key]`` (``get`` gave None without a word)."""
 
 from __future__ import annotations
 
@@ -28,6 +28,6 @@ def test_old_keys_read_through_get_and_in(drop: il.DropResult) -> None:
     with pytest.warns(DeprecationWarning, match="'delta_p' is renamed 'dent_depth'"):
         assert d.get("delta_p") == d["dent_depth"]
     with pytest.warns(DeprecationWarning, match="'delta_p' is renamed"):
-        assert "delta_p" in d and d["delta_p"] == d["dent_depth"]
-    assert d.get("no such key", 5) == 5 and "no such key" not in d
-    assert "delta_p" not in list(d)
+        assert d["delta_p"] == d["dent_depth"]
+    assert d.get("no such key", 5) == 5
+    assert "delta_p" not in d and "delta_p" not in list(d)  # not among its keys

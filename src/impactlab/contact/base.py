@@ -274,7 +274,7 @@ class ContactLaw(ABC):
         details = self._fill(p, pair, values) or {}
         self._check_loading_curve(p, pair, published=values.get("published_switch", 0.0) == 1.0)
         model = ContactModel(self.name, self.law_id, p, details, self.references)
-        note_custom(model.params, given, {q.name: float(q.default) for q in self.parameters})
+        note_custom(self, model, pair, R, given)
         object.__setattr__(model, "pair", pair)
         return model
 

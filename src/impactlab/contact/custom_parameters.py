@@ -28,20 +28,24 @@ def _key(params: Any) -> bytes:
     return np.ascontiguousarray(np.asarray(params, dtype=np.float64)[: k.NPARAM]).tobytes()
 
 
-def note_custom(params: Any, given: dict[str, float], defaults: dict[str, float]) -> None:
-    """Remember the parameters of ``given`` (the law parameters passed to ``build``) that
-    differ from ``defaults`` (a default of nan: taken from the materials, so any value given
-    differs) for the model's parameter vector ``params``."""
-    custom = [
-        f"{name} = {value:g}"
-        for name, value in given.items()
-        if value != defaults.get(name)  # a nan default: never equal
-    ]
+def note_custom(law: Any, model: Any, pair: Any, radius: float, given: dict[str, float]) -> None:
+    """Remember ``model`` (built by ``law.build(pair, radius, **given)``) as built with the
+    parameters of ``given`` that differ from the law's defaults (a default of nan is taken from
+    the materials: any value given differs), unless the defaults give the same parameter vector
+    (a value given as the default computes it, Brake's hardness from the materials)."""
+    defaults = {q.name: float(q.default) for q in law.parameters}
+    custom = [f"{n} = {v:g}" for n, v in given.items() if v != defaults.get(n)]
     if not custom:
+        return
+    try:
+        default = law.build(pair, radius).params
+    except ValueError:  # no default for this pair: the values given are its own
+        default = None
+    if default is not None and _key(default) == _key(model.params):
         return
     if len(_CUSTOM) >= _MAX_REMEMBERED:
         del _CUSTOM[next(iter(_CUSTOM))]
-    _CUSTOM[_key(params)] = ", ".join(custom)
+    _CUSTOM[_key(model.params)] = ", ".join(custom)
 
 
 def custom_parameters(params: Any) -> str | None:

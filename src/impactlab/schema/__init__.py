@@ -85,8 +85,8 @@ def warn_renamed(old: str, new: str, what: str, stacklevel: int = 3) -> None:
 
 class RenamedDropKeys(dict[str, Any]):
     """A drop's ``to_dict`` whose keys before 0.3 (``RENAMED_DROP_FIELDS``) still read their
-    value, with a DeprecationWarning (``d[key]``, ``d.get(key)``, ``key in d``); they are not
-    among its keys (nor in its JSON)."""
+    value, with a DeprecationWarning (``d[key]``, ``d.get(key)``); they are not among its keys
+    (``key in d`` is False, nor in its JSON)."""
 
     def __missing__(self, key: str) -> Any:
         new = RENAMED_DROP_FIELDS.get(key)
@@ -96,11 +96,8 @@ class RenamedDropKeys(dict[str, Any]):
         return self[new]
 
     def get(self, key: str, default: Any = None) -> Any:  # type: ignore[override]
-        return self[key] if key in self else default  # noqa: SIM401 (the old keys too)
-
-    def __contains__(self, key: object) -> bool:
-        new = RENAMED_DROP_FIELDS.get(key) if isinstance(key, str) else None
-        return super().__contains__(key) or (new is not None and super().__contains__(new))
+        new = RENAMED_DROP_FIELDS.get(key)
+        return self[key] if key in self or (new is not None and new in self) else default
 
 
 def unit(name: str) -> str:
