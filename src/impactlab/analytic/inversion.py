@@ -162,7 +162,7 @@ def _nominal_coefficients(
     return K_x, K_y, al, mu_c
 
 
-#: The most Monte Carlo samples taken: about 125 bytes a sample, 1.3 GB of arrays.
+#: The most Monte Carlo samples taken: about 125 bytes a sample, 1.25 GB of arrays.
 MAX_SAMPLES = 10_000_000
 _MEMORY = "(about 1.2 GB of memory; the mean and 95 % interval settle long before: default 20,000)"
 

@@ -19,7 +19,7 @@ from typing import Any
 import numpy as np
 
 from impactlab.fe.problem import make_problem
-from impactlab.fe.result import FORCE_BALANCE_MAX
+from impactlab.fe.result import balanced_run
 from impactlab.materials import ContactPair, Material
 
 DATA_DIR = Path(__file__).resolve().parent / "data"
@@ -63,9 +63,8 @@ class ReferenceRun:
 
     @property
     def usable(self) -> bool:
-        """Converged, with the forces on the sphere and on the flat balanced to
-        FORCE_BALANCE_MAX of the peak (``IndentationResult.usable``)."""
-        return self.converged and self.force_balance <= FORCE_BALANCE_MAX
+        """Converged and balanced: a run to use as a reference (``fe.result.balanced_run``)."""
+        return balanced_run(self.converged, self.force_balance)
 
 
 @dataclass(frozen=True)

@@ -20,6 +20,11 @@ SECTOR_FACTOR = 180.0
 FORCE_BALANCE_MAX = 1e-3
 
 
+def balanced_run(converged: bool, force_balance: float) -> bool:
+    """A run to use as a reference: converged, its forces balanced to FORCE_BALANCE_MAX."""
+    return converged and force_balance <= FORCE_BALANCE_MAX
+
+
 @dataclass(frozen=True)
 class IndentationResult:
     """One loading-unloading run (SI units: m, N, s).
@@ -79,12 +84,12 @@ class IndentationResult:
     def balanced(self) -> bool:
         """Whether the forces on the sphere and on the flat agree to FORCE_BALANCE_MAX of the
         peak force (a run that does not resolve its contact does not)."""
-        return self.force_balance <= FORCE_BALANCE_MAX
+        return balanced_run(True, self.force_balance)
 
     @property
     def usable(self) -> bool:
-        """Converged and balanced: a run to use as a reference."""
-        return self.converged and self.balanced
+        """Converged and balanced: a run to use as a reference (``balanced_run``)."""
+        return balanced_run(self.converged, self.force_balance)
 
     @property
     def residual_ratio(self) -> float:
