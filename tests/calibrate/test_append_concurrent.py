@@ -11,6 +11,7 @@ import os
 import sys
 import time
 import warnings
+import zlib
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -29,7 +30,9 @@ PROCESSES, EACH = 6, 4
 
 
 def _drop(label: str) -> dict[str, object]:
-    return {"label": label, "angle": "20 deg", "vy": -1.4, "e": 0.5, "e_sigma": 0.01}
+    """A drop whose e follows its label (one drop's values under two labels are refused)."""
+    e = 0.3 + (zlib.crc32(label.encode()) % 100_000) * 1e-6
+    return {"label": label, "angle": "20 deg", "vy": -1.4, "e": e, "e_sigma": 0.01}
 
 
 def _appender(path: str, who: int, start: object) -> None:

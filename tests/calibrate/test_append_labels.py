@@ -50,8 +50,8 @@ def test_a_record_without_a_label_is_refused(tmp_path: Path) -> None:
 def test_a_good_label_reads_back_as_written(tmp_path: Path) -> None:
     path = tmp_path / "drops.csv"
     path.write_text(OLD)
-    for label in ("a #1", 'quote "b", comma', "ü-drop"):
-        append_record(path, {**DROP, "label": label})
+    for n, label in enumerate(("a #1", 'quote "b", comma', "ü-drop")):
+        append_record(path, {**DROP, "label": label, "e": 0.3 + 0.01 * n})  # three drops
     assert read_measurements(path).labels == ("old", "a #1", 'quote "b", comma', "ü-drop")
 
 

@@ -25,7 +25,7 @@ from impactlab.experiment.uncertainty import Estimate
 ROD = {"mass": PAPER_ROD.mass, "length": PAPER_ROD.length, "tip_radius": PAPER_ROD.tip_radius}
 
 
-def _result(rod=None, doubts=(), errors=None, flat=None):
+def _result(rod=None, doubts=(), errors=None, flat=None, e=0.4):
     """A stand-in analysed experiment (the attributes experiment_record reads)."""
     kin = SimpleNamespace(
         angle_in=Estimate(math.radians(45), 0.01, "rad"),
@@ -34,7 +34,7 @@ def _result(rod=None, doubts=(), errors=None, flat=None):
         mu=Estimate(0.2, 0.02, ""),
     )
     summary = {
-        "e": Estimate(0.4, 0.01, ""),
+        "e": Estimate(e, 0.01, ""),
         "spin_out": Estimate(-10.0, 0.05, "rad/s"),
         "delta_p": Estimate(22e-6, 1e-6, "m"),
     }
@@ -78,7 +78,7 @@ def test_a_doubtful_result_is_refused_unless_asked_for_then_marked(tmp_path):
     assert "# doubtful drop 'x' (its analysis is not ok): scan failed: unreadable; the " in text
     with warnings.catch_warnings():
         warnings.simplefilter("error")
-        append_experiment(path, _result(), "ok")  # an ok result: no warning
+        append_experiment(path, _result(e=0.45), "ok")  # an ok result: no warning
 
 
 def test_the_users_file_is_left_as_written(tmp_path):
@@ -108,6 +108,19 @@ def test_the_users_file_is_left_as_written(tmp_path):
     assert added.split(",")[6] in lines[1]
     with pytest.raises(ValueError, match="a drop labelled 'c' is there already"):
         append_experiment(path, _result(), "c")
+
+
+def test_the_same_drop_under_another_label_is_refused(tmp_path):
+    """Analysing one drop folder twice appended it twice: counted twice by a calibration."""
+    path = tmp_path / "drops.csv"
+    append_experiment(path, _result(), "a")
+    before = path.read_bytes()
+    with pytest.raises(ValueError, match=r"drop 'b' holds the values of drop 'a' \(drop 1\): "
+                       r"the same drop appended twice would count twice"):  # fmt: skip
+        append_experiment(path, _result(), "b")
+    assert path.read_bytes() == before
+    m = append_experiment(path, _result(e=0.41), "c")  # another drop: another e
+    assert m.labels == ("a", "c")
 
 
 def test_percent_and_a_new_file(tmp_path):

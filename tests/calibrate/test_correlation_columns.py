@@ -113,7 +113,7 @@ def test_a_toml_drop_takes_the_column_and_its_units_table_refuses_it(tmp_path):
         read_measurements(path)
 
 
-def _experiment(rho: float | None):
+def _experiment(rho: float | None, e: float = 0.5):
     """A stand-in analysed experiment (the attributes experiment_record reads) whose marker
     fit correlates e and spin_out at ``rho`` (None: a kinematics without a covariance)."""
     from impactlab.experiment.uncertainty import Estimate
@@ -128,7 +128,7 @@ def _experiment(rho: float | None):
         kin.derived_names = ("t_impact", "spin_out", "e")
         kin.correlation = np.array([[1, 0.1, 0.2], [0.1, 1, rho], [0.2, rho, 1]])
     summary = {
-        "e": Estimate(0.5, 0.02, ""),
+        "e": Estimate(e, 0.02, ""),
         "spin_out": Estimate(-10.0, 0.05, "rad/s"),
         "delta_p": Estimate(22e-6, 1e-6, "m"),
         "sliding_length": Estimate(1.4e-3, 0.1e-3, "m"),
@@ -144,7 +144,7 @@ def test_an_analysed_experiment_brings_the_correlation_of_e_and_spin_out(tmp_pat
     left_out = experiment_record(_experiment(-0.97), "a", correlation_e_spin_out=None)
     assert Measurements.from_records([left_out]).correlation == {}
     m = append_experiment(tmp_path / "drops.csv", _experiment(-0.97), "a")
-    m = append_experiment(tmp_path / "drops.csv", _experiment(-0.5), "b")
+    m = append_experiment(tmp_path / "drops.csv", _experiment(-0.5, e=0.45), "b")
     np.testing.assert_array_equal(m.correlation[("e", "spin_out")], [-0.97, -0.5])
 
 

@@ -42,7 +42,7 @@ from impactlab.calibrate.quantities import ANGLES, DROP_CATEGORIES, MEASURABLE
 from impactlab.sweep.inputs import INPUTS, UNIT_REQUIRED
 from impactlab.units import to_si
 
-__all__ = ["append_record", "check_label"]
+__all__ = ["append_record", "check_label", "same_drop"]
 
 _BOM = b"\xef\xbb\xbf"
 
@@ -122,7 +122,14 @@ def _append(p: Path, row: Row, comment: str | None) -> None:
     lines.append(out.getvalue())
     bom = _BOM if data.startswith(_BOM) else b""
     new = "".join(lines)
-    Measurements.from_records(_records(new), source=str(p))  # refused before it is written
+    meas = Measurements.from_records(_records(new), source=str(p))  # refused before written
+    twin = same_drop(meas, meas.n_drops - 1)
+    if twin is not None:
+        raise ValueError(
+            f"{p}: drop {row.label!r} holds the values of drop {meas.labels[twin]!r} (drop "
+            f"{twin + 1}): the same drop appended twice would count twice in a calibration; to "
+            "replace that drop, remove its line first"
+        )
     write_bytes_atomic(p, bom + new.encode("utf-8"))
 
 
@@ -162,6 +169,35 @@ def _locked(p: Path) -> Iterator[str]:
                     fcntl.flock(fd, fcntl.LOCK_UN)
     finally:
         os.close(fd)
+
+
+#: The relative difference below which two values of a file are the same measurement: the file
+#: holds 12 significant digits, and a unit conversion adds round-off.
+SAME_VALUE_RTOL = 1e-9
+
+
+def same_drop(meas: Measurements, new: int) -> int | None:
+    """The index of an earlier drop of ``meas`` that holds the values of drop ``new`` (the same
+    categories, the same inputs, and the same measured values, at least one, each to
+    :data:`SAME_VALUE_RTOL`; their uncertainties aside), or None: a drop appended again under
+    another label."""
+    measured = [k for k, v in meas.observed.items() if math.isfinite(v[new])]
+    if not measured:
+        return None
+    columns = [*meas.observed.values(), *meas.inputs.values()]
+    for i in range(new):
+        if dict(meas.categories[i]) == dict(meas.categories[new]) and all(
+            _same(float(v[i]), float(v[new])) for v in columns
+        ):
+            return i
+    return None
+
+
+def _same(a: float, b: float) -> bool:
+    """Both not given (NaN), or equal to :data:`SAME_VALUE_RTOL`."""
+    if math.isnan(a) or math.isnan(b):
+        return math.isnan(a) and math.isnan(b)
+    return math.isclose(a, b, rel_tol=SAME_VALUE_RTOL, abs_tol=0.0)
 
 
 def check_label(label: str, name: str = "label") -> None:
