@@ -333,8 +333,9 @@ def read_text_file(path: str | os.PathLike[str], kind: str, what: str = "") -> s
     format (``"TOML"``, ``"JSON"``, ``"CSV"``), ``what`` how a message names it (``"--config
     'a.toml'"``). ValueError, one line, when it is not UTF-8 text: ``"--config 'a.toml' is not a
     text file (TOML is UTF-8 text; byte 1 is 0xff)"`` (``"not a text file (...)"`` without
-    ``what``); UTF-16 text (a byte order mark FF FE or FE FF) is named as such. OSError (a
-    missing or unreadable file) passes through."""
+    ``what``); UTF-16 text (a byte order mark FF FE or FE FF) and Windows-1252 text
+    (:func:`_not_utf8`) are named as such. OSError (a missing or unreadable file) passes
+    through."""
     data = Path(path).read_bytes()
     if data.startswith((b"\xff\xfe", b"\xfe\xff")):  # Excel's "Unicode Text", Notepad's "Unicode"
         how = "Excel: 'CSV UTF-8'; an editor" if kind == "CSV" else "an editor"
@@ -346,6 +347,26 @@ def read_text_file(path: str | os.PathLike[str], kind: str, what: str = "") -> s
     try:
         return data[skip:].decode("utf-8")
     except UnicodeDecodeError as exc:
-        at = skip + exc.start
-        problem = f"not a text file ({kind} is UTF-8 text; byte {at} is 0x{data[at]:02x})"
+        problem = _not_utf8(data, skip + exc.start, kind)
         raise ValueError(f"{what} is {problem}" if what else problem) from None
+
+
+def _not_utf8(data: bytes, at: int, kind: str) -> str:
+    """Why ``data`` (a ``kind`` file whose byte ``at`` is the first that is not UTF-8) cannot be
+    read: Windows-1252 text (a spreadsheet's export or an editor's file in a Western European
+    locale: no NUL byte, every byte a Windows-1252 character) named as such, with how to save it
+    as UTF-8; anything else is not a text file."""
+    byte = f"byte {at} is 0x{data[at]:02x}"
+    try:
+        text = data.decode("cp1252") if b"\x00" not in data else None
+    except UnicodeDecodeError:
+        text = None
+    if text is None:
+        return f"not a text file ({kind} is UTF-8 text; {byte})"
+    how = "Excel: 'CSV UTF-8'; an editor" if kind == "CSV" else "an editor"
+    line = data[:at].count(b"\n") + 1
+    return (
+        f"not UTF-8 text ({kind} is read as UTF-8): line {line}, {byte}, {text[at]!r} in "
+        "Windows-1252, the encoding of a spreadsheet or editor set to a Western European "
+        f"language; save the file as UTF-8 ({how}: encoding UTF-8)"
+    )

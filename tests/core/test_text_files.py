@@ -77,11 +77,18 @@ def test_read_text_file_names_the_file_and_the_byte(tmp_path: Path) -> None:
     f.write_bytes(b"\xef\xbb\xbfx = 1\n")  # a byte order mark is dropped
     assert read_text_file(f, "TOML") == "x = 1\n"
     f.write_bytes(b"\xef\xbb\xbfx = '\xe9'\n")  # Latin-1: byte 8 of the file, counting the mark
-    message = "study file 'a.toml' is not a text file (TOML is UTF-8 text; byte 8 is 0xe9)"
+    message = (
+        "study file 'a.toml' is not UTF-8 text (TOML is read as UTF-8): line 1, byte 8 is 0xe9, "
+        "'é' in Windows-1252, the encoding of a spreadsheet or editor set to a Western European "
+        "language; save the file as UTF-8 (an editor: encoding UTF-8)"
+    )  # it said "not a text file" of a text file in another encoding
     with pytest.raises(ValueError, match=f"^{re.escape(message)}$"):
         read_text_file(f, "TOML", "study file 'a.toml'")
+    with pytest.raises(ValueError, match=r"^not UTF-8 text \(CSV is read as UTF-8\).*\(Excel: "):
+        read_text_file(f, "CSV")
+    f.write_bytes(b"x = 1\n\x00\xe9")  # a NUL byte: not text in any encoding
     with pytest.raises(
-        ValueError, match=r"^not a text file \(CSV is UTF-8 text; byte 8 is 0xe9\)$"
+        ValueError, match=r"^not a text file \(CSV is UTF-8 text; byte 7 is 0xe9\)$"
     ):
         read_text_file(f, "CSV")
     with pytest.raises(FileNotFoundError):

@@ -96,33 +96,8 @@ def not_a_number(cell: str) -> str:
 
 def read_text(path: Path, kind: str) -> str:
     """The UTF-8 text of the data file ``path`` (:func:`read_text_file`); FileFormatError
-    naming it otherwise: a file that reads as Windows-1252 text (a spreadsheet's export in a
-    Western European locale) is named as such, with how to save it as UTF-8."""
+    naming it otherwise (Windows-1252 text named as such, with how to save it as UTF-8)."""
     try:
         return read_text_file(path, kind)
     except ValueError as exc:  # not UTF-8 text
-        raise FileFormatError(path, _encoding_problem(path, kind, str(exc))) from None
-
-
-def _encoding_problem(path: Path, kind: str, problem: str) -> str:
-    """Why ``path`` is not UTF-8 text: Windows-1252 text named as such, else ``problem``."""
-    data = path.read_bytes()
-    try:
-        data.decode("utf-8")
-    except UnicodeDecodeError as exc:
-        at = exc.start
-    else:  # cannot happen: read_text_file failed on it
-        return problem
-    if b"\x00" in data:
-        return problem
-    try:
-        text = data.decode("cp1252")
-    except UnicodeDecodeError:
-        return problem
-    line = data[:at].count(b"\n") + 1
-    return (
-        f"not UTF-8 text ({kind} is read as UTF-8): line {line}, byte {at} is 0x{data[at]:02x}, "
-        f"{text[at]!r} in Windows-1252, the encoding of a "
-        "spreadsheet or editor set to a Western European language; save the file as UTF-8 "
-        "(Excel: 'CSV UTF-8'; an editor: encoding UTF-8)"
-    )
+        raise FileFormatError(path, str(exc)) from None
