@@ -354,11 +354,12 @@ def read_text_file(path: str | os.PathLike[str], kind: str, what: str = "") -> s
 def _not_utf8(data: bytes, at: int, kind: str) -> str:
     """Why ``data`` (a ``kind`` file whose byte ``at`` is the first that is not UTF-8) cannot be
     read: Windows-1252 text (a spreadsheet's export or an editor's file in a Western European
-    locale: no NUL byte, every byte a Windows-1252 character) named as such, with how to save it
-    as UTF-8; anything else is not a text file."""
+    locale: no control byte but tab, line breaks and form feed, every byte a Windows-1252
+    character) named as such, with how to save it as UTF-8; anything else is not a text file."""
     byte = f"byte {at} is 0x{data[at]:02x}"
+    controls = set(range(32)) - set(b"\t\n\r\f")
     try:
-        text = data.decode("cp1252") if b"\x00" not in data else None
+        text = None if controls.intersection(data) else data.decode("cp1252")
     except UnicodeDecodeError:
         text = None
     if text is None:
