@@ -119,3 +119,21 @@ def test_calibrate_restart_help_reads() -> None:
     cmd = typer.main.get_command(app).commands["calibrate"]  # type: ignore[attr-defined]
     text = next(p.help for p in cmd.params if p.name == "restart")
     assert "a chain saved with other inputs stops a run" in (text or "")
+
+
+@pytest.mark.parametrize(
+    ("args", "named"),
+    [
+        (("simulate", "rod", "--config", ""), "'--config'"),
+        (("simulate", "rod", "--out=", "--plot"), "'--out'"),
+        (("sweep", "run", " "), "'STUDY'"),
+        (("sweep", "export", "", "x.csv"), "'STORE'"),
+        (("--law-file", "", "laws"), "'--law-file'"),
+    ],
+)
+def test_an_empty_path_is_refused_by_name(cli_main, args, named) -> None:
+    """It was read as the current folder: "--config '.' is a folder", a path never given."""
+    code, out, err = cli_main(*args)
+    assert code == 2 and out == "", err
+    assert err.startswith(f"error: Invalid value for {named}: an empty path ("), err
+    assert "'.'" not in err and len(err.strip().splitlines()) == 1

@@ -41,11 +41,17 @@ from impactlab.cli import (
     sweep,
     warm,
 )
+from impactlab.cli._common import refuse_empty_paths
 
 
 class _Commands(TyperGroup):
     """impactlab's commands: Ctrl-C during one prints one line on stderr and exits 130 (typer
-    itself would exit 130 without a word)."""
+    itself would exit 130 without a word); an empty path is refused by name
+    (``refuse_empty_paths``)."""
+
+    def main(self, *args: Any, **kwargs: Any) -> Any:
+        refuse_empty_paths(self)
+        return super().main(*args, **kwargs)
 
     def invoke(self, ctx: Any) -> Any:
         try:

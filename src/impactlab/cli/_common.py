@@ -30,6 +30,33 @@ class UserError(ValueError):
     """An error in the user's input: reported as one line, exit status 2."""
 
 
+def refuse_empty_paths(command: Any) -> None:
+    """Every path argument and option (``Path``, ``list[Path]``) of the click ``command`` and
+    of its commands refuses an empty value with a usage error naming it (exit status 2):
+    ``Path("")`` is the current folder, and the command would speak of ``'.'``, a path the
+    user never gave."""
+    for param in command.params:
+        kind = getattr(getattr(param, "type_descriptor", None), "annotation", None)
+        if kind in (Path, list[Path]) and "process_value" not in vars(param):
+            param.process_value = _non_empty(param, param.process_value)
+    for sub in getattr(command, "commands", {}).values():
+        refuse_empty_paths(sub)
+
+
+def _non_empty(param: Any, process: Callable[[Any, Any], Any]) -> Callable[[Any, Any], Any]:
+    """``param``'s ``process_value``, refusing an empty or blank path first."""
+
+    def process_value(ctx: Any, value: Any) -> Any:
+        for given in value if isinstance(value, list | tuple) else (value,):
+            if isinstance(given, str) and not given.strip():
+                raise typer.BadParameter(
+                    f"an empty path ({given!r}): give a file or folder name", ctx, param
+                )
+        return process(ctx, value)
+
+    return process_value
+
+
 #: The sources of the library's rate laws, short (``impactlab.contact.rate``).
 _RATE_SOURCES = {
     "cowper-symonds-1957": "Cowper & Symonds 1957",
