@@ -1,6 +1,6 @@
 """The batches warn of an implausible speed as ``simulate`` does: the largest of the centre
 of mass's and the contact point's speed (spin included, each case's lever arms), over the
-cases whose inputs are finite only."""
+cases that run only (inputs finite, the contact point approaching the flat)."""
 
 from __future__ import annotations
 
@@ -38,6 +38,11 @@ def test_a_fast_contact_point_warns_as_simulate_does(batch: object) -> None:
     assert "the largest impact speed of the batch (110.244 m/s) exceeds 100 m/s" in many[0]
 
 
+def test_a_case_that_does_not_approach_draws_no_speed_warning() -> None:
+    """A batch warned of a 123 m/s impact whose only case was refused: its tip recedes."""
+    assert _warned(lambda: il.simulate_batch(ROD, angle=0.3, vy=-1, spin=-800.0)) == []
+
+
 def test_a_case_that_is_not_finite_draws_no_speed_warning() -> None:
     said = _warned(lambda: il.simulate_batch(ROD, angle=0.35, vy=[-np.inf, -1.0, np.nan]))
     assert said == []
@@ -57,5 +62,7 @@ def test_the_batch_takes_the_speed_simulate_takes(
 ) -> None:
     a, b = lever_arms(ROD.half_length, ROD.tip_radius, angle)
     expected = max(math.hypot(vx, vy), math.hypot(vx + spin * b, vy - spin * a))
+    if not vy - spin * a < 0.0:  # refused, not approaching: said in its status, not warned of
+        expected = 0.0
     cols = {k: np.array([v]) for k, v in (("angle", angle), ("vx", vx), ("vy", vy), ("spin", spin))}
     assert _fastest(cols, ROD) == pytest.approx(expected, rel=1e-12, abs=1e-12)

@@ -12,7 +12,9 @@ the batch.
 
 from __future__ import annotations
 
+import contextlib
 import math
+import operator
 from typing import Any
 
 import numba
@@ -106,16 +108,15 @@ def run_arrays(
     (``impactlab.contact.ranges``: verified against FE, else a stand-in), and BEYOND_TIP,
     OTHER_END and BRITTLE (above).
     """
-    try:
-        lid = int(law_id)
-    except (TypeError, ValueError):
-        raise ValueError(f"law_id must be an integer, got {law_id!r}") from None
+    lid = _integer("law_id", law_id)
     if not 0 <= lid < N_LAWS:
         raise ValueError(f"law_id must lie in [0, {N_LAWS - 1}], got {law_id!r}")
-    try:
-        fid = int(friction_id)
-    except (TypeError, ValueError):
-        raise ValueError(f"friction_id must be an integer, got {friction_id!r}") from None
+    fid = _integer("friction_id", friction_id)
+    limit = check_array("brittle_limit", brittle_limit)
+    if not bool(np.all(limit > 0.0)):
+        raise ValueError(
+            f"brittle_limit must be > 0 [Pa] (inf: no brittle member), got {brittle_limit!r}"
+        )
     if fid not in BATCH_FRICTION_IDS.values():
         raise ValueError(f"friction_id must be one of {BATCH_FRICTION_IDS}, got {friction_id!r}")
     init = check_array("initial", initial)
@@ -226,6 +227,17 @@ def _mark_reach(bp: np.ndarray, init: np.ndarray, out: np.ndarray) -> None:
         bp[:, BP_HALF_LENGTH], bp[:, BP_RADIUS], init[:, 0], out[:, _ANGLE_OUT], out[:, _DMAX]
     )
     out[done, _FLAGS] = out[done, _FLAGS].astype(np.int64) | np.broadcast_to(bits, done.shape)[done]
+
+
+def _integer(name: str, value: Any) -> int:
+    """``value`` as an integer id: an int or a whole float; ValueError naming ``name`` for a
+    bool, a fraction or anything else (1.9 was read as 1)."""
+    if not isinstance(value, bool | np.bool_):
+        with contextlib.suppress(TypeError):
+            return operator.index(value)
+        if isinstance(value, float | np.floating) and float(value).is_integer():
+            return int(value)
+    raise ValueError(f"{name} must be an integer, got {value!r}")
 
 
 def _mark_law_flags(

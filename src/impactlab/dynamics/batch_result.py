@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -108,6 +108,21 @@ class BatchResult(BatchStatus):
                 return np.where(self.computed, batch_derived(self.__getitem__, name), np.nan)
             known = ", ".join((*OUTPUT_FIELDS, *schema.DERIVED_FIELDS))
             raise KeyError(f"unknown field {name!r}; known: {known}") from None
+
+    def __contains__(self, name: object) -> bool:
+        """Whether ``batch[name]`` reads a column (``"e" in batch``)."""
+        return isinstance(name, str) and (
+            name in OUTPUT_FIELDS
+            or name in self.inputs
+            or name == "status"
+            or (name == "max_delta_ratio" and self.max_delta_ratio is not None)
+            or name in schema.DERIVED_FIELDS
+        )
+
+    def __iter__(self) -> Iterator[str]:
+        """The field names (those listed by ``dir``), as a mapping's keys; the cases' rows:
+        ``to_dataframe()``."""
+        return iter(self._fields())
 
     def _fields(self) -> tuple[str, ...]:
         """The names read as ``batch.name`` and listed: inputs, outputs (the diagnostics that

@@ -4,7 +4,7 @@ name (inputs, outputs, derived fields), with its DataFrame, xarray Dataset and p
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -135,6 +135,25 @@ class DropBatchResult(BatchStatus):
             return np.where(self.computed, self.flags, np.nan)
         keep = name in DROP_BATCH_FIELDS and name not in schema.RENAMED_DROP_FIELDS
         return self._column(name) if keep else np.full(len(self), np.nan)  # NaN: a drop has none
+
+    def __contains__(self, name: object) -> bool:
+        """Whether ``drops[name]`` reads a column (``"e" in drops``; an old name does not)."""
+        return (
+            isinstance(name, str)
+            and (
+                name in ENGINE_NAME
+                or name in DROP_BATCH_FIELDS
+                or name in ("initial_energy", "max_delta_ratio", "status", "flags")
+                or name in self.inputs
+                or name in schema.DERIVED_FIELDS
+            )
+            and name not in schema.RENAMED_DROP_FIELDS
+        )
+
+    def __iter__(self) -> Iterator[str]:
+        """The field names (those listed by ``dir``), as a mapping's keys; the drops' rows:
+        ``to_dataframe()``."""
+        return iter(self._fields())
 
     def _fields(self) -> tuple[str, ...]:
         """The names read as ``drops[name]`` or ``drops.name``: inputs, outputs, derived."""

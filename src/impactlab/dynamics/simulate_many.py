@@ -3,6 +3,7 @@ on every core (``impactlab.dynamics.batch``); the inputs checked as ``simulate``
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from typing import Any
 
@@ -24,6 +25,7 @@ from impactlab.dynamics.dent import body_flattening, flattening_warning
 from impactlab.dynamics.export import batch_setup
 from impactlab.dynamics.flex_simulate import FLEXIBLE_BATCH_ERROR
 from impactlab.dynamics.input_checks import (
+    PAST_NORMAL,
     batch_velocity,
     check_angle,
     check_body,
@@ -96,7 +98,8 @@ def _batch_inputs(inputs: dict[str, Any], body: Rod | Sphere) -> dict[str, np.nd
 def _fastest(cols: Mapping[str, np.ndarray], body: Rod | Sphere) -> float:
     """The largest speed [m/s] over the cases that run, those whose inputs keep every
     per-case rule (``kernels.inputs``: finite, velocity components and the spin's contact
-    point speed up to ``MAX_SPEED``, mu in [0, ``MAX_MU``], a rod's angle in (0, pi/2]; a
+    point speed up to ``MAX_SPEED``, mu in [0, ``MAX_MU``], a rod's angle in (0, pi/2], the
+    contact point approaching the flat; a
     refused case is said in its status, not in this warning): of the centre of mass,
     hypot(vx, vy), or of the contact point, hypot(vx + spin b, vy - spin a) with the body's
     lever arms at each case's angle (``bodies.geometry.lever_arms``; a sphere's a = 0, b = R),
@@ -113,6 +116,7 @@ def _fastest(cols: Mapping[str, np.ndarray], body: Rod | Sphere) -> float:
             runs &= (cols["mu"] >= 0.0) & (cols["mu"] <= MAX_MU)
         if isinstance(body, Rod):
             runs &= (th > 0.0) & (th <= MAX_ANGLE)  # kernels.inputs.angle_allowed, elementwise
+        runs &= vy - w * a < 0.0  # the contact point approaches the flat (ST_NOT_APPROACHING)
     return float(np.max(speed[runs & np.isfinite(speed)], initial=0.0))
 
 
@@ -216,7 +220,7 @@ def simulate_batch(
     return BatchResult(
         out=out,
         status=status,
-        inputs=x,
+        inputs=_as_given(x, body),
         law=model.name,
         friction=fric.name,
         references=references_used(model, fric, bool(np.any(x["mu"] > 0.0))),
@@ -241,6 +245,14 @@ def simulate_batch(
         body_yields_first=yields,
         warnings=said,
     )
+
+
+def _as_given(x: dict[str, np.ndarray], body: Rod | Sphere) -> dict[str, np.ndarray]:
+    """The batch's input columns as a result holds them: a sphere's ``angle`` NaN (it has no
+    axis; ``ImpactResult.angle`` is NaN too), where the engine took pi/2."""
+    if not isinstance(body, Sphere):
+        return x
+    return {**x, "angle": np.full_like(x["angle"], np.nan)}
 
 
 def flattening_words(
@@ -294,14 +306,17 @@ def _one_value(value: Any) -> bool:
 
 
 def _refuse_degrees(angle: np.ndarray, sphere: bool) -> None:
-    """ValueError when every angle of a rod's batch lies in (pi/2, 90]: numbers in degrees,
-    which would fail case by case (status 7) without a word."""
+    """ValueError when every angle of a rod's batch lies in (pi/2 + ``PAST_NORMAL``, 90]:
+    numbers in degrees, which would fail case by case (status 7) without a word. Up to
+    ``PAST_NORMAL`` past pi/2 an angle is a rod leaning past the normal (``simulate``'s rule),
+    refused case by case with what it means."""
     a = angle[np.isfinite(angle)]
-    if not sphere and a.size and bool(np.all((a > 0.5 * np.pi) & (a <= 90.0))):
+    low = 0.5 * np.pi + PAST_NORMAL
+    if not sphere and a.size and bool(np.all((a > low) & (a <= 90.0))):
         raise ValueError(
-            f"angle: every value lies in (pi/2, 90] ({float(a.min()):g} to {float(a.max()):g}): "
-            "degrees? a bare angle is radians, as every bare number of the Python API is SI; "
-            "pass np.radians(...) or a Quantity"
+            f"angle: every value lies in (pi/2 + {math.degrees(PAST_NORMAL):g} deg, 90] "
+            f"({float(a.min()):g} to {float(a.max()):g}): degrees? a bare angle is radians, as "
+            "every bare number of the Python API is SI; pass np.radians(...) or a Quantity"
         )
 
 

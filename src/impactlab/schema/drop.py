@@ -148,11 +148,19 @@ DROP_MEANINGS: dict[str, str] = {
     "sequence removed (as a fit of measured flights; e_raw keeps it)",
 }
 
-#: The other fields of ``DropResult`` that an impact has not (its sequence, energies, options).
+#: The other fields of ``DropResult`` that an impact has not (its sequence, energies, options),
+#: and the columns of ``simulate_drops`` that one drop has not (``n_jumps``, ``t_final``).
 DROP_FIELDS: tuple[Field, ...] = (
     *SEQUENCE_FIELDS,
     Field("e_raw", "1", "a drop's e with the gravity impulse of its sequence kept"),
     Field("n_contacts", "1", "number of contacts of a drop"),
+    Field("n_dents", "1", "number of dents a drop left on the flat"),
+    Field("n_jumps", "1", "closed-form free-flight jumps of a drop (simulate_drops only)"),
+    Field(
+        "t_final",
+        "s",
+        "time from first touch at which the end-of-sequence test passed (simulate_drops only)",
+    ),
     Field("scar_length", "m", "x-extent of the tip's contact-point path over all its contacts"),
     Field("slip_path", "m", "sum over the tip's contacts of int |v_slip| dt"),
     Field("mu_apparent", "1", "|dvx / (dvy + g T)|: the paper's Eq. 28 on the frame velocities"),
