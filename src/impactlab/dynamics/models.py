@@ -97,6 +97,22 @@ def contact_model(
     return build_contact_model(law, body.material, flat, R, law_params)
 
 
+def check_recorded_model_flat(law: Any, recorded: Any, changes: Mapping[str, Any]) -> None:
+    """ValueError when a rerun gives another flat (``changes["flat"]``) to a record whose law
+    is a ``ContactModel`` (``law``: its compiled parameters, for the ``recorded`` flat; read
+    back, it holds no pair for :func:`check_model_flat` to check) and no law of its own: the
+    result would be the recorded flat's dent, named after the new one."""
+    flat = changes.get("flat")
+    if not isinstance(law, ContactModel) or flat is None or "law" in changes or flat == recorded:
+        return
+    name = getattr(recorded, "name", "the recorded flat")
+    raise ValueError(
+        f"flat: the record's law is a ContactModel, its parameters computed for the flat "
+        f"{name!r}, not for {getattr(flat, 'name', flat)!r}; give the law by name with the new "
+        f"flat (law={law.name!r}, --law {law.name}) to build it for that flat"
+    )
+
+
 def check_model_flat(model: ContactModel, flat: Material) -> None:
     """ValueError when the ready ``model`` was built by a law for another flat than ``flat``:
     the dent would be the other flat's while the result names this one (and Mindlin's G* takes

@@ -43,6 +43,7 @@ from impactlab.dynamics.kernels.inputs import IN_OK, input_problem
 from impactlab.dynamics.keyword_hints import split_velocity
 from impactlab.dynamics.models import (
     body_params,
+    check_recorded_model_flat,
     engine_setup,
     kernel_params,
 )
@@ -376,6 +377,7 @@ def rerun(
         args.pop("velocity", None)
     if str(changes.get("friction", "partial_slip")) != "partial_slip":
         args.pop("partial_slip_cells", None)  # the recorded partial_slip's, not the new model's
+    check_recorded_model_flat(args.get("law"), args.get("flat"), changes)
     args |= changes
     if record_function(record) == SIMULATE_DROP:
         return simulate_drop(args.pop("body"), **args)
