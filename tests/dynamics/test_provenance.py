@@ -7,6 +7,7 @@ from __future__ import annotations
 import json
 import math
 import sys
+import warnings
 
 import pytest
 from hypothesis import HealthCheck, given, settings
@@ -200,3 +201,20 @@ def test_a_recorded_contact_model_is_not_rerun_on_another_flat() -> None:
     fresh = il.simulate(il.PAPER_ROD, flat=al, angle=0.4, velocity=(0, -1.2), mu=0.2)
     assert il.rerun(rec, flat=al, law="ghaednia").e == fresh.e
     assert il.rerun(rec, flat=il.AISI_1010).e == il.rerun(rec).e  # the recorded flat: runs
+
+
+def test_a_record_of_other_code_of_the_same_version_reruns_with_a_warning() -> None:
+    """The version alone did not move with the physics: a record of other code reran silently."""
+    from impactlab._code_identity import results_code_hash
+    from impactlab.dynamics.provenance import RecordVersionWarning
+
+    rec = json.loads(json.dumps(il.simulate(il.PAPER_ROD, angle=0.4, velocity=(0, -1.2)).to_dict()))
+    assert rec["input"]["results_code_hash"] == results_code_hash()
+    other = json.loads(json.dumps(rec))
+    other["input"]["results_code_hash"] = "0123456789abcdef"
+    with pytest.warns(RecordVersionWarning, match=r"other code of impactlab .*'0123456789abcdef'"):
+        assert il.rerun(other).e == il.rerun(rec).e
+    del other["input"]["results_code_hash"]  # a record from before the hash: its version's word
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RecordVersionWarning)
+        il.rerun(other)

@@ -1,4 +1,4 @@
-"""The code identity of a store (``impactlab.sweep.code_identity``) covers the code that computes
+"""The code identity of a store (``impactlab._code_identity``) covers the code that computes
 a stored number and leaves out the modules that only present a result: editing those keeps a
 store resumable, and none of their code runs while a sweep computes its cases."""
 
@@ -14,7 +14,7 @@ import pytest
 import impactlab
 from impactlab._compiled_cache import source_hash
 from impactlab.sweep import Study, run_sweep
-from impactlab.sweep.code_identity import PRESENTATION, RESULT_SOURCES, result_files
+from impactlab._code_identity import PRESENTATION, RESULT_SOURCES, result_files
 
 PACKAGE = Path(impactlab.__file__).resolve().parent
 

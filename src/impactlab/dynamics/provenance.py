@@ -28,6 +28,7 @@ import warnings
 from collections.abc import Mapping
 from typing import Any
 
+from impactlab._code_identity import results_code_hash
 from impactlab._validation import _caller_level
 from impactlab._version import __version__
 from impactlab.bodies import Rod
@@ -90,6 +91,7 @@ def input_record(
         raise ValueError(f"function must be one of {FUNCTIONS}, got {function!r}")
     record: dict[str, Any] = {
         "impactlab_version": __version__,
+        "results_code_hash": results_code_hash(),
         "format": RECORD_FORMAT,
         "function": function,
         "body": encode(body),
@@ -148,7 +150,7 @@ def _rate_from_record(data: Any) -> Any:
 
 
 #: Keys of a record that are not arguments of ``simulate``.
-_META = ("impactlab_version", "format", "function")
+_META = ("impactlab_version", "results_code_hash", "format", "function")
 #: The keys every record of the format holds, by its function (``input_record`` writes them).
 _COMMON = ("format", "function", "body", "flat", "law", "law_params", "friction", "mu", "angle",
            "velocity", "spin", "gravity", "rtol")  # fmt: skip
@@ -186,8 +188,21 @@ def record_function(record: Mapping[str, Any]) -> str:
 
 def check_version(record: Mapping[str, Any]) -> None:
     """RecordVersionWarning when ``record`` (or its ``input``) was written by another impactlab
-    than this one, or names no ``impactlab_version``."""
+    than this one, or names no ``impactlab_version``, or, of this version, by other code that
+    computes results (its ``results_code_hash``, ``impactlab._code_identity``; a record
+    without one is taken at its version's word)."""
     old = _input(record).get("impactlab_version", record.get("impactlab_version"))
+    code = _input(record).get("results_code_hash")
+    if old == __version__ and code not in (None, results_code_hash()):
+        warnings.warn(
+            f"the record was written by other code of impactlab {old} than this one (the "
+            f"code that computes results: {code!r}, here {results_code_hash()!r}; a "
+            "development version, or a change since): its numbers may differ from the "
+            "recorded result",
+            RecordVersionWarning,
+            stacklevel=_caller_level(),
+        )
+        return
     if old == __version__:
         return
     said = "names no impactlab_version" if old is None else f"was written by impactlab {old}"

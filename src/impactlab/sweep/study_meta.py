@@ -4,11 +4,11 @@ identity and the study's hash)."""
 
 from __future__ import annotations
 
+from impactlab._code_identity import results_code_hash
 from impactlab._version import __version__
 from impactlab.contact.ranges import law_range
 from impactlab.contact.registered import RegisteredLaw
 from impactlab.contact.registry import get_law
-from impactlab.sweep.code_identity import results_code_hash
 from impactlab.sweep.engine import SEQUENCE_OUTPUTS, Evaluator
 from impactlab.sweep.flexible import FLEXIBLE_BODY
 from impactlab.sweep.inputs import ALWAYS_STORED, CATEGORY_INPUTS, OUTPUT_ALIASES

@@ -1,16 +1,18 @@
-"""Which code computed a store's results: a hash of the sources that decide a case's outputs.
+"""Which code computed a result: a hash of the sources that decide an impact's outputs.
 
-A store is resumed chunk by chunk, possibly after impactlab was updated. The package version
+A sweep store is resumed chunk by chunk, and a result's record is run again (``rerun``,
+``impactlab simulate --from``), possibly after impactlab was updated. The package version
 alone does not change with every change of the physics (a new flag, a corrected kernel), so
-chunks computed before and after such a change would mix in one store without a word. The
-store's engine identity therefore carries ``results_code_hash``: the SHA-256 of the compiled
-engine's sources (``ENGINE_SOURCES``), of the Python code around it that turns inputs into a
-case's outputs and flags (dynamics, bodies, materials, friction, the sweep's evaluators), and of
-the data the laws read (the FE curves of the tabulated laws, the laws' verified ranges).
-Presentation is not part of it: the CLI, the docs, the sweep's plots and reports, and the
-modules of those folders that only show a result (``PRESENTATION``: no code of theirs runs
-while a sweep computes its cases, tests/sweep/test_code_identity_scope.py), so editing them
-leaves every store resumable.
+chunks computed before and after such a change would mix in one store, and a rerun would give
+other numbers, without a word. A store's engine identity and a result's record therefore carry
+``results_code_hash``: the SHA-256 of the compiled engine's sources (``ENGINE_SOURCES``), of
+the Python code around it that turns inputs into a case's outputs and flags (dynamics, bodies,
+materials, friction, the sweep's evaluators), and of the data the laws read (the FE curves of
+the tabulated laws, the laws' verified ranges). Presentation is not part of it: the CLI, the
+docs, the sweep's plots and reports, and the modules of those folders that only show a result
+(``PRESENTATION``: no code of theirs runs while a sweep computes its cases,
+tests/sweep/test_code_identity_scope.py), so editing them leaves every store resumable and
+every record silent.
 """
 
 from __future__ import annotations
@@ -64,5 +66,5 @@ def result_files(package: Path) -> tuple[str, ...]:
 @cache
 def results_code_hash() -> str:
     """``source_hash`` (16 hex digits) of ``result_files`` as installed, computed once."""
-    package = Path(__file__).resolve().parent.parent
+    package = Path(__file__).resolve().parent
     return source_hash(package, result_files(package))
