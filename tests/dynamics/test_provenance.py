@@ -218,3 +218,29 @@ def test_a_record_of_other_code_of_the_same_version_reruns_with_a_warning() -> N
     with warnings.catch_warnings():
         warnings.simplefilter("error", RecordVersionWarning)
         il.rerun(other)
+
+
+@pytest.mark.parametrize(
+    ("key", "value", "said"),
+    [
+        ("velocity", {"value": [0, None], "unit": "m/s"}, "'velocity': every value of its list"),
+        ("mu", {"value": None, "unit": "1", "nonfinite": "foo"}, "'mu': nonfinite must be"),
+    ],
+)
+def test_a_tampered_quantity_names_its_key(key, value, said) -> None:
+    """They raised float()'s TypeError and ValueError, naming no key."""
+    rec = json.loads(json.dumps(il.simulate(il.PAPER_ROD, angle=0.4, velocity=(0, -1)).to_dict()))
+    rec["input"][key] = value
+    with pytest.raises(ValueError, match=f"the record's {said}"):
+        il.rerun(rec)
+
+
+def test_another_friction_takes_its_own_default_tolerance() -> None:
+    """partial_slip rerun from a coulomb record ran at coulomb's default 2e-7, not its 3e-8."""
+    kw = {"angle": 0.35, "velocity": (0.0, -1.41), "mu": 0.2}
+    coulomb = il.simulate(il.PAPER_ROD, **kw)
+    slip = il.simulate(il.PAPER_ROD, friction="partial_slip", **kw)
+    assert il.rerun(coulomb, friction="partial_slip").e == slip.e
+    assert il.rerun(slip, friction="coulomb").e == coulomb.e
+    chosen = il.simulate(il.PAPER_ROD, rtol=1e-9, **kw)  # a tolerance of one's own stays
+    assert il.rerun(chosen, friction="mindlin").to_dict()["input"]["rtol"]["value"] == 1e-9

@@ -156,6 +156,13 @@ def _friction_name(friction: Any) -> str:
         return ""
 
 
+def impact_rtol(friction: Any) -> float:
+    """The default tolerance of an impact with ``friction`` (a name or a FrictionModel):
+    ``PARTIAL_SLIP_RTOL`` for the partial-slip engine, else ``DEFAULT_RTOL``."""
+    partial = _friction_name(friction) == FrictionKind.PARTIAL_SLIP.value
+    return PARTIAL_SLIP_RTOL if partial else DEFAULT_RTOL
+
+
 def check_impact(
     body: Any,
     flat: Any,

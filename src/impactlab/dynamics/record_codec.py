@@ -111,10 +111,27 @@ def _decode(data: Any, key: str, units: Mapping[str, str], path: str) -> Any:
 
 
 def _quantity_value(data: Mapping[str, Any], key: str, units: Mapping[str, str]) -> Any:
-    """The number (or list) of a quantity object in the unit written for ``key``."""
+    """The number (or list) of a quantity object in the unit written for ``key``; ValueError
+    naming ``key`` for a ``nonfinite`` that is not "nan", "inf" or "-inf" and for a list
+    entry that is not a number (a null: write ``{"value": null, "unit": ..., "nonfinite":
+    "nan"}`` entries, as a record does)."""
+    name = f"the record's {key!r}" if key else "a quantity of the record"
     if "nonfinite" in data:
-        return float(data["nonfinite"])
+        text = str(data["nonfinite"]).strip().lower()
+        if text not in ("nan", "inf", "-inf", "+inf"):
+            raise ValueError(
+                f"{name}: nonfinite must be 'nan', 'inf' or '-inf', got {data['nonfinite']!r}"
+            )
+        return float(text)
     v = data["value"]
+    if isinstance(v, list):
+        bad = [x for x in v if isinstance(x, bool) or not isinstance(x, int | float)]
+        if bad:
+            raise ValueError(
+                f"{name}: every value of its list must be a number, got {bad[0]!r} in {v!r} "
+                "(a value that is not finite is a list of quantity objects, each with its "
+                "'nonfinite')"
+            )
     value = [float(x) for x in v] if isinstance(v, list) else v
     unit, want = data["unit"], units.get(key, _UNKNOWN_UNIT)
     if value is None or unit in (want, _UNKNOWN_UNIT):

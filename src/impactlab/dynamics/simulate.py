@@ -24,7 +24,7 @@ from impactlab.bodies import Rod, Sphere, lever_arms
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.contact import ContactModel
 from impactlab.contact.brittle import brittle_pressure
-from impactlab.dynamics.checks import ImpactInputs, check_impact
+from impactlab.dynamics.checks import ImpactInputs, check_impact, impact_rtol
 from impactlab.dynamics.core.driver import impact
 from impactlab.dynamics.drop import simulate_drop
 from impactlab.dynamics.drop_result import DropResult
@@ -377,6 +377,12 @@ def rerun(
         args.pop("velocity", None)
     if str(changes.get("friction", "partial_slip")) != "partial_slip":
         args.pop("partial_slip_cells", None)  # the recorded partial_slip's, not the new model's
+    if (
+        "friction" in changes
+        and "rtol" not in changes
+        and args.get("rtol") == impact_rtol(args.get("friction"))
+    ):  # the recorded model's default (a record cannot tell it from a given one): the new one's
+        args.pop("rtol")
     check_recorded_model_flat(args.get("law"), args.get("flat"), changes)
     args |= changes
     if record_function(record) == SIMULATE_DROP:
