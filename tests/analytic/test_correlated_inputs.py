@@ -14,7 +14,7 @@ import pytest
 
 from impactlab._json import shape_problems
 from impactlab.analytic import invert
-from impactlab.cli.invert_output import inversion_json
+from impactlab.analytic.result_json import inversion_json
 
 #: The paper's 20 deg impact with small sigmas (first order holds).
 PAPER = {

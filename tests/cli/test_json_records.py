@@ -106,6 +106,8 @@ def test_calibrate_json_is_the_calibration_document_with_its_files(
 ) -> None:
     import impactlab.calibrate
     import impactlab.calibrate.jsonout
+    import impactlab.calibrate.report  # imported before the patch: imported under it, its
+    # calibration_json kept the stand-in for the later tests of the same process
 
     monkeypatch.setattr(impactlab.calibrate, "calibrate", lambda **kwargs: object())
     doc = {"impactlab_version": il.__version__}  # calibration_json's own (tests/calibrate)

@@ -293,3 +293,32 @@ def test_a_chunk_file_is_zarrs_for_any_values(data, dtype, chunks, extra) -> Non
                 assert digests == {f"a/{key}": file_digest(root / "a" / key)}
                 assert file_digest(root / "a" / key) == file_digest(root / "b" / key)
         np.testing.assert_array_equal(a[...], b[...])
+
+
+def test_a_chunk_past_the_first_of_its_sample_block_holds_its_sampled_inputs(tmp_path) -> None:
+    """Only a sample block's first chunk wrote its sampled inputs: a processes or Dask run
+    interrupted with a later chunk stored gave cases with results and NaN inputs."""
+    study = Study(
+        name="gs",
+        grid={"law": ["ghaednia", "hertz"]},
+        sample=Sample(size=8, seed=1, inputs={"mu": Normal(0.3, 0.05, low=0.0)}),
+        fixed={"vy": -1.41, "angle": 0.35},
+        chunk_size=4,
+    )
+    ev = FakeEvaluator()
+    meta = store_meta(study, ev)
+    store = SweepStore(tmp_path / "s.zarr")
+    store.prepare(study, meta)
+    lay = study.layout
+    later = next(k for k in range(lay.n_chunks) if lay.block(k)[0].start > 0)
+    res = compute_chunk(study, later, ev, meta.outputs)
+    writer = store.writer([*meta.outputs, "status", "mu"])
+    try:
+        store.write_chunk(writer, study, later, res.outputs, res.status)
+    finally:
+        writer.close()
+        store.release()
+    assert store.verify() == {} and store.done_chunks() == {later}
+    sl = lay.block(later)[-1]
+    stored = open_sweep(store.path)["mu"].values[sl]
+    np.testing.assert_array_equal(stored, study.sample.draw("mu", sl.start, sl.stop))

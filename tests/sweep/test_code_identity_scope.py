@@ -12,9 +12,9 @@ from pathlib import Path
 import pytest
 
 import impactlab
+from impactlab._code_identity import PRESENTATION, RESULT_SOURCES, result_files
 from impactlab._compiled_cache import source_hash
 from impactlab.sweep import Study, run_sweep
-from impactlab._code_identity import PRESENTATION, RESULT_SOURCES, result_files
 
 PACKAGE = Path(impactlab.__file__).resolve().parent
 

@@ -180,3 +180,16 @@ def test_what_only_a_case_can_tell_is_still_stored_with_its_status(tmp_path) -> 
     st = Study(name="v", grid={"vy": [-1.0, VY_LIMIT - 1.0]}, fixed={"angle": 0.3, "mu": 0.1})
     ds = run_sweep(st, tmp_path / "v.zarr", evaluator=FakeEvaluator(), quiet=True).dataset
     assert ds["status"].values.tolist() == [0, 1]  # stored, with the evaluator's status
+
+
+@pytest.mark.parametrize(
+    ("values", "said"),
+    [
+        (np.array([[0.1, 0.2]]), r"grid axis 'mu' must be a list of values \(one dimension\)"),
+        ({0.1, 0.2}, r"grid axis 'mu' must be a list of values, in order, got a set"),
+    ],
+)
+def test_a_grid_axis_that_is_no_list_is_named_as_such(values, said) -> None:
+    """It said "input 'mu' must be a plain number, got [0.1, 0.2]"."""
+    with pytest.raises(ValueError, match=said):
+        Study(name="g", grid={"mu": values}, fixed={"vy": -1.41, "angle": "20 deg"})

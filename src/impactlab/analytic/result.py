@@ -16,6 +16,7 @@ from impactlab.units import has_unit, parse_quantity
 
 __all__ = [
     "DOUBT_PHRASES",
+    "INPUT_UNITS",
     "MC_INTERVAL",
     "UNRESOLVED_DENT_PHRASES",
     "InversionResult",
@@ -56,8 +57,8 @@ _UNITS = {
     )
     for k in keys
 }
-#: SI units of the inputs (``InversionResult.inputs``).
-_INPUT_UNITS = {
+#: SI units of the inputs (``InversionResult.inputs``), by keyword of ``invert``.
+INPUT_UNITS = {
     "angle": "rad",
     "v_i": "m/s",
     "mu": "1",
@@ -230,7 +231,7 @@ class InversionResult:
         the Monte Carlo's (where an input has a sigma), the coefficients, the note and the
         warnings (the rows of ``impactlab invert``'s table)."""
         uncertain = self._uncertain()
-        rows = [field_row(k, float(v), _INPUT_UNITS[k], s) for k, (v, s) in self.inputs.items()]
+        rows = [field_row(k, float(v), INPUT_UNITS[k], s) for k, (v, s) in self.inputs.items()]
         rows += [("correlation", self._correlations(), "")] if self.correlation else []
         out: dict[str, Any] = {"duration": self.duration, "mean_force": self.mean_force}
         out["force_method"] = self.force_method
@@ -304,7 +305,7 @@ class InversionResult:
 
         def pm(name: str, label: str = "") -> str:
             v, s = ins[name]
-            _n, text, unit = field_row(name, float(v), _INPUT_UNITS[name], s)
+            _n, text, unit = field_row(name, float(v), INPUT_UNITS[name], s)
             return f"{label or name} = {text}" + (f" {unit}" if unit != "-" else "")
 
         def out(label: str) -> str:

@@ -206,9 +206,10 @@ def read_measurements(path: str | Path, *, measured: bool = True) -> Measurement
             text = str(exc)
             raise ValueError(text if text.startswith(f"{p}: ") else f"{p}: {text}") from None
     hint = (
-        ": an analysis's results.json is one drop's analysis, not a measurements file; append "
-        "the drop to a CSV file with impactlab analyze MARKERS SCAN --measurements drops.csv "
-        "--label NAME (or calibrate.experiment_rows.append_experiment) and calibrate that"
+        ": a results.json is no measurements file (an analysis's holds one drop: append it to "
+        "a CSV file with impactlab analyze MARKERS SCAN --measurements drops.csv --label NAME, "
+        "or calibrate.experiment_rows.append_experiment, and calibrate that; a calibration's "
+        "holds its settings, which a --config TOML repeats)"
         if suffix == ".json"
         else ""
     )

@@ -22,6 +22,7 @@ from impactlab._json import to_json
 from impactlab._validation import ImplausibleInputWarning
 from impactlab.analytic import InversionResult, invert
 from impactlab.analytic.inversion import MAX_SAMPLES
+from impactlab.analytic.result_json import inversion_json
 from impactlab.cli._common import (
     SI_UNITS,
     UserError,
@@ -49,7 +50,7 @@ from impactlab.cli.invert_inputs import (
     parse_sigma,
     parse_value,
 )
-from impactlab.cli.invert_output import inversion_doubts, inversion_json, print_inversion
+from impactlab.cli.invert_output import inversion_doubts, print_inversion
 
 
 def run_invert(

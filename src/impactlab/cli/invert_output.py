@@ -3,76 +3,22 @@ JSON of docs/json-schema.md and the table in display units."""
 
 from __future__ import annotations
 
-import math
 from collections.abc import Sequence
 from typing import Any
 
 import typer
 
 from impactlab._display import field_row, field_rows
-from impactlab._json import quantity as quantity_json
-from impactlab._json import to_json
-from impactlab._version import __version__
 from impactlab.analytic import InversionResult
 from impactlab.analytic.inversion import MC_REJECTED_WARNING
-from impactlab.analytic.result import MC_INTERVAL, doubting
-from impactlab.cli._common import SI_UNITS, print_rows
+from impactlab.analytic.result import INPUT_UNITS, MC_INTERVAL, doubting
+from impactlab.analytic.result_json import OUTPUT_UNITS, SIGMAS
+from impactlab.cli._common import print_rows
 from impactlab.cli.invert_inputs import CORRELATED
 
-#: SI units of the inversion's inputs, by keyword of ``impactlab.analytic.invert``.
-INPUT_UNITS = {
-    "angle": "rad",
-    "v_i": "m/s",
-    "e": "1",
-    "mu": "1",
-    "delta_p": "m",
-    "sliding_length": "m",
-    "dv_cy": "m/s",
-    "vt_in": "m/s",
-}
-#: The sigma of each output: output -> its field in InversionResult.
-_SIGMAS = {
-    "duration": "sigma_T_linear",
-    "mean_force": "sigma_F_linear",
-    "T_mc": "sigma_T_mc",
-    "F_mc": "sigma_F_mc",
-}
 #: The inputs whose sign ``invert`` ignores, shown in the table as the magnitudes it uses (and
 #: the JSON's ``inputs`` holds): labelled ``|v_i|``, ``|sliding_length|``.
 _MAGNITUDES = ("v_i", "sliding_length")
-#: SI units of the outputs that ``SI_UNITS`` does not hold.
-_UNITS = {**SI_UNITS, "T_median_mc": "s", "F_median_mc": "N"}
-
-
-def _per(unit: str, by: str) -> str:
-    """The unit of a derivative, ``unit`` per ``by``: ``s/m``, ``s/rad``, ``s/(m/s)``."""
-    if by == "1":
-        return unit
-    return f"{unit}/({by})" if any(c in by for c in "/* ") else f"{unit}/{by}"
-
-
-def inversion_json(res: InversionResult) -> dict[str, Any]:
-    """The inversion as JSON (docs/json-schema.md): outputs with their sigma (first order for
-    ``duration``/``mean_force``, Monte Carlo for ``T_mc``/``F_mc``), the Monte Carlo's medians
-    and 95 % intervals, its counts (``n_samples``, ``mc_used``: integers; ``mc_rejected``: the
-    share discarded), the inputs as the inversion used them (``res.inputs``: SI, magnitudes of
-    ``v_i``, ``delta_p`` and ``sliding_length``), the rod and the sensitivities, derivatives
-    with respect to those same inputs, each with its unit; a force that does not exist
-    (``F_momentum`` without a measured dv_cy) is a quantity of value null; the
-    ``impactlab_version``."""
-    data = {k: v for k, v in res.to_dict().items() if k not in _SIGMAS.values()}
-    data |= {k: math.nan for k in ("F_momentum", "F_rigid") if data.get(k, 0.0) is None}
-    sigmas = {k: getattr(res, name) for k, name in _SIGMAS.items()}
-    data["inputs"] = {
-        k: quantity_json(float(v), INPUT_UNITS[k], s) for k, (v, s) in res.inputs.items()
-    }
-    for out, unit in (("T", "s"), ("F", "N")):
-        sens = data.pop(f"sensitivity_{out}")
-        data[f"sensitivity_{out}"] = {
-            k: quantity_json(float(d), _per(unit, INPUT_UNITS[k])) for k, d in sens.items()
-        }
-    data["impactlab_version"] = __version__
-    return to_json(data, _UNITS, sigmas)  # type: ignore[no-any-return]
 
 
 def inversion_doubts(inverted: list[str], compared: list[str]) -> list[str]:
@@ -134,8 +80,8 @@ def print_inversion(res: InversionResult, doubts: Sequence[str] = ()) -> None:
     outputs.update({"alpha": res.alpha, "mu_c": res.mu_c, "K_x": res.K_x, "K_y": res.K_y})
     outputs["gravity"] = "included" if res.gravity else "neglected (paper)"
     outputs["measure"] = res.measure
-    sigmas = {k: getattr(res, name) for k, name in _SIGMAS.items()} if uncertain else {}
-    rows += field_rows(outputs, _UNITS, sigmas)
+    sigmas = {k: getattr(res, name) for k, name in SIGMAS.items()} if uncertain else {}
+    rows += field_rows(outputs, OUTPUT_UNITS, sigmas)
     rows += [("ok", "no", ""), *(("doubt", d, "") for d in doubts)] if doubts else []
     title = "impactlab invert (paper Eqs. 12, 29)"
     if uncertain:

@@ -14,6 +14,7 @@ from impactlab._version import __version__
 from impactlab.experiment.errors import ExperimentError
 from impactlab.experiment.kinematics import ImpactKinematics
 from impactlab.experiment.profilometry import DentMetrics
+from impactlab.experiment.result_json import analysis_json
 from impactlab.experiment.uncertainty import Estimate
 
 __all__ = ["ExperimentResult", "model_rows"]
@@ -189,10 +190,12 @@ class ExperimentResult:
 
     def save(self, out_dir: str | Path) -> Path:
         """Write ``results.json`` into ``out_dir`` (created), whole or not at all (an
-        interrupted write leaves the earlier file as it was); returns its path."""
+        interrupted write leaves the earlier file as it was): the analysis as JSON, every
+        quantity a ``{"value", "sigma", "unit"}`` object (``result_json.analysis_json``, as
+        ``impactlab analyze --json`` prints it); returns its path."""
         out = Path(out_dir)
         out.mkdir(parents=True, exist_ok=True)
         p = out / "results.json"
         self.files["results"] = str(p)
-        write_text_atomic(p, json.dumps(self.to_dict(), indent=2))
+        write_text_atomic(p, json.dumps(analysis_json(self), indent=2))
         return p

@@ -124,6 +124,15 @@ class Axis:
         if pint and not self.is_category:  # a pint array: to SI, then numbers
             unit = get_input(self.name).unit
             values = np.atleast_1d(magnitude(f"grid axis {self.name!r}", values, unit))
+        if isinstance(values, set | frozenset | Mapping):
+            raise ValueError(
+                f"grid axis {self.name!r} must be a list of values, in order, got a "
+                f"{type(values).__name__}: {values!r}"
+            )
+        if not isinstance(values, str) and _nested(values):
+            raise ValueError(
+                f"grid axis {self.name!r} must be a list of values (one dimension), got {values!r}"
+            )
         raw = np.asarray(values, dtype=object).tolist() if not isinstance(values, str) else [values]
         vals = tuple(input_value(self.name, v) for v in raw)
         if not vals:
@@ -266,3 +275,12 @@ def block_values(
             vals = sample.draw(name, sl.start, sl.stop)
             numeric[name] = np.broadcast_to(vals.reshape(shp), bshape).ravel()
     return numeric, categories
+
+
+def _nested(values: Any) -> bool:
+    """Whether ``values`` holds lists or arrays (a 2-D array, a list of lists): not one axis."""
+    if isinstance(values, np.ndarray):
+        return values.ndim > 1
+    return isinstance(values, list | tuple) and any(
+        isinstance(v, list | tuple | np.ndarray) for v in values
+    )

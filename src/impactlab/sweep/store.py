@@ -296,7 +296,9 @@ class SweepStore:
         status: np.ndarray,
     ) -> None:
         """Write chunk ``index``'s outputs and status (1-D, C order over the block), the sampled
-        inputs it is the first to cover, then its completion marker with the files' checksums.
+        inputs of its cases (every chunk of a sample block writes them, the same bytes: the
+        chunks finish in any order, and a store interrupted with some done holds the inputs of
+        each), then its completion marker with the files' checksums.
         Every output of a case with status != 0 is stored as "no result" (NaN, the fill value
         -1 of an integer output such as ``regime`` or ``flags``), whatever the engine left."""
         lay = study.layout
@@ -307,7 +309,7 @@ class SweepStore:
         for name, values in outputs.items():
             items.append((name, block, no_result_where_failed(values, codes, writer.arrays[name])))
         items.append(("status", block, codes))
-        if study.sample is not None and all(s.start == 0 for s in block[:-1]):
+        if study.sample is not None:
             sl = block[-1]
             draw = study.sample.draw
             items.extend((n, sl, draw(n, sl.start, sl.stop)) for n in study.sample.inputs)

@@ -57,8 +57,11 @@ from impactlab.sweep.studyfile import read_study_file, study_arguments
 from impactlab.units import is_quantity
 
 
-def _listed(values: Any) -> tuple[Any, ...]:
-    """The values of one grid axis as a tuple (one value or many)."""
+def _listed(values: Any) -> Any:
+    """The values of one grid axis as a tuple (one value or many); a set or a mapping is passed
+    on as it is, for ``Axis`` to refuse (it has no order)."""
+    if isinstance(values, set | frozenset | Mapping):
+        return values
     return tuple(np.atleast_1d(np.asarray(values, dtype=object)).tolist())
 
 
