@@ -244,3 +244,14 @@ def test_another_friction_takes_its_own_default_tolerance() -> None:
     assert il.rerun(slip, friction="coulomb").e == coulomb.e
     chosen = il.simulate(il.PAPER_ROD, rtol=1e-9, **kw)  # a tolerance of one's own stays
     assert il.rerun(chosen, friction="mindlin").to_dict()["input"]["rtol"]["value"] == 1e-9
+
+
+def test_a_spheres_record_reads_back_as_written() -> None:
+    """--from rewrote a sphere's density 7800 as 7799.999999999999 (from its mass)."""
+    s = il.Sphere(radius=0.005, material=il.AISI_201)
+    rec = json.loads(json.dumps(il.simulate(s, velocity=(0, -1.0)).to_dict()))
+    again = il.rerun(rec).to_dict()
+    assert again["input"]["body"] == rec["input"]["body"] and again["e"] == rec["e"]
+    heavy = il.Sphere(radius=0.005, mass=0.01, material=il.AISI_201)  # a mass of its own
+    rec = json.loads(json.dumps(il.simulate(heavy, velocity=(0, -1.0)).to_dict()))
+    assert il.rerun(rec).to_dict()["input"]["body"]["mass"] == rec["input"]["body"]["mass"]

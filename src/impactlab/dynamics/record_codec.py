@@ -193,9 +193,20 @@ def _build(cls: type, values: dict[str, Any], path: str = "") -> Any:
         )
     if cls is ContactModel:
         values = {k: v for k, v in values.items() if k in ("name", "law_id", "params", "details")}
-    if cls is Sphere and values.get("mass") is not None:
-        values.pop("density", None)  # one of the two; the mass is what the dynamics use
+    if cls is Sphere and values.get("mass") is not None:  # one of the two is given
+        values.pop("mass" if _density_gives_mass(values) else "density", None)
     return cls(**values)
+
+
+def _density_gives_mass(values: Mapping[str, Any]) -> bool:
+    """Whether a recorded Sphere's radius and density give its recorded mass to the bit (as
+    ``Sphere`` computes it): then it is built from the density, and its record reads back as
+    written; else from the mass, which is what the dynamics use (a density from the mass can
+    differ from the recorded one in its last bit)."""
+    R, rho, m = values.get("radius"), values.get("density"), values.get("mass")
+    if not (isinstance(R, float) and isinstance(rho, float) and isinstance(m, float)):
+        return False
+    return 4.0 / 3.0 * math.pi * R**3 * rho == m
 
 
 def key_form(key: str) -> str:
