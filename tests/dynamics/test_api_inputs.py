@@ -46,6 +46,16 @@ def test_sphere_mass_up_to_the_factor_is_quiet() -> None:
         il.Sphere(radius="5 mm", density=7800.0)
     with pytest.warns(il.ImplausibleInputWarning):
         il.Sphere(radius="5 mm", mass=1.001 * DENSE_SPHERE_FACTOR * steel)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        il.Sphere(radius="5 mm", mass=1.001 * steel / DENSE_SPHERE_FACTOR)  # a thin shell
+
+
+@pytest.mark.parametrize("kw", [{"density": 7.8}, {"density": 7.8e6}, {"mass": 4e-6}])
+def test_a_sphere_density_or_mass_a_thousand_times_off_warns(kw) -> None:
+    """density=7.8 (g/cm^3 read as kg/m^3) gave e 0.794 for 0.436, plain success, silently."""
+    with pytest.warns(il.ImplausibleInputWarning, match="solid sphere of the material"):
+        il.Sphere(radius="5 mm", **kw)
 
 
 def test_docs_say_a_slow_impact_that_comes_to_rest_is_refused() -> None:

@@ -188,12 +188,20 @@ DENSE_SPHERE_FACTOR = 100.0
 
 def dense_sphere_problem(R: float, m: float, material: Material) -> str | None:
     """Why a sphere's mass ``m`` [kg] is implausible for its radius ``R`` [m] (None when it is
-    not): over :data:`DENSE_SPHERE_FACTOR` times that of a solid sphere of the material; None
-    without the material's density."""
+    not): over :data:`DENSE_SPHERE_FACTOR` times that of a solid sphere of the material, or
+    under its 1 / ``DENSE_SPHERE_FACTOR`` (a thin hollow shell is a tenth or a twentieth; a gram
+    read as a kilogram a thousandth); None without the material's density."""
     if material.density is None:
         return None
     rho = m / (4.0 / 3.0 * math.pi * R**3)
     ratio = rho / material.density
+    if ratio * DENSE_SPHERE_FACTOR < 1.0:
+        return (
+            f"mass = {m!r} kg and radius = {R!r} m imply a density of {rho:.4g} kg/m^3: the mass "
+            f"is 1/{1.0 / ratio:.3g} of that of a solid sphere of the material (rho = "
+            f"{material.density:.4g} kg/m^3) of this radius (warned below 1/"
+            f"{DENSE_SPHERE_FACTOR:g}: a unit mistake, g/cm^3 or g read as SI?)"
+        )
     if not ratio > DENSE_SPHERE_FACTOR:
         return None
     return (

@@ -43,6 +43,7 @@ from impactlab.bodies._checks import (
     plausible,
     tip_mass_problem,
 )
+from impactlab.bodies._derived import DerivedFloat, DerivedInt, given
 from impactlab.bodies._keywords import FLEXIBLE_ROD_NOTES, refuse_unknown_fields
 from impactlab.bodies.beam_modes import axial_frequencies, eb_frequencies
 from impactlab.bodies.geometric import geometric_tensor
@@ -264,11 +265,11 @@ class FlexibleRod:
         plausible("tip_radius", R, PLAUSIBLE_RADIUS, "m")
         object.__setattr__(self, "material", check_material("material", self.material))
         rho = self.material.require_density(FLEX_NEEDS)
-        if self.mass is None and self.diameter is None:
+        if not given(self.mass) and self.diameter is None:
             raise ValueError("give the mass [kg] or the diameter [m] of the rod (or both)")
         d = None if self.diameter is None else checked_size("diameter", self.diameter)
-        if self.mass is None:
-            m = rho * math.pi * cast(float, d) ** 2 / 4.0 * L
+        if not given(self.mass):
+            m: float = DerivedFloat(rho * math.pi * cast(float, d) ** 2 / 4.0 * L)
             check_allowed("mass", m, MASS_RANGE, "kg", "rho pi d^2 / 4 L, from the diameter")
         else:
             m = checked_mass("mass", self.mass)
@@ -281,9 +282,11 @@ class FlexibleRod:
         object.__setattr__(self, "theory", check_theory(self.theory))
         for family in ("axial", "bending"):
             name, value = f"n_{family}", getattr(self, f"n_{family}")
-            if value is None:  # by frequency: the band of the paper's rod's defaults
-                value = default_mode_count(self.section, self.theory, family)
-            object.__setattr__(self, name, check_mode_count(name, value))
+            if not given(value):  # by frequency: the band of the paper's rod's defaults
+                count = default_mode_count(self.section, self.theory, family)
+                object.__setattr__(self, name, DerivedInt(check_mode_count(name, count)))
+            else:
+                object.__setattr__(self, name, check_mode_count(name, value))
         n_axial = cast(int, self.n_axial)
         if self.axial_residual is None:  # the CLI's and the study files' rule
             object.__setattr__(self, "axial_residual", n_axial >= 1)

@@ -32,6 +32,7 @@ from impactlab.bodies._checks import (
     plausible,
     rod_mass,
 )
+from impactlab.bodies._derived import DerivedFloat, given
 from impactlab.bodies.layout import BP_GSTAR, BP_INERTIA, KIND_ROD
 from impactlab.materials import AISI_201, AISI_1010, Material, reduced_shear_modulus, summary_line
 
@@ -102,18 +103,19 @@ class Rod:
         plausible("tip_radius", R, PLAUSIBLE_RADIUS, "m")
         object.__setattr__(self, "material", check_material("material", self.material))
         d = None if self.diameter is None else checked_size("diameter", self.diameter)
-        given = None if self.mass is None else checked_mass("mass", self.mass)
-        m = rod_mass(L, R, given, d, self.material)
+        mass = checked_mass("mass", self.mass) if given(self.mass) else None
+        m = rod_mass(L, R, mass, d, self.material)
         check_allowed("mass", m, MASS_RANGE, "kg", "rho pi d^2 / 4 L, from the diameter")
         plausible("mass", m, PLAUSIBLE_MASS, "kg")
         check_tip_width(R, d)
-        if d is None and self.inertia is None:  # a uniform rod as far as the model knows
+        inertia_given = given(self.inertia)
+        if d is None and not inertia_given:  # a uniform rod as far as the model knows
             problem = heavy_rod_problem(L, R, m, self.material)
             if problem is not None:
                 warn_implausible(problem)
         object.__setattr__(self, "diameter", d)
-        if self.inertia is None:
-            inertia = m * L * L / 12.0
+        if not inertia_given:
+            inertia: float = DerivedFloat(m * L * L / 12.0)
             check_allowed("inertia", inertia, INERTIA_RANGE, "kg m^2", "m L^2 / 12")
         else:
             inertia = check_positive("inertia", self.inertia, "kg m^2")
@@ -130,7 +132,7 @@ class Rod:
             )
         object.__setattr__(self, "length", L)
         object.__setattr__(self, "tip_radius", R)
-        object.__setattr__(self, "mass", m)
+        object.__setattr__(self, "mass", m if mass is not None else DerivedFloat(m))
         object.__setattr__(self, "inertia", inertia)
         p = np.array([KIND_ROD, 0.5 * L, R, m, inertia, math.nan], dtype=np.float64)
         p.setflags(write=False)

@@ -20,6 +20,7 @@ from impactlab.bodies._checks import (
     dense_sphere_problem,
     plausible,
 )
+from impactlab.bodies._derived import DerivedFloat, given
 from impactlab.bodies.layout import BP_GSTAR, BP_INERTIA, KIND_SPHERE
 from impactlab.materials import AISI_201, AISI_1010, Material, reduced_shear_modulus, summary_line
 
@@ -40,11 +41,12 @@ class Sphere:
     ImplausibleInputWarning for a radius outside [1 um, 0.5 m] or a mass outside
     [1 mg, 1000 kg]. The mass is free of the material's density (a hollow ball, or a sphere
     that stands in for a heavier body's effective mass: ``fe.impact_reference``'s rod-mass
-    case is 8.8 mm with the rod's 0.46 kg); a given mass over a hundred times that of a
-    solid sphere of the material (``bodies._checks.DENSE_SPHERE_FACTOR``; a rod striking
-    along its axis is 3 L / (4 R) times, the rod-mass case 21) draws an
+    case is 8.8 mm with the rod's 0.46 kg); a given mass or density over a hundred times that
+    of a solid sphere of the material, or under a hundredth of it
+    (``bodies._checks.DENSE_SPHERE_FACTOR``; a rod striking along its axis is 3 L / (4 R)
+    times, the rod-mass case 21; a thin hollow shell a tenth or a twentieth) draws an
     ImplausibleInputWarning: ``Sphere(radius="5 mm", mass=1.0)`` is 245 times steel's, 1 kg
-    where 1 g was meant.
+    where 1 g was meant; ``density=7.8`` is g/cm^3 read as kg/m^3.
     """
 
     radius: float
@@ -56,23 +58,28 @@ class Sphere:
     def __post_init__(self) -> None:
         R = plausible("radius", checked_size("radius", self.radius), PLAUSIBLE_RADIUS, "m")
         object.__setattr__(self, "material", check_material("material", self.material))
-        if self.mass is not None and self.density is not None:
+        if given(self.mass) and given(self.density):
             raise ValueError("give either mass or density for a Sphere, not both")
-        if self.mass is not None:
+        if given(self.mass):
             m = checked_mass("mass", self.mass)
-            rho = m / (4.0 / 3.0 * math.pi * R**3)
+            rho: float = DerivedFloat(m / (4.0 / 3.0 * math.pi * R**3))
             problem = dense_sphere_problem(R, m, self.material)
             if problem is not None:
                 warn_implausible(problem)
         else:
             rho = (
-                self.material.require_density(
-                    "a Sphere's mass from its radius", "give the Sphere mass= or density="
+                DerivedFloat(
+                    self.material.require_density(
+                        "a Sphere's mass from its radius", "give the Sphere mass= or density="
+                    )
                 )
-                if self.density is None
+                if not given(self.density)
                 else check_positive("density", self.density, "kg/m^3")
             )
-            m = 4.0 / 3.0 * math.pi * R**3 * rho
+            m = DerivedFloat(4.0 / 3.0 * math.pi * R**3 * rho)
+            problem = dense_sphere_problem(R, m, self.material) if given(self.density) else None
+            if problem is not None:  # a density of its own, far from the material's
+                warn_implausible(problem)
             check_allowed("mass", m, MASS_RANGE, "kg", "4/3 pi R^3 rho, from the radius")
         plausible("mass", m, PLAUSIBLE_MASS, "kg")
         object.__setattr__(self, "radius", R)
