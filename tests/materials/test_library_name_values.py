@@ -114,3 +114,13 @@ def test_the_glass_citation_names_the_container_column() -> None:
     assert (lib.SODA_LIME_GLASS.E, lib.SODA_LIME_GLASS.density) == (72e9, 2520.0)
     row = next(line for line in DOCS.read_text().splitlines() if "`soda-lime-glass` |" in line)
     assert "container-glass column" in row
+
+
+def test_every_display_name_names_its_library_entry() -> None:
+    """The name every result prints was refused: "unknown material 'OFHC copper, annealed'"."""
+    from impactlab import get_material
+    from impactlab.materials import PRESETS
+
+    for entry in PRESETS.values():
+        assert get_material(entry.name) is entry
+        assert get_material(entry.name.upper()) is entry  # case free, as keys are

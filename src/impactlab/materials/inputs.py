@@ -75,9 +75,11 @@ def library_names() -> str:
 
 
 def from_library(name: str) -> Material | None:
-    """The library entry called ``name`` (or an alias); None if there is none."""
+    """The library entry called ``name`` (its key, an alias, or the display name every result
+    prints: ``"AISI 1010 low-carbon steel (paper's flat)"``); None if there is none."""
     key = name_key(name)
-    return PRESETS.get(ALIASES.get(key, key))
+    entry = PRESETS.get(ALIASES.get(key, key))
+    return entry if entry is not None else library_entry(name)
 
 
 def _number(field: str, unit: str, value: Any, label: str) -> float:
