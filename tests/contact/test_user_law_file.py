@@ -120,3 +120,25 @@ def test_a_json_result_of_a_law_file_reruns_where_the_law_is_unknown(
     assert NAME in law_names() and json.loads(res.stdout)["e"]["value"] == e
     unregister_law(NAME)
     assert il.rerun(json.loads(saved.read_text())).e == e
+
+
+def test_a_material_file_of_a_law_file_lies_beside_it(tmp_path: Path, monkeypatch) -> None:
+    """It was read from the current folder: a file of the same name there built the law."""
+    from impactlab.materials import get_material
+
+    folder = tmp_path / "laws"
+    folder.mkdir()
+    (folder / "flat.toml").write_text('E = "200 GPa"\nnu = 0.3\nSy = "305 MPa"\nrho = 7870\n')
+    path = _write_law(folder, "beside-law", flat_material="flat.toml")
+    elsewhere = tmp_path / "work"
+    elsewhere.mkdir()
+    (elsewhere / "flat.toml").write_text('E = "69 GPa"\nnu = 0.33\nSy = "276 MPa"\nrho = 2700\n')
+    monkeypatch.chdir(elsewhere)
+    try:
+        law = read_law_file(path)
+        beside = ContactPair(AISI_201, get_material(folder / "flat.toml"))
+        assert [c.e_star_over_sy for c in law.curves] == [
+            pytest.approx(beside.E_star / beside.yield_strength, rel=1e-12)
+        ]
+    finally:
+        unregister_law("beside-law")

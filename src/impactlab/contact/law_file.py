@@ -59,8 +59,8 @@ def read_law_file(path: str | Path) -> RegisteredLaw:
             raise ValueError(f"law file {where!r}: {key} must be a string, got {data[key]!r}")
     try:
         pair = ContactPair(
-            get_material(data["body_material"], "body_material"),
-            get_material(data["flat_material"], "flat_material"),
+            get_material(_beside(p, data["body_material"]), "body_material"),
+            get_material(_beside(p, data["flat_material"]), "flat_material"),
         )
         radius = check_positive("radius", data["radius"], "m")
         curves = IndentationCurves.from_csv(
@@ -77,3 +77,13 @@ def read_law_file(path: str | Path) -> RegisteredLaw:
 
 
 __all__ = ["OPTIONAL_KEYS", "REQUIRED_KEYS", "read_law_file"]
+
+
+def _beside(law_file: Path, material: Any) -> Any:
+    """A material given as a TOML file by a relative path: the file beside the law file, as its
+    CSV tables are (not one of the same name in the current folder); anything else as it is."""
+    if isinstance(material, str) and material.strip().lower().endswith(".toml"):
+        path = Path(material.strip())
+        if not path.is_absolute():
+            return law_file.parent / path
+    return material
