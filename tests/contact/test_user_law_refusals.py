@@ -160,3 +160,27 @@ def test_a_row_of_another_width_gets_the_hint_that_fits(
     assert hint in str(caught.value)
     other = "is the file truncated?" if "two" in hint else "exactly two"
     assert other not in str(caught.value)
+
+
+def test_a_callable_stiffer_than_hertz_within_a_loose_tolerance_warns() -> None:
+    """With tolerance=0.9 the law ran plain Hertz for a callable up to 4x stiffer, silently."""
+    from impactlab.contact.sample_checks import ForceDepartsWarning
+
+    pair = ContactPair(AISI_201, AISI_1010)
+    radius = 8.8e-3
+
+    def hertz(d: float) -> float:
+        return 4.0 / 3.0 * pair.E_star * math.sqrt(radius) * d**1.5
+
+    def residual(dm: float) -> float:
+        return 0.8 * dm * max(1.0 - 1e-6 / dm, 0.0) ** 2
+
+    kw = {"pair": pair, "radius": radius, "delta_max": 300e-6, "switch_interference": 1e-6}
+    try:
+        with pytest.warns(ForceDepartsWarning, match=r"law 'stiff-toy': its force departs"):
+            register_law(
+                "stiff-toy", loading=lambda d: hertz(d) * (1.0 + (d / 1e-6 - 1.0) * 0.01),
+                unloading=residual, tolerance=0.9, **kw,
+            )  # fmt: skip
+    finally:
+        unregister_law("stiff-toy")

@@ -40,6 +40,7 @@ from impactlab.contact.sample_checks import check_below_radius as _check_below_r
 from impactlab.contact.sample_checks import check_hertz_switch as _check_switch
 from impactlab.contact.sample_checks import check_samples as _check_samples
 from impactlab.contact.sample_checks import sample_values as _values
+from impactlab.contact.sample_checks import warn_force_departs
 from impactlab.contact.table_input import PLAUSIBLE_RADIUS
 from impactlab.contact.tabulated import (
     Tabulated,
@@ -260,6 +261,7 @@ def sample_law(
                 f"(tolerance {tolerance:g}): give more points, or check that F/F_Hertz never "
                 f"rises and delta_r/delta_max never falls (the tabulated law enforces both)"
             )
+    warn_force_departs(name, check, f_err, TABLE_FIT_TOLERANCE)
     return RegisteredLaw(name, curves, title=title, sampling_error=worst, sampled=True)
 
 

@@ -6,6 +6,7 @@ order, and the force at the switch against Hertz's.
 from __future__ import annotations
 
 import math
+import warnings
 from collections.abc import Callable
 from typing import Any
 
@@ -101,4 +102,28 @@ def check_hertz_switch(
         f"{radius:.4g} m (the law is Hertz up to the switch: within "
         f"{100 * HERTZ_TOLERANCE:g} % needed): give switch_interference=<where F leaves Hertz>"
         + radius_hint(off, radius, pair)
+    )
+
+
+class ForceDepartsWarning(UserWarning):
+    """A law sampled from a loading callable departs from it by more than the tabulated law's
+    own accuracy (``TABLE_FIT_TOLERANCE``), though within the ``tolerance`` it was given: where
+    F/F_Hertz rises the law does not follow the callable (it keeps F/F_Hertz from rising, or no
+    impact would be without an energy gain), or the samples are too few."""
+
+
+def warn_force_departs(name: str, check: np.ndarray, f_err: np.ndarray, limit: float) -> None:
+    """A :class:`ForceDepartsWarning` where the sampled law's force departs from the callable's
+    (``f_err``, relative, at the interferences ``check`` [m]) by more than ``limit``."""
+    i = int(np.argmax(np.abs(f_err)))
+    if not abs(f_err[i]) > limit:
+        return
+    warnings.warn(
+        f"law {name!r}: its force departs from the loading callable's by {float(f_err[i]):+.3g} "
+        f"(relative) at delta = {float(check[i]):.4g} m, more than {limit:g} (the tabulated "
+        "law's own accuracy), within the tolerance given: where F/F_Hertz rises, the law keeps "
+        "it from rising (an impact would gain energy), so this law is not the callable there; "
+        "check the callable, or give more points",
+        ForceDepartsWarning,
+        stacklevel=3,
     )
