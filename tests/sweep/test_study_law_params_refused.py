@@ -67,3 +67,20 @@ def test_the_summary_carries_the_law_s_words(tmp_path) -> None:
     assert key.endswith(
         "; first at tip_radius = 0.005 m: hardness must be > 0 kgf/mm^2, got -5.0 kgf/mm^2"
     )
+
+
+def test_a_law_parameter_with_its_unit_is_taken_as_simulate_takes_it(tmp_path) -> None:
+    """'105 HB' was refused: "law parameter 'hardness' must be a number"."""
+    from impactlab.sweep import Study, load_study
+
+    fixed = {"vy": -1.0, "mu": 0.2, "angle": 0.5, "law": "brake"}
+    study = Study(name="x", fixed=fixed, grid={"vx": [0.0, 0.1]}, law_params={"hardness": "105 HB"})
+    assert study.law_params == {"hardness": 105.0}
+    with pytest.raises(ValueError, match=r"hardness: '105 m' has the wrong dimension"):
+        Study(name="x", fixed=fixed, grid={"vx": [0.0, 0.1]}, law_params={"hardness": "105 m"})
+    f = tmp_path / "s.toml"
+    f.write_text(
+        '[study]\nname = "s"\n[fixed]\nvy = "-1 m/s"\nangle = "30 deg"\nlaw = "brake"\n'
+        '[grid]\nmu = [0.1, 0.2]\n[law_params]\nhardness = "1030 MPa"\n'
+    )
+    assert load_study(f).law_params["hardness"] == pytest.approx(105.03, rel=1e-3)

@@ -128,23 +128,33 @@ def _check_outputs(outputs: Sequence[str]) -> tuple[str, ...]:
 def _check_law_params(
     law_params: Mapping[str, Any], laws: Sequence[Value | None]
 ) -> dict[str, float]:
-    """Numbers, each a parameter of every (registered) law of the study."""
-    lp = {}
-    for k, v in dict(law_params).items():
-        if isinstance(v, bool) or not isinstance(v, int | float):
-            raise ValueError(f"law parameter {k!r} must be a number, got {v!r}")
-        lp[str(k)] = float(v)
-    for law in laws:
-        if law not in law_names():
-            continue  # an unknown law is reported by the engine's check, with the known laws
-        known = sorted(p.name for p in get_law(str(law)).parameters)
-        unknown = sorted(set(lp) - set(known))
+    """Numbers in each parameter's unit, each a parameter of every (registered) law of the
+    study: a number, or, for a parameter with a unit, a string with units or a pint Quantity
+    (``"105 HB"``, ``"1030 MPa"``), as ``simulate``'s ``law_params`` takes it."""
+    given = {str(k): v for k, v in dict(law_params).items()}
+    known_laws = [str(law) for law in laws if law in law_names()]
+    for law in known_laws:
+        known = sorted(p.name for p in get_law(law).parameters)
+        unknown = sorted(set(given) - set(known))
         if unknown:
             raise ValueError(
                 f"[law_params] {', '.join(map(repr, unknown))} is not a parameter of contact law "
                 f"{law!r}; its parameters: {', '.join(known) or 'none'} (see `impactlab laws`)"
             )
-    return lp
+    lp, texts = {}, {}
+    for k, v in given.items():
+        if isinstance(v, bool) or not isinstance(v, int | float):
+            if not known_laws:  # no law to say the parameter's unit
+                raise ValueError(f"law parameter {k!r} must be a number, got {v!r}")
+            texts[k] = v
+        else:
+            lp[k] = float(v)  # a number: checked with the law's other rules (below)
+    for law in known_laws if texts else ():  # in the parameter's unit ("105 HB": kgf/mm^2)
+        try:
+            lp |= get_law(law).parameter_values(texts)
+        except ValueError as exc:
+            raise ValueError(f"[law_params] of contact law {law!r}: {exc}") from None
+    return {k: lp[k] for k in given}
 
 
 #: A study name: letters, digits, '-', '_' and '.', not starting with '.' (it names files).
