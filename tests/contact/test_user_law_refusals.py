@@ -184,3 +184,10 @@ def test_a_callable_stiffer_than_hertz_within_a_loose_tolerance_warns() -> None:
             )  # fmt: skip
     finally:
         unregister_law("stiff-toy")
+
+
+@pytest.mark.parametrize("name", ["h\u0435rtz", "law\u00b2", "stahl-\u00df", "x\u0660"])
+def test_a_law_name_beyond_ascii_is_refused(name: str) -> None:
+    """A homoglyph name (h\u0435rtz: a Cyrillic e) registered, and printed as "hertz"."""
+    with pytest.raises(ValueError, match="lower-case ASCII letters"):
+        check_law_name(name)

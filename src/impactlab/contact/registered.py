@@ -63,14 +63,15 @@ RECORD_FORMAT = "impactlab registered law"
 
 
 def check_law_name(name: Any) -> str:
-    """``name`` as a law name: lower-case letters, digits, '-' and '_', starting with a letter
-    (so it reads the same in a study file, on the command line and in a store)."""
-    ok = isinstance(name, str) and name[:1].isalpha() and name == name.strip()
+    """``name`` as a law name: lower-case ASCII letters, digits, '-' and '_', starting with a
+    letter (so it reads the same in a study file, on the command line and in a store, and no
+    name looks like another's: "h\u0435rtz" with a Cyrillic e)."""
+    ok = isinstance(name, str) and name.isascii() and name[:1].isalpha()
     ok = ok and all(ch.isalnum() or ch in "-_" for ch in name) and name == name.lower()
     if not ok:
         raise ValueError(
-            f"law name must be lower-case letters, digits, '-' or '_', starting with a letter, "
-            f"got {name!r}"
+            f"law name must be lower-case ASCII letters, digits, '-' or '_', starting with a "
+            f"letter, got {name!r}"
         )
     builtin = next((str(law) for law in Law if law == name.replace("_", "-")), name)
     if builtin != name:  # the built-in name itself: refused by the registry

@@ -9,6 +9,7 @@ data it is refused), so nothing built from it ever goes stale.
 
 from __future__ import annotations
 
+import os
 from collections.abc import Callable, Mapping
 from typing import Any
 
@@ -110,8 +111,10 @@ def add_law(law: RegisteredLaw) -> RegisteredLaw:
     taken = _TAKEN.get(name)
     if taken is not None and taken != fingerprint:
         raise ValueError(
-            f"law name {name!r} is already registered with other data in this process; "
-            f"register the new data under another name"
+            f"law name {name!r} is already registered with other data in this process "
+            f"(pid {os.getpid()}; a sweep's worker keeps the laws of the studies it ran); "
+            "register the new data under another name, or restart that process (a Dask "
+            "cluster's workers: client.restart())"
         )
     if name in _USER:
         return _USER[name]
