@@ -15,7 +15,7 @@ from typer.testing import CliRunner
 
 import impactlab as il
 from impactlab.cli import app
-from impactlab.contact import get_law, law_names, read_law_file, unregister_law
+from impactlab.contact import IndentationCurves, get_law, law_names, read_law_file, unregister_law
 from impactlab.contact._common import jg_critical
 from impactlab.materials import AISI_201, AISI_1010, ContactPair
 
@@ -142,3 +142,28 @@ def test_a_material_file_of_a_law_file_lies_beside_it(tmp_path: Path, monkeypatc
         ]
     finally:
         unregister_law("beside-law")
+
+
+def test_a_table_laws_loading_fit_is_made_once_per_curves(monkeypatch) -> None:
+    """Each build fitted the loading curve twice: 0.8 s a model for a 20 000-row export."""
+    from impactlab.contact import tabulated_fit
+
+    calls = []
+    fit = tabulated_fit.fit_loading
+
+    def counted(*args):
+        calls.append(1)
+        return fit(*args)
+
+    monkeypatch.setattr(tabulated_fit, "fit_loading", counted)
+    d, dm = DC * np.geomspace(1.0, 300.0, 40), DC * np.geomspace(1.0, 300.0, 20)
+    residual = 0.6 * dm * (1.0 - np.sqrt(DC / dm))  # the law file's synthetic data
+    curves = IndentationCurves.from_arrays(PAIR, R, d, FC * (d / DC) ** 1.2, dm, residual)
+    law = il.contact.register_law("fit-once", curves)
+    try:
+        first = law.build(PAIR, R)
+        second = law.build(PAIR, R)
+        assert np.array_equal(first.params, second.params, equal_nan=True)
+        assert len(calls) == 1
+    finally:
+        unregister_law("fit-once")
