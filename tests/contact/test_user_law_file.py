@@ -167,3 +167,26 @@ def test_a_table_laws_loading_fit_is_made_once_per_curves(monkeypatch) -> None:
         assert len(calls) == 1
     finally:
         unregister_law("fit-once")
+
+
+def test_laws_name_of_a_law_of_another_pair_says_which_pair(tmp_path: Path, cli_main) -> None:
+    """It said "make curves for this pair" (run CalculiX) of the example pair never asked for."""
+    from impactlab.materials import get_material
+
+    al = ContactPair(AISI_201, get_material("al-6061-t6"))
+    dc, fc = jg_critical(al.E_star, R, al.yield_strength, al.nu)
+    d, dm = dc * np.geomspace(1.0, 300.0, 40), dc * np.geomspace(1.0, 300.0, 20)
+    path = _write_law(tmp_path, "al-toy", flat_material="al-6061-t6")  # its tables: below
+    np.savetxt(tmp_path / "loading.csv", np.c_[d, fc * (d / dc) ** 1.2], delimiter=",")
+    np.savetxt(tmp_path / "unloading.csv", np.c_[dm, 0.6 * dm * (1.0 - np.sqrt(dc / dm))],
+               delimiter=",")  # fmt: skip
+    try:
+        code, _, err = cli_main("--law-file", str(path), "laws", "al-toy")
+        text = " ".join(err.split())
+        assert code == 2 and "has no numbers for aisi-201 on aisi-1010" in text, err
+        assert "E*/S_y = 207.2" in text
+        code, _, err = cli_main("--law-file", str(path), "laws", "al-toy", "--flat", "al-6061-t6")
+        assert code == 0, err
+    finally:
+        if "al-toy" in law_names():
+            unregister_law("al-toy")

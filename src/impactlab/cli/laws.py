@@ -22,11 +22,12 @@ from rich.text import Text
 
 from impactlab._display import field_row
 from impactlab._json import quantity as quantity_json
-from impactlab.cli._common import console, emit, positive
+from impactlab.cli._common import UserError, console, emit, positive
 from impactlab.cli.laws_accuracy import print_accuracy
 from impactlab.cli.printing import versioned
 from impactlab.contact import get_law, law_names
 from impactlab.contact.base import ContactLaw
+from impactlab.contact.registered import RegisteredLaw
 from impactlab.materials import ContactPair, get_material
 
 
@@ -268,7 +269,13 @@ def _laws(
     assert R is not None
     pair = ContactPair(get_material(body, body_option), get_material(flat, "--flat"))
     info = _described(law)
-    info["example"] = {"body": body, "flat": flat, **_numbers(law, pair, R)}
+    try:
+        numbers = _numbers(law, pair, R)
+    except ValueError as exc:
+        if not isinstance(law, RegisteredLaw):  # a built-in law's refusal: the user's inputs
+            raise
+        raise UserError(_other_pair(name, law, body, flat, exc)) from None
+    info["example"] = {"body": body, "flat": flat, **numbers}
     if as_json:
         emit(versioned(info), as_json=True, units=_UNITS)
         return
@@ -288,3 +295,16 @@ def _laws(
     _n, r_text, r_unit = field_row("radius", R, "m")
     title = f"numbers for {body} on {flat}, R = {r_text} {r_unit}"
     emit(info["example"], as_json=False, title=title, units=_UNITS)
+
+
+def _other_pair(name: str, law: RegisteredLaw, body: str, flat: str, exc: Exception) -> str:
+    """Why a law of one's own shows no numbers for ``body`` on ``flat`` (by default the paper's
+    pair): its curves are another pair's; which pairs they are, and how to ask for one."""
+    pairs = "; ".join(f"E*/S_y = {c.e_star_over_sy:.4g}, nu = {c.nu:.3g}" for c in law.curves or ())
+    if "no indentation curves" not in str(exc):
+        return f"law {name!r}: {exc}"
+    return (
+        f"law {name!r} has no numbers for {body} on {flat} (the example pair unless --body and "
+        f"--flat are given): its curves are for {pairs}; give --body and --flat of that pair "
+        f"(impactlab --law-file FILE laws {name} --flat MATERIAL)"
+    )
