@@ -137,3 +137,16 @@ def test_an_empty_path_is_refused_by_name(cli_main, args, named) -> None:
     assert code == 2 and out == "", err
     assert err.startswith(f"error: Invalid value for {named}: an empty path ("), err
     assert "'.'" not in err and len(err.strip().splitlines()) == 1
+
+
+@pytest.mark.parametrize("command", [("simulate", "rod"), ("simulate", "rod", "--flexible"),
+                                     ("drop", "--rigid")])  # fmt: skip
+def test_another_tip_radius_asks_for_the_rods_mass(cli_main, command) -> None:
+    """--radius "5 mm" kept the paper's 0.46 kg: a rod wider than its tip, run as plain success
+    (rigid) or refused over a mass never given (flexible)."""
+    code, out, err = cli_main(
+        *command, "--angle", "20 deg", "--vy", "-1.41 m/s", "--radius", "5 mm"
+    )
+    assert code == 2 and out == "" and err.startswith(f"error: {MASS_RULE}"), err
+    code, _, err = cli_main(*ROD, "--radius", "8.8 mm", "--json")  # the paper's own tip: runs
+    assert code == 0, err

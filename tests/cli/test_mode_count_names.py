@@ -68,7 +68,7 @@ def test_an_error_names_the_key_as_the_file_spells_it(cli_main: CliMain, tmp_pat
 
 def test_the_tip_radius_alias_still_reads_as_radius(cli_main: CliMain, tmp_path: Path) -> None:
     cfg = tmp_path / "case.toml"
-    cfg.write_text(KINEMATICS + 'rigid = true\ntip_radius = "5 mm"\n')
+    cfg.write_text(KINEMATICS + 'rigid = true\ntip_radius = "5 mm"\nmass = "0.1 kg"\n')
     code, out, err = cli_main("drop", "--config", str(cfg), "--json")
     assert code == 0, err
     assert json.loads(out)["input"]["body"]["tip_radius"]["value"] == pytest.approx(0.005)

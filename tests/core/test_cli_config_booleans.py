@@ -65,7 +65,7 @@ def test_the_tip_radius_reads_under_either_name(tmp_path: Path, cli_main: CliMai
     (the name study files and [rod] tables use); a misspelt key gets the nearest known one."""
     cfg = tmp_path / "case.toml"
     for text in ('tip_radius = "5 mm"\n', ""):
-        cfg.write_text(f'angle = "20 deg"\nvy = "-1 m/s"\n{text}')
+        cfg.write_text(f'angle = "20 deg"\nvy = "-1 m/s"\nmass = "0.1 kg"\n{text}')
         extra = () if text else ("--tip-radius", "5 mm")
         code, out, err = cli_main("simulate", "--config", str(cfg), *extra, "--json")
         assert code == 0, err

@@ -22,7 +22,6 @@ from impactlab.cli._common import (
     print_rows,
 )
 from impactlab.cli.analyze_measurements import append_drop, check_measurements
-from impactlab.experiment.result_json import analysis_json
 
 if TYPE_CHECKING:
     from impactlab.experiment import ExperimentResult, MarkerGeometry
@@ -238,6 +237,8 @@ def analyze_cmd(
                    "marker_units": marker_units, "pixel_size": pixel_size,
                    "height_unit": height_unit, "flip_heights": flip_heights,
                    "gravity": gravity}  # fmt: skip
+        from impactlab.experiment.result_json import analysis_json  # lazy: a fast CLI start
+
         print(json.dumps(analysis_json(res, options), indent=2))
         for w in res.warnings:  # on stderr too, as every command's with --json
             typer.echo(f"warning: {w}", err=True)

@@ -103,18 +103,21 @@ def paper_mass(
     diameter: float | None,
     material: Material,
     label: Callable[..., str] | None = None,
+    radius_given: bool = False,
 ) -> float | None:
     """The rod's mass [kg]: ``mass`` as given; None when only the ``diameter`` [m] is given (the
     mass follows from it); the paper's rod's mass when neither is, for the paper's rod only.
     UserError, naming ``label('mass', like)`` and ``label('diameter', like)``, for a rod of
-    another ``material`` or a given length without either: the paper's mass would be silently
-    wrong (``like``: the option that made the rod another, for a config file's spelling)."""
+    another ``material``, or a given length or tip radius, without either: the paper's mass
+    would be silently wrong (a thinner tip under the paper's 0.46 kg: a rod wider than its tip,
+    whose rim strikes first; ``like``: the option that made the rod another, for a config
+    file's spelling)."""
     if mass is not None or diameter is not None:
         return mass
-    if material == PAPER_ROD.material and not length_given:
+    if material == PAPER_ROD.material and not length_given and not radius_given:
         return PAPER_ROD.mass
     name = label or _option
-    like = "length" if length_given else "material"  # the other rod's
+    like = "length" if length_given else "radius" if radius_given else "material"
     raise UserError(
         f"{name('mass', like)} or {name('diameter', like)}: give one (or both) for a rod other "
         "than the paper's (its mass follows from the diameter, the length and the material's "
@@ -139,7 +142,14 @@ def drop_body(
     length = sizes["length"] if sizes["length"] is not None else PAPER_ROD.length
     tip = sizes["tip_radius"] if sizes["tip_radius"] is not None else PAPER_ROD.tip_radius
     diameter = sizes["diameter"]
-    mass = paper_mass(sizes["length"] is not None, sizes["mass"], diameter, material, name)
+    mass = paper_mass(
+        sizes["length"] is not None,
+        sizes["mass"],
+        diameter,
+        material,
+        name,
+        sizes["tip_radius"] is not None and sizes["tip_radius"] != PAPER_ROD.tip_radius,
+    )
     if rigid:
         given = [name(k) for k, v in modes.items() if v is not None]
         if given:

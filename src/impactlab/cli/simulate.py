@@ -140,10 +140,13 @@ def _body(opt: ConfigOptions) -> tuple[Rod | Sphere | FlexibleRod, float | None]
     angle = angle_quantity(opt.values["angle"], opt.label("angle"))
     diameter, mass = opt.size("diameter", "m"), opt.size("mass", "kg")
     length = opt.size("length", "m")
+    tip = opt.size_or("radius", "m", PAPER_ROD.tip_radius)
     sizes: dict[str, float | None] = {
         "length": PAPER_ROD.length if length is None else length,
-        "tip_radius": opt.size_or("radius", "m", PAPER_ROD.tip_radius),
-        "mass": paper_mass(length is not None, mass, diameter, material, opt.label),
+        "tip_radius": tip,
+        "mass": paper_mass(
+            length is not None, mass, diameter, material, opt.label, tip != PAPER_ROD.tip_radius
+        ),
         "diameter": diameter,
     }
     if flexible:

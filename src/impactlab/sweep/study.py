@@ -27,7 +27,6 @@ from typing import Any
 
 import numpy as np
 
-from impactlab.contact import get_law, law_names
 from impactlab.contact.registry import ensure_laws, law_records
 from impactlab.sweep.dimensions import (
     Axis,
@@ -52,7 +51,7 @@ from impactlab.sweep.options import (
     default_chunk_size,
 )
 from impactlab.sweep.study_bodies import check_study_bodies
-from impactlab.sweep.study_rules import check_study_rules
+from impactlab.sweep.study_rules import check_law_params, check_study_rules
 from impactlab.sweep.studyfile import read_study_file, study_arguments
 from impactlab.units import is_quantity
 
@@ -123,38 +122,6 @@ def _check_outputs(outputs: Sequence[str]) -> tuple[str, ...]:
     if len(set(outs)) != len(outs):
         raise ValueError(f"outputs lists a name twice: {list(outputs)}")
     return outs
-
-
-def _check_law_params(
-    law_params: Mapping[str, Any], laws: Sequence[Value | None]
-) -> dict[str, float]:
-    """Numbers in each parameter's unit, each a parameter of every (registered) law of the
-    study: a number, or, for a parameter with a unit, a string with units or a pint Quantity
-    (``"105 HB"``, ``"1030 MPa"``), as ``simulate``'s ``law_params`` takes it."""
-    given = {str(k): v for k, v in dict(law_params).items()}
-    known_laws = [str(law) for law in laws if law in law_names()]
-    for law in known_laws:
-        known = sorted(p.name for p in get_law(law).parameters)
-        unknown = sorted(set(given) - set(known))
-        if unknown:
-            raise ValueError(
-                f"[law_params] {', '.join(map(repr, unknown))} is not a parameter of contact law "
-                f"{law!r}; its parameters: {', '.join(known) or 'none'} (see `impactlab laws`)"
-            )
-    lp, texts = {}, {}
-    for k, v in given.items():
-        if isinstance(v, bool) or not isinstance(v, int | float):
-            if not known_laws:  # no law to say the parameter's unit
-                raise ValueError(f"law parameter {k!r} must be a number, got {v!r}")
-            texts[k] = v
-        else:
-            lp[k] = float(v)  # a number: checked with the law's other rules (below)
-    for law in known_laws if texts else ():  # in the parameter's unit ("105 HB": kgf/mm^2)
-        try:
-            lp |= get_law(law).parameter_values(texts)
-        except ValueError as exc:
-            raise ValueError(f"[law_params] of contact law {law!r}: {exc}") from None
-    return {k: lp[k] for k in given}
 
 
 #: A study name: letters, digits, '-', '_' and '.', not starting with '.' (it names files).
@@ -239,7 +206,7 @@ class Study:
         ensure_laws(self.laws)
         laws = next((a.values for a in axes if a.name == "law"), (self.value_of("law"),))
         object.__setattr__(self, "laws", law_records(laws))
-        object.__setattr__(self, "law_params", _check_law_params(self.law_params, laws))
+        object.__setattr__(self, "law_params", check_law_params(self.law_params, laws))
         sampled = () if self.sample is None else tuple(self.sample.inputs)
         check_study_bodies(fixed, axes, sampled)  # every case refused: say so
         check_study_laws(fixed, axes, sampled, self.law_params)

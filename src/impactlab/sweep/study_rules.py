@@ -17,9 +17,11 @@ of a study need, and the values a sampled distribution can draw.
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
+from typing import Any
 
 import numpy as np
 
+from impactlab.contact import get_law, law_names
 from impactlab.dynamics.input_checks import degrees_hint
 from impactlab.sweep.dimensions import (
     ALLOWED,
@@ -35,7 +37,13 @@ from impactlab.sweep.distributions import Distribution, Uniform
 from impactlab.sweep.flexible import FLEXIBLE_BODY
 from impactlab.sweep.value_rules import looks_like_degrees
 
-__all__ = ["IGNORED_BY", "UNIFORM_EXTREMES", "check_study_rules", "unset_ignored"]
+__all__ = [
+    "IGNORED_BY",
+    "UNIFORM_EXTREMES",
+    "check_law_params",
+    "check_study_rules",
+    "unset_ignored",
+]
 
 #: The inputs of other bodies that a body leaves unset in a study of several bodies.
 IGNORED_BY: dict[str, tuple[str, ...]] = {
@@ -155,3 +163,35 @@ def _degrees(name: str, dist: Distribution, lower: bool) -> str:
     params = [v for k, v in dist.to_dict().items() if k != "dist"]
     th = next((float(v) for v in params if looks_like_degrees(v)), None)
     return "" if th is None else degrees_hint(th)
+
+
+def check_law_params(
+    law_params: Mapping[str, Any], laws: Sequence[Value | None]
+) -> dict[str, float]:
+    """Numbers in each parameter's unit, each a parameter of every (registered) law of the
+    study: a number, or, for a parameter with a unit, a string with units or a pint Quantity
+    (``"105 HB"``, ``"1030 MPa"``), as ``simulate``'s ``law_params`` takes it."""
+    given = {str(k): v for k, v in dict(law_params).items()}
+    known_laws = [str(law) for law in laws if law in law_names()]
+    for law in known_laws:
+        known = sorted(p.name for p in get_law(law).parameters)
+        unknown = sorted(set(given) - set(known))
+        if unknown:
+            raise ValueError(
+                f"[law_params] {', '.join(map(repr, unknown))} is not a parameter of contact law "
+                f"{law!r}; its parameters: {', '.join(known) or 'none'} (see `impactlab laws`)"
+            )
+    lp, texts = {}, {}
+    for k, v in given.items():
+        if isinstance(v, bool) or not isinstance(v, int | float):
+            if not known_laws:  # no law to say the parameter's unit
+                raise ValueError(f"law parameter {k!r} must be a number, got {v!r}")
+            texts[k] = v
+        else:
+            lp[k] = float(v)  # a number: checked with the law's other rules (below)
+    for law in known_laws if texts else ():  # in the parameter's unit ("105 HB": kgf/mm^2)
+        try:
+            lp |= get_law(law).parameter_values(texts)
+        except ValueError as exc:
+            raise ValueError(f"[law_params] of contact law {law!r}: {exc}") from None
+    return {k: lp[k] for k in given}
