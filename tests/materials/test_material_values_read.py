@@ -7,6 +7,7 @@ and a single character nothing; a missing file is named once."""
 from __future__ import annotations
 
 import json
+import math
 from pathlib import Path
 
 import pytest
@@ -75,3 +76,18 @@ def test_a_missing_file_is_named_once(tmp_path: Path) -> None:
         get_material(missing)
     with pytest.raises(ValueError, match=r"^--flat: material file '.*myal\.toml' does not exist$"):
         get_material(missing, "--flat")
+
+
+def test_a_mapping_reads_none_as_not_given_and_a_records_material_back() -> None:
+    """HB=None was a pint error about a unit 'None', name=None named the material "None", and
+    the material a result records was refused for its 'type' and its unset hardness."""
+    import impactlab as il
+
+    base = {"E": "69 GPa", "nu": 0.33, "Sy": "276 MPa", "rho": 2700}
+    assert math.isnan(get_material({**base, "HB": None}).brinell_hardness)
+    assert get_material({**base, "name": None}).name.startswith("custom (")
+    with pytest.raises(ValueError, match="missing E"):
+        get_material({**base, "E": None})
+    record = il.simulate(il.Rod.paper(), angle=0.3, velocity=(0.0, -1.0)).to_dict()
+    flat = json.loads(json.dumps(record["input"]["flat"]))
+    assert get_material(flat) is il.AISI_1010

@@ -148,7 +148,7 @@ def from_values(values: Mapping[str, Any], where: str = "material") -> Material:
     fields: dict[str, Any] = {}
     for raw, value in values.items():
         key = str(raw).strip().lower()
-        if key in DESCRIPTIVE:
+        if key in DESCRIPTIVE or (key == "type" and value == "Material"):  # a record's own
             continue
         if key not in KEYS:
             raise ValueError(
@@ -162,8 +162,8 @@ def from_values(values: Mapping[str, Any], where: str = "material") -> Material:
         label = f"{where} {str(raw).strip()}"
         if isinstance(value, Mapping):  # {"value": 95.0, "unit": "kgf/mm^2"}; null: unset
             value = _object(value, unit, label)
-            if value is None:
-                continue
+        if value is None:  # not given (a JSON null, Python's None): a required one is missing
+            continue
         if unit == "bool":
             fields[field] = _flag(value, label)
         else:
@@ -190,6 +190,7 @@ def _object(value: Mapping[str, Any], unit: str, label: str) -> Any:
     """A quantity written ``{"value": x, "unit": u}`` (``impactlab materials NAME --json``): x
     itself when u is the key's own unit (a bare number is in it), else ``"x u"``; None for an
     unset value (x null)."""
+    value = {k: v for k, v in value.items() if k != "nonfinite"}  # a record's unset value
     if set(value) != {"value", "unit"} or unit in ("", "bool"):
         raise ValueError(
             f"{label}: expected a number or a quantity ('69 GPa', or {{'value': 69, 'unit': "
