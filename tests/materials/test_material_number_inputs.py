@@ -85,3 +85,16 @@ def test_the_command_line_suggests_the_aluminium(cli_main) -> None:
     )
     assert code == 2
     assert "--flat: unknown material 'alumnium' (did you mean 'al-6061-t6'?)" in err
+
+
+def test_a_yield_strain_beyond_any_solid_warns() -> None:
+    """E=690MPa (69 GPa meant) with Sy=276MPa ran silently as plain success."""
+    import warnings
+
+    from impactlab import ImplausibleInputWarning, Material
+
+    with pytest.warns(ImplausibleInputWarning, match=r"is 0\.4 of E .* one of them in another"):
+        Material("slip", 690e6, 0.33, 276e6)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        Material("pmma-like", 3.1e9, 0.35, 0.124e9)  # 0.04: a polymer

@@ -25,3 +25,13 @@ def test_a_file_of_another_kind_is_named(tmp_path: Path) -> None:
 def test_a_name_that_is_not_a_path_is_an_unknown_material() -> None:
     with pytest.raises(ValueError, match="unknown material 'steell'"):
         get_material("steell")
+
+
+def test_keys_beside_a_material_table_are_refused(tmp_path) -> None:
+    """The top-level values beside [material] were dropped without a word."""
+    from impactlab.materials import get_material
+
+    f = tmp_path / "both.toml"
+    f.write_text('HB = 105\n[material]\nE = "69 GPa"\nnu = 0.33\nSy = "276 MPa"\nrho = 2700\n')
+    with pytest.raises(ValueError, match=r"has key\(s\) HB beside its \[material\] table"):
+        get_material(f)

@@ -60,6 +60,10 @@ PLAUSIBLE: dict[str, tuple[float, float, str, str]] = {
     "brinell_hardness": (0.1, 1e4, _HB, "Pa"),
 }
 
+#: The largest plausible yield strain S_y / E: metals 0.001-0.01, PMMA 0.04; above it one of
+#: the two is most likely in another unit (69 GPa written as 690 MPa).
+MAX_YIELD_STRAIN = 0.1
+
 #: How far below :data:`PLAUSIBLE` a value is refused rather than warned about (a factor): no
 #: solid has it, and the contact laws' closed forms overflow or divide by zero long before (a
 #: yield strength of 1e-100 Pa). Above, only the warning: a stand-in for a rigid body is a
@@ -220,6 +224,13 @@ class Material:
             raise ValueError(
                 f"yield_strength ({value_text(self.yield_strength, 'Pa')}) must be smaller than "
                 f"E ({value_text(self.E, 'Pa')}); check the units"
+            )
+        if self.yield_strength > MAX_YIELD_STRAIN * self.E:
+            warn_implausible(
+                f"material {self.name!r}: yield_strength ({value_text(self.yield_strength, 'Pa')})"
+                f" is {self.yield_strength / self.E:.3g} of E ({value_text(self.E, 'Pa')}): a "
+                f"yield strain above {MAX_YIELD_STRAIN:g}, beyond any solid a drop test strikes "
+                "(metals 0.001-0.01, polymers to 0.05); one of them in another unit?"
             )
         self._relabel_if_changed()
 

@@ -279,6 +279,13 @@ def from_file(path: Path, where: str = "material") -> Material:
     table = data.get("material", data)
     if not isinstance(table, dict):
         raise ValueError(f"{where}: [material] in {str(path)!r} must be a table")
+    beside = sorted(set(data) - {"material"}) if table is not data else []
+    if beside:  # never left out without a word
+        raise ValueError(
+            f"{where}: {str(path)!r} has key(s) {', '.join(beside)} beside its [material] "
+            "table, which would not be read: move them into [material] (or give the material "
+            "at the top level only)"
+        )
     return from_values(table, f"{where} ({path.name})")
 
 

@@ -14,8 +14,9 @@ Brittle materials (tungsten carbide, alumina, glass) crack instead of yielding; 
 elastic-plastic laws need a yield strength, and these entries carry the **compressive strength**
 there, so that an impact below it is elastic. An impact that reaches it is outside what
 impactlab models (no fracture model): these entries are ``brittle``, and a result whose largest
-interference passes first yield with one of them as the material that yields first carries
-``ResultFlag.BRITTLE`` (not plain success).
+mean contact pressure passes a brittle member's first yield carries ``ResultFlag.BRITTLE`` (not
+plain success), whichever of the two yields first (``contact.brittle``: a glass ball on steel
+is marked although the steel yields first).
 
 PMMA is a polymer: viscoelastic (its modulus, Poisson's ratio and yield stress depend on the rate
 and the temperature), so it lies outside every contact law's fitted range (elastic-plastic,
