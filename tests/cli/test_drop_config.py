@@ -34,7 +34,7 @@ def test_the_files_values_are_used_and_the_command_line_wins(
     tmp_path: Path, cli_main: CliMain
 ) -> None:
     cfg = tmp_path / "case.toml"
-    cfg.write_text(CASE + 'tip_radius = "5 mm"\nflat = "al-6061-t6"\n')
+    cfg.write_text(CASE + 'tip_radius = "5 mm"\nmass = "0.1 kg"\nflat = "al-6061-t6"\n')
     given = _input(cli_main, "--config", str(cfg))
     assert given["body"]["type"] == "Rod"  # rigid = true
     assert given["body"]["tip_radius"]["value"] == 0.005  # tip_radius: the option's radius

@@ -43,7 +43,7 @@ from impactlab.bodies._checks import (
     plausible,
     tip_mass_problem,
 )
-from impactlab.bodies._derived import DerivedFloat, DerivedInt, given
+from impactlab.bodies._derived import DerivedFloat, DerivedInt, given, note_recomputed
 from impactlab.bodies._keywords import FLEXIBLE_ROD_NOTES, refuse_unknown_fields
 from impactlab.bodies.beam_modes import axial_frequencies, eb_frequencies
 from impactlab.bodies.geometric import geometric_tensor
@@ -274,6 +274,7 @@ class FlexibleRod:
         else:
             m = checked_mass("mass", self.mass)
         plausible("mass", m, PLAUSIBLE_MASS, "kg")
+        note_recomputed("mass", self.mass, m)
         _check_geometry(L, R, m, d, self.material)
         for name, value in (("length", L), ("tip_radius", R), ("mass", m), ("diameter", d)):
             object.__setattr__(self, name, value)
@@ -284,6 +285,7 @@ class FlexibleRod:
             name, value = f"n_{family}", getattr(self, f"n_{family}")
             if not given(value):  # by frequency: the band of the paper's rod's defaults
                 count = default_mode_count(self.section, self.theory, family)
+                note_recomputed(name, value, count)
                 object.__setattr__(self, name, DerivedInt(check_mode_count(name, count)))
             else:
                 object.__setattr__(self, name, check_mode_count(name, value))
@@ -385,7 +387,7 @@ class FlexibleRod:
         return Rod(
             length=self.length,
             tip_radius=self.tip_radius,
-            mass=cast(float, self.mass),  # a float after __post_init__
+            mass=float(cast(float, self.mass)),  # given: a plain float (``_derived``)
             material=self.material,
             inertia=self.inertia,
         )

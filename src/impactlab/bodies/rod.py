@@ -32,7 +32,7 @@ from impactlab.bodies._checks import (
     plausible,
     rod_mass,
 )
-from impactlab.bodies._derived import DerivedFloat, given
+from impactlab.bodies._derived import DerivedFloat, given, note_recomputed
 from impactlab.bodies.layout import BP_GSTAR, BP_INERTIA, KIND_ROD
 from impactlab.materials import AISI_201, AISI_1010, Material, reduced_shear_modulus, summary_line
 
@@ -132,6 +132,8 @@ class Rod:
             )
         object.__setattr__(self, "length", L)
         object.__setattr__(self, "tip_radius", R)
+        note_recomputed("mass", self.mass, m)
+        note_recomputed("inertia", self.inertia, inertia)
         object.__setattr__(self, "mass", m if mass is not None else DerivedFloat(m))
         object.__setattr__(self, "inertia", inertia)
         p = np.array([KIND_ROD, 0.5 * L, R, m, inertia, math.nan], dtype=np.float64)

@@ -20,7 +20,7 @@ from impactlab.bodies._checks import (
     dense_sphere_problem,
     plausible,
 )
-from impactlab.bodies._derived import DerivedFloat, given
+from impactlab.bodies._derived import DerivedFloat, given, note_recomputed
 from impactlab.bodies.layout import BP_GSTAR, BP_INERTIA, KIND_SPHERE
 from impactlab.materials import AISI_201, AISI_1010, Material, reduced_shear_modulus, summary_line
 
@@ -82,6 +82,8 @@ class Sphere:
                 warn_implausible(problem)
             check_allowed("mass", m, MASS_RANGE, "kg", "4/3 pi R^3 rho, from the radius")
         plausible("mass", m, PLAUSIBLE_MASS, "kg")
+        note_recomputed("mass", self.mass, m)
+        note_recomputed("density", self.density, rho)
         object.__setattr__(self, "radius", R)
         object.__setattr__(self, "mass", m)
         object.__setattr__(self, "density", rho)
