@@ -21,10 +21,8 @@ from impactlab._html import grid_html
 from impactlab._version import __version__
 from impactlab.dynamics.batch_fields import batch_counts
 from impactlab.dynamics.kernels.layout import (
-    DEFAULT_RTOL,
     HISTORY_FIELDS,
     OUTPUT_FIELDS,
-    PARTIAL_SLIP_RTOL,
 )
 from impactlab.dynamics.kernels.status import REGIME_NAMES, STATUS_MESSAGES
 from impactlab.flags import ResultFlag, messages
@@ -146,11 +144,12 @@ def batch_setup(
     (JSON text, in the units of ``law``'s parameters, as a result's ``input`` records them)."""
     import json
 
+    from impactlab.dynamics.checks import impact_rtol
     from impactlab.dynamics.input_checks import gravity_value
     from impactlab.dynamics.provenance import encode, law_params_record
 
     if rtol is None:
-        rtol = PARTIAL_SLIP_RTOL if friction == "partial_slip" else DEFAULT_RTOL
+        rtol = impact_rtol(friction)
     setup: dict[str, Any] = {
         "body": str(body),
         "body_record": json.dumps(encode(body)),
