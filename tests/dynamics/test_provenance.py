@@ -157,6 +157,20 @@ def test_a_built_contact_model_is_recorded_and_reruns() -> None:
     assert (again.e, again.delta_max) == (r.e, r.delta_max)
 
 
+def test_a_contact_models_mixed_unit_params_are_written_as_si() -> None:
+    """The compiled parameters hold pascals, metres and newtons: the record said unit "1"
+    (dimensionless). It says "SI" now, and a record that says "1" reads back the same."""
+    rod = il.PAPER_ROD
+    model = il.dynamics.contact_model(rod, AISI_1010, "ghaednia")
+    r = il.simulate(rod, law=model, angle=0.4, velocity=(0.0, -1.0), mu=0.1)
+    rec = json.loads(json.dumps(r.to_dict()))["input"]
+    assert rec["law"]["params"]["unit"] == "SI"
+    assert {q["unit"] for q in rec["law"]["details"].values()} == {"SI"}
+    older = json.loads(json.dumps(rec))
+    older["law"]["params"]["unit"] = "1"
+    assert il.rerun(older).e == il.rerun(rec).e == r.e
+
+
 def test_a_record_edited_in_other_units_reruns_in_si() -> None:
     """A quantity object is read in the unit it names (a record edited by hand), converted to
     the unit written for its key; a unit of another dimension, or none pint knows, is refused

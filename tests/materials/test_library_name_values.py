@@ -91,6 +91,18 @@ def test_a_library_entry_changed_in_part_is_renamed() -> None:
         dataclasses.replace(lib.AISI_1010, E=69e9, source="")
 
 
+def test_a_changed_entry_changed_again_says_what_differs_now() -> None:
+    """A copy changed back to the entry's values kept its "modified (E)" label."""
+    entry = lib.AISI_1010
+    changed = dataclasses.replace(entry, E=69e9)
+    assert dataclasses.replace(changed, E=entry.E) == entry
+    both = dataclasses.replace(changed, nu=0.2)
+    assert both.name == f"{entry.name}, modified (E, nu)"
+    assert dataclasses.replace(both, E=entry.E).name == f"{entry.name}, modified (nu)"
+    mine = Material("my steel, modified (E)", 69e9, 0.3, 305e6)  # not a library name
+    assert mine.name == "my steel, modified (E)"
+
+
 def test_every_library_entry_rebuilds_from_its_fields() -> None:
     for entry in lib.PRESETS.values():
         fields = {f.name: getattr(entry, f.name) for f in dataclasses.fields(entry)}

@@ -26,12 +26,15 @@ _TYPES: dict[str, type] = {
 }
 
 #: SI units of ``simulate``'s scalar arguments (and of the body and material fields; ``t_max``:
-#: a drop's ``time_limit`` in a record written before 0.3).
+#: a drop's ``time_limit`` in a record written before 0.3; ``params``: a ``ContactModel``'s
+#: compiled parameters, each entry in its own SI unit (``impactlab.contact.kernels``' layout),
+#: written as the unit ``"SI"``).
 UNITS: dict[str, str] = {
     **FIELD_UNITS, "angle": "rad", "velocity": "m/s", "spin": "rad/s", "gravity": "m/s^2",
-    "mu": "1", "rtol": "1", "params": "1", "time_limit": "s", "t_max": "s",
+    "mu": "1", "rtol": "1", "params": "SI", "time_limit": "s", "t_max": "s",
 }  # fmt: skip
-#: The unit written for a float field whose unit is not known here.
+#: The unit written for a float field whose unit is not known here, or for a list of mixed units
+#: (each entry in its SI unit).
 _UNKNOWN_UNIT = "SI"
 
 

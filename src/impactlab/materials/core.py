@@ -250,16 +250,19 @@ class Material:
     def _relabel_if_changed(self) -> None:
         """A library entry changed in part (``dataclasses.replace(AISI_1010, E=69e9)``: its
         display name and a source) keeps no library label: its name says what changed and its
-        source is cleared, so that no result names a library material it did not use. Any other
+        source is cleared, so that no result names a library material it did not use; such a
+        copy changed again is labelled by what differs from the entry then (changed back: the
+        entry's name and source again). Any other
         material named as a library entry (its key, an alias or its display name) with other
         values is refused (``impactlab.materials.naming.library_name_clash``), as
         ``get_material`` refuses it."""
         from impactlab.materials import naming  # imports the library's names lazily
 
-        entry = naming.library_entry(self.name)
+        relabelled = naming.modified_entry(self.name) if not self.source else None
+        entry = relabelled or naming.library_entry(self.name)
         if entry is None:
             return
-        if not (self.source and self.name == entry.name):
+        if relabelled is None and not (self.source and self.name == entry.name):
             clash = naming.library_name_clash(self)
             if clash:
                 raise ValueError(clash)
@@ -267,8 +270,11 @@ class Material:
         differ = naming.values_differ  # exactly: a copy that changed anything is another material
         changed = [f for f in naming.COMPARED if differ(getattr(self, f), getattr(entry, f))]
         if changed:
-            object.__setattr__(self, "name", f"{self.name}, modified ({', '.join(changed)})")
+            object.__setattr__(self, "name", f"{entry.name}, modified ({', '.join(changed)})")
             object.__setattr__(self, "source", "")
+        elif relabelled is not None:  # changed back: the library entry again
+            object.__setattr__(self, "name", entry.name)
+            object.__setattr__(self, "source", entry.source)
 
     @property
     def has_hardness(self) -> bool:

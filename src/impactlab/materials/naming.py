@@ -66,6 +66,16 @@ def library_entry(name: str) -> Material | None:
     return next((m for m in presets.values() if name_key(m.name) == key), None)
 
 
+def modified_entry(name: str) -> Material | None:
+    """The library entry of a display name that ``Material`` labelled as a changed copy
+    (``"AISI 1010, modified (E, nu)"``); None for any other name."""
+    base, sep, rest = name.partition(", modified (")
+    if not (sep and rest.endswith(")")):
+        return None
+    entry = library_entry(base)
+    return entry if entry is not None and entry.name == base else None
+
+
 def values_differ(a: Any, b: Any, rel_tol: float = 0.0) -> bool:
     """True unless ``a`` and ``b`` are the same value: both unset (None, or both NaN), the
     same flag, or numbers equal to ``rel_tol`` (``math.isclose``; 0: exactly equal)."""
