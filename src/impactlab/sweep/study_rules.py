@@ -7,7 +7,8 @@ of a study need, and the values a sampled distribution can draw.
   no rod's, and a flexible rod's inertia follows its beam; the engine adapter leaves them unset
   for the bodies that do not take them (:func:`unset_ignored`), as a sphere ignores the angle.
   An input that no body of the study takes is refused, and so is a body that lacks what it
-  needs (a sphere without ``radius``): every case of it would fail.
+  needs (a sphere without ``radius``): every case of it would fail. A rod of another length or
+  tip radius without ``mass`` keeps the paper's rod's mass, with a warning.
 - A distribution is checked by the values its draws can take: its quantiles at the smallest
   and the largest uniform the draws use short of 1 (2^-54 and 1 - 2^-53: a normal reaches
   about 8.3 standard deviations), against the input's allowed values as a grid's values are
@@ -21,6 +22,8 @@ from typing import Any
 
 import numpy as np
 
+from impactlab._validation import warn_implausible
+from impactlab.bodies import PAPER_ROD
 from impactlab.contact import get_law, law_names
 from impactlab.dynamics.input_checks import degrees_hint
 from impactlab.sweep.dimensions import (
@@ -87,6 +90,7 @@ def check_study_rules(
             "radius: body 'sphere' needs it (every case of the sphere would fail); set radius "
             "in [fixed], [grid] or [sample]"
         )
+    _warn_paper_mass(given, bodies)
     spin_zero = "spin" not in grid and "spin" not in sampled and not fixed.get("spin", 0.0)
     for name, dist in sampled.items():
         rules = [ALLOWED.get(name)]
@@ -97,6 +101,18 @@ def check_study_rules(
         for rule in rules:
             if rule is not None:
                 _check_draws(name, dist, rule)
+
+
+def _warn_paper_mass(given: set[str], bodies: Sequence[str]) -> None:
+    """ImplausibleInputWarning for a rod of another length or tip radius without ``mass``: it
+    keeps the paper's rod's mass (``impactlab simulate`` asks for the mass instead)."""
+    other = [n for n in ("length", "tip_radius") if n in given]
+    if other and "mass" not in given and {"rod", FLEXIBLE_BODY} & set(bodies):
+        warn_implausible(
+            f"mass: the study's rod takes another {' and '.join(other)} but keeps the paper's "
+            f"rod's mass ({PAPER_ROD.mass:.4g} kg); give mass in [fixed], [grid] or [sample] "
+            "for a rod other than the paper's"
+        )
 
 
 def _check_draws(name: str, dist: Distribution, rule: Interval) -> None:
