@@ -27,6 +27,8 @@ def test_a_batch_answers_in_and_iterates_its_field_names(batch) -> None:
     assert names and len(names) == len(set(names))
     assert all(name in b for name in names)
     np.testing.assert_array_equal({n: b[n] for n in names}["e"], b.e)
+    # every column of to_dataframe() is a key: {k: b[k] for k in b} dropped status
+    assert set(b.to_dataframe().columns) <= set(names)
 
 
 def test_an_old_drop_field_name_is_not_in_a_batch_of_drops() -> None:

@@ -106,7 +106,7 @@ class BatchResult(BatchStatus):
                 return np.asarray(getattr(self, name))  # to_dataframe's columns, by name too
             if name in schema.DERIVED_FIELDS:  # NaN where a case failed, whatever compute does
                 return np.where(self.computed, batch_derived(self.__getitem__, name), np.nan)
-            known = ", ".join((*OUTPUT_FIELDS, *schema.DERIVED_FIELDS))
+            known = ", ".join(self)
             raise KeyError(f"unknown field {name!r}; known: {known}") from None
 
     def __contains__(self, name: object) -> bool:
@@ -120,9 +120,11 @@ class BatchResult(BatchStatus):
         )
 
     def __iter__(self) -> Iterator[str]:
-        """The field names (those listed by ``dir``), as a mapping's keys; the cases' rows:
-        ``to_dataframe()``."""
-        return iter(self._fields())
+        """Every name ``batch[name]`` reads (those listed by ``dir``, then ``status``,
+        ``max_delta_ratio`` where held and the diagnostics), as a mapping's keys; the cases'
+        rows: ``to_dataframe()``."""
+        ratio = ("max_delta_ratio",) if self.max_delta_ratio is not None else ()
+        return iter((*self._fields(), "status", *ratio, *BATCH_DIAGNOSTICS))
 
     def _fields(self) -> tuple[str, ...]:
         """The names read as ``batch.name`` and listed: inputs, outputs (the diagnostics that

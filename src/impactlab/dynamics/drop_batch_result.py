@@ -123,7 +123,7 @@ class DropBatchResult(BatchStatus):
             return self.inputs[name]
         if name in schema.DERIVED_FIELDS:  # schema.register_output, as DropResult reads it
             return np.where(self.computed, batch_derived(self._engine_output, name), np.nan)
-        known = ", ".join((*PUBLIC_FIELDS, *self.inputs, *schema.DERIVED_FIELDS))
+        known = ", ".join(self)
         raise KeyError(f"unknown field {name!r}; known: {known}")
 
     def _column(self, name: str) -> np.ndarray:
@@ -151,9 +151,10 @@ class DropBatchResult(BatchStatus):
         )
 
     def __iter__(self) -> Iterator[str]:
-        """The field names (those listed by ``dir``), as a mapping's keys; the drops' rows:
-        ``to_dataframe()``."""
-        return iter(self._fields())
+        """Every name ``drops[name]`` reads (those listed by ``dir``, then ``status`` and
+        ``flags``), as a mapping's keys; the drops' rows: ``to_dataframe()``."""
+        names = self._fields()
+        return iter((*names, *(n for n in ("status", "flags") if n not in names)))
 
     def _fields(self) -> tuple[str, ...]:
         """The names read as ``drops[name]`` or ``drops.name``: inputs, outputs, derived."""
