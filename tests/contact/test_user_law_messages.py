@@ -11,7 +11,13 @@ from collections.abc import Iterator
 import numpy as np
 import pytest
 
-from impactlab.contact import IndentationCurves, law_names, register_law, unregister_law
+from impactlab.contact import (
+    IndentationCurves,
+    get_law,
+    law_names,
+    register_law,
+    unregister_law,
+)
 from impactlab.contact._common import jg_critical
 from impactlab.contact.indentation_data import ResidualRaisedWarning
 from impactlab.contact.registered import check_table_fit
@@ -159,3 +165,16 @@ def test_the_sampled_law_and_the_raised_residual_depths_read_cleanly(names: list
     text = str(caught[0].message)
     assert "by more than 0.05 (the accuracy tolerance of delta_r/delta_max) at 1 point(s), " in text
     assert "each the data's ratio raised to the law's: 0.1 raised by " in text
+
+
+def test_interferences_written_in_mm_below_the_radius_are_named() -> None:
+    """A table in mm whose numbers stay below R (as metres) was blamed on E* ("the force would
+    fit E* = 0.0035 GPa"): the factor 1000^1.5 is the interferences' unit."""
+    ref = get_law("ghaednia").build(PAIR, R)
+    d = np.geomspace(1e-8, 5e-6, 40)
+    f = np.array([ref.force(x) for x in d])
+    dm = d[20::3]
+    dr = np.array([ref.unload(x).delta_r for x in dm])
+    with pytest.raises(ValueError, match="the interferences look written in mm") as err:
+        IndentationCurves.from_arrays(PAIR, R, d * 1e3, f, dm * 1e3, dr * 1e3)
+    assert "would fit E*" not in str(err.value)

@@ -198,7 +198,8 @@ def hertz_offset(pair: ContactPair, R: float, d0: float, f0: float) -> tuple[flo
 def radius_hint(off: float, R: float, pair: ContactPair | None = None) -> str:
     """A hint that a unit or the materials are wrong where the force is off Hertz's by more
     than a factor ``UNIT_MISMATCH`` (``off``: relative difference): the radius in mm or um
-    where that puts the force near Hertz's (Hertz's force grows as sqrt(R)), else every unit
+    where that puts the force near Hertz's (Hertz's force grows as sqrt(R)), the interferences
+    in mm or um where that does (it grows as delta^1.5), else every unit
     and ``pair``'s E* (Hertz's force grows as E*) with the E* the force would fit; empty when
     the force is nearer."""
     ratio = 1.0 + off
@@ -211,6 +212,14 @@ def radius_hint(off: float, R: float, pair: ContactPair | None = None) -> str:
             return (
                 f"{factor}: radius = {R:.4g} m is in metres (a bare number is metres); with "
                 f'radius = "{R:.4g} {unit}" the force is {100 * (fits - 1.0):+.1f} % from Hertz\'s'
+            )
+    for unit, size in (("mm", 1e-3), ("um", 1e-6)):  # Hertz's force grows as delta^1.5
+        fits = ratio / size**1.5
+        if _near_hertz(fits - 1.0):
+            return (
+                f"{factor}: the interferences look written in {unit} (numbers are metres); "
+                f"in {unit} the force is {100 * (fits - 1.0):+.1f} % from Hertz's: convert "
+                f"every length of the table to m (x {size:g})"
             )
     if pair is None:
         return (
