@@ -4,6 +4,7 @@ has a range with a source and a status, every DOI is well-formed."""
 
 from __future__ import annotations
 
+import dataclasses
 import itertools
 import math
 
@@ -29,6 +30,8 @@ from impactlab.contact.ranges import (
     smallest_verified,
 )
 from impactlab.contact.verified_ranges import (
+    BEYOND_FE,
+    VerifiedCase,
     e_star_over_sy_span,
     verified_cases,
     verified_laws,
@@ -194,7 +197,7 @@ def test_unverified_pair_of_an_analytical_law_stops_at_the_lower_of_yield_and_sm
 
 def test_between_cases_the_smaller_verified_range_holds() -> None:
     """E*/S_y between two shipped cases: the smaller of their verified ranges (conservative)."""
-    for law in verified_laws():
+    for law in (n for n in verified_laws() if n not in BEYOND_FE):
         cases = verified_cases(law)
         for a, b in itertools.pairwise(cases):
             mid = 0.5 * (a.e_star_over_sy + b.e_star_over_sy)
@@ -295,3 +298,34 @@ def test_a_parameter_given_at_its_computed_default_leaves_the_default_verified()
     assert np.array_equal(same.params, default.params, equal_nan=True)
     assert range_status(default.law_id, default.params) == range_status(same.law_id, same.params)
     assert "not the defaults" not in str(range_note(same.law_id, same.params))
+
+
+def _beyond_fe_params(law: str, case: VerifiedCase, **changed: float) -> np.ndarray:
+    """A parameter vector holding ``case``'s inputs beyond FE (``changed``: some other)."""
+    p = np.full(k.NPARAM, np.nan)
+    for name, value in case.inputs:
+        p[BEYOND_FE[law][name]] = changed.get(name, value)
+    return p
+
+
+def test_brakes_range_holds_for_a_cases_own_hardness_and_meyer_index_only() -> None:
+    """Brake's law reads the Brinell hardnesses (P0) and the Meyer index, which the FE reference
+    does not: a flat of HB 150 at the paper's E*/S_y was "verified up to 2 delta_c" while the
+    same measurement gives 1. Its range is a case's own, for that case's inputs only."""
+    for case in verified_cases("brake"):
+        x = case.e_star_over_sy
+        assert verified_upper("brake", x, _beyond_fe_params("brake", case)) == case.upper
+        p0 = dict(case.inputs)["P0"]
+        assert math.isnan(verified_upper("brake", x, _beyond_fe_params("brake", case, P0=1.2 * p0)))
+        n = _beyond_fe_params("brake", case, meyer_index=2.05)
+        assert math.isnan(verified_upper("brake", x, n))
+        assert math.isnan(verified_upper("brake", x))  # without its parameters: not verified
+    a, b = verified_cases("brake")[:2]
+    mid = 0.5 * (a.e_star_over_sy + b.e_star_over_sy)
+    assert math.isnan(verified_upper("brake", mid, _beyond_fe_params("brake", a)))
+    hb150 = dataclasses.replace(AISI_1010, brinell_hardness=150.0, name="AISI 1010, HB 150")
+    m = get_law("brake").build(ContactPair(AISI_201, hb150), 8.8e-3)
+    assert range_status(m.law_id, m.params) == "unverified"
+    assert "P0 and meyer_index are not those of an FE case's pair" in range_note(m.law_id, m.params)
+    paper = get_law("brake").build(ContactPair(AISI_201, AISI_1010), 8.8e-3)
+    assert range_status(paper.law_id, paper.params) == "verified"

@@ -14,6 +14,7 @@ import pytest
 from impactlab.contact import get_law
 from impactlab.contact.ranges import range_status
 from impactlab.contact.verified_ranges import (
+    BEYOND_FE,
     VERIFIED_PATH,
     e_star_over_sy_span,
     verified_cases,
@@ -50,7 +51,10 @@ def test_shipped_table_equals_what_the_accuracy_measures() -> None:
         assert len(built) == len(case_names()) - (3 if law == "brake" else 0)
         for c in verified_cases(law):
             assert c.upper >= 0.0 and c.limited_by in ("force", "delta_r", "end of data")
-            assert verified_upper(law, c.e_star_over_sy) == c.upper
+            p = np.full(64, np.nan)  # a parameter vector with the case's inputs beyond FE
+            for name, value in c.inputs:
+                p[BEYOND_FE[law][name]] = value
+            assert verified_upper(law, c.e_star_over_sy, p) == c.upper
 
 
 def test_every_ductile_library_flat_is_verified_against_a_common_ball() -> None:

@@ -19,7 +19,7 @@ from impactlab.contact import kernels as k
 from impactlab.contact.custom_parameters import custom_parameters
 from impactlab.contact.names import Law
 from impactlab.contact.ranges import STATUSES, law_range, range_limit, range_status
-from impactlab.contact.verified_ranges import e_star_over_sy_span, verified_upper
+from impactlab.contact.verified_ranges import BEYOND_FE, e_star_over_sy_span, verified_upper
 
 __all__ = ["note_source", "range_note"]
 
@@ -76,7 +76,7 @@ def range_note(law_id: int, params: Any) -> str | None:
     ref = law_range(name).reference  # the law's own: delta_c or delta_y
     upper = "no upper end" if math.isinf(limit) else f"{limit:.3g} {ref}"
     if status == "verified":
-        jg = float(verified_upper(name, ratio))  # in Jackson-Green's delta_c, as the docs
+        jg = float(verified_upper(name, ratio, p))  # in Jackson-Green's delta_c, as the docs
         own = f"Jackson-Green's; = {upper}, the law's own; "
         if math.isclose(limit, jg, rel_tol=5e-4):
             own = ""
@@ -86,13 +86,19 @@ def range_note(law_id: int, params: Any) -> str | None:
         )
     custom = custom_parameters(params)
     if status == "unverified" and custom is not None and np.isfinite(limit):
-        jg = float(verified_upper(name, ratio))
+        jg = float(verified_upper(name, ratio, p))
         if math.isfinite(jg):
             return (
                 f"unverified: the law parameters {custom} are not the defaults the FE comparison "
                 f"used; with the defaults it is verified up to {jg:.3g} delta_c (E*/S_y = "
                 f"{ratio:.4g})"
             )
+    if status == "unverified" and name in BEYOND_FE and lo * (1 - 1e-6) <= ratio <= hi * (1 + 1e-6):
+        return (
+            f"unverified: {name}'s {' and '.join(BEYOND_FE[name])} are not those of an FE "
+            f"case's pair (the FE reference does not use them; E*/S_y = {ratio:.4g}); "
+            f"stand-in limit {upper}"
+        )
     if status == "unverified":
         return (
             f"unverified: E*/S_y = {ratio:.4g} outside the FE cases' {lo:.0f}-{hi:.0f}; "

@@ -290,7 +290,7 @@ def _measure_verified(law_id: int, p: np.ndarray) -> tuple[np.ndarray, bool]:
     if not verified_cases(name):
         return np.full(p.shape[:-1], np.nan), False
     with np.errstate(divide="ignore", invalid="ignore"):
-        upper = np.asarray(verified_upper(name, p[..., k.P_ESTAR] / p[..., k.P_SY]))
+        upper = np.asarray(verified_upper(name, p[..., k.P_ESTAR] / p[..., k.P_SY], p))
         own = upper * _jg_delta_c(p) / np.asarray(critical_interference(law_id, p))
     return np.asarray(own, dtype=np.float64), True
 

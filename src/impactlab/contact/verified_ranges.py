@@ -13,6 +13,13 @@ that yields first). For a pair between two shipped cases the range is bounded co
 the smaller of the two cases' verified ranges (nothing assumes how the range varies between
 them). Outside the span of the shipped cases the range is **unverified**: :func:`verified_upper`
 returns NaN and ``impactlab.contact.ranges`` keeps the law's former stand-in and says so.
+
+A law that reads inputs the elastic-perfectly plastic FE reference does not
+(:data:`BEYOND_FE`: Brake's P0 from the Brinell hardnesses and its Meyer index) is verified only
+for a case's own pair, those inputs included (``inputs`` of its rows): another hardness is
+another law curve against the same FE curves, and the measured range moves with it (at the
+paper's E*/S_y a flat of HB 150 instead of 105 keeps Brake within the tolerances to 1 delta_c,
+not 2). Such a pair is never interpolated between cases.
 """
 
 from __future__ import annotations
@@ -26,7 +33,10 @@ from typing import Any
 
 import numpy as np
 
+from impactlab.contact import kernels as k
+
 __all__ = [
+    "BEYOND_FE",
     "FORMAT",
     "VERIFIED_PATH",
     "VerifiedCase",
@@ -42,20 +52,25 @@ VERIFIED_PATH = Path(__file__).resolve().parent / "data" / "verified-ranges.json
 FORMAT = "impactlab verified ranges v1"
 #: Relative tolerance when matching an E*/S_y to a shipped case's (the file's 7 digits).
 _MATCH_RTOL = 1e-6
+#: The compiled parameters (name -> slot of ``ContactModel.params``) of laws that read inputs
+#: the FE reference does not: their verified range holds for a case's own values only.
+BEYOND_FE: dict[str, dict[str, int]] = {"brake": {"P0": k.P_BR_P0, "meyer_index": k.P_BR_N}}
 
 
 @dataclass(frozen=True)
 class VerifiedCase:
     """One law against one FE case: the case, its E*/S_y [1], the verified upper end
     ``upper`` (delta / delta_c; 0: not even the first checked point), the check that limits it
-    (``"force"``, ``"delta_r"`` or ``"end of data"``) and where that check first fails
-    (delta / delta_c; nan at the end of the data)."""
+    (``"force"``, ``"delta_r"`` or ``"end of data"``), where that check first fails
+    (delta / delta_c; nan at the end of the data) and, for a law of :data:`BEYOND_FE`, the
+    values of its inputs the FE reference does not fix (name -> SI value)."""
 
     case: str
     e_star_over_sy: float
     upper: float
     limited_by: str
     first_failure: float
+    inputs: tuple[tuple[str, float], ...] = ()
 
     @property
     def text(self) -> str:
@@ -92,6 +107,7 @@ def _table() -> dict[str, tuple[VerifiedCase, ...]]:
                 float(r["verified_delta_ratio"]),
                 str(r["limited_by"]),
                 _float(r["first_failure_delta_ratio"]),
+                tuple((str(n), float(v)) for n, v in r.get("inputs", {}).items()),
             )
             for r in rows
         )
@@ -128,15 +144,26 @@ def e_star_over_sy_span(law: str | None = None) -> tuple[float, float]:
     return (min(values), max(values)) if values else (math.nan, math.nan)
 
 
-def verified_upper(law: str, e_star_over_sy: Any) -> Any:
+def verified_upper(law: str, e_star_over_sy: Any, params: Any = None) -> Any:
     """The verified upper end delta / delta_c of ``law`` for pairs of ratio ``e_star_over_sy``
     (float or array): a shipped case's own value at its E*/S_y, the smaller of the two
     neighbouring cases' between them, NaN outside the span (unverified) or for a law without
-    a verified range."""
+    a verified range. A law of :data:`BEYOND_FE` needs the pairs' compiled ``params`` (rows
+    of ``ContactModel.params``): a case's own value where they hold its inputs, else NaN."""
     x = np.asarray(e_star_over_sy, dtype=np.float64)
     out = np.full(x.shape, np.nan)
     cases = verified_cases(law)
-    if cases:
+    if cases and str(law) in BEYOND_FE:
+        if params is None:
+            return float(out) if out.ndim == 0 else out
+        p = np.asarray(params, dtype=np.float64)
+        slots = BEYOND_FE[str(law)]
+        for c in cases:
+            same = np.isclose(x, c.e_star_over_sy, rtol=_MATCH_RTOL, atol=0.0)
+            for name, value in c.inputs:
+                same &= np.isclose(p[..., slots[name]], value, rtol=_MATCH_RTOL, atol=0.0)
+            out = np.where(same, c.upper, out)
+    elif cases:
         xs = np.array([c.e_star_over_sy for c in cases])
         us = np.array([c.upper for c in cases])
         lo, hi = xs[0] * (1 - _MATCH_RTOL), xs[-1] * (1 + _MATCH_RTOL)

@@ -17,7 +17,8 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
-from impactlab.contact.verified_ranges import FORMAT, VERIFIED_PATH
+from impactlab.contact import get_law
+from impactlab.contact.verified_ranges import BEYOND_FE, FORMAT, VERIFIED_PATH
 from impactlab.fe.accuracy import CaseAccuracy, accuracy, tolerances
 
 __all__ = ["verified_range_table", "write_verified_ranges"]
@@ -27,6 +28,16 @@ _DIGITS = 7
 
 def _num(x: float) -> float | None:
     return None if not math.isfinite(x) else float(f"{x:.{_DIGITS}g}")
+
+
+def _inputs_beyond_fe(law: str, case: Any) -> dict[str, Any]:
+    """``{"inputs": {name: value}}``: the compiled inputs of ``law`` for ``case``'s pair that
+    the FE reference does not fix (``contact.verified_ranges.BEYOND_FE``); empty for others."""
+    slots = BEYOND_FE.get(law)
+    if not slots:
+        return {}
+    params = get_law(law).build(case.pair, case.radius).params
+    return {"inputs": {name: _num(params[slot]) for name, slot in slots.items()}}
 
 
 def verified_range_table(results: Sequence[CaseAccuracy] | None = None) -> dict[str, Any]:
@@ -44,6 +55,7 @@ def verified_range_table(results: Sequence[CaseAccuracy] | None = None) -> dict[
                     "verified_delta_ratio": _num(v.upper),
                     "limited_by": v.limited_by,
                     "first_failure_delta_ratio": _num(v.first_failure),
+                    **_inputs_beyond_fe(a.law, ca.case),
                 }
             )
     return {
