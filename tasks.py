@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import hashlib
 import os
+import shlex
 import subprocess
 import sys
 import venv
@@ -35,7 +36,9 @@ def _fingerprint() -> str:
 
 
 def _run(*cmd: str | Path, env: dict[str, str] | None = None) -> int:
-    print("+", " ".join(str(c) for c in cmd), flush=True)
+    print(
+        "+", shlex.join(str(c) for c in cmd), file=sys.stderr, flush=True
+    )  # stdout: the command's
     return subprocess.call([str(c) for c in cmd], cwd=ROOT, env=env)
 
 

@@ -17,6 +17,7 @@ for all of them. A progress display on the terminal gives way to the notice (``g
 from __future__ import annotations
 
 import os
+import shutil
 import sys
 import threading
 import time
@@ -112,12 +113,15 @@ class _Notice:
             f"impactlab: compiling {what} (first run after installing or updating impactlab; "
             f"about {seconds} s, once: cached in {self.cache_dir})"
         )
-        _write(self.stream, line + ("" if tty else "\n"))
+        # the refreshed line must fit the terminal: \r returns to the start of its last row only
+        fits = len(line) + len(" ... 9999 s, 9999 functions ... done in 9999 s") < _columns()
+        _write(self.stream, line + ("" if tty and fits else "\n"))
         if not tty:
             return
+        head = line if fits else "  compiling"
         while not self.done.wait(0.5):
             elapsed = time.monotonic() - self.started
-            _write(self.stream, f"\r{line} ... {elapsed:.0f} s, {self.count} functions")
+            _write(self.stream, f"\r{head} ... {elapsed:.0f} s, {self.count} functions")
 
     def finish(self) -> None:
         self.done.set()
@@ -125,6 +129,11 @@ class _Notice:
         if self.shown and _isatty(self.stream):
             elapsed = time.monotonic() - self.started
             _write(self.stream, f" ... done in {elapsed:.0f} s\n")
+
+
+def _columns() -> int:
+    """The terminal's width in characters (80 where it is not known)."""
+    return shutil.get_terminal_size((80, 24)).columns
 
 
 def _isatty(stream: TextIO) -> bool:

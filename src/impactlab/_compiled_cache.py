@@ -17,17 +17,28 @@ recently used folders are kept, older ones removed.
 
 ``use_cache_dir`` runs when ``impactlab`` is imported, before any compiled function is defined:
 numba chooses a function's cache folder when the function is decorated. It also exports
-``NUMBA_CACHE_DIR`` (the ``engine-<hash>`` folder) so that child processes (sweep workers,
-Dask workers started from here) share the folder.
+``NUMBA_CACHE_DIR`` (the ``engine-<hash>`` folder, as an absolute path) so that child processes
+(sweep workers, Dask workers started from here) share the folder; a child whose source differs
+(an ``engine-`` folder of another hash) takes its own folder beside it. A folder that cannot be
+written is replaced by one under the system's temporary folder, with one line on stderr (numba
+would otherwise cache into the package's own ``__pycache__``, unhashed, or fail at import). A
+damaged cache entry (a truncated index or data file) is compiled again instead of failing in
+numba's unpickling (``repair_damaged_entries``).
 """
 
 from __future__ import annotations
 
+import contextlib
+import getpass
 import hashlib
 import os
+import pickle
 import shutil
+import sys
+import tempfile
 from functools import cache
 from pathlib import Path
+from typing import Any
 
 #: The engine's source, relative to the package: every folder and file whose code is compiled,
 #: or whose constants and functions compiled code reads (``tests/core/test_compiled_cache.py``
@@ -55,7 +66,7 @@ def default_cache_root() -> Path:
     else ``~/.cache/impactlab``."""
     own = os.environ.get("IMPACTLAB_CACHE_DIR", "").strip()
     if own:
-        return Path(own).expanduser()
+        return Path(own).expanduser().absolute()
     xdg = os.environ.get("XDG_CACHE_HOME", "").strip()
     base = Path(xdg).expanduser() if xdg else Path.home() / ".cache"
     return base / "impactlab"
@@ -86,12 +97,15 @@ def engine_source_hash() -> str:
 def compiled_cache_dir() -> Path:
     """The folder of numba's cache for impactlab: ``engine-<hash>`` inside the folder of the
     module docstring's order (a ``NUMBA_CACHE_DIR`` that already names an engine folder, as
-    this module exports it to child processes, is used as it is)."""
+    this module exports it to child processes, is used as it is where it is this source's;
+    an engine folder of another source gives its parent folder)."""
     numba_dir = os.environ.get("NUMBA_CACHE_DIR", "").strip()
     if numba_dir:
-        base = Path(numba_dir).expanduser()
+        base = Path(numba_dir).expanduser().absolute()
         if base.name.startswith(ENGINE_PREFIX):
-            return base
+            if base.name == f"{ENGINE_PREFIX}{engine_source_hash()}":
+                return base
+            base = base.parent
     else:
         base = default_cache_root() / "numba"
     return base / f"{ENGINE_PREFIX}{engine_source_hash()}"
@@ -116,17 +130,100 @@ def prune_engine_folders(folder: Path, keep: int = KEEP, legacy: bool = False) -
     return removed
 
 
+def _writable(folder: Path) -> str:
+    """Why numba could not cache into ``folder`` (created if missing; the test numba makes):
+    empty when it can."""
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+        with tempfile.TemporaryFile(dir=folder):
+            pass
+    except OSError as exc:
+        return exc.strerror or type(exc).__name__
+    return ""
+
+
+def fallback_cache_dir() -> Path:
+    """The engine folder under the system's temporary folder (per user), for a cache folder
+    that cannot be written."""
+    uid = os.getuid() if hasattr(os, "getuid") else getpass.getuser()
+    root = Path(tempfile.gettempdir()) / f"impactlab-{uid}" / "numba"
+    return root / f"{ENGINE_PREFIX}{engine_source_hash()}"
+
+
 def use_cache_dir() -> Path:
     """Point numba's cache at ``compiled_cache_dir()`` (environment and, if numba is already
-    imported, its live configuration); returns the folder."""
+    imported, its live configuration), or at ``fallback_cache_dir()`` with one line on stderr
+    where that cannot be written; returns the folder."""
     own = not os.environ.get("NUMBA_CACHE_DIR", "").strip()
     folder = compiled_cache_dir()
-    if not folder.exists():
+    if folder.exists():
+        with contextlib.suppress(OSError):  # in use: the pruning keeps the most recently used
+            os.utime(folder)
+    else:
         prune_engine_folders(folder, legacy=own)
+    why = _writable(folder)
+    if why:
+        wanted, folder = folder, fallback_cache_dir()
+        if _writable(folder):
+            folder = wanted  # nothing writable: numba says so where it compiles
+        else:
+            print(
+                f"impactlab: the compile cache folder {wanted} cannot be written ({why}); "
+                f"caching in {folder} instead (set IMPACTLAB_CACHE_DIR to a writable folder)",
+                file=sys.stderr,
+            )
     os.environ["NUMBA_CACHE_DIR"] = str(folder)
-    import sys
-
     config = sys.modules.get("numba.core.config")
     if config is not None:
         config.CACHE_DIR = str(folder)  # type: ignore[attr-defined]
     return folder
+
+
+#: What numba's unpickling of a truncated or damaged cache file raises.
+_DAMAGED = (EOFError, pickle.UnpicklingError, ValueError, TypeError, AttributeError, IndexError)
+
+
+def repair_damaged_entries() -> None:
+    """Make numba treat a damaged cache entry as missing: its index read as empty, its data
+    file as gone, so the function is compiled again and the entry rewritten, with one line on
+    stderr (numba 0.68 raises ``UnpicklingError`` or ``EOFError`` on every run instead; a disk
+    that filled, a crash during a write, a partial copy of a shared cache); and an entry that
+    cannot be written (a full disk) as not kept, with one line, instead of failing the run that
+    compiled it. Idempotent."""
+    from numba.core import caching
+
+    cls: Any = getattr(caching, "IndexDataCacheFile", None)
+    if cls is None or getattr(cls, "_impactlab_repairs", False):
+        return
+    load_index, load_data, save = cls._load_index, cls._load_data, cls.save
+
+    def _load_index(self: Any) -> Any:
+        try:
+            return load_index(self)
+        except _DAMAGED:
+            _say_damaged(self._index_path)
+            return {}
+
+    def _load_data(self: Any, name: str) -> Any:
+        try:
+            return load_data(self, name)
+        except _DAMAGED:
+            _say_damaged(self._data_path(name))
+            raise OSError(f"damaged cache file {name}") from None  # numba's load: a miss
+
+    def _save(self: Any, key: Any, data: Any) -> None:
+        try:
+            save(self, key, data)
+        except OSError as exc:  # a full disk: the code compiled runs, it is only not kept
+            print(
+                f"impactlab: the compiled code could not be written to the cache folder "
+                f"{self._cache_path} ({exc.strerror or exc}); it is compiled again next time",
+                file=sys.stderr,
+            )
+
+    cls._load_index, cls._load_data, cls.save = _load_index, _load_data, _save
+    cls._impactlab_repairs = True
+
+
+def _say_damaged(path: str) -> None:
+    print(f"impactlab: a damaged compile-cache file ({path}) is compiled again", file=sys.stderr)

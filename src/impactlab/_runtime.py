@@ -1,7 +1,8 @@
 """What ``import impactlab`` sets up before any compiled function is defined: numba's cache
-folder (``impactlab._compiled_cache``), the notice while the engine compiles
-(``impactlab._compile_notice``) and the garbage collector's pause during that compilation
-(``impactlab._compile_gc``); in the ``impactlab`` command, a quiet Ctrl-C while it imports."""
+folder and the repair of a damaged entry (``impactlab._compiled_cache``), the notice while
+the engine compiles (``impactlab._compile_notice``) and the garbage collector's pause during
+that compilation (``impactlab._compile_gc``); in the ``impactlab`` command, a quiet Ctrl-C
+while it imports."""
 
 from __future__ import annotations
 
@@ -12,7 +13,7 @@ from pathlib import Path
 from typing import Any
 
 from impactlab import _compile_gc, _compile_notice
-from impactlab._compiled_cache import use_cache_dir
+from impactlab._compiled_cache import repair_damaged_entries, use_cache_dir
 
 
 def _interrupted_at_start(signum: int, frame: Any) -> None:
@@ -51,5 +52,6 @@ def release_start_interrupt() -> None:
 
 quiet_start_interrupt()
 use_cache_dir()
+repair_damaged_entries()
 _compile_notice.install()
 _compile_gc.install()

@@ -337,3 +337,33 @@ def test_the_kernels_on_the_way_to_an_engine_wait_longer(monkeypatch: pytest.Mon
     lines = stream.getvalue().splitlines()
     assert len(lines) == 1 and lines[0].startswith("impactlab: compiling the impact engine")
     assert _compile_notice.KERNEL_PARTS <= {name for _, name, _ in _compile_notice.PARTS}
+
+
+class _Terminal(io.StringIO):
+    def isatty(self) -> bool:
+        return True
+
+
+@pytest.mark.parametrize("columns", [80, 1000])
+def test_the_refreshed_line_fits_the_terminal(
+    monkeypatch: pytest.MonkeyPatch, columns: int
+) -> None:
+    """The ~200-character line was refreshed with a carriage return on narrower terminals:
+    one new row per refresh (136 rows for a 69 s compile at 120 columns)."""
+    stream = _Terminal()
+    monkeypatch.setattr(sys, "stderr", stream)
+    monkeypatch.delenv("IMPACTLAB_QUIET_COMPILE", raising=False)
+    monkeypatch.setattr(_compile_notice, "DELAY_S", 0.0)
+    monkeypatch.setattr(_compile_notice, "_columns", lambda: columns)
+    listener = _compile_notice._Listener()
+    listener.on_start(_event("impactlab.dynamics.core.driver"))
+    assert _wait_for(lambda: " functions" in stream.getvalue())
+    listener.on_end(None)
+    text = stream.getvalue()
+    assert text.startswith("impactlab: compiling the impact engine") and "done in" in text
+    for row in text.split("\n")[1:]:  # the refreshed rows (the first is written once)
+        assert len(row.rsplit("\r", 1)[-1]) < columns
+    if columns == 80:  # the whole line once, then a short line refreshed
+        assert text.split("\n")[1].startswith("\r  compiling ... ")
+    else:
+        assert text.count("\n") == 1  # one line, refreshed in place

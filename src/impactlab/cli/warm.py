@@ -58,7 +58,7 @@ def warm(
         return
     for p in done:
         console.print(f"{p.name:<14} {p.wall_s:7.1f} s wall, {p.cpu_s:7.1f} s CPU")
-    console.print(f"compiled engine cached in {cache_dir}")
+    console.print(f"compiled engine cached in {cache_dir}", soft_wrap=True)  # a path unbroken
 
 
 def register(app: typer.Typer) -> None:

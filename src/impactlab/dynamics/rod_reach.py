@@ -29,7 +29,7 @@ from impactlab.dynamics.kernels.quality import beyond_rim
 from impactlab.flags import FLAG_BEYOND_TIP, FLAG_OTHER_END
 
 #: The compiled engines' rim criterion as plain Python (the same comparison).
-_beyond_rim = beyond_rim.py_func
+_beyond_rim = getattr(beyond_rim, "py_func", beyond_rim)  # a function under NUMBA_DISABLE_JIT
 
 __all__ = ["rod_reach_bits", "rod_reach_flags"]
 

@@ -61,7 +61,7 @@ def constants(
 def state_length(n_modes: int, friction_id: int) -> int:
     """Length of the integrator's state with ``n_modes`` modes (partial slip: plus the cells of
     both ends; last, the ends' own works): the compiled ``setup.state_size``, as Python."""
-    return int(state_size.py_func(n_modes, friction_id))
+    return int(getattr(state_size, "py_func", state_size)(n_modes, friction_id))
 
 
 def _array(a: Any, dtype: type = np.float64) -> np.ndarray:

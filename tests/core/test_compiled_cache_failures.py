@@ -1,0 +1,111 @@
+"""The compile cache when its folder or its files fail: an engine folder of another source
+inherited from a parent, a relative path, a folder that cannot be written, a truncated entry."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from impactlab._compiled_cache import (
+    compiled_cache_dir,
+    default_cache_root,
+    engine_source_hash,
+    fallback_cache_dir,
+    use_cache_dir,
+)
+
+ENGINE = f"engine-{engine_source_hash()}"
+
+
+def test_an_inherited_engine_folder_of_another_source_is_not_used(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
+    """A child of a process that imported another source kept that engine: stale code."""
+    monkeypatch.setenv("NUMBA_CACHE_DIR", str(tmp_path / "n" / "engine-0123456789abcdef"))
+    assert compiled_cache_dir() == tmp_path / "n" / ENGINE
+
+
+def test_a_relative_cache_folder_is_made_absolute(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
+    """Exported relative, it moved with a process's working folder (tasks.py runs in the
+    repository's root)."""
+    monkeypatch.delenv("NUMBA_CACHE_DIR", raising=False)
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setenv("IMPACTLAB_CACHE_DIR", "rel")
+    assert default_cache_root() == tmp_path / "rel"
+    monkeypatch.setenv("NUMBA_CACHE_DIR", "relnumba")
+    assert compiled_cache_dir() == tmp_path / "relnumba" / ENGINE
+
+
+def test_a_folder_that_cannot_be_written_falls_back_with_one_line(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """numba cached into the package's __pycache__ (unhashed) while the notice named the
+    folder, or failed at import where the package could not be written either."""
+    import numba.core.config as config
+
+    blocked = tmp_path / "a-file"
+    blocked.write_text("not a folder")
+    monkeypatch.setenv("NUMBA_CACHE_DIR", str(blocked / "numba"))
+    monkeypatch.setattr(config, "CACHE_DIR", config.CACHE_DIR)
+    folder = use_cache_dir()
+    assert folder == fallback_cache_dir() and os.environ["NUMBA_CACHE_DIR"] == str(folder)
+    assert config.CACHE_DIR == str(folder) and compiled_cache_dir() == folder
+    err = capsys.readouterr().err
+    assert f"the compile cache folder {blocked / 'numba' / ENGINE} cannot be written" in err
+    assert f"caching in {folder} instead (set IMPACTLAB_CACHE_DIR" in err
+
+
+_MODULE = """
+import impactlab  # noqa: F401  (its cache folder and the repair)
+from numba import njit
+
+
+@njit(cache=True)
+def plus_one(x):
+    return x + 1.0
+
+
+print(plus_one(1.0))
+"""
+
+
+@pytest.mark.parametrize("suffix", [".nbi", ".nbc"])
+def test_a_truncated_cache_file_is_compiled_again(tmp_path: Path, suffix: str) -> None:
+    """numba raised UnpicklingError (a truncated data file) or EOFError (an emptied index,
+    which the command line printed as 'aborted') on every run."""
+    (tmp_path / "cached_mod.py").write_text(_MODULE)
+    env = {**os.environ, "NUMBA_CACHE_DIR": str(tmp_path / "cache"), "PYTHONPATH": str(tmp_path)}
+
+    def run() -> subprocess.CompletedProcess[str]:
+        cmd = [sys.executable, "-c", "import cached_mod"]
+        return subprocess.run(cmd, env=env, capture_output=True, text=True, check=False)
+
+    assert run().stdout.strip() == "2.0"
+    (entry,) = (tmp_path / "cache").rglob(f"cached_mod.plus_one-*{suffix}")
+    entry.write_bytes(entry.read_bytes()[: 1 if suffix == ".nbi" else 40])
+    again = run()
+    assert again.returncode == 0, again.stderr
+    assert again.stdout.strip() == "2.0"
+    assert "a damaged compile-cache file" in again.stderr and "compiled again" in again.stderr
+    third = run()  # rewritten: loaded silently
+    assert third.stdout.strip() == "2.0" and "damaged" not in third.stderr
+
+
+def test_impactlab_runs_as_plain_python_under_numba_disable_jit() -> None:
+    """``NUMBA_DISABLE_JIT=1`` (numba's debugging switch, and the engine profile's counting
+    run) failed at import: a compiled function's ``py_func`` read at module level."""
+    code = (
+        "import impactlab as il; "
+        "print(il.simulate(il.PAPER_ROD, angle=0.35, velocity=(0, -1.41), mu=0.2).e)"
+    )
+    env = {**os.environ, "NUMBA_DISABLE_JIT": "1"}
+    cmd = [sys.executable, "-c", code]
+    done = subprocess.run(cmd, env=env, capture_output=True, text=True, check=False)
+    assert done.returncode == 0, done.stderr
+    assert 0.0 < float(done.stdout) < 1.0
