@@ -109,3 +109,32 @@ def test_impactlab_runs_as_plain_python_under_numba_disable_jit() -> None:
     done = subprocess.run(cmd, env=env, capture_output=True, text=True, check=False)
     assert done.returncode == 0, done.stderr
     assert 0.0 < float(done.stdout) < 1.0
+
+
+def test_a_cache_that_cannot_be_written_leaves_the_run_going(tmp_path: Path) -> None:
+    """A full disk failed the run that compiled ("no space left ... writing a file")."""
+    code = """
+import errno
+import impactlab  # noqa: F401
+from numba.core import caching
+
+def full(self, name, data):
+    raise OSError(errno.ENOSPC, "No space left on device")
+
+caching.IndexDataCacheFile._save_data = full
+from numba import njit
+
+@njit(cache=True)
+def plus_two(x):
+    return x + 2.0
+
+print(plus_two(1.0))
+"""
+    (tmp_path / "full_mod.py").write_text(code)
+    env = {**os.environ, "NUMBA_CACHE_DIR": str(tmp_path / "cache"), "PYTHONPATH": str(tmp_path)}
+    cmd = [sys.executable, "-c", "import full_mod"]
+    done = subprocess.run(cmd, env=env, capture_output=True, text=True, check=False)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() == "3.0"
+    assert "could not be written to the cache folder" in done.stderr
+    assert "No space left on device" in done.stderr
