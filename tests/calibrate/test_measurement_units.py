@@ -93,6 +93,18 @@ def test_an_uncertainty_without_a_unit_takes_its_quantitys(tmp_path):
         _one(delta_p="64 um", delta_p_sigma=2)
 
 
+def test_a_value_in_another_unit_than_its_column_needs_its_uncertaintys(tmp_path):
+    """``0.11 mm`` in a ``delta_p [um]`` column with a bare 0.003: read as 0.003 um, 1000
+    times too small (the drop then weighed a million times its due)."""
+    with pytest.raises(ValueError, match=r"delta_p_sigma = '0.003' has no unit while delta_p = "
+                       r"'0.11 mm' has one \(a bare number is read in um\)"):  # fmt: skip
+        read(_csv(tmp_path, "delta_p [um],delta_p_sigma", "0.11 mm,0.003"))
+    same = read(_csv(tmp_path, "delta_p [um],delta_p_sigma", "110 um,3", "same.csv"))
+    assert same.sigma["delta_p"][0] == pytest.approx(3e-6)
+    given = read(_csv(tmp_path, "delta_p [um],delta_p_sigma", "0.11 mm,0.003 mm", "given.csv"))
+    assert given.sigma["delta_p"][0] == pytest.approx(3e-6)
+
+
 @pytest.mark.parametrize(
     ("header", "row", "match"),
     [

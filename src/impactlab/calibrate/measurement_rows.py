@@ -3,11 +3,10 @@ uncertainty) and checked, with one-line errors naming the drop and the column.
 
 A value is a number (a Python or numpy real scalar), a quantity string, a pint Quantity of any
 registry (read as the string of its value and unit) or blank (None, an empty string, NaN: not
-given). Numbers are kept in each input's own unit
-(``impactlab.sweep.inputs``: SI, the Brinell hardness in kgf/mm^2) and measured values in SI.
-A ``<quantity>_sigma`` without a unit of its own takes its quantity's (the column header's or
-the ``[units]`` entry's). A drop's velocity is (vx, vy) or speed and incidence (converted to
-vx, vy as the sweep does), never both.
+given). Numbers are kept in each input's own unit (``impactlab.sweep.inputs``: SI, the Brinell
+hardness in kgf/mm^2) and measured values in SI. A bare ``<quantity>_sigma`` takes its
+quantity's unit (the column header's or the ``[units]`` entry's). A drop's velocity is (vx, vy)
+or speed and incidence (converted to vx, vy as the sweep does), never both.
 """
 
 from __future__ import annotations
@@ -41,7 +40,7 @@ from impactlab.calibrate.quantities import (
     NOISE_SIGMAS,
     PLAUSIBLE,
 )
-from impactlab.calibrate.values import bare, did_you_mean, to_unit
+from impactlab.calibrate.values import bare, did_you_mean, in_own_unit, to_unit
 from impactlab.materials import G0, PRESETS
 from impactlab.sweep.dimensions import check_allowed, check_rod_angles
 from impactlab.sweep.inputs import INPUTS, UNIT_REQUIRED
@@ -204,9 +203,9 @@ def parse_row(i: int, record: Mapping[str, Any], units: Mapping[str, Any]) -> Ro
 def _sigma_unit(
     where: str, name: str, v: Any, unit: str | None, q: str, value: Any, value_unit: str | None
 ) -> None:
-    """A bare uncertainty beside a value written with its unit (``"12 um"``, ``"43 %"``) would
-    be read in SI: refused, with the value's unit to give it. An uncertainty in percent beside a
-    value that is not (``e = 0.43``, ``e_sigma = "5 %"``) could be 5 % of e or 0.05: refused."""
+    """Refused: a bare uncertainty beside a value with a unit of its own (``"12 um"``, not the
+    column's ``unit``), read in SI or ``unit``; one in percent beside a value that is not
+    (``e = 0.43``, ``e_sigma = "5 %"``: 5 % of e or 0.05?)."""
     if value is None or _blank(value):
         return
     try:
@@ -220,15 +219,16 @@ def _sigma_unit(
             f"{_shown(value, value_unit)!r} is not: a percentage of {q} could be relative (of "
             f"the value) or of 1; give {name} as {q} is (a fraction of 1), or {q} in percent too"
         )
-    if unit or not bare(v) or bare(value):
+    if not bare(v) or bare(value) or (unit and not in_own_unit(value, unit)):
         return
     if MEASURABLE[q].unit in ("1", "") and not value_part:
         return
     if isinstance(value, str) and value.strip():
         shown = re.sub(r"^[-+0-9.eE]+\s*", "", value.strip())
         raise ValueError(
-            f"{where}: {name} = {v!r} has no unit while {q} = {value!r} has one: give the "
-            f"uncertainty's unit too (e.g. '{str(v).strip()} {shown}')"
+            f"{where}: {name} = {v!r} has no unit while {q} = {value!r} has one"
+            f"{f' (a bare number is read in {unit})' if unit else ''}: give the uncertainty's "
+            f"unit too (e.g. '{str(v).strip()} {shown}')"
         )
 
 

@@ -5,6 +5,8 @@ for a misspelt key (``impactlab._validation.did_you_mean``)."""
 
 from __future__ import annotations
 
+import math
+import re
 from functools import cache
 from typing import Any
 
@@ -37,6 +39,18 @@ def bare(v: Any) -> bool:
 def _si_factor(unit: str) -> float:
     """The SI magnitude of one ``unit`` (1 for an SI unit)."""
     return to_si(1.0, unit)
+
+
+def in_own_unit(value: Any, unit: str) -> bool:
+    """True when ``value`` is text written with a unit of its own (``"0.11 mm"``) other than
+    ``unit``: a bare number beside it would be read in ``unit``, not in the value's."""
+    if not isinstance(value, str):
+        return False
+    own = re.sub(r"^\s*[-+0-9.eE]+\s*", "", value)
+    try:
+        return bool(own) and not math.isclose(_si_factor(own), _si_factor(unit), rel_tol=1e-12)
+    except ValueError:
+        return True
 
 
 def to_unit(value: Any, unit: str, *, name: str) -> float:
