@@ -116,3 +116,22 @@ def _marks_of(x: Explanation, drop: str) -> dict[str, str]:
     at = next(i for i, r in enumerate(rows) if r[0] == drop)
     block = rows[at + 1 : at + 1 + len(x.configurations)]
     return {r[1]: r[head.index("verdict")] for r in block}
+
+
+def test_a_first_that_misses_a_value_only_it_predicts_is_not_consistent(tmp_path) -> None:
+    """The rigid rod ranked first over e (z +0.12), the one value every row predicts, and was
+    called consistent (p = 0.90) while it missed the duration, which only it predicts, by 8.3
+    sigma: its consistency is over every value it predicts."""
+    from impactlab.explain import explain
+
+    path = tmp_path / "dur.csv"
+    path.write_text(
+        "label,angle [deg],vy [m/s],mu,e,e_sigma,duration [ms],duration_sigma [ms]\n"
+        "r1,20,-1.41,0.2,0.42,0.02,0.95,0.1\n"
+    )
+    v = explain(path).verdict("r1")
+    assert v.configuration == "rigid body" and v.ranked_over == ("e",)
+    assert v.left_out == ("duration",)
+    assert v.consistent is False and v.p_value < 1e-10
+    assert "inconsistent with the measurements (chi2 " in v.reason
+    assert "over 2 values it predicts" in v.reason

@@ -12,7 +12,9 @@ one configuration predicts never turns the verdict to it. None is named when the
 configurations share no measured quantity.
 
 Named is not consistent: the first of the ranking can still be rejected by the measurements.
-Its chi2 over the n values ranked over (z^T R^-1 z for correlated values) is set against the
+Its chi2 over the n measured values it predicts (those ranked over and those left out of the
+ranking because another row does not predict them; z^T R^-1 z for correlated values) is set
+against the
 chi-square distribution with n degrees of freedom, nothing being fitted (Pearson's
 goodness-of-fit test: K. Pearson, Phil. Mag. 50, 157-175 (1900),
 doi:10.1080/14786440009463897; Particle Data Group, "Statistics",
@@ -20,7 +22,8 @@ Prog. Theor. Exp. Phys. 2022, 083C01, doi:10.1093/ptep/ptac097): where its p-val
 probability of a chi2 at least as large, is below :data:`LEVEL` = 0.01 (chi2 above the 99 %
 quantile: 6.63 for one value, 11.34 for three), the row is inconsistent with the measurements
 (``Verdict.consistent`` False). A named row that is inconsistent is worded as ranking first,
-"but is itself inconsistent with the measurements (chi2 X over n values, p = ...)", and the
+"but is itself inconsistent with the measurements (chi2 X over n values[ it predicts], p =
+...)", and the
 table marks it ``first, inconsistent``, not ``best``. A named row whose contact law is used
 beyond its verified range (law_extrapolated) says so in its reason too.
 
@@ -82,8 +85,9 @@ class Verdict:
     ``least_disagreeing`` configuration where none agrees with a value ranked over within 2
     sigma, the configurations it is ``undecided`` between (near the 2-sigma line), and of the
     row the reason names (the first of the ranking) its count ``within_2_sigma`` and ``chi2``
-    over ``ranked_over``, the ``p_value`` of that chi2 and whether it is ``consistent`` with
-    the measurements (p >= :data:`LEVEL`; None: nothing was ranked), its ``caveat`` and its
+    over ``ranked_over``, the ``p_value`` of its chi2 over every measured value it predicts and
+    whether it is ``consistent`` with them (p >= :data:`LEVEL`; None: nothing was ranked), its
+    ``caveat`` and its
     ``agreements`` within 2 sigma over all the drop's measured quantities."""
 
     drop: str
@@ -229,7 +233,12 @@ def verdict(
     agrees = {n: int(got.loc[got["configuration"] == n, "within_2_sigma"].sum()) for n in names}
     k, chi2 = int(total.loc[first, "within_2_sigma"]), float(total.loc[first, "chi2"])
     row = ok[ok["configuration"] == first].iloc[0]
-    p = p_value(chi2, len(common))
+    # its consistency over every measured value it predicts, those left out of the ranking too
+    own = got[got["configuration"] == first]
+    z_own = dict(zip(own["quantity"], own["z"], strict=True))
+    chi2_own = correlated_chi2(z_own, correlation or {})
+    chi2_own = float((own["z"] ** 2).sum()) if chi2_own is None else chi2_own
+    p = p_value(chi2_own, len(z_own))
     scored = _score(k, len(common), chi2)
     left = tuple(q for q in measured if q not in common)
     lacking = [f"{q} (not predicted by {_names([n for n in names if q not in predicts[n]])})"
@@ -289,7 +298,8 @@ def verdict(
     ranks = f"the most values within 2 sigma, then the lowest chi2, over {shared} ({scored})"
     if p < LEVEL:
         ranks = (f"ranks first by {ranks}, but is itself inconsistent with the measurements "
-                 f"(chi2 {chi2:.4g} over {len(common)} value{'s' * (len(common) > 1)}, "
+                 f"(chi2 {chi2_own:.4g} over {len(z_own)} value{'s' * (len(z_own) > 1)}"
+                 f"{' it predicts' if len(z_own) > len(common) else ''}, "
                  f"{_p_text(p)}, below {LEVEL})")  # fmt: skip
     why = f"{first}: {ranks}{out}{_law_text(row)}{tail}"
     return made(first, why, tail)
