@@ -168,3 +168,20 @@ def test_a_refused_run_leaves_no_empty_folder(template, tmp_path):
     with pytest.raises(ValueError, match="steps must be >= 10"):
         _run(_data(template), steps=5, state_dir=out)
     assert not (tmp_path / "new").exists()
+
+
+def test_a_resumed_chain_reports_the_whole_chains_counts(template, tmp_path):
+    """The counts (failures, evaluations, draws) covered only the steps run after a resume: a
+    chain with 44 % failed draws, run again, reported none and lost its warning."""
+    data = _data(template)
+    fresh = _run(data, steps=20, burn=10).best
+    _run(data, steps=12, burn=6, state_dir=tmp_path)  # stopped after 12 of 20 steps
+    resumed = _run(data, steps=20, burn=10, state_dir=tmp_path).best
+    again = _run(data, steps=20, burn=10, state_dir=tmp_path).best  # nothing left to run
+    for r in (resumed, again):
+        assert (r.evaluations, r.draws, r.failed_draws) == (
+            fresh.evaluations,
+            fresh.draws,
+            fresh.failed_draws,
+        )
+        assert r.failures == fresh.failures

@@ -174,6 +174,37 @@ def _stamp(backend: Any, key: str, parts: dict[str, str]) -> None:
         f["chain"].attrs["impactlab_parts"] = json.dumps(parts)
 
 
+#: The attribute of a saved chain holding the log posterior's counts (failures by reason,
+#: evaluations, draws, failed draws) of the steps it holds.
+_COUNTS = "impactlab_counts"
+
+
+def _save_counts(backend: Any, post: LogPosterior) -> None:
+    """Store ``post``'s counts with the chain, so that a resumed run reports the whole chain's."""
+    counts = {
+        "failures": dict(post.failures),
+        "evaluations": post.evaluations,
+        "draws": post.draws,
+        "failed_draws": post.failed_draws,
+    }
+    with backend.open("a") as f:
+        f["chain"].attrs[_COUNTS] = json.dumps(counts)
+
+
+def _load_counts(backend: Any, post: LogPosterior) -> None:
+    """Add the counts saved with a resumed chain to ``post``'s (a chain saved without them, by
+    an earlier version: none)."""
+    with backend.open() as f:
+        text = f["chain"].attrs.get(_COUNTS)
+    if not text:
+        return
+    counts = json.loads(text)
+    post.failures.update({str(k): int(v) for k, v in counts["failures"].items()})
+    post.evaluations += int(counts["evaluations"])
+    post.draws += int(counts["draws"])
+    post.failed_draws += int(counts["failed_draws"])
+
+
 def run_chain(
     post: LogPosterior,
     *,
@@ -202,6 +233,7 @@ def run_chain(
     if resumed:
         done = backend.iteration
         start: Any = backend.get_last_sample()  # with its random state
+        _load_counts(backend, post)
     else:
         rng = np.random.default_rng(seed)
         start = initial_walkers(post, walkers, rng)
@@ -220,6 +252,8 @@ def run_chain(
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             chain = sampler.sample(start, iterations=max(steps - done, 0))
             for i, _ in enumerate(chain, done + 1):
+                if state is not None:  # the counts of the steps saved, with them
+                    _save_counts(backend, post)
                 if progress is not None and (i % every == 0 or i == steps):
                     progress(post.model.name, i, steps)
     except KeyboardInterrupt:
