@@ -50,3 +50,16 @@ def test_a_subnormal_sigma_is_refused(tmp_path: Path) -> None:
     path.write_text("label,angle [deg],vy,e,e_sigma\na,20,-1.41,0.42,1e-320\n", encoding="utf-8")
     with pytest.raises(ValueError, match=r"drop 1 \(a\): e_sigma = 1e-320 is below 2\.23e-308"):
         read_measurements(path)
+
+
+@pytest.mark.parametrize("name", ["n_axial", "n_bending"])
+def test_a_mode_count_is_no_free_parameter(name) -> None:
+    """A continuous prior on a mode count failed every draw as 'body rejected (a non-positive
+    length, radius, mass ...)'; it is a resolution, not physics."""
+    from impactlab.calibrate import parse_parameter
+
+    with pytest.raises(ValueError, match=f"{name} is a count of a flexible rod's modes"):
+        parse_parameter(name, "uniform(1, 64)")
+    with pytest.raises(ValueError) as err:
+        parse_parameter("bogus", "uniform(1, 64)")
+    assert name not in str(err.value)

@@ -292,10 +292,20 @@ def _suggested(name: str, unit: str, text: str, other: Any) -> str:
     return shown if ref != 0 and 1e-3 <= abs(x / ref) <= 1e3 else unit
 
 
+#: Numeric inputs that are a numerical resolution, not physics: never free parameters.
+RESOLUTIONS = ("n_axial", "n_bending")
+
+
 def check_parameter_name(name: str) -> None:
     """ValueError, with the nearest name, for what is not a free parameter (a numeric input
-    that is not one of the measured drop's kinematics)."""
-    allowed = tuple(n for n in NUMERIC_INPUTS if n not in KINEMATICS)
+    that is not one of the measured drop's kinematics, nor a resolution: ``RESOLUTIONS``)."""
+    if name in RESOLUTIONS:
+        raise ValueError(
+            f"{name} is a count of a flexible rod's modes, a numerical resolution, not a "
+            "parameter to calibrate: give it as a fixed input of the model or a column of the "
+            "measurements (explain checks a flexible result with twice its modes)"
+        )
+    allowed = tuple(n for n in NUMERIC_INPUTS if n not in KINEMATICS and n not in RESOLUTIONS)
     if name not in allowed:
         raise ValueError(
             f"unknown free parameter {name!r}{did_you_mean(name, allowed)}; a "
