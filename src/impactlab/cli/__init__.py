@@ -59,6 +59,12 @@ class _Commands(TyperGroup):
         except KeyboardInterrupt as exc:
             interrupted(exc)
             raise typer.Exit(130) from None
+        except SystemError as exc:  # Ctrl-C inside a compiled call, wrapped by numba
+            ki = _runtime.interrupt_inside(exc)
+            if ki is None:
+                raise
+            interrupted(ki)
+            raise typer.Exit(130) from None
 
 
 def interrupted(exc: KeyboardInterrupt) -> None:
