@@ -17,12 +17,10 @@ def _wrapped() -> None:
 
 
 def test_a_wrapped_interrupt_is_an_interrupt_again() -> None:
-    with pytest.raises(KeyboardInterrupt):
-        with plain_interrupts():
-            _wrapped()
-    with pytest.raises(SystemError, match="other"):  # any other SystemError passes on
-        with plain_interrupts():
-            raise SystemError("other")
+    with pytest.raises(KeyboardInterrupt), plain_interrupts():
+        _wrapped()
+    with pytest.raises(SystemError, match="other"), plain_interrupts():  # others pass on
+        raise SystemError("other")
     assert interrupt_inside(ValueError("no")) is None
 
 
