@@ -70,3 +70,17 @@ def test_run_arrays_refuses_what_it_would_misread(law, friction, kw, said) -> No
         run_arrays(m.law_id if law is None else law, friction, *args, **kw)
     _, status = run_arrays(np.int64(m.law_id), 1.0, *args)  # whole numbers are ids
     assert status.tolist() == [0]
+
+
+def test_a_two_dimensional_batch_input_says_how_to_make_a_grid() -> None:
+    """The tutorial said batch inputs broadcast; a column of mu was refused without a hint."""
+    with pytest.raises(ValueError, match=r"mu must be a scalar or a 1-D array, got shape "
+                       r"\(5, 1\): .*np.meshgrid\(...\) then .ravel\(\)"):  # fmt: skip
+        il.simulate_batch(ROD, angle=0.3, vy=-1.0, mu=np.linspace(0, 0.8, 5)[:, None])
+
+
+def test_an_impact_names_its_body_and_flat_as_printed() -> None:
+    """``print(r)`` showed body and flat rows; ``r.body`` raised AttributeError."""
+    r = il.simulate(ROD, angle=0.3, velocity=(0.0, -1.0), mu=0.2, history=False)
+    assert r.body == r.summary()["body"] and r.body.startswith("Rod: length = 304.8 mm")
+    assert r.flat == r.summary()["flat"] == il.AISI_1010.name

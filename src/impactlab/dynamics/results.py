@@ -159,7 +159,7 @@ class ImpactResult(DerivedOutputs, ResultDisplay):
             raise field_hint(self, name, error) from None
 
     def __post_init__(self) -> None:
-        # the engine writes the bitmask as a float; LAW_EXTRAPOLATED from contact.ranges (C2)
+        # the engine writes the bitmask as a float; LAW_EXTRAPOLATED from contact.ranges
         extra = extrapolation_flags(self._law_id, self._law_params, self.delta_max)
         object.__setattr__(self, "flags", ResultFlag(int(self.flags) | extra))
 
@@ -168,6 +168,15 @@ class ImpactResult(DerivedOutputs, ResultDisplay):
         doc="delta_max / delta_ref of the impact's law and pair: the law's own reference "
         "interference (LawRange.reference: Jackson-Green's delta_c, or delta_y for "
         "Kogut-Komvopoulos, Brake, Thornton); NaN if unknown (contact.ranges).",
+    )
+    body = property(
+        lambda self: None if self._call is None else str(self._call[0]),
+        doc="The body simulated, described as ``print`` shows it (a drop's ``body`` too); None "
+        "for a result ``simulate`` did not make. The object: ``rerun(result.input)``.",
+    )
+    flat = property(
+        lambda self: None if self._call is None else str(self._call[1].name),
+        doc="The flat's material by name, as ``print`` shows it; None as ``body``.",
     )
     extrapolated = property(lambda self: ResultFlag.LAW_EXTRAPOLATED in self.flags,
                             doc="True when the impact left the law's range.")  # fmt: skip

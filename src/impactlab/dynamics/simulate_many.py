@@ -76,7 +76,11 @@ def _batch_column(name: str, value: Any) -> np.ndarray:
         value = np.array([check_array(f"{name}[{i}]", v, unit) for i, v in enumerate(value)])
     a = np.atleast_1d(check_array(name, value, unit))
     if a.ndim > 1:
-        raise ValueError(f"{name} must be a scalar or a 1-D array, got shape {a.shape}")
+        raise ValueError(
+            f"{name} must be a scalar or a 1-D array, got shape {a.shape}: a batch is one case "
+            "per entry, its 1-D inputs of one length; for a grid, give each input's values "
+            "per case (np.meshgrid(...) then .ravel()) or use a sweep's [grid]"
+        )
     return a
 
 
