@@ -155,6 +155,7 @@ def check_finite(name: str, value: Any, unit: str = "") -> float:
         value = magnitude(name, value, unit)
     else:
         _refuse_dimension(name, value)
+        value = _percent(value)
     err = _not_a_number(name, value)
     if err is not None:
         raise err
@@ -165,6 +166,20 @@ def check_finite(name: str, value: Any, unit: str = "") -> float:
     if not math.isfinite(x):
         raise ValueError(f"{name} must be finite, got {x!r}")
     return x
+
+
+def _percent(value: Any) -> Any:
+    """A string in percent (``"20 %"``, ``"20 percent"``) as its fraction (0.2), as a percent
+    Quantity reads; anything else unchanged (refused as a string after)."""
+    if not (isinstance(value, str) and ("%" in value or "percent" in value)):
+        return value
+    from impactlab.units import registry
+
+    try:
+        q = registry().Quantity(value.strip().replace("%", " percent"))
+    except Exception:  # not a quantity pint reads: the string's own error follows
+        return value
+    return float(q.to("dimensionless").magnitude) if str(q.units) == "percent" else value
 
 
 def _suffix(unit: str) -> str:
@@ -301,7 +316,9 @@ def check_array(name: str, values: Any, unit: str = "") -> np.ndarray:
     for None, bools, strings or anything that is not numeric."""
     if unit and _holds_quantities(values):  # ["20 deg", "45 deg"]: each read in its unit
         values = [magnitude(f"{name}[{i}]", v, unit) for i, v in enumerate(values)]
-    values = magnitude(name, values, unit) if unit else _plain(name, values)
+    if not unit and _holds_quantities(values):  # ["10 %", 0.2]: percent as a fraction
+        values = [_percent(v) for v in values]
+    values = magnitude(name, values, unit) if unit else _percent(_plain(name, values))
     err = _not_a_number(name, values)
     if err is not None:
         raise err
