@@ -176,7 +176,7 @@ def _percent(value: Any) -> Any:
     from impactlab.units import registry
 
     try:
-        q = registry().Quantity(value.strip().replace("%", " percent"))
+        q: Any = registry().Quantity(value.strip().replace("%", " percent"))
     except Exception:  # not a quantity pint reads: the string's own error follows
         return value
     return float(q.to("dimensionless").magnitude) if str(q.units) == "percent" else value

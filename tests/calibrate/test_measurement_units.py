@@ -5,6 +5,7 @@ velocity given once, a rod's and a sphere's own inputs, columns given twice and 
 from __future__ import annotations
 
 import math
+import warnings
 
 import numpy as np
 import pytest
@@ -191,3 +192,20 @@ def test_nan_is_named(tmp_path):
 def test_a_directory_is_not_a_measurements_file(tmp_path):
     with pytest.raises(IsADirectoryError, match="is a directory; give the file"):
         read(tmp_path)
+
+
+def test_a_drop_copied_under_another_label_warns(tmp_path):
+    """Three copies of one drop were calibrated as three measurements, the intervals narrowed
+    by sqrt(3), without a word; analyze --measurements refuses such an append."""
+    from impactlab.calibrate import CalibrationWarning
+
+    path = tmp_path / "copies.csv"
+    path.write_text(f"{HEAD}\n{ROW}\n" + f"{ROW}\n".replace("a,", "b,", 1))
+    with pytest.warns(CalibrationWarning, match=r"'b' holds the values of 'a'.*counts twice"):
+        m = read(path)
+    assert m.n_drops == 2
+    other = tmp_path / "other.csv"
+    other.write_text(f"{HEAD}\n{ROW}\n" + f"{ROW}\n".replace("a,", "b,", 1).replace("0.45", "0.46"))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", CalibrationWarning)
+        read(other)

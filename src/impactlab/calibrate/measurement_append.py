@@ -37,6 +37,7 @@ from impactlab.calibrate.measurement_columns import (
 )
 from impactlab.calibrate.measurement_files import read_text
 from impactlab.calibrate.measurement_rows import Row, parse_row
+from impactlab.calibrate.measurement_twins import same_drop
 from impactlab.calibrate.measurements import Measurements, read_measurements
 from impactlab.calibrate.quantities import ANGLES, DROP_CATEGORIES, MEASURABLE
 from impactlab.sweep.inputs import INPUTS, UNIT_REQUIRED
@@ -169,35 +170,6 @@ def _locked(p: Path) -> Iterator[str]:
                     fcntl.flock(fd, fcntl.LOCK_UN)
     finally:
         os.close(fd)
-
-
-#: The relative difference below which two values of a file are the same measurement: the file
-#: holds 12 significant digits, and a unit conversion adds round-off.
-SAME_VALUE_RTOL = 1e-9
-
-
-def same_drop(meas: Measurements, new: int) -> int | None:
-    """The index of an earlier drop of ``meas`` that holds the values of drop ``new`` (the same
-    categories, the same inputs, and the same measured values, at least one, each to
-    :data:`SAME_VALUE_RTOL`; their uncertainties aside), or None: a drop appended again under
-    another label."""
-    measured = [k for k, v in meas.observed.items() if math.isfinite(v[new])]
-    if not measured:
-        return None
-    columns = [*meas.observed.values(), *meas.inputs.values()]
-    for i in range(new):
-        if dict(meas.categories[i]) == dict(meas.categories[new]) and all(
-            _same(float(v[i]), float(v[new])) for v in columns
-        ):
-            return i
-    return None
-
-
-def _same(a: float, b: float) -> bool:
-    """Both not given (NaN), or equal to :data:`SAME_VALUE_RTOL`."""
-    if math.isnan(a) or math.isnan(b):
-        return math.isnan(a) and math.isnan(b)
-    return math.isclose(a, b, rel_tol=SAME_VALUE_RTOL, abs_tol=0.0)
 
 
 def check_label(label: str, name: str = "label") -> None:

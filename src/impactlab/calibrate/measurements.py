@@ -36,6 +36,7 @@ from impactlab.calibrate.correlations import correlation_column, normalised
 from impactlab.calibrate.measurement_columns import resolve_units
 from impactlab.calibrate.measurement_files import csv_records, read_text
 from impactlab.calibrate.measurement_rows import Row, parse_row
+from impactlab.calibrate.measurement_twins import warn_twins
 from impactlab.calibrate.quantities import DROP_CATEGORIES, MEASURABLE, NUMERIC_INPUTS
 from impactlab.sweep.inputs import INPUTS
 
@@ -175,9 +176,11 @@ def read_measurements(path: str | Path, *, measured: bool = True) -> Measurement
     suffix = p.suffix.lower()
     if suffix == ".csv":
         numbered = csv_records(p)
-        return _from_records(
+        meas = _from_records(
             [r for _, r in numbered], None, str(p), [n for n, _ in numbered], measured
         )
+        warn_twins(meas)
+        return meas
     if suffix == ".toml":
         try:
             doc = tomllib.loads(read_text(p, "TOML"))
@@ -201,10 +204,12 @@ def read_measurements(path: str | Path, *, measured: bool = True) -> Measurement
         _refuse_nan(p, drops)
         try:
             units = resolve_units(doc.get("units", {}))
-            return _from_records(drops, units, str(p), measured=measured)
+            meas = _from_records(drops, units, str(p), measured=measured)
         except ValueError as exc:  # each error names the file
             text = str(exc)
             raise ValueError(text if text.startswith(f"{p}: ") else f"{p}: {text}") from None
+        warn_twins(meas)
+        return meas
     hint = (
         ": a results.json is no measurements file (an analysis's holds one drop: append it to "
         "a CSV file with impactlab analyze MARKERS SCAN --measurements drops.csv --label NAME, "
