@@ -51,6 +51,9 @@ def test_a_posterior_against_its_priors_bound_is_flagged(template):
     assert any(w.startswith(text) for w in cal.best.warnings)
     assert any(w.startswith(f"ghaednia/coulomb: {text}") for w in cal.warnings)
     assert "widen the prior if larger values are possible" in " ".join(cal.warnings)
+    # the ranking's note and the caveats say so too: the table's interval is the prior's edge
+    assert "at a prior bound (its interval is cut there)" in cal.ranking[0]["note"]
+    assert "at a prior bound (its interval is cut there)" in cal.best_caveats
 
 
 def test_edge_note_only_for_piled_draws():

@@ -79,7 +79,8 @@ class Calibration:
         cannot rank the models (``"not distinguishable (one drop: PSIS-LOO does not rank)"``),
         its chain has not converged (``"not converged"``), or its best fit lies more than 5
         standard uncertainties from a measured value (``"misfit (best fit > 5 sigma from a
-        measured value)"``); empty when none."""
+        measured value)"``), or its posterior lies against a bound of a prior (``"at a prior
+        bound (its interval is cut there)"``); empty when none."""
         if not self.ranking:
             return [] if self.best.converged else [NOT_CONVERGED]
         return [n for n in self.ranking[0]["note"].split("; ") if n]

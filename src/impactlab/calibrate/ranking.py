@@ -26,7 +26,7 @@ import numpy as np
 from scipy.optimize import minimize
 from scipy.special import logsumexp
 
-from impactlab.calibrate.diagnostics import MISFIT_SIGMAS
+from impactlab.calibrate.diagnostics import MISFIT_SIGMAS, edge_note
 from impactlab.calibrate.result import ModelPosterior
 
 __all__ = ["annotate", "distinguishable", "misfit_max", "rank_models", "stacking_weights"]
@@ -140,6 +140,9 @@ NOT_CONVERGED = "not converged"
 #: from a measured value (``misfit_max``): PSIS-LOO may still not tell it from the best (few
 #: drops, large dse), but the model does not describe that value.
 MISFIT = f"misfit (best fit > {MISFIT_SIGMAS:g} sigma from a measured value)"
+#: The note of a row whose posterior lies against a finite bound of a prior
+#: (``diagnostics.edge_note``): its interval there is the prior's cut, not the data's.
+AT_BOUND = "at a prior bound (its interval is cut there)"
 
 
 def misfit_max(post: Any) -> float:
@@ -170,6 +173,16 @@ def distinguishable(row: Mapping[str, Any], drops: int | None = None) -> bool:
     return not _why_not(row, drops)
 
 
+def _at_bound(post: Any) -> bool:
+    """Whether a model's posterior lies against a finite bound of a prior (``edge_note``)."""
+    samples = getattr(post, "samples", None)
+    if samples is None or np.ndim(samples) != 2:
+        return False
+    return any(
+        edge_note(p, samples[:, j]) is not None for j, p in enumerate(getattr(post, "params", ()))
+    )
+
+
 def _unreliable(post: Any) -> bool:
     """Whether a model's PSIS-LOO has a drop with Pareto k > PARETO_K_MAX."""
     return bool(float(post.loo.get("pareto_k_max", math.nan)) > PARETO_K_MAX)
@@ -189,7 +202,7 @@ def annotate(
     ``SMALL_DIFFERENCE``; ``UNRELIABLE_LOO`` when either model compared has a drop with
     Pareto k > 0.7 (its elpd_diff is not trusted; ``distinguishable`` False); ``NOT_CONVERGED``;
     ``MISFIT`` when misfit_max exceeds MISFIT_SIGMAS (``distinguishable`` is PSIS-LOO's alone);
-    joined by "; ")."""
+    ``AT_BOUND`` when its posterior lies against a prior's bound; joined by "; ")."""
     for i, r in enumerate(rows):
         post = posteriors[r["model"]]
         r["pareto_k_max"] = float(post.loo.get("pareto_k_max", math.nan))
@@ -208,5 +221,6 @@ def annotate(
         r["distinguishable"] = None if len(rows) == 1 else not notes
         notes += [] if post.converged else [NOT_CONVERGED]
         notes += [MISFIT] if r["misfit_max"] > MISFIT_SIGMAS else []
+        notes += [AT_BOUND] if _at_bound(post) else []
         r["note"] = "; ".join(notes)
     return rows
