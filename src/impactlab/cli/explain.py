@@ -98,7 +98,7 @@ def explain_cmd(
     """Which physics explains measured drops: the rigid body, the flexible rod and the flexible
     rod on a rate-dependent flat, nothing tuned, beside every measured value.
 
-    Example: impactlab explain drops.csv --out explained
+    Example: impactlab explain examples/data/paper_drops.csv --out explained
     """
     from impactlab._compile_notice import gives_way
     from impactlab.explain import configurations, explain, save_explanation
