@@ -18,7 +18,12 @@ from scipy import ndimage
 from impactlab.experiment.checks import check_instance
 from impactlab.experiment.errors import ScanError
 from impactlab.experiment.profilometry.bottom import bottom
-from impactlab.experiment.profilometry.extent import Extent, extent, smoothing_note
+from impactlab.experiment.profilometry.extent import (
+    Extent,
+    extent,
+    merged_note,
+    smoothing_note,
+)
 from impactlab.experiment.profilometry.gaps import (
     GapSpread,
     check_crossings,
@@ -33,7 +38,7 @@ from impactlab.experiment.profilometry.metrics import (
     sliding_length_note,
     unmeasured_notes,
 )
-from impactlab.experiment.profilometry.outline import outline
+from impactlab.experiment.profilometry.outline import outline, sample
 from impactlab.experiment.profilometry.profiles import MAX_PROFILE_SAMPLES, orient, profiles
 from impactlab.experiment.profilometry.surface import (
     Surface,
@@ -78,7 +83,7 @@ def _extent(
     """The extent (:func:`~.extent.extent`) on the smoothed map (``zs``, default the scan's);
     None when the outline at the threshold ``thr`` [m] is lost or does not cross the line
     through ``deepest``."""
-    zmap = sf.zs if zs is None else zs
+    zmap = sf.outline_map if zs is None else zs
     return extent(zmap, sf.dx, sf.dy, thr, depth, deepest, smooth, levels)
 
 
@@ -330,6 +335,10 @@ def _metrics(
             "interpolation: its place there is the fill's; scan the dent again for data there"
         )
     warnings += smoothing_note(ext, sf.dx, sf.dy, smooth, depth)
+    sw = s[(s >= s_start) & (s <= s_end)]  # the outline's own stretch, on the map without pits
+    own = sample(sf.outline_map, sf.dx, sf.dy, deepest[None, :] + sw[:, None] * axis[None, :])
+    merged = "" if ext.irregular else merged_note(sw, own, depth, sf.lev.sigma)
+    warnings += [w for w in (ext.irregular, merged) if w]
     if not ext.extrapolated:
         warnings.append(
             "the dent is too shallow to extrapolate its outline to the zero "

@@ -17,7 +17,17 @@ from scipy.optimize import brentq
 
 from impactlab.experiment.profilometry.outline import chord, feret, outline, principal_axis
 
-__all__ = ["Extent", "extent", "smoothing_note", "smoothing_sigma"]
+__all__ = ["OUTLINE_DOUBT", "Extent", "extent", "smoothing_note", "smoothing_sigma"]
+
+#: The start of the doubt (a result not ok) of an outline that does not shrink smoothly between
+#: the levels the length is extrapolated from: another mark, a pit or dust touches its edge.
+OUTLINE_DOUBT = "the dent's outline changes shape between its levels"
+#: Two steps of the length between the levels (t1 to 2 t1, 2 t1 to 3 t1) differ by more than this
+#: fraction of their sum, and by more than _IRREGULAR_PIXELS pixels, on an irregular outline (a
+#: tip's dent, a cap or a groove, shrinks about evenly: its two steps differ by 6 % of their sum
+#: to 60 % of its depth).
+_IRREGULAR_SHARE = 0.5
+_IRREGULAR_PIXELS = 4.0
 
 # --- the extent extrapolated to the zero threshold ---------------------------------------------
 #
@@ -52,7 +62,9 @@ class Extent:
     be used: then from thr and 2 thr); ``model``: its model errors of length, width and L_s [m];
     ``noise_gain``: its gains on their outline noise (sqrt(5) linear, sqrt(19) quadratic);
     ``shift``: the smoothing's shift [m] that length and width carry (0 where escaped);
-    ``wanted``: the first level [m] each would have needed where that lay too deep (else 0)."""
+    ``wanted``: the first level [m] each would have needed where that lay too deep (else 0);
+    ``irregular``: the doubt (:data:`OUTLINE_DOUBT`) of a length whose levels do not shrink
+    evenly, or that exceeds the scan's diagonal ("" else)."""
 
     length: float
     width: float
@@ -64,6 +76,7 @@ class Extent:
     noise_gain: tuple[float, float] = (1.0, 1.0)
     shift: tuple[float, float] = (0.0, 0.0)
     wanted: tuple[float, float] = (0.0, 0.0)
+    irregular: str = ""
 
 
 def smoothing_sigma(dx: float, dy: float, smooth: float, direction: np.ndarray) -> float:
@@ -215,7 +228,36 @@ def extent(
     # the gains on the outline noise: 3 x1 - 3 x2 + x3, 2 x1 - x2 (the width's square alike)
     gain = (math.sqrt(19.0) if in_len else math.sqrt(5.0), math.sqrt(5.0))
     model = (d_len, d_wid, d_ls)
-    return Extent(L0, W0, axis, True, tuple(outlines), t1, model, gain, (k_len, k_wid), wanted)
+    lengths = [float(m[0]) for m in (at(j * t1[0]) for j in (1, 2, 3)) if m is not None]
+    odd = _irregular(lengths if in_len else [], L0, zs.shape, dx, dy, axis)
+    return Extent(L0, W0, axis, True, tuple(outlines), t1, model, gain, (k_len, k_wid), wanted, odd)
+
+
+def _irregular(
+    lengths: list[float], L0: float, shape: tuple[int, ...], dx: float, dy: float, axis: np.ndarray
+) -> str:
+    """The doubt of a length extrapolated to ``L0`` [m] from ``lengths`` [m] at t1, 2 t1, 3 t1
+    (empty: not from those) that do not shrink evenly, or of one longer than the scan's
+    diagonal (map of ``shape`` pixels ``dx`` x ``dy`` [m]); "" else."""
+    diagonal = math.hypot(shape[1] * dx, shape[0] * dy)
+    um = ", ".join(f"{x * 1e6:.4g}" for x in lengths)
+    if L0 > diagonal:
+        return (
+            f"{OUTLINE_DOUBT}: its length extrapolates to {L0 * 1e6:.4g} um, longer than the "
+            f"scan's diagonal ({diagonal * 1e6:.4g} um; lengths {um} um at the levels): another "
+            "mark, a pit or dust touches its edge; crop or clean the scan around the dent"
+        )
+    if len(lengths) != 3:
+        return ""
+    d1, d2 = lengths[0] - lengths[1], lengths[1] - lengths[2]
+    pixel = math.hypot(dx * float(axis[0]), dy * float(axis[1]))
+    if abs(d1 - d2) <= max(_IRREGULAR_SHARE * (abs(d1) + abs(d2)), _IRREGULAR_PIXELS * pixel):
+        return ""
+    return (
+        f"{OUTLINE_DOUBT}: its length is {um} um at the three levels it is extrapolated from, "
+        "not shrinking evenly as a tip's dent does: another mark, a pit or dust touches its "
+        "edge, and its length and L_s are not measured; crop or clean the scan around the dent"
+    )
 
 
 #: (value [m], model error [m], from levels inside the edge, the smoothing's shift in it [m])
@@ -287,3 +329,31 @@ def smoothing_note(ext: Extent, dx: float, dy: float, smooth: float, depth: floa
                 "with finer pixels"
             )
     return notes
+
+
+#: A second minimum along the sliding axis is a second depression where it rises out of the
+#: first by this fraction of the depth (a tip's dent has one: a cap, or a groove's flat bottom).
+_MERGED_PROMINENCE = 0.25
+
+
+def merged_note(s: np.ndarray, prof: np.ndarray, depth: float, noise: float) -> str:
+    """The doubt (:data:`OUTLINE_DOUBT`) of a profile along the sliding axis (``s``, heights
+    ``prof`` [m]) with two minima, each rising out of the other by at least
+    ``_MERGED_PROMINENCE`` of the ``depth`` [m] and 5 ``noise`` [m]: two marks merged into one
+    outline; "" else."""
+    from scipy.signal import find_peaks
+
+    ok = np.isfinite(prof)
+    if ok.sum() < 5:
+        return ""
+    least = max(_MERGED_PROMINENCE * depth, 5.0 * noise)
+    peaks, _ = find_peaks(-np.asarray(prof)[ok], prominence=least)
+    if len(peaks) < 2:
+        return ""
+    at = ", ".join(f"{np.asarray(s)[ok][i] * 1e3:.3g} mm" for i in peaks)
+    return (
+        f"{OUTLINE_DOUBT}: its profile along the sliding axis has {len(peaks)} minima (at {at} "
+        "from the deepest point), each rising out of the other by a quarter of its depth or "
+        "more: two marks merged into one outline, whose length and L_s are not this dent's; "
+        "crop the scan to one mark"
+    )

@@ -118,7 +118,7 @@ def gap_spread(
     length, width = nominal
     ls = length - width
     ends: list[tuple[float, float] | None] = [
-        measure(np.where(gap, fill, sf.zs)) for fill in (0.0, deep)
+        measure(np.where(gap, fill, sf.outline_map)) for fill in (0.0, deep)
     ]
     rows, cols = np.nonzero(gap)
     extent = math.hypot(float(np.ptp(cols) + 1) * sf.dx, float(np.ptp(rows) + 1) * sf.dy)

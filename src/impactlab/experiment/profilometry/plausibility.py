@@ -21,6 +21,7 @@ import math
 
 from impactlab.experiment.errors import ScanError
 from impactlab.experiment.markers import length_factor
+from impactlab.experiment.profilometry.extent import OUTLINE_DOUBT
 from impactlab.experiment.profilometry.heightmap import HeightMap
 from impactlab.experiment.profilometry.levelling import LEVELLING_DOUBT
 from impactlab.experiment.profilometry.metrics import DentMetrics
@@ -193,10 +194,12 @@ def dent_findings(
 ) -> tuple[list[str], list[str]]:
     """(warnings, doubts) of a measured dent: its own warnings and ``plausible`` (``check_dent``'s)
     as warnings; as doubts (a result not ok) a levelling in doubt (it biases delta_p and L_s
-    beyond their +-, in its own words), a height unit 1000 times too small (in place of the two
-    warnings it also raises) and a dent narrower than the tip could make."""
+    beyond their +-, in its own words), an outline that changes shape between its levels
+    (another mark or a pit at its edge: ``extent.OUTLINE_DOUBT``), a height unit 1000 times too
+    small (in place of the two warnings it also raises) and a dent narrower than the tip could
+    make."""
     unit = height_unit_doubt(dent, tip_radius=tip_radius, scan=scan)
-    levelling = [w for w in dent.warnings if w.startswith(LEVELLING_DOUBT)]
+    levelling = [w for w in dent.warnings if w.startswith((LEVELLING_DOUBT, OUTLINE_DOUBT))]
     said = [w for w in dent.warnings if w not in levelling]
     said += [] if unit else list(plausible)
     narrow = narrow_dent_doubt(dent, tip_radius=tip_radius, scan=scan)

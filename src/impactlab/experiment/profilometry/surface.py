@@ -25,7 +25,9 @@ __all__ = ["Surface", "dent_region", "filled_fraction", "find_dent", "surface"]
 @dataclass(frozen=True)
 class Surface:
     """The levelled scan: ``zl`` (NaN = no data), ``valid``, ``zs`` (filled and smoothed),
-    ``was_nan`` (filled pixels), ``sig_s`` (noise of ``zs`` [m]), ``lev``, pixel sizes, ``src``."""
+    ``was_nan`` (filled pixels), ``sig_s`` (noise of ``zs`` [m]), ``lev``, pixel sizes, ``src``;
+    ``zo``: ``zs`` without its pits (:func:`_without_pits`), the map the dent's outlines and
+    extent are drawn on (None: ``zs``, which has none)."""
 
     zl: np.ndarray
     valid: np.ndarray
@@ -36,6 +38,12 @@ class Surface:
     dx: float
     dy: float
     src: str
+    zo: np.ndarray | None = None
+
+    @property
+    def outline_map(self) -> np.ndarray:
+        """The smoothed map the outlines are drawn on: ``zo``, else ``zs``."""
+        return self.zs if self.zo is None else self.zo
 
 
 def surface(hm: HeightMap, smooth: float) -> Surface:
@@ -47,13 +55,36 @@ def surface(hm: HeightMap, smooth: float) -> Surface:
     valid = np.isfinite(zl)
     zf, was_nan = fill_nan(zl)
     zs = ndimage.gaussian_filter(zf, smooth, mode="nearest") if smooth > 0 else zf
+    clean = _without_pits(zf, lev.sigma)
+    zo = None
+    if clean is not zf:
+        zo = ndimage.gaussian_filter(clean, smooth, mode="nearest") if smooth > 0 else clean
     # noise of the smoothed map on the plane's inliers
     r = zs[lev.inliers]
     sig_s = float(1.4826 * np.median(np.abs(r - np.median(r)))) if r.size else lev.sigma
     # heights in steps coarser than their noise: the smoothing does not average the rounding
     # out where every pixel around rounds alike (a flat surface, a dent's bottom)
     sig_s = max(sig_s, lev.step / math.sqrt(12.0), 1e-15)
-    return Surface(zl, valid, zs, was_nan, sig_s, lev, hm.dx, hm.dy, hm.source or "scan")
+    return Surface(zl, valid, zs, was_nan, sig_s, lev, hm.dx, hm.dy, hm.source or "scan", zo)
+
+
+#: A pixel this many noise sigmas below the median of the 5 x 5 pixels around it is a pit (dust,
+#: a dropout on a steep flank): the smoothed map, on which the outline is drawn, takes that median
+#: instead (a tip's dent is smooth at the pixel scale: its 5 x 5 median is the pixel's own height
+#: to its curvature, far below this).
+PIT_SIGMAS = 8.0
+
+
+def _without_pits(z: np.ndarray, noise: float) -> np.ndarray:
+    """``z`` with its pits (:data:`PIT_SIGMAS`: up to a few pixels across) set to the median of
+    the 5 x 5 pixels around them, so that no pit touching the dent's edge joins its outline
+    (``z`` itself where it has none). The dent is found, and its deepest point taken, on the map
+    with them (a pit there is named, or is the only depression)."""
+    med = ndimage.median_filter(z, size=5, mode="nearest")
+    pits = med - z > PIT_SIGMAS * max(noise, 1e-15)
+    if not pits.any():
+        return z
+    return np.where(pits, med, z)
 
 
 def _components(mask: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
