@@ -60,3 +60,44 @@ def test_a_pit_at_the_dents_end_stays_out_of_its_outline() -> None:
     ls, ls0 = pitted.sliding_length, clean.sliding_length
     assert abs(ls.value - ls0.value) <= 3 * ls0.sigma
     assert pitted.delta_p.value == pytest.approx(clean.delta_p.value, rel=1e-3)
+
+
+def test_a_readers_binary_quote_is_escaped() -> None:
+    """An X3P renamed .sur: SurfaceTopography's error quoted 'PK\\x03\\x04...' raw."""
+    from impactlab.experiment.profilometry.instrument import _first_line
+
+    said = _first_line(ValueError("magic 'PK\x03\x04\x14\x00' at 0\nnext line"))
+    assert said == "magic 'PK\\x03\\x04\\x14\\x00' at 0" and said.isprintable()
+
+
+def test_a_height_matrix_with_its_coordinates_is_named(tmp_path: Path) -> None:
+    """Refused as 'sign-flipped' with a hint to pass --flip-heights, which then failed too."""
+    from impactlab.experiment import read_scan
+    from impactlab.experiment.errors import FileFormatError
+
+    z = np.random.default_rng(0).normal(0.0, 0.1, (20, 30))
+    lines = ["# pixel_size: 16 um", "# height_unit: um"]
+    lines.append("," + ",".join(f"{16.0 * j:g}" for j in range(30)))
+    lines += [f"{16.0 * i:g}," + ",".join(f"{v:.4f}" for v in z[i]) for i in range(20)]
+    path = tmp_path / "axes.csv"
+    path.write_text("\n".join(lines) + "\n")
+    with pytest.raises(FileFormatError, match=r"coordinates, not heights; export the heights"):
+        read_scan(path)
+    path.write_text("\n".join(lines[:2] + [",".join(f"{v:.4f}" for v in r) for r in z]) + "\n")
+    assert read_scan(path).z.shape == (20, 30)  # the heights alone: read
+
+
+def test_a_point_lists_xy_unit_is_named(tmp_path: Path) -> None:
+    """x, y in mm and z in um: the error blamed a 'pixel size (16 nm)' nobody gave."""
+    from impactlab.experiment import check_dent, read_scan
+
+    dx = 16e-6
+    xs, ys = np.meshgrid(np.arange(200) * dx, np.arange(150) * dx)
+    u = xs - xs.mean()
+    r2 = (u - np.clip(u, -7e-4, 7e-4)) ** 2 + (ys - ys.mean()) ** 2
+    z = np.minimum(-22e-6 + R - np.sqrt(R * R - r2), 0.0)
+    path = tmp_path / "mm_um.txt"
+    np.savetxt(path, np.column_stack([xs.ravel() * 1e3, ys.ravel() * 1e3, z.ravel() * 1e6]))
+    scan = read_scan(path, height_unit="um")
+    with pytest.raises(ValueError, match=r"check the point list's x, y \(read in its height unit"):
+        check_dent(measure_dent(scan), tip_radius=R, rod_length=0.3048, scan=scan)

@@ -52,8 +52,14 @@ def _surface_topography(p: Path) -> SimpleNamespace:
 
 
 def _first_line(exc: BaseException) -> str:
+    """The first line of a reader's error, its control characters escaped (a binary header it
+    quotes, ``PK\\x03\\x04``, would print raw on the terminal), at most 200 characters."""
     text = str(exc).strip()
-    return text.splitlines()[0][:200] if text else type(exc).__name__
+    if not text:
+        return type(exc).__name__
+    line = text.splitlines()[0]
+    line = "".join(c if c.isprintable() else ascii(c)[1:-1] for c in line)
+    return line[:200]
 
 
 def _formats_for_extension(st: SimpleNamespace, p: Path) -> list[str]:

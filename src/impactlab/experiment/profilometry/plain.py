@@ -131,7 +131,31 @@ def _load_text(p: Path) -> tuple[np.ndarray, dict[str, str]]:
         rows.append(vals)
     if not rows:
         raise FileFormatError(p, "no data rows")
-    return np.array(rows), dict(header)
+    z = np.array(rows)
+    _refuse_axes(p, z)
+    return z, dict(header)
+
+
+def _refuse_axes(p: Path, z: np.ndarray) -> None:
+    """FileFormatError for a matrix exported with its coordinates: a first row whose first
+    cell is empty and whose others rise evenly (the x axis), and a first column alike (y), as
+    spreadsheets and some scan software write them; read as heights they make a ridge."""
+    if z.shape[0] < 4 or z.shape[1] < 4 or not math.isnan(z[0, 0]):
+        return
+    x, y = z[0, 1:], z[1:, 0]
+
+    def axis(v: np.ndarray) -> bool:
+        step = np.diff(v)
+        return bool(np.all(np.isfinite(v)) and np.all(step > 0) and np.ptp(step) <= 0.01 * step[0])
+
+    if axis(x) and axis(y):
+        raise FileFormatError(
+            p,
+            f"its first row ({x[0]:g}, {x[1]:g}, {x[2]:g}, ...) and first column ({y[0]:g}, "
+            f"{y[1]:g}, ...) rise evenly from an empty corner: coordinates, not heights; export "
+            "the heights alone (no axes), or delete that row and column, and give the pixel "
+            f"size (here {x[1] - x[0]:g} in the coordinates' unit)",
+        )
 
 
 def read_plain(p: Path, pixel_size: Any, height_unit: str | None) -> HeightMap:

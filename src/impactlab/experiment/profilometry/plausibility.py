@@ -59,7 +59,13 @@ def _units(scan: HeightMap | None) -> tuple[str, str]:
     meta = scan.meta or {}
     unit = meta.get("height_unit") or meta.get("unit")
     heights = f"the height unit (read as {unit!r})" if unit else "the height unit"
-    return heights, f"the pixel size ({_length(scan.dx)} x {_length(scan.dy)})"
+    pixels = f"the pixel size ({_length(scan.dx)} x {_length(scan.dy)})"
+    if meta.get("format") == "xyz":  # SurfaceTopography reads x, y in the heights' unit
+        pixels = (
+            f"the point list's x, y (read in its height unit {unit!r}, as x,y,z lists are: "
+            f"{_length(scan.dx)} apart; write x, y in the unit of z)"
+        )
+    return heights, pixels
 
 
 def _too_small(scan: HeightMap | None) -> str:
