@@ -84,3 +84,10 @@ def test_an_impact_names_its_body_and_flat_as_printed() -> None:
     r = il.simulate(ROD, angle=0.3, velocity=(0.0, -1.0), mu=0.2, history=False)
     assert r.body == r.summary()["body"] and r.body.startswith("Rod: length = 304.8 mm")
     assert r.flat == r.summary()["flat"] == il.AISI_1010.name
+
+
+def test_a_spheres_approach_rule_is_its_own() -> None:
+    """A sphere that does not approach was told the rod's rule, vy - spin * (L/2) cos(angle)."""
+    s = il.Sphere(radius=0.01, material=il.AISI_201)
+    with pytest.raises(ValueError, match=r"its normal velocity vy = 1\.0 m/s must be < 0\)"):
+        il.simulate(s, velocity=(0.0, 1.0))

@@ -58,9 +58,10 @@ def _approach(body: Rod | Sphere, th: float, vx: float, vy: float, w: float) -> 
     a, b = lever_arms(body.half_length, body.tip_radius, th)
     vn = vy - w * a
     if not vn < 0.0:  # the command line names its options in it: cli.drop.approach_worded
+        rule = "vy" if isinstance(body, Sphere) else "vy - spin * (L/2) cos(angle)"
         raise ValueError(
             f"velocity: the contact point does not approach the flat (its normal velocity "
-            f"vy - spin * (L/2) cos(angle) = {float(vn)!r} m/s must be < 0)"
+            f"{rule} = {float(vn)!r} m/s must be < 0)"
         )
     tip = math.hypot(vx + w * b, vn)
     warn_fast("the impact speed", max(math.hypot(vx, vy), tip))
