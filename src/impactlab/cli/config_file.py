@@ -255,7 +255,7 @@ def option_material(opt: ConfigOptions, key: str, default: Material) -> Material
 #: The API's refusal of a rod that does not approach the flat (``dynamics.checks``, ``.drop``).
 _APPROACH = re.compile(
     r"velocity: the (?P<what>contact point|tip) does not approach the flat \(its normal "
-    r"velocity vy - spin \* \(L/2\) cos\(angle\) = (?P<vn>\S+) m/s must be < 0\)"
+    r"velocity vy(?: - spin \* \(L/2\) cos\(angle\))? = (?P<vn>\S+) m/s must be < 0\)"
 )
 
 
