@@ -22,9 +22,9 @@ Prog. Theor. Exp. Phys. 2022, 083C01, doi:10.1093/ptep/ptac097): where its p-val
 probability of a chi2 at least as large, is below :data:`LEVEL` = 0.01 (chi2 above the 99 %
 quantile: 6.63 for one value, 11.34 for three), the row is inconsistent with the measurements
 (``Verdict.consistent`` False). A named row that is inconsistent is worded as ranking first,
-"but is itself inconsistent with the measurements (chi2 X over n values[ it predicts], p =
-...)", and the
-table marks it ``first, inconsistent``, not ``best``. A named row whose contact law is used
+"but is itself inconsistent with the measurements (chi2 X over n values, p = ...)" ("over n
+values it predicts" where some were left out of the ranking), and the table marks it
+``first, inconsistent``, not ``best``. A named row whose contact law is used
 beyond its verified range (law_extrapolated) says so in its reason too.
 
 Near the 2-sigma line the verdict does not turn on a hair: where the first ranks above
