@@ -209,3 +209,10 @@ def test_a_drop_copied_under_another_label_warns(tmp_path):
     with warnings.catch_warnings():
         warnings.simplefilter("error", CalibrationWarning)
         read(other)
+
+
+def test_an_uncertainty_column_with_its_own_unit_is_read_in_it(tmp_path):
+    """``delta_p_sigma [um]`` beside ``0.022 mm`` was refused, with a hint 1000 times off."""
+    m = read(_csv(tmp_path, "delta_p [um],delta_p_sigma [um]", "0.022 mm,2.2"))
+    assert m.observed["delta_p"][0] == pytest.approx(22e-6)
+    assert m.sigma["delta_p"][0] == pytest.approx(2.2e-6)

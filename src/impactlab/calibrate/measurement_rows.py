@@ -182,8 +182,8 @@ def parse_row(i: int, record: Mapping[str, Any], units: Mapping[str, Any]) -> Ro
             inputs[canon] = _value(where, name, v, unit, spec.unit, canon)
         elif kind == "sigma":
             q = canon.removesuffix("_sigma")
-            unit = unit or value_units.get(q) or units.get(q)
-            _sigma_unit(where, name, v, unit, q, texts.get(q), value_units.get(q))
+            own, unit = bool(unit), unit or value_units.get(q) or units.get(q)
+            _sigma_unit(where, name, v, unit, q, texts.get(q), value_units.get(q), own)
             if q in ANGLES:
                 _angle_unit(where, name, v, unit, f"{q}_sigma")
             sig[q] = _value(where, name, v, unit, MEASURABLE[q].unit, canon)
@@ -201,10 +201,10 @@ def parse_row(i: int, record: Mapping[str, Any], units: Mapping[str, Any]) -> Ro
 
 
 def _sigma_unit(
-    where: str, name: str, v: Any, unit: str | None, q: str, value: Any, value_unit: str | None
+    where: str, name: str, v: Any, unit: str | None, q: str, value: Any, value_unit: Any, own: bool
 ) -> None:
-    """Refused: a bare uncertainty beside a value with a unit of its own (``"12 um"``, not the
-    column's ``unit``), read in SI or ``unit``; one in percent beside a value that is not
+    """Refused: a bare uncertainty, not in a column of its ``own`` unit, beside a value with a
+    unit of its own (``"12 um"``, not ``unit``); one in percent beside a value that is not
     (``e = 0.43``, ``e_sigma = "5 %"``: 5 % of e or 0.05?)."""
     if value is None or _blank(value):
         return
@@ -219,7 +219,7 @@ def _sigma_unit(
             f"{_shown(value, value_unit)!r} is not: a percentage of {q} could be relative (of "
             f"the value) or of 1; give {name} as {q} is (a fraction of 1), or {q} in percent too"
         )
-    if not bare(v) or bare(value) or (unit and not in_own_unit(value, unit)):
+    if not bare(v) or bare(value) or own or (unit and not in_own_unit(value, unit)):
         return
     if MEASURABLE[q].unit in ("1", "") and not value_part:
         return

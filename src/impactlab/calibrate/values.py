@@ -46,7 +46,7 @@ def in_own_unit(value: Any, unit: str) -> bool:
     ``unit``: a bare number beside it would be read in ``unit``, not in the value's."""
     if not isinstance(value, str):
         return False
-    own = re.sub(r"^\s*[-+0-9.eE]+\s*", "", value)
+    own = re.sub(r"^\s*[-+\u22120-9.eE]+\s*", "", value)  # a Unicode minus too
     try:
         return bool(own) and not math.isclose(_si_factor(own), _si_factor(unit), rel_tol=1e-12)
     except ValueError:
