@@ -25,6 +25,8 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from typing import Any, TextIO
 
+from impactlab._interrupts import plain_interrupts
+
 #: Seconds a compilation runs before it is announced (short ones stay silent).
 DELAY_S = 1.0
 #: The parts compiled on the way to an engine (its kernels, then the engine itself) wait this
@@ -242,9 +244,12 @@ def install() -> None:
 @contextmanager
 def one_line(listener: _Listener = LISTENER) -> Iterator[None]:
     """The compilations inside the block are announced as one: the first one's line, with one
-    counter (on a terminal) that ends when the block does. Nothing compiled: nothing printed."""
+    counter (on a terminal) that ends when the block does. Nothing compiled: nothing printed.
+    Its compiled calls dispatch function addresses, so an interrupt numba wraps comes back as
+    itself (:func:`impactlab._interrupts.plain_interrupts`)."""
     listener.open_group()
     try:
-        yield
+        with plain_interrupts():
+            yield
     finally:
         listener.close_group()

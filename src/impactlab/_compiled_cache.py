@@ -34,6 +34,7 @@ import hashlib
 import os
 import pickle
 import shutil
+import stat
 import sys
 import tempfile
 from functools import cache
@@ -143,11 +144,35 @@ def _writable(folder: Path) -> str:
 
 
 def fallback_cache_dir() -> Path:
-    """The engine folder under the system's temporary folder (per user), for a cache folder
-    that cannot be written."""
+    """The engine folder under the system's temporary folder, in a root private to the user
+    (``impactlab-<uid>``, mode 0700), for a cache folder that cannot be written. numba's cache
+    files are unpickled, so a root that another user owns or may write (a planted folder in the
+    shared temporary folder) is never used: a private folder of this process's own replaces it."""
     uid = os.getuid() if hasattr(os, "getuid") else getpass.getuser()
-    root = Path(tempfile.gettempdir()) / f"impactlab-{uid}" / "numba"
-    return root / f"{ENGINE_PREFIX}{engine_source_hash()}"
+    root = Path(tempfile.gettempdir()) / f"impactlab-{uid}"
+    with contextlib.suppress(OSError):
+        root.mkdir(mode=0o700)
+    if not _private(root):
+        root = _process_root()
+    return root / "numba" / f"{ENGINE_PREFIX}{engine_source_hash()}"
+
+
+def _private(root: Path) -> bool:
+    """Whether ``root`` is a real folder (not a link) owned by this user that no one else may
+    write; always true where the system has no user ids."""
+    if not hasattr(os, "getuid"):
+        return root.is_dir()
+    try:
+        st = root.lstat()
+    except OSError:
+        return False
+    return stat.S_ISDIR(st.st_mode) and st.st_uid == os.getuid() and not st.st_mode & 0o022
+
+
+@cache
+def _process_root() -> Path:
+    """A private temporary folder of this process (``mkdtemp``: mode 0700, unguessable)."""
+    return Path(tempfile.mkdtemp(prefix="impactlab-"))
 
 
 def use_cache_dir() -> Path:
@@ -164,6 +189,8 @@ def use_cache_dir() -> Path:
     why = _writable(folder)
     if why:
         wanted, folder = folder, fallback_cache_dir()
+        if not folder.exists():
+            prune_engine_folders(folder)
         if _writable(folder):
             folder = wanted  # nothing writable: numba says so where it compiles
         else:
@@ -225,5 +252,12 @@ def repair_damaged_entries() -> None:
     cls._impactlab_repairs = True
 
 
+_SAID: set[str] = set()
+
+
 def _say_damaged(path: str) -> None:
+    """One line per damaged file (numba reads an index again before it rewrites it)."""
+    if path in _SAID:
+        return
+    _SAID.add(path)
     print(f"impactlab: a damaged compile-cache file ({path}) is compiled again", file=sys.stderr)

@@ -50,32 +50,6 @@ def release_start_interrupt() -> None:
         signal.signal(signal.SIGINT, signal.default_int_handler)
 
 
-def interrupt_inside(exc: BaseException) -> KeyboardInterrupt | None:
-    """The Ctrl-C that numba wrapped into ``exc`` (a ``SystemError``: "returned a result with
-    an exception set", where the interrupt landed while a compiled function was dispatched),
-    or None."""
-    seen = 0
-    cause: BaseException | None = exc
-    while cause is not None and seen < 8:
-        if isinstance(cause, KeyboardInterrupt):
-            return cause
-        cause, seen = cause.__cause__ or cause.__context__, seen + 1
-    return None
-
-
-@contextlib.contextmanager
-def plain_interrupts() -> Any:
-    """Ctrl-C inside a compiled call as the ``KeyboardInterrupt`` it is, not numba's
-    ``SystemError`` around it."""
-    try:
-        yield
-    except SystemError as exc:
-        ki = interrupt_inside(exc)
-        if ki is None:
-            raise
-        raise KeyboardInterrupt from None
-
-
 quiet_start_interrupt()
 use_cache_dir()
 repair_damaged_entries()

@@ -155,7 +155,7 @@ def check_finite(name: str, value: Any, unit: str = "") -> float:
         value = magnitude(name, value, unit)
     else:
         _refuse_dimension(name, value)
-        value = _percent(value)
+        value = percent_fraction(value)
     err = _not_a_number(name, value)
     if err is not None:
         raise err
@@ -168,7 +168,7 @@ def check_finite(name: str, value: Any, unit: str = "") -> float:
     return x
 
 
-def _percent(value: Any) -> Any:
+def percent_fraction(value: Any) -> Any:
     """A string in percent (``"20 %"``, ``"20 percent"``) as its fraction (0.2), as a percent
     Quantity reads; anything else unchanged (refused as a string after)."""
     if not (isinstance(value, str) and ("%" in value or "percent" in value)):
@@ -317,8 +317,8 @@ def check_array(name: str, values: Any, unit: str = "") -> np.ndarray:
     if unit and _holds_quantities(values):  # ["20 deg", "45 deg"]: each read in its unit
         values = [magnitude(f"{name}[{i}]", v, unit) for i, v in enumerate(values)]
     if not unit and _holds_quantities(values):  # ["10 %", 0.2]: percent as a fraction
-        values = [_percent(v) for v in values]
-    values = magnitude(name, values, unit) if unit else _percent(_plain(name, values))
+        values = [percent_fraction(v) for v in values]
+    values = magnitude(name, values, unit) if unit else percent_fraction(_plain(name, values))
     err = _not_a_number(name, values)
     if err is not None:
         raise err

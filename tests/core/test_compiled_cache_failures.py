@@ -4,13 +4,16 @@ inherited from a parent, a relative path, a folder that cannot be written, a tru
 from __future__ import annotations
 
 import os
+import stat
 import subprocess
 import sys
+import tempfile
 from pathlib import Path
 
 import pytest
 
 from impactlab._compiled_cache import (
+    _process_root,
     compiled_cache_dir,
     default_cache_root,
     engine_source_hash,
@@ -75,6 +78,27 @@ print(plus_one(1.0))
 """
 
 
+def test_the_temporary_fallback_is_private_to_the_user(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
+    """numba unpickles its cache files: a fallback root in the shared temporary folder that
+    another user could write would run their code."""
+    monkeypatch.setattr(tempfile, "tempdir", str(tmp_path))
+    _process_root.cache_clear()
+    folder = fallback_cache_dir()
+    root = tmp_path / f"impactlab-{os.getuid()}"
+    assert folder.is_relative_to(root) and stat.S_IMODE(root.stat().st_mode) == 0o700
+    root.chmod(0o777)  # as a planted folder would be: not used
+    planted = fallback_cache_dir()
+    assert not planted.is_relative_to(root) and planted.is_relative_to(tmp_path)
+    private = planted.parents[1]
+    assert stat.S_IMODE(private.stat().st_mode) == 0o700 and private.name.startswith("impactlab-")
+    root.rmdir()
+    root.symlink_to(private)  # a link is not the user's own folder either
+    assert fallback_cache_dir() == planted
+    _process_root.cache_clear()
+
+
 @pytest.mark.parametrize("suffix", [".nbi", ".nbc"])
 def test_a_truncated_cache_file_is_compiled_again(tmp_path: Path, suffix: str) -> None:
     """numba raised UnpicklingError (a truncated data file) or EOFError (an emptied index,
@@ -92,7 +116,8 @@ def test_a_truncated_cache_file_is_compiled_again(tmp_path: Path, suffix: str) -
     again = run()
     assert again.returncode == 0, again.stderr
     assert again.stdout.strip() == "2.0"
-    assert "a damaged compile-cache file" in again.stderr and "compiled again" in again.stderr
+    assert again.stderr.count("a damaged compile-cache file") == 1, again.stderr
+    assert "compiled again" in again.stderr
     third = run()  # rewritten: loaded silently
     assert third.stdout.strip() == "2.0" and "damaged" not in third.stderr
 

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import pytest
 
-from impactlab._runtime import interrupt_inside, plain_interrupts
+from impactlab._interrupts import interrupt_inside, plain_interrupts
 
 
 def _wrapped() -> None:
@@ -22,6 +22,21 @@ def test_a_wrapped_interrupt_is_an_interrupt_again() -> None:
     with pytest.raises(SystemError, match="other"), plain_interrupts():  # others pass on
         raise SystemError("other")
     assert interrupt_inside(ValueError("no")) is None
+
+
+def test_a_wrapped_termination_keeps_its_class_and_status() -> None:
+    """SIGTERM during a compiled call became a plain Ctrl-C (exit 130 instead of 143)."""
+    from impactlab._compile_notice import one_line
+    from impactlab.sweep.termination import SweepTerminated
+
+    def wrapped_termination() -> None:
+        try:
+            raise SweepTerminated("terminated")
+        except SweepTerminated as ki:
+            raise SystemError("returned a result with an exception set") from ki
+
+    with pytest.raises(SweepTerminated, match="terminated"), one_line():
+        wrapped_termination()
 
 
 def test_the_command_line_says_interrupted_with_status_130(monkeypatch) -> None:

@@ -24,3 +24,17 @@ def test_other_strings_stay_refused(text) -> None:
 def test_simulate_takes_mu_in_percent() -> None:
     r = il.simulate(il.PAPER_ROD, angle=0.35, velocity=(0, -1.41), mu="20 %", history=False)
     assert r.e == il.simulate(il.PAPER_ROD, angle=0.35, velocity=(0, -1.41), mu=0.2).e
+
+
+def test_the_command_line_takes_mu_in_percent() -> None:
+    from typer.testing import CliRunner
+
+    from impactlab.cli import app
+
+    args = ["simulate", "rod", "--angle", "20 deg", "--vy", "-1.41 m/s", "--json"]
+    percent = CliRunner().invoke(app, [*args, "--mu", "20 %"])
+    plain = CliRunner().invoke(app, [*args, "--mu", "0.2"])
+    assert percent.exit_code == 0, percent.output
+    assert percent.stdout == plain.stdout
+    bad = CliRunner().invoke(app, [*args, "--mu", "x %"])
+    assert "--mu must be a number, got 'x %'" in bad.output + str(bad.exception)

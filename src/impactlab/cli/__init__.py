@@ -25,6 +25,7 @@ import typer
 from typer.core import TyperGroup
 
 from impactlab import _runtime
+from impactlab._interrupts import interrupt_inside
 from impactlab._oserror import system_error_line as _system_error_line
 from impactlab._version import __version__
 from impactlab.cli import (
@@ -60,7 +61,7 @@ class _Commands(TyperGroup):
             interrupted(exc)
             raise typer.Exit(130) from None
         except SystemError as exc:  # Ctrl-C inside a compiled call, wrapped by numba
-            ki = _runtime.interrupt_inside(exc)
+            ki = interrupt_inside(exc)
             if ki is None:
                 raise
             interrupted(ki)

@@ -7,6 +7,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Mapping
 from typing import Any
 
+from impactlab._validation import percent_fraction
 from impactlab.cli._common import UserError
 
 
@@ -23,12 +24,13 @@ def check_booleans(table: Mapping[str, Any], keys: Iterable[str], where: str) ->
 
 
 def plain_number(value: Any, name: str) -> float:
-    """A plain number (an option's float, or a config file's number or numeric text), else a
-    UserError naming ``name``; a TOML boolean is no number."""
+    """A plain number (an option's float, or a config file's number or numeric text, or a
+    percentage: ``"20 %"`` is 0.2, as in the Python API), else a UserError naming ``name``; a
+    TOML boolean is no number."""
     try:
         if isinstance(value, bool):
             raise TypeError(value)
-        return float(value)
+        return float(percent_fraction(value))
     except (TypeError, ValueError):
         raise UserError(f"{name} must be a number, got {value!r}") from None
 

@@ -17,6 +17,7 @@ from typing import Any
 import numba
 import numpy as np
 
+from impactlab._interrupts import plain_interrupts
 from impactlab._validation import refuse_unknown_keywords
 from impactlab.bodies import Rod
 from impactlab.bodies.flexible_rod import FlexibleRod
@@ -167,9 +168,10 @@ def simulate_drops(
             np.full((init.shape[0], N_CHECKS), np.nan),
         )
         st = np.zeros(init.shape[0], dtype=np.int32)
-        drop_batch(numba.get_num_threads(), mdl, np.ascontiguousarray(init),
-                   np.ascontiguousarray(mu_run[run]), np.ascontiguousarray(fid[run]), r, t_end,
-                   stop_mode, o, ck, st, drop_address())  # fmt: skip
+        with plain_interrupts():  # the drop is dispatched through its address
+            drop_batch(numba.get_num_threads(), mdl, np.ascontiguousarray(init),
+                       np.ascontiguousarray(mu_run[run]), np.ascontiguousarray(fid[run]), r,
+                       t_end, stop_mode, o, ck, st, drop_address())  # fmt: skip
         status[run], out[run], checks[run] = st, o, ck
     failed = _failures(status, run, out, model)  # before the rows are blanked
     inaccurate = _refuse_inaccurate(out, checks, status, r)

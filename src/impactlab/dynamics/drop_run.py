@@ -13,7 +13,6 @@ import numpy as np
 
 from impactlab import schema
 from impactlab._compile_notice import one_line
-from impactlab._runtime import plain_interrupts
 from impactlab.contact import ContactModel
 from impactlab.contact.history_kernels import loading_contact_radius
 from impactlab.contact.range_note import range_note
@@ -75,7 +74,7 @@ def run_drop(
     contacts = np.zeros((F.MAX_CONTACTS, F.NCR))
     dents = np.zeros((F.MAX_DENTS, F.NDT))
     yfinal = np.zeros(state_length(bm.omega.size, fid))
-    with one_line(), plain_interrupts():  # a first drop compiles the addresses' functions
+    with one_line():  # a first drop compiles the addresses' functions
         mdl = model_tuple(model.law_id, p, c, bm.omega, bm.zeta, bm.U, bm.W, bm.Psi, bm.geometric)
         st, ncon, nd, hist, _nh = drop(
             mdl, vx, vy, w, rtol, time_limit, stop, history, out, contacts, dents, yfinal
