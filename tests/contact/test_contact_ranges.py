@@ -326,6 +326,53 @@ def test_brakes_range_holds_for_a_cases_own_hardness_and_meyer_index_only() -> N
     hb150 = dataclasses.replace(AISI_1010, brinell_hardness=150.0, name="AISI 1010, HB 150")
     m = get_law("brake").build(ContactPair(AISI_201, hb150), 8.8e-3)
     assert range_status(m.law_id, m.params) == "unverified"
-    assert "P0 and meyer_index are not those of an FE case's pair" in range_note(m.law_id, m.params)
+    assert "brake's P0 is not that of the FE case's pair" in range_note(m.law_id, m.params)
     paper = get_law("brake").build(ContactPair(AISI_201, AISI_1010), 8.8e-3)
     assert range_status(paper.law_id, paper.params) == "verified"
+
+
+def test_a_beyond_fe_laws_text_holds_at_its_cases_pairs_only() -> None:
+    """Brake's description claims no range between its cases' E*/S_y: its verified range is a
+    case's own, that case's P0 and Meyer index included; every other pair is held to the
+    stand-in. Its rows in ``describe()`` carry those inputs; a law the FE reference fixes
+    keeps the smaller of the neighbouring cases' ranges between them."""
+    r = law_range("brake")
+    assert "between cases the smaller" not in r.text and "outside 81-360" not in r.text
+    assert "at these FE cases' pairs only, their P0 and meyer_index included" in r.text
+    assert r.text.endswith(
+        "any other pair (another E*/S_y, P0 or meyer_index) unverified: delta <= 1 delta_y "
+        "(analytical)"
+    )
+    rows = r.describe()["verified"]
+    assert [row["inputs"] for row in rows] == [dict(c.inputs) for c in verified_cases("brake")]
+    assert rows[0]["inputs"] == {"P0": 1017440000.0, "meyer_index": 2.2}
+    g = law_range("ghaednia")
+    assert "(between cases the smaller); E*/S_y outside 28-1731 unverified" in g.text
+    assert all("inputs" not in row for row in g.describe()["verified"])
+
+
+def test_brakes_unverified_line_names_only_the_inputs_that_differ() -> None:
+    """At a case's E*/S_y the line names the inputs that are not the case's (P0 alone for
+    another hardness, meyer_index alone for another index, both for both); between the cases'
+    E*/S_y it says that the pair's E*/S_y is none of theirs."""
+    hb150 = dataclasses.replace(AISI_1010, brinell_hardness=150.0, name="AISI 1010, HB 150")
+    n23 = dataclasses.replace(AISI_1010, meyer_index=2.3, name="AISI 1010, n 2.3")
+    both = dataclasses.replace(hb150, meyer_index=2.3, name="AISI 1010, HB 150, n 2.3")
+    law = get_law("brake")
+    lines = []
+    for flat in (hb150, n23, both):
+        m = law.build(ContactPair(AISI_201, flat), 8.8e-3)
+        lines.append(str(range_note(m.law_id, m.params)))
+    assert lines[0] == (
+        "unverified: brake's P0 is not that of the FE case's pair at E*/S_y = 360.3 (the FE "
+        "reference does not use it); stand-in limit 1 delta_y"
+    )
+    assert lines[1].startswith("unverified: brake's meyer_index is not that of the FE case's")
+    assert lines[2].startswith("unverified: brake's P0 and meyer_index are not those of the FE")
+    soft = dataclasses.replace(AISI_1010, yield_strength=1.3 * AISI_1010.yield_strength, name="s")
+    m = law.build(ContactPair(AISI_201, soft), 8.8e-3)
+    assert range_status(m.law_id, m.params) == "unverified"
+    assert str(range_note(m.law_id, m.params)).startswith(
+        "unverified: E*/S_y = 277.2 is not that of an FE case (81, 207, 360); brake is verified "
+        "for those cases' own pairs only, their P0 and meyer_index included; stand-in limit"
+    )

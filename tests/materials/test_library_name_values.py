@@ -103,6 +103,22 @@ def test_a_changed_entry_changed_again_says_what_differs_now() -> None:
     assert mine.name == "my steel, modified (E)"
 
 
+def test_a_changed_entry_with_a_source_of_its_own_says_what_differs_now() -> None:
+    """A changed copy given its own source is labelled by what differs from the entry, as one
+    without: nu changed is named, all values back leave no "modified" label; the source kept."""
+    entry = lib.AISI_1010
+    mine = dataclasses.replace(dataclasses.replace(entry, E=69e9), source="lab")
+    assert (mine.name, mine.source) == (f"{entry.name}, modified (E)", "lab")
+    more = dataclasses.replace(mine, nu=0.31)
+    assert (more.name, more.source) == (f"{entry.name}, modified (E, nu)", "lab")
+    back = dataclasses.replace(mine, E=entry.E)
+    assert (back.name, back.source) == (entry.name, "lab")
+    assert dataclasses.replace(back, source=entry.source) == entry
+    given = dataclasses.replace(entry, E=69e9, source="lab")  # the source given with the change
+    assert (given.name, given.source) == (f"{entry.name}, modified (E)", "lab")
+    assert dataclasses.replace(entry, E=69e9).source == ""  # the entry's own is cleared
+
+
 def test_every_library_entry_rebuilds_from_its_fields() -> None:
     for entry in lib.PRESETS.values():
         fields = {f.name: getattr(entry, f.name) for f in dataclasses.fields(entry)}

@@ -19,7 +19,13 @@ from impactlab.contact import kernels as k
 from impactlab.contact.custom_parameters import custom_parameters
 from impactlab.contact.names import Law
 from impactlab.contact.ranges import STATUSES, law_range, range_limit, range_status
-from impactlab.contact.verified_ranges import BEYOND_FE, e_star_over_sy_span, verified_upper
+from impactlab.contact.verified_ranges import (
+    BEYOND_FE,
+    differing_inputs,
+    e_star_over_sy_span,
+    verified_cases,
+    verified_upper,
+)
 
 __all__ = ["note_source", "range_note"]
 
@@ -49,6 +55,26 @@ def _tabulated(p: np.ndarray) -> str:
     return (
         f"tabulated: interpolated from its curves up to their end, {end:.4g} m "
         f"({end / dc:.4g} delta_c), and refused beyond it{source}"
+    )
+
+
+def _beyond_fe(name: str, ratio: float, p: np.ndarray, upper: str) -> str:
+    """The unverified line of a law of ``BEYOND_FE`` within its cases' E*/S_y span: the inputs
+    that differ from those of the FE case at the pair's E*/S_y, or, between the cases' E*/S_y,
+    that its range holds for the cases' own pairs only."""
+    differ = differing_inputs(name, ratio, p)
+    if differ:
+        names, one = " and ".join(differ), len(differ) == 1
+        return (
+            f"unverified: {name}'s {names} {'is not that' if one else 'are not those'} of the "
+            f"FE case's pair at E*/S_y = {ratio:.4g} (the FE reference does not use "
+            f"{'it' if one else 'them'}); stand-in limit {upper}"
+        )
+    cases = ", ".join(f"{c.e_star_over_sy:.0f}" for c in verified_cases(name))
+    return (
+        f"unverified: E*/S_y = {ratio:.4g} is not that of an FE case ({cases}); {name} is "
+        f"verified for those cases' own pairs only, their {' and '.join(BEYOND_FE[name])} "
+        f"included; stand-in limit {upper}"
     )
 
 
@@ -94,11 +120,7 @@ def range_note(law_id: int, params: Any) -> str | None:
                 f"{ratio:.4g})"
             )
     if status == "unverified" and name in BEYOND_FE and lo * (1 - 1e-6) <= ratio <= hi * (1 + 1e-6):
-        return (
-            f"unverified: {name}'s {' and '.join(BEYOND_FE[name])} are not those of an FE "
-            f"case's pair (the FE reference does not use them; E*/S_y = {ratio:.4g}); "
-            f"stand-in limit {upper}"
-        )
+        return _beyond_fe(name, ratio, p, upper)
     if status == "unverified":
         return (
             f"unverified: E*/S_y = {ratio:.4g} outside the FE cases' {lo:.0f}-{hi:.0f}; "

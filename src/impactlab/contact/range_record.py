@@ -12,6 +12,7 @@ from typing import Any
 
 from impactlab.contact.names import Law
 from impactlab.contact.verified_ranges import (
+    BEYOND_FE,
     VerifiedCase,
     e_star_over_sy_span,
     tolerance_text,
@@ -81,14 +82,24 @@ class LawRange:
     @property
     def text(self) -> str:
         """One line for people: the verified range per FE case and, outside their E*/S_y
-        span, the stand-in; only the stand-in for a law without a verified range."""
+        span, the stand-in; only the stand-in for a law without a verified range. A law of
+        ``BEYOND_FE`` is verified at the cases' own pairs only, its inputs the FE reference
+        does not use included: any other pair is held to the stand-in."""
         cases = self.verified
         if not cases:
             return self.stand_in_text
-        lo, hi = e_star_over_sy_span(str(self.law))
         per_case = ", ".join(
             f"{c.upper:.3g} delta_c at E*/S_y = {c.e_star_over_sy:.0f}" for c in cases
         )
+        beyond = BEYOND_FE.get(str(self.law))
+        if beyond is not None:
+            names, other = " and ".join(beyond), " or ".join(beyond)
+            return (
+                f"verified range ({tolerance_text()}) at these FE cases' pairs only, their "
+                f"{names} included (the FE reference does not use them): delta <= {per_case}; "
+                f"any other pair (another E*/S_y, {other}) unverified: {self.stand_in_text}"
+            )
+        lo, hi = e_star_over_sy_span(str(self.law))
         return (
             f"verified range ({tolerance_text()}): delta <= {per_case} (between cases the "
             f"smaller); E*/S_y outside {lo:.0f}-{hi:.0f} unverified: {self.stand_in_text}"
@@ -115,6 +126,7 @@ class LawRange:
                     "first_failure_delta_ratio": c.first_failure
                     if math.isfinite(c.first_failure)
                     else None,
+                    **({"inputs": dict(c.inputs)} if c.inputs else {}),
                 }
                 for c in self.verified
             ],

@@ -40,6 +40,7 @@ __all__ = [
     "FORMAT",
     "VERIFIED_PATH",
     "VerifiedCase",
+    "differing_inputs",
     "e_star_over_sy_span",
     "tolerance_text",
     "verified_cases",
@@ -142,6 +143,25 @@ def e_star_over_sy_span(law: str | None = None) -> tuple[float, float]:
     chosen = table.values() if law is None else [table.get(str(law), ())]
     values = [c.e_star_over_sy for cases in chosen for c in cases]
     return (min(values), max(values)) if values else (math.nan, math.nan)
+
+
+def differing_inputs(law: str, e_star_over_sy: float, params: Any) -> tuple[str, ...] | None:
+    """For a law of :data:`BEYOND_FE`: the names of its inputs the FE reference does not use
+    whose values in the compiled ``params`` differ from those of the FE case at
+    ``e_star_over_sy`` (``()``: none); None where no case has that E*/S_y, or for another
+    law."""
+    slots = BEYOND_FE.get(str(law))
+    if slots is None:
+        return None
+    p = np.asarray(params, dtype=np.float64)
+    for c in verified_cases(law):
+        if math.isclose(float(e_star_over_sy), c.e_star_over_sy, rel_tol=_MATCH_RTOL):
+            return tuple(
+                name
+                for name, value in c.inputs
+                if not math.isclose(float(p[slots[name]]), value, rel_tol=_MATCH_RTOL)
+            )
+    return None
 
 
 def verified_upper(law: str, e_star_over_sy: Any, params: Any = None) -> Any:

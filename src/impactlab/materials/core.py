@@ -249,16 +249,17 @@ class Material:
 
     def _relabel_if_changed(self) -> None:
         """A library entry changed in part (``dataclasses.replace(AISI_1010, E=69e9)``: its
-        display name and a source) keeps no library label: its name says what changed and its
-        source is cleared, so that no result names a library material it did not use; such a
-        copy changed again is labelled by what differs from the entry then (changed back: the
-        entry's name and source again). Any other
+        display name and a source) keeps no library label: its name says what changed and the
+        entry's source is cleared, so that no result names a library material it did not use;
+        such a copy changed again, with a source of one's own or none, is labelled by what
+        differs from the entry then (changed back: the entry's name, and its source unless the
+        copy was given one). Any other
         material named as a library entry (its key, an alias or its display name) with other
         values is refused (``impactlab.materials.naming.library_name_clash``), as
         ``get_material`` refuses it."""
         from impactlab.materials import naming  # imports the library's names lazily
 
-        relabelled = naming.modified_entry(self.name) if not self.source else None
+        relabelled = naming.modified_entry(self.name)
         entry = relabelled or naming.library_entry(self.name)
         if entry is None:
             return
@@ -269,12 +270,13 @@ class Material:
             return
         differ = naming.values_differ  # exactly: a copy that changed anything is another material
         changed = [f for f in naming.COMPARED if differ(getattr(self, f), getattr(entry, f))]
+        own = "" if self.source == entry.source else self.source  # a source of one's own
         if changed:
             object.__setattr__(self, "name", f"{entry.name}, modified ({', '.join(changed)})")
-            object.__setattr__(self, "source", "")
+            object.__setattr__(self, "source", own)
         elif relabelled is not None:  # changed back: the library entry again
             object.__setattr__(self, "name", entry.name)
-            object.__setattr__(self, "source", entry.source)
+            object.__setattr__(self, "source", own or entry.source)
 
     @property
     def has_hardness(self) -> bool:
