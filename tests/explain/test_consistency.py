@@ -1,9 +1,11 @@
-"""Ranking first is not explaining the drop: a named row whose chi2 over the values ranked has
-a p-value below 0.01 (chi2 with n degrees of freedom) is worded as ranking first but
+"""Ranking first is not explaining the drop: a named row whose chi2 over the values it predicts
+has a p-value below 0.01 (chi2 with n degrees of freedom) is worded as ranking first but
 inconsistent with the measurements, marked ``first, inconsistent`` in the table and
 ``consistent: false`` in JSON; a row whose contact law is extrapolated says so in its reason."""
 
 from __future__ import annotations
+
+import math
 
 import pytest
 from scipy.stats import chi2 as chi2_distribution
@@ -135,3 +137,42 @@ def test_a_first_that_misses_a_value_only_it_predicts_is_not_consistent(tmp_path
     assert v.consistent is False and v.p_value < 1e-10
     assert "inconsistent with the measurements (chi2 " in v.reason
     assert "over 2 values it predicts" in v.reason
+
+
+def test_the_p_value_is_that_of_the_chi2_beside_it(tmp_path) -> None:
+    """The rigid rod ranked over e alone (chi2 0.015) but predicting e and the duration: its
+    p-value is that of its chi2 over both (68.5, p = 1.3e-15), and both are fields, in Python
+    and JSON, beside the ranking's chi2."""
+    from impactlab.explain import explain
+
+    path = tmp_path / "dur.csv"
+    path.write_text(
+        "label,angle [deg],vy [m/s],mu,e,e_sigma,duration [ms],duration_sigma [ms]\n"
+        "r1,20,-1.41,0.2,0.42,0.02,0.95,0.1\n"
+    )
+    x = explain(path)
+    v = x.verdict("r1")
+    assert v.ranked_over == ("e",) and v.chi2 == pytest.approx(0.01514, rel=1e-3)
+    assert v.predicted_over == ("e", "duration")
+    assert v.consistency_chi2 == pytest.approx(68.49, rel=1e-3)
+    assert v.p_value == pytest.approx(
+        chi2_distribution.sf(v.consistency_chi2, len(v.predicted_over)), rel=1e-9
+    )
+    assert f"chi2 {v.consistency_chi2:.4g} over 2 values it predicts" in v.reason
+    best = x.to_dict()["best"][0]
+    assert best["chi2"] == {"value": pytest.approx(v.chi2), "unit": "1"}
+    assert best["predicted_over"] == ["e", "duration"]
+    assert best["consistency_chi2"] == {"value": pytest.approx(v.consistency_chi2), "unit": "1"}
+    p = chi2_distribution.sf(best["consistency_chi2"]["value"], len(best["predicted_over"]))
+    assert best["p_value"] == {"value": pytest.approx(p, rel=1e-9), "unit": "1"}
+
+
+def test_a_verdict_that_ranks_nothing_has_no_consistency_chi2() -> None:
+    """None ok: nothing ranked, so no chi2, nothing predicted over, no p-value."""
+    x = _explained(DROP, {"e": 0.51, "delta_p": 56e-6}, {"e": 0.62, "delta_p": 60e-6})
+    x.summary["ok"] = False
+    v = x.verdict("d")
+    assert v.configuration is None and v.predicted_over == () and v.consistent is None
+    assert math.isnan(v.consistency_chi2) and math.isnan(v.p_value)
+    best = x.to_dict()["best"][0]
+    assert best["predicted_over"] == [] and best["consistency_chi2"]["value"] is None

@@ -68,6 +68,8 @@ def test_a_quantity_only_the_rigid_rod_predicts_does_not_make_it_best(
                      "agrees": True, "agreements": 2, "least_disagreeing": None,
                      "undecided": [], "ranked_over": ["e", "delta_p"], "left_out": ["duration"],
                      "within_2_sigma": 2, "chi2": {"value": v.chi2, "unit": "1"},
+                     "predicted_over": ["e", "delta_p"],
+                     "consistency_chi2": {"value": v.chi2, "unit": "1"},
                      "p_value": {"value": v.p_value, "unit": "1"}, "provisional": False,
                      "caveat": None, "reason": v.reason}]  # fmt: skip
     assert "(2 of 2 within 2 sigma, chi2 0.06259)" in v.reason

@@ -5,11 +5,13 @@ what no case could use is refused when the study is built, naming the input and 
 from __future__ import annotations
 
 import math
+import warnings
 
 import numpy as np
 import pytest
 
 import impactlab.sweep.engine as engine_module
+from impactlab import ImplausibleInputWarning
 from impactlab.sweep import Study, open_sweep, run_sweep
 from impactlab.sweep.engine import ENGINE, Statics
 from impactlab.sweep.inputs import INPUTS
@@ -119,3 +121,49 @@ def test_a_custom_flat_beside_a_library_one_is_refused_when_read(tmp_path) -> No
     )
     with pytest.raises(ValueError, match="flat_material = 'custom'"):
         Study.from_toml(f)
+
+
+_PAPER_MASS = r"keeps the paper's rod's mass \(0\.4607 kg\)"
+
+
+def _rod_study(fixed: dict, grid: dict | None = None, sample: dict | None = None) -> Study:
+    spec = {"study": {"name": "x"}, "fixed": {"angle": "20 deg", "vy": "-1.41 m/s", **fixed},
+            "grid": {"mu": [0.1, 0.2], **(grid or {})}}  # fmt: skip
+    return Study.from_dict(spec if sample is None else {**spec, "sample": sample})
+
+
+@pytest.mark.parametrize(
+    ("fixed", "grid"),
+    [
+        ({"length": "0.3048 m"}, {}),
+        ({"tip_radius": "8.8 mm"}, {}),
+        ({"length": "304.8 mm", "tip_radius": "0.0088 m"}, {}),
+        ({}, {"tip_radius": ["8.8 mm"], "length": ["0.3048 m"]}),
+        ({"tip_radius": "5 mm", "mass": "0.4 kg"}, {}),
+    ],
+    ids=["paper length", "paper tip_radius", "both in other units", "on the grid", "with mass"],
+)
+def test_the_papers_own_rod_keeps_its_mass_without_a_warning(fixed, grid) -> None:
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", ImplausibleInputWarning)
+        _rod_study(fixed, grid)
+
+
+def test_another_tip_radius_without_mass_warns_it_keeps_the_papers_mass() -> None:
+    words = (r"^mass: the study's rod takes another tip radius than the paper's \(tip_radius = "
+             r"0\.005 m, the paper's 0\.0088 m\) but " + _PAPER_MASS)  # fmt: skip
+    with pytest.warns(ImplausibleInputWarning, match=words):
+        _rod_study({"tip_radius": "5 mm"})
+    with pytest.warns(ImplausibleInputWarning, match=words):
+        _rod_study({}, {"tip_radius": ["8.8 mm", "5 mm"]})
+    sample = {"size": 4, "seed": 1,
+              "tip_radius": {"dist": "uniform", "low": "8 mm", "high": "9 mm"}}  # fmt: skip
+    with pytest.warns(ImplausibleInputWarning, match=r"\(a sampled tip_radius, the paper's"):
+        _rod_study({}, sample=sample)
+
+
+def test_another_length_without_mass_is_refused_without_the_warning() -> None:
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", ImplausibleInputWarning)
+        with pytest.raises(ValueError, match=r"^mass: give it for a rod other than the paper's"):
+            _rod_study({"length": "0.5 m"})

@@ -195,9 +195,10 @@ class Explanation:
             for r in self.summary.itertuples(index=False)
         ]  # fmt: skip
         best = [
-            v.to_dict() | {"chi2": quantity(v.chi2, "1"), "p_value": quantity(v.p_value, "1")}
+            v.to_dict() | {name: quantity(getattr(v, name), "1")
+                           for name in ("chi2", "consistency_chi2", "p_value")}
             for v in (self.verdict(d) for d in dict.fromkeys(self.summary["drop"]))
-        ]
+        ]  # fmt: skip
         return jsonable({
             "source": self.source, "law": self.law, "friction": self.friction,
             "nothing_tuned": NOTHING_TUNED, "z": Z_DEFINITION,

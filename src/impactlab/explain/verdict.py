@@ -12,10 +12,10 @@ one configuration predicts never turns the verdict to it. None is named when the
 configurations share no measured quantity.
 
 Named is not consistent: the first of the ranking can still be rejected by the measurements.
-Its chi2 over the n measured values it predicts (those ranked over and those left out of the
-ranking because another row does not predict them; z^T R^-1 z for correlated values) is set
-against the
-chi-square distribution with n degrees of freedom, nothing being fitted (Pearson's
+Its chi2 over the n measured values it predicts (``Verdict.consistency_chi2`` over
+``Verdict.predicted_over``: those ranked over and those left out of the ranking because another
+row does not predict them; z^T R^-1 z for correlated values) is set against the chi-square
+distribution with n degrees of freedom, nothing being fitted (Pearson's
 goodness-of-fit test: K. Pearson, Phil. Mag. 50, 157-175 (1900),
 doi:10.1080/14786440009463897; Particle Data Group, "Statistics",
 Prog. Theor. Exp. Phys. 2022, 083C01, doi:10.1093/ptep/ptac097): where its p-value, the
@@ -77,18 +77,24 @@ def _p_text(p: float) -> str:
 
 @dataclass(frozen=True)
 class Verdict:
-    """Which configuration explains ``drop`` best: its name (``configuration``; None: none is
-    named, ``reason`` says why), the measured quantities it was ranked over (``ranked_over``),
-    those ``left_out`` (not predicted by every ok configuration), the ``reason`` in words,
-    whether it is ``provisional`` (a ranked flexible row not converged in modes that more modes
-    could move level with the first, or a named row with a caveat), the
-    ``least_disagreeing`` configuration where none agrees with a value ranked over within 2
-    sigma, the configurations it is ``undecided`` between (near the 2-sigma line), and of the
-    row the reason names (the first of the ranking) its count ``within_2_sigma`` and ``chi2``
-    over ``ranked_over``, the ``p_value`` of its chi2 over every measured value it predicts and
-    whether it is ``consistent`` with them (p >= :data:`LEVEL`; None: nothing was ranked), its
-    ``caveat`` and its
-    ``agreements`` within 2 sigma over all the drop's measured quantities."""
+    """Which configuration explains ``drop`` best (module docstring).
+
+    ``configuration``: its name (None: none is named, ``reason`` says why); ``ranked_over``:
+    the measured quantities the ranking is over; ``left_out``: those not predicted by every ok
+    configuration; ``reason``: the verdict in words; ``provisional``: a ranked flexible row not
+    converged in modes could move level with the first, or the named row has a caveat;
+    ``least_disagreeing``: the first of the ranking where none agrees with a value ranked over
+    within 2 sigma; ``undecided``: the configurations it is undecided between (near the 2-sigma
+    line).
+
+    Of the first of the ranking (the row the reason names): ``within_2_sigma`` and ``chi2``,
+    its count within 2 sigma and its chi2 over ``ranked_over`` (what it was ranked by);
+    ``predicted_over``, every measured quantity it predicts (``ranked_over`` and those of
+    ``left_out`` it predicts); ``consistency_chi2``, its chi2 over ``predicted_over``;
+    ``p_value``, the p-value of ``consistency_chi2`` with ``len(predicted_over)`` degrees of
+    freedom; ``consistent``, whether ``p_value`` >= :data:`LEVEL` (None: nothing was ranked);
+    its ``caveat``; ``agreements``, its values within 2 sigma among all the drop's measured
+    quantities."""
 
     drop: str
     configuration: str | None
@@ -104,6 +110,8 @@ class Verdict:
     agreements: int | None = None
     p_value: float = math.nan
     consistent: bool | None = None
+    consistency_chi2: float = math.nan
+    predicted_over: tuple[str, ...] = ()
 
     @property
     def quantities(self) -> tuple[str, ...]:
@@ -134,15 +142,17 @@ class Verdict:
         return f"best: {self.reason}"
 
     def to_dict(self) -> dict[str, object]:
-        """JSON ``best``'s entry (numbers plain; ``Explanation.to_dict`` gives chi2 and p_value
-        their unit)."""
+        """JSON ``best``'s entry (numbers plain; ``Explanation.to_dict`` gives chi2,
+        consistency_chi2 and p_value their unit)."""
         return {
             "drop": self.drop, "configuration": self.configuration,
             "consistent": self.consistent, "agrees": self.agrees,
             "agreements": self.agreements, "least_disagreeing": self.least_disagreeing,
             "undecided": list(self.undecided), "ranked_over": list(self.ranked_over),
             "left_out": list(self.left_out), "within_2_sigma": self.within_2_sigma,
-            "chi2": self.chi2, "p_value": self.p_value, "provisional": self.provisional,
+            "chi2": self.chi2, "predicted_over": list(self.predicted_over),
+            "consistency_chi2": self.consistency_chi2, "p_value": self.p_value,
+            "provisional": self.provisional,
             "caveat": self.caveat or None, "reason": self.reason,
         }  # fmt: skip
 
@@ -239,6 +249,7 @@ def verdict(
     chi2_own = correlated_chi2(z_own, correlation or {})
     chi2_own = float((own["z"] ** 2).sum()) if chi2_own is None else chi2_own
     p = p_value(chi2_own, len(z_own))
+    predicted = tuple(q for q in measured if q in z_own)
     scored = _score(k, len(common), chi2)
     left = tuple(q for q in measured if q not in common)
     lacking = [f"{q} (not predicted by {_names([n for n in names if q not in predicts[n]])})"
@@ -254,7 +265,7 @@ def verdict(
         return Verdict(
             drop, named, common, left, why, bool(tail), least, undecided, within_2_sigma=k,
             chi2=chi2, caveat=str(row["caveat"]), agreements=agrees[first], p_value=p,
-            consistent=p >= LEVEL,
+            consistent=p >= LEVEL, consistency_chi2=chi2_own, predicted_over=predicted,
         )  # fmt: skip
 
     def extra(deciding: list[str], named: list[str]) -> str:

@@ -7,8 +7,9 @@ of a study need, and the values a sampled distribution can draw.
   no rod's, and a flexible rod's inertia follows its beam; the engine adapter leaves them unset
   for the bodies that do not take them (:func:`unset_ignored`), as a sphere ignores the angle.
   An input that no body of the study takes is refused, and so is a body that lacks what it
-  needs (a sphere without ``radius``): every case of it would fail. A rod of another length or
-  tip radius without ``mass`` keeps the paper's rod's mass, with a warning.
+  needs (a sphere without ``radius``): every case of it would fail. A rod of another tip radius
+  than the paper's without ``mass`` keeps the paper's rod's mass, with a warning (one of
+  another length is refused: ``study_bodies``).
 - A distribution is checked by the values its draws can take: its quantiles at the smallest
   and the largest uniform the draws use short of 1 (2^-54 and 1 - 2^-53: a normal reaches
   about 8.3 standard deviations), against the input's allowed values as a grid's values are
@@ -17,6 +18,7 @@ of a study need, and the values a sampled distribution can draw.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping, Sequence
 from typing import Any
 
@@ -90,7 +92,7 @@ def check_study_rules(
             "radius: body 'sphere' needs it (every case of the sphere would fail); set radius "
             "in [fixed], [grid] or [sample]"
         )
-    _warn_paper_mass(given, bodies)
+    _warn_paper_mass(fixed, grid, sampled, bodies)
     spin_zero = "spin" not in grid and "spin" not in sampled and not fixed.get("spin", 0.0)
     for name, dist in sampled.items():
         rules = [ALLOWED.get(name)]
@@ -103,16 +105,31 @@ def check_study_rules(
                 _check_draws(name, dist, rule)
 
 
-def _warn_paper_mass(given: set[str], bodies: Sequence[str]) -> None:
-    """ImplausibleInputWarning for a rod of another length or tip radius without ``mass``: it
-    keeps the paper's rod's mass (``impactlab simulate`` asks for the mass instead)."""
-    other = [n for n in ("length", "tip_radius") if n in given]
-    if other and "mass" not in given and {"rod", FLEXIBLE_BODY} & set(bodies):
-        warn_implausible(
-            f"mass: the study's rod takes another {' and '.join(other)} but keeps the paper's "
-            f"rod's mass ({PAPER_ROD.mass:.4g} kg); give mass in [fixed], [grid] or [sample] "
-            "for a rod other than the paper's"
-        )
+def _warn_paper_mass(
+    fixed: Mapping[str, Value],
+    grid: Mapping[str, Sequence[Value]],
+    sampled: Mapping[str, Distribution],
+    bodies: Sequence[str],
+) -> None:
+    """ImplausibleInputWarning for a rod whose tip radius (fixed, on the grid or sampled) is
+    not the paper's rod's, without ``mass``: it keeps the paper's rod's mass (``impactlab
+    simulate`` asks for the mass instead). The paper's own tip radius does not warn; another
+    length without ``mass`` is refused (``study_bodies``)."""
+    given = (fixed, grid, sampled)
+    if any("mass" in s for s in given) or not {"rod", FLEXIBLE_BODY} & set(bodies):
+        return
+    values = grid.get("tip_radius", (fixed.get("tip_radius", PAPER_ROD.tip_radius),))
+    other = [float(v) for v in values
+             if not math.isclose(float(v), PAPER_ROD.tip_radius, rel_tol=1e-9)]  # fmt: skip
+    if not other and "tip_radius" not in sampled:
+        return
+    which = f"tip_radius = {other[0]:.10g} m" if other else "a sampled tip_radius"
+    warn_implausible(
+        f"mass: the study's rod takes another tip radius than the paper's ({which}, the "
+        f"paper's {PAPER_ROD.tip_radius:g} m) but keeps the paper's rod's mass "
+        f"({PAPER_ROD.mass:.4g} kg); give mass in [fixed], [grid] or [sample] for a rod other "
+        "than the paper's"
+    )
 
 
 def _check_draws(name: str, dist: Distribution, rule: Interval) -> None:
