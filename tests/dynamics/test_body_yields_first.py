@@ -145,3 +145,24 @@ def test_the_drop_command_says_it(capsys: pytest.CaptureFixture[str]) -> None:
     assert code == 0, err
     assert json.loads(out)["body_yields_first"] is True
     assert "warning: body yields first: " in err and "dent_depth" in err
+
+
+def test_an_impact_without_a_dent_saves_no_dent_figure(tmp_path: Path, capsys) -> None:
+    """An elastic law's impact wrote a uniform 'dent' map whose colour bar ran over
+    rounding noise (+-1e-14 um)."""
+    from impactlab.dynamics import plotting
+
+    r = il.simulate(il.Rod.paper(), law="hertz", angle=math.radians(20), velocity=(0.0, -1.41))
+    assert r.delta_p == 0.0
+    fig = plotting.plot_dent(r)
+    assert "none" in fig.axes[0].get_title() and len(fig.axes) == 1  # no colour bar
+    names = [p.name for p in plotting.save_figures(r, tmp_path / "api", formats=("png",))]
+    assert "impact_dent.png" not in names and "impact_contact_path.png" in names
+    figs = tmp_path / "figs"
+    code, _, err = _main(["simulate", "rod", "--angle", "20 deg", "--vy", "-1.41", "--plot",
+                          "--out", str(figs)], capsys)  # fmt: skip
+    assert code == 0 and (figs / "impact_dent.png").is_file(), err
+    code, _, err = _main(["simulate", "rod", "--law", "hertz", "--angle", "20 deg", "--vy",
+                          "-1.41", "--plot", "--out", str(figs)], capsys)  # fmt: skip
+    assert code == 0, err
+    assert not list(figs.glob("impact_dent.*"))

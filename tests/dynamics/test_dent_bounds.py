@@ -20,7 +20,12 @@ from impactlab.contact.kernel_arrays import loading_contact_radius_array
 from impactlab.contact.kernels import P_R
 from impactlab.dynamics import plotting
 from impactlab.dynamics.core.batch import residual_caps
-from impactlab.dynamics.dent import AT_CONTACT_RADIUS, BY_RELATION, residual_cap_geometry
+from impactlab.dynamics.dent import (
+    AT_CONTACT_RADIUS,
+    AT_TIP_RADIUS,
+    BY_RELATION,
+    residual_cap_geometry,
+)
 
 JG_COPPER = {"law": "jackson-green", "angle": 0.6, "velocity": (0.0, -5.0)}
 SPHERE_PMMA = {"law": "ghaednia", "velocity": (0.0, -1.0)}
@@ -185,7 +190,7 @@ def test_max_depth_is_delta_p_for_every_law() -> None:
         assert d.width >= 2 * math.sqrt(2 * R * d.max_depth) * (1 - 1e-9)
         # no cap narrower than the tip: R_d >= R, at the contact radius too (a_c^2 >= 2 R delta)
         caps = residual_cap_geometry(r._law_id, r._law_params, r.history.penetration)
-        assert np.all(caps.R_d[caps.delta_r > 0] >= R), where
+        assert np.all(caps.R_d[(caps.delta_r > 0) & (caps.bound != AT_TIP_RADIUS)] >= R), where
         assert np.all(d.height <= 0.0) and d.height.min() < 0.0, where
         assert bool(d.note) == bool(d.caps_at_contact_radius), where
     assert {"ghaednia", "jackson-green", "thornton", "brake", "kogut-komvopoulos"} <= plastic
@@ -229,7 +234,9 @@ def test_paper_dent_is_unchanged() -> None:
     caps = residual_cap_geometry(r._law_id, r._law_params, r.history.penetration)
     assert np.all(caps.bound == BY_RELATION)
     assert caps.R_d[np.argmax(caps.delta_r)] == pytest.approx(9.3e-3, abs=0.05e-3)
-    np.testing.assert_allclose(d.height, _hertzian_envelope(r, 121, 61), rtol=0, atol=1e-15)
+    # the cap that pressed each point deepest, not the deepest residual, forms it: the two
+    # differ by nanometres at the track's edges
+    np.testing.assert_allclose(d.height, _hertzian_envelope(r, 121, 61), rtol=0, atol=5e-9)
     assert "caps_at" not in repr(d)
 
 
@@ -237,3 +244,32 @@ def test_plot_dent_names_the_bounded_caps(jg_copper: il.ImpactResult) -> None:
     fig = plotting.plot_dent(jg_copper)
     title = fig.axes[0].get_title()
     assert "dent: depth 559 um" in title and "at the contact radius" in title
+
+
+def test_a_normal_impact_leaves_the_cap_of_its_deepest_instant() -> None:
+    """The imprints of the shallower instants at the same place were drawn as a ring around it
+    (12 % wider at 2 m/s), and the width fell as the speed rose."""
+    sphere = il.Sphere(0.005, material="aisi-52100")
+    widths = []
+    for v in (2.0, 2.29, 2.44, 2.58, 2.73, 3.02):
+        r = il.simulate(sphere, "pmma", law="ghaednia", velocity=(0.0, -v), gravity=False)
+        d = r.dent(nx=401, ny=201)
+        caps = residual_cap_geometry(r._law_id, r._law_params, r.history.penetration)
+        deepest = int(np.argmax(caps.delta_r))
+        assert d.width == pytest.approx(2 * caps.a_d[deepest], rel=1e-12)
+        x, z = d.profile()
+        assert np.all(z[np.abs(x - r.history.contact_x[deepest]) > caps.a_d[deepest]] == 0.0)
+        widths.append(d.width)
+    assert np.all(np.diff(widths) > 0), widths
+
+
+def test_no_sphere_leaves_a_dent_wider_than_itself() -> None:
+    """Past delta = R/2 the crossing of the paraboloid tip, sqrt(2 R delta), passes R: a 1 mm
+    sphere at 200 m/s left a dent 2.76 mm across, with no note."""
+    sphere = il.Sphere(0.001)
+    with pytest.warns(il.ImplausibleInputWarning, match="exceeds 100 m/s"):
+        r = il.simulate(sphere, "al-6061-t6", law="thornton", velocity=(0.0, -200.0))
+    assert r.delta_p > 0.5 * sphere.radius
+    d = r.dent()
+    assert d.width <= 2 * sphere.radius * (1 + 1e-12)
+    assert "at the tip's radius R" in d.note and d.caps_at_contact_radius >= 1

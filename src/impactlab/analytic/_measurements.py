@@ -219,8 +219,9 @@ def check_plausible(meas: Mapping[str, Measured], length: float, tip_radius: flo
     if dp < MIN_DENT_DEPTH:
         raise ValueError(
             f"delta_p = {dp!r} m is below {MIN_DENT_DEPTH * 1e9:g} nm, finer than any "
-            "profilometer resolves: an impact that leaves no measurable dent cannot be "
-            "inverted (Eq. 12 needs the dent); check the value and its unit (SI: m)"
+            "profilometer resolves: invert takes a measured dent (for an elastic impact, "
+            "with no dent, analytic.impact_duration gives T from L_s alone); check the value "
+            "and its unit (SI: m)"
         )
     if dp < PLAUSIBLE_DENT_DEPTH:
         warn_implausible(

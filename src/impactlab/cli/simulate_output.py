@@ -54,9 +54,10 @@ def _save(result: ImpactResult, data: dict[str, object], out: Path) -> list[str]
 
     output_folder(out, "--out")
     plt, files = pyplot(), []
-    flattened = bool(result.delta_p > 0.0 and result.body_yields_first)  # no dent in the flat
+    # no dent in the flat: the body yields first, or the impact leaves none (an elastic law)
+    no_dent = not (result.delta_p > 0.0) or result.body_yields_first
     for name in FIGURES:
-        if flattened and name == "dent":  # an earlier run's (checked replaceable) would mislead
+        if no_dent and name == "dent":  # an earlier run's (checked replaceable) would mislead
             for ext in FORMATS:
                 (out / f"impact_{name}.{ext}").unlink(missing_ok=True)
             continue

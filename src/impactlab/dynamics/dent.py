@@ -19,10 +19,18 @@ keeps its depth delta_r and is drawn with a_d = a_c, R_d = a_c^2 / (2 delta_r)
 (``AT_CONTACT_RADIUS``), continuous in delta across R_r = R; R_d >= R since a_c^2 >= 2 R
 delta > 2 R delta_r (``residual_depth``: delta_r < delta).
 
-Plastic deformation is irreversible and deeper imprints overwrite shallower ones, so the dent
-is the lower envelope h(x, y) = min(0, min_t h_t(x, y)). Elastic interaction between
-neighbouring imprints, pile-up and the groove the moving tip ploughs through its own earlier
-imprint are neglected.
+No cap reaches beyond the tip's radius R either: where a_c passes R (delta > R/2 with the
+crossing of the paraboloid tip) it is held to R (``AT_TIP_RADIUS``; the paraboloid tip is
+beyond its range there, the width is the tip's diameter).
+
+Plastic deformation is irreversible, and the residual surface at a point is that of the
+instant that pressed the tip deepest into it: the point belongs to the cap i whose tip
+penetration delta_i - ((x - x_c,i)^2 + y^2) / (2 R) is largest among the instants whose
+contact circle a_c,i covers it, and its height is min(0, h_i(x, y)). Along a sliding path the
+earlier imprints behind the tip stay; at one place a further loading replaces the imprint of a
+shallower one (a normal impact leaves the cap of its deepest instant, no ring of the shallower
+ones). Elastic interaction between neighbouring imprints, pile-up and the groove the moving tip
+ploughs through its own earlier imprint are neglected.
 """
 
 from __future__ import annotations
@@ -38,8 +46,8 @@ from impactlab.dynamics.core.batch import residual_caps
 from impactlab.materials import Material, body_yields_first, first_yield_factor
 
 #: How a cap's shape was found (``ResidualCaps.bound``): by the Hertzian unloading relation,
-#: or at the widest contact radius (a_d = a_c).
-BY_RELATION, AT_CONTACT_RADIUS = 0, 1
+#: at the widest contact radius (a_d = a_c), or at the tip's radius (a_c held to R).
+BY_RELATION, AT_CONTACT_RADIUS, AT_TIP_RADIUS = 0, 1, 2
 
 #: Relative margin by which the relation's rim must pass a_c to be brought to it (rounding:
 #: Thornton's caps lie on sqrt(2 R delta) itself).
@@ -61,13 +69,15 @@ class DentSurface(NamedTuple):
 
 class ResidualCaps(NamedTuple):
     """The residual caps after loading to each interference: depth ``delta_r`` [m], radius
-    ``R_d`` [m] (inf without a dent), rim radius ``a_d`` [m] (0 without a dent) and ``bound``
-    (``BY_RELATION`` or ``AT_CONTACT_RADIUS``)."""
+    ``R_d`` [m] (inf without a dent), rim radius ``a_d`` [m] (0 without a dent), ``bound``
+    (``BY_RELATION``, ``AT_CONTACT_RADIUS`` or ``AT_TIP_RADIUS``) and the widest contact
+    radius ``a_c`` [m] (0 without contact)."""
 
     delta_r: np.ndarray
     R_d: np.ndarray
     a_d: np.ndarray
     bound: np.ndarray
+    a_c: np.ndarray
 
 
 def residual_cap_geometry(law_id: int, law_params: np.ndarray, delta: np.ndarray) -> ResidualCaps:
@@ -85,15 +95,18 @@ def residual_cap_geometry(law_id: int, law_params: np.ndarray, delta: np.ndarray
     a_unl = np.where(np.isfinite(a_unl), a_unl, 0.0)
     a_load = loading_contact_radius_array(int(law_id), p, d)
     a_c = np.maximum(np.maximum(a_load, a_unl), np.sqrt(2.0 * R * np.maximum(d, 0.0)))
+    past_tip = a_c > R
+    a_c = np.minimum(a_c, R)
     bound = np.full(d.shape, BY_RELATION, dtype=np.int8)
     # R_r <= R (no concave solution) and a rim beyond a_c: the relation's limit R_r -> R+
     bound[dent & ~(concave & (a_rel <= a_c * (1.0 + RIM_RTOL)))] = AT_CONTACT_RADIUS
+    bound[dent & past_tip & (bound == AT_CONTACT_RADIUS)] = AT_TIP_RADIUS
     with np.errstate(divide="ignore", invalid="ignore"):
-        rd = np.where(bound == AT_CONTACT_RADIUS, a_c * a_c / (2.0 * dr), rd_rel)
-        ad = np.where(bound == AT_CONTACT_RADIUS, a_c, a_rel)
+        rd = np.where(bound != BY_RELATION, a_c * a_c / (2.0 * dr), rd_rel)
+        ad = np.where(bound != BY_RELATION, a_c, a_rel)
     rd = np.where(dent, rd, np.inf)
     ad = np.where(dent & np.isfinite(ad), ad, 0.0)
-    return ResidualCaps(dr, rd, ad, bound)
+    return ResidualCaps(dr, rd, ad, bound, np.where(d > 0.0, a_c, 0.0))
 
 
 def body_flattening(body: Material, flat: Material, depth: float, what: str) -> str:
@@ -131,17 +144,23 @@ def flattening_error(clause: str) -> ValueError:
     )
 
 
-def bound_note(contact: int, deepest: int) -> str:
+def bound_note(contact: int, deepest: int, tip: int = 0) -> str:
     """What a ``DentMap``'s ``note`` says of its bounded caps: ``contact`` caps of its surface
-    at the contact radius, the deepest cap's ``bound``."""
+    at the contact radius, ``tip`` of them at the tip's radius, the deepest cap's ``bound``."""
     if not contact:
         return ""
-    deep = ", the deepest among them," if deepest == AT_CONTACT_RADIUS else ""
-    return (
+    deep = ", the deepest among them," if deepest != BY_RELATION else ""
+    note = (
         f"{contact} residual cap(s) of the surface{deep} drawn at the contact radius (R_r <= "
         "R or just above R: the unloading relation gives no concave dent within the contact): "
         "width an upper bound; depths are the law's"
     )
+    if tip:
+        note += (
+            f"; {tip} of them at the tip's radius R (the contact passes it beyond delta = R/2, "
+            "where the paraboloid tip is out of its range): width the tip's diameter"
+        )
+    return note
 
 
 def dent_map(
@@ -163,7 +182,8 @@ def dent_map(
         raise ValueError(f"margin must be finite and >= 0, got {margin!r}")
     delta = np.asarray(penetration)
     xc = np.asarray(contact_x)
-    dr, rd, ad, bound = residual_cap_geometry(law_id, law_params, delta)
+    caps = residual_cap_geometry(law_id, law_params, delta)
+    dr, ad, bound = caps.delta_r, caps.a_d, caps.bound
     keep = (dr > 0.0) & (ad > 0.0)
     if not np.any(keep):
         # no permanent deformation (elastic law): a flat map around the contact path
@@ -173,38 +193,63 @@ def dent_map(
         return DentSurface(
             x=x, y=y, height=np.zeros((ny, nx)), max_depth=0.0, length=0.0, width=0.0
         )
-    dr, rd, ad, xk, bound = dr[keep], rd[keep], ad[keep], xc[keep], bound[keep]
-    x_lo = float(np.min(xk - ad))
-    x_hi = float(np.max(xk + ad))
-    a_max = float(ad.max())
+    x_lo = float(np.min(xc[keep] - ad[keep]))
+    x_hi = float(np.max(xc[keep] + ad[keep]))
+    a_max = float(ad[keep].max())
     pad = margin * max(x_hi - x_lo, 2.0 * a_max)
     x = np.linspace(x_lo - pad, x_hi + pad, nx)
     y = np.linspace(-(a_max + pad), a_max + pad, ny)
-    height = np.zeros((ny, nx))
-    owner = np.full((ny, nx), -1)  # the cap that forms each point of the surface
-    y2 = (y * y)[:, None]
-    for i in range(dr.shape[0]):
-        lo = np.searchsorted(x, xk[i] - ad[i])
-        hi = np.searchsorted(x, xk[i] + ad[i], side="right")
-        if hi <= lo:
-            continue
-        dx = x[lo:hi] - xk[i]
-        cap = -dr[i] + (dx * dx + y2) / (2.0 * rd[i])
-        lower = cap < height[:, lo:hi]
-        height[:, lo:hi][lower] = cap[lower]
-        owner[:, lo:hi][lower] = i
-    deepest = int(np.argmax(dr))
+    height, owner = _owned_surface(x, y, float(law_params[P_R]), delta, xc, caps)
     shown = np.zeros(dr.shape[0], dtype=bool)
-    shown[owner[owner >= 0]] = True
+    shown[owner[height < 0.0]] = True
+    deepest = int(np.argmax(dr))
     shown[deepest] = True
-    contact = int(np.count_nonzero(shown & (bound == AT_CONTACT_RADIUS)))
+    shown &= keep
+    contact = int(np.count_nonzero(shown & (bound != BY_RELATION)))
+    tip = int(np.count_nonzero(shown & (bound == AT_TIP_RADIUS)))
     return DentSurface(
         x=x,
         y=y,
         height=height,
         max_depth=float(dr.max()),
-        length=x_hi - x_lo,
-        width=2.0 * a_max,
+        length=float(np.max(xc[shown] + ad[shown]) - np.min(xc[shown] - ad[shown])),
+        width=2.0 * float(ad[shown].max()),
         caps_at_contact_radius=contact,
-        note=bound_note(contact, int(bound[deepest])),
+        note=bound_note(contact, int(bound[deepest]), tip),
     )
+
+
+def _owned_surface(
+    x: np.ndarray,
+    y: np.ndarray,
+    R: float,
+    delta: np.ndarray,
+    xc: np.ndarray,
+    caps: ResidualCaps,
+) -> tuple[np.ndarray, np.ndarray]:
+    """The height [m] on the grid ``x``, ``y`` and the cap that forms each point (-1: none): the
+    point's cap is the instant that pressed the tip (radius ``R`` [m]) deepest into it among
+    those whose contact circle covers it (module docstring)."""
+    height = np.zeros((y.size, x.size))
+    owner = np.full((y.size, x.size), -1)
+    pressed = np.full((y.size, x.size), -np.inf)  # the deepest tip penetration so far [m]
+    y2 = (y * y)[:, None]
+    for i in np.flatnonzero(caps.a_c > 0.0):
+        lo = np.searchsorted(x, xc[i] - caps.a_c[i])
+        hi = np.searchsorted(x, xc[i] + caps.a_c[i], side="right")
+        if hi <= lo:
+            continue
+        dx = x[lo:hi] - xc[i]
+        r2 = dx * dx + y2
+        press = delta[i] - r2 / (2.0 * R)
+        take = (r2 <= caps.a_c[i] * caps.a_c[i]) & (press > pressed[:, lo:hi])
+        if not take.any():
+            continue
+        if caps.delta_r[i] > 0.0:
+            cap = np.minimum(-caps.delta_r[i] + r2 / (2.0 * caps.R_d[i]), 0.0)
+        else:
+            cap = np.zeros_like(r2)
+        pressed[:, lo:hi][take] = press[take]
+        height[:, lo:hi][take] = cap[take]
+        owner[:, lo:hi][take] = i
+    return height, owner

@@ -160,7 +160,8 @@ def plot_contact_path(result: ImpactResult, ax: Any = None, *, dent: bool = True
 def plot_dent(result: ImpactResult | DropResult, ax: Any = None) -> Any:
     """The predicted dent as a filled contour map [um], of an ImpactResult or a DropResult
     (:class:`NotPlottableError`, a TypeError, for anything else); the title names the caps
-    drawn at the contact radius (``DentMap.caps_at_contact_radius``)."""
+    drawn at the contact radius (``DentMap.caps_at_contact_radius``). An impact that leaves no
+    permanent dent (an elastic law) gets axes that say so, no map."""
     if not isinstance(result, ImpactResult | DropResult):
         raise NotPlottableError(
             f"plot_dent takes an ImpactResult or a DropResult (simulate or simulate_drop, "
@@ -168,6 +169,11 @@ def plot_dent(result: ImpactResult | DropResult, ax: Any = None) -> Any:
         )
     dm = result.dent()
     fig, ax = _axes(ax)
+    if dm.max_depth <= 0.0:
+        ax.text(0.5, 0.5, "no permanent dent", ha="center", va="center", transform=ax.transAxes)
+        ax.set_axis_off()
+        ax.set_title("dent: none (the impact leaves no permanent interference)")
+        return fig
     cs = ax.contourf(dm.x * 1e3, dm.y * 1e3, dm.height * 1e6, levels=20, cmap="viridis")
     fig.colorbar(cs, ax=ax, label="height [um]")
     ax.set_aspect("equal")
@@ -193,7 +199,8 @@ def save_figures(
     """Save the force-time, force-penetration, contact-path and dent figures; returns paths.
     :class:`NotPlottableError` (a TypeError and a ValueError) for a result other than an
     ImpactResult (a drop: ``plot_dent`` draws its dent), before anything is written. No dent
-    figure where the impacting body yields first (``body_yields_first``: no dent in the flat)."""
+    figure where the impacting body yields first (``body_yields_first``: no dent in the flat)
+    or the impact leaves no permanent dent (``delta_p`` = 0: an elastic law)."""
     _impact(result, "save_figures")
     plt = pyplot()
     out = Path(out_dir)
@@ -205,7 +212,7 @@ def save_figures(
         ("contact_path", plot_contact_path),
         ("dent", plot_dent),
     ):
-        if name == "dent" and _flattened(result):
+        if name == "dent" and (_flattened(result) or not result.delta_p > 0.0):
             continue
         fig = fn(result)
         for ext in formats:
