@@ -47,9 +47,9 @@ def test_anything_else_is_refused_naming_the_input(bad) -> None:
 def test_an_unknown_name_lists_the_library() -> None:
     with pytest.raises(
         ValueError,
-        match=r"flat: unknown material 'aisi-1011' \(did you mean 'aisi-1010'\?\); known: aisi-201",
+        match=r"flat: unknown material 'aisi-101' \(did you mean 'aisi-1010'\?\); known: aisi-201",
     ):
-        il.simulate(il.Rod.paper(), "aisi-1011", angle=0.35, velocity=(0.0, -1.41))
+        il.simulate(il.Rod.paper(), "aisi-101", angle=0.35, velocity=(0.0, -1.41))
 
 
 def test_a_property_given_twice_is_refused() -> None:

@@ -65,12 +65,27 @@ def test_short_aliases_of_the_papers_steels() -> None:
         ("201-steel", "aisi-201"),
         ("6061", "al-6061-t6"),  # the entry's name, not the alias '6061-t6'
         ("aisi-101", "aisi-1010"),
-        ("aisi-1011", "aisi-1010"),  # no substring: the nearest spelling
+        ("asi-1010", "aisi-1010"),  # no substring: the nearest spelling
     ],
 )
 def test_an_unknown_name_suggests_a_name_that_holds_it(typed: str, suggested: str) -> None:
     with pytest.raises(
         ValueError, match=rf"unknown material '{typed}' \(did you mean '{suggested}'"
+    ):
+        get_material(typed)
+
+
+@pytest.mark.parametrize(
+    ("typed", "nearest"),
+    [("al-6061-t4", "al-6061-t6"), ("aisi-1011", "aisi-1010"), ("aisi-1018", "aisi-1010")],
+)
+def test_another_grade_or_temper_is_named_as_such(typed: str, nearest: str) -> None:
+    """'did you mean al-6061-t6' for T4 offered another material (its yield strength half) as
+    a spelling of the name."""
+    with pytest.raises(
+        ValueError,
+        match=rf"unknown material '{typed}' \(the library's nearest is '{nearest}' \(.*\), "
+        r"another grade or temper: not the same material, its properties differ\)",
     ):
         get_material(typed)
 

@@ -178,7 +178,11 @@ def nearest(key: str) -> str:
       'alumina-99.5' (alumina 99.5 %)``);
     - else the nearest spelling of a key, an alias, a display name or the first word of one
       (``alumnium``: al-6061-t6, whose display name and aliases say aluminium);
-    - ``""`` for none, and for one character (``a``: nothing is near)."""
+    - ``""`` for none, and for one character (``a``: nothing is near).
+
+    An entry of another grade or temper (``al-6061-t4``: al-6061-t6; ``aisi-1018``: aisi-1010)
+    is named as such, not as a spelling of the name
+    (:func:`_other_grade`)."""
     names = _names(display=False)
     k = _bare(key)
     if len(k) < 2:
@@ -189,7 +193,34 @@ def nearest(key: str) -> str:
         names, words = _names(), _words()  # a first word: a closer spelling (0.75)
         score = {n: _ratio(key, n) for n in names} | {w: _ratio(key, w) - 0.15 for w in words}
         best = max(score, key=lambda n: score[n])
-        return _listed([names.get(best) or words[best]]) if score[best] >= 0.6 else ""
+        if score[best] < 0.6:
+            return ""
+        return _graded(key, best, names.get(best) or words[best])
     ranked = difflib.get_close_matches(key, holding, n=len(holding), cutoff=0.0) or holding
     starting = list(dict.fromkeys(names[n] for n in ranked if _bare(n).startswith(k)))
-    return _listed(starting[:4] if len(starting) > 1 else [names[ranked[0]]])
+    if len(starting) > 1:
+        return _listed(starting[:4])
+    return _graded(key, ranked[0], names[ranked[0]])
+
+
+def _graded(key: str, name: str, entry: str) -> str:
+    """:func:`_listed` for ``entry`` (found by its key or alias ``name``), or, where ``name``
+    is another grade or temper than ``key``, a hint that says so."""
+    if not _other_grade(key, name):
+        return _listed([entry])
+    display = _library()[0][entry].name
+    return (
+        f" (the library's nearest is {entry!r} ({display}), another grade or temper: not "
+        "the same material, its properties differ)"
+    )
+
+
+def _other_grade(key: str, name: str) -> bool:
+    """Whether the library name ``name`` designates another grade or temper than ``key``: their
+    numbers differ where both have one (``6061-t4`` and ``6061-t6``), neither the start of the
+    other; a name that only completes ``key`` (``al6061``: al-6061-t6; ``aisi-20``: aisi-201)
+    is no other grade."""
+    mine, theirs = re.findall(r"\d+", key), re.findall(r"\d+", name)
+    return any(
+        not (a.startswith(b) or b.startswith(a)) for a, b in zip(mine, theirs, strict=False)
+    )
