@@ -87,6 +87,58 @@ def test_a_height_matrix_with_its_coordinates_is_named(tmp_path: Path) -> None:
     assert read_scan(path).z.shape == (20, 30)  # the heights alone: read
 
 
+def _with_axes(path: Path, z: np.ndarray, xs: list[str], ys: list[str], fmt: str) -> Path:
+    """``z`` written as a CSV matrix beside the printed axes ``xs``, ``ys``, an empty corner."""
+    lines = ["# pixel_size: 16 um", "# height_unit: um", "," + ",".join(xs)]
+    lines += [f"{ys[i]}," + ",".join(f"{v:{fmt}}" for v in z[i]) for i in range(len(ys))]
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+@pytest.mark.parametrize(
+    ("xs", "ys", "step"),
+    [
+        ([f"{16 * j}" for j in range(30)], [f"{16 * i}" for i in range(19, -1, -1)], "16"),
+        ([f"{j / 80:.3f}" for j in range(30)], [f"{i / 80:.3f}" for i in range(20)], "0.0125"),
+    ],
+    ids=["y_descending", "mm_to_3_decimals"],
+)
+def test_axes_written_top_down_or_rounded_are_named(
+    tmp_path: Path, xs: list[str], ys: list[str], step: str
+) -> None:
+    """Read as heights (then called 'sign-flipped'): a y axis in image order (304, 288, ..., 0)
+    and 12.5 um pixels in mm to 3 decimals (steps 0.012, 0.013: 8 % apart)."""
+    from impactlab.experiment import read_scan
+    from impactlab.experiment.errors import FileFormatError
+
+    z = np.random.default_rng(0).normal(0.0, 0.1, (20, 30))
+    path = _with_axes(tmp_path / "axes.csv", z, xs, ys, ".4f")
+    with pytest.raises(FileFormatError) as err:
+        read_scan(path)
+    said = str(err.value)
+    first = f"({float(ys[0]):g}, {float(ys[1]):g}, ...)"
+    assert f"first column {first} run evenly from an empty corner: coordinates" in said
+    assert said.endswith(f"give the pixel size (here {step} in the coordinates' unit)")
+
+
+def test_a_height_map_with_an_empty_corner_is_read(tmp_path: Path) -> None:
+    """A map's own first row and column, an empty corner pixel: a noisy dent, and a tilted
+    plane printed to 0.1 um, whose edges rise evenly to that precision but are continued."""
+    from impactlab.experiment import read_scan
+
+    dent = _noisy(_groove(3.2e-3, 22e-6, 1.4e-3))[::4, ::8] * 1e6
+    j, i = np.meshgrid(np.arange(60), np.arange(40))
+    plane = 100.0 + 0.37 * j - 0.23 * i + 0.01 * np.random.default_rng(1).standard_normal(i.shape)
+    for name, z in (("dent", dent), ("plane", plane)):
+        rows = [",".join(f"{v:.1f}" for v in r) for r in z]
+        rows[0] = "nan," + rows[0].split(",", 1)[1]  # the corner pixel: no data
+        path = tmp_path / f"{name}.csv"
+        path.write_text("# pixel_size: 16 um\n# height_unit: um\n" + "\n".join(rows) + "\n")
+        scan = read_scan(path)
+        assert scan.z.shape == z.shape and np.isnan(scan.z[0, 0])
+        assert np.count_nonzero(np.isnan(scan.z)) == 1
+
+
 def test_a_point_lists_xy_unit_is_named(tmp_path: Path) -> None:
     """x, y in mm and z in um: the error blamed a 'pixel size (16 nm)' nobody gave."""
     from impactlab.experiment import check_dent, read_scan

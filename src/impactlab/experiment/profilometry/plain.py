@@ -137,25 +137,62 @@ def _load_text(p: Path) -> tuple[np.ndarray, dict[str, str]]:
 
 
 def _refuse_axes(p: Path, z: np.ndarray) -> None:
-    """FileFormatError for a matrix exported with its coordinates: a first row whose first
-    cell is empty and whose others rise evenly (the x axis), and a first column alike (y), as
-    spreadsheets and some scan software write them; read as heights they make a ridge."""
+    """FileFormatError for a matrix exported with its coordinates, as spreadsheets and some scan
+    software write them: an empty corner cell, then a first row (the x axis) and a first column
+    (y) that each run evenly, up or down, to the precision they were printed at, and are not
+    both continued by the second row and column as a tilted map's edges are; read as heights
+    they make a ridge."""
     if z.shape[0] < 4 or z.shape[1] < 4 or not math.isnan(z[0, 0]):
         return
     x, y = z[0, 1:], z[1:, 0]
+    bx, by = _axis_step(x), _axis_step(y)
+    if bx is None or by is None or (_continued(x, z[1, 1:]) and _continued(y, z[1:, 1])):
+        return
+    raise FileFormatError(
+        p,
+        f"its first row ({x[0]:g}, {x[1]:g}, {x[2]:g}, ...) and first column ({y[0]:g}, "
+        f"{y[1]:g}, ...) run evenly from an empty corner: coordinates, not heights; export "
+        "the heights alone (no axes), or delete that row and column, and give the pixel "
+        f"size (here {abs(bx):g} in the coordinates' unit)",
+    )
 
-    def axis(v: np.ndarray) -> bool:
-        step = np.diff(v)
-        return bool(np.all(np.isfinite(v)) and np.all(step > 0) and np.ptp(step) <= 0.01 * step[0])
 
-    if axis(x) and axis(y):
-        raise FileFormatError(
-            p,
-            f"its first row ({x[0]:g}, {x[1]:g}, {x[2]:g}, ...) and first column ({y[0]:g}, "
-            f"{y[1]:g}, ...) rise evenly from an empty corner: coordinates, not heights; export "
-            "the heights alone (no axes), or delete that row and column, and give the pixel "
-            f"size (here {x[1] - x[0]:g} in the coordinates' unit)",
-        )
+def _axis_step(v: np.ndarray) -> float | None:
+    """The step of ``v`` as a coordinate axis, in the fewest digits that fit: values strictly
+    rising or falling that a line fits to within 1 % of the step or, from 8 values on, one
+    unit of their last printed decimal (0.013, 0.025, 0.038: 0.0125); None where ``v`` is no
+    such axis."""
+    step = np.diff(v)
+    if not np.all(np.isfinite(v)) or not (np.all(step > 0) or np.all(step < 0)):
+        return None
+    i = np.arange(v.size, dtype=np.float64)
+    b = float(np.polyfit(i, v, 1)[0])
+    tol = max(0.01 * abs(b), _last_digit(v) if v.size >= 8 else 0.0)
+    for digits in range(1, 18):  # v - short * i spreads 2 tol at most: a line within tol
+        short = float(f"{b:.{digits}g}")
+        if np.ptp(v - short * i) <= 2.0 * tol:
+            return short
+    return None
+
+
+def _last_digit(v: np.ndarray) -> float:
+    """One unit of the last decimal that the values were printed with (1e-3 for 0.013, 0.025;
+    1 for 16, 32), found from the parsed values; 0 where they carry more than 12 decimals."""
+    for d in range(13):
+        scaled = v * 10.0**d
+        if np.max(np.abs(scaled)) > 1e12:
+            break
+        if np.all(np.abs(scaled - np.rint(scaled)) <= 1e-6):
+            return 10.0**-d
+    return 0.0
+
+
+def _continued(edge: np.ndarray, nxt: np.ndarray) -> bool:
+    """True where ``nxt`` (the second row or column) follows ``edge`` at a near-constant
+    offset, as a map's neighbouring rows do (a tilted plane); coordinates are not continued."""
+    d = edge - nxt
+    d = d[np.isfinite(d)]
+    return bool(d.size >= 2 and np.ptp(d) < 0.5 * np.ptp(edge))
 
 
 def read_plain(p: Path, pixel_size: Any, height_unit: str | None) -> HeightMap:
