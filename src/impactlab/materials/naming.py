@@ -221,6 +221,4 @@ def _other_grade(key: str, name: str) -> bool:
     other; a name that only completes ``key`` (``al6061``: al-6061-t6; ``aisi-20``: aisi-201)
     is no other grade."""
     mine, theirs = re.findall(r"\d+", key), re.findall(r"\d+", name)
-    return any(
-        not (a.startswith(b) or b.startswith(a)) for a, b in zip(mine, theirs, strict=False)
-    )
+    return any(not (a.startswith(b) or b.startswith(a)) for a, b in zip(mine, theirs, strict=False))
