@@ -72,10 +72,11 @@ def test_config_file_and_plots(tmp_path: Path) -> None:
     )
     assert res.exit_code == 0, res.output
     assert "e_energy" in res.output
-    for name in ("force_time", "force_penetration", "contact_path", "dent"):
+    for name in ("force_time", "force_penetration", "contact_path"):
         for ext in ("png", "pdf"):
             f = tmp_path / "figs" / f"impact_{name}.{ext}"
             assert f.is_file() and f.stat().st_size > 1000
+    assert not list((tmp_path / "figs").glob("impact_dent.*"))  # hertz leaves no dent
     assert json.loads((tmp_path / "figs" / "impact_result.json").read_text())["law"] == "hertz"
 
 
