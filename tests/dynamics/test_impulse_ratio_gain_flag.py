@@ -99,3 +99,13 @@ def test_flag_and_reversal_coincide_for_impulse_ratio() -> None:
     assert np.array_equal(gained, reversal)
     out, status = run_arrays(model.law_id, FRICTION_IDS["coulomb"], model.params, params, init, mu)
     assert not np.any(out[status == 0, O["flags"]].astype(np.int64) & FLAG_ENERGY_GAIN)
+
+
+@pytest.mark.parametrize(("vx", "spin"), [(0.3, -60.0), (0.7, -140.0), (1.1, -220.0)])
+def test_a_sphere_arriving_rolling_gets_no_tangential_impulse(vx: float, spin: float) -> None:
+    """vx + spin R is 0 or 1.1e-16 m/s by round-off alone: the second gave the full mu F_n in
+    the round-off's direction (the ball left at +1.30 m/s)."""
+    sphere = il.Sphere(0.005, material=il.AISI_1010)
+    r = il.simulate(sphere, il.AISI_1010, law="hertz", friction="impulse_ratio", mu=0.3,
+                    velocity=(vx, -1.0), spin=spin, gravity=False)  # fmt: skip
+    assert r.tangential_impulse == 0.0 and r.velocity_out[0] == vx and r.spin_out == spin

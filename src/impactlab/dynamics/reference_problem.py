@@ -263,9 +263,10 @@ class ReferenceProblem:
         a0, b0 = self.a0, self.b0
         if self.fric == "impulse_ratio":
             tol = LEVER_ROUNDOFF * (a0 * a0 + b0 * b0)  # as the compiled engine
+            rolling = abs(vt0) <= LEVER_ROUNDOFF * (abs(vn0) + abs(w0) * math.hypot(a0, b0))
             self.sir = (
                 -math.copysign(1.0, vt0)
-                if vt0 != 0.0
+                if not rolling
                 else (1.0 if a0 * b0 > tol else (-1.0 if a0 * b0 < -tol else 0.0))
             )
         elif self.fric == "coulomb":

@@ -8,6 +8,8 @@ model of the core lives in this module. Forces in N, velocities in m/s, stiffnes
 
 from __future__ import annotations
 
+import math
+
 from numba import njit
 
 from impactlab.contact.kernels import P_ESTAR
@@ -38,6 +40,15 @@ from impactlab.dynamics.kernels.normal import dforce_ddelta, dradius_ddelta, rad
 #: is 6e-17, not 0, so a vertical rod's a is about 1e-17 m; impulse_ratio then applies no
 #: tangential force, as for a sphere, instead of one of arbitrary sign.
 LEVER_ROUNDOFF = 1e-12
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def slip_roundoff(vt0, vn0, spin, a0, b0):
+    """Whether the slip velocity ``vt0`` [m/s] at first touch is round-off of its terms: a body
+    that arrives rolling (vx = -spin R) has ``vt0`` of order 1e-16 m/s, not 0, whose sign is
+    arbitrary; below ``LEVER_ROUNDOFF`` of |vn0| + |spin| (a0^2 + b0^2)^(1/2) it counts as 0."""
+    scale = abs(vn0) + abs(spin) * math.sqrt(a0 * a0 + b0 * b0)
+    return abs(vt0) <= LEVER_ROUNDOFF * scale
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -181,7 +192,7 @@ def initial_friction_mode(fric, p, c, spin, vn0, vt0):
     sir = 0.0
     mu = c[C_MU]
     if fric == FR_IMPULSE:
-        if vt0 != 0.0:
+        if not slip_roundoff(vt0, vn0, spin, c[C_A0], c[C_B0]):
             sir = -1.0 if vt0 > 0.0 else 1.0
         else:  # the sign of a b; zero within round-off (a vertical rod: a = (L/2) cos(pi/2))
             ab = c[C_A0] * c[C_B0]
