@@ -6,9 +6,11 @@ friction force, below 1e-9 of the normal force, moves no output beyond the toler
 from __future__ import annotations
 
 import math
+import warnings
 
 import pytest
 
+import impactlab as il
 from impactlab.bodies import PAPER_ROD
 from impactlab.dynamics import simulate
 from impactlab.dynamics.kernels.layout import MU_NEGLIGIBLE
@@ -54,3 +56,17 @@ def test_drop_with_negligible_friction_runs_frictionless(friction: str) -> None:
     ref = simulate_drop(PAPER_ROD, friction=friction, mu=0.0, **kw)
     for k in ("e", "delta_max", "dent_depth", "sequence_duration", "max_force"):
         assert getattr(r, k) == getattr(ref, k), k
+
+
+@pytest.mark.parametrize("friction", ["mindlin", "partial_slip", "impulse_ratio"])
+def test_a_friction_model_without_mu_warns_that_it_is_unused(friction: str) -> None:
+    """mu's default is 0: `--friction mindlin` without `--mu` ran frictionless without a word."""
+    with pytest.warns(il.ImplausibleInputWarning, match=f"friction = '{friction}' with mu = 0"):
+        r = il.simulate(il.Rod.paper(), friction=friction, angle=0.8, velocity=(0.0, -1.41))
+    assert r.regime == "frictionless"
+
+
+def test_coulomb_without_mu_stays_silent() -> None:
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        il.simulate(il.Rod.paper(), angle=0.8, velocity=(0.0, -1.41))

@@ -97,7 +97,8 @@ MEASURABLE: dict[str, Measurable] = {
         Measurable(
             "sliding_distance",
             "m",
-            "|sliding_length|: the length of the slip (the slip speed's integral), a magnitude",
+            "|sliding_length|: the length of the slip (the slip speed's integral), a magnitude; "
+            "with mindlin and partial_slip the contact's elastic deflection included",
             ("sliding_length",),
             0.0,
         ),

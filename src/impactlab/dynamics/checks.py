@@ -9,7 +9,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from impactlab._validation import check_finite, check_flag
+from impactlab._validation import check_finite, check_flag, warn_implausible
 from impactlab.bodies import Rod, Sphere, lever_arms
 from impactlab.contact import ContactModel
 from impactlab.contact.names import Law
@@ -164,6 +164,17 @@ def impact_rtol(friction: Any) -> float:
     return PARTIAL_SLIP_RTOL if partial else DEFAULT_RTOL
 
 
+def _warn_unused_friction(friction: Any, mu: float) -> None:
+    """ImplausibleInputWarning for a friction model chosen (not Coulomb, the default) with
+    mu = 0 (the default): the impact is frictionless and the model has no effect."""
+    name = _friction_name(friction)
+    if mu == 0.0 and name and name != FrictionKind.COULOMB.value:
+        warn_implausible(
+            f"friction = {name!r} with mu = 0 is frictionless: the model has no effect (give "
+            "mu, e.g. mu=0.3, or --mu 0.3)"
+        )
+
+
 def check_impact(
     body: Any,
     flat: Any,
@@ -180,7 +191,8 @@ def check_impact(
     rtol: Any,
 ) -> ImpactInputs:
     """All the inputs of one impact (``simulate``'s arguments) checked and in SI. The default
-    tolerance is ``DEFAULT_RTOL``, ``PARTIAL_SLIP_RTOL`` for the partial-slip engine."""
+    tolerance is ``DEFAULT_RTOL``, ``PARTIAL_SLIP_RTOL`` for the partial-slip engine. A friction
+    model other than Coulomb with mu = 0 warns: the impact is frictionless, the model unused."""
     if rtol is None and _friction_name(friction) == FrictionKind.PARTIAL_SLIP.value:
         rtol = PARTIAL_SLIP_RTOL
     fast = _plain_inputs(body, flat, angle, velocity, spin, mu, gravity, rtol, constant_angle)
@@ -188,6 +200,7 @@ def check_impact(
         check_friction_rtol(check_rtol(rtol), _friction_name(friction))
     if fast is not None:
         th, vx, vy, w, m, g, r = fast
+        _warn_unused_friction(friction, m)
         return ImpactInputs(
             body=body,
             flat=flat,
@@ -207,12 +220,14 @@ def check_impact(
     vx, vy = check_velocity(velocity)
     w = check_spin(check_finite("spin", spin, "rad/s"), contact_reach(body))
     flat = check_flat(flat)
+    m = check_mu(mu)
+    _warn_unused_friction(friction, m)
     return ImpactInputs(
         body=body,
         flat=flat,
         model=checked_model(body, flat, law, law_params),
         friction=get_friction(friction),
-        mu=check_mu(mu),
+        mu=m,
         angle=th,
         velocity=(vx, vy),
         spin=w,

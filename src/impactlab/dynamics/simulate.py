@@ -267,6 +267,8 @@ def _fast(
         return None
     if m is None or not (abs(vx) <= PLAUSIBLE_SPEED and abs(vy) <= PLAUSIBLE_SPEED):
         return None
+    if m == 0.0 and friction != "coulomb":  # the full path warns: the model has no effect
+        return None
     if input_problem(kind is Rod, th, vx, vy, w, contact_reach(body), m, g, tol) != IN_OK:
         return None  # the full path words the error
     th_out = th if kind is Rod else math.nan
