@@ -1,4 +1,4 @@
-"""Predicted permanent dent: the envelope of residual caps along the contact path.
+"""Predicted permanent dent: the envelope of the residual caps along the contact path.
 
 Model (derivation in docs/engine/index.md, "Dent model"). At every recorded instant t of the
 contact the tip (radius R) is pressed to the interference delta(t) at the contact point
@@ -23,14 +23,15 @@ No cap reaches beyond the tip's radius R either: where a_c passes R (delta > R/2
 crossing of the paraboloid tip) it is held to R (``AT_TIP_RADIUS``; the paraboloid tip is
 beyond its range there, the width is the tip's diameter).
 
-Plastic deformation is irreversible, and the residual surface at a point is that of the
-instant that pressed the tip deepest into it: the point belongs to the cap i whose tip
-penetration delta_i - ((x - x_c,i)^2 + y^2) / (2 R) is largest among the instants whose
-contact circle a_c,i covers it, and its height is min(0, h_i(x, y)). Along a sliding path the
-earlier imprints behind the tip stay; at one place a further loading replaces the imprint of a
-shallower one (a normal impact leaves the cap of its deepest instant, no ring of the shallower
-ones). Elastic interaction between neighbouring imprints, pile-up and the groove the moving tip
-ploughs through its own earlier imprint are neglected.
+Plastic deformation is irreversible and deeper imprints overwrite shallower ones, so the dent
+is the lower envelope h(x, y) = min(0, min_t h_t(x, y)) of the caps that no deeper loading
+superseded: the cap of an instant i is left out where a plastic instant j (delta_r,j > 0)
+pressed the tip deeper than i everywhere within i's contact circle, and j's circle contains
+i's (``superseded``): that material was loaded further and unloaded from j, so j's cap stands
+for it. A normal impact thus leaves the cap of its deepest instant (no ring of the shallower
+ones); along a sliding path the imprints behind the tip stay. Elastic interaction between
+neighbouring imprints, pile-up and the groove the moving tip ploughs through its own earlier
+imprint are neglected.
 """
 
 from __future__ import annotations
@@ -199,12 +200,24 @@ def dent_map(
     pad = margin * max(x_hi - x_lo, 2.0 * a_max)
     x = np.linspace(x_lo - pad, x_hi + pad, nx)
     y = np.linspace(-(a_max + pad), a_max + pad, ny)
-    height, owner = _owned_surface(x, y, float(law_params[P_R]), delta, xc, caps)
-    shown = np.zeros(dr.shape[0], dtype=bool)
-    shown[owner[height < 0.0]] = True
+    kept = keep & ~superseded(delta, xc, caps, float(law_params[P_R]))
+    height = np.zeros((ny, nx))
+    owner = np.full((ny, nx), -1)  # the cap that forms each point of the surface
+    y2 = (y * y)[:, None]
+    for i in np.flatnonzero(kept):
+        lo = np.searchsorted(x, xc[i] - ad[i])
+        hi = np.searchsorted(x, xc[i] + ad[i], side="right")
+        if hi <= lo:
+            continue
+        dx = x[lo:hi] - xc[i]
+        cap = -dr[i] + (dx * dx + y2) / (2.0 * caps.R_d[i])
+        lower = cap < height[:, lo:hi]
+        height[:, lo:hi][lower] = cap[lower]
+        owner[:, lo:hi][lower] = i
     deepest = int(np.argmax(dr))
+    shown = np.zeros(dr.shape[0], dtype=bool)
+    shown[owner[owner >= 0]] = True
     shown[deepest] = True
-    shown &= keep
     contact = int(np.count_nonzero(shown & (bound != BY_RELATION)))
     tip = int(np.count_nonzero(shown & (bound == AT_TIP_RADIUS)))
     return DentSurface(
@@ -212,44 +225,29 @@ def dent_map(
         y=y,
         height=height,
         max_depth=float(dr.max()),
-        length=float(np.max(xc[shown] + ad[shown]) - np.min(xc[shown] - ad[shown])),
-        width=2.0 * float(ad[shown].max()),
+        length=float(np.max(xc[kept] + ad[kept]) - np.min(xc[kept] - ad[kept])),
+        width=2.0 * float(ad[kept].max()),
         caps_at_contact_radius=contact,
         note=bound_note(contact, int(bound[deepest]), tip),
     )
 
 
-def _owned_surface(
-    x: np.ndarray,
-    y: np.ndarray,
-    R: float,
-    delta: np.ndarray,
-    xc: np.ndarray,
-    caps: ResidualCaps,
-) -> tuple[np.ndarray, np.ndarray]:
-    """The height [m] on the grid ``x``, ``y`` and the cap that forms each point (-1: none): the
-    point's cap is the instant that pressed the tip (radius ``R`` [m]) deepest into it among
-    those whose contact circle covers it (module docstring)."""
-    height = np.zeros((y.size, x.size))
-    owner = np.full((y.size, x.size), -1)
-    pressed = np.full((y.size, x.size), -np.inf)  # the deepest tip penetration so far [m]
-    y2 = (y * y)[:, None]
-    for i in np.flatnonzero(caps.a_c > 0.0):
-        lo = np.searchsorted(x, xc[i] - caps.a_c[i])
-        hi = np.searchsorted(x, xc[i] + caps.a_c[i], side="right")
-        if hi <= lo:
-            continue
-        dx = x[lo:hi] - xc[i]
-        r2 = dx * dx + y2
-        press = delta[i] - r2 / (2.0 * R)
-        take = (r2 <= caps.a_c[i] * caps.a_c[i]) & (press > pressed[:, lo:hi])
-        if not take.any():
-            continue
-        if caps.delta_r[i] > 0.0:
-            cap = np.minimum(-caps.delta_r[i] + r2 / (2.0 * caps.R_d[i]), 0.0)
-        else:
-            cap = np.zeros_like(r2)
-        pressed[:, lo:hi][take] = press[take]
-        height[:, lo:hi][take] = cap[take]
-        owner[:, lo:hi][take] = i
-    return height, owner
+def superseded(delta: np.ndarray, xc: np.ndarray, caps: ResidualCaps, R: float) -> np.ndarray:
+    """Which caps a deeper plastic loading supersedes (module docstring): cap i where some j
+    with delta_r,j > 0 has a_c,j >= |x_j - x_i| + a_c,i and pressed deeper over i's circle,
+    delta_j - delta_i >= (d^2 + 2 |d| a_c,i) / (2 R), d = x_j - x_i (the tip's penetration
+    delta - r^2 / 2R, compared at the point of i's circle where j's lead is least). Inputs SI."""
+    n = delta.shape[0]
+    out = np.zeros(n, dtype=bool)
+    plastic = np.flatnonzero(caps.delta_r > 0.0)
+    if plastic.size == 0:
+        return out
+    dj, xj, aj = delta[plastic][None, :], xc[plastic][None, :], caps.a_c[plastic][None, :]
+    for lo in range(0, n, 256):  # blocks of i: the pairs fit in memory for long histories
+        i = slice(lo, min(lo + 256, n))
+        d = np.abs(xj - xc[i][:, None])
+        ai = caps.a_c[i][:, None]
+        lead = dj - delta[i][:, None] - (d * d + 2.0 * d * ai) / (2.0 * R)
+        covers = (aj >= d + ai) & (lead > 0.0)
+        out[i] = covers.any(axis=1)
+    return out
