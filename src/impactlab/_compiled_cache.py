@@ -28,6 +28,7 @@ numba's unpickling (``repair_damaged_entries``).
 
 from __future__ import annotations
 
+import atexit
 import contextlib
 import getpass
 import hashlib
@@ -148,13 +149,18 @@ def fallback_cache_dir() -> Path:
     (``impactlab-<uid>``, mode 0700), for a cache folder that cannot be written. numba's cache
     files are unpickled, so a root that another user owns or may write (a planted folder in the
     shared temporary folder) is never used: a private folder of this process's own replaces it."""
-    uid = os.getuid() if hasattr(os, "getuid") else getpass.getuser()
-    root = Path(tempfile.gettempdir()) / f"impactlab-{uid}"
+    root = _user_root()
     with contextlib.suppress(OSError):
         root.mkdir(mode=0o700)
     if not _private(root):
         root = _process_root()
     return root / "numba" / f"{ENGINE_PREFIX}{engine_source_hash()}"
+
+
+def _user_root() -> Path:
+    """``impactlab-<uid>`` in the system's temporary folder."""
+    uid = os.getuid() if hasattr(os, "getuid") else getpass.getuser()
+    return Path(tempfile.gettempdir()) / f"impactlab-{uid}"
 
 
 def _private(root: Path) -> bool:
@@ -171,8 +177,11 @@ def _private(root: Path) -> bool:
 
 @cache
 def _process_root() -> Path:
-    """A private temporary folder of this process (``mkdtemp``: mode 0700, unguessable)."""
-    return Path(tempfile.mkdtemp(prefix="impactlab-"))
+    """A private temporary folder of this process (``mkdtemp``: mode 0700, unguessable),
+    removed when the process exits (no later process could use it)."""
+    root = Path(tempfile.mkdtemp(prefix="impactlab-"))
+    atexit.register(shutil.rmtree, root, True)
+    return root
 
 
 def use_cache_dir() -> Path:
@@ -194,9 +203,15 @@ def use_cache_dir() -> Path:
         if _writable(folder):
             folder = wanted  # nothing writable: numba says so where it compiles
         else:
+            private = (
+                ""
+                if folder.is_relative_to(_user_root())
+                else (f", for this process only ({_user_root()} is not the user's own folder)")
+            )
             print(
                 f"impactlab: the compile cache folder {wanted} cannot be written ({why}); "
-                f"caching in {folder} instead (set IMPACTLAB_CACHE_DIR to a writable folder)",
+                f"caching in {folder} instead{private} (set IMPACTLAB_CACHE_DIR to a writable "
+                "folder)",
                 file=sys.stderr,
             )
     os.environ["NUMBA_CACHE_DIR"] = str(folder)

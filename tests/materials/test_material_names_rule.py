@@ -100,3 +100,14 @@ def test_the_materials_command_takes_the_short_aliases(cli_main) -> None:
         code, out, err = cli_main("materials", name)
         assert code == 0, err
         assert ("AISI 1010" if name == "1010" else "AISI 201") in out
+
+
+@pytest.mark.parametrize(
+    ("typed", "suggested"),
+    [("al-661-t6", "al-6061-t6"), ("aisi-512100", "aisi-52100"), ("alumina-9.95", "alumina-99.5")],
+)
+def test_a_typo_of_a_number_keeps_its_did_you_mean(typed: str, suggested: str) -> None:
+    with pytest.raises(
+        ValueError, match=rf"unknown material '{typed}' \(did you mean '{suggested}'"
+    ):
+        get_material(typed)

@@ -216,9 +216,17 @@ def _graded(key: str, name: str, entry: str) -> str:
 
 
 def _other_grade(key: str, name: str) -> bool:
-    """Whether the library name ``name`` designates another grade or temper than ``key``: their
-    numbers differ where both have one (``6061-t4`` and ``6061-t6``), neither the start of the
-    other; a name that only completes ``key`` (``al6061``: al-6061-t6; ``aisi-20``: aisi-201)
-    is no other grade."""
-    mine, theirs = re.findall(r"\d+", key), re.findall(r"\d+", name)
-    return any(not (a.startswith(b) or b.startswith(a)) for a, b in zip(mine, theirs, strict=False))
+    """Whether the library name ``name`` designates another grade or temper than ``key``: the
+    same family and form (words split at ``-``, the first equal, as many words), one word
+    different, both holding digits, of one length, and not the same characters reordered
+    (``al-6061-t4``: al-6061-t6; ``aisi-1018``: aisi-1010); a typo (``al-661-t6``,
+    ``alumina-9.95``) or a name that completes ``key`` (``al6061``) is no other grade."""
+    mine, theirs = key.lower().split("-"), name.lower().split("-")
+    if len(mine) != len(theirs) or len(mine) < 2 or mine[0] != theirs[0]:
+        return False
+    differ = [(a, b) for a, b in zip(mine, theirs, strict=True) if a != b]
+    if len(differ) != 1:
+        return False
+    a, b = differ[0]
+    digits = any(c.isdigit() for c in a) and any(c.isdigit() for c in b)
+    return digits and len(a) == len(b) and sorted(a) != sorted(b)

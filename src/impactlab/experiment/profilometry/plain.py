@@ -189,10 +189,11 @@ def _last_digit(v: np.ndarray) -> float:
 
 def _continued(edge: np.ndarray, nxt: np.ndarray) -> bool:
     """True where ``nxt`` (the second row or column) follows ``edge`` at a near-constant
-    offset, as a map's neighbouring rows do (a tilted plane); coordinates are not continued."""
+    offset (within 5 % of the edge's range), as a map's neighbouring rows do (a tilted plane);
+    coordinates are not continued, unless the heights rise at nearly their rate."""
     d = edge - nxt
     d = d[np.isfinite(d)]
-    return bool(d.size >= 2 and np.ptp(d) < 0.5 * np.ptp(edge))
+    return bool(d.size >= 2 and np.ptp(d) < 0.05 * np.ptp(edge))
 
 
 def read_plain(p: Path, pixel_size: Any, height_unit: str | None) -> HeightMap:
