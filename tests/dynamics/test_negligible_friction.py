@@ -70,3 +70,9 @@ def test_coulomb_without_mu_stays_silent() -> None:
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         il.simulate(il.Rod.paper(), angle=0.8, velocity=(0.0, -1.41))
+
+
+def test_a_drop_with_a_friction_model_without_mu_warns_too() -> None:
+    with pytest.warns(il.ImplausibleInputWarning, match="friction = 'mindlin' with mu = 0"):
+        il.simulate_drop(il.FlexibleRod.paper(), friction="mindlin", angle=0.8,
+                         velocity=(0.0, -1.41), history=False)  # fmt: skip

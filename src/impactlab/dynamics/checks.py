@@ -164,7 +164,7 @@ def impact_rtol(friction: Any) -> float:
     return PARTIAL_SLIP_RTOL if partial else DEFAULT_RTOL
 
 
-def _warn_unused_friction(friction: Any, mu: float) -> None:
+def warn_unused_friction(friction: Any, mu: float) -> None:
     """ImplausibleInputWarning for a friction model chosen (not Coulomb, the default) with
     mu = 0 (the default): the impact is frictionless and the model has no effect."""
     name = _friction_name(friction)
@@ -200,7 +200,7 @@ def check_impact(
         check_friction_rtol(check_rtol(rtol), _friction_name(friction))
     if fast is not None:
         th, vx, vy, w, m, g, r = fast
-        _warn_unused_friction(friction, m)
+        warn_unused_friction(friction, m)
         return ImpactInputs(
             body=body,
             flat=flat,
@@ -221,7 +221,7 @@ def check_impact(
     w = check_spin(check_finite("spin", spin, "rad/s"), contact_reach(body))
     flat = check_flat(flat)
     m = check_mu(mu)
-    _warn_unused_friction(friction, m)
+    warn_unused_friction(friction, m)
     return ImpactInputs(
         body=body,
         flat=flat,
@@ -238,4 +238,10 @@ def check_impact(
     )
 
 
-__all__ = ["ImpactInputs", "check_brake_meyer", "check_impact", "checked_model"]
+__all__ = [
+    "ImpactInputs",
+    "check_brake_meyer",
+    "check_impact",
+    "checked_model",
+    "warn_unused_friction",
+]

@@ -33,7 +33,7 @@ from impactlab.contact.rate import (
 )
 from impactlab.contact.rate_factor import warn_no_dent
 from impactlab.contact.registry import get_law
-from impactlab.dynamics.checks import check_brake_meyer
+from impactlab.dynamics.checks import check_brake_meyer, warn_unused_friction
 from impactlab.dynamics.drop_body import body_model
 from impactlab.dynamics.drop_checks import (
     DROP_FRICTION,
@@ -208,6 +208,7 @@ def simulate_drop(
     bm = body_model(body)
     flat = check_flat(flat)
     fric, mu_v = check_friction(friction, mu)
+    warn_unused_friction(fric.name, mu_v)
     if angle is None:
         raise ValueError(
             f"angle is required for the drop of a {type(body).__name__}: the rod axis to the "
