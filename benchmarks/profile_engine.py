@@ -1,6 +1,6 @@
 """Where the compiled engine spends its time on the benchmark case (docs/engine/benchmarks.md).
 
-    .venv/bin/python benchmarks/profile_engine.py [--counts-only]
+    .venv/bin/python benchmarks/profile_engine.py [--n N] [--out OUT]
 
 Two measurements, combined:
 
@@ -60,7 +60,6 @@ def _counts() -> dict[str, int]:
         wrap(mod, "loading_force", "law_evaluations")
     wrap(normal, "table_force", "law_evaluations")  # the tabulated curve, read inline in the stages
     wrap(rhs, "evaluate", "rhs_evaluations")
-    wrap(driver, "evaluate", "rhs_evaluations")
     wrap(integrator, "event_value", "event_function_evaluations")
     wrap(driver, "integrate_to", "events_recomputed")
     wrap(driver, "handle_event", "events")
