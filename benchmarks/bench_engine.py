@@ -194,7 +194,20 @@ def markdown(result: dict, printed: str) -> str:
             "no recompilation",
         ),
     ]
+    met = result.get("targets_met", {})
+    status = {0: "impacts_per_s_per_core", 3: "speedup", 4: "simulate_us"}  # row -> target
+    for i, key in status.items():
+        if key in met:
+            a, b, c = rows[i]
+            rows[i] = (a, b, f"{c} ({'met' if met[key] else 'missed'})")
     table = "\n".join(f"| {a} | {b} | {c} |" for a, b, c in rows)
+    missed = [rows[i][0] for i, key in status.items() if key in met and not met[key]]
+    missed_text = (
+        f"**On this run a target was missed** ({'; '.join(missed)}; `targets_met` in the "
+        "file; earlier runs: [Targets](#targets) and the performance history).\n\n"
+        if missed
+        else ""
+    )
     return f"""# Engine benchmarks
 
 Measured by `benchmarks/bench_engine.py` in one run (results also in
@@ -202,8 +215,8 @@ Measured by `benchmarks/bench_engine.py` in one run (results also in
 (Python {m["python"]}, numba {m["numba"]}, numpy {m["numpy"]}). The machine is shared with
 other jobs: expect +-20 % between runs.
 
-Case: the paper's rod (Table 1, I_C = m L^2/12), 20 deg, vy = -1.41 m/s, mu = 0.2, Ghaednia
-law, Coulomb friction, gravity on, default tolerance rtol = {result["case"]["rtol"]:g}
+{missed_text}Case: the paper's rod (Table 1, I_C = m L^2/12), 20 deg, vy = -1.41 m/s, mu = 0.2,
+Ghaednia law, Coulomb friction, gravity on, default tolerance rtol = {result["case"]["rtol"]:g}
 ({one["steps"]:.0f} integration steps). Baseline: `impactlab.dynamics.reference` (scipy
 `solve_ivp`, RK45 = the same Dormand-Prince pair, the same rtol and atol vector, terminal events
 for every switch).
@@ -212,9 +225,10 @@ for every switch).
 |---|---|---|
 {table}
 
-A cold compilation (empty numba cache) takes about a minute; a new process only loads the cached
-machine code (the first call above): `cache=True` keeps it across processes. The engine's cache
-is flushed automatically when a contact-law or engine source changes.
+A cold compilation (empty numba cache) compiles the engine once ([First run](first-run.md) has
+the measured times); a new process only loads the cached machine code (the first call above):
+`cache=True` keeps it across processes. The engine's cache is flushed automatically when a
+contact-law or engine source changes.
 
 Accuracy on the same case (max relative difference of e, e*, delta_max, delta_p, T, F_max, P_n):
 engine vs solve_ivp at the same rtol {acc["engine_vs_solve_ivp_same_rtol"]:.1e}; engine vs

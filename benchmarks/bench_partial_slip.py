@@ -10,7 +10,8 @@ tolerance. Each model runs the fastest way it can: ``simulate_batch`` (one compi
 the cases, each case ``TILE`` times so that the call's fixed cost is spread); partial slip also
 one ``simulate`` per case without history (its only way before it ran in the batch engine).
 CPU seconds of this process (``time.process_time``) with numba limited to one thread, so the
-figures are per core and robust against other load; the best of ``--repeats`` rounds. The
+figures are per core and robust against other load; the best of ``--repeats`` rounds, the
+models' rounds alternated (a change of the load falls on both sides of the ratio). The
 figure of merit is the ratio partial slip / mindlin of the time per impact.
 
 Writes benchmarks/results/partial_slip.json and prints a summary.
@@ -74,14 +75,17 @@ def groups() -> list[tuple[str, object, str, dict[str, np.ndarray]]]:
     return out
 
 
-def best_cpu(f: Callable[[], object], repeats: int) -> float:
-    """The smallest CPU time [s] of ``repeats`` calls of ``f`` (after one warm-up call)."""
-    f()
-    best = math.inf
-    for _ in range(repeats):
-        t = time.process_time()
+def best_cpu(fs: list[Callable[[], object]], repeats: int) -> list[float]:
+    """The smallest CPU time [s] of ``repeats`` calls of each of ``fs`` (after one warm-up call
+    each), their rounds alternated so that a change of the machine's load falls on all alike."""
+    for f in fs:
         f()
-        best = min(best, time.process_time() - t)
+    best = [math.inf] * len(fs)
+    for _ in range(repeats):
+        for k, f in enumerate(fs):
+            t = time.process_time()
+            f()
+            best[k] = min(best[k], time.process_time() - t)
     return best
 
 
@@ -134,14 +138,15 @@ def measure(repeats: int) -> dict[str, object]:
         n = len(kin["vx"])
         n_total += n
         row: dict[str, object] = {"group": label, "cases": n}
-        t_m = best_cpu(batch_call(body, law, kin, "mindlin"), repeats) / (n * TILE)
-        t_s = best_cpu(per_case_call(body, law, kin), repeats) / n
+        calls = [batch_call(body, law, kin, "mindlin"), per_case_call(body, law, kin)]
+        calls.append(batch_call(body, law, kin, "partial_slip"))
         try:
-            b = batch_call(body, law, kin, "partial_slip")
-            t_b: float | None = best_cpu(b, repeats) / (n * TILE)
+            times = best_cpu(calls, repeats)
         except ValueError:  # the batch engine refuses partial slip
-            t_b = None
+            times = [*best_cpu(calls[:2], repeats), math.nan]
             batch_ok = False
+        t_m, t_s = times[0] / (n * TILE), times[1] / n
+        t_b: float | None = times[2] / (n * TILE) if math.isfinite(times[2]) else None
         row["mindlin_batch_us"] = t_m * 1e6
         row["partial_slip_simulate_us"] = t_s * 1e6
         row["ratio_simulate"] = t_s / t_m

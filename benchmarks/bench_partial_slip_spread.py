@@ -84,13 +84,14 @@ def cost(repeats: int) -> dict[str, object]:
         for law in LAWS:
             for mu in MUS:
                 row: dict[str, object] = {"body": body, "law": law, "mu": mu}
-                for model in MODELS:
+                calls = [
+                    lambda b=body, la=law, u=mu, m=model: batch(b, la, u, m, None, TILE)
+                    for model in MODELS
+                ]
+                times = best_cpu(calls, repeats)  # the models' rounds alternated
+                for model, t in zip(MODELS, times, strict=True):
                     r = batch(body, law, mu, model, None, TILE)
                     n = len(r.status) // TILE  # type: ignore[attr-defined]
-                    t = best_cpu(
-                        lambda b=body, la=law, u=mu, m=model: batch(b, la, u, m, None, TILE),
-                        repeats,
-                    )
                     row[f"{model}_us"] = t / TILE / n * 1e6
                     total[model] += t / TILE
                     steps[model] += float(np.sum(r["n_steps"])) / TILE  # type: ignore[index]
