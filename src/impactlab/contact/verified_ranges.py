@@ -164,6 +164,12 @@ def differing_inputs(law: str, e_star_over_sy: float, params: Any) -> tuple[str,
     return None
 
 
+def _matches(a: Any, b: Any) -> Any:
+    """``np.isclose(a, b, rtol=_MATCH_RTOL, atol=0)`` for finite ``b``, without its cost (a
+    batch's flags ask it for every call): |a - b| <= _MATCH_RTOL |b|, False for NaN."""
+    return np.abs(np.subtract(a, b)) <= _MATCH_RTOL * np.abs(b)
+
+
 def verified_upper(law: str, e_star_over_sy: Any, params: Any = None) -> Any:
     """The verified upper end delta / delta_c of ``law`` for pairs of ratio ``e_star_over_sy``
     (float or array): a shipped case's own value at its E*/S_y, the smaller of the two
@@ -179,9 +185,9 @@ def verified_upper(law: str, e_star_over_sy: Any, params: Any = None) -> Any:
         p = np.asarray(params, dtype=np.float64)
         slots = BEYOND_FE[str(law)]
         for c in cases:
-            same = np.isclose(x, c.e_star_over_sy, rtol=_MATCH_RTOL, atol=0.0)
+            same = _matches(x, c.e_star_over_sy)
             for name, value in c.inputs:
-                same &= np.isclose(p[..., slots[name]], value, rtol=_MATCH_RTOL, atol=0.0)
+                same &= _matches(p[..., slots[name]], value)
             out = np.where(same, c.upper, out)
     elif cases:
         xs = np.array([c.e_star_over_sy for c in cases])
@@ -192,7 +198,7 @@ def verified_upper(law: str, e_star_over_sy: Any, params: Any = None) -> Any:
         right = np.clip(np.searchsorted(xs, xi, side="left"), 0, xs.size - 1)
         left = np.clip(right - 1, 0, xs.size - 1)
         bound = np.minimum(us[left], us[right])
-        at_right = np.isclose(xi, xs[right], rtol=_MATCH_RTOL, atol=0.0)
-        at_left = np.isclose(xi, xs[left], rtol=_MATCH_RTOL, atol=0.0)
+        at_right = _matches(xi, xs[right])
+        at_left = _matches(xi, xs[left])
         out[inside] = np.where(at_right, us[right], np.where(at_left, us[left], bound))
     return float(out) if out.ndim == 0 else out
