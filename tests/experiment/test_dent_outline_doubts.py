@@ -129,7 +129,9 @@ def test_a_height_map_with_an_empty_corner_is_read(tmp_path: Path) -> None:
     dent = _noisy(_groove(3.2e-3, 22e-6, 1.4e-3))[::4, ::8] * 1e6
     j, i = np.meshgrid(np.arange(60), np.arange(40))
     plane = 100.0 + 0.37 * j - 0.23 * i + 0.01 * np.random.default_rng(1).standard_normal(i.shape)
-    for name, z in (("dent", dent), ("plane", plane)):
+    spiked = plane.copy()
+    spiked[1, 30] += 3.0  # a profilometer spike in the second row: no trend of the row
+    for name, z in (("dent", dent), ("plane", plane), ("spiked", spiked)):
         rows = [",".join(f"{v:.1f}" for v in r) for r in z]
         rows[0] = "nan," + rows[0].split(",", 1)[1]  # the corner pixel: no data
         path = tmp_path / f"{name}.csv"

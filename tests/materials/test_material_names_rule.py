@@ -77,7 +77,13 @@ def test_an_unknown_name_suggests_a_name_that_holds_it(typed: str, suggested: st
 
 @pytest.mark.parametrize(
     ("typed", "nearest"),
-    [("al-6061-t4", "al-6061-t6"), ("aisi-1011", "aisi-1010"), ("aisi-1018", "aisi-1010")],
+    [
+        ("al-6061-t4", "al-6061-t6"),
+        ("aisi-1011", "aisi-1010"),
+        ("aisi-1018", "aisi-1010"),
+        ("al-2024-t3", "al-6061-t6"),
+        ("al-6061-o", "al-6061-t6"),
+    ],
 )
 def test_another_grade_or_temper_is_named_as_such(typed: str, nearest: str) -> None:
     """'did you mean al-6061-t6' for T4 offered another material (its yield strength half) as

@@ -26,12 +26,12 @@ beyond its range there, the width is the tip's diameter).
 Plastic deformation is irreversible and deeper imprints overwrite shallower ones, so the dent
 is the lower envelope h(x, y) = min(0, min_t h_t(x, y)) of the caps that no deeper loading
 superseded: the cap of an instant i is left out where a plastic instant j (delta_r,j > 0)
-pressed the tip deeper than i everywhere within i's contact circle, and j's circle contains
-i's (``superseded``): that material was loaded further and unloaded from j, so j's cap stands
-for it. A normal impact thus leaves the cap of its deepest instant (no ring of the shallower
-ones); along a sliding path the imprints behind the tip stay. Elastic interaction between
-neighbouring imprints, pile-up and the groove the moving tip ploughs through its own earlier
-imprint are neglected.
+pressed the tip deeper than i everywhere within i's contact circle (strictly), and j's circle
+contains i's (``superseded``): that material was loaded further and unloaded from j, so j's
+cap stands for it. A normal impact thus leaves the cap of its deepest instant (no ring of the
+shallower ones); along a sliding path the imprints behind the tip stay. Elastic interaction
+between neighbouring imprints, pile-up and the groove the moving tip ploughs through its own
+earlier imprint are neglected.
 """
 
 from __future__ import annotations
@@ -235,19 +235,25 @@ def dent_map(
 def superseded(delta: np.ndarray, xc: np.ndarray, caps: ResidualCaps, R: float) -> np.ndarray:
     """Which caps a deeper plastic loading supersedes (module docstring): cap i where some j
     with delta_r,j > 0 has a_c,j >= |x_j - x_i| + a_c,i and pressed deeper over i's circle,
-    delta_j - delta_i >= (d^2 + 2 |d| a_c,i) / (2 R), d = x_j - x_i (the tip's penetration
-    delta - r^2 / 2R, compared at the point of i's circle where j's lead is least). Inputs SI."""
-    n = delta.shape[0]
-    out = np.zeros(n, dtype=bool)
-    plastic = np.flatnonzero(caps.delta_r > 0.0)
-    if plastic.size == 0:
-        return out
-    dj, xj, aj = delta[plastic][None, :], xc[plastic][None, :], caps.a_c[plastic][None, :]
-    for lo in range(0, n, 256):  # blocks of i: the pairs fit in memory for long histories
-        i = slice(lo, min(lo + 256, n))
-        d = np.abs(xj - xc[i][:, None])
-        ai = caps.a_c[i][:, None]
-        lead = dj - delta[i][:, None] - (d * d + 2.0 * d * ai) / (2.0 * R)
-        covers = (aj >= d + ai) & (lead > 0.0)
-        out[i] = covers.any(axis=1)
+    delta_j - delta_i > (d^2 + 2 |d| a_c,i) / (2 R), d = x_j - x_i (the tip's penetration
+    delta - r^2 / 2R, compared at the point of i's circle where j's lead is least). Inputs SI.
+
+    Only plastic caps are tested, deepest first, each against the caps found standing so far:
+    the rule is transitive (a cap that supersedes j supersedes what j supersedes), and a
+    superseding j is deeper than i, so the standing caps are all that need asking, a few per
+    place of the path instead of every pair of a long drop's history."""
+    out = np.zeros(delta.shape[0], dtype=bool)
+    plastic = np.flatnonzero((caps.delta_r > 0.0) & (caps.a_c > 0.0))
+    order = plastic[np.argsort(-delta[plastic], kind="stable")]
+    sx, sd, sa = (np.empty(order.size) for _ in range(3))
+    m = 0
+    for i in order:
+        if m:
+            d = np.abs(sx[:m] - xc[i])
+            lead = sd[:m] - delta[i] - (d * d + 2.0 * d * caps.a_c[i]) / (2.0 * R)
+            if np.any((sa[:m] >= d + caps.a_c[i]) & (lead > 0.0)):
+                out[i] = True
+                continue
+        sx[m], sd[m], sa[m] = xc[i], delta[i], caps.a_c[i]
+        m += 1
     return out

@@ -217,16 +217,19 @@ def _graded(key: str, name: str, entry: str) -> str:
 
 def _other_grade(key: str, name: str) -> bool:
     """Whether the library name ``name`` designates another grade or temper than ``key``: the
-    same family and form (words split at ``-``, the first equal, as many words), one word
-    different, both holding digits, of one length, and not the same characters reordered
-    (``al-6061-t4``: al-6061-t6; ``aisi-1018``: aisi-1010); a typo (``al-661-t6``,
-    ``alumina-9.95``) or a name that completes ``key`` (``al6061``) is no other grade."""
-    mine, theirs = key.lower().split("-"), name.lower().split("-")
-    if len(mine) != len(theirs) or len(mine) < 2 or mine[0] != theirs[0]:
+    same family (the first word, split at ``-``) and a designation that is no typo of the
+    entry's (``al-6061-t4``, ``al-2024-t3``, ``al-6061-o``: al-6061-t6; ``aisi-1045``); a typo
+    is a designation that completes the other (``aisi-20``: aisi-201), the same characters
+    reordered (``alumina-9.95``), or one character more or less (``al-661-t6``,
+    ``aisi-512100``)."""
+    mine, theirs = key.lower().split("-", 1), name.lower().split("-", 1)
+    if len(mine) < 2 or len(theirs) < 2 or mine[0] != theirs[0] or mine[1] == theirs[1]:
         return False
-    differ = [(a, b) for a, b in zip(mine, theirs, strict=True) if a != b]
-    if len(differ) != 1:
+    a, b = mine[1], theirs[1]
+    if a.startswith(b) or b.startswith(a) or sorted(a) == sorted(b):
         return False
-    a, b = differ[0]
-    digits = any(c.isdigit() for c in a) and any(c.isdigit() for c in b)
-    return digits and len(a) == len(b) and sorted(a) != sorted(b)
+    short, long_ = sorted((a, b), key=len)
+    one_more = len(long_) == len(short) + 1 and any(
+        long_[:k] + long_[k + 1 :] == short for k in range(len(long_))
+    )
+    return not one_more

@@ -189,11 +189,15 @@ def _last_digit(v: np.ndarray) -> float:
 
 def _continued(edge: np.ndarray, nxt: np.ndarray) -> bool:
     """True where ``nxt`` (the second row or column) follows ``edge`` at a near-constant
-    offset (within 5 % of the edge's range), as a map's neighbouring rows do (a tilted plane);
-    coordinates are not continued, unless the heights rise at nearly their rate."""
+    offset (its 10-90 % spread within 5 % of the edge's range), as a map's neighbouring rows
+    do (a tilted plane); coordinates are not continued, unless the heights rise at nearly
+    their rate."""
     d = edge - nxt
     d = d[np.isfinite(d)]
-    return bool(d.size >= 2 and np.ptp(d) < 0.05 * np.ptp(edge))
+    if d.size < 2:
+        return False
+    lo, hi = np.percentile(d, [10.0, 90.0])  # a spike or two in a row is no trend
+    return bool(hi - lo < 0.05 * np.ptp(edge))
 
 
 def read_plain(p: Path, pixel_size: Any, height_unit: str | None) -> HeightMap:
