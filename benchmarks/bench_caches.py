@@ -21,9 +21,12 @@ from pathlib import Path
 import numpy as np
 
 import impactlab as il
+from impactlab import units as U
 from impactlab.contact import get_law
+from impactlab.contact import range_note as RN
 from impactlab.contact.tabulate import with_table
 from impactlab.dynamics import batch as B
+from impactlab.dynamics import export as E
 from impactlab.dynamics import models as M
 from impactlab.dynamics import outcome as O
 from impactlab.flags import ResultFlag
@@ -79,6 +82,15 @@ def measure() -> dict[str, dict[str, float]]:
     def table() -> None:
         B.shared_table(model.law_id, p)
 
+    def text() -> None:
+        U.magnitude("angle", "40 deg", "rad")
+
+    def described() -> None:
+        E.batch_setup(ROD, FLAT, friction="coulomb", gravity=True, rtol=None, constant_angle=False)
+
+    def note() -> None:
+        RN.range_note(model.law_id, p)
+
     pair = ContactPair(ROD.material, FLAT)
     caches = {  # name: (served call, with, without)
         "models._build": (
@@ -120,6 +132,21 @@ def measure() -> dict[str, dict[str, float]]:
             "simulate_fast",
             best_us(lambda: ResultFlag(0), 20000),
             best_us(lambda: ResultFlag(0), 20000),
+        ),
+        "units._TEXT_VALUES": (
+            "simulate_full",
+            best_us(text, 3000),
+            best_us(_cleared(U._TEXT_VALUES, text), 200),
+        ),
+        "export._DESCRIBED": (
+            "simulate_batch_16",
+            best_us(described, 3000),
+            best_us(_cleared(E._DESCRIBED, described), 200),
+        ),
+        "range_note._NOTES": (
+            "simulate_batch_16",
+            best_us(note, 3000),
+            best_us(_cleared(RN._NOTES, note), 200),
         ),
         "batch._TABLES": (
             "simulate_batch_16",

@@ -169,24 +169,43 @@ def magnitude(name: str, value: Any, unit: str) -> Any:
     ``magnitude("mass", 0.46, "kg") == 0.46``.
     """
     if isinstance(value, str):
-        q = _parse(name, value, unit)
-        _check_finite(name, q, value)
-        if q.unitless and plain(unit):  # a pure number asked for: "0.4"
-            return float(q.magnitude)
-        if q.unitless:
-            bare = bare_number(value) is not None
-            shown = "deg" if unit == "rad" else unit  # an angle is written in degrees
-            example = f"{bare_text(value).strip()} {shown}" if bare else f"1.0 {shown}"
-            what = "has no unit" if bare else f"is a pure number ({q:~})"
-            raise ValueError(
-                f"{name}: the string {value!r} {what}; pass a number in {unit} or a string "
-                f"with units, e.g. '{example}'"
-            )
-        return float(_convert(name, q, unit, value).magnitude)
+        hit = _TEXT_VALUES.get((value, unit))
+        if hit is not None:
+            return hit
+        x = _text_magnitude(name, value, unit)
+        if len(_TEXT_VALUES) >= _TEXT_KEPT:
+            _TEXT_VALUES.clear()
+        _TEXT_VALUES[(value, unit)] = x
+        return x
     if is_quantity(value):
         m = _convert(name, _foreign(name, value), unit, value).magnitude
         return float(m) if np.ndim(m) == 0 else np.asarray(m, dtype=np.float64)
     return value
+
+
+#: (text, unit) -> the magnitude that :func:`magnitude` read from it: pint's parse costs
+#: about 0.1 ms, most of a ``simulate`` call given an angle as text. Only texts that passed
+#: are kept (a refusal names its parameter, and is raised anew).
+_TEXT_VALUES: dict[tuple[str, str], float] = {}
+_TEXT_KEPT = 512
+
+
+def _text_magnitude(name: str, value: str, unit: str) -> float:
+    """:func:`magnitude` of the text ``value``, parsed."""
+    q = _parse(name, value, unit)
+    _check_finite(name, q, value)
+    if q.unitless and plain(unit):  # a pure number asked for: "0.4"
+        return float(q.magnitude)
+    if q.unitless:
+        bare = bare_number(value) is not None
+        shown = "deg" if unit == "rad" else unit  # an angle is written in degrees
+        example = f"{bare_text(value).strip()} {shown}" if bare else f"1.0 {shown}"
+        what = "has no unit" if bare else f"is a pure number ({q:~})"
+        raise ValueError(
+            f"{name}: the string {value!r} {what}; pass a number in {unit} or a string "
+            f"with units, e.g. '{example}'"
+        )
+    return float(_convert(name, q, unit, value).magnitude)
 
 
 def to_si(value: Any, unit: str, *, name: str = "value") -> float:

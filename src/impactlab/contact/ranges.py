@@ -273,6 +273,9 @@ def _verified(law_id: int, params: Any) -> tuple[np.ndarray, bool]:
     """(the verified upper end in the law's own ratio delta / delta_ref, NaN where the pair's
     E*/S_y is outside the FE span; whether the law has a verified range at all)."""
     p = np.asarray(params, dtype=np.float64)
+    if p.ndim == 2 and p.shape[0] == 1:  # a batch's one shared vector (with its table)
+        own, has = _verified(law_id, p[0])
+        return own.reshape(1), has
     if p.ndim == 1:
         key = (int(law_id), p[: k.NPARAM].tobytes())
         hit = _ONE_PAIR.get(key)

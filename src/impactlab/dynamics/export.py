@@ -146,15 +146,16 @@ def batch_setup(
 
     from impactlab.dynamics.checks import impact_rtol
     from impactlab.dynamics.input_checks import gravity_value
-    from impactlab.dynamics.provenance import encode, law_params_record
+    from impactlab.dynamics.provenance import law_params_record
 
     if rtol is None:
         rtol = impact_rtol(friction)
+    body_text, body_record = _described(body)
     setup: dict[str, Any] = {
-        "body": str(body),
-        "body_record": json.dumps(encode(body)),
+        "body": body_text,
+        "body_record": body_record,
         "flat": str(flat.name),
-        "flat_record": json.dumps(encode(flat)),
+        "flat_record": _described(flat)[1],
         "gravity": gravity_value(gravity),
         "rtol": float(rtol),
     }
@@ -165,6 +166,28 @@ def batch_setup(
     if law_params:
         setup["law_params"] = json.dumps(law_params_record(law, law_params))
     return setup
+
+
+#: id(a body or a flat) -> (it, its description, its record as JSON text): a batch's setup
+#: describes the same few frozen objects call after call (0.3 ms of a 16-impact batch's 0.7).
+#: Held by identity, not by value: a Material's ``note`` is recorded but not compared.
+_DESCRIBED: dict[int, tuple[Any, str, str]] = {}
+
+
+def _described(obj: Any) -> tuple[str, str]:
+    """(``str(obj)``, ``json.dumps(encode(obj))``) of a frozen body or material, cached."""
+    hit = _DESCRIBED.get(id(obj))
+    if hit is not None and hit[0] is obj:
+        return hit[1], hit[2]
+    import json
+
+    from impactlab.dynamics.provenance import encode
+
+    text, record = str(obj), json.dumps(encode(obj))
+    if len(_DESCRIBED) >= 64:
+        _DESCRIBED.clear()
+    _DESCRIBED[id(obj)] = (obj, text, record)
+    return text, record
 
 
 def batch_columns(batch: Any) -> tuple[str, ...]:

@@ -135,19 +135,25 @@ def _bare(text: str) -> str:
     return re.sub(r"[-._]", "", text)
 
 
-def _names(display: bool = True) -> dict[str, str]:
+#: A stainless steel named by its AISI grade (``ss-316``, ``sst-304``, ``stainless-316l``): the
+#: hint treats it as ``aisi-316``, among the library's stainless steels alone.
+STAINLESS = re.compile(r"(?:sst|ss|stainless)-?(?=\d)")
+
+
+def _names(display: bool = True, among: frozenset[str] | None = None) -> dict[str, str]:
     """The library's names -> their entry's key: keys, aliases and (``display``) the display
-    names (:func:`name_key`)."""
+    names (:func:`name_key`); of the entries ``among`` alone where given."""
     presets, aliases = _library()
     names = {k: k for k in presets} | dict(aliases)
-    return names | ({name_key(m.name): k for k, m in presets.items()} if display else {})
+    names |= {name_key(m.name): k for k, m in presets.items()} if display else {}
+    return {n: k for n, k in names.items() if among is None or k in among}
 
 
-def _words() -> dict[str, str]:
+def _words(among: frozenset[str] | None = None) -> dict[str, str]:
     """The first word of each of the library's names (``aluminium``, ``alumina``, ``soda``) ->
     its entry's key, where that word names one entry alone."""
     owners: dict[str, set[str]] = {}
-    for name, key in _names().items():
+    for name, key in _names(among=among).items():
         word = re.split(r"[-(,%]", name)[0]
         if len(word) >= 3:
             owners.setdefault(word, set()).add(key)
@@ -168,7 +174,7 @@ def _listed(keys: list[str]) -> str:
     return f" (did you mean {text}?)"
 
 
-def nearest(key: str) -> str:
+def nearest(key: str, among: frozenset[str] | None = None) -> str:
     """`` (did you mean 'x'?)`` for the library entry nearest to ``key`` (:func:`name_key`):
 
     - the entry one of whose keys or aliases has ``key`` as its first word (``al``:
@@ -180,34 +186,58 @@ def nearest(key: str) -> str:
       (``alumnium``: al-6061-t6, whose display name and aliases say aluminium);
     - ``""`` for none, and for one character (``a``: nothing is near).
 
-    An entry of another grade or temper (``al-6061-t4``: al-6061-t6; ``aisi-1018``: aisi-1010)
-    is named as such, not as a spelling of the name
-    (:func:`_other_grade`)."""
-    names = _names(display=False)
+    An entry of another grade or temper (``al-6061-t4``: al-6061-t6; ``aisi-1018``: aisi-1010;
+    ``alumina-96``; ``aisi-304l``) is named as such, not as a spelling of the name
+    (:func:`_other_grade`): the entry of its family whose grade number is nearest
+    (``aisi-316``: aisi-304). A stainless steel by its grade (:data:`STAINLESS`: ``ss-316``)
+    is named as ``aisi-316`` is, among the library's stainless steels alone; ``among``: the
+    entries that may be named (None: all)."""
+    if (stainless := STAINLESS.match(key)) is not None:
+        presets = _library()[0]
+        steels = frozenset(k for k, m in presets.items() if "stainless" in m.name.lower())
+        return nearest(f"aisi-{key[stainless.end() :]}", steels) if steels else ""
+    names = _names(display=False, among=among)
     k = _bare(key)
-    if len(k) < 2:
+    if len(k) < 2 or not names:
         return ""
     holding = [n for n in names if k in _bare(n) or (len(_bare(n)) >= 3 and _bare(n) in k)]
     holding = [n for n in holding if n.split("-")[0] == key] or holding
     if not holding:
-        names, words = _names(), _words()  # a first word: a closer spelling (0.75)
+        names, words = _names(among=among), _words(among)  # a first word: a closer spelling
         score = {n: _ratio(key, n) for n in names} | {w: _ratio(key, w) - 0.15 for w in words}
         best = max(score, key=lambda n: score[n])
         if score[best] < 0.6:
             return ""
-        return _graded(key, best, names.get(best) or words[best])
+        return _graded(key, best, names.get(best) or words[best], among)
     ranked = difflib.get_close_matches(key, holding, n=len(holding), cutoff=0.0) or holding
     starting = list(dict.fromkeys(names[n] for n in ranked if _bare(n).startswith(k)))
     if len(starting) > 1:
         return _listed(starting[:4])
-    return _graded(key, ranked[0], names[ranked[0]])
+    return _graded(key, ranked[0], names[ranked[0]], among)
 
 
-def _graded(key: str, name: str, entry: str) -> str:
+def _number(name: str) -> float | None:
+    """The grade number of a library name: the first number after its family (``aisi-304l``:
+    304; ``alumina-99.5``: 99.5); None for none."""
+    found = re.search(r"\d+(?:\.\d+)?", name.partition("-")[2])
+    return float(found.group()) if found else None
+
+
+def _graded(key: str, name: str, entry: str, among: frozenset[str] | None = None) -> str:
     """:func:`_listed` for ``entry`` (found by its key or alias ``name``), or, where ``name``
-    is another grade or temper than ``key``, a hint that says so."""
-    if not _other_grade(key, name):
+    or ``entry`` is another grade or temper than ``key``, a hint that says so, naming the entry
+    of that family (``among`` them where given) whose grade number is nearest ``key``'s."""
+    if not (_other_grade(key, name) or _other_grade(key, entry)):
         return _listed([entry])
+    number, family = _number(key), entry.split("-")[0]
+    if number is not None:
+        grades = [
+            g
+            for g in _library()[0]
+            if g.split("-")[0] == family and (among is None or g in among) and _other_grade(key, g)
+        ]
+        distance = {g: abs(n - number) for g in grades if (n := _number(g)) is not None}
+        entry = min([entry, *distance], key=lambda g: distance.get(g, math.inf))
     display = _library()[0][entry].name
     return (
         f" (the library's nearest is {entry!r} ({display}), another grade or temper: not "
@@ -221,11 +251,14 @@ def _other_grade(key: str, name: str) -> bool:
     entry's (``al-6061-t4``, ``al-2024-t3``, ``al-6061-o``: al-6061-t6; ``aisi-1045``); a typo
     is a designation that completes the other (``aisi-20``: aisi-201), the same characters
     reordered (``alumina-9.95``), or one character more or less (``al-661-t6``,
-    ``aisi-512100``)."""
+    ``aisi-512100``). Letters after the entry's grade number name another grade (``aisi-304l``,
+    the low-carbon 304; ``aisi-304h``)."""
     mine, theirs = key.lower().split("-", 1), name.lower().split("-", 1)
     if len(mine) < 2 or len(theirs) < 2 or mine[0] != theirs[0] or mine[1] == theirs[1]:
         return False
     a, b = mine[1], theirs[1]
+    if a.startswith(b) and b[-1].isdigit() and re.fullmatch(r"[a-z]{1,2}", a[len(b) :]):
+        return True
     if a.startswith(b) or b.startswith(a) or sorted(a) == sorted(b):
         return False
     short, long_ = sorted((a, b), key=len)
