@@ -27,7 +27,6 @@ def _posterior(samples: np.ndarray) -> ModelPosterior:
 
 
 def test_each_title_shows_its_interval():
-    pytest.importorskip("corner")
     rng = np.random.default_rng(0)
     x = np.column_stack([329e6 + 11e6 * rng.standard_normal(4000),
                          0.2004 + 0.0027 * rng.standard_normal(4000)])  # fmt: skip

@@ -50,7 +50,6 @@ def _bands(ax: Any) -> tuple[np.ndarray, np.ndarray]:
 
 
 def test_the_noise_band_stays_in_the_quantitys_range() -> None:
-    pytest.importorskip("matplotlib")
     fig = ppc_figure({"ghaednia/coulomb": _posterior()})
     try:
         axes = {ax.get_ylabel().split(" [")[0]: ax for ax in fig.axes}

@@ -120,7 +120,8 @@ def test_conditions_that_are_no_records_are_refused(
 
 
 def test_a_dataframe_is_pointed_to_its_records(mu_calibration: Calibration) -> None:
-    pandas = pytest.importorskip("pandas")
+    import pandas
+
     with pytest.raises(ValueError, match=r"got a DataFrame: pass df.to_dict\('records'\)"):
         mu_calibration.predict(pandas.DataFrame([NEW]), ["e"], draws=3)
 

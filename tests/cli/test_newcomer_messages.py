@@ -91,7 +91,6 @@ def test_the_drop_table_names_the_slip_as_json_does(cli_main: CliMain) -> None:
 
 
 def test_contact_path_leaves_out_the_dent_of_a_body_that_yields_first(tmp_path: Path) -> None:
-    pytest.importorskip("matplotlib")
     from impactlab.dynamics import plotting
 
     soft = il.Sphere(radius=0.003, material=il.get_material("al-6061-t6"))

@@ -98,7 +98,8 @@ def test_a_loading_curve_past_the_radius_is_refused(tmp_path: Path) -> None:
 
 
 def test_pint_quantities_are_converted_to_si() -> None:
-    pint = pytest.importorskip("pint")
+    import pint
+
     u = pint.UnitRegistry()
     d, f, dm, dr = _tables()
     plain = IndentationCurves.from_arrays(PAIR, R, d, f, dm, dr)

@@ -8,6 +8,7 @@ import stat
 import subprocess
 import sys
 import tempfile
+from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
@@ -78,13 +79,21 @@ print(plus_one(1.0))
 """
 
 
+@pytest.fixture
+def fresh_process_root() -> Iterator[None]:
+    """The process's fallback root found anew, and forgotten after the test whatever its end
+    (a root kept in a finished test's tmp_path would follow later tests)."""
+    _process_root.cache_clear()
+    yield
+    _process_root.cache_clear()
+
+
 def test_the_temporary_fallback_is_private_to_the_user(
-    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path, fresh_process_root: None
 ) -> None:
     """numba unpickles its cache files: a fallback root in the shared temporary folder that
     another user could write would run their code."""
     monkeypatch.setattr(tempfile, "tempdir", str(tmp_path))
-    _process_root.cache_clear()
     folder = fallback_cache_dir()
     root = tmp_path / f"impactlab-{os.getuid()}"
     assert folder.is_relative_to(root) and stat.S_IMODE(root.stat().st_mode) == 0o700
@@ -96,7 +105,6 @@ def test_the_temporary_fallback_is_private_to_the_user(
     root.rmdir()
     root.symlink_to(private)  # a link is not the user's own folder either
     assert fallback_cache_dir() == planted
-    _process_root.cache_clear()
 
 
 @pytest.mark.parametrize("suffix", [".nbi", ".nbc"])

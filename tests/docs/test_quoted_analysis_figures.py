@@ -31,7 +31,6 @@ QUOTED = ("e", "mu", "delta_p", "sliding_length", "duration", "mean_force")
 _ESTIMATE = r"(-?\d[\d.e+-]*(?: ± \d[\d.e+-]*)?(?: [a-zA-Z/]+\b)?)"
 _TF = re.compile(r"T = (\d[\d.]*) ms ± (\d[\d.]*), F = (\d[\d.]*) N ± (\d[\d.]*)")
 
-pytest.importorskip("ezc3d", reason="the example writes a C3D marker file")
 pytest.importorskip("SurfaceTopography", reason="the example reads an X3P scan")
 
 

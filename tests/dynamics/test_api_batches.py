@@ -123,7 +123,8 @@ def test_velocity_components_are_numbers_or_1d_arrays() -> None:
 
 
 def test_angle_and_approach_refusals_name_the_value() -> None:
-    b = il.simulate_batch(ROD, angle=[0.35, 2.0, 0.35], vy=[-1.41, -1.41, 1.0], mu=0.2)
+    with pytest.warns(il.ImplausibleInputWarning, match="every refused angle .* degrees"):
+        b = il.simulate_batch(ROD, angle=[0.35, 2.0, 0.35], vy=[-1.41, -1.41, 1.0], mu=0.2)
     assert b.messages[0] == "ok"
     assert b.messages[1].startswith(
         "angle outside (0, pi/2] radians: angle = 2.0 rad = 114.6 deg: the rod leans past the "
@@ -132,7 +133,8 @@ def test_angle_and_approach_refusals_name_the_value() -> None:
     assert b.messages[2] == (
         "the contact point does not approach the flat (normal velocity >= 0): vn = +1.0 m/s"
     )
-    d = il.simulate_drops(ROD, angle=[0.35, 2.0, 0.35], vy=[-1.41, -1.41, 1.0], mu=0.2)
+    with pytest.warns(il.ImplausibleInputWarning, match="every refused angle .* degrees"):
+        d = il.simulate_drops(ROD, angle=[0.35, 2.0, 0.35], vy=[-1.41, -1.41, 1.0], mu=0.2)
     assert d.messages[1] == b.messages[1]
     assert d.messages[2].endswith("(normal velocity >= 0): vy = 1.0 m/s, spin = 0.0 rad/s, "
                                   "angle = 0.35 rad")  # fmt: skip

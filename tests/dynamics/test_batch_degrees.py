@@ -30,3 +30,11 @@ def test_angles_just_past_pi_half_are_a_rod_past_the_normal() -> None:
     b = il.simulate_batch(il.Rod.paper(), angle=np.array([1.6, 1.62]), vy=-1.41)
     assert (b.status == 7).all()
     assert all("leans past the flat's normal" in m for m in b.messages)
+
+
+def test_some_angles_in_degrees_are_said_once_as_drops_say_it() -> None:
+    with pytest.warns(
+        il.ImplausibleInputWarning, match=r"every refused angle \(1 case\(s\), 20\) lies in"
+    ):
+        b = il.simulate_batch(il.Rod.paper(), angle=np.array([0.3, 20.0]), vy=-1.41)
+    assert b.status.tolist() == [0, 7]

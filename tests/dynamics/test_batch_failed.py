@@ -105,7 +105,8 @@ def test_blank_failed_keeps_the_computed_rows_bit_for_bit() -> None:
 def test_a_failed_drop_of_a_batch_has_no_derived_output(constant: str) -> None:
     """``simulate_drops``: a case the drop refuses (an angle beyond 90 deg) reads NaN in a
     derived output even where its ``compute`` gives a number for NaN inputs."""
-    b = il.simulate_drops(il.Rod.paper(), angle=[np.radians(40), 3.0], vy=-1.4, mu=0.2)
+    with pytest.warns(il.ImplausibleInputWarning, match="every refused angle .* degrees"):
+        b = il.simulate_drops(il.Rod.paper(), angle=[np.radians(40), 3.0], vy=-1.4, mu=0.2)
     assert b.computed.tolist() == [True, False]
     assert b[constant][0] == 1.0 and math.isnan(b[constant][1])
     assert math.isnan(getattr(b, constant)[1])

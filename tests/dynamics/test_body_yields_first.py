@@ -50,7 +50,6 @@ def test_dent_refuses_a_dent_the_flat_does_not_have(soft_sphere: il.ImpactResult
     text = str(e.value)
     assert "'aluminium 6061-T6' yields before the flat" in text and "leaves the dent out" in text
     assert "455.7 MPa against 3285 MPa" in text  # C(nu) S_y of each
-    pytest.importorskip("matplotlib")
     from impactlab.dynamics import plotting
 
     with pytest.raises(ValueError, match="no dent in the flat"):

@@ -125,6 +125,7 @@ def test_an_elastic_impact_on_glass_is_not_marked() -> None:
     assert r.max_delta_ratio < 1.0 and r.flags == ResultFlag.NONE and r.ok
 
 
+@pytest.mark.filterwarnings("ignore:friction = .* with mu = 0 is frictionless")  # mu's default
 def test_partial_slip_and_the_batch_agree_with_simulate() -> None:
     vy = np.array([-1.41, -0.005, -0.5])
     for friction in ("coulomb", "partial_slip"):
@@ -146,7 +147,7 @@ def test_drops_are_marked() -> None:
 
 
 def test_a_sweep_marks_the_brittle_cases(tmp_path: Path) -> None:
-    from impactlab.sweep import Study, open_sweep, run_sweep
+    from impactlab.sweep import FlaggedCasesWarning, Study, open_sweep, run_sweep
     from impactlab.sweep.options import EngineOptions
 
     st = Study(
@@ -155,7 +156,8 @@ def test_a_sweep_marks_the_brittle_cases(tmp_path: Path) -> None:
         grid={"vy": [-1.41, -0.005], "flat_material": ["soda-lime-glass", "aisi-1010"]},
         engine=EngineOptions(gravity=False),
     )
-    ds = open_sweep(run_sweep(st, tmp_path / "g.zarr", quiet=True).path)
+    with pytest.warns(FlaggedCasesWarning, match="brittle"):
+        ds = open_sweep(run_sweep(st, tmp_path / "g.zarr", quiet=True).path)
     flags = ds["flags"].sel(flat_material="soda-lime-glass").values.astype(int)
     assert [bool(f & FLAG_BRITTLE) for f in flags] == [True, False]
     steel = ds["flags"].sel(flat_material="aisi-1010").values.astype(int)
@@ -165,7 +167,8 @@ def test_a_sweep_marks_the_brittle_cases(tmp_path: Path) -> None:
         fixed={"body": "sphere", "radius": 0.005, "mu": 0.2, "flat_material": "aisi-1010"},
         grid={"vy": [-5.0, -0.05], "body_material": ["soda-lime-glass", "tungsten-carbide"]},
     )
-    ds = open_sweep(run_sweep(balls, tmp_path / "b.zarr", quiet=True).path)
+    with pytest.warns(FlaggedCasesWarning, match="brittle"):
+        ds = open_sweep(run_sweep(balls, tmp_path / "b.zarr", quiet=True).path)
     bits = ds["flags"].transpose("body_material", "vy").values.astype(int) & FLAG_BRITTLE
     np.testing.assert_array_equal(bits != 0, [[True, False], [False, False]])
 

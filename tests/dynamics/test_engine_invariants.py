@@ -129,6 +129,7 @@ def test_impulse_ratio_creates_energy_after_reversal() -> None:
     vy=st.floats(-2.5, -0.05),
     mu=st.floats(0.0, 1.2),
 )
+@pytest.mark.filterwarnings("ignore:friction = .* with mu = 0 is frictionless")  # mu drawn 0
 def test_invariants_history(
     law: str, friction: str, th: float, vx: float, vy: float, mu: float
 ) -> None:

@@ -11,7 +11,7 @@ import weakref
 import numpy as np
 import pytest
 
-from impactlab import schema
+from impactlab import ImplausibleInputWarning, schema
 from impactlab.bodies import PAPER_ROD, Rod, Sphere
 from impactlab.contact import get_law
 from impactlab.dynamics import HISTORY_FIELDS, OUTPUT_FIELDS, simulate, simulate_batch
@@ -146,9 +146,10 @@ def test_results_record_their_references() -> None:
     assert "10.1016/0771-050X(80)90013-3" in r.dois()  # Dormand & Prince
     assert len(set(r.dois())) == len(r.dois())
     assert "references" not in r.to_dict()
-    frictionless = simulate(
-        Sphere(0.01), law="hertz", friction="mindlin", mu=0.0, velocity=(0.0, -1.0)
-    )
+    with pytest.warns(ImplausibleInputWarning, match="with mu = 0 is frictionless"):
+        frictionless = simulate(
+            Sphere(0.01), law="hertz", friction="mindlin", mu=0.0, velocity=(0.0, -1.0)
+        )
     assert REFERENCES["mindlin-deresiewicz-1953"] not in frictionless.references
     b = simulate_batch(
         Sphere(0.01), law="hertz", friction="mindlin", mu=[0.0, 0.2], vy=[-1.0, -1.0]

@@ -58,7 +58,10 @@ def test_below_the_bound_or_with_stick_there_is_no_jam() -> None:
 
 
 def test_a_law_limit_without_friction_keeps_its_message() -> None:
-    with pytest.raises(ValueError, match="lower the impact velocity"):
+    with (
+        pytest.raises(ValueError, match="lower the impact velocity"),
+        pytest.warns(il.ImplausibleInputWarning, match="with mu = 0 is frictionless"),
+    ):
         il.simulate(ROD, friction="impulse_ratio", mu=0.0, angle=ANGLE, velocity=(0.0, -60.0))
 
 

@@ -97,7 +97,8 @@ def _case_of(body):
 
 
 def test_mu_zero_is_frictionless() -> None:
-    r = il.simulate(SPHERE, law="hertz", friction="partial_slip", mu=0.0, velocity=(0.3, -1.0))
+    with pytest.warns(il.ImplausibleInputWarning, match="with mu = 0 is frictionless"):
+        r = il.simulate(SPHERE, law="hertz", friction="partial_slip", mu=0.0, velocity=(0.3, -1.0))
     assert r.velocity_out[0] == pytest.approx(0.3, abs=1e-12)
     assert r.spin_out == 0.0 and r.regime == "frictionless"
 

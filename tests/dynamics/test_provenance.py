@@ -74,6 +74,7 @@ def test_a_record_that_is_not_one_is_named() -> None:
 _positive = st.floats(1e-3, 1e3, allow_nan=False)
 
 
+@pytest.mark.filterwarnings("ignore::impactlab.ImplausibleInputWarning")  # drawn on purpose
 @settings(deadline=None, max_examples=60, suppress_health_check=[HealthCheck.too_slow])
 @given(
     E=st.floats(1e9, 1e12),

@@ -92,7 +92,8 @@ def test_to_xarray_has_every_output_with_units_and_codes(drops) -> None:
 
 
 def test_to_xarray_writes_netcdf(drops, tmp_path) -> None:
-    xr = pytest.importorskip("xarray")
+    import xarray as xr
+
     path = tmp_path / "drops.nc"
     drops.to_xarray().to_netcdf(path)
     with xr.open_dataset(path) as back:

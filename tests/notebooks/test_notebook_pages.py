@@ -67,7 +67,8 @@ def test_a_cell_shows_the_value_of_its_last_expression(tmp_path: Path) -> None:
 
 
 def test_a_large_frame_is_shown_as_jupyter_cuts_it() -> None:
-    pd = pytest.importorskip("pandas")
+    import pandas as pd
+
     df = pd.DataFrame({f"c{j}": [float(i * j) for i in range(100)] for j in range(30)})
     lines = markdown_table(df).splitlines()
     assert lines[-1] == "100 rows x 30 columns"

@@ -7,7 +7,8 @@ from __future__ import annotations
 
 import pytest
 
-from impactlab.sweep import Study, run_sweep, status_counts
+from impactlab import ImplausibleInputWarning
+from impactlab.sweep import FailedCasesWarning, Study, run_sweep, status_counts
 from impactlab.sweep.models import MAX_PROBES
 
 BASE = {"vy": -1.41, "mu": 0.2}
@@ -46,21 +47,36 @@ def test_law_params_refused_for_some_pairs_only_keep_the_case_status(tmp_path) -
     )
 
 
-def test_a_pair_the_law_refuses_whatever_its_parameters_is_not_blamed_on_them() -> None:
+def test_a_pair_the_law_refuses_whatever_its_parameters_is_not_blamed_on_them(tmp_path) -> None:
     """Brake's law on a flat by values without a hardness fails with or without a
-    meyer_index: not the [law_params]' fault; each case says so in its status."""
+    meyer_index: not the [law_params]' fault, so the study is built; each case says in its
+    status what the pair lacks."""
     flat = {"flat_E": 69e9, "flat_nu": 0.33, "flat_yield_strength": 276e6}
-    Study(name="nohb", grid={"angle": [0.35]}, fixed={**BASE, **flat, "law": "brake"},
-          law_params={"meyer_index": 2.5})  # fmt: skip
+    for i, params in enumerate(({"meyer_index": 2.5}, {})):
+        study = Study(name="nohb", grid={"angle": [0.35]}, fixed={**BASE, **flat, "law": "brake"},
+                      law_params=params)  # fmt: skip
+        with pytest.warns(FailedCasesWarning, match="no case succeeded"):
+            ds = run_sweep(study, tmp_path / f"nohb{i}.zarr", quiet=True).dataset
+        ((key, n),) = status_counts(ds).items()
+        assert n == 1 and key.startswith("103: ")
+        assert key.endswith(
+            "first at angle = 0.35 rad: hardness: Brake's law needs the Brinell hardness of both "
+            "materials, and 'flat material by values' has none; give it a brinell_hardness in "
+            "kgf/mm^2 (HB=...; in a sweep study: flat_brinell_hardness), or the combined value "
+            "as a law parameter, law_params={'hardness': ...} in kgf/mm^2 (a [law_params] table "
+            "in a --config file on the command line, or in a study whose only law is brake)"
+        )
 
 
 def test_the_summary_carries_the_law_s_words(tmp_path) -> None:
     """Too many tip radii to check up front: every case is refused (status 103), and the status
     counts end with the law's message for the first case, at its grid coordinates."""
     radii = [0.005 + 1e-5 * i for i in range(MAX_PROBES + 1)]
-    study = Study(name="many", grid={"tip_radius": radii}, fixed={**BASE, "angle": 0.35,
-                  "law": "brake"}, law_params={"hardness": -5.0})  # fmt: skip
-    ds = run_sweep(study, tmp_path / "many.zarr", quiet=True).dataset
+    with pytest.warns(ImplausibleInputWarning, match="keeps the paper's rod's mass"):
+        study = Study(name="many", grid={"tip_radius": radii}, fixed={**BASE, "angle": 0.35,
+                      "law": "brake"}, law_params={"hardness": -5.0})  # fmt: skip
+    with pytest.warns(FailedCasesWarning, match="no case succeeded"):
+        ds = run_sweep(study, tmp_path / "many.zarr", quiet=True).dataset
     ((key, n),) = status_counts(ds).items()
     assert n == len(radii)
     assert key.startswith("103: contact law rejected its parameters")
@@ -84,3 +100,10 @@ def test_a_law_parameter_with_its_unit_is_taken_as_simulate_takes_it(tmp_path) -
         '[grid]\nmu = [0.1, 0.2]\n[law_params]\nhardness = "1030 MPa"\n'
     )
     assert load_study(f).law_params["hardness"] == pytest.approx(105.03, rel=1e-3)
+
+
+def test_law_params_none_is_no_parameters_as_simulate_takes_it() -> None:
+    fixed = {**BASE, "angle": 0.35}
+    assert Study(name="s", grid={"vx": [0.0]}, fixed=fixed, law_params=None).law_params == {}
+    with pytest.raises(ValueError, match=r"^law_params must be a mapping .* got list \[1\.0\]"):
+        Study(name="s", grid={"vx": [0.0]}, fixed=fixed, law_params=[1.0])

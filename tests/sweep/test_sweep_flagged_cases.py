@@ -5,7 +5,6 @@ many (impactlab.sweep.uncertainty, impactlab.sweep.plots)."""
 from __future__ import annotations
 
 import numpy as np
-import pytest
 import xarray as xr
 
 from impactlab.flags import ResultFlag
@@ -46,7 +45,6 @@ def test_uncertainty_excludes_and_counts_flagged_cases() -> None:
 
 
 def test_plots_blank_and_count_flagged_cases() -> None:
-    pytest.importorskip("matplotlib")
     fig = plot_histograms(_sample(), ["e"])
     assert "11 flagged cases excluded" in fig.axes[0].get_title()
     angle = np.radians([10.0, 20.0, 30.0, 40.0])

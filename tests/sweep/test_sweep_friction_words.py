@@ -29,5 +29,14 @@ def test_a_name_that_is_no_model_is_unknown_with_every_model() -> None:
     assert "coulomb" in message and message.endswith(f"known: {', '.join(friction_names())}")
 
 
-def test_every_model_runs_in_a_sweep_today() -> None:
-    EngineEvaluator().validate({"friction": list(friction_names())})
+def test_every_friction_model_runs_in_a_sweep(tmp_path) -> None:
+    from impactlab.sweep import Study, run_sweep
+
+    names = list(friction_names())
+    EngineEvaluator().validate({"friction": names})
+    study = Study(name="frictions", grid={"friction": names},
+                  fixed={"angle": 0.35, "vy": -1.41, "mu": 0.2})  # fmt: skip
+    ds = run_sweep(study, tmp_path / "f.zarr", quiet=True).dataset
+    assert ds["status"].values.tolist() == [0] * len(names)
+    e = dict(zip(ds["friction"].values.tolist(), ds["e"].values.tolist(), strict=True))
+    assert set(e) == set(names) and all(0.0 < v < 1.0 for v in e.values())

@@ -22,8 +22,6 @@ from impactlab.sweep import (
     uncertainty_reports,
 )
 
-pytest.importorskip("matplotlib")
-
 
 @pytest.fixture
 def result(tmp_path: Path) -> Any:

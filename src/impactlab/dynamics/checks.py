@@ -166,12 +166,13 @@ def impact_rtol(friction: Any) -> float:
 
 def warn_unused_friction(friction: Any, mu: float) -> None:
     """ImplausibleInputWarning for a friction model chosen (not Coulomb, the default) with
-    mu = 0 (the default): the impact is frictionless and the model has no effect."""
+    mu = 0 (given, or the default): the impact is frictionless and the model has no effect."""
     name = _friction_name(friction)
     if mu == 0.0 and name and name != FrictionKind.COULOMB.value:
         warn_implausible(
-            f"friction = {name!r} with mu = 0 is frictionless: the model has no effect (give "
-            "mu, e.g. mu=0.3, or --mu 0.3)"
+            f"friction = {name!r} with mu = 0 is frictionless: the model has no effect (for "
+            "friction give mu > 0, e.g. mu=0.3 or --mu 0.3, mu's default being 0; for a "
+            "frictionless impact leave friction out)"
         )
 
 

@@ -34,6 +34,7 @@ from impactlab.dynamics.input_checks import (
     check_partial_slip_cells,
     contact_reach,
     gravity_value,
+    warn_degrees,
     warn_fast,
 )
 from impactlab.dynamics.kernels import layout as L
@@ -218,6 +219,8 @@ def simulate_batch(
         brittle_limit=brittle_pressure(body.material, flat),
         partial_slip_cells=cells,
     )
+    if not isinstance(body, Sphere):  # some cases' angles in degrees: said once, as drops say it
+        warn_degrees(x["angle"][status == ST_BAD_ANGLE])
     yields, said = flattening_words(
         body.material, flat, out[:, L.OUTPUT_FIELDS.index("delta_p")][status == 0], "delta_p"
     )

@@ -26,13 +26,14 @@ DEFAULT_MAX_CASES = 100_000_000
 #: of docs/sweep.md ("Benchmark"; benchmarks/results/sweep.json, "full"): 10 000 000 impacts
 #: end to end in 44.7 s on 2 cores, 224 000 impacts/s, 112 000 per core.
 RIGID_CASE_S = 2.0 / 224_000
-#: A ``partial_slip`` impact: 169 us per impact in its batch (benchmarks/results/
-#: partial_slip.json, ``all_cases``), 124-241 us over laws and mu (partial_slip_spread.json;
-#: docs/engine/benchmarks.md); a sweep over wider speeds and angles measured about 280 us.
+#: A ``partial_slip`` impact: 233 us per impact in its batch (benchmarks/results/
+#: partial_slip.json, ``all_cases``), 124-266 us over laws and mu, 183 us on average
+#: (partial_slip_spread.json; docs/engine/benchmarks.md); a sweep over wider speeds and angles
+#: measured about 280 us.
 PARTIAL_SLIP_CASE_S = 250e-6
-#: A flexible rod's drop: 94 drops per CPU-second in one batch (benchmarks/results/
-#: flexible.json, ``batch``; docs/flexible.md), about 10.6 ms each.
-FLEXIBLE_DROP_S = 1.0 / 94
+#: A flexible rod's drop: 201 drops per CPU-second in one batch (benchmarks/results/
+#: flexible.json, ``batch``; 178-181 in two more runs; docs/flexible.md), about 5.0 ms each.
+FLEXIBLE_DROP_S = 1.0 / 201
 #: One contact model built in Python, on one core, per distinct law row (a Monte Carlo over
 #: material properties builds one per case): about 1.5 ms for the Jackson-Green family
 #: (docs/sweep.md, "Cost of per-case materials").

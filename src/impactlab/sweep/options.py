@@ -41,7 +41,7 @@ def default_chunk_size(study: Any) -> int:
     """Cases per chunk of a ``Study`` that sets no ``chunk_size``: the largest power of two
     whose chunk costs at most ``CHUNK_TARGET_S`` on one core (``limits.study_cost``, estimated
     from the benchmarks), within [``limits.TINY_CHUNK``, ``DEFAULT_CHUNK_SIZE``]: 65536 for
-    rigid bodies, 8192 for ``partial_slip``, 256 for a flexible rod's drops, 2048 for a Monte
+    rigid bodies, 8192 for ``partial_slip``, 512 for a flexible rod's drops, 2048 for a Monte
     Carlo over material properties (a contact model per case)."""
     fit = CHUNK_TARGET_S / study_cost(study).chunk_case_s()
     size = 2 ** math.floor(math.log2(fit)) if fit >= 1.0 else 1

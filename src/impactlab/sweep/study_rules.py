@@ -199,12 +199,19 @@ def _degrees(name: str, dist: Distribution, lower: bool) -> str:
 
 
 def check_law_params(
-    law_params: Mapping[str, Any], laws: Sequence[Value | None]
+    law_params: Mapping[str, Any] | None, laws: Sequence[Value | None]
 ) -> dict[str, float]:
     """Numbers in each parameter's unit, each a parameter of every (registered) law of the
     study: a number, or, for a parameter with a unit, a string with units or a pint Quantity
-    (``"105 HB"``, ``"1030 MPa"``), as ``simulate``'s ``law_params`` takes it."""
-    given = {str(k): v for k, v in dict(law_params).items()}
+    (``"105 HB"``, ``"1030 MPa"``), as ``simulate``'s ``law_params`` takes it (None: none)."""
+    if law_params is None:
+        return {}
+    if not isinstance(law_params, Mapping):
+        raise ValueError(
+            "law_params must be a mapping of a contact law's parameter names to values (or "
+            f"None), got {type(law_params).__name__} {law_params!r}"
+        )
+    given = {str(k): v for k, v in law_params.items()}
     known_laws = [str(law) for law in laws if law in law_names()]
     for law in known_laws:
         known = sorted(p.name for p in get_law(law).parameters)
