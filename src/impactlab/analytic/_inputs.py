@@ -9,9 +9,10 @@ from typing import Any
 
 import numpy as np
 
+from impactlab._input_limits import degrees_hint
 from impactlab._validation import check_array_finite
 from impactlab.bodies import PAPER_ROD, Rod, Sphere
-from impactlab.units import has_unit
+from impactlab.units import has_unit, is_quantity
 
 HALF_PI = 0.5 * math.pi
 _MEASURES = ("slip", "travel")
@@ -114,19 +115,34 @@ def out(x: Any) -> Any:
 def angle(value: Any) -> Any:
     """The angle [rad] as a float64 array, checked to lie in [0, pi/2]. An angle given with
     its unit (``"95 deg"``, a pint Quantity) out of range is echoed in degrees first, then in
-    the radians a bare number would be."""
-    if not has_unit(value):
-        return arr("angle", value, unit="rad", low=0.0, high=HALF_PI)
+    the radians a bare number would be; a bare number in (pi/2 + 10 deg, 90] gets the degrees
+    hint of ``simulate``."""
     x = arr("angle", value, unit="rad")
     bad = (x < 0.0) | (x > HALF_PI)
     if bad.any():
         got = float(x.ravel()[np.argmax(bad.ravel())])
         op, deg, rad = (">=", 0, 0.0) if got < 0.0 else ("<=", 90, HALF_PI)
+        if not has_unit(value):  # a bare number is radians; one that reads as degrees says so
+            raise ValueError(f"angle must be {op} {rad:g} rad, got {got!r} rad{degrees_hint(got)}")
         raise ValueError(
             f"angle must be {op} {deg} deg, got {math.degrees(got):.6g} deg; in radians, as the "
             f"closed forms take a bare number: {op} {rad:g} rad, got {got!r} rad"
         )
     return x
+
+
+def gravity_flag(value: Any) -> bool:
+    """The closed forms' and ``invert``'s ``gravity``: True or False; ValueError otherwise (a
+    number is not read as the acceleration, which is ``g``; a string is not silently true)."""
+    if isinstance(value, bool | np.bool_):
+        return bool(value)
+    hint = f": the acceleration is g, e.g. gravity=True, g={value!r}" if _number(value) else ""
+    raise ValueError(f"gravity must be True or False, got {value!r}{hint}")
+
+
+def _number(value: Any) -> bool:
+    """A number or a pint Quantity (what may have been meant as the acceleration)."""
+    return isinstance(value, int | float | np.integer | np.floating) or is_quantity(value)
 
 
 def travel(measure: str) -> bool:

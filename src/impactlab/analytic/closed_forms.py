@@ -27,6 +27,7 @@ from impactlab.analytic._inputs import (
     arr,
     drop_speed,
     finite,
+    gravity_flag,
     magnitude,
     out,
     rod_values,
@@ -286,7 +287,7 @@ def impact_duration(
             "vertical, or mu at mu_c), where the tip does not slide and T = L_s/(|alpha| |v_i|) "
             "is undefined"
         )
-    g_ = check_gravity("g", g)
+    g_, gravity = check_gravity("g", g), gravity_flag(gravity)
     ab = np.abs(al)
 
     def bounds(vt: Any) -> tuple[Any, Any]:
@@ -354,7 +355,7 @@ def mean_force_momentum(
     T = arr("duration", duration, unit="s", low=0.0, low_open=True)
     m = arr("mass", mass, unit="kg", low=0.0, low_open=True)
     dv = _upward("dv_cy", dv_cy)
-    g_ = check_gravity("g", g)
+    g_, gravity = check_gravity("g", g), gravity_flag(gravity)
     with np.errstate(all="ignore"):
         F = m * dv / T + (m * g_ if gravity else 0.0)
     given = {"duration": (T, "s"), "mass": (m, "kg"), "dv_cy": (dv, "m/s")}
@@ -376,7 +377,7 @@ def mean_force_rigid(
     e_ = arr("e", e, low=0.0, high=1.0)
     vi = drop_speed(v_i)
     Ky = arr("K_y", K_y, unit="1/kg", low=0.0, low_open=True)
-    g_ = check_gravity("g", g)
+    g_, gravity = check_gravity("g", g), gravity_flag(gravity)
     with np.errstate(all="ignore"):
         F = ((1.0 + e_) * vi + (g_ * T if gravity else 0.0)) / (Ky * T)
     given = {"duration": (T, "s"), "e": (e_, ""), "v_i": (vi, "m/s"), "K_y": (Ky, "1/kg")}

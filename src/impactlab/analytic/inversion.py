@@ -16,7 +16,6 @@ import numpy as np
 
 from impactlab._validation import (
     ImplausibleInputWarning,
-    check_flag,
     check_gravity,
     check_seed,
     warn_implausible,
@@ -33,7 +32,7 @@ from impactlab.analytic._conditioning import (
     check_mc_duration,
 )
 from impactlab.analytic._correlation import check_correlation, linear_sigmas, sign_flipped
-from impactlab.analytic._inputs import HALF_PI, rod_values
+from impactlab.analytic._inputs import HALF_PI, gravity_flag, rod_values
 from impactlab.analytic._inputs import travel as _travel
 from impactlab.analytic._measurements import (
     check_momentum,
@@ -181,7 +180,7 @@ def _options(n_samples: Any, seed: Any, gravity: Any, g: Any, measure: str) -> d
     return {
         "n_samples": int(n_samples),
         "seed": check_seed("seed", seed),
-        "gravity": check_flag("gravity", gravity),
+        "gravity": gravity_flag(gravity),
         "g": check_gravity("g", g),
         "travel": _travel(measure),
     }

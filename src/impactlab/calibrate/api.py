@@ -4,6 +4,7 @@ and the models ranked by PSIS-LOO."""
 from __future__ import annotations
 
 import contextlib
+import os
 import re
 import warnings
 from collections.abc import Mapping, Sequence
@@ -19,6 +20,7 @@ from impactlab.calibrate.drop_predictions import DropPredictions, predict_drops
 from impactlab.calibrate.input_checks import (
     check_calibration_inputs,
     check_engine_cells,
+    check_n_ppc,
     engine_options,
     parameter_usage,
     sampler_settings,
@@ -240,6 +242,12 @@ def _calibrate(
     n_ppc: int,
     scheduler: Any,
 ) -> Calibration:
+    if not isinstance(measurements, Measurements | str | os.PathLike):
+        raise ValueError(
+            "measurements must be a Measurements or the path of a measurements file (CSV or "
+            f"TOML), got {measurements!r}"
+        )
+    n_ppc = check_n_ppc(n_ppc)
     meas = (
         measurements if isinstance(measurements, Measurements) else read_measurements(measurements)
     )

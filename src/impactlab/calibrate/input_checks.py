@@ -50,8 +50,19 @@ def parameters(given: Sequence[Parameter] | Mapping[str, Any]) -> tuple[Paramete
         out = tuple(
             v if isinstance(v, Parameter) else parse_parameter(k, v) for k, v in given.items()
         )
-    else:
+    elif isinstance(given, Sequence) and not isinstance(given, str):
         out = tuple(given)
+        for i, p in enumerate(out):
+            if not isinstance(p, Parameter):
+                raise ValueError(
+                    f"parameters[{i}] is {p!r}, not a Parameter: give Parameters, or a mapping "
+                    "of names to priors, e.g. {'mu': 'uniform(0, 1)'}"
+                )
+    else:
+        raise ValueError(
+            "parameters must be a mapping of names to priors, e.g. {'mu': 'uniform(0, 1)'}, or "
+            f"a sequence of Parameters, got {given!r}"
+        )
     if not out:
         raise ValueError("calibrate needs at least one free parameter")
     names = [p.name for p in out]
@@ -116,6 +127,18 @@ def _integer(name: str, value: Any) -> int:
         return operator.index(value)
     except TypeError:
         raise ValueError(f"{name} must be an integer, got {value!r}") from None
+
+
+def check_n_ppc(value: Any) -> int:
+    """The posterior draws a calibration re-runs for its predictive checks: an integer >= 0
+    (0: the best fit only); ValueError naming ``n_ppc`` before any step is sampled."""
+    n = _integer("n_ppc", value)
+    if n < 0:
+        raise ValueError(
+            f"n_ppc must be an integer >= 0 (posterior draws re-run for the predictive checks; 0: "
+            f"the best fit only), got {value!r}"
+        )
+    return n
 
 
 #: The most values the chain holds (walkers x steps x parameters, float64: 1.6 GB).

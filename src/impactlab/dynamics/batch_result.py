@@ -27,7 +27,7 @@ from impactlab.dynamics.derived import batch_derived
 from impactlab.dynamics.export import BATCH_DIAGNOSTICS, batch_columns, batch_dataset, batch_html
 from impactlab.dynamics.history import readonly_copy
 from impactlab.dynamics.kernels.layout import OUTPUT_FIELDS
-from impactlab.dynamics.pint_fields import pint_unit
+from impactlab.dynamics.pint_fields import pint_registry, pint_unit
 from impactlab.references import Reference
 from impactlab.references import dois as doi_list
 
@@ -203,9 +203,7 @@ class BatchResult(BatchStatus):
         computed aside), every derived output (``schema.register_output``) and
         ``max_delta_ratio`` as a pint Quantity of an array (SI; NaN where a case failed);
         ``registry``: your pint registry."""
-        from impactlab.units import registry as shared  # pint loads on first use
-
-        ureg = shared() if registry is None else registry
+        ureg = pint_registry(registry)
         out: dict[str, Any] = {}
         for name in (*OUTPUT_FIELDS, *schema.DERIVED_FIELDS):
             if name in BATCH_DIAGNOSTICS:

@@ -24,7 +24,7 @@ from impactlab.dynamics.drop_batch_data import (
     output_unit,
 )
 from impactlab.dynamics.history import readonly_copy
-from impactlab.dynamics.pint_fields import pint_unit
+from impactlab.dynamics.pint_fields import pint_registry, pint_unit
 from impactlab.references import Reference
 from impactlab.references import dois as doi_list
 
@@ -201,9 +201,7 @@ class DropBatchResult(BatchStatus):
         """Each output (``PUBLIC_FIELDS``, ``initial_energy``, ``max_delta_ratio``) as a pint
         Quantity of an array (SI; NaN where a case failed); ``registry``: your pint
         registry."""
-        from impactlab.units import registry as shared  # pint loads on first use
-
-        ureg = shared() if registry is None else registry
+        ureg = pint_registry(registry)
         return {
             name: ureg.Quantity(np.array(self[name]), pint_unit(output_unit(name)[0]))
             for name in (*DATASET_OUTPUTS, *schema.DERIVED_FIELDS)

@@ -8,7 +8,7 @@ from __future__ import annotations
 import dataclasses
 import itertools
 import math
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from typing import Any
 
 from impactlab._validation import check_flag, unexpected_keywords
@@ -22,6 +22,7 @@ __all__ = [
     "DROP_OPTIONS",
     "FLEXIBLE_BATCH_ERROR",
     "ModeConvergence",
+    "check_simulate_keywords",
     "mode_convergence",
     "simulate_flexible",
 ]
@@ -32,6 +33,17 @@ DROP_OPTIONS = ("rate", "stop", "time_limit")
 #: simulate's arguments that ``simulate_drop`` takes under the same name.
 _SIMULATE_ARGS: tuple[str, ...] = ("law", "friction", "mu", "angle", "velocity", "spin")
 _SIMULATE_ARGS += ("law_params", "gravity", "rtol")
+
+
+def check_simulate_keywords(given: Iterable[str]) -> None:
+    """TypeError for a keyword ``simulate`` does not take, in simulate_batch's words (the
+    nearest name), with the drop's options named; the drop's old names pass (read as new)."""
+    known = (*_SIMULATE_ARGS, "constant_angle", "history", "speed", "incidence", *DROP_OPTIONS)
+    known += ("partial_slip_cells",)  # simulate's own (checked there), not passed on here
+    extra = sorted(set(given) - set(known) - set(RENAMED_KEYWORDS))
+    if extra:
+        text = unexpected_keywords("simulate", extra, known, {})
+        raise TypeError(f"{text} ({', '.join(DROP_OPTIONS)}: a FlexibleRod's drop)")
 
 
 def simulate_flexible(
@@ -47,12 +59,7 @@ def simulate_flexible(
     history) and the drop's options ``rate``, ``stop``, ``time_limit`` (``t_max``, its name
     before 0.3: a DeprecationWarning). ``constant_angle`` must be False (the drop follows the
     rod's rotation). TypeError for a drop option with another body or an unknown keyword."""
-    known = (*_SIMULATE_ARGS, "constant_angle", "history", "speed", "incidence", *DROP_OPTIONS)
-    known += ("partial_slip_cells",)  # simulate's own (checked there), not passed on here
-    extra = sorted(set(kwargs) - set(known) - set(RENAMED_KEYWORDS))  # old names: read as new
-    if extra:  # in simulate_batch's words (the nearest name), with the drop's options named
-        text = unexpected_keywords("simulate", extra, known, {})
-        raise TypeError(f"{text} ({', '.join(DROP_OPTIONS)}: a FlexibleRod's drop)")
+    check_simulate_keywords(kwargs)
     if not isinstance(body, FlexibleRod):
         given = sorted(set(kwargs) & {*DROP_OPTIONS, *RENAMED_KEYWORDS})
         raise TypeError(

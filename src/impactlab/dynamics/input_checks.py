@@ -16,6 +16,7 @@ from typing import Any
 
 import numpy as np
 
+from impactlab._input_limits import PAST_NORMAL, degrees_hint
 from impactlab._validation import (
     check_finite,
     check_flag,
@@ -177,21 +178,6 @@ def check_angle(angle: Any, body: Rod | Sphere) -> float:
     hint += degrees_hint(th)
     hint = f" ({math.degrees(th):.6g} deg){hint}" if hint else ""
     raise ValueError(f"angle must be in radians in (0, pi/2], got {th!r} rad{hint}")
-
-
-#: Up to this far past pi/2 [rad] a bare angle reads as a rod past the normal, not degrees.
-PAST_NORMAL = math.radians(10.0)
-
-
-def degrees_hint(th: float) -> str:
-    """``"; if 20.0 is meant in degrees, pass math.radians(20.0) = ..."`` for a bare angle
-    ``th`` [rad] in (pi/2 + PAST_NORMAL, 90], which reads as degrees; else ``""``."""
-    if not 0.5 * math.pi + PAST_NORMAL < th <= 90.0 + 1e-9:
-        return ""
-    return (
-        f"; if {th!r} is meant in degrees, pass math.radians({th!r}) = "
-        f"{math.radians(th):.6g} rad or the string '{th:g} deg'"
-    )
 
 
 def warn_degrees(refused: np.ndarray) -> None:

@@ -8,11 +8,27 @@ import numpy as np
 
 from impactlab import schema
 
-__all__ = ["pint_quantities", "pint_unit"]
+__all__ = ["pint_quantities", "pint_registry", "pint_unit"]
 
 
 def pint_unit(unit: str) -> str:
     return "dimensionless" if unit == "1" else unit
+
+
+def pint_registry(registry: Any) -> Any:
+    """``registry``, a pint UnitRegistry, or impactlab's for None (pint loads on first use);
+    TypeError for anything else (a field's name is the likely mistake)."""
+    if registry is None:
+        from impactlab.units import registry as shared
+
+        return shared()
+    if not callable(getattr(registry, "Quantity", None)):
+        what = f"the string {registry!r}" if isinstance(registry, str) else repr(registry)
+        raise TypeError(
+            f"registry must be a pint UnitRegistry (or None: impactlab's), got {what}; "
+            "to_pint() returns every field by name: to_pint()['delta_p']"
+        )
+    return registry
 
 
 def pint_quantities(result: Any, units: dict[str, str], registry: Any = None) -> dict[str, Any]:
@@ -20,9 +36,7 @@ def pint_quantities(result: Any, units: dict[str, str], registry: Any = None) ->
     such as ``velocity_out`` as one Quantity of an array), then every derived output
     (``schema.register_output``, in its unit); ``registry``: the caller's pint registry
     (default ``impactlab.units.registry()``)."""
-    from impactlab.units import registry as shared  # pint loads on first use
-
-    ureg = shared() if registry is None else registry
+    ureg = pint_registry(registry)
     out: dict[str, Any] = {}
     for name, unit in units.items():
         value = getattr(result, name, None)

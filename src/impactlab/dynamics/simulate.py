@@ -28,7 +28,7 @@ from impactlab.dynamics.checks import ImpactInputs, check_impact, impact_rtol
 from impactlab.dynamics.core.driver import impact
 from impactlab.dynamics.drop import simulate_drop
 from impactlab.dynamics.drop_result import DropResult
-from impactlab.dynamics.flex_simulate import simulate_flexible
+from impactlab.dynamics.flex_simulate import check_simulate_keywords, simulate_flexible
 from impactlab.dynamics.input_checks import (
     PLAUSIBLE_SPEED,
     check_constant_angle,
@@ -156,6 +156,7 @@ def simulate(
     0.42
     """
     split = [k for k in ("vx", "vy") if k in drop_options]
+    check_simulate_keywords(k for k in drop_options if k not in split)  # before what they hide
     if split and velocity is None and speed is None:  # simulate_batch's names, given here
         raise ValueError(split_velocity("simulate", split))
     if velocity is None or speed is not None or incidence is not None:

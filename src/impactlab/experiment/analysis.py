@@ -274,7 +274,8 @@ def analyze(
     dent_options: dict[str, Any] | None = None,
     law: str = "ghaednia",
 ) -> ExperimentResult:
-    """Analyse one drop: marker tracks + dent scan -> e, mu, delta_p, L_s, T, F.
+    """Analyse one drop: marker tracks + dent scan -> e, mu, delta_p, L_s, T, F (T from L_s
+    read as the slip, as the paper reads it: ``invert``'s ``measure="slip"``).
 
     Parameters
     ----------

@@ -14,6 +14,7 @@ All parameters are SI (the study-file parser converts units first).
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import zlib
 from abc import ABC, abstractmethod
@@ -25,6 +26,7 @@ from scipy import special
 
 from impactlab._validation import check_finite, check_positive
 from impactlab.sweep.inputs import INPUTS
+from impactlab.units import has_unit
 
 _GAMMA = np.uint64(0x9E3779B97F4A7C15)
 _M1 = np.uint64(0xBF58476D1CE4E5B9)
@@ -98,6 +100,21 @@ def _settle(dist: Distribution, **fields: Any) -> None:
         object.__setattr__(dist, name, value)
 
 
+def _numbers(dist: Any) -> None:
+    """ValueError for a parameter of ``dist`` given as text or a Quantity: a distribution
+    built in Python does not know its input, so not the unit to read it in."""
+    for f in dataclasses.fields(dist):
+        value = getattr(dist, f.name)
+        if isinstance(value, str) or has_unit(value):
+            raise ValueError(
+                f"{dist.kind} distribution: {f.name} = {value!r} is "
+                f"{'text' if isinstance(value, str) else 'a Quantity'}; a distribution built in "
+                "Python takes numbers in its input's SI unit (an angle in radians, "
+                "np.radians(20); a speed in m/s); text with units is read in a study file's "
+                "[sample] table and by Study.from_dict"
+            )
+
+
 def _truncate(dist: Any, floor: float = -math.inf) -> tuple[float, float]:
     """Check and set the truncation bounds ``low``, ``high`` of ``dist`` (``low`` at least
     ``floor``); returns them."""
@@ -122,6 +139,7 @@ class Uniform(Distribution):
     kind: ClassVar[str] = "uniform"
 
     def __post_init__(self) -> None:
+        _numbers(self)
         lo = check_finite("low", self.low)
         hi = check_finite("high", self.high)
         if not lo < hi:
@@ -158,6 +176,7 @@ class Normal(Distribution):
     kind: ClassVar[str] = "normal"
 
     def __post_init__(self) -> None:
+        _numbers(self)
         _settle(self, mean=check_finite("mean", self.mean), std=check_positive("std", self.std))
         lo, hi = _truncate(self)
         a, b = self._std_bounds()
@@ -198,6 +217,7 @@ class LogNormal(Distribution):
     kind: ClassVar[str] = "lognormal"
 
     def __post_init__(self) -> None:
+        _numbers(self)
         median, sigma = check_positive("median", self.median), check_positive("sigma", self.sigma)
         _settle(self, median=median, sigma=sigma)
         lo, hi = _truncate(self, floor=0.0)
