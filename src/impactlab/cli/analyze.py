@@ -22,6 +22,7 @@ from impactlab.cli._common import (
     print_rows,
 )
 from impactlab.cli.analyze_measurements import append_drop, check_measurements
+from impactlab.cli.invert_inputs import check_measure
 
 if TYPE_CHECKING:
     from impactlab.experiment import ExperimentResult, MarkerGeometry
@@ -146,6 +147,12 @@ def analyze_cmd(
         "--gravity/--no-gravity",
         help="Gravity during the contact in the inversion (default: no, as the paper).",
     ),
+    measure: str = typer.Option(
+        "slip",
+        "--measure",
+        help="How the inversion reads the scan's Ls: 'slip' (default, the paper: the rod's "
+        "material point at the contact) or 'travel' (the contact's travel, the mark's extent).",
+    ),
     measurements: Path | None = typer.Option(
         None,
         "--measurements",
@@ -206,6 +213,7 @@ def analyze_cmd(
     name = label if label is not None else markers.stem
     if measurements is not None:
         check_measurements(measurements, name)
+    measure = check_measure(measure, "--measure")  # before --out is made
     if pixel_size is not None:
         pixel_pair(pixel_size, "pixel_size (--pixel-size)")  # before --out is made
     if out is not None:
@@ -228,6 +236,7 @@ def analyze_cmd(
             flip_heights=flip_heights,
             out_dir=folder,
             gravity=gravity,
+            measure=measure,
         )
     appended = (
         append_drop(measurements, res, name, include_doubtful) if measurements is not None else None
@@ -236,7 +245,7 @@ def analyze_cmd(
         options = {"rod": rod or "paper", "flat": flat, "geometry": geometry, "up": up,
                    "marker_units": marker_units, "pixel_size": pixel_size,
                    "height_unit": height_unit, "flip_heights": flip_heights,
-                   "gravity": gravity}  # fmt: skip
+                   "gravity": gravity, "measure": measure}  # fmt: skip
         from impactlab.experiment.result_json import analysis_json  # lazy: a fast CLI start
 
         print(json.dumps(analysis_json(res, options), indent=2))

@@ -40,10 +40,12 @@ from impactlab.bodies import Rod
 from impactlab.dynamics import simulate
 from impactlab.experiment.arguments import (
     KINEMATICS_DEFAULTS,
+    check_measure,
     check_scalars,
     checked_run,
     default_rod,
     implausible_rod,
+    options_record,
     rod_properties,
 )
 from impactlab.experiment.arguments import dent_options as _dent_options
@@ -132,9 +134,10 @@ def _inversion_stage(
     k: ImpactKinematics,
     d: DentMetrics,
     rod: Rod,
-    gravity: bool,
+    reading: tuple[bool, str],
     n_samples: int,
 ) -> None:
+    """T and F from the kinematics and the dent; ``reading``: (gravity, measure) of ``invert``."""
     stuck = sticking_message(k, rod)
     if stuck is not None:
         res.errors["inversion"] = stuck
@@ -154,7 +157,8 @@ def _inversion_stage(
                 delta_p=d.delta_p.pair(),
                 sliding_length=d.sliding_length.pair(),
                 rod=rod,
-                gravity=gravity,
+                gravity=reading[0],
+                measure=reading[1],
                 n_samples=n_samples,
             )
         except ValueError as exc:
@@ -273,9 +277,9 @@ def analyze(
     kinematics_options: dict[str, Any] | None = None,
     dent_options: dict[str, Any] | None = None,
     law: str = "ghaednia",
+    measure: str = "slip",
 ) -> ExperimentResult:
-    """Analyse one drop: marker tracks + dent scan -> e, mu, delta_p, L_s, T, F (T from L_s
-    read as the slip, as the paper reads it: ``invert``'s ``measure="slip"``).
+    """Analyse one drop: marker tracks + dent scan -> e, mu, delta_p, L_s, T, F.
 
     Parameters
     ----------
@@ -301,6 +305,8 @@ def analyze(
         change already excludes the gravity impulse, see docs/experiment.md).
     n_samples : Monte Carlo samples of the inversion (>= 100). strict : raise
         :class:`ExperimentError` after saving if a stage failed (default: ``result.errors``).
+    measure : how the inversion reads the scan's L_s: ``"slip"`` (default), the tip's slip, as
+        the paper does; ``"travel"``, the contact's travel, the mark's extent (``invert``).
     kinematics_options, dent_options : extra keywords for :func:`measure_impact` and
         :func:`measure_dent` (names, and the values of the kinematics' options, checked at
         once). law : contact law of the engine comparison (checked even without ``flat``).
@@ -315,6 +321,7 @@ def analyze(
     """
     switches = {"flip_heights": flip_heights, "figures": figures, "gravity": gravity}
     check_scalars(n_samples, law, strict=strict, **switches)
+    check_measure(measure)
     run = checked_run(
         markers_path,
         scan_path,
@@ -330,10 +337,10 @@ def analyze(
     rod_note = implausible_rod(run.rod)
     if rod_note is not None:
         res.add_doubt(f"rod: {rod_note}")
-    res.options = _options_record(
+    res.options = options_record(
         flat=flat, geometry=geometry, up=up, marker_units=marker_units, pixel_size=pixel_size,
         height_unit=height_unit, flip_heights=flip_heights, gravity=gravity,
-        n_samples=n_samples, law=law, kinematics_options=kinematics_options,
+        n_samples=n_samples, law=law, measure=measure, kinematics_options=kinematics_options,
         dent_options=dent_options,
     )  # fmt: skip
     if run.markers is not None:
@@ -341,7 +348,7 @@ def analyze(
     if run.scan is not None:
         _scan_stage(res, run.scan, run.rod, run.dent)
     if res.kinematics is not None and res.dent is not None:
-        _inversion_stage(res, res.kinematics, res.dent, run.rod, gravity, n_samples)
+        _inversion_stage(res, res.kinematics, res.dent, run.rod, (gravity, measure), n_samples)
     if run.flat is not None:
         _model_stage(res, run.rod, run.flat, law)
     _plausibility_stage(res, int(run.kinematics.get("guard", _GUARD)))
@@ -352,29 +359,6 @@ def analyze(
     for doubt in res.doubts:  # seen where a notebook shows it, not only in res.ok
         warnings.warn(f"not ok: {doubt}", ImplausibleInputWarning, stacklevel=2)
     return res
-
-
-def _options_record(**options: Any) -> dict[str, Any]:
-    """The analysis's settings as given, JSON-ready (``ExperimentResult.options``): a material
-    by its name, a marker geometry by its markers [m] and labels, anything else JSON cannot
-    hold by its text."""
-
-    def plain(x: Any) -> Any:
-        if x is None or isinstance(x, bool | int | float | str):
-            return x
-        if isinstance(x, Material):
-            return x.name
-        if isinstance(x, MarkerGeometry):
-            return {"markers": plain(x.markers), "labels": plain(x.labels)}
-        if isinstance(x, dict):
-            return {str(k): plain(v) for k, v in x.items()}
-        if isinstance(x, list | tuple | np.ndarray):
-            return [plain(v) for v in np.asarray(x, dtype=object).tolist()]
-        if isinstance(x, np.generic):
-            return x.item()
-        return str(x)
-
-    return {k: plain(v) for k, v in options.items()}
 
 
 def _engine_comparison(rod: Rod, flat: Material, k: ImpactKinematics, law: str) -> dict[str, Any]:

@@ -9,6 +9,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 from impactlab.bodies import PAPER_ROD, Rod, Sphere
 from impactlab.bodies._checks import (
     INERTIA_RATIO_FLOOR,
@@ -144,6 +146,15 @@ def check_scalars(n_samples: Any, law: Any, **switches: Any) -> None:
             raise TypeError(f"{name} must be True or False, got {type(value).__name__} {value!r}")
 
 
+def check_measure(measure: Any) -> None:
+    """``measure``: how the inversion reads the scan's L_s, ``"slip"`` or ``"travel"``."""
+    if measure not in ("slip", "travel"):
+        raise ValueError(
+            "measure must be 'slip' (the tip's slip, the paper's reading of L_s) or 'travel' "
+            f"(the contact's travel, the mark's extent), got {measure!r}"
+        )
+
+
 def kinematics_options(options: Any) -> dict[str, Any]:
     """``kinematics_options`` checked: known keys of :func:`measure_impact` (ValueError naming
     an unknown one) with values of the right kind and range (each error naming the option)."""
@@ -237,3 +248,26 @@ def checked_run(
             None if scan_path is None else str(scan_path),
         ),
     )
+
+
+def options_record(**options: Any) -> dict[str, Any]:
+    """The analysis's settings as given, JSON-ready (``ExperimentResult.options``): a material
+    by its name, a marker geometry by its markers [m] and labels, anything else JSON cannot
+    hold by its text."""
+
+    def plain(x: Any) -> Any:
+        if x is None or isinstance(x, bool | int | float | str):
+            return x
+        if isinstance(x, Material):
+            return x.name
+        if isinstance(x, MarkerGeometry):
+            return {"markers": plain(x.markers), "labels": plain(x.labels)}
+        if isinstance(x, dict):
+            return {str(k): plain(v) for k, v in x.items()}
+        if isinstance(x, list | tuple | np.ndarray):
+            return [plain(v) for v in np.asarray(x, dtype=object).tolist()]
+        if isinstance(x, np.generic):
+            return x.item()
+        return str(x)
+
+    return {k: plain(v) for k, v in options.items()}
