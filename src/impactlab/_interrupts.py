@@ -1,12 +1,19 @@
 """Ctrl-C inside a compiled call: numba wraps a ``KeyboardInterrupt`` raised while a function
 address is dispatched into a ``SystemError`` ("returned a result with an exception set");
 these give it back as the interrupt it is, with its own class (``SweepTerminated`` for
-SIGTERM keeps its exit status)."""
+SIGTERM keeps its exit status). And Ctrl-C and SIGTERM held over a few statements that must
+run whole (a saved step and its bookkeeping), then delivered."""
 
 from __future__ import annotations
 
 import contextlib
-from collections.abc import Iterator
+import signal
+import threading
+from collections.abc import Callable, Iterator
+from typing import Any
+
+#: The signals a hold notes instead of handling.
+HELD = (signal.SIGINT, signal.SIGTERM)
 
 
 def interrupt_inside(exc: BaseException) -> KeyboardInterrupt | None:
@@ -31,3 +38,42 @@ def plain_interrupts() -> Iterator[None]:
         if ki is None:
             raise
         raise ki from None
+
+
+def hold(note: Callable[[int, Any], None]) -> dict[int, Any]:
+    """In the main thread, ``note`` handles ``HELD`` from now on; returns the handlers it
+    replaced (to :func:`release`). Ignored signals, handlers not set from Python and other
+    threads (where Python cannot set handlers) are left alone: {}."""
+    if threading.current_thread() is not threading.main_thread():
+        return {}
+    before: dict[int, Any] = {}
+    for sig in HELD:
+        handler = signal.getsignal(sig)
+        if handler in (signal.SIG_IGN, None):
+            continue
+        before[sig] = handler
+        signal.signal(sig, note)
+    return before
+
+
+def release(before: dict[int, Any], noted: list[int]) -> None:
+    """The handlers ``before`` back in place, then the first signal of ``noted`` raised again
+    (it reaches them at once); ``noted`` is emptied."""
+    for sig, handler in before.items():
+        signal.signal(sig, handler)
+    if noted:
+        first = noted[0]
+        noted.clear()
+        signal.raise_signal(first)
+
+
+@contextlib.contextmanager
+def signals_held() -> Iterator[None]:
+    """Within the block, Ctrl-C and SIGTERM are noted; when it ends, the first is delivered to
+    the handlers in place before (the block runs whole, in the main thread)."""
+    noted: list[int] = []
+    before = hold(lambda signum, frame: noted.append(signum))
+    try:
+        yield
+    finally:
+        release(before, noted)

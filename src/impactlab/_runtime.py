@@ -1,8 +1,9 @@
 """What ``import impactlab`` sets up before any compiled function is defined: numba's cache
 folder and the repair of a damaged entry (``impactlab._compiled_cache``), the notice while
-the engine compiles (``impactlab._compile_notice``) and the garbage collector's pause during
-that compilation (``impactlab._compile_gc``); in the ``impactlab`` command, a quiet Ctrl-C
-while it imports."""
+the engine compiles (``impactlab._compile_notice``), the garbage collector's pause during
+that compilation (``impactlab._compile_gc``) and its hold of Ctrl-C and SIGTERM
+(``impactlab._compile_signals``); in the ``impactlab`` command, a quiet Ctrl-C while it
+imports."""
 
 from __future__ import annotations
 
@@ -12,7 +13,7 @@ import sys
 from pathlib import Path
 from typing import Any
 
-from impactlab import _compile_gc, _compile_notice
+from impactlab import _compile_gc, _compile_notice, _compile_signals
 from impactlab._compiled_cache import repair_damaged_entries, use_cache_dir
 
 
@@ -55,3 +56,4 @@ use_cache_dir()
 repair_damaged_entries()
 _compile_notice.install()
 _compile_gc.install()
+_compile_signals.install()

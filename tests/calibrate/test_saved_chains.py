@@ -13,7 +13,12 @@ from typer.testing import CliRunner
 
 from impactlab.calibrate import CandidateModel, calibrate, parse_parameter
 from impactlab.calibrate.posterior import LogPosterior
-from impactlab.calibrate.statelock import CalibrationInterrupted, StateInUseError, state_lock
+from impactlab.calibrate.statelock import (
+    CalibrationInterrupted,
+    SavedChainError,
+    StateInUseError,
+    state_lock,
+)
 from impactlab.calibrate.synthetic import synthetic_measurements
 from impactlab.cli import app
 
@@ -185,3 +190,52 @@ def test_a_resumed_chain_reports_the_whole_chains_counts(template, tmp_path):
             fresh.failed_draws,
         )
         assert r.failures == fresh.failures
+
+
+def test_ctrl_c_inside_a_step_s_save_arrives_after_it(template, tmp_path, monkeypatch):
+    """A Ctrl-C while a step is saved waits for the step and its counts to be saved: the
+    resumed chain is the uninterrupted one, counts and all (before, a step could be saved
+    without its counts, or redone with its acceptances counted twice)."""
+    import os
+    import signal
+
+    from impactlab.calibrate import sampler
+
+    data = _data(template)
+    real = sampler._save_counts
+    calls = {"n": 0}
+
+    def save_counts(backend, post):  # type: ignore[no-untyped-def]
+        calls["n"] += 1
+        if calls["n"] == 5:
+            os.kill(os.getpid(), signal.SIGINT)
+        real(backend, post)
+
+    monkeypatch.setattr(sampler, "_save_counts", save_counts)
+    with pytest.raises(CalibrationInterrupted) as info:
+        _run(data, steps=20, state_dir=tmp_path)
+    assert info.value.step == 5  # the step being saved was saved whole
+    monkeypatch.undo()
+    resumed = _run(data, steps=20, state_dir=tmp_path)
+    whole = _run(data, steps=20)
+    np.testing.assert_array_equal(resumed.best.samples, whole.best.samples)
+    assert (resumed.best.evaluations, resumed.best.draws) == (
+        whole.best.evaluations,
+        whole.best.draws,
+    )
+
+
+def test_a_chain_damaged_in_place_is_refused_on_resume(template, tmp_path):
+    """A saved sample outside its prior (written over after the run) was used without a word."""
+    import h5py
+
+    data = _data(template)
+    _run(data, steps=10, state_dir=tmp_path)
+    (chain,) = tmp_path.glob("*.h5")
+    with h5py.File(chain, "r+") as f:
+        f["chain/chain"][3, 1, 0] = 5.0  # mu, outside uniform(0, 0.6)
+    with pytest.raises(SavedChainError, match=r"holds a sample outside its prior's support or not "
+                       r"finite \(step 3, walker 1: mu = 5\): damaged after it was written; it is "
+                       r"kept: restart=True discards it"):  # fmt: skip
+        _run(data, steps=20, state_dir=tmp_path)
+    assert _run(data, steps=20, state_dir=tmp_path, restart=True).best.steps == 20

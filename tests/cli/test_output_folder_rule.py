@@ -89,6 +89,33 @@ def test_simulate_replaces_its_own_files_and_marks_them(cli_main: Any, tmp_path:
     assert json.loads((out / "impact_result.json").read_text())["e"]["unit"] == "1"
 
 
+def test_an_interrupted_plot_leaves_the_earlier_run_s_files(
+    cli_main: Any, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Ctrl-C while the figures are drawn: none of the new run's files is written (the earlier
+    run's force-time figure had been replaced beside its impact_result.json and dent)."""
+    import os
+    import signal
+
+    from impactlab.dynamics import plotting
+
+    out = tmp_path / "plots"
+    assert cli_main(*ROD, str(out), "--json")[0] == 0
+    before = {p.name: p.read_bytes() for p in out.iterdir()}
+    real = plotting.plot_contact_path
+
+    def interrupted(result: Any) -> Any:
+        fig = real(result)
+        os.kill(os.getpid(), signal.SIGINT)
+        return fig
+
+    monkeypatch.setattr(plotting, "plot_contact_path", interrupted)
+    code, _, err = cli_main("simulate", "rod", "--angle", "45 deg", "--vy", "-1.41 m/s",
+                            "--plot", "--out", str(out))  # fmt: skip
+    assert code == 130, err
+    assert {p.name: p.read_bytes() for p in out.iterdir()} == before
+
+
 @pytest.mark.parametrize("name", ["impact_result.json", "impact_dent.png", "impact_dent.pdf"])
 def test_simulate_leaves_a_users_file_alone(cli_main: Any, tmp_path: Path, name: str) -> None:
     mine = tmp_path / name

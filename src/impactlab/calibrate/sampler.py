@@ -25,6 +25,7 @@ from typing import Any
 import emcee
 import numpy as np
 
+from impactlab._interrupts import signals_held
 from impactlab.calibrate.posterior import LogPosterior, initial_walkers
 from impactlab.calibrate.statelock import CalibrationInterrupted, SavedChainError, chain_in_use
 from impactlab.dynamics.input_checks import gravity_value
@@ -145,7 +146,7 @@ def _backend(
     state.parent.mkdir(parents=True, exist_ok=True)
     empty = state.is_file() and state.stat().st_size == 0
     if state.exists() and not empty and not restart:
-        backend = emcee.backends.HDFBackend(str(state), name="chain")
+        backend = _WholeStepBackend(str(state), name="chain")
         try:
             with backend.open() as f:
                 attrs = f["chain"].attrs
@@ -164,7 +165,40 @@ def _backend(
             raise SavedChainError(state, _changed(saved_parts, parts))
     if state.exists():
         state.unlink()
-    return emcee.backends.HDFBackend(str(state), name="chain"), False
+    return _WholeStepBackend(str(state), name="chain"), False
+
+
+class _WholeStepBackend(emcee.backends.HDFBackend):  # type: ignore[misc]
+    """emcee's HDF backend that saves a step and the log posterior's counts (``counted``) as
+    one: Ctrl-C or SIGTERM during the save arrives after it, so that a resumed chain never
+    redoes a step half saved (its acceptances counted twice, its random state advanced)."""
+
+    counted: LogPosterior | None = None
+
+    def save_step(self, state: Any, accepted: Any) -> None:
+        with signals_held():
+            super().save_step(state, accepted)
+            if self.counted is not None:
+                _save_counts(self, self.counted)
+
+
+def _check_samples(backend: Any, post: LogPosterior, state: Any) -> None:
+    """SavedChainError for a saved chain holding a sample that is not finite or lies outside
+    its prior's support: a chain damaged in place, which its file's own structure does not
+    show (every sample a chain accepts lies where its prior is positive)."""
+    chain = np.asarray(backend.get_chain(), dtype=np.float64)
+    flat = chain.reshape(-1, chain.shape[-1])
+    with np.errstate(all="ignore"):
+        bad = ~np.isfinite(flat).all(axis=1) | ~np.isfinite(post.log_prior(flat))
+    if bad.any():
+        i = int(np.argmax(bad))
+        step, walker = divmod(i, chain.shape[1])
+        values = ", ".join(f"{p.name} = {v:g}" for p, v in zip(post.params, flat[i], strict=True))
+        raise SavedChainError(
+            state,
+            f"holds a sample outside its prior's support or not finite (step {step}, walker "
+            f"{walker}: {values}): damaged after it was written",
+        )
 
 
 def _stamp(backend: Any, key: str, parts: dict[str, str]) -> None:
@@ -230,7 +264,10 @@ def run_chain(
     # the log posterior itself, not emcee's wrapper: that prints a traceback of any exception
     # (Ctrl-C included) before passing it on
     sampler.log_prob_fn = post
+    if state is not None:  # the counts of the steps saved, with them
+        backend.counted = post
     if resumed:
+        _check_samples(backend, post, state)
         done = backend.iteration
         start: Any = backend.get_last_sample()  # with its random state
         _load_counts(backend, post)
@@ -252,8 +289,6 @@ def run_chain(
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             chain = sampler.sample(start, iterations=max(steps - done, 0))
             for i, _ in enumerate(chain, done + 1):
-                if state is not None:  # the counts of the steps saved, with them
-                    _save_counts(backend, post)
                 if progress is not None and (i % every == 0 or i == steps):
                     progress(post.model.name, i, steps)
     except KeyboardInterrupt:

@@ -211,12 +211,18 @@ def check_replaceable(
         )
 
 
-def save_figure(fig: Any, path: Path, command: str, dpi: float) -> Path:
-    """Write the matplotlib figure ``fig`` to ``path`` (PNG or PDF by its suffix) whole
-    (``impactlab._files``), marked as written by ``impactlab COMMAND``; returns ``path``."""
+def figure_bytes(fig: Any, path: Path, command: str, dpi: float) -> bytes:
+    """The matplotlib figure ``fig`` as the file ``path`` holds it (PNG or PDF by its suffix),
+    marked as written by ``impactlab COMMAND``."""
     fmt = path.suffix.lower().lstrip(".")
     buf = io.BytesIO()
     key = "Creator" if fmt == "pdf" else "Software"
     fig.savefig(buf, format=fmt, dpi=dpi, metadata={key: mark(command)})
-    write_bytes_atomic(path, buf.getvalue())
+    return buf.getvalue()
+
+
+def save_figure(fig: Any, path: Path, command: str, dpi: float) -> Path:
+    """Write the matplotlib figure ``fig`` to ``path`` (PNG or PDF by its suffix) whole
+    (``impactlab._files``), marked as written by ``impactlab COMMAND``; returns ``path``."""
+    write_bytes_atomic(path, figure_bytes(fig, path, command, dpi))
     return path

@@ -16,11 +16,12 @@ from pathlib import Path
 
 from rich.text import Text
 
-from impactlab._files import write_text_atomic
+from impactlab._files import write_bytes_atomic, write_text_atomic
+from impactlab._interrupts import signals_held
 from impactlab._json import jsonable, to_json
 from impactlab.cli._common import SI_UNITS, console, emit
 from impactlab.cli.drop import missing_as_nan, report_drop
-from impactlab.cli.output_paths import check_replaceable, save_figure
+from impactlab.cli.output_paths import check_replaceable, figure_bytes
 from impactlab.dynamics import ImpactResult
 from impactlab.dynamics.drop_result import DropResult
 
@@ -47,30 +48,36 @@ def check_plot_folder(folder: Path) -> None:
 
 def _save(result: ImpactResult, data: dict[str, object], out: Path) -> list[str]:
     """The figures and ``impact_result.json`` written into ``out`` (made with its parents),
-    each whole and marked as impactlab simulate's; the paths written."""
+    each whole and marked as impactlab simulate's; the paths written. Everything is drawn
+    first, then written together with Ctrl-C held, so that an interrupted run leaves the
+    earlier run's files, not some of each."""
     from impactlab._mpl import pyplot
     from impactlab.dynamics import plotting
     from impactlab.experiment.checks import output_folder
 
     output_folder(out, "--out")
-    plt, files = pyplot(), []
+    plt, drawn = pyplot(), {}
     # no dent in the flat: the body yields first, or the impact leaves none (an elastic law)
     no_dent = not (result.delta_p > 0.0) or result.body_yields_first
     for name in FIGURES:
-        if no_dent and name == "dent":  # an earlier run's (checked replaceable) would mislead
-            for ext in FORMATS:
-                (out / f"impact_{name}.{ext}").unlink(missing_ok=True)
+        if no_dent and name == "dent":
             continue
         fig = getattr(plotting, f"plot_{name}")(result)  # the contact path: no dent there
         try:
             for ext in FORMATS:
-                path = save_figure(fig, out / f"impact_{name}.{ext}", "simulate", FIGURE_DPI)
-                files.append(str(path))
+                path = out / f"impact_{name}.{ext}"
+                drawn[path] = figure_bytes(fig, path, "simulate", FIGURE_DPI)
         finally:
             plt.close(fig)
     saved = out / RESULT_FILE
-    write_text_atomic(saved, json.dumps(to_json(data, SI_UNITS), indent=2))
-    return [*files, str(saved)]
+    with signals_held():
+        for path, content in drawn.items():
+            write_bytes_atomic(path, content)
+        if no_dent:  # an earlier run's dent (checked replaceable) would mislead
+            for ext in FORMATS:
+                (out / f"impact_dent.{ext}").unlink(missing_ok=True)
+        write_text_atomic(saved, json.dumps(to_json(data, SI_UNITS), indent=2))
+    return [*map(str, drawn), str(saved)]
 
 
 def report_result(result: ImpactResult | DropResult, *, out: Path | None, as_json: bool) -> None:
