@@ -81,7 +81,7 @@ def law_param_values(model: str, law: str, law_params: Any) -> dict[str, float]:
             f'{{ hardness = "105 HB" }}), got {law_params!r}'
         )
     contact_law = get_law(law)
-    units = {q.name: q.unit for q in contact_law.parameters if q.unit not in ("", "-")}
+    units = {q.name: q.unit for q in contact_law.parameters if q.unit not in ("", "-", "1")}
     try:
         given = {}
         for key, v in law_params.items():

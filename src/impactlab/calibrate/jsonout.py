@@ -71,7 +71,7 @@ def _extrapolated(found: Mapping[str, Any]) -> dict[str, Any]:
 
 def _law_params(law: str, given: Mapping[str, Any]) -> dict[str, Any]:
     try:
-        units = {q.name: q.unit for q in get_law(law).parameters if q.unit not in ("-", "")}
+        units = {q.name: q.unit for q in get_law(law).parameters if q.unit not in ("-", "", "1")}
     except (ValueError, AttributeError):
         units = {}
     return {

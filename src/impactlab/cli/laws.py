@@ -45,7 +45,7 @@ def _param_text(law: ContactLaw) -> str:
     if not law.parameters:
         return "none"
     return "\n".join(
-        f"{q.name} = {q.default_text}" + (f" [{q.unit}]" if q.unit not in ("", "-") else "")
+        f"{q.name} = {q.default_text}" + (f" [{q.unit}]" if q.unit not in ("", "-", "1") else "")
         for q in law.parameters
     )
 

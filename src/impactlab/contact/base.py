@@ -45,7 +45,9 @@ def _scalar_like(value: Any) -> bool:
 class Parameter:
     """A law parameter with its default, unit and meaning (shown by ``impactlab laws``).
 
-    A ``default`` of NaN means "taken from the contact pair"; ``default_note`` says how.
+    A ``default`` of NaN means "taken from the contact pair"; ``default_note`` says how. The
+    ``unit`` of a dimensionless parameter is ``"1"``, as everywhere in impactlab (``"-"``, an
+    engineering mark, is read as it).
     """
 
     name: str
@@ -53,6 +55,10 @@ class Parameter:
     unit: str
     description: str
     default_note: str = ""
+
+    def __post_init__(self) -> None:
+        if self.unit == "-":
+            object.__setattr__(self, "unit", "1")
 
     @property
     def default_text(self) -> str:
@@ -308,7 +314,7 @@ class ContactLaw(ABC):
                 continue
             if unit == "kgf/mm^2":  # a Brinell number, as a material takes it: "105 HB"
                 v = brinell_text(v)
-            values[name] = check_finite(name, v, "" if unit == "-" else unit)
+            values[name] = check_finite(name, v, "" if unit in ("-", "1") else unit)
         return values
 
     def _check_loading_curve(self, p: np.ndarray, pair: ContactPair, *, published: bool) -> None:

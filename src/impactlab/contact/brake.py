@@ -103,7 +103,7 @@ class Brake(ContactLaw):
         Parameter(
             "meyer_index",
             math.nan,
-            "-",
+            "1",
             "Meyer's strain-hardening index n (2 < n < 3), n_e = n - 2",
             default_note="meyer_index of the material that yields first",
         ),

@@ -48,7 +48,7 @@ class Ghaednia(ContactLaw):
         Parameter(
             "published_switch",
             0.0,
-            "-",
+            "1",
             "0: switch from Hertz to Eq. 16 where the curves cross (continuous, default); "
             "1: switch at delta* = 1.9 as published (force drops ~10 %)",
         ),

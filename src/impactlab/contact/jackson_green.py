@@ -46,14 +46,14 @@ class JacksonGreen(ContactLaw):
         Parameter(
             "published_switch",
             0.0,
-            "-",
+            "1",
             "0: switch from Hertz to the JG formula where the curves cross (continuous, "
             "default); 1: switch at delta* = 1.9 as published (force jumps +0.5 %)",
         ),
         Parameter(
             "elastic_decay",
             0.25,
-            "-",
+            "1",
             "coefficient k of exp(-k delta*^(5/12)) in the first term (JG 2005: 1/4; the "
             "paper's Eq. 16 uses 0.17)",
         ),

@@ -62,7 +62,7 @@ class KogutKomvopoulos(ContactLaw):
         Parameter(
             "published_switch",
             0.0,
-            "-",
+            "1",
             "0: switch from the elastic branch to Eq. 21 where Eq. 21 falls below it "
             "(continuous, default); 1: switch at delta/r' = 1.78 S_y/E* as published",
         ),

@@ -96,7 +96,7 @@ class Thornton(ContactLaw):
         Parameter(
             "limit_pressure_ratio",
             math.nan,
-            "-",
+            "1",
             "p_y / S_y, Thornton's limiting contact pressure over the yield strength",
             default_note="C(nu) = 1.295 exp(0.736 nu) (first yield, Green 2005)",
         ),
