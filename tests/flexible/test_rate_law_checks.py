@@ -71,3 +71,41 @@ def test_brake_rate_failure_names_the_rate() -> None:
     with pytest.raises(ValueError, match=r"rate 'cowper-symonds': .*k = .*hardness"):
         simulate_drop(ROD, law="brake", rate="cowper-symonds", law_params={"hardness": 40.0},
                       **DROP)  # fmt: skip
+
+
+def test_a_soft_rod_stays_soft_and_a_factor_of_one_is_no_rate() -> None:
+    """A copper rod on steel: the rate raised the rod's S_y 10.8 times (to 1.5 times the
+    flat's) and the rod's flattening came back as a dent in the flat; a law whose factor is
+    exactly 1 gives the drop without a rate law."""
+    import warnings
+
+    from impactlab.materials import COPPER_OFHC
+
+    rod = FlexibleRod.paper(material=COPPER_OFHC, mass=None, diameter=0.0176, n_axial=2,
+                            n_bending=4)  # fmt: skip
+    static = simulate_drop(rod, law="ghaednia", **DROP, history=False)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        fast = simulate_drop(rod, law="ghaednia", rate="johnson-cook", **DROP, history=False)
+        one = simulate_drop(rod, law="brake", rate=RateLaw.custom("johnson-cook", C=0.0, rate0=1.0),
+                            **DROP, history=False)  # fmt: skip
+    assert static.body_yields_first and fast.body_yields_first and fast.rate_factor > 1.0
+    assert fast.dent_depth == static.dent_depth  # the rod's flattening, with its own S_y
+    plain = simulate_drop(rod, law="brake", **DROP, history=False)
+    assert one.rate_factor == 1.0 and one.dent_depth == plain.dent_depth and one.e == plain.e
+
+
+def test_an_unconverged_rate_factor_is_not_ok(monkeypatch: pytest.MonkeyPatch) -> None:
+    import functools
+
+    import impactlab.dynamics.drop as D
+    from impactlab.contact.rate import RateFactorWarning
+
+    monkeypatch.setattr(D, "self_consistent_factor",
+                        functools.partial(D.self_consistent_factor, max_iter=1))  # fmt: skip
+    with pytest.warns(RateFactorWarning, match="did not converge in 1 drops"):
+        r = simulate_drop(ROD, rate="cowper-symonds", **DROP, history=False)
+    assert not r.ok
+    (said,) = [w for w in r.warnings if w.startswith("rate factor not converged: ")]
+    assert "the result rests on an unconverged yield strength" in said
+    assert said in r.to_dict()["warnings"]

@@ -122,14 +122,31 @@ def test_library_pairs_keep_the_smaller_sy_choice() -> None:
 
 
 def test_a_rate_raised_flat_still_yields_first() -> None:
-    """The rate factor raises the body's S_y where the body would yield first, by C(nu) S_y."""
-    flat = dataclasses.replace(FLAT, E=400e9)
-    for k in (1.0, 1.02, 1.5, 3.0):
+    """The rate factor raises the body's S_y where the raised flat would make the body yield
+    first, by C(nu) S_y; at k = 1 the pair is the one without a rate law."""
+    flat = dataclasses.replace(FLAT, E=400e9, yield_strength=250e6)  # the flat yields first
+    assert not body_yields_first(BALL, flat)
+    assert rate_materials(BALL, flat, 1.0)[0] == BALL
+    assert rate_materials(BALL, flat, 1.02)[0] == BALL  # the flat still yields first
+    for k in (1.02, 1.5, 3.0):
         body_k, flat_k = rate_materials(BALL, flat, k)
         assert not body_yields_first(body_k, flat_k)
-        assert first_yield_factor(0.2) * body_k.yield_strength >= (
-            BODY_MARGIN * first_yield_factor(0.45) * flat_k.yield_strength * (1 - 1e-12)
-        )
+        if body_k != BALL:  # raised where the order turned: with the margin
+            assert first_yield_factor(0.2) * body_k.yield_strength >= (
+                BODY_MARGIN * first_yield_factor(0.45) * flat_k.yield_strength * (1 - 1e-12)
+            )
+    assert rate_materials(BALL, flat, 1.5)[0] != BALL
+
+
+def test_a_body_that_yields_first_is_not_made_hard_by_the_flat_s_rate() -> None:
+    """A ball that yields before the flat statically (C(nu) S_y) keeps its S_y under any rate
+    factor: it was raised to 1.5 times the flat's (a copper rod on steel: 10.8 times its own),
+    and the result turned from the rod's flattening into a dent in the flat."""
+    flat = dataclasses.replace(FLAT, E=400e9)
+    assert body_yields_first(BALL, flat)
+    for k in (1.0, 1.13, 3.0):
+        body_k, flat_k = rate_materials(BALL, flat, k)
+        assert body_k == BALL and flat_k.yield_strength == k * flat.yield_strength
     # equal nu: the former 1.5 times the flat's S_y, bit for bit
     body_k, flat_k = rate_materials(AISI_201, AISI_1010, 3.0)
     assert body_k.yield_strength == BODY_MARGIN * (3.0 * 305e6) / 760e6 * 760e6

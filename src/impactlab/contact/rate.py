@@ -349,15 +349,28 @@ def check_rate_flat(law: RateLaw, flat: Material) -> None:
         )
 
 
+def _order_turned(body: Material, flat: Material, flat_k: Material) -> bool:
+    """Whether the rate-raised flat ``flat_k`` turns the order of the static pair: the flat
+    yielded first and the body now would, or the body's S_y was above the flat's and is not
+    above the raised one's."""
+    if body_yields_first(body, flat):
+        return False
+    overtaken = flat.yield_strength < body.yield_strength <= flat_k.yield_strength
+    return overtaken or body_yields_first(body, flat_k)
+
+
 def rate_materials(body: Material, flat: Material, k: float) -> tuple[Material, Material]:
     """(body, flat) with the flat's yield strength multiplied by k >= 1.
 
     impactlab's contact pair takes the yield strength of the body that yields first
     (``materials.body_yields_first``: the smaller C(nu) S_y); a rate-raised flat can exceed the
     rod's static yield strength, but the rod is rate-sensitive too, so its static value is no
-    cap: where the body's S_y is not above the flat's or the body would yield first, its yield
-    strength is raised to ``rate_factor.body_margin`` (1.5 for equal Poisson's ratios) times the
-    flat's (only the flat yields, as the measured dents say). A yield strength
+    cap: where the raised flat's S_y reaches the body's, or makes the body yield first, where
+    the static pair had the flat yield first (:func:`_order_turned`), the body's yield strength
+    is raised to ``rate_factor.body_margin`` (1.5 for equal Poisson's ratios) times the flat's
+    (only the flat yields, as the measured dents say). A body that yields first already (a
+    copper rod on steel) is left as it is, and so is every body at k = 1: a factor of 1 is the
+    pair without a rate law. A yield strength
     at or above its E is refused (ValueError; ``rate_factor.RateLimit`` gives the largest k);
     the materials' plausibility warnings are not issued for these derived copies. The Brinell
     hardness (Brake's law) scales with the yield strength of the same material: hardness is a
@@ -372,7 +385,7 @@ def rate_materials(body: Material, flat: Material, k: float) -> tuple[Material, 
             yield_strength=k * flat.yield_strength,
             brinell_hardness=k * flat.brinell_hardness,
         )
-        if body.yield_strength <= flat_k.yield_strength or body_yields_first(body, flat_k):
+        if _order_turned(body, flat, flat_k):
             f = body_margin(body, flat) * flat_k.yield_strength / body.yield_strength
             body = dataclasses.replace(
                 body,

@@ -202,6 +202,8 @@ class DropResult(DerivedOutputs, ResultDisplay):
     #: GRAVITY_DOMINATED set by e > 1 through the removed gravity impulse alone
     #: (``drop_gravity.e_lifted_by_gravity``; m g T within 0.1 of the normal impulse)
     _e_lifted: bool = field(default=False, repr=False, compare=False)
+    #: the rate factor's doubt: why its self-consistent iteration did not converge ("": it did)
+    _rate_doubt: str = field(default="", repr=False, compare=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "flags", ResultFlag(int(self.flags)))
@@ -243,13 +245,14 @@ class DropResult(DerivedOutputs, ResultDisplay):
     @property
     def body_yields_first(self) -> bool | None:
         """True when the rod's material yields before the flat's
-        (``materials.body_yields_first``; never with a rate law, which raises the rod's S_y:
-        ``contact.rate.rate_materials``): ``dent_depth`` and the ``dents`` are then the rod's
-        permanent flattening and the flat stays elastic (``warnings`` says so; ``dent()``
-        refuses); None for a drop that ``simulate`` did not return."""
+        (``materials.body_yields_first``; with a rate law as without: the raised flat keeps
+        the static pair's order, ``contact.rate.rate_materials``): ``dent_depth`` and the
+        ``dents`` are then the rod's permanent flattening and the flat stays elastic
+        (``warnings`` says so; ``dent()`` refuses); None for a drop that ``simulate`` did not
+        return."""
         if self._call is None:
             return None
-        return self.rate is None and body_yields_first(self._call[0].material, self._call[1])
+        return body_yields_first(self._call[0].material, self._call[1])
 
     def _flattening(self) -> str:
         """``dynamics.dent.body_flattening`` of this drop (``""``: the flat yields first)."""
@@ -282,14 +285,17 @@ class DropResult(DerivedOutputs, ResultDisplay):
         said = messages(flags, extrapolation=how_far, status=status, reference=reference)
         if self._e_lifted:  # in bit order: ENERGY_GAIN (1) is never set with it
             said = (lifted_e_warning(self.e, self.e_raw), *said)
+        if self._rate_doubt:
+            said = (*said, f"rate factor not converged: {self._rate_doubt}")
         clause = self._flattening()
         return (*said, flattening_warning(clause)) if clause else said
 
     @property
     def ok(self) -> bool:
         """True unless a flag says the totals are not meaningful (as ImpactResult's:
-        LAW_EXTRAPOLATED, an advisory flag, leaves it True)."""
-        return int(self.flags) & ~ADVISORY_FLAGS == 0
+        LAW_EXTRAPOLATED, an advisory flag, leaves it True) or the rate factor's
+        self-consistent iteration did not converge (``warnings`` says how far)."""
+        return int(self.flags) & ~ADVISORY_FLAGS == 0 and not self._rate_doubt
 
     @property
     def energy_balance(self) -> dict[str, float]:

@@ -152,8 +152,20 @@ def assemble_drop_result(
         references=references,
         _law=(model.law_id, np.asarray(model.params)),
         _e_lifted=lifted,
+        _rate_doubt=rate_doubt(rate[1]),
         **inputs,
         **{_RENAMED_OUTPUTS.get(k, k): v for k, v in o.items() if k not in skip},
+    )
+
+
+def rate_doubt(factor: Any) -> str:
+    """Why a rate factor is doubtful ("" where its fixed point converged, or there is none)."""
+    if factor is None or factor.converged:
+        return ""
+    return (
+        f"the self-consistent rate factor k = {factor.k:.6g} is the closest iterate of "
+        f"{factor.iterations} drop(s), its relative change {factor.change:.2g}; the result "
+        "rests on an unconverged yield strength"
     )
 
 
