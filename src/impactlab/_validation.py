@@ -34,6 +34,11 @@ from impactlab._input_limits import MAX_GRAVITY
 from impactlab.units import is_quantity, magnitude
 
 
+class MissingExtraError(ImportError, ValueError):
+    """An optional extra that is not installed; the message names the package and the pip
+    command. A ValueError too: the command line says it in one line (exit status 2)."""
+
+
 class ImplausibleInputWarning(UserWarning):
     """An input that is possible but implausible (most likely a unit mistake): a tip radius
     over half a metre, a rod longer than 10 m, an impact faster than 100 m/s, ... The

@@ -114,7 +114,11 @@ def run_cmd(
     ] = None,
     quiet: _Quiet = False,
     netcdf: Annotated[
-        Path | None, typer.Option("--netcdf", help="Also export to NetCDF-4 (.nc, .nc4).")
+        Path | None,
+        typer.Option(
+            "--netcdf",
+            help="Also export to NetCDF-4 (.nc, .nc4; needs pip install 'impactlab[netcdf]').",
+        ),
     ] = None,
     plot: Annotated[
         Path | None, typer.Option("--plot", help="Write plots into this folder.")

@@ -54,6 +54,9 @@ def check_run_paths(out: Path | None, netcdf: Path | None) -> None:
             csv = ""
         export_suffix(netcdf, "--netcdf", ("NetCDF-4",), csv)
         check_export_file(netcdf, "--netcdf")
+        from impactlab.sweep.netcdf import require_netcdf
+
+        require_netcdf()  # before the study runs
 
 
 def refuse_none_ok(res: SweepResult, ds: Any) -> None:

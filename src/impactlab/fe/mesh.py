@@ -21,6 +21,8 @@ from typing import Any
 
 import numpy as np
 
+from impactlab._validation import MissingExtraError
+
 #: CAX4 faces as pairs of local corner indices (CalculiX/Abaqus face numbering S1..S4).
 _FACES = ((0, 1), (1, 2), (2, 3), (3, 0))
 
@@ -149,7 +151,7 @@ def build_mesh(spec: MeshSpec) -> Mesh:
     try:
         import gmsh
     except ImportError as exc:  # pragma: no cover - depends on the environment
-        raise ImportError(
+        raise MissingExtraError(
             "impactlab.fe needs the gmsh Python package: pip install 'impactlab[fe]' "
             f"(or pip install gmsh); import failed: {exc}"
         ) from None

@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import xarray as xr
 
+from impactlab._validation import MissingExtraError
 from impactlab.sweep.filewrite import library_write_error, write_atomic
 from impactlab.sweep.inputs import INPUTS
 from impactlab.sweep.slabs import slabs, store_chunks
@@ -138,6 +139,20 @@ def export_file(ds: xr.Dataset | str | Path | SweepResult, path: str | Path) -> 
     return export_netcdf(ds, path)
 
 
+def require_netcdf() -> Any:
+    """The netCDF4 module; :class:`~impactlab._validation.MissingExtraError` naming the extra
+    to install where it is missing (the locked xarray raised a bare ModuleNotFoundError)."""
+    try:
+        import netCDF4
+    except ImportError as exc:
+        raise MissingExtraError(
+            "NetCDF export needs the netCDF4 package, an optional extra: pip install "
+            f"'impactlab[netcdf]' ({exc}); a CSV table needs none: impactlab sweep export "
+            "STORE table.csv"
+        ) from None
+    return netCDF4
+
+
 def export_netcdf(ds: xr.Dataset | str | Path | SweepResult, path: str | Path) -> Path:
     """Write the Dataset (or the store at a path: :func:`as_dataset`) to NetCDF-4 (strings
     kept; dictionary attributes become JSON text), its numeric arrays compressed (zlib level
@@ -145,8 +160,9 @@ def export_netcdf(ds: xr.Dataset | str | Path | SweepResult, path: str | Path) -
     chunk by chunk, never whole. Written whole or not at all; ``path`` ends in ``.nc`` or
     ``.nc4``, and is no file that a sweep export did not write (ValueError:
     :func:`check_replaceable`)."""
-    ds = as_dataset(ds)
     check_suffix(path, "NetCDF file", ("NetCDF-4",))
+    require_netcdf()
+    ds = as_dataset(ds)
     check_replaceable(path, "NetCDF file")
     out = Path(path)
 
@@ -171,13 +187,9 @@ def _write_netcdf(ds: xr.Dataset, path: Path, encoding: dict[str, dict[str, Any]
     """``ds.to_netcdf`` with a chunk cache of :data:`NETCDF_CHUNK_CACHE_BYTES` per array (the
     setting is the library's, restored after); the library's failure to write (a full disk)
     as an OSError (:func:`~impactlab.sweep.filewrite.library_write_error`)."""
-    try:
-        import netCDF4
-    except ImportError:  # xarray says what is missing
-        ds.to_netcdf(path, engine="netcdf4", encoding=encoding)
-        return
-    size, slots, preemption = netCDF4.get_chunk_cache()
-    netCDF4.set_chunk_cache(NETCDF_CHUNK_CACHE_BYTES, slots, preemption)
+    nc = require_netcdf()
+    size, slots, preemption = nc.get_chunk_cache()
+    nc.set_chunk_cache(NETCDF_CHUNK_CACHE_BYTES, slots, preemption)
     try:
         ds.to_netcdf(path, engine="netcdf4", encoding=encoding)
     except RuntimeError as exc:  # "NetCDF: HDF error" (a full disk): no errno of its own
@@ -185,7 +197,7 @@ def _write_netcdf(ds: xr.Dataset, path: Path, encoding: dict[str, dict[str, Any]
             raise
         raise library_write_error(exc, path, "the NetCDF library") from exc
     finally:
-        netCDF4.set_chunk_cache(size, slots, preemption)
+        nc.set_chunk_cache(size, slots, preemption)
 
 
 def _nc_encoding(
