@@ -1,7 +1,7 @@
 """What ``import impactlab`` sets up before any compiled function is defined: numba's cache
 folder and the repair of a damaged entry (``impactlab._compiled_cache``), the notice while
 the engine compiles (``impactlab._compile_notice``), the garbage collector's pause during
-that compilation (``impactlab._compile_gc``) and its hold of Ctrl-C and SIGTERM
+that compilation (``impactlab._compile_gc``) and its watch of Ctrl-C and SIGTERM
 (``impactlab._compile_signals``); in the ``impactlab`` command, a quiet Ctrl-C while it
 imports."""
 

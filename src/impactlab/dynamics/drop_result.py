@@ -68,6 +68,10 @@ def _contact_text(c: ContactRecord) -> str:
     )
 
 
+#: How a drop's warning begins where its rate factor did not converge (the drop is not ok).
+RATE_DOUBT = "rate factor not converged: "
+
+
 @dataclass(frozen=True, eq=False, repr=False)
 class DropResult(DerivedOutputs, ResultDisplay):
     """The outcome of one drop (SI units: ``result.units``, each field's; ``print(result)``
@@ -286,7 +290,7 @@ class DropResult(DerivedOutputs, ResultDisplay):
         if self._e_lifted:  # in bit order: ENERGY_GAIN (1) is never set with it
             said = (lifted_e_warning(self.e, self.e_raw), *said)
         if self._rate_doubt:
-            said = (*said, f"rate factor not converged: {self._rate_doubt}")
+            said = (*said, RATE_DOUBT + self._rate_doubt)
         clause = self._flattening()
         return (*said, flattening_warning(clause)) if clause else said
 

@@ -105,9 +105,10 @@ def _rate_configuration(law: RateLaw) -> Configuration:
         True,
         law,
         f"as 'flexible rod', the flat's yield strength raised by the self-consistent factor of "
-        f"{law.text} (impactlab.contact.rate), and the rod's, where it is not above the raised "
-        "flat's or the rod would yield first, to 1.5 times the raised flat's (more where their "
-        "Poisson's ratios differ), so that only the flat yields, as the measured dents say",
+        f"{law.text} (impactlab.contact.rate), and the rod's, where the raised flat would "
+        "overtake it, to 1.5 times the raised flat's (more where their Poisson's ratios "
+        "differ), so that a flat that yields first still does, as the measured dents say (a "
+        "rod that yields first is left as it is)",
     )
 
 

@@ -28,9 +28,9 @@ NOTHING_TUNED = (
     "nothing is tuned: every configuration runs each drop with its own body, materials, "
     "incoming state and measured mu (the local Coulomb coefficient), the library's contact law "
     "and constants, gravity on; a rate row raises the flat's yield strength by its rate factor "
-    "and, where the rod's is not above the raised flat's or the rod would yield first, the "
-    "rod's to 1.5 times the raised flat's (more where their Poisson's ratios differ), so that "
-    "only the flat yields, as the measured dents say"
+    "and, where the raised flat would overtake the rod's, the rod's to 1.5 times the raised "
+    "flat's (more where their Poisson's ratios differ), so that a flat that yields first still "
+    "does, as the measured dents say (a rod that yields first is left as it is)"
 )
 #: How z is formed, stated with every explanation.
 Z_DEFINITION = (

@@ -39,7 +39,7 @@ from impactlab.calibrate.models import (
 )
 from impactlab.contact.kernels import P_ESTAR, P_NU, P_R, P_SY
 from impactlab.contact.rate import RateLaw
-from impactlab.dynamics.drop_result import DropResult
+from impactlab.dynamics.drop_result import RATE_DOUBT, DropResult
 from impactlab.dynamics.input_checks import gravity_value
 from impactlab.explain.configurations import Configuration
 from impactlab.flags import FLAG_LAW_EXTRAPOLATED
@@ -209,6 +209,11 @@ def run_on_drop(
     result = case.results[0] if case.results else None
     notes = tuple(dict.fromkeys(case.warnings))
     counts = case.modes[0] if case.modes else None
+    doubt = [w for w in getattr(result, "warnings", ()) if w.startswith(RATE_DOUBT)]
+    if code == 0 and doubt:  # a drop whose rate factor did not converge: not ok
+        extrapolated = bool(pred.extrapolated is not None and pred.extrapolated[0, 0])
+        return Outcome(f"not ok: {doubt[0]}", False, values, unsupported, result, extrapolated,
+                       notes, case.body_refused, counts)  # fmt: skip
     if code == 0:
         extrapolated = bool(pred.extrapolated is not None and pred.extrapolated[0, 0])
         return Outcome("ok", True, values, unsupported, result, extrapolated, notes,
