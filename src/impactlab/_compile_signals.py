@@ -23,7 +23,7 @@ import threading
 from typing import Any
 
 from impactlab._compile_notice import module_of, register
-from impactlab._interrupts import HELD
+from impactlab._interrupts import hold, restore
 
 #: The package whose compilation is watched.
 PACKAGE = "impactlab."
@@ -31,7 +31,7 @@ PACKAGE = "impactlab."
 
 class SignalWatch:
     """Counts nested compilations; while the outermost one of ``PACKAGE`` runs in the main
-    thread, ``HELD`` signals are noted on their way to the handlers in place before."""
+    thread, SIGINT and SIGTERM are noted on their way to the handlers in place before."""
 
     def __init__(self) -> None:
         self.depth = 0
@@ -63,11 +63,7 @@ class SignalWatch:
         self.depth += 1
         if self.depth != 1 or not module_of(event).startswith(PACKAGE):
             return
-        for sig in HELD:
-            handler = signal.getsignal(sig)
-            if handler not in (signal.SIG_IGN, None):  # ignored, or not set from Python: left
-                self.before[sig] = handler
-                signal.signal(sig, self.deliver)
+        self.before = hold(self.deliver)
         if self.before:
             self.hook, sys.unraisablehook = sys.unraisablehook, self.unraisable
 
@@ -79,9 +75,8 @@ class SignalWatch:
         if came_through:
             self.noted.clear()
         if self.depth == 0 and self.before:
-            before, self.before = self.before, {}
-            for sig, handler in before.items():
-                signal.signal(sig, handler)
+            restore(self.before)
+            self.before = {}
             sys.unraisablehook, self.hook = self.hook or sys.__unraisablehook__, None
         if self.noted and not came_through:  # dropped on its way (an llvmlite callback)
             first = self.noted[0]

@@ -42,7 +42,7 @@ def plain_interrupts() -> Iterator[None]:
 
 def hold(note: Callable[[int, Any], None]) -> dict[int, Any]:
     """In the main thread, ``note`` handles ``HELD`` from now on; returns the handlers it
-    replaced (to :func:`release`). Ignored signals, handlers not set from Python and other
+    replaced (to :func:`restore`). Ignored signals, handlers not set from Python and other
     threads (where Python cannot set handlers) are left alone: {}."""
     if threading.current_thread() is not threading.main_thread():
         return {}
@@ -56,15 +56,10 @@ def hold(note: Callable[[int, Any], None]) -> dict[int, Any]:
     return before
 
 
-def release(before: dict[int, Any], noted: list[int]) -> None:
-    """The handlers ``before`` back in place, then the first signal of ``noted`` raised again
-    (it reaches them at once); ``noted`` is emptied."""
+def restore(before: dict[int, Any]) -> None:
+    """The handlers ``before`` (from :func:`hold`) back in place."""
     for sig, handler in before.items():
         signal.signal(sig, handler)
-    if noted:
-        first = noted[0]
-        noted.clear()
-        signal.raise_signal(first)
 
 
 @contextlib.contextmanager
@@ -76,4 +71,6 @@ def signals_held() -> Iterator[None]:
     try:
         yield
     finally:
-        release(before, noted)
+        restore(before)
+        if noted:
+            signal.raise_signal(noted[0])  # it reaches the handlers restored, at once
