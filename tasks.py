@@ -81,6 +81,11 @@ _LOCK: list[str | Path] = [
 def _env() -> dict[str, str]:
     env = dict(os.environ)
     env.setdefault("MPLBACKEND", "Agg")
+    # Python's bytecode caches (__pycache__, ignored by git) are written even where
+    # PYTHONDONTWRITEBYTECODE is set: without them every test worker rewrites the asserts of
+    # all ~750 test modules (about 20 s of CPU each) and every subprocess of the suite
+    # compiles impactlab's modules from source again
+    env.pop("PYTHONDONTWRITEBYTECODE", None)
     return env
 
 

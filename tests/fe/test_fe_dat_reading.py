@@ -2,15 +2,14 @@
 drops its letter: ``4.286203-101``), nodal blocks with rows missing (a ``.dat`` file cut at a
 line's end inside its last block, read before as a converged run with a wrong dent), and an
 ``IMPACTLAB_CCX`` that is not CalculiX (``/bin/true``: reported before as a run that did not
-converge, cached under the version "unknown"). Stand-in ccx scripts replace CalculiX, except
-in the test that cuts a real run's output (skipped without ccx)."""
+converge, cached under the version "unknown"). Stand-in ccx scripts replace CalculiX (a real
+run's output cut inside its last block: ``tests/fe/test_fe_runs.py``)."""
 
 from __future__ import annotations
 
 import os
 import re
 import shutil
-import sys
 from pathlib import Path
 from typing import Any
 
@@ -149,34 +148,6 @@ def test_a_missing_surface_block_is_refused(tmp_path: Path, monkeypatch: Any) ->
     deck = problem.deck_spec(problem.mesh_spec())
     with pytest.raises(DamagedOutputError, match="no displacements of set NFSURF at time 1, whose"):
         fe_run.assemble(problem, mesh, deck, out)
-
-
-@pytest.mark.skipif(shutil.which("ccx") is None, reason="ccx (CalculiX) is not installed")
-def test_a_real_run_cut_inside_its_last_block_is_refused(tmp_path: Path, monkeypatch: Any) -> None:
-    """CalculiX's own output, cut at a line's end 40 lines into its last surface block (read
-    before as a converged run); the whole output is read as before."""
-    pytest.importorskip("gmsh", reason="impactlab.fe needs the gmsh package (the fe extra)")
-    cut = tmp_path / "ccx"
-    cut.write_text(
-        "#!/bin/sh\n"
-        f'if [ "$1" = "-v" ]; then exec {shutil.which("ccx")} -v; fi\n'
-        f'{shutil.which("ccx")} "$@"; rc=$?\n'
-        f"{sys.executable} - <<'PY'\n"
-        "lines = open('job.dat').read().split('\\n')\n"
-        "last = [i for i, l in enumerate(lines) if 'for set NFSURF and time' in l][-1]\n"
-        "open('job.dat', 'w').write('\\n'.join(lines[: last + 40]) + '\\n')\n"
-        "PY\n"
-        "exit $rc\n"
-    )
-    cut.chmod(0o755)
-    kwargs: dict[str, Any] = {"delta_max": 3e-8, "unload": False, **ELASTIC}
-    monkeypatch.setenv("IMPACTLAB_CCX", str(cut))
-    with pytest.raises(DamagedRunsError, match=r"set NFSURF at time 1 has 38 rows where \d+ "):
-        indent(AISI_1010, cache_dir=tmp_path / "cut", **kwargs)
-    assert not list((tmp_path / "cut").glob("*.npz"))
-    monkeypatch.delenv("IMPACTLAB_CCX")
-    (whole,) = indent(AISI_1010, cache_dir=tmp_path / "whole", **kwargs)
-    assert whole.converged and len(list((tmp_path / "whole").glob("*.npz"))) == 1
 
 
 @pytest.mark.parametrize("program", ["/bin/true", "/bin/echo"])

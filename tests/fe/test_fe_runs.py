@@ -2,16 +2,18 @@
 
 Skipped (with the reason) when ccx or gmsh is missing; impactlab's own modules are imported
 unconditionally, so a broken import fails. The smoke part is four ccx runs, about 110 s of
-CPU: one complete elastic run shared by the elastic checks, one call running the frictional
-loading twice in parallel (friction and repeatability), and the paper's pair to 10 delta_c;
-the long checks (finer meshes, 1000 delta_c: 3-15 minutes of ccx each) run only with
-``IMPACTLAB_FE_LONG=1``, outside the test suite's time budget.
+CPU: one complete elastic run shared by the elastic checks (and, its output cut, by the check
+that a damaged ``.dat`` is refused), one call running the frictional loading twice in
+parallel (friction and repeatability), and the paper's pair to 10 delta_c; the long checks
+(finer meshes, 1000 delta_c: 3-15 minutes of ccx each) run only with ``IMPACTLAB_FE_LONG=1``,
+outside the test suite's time budget.
 """
 
 from __future__ import annotations
 
 import os
 import shutil
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -22,7 +24,7 @@ from impactlab.fe import run as fe_run
 from impactlab.fe.ccx import RunOutput
 from impactlab.fe.mesh import build_mesh
 from impactlab.fe.problem import make_problem
-from impactlab.fe.run import assemble
+from impactlab.fe.run import DamagedRunsError, assemble
 from impactlab.materials import AISI_201, AISI_1010
 
 pytest.importorskip("gmsh", reason="impactlab.fe needs the gmsh package (the fe extra)")
@@ -144,6 +146,46 @@ def test_truncated_run_is_marked_not_converged(elastic):
     bad = assemble(loading_only, mesh, deck, out)
     assert not bad.converged and bad.last_converged_delta < problem.delta_max
     assert "NOT CONVERGED" in bad.status()
+
+
+def _replaying_ccx(folder: Path, files: Path, cut_at: int | None) -> str:
+    """A stand-in ``ccx`` that answers ``-v`` with CalculiX's own and, for a run, puts the
+    real run's ``job.dat`` and ``job.sta`` from ``files`` in its place (the same problem's
+    deck), the ``.dat`` cut at a line's end ``cut_at`` lines into its last surface block."""
+    exe = folder / "ccx"
+    cut = (
+        ""
+        if cut_at is None
+        else f"{sys.executable} - <<'PY'\n"
+        "lines = open('job.dat').read().split('\\n')\n"
+        "last = [i for i, l in enumerate(lines) if 'for set NFSURF and time' in l][-1]\n"
+        f"open('job.dat', 'w').write('\\n'.join(lines[: last + {cut_at}]) + '\\n')\n"
+        "PY\n"
+    )
+    exe.write_text(
+        "#!/bin/sh\n"
+        f'if [ "$1" = "-v" ]; then exec {shutil.which("ccx")} -v; fi\n'
+        f"cp {files}/job.dat {files}/job.sta .\n{cut}exit 0\n"
+    )
+    exe.chmod(0o755)
+    return str(exe)
+
+
+def test_a_real_run_cut_inside_its_last_block_is_refused(elastic, tmp_path, monkeypatch):
+    """CalculiX's own output (the elastic run's), cut at a line's end 40 lines into its last
+    surface block (read before as a converged run): refused, nothing cached; the whole
+    output, through the same stand-in, is read as the run itself."""
+    res, problem, base = elastic
+    files = base / "files" / "run0"
+    monkeypatch.setenv("IMPACTLAB_CCX", _replaying_ccx(tmp_path, files, 40))
+    with pytest.raises(DamagedRunsError, match=r"set NFSURF at time \S+ has 38 rows where \d+ "):
+        indent(AISI_1010, delta_max=problem.delta_max, cache_dir=tmp_path / "cut", **ELASTIC)
+    assert not list((tmp_path / "cut").glob("*.npz"))
+    monkeypatch.setenv("IMPACTLAB_CCX", _replaying_ccx(tmp_path, files, None))
+    (whole,) = indent(AISI_1010, delta_max=problem.delta_max, cache_dir=tmp_path / "w", **ELASTIC)
+    assert whole.converged and len(list((tmp_path / "w").glob("*.npz"))) == 1
+    np.testing.assert_array_equal(whole.loading_force, res.loading_force)
+    np.testing.assert_array_equal(whole.dent_z, res.dent_z)
 
 
 def test_friction_stiffens_the_elastic_loading_slightly(elastic, frictional):
