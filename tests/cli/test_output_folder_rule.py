@@ -5,6 +5,8 @@ left as it is, and the command stops before any work with one line naming it."""
 from __future__ import annotations
 
 import json
+import shutil
+import sys
 from pathlib import Path
 from typing import Any
 
@@ -79,18 +81,39 @@ def test_the_refusal_names_the_files_and_the_option(tmp_path: Path) -> None:
 # --- simulate --plot ----------------------------------------------------------------------------
 
 
-def test_simulate_replaces_its_own_files_and_marks_them(cli_main: Any, tmp_path: Path) -> None:
+@pytest.fixture(scope="module")
+def earlier_plots(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The folder of one ``simulate --plot --json`` run (``ROD``), shared: the tests below work
+    on copies of it."""
+    from impactlab.cli import main
+
+    out = tmp_path_factory.mktemp("earlier") / "plots"
+    with pytest.MonkeyPatch.context() as mp:
+        mp.delenv("IMPACTLAB_DEBUG", raising=False)
+        mp.setattr(sys, "argv", ["impactlab", *ROD, str(out), "--json"])
+        code: object = 0
+        try:
+            main()
+        except SystemExit as exc:
+            code = exc.code or 0
+    assert code == 0 and (out / "impact_result.json").exists(), code
+    return out
+
+
+def test_simulate_replaces_its_own_files_and_marks_them(
+    cli_main: Any, tmp_path: Path, earlier_plots: Path
+) -> None:
     out = tmp_path / "plots"
-    for _ in range(2):  # the second run replaces the first one's files
-        code, _, err = cli_main(*ROD, str(out), "--json")
-        assert code == 0, err
+    shutil.copytree(earlier_plots, out)
+    code, _, err = cli_main(*ROD, str(out), "--json")  # replaces the earlier run's files
+    assert code == 0, err
     assert written_by(out / "impact_force_time.png", "simulate")
     assert written_by(out / "impact_dent.pdf", "simulate")
     assert json.loads((out / "impact_result.json").read_text())["e"]["unit"] == "1"
 
 
 def test_an_interrupted_plot_leaves_the_earlier_run_s_files(
-    cli_main: Any, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+    cli_main: Any, tmp_path: Path, earlier_plots: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     """Ctrl-C while the figures are drawn: none of the new run's files is written (the earlier
     run's force-time figure had been replaced beside its impact_result.json and dent)."""
@@ -100,7 +123,7 @@ def test_an_interrupted_plot_leaves_the_earlier_run_s_files(
     from impactlab.dynamics import plotting
 
     out = tmp_path / "plots"
-    assert cli_main(*ROD, str(out), "--json")[0] == 0
+    shutil.copytree(earlier_plots, out)
     before = {p.name: p.read_bytes() for p in out.iterdir()}
     real = plotting.plot_contact_path
 

@@ -4,6 +4,7 @@ imports; the other checks run its ``main`` in this process (the ``cli_main`` fix
 
 from __future__ import annotations
 
+import functools
 import os
 import subprocess
 import sys
@@ -15,7 +16,10 @@ import pytest
 CliMain = Callable[..., tuple[int, str, str]]
 
 
+@functools.cache
 def _run(*args: str) -> subprocess.CompletedProcess[str]:
+    """``impactlab ARGS`` in a subprocess; run once for the same ``args`` (two tests check
+    ``materials --bogus``)."""
     env = dict(os.environ, MPLBACKEND="Agg")
     env.pop("IMPACTLAB_DEBUG", None)
     return subprocess.run(

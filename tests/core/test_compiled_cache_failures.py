@@ -75,7 +75,12 @@ def plus_one(x):
     return x + 1.0
 
 
-print(plus_one(1.0))
+@njit(cache=True)
+def plus_two(x):
+    return x + 2.0
+
+
+print(plus_one(1.0), plus_two(1.0))
 """
 
 
@@ -107,10 +112,10 @@ def test_the_temporary_fallback_is_private_to_the_user(
     assert fallback_cache_dir() == planted
 
 
-@pytest.mark.parametrize("suffix", [".nbi", ".nbc"])
-def test_a_truncated_cache_file_is_compiled_again(tmp_path: Path, suffix: str) -> None:
+def test_a_truncated_cache_file_is_compiled_again(tmp_path: Path) -> None:
     """numba raised UnpicklingError (a truncated data file) or EOFError (an emptied index,
-    which the command line printed as 'aborted') on every run."""
+    which the command line printed as 'aborted') on every run. One run damages both: the index
+    of ``plus_one`` and the data file of ``plus_two``."""
     (tmp_path / "cached_mod.py").write_text(_MODULE)
     env = {**os.environ, "NUMBA_CACHE_DIR": str(tmp_path / "cache"), "PYTHONPATH": str(tmp_path)}
 
@@ -118,16 +123,20 @@ def test_a_truncated_cache_file_is_compiled_again(tmp_path: Path, suffix: str) -
         cmd = [sys.executable, "-c", "import cached_mod"]
         return subprocess.run(cmd, env=env, capture_output=True, text=True, check=False)
 
-    assert run().stdout.strip() == "2.0"
-    (entry,) = (tmp_path / "cache").rglob(f"cached_mod.plus_one-*{suffix}")
-    entry.write_bytes(entry.read_bytes()[: 1 if suffix == ".nbi" else 40])
+    assert run().stdout.strip() == "2.0 3.0"
+    (index,) = (tmp_path / "cache").rglob("cached_mod.plus_one-*.nbi")
+    (data,) = (tmp_path / "cache").rglob("cached_mod.plus_two-*.nbc")
+    index.write_bytes(index.read_bytes()[:1])
+    data.write_bytes(data.read_bytes()[:40])
     again = run()
     assert again.returncode == 0, again.stderr
-    assert again.stdout.strip() == "2.0"
-    assert again.stderr.count("a damaged compile-cache file") == 1, again.stderr
+    assert again.stdout.strip() == "2.0 3.0"
+    assert again.stderr.count("a damaged compile-cache file") == 2, again.stderr
+    for entry in (index, data):  # one line for each
+        assert again.stderr.count(f"a damaged compile-cache file ({entry})") == 1, again.stderr
     assert "compiled again" in again.stderr
     third = run()  # rewritten: loaded silently
-    assert third.stdout.strip() == "2.0" and "damaged" not in third.stderr
+    assert third.stdout.strip() == "2.0 3.0" and "damaged" not in third.stderr
 
 
 def test_impactlab_runs_as_plain_python_under_numba_disable_jit() -> None:

@@ -15,6 +15,9 @@ called through their addresses, ``flexcore.indirect`` and ``slipcore.indirect``)
 from __future__ import annotations
 
 import ast
+import gc
+from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -36,13 +39,27 @@ def _without_wrapper(dec: ast.expr) -> bool:
     )
 
 
-def _compiled(tree: ast.AST) -> list[ast.FunctionDef]:
-    return [
-        n
-        for n in ast.walk(tree)
-        if isinstance(n, ast.FunctionDef)
-        and any(_decorator_name(d) in COMPILERS for d in n.decorator_list)
-    ]
+def _is_compiled(node: ast.AST) -> bool:
+    return isinstance(node, ast.FunctionDef) and any(
+        _decorator_name(d) in COMPILERS for d in node.decorator_list
+    )
+
+
+def _compiled_and_names(tree: ast.AST) -> tuple[list[ast.FunctionDef], list[tuple[str, ast.expr]]]:
+    """One walk of ``tree``: its compiled functions, and every name it uses with its node (a
+    ``Name``, an ``Attribute``'s attribute, a string constant). Imports hold none of these."""
+    compiled: list[ast.FunctionDef] = []
+    names: list[tuple[str, ast.expr]] = []
+    for n in ast.walk(tree):
+        if isinstance(n, ast.Name):
+            names.append((n.id, n))
+        elif isinstance(n, ast.Attribute):
+            names.append((n.attr, n))
+        elif isinstance(n, ast.Constant) and isinstance(n.value, str):
+            names.append((n.value, n))
+        elif isinstance(n, ast.FunctionDef) and _is_compiled(n):
+            compiled.append(n)
+    return compiled, names
 
 
 def _no_call(tree: ast.AST) -> set[int]:
@@ -65,35 +82,48 @@ def _no_call(tree: ast.AST) -> set[int]:
     return {id(m) for n in named for m in ast.walk(n)}
 
 
+@contextmanager
+def _without_gc() -> Iterator[None]:
+    """The cyclic garbage collector paused: the million nodes of the parsed trees, none of them
+    garbage, made it run over and over (two thirds of the parsing time)."""
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if enabled:
+            gc.enable()
+
+
 def _trees() -> dict[Path, ast.Module]:
     files = [p for folder in FOLDERS for p in (ROOT / folder).rglob("*.py")]
     return {p: ast.parse(p.read_text()) for p in files}
 
 
 def test_functions_without_wrapper_are_called_only_from_compiled_code() -> None:
+    with _without_gc():
+        uses = _uses_from_python()
+    assert not uses, "\n".join(uses)
+
+
+def _uses_from_python() -> list[str]:
+    """Every use of a compiled function without wrappers from Python code, as text."""
     trees = _trees()
-    compiled = {path: _compiled(tree) for path, tree in trees.items()}
+    scanned = {path: _compiled_and_names(tree) for path, tree in trees.items()}
     internal: dict[str, str] = {}
-    for path, fns in compiled.items():
+    for path, (fns, _) in scanned.items():
         for fn in fns:
             if any(_without_wrapper(d) for d in fn.decorator_list):
                 internal[fn.name] = path.relative_to(ROOT).as_posix()
     assert len(internal) > 40  # the engine's internal functions are found
     uses: list[str] = []
-    for path, tree in trees.items():
-        inside = {id(n) for fn in compiled[path] for n in ast.walk(fn)} | _no_call(tree)
-        for node in ast.walk(tree):
-            if id(node) in inside or isinstance(node, ast.Import | ast.ImportFrom):
-                continue
-            if isinstance(node, ast.Name):
-                name = node.id
-            elif isinstance(node, ast.Attribute):
-                name = node.attr
-            elif isinstance(node, ast.Constant) and isinstance(node.value, str):
-                name = node.value
-            else:
-                continue
-            if name in internal:
+    for path, (fns, names) in scanned.items():
+        found = [(name, node) for name, node in names if name in internal]
+        if not found:  # the file names none of them
+            continue
+        inside = {id(n) for fn in fns for n in ast.walk(fn)} | _no_call(trees[path])
+        for name, node in found:
+            if id(node) not in inside:
                 where = f"{path.relative_to(ROOT).as_posix()}:{node.lineno}"
                 uses.append(f"{name} ({internal[name]}) used from Python at {where}")
-    assert not uses, "\n".join(uses)
+    return uses

@@ -168,18 +168,26 @@ def test_the_tilt_verdicts(tilt_deg: float, sigma_deg: float, verdict: str) -> N
     assert check.verdict == verdict
 
 
+@pytest.fixture(scope="module")
+def dent_npy(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """A dent 5 um deep at 2 um pixels, heights in um (.npy), as the docs' quick start reads
+    it; a margin of 0.4 mm around it (half the default) keeps the map small."""
+    z, *_ = S.synthetic_scan(delta_p=5e-6, sliding_length=300e-6, pixel=2e-6, margin=0.4e-3, seed=1)
+    path = tmp_path_factory.mktemp("docs_dent") / "dent.npy"
+    np.save(path, z * 1e6)  # um
+    return path
+
+
 def test_the_docs_quick_start_runs(
-    rod: Any, tmp_path: Path, cli_main: Callable[..., tuple[int, str, str]]
+    rod: Any, tmp_path: Path, dent_npy: Path, cli_main: Callable[..., tuple[int, str, str]]
 ) -> None:
     """``impactlab analyze drop.csv dent.npy --pixel-size "2 um" --height-unit um --up +y``:
     with the markers of the docs' layout, it runs with --geometry, and without it says to give
     one (exit status 2, the scan still measured)."""
     tracks, _ = _tracks(rod, 45, S.DEFAULT_MARKERS, 3, up="+y")
     write_csv_markers(tracks, tmp_path / "drop.csv")
-    z, *_ = S.synthetic_scan(delta_p=5e-6, sliding_length=300e-6, pixel=2e-6, seed=1)
-    np.save(tmp_path / "dent.npy", z * 1e6)  # um
     (tmp_path / "markers.toml").write_text(GEOMETRY_TOML)
-    args = ("analyze", str(tmp_path / "drop.csv"), str(tmp_path / "dent.npy"), "--pixel-size",
+    args = ("analyze", str(tmp_path / "drop.csv"), str(dent_npy), "--pixel-size",
             "2 um", "--height-unit", "um", "--up", "+y", "--json")  # fmt: skip
     code, out, err = cli_main(*args, "--geometry", str(tmp_path / "markers.toml"))
     assert code == 0, err
@@ -193,7 +201,7 @@ def test_the_docs_quick_start_runs(
 
 
 def test_a_result_in_doubt_is_not_ok_in_the_api_the_json_and_the_table(
-    rod: Any, tmp_path: Path, cli_main: Callable[..., tuple[int, str, str]]
+    rod: Any, tmp_path: Path, dent_npy: Path, cli_main: Callable[..., tuple[int, str, str]]
 ) -> None:
     """The docs' layout at 20 deg and 250 fps was a plain success (exit status 0, no sign)."""
     from impactlab.experiment import analyze
@@ -207,9 +215,7 @@ def test_a_result_in_doubt_is_not_ok_in_the_api_the_json_and_the_table(
     assert any("marker geometry is in doubt" in w for w in res.warnings)
     saved = json.loads((tmp_path / "out" / "results.json").read_text())
     assert saved["ok"] is False and saved["kinematics"]["ok"] is False
-    z, *_ = S.synthetic_scan(delta_p=5e-6, sliding_length=300e-6, pixel=2e-6, seed=1)
-    np.save(tmp_path / "dent.npy", z * 1e6)
-    args = ("analyze", str(markers), str(tmp_path / "dent.npy"), "--pixel-size", "2 um",
+    args = ("analyze", str(markers), str(dent_npy), "--pixel-size", "2 um",
             "--height-unit", "um")  # fmt: skip
     code, out, _ = cli_main(*args, "--json")
     data = json.loads(out)

@@ -5,6 +5,7 @@ error."""
 from __future__ import annotations
 
 import json
+import shutil
 from collections.abc import Callable
 from pathlib import Path
 
@@ -51,12 +52,28 @@ def test_a_users_results_json_is_never_written_over(tmp_path: Path, drops: dict)
     assert "not written" in res.errors["results"] and "results" not in res.files
 
 
+@pytest.fixture(scope="module")
+def earlier_run(tmp_path_factory: pytest.TempPathFactory, drops: dict, scans: dict) -> Path:
+    """The output folder of one analysis of drop 20 and its dent (both figures, results.json),
+    shared by the tests below, which work on copies of it."""
+    out = tmp_path_factory.mktemp("earlier_run")
+    d = drops[20]
+    first = analyze(d.c3d, scans[20].files["x3p"], geometry=d.geometry, out_dir=out)
+    assert set(first.figures) == {"kinematics", "dent"} and "results" in first.files
+    return out
+
+
+def _first_run(out: Path, earlier_run: Path) -> dict[str, bytes]:
+    """Copy the earlier run's folder to ``out``; return its files' contents by name."""
+    shutil.copytree(earlier_run, out, dirs_exist_ok=True)
+    return {p.name: p.read_bytes() for p in out.iterdir()}
+
+
 def test_a_figure_of_an_earlier_run_is_still_removed(
-    tmp_path: Path, drops: dict, scans: dict, cli_main: CliMain, junk: dict[str, Path]
+    tmp_path: Path, drops: dict, earlier_run: Path, cli_main: CliMain, junk: dict[str, Path]
 ) -> None:
     d = drops[20]
-    first = analyze(d.c3d, scans[20].files["x3p"], geometry=d.geometry, out_dir=tmp_path)
-    assert set(first.figures) == {"kinematics", "dent"}
+    assert set(_first_run(tmp_path, earlier_run)) == {"kinematics.png", "dent.png", "results.json"}
     assert written_by_analyze(tmp_path / "dent.png")
     assert MARK.encode() in (tmp_path / "dent.png").read_bytes()[:4096]
     assert written_by_analyze(tmp_path / "results.json")
@@ -81,19 +98,12 @@ def test_an_unreadable_or_other_file_is_not_taken_for_a_run(tmp_path: Path) -> N
 # -- damaged files of an earlier run, a folder checked before anything is written ----------------
 
 
-def _first_run(out: Path, drops: dict, scans: dict) -> dict[str, bytes]:
-    d = drops[20]
-    first = analyze(d.c3d, scans[20].files["x3p"], geometry=d.geometry, out_dir=out)
-    assert set(first.figures) == {"kinematics", "dent"} and "results" in first.files
-    return {p.name: p.read_bytes() for p in out.iterdir()}
-
-
 def test_a_results_json_cut_short_by_an_earlier_run_is_replaced(
-    tmp_path: Path, drops: dict, scans: dict
+    tmp_path: Path, drops: dict, scans: dict, earlier_run: Path
 ) -> None:
     """A results.json cut short (an interrupted run) blocked re-analysis as 'not written by
     impactlab analyze', after the new figures had been written."""
-    before = _first_run(tmp_path, drops, scans)
+    before = _first_run(tmp_path, earlier_run)
     (tmp_path / "results.json").write_bytes(before["results.json"][:300])
     d = drops[20]
     res = analyze(d.c3d, scans[20].files["x3p"], geometry=d.geometry, out_dir=tmp_path)
@@ -108,9 +118,9 @@ def test_a_results_json_cut_short_by_an_earlier_run_is_replaced(
 
 
 def test_a_users_results_json_leaves_the_whole_folder_as_it_was(
-    tmp_path: Path, drops: dict, scans: dict
+    tmp_path: Path, drops: dict, scans: dict, earlier_run: Path
 ) -> None:
-    before = _first_run(tmp_path, drops, scans)
+    before = _first_run(tmp_path, earlier_run)
     (tmp_path / "results.json").write_text('{"mine": 1}')
     before["results.json"] = b'{"mine": 1}'
     d = drops[45]
@@ -122,12 +132,12 @@ def test_a_users_results_json_leaves_the_whole_folder_as_it_was(
 
 
 def test_a_misspelt_input_path_leaves_the_folder_as_it_was(
-    tmp_path: Path, drops: dict, scans: dict, cli_main: CliMain
+    tmp_path: Path, drops: dict, scans: dict, earlier_run: Path, cli_main: CliMain
 ) -> None:
     """A scan path that names no file removed the earlier run's dent figure and rewrote
     results.json without delta_p, L_s, T and F."""
     out = tmp_path / "out"
-    before = _first_run(out, drops, scans)
+    before = _first_run(out, earlier_run)
     d = drops[20]
     with pytest.raises(FileFormatError) as caught:
         analyze(d.c3d, tmp_path / "dnet.x3p", geometry=d.geometry, out_dir=out)
@@ -146,9 +156,9 @@ def test_a_misspelt_input_path_leaves_the_folder_as_it_was(
 
 
 def test_results_json_is_written_whole_or_not_at_all(
-    tmp_path: Path, drops: dict, scans: dict, monkeypatch: pytest.MonkeyPatch
+    tmp_path: Path, drops: dict, scans: dict, earlier_run: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    before = _first_run(tmp_path, drops, scans)
+    before = _first_run(tmp_path, earlier_run)
 
     def full_disk(fd: int) -> None:
         raise OSError(28, "No space left on device")
@@ -177,11 +187,11 @@ def _full_disk_for(monkeypatch: pytest.MonkeyPatch, names: tuple[str, ...]) -> N
 
 
 def test_a_full_disk_leaves_the_folder_as_it_was(
-    tmp_path: Path, drops: dict, scans: dict, monkeypatch: pytest.MonkeyPatch
+    tmp_path: Path, drops: dict, scans: dict, earlier_run: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     """The figures fitted on the disk and results.json did not: the folder held the new figures
     beside the old results.json of another drop."""
-    before = _first_run(tmp_path, drops, scans)
+    before = _first_run(tmp_path, earlier_run)
     _full_disk_for(monkeypatch, ("results.json",))
     d = drops[45]
     res = analyze(d.c3d, scans[45].files["x3p"], geometry=d.geometry, out_dir=tmp_path)
@@ -194,11 +204,16 @@ def test_a_full_disk_leaves_the_folder_as_it_was(
 
 
 def test_a_rerun_on_a_full_disk_removes_no_figure(
-    tmp_path: Path, drops: dict, scans: dict, junk: dict[str, Path], monkeypatch: pytest.MonkeyPatch
+    tmp_path: Path,
+    drops: dict,
+    scans: dict,
+    earlier_run: Path,
+    junk: dict[str, Path],
+    monkeypatch: pytest.MonkeyPatch,
 ) -> None:
     """It deleted both earlier figures, saying 'this run drew no kinematics figure' of one it
     drew but could not write."""
-    before = _first_run(tmp_path, drops, scans)
+    before = _first_run(tmp_path, earlier_run)
     _full_disk_for(monkeypatch, ("kinematics.png",))
     d = drops[20]
     res = analyze(d.c3d, junk["x3p"], geometry=d.geometry, out_dir=tmp_path)

@@ -5,11 +5,17 @@ contact sequence on an oblique case.
 Reference numbers (docs/flexible.md): at 20 deg the FE converges from above in delta_p
 (33.3 / 32.5 / 32.4 um at Ne = 40 / 80 / 160) and the default modal model (8 + 2 axial,
 12 bending modes) lies within 0.7 % of Ne = 160 in e, delta_p and T.
+
+The reference warns when ``t_stop`` ends before its sequence does, judged from the state at
+``t_stop`` by the drop's end-of-sequence rule (docs/flexible.md, "Independent
+discretisation").
 """
 
 from __future__ import annotations
 
 import math
+import warnings
+from typing import Any
 
 import numpy as np
 import pytest
@@ -17,19 +23,39 @@ from paper_drops import CASES
 
 from impactlab.bodies.flexible_rod import FlexibleRod
 from impactlab.dynamics.drop import simulate_drop
+from impactlab.dynamics.drop_result import DropResult
 from impactlab.dynamics.flex_fe import CorotationalRod
-from impactlab.dynamics.flex_reference import drop_reference, rigid_angle
+from impactlab.dynamics.flex_reference import (
+    ReferenceDrop,
+    SequenceOpenWarning,
+    drop_reference,
+    rigid_angle,
+)
+
+#: a modal drop, its FE reference and the warnings the reference's run gave
+Drop20 = tuple[DropResult, ReferenceDrop, list[warnings.WarningMessage]]
 
 
-def test_modal_vs_fe_20deg() -> None:
-    """Default modal model against FE Ne = 80 at 20 deg: e, delta_p, T and the start of each
-    contact within 1 %, delta_max of each contact within 1.5 %, the same number of contacts,
-    the FE's own energy balance to 1e-6."""
+@pytest.fixture(scope="module")
+def drop_20deg() -> Drop20:
+    """The paper's 20 deg drop (mu 0.2, 1.41 m/s) by the default modal model, and by the FE
+    reference (Ne = 80) run to 1 ms after the modal sequence's end (1.95 ms), with the
+    warnings that the reference's run gave."""
     th, vy, mu = CASES[0]
     body = FlexibleRod.paper()
     kw = {"mu": mu, "angle": math.radians(th), "velocity": (0.0, vy)}
     r = simulate_drop(body, **kw)
-    ref = drop_reference(body, **kw, t_stop=r.sequence_duration + 1e-3, n_elements=80)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        ref = drop_reference(body, **kw, t_stop=r.sequence_duration + 1e-3, n_elements=80)
+    return r, ref, caught
+
+
+def test_modal_vs_fe_20deg(drop_20deg: Drop20) -> None:
+    """Default modal model against FE Ne = 80 at 20 deg: e, delta_p, T and the start of each
+    contact within 1 %, delta_max of each contact within 1.5 %, the same number of contacts,
+    the FE's own energy balance to 1e-6."""
+    r, ref, _ = drop_20deg
     assert ref.energy_error < 1e-6
     assert len(ref.contacts) == r.n_contacts == 4
     assert ref.e == pytest.approx(r.e, rel=0.01)
@@ -86,3 +112,22 @@ def test_rigid_angle_of_a_rigidly_turned_rod() -> None:
     bent[0::3] -= 1e-4 * u * math.sin(0.5)
     bent[1::3] += 1e-4 * u * math.cos(0.5)
     assert rigid_angle(fe, bent) == pytest.approx(0.5, abs=1e-9)
+
+
+KW: dict[str, Any] = {"mu": 0.2, "angle": math.radians(20), "velocity": (0.0, -1.41)}
+
+
+def test_a_sequence_cut_short_warns() -> None:
+    """At 0.5 ms the paper's 20 deg drop has had 2 of its 4 contacts (e 0.093, not 0.721)."""
+    with pytest.warns(SequenceOpenWarning, match=r"t_stop = 0.0005 s ends before the sequence"):
+        ref = drop_reference(FlexibleRod.paper(), **KW, t_stop=0.5e-3)
+    assert len(ref.contacts) == 2
+
+
+def test_a_finished_sequence_does_not_warn(drop_20deg: Drop20) -> None:
+    """The same drop run to 1 ms after its last separation (t_stop 1.95 ms)."""
+    r, ref, caught = drop_20deg
+    assert 1.9e-3 < r.sequence_duration + 1e-3 < 2.0e-3
+    assert not [w for w in caught if issubclass(w.category, SequenceOpenWarning)]
+    assert len(ref.contacts) == 4
+    assert ref.e == pytest.approx(0.721, abs=0.002)

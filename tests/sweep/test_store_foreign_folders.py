@@ -5,6 +5,7 @@ given to ``sweep uncertainty`` is named as a file, not a store."""
 
 from __future__ import annotations
 
+import shutil
 import warnings
 
 import numpy as np
@@ -29,9 +30,17 @@ def _study() -> Study:
         return Study(name="f", grid={"angle": angles}, fixed={"vy": -1.41, "mu": 0.2}, chunk_size=1)
 
 
+@pytest.fixture(scope="module")
+def finished(tmp_path_factory):
+    """The study's finished store, run once for the module."""
+    path = tmp_path_factory.mktemp("f") / "f.zarr"
+    return run_sweep(_study(), path, evaluator=FakeEvaluator(), quiet=True).path
+
+
 @pytest.fixture
-def store(tmp_path):
-    return run_sweep(_study(), tmp_path / "f.zarr", evaluator=FakeEvaluator(), quiet=True).path
+def store(finished, tmp_path):
+    """A copy of the finished store, the test's own to put folders into."""
+    return shutil.copytree(finished, tmp_path / "f.zarr")
 
 
 @pytest.mark.parametrize("folder", [".ipynb_checkpoints", "plots"])

@@ -18,8 +18,9 @@ def _whole(ds, name: str) -> np.ndarray:
     return np.asarray(ds[name].values).ravel()
 
 
-@pytest.fixture
-def flagged_store(tmp_path: Path) -> Path:
+@pytest.fixture(scope="module")
+def flagged_store(tmp_path_factory) -> Path:
+    """A store with flagged cases, run once for the module: the tests only read it."""
     study = Study(
         name="counted",
         chunk_size=12,
@@ -27,7 +28,7 @@ def flagged_store(tmp_path: Path) -> Path:
         fixed={"vy": -1.41},
         sample=Sample(size=7, seed=1, inputs={"mu": Uniform(0.0, 0.6)}),
     )
-    store = tmp_path / "counted.zarr"
+    store = tmp_path_factory.mktemp("counted") / "counted.zarr"
     run_sweep(study, store, evaluator=FlaggingEvaluator(), quiet=True)
     return store
 

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import json
 import os
+import shutil
 import tracemalloc
 from collections.abc import Mapping
 from pathlib import Path
@@ -98,22 +99,39 @@ def _store(tmp_path: Path, name: str) -> Path:
     return store
 
 
+@pytest.fixture(scope="module")
+def stores(tmp_path_factory):
+    """``stores(name)``: the store of a study, run once for the module (the tests only read it),
+    with the reference CSV of its whole Dataset beside it (``expected.csv``)."""
+    made: dict[str, Path] = {}
+
+    def get(name: str) -> Path:
+        if name not in made:
+            folder = tmp_path_factory.mktemp(name)
+            made[name] = _store(folder, name)
+            _reference_csv(open_sweep(made[name]), folder / "expected.csv")
+        return made[name]
+
+    return get
+
+
 @pytest.mark.parametrize("name", [*STUDIES, "incomplete"])
 @pytest.mark.parametrize("block", [None, 5, 23])
-def test_the_csv_is_the_whole_tables_byte_for_byte(tmp_path, monkeypatch, name, block) -> None:
-    store = _store(tmp_path, name)
-    _reference_csv(open_sweep(store), tmp_path / "expected.csv")
+def test_the_csv_is_the_whole_tables_byte_for_byte(
+    stores, tmp_path, monkeypatch, name, block
+) -> None:
+    store = stores(name)
     if block is not None:  # case counts (126, 66, 13, 97) no multiple of the block
         monkeypatch.setattr(export, "CSV_BLOCK_CASES", block)
     export.export_csv(open_sweep(store), tmp_path / "got.csv")
-    expected = (tmp_path / "expected.csv").read_bytes()
+    expected = (store.parent / "expected.csv").read_bytes()
     assert (tmp_path / "got.csv").read_bytes() == expected
     if name == "incomplete":
         assert b",-1," in expected  # the cases not computed
 
 
-def test_a_dataset_in_memory_and_without_a_store(tmp_path, monkeypatch) -> None:
-    ds = open_sweep(_store(tmp_path, "sampled")).load()
+def test_a_dataset_in_memory_and_without_a_store(stores, tmp_path, monkeypatch) -> None:
+    ds = open_sweep(stores("sampled")).load()
     for var in ds.variables.values():
         var.encoding = {}
     monkeypatch.setattr(export, "CSV_BLOCK_CASES", 4)
@@ -122,8 +140,8 @@ def test_a_dataset_in_memory_and_without_a_store(tmp_path, monkeypatch) -> None:
     assert (tmp_path / "got.csv").read_bytes() == (tmp_path / "expected.csv").read_bytes()
 
 
-def test_the_csv_holds_one_block_at_a_time(tmp_path, monkeypatch) -> None:
-    store = _store(tmp_path, "grid")  # 126 cases
+def test_the_csv_holds_one_block_at_a_time(stores, tmp_path, monkeypatch) -> None:
+    store = stores("grid")  # 126 cases
     rows: list[int] = []
     whole = xr.Dataset.to_dataframe
 
@@ -177,8 +195,8 @@ def test_netcdf_reads_the_store_chunk_by_chunk(tmp_path) -> None:
 
 
 @pytest.mark.parametrize("name", ["grid", "incomplete"])
-def test_netcdf_is_compressed_and_reads_back_as_the_dataset(tmp_path, name) -> None:
-    store = _store(tmp_path, name)
+def test_netcdf_is_compressed_and_reads_back_as_the_dataset(stores, tmp_path, name) -> None:
+    store = stores(name)
     _reference_netcdf(open_sweep(store), tmp_path / "ref.nc")
     nc4 = pytest.importorskip("netCDF4")
     cache = nc4.get_chunk_cache()
@@ -198,8 +216,8 @@ def test_netcdf_is_compressed_and_reads_back_as_the_dataset(tmp_path, name) -> N
             assert int((got["status"] == -1).sum()) == 67
 
 
-def test_a_failed_netcdf_export_leaves_no_file(tmp_path, monkeypatch) -> None:
-    store = _store(tmp_path, "failed")
+def test_a_failed_netcdf_export_leaves_no_file(stores, tmp_path, monkeypatch) -> None:
+    store = shutil.copytree(stores("failed"), tmp_path / "failed.zarr")
 
     def broken(self, path, *args, **kwargs):
         Path(path).write_bytes(b"half")

@@ -5,6 +5,7 @@ allowed; valid inputs that fail physically are still stored with their status.""
 from __future__ import annotations
 
 import json
+import shutil
 from pathlib import Path
 
 import numpy as np
@@ -46,12 +47,19 @@ def test_invalid_toml_names_file_line_and_column(tmp_path, monkeypatch, capsys) 
 # -- damaged stores ----------------------------------------------------------------------------
 
 
-@pytest.fixture
-def store(tmp_path) -> Path:
-    path = tmp_path / "s.zarr"
+@pytest.fixture(scope="module")
+def finished(tmp_path_factory) -> Path:
+    """A finished store, run once for the module."""
+    path = tmp_path_factory.mktemp("s") / "s.zarr"
     st = Study(name="s", grid={"angle": np.radians([20.0, 45.0])}, fixed={"vy": -1.0, "mu": 0.2})
     run_sweep(st, path, evaluator=FakeEvaluator(), quiet=True)
     return path
+
+
+@pytest.fixture
+def store(finished, tmp_path) -> Path:
+    """A copy of the finished store, the test's own to damage."""
+    return shutil.copytree(finished, tmp_path / "s.zarr")
 
 
 @pytest.mark.parametrize(

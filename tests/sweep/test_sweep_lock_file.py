@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import errno
 import os
+import shutil
 import time
 from pathlib import Path
 
@@ -20,9 +21,17 @@ def _study() -> Study:
     return Study(name="lk", grid={"mu": [0.1, 0.2]}, fixed={"angle": 0.35, "vy": -1.41})
 
 
+@pytest.fixture(scope="module")
+def finished(tmp_path_factory):
+    """The study's finished store, run once for the module."""
+    path = tmp_path_factory.mktemp("lk") / "lk.zarr"
+    return run_sweep(_study(), path, evaluator=FakeEvaluator(), quiet=True).path
+
+
 @pytest.fixture
-def store(tmp_path):
-    return run_sweep(_study(), tmp_path / "lk.zarr", evaluator=FakeEvaluator(), quiet=True).path
+def store(finished, tmp_path):
+    """A copy of the finished store, the test's own to lock."""
+    return shutil.copytree(finished, tmp_path / "lk.zarr")
 
 
 def _age(path, seconds: float) -> None:

@@ -25,8 +25,8 @@ def test_regime_map_draws_mu_c(tmp_path, fake) -> None:
     st = Study(
         name="map",
         grid={
-            "angle": np.radians(np.linspace(5, 85, 17)),
-            "mu": np.linspace(0, 0.6, 13),
+            "angle": np.radians(np.linspace(5, 85, 9)),
+            "mu": np.linspace(0, 0.6, 4),  # each output map has a panel per mu
             "vy": [-1.0, -2.0],
         },
     )

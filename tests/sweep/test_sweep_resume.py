@@ -4,6 +4,7 @@ byte-for-byte the store of an uninterrupted run (kills at chosen moments: test_s
 from __future__ import annotations
 
 import os
+import shutil
 from pathlib import Path
 
 import numpy as np
@@ -50,8 +51,16 @@ def sample_study(size: int = 2000, chunk: int = 100) -> Study:
     )
 
 
-def test_grid_results_match_the_closed_form(tmp_path, fake) -> None:
-    res = run_sweep(grid_study(), tmp_path / "a.zarr", evaluator=fake, quiet=True)
+@pytest.fixture(scope="module")
+def grid_ref(tmp_path_factory):
+    """``run_sweep``'s result of ``grid_study()``, uninterrupted, run once for the module: the
+    tests only read its store (or copy it)."""
+    path = tmp_path_factory.mktemp("grid") / "ref.zarr"
+    return run_sweep(grid_study(), path, evaluator=FakeEvaluator(), quiet=True)
+
+
+def test_grid_results_match_the_closed_form(grid_ref) -> None:
+    res = grid_ref
     assert res.complete and res.stats.chunks_computed == res.stats.n_chunks
     ds = res.dataset
     assert ds["e"].dims == ("angle", "mu", "law")
@@ -67,8 +76,8 @@ def test_grid_results_match_the_closed_form(tmp_path, fake) -> None:
     assert ds["regime"].dtype == np.int8 and ds["status"].dtype == np.int32
 
 
-def test_crash_mid_sweep_then_resume_gives_identical_store(tmp_path) -> None:
-    ref = run_sweep(grid_study(), tmp_path / "ref.zarr", evaluator=FakeEvaluator(), quiet=True)
+def test_crash_mid_sweep_then_resume_gives_identical_store(tmp_path, grid_ref) -> None:
+    ref = grid_ref
     store = tmp_path / "b.zarr"
     with pytest.raises(RuntimeError, match="simulated crash"):
         run_sweep(grid_study(), store, evaluator=CrashingEvaluator(after=4), quiet=True)
@@ -84,9 +93,8 @@ def test_crash_mid_sweep_then_resume_gives_identical_store(tmp_path) -> None:
     assert third.stats.chunks_computed == 0
 
 
-def test_changed_study_is_refused_or_restarted_explicitly(tmp_path, fake) -> None:
-    store = tmp_path / "s.zarr"
-    run_sweep(grid_study(), store, evaluator=fake, quiet=True)
+def test_changed_study_is_refused_or_restarted_explicitly(tmp_path, fake, grid_ref) -> None:
+    store = shutil.copytree(grid_ref.path, tmp_path / "s.zarr")  # the store of grid_study()
     changed = grid_study(fixed={"vy": -2.0})
     with pytest.raises(StudyMismatchError, match="--restart"):
         run_sweep(changed, store, evaluator=fake, quiet=True)
@@ -179,12 +187,12 @@ def test_one_writer_per_store(tmp_path, fake) -> None:
     assert res.complete and not (store / ".sweep" / "lock").exists()
 
 
-def test_netcdf_export_round_trip(tmp_path, fake) -> None:
+def test_netcdf_export_round_trip(tmp_path, grid_ref) -> None:
     import xarray as xr
 
     from impactlab.sweep import export_netcdf
 
-    ds = run_sweep(grid_study(), tmp_path / "n.zarr", evaluator=fake, quiet=True).dataset
+    ds = open_sweep(grid_ref.path)
     export_netcdf(ds, tmp_path / "n.nc")
     back = xr.open_dataset(tmp_path / "n.nc")
     np.testing.assert_array_equal(back["e"].values, ds["e"].values)
@@ -194,10 +202,10 @@ def test_netcdf_export_round_trip(tmp_path, fake) -> None:
     back.close()
 
 
-def test_store_cut_short_by_an_older_impactlab_is_recovered(tmp_path, fake) -> None:
+def test_store_cut_short_by_an_older_impactlab_is_recovered(tmp_path, fake, grid_ref) -> None:
     # an older impactlab built the store in place: a kill during its creation left sweep
     # metadata without the study record, which could then never be resumed
-    ref = run_sweep(grid_study(), tmp_path / "ref.zarr", evaluator=fake, quiet=True)
+    ref = grid_ref
     half = tmp_path / "half.zarr"
     (half / ".sweep" / "done").mkdir(parents=True)
     (half / "e").mkdir()
@@ -227,7 +235,7 @@ def test_store_cut_short_by_an_older_impactlab_is_recovered(tmp_path, fake) -> N
     with pytest.raises(ValueError, match="not a sweep store"):
         run_sweep(grid_study(), tmp_path / "other.zarr", evaluator=fake, quiet=True, restart=True)
     assert (tmp_path / "other.zarr" / "mine").is_dir()
-    names = ["bare.zarr", "half.zarr", "other.zarr", "partial.zarr", "ref.zarr"]
+    names = ["bare.zarr", "half.zarr", "other.zarr", "partial.zarr"]
     assert sorted(p.name for p in tmp_path.iterdir()) == names
 
 
