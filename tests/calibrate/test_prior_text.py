@@ -74,9 +74,9 @@ def test_the_saved_settings_run_the_calibration_again(template, tmp_path):
     saved = json.loads((tmp_path / "a" / "results.json").read_text())["settings"]["parameters"]
     assert saved == {"mu": "uniform(0, 0.6)"}
     given = [x for k, v in saved.items() for x in ("-p", f"{k}={v}")]
-    r = runner.invoke(app, [*args, *given, "--out", str(tmp_path / "b")])
+    r = runner.invoke(app, [*args, *given, "--json"])  # the JSON that results.json holds
     assert r.exit_code == 0, r.output
-    again = json.loads((tmp_path / "b" / "results.json").read_text())["settings"]["parameters"]
+    again = json.loads(r.stdout)["settings"]["parameters"]
     assert again == saved
     cfg = tmp_path / "cal.toml"
     cfg.write_text("[parameters]\n" + "".join(f'{k} = "{v}"\n' for k, v in saved.items()))

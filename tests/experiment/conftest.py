@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 import os
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -105,6 +106,30 @@ def scans(data_dir: Path) -> dict[int, Scan]:
 
 
 @pytest.fixture(scope="session")
+def analysed_drop(
+    tmp_path_factory: pytest.TempPathFactory, drops: dict[int, Drop], scans: dict[int, Scan]
+) -> Callable[[int], tuple[Any, Path]]:
+    """``analysed_drop(case)``: ``analyze`` of the case's drop and its X3P dent (the paper's rod,
+    the markers' geometry, 2000 Monte Carlo samples) into a new output folder, run once per case:
+    (result, folder). Read-only: tests that write in the folder work on a copy of it."""
+    from impactlab.experiment import analyze
+
+    done: dict[int, tuple[Any, Path]] = {}
+
+    def get(case: int) -> tuple[Any, Path]:
+        if case not in done:
+            d, sc = drops[case], scans[case]
+            out = tmp_path_factory.mktemp(f"analysed_{case}") / "out"
+            res = analyze(
+                d.c3d, sc.files["x3p"], PAPER_ROD, geometry=d.geometry, out_dir=out, n_samples=2000
+            )
+            done[case] = (res, out)
+        return done[case]
+
+    return get
+
+
+@pytest.fixture(scope="session")
 def junk(data_dir: Path) -> dict[str, Path]:
     """Files that exist but cannot be read ("c3d": markers, "x3p": a scan): their stage fails
     and the others go on (a path that names no file is refused before any work instead)."""
@@ -143,3 +168,26 @@ def analyse_example(**kwargs: Any) -> Any:
 def analysed_example() -> Any:
     """:func:`analyse_example` with the defaults."""
     return analyse_example()
+
+
+@pytest.fixture(scope="session")
+def saved_example(tmp_path_factory: pytest.TempPathFactory) -> Any:
+    """:func:`analyse_example` with the defaults and an output folder (both figures and
+    results.json written)."""
+    return analyse_example(out_dir=tmp_path_factory.mktemp("example") / "out")
+
+
+@pytest.fixture(scope="session")
+def flat_json(
+    tmp_path_factory: pytest.TempPathFactory, drops: dict[int, Drop], scans: dict[int, Scan]
+) -> tuple[list[str], Any]:
+    """``impactlab analyze`` of the 45 deg drop and its SDF dent with the marker geometry file:
+    (its arguments, the run of those with ``--flat aisi-1010 --json``, a typer ``Result``)."""
+    from typer.testing import CliRunner
+
+    from impactlab.cli import app
+
+    geo = tmp_path_factory.mktemp("flat_json") / "geometry.toml"
+    geo.write_text(GEOMETRY_TOML)
+    args = ["analyze", str(drops[45].c3d), str(scans[45].files["sdf"]), "--geometry", str(geo)]
+    return args, CliRunner().invoke(app, [*args, "--flat", "aisi-1010", "--json"])

@@ -37,11 +37,11 @@ from .conftest import GEOMETRY_TOML
 
 
 @pytest.mark.parametrize("case", [20, 45])
-def test_analyze_end_to_end(tmp_path: Path, drops: dict, scans: dict, rod: Any, case: int) -> None:
+def test_analyze_end_to_end(
+    analysed_drop: Callable[[int], tuple[Any, Path]], drops: dict, scans: dict, rod: Any, case: int
+) -> None:
     d, sc = drops[case], scans[case]
-    res = analyze(
-        d.c3d, sc.files["x3p"], rod, geometry=d.geometry, out_dir=tmp_path / "out", n_samples=2000
-    )
+    res, out = analysed_drop(case)  # conftest.py: the X3P dent, 2000 samples, a new folder
     assert res.ok, res.errors
     s = res.summary()
     assert abs(s["e"].value - d.truth.e) < 0.02
@@ -65,11 +65,11 @@ def test_analyze_end_to_end(tmp_path: Path, drops: dict, scans: dict, rod: Any, 
     T, F = s["duration"], s["mean_force"]
     assert abs(T.value - ref.duration) < 3.0 * T.sigma + 0.02 * ref.duration
     assert abs(F.value - ref.mean_force) < 3.0 * F.sigma + 0.02 * ref.mean_force
-    saved = json.loads((tmp_path / "out" / "results.json").read_text())
+    saved = json.loads((out / "results.json").read_text())
     assert saved["summary"]["duration"]["value"] == pytest.approx(s["duration"].value)
     assert saved["errors"] == {}
     for name in ("dent.png", "kinematics.png"):
-        assert (tmp_path / "out" / name).stat().st_size > 10_000
+        assert (out / name).stat().st_size > 10_000
 
 
 def test_bad_scan_keeps_the_marker_results(tmp_path: Path, drops: dict, rod: Any) -> None:

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import json
 import math
+import shutil
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -90,10 +91,13 @@ def test_bad_values_raise_before_any_work(
 # -- the output folder ---------------------------------------------------------------------------
 
 
-def test_a_figure_of_an_earlier_run_is_removed(tmp_path: Path, drops: dict, scans: dict) -> None:
+def test_a_figure_of_an_earlier_run_is_removed(
+    tmp_path: Path, drops: dict, scans: dict, analysed_drop: Callable[[int], tuple[Any, Path]]
+) -> None:
     d = drops[20]
-    first = analyze(d.c3d, scans[20].files["x3p"], geometry=d.geometry, out_dir=tmp_path)
+    first, folder = analysed_drop(20)  # conftest.py: the earlier run, copied into tmp_path
     assert set(first.figures) == {"kinematics", "dent"}
+    shutil.copytree(folder, tmp_path, dirs_exist_ok=True)
     bad = tmp_path / "cut.x3p"
     bad.write_bytes(scans[20].files["x3p"].read_bytes()[:200])
     second = analyze(d.c3d, bad, geometry=d.geometry, out_dir=tmp_path)

@@ -4,22 +4,16 @@ of every other command."""
 from __future__ import annotations
 
 import json
-from pathlib import Path
+from typing import Any
 
 from typer.testing import CliRunner
 
 from impactlab._json import shape_problems
 from impactlab.cli import app
 
-GEOMETRY = '[markers]\nunits = "mm"\nM1 = [-30.0, 18.0, 0.0]\nM2 = [-90.0, 0.0, 22.0]\n'
-GEOMETRY += "M3 = [-130.0, -20.0, 4.0]\n"
 
-
-def test_analyze_json_shape_and_table(tmp_path: Path, drops: dict, scans: dict) -> None:
-    geo = tmp_path / "geometry.toml"
-    geo.write_text(GEOMETRY)
-    args = ["analyze", str(drops[45].c3d), str(scans[45].files["sdf"]), "--geometry", str(geo)]
-    res = CliRunner().invoke(app, [*args, "--flat", "aisi-1010", "--json"])
+def test_analyze_json_shape_and_table(flat_json: tuple[list[str], Any]) -> None:
+    args, res = flat_json  # conftest.py: the run with --flat aisi-1010 --json
     assert res.exit_code == 0, res.output
     data = json.loads(res.stdout)
     assert shape_problems(data) == []  # docs/json-schema.md

@@ -5,6 +5,7 @@ analysis is not ok (a doubt), so that it is not taken as a measurement; the righ
 from __future__ import annotations
 
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -31,8 +32,9 @@ def test_heights_read_in_nm_for_um_are_not_ok(tmp_path: Path) -> None:
     assert not any("shallower than 0.1 um" in w for w in res.warnings)  # said by the doubt
 
 
-def test_the_right_unit_is_ok(tmp_path: Path) -> None:
-    res = _analyze(tmp_path, "um")
+def test_the_right_unit_is_ok(saved_example: Any) -> None:
+    """The example read in um (conftest.py: its 12 um pixels, its geometry, an output folder)."""
+    res = saved_example
     assert res.ok and not res.doubts
     assert res.dent is not None
     assert res.dent.delta_p.value == pytest.approx(22.02e-6, rel=1e-3)

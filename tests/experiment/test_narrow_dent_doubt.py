@@ -6,6 +6,7 @@ ok, and the example dent itself sits at its tip's cap."""
 from __future__ import annotations
 
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -35,8 +36,10 @@ def test_a_pixel_size_too_small_is_not_ok(tmp_path: Path, pixel: str) -> None:
     assert "check the pixel size" in doubt
 
 
-def test_the_right_pixel_size_is_ok(tmp_path: Path) -> None:
-    res = _analyze(tmp_path, "12 um")
+def test_the_right_pixel_size_is_ok(saved_example: Any) -> None:
+    """The example on its 12 um pixels (conftest.py: heights in um, its geometry, an output
+    folder)."""
+    res = saved_example
     assert res.ok and not res.doubts
     assert NARROW_DOUBT_RATIO >= 2.0  # the example dent: 1.0 times its tip's cap
 

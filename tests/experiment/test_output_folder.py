@@ -8,6 +8,7 @@ import json
 import shutil
 from collections.abc import Callable
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -53,12 +54,10 @@ def test_a_users_results_json_is_never_written_over(tmp_path: Path, drops: dict)
 
 
 @pytest.fixture(scope="module")
-def earlier_run(tmp_path_factory: pytest.TempPathFactory, drops: dict, scans: dict) -> Path:
-    """The output folder of one analysis of drop 20 and its dent (both figures, results.json),
-    shared by the tests below, which work on copies of it."""
-    out = tmp_path_factory.mktemp("earlier_run")
-    d = drops[20]
-    first = analyze(d.c3d, scans[20].files["x3p"], geometry=d.geometry, out_dir=out)
+def earlier_run(analysed_drop: Callable[[int], tuple[Any, Path]]) -> Path:
+    """The output folder of one analysis of drop 20 and its dent (both figures, results.json;
+    conftest.py), shared by the tests below, which work on copies of it."""
+    first, out = analysed_drop(20)
     assert set(first.figures) == {"kinematics", "dent"} and "results" in first.files
     return out
 

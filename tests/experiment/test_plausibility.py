@@ -4,7 +4,7 @@ simulated impact or the single-impact assumption, and say by how much."""
 from __future__ import annotations
 
 import json
-from pathlib import Path
+from typing import Any
 
 from typer.testing import CliRunner
 
@@ -15,9 +15,6 @@ from impactlab.experiment.consistency import (
     check_single_impact,
     times_text,
 )
-
-GEOMETRY = '[markers]\nunits = "mm"\nM1 = [-30.0, 18.0, 0.0]\nM2 = [-90.0, 0.0, 22.0]\n'
-GEOMETRY += "M3 = [-130.0, -20.0, 4.0]\n"
 
 
 def test_factor_text_and_threshold() -> None:
@@ -42,11 +39,8 @@ def test_single_impact_gap() -> None:
     assert msg is not None and "T = 6 ms is 1.5 times the 4 ms" in msg and "guard = 2" in msg
 
 
-def test_analyze_warns_beside_the_model(tmp_path: Path, drops: dict, scans: dict) -> None:
-    geo = tmp_path / "geometry.toml"
-    geo.write_text(GEOMETRY)
-    args = ["analyze", str(drops[45].c3d), str(scans[45].files["sdf"]), "--geometry", str(geo)]
-    res = CliRunner().invoke(app, [*args, "--flat", "aisi-1010", "--json"])
+def test_analyze_warns_beside_the_model(flat_json: tuple[list[str], Any]) -> None:
+    args, res = flat_json  # conftest.py: the run with --flat aisi-1010 --json
     assert res.exit_code == 0, res.output
     data = json.loads(res.stdout)
     T = data["inversion"]["duration"]["value"]

@@ -1,5 +1,5 @@
-"""The paper's tests share one full reproduction (a few seconds with a warm engine cache) and
-the reading of the numbers the paper's pages quote (``page``)."""
+"""The paper's tests share one full reproduction (a few seconds with a warm engine cache), one
+without the simulations, and the reading of the numbers the paper's pages quote (``page``)."""
 
 from __future__ import annotations
 
@@ -66,6 +66,14 @@ def page() -> SimpleNamespace:
 def full_reproduction(tmp_path_factory) -> R.ReproductionResult:
     """``reproduce`` with the simulations, once; tests copy its folder before writing there."""
     return R.reproduce(tmp_path_factory.mktemp("repro_full"))
+
+
+@pytest.fixture(scope="package")
+def analytic_reproduction(tmp_path_factory) -> R.ReproductionResult:
+    """``reproduce(simulate=False)`` (the analytic part only), once, into a folder it creates
+    with its parents; tests copy its folder before writing there."""
+    out = tmp_path_factory.mktemp("repro_analytic") / "new" / "folder"
+    return R.reproduce(out, simulate=False)
 
 
 @pytest.fixture(scope="package")

@@ -28,9 +28,9 @@ FE_HARD = "flexible rod + FE-tabulated law (hardening flat)"
 
 
 @pytest.fixture(scope="module")
-def analytic(tmp_path_factory) -> R.ReproductionResult:
-    """``reproduce(simulate=False)``: the analytic part only."""
-    return R.reproduce(tmp_path_factory.mktemp("analytic"), simulate=False)
+def analytic(analytic_reproduction) -> R.ReproductionResult:
+    """``reproduce(simulate=False)``: the analytic part only (conftest.py: one run)."""
+    return analytic_reproduction
 
 
 def _section(text: str, number: int) -> str:

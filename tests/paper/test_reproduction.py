@@ -76,9 +76,8 @@ def test_simulations_refuse_other_angles(angles):
 
 
 @pytest.fixture(scope="module")
-def analytic_run(tmp_path_factory):
-    out = tmp_path_factory.mktemp("repro_analytic") / "new" / "folder"
-    return R.reproduce(out, simulate=False)
+def analytic_run(analytic_reproduction):
+    return analytic_reproduction  # conftest.py: into "new/folder", made with its parents
 
 
 def test_analytic_part(analytic_run):
@@ -141,8 +140,9 @@ def test_report_numbers_match_library(analytic_run):
     assert "physics_comparison" not in analytic_run.files
 
 
-def test_rerun_into_previous_reproduction_keeps_other_files(analytic_run):
-    out = analytic_run.out_dir
+def test_rerun_into_previous_reproduction_keeps_other_files(analytic_run, tmp_path):
+    out = tmp_path / "previous"
+    shutil.copytree(analytic_run.out_dir, out)
     (out / "my_notes.txt").write_text("mine")
     res = R.reproduce(out, simulate=False)
     assert (out / "my_notes.txt").read_text() == "mine"

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import re
+import shutil
 from pathlib import Path
 
 import pytest
@@ -107,11 +108,11 @@ def test_after_a_complete_run_only_its_listed_files_are_its_own(tmp_path, recwar
     assert not any("simulations.csv" in str(w.message) for w in recwarn)
 
 
-def test_a_link_in_the_folder_is_replaced_not_written_through(tmp_path):
+def test_a_link_in_the_folder_is_replaced_not_written_through(tmp_path, analytic_reproduction):
     """A link named as a file of the reproduction: this run writes its own file in the folder,
     and the file the link named, outside it, is left as it was."""
     out = tmp_path / "r"
-    R.reproduce(out, simulate=False)
+    shutil.copytree(analytic_reproduction.out_dir, out)  # an earlier run's folder
     mine = tmp_path / "userdata" / "table2.csv"
     mine.parent.mkdir()
     mine.write_text("my precious table")

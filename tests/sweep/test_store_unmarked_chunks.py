@@ -17,8 +17,8 @@ from impactlab.sweep import Study, open_sweep, run_sweep, store_info
 INTEGERS = ("regime", "n_steps", "flags")
 
 
-@pytest.fixture
-def store(tmp_path, engine):
+@pytest.fixture(scope="module")
+def unmarked(tmp_path_factory, engine):
     """A finished store of 3 chunks of 2 cases, computed by the engine, and chunk 1's
     marker removed: its files hold results that no marker vouches for."""
     study = Study(
@@ -27,10 +27,16 @@ def store(tmp_path, engine):
         fixed={"vy": -1.41},
         chunk_size=2,
     )
-    path = run_sweep(study, tmp_path / "k.zarr", quiet=True).path
+    path = run_sweep(study, tmp_path_factory.mktemp("unmarked") / "k.zarr", quiet=True).path
     assert (open_sweep(path)["flags"].values > 0).all()  # law extrapolated: flagged
     (path / ".sweep" / "done" / "1").unlink()
     return path
+
+
+@pytest.fixture
+def store(unmarked, tmp_path):
+    """A copy of that store, the test's own."""
+    return shutil.copytree(unmarked, tmp_path / "k.zarr")
 
 
 def test_every_variable_of_an_unmarked_chunk_reads_no_result(store) -> None:

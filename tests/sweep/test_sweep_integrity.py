@@ -5,6 +5,7 @@ computed again (only they) on resume."""
 from __future__ import annotations
 
 import json
+import shutil
 from pathlib import Path
 
 import numpy as np
@@ -23,12 +24,17 @@ def _study() -> Study:
     )
 
 
+@pytest.fixture(scope="module")
+def reference(tmp_path_factory) -> Path:
+    """The finished store of the study, made once; no test changes it."""
+    ref = tmp_path_factory.mktemp("tamper") / "ref.zarr"
+    return run_sweep(_study(), ref, evaluator=FakeEvaluator(), quiet=True).path
+
+
 @pytest.fixture
-def stores(tmp_path) -> tuple[Path, Path]:
+def stores(reference, tmp_path) -> tuple[Path, Path]:
     """(a finished store to tamper with, an identical reference)."""
-    a = run_sweep(_study(), tmp_path / "a.zarr", evaluator=FakeEvaluator(), quiet=True).path
-    b = run_sweep(_study(), tmp_path / "ref.zarr", evaluator=FakeEvaluator(), quiet=True).path
-    return a, b
+    return shutil.copytree(reference, tmp_path / "a.zarr"), reference
 
 
 def _chunk_file(store: Path, index: int, array: str) -> Path:

@@ -31,8 +31,10 @@ class _LawEvaluator(FakeEvaluator):
         return res, status
 
 
-@pytest.fixture
-def store(tmp_path):
+@pytest.fixture(scope="module")
+def store(tmp_path_factory):
+    """The store of the file's tests (they only read it); its outputs are the ones the tests
+    look at: one with an empty panel per reason, and the regime."""
     study = Study(
         name="laws",
         grid={
@@ -41,8 +43,10 @@ def store(tmp_path):
             "mu": [0.1, 0.3],
         },
         fixed={"vy": -1.41},
+        outputs=["e", "duration", "regime"],
     )
-    return run_sweep(study, tmp_path / "laws.zarr", evaluator=_LawEvaluator(), quiet=True).path
+    path = tmp_path_factory.mktemp("laws") / "laws.zarr"
+    return run_sweep(study, path, evaluator=_LawEvaluator(), quiet=True).path
 
 
 def test_plot_sweep_names_the_empty_panels_and_why(store, tmp_path) -> None:

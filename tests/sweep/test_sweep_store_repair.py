@@ -32,10 +32,17 @@ def _study(vy: float = -1.41) -> Study:
     )
 
 
+@pytest.fixture(scope="module")
+def finished(tmp_path_factory) -> Path:
+    """The finished store of the study, made once: the tests compare with it, never change it."""
+    ref = tmp_path_factory.mktemp("repair") / "ref.zarr"
+    return run_sweep(_study(), ref, evaluator=FakeEvaluator(), quiet=True).path
+
+
 @pytest.fixture
-def stores(tmp_path) -> tuple[Path, Path]:
+def stores(finished, tmp_path) -> tuple[Path, Path]:
     """(a finished store to damage, an identical copy to compare with)."""
-    ref = run_sweep(_study(), tmp_path / "ref.zarr", evaluator=FakeEvaluator(), quiet=True).path
+    ref = finished
     store = tmp_path / "a.zarr"
     shutil.copytree(ref, store)
     return store, ref
