@@ -10,8 +10,10 @@ it: such a compiled function keeps its wrappers. Two uses call nothing and pass:
 dispatcher's ``py_func``, and pairing it with its signature, ``(f, STEP_SIGNATURE)``, for
 ``kernels.address_call.compiled_addresses`` or numba's ``_get_jit_address`` (the functions
 called through their addresses, ``flexcore.indirect`` and ``slipcore.indirect``).
-Only the files whose text holds a compiled function's decorator ("jit") or one of the names
-are parsed: a name used in a file is in its text.
+Only the files whose text holds a compiled function's decorator ("jit"), one of the names, or
+a lookup by string (``BY_STRING``: getattr, globals(), ...) are parsed: an identifier is in its
+file's text, and a string constant that is a name only once parsed (adjacent literals, escapes)
+is looked up by one of those.
 """
 
 from __future__ import annotations
@@ -98,6 +100,11 @@ def _without_gc() -> Iterator[None]:
             gc.enable()
 
 
+#: What looks a name up from a string: a file with one of these is parsed whole, so that a
+#: string constant that is a name only once parsed (adjacent literals, escapes) is seen too.
+BY_STRING = re.compile(r"getattr|globals\(|vars\(|__dict__|attrgetter|import_module|__all__")
+
+
 def _sources() -> dict[Path, str]:
     files = [p for folder in FOLDERS for p in (ROOT / folder).rglob("*.py")]
     return {p: p.read_text() for p in files}
@@ -123,7 +130,7 @@ def _uses_from_python() -> list[str]:
     assert len(internal) > 40  # the engine's internal functions are found
     named = re.compile(r"\b(?:" + "|".join(map(re.escape, internal)) + r")\b")
     for path, text in sources.items():  # the files that may name one of them
-        if path not in trees and named.search(text):
+        if path not in trees and (named.search(text) or BY_STRING.search(text)):
             trees[path] = ast.parse(text)
             scanned[path] = _compiled_and_names(trees[path])
     uses: list[str] = []

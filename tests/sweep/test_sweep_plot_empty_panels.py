@@ -33,8 +33,7 @@ class _LawEvaluator(FakeEvaluator):
 
 @pytest.fixture(scope="module")
 def store(tmp_path_factory):
-    """The store of the file's tests (they only read it); its outputs are the ones the tests
-    look at: one with an empty panel per reason, and the regime."""
+    """The store of the file's tests (they only read it), with the default outputs."""
     study = Study(
         name="laws",
         grid={
@@ -43,7 +42,6 @@ def store(tmp_path_factory):
             "mu": [0.1, 0.3],
         },
         fixed={"vy": -1.41},
-        outputs=["e", "duration", "regime"],
     )
     path = tmp_path_factory.mktemp("laws") / "laws.zarr"
     return run_sweep(study, path, evaluator=_LawEvaluator(), quiet=True).path
