@@ -2,21 +2,18 @@
 
 from __future__ import annotations
 
-import importlib.util
+import runpy
+from collections.abc import Callable
 from pathlib import Path
-from types import ModuleType
 
 import pytest
 
-ROOT = Path(__file__).resolve().parents[2]
+TASKS = Path(__file__).resolve().parents[2] / "tasks.py"
 
 
-def _tasks_module() -> ModuleType:
-    spec = importlib.util.spec_from_file_location("impactlab_tasks", ROOT / "tasks.py")
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+def _task_env() -> Callable[[], dict[str, str]]:
+    """``tasks._env``, from the script's own namespace (its main guard does not run)."""
+    return runpy.run_path(str(TASKS))["_env"]
 
 
 def test_bytecode_caches_are_written_even_where_the_shell_turns_them_off(
@@ -26,8 +23,8 @@ def test_bytecode_caches_are_written_even_where_the_shell_turns_them_off(
     suite's subprocesses compiles impactlab from source again."""
     monkeypatch.setenv("PYTHONDONTWRITEBYTECODE", "1")
     monkeypatch.delenv("MPLBACKEND", raising=False)
-    env = _tasks_module()._env()
+    env = _task_env()()
     assert "PYTHONDONTWRITEBYTECODE" not in env
     assert env["MPLBACKEND"] == "Agg"
     monkeypatch.setenv("MPLBACKEND", "pdf")  # a user's own choice is kept
-    assert _tasks_module()._env()["MPLBACKEND"] == "pdf"
+    assert _task_env()()["MPLBACKEND"] == "pdf"
