@@ -96,59 +96,43 @@ def _share(x: float) -> str:
     return "n/a" if math.isnan(x) else f"{format_number(100 * x, 2)} %"
 
 
-def _show(table: Any) -> None:
-    """``table`` on stdout, every cell in full: on a terminal at its width (cells wrap, never
-    cut with an ellipsis), elsewhere (a pipe, a file) as wide as the table needs: rich would
-    cut it to 80 columns."""
-    from rich.console import Console
-
-    out = Console()
-    if not out.is_terminal:
-        need = out.measure(table, options=out.options.update_width(10_000)).maximum
-        out = Console(width=max(out.width, need))
-    out.print(table)
-
-
 def _line(text: str) -> None:
     """One line on stdout, never broken (a terminal wraps it)."""
     console.print(Text(text), soft_wrap=True)
 
 
 def _print(cal: Any) -> None:
-    from rich.table import Table
+    """The ranking and each model's posterior on stdout (``cli.tables.show_table``: whole
+    into a pipe or a file; on a terminal too narrow for a table, turned: its fields down)."""
+    from impactlab.cli.tables import show_table
 
-    t = Table(title=Text("models ranked by PSIS-LOO (leave one drop out)"), header_style="bold")
     cols = ("rank", "model", "elpd_loo", "se", "elpd_diff", "dse", "weight", "Pareto k",
             "converged", "law extrapolated", "note")  # fmt: skip
-    for col in cols:
-        t.add_column(col, justify="left" if col in ("model", "note") else "right", overflow="fold")
-    for r in cal.ranking:
-        t.add_row(
-            str(r["rank"] + 1), Text(r["model"]), f"{r['elpd_loo']:.2f}", f"{r['se']:.2f}",
-            f"{r['elpd_diff']:.2f}", f"{r['dse']:.2f}", f"{r['weight']:.2f}",
-            _diag(r["pareto_k_max"], ".2f"), "yes" if r["converged"] else "no",
-            _share(r.get("law_extrapolated", math.nan)), Text(r["note"]),
-        )  # fmt: skip
-    _show(t)
+    rows = [(
+        str(r["rank"] + 1), r["model"], f"{r['elpd_loo']:.2f}", f"{r['se']:.2f}",
+        f"{r['elpd_diff']:.2f}", f"{r['dse']:.2f}", f"{r['weight']:.2f}",
+        _diag(r["pareto_k_max"], ".2f"), "yes" if r["converged"] else "no",
+        _share(r.get("law_extrapolated", math.nan)), r["note"],
+    ) for r in cal.ranking]  # fmt: skip
+    show_table("models ranked by PSIS-LOO (leave one drop out)", cols, rows,
+               right=[c for c in cols if c not in ("model", "note")], label=1)  # fmt: skip
     shown = set(cal.warnings)  # printed as warnings already
+    head = ("parameter", "median", "90 % interval", "best", "unit", "R-hat", "ESS")
     for name, post in cal.posteriors.items():
-        p = Table(title=Text(name), header_style="bold")
-        for col in ("parameter", "median", "90 % interval", "best", "unit", "R-hat", "ESS"):
-            p.add_column(
-                col, justify="left" if col in ("parameter", "unit") else "right", overflow="fold"
-            )
+        params = []
         for par in post.params:
             s, d = post.summary[par.name], display_unit(par.name, par.unit)
 
             def f(x: float, d: Any = d) -> str:
                 return format_number(x * d.scale, 4)
 
-            p.add_row(
-                Text(par.name), f(s["median"]), f"[{f(s['q05'])}, {f(s['q95'])}]",
-                f(post.best[par.name]), Text(d.unit), _diag(s["rhat"], ".3f"),
+            params.append((
+                par.name, f(s["median"]), f"[{f(s['q05'])}, {f(s['q95'])}]",
+                f(post.best[par.name]), d.unit, _diag(s["rhat"], ".3f"),
                 _diag(s["ess_bulk"], ".0f"),
-            )  # fmt: skip
-        _show(p)
+            ))  # fmt: skip
+        show_table(name, head, params,
+                   right=[c for c in head if c not in ("parameter", "unit")])  # fmt: skip
         fails = sum(post.failures.values())
         _line(
             f"{post.evaluations} evaluations in this run, acceptance {post.acceptance:.2f}, "

@@ -56,24 +56,17 @@ def _progress(quiet: bool) -> tuple[Any, Any]:
     return report, bar
 
 
-def _show(explanation: Any) -> None:
-    """The table on stdout, every cell whole (into a pipe or a file: as wide as it needs)."""
-    from rich.console import Console
-    from rich.table import Table
+def _show(explanation: Any, out: Any = None) -> None:
+    """The table on stdout (``cli.tables.show_table``: whole into a pipe or a file; on a
+    terminal too narrow for it, turned per drop, the measured values beside each part)."""
+    from impactlab.cli.tables import show_table
 
     head, rows = explanation.display_rows()
     title = f"which physics explains the drops ({explanation.law}/{explanation.friction}, "
-    table = Table(title=Text(title + "nothing tuned)"), header_style="bold")
-    for h in head:
-        left = h in ("drop", "configuration", "flags", "status")
-        table.add_column(Text(h), justify="left" if left else "right", overflow="fold")
-    for r in rows:
-        table.add_row(*(Text(c) for c in r))
-    out = Console()
-    if not out.is_terminal:
-        need = out.measure(table, options=out.options.update_width(10_000)).maximum
-        out = Console(width=max(out.width, need))
-    out.print(table)
+    left = ("drop", "configuration", "flags", "status")
+    right = [h for h in head if h not in left]
+    show_table(title + "nothing tuned)", head, rows, right=right, group=0, label=1, pin=True,
+               out=out)  # fmt: skip
 
 
 def explain_cmd(
