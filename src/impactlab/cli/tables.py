@@ -1,4 +1,5 @@
-"""Tables on stdout that stay readable at any width.
+"""Tables on stdout that stay readable at any width (those of the commands ``explain`` and
+``calibrate``).
 
 Into a pipe or a file a table is printed whole, as wide as it needs (rich would cut it to 80
 columns), so that scripts and saved logs see every cell on one line. On a terminal no word or
