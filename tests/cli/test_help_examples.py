@@ -134,3 +134,13 @@ def test_calibrate_s_first_example_gives_what_the_file_lacks(
     args = [*shlex.split(first)[1:], "--steps", "20", "--walkers", "8", "--quiet", "--json"]
     code, _, err = cli_main(*args)
     assert code == 0, err
+
+
+@pytest.mark.parametrize("words", sorted(COMMANDS))
+def test_every_help_line_fits_an_80_column_terminal(words: str) -> None:
+    """An example wider than the terminal would be broken by it mid-token ("30" / "deg")."""
+    from typer.testing import CliRunner
+
+    result = CliRunner().invoke(app, [*words.split(), "--help"], terminal_width=80)
+    assert result.exit_code == 0, result.output
+    assert [line for line in result.output.splitlines() if len(line) > 80] == []

@@ -196,7 +196,8 @@ def analyze_cmd(
     \b
       impactlab analyze drop20.c3d dent20.x3p --geometry markers.toml \\
         --measurements drops.csv --label d20
-      impactlab calibrate drops.csv -p "flat_yield_strength=uniform(100 MPa, 1 GPa)"
+      impactlab calibrate drops.csv \\
+        -p "flat_yield_strength=uniform(100 MPa, 1 GPa)"
     """
     from impactlab.experiment import analyze  # lazy: a fast CLI start
     from impactlab.experiment.checks import check_input_file, check_output_folder, output_folder

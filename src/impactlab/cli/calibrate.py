@@ -197,7 +197,8 @@ def calibrate_cmd(
     \b
       impactlab analyze drop20.c3d dent20.x3p --geometry markers.toml \\
         --measurements drops.csv --label d20
-      impactlab calibrate drops.csv -p "flat_yield_strength=uniform(100 MPa, 1 GPa)" --json
+      impactlab calibrate drops.csv \\
+        -p "flat_yield_strength=uniform(100 MPa, 1 GPa)" --json
 
     \b
       impactlab calibrate --config cal.toml --out cal

@@ -15,14 +15,12 @@ from __future__ import annotations
 import json
 import math
 import sys
-import textwrap
 from collections.abc import Mapping
 from pathlib import Path
 from typing import Any, cast
 
 import typer
 
-from impactlab._display import display_unit, field_row
 from impactlab._json import jsonable, to_json
 from impactlab.bodies import PAPER_ROD
 from impactlab.cli._common import (
@@ -53,60 +51,13 @@ from impactlab.cli.config_file import (
 )
 from impactlab.cli.config_values import option_numbers, plain_number, text
 from impactlab.cli.drop_body import MODES_ALIASES, MODES_HELP, drop_body
+from impactlab.cli.drop_contacts import print_contacts
 from impactlab.cli.simulate_from import run_from
 from impactlab.dynamics.drop import DEFAULT_TIME_LIMIT, simulate_drop
 from impactlab.dynamics.drop_checks import DropError
 from impactlab.dynamics.drop_result import UNITS, DropResult
 from impactlab.friction import DEFAULT_MU
 from impactlab.materials import AISI_1010
-
-#: What the contact table's columns and the less obvious totals mean (printed under the table).
-LEGEND = (
-    "end: the end that touched (0 the tip, 1 the other end); start: from the first touch; "
-    "sliding_length: int v_t dt over the contact (signed along +x, as an impact's); reload: "
-    "True if the contact began on an existing dent. "
-    "e_raw: e with the gravity impulse of the sequence kept (e removes it, as a ballistic fit "
-    "of marker data would, so a nearly lossless drop's e can exceed 1: flagged "
-    "gravity-dominated); mu_apparent: the paper's Eq. 28 on the simulated velocities."
-)
-
-#: Columns of the contact table: ContactRecord fields (display units: ``impactlab._display``).
-_COLUMNS = (
-    "end",
-    "start",
-    "duration",
-    "delta_max",
-    "max_force",
-    "normal_impulse",
-    "tangential_impulse",
-    "sliding_length",
-    "reload",
-)
-
-
-def _contact_rows(result: DropResult) -> tuple[list[str], list[list[str]]]:
-    """The contact table's header (field [display unit]) and rows, in display units."""
-    header = ["#"]
-    for key in _COLUMNS:
-        unit = display_unit(key, SI_UNITS.get(key, "")).unit
-        header.append(key if unit == "-" else f"{key} [{unit}]")
-    rows = []
-    for i, c in enumerate(result.contacts, 1):
-        cells = [str(i)]
-        for key in _COLUMNS:
-            v = getattr(c, key)
-            cells.append(field_row(key, v, SI_UNITS.get(key))[1])
-        rows.append(cells)
-    return header, rows
-
-
-def _contact_table(result: DropResult) -> str:
-    """Every contact, one line each, in display units (plain text, fixed width)."""
-    header, rows = _contact_rows(result)
-    table = [header, *rows]
-    widths = [max(len(r[j]) for r in table) for j in range(len(header))]
-    lines = ["  ".join(cell.rjust(w) for cell, w in zip(r, widths, strict=True)) for r in table]
-    return "contacts\n" + "\n".join(lines)
 
 
 def missing_as_nan(data: Any, units: Mapping[str, str]) -> Any:
@@ -134,8 +85,7 @@ def report_drop(result: DropResult, *, as_json: bool) -> None:
         doc = to_json(missing_as_nan(data, units), units) | {"input": jsonable(recorded)}
         print(json.dumps(doc, indent=2))
         return
-    print(_contact_table(result))
-    print(textwrap.fill(LEGEND, width=100))
+    print_contacts(result)
     emit(result.summary(), as_json=False, title="drop", units=result.display_units())
 
 
@@ -263,24 +213,26 @@ def drop_cmd(
     Examples:
 
     \b
-      impactlab drop --angle "30 deg" --vy "-2 m/s" --length "200 mm" --radius "5 mm" \\
-        --diameter "10 mm" --material brass-c360 --flat al-6061-t6
+      impactlab drop --angle "30 deg" --vy "-2 m/s" --length "200 mm" \\
+        --radius "5 mm" --diameter "10 mm" --material brass-c360 --flat al-6061-t6
 
     \b
       impactlab drop --angle "20 deg" --vy "-1.41 m/s" --mu 0.2
 
     \b
-      impactlab drop --angle "45 deg" --vy "-2.18 m/s" --mu 0.13 --rate cowper-symonds
+      impactlab drop --angle "45 deg" --vy "-2.18 m/s" --mu 0.13 \\
+        --rate cowper-symonds
 
     \b
-      impactlab drop --angle "20 deg" --vy "-1.41 m/s" --mu 0.2 --flat al-6061-t6 \\
-        --rate "cowper-symonds(D=6500 1/s, q=4)"
+      impactlab drop --angle "20 deg" --vy "-1.41 m/s" --mu 0.2 \\
+        --flat al-6061-t6 --rate "cowper-symonds(D=6500 1/s, q=4)"
 
     \b
       impactlab drop --angle "70 deg" --vy "-3.45 m/s" --mu 0.1 --rigid --json
 
     \b
-      impactlab drop --angle "20 deg" --vy "-1.41 m/s" --mu 0.2 --friction partial_slip
+      impactlab drop --angle "20 deg" --vy "-1.41 m/s" --mu 0.2 \\
+        --friction partial_slip
 
     \b
       impactlab drop --angle "20 deg" --vy "-1.41 m/s" --mu 0.2 --stop flight

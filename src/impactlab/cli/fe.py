@@ -219,7 +219,8 @@ def indent_cmd(
 
     \b
       impactlab fe indent --max "10 um" --max "100 um"
-      impactlab fe indent --max "5 um" --flat-E "69 GPa" --flat-nu 0.33 --flat-sy "276 MPa"
+      impactlab fe indent --max "5 um" --flat-E "69 GPa" --flat-nu 0.33 \\
+        --flat-sy "276 MPa"
       impactlab fe indent --max "20 um" --sphere rigid --hardening flat.csv --json
       impactlab fe indent --max "50 um" --mesh 2 --plot --out fe-out/
       impactlab fe indent --max "5 um" --mu 0.3 --loading-only

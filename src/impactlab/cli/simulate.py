@@ -302,8 +302,8 @@ def simulate_cmd(
       impactlab simulate sphere --radius "5 mm" --vy "-1 m/s" --material aisi-1010
 
     \b
-      impactlab simulate sphere --radius "3 mm" --speed "2.5 m/s" --incidence "30 deg" \\
-        --material aisi-52100 --flat al-6061-t6
+      impactlab simulate sphere --radius "3 mm" --speed "2.5 m/s" \\
+        --incidence "30 deg" --material aisi-52100 --flat al-6061-t6
 
     \b
       impactlab simulate rod --flexible --angle "20 deg" --vy "-1.41 m/s" --mu 0.2
