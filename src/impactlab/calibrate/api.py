@@ -16,6 +16,7 @@ from impactlab.calibrate.calibration_warning import CalibrationWarning
 from impactlab.calibrate.cluster import map_on_dask
 from impactlab.calibrate.correlated_likelihood import correlation_rows, likelihood_text
 from impactlab.calibrate.diagnostics import misfits
+from impactlab.calibrate.display import calibration_html, calibration_text
 from impactlab.calibrate.drop_predictions import DropPredictions, predict_drops
 from impactlab.calibrate.input_checks import (
     check_calibration_inputs,
@@ -53,7 +54,7 @@ REFERENCES = cite(
 )  # fmt: skip
 
 
-@dataclass
+@dataclass(repr=False)
 class Calibration:
     """What ``calibrate`` returns: ``posteriors`` (model name -> ModelPosterior), ``ranking``
     (rows best first, ``rank_models``: with ``converged``, ``distinguishable`` and ``note``),
@@ -116,6 +117,12 @@ class Calibration:
             model=model, draws=draws, seed=seed, evaluator=evaluator,
             calibrated=self.measurements,
         )  # fmt: skip
+
+    def __repr__(self) -> str:
+        return calibration_text(self)
+
+    def _repr_html_(self) -> str:
+        return calibration_html(self)
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready (the units of ``Measurements`` and ``Parameter.unit``)."""

@@ -19,6 +19,7 @@ import numpy as np
 from impactlab._display import format_number
 from impactlab.calibrate.calibration_warning import CalibrationWarning
 from impactlab.calibrate.case_status import STATUS_REFUSED
+from impactlab.calibrate.display import predictions_html, predictions_text
 from impactlab.calibrate.input_checks import MAX_SEED, _one_material, check_calibration_inputs
 from impactlab.calibrate.measurements import Measurements, read_measurements
 from impactlab.calibrate.model_specs import parse_model
@@ -30,7 +31,7 @@ from impactlab.sweep.engine import ENGINE, Evaluator
 __all__ = ["DropPredictions", "predict_drops"]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class DropPredictions:
     """A model's predictions for drops at N posterior draws (SI): ``model``, ``labels`` (D),
     ``values`` quantity -> (N, D) (NaN where the case failed), ``status`` (N, D) (0: finished;
@@ -47,6 +48,12 @@ class DropPredictions:
     draws: np.ndarray
     extrapolated: np.ndarray | None = None
     refused: Mapping[str, str] = field(default_factory=dict)
+
+    def __repr__(self) -> str:
+        return predictions_text(self)
+
+    def _repr_html_(self) -> str:
+        return predictions_html(self)
 
     def summary(self) -> list[dict[str, Any]]:
         """One row per drop and quantity: drop, quantity, unit (SI), median, q05, q95 (the 90 %

@@ -33,6 +33,7 @@ import numpy as np
 
 from impactlab._files import write_text_atomic
 from impactlab.calibrate.correlations import correlation_column, normalised
+from impactlab.calibrate.display import measurements_text
 from impactlab.calibrate.measurement_columns import resolve_units
 from impactlab.calibrate.measurement_files import csv_records, read_text
 from impactlab.calibrate.measurement_rows import Row, parse_row
@@ -43,7 +44,7 @@ from impactlab.sweep.inputs import INPUTS
 __all__ = ["Measurements", "read_measurements"]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class Measurements:
     """Drops and what was measured on them.
 
@@ -69,6 +70,9 @@ class Measurements:
     def __post_init__(self) -> None:
         pairs = normalised(self.correlation, self.labels, self.observed, self.sigma)
         object.__setattr__(self, "correlation", pairs)
+
+    def __repr__(self) -> str:
+        return measurements_text(self)
 
     @property
     def n_drops(self) -> int:

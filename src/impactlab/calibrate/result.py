@@ -15,6 +15,7 @@ from scipy.special import logsumexp
 
 from impactlab.calibrate._arviz import az, quiet, recording
 from impactlab.calibrate.diagnostics import MISFIT_SIGMAS, convergence_notes, misfit_text
+from impactlab.calibrate.display import POSTERIOR_HEAD, grid_html, posterior_rows, posterior_text
 from impactlab.calibrate.models import Prediction
 from impactlab.calibrate.posterior import LogPosterior
 from impactlab.calibrate.priors import Parameter
@@ -32,7 +33,7 @@ ONE_DROP = (
 INTERVAL = (0.05, 0.95)
 
 
-@dataclass
+@dataclass(repr=False)
 class ModelPosterior:
     """The calibration of one candidate model (SI units).
 
@@ -85,6 +86,12 @@ class ModelPosterior:
     def converged(self) -> bool:
         """True when the diagnostics found no convergence problem (``convergence``)."""
         return not self.convergence
+
+    def __repr__(self) -> str:
+        return posterior_text(self)
+
+    def _repr_html_(self) -> str:
+        return grid_html(self.model, POSTERIOR_HEAD, posterior_rows(self))
 
     @property
     def names(self) -> tuple[str, ...]:

@@ -16,7 +16,6 @@ from __future__ import annotations
 
 import contextlib
 import json
-import math
 import sys
 from pathlib import Path
 from typing import Annotated, Any, NoReturn
@@ -25,7 +24,6 @@ import typer
 from rich.text import Text
 
 from impactlab._compile_notice import gives_way
-from impactlab._display import display_unit, format_number
 from impactlab._json import jsonable
 from impactlab.cli._common import UserError, console
 from impactlab.cli.output_paths import check_replaceable, output_dir
@@ -86,58 +84,32 @@ def _progress(quiet: bool) -> tuple[Any, Any]:
     return report, bar
 
 
-def _diag(x: float, spec: str) -> str:
-    """A diagnostic's number, or "n/a" where it could not be assessed (NaN)."""
-    return "n/a" if math.isnan(x) else format(x, spec)
-
-
-def _share(x: float) -> str:
-    """A share in percent (``"100 %"``), or "n/a" where it is not known (NaN)."""
-    return "n/a" if math.isnan(x) else f"{format_number(100 * x, 2)} %"
-
-
 def _line(text: str) -> None:
     """One line on stdout, never broken (a terminal wraps it)."""
     console.print(Text(text), soft_wrap=True)
 
 
 def _print(cal: Any) -> None:
-    """The ranking and each model's posterior on stdout (``cli.tables.show_table``: whole
-    into a pipe or a file; on a terminal too narrow for a table, turned: its fields down)."""
+    """The ranking and each model's posterior on stdout (``calibrate.display``'s rows through
+    ``cli.tables.show_table``: whole into a pipe or a file; on a terminal too narrow for a
+    table, turned: its fields down)."""
+    from impactlab.calibrate.display import (
+        POSTERIOR_HEAD,
+        RANKING_HEAD,
+        posterior_footer,
+        posterior_rows,
+        ranking_rows,
+    )
     from impactlab.cli.tables import show_table
 
-    cols = ("rank", "model", "elpd_loo", "se", "elpd_diff", "dse", "weight", "Pareto k",
-            "converged", "law extrapolated", "note")  # fmt: skip
-    rows = [(
-        str(r["rank"] + 1), r["model"], f"{r['elpd_loo']:.2f}", f"{r['se']:.2f}",
-        f"{r['elpd_diff']:.2f}", f"{r['dse']:.2f}", f"{r['weight']:.2f}",
-        _diag(r["pareto_k_max"], ".2f"), "yes" if r["converged"] else "no",
-        _share(r.get("law_extrapolated", math.nan)), r["note"],
-    ) for r in cal.ranking]  # fmt: skip
-    show_table("models ranked by PSIS-LOO (leave one drop out)", cols, rows,
-               right=[c for c in cols if c not in ("model", "note")], label=1)  # fmt: skip
+    right = [c for c in RANKING_HEAD if c not in ("model", "note")]
+    show_table("models ranked by PSIS-LOO (leave one drop out)", RANKING_HEAD,
+               ranking_rows(cal.ranking), right=right, label=1)  # fmt: skip
     shown = set(cal.warnings)  # printed as warnings already
-    head = ("parameter", "median", "90 % interval", "best", "unit", "R-hat", "ESS")
+    right = [c for c in POSTERIOR_HEAD if c not in ("parameter", "unit")]
     for name, post in cal.posteriors.items():
-        params = []
-        for par in post.params:
-            s, d = post.summary[par.name], display_unit(par.name, par.unit)
-
-            def f(x: float, d: Any = d) -> str:
-                return format_number(x * d.scale, 4)
-
-            params.append((
-                par.name, f(s["median"]), f"[{f(s['q05'])}, {f(s['q95'])}]",
-                f(post.best[par.name]), d.unit, _diag(s["rhat"], ".3f"),
-                _diag(s["ess_bulk"], ".0f"),
-            ))  # fmt: skip
-        show_table(name, head, params,
-                   right=[c for c in head if c not in ("parameter", "unit")])  # fmt: skip
-        fails = sum(post.failures.values())
-        _line(
-            f"{post.evaluations} evaluations in this run, acceptance {post.acceptance:.2f}, "
-            f"{fails} failed cases (likelihood zero)"
-        )
+        show_table(name, POSTERIOR_HEAD, posterior_rows(post), right=right)
+        _line(posterior_footer(post))
         for w in post.warnings:
             if f"{name}: {w}" not in shown and w not in shown:
                 _line(f"  note: {w}")
