@@ -43,6 +43,7 @@ from impactlab.cli import (
     warm,
 )
 from impactlab.cli._common import refuse_empty_paths
+from impactlab.cli.printing import print_wrapped
 
 
 class _Commands(TyperGroup):
@@ -179,7 +180,8 @@ def _own(category: type[Warning]) -> bool:
 @contextmanager
 def _one_line_warnings() -> Iterator[None]:
     """Show impactlab's own warnings as one line ``warning: <message>`` on stderr (no file,
-    line number or source line); other warnings as Python shows them."""
+    line number or source line; on a terminal wrapped to its width); other warnings as Python
+    shows them."""
     previous = warnings.showwarning
 
     def show(
@@ -191,7 +193,7 @@ def _one_line_warnings() -> Iterator[None]:
         line: str | None = None,
     ) -> None:
         if _own(category):
-            print(f"warning: {message}", file=sys.stderr if file is None else file)
+            print_wrapped(f"warning: {message}", file)
         else:
             previous(message, category, filename, lineno, file, line)
 
@@ -260,20 +262,19 @@ def main() -> None:
         if os.environ.get("IMPACTLAB_DEBUG"):
             raise
         if not isinstance(exc, OSError) or _refused_input(exc):  # the input refused: status 2
-            print(f"error: {exc}", file=sys.stderr)
+            print_wrapped(f"error: {exc}")
             sys.exit(2)
         # the system's, whatever its errno (no permission, a read-only file system, a full
         # disk, a file where a folder should be): its words and the file named, status 1
-        print(f"error: {_system_error_line(exc)}", file=sys.stderr)
+        print_wrapped(f"error: {_system_error_line(exc)}")
         sys.exit(1)
     except MemoryError as exc:  # an input that asks for more than the machine has
         if os.environ.get("IMPACTLAB_DEBUG"):
             raise
         said = f": {exc}" if str(exc) else ""
-        print(
+        print_wrapped(
             f"error: out of memory{said}; an input asks for more than this machine has (a "
-            "sample count, a grid, a resolution): choose a smaller one",
-            file=sys.stderr,
+            "sample count, a grid, a resolution): choose a smaller one"
         )
         sys.exit(2)
     except KeyboardInterrupt as exc:  # outside a command (typer's set-up): no line yet
@@ -286,7 +287,7 @@ def main() -> None:
         message = getattr(exc, "format_message", None)
         code = getattr(exc, "exit_code", None)
         if callable(message) and isinstance(code, int):  # one line, as every other error
-            print(f"error: {_usage_line(exc, str(message()))}", file=sys.stderr)
+            print_wrapped(f"error: {_usage_line(exc, str(message()))}")
             sys.exit(code)
         if type(exc).__name__ == "Abort":
             print("aborted", file=sys.stderr)

@@ -23,6 +23,7 @@ from impactlab.cli._common import (
 )
 from impactlab.cli.analyze_measurements import append_drop, check_measurements
 from impactlab.cli.invert_inputs import check_measure
+from impactlab.cli.printing import print_wrapped
 
 if TYPE_CHECKING:
     from impactlab.experiment import ExperimentResult, MarkerGeometry
@@ -251,17 +252,20 @@ def analyze_cmd(
 
         print(json.dumps(analysis_json(res, options), indent=2))
         for w in res.warnings:  # on stderr too, as every command's with --json
-            typer.echo(f"warning: {w}", err=True)
+            print_wrapped(f"warning: {w}")
     else:
         _print_summary(res)
+    failed = "; ".join(f"{k}: {v}" for k, v in res.errors.items())
     if isinstance(appended, UserError | OSError):
+        if failed:  # the stages' errors, that the summary points to, then why nothing appended
+            print_wrapped(f"error: {failed}")
         raise appended
     if appended is not None:
         for w in appended[1]:
-            typer.echo(f"warning: {w}", err=True)
+            print_wrapped(f"warning: {w}")
         typer.echo(f"appended drop {name!r} to {measurements} ({appended[0]} drops)", err=True)
-    if res.errors:
-        raise UserError("; ".join(f"{k}: {v}" for k, v in res.errors.items()))
+    if failed:
+        raise UserError(failed)
 
 
 def _print_summary(res: ExperimentResult) -> None:
@@ -291,7 +295,7 @@ def _print_summary(res: ExperimentResult) -> None:
     names = (Path(p).name if p else "-" for p in (res.markers_path, res.scan_path))
     print_rows(rows, "impactlab analyze: " + " + ".join(names))
     for w in res.warnings:  # on stderr, as every command's warnings
-        typer.echo(f"warning: {w}", err=True)
+        print_wrapped(f"warning: {w}")
     for name, path in {**res.figures, **res.files}.items():
         console.print(Text(f"saved {name}: {path}"))
 

@@ -21,12 +21,12 @@ from pathlib import Path
 from typing import Annotated, Any, NoReturn
 
 import typer
-from rich.text import Text
 
 from impactlab._compile_notice import gives_way
 from impactlab._json import jsonable
 from impactlab.cli._common import UserError, console
 from impactlab.cli.output_paths import check_replaceable, output_dir
+from impactlab.cli.printing import print_wrapped
 
 _PARAM_HELP = (
     'A free parameter and its prior, "name=uniform(low, high)", "name=loguniform(low, high)" or '
@@ -85,8 +85,9 @@ def _progress(quiet: bool) -> tuple[Any, Any]:
 
 
 def _line(text: str) -> None:
-    """One line on stdout, never broken (a terminal wraps it)."""
-    console.print(Text(text), soft_wrap=True)
+    """One line on stdout: into a pipe or a file whole, on a terminal wrapped between words
+    (``printing.print_wrapped``)."""
+    print_wrapped(text, sys.stdout)
 
 
 def _print(cal: Any) -> None:

@@ -14,7 +14,6 @@ from __future__ import annotations
 
 import json
 import math
-import sys
 from collections.abc import Mapping
 from pathlib import Path
 from typing import Any, cast
@@ -52,6 +51,7 @@ from impactlab.cli.config_file import (
 from impactlab.cli.config_values import option_numbers, plain_number, text
 from impactlab.cli.drop_body import MODES_ALIASES, MODES_HELP, drop_body
 from impactlab.cli.drop_contacts import print_contacts
+from impactlab.cli.printing import print_wrapped
 from impactlab.cli.simulate_from import run_from
 from impactlab.dynamics.drop import DEFAULT_TIME_LIMIT, simulate_drop
 from impactlab.dynamics.drop_checks import DropError
@@ -252,7 +252,7 @@ def drop_cmd(
         section = command_table(load_toml(config, "--config"), "drop", "simulate", str(config))
         result = run_drop(merge_config(section, cli, config, KEYS, _FLAGS, _NOTES))
     for line in result.warnings:
-        print(f"warning: {line}", file=sys.stderr)
+        print_wrapped(f"warning: {line}")
     report_drop(cast(DropResult, result), as_json=as_json)  # drop_only: a drop
 
 

@@ -22,6 +22,7 @@ import typer
 from rich.text import Text
 
 from impactlab.cli._common import UserError, console
+from impactlab.cli.printing import print_wrapped
 
 _RATE_HELP = (
     "The rate-dependent rows' law, the flat's own constants, e.g. "
@@ -120,9 +121,9 @@ def explain_cmd(
         return
     _show(result)
     for drop in dict.fromkeys(result.summary["drop"]):  # the verdicts say the "best: " notes
-        console.print(Text(f"verdict ({drop}): {result.verdict(drop).reason}"), soft_wrap=True)
+        print_wrapped(f"verdict ({drop}): {result.verdict(drop).reason}", sys.stdout)
     for note in (*_stated(), *(n for n in result.notes if not n.startswith("best: "))):
-        console.print(Text(f"note: {note}"), soft_wrap=True)
+        print_wrapped(f"note: {note}", sys.stdout)
     for k, v in files.items():
         console.print(Text(f"{k}: {v}"), soft_wrap=True)
     sys.stdout.flush()

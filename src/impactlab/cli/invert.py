@@ -51,6 +51,7 @@ from impactlab.cli.invert_inputs import (
     parse_value,
 )
 from impactlab.cli.invert_output import inversion_doubts, print_inversion
+from impactlab.cli.printing import print_wrapped
 
 
 def run_invert(
@@ -325,7 +326,7 @@ def invert_cmd(
                     for k, v in model.items() if isinstance(v, float)]  # fmt: skip
             print_rows(rows, f"simulated impact on {model['flat']}")
     for text in found:
-        typer.echo(f"warning: {text}", err=True)
+        print_wrapped(f"warning: {text}")
 
 
 def register(app: typer.Typer) -> None:

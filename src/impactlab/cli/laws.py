@@ -12,7 +12,6 @@ Examples::
 
 from __future__ import annotations
 
-import sys
 import textwrap
 from typing import Any
 
@@ -24,7 +23,7 @@ from impactlab._display import field_row
 from impactlab._json import quantity as quantity_json
 from impactlab.cli._common import UserError, console, emit, positive
 from impactlab.cli.laws_accuracy import print_accuracy
-from impactlab.cli.printing import versioned
+from impactlab.cli.printing import print_wrapped, versioned
 from impactlab.contact import get_law, law_names
 from impactlab.contact.base import ContactLaw
 from impactlab.contact.registered import RegisteredLaw
@@ -183,7 +182,7 @@ def laws(
         body = material or body or _EXAMPLE_PAIR["--body"]
         _laws(name, radius, body, flat, as_json, body_option)
     except ValueError as exc:  # one line, no traceback, whichever entry point runs us
-        print(f"error: {exc}", file=sys.stderr)
+        print_wrapped(f"error: {exc}")
         raise typer.Exit(2) from None
 
 

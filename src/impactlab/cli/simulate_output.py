@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import json
 import math
-import sys
 from pathlib import Path
 
 from rich.text import Text
@@ -22,6 +21,7 @@ from impactlab._json import jsonable, to_json
 from impactlab.cli._common import SI_UNITS, console, emit
 from impactlab.cli.drop import missing_as_nan, report_drop
 from impactlab.cli.output_paths import check_replaceable, figure_bytes
+from impactlab.cli.printing import print_wrapped
 from impactlab.dynamics import ImpactResult
 from impactlab.dynamics.drop_result import DropResult
 
@@ -84,7 +84,7 @@ def report_result(result: ImpactResult | DropResult, *, out: Path | None, as_jso
     """Print ``result`` (warnings on stderr; a table, or ``--json``) and, with ``out``, save its
     figures and ``impact_result.json`` there."""
     for text in result.warnings:
-        print(f"warning: {text}", file=sys.stderr)
+        print_wrapped(f"warning: {text}")
     if isinstance(result, DropResult):
         report_drop(result, as_json=as_json)
         return

@@ -25,7 +25,7 @@ from impactlab._json import to_json
 from impactlab._oserror import system_error_line as _system_error_line
 from impactlab.cli._common import SI_UNITS, UserError, emit
 from impactlab.cli.output_paths import existing_store, output_dir
-from impactlab.cli.printing import versioned
+from impactlab.cli.printing import print_wrapped, versioned
 from impactlab.cli.sweep_group import DefaultRun
 from impactlab.cli.sweep_paths import (
     check_export_file,
@@ -165,7 +165,7 @@ def run_cmd(
         summary = run_summary(res, ds, netcdf, files, as_json=False)
         emit(summary, as_json=False, title=f"sweep {res.study.name}")
     if failed is not None:
-        print(failed, file=sys.stderr)
+        print_wrapped(failed)
         raise typer.Exit(1)
     refuse_none_ok(res, ds)  # every case refused or failed: say so, exit status 2
 
@@ -323,7 +323,7 @@ def _plots(plot_sweep: Any, ds: Any, folder: Path, skipped: list[str] | None = N
         skipped.extend(r.removeprefix("not plotted: ") for r in reasons)
     if files or skipped is None:
         for reason in reasons:
-            print(reason, file=sys.stderr)
+            print_wrapped(reason)
     return list(files)
 
 

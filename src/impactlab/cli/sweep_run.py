@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING
 import typer
 
 from impactlab.cli._common import UserError
+from impactlab.cli.printing import print_wrapped
 
 if TYPE_CHECKING:
     from impactlab.sweep import SweepResult
@@ -45,7 +46,7 @@ def run_study(study_path: Path, where: Where, quiet: bool, restart: bool) -> Swe
         warnings.simplefilter("always", SweepSizeWarning)
         study = Study.from_toml(study_path, max_cases=where.max_cases)
     for w in caught:
-        print(f"warning: {w.message}", file=sys.stderr)
+        print_wrapped(f"warning: {w.message}")
     try:
         with warnings.catch_warnings():  # the summary counts them (--quiet: no summary)
             warnings.simplefilter("ignore", FlaggedCasesWarning)
@@ -78,7 +79,7 @@ def run_study(study_path: Path, where: Where, quiet: bool, restart: bool) -> Swe
     except backends.NoWorkersError as exc:  # one line, as docs/sweep.md says
         raise UserError(str(exc)) from None
     except backends.WorkerLostError as exc:  # one line, as an interrupt's; not the user's input: 1
-        print(f"error: {exc}", file=sys.stderr)
+        print_wrapped(f"error: {exc}")
         raise typer.Exit(1) from None
 
 

@@ -16,7 +16,7 @@ from impactlab._display import field_row, format_number
 from impactlab._json import quantity as quantity_json
 from impactlab._json import to_json
 from impactlab.cli._common import print_rows
-from impactlab.cli.printing import versioned
+from impactlab.cli.printing import KEEP, print_wrapped, versioned
 from impactlab.flags import invalidating_names
 
 if TYPE_CHECKING:
@@ -120,7 +120,7 @@ def warn_incomplete(store: Path) -> None:
 
     note = incomplete_note(store)
     if note is not None:
-        print(f"warning: {note}", file=sys.stderr)
+        print_wrapped(f"warning: {note}")
 
 
 def print_uncertainty(
@@ -177,16 +177,19 @@ def _print_report(report: dict[str, Any], title: str) -> None:
     print_rows(rows, f"{title}: {n}; mean ± standard deviation, percentiles")
     note = extrapolated_note(report)
     if note is not None:
-        print(note)
+        print_wrapped(note, sys.stdout)
     ranked: dict[str, list[str]] = {}
-    for r in report["sensitivity"]:
+    for r in report["sensitivity"]:  # an input with its number: on one line on a terminal
         ranked.setdefault(str(r["output"]), []).append(
-            f"{r['input']} {format_number(r['rank_corr2'], 3)}"
+            f"{r['input']}{KEEP}{format_number(r['rank_corr2'], 3)}"
         )
     if ranked:
-        print("sensitivity (squared Spearman rank correlation of each input with the output):")
+        print_wrapped(
+            "sensitivity (squared Spearman rank correlation of each input with the output):",
+            sys.stdout,
+        )
         for out, items in ranked.items():
-            print(f"  {out}: {', '.join(items)}")
+            print_wrapped(f"  {out}: {', '.join(items)}", sys.stdout)
 
 
 def _uncertainty_json(report: dict[str, Any]) -> dict[str, Any]:

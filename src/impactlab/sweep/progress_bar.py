@@ -13,14 +13,45 @@ from rich.progress import (
     BarColumn,
     MofNCompleteColumn,
     Progress,
+    ProgressColumn,
     TextColumn,
     TimeElapsedColumn,
     TimeRemainingColumn,
 )
+from rich.table import Column
 
 from impactlab._compile_notice import gives_way
 
 __all__ = ["progress_bar"]
+
+#: The bar's narrowest width, and the widest rate it makes room for ("1,234,567/s").
+_MIN_BAR, _RATE = 10, 11
+
+
+def bar_columns(total: int, width: int) -> list[ProgressColumn]:
+    """The bar's columns on a terminal ``width`` wide: the study's name cut with an ellipsis
+    to leave the count, rate, elapsed time and ETA (for ``total`` impacts) whole."""
+    count = 2 * len(str(total)) + 1  # "done/total"
+    # count, "impacts", rate, elapsed, "ETA", remaining; a space between each two of 8 columns
+    numbers = count + len("impacts") + _RATE + 7 + len("ETA") + 7 + 7
+    name = max(8, width - numbers - _MIN_BAR)
+
+    def whole(min_width: int = 0) -> Column:
+        return Column(no_wrap=True, min_width=min_width)
+
+    return [
+        TextColumn(
+            "[bold]{task.description}",
+            table_column=Column(no_wrap=True, overflow="ellipsis", max_width=name),
+        ),
+        BarColumn(),
+        MofNCompleteColumn(table_column=whole(count)),
+        TextColumn("impacts", table_column=whole()),
+        TextColumn("{task.fields[rate]}", table_column=whole(_RATE)),
+        TimeElapsedColumn(table_column=whole(7)),
+        TextColumn("ETA", table_column=whole()),
+        TimeRemainingColumn(table_column=whole(7)),
+    ]
 
 
 @contextmanager
@@ -38,14 +69,7 @@ def progress_bar(
         return
     with (
         Progress(
-            TextColumn("[bold]{task.description}"),
-            BarColumn(),
-            MofNCompleteColumn(),
-            TextColumn("impacts"),
-            TextColumn("{task.fields[rate]}"),
-            TimeElapsedColumn(),
-            TextColumn("ETA"),
-            TimeRemainingColumn(),
+            *bar_columns(total, console.width),
             console=console,
             transient=False,
             redirect_stderr=False,  # a compile notice: the bar gives way to it (gives_way)
