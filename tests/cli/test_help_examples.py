@@ -4,6 +4,7 @@ cheap ones run as written (from the repository's root, whose examples/ they name
 
 from __future__ import annotations
 
+import re
 import shlex
 from pathlib import Path
 from typing import Any
@@ -138,9 +139,13 @@ def test_calibrate_s_first_example_gives_what_the_file_lacks(
 
 @pytest.mark.parametrize("words", sorted(COMMANDS))
 def test_every_help_line_fits_an_80_column_terminal(words: str) -> None:
-    """An example wider than the terminal would be broken by it mid-token ("30" / "deg")."""
+    """An example wider than the terminal would be broken by it mid-token ("30" / "deg"), and
+    a line broken after a hyphen splits what a user types (``--constant-`` / ``angle``)."""
     from typer.testing import CliRunner
 
     result = CliRunner().invoke(app, [*words.split(), "--help"], terminal_width=80)
     assert result.exit_code == 0, result.output
     assert [line for line in result.output.splitlines() if len(line) > 80] == []
+    # no line broken after a hyphen: an option's name, a path or a default stays whole
+    assert [line for line in result.output.splitlines() if re.search(r"\w-$", line)] == []
+    assert "\u2011" not in result.output

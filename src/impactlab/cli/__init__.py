@@ -43,16 +43,18 @@ from impactlab.cli import (
     warm,
 )
 from impactlab.cli._common import refuse_empty_paths
+from impactlab.cli.help_format import use_help_format
 from impactlab.cli.printing import print_wrapped
 
 
 class _Commands(TyperGroup):
     """impactlab's commands: Ctrl-C during one prints one line on stderr and exits 130 (typer
     itself would exit 130 without a word); an empty path is refused by name
-    (``refuse_empty_paths``)."""
+    (``refuse_empty_paths``); the help never breaks a line after a hyphen (``help_format``)."""
 
     def main(self, *args: Any, **kwargs: Any) -> Any:
         refuse_empty_paths(self)
+        use_help_format(self)
         return super().main(*args, **kwargs)
 
     def invoke(self, ctx: Any) -> Any:
