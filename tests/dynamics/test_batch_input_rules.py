@@ -101,6 +101,6 @@ def test_a_batch_counts_an_advisory_flag_as_marked_not_as_not_ok() -> None:
     )
     mixed = _batch([FLAG_LAW_EXTRAPOLATED, FLAG_ENERGY_GAIN, 0, 0], [True, True, True, False])
     assert batch_counts(mixed) == (
-        "4 cases, 3 computed, 2 ok (1 marked: law extrapolated), 1 not ok"
+        "4 cases, 3 computed, 2 ok (1 marked: law extrapolated), 1 not ok (energy gain: 1)"
     )
     assert batch_counts(_batch([0, 0], [True, True])) == ("2 cases, 2 computed, 2 ok, 0 not ok")

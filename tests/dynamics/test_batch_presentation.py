@@ -39,7 +39,7 @@ def test_the_notebook_summary_counts_as_the_repr_and_ok(gain: BatchResult) -> No
     assert gain.ok.tolist() == [True, False]
     assert gain.flags[1] & ResultFlag.ENERGY_GAIN
     html = gain._repr_html_()
-    counts = "2 cases, 2 computed, 1 ok (1 marked: law extrapolated), 1 not ok"
+    counts = "2 cases, 2 computed, 1 ok (1 marked: law extrapolated), 1 not ok (energy gain: 1)"
     assert counts in repr(gain) and f"<p>{counts}; " in html
     assert "over the 1 ok case;" in html and "2 ok" not in html
     # min = median = max: the energy-gaining case is left out of the statistics

@@ -12,10 +12,11 @@ from collections.abc import Sequence
 from typing import Any
 
 from impactlab._display import display_unit, format_number
+from impactlab._html import grid_html
 
 __all__ = [
     "POSTERIOR_HEAD", "PREDICTION_HEAD", "RANKING_HEAD", "calibration_html", "calibration_text",
-    "diagnostic", "grid_html", "grid_text", "measurements_text", "posterior_footer",
+    "diagnostic", "grid_text", "measurements_text", "posterior_footer",
     "posterior_rows", "posterior_text", "prediction_rows", "predictions_html",
     "predictions_text", "ranking_rows", "share",
 ]  # fmt: skip
@@ -99,18 +100,6 @@ def grid_text(title: str, head: Sequence[str], rows: Sequence[Sequence[str]]) ->
     lines = ["  " + "  ".join(c.ljust(w) for c, w in zip(r, widths, strict=True)).rstrip()
              for r in table]  # fmt: skip
     return "\n".join([title, *lines])
-
-
-def grid_html(title: str, head: Sequence[str], rows: Sequence[Sequence[str]]) -> str:
-    """``rows`` under ``head`` as an HTML table captioned ``title`` (every cell escaped)."""
-    th = "".join(f"<th>{html.escape(h)}</th>" for h in head)
-    body = "".join(
-        "<tr>" + "".join(f"<td>{html.escape(c)}</td>" for c in r) + "</tr>" for r in rows
-    )
-    return (
-        f"<table><caption>{html.escape(title)}</caption><thead><tr>{th}</tr></thead>"
-        f"<tbody>{body}</tbody></table>"
-    )
 
 
 def measurements_text(meas: Any) -> str:

@@ -13,9 +13,10 @@ import emcee
 import numpy as np
 from scipy.special import logsumexp
 
+from impactlab._html import grid_html
 from impactlab.calibrate._arviz import az, quiet, recording
 from impactlab.calibrate.diagnostics import MISFIT_SIGMAS, convergence_notes, misfit_text
-from impactlab.calibrate.display import POSTERIOR_HEAD, grid_html, posterior_rows, posterior_text
+from impactlab.calibrate.display import POSTERIOR_HEAD, posterior_rows, posterior_text
 from impactlab.calibrate.models import Prediction
 from impactlab.calibrate.posterior import LogPosterior
 from impactlab.calibrate.priors import Parameter

@@ -56,20 +56,30 @@ def no_field(obj: object, name: str, fields: Iterable[str]) -> AttributeError:
 
 
 def batch_counts(batch: Any) -> str:
-    """``"3 cases, 3 computed, 2 ok (1 marked: law extrapolated), 1 not ok"``: the counts of a
-    batch's one-line ``repr``. As ``ok`` reads them, the advisory flags
+    """``"3 cases, 3 computed, 1 ok (1 marked: law extrapolated), 2 not ok (brittle: 2)"``:
+    the counts of a batch's one-line ``repr``. As ``ok`` reads them, the advisory flags
     (``impactlab.flags.ADVISORY_FLAGS``) leave a case ok, counted as marked; "not ok" counts
-    the computed cases with another flag (computed = ok + not ok), as a sweep's summary
-    does."""
+    the computed cases with another flag (computed = ok + not ok) and, as a sweep's summary
+    does, the cases with each such flag."""
     computed, ok = np.asarray(batch.computed, dtype=bool), np.asarray(batch.ok, dtype=bool)
-    flags = np.where(ok, np.asarray(batch.flags, dtype=np.int64), 0)
+    all_flags = np.asarray(batch.flags, dtype=np.int64)
+    flags = np.where(ok, all_flags, 0)
     marked = ""
     if np.any(flags):
         names = [_FLAG_NAME[f] for f in ResultFlag if f & ADVISORY_FLAGS and np.any(flags & f)]
         marked = f" ({int(np.count_nonzero(flags))} marked: {', '.join(names)})"
     n, n_ok, bad = (int(np.count_nonzero(m)) for m in (computed, ok, computed & ~ok))
     cases = f"{len(batch)} case{'s' * (len(batch) != 1)}"
-    return f"{cases}, {n} computed, {n_ok} ok{marked}, {bad} not ok"
+    why = _reasons(all_flags[computed & ~ok])
+    return f"{cases}, {n} computed, {n_ok} ok{marked}, {bad} not ok{why}"
+
+
+def _reasons(flags: np.ndarray) -> str:
+    """``" (brittle: 2, energy gain: 1)"``: the cases with each flag that makes a case not ok
+    among the not-ok cases' ``flags`` ("" for none)."""
+    counts = [(f, int(np.count_nonzero(flags & f))) for f in ResultFlag if f & ~ADVISORY_FLAGS]
+    named = ", ".join(f"{_FLAG_NAME[f]}: {k:,}" for f, k in counts if k)
+    return f" ({named})" if named else ""
 
 
 #: Each flag's name as its message begins (``"law extrapolated"``).

@@ -12,13 +12,14 @@ import numpy as np
 
 from impactlab import schema
 from impactlab.dynamics.flexcore import layout as F
+from impactlab.dynamics.result_display import record_repr
 
 __all__ = ["ContactDict", "ContactRecord", "DentRecord"]
 
 _R = TypeVar("_R")
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class ContactRecord:
     """One contact of the sequence (SI units): the ``end`` that touched (0 the tip, 1 the other
     end), its ``start`` (from the first touch) and ``duration`` [s], the largest interference
@@ -55,6 +56,9 @@ class ContactRecord:
     def from_row(cls, row: np.ndarray) -> ContactRecord:
         """From one row of the integrator's contact table (``layout.CR_*``)."""
         return _from_row(cls, row, _CONTACT_COLUMNS)
+
+    def __repr__(self) -> str:
+        return record_repr(self)  # display units (result_display)
 
     @property
     def slip(self) -> float:
@@ -107,7 +111,7 @@ def _plain(value: Any) -> Any:
     return math.nan if value is None else value
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class DentRecord:
     """A dent on the flat (SI units): the ``end`` that made it, the x-range of the contact-point
     path over it [m], its largest contact radius [m], delta_m, the permanent depth delta_p
@@ -128,6 +132,9 @@ class DentRecord:
     def from_row(cls, row: np.ndarray) -> DentRecord:
         """From one row of the integrator's dent table (``layout.DT_*``)."""
         return _from_row(cls, row, _DENT_COLUMNS)
+
+    def __repr__(self) -> str:
+        return record_repr(self)  # display units (result_display)
 
 
 #: Column of each ContactRecord field in the contact table, in field order.

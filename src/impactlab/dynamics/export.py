@@ -251,10 +251,11 @@ def batch_dataset(batch: Any) -> Any:
 def _stats_row(name: str, values: np.ndarray, shown: str) -> tuple[str, str, str, str, str]:
     d = display_unit(name, schema.unit(name))
     v = values[np.isfinite(values)] * d.scale
-    if v.size == 0:
-        return shown, "-", "-", "-", ""
+    unit = "" if d.unit == "-" else d.unit
+    if v.size == 0:  # no ok case: no statistics, the unit all the same
+        return shown, "-", "-", "-", unit
     lo, mid, hi = (format_number(float(x)) for x in (v.min(), np.median(v), v.max()))
-    return shown, lo, mid, hi, "" if d.unit == "-" else d.unit
+    return shown, lo, mid, hi, unit
 
 
 def batch_html(

@@ -10,11 +10,37 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any, ClassVar
 
-from impactlab._display import field_rows, flag_names, html_table, text_table
+from impactlab._display import field_row, field_rows, flag_names, html_table, text_table
 from impactlab.flags import ADVISORY_FLAGS
 from impactlab.schema import DERIVED_FIELDS
+from impactlab.schema.printed import SI_UNITS
 
-__all__ = ["BATCH_ONLY_NAMES", "RESULT_NAMES", "ResultDisplay", "field_hint"]
+__all__ = ["BATCH_ONLY_NAMES", "RESULT_NAMES", "ResultDisplay", "field_hint", "record_repr"]
+
+#: The fields of a drop's record shown by its ``repr``: a contact's are the cells of the
+#: drop's contact table (``impactlab drop``).
+RECORD_REPR_FIELDS: dict[str, tuple[str, ...]] = {
+    "ContactRecord": (
+        "end", "start", "duration", "delta_max", "max_force", "normal_impulse",
+        "tangential_impulse", "sliding_length", "reload",
+    ),
+    "DentRecord": (
+        "end", "x_min", "x_max", "contact_radius", "delta_max", "delta_p", "unloading_radius",
+        "max_force", "n_contacts",
+    ),
+}  # fmt: skip
+
+
+def record_repr(record: object) -> str:
+    """One line of a drop's contact or dent record in display units with their units
+    (``ContactRecord(end 0, start 0 ms, duration 0.33096 ms, delta_max 35.244 um, ...)``)."""
+    name = type(record).__name__
+    parts = []
+    for key in RECORD_REPR_FIELDS[name]:
+        _, text, unit = field_row(key, getattr(record, key), SI_UNITS.get(key))
+        parts.append(f"{key} {text}" + (f" {unit}" if unit and unit != "-" else ""))
+    return f"{name}({', '.join(parts)})"
+
 
 #: A batch's column (``BatchResult``, ``DropBatchResult``) -> where a one-impact result holds
 #: the same quantity (a pair of velocities as one field).

@@ -75,7 +75,7 @@ def _p_text(p: float) -> str:
     return "p < 1e-300" if p < 1e-300 else f"p = {p:.2g}"
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class Verdict:
     """Which configuration explains ``drop`` best (module docstring).
 
@@ -140,6 +140,29 @@ class Verdict:
         if plain and not self.left_out and not self.provisional:
             return ""
         return f"best: {self.reason}"
+
+    def __repr__(self) -> str:
+        """One short line: the drop, the first of the ranking (or none), whether it is
+        consistent with the measurements (p to 2 digits) and its agreements (``reason``: the
+        verdict in words)."""
+        if self.configuration is not None:
+            first = f"first {self.configuration!r}"
+        elif self.undecided:
+            first = f"none named: undecided between {_names(list(self.undecided))}"
+        elif self.least_disagreeing is not None:
+            first = f"none named: none agrees, least disagreeing {self.least_disagreeing!r}"
+        else:
+            first = "none named"
+        parts = [f"drop {self.drop!r}", first]
+        if self.consistent is not None:
+            word = "consistent" if self.consistent else "inconsistent"
+            parts.append(f"{word} ({_p_text(self.p_value)})")
+        if self.agreements is not None:
+            n = len(self.ranked_over) + len(self.left_out)
+            parts.append(f"{self.agreements} of {n} values within 2 sigma")
+        if self.provisional:
+            parts.append("provisional")
+        return f"Verdict({', '.join(parts)})"
 
     def to_dict(self) -> dict[str, object]:
         """JSON ``best``'s entry (numbers plain; ``Explanation.to_dict`` gives chi2,

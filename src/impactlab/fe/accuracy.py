@@ -75,7 +75,7 @@ UNITS: dict[str, str] = {
 }
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class LawAccuracy:
     """One law against one FE case (ratios are delta / delta_c of the case).
 
@@ -102,6 +102,12 @@ class LawAccuracy:
     message: str = ""
 
     built = property(lambda self: not self.message, doc="True when the law was built.")
+
+    def __repr__(self) -> str:
+        """One line: the law, the case, the verified range and the RMS errors."""
+        from impactlab.fe.accuracy_display import law_repr
+
+        return law_repr(self)
 
     @property
     def residual_error(self) -> np.ndarray:
@@ -249,12 +255,24 @@ def law_accuracy(law: str, case: ReferenceCase) -> LawAccuracy:
     )
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class CaseAccuracy:
     """Every law against one FE case, and the recommendation for that pair."""
 
     case: ReferenceCase
     laws: tuple[LawAccuracy, ...]
+
+    def __repr__(self) -> str:
+        """One line: the case, E*/S_y, delta_c, the laws, the closest and best verified."""
+        from impactlab.fe.accuracy_display import case_repr
+
+        return case_repr(self, PLASTIC_FROM)
+
+    def _repr_html_(self) -> str:
+        """The table of ``impactlab laws --accuracy`` for this case and its recommendation."""
+        from impactlab.fe.accuracy_display import case_html
+
+        return case_html(self)
 
     @property
     def built(self) -> tuple[LawAccuracy, ...]:

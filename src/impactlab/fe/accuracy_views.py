@@ -21,37 +21,7 @@ from impactlab.fe.accuracy import (
     accuracy,
     report,
 )
-
-
-def _pct(x: float) -> str:
-    return "n/a" if not math.isfinite(x) else f"{100 * x:+.0f} %"
-
-
-def _abs(x: float) -> str:
-    return "n/a" if not math.isfinite(x) else f"{x:+.3f}"
-
-
-def _ratio(x: float) -> str:
-    return "n/a" if not math.isfinite(x) else f"{x:.3f}"
-
-
-def table_rows(result: CaseAccuracy, only: str | None = None) -> tuple[list[str], list[list[str]]]:
-    """(header, rows) of one case: per law (``only``: that one) the force error and the
-    delta_r / delta_max error at the FE maxima, and the verified range (text for tables);
-    the last row: FE's delta_r / delta_max."""
-    ratios = [float(r) for r in result.laws[0].maxima_ratio] if result.laws else []
-    header = ["law", *(f"{r:g}" for r in ratios), "verified range"]
-    rows = []
-    for a in (a for a in result.laws if only in (None, a.law)):
-        if not a.built:  # e.g. Brake's law for a material without a Brinell hardness
-            why = a.message.split("; ")[0]
-            rows.append([a.law, *("n/a" for _ in ratios), f"not built for this pair: {why}"])
-            continue
-        cells = [f"{_pct(a.force_error_at(r))} / {_abs(a.residual_error_at(r))}" for r in ratios]
-        rows.append([a.law, *cells, a.verified.text])
-    fe = ["FE: delta_r/delta_max", *(_ratio(x) for x in result.laws[0].residual_fe)]
-    rows.append([*fe, ""] if result.laws else fe)
-    return header, rows
+from impactlab.fe.accuracy_display import table_rows
 
 
 def _range_cell(v: VerifiedRange) -> str:

@@ -18,6 +18,8 @@ from typing import Any
 
 import numpy as np
 
+from impactlab._display import display_unit, format_number
+from impactlab._html import grid_html
 from impactlab.fe.problem import make_problem
 from impactlab.fe.result import balanced_run
 from impactlab.materials import ContactPair, Material
@@ -32,7 +34,15 @@ DATA_VERSION = 1
 FORMAT = "impactlab.fe reference curves"
 
 
-@dataclass(frozen=True)
+def _shown(name: str, metres: float) -> str:
+    """A length [m] in its display unit (``12.34 um``); ``n/a`` when it is nan."""
+    if not math.isfinite(metres):
+        return "n/a"
+    d = display_unit(name, "m")
+    return f"{format_number(metres * d.scale, 4)} {d.unit}"
+
+
+@dataclass(frozen=True, repr=False)
 class ReferenceRun:
     """One maximum of a reference case (SI: m, N, s); see :class:`impactlab.fe.IndentationResult`
     for the meaning of each field. ``residual_depth`` is nan when the run did not converge."""
@@ -66,8 +76,20 @@ class ReferenceRun:
         """Converged and balanced: a run to use as a reference (``fe.result.balanced_run``)."""
         return balanced_run(self.converged, self.force_balance)
 
+    def __repr__(self) -> str:
+        """One line: delta_max, F_max, delta_r, convergence and the sizes of the curves."""
+        if self.converged:
+            state = f"delta_r {_shown('delta_r', self.residual_depth)}, converged"
+        else:
+            state = f"not converged (last {_shown('delta_r', self.last_converged_delta)})"
+        return (
+            f"ReferenceRun(delta_max {_shown('delta_max', self.delta_max)}, F_max "
+            f"{format_number(self.max_force)} N, {state}, {self.loading_delta.size} loading / "
+            f"{self.unloading_delta.size} unloading points, {self.n_elements} elements)"
+        )
 
-@dataclass(frozen=True)
+
+@dataclass(frozen=True, repr=False)
 class ReferenceCase:
     """One material pair of the shipped reference: its inputs and its runs (by delta_max)."""
 
@@ -83,6 +105,36 @@ class ReferenceCase:
     ccx_version: str
     gmsh_version: str
     runs: tuple[ReferenceRun, ...]
+
+    def __repr__(self) -> str:
+        """One line: the case, the radius, delta_c and its runs' span (in delta_c)."""
+        ratios = [r.delta_max / self.delta_c for r in self.runs]
+        span = f" to {format_number(min(ratios), 3)} .. {format_number(max(ratios), 3)}"
+        usable = sum(r.usable for r in self.runs)
+        return (
+            f"ReferenceCase({self.name!r}: R = {_shown('radius', self.radius)}, delta_c = "
+            f"{_shown('delta_c', self.delta_c)}, {len(self.runs)} runs"
+            f"{span if ratios else ''} delta_c ({usable} usable), mu = {format_number(self.mu)})"
+        )
+
+    def _repr_html_(self) -> str:
+        """The case and one row per run (delta_max, F_max, delta_r; display units)."""
+        rows = [
+            (
+                format_number(r.delta_max / self.delta_c, 4),
+                _shown("delta_max", r.delta_max),
+                f"{format_number(r.max_force)} N",
+                _shown("delta_r", r.residual_depth),
+                "yes" if r.usable else "no",
+            )
+            for r in self.runs
+        ]
+        title = (
+            f"{self.name}: {self.description}; R = {_shown('radius', self.radius)}, "
+            f"delta_c = {_shown('delta_c', self.delta_c)}"
+        )
+        head = ("delta_max/delta_c", "delta_max", "F_max", "delta_r", "usable")
+        return grid_html(title, head, rows)
 
     @property
     def pair(self) -> ContactPair:

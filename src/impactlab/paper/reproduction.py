@@ -19,6 +19,7 @@ folder's marker and stale files).
 
 from __future__ import annotations
 
+import html
 import json
 import os
 import time
@@ -46,7 +47,12 @@ from impactlab.paper.fe_reference_rows import FRICTION as FE_FRICTION
 from impactlab.paper.figures import figure_alpha, figure_dent, figure_forces, figure_inertia
 from impactlab.paper.physics import physics_table, run_physics
 from impactlab.paper.physics_figures import figure_drop
-from impactlab.paper.quantities import Simulations
+from impactlab.paper.quantities import (
+    Simulations,
+    comparison_counts,
+    count_extrapolated,
+    verdict_counts,
+)
 from impactlab.paper.report import to_html, to_markdown
 from impactlab.paper.report_sections import TITLE, ReportData, build_report
 from impactlab.paper.reproduction_folder import (
@@ -79,10 +85,11 @@ __all__ = [
 INPUTS_FILE = "simulation_inputs.json"
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class ReproductionResult:
     """What :func:`reproduce` produced. DataFrames in display units (um, ms, N) as their column
-    names say; ``files`` maps a short name to the path written."""
+    names say; ``files`` maps a short name to the path written. Its ``repr`` and notebook
+    summary give the folder, the report and the headline counts, not the tables."""
 
     out_dir: Path
     experimental: pd.DataFrame
@@ -97,6 +104,33 @@ class ReproductionResult:
     report_html: Path
     elapsed_s: float
     extras: Mapping[str, Any] = field(default_factory=dict)
+
+    def _summary(self) -> list[tuple[str, str]]:
+        """``(label, text)`` of the headline: the published numbers reproduced, undecided and
+        not reproduced (and not compared), the simulated impacts beyond their law's range."""
+        bad, skipped = comparison_counts(self.comparison)
+        good, undecided = verdict_counts(self.comparison)
+        numbers = f"{good} reproduced, {undecided} undecided, {bad} not reproduced"
+        rows = [("published numbers", numbers + (f", {skipped} not compared" if skipped else ""))]
+        if self.extras.get("simulated", True):
+            n, m = count_extrapolated(self.simulations)
+            rows.append(("simulated impacts", f"{n} of {m} beyond their law's verified range"))
+        else:
+            rows.append(("simulated impacts", "none (simulations not run)"))
+        return [*rows, ("files", str(len(self.files))), ("time", f"{self.elapsed_s:.3g} s")]
+
+    def __repr__(self) -> str:
+        rows = "; ".join(f"{k}: {v}" for k, v in self._summary())
+        return f"ReproductionResult({self.out_dir}: {self.report_html.name}; {rows})"
+
+    def _repr_html_(self) -> str:
+        e, rep = html.escape, self.report_html
+        href = rep.as_uri() if rep.is_absolute() else rep.as_posix()  # relative: as given
+        link = f"<a href='{e(href)}'>{e(rep.name)}</a>"
+        rows = [("folder", e(str(self.out_dir))), ("report", link)]
+        rows += [(e(k), e(v)) for k, v in self._summary()]
+        body = "".join(f"<tr><th>{k}</th><td>{v}</td></tr>" for k, v in rows)
+        return f"<div><strong>ReproductionResult</strong><table>{body}</table></div>"
 
 
 def reproduce(

@@ -46,11 +46,22 @@ def dimension_rows(study: Any) -> list[tuple[str, str, str, str]]:
     rows = [axis_row(a.name, a.values, get_input(a.name).unit) for a in study.axes]
     if study.sample is not None:
         for name, dist in study.sample.inputs.items():
-            spec = dist.to_dict()
-            text = ", ".join(f"{k} {format_value(v)}" for k, v in spec.items())
-            unit = get_input(name).unit.replace("1", "")
+            d = display_unit(name, get_input(name).unit)
+            unit = "" if d.unit == "-" else d.unit
+            text = ", ".join(_param_text(k, v, d.scale, unit) for k, v in dist.to_dict().items())
             rows.append((f"{SAMPLE_DIM}: {name}", str(study.sample.size), text, unit))
     return rows
+
+
+def _param_text(key: str, value: Any, scale: float, unit: str) -> str:
+    """One parameter of a distribution in the display unit of its input (``"median 305
+    MPa"``); a lognormal's ``sigma`` is the dimensionless spread of the log: ``"sigma 0.08
+    (log)"``."""
+    if key == "dist":
+        return f"dist {value}"
+    if key == "sigma":
+        return f"sigma {format_value(value)} (log)"
+    return f"{key} {format_value(value * scale)}{' ' + unit if unit else ''}"
 
 
 def _fixed_text(study: Any) -> list[str]:
@@ -69,7 +80,10 @@ def _counts(layout: Any) -> str:
 
 def study_repr(study: Any) -> str:
     """``Study('map', grid, 1089 cases in 5 chunks; angle[33] 5 .. 85 deg, ...; fixed: ...)``."""
-    dims = "; ".join(f"{n}[{s}] {r} {u}".rstrip() for n, s, r, u in dimension_rows(study))
+    dims = "; ".join(
+        f"{n}[{s}] {r}" + ("" if n.startswith(f"{SAMPLE_DIM}:") else f" {u}").rstrip()
+        for n, s, r, u in dimension_rows(study)
+    )
     fixed = ", ".join(_fixed_text(study))
     lay = study.layout
     return (

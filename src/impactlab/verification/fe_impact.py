@@ -17,6 +17,8 @@ import math
 from dataclasses import dataclass, field
 from typing import Any
 
+from impactlab._display import format_number
+from impactlab._html import grid_html
 from impactlab.bodies import Sphere
 from impactlab.contact import law_names
 from impactlab.dynamics import simulate
@@ -31,6 +33,7 @@ __all__ = [
     "check_law",
     "compare_impacts",
     "comparison_markdown",
+    "comparison_rows",
     "law_row",
 ]
 
@@ -52,6 +55,9 @@ _DECIMALS = {"e": 4}
 _NEAR_ZERO = ("delta_p",)
 #: The last column: delta_max / delta_c, and a law's range in delta_c.
 RANGE_LABEL = "delta_max/delta_c (law's range)"
+#: The FE columns (every other column is a law's); speeds and columns a repr names at most.
+_FE_COLUMNS = ("dynamic FE", "quasi-static FE 1-DOF")
+_SHOWN = 8
 
 #: The elastic-plastic laws.
 PLASTIC_LAWS: tuple[str, ...] = (
@@ -73,7 +79,7 @@ DEFAULT_LAWS: dict[str, tuple[str, ...]] = {
 }
 
 
-@dataclass
+@dataclass(repr=False)
 class ImpactComparison:
     """One case's comparison: per speed, a column name -> quantities mapping (the names of
     :data:`QUANTITIES`; those before 0.3, ``restitution``, ..., read them with a
@@ -85,6 +91,34 @@ class ImpactComparison:
     mass: float
     columns: dict[str, list[dict[str, float]]] = field(default_factory=dict)
     delta_c: float = math.nan  # the pair's critical interference [m]
+
+    def __repr__(self) -> str:
+        """One line: the case, speeds, mass, delta_c, the columns, e of the dynamic FE and
+        how many law rows went past the law's range."""
+        speeds = ", ".join(format_number(v) for v in self.speeds[:_SHOWN])
+        names = list(self.columns)
+        cols = ", ".join(names[:_SHOWN]) + (", ..." if len(names) > _SHOWN else "")
+        parts = [
+            f"{len(self.speeds)} speed{'s' * (len(self.speeds) != 1)} {speeds}"
+            + (", ..." if len(self.speeds) > _SHOWN else "")
+            + " m/s",
+            f"mass {format_number(self.mass)} kg",
+            f"delta_c {format_number(self.delta_c * 1e6, 4)} um",
+        ]
+        text = f"ImpactComparison({self.case!r}: {', '.join(parts)}; {len(names)} columns: {cols}"
+        fe = self.columns.get("dynamic FE")
+        if fe:
+            text += "; dynamic FE e " + ", ".join(_shown("e", r["e"]) for r in fe[:_SHOWN])
+        laws = [r for n, col in self.columns.items() if n not in _FE_COLUMNS for r in col]
+        past = sum(bool(r.get("extrapolated", 0.0)) for r in laws)
+        if laws:
+            text += f"; {past} of {len(laws)} law rows extrapolated"
+        return text + ")"
+
+    def _repr_html_(self) -> str:
+        """The table of :func:`comparison_markdown` (escaped)."""
+        header, rows = comparison_rows(self)
+        return grid_html(f"ImpactComparison {self.case}", header, rows)
 
 
 def _yields(c: ImpactCase) -> bool:
@@ -217,20 +251,25 @@ def _range_cell(row: dict[str, float], delta_c: float) -> str:
     return f"{ratio:.3g} <= {limit:.3g}"
 
 
-def comparison_markdown(comp: ImpactComparison) -> str:
-    """The comparison as a Markdown table: one row per speed and column; the last column is
+def comparison_rows(comp: ImpactComparison) -> tuple[list[str], list[list[str]]]:
+    """(header, rows) of the comparison: one row per speed and column; the last column is
     delta_max / delta_c and, for a law on a case where a body yields, the upper end of the
     law's range for the pair (``> ...: extrapolated`` where the impact went past it)."""
-    labels = [label for _, label in QUANTITIES] + [RANGE_LABEL]
-    head = "| v [m/s] | model | " + " | ".join(labels) + " |\n"
-    head += "| --- | --- |" + " --- |" * len(labels) + "\n"
-    lines = []
+    header = ["v [m/s]", "model", *(label for _, label in QUANTITIES), RANGE_LABEL]
+    rows = []
     for i, v in enumerate(comp.speeds):
         for name, col in comp.columns.items():
             vals = [_shown(q, col[i][q] * _SCALE.get(q, 1.0)) for q, _ in QUANTITIES]
-            vals.append(_range_cell(col[i], comp.delta_c))
-            lines.append(f"| {v:g} | {name} | " + " | ".join(vals) + " |")
-    return head + "\n".join(lines) + "\n"
+            rows.append([f"{v:g}", name, *vals, _range_cell(col[i], comp.delta_c)])
+    return header, rows
+
+
+def comparison_markdown(comp: ImpactComparison) -> str:
+    """The comparison as a Markdown table (:func:`comparison_rows`)."""
+    header, rows = comparison_rows(comp)
+    head = "| " + " | ".join(header) + " |\n"
+    head += "|" + " --- |" * len(header) + "\n"
+    return head + "\n".join("| " + " | ".join(r) + " |" for r in rows) + "\n"
 
 
 def plot_force_histories(case: str) -> Any:

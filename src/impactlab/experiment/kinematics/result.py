@@ -7,6 +7,7 @@ from typing import Any
 
 import numpy as np
 
+from impactlab._display import display_unit, field_row, html_table, text_table
 from impactlab.experiment.kinematics.fits import SegmentFit, segment_data
 from impactlab.experiment.kinematics.frame import G0
 from impactlab.experiment.rigid import Poses, RigidityReport
@@ -15,7 +16,14 @@ from impactlab.experiment.uncertainty import Estimate
 __all__ = ["ImpactKinematics"]
 
 
-@dataclass(frozen=True)
+def _estimate_text(name: str, x: Estimate) -> str:
+    """``angle_in=20.046 ± 0.041 deg``: an estimate in its display unit."""
+    _, text, _ = field_row(name, x.value, x.unit, x.sigma)
+    unit = display_unit(name, x.unit).unit
+    return f"{name}={text}" + ("" if unit == "-" else f" {unit}")
+
+
+@dataclass(frozen=True, repr=False)
 class ImpactKinematics:
     """The measured impact (SI units; frame and signs in the package docstring).
 
@@ -77,6 +85,49 @@ class ImpactKinematics:
     def ok(self) -> bool:
         """False when something makes the result doubtful (``doubts``)."""
         return not self.doubts
+
+    def __repr__(self) -> str:
+        """One line: e, mu, the angle, v_i and the impact instant with their sigma in display
+        units (deg, ms), ok, and the number of warnings (``str``: the whole table)."""
+        shown = [("e", self.e), ("mu", self.mu), ("angle_in", self.angle_in)]
+        shown += [("v_i", self.v_i), ("t_impact", self.t_impact)]
+        parts = [_estimate_text(n, x) for n, x in shown]
+        parts.append(f"ok={self.ok}")
+        if self.warnings:
+            parts.append(f"{len(self.warnings)} warning" + "s" * (len(self.warnings) > 1))
+        return f"ImpactKinematics({', '.join(parts)})"
+
+    def __str__(self) -> str:
+        return text_table("ImpactKinematics", self._rows())
+
+    def _repr_html_(self) -> str:
+        return html_table("ImpactKinematics", self._rows())
+
+    def _rows(self) -> list[tuple[str, str, str]]:
+        """(name, value, unit) rows: every estimate in display units, then the diagnostics."""
+        estimates: list[tuple[str, Estimate]] = [
+            ("t_impact", self.t_impact),
+            ("angle_in", self.angle_in),
+            ("angle_out", self.angle_out),
+        ]
+        for name, (x, y) in (("v_c", self.v_c_in), ("v_tip", self.v_tip_in)):
+            estimates += [(f"{name}_x_in", x), (f"{name}_y_in", y)]
+        for name, (x, y) in (("v_c", self.v_c_out), ("v_tip", self.v_tip_out)):
+            estimates += [(f"{name}_x_out", x), (f"{name}_y_out", y)]
+        estimates += [("spin_in", self.spin_in), ("spin_out", self.spin_out), ("e", self.e)]
+        estimates += [("mu", self.mu), ("dv_cx", self.dv_cx), ("dv_cy", self.dv_cy)]
+        estimates += [("v_c_z_in", self.v_c_z_in), ("v_c_z_out", self.v_c_z_out)]
+        rows = [field_row(n, x.value, x.unit, x.sigma) for n, x in estimates]
+        rows += [
+            ("impact_frame", str(self.impact_frame), ""),
+            ("frames before / after", f"{self.pre.n} / {self.post.n}", ""),
+            ("geometry", self.geometry_source, ""),
+            field_row("fitted_gravity", self.fitted_gravity, "m/s^2"),
+            field_row("tilt_out_of_plane", self.tilt_out_of_plane, "rad"),
+            ("ok", "yes" if self.ok else "no", ""),
+        ]
+        rows += [("doubt", d, "") for d in self.doubts]
+        return rows + [("warning", w, "") for w in self.warnings if w not in self.doubts]
 
     @property
     def v_i(self) -> Estimate:

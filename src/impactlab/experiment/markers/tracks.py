@@ -6,10 +6,12 @@ import math
 import re
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from pathlib import PurePath
 from typing import Any
 
 import numpy as np
 
+from impactlab._display import display_unit, format_number
 from impactlab.experiment.errors import FileFormatError
 from impactlab.units import registry, to_si
 
@@ -26,6 +28,8 @@ __all__ = [
 #: A frame rate the caller gives agrees with the one a file states when they differ by at most
 #: this fraction.
 RATE_AGREEMENT = 0.01
+#: Marker labels a repr names at most.
+_NAMED = 8
 
 #: Spellings of "per second" in a frame rate that pint does not read as a frequency.
 _PER_SECOND = re.compile(
@@ -157,7 +161,7 @@ def _metres(text: str) -> tuple[float | None, str]:
     return float((1.0 * u).to("m").magnitude), str(u)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class MarkerTracks:
     """Marker positions over time (SI).
 
@@ -212,6 +216,21 @@ class MarkerTracks:
         object.__setattr__(self, "time", t)
         object.__setattr__(self, "positions", p)
         object.__setattr__(self, "labels", labels)
+
+    def __repr__(self) -> str:
+        """One line: the file, frames, rate, span, markers and how many positions are
+        missing (never the arrays)."""
+        span = display_unit("duration", "s")
+        labels = ", ".join(self.labels[:_NAMED]) + (", ..." if self.n_markers > _NAMED else "")
+        missing = int(self.valid.size - np.count_nonzero(self.valid))
+        seen = f"{missing} of {self.valid.size} positions occluded" if missing else "all seen"
+        where = f"{PurePath(self.source).name}: " if self.source else ""
+        return (
+            f"MarkerTracks({where}{self.n_frames} frames at {format_number(self.rate, 4)} Hz over "
+            f"{format_number((self.time[-1] - self.time[0]) * span.scale, 4)} {span.unit}, "
+            f"{self.n_markers} marker{'s' * (self.n_markers != 1)} {labels}, {seen}; "
+            "positions in m)"
+        )
 
     @property
     def n_frames(self) -> int:

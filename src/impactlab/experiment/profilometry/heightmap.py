@@ -5,16 +5,18 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, field
+from pathlib import PurePath
 from typing import Any
 
 import numpy as np
 
+from impactlab._display import display_unit, format_number
 from impactlab.units import to_si
 
 __all__ = ["MAX_PIXEL_SIZE", "HeightMap", "pixel_pair"]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class HeightMap:
     """A height map: ``z`` (ny, nx) [m] (NaN = no data; row i is y = i dy, column j is x = j dx),
     pixel sizes ``dx``, ``dy`` [m], ``source`` (file), ``meta`` (reader information)."""
@@ -42,6 +44,25 @@ class HeightMap:
         object.__setattr__(self, "z", z)
         object.__setattr__(self, "dx", float(self.dx))
         object.__setattr__(self, "dy", float(self.dy))
+
+    def __repr__(self) -> str:
+        """One line: the file, pixels, pixel size, extent, height range and valid share
+        (never the array)."""
+        ny, nx = self.shape
+        um, mm = display_unit("pileup", "m"), display_unit("length", "m")
+        pixel = format_number(self.dx * um.scale, 4)
+        if self.dy != self.dx:
+            pixel += f" x {format_number(self.dy * um.scale, 4)}"
+        z = self.z[self.valid]
+        where = f"{PurePath(self.source).name}: " if self.source else ""
+        return (
+            f"HeightMap({where}{nx} x {ny} pixels (x by y) of {pixel} {um.unit} = "
+            f"{format_number(nx * self.dx * mm.scale, 4)} x "
+            f"{format_number(ny * self.dy * mm.scale, 4)} {mm.unit}, z "
+            f"{format_number(float(z.min()) * um.scale, 4)} .. "
+            f"{format_number(float(z.max()) * um.scale, 4)} {um.unit}, "
+            f"{format_number(100 * z.size / self.z.size, 4)} % valid)"
+        )
 
     @property
     def shape(self) -> tuple[int, int]:

@@ -3,10 +3,12 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from pathlib import PurePath
 from typing import Any
 
 import numpy as np
 
+from impactlab._display import display_unit, field_row, html_table, text_table
 from impactlab.experiment.profilometry.heightmap import HeightMap
 from impactlab.experiment.uncertainty import Estimate
 
@@ -15,6 +17,13 @@ __all__ = ["LS_SCALE", "DentMetrics", "sliding_length_note", "unmeasured_notes"]
 #: L_s is not measured when its uncertainty exceeds this fraction of the width (as well as its
 #: magnitude): L_s near 0 (a round dent, no sliding) is a measurement when its +- is small.
 LS_SCALE = 0.1
+
+
+def _value_text(name: str, value: float, si_unit: str, sigma: float | None = None) -> str:
+    """``22.016 ± 0.027 um``: a value in its display unit."""
+    _, text, _ = field_row(name, value, si_unit, sigma)
+    unit = display_unit(name, si_unit).unit
+    return text + ("" if unit == "-" else f" {unit}")
 
 
 def unmeasured_notes(**estimates: tuple[float, float]) -> list[str]:
@@ -43,7 +52,7 @@ def sliding_length_note(value: float, sigma: float, width: float) -> list[str]:
     ]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class DentMetrics:
     """The dent measured on a scan (SI; definitions in the package docstring). ``outline``
     (k, 2) [m]; ``edge_threshold``, ``noise`` [m]; ``plane``; ``dropout_fraction`` (whole scan)
@@ -87,6 +96,50 @@ class DentMetrics:
     levelled: HeightMap | None = field(default=None, repr=False)
     source: str = ""
     warnings: tuple[str, ...] = ()
+
+    def __repr__(self) -> str:
+        """One line: the scan, delta_p, L_s, length and width with their sigma and the
+        sliding angle in display units (um, mm, deg), and the number of warnings (``str``: the
+        whole table)."""
+        shown = [("delta_p", self.delta_p), ("sliding_length", self.sliding_length)]
+        shown += [("length", self.length), ("width", self.width)]
+        parts = [f"{n}={_value_text(n, x.value, x.unit, x.sigma)}" for n, x in shown]
+        parts.append(f"sliding_angle={_value_text('sliding_angle', self.sliding_angle, 'rad')}")
+        parts.append(f"pileup={_value_text('pileup', self.pileup, 'm')}")
+        if self.warnings:
+            parts.append(f"{len(self.warnings)} warning" + "s" * (len(self.warnings) > 1))
+        where = f"{PurePath(self.source).name}: " if self.source else ""
+        return f"DentMetrics({where}{', '.join(parts)})"
+
+    def __str__(self) -> str:
+        return text_table("DentMetrics", self._rows())
+
+    def _repr_html_(self) -> str:
+        return html_table("DentMetrics", self._rows())
+
+    def _rows(self) -> list[tuple[str, str, str]]:
+        """(name, value, unit) rows in display units, then the warnings."""
+        rows = [
+            field_row(n, x.value, x.unit, x.sigma)
+            for n, x in (
+                ("delta_p", self.delta_p),
+                ("sliding_length", self.sliding_length),
+                ("length", self.length),
+                ("width", self.width),
+            )
+        ]
+        rows += [
+            field_row("sliding_angle", self.sliding_angle, "rad"),
+            ("direction_ambiguous", "yes" if self.direction_ambiguous else "no", ""),
+            field_row("deepest_fraction", self.deepest_fraction, "1"),
+            field_row("pileup", self.pileup, "m"),
+            ("noise", *field_row("pileup", self.noise, "m")[1:]),  # dent scale: um
+            field_row("dropout_fraction", self.dropout_fraction, "1"),
+            field_row("filled_in_dent", self.filled_in_dent, "1"),
+            ("outline points", str(self.outline.shape[0]), ""),
+            ("source", self.source or "-", ""),
+        ]
+        return rows + [("warning", w, "") for w in self.warnings]
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready summary (SI)."""
